@@ -1,0 +1,81 @@
+/* tirenv: enveloping models over a ground profile at constant vertical load (the core API). */
+#ifndef TIRENV_MODEL_H
+#define TIRENV_MODEL_H
+
+#include <stddef.h>
+#include "tirenv/error.h"
+#include "tirenv/profile.h"
+#include "tirenv/tire.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* One position of the enveloping curve (MODEL.md sections 1 and 4). */
+typedef struct {
+    double x;              /* tire-centre longitudinal position, m */
+    double z;              /* tire-centre height at equilibrium, m */
+    double h;              /* effective profile height z - z_flat, m */
+    double fx;             /* longitudinal hub force (positive forward), N */
+    double fz;             /* vertical hub force (equals the load at equilibrium), N */
+    size_t contacts;       /* elements (or contact points) touching the ground */
+    size_t iterations;     /* force evaluations spent on the equilibrium */
+} tirenv_point;
+
+/* The tire's state on flat ground at a given load. */
+typedef struct {
+    double load;           /* vertical load G_T, N */
+    double z_flat;         /* centre height, m */
+    double deflection;     /* R0 - z_flat, m */
+    double contact_length; /* the model's flat-ground contact length, m */
+    double stiffness;      /* vertical stiffness -dF_z/dz at z_flat, N/m */
+} tirenv_flat;
+
+/* A model algorithm, chosen by name (GSL style: tirenv_model_springs, tirenv_model_rigid). */
+typedef struct tirenv_model_type tirenv_model_type;
+extern const tirenv_model_type *tirenv_model_rigid;
+extern const tirenv_model_type *tirenv_model_springs;
+
+/* The type with this name ("rigid", "springs"), or NULL. */
+const tirenv_model_type *tirenv_model_type_find(const char *name);
+/* Name of a type; its NULL-terminated list of all types. */
+const char *tirenv_model_type_name(const tirenv_model_type *type);
+const tirenv_model_type *const *tirenv_model_types(void);
+
+/* A model instance: owns its workspace, so evaluation never allocates. Not thread-safe; use
+ * one instance per thread. */
+typedef struct tirenv_model tirenv_model;
+
+/* Allocates a model of the given type for a tire (copied). NULL if the tire fails
+ * tirenv_tire_check or memory runs out. */
+tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire);
+void tirenv_model_free(tirenv_model *m);  /* NULL is a no-op */
+const char *tirenv_model_name(const tirenv_model *m);
+
+/* Flat-ground state at load G (N). TIRENV_ENOBRACKET if the tire cannot carry G. */
+int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
+
+/* Load (N) at which the model's flat-ground contact length is l_c (m); TIRENV_EINVAL if
+ * l_c is not in (0, 2*R0). */
+int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
+                                         tirenv_diag *diag);
+
+/* Sets the ground profile (borrowed: it must outlive its use) and the load (N); computes the
+ * flat-ground reference z_flat. TIRENV_ERANGE if the profile rises above the flat-ground
+ * centre height within reach of the tire. Resets the warm start. */
+int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
+                     tirenv_diag *diag);
+
+/* Equilibrium at position x (m), warm-started from the previous call. On failure out->x is x
+ * and diag says why (x, load, bracket). */
+int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
+
+/* Evaluates n positions x[] in order into out[]; stops at the first failure (its index in
+ * *failed if not NULL). */
+int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
+                          size_t *failed, tirenv_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,55 @@
+/* tirenv: 2-D ground profiles (MODEL.md section 2). */
+#ifndef TIRENV_PROFILE_H
+#define TIRENV_PROFILE_H
+
+#include <stddef.h>
+#include "tirenv/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A ground profile: a polyline (x_k, z_k), k = 0..n-1, with non-decreasing x. Two consecutive
+ * vertices with equal x form a vertical wall. Outside [x_0, x_{n-1}] the ground is flat at the
+ * end heights. Immutable once built; shareable between models and threads. */
+typedef struct tirenv_profile tirenv_profile;
+
+/* Checks vertices for a profile: n >= 1, all finite, x non-decreasing, at most two vertices
+ * at the same x. Returns TIRENV_OK or TIRENV_EINVAL with the reason in diag (field "x" or "z",
+ * line = 1-based vertex index). */
+int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv_diag *diag);
+
+/* Builds a profile from n vertices (copied; x, z in m). NULL if invalid or out of memory. */
+tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[]);
+
+/* Frees a profile; NULL is a no-op. */
+void tirenv_profile_free(tirenv_profile *p);
+
+/* Number of vertices and read-only access to them (m). */
+size_t tirenv_profile_size(const tirenv_profile *p);
+const double *tirenv_profile_x(const tirenv_profile *p);
+const double *tirenv_profile_z(const tirenv_profile *p);
+
+/* Ground height at x (m). At a wall the higher of the two heights is returned. */
+double tirenv_profile_height(const tirenv_profile *p, double x);
+
+/* Highest ground (m) over the closed interval [x_lo, x_hi] (m), including flat extensions. */
+double tirenv_profile_max_height(const tirenv_profile *p, double x_lo, double x_hi);
+
+/* x-extent of the non-flat part: first and last vertex x (m). */
+void tirenv_profile_extent(const tirenv_profile *p, double *x_first, double *x_last);
+
+/* Generators: obstacles on flat ground z = 0 (steps excepted), centred at x = 0 unless noted.
+ * All lengths and heights in m; NULL on invalid arguments (non-positive size, non-finite). */
+tirenv_profile *tirenv_profile_cleat(double L, double H);          /* rectangle L x H */
+tirenv_profile *tirenv_profile_step(double x0, double H);          /* step of H at x0 (H < 0 down) */
+tirenv_profile *tirenv_profile_trapezoid(double L_top, double L_base, double H);
+tirenv_profile *tirenv_profile_triangle(double L_base, double H);
+tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments); /* polyline of the arc */
+tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double periods,
+                                    size_t points_per_period);    /* starts at x = 0 */
+
+#ifdef __cplusplus
+}
+#endif
+#endif

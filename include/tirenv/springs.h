@@ -1,0 +1,50 @@
+/* tirenv: the radial + interradial springs model, element level (MODEL.md section 4).
+ * Most users want tirenv/model.h; this header exposes the parts for tests, plots of the
+ * deformed tire, and models built on top. */
+#ifndef TIRENV_SPRINGS_H
+#define TIRENV_SPRINGS_H
+
+#include <stddef.h>
+#include "tirenv/error.h"
+#include "tirenv/profile.h"
+#include "tirenv/tire.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Workspace of the springs model for one tire: element angles, stiffnesses, and the state of
+ * the last force evaluation. Evaluation never allocates. */
+typedef struct tirenv_springs tirenv_springs;
+
+/* NULL if the parameters are unphysical or memory runs out. */
+tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *params);
+void tirenv_springs_free(tirenv_springs *s);  /* NULL is a no-op */
+
+/* Number of radial elements N and their angles theta_i = i*dphi (rad, from the downward
+ * vertical, positive forward), ascending. */
+size_t tirenv_springs_size(const tirenv_springs *s);
+const double *tirenv_springs_theta(const tirenv_springs *s);
+
+/* Hub forces (N) with the centre at (x, z) (m) over a profile: casts the rays, solves the tip
+ * LCP exactly, sums eq. 1. dfz_dz (N/m, may be NULL) is the exact derivative of F_z on the
+ * current piece (active set and hit segments fixed). */
+int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *p, double x, double z,
+                          double *fx, double *fz, double *dfz_dz, size_t *contacts);
+
+/* Full-length tip state of the last tirenv_springs_forces call, into caller arrays of
+ * tirenv_springs_size() entries (any may be NULL): penetration d_i (m), tip deflection w_i (m),
+ * contact reaction p_i (N). */
+void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double p[]);
+
+/* The tip LCP on its own: K w = p, w >= d, p >= 0, p.(w - d) = 0, with K the tridiagonal
+ * stiffness of n elements (k_r N/m on the diagonal, k_ir N/m between neighbours, ends free).
+ * work holds 4*n doubles. Returns TIRENV_ENOCONV if the active set does not settle in
+ * max_iter passes; *passes (may be NULL) counts them. */
+int tirenv_springs_lcp(size_t n, double k_r, double k_ir, const double d[], double w[],
+                       double p[], double work[], size_t max_iter, size_t *passes);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,59 @@
+/* tirenv: tire parameters and solver settings (the contents of a .tir file). */
+#ifndef TIRENV_TIRE_H
+#define TIRENV_TIRE_H
+
+#include <stddef.h>
+#include "tirenv/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* How the constant-load equilibrium F_z(x, z) = G_T is solved in z (MODEL.md section 4). */
+typedef enum {
+    TIRENV_EQ_NEWTON = 0, /* default: Newton on dF_z/dz inside a bracket, bisection fallback */
+    TIRENV_EQ_SECANT,     /* the paper's plain secant iteration (its eq. 2), for comparison */
+    TIRENV_EQ_BRENT       /* GSL's Brent-Dekker on the bracket, a derivative-free baseline */
+} tirenv_eq_method;
+
+/* Tolerances of the equilibrium iteration. Convergence needs both
+ * |F_z - G_T| <= eps_F and |dz| <= eps_z. */
+typedef struct {
+    tirenv_eq_method method;
+    double eps_F;          /* force tolerance, N */
+    double eps_z;          /* step tolerance, m */
+    size_t max_iter;       /* force evaluations allowed per position */
+    double secant_dz;      /* secant only: offset of the second starting point, m */
+} tirenv_eq_settings;
+
+/* Parameters of the radial + interradial springs model (MODEL.md section 4); the rigid model
+ * uses R0 only. Stiffnesses are discretisation-independent: k_r = c_r*dphi, k_ir = c_b/dphi. */
+typedef struct {
+    double R0;             /* [DIMENSION] UNLOADED_RADIUS: free radius, m */
+    double c_r;            /* RADIAL_STIFFNESS: radial stiffness per radian, N/m/rad */
+    double c_b;            /* INTERRADIAL_STIFFNESS: interradial stiffness, N*rad/m */
+    double phi;            /* SEGMENT_ANGLE: width of the tread segment, rad */
+    double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
+} tirenv_springs_params;
+
+/* Everything a model needs to know about the tire and how to solve it. */
+typedef struct {
+    tirenv_springs_params springs;
+    tirenv_eq_settings eq;
+} tirenv_tire;
+
+/* The equilibrium defaults: Newton, eps_F = 1e-6 N, eps_z = 1e-10 m, 100 evaluations,
+ * secant_dz = 1e-3 m. */
+tirenv_eq_settings tirenv_eq_default(void);
+
+/* The shipped default tractor tire (same values as data/tires/default.tir). */
+tirenv_tire tirenv_tire_default(void);
+
+/* Checks that parameters are physical (R0 > 0, c_r > 0, c_b >= 0, 0 < dphi <= phi/2,
+ * phi <= pi, tolerances > 0). Returns 0 or TIRENV_EINVAL with the offending key in diag. */
+int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,16 @@
+/* tirenv: quasi-static enveloping models of a tractor tire over short obstacles.
+ * Umbrella header. SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_TIRENV_H
+#define TIRENV_TIRENV_H
+
+#include "tirenv/error.h"
+#include "tirenv/profile.h"
+#include "tirenv/tire.h"
+#include "tirenv/model.h"
+#include "tirenv/rigid.h"
+#include "tirenv/springs.h"
+#include "tirenv/io.h"
+
+#define TIRENV_VERSION "0.1.0"
+
+#endif

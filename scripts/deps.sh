@@ -1,0 +1,27 @@
+#!/bin/sh
+# Installs the Debian packages tirenv needs to build, test and draw its plots. Idempotent:
+# does nothing when they are present. As root it runs apt-get; otherwise it prints the line.
+set -eu
+need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox"
+[ "${1:-}" = "--bench" ] && need="$need libfann-dev"
+
+missing=""
+for pkg in $need; do
+    status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+    case "$status" in
+        *"ok installed"*) ;;
+        *) missing="$missing $pkg" ;;
+    esac
+done
+[ -z "$missing" ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+    echo "deps: installing$missing" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends $missing >/dev/null
+else
+    echo "deps: missing packages; run:" >&2
+    echo "  sudo apt-get update && sudo apt-get install -y$missing" >&2
+    exit 1
+fi
