@@ -1,0 +1,19 @@
+/* Private: what a model algorithm provides to the generic driver in model.c. */
+#ifndef TIRENV_MODEL_IMPL_H
+#define TIRENV_MODEL_IMPL_H
+
+#include "tirenv/model.h"
+
+struct tirenv_model_type {
+    const char *name;
+    void *(*alloc)(const tirenv_tire *tire);              /* NULL on failure */
+    void (*free)(void *state);
+    int (*flat)(void *state, double load, tirenv_flat *out, tirenv_diag *diag);
+    int (*load_for_contact_length)(void *state, double l_c, double *load, tirenv_diag *diag);
+    /* New profile and load; z_flat is the model's flat-ground centre height at that load. */
+    int (*set)(void *state, const tirenv_profile *p, double load, double z_flat,
+               tirenv_diag *diag);
+    int (*eval)(void *state, double x, tirenv_point *out, tirenv_diag *diag);
+};
+
+#endif
