@@ -1,0 +1,128 @@
+/* The generic model driver: name lookup, lifecycle, and the sweep over positions. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include "model/model_impl.h"
+
+struct tirenv_model {
+    const tirenv_model_type *type;
+    void *state;
+    tirenv_tire tire;
+    double load;           /* N */
+    int ready;             /* a profile and load are set */
+};
+
+const tirenv_model_type *const *tirenv_model_types(void)
+{
+    static const tirenv_model_type *const *types[] = {&tirenv_model_rigid,
+                                                      &tirenv_model_springs};
+    static const tirenv_model_type *list[sizeof types / sizeof types[0] + 1];
+    for (size_t i = 0; i < sizeof types / sizeof types[0]; ++i)
+        list[i] = *types[i];
+    return list;
+}
+
+const tirenv_model_type *tirenv_model_type_find(const char *name)
+{
+    for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
+        if (name && strcmp((*t)->name, name) == 0)
+            return *t;
+    return NULL;
+}
+
+const char *tirenv_model_type_name(const tirenv_model_type *type) { return type->name; }
+const char *tirenv_model_name(const tirenv_model *m) { return m->type->name; }
+
+tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
+{
+    /* The library checks every GSL status itself; GSL's default handler would abort(). */
+    gsl_set_error_handler_off();
+    if (!type || tirenv_tire_check(tire, NULL))
+        return NULL;
+    tirenv_model *m = calloc(1, sizeof *m);
+    if (!m)
+        return NULL;
+    m->type = type;
+    m->tire = *tire;
+    m->state = type->alloc(tire);
+    if (!m->state) {
+        free(m);
+        return NULL;
+    }
+    return m;
+}
+
+void tirenv_model_free(tirenv_model *m)
+{
+    if (!m)
+        return;
+    m->type->free(m->state);
+    free(m);
+}
+
+int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    if (!(load > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
+                            "must be a positive force in N, got %g", load);
+    return m->type->flat(m->state, load, out, diag);
+}
+
+int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
+                                         tirenv_diag *diag)
+{
+    return m->type->load_for_contact_length(m->state, l_c, load, diag);
+}
+
+int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
+                     tirenv_diag *diag)
+{
+    tirenv_flat flat;
+    m->ready = 0;
+    int status = tirenv_model_flat(m, load, &flat, diag);
+    if (status)
+        return status;
+    const size_t n = tirenv_profile_size(profile);
+    const double *z = tirenv_profile_z(profile);
+    for (size_t k = 0; k < n; ++k)
+        if (z[k] >= flat.z_flat)
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
+                                "ground at %g m reaches the tire centre's flat-ground height "
+                                "%g m: the enveloping models do not apply",
+                                z[k], flat.z_flat);
+    status = m->type->set(m->state, profile, load, flat.z_flat, diag);
+    m->load = load;
+    m->ready = status == TIRENV_OK;
+    return status;
+}
+
+int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    if (!m->ready)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "no profile and load set (call tirenv_model_set first)");
+    const int status = m->type->eval(m->state, x, out, diag);
+    if (status && diag) {
+        /* Name the position: a failure without its x is useless in a 1,500-point sweep. */
+        char msg[sizeof diag->message];  /* the original message is cut at 400 chars */
+        snprintf(msg, sizeof msg, "%s model at x = %.6g m, load %.6g N: %.400s", m->type->name, x,
+                 m->load, diag->message);
+        memcpy(diag->message, msg, sizeof msg);
+    }
+    return status;
+}
+
+int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
+                          size_t *failed, tirenv_diag *diag)
+{
+    for (size_t k = 0; k < n; ++k) {
+        const int status = tirenv_model_eval(m, x[k], &out[k], diag);
+        if (status) {
+            if (failed)
+                *failed = k;
+            return status;
+        }
+    }
+    return TIRENV_OK;
+}

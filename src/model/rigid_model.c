@@ -1,0 +1,85 @@
+/* The rigid disc as a tirenv_model_type: no deflection, no iteration (MODEL.md section 3). */
+#include <math.h>
+#include <stdlib.h>
+#include "model/model_impl.h"
+#include "tirenv/rigid.h"
+
+typedef struct {
+    tirenv_tire tire;
+    const tirenv_profile *prof;
+    double G;
+    tirenv_model *springs;   /* only to translate a contact length into a load */
+} rigid_state;
+
+static void *rigid_alloc(const tirenv_tire *tire)
+{
+    rigid_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return NULL;
+    st->tire = *tire;
+    return st;
+}
+
+static void rigid_free(void *state)
+{
+    rigid_state *st = state;
+    tirenv_model_free(st->springs);
+    free(st);
+}
+
+static int rigid_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    const rigid_state *st = state;
+    (void)diag;
+    *out = (tirenv_flat){.load = load, .z_flat = st->tire.springs.R0, .deflection = 0,
+                         .contact_length = 0, .stiffness = INFINITY};
+    return TIRENV_OK;
+}
+
+/* A rigid disc has no contact length; its curve does not depend on the load, which only
+ * scales its hub forces. So a contact length stands for the load at which the springs model of
+ * the same tire has it, and curves of both models can be compared at one load. */
+static int rigid_load_for_contact_length(void *state, double l_c, double *load,
+                                         tirenv_diag *diag)
+{
+    rigid_state *st = state;
+    if (!st->springs && !(st->springs = tirenv_model_alloc(tirenv_model_springs, &st->tire)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    return tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
+}
+
+static int rigid_set(void *state, const tirenv_profile *p, double load, double z_flat,
+                     tirenv_diag *diag)
+{
+    rigid_state *st = state;
+    (void)z_flat;
+    (void)diag;
+    st->prof = p;
+    st->G = load;
+    return TIRENV_OK;
+}
+
+/* The ground pushes along the line from the touching point to the centre, so carrying G
+ * vertically takes G*(x - p_x)/(z - p_z) horizontally. */
+static int rigid_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    const rigid_state *st = state;
+    const double R0 = st->tire.springs.R0;
+    double px, pz;
+    (void)diag;
+    const double z = tirenv_rigid_height(st->prof, R0, x, &px, &pz);
+    *out = (tirenv_point){.x = x, .z = z, .h = z - R0, .fz = st->G,
+                          .fx = st->G * (x - px) / (z - pz), .contacts = 1, .iterations = 0};
+    return TIRENV_OK;
+}
+
+static const tirenv_model_type rigid_type = {
+    .name = "rigid",
+    .alloc = rigid_alloc,
+    .free = rigid_free,
+    .flat = rigid_flat,
+    .load_for_contact_length = rigid_load_for_contact_length,
+    .set = rigid_set,
+    .eval = rigid_eval,
+};
+const tirenv_model_type *tirenv_model_rigid = &rigid_type;
