@@ -1,0 +1,40 @@
+/* tirenv: measured or simulated enveloping curves, approach half, on an x_N grid
+ * (MODEL.md section 1), and the normalised position itself. */
+#ifndef TIRENV_CURVE_H
+#define TIRENV_CURVE_H
+
+#include <stddef.h>
+#include "tirenv/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The approach half of an enveloping curve over a symmetric obstacle centred at x = 0. */
+typedef struct {
+    size_t n;              /* number of points */
+    double *x_N;           /* normalised position (0 first contact, 1 over the centre) */
+    double *x;             /* position in obstacle coordinates, m */
+    double *h;             /* effective profile height, m */
+} tirenv_curve;
+
+/* Allocates the three arrays of n points (zeroed); TIRENV_ENOMEM on failure. */
+int tirenv_curve_alloc(tirenv_curve *c, size_t n);
+/* Frees the arrays and zeroes c; NULL or an empty curve is a no-op. */
+void tirenv_curve_free(tirenv_curve *c);
+
+/* x_0 of MODEL.md section 1 (m, obstacle coordinates): where the free circle of radius R0 at
+ * the chord height sqrt(R0^2 - (l_c/2)^2) touches the leading top corner (-L/2, H). NaN if
+ * the corner is out of reach. */
+double tirenv_xN_origin(double R0, double l_c, double L, double H);
+/* x_N = (x - x_0)/(0 - x_0) for the obstacle centred at 0. */
+double tirenv_xN(double x, double x_0);
+
+/* CSV "x_N,x_m,h_m" (the import's output, the data set's curve files); atomic write. */
+int tirenv_curve_read_csv(const char *path, tirenv_curve *out, tirenv_diag *diag);
+int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, tirenv_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

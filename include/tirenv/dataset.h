@@ -1,0 +1,48 @@
+/* tirenv: data sets of enveloping curves: a directory with a manifest cases.csv
+ * (case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve). */
+#ifndef TIRENV_DATASET_H
+#define TIRENV_DATASET_H
+
+#include <stddef.h>
+#include "tirenv/curve.h"
+#include "tirenv/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    TIRENV_SPLIT_TRAIN = 0,   /* fits and trains on it */
+    TIRENV_SPLIT_CONTROL,     /* early stopping / model selection */
+    TIRENV_SPLIT_VALIDATION   /* reported only, never seen in training */
+} tirenv_split;
+
+/* "train", "control", "validation". */
+const char *tirenv_split_name(tirenv_split split);
+
+typedef struct {
+    char name[32];            /* case label, e.g. "F" */
+    tirenv_split split;
+    double contact_length;    /* measured l_c, m */
+    double load;              /* applied vertical load, N */
+    double L, H;              /* obstacle length and height, m */
+    char log[512];            /* raw rig log, full path, or "" */
+    char curve_path[512];     /* imported curve, full path, or "" */
+    tirenv_curve curve;       /* the approach-half curve (read, or imported from the log) */
+} tirenv_case;
+
+typedef struct {
+    char dir[512];
+    size_t n;
+    tirenv_case *cases;
+} tirenv_dataset;
+
+/* Reads dir/cases.csv and each case's curve (the curve file if given, else the log imported
+ * with R0 (m) as tirenv_rig_import does). Errors name file, line and column. */
+int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag);
+void tirenv_dataset_free(tirenv_dataset *ds);  /* NULL is a no-op */
+
+#ifdef __cplusplus
+}
+#endif
+#endif
