@@ -45,9 +45,9 @@ tirenv_profile *tirenv_profile_cleat(double L, double H);          /* rectangle 
 tirenv_profile *tirenv_profile_step(double x0, double H);          /* step of H at x0 (H < 0 down) */
 tirenv_profile *tirenv_profile_trapezoid(double L_top, double L_base, double H);
 tirenv_profile *tirenv_profile_triangle(double L_base, double H);
-tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments); /* polyline of the arc */
+tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments); /* inscribed, >= 2 */
 tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double periods,
-                                    size_t points_per_period);    /* starts at x = 0 */
+                                    size_t points_per_period);    /* A(1-cos(2pi x/wl)), x>=0 */
 
 #ifdef __cplusplus
 }

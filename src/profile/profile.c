@@ -1,0 +1,141 @@
+/* The ground profile object (MODEL.md section 2): validation, storage, height queries.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "profile/profile_impl.h"
+
+#include <math.h>
+#include <stdalign.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Vertices are checked one by one in order, so the diagnostic names the first bad vertex,
+ * which is what a user editing a CSV file wants to jump to. */
+int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv_diag *diag)
+{
+    if (n == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, NULL, 0, "",
+                            "the profile has no vertices; expected at least one");
+    if (!x || !z)
+        return tirenv_error(diag, TIRENV_EINVAL, NULL, 0, x ? "z" : "x",
+                            "the vertex array is NULL; expected %zu values", n);
+    for (size_t k = 0; k < n; k++) {
+        const size_t line = k + 1;
+        if (!isfinite(x[k]))
+            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
+                                "vertex %zu: x = %g is not finite; expected a finite number",
+                                line, x[k]);
+        if (!isfinite(z[k]))
+            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "z",
+                                "vertex %zu: z = %g is not finite; expected a finite number",
+                                line, z[k]);
+        if (k >= 1 && x[k] < x[k - 1])
+            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
+                                "vertex %zu: x = %.17g is less than the previous x = %.17g; "
+                                "expected non-decreasing x",
+                                line, x[k], x[k - 1]);
+        /* A third vertex at one abscissa would make the height there ambiguous. */
+        if (k >= 2 && x[k] == x[k - 2])
+            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
+                                "vertex %zu: x = %.17g is shared by three vertices; expected "
+                                "at most two (a vertical wall)",
+                                line, x[k]);
+    }
+    return TIRENV_OK;
+}
+
+/* The arrays follow the struct in one block, so a profile is one malloc and one free and
+ * its vertices sit together in cache for the ray casters. */
+struct tirenv_profile *tirenv_profile__new(size_t n)
+{
+    const size_t align = alignof(double);
+    const size_t head = (sizeof(struct tirenv_profile) + align - 1) / align * align;
+    if (n == 0 || n > (SIZE_MAX - head) / (2 * sizeof(double)))
+        return NULL;
+    unsigned char *block = malloc(head + 2 * n * sizeof(double));
+    if (!block)
+        return NULL;
+    struct tirenv_profile *p = (struct tirenv_profile *)block;
+    p->n = n;
+    p->x = (double *)(block + head);
+    p->z = p->x + n;
+    return p;
+}
+
+tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[])
+{
+    if (tirenv_profile_validate(n, x, z, NULL) != TIRENV_OK)
+        return NULL;
+    struct tirenv_profile *p = tirenv_profile__new(n);
+    if (!p)
+        return NULL;
+    memcpy(p->x, x, n * sizeof(double));
+    memcpy(p->z, z, n * sizeof(double));
+    return p;
+}
+
+void tirenv_profile_free(tirenv_profile *p)
+{
+    free(p);
+}
+
+size_t tirenv_profile_size(const tirenv_profile *p)
+{
+    return p->n;
+}
+
+const double *tirenv_profile_x(const tirenv_profile *p)
+{
+    return p->x;
+}
+
+const double *tirenv_profile_z(const tirenv_profile *p)
+{
+    return p->z;
+}
+
+/* Flat extensions outside the polyline; at a wall the higher vertex, because a tire resting
+ * on the wall's top edge is held up by it. Interpolation is z_k + (z_{k+1} - z_k) t with
+ * t = (x - x_k) / (x_{k+1} - x_k), whose denominator is positive since walls are handled
+ * before it is formed. */
+double tirenv_profile_height(const tirenv_profile *p, double x)
+{
+    const double *xs = p->x, *zs = p->z;
+    if (x < xs[0])
+        return zs[0];
+    const size_t k = tirenv_profile__segment_at(p, x);
+    if (x == xs[k] && k >= 1 && xs[k - 1] == xs[k])
+        return fmax(zs[k - 1], zs[k]);
+    if (k == p->n - 1)
+        return zs[k];
+    const double t = (x - xs[k]) / (xs[k + 1] - xs[k]);
+    return zs[k] + (zs[k + 1] - zs[k]) * t;
+}
+
+/* The ground is piecewise linear, so its maximum over [x_lo, x_hi] is attained at a vertex
+ * inside the interval or at an end of it. Returns NAN if x_lo > x_hi or either is NaN. */
+double tirenv_profile_max_height(const tirenv_profile *p, double x_lo, double x_hi)
+{
+    if (!(x_lo <= x_hi))
+        return NAN;
+    double z_max = fmax(tirenv_profile_height(p, x_lo), tirenv_profile_height(p, x_hi));
+    /* First vertex with x_k >= x_lo: one past the last vertex with x_k < x_lo. */
+    size_t k = 0;
+    if (x_lo > p->x[0]) {
+        k = tirenv_profile__segment_at(p, x_lo);
+        while (k < p->n && p->x[k] < x_lo)
+            k++;
+        while (k > 0 && p->x[k - 1] >= x_lo) /* step back onto a wall's first vertex */
+            k--;
+    }
+    for (; k < p->n && p->x[k] <= x_hi; k++)
+        z_max = fmax(z_max, p->z[k]);
+    return z_max;
+}
+
+void tirenv_profile_extent(const tirenv_profile *p, double *x_first, double *x_last)
+{
+    if (x_first)
+        *x_first = p->x[0];
+    if (x_last)
+        *x_last = p->x[p->n - 1];
+}

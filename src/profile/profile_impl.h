@@ -1,0 +1,40 @@
+/* Private: the profile's layout, shared with the models that walk its segments directly
+ * (the rigid disc, the springs model's ray caster). Not part of the public API. */
+#ifndef TIRENV_PROFILE_IMPL_H
+#define TIRENV_PROFILE_IMPL_H
+
+#include <stddef.h>
+
+#include "tirenv/profile.h"
+
+/* One allocation: the struct, then x[0..n-1], then z[0..n-1]. Invariants (checked by
+ * tirenv_profile_validate): n >= 1, all finite, x non-decreasing, at most two equal x. */
+struct tirenv_profile {
+    size_t n;  /* number of vertices */
+    double *x; /* abscissae (m), non-decreasing */
+    double *z; /* heights (m) */
+};
+
+/* An uninitialised profile of n >= 1 vertices in one block, for generators that fill the
+ * arrays in place; the caller must establish the invariants above. NULL if out of memory. */
+struct tirenv_profile *tirenv_profile__new(size_t n);
+
+/* Index k of the last vertex with x_k <= x, found by binary search in O(log n); 0 when
+ * x < x_0 (callers tell the left flat extension apart by x < p->x[0]). At a wall
+ * (x_k == x_{k+1} == x) this is the wall's second vertex k+1. Segment k is [x_k, x_{k+1}]
+ * for k < n-1; k = n-1 means x lies on or beyond the last vertex (right extension). */
+static inline size_t tirenv_profile__segment_at(const struct tirenv_profile *p, double x)
+{
+    const double *xs = p->x;
+    size_t lo = 0, hi = p->n; /* answer (count of x_k <= x) lies in [lo, hi] */
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (xs[mid] <= x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo == 0 ? 0 : lo - 1;
+}
+
+#endif
