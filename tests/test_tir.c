@@ -1,0 +1,584 @@
+/* The .tir reader, --set and writer, and the all-or-nothing output file.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "testutil.h"
+#include "tirenv/io.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* ---- helpers ------------------------------------------------------------------------- */
+
+/* Each test gets a fresh directory, removed (and checked empty of strays) afterwards. */
+typedef struct {
+    char dir[64];
+} fixture;
+
+static int setup(void **state)
+{
+    fixture *fx = calloc(1, sizeof *fx);
+    if (!fx)
+        return -1;
+    snprintf(fx->dir, sizeof fx->dir, "/tmp/tirenv_test_tir_XXXXXX");
+    if (!mkdtemp(fx->dir)) {
+        free(fx);
+        return -1;
+    }
+    *state = fx;
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    fixture *fx = *state;
+    DIR *d = opendir(fx->dir);
+    if (d) {
+        const struct dirent *e;
+        char path[600];
+        while ((e = readdir(d)) != NULL) {
+            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                continue;
+            snprintf(path, sizeof path, "%s/%s", fx->dir, e->d_name);
+            remove(path);
+        }
+        closedir(d);
+    }
+    const int r = rmdir(fx->dir);
+    free(fx);
+    return r;
+}
+
+static const char *in_dir(const fixture *fx, const char *name, char buf[600])
+{
+    snprintf(buf, 600, "%s/%s", fx->dir, name);
+    return buf;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *fp = fopen(path, "w");
+    assert_non_null(fp);
+    assert_int_equal(fputs(text, fp) >= 0, 1);
+    assert_int_equal(fclose(fp), 0);
+}
+
+static size_t count_entries(const fixture *fx, const char *containing)
+{
+    DIR *d = opendir(fx->dir);
+    assert_non_null(d);
+    size_t n = 0;
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        if (strstr(e->d_name, containing) && strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
+            n++;
+    closedir(d);
+    return n;
+}
+
+static int file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* Exactness is the claim here, so compare the bits, and print them when they differ. */
+#define assert_bits_equal(a, b) check_bits((a), (b), #a, __FILE__, __LINE__)
+
+static void check_bits(double a, double b, const char *expr, const char *file, int line)
+{
+    if (memcmp(&a, &b, sizeof a) != 0) {
+        print_error("%s = %.17g (%a), expected exactly %.17g (%a)\n", expr, a, a, b, b);
+        _fail(file, line);
+    }
+}
+
+static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
+{
+    assert_bits_equal(a->springs.R0, b->springs.R0);
+    assert_bits_equal(a->springs.c_r, b->springs.c_r);
+    assert_bits_equal(a->springs.c_b, b->springs.c_b);
+    assert_bits_equal(a->springs.phi, b->springs.phi);
+    assert_bits_equal(a->springs.dphi, b->springs.dphi);
+    assert_int_equal(a->eq.method, b->eq.method);
+    assert_bits_equal(a->eq.eps_F, b->eq.eps_F);
+    assert_bits_equal(a->eq.eps_z, b->eq.eps_z);
+    assert_int_equal(a->eq.max_iter, b->eq.max_iter);
+    assert_bits_equal(a->eq.secant_dz, b->eq.secant_dz);
+}
+
+/* Physical, but unlike the default in every field: a file read over it must set them all. */
+static tirenv_tire entropic_tire(void)
+{
+    return (tirenv_tire){
+        .springs = {.R0 = 0.6837, .c_r = 1.5831e6, .c_b = 8734.29, .phi = 2.9137,
+                    .dphi = 0.0071893},
+        .eq = {.method = TIRENV_EQ_BRENT, .eps_F = 3.7e-7, .eps_z = 2.9e-11, .max_iter = 73,
+               .secant_dz = 7.31e-4},
+    };
+}
+
+/* ---- reading ------------------------------------------------------------------------- */
+
+static void test_default_file_matches_builtin(void **state)
+{
+    (void)state;
+    tirenv_tire t = entropic_tire();
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    const int status = tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d);
+    assert_int_equal(status, TIRENV_OK);
+    const tirenv_tire def = tirenv_tire_default();
+    assert_tire_identical(&t, &def);
+}
+
+/* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION] keys of other models,
+ * 'Newton' capitalised. Only UNLOADED_RADIUS is taken. */
+static void test_mftyre_excerpt_loads(void **state)
+{
+    (void)state;
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    const int status = tirenv_tir_read(TIRENV_TEST_DATA "/tir_mftyre.tir", &t, &d);
+    assert_int_equal(status, TIRENV_OK);
+    tirenv_tire expected = tirenv_tire_default();
+    expected.springs.R0 = 0.7125;
+    assert_tire_identical(&t, &expected);
+}
+
+static void test_comments_and_case(void **state)
+{
+    fixture *fx = *state;
+    char path[600];
+    write_text(in_dir(fx, "case.tir", path),
+               "\xEF\xBB\xBF$ a BOM, a leading comment, then lower-case names\r\n"
+               "  [ dimension ]  $ spaces inside the brackets\r\n"
+               "unloaded_radius=0.6837$no space before the comment\r\n"
+               "[ENVELOPING_SOLVER]\n"
+               "METHOD = 'Secant' $ names are not case-sensitive\n"
+               "! a bang comment inside a section\n"
+               "MAX_ITERATIONS = 37\n"
+               "[MODEL]\n"
+               "this line is not KEY = value, but the section is not ours\n");
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_bits_equal(t.springs.R0, 0.6837);
+    assert_int_equal(t.eq.method, TIRENV_EQ_SECANT);
+    assert_int_equal(t.eq.max_iter, 37);
+}
+
+typedef struct {
+    const char *text;   /* file contents */
+    int status;
+    size_t line, column;
+    const char *field;
+    const char *says;   /* a phrase the message must contain */
+} read_error_case;
+
+static const read_error_case read_errors[] = {
+    /* typos in our own sections */
+    {"[ENVELOPING_SPRINGS]\nRADIAL_STIFNESS = 1.6e6\n", TIRENV_EPARSE, 2, 1,
+     "RADIAL_STIFNESS", "unknown key in [ENVELOPING_SPRINGS]; expected one of RADIAL_STIFFNESS"},
+    {"[ENVELOPING_SOLVER]\nMETHOD = 'newton'\n  TOLERANCE = 1e-6\n", TIRENV_EPARSE, 3, 3,
+     "TOLERANCE", "expected one of METHOD, FORCE_TOLERANCE"},
+    {"[ENVELOPING_SPRING]\nRADIAL_STIFFNESS = 1.6e6\n", TIRENV_EPARSE, 1, 2,
+     "ENVELOPING_SPRING", "unknown section"},
+    /* numbers */
+    {"[DIMENSION]\nUNLOADED_RADIUS = abc\n", TIRENV_EPARSE, 2, 19, "UNLOADED_RADIUS",
+     "expected a number, got 'abc'"},
+    {"[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS = 1.6e6x  $ comment\n", TIRENV_EPARSE, 2, 25,
+     "RADIAL_STIFFNESS", "unexpected 'x' after the number 1.6e6"},
+    {"[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS = 1.6e6 N/m/rad\n", TIRENV_EPARSE, 2, 26,
+     "RADIAL_STIFFNESS", "after the number"},
+    {"[ENVELOPING_SOLVER]\nFORCE_TOLERANCE = inf\n", TIRENV_EPARSE, 2, 19, "FORCE_TOLERANCE",
+     "expected a finite number"},
+    {"[ENVELOPING_SPRINGS]\nSEGMENT_ANGLE = nan\n", TIRENV_EPARSE, 2, 17, "SEGMENT_ANGLE",
+     "expected a finite number"},
+    {"[DIMENSION]\nUNLOADED_RADIUS = 1e999\n", TIRENV_EPARSE, 2, 19, "UNLOADED_RADIUS",
+     "expected a finite number"},
+    {"[DIMENSION]\nUNLOADED_RADIUS = '0.68'\n", TIRENV_EPARSE, 2, 19, "UNLOADED_RADIUS",
+     "expected a number, got the string"},
+    {"[DIMENSION]\nUNLOADED_RADIUS =   $ nothing\n", TIRENV_EPARSE, 2, 21, "UNLOADED_RADIUS",
+     "missing value"},
+    {"[ENVELOPING_SOLVER]\nMAX_ITERATIONS = 2.5\n", TIRENV_EPARSE, 2, 19, "MAX_ITERATIONS",
+     "expected a positive integer"},
+    {"[ENVELOPING_SOLVER]\nMAX_ITERATIONS = -3\n", TIRENV_EPARSE, 2, 18, "MAX_ITERATIONS",
+     "expected a positive integer"},
+    {"[ENVELOPING_SOLVER]\nMAX_ITERATIONS = 0\n", TIRENV_EPARSE, 2, 18, "MAX_ITERATIONS",
+     "expected a positive integer"},
+    {"[ENVELOPING_SOLVER]\nMETHOD = 'bisect'\n", TIRENV_EPARSE, 2, 11, "METHOD",
+     "unknown method 'bisect'; expected 'newton', 'secant' or 'brent'"},
+    /* structure */
+    {"[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS = 1.6e6\nINTERRADIAL_STIFFNESS = 1e4\n"
+     "RADIAL_STIFFNESS = 1.7e6\n", TIRENV_EPARSE, 4, 1, "RADIAL_STIFFNESS",
+     "duplicate key (first set on line 2)"},
+    {"[DIMENSION]\nUNLOADED_RADIUS = 0.7\n[VERTICAL]\nFNOMIN = 1\n[DIMENSION]\n"
+     "unloaded_radius = 0.7\n", TIRENV_EPARSE, 6, 1, "UNLOADED_RADIUS", "duplicate key"},
+    {"[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS 1.6e6\n", TIRENV_EPARSE, 2, 17,
+     "RADIAL_STIFFNESS", "missing '='; expected KEY = value"},
+    {"[DIMENSION]\n= 0.7\n", TIRENV_EPARSE, 2, 1, "", "missing key"},
+    {"[MDI_HEADER]\nFILE_TYPE='tir'\n\n[ENVELOPING_SPRINGS\nRADIAL_STIFFNESS = 1e6\n",
+     TIRENV_EPARSE, 4, 1, "", "unterminated section header; expected ']'"},
+    {"[DIMENSION] UNLOADED_RADIUS = 0.7\n", TIRENV_EPARSE, 1, 13, "",
+     "after the section header"},
+    {"[]\n", TIRENV_EPARSE, 1, 1, "", "empty section name"},
+    {"UNLOADED_RADIUS = 0.7\n[DIMENSION]\n", TIRENV_EPARSE, 1, 1, "",
+     "before the first section"},
+    /* units: SI only */
+    {"[UNITS]\nLENGTH = 'meter'\nFORCE = 'kN'\n", TIRENV_EPARSE, 3, 10, "FORCE",
+     "unit 'kN' is not supported (tirenv reads SI only); expected 'newton'"},
+    {"[UNITS]\nANGLE = 'deg'\n", TIRENV_EPARSE, 2, 10, "ANGLE",
+     "expected 'radians' or 'rad'"},
+    {"[UNITS]\nLENGTH = 'meter\n", TIRENV_EPARSE, 2, 10, "LENGTH", "unterminated string"},
+    {"[UNITS]\nPRESSURE = 'pascal'\n", TIRENV_EPARSE, 2, 1, "PRESSURE",
+     "unknown key in [UNITS]"},
+    /* parsed fine, but unphysical: the line of the key, no column */
+    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[ENVELOPING_SPRINGS]\nSEGMENT_ANGLE = 3.0\n"
+     "RADIAL_STIFFNESS = -1.6e6 $ sign typo\n", TIRENV_EINVAL, 5, 0, "RADIAL_STIFFNESS",
+     "must be positive"},
+    {"[DIMENSION]\nUNLOADED_RADIUS = 0\n", TIRENV_EINVAL, 2, 0, "UNLOADED_RADIUS",
+     "must be a positive length"},
+    {"[ENVELOPING_SPRINGS]\nSEGMENT_ANGLE = 3.0\n\nELEMENT_ANGLE = 1.6\n", TIRENV_EINVAL, 4,
+     0, "ELEMENT_ANGLE", "SEGMENT_ANGLE/2"},
+    {"[ENVELOPING_SOLVER]\nMETHOD = 'secant'\nFORCE_TOLERANCE = -1e-6\n", TIRENV_EINVAL, 3, 0,
+     "FORCE_TOLERANCE", "positive"},
+    {"[ENVELOPING_SOLVER]\nMAX_ITERATIONS = 1\n", TIRENV_EINVAL, 2, 0, "MAX_ITERATIONS",
+     "max_iter >= 2"},
+    {"[ENVELOPING_SOLVER]\nSECANT_STEP = -1e-3\n", TIRENV_EINVAL, 2, 0, "SECANT_STEP",
+     "positive"},
+};
+
+static void test_read_errors(void **state)
+{
+    fixture *fx = *state;
+    for (size_t i = 0; i < sizeof read_errors / sizeof read_errors[0]; i++) {
+        const read_error_case *k = &read_errors[i];
+        char path[600], name[32];
+        snprintf(name, sizeof name, "err%02zu.tir", i);
+        write_text(in_dir(fx, name, path), k->text);
+        const tirenv_tire before = entropic_tire();
+        tirenv_tire t = before;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        const int status = tirenv_tir_read(path, &t, &d);
+        char line[1200];
+        print_message("case %zu: %s\n", i, tirenv_diag_format(&d, line, sizeof line));
+        assert_int_equal(status, k->status);
+        assert_string_equal(d.file, path);
+        assert_int_equal(d.line, k->line);
+        assert_int_equal(d.column, k->column);
+        assert_string_equal(d.field, k->field);
+        assert_non_null(strstr(d.message, k->says));
+        assert_tire_identical(&t, &before);
+    }
+}
+
+static void test_missing_file(void **state)
+{
+    fixture *fx = *state;
+    char path[600];
+    in_dir(fx, "no-such.tir", path);
+    tirenv_tire t = entropic_tire();
+    const tirenv_tire before = t;
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_EIO);
+    assert_string_equal(d.file, path);
+    assert_non_null(strstr(d.message, strerror(ENOENT)));
+    assert_tire_identical(&t, &before);
+    /* A directory opens for reading on Linux; the error comes from the first read. */
+    assert_int_equal(tirenv_tir_read(fx->dir, &t, &d), TIRENV_EIO);
+    assert_string_equal(d.file, fx->dir);
+    assert_tire_identical(&t, &before);
+}
+
+/* ---- --set ----------------------------------------------------------------------------- */
+
+static void test_set_good(void **state)
+{
+    (void)state;
+    const struct {
+        const char *text;
+        size_t offset; /* of the double it sets */
+        double value;
+    } reals[] = {
+        {"RADIAL_STIFFNESS=1.5831e6", offsetof(tirenv_tire, springs.c_r), 1.5831e6},
+        {"  UNLOADED_RADIUS = 0.6837 ", offsetof(tirenv_tire, springs.R0), 0.6837},
+        {"ENVELOPING_SPRINGS.SEGMENT_ANGLE = 2.5", offsetof(tirenv_tire, springs.phi), 2.5},
+        {"dimension.unloaded_radius=0.7125", offsetof(tirenv_tire, springs.R0), 0.7125},
+        {"INTERRADIAL_STIFFNESS=0", offsetof(tirenv_tire, springs.c_b), 0.0},
+        {"ELEMENT_ANGLE=0.0071893", offsetof(tirenv_tire, springs.dphi), 0.0071893},
+        {"FORCE_TOLERANCE=3.7e-7", offsetof(tirenv_tire, eq.eps_F), 3.7e-7},
+        {"STEP_TOLERANCE=2.9e-11", offsetof(tirenv_tire, eq.eps_z), 2.9e-11},
+        {"SECANT_STEP=7.31e-4", offsetof(tirenv_tire, eq.secant_dz), 7.31e-4},
+    };
+    for (size_t i = 0; i < sizeof reals / sizeof reals[0]; i++) {
+        tirenv_tire t = tirenv_tire_default();
+        tirenv_diag d;
+        assert_int_equal(tirenv_tir_set(&t, reals[i].text, &d), TIRENV_OK);
+        double got;
+        memcpy(&got, (const unsigned char *)&t + reals[i].offset, sizeof got);
+        assert_bits_equal(got, reals[i].value);
+    }
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_set(&t, "METHOD=secant", &d), TIRENV_OK);
+    assert_int_equal(t.eq.method, TIRENV_EQ_SECANT);
+    assert_int_equal(tirenv_tir_set(&t, "METHOD = 'brent'", &d), TIRENV_OK);
+    assert_int_equal(t.eq.method, TIRENV_EQ_BRENT);
+    assert_int_equal(tirenv_tir_set(&t, "MAX_ITERATIONS=37", &d), TIRENV_OK);
+    assert_int_equal(t.eq.max_iter, 37);
+}
+
+static void test_set_errors(void **state)
+{
+    (void)state;
+    const struct {
+        const char *text;
+        int status;
+        const char *field;
+        const char *says;
+    } cases[] = {
+        {"RADIAL_STIFFNESS", TIRENV_EPARSE, "", "expected KEY=VALUE, got 'RADIAL_STIFFNESS'"},
+        {"RADIAL_STIFNESS=1e6", TIRENV_EPARSE, "RADIAL_STIFNESS", "unknown key; expected one of"},
+        {"WIDTH=0.42", TIRENV_EPARSE, "WIDTH", "unknown key"},
+        {"LENGTH=meter", TIRENV_EPARSE, "LENGTH", "unknown key"},
+        {"DIMENSION.RADIAL_STIFFNESS=1e6", TIRENV_EPARSE, "RADIAL_STIFFNESS",
+         "unknown key in section DIMENSION"},
+        {"=5", TIRENV_EPARSE, "", "unknown key"},
+        {"RADIAL_STIFFNESS=abc", TIRENV_EPARSE, "RADIAL_STIFFNESS", "expected a number"},
+        {"RADIAL_STIFFNESS=1e6 N", TIRENV_EPARSE, "RADIAL_STIFFNESS", "after the number"},
+        {"STEP_TOLERANCE=", TIRENV_EPARSE, "STEP_TOLERANCE", "missing value"},
+        {"ELEMENT_ANGLE=nan", TIRENV_EPARSE, "ELEMENT_ANGLE", "finite"},
+        {"METHOD=bisect", TIRENV_EPARSE, "METHOD", "unknown method"},
+        {"MAX_ITERATIONS=1e3", TIRENV_EPARSE, "MAX_ITERATIONS", "positive integer"},
+        {"RADIAL_STIFFNESS=-1e6", TIRENV_EINVAL, "RADIAL_STIFFNESS", "must be positive"},
+        {"MAX_ITERATIONS=1", TIRENV_EINVAL, "MAX_ITERATIONS", "max_iter >= 2"},
+        {"ELEMENT_ANGLE=3", TIRENV_EINVAL, "ELEMENT_ANGLE", "SEGMENT_ANGLE/2"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const tirenv_tire before = entropic_tire();
+        tirenv_tire t = before;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        const int status = tirenv_tir_set(&t, cases[i].text, &d);
+        char line[1200];
+        print_message("case %zu: %s\n", i, tirenv_diag_format(&d, line, sizeof line));
+        assert_int_equal(status, cases[i].status);
+        assert_string_equal(d.file, "--set");
+        assert_int_equal(d.line, 0);
+        assert_int_equal(d.column, 0);
+        assert_string_equal(d.field, cases[i].field);
+        assert_non_null(strstr(d.message, cases[i].says));
+        assert_tire_identical(&t, &before);
+    }
+}
+
+/* ---- writing --------------------------------------------------------------------------- */
+
+/* Values that need all 17 digits, extremes of the double range, and everyday values that
+ * must come out short (0.68, not 0.68000000000000005). */
+static void test_write_read_round_trip(void **state)
+{
+    fixture *fx = *state;
+    tirenv_tire extreme = entropic_tire();
+    extreme.springs.R0 = 0.1 + 0.2; /* 0.30000000000000004 */
+    extreme.springs.c_r = DBL_MAX;
+    extreme.springs.c_b = 0.0;
+    extreme.springs.phi = M_PI;
+    extreme.springs.dphi = M_PI / 7.0;
+    extreme.eq.method = TIRENV_EQ_SECANT;
+    extreme.eq.eps_F = DBL_MIN;
+    extreme.eq.eps_z = 4.9406564584124654e-324; /* the smallest subnormal */
+    extreme.eq.max_iter = 2;
+    extreme.eq.secant_dz = 1.0 / 3.0;
+    const tirenv_tire tires[] = {entropic_tire(), tirenv_tire_default(), extreme};
+    for (size_t i = 0; i < sizeof tires / sizeof tires[0]; i++) {
+        char path[600];
+        in_dir(fx, "rt.tir", path);
+        tirenv_diag d;
+        assert_int_equal(tirenv_tir_write(path, &tires[i], &d), TIRENV_OK);
+        tirenv_tire back = i == 0 ? tirenv_tire_default() : entropic_tire();
+        assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
+        assert_tire_identical(&back, &tires[i]);
+    }
+    assert_int_equal(count_entries(fx, ".tmp."), 0);
+
+    char path[600], text[4096];
+    in_dir(fx, "default.tir", path);
+    tirenv_diag d;
+    const tirenv_tire def = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_write(path, &def, &d), TIRENV_OK);
+    FILE *fp = fopen(path, "r");
+    assert_non_null(fp);
+    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
+    fclose(fp);
+    assert_non_null(strstr(text, "[MDI_HEADER]\nFILE_TYPE                = 'tir'\n"));
+    assert_non_null(strstr(text, "\nUNLOADED_RADIUS          = 0.68 "));
+    assert_non_null(strstr(text, "\nMETHOD                   = 'newton' "));
+    assert_non_null(strstr(text, "\nLENGTH                   = 'meter' "));
+}
+
+static void test_write_refuses_unphysical(void **state)
+{
+    fixture *fx = *state;
+    char path[600];
+    in_dir(fx, "bad.tir", path);
+    tirenv_tire t = tirenv_tire_default();
+    t.springs.c_r = -1.6e6;
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "RADIAL_STIFFNESS");
+    assert_false(file_exists(path));
+    assert_int_equal(count_entries(fx, ".tmp."), 0);
+}
+
+static void test_write_into_missing_dir(void **state)
+{
+    fixture *fx = *state;
+    char path[600];
+    in_dir(fx, "no-such-dir/x.tir", path);
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_EIO);
+    assert_string_equal(d.file, path);
+    assert_non_null(strstr(d.message, strerror(ENOENT)));
+}
+
+/* ---- output files ---------------------------------------------------------------------- */
+
+static void read_back(const char *path, char *buf, size_t n)
+{
+    FILE *fp = fopen(path, "r");
+    assert_non_null(fp);
+    buf[fread(buf, 1, n - 1, fp)] = '\0';
+    fclose(fp);
+}
+
+static void test_outfile_commit(void **state)
+{
+    fixture *fx = *state;
+    char path[600], text[64];
+    in_dir(fx, "out.csv", path);
+    const mode_t old_mask = umask(027);
+    tirenv_outfile f;
+    tirenv_diag d;
+    assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
+    fputs("x_m,z_m\n", f.fp);
+    /* Until commit, readers see no target, only the temporary file. */
+    assert_false(file_exists(path));
+    assert_int_equal(count_entries(fx, "out.csv.tmp."), 1);
+    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    umask(old_mask);
+    read_back(path, text, sizeof text);
+    assert_string_equal(text, "x_m,z_m\n");
+    assert_int_equal(count_entries(fx, ".tmp."), 0);
+    /* mkstemp's 0600 would surprise; a new file gets 0666 minus the umask, like fopen. */
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    assert_int_equal(st.st_mode & 0777, 0640);
+    tirenv_outfile_abort(&f); /* after commit: nothing to do, and the file stays */
+    assert_true(file_exists(path));
+}
+
+static void test_outfile_abort(void **state)
+{
+    fixture *fx = *state;
+    char path[600];
+    in_dir(fx, "out.csv", path);
+    tirenv_outfile f;
+    tirenv_diag d;
+    assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
+    fputs("half a fi", f.fp);
+    tirenv_outfile_abort(&f);
+    tirenv_outfile_abort(&f); /* safe twice */
+    assert_false(file_exists(path));
+    assert_int_equal(count_entries(fx, ".tmp."), 0);
+    assert_int_equal(count_entries(fx, ""), 0);
+    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_EINVAL);
+    assert_false(file_exists(path));
+}
+
+static void test_outfile_replaces_existing(void **state)
+{
+    fixture *fx = *state;
+    char path[600], text[64];
+    in_dir(fx, "out.csv", path);
+    write_text(path, "old contents, longer than the new ones\n");
+    assert_int_equal(chmod(path, 0604), 0);
+    tirenv_outfile f;
+    tirenv_diag d;
+    assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
+    fputs("new\n", f.fp);
+    read_back(path, text, sizeof text); /* the old file is intact until commit */
+    assert_string_equal(text, "old contents, longer than the new ones\n");
+    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    read_back(path, text, sizeof text);
+    assert_string_equal(text, "new\n");
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    assert_int_equal(st.st_mode & 0777, 0604); /* the replaced file's mode is kept */
+    assert_int_equal(count_entries(fx, ""), 1);
+}
+
+static void test_outfile_errors(void **state)
+{
+    fixture *fx = *state;
+    char path[600];
+    in_dir(fx, "missing/out.csv", path);
+    tirenv_outfile f;
+    tirenv_diag d;
+    assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_EIO);
+    assert_string_equal(d.file, path);
+    assert_non_null(strstr(d.message, strerror(ENOENT)));
+    assert_null(f.fp);
+    tirenv_outfile_abort(&f); /* after a failed open: harmless */
+
+    char long_path[600];
+    memset(long_path, 'a', sizeof long_path - 1);
+    long_path[sizeof long_path - 1] = '\0';
+    assert_int_equal(tirenv_outfile_open(&f, long_path, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_outfile_open(&f, "", &d), TIRENV_EINVAL);
+}
+
+static void test_outfile_stdout(void **state)
+{
+    (void)state;
+    tirenv_outfile f;
+    tirenv_diag d;
+    assert_int_equal(tirenv_outfile_open(&f, "-", &d), TIRENV_OK);
+    assert_ptr_equal(f.fp, stdout);
+    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    tirenv_outfile_abort(&f); /* must not close stdout */
+    assert_int_equal(fflush(stdout), 0);
+}
+
+int main(void)
+{
+#define T(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
+    const struct CMUnitTest tests[] = {
+        T(test_default_file_matches_builtin),
+        T(test_mftyre_excerpt_loads),
+        T(test_comments_and_case),
+        T(test_read_errors),
+        T(test_missing_file),
+        T(test_set_good),
+        T(test_set_errors),
+        T(test_write_read_round_trip),
+        T(test_write_refuses_unphysical),
+        T(test_write_into_missing_dir),
+        T(test_outfile_commit),
+        T(test_outfile_abort),
+        T(test_outfile_replaces_existing),
+        T(test_outfile_errors),
+        T(test_outfile_stdout),
+    };
+#undef T
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
