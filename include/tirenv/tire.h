@@ -36,9 +36,25 @@ typedef struct {
     double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
 } tirenv_springs_params;
 
+/* Parameters of the flexible-ring reference tire (MODEL.md section 5): a belt of radius
+ * R = R0 - t_r on an elastic foundation, with a tread layer of radial brush springs. Energy per
+ * unit belt length: 1/2 EI ((w''+w)/R^2)^2 + 1/2 (T/R^2)(w'^2 - w^2) + 1/2 k_f w^2. */
+typedef struct {
+    double t_r;            /* [ENVELOPING_RING] TREAD_THICKNESS, m */
+    double EI;             /* BELT_BENDING_STIFFNESS, N*m^2 */
+    double T;              /* BELT_PRETENSION, N */
+    double k_f;            /* FOUNDATION_STIFFNESS, per unit belt length, N/m^2 */
+    double k_t;            /* TREAD_STIFFNESS, per unit belt length, N/m^2 */
+    double dtheta;         /* NODE_ANGLE: node spacing around the full circle, rad */
+    double lug_count;      /* LUG_COUNT: lugs around the circumference; 0 = smooth tread */
+    double lug_fraction;   /* LUG_FRACTION: share of the circumference under lugs, (0, 1) */
+    double lug_ratio;      /* LUG_GROOVE_RATIO: tread stiffness between lugs / on lugs, (0, 1] */
+} tirenv_ring_params;
+
 /* Everything a model needs to know about the tire and how to solve it. */
 typedef struct {
     tirenv_springs_params springs;
+    tirenv_ring_params ring;
     tirenv_eq_settings eq;
 } tirenv_tire;
 

@@ -65,7 +65,7 @@ char *tirenv_diag_format(const tirenv_diag *diag, char *buf, size_t n)
         APPEND("%s", diag->file);
         if (diag->line)
             APPEND(":%zu", diag->line);
-        if (diag->column)
+        if (diag->line && diag->column)
             APPEND(":%zu", diag->column);
         APPEND(": ");
     }

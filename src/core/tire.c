@@ -14,7 +14,7 @@ tirenv_eq_settings tirenv_eq_default(void)
     };
 }
 
-/* The default tractor tire: a 14.9R28 / 420/85R28-class drive tire at about 1.4 bar.
+/* The default tractor tire: a 14.9R28 (380/85R28) class drive tire at about 1.4 bar.
  * R0 = 0.68 m is half its nominal 1.36 m overall diameter. c_r and c_b are chosen so that the
  * flat-ground contact lengths 0.28 / 0.33 / 0.38 m come at loads a tire of this class carries
  * (see data/tires/default.tir for the figures and reasoning). */
@@ -27,6 +27,19 @@ tirenv_tire tirenv_tire_default(void)
             .c_b = 1.0e4,
             .phi = M_PI,
             .dphi = M_PI / 360.0,
+        },
+        /* MODEL.md section 5's starting point: EI and T of a bias-ply-like tractor belt,
+         * T ~ p*b*R (140 kPa * 0.38 m * 0.64 m = 34 kN). */
+        .ring = {
+            .t_r = 0.04,
+            .EI = 500,
+            .T = 34e3,
+            .k_f = 1e6,
+            .k_t = 4e6,
+            .dtheta = M_PI / 360.0,
+            .lug_count = 0,
+            .lug_fraction = 0.5,
+            .lug_ratio = 1,
         },
         .eq = tirenv_eq_default(),
     };
@@ -54,11 +67,48 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (s->phi / s->dphi > 1e6)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "gives more than a million elements (%g rad)", s->dphi);
-    if (!(eq->eps_F > 0) || !(eq->eps_z > 0) || eq->max_iter < 2 || !(eq->secant_dz > 0))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "EQUILIBRIUM",
-                            "tolerances must be positive and max_iter >= 2");
+    const tirenv_ring_params *r = &tire->ring;
+    if (!(r->t_r >= 0 && r->t_r < s->R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_THICKNESS",
+                            "must be in [0, UNLOADED_RADIUS) m, got %g", r->t_r);
+    if (!(r->EI >= 0 && isfinite(r->EI)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_BENDING_STIFFNESS",
+                            "must be zero or positive (N*m^2), got %g", r->EI);
+    if (!(r->T >= 0 && isfinite(r->T)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
+                            "must be zero or positive (N), got %g", r->T);
+    if (!(r->k_f > 0 && isfinite(r->k_f)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FOUNDATION_STIFFNESS",
+                            "must be positive (N/m^2), got %g", r->k_f);
+    if (!(r->k_t > 0 && isfinite(r->k_t)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_STIFFNESS",
+                            "must be positive (N/m^2), got %g", r->k_t);
+    if (!(r->dtheta > 0 && r->dtheta <= M_PI / 8))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NODE_ANGLE",
+                            "must be in (0, pi/8] rad, got %g", r->dtheta);
+    if (!(r->lug_count >= 0 && r->lug_count == floor(r->lug_count) && r->lug_count < 1000))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "LUG_COUNT",
+                            "must be a whole number in [0, 1000), got %g", r->lug_count);
+    if (!(r->lug_fraction > 0 && r->lug_fraction < 1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "LUG_FRACTION",
+                            "must be in (0, 1), got %g", r->lug_fraction);
+    if (!(r->lug_ratio > 0 && r->lug_ratio <= 1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "LUG_GROOVE_RATIO",
+                            "must be in (0, 1], got %g", r->lug_ratio);
+    if (!(eq->eps_F > 0 && isfinite(eq->eps_F)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FORCE_TOLERANCE",
+                            "must be a positive force in N, got %g", eq->eps_F);
+    if (!(eq->eps_z > 0 && isfinite(eq->eps_z)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "STEP_TOLERANCE",
+                            "must be a positive length in m, got %g", eq->eps_z);
+    if (eq->max_iter < 2) /* the secant needs two points */
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "MAX_ITERATIONS",
+                            "must be at least 2, got %zu", eq->max_iter);
+    if (!(eq->secant_dz > 0 && isfinite(eq->secant_dz)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SECANT_STEP",
+                            "must be a positive length in m, got %g", eq->secant_dz);
     if (eq->method > TIRENV_EQ_BRENT)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "EQUILIBRIUM_METHOD",
-                            "unknown method %d", (int)eq->method);
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
+                            "unknown equilibrium method %d", (int)eq->method);
     return TIRENV_OK;
 }

@@ -52,6 +52,24 @@ static const tir_key tir_keys[] = {
      "phi: width of the modelled tread segment, rad"},
     {"ENVELOPING_SPRINGS", "ELEMENT_ANGLE", TIR_REAL, TIR_FIELD(springs.dphi), {NULL, NULL},
      "dphi: angle between adjacent radial elements, rad"},
+    {"ENVELOPING_RING", "TREAD_THICKNESS", TIR_REAL, TIR_FIELD(ring.t_r), {NULL, NULL},
+     "t_r: tread layer between belt and ground, m"},
+    {"ENVELOPING_RING", "BELT_BENDING_STIFFNESS", TIR_REAL, TIR_FIELD(ring.EI), {NULL, NULL},
+     "EI: bending stiffness of the belt, N*m^2"},
+    {"ENVELOPING_RING", "BELT_PRETENSION", TIR_REAL, TIR_FIELD(ring.T), {NULL, NULL},
+     "T: belt tension from inflation, about p*b*R, N"},
+    {"ENVELOPING_RING", "FOUNDATION_STIFFNESS", TIR_REAL, TIR_FIELD(ring.k_f), {NULL, NULL},
+     "k_f: sidewall + air foundation per unit belt length, N/m^2"},
+    {"ENVELOPING_RING", "TREAD_STIFFNESS", TIR_REAL, TIR_FIELD(ring.k_t), {NULL, NULL},
+     "k_t: tread brush stiffness per unit belt length, N/m^2"},
+    {"ENVELOPING_RING", "NODE_ANGLE", TIR_REAL, TIR_FIELD(ring.dtheta), {NULL, NULL},
+     "dtheta: node spacing around the full circle, rad"},
+    {"ENVELOPING_RING", "LUG_COUNT", TIR_REAL, TIR_FIELD(ring.lug_count), {NULL, NULL},
+     "lugs around the circumference; 0 = smooth tread"},
+    {"ENVELOPING_RING", "LUG_FRACTION", TIR_REAL, TIR_FIELD(ring.lug_fraction), {NULL, NULL},
+     "share of the circumference under lugs"},
+    {"ENVELOPING_RING", "LUG_GROOVE_RATIO", TIR_REAL, TIR_FIELD(ring.lug_ratio), {NULL, NULL},
+     "tread stiffness between lugs / on lugs"},
     {"ENVELOPING_SOLVER", "METHOD", TIR_METHOD, TIR_FIELD(eq.method), {NULL, NULL},
      "equilibrium iteration: 'newton', 'secant' or 'brent'"},
     {"ENVELOPING_SOLVER", "FORCE_TOLERANCE", TIR_REAL, TIR_FIELD(eq.eps_F), {NULL, NULL},
@@ -77,6 +95,7 @@ static const tir_section tir_sections[] = {
     {"UNITS", 1},
     {"DIMENSION", 0},
     {"ENVELOPING_SPRINGS", 1},
+    {"ENVELOPING_RING", 1},
     {"ENVELOPING_SOLVER", 1},
 };
 #define TIR_NSECTIONS (sizeof tir_sections / sizeof tir_sections[0])
@@ -269,21 +288,6 @@ static int tir_apply(const tir_ctx *c, const tir_key *e, char *value, tirenv_tir
     return tir_fail(c, value, e->key, "internal error: unknown key kind");
 }
 
-/* tirenv_tire_check reports the solver settings together as "EQUILIBRIUM"; name the key
- * that is wrong, so the error can point at its line. */
-static const char *tir_eq_offender(const tirenv_eq_settings *eq)
-{
-    if (!(eq->eps_F > 0))
-        return "FORCE_TOLERANCE";
-    if (!(eq->eps_z > 0))
-        return "STEP_TOLERANCE";
-    if (eq->max_iter < 2)
-        return "MAX_ITERATIONS";
-    if (!(eq->secant_dz > 0))
-        return "SECANT_STEP";
-    return "EQUILIBRIUM";
-}
-
 /* Runs the physical check on the parsed tire and points its error at the line where the
  * offending key was set (line 0 if the value did not come from this file). */
 static int tir_check(const tirenv_tire *tire, const char *file, const size_t seen[],
@@ -294,8 +298,7 @@ static int tir_check(const tirenv_tire *tire, const char *file, const size_t see
     const int status = tirenv_tire_check(tire, &d);
     if (status == TIRENV_OK)
         return TIRENV_OK;
-    const char *key = strcmp(d.field, "EQUILIBRIUM") == 0 ? tir_eq_offender(&tire->eq)
-                                                          : d.field;
+    const char *key = d.field;
     const size_t i = tir_find_key(NULL, key);
     return tirenv_error(diag, status, file, i < TIR_NKEYS ? seen[i] : 0, key, "%s", d.message);
 }
@@ -317,7 +320,7 @@ static int tir_section_line(const tir_ctx *c, char *open, const tir_section **se
     *sec = tir_find_section(name);
     if (!*sec && strncasecmp(name, tir_own_prefix, sizeof tir_own_prefix - 1) == 0)
         return tir_fail(c, open + 1, name, "unknown section [%.60s]; expected "
-                        "[ENVELOPING_SPRINGS] or [ENVELOPING_SOLVER]", name);
+                        "[ENVELOPING_SPRINGS], [ENVELOPING_RING] or [ENVELOPING_SOLVER]", name);
     return TIRENV_OK;
 }
 
