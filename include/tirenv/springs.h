@@ -21,6 +21,9 @@ typedef struct tirenv_springs tirenv_springs;
 tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *params);
 void tirenv_springs_free(tirenv_springs *s);  /* NULL is a no-op */
 
+/* The parameters the workspace was built with. */
+const tirenv_springs_params *tirenv_springs_params_of(const tirenv_springs *s);
+
 /* Number of radial elements N and their angles theta_i = i*dphi (rad, from the downward
  * vertical, positive forward), ascending. */
 size_t tirenv_springs_size(const tirenv_springs *s);

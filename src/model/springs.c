@@ -105,6 +105,11 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s);
 }
 
+const tirenv_springs_params *tirenv_springs_params_of(const tirenv_springs *s)
+{
+    return &s->par;
+}
+
 size_t tirenv_springs_size(const tirenv_springs *s) { return s->N; }
 const double *tirenv_springs_theta(const tirenv_springs *s) { return s->theta; }
 

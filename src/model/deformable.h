@@ -1,0 +1,32 @@
+/* Private: a deformable model is a hub-force function F(x, z) plus its own definition of the
+ * flat-ground contact length; the constant-load equilibrium around it is shared
+ * (deformable.c). */
+#ifndef TIRENV_DEFORMABLE_H
+#define TIRENV_DEFORMABLE_H
+
+#include "model/model_impl.h"
+
+typedef struct {
+    void *(*alloc)(const tirenv_tire *tire);
+    void (*free)(void *elem);
+    /* Hub forces (N) and dF_z/dz (N/m) with the centre at (x, z) (m). */
+    int (*forces)(void *elem, const tirenv_profile *p, double x, double z, double *fx,
+                  double *fz, double *dfz_dz, size_t *contacts);
+    /* Flat-ground contact length (m) with the centre at height z (m). */
+    int (*contact_length)(void *elem, const tirenv_profile *flat, double z, double *l_c);
+    /* Flat-ground centre height z (m) at which the contact length is l_c (m). */
+    int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double *z,
+                                tirenv_diag *diag);
+} tirenv_deformable_ops;
+
+/* The model-type functions of model_impl.h for any deformable model; alloc takes the ops. */
+void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_ops *ops);
+void tirenv_deformable_free(void *state);
+int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag);
+int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *load,
+                                              tirenv_diag *diag);
+int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
+                          tirenv_diag *diag);
+int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag);
+
+#endif
