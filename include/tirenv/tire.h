@@ -16,8 +16,9 @@ typedef enum {
     TIRENV_EQ_BRENT       /* GSL's Brent-Dekker on the bracket, a derivative-free baseline */
 } tirenv_eq_method;
 
-/* Tolerances of the equilibrium iteration. Convergence needs both
- * |F_z - G_T| <= eps_F and |dz| <= eps_z. */
+/* Tolerances of the equilibrium iteration. Convergence needs both |F_z - G_T| <= eps_F and
+ * |dz| <= eps_z, or (bracketing methods) a bracket narrower than eps_z: F_z jumps where a ray
+ * sweeps over a convex corner, and then the equilibrium is the jump, located to eps_z. */
 typedef struct {
     tirenv_eq_method method;
     double eps_F;          /* force tolerance, N */

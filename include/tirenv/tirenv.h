@@ -9,6 +9,7 @@
 #include "tirenv/model.h"
 #include "tirenv/rigid.h"
 #include "tirenv/springs.h"
+#include "tirenv/ring.h"
 #include "tirenv/io.h"
 
 #define TIRENV_VERSION "0.1.0"

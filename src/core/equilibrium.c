@@ -9,7 +9,9 @@
 /* F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
  * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton on the exact dF/dz is taken when it stays inside;
  * otherwise the step falls back to false position (both ends known) or bisection. Converged
- * when the residual and the next correction are both within tolerance. */
+ * when the residual and the next correction are both within tolerance, or when the bracket is
+ * narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes the face it
+ * hits, so its length jumps), and then the equilibrium is the jump, located to eps_z. */
 static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, void *ctx,
                         double G, const tirenv_eq_problem *prob, tirenv_eq_result *res,
                         tirenv_diag *diag)
@@ -18,6 +20,7 @@ static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, 
     int lo_checked = 0;
     double z = fmin(fmax(prob->z0, lo), hi);
     double down = prob->dz_hint;   /* step from a guess with no contact; grows each time */
+    double dz_old = INFINITY, last_dz = INFINITY; /* the steps before, to see Newton stall */
     for (size_t it = 1; it <= eq->max_iter; ++it) {
         double F, dF;
         const int status = force(ctx, z, &F, &dF);
@@ -38,8 +41,24 @@ static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, 
             *res = (tirenv_eq_result){z, F, dF, it};
             return TIRENV_OK;
         }
+        if (lo_checked && hi - lo <= eq->eps_z) {
+            const double z_best = fabs(f_lo) <= fabs(f_hi) ? lo : hi;
+            if (z_best != z) { /* leave the model's state at the reported point */
+                const int s = force(ctx, z_best, &F, &dF);
+                if (s)
+                    return s;
+                ++it;
+            }
+            *res = (tirenv_eq_result){z_best, F, dF, it};
+            return TIRENV_OK;
+        }
         double z_next = z + step;
-        if (!(z_next > lo && z_next < hi)) {
+        /* Newton that does not halve the step from the step before last oscillates across a
+         * jump of F_z: bisect the bracket instead (Numerical Recipes' rtsafe rule). */
+        const int stalled = lo_checked && fabs(2 * step) > fabs(dz_old);
+        if (stalled && dF < 0 && z_next > lo && z_next < hi) {
+            z_next = 0.5 * (lo + hi);
+        } else if (!(z_next > lo && z_next < hi)) {
             if (dF >= 0 && f < 0) {
                 /* No contact yet: the discrete elements can miss a corner that the rigid
                  * disc (z_hi) touches, so the first contact may lie well below. */
@@ -66,6 +85,8 @@ static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, 
                 z_next = lo + f_lo * (hi - lo) / (f_lo - f_hi);
             }
         }
+        dz_old = last_dz;
+        last_dz = fabs(z_next - z);
         z = z_next;
     }
     return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
@@ -116,6 +137,7 @@ typedef struct {
     double G;
     size_t evals;
     int status;
+    double last_z, last_f;       /* the last evaluation, so the loop need not repeat it */
 } brent_ctx;
 
 static double brent_f(double z, void *p)
@@ -126,7 +148,9 @@ static double brent_f(double z, void *p)
     const int s = b->force(b->ctx, z, &F, &dF);
     if (s && !b->status)
         b->status = s;
-    return s ? NAN : F - b->G;
+    b->last_z = z;
+    b->last_f = s ? NAN : F - b->G;
+    return b->last_f;
 }
 
 /* GSL's Brent-Dekker on the bracket, started from a bracket around the warm start. */
@@ -134,7 +158,7 @@ static int solve_brent(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, v
                        double G, const tirenv_eq_problem *prob, tirenv_eq_result *res,
                        tirenv_diag *diag)
 {
-    brent_ctx b = {force, ctx, G, 0, 0};
+    brent_ctx b = {force, ctx, G, 0, 0, NAN, NAN};
     gsl_function fn = {brent_f, &b};
     double lo = prob->z_lo, hi = prob->z_hi;
     if (brent_f(lo, &b) < 0)
@@ -153,21 +177,20 @@ static int solve_brent(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, v
         const double z = gsl_root_fsolver_root(s);
         lo = gsl_root_fsolver_x_lower(s);
         hi = gsl_root_fsolver_x_upper(s);
-        const double f = brent_f(z, &b);
-        if (fabs(f) <= eq->eps_F && hi - lo <= 2 * eq->eps_z) {
-            *res = (tirenv_eq_result){z, f + G, NAN, b.evals};
-            gsl_root_fsolver_free(s);
-            return TIRENV_OK;
-        }
-        if (fabs(f) <= eq->eps_F && gsl_root_test_interval(lo, hi, eq->eps_z, 0) == GSL_SUCCESS)
+        /* Brent keeps a bracket, so a bracket within eps_z also locates the root, or a jump of
+         * F_z (see solve_newton). */
+        if (hi - lo <= eq->eps_z ||
+            (b.last_z == z && fabs(b.last_f) <= eq->eps_F &&
+             gsl_root_test_interval(lo, hi, eq->eps_z, 0) == GSL_SUCCESS))
             break;
     }
     const double z = gsl_root_fsolver_root(s);
     gsl_root_fsolver_free(s);
     if (b.status)
         return b.status;
-    const double f = brent_f(z, &b);
-    if (!status && fabs(f) <= eq->eps_F) {
+    /* Leave the model's state at the reported point. */
+    const double f = b.last_z == z ? b.last_f : brent_f(z, &b);
+    if (!status && (fabs(f) <= eq->eps_F || hi - lo <= eq->eps_z)) {
         *res = (tirenv_eq_result){z, f + G, NAN, b.evals};
         return TIRENV_OK;
     }

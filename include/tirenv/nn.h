@@ -1,0 +1,114 @@
+/* tirenv: the empirical enveloping model, a small fully connected feed-forward network
+ * (paper, Tables 1 and 2; MODEL.md section 6). Logistic hidden layers, one identity output.
+ * Training is in train.h, which also holds the model file (it records how the net was
+ * trained). SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_NN_H
+#define TIRENV_NN_H
+
+#include <stddef.h>
+#include <gsl/gsl_rng.h>
+#include "tirenv/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define TIRENV_NN_MAX_LAYERS 6   /* layers counting input and output: up to 4 hidden */
+#define TIRENV_NN_MAX_WIDTH 64   /* neurons in any layer */
+
+/* The inputs of the enveloping model in the paper's order (Table 1: normalised position,
+ * working regime, obstacle height, obstacle length); its one output is h, m. */
+enum {
+    TIRENV_NN_X_N = 0,           /* normalised position x_N (MODEL.md section 1) */
+    TIRENV_NN_CONTACT_LENGTH,    /* contact length l_c, m */
+    TIRENV_NN_HEIGHT,            /* obstacle height H, m */
+    TIRENV_NN_LENGTH,            /* obstacle length L, m */
+    TIRENV_NN_INPUTS             /* how many */
+};
+
+/* "x_N", "contact_length_m", "obstacle_height_m", "obstacle_length_m"; NULL past the end. */
+const char *tirenv_nn_input_name(size_t i);
+
+/* Layer sizes, input first, output last. The output layer has exactly one neuron. */
+typedef struct {
+    size_t n_layers;                     /* 2..TIRENV_NN_MAX_LAYERS */
+    size_t size[TIRENV_NN_MAX_LAYERS];   /* neurons per layer, 1..TIRENV_NN_MAX_WIDTH */
+} tirenv_nn_topology;
+
+/* The paper's 4-8-1. */
+tirenv_nn_topology tirenv_nn_topology_default(void);
+/* TIRENV_OK, or TIRENV_EINVAL naming the bad layer in diag. */
+int tirenv_nn_topology_check(const tirenv_nn_topology *t, tirenv_diag *diag);
+
+/* A network of fixed shape in one allocation: weights, scaling, input ranges, and the
+ * workspace of the evaluations below (which is why they take a non-const pointer: use one
+ * network per thread, tirenv_nn_clone makes more). */
+typedef struct tirenv_nn tirenv_nn;
+
+/* NULL if the topology is invalid or memory runs out. Weights 0, identity scaling, input
+ * ranges unbounded. */
+tirenv_nn *tirenv_nn_alloc(const tirenv_nn_topology *t);
+void tirenv_nn_free(tirenv_nn *nn);                       /* NULL is a no-op */
+tirenv_nn *tirenv_nn_clone(const tirenv_nn *nn);          /* NULL on out of memory */
+/* Copies weights, scaling and ranges between nets of equal topology; TIRENV_EINVAL if not. */
+int tirenv_nn_copy(tirenv_nn *dst, const tirenv_nn *src);
+
+const tirenv_nn_topology *tirenv_nn_get_topology(const tirenv_nn *nn);
+size_t tirenv_nn_n_inputs(const tirenv_nn *nn);
+size_t tirenv_nn_n_weights(const tirenv_nn *nn);
+
+/* All weights, layer by layer; layer l (1-based, fed by layer l-1 of n_in neurons, n_out
+ * neurons) is a (1 + n_in) x n_out row-major block: first the n_out biases, then one row per
+ * input i holding its weights to each neuron j. Weights act on the scaled inputs. */
+double *tirenv_nn_weights(tirenv_nn *nn);
+const double *tirenv_nn_weights_const(const tirenv_nn *nn);
+/* Index in that array of the weight from neuron i of layer l-1 (i = 0 for the bias,
+ * 1..n_in for the neurons) to neuron j (0-based) of layer l (1..n_layers-1). */
+size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j);
+
+/* Nguyen-Widrow initialisation of every hidden layer (each neuron's weights uniform in
+ * [-0.5, 0.5] rescaled to norm 0.7*n_hidden^(1/n_in), bias uniform in +-that norm), and
+ * uniform [-0.5, 0.5] for the output layer; draws from rng in weight order. */
+void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng);
+
+/* Scaling: the net sees u_i = (x_i - in_mean_i)/in_std_i and outputs y = out_mean +
+ * out_std*o. Every number finite, stds > 0; else TIRENV_EINVAL. Units of the data. */
+int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
+                          double out_mean, double out_std, tirenv_diag *diag);
+void tirenv_nn_get_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],
+                           double *out_mean, double *out_std);
+/* The range of each input seen in training (lo <= hi, finite; or +-inf for unknown). */
+int tirenv_nn_set_input_range(tirenv_nn *nn, const double lo[], const double hi[],
+                              tirenv_diag *diag);
+void tirenv_nn_get_input_range(const tirenv_nn *nn, double lo[], double hi[]);
+/* Sets scaling (mean and population standard deviation; a constant column gets std 1) and
+ * input ranges from n samples: x row-major n x n_inputs, y n outputs. TIRENV_EINVAL if
+ * n = 0 or a value is not finite. */
+int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const double y[],
+                          tirenv_diag *diag);
+/* Index of the first input i >= first outside its training range, or n_inputs if none. */
+size_t tirenv_nn_out_of_range(const tirenv_nn *nn, const double x[], size_t first);
+
+/* Output for one sample of n_inputs raw (unscaled) inputs. No allocation. */
+double tirenv_nn_run(tirenv_nn *nn, const double x[]);
+/* Outputs y[s] for n samples x[s*n_inputs + i]; bit-for-bit what tirenv_nn_run gives. */
+void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], double y[]);
+/* Output for one sample and its exact gradient grad[k] = dy/dw_k over all weights (in the
+ * order of tirenv_nn_weights), by back-propagation. */
+double tirenv_nn_gradient(tirenv_nn *nn, const double x[], double grad[]);
+/* Outputs y[s] (NULL: not wanted) and Jacobian J[s*n_weights + k] = dy_s/dw_k of n samples. */
+void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], double J[]);
+
+/* The enveloping model: h (m) at tire-centre positions x[] (m) over a rectangular cleat of
+ * length L and height H (m) centred at x = 0, at contact length l_c (m), for a tire of free
+ * radius R0 (m). The approach half x <= 0 is the network at x_N(x) (MODEL.md section 1); the
+ * other half is its mirror image; before the lowest x_N seen in training h = 0 (the tire is
+ * still on flat ground). Needs a 4-input net (TIRENV_NN_INPUTS). TIRENV_ERANGE if the
+ * cleat is out of the tire's reach; no allocation. */
+int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
+                       const double x[], double h[], tirenv_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,100 @@
+/* The ring reference tire as a tirenv_model_type (MODEL.md section 5). */
+#include <math.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include "model/deformable.h"
+#include "tirenv/ring.h"
+
+static void *ring_alloc(const tirenv_tire *tire)
+{
+    return tirenv_ring_alloc(tire->springs.R0, &tire->ring);
+}
+
+static void ring_free(void *elem) { tirenv_ring_free(elem); }
+
+static int ring_forces(void *elem, const tirenv_profile *p, double x, double z, double *fx,
+                       double *fz, double *dfz_dz, size_t *contacts)
+{
+    return tirenv_ring_forces(elem, p, x, z, fx, fz, dfz_dz, contacts);
+}
+
+/* The ring's contact length is its real patch, where the tread pressure is positive: shorter
+ * than the chord of the free circle, as real tires' are (MODEL.md section 1). */
+static int ring_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c)
+{
+    double fx, fz;
+    const int status = tirenv_ring_forces(elem, flat, 0, z, &fx, &fz, NULL, NULL);
+    *l_c = tirenv_ring_patch_length(elem);
+    return status;
+}
+
+typedef struct {
+    void *elem;
+    const tirenv_profile *flat;
+    double l_c;
+    int status;
+} patch_ctx;
+
+static double patch_minus_target(double z, void *p)
+{
+    patch_ctx *c = p;
+    double l;
+    const int s = ring_contact_length(c->elem, c->flat, z, &l);
+    if (s && !c->status)
+        c->status = s;
+    return l - c->l_c;
+}
+
+/* The patch grows continuously as the centre comes down (its edges are interpolated), so
+ * Brent on [R0/2, R0] finds the height to 1e-12 m. */
+static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
+                                     double *z, tirenv_diag *diag)
+{
+    patch_ctx ctx = {elem, flat, l_c, 0};
+    gsl_function fn = {patch_minus_target, &ctx};
+    double hi = tirenv_ring_free_radius(elem), lo = 0.5 * hi;
+    if (patch_minus_target(lo, &ctx) < 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                            "%g m is beyond the ring tire's reach", l_c);
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    int status = gsl_root_fsolver_set(s, &fn, lo, hi);
+    for (int it = 0; !status && it < 200; ++it) {
+        status = gsl_root_fsolver_iterate(s);
+        lo = gsl_root_fsolver_x_lower(s);
+        hi = gsl_root_fsolver_x_upper(s);
+        if (!status && gsl_root_test_interval(lo, hi, 1e-12, 0) == GSL_SUCCESS)
+            break;
+    }
+    *z = gsl_root_fsolver_root(s);
+    gsl_root_fsolver_free(s);
+    if (ctx.status || status)
+        return tirenv_error(diag, ctx.status ? ctx.status : TIRENV_ENOCONV, "", 0,
+                            "contact length", "no ring height found for %g m", l_c);
+    return 0;
+}
+
+static const tirenv_deformable_ops ring_ops = {
+    .alloc = ring_alloc,
+    .free = ring_free,
+    .forces = ring_forces,
+    .contact_length = ring_contact_length,
+    .z_for_contact_length = ring_z_for_contact_length,
+};
+
+static void *ring_model_alloc(const tirenv_tire *tire)
+{
+    return tirenv_deformable_alloc(tire, &ring_ops);
+}
+
+static const tirenv_model_type ring_type = {
+    .name = "ring",
+    .alloc = ring_model_alloc,
+    .free = tirenv_deformable_free,
+    .flat = tirenv_deformable_flat,
+    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
+    .set = tirenv_deformable_set,
+    .eval = tirenv_deformable_eval,
+};
+const tirenv_model_type *tirenv_model_ring = &ring_type;
