@@ -83,6 +83,14 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->k_t > 0 && isfinite(r->k_t)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_STIFFNESS",
                             "must be positive (N/m^2), got %g", r->k_t);
+    /* The belt's stiffness per mode is EI s^2/R^4 + T s/R^2 + k_f with s = n^2 - 1 >= -1;
+     * pretension lowers it for n = 0, and too much makes it negative: the belt buckles. */
+    const double R = s->R0 - r->t_r, s_min = fmax(-1, -r->T * R * R / (2 * fmax(r->EI, 1e-300)));
+    const double e_min = r->EI * s_min * s_min / (R * R * R * R) + r->T * s_min / (R * R) + r->k_f;
+    if (!(e_min > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
+                            "%g N buckles the belt on its foundation (FOUNDATION_STIFFNESS %g "
+                            "N/m^2 too soft)", r->T, r->k_f);
     if (!(r->dtheta > 0 && r->dtheta <= M_PI / 8))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NODE_ANGLE",
                             "must be in (0, pi/8] rad, got %g", r->dtheta);
