@@ -52,6 +52,8 @@ typedef struct tirenv_model tirenv_model;
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire);
 void tirenv_model_free(tirenv_model *m);  /* NULL is a no-op */
 const char *tirenv_model_name(const tirenv_model *m);
+/* The tire the model was built for (read-only, owned by the model). */
+const tirenv_tire *tirenv_model_tire(const tirenv_model *m);
 
 /* Flat-ground state at load G (N). TIRENV_ENOBRACKET if the tire cannot carry G. */
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);

@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include "tirenv/curve.h"
 #include "tirenv/error.h"
+#include "tirenv/model.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -37,6 +38,39 @@ int tirenv_rig_import_samples(size_t n, const double t[], const double x[], cons
 /* The same from a CSV log "t_s,x_m,z_m"; errors name file, line and column. */
 int tirenv_rig_import(const char *path, const tirenv_import_settings *s, tirenv_curve *out,
                       tirenv_diag *diag);
+
+/* The virtual rig (paper, Figure 2): a cart moves the tire at constant speed over the
+ * profile at constant load; x(t), z(t) of the centre are sampled with sensor noise. */
+typedef struct {
+    double speed;          /* cart speed, m/s (default 0.1: quasi-static) */
+    double rate;           /* sampling rate, Hz (default 100) */
+    double noise_x;        /* sensor noise sigma on x, m (default 5e-5) */
+    double noise_z;        /* sensor noise sigma on z, m (default 2e-4) */
+    double x_offset;       /* rig x reading at the profile's x = 0, m (default 0) */
+    double z_offset;       /* rig z reading with the centre at z = 0, m (default 0) */
+    double run_up;         /* flat ground before first and after last reach, m (default 0.3) */
+    unsigned long seed;    /* noise seed (default 1) */
+} tirenv_rig_settings;
+
+tirenv_rig_settings tirenv_rig_default(void);
+
+/* A raw log: n samples of time (s) and centre position (m), owned arrays. */
+typedef struct {
+    size_t n;
+    double *t, *x, *z;
+} tirenv_rig_log;
+
+void tirenv_rig_log_free(tirenv_rig_log *log);  /* frees the arrays, zeroes log */
+
+/* Runs the rig over the profile with model m, whose profile and load the caller has set with
+ * tirenv_model_set (the model decides how the tire deforms: the data set uses "ring"). */
+int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_rig_settings *s,
+                        tirenv_rig_log *out, tirenv_diag *diag);
+
+/* Writes a log as CSV "t_s,x_m,z_m" (after '#' comment lines, if comment is not NULL;
+ * comment may hold several lines separated by '\n'), atomically. */
+int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char *comment,
+                         tirenv_diag *diag);
 
 #ifdef __cplusplus
 }

@@ -33,6 +33,7 @@ const tirenv_model_type *tirenv_model_type_find(const char *name)
 
 const char *tirenv_model_type_name(const tirenv_model_type *type) { return type->name; }
 const char *tirenv_model_name(const tirenv_model *m) { return m->type->name; }
+const tirenv_tire *tirenv_model_tire(const tirenv_model *m) { return &m->tire; }
 
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
