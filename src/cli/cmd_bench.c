@@ -1,0 +1,274 @@
+/* tirenv bench: wall time of the models and of the springs model's equilibrium solvers on one
+ * fixed sweep, so that figures from different machines and versions can be compared.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/utsname.h>
+#include <time.h>
+
+#include "cli/cli.h"
+
+/* The sweep: the paper's case F (contact length 0.38 m, cleat 0.30 x 0.10 m), 1.5 m at 1 mm. */
+static const double bench_l_c = 0.38, cleat_L = 0.30, cleat_H = 0.10;  /* m */
+static const double sweep_from = -1.0, sweep_dx = 0.001;                /* m */
+enum { SWEEP_N = 1501 };
+
+static const struct {
+    const char *label;
+    const char *model;
+    tirenv_eq_method method;
+} cases[] = {
+    {"rigid", "rigid", TIRENV_EQ_NEWTON},
+    {"springs newton", "springs", TIRENV_EQ_NEWTON},
+    {"springs secant", "springs", TIRENV_EQ_SECANT},
+    {"springs brent", "springs", TIRENV_EQ_BRENT},
+};
+enum { N_CASES = sizeof cases / sizeof cases[0] };
+
+typedef struct {
+    double best;          /* best wall time of a sweep, s */
+    double load;          /* N */
+    size_t failed;        /* positions without an equilibrium */
+    double first_fail_x;  /* m */
+    char first_fail[600]; /* its diagnostic */
+    double evals_mean;    /* force evaluations per successful position */
+    size_t evals_max;
+} bench_result;
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv bench [--repeat N] [--tire FILE] [--set KEY=VALUE]...\n"
+          "\n"
+          "Times tirenv_model_envelope over a fixed sweep: contact length 0.38 m, cleat\n"
+          "0.30 x 0.10 m, centre x from -1.0 to 0.5 m at 1 mm (1501 positions), for the rigid\n"
+          "model and the springs model with each equilibrium solver (newton, secant = the\n"
+          "paper's eq. 2, brent). Reports the best of N runs, single-threaded.\n"
+          "\n"
+          "options:\n"
+          "  --repeat N           runs per method, best kept (default 5)\n",
+          fp);
+    cli_help_tire(fp, 0);
+    fputs("  -h, --help           show this help\n", fp);
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Records that a method found no equilibrium even on flat ground (model_set solves it), so
+ * that the other methods are still timed. Data errors stop the bench. */
+static int setup_failed(int status, const tirenv_diag *diag, bench_result *r)
+{
+    if (cli_exit_code(status) != CLI_EXIT_NUMERIC)
+        return cli_fail(status, diag);
+    char msg[sizeof r->first_fail - 16];
+    snprintf(r->first_fail, sizeof r->first_fail, "on flat ground: %s",
+             tirenv_diag_format(diag, msg, sizeof msg));
+    r->failed = SWEEP_N;
+    r->first_fail_x = NAN;
+    return CLI_EXIT_OK;
+}
+
+/* One timed sweep. The whole-sweep call is what users run; when it fails (the plain secant
+ * can), the sweep is redone position by position so the failures can be counted. */
+static int run_once(tirenv_model *m, const tirenv_profile *prof, const double x[],
+                    tirenv_point pt[], unsigned char ok[], bench_result *r, double *seconds)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    memset(ok, 0, SWEEP_N);
+    *seconds = 0;
+    int status = tirenv_model_set(m, prof, r->load, &diag);  /* resets the warm start */
+    if (status)
+        return setup_failed(status, &diag, r);
+    double t0 = now();
+    status = tirenv_model_envelope(m, SWEEP_N, x, pt, NULL, &diag);
+    double t1 = now();
+    memset(ok, 1, SWEEP_N);
+    r->failed = 0;
+    if (status) {
+        if ((status = tirenv_model_set(m, prof, r->load, &diag)))
+            return setup_failed(status, &diag, r);
+        t0 = now();
+        for (size_t k = 0; k < SWEEP_N; ++k) {
+            tirenv_diag d;
+            tirenv_diag_clear(&d);
+            if (!(ok[k] = tirenv_model_eval(m, x[k], &pt[k], &d) == TIRENV_OK) &&
+                r->failed++ == 0) {
+                r->first_fail_x = x[k];
+                tirenv_diag_format(&d, r->first_fail, sizeof r->first_fail);
+            }
+        }
+        t1 = now();
+    }
+    *seconds = t1 - t0;
+    return CLI_EXIT_OK;
+}
+
+static int run_case(const tirenv_tire *tire0, size_t i, const tirenv_profile *prof,
+                    const double x[], long repeat, bench_result *r)
+{
+    tirenv_tire tire = *tire0;
+    tire.eq.method = cases[i].method;
+    const tirenv_model_type *type = tirenv_model_type_find(cases[i].model);
+    tirenv_model *m;
+    int code = cli_model(type, &tire, &m);
+    if (code)
+        return code;
+    tirenv_point *pt = malloc(SWEEP_N * sizeof *pt);
+    unsigned char *ok = malloc(SWEEP_N);
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    int status = pt && ok ? tirenv_model_load_for_contact_length(m, bench_l_c, &r->load, &diag)
+                          : TIRENV_ENOMEM;
+    if (status)
+        code = cli_fail(status, &diag);
+    for (long rep = 0; rep < repeat && !code; ++rep) {
+        double t = 0;
+        if (!(code = run_once(m, prof, x, pt, ok, r, &t)) && (rep == 0 || t < r->best))
+            r->best = t;
+    }
+    if (!code) {
+        double sum = 0;
+        r->evals_max = 0;
+        for (size_t k = 0; k < SWEEP_N; ++k) {
+            if (!ok[k])
+                continue;
+            sum += (double)pt[k].iterations;
+            if (pt[k].iterations > r->evals_max)
+                r->evals_max = pt[k].iterations;
+        }
+        r->evals_mean = r->failed < SWEEP_N ? sum / (double)(SWEEP_N - r->failed) : 0;
+    }
+    free(ok);
+    free(pt);
+    tirenv_model_free(m);
+    return code;
+}
+
+/* The machine in one line: the kernel's idea of it and, on Linux, the CPU model. */
+static void print_machine(void)
+{
+    struct utsname u;
+    char cpu[256] = "unknown CPU";
+    FILE *fp = fopen("/proc/cpuinfo", "r");
+    if (fp) {
+        char line[512];
+        while (fgets(line, sizeof line, fp)) {
+            const char *colon = strchr(line, ':');
+            if (strncmp(line, "model name", 10) == 0 && colon) {
+                snprintf(cpu, sizeof cpu, "%s", colon + 2);
+                cpu[strcspn(cpu, "\n")] = '\0';
+                break;
+            }
+        }
+        fclose(fp);
+    }
+    if (uname(&u) == 0)
+        printf("machine: %s %s %s, %s\n", u.sysname, u.release, u.machine, cpu);
+    else
+        printf("machine: %s\n", cpu);
+    printf("note: one core, one thread; figures are single-threaded wall times "
+           "(CLOCK_MONOTONIC), independent of the number of cores\n");
+}
+
+static void print_table(long repeat, const bench_result r[])
+{
+    printf("\n%-16s %13s %12s %11s %10s %8s\n", "method", "positions/s", "us/position",
+           "evals mean", "evals max", "failed");
+    for (size_t i = 0; i < N_CASES; ++i) {
+        if (r[i].failed == SWEEP_N)
+            printf("%-16s %13s %12s %11s %10s %8zu\n", cases[i].label, "-", "-", "-", "-",
+                   r[i].failed);
+        else
+            printf("%-16s %13.0f %12.3f %11.2f %10zu %8zu\n", cases[i].label,
+                   SWEEP_N / r[i].best, 1e6 * r[i].best / SWEEP_N, r[i].evals_mean,
+                   r[i].evals_max, r[i].failed);
+    }
+    for (size_t i = 0; i < N_CASES; ++i) {
+        if (r[i].failed == SWEEP_N)
+            printf("%s failed everywhere, %s\n", cases[i].label, r[i].first_fail);
+        else if (r[i].failed)
+            printf("%s failed at %zu of %d positions (timed position by position), first "
+                   "at x = %.4f m: %s\n",
+                   cases[i].label, r[i].failed, SWEEP_N, r[i].first_fail_x, r[i].first_fail);
+    }
+    /* cases[1] is springs newton, cases[2] secant. */
+    printf("\nratios (best of %ld):\n", repeat);
+    if (r[1].evals_mean > 0 && r[2].evals_mean > 0)
+        printf("  springs newton / secant evaluations per position: %.3f\n",
+               r[1].evals_mean / r[2].evals_mean);
+    if (r[0].best > 0 && r[1].failed < SWEEP_N)
+        printf("  rigid / springs newton speed: %.1f x\n", r[1].best / r[0].best);
+}
+
+int cli_bench_main(int argc, char *argv[])
+{
+    enum { OPT_REPEAT = CLI_OPT_FIRST_OWN };
+    static const struct option longopts[] = {
+        CLI_TIRE_LONGOPTS,
+        {"repeat", required_argument, NULL, OPT_REPEAT},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    cli_options o;
+    cli_options_init(&o);
+    long repeat = 5;
+    int c;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return CLI_EXIT_OK;
+        case OPT_REPEAT:
+            if (cli_parse_count(optarg, 1, 1000000, &repeat)) {
+                cli_error("--repeat: expected a whole number from 1 to 1000000, got '%s'",
+                          optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case '?':
+            usage(stderr);
+            return CLI_EXIT_USAGE;
+        default:
+            if (cli_option(&o, c, optarg))
+                return CLI_EXIT_USAGE;
+        }
+    }
+    if (optind < argc) {
+        cli_error("bench: unexpected argument '%s'", argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    tirenv_tire tire;
+    int code = cli_tire(&o, &tire);
+    if (code)
+        return code;
+    tirenv_profile *prof = tirenv_profile_cleat(cleat_L, cleat_H);
+    if (!prof)
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    double x[SWEEP_N];
+    for (size_t k = 0; k < SWEEP_N; ++k)
+        x[k] = sweep_from + (double)k * sweep_dx;
+
+    char buf[1024];
+    bench_result r[N_CASES];
+    memset(r, 0, sizeof r);
+    for (size_t i = 0; i < N_CASES && !code; ++i)
+        code = run_case(&tire, i, prof, x, repeat, &r[i]);
+    tirenv_profile_free(prof);
+    if (code)
+        return code;
+    printf("tirenv bench: tire %s, contact length %.2f m (load %.6g N), cleat %.2f x %.2f m,\n"
+           "%d positions x = %.3f .. %.3f m at %g mm, best of %ld runs per method\n",
+           cli_tire_path(&o, buf, sizeof buf), bench_l_c, r[1].load, cleat_L, cleat_H, SWEEP_N,
+           x[0], x[SWEEP_N - 1], sweep_dx * 1e3, repeat);
+    print_machine();
+    print_table(repeat, r);
+    return CLI_EXIT_OK;
+}

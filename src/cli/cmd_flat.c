@@ -1,0 +1,144 @@
+/* tirenv flat: the tire's state on flat ground, at one load or at the paper's three working
+ * regimes. SPDX-License-Identifier: GPL-3.0-or-later */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+/* The contact lengths of the paper's working regimes (Table 1 and Table 3), m. */
+static const double regimes[] = {0.28, 0.33, 0.38};
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv flat [--load N | --contact-length M] [--model NAME] [--csv]\n"
+          "                   [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
+          "\n"
+          "The tire on flat ground: load, centre height, deflection, contact length and\n"
+          "vertical stiffness. Without --load or --contact-length, a table for the paper's\n"
+          "working regimes, contact lengths 0.28, 0.33 and 0.38 m.\n"
+          "\n"
+          "options:\n",
+          fp);
+    cli_help_load(fp);
+    cli_help_model(fp, " (default springs)");
+    fputs("  --csv                CSV: load_N,z_flat_m,deflection_m,contact_length_m,\n"
+          "                       stiffness_N_per_m\n",
+          fp);
+    cli_help_tire(fp, 1);
+    fputs("  -h, --help           show this help\n", fp);
+}
+
+static void print_one(const char *model, const char *tire_path, const tirenv_flat *f)
+{
+    printf("%s model, tire %s\n", model, tire_path);
+    printf("  load                %.6g N (%.4g kN)\n", f->load, f->load / 1e3);
+    printf("  centre height       %.6g m\n", f->z_flat);
+    printf("  deflection          %.6g m (%.4g mm)\n", f->deflection, f->deflection * 1e3);
+    printf("  contact length      %.6g m\n", f->contact_length);
+    printf("  vertical stiffness  %.6g N/m (%.4g kN/m)\n", f->stiffness, f->stiffness / 1e3);
+}
+
+static void print_row(int csv, const tirenv_flat *f)
+{
+    if (csv)
+        printf("%.9g,%.9g,%.9g,%.9g,%.9g\n", f->load, f->z_flat, f->deflection,
+               f->contact_length, f->stiffness);
+    else
+        printf("%10.1f %8.3f %10.5f %10.5f %10.2f %10.4f %10.2f\n", f->load, f->load / 1e3,
+               f->z_flat, f->deflection, f->deflection * 1e3, f->contact_length,
+               f->stiffness / 1e3);
+}
+
+/* One flat-ground state for the load the options (or a regime's contact length) ask for. */
+static int flat_at(tirenv_model *m, const cli_options *o, tirenv_flat *f)
+{
+    double load;
+    int code = cli_load(o, m, &load);
+    if (code)
+        return code;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_model_flat(m, load, f, &diag);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+int cli_flat_main(int argc, char *argv[])
+{
+    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_CSV };
+    static const struct option longopts[] = {
+        CLI_TIRE_LONGOPTS,
+        CLI_METHOD_LONGOPTS,
+        CLI_LOAD_LONGOPTS,
+        {"model", required_argument, NULL, OPT_MODEL},
+        {"csv", no_argument, NULL, OPT_CSV},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    cli_options o;
+    cli_options_init(&o);
+    const tirenv_model_type *type = tirenv_model_springs;
+    int csv = 0, c;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return CLI_EXIT_OK;
+        case OPT_MODEL:
+            if (cli_model_type(optarg, &type))
+                return CLI_EXIT_USAGE;
+            break;
+        case OPT_CSV:
+            csv = 1;
+            break;
+        case '?':
+            usage(stderr);
+            return CLI_EXIT_USAGE;
+        default:
+            if (cli_option(&o, c, optarg))
+                return CLI_EXIT_USAGE;
+        }
+    }
+    if (optind < argc) {
+        cli_error("flat: unexpected argument '%s'", argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    tirenv_tire tire;
+    int code = cli_tire(&o, &tire);
+    if (code)
+        return code;
+    tirenv_model *m;
+    if ((code = cli_model(type, &tire, &m)))
+        return code;
+    char buf[1024];
+    const char *tire_path = cli_tire_path(&o, buf, sizeof buf);
+
+    tirenv_flat f;
+    if (o.have_load || o.have_contact_length) {
+        if (!(code = flat_at(m, &o, &f))) {
+            if (csv) {
+                puts("load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m");
+                print_row(1, &f);
+            } else {
+                print_one(tirenv_model_type_name(type), tire_path, &f);
+            }
+        }
+        tirenv_model_free(m);
+        return code;
+    }
+    if (csv)
+        puts("load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m");
+    else
+        printf("%s model, tire %s, at the paper's working regimes\n"
+               "%10s %8s %10s %10s %10s %10s %10s\n",
+               tirenv_model_type_name(type), tire_path, "load_N", "load_kN", "z_flat_m", "defl_m", "defl_mm",
+               "contact_m", "k_kN/m");
+    for (size_t i = 0; i < sizeof regimes / sizeof regimes[0] && !code; ++i) {
+        o.have_contact_length = 1;
+        o.contact_length = regimes[i];
+        if (!(code = flat_at(m, &o, &f)))
+            print_row(csv, &f);
+    }
+    tirenv_model_free(m);
+    return code;
+}

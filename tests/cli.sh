@@ -1,0 +1,251 @@
+#!/bin/sh
+# End-to-end checks of the tirenv command-line tool: exit codes, where messages go, what they
+# name, exact CSV layout, and that a failure leaves no file (complete or partial) behind.
+# Usage: tests/cli.sh BIN TESTDATA_DIR. Prints "ok N - what" / "not ok N - what" per check
+# and exits non-zero if any failed. SPDX-License-Identifier: GPL-3.0-or-later
+# Conditions are single-quoted shell code for eval (SC2016, SC2034); option lists in variables
+# are split on purpose (SC2086).
+# shellcheck disable=SC2016,SC2034,SC2086
+set -u
+
+if [ $# -ne 2 ]; then
+    echo "usage: $0 BIN TESTDATA_DIR" >&2
+    exit 2
+fi
+bin=$1
+data=$2
+# The checks run in a scratch directory: make relative paths absolute first (a bare name
+# without a slash is left to the PATH search).
+case $bin in /*) ;; */*) bin=$PWD/$bin ;; esac
+case $data in /*) ;; *) data=$PWD/$data ;; esac
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+trap 'exit 2' INT TERM
+cd "$work" || exit 2
+unset TIRENV_DATA  # the checks assume the built-in default tire unless they set it
+
+n=0
+passed=0
+failed=0
+
+# run CMD...: stdout to ./out, stderr to ./err, exit status in $rc.
+run() {
+    "$@" >out 2>err
+    rc=$?
+}
+
+# check WHAT CONDITION: CONDITION is shell code, evaluated after the last run. On failure the
+# command's stderr is shown as a TAP comment.
+check() {
+    n=$((n + 1))
+    if eval "$2"; then
+        passed=$((passed + 1))
+        echo "ok $n - $1"
+    else
+        failed=$((failed + 1))
+        echo "not ok $n - $1"
+        echo "# exit status $rc; stderr:"
+        sed 's/^/#   /' err
+    fi
+}
+
+# No output file and no temporary file beside it.
+no_file() {
+    [ ! -e "$1" ] && [ -z "$(find . -name '*.tmp.*' -print)" ]
+}
+
+# Number of CSV data rows (lines after the header).
+rows() {
+    echo $(($(wc -l <"$1") - 1))
+}
+
+# The largest h (m) in an envelope CSV.
+peak_h() {
+    awk -F, 'NR > 1 && (NR == 2 || $3 > m) { m = $3 } END { print m }' "$1"
+}
+
+# |A - B| <= TOL for numbers A, B.
+near() {
+    awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; exit !(d <= t && -d <= t) }'
+}
+
+# h within TOL at the first and the last position.
+ends_flat() {
+    awk -F, -v t="$2" 'NR == 2 { first = $3 } { last = $3 }
+        END { exit !(first <= t && -first <= t && last <= t && -last <= t) }' "$1"
+}
+
+# Two envelope CSVs of equal length with h equal within TOL, row by row.
+same_h() {
+    [ -s "$1" ] && [ "$(wc -l <"$1")" -eq "$(wc -l <"$2")" ] &&
+        paste -d, "$1" "$2" | awk -F, -v t="$3" '
+            NR > 1 { d = $3 - $10; if (d > t || -d > t) bad = 1 }
+            END { exit bad || NR < 2 }'
+}
+
+# An envelope CSV against case C of the reference file: all 10 positions present, h within
+# 1e-8 m (the file has 9 decimals), load within 1e-3 N (CSV rows have 9 digits).
+matches_reference() {
+    awk -F, -v c="$2" '
+        FNR == 1 { next }
+        NR == FNR { k = sprintf("%.4f", $1); h[k] = $3; f[k] = $5; next }
+        $1 == c {
+            k = sprintf("%.4f", $10); ++seen
+            if (!(k in h)) { bad = 1; next }
+            d = h[k] - $11; e = f[k] - $12
+            if (d > 1e-8 || -d > 1e-8 || e > 1e-3 || -e > 1e-3) bad = 1
+        }
+        END { exit bad || seen != 10 }' "$1" "$3"
+}
+
+header='x_m,z_m,h_m,fx_N,fz_N,contacts,iterations'
+cleat_F='--cleat 0.30,0.10 --contact-length 0.38'
+
+# --- help and misuse --------------------------------------------------------------------
+for args in "help" "--help" "help envelope" "flat --help" "envelope --help" "bench --help"; do
+    # shellcheck disable=SC2086 # split on purpose
+    run "$bin" $args
+    check "'tirenv $args' prints usage on stdout, exit 0" \
+        '[ $rc -eq 0 ] && grep -q "^usage: tirenv" out && [ ! -s err ]'
+done
+run "$bin" help
+check "'tirenv help' documents exit codes 1, 2 and 3" \
+    'grep -q "^  1  misuse" out && grep -q "^  2  bad data" out && grep -q "^  3  numerical" out'
+run "$bin" --version
+check "--version prints the version, exit 0" '[ $rc -eq 0 ] && grep -q "^tirenv [0-9]" out'
+run "$bin"
+check "no command: usage on stderr, exit 1" '[ $rc -eq 1 ] && [ ! -s out ] && grep -q usage err'
+run "$bin" frobnicate
+check "unknown command: named on stderr, exit 1" \
+    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q frobnicate err'
+run "$bin" envelope --model springs $cleat_F --frobnicate
+check "unknown option: usage on stderr, exit 1" \
+    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q "usage: tirenv envelope" err'
+run "$bin" envelope --model springs --cleat 0.30,0.10 --load 12kN
+check "malformed --load: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--load" err'
+run "$bin" envelope --model springs --cleat 0.30 --load 1e4
+check "--cleat with one number: exit 1 saying what is expected" \
+    '[ $rc -eq 1 ] && grep -q "L,H" err'
+run "$bin" envelope --model springs --cleat 0.3,0.1 --triangle 0.2,0.1 --load 1e4
+check "two obstacle options: exit 1" '[ $rc -eq 1 ] && grep -q "only one obstacle" err'
+run "$bin" envelope --model springs --cleat 0.3,0.1 --load 1e4 --contact-length 0.3
+check "--load with --contact-length: exit 1" \
+    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q -- "--contact-length" err'
+run "$bin" envelope --cleat 0.3,0.1 --load 1e4
+check "envelope without --model: exit 1" '[ $rc -eq 1 ] && grep -q -- "--model" err'
+run "$bin" envelope --model no-such-model --cleat 0.3,0.1 --load 1e4
+check "unknown --model: exit 1 listing the models" '[ $rc -eq 1 ] && grep -q springs err'
+run "$bin" bench --repeat 0
+check "bench --repeat 0: exit 1" '[ $rc -eq 1 ] && grep -q -- "--repeat" err'
+
+# --- envelope output --------------------------------------------------------------------
+run "$bin" envelope --model springs $cleat_F --x-from -0.9 --x-to 0.9 --dx 0.01 -o c.csv
+check "envelope -o: exit 0, nothing on stdout" '[ $rc -eq 0 ] && [ ! -s out ] && [ -s c.csv ]'
+check "envelope writes the exact header" '[ "$(head -n 1 c.csv)" = "$header" ]'
+check "x from -0.9 to 0.9 at 0.01 m gives 181 rows, ends included" \
+    '[ $(rows c.csv) -eq 181 ] && [ "$(sed -n 2p c.csv | cut -d, -f1)" = -0.9 ] &&
+     [ "$(tail -n 1 c.csv | cut -d, -f1)" = 0.9 ]'
+check "h is 0 at both ends" 'ends_flat c.csv 1e-9'
+check "springs peak h is below the 0.10 m cleat and above 90 mm" \
+    'h=$(peak_h c.csv) && near "$h" 0.095 0.005000001'
+check "summary on stderr names model, peak and first rise" \
+    'grep -q "springs model" err && grep -q "peak h" err && grep -q "first rise" err'
+check "no temporary file left after success" '[ $rc -eq 0 ] && no_file none.csv'
+run "$bin" envelope --model springs $cleat_F --x-from -0.9 --x-to 0.9 --dx 0.01
+check "without -o the same CSV goes to stdout" '[ $rc -eq 0 ] && cmp -s out c.csv'
+run "$bin" envelope --model springs $cleat_F -o - --x-from -0.9 --x-to 0.9 --dx 0.01
+check "-o - is stdout" '[ $rc -eq 0 ] && cmp -s out c.csv'
+run "$bin" envelope --model rigid $cleat_F -o d.csv
+check "default sweep: (first x - R0 - 0.02) to (last x + R0 + 0.02) at 1 mm, 1701 rows" \
+    '[ $rc -eq 0 ] && [ $(rows d.csv) -eq 1701 ] && [ "$(sed -n 2p d.csv | cut -d, -f1)" = -0.85 ]'
+check "rigid disc peaks at exactly the cleat height" 'near "$(peak_h d.csv)" 0.1 1e-12'
+
+printf 'x_m,z_m\n# the same triangle as --triangle 0.2,0.05\n-0.1,0\n0,0.05\n0.1,0\n' >tri.csv
+run "$bin" envelope --model springs --profile tri.csv --load 15000 --dx 0.005 -o p.csv
+run "$bin" envelope --model springs --triangle 0.2,0.05 --load 15000 --dx 0.005 -o g.csv
+check "--profile CSV and the generator give the same curve" '[ $rc -eq 0 ] && cmp -s p.csv g.csv'
+
+run "$bin" envelope --model springs $cleat_F --method secant -o s.csv
+check "--method secant (the paper's eq. 2) over a cleat: exit 0, full curve" \
+    '[ $rc -eq 0 ] && [ $(rows s.csv) -eq 1701 ]'
+run "$bin" envelope --model springs $cleat_F -o n.csv
+check "secant and newton curves agree to 1e-7 m" 'same_h s.csv n.csv 1e-7'
+
+# The independent reference curves of MODEL.md section 4, through --set and the CLI's sweep.
+ref=$data/springs-reference.csv
+for c in 1 2 3 4; do
+    # shellcheck disable=SC2046 # one line of numbers, split on purpose
+    set -- $(awk -F, -v c="$c" '$1 == c { print $2, $3, $4, $5, $6, $7, $8, $9; exit }' "$ref")
+    [ $# -eq 8 ] || set -- missing-reference-case x x x x x x x
+    run "$bin" envelope --model springs --set UNLOADED_RADIUS="$1" --set RADIAL_STIFFNESS="$2" \
+        --set INTERRADIAL_STIFFNESS="$3" --set SEGMENT_ANGLE="$5" --set ELEMENT_ANGLE="$4" \
+        --cleat "$7,$8" --contact-length "$6" --x-from -0.5 --x-to 0.1 --dx 0.05 -o ref$c.csv
+    check "reference case $c through --set: h within 1e-8 m, load within 1e-3 N" \
+        '[ $rc -eq 0 ] && matches_reference ref$c.csv $c "$ref"'
+done
+
+# --- bad data: exit 2, message names the culprit, no file -------------------------------
+run "$bin" envelope --model springs $cleat_F --set RADIAL_STIFFNESS=-1 -o o.csv
+check "unphysical --set: exit 2 naming the key, no output or temporary file" \
+    '[ $rc -eq 2 ] && grep -q RADIAL_STIFFNESS err && no_file o.csv'
+run "$bin" envelope --model springs $cleat_F --set NO_SUCH_KEY=1 -o o.csv
+check "unknown --set key: exit 2 naming it" '[ $rc -eq 2 ] && grep -q NO_SUCH_KEY err'
+printf 'x_m,z_m\n0,0\n0.1,zero\n' >bad.csv
+run "$bin" envelope --model springs --profile bad.csv --load 1e4 -o o.csv
+check "malformed profile CSV: exit 2 naming file:line" \
+    '[ $rc -eq 2 ] && grep -q "bad.csv:3" err && no_file o.csv'
+printf '[DIMENSION]\nUNLOADED_RADIUS = big\n' >bad.tir
+run "$bin" envelope --model springs $cleat_F --tire bad.tir -o o.csv
+check "malformed --tire file: exit 2 naming file:line" \
+    '[ $rc -eq 2 ] && grep -q "bad.tir:2" err && no_file o.csv'
+run "$bin" flat --tire missing.tir
+check "missing --tire file: exit 2 naming it" '[ $rc -eq 2 ] && grep -q missing.tir err'
+run "$bin" envelope --model springs --cleat 0.30,-0.10 --load 1e4 -o o.csv
+check "negative cleat height: exit 2" '[ $rc -eq 2 ] && no_file o.csv'
+run "$bin" envelope --model springs --cleat 0.30,0.70 --load 1e4 -o o.csv
+check "obstacle above the tire centre: exit 2" '[ $rc -eq 2 ] && no_file o.csv'
+run "$bin" envelope --model springs $cleat_F -o no-such-dir/o.csv
+check "unwritable -o: exit 2 naming the path" '[ $rc -eq 2 ] && grep -q no-such-dir err'
+
+mkdir -p empty small/tires
+run env TIRENV_DATA="$work/empty" "$bin" flat
+check "TIRENV_DATA without a default tire: exit 2 naming \$TIRENV_DATA/tires/default.tir" \
+    '[ $rc -eq 2 ] && grep -q "$work/empty/tires/default.tir" err'
+printf '[DIMENSION]\nUNLOADED_RADIUS = 0.5\n' >small/tires/default.tir
+run env TIRENV_DATA="$work/small" "$bin" envelope --model rigid $cleat_F -o r.csv
+check "TIRENV_DATA picks the default tire (R0 0.5 m: sweep from -0.67 m)" \
+    '[ $rc -eq 0 ] && [ "$(sed -n 2p r.csv | cut -d, -f1)" = -0.67 ]'
+
+# --- numerical failure: exit 3, no file -------------------------------------------------
+run "$bin" envelope --model springs --cleat 0.30,0.10 --load 1e9 -o o.csv
+check "load beyond what the tire carries: exit 3 naming the load, no file" \
+    '[ $rc -eq 3 ] && grep -q "1e+09 N" err && no_file o.csv'
+# The paper's plain secant has no bracket; over case R's cleat at the largest contact length
+# it runs away at the corner, and the message must say where.
+run "$bin" envelope --model springs --cleat 0.10,0.10 --contact-length 0.38 --method secant \
+    -o o.csv
+check "no convergence: exit 3 naming the position x, no file" \
+    '[ $rc -eq 3 ] && grep -q "x = -\{0,1\}[0-9.]* m" err && no_file o.csv'
+
+# --- flat and bench ---------------------------------------------------------------------
+run "$bin" flat
+check "flat: a row for each contact length 0.28, 0.33, 0.38 m" \
+    '[ $rc -eq 0 ] && [ $(grep -Ec " 0\.(28|33|38)00 " out) -eq 3 ]'
+run "$bin" flat --csv
+check "flat --csv: exact header and three rows at 0.28, 0.33, 0.38 m" \
+    '[ $rc -eq 0 ] && [ "$(head -n 1 out)" = load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m ] &&
+     [ "$(tail -n +2 out | cut -d, -f4 | tr "\n" " ")" = "0.28 0.33 0.38 " ]'
+cp out table.csv
+run "$bin" flat --contact-length 0.33 --csv
+check "flat --contact-length 0.33 matches the table's row" \
+    '[ $rc -eq 0 ] && [ "$(sed -n 2p out)" = "$(sed -n 3p table.csv)" ]'
+run "$bin" flat --load 15000
+check "flat --load: load in N and kN, stiffness in N/m and kN/m" \
+    '[ $rc -eq 0 ] && grep -q "15000 N (15 kN)" out && grep -q "N/m (.* kN/m)" out'
+run "$bin" bench --repeat 1
+check "bench --repeat 1: four methods, the machine, the single-thread note" \
+    '[ $rc -eq 0 ] && [ $(grep -Ec "^(rigid|springs newton|springs secant|springs brent) " out) -eq 4 ] &&
+     grep -q "^machine:" out && grep -q "single-threaded" out'
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
