@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include "tirenv/curve.h"
 #include "tirenv/error.h"
+#include "tirenv/tire.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -41,6 +42,27 @@ typedef struct {
  * with R0 (m) as tirenv_rig_import does). Errors name file, line and column. */
 int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag);
 void tirenv_dataset_free(tirenv_dataset *ds);  /* NULL is a no-op */
+
+/* One case of the embedded data set as designed: what the virtual rig is asked to run. */
+typedef struct {
+    const char *name;
+    tirenv_split split;
+    double contact_length;    /* m */
+    double L, H;              /* obstacle length and height, m */
+} tirenv_case_design;
+
+/* The 28 cases of the embedded data set (19 train, 5 control, 4 validation; the paper's
+ * Table 3 cases F, J and R among the validation ones); *n receives the count. */
+const tirenv_case_design *tirenv_dataset_design(size_t *n);
+
+/* Builds the embedded data set into dir (created if missing): for each designed case the ring
+ * reference tire of `tire` is loaded to the designed contact length, run over the cleat on the
+ * virtual rig (seeded), its log written to dir/logs/<case>.csv, imported to dir/curves/<case>.csv,
+ * and the manifest dir/cases.csv written last. Deterministic: the same tire gives the same
+ * bytes. progress (may be NULL) is called after each case. */
+int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
+                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
+                         tirenv_diag *diag);
 
 #ifdef __cplusplus
 }
