@@ -7,8 +7,8 @@
 #include <gsl/gsl_roots.h>
 
 /* F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
- * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton on the exact dF/dz is taken when it stays inside;
- * otherwise the step falls back to false position (both ends known) or bisection. Converged
+ * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton on the exact dF/dz is taken when it stays inside
+ * and converges; otherwise the step falls back to bisection. Converged
  * when the residual and the next correction are both within tolerance, or when the bracket is
  * narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes the face it
  * hits, so its length jumps), and then the equilibrium is the jump, located to eps_z. */
@@ -53,23 +53,20 @@ static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, 
             return TIRENV_OK;
         }
         double z_next = z + step;
-        /* Newton that does not halve the step from the step before last oscillates across a
-         * jump of F_z: bisect the bracket instead (Numerical Recipes' rtsafe rule). */
-        const int stalled = lo_checked && fabs(2 * step) > fabs(dz_old);
-        if (stalled && dF < 0 && z_next > lo && z_next < hi) {
-            z_next = 0.5 * (lo + hi);
-        } else if (!(z_next > lo && z_next < hi)) {
+        /* Newton that leaves the bracket, or does not halve the step from the step before
+         * last (it oscillates across a jump of F_z), gives way to bisection, as in Numerical
+         * Recipes' rtsafe. */
+        const int stalled = fabs(2 * step) > dz_old;
+        if (!(z_next > lo && z_next < hi) || (stalled && lo_checked)) {
             if (dF >= 0 && f < 0) {
                 /* No contact yet: the discrete elements can miss a corner that the rigid
                  * disc (z_hi) touches, so the first contact may lie well below. */
                 z_next = fmax(z - down, 0.5 * (lo + hi));
                 down *= 4;
             } else if (lo_checked) {
-                z_next = lo + f_lo * (hi - lo) / (f_lo - f_hi); /* false position */
-                if (!(z_next > lo && z_next < hi))
-                    z_next = 0.5 * (lo + hi);
+                z_next = 0.5 * (lo + hi);
             } else {
-                z_next = lo; /* verify the bracket's lower end before going there */
+                /* Verify the bracket's lower end before relying on it. */
                 lo_checked = 1;
                 double F_lo, dF_lo;
                 const int s = force(ctx, lo, &F_lo, &dF_lo);
@@ -82,7 +79,7 @@ static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, 
                                         "its centre at the ground (z = %.6g m)",
                                         G, F_lo, lo);
                 f_lo = F_lo - G;
-                z_next = lo + f_lo * (hi - lo) / (f_lo - f_hi);
+                z_next = lo + f_lo * (hi - lo) / (f_lo - f_hi); /* one false-position step */
             }
         }
         dz_old = last_dz;
