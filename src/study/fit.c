@@ -1,0 +1,179 @@
+/* Identification of a physical model on measured curves (MODEL.md section 8): nonlinear least
+ * squares on h over the training cases, with standard errors from the covariance. */
+#include "tirenv/study.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <time.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multifit_nlinear.h>
+
+tirenv_fit_settings tirenv_fit_default(void)
+{
+    return (tirenv_fit_settings){.type = NULL, .fit_R0 = 0, .max_iter = 50, .xtol = 1e-6,
+                                 .progress = NULL, .progress_ctx = NULL};
+}
+
+/* The fitted parameters, each by its .tir key and where it lives in the tire. */
+typedef struct {
+    const char *key;
+    double *(*field)(tirenv_tire *t);
+} fit_param;
+
+static double *field_c_r(tirenv_tire *t) { return &t->springs.c_r; }
+static double *field_c_b(tirenv_tire *t) { return &t->springs.c_b; }
+static double *field_R0(tirenv_tire *t) { return &t->springs.R0; }
+
+static const fit_param params[TIRENV_FIT_MAX_PARAMS] = {
+    {"RADIAL_STIFFNESS", field_c_r},
+    {"INTERRADIAL_STIFFNESS", field_c_b},
+    {"UNLOADED_RADIUS", field_R0},
+};
+
+typedef struct {
+    const tirenv_dataset *ds;
+    tirenv_split split;
+    const tirenv_model_type *type;
+    tirenv_tire tire;             /* the working copy the parameters are written into */
+    size_t n_params;
+    double *h;                    /* scratch: one case's model curve */
+    int status;                   /* first failure inside the residual function */
+    tirenv_diag *diag;
+} fit_ctx;
+
+/* Parameters are fitted as logarithms: they stay positive, and a stiffness of 1e6 and a radius
+ * of 0.7 get steps of the same relative size. */
+static void set_params(fit_ctx *c, const gsl_vector *p)
+{
+    for (size_t i = 0; i < c->n_params; ++i)
+        *params[i].field(&c->tire) = exp(gsl_vector_get(p, i));
+}
+
+/* Residuals h_model - h_meas over every point of every case of the split. */
+static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
+{
+    fit_ctx *c = data;
+    set_params(c, p);
+    tirenv_model *m = tirenv_model_alloc(c->type, &c->tire);
+    if (!m) {
+        c->status = tirenv_error(c->diag, TIRENV_EINVAL, "", 0, "fit",
+                                 "parameters left the physical range");
+        return GSL_EDOM;
+    }
+    size_t k = 0;
+    for (size_t i = 0; i < c->ds->n; ++i) {
+        const tirenv_case *cs = &c->ds->cases[i];
+        if (cs->split != c->split)
+            continue;
+        const int status = tirenv_case_predict_model(m, cs, c->h, c->diag);
+        if (status) {
+            c->status = status;
+            tirenv_model_free(m);
+            return GSL_EDOM;
+        }
+        for (size_t j = 0; j < cs->curve.n; ++j)
+            gsl_vector_set(r, k++, c->h[j] - cs->curve.h[j]);
+    }
+    tirenv_model_free(m);
+    return GSL_SUCCESS;
+}
+
+static double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void fit_callback(const size_t iter, void *params_, const gsl_multifit_nlinear_workspace *w)
+{
+    const tirenv_fit_settings *s = params_;
+    if (!s->progress)
+        return;
+    const gsl_vector *f = gsl_multifit_nlinear_residual(w);
+    double norm;
+    norm = gsl_blas_dnrm2(f);
+    s->progress(s->progress_ctx, iter, norm / sqrt((double)f->size));
+}
+
+int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
+               tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
+{
+    gsl_set_error_handler_off();
+    const double t0 = now_seconds();
+    fit_ctx c = {ds, split, s->type ? s->type : tirenv_model_springs, *tire,
+                 s->fit_R0 ? 3 : 2, NULL, 0, diag};
+    size_t n = 0, n_max = 0;
+    for (size_t i = 0; i < ds->n; ++i)
+        if (ds->cases[i].split == split) {
+            n += ds->cases[i].curve.n;
+            n_max = ds->cases[i].curve.n > n_max ? ds->cases[i].curve.n : n_max;
+        }
+    if (n <= c.n_params)
+        return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "split",
+                            "%zu points in the %s cases: too few to fit %zu parameters", n,
+                            tirenv_split_name(split), c.n_params);
+    c.h = malloc(n_max * sizeof *c.h);
+    gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
+    fp.trs = gsl_multifit_nlinear_trs_lm;
+    /* Finite-difference Jacobian: the step must dwarf the equilibrium tolerance (1e-10 m)
+     * relative to h (1e-2 m); 1e-4 in log parameters moves h by about 1e-6 m. */
+    fp.h_df = 1e-4;
+    gsl_multifit_nlinear_workspace *w =
+        gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fp, n, c.n_params);
+    gsl_vector *p0 = gsl_vector_alloc(c.n_params);
+    gsl_matrix *covar = gsl_matrix_alloc(c.n_params, c.n_params);
+    if (!c.h || !w || !p0 || !covar) {
+        free(c.h);
+        gsl_multifit_nlinear_free(w);
+        gsl_vector_free(p0);
+        gsl_matrix_free(covar);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "fit", "out of memory");
+    }
+    for (size_t i = 0; i < c.n_params; ++i)
+        gsl_vector_set(p0, i, log(fmax(*params[i].field(&c.tire), 1.0)));
+    gsl_multifit_nlinear_fdf fdf = {.f = residuals, .df = NULL, .fvv = NULL, .n = n,
+                                    .p = c.n_params, .params = &c};
+    int info = 0;
+    int status = gsl_multifit_nlinear_init(p0, &fdf, w);
+    if (!status)
+        status = gsl_multifit_nlinear_driver(s->max_iter, s->xtol, 1e-10, 1e-10, fit_callback,
+                                             (void *)s, &info, w);
+    int result = TIRENV_OK;
+    if (c.status) {
+        result = c.status;
+    } else if (status && status != GSL_EMAXITER) {
+        result = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "fit", "%s", gsl_strerror(status));
+    } else {
+        /* Covariance of the log parameters, scaled by the residual variance; for c = e^p the
+         * standard error is c * sigma_p to first order. */
+        const gsl_vector *f = gsl_multifit_nlinear_residual(w);
+        double chisq;
+        gsl_blas_ddot(f, f, &chisq);
+        gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0.0, covar);
+        const double sigma2 = chisq / (double)(n - c.n_params);
+        set_params(&c, gsl_multifit_nlinear_position(w));
+        *report = (tirenv_fit_report){
+            .n_params = c.n_params,
+            .iterations = gsl_multifit_nlinear_niter(w),
+            .n_points = n,
+            .rms = sqrt(chisq / (double)n),
+            .stop = status == GSL_EMAXITER ? "iteration limit"
+                    : info == 1            ? "small step"
+                                           : "small gradient",
+        };
+        for (size_t i = 0; i < c.n_params; ++i) {
+            report->names[i] = params[i].key;
+            report->value[i] = *params[i].field(&c.tire);
+            report->std_error[i] = report->value[i] * sqrt(sigma2 * gsl_matrix_get(covar, i, i));
+        }
+        *tire = c.tire;
+    }
+    report->seconds = now_seconds() - t0;
+    free(c.h);
+    gsl_multifit_nlinear_free(w);
+    gsl_vector_free(p0);
+    gsl_matrix_free(covar);
+    return result;
+}
