@@ -8,11 +8,12 @@
 #include "tirenv/dataset.h"
 #include "tirenv/error.h"
 #include "tirenv/model.h"
-#include "tirenv/nn.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+typedef struct tirenv_nn tirenv_nn;  /* the network, tirenv/nn.h */
 
 /* How far a model curve is from a measured one on the same points (all in m). */
 typedef struct {
