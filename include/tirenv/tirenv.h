@@ -11,6 +11,9 @@
 #include "tirenv/springs.h"
 #include "tirenv/ring.h"
 #include "tirenv/io.h"
+#include "tirenv/curve.h"
+#include "tirenv/rig.h"
+#include "tirenv/dataset.h"
 
 #define TIRENV_VERSION "0.1.0"
 

@@ -27,6 +27,7 @@ typedef struct {
 int cli_flat_main(int argc, char *argv[]);
 int cli_envelope_main(int argc, char *argv[]);
 int cli_bench_main(int argc, char *argv[]);
+int cli_rig_main(int argc, char *argv[]);
 
 /* getopt_long codes of the shared long options; above 255 so they never clash with a short
  * option character. */

@@ -12,6 +12,7 @@ static const cli_command commands[] = {
     {"help", help_main, "show this help, or a command's: tirenv help COMMAND"},
     {"flat", cli_flat_main, "flat-ground state: load, deflection, contact length, stiffness"},
     {"envelope", cli_envelope_main, "enveloping curve over an obstacle, as CSV"},
+    {"rig", cli_rig_main, "virtual test rig: a simulated cart run written as a raw log"},
     {"bench", cli_bench_main, "time the models and equilibrium solvers on a fixed sweep"},
 };
 enum { N_COMMANDS = sizeof commands / sizeof commands[0] };
