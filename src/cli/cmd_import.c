@@ -1,0 +1,202 @@
+/* tirenv import: a raw rig log (t, x, z of the tire centre) to an approach-half enveloping
+ * curve on an x_N grid, as CSV. SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "data/rig_impl.h"
+
+static void usage(FILE *fp)
+{
+    const tirenv_import_settings d = tirenv_import_default();
+    fputs("usage: tirenv import --log FILE --cleat L,H (--load N | --contact-length M)\n"
+          "                     [--x-n-from A] [--x-n-to B] [--dx-n D] [--smooth W] [-o FILE]\n"
+          "                     [--tire FILE] [--set KEY=VALUE]...\n"
+          "\n"
+          "Imports a rig log, CSV 't_s,x_m,z_m' (tire-centre position over time; any rate,\n"
+          "either direction, constant offsets, noise, repeated or missing samples), over a\n"
+          "symmetric cleat: removes the flat baseline, finds the obstacle centre, folds the\n"
+          "departure half onto the approach half, filters the noise without shifting the\n"
+          "curve, and writes the approach half on an x_N grid (MODEL.md section 1):\n"
+          "  x_N,x_m,h_m\n"
+          "x_m in obstacle coordinates (centre at 0), h_m above the flat ground. A summary\n"
+          "(noise, centre, smoothing) goes to standard error. A log that does not hold a\n"
+          "whole passage (flat ground, the bump, flat ground) is refused with the reason.\n"
+          "\n"
+          "options:\n"
+          "  --log FILE           the raw log\n"
+          "  --cleat L,H          the obstacle: length and height in m\n",
+          fp);
+    fprintf(fp,
+            "  --contact-length M   the working regime: contact length in m (fixes x_N)\n"
+            "  --load N             or the vertical load in N: the contact length is then the\n"
+            "                       springs model's flat-ground chord at that load\n"
+            "  --x-n-from A         first grid point (default %g: before first contact)\n"
+            "  --x-n-to B           last grid point (default %g: over the centre)\n"
+            "  --dx-n D             grid step (default %g)\n"
+            "  --smooth W           smoothing half-width in m (default: chosen from the noise)\n"
+            "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
+            "                       '-': standard output)\n",
+            d.xN_from, d.xN_to, d.dxN);
+    cli_help_tire(fp, 0);
+    fputs("  -h, --help           show this help\n", fp);
+}
+
+/* The working regime: --contact-length as given, or the springs model's flat-ground contact
+ * length at --load (the chord at the flat-ground height, MODEL.md section 1). */
+static int contact_length(const cli_options *o, const tirenv_tire *tire, double *l_c)
+{
+    if (o->have_contact_length) {
+        *l_c = o->contact_length;
+        return CLI_EXIT_OK;
+    }
+    tirenv_model *m;
+    int code = cli_model(tirenv_model_springs, tire, &m);
+    if (code)
+        return code;
+    tirenv_flat flat;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_model_flat(m, o->load, &flat, &diag);
+    tirenv_model_free(m);
+    if (status)
+        return cli_fail(status, &diag);
+    *l_c = flat.contact_length;
+    return CLI_EXIT_OK;
+}
+
+static void summary(const char *log, const tirenv_rig__info *in, const tirenv_curve *c)
+{
+    double peak = 0;
+    for (size_t k = 0; k < c->n; k++)
+        peak = fmax(peak, c->h[k]);
+    fprintf(stderr,
+            "tirenv import: %s: %zu samples (%zu repeated dropped), travel towards %sx, noise "
+            "%.3g mm, flat z %.6g m, centre at x = %.6g m, x_0 = %.4g m; smoothing half-width "
+            "%.3g mm leaves %.2g mm of noise; peak h %.2f mm\n",
+            log, in->n_samples, in->n_repeated, in->reversed ? "-" : "+", in->sigma * 1e3,
+            in->baseline, in->centre, in->x_0, in->half_width * 1e3, in->noise_se * 1e3,
+            peak * 1e3);
+}
+
+/* Own options, parsed into the import settings; returns an exit code. */
+typedef struct {
+    const char *log;
+    const char *output;
+    tirenv_import_settings s;
+} import_args;
+
+enum { OPT_LOG = CLI_OPT_FIRST_OWN, OPT_XN_FROM, OPT_XN_TO, OPT_DXN, OPT_SMOOTH };
+
+static int own_option(import_args *a, int code, const char *arg)
+{
+    static const struct {
+        int code;
+        const char *name, *expected;
+    } numbers[] = {
+        {OPT_XN_FROM, "x-n-from", "a number"},
+        {OPT_XN_TO, "x-n-to", "a number"},
+        {OPT_DXN, "dx-n", "a positive number"},
+        {OPT_SMOOTH, "smooth", "a positive length in m"},
+    };
+    double *target[] = {&a->s.xN_from, &a->s.xN_to, &a->s.dxN, &a->s.smooth};
+    for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; i++) {
+        if (numbers[i].code != code)
+            continue;
+        double v;
+        if (cli_parse_double(arg, &v) || (code == OPT_DXN && !(v > 0))
+            || (code == OPT_SMOOTH && !(v > 0))) {
+            cli_error("--%s: expected %s, got '%s'", numbers[i].name, numbers[i].expected,
+                      arg);
+            return CLI_EXIT_USAGE;
+        }
+        *target[i] = v;
+        return CLI_EXIT_OK;
+    }
+    return CLI_EXIT_USAGE;
+}
+
+/* Returns an exit code, or -1 once --help has been answered (nothing more to do). */
+static int parse_args(int argc, char *argv[], cli_options *o, import_args *a)
+{
+    static const struct option longopts[] = {
+        CLI_TIRE_LONGOPTS,
+        CLI_LOAD_LONGOPTS,
+        {"cleat", required_argument, NULL, CLI_OPT_CLEAT},
+        {"log", required_argument, NULL, OPT_LOG},
+        {"x-n-from", required_argument, NULL, OPT_XN_FROM},
+        {"x-n-to", required_argument, NULL, OPT_XN_TO},
+        {"dx-n", required_argument, NULL, OPT_DXN},
+        {"smooth", required_argument, NULL, OPT_SMOOTH},
+        {"output", required_argument, NULL, 'o'},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    int c;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
+        int code = CLI_EXIT_OK;
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return -1;
+        case 'o':
+            a->output = optarg;
+            break;
+        case OPT_LOG:
+            a->log = optarg;
+            break;
+        case '?':
+            usage(stderr);
+            return CLI_EXIT_USAGE;
+        default:
+            code = c >= CLI_OPT_FIRST_OWN ? own_option(a, c, optarg) : cli_option(o, c, optarg);
+        }
+        if (code)
+            return code;
+    }
+    if (optind < argc) {
+        cli_error("import: unexpected argument '%s'", argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    const char *missing = !a->log         ? "--log FILE"
+                          : !o->obstacle ? "--cleat L,H"
+                          : !(o->have_load || o->have_contact_length)
+                              ? "--load N or --contact-length M"
+                              : NULL;
+    if (missing) {
+        cli_error("import: %s is required ('tirenv import --help' shows the options)", missing);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_import_main(int argc, char *argv[])
+{
+    cli_options o;
+    cli_options_init(&o);
+    import_args a = {NULL, "-", tirenv_import_default()};
+    int code = parse_args(argc, argv, &o, &a);
+    if (code)
+        return code < 0 ? CLI_EXIT_OK : code;
+    tirenv_tire tire;
+    if ((code = cli_tire(&o, &tire)))
+        return code;
+    a.s.R0 = tire.springs.R0;
+    a.s.L = o.shape[0];
+    a.s.H = o.shape[1];
+    if ((code = contact_length(&o, &tire, &a.s.contact_length)))
+        return code;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_curve curve;
+    tirenv_rig__info info;
+    int status = tirenv_rig__import_file(a.log, &a.s, &curve, &info, &diag);
+    if (status == TIRENV_OK)
+        status = tirenv_curve_write_csv(a.output, &curve, &diag);
+    if (status == TIRENV_OK)
+        summary(a.log, &info, &curve);
+    tirenv_curve_free(&curve);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
