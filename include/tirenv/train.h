@@ -1,0 +1,198 @@
+/* tirenv: training the empirical model's network (MODEL.md section 6), and its model file.
+ * Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_TRAIN_H
+#define TIRENV_TRAIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "tirenv/dataset.h"
+#include "tirenv/error.h"
+#include "tirenv/nn.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* n samples of n_in inputs and one output, borrowed from the caller. For the enveloping
+ * model the inputs are x_N, l_c (m), H (m), L (m) and the output is h (m). */
+typedef struct {
+    size_t n;              /* samples (0: an empty set) */
+    size_t n_in;           /* inputs per sample */
+    const double *x;       /* n*n_in inputs, row-major */
+    const double *y;       /* n outputs */
+} tirenv_samples;
+
+/* A trainer algorithm (GSL style: tirenv_trainer_lm); the record is private. */
+typedef struct tirenv_trainer_type tirenv_trainer_type;
+extern const tirenv_trainer_type *tirenv_trainer_backprop;
+extern const tirenv_trainer_type *tirenv_trainer_rprop;
+extern const tirenv_trainer_type *tirenv_trainer_lm;
+
+/* The type with this name, or NULL; a type's name; the NULL-terminated list of all. */
+const tirenv_trainer_type *tirenv_trainer_type_find(const char *name);
+const char *tirenv_trainer_type_name(const tirenv_trainer_type *type);
+const tirenv_trainer_type *const *tirenv_trainer_types(void);
+
+/* The paper's standard back-propagation: gradient descent with momentum on the squared error
+ * of the scaled output, dw <- -eta*dE/dw + alpha*dw. */
+typedef struct {
+    double learning_rate;  /* eta, on the scaled error */
+    double momentum;       /* alpha, in [0, 1) */
+    int online;            /* 1: update after each sample, in an order shuffled every epoch
+                              with the rng; 0: once per epoch on the summed gradient */
+} tirenv_backprop_settings;
+
+/* iRprop- (Igel and Huesken 2000): per-weight steps grown by eta_plus while the gradient
+ * keeps its sign, shrunk by eta_minus (and the step skipped) when it flips. */
+typedef struct {
+    double delta0;         /* first step of every weight */
+    double delta_min;      /* smallest step */
+    double delta_max;      /* largest step */
+    double eta_plus;       /* > 1 */
+    double eta_minus;      /* in (0, 1) */
+} tirenv_rprop_settings;
+
+/* How the Levenberg-Marquardt step is solved. Both damp with mu I and update mu by Nielsen's
+ * rule; lm.c says which is the default and why. */
+typedef enum {
+    TIRENV_LM_CHOLESKY = 0, /* (J^T J + mu I) dw = -J^T r by Cholesky on normal equations
+                               formed a block of rows at a time */
+    TIRENV_LM_GSL           /* GSL's gsl_multifit_nlinear trust region (trs_lm, Levenberg
+                               scaling, Cholesky), one gsl_multifit_nlinear_iterate per epoch */
+} tirenv_lm_solver;
+
+/* Levenberg-Marquardt on the full Jacobian of the residuals (one epoch = one accepted step). */
+typedef struct {
+    tirenv_lm_solver solver;
+    double tau;            /* first damping mu = tau * max diag(J^T J) (Nielsen's tau; GSL
+                              fixes it at 1e-3) */
+    double mu_max;         /* cholesky: give up (converged) when mu / max diag(J^T J)
+                              exceeds it */
+} tirenv_lm_settings;
+
+/* What the progress callback sees after every epoch. Errors in m. */
+typedef struct {
+    size_t restart;        /* 0-based */
+    size_t restarts;       /* how many */
+    size_t epoch;          /* epochs done in this restart */
+    size_t max_epochs;
+    double train_rms;      /* during the epoch (online backprop) or before its step */
+    double control_rms;    /* after the epoch */
+    double best_rms;       /* best control error of this restart so far */
+    size_t best_epoch;
+} tirenv_train_progress;
+
+/* Returns 0 to go on, nonzero to stop training (the best weights so far are kept). */
+typedef int (*tirenv_train_progress_fn)(const tirenv_train_progress *p, void *data);
+
+typedef struct {
+    tirenv_nn_topology topology;  /* size[0] must equal the samples' n_in */
+    unsigned long seed;           /* fixes initial weights and online order, bit for bit */
+    size_t restarts;              /* independent starts; the best on the control set is kept */
+    size_t max_epochs;            /* per restart */
+    size_t patience;              /* stop after this many epochs without a better control
+                                     error; 0: never stop early (still keep the best) */
+    tirenv_backprop_settings backprop;
+    tirenv_rprop_settings rprop;
+    tirenv_lm_settings lm;
+    tirenv_train_progress_fn progress;  /* NULL: none */
+    void *progress_data;
+} tirenv_train_settings;
+
+/* Defaults for a trainer (NULL: lm): 4-8-1, seed 1, and by trainer
+ *   backprop  2e5 epochs (the paper's cycles), no early stop, 1 restart, online,
+ *             learning rate 0.01, momentum 0.9;
+ *   rprop     5000 epochs, patience 500, 4 restarts, delta0 0.1, [1e-6, 50], 1.2 / 0.5;
+ *   lm        1000 epochs, patience 30, 4 restarts, tau 1e-3, mu_max 1e10. */
+tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type);
+
+/* TIRENV_OK, or TIRENV_EINVAL naming the first bad setting (topology, counts, each
+ * trainer's constants) in diag. */
+int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *diag);
+
+/* Why a restart stopped. */
+typedef enum {
+    TIRENV_TRAIN_MAX_EPOCHS = 0, /* ran max_epochs */
+    TIRENV_TRAIN_PATIENCE,       /* patience epochs without a better control error */
+    TIRENV_TRAIN_CONVERGED,      /* the trainer could not lower the error further */
+    TIRENV_TRAIN_DIVERGED,       /* the error became infinite or NaN */
+    TIRENV_TRAIN_CANCELLED       /* the progress callback asked to stop */
+} tirenv_train_stop;
+
+/* "max-epochs", "patience", "converged", "diverged", "cancelled". */
+const char *tirenv_train_stop_name(tirenv_train_stop stop);
+
+/* Error of a network on one sample set, m. */
+typedef struct {
+    size_t n;              /* samples (0: no such set) */
+    double rms;            /* root mean square error, m */
+    double max;            /* largest absolute error, m */
+} tirenv_train_error;
+
+typedef struct {
+    size_t restart;        /* the kept restart, 0-based */
+    size_t epochs;         /* epochs it ran */
+    size_t best_epoch;     /* its epoch of least control error (0: the initial weights) */
+    double best_time;      /* s from its start to that epoch */
+    size_t total_epochs;   /* over all restarts */
+    double wall_time;      /* s, all restarts */
+    tirenv_train_stop stop;/* why the kept restart stopped */
+    tirenv_train_error error[3];  /* indexed by tirenv_split: train, control, validation */
+} tirenv_train_report;
+
+/* Errors of nn on a sample set; uses the batch path. */
+tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s);
+
+/* Trains a network of settings->topology on train, early-stopping on control (if it is empty,
+ * on train), and reports errors on all three (validation may be NULL or empty). Scaling and
+ * input ranges come from train only. *out is the kept network (free it with tirenv_nn_free);
+ * report may be NULL. Sets GSL's error handler off (GSL would abort on a singular matrix).
+ * Deterministic: the same arguments give the same weights bit for bit. */
+int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
+                 const tirenv_samples *train, const tirenv_samples *control,
+                 const tirenv_samples *validation, tirenv_nn **out,
+                 tirenv_train_report *report, tirenv_diag *diag);
+
+/* FNV-1a (64 bit) over the IEEE bits of every input and output in order, little-endian,
+ * continuing from h (start with TIRENV_FNV1A64_OFFSET): the data-set fingerprint. */
+#define TIRENV_FNV1A64_OFFSET UINT64_C(0xcbf29ce484222325)
+uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h);
+
+/* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,
+ * L), output h; cases of the given split only. Allocates *x and *y (free them); TIRENV_EINVAL
+ * if a case has no curve. */
+int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
+                                tirenv_samples *out, double **x, double **y,
+                                tirenv_diag *diag);
+
+/* ---- Model files (src/nn/nn_json.c): a network and how it was trained, as JSON. ---- */
+
+#define TIRENV_NN_FORMAT "tirenv-nn"
+#define TIRENV_NN_FORMAT_VERSION 1
+
+/* What a model file records besides the network. */
+typedef struct {
+    char trainer[32];                /* trainer name, or "" */
+    tirenv_train_settings settings;  /* as used (the callback is not saved) */
+    tirenv_train_report report;
+    uint64_t fingerprint;            /* tirenv_samples_fingerprint of train, control,
+                                        validation in turn */
+    double R0;                       /* free radius of the tire the data's x_N refers to, m;
+                                        0 if unknown */
+    char data[512];                  /* data set directory, or "" */
+} tirenv_train_record;
+
+/* Writes nn and rec (rec may be NULL) atomically (tirenv_outfile). Non-finite numbers are
+ * refused. Reals are written with 17 significant digits, so reading gives the same bits. */
+int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
+                         tirenv_diag *diag);
+/* Reads a model file, checking format, version, sizes, finiteness, ranges and the network
+ * checksum; errors name the file and the field. *out is NULL on failure; rec may be NULL. */
+int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
+                        tirenv_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,556 @@
+/* The feed-forward network of the empirical model (paper, Tables 1 and 2; MODEL.md section 6):
+ * layout, initialisation, scaling, evaluation (one sample and batches), back-propagation.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/nn.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tirenv/curve.h"
+
+/* Samples evaluated together by tirenv_nn_run_batch. A block of activations of a 4-8-1 net
+ * is 13*64 doubles (6.5 KiB), well inside L1; a compile-time trip count is what lets GCC's
+ * -O2 vectoriser (its "very cheap" cost model) take the loops over samples. */
+enum { NN_BLOCK = 64 };
+
+/* Neurons are evaluated in groups of NN_LANES (one AVX-512 register of doubles), so each
+ * layer's activations are padded to a multiple of it. */
+enum { NN_LANES = 8 };
+
+/* exp(708) is near the largest double; beyond it the exponent trick in nn_exp overflows. */
+#define NN_NET_MAX 708.0
+
+/* The evaluation entry points are compiled once per instruction set and the best one the
+ * processor has is picked when the program loads (GCC's target_clones, through an ELF
+ * ifunc). No FMA contraction happens in any clone (ISO C mode: -ffp-contract=off), so every
+ * clone gives the same bits. The helpers are forced inline so that they are compiled for
+ * the clone's instruction set too. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
+    !defined(TIRENV_NN_NO_CLONES)
+#define NN_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define NN_CLONES
+#endif
+#if defined(__GNUC__)
+#define NN_INLINE static inline __attribute__((always_inline))
+#else
+#define NN_INLINE static inline
+#endif
+
+struct tirenv_nn {
+    tirenv_nn_topology top;
+    size_t n_in;                          /* inputs, top.size[0] */
+    size_t n_weights;
+    size_t n_act;                         /* neurons over all layers, with padding */
+    size_t w_off[TIRENV_NN_MAX_LAYERS];   /* first weight of layer l, l >= 1 */
+    size_t a_off[TIRENV_NN_MAX_LAYERS];   /* first activation of layer l, a multiple of
+                                             NN_LANES */
+    /* The clamp of a logistic's net input, NN_NET_MAX. Read from here rather than written as
+     * a literal: with a literal GCC threads the clamped branch into a constant result, and
+     * the resulting control flow stops it vectorising the loop. */
+    double net_max;
+    double out_mean, out_std;             /* output scaling, units of the output */
+    double *w;                            /* n_weights, then NN_LANES zeros (read, never
+                                             used, by the last group of layer_run) */
+    double *in_mean, *in_std, *in_inv_std;/* n_in each: input scaling */
+    double *in_lo, *in_hi;                /* n_in each: range seen in training */
+    double *a;                            /* n_act: activations of one sample, layers
+                                             padded to NN_LANES; layer 0 holds the scaled
+                                             inputs */
+    double *delta;                        /* n_act: dy/d(net input) of each neuron */
+    double *blk;                          /* NN_BLOCK*n_act, 64-byte aligned: activations of a
+                                             block of samples, neuron-major */
+};
+
+const char *tirenv_nn_input_name(size_t i)
+{
+    static const char *const names[TIRENV_NN_INPUTS] = {"x_N", "contact_length_m",
+                                                        "obstacle_height_m",
+                                                        "obstacle_length_m"};
+    return i < TIRENV_NN_INPUTS ? names[i] : NULL;
+}
+
+tirenv_nn_topology tirenv_nn_topology_default(void)
+{
+    return (tirenv_nn_topology){.n_layers = 3, .size = {TIRENV_NN_INPUTS, 8, 1}};
+}
+
+int tirenv_nn_topology_check(const tirenv_nn_topology *t, tirenv_diag *diag)
+{
+    if (t->n_layers < 2 || t->n_layers > TIRENV_NN_MAX_LAYERS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                            "%zu layers; expected 2 to %d counting input and output",
+                            t->n_layers, TIRENV_NN_MAX_LAYERS);
+    for (size_t l = 0; l < t->n_layers; ++l)
+        if (t->size[l] < 1 || t->size[l] > TIRENV_NN_MAX_WIDTH)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                                "layer %zu has %zu neurons; expected 1 to %d", l, t->size[l],
+                                TIRENV_NN_MAX_WIDTH);
+    if (t->size[t->n_layers - 1] != 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                            "output layer has %zu neurons; expected 1",
+                            t->size[t->n_layers - 1]);
+    return TIRENV_OK;
+}
+
+static size_t padded(size_t n)
+{
+    return (n + NN_LANES - 1) / NN_LANES * NN_LANES;
+}
+
+/* One malloc, genann style: the struct, then every array, the block workspace last and
+ * rounded up to a 64-byte boundary (a cache line, an AVX-512 register) for aligned loads. */
+tirenv_nn *tirenv_nn_alloc(const tirenv_nn_topology *t)
+{
+    if (!t || tirenv_nn_topology_check(t, NULL))
+        return NULL;
+    size_t n_weights = 0, n_act = padded(t->size[0]);
+    for (size_t l = 1; l < t->n_layers; ++l) {
+        n_weights += (1 + t->size[l - 1]) * t->size[l];
+        n_act += padded(t->size[l]);
+    }
+    const size_t n_in = t->size[0];
+    const size_t n_doubles = n_weights + NN_LANES + 5 * n_in + 2 * n_act + NN_BLOCK * n_act;
+    tirenv_nn *nn = malloc(sizeof *nn + (n_doubles + 8) * sizeof(double));
+    if (!nn)
+        return NULL;
+    memset(nn, 0, sizeof *nn);
+    nn->top = *t;
+    nn->n_in = n_in;
+    nn->n_weights = n_weights;
+    nn->n_act = n_act;
+    nn->net_max = NN_NET_MAX;
+    size_t w_off = 0, a_off = padded(t->size[0]);
+    for (size_t l = 1; l < t->n_layers; ++l) {
+        nn->w_off[l] = w_off;
+        nn->a_off[l] = a_off;
+        w_off += (1 + t->size[l - 1]) * t->size[l];
+        a_off += padded(t->size[l]);
+    }
+    double *p = (double *)(nn + 1);
+    nn->w = p, p += n_weights + NN_LANES;
+    nn->in_mean = p, p += n_in;
+    nn->in_std = p, p += n_in;
+    nn->in_inv_std = p, p += n_in;
+    nn->in_lo = p, p += n_in;
+    nn->in_hi = p, p += n_in;
+    nn->a = p, p += n_act;
+    nn->delta = p, p += n_act;
+    const uintptr_t misalign = (uintptr_t)p % 64;
+    nn->blk = misalign ? p + (64 - misalign) / sizeof(double) : p;
+    memset(nn->w, 0, (n_weights + NN_LANES) * sizeof(double));
+    memset(nn->a, 0, 2 * n_act * sizeof(double));
+    memset(nn->blk, 0, NN_BLOCK * n_act * sizeof(double));
+    for (size_t i = 0; i < n_in; ++i) {
+        nn->in_mean[i] = 0;
+        nn->in_std[i] = nn->in_inv_std[i] = 1;
+        nn->in_lo[i] = -INFINITY;
+        nn->in_hi[i] = INFINITY;
+    }
+    nn->out_mean = 0;
+    nn->out_std = 1;
+    return nn;
+}
+
+void tirenv_nn_free(tirenv_nn *nn)
+{
+    free(nn);
+}
+
+int tirenv_nn_copy(tirenv_nn *dst, const tirenv_nn *src)
+{
+    if (dst->top.n_layers != src->top.n_layers ||
+        memcmp(dst->top.size, src->top.size, src->top.n_layers * sizeof src->top.size[0]))
+        return TIRENV_EINVAL;
+    memcpy(dst->w, src->w, src->n_weights * sizeof(double));
+    const size_t n = src->n_in * sizeof(double);
+    memcpy(dst->in_mean, src->in_mean, n);
+    memcpy(dst->in_std, src->in_std, n);
+    memcpy(dst->in_inv_std, src->in_inv_std, n);
+    memcpy(dst->in_lo, src->in_lo, n);
+    memcpy(dst->in_hi, src->in_hi, n);
+    dst->out_mean = src->out_mean;
+    dst->out_std = src->out_std;
+    return TIRENV_OK;
+}
+
+tirenv_nn *tirenv_nn_clone(const tirenv_nn *nn)
+{
+    tirenv_nn *c = tirenv_nn_alloc(&nn->top);
+    if (c)
+        tirenv_nn_copy(c, nn);
+    return c;
+}
+
+const tirenv_nn_topology *tirenv_nn_get_topology(const tirenv_nn *nn) { return &nn->top; }
+size_t tirenv_nn_n_inputs(const tirenv_nn *nn) { return nn->n_in; }
+size_t tirenv_nn_n_weights(const tirenv_nn *nn) { return nn->n_weights; }
+double *tirenv_nn_weights(tirenv_nn *nn) { return nn->w; }
+const double *tirenv_nn_weights_const(const tirenv_nn *nn) { return nn->w; }
+
+size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
+{
+    return nn->w_off[l] + i * nn->top.size[l] + j;
+}
+
+/* Nguyen and Widrow (1990): spread the hidden neurons' active regions over the input space,
+ * which they assume to be [-1, 1]^n_in; the standardised inputs are close to that. The
+ * uniform draws come from the caller's rng, so a seed fixes the weights bit for bit. */
+void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
+{
+    const size_t L = nn->top.n_layers - 1;
+    for (size_t l = 1; l <= L; ++l) {
+        const size_t n_in = nn->top.size[l - 1], n_out = nn->top.size[l];
+        double *w = nn->w + nn->w_off[l];
+        if (l == L) {
+            for (size_t k = 0; k < (1 + n_in) * n_out; ++k)
+                w[k] = gsl_rng_uniform(rng) - 0.5;
+            continue;
+        }
+        const double beta = 0.7 * pow((double)n_out, 1.0 / (double)n_in);
+        for (size_t j = 0; j < n_out; ++j) {
+            double norm2 = 0;
+            for (size_t i = 1; i <= n_in; ++i) {
+                const double v = gsl_rng_uniform(rng) - 0.5;
+                w[i * n_out + j] = v;
+                norm2 += v * v;
+            }
+            const double scale = norm2 > 0 ? beta / sqrt(norm2) : 0;
+            for (size_t i = 1; i <= n_in; ++i)
+                w[i * n_out + j] *= scale;
+            w[j] = beta * (2 * gsl_rng_uniform(rng) - 1);
+        }
+    }
+}
+
+int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
+                          double out_mean, double out_std, tirenv_diag *diag)
+{
+    for (size_t i = 0; i < nn->n_in; ++i)
+        if (!isfinite(in_mean[i]) || !isfinite(in_std[i]) || !(in_std[i] > 0))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "scaling",
+                                "input %zu: mean %g, std %g; expected finite, std > 0", i,
+                                in_mean[i], in_std[i]);
+    if (!isfinite(out_mean) || !isfinite(out_std) || !(out_std > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "scaling",
+                            "output: mean %g, std %g; expected finite, std > 0", out_mean,
+                            out_std);
+    for (size_t i = 0; i < nn->n_in; ++i) {
+        nn->in_mean[i] = in_mean[i];
+        nn->in_std[i] = in_std[i];
+        nn->in_inv_std[i] = 1.0 / in_std[i];
+    }
+    nn->out_mean = out_mean;
+    nn->out_std = out_std;
+    return TIRENV_OK;
+}
+
+void tirenv_nn_get_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],
+                           double *out_mean, double *out_std)
+{
+    for (size_t i = 0; i < nn->n_in; ++i) {
+        if (in_mean)
+            in_mean[i] = nn->in_mean[i];
+        if (in_std)
+            in_std[i] = nn->in_std[i];
+    }
+    if (out_mean)
+        *out_mean = nn->out_mean;
+    if (out_std)
+        *out_std = nn->out_std;
+}
+
+int tirenv_nn_set_input_range(tirenv_nn *nn, const double lo[], const double hi[],
+                              tirenv_diag *diag)
+{
+    for (size_t i = 0; i < nn->n_in; ++i)
+        if (isnan(lo[i]) || isnan(hi[i]) || !(lo[i] <= hi[i]) || lo[i] == INFINITY ||
+            hi[i] == -INFINITY)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "input_range",
+                                "input %zu: [%g, %g]; expected lo <= hi", i, lo[i], hi[i]);
+    memcpy(nn->in_lo, lo, nn->n_in * sizeof(double));
+    memcpy(nn->in_hi, hi, nn->n_in * sizeof(double));
+    return TIRENV_OK;
+}
+
+void tirenv_nn_get_input_range(const tirenv_nn *nn, double lo[], double hi[])
+{
+    memcpy(lo, nn->in_lo, nn->n_in * sizeof(double));
+    memcpy(hi, nn->in_hi, nn->n_in * sizeof(double));
+}
+
+/* Two passes (mean, then squared deviations) rather than one running sum of squares, which
+ * cancels catastrophically when the spread is small against the mean (l_c ~ 0.33 +- 0.04). */
+int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const double y[],
+                          tirenv_diag *diag)
+{
+    const size_t n_in = nn->n_in;
+    if (n == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "samples",
+                            "no samples to take the scaling from");
+    double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
+        hi[TIRENV_NN_MAX_WIDTH];
+    double y_mean = 0, y_var = 0;
+    for (size_t i = 0; i < n_in; ++i) {
+        mean[i] = std[i] = 0;
+        lo[i] = INFINITY;
+        hi[i] = -INFINITY;
+    }
+    for (size_t s = 0; s < n; ++s) {
+        for (size_t i = 0; i < n_in; ++i) {
+            const double v = x[s * n_in + i];
+            if (!isfinite(v))
+                return tirenv_error(diag, TIRENV_EINVAL, "", s + 1, tirenv_nn_input_name(i),
+                                    "sample %zu: input %zu is %g; expected a finite number", s,
+                                    i, v);
+            mean[i] += v;
+            lo[i] = v < lo[i] ? v : lo[i];
+            hi[i] = v > hi[i] ? v : hi[i];
+        }
+        if (!isfinite(y[s]))
+            return tirenv_error(diag, TIRENV_EINVAL, "", s + 1, "output",
+                                "sample %zu: output is %g; expected a finite number", s, y[s]);
+        y_mean += y[s];
+    }
+    for (size_t i = 0; i < n_in; ++i)
+        mean[i] /= (double)n;
+    y_mean /= (double)n;
+    for (size_t s = 0; s < n; ++s) {
+        for (size_t i = 0; i < n_in; ++i) {
+            const double d = x[s * n_in + i] - mean[i];
+            std[i] += d * d;
+        }
+        y_var += (y[s] - y_mean) * (y[s] - y_mean);
+    }
+    for (size_t i = 0; i < n_in; ++i) {
+        std[i] = sqrt(std[i] / (double)n);
+        if (!(std[i] > 0))
+            std[i] = 1;  /* a constant input: centre it, nothing to scale */
+    }
+    double y_std = sqrt(y_var / (double)n);
+    if (!(y_std > 0))
+        y_std = 1;
+    const int status = tirenv_nn_set_scaling(nn, mean, std, y_mean, y_std, diag);
+    return status ? status : tirenv_nn_set_input_range(nn, lo, hi, diag);
+}
+
+size_t tirenv_nn_out_of_range(const tirenv_nn *nn, const double x[], size_t first)
+{
+    for (size_t i = first; i < nn->n_in; ++i)
+        if (!(x[i] >= nn->in_lo[i] && x[i] <= nn->in_hi[i]))
+            return i;
+    return nn->n_in;
+}
+
+/* exp(x) for |x| <= NN_NET_MAX, within 3 ulp of libm's, in straight-line code the vectoriser
+ * can take (a call to libm's exp stops it): Cody-Waite reduction x = k*ln2 + r, |r| <= ln2/2,
+ * with ln2 split so that k*ln2_hi is exact; e^r by its Taylor polynomial to degree 12 (the
+ * remainder r^13/13! < 2e-16), summed by Estrin's scheme, a tree of depth 4 rather than
+ * Horner's chain of 12 (single-sample evaluation is bound by this latency); 2^k written
+ * straight into the exponent bits. Rounding x/ln2 to k adds and subtracts 1.5*2^52, which
+ * leaves k in the low mantissa bits of t. */
+NN_INLINE double nn_exp(double x)
+{
+    const double log2e = 1.4426950408889634074, ln2_hi = 6.93147180369123816490e-01,
+                 ln2_lo = 1.90821492927058770002e-10, shifter = 0x1.8p52;
+    const double t = x * log2e + shifter;
+    const double k = t - shifter;
+    const double r = (x - k * ln2_hi) - k * ln2_lo;
+    const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+    const double p01 = 1.0 + r, p23 = 0.5 + r * (1.0 / 6.0),
+                 p45 = 1.0 / 24.0 + r * (1.0 / 120.0), p67 = 1.0 / 720.0 + r * (1.0 / 5040.0),
+                 p89 = 1.0 / 40320.0 + r * (1.0 / 362880.0),
+                 p1011 = 1.0 / 3628800.0 + r * (1.0 / 39916800.0), p12 = 1.0 / 479001600.0;
+    const double p03 = p01 + r2 * p23, p47 = p45 + r2 * p67, p811 = p89 + r2 * p1011;
+    const double p07 = p03 + r4 * p47, p812 = p811 + r4 * p12;
+    const double p = p07 + r8 * p812;
+    uint64_t bits;
+    memcpy(&bits, &t, sizeof bits);
+    bits = (bits << 52) + UINT64_C(0x3ff0000000000000);  /* (k + 1023) << 52: 2^k */
+    double two_k;
+    memcpy(&two_k, &bits, sizeof two_k);
+    return p * two_k;
+}
+
+/* The logistic f(a) = 1/(1 + e^-a) of Table 1, its net input clamped to +-net_max (where f
+ * is 0 or 1 to 307 digits anyway). */
+NN_INLINE double nn_logistic(double a, double net_max)
+{
+    a = a < -net_max ? -net_max : a;
+    a = a > net_max ? net_max : a;
+    return 1.0 / (1.0 + nn_exp(-a));
+}
+
+/* One layer, one sample: out_j = f(b_j + sum_i w_ij in_i), neurons in groups of NN_LANES held
+ * in registers, inputs added in order. The batch version below adds in the same order, so
+ * both give the same bits. A group past the layer's last neuron reads the next row of
+ * weights (or the zeros after the last one) into lanes whose results nobody reads. */
+NN_INLINE void layer_run(size_t n_in, size_t n_out, const double *restrict w,
+                         const double *restrict in, double *restrict out, int logistic,
+                         double net_max)
+{
+    for (size_t j0 = 0; j0 < n_out; j0 += NN_LANES) {
+        double acc[NN_LANES];
+        for (size_t j = 0; j < NN_LANES; ++j)
+            acc[j] = w[j0 + j];
+        for (size_t i = 0; i < n_in; ++i) {
+            const double x_i = in[i];
+            const double *restrict w_i = w + (1 + i) * n_out + j0;
+            for (size_t j = 0; j < NN_LANES; ++j)
+                acc[j] += w_i[j] * x_i;
+        }
+        if (logistic)
+            for (size_t j = 0; j < NN_LANES; ++j)
+                acc[j] = nn_logistic(acc[j], net_max);
+        for (size_t j = 0; j < NN_LANES; ++j)
+            out[j0 + j] = acc[j];
+    }
+}
+
+/* One layer, NN_BLOCK samples stored neuron-major (in[i*NN_BLOCK + s]): weights outside,
+ * samples inside, so every inner loop is a fixed-length vector operation. */
+NN_INLINE void layer_run_block(size_t n_in, size_t n_out, const double *restrict w,
+                               const double *restrict in, double *restrict out, int logistic,
+                               double net_max)
+{
+    for (size_t j = 0; j < n_out; ++j) {
+        double *restrict o = out + j * NN_BLOCK;
+        const double b = w[j];
+        for (size_t s = 0; s < NN_BLOCK; ++s)
+            o[s] = b;
+        for (size_t i = 0; i < n_in; ++i) {
+            const double w_ij = w[(1 + i) * n_out + j];
+            const double *restrict x = in + i * NN_BLOCK;
+            for (size_t s = 0; s < NN_BLOCK; ++s)
+                o[s] += w_ij * x[s];
+        }
+        if (logistic)
+            for (size_t s = 0; s < NN_BLOCK; ++s)
+                o[s] = nn_logistic(o[s], net_max);
+    }
+}
+
+NN_CLONES double tirenv_nn_run(tirenv_nn *nn, const double x[])
+{
+    double *a = nn->a;
+    for (size_t i = 0; i < nn->n_in; ++i)
+        a[i] = (x[i] - nn->in_mean[i]) * nn->in_inv_std[i];
+    const size_t L = nn->top.n_layers - 1;
+    for (size_t l = 1; l <= L; ++l)
+        layer_run(nn->top.size[l - 1], nn->top.size[l], nn->w + nn->w_off[l],
+                  a + nn->a_off[l - 1], a + nn->a_off[l], l < L, nn->net_max);
+    return nn->out_mean + nn->out_std * a[nn->a_off[L]];
+}
+
+NN_CLONES void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], double y[])
+{
+    const size_t n_in = nn->n_in, L = nn->top.n_layers - 1;
+    double *blk = nn->blk;
+    for (size_t s0 = 0; s0 < n; s0 += NN_BLOCK) {
+        const size_t m = n - s0 < NN_BLOCK ? n - s0 : NN_BLOCK;
+        const double *xs = x + s0 * n_in;
+        /* Transpose and scale into the block; a short last block is padded with zeros. */
+        for (size_t i = 0; i < n_in; ++i) {
+            const double mean = nn->in_mean[i], inv_std = nn->in_inv_std[i];
+            double *u = blk + i * NN_BLOCK;
+            for (size_t s = 0; s < m; ++s)
+                u[s] = (xs[s * n_in + i] - mean) * inv_std;
+            for (size_t s = m; s < NN_BLOCK; ++s)
+                u[s] = 0;
+        }
+        for (size_t l = 1; l <= L; ++l)
+            layer_run_block(nn->top.size[l - 1], nn->top.size[l], nn->w + nn->w_off[l],
+                            blk + nn->a_off[l - 1] * NN_BLOCK,
+                            blk + nn->a_off[l] * NN_BLOCK, l < L, nn->net_max);
+        const double *o = blk + nn->a_off[L] * NN_BLOCK;
+        for (size_t s = 0; s < m; ++s)
+            y[s0 + s] = nn->out_mean + nn->out_std * o[s];
+    }
+}
+
+/* Back-propagation: delta_j = dy/d(net input of j), from the output (identity, scaled:
+ * out_std) down, through the logistic's f' = f(1 - f); dy/dw_ij = delta_j * a_i with a_0 = 1
+ * for the bias. */
+double tirenv_nn_gradient(tirenv_nn *nn, const double x[], double grad[])
+{
+    const double y = tirenv_nn_run(nn, x);
+    const double *a = nn->a;
+    double *d = nn->delta;
+    const size_t L = nn->top.n_layers - 1;
+    d[nn->a_off[L]] = nn->out_std;
+    for (size_t l = L; l >= 1; --l) {
+        const size_t n_in = nn->top.size[l - 1], n_out = nn->top.size[l];
+        const double *d_out = d + nn->a_off[l];
+        const double *a_in = a + nn->a_off[l - 1];
+        const double *w = nn->w + nn->w_off[l];
+        double *g = grad + nn->w_off[l];
+        for (size_t j = 0; j < n_out; ++j)
+            g[j] = d_out[j];
+        for (size_t i = 0; i < n_in; ++i)
+            for (size_t j = 0; j < n_out; ++j)
+                g[(1 + i) * n_out + j] = d_out[j] * a_in[i];
+        if (l > 1) {
+            double *d_in = d + nn->a_off[l - 1];
+            for (size_t i = 0; i < n_in; ++i) {
+                double sum = 0;
+                for (size_t j = 0; j < n_out; ++j)
+                    sum += w[(1 + i) * n_out + j] * d_out[j];
+                d_in[i] = sum * a_in[i] * (1 - a_in[i]);
+            }
+        }
+    }
+    return y;
+}
+
+void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], double J[])
+{
+    for (size_t s = 0; s < n; ++s) {
+        const double ys = tirenv_nn_gradient(nn, x + s * nn->n_in, J + s * nn->n_weights);
+        if (y)
+            y[s] = ys;
+    }
+}
+
+/* The curve in blocks of inputs on the stack, so that it needs no workspace from the caller
+ * and still goes through the vectorised batch path. */
+int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
+                       const double x[], double h[], tirenv_diag *diag)
+{
+    if (nn->n_in != TIRENV_NN_INPUTS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                            "the enveloping model needs %d inputs (x_N, l_c, H, L); this "
+                            "network has %zu", TIRENV_NN_INPUTS, nn->n_in);
+    if (!(R0 > 0) || !(l_c > 0) || !(l_c < 2 * R0) || !(L > 0) || !(H > 0) || !isfinite(R0) ||
+        !isfinite(L) || !isfinite(H))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
+                            "expected R0 > 0, 0 < l_c < 2*R0, L > 0, H > 0 (m); got R0 %g, "
+                            "l_c %g, L %g, H %g", R0, l_c, L, H);
+    const double z_c = sqrt(R0 * R0 - 0.25 * l_c * l_c);  /* chord height, MODEL.md 1 */
+    const double x_0 = tirenv_xN_origin(R0, l_c, L, H);
+    if (!(H < z_c) || !(x_0 < 0))
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle_height_m",
+                            "a %g m high cleat reaches the centre height %g m of a tire of "
+                            "radius %g m at contact length %g m: the enveloping models do not "
+                            "apply", H, z_c, R0, l_c);
+    const double x_N_min = nn->in_lo[TIRENV_NN_X_N];
+    double in[NN_BLOCK * TIRENV_NN_INPUTS];
+    double x_N[NN_BLOCK];
+    for (size_t k0 = 0; k0 < n; k0 += NN_BLOCK) {
+        const size_t m = n - k0 < NN_BLOCK ? n - k0 : NN_BLOCK;
+        for (size_t k = 0; k < m; ++k) {
+            x_N[k] = tirenv_xN(-fabs(x[k0 + k]), x_0);
+            double *u = in + k * TIRENV_NN_INPUTS;
+            u[TIRENV_NN_X_N] = x_N[k];
+            u[TIRENV_NN_CONTACT_LENGTH] = l_c;
+            u[TIRENV_NN_HEIGHT] = H;
+            u[TIRENV_NN_LENGTH] = L;
+        }
+        tirenv_nn_run_batch(nn, m, in, h + k0);
+        for (size_t k = 0; k < m; ++k)
+            if (x_N[k] < x_N_min)
+                h[k0 + k] = 0;
+    }
+    return TIRENV_OK;
+}

@@ -1,0 +1,803 @@
+/* Model files of the empirical model (MODEL.md section 6): the network and how it was
+ * trained, as JSON through jansson. Reading trusts nothing: every field is checked for
+ * presence, type, finiteness and range, and the network's numbers against a checksum, and a
+ * failure names the file and the field. SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * Layout (version 1):
+ *   format "tirenv-nn", version 1, inputs [names], output "h_m", topology [4, 8, 1],
+ *   activation {hidden "logistic", output "identity"},
+ *   scaling {input_mean [], input_std [], output_mean, output_std},
+ *   input_range {min [], max []},
+ *   layers [{bias [n_out], weights [[n_out] per input neuron]}]   (tirenv_nn_weights order),
+ *   checksum "fnv1a64:<16 hex>" over topology, weights, scaling and ranges,
+ *   training (optional) {trainer, seed, restarts, max_epochs, patience,
+ *     settings {backprop {}, rprop {}, lm {}}, data {dir, fingerprint, tire_R0_m},
+ *     result {restart, epochs, best_epoch, best_time_s, total_epochs, wall_time_s, stop},
+ *     errors_m {train {n, rms, max}, control {}, validation {}}} */
+#include <inttypes.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <jansson.h>
+
+#include "tirenv/io.h"
+#include "tirenv/train.h"
+
+/* The largest integer jansson holds. */
+#if JSON_INTEGER_IS_LONG_LONG
+#define NN_JSON_INT_MAX LLONG_MAX
+#else
+#define NN_JSON_INT_MAX LONG_MAX
+#endif
+
+/* ---- The checksum of the network's numbers ---- */
+
+static uint64_t fnv_u64(uint64_t h, uint64_t v)
+{
+    for (int b = 0; b < 8; ++b) {
+        h ^= (v >> (8 * b)) & 0xff;
+        h *= UINT64_C(0x100000001b3);
+    }
+    return h;
+}
+
+static uint64_t fnv_doubles(uint64_t h, size_t n, const double v[])
+{
+    for (size_t k = 0; k < n; ++k) {
+        uint64_t bits;
+        memcpy(&bits, &v[k], sizeof bits);
+        h = fnv_u64(h, bits);
+    }
+    return h;
+}
+
+static uint64_t nn_checksum(const tirenv_nn *nn)
+{
+    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const size_t n_in = tirenv_nn_n_inputs(nn);
+    double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
+        hi[TIRENV_NN_MAX_WIDTH], out[2];
+    tirenv_nn_get_scaling(nn, mean, std, &out[0], &out[1]);
+    tirenv_nn_get_input_range(nn, lo, hi);
+    uint64_t h = fnv_u64(TIRENV_FNV1A64_OFFSET, t->n_layers);
+    for (size_t l = 0; l < t->n_layers; ++l)
+        h = fnv_u64(h, t->size[l]);
+    h = fnv_doubles(h, tirenv_nn_n_weights(nn), tirenv_nn_weights_const(nn));
+    h = fnv_doubles(h, n_in, mean);
+    h = fnv_doubles(h, n_in, std);
+    h = fnv_doubles(h, 2, out);
+    h = fnv_doubles(h, n_in, lo);
+    return fnv_doubles(h, n_in, hi);
+}
+
+static void hash_text(char *buf, size_t n, uint64_t h)
+{
+    snprintf(buf, n, "fnv1a64:%016" PRIx64, h);
+}
+
+static int hash_parse(const char *s, uint64_t *h)
+{
+    if (strncmp(s, "fnv1a64:", 8) != 0 || strlen(s) != 8 + 16)
+        return -1;
+    uint64_t v = 0;
+    for (const char *p = s + 8; *p; ++p) {
+        const int d = *p >= '0' && *p <= '9' ? *p - '0' : *p >= 'a' && *p <= 'f' ? *p - 'a' + 10 : -1;
+        if (d < 0)
+            return -1;
+        v = v << 4 | (uint64_t)d;
+    }
+    *h = v;
+    return 0;
+}
+
+/* ---- Writing ---- */
+
+/* jansson's constructors return NULL on out of memory (and json_real on a non-finite
+ * number); the set_new / append_new calls take the reference and tolerate NULL by failing,
+ * so one flag at the end catches every failure. */
+typedef struct {
+    int failed;
+} wctx;
+
+static json_t *put(wctx *c, json_t *obj, const char *key, json_t *v)
+{
+    if (!v || json_object_set_new(obj, key, v))
+        c->failed = 1;
+    return v;
+}
+
+static json_t *real_array(wctx *c, size_t n, const double v[], size_t stride)
+{
+    json_t *a = json_array();
+    if (!a) {
+        c->failed = 1;
+        return NULL;
+    }
+    for (size_t k = 0; k < n; ++k)
+        if (json_array_append_new(a, json_real(v[k * stride])))
+            c->failed = 1;
+    return a;
+}
+
+static json_t *error_json(wctx *c, const tirenv_train_error *e)
+{
+    json_t *o = json_object();
+    if (!o) {
+        c->failed = 1;
+        return NULL;
+    }
+    put(c, o, "n", json_integer((json_int_t)e->n));
+    put(c, o, "rms", json_real(e->rms));
+    put(c, o, "max", json_real(e->max));
+    return o;
+}
+
+static json_t *training_json(wctx *c, const tirenv_train_record *rec)
+{
+    const tirenv_train_settings *s = &rec->settings;
+    const tirenv_train_report *r = &rec->report;
+    json_t *t = json_object();
+    if (!t) {
+        c->failed = 1;
+        return NULL;
+    }
+    put(c, t, "trainer", json_string(rec->trainer));
+    put(c, t, "seed", json_integer((json_int_t)s->seed));
+    put(c, t, "restarts", json_integer((json_int_t)s->restarts));
+    put(c, t, "max_epochs", json_integer((json_int_t)s->max_epochs));
+    put(c, t, "patience", json_integer((json_int_t)s->patience));
+    json_t *set = put(c, t, "settings", json_object());
+    if (set) {
+        json_t *b = put(c, set, "backprop", json_object());
+        if (b) {
+            put(c, b, "learning_rate", json_real(s->backprop.learning_rate));
+            put(c, b, "momentum", json_real(s->backprop.momentum));
+            put(c, b, "online", json_boolean(s->backprop.online));
+        }
+        json_t *rp = put(c, set, "rprop", json_object());
+        if (rp) {
+            put(c, rp, "delta0", json_real(s->rprop.delta0));
+            put(c, rp, "delta_min", json_real(s->rprop.delta_min));
+            put(c, rp, "delta_max", json_real(s->rprop.delta_max));
+            put(c, rp, "eta_plus", json_real(s->rprop.eta_plus));
+            put(c, rp, "eta_minus", json_real(s->rprop.eta_minus));
+        }
+        json_t *lm = put(c, set, "lm", json_object());
+        if (lm) {
+            put(c, lm, "solver",
+                json_string(s->lm.solver == TIRENV_LM_GSL ? "gsl" : "cholesky"));
+            put(c, lm, "tau", json_real(s->lm.tau));
+            put(c, lm, "mu_max", json_real(s->lm.mu_max));
+        }
+    }
+    json_t *data = put(c, t, "data", json_object());
+    if (data) {
+        char fp[32];
+        hash_text(fp, sizeof fp, rec->fingerprint);
+        put(c, data, "dir", json_string(rec->data));
+        put(c, data, "fingerprint", json_string(fp));
+        put(c, data, "tire_R0_m", json_real(rec->R0));
+    }
+    json_t *res = put(c, t, "result", json_object());
+    if (res) {
+        put(c, res, "restart", json_integer((json_int_t)r->restart));
+        put(c, res, "epochs", json_integer((json_int_t)r->epochs));
+        put(c, res, "best_epoch", json_integer((json_int_t)r->best_epoch));
+        put(c, res, "best_time_s", json_real(r->best_time));
+        put(c, res, "total_epochs", json_integer((json_int_t)r->total_epochs));
+        put(c, res, "wall_time_s", json_real(r->wall_time));
+        put(c, res, "stop", json_string(tirenv_train_stop_name(r->stop)));
+    }
+    json_t *err = put(c, t, "errors_m", json_object());
+    if (err) {
+        put(c, err, "train", error_json(c, &r->error[TIRENV_SPLIT_TRAIN]));
+        put(c, err, "control", error_json(c, &r->error[TIRENV_SPLIT_CONTROL]));
+        put(c, err, "validation", error_json(c, &r->error[TIRENV_SPLIT_VALIDATION]));
+    }
+    return t;
+}
+
+static json_t *nn_json(wctx *c, const tirenv_nn *nn)
+{
+    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const size_t n_in = tirenv_nn_n_inputs(nn);
+    const double *w = tirenv_nn_weights_const(nn);
+    double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
+        hi[TIRENV_NN_MAX_WIDTH], out_mean, out_std;
+    tirenv_nn_get_scaling(nn, mean, std, &out_mean, &out_std);
+    tirenv_nn_get_input_range(nn, lo, hi);
+    json_t *root = json_object();
+    if (!root) {
+        c->failed = 1;
+        return NULL;
+    }
+    put(c, root, "format", json_string(TIRENV_NN_FORMAT));
+    put(c, root, "version", json_integer(TIRENV_NN_FORMAT_VERSION));
+    json_t *names = put(c, root, "inputs", json_array());
+    for (size_t i = 0; names && i < n_in; ++i) {
+        char buf[32];
+        snprintf(buf, sizeof buf, "input_%zu", i);
+        if (json_array_append_new(names, json_string(n_in == TIRENV_NN_INPUTS
+                                                         ? tirenv_nn_input_name(i)
+                                                         : buf)))
+            c->failed = 1;
+    }
+    put(c, root, "output", json_string("h_m"));
+    json_t *top = put(c, root, "topology", json_array());
+    for (size_t l = 0; top && l < t->n_layers; ++l)
+        if (json_array_append_new(top, json_integer((json_int_t)t->size[l])))
+            c->failed = 1;
+    json_t *act = put(c, root, "activation", json_object());
+    if (act) {
+        put(c, act, "hidden", json_string("logistic"));
+        put(c, act, "output", json_string("identity"));
+    }
+    json_t *sc = put(c, root, "scaling", json_object());
+    if (sc) {
+        put(c, sc, "input_mean", real_array(c, n_in, mean, 1));
+        put(c, sc, "input_std", real_array(c, n_in, std, 1));
+        put(c, sc, "output_mean", json_real(out_mean));
+        put(c, sc, "output_std", json_real(out_std));
+    }
+    json_t *range = put(c, root, "input_range", json_object());
+    if (range) {
+        put(c, range, "min", real_array(c, n_in, lo, 1));
+        put(c, range, "max", real_array(c, n_in, hi, 1));
+    }
+    json_t *layers = put(c, root, "layers", json_array());
+    for (size_t l = 1; layers && l < t->n_layers; ++l) {
+        const size_t n_prev = t->size[l - 1], n_out = t->size[l];
+        const double *wl = w + tirenv_nn_weight_index(nn, l, 0, 0);
+        json_t *layer = json_object();
+        if (!layer || json_array_append_new(layers, layer)) {
+            c->failed = 1;
+            break;
+        }
+        put(c, layer, "bias", real_array(c, n_out, wl, 1));
+        json_t *rows = put(c, layer, "weights", json_array());
+        for (size_t i = 0; rows && i < n_prev; ++i)
+            if (json_array_append_new(rows, real_array(c, n_out, wl + (1 + i) * n_out, 1)))
+                c->failed = 1;
+    }
+    char sum[32];
+    hash_text(sum, sizeof sum, nn_checksum(nn));
+    put(c, root, "checksum", json_string(sum));
+    return root;
+}
+
+/* Every number must be finite: JSON has no NaN or infinity, and a model holding one is
+ * broken anyway. The input ranges are finite once fitted from data. */
+static int check_finite(const tirenv_nn *nn, const tirenv_train_record *rec, tirenv_diag *diag,
+                        const char *path)
+{
+    const size_t n_in = tirenv_nn_n_inputs(nn), p = tirenv_nn_n_weights(nn);
+    const double *w = tirenv_nn_weights_const(nn);
+    double lo[TIRENV_NN_MAX_WIDTH], hi[TIRENV_NN_MAX_WIDTH];
+    tirenv_nn_get_input_range(nn, lo, hi);
+    for (size_t k = 0; k < p; ++k)
+        if (!isfinite(w[k]))
+            return tirenv_error(diag, TIRENV_EINVAL, path, 0, "layers",
+                                "weight %zu is %g; only finite weights can be saved", k, w[k]);
+    for (size_t i = 0; i < n_in; ++i)
+        if (!isfinite(lo[i]) || !isfinite(hi[i]))
+            return tirenv_error(diag, TIRENV_EINVAL, path, 0, "input_range",
+                                "input %zu range [%g, %g] is not finite; fit the scaling "
+                                "from data first (tirenv_nn_fit_scaling)", i, lo[i], hi[i]);
+    if (rec) {
+        const tirenv_train_report *r = &rec->report;
+        const double v[] = {rec->R0, r->best_time, r->wall_time,
+                            r->error[0].rms, r->error[0].max, r->error[1].rms,
+                            r->error[1].max, r->error[2].rms, r->error[2].max};
+        for (size_t k = 0; k < sizeof v / sizeof v[0]; ++k)
+            if (!isfinite(v[k]))
+                return tirenv_error(diag, TIRENV_EINVAL, path, 0, "training",
+                                    "a training figure is %g; expected finite numbers", v[k]);
+        if (rec->settings.seed > (unsigned long)NN_JSON_INT_MAX)
+            return tirenv_error(diag, TIRENV_EINVAL, path, 0, "training.seed",
+                                "seed %lu is beyond JSON's integers", rec->settings.seed);
+        const int status = tirenv_train_settings_check(&rec->settings, diag);
+        if (status)
+            return status;
+    }
+    return TIRENV_OK;
+}
+
+int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
+                         tirenv_diag *diag)
+{
+    int status = check_finite(nn, rec, diag, path);
+    if (status)
+        return status;
+    wctx c = {0};
+    json_t *root = nn_json(&c, nn);
+    if (root && rec)
+        put(&c, root, "training", training_json(&c, rec));
+    if (c.failed) {
+        json_decref(root);
+        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "",
+                            "out of memory building the model file");
+    }
+    tirenv_outfile out;
+    if ((status = tirenv_outfile_open(&out, path, diag))) {
+        json_decref(root);
+        return status;
+    }
+    /* 17 significant digits: every double reads back to the same bits. */
+    const int failed = json_dumpf(root, out.fp, JSON_INDENT(1) | JSON_REAL_PRECISION(17) |
+                                                     JSON_PRESERVE_ORDER) ||
+                       fputc('\n', out.fp) == EOF;
+    json_decref(root);
+    if (failed) {
+        tirenv_outfile_abort(&out);
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "write failed");
+    }
+    return tirenv_outfile_commit(&out, diag);
+}
+
+/* ---- Reading ---- */
+
+typedef struct {
+    const char *path;
+    tirenv_diag *diag;
+} rctx;
+
+static int bad(const rctx *c, const char *field, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static int bad(const rctx *c, const char *field, const char *fmt, ...)
+{
+    char msg[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    return tirenv_error(c->diag, TIRENV_EPARSE, c->path, 0, field, "%s", msg);
+}
+
+static const char *json_kind(const json_t *v)
+{
+    switch (json_typeof(v)) {
+    case JSON_OBJECT: return "an object";
+    case JSON_ARRAY: return "an array";
+    case JSON_STRING: return "a string";
+    case JSON_INTEGER: return "an integer";
+    case JSON_REAL: return "a number";
+    case JSON_TRUE:
+    case JSON_FALSE: return "a boolean";
+    case JSON_NULL: return "null";
+    }
+    return "something else";
+}
+
+/* The member key of obj as the given JSON type; field names it in messages. */
+static int member(const rctx *c, const json_t *obj, const char *key, const char *field,
+                  json_type type, json_t **out)
+{
+    json_t *v = json_object_get(obj, key);
+    *out = v;
+    if (!v)
+        return bad(c, field, "missing");
+    const int ok = json_typeof(v) == type ||
+                   (type == JSON_REAL && json_is_integer(v)) ||
+                   (type == JSON_TRUE && json_is_boolean(v));
+    if (!ok) {
+        const char *want = type == JSON_OBJECT   ? "an object"
+                           : type == JSON_ARRAY  ? "an array"
+                           : type == JSON_STRING ? "a string"
+                           : type == JSON_REAL   ? "a number"
+                           : type == JSON_TRUE   ? "true or false"
+                                                 : "an integer";
+        return bad(c, field, "expected %s, found %s", want, json_kind(v));
+    }
+    return TIRENV_OK;
+}
+
+static int get_number(const rctx *c, const json_t *obj, const char *key, const char *field,
+                      double *out)
+{
+    json_t *v;
+    const int status = member(c, obj, key, field, JSON_REAL, &v);
+    if (status)
+        return status;
+    *out = json_number_value(v);
+    return isfinite(*out) ? TIRENV_OK : bad(c, field, "expected a finite number");
+}
+
+static int get_count(const rctx *c, const json_t *obj, const char *key, const char *field,
+                     size_t max, size_t *out)
+{
+    json_t *v;
+    const int status = member(c, obj, key, field, JSON_INTEGER, &v);
+    if (status)
+        return status;
+    const json_int_t i = json_integer_value(v);
+    if (i < 0 || (unsigned long long)i > max)
+        return bad(c, field, "%lld is out of range; expected 0 to %zu", (long long)i, max);
+    *out = (size_t)i;
+    return TIRENV_OK;
+}
+
+static int get_string(const rctx *c, const json_t *obj, const char *key, const char *field,
+                      char *buf, size_t n)
+{
+    json_t *v;
+    const int status = member(c, obj, key, field, JSON_STRING, &v);
+    if (status)
+        return status;
+    if (json_string_length(v) >= n)
+        return bad(c, field, "longer than %zu characters", n - 1);
+    snprintf(buf, n, "%s", json_string_value(v));
+    return TIRENV_OK;
+}
+
+/* An array of exactly n finite numbers. */
+static int number_array(const rctx *c, const json_t *a, const char *field, size_t n,
+                        double out[])
+{
+    if (!json_is_array(a))
+        return bad(c, field, "expected an array, found %s", json_kind(a));
+    if (json_array_size(a) != n)
+        return bad(c, field, "%zu numbers; expected %zu", json_array_size(a), n);
+    for (size_t k = 0; k < n; ++k) {
+        const json_t *v = json_array_get(a, k);
+        if (!json_is_number(v))
+            return bad(c, field, "element %zu: expected a number, found %s", k, json_kind(v));
+        out[k] = json_number_value(v);
+        if (!isfinite(out[k]))
+            return bad(c, field, "element %zu: expected a finite number", k);
+    }
+    return TIRENV_OK;
+}
+
+static int get_number_array(const rctx *c, const json_t *obj, const char *key,
+                            const char *field, size_t n, double out[])
+{
+    json_t *v;
+    const int status = member(c, obj, key, field, JSON_ARRAY, &v);
+    return status ? status : number_array(c, v, field, n, out);
+}
+
+static int read_topology(const rctx *c, const json_t *root, tirenv_nn_topology *t)
+{
+    json_t *top;
+    int status = member(c, root, "topology", "topology", JSON_ARRAY, &top);
+    if (status)
+        return status;
+    const size_t n = json_array_size(top);
+    if (n < 2 || n > TIRENV_NN_MAX_LAYERS)
+        return bad(c, "topology", "%zu layers; expected 2 to %d counting input and output", n,
+                   TIRENV_NN_MAX_LAYERS);
+    t->n_layers = n;
+    for (size_t l = 0; l < n; ++l) {
+        const json_t *v = json_array_get(top, l);
+        if (!json_is_integer(v) || json_integer_value(v) < 1 ||
+            json_integer_value(v) > TIRENV_NN_MAX_WIDTH)
+            return bad(c, "topology", "layer %zu: expected an integer from 1 to %d", l,
+                       TIRENV_NN_MAX_WIDTH);
+        t->size[l] = (size_t)json_integer_value(v);
+    }
+    if (t->size[n - 1] != 1)
+        return bad(c, "topology", "the output layer has %zu neurons; expected 1",
+                   t->size[n - 1]);
+    return TIRENV_OK;
+}
+
+static int read_header(const rctx *c, const json_t *root)
+{
+    char buf[64];
+    json_t *v;
+    int status = get_string(c, root, "format", "format", buf, sizeof buf);
+    if (status)
+        return status;
+    if (strcmp(buf, TIRENV_NN_FORMAT) != 0)
+        return bad(c, "format", "'%s'; expected '%s' (not a tirenv network model file)", buf,
+                   TIRENV_NN_FORMAT);
+    if ((status = member(c, root, "version", "version", JSON_INTEGER, &v)))
+        return status;
+    if (json_integer_value(v) != TIRENV_NN_FORMAT_VERSION)
+        return bad(c, "version", "format version %lld; this build reads version %d only",
+                   (long long)json_integer_value(v), TIRENV_NN_FORMAT_VERSION);
+    return TIRENV_OK;
+}
+
+static int read_inputs(const rctx *c, const json_t *root, size_t n_in)
+{
+    json_t *names, *act;
+    char buf[64];
+    int status = member(c, root, "inputs", "inputs", JSON_ARRAY, &names);
+    if (status)
+        return status;
+    if (json_array_size(names) != n_in)
+        return bad(c, "inputs", "%zu names for %zu input neurons", json_array_size(names),
+                   n_in);
+    for (size_t i = 0; i < n_in; ++i) {
+        const json_t *v = json_array_get(names, i);
+        if (!json_is_string(v))
+            return bad(c, "inputs", "element %zu: expected a string", i);
+        if (n_in == TIRENV_NN_INPUTS && strcmp(json_string_value(v), tirenv_nn_input_name(i)))
+            return bad(c, "inputs", "input %zu is '%s'; expected '%s' (x_N, l_c, H, L in the "
+                       "paper's order)", i, json_string_value(v), tirenv_nn_input_name(i));
+    }
+    if ((status = get_string(c, root, "output", "output", buf, sizeof buf)))
+        return status;
+    if (strcmp(buf, "h_m") != 0)
+        return bad(c, "output", "'%s'; expected 'h_m'", buf);
+    if ((status = member(c, root, "activation", "activation", JSON_OBJECT, &act)) ||
+        (status = get_string(c, act, "hidden", "activation.hidden", buf, sizeof buf)))
+        return status;
+    if (strcmp(buf, "logistic") != 0)
+        return bad(c, "activation.hidden", "'%s'; only 'logistic' is supported", buf);
+    if ((status = get_string(c, act, "output", "activation.output", buf, sizeof buf)))
+        return status;
+    if (strcmp(buf, "identity") != 0)
+        return bad(c, "activation.output", "'%s'; only 'identity' is supported", buf);
+    return TIRENV_OK;
+}
+
+static int read_network(const rctx *c, const json_t *root, tirenv_nn *nn)
+{
+    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const size_t n_in = tirenv_nn_n_inputs(nn);
+    double *w = tirenv_nn_weights(nn);
+    double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
+        hi[TIRENV_NN_MAX_WIDTH], out_mean, out_std;
+    json_t *sc, *range, *layers;
+    int status;
+    if ((status = member(c, root, "scaling", "scaling", JSON_OBJECT, &sc)) ||
+        (status = get_number_array(c, sc, "input_mean", "scaling.input_mean", n_in, mean)) ||
+        (status = get_number_array(c, sc, "input_std", "scaling.input_std", n_in, std)) ||
+        (status = get_number(c, sc, "output_mean", "scaling.output_mean", &out_mean)) ||
+        (status = get_number(c, sc, "output_std", "scaling.output_std", &out_std)))
+        return status;
+    for (size_t i = 0; i < n_in; ++i)
+        if (!(std[i] > 0))
+            return bad(c, "scaling.input_std", "element %zu is %g; expected > 0", i, std[i]);
+    if (!(out_std > 0))
+        return bad(c, "scaling.output_std", "%g; expected > 0", out_std);
+    if ((status = member(c, root, "input_range", "input_range", JSON_OBJECT, &range)) ||
+        (status = get_number_array(c, range, "min", "input_range.min", n_in, lo)) ||
+        (status = get_number_array(c, range, "max", "input_range.max", n_in, hi)))
+        return status;
+    for (size_t i = 0; i < n_in; ++i)
+        if (!(lo[i] <= hi[i]))
+            return bad(c, "input_range", "input %zu: min %g > max %g", i, lo[i], hi[i]);
+    tirenv_nn_set_scaling(nn, mean, std, out_mean, out_std, NULL);
+    tirenv_nn_set_input_range(nn, lo, hi, NULL);
+
+    if ((status = member(c, root, "layers", "layers", JSON_ARRAY, &layers)))
+        return status;
+    if (json_array_size(layers) != t->n_layers - 1)
+        return bad(c, "layers", "%zu layers of weights; the topology needs %zu",
+                   json_array_size(layers), t->n_layers - 1);
+    for (size_t l = 1; l < t->n_layers; ++l) {
+        const size_t n_prev = t->size[l - 1], n_out = t->size[l];
+        double *wl = w + tirenv_nn_weight_index(nn, l, 0, 0);
+        const json_t *layer = json_array_get(layers, l - 1);
+        char field[64];
+        json_t *rows;
+        snprintf(field, sizeof field, "layers[%zu]", l - 1);
+        if (!json_is_object(layer))
+            return bad(c, field, "expected an object, found %s", json_kind(layer));
+        snprintf(field, sizeof field, "layers[%zu].bias", l - 1);
+        if ((status = get_number_array(c, layer, "bias", field, n_out, wl)))
+            return status;
+        snprintf(field, sizeof field, "layers[%zu].weights", l - 1);
+        if ((status = member(c, layer, "weights", field, JSON_ARRAY, &rows)))
+            return status;
+        if (json_array_size(rows) != n_prev)
+            return bad(c, field, "%zu rows; expected one per input neuron, %zu",
+                       json_array_size(rows), n_prev);
+        for (size_t i = 0; i < n_prev; ++i) {
+            snprintf(field, sizeof field, "layers[%zu].weights[%zu]", l - 1, i);
+            if ((status = number_array(c, json_array_get(rows, i), field, n_out,
+                                       wl + (1 + i) * n_out)))
+                return status;
+        }
+    }
+    char sum[64];
+    uint64_t h;
+    if ((status = get_string(c, root, "checksum", "checksum", sum, sizeof sum)))
+        return status;
+    if (hash_parse(sum, &h))
+        return bad(c, "checksum", "'%s'; expected 'fnv1a64:' and 16 lower-case hex digits", sum);
+    if (h != nn_checksum(nn)) {
+        char want[32];
+        hash_text(want, sizeof want, nn_checksum(nn));
+        return bad(c, "checksum", "the network's numbers give %s, the file says %s: the file "
+                   "was altered or corrupted", want, sum);
+    }
+    return TIRENV_OK;
+}
+
+static int read_error(const rctx *c, const json_t *errs, const char *key,
+                      tirenv_train_error *e)
+{
+    char f[64];
+    json_t *o;
+    snprintf(f, sizeof f, "training.errors_m.%s", key);
+    int status = member(c, errs, key, f, JSON_OBJECT, &o);
+    if (status)
+        return status;
+    snprintf(f, sizeof f, "training.errors_m.%s.n", key);
+    if ((status = get_count(c, o, "n", f, SIZE_MAX >> 8, &e->n)))
+        return status;
+    snprintf(f, sizeof f, "training.errors_m.%s.rms", key);
+    if ((status = get_number(c, o, "rms", f, &e->rms)))
+        return status;
+    if (e->rms < 0)
+        return bad(c, f, "%g; expected >= 0", e->rms);
+    snprintf(f, sizeof f, "training.errors_m.%s.max", key);
+    if ((status = get_number(c, o, "max", f, &e->max)))
+        return status;
+    if (e->max < 0)
+        return bad(c, f, "%g; expected >= 0", e->max);
+    return TIRENV_OK;
+}
+
+static int read_training(const rctx *c, const json_t *root, const tirenv_nn *nn,
+                         tirenv_train_record *rec)
+{
+    json_t *t = json_object_get(root, "training");
+    memset(rec, 0, sizeof *rec);
+    rec->settings = tirenv_train_default(NULL);
+    rec->settings.topology = *tirenv_nn_get_topology(nn);
+    if (!t)
+        return TIRENV_OK;  /* a network without its training record: allowed */
+    if (!json_is_object(t))
+        return bad(c, "training", "expected an object, found %s", json_kind(t));
+    tirenv_train_settings *s = &rec->settings;
+    tirenv_train_report *r = &rec->report;
+    json_t *set, *b, *rp, *lm, *data, *res, *errs, *v;
+    char buf[64];
+    size_t seed;
+    const size_t big = SIZE_MAX >> 8;
+    int status;
+    if ((status = get_string(c, t, "trainer", "training.trainer", rec->trainer,
+                             sizeof rec->trainer)))
+        return status;
+    if (!tirenv_trainer_type_find(rec->trainer))
+        return bad(c, "training.trainer", "unknown trainer '%s'; expected backprop, rprop or "
+                   "lm", rec->trainer);
+    if ((status = get_count(c, t, "seed", "training.seed", (size_t)NN_JSON_INT_MAX, &seed)) ||
+        (status = get_count(c, t, "restarts", "training.restarts", big, &s->restarts)) ||
+        (status = get_count(c, t, "max_epochs", "training.max_epochs", big, &s->max_epochs)) ||
+        (status = get_count(c, t, "patience", "training.patience", big, &s->patience)))
+        return status;
+    s->seed = (unsigned long)seed;
+    if ((status = member(c, t, "settings", "training.settings", JSON_OBJECT, &set)) ||
+        (status = member(c, set, "backprop", "training.settings.backprop", JSON_OBJECT, &b)) ||
+        (status = get_number(c, b, "learning_rate",
+                             "training.settings.backprop.learning_rate",
+                             &s->backprop.learning_rate)) ||
+        (status = get_number(c, b, "momentum", "training.settings.backprop.momentum",
+                             &s->backprop.momentum)) ||
+        (status = member(c, b, "online", "training.settings.backprop.online", JSON_TRUE, &v)))
+        return status;
+    s->backprop.online = json_is_true(v);
+    if ((status = member(c, set, "rprop", "training.settings.rprop", JSON_OBJECT, &rp)) ||
+        (status = get_number(c, rp, "delta0", "training.settings.rprop.delta0",
+                             &s->rprop.delta0)) ||
+        (status = get_number(c, rp, "delta_min", "training.settings.rprop.delta_min",
+                             &s->rprop.delta_min)) ||
+        (status = get_number(c, rp, "delta_max", "training.settings.rprop.delta_max",
+                             &s->rprop.delta_max)) ||
+        (status = get_number(c, rp, "eta_plus", "training.settings.rprop.eta_plus",
+                             &s->rprop.eta_plus)) ||
+        (status = get_number(c, rp, "eta_minus", "training.settings.rprop.eta_minus",
+                             &s->rprop.eta_minus)) ||
+        (status = member(c, set, "lm", "training.settings.lm", JSON_OBJECT, &lm)) ||
+        (status = get_string(c, lm, "solver", "training.settings.lm.solver", buf, sizeof buf)))
+        return status;
+    if (strcmp(buf, "cholesky") == 0)
+        s->lm.solver = TIRENV_LM_CHOLESKY;
+    else if (strcmp(buf, "gsl") == 0)
+        s->lm.solver = TIRENV_LM_GSL;
+    else
+        return bad(c, "training.settings.lm.solver", "'%s'; expected 'cholesky' or 'gsl'", buf);
+    if ((status = get_number(c, lm, "tau", "training.settings.lm.tau", &s->lm.tau)) ||
+        (status = get_number(c, lm, "mu_max", "training.settings.lm.mu_max", &s->lm.mu_max)))
+        return status;
+    tirenv_diag why;
+    tirenv_diag_clear(&why);
+    if (tirenv_train_settings_check(s, &why))
+        return bad(c, "training.settings", "%s: %s", why.field, why.message);
+
+    if ((status = member(c, t, "data", "training.data", JSON_OBJECT, &data)) ||
+        (status = get_string(c, data, "dir", "training.data.dir", rec->data,
+                             sizeof rec->data)) ||
+        (status = get_string(c, data, "fingerprint", "training.data.fingerprint", buf,
+                             sizeof buf)))
+        return status;
+    if (hash_parse(buf, &rec->fingerprint))
+        return bad(c, "training.data.fingerprint",
+                   "'%s'; expected 'fnv1a64:' and 16 lower-case hex digits", buf);
+    if ((status = get_number(c, data, "tire_R0_m", "training.data.tire_R0_m", &rec->R0)))
+        return status;
+    if (rec->R0 < 0)
+        return bad(c, "training.data.tire_R0_m", "%g; expected >= 0 (0: unknown)", rec->R0);
+
+    if ((status = member(c, t, "result", "training.result", JSON_OBJECT, &res)) ||
+        (status = get_count(c, res, "restart", "training.result.restart", big, &r->restart)) ||
+        (status = get_count(c, res, "epochs", "training.result.epochs", big, &r->epochs)) ||
+        (status = get_count(c, res, "best_epoch", "training.result.best_epoch", big,
+                            &r->best_epoch)) ||
+        (status = get_number(c, res, "best_time_s", "training.result.best_time_s",
+                             &r->best_time)) ||
+        (status = get_count(c, res, "total_epochs", "training.result.total_epochs", big,
+                            &r->total_epochs)) ||
+        (status = get_number(c, res, "wall_time_s", "training.result.wall_time_s",
+                             &r->wall_time)) ||
+        (status = get_string(c, res, "stop", "training.result.stop", buf, sizeof buf)))
+        return status;
+    if (r->best_epoch > r->epochs || r->epochs > r->total_epochs ||
+        (s->restarts && r->restart >= s->restarts) || r->best_time < 0 || r->wall_time < 0)
+        return bad(c, "training.result", "inconsistent: restart %zu of %zu, best epoch %zu of "
+                   "%zu, %zu in all, times %g and %g s", r->restart, s->restarts,
+                   r->best_epoch, r->epochs, r->total_epochs, r->best_time, r->wall_time);
+    int found = 0;
+    for (int k = TIRENV_TRAIN_MAX_EPOCHS; k <= TIRENV_TRAIN_CANCELLED; ++k)
+        if (strcmp(buf, tirenv_train_stop_name((tirenv_train_stop)k)) == 0) {
+            r->stop = (tirenv_train_stop)k;
+            found = 1;
+        }
+    if (!found)
+        return bad(c, "training.result.stop", "'%s'; expected max-epochs, patience, converged, "
+                   "diverged or cancelled", buf);
+    if ((status = member(c, t, "errors_m", "training.errors_m", JSON_OBJECT, &errs)) ||
+        (status = read_error(c, errs, "train", &r->error[TIRENV_SPLIT_TRAIN])) ||
+        (status = read_error(c, errs, "control", &r->error[TIRENV_SPLIT_CONTROL])) ||
+        (status = read_error(c, errs, "validation", &r->error[TIRENV_SPLIT_VALIDATION])))
+        return status;
+    return TIRENV_OK;
+}
+
+int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
+                        tirenv_diag *diag)
+{
+    *out = NULL;
+    const rctx c = {.path = path, .diag = diag};
+    json_error_t err;
+    json_t *root = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
+    if (!root) {
+        if (json_error_code(&err) == json_error_cannot_open_file)
+            return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", err.text);
+        const int status = tirenv_error(diag, TIRENV_EPARSE, path,
+                                        err.line > 0 ? (size_t)err.line : 0, "",
+                                        "not valid JSON (truncated or corrupted?): %s",
+                                        err.text);
+        if (diag && err.line > 0 && err.column > 0)
+            diag->column = (size_t)err.column;
+        return status;
+    }
+    int status = TIRENV_OK;
+    tirenv_nn_topology t;
+    tirenv_nn *nn = NULL;
+    if (!json_is_object(root))
+        status = bad(&c, "", "expected a JSON object at the top, found %s", json_kind(root));
+    if (!status)
+        status = read_header(&c, root);
+    if (!status)
+        status = read_topology(&c, root, &t);
+    if (!status)
+        status = read_inputs(&c, root, t.size[0]);
+    if (!status && !(nn = tirenv_nn_alloc(&t)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    if (!status)
+        status = read_network(&c, root, nn);
+    tirenv_train_record scratch;
+    if (!status)
+        status = read_training(&c, root, nn, rec ? rec : &scratch);
+    json_decref(root);
+    if (status) {
+        tirenv_nn_free(nn);
+        return status;
+    }
+    *out = nn;
+    return TIRENV_OK;
+}

@@ -1,0 +1,339 @@
+/* Levenberg-Marquardt on the full Jacobian of the residuals (Hagan and Menhaj, "Training
+ * feedforward networks with the Marquardt algorithm", 1994): the network is small (49
+ * weights), so the p x p normal equations cost nothing next to the Jacobian itself.
+ *
+ * Two solvers. The default forms J^T J and J^T r a block of rows at a time (so J is never
+ * stored whole), solves (J^T J + mu I) dw = -J^T r by Cholesky, and updates mu as MATLAB's
+ * trainlm does: divide after a step that lowers the error, multiply and re-solve (J kept)
+ * until one does. The other hands the same residuals to GSL's gsl_multifit_nlinear trust
+ * region (LM steps, More scaling, Cholesky), iterated by hand so that the driver can stop
+ * early between iterations. Both take one forward pass per trial step and one Jacobian per
+ * accepted step; the measured difference (bench/bench_nn.c, "lm" vs "lm-gsl") is GSL's
+ * per-iteration overhead and its more cautious trust-region radius, which costs more
+ * iterations on this problem. SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_multifit_nlinear.h>
+
+#include "train/train_impl.h"
+
+/* Rows of J formed at a time: 256 x 56 doubles (112 KiB) stay in L2. A multiple of 4, the
+ * rows lm_accumulate takes together. */
+enum { LM_ROWS = 256 };
+
+/* Columns of J^T J summed together: one AVX-512 register of doubles. Rows of J and of J^T J
+ * are padded to a multiple of it. */
+enum { LM_LANES = 8 };
+
+/* As in nn/network.c: the kernel below is compiled per instruction set and picked at load
+ * time; ISO C mode keeps FMA contraction off, so every clone sums the same way. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
+    !defined(TIRENV_NN_NO_CLONES)
+#define LM_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define LM_CLONES
+#endif
+
+typedef struct {
+    tirenv_lm_settings set;
+    size_t n, p;
+    size_t P;              /* p rounded up to LM_LANES: the row stride of Jc and A */
+    double mu, nu;         /* damping and its growth factor (Nielsen); mu = 0: not started */
+    double *A;             /* p x P: J^T J, lower triangle */
+    double *b;             /* P: J^T r */
+    gsl_matrix *M;         /* p x p: A + mu I, then its Cholesky factor */
+    gsl_vector *g;         /* p: J^T r */
+    gsl_vector *dw;        /* p: the step */
+    double *w_old;         /* p */
+    double *Jc;            /* LM_ROWS x P: a block of rows of J, zero-padded */
+    double *yc;            /* LM_ROWS: outputs, then residuals, of the block */
+    double *y;             /* n: outputs of a trial step */
+    /* The GSL solver */
+    gsl_multifit_nlinear_workspace *work;
+    gsl_multifit_nlinear_fdf fdf;
+    gsl_vector *x0;        /* p */
+    tirenv_nn *nn;         /* the network and samples the callbacks evaluate */
+    const tirenv_samples *train;
+} lm_state;
+
+static void lm_free(void *state)
+{
+    lm_state *st = state;
+    if (!st)
+        return;
+    free(st->A);
+    free(st->b);
+    gsl_matrix_free(st->M);
+    gsl_vector_free(st->g);
+    gsl_vector_free(st->dw);
+    free(st->w_old);
+    free(st->Jc);
+    free(st->yc);
+    free(st->y);
+    if (st->work)
+        gsl_multifit_nlinear_free(st->work);
+    gsl_vector_free(st->x0);
+    free(st);
+}
+
+/* The GSL callbacks: residuals r_s = (y_s - t_s)/out_std and their Jacobian at weights x. */
+static void lm_gsl_load(lm_state *st, const gsl_vector *x)
+{
+    double *w = tirenv_nn_weights(st->nn);
+    for (size_t j = 0; j < st->p; ++j)
+        w[j] = gsl_vector_get(x, j);
+}
+
+static double lm_inv_std(const tirenv_nn *nn)
+{
+    double out_std;
+    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
+    return 1.0 / out_std;
+}
+
+static int lm_gsl_f(const gsl_vector *x, void *params, gsl_vector *f)
+{
+    lm_state *st = params;
+    lm_gsl_load(st, x);
+    const double inv_std = lm_inv_std(st->nn);
+    tirenv_nn_run_batch(st->nn, st->n, st->train->x, st->y);
+    for (size_t s = 0; s < st->n; ++s)
+        gsl_vector_set(f, s, (st->y[s] - st->train->y[s]) * inv_std);
+    return GSL_SUCCESS;
+}
+
+static int lm_gsl_df(const gsl_vector *x, void *params, gsl_matrix *J)
+{
+    lm_state *st = params;
+    lm_gsl_load(st, x);
+    const double inv_std = lm_inv_std(st->nn);
+    for (size_t s = 0; s < st->n; ++s) {
+        gsl_vector_view row = gsl_matrix_row(J, s);
+        tirenv_nn_gradient(st->nn, st->train->x + s * st->train->n_in, st->Jc);
+        for (size_t j = 0; j < st->p; ++j)
+            gsl_vector_set(&row.vector, j, st->Jc[j] * inv_std);
+    }
+    return GSL_SUCCESS;
+}
+
+static int lm_alloc(void **state, const tirenv_nn *nn, const tirenv_samples *train,
+                    const tirenv_train_settings *s, tirenv_diag *diag)
+{
+    lm_state *st = calloc(1, sizeof *st);
+    *state = st;
+    if (!st)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    st->set = s->lm;
+    st->n = train->n;
+    st->p = tirenv_nn_n_weights(nn);
+    const size_t n = st->n, p = st->p;
+    st->P = (p + LM_LANES - 1) / LM_LANES * LM_LANES;
+    st->A = calloc(p * st->P, sizeof(double));
+    st->b = calloc(st->P, sizeof(double));
+    st->M = gsl_matrix_alloc(p, p);
+    st->g = gsl_vector_alloc(p);
+    st->dw = gsl_vector_alloc(p);
+    st->w_old = malloc(p * sizeof(double));
+    st->Jc = calloc(LM_ROWS * st->P, sizeof(double));  /* the padding stays 0 */
+    st->yc = calloc(LM_ROWS, sizeof(double));
+    st->y = malloc(n * sizeof(double));
+    if (!st->A || !st->b || !st->M || !st->g || !st->dw || !st->w_old || !st->Jc || !st->yc ||
+        !st->y) {
+        lm_free(st);
+        *state = NULL;
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
+    if (st->set.solver == TIRENV_LM_GSL) {
+        if (n < p) {
+            lm_free(st);
+            *state = NULL;
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "lm",
+                                "GSL's solver needs at least as many samples as weights: %zu "
+                                "samples, %zu weights", n, p);
+        }
+        gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
+        params.trs = gsl_multifit_nlinear_trs_lm;
+        params.solver = gsl_multifit_nlinear_solver_cholesky;
+        params.scale = gsl_multifit_nlinear_scale_levenberg;
+        st->work = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p);
+        st->x0 = gsl_vector_alloc(p);
+        if (!st->work || !st->x0) {
+            lm_free(st);
+            *state = NULL;
+            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        }
+        st->fdf = (gsl_multifit_nlinear_fdf){.f = lm_gsl_f, .df = lm_gsl_df, .fvv = NULL,
+                                             .n = n, .p = p, .params = st};
+    }
+    return TIRENV_OK;
+}
+
+static int lm_set(void *state, tirenv_nn *nn, const tirenv_samples *train, tirenv_diag *diag)
+{
+    lm_state *st = state;
+    st->mu = 0;
+    st->nu = 2;
+    st->nn = nn;
+    st->train = train;
+    if (st->set.solver != TIRENV_LM_GSL)
+        return TIRENV_OK;
+    const double *w = tirenv_nn_weights(nn);
+    for (size_t j = 0; j < st->p; ++j)
+        gsl_vector_set(st->x0, j, w[j]);
+    const int status = gsl_multifit_nlinear_init(st->x0, &st->fdf, st->work);
+    if (status)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "lm",
+                            "gsl_multifit_nlinear_init: %s", gsl_strerror(status));
+    return TIRENV_OK;
+}
+
+/* A += sum_k g_k g_k^T and b += sum_k r_k g_k over m rows g_k of J (stride P, zero columns
+ * past p, and zero rows up to a multiple of 4). Four rows at a time, so each row of A is
+ * loaded and stored once per four; LM_LANES columns at a time, so the lower triangle is
+ * rounded up to whole groups and a few entries above the diagonal are summed too (never
+ * read). This replaces gslcblas's reference dsyrk, which took 70 % of an LM run. */
+LM_CLONES static void lm_accumulate(size_t m, size_t p, size_t P, const double *restrict J,
+                                    const double *restrict r, double *restrict A,
+                                    double *restrict b)
+{
+    for (size_t k = 0; k < m; k += 4) {
+        const double *restrict g0 = J + k * P;
+        const double *restrict g1 = g0 + P;
+        const double *restrict g2 = g1 + P;
+        const double *restrict g3 = g2 + P;
+        for (size_t i = 0; i < p; ++i) {
+            const double c0 = g0[i], c1 = g1[i], c2 = g2[i], c3 = g3[i];
+            double *restrict a = A + i * P;
+            for (size_t j0 = 0; j0 <= i; j0 += LM_LANES)
+                for (size_t j = j0; j < j0 + LM_LANES; ++j)
+                    a[j] += c0 * g0[j] + c1 * g1[j] + c2 * g2[j] + c3 * g3[j];
+        }
+        const double r0 = r[k], r1 = r[k + 1], r2 = r[k + 2], r3 = r[k + 3];
+        for (size_t j0 = 0; j0 < P; j0 += LM_LANES)
+            for (size_t j = j0; j < j0 + LM_LANES; ++j)
+                b[j] += r0 * g0[j] + r1 * g1[j] + r2 * g2[j] + r3 * g3[j];
+    }
+}
+
+/* A = J^T J (lower triangle), b = J^T r, returns r.r, forming LM_ROWS rows of J at a time. */
+static double lm_normal_equations(lm_state *st, tirenv_nn *nn, const tirenv_samples *train)
+{
+    const size_t p = st->p, P = st->P, n_in = train->n_in;
+    const double inv_std = lm_inv_std(nn);
+    double sse = 0;
+    memset(st->A, 0, p * P * sizeof(double));
+    memset(st->b, 0, P * sizeof(double));
+    for (size_t k0 = 0; k0 < train->n; k0 += LM_ROWS) {
+        const size_t m = train->n - k0 < LM_ROWS ? train->n - k0 : LM_ROWS;
+        const size_t m4 = (m + 3) / 4 * 4;
+        for (size_t k = 0; k < m; ++k) {
+            double *g = st->Jc + k * P;
+            const double y = tirenv_nn_gradient(nn, train->x + (k0 + k) * n_in, g);
+            const double r = (y - train->y[k0 + k]) * inv_std;
+            st->yc[k] = r;
+            sse += r * r;
+            for (size_t j = 0; j < p; ++j)
+                g[j] *= inv_std;
+        }
+        for (size_t k = m; k < m4; ++k) {  /* the zero rows of a short last block */
+            memset(st->Jc + k * P, 0, P * sizeof(double));
+            st->yc[k] = 0;
+        }
+        lm_accumulate(m4, p, P, st->Jc, st->yc, st->A, st->b);
+    }
+    for (size_t j = 0; j < p; ++j)
+        gsl_vector_set(st->g, j, st->b[j]);
+    return sse;
+}
+
+/* Nielsen's damping update (H. B. Nielsen, "Damping parameter in Marquardt's method", 1999;
+ * GSL's trs_lm uses the same): after a step that lowers the error, by a gain ratio rho of
+ * actual to predicted reduction, mu *= max(1/3, 1 - (2 rho - 1)^3); after one that does not,
+ * mu *= nu, nu *= 2. With the Jacobian kept, a rejected step costs one Cholesky (p^3/3 = 4e4
+ * flops) and one forward pass. */
+static int lm_epoch_cholesky(lm_state *st, tirenv_nn *nn, const tirenv_samples *train,
+                             double *train_sse)
+{
+    double *w = tirenv_nn_weights(nn);
+    const size_t p = st->p;
+    const double sse = lm_normal_equations(st, nn, train);
+    double diag_max = 0;
+    for (size_t j = 0; j < p; ++j)
+        diag_max = fmax(diag_max, st->A[j * st->P + j]);
+    if (!(diag_max > 0))
+        diag_max = 1;  /* J = 0: every neuron saturated; any positive scale will do */
+    if (st->mu == 0)  /* a new restart: Nielsen's start */
+        st->mu = st->set.tau * diag_max;
+    *train_sse = sse;
+    memcpy(st->w_old, w, p * sizeof(double));
+    for (;;) {
+        for (size_t i = 0; i < p; ++i) {  /* decomp1 reads the lower triangle only */
+            double *row = gsl_matrix_ptr(st->M, i, 0);
+            memcpy(row, st->A + i * st->P, (i + 1) * sizeof(double));
+            row[i] += st->mu;
+        }
+        /* Not positive definite (J^T J singular to round-off and mu tiny): damp more. */
+        if (gsl_linalg_cholesky_decomp1(st->M) == GSL_SUCCESS &&
+            gsl_linalg_cholesky_solve(st->M, st->g, st->dw) == GSL_SUCCESS) {
+            /* dw solves (A + mu I) dw = g; the step is -dw. Predicted reduction of sse:
+             * dw.(mu dw + g) (twice that of E = sse/2). */
+            double predicted = 0;
+            for (size_t j = 0; j < p; ++j) {
+                const double d = gsl_vector_get(st->dw, j);
+                w[j] = st->w_old[j] - d;
+                predicted += d * (st->mu * d + gsl_vector_get(st->g, j));
+            }
+            const double sse_new = tirenv_train__sse(nn, train, st->y);
+            if (sse_new < sse) {
+                const double rho = predicted > 0 ? (sse - sse_new) / predicted : 1;
+                const double c = 2 * rho - 1;
+                st->mu *= fmax(1.0 / 3.0, 1 - c * c * c);
+                st->nu = 2;
+                return TIRENV_ECONTINUE;
+            }
+            memcpy(w, st->w_old, p * sizeof(double));
+        }
+        st->mu *= st->nu;
+        st->nu *= 2;
+        if (st->mu > st->set.mu_max * diag_max)
+            return TIRENV_OK;  /* no step lowers the error: a minimum, to round-off */
+    }
+}
+
+static int lm_epoch_gsl(lm_state *st, tirenv_nn *nn, double *train_sse, tirenv_diag *diag)
+{
+    const int status = gsl_multifit_nlinear_iterate(st->work);
+    /* The callbacks leave the weights of the last trial in nn; the accepted point is GSL's. */
+    lm_gsl_load(st, gsl_multifit_nlinear_position(st->work));
+    double norm = gsl_blas_dnrm2(gsl_multifit_nlinear_residual(st->work));
+    *train_sse = norm * norm;
+    (void)nn;
+    if (status == GSL_ENOPROG)
+        return TIRENV_OK;  /* no step lowers the error */
+    if (status)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "lm",
+                            "gsl_multifit_nlinear_iterate: %s", gsl_strerror(status));
+    return TIRENV_ECONTINUE;
+}
+
+static int lm_epoch(void *state, tirenv_nn *nn, const tirenv_samples *train, gsl_rng *rng,
+                    double *train_sse, tirenv_diag *diag)
+{
+    lm_state *st = state;
+    (void)rng;
+    if (st->set.solver == TIRENV_LM_GSL)
+        return lm_epoch_gsl(st, nn, train_sse, diag);
+    return lm_epoch_cholesky(st, nn, train, train_sse);
+}
+
+const struct tirenv_trainer_type tirenv_train__lm_type = {
+    .name = "lm",
+    .alloc = lm_alloc,
+    .set = lm_set,
+    .epoch = lm_epoch,
+    .free = lm_free,
+};

@@ -1,0 +1,425 @@
+/* The training driver: trainer lookup and defaults, seeded restarts, early stopping on the
+ * control set, errors per split, and the samples of a data set (MODEL.md section 6).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <gsl/gsl_errno.h>
+
+#include "train/train_impl.h"
+
+extern const struct tirenv_trainer_type tirenv_train__backprop_type;
+extern const struct tirenv_trainer_type tirenv_train__rprop_type;
+extern const struct tirenv_trainer_type tirenv_train__lm_type;
+
+const tirenv_trainer_type *tirenv_trainer_backprop = &tirenv_train__backprop_type;
+const tirenv_trainer_type *tirenv_trainer_rprop = &tirenv_train__rprop_type;
+const tirenv_trainer_type *tirenv_trainer_lm = &tirenv_train__lm_type;
+
+const tirenv_trainer_type *const *tirenv_trainer_types(void)
+{
+    static const tirenv_trainer_type *const list[] = {
+        &tirenv_train__backprop_type, &tirenv_train__rprop_type, &tirenv_train__lm_type, NULL};
+    return list;
+}
+
+const tirenv_trainer_type *tirenv_trainer_type_find(const char *name)
+{
+    for (const tirenv_trainer_type *const *t = tirenv_trainer_types(); *t; ++t)
+        if (name && strcmp((*t)->name, name) == 0)
+            return *t;
+    return NULL;
+}
+
+const char *tirenv_trainer_type_name(const tirenv_trainer_type *type) { return type->name; }
+
+/* The defaults are measured choices on the synthetic 28-case set of bench/bench_nn.c, not
+ * tuned to the digit: online back-propagation diverges above a learning rate of about 0.05
+ * with momentum 0.9; rprop's and lm's constants are their authors' (Igel and Huesken;
+ * Nielsen, as in GSL). The patience is what lets the control error recover from a plateau. */
+tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type)
+{
+    tirenv_train_settings s = {
+        .topology = tirenv_nn_topology_default(),
+        .seed = 1,
+        .restarts = 4,
+        .max_epochs = 1000,
+        .patience = 30,
+        .backprop = {.learning_rate = 0.01, .momentum = 0.9, .online = 1},
+        .rprop = {.delta0 = 0.1, .delta_min = 1e-6, .delta_max = 50, .eta_plus = 1.2,
+                  .eta_minus = 0.5},
+        .lm = {.solver = TIRENV_LM_CHOLESKY, .tau = 1e-3, .mu_max = 1e10},
+        .progress = NULL,
+        .progress_data = NULL,
+    };
+    if (type == tirenv_trainer_backprop) {
+        s.restarts = 1;
+        s.max_epochs = 200000;  /* the paper's "about 2e5 training cycles" (Table 2) */
+        s.patience = 0;
+    } else if (type == tirenv_trainer_rprop) {
+        s.max_epochs = 5000;
+        s.patience = 500;
+    }
+    return s;
+}
+
+const char *tirenv_train_stop_name(tirenv_train_stop stop)
+{
+    switch (stop) {
+    case TIRENV_TRAIN_MAX_EPOCHS: return "max-epochs";
+    case TIRENV_TRAIN_PATIENCE: return "patience";
+    case TIRENV_TRAIN_CONVERGED: return "converged";
+    case TIRENV_TRAIN_DIVERGED: return "diverged";
+    case TIRENV_TRAIN_CANCELLED: return "cancelled";
+    }
+    return "unknown";
+}
+
+static double out_std_of(const tirenv_nn *nn)
+{
+    double out_std;
+    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
+    return out_std;
+}
+
+double tirenv_train__gradient(tirenv_nn *nn, const tirenv_samples *s, double g[],
+                              double grad[])
+{
+    const size_t p = tirenv_nn_n_weights(nn);
+    const double inv_std = 1.0 / out_std_of(nn);
+    double sse = 0;
+    memset(g, 0, p * sizeof g[0]);
+    for (size_t k = 0; k < s->n; ++k) {
+        const double y = tirenv_nn_gradient(nn, s->x + k * s->n_in, grad);
+        const double r = (y - s->y[k]) * inv_std;
+        sse += r * r;
+        const double c = r * inv_std;
+        for (size_t j = 0; j < p; ++j)
+            g[j] += c * grad[j];
+    }
+    return sse;
+}
+
+double tirenv_train__sse(tirenv_nn *nn, const tirenv_samples *s, double y[])
+{
+    const double inv_std = 1.0 / out_std_of(nn);
+    double sse = 0;
+    tirenv_nn_run_batch(nn, s->n, s->x, y);
+    for (size_t k = 0; k < s->n; ++k) {
+        const double r = (y[k] - s->y[k]) * inv_std;
+        sse += r * r;
+    }
+    return sse;
+}
+
+tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
+{
+    tirenv_train_error e = {.n = s ? s->n : 0, .rms = 0, .max = 0};
+    if (!s || s->n == 0)
+        return e;
+    double y[256];
+    double sum2 = 0;
+    for (size_t k0 = 0; k0 < s->n; k0 += 256) {
+        const size_t m = s->n - k0 < 256 ? s->n - k0 : 256;
+        tirenv_nn_run_batch(nn, m, s->x + k0 * s->n_in, y);
+        for (size_t k = 0; k < m; ++k) {
+            const double d = fabs(y[k] - s->y[k0 + k]);
+            sum2 += d * d;
+            e.max = d > e.max || isnan(d) ? d : e.max;
+        }
+    }
+    e.rms = sqrt(sum2 / (double)s->n);
+    return e;
+}
+
+static uint64_t fnv1a64_u64(uint64_t h, uint64_t v)
+{
+    for (int b = 0; b < 8; ++b) {
+        h ^= (v >> (8 * b)) & 0xff;
+        h *= UINT64_C(0x100000001b3);
+    }
+    return h;
+}
+
+uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h)
+{
+    if (!s)
+        return h;
+    const size_t n_x = s->n * s->n_in;
+    for (size_t k = 0; k < n_x + s->n; ++k) {
+        const double v = k < n_x ? s->x[k] : s->y[k - n_x];
+        uint64_t bits;
+        memcpy(&bits, &v, sizeof bits);
+        h = fnv1a64_u64(h, bits);
+    }
+    return h;
+}
+
+int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
+                                tirenv_samples *out, double **x, double **y,
+                                tirenv_diag *diag)
+{
+    size_t n = 0;
+    *x = *y = NULL;
+    *out = (tirenv_samples){.n = 0, .n_in = TIRENV_NN_INPUTS, .x = NULL, .y = NULL};
+    for (size_t c = 0; c < ds->n; ++c) {
+        const tirenv_case *cs = &ds->cases[c];
+        if (cs->split != split)
+            continue;
+        if (cs->curve.n == 0 || !cs->curve.x_N || !cs->curve.h)
+            return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "curve",
+                                "case '%s' has no curve points", cs->name);
+        n += cs->curve.n;
+    }
+    if (n == 0)
+        return TIRENV_OK;
+    double *xs = malloc(n * TIRENV_NN_INPUTS * sizeof *xs);
+    double *ys = malloc(n * sizeof *ys);
+    if (!xs || !ys) {
+        free(xs);
+        free(ys);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for %zu samples", n);
+    }
+    size_t k = 0;
+    for (size_t c = 0; c < ds->n; ++c) {
+        const tirenv_case *cs = &ds->cases[c];
+        if (cs->split != split)
+            continue;
+        for (size_t i = 0; i < cs->curve.n; ++i, ++k) {
+            double *u = xs + k * TIRENV_NN_INPUTS;
+            u[TIRENV_NN_X_N] = cs->curve.x_N[i];
+            u[TIRENV_NN_CONTACT_LENGTH] = cs->contact_length;
+            u[TIRENV_NN_HEIGHT] = cs->H;
+            u[TIRENV_NN_LENGTH] = cs->L;
+            ys[k] = cs->curve.h[i];
+        }
+    }
+    *x = xs;
+    *y = ys;
+    *out = (tirenv_samples){.n = n, .n_in = TIRENV_NN_INPUTS, .x = xs, .y = ys};
+    return TIRENV_OK;
+}
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* splitmix64 (Steele, Lea and Flood 2014): decorrelates the seeds of consecutive restarts, so
+ * that restart r is reproducible on its own, whatever the others drew. */
+static unsigned long restart_seed(unsigned long seed, size_t r)
+{
+    uint64_t z = (uint64_t)seed + (uint64_t)r * UINT64_C(0x9e3779b97f4a7c15);
+    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
+    z ^= z >> 31;
+    return (unsigned long)(z & 0xffffffffu);  /* mt19937 takes 32 bits */
+}
+
+static int check_samples(const tirenv_samples *s, const char *name, size_t n_in,
+                         tirenv_diag *diag)
+{
+    if (!s || s->n == 0)
+        return TIRENV_OK;
+    if (s->n_in != n_in || !s->x || !s->y)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, name,
+                            "%zu inputs per sample; expected %zu (the network's)", s->n_in,
+                            n_in);
+    for (size_t k = 0; k < s->n; ++k) {
+        for (size_t i = 0; i < n_in; ++i)
+            if (!isfinite(s->x[k * n_in + i]))
+                return tirenv_error(diag, TIRENV_EINVAL, "", k + 1, name,
+                                    "sample %zu, input %zu is %g; expected a finite number", k,
+                                    i, s->x[k * n_in + i]);
+        if (!isfinite(s->y[k]))
+            return tirenv_error(diag, TIRENV_EINVAL, "", k + 1, name,
+                                "sample %zu, output is %g; expected a finite number", k,
+                                s->y[k]);
+    }
+    return TIRENV_OK;
+}
+
+int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *diag)
+{
+    const int status = tirenv_nn_topology_check(&s->topology, diag);
+    if (status)
+        return status;
+    if (s->restarts < 1 || s->max_epochs < 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "settings",
+                            "restarts %zu, max_epochs %zu; expected both >= 1", s->restarts,
+                            s->max_epochs);
+    const tirenv_backprop_settings *b = &s->backprop;
+    if (!(b->learning_rate > 0) || !isfinite(b->learning_rate) || !(b->momentum >= 0) ||
+        !(b->momentum < 1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "backprop",
+                            "learning rate %g, momentum %g; expected > 0 and in [0, 1)",
+                            b->learning_rate, b->momentum);
+    const tirenv_rprop_settings *r = &s->rprop;
+    if (!(r->delta_min > 0) || !(r->delta0 >= r->delta_min) || !(r->delta_max >= r->delta0) ||
+        !isfinite(r->delta_max) || !(r->eta_plus > 1) || !isfinite(r->eta_plus) ||
+        !(r->eta_minus > 0) || !(r->eta_minus < 1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "rprop",
+                            "delta0 %g in [%g, %g], eta+ %g, eta- %g; expected 0 < delta_min "
+                            "<= delta0 <= delta_max, eta+ > 1, 0 < eta- < 1",
+                            r->delta0, r->delta_min, r->delta_max, r->eta_plus, r->eta_minus);
+    const tirenv_lm_settings *m = &s->lm;
+    if ((m->solver != TIRENV_LM_CHOLESKY && m->solver != TIRENV_LM_GSL) || !(m->tau > 0) ||
+        !(m->mu_max >= m->tau) || !isfinite(m->mu_max))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "lm",
+                            "solver %d, tau %g, mu_max %g; expected cholesky or gsl, 0 < tau "
+                            "<= mu_max < inf", (int)m->solver, m->tau, m->mu_max);
+    return TIRENV_OK;
+}
+
+/* Everything a run holds, so that one cleanup frees it. */
+typedef struct {
+    tirenv_nn *nn, *cand, *best;
+    void *state;
+    gsl_rng *rng;
+    double *y;
+} run_state;
+
+static void run_free(const tirenv_trainer_type *type, run_state *r)
+{
+    tirenv_nn_free(r->nn);
+    tirenv_nn_free(r->cand);
+    tirenv_nn_free(r->best);
+    if (r->state)
+        type->free(r->state);
+    gsl_rng_free(r->rng);
+    free(r->y);
+}
+
+/* Early stopping (Prechelt, "Early stopping - but when?", 1998): train, and keep the weights
+ * of least control error; stop when it has not improved for `patience` epochs. Restarts are
+ * independent runs from new initial weights; the one with the least control error wins. */
+int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
+                 const tirenv_samples *train, const tirenv_samples *control,
+                 const tirenv_samples *validation, tirenv_nn **out,
+                 tirenv_train_report *report, tirenv_diag *diag)
+{
+    *out = NULL;
+    gsl_set_error_handler_off();
+    if (!type || !settings || !train)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no trainer, settings or samples");
+    if (train->n == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "train", "no training samples");
+    const tirenv_train_settings *s = settings;
+    int status;
+    if (s->topology.size[0] != train->n_in)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                            "%zu inputs; the samples have %zu", s->topology.size[0],
+                            train->n_in);
+    if ((status = tirenv_train_settings_check(s, diag)) ||
+        (status = check_samples(train, "train", train->n_in, diag)) ||
+        (status = check_samples(control, "control", train->n_in, diag)) ||
+        (status = check_samples(validation, "validation", train->n_in, diag)))
+        return status;
+    const tirenv_samples *sel = control && control->n ? control : train;
+
+    run_state r = {0};
+    if (!(r.nn = tirenv_nn_alloc(&s->topology)) || !(r.rng = gsl_rng_alloc(gsl_rng_mt19937)) ||
+        !(r.y = malloc(sel->n * sizeof *r.y))) {
+        run_free(type, &r);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
+    if ((status = tirenv_nn_fit_scaling(r.nn, train->n, train->x, train->y, diag))) {
+        run_free(type, &r);
+        return status;
+    }
+    if (!(r.cand = tirenv_nn_clone(r.nn)) || !(r.best = tirenv_nn_clone(r.nn))) {
+        run_free(type, &r);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
+    if ((status = type->alloc(&r.state, r.nn, train, s, diag))) {
+        run_free(type, &r);
+        return status;
+    }
+
+    const double out_std = out_std_of(r.nn);
+    const double t_start = now_s();
+    tirenv_train_report rep = {0};
+    double best_overall = INFINITY;
+    int cancelled = 0;
+    for (size_t k = 0; k < s->restarts && !cancelled; ++k) {
+        gsl_rng_set(r.rng, restart_seed(s->seed, k));
+        tirenv_nn_init_weights(r.nn, r.rng);
+        if ((status = type->set(r.state, r.nn, train, diag))) {
+            run_free(type, &r);
+            return status;
+        }
+        const double t_restart = now_s();
+        double best = tirenv_train__sse(r.nn, sel, r.y);
+        size_t best_epoch = 0, epoch = 0;
+        double best_time = 0;
+        tirenv_nn_copy(r.cand, r.nn);
+        tirenv_train_stop stop = TIRENV_TRAIN_MAX_EPOCHS;
+        while (epoch < s->max_epochs) {
+            double train_sse = 0;
+            const int st = type->epoch(r.state, r.nn, train, r.rng, &train_sse, diag);
+            if (st != TIRENV_OK && st != TIRENV_ECONTINUE) {
+                run_free(type, &r);
+                return st;
+            }
+            ++epoch;
+            const double e = tirenv_train__sse(r.nn, sel, r.y);
+            if (e < best) {
+                best = e;
+                best_epoch = epoch;
+                best_time = now_s() - t_restart;
+                tirenv_nn_copy(r.cand, r.nn);
+            }
+            if (s->progress) {
+                const tirenv_train_progress p = {
+                    .restart = k, .restarts = s->restarts, .epoch = epoch,
+                    .max_epochs = s->max_epochs,
+                    .train_rms = sqrt(train_sse / (double)train->n) * out_std,
+                    .control_rms = sqrt(e / (double)sel->n) * out_std,
+                    .best_rms = sqrt(best / (double)sel->n) * out_std,
+                    .best_epoch = best_epoch};
+                if (s->progress(&p, s->progress_data)) {
+                    stop = TIRENV_TRAIN_CANCELLED;
+                    cancelled = 1;
+                    break;
+                }
+            }
+            if (!isfinite(e) || !isfinite(train_sse)) {
+                stop = TIRENV_TRAIN_DIVERGED;
+                break;
+            }
+            if (st == TIRENV_OK) {
+                stop = TIRENV_TRAIN_CONVERGED;
+                break;
+            }
+            if (s->patience && epoch - best_epoch >= s->patience) {
+                stop = TIRENV_TRAIN_PATIENCE;
+                break;
+            }
+        }
+        rep.total_epochs += epoch;
+        /* Strictly better, so the earliest restart wins a tie: the result does not depend on
+         * how many restarts were asked for beyond the one that found it. */
+        if (k == 0 || best < best_overall) {
+            best_overall = best;
+            tirenv_nn_copy(r.best, r.cand);
+            rep.restart = k;
+            rep.epochs = epoch;
+            rep.best_epoch = best_epoch;
+            rep.best_time = best_time;
+            rep.stop = stop;
+        }
+    }
+    rep.wall_time = now_s() - t_start;
+    rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(r.best, train);
+    rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(r.best, control);
+    rep.error[TIRENV_SPLIT_VALIDATION] = tirenv_train_evaluate(r.best, validation);
+    if (report)
+        *report = rep;
+    *out = r.best;
+    r.best = NULL;
+    run_free(type, &r);
+    return TIRENV_OK;
+}

@@ -1,0 +1,399 @@
+/* The network (MODEL.md section 6): layout, initialisation, scaling, evaluation against a
+ * plain reference, batch against single samples, back-propagation against finite
+ * differences, and the enveloping model built on it.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * Tolerances.
+ * - Reference evaluation: the network's own exp is within 3 ulp of libm's, so a logistic
+ *   differs by about 1e-16 relative; summed through two layers of at most 64 weights of size
+ *   ~1 it stays below 1e-14 of the output scale. REF_TOL = 1e-13 (relative to out_std)
+ *   leaves a factor 10.
+ * - Finite differences: central, step h = 1e-6*max(1, |w|). Outputs are ~0.1 (m-like
+ *   scaling), so round-off in y is ~1e-17 and costs 1e-17/h = 1e-11 in the difference
+ *   quotient; the truncation term h^2/6*y''' is ~1e-13. FD_ABS = 1e-9 and FD_REL = 1e-6 leave
+ *   a factor 100 over both.
+ * - Batch against single sample, Jacobian against gradient, seeds, envelope mirror: exact
+ *   (the same operations in the same order). */
+#include "testutil.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_rng.h>
+
+#include "tirenv/curve.h"
+#include "tirenv/nn.h"
+
+#define REF_TOL 1e-13
+#define FD_ABS 1e-9
+#define FD_REL 1e-6
+
+/* Topologies every test loops over: the paper's, deeper, wider than a lane group, the
+ * widest, and the degenerate linear net. */
+static const tirenv_nn_topology topologies[] = {
+    {3, {4, 8, 1}},
+    {4, {4, 5, 3, 1}},
+    {3, {3, 13, 1}},
+    {4, {2, 64, 9, 1}},
+    {6, {4, 7, 6, 5, 4, 1}},
+    {2, {4, 1}},
+};
+enum { N_TOPOLOGIES = sizeof topologies / sizeof topologies[0] };
+
+/* A network with initial weights perturbed (so that no weight is special), and scaling with
+ * nonzero means and unequal deviations. */
+static tirenv_nn *make_net(const tirenv_nn_topology *t, unsigned long seed)
+{
+    tirenv_nn *nn = tirenv_nn_alloc(t);
+    assert_non_null(nn);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, seed);
+    tirenv_nn_init_weights(nn, rng);
+    double *w = tirenv_nn_weights(nn);
+    for (size_t k = 0; k < tirenv_nn_n_weights(nn); ++k)
+        w[k] += 0.3 * (gsl_rng_uniform(rng) - 0.5);
+    double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH];
+    for (size_t i = 0; i < t->size[0]; ++i) {
+        mean[i] = 0.137 * (double)i - 0.0412;
+        std[i] = 0.731 + 0.219 * (double)i;
+    }
+    assert_int_equal(tirenv_nn_set_scaling(nn, mean, std, 0.0123, 0.0271, NULL), TIRENV_OK);
+    gsl_rng_free(rng);
+    return nn;
+}
+
+static void fill_inputs(gsl_rng *rng, size_t n, size_t n_in, double x[])
+{
+    for (size_t k = 0; k < n * n_in; ++k)
+        x[k] = 2.385 * (gsl_rng_uniform(rng) - 0.5) + 0.1 * (double)(k % n_in);
+}
+
+/* The plain definition: scaled inputs, libm's exp, sums in any order. */
+static double reference_run(const tirenv_nn *nn, const double x[])
+{
+    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const double *w = tirenv_nn_weights_const(nn);
+    double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], out_mean, out_std;
+    double a[TIRENV_NN_MAX_WIDTH], b[TIRENV_NN_MAX_WIDTH];
+    tirenv_nn_get_scaling(nn, mean, std, &out_mean, &out_std);
+    for (size_t i = 0; i < t->size[0]; ++i)
+        a[i] = (x[i] - mean[i]) / std[i];
+    for (size_t l = 1; l < t->n_layers; ++l) {
+        for (size_t j = 0; j < t->size[l]; ++j) {
+            double net = w[tirenv_nn_weight_index(nn, l, 0, j)];
+            for (size_t i = 0; i < t->size[l - 1]; ++i)
+                net += w[tirenv_nn_weight_index(nn, l, 1 + i, j)] * a[i];
+            b[j] = l + 1 < t->n_layers ? 1 / (1 + exp(-net)) : net;
+        }
+        memcpy(a, b, t->size[l] * sizeof a[0]);
+    }
+    return out_mean + out_std * a[0];
+}
+
+static void test_topology(void **state)
+{
+    (void)state;
+    tirenv_nn_topology t = tirenv_nn_topology_default();
+    assert_int_equal(t.n_layers, 3);
+    assert_int_equal(t.size[0], TIRENV_NN_INPUTS);
+    assert_int_equal(t.size[1], 8);
+    assert_int_equal(t.size[2], 1);
+    assert_int_equal(tirenv_nn_topology_check(&t, NULL), TIRENV_OK);
+    tirenv_nn *nn = tirenv_nn_alloc(&t);
+    assert_non_null(nn);
+    assert_int_equal(tirenv_nn_n_weights(nn), 5 * 8 + 9 * 1);
+    assert_int_equal(tirenv_nn_n_inputs(nn), 4);
+    tirenv_nn_free(nn);
+    tirenv_nn_free(NULL);
+
+    /* _e cases: each refused, naming the topology. */
+    static const tirenv_nn_topology bad[] = {
+        {1, {4}},
+        {TIRENV_NN_MAX_LAYERS + 1, {4, 8, 8, 8, 8, 8}},
+        {3, {4, 0, 1}},
+        {3, {4, TIRENV_NN_MAX_WIDTH + 1, 1}},
+        {3, {4, 8, 2}},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        tirenv_diag diag;
+        tirenv_diag_clear(&diag);
+        assert_int_equal(tirenv_nn_topology_check(&bad[k], &diag), TIRENV_EINVAL);
+        assert_string_equal(diag.field, "topology");
+        assert_null(tirenv_nn_alloc(&bad[k]));
+    }
+    assert_string_equal(tirenv_nn_input_name(TIRENV_NN_X_N), "x_N");
+    assert_string_equal(tirenv_nn_input_name(TIRENV_NN_CONTACT_LENGTH), "contact_length_m");
+    assert_string_equal(tirenv_nn_input_name(TIRENV_NN_HEIGHT), "obstacle_height_m");
+    assert_string_equal(tirenv_nn_input_name(TIRENV_NN_LENGTH), "obstacle_length_m");
+    assert_null(tirenv_nn_input_name(TIRENV_NN_INPUTS));
+}
+
+/* Same seed, same weights to the bit; another seed, other weights. Nguyen-Widrow: every hidden
+ * neuron's input weights have norm 0.7*n_hidden^(1/n_in), its bias at most that. */
+static void test_init(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    for (size_t k = 0; k < N_TOPOLOGIES; ++k) {
+        const tirenv_nn_topology *t = &topologies[k];
+        tirenv_nn *a = tirenv_nn_alloc(t), *b = tirenv_nn_alloc(t), *c = tirenv_nn_alloc(t);
+        gsl_rng_set(rng, 2385);
+        tirenv_nn_init_weights(a, rng);
+        gsl_rng_set(rng, 2385);
+        tirenv_nn_init_weights(b, rng);
+        gsl_rng_set(rng, 2386);
+        tirenv_nn_init_weights(c, rng);
+        const size_t p = tirenv_nn_n_weights(a);
+        assert_memory_equal(tirenv_nn_weights(a), tirenv_nn_weights(b), p * sizeof(double));
+        assert_memory_not_equal(tirenv_nn_weights(a), tirenv_nn_weights(c),
+                                p * sizeof(double));
+        const double *w = tirenv_nn_weights_const(a);
+        for (size_t l = 1; l + 1 < t->n_layers; ++l) {
+            const double beta = 0.7 * pow((double)t->size[l], 1.0 / (double)t->size[l - 1]);
+            for (size_t j = 0; j < t->size[l]; ++j) {
+                double norm2 = 0;
+                for (size_t i = 1; i <= t->size[l - 1]; ++i) {
+                    const double v = w[tirenv_nn_weight_index(a, l, i, j)];
+                    norm2 += v * v;
+                }
+                assert_near(sqrt(norm2), beta, 0, 1e-14);
+                assert_true(fabs(w[tirenv_nn_weight_index(a, l, 0, j)]) <= beta);
+            }
+        }
+        const size_t L = t->n_layers - 1;
+        for (size_t i = 0; i <= t->size[L - 1]; ++i)
+            assert_true(fabs(w[tirenv_nn_weight_index(a, L, i, 0)]) <= 0.5);
+        tirenv_nn_free(a);
+        tirenv_nn_free(b);
+        tirenv_nn_free(c);
+    }
+    gsl_rng_free(rng);
+}
+
+/* Against the plain definition, over many inputs including saturating ones (where the
+ * linear net's output grows large: hence the relative part of the tolerance). */
+static void test_run_reference(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 7);
+    for (size_t k = 0; k < N_TOPOLOGIES; ++k) {
+        tirenv_nn *nn = make_net(&topologies[k], 100 + k);
+        const size_t n_in = tirenv_nn_n_inputs(nn);
+        double x[TIRENV_NN_MAX_WIDTH];
+        for (int s = 0; s < 200; ++s) {
+            fill_inputs(rng, 1, n_in, x);
+            if (s % 50 == 0)  /* saturate: net inputs of hundreds */
+                for (size_t i = 0; i < n_in; ++i)
+                    x[i] *= 1e3;
+            assert_near(tirenv_nn_run(nn, x), reference_run(nn, x), REF_TOL * 0.0271, REF_TOL);
+        }
+        tirenv_nn_free(nn);
+    }
+    gsl_rng_free(rng);
+}
+
+/* The batch path transposes blocks of 64 samples and pads the last one; it must still give
+ * exactly the single-sample bits, for every count around the block size. */
+static void test_batch_exact(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 11);
+    static const size_t counts[] = {0, 1, 7, 63, 64, 65, 200};
+    for (size_t k = 0; k < N_TOPOLOGIES; ++k) {
+        tirenv_nn *nn = make_net(&topologies[k], 200 + k);
+        const size_t n_in = tirenv_nn_n_inputs(nn);
+        for (size_t c = 0; c < sizeof counts / sizeof counts[0]; ++c) {
+            const size_t n = counts[c];
+            double *x = malloc((n + 1) * n_in * sizeof *x);
+            double *y = malloc((n + 1) * sizeof *y);
+            fill_inputs(rng, n, n_in, x);
+            y[n] = 2385.0;  /* a sentinel past the end: must survive */
+            tirenv_nn_run_batch(nn, n, x, y);
+            for (size_t s = 0; s < n; ++s) {
+                const double single = tirenv_nn_run(nn, x + s * n_in);
+                assert_memory_equal(&y[s], &single, sizeof single);
+            }
+            assert_true(y[n] == 2385.0);
+            free(x);
+            free(y);
+        }
+        tirenv_nn_free(nn);
+    }
+    gsl_rng_free(rng);
+}
+
+/* Back-propagation against central differences, with a guard that the gradient is not
+ * trivially zero: every weight of these nets moves the output. */
+static void test_gradient(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 13);
+    for (size_t k = 0; k < N_TOPOLOGIES; ++k) {
+        tirenv_nn *nn = make_net(&topologies[k], 300 + k);
+        const size_t n_in = tirenv_nn_n_inputs(nn), p = tirenv_nn_n_weights(nn);
+        double *grad = malloc(p * sizeof *grad), *w = tirenv_nn_weights(nn);
+        double x[TIRENV_NN_MAX_WIDTH];
+        for (int s = 0; s < 5; ++s) {
+            fill_inputs(rng, 1, n_in, x);
+            const double y = tirenv_nn_gradient(nn, x, grad);
+            assert_true(y == tirenv_nn_run(nn, x));
+            size_t nonzero = 0;
+            double largest = 0;
+            for (size_t j = 0; j < p; ++j) {
+                const double w0 = w[j], h = 1e-6 * fmax(1.0, fabs(w0));
+                w[j] = w0 + h;
+                const double yp = tirenv_nn_run(nn, x);
+                w[j] = w0 - h;
+                const double ym = tirenv_nn_run(nn, x);
+                w[j] = w0;
+                assert_near(grad[j], (yp - ym) / (2 * h), FD_ABS, FD_REL);
+                nonzero += grad[j] != 0;
+                largest = fmax(largest, fabs(grad[j]));
+            }
+            assert_int_equal(nonzero, p);
+            assert_true(largest > 1e-3);
+        }
+        free(grad);
+        tirenv_nn_free(nn);
+    }
+    gsl_rng_free(rng);
+}
+
+/* Each Jacobian row is that sample's gradient, to the bit. */
+static void test_jacobian(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 17);
+    tirenv_nn *nn = make_net(&topologies[1], 400);
+    const size_t n = 37, n_in = tirenv_nn_n_inputs(nn), p = tirenv_nn_n_weights(nn);
+    double *x = malloc(n * n_in * sizeof *x), *y = malloc(n * sizeof *y);
+    double *J = malloc(n * p * sizeof *J), *g = malloc(p * sizeof *g);
+    fill_inputs(rng, n, n_in, x);
+    tirenv_nn_jacobian(nn, n, x, y, J);
+    for (size_t s = 0; s < n; ++s) {
+        const double ys = tirenv_nn_gradient(nn, x + s * n_in, g);
+        assert_true(ys == y[s]);
+        assert_memory_equal(J + s * p, g, p * sizeof *g);
+    }
+    tirenv_nn_jacobian(nn, n, x, NULL, J);  /* outputs not wanted */
+    free(x);
+    free(y);
+    free(J);
+    free(g);
+    tirenv_nn_free(nn);
+    gsl_rng_free(rng);
+}
+
+/* Scaling from samples: mean and population deviation; a constant input gets std 1; ranges;
+ * refusals of bad scalings. */
+static void test_scaling(void **state)
+{
+    (void)state;
+    const tirenv_nn_topology t = {3, {3, 4, 1}};
+    tirenv_nn *nn = tirenv_nn_alloc(&t);
+    const double x[] = {1.0, 0.33, -2.0, 3.0, 0.33, 4.0, 2.0, 0.33, 7.0};
+    const double y[] = {0.01, 0.03, 0.05};
+    assert_int_equal(tirenv_nn_fit_scaling(nn, 3, x, y, NULL), TIRENV_OK);
+    double mean[3], std[3], om, os, lo[3], hi[3];
+    tirenv_nn_get_scaling(nn, mean, std, &om, &os);
+    tirenv_nn_get_input_range(nn, lo, hi);
+    assert_near(mean[0], 2.0, 1e-15, 0);
+    assert_near(std[0], sqrt(2.0 / 3.0), 0, 1e-15);
+    assert_near(mean[1], 0.33, 1e-15, 0);
+    assert_true(std[1] == 1.0);
+    assert_near(mean[2], 3.0, 1e-15, 0);
+    assert_near(std[2], sqrt(42.0 / 3.0), 0, 1e-15);
+    assert_near(om, 0.03, 1e-17, 0);
+    assert_near(os, sqrt(0.0008 / 3.0), 0, 1e-14);
+    assert_true(lo[0] == 1.0 && hi[0] == 3.0 && lo[2] == -2.0 && hi[2] == 7.0);
+    const double inside[] = {2.5, 0.33, 0.0}, outside[] = {2.5, 0.34, 9.0};
+    assert_int_equal(tirenv_nn_out_of_range(nn, inside, 0), 3);
+    assert_int_equal(tirenv_nn_out_of_range(nn, outside, 0), 1);
+    assert_int_equal(tirenv_nn_out_of_range(nn, outside, 2), 2);
+
+    tirenv_diag diag;
+    const double zero_std[] = {1, 0, 1}, nan_x[] = {1, NAN, 1};
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_nn_set_scaling(nn, mean, zero_std, 0, 1, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "scaling");
+    assert_int_equal(tirenv_nn_set_scaling(nn, mean, std, 0, -1, NULL), TIRENV_EINVAL);
+    assert_int_equal(tirenv_nn_fit_scaling(nn, 0, x, y, NULL), TIRENV_EINVAL);
+    assert_int_equal(tirenv_nn_fit_scaling(nn, 1, nan_x, y, NULL), TIRENV_EINVAL);
+    const double lo_bad[] = {1, 2, 3}, hi_bad[] = {1, 1, 3};
+    assert_int_equal(tirenv_nn_set_input_range(nn, lo_bad, hi_bad, NULL), TIRENV_EINVAL);
+    /* Unchanged by the refusals. */
+    double std2[3];
+    tirenv_nn_get_scaling(nn, NULL, std2, NULL, NULL);
+    assert_memory_equal(std, std2, sizeof std);
+
+    /* Copy and clone carry weights, scaling, ranges; copy refuses another shape. */
+    tirenv_nn *c = tirenv_nn_clone(nn);
+    assert_non_null(c);
+    assert_true(tirenv_nn_run(c, inside) == tirenv_nn_run(nn, inside));
+    const tirenv_nn_topology t2 = {3, {3, 5, 1}};
+    tirenv_nn *other = tirenv_nn_alloc(&t2);
+    assert_int_equal(tirenv_nn_copy(other, nn), TIRENV_EINVAL);
+    tirenv_nn_free(other);
+    tirenv_nn_free(c);
+    tirenv_nn_free(nn);
+}
+
+/* The enveloping model: the network at x_N on the approach half, its mirror image beyond the
+ * centre, 0 before the first x_N seen in training; refusals. */
+static void test_envelope(void **state)
+{
+    (void)state;
+    tirenv_nn *nn = make_net(&topologies[0], 500);
+    const double lo[] = {-0.05, 0.28, 0.05, 0.1}, hi[] = {1.0, 0.38, 0.1, 0.3};
+    assert_int_equal(tirenv_nn_set_input_range(nn, lo, hi, NULL), TIRENV_OK);
+    const double R0 = 0.68, l_c = 0.3317, L = 0.2113, H = 0.0731;
+    const double x_0 = tirenv_xN_origin(R0, l_c, L, H);
+    assert_true(x_0 < 0);
+    enum { N = 301 };
+    double x[N], h[N];
+    for (size_t k = 0; k < N; ++k)
+        x[k] = 0.75 * (2.0 * (double)k - (N - 1)) / (N - 1);  /* x[N-1-k] = -x[k] exactly */
+    assert_int_equal(tirenv_nn_envelope(nn, R0, l_c, L, H, N, x, h, NULL), TIRENV_OK);
+    size_t zeros = 0;
+    for (size_t k = 0; k < N; ++k) {
+        assert_true(h[k] == h[N - 1 - k]);  /* x is symmetric about 0 */
+        const double x_N = tirenv_xN(-fabs(x[k]), x_0);
+        const double u[] = {x_N, l_c, H, L};
+        if (x_N < lo[0]) {
+            assert_true(h[k] == 0);
+            ++zeros;
+        } else {
+            const double want = tirenv_nn_run(nn, u);
+            assert_memory_equal(&h[k], &want, sizeof want);
+        }
+    }
+    assert_true(zeros > 0 && zeros < N);
+
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    /* A cleat taller than the chord height is out of reach. */
+    assert_int_equal(tirenv_nn_envelope(nn, R0, l_c, L, 0.9, N, x, h, &diag), TIRENV_ERANGE);
+    assert_int_equal(tirenv_nn_envelope(nn, R0, 2 * R0, L, H, N, x, h, NULL), TIRENV_EINVAL);
+    assert_int_equal(tirenv_nn_envelope(nn, R0, l_c, -L, H, N, x, h, NULL), TIRENV_EINVAL);
+    tirenv_nn_free(nn);
+    tirenv_nn *three = make_net(&topologies[2], 501);
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_nn_envelope(three, R0, l_c, L, H, N, x, h, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "topology");
+    tirenv_nn_free(three);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_topology),     cmocka_unit_test(test_init),
+        cmocka_unit_test(test_run_reference), cmocka_unit_test(test_batch_exact),
+        cmocka_unit_test(test_gradient),     cmocka_unit_test(test_jacobian),
+        cmocka_unit_test(test_scaling),      cmocka_unit_test(test_envelope),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
