@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include "tirenv/curve.h"
 #include "tirenv/error.h"
+#include "tirenv/profile.h"
 #include "tirenv/tire.h"
 
 #ifdef __cplusplus
@@ -30,6 +31,8 @@ typedef struct {
     char log[512];            /* raw rig log, full path, or "" */
     char curve_path[512];     /* imported curve, full path, or "" */
     tirenv_curve curve;       /* the approach-half curve (read, or imported from the log) */
+    const tirenv_profile *profile; /* the obstacle if it is not the cleat L x H (borrowed;
+                                    * L, H then give its extent for x_N and the network) */
 } tirenv_case;
 
 typedef struct {

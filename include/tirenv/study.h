@@ -75,6 +75,114 @@ typedef struct {
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag);
 
+/* ---- Comparison (MODEL.md section 8; the paper's Table 3 and Figure 5) ------------------- */
+
+#define TIRENV_COMPARE_MAX_MODELS 8   /* physical models plus the network */
+
+/* What to compare and where to write it. */
+typedef struct {
+    const char *const *cases;   /* names of the cases to compare, in this order; NULL or
+                                 * n_cases 0: every case of `split` in data-set order */
+    size_t n_cases;
+    tirenv_split split;         /* used when no names are given (default validation) */
+    const tirenv_model_type *models[TIRENV_COMPARE_MAX_MODELS - 1];
+    size_t n_models;            /* physical models evaluated (default rigid, springs) */
+    int with_nn;                /* also the network, when one is given (default 1) */
+    int simulated;              /* 1: the "measured" curves are simulated (default 0) */
+    const tirenv_model_type *simulated_by; /* the reference model that simulated them, or
+                                 * NULL; it is evaluated too (with the tire's parameters)
+                                 * and implies simulated */
+    double nn_R0;               /* free radius the network's x_N refers to (the model file's
+                                 * record), m; 0: the tire's R0 (default 0) */
+    double rise_threshold;      /* h defining the first rise, m (default 1e-3) */
+    double min_time;            /* timing: at least this long per model, s (default 0.02) */
+    double fail_fraction;       /* the report calls a model off on a case when its RMS error
+                                 * exceeds this share of the measured peak (default 0.1) */
+    const char *out_dir;        /* created if missing (default "out/compare") */
+    const char *title;          /* headline of the report, or NULL for a generic one */
+    const char *data_label;     /* how the report names the data set (e.g. its directory),
+                                 * or NULL for ds->dir */
+    const char *tire_label;     /* where the physical models' parameters came from, or NULL */
+    const char *nn_label;       /* where the network came from, or NULL */
+    int images;                 /* 1: run gnuplot to draw PNG and SVG (default 1) */
+    const char *gnuplot;        /* the gnuplot program (default "gnuplot", found on PATH) */
+} tirenv_compare_settings;
+
+tirenv_compare_settings tirenv_compare_default(void);
+
+/* One model on one case. */
+typedef struct {
+    int status;                 /* TIRENV_OK, or why the model failed on the case */
+    char message[512];          /* the failure, or "" */
+    tirenv_curve_errors errors; /* m; all NaN if the model failed */
+    double *h;                  /* the model's curve at the case's points, m (curve.n
+                                 * values; NaN if it failed); owned by the result */
+} tirenv_compare_entry;
+
+typedef struct {
+    size_t n_cases;
+    size_t *case_index;         /* the compared cases, as indices into ds->cases */
+    size_t n_models;            /* physical models first, the network last if any */
+    char model[TIRENV_COMPARE_MAX_MODELS][32];   /* model names ("springs", "nn") */
+    int nn_model;               /* index of the network in model[], or -1 */
+    int reference_model;        /* index of the model that simulated the data, or -1 */
+    tirenv_compare_entry *entry;/* n_cases x n_models, entry[case * n_models + model] */
+    double time_per_position[TIRENV_COMPARE_MAX_MODELS]; /* best repeat, s; NaN if the
+                                 * model failed on every case */
+    size_t timed_positions[TIRENV_COMPARE_MAX_MODELS];   /* positions in one repeat */
+    size_t timed_repeats[TIRENV_COMPARE_MAX_MODELS];     /* repeats measured */
+    int images;                 /* 1 if the PNG and SVG plots were drawn */
+    tirenv_tire tire;           /* the physical models' parameters */
+    char nn_layers[64];         /* the network's layer sizes ("4-8-1"), or "" */
+} tirenv_compare_result;
+
+/* Evaluates the chosen models on the chosen cases of ds and writes into s->out_dir: per case
+ * <case>.dat and <case>.gp (and, with s->images, <case>.png and <case>.svg drawn by gnuplot),
+ * errors.csv, errors.md and timing.csv. Physical models are built from tire (checked), the
+ * network (NULL: none) is run at the cases' contact lengths with the tire's R0. A model that
+ * fails on a case does not stop the comparison: its entry records why. Timing repeats each
+ * model's pass over all cases until s->min_time has passed and keeps the fastest pass.
+ * *out must be freed with tirenv_compare_result_free, also after a failure. TIRENV_EINVAL
+ * for an unknown case name or no case; TIRENV_EIO when a file cannot be written or gnuplot
+ * fails (diag names it). */
+int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn *nn,
+                   const tirenv_compare_settings *s, tirenv_compare_result *out,
+                   tirenv_diag *diag);
+void tirenv_compare_result_free(tirenv_compare_result *r);  /* NULL is a no-op */
+
+/* Writes s->out_dir/report.md: what was compared, whether the data are simulated, the error
+ * table, the plots, the speed ratios and a paragraph on the numbers. notes (Markdown, or
+ * NULL) is inserted after the introduction, for a pipeline's own account (fit, training). */
+int tirenv_compare_report(const tirenv_dataset *ds, const tirenv_compare_settings *s,
+                          const tirenv_compare_result *r, const char *notes,
+                          tirenv_diag *diag);
+
+/* The whole study in one call (tirenv study, make demo): identify the springs model on the
+ * training cases, train the network on the training cases (early stopping on control), compare
+ * every model on the validation cases; then the paper's proposed workflow (a network trained on
+ * curves of the identified physical model over a dense grid of obstacles, no rig time) and the
+ * models on obstacles outside the training grid (taller, shorter, other shapes), whose
+ * reference curves the virtual rig simulates with the ring tire. Writes into out_dir:
+ * fitted.tir, nn.json, nn-physical.json, report.md with plots and tables, and the
+ * subdirectories physical-network/ and outside/ with theirs. */
+typedef struct {
+    const char *data_dir;          /* data set with cases.csv */
+    const char *out_dir;           /* report directory, created if missing */
+    tirenv_tire tire;              /* start of the fit; its ring is the reference tire */
+    const char *tire_label;        /* where the tire came from, for the report */
+    const char *trainer;           /* "lm" (default), "rprop" or "backprop" */
+    unsigned long seed;            /* training seed (default 1) */
+    int simulated_by_ring;         /* the data set was simulated by the ring tire (default 1:
+                                    * the embedded one) */
+    int images;                    /* draw PNG and SVG with gnuplot (default 1) */
+    void (*progress)(void *ctx, const char *stage, size_t step, size_t steps);
+    void *progress_ctx;
+} tirenv_study_settings;
+
+tirenv_study_settings tirenv_study_default(void);
+
+int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag);
+
 #ifdef __cplusplus
 }
 #endif

@@ -28,6 +28,14 @@ int cli_flat_main(int argc, char *argv[]);
 int cli_envelope_main(int argc, char *argv[]);
 int cli_bench_main(int argc, char *argv[]);
 int cli_rig_main(int argc, char *argv[]);
+int cli_import_main(int argc, char *argv[]);
+int cli_train_main(int argc, char *argv[]);
+int cli_predict_main(int argc, char *argv[]);
+int cli_predict_is_nn(int argc, char *argv[]);  /* envelope --model nn: run predict */
+int cli_dataset_main(int argc, char *argv[]);
+int cli_compare_main(int argc, char *argv[]);
+int cli_fit_main(int argc, char *argv[]);
+int cli_study_main(int argc, char *argv[]);
 
 /* getopt_long codes of the shared long options; above 255 so they never clash with a short
  * option character. */

@@ -1,0 +1,647 @@
+/* The paper's comparison (MODEL.md section 8; Table 3 and Figure 5): every model on the chosen
+ * cases of a data set, how far each is off, how long each takes per position, one plot per
+ * case, and the tables. The report built on them is in report.c.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/study.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <time.h>
+
+#include "study/compare_impl.h"
+#include "study/plot.h"
+#include "tirenv/io.h"
+#include "tirenv/nn.h"
+
+/* A cap on timing repeats, should the clock not advance. */
+enum { MAX_REPEATS = 1000000 };
+
+tirenv_compare_settings tirenv_compare_default(void)
+{
+    tirenv_compare_settings s = {
+        .cases = NULL,
+        .n_cases = 0,
+        .split = TIRENV_SPLIT_VALIDATION,
+        .n_models = 2,
+        .with_nn = 1,
+        .simulated = 0,
+        .simulated_by = NULL,
+        .nn_R0 = 0,
+        .rise_threshold = 1e-3,
+        .min_time = 0.02,
+        .fail_fraction = 0.1,
+        .out_dir = "out/compare",
+        .title = NULL,
+        .data_label = NULL,
+        .tire_label = NULL,
+        .nn_label = NULL,
+        .images = 1,
+        .gnuplot = NULL,
+    };
+    s.models[0] = tirenv_model_rigid;
+    s.models[1] = tirenv_model_springs;
+    return s;
+}
+
+void tirenv_compare_result_free(tirenv_compare_result *r)
+{
+    if (!r)
+        return;
+    if (r->entry)
+        for (size_t k = 0; k < r->n_cases * r->n_models; ++k)
+            free(r->entry[k].h);
+    free(r->entry);
+    free(r->case_index);
+    r->entry = NULL;
+    r->case_index = NULL;
+    r->n_cases = 0;
+    r->n_models = 0;
+}
+
+/* ---- shared with report.c ----------------------------------------------------------------- */
+
+const tirenv_compare_entry *tirenv_compare__entry(const tirenv_compare_result *r, size_t i,
+                                                  size_t j)
+{
+    return &r->entry[i * r->n_models + j];
+}
+
+void tirenv_compare__caption(const tirenv_case *c, char *buf, size_t size)
+{
+    snprintf(buf, size, "contact length %.4g mm, obstacle %.4g x %.4g mm", c->contact_length * 1e3,
+             c->L * 1e3, c->H * 1e3);
+}
+
+const char *tirenv_compare__label(const tirenv_compare_result *r, size_t j)
+{
+    const char *name = r->model[j];
+    if ((int)j == r->reference_model)
+        return "reference";
+    if ((int)j == r->nn_model)
+        return "empirical model";
+    if (strcmp(name, "rigid") == 0)
+        return "geometric limit";
+    if (strcmp(name, "springs") == 0)
+        return "physical model";
+    return NULL;
+}
+
+/* mm with two decimals (a hundredth of a mm is below any rig's noise), "nan" when there is no
+ * number, as strtod reads it back. */
+void tirenv_compare__mm(char *buf, size_t size, double metres)
+{
+    if (isfinite(metres))
+        snprintf(buf, size, "%.2f", metres * 1e3);
+    else
+        snprintf(buf, size, "nan");
+}
+
+/* The same with its sign, for differences that have a direction. */
+void tirenv_compare__signed_mm(char *buf, size_t size, double metres)
+{
+    if (isfinite(metres))
+        snprintf(buf, size, "%+.2f", metres * 1e3);
+    else
+        snprintf(buf, size, "nan");
+}
+
+/* A duration with a unit a reader takes in at once. */
+void tirenv_compare__duration(char *buf, size_t size, double seconds)
+{
+    if (!isfinite(seconds))
+        snprintf(buf, size, "n/a");
+    else if (seconds < 1e-6)
+        snprintf(buf, size, "%.3g ns", seconds * 1e9);
+    else if (seconds < 1e-3)
+        snprintf(buf, size, "%.3g µs", seconds * 1e6);
+    else if (seconds < 1)
+        snprintf(buf, size, "%.3g ms", seconds * 1e3);
+    else
+        snprintf(buf, size, "%.3g s", seconds);
+}
+
+/* A ratio to two or three significant digits, without exponents in a sentence. */
+void tirenv_compare__ratio(char *buf, size_t size, double ratio)
+{
+    if (!isfinite(ratio))
+        snprintf(buf, size, "n/a");
+    else if (ratio >= 100)
+        snprintf(buf, size, "%.0f", ratio);
+    else if (ratio >= 10)
+        snprintf(buf, size, "%.1f", ratio);
+    else
+        snprintf(buf, size, "%.2f", ratio);
+}
+
+double tirenv_compare__mean_rms(const tirenv_compare_result *r, size_t j, size_t *n_ok)
+{
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < r->n_cases; ++i) {
+        const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
+        if (e->status == TIRENV_OK) {
+            sum += e->errors.rms;
+            ++n;
+        }
+    }
+    if (n_ok)
+        *n_ok = n;
+    return n ? sum / (double)n : NAN;
+}
+
+/* The tables of errors.md, also the body of report.md: per case and model the four errors in
+ * mm, then per model its mean RMS error and its time per position. hashes is the Markdown
+ * heading level of the section titles ("##"). */
+void tirenv_compare__tables(FILE *fp, const char *hashes, const tirenv_dataset *ds,
+                            const tirenv_compare_settings *s, const tirenv_compare_result *r)
+{
+    char a[32], b[32], c[32], d[32];
+    fprintf(fp, "%s Errors per case and model\n\n", hashes);
+    fprintf(fp,
+            "Model minus measurement, in mm. RMS and Max: root mean square and largest "
+            "absolute difference of h over the case's points. Peak: the model's highest h "
+            "minus the measured one. First rise: where the model's h first exceeds %.3g mm "
+            "minus where the measured h does (negative: the model rises earlier), along x.\n\n",
+            s->rise_threshold * 1e3);
+    fputs("| Case | Contact length (mm) | Obstacle L x H (mm) | Model | RMS (mm) | Max (mm) "
+          "| Peak (mm) | First rise (mm) |\n"
+          "|---|---:|---:|---|---:|---:|---:|---:|\n",
+          fp);
+    for (size_t i = 0; i < r->n_cases; ++i) {
+        const tirenv_case *cs = &ds->cases[r->case_index[i]];
+        for (size_t j = 0; j < r->n_models; ++j) {
+            const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
+            if (j == 0)
+                fprintf(fp, "| %s | %.4g | %.4g x %.4g ", cs->name, cs->contact_length * 1e3,
+                        cs->L * 1e3, cs->H * 1e3);
+            else
+                fputs("| | | ", fp);
+            if (e->status) {
+                fprintf(fp, "| %s | failed: %s | | | |\n", r->model[j],
+                        tirenv_strerror(e->status));
+                continue;
+            }
+            tirenv_compare__mm(a, sizeof a, e->errors.rms);
+            tirenv_compare__mm(b, sizeof b, e->errors.max);
+            tirenv_compare__signed_mm(c, sizeof c, e->errors.peak);
+            tirenv_compare__signed_mm(d, sizeof d, e->errors.first_rise);
+            fprintf(fp, "| %s | %s | %s | %s | %s |\n", r->model[j], a, b, c,
+                    isfinite(e->errors.first_rise) ? d : "n/a");
+        }
+    }
+
+    fprintf(fp, "\n%s Mean RMS error per model\n\n", hashes);
+    fputs("| Model | Mean RMS (mm) | Cases |\n|---|---:|---:|\n", fp);
+    for (size_t j = 0; j < r->n_models; ++j) {
+        size_t n_ok;
+        const double mean = tirenv_compare__mean_rms(r, j, &n_ok);
+        tirenv_compare__mm(a, sizeof a, mean);
+        fprintf(fp, "| %s | %s | %zu of %zu |\n", r->model[j], a, n_ok, r->n_cases);
+    }
+
+    fprintf(fp, "\n%s Evaluation time per position\n\n", hashes);
+    fprintf(fp,
+            "Measured in this run: each model's pass over all the cases above (for a physical "
+            "model: set the load and the cleat, then the equilibrium at every point) repeated "
+            "for at least %.3g ms; the fastest pass, divided by its positions.\n\n",
+            s->min_time * 1e3);
+    const double t_nn = r->nn_model >= 0 ? r->time_per_position[r->nn_model] : NAN;
+    fprintf(fp, "| Model | Time per position | %s | Positions per pass | Passes |\n"
+                "|---|---:|---:|---:|---:|\n",
+            r->nn_model >= 0 ? "Time / network's" : "(no network)");
+    for (size_t j = 0; j < r->n_models; ++j) {
+        tirenv_compare__duration(a, sizeof a, r->time_per_position[j]);
+        tirenv_compare__ratio(b, sizeof b, r->time_per_position[j] / t_nn);
+        fprintf(fp, "| %s | %s | %s | %zu | %zu |\n", r->model[j], a,
+                r->nn_model >= 0 ? b : "", r->timed_positions[j], r->timed_repeats[j]);
+    }
+}
+
+/* ---- choosing ----------------------------------------------------------------------------- */
+
+static int select_cases(const tirenv_dataset *ds, const tirenv_compare_settings *s,
+                        tirenv_compare_result *r, tirenv_diag *diag)
+{
+    const size_t want = s->cases && s->n_cases ? s->n_cases : ds->n;
+    r->case_index = malloc((want ? want : 1) * sizeof *r->case_index);
+    if (!r->case_index)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (s->cases && s->n_cases) {
+        for (size_t k = 0; k < s->n_cases; ++k) {
+            size_t i = 0;
+            while (i < ds->n && strcmp(ds->cases[i].name, s->cases[k]) != 0)
+                ++i;
+            if (i == ds->n) {
+                char list[256] = "";
+                for (size_t m = 0; m < ds->n && strlen(list) + 40 < sizeof list; ++m)
+                    snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s",
+                             m ? ", " : "", ds->cases[m].name);
+                return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "cases",
+                                    "no case '%s' in the data set; its cases are %s%s",
+                                    s->cases[k], list, ds->n > 0 ? "" : "(none)");
+            }
+            r->case_index[r->n_cases++] = i;
+        }
+    } else {
+        for (size_t i = 0; i < ds->n; ++i)
+            if (ds->cases[i].split == s->split)
+                r->case_index[r->n_cases++] = i;
+        if (r->n_cases == 0)
+            return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "split",
+                                "the data set has no %s cases to compare",
+                                tirenv_split_name(s->split));
+    }
+    for (size_t k = 0; k < r->n_cases; ++k) {
+        const tirenv_case *c = &ds->cases[r->case_index[k]];
+        if (c->curve.n == 0 || !c->curve.x || !c->curve.h || !c->curve.x_N)
+            return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "curve",
+                                "case %s has no curve to compare with", c->name);
+    }
+    return TIRENV_OK;
+}
+
+/* The physical models asked for, then the one that simulated the data if it is not among
+ * them, then the network. */
+static int select_models(const tirenv_compare_settings *s, const tirenv_nn *nn,
+                         const tirenv_model_type *types[], tirenv_compare_result *r,
+                         tirenv_diag *diag)
+{
+    const size_t max = TIRENV_COMPARE_MAX_MODELS - 1;
+    if (s->n_models > max)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models",
+                            "%zu physical models asked for; at most %zu", s->n_models, max);
+    size_t n = 0;
+    r->reference_model = -1;
+    r->nn_model = -1;
+    for (size_t k = 0; k < s->n_models; ++k) {
+        if (!s->models[k])
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models",
+                                "model %zu of the list is NULL", k + 1);
+        size_t dup = 0;
+        while (dup < n && types[dup] != s->models[k])
+            ++dup;
+        if (dup == n)
+            types[n++] = s->models[k];
+    }
+    if (s->simulated_by) {
+        size_t k = 0;
+        while (k < n && types[k] != s->simulated_by)
+            ++k;
+        if (k == n) {
+            if (n == max)
+                return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models",
+                                    "no room for the reference model %s: at most %zu "
+                                    "physical models", tirenv_model_type_name(s->simulated_by),
+                                    max);
+            types[n++] = s->simulated_by;
+        }
+        r->reference_model = (int)k;
+    }
+    for (size_t k = 0; k < n; ++k)
+        snprintf(r->model[k], sizeof r->model[k], "%s", tirenv_model_type_name(types[k]));
+    if (nn && s->with_nn) {
+        r->nn_model = (int)n;
+        snprintf(r->model[n], sizeof r->model[n], "nn");
+        ++n;
+    }
+    if (n == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models", "no model to compare");
+    r->n_models = n;
+    return TIRENV_OK;
+}
+
+/* mkdir -p: the default out/compare usually needs "out" first. */
+static int make_dirs(const char *path, tirenv_diag *diag)
+{
+    char buf[512];
+    if (!path || !*path)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "out_dir", "empty output directory");
+    if (strlen(path) >= sizeof buf - 64)
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "out_dir",
+                            "output directory name longer than %zu characters",
+                            sizeof buf - 65);
+    strcpy(buf, path);
+    for (char *p = buf + 1; *p; ++p) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "cannot create directory: %s",
+                                strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "cannot create directory: %s",
+                            strerror(errno));
+    struct stat st;
+    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))
+        return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "exists and is not a directory");
+    return TIRENV_OK;
+}
+
+/* ---- evaluating --------------------------------------------------------------------------- */
+
+static double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* One model, physical or the network, behind one call. */
+typedef struct {
+    tirenv_model *m;       /* a physical model, or NULL for the network */
+    tirenv_nn *nn;
+    double R0;             /* the radius the network's x_N refers to, m */
+} evaluator;
+
+static int evaluate(evaluator *ev, const tirenv_case *c, double h[], tirenv_diag *diag)
+{
+    return ev->m ? tirenv_case_predict_model(ev->m, c, h, diag)
+                 : tirenv_case_predict_nn(ev->nn, ev->R0, c, h, diag);
+}
+
+static void entry_failed(tirenv_compare_entry *e, size_t n, int status, const tirenv_diag *d)
+{
+    e->status = status;
+    snprintf(e->message, sizeof e->message, "%s",
+             d->message[0] ? d->message : tirenv_strerror(status));
+    e->errors = (tirenv_curve_errors){NAN, NAN, NAN, NAN};
+    for (size_t k = 0; k < n; ++k)
+        e->h[k] = NAN;
+}
+
+/* Model j on every case, then its timing. The first pass gives the curves (and is timed
+ * too); more passes are run only until min_time has passed, and the fastest counts: the
+ * others are the same work slowed by whatever else the machine did. Cases the model failed
+ * on are left out of the timing. */
+static void run_model(evaluator *ev, size_t j, const tirenv_dataset *ds,
+                      const tirenv_compare_settings *s, tirenv_compare_result *r,
+                      double scratch[])
+{
+    double pass = 0;
+    size_t positions = 0;
+    for (size_t i = 0; i < r->n_cases; ++i) {
+        const tirenv_case *c = &ds->cases[r->case_index[i]];
+        tirenv_compare_entry *e = &r->entry[i * r->n_models + j];
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        const double t0 = now_seconds();
+        int status = evaluate(ev, c, e->h, &d);
+        const double t1 = now_seconds();
+        if (!status)
+            status = tirenv_curve_errors_compute(c->curve.n, c->curve.x, c->curve.h, e->h,
+                                                 s->rise_threshold, &e->errors);
+        if (status) {
+            entry_failed(e, c->curve.n, status, &d);
+            continue;
+        }
+        pass += t1 - t0;
+        positions += c->curve.n;
+    }
+    r->timed_positions[j] = positions;
+    if (positions == 0) {
+        r->time_per_position[j] = NAN;
+        return;
+    }
+    double best = pass, total = pass;
+    size_t repeats = 1;
+    while (total < s->min_time && repeats < MAX_REPEATS) {
+        const double t0 = now_seconds();
+        for (size_t i = 0; i < r->n_cases; ++i)
+            if (r->entry[i * r->n_models + j].status == TIRENV_OK)
+                (void)evaluate(ev, &ds->cases[r->case_index[i]], scratch, NULL);
+        const double t = now_seconds() - t0;
+        total += t;
+        best = fmin(best, t);
+        ++repeats;
+    }
+    r->timed_repeats[j] = repeats;
+    r->time_per_position[j] = best / (double)positions;
+}
+
+/* ---- writing ------------------------------------------------------------------------------ */
+
+static int path_in(char *buf, size_t size, const char *dir, const char *name, tirenv_diag *diag)
+{
+    const int n = snprintf(buf, size, "%s/%s", dir, name);
+    if (n < 0 || (size_t)n >= size)
+        return tirenv_error(diag, TIRENV_EINVAL, dir, 0, "out_dir",
+                            "output path '%s/%s' is too long", dir, name);
+    return TIRENV_OK;
+}
+
+/* Opens dir/name as an all-or-nothing output file. */
+int tirenv_compare__open(tirenv_outfile *f, const char *dir, const char *name,
+                         tirenv_diag *diag)
+{
+    char path[512];
+    const int status = path_in(path, sizeof path, dir, name, diag);
+    return status ? status : tirenv_outfile_open(f, path, diag);
+}
+
+int tirenv_compare__close(tirenv_outfile *f, tirenv_diag *diag)
+{
+    if (ferror(f->fp)) {
+        const int e = errno;
+        tirenv_outfile_abort(f);
+        return tirenv_error(diag, TIRENV_EIO, f->path, 0, "", "cannot write: %s",
+                            strerror(e ? e : EIO));
+    }
+    return tirenv_outfile_commit(f, diag);
+}
+
+static void csv_mm(FILE *fp, double metres)
+{
+    if (isfinite(metres))
+        fprintf(fp, ",%.4f", metres * 1e3);
+    else
+        fputs(",nan", fp);
+}
+
+static int write_errors_csv(const tirenv_dataset *ds, const tirenv_compare_settings *s,
+                            const tirenv_compare_result *r, tirenv_diag *diag)
+{
+    tirenv_outfile f;
+    int status = tirenv_compare__open(&f, s->out_dir, "errors.csv", diag);
+    if (status)
+        return status;
+    fputs("case,model,rms_mm,max_mm,peak_mm,first_rise_mm\n", f.fp);
+    for (size_t i = 0; i < r->n_cases; ++i)
+        for (size_t j = 0; j < r->n_models; ++j) {
+            const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
+            fprintf(f.fp, "%s,%s", ds->cases[r->case_index[i]].name, r->model[j]);
+            csv_mm(f.fp, e->errors.rms);
+            csv_mm(f.fp, e->errors.max);
+            csv_mm(f.fp, e->errors.peak);
+            csv_mm(f.fp, e->errors.first_rise);
+            fputc('\n', f.fp);
+        }
+    return tirenv_compare__close(&f, diag);
+}
+
+static int write_timing_csv(const tirenv_compare_settings *s, const tirenv_compare_result *r,
+                            tirenv_diag *diag)
+{
+    tirenv_outfile f;
+    int status = tirenv_compare__open(&f, s->out_dir, "timing.csv", diag);
+    if (status)
+        return status;
+    fputs("model,seconds_per_position,ratio_to_nn,positions_per_pass,passes\n", f.fp);
+    const double t_nn = r->nn_model >= 0 ? r->time_per_position[r->nn_model] : NAN;
+    for (size_t j = 0; j < r->n_models; ++j) {
+        const double t = r->time_per_position[j];
+        fprintf(f.fp, "%s,", r->model[j]);
+        fprintf(f.fp, isfinite(t) ? "%.6g," : "nan,", t);
+        fprintf(f.fp, isfinite(t / t_nn) ? "%.6g," : "nan,", t / t_nn);
+        fprintf(f.fp, "%zu,%zu\n", r->timed_positions[j], r->timed_repeats[j]);
+    }
+    return tirenv_compare__close(&f, diag);
+}
+
+void tirenv_compare__data_note(FILE *fp, const tirenv_dataset *ds,
+                               const tirenv_compare_settings *s)
+{
+    const char *label = s->data_label ? s->data_label : ds->dir;
+    if (!(s->simulated || s->simulated_by)) {
+        fprintf(fp, "Data: `%s` (measurements).\n", label);
+        return;
+    }
+    fprintf(fp, "Data: `%s`. **These data are SIMULATED**", label);
+    if (s->simulated_by)
+        fprintf(fp, " by the virtual rig on the %s reference model",
+                tirenv_model_type_name(s->simulated_by));
+    fputs(", not measured on a real tire.\n", fp);
+}
+
+static int write_errors_md(const tirenv_dataset *ds, const tirenv_compare_settings *s,
+                           const tirenv_compare_result *r, tirenv_diag *diag)
+{
+    tirenv_outfile f;
+    int status = tirenv_compare__open(&f, s->out_dir, "errors.md", diag);
+    if (status)
+        return status;
+    fprintf(f.fp, "# Enveloping-curve errors%s%s\n\n", s->title ? ": " : "",
+            s->title ? s->title : "");
+    tirenv_compare__data_note(f.fp, ds, s);
+    fputc('\n', f.fp);
+    tirenv_compare__tables(f.fp, "##", ds, s, r);
+    return tirenv_compare__close(&f, diag);
+}
+
+static void series_label(const tirenv_compare_result *r, size_t j, char *buf, size_t size)
+{
+    const char *what = tirenv_compare__label(r, j);
+    if (what)
+        snprintf(buf, size, "%s (%s)", r->model[j], what);
+    else
+        snprintf(buf, size, "%s", r->model[j]);
+}
+
+static int write_plot_files(const tirenv_dataset *ds, const tirenv_compare_result *r,
+                            const tirenv_plot__settings *ps, tirenv_diag *diag)
+{
+    tirenv_plot__series series[TIRENV_COMPARE_MAX_MODELS];
+    char labels[TIRENV_COMPARE_MAX_MODELS][96];
+    for (size_t j = 0; j < r->n_models; ++j)
+        series_label(r, j, labels[j], sizeof labels[j]);
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < r->n_cases && !status; ++i) {
+        for (size_t j = 0; j < r->n_models; ++j) {
+            const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
+            series[j] = (tirenv_plot__series){r->model[j], labels[j], e->h,
+                                              e->status ? e->message : NULL};
+        }
+        status = tirenv_plot__case(ps, &ds->cases[r->case_index[i]], r->n_models, series,
+                                   diag);
+    }
+    return status;
+}
+
+int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn *nn,
+                   const tirenv_compare_settings *s, tirenv_compare_result *out,
+                   tirenv_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    out->nn_model = out->reference_model = -1;
+    out->tire = *tire;
+    if (!(s->rise_threshold >= 0 && isfinite(s->rise_threshold)) ||
+        !(s->min_time >= 0 && s->min_time < 3600) ||
+        !(s->fail_fraction > 0 && isfinite(s->fail_fraction)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "settings",
+                            "expected rise_threshold >= 0 m, min_time in [0, 3600) s and "
+                            "fail_fraction > 0; got %g, %g, %g",
+                            s->rise_threshold, s->min_time, s->fail_fraction);
+    const tirenv_model_type *types[TIRENV_COMPARE_MAX_MODELS];
+    int status = tirenv_tire_check(tire, diag);
+    if (!status)
+        status = select_cases(ds, s, out, diag);
+    if (!status)
+        status = select_models(s, nn, types, out, diag);
+    if (!status)
+        status = make_dirs(s->out_dir, diag);
+    if (status)
+        return status;
+    if (nn) {
+        const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+        for (size_t l = 0; l < t->n_layers; ++l) {
+            const size_t used = strlen(out->nn_layers);
+            snprintf(out->nn_layers + used, sizeof out->nn_layers - used, "%s%zu",
+                     l ? "-" : "", t->size[l]);
+        }
+    }
+
+    size_t n_max = 0;
+    for (size_t i = 0; i < out->n_cases; ++i) {
+        const size_t n = ds->cases[out->case_index[i]].curve.n;
+        n_max = n > n_max ? n : n_max;
+    }
+    out->entry = calloc(out->n_cases * out->n_models, sizeof *out->entry);
+    double *scratch = malloc(n_max * sizeof *scratch);
+    if (!out->entry || !scratch) {
+        free(scratch);
+        tirenv_compare_result_free(out);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
+    for (size_t i = 0; i < out->n_cases && !status; ++i)
+        for (size_t j = 0; j < out->n_models && !status; ++j) {
+            const size_t n = ds->cases[out->case_index[i]].curve.n;
+            tirenv_compare_entry *e = &out->entry[i * out->n_models + j];
+            if (!(e->h = malloc(n * sizeof *e->h)))
+                status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        }
+
+    for (size_t j = 0; j < out->n_models && !status; ++j) {
+        evaluator ev = {NULL, nn, s->nn_R0 > 0 ? s->nn_R0 : tire->springs.R0};
+        if ((int)j != out->nn_model && !(ev.m = tirenv_model_alloc(types[j], tire)))
+            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, out->model[j],
+                                  "cannot allocate the %s model", out->model[j]);
+        if (!status)
+            run_model(&ev, j, ds, s, out, scratch);
+        tirenv_model_free(ev.m);
+    }
+    free(scratch);
+
+    const tirenv_plot__settings ps = {s->out_dir, s->simulated || s->simulated_by != NULL,
+                                      s->simulated_by ? tirenv_model_type_name(s->simulated_by)
+                                                      : NULL,
+                                      s->gnuplot};
+    if (!status)
+        status = write_errors_csv(ds, s, out, diag);
+    if (!status)
+        status = write_timing_csv(s, out, diag);
+    if (!status)
+        status = write_errors_md(ds, s, out, diag);
+    if (!status)
+        status = write_plot_files(ds, out, &ps, diag);
+    /* Last, so that without gnuplot everything else is already written. */
+    for (size_t i = 0; i < out->n_cases && !status && s->images; ++i)
+        status = tirenv_plot__draw(&ps, ds->cases[out->case_index[i]].name, diag);
+    out->images = !status && s->images;
+    return status;
+}

@@ -1,0 +1,443 @@
+/* The paper's study in one call (MODEL.md section 8): identify, train, compare; then the
+ * paper's proposed workflow and the obstacles outside the training grid. */
+#include "tirenv/study.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "tirenv/io.h"
+#include "tirenv/rig.h"
+#include "tirenv/train.h"
+
+tirenv_study_settings tirenv_study_default(void)
+{
+    return (tirenv_study_settings){.data_dir = NULL, .out_dir = "out/study",
+                                   .tire = tirenv_tire_default(), .tire_label = NULL,
+                                   .trainer = "lm", .seed = 1, .simulated_by_ring = 1,
+                                   .images = 1, .progress = NULL, .progress_ctx = NULL};
+}
+
+enum { STEPS = 7 };
+
+static void progress(const tirenv_study_settings *s, const char *stage, size_t step)
+{
+    if (s->progress)
+        s->progress(s->progress_ctx, stage, step, STEPS);
+}
+
+/* ---- the network ------------------------------------------------------------------------ */
+
+typedef struct {
+    tirenv_samples set[3];         /* by tirenv_split */
+    double *x[3], *y[3];
+} sample_sets;
+
+static void sample_sets_free(sample_sets *ss)
+{
+    for (int k = 0; k < 3; ++k) {
+        free(ss->x[k]);
+        free(ss->y[k]);
+    }
+}
+
+/* Trains the network on `fit` (train and control splits) and reports validation on `val`,
+ * then writes it with its record to path. */
+static int train_network(const tirenv_study_settings *s, const tirenv_dataset *fit,
+                         const tirenv_dataset *val, const char *path, tirenv_nn **nn,
+                         tirenv_train_report *rep, tirenv_diag *diag)
+{
+    const tirenv_trainer_type *type = tirenv_trainer_type_find(s->trainer);
+    if (!type)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "trainer",
+                            "unknown trainer '%s'; expected lm, rprop or backprop", s->trainer);
+    sample_sets ss = {0};
+    const tirenv_dataset *from[3] = {fit, fit, val};
+    int status = TIRENV_OK;
+    for (int k = 0; k < 3 && !status; ++k)
+        status = tirenv_samples_from_dataset(from[k], (tirenv_split)k, &ss.set[k], &ss.x[k],
+                                             &ss.y[k], diag);
+    tirenv_train_settings ts = tirenv_train_default(type);
+    ts.seed = s->seed;
+    if (!status)
+        status = tirenv_train(type, &ts, &ss.set[0], &ss.set[1], &ss.set[2], nn, rep, diag);
+    if (!status) {
+        tirenv_train_record rec;
+        memset(&rec, 0, sizeof rec);
+        snprintf(rec.trainer, sizeof rec.trainer, "%s", s->trainer);
+        rec.settings = ts;
+        rec.report = *rep;
+        rec.fingerprint = TIRENV_FNV1A64_OFFSET;
+        for (int k = 0; k < 3; ++k)
+            rec.fingerprint = tirenv_samples_fingerprint(&ss.set[k], rec.fingerprint);
+        rec.R0 = s->tire.springs.R0;
+        snprintf(rec.data, sizeof rec.data, "%s", s->data_dir);
+        status = tirenv_nn_write_json(path, *nn, &rec, diag);
+    }
+    sample_sets_free(&ss);
+    return status;
+}
+
+/* ---- the paper's workflow: a network trained on the physical model's curves -------------- */
+
+/* The rig measured load and contact length together; a physical model is driven by load, so
+ * the load at a contact length is read off the data set's own cases (linear between them). */
+static double load_at(const tirenv_dataset *ds, double l_c)
+{
+    double lo_l = -INFINITY, lo_G = NAN, hi_l = INFINITY, hi_G = NAN;
+    for (size_t i = 0; i < ds->n; ++i) {
+        const double l = ds->cases[i].contact_length, G = ds->cases[i].load;
+        if (l <= l_c && l > lo_l) {
+            lo_l = l;
+            lo_G = G;
+        }
+        if (l >= l_c && l < hi_l) {
+            hi_l = l;
+            hi_G = G;
+        }
+    }
+    if (isnan(lo_G))
+        return hi_G;
+    if (isnan(hi_G) || hi_l == lo_l)
+        return lo_G;
+    return lo_G + (hi_G - lo_G) * (l_c - lo_l) / (hi_l - lo_l);
+}
+
+/* A grid of cleats over the data set's ranges, every fifth one for early stopping. */
+static const double grid_l_c[] = {0.28, 0.33, 0.38, 0.43};
+static const double grid_L[] = {0.05, 0.10, 0.15, 0.20, 0.25, 0.30};
+static const double grid_H[] = {0.025, 0.05, 0.075, 0.10};
+enum { N_GRID = 4 * 6 * 4 };
+
+static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted,
+                            tirenv_dataset *out, tirenv_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    const tirenv_curve *grid = &real->cases[0].curve; /* the data set's x_N grid */
+    out->cases = calloc(N_GRID, sizeof *out->cases);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, fitted);
+    if (!out->cases || !m) {
+        tirenv_model_free(m);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    }
+    snprintf(out->dir, sizeof out->dir, "(springs model curves)");
+    int status = TIRENV_OK;
+    for (size_t a = 0; a < 4 && !status; ++a)
+        for (size_t b = 0; b < 6 && !status; ++b)
+            for (size_t c = 0; c < 4 && !status; ++c) {
+                tirenv_case *cs = &out->cases[out->n];
+                snprintf(cs->name, sizeof cs->name, "g%zu", out->n);
+                cs->split = out->n % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
+                cs->contact_length = grid_l_c[a];
+                cs->L = grid_L[b];
+                cs->H = grid_H[c];
+                cs->load = load_at(real, cs->contact_length);
+                ++out->n;
+                if ((status = tirenv_curve_alloc(&cs->curve, grid->n)))
+                    break;
+                const double x_0 = tirenv_xN_origin(fitted->springs.R0, cs->contact_length,
+                                                    cs->L, cs->H);
+                for (size_t j = 0; j < grid->n; ++j) {
+                    cs->curve.x_N[j] = grid->x_N[j];
+                    cs->curve.x[j] = x_0 * (1 - grid->x_N[j]);
+                }
+                status = tirenv_case_predict_model(m, cs, cs->curve.h, diag);
+            }
+    tirenv_model_free(m);
+    return status;
+}
+
+/* ---- obstacles outside the training grid -------------------------------------------------- */
+
+typedef struct {
+    const char *name;
+    double l_c;
+    double L, H;                   /* extent: for x_N and the network */
+    tirenv_profile *(*make)(const double arg[3]);
+    double arg[3];
+} outside_design;
+
+static tirenv_profile *make_cleat(const double a[3]) { return tirenv_profile_cleat(a[0], a[1]); }
+static tirenv_profile *make_cylinder(const double a[3])
+{
+    return tirenv_profile_half_cylinder(a[0], 64);
+}
+static tirenv_profile *make_trapezoid(const double a[3])
+{
+    return tirenv_profile_trapezoid(a[0], a[1], a[2]);
+}
+
+/* Taller and shorter than any training cleat, and two shapes the network never saw (given to
+ * it as their bounding rectangle, as a user would). */
+static const outside_design outside[] = {
+    {"tall", 0.33, 0.15, 0.15, make_cleat, {0.15, 0.15, 0}},
+    {"short", 0.38, 0.03, 0.05, make_cleat, {0.03, 0.05, 0}},
+    {"cylinder", 0.33, 0.16, 0.08, make_cylinder, {0.08, 0, 0}},
+    {"trapezoid", 0.38, 0.25, 0.08, make_trapezoid, {0.10, 0.25, 0.08}},
+};
+enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
+
+/* The reference curves: the ring tire on the virtual rig, imported like the data set's. */
+static int outside_dataset(const tirenv_tire *tire, tirenv_dataset *out,
+                           tirenv_profile *profiles[N_OUTSIDE], tirenv_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    snprintf(out->dir, sizeof out->dir, "(virtual rig, ring tire)");
+    out->cases = calloc(N_OUTSIDE, sizeof *out->cases);
+    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
+    if (!out->cases || !ring) {
+        tirenv_model_free(ring);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    }
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < N_OUTSIDE && !status; ++i) {
+        const outside_design *d = &outside[i];
+        tirenv_case *cs = &out->cases[out->n++];
+        snprintf(cs->name, sizeof cs->name, "%s", d->name);
+        cs->split = TIRENV_SPLIT_VALIDATION;
+        cs->contact_length = d->l_c;
+        cs->L = d->L;
+        cs->H = d->H;
+        cs->profile = profiles[i] = d->make(d->arg);
+        if (!profiles[i]) {
+            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+            break;
+        }
+        status = tirenv_model_load_for_contact_length(ring, d->l_c, &cs->load, diag);
+        if (!status)
+            status = tirenv_model_set(ring, profiles[i], cs->load, diag);
+        tirenv_rig_settings rig = tirenv_rig_default();
+        rig.seed = 777 + i;
+        tirenv_rig_log log = {0};
+        if (!status)
+            status = tirenv_rig_simulate(ring, profiles[i], &rig, &log, diag);
+        tirenv_import_settings imp = tirenv_import_default();
+        imp.L = d->L;
+        imp.H = d->H;
+        imp.R0 = tire->springs.R0;
+        imp.contact_length = d->l_c;
+        if (!status)
+            status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve,
+                                               diag);
+        tirenv_rig_log_free(&log);
+    }
+    tirenv_model_free(ring);
+    return status;
+}
+
+static void own_dataset_free(tirenv_dataset *ds)
+{
+    for (size_t i = 0; i < ds->n; ++i)
+        tirenv_curve_free(&ds->cases[i].curve);
+    free(ds->cases);
+    memset(ds, 0, sizeof *ds);
+}
+
+/* ---- the report's own account ------------------------------------------------------------- */
+
+/* Mean RMS (m) of each model over the compared cases, NaN where it failed. */
+static double mean_rms(const tirenv_compare_result *r, size_t model)
+{
+    double sum = 0;
+    size_t n = 0;
+    for (size_t c = 0; c < r->n_cases; ++c) {
+        const double e = r->entry[c * r->n_models + model].errors.rms;
+        if (isfinite(e)) {
+            sum += e;
+            ++n;
+        }
+    }
+    return n ? sum / (double)n : NAN;
+}
+
+static void append_model_means(FILE *fp, const tirenv_compare_result *r)
+{
+    for (size_t m = 0; m < r->n_models; ++m)
+        fprintf(fp, "%s%s %.2f mm", m ? ", " : "", r->model[m], 1e3 * mean_rms(r, m));
+}
+
+static char *study_notes(const tirenv_fit_report *fit, const tirenv_train_report *nn,
+                         const tirenv_train_report *nn_phys, const tirenv_compare_result *phys,
+                         const tirenv_compare_result *out_r, const tirenv_dataset *outside_ds)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *fp = open_memstream(&buf, &len);
+    if (!fp)
+        return NULL;
+    fprintf(fp, "## How the models were obtained\n\n"
+                "**Physical model (springs)**, identified on the training cases by nonlinear "
+                "least squares on h (%zu points, %zu iterations, %.1f s, RMS %.2f mm); standard "
+                "errors from the covariance, scaled by the residual variance:\n\n"
+                "| parameter | value | standard error |\n|---|---|---|\n",
+            fit->n_points, fit->iterations, fit->seconds, 1e3 * fit->rms);
+    for (size_t i = 0; i < fit->n_params; ++i)
+        fprintf(fp, "| %s | %.6g | %.2g |\n", fit->names[i], fit->value[i], fit->std_error[i]);
+    fprintf(fp, "\nThe fitted tire is in `fitted.tir`.\n\n"
+                "**Empirical model (nn)**, 4-8-1, trained on the training cases with early "
+                "stopping on the control cases: %zu epochs in %.2f s (best at epoch %zu); RMS "
+                "error train %.2f mm, control %.2f mm, validation %.2f mm (`nn.json`).\n\n",
+            nn->total_epochs, nn->wall_time, nn->best_epoch, 1e3 * nn->error[0].rms,
+            1e3 * nn->error[1].rms, 1e3 * nn->error[2].rms);
+    fprintf(fp, "## The paper's proposed workflow: a network trained on the physical model\n\n"
+                "The paper proposes to train the network on curves of the physical model "
+                "instead of rig runs. Here: %d curves of the identified springs model over a "
+                "grid of cleats (lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact "
+                "lengths 0.28 to 0.43 m, loads read off the data set), no rig time. Trained in "
+                "%.2f s; its RMS error on the measured validation cases is %.2f mm against "
+                "%.2f mm for the network trained on the measurements. Mean RMS over the "
+                "validation cases: ",
+            N_GRID, nn_phys->wall_time, 1e3 * nn_phys->error[2].rms, 1e3 * nn->error[2].rms);
+    append_model_means(fp, phys);
+    fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
+    fprintf(fp, "## Outside the training range\n\n"
+                "Obstacles no training case resembles, with reference curves from the same "
+                "virtual rig (ring tire, SIMULATED): ");
+    for (size_t i = 0; i < outside_ds->n; ++i) {
+        const tirenv_case *c = &outside_ds->cases[i];
+        fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
+                1e3 * c->L, 1e3 * c->H, 1e3 * c->contact_length);
+    }
+    fprintf(fp, ". The network sees the half-cylinder and the trapezoid as their bounding "
+                "rectangles. RMS error per case (mm):\n\n| case |");
+    for (size_t m = 0; m < out_r->n_models; ++m)
+        fprintf(fp, " %s |", out_r->model[m]);
+    fprintf(fp, "\n|---|");
+    for (size_t m = 0; m < out_r->n_models; ++m)
+        fprintf(fp, "---|");
+    fprintf(fp, "\n");
+    for (size_t c = 0; c < out_r->n_cases; ++c) {
+        fprintf(fp, "| %s |", outside_ds->cases[out_r->case_index[c]].name);
+        for (size_t m = 0; m < out_r->n_models; ++m)
+            fprintf(fp, " %.2f |", 1e3 * out_r->entry[c * out_r->n_models + m].errors.rms);
+        fprintf(fp, "\n");
+    }
+    fprintf(fp, "\nMean: ");
+    append_model_means(fp, out_r);
+    const int nn_m = out_r->nn_model;
+    size_t springs_m = 0;
+    for (size_t m = 0; m < out_r->n_models; ++m)
+        if (strcmp(out_r->model[m], "springs") == 0)
+            springs_m = m;
+    if (nn_m >= 0) {
+        const double ratio = mean_rms(out_r, (size_t)nn_m) / mean_rms(out_r, springs_m);
+        fprintf(fp, ". Outside its training range the network's mean error is %.1f times the "
+                    "physical model's%s. Plots: [outside/](outside/report.md).\n\n",
+                ratio, ratio > 1 ? ": the physical model generalises, the network does not"
+                                 : ": here the network held up");
+    }
+    fclose(fp);
+    return buf;
+}
+
+/* ---- the pipeline -------------------------------------------------------------------------- */
+
+static int make_dir(const char *path, tirenv_diag *diag)
+{
+    if (mkdir(path, 0777) == 0 || errno == EEXIST)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot create directory: %s",
+                        strerror(errno));
+}
+
+static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, const char *dir,
+                                                const char *title)
+{
+    tirenv_compare_settings cs = tirenv_compare_default();
+    cs.split = TIRENV_SPLIT_VALIDATION;
+    cs.out_dir = dir;
+    cs.title = title;
+    cs.images = s->images;
+    cs.tire_label = "fitted.tir (identified on the training cases)";
+    if (s->simulated_by_ring) {
+        cs.simulated = 1;
+        cs.simulated_by = tirenv_model_ring;
+    }
+    return cs;
+}
+
+int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
+{
+    char path[1024], sub[1024];
+    tirenv_dataset ds = {0}, phys_ds = {0}, out_ds = {0};
+    tirenv_profile *profiles[N_OUTSIDE] = {0};
+    tirenv_nn *nn = NULL, *nn_phys = NULL;
+    tirenv_compare_result main_r = {0}, phys_r = {0}, out_r = {0};
+    tirenv_fit_report fit;
+    tirenv_train_report nn_rep, phys_rep;
+    tirenv_tire tire = s->tire;
+    char *notes = NULL;
+
+    int status = make_dir(s->out_dir, diag);
+    progress(s, "reading the data set", 0);
+    if (!status)
+        status = tirenv_dataset_read(s->data_dir, tire.springs.R0, &ds, diag);
+    progress(s, "identifying the springs model", 1);
+    tirenv_fit_settings fs = tirenv_fit_default();
+    fs.type = tirenv_model_springs;
+    if (!status)
+        status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &fit, diag);
+    snprintf(path, sizeof path, "%s/fitted.tir", s->out_dir);
+    if (!status)
+        status = tirenv_tir_write(path, &tire, diag);
+    progress(s, "training the network", 2);
+    snprintf(path, sizeof path, "%s/nn.json", s->out_dir);
+    if (!status)
+        status = train_network(s, &ds, &ds, path, &nn, &nn_rep, diag);
+    progress(s, "comparing on the validation cases", 3);
+    tirenv_compare_settings cs = compare_settings(s, s->out_dir, "tirenv study: the paper's "
+                                                  "comparison on the validation cases");
+    if (!status)
+        status = tirenv_compare(&ds, &tire, nn, &cs, &main_r, diag);
+
+    progress(s, "the paper's workflow: a network on physical-model curves", 4);
+    if (!status)
+        status = physical_dataset(&ds, &tire, &phys_ds, diag);
+    snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
+    if (!status)
+        status = train_network(s, &phys_ds, &ds, path, &nn_phys, &phys_rep, diag);
+    snprintf(sub, sizeof sub, "%s/physical-network", s->out_dir);
+    tirenv_compare_settings ps = compare_settings(s, sub, "A network trained on the identified "
+                                                  "physical model's curves (no rig time)");
+    ps.nn_label = "nn-physical.json (trained on springs-model curves)";
+    if (!status)
+        status = tirenv_compare(&ds, &tire, nn_phys, &ps, &phys_r, diag);
+    if (!status)
+        status = tirenv_compare_report(&ds, &ps, &phys_r, NULL, diag);
+
+    progress(s, "obstacles outside the training range", 5);
+    if (!status)
+        status = outside_dataset(&s->tire, &out_ds, profiles, diag);
+    snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
+    tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
+                                                  "range");
+    os.simulated = 1;
+    os.simulated_by = tirenv_model_ring;
+    os.data_label = "taller, shorter and other shapes on the virtual rig";
+    if (!status)
+        status = tirenv_compare(&out_ds, &tire, nn, &os, &out_r, diag);
+    if (!status)
+        status = tirenv_compare_report(&out_ds, &os, &out_r, NULL, diag);
+
+    progress(s, "writing the report", 6);
+    if (!status && !(notes = study_notes(&fit, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    if (!status)
+        status = tirenv_compare_report(&ds, &cs, &main_r, notes, diag);
+    progress(s, "done", STEPS);
+
+    free(notes);
+    tirenv_compare_result_free(&main_r);
+    tirenv_compare_result_free(&phys_r);
+    tirenv_compare_result_free(&out_r);
+    tirenv_nn_free(nn);
+    tirenv_nn_free(nn_phys);
+    own_dataset_free(&phys_ds);
+    own_dataset_free(&out_ds);
+    for (size_t i = 0; i < N_OUTSIDE; ++i)
+        tirenv_profile_free(profiles[i]);
+    tirenv_dataset_free(&ds);
+    return status;
+}

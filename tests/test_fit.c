@@ -1,0 +1,123 @@
+/* Identification: the fitter recovers the parameters that generated the curves. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include "testutil.h"
+#include "tirenv/tirenv.h"
+#include "tirenv/study.h"
+
+enum { N_CASES = 6, N_POINTS = 61 };
+
+/* Curves of the springs model at known c_r, c_b over cleats, on an x_N grid like the data
+ * set's, with Gaussian noise sigma on h: what a rig would have measured of that tire. */
+static void make_dataset(tirenv_dataset *ds, tirenv_case cases[], const tirenv_tire *truth,
+                         double sigma, unsigned long seed)
+{
+    static const double design[N_CASES][3] = {{0.28, 0.10, 0.05}, {0.33, 0.30, 0.075},
+                                              {0.38, 0.15, 0.10}, {0.43, 0.05, 0.025},
+                                              {0.33, 0.20, 0.05}, {0.38, 0.30, 0.025}};
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, seed);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, truth);
+    memset(ds, 0, sizeof *ds);
+    ds->n = N_CASES;
+    ds->cases = cases;
+    for (size_t i = 0; i < N_CASES; ++i) {
+        tirenv_case *c = &cases[i];
+        memset(c, 0, sizeof *c);
+        snprintf(c->name, sizeof c->name, "T%zu", i);
+        c->split = TIRENV_SPLIT_TRAIN;
+        c->contact_length = design[i][0];
+        c->L = design[i][1];
+        c->H = design[i][2];
+        tirenv_diag diag;
+        assert_int_equal(tirenv_model_load_for_contact_length(m, c->contact_length, &c->load,
+                                                              &diag), TIRENV_OK);
+        assert_int_equal(tirenv_curve_alloc(&c->curve, N_POINTS), TIRENV_OK);
+        const double x_0 = tirenv_xN_origin(truth->springs.R0, c->contact_length, c->L, c->H);
+        for (size_t j = 0; j < N_POINTS; ++j) {
+            c->curve.x_N[j] = -0.2 + 1.2 * (double)j / (N_POINTS - 1);
+            c->curve.x[j] = x_0 * (1 - c->curve.x_N[j]);
+        }
+        assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
+        for (size_t j = 0; j < N_POINTS; ++j)
+            c->curve.h[j] += gsl_ran_gaussian(rng, sigma);
+    }
+    tirenv_model_free(m);
+    gsl_rng_free(rng);
+}
+
+static void free_dataset(tirenv_case cases[])
+{
+    for (size_t i = 0; i < N_CASES; ++i)
+        tirenv_curve_free(&cases[i].curve);
+}
+
+/* From a start 40 % off, the fit lands within 3 reported standard errors of the truth (a
+ * 99.7 % interval if the errors are right), the errors are not absurdly wide (under 5 % of the
+ * value), and the residual RMS is the noise's sigma within 15 % (366 points). */
+static void test_recovers_known_parameters(void **state)
+{
+    (void)state;
+    tirenv_tire truth = tirenv_tire_default();
+    truth.springs.c_r = 1.537e6;
+    truth.springs.c_b = 1.371e4;
+    truth.springs.dphi = M_PI / 180; /* 1 deg keeps the test quick; the fit does not care */
+    static tirenv_case cases[N_CASES];
+    tirenv_dataset ds;
+    const double sigma = 2e-4;
+    make_dataset(&ds, cases, &truth, sigma, 4242);
+
+    tirenv_tire tire = truth;
+    tire.springs.c_r = 0.6 * truth.springs.c_r;
+    tire.springs.c_b = 1.4 * truth.springs.c_b;
+    tirenv_fit_settings s = tirenv_fit_default();
+    tirenv_fit_report rep;
+    tirenv_diag diag;
+    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag), TIRENV_OK);
+    print_message("c_r %.6g +- %.2g (true %.6g), c_b %.6g +- %.2g (true %.6g), rms %.3g mm, "
+                  "%zu iterations\n", rep.value[0], rep.std_error[0], truth.springs.c_r,
+                  rep.value[1], rep.std_error[1], truth.springs.c_b, 1e3 * rep.rms,
+                  rep.iterations);
+    const double true_values[2] = {truth.springs.c_r, truth.springs.c_b};
+    assert_int_equal(rep.n_params, 2);
+    for (size_t i = 0; i < 2; ++i) {
+        assert_true(rep.std_error[i] > 0);
+        assert_true(rep.std_error[i] < 0.05 * true_values[i]);
+        assert_near(rep.value[i], true_values[i], 3 * rep.std_error[i], 0);
+    }
+    assert_near(tire.springs.c_r, rep.value[0], 0, 0);
+    assert_near(rep.rms, sigma, 0.15 * sigma, 0);
+    assert_int_equal(rep.n_points, N_CASES * N_POINTS);
+    free_dataset(cases);
+}
+
+/* No training case, no fit: an error, not a garbage tire. */
+static void test_refuses_empty_split(void **state)
+{
+    (void)state;
+    tirenv_tire truth = tirenv_tire_default();
+    truth.springs.dphi = M_PI / 90;
+    static tirenv_case cases[N_CASES];
+    tirenv_dataset ds;
+    make_dataset(&ds, cases, &truth, 0, 1);
+    tirenv_tire tire = truth;
+    tirenv_fit_settings s = tirenv_fit_default();
+    tirenv_fit_report rep;
+    tirenv_diag diag;
+    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_VALIDATION, &s, &tire, &rep, &diag),
+                     TIRENV_EINVAL);
+    assert_true(strstr(diag.message, "too few") != NULL);
+    free_dataset(cases);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_recovers_known_parameters),
+        cmocka_unit_test(test_refuses_empty_split),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
