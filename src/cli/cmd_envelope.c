@@ -195,6 +195,9 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
 
 int cli_envelope_main(int argc, char *argv[])
 {
+    /* --model nn: the network, which reads --nn FILE (cmd_predict.c). */
+    if (cli_predict_is_nn(argc, argv))
+        return cli_predict_main(argc, argv);
     cli_options o;
     cli_options_init(&o);
     const tirenv_model_type *type = NULL;

@@ -1,0 +1,315 @@
+/* tirenv predict (and tirenv envelope --model nn): the enveloping curve of the trained network
+ * over a rectangular cleat, in the CSV of the other models. SPDX-License-Identifier:
+ * GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "tirenv/train.h"
+
+/* As tirenv envelope: at most this many positions, the default sweep from R0 + 0.02 m before
+ * the cleat to as far beyond it, 1 mm apart. */
+#define MAX_POSITIONS 10000000.0
+static const double margin = 0.02;     /* m */
+static const double default_dx = 0.001; /* m */
+
+static void usage(FILE *fp, const char *cmd)
+{
+    const int env = strcmp(cmd, "envelope") == 0;
+    fprintf(fp, "usage: tirenv %s --nn MODEL.json --cleat L,H (--load N | --contact-length M)\n"
+            "       %*s [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
+            "       %*s [--tire FILE] [--set KEY=VALUE]... [--method M]\n",
+            env ? "envelope --model nn" : "predict", env ? 19 : 7, "", env ? 19 : 7, "");
+    fputs("\n"
+          "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
+          "(paper, Tables 1 and 2), over a rectangular cleat centred at x = 0, in the CSV of\n"
+          "'tirenv envelope':\n"
+          "  x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n"
+          "h is the network at x_N(x) (MODEL.md section 1) on the approach half, mirrored on\n"
+          "the other; z = z_flat + h with z_flat = sqrt(R0^2 - (l_c/2)^2), the chord relation;\n"
+          "fz is the load; fx, contacts and iterations are 0 (the network knows none of them).\n"
+          "The network's inputs are the cleat's length and height, so only --cleat is\n"
+          "accepted. An input outside the range the network was trained on draws a warning\n"
+          "naming it. R0 is the one the network's data referred to (from the model file).\n"
+          "\n"
+          "options:\n"
+          "  --nn FILE            the model file written by 'tirenv train -o'\n"
+          "  --cleat L,H          rectangular cleat: length and height in m\n"
+          "  --contact-length M   the working regime, the network's input, in m\n"
+          "  --load N             or the load, N, turned into the contact length of the springs\n"
+          "                       model of the tire file (--contact-length is turned into the\n"
+          "                       fz column the same way)\n"
+          "  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"
+          "                       before the cleat to R0 + 0.02 m after it\n"
+          "  --dx DX              spacing of the positions, m (default 0.001)\n"
+          "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
+          "                       '-': standard output)\n",
+          fp);
+    cli_help_tire(fp, 1);
+    fputs("  -h, --help           show this help\n", fp);
+}
+
+/* "--model nn" or "--model=nn" among the arguments: tirenv envelope hands itself over. */
+int cli_predict_is_nn(int argc, char *argv[])
+{
+    for (int k = 1; k < argc; ++k) {
+        if (strcmp(argv[k], "--") == 0)
+            return 0;
+        if (strcmp(argv[k], "--model=nn") == 0 ||
+            (strcmp(argv[k], "--model") == 0 && k + 1 < argc && strcmp(argv[k + 1], "nn") == 0))
+            return 1;
+    }
+    return 0;
+}
+
+typedef struct {
+    const char *nn_path, *out_path;
+    int have_from, have_to;
+    double x_from, x_to, dx;  /* m */
+} predict_options;
+
+/* Parses the options; returns an exit code, or -1 to go on. */
+static int parse(int argc, char *argv[], cli_options *o, predict_options *p)
+{
+    enum { OPT_NN = CLI_OPT_FIRST_OWN, OPT_MODEL, OPT_X_FROM, OPT_X_TO, OPT_DX };
+    static const struct option longopts[] = {
+        CLI_TIRE_LONGOPTS,
+        CLI_METHOD_LONGOPTS,
+        CLI_LOAD_LONGOPTS,
+        CLI_OBSTACLE_LONGOPTS,
+        {"nn", required_argument, NULL, OPT_NN},
+        {"model", required_argument, NULL, OPT_MODEL},
+        {"x-from", required_argument, NULL, OPT_X_FROM},
+        {"x-to", required_argument, NULL, OPT_X_TO},
+        {"dx", required_argument, NULL, OPT_DX},
+        {"output", required_argument, NULL, 'o'},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    const char *cmd = argv[0];
+    int c, longindex = 0;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "ho:", longopts, &longindex)) != -1) {
+        switch (c) {
+        case 'h':
+            usage(stdout, cmd);
+            return CLI_EXIT_OK;
+        case 'o':
+            p->out_path = optarg;
+            break;
+        case OPT_NN:
+            p->nn_path = optarg;
+            break;
+        case OPT_MODEL:
+            if (strcmp(optarg, "nn") != 0) {
+                cli_error("%s: --model %s: this command runs the network only (--model nn)",
+                          cmd, optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_X_FROM:
+        case OPT_X_TO:
+        case OPT_DX: {
+            double *v = c == OPT_X_FROM ? &p->x_from : c == OPT_X_TO ? &p->x_to : &p->dx;
+            if (cli_parse_double(optarg, v)) {
+                cli_error("--%s: expected a number in m, got '%s'", longopts[longindex].name,
+                          optarg);
+                return CLI_EXIT_USAGE;
+            }
+            p->have_from |= c == OPT_X_FROM;
+            p->have_to |= c == OPT_X_TO;
+            break;
+        }
+        case '?':
+            usage(stderr, cmd);
+            return CLI_EXIT_USAGE;
+        default:
+            if (cli_option(o, c, optarg))
+                return CLI_EXIT_USAGE;
+        }
+    }
+    if (optind < argc) {
+        cli_error("%s: unexpected argument '%s'", cmd, argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    if (o->obstacle && o->obstacle != CLI_OPT_CLEAT) {
+        cli_error("%s: --nn: the network models rectangular cleats only (its inputs are the "
+                  "obstacle's length and height); got '%s', expected --cleat L,H", cmd,
+                  o->obstacle_arg);
+        return CLI_EXIT_USAGE;
+    }
+    const char *missing = !p->nn_path    ? "--nn MODEL.json"
+                          : !o->obstacle ? "--cleat L,H"
+                          : !o->have_load && !o->have_contact_length
+                              ? "--load N or --contact-length M"
+                              : NULL;
+    if (missing) {
+        cli_error("%s: expected %s; 'tirenv %s --help' shows the options", cmd, missing,
+                  strcmp(cmd, "envelope") == 0 ? "envelope --model nn" : "predict");
+        return CLI_EXIT_USAGE;
+    }
+    if (!(o->shape[0] > 0) || !(o->shape[1] > 0)) {
+        cli_error("--cleat %s: expected a positive length and height in m", o->obstacle_arg);
+        return CLI_EXIT_DATA;
+    }
+    return -1;
+}
+
+/* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
+ * multiplication so that no error accumulates. */
+static int positions(const predict_options *p, double **x_out, size_t *n_out)
+{
+    if (!(p->dx > 0) || !(p->x_to >= p->x_from)) {
+        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m",
+                  p->dx, p->x_from, p->x_to);
+        return CLI_EXIT_USAGE;
+    }
+    const double limit = p->x_to + p->dx * 1e-9;
+    const double steps = floor((limit - p->x_from) / p->dx);
+    if (!(steps < MAX_POSITIONS)) {
+        cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1,
+                  MAX_POSITIONS);
+        return CLI_EXIT_USAGE;
+    }
+    size_t n = (size_t)steps + 1;
+    while (n > 1 && p->x_from + (double)(n - 1) * p->dx > limit)
+        --n;
+    while (p->x_from + (double)n * p->dx <= limit)
+        ++n;
+    double *x = malloc(n * sizeof *x);
+    if (!x)
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    for (size_t k = 0; k < n; ++k)
+        x[k] = p->x_from + (double)k * p->dx;
+    *x_out = x;
+    *n_out = n;
+    return CLI_EXIT_OK;
+}
+
+/* The working regime both ways through the springs model of the tire file: the network takes
+ * the contact length, the CSV's fz column the load. */
+static int regime(const cli_options *o, const tirenv_tire *tire, double *l_c, double *load)
+{
+    tirenv_model *m = NULL;
+    int code = cli_model(tirenv_model_springs, tire, &m);
+    if (code)
+        return code;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    int status;
+    if (o->have_load) {
+        tirenv_flat flat;
+        *load = o->load;
+        status = tirenv_model_flat(m, o->load, &flat, &diag);
+        *l_c = flat.contact_length;
+    } else {
+        *l_c = o->contact_length;
+        status = tirenv_model_load_for_contact_length(m, o->contact_length, load, &diag);
+    }
+    tirenv_model_free(m);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+/* One warning per input the training never saw a value like. */
+static void warn_range(const char *cmd, const tirenv_nn *nn, const double u[])
+{
+    static const char *const what[TIRENV_NN_INPUTS] = {"x_N", "contact length",
+                                                       "obstacle height", "obstacle length"};
+    double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
+    tirenv_nn_get_input_range(nn, lo, hi);
+    for (size_t i = tirenv_nn_out_of_range(nn, u, TIRENV_NN_CONTACT_LENGTH);
+         i < TIRENV_NN_INPUTS; i = tirenv_nn_out_of_range(nn, u, i + 1))
+        fprintf(stderr, "tirenv: %s: warning: %s %g m is outside the range the network was "
+                "trained on (%g to %g m): the prediction is an extrapolation\n", cmd, what[i],
+                u[i], lo[i], hi[i]);
+}
+
+int cli_predict_main(int argc, char *argv[])
+{
+    cli_options o;
+    cli_options_init(&o);
+    predict_options p = {.nn_path = NULL, .out_path = "-", .dx = default_dx};
+    const char *cmd = argv[0];
+    int code = parse(argc, argv, &o, &p);
+    if (code >= 0)
+        return code;
+    const double L = o.shape[0], H = o.shape[1];
+
+    tirenv_tire tire;
+    if ((code = cli_tire(&o, &tire)))
+        return code;
+    tirenv_nn *nn = NULL;
+    tirenv_train_record rec;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    int status = tirenv_nn_read_json(p.nn_path, &nn, &rec, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    double *x = NULL, *h = NULL;
+    if (tirenv_nn_n_inputs(nn) != TIRENV_NN_INPUTS) {
+        cli_error("%s: %s: a network of %zu inputs; the enveloping model has %d (x_N, contact "
+                  "length, obstacle height, obstacle length)", cmd, p.nn_path,
+                  tirenv_nn_n_inputs(nn), TIRENV_NN_INPUTS);
+        code = CLI_EXIT_DATA;
+        goto done;
+    }
+    double l_c, load;
+    if ((code = regime(&o, &tire, &l_c, &load)))
+        goto done;
+    const double R0 = rec.R0 > 0 ? rec.R0 : tire.springs.R0;
+    if (rec.R0 > 0 && fabs(rec.R0 - tire.springs.R0) > 1e-9 * rec.R0)
+        fprintf(stderr, "tirenv: %s: warning: the network's data refer to a tire of R0 %g m, "
+                "the tire file's is %g m; x_N and z use %g m\n", cmd, rec.R0,
+                tire.springs.R0, R0);
+    const double u[TIRENV_NN_INPUTS] = {0.5, l_c, H, L};
+    warn_range(cmd, nn, u);
+
+    if (!p.have_from)
+        p.x_from = -0.5 * L - R0 - margin;
+    if (!p.have_to)
+        p.x_to = 0.5 * L + R0 + margin;
+    size_t n = 0;
+    if ((code = positions(&p, &x, &n)))
+        goto done;
+    if (!(h = malloc(n * sizeof *h))) {
+        code = cli_fail(TIRENV_ENOMEM, NULL);
+        goto done;
+    }
+    if ((status = tirenv_nn_envelope(nn, R0, l_c, L, H, n, x, h, &diag))) {
+        code = cli_fail(status, &diag);
+        goto done;
+    }
+    const double z_flat = sqrt(R0 * R0 - 0.25 * l_c * l_c);
+    tirenv_outfile out;
+    if (!(status = tirenv_outfile_open(&out, p.out_path, &diag))) {
+        fputs("x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n", out.fp);
+        for (size_t k = 0; k < n; ++k)
+            fprintf(out.fp, "%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k], load);
+        if (ferror(out.fp)) {
+            tirenv_outfile_abort(&out);
+            status = tirenv_error(&diag, TIRENV_EIO, p.out_path, 0, "", "write failed");
+        } else {
+            status = tirenv_outfile_commit(&out, &diag);
+        }
+    }
+    if (status) {
+        code = cli_fail(status, &diag);
+        goto done;
+    }
+    size_t peak = 0;
+    for (size_t k = 1; k < n; ++k)
+        if (h[k] > h[peak])
+            peak = k;
+    fprintf(stderr, "tirenv %s: nn model %s, contact length %.4g m (load %.6g N), cleat %.4g x "
+            "%.4g m, %zu positions: peak h %.3f mm at x = %.4f m\n",
+            strcmp(cmd, "envelope") == 0 ? "envelope" : "predict", p.nn_path, l_c, load, L, H,
+            n, h[peak] * 1e3, x[peak]);
+    code = CLI_EXIT_OK;
+done:
+    free(x);
+    free(h);
+    tirenv_nn_free(nn);
+    return code;
+}

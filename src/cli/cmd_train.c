@@ -1,0 +1,363 @@
+/* tirenv train: the empirical model's network trained on a data set (MODEL.md section 6).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli/cli.h"
+#include "tirenv/dataset.h"
+#include "tirenv/train.h"
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv train --data DIR [--trainer backprop|rprop|lm] [--seed S]\n"
+          "                    [--restarts N] [--epochs N] [--patience N] [--hidden N[,N...]]\n"
+          "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
+          "                    [--lm-solver cholesky|gsl] [-o MODEL.json]\n"
+          "                    [--tire FILE] [--set KEY=VALUE]...\n"
+          "\n"
+          "Trains the empirical model's network (inputs x_N, contact length, obstacle height,\n"
+          "obstacle length; output h) on the cases of a data set: the manifest's train split\n"
+          "trains it, the control split stops it early (the weights of least control error\n"
+          "are kept), the validation split is only reported. Prints RMS and maximum error in\n"
+          "mm per split, epochs and wall time; writes the model file with -o. Runs are\n"
+          "reproducible bit for bit for a given --seed. A progress bar is drawn on a terminal.\n"
+          "\n"
+          "options:\n"
+          "  --data DIR           data set directory with cases.csv\n"
+          "  --trainer NAME       lm (default): Levenberg-Marquardt; rprop: iRprop-;\n"
+          "                       backprop: the paper's back-propagation with momentum\n"
+          "  --seed S             seed of the initial weights (and online order), default 1\n"
+          "  --restarts N         independent starts, best on control kept (default: lm and\n"
+          "                       rprop 4, backprop 1)\n"
+          "  --epochs N           epochs per restart (default: lm 1000, rprop 5000,\n"
+          "                       backprop 200000, the paper's cycles)\n"
+          "  --patience N         stop after N epochs without a better control error; 0 never\n"
+          "                       (default: lm 30, rprop 500, backprop 0)\n"
+          "  --hidden N[,N...]    hidden layer sizes (default 8: the paper's 4-8-1)\n"
+          "  --learning-rate ETA  backprop: learning rate (default 0.01)\n"
+          "  --momentum A         backprop: momentum in [0, 1) (default 0.9)\n"
+          "  --batch              backprop: one update per epoch instead of per sample\n"
+          "  --lm-solver NAME     lm: cholesky (default) or gsl (gsl_multifit_nlinear)\n"
+          "  -o, --output FILE    write the model (JSON), complete or not at all; without it\n"
+          "                       the network is not saved\n"
+          "  --tire FILE, --set KEY=VALUE\n"
+          "                       the tire whose UNLOADED_RADIUS imports raw logs and defines\n"
+          "                       x_N (default: the default tire)\n"
+          "  -h, --help           show this help\n",
+          fp);
+}
+
+/* The bar on standard error, redrawn at most ten times a second. */
+typedef struct {
+    const char *trainer;
+    double last;           /* s, when drawn last */
+    int drawn;
+} bar;
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int draw(const tirenv_train_progress *p, void *data)
+{
+    bar *b = data;
+    const double t = now_s();
+    if (b->drawn && t - b->last < 0.1)
+        return 0;
+    b->last = t;
+    b->drawn = 1;
+    static const char hashes[] = "##############################";
+    const int width = (int)sizeof hashes - 1;
+    const int filled = (int)((double)width * (double)p->epoch / (double)p->max_epochs);
+    fprintf(stderr, "\rtirenv: train: %s restart %zu/%zu [%-*.*s] epoch %zu/%zu, control RMS "
+            "%.3f mm (best %.3f at %zu)\033[K",
+            b->trainer, p->restart + 1, p->restarts, width, filled, hashes, p->epoch,
+            p->max_epochs, p->control_rms * 1e3, p->best_rms * 1e3, p->best_epoch);
+    return 0;
+}
+
+static int parse_hidden(const char *s, tirenv_nn_topology *t)
+{
+    size_t n = 0;
+    const char *p = s;
+    for (;;) {
+        char buf[32];
+        const size_t len = strcspn(p, ",");
+        long v;
+        if (len == 0 || len >= sizeof buf || n >= TIRENV_NN_MAX_LAYERS - 2)
+            return -1;
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        if (cli_parse_count(buf, 1, TIRENV_NN_MAX_WIDTH, &v))
+            return -1;
+        t->size[1 + n++] = (size_t)v;
+        if (p[len] == '\0')
+            break;
+        p += len + 1;
+    }
+    t->n_layers = n + 2;
+    t->size[0] = TIRENV_NN_INPUTS;
+    t->size[n + 1] = 1;
+    return 0;
+}
+
+typedef struct {
+    const char *data, *out;
+    const tirenv_trainer_type *type;
+    int have_seed, have_restarts, have_epochs, have_patience, have_hidden, have_lr,
+        have_momentum, batch, have_solver;
+    long seed, restarts, epochs, patience;
+    double learning_rate, momentum;
+    tirenv_lm_solver solver;
+    tirenv_nn_topology topology;
+} train_options;
+
+/* Parses the options; returns an exit code, or -1 to go on. */
+static int parse(int argc, char *argv[], cli_options *o, train_options *t)
+{
+    enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_RESTARTS, OPT_EPOCHS,
+           OPT_PATIENCE, OPT_HIDDEN, OPT_LR, OPT_MOMENTUM, OPT_BATCH, OPT_SOLVER };
+    static const struct option longopts[] = {
+        CLI_TIRE_LONGOPTS,
+        {"data", required_argument, NULL, OPT_DATA},
+        {"trainer", required_argument, NULL, OPT_TRAINER},
+        {"seed", required_argument, NULL, OPT_SEED},
+        {"restarts", required_argument, NULL, OPT_RESTARTS},
+        {"epochs", required_argument, NULL, OPT_EPOCHS},
+        {"patience", required_argument, NULL, OPT_PATIENCE},
+        {"hidden", required_argument, NULL, OPT_HIDDEN},
+        {"learning-rate", required_argument, NULL, OPT_LR},
+        {"momentum", required_argument, NULL, OPT_MOMENTUM},
+        {"batch", no_argument, NULL, OPT_BATCH},
+        {"lm-solver", required_argument, NULL, OPT_SOLVER},
+        {"output", required_argument, NULL, 'o'},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    int c, longindex = 0;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "ho:", longopts, &longindex)) != -1) {
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return CLI_EXIT_OK;
+        case 'o':
+            t->out = optarg;
+            break;
+        case OPT_DATA:
+            t->data = optarg;
+            break;
+        case OPT_TRAINER:
+            if (!(t->type = tirenv_trainer_type_find(optarg))) {
+                cli_error("--trainer: expected backprop, rprop or lm, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_SEED:
+        case OPT_RESTARTS:
+        case OPT_EPOCHS:
+        case OPT_PATIENCE: {
+            const long min = c == OPT_SEED || c == OPT_PATIENCE ? 0 : 1;
+            long *v = c == OPT_SEED ? &t->seed : c == OPT_RESTARTS ? &t->restarts
+                      : c == OPT_EPOCHS ? &t->epochs : &t->patience;
+            if (cli_parse_count(optarg, min, LONG_MAX, v)) {
+                cli_error("--%s: expected an integer >= %ld, got '%s'",
+                          longopts[longindex].name, min, optarg);
+                return CLI_EXIT_USAGE;
+            }
+            t->have_seed |= c == OPT_SEED;
+            t->have_restarts |= c == OPT_RESTARTS;
+            t->have_epochs |= c == OPT_EPOCHS;
+            t->have_patience |= c == OPT_PATIENCE;
+            break;
+        }
+        case OPT_HIDDEN:
+            if (parse_hidden(optarg, &t->topology)) {
+                cli_error("--hidden: expected 1 to %d comma-separated layer sizes from 1 to %d, "
+                          "got '%s'", TIRENV_NN_MAX_LAYERS - 2, TIRENV_NN_MAX_WIDTH, optarg);
+                return CLI_EXIT_USAGE;
+            }
+            t->have_hidden = 1;
+            break;
+        case OPT_LR:
+        case OPT_MOMENTUM: {
+            double v;
+            const int lr = c == OPT_LR;
+            if (cli_parse_double(optarg, &v) || (lr ? !(v > 0) : !(v >= 0 && v < 1))) {
+                cli_error("--%s: expected %s, got '%s'", longopts[longindex].name,
+                          lr ? "a number > 0" : "a number in [0, 1)", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            *(lr ? &t->learning_rate : &t->momentum) = v;
+            *(lr ? &t->have_lr : &t->have_momentum) = 1;
+            break;
+        }
+        case OPT_BATCH:
+            t->batch = 1;
+            break;
+        case OPT_SOLVER:
+            if (strcmp(optarg, "cholesky") == 0)
+                t->solver = TIRENV_LM_CHOLESKY;
+            else if (strcmp(optarg, "gsl") == 0)
+                t->solver = TIRENV_LM_GSL;
+            else {
+                cli_error("--lm-solver: expected cholesky or gsl, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            t->have_solver = 1;
+            break;
+        case '?':
+            usage(stderr);
+            return CLI_EXIT_USAGE;
+        default:
+            if (cli_option(o, c, optarg))
+                return CLI_EXIT_USAGE;
+        }
+    }
+    if (optind < argc) {
+        cli_error("train: unexpected argument '%s'", argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    if (!t->data) {
+        cli_error("train: expected --data DIR; 'tirenv train --help' shows the options");
+        return CLI_EXIT_USAGE;
+    }
+    return -1;
+}
+
+static tirenv_train_settings settings_from(const train_options *t)
+{
+    tirenv_train_settings s = tirenv_train_default(t->type);
+    if (t->have_seed)
+        s.seed = (unsigned long)t->seed;
+    if (t->have_restarts)
+        s.restarts = (size_t)t->restarts;
+    if (t->have_epochs)
+        s.max_epochs = (size_t)t->epochs;
+    if (t->have_patience)
+        s.patience = (size_t)t->patience;
+    if (t->have_hidden)
+        s.topology = t->topology;
+    if (t->have_lr)
+        s.backprop.learning_rate = t->learning_rate;
+    if (t->have_momentum)
+        s.backprop.momentum = t->momentum;
+    if (t->batch)
+        s.backprop.online = 0;
+    if (t->have_solver)
+        s.lm.solver = t->solver;
+    return s;
+}
+
+static void print_report(const char *data, const tirenv_dataset *ds,
+                         const tirenv_train_settings *s, const char *trainer,
+                         const tirenv_train_report *r)
+{
+    size_t cases[3] = {0, 0, 0};
+    for (size_t k = 0; k < ds->n; ++k)
+        ++cases[ds->cases[k].split];
+    printf("tirenv train: %s on %s: %zu train, %zu control, %zu validation cases; network ",
+           trainer, data, cases[0], cases[1], cases[2]);
+    for (size_t l = 0; l < s->topology.n_layers; ++l)
+        printf("%s%zu", l ? "-" : "", s->topology.size[l]);
+    printf(", seed %lu\n", s->seed);
+    printf("  kept restart %zu of %zu: least control error at epoch %zu of %zu (stopped: %s, "
+           "%.3f s in)\n", r->restart + 1, s->restarts, r->best_epoch, r->epochs,
+           tirenv_train_stop_name(r->stop), r->best_time);
+    printf("  %zu epochs in all, wall time %.3f s\n", r->total_epochs, r->wall_time);
+    printf("  %-12s %8s %10s %10s\n", "split", "points", "RMS mm", "max mm");
+    for (int sp = TIRENV_SPLIT_TRAIN; sp <= TIRENV_SPLIT_VALIDATION; ++sp)
+        printf("  %-12s %8zu %10.4f %10.4f\n", tirenv_split_name((tirenv_split)sp),
+               r->error[sp].n, r->error[sp].rms * 1e3, r->error[sp].max * 1e3);
+}
+
+int cli_train_main(int argc, char *argv[])
+{
+    cli_options o;
+    cli_options_init(&o);
+    train_options t;
+    memset(&t, 0, sizeof t);
+    t.type = tirenv_trainer_lm;
+    int code = parse(argc, argv, &o, &t);
+    if (code >= 0)
+        return code;
+
+    tirenv_tire tire;
+    if ((code = cli_tire(&o, &tire)))
+        return code;
+    tirenv_dataset ds;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    int status = tirenv_dataset_read(t.data, tire.springs.R0, &ds, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    tirenv_samples s[3];
+    double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
+    tirenv_nn *nn = NULL;
+    for (int sp = 0; sp < 3 && !status; ++sp)
+        status = tirenv_samples_from_dataset(&ds, (tirenv_split)sp, &s[sp], &x[sp], &y[sp],
+                                             &diag);
+    if (!status && s[TIRENV_SPLIT_TRAIN].n == 0)
+        status = tirenv_error(&diag, TIRENV_EINVAL, t.data, 0, "split",
+                              "no training cases in the manifest (split 'train')");
+    if (status) {
+        code = cli_fail(status, &diag);
+        goto done;
+    }
+
+    tirenv_train_settings set = settings_from(&t);
+    bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0};
+    if (isatty(STDERR_FILENO)) {
+        set.progress = draw;
+        set.progress_data = &b;
+    }
+    tirenv_train_report rep;
+    status = tirenv_train(t.type, &set, &s[0], &s[1], &s[2], &nn, &rep, &diag);
+    if (b.drawn)
+        fputs("\r\033[K", stderr);
+    if (status) {
+        code = cli_fail(status, &diag);
+        goto done;
+    }
+    print_report(t.data, &ds, &set, b.trainer, &rep);
+
+    if (t.out) {
+        tirenv_train_record rec;
+        memset(&rec, 0, sizeof rec);
+        snprintf(rec.trainer, sizeof rec.trainer, "%s", b.trainer);
+        rec.settings = set;
+        rec.settings.progress = NULL;
+        rec.settings.progress_data = NULL;
+        rec.report = rep;
+        uint64_t h = TIRENV_FNV1A64_OFFSET;
+        for (int sp = 0; sp < 3; ++sp)
+            h = tirenv_samples_fingerprint(&s[sp], h);
+        rec.fingerprint = h;
+        rec.R0 = tire.springs.R0;
+        snprintf(rec.data, sizeof rec.data, "%s", t.data);
+        if ((status = tirenv_nn_write_json(t.out, nn, &rec, &diag))) {
+            code = cli_fail(status, &diag);
+            goto done;
+        }
+        printf("  model written to %s\n", t.out);
+    } else {
+        printf("  model not saved (no -o FILE)\n");
+    }
+    code = CLI_EXIT_OK;
+done:
+    tirenv_nn_free(nn);
+    for (int sp = 0; sp < 3; ++sp) {
+        free(x[sp]);
+        free(y[sp]);
+    }
+    tirenv_dataset_free(&ds);
+    return code;
+}
