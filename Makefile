@@ -2,7 +2,7 @@
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
 JOBS       ?= 2
-DEMO_OUT   ?= out/demo
+DEMO_OUT   ?= out/study
 
 .PHONY: all deps build test test-asan demo bench clean
 
@@ -23,10 +23,11 @@ test: build
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS)
+	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
+# The paper's study on the embedded (simulated) data set: fit, train, compare, report.
 demo: build
-	@sh scripts/demo.sh $(BUILD)/tirenv $(DEMO_OUT)
+	@$(BUILD)/tirenv study -o $(DEMO_OUT)
 
 bench: build
 	@$(BUILD)/tirenv bench

@@ -103,7 +103,7 @@ static void test_csv_round_trip(void **state)
     char path[64];
     write_temp(path, "");
     tirenv_diag d;
-    assert_int_equal(tirenv_curve_write_csv(path, &c, &d), TIRENV_OK);
+    assert_int_equal(tirenv_curve_write_csv(path, &c, NULL, &d), TIRENV_OK);
     assert_int_equal(tirenv_curve_read_csv(path, &back, &d), TIRENV_OK);
     assert_int_equal(back.n, c.n);
     for (size_t k = 0; k < c.n; k++)
@@ -114,11 +114,11 @@ static void test_csv_round_trip(void **state)
     struct stat before, after;
     assert_int_equal(stat(path, &before), 0);
     c.h[3] = NAN;
-    assert_int_equal(tirenv_curve_write_csv(path, &c, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_curve_write_csv(path, &c, NULL, &d), TIRENV_EINVAL);
     assert_int_equal(stat(path, &after), 0);
     assert_int_equal(after.st_size, before.st_size);
     /* A directory that does not exist: an I/O error and no file. */
-    assert_int_equal(tirenv_curve_write_csv("/nonexistent-dir/curve.csv", &back, &d),
+    assert_int_equal(tirenv_curve_write_csv("/nonexistent-dir/curve.csv", &back, NULL, &d),
                      TIRENV_EIO);
     tirenv_curve_free(&c);
     remove(path);

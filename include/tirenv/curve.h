@@ -30,9 +30,11 @@ double tirenv_xN_origin(double R0, double l_c, double L, double H);
 /* x_N = (x - x_0)/(0 - x_0) for the obstacle centred at 0. */
 double tirenv_xN(double x, double x_0);
 
-/* CSV "x_N,x_m,h_m" (the import's output, the data set's curve files); atomic write. */
+/* CSV "x_N,x_m,h_m" (the import's output, the data set's curve files); '#' lines are
+ * comments. The write is atomic and starts with comment (may be NULL) as '#' lines. */
 int tirenv_curve_read_csv(const char *path, tirenv_curve *out, tirenv_diag *diag);
-int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, tirenv_diag *diag);
+int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *comment,
+                           tirenv_diag *diag);
 
 #ifdef __cplusplus
 }

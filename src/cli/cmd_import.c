@@ -194,7 +194,7 @@ int cli_import_main(int argc, char *argv[])
     tirenv_rig__info info;
     int status = tirenv_rig__import_file(a.log, &a.s, &curve, &info, &diag);
     if (status == TIRENV_OK)
-        status = tirenv_curve_write_csv(a.output, &curve, &diag);
+        status = tirenv_curve_write_csv(a.output, &curve, NULL, &diag);
     if (status == TIRENV_OK)
         summary(a.log, &info, &curve);
     tirenv_curve_free(&curve);

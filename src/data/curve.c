@@ -70,7 +70,8 @@ double tirenv_xN(double x, double x_0)
 /* ---- writing ---------------------------------------------------------------------------- */
 
 /* %.17g round-trips every double, so a curve read back is bit-identical. */
-int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, tirenv_diag *diag)
+int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *comment,
+                           tirenv_diag *diag)
 {
     for (size_t k = 0; k < c->n; k++)
         if (!isfinite(c->x_N[k]) || !isfinite(c->x[k]) || !isfinite(c->h[k]))
@@ -80,6 +81,7 @@ int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, tirenv_diag 
     int status = tirenv_outfile_open(&f, path, diag);
     if (status != TIRENV_OK)
         return status;
+    tirenv_outfile_comment(&f, comment);
     int bad = fprintf(f.fp, "%s\n", curve_header) < 0;
     for (size_t k = 0; k < c->n && !bad; k++)
         bad = fprintf(f.fp, "%.17g,%.17g,%.17g\n", c->x_N[k], c->x[k], c->h[k]) < 0;

@@ -80,7 +80,7 @@ static int build_case(const char *dir, size_t i, tirenv_model *ring, double *loa
     char path[1024], comment[1024];
     snprintf(path, sizeof path, "%s/logs/%s.csv", dir, c->name);
     snprintf(comment, sizeof comment,
-             "SIMULATED rig log (tirenv virtual rig, flexible-ring reference tire), not a "
+             "SIMULATED rig data (tirenv virtual rig, flexible-ring reference tire), not a "
              "measurement.\ncase %s: contact length %.2f m, load %.2f N, cleat %.3f x %.3f m; "
              "speed %g m/s, %g Hz, noise sigma x %g m, z %g m, seed %lu",
              c->name, c->contact_length, *load, c->L, c->H, rig.speed, rig.rate, rig.noise_x,
@@ -97,7 +97,7 @@ static int build_case(const char *dir, size_t i, tirenv_model *ring, double *loa
         status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &curve, diag);
     snprintf(path, sizeof path, "%s/curves/%s.csv", dir, c->name);
     if (!status)
-        status = tirenv_curve_write_csv(path, &curve, diag);
+        status = tirenv_curve_write_csv(path, &curve, comment, diag);
     tirenv_curve_free(&curve);
     tirenv_rig_log_free(&log);
     tirenv_profile_free(cleat);
@@ -137,6 +137,9 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
     snprintf(path, sizeof path, "%s/cases.csv", dir);
     if ((status = tirenv_outfile_open(&f, path, diag)))
         return status;
+    tirenv_outfile_comment(&f, "SIMULATED data set: 28 cleat runs of tirenv's flexible-ring "
+                               "reference tire on the virtual rig,\nnot measurements of a real "
+                               "tire. Regenerate with: tirenv dataset build");
     fputs("case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve\n",
           f.fp);
     for (size_t i = 0; i < n; ++i)

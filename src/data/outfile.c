@@ -116,3 +116,16 @@ void tirenv_outfile_abort(tirenv_outfile *f)
         remove(f->tmp);
     f->tmp[0] = '\0';
 }
+
+void tirenv_outfile_comment(tirenv_outfile *f, const char *text)
+{
+    if (!text)
+        return;
+    fputs("# ", f->fp);
+    for (const char *c = text; *c; ++c) {
+        fputc(*c, f->fp);
+        if (*c == '\n')
+            fputs("# ", f->fp);
+    }
+    fputc('\n', f->fp);
+}

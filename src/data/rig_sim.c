@@ -72,12 +72,7 @@ int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    if (comment) {
-        fputs("# ", f.fp);
-        for (const char *c = comment; *c; ++c)
-            fputs(*c == '\n' ? "\n# " : (char[2]){*c, 0}, f.fp);
-        fputc('\n', f.fp);
-    }
+    tirenv_outfile_comment(&f, comment);
     fputs("t_s,x_m,z_m\n", f.fp);
     /* Resolution 1 microsecond and 1 micrometre: more digits would only store noise. */
     for (size_t k = 0; k < log->n; ++k)
