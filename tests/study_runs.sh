@@ -1,0 +1,28 @@
+#!/bin/sh
+# tirenv study end to end on the embedded data set: every promised file, the simulated-data
+# label, one error row per validation case and model, and a fitted tire that reads back.
+set -eu
+bin=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+check() { # check N "what" command...
+    n=$1 what=$2
+    shift 2
+    if "$@" >/dev/null 2>&1; then pass=$((pass + 1)); echo "ok $n - $what"
+    else fail=$((fail + 1)); echo "not ok $n - $what"; fi
+}
+"$bin" study -o "$tmp/s" >"$tmp/out" 2>&1 || { cat "$tmp/out"; echo "0 passed, 1 failed"; exit 1; }
+for f in report.md errors.csv errors.md timing.csv fitted.tir nn.json nn-physical.json \
+         F.png F.svg F.gp F.dat J.png R.png AB.png physical-network/report.md \
+         outside/report.md outside/tall.png outside/cylinder.png; do
+    check 1 "study wrote $f" test -s "$tmp/s/$f"
+done
+check 2 "the report says the data are simulated" grep -q "SIMULATED" "$tmp/s/report.md"
+# 4 validation cases x 4 models (rigid, springs, ring, nn) plus the header.
+check 3 "errors.csv: one row per case and model" test "$(wc -l <"$tmp/s/errors.csv")" -eq 17
+check 4 "the fitted tire reads back" "$bin" flat --tire "$tmp/s/fitted.tir" --contact-length 0.33
+check 5 "the trained network predicts case R" "$bin" predict --nn "$tmp/s/nn.json" \
+    --cleat 0.10,0.10 --contact-length 0.28 -o "$tmp/R.csv"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
