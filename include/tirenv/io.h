@@ -41,6 +41,9 @@ typedef struct {
 int tirenv_outfile_open(tirenv_outfile *f, const char *path, tirenv_diag *diag);
 /* Flushes, closes and renames into place; on any error removes the temporary file. */
 int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag);
+/* Creates a directory and its missing parents (mkdir -p); an existing one is fine. */
+int tirenv_mkdir_p(const char *path, tirenv_diag *diag);
+
 /* Writes text as '#' comment lines ("# " before each line of it); NULL writes nothing. */
 void tirenv_outfile_comment(tirenv_outfile *f, const char *text);
 /* Closes and removes the temporary file (after a failure); safe to call twice. */

@@ -2,10 +2,8 @@
  * like the paper's (Table 2: 28 obstacles, 19 train / 5 control / 4 validation; Table 3). */
 #include "tirenv/dataset.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "tirenv/io.h"
 #include "tirenv/rig.h"
 
@@ -50,13 +48,6 @@ const tirenv_case_design *tirenv_dataset_design(size_t *n)
     return design;
 }
 
-static int make_dir(const char *path, tirenv_diag *diag)
-{
-    if (mkdir(path, 0777) == 0 || errno == EEXIST)
-        return TIRENV_OK;
-    return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot create directory: %s",
-                        strerror(errno));
-}
 
 /* One case: load the ring to the contact length, run the rig, write the log, import it. */
 static int build_case(const char *dir, size_t i, tirenv_model *ring, double *load,
@@ -110,13 +101,13 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
 {
     const size_t n = sizeof design / sizeof design[0];
     char path[1024];
-    int status = make_dir(dir, diag);
+    int status = tirenv_mkdir_p(dir, diag);
     snprintf(path, sizeof path, "%s/logs", dir);
     if (!status)
-        status = make_dir(path, diag);
+        status = tirenv_mkdir_p(path, diag);
     snprintf(path, sizeof path, "%s/curves", dir);
     if (!status)
-        status = make_dir(path, diag);
+        status = tirenv_mkdir_p(path, diag);
     if (status)
         return status;
     tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);

@@ -129,3 +129,32 @@ void tirenv_outfile_comment(tirenv_outfile *f, const char *text)
     }
     fputc('\n', f->fp);
 }
+
+/* mkdir -p: an output directory such as out/study usually needs "out" first. */
+int tirenv_mkdir_p(const char *path, tirenv_diag *diag)
+{
+    char buf[512];
+    if (!path || !*path)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "out_dir", "empty output directory");
+    if (strlen(path) >= sizeof buf - 64)
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "out_dir",
+                            "output directory name longer than %zu characters",
+                            sizeof buf - 65);
+    strcpy(buf, path);
+    for (char *p = buf + 1; *p; ++p) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "cannot create directory: %s",
+                                strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "cannot create directory: %s",
+                            strerror(errno));
+    struct stat st;
+    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))
+        return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "exists and is not a directory");
+    return TIRENV_OK;
+}

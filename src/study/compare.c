@@ -315,35 +315,6 @@ static int select_models(const tirenv_compare_settings *s, const tirenv_nn *nn,
     return TIRENV_OK;
 }
 
-/* mkdir -p: the default out/compare usually needs "out" first. */
-static int make_dirs(const char *path, tirenv_diag *diag)
-{
-    char buf[512];
-    if (!path || !*path)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "out_dir", "empty output directory");
-    if (strlen(path) >= sizeof buf - 64)
-        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "out_dir",
-                            "output directory name longer than %zu characters",
-                            sizeof buf - 65);
-    strcpy(buf, path);
-    for (char *p = buf + 1; *p; ++p) {
-        if (*p != '/')
-            continue;
-        *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-            return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "cannot create directory: %s",
-                                strerror(errno));
-        *p = '/';
-    }
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-        return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "cannot create directory: %s",
-                            strerror(errno));
-    struct stat st;
-    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))
-        return tirenv_error(diag, TIRENV_EIO, buf, 0, "", "exists and is not a directory");
-    return TIRENV_OK;
-}
-
 /* ---- evaluating --------------------------------------------------------------------------- */
 
 static double now_seconds(void)
@@ -584,7 +555,7 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
     if (!status)
         status = select_models(s, nn, types, out, diag);
     if (!status)
-        status = make_dirs(s->out_dir, diag);
+        status = tirenv_mkdir_p(s->out_dir, diag);
     if (status)
         return status;
     if (nn) {

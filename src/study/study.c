@@ -2,12 +2,10 @@
  * paper's proposed workflow and the obstacles outside the training grid. */
 #include "tirenv/study.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "tirenv/io.h"
 #include "tirenv/rig.h"
 #include "tirenv/train.h"
@@ -334,13 +332,6 @@ static char *study_notes(const tirenv_fit_report *fit, const tirenv_train_report
 
 /* ---- the pipeline -------------------------------------------------------------------------- */
 
-static int make_dir(const char *path, tirenv_diag *diag)
-{
-    if (mkdir(path, 0777) == 0 || errno == EEXIST)
-        return TIRENV_OK;
-    return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot create directory: %s",
-                        strerror(errno));
-}
 
 static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, const char *dir,
                                                 const char *title)
@@ -370,7 +361,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     tirenv_tire tire = s->tire;
     char *notes = NULL;
 
-    int status = make_dir(s->out_dir, diag);
+    int status = tirenv_mkdir_p(s->out_dir, diag);
     progress(s, "reading the data set", 0);
     if (!status)
         status = tirenv_dataset_read(s->data_dir, tire.springs.R0, &ds, diag);
