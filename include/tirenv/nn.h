@@ -102,9 +102,10 @@ void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], d
 /* The enveloping model: h (m) at tire-centre positions x[] (m) over a rectangular cleat of
  * length L and height H (m) centred at x = 0, at contact length l_c (m), for a tire of free
  * radius R0 (m). The approach half x <= 0 is the network at x_N(x) (MODEL.md section 1); the
- * other half is its mirror image; before the lowest x_N seen in training h = 0 (the tire is
- * still on flat ground). Needs a 4-input net (TIRENV_NN_INPUTS). TIRENV_ERANGE if the
- * cleat is out of the tire's reach; no allocation. */
+ * other half is its mirror image; h = 0 before the lowest x_N seen in training (the tire is
+ * still on flat ground) and where the network says h < 0 (a cleat cannot lower the centre).
+ * Needs a 4-input net (TIRENV_NN_INPUTS). TIRENV_EINVAL for non-physical arguments,
+ * TIRENV_ERANGE if the cleat reaches the chord height; no allocation. */
 int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
                        const double x[], double h[], tirenv_diag *diag);
 

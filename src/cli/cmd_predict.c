@@ -36,7 +36,8 @@ static void usage(FILE *fp, const char *cmd)
           "\n"
           "options:\n"
           "  --nn FILE            the model file written by 'tirenv train -o'\n"
-          "  --cleat L,H          rectangular cleat: length and height in m\n"
+          "  --cleat L,H          rectangular cleat: length and height in m (h is 0 before\n"
+          "                       the first x_N the network saw, and never below 0)\n"
           "  --contact-length M   the working regime, the network's input, in m\n"
           "  --load N             or the load, N, turned into the contact length of the springs\n"
           "                       model of the tire file (--contact-length is turned into the\n"
@@ -135,8 +136,14 @@ static int parse(int argc, char *argv[], cli_options *o, predict_options *p)
         return CLI_EXIT_USAGE;
     }
     if (o->obstacle && o->obstacle != CLI_OPT_CLEAT) {
-        cli_error("%s: --nn: the network models rectangular cleats only (its inputs are the "
-                  "obstacle's length and height); got '%s', expected --cleat L,H", cmd,
+        const char *name = o->obstacle == CLI_OPT_STEP        ? "step"
+                           : o->obstacle == CLI_OPT_TRAPEZOID ? "trapezoid"
+                           : o->obstacle == CLI_OPT_TRIANGLE  ? "triangle"
+                           : o->obstacle == CLI_OPT_CYLINDER  ? "cylinder"
+                           : o->obstacle == CLI_OPT_SINE      ? "sine"
+                                                              : "profile";
+        cli_error("%s: the network models rectangular cleats only (its inputs are a cleat's "
+                  "length and height); got --%s %s, expected --cleat L,H", cmd, name,
                   o->obstacle_arg);
         return CLI_EXIT_USAGE;
     }

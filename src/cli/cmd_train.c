@@ -32,7 +32,7 @@ static void usage(FILE *fp)
           "  --trainer NAME       lm (default): Levenberg-Marquardt; rprop: iRprop-;\n"
           "                       backprop: the paper's back-propagation with momentum\n"
           "  --seed S             seed of the initial weights (and online order), default 1\n"
-          "  --restarts N         independent starts, best on control kept (default: lm and\n"
+          "  --restarts N         independent starts, best on control kept (default: lm 8,\n"
           "                       rprop 4, backprop 1)\n"
           "  --epochs N           epochs per restart (default: lm 1000, rprop 5000,\n"
           "                       backprop 200000, the paper's cycles)\n"

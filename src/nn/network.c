@@ -383,29 +383,81 @@ NN_INLINE double nn_logistic(double a, double net_max)
     return 1.0 / (1.0 + nn_exp(-a));
 }
 
-/* One layer, one sample: out_j = f(b_j + sum_i w_ij in_i), neurons in groups of NN_LANES held
- * in registers, inputs added in order. The batch version below adds in the same order, so
- * both give the same bits. A group past the layer's last neuron reads the next row of
- * weights (or the zeros after the last one) into lanes whose results nobody reads. */
+/* The single-sample path works on NN_LANES neurons at once in GCC's generic vectors, which
+ * the compiler maps onto whatever registers the target has (4 SSE2, 2 AVX2 or 1 AVX-512
+ * register). Written out rather than left to the vectoriser: at -O3 GCC vectorises the loop
+ * over inputs instead, as an in-order reduction, and leaves the exponentials scalar, which
+ * measured 2.6 times slower. Each lane does exactly the scalar operations of nn_exp and
+ * nn_logistic, so the results are the same bits as the batch path's. */
+typedef double nn_vec __attribute__((vector_size(NN_LANES * sizeof(double))));
+typedef int64_t nn_veci __attribute__((vector_size(NN_LANES * sizeof(int64_t))));
+
+/* Vectors go by pointer: by value, 64-byte vectors have an ABI GCC warns about (-Wpsabi),
+ * although these are always inlined. */
+NN_INLINE void nn_vec_exp(nn_vec *v)
+{
+    const nn_vec x = *v;
+    const double log2e = 1.4426950408889634074, ln2_hi = 6.93147180369123816490e-01,
+                 ln2_lo = 1.90821492927058770002e-10, shifter = 0x1.8p52;
+    const nn_vec t = x * log2e + shifter;
+    const nn_vec k = t - shifter;
+    const nn_vec r = (x - k * ln2_hi) - k * ln2_lo;
+    const nn_vec r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+    const nn_vec p01 = 1.0 + r, p23 = 0.5 + r * (1.0 / 6.0),
+                 p45 = 1.0 / 24.0 + r * (1.0 / 120.0), p67 = 1.0 / 720.0 + r * (1.0 / 5040.0),
+                 p89 = 1.0 / 40320.0 + r * (1.0 / 362880.0),
+                 p1011 = 1.0 / 3628800.0 + r * (1.0 / 39916800.0);
+    const double p12 = 1.0 / 479001600.0;
+    const nn_vec p03 = p01 + r2 * p23, p47 = p45 + r2 * p67, p811 = p89 + r2 * p1011;
+    const nn_vec p07 = p03 + r4 * p47, p812 = p811 + r4 * p12;
+    const nn_vec p = p07 + r8 * p812;
+    nn_veci bits;
+    memcpy(&bits, &t, sizeof bits);
+    bits = (bits << 52) + INT64_C(0x3ff0000000000000);
+    nn_vec two_k;
+    memcpy(&two_k, &bits, sizeof two_k);
+    *v = p * two_k;
+}
+
+/* The clamp as a blend on comparison masks (C has no ?: on vectors): a NaN compares false
+ * and passes through, as in the scalar version. */
+NN_INLINE void nn_vec_logistic(nn_vec *v, double net_max)
+{
+    nn_vec a = *v;
+    const nn_vec lo = (nn_vec){0} - net_max, hi = (nn_vec){0} + net_max;
+    nn_veci ai, loi, hii;
+    memcpy(&ai, &a, sizeof ai);
+    memcpy(&loi, &lo, sizeof loi);
+    memcpy(&hii, &hi, sizeof hii);
+    const nn_veci below = a < lo;
+    ai = (loi & below) | (ai & ~below);
+    memcpy(&a, &ai, sizeof a);
+    const nn_veci above = a > hi;
+    ai = (hii & above) | (ai & ~above);
+    memcpy(&a, &ai, sizeof a);
+    nn_vec e = -a;
+    nn_vec_exp(&e);
+    *v = 1.0 / (1.0 + e);
+}
+
+/* One layer, one sample: out_j = f(b_j + sum_i w_ij in_i), inputs added in order, as the
+ * batch version below does, so both give the same bits. A group past the layer's last neuron
+ * reads the next row of weights (or the zeros after the last one) into lanes whose results
+ * land in the activation padding, which nobody reads. */
 NN_INLINE void layer_run(size_t n_in, size_t n_out, const double *restrict w,
                          const double *restrict in, double *restrict out, int logistic,
                          double net_max)
 {
     for (size_t j0 = 0; j0 < n_out; j0 += NN_LANES) {
-        double acc[NN_LANES];
-        for (size_t j = 0; j < NN_LANES; ++j)
-            acc[j] = w[j0 + j];
+        nn_vec acc, w_i;
+        memcpy(&acc, w + j0, sizeof acc);
         for (size_t i = 0; i < n_in; ++i) {
-            const double x_i = in[i];
-            const double *restrict w_i = w + (1 + i) * n_out + j0;
-            for (size_t j = 0; j < NN_LANES; ++j)
-                acc[j] += w_i[j] * x_i;
+            memcpy(&w_i, w + (1 + i) * n_out + j0, sizeof w_i);
+            acc += w_i * in[i];
         }
         if (logistic)
-            for (size_t j = 0; j < NN_LANES; ++j)
-                acc[j] = nn_logistic(acc[j], net_max);
-        for (size_t j = 0; j < NN_LANES; ++j)
-            out[j0 + j] = acc[j];
+            nn_vec_logistic(&acc, net_max);
+        memcpy(out + j0, &acc, sizeof acc);
     }
 }
 
@@ -514,7 +566,10 @@ void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], d
 }
 
 /* The curve in blocks of inputs on the stack, so that it needs no workspace from the caller
- * and still goes through the vectorised batch path. */
+ * and still goes through the vectorised batch path. A cleat only raises the ground, so the
+ * centre never sinks below its flat-ground height: a network output below 0 (its error near
+ * first contact is of the order of its RMS error, a millimetre or two) is clamped to 0, as is
+ * everything before the first x_N it was trained on. */
 int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
                        const double x[], double h[], tirenv_diag *diag)
 {
@@ -549,7 +604,7 @@ int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H,
         }
         tirenv_nn_run_batch(nn, m, in, h + k0);
         for (size_t k = 0; k < m; ++k)
-            if (x_N[k] < x_N_min)
+            if (x_N[k] < x_N_min || !(h[k0 + k] >= 0))
                 h[k0 + k] = 0;
     }
     return TIRENV_OK;

@@ -765,8 +765,12 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
     json_error_t err;
     json_t *root = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
     if (!root) {
-        if (json_error_code(&err) == json_error_cannot_open_file)
-            return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", err.text);
+        if (json_error_code(&err) == json_error_cannot_open_file) {
+            /* jansson says "unable to open PATH: REASON"; the path is in diag already. */
+            const char *why = strrchr(err.text, ':');
+            return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open the model file: %s",
+                                why ? why + 2 : err.text);
+        }
         const int status = tirenv_error(diag, TIRENV_EPARSE, path,
                                         err.line > 0 ? (size_t)err.line : 0, "",
                                         "not valid JSON (truncated or corrupted?): %s",

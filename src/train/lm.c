@@ -191,6 +191,28 @@ static int lm_set(void *state, tirenv_nn *nn, const tirenv_samples *train, tiren
     return TIRENV_OK;
 }
 
+/* LM_LANES doubles as one GCC generic vector (the compiler splits it into what the target
+ * has), so the kernel below is vectorised the same at -O2 and -O3. */
+typedef double lm_vec __attribute__((vector_size(LM_LANES * sizeof(double))));
+
+/* a[0..LM_LANES) += c0 g0 + c1 g1 + c2 g2 + c3 g3, through memcpy (no alignment assumed). */
+#if defined(__GNUC__)
+__attribute__((always_inline))  /* compiled for the caller's clone's instruction set */
+#endif
+static inline void lm_axpy4(double *a, double c0, const double *g0, double c1,
+                            const double *g1, double c2, const double *g2, double c3,
+                            const double *g3)
+{
+    lm_vec av, v0, v1, v2, v3;
+    memcpy(&av, a, sizeof av);
+    memcpy(&v0, g0, sizeof v0);
+    memcpy(&v1, g1, sizeof v1);
+    memcpy(&v2, g2, sizeof v2);
+    memcpy(&v3, g3, sizeof v3);
+    av += c0 * v0 + c1 * v1 + c2 * v2 + c3 * v3;
+    memcpy(a, &av, sizeof av);
+}
+
 /* A += sum_k g_k g_k^T and b += sum_k r_k g_k over m rows g_k of J (stride P, zero columns
  * past p, and zero rows up to a multiple of 4). Four rows at a time, so each row of A is
  * loaded and stored once per four; LM_LANES columns at a time, so the lower triangle is
@@ -201,21 +223,14 @@ LM_CLONES static void lm_accumulate(size_t m, size_t p, size_t P, const double *
                                     double *restrict b)
 {
     for (size_t k = 0; k < m; k += 4) {
-        const double *restrict g0 = J + k * P;
-        const double *restrict g1 = g0 + P;
-        const double *restrict g2 = g1 + P;
-        const double *restrict g3 = g2 + P;
-        for (size_t i = 0; i < p; ++i) {
-            const double c0 = g0[i], c1 = g1[i], c2 = g2[i], c3 = g3[i];
-            double *restrict a = A + i * P;
+        const double *g0 = J + k * P, *g1 = g0 + P, *g2 = g1 + P, *g3 = g2 + P;
+        for (size_t i = 0; i < p; ++i)
             for (size_t j0 = 0; j0 <= i; j0 += LM_LANES)
-                for (size_t j = j0; j < j0 + LM_LANES; ++j)
-                    a[j] += c0 * g0[j] + c1 * g1[j] + c2 * g2[j] + c3 * g3[j];
-        }
-        const double r0 = r[k], r1 = r[k + 1], r2 = r[k + 2], r3 = r[k + 3];
+                lm_axpy4(A + i * P + j0, g0[i], g0 + j0, g1[i], g1 + j0, g2[i], g2 + j0,
+                         g3[i], g3 + j0);
         for (size_t j0 = 0; j0 < P; j0 += LM_LANES)
-            for (size_t j = j0; j < j0 + LM_LANES; ++j)
-                b[j] += r0 * g0[j] + r1 * g1[j] + r2 * g2[j] + r3 * g3[j];
+            lm_axpy4(b + j0, r[k], g0 + j0, r[k + 1], g1 + j0, r[k + 2], g2 + j0, r[k + 3],
+                     g3 + j0);
     }
 }
 

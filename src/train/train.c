@@ -60,6 +60,8 @@ tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type)
     } else if (type == tirenv_trainer_rprop) {
         s.max_epochs = 5000;
         s.patience = 500;
+    } else {
+        s.restarts = 8;  /* cheap for LM, and what its validation error needs: see lm.c */
     }
     return s;
 }
