@@ -8,9 +8,8 @@
 
 /* F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
  * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton on the exact dF/dz is taken when it stays inside
- * and converges; otherwise the step falls back to bisection. Converged
- * when the residual and the next correction are both within tolerance, or when the bracket is
- * narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes the face it
+ * and converges; otherwise the step falls back to bisection. Converged when the residual and
+ * the next correction are both within tolerance, or when the bracket is narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes the face it
  * hits, so its length jumps), and then the equilibrium is the jump, located to eps_z. */
 static int solve_newton(const tirenv_eq_settings *eq, tirenv_eq_force_fn force, void *ctx,
                         double G, const tirenv_eq_problem *prob, tirenv_eq_result *res,

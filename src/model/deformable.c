@@ -102,7 +102,7 @@ int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *l
 }
 
 int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
-                       tirenv_diag *diag)
+                          tirenv_diag *diag)
 {
     deformable_state *st = state;
     (void)diag;
