@@ -5,9 +5,9 @@
  *
  * Tolerances.
  * - Reference evaluation: the network's own exp is within 3 ulp of libm's, so a logistic
- *   differs by about 1e-16 relative; summed through two layers of at most 64 weights of size
- *   ~1 it stays below 1e-14 of the output scale. REF_TOL = 1e-13 (relative to out_std)
- *   leaves a factor 10.
+ *   differs by about 1e-16 relative; summed through layers of at most 64 weights of size ~1
+ *   it stays below 1e-14 of the output scale out_std, or of the output itself where a
+ *   saturated linear net makes it large. REF_TOL = 1e-13, on both, leaves a factor 10.
  * - Finite differences: central, step h = 1e-6*max(1, |w|). Outputs are ~0.1 (m-like
  *   scaling), so round-off in y is ~1e-17 and costs 1e-17/h = 1e-11 in the difference
  *   quotient; the truncation term h^2/6*y''' is ~1e-13. FD_ABS = 1e-9 and FD_REL = 1e-6 leave

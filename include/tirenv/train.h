@@ -104,7 +104,7 @@ typedef struct {
  *   backprop  2e5 epochs (the paper's cycles), no early stop, 1 restart, online,
  *             learning rate 0.01, momentum 0.9;
  *   rprop     5000 epochs, patience 500, 4 restarts, delta0 0.1, [1e-6, 50], 1.2 / 0.5;
- *   lm        1000 epochs, patience 30, 8 restarts, tau 1e-3, mu_max 1e10. */
+ *   lm        1000 epochs, patience 60, 8 restarts, tau 1e-3, mu_max 1e10. */
 tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type);
 
 /* TIRENV_OK, or TIRENV_EINVAL naming the first bad setting (topology, counts, each

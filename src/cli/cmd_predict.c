@@ -21,7 +21,7 @@ static void usage(FILE *fp, const char *cmd)
     fprintf(fp, "usage: tirenv %s --nn MODEL.json --cleat L,H (--load N | --contact-length M)\n"
             "       %*s [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
             "       %*s [--tire FILE] [--set KEY=VALUE]... [--method M]\n",
-            env ? "envelope --model nn" : "predict", env ? 19 : 7, "", env ? 19 : 7, "");
+            env ? "envelope --model nn" : "predict", env ? 26 : 14, "", env ? 26 : 14, "");
     fputs("\n"
           "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
           "(paper, Tables 1 and 2), over a rectangular cleat centred at x = 0, in the CSV of\n"

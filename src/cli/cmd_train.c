@@ -37,7 +37,7 @@ static void usage(FILE *fp)
           "  --epochs N           epochs per restart (default: lm 1000, rprop 5000,\n"
           "                       backprop 200000, the paper's cycles)\n"
           "  --patience N         stop after N epochs without a better control error; 0 never\n"
-          "                       (default: lm 30, rprop 500, backprop 0)\n"
+          "                       (default: lm 60, rprop 500, backprop 0)\n"
           "  --hidden N[,N...]    hidden layer sizes (default 8: the paper's 4-8-1)\n"
           "  --learning-rate ETA  backprop: learning rate (default 0.01)\n"
           "  --momentum A         backprop: momentum in [0, 1) (default 0.9)\n"

@@ -389,6 +389,7 @@ NN_INLINE double nn_logistic(double a, double net_max)
  * over inputs instead, as an in-order reduction, and leaves the exponentials scalar, which
  * measured 2.6 times slower. Each lane does exactly the scalar operations of nn_exp and
  * nn_logistic, so the results are the same bits as the batch path's. */
+#if defined(__GNUC__)
 typedef double nn_vec __attribute__((vector_size(NN_LANES * sizeof(double))));
 typedef int64_t nn_veci __attribute__((vector_size(NN_LANES * sizeof(int64_t))));
 
@@ -460,6 +461,22 @@ NN_INLINE void layer_run(size_t n_in, size_t n_out, const double *restrict w,
         memcpy(out + j0, &acc, sizeof acc);
     }
 }
+#else
+/* Without GCC's vectors (a compiler other than GCC or Clang): the same sums, lane by lane. */
+NN_INLINE void layer_run(size_t n_in, size_t n_out, const double *restrict w,
+                         const double *restrict in, double *restrict out, int logistic,
+                         double net_max)
+{
+    for (size_t j = 0; j < n_out; ++j)
+        out[j] = w[j];
+    for (size_t i = 0; i < n_in; ++i)
+        for (size_t j = 0; j < n_out; ++j)
+            out[j] += w[(1 + i) * n_out + j] * in[i];
+    if (logistic)
+        for (size_t j = 0; j < n_out; ++j)
+            out[j] = nn_logistic(out[j], net_max);
+}
+#endif
 
 /* One layer, NN_BLOCK samples stored neuron-major (in[i*NN_BLOCK + s]): weights outside,
  * samples inside, so every inner loop is a fixed-length vector operation. */
