@@ -27,6 +27,9 @@ static void usage(FILE *fp)
           "options:\n",
           fp);
     cli_help_model(fp, "");
+    fputs("  --model nn --nn FILE the trained network (tirenv train); cleats only, the rows\n"
+          "                       as 'tirenv predict' writes them\n",
+          fp);
     cli_help_load(fp);
     fputs("  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"
           "                       before the obstacle's first vertex to R0 + 0.02 m after its\n"
