@@ -124,6 +124,12 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, tirenv_mod
  * own flat-ground contact length. Needs one of them; returns an exit code. */
 int cli_load(const cli_options *o, tirenv_model *m, double *load);
 
+/* Positions from x_from to x_to (m) every dx (m), allocated (free it); at most
+ * CLI_MAX_POSITIONS, beyond which a sweep is surely a typo in --dx. Prints why and returns an
+ * exit code on bad input. */
+#define CLI_MAX_POSITIONS 10000000.0
+int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
+
 /* The obstacle the options ask for (one required); returns an exit code. */
 int cli_profile(const cli_options *o, tirenv_profile **out);
 

@@ -6,8 +6,6 @@
 
 #include "cli/cli.h"
 
-/* Beyond this many positions the sweep is surely a typo in --dx (and 64 bytes each). */
-#define MAX_POSITIONS 10000000.0
 /* The default sweep starts and ends this far beyond the tire's first and last reach, m. */
 static const double margin = 0.02;
 static const double default_dx = 0.001;  /* m */
@@ -47,38 +45,6 @@ typedef struct {
     int have_from, have_to;
     double x_from, x_to, dx;  /* m */
 } sweep;
-
-/* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
- * multiplication so that no error accumulates over thousands of steps. */
-static int sweep_positions(const sweep *s, double **x_out, size_t *n_out)
-{
-    if (!(s->dx > 0) || !(s->x_to >= s->x_from)) {
-        cli_error("envelope: expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to "
-                  "%g m", s->dx, s->x_from, s->x_to);
-        return CLI_EXIT_USAGE;
-    }
-    const double limit = s->x_to + s->dx * 1e-9;
-    const double steps = floor((limit - s->x_from) / s->dx);
-    if (!(steps < MAX_POSITIONS)) {
-        cli_error("envelope: %.0f positions is too many (at most %.0f); raise --dx", steps + 1,
-                  MAX_POSITIONS);
-        return CLI_EXIT_USAGE;
-    }
-    size_t n = (size_t)steps + 1;
-    /* The division can land one step off either way; the product decides. */
-    while (n > 1 && s->x_from + (double)(n - 1) * s->dx > limit)
-        --n;
-    while (s->x_from + (double)n * s->dx <= limit)
-        ++n;
-    double *x = malloc(n * sizeof *x);
-    if (!x)
-        return cli_fail(TIRENV_ENOMEM, NULL);
-    for (size_t k = 0; k < n; ++k)
-        x[k] = s->x_from + (double)k * s->dx;
-    *x_out = x;
-    *n_out = n;
-    return CLI_EXIT_OK;
-}
 
 static int write_csv(FILE *fp, size_t n, const tirenv_point pt[])
 {
@@ -226,7 +192,7 @@ int cli_envelope_main(int argc, char *argv[])
         s.x_from = first - tire.springs.R0 - margin;
     if (!s.have_to)
         s.x_to = last + tire.springs.R0 + margin;
-    if ((code = sweep_positions(&s, &x, &n)))
+    if ((code = cli_positions(s.x_from, s.x_to, s.dx, &x, &n)))
         goto done;
     if (!(pt = malloc(n * sizeof *pt))) {
         code = cli_fail(TIRENV_ENOMEM, NULL);

@@ -9,9 +9,8 @@
 #include "cli/cli.h"
 #include "tirenv/train.h"
 
-/* As tirenv envelope: at most this many positions, the default sweep from R0 + 0.02 m before
- * the cleat to as far beyond it, 1 mm apart. */
-#define MAX_POSITIONS 10000000.0
+/* As tirenv envelope: the default sweep from R0 + 0.02 m before the cleat to as far beyond
+ * it, 1 mm apart. */
 static const double margin = 0.02;     /* m */
 static const double default_dx = 0.001; /* m */
 
@@ -164,37 +163,6 @@ static int parse(int argc, char *argv[], cli_options *o, predict_options *p)
     return -1;
 }
 
-/* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
- * multiplication so that no error accumulates. */
-static int positions(const predict_options *p, double **x_out, size_t *n_out)
-{
-    if (!(p->dx > 0) || !(p->x_to >= p->x_from)) {
-        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m",
-                  p->dx, p->x_from, p->x_to);
-        return CLI_EXIT_USAGE;
-    }
-    const double limit = p->x_to + p->dx * 1e-9;
-    const double steps = floor((limit - p->x_from) / p->dx);
-    if (!(steps < MAX_POSITIONS)) {
-        cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1,
-                  MAX_POSITIONS);
-        return CLI_EXIT_USAGE;
-    }
-    size_t n = (size_t)steps + 1;
-    while (n > 1 && p->x_from + (double)(n - 1) * p->dx > limit)
-        --n;
-    while (p->x_from + (double)n * p->dx <= limit)
-        ++n;
-    double *x = malloc(n * sizeof *x);
-    if (!x)
-        return cli_fail(TIRENV_ENOMEM, NULL);
-    for (size_t k = 0; k < n; ++k)
-        x[k] = p->x_from + (double)k * p->dx;
-    *x_out = x;
-    *n_out = n;
-    return CLI_EXIT_OK;
-}
-
 /* The working regime both ways through the springs model of the tire file: the network takes
  * the contact length, the CSV's fz column the load. */
 static int regime(const cli_options *o, const tirenv_tire *tire, double *l_c, double *load)
@@ -278,7 +246,7 @@ int cli_predict_main(int argc, char *argv[])
     if (!p.have_to)
         p.x_to = 0.5 * L + R0 + margin;
     size_t n = 0;
-    if ((code = positions(&p, &x, &n)))
+    if ((code = cli_positions(p.x_from, p.x_to, p.dx, &x, &n)))
         goto done;
     if (!(h = malloc(n * sizeof *h))) {
         code = cli_fail(TIRENV_ENOMEM, NULL);

@@ -344,3 +344,35 @@ int cli_profile(const cli_options *o, tirenv_profile **out)
               o->obstacle_arg, obstacles[i].expected, why);
     return CLI_EXIT_DATA;
 }
+
+/* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
+ * multiplication so that no error accumulates over thousands of steps. */
+int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out)
+{
+    if (!(dx > 0) || !(x_to >= x_from)) {
+        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
+                  x_from, x_to);
+        return CLI_EXIT_USAGE;
+    }
+    const double limit = x_to + dx * 1e-9;
+    const double steps = floor((limit - x_from) / dx);
+    if (!(steps < CLI_MAX_POSITIONS)) {
+        cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1,
+                  CLI_MAX_POSITIONS);
+        return CLI_EXIT_USAGE;
+    }
+    size_t n = (size_t)steps + 1;
+    /* The division can land one step off either way; the product decides. */
+    while (n > 1 && x_from + (double)(n - 1) * dx > limit)
+        --n;
+    while (x_from + (double)n * dx <= limit)
+        ++n;
+    double *x = malloc(n * sizeof *x);
+    if (!x)
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    for (size_t k = 0; k < n; ++k)
+        x[k] = x_from + (double)k * dx;
+    *x_out = x;
+    *n_out = n;
+    return CLI_EXIT_OK;
+}
