@@ -29,8 +29,13 @@ test-asan: deps
 demo: build
 	@$(BUILD)/tirenv study -o $(DEMO_OUT)
 
+# Speed figures: the models and solvers (tirenv bench), then the network and its trainers
+# against FANN, the benchmark-only peer (scripts/deps.sh --bench installs libfann-dev).
 bench: build
+	@sh scripts/deps.sh --bench
+	@cmake -S . -B $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS) --target tirenv-bench-nn
 	@$(BUILD)/tirenv bench
+	@$(BUILD)/bench/tirenv-bench-nn
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out
