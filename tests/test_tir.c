@@ -119,6 +119,13 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->eq.eps_z, b->eq.eps_z);
     assert_int_equal(a->eq.max_iter, b->eq.max_iter);
     assert_bits_equal(a->eq.secant_dz, b->eq.secant_dz);
+    assert_bits_equal(a->cam.c_z, b->cam.c_z);
+    assert_bits_equal(a->cam.q_ra1, b->cam.q_ra1);
+    assert_bits_equal(a->cam.q_ra2, b->cam.q_ra2);
+    assert_bits_equal(a->cam.shift, b->cam.shift);
+    assert_bits_equal(a->cam.length, b->cam.length);
+    assert_bits_equal(a->cam.height, b->cam.height);
+    assert_bits_equal(a->cam.order, b->cam.order);
 }
 
 /* Physical, but unlike the default in every field: a file read over it must set them all. */
@@ -132,6 +139,8 @@ static tirenv_tire entropic_tire(void)
                  .lug_ratio = 0.3119},
         .eq = {.method = TIRENV_EQ_BRENT, .eps_F = 3.7e-7, .eps_z = 2.9e-11, .max_iter = 73,
                .secant_dz = 7.31e-4},
+        .cam = {.c_z = 413927.3, .q_ra1 = 0.7131, .q_ra2 = -0.2417, .shift = 0.7913,
+                .length = 1.3171, .height = 0.8837, .order = 1.8131},
     };
 }
 
@@ -149,8 +158,9 @@ static void test_default_file_matches_builtin(void **state)
     assert_tire_identical(&t, &def);
 }
 
-/* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION] keys of other models,
- * 'Newton' capitalised. Only UNLOADED_RADIUS is taken. */
+/* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION], [VERTICAL] and
+ * [CONTACT_PATCH] keys of other models, 'Newton' capitalised. Only UNLOADED_RADIUS,
+ * VERTICAL_STIFFNESS and the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) are taken. */
 static void test_mftyre_excerpt_loads(void **state)
 {
     (void)state;
@@ -161,6 +171,10 @@ static void test_mftyre_excerpt_loads(void **state)
     assert_int_equal(status, TIRENV_OK);
     tirenv_tire expected = tirenv_tire_default();
     expected.springs.R0 = 0.7125;
+    expected.cam.c_z = 520000;
+    expected.cam.q_ra1 = 0.6715;
+    expected.cam.q_ra2 = 0.7308;
+    expected.cam.shift = 0.8328;
     assert_tire_identical(&t, &expected);
 }
 
@@ -265,6 +279,10 @@ static const read_error_case read_errors[] = {
      "at least 2"},
     {"[ENVELOPING_SOLVER]\nSECANT_STEP = -1e-3\n", TIRENV_EINVAL, 2, 0, "SECANT_STEP",
      "positive"},
+    {"[VERTICAL]\nFNOMIN = 4000\n\n[CONTACT_PATCH]\nQ_RB1 = 1\nELLIPS_ORDER = 0.9\n",
+     TIRENV_EINVAL, 6, 0, "ELLIPS_ORDER", "greater than 1"},
+    {"[CONTACT_PATCH]\nELLIPS_SHIFT = 0.8 mm\n", TIRENV_EPARSE, 2, 20, "ELLIPS_SHIFT",
+     "after the number"},
 };
 
 static void test_read_errors(void **state)
@@ -329,6 +347,14 @@ static void test_set_good(void **state)
         {"FORCE_TOLERANCE=3.7e-7", offsetof(tirenv_tire, eq.eps_F), 3.7e-7},
         {"STEP_TOLERANCE=2.9e-11", offsetof(tirenv_tire, eq.eps_z), 2.9e-11},
         {"SECANT_STEP=7.31e-4", offsetof(tirenv_tire, eq.secant_dz), 7.31e-4},
+        {"VERTICAL_STIFFNESS=413927.3", offsetof(tirenv_tire, cam.c_z), 413927.3},
+        {"vertical.vertical_stiffness=2.1e5", offsetof(tirenv_tire, cam.c_z), 2.1e5},
+        {"Q_RA1=0.7131", offsetof(tirenv_tire, cam.q_ra1), 0.7131},
+        {"CONTACT_PATCH.Q_RA2 = -0.2417", offsetof(tirenv_tire, cam.q_ra2), -0.2417},
+        {"ELLIPS_SHIFT=0.7913", offsetof(tirenv_tire, cam.shift), 0.7913},
+        {"ELLIPS_LENGTH=1.3171", offsetof(tirenv_tire, cam.length), 1.3171},
+        {"ELLIPS_HEIGHT=0.8837", offsetof(tirenv_tire, cam.height), 0.8837},
+        {"ELLIPS_ORDER=1.8131", offsetof(tirenv_tire, cam.order), 1.8131},
     };
     for (size_t i = 0; i < sizeof reals / sizeof reals[0]; i++) {
         tirenv_tire t = tirenv_tire_default();
@@ -373,6 +399,10 @@ static void test_set_errors(void **state)
         {"RADIAL_STIFFNESS=-1e6", TIRENV_EINVAL, "RADIAL_STIFFNESS", "must be positive"},
         {"MAX_ITERATIONS=1", TIRENV_EINVAL, "MAX_ITERATIONS", "at least 2"},
         {"ELEMENT_ANGLE=3", TIRENV_EINVAL, "ELEMENT_ANGLE", "SEGMENT_ANGLE/2"},
+        {"ELLIPS_ORDER=1", TIRENV_EINVAL, "ELLIPS_ORDER", "greater than 1"},
+        {"VERTICAL_STIFFNESS=0", TIRENV_EINVAL, "VERTICAL_STIFFNESS", "must be positive"},
+        {"DIMENSION.Q_RA1=0.7", TIRENV_EPARSE, "Q_RA1", "unknown key in section DIMENSION"},
+        {"FNOMIN=4000", TIRENV_EPARSE, "FNOMIN", "ELLIPS_ORDER"}, /* listed among the keys */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const tirenv_tire before = entropic_tire();

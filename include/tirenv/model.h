@@ -36,8 +36,9 @@ typedef struct tirenv_model_type tirenv_model_type;
 extern const tirenv_model_type *tirenv_model_rigid;
 extern const tirenv_model_type *tirenv_model_springs;
 extern const tirenv_model_type *tirenv_model_ring;  /* the reference tire (MODEL.md 5) */
+extern const tirenv_model_type *tirenv_model_cam;   /* tandem elliptical cam (MODEL.md 7) */
 
-/* The type with this name ("rigid", "springs", "ring"), or NULL. */
+/* The type with this name ("rigid", "springs", "ring", "cam"), or NULL. */
 const tirenv_model_type *tirenv_model_type_find(const char *name);
 /* Name of a type; its NULL-terminated list of all types. */
 const char *tirenv_model_type_name(const tirenv_model_type *type);

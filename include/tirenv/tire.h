@@ -52,11 +52,25 @@ typedef struct {
     double lug_ratio;      /* LUG_GROOVE_RATIO: tread stiffness between lugs / on lugs, (0, 1] */
 } tirenv_ring_params;
 
+/* Parameters of the tandem elliptical cam model (MODEL.md section 7), the MF-Tyre keys of
+ * the same names, so that an MF-Tyre / MF-Swift property file supplies them unchanged. The cam
+ * scales with R0 (springs.R0): a_e = ELLIPS_LENGTH*R0, b_e = ELLIPS_HEIGHT*R0. */
+typedef struct {
+    double c_z;            /* [VERTICAL] VERTICAL_STIFFNESS: load / static deflection, N/m */
+    double q_ra1;          /* [CONTACT_PATCH] Q_RA1: square-root term of the contact length */
+    double q_ra2;          /* Q_RA2: linear term of the contact length */
+    double shift;          /* ELLIPS_SHIFT: tandem base / contact length 2a */
+    double length;         /* ELLIPS_LENGTH: cam half length / R0 */
+    double height;         /* ELLIPS_HEIGHT: cam half height / R0 */
+    double order;          /* ELLIPS_ORDER: super-ellipse exponent c_e, > 1 */
+} tirenv_cam_params;
+
 /* Everything a model needs to know about the tire and how to solve it. */
 typedef struct {
     tirenv_springs_params springs;
     tirenv_ring_params ring;
     tirenv_eq_settings eq;
+    tirenv_cam_params cam;
 } tirenv_tire;
 
 /* The equilibrium defaults: Newton, eps_F = 1e-6 N, eps_z = 1e-10 m, 100 evaluations,
@@ -67,7 +81,8 @@ tirenv_eq_settings tirenv_eq_default(void);
 tirenv_tire tirenv_tire_default(void);
 
 /* Checks that parameters are physical (R0 > 0, c_r > 0, c_b >= 0, 0 < dphi <= phi/2,
- * phi <= pi, tolerances > 0). Returns 0 or TIRENV_EINVAL with the offending key in diag. */
+ * phi <= pi, tolerances > 0, the ring's and the cam's keys in range). Returns 0 or
+ * TIRENV_EINVAL with the offending key in diag. */
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
 
 #ifdef __cplusplus

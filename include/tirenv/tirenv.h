@@ -5,9 +5,11 @@
 
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
+#include "tirenv/road.h"
 #include "tirenv/tire.h"
 #include "tirenv/model.h"
 #include "tirenv/rigid.h"
+#include "tirenv/cam.h"
 #include "tirenv/springs.h"
 #include "tirenv/ring.h"
 #include "tirenv/io.h"

@@ -42,7 +42,51 @@ tirenv_tire tirenv_tire_default(void)
             .lug_ratio = 1,
         },
         .eq = tirenv_eq_default(),
+        /* The cam (MODEL.md section 7): the dimensionless cam shape of TNO's public 205/60R15
+         * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
+         * fitted to the ring reference tire's flat ground (data/tires/default.tir says how). */
+        .cam = {
+            .c_z = 342e3,
+            .q_ra1 = 0.79,
+            .q_ra2 = 0.86,
+            .shift = 0.8328,
+            .length = 1.4634,
+            .height = 0.9551,
+            .order = 1.5257,
+        },
     };
+}
+
+/* The cam model's keys (MODEL.md section 7). ELLIPS_ORDER must exceed 1: the exact lift
+ * (src/model/cam.c) relies on a strictly convex cam, whose touching height along a straight
+ * segment has a single smooth maximum; MF-Swift's fitted orders are about 1.5 to 2. A negative
+ * Q_RA2 is accepted (fitted files may have one); the contact length then peaks at some load,
+ * and the cam model refuses loads beyond it. */
+static int cam_check(const tirenv_cam_params *c, tirenv_diag *diag)
+{
+    if (!(c->c_z > 0 && isfinite(c->c_z)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "VERTICAL_STIFFNESS",
+                            "must be positive (N/m), got %g", c->c_z);
+    if (!(c->q_ra1 >= 0 && isfinite(c->q_ra1)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
+                            "must be zero or positive, got %g", c->q_ra1);
+    if (!isfinite(c->q_ra2) || !(c->q_ra1 > 0 || c->q_ra2 > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA2",
+                            "must be finite, and positive if Q_RA1 is 0 (no contact length "
+                            "otherwise), got %g", c->q_ra2);
+    if (!(c->shift > 0 && isfinite(c->shift)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELLIPS_SHIFT",
+                            "must be positive, got %g", c->shift);
+    if (!(c->length > 0 && isfinite(c->length)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELLIPS_LENGTH",
+                            "must be positive, got %g", c->length);
+    if (!(c->height > 0 && isfinite(c->height)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELLIPS_HEIGHT",
+                            "must be positive, got %g", c->height);
+    if (!(c->order > 1 && isfinite(c->order)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELLIPS_ORDER",
+                            "must be greater than 1 (a convex, rounded cam), got %g", c->order);
+    return TIRENV_OK;
 }
 
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
@@ -118,5 +162,5 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (eq->method > TIRENV_EQ_BRENT)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
-    return TIRENV_OK;
+    return cam_check(&tire->cam, diag);
 }

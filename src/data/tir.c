@@ -44,6 +44,20 @@ static const tir_key tir_keys[] = {
     {"UNITS", "TIME", TIR_UNIT, 0, {"second", "sec"}, "times in s"},
     {"DIMENSION", "UNLOADED_RADIUS", TIR_REAL, TIR_FIELD(springs.R0), {NULL, NULL},
      "R0: free (unloaded) tire radius, m"},
+    {"VERTICAL", "VERTICAL_STIFFNESS", TIR_REAL, TIR_FIELD(cam.c_z), {NULL, NULL},
+     "cam: load / static deflection, N/m"},
+    {"CONTACT_PATCH", "Q_RA1", TIR_REAL, TIR_FIELD(cam.q_ra1), {NULL, NULL},
+     "cam: contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0))"},
+    {"CONTACT_PATCH", "Q_RA2", TIR_REAL, TIR_FIELD(cam.q_ra2), {NULL, NULL},
+     "cam: linear term of the contact half length"},
+    {"CONTACT_PATCH", "ELLIPS_SHIFT", TIR_REAL, TIR_FIELD(cam.shift), {NULL, NULL},
+     "cam: tandem base l_s = ELLIPS_SHIFT*2a"},
+    {"CONTACT_PATCH", "ELLIPS_LENGTH", TIR_REAL, TIR_FIELD(cam.length), {NULL, NULL},
+     "cam: half length a_e = ELLIPS_LENGTH*R0"},
+    {"CONTACT_PATCH", "ELLIPS_HEIGHT", TIR_REAL, TIR_FIELD(cam.height), {NULL, NULL},
+     "cam: half height b_e = ELLIPS_HEIGHT*R0"},
+    {"CONTACT_PATCH", "ELLIPS_ORDER", TIR_REAL, TIR_FIELD(cam.order), {NULL, NULL},
+     "cam: super-ellipse exponent c_e, > 1"},
     {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", TIR_REAL, TIR_FIELD(springs.c_r), {NULL, NULL},
      "c_r: radial stiffness per radian of tread, N/m/rad"},
     {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", TIR_REAL, TIR_FIELD(springs.c_b),
@@ -84,8 +98,8 @@ static const tir_key tir_keys[] = {
 #define TIR_NKEYS (sizeof tir_keys / sizeof tir_keys[0])
 
 /* The sections tirenv reads. In a strict section an unknown key is a typo and an error; in
- * [DIMENSION], which tirenv shares with MF-Tyre, the keys of the other models (WIDTH,
- * RIM_RADIUS...) are skipped. Any other section is skipped whole. */
+ * [DIMENSION], [VERTICAL] and [CONTACT_PATCH], which tirenv shares with MF-Tyre, the keys of
+ * the other models (WIDTH, FNOMIN, Q_RB1...) are skipped. Any other section is skipped whole. */
 typedef struct {
     const char *name;
     int strict;
@@ -94,6 +108,8 @@ typedef struct {
 static const tir_section tir_sections[] = {
     {"UNITS", 1},
     {"DIMENSION", 0},
+    {"VERTICAL", 0},
+    {"CONTACT_PATCH", 0},
     {"ENVELOPING_SPRINGS", 1},
     {"ENVELOPING_RING", 1},
     {"ENVELOPING_SOLVER", 1},
@@ -431,7 +447,7 @@ static int tir_set_buf(tirenv_tire *tire, char *buf, const char *assignment, tir
     }
     const size_t i = tir_find_key(section, key);
     if (i == TIR_NKEYS || tir_keys[i].kind == TIR_UNIT) {
-        char keys[256];
+        char keys[448]; /* every settable key: about 400 characters */
         return tir_fail(&c, NULL, key, "unknown key%s%s; expected one of %s",
                         section ? " in section " : "", section ? section : "",
                         tir_key_list(NULL, keys, sizeof keys));
@@ -482,7 +498,8 @@ static void tir_print(FILE *fp, const tirenv_tire *tire)
                 "FILE_FORMAT              = 'ASCII'\n"
                 "! Tire property file written by tirenv %s for its enveloping models.\n"
                 "! SI units; '$' starts a comment. Sections that tirenv does not know are\n"
-                "! skipped, so the MF-Tyre sections of the same tire may be added below.\n",
+                "! skipped, so the MF-Tyre sections of the same tire may be added below\n"
+                "! (without the keys written here: each key may appear once).\n",
             TIRENV_VERSION);
     for (size_t s = 0; s < TIR_NSECTIONS; s++) {
         const char *name = tir_sections[s].name;

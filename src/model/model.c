@@ -16,7 +16,8 @@ struct tirenv_model {
 const tirenv_model_type *const *tirenv_model_types(void)
 {
     static const tirenv_model_type *const *types[] = {&tirenv_model_rigid,
-                                                      &tirenv_model_springs, &tirenv_model_ring};
+                                                      &tirenv_model_springs, &tirenv_model_ring,
+                                                      &tirenv_model_cam};
     static const tirenv_model_type *list[sizeof types / sizeof types[0] + 1];
     for (size_t i = 0; i < sizeof types / sizeof types[0]; ++i)
         list[i] = *types[i];

@@ -1,0 +1,169 @@
+/* The tandem elliptical cam as a tirenv_model_type: MF-Swift's effective road, a geometric
+ * filter with no iteration (MODEL.md section 7). SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * The cam itself does not deflect: its parameters say how a tire at a given load envelopes,
+ * and the load enters through the MF-Tyre contact-patch law alone. So the model reports
+ *   h = w, the effective road height of the tandem (0 on flat ground),
+ *   z = z_flat + w, with z_flat = R0 - rho0 and rho0 = G / VERTICAL_STIFFNESS the static
+ *       deflection (the centre height of a linear vertical spring on the effective road),
+ *   fx = -G*tan(beta): the ground force G, normal to the effective road plane of slope
+ *       tan(beta), has the longitudinal part -G*tan(beta) when its vertical part is G, so a
+ *       road rising in front pushes back, as in the other models,
+ *   fz = G, two contacts (the cams) and no iterations.
+ *
+ * The tandem base. MF-Tyre's contact law gives the half length a of the patch, and
+ * l_s = ELLIPS_SHIFT * (a or 2a); public sources do not settle which. tirenv takes
+ * l_s = ELLIPS_SHIFT * 2a: the two cams stand for the leading and trailing edges of the
+ * contact patch, which are 2a apart, and the bridging they model (the double hump over a
+ * cleat shorter than the patch, with its humps where the cleat passes under the patch's ends)
+ * needs the humps about one patch length apart. With the public 205/60R15 values at its
+ * nominal 4 kN (2a = 0.13 m) this gives l_s = 0.11 m, against 0.055 m for ELLIPS_SHIFT * a,
+ * under half the patch. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "model/cam_impl.h"
+#include "model/model_impl.h"
+
+typedef struct {
+    tirenv_tire tire;
+    tirenv_cam__geom cam;       /* a_e = ELLIPS_LENGTH*R0, b_e = ELLIPS_HEIGHT*R0, c_e */
+    const tirenv_profile *prof;
+    double G;                   /* load, N */
+    double z_flat;              /* R0 - rho0, m */
+    double l_s;                 /* tandem base ELLIPS_SHIFT*2a, m */
+    double z_cap;               /* the profile's highest vertex, m: bounds the scan */
+} cam_state;
+
+static void *cam_alloc(const tirenv_tire *tire)
+{
+    const double R0 = tire->springs.R0;
+    const tirenv_cam_shape shape = {.a_e = tire->cam.length * R0,
+                                    .b_e = tire->cam.height * R0,
+                                    .c_e = tire->cam.order};
+    cam_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return NULL;
+    st->tire = *tire;
+    if (tirenv_cam__geom_set(&st->cam, &shape) != TIRENV_OK) {
+        free(st);
+        return NULL;
+    }
+    return st;
+}
+
+static void cam_free(void *state)
+{
+    free(state);
+}
+
+/* The static deflection rho = G / VERTICAL_STIFFNESS and MF-Tyre's contact half length
+ * a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)). With Q_RA2 < 0 the law peaks at
+ * sqrt(rho/R0) = Q_RA1 / (2|Q_RA2|) and loads beyond are refused: past it the patch would
+ * shrink under more load. */
+static int cam_patch(const tirenv_tire *t, double load, double *rho, double *a,
+                     tirenv_diag *diag)
+{
+    const double R0 = t->springs.R0, q_ra1 = t->cam.q_ra1, q_ra2 = t->cam.q_ra2;
+    *rho = load / t->cam.c_z;
+    if (!(*rho < R0))
+        return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
+                            "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m), "
+                            "beyond its free radius %g m", load, *rho, t->cam.c_z, R0);
+    const double r = *rho / R0, y = sqrt(r);
+    if (q_ra2 < 0 && y > q_ra1 / (-2 * q_ra2)) {
+        const double y_peak = q_ra1 / (-2 * q_ra2);
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
+                            "%g N is beyond the load %g N where the contact length of Q_RA1 "
+                            "%g, Q_RA2 %g peaks", load, t->cam.c_z * R0 * y_peak * y_peak,
+                            q_ra1, q_ra2);
+    }
+    *a = R0 * (q_ra2 * r + q_ra1 * y);
+    return TIRENV_OK;
+}
+
+static int cam_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    const cam_state *st = state;
+    double rho = 0, a = 0;
+    const int status = cam_patch(&st->tire, load, &rho, &a, diag);
+    if (status)
+        return status;
+    *out = (tirenv_flat){.load = load, .z_flat = st->tire.springs.R0 - rho, .deflection = rho,
+                         .contact_length = 2 * a, .stiffness = st->tire.cam.c_z};
+    return TIRENV_OK;
+}
+
+/* The contact law inverted in closed form: with y = sqrt(rho/R0) and A = l_c/(2 R0) = a/R0,
+ * Q_RA2 y^2 + Q_RA1 y = A, whose root on the rising branch is y = 2A/(Q_RA1 + sqrt(Q_RA1^2 +
+ * 4 Q_RA2 A)) (the form without cancellation; it holds for Q_RA2 = 0 and Q_RA2 < 0 too). The
+ * load follows as VERTICAL_STIFFNESS*R0*y^2. */
+static int cam_load_for_contact_length(void *state, double l_c, double *load,
+                                       tirenv_diag *diag)
+{
+    const cam_state *st = state;
+    const double R0 = st->tire.springs.R0, q_ra1 = st->tire.cam.q_ra1;
+    const double q_ra2 = st->tire.cam.q_ra2;
+    if (!(l_c > 0 && l_c < 2 * R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                            "must be in (0, 2*R0) = (0, %g) m, got %g", 2 * R0, l_c);
+    const double A = l_c / (2 * R0), disc = q_ra1 * q_ra1 + 4 * q_ra2 * A;
+    if (disc < 0)
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
+                            "%g m is longer than the longest the contact law of Q_RA1 %g, "
+                            "Q_RA2 %g gives, %g m", l_c, q_ra1, q_ra2,
+                            -R0 * q_ra1 * q_ra1 / (2 * q_ra2));
+    const double y = 2 * A / (q_ra1 + sqrt(disc)), rho = R0 * y * y;
+    if (!(rho < R0))
+        return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "contact length",
+                            "%g m needs a deflection of %g m, beyond the free radius %g m",
+                            l_c, rho, R0);
+    *load = st->tire.cam.c_z * rho;
+    return TIRENV_OK;
+}
+
+static int cam_set(void *state, const tirenv_profile *p, double load, double z_flat,
+                   tirenv_diag *diag)
+{
+    cam_state *st = state;
+    double rho = 0, a = 0;
+    const int status = cam_patch(&st->tire, load, &rho, &a, diag);
+    if (status)
+        return status;
+    st->prof = p;
+    st->G = load;
+    st->z_flat = z_flat;
+    st->l_s = st->tire.cam.shift * 2 * a;
+    const size_t n = tirenv_profile_size(p);
+    const double *z = tirenv_profile_z(p);
+    st->z_cap = z[0];
+    for (size_t k = 1; k < n; k++)
+        st->z_cap = fmax(st->z_cap, z[k]);
+    return TIRENV_OK;
+}
+
+static int cam_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    const cam_state *st = state;
+    if (!isfinite(x))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x", "must be finite, got %g", x);
+    const double Z_f = tirenv_cam__lift(&st->cam, st->prof, x + 0.5 * st->l_s, st->z_cap,
+                                        NULL, NULL);
+    const double Z_r = tirenv_cam__lift(&st->cam, st->prof, x - 0.5 * st->l_s, st->z_cap,
+                                        NULL, NULL);
+    const double w = 0.5 * (Z_f + Z_r), tan_beta = (Z_f - Z_r) / st->l_s;
+    *out = (tirenv_point){.x = x, .z = st->z_flat + w, .h = w, .fx = -st->G * tan_beta,
+                          .fz = st->G, .contacts = 2, .iterations = 0};
+    return TIRENV_OK;
+}
+
+static const tirenv_model_type cam_type = {
+    .name = "cam",
+    .alloc = cam_alloc,
+    .free = cam_free,
+    .flat = cam_flat,
+    .load_for_contact_length = cam_load_for_contact_length,
+    .set = cam_set,
+    .eval = cam_eval,
+};
+const tirenv_model_type *tirenv_model_cam = &cam_type;
