@@ -1,0 +1,175 @@
+/* tirenv road: a random road of an ISO 8608 class, as a profile CSV.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv road --class A..H --length M [--dx M] [--seed S] [-o FILE]\n"
+          "                   [--band NMIN,NMAX] [--waviness W]\n"
+          "\n"
+          "A random road profile of an ISO 8608 road class: displacement PSD\n"
+          "Gd(n) = Gd(n0)*(n/n0)^-2 with n0 = 0.1 cycles/m and Gd(n0) = 16e-6 m^3 (class A),\n"
+          "4 times more per class up to H, as a sum of cosines with seeded random phases.\n"
+          "Writes a profile CSV 'x_m,z_m' (vertices every --dx from x = 0, starting at z = 0)\n"
+          "that --profile reads; a one-line summary goes to standard error.\n"
+          "\n"
+          "options:\n"
+          "  --class C            road class, A (smoothest) to H\n"
+          "  --length M           road length, m\n"
+          "  --dx DX              vertex spacing, m (default 0.01; at most 1/(2*NMAX))\n"
+          "  --seed S             seed of the random phases (default 1)\n"
+          "  --band NMIN,NMAX     spatial frequencies generated, cycles/m (default the\n"
+          "                       standard's 0.011,2.83)\n"
+          "  --waviness W         exponent of the PSD (default 2, the standard's)\n"
+          "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
+          "                       '-': standard output)\n"
+          "  -h, --help           show this help\n",
+          fp);
+}
+
+/* Parses the options into *s; returns an exit code, or -1 to go on. */
+static int parse(int argc, char *argv[], tirenv_road_settings *s, const char **out_path)
+{
+    enum { OPT_CLASS = CLI_OPT_FIRST_OWN, OPT_LENGTH, OPT_DX, OPT_SEED, OPT_BAND, OPT_WAVINESS };
+    static const struct option longopts[] = {
+        {"class", required_argument, NULL, OPT_CLASS},
+        {"length", required_argument, NULL, OPT_LENGTH},
+        {"dx", required_argument, NULL, OPT_DX},
+        {"seed", required_argument, NULL, OPT_SEED},
+        {"band", required_argument, NULL, OPT_BAND},
+        {"waviness", required_argument, NULL, OPT_WAVINESS},
+        {"output", required_argument, NULL, 'o'},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    int have_class = 0, have_length = 0, c;
+    double band[2];
+    long seed;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return CLI_EXIT_OK;
+        case 'o':
+            *out_path = optarg;
+            break;
+        case OPT_CLASS:
+            if (strlen(optarg) != 1 || isnan(tirenv_iso8608_gd0(optarg[0]))) {
+                cli_error("road: --class expects one letter A to H, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            s->road_class = optarg[0];
+            have_class = 1;
+            break;
+        case OPT_LENGTH:
+        case OPT_DX:
+            if (cli_parse_double(optarg, c == OPT_LENGTH ? &s->length : &s->dx) ||
+                !((c == OPT_LENGTH ? s->length : s->dx) > 0)) {
+                cli_error("road: --%s expects a positive length in m, got '%s'",
+                          c == OPT_LENGTH ? "length" : "dx", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            have_length |= c == OPT_LENGTH;
+            break;
+        case OPT_SEED:
+            if (cli_parse_count(optarg, 0, 2147483647L, &seed)) {
+                cli_error("road: --seed expects a whole number >= 0, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            s->seed = (unsigned long)seed;
+            break;
+        case OPT_BAND:
+            if (cli_parse_doubles(optarg, band, 2) || !(band[0] > 0 && band[1] > band[0])) {
+                cli_error("road: --band expects NMIN,NMAX in cycles/m with 0 < NMIN < NMAX, "
+                          "got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            s->n_min = band[0];
+            s->n_max = band[1];
+            break;
+        case OPT_WAVINESS:
+            if (cli_parse_double(optarg, &s->waviness) || !(s->waviness >= 0)) {
+                cli_error("road: --waviness expects a number >= 0, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        default:
+            usage(stderr);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    if (optind < argc) {
+        cli_error("road: unexpected argument '%s'", argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    if (!have_class || !have_length) {
+        cli_error("road: expected %s; 'tirenv road --help' shows the options",
+                  !have_class ? "--class A..H" : "--length M");
+        return CLI_EXIT_USAGE;
+    }
+    return -1;
+}
+
+static int write_csv(FILE *fp, const tirenv_profile *p)
+{
+    const size_t n = tirenv_profile_size(p);
+    const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
+    fputs("x_m,z_m\n", fp);
+    for (size_t j = 0; j < n; ++j)
+        fprintf(fp, "%.10g,%.9g\n", x[j], z[j]);
+    return ferror(fp) ? -1 : 0;
+}
+
+int cli_road_main(int argc, char *argv[])
+{
+    tirenv_road_settings s = tirenv_road_default();
+    const char *out_path = "-";
+    const int code = parse(argc, argv, &s, &out_path);
+    if (code >= 0)
+        return code;
+
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_profile *p = NULL;
+    tirenv_outfile out;
+    /* Generated first: a refused setting must not leave an empty file behind. */
+    int status = tirenv_road_iso8608(&s, &p, &diag);
+    if (!status && !(status = tirenv_outfile_open(&out, out_path, &diag))) {
+        char comment[512];
+        snprintf(comment, sizeof comment,
+                 "ISO 8608 class %c random road (tirenv road): Gd(n0) = %g m^3 at n0 = %g "
+                 "cycles/m, waviness %g,\nspatial frequencies %g to %g cycles/m, length %g m, "
+                 "dx %g m, seed %lu",
+                 s.road_class, tirenv_iso8608_gd0(s.road_class), TIRENV_ISO8608_N0,
+                 s.waviness, s.n_min, s.n_max, s.length, s.dx, s.seed);
+        tirenv_outfile_comment(&out, comment);
+        if (write_csv(out.fp, p))
+            status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
+        if (!status)
+            status = tirenv_outfile_commit(&out, &diag);
+        else
+            tirenv_outfile_abort(&out);
+    }
+    if (status) {
+        tirenv_profile_free(p);
+        return cli_fail(status, &diag);
+    }
+    const size_t n = tirenv_profile_size(p);
+    const double *z = tirenv_profile_z(p);
+    double sum = 0, sum2 = 0;
+    for (size_t j = 0; j < n; ++j) {
+        sum += z[j];
+        sum2 += z[j] * z[j];
+    }
+    const double mean = sum / (double)n, rms = sqrt(fmax(0.0, sum2 / (double)n - mean * mean));
+    fprintf(stderr, "tirenv road: ISO 8608 class %c, %zu points over %g m every %g m, "
+            "rms %.2f mm about the mean, seed %lu\n", s.road_class, n,
+            tirenv_profile_x(p)[n - 1], s.dx, rms * 1e3, s.seed);
+    tirenv_profile_free(p);
+    return CLI_EXIT_OK;
+}
