@@ -19,8 +19,8 @@ for f in report.md errors.csv errors.md timing.csv fitted.tir nn.json nn-physica
     check 1 "study wrote $f" test -s "$tmp/s/$f"
 done
 check 2 "the report says the data are simulated" grep -q "SIMULATED" "$tmp/s/report.md"
-# 4 validation cases x 4 models (rigid, springs, ring, nn) plus the header.
-check 3 "errors.csv: one row per case and model" test "$(wc -l <"$tmp/s/errors.csv")" -eq 17
+# 4 validation cases x 5 models (rigid, springs, cam, ring, nn) plus the header.
+check 3 "errors.csv: one row per case and model" test "$(wc -l <"$tmp/s/errors.csv")" -eq 21
 check 4 "the fitted tire reads back" "$bin" flat --tire "$tmp/s/fitted.tir" --contact-length 0.33
 check 5 "the trained network predicts case R" "$bin" predict --nn "$tmp/s/nn.json" \
     --cleat 0.10,0.10 --contact-length 0.28 -o "$tmp/R.csv"

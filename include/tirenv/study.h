@@ -41,11 +41,12 @@ int tirenv_case_predict_model(tirenv_model *m, const tirenv_case *c, double h[],
 int tirenv_case_predict_nn(tirenv_nn *nn, double R0, const tirenv_case *c, double h[],
                            tirenv_diag *diag);
 
-/* Identification of a physical model (c_r and c_b, optionally R0) on the training cases by
- * nonlinear least squares on h (GSL multifit_nlinear, trust region with Levenberg-Marquardt
- * steps), in log parameters so they stay positive. */
+/* Identification of a physical model on the training cases by nonlinear least squares on h
+ * (GSL multifit_nlinear, trust region with Levenberg-Marquardt steps), in log parameters so
+ * they stay in range: springs: c_r and c_b (optionally R0); cam: ELLIPS_SHIFT, ELLIPS_LENGTH,
+ * ELLIPS_HEIGHT, ELLIPS_ORDER. */
 typedef struct {
-    const tirenv_model_type *type;  /* springs (default) */
+    const tirenv_model_type *type;  /* springs (default) or cam */
     int fit_R0;            /* also fit UNLOADED_RADIUS */
     size_t max_iter;       /* trust-region iterations (default 50) */
     double xtol;           /* relative step tolerance (default 1e-6) */
@@ -55,7 +56,7 @@ typedef struct {
 
 tirenv_fit_settings tirenv_fit_default(void);
 
-#define TIRENV_FIT_MAX_PARAMS 3
+#define TIRENV_FIT_MAX_PARAMS 4
 
 typedef struct {
     size_t n_params;

@@ -11,19 +11,20 @@
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv fit --data DIR [--model springs|ring] [--fit-radius]\n"
+    fputs("usage: tirenv fit --data DIR [--model springs|cam] [--fit-radius]\n"
           "                  [--check-refinement] [-o FITTED.tir] [--tire FILE] [--set K=V]...\n"
           "\n"
           "Identifies RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS (and UNLOADED_RADIUS with\n"
-          "--fit-radius) on the data set's training cases by nonlinear least squares on h\n"
-          "(GSL multifit_nlinear), starting from the tire file, and reports standard errors\n"
-          "and the fit per case. The discretisation (ELEMENT_ANGLE) is a setting, not a\n"
+          "--fit-radius) of the springs model, or ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
+          "and ELLIPS_ORDER of the cam model, on the data set's training cases by nonlinear\n"
+          "least squares on h (GSL multifit_nlinear), starting from the tire file, and\n"
+          "reports standard errors and the fit per case. The discretisation (ELEMENT_ANGLE) is a setting, not a\n"
           "fitted parameter: --check-refinement refits with it halved and reports how much\n"
           "the parameters and the fitted curves change.\n"
           "\n"
           "options:\n"
           "  --data DIR           data set directory with cases.csv\n"
-          "  --model NAME         model to identify (default springs)\n"
+          "  --model NAME         model to identify: springs (default) or cam\n"
           "  --fit-radius         also fit UNLOADED_RADIUS\n"
           "  --check-refinement   refit with ELEMENT_ANGLE / 2 and compare\n"
           "  -o FILE              write the fitted tire (.tir); default: print only\n",
@@ -125,8 +126,9 @@ int cli_fit_main(int argc, char *argv[])
         case OPT_MODEL:
             if (cli_model_type(optarg, &fs.type))
                 return CLI_EXIT_USAGE;
-            if (fs.type == tirenv_model_rigid) {
-                cli_error("fit: the rigid model has no stiffness to fit");
+            if (fs.type != tirenv_model_springs && fs.type != tirenv_model_cam) {
+                cli_error("fit: --model %s has no parameters tirenv fits; expected springs or "
+                          "cam (the ring is the reference tire)", optarg);
                 return CLI_EXIT_USAGE;
             }
             break;
@@ -144,14 +146,14 @@ int cli_fit_main(int argc, char *argv[])
                 return CLI_EXIT_USAGE;
         }
     }
+    if (refine && fs.type != tirenv_model_springs) {
+        cli_error("fit: --check-refinement halves ELEMENT_ANGLE, a springs-model setting; the "
+                  "cam has no discretisation");
+        return CLI_EXIT_USAGE;
+    }
     if (optind < argc || !data) {
         cli_error(data ? "fit: unexpected argument '%s'" : "fit: --data DIR is required%s",
                   data ? argv[optind] : "");
-        return CLI_EXIT_USAGE;
-    }
-    if (fs.type == tirenv_model_ring) {
-        cli_error("fit: the ring model's parameters are not fitted (its stiffnesses are "
-                  "TREAD_STIFFNESS and FOUNDATION_STIFFNESS); use --model springs");
         return CLI_EXIT_USAGE;
     }
     tirenv_tire tire;

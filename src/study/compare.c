@@ -88,6 +88,8 @@ const char *tirenv_compare__label(const tirenv_compare_result *r, size_t j)
         return "geometric limit";
     if (strcmp(name, "springs") == 0)
         return "physical model";
+    if (strcmp(name, "cam") == 0)
+        return "tandem cam";
     return NULL;
 }
 

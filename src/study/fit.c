@@ -15,20 +15,37 @@ tirenv_fit_settings tirenv_fit_default(void)
                                  .progress = NULL, .progress_ctx = NULL};
 }
 
-/* The fitted parameters, each by its .tir key and where it lives in the tire. */
+/* The fitted parameters, each by its .tir key, where it lives in the tire, and its offset:
+ * a parameter is fitted as log(value - offset), which keeps it above the offset (positive
+ * stiffnesses, ELLIPS_ORDER > 1) and gives a stiffness of 1e6 and a radius of 0.7 steps of the
+ * same relative size. */
 typedef struct {
     const char *key;
     double *(*field)(tirenv_tire *t);
+    double offset;
 } fit_param;
 
 static double *field_c_r(tirenv_tire *t) { return &t->springs.c_r; }
 static double *field_c_b(tirenv_tire *t) { return &t->springs.c_b; }
 static double *field_R0(tirenv_tire *t) { return &t->springs.R0; }
+static double *field_shift(tirenv_tire *t) { return &t->cam.shift; }
+static double *field_length(tirenv_tire *t) { return &t->cam.length; }
+static double *field_height(tirenv_tire *t) { return &t->cam.height; }
+static double *field_order(tirenv_tire *t) { return &t->cam.order; }
 
-static const fit_param params[TIRENV_FIT_MAX_PARAMS] = {
-    {"RADIAL_STIFFNESS", field_c_r},
-    {"INTERRADIAL_STIFFNESS", field_c_b},
-    {"UNLOADED_RADIUS", field_R0},
+/* Per model, the parameters that shape h; the last one of springs (R0) only with fit_R0. The
+ * cam's contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) set where its two cams stand at
+ * a load and trade off against ELLIPS_SHIFT, so only the cam shape and base are fitted. */
+static const fit_param springs_params[] = {
+    {"RADIAL_STIFFNESS", field_c_r, 0},
+    {"INTERRADIAL_STIFFNESS", field_c_b, 0},
+    {"UNLOADED_RADIUS", field_R0, 0},
+};
+static const fit_param cam_params[] = {
+    {"ELLIPS_SHIFT", field_shift, 0},
+    {"ELLIPS_LENGTH", field_length, 0},
+    {"ELLIPS_HEIGHT", field_height, 0},
+    {"ELLIPS_ORDER", field_order, 1},
 };
 
 typedef struct {
@@ -36,18 +53,17 @@ typedef struct {
     tirenv_split split;
     const tirenv_model_type *type;
     tirenv_tire tire;             /* the working copy the parameters are written into */
+    const fit_param *params;
     size_t n_params;
     double *h;                    /* scratch: one case's model curve */
     int status;                   /* first failure inside the residual function */
     tirenv_diag *diag;
 } fit_ctx;
 
-/* Parameters are fitted as logarithms: they stay positive, and a stiffness of 1e6 and a radius
- * of 0.7 get steps of the same relative size. */
 static void set_params(fit_ctx *c, const gsl_vector *p)
 {
     for (size_t i = 0; i < c->n_params; ++i)
-        *params[i].field(&c->tire) = exp(gsl_vector_get(p, i));
+        *c->params[i].field(&c->tire) = c->params[i].offset + exp(gsl_vector_get(p, i));
 }
 
 /* Residuals h_model - h_meas over every point of every case of the split. */
@@ -102,8 +118,14 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
 {
     gsl_set_error_handler_off();
     const double t0 = now_seconds();
-    fit_ctx c = {ds, split, s->type ? s->type : tirenv_model_springs, *tire,
-                 s->fit_R0 ? 3 : 2, NULL, 0, diag};
+    const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
+    const int cam = type == tirenv_model_cam;
+    if (!cam && type != tirenv_model_springs)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "the %s model has no parameters to fit; expected springs or cam",
+                            tirenv_model_type_name(type));
+    fit_ctx c = {ds, split, type, *tire, cam ? cam_params : springs_params,
+                 cam ? 4 : s->fit_R0 ? 3 : 2, NULL, 0, diag};
     size_t n = 0, n_max = 0;
     for (size_t i = 0; i < ds->n; ++i)
         if (ds->cases[i].split == split) {
@@ -132,7 +154,8 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "fit", "out of memory");
     }
     for (size_t i = 0; i < c.n_params; ++i)
-        gsl_vector_set(p0, i, log(fmax(*params[i].field(&c.tire), 1.0)));
+        gsl_vector_set(p0, i, log(fmax(*c.params[i].field(&c.tire) - c.params[i].offset,
+                                       1e-12)));
     gsl_multifit_nlinear_fdf fdf = {.f = residuals, .df = NULL, .fvv = NULL, .n = n,
                                     .p = c.n_params, .params = &c};
     int info = 0;
@@ -146,8 +169,8 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
     } else if (status && status != GSL_EMAXITER) {
         result = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "fit", "%s", gsl_strerror(status));
     } else {
-        /* Covariance of the log parameters, scaled by the residual variance; for c = e^p the
-         * standard error is c * sigma_p to first order. */
+        /* Covariance of the log parameters, scaled by the residual variance; for
+         * c = offset + e^p the standard error is (c - offset) * sigma_p to first order. */
         const gsl_vector *f = gsl_multifit_nlinear_residual(w);
         double chisq;
         gsl_blas_ddot(f, f, &chisq);
@@ -164,9 +187,10 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
                                            : "small gradient",
         };
         for (size_t i = 0; i < c.n_params; ++i) {
-            report->names[i] = params[i].key;
-            report->value[i] = *params[i].field(&c.tire);
-            report->std_error[i] = report->value[i] * sqrt(sigma2 * gsl_matrix_get(covar, i, i));
+            report->names[i] = c.params[i].key;
+            report->value[i] = *c.params[i].field(&c.tire);
+            report->std_error[i] = (report->value[i] - c.params[i].offset) *
+                                   sqrt(sigma2 * gsl_matrix_get(covar, i, i));
         }
         *tire = c.tire;
     }

@@ -39,6 +39,15 @@ static void describe_models(FILE *fp, const tirenv_compare_settings *s,
                     sp->c_r, sp->c_b, sp->dphi * 180 / M_PI, sp->R0 * 1e3);
             if (s->tire_label)
                 fprintf(fp, " (`%s`)", s->tire_label);
+        } else if (strcmp(name, "cam") == 0) {
+            const tirenv_cam_params *cp = &r->tire.cam;
+            fprintf(fp,
+                    "MF-Swift's tandem elliptical cam (MODEL.md section 7): ELLIPS_SHIFT %.4g, "
+                    "ELLIPS_LENGTH %.4g, ELLIPS_HEIGHT %.4g, ELLIPS_ORDER %.4g, "
+                    "VERTICAL_STIFFNESS %.4g N/m",
+                    cp->shift, cp->length, cp->height, cp->order, cp->c_z);
+            if (s->tire_label)
+                fprintf(fp, " (`%s`)", s->tire_label);
         } else if (strcmp(name, "ring") == 0) {
             fputs("the flexible-ring reference tire (MODEL.md section 5) with the tire file's "
                   "[ENVELOPING_RING] parameters", fp);

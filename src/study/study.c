@@ -256,7 +256,15 @@ static void append_model_means(FILE *fp, const tirenv_compare_result *r)
         fprintf(fp, "%s%s %.2f mm", m ? ", " : "", r->model[m], 1e3 * mean_rms(r, m));
 }
 
-static char *study_notes(const tirenv_fit_report *fit, const tirenv_train_report *nn,
+static void fit_table(FILE *fp, const tirenv_fit_report *fit)
+{
+    fprintf(fp, "| parameter | value | standard error |\n|---|---|---|\n");
+    for (size_t i = 0; i < fit->n_params; ++i)
+        fprintf(fp, "| %s | %.6g | %.2g |\n", fit->names[i], fit->value[i], fit->std_error[i]);
+}
+
+static char *study_notes(const tirenv_fit_report *fit, const tirenv_fit_report *cam_fit,
+                         const tirenv_train_report *nn,
                          const tirenv_train_report *nn_phys, const tirenv_compare_result *phys,
                          const tirenv_compare_result *out_r, const tirenv_dataset *outside_ds)
 {
@@ -271,9 +279,18 @@ static char *study_notes(const tirenv_fit_report *fit, const tirenv_train_report
                 "errors from the covariance, scaled by the residual variance:\n\n"
                 "| parameter | value | standard error |\n|---|---|---|\n",
             fit->n_points, fit->iterations, fit->seconds, 1e3 * fit->rms);
-    for (size_t i = 0; i < fit->n_params; ++i)
-        fprintf(fp, "| %s | %.6g | %.2g |\n", fit->names[i], fit->value[i], fit->std_error[i]);
-    fprintf(fp, "\nThe fitted tire is in `fitted.tir`.\n\n"
+    fit_table(fp, fit);
+    fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (MODEL.md "
+                "section 7), identified the same way (%zu iterations, %.2f s, RMS %.2f mm); "
+                "its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay as in the tire "
+                "file:\n\n", cam_fit->iterations, cam_fit->seconds, 1e3 * cam_fit->rms);
+    fit_table(fp, cam_fit);
+    /* ELLIPS_ORDER is fitted as 1 + e^p: a value at 1 means the data push the cam towards a
+     * pointed (diamond) shape, the edge of what the cam model can be. */
+    if (cam_fit->n_params == 4 && cam_fit->value[3] < 1.01)
+        fprintf(fp, "\nELLIPS_ORDER ends at its lower bound 1: these curves push the cam "
+                    "towards a pointed shape, the edge of what the model can express.\n");
+    fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n"
                 "**Empirical model (nn)**, 4-8-1, trained on the training cases with early "
                 "stopping on the control cases: %zu epochs in %.2f s (best at epoch %zu); RMS "
                 "error train %.2f mm, control %.2f mm, validation %.2f mm (`nn.json`).\n\n",
@@ -338,6 +355,7 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
 {
     tirenv_compare_settings cs = tirenv_compare_default();
     cs.split = TIRENV_SPLIT_VALIDATION;
+    cs.models[cs.n_models++] = tirenv_model_cam;
     cs.out_dir = dir;
     cs.title = title;
     cs.images = s->images;
@@ -370,6 +388,11 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     fs.type = tirenv_model_springs;
     if (!status)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &fit, diag);
+    /* The cam's keys live in their own part of the tire, so both fits share one file. */
+    tirenv_fit_report cam_fit;
+    fs.type = tirenv_model_cam;
+    if (!status)
+        status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &cam_fit, diag);
     snprintf(path, sizeof path, "%s/fitted.tir", s->out_dir);
     if (!status)
         status = tirenv_tir_write(path, &tire, diag);
@@ -413,7 +436,8 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
         status = tirenv_compare_report(&out_ds, &os, &out_r, NULL, diag);
 
     progress(s, "writing the report", 6);
-    if (!status && !(notes = study_notes(&fit, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
+    if (!status &&
+        !(notes = study_notes(&fit, &cam_fit, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     if (!status)
         status = tirenv_compare_report(&ds, &cs, &main_r, notes, diag);
