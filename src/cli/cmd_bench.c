@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "tirenv/road.h"
 
 /* The sweep: the paper's case F (contact length 0.38 m, cleat 0.30 x 0.10 m), 1.5 m at 1 mm. */
 static const double bench_l_c = 0.38, cleat_L = 0.30, cleat_H = 0.10;  /* m */
@@ -46,7 +47,9 @@ static void usage(FILE *fp)
           "0.30 x 0.10 m, centre x from -1.0 to 0.5 m at 1 mm (1501 positions), for the rigid\n"
           "model and the springs model with each equilibrium solver (newton, secant = the\n"
           "paper's eq. 2, brent). Reports the best of N runs, single-threaded. Then the\n"
-          "rig-log import of a 10,000-sample log, read from CSV and from memory.\n"
+          "rig-log import of a 10,000-sample log, read from CSV and from memory. Then the\n"
+          "road: rigid, cam and springs (contact length 0.33 m) over a 1 km ISO 8608 class C\n"
+          "road at 10 mm (seed 1), 100,001 positions, against the targets of issue 6.\n"
           "\n"
           "options:\n"
           "  --repeat N           runs per method, best kept (default 5)\n",
@@ -263,6 +266,83 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
 
+/* The road (issue 6, "speed over roads"): a 1 km ISO 8608 class C road at 10 mm, seed 1, and
+ * the centre x = 0 .. 1000 m at 10 mm. The targets are the issue's, on one core. */
+static const double road_l_c = 0.33, road_length = 1000.0, road_dx = 0.01; /* m */
+static const struct {
+    const char *model;
+    double target; /* positions/s */
+} road_cases[] = {
+    {"rigid", 5e6},
+    {"cam", 5e6},
+    {"springs", 1e5},
+};
+enum { N_ROAD_CASES = sizeof road_cases / sizeof road_cases[0] };
+
+/* Best of repeat sweeps of tirenv_model_envelope over the road, in *seconds; the model is
+ * set (which resets the warm start) before every sweep and outside the timing. */
+static int road_time(const tirenv_tire *tire, const char *model, const tirenv_profile *road,
+                     size_t n, const double x[], tirenv_point pt[], long repeat,
+                     double *seconds, tirenv_diag *diag)
+{
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_type_find(model), tire);
+    double load;
+    int status = m ? tirenv_model_load_for_contact_length(m, road_l_c, &load, diag)
+                   : TIRENV_ENOMEM;
+    *seconds = INFINITY;
+    for (long rep = 0; rep < repeat && !status; ++rep) {
+        if ((status = tirenv_model_set(m, road, load, diag)))
+            break;
+        const double t0 = now();
+        status = tirenv_model_envelope(m, n, x, pt, NULL, diag);
+        *seconds = fmin(*seconds, now() - t0);
+    }
+    tirenv_model_free(m);
+    return status;
+}
+
+static int bench_road(const tirenv_tire *tire, long repeat)
+{
+    tirenv_road_settings rs = tirenv_road_default();
+    rs.length = road_length;
+    rs.dx = road_dx;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_profile *road = NULL;
+    int status = tirenv_road_iso8608(&rs, &road, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    const size_t n = (size_t)floor(road_length / road_dx + 0.5) + 1;
+    double *x = malloc(n * sizeof *x);
+    tirenv_point *pt = malloc(n * sizeof *pt);
+    if (!x || !pt)
+        status = TIRENV_ENOMEM;
+    for (size_t k = 0; k < n && !status; ++k)
+        x[k] = (double)k * road_dx;
+    printf("\nroad: ISO 8608 class %c, %.0f m at %g mm (seed %lu, %zu vertices), contact "
+           "length %.2f m,\n%zu positions x = 0 .. %.0f m at %g mm, best of %ld runs\n",
+           rs.road_class, road_length, 1e3 * road_dx, rs.seed, tirenv_profile_size(road),
+           road_l_c, n, road_length, 1e3 * road_dx, repeat);
+    /* Rows indented, so that they are not mistaken for the solver table's above. */
+    printf("  %-10s %13s %12s %8s\n", "model", "positions/s", "target", "");
+    for (size_t i = 0; i < N_ROAD_CASES && !status; ++i) {
+        double t;
+        status = road_time(tire, road_cases[i].model, road, n, x, pt, repeat, &t, &diag);
+        if (!status)
+            printf("  %-10s %13.0f %12.0f %8s\n", road_cases[i].model, (double)n / t,
+                   road_cases[i].target, (double)n / t >= road_cases[i].target ? "met" : "missed");
+    }
+    if (!status)
+        printf("  %-10s %13s %12.0f %8s\n", "nn", "-", 1e7, "n/a");
+    if (!status)
+        printf("nn: not applicable to roads (trained on single cleats); its batched rate over "
+               "a cleat sweep is reported by bench/tirenv-bench-nn (make bench)\n");
+    free(pt);
+    free(x);
+    tirenv_profile_free(road);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
 int cli_bench_main(int argc, char *argv[])
 {
     enum { OPT_REPEAT = CLI_OPT_FIRST_OWN };
@@ -329,5 +409,5 @@ int cli_bench_main(int argc, char *argv[])
     print_table(repeat, r);
     code = bench_import(&tire, prof, repeat);
     tirenv_profile_free(prof);
-    return code;
+    return code ? code : bench_road(&tire, repeat);
 }

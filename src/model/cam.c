@@ -148,6 +148,21 @@ double tirenv_cam__lift(const tirenv_cam__geom *g, const tirenv_profile *p, doub
         q_x = zs[k_x] + (zs[k_x + 1] - zs[k_x]) * ((x - xs[k_x]) / (xs[k_x + 1] - xs[k_x]));
     cam_contact best = {q_x, x, q_x};
 
+    /* A tighter z_cap from the profile's block maxima: the highest vertex from the last one
+     * at or before the reach's start to the first one beyond its end, which bounds every
+     * point within reach. On a long road this is the local relief, not the whole road's. */
+    {
+        const size_t B = TIRENV_PROFILE__BLOCK;
+        const size_t k_l = tirenv_profile__segment_at(p, x - g->a_e);
+        const size_t k_r = tirenv_profile__segment_at(p, x + g->a_e);
+        const size_t b_r = (k_r + 1 < n ? k_r + 1 : n - 1) / B;
+        double z_local = p->z_block[k_l / B];
+        for (size_t b = k_l / B + 1; b <= b_r; b++)
+            z_local = z_local > p->z_block[b] ? z_local : p->z_block[b];
+        if (z_local < z_cap)
+            z_cap = z_local;
+    }
+
     /* The vertices first, nearest first on each side: they are cheap to rule out and raise
      * the bar for the tangencies. A side's walk stops at the first vertex (out of reach, or)
      * where even the highest ground z_cap could not beat the best lift at its distance: the

@@ -20,6 +20,13 @@ static void consider(rigid_contact *best, double z_c, double p_x, double p_z)
     }
 }
 
+/* The larger of two numbers, neither NaN: fmax without its call (GCC keeps fmax out of line
+ * for its NaN rule). */
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
 /* Height over the point (p_x, p_z) of a disc centred at abscissa x that touches it:
  * p_z + sqrt(R0^2 - u^2), u = x - p_x, with the radicand as (R0 - u)(R0 + u), which keeps
  * its accuracy near u = +-R0 where the two squares nearly cancel. */
@@ -44,10 +51,23 @@ static double over_point(double R0, double x, double p_x, double p_z)
  * C_x = x fixes P_x = x + R0 dz / |d|, and then z_c = P_z + R0 dx / |d|. The quotients are
  * formed first so that a flat segment (|d| = dx exactly) gives z_c = P_z + R0 exactly.
  *
- * Only segments meeting [x - R0, x + R0] can touch; a binary search finds the first. */
+ * Only segments meeting [x - R0, x + R0] can touch; a binary search finds the first.
+ *
+ * Pruning, which changes no result. The point of the ground straight below x touches at
+ * q_x + R0, so the highest touching point is at least that high, and so at least the bar
+ * max(q_x + R0, best so far). A block of the profile's block-maximum index whose highest
+ * vertex, z_b, at the block's nearest distance d from x, touches below the bar,
+ * z_b + sqrt(R0^2 - d^2) < bar, holds no winner and is skipped whole; within a block, a vertex
+ * or a segment whose higher end cannot reach the bar (z + R0 < bar) is skipped before its
+ * square root or hypot. Only candidates strictly below the final best are skipped, and the
+ * rest are considered in the same order, so the result, ties included, is the plain scan's
+ * bit for bit. The comparisons are made against bar - margin, with margin = 2^-40 (|q_x| +
+ * R0): far above the few ulps by which a computed touching height (or q_x) can differ from
+ * its exact value, far below any difference that matters. On a long road this leaves a few
+ * blocks near x to scan, not the 2*R0/dx vertices within reach. */
 static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigid_contact *best)
 {
-    const size_t n = p->n;
+    const size_t n = p->n, B = TIRENV_PROFILE__BLOCK;
     const double *xs = p->x, *zs = p->z;
     const double x_lo = x - R0, x_hi = x + R0;
 
@@ -56,19 +76,70 @@ static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigi
     if (x >= xs[n - 1]) /* right flat extension */
         consider(best, zs[n - 1] + R0, x, zs[n - 1]);
 
-    for (size_t k = x_lo < xs[0] ? 0 : tirenv_profile__segment_at(p, x_lo); k < n; k++) {
-        if (xs[k] > x_hi)
-            break;
-        if (xs[k] >= x_lo)
-            consider(best, over_point(R0, x, xs[k], zs[k]), xs[k], zs[k]);
-        if (k + 1 == n || !(xs[k + 1] > xs[k]))
-            continue; /* last vertex, or a wall: its vertices are the candidates */
-        const double dx = xs[k + 1] - xs[k], dz = zs[k + 1] - zs[k];
-        const double len = hypot(dx, dz);
-        const double P_x = x + R0 * (dz / len);
-        if (P_x > xs[k] && P_x < xs[k + 1]) {
-            const double P_z = zs[k] + dz * ((P_x - xs[k]) / dx);
-            consider(best, P_z + R0 * (dx / len), P_x, P_z);
+    /* The ground under x, as tirenv_profile_height computes it. */
+    const size_t k_x = tirenv_profile__segment_at(p, x);
+    double q_x;
+    if (x < xs[0])
+        q_x = zs[0];
+    else if (x == xs[k_x] && k_x >= 1 && xs[k_x - 1] == x)
+        q_x = fmax(zs[k_x - 1], zs[k_x]);
+    else if (k_x == n - 1)
+        q_x = zs[n - 1];
+    else
+        q_x = zs[k_x] + (zs[k_x + 1] - zs[k_x]) * ((x - xs[k_x]) / (xs[k_x + 1] - xs[k_x]));
+    const double margin = 0x1p-40 * (fabs(q_x) + R0);
+    double bar_0 = q_x + R0 - margin;
+    /* A few vertices around x raise the bar close to its final height before the ordered
+     * scan: they are touching points, so any of their heights is a lower bound too. */
+    for (size_t j = k_x > 4 ? k_x - 4 : 0; j < n && j <= k_x + 5; j++)
+        if (xs[j] >= x_lo && xs[j] <= x_hi)
+            bar_0 = max2(bar_0, over_point(R0, x, xs[j], zs[j]) - margin);
+    double bar = max2(best->z_c - margin, bar_0);
+
+    /* The first segment within reach, the last vertex with x_k <= x_lo, by galloping back
+     * from k_x: O(log) of the vertices within reach rather than of the whole profile. */
+    size_t k = 0;
+    if (!(x_lo < xs[0])) {
+        size_t step = 1;
+        while (step <= k_x && xs[k_x - step] > x_lo)
+            step *= 2;
+        size_t lo = step <= k_x ? k_x - step : 0, hi = k_x - step / 2; /* xs[lo] <= x_lo */
+        while (lo < hi) { /* the last index in [lo, hi] with xs <= x_lo */
+            const size_t mid = hi - (hi - lo) / 2;
+            if (xs[mid] <= x_lo)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        k = lo;
+    }
+    while (k < n && xs[k] <= x_hi) {
+        /* The rest of k's block: vertices k .. k_end - 1 and the segments they start. */
+        const size_t b = k / B, k_end = (b + 1) * B < n ? (b + 1) * B : n;
+        const double x_a = xs[b * B], x_b = xs[k_end < n ? k_end : n - 1];
+        const double d = x < x_a ? x_a - x : x > x_b ? x - x_b : 0.0;
+        const double gap = bar - p->z_block[b]; /* the lift the block would need */
+        if (gap > 0.0 && (d >= R0 || gap * gap > (R0 - d) * (R0 + d))) {
+            k = k_end;
+            continue;
+        }
+        for (; k < k_end; k++) {
+            if (xs[k] > x_hi)
+                return;
+            if (xs[k] >= x_lo && zs[k] + R0 >= bar) {
+                consider(best, over_point(R0, x, xs[k], zs[k]), xs[k], zs[k]);
+                bar = max2(best->z_c - margin, bar_0);
+            }
+            if (k + 1 == n || !(xs[k + 1] > xs[k]) || max2(zs[k], zs[k + 1]) + R0 < bar)
+                continue; /* last vertex, a wall (its vertices are the candidates), or low */
+            const double dx = xs[k + 1] - xs[k], dz = zs[k + 1] - zs[k];
+            const double len = hypot(dx, dz);
+            const double P_x = x + R0 * (dz / len);
+            if (P_x > xs[k] && P_x < xs[k + 1]) {
+                const double P_z = zs[k] + dz * ((P_x - xs[k]) / dx);
+                consider(best, P_z + R0 * (dx / len), P_x, P_z);
+                bar = max2(best->z_c - margin, bar_0);
+            }
         }
     }
 }

@@ -20,6 +20,8 @@ static tirenv_profile *checked(tirenv_profile *p)
         tirenv_profile_free(p);
         return NULL;
     }
+    if (p)
+        tirenv_profile__seal(p);
     return p;
 }
 

@@ -44,21 +44,36 @@ int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv
 }
 
 /* The arrays follow the struct in one block, so a profile is one malloc and one free and
- * its vertices sit together in cache for the ray casters. */
+ * its vertices sit together in cache for the ray casters. The block maxima add 1/16 to it. */
 struct tirenv_profile *tirenv_profile__new(size_t n)
 {
     const size_t align = alignof(double);
     const size_t head = (sizeof(struct tirenv_profile) + align - 1) / align * align;
-    if (n == 0 || n > (SIZE_MAX - head) / (2 * sizeof(double)))
+    if (n == 0 || n > (SIZE_MAX - head) / (3 * sizeof(double)))
         return NULL;
-    unsigned char *block = malloc(head + 2 * n * sizeof(double));
+    const size_t n_block = (n + TIRENV_PROFILE__BLOCK - 1) / TIRENV_PROFILE__BLOCK;
+    unsigned char *block = malloc(head + (2 * n + n_block) * sizeof(double));
     if (!block)
         return NULL;
     struct tirenv_profile *p = (struct tirenv_profile *)block;
     p->n = n;
+    p->n_block = n_block;
     p->x = (double *)(block + head);
     p->z = p->x + n;
+    p->z_block = p->z + n;
     return p;
+}
+
+void tirenv_profile__seal(struct tirenv_profile *p)
+{
+    const size_t B = TIRENV_PROFILE__BLOCK;
+    for (size_t b = 0; b < p->n_block; b++) {
+        const size_t k_end = b * B + B < p->n - 1 ? b * B + B : p->n - 1;
+        double z_max = p->z[b * B];
+        for (size_t k = b * B + 1; k <= k_end; k++)
+            z_max = fmax(z_max, p->z[k]);
+        p->z_block[b] = z_max;
+    }
 }
 
 tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[])
@@ -70,6 +85,7 @@ tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[
         return NULL;
     memcpy(p->x, x, n * sizeof(double));
     memcpy(p->z, z, n * sizeof(double));
+    tirenv_profile__seal(p);
     return p;
 }
 

@@ -7,17 +7,29 @@
 
 #include "tirenv/profile.h"
 
-/* One allocation: the struct, then x[0..n-1], then z[0..n-1]. Invariants (checked by
- * tirenv_profile_validate): n >= 1, all finite, x non-decreasing, at most two equal x. */
+/* Vertices per block of the block-maximum index (a power of two). */
+#define TIRENV_PROFILE__BLOCK 16
+
+/* One allocation: the struct, then x[0..n-1], then z[0..n-1], then z_block[0..n_block-1].
+ * Invariants (checked by tirenv_profile_validate): n >= 1, all finite, x non-decreasing, at
+ * most two equal x; and, once sealed, z_block[b] is the highest z_k over the vertices
+ * k = b*B .. min(b*B + B, n - 1) (B = TIRENV_PROFILE__BLOCK): block b's own vertices and the
+ * next block's first, so that it bounds every point of the segments b*B .. b*B + B - 1. */
 struct tirenv_profile {
-    size_t n;  /* number of vertices */
-    double *x; /* abscissae (m), non-decreasing */
-    double *z; /* heights (m) */
+    size_t n;        /* number of vertices */
+    size_t n_block;  /* number of blocks, ceil(n / B) */
+    double *x;       /* abscissae (m), non-decreasing */
+    double *z;       /* heights (m) */
+    double *z_block; /* block maxima of z (m), see above */
 };
 
 /* An uninitialised profile of n >= 1 vertices in one block, for generators that fill the
- * arrays in place; the caller must establish the invariants above. NULL if out of memory. */
+ * arrays in place; the caller must establish the invariants above, then call
+ * tirenv_profile__seal. NULL if out of memory. */
 struct tirenv_profile *tirenv_profile__new(size_t n);
+
+/* Builds the block maxima from x and z, once they are final. O(n). */
+void tirenv_profile__seal(struct tirenv_profile *p);
 
 /* Index k of the last vertex with x_k <= x, found by binary search in O(log n); 0 when
  * x < x_0 (callers tell the left flat extension apart by x < p->x[0]). At a wall

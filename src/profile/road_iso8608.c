@@ -154,6 +154,7 @@ int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
         p->z[j] = c[j] - c[0];
     }
     if (tirenv_profile_validate(p->n, p->x, p->z, diag) == TIRENV_OK) {
+        tirenv_profile__seal(p);
         *out = p;
         p = NULL;
     } else {
