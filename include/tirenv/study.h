@@ -31,8 +31,9 @@ int tirenv_curve_errors_compute(size_t n, const double x[], const double h_meas[
                                 tirenv_curve_errors *out);
 
 /* A physical model's curve for a case, at the case's points (curve.x, ascending): the model is
- * driven by the case's applied load over the cleat L x H, as on the rig. h[] has curve.n
- * entries. */
+ * driven by the case's applied load over the cleat L x H (or the case's own profile), as on
+ * the rig. h[] has curve.n entries. The model is left set on a profile freed on return: set it
+ * again before using it directly. */
 int tirenv_case_predict_model(tirenv_model *m, const tirenv_case *c, double h[],
                               tirenv_diag *diag);
 
