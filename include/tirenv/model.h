@@ -70,6 +70,17 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
 
+/* Replaces the profile (borrowed) of a model already set, keeping its load and z_flat;
+ * for tirenv_model_stream's moving window. TIRENV_EINVAL if tirenv_model_set has not
+ * succeeded; TIRENV_ERANGE as tirenv_model_set (the model is then unset). NULL unsets the
+ * model (tirenv_model_eval then fails until tirenv_model_set). */
+int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tirenv_diag *diag);
+
+/* A bound (m) on how far from a position x the model reads the profile at the load set
+ * (before tirenv_model_set, a bound for usual loads): the profile may be anything beyond
+ * [x - reach, x + reach] without changing the result at x. */
+double tirenv_model_reach(const tirenv_model *m);
+
 /* Equilibrium at position x (m), warm-started from the previous call. On failure out->x is x
  * and diag says why (x, load, bracket). */
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);

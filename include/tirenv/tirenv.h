@@ -13,6 +13,7 @@
 #include "tirenv/springs.h"
 #include "tirenv/ring.h"
 #include "tirenv/io.h"
+#include "tirenv/stream.h"
 #include "tirenv/curve.h"
 #include "tirenv/rig.h"
 #include "tirenv/dataset.h"

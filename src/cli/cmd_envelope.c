@@ -14,7 +14,7 @@ static const double rise_threshold = 1e-4;  /* first rise: h above 0.1 mm, m */
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
-          "                       [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
+          "                       [--x-from X] [--x-to X] [--dx DX] [--stream] [-o FILE]\n"
           "                       [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
@@ -33,6 +33,9 @@ static void usage(FILE *fp)
           "                       before the obstacle's first vertex to R0 + 0.02 m after its\n"
           "                       last\n"
           "  --dx DX              spacing of the positions, m (default 0.001)\n"
+          "  --stream             with --profile: read the file as the tire rolls, in memory\n"
+          "                       bounded by the tire's reach whatever the road's length (the\n"
+          "                       file is read twice: first to check it and find its ends)\n"
           "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
           "                       '-': standard output)\n",
           fp);
@@ -42,24 +45,47 @@ static void usage(FILE *fp)
 }
 
 typedef struct {
+    int stream;            /* --stream */
     int have_from, have_to;
     double x_from, x_to, dx;  /* m */
 } sweep;
 
-static int write_csv(FILE *fp, size_t n, const tirenv_point pt[])
+static const char header[] = "x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n";
+
+static void write_row(FILE *fp, const tirenv_point *pt)
 {
-    fputs("x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n", fp);
-    for (size_t k = 0; k < n; ++k)
-        fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", pt[k].x, pt[k].z, pt[k].h, pt[k].fx,
-                pt[k].fz, pt[k].contacts, pt[k].iterations);
-    return ferror(fp) ? -1 : 0;
+    fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", pt->x, pt->z, pt->h, pt->fx, pt->fz,
+            pt->contacts, pt->iterations);
 }
 
-/* What a reader wants at a glance: where the curve peaks, where it starts to rise, and what
- * the equilibrium cost. The rigid disc has no contact length of its own, so it shows the one
- * asked for, if any. */
-static void summary(tirenv_model *m, const cli_options *o, double load, size_t n,
-                    const tirenv_point pt[])
+/* What a reader wants at a glance, gathered point by point so that a streamed sweep, which
+ * keeps no points, gives the same line: where the curve peaks, where it starts to rise, and
+ * what the equilibrium cost. */
+typedef struct {
+    size_t n;
+    tirenv_point peak;
+    int have_rise;
+    double rise_x;         /* m */
+    double it_sum;
+    size_t it_max;
+} tally;
+
+static void tally_add(tally *t, const tirenv_point *pt)
+{
+    if (t->n == 0 || pt->h > t->peak.h)
+        t->peak = *pt;
+    if (!t->have_rise && pt->h > rise_threshold) {
+        t->have_rise = 1;
+        t->rise_x = pt->x;
+    }
+    t->it_sum += (double)pt->iterations;
+    if (pt->iterations > t->it_max)
+        t->it_max = pt->iterations;
+    t->n++;
+}
+
+/* The rigid disc has no contact length of its own, so it shows the one asked for, if any. */
+static void summary(tirenv_model *m, const cli_options *o, double load, const tally *t)
 {
     tirenv_flat flat;
     double l_c = 0;
@@ -67,35 +93,38 @@ static void summary(tirenv_model *m, const cli_options *o, double load, size_t n
         l_c = flat.contact_length;
     if (!(l_c > 0) && o->have_contact_length)
         l_c = o->contact_length;
-    size_t peak = 0, rise = n, it_max = 0;
-    double it_sum = 0;
-    for (size_t k = 0; k < n; ++k) {
-        if (pt[k].h > pt[peak].h)
-            peak = k;
-        if (rise == n && pt[k].h > rise_threshold)
-            rise = k;
-        it_sum += (double)pt[k].iterations;
-        if (pt[k].iterations > it_max)
-            it_max = pt[k].iterations;
-    }
     char lc_text[64] = "no contact length";
     if (l_c > 0)
         snprintf(lc_text, sizeof lc_text, "contact length %.4g m", l_c);
     char rise_text[64] = "no rise above 0.1 mm";
-    if (rise < n)
-        snprintf(rise_text, sizeof rise_text, "first rise at x = %.4f m", pt[rise].x);
+    if (t->have_rise)
+        snprintf(rise_text, sizeof rise_text, "first rise at x = %.4f m", t->rise_x);
     fprintf(stderr,
             "tirenv envelope: %s model, load %.6g N (%s), %zu positions: peak h %.3f mm at "
             "x = %.4f m, %s, iterations per position mean %.2f max %zu\n",
-            tirenv_model_name(m), load, lc_text, n, pt[peak].h * 1e3, pt[peak].x, rise_text,
-            it_sum / (double)n, it_max);
+            tirenv_model_name(m), load, lc_text, t->n, t->peak.h * 1e3, t->peak.x, rise_text,
+            t->n ? t->it_sum / (double)t->n : 0.0, t->it_max);
+}
+
+/* The streamed sweep's sink: one row out and into the tally per position. */
+typedef struct {
+    FILE *fp;
+    tally t;
+} stream_out;
+
+static int stream_row(void *ctx, const tirenv_point *pt)
+{
+    stream_out *s = ctx;
+    write_row(s->fp, pt);
+    tally_add(&s->t, pt);
+    return ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
 }
 
 /* Parses the options; returns an exit code, or -1 to go on. */
 static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type **type,
                  sweep *s, const char **out_path)
 {
-    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_X_FROM, OPT_X_TO, OPT_DX };
+    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_X_FROM, OPT_X_TO, OPT_DX, OPT_STREAM };
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         CLI_METHOD_LONGOPTS,
@@ -105,6 +134,7 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
         {"x-from", required_argument, NULL, OPT_X_FROM},
         {"x-to", required_argument, NULL, OPT_X_TO},
         {"dx", required_argument, NULL, OPT_DX},
+        {"stream", no_argument, NULL, OPT_STREAM},
         {"output", required_argument, NULL, 'o'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
@@ -118,6 +148,9 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
             return CLI_EXIT_OK;
         case 'o':
             *out_path = optarg;
+            break;
+        case OPT_STREAM:
+            s->stream = 1;
             break;
         case OPT_MODEL:
             if (cli_model_type(optarg, type))
@@ -155,11 +188,75 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
         missing = "an obstacle option";
     else if (!o->have_load && !o->have_contact_length)
         missing = "--load N or --contact-length M";
+    else if (s->stream && o->obstacle != CLI_OPT_PROFILE)
+        missing = "--profile FILE with --stream";
     if (missing) {
         cli_error("envelope: expected %s; 'tirenv envelope --help' shows the options", missing);
         return CLI_EXIT_USAGE;
     }
     return -1;
+}
+
+/* The first pass of --stream: checks the whole file (so that a bad row late in it fails
+ * before any output) and finds its first and last x, in constant memory. */
+static int stream_extent(const char *path, double *first, double *last, tirenv_diag *diag)
+{
+    tirenv_profile_reader *r;
+    int status = tirenv_profile_reader_open(path, &r, diag);
+    int got = 1;
+    for (size_t k = 0; !status && got; ++k) {
+        double x, z;
+        status = tirenv_profile_reader_next(r, &x, &z, &got, diag);
+        if (!status && got) {
+            if (k == 0)
+                *first = x;
+            *last = x;
+        }
+    }
+    tirenv_profile_reader_free(r);
+    return status;
+}
+
+/* --stream: rows go out as they are computed; the output file is still all or nothing. */
+static int envelope_stream(const cli_options *o, const tirenv_tire *tire, tirenv_model *m,
+                           double load, sweep *s, const char *out_path)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    double first = 0, last = 0;
+    int status = stream_extent(o->obstacle_arg, &first, &last, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    if (!s->have_from)
+        s->x_from = first - tire->springs.R0 - margin;
+    if (!s->have_to)
+        s->x_to = last + tire->springs.R0 + margin;
+    if (!(s->dx > 0) || !(s->x_to >= s->x_from)) {
+        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m",
+                  s->dx, s->x_from, s->x_to);
+        return CLI_EXIT_USAGE;
+    }
+    tirenv_profile_reader *in = NULL;
+    tirenv_outfile out;
+    stream_out so = {0};
+    if (!(status = tirenv_profile_reader_open(o->obstacle_arg, &in, &diag)) &&
+        !(status = tirenv_outfile_open(&out, out_path, &diag))) {
+        so.fp = out.fp;
+        fputs(header, out.fp);
+        status = tirenv_model_stream(m, in, s->x_from, s->x_to, s->dx, load, stream_row, &so,
+                                     NULL, &diag);
+        if (status == TIRENV_EIO && ferror(out.fp))
+            status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
+        if (!status)
+            status = tirenv_outfile_commit(&out, &diag);
+        else
+            tirenv_outfile_abort(&out);
+    }
+    tirenv_profile_reader_free(in);
+    if (status)
+        return cli_fail(status, &diag);
+    summary(m, o, load, &so.t);
+    return CLI_EXIT_OK;
 }
 
 int cli_envelope_main(int argc, char *argv[])
@@ -183,9 +280,13 @@ int cli_envelope_main(int argc, char *argv[])
     tirenv_point *pt = NULL;
     size_t n = 0;
     double load = 0;
-    if ((code = cli_tire(&o, &tire)) || (code = cli_profile(&o, &prof)) ||
+    if ((code = cli_tire(&o, &tire)) || (!s.stream && (code = cli_profile(&o, &prof))) ||
         (code = cli_model(type, &tire, &m)) || (code = cli_load(&o, m, &load)))
         goto done;
+    if (s.stream) {
+        code = envelope_stream(&o, &tire, m, load, &s, out_path);
+        goto done;
+    }
     double first, last;
     tirenv_profile_extent(prof, &first, &last);
     if (!s.have_from)
@@ -206,8 +307,13 @@ int cli_envelope_main(int argc, char *argv[])
     /* Opened before the sweep so that a bad -o path fails at once, not after it. */
     if (!status && !(status = tirenv_outfile_open(&out, out_path, &diag))) {
         status = tirenv_model_envelope(m, n, x, pt, NULL, &diag);
-        if (!status && write_csv(out.fp, n, pt))
-            status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
+        if (!status) {
+            fputs(header, out.fp);
+            for (size_t k = 0; k < n; ++k)
+                write_row(out.fp, &pt[k]);
+            if (ferror(out.fp))
+                status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
+        }
         if (!status)
             status = tirenv_outfile_commit(&out, &diag);
         else
@@ -217,7 +323,10 @@ int cli_envelope_main(int argc, char *argv[])
         code = cli_fail(status, &diag);
         goto done;
     }
-    summary(m, &o, load, n, pt);
+    tally t = {0};
+    for (size_t k = 0; k < n; ++k)
+        tally_add(&t, &pt[k]);
+    summary(m, &o, load, &t);
     code = CLI_EXIT_OK;
 done:
     free(pt);

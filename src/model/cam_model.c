@@ -157,6 +157,16 @@ static int cam_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
+/* The two cams sit l_s/2 either side of x and each reads a_e either side of its own centre.
+ * Before a load is set, l_s = ELLIPS_SHIFT*2a is bounded with a <= R0. */
+static double cam_reach(const void *state)
+{
+    const cam_state *st = state;
+    const double R0 = st->tire.springs.R0;
+    const double half_base = st->l_s > 0 ? 0.5 * st->l_s : st->tire.cam.shift * R0;
+    return st->tire.cam.length * R0 + half_base;
+}
+
 static const tirenv_model_type cam_type = {
     .name = "cam",
     .alloc = cam_alloc,
@@ -165,5 +175,6 @@ static const tirenv_model_type cam_type = {
     .load_for_contact_length = cam_load_for_contact_length,
     .set = cam_set,
     .eval = cam_eval,
+    .reach = cam_reach,
 };
 const tirenv_model_type *tirenv_model_cam = &cam_type;

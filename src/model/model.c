@@ -10,6 +10,7 @@ struct tirenv_model {
     void *state;
     tirenv_tire tire;
     double load;           /* N */
+    double z_flat;         /* flat-ground centre height at load, m */
     int ready;             /* a profile and load are set */
 };
 
@@ -77,26 +78,57 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
     return m->type->load_for_contact_length(m->state, l_c, load, diag);
 }
 
+/* The enveloping models assume the centre clears the ground it rolls over. */
+static int below_centre(const tirenv_profile *profile, double z_flat, tirenv_diag *diag)
+{
+    const size_t n = tirenv_profile_size(profile);
+    const double *z = tirenv_profile_z(profile);
+    for (size_t k = 0; k < n; ++k)
+        if (z[k] >= z_flat)
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
+                                "ground at %g m reaches the tire centre's flat-ground height "
+                                "%g m: the enveloping models do not apply",
+                                z[k], z_flat);
+    return TIRENV_OK;
+}
+
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag)
 {
     tirenv_flat flat;
     m->ready = 0;
     int status = tirenv_model_flat(m, load, &flat, diag);
-    if (status)
+    if (status || (status = below_centre(profile, flat.z_flat, diag)))
         return status;
-    const size_t n = tirenv_profile_size(profile);
-    const double *z = tirenv_profile_z(profile);
-    for (size_t k = 0; k < n; ++k)
-        if (z[k] >= flat.z_flat)
-            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
-                                "ground at %g m reaches the tire centre's flat-ground height "
-                                "%g m: the enveloping models do not apply",
-                                z[k], flat.z_flat);
     status = m->type->set(m->state, profile, load, flat.z_flat, diag);
     m->load = load;
+    m->z_flat = flat.z_flat;
     m->ready = status == TIRENV_OK;
     return status;
+}
+
+/* The type's set with the load and z_flat already found: no flat-ground solve per window.
+ * The warm start is the type's business; the deformable models restart theirs in set. */
+int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tirenv_diag *diag)
+{
+    if (!profile) {
+        m->ready = 0;
+        return TIRENV_OK;
+    }
+    if (!m->ready)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "no profile and load set (call tirenv_model_set first)");
+    int status = below_centre(profile, m->z_flat, diag);
+    if (status || (status = m->type->set(m->state, profile, m->load, m->z_flat, diag)))
+        m->ready = 0;
+    return status;
+}
+
+/* 5 % beyond R0 covers the rigid disc, the springs and the ring, which touch the ground only
+ * within R0 of the centre's x. */
+double tirenv_model_reach(const tirenv_model *m)
+{
+    return m->type->reach ? m->type->reach(m->state) : 1.05 * m->tire.springs.R0;
 }
 
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
