@@ -9,6 +9,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "profile/profile_impl.h"
@@ -177,6 +178,96 @@ static void test_max_height(void **state)
     tirenv_profile_free(p);
 }
 
+/* A rough profile of n vertices with walls (equal x) and plateaus (equal z), from a fixed
+ * linear congruential sequence: the block index and the searches meet every layout. */
+static double lcg_unit(unsigned long *seed)
+{
+    *seed = *seed * 6364136223846793005UL + 1442695040888963407UL;
+    return (double)(*seed >> 11) * 0x1p-53;
+}
+
+static tirenv_profile *rough_profile(size_t n, unsigned long seed)
+{
+    double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
+    assert_non_null(x);
+    assert_non_null(z);
+    double xk = -1.2345, zk = 0.0;
+    for (size_t k = 0; k < n; k++) {
+        const double r = lcg_unit(&seed);
+        /* a wall's second vertex (never a third equal x), a plateau, or a random step */
+        if (k > 0 && r < 0.1 && !(k > 1 && x[k - 2] == x[k - 1]))
+            ;
+        else
+            xk += 0.0073 + 0.01 * lcg_unit(&seed);
+        if (r >= 0.1 && r < 0.3)
+            ; /* same height */
+        else
+            zk += 0.031 * (lcg_unit(&seed) - 0.5);
+        x[k] = xk;
+        z[k] = zk;
+    }
+    tirenv_profile *p = tirenv_profile_alloc(n, x, z);
+    free(x);
+    free(z);
+    assert_non_null(p);
+    return p;
+}
+
+/* tirenv_profile_max_height as a plain scan of every vertex in the interval, without the
+ * block maxima: the block index must give the same value bit for bit. */
+static double max_height_plain(const tirenv_profile *p, double x_lo, double x_hi)
+{
+    double z_max = fmax(tirenv_profile_height(p, x_lo), tirenv_profile_height(p, x_hi));
+    for (size_t k = 0; k < p->n; k++)
+        if (p->x[k] >= x_lo && p->x[k] <= x_hi)
+            z_max = fmax(z_max, p->z[k]);
+    return z_max;
+}
+
+static void test_max_height_blocks(void **state)
+{
+    (void)state;
+    unsigned long seed = 2385;
+    const size_t sizes[] = {1, 2, 15, 16, 17, 33, 500};
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        tirenv_profile *p = rough_profile(sizes[s], 7 + s);
+        const double x0 = p->x[0], span = p->x[p->n - 1] - x0;
+        for (int q = 0; q < 400; q++) {
+            double a = x0 - 0.1 + (span + 0.2) * lcg_unit(&seed);
+            double b = a + (span + 0.2) * lcg_unit(&seed) * (q % 3 == 0 ? 1.0 : 0.05);
+            if (q % 5 == 1) /* ends exactly on vertices, walls included */
+                a = p->x[(size_t)(lcg_unit(&seed) * (double)p->n)];
+            if (q % 7 == 2)
+                b = p->x[(size_t)(lcg_unit(&seed) * (double)p->n)];
+            if (b < a)
+                b = a;
+            assert_true(tirenv_profile_max_height(p, a, b) == max_height_plain(p, a, b));
+        }
+        tirenv_profile_free(p);
+    }
+}
+
+static void test_segment_near(void **state)
+{
+    (void)state;
+    unsigned long seed = 4357;
+    tirenv_profile *p = rough_profile(300, 11);
+    const double x0 = p->x[0], span = p->x[p->n - 1] - x0;
+    for (int q = 0; q < 3000; q++) {
+        double x = x0 - 0.05 + (span + 0.1) * lcg_unit(&seed);
+        if (q % 3 == 0) /* exactly on a vertex, walls included */
+            x = p->x[(size_t)(lcg_unit(&seed) * (double)p->n)];
+        const size_t hint = (size_t)(lcg_unit(&seed) * (double)p->n);
+        assert_int_equal(tirenv_profile__segment_near(p, hint, x),
+                         tirenv_profile__segment_at(p, x));
+    }
+    for (size_t hint = 0; hint < p->n; hint++) { /* every hint, off both ends */
+        assert_int_equal(tirenv_profile__segment_near(p, hint, x0 - 1.0), 0);
+        assert_int_equal(tirenv_profile__segment_near(p, hint, x0 + span + 1.0), p->n - 1);
+    }
+    tirenv_profile_free(p);
+}
+
 /* --- generators ---------------------------------------------------------------------- */
 
 static void assert_vertices(tirenv_profile *p, size_t n, const double x[], const double z[])
@@ -301,6 +392,8 @@ int main(void)
         cmocka_unit_test(test_height),
         cmocka_unit_test(test_segment_at),
         cmocka_unit_test(test_max_height),
+        cmocka_unit_test(test_max_height_blocks),
+        cmocka_unit_test(test_segment_near),
         cmocka_unit_test(test_generators_shapes),
         cmocka_unit_test(test_generator_half_cylinder),
         cmocka_unit_test(test_generator_sine),

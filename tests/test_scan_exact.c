@@ -12,6 +12,7 @@
 #include <stdlib.h>
 
 #include "tirenv/profile.h"
+#include "tirenv/cam.h"
 #include "tirenv/rigid.h"
 
 /* The plain scan, as rigid.c had it before the block maxima: every vertex and every sloped
@@ -112,10 +113,140 @@ static void test_rigid_equals_plain(void **state)
     gsl_rng_free(rng);
 }
 
+/* The cam's touching height over a vertex at t = |u|/a_e, and over a sloped segment's
+ * tangency point, by the same operations as cam.c, without any pruning. */
+static double plain_edge(double b_e, double c_e, double t)
+{
+    if (t <= 0.0)
+        return 0.0;
+    const double tc = pow(t, c_e);
+    return b_e * (pow(1.0 - tc, 1.0 / c_e) - 1.0);
+}
+
+static int plain_tangency(double a_e, double b_e, double c_e, double x, double x_k, double z_k,
+                          double x_k1, double s, double *Z, double *p_x)
+{
+    const double inv_c = 1.0 / c_e, inv_c1 = 1.0 / (c_e - 1.0), p = c_e / (c_e - 1.0);
+    const double m = fabs(s) * (a_e / b_e);
+    const double lm = log(m);
+    double t, rise_m1;
+    if (m < 1.0) {
+        const double k = exp(lm * inv_c1), j = k * m;
+        const double L = log1p(j), P = exp(-inv_c * L);
+        t = k * P;
+        rise_m1 = j * P + expm1(-inv_c * L);
+    } else {
+        const double j = exp(-lm * p), L = log1p(j), P = exp(-inv_c * L);
+        t = P;
+        rise_m1 = m * (1.0 + j) * P - 1.0;
+    }
+    const double xi = s > 0 ? x + a_e * t : x - a_e * t;
+    if (!(xi > x_k && xi < x_k1))
+        return 0;
+    *Z = z_k + s * (x - x_k) + b_e * rise_m1;
+    *p_x = xi;
+    return 1;
+}
+
+/* The cam's lift as a plain scan in cam.c's order: the ground under x, the vertices within
+ * reach nearest first on each side, then every sloped segment between them. */
+static double plain_cam(size_t n, const double xs[], const double zs[],
+                        const tirenv_cam_shape *cam, double x, double *px, double *pz)
+{
+    const double a_e = cam->a_e, b_e = cam->b_e, c_e = cam->c_e, inv_a = 1.0 / a_e;
+    size_t k_x = 0;
+    while (k_x + 1 < n && xs[k_x + 1] <= x)
+        k_x++;
+    double q_x;
+    if (x < xs[0])
+        q_x = zs[0];
+    else if (x == xs[k_x] && k_x >= 1 && xs[k_x - 1] == x)
+        q_x = fmax(zs[k_x - 1], zs[k_x]);
+    else if (k_x == n - 1)
+        q_x = zs[n - 1];
+    else
+        q_x = zs[k_x] + (zs[k_x + 1] - zs[k_x]) * ((x - xs[k_x]) / (xs[k_x + 1] - xs[k_x]));
+    double z_c = q_x, p_x = x, p_z = q_x;
+#define CONSIDER(Z, X, P)                                                                    \
+    do {                                                                                     \
+        if ((Z) > z_c) {                                                                     \
+            z_c = (Z);                                                                       \
+            p_x = (X);                                                                       \
+            p_z = (P);                                                                       \
+        }                                                                                    \
+    } while (0)
+    size_t k_left = 0, k_right = n - 1;
+    for (size_t k = k_x + 1; k-- > 0;) {
+        const double t = fabs((x - xs[k]) * inv_a);
+        if ((x - xs[k]) * inv_a > 1.0) {
+            k_left = k;
+            break;
+        }
+        CONSIDER(zs[k] + plain_edge(b_e, c_e, t), xs[k], zs[k]);
+    }
+    for (size_t k = k_x + 1; k < n; k++) {
+        const double t = (xs[k] - x) * inv_a;
+        if (t > 1.0) {
+            k_right = k;
+            break;
+        }
+        CONSIDER(zs[k] + plain_edge(b_e, c_e, fabs(t)), xs[k], zs[k]);
+    }
+    for (size_t k = k_left; k < k_right; k++) {
+        const double x_a = xs[k], x_b = xs[k + 1], z_a = zs[k], z_b = zs[k + 1];
+        if (!(x_b > x_a) || z_b == z_a)
+            continue;
+        const double s = (z_b - z_a) / (x_b - x_a);
+        if (s > 0 ? !(x_b > x) : !(x_a < x))
+            continue;
+        double Z, xi;
+        if (plain_tangency(a_e, b_e, c_e, x, x_a, z_a, x_b, s, &Z, &xi))
+            CONSIDER(Z, xi, z_a + s * (xi - x_a));
+    }
+#undef CONSIDER
+    *px = p_x;
+    *pz = p_z;
+    return z_c;
+}
+
+static void test_cam_equals_plain(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 4357);
+    static const tirenv_cam_shape shapes[] = {
+        {.a_e = 1.0245, .b_e = 0.6686, .c_e = 1.5257}, /* the default tire's */
+        {.a_e = 0.0213, .b_e = 0.0417, .c_e = 1.13},
+        {.a_e = 0.385, .b_e = 0.2385, .c_e = 3.7},
+    };
+    for (size_t trial = 0; trial < 6; trial++) {
+        double x_end;
+        tirenv_profile *p = random_polyline(rng, 2000 + 500 * trial, &x_end);
+        const size_t n = tirenv_profile_size(p);
+        const double *xs = tirenv_profile_x(p), *zs = tirenv_profile_z(p);
+        const tirenv_cam_shape *cam = &shapes[trial % 3];
+        for (size_t i = 0; i < 2000; i++) {
+            const double x = i % 4 == 0 ? xs[gsl_rng_uniform_int(rng, n)]
+                                        : xs[0] - 3.0 + (x_end - xs[0] + 6.0) *
+                                                            gsl_rng_uniform(rng);
+            double px, pz, px_ref, pz_ref;
+            const double z = tirenv_cam_lift(p, cam, x, &px, &pz);
+            const double z_ref = plain_cam(n, xs, zs, cam, x, &px_ref, &pz_ref);
+            if (z != z_ref || px != px_ref || pz != pz_ref)
+                fail_msg("trial %zu, x = %.17g: z %.17g px %.17g pz %.17g, plain scan "
+                         "z %.17g px %.17g pz %.17g", trial, x, z, px, pz, z_ref, px_ref,
+                         pz_ref);
+        }
+        tirenv_profile_free(p);
+    }
+    gsl_rng_free(rng);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rigid_equals_plain),
+        cmocka_unit_test(test_cam_equals_plain),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -86,6 +86,16 @@ static int tangency(const tirenv_cam__geom *g, double x, double x_k, double z_k,
                     double s, double *Z, double *p_x)
 {
     const double m = fabs(s) * g->a_over_b;
+    /* A shallow segment (m < 1) touches at t = k*P <= k = m^(1/(c_e-1)), and k <= m when
+     * c_e <= 2: a segment beyond a_e*m from x (the usual case on a road, where m is small)
+     * cannot hold the tangency point, which is known before any exp or log. The relative
+     * slack 1e-9 covers the rounding of k, P and t, so that the point computed below would
+     * fail the test at the end as well: the result is the same bit for bit. */
+    if (m < 1.0 && g->c_e <= 2.0) {
+        const double u_max = g->a_e * (m * (1.0 + 1e-9));
+        if (s > 0 ? !(x + u_max > x_k) : !(x - u_max < x_k1))
+            return 0;
+    }
     const double lm = log(m);
     double t, rise_m1; /* t at the tangency, and (1 + k^c)^(1 - 1/c) - 1 */
     if (m < 1.0) {
@@ -113,8 +123,22 @@ static inline void vertex(const tirenv_cam__geom *g, double t, double x_k, doubl
                           cam_contact *best)
 {
     t = fabs(t);
-    if (z_k - g->b_over_c * ipow(t, g->n_c) > best->Z)
+    if (!(z_k - g->b_over_c * ipow(t, g->n_c) > best->Z))
+        return;
+    if (t <= 0.0) {
         consider(best, z_k + edge_drop(g, t), x_k, z_k);
+        return;
+    }
+    /* With t^c_e from the first of edge_drop's two pows, the sharper bound the above stands
+     * for, z_k - (b_e/c_e)*t^c_e, rules out most of the rest before the second. The drop it
+     * bounds exceeds it by at least b_e*(c_e - 1)*t^(2c_e)/(2c_e^2), and the slack (1e-9
+     * relative, 1e-14*b_e absolute) covers the rounding of both, where that gap is smaller:
+     * a vertex ruled out here would not have beaten the best, bit for bit. Both sides add
+     * z_k to the drop last, so its rounding keeps the order. */
+    const double tc = pow(t, g->c_e);
+    if (!(z_k + (g->b_e * 1e-14 - g->b_over_c * tc * (1.0 - 1e-9)) > best->Z))
+        return;
+    consider(best, z_k + g->b_e * (pow(1.0 - tc, g->inv_c) - 1.0), x_k, z_k);
 }
 
 /* Candidates, and why they suffice. The lift is the largest touching height over the profile
@@ -153,8 +177,9 @@ double tirenv_cam__lift(const tirenv_cam__geom *g, const tirenv_profile *p, doub
      * point within reach. On a long road this is the local relief, not the whole road's. */
     {
         const size_t B = TIRENV_PROFILE__BLOCK;
-        const size_t k_l = tirenv_profile__segment_at(p, x - g->a_e);
-        const size_t k_r = tirenv_profile__segment_at(p, x + g->a_e);
+        /* Searched outward from k_x, near them, rather than over the whole road. */
+        const size_t k_l = tirenv_profile__segment_near(p, k_x, x - g->a_e);
+        const size_t k_r = tirenv_profile__segment_near(p, k_x, x + g->a_e);
         const size_t b_r = (k_r + 1 < n ? k_r + 1 : n - 1) / B;
         double z_local = p->z_block[k_l / B];
         for (size_t b = k_l / B + 1; b <= b_r; b++)

@@ -33,7 +33,8 @@ static inline double max2(double a, double b)
 static double over_point(double R0, double x, double p_x, double p_z)
 {
     const double u = x - p_x;
-    return p_z + sqrt(fmax(0.0, (R0 - u) * (R0 + u)));
+    const double r2 = (R0 - u) * (R0 + u); /* never -0: one factor is then 2 R0 > 0 */
+    return p_z + sqrt(r2 > 0.0 ? r2 : 0.0); /* fmax(0, r2), without its call */
 }
 
 /* Why these candidates suffice. Along one segment the touching height
@@ -69,7 +70,7 @@ static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigi
 {
     const size_t n = p->n, B = TIRENV_PROFILE__BLOCK;
     const double *xs = p->x, *zs = p->z;
-    const double x_lo = x - R0, x_hi = x + R0;
+    const double x_lo = x - R0, x_hi = x + R0, half_inv_R0 = 0.5 / R0;
 
     if (x <= xs[0]) /* left flat extension, tangent straight below */
         consider(best, zs[0] + R0, x, zs[0]);
@@ -126,13 +127,29 @@ static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigi
         for (; k < k_end; k++) {
             if (xs[k] > x_hi)
                 return;
-            if (xs[k] >= x_lo && zs[k] + R0 >= bar) {
+            /* sqrt(R0^2 - u^2) <= R0 - u^2/(2 R0): a bound without the square root, whose
+             * rounding the margin absorbs like that of the others. */
+            const double u_k = x - xs[k];
+            if (xs[k] >= x_lo && zs[k] + R0 - u_k * u_k * half_inv_R0 >= bar) {
                 consider(best, over_point(R0, x, xs[k], zs[k]), xs[k], zs[k]);
                 bar = max2(best->z_c - margin, bar_0);
             }
             if (k + 1 == n || !(xs[k + 1] > xs[k]) || max2(zs[k], zs[k + 1]) + R0 < bar)
                 continue; /* last vertex, a wall (its vertices are the candidates), or low */
             const double dx = xs[k + 1] - xs[k], dz = zs[k + 1] - zs[k];
+            /* The tangency point lies R0*|dz|/len < R0*|dz|/dx from x, towards the segment's
+             * rising end; a segment beside x that faces away, or lies farther than that, cannot
+             * hold it, and is ruled out before the hypot. The relative slack 1e-9 covers the
+             * rounding of P_x below (and the floor 1e-250 keeps clear of subnormals), so the
+             * test on P_x would fail too: the same candidates, bit for bit. */
+            const double gap_x = xs[k] > x ? xs[k] - x : x > xs[k + 1] ? x - xs[k + 1] : 0.0;
+            if (gap_x > 0.0) {
+                const double rise = xs[k] > x ? dz : -dz; /* towards x's side: rising? */
+                const double reach_x = gap_x * dx * (1.0 - 1e-9);
+                const int normal = gap_x > 1e-250 && reach_x > 1e-250;
+                if (!(rise > 0.0) || (normal && R0 * rise < reach_x))
+                    continue;
+            }
             const double len = hypot(dx, dz);
             const double P_x = x + R0 * (dz / len);
             if (P_x > xs[k] && P_x < xs[k + 1]) {

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "model/springs_impl.h"
+#include "profile/profile_impl.h"
 
 /* Passes of the active-set iteration before giving up; it needs at most n in theory. */
 enum { LCP_MAX_PASSES = 200 };
@@ -155,9 +156,11 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
         return 0;
 
     const size_t n = b - a + 1;
+    const size_t k_x = tirenv_profile__segment_at(prof, x);
+    const double g_x = tirenv_profile_height(prof, x);
     for (size_t i = a; i <= b; ++i) {
-        const double rho = tirenv_springs__ray(prof, x, z, s->sin_t[i], s->cos_t[i], R0,
-                                               &s->drho[i]);
+        const double rho = tirenv_springs__ray_at(prof, x, k_x, g_x, z, s->sin_t[i],
+                                                  s->cos_t[i], R0, &s->drho[i]);
         s->d[i] = rho < R0 ? R0 - rho : 0;
         s->red[i - a] = s->diag[i];
     }

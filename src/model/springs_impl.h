@@ -12,6 +12,11 @@
 double tirenv_springs__ray(const tirenv_profile *p, double x, double z, double sin_t,
                            double cos_t, double rho_max, double *drho_dz);
 
+/* The same, given k = tirenv_profile__segment_at(p, x) and g = tirenv_profile_height(p, x)
+ * (m), which do not depend on the ray: bit for bit the result of tirenv_springs__ray. */
+double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, double g, double z,
+                              double sin_t, double cos_t, double rho_max, double *drho_dz);
+
 /* A tridiagonal obstacle problem K w = p, w >= d, p >= 0, p.(w - d) = 0 with K given by its
  * diagonal diag[0..n-1] and constant off-diagonal -k_ir, solved by the primal-dual active
  * set method. active[] holds the starting guess (1 = w_i = d_i) and returns the final set.

@@ -13,9 +13,19 @@
 double tirenv_springs__ray(const tirenv_profile *p, double x, double z, double sin_t,
                            double cos_t, double rho_max, double *drho_dz)
 {
+    return tirenv_springs__ray_at(p, x, tirenv_profile__segment_at(p, x),
+                                  tirenv_profile_height(p, x), z, sin_t, cos_t, rho_max,
+                                  drho_dz);
+}
+
+/* The walk itself; k and g depend on x alone, so a caller casting many rays from one centre
+ * finds them once (two binary searches saved per ray). */
+double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, double g, double z,
+                              double sin_t, double cos_t, double rho_max, double *drho_dz)
+{
     const double *X = p->x, *Z = p->z;
     const size_t n = p->n;
-    const double f0 = z - tirenv_profile_height(p, x);
+    const double f0 = z - g;
     *drho_dz = 0;
     if (f0 <= 0)
         return 0; /* centre on or below the ground */
@@ -29,7 +39,6 @@ double tirenv_springs__ray(const tirenv_profile *p, double x, double z, double s
     const double reach = rho_max * s;       /* walk length of the whole ray */
 
     /* First vertex strictly ahead of x in the walking direction. */
-    size_t k = tirenv_profile__segment_at(p, x);
     long j;
     if (dir > 0) {
         j = X[k] <= x ? (long)k + 1 : (long)k;

@@ -143,8 +143,19 @@ double tirenv_profile_max_height(const tirenv_profile *p, double x_lo, double x_
         while (k > 0 && p->x[k - 1] >= x_lo) /* step back onto a wall's first vertex */
             k--;
     }
-    for (; k < p->n && p->x[k] <= x_hi; k++)
-        z_max = fmax(z_max, p->z[k]);
+    /* Whole blocks from their maxima: z_block[b] covers vertices b*B .. b*B + B, all inside
+     * the interval when x_{b*B+B} <= x_hi (x is non-decreasing), and a maximum does not
+     * depend on the order it is taken in, so the result is the same bit for bit. */
+    const size_t B = TIRENV_PROFILE__BLOCK;
+    while (k < p->n && p->x[k] <= x_hi) {
+        if (k % B == 0 && k + B < p->n && p->x[k + B] <= x_hi) {
+            z_max = fmax(z_max, p->z_block[k / B]);
+            k += B;
+        } else {
+            z_max = fmax(z_max, p->z[k]);
+            k++;
+        }
+    }
     return z_max;
 }
 

@@ -49,4 +49,40 @@ static inline size_t tirenv_profile__segment_at(const struct tirenv_profile *p, 
     return lo == 0 ? 0 : lo - 1;
 }
 
+/* The same index as tirenv_profile__segment_at(p, x), found from a nearby index k_hint < n
+ * by an exponential search outward and a binary search within the last step: O(log d) for
+ * a vertex d places away, and in cache when d is small. */
+static inline size_t tirenv_profile__segment_near(const struct tirenv_profile *p, size_t k_hint,
+                                                  double x)
+{
+    const double *xs = p->x;
+    const size_t n = p->n;
+    size_t lo, hi; /* the answer, the count of x_k <= x, lies in [lo, hi] */
+    if (xs[k_hint] <= x) {
+        lo = k_hint + 1;
+        size_t step = 1;
+        while (lo + step <= n && xs[lo + step - 1] <= x) {
+            lo += step;
+            step *= 2;
+        }
+        hi = lo + step <= n ? lo + step - 1 : n;
+    } else {
+        hi = k_hint;
+        size_t step = 1;
+        while (step <= hi && xs[hi - step] > x) {
+            hi -= step;
+            step *= 2;
+        }
+        lo = step <= hi ? hi - step + 1 : 0;
+    }
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (xs[mid] <= x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo == 0 ? 0 : lo - 1;
+}
+
 #endif
