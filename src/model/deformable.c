@@ -113,6 +113,14 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
     return TIRENV_OK;
 }
 
+/* The next window of the same ground: the equilibrium of the last position still holds, so the
+ * warm start carries over and a stream gives the same iterations as one whole profile. */
+void tirenv_deformable_set_profile(void *state, const tirenv_profile *p)
+{
+    deformable_state *st = state;
+    st->prof = p;
+}
+
 int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 {
     deformable_state *st = state;

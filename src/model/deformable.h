@@ -28,5 +28,6 @@ int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *l
 int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
                           tirenv_diag *diag);
 int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag);
+void tirenv_deformable_set_profile(void *state, const tirenv_profile *p);
 
 #endif

@@ -119,7 +119,9 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "no profile and load set (call tirenv_model_set first)");
     int status = below_centre(profile, m->z_flat, diag);
-    if (status || (status = m->type->set(m->state, profile, m->load, m->z_flat, diag)))
+    if (!status && m->type->set_profile)
+        m->type->set_profile(m->state, profile);
+    else if (status || (status = m->type->set(m->state, profile, m->load, m->z_flat, diag)))
         m->ready = 0;
     return status;
 }

@@ -14,6 +14,9 @@ struct tirenv_model_type {
     int (*set)(void *state, const tirenv_profile *p, double load, double z_flat,
                tirenv_diag *diag);
     int (*eval)(void *state, double x, tirenv_point *out, tirenv_diag *diag);
+    /* Optional: swap in another window of the same ground, keeping load, z_flat and the warm
+     * start (streaming); NULL falls back to set, which restarts the warm start. */
+    void (*set_profile)(void *state, const tirenv_profile *p);
     /* Optional: how far from x (m) eval reads the profile at the load set; NULL means the
      * default of tirenv_model_reach, 1.05*R0. */
     double (*reach)(const void *state);

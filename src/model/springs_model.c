@@ -59,5 +59,6 @@ static const tirenv_model_type springs_type = {
     .load_for_contact_length = tirenv_deformable_load_for_contact_length,
     .set = tirenv_deformable_set,
     .eval = tirenv_deformable_eval,
+    .set_profile = tirenv_deformable_set_profile,
 };
 const tirenv_model_type *tirenv_model_springs = &springs_type;
