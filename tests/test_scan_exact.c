@@ -14,6 +14,7 @@
 #include "tirenv/profile.h"
 #include "tirenv/cam.h"
 #include "tirenv/rigid.h"
+#include "model/rigid_impl.h"
 
 /* The plain scan, as rigid.c had it before the block maxima: every vertex and every sloped
  * segment's tangency within [x - R0, x + R0], left to right, plus the flat extensions. */
@@ -95,6 +96,7 @@ static void test_rigid_equals_plain(void **state)
         const size_t n = tirenv_profile_size(p);
         const double *xs = tirenv_profile_x(p), *zs = tirenv_profile_z(p);
         const double R0 = radii[trial % 3];
+        size_t hint = n / 2;
         for (size_t i = 0; i < 4000; i++) {
             /* Uniform over the profile and beyond both ends, and exactly at vertices. */
             const double x = i % 4 == 0 ? xs[gsl_rng_uniform_int(rng, n)]
@@ -107,6 +109,12 @@ static void test_rigid_equals_plain(void **state)
                 fail_msg("trial %zu, R0 %g, x = %.17g: z %.17g px %.17g pz %.17g, plain scan "
                          "z %.17g px %.17g pz %.17g", trial, R0, x, z, px, pz, z_ref, px_ref,
                          pz_ref);
+            /* The models' hinted search, from the last position's segment (random jumps: a
+             * stale hint), must give the same bits. */
+            double px_h, pz_h;
+            if (tirenv_rigid__height_hint(p, R0, x, &hint, &px_h, &pz_h) != z || px_h != px ||
+                pz_h != pz)
+                fail_msg("trial %zu, x = %.17g: the hinted search differs", trial, x);
         }
         tirenv_profile_free(p);
     }

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "core/equilibrium.h"
-#include "tirenv/rigid.h"
+#include "model/rigid_impl.h"
 
 typedef struct {
     const tirenv_deformable_ops *ops;
@@ -21,6 +21,7 @@ typedef struct {
     const tirenv_profile *eval_prof;
     double eval_x, last_fx;
     size_t last_contacts;
+    size_t rigid_hint;           /* profile segment of the last position, for the bracket */
 } deformable_state;
 
 static int force_at(void *ctx, double z, double *F, double *dF_dz)
@@ -126,7 +127,7 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
     const double deflection = R0 - st->z_flat;
-    const double z_hi = tirenv_rigid_height(st->prof, R0, x, NULL, NULL);
+    const double z_hi = tirenv_rigid__height_hint(st->prof, R0, x, &st->rigid_hint, NULL, NULL);
     tirenv_eq_problem prob = {
         .z_lo = tirenv_profile_height(st->prof, x),
         .z_hi = z_hi,

@@ -4,6 +4,7 @@
 
 #include <math.h>
 
+#include "model/rigid_impl.h"
 #include "profile/profile_impl.h"
 
 /* The best touching point found so far: centre height z_c and where the disc touches. */
@@ -66,7 +67,8 @@ static double over_point(double R0, double x, double p_x, double p_z)
  * R0): far above the few ulps by which a computed touching height (or q_x) can differ from
  * its exact value, far below any difference that matters. On a long road this leaves a few
  * blocks near x to scan, not the 2*R0/dx vertices within reach. */
-static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigid_contact *best)
+static void rigid_scan(const struct tirenv_profile *p, double R0, double x, size_t *hint,
+                       rigid_contact *best)
 {
     const size_t n = p->n, B = TIRENV_PROFILE__BLOCK;
     const double *xs = p->x, *zs = p->z;
@@ -78,7 +80,12 @@ static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigi
         consider(best, zs[n - 1] + R0, x, zs[n - 1]);
 
     /* The ground under x, as tirenv_profile_height computes it. */
-    const size_t k_x = tirenv_profile__segment_at(p, x);
+    /* A sweep's positions are close together: search from the last one's segment. Both
+     * searches give the same index, so the result does not depend on the hint. */
+    const size_t k_x = hint ? tirenv_profile__segment_near(p, *hint < n ? *hint : n - 1, x)
+                            : tirenv_profile__segment_at(p, x);
+    if (hint)
+        *hint = k_x;
     double q_x;
     if (x < xs[0])
         q_x = zs[0];
@@ -162,12 +169,12 @@ static void rigid_scan(const struct tirenv_profile *p, double R0, double x, rigi
 }
 
 /* Returns NAN (and a NAN contact) if R0 is not positive and finite or x is not finite. */
-double tirenv_rigid_height(const tirenv_profile *p, double R0, double x, double *px,
-                           double *pz)
+double tirenv_rigid__height_hint(const tirenv_profile *p, double R0, double x, size_t *hint,
+                                 double *px, double *pz)
 {
     rigid_contact best = {-INFINITY, NAN, NAN};
     if (isfinite(R0) && R0 > 0.0 && isfinite(x))
-        rigid_scan(p, R0, x, &best);
+        rigid_scan(p, R0, x, hint, &best);
     else
         best.z_c = NAN;
     if (px)
@@ -175,4 +182,10 @@ double tirenv_rigid_height(const tirenv_profile *p, double R0, double x, double 
     if (pz)
         *pz = best.p_z;
     return best.z_c;
+}
+
+double tirenv_rigid_height(const tirenv_profile *p, double R0, double x, double *px,
+                           double *pz)
+{
+    return tirenv_rigid__height_hint(p, R0, x, NULL, px, pz);
 }

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "model/model_impl.h"
+#include "model/rigid_impl.h"
 #include "tirenv/rigid.h"
 
 typedef struct {
@@ -9,6 +10,7 @@ typedef struct {
     const tirenv_profile *prof;
     double G;
     tirenv_model *springs;   /* only to translate a contact length into a load */
+    size_t hint;             /* segment of the last position: a sweep's next is near it */
 } rigid_state;
 
 static void *rigid_alloc(const tirenv_tire *tire)
@@ -63,11 +65,11 @@ static int rigid_set(void *state, const tirenv_profile *p, double load, double z
  * vertically takes G*(x - p_x)/(z - p_z) horizontally. */
 static int rigid_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 {
-    const rigid_state *st = state;
+    rigid_state *st = state;
     const double R0 = st->tire.springs.R0;
     double px, pz;
     (void)diag;
-    const double z = tirenv_rigid_height(st->prof, R0, x, &px, &pz);
+    const double z = tirenv_rigid__height_hint(st->prof, R0, x, &st->hint, &px, &pz);
     *out = (tirenv_point){.x = x, .z = z, .h = z - R0, .fz = st->G,
                           .fx = st->G * (x - px) / (z - pz), .contacts = 1, .iterations = 0};
     return TIRENV_OK;
