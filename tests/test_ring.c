@@ -225,8 +225,11 @@ static void test_lugs_roll_with_the_tread(void **state)
         F_max = fmax(F_max, F);
         double F_next;
         tirenv_ring_forces(lugged, flat, x + pitch, z, &fx, &F_next, NULL, NULL);
+        /* Same contact one pitch on: equal but for the rounding of theta + x/R0 (~1e-16
+         * relative), which 1e-9 relative of ~1e4 N covers with room. */
         assert_near(F_next, F, 1e-6, 1e-9);
         tirenv_ring_forces(smooth, flat, x, z, &fx, &Fs, NULL, NULL);
+        /* Flat ground, smooth tread: x does not enter at all, up to round-off. */
         assert_near(Fs, F_smooth0, 1e-6, 1e-12);
     }
     assert_true(F_max - F_min > 1e-3 * F_max);

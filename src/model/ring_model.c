@@ -46,7 +46,10 @@ static double patch_minus_target(double z, void *p)
 }
 
 /* The patch grows continuously as the centre comes down (its edges are interpolated), so
- * Brent on [R0/2, R0] finds the height to 1e-12 m. */
+ * Brent on [R0/2, R0] finds the height; 1e-12 m is far below any patch length's meaning and
+ * Brent needs about 40 iterations for it from a 0.34 m bracket, so 200 is only a guard. */
+enum { PATCH_MAX_ITER = 200 };
+static const double patch_z_tol = 1e-12; /* m */
 static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
                                      double *z, tirenv_diag *diag)
 {
@@ -60,11 +63,11 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
     if (!s)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     int status = gsl_root_fsolver_set(s, &fn, lo, hi);
-    for (int it = 0; !status && it < 200; ++it) {
+    for (int it = 0; !status && it < PATCH_MAX_ITER; ++it) {
         status = gsl_root_fsolver_iterate(s);
         lo = gsl_root_fsolver_x_lower(s);
         hi = gsl_root_fsolver_x_upper(s);
-        if (!status && gsl_root_test_interval(lo, hi, 1e-12, 0) == GSL_SUCCESS)
+        if (!status && gsl_root_test_interval(lo, hi, patch_z_tol, 0) == GSL_SUCCESS)
             break;
     }
     *z = gsl_root_fsolver_root(s);
@@ -88,14 +91,5 @@ static void *ring_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &ring_ops);
 }
 
-static const tirenv_model_type ring_type = {
-    .name = "ring",
-    .alloc = ring_model_alloc,
-    .free = tirenv_deformable_free,
-    .flat = tirenv_deformable_flat,
-    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
-    .set = tirenv_deformable_set,
-    .eval = tirenv_deformable_eval,
-    .set_profile = tirenv_deformable_set_profile,
-};
+static const tirenv_model_type ring_type = TIRENV_DEFORMABLE_TYPE("ring", ring_model_alloc);
 const tirenv_model_type *tirenv_model_ring = &ring_type;

@@ -51,14 +51,6 @@ static void *springs_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &springs_ops);
 }
 
-static const tirenv_model_type springs_type = {
-    .name = "springs",
-    .alloc = springs_model_alloc,
-    .free = tirenv_deformable_free,
-    .flat = tirenv_deformable_flat,
-    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
-    .set = tirenv_deformable_set,
-    .eval = tirenv_deformable_eval,
-    .set_profile = tirenv_deformable_set_profile,
-};
+static const tirenv_model_type springs_type =
+    TIRENV_DEFORMABLE_TYPE("springs", springs_model_alloc);
 const tirenv_model_type *tirenv_model_springs = &springs_type;
