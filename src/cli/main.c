@@ -17,7 +17,7 @@ static const cli_command commands[] = {
     {"import", cli_import_main, "rig log to an approach-half enveloping curve, as CSV"},
     {"dataset", cli_dataset_main, "build or list the embedded (simulated) data set"},
     {"study", cli_study_main, "the paper's study in one command: fit, train, compare"},
-    {"fit", cli_fit_main, "identify the springs model's stiffnesses on a data set"},
+    {"fit", cli_fit_main, "identify the springs model's stiffnesses (or the cam's shape) on a data set"},
     {"train", cli_train_main, "train the empirical model's network on a data set"},
     {"predict", cli_predict_main, "the trained network's enveloping curve over a cleat, as CSV"},
     {"compare", cli_compare_main, "every model against a data set: plots, error tables, report"},
