@@ -79,7 +79,7 @@ ends_flat() {
 same_h() {
     [ -s "$1" ] && [ "$(wc -l <"$1")" -eq "$(wc -l <"$2")" ] &&
         paste -d, "$1" "$2" | awk -F, -v t="$3" '
-            NR > 1 { d = $3 - $10; if (d > t || -d > t) bad = 1 }
+            NR > 1 { d = $3 - $11; if (d > t || -d > t) bad = 1 }
             END { exit bad || NR < 2 }'
 }
 
@@ -88,7 +88,7 @@ same_h() {
 matches_reference() {
     awk -F, -v c="$2" '
         FNR == 1 { next }
-        NR == FNR { k = sprintf("%.4f", $1); h[k] = $3; f[k] = $5; next }
+        NR == FNR { k = sprintf("%.4f", $1); h[k] = $3; f[k] = $6; next }
         $1 == c {
             k = sprintf("%.4f", $10); ++seen
             if (!(k in h)) { bad = 1; next }
@@ -98,7 +98,7 @@ matches_reference() {
         END { exit bad || seen != 10 }' "$1" "$3"
 }
 
-header='x_m,z_m,h_m,fx_N,fz_N,contacts,iterations'
+header='x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations'
 cleat_F='--cleat 0.30,0.10 --contact-length 0.38'
 
 # --- help and misuse --------------------------------------------------------------------
@@ -265,11 +265,11 @@ check "road --dx too coarse for the band: exit 2 naming dx, no file" \
     '[ $rc -eq 2 ] && grep -q "dx" err && no_file o.csv'
 run "$bin" envelope --model cam --profile road.csv --load 12000 --dx 0.01 -o rc.csv
 check "envelope --model cam over the generated road" \
-    '[ $rc -eq 0 ] && [ "$(head -n 1 rc.csv)" = x_m,z_m,h_m,fx_N,fz_N,contacts,iterations ] &&
+    '[ $rc -eq 0 ] && [ "$(head -n 1 rc.csv)" = x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations ] &&
      grep -q "cam model" err'
 run "$bin" envelope --model cam --cleat 0.30,0.10 --contact-length 0.33 -o cam.csv
 check "envelope --model cam: the tandem rides the 0.30 x 0.10 m cleat's full height" \
-    '[ $rc -eq 0 ] && grep -q "peak h 100.000 mm" err && [ "$(sed -n 2p cam.csv | cut -d, -f6,7)" = 2,0 ]'
+    '[ $rc -eq 0 ] && grep -q "peak h 100.000 mm" err && [ "$(sed -n 2p cam.csv | cut -d, -f7,8)" = 2,0 ]'
 run "$bin" flat --model cam --contact-length 0.33 --csv
 check "flat --model cam --contact-length 0.33: contact length 0.33, VERTICAL_STIFFNESS" \
     '[ $rc -eq 0 ] && [ "$(sed -n 2p out | cut -d, -f4,5)" = 0.33,342000 ]'

@@ -518,6 +518,7 @@ static void test_model_point(void **state)
         assert_near(pt.h, w, TOL, 0);
         assert_near(pt.z, f.z_flat + w, TOL, 0);
         assert_near(pt.fx, -G * tb, 1e-9, 0);
+        assert_near(pt.slope, tb, 1e-12, 0);  /* -fx/G: round-off of one product, one quotient */
         assert_true(pt.fz == G && pt.contacts == 2 && pt.iterations == 0);
         /* A road rising in front pushes back. */
         rising += x < -0.2 && pt.fx < 0;

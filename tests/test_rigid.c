@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "tirenv/model.h"
 #include "tirenv/profile.h"
 #include "tirenv/rigid.h"
 
@@ -275,6 +276,42 @@ static double sample_segment(double x, double xa, double za, double xb, double z
  * curvature |f''| = R0^2 / (R0^2 - u^2)^(3/2) = 1 / (R0 n_z^3), so the loss is at most
  * |f''| delta^2 / 2; doubling it covers |f''| growing within delta of the tangency. With
  * these profiles (n_z >= 0.199) the bound is at most 9e-9 m; the gap seen is about 3e-11 m. */
+/* The effective slope -fx/fz is the envelope's own slope dz/dx for a rigid disc (the ground
+ * force is normal to the rim, and the envelope is the rim's locus), checked by central
+ * differences of step d = 1e-6 m away from the kinks where the contact point jumps. The
+ * difference's truncation error is d^2 |z'''| / 6 < 1e-12 and its round-off 2e-16 / d = 2e-10,
+ * so 1e-8 is a safe bound that a sign or factor error would break by orders. */
+static void test_slope(void **state)
+{
+    (void)state;
+    tirenv_tire tire = tirenv_tire_default();
+    tire.springs.R0 = R0;
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
+    tirenv_profile *p = tirenv_profile_cleat(0.2931, 0.0743);
+    assert_non_null(m);
+    assert_non_null(p);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(m, p, 1e4, &diag), 0);
+    const double d = 1e-6;
+    int checked = 0;
+    for (double x = -0.9173; x < 0.92; x += 0.0311) {
+        tirenv_point a, b, c;
+        double pa, pb, pz;
+        tirenv_rigid_height(p, R0, x - d, &pa, &pz);
+        tirenv_rigid_height(p, R0, x + d, &pb, &pz);
+        if (fabs(pa - pb) > 4 * d)  /* the contact jumps: a kink of the envelope */
+            continue;
+        assert_int_equal(tirenv_model_eval(m, x - d, &a, &diag), 0);
+        assert_int_equal(tirenv_model_eval(m, x, &b, &diag), 0);
+        assert_int_equal(tirenv_model_eval(m, x + d, &c, &diag), 0);
+        assert_near(b.slope, (c.z - a.z) / (2 * d), 1e-8, 0);
+        ++checked;
+    }
+    assert_true(checked > 50);
+    tirenv_profile_free(p);
+    tirenv_model_free(m);
+}
+
 static void test_oracle(void **state)
 {
     (void)state;
@@ -325,6 +362,7 @@ int main(void)
         cmocka_unit_test(test_triangle_trapezoid),
         cmocka_unit_test(test_symmetry),
         cmocka_unit_test(test_oracle),
+        cmocka_unit_test(test_slope),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

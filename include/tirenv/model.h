@@ -16,6 +16,9 @@ typedef struct {
     double x;              /* tire-centre longitudinal position, m */
     double z;              /* tire-centre height at equilibrium, m */
     double h;              /* effective profile height z - z_flat, m */
+    double slope;          /* effective road slope tan(beta) = -fx/fz, the inclination of the
+                            * resultant ground force (MF-Swift's effective slope); for the cam
+                            * exactly (Z_f - Z_r)/l_s (MODEL.md 7) */
     double fx;             /* longitudinal hub force (positive forward), N */
     double fz;             /* vertical hub force (equals the load at equilibrium), N */
     size_t contacts;       /* elements (or contact points) touching the ground */

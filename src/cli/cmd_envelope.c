@@ -19,7 +19,9 @@ static void usage(FILE *fp)
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
-          "  x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n"
+          "  x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n"
+          "slope is the effective road slope tan(beta) = -fx/fz, the inclination of the ground\n"
+          "force (for the cam exactly (Z_f - Z_r)/l_s, MODEL.md section 7).\n"
           "A one-line summary (peak, first rise, iterations) goes to standard error.\n"
           "\n"
           "options:\n",
@@ -50,12 +52,12 @@ typedef struct {
     double x_from, x_to, dx;  /* m */
 } sweep;
 
-static const char header[] = "x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n";
+static const char header[] = "x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n";
 
 static void write_row(FILE *fp, const tirenv_point *pt)
 {
-    fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", pt->x, pt->z, pt->h, pt->fx, pt->fz,
-            pt->contacts, pt->iterations);
+    fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", pt->x, pt->z, pt->h, pt->slope,
+            pt->fx, pt->fz, pt->contacts, pt->iterations);
 }
 
 /* What a reader wants at a glance, gathered point by point so that a streamed sweep, which

@@ -25,10 +25,11 @@ static void usage(FILE *fp, const char *cmd)
           "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
           "(paper, Tables 1 and 2), over a rectangular cleat centred at x = 0, in the CSV of\n"
           "'tirenv envelope':\n"
-          "  x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n"
+          "  x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n"
           "h is the network at x_N(x) (MODEL.md section 1) on the approach half, mirrored on\n"
           "the other; z = z_flat + h with z_flat = sqrt(R0^2 - (l_c/2)^2), the chord relation;\n"
-          "fz is the load; fx, contacts and iterations are 0 (the network knows none of them).\n"
+          "fz is the load; slope is dh/dx of the curve (central differences); fx, contacts and\n"
+          "iterations are 0 (the network knows none of them).\n"
           "The network's inputs are the cleat's length and height, so only --cleat is\n"
           "accepted. An input outside the range the network was trained on draws a warning\n"
           "naming it. R0 is the one the network's data referred to (from the model file).\n"
@@ -49,6 +50,16 @@ static void usage(FILE *fp, const char *cmd)
           fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
+}
+
+/* dh/dx of the written curve at k: central differences inside, one-sided at the ends (the
+ * network has no forces to give an effective slope from). */
+static double curve_slope(size_t n, const double x[], const double h[], size_t k)
+{
+    if (n < 2)
+        return 0;
+    const size_t lo = k > 0 ? k - 1 : 0, hi = k + 1 < n ? k + 1 : n - 1;
+    return (h[hi] - h[lo]) / (x[hi] - x[lo]);
 }
 
 /* "--model nn" or "--model=nn" among the arguments: tirenv envelope hands itself over. */
@@ -259,9 +270,10 @@ int cli_predict_main(int argc, char *argv[])
     const double z_flat = sqrt(R0 * R0 - 0.25 * l_c * l_c);
     tirenv_outfile out;
     if (!(status = tirenv_outfile_open(&out, p.out_path, &diag))) {
-        fputs("x_m,z_m,h_m,fx_N,fz_N,contacts,iterations\n", out.fp);
+        fputs("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n", out.fp);
         for (size_t k = 0; k < n; ++k)
-            fprintf(out.fp, "%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k], load);
+            fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k],
+                    curve_slope(n, x, h, k), load);
         if (ferror(out.fp)) {
             tirenv_outfile_abort(&out);
             status = tirenv_error(&diag, TIRENV_EIO, p.out_path, 0, "", "write failed");

@@ -139,6 +139,9 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "no profile and load set (call tirenv_model_set first)");
     const int status = m->type->eval(m->state, x, out, diag);
+    /* One definition for every model: at equilibrium fz is the load, so this is never 0/0. */
+    if (!status)
+        out->slope = out->fz > 0 ? -out->fx / out->fz : 0;
     if (status && diag) {
         /* Name the position: a failure without its x is useless in a 1,500-point sweep. */
         char msg[sizeof diag->message];  /* the original message is cut at 400 chars */
