@@ -1,0 +1,80 @@
+/* tirenv: the pitch-plane tractor of the ride simulation (issue 7) and its property file.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_VEHICLE_H
+#define TIRENV_VEHICLE_H
+
+#include <stddef.h>
+#include "tirenv/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* One axle: its tires as vertical spring-dampers in parallel (Kelvin-Voigt) acting on the
+ * axle's effective profile, and, for the front axle, an optional suspension between the body
+ * and an unsprung axle mass. Tires may lift off: a tire never pulls. */
+typedef struct {
+    char tire_file[512];   /* the .tir file of the axle's tires (for the enveloping models),
+                            * as fopen takes it (in a vehicle file a relative path is relative
+                            * to that file; the reader puts the file's directory before it);
+                            * "" = the built-in default tire */
+    double tires;          /* tires on the axle (usually 2; 4 for duals) */
+    double k_t;            /* vertical stiffness of one tire, N/m */
+    double c_t;            /* vertical damping of one tire, N*s/m */
+    double k_s;            /* suspension stiffness of the axle, N/m; 0 = rigid axle (the axle
+                            * moves with the body and its mass is part of the body's) */
+    double c_s;            /* suspension damping of the axle, N*s/m */
+    double m_a;            /* unsprung axle mass with wheels, kg (used only if k_s > 0) */
+} tirenv_axle;
+
+/* A tractor in the pitch plane: a rigid body (heave z, pitch theta nose-up) on a front and
+ * a rear axle, CG between them. Tractors usually have no rear suspension, so the rear axle
+ * is rigid (its k_s must be 0); the front axle may be suspended. */
+typedef struct {
+    double m;              /* body mass: everything above the tires except a suspended front
+                            * axle, kg */
+    double I_y;            /* body pitch moment of inertia about the CG, kg*m^2 */
+    double a;              /* CG to front axle, horizontal, m */
+    double b;              /* CG to rear axle, horizontal, m (wheelbase a + b) */
+    double seat_x;         /* seat reference point ahead of the CG (negative: behind), m */
+    double seat_h;         /* seat reference point above the CG, m */
+    tirenv_axle front, rear;
+    double g;              /* gravitational acceleration, m/s^2 */
+} tirenv_vehicle;
+
+/* The documented default: a mid-size 4.5 t tractor, data/vehicles/tractor.veh. */
+tirenv_vehicle tirenv_vehicle_default(void);
+
+/* Physical sanity: positive masses, inertia, lengths, tire stiffnesses and g; a whole
+ * number of tires; non-negative damping and suspension stiffness; no suspension damping on
+ * a rigid axle; m_a > 0 on a suspended axle; rear k_s = 0. TIRENV_EINVAL naming the field
+ * otherwise by its file key ("MASS"; "FRONT_AXLE.TIRES" for the axles' keys, as --set
+ * takes them). */
+int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag);
+
+/* Static load of one tire of the front (axle 0) or rear (axle 1) axle on flat ground, N:
+ * front (m*g*b/(a+b) + (k_s > 0 ? m_a*g : 0)) / front.tires, rear m*g*a/(a+b) / rear.tires;
+ * NAN for another axle. */
+double tirenv_vehicle_tire_load(const tirenv_vehicle *v, int axle);
+
+/* Reads a vehicle property file (the .tir syntax: [SECTION]s of KEY = value, '$' comments,
+ * SI units; keys in data/vehicles/tractor.veh) over *v, which changes only if the whole
+ * file passes (parsing and tirenv_vehicle_check); errors name the file, line, column and
+ * key. A relative TIRE_FILE is relative to the vehicle file's directory and is stored with
+ * that directory put before it, so that it opens from the working directory. */
+int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag);
+
+/* Applies one "KEY=VALUE" override (KEY as in the file, e.g. MASS=5200; the axle keys need
+ * their section, e.g. FRONT_AXLE.TIRES=4), then checks; *v changes only if both pass. A
+ * relative TIRE_FILE given here is relative to the working directory. */
+int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *diag);
+
+/* Writes *v as a vehicle property file (atomically: all or nothing); refuses a vehicle that
+ * fails tirenv_vehicle_check. A relative TIRE_FILE is written as an absolute path when the
+ * file goes to another directory than the working one, so that it names the same tire. */
+int tirenv_vehicle_write(const char *path, const tirenv_vehicle *v, tirenv_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

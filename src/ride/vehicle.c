@@ -1,0 +1,102 @@
+/* The pitch-plane tractor of the ride simulation: its default, its physical check and its
+ * static tire loads. The file format is in vehicle_file.c.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/vehicle.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The values of data/vehicles/tractor.veh, where each is explained; a test keeps them equal. */
+tirenv_vehicle tirenv_vehicle_default(void)
+{
+    const tirenv_axle axle = {.tire_file = "", .tires = 2, .k_t = 342000, .c_t = 3000,
+                              .k_s = 0, .c_s = 0, .m_a = 400};
+    return (tirenv_vehicle){.m = 4500, .I_y = 5000, .a = 1.45, .b = 0.95, .seat_x = -0.75,
+                            .seat_h = 1.2, .front = axle, .rear = axle, .g = 9.81};
+}
+
+/* value > 0 (or >= 0 if zero_ok), and finite; the error names field and unit. */
+static int vehicle_require(const char *field, double value, int zero_ok, const char *unit,
+                           tirenv_diag *diag)
+{
+    if (isfinite(value) && (value > 0 || (zero_ok && value == 0)))
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EINVAL, "", 0, field, "must be %s (%s), got %g",
+                        zero_ok ? "zero or positive" : "positive", unit, value);
+}
+
+/* An axle's field is named SECTION.KEY, as --set accepts it: the bare key is in both axle
+ * sections. */
+static const char *axle_field(char f[64], const char *section, const char *key)
+{
+    snprintf(f, 64, "%s.%s", section, key);
+    return f;
+}
+
+static int vehicle_check_axle(const tirenv_axle *ax, const char *section, int rear,
+                              tirenv_diag *diag)
+{
+    char f[64];
+#define FIELD(key) axle_field(f, section, key)
+    if (!memchr(ax->tire_file, '\0', sizeof ax->tire_file))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("TIRE_FILE"),
+                            "is not terminated within its %zu bytes", sizeof ax->tire_file);
+    int status;
+    if (!(ax->tires >= 1 && ax->tires == floor(ax->tires) && isfinite(ax->tires)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("TIRES"),
+                            "must be a whole number of tires, at least 1, got %g", ax->tires);
+    if ((status = vehicle_require(FIELD("TIRE_STIFFNESS"), ax->k_t, 0, "N/m", diag)) ||
+        (status = vehicle_require(FIELD("TIRE_DAMPING"), ax->c_t, 1, "N*s/m", diag)))
+        return status;
+    /* The ride model has no rear suspension: a value here would be silently ignored. */
+    if (rear && ax->k_s != 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("SUSPENSION_STIFFNESS"),
+                            "must be 0: a tractor's rear axle is rigid here (the ride model "
+                            "has no rear suspension), got %g", ax->k_s);
+    if ((status = vehicle_require(FIELD("SUSPENSION_STIFFNESS"), ax->k_s, 1, "N/m", diag)) ||
+        (status = vehicle_require(FIELD("SUSPENSION_DAMPING"), ax->c_s, 1, "N*s/m", diag)))
+        return status;
+    /* A damper alone cannot carry the axle's static load, and the model would ignore it. */
+    if (ax->k_s == 0 && ax->c_s != 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("SUSPENSION_DAMPING"),
+                            "must be 0 on a rigid axle (SUSPENSION_STIFFNESS 0), got %g",
+                            ax->c_s);
+    /* A suspended axle's mass is a state of its own and divides by it; a rigid axle's is
+     * part of the body's and unused. */
+    return vehicle_require(FIELD("AXLE_MASS"), ax->m_a, ax->k_s == 0, "kg", diag);
+#undef FIELD
+}
+
+int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag)
+{
+    int status;
+    if ((status = vehicle_require("MASS", v->m, 0, "kg", diag)) ||
+        (status = vehicle_require("PITCH_INERTIA", v->I_y, 0, "kg*m^2", diag)) ||
+        (status = vehicle_require("CG_TO_FRONT_AXLE", v->a, 0, "m", diag)) ||
+        (status = vehicle_require("CG_TO_REAR_AXLE", v->b, 0, "m", diag)) ||
+        (status = vehicle_require("GRAVITY", v->g, 0, "m/s^2", diag)))
+        return status;
+    if (!isfinite(v->seat_x))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SEAT_AHEAD_OF_CG",
+                            "must be a finite length in m, got %g", v->seat_x);
+    if (!isfinite(v->seat_h))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SEAT_ABOVE_CG",
+                            "must be a finite length in m, got %g", v->seat_h);
+    if ((status = vehicle_check_axle(&v->front, "FRONT_AXLE", 0, diag)))
+        return status;
+    return vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag);
+}
+
+/* Moments about the axles split the body's weight m*g in the ratio b : a; a suspended front
+ * axle adds its own weight to the front tires (a rigid one's is inside m already). */
+double tirenv_vehicle_tire_load(const tirenv_vehicle *v, int axle)
+{
+    const double l = v->a + v->b;
+    if (axle == 0)
+        return (v->m * v->g * v->b / l + (v->front.k_s > 0 ? v->front.m_a * v->g : 0)) /
+               v->front.tires;
+    if (axle == 1)
+        return v->m * v->g * v->a / l / v->rear.tires;
+    return NAN;
+}
