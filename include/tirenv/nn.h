@@ -105,7 +105,8 @@ void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], d
  * other half is its mirror image; h = 0 before the lowest x_N seen in training (the tire is
  * still on flat ground) and where the network says h < 0 (a cleat cannot lower the centre).
  * Needs a 4-input net (TIRENV_NN_INPUTS). TIRENV_EINVAL for non-physical arguments,
- * TIRENV_ERANGE if the cleat reaches the chord height; no allocation. */
+ * TIRENV_ERANGE if the cleat reaches the chord height; no allocation. Over any other profile
+ * (a road), by equivalent cleats: nn_road.h, an extension beyond the paper. */
 int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
                        const double x[], double h[], tirenv_diag *diag);
 

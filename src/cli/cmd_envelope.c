@@ -27,8 +27,11 @@ static void usage(FILE *fp)
           "options:\n",
           fp);
     cli_help_model(fp, "");
-    fputs("  --model nn --nn FILE the trained network (tirenv train); cleats only, the rows\n"
-          "                       as 'tirenv predict' writes them\n",
+    fputs("  --model nn --nn FILE the trained network (tirenv train), the rows as 'tirenv\n"
+          "                       predict' writes them: over --cleat the paper's curve, over\n"
+          "                       any other obstacle or --profile an extension beyond the\n"
+          "                       paper (equivalent cleats; 'tirenv predict --help'); no\n"
+          "                       --stream\n",
           fp);
     cli_help_load(fp);
     fputs("  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"

@@ -1,6 +1,6 @@
 /* tirenv predict (and tirenv envelope --model nn): the enveloping curve of the trained network
- * over a rectangular cleat, in the CSV of the other models. SPDX-License-Identifier:
- * GPL-3.0-or-later */
+ * over a rectangular cleat, or over any profile by the equivalent-cleat decomposition of
+ * nn_road.h, in the CSV of the other models. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,33 +17,43 @@ static const double default_dx = 0.001; /* m */
 static void usage(FILE *fp, const char *cmd)
 {
     const int env = strcmp(cmd, "envelope") == 0;
-    fprintf(fp, "usage: tirenv %s --nn MODEL.json --cleat L,H (--load N | --contact-length M)\n"
+    fprintf(fp, "usage: tirenv %s --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
             "       %*s [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
             "       %*s [--tire FILE] [--set KEY=VALUE]... [--method M]\n",
             env ? "envelope --model nn" : "predict", env ? 26 : 14, "", env ? 26 : 14, "");
     fputs("\n"
           "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
-          "(paper, Tables 1 and 2), over a rectangular cleat centred at x = 0, in the CSV of\n"
-          "'tirenv envelope':\n"
+          "(paper, Tables 1 and 2), in the CSV of 'tirenv envelope':\n"
           "  x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n"
-          "h is the network at x_N(x) (MODEL.md section 1) on the approach half, mirrored on\n"
-          "the other; z = z_flat + h with z_flat = sqrt(R0^2 - (l_c/2)^2), the chord relation;\n"
-          "fz is the load; slope is dh/dx of the curve (central differences); fx, contacts and\n"
-          "iterations are 0 (the network knows none of them).\n"
-          "The network's inputs are the cleat's length and height, so only --cleat is\n"
-          "accepted. An input outside the range the network was trained on draws a warning\n"
-          "naming it. R0 is the one the network's data referred to (from the model file).\n"
+          "Over --cleat L,H (centred at x = 0), h is the network at x_N(x) (MODEL.md section 1)\n"
+          "on the approach half, mirrored on the other, and slope is dh/dx of the written curve\n"
+          "(central differences). Over any other obstacle or a --profile (a road from 'tirenv\n"
+          "road', say) the network, trained on single cleats, is extended beyond the paper by\n"
+          "an equivalent-cleat decomposition: the profile's opening by a window 1.5 times the\n"
+          "longest trained cleat is the baseline; each bump above it becomes the cleat of equal\n"
+          "height and area; h is the baseline or the highest of the bumps' network curves\n"
+          "added to it (include/tirenv/nn_road.h); slope is its derivative. z = z_flat + h with\n"
+          "z_flat = sqrt(R0^2 - (l_c/2)^2), the chord relation; fz is the load; fx, contacts\n"
+          "and iterations are 0 (the network knows none of them).\n"
+          "An input outside the range the network was trained on draws a warning naming it;\n"
+          "over a profile, one warning counts the bumps clamped to the range (bumps lower than\n"
+          "the lowest trained cleat scale its curve down instead, and are only counted in the\n"
+          "summary). R0 is the one the network's data referred to (from the model file).\n"
           "\n"
           "options:\n"
           "  --nn FILE            the model file written by 'tirenv train -o'\n"
           "  --cleat L,H          rectangular cleat: length and height in m (h is 0 before\n"
           "                       the first x_N the network saw, and never below 0)\n"
+          "  --profile FILE       or a ground profile, CSV x_m,z_m (or a generated obstacle:\n"
+          "                       --step, --trapezoid, --triangle, --cylinder, --sine as in\n"
+          "                       'tirenv envelope --help')\n"
           "  --contact-length M   the working regime, the network's input, in m\n"
           "  --load N             or the load, N, turned into the contact length of the springs\n"
           "                       model of the tire file (--contact-length is turned into the\n"
           "                       fz column the same way)\n"
           "  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"
-          "                       before the cleat to R0 + 0.02 m after it\n"
+          "                       before the obstacle's first vertex to R0 + 0.02 m after its\n"
+          "                       last\n"
           "  --dx DX              spacing of the positions, m (default 0.001)\n"
           "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
           "                       '-': standard output)\n",
@@ -145,20 +155,8 @@ static int parse(int argc, char *argv[], cli_options *o, predict_options *p)
         cli_error("%s: unexpected argument '%s'", cmd, argv[optind]);
         return CLI_EXIT_USAGE;
     }
-    if (o->obstacle && o->obstacle != CLI_OPT_CLEAT) {
-        const char *name = o->obstacle == CLI_OPT_STEP        ? "step"
-                           : o->obstacle == CLI_OPT_TRAPEZOID ? "trapezoid"
-                           : o->obstacle == CLI_OPT_TRIANGLE  ? "triangle"
-                           : o->obstacle == CLI_OPT_CYLINDER  ? "cylinder"
-                           : o->obstacle == CLI_OPT_SINE      ? "sine"
-                                                              : "profile";
-        cli_error("%s: the network models rectangular cleats only (its inputs are a cleat's "
-                  "length and height); got --%s %s, expected --cleat L,H", cmd, name,
-                  o->obstacle_arg);
-        return CLI_EXIT_USAGE;
-    }
     const char *missing = !p->nn_path    ? "--nn MODEL.json"
-                          : !o->obstacle ? "--cleat L,H"
+                          : !o->obstacle ? "--cleat L,H or --profile FILE"
                           : !o->have_load && !o->have_contact_length
                               ? "--load N or --contact-length M"
                               : NULL;
@@ -167,7 +165,7 @@ static int parse(int argc, char *argv[], cli_options *o, predict_options *p)
                   strcmp(cmd, "envelope") == 0 ? "envelope --model nn" : "predict");
         return CLI_EXIT_USAGE;
     }
-    if (!(o->shape[0] > 0) || !(o->shape[1] > 0)) {
+    if (o->obstacle == CLI_OPT_CLEAT && (!(o->shape[0] > 0) || !(o->shape[1] > 0))) {
         cli_error("--cleat %s: expected a positive length and height in m", o->obstacle_arg);
         return CLI_EXIT_DATA;
     }
@@ -198,18 +196,105 @@ static int regime(const cli_options *o, const tirenv_tire *tire, double *l_c, do
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
 
-/* One warning per input the training never saw a value like. */
-static void warn_range(const char *cmd, const tirenv_nn *nn, const double u[])
+/* One warning per input the training never saw a value like, among inputs
+ * TIRENV_NN_CONTACT_LENGTH .. end - 1. */
+static void warn_range(const char *cmd, const tirenv_nn *nn, const double u[], size_t end)
 {
     static const char *const what[TIRENV_NN_INPUTS] = {"x_N", "contact length",
                                                        "obstacle height", "obstacle length"};
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
     tirenv_nn_get_input_range(nn, lo, hi);
-    for (size_t i = tirenv_nn_out_of_range(nn, u, TIRENV_NN_CONTACT_LENGTH);
-         i < TIRENV_NN_INPUTS; i = tirenv_nn_out_of_range(nn, u, i + 1))
+    for (size_t i = tirenv_nn_out_of_range(nn, u, TIRENV_NN_CONTACT_LENGTH); i < end;
+         i = tirenv_nn_out_of_range(nn, u, i + 1))
         fprintf(stderr, "tirenv: %s: warning: %s %g m is outside the range the network was "
                 "trained on (%g to %g m): the prediction is an extrapolation\n", cmd, what[i],
                 u[i], lo[i], hi[i]);
+}
+
+/* The CSV of tirenv envelope, complete or not at all. */
+static int write_curve(const char *path, size_t n, const double x[], const double h[],
+                       const double slope[], double z_flat, double load)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_outfile out;
+    int status = tirenv_outfile_open(&out, path, &diag);
+    if (!status) {
+        fputs("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n", out.fp);
+        for (size_t k = 0; k < n; ++k)
+            fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k],
+                    slope[k], load);
+        if (ferror(out.fp)) {
+            tirenv_outfile_abort(&out);
+            status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
+        } else {
+            status = tirenv_outfile_commit(&out, &diag);
+        }
+    }
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+/* How the summary names the obstacle: the file, or the generator as it was asked for. */
+static void obstacle_label(const cli_options *o, char *buf, size_t n)
+{
+    const char *name = o->obstacle == CLI_OPT_STEP        ? "step"
+                       : o->obstacle == CLI_OPT_TRAPEZOID ? "trapezoid"
+                       : o->obstacle == CLI_OPT_TRIANGLE  ? "triangle"
+                       : o->obstacle == CLI_OPT_CYLINDER  ? "cylinder"
+                       : o->obstacle == CLI_OPT_SINE      ? "sine"
+                                                          : NULL;
+    if (name)
+        snprintf(buf, n, "--%s %s", name, o->obstacle_arg);
+    else
+        snprintf(buf, n, "%s", o->obstacle_arg);
+}
+
+/* The profile's decomposition (nn_road.h), its warning about clamped bumps, and h and slope
+ * at the positions. *what receives a description of the obstacles for the summary. */
+static int road_curve(const char *cmd, const cli_options *o, tirenv_nn *nn, double R0,
+                      double l_c, const tirenv_profile *prof, size_t n, const double x[],
+                      double h[], double slope[], char *what, size_t what_size)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_nn_road *road = NULL;
+    int status = tirenv_nn_road_alloc(nn, R0, l_c, prof, NULL, &road, &diag);
+    if (!status)
+        status = tirenv_nn_road_eval(road, n, x, h, slope, &diag);
+    if (status) {
+        if (o->obstacle == CLI_OPT_PROFILE && !diag.file[0])
+            snprintf(diag.file, sizeof diag.file, "%s", o->obstacle_arg);
+        tirenv_nn_road_free(road);
+        return cli_fail(status, &diag);
+    }
+    const tirenv_nn_road_info in = tirenv_nn_road_get_info(road);
+    const size_t clamped = in.height_above + in.length_below + in.length_above;
+    if (clamped) {
+        char detail[256] = "";
+        size_t used = 0;
+        const struct {
+            size_t count;
+            const char *text;
+            double bound;
+        } parts[] = {{in.height_above, "heights above", in.H_max},
+                     {in.length_below, "lengths below", in.L_min},
+                     {in.length_above, "lengths above", in.L_max}};
+        for (size_t i = 0; i < sizeof parts / sizeof parts[0]; ++i)
+            if (parts[i].count && used < sizeof detail)
+                used += (size_t)snprintf(detail + used, sizeof detail - used, "%s%zu %s %g m",
+                                         used ? ", " : "", parts[i].count, parts[i].text,
+                                         parts[i].bound);
+        fprintf(stderr, "tirenv: %s: warning: %zu of %zu obstacles outside the network's "
+                "training range, clamped to it (%s): their curves are the nearest trained "
+                "cleat's\n", cmd, clamped, in.obstacles, detail);
+    }
+    char label[600];
+    obstacle_label(o, label, sizeof label);
+    snprintf(what, what_size, "%s: %zu obstacles above a baseline of width %.3g m (%zu lower "
+             "than the lowest trained cleat, scaled)",
+             label, in.obstacles, in.width, in.height_below);
+    tirenv_nn_road_free(road);
+    return CLI_EXIT_OK;
 }
 
 int cli_predict_main(int argc, char *argv[])
@@ -221,19 +306,21 @@ int cli_predict_main(int argc, char *argv[])
     int code = parse(argc, argv, &o, &p);
     if (code >= 0)
         return code;
+    const int cleat = o.obstacle == CLI_OPT_CLEAT;
     const double L = o.shape[0], H = o.shape[1];
 
     tirenv_tire tire;
     if ((code = cli_tire(&o, &tire)))
         return code;
     tirenv_nn *nn = NULL;
+    tirenv_profile *prof = NULL;
     tirenv_train_record rec;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     int status = tirenv_nn_read_json(p.nn_path, &nn, &rec, &diag);
     if (status)
         return cli_fail(status, &diag);
-    double *x = NULL, *h = NULL;
+    double *x = NULL, *h = NULL, *slope = NULL;
     if (tirenv_nn_n_inputs(nn) != TIRENV_NN_INPUTS) {
         cli_error("%s: %s: a network of %zu inputs; the enveloping model has %d (x_N, contact "
                   "length, obstacle height, obstacle length)", cmd, p.nn_path,
@@ -241,6 +328,8 @@ int cli_predict_main(int argc, char *argv[])
         code = CLI_EXIT_DATA;
         goto done;
     }
+    if (!cleat && (code = cli_profile(&o, &prof)))
+        goto done;
     double l_c, load;
     if ((code = regime(&o, &tire, &l_c, &load)))
         goto done;
@@ -250,53 +339,52 @@ int cli_predict_main(int argc, char *argv[])
                 "the tire file's is %g m; x_N and z use %g m\n", cmd, rec.R0,
                 tire.springs.R0, R0);
     const double u[TIRENV_NN_INPUTS] = {0.5, l_c, H, L};
-    warn_range(cmd, nn, u);
+    warn_range(cmd, nn, u, cleat ? TIRENV_NN_INPUTS : TIRENV_NN_CONTACT_LENGTH + 1);
 
+    double first = -0.5 * L, last = 0.5 * L;
+    if (!cleat)
+        tirenv_profile_extent(prof, &first, &last);
     if (!p.have_from)
-        p.x_from = -0.5 * L - R0 - margin;
+        p.x_from = first - R0 - margin;
     if (!p.have_to)
-        p.x_to = 0.5 * L + R0 + margin;
+        p.x_to = last + R0 + margin;
     size_t n = 0;
     if ((code = cli_positions(p.x_from, p.x_to, p.dx, &x, &n)))
         goto done;
-    if (!(h = malloc(n * sizeof *h))) {
+    if (!(h = malloc(n * sizeof *h)) || !(slope = malloc(n * sizeof *slope))) {
         code = cli_fail(TIRENV_ENOMEM, NULL);
         goto done;
     }
-    if ((status = tirenv_nn_envelope(nn, R0, l_c, L, H, n, x, h, &diag))) {
-        code = cli_fail(status, &diag);
+    char what[900];
+    if (cleat) {
+        if ((status = tirenv_nn_envelope(nn, R0, l_c, L, H, n, x, h, &diag))) {
+            code = cli_fail(status, &diag);
+            goto done;
+        }
+        for (size_t k = 0; k < n; ++k)
+            slope[k] = curve_slope(n, x, h, k);
+        snprintf(what, sizeof what, "cleat %.4g x %.4g m", L, H);
+    } else if ((code = road_curve(cmd, &o, nn, R0, l_c, prof, n, x, h, slope, what,
+                                  sizeof what))) {
         goto done;
     }
     const double z_flat = sqrt(R0 * R0 - 0.25 * l_c * l_c);
-    tirenv_outfile out;
-    if (!(status = tirenv_outfile_open(&out, p.out_path, &diag))) {
-        fputs("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n", out.fp);
-        for (size_t k = 0; k < n; ++k)
-            fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k],
-                    curve_slope(n, x, h, k), load);
-        if (ferror(out.fp)) {
-            tirenv_outfile_abort(&out);
-            status = tirenv_error(&diag, TIRENV_EIO, p.out_path, 0, "", "write failed");
-        } else {
-            status = tirenv_outfile_commit(&out, &diag);
-        }
-    }
-    if (status) {
-        code = cli_fail(status, &diag);
+    if ((code = write_curve(p.out_path, n, x, h, slope, z_flat, load)))
         goto done;
-    }
     size_t peak = 0;
     for (size_t k = 1; k < n; ++k)
         if (h[k] > h[peak])
             peak = k;
-    fprintf(stderr, "tirenv %s: nn model %s, contact length %.4g m (load %.6g N), cleat %.4g x "
-            "%.4g m, %zu positions: peak h %.3f mm at x = %.4f m\n",
-            strcmp(cmd, "envelope") == 0 ? "envelope" : "predict", p.nn_path, l_c, load, L, H,
+    fprintf(stderr, "tirenv %s: nn model %s, contact length %.4g m (load %.6g N), %s, %zu "
+            "positions: peak h %.3f mm at x = %.4f m\n",
+            strcmp(cmd, "envelope") == 0 ? "envelope" : "predict", p.nn_path, l_c, load, what,
             n, h[peak] * 1e3, x[peak]);
     code = CLI_EXIT_OK;
 done:
     free(x);
     free(h);
+    free(slope);
+    tirenv_profile_free(prof);
     tirenv_nn_free(nn);
     return code;
 }

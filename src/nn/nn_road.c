@@ -1,0 +1,763 @@
+/* The empirical model over any profile: equivalent-cleat decomposition with max-plus
+ * superposition (nn_road.h states the model; this file says how and why).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * Why this shape. The network knows one thing: the curve of a rectangular cleat (L, H) on flat
+ * ground at contact length l_c. A road is not a cleat, so it is split into what the network
+ * can be asked about. The opening b of the profile with a flat element wider than every
+ * trained cleat is the largest "smooth from below" ground under q: it removes exactly the
+ * features narrower than W (morphology's granulometry), which are the cleat-like ones, and
+ * keeps longer undulations, which the tire follows. What sticks out above b comes in runs;
+ * each is replaced by the rectangle of equal height and area, so a true rectangular cleat is
+ * reproduced exactly, and a bump of another shape by the cleat that stores the same volume of
+ * ground under the tire. Contributions are combined by their maximum (max-plus), as the cam
+ * model of MODEL.md section 7 combines ground points: the tire is carried by whatever holds it
+ * highest, and a maximum is exactly the single-cleat curve wherever one obstacle dominates.
+ *
+ * Two departures from "b_k + g_k", with reasons:
+ * - The lift g_k is added to the baseline under the tire, b(x), rather than to the obstacle's
+ *   own base level b_k. With b_k, every obstacle on sloping ground switches on with a step of
+ *   b_k - b(x) at the edge of its reach: on the 1 km class C road of tirenv bench, b_k (the
+ *   mean baseline under the run) is above b(x) at 1769 of the 3198 reach edges, by 2.9 mm on
+ *   average and up to 14 mm, kicks a ride simulation would feel. With b(x) each term is
+ *   continuous, and on level ground (where the network was trained) both are the same.
+ * - The term is capped at the obstacle's highest ground point: a lift relative to b(x) on a
+ *   slope could otherwise exceed it, and a tire cannot be carried above the ground.
+ * The baseline term itself is b(x), not a rigid-disc envelope of b: b is long-wavelength by
+ * construction (no feature narrower than W survives above it), the disc would cost a search
+ * per position, and the network carries the tire's geometry in g_k already.
+ *
+ * The baseline is the opening of samples of q: a uniform resampling, the vertices, and the
+ * centres of elements ending on a vertex (merge_samples says why), interpolated linearly. So
+ * it is continuous wherever q is, exact on plateaus and monotone stretches, and otherwise
+ * within about a spacing's rise of the opening of the polyline itself.
+ *
+ * Speed. Obstacles are sorted by centre and each has a reach (where its curve is non-zero);
+ * a position looks only at the window of centres within the largest reach. Positions go in
+ * chunks; for each, the obstacle of highest bound min(top_k, b(x) + H_k) is evaluated first,
+ * then only the others whose bound can still beat the maximum. The bound is exact (a term
+ * never exceeds it) and ties go to the lowest obstacle index whatever the order, so pruning
+ * changes no bit of h or of the slope. Network evaluations are queued and run in batches. */
+#include "tirenv/nn_road.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "nn/opening.h"
+#include "tirenv/curve.h"
+
+/* A forward pass gives up on the window hint and bisects when it is this many obstacles
+ * behind. Positions are evaluated ROAD_CHUNK at a time, their network evaluations queued and
+ * run ROAD_PENDING at a time through tirenv_nn_run_batch (bit for bit tirenv_nn_run, at
+ * about 2.5 times its rate); the chunk's slopes take two evaluations per position, so
+ * ROAD_PENDING >= 2*ROAD_CHUNK. */
+enum { HINT_WALK = 16, ROAD_CHUNK = 64, ROAD_PENDING = 256 };
+#define ROAD_NONE SIZE_MAX   /* no obstacle: the baseline wins */
+
+/* Step in x_N of the central difference for the network's dy/dx_N: truncation (step^2 times
+ * the third derivative, which is of order 1 m) and rounding (an ulp of h over the step) both
+ * stay below 1e-9 of the slope. */
+static const double slope_step = 1e-5;
+
+/* The window of an obstacle is its exact reach widened by this relative margin, so that
+ * rounding in x_N never drops an obstacle the network still sees (x_N >= x_N_min decides). */
+static const double reach_margin = 1e-9;
+
+/* An obstacle counts as outside the trained range only beyond this relative margin: a
+ * cleat of exactly the longest trained length comes out of the decomposition a few ulp longer
+ * (an area over a height), and is not an extrapolation. It is clamped all the same. */
+static const double range_tol = 1e-9;
+
+/* Baseline resampling points at most, beyond which --spacing is surely a typo (2^28 points
+ * take 8 GB of workspace while building). */
+static const double max_samples = 268435456.0;
+
+/* What a position needs of an obstacle, in one cache line. */
+typedef struct {
+    double c;              /* centre (centroid of q - b), m */
+    double reach;          /* |x - c| beyond which its curve is 0 (with reach_margin), m */
+    double x_0;            /* x_N origin of its cleat, obstacle coordinates, m (< 0) */
+    double scale;          /* H/H_min for a height below the trained range, else 1 */
+    double H;              /* the lift is clipped to [0, H], m */
+    double top;            /* the term is capped at the highest ground point, m */
+    double H_net, L_net;   /* the network's obstacle inputs, m */
+} road_obstacle;
+
+/* The workspace of an evaluation, so that it never allocates: per position of the chunk, and
+ * the queue of network evaluations. */
+typedef struct {
+    double b[ROAD_CHUNK], db[ROAD_CHUNK];  /* baseline and its slope, m, 1 */
+    double h[ROAD_CHUNK];                  /* maximum so far, m */
+    double x_N[ROAD_CHUNK];                /* the winner's x_N */
+    size_t best[ROAD_CHUNK];               /* winning obstacle, or ROAD_NONE */
+    int flat[ROAD_CHUNK];                  /* winner clipped at H (1) or capped (2) */
+    size_t first[ROAD_CHUNK];              /* the first pass's obstacle */
+    size_t lo[ROAD_CHUNK], hi[ROAD_CHUNK]; /* window of obstacles */
+    size_t n;                              /* queued evaluations */
+    double in[ROAD_PENDING * TIRENV_NN_INPUTS], y[ROAD_PENDING];
+    size_t pos[ROAD_PENDING], k[ROAD_PENDING];
+} road_work;
+
+struct tirenv_nn_road {
+    tirenv_nn *nn;         /* own copy: its workspace is written by every evaluation */
+    double l_c;            /* contact length, m */
+    double x_N_min;        /* first x_N the network was trained on */
+    int prune;
+    /* Baseline: bs[j] at the samples xs[j] (increasing), linear in between (slope ms[j] on
+     * [xs[j], xs[j+1]]), flat beyond. The samples are the resampling points g0 + i*ds, the
+     * profile's vertices and their anchors (merge_samples); cell[i] is the sample at (or
+     * within round-off of) resampling point i, so that a position finds its segment in O(1)
+     * plus the few other samples of one spacing. */
+    size_t n_s;
+    double *xs, *bs, *ms;  /* m, m, 1 */
+    size_t n_grid;
+    double g0, inv_ds;     /* m, 1/m */
+    size_t *cell;
+    /* Obstacles, sorted by c. */
+    size_t n_ob;
+    road_obstacle *ob;
+    tirenv_nn_obstacle *pub;
+    double reach_max;      /* largest ob[k].reach, m */
+    size_t hint;           /* first obstacle of the last window */
+    tirenv_nn_road_info info;
+    road_work work;
+};
+
+tirenv_nn_road_settings tirenv_nn_road_default(void)
+{
+    return (tirenv_nn_road_settings){
+        .width_factor = 1.5, .width = 0, .spacing = 0.005, .eps = 1e-6, .prune = 1};
+}
+
+void tirenv_nn_road_free(tirenv_nn_road *r)
+{
+    if (!r)
+        return;
+    tirenv_nn_free(r->nn);
+    free(r->xs);
+    free(r->bs);
+    free(r->ms);
+    free(r->cell);
+    free(r->ob);
+    free(r->pub);
+    free(r);
+}
+
+/* b(x) and db/dx: linear between samples, the end values beyond them (where the profile is
+ * flat at its end heights, and so is its opening). */
+static double baseline_at(const tirenv_nn_road *r, double x, double *db)
+{
+    const double *xs = r->xs;
+    const size_t last = r->n_s - 1;
+    if (!(x > xs[0])) {
+        *db = 0;
+        return r->bs[0];
+    }
+    if (!(x < xs[last])) {
+        *db = 0;
+        return r->bs[last];
+    }
+    const double u = (x - r->g0) * r->inv_ds;  /* > 0: xs[0] is resampling point 0 */
+    size_t j = r->cell[u < (double)(r->n_grid - 1) ? (size_t)u : r->n_grid - 1];
+    while (j > 0 && xs[j] > x)
+        --j;
+    while (xs[j + 1] <= x)  /* stops before last, since x < xs[last] */
+        ++j;
+    *db = r->ms[j];
+    return r->bs[j] + r->ms[j] * (x - xs[j]);
+}
+
+double tirenv_nn_road_baseline(const tirenv_nn_road *r, double x)
+{
+    double db;
+    return baseline_at(r, x, &db);
+}
+
+const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r)
+{
+    return r->pub;
+}
+
+tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r)
+{
+    return r->info;
+}
+
+/* ---- building --------------------------------------------------------------------------- */
+
+/* A point of the merged polyline (profile vertices and resampling points): ground q,
+ * baseline b, residual r = q - b, all m. */
+typedef struct {
+    double x, q, b, r;
+} road_point;
+
+/* The run being integrated: moments of r about its start x_s, so that the centroid of a run
+ * 900 m down the road keeps the digits of a run at 0. */
+typedef struct {
+    int open;
+    double x_s;            /* start, m */
+    double area;           /* integral of r dx, m^2 */
+    double moment;         /* integral of (x - x_s) r dx, m^3 */
+    double base;           /* integral of b dx, m^2 */
+    double H, top;         /* largest r and q, m */
+} road_run;
+
+/* Growing arrays of obstacles while the profile is swept. */
+typedef struct {
+    size_t n, cap;
+    tirenv_nn_obstacle *pub;
+} road_found;
+
+static double max3(double a, double b, double c)
+{
+    const double m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+/* Exact integrals of the linear pieces of r and b between A and B (A.x <= B.x). */
+static void run_add(road_run *run, const road_point *A, const road_point *B)
+{
+    const double dx = B->x - A->x, u = A->x - run->x_s, v = B->x - run->x_s;
+    run->area += 0.5 * dx * (A->r + B->r);
+    run->moment += dx / 6.0 * (u * (2 * A->r + B->r) + v * (A->r + 2 * B->r));
+    run->base += 0.5 * dx * (A->b + B->b);
+    run->H = max3(run->H, A->r, B->r);
+    run->top = max3(run->top, A->q, B->q);
+}
+
+/* Where r crosses eps between P and Q (P.r and Q.r on either side of it). At a wall
+ * (P.x == Q.x) the crossing is the wall itself. */
+static road_point crossing(const road_point *P, const road_point *Q, double eps)
+{
+    const double t = (eps - P->r) / (Q->r - P->r);
+    return (road_point){.x = P->x + t * (Q->x - P->x), .q = P->q + t * (Q->q - P->q),
+                        .b = P->b + t * (Q->b - P->b), .r = eps};
+}
+
+static int run_close(road_run *run, double x_e, road_found *f)
+{
+    run->open = 0;
+    if (!(run->area > 0) || !(run->H > 0) || !isfinite(run->area))
+        return TIRENV_OK;  /* a run of no width (cannot happen on a valid profile) */
+    if (f->n == f->cap) {
+        const size_t cap = f->cap ? 2 * f->cap : 256;
+        tirenv_nn_obstacle *p = realloc(f->pub, cap * sizeof *p);
+        if (!p)
+            return TIRENV_ENOMEM;
+        f->pub = p;
+        f->cap = cap;
+    }
+    const double width = x_e - run->x_s;
+    f->pub[f->n++] = (tirenv_nn_obstacle){
+        .x_lo = run->x_s, .x_hi = x_e, .c = run->x_s + run->moment / run->area,
+        .H = run->H, .L = run->area / run->H,
+        .base = width > 0 ? run->base / width : 0, .top = run->top};
+    return TIRENV_OK;
+}
+
+/* One segment P -> Q of the merged polyline: the part with r > eps belongs to a run. */
+static int sweep_segment(road_run *run, const road_point *P, const road_point *Q, double eps,
+                         road_found *f)
+{
+    const int in_p = P->r > eps, in_q = Q->r > eps;
+    if (in_p && in_q) {
+        run_add(run, P, Q);
+    } else if (in_p) {
+        const road_point X = crossing(P, Q, eps);
+        run_add(run, P, &X);
+        return run_close(run, X.x, f);
+    } else if (in_q) {
+        const road_point X = crossing(P, Q, eps);
+        *run = (road_run){.open = 1, .x_s = X.x, .H = X.r, .top = X.q};
+        run_add(run, &X, Q);
+    }
+    return TIRENV_OK;
+}
+
+/* What the build needs besides what it keeps (the erosion goes where the segment slopes will
+ * be): the ground at the samples, the higher vertex at a wall, m; the opening's deque. */
+typedef struct {
+    double *q;
+    size_t *deque;
+} road_build;
+
+/* The samples of the baseline, in increasing order: the resampling points
+ * x_first + (i - m)*ds, i = 0..n_grid-1 (from the first vertex, so that a road sampled at a
+ * multiple of ds has its vertices on them), the profile's vertices, and the anchors x_v - a
+ * and x_v + a of every vertex: where an element of the opening that ends on the vertex is
+ * centred. Without the anchors a plateau whose wall falls between resampling points would
+ * lose the last spacing before the wall to the baseline, and leave a sliver obstacle as high
+ * as the plateau. A wall's two vertices are one sample with the higher height (the opening
+ * of the ground's upper envelope: the wall's top belongs to the ground). Points within tol
+ * of a vertex give way to it, and of each other to the first. Between vertices the ground is
+ * tirenv_profile_height's interpolation, found by walking rather than bisecting. */
+static void merge_samples(tirenv_nn_road *r, const tirenv_profile *p, double x_first, double m,
+                          double ds, double a, double tol, road_build *w)
+{
+    const size_t n_v = tirenv_profile_size(p), n_g = r->n_grid;
+    const double *xv = tirenv_profile_x(p), *zv = tirenv_profile_z(p);
+    size_t i = 0, j = 0, left = 0, right = 0, n = 0;  /* next grid point, vertex, anchors */
+    for (;;) {
+        const double x_g = i < n_g ? x_first + ((double)i - m) * ds : INFINITY;
+        const double x_v = j < n_v ? xv[j] : INFINITY;
+        const double x_l = left < n_v ? xv[left] - a : INFINITY;
+        const double x_r = right < n_v ? xv[right] + a : INFINITY;
+        const double x_other = fmin(x_g, fmin(x_l, x_r));
+        if (x_v == INFINITY && x_other == INFINITY)
+            break;
+        double x;
+        if (x_v <= x_other + tol) {
+            const int wall = j + 1 < n_v && xv[j + 1] == xv[j];
+            x = x_v;
+            w->q[n] = wall && zv[j + 1] > zv[j] ? zv[j + 1] : zv[j];
+            j += wall ? 2 : 1;
+        } else {
+            x = x_other;
+            w->q[n] = j == 0     ? zv[0]
+                      : j == n_v ? zv[n_v - 1]
+                                 : zv[j - 1] + (zv[j] - zv[j - 1]) *
+                                                   ((x - xv[j - 1]) / (xv[j] - xv[j - 1]));
+        }
+        r->xs[n] = x;
+        for (; i < n_g && x_first + ((double)i - m) * ds <= x + tol; ++i)
+            r->cell[i] = n;
+        while (left < n_v && xv[left] - a <= x + tol)
+            ++left;
+        while (right < n_v && xv[right] + a <= x + tol)
+            ++right;
+        ++n;
+    }
+    r->n_s = n;
+}
+
+/* The runs of r > eps on the polyline through the samples, walls drawn with both their
+ * vertices: r is linear between consecutive points, so the integrals are exact. The first
+ * sample is far enough before the profile to lie on the baseline. A sample is vertex v's if
+ * it has its abscissa (a resampling point there gave way to it). */
+static int sweep(const tirenv_nn_road *r, const tirenv_profile *p, const road_build *w,
+                 double eps, road_found *f)
+{
+    const size_t n_v = tirenv_profile_size(p);
+    const double *xv = tirenv_profile_x(p), *zv = tirenv_profile_z(p);
+    road_run run = {0};
+    road_point prev = {0};
+    int status = TIRENV_OK;
+    size_t v = 0;
+    for (size_t j = 0; j < r->n_s && !status; ++j) {
+        road_point P[2];
+        size_t n_p = 1;
+        if (v < n_v && r->xs[j] == xv[v]) {
+            P[0] = (road_point){.x = xv[v], .q = zv[v], .b = r->bs[j]};
+            if (v + 1 < n_v && xv[v + 1] == xv[v]) {
+                ++v;
+                P[n_p++] = (road_point){.x = xv[v], .q = zv[v], .b = r->bs[j]};
+            }
+            ++v;
+        } else {
+            P[0] = (road_point){.x = r->xs[j], .q = w->q[j], .b = r->bs[j]};
+        }
+        for (size_t k = 0; k < n_p && !status; ++k) {
+            P[k].r = P[k].q - P[k].b;
+            if (j > 0 || k > 0)
+                status = sweep_segment(&run, &prev, &P[k], eps, f);
+            prev = P[k];
+        }
+    }
+    if (!status && run.open)
+        status = run_close(&run, prev.x, f);
+    return status;
+}
+
+/* The baseline: samples from before the profile's first vertex to after its last, by a
+ * margin of m >= 2a/ds + 1 spacings on each side, where the profile is flat: there the
+ * truncated windows of the opening see only the end height, as the infinite flat extension
+ * would. Then the opening, the segment slopes, and the obstacles. */
+static int build(tirenv_nn_road *r, const tirenv_profile *p, double a, double ds, double eps,
+                 road_found *f, tirenv_diag *diag)
+{
+    double x_first, x_last;
+    tirenv_profile_extent(p, &x_first, &x_last);
+    const double m = ceil(2 * a / ds) + 2;
+    const double steps = ceil((x_last - x_first) / ds);
+    if (!(steps + 2 * m + 1 <= max_samples))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "spacing",
+                            "a profile %g m long at a spacing of %g m needs %.0f baseline "
+                            "points; expected at most %.0f (raise the spacing)",
+                            x_last - x_first, ds, steps + 2 * m + 1, max_samples);
+    const size_t n_g = (size_t)(steps + 2 * m) + 1, n_max = n_g + 3 * tirenv_profile_size(p);
+    const double tol = 1e-9 * ds;  /* round-off in the resampling points' abscissae */
+    r->n_grid = n_g;
+    r->g0 = x_first - m * ds;
+    r->inv_ds = 1 / ds;
+    road_build w = {.q = malloc(n_max * sizeof(double)),
+                    .deque = malloc(n_max * sizeof(size_t))};
+    r->xs = malloc(n_max * sizeof *r->xs);
+    r->bs = malloc(n_max * sizeof *r->bs);
+    r->ms = malloc(n_max * sizeof *r->ms);
+    r->cell = malloc(n_g * sizeof *r->cell);
+    int status = TIRENV_OK;
+    if (!w.q || !w.deque || !r->xs || !r->bs || !r->ms || !r->cell) {
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "",
+                              "out of memory for %zu baseline points", n_max);
+    } else {
+        merge_samples(r, p, x_first, m, ds, a, tol, &w);
+        tirenv_nn__opening(r->n_s, r->xs, w.q, a + tol, r->bs, r->ms, w.deque);
+        for (size_t j = 0; j + 1 < r->n_s; ++j)
+            r->ms[j] = (r->bs[j + 1] - r->bs[j]) / (r->xs[j + 1] - r->xs[j]);
+        r->ms[r->n_s - 1] = 0;
+        if ((status = sweep(r, p, &w, eps, f)))
+            tirenv_error(diag, status, "", 0, "", "out of memory for %zu obstacles", f->n);
+    }
+    free(w.q);
+    free(w.deque);
+    return status;
+}
+
+/* Network inputs and reach of each obstacle: clamped to the trained range (and counted), x_0
+ * of MODEL.md section 1 for the cleat the network is asked about. */
+static int prepare_obstacles(tirenv_nn_road *r, double R0, const double lo[],
+                             const double hi[], tirenv_diag *diag)
+{
+    const double H_min = lo[TIRENV_NN_HEIGHT], H_max = hi[TIRENV_NN_HEIGHT];
+    const double L_min = lo[TIRENV_NN_LENGTH], L_max = hi[TIRENV_NN_LENGTH];
+    const double z_c = sqrt(R0 * R0 - 0.25 * r->l_c * r->l_c);  /* chord height */
+    tirenv_nn_road_info *in = &r->info;
+    r->reach_max = 0;
+    in->reach = 0;
+    for (size_t k = 0; k < r->n_ob; ++k) {
+        tirenv_nn_obstacle *P = &r->pub[k];
+        road_obstacle *o = &r->ob[k];
+        double scale = 1, H_net = P->H, L_net = P->L;
+        if (P->H < H_min) {
+            H_net = H_min;
+            scale = P->H / H_min;
+            in->height_below += P->H < H_min * (1 - range_tol);
+        } else if (P->H > H_max) {
+            H_net = H_max;
+            in->height_above += P->H > H_max * (1 + range_tol);
+        }
+        if (P->L < L_min) {
+            L_net = L_min;
+            in->length_below += P->L < L_min * (1 - range_tol);
+        } else if (P->L > L_max) {
+            L_net = L_max;
+            in->length_above += P->L > L_max * (1 + range_tol);
+        }
+        const double x_0 = tirenv_xN_origin(R0, r->l_c, L_net, H_net);
+        if (!(H_net < z_c) || !(x_0 < 0))
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle_height_m",
+                                "the obstacle at x = %g m is %g m high (network input %g m): "
+                                "it reaches the centre height %g m of a tire of radius %g m at "
+                                "contact length %g m", P->c, P->H, H_net, z_c, R0, r->l_c);
+        P->H_net = H_net;
+        P->L_net = L_net;
+        P->reach = -x_0 * (1 - r->x_N_min);
+        *o = (road_obstacle){.c = P->c, .reach = P->reach * (1 + reach_margin), .x_0 = x_0,
+                             .scale = scale, .H = P->H, .top = P->top, .H_net = H_net,
+                             .L_net = L_net};
+        r->reach_max = fmax(r->reach_max, o->reach);
+        in->reach = fmax(in->reach, P->reach + fmax(P->c - P->x_lo, P->x_hi - P->c));
+    }
+    return TIRENV_OK;
+}
+
+static int check_settings(const tirenv_nn_road_settings *s, tirenv_diag *diag)
+{
+    if (!(s->spacing > 0) || !isfinite(s->spacing))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "spacing",
+                            "spacing %g m; expected a positive number", s->spacing);
+    if (!(s->eps >= 0) || !isfinite(s->eps))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "eps",
+                            "eps %g m; expected a number >= 0", s->eps);
+    if (!(s->width >= 0) || !isfinite(s->width))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "width",
+                            "width %g m; expected 0 (from width_factor) or a positive number",
+                            s->width);
+    if (s->width == 0 && (!(s->width_factor > 1) || !isfinite(s->width_factor)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "width_factor",
+                            "width_factor %g; expected a number above 1 (the opening must be "
+                            "wider than every trained cleat)", s->width_factor);
+    if (s->prune != 0 && s->prune != 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "prune", "prune %d; expected 0 or 1",
+                            s->prune);
+    return TIRENV_OK;
+}
+
+int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tirenv_profile *p,
+                         const tirenv_nn_road_settings *settings, tirenv_nn_road **out,
+                         tirenv_diag *diag)
+{
+    if (!out)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no place for the result (NULL)");
+    *out = NULL;
+    if (!nn || !p)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, nn ? "profile" : "network",
+                            "the %s is NULL", nn ? "profile" : "network");
+    const tirenv_nn_road_settings s = settings ? *settings : tirenv_nn_road_default();
+    int status = check_settings(&s, diag);
+    if (status)
+        return status;
+    if (tirenv_nn_n_inputs(nn) != TIRENV_NN_INPUTS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                            "the enveloping model needs %d inputs (x_N, l_c, H, L); this "
+                            "network has %zu", TIRENV_NN_INPUTS, tirenv_nn_n_inputs(nn));
+    if (!(R0 > 0) || !isfinite(R0) || !(l_c > 0) || !(l_c < 2 * R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
+                            "expected R0 > 0 and 0 < l_c < 2*R0 (m); got R0 %g, l_c %g", R0,
+                            l_c);
+    double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
+    tirenv_nn_get_input_range(nn, lo, hi);
+    const double x_N_min = lo[TIRENV_NN_X_N];
+    if (!isfinite(x_N_min) || !(x_N_min < 1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_N",
+                            "the network's trained range of x_N starts at %g; expected a "
+                            "finite value below 1 (where its curve begins)", x_N_min);
+    const double W = s.width > 0 ? s.width : s.width_factor * hi[TIRENV_NN_LENGTH];
+    if (!isfinite(W) || !(W > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "width",
+                            "the network records no trained range of obstacle length (its "
+                            "longest is %g m); set the opening width", hi[TIRENV_NN_LENGTH]);
+
+    tirenv_nn_road *r = calloc(1, sizeof *r);
+    if (!r || !(r->nn = tirenv_nn_clone(nn))) {
+        free(r);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
+    r->l_c = l_c;
+    r->x_N_min = x_N_min;
+    r->prune = s.prune;
+    r->info = (tirenv_nn_road_info){
+        .H_min = lo[TIRENV_NN_HEIGHT], .H_max = hi[TIRENV_NN_HEIGHT],
+        .L_min = lo[TIRENV_NN_LENGTH], .L_max = hi[TIRENV_NN_LENGTH],
+        .width = W, .spacing = s.spacing};
+    road_found f = {0};
+    status = build(r, p, 0.5 * W, s.spacing, s.eps, &f, diag);
+    r->pub = f.pub;
+    r->n_ob = f.n;
+    r->info.obstacles = f.n;
+    if (!status && !(r->ob = malloc((f.n ? f.n : 1) * sizeof *r->ob)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for %zu "
+                              "obstacles", f.n);
+    if (!status)
+        status = prepare_obstacles(r, R0, lo, hi, diag);
+    if (status) {
+        tirenv_nn_road_free(r);
+        return status;
+    }
+    *out = r;
+    return TIRENV_OK;
+}
+
+/* ---- evaluating ------------------------------------------------------------------------- */
+
+/* Where a term's network input x_N comes from: tirenv_xN(-|d|, x_0) for the obstacle's cleat,
+ * d = x - c, exactly as tirenv_nn_envelope forms it for a cleat centred at 0. */
+static double obstacle_xN(const road_obstacle *o, double d)
+{
+    return (-fabs(d) - o->x_0) / (-o->x_0);
+}
+
+/* Queues one network evaluation: obstacle k at position p of the chunk. */
+static void push(tirenv_nn_road *r, size_t p, size_t k, double x_N);
+
+/* Runs the queued evaluations in one batch and folds each term into its position's maximum.
+ * A term is tirenv_nn_envelope's value (0 for a negative output), scaled, clipped to [0, H],
+ * added to b(x) and capped at the top. The winner of equal terms is the lowest obstacle
+ * index (a term equal to the baseline does not win): a rule that does not depend on the
+ * order terms arrive in, so pruned and exhaustive evaluation pick the same winner. */
+static void flush(tirenv_nn_road *r)
+{
+    road_work *w = &r->work;
+    if (w->n == 0)
+        return;
+    tirenv_nn_run_batch(r->nn, w->n, w->in, w->y);
+    for (size_t j = 0; j < w->n; ++j) {
+        const size_t p = w->pos[j], k = w->k[j];
+        const road_obstacle *o = &r->ob[k];
+        const double y = w->y[j] >= 0 ? w->y[j] : 0;  /* NaN cannot come, but maps to 0 */
+        double g = o->scale * y;
+        int flat = 0;
+        if (g > o->H) {
+            g = o->H;
+            flat = 1;
+        }
+        double t = w->b[p] + g;
+        if (t > o->top) {
+            t = o->top;
+            flat = 2;
+        }
+        if (t > w->h[p] || (t == w->h[p] && w->best[p] != ROAD_NONE && k < w->best[p])) {
+            w->h[p] = t;
+            w->best[p] = k;
+            w->flat[p] = flat;
+            w->x_N[p] = w->in[j * TIRENV_NN_INPUTS + TIRENV_NN_X_N];
+        }
+    }
+    w->n = 0;
+}
+
+static void push(tirenv_nn_road *r, size_t p, size_t k, double x_N)
+{
+    road_work *w = &r->work;
+    if (w->n == ROAD_PENDING)
+        flush(r);
+    double *u = w->in + w->n * TIRENV_NN_INPUTS;
+    u[TIRENV_NN_X_N] = x_N;
+    u[TIRENV_NN_CONTACT_LENGTH] = r->l_c;
+    u[TIRENV_NN_HEIGHT] = r->ob[k].H_net;
+    u[TIRENV_NN_LENGTH] = r->ob[k].L_net;
+    w->pos[w->n] = p;
+    w->k[w->n] = k;
+    w->n++;
+}
+
+/* The first obstacle whose centre is at or after x_lo, from the last window's. */
+static size_t window_start(tirenv_nn_road *r, double x_lo)
+{
+    const road_obstacle *ob = r->ob;
+    size_t lo = 0, hi = r->n_ob, k = r->hint;
+    if (k > 0 && ob[k - 1].c >= x_lo) {
+        hi = k - 1;  /* went backwards: bisect before the hint */
+    } else {
+        for (size_t walk = 0; walk < HINT_WALK && k < r->n_ob && ob[k].c < x_lo; ++walk)
+            ++k;
+        if (k == r->n_ob || ob[k].c >= x_lo)
+            return r->hint = k;
+        lo = k;
+    }
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (ob[mid].c < x_lo)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return r->hint = lo;
+}
+
+/* Pruned: each position looks only at obstacles whose centre is within the largest reach,
+ * and at those only within their own reach. First pass: the one with the highest bound
+ * min(top, b + H), which is usually the winner. Second pass: the others whose bound can
+ * still beat the maximum so far (a term never exceeds its bound: g <= H and rounding is
+ * monotone), under the winner rule of flush. */
+static void chunk_pruned(tirenv_nn_road *r, size_t m, const double x[])
+{
+    road_work *w = &r->work;
+    for (size_t p = 0; p < m; ++p) {
+        const size_t lo = window_start(r, x[p] - r->reach_max);
+        size_t hi = lo, k_best = ROAD_NONE;
+        double bound_best = w->b[p], x_N_best = 0;
+        for (; hi < r->n_ob && r->ob[hi].c <= x[p] + r->reach_max; ++hi) {
+            const road_obstacle *o = &r->ob[hi];
+            const double d = x[p] - o->c;
+            const double lift = w->b[p] + o->H, bound = o->top < lift ? o->top : lift;
+            if (fabs(d) > o->reach || !(bound > bound_best))
+                continue;
+            const double x_N = obstacle_xN(o, d);
+            if (!(x_N >= r->x_N_min))
+                continue;
+            k_best = hi;
+            bound_best = bound;
+            x_N_best = x_N;
+        }
+        w->lo[p] = lo;
+        w->hi[p] = hi;
+        w->first[p] = k_best;
+        if (k_best != ROAD_NONE)
+            push(r, p, k_best, x_N_best);
+    }
+    flush(r);
+    for (size_t p = 0; p < m; ++p) {
+        for (size_t k = w->lo[p]; k < w->hi[p]; ++k) {
+            const road_obstacle *o = &r->ob[k];
+            const double d = x[p] - o->c;
+            const double lift = w->b[p] + o->H, bound = o->top < lift ? o->top : lift;
+            if (k == w->first[p] || fabs(d) > o->reach || bound < w->h[p] ||
+                (bound == w->h[p] && (w->best[p] == ROAD_NONE || k > w->best[p])))
+                continue;
+            const double x_N = obstacle_xN(o, d);
+            if (x_N >= r->x_N_min)
+                push(r, p, k, x_N);
+        }
+    }
+    flush(r);
+}
+
+/* Exhaustive (prune 0): every obstacle at every position, the definition of h. */
+static void chunk_all(tirenv_nn_road *r, size_t m, const double x[])
+{
+    for (size_t p = 0; p < m; ++p)
+        for (size_t k = 0; k < r->n_ob; ++k) {
+            const double x_N = obstacle_xN(&r->ob[k], x[p] - r->ob[k].c);
+            if (x_N >= r->x_N_min)
+                push(r, p, k, x_N);
+        }
+    flush(r);
+}
+
+/* dh/dx of the winning term: b'(x) for the baseline or a lift clipped at H, 0 for a term
+ * capped at the top, else b'(x) + scale * dy/dx_N * dx_N/dx with dx_N/dx = sign(d)/x_0
+ * (x_N = 1 + |d|/x_0; 0 on the axis of symmetry, where the curve has its corner). dy/dx_N by
+ * central differences of the network, step slope_step in x_N, in one batch. */
+static void chunk_slope(tirenv_nn_road *r, size_t m, const double x[], double slope[])
+{
+    road_work *w = &r->work;
+    size_t n = 0;
+    for (size_t p = 0; p < m; ++p) {
+        const size_t k = w->best[p];
+        slope[p] = k == ROAD_NONE || w->flat[p] == 1 ? w->db[p] : 0;
+        if (k == ROAD_NONE || w->flat[p])
+            continue;
+        for (int side = -1; side <= 1; side += 2) {
+            double *u = w->in + n++ * TIRENV_NN_INPUTS;
+            u[TIRENV_NN_X_N] = w->x_N[p] + side * slope_step;
+            u[TIRENV_NN_CONTACT_LENGTH] = r->l_c;
+            u[TIRENV_NN_HEIGHT] = r->ob[k].H_net;
+            u[TIRENV_NN_LENGTH] = r->ob[k].L_net;
+        }
+    }
+    tirenv_nn_run_batch(r->nn, n, w->in, w->y);
+    n = 0;
+    for (size_t p = 0; p < m; ++p) {
+        const size_t k = w->best[p];
+        if (k == ROAD_NONE || w->flat[p])
+            continue;
+        const road_obstacle *o = &r->ob[k];
+        const double dy = (w->y[n + 1] - w->y[n]) / (2 * slope_step);
+        n += 2;
+        const double d = x[p] - o->c, sign = d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
+        slope[p] = w->db[p] + o->scale * dy * sign / o->x_0;
+    }
+}
+
+int tirenv_nn_road_eval(tirenv_nn_road *r, size_t n, const double x[], double h[],
+                        double slope[], tirenv_diag *diag)
+{
+    if (!r || (n > 0 && (!x || !h)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
+                            "expected a decomposition and arrays x and h of %zu positions",
+                            n);
+    for (size_t i = 0; i < n; ++i)
+        if (!isfinite(x[i]))
+            return tirenv_error(diag, TIRENV_EINVAL, "", i + 1, "x",
+                                "position %zu: x = %g; expected a finite number (m)", i,
+                                x[i]);
+    road_work *w = &r->work;
+    for (size_t i0 = 0; i0 < n; i0 += ROAD_CHUNK) {
+        const size_t m = n - i0 < ROAD_CHUNK ? n - i0 : ROAD_CHUNK;
+        for (size_t p = 0; p < m; ++p) {
+            w->b[p] = w->h[p] = baseline_at(r, x[i0 + p], &w->db[p]);
+            w->best[p] = ROAD_NONE;
+        }
+        if (r->prune)
+            chunk_pruned(r, m, x + i0);
+        else
+            chunk_all(r, m, x + i0);
+        memcpy(h + i0, w->h, m * sizeof *h);
+        if (slope)
+            chunk_slope(r, m, x + i0, slope + i0);
+    }
+    return TIRENV_OK;
+}
