@@ -297,5 +297,64 @@ check "envelope --stream without --profile: exit 1" '[ $rc -eq 1 ] && no_file o.
 run "$bin" help
 check "help lists road" '[ $rc -eq 0 ] && grep -q "^  road " out'
 
+# --- the network over any profile (equivalent-cleat decomposition, nn_road.h) -----------
+# The network of the study, trained on the embedded data set (lm, seed 1, one restart).
+run "$bin" train --data "$data/../../data/dataset" --restarts 1 -o net.json
+check "train on the embedded data set writes a model file" '[ $rc -eq 0 ] && [ -s net.json ]'
+run "$bin" envelope --model nn --nn net.json --profile road.csv --contact-length 0.33 \
+    --dx 0.01 -o rn.csv
+check "envelope --model nn --profile over the generated road: header, 5141 finite rows" \
+    '[ $rc -eq 0 ] && [ "$(head -n 1 rn.csv)" = "$header" ] && [ $(rows rn.csv) -eq 5141 ] &&
+     grep -q "obstacles above a baseline" err &&
+     awk -F, "NR > 1 && (\$3 + 0 != \$3 || \$4 + 0 != \$4) { bad = 1 } END { exit bad }" rn.csv'
+printf 'x_m,z_m\n-0.05,0\n-0.05,0.075\n0.05,0.075\n0.05,0\n' >cleat.csv
+run "$bin" envelope --model nn --nn net.json --profile cleat.csv --contact-length 0.38 -o pc.csv
+run "$bin" envelope --model nn --nn net.json --cleat 0.10,0.075 --contact-length 0.38 -o cc.csv
+check "envelope --model nn: a cleat as --profile gives --cleat's curve (h within 1e-9 m)" \
+    '[ $rc -eq 0 ] && same_h pc.csv cc.csv 1e-9 && near "$(peak_h cc.csv)" 0.04 0.035'
+printf 'x_m,z_m\n-0.05,0\n-0.05,0.15\n0.05,0.15\n0.05,0\n' >tall.csv
+run "$bin" predict --nn net.json --profile tall.csv --contact-length 0.38 -o o.csv
+check "predict --profile with a bump above the trained heights: one warning with the count" \
+    '[ $rc -eq 0 ] && [ $(grep -c "warning: 1 of 1 obstacles outside" err) -eq 1 ] &&
+     grep -q "1 heights above 0.1 m" err'
+run "$bin" envelope --model nn --nn net.json --profile late.csv --contact-length 0.33 -o nn.csv
+check "envelope --model nn over a malformed profile: exit 2 naming file:line, no file" \
+    '[ $rc -eq 2 ] && grep -q "late.csv:4" err && no_file nn.csv'
+
+# --- ride: the tractor over a profile ------------------------------------------------------
+run "$bin" ride --help
+check "ride --help prints usage, exit 0" '[ $rc -eq 0 ] && grep -q "^usage: tirenv ride" out'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point -o series.csv
+check "ride -o: exact header, 1 kHz rows from t = 0 at rest, a table row on stdout" \
+    '[ $rc -eq 0 ] && [ "$(grep -v "^#" series.csv | head -n 1)" = "t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N" ] &&
+     [ "$(grep -v "^#" series.csv | sed -n 2p | cut -d, -f1,5,6)" = 0,0,0 ] &&
+     [ $(grep -c "^point " out) -eq 1 ]'
+run "$bin" ride --cleat 0.30,0.05 --speed 5km/h,15km/h --model point,cam --out-dir rd
+check "ride --out-dir: comfort table of 2 models x 2 speeds, both plots as PNG and SVG" \
+    '[ $rc -eq 0 ] && [ $(rows rd/comfort.csv) -eq 4 ] && [ -s rd/seat.png ] &&
+     [ -s rd/seat.svg ] && [ -s rd/spectrum.png ] && [ -s rd/spectrum.svg ] &&
+     [ -s rd/seat.gp ] && [ -s rd/series-cam-15kmh.csv ] &&
+     [ -z "$(find rd -name "*.tmp.*")" ]'
+check "ride over a cleat: point contact's seat acceleration peaks higher than the cam's" \
+    'awk -F, "NR > 1 && \$3 == 5 { p[\$1] = \$13 } END { exit !(p[\"point\"] > 2 * p[\"cam\"]) }" rd/comfort.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h,20km/h --model point -o two.csv
+check "ride -o with two speeds: exit 1, no file" '[ $rc -eq 1 ] && no_file two.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 10mph
+check "ride --speed 10mph: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--speed" err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --dt 0.01
+check "ride --dt too coarse for ISO 2631-1: exit 1" '[ $rc -eq 1 ] && grep -q "80 Hz" err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model nn
+check "ride --model nn without --nn: exit 1" '[ $rc -eq 1 ] && grep -q -- "--nn" err'
+printf '[BODY]\nMASS = 4500\nMASS_X = 1\n' >bad.veh
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --vehicle bad.veh -o badveh.csv
+check "ride with a bad vehicle file: exit 2 naming file:line and key, no file" \
+    '[ $rc -eq 2 ] && grep -q "bad.veh:3" err && grep -q MASS_X err && no_file badveh.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --set MASS=-1 -o neg.csv
+check "ride --set MASS=-1: exit 2 naming MASS, no file" \
+    '[ $rc -eq 2 ] && grep -q MASS err && no_file neg.csv'
+run "$bin" ride --profile road.csv --speed 10km/h --model nn,cam --nn net.json --dx 0.01
+check "ride --model nn,cam over the generated road: a finite row for each" \
+    '[ $rc -eq 0 ] && [ $(grep -Ec "^(nn|cam) +10\.00 +[0-9]" out) -eq 2 ]'
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -17,6 +17,10 @@
 #include "tirenv/curve.h"
 #include "tirenv/rig.h"
 #include "tirenv/dataset.h"
+#include "tirenv/nn_road.h"
+#include "tirenv/vehicle.h"
+#include "tirenv/ride.h"
+#include "tirenv/comfort.h"
 
 #define TIRENV_VERSION "0.1.0"
 

@@ -37,6 +37,7 @@ int cli_compare_main(int argc, char *argv[]);
 int cli_fit_main(int argc, char *argv[]);
 int cli_study_main(int argc, char *argv[]);
 int cli_road_main(int argc, char *argv[]);
+int cli_ride_main(int argc, char *argv[]);
 
 /* getopt_long codes of the shared long options; above 255 so they never clash with a short
  * option character. */
@@ -152,5 +153,11 @@ int cli_fail(int status, const tirenv_diag *diag);
 
 /* The exit code for a library status. */
 int cli_exit_code(int status);
+
+/* CPU time of this process, s (what "on one core" means for a single-threaded run). */
+double cli_cpu_seconds(void);
+
+/* mkdir -p; prints and returns an exit code on failure. */
+int cli_mkdir(const char *dir);
 
 #endif

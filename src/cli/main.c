@@ -21,6 +21,7 @@ static const cli_command commands[] = {
     {"train", cli_train_main, "train the empirical model's network on a data set"},
     {"predict", cli_predict_main, "the trained network's enveloping curve over a cleat, as CSV"},
     {"compare", cli_compare_main, "every model against a data set: plots, error tables, report"},
+    {"ride", cli_ride_main, "tractor ride over a profile: point contact vs enveloping, ISO 2631"},
     {"bench", cli_bench_main, "time the models and equilibrium solvers on a fixed sweep"},
 };
 enum { N_COMMANDS = sizeof commands / sizeof commands[0] };

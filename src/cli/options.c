@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #ifndef TIRENV_DATA_DIR
 #error "TIRENV_DATA_DIR must name the data directory (CMake defines it)"
@@ -48,6 +49,21 @@ int cli_fail(int status, const tirenv_diag *diag)
     else
         cli_error("%s", tirenv_strerror(status));
     return cli_exit_code(status);
+}
+
+double cli_cpu_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int cli_mkdir(const char *dir)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_mkdir_p(dir, &diag);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
 
 int cli_parse_double(const char *s, double *v)

@@ -1,0 +1,59 @@
+/* Private to tirenv ride: its options, and the runs they ask for.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_CLI_RIDE_H
+#define TIRENV_CLI_RIDE_H
+
+#include "cli/cli.h"
+#include "tirenv/comfort.h"
+#include "tirenv/ride.h"
+
+enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = 16 };
+
+typedef struct {
+    const char *vehicle_path;        /* --vehicle, or NULL for the default file */
+    const char *sets[CLI_MAX_SETS];  /* --set KEY=VALUE on the vehicle */
+    size_t n_sets;
+    const char *nn_path;             /* --nn */
+    const char *out_path;            /* -o: the one run's series */
+    const char *out_dir;             /* --out-dir */
+    char model_buf[256], speed_buf[256];
+    const char *models[RIDE_MAX_MODELS];
+    size_t n_models;
+    double speeds[RIDE_MAX_SPEEDS];  /* m/s */
+    size_t n_speeds;
+    int have_from, have_to;
+    double x_from, x_to;             /* front-axle positions, m */
+    double dx;                       /* input grid, m */
+    double dt;                       /* output interval, s */
+    tirenv_ride_method method;
+} ride_options;
+
+/* One run's figures. */
+typedef struct {
+    const char *model;
+    double speed;                  /* m/s */
+    double duration;               /* simulated time, s */
+    double seconds;                /* CPU time of the model's inputs and the integration, s */
+    tirenv_comfort_metrics seat;   /* Wk-weighted vertical acceleration at the seat, m/s^2 */
+    tirenv_comfort_metrics pitch;  /* We-weighted pitch acceleration, rad/s^2 */
+    double a_v;                    /* vibration total value of the two, m/s^2 */
+    double peak_az;                /* largest unweighted seat acceleration, m/s^2 */
+    double lift_off;               /* time with a tire off the ground, s */
+} ride_result;
+
+/* One run's samples and the weighted seat acceleration, kept for the plots. */
+typedef struct {
+    tirenv_ride_sample *samples;
+    double *a_w;                   /* Wk-weighted seat_az, m/s^2 */
+    size_t n;
+} ride_series;
+
+/* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes
+ * what the options ask for; returns an exit code after printing any error. */
+int ride_cli_run(const cli_options *o, const ride_options *r);
+
+/* Writes comfort.csv, comfort.md and the seat and spectrum plots into r->out_dir, for the
+ * runs res[j*n_models + i] (speed j, model i); returns an exit code after printing any error. */
+int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[]);
+
+#endif

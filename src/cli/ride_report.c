@@ -1,0 +1,279 @@
+/* tirenv ride --out-dir: the comfort table as CSV and Markdown, and two gnuplot figures, the
+ * seat acceleration over distance and its spectrum, one panel per speed, one line per model.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/ride_cli.h"
+#include "study/plot.h"
+
+/* At most this many points per line in the seat plot (a 1 km road at 1 kHz has 360,000); and
+ * the longest Welch segment, 4096 samples: 0.24 Hz bins at 1 kHz. */
+enum { SEAT_MAX_POINTS = 20000, WELCH_MAX_SEGMENT = 4096 };
+
+/* Line colours by model, point contact first: the same model keeps its colour across plots. */
+static const char *colour(const char *model)
+{
+    static const struct {
+        const char *model, *colour;
+    } table[] = {{"point", "#d62728"}, {"rigid", "#7f7f7f"}, {"springs", "#1f77b4"},
+                 {"ring", "#2ca02c"},  {"cam", "#ff7f0e"},   {"nn", "#9467bd"}};
+    for (size_t i = 0; i < sizeof table / sizeof table[0]; ++i)
+        if (strcmp(table[i].model, model) == 0)
+            return table[i].colour;
+    return "black";
+}
+
+static int finish(tirenv_outfile *f, tirenv_diag *diag)
+{
+    if (ferror(f->fp)) {
+        tirenv_outfile_abort(f);
+        return tirenv_error(diag, TIRENV_EIO, f->path, 0, "", "write failed");
+    }
+    return tirenv_outfile_commit(f, diag);
+}
+
+static int write_csv(const char *path, const ride_options *r, const ride_result res[],
+                     tirenv_diag *diag)
+{
+    tirenv_outfile f;
+    int status = tirenv_outfile_open(&f, path, diag);
+    if (status)
+        return status;
+    fputs("model,speed_m_s,speed_km_h,duration_s,a_wz_m_s2,crest,vdv_m_s1.75,mtvv_m_s2,"
+          "peak_awz_m_s2,a_w_pitch_rad_s2,vdv_pitch_rad_s1.75,a_v_m_s2,peak_az_m_s2,"
+          "lift_off_s,cpu_s,real_time_factor\n", f.fp);
+    for (size_t k = 0; k < r->n_models * r->n_speeds; ++k) {
+        const ride_result *q = &res[k];
+        fprintf(f.fp, "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
+                "%.6g,%.6g\n", q->model, q->speed, q->speed * 3.6, q->duration, q->seat.rms,
+                q->seat.crest, q->seat.vdv, q->seat.mtvv, q->seat.peak, q->pitch.rms,
+                q->pitch.vdv, q->a_v, q->peak_az, q->lift_off, q->seconds,
+                q->duration / fmax(q->seconds, 1e-9));
+    }
+    return finish(&f, diag);
+}
+
+static int write_md(const char *path, const ride_options *r, const ride_result res[],
+                    tirenv_diag *diag)
+{
+    tirenv_outfile f;
+    int status = tirenv_outfile_open(&f, path, diag);
+    if (status)
+        return status;
+    fputs("# Ride comfort at the seat (tirenv ride)\n\n"
+          "ISO 2631-1:1997 figures of the seat's vertical acceleration (weighting Wk) and the\n"
+          "body's pitch acceleration (We); a_v combines the two with k = 1 and 0.4 m/rad.\n"
+          "Crest factors above 9 mean the r.m.s. underestimates the shocks: read VDV and MTVV.\n"
+          "CPU time covers the model's effective profiles for both axles and the integration.\n"
+          "\n"
+          "| model | km/h | a_wz m/s² | crest | VDV m/s^1.75 | MTVV m/s² | a_w pitch rad/s² | "
+          "a_v m/s² | peak a_z m/s² | lift-off s | CPU s | × real time |\n"
+          "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", f.fp);
+    for (size_t k = 0; k < r->n_models * r->n_speeds; ++k) {
+        const ride_result *q = &res[k];
+        fprintf(f.fp, "| %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | %.3f | "
+                "%.3f | %.0f |\n", q->model, q->speed * 3.6, q->seat.rms, q->seat.crest,
+                q->seat.vdv, q->seat.mtvv, q->pitch.rms, q->a_v, q->peak_az, q->lift_off,
+                q->seconds, q->duration / fmax(q->seconds, 1e-9));
+    }
+    return finish(&f, diag);
+}
+
+/* The gnuplot preamble both figures share: the image names tirenv sets on the command line,
+ * and a loop drawing the same multiplot first as PNG, then as SVG. */
+static void script_head(FILE *fp, const char *base, const char *what, const ride_options *r)
+{
+    fprintf(fp,
+            "# tirenv ride: %s.\n"
+            "# Data: %s.dat in this directory, one block per speed (gnuplot's 'index'), one\n"
+            "# column per model. Draw by hand from this directory with:  gnuplot %s.gp\n"
+            "# tirenv sets png_out and svg_out itself, to temporary names it renames when\n"
+            "# gnuplot has finished.\n"
+            "if (!exists(\"png_out\")) png_out = '%s.png'\n"
+            "if (!exists(\"svg_out\")) svg_out = '%s.svg'\n"
+            "\n"
+            "models = \"",
+            what, base, base, base, base);
+    for (size_t i = 0; i < r->n_models; ++i)
+        fprintf(fp, "%s%s", i ? " " : "", r->models[i]);
+    fputs("\"\nspeeds = \"", fp);
+    for (size_t j = 0; j < r->n_speeds; ++j)
+        fprintf(fp, "%s%g", j ? " " : "", r->speeds[j] * 3.6);
+    fputs("\"   # km/h\n", fp);
+    for (size_t i = 0; i < r->n_models; ++i)
+        fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f   # %s\n", i + 1,
+                colour(r->models[i]), strcmp(r->models[i], "point") == 0 ? 1.0 : 1.8,
+                r->models[i]);
+    fprintf(fp, "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key top right box opaque\n"
+            "\n"
+            "do for [pass = 1:2] {\n"
+            "    if (pass == 1) {\n"
+            "        set terminal pngcairo size 1000,%zu font 'Sans,10' noenhanced\n"
+            "        set output png_out\n"
+            "    } else {\n"
+            "        set terminal svg size 1000,%zu font 'Sans,10' noenhanced background "
+            "rgb 'white'\n"
+            "        set output svg_out\n"
+            "    }\n",
+            260 * r->n_speeds + 60, 260 * r->n_speeds + 60);
+}
+
+static void script_tail(FILE *fp)
+{
+    fputs("    unset multiplot\n}\nunset output\n", fp);
+}
+
+/* seat: the unweighted seat acceleration over the front axle's position. */
+static int seat_plot(const char *dir, const ride_options *r, const ride_series series[],
+                     tirenv_diag *diag)
+{
+    char path[1024];
+    tirenv_outfile f;
+    snprintf(path, sizeof path, "%s/seat.dat", dir);
+    int status = tirenv_outfile_open(&f, path, diag);
+    if (status)
+        return status;
+    for (size_t j = 0; j < r->n_speeds; ++j) {
+        /* The runs at one speed share their length, so one x column serves every model. */
+        const ride_series *row = &series[j * r->n_models];
+        const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
+        fprintf(f.fp, "%s# %g km/h: x_front_m", j ? "\n\n" : "", r->speeds[j] * 3.6);
+        for (size_t i = 0; i < r->n_models; ++i)
+            fprintf(f.fp, " seat_az_%s_m_s2", r->models[i]);
+        fputc('\n', f.fp);
+        for (size_t k = 0; k < n; k += every) {
+            fprintf(f.fp, "%.6g", row[0].samples[k].x_front);
+            for (size_t i = 0; i < r->n_models; ++i)
+                fprintf(f.fp, " %.6g", row[i].samples[k].seat_az);
+            fputc('\n', f.fp);
+        }
+    }
+    if ((status = finish(&f, diag)))
+        return status;
+    snprintf(path, sizeof path, "%s/seat.gp", dir);
+    if ((status = tirenv_outfile_open(&f, path, diag)))
+        return status;
+    script_head(f.fp, "seat", "vertical acceleration at the seat over the front axle's "
+                "position, point contact against enveloping", r);
+    fprintf(f.fp,
+            "    set multiplot layout %zu,1 title \"Seat vertical acceleration (unweighted)\"\n"
+            "    set xlabel \"front axle position (m)\"\n"
+            "    set ylabel \"seat a_z (m/s²)\"\n"
+            "    do for [j = 1:words(speeds)] {\n"
+            "        set title word(speeds, j).\" km/h\"\n"
+            "        plot for [i = 1:words(models)] 'seat.dat' index (j - 1) using 1:(column(i + 1)) "
+            "with lines ls i title word(models, i)\n"
+            "    }\n",
+            r->n_speeds);
+    script_tail(f.fp);
+    if ((status = finish(&f, diag)))
+        return status;
+    const tirenv_plot__settings ps = {.dir = dir};
+    return tirenv_plot__draw(&ps, "seat", diag);
+}
+
+/* The longest power-of-two segment up to WELCH_MAX_SEGMENT giving at least 3 half-overlapping
+ * segments, so the estimate averages something. */
+static size_t welch_segment(size_t n)
+{
+    size_t seg = 16;
+    while (seg * 2 <= WELCH_MAX_SEGMENT && seg * 2 * 2 <= n)
+        seg *= 2;
+    return seg;
+}
+
+/* spectrum: Welch's PSD of the unweighted seat acceleration. */
+static int spectrum_plot(const char *dir, const ride_options *r, const ride_series series[],
+                         tirenv_diag *diag)
+{
+    char path[1024];
+    tirenv_outfile f;
+    snprintf(path, sizeof path, "%s/spectrum.dat", dir);
+    int status = tirenv_outfile_open(&f, path, diag);
+    if (status)
+        return status;
+    const double fs = 1 / r->dt;
+    for (size_t j = 0; j < r->n_speeds && !status; ++j) {
+        const ride_series *row = &series[j * r->n_models];
+        const size_t seg = welch_segment(row[0].n);
+        tirenv_welch *w = NULL;
+        double *psd = NULL, *a = malloc(row[0].n * sizeof *a);
+        status = a ? tirenv_welch_alloc(seg, &w, diag)
+                   : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        const size_t bins = w ? tirenv_welch_bins(w) : 0;
+        if (!status && !(psd = malloc(r->n_models * bins * sizeof *psd)))
+            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        for (size_t i = 0; i < r->n_models && !status; ++i) {
+            for (size_t k = 0; k < row[i].n; ++k)
+                a[k] = row[i].samples[k].seat_az;
+            status = tirenv_welch_psd(w, a, row[i].n, fs, psd + i * bins, NULL, diag);
+        }
+        if (!status) {
+            fprintf(f.fp, "%s# %g km/h, Welch segments of %zu samples: f_Hz", j ? "\n\n" : "",
+                    r->speeds[j] * 3.6, seg);
+            for (size_t i = 0; i < r->n_models; ++i)
+                fprintf(f.fp, " psd_%s_m2_s4_Hz", r->models[i]);
+            fputc('\n', f.fp);
+            for (size_t k = 1; k < bins; ++k) {  /* bin 0 (the mean) has no place on log axes */
+                fprintf(f.fp, "%.6g", (double)k * fs / (double)seg);
+                for (size_t i = 0; i < r->n_models; ++i)
+                    fprintf(f.fp, " %.6g", psd[i * bins + k]);
+                fputc('\n', f.fp);
+            }
+        }
+        tirenv_welch_free(w);
+        free(psd);
+        free(a);
+    }
+    if (status) {
+        tirenv_outfile_abort(&f);
+        return status;
+    }
+    if ((status = finish(&f, diag)))
+        return status;
+    snprintf(path, sizeof path, "%s/spectrum.gp", dir);
+    if ((status = tirenv_outfile_open(&f, path, diag)))
+        return status;
+    script_head(f.fp, "spectrum", "power spectral density of the vertical acceleration at the "
+                "seat (Welch, Hann, 50 % overlap), point contact against enveloping", r);
+    fprintf(f.fp,
+            "    set multiplot layout %zu,1 title \"Seat vertical acceleration spectrum\"\n"
+            "    set logscale xy\n"
+            "    set format y '10^{%%L}'\n"
+            "    set xrange [0.5:100]   # ISO 2631-1's band for comfort (Wk)\n"
+            "    set xlabel \"frequency (Hz)\"\n"
+            "    set ylabel \"PSD of seat a_z ((m/s²)²/Hz)\"\n"
+            "    do for [j = 1:words(speeds)] {\n"
+            "        set title word(speeds, j).\" km/h\"\n"
+            "        plot for [i = 1:words(models)] 'spectrum.dat' index (j - 1) using 1:(column(i + 1)) "
+            "with lines ls i title word(models, i)\n"
+            "    }\n",
+            r->n_speeds);
+    script_tail(f.fp);
+    if ((status = finish(&f, diag)))
+        return status;
+    const tirenv_plot__settings ps = {.dir = dir};
+    return tirenv_plot__draw(&ps, "spectrum", diag);
+}
+
+int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[])
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/comfort.csv", r->out_dir);
+    int status = write_csv(path, r, res, &diag);
+    if (!status) {
+        snprintf(path, sizeof path, "%s/comfort.md", r->out_dir);
+        status = write_md(path, r, res, &diag);
+    }
+    if (!status)
+        status = seat_plot(r->out_dir, r, series, &diag);
+    if (!status)
+        status = spectrum_plot(r->out_dir, r, series, &diag);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}

@@ -1,0 +1,347 @@
+/* tirenv ride, the work: the vehicle and its tires, each model's inputs for both axles, one
+ * run per model and speed, the comfort table and the files. SPDX-License-Identifier:
+ * GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/ride_cli.h"
+#include "tirenv/comfort.h"
+#include "tirenv/nn_road.h"
+#include "tirenv/train.h"
+
+#ifndef TIRENV_DATA_DIR
+#error "TIRENV_DATA_DIR must name the data directory (CMake defines it)"
+#endif
+
+/* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
+ * its end inside a run; and the default run-in before the obstacle and settling after it. */
+static const double grid_margin = 1.0;   /* m */
+static const double run_in = 1.0;        /* m */
+static const double settle_min = 3.0;    /* m */
+static const double settle_time = 2.0;   /* s */
+
+/* What one model makes of the obstacle for both axles, and what it cost. */
+typedef struct {
+    const char *name;
+    double *w[2];          /* front, rear inputs on the grid, m */
+    double seconds;        /* CPU time of the effective profiles, s */
+} ride_inputs;
+
+typedef struct {
+    tirenv_vehicle v;
+    tirenv_tire tire[2];   /* front, rear */
+    double load[2];        /* static load of one tire, N */
+    const tirenv_profile *p;
+    double x0, dx;         /* the grid */
+    size_t n;
+} ride_setup;
+
+static int load_vehicle(const ride_options *r, ride_setup *s)
+{
+    char buf[1024];
+    const char *dir = getenv("TIRENV_DATA");
+    const char *path = r->vehicle_path;
+    if (!path) {
+        snprintf(buf, sizeof buf, "%s/vehicles/tractor.veh", dir && dir[0] ? dir : TIRENV_DATA_DIR);
+        path = buf;
+    }
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    s->v = tirenv_vehicle_default();
+    int status = tirenv_vehicle_read(path, &s->v, &diag);
+    for (size_t i = 0; !status && i < r->n_sets; ++i)
+        status = tirenv_vehicle_set(&s->v, r->sets[i], &diag);
+    if (!status)
+        status = tirenv_vehicle_check(&s->v, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    for (int axle = 0; axle < 2; ++axle) {
+        const tirenv_axle *ax = axle ? &s->v.rear : &s->v.front;
+        cli_options none;
+        cli_options_init(&none);
+        const char *tire_path = ax->tire_file[0] ? ax->tire_file
+                                                 : cli_tire_path(&none, buf, sizeof buf);
+        s->tire[axle] = tirenv_tire_default();
+        if ((status = tirenv_tir_read(tire_path, &s->tire[axle], &diag)))
+            return cli_fail(status, &diag);
+        s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
+    }
+    return CLI_EXIT_OK;
+}
+
+/* The network's inputs for both axles (nn_road.h): the contact length of each axle's tire at
+ * its load is the springs model's, as for 'tirenv predict --load'; x_N refers to the R0 the
+ * network's data had. Obstacles outside the trained range are counted in a warning. */
+static int nn_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in, int *axle,
+                     tirenv_diag *diag)
+{
+    tirenv_nn *nn = NULL;
+    tirenv_train_record rec;
+    double *x = malloc(s->n * sizeof *x);
+    int status = x ? tirenv_nn_read_json(r->nn_path, &nn, &rec, diag)
+                   : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    for (size_t k = 0; x && k < s->n; ++k)
+        x[k] = s->x0 + (double)k * s->dx;
+    for (*axle = 0; *axle < 2 && !status; ++*axle) {
+        tirenv_model *springs = tirenv_model_alloc(tirenv_model_springs, &s->tire[*axle]);
+        tirenv_flat flat;
+        status = springs ? tirenv_model_flat(springs, s->load[*axle], &flat, diag)
+                         : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        tirenv_model_free(springs);
+        tirenv_nn_road *road = NULL;
+        const double R0 = rec.R0 > 0 ? rec.R0 : s->tire[*axle].springs.R0;
+        if (!status)
+            status = tirenv_nn_road_alloc(nn, R0, flat.contact_length, s->p, NULL, &road, diag);
+        if (!status)
+            status = tirenv_nn_road_eval(road, s->n, x, in->w[*axle], NULL, diag);
+        if (!status) {
+            const tirenv_nn_road_info info = tirenv_nn_road_get_info(road);
+            const size_t out = info.height_below + info.height_above + info.length_below +
+                               info.length_above;
+            if (out)
+                fprintf(stderr, "tirenv: ride: warning: nn, %s axle (contact length %.3f m): "
+                        "%zu of %zu obstacles outside the network's training range (heights "
+                        "%zu below, %zu above; lengths %zu below, %zu above), see "
+                        "include/tirenv/nn_road.h\n", *axle ? "rear" : "front",
+                        flat.contact_length, out, info.obstacles, info.height_below,
+                        info.height_above, info.length_below, info.length_above);
+        }
+        tirenv_nn_road_free(road);
+    }
+    if (status)
+        --*axle;
+    tirenv_nn_free(nn);
+    free(x);
+    return status;
+}
+
+static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    for (int axle = 0; axle < 2; ++axle)
+        if (!(in->w[axle] = malloc(s->n * sizeof *in->w[axle])))
+            return cli_fail(TIRENV_ENOMEM, NULL);
+    const double t0 = cli_cpu_seconds();
+    int status = TIRENV_OK, axle = 0;
+    if (strcmp(in->name, "nn") == 0) {
+        status = nn_inputs(r, s, in, &axle, &diag);
+    } else {
+        const tirenv_model_type *type =
+            strcmp(in->name, "point") == 0 ? NULL : tirenv_model_type_find(in->name);
+        for (; axle < 2; ++axle) {
+            tirenv_model *m = type ? tirenv_model_alloc(type, &s->tire[axle]) : NULL;
+            if (type && !m)
+                return cli_fail(TIRENV_ENOMEM, NULL);
+            status = tirenv_ride_effective(m, s->p, s->load[axle], s->x0, s->dx, s->n,
+                                           in->w[axle], &diag);
+            tirenv_model_free(m);
+            if (status)
+                break;
+        }
+    }
+    in->seconds = cli_cpu_seconds() - t0;
+    if (status) {
+        char msg[1200];
+        cli_error("ride: %s model, %s axle (tire load %.6g N): %s", in->name,
+                  axle ? "rear" : "front", s->load[axle],
+                  tirenv_diag_format(&diag, msg, sizeof msg));
+        return cli_exit_code(status);
+    }
+    return CLI_EXIT_OK;
+}
+
+static int write_series(const char *path, const ride_series *rs, const ride_result *res,
+                        tirenv_diag *diag)
+{
+    tirenv_outfile out;
+    int status = tirenv_outfile_open(&out, path, diag);
+    if (status)
+        return status;
+    char comment[256];
+    snprintf(comment, sizeof comment, "tirenv ride: %s model at %.6g m/s (%.6g km/h), %zu "
+             "samples", res->model, res->speed, res->speed * 3.6, rs->n);
+    tirenv_outfile_comment(&out, comment);
+    fputs("t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,"
+          "seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N\n", out.fp);
+    for (size_t k = 0; k < rs->n; ++k) {
+        const tirenv_ride_sample *s = &rs->samples[k];
+        fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+                s->t, s->x_front, s->w_front, s->w_rear, s->z, s->theta, s->z_a, s->seat_az,
+                rs->a_w[k], s->seat_ax, s->atheta, s->F_front, s->F_rear);
+    }
+    if (ferror(out.fp)) {
+        tirenv_outfile_abort(&out);
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "write failed");
+    }
+    return tirenv_outfile_commit(&out, diag);
+}
+
+/* The comfort figures of one run; the weighted seat acceleration stays in rs->a_w. */
+static int measure(const ride_options *r, ride_series *rs, ride_result *res, tirenv_diag *diag)
+{
+    const double fs = 1 / r->dt;
+    double *a = malloc(rs->n * sizeof *a);
+    if (!a)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    res->peak_az = res->lift_off = 0;
+    for (size_t k = 0; k < rs->n; ++k) {
+        const tirenv_ride_sample *s = &rs->samples[k];
+        a[k] = s->seat_az;
+        res->peak_az = fmax(res->peak_az, fabs(s->seat_az));
+        res->lift_off += (s->F_front == 0 || s->F_rear == 0) ? r->dt : 0;
+    }
+    int status = tirenv_comfort_evaluate(TIRENV_WK, fs, a, rs->a_w, rs->n, &res->seat, diag);
+    for (size_t k = 0; k < rs->n; ++k)
+        a[k] = rs->samples[k].atheta;
+    if (!status)
+        status = tirenv_comfort_evaluate(TIRENV_WE, fs, a, a, rs->n, &res->pitch, diag);
+    /* ISO 2631-1 6.5: the seat's vertical and pitch axes, pitch with k = 0.4 m/rad. */
+    const double k[2] = {TIRENV_COMFORT_K_Z, TIRENV_COMFORT_K_RY};
+    const double a_w[2] = {res->seat.rms, res->pitch.rms};
+    if (!status)
+        status = tirenv_comfort_total_value(k, a_w, 2, &res->a_v, diag);
+    free(a);
+    return status;
+}
+
+/* Where the front axle stops at speed V: --x-to, or once the rear axle has passed the
+ * obstacle and the response has had time to settle. */
+static double run_end(const ride_options *r, const ride_setup *s, double V, double x_last)
+{
+    return r->have_to ? r->x_to : x_last + s->v.a + s->v.b + fmax(settle_min, settle_time * V);
+}
+
+static void print_table(FILE *fp, const ride_result res[], size_t n)
+{
+    fprintf(fp, "%-8s %7s %9s %6s %9s %9s %10s %9s %9s %8s %8s %9s\n", "model", "km/h",
+            "a_wz", "crest", "VDV", "MTVV", "a_w,pitch", "a_v", "peak_az", "liftoff",
+            "cpu_s", "x_real");
+    fprintf(fp, "%-8s %7s %9s %6s %9s %9s %10s %9s %9s %8s %8s %9s\n", "", "", "m/s^2", "",
+            "m/s^1.75", "m/s^2", "rad/s^2", "m/s^2", "m/s^2", "s", "s", "time");
+    for (size_t i = 0; i < n; ++i) {
+        const ride_result *q = &res[i];
+        fprintf(fp, "%-8s %7.2f %9.4f %6.2f %9.4f %9.4f %10.4f %9.4f %9.3f %8.3f %8.3f %9.0f\n",
+                q->model, q->speed * 3.6, q->seat.rms, q->seat.crest, q->seat.vdv,
+                q->seat.mtvv, q->pitch.rms, q->a_v, q->peak_az, q->lift_off, q->seconds,
+                q->duration / fmax(q->seconds, 1e-9));
+    }
+}
+
+int ride_cli_run(const cli_options *o, const ride_options *r)
+{
+    if (!(1 / r->dt >= TIRENV_COMFORT_FS_MIN)) {
+        cli_error("ride: --dt %g s is too coarse for ISO 2631-1's weightings, which reach "
+                  "80 Hz: at most %g s", r->dt, 1 / TIRENV_COMFORT_FS_MIN);
+        return CLI_EXIT_USAGE;
+    }
+    ride_setup s;
+    memset(&s, 0, sizeof s);
+    int code = load_vehicle(r, &s);
+    tirenv_profile *p = NULL;
+    if (code || (code = cli_profile(o, &p)))
+        return code;
+    s.p = p;
+    const size_t n_runs = r->n_models * r->n_speeds;
+    ride_inputs in[RIDE_MAX_MODELS] = {{0}};
+    ride_result *res = calloc(n_runs, sizeof *res);
+    ride_series *series = calloc(n_runs, sizeof *series);
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    if (!res || !series) {
+        code = cli_fail(TIRENV_ENOMEM, NULL);
+        goto done;
+    }
+    double x_first, x_last;
+    tirenv_profile_extent(p, &x_first, &x_last);
+    const double x_from = r->have_from ? r->x_from : x_first - run_in;
+    double x_to_max = x_from;
+    for (size_t j = 0; j < r->n_speeds; ++j) {
+        const double x_to = run_end(r, &s, r->speeds[j], x_last);
+        if (!(x_to > x_from)) {
+            cli_error("ride: the run must end after it starts: --x-from %g m, --x-to %g m",
+                      x_from, x_to);
+            code = CLI_EXIT_USAGE;
+            goto done;
+        }
+        x_to_max = fmax(x_to_max, x_to);
+    }
+    s.dx = r->dx;
+    s.x0 = x_from - (s.v.a + s.v.b) - grid_margin;
+    const double n_grid = ceil((x_to_max + grid_margin - s.x0) / s.dx) + 1;
+    if (n_grid > CLI_MAX_POSITIONS) {
+        cli_error("ride: %.0f input positions (from %g m to %g m every %g m); at most %.0f: "
+                  "check --dx", n_grid, s.x0, x_to_max + grid_margin, s.dx, CLI_MAX_POSITIONS);
+        code = CLI_EXIT_USAGE;
+        goto done;
+    }
+    s.n = (size_t)n_grid;
+    for (size_t i = 0; i < r->n_models; ++i) {
+        in[i].name = r->models[i];
+        if ((code = model_inputs(r, &s, &in[i])))
+            goto done;
+    }
+    if (r->out_dir && (code = cli_mkdir(r->out_dir)))
+        goto done;
+    for (size_t j = 0; j < r->n_speeds; ++j) {
+        for (size_t i = 0; i < r->n_models; ++i) {
+            ride_result *q = &res[j * r->n_models + i];
+            ride_series *rs = &series[j * r->n_models + i];
+            tirenv_ride_settings set = tirenv_ride_default();
+            set.speed = r->speeds[j];
+            set.x_front0 = x_from;
+            set.duration = (run_end(r, &s, set.speed, x_last) - x_from) / set.speed;
+            set.dt = r->dt;
+            set.method = r->method;
+            rs->n = tirenv_ride_n_samples(&set);
+            rs->samples = malloc(rs->n * sizeof *rs->samples);
+            rs->a_w = malloc(rs->n * sizeof *rs->a_w);
+            if (!rs->samples || !rs->a_w) {
+                code = cli_fail(TIRENV_ENOMEM, NULL);
+                goto done;
+            }
+            const tirenv_ride_track front = {s.x0, s.dx, s.n, in[i].w[0]};
+            const tirenv_ride_track rear = {s.x0, s.dx, s.n, in[i].w[1]};
+            const double t0 = cli_cpu_seconds();
+            int status = tirenv_ride_run(&s.v, &front, &rear, &set, rs->samples, &diag);
+            *q = (ride_result){.model = in[i].name, .speed = set.speed,
+                               .duration = set.duration,
+                               .seconds = in[i].seconds + cli_cpu_seconds() - t0};
+            if (!status)
+                status = measure(r, rs, q, &diag);
+            if (!status && r->out_path)
+                status = write_series(r->out_path, rs, q, &diag);
+            if (!status && r->out_dir) {
+                char path[1024];
+                snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->model,
+                         q->speed * 3.6);
+                status = write_series(path, rs, q, &diag);
+            }
+            if (status) {
+                char msg[1200];
+                cli_error("ride: %s model at %g m/s: %s", q->model, q->speed,
+                          tirenv_diag_format(&diag, msg, sizeof msg));
+                code = cli_exit_code(status);
+                goto done;
+            }
+        }
+    }
+    print_table(stdout, res, n_runs);
+    if (r->out_dir)
+        code = ride_cli_report(r, res, series);
+done:
+    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i) {
+        free(in[i].w[0]);
+        free(in[i].w[1]);
+    }
+    for (size_t k = 0; series && k < n_runs; ++k) {
+        free(series[k].samples);
+        free(series[k].a_w);
+    }
+    free(series);
+    free(res);
+    tirenv_profile_free(p);
+    return code;
+}
