@@ -156,6 +156,8 @@ int cli_exit_code(int status);
 
 /* CPU time of this process, s (what "on one core" means for a single-threaded run). */
 double cli_cpu_seconds(void);
+/* Wall time since an arbitrary start (CLOCK_MONOTONIC), s. */
+double cli_wall_seconds(void);
 
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);

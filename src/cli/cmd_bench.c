@@ -9,7 +9,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "cli/bench.h"
 #include "tirenv/road.h"
 #include "tirenv/train.h"
 
@@ -53,6 +53,8 @@ static void usage(FILE *fp)
           "road at 10 mm (seed 1), 100,001 positions, against the targets of issue 6; and nn,\n"
           "the network trained on the embedded data set (lm, seed 1) over the same road by\n"
           "equivalent-cleat decomposition, h and slope, the decomposition's build timed apart.\n"
+          "Last the ride: the default tractor over that road at 10 km/h with point contact,\n"
+          "cam, nn and springs, against real time (best of at most 3 runs).\n"
           "\n"
           "options:\n"
           "  --repeat N           runs per method, best kept (default 5)\n",
@@ -61,12 +63,6 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* Records that a method found no equilibrium even on flat ground (model_set solves it), so
  * that the other methods are still timed. Data errors stop the bench. */
@@ -94,15 +90,15 @@ static int run_once(tirenv_model *m, const tirenv_profile *prof, const double x[
     int status = tirenv_model_set(m, prof, r->load, &diag);  /* resets the warm start */
     if (status)
         return setup_failed(status, &diag, r);
-    double t0 = now();
+    double t0 = cli_wall_seconds();
     status = tirenv_model_envelope(m, SWEEP_N, x, pt, NULL, &diag);
-    double t1 = now();
+    double t1 = cli_wall_seconds();
     memset(ok, 1, SWEEP_N);
     r->failed = 0;
     if (status) {
         if ((status = tirenv_model_set(m, prof, r->load, &diag)))
             return setup_failed(status, &diag, r);
-        t0 = now();
+        t0 = cli_wall_seconds();
         for (size_t k = 0; k < SWEEP_N; ++k) {
             tirenv_diag d;
             tirenv_diag_clear(&d);
@@ -112,7 +108,7 @@ static int run_once(tirenv_model *m, const tirenv_profile *prof, const double x[
                 tirenv_diag_format(&d, r->first_fail, sizeof r->first_fail);
             }
         }
-        t1 = now();
+        t1 = cli_wall_seconds();
     }
     *seconds = t1 - t0;
     return CLI_EXIT_OK;
@@ -249,14 +245,14 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     double best_file = INFINITY, best_mem = INFINITY;
     for (long k = 0; k < repeat && !status; ++k) {
         tirenv_curve curve = {0};
-        double t0 = now();
+        double t0 = cli_wall_seconds();
         status = tirenv_rig_import(path, &imp, &curve, &diag);
-        best_file = fmin(best_file, now() - t0);
+        best_file = fmin(best_file, cli_wall_seconds() - t0);
         tirenv_curve_free(&curve);
-        t0 = now();
+        t0 = cli_wall_seconds();
         if (!status)
             status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &curve, &diag);
-        best_mem = fmin(best_mem, now() - t0);
+        best_mem = fmin(best_mem, cli_wall_seconds() - t0);
         tirenv_curve_free(&curve);
     }
     if (fd >= 0)
@@ -296,9 +292,9 @@ static int road_time(const tirenv_tire *tire, const char *model, const tirenv_pr
     for (long rep = 0; rep < repeat && !status; ++rep) {
         if ((status = tirenv_model_set(m, road, load, diag)))
             break;
-        const double t0 = now();
+        const double t0 = cli_wall_seconds();
         status = tirenv_model_envelope(m, n, x, pt, NULL, diag);
-        *seconds = fmin(*seconds, now() - t0);
+        *seconds = fmin(*seconds, cli_wall_seconds() - t0);
     }
     tirenv_model_free(m);
     return status;
@@ -321,12 +317,12 @@ static tirenv_nn *road_network(const tirenv_tire *tire, double *seconds, tirenv_
         status = tirenv_samples_from_dataset(&ds, (tirenv_split)sp, &s[sp], &x[sp], &y[sp],
                                              diag);
     tirenv_nn *nn = NULL;
-    const double t0 = now();
+    const double t0 = cli_wall_seconds();
     if (!status) {
         const tirenv_train_settings set = tirenv_train_default(tirenv_trainer_lm);
         tirenv_train(tirenv_trainer_lm, &set, &s[0], &s[1], &s[2], &nn, NULL, diag);
     }
-    *seconds = now() - t0;
+    *seconds = cli_wall_seconds() - t0;
     for (int sp = 0; sp < 3; ++sp) {
         free(x[sp]);
         free(y[sp]);
@@ -339,16 +335,13 @@ static tirenv_nn *road_network(const tirenv_tire *tire, double *seconds, tirenv_
  * tirenv_model_set for the models) timed apart from the positions, h and slope as the CLI
  * writes them. A data set that cannot be read skips the row rather than the bench. */
 static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, size_t n,
-                         const double x[], long repeat, tirenv_diag *diag)
+                         const double x[], long repeat, const tirenv_nn *nn, double t_train,
+                         const tirenv_diag *why, tirenv_diag *diag)
 {
-    double t_train;
-    tirenv_diag why;
-    tirenv_diag_clear(&why);
-    tirenv_nn *nn = road_network(tire, &t_train, &why);
     if (!nn) {
         char msg[1200];
         printf("  %-10s %13s %12.0f %8s\nnn: skipped, no network: %s\n", "nn", "-", 1e7,
-               "n/a", tirenv_diag_format(&why, msg, sizeof msg));
+               "n/a", tirenv_diag_format(why, msg, sizeof msg));
         return TIRENV_OK;
     }
     double *h = malloc(n * sizeof *h), *slope = malloc(n * sizeof *slope);
@@ -357,21 +350,21 @@ static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, si
     tirenv_nn_road_info info = {0};
     for (long rep = 0; rep < repeat && !status; ++rep) {
         tirenv_nn_road *r = NULL;
-        double t0 = now();
+        double t0 = cli_wall_seconds();
         if ((status = tirenv_nn_road_alloc(nn, tire->springs.R0, road_l_c, road, NULL, &r,
                                            diag)))
             break;
-        const double t = now() - t0;
+        const double t = cli_wall_seconds() - t0;
         t_first = rep == 0 ? t : t_first;
         t_build = fmin(t_build, t);
         info = tirenv_nn_road_get_info(r);
-        t0 = now();
+        t0 = cli_wall_seconds();
         status = tirenv_nn_road_eval(r, n, x, h, slope, diag);
-        t_eval = fmin(t_eval, now() - t0);
-        t0 = now();
+        t_eval = fmin(t_eval, cli_wall_seconds() - t0);
+        t0 = cli_wall_seconds();
         if (!status)
             status = tirenv_nn_road_eval(r, n, x, h, NULL, diag);
-        t_h = fmin(t_h, now() - t0);
+        t_h = fmin(t_h, cli_wall_seconds() - t0);
         tirenv_nn_road_free(r);
     }
     if (!status) {
@@ -385,7 +378,6 @@ static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, si
     }
     free(h);
     free(slope);
-    tirenv_nn_free(nn);
     return status;
 }
 
@@ -420,8 +412,15 @@ static int bench_road(const tirenv_tire *tire, long repeat)
             printf("  %-10s %13.0f %12.0f %8s\n", road_cases[i].model, (double)n / t,
                    road_cases[i].target, (double)n / t >= road_cases[i].target ? "met" : "missed");
     }
+    double t_train = 0;
+    tirenv_diag why;
+    tirenv_diag_clear(&why);
+    tirenv_nn *nn = status ? NULL : road_network(tire, &t_train, &why);
     if (!status)
-        status = bench_road_nn(tire, road, n, x, repeat, &diag);
+        status = bench_road_nn(tire, road, n, x, repeat, nn, t_train, &why, &diag);
+    if (!status)
+        status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
+    tirenv_nn_free(nn);
     free(pt);
     free(x);
     tirenv_profile_free(road);

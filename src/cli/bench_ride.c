@@ -1,0 +1,99 @@
+/* tirenv bench, the ride: the default tractor over the bench's 1 km road at 10 km/h, each
+ * model's inputs for both axles and the integration timed together, against real time (the
+ * target of issue 7: 100 times faster with nn or cam, on one core).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli/bench.h"
+#include "tirenv/nn_road.h"
+#include "tirenv/ride.h"
+
+static const double ride_speed = 10 / 3.6;   /* m/s */
+static const double ride_target = 100;       /* times faster than real time */
+
+
+/* Both axles' inputs on the grid x[] for one model ("point", a model type, or "nn"). */
+static int inputs(const char *model, const tirenv_tire *tire, const tirenv_vehicle *v,
+                  const tirenv_profile *road, const tirenv_nn *nn, size_t n, const double x[],
+                  double *w[2], tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    for (int axle = 0; axle < 2 && !status; ++axle) {
+        const double load = tirenv_vehicle_tire_load(v, axle);
+        if (strcmp(model, "nn") == 0) {
+            /* The network's regime: the springs model's contact length at this load. */
+            tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, tire);
+            tirenv_flat flat;
+            tirenv_nn_road *r = NULL;
+            status = m ? tirenv_model_flat(m, load, &flat, diag) : TIRENV_ENOMEM;
+            tirenv_model_free(m);
+            if (!status)
+                status = tirenv_nn_road_alloc(nn, tire->springs.R0, flat.contact_length, road,
+                                              NULL, &r, diag);
+            if (!status)
+                status = tirenv_nn_road_eval(r, n, x, w[axle], NULL, diag);
+            tirenv_nn_road_free(r);
+        } else {
+            const tirenv_model_type *type =
+                strcmp(model, "point") == 0 ? NULL : tirenv_model_type_find(model);
+            tirenv_model *m = type ? tirenv_model_alloc(type, tire) : NULL;
+            status = type && !m ? TIRENV_ENOMEM
+                                : tirenv_ride_effective(m, road, load, x[0], x[1] - x[0], n,
+                                                        w[axle], diag);
+            tirenv_model_free(m);
+        }
+    }
+    return status;
+}
+
+int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const tirenv_nn *nn,
+                   size_t n, const double x[], long repeat, tirenv_diag *diag)
+{
+    static const char *const models[] = {"point", "cam", "nn", "springs"};
+    const tirenv_vehicle v = tirenv_vehicle_default();
+    tirenv_ride_settings s = tirenv_ride_default();
+    const double l = v.a + v.b, margin = 1.0;  /* m: the interpolation never runs out */
+    s.speed = ride_speed;
+    s.x_front0 = x[0] + l + margin;
+    s.duration = (x[n - 1] - margin - s.x_front0) / s.speed;
+    const size_t n_out = tirenv_ride_n_samples(&s);
+    double *w[2] = {malloc(n * sizeof(double)), malloc(n * sizeof(double))};
+    tirenv_ride_sample *out = malloc(n_out * sizeof *out);
+    int status = w[0] && w[1] && out ? TIRENV_OK : TIRENV_ENOMEM;
+    printf("\nride: the default tractor (data/vehicles/tractor.veh, this tire on both axles) "
+           "over the road at\n%.0f km/h, %.1f s simulated at %g ms (RK4); inputs of both axles "
+           "+ integration, best of %ld\n", s.speed * 3.6, s.duration, 1e3 * s.dt, repeat);
+    printf("  %-10s %10s %10s %10s %10s %8s\n", "model", "inputs_s", "ode_s", "x_real",
+           "target", "");
+    for (size_t i = 0; i < sizeof models / sizeof models[0] && !status; ++i) {
+        if (strcmp(models[i], "nn") == 0 && !nn)
+            continue;  /* bench_road said why */
+        double t_in = INFINITY, t_ode = INFINITY;
+        for (long rep = 0; rep < repeat && !status; ++rep) {
+            double t0 = cli_wall_seconds();
+            status = inputs(models[i], tire, &v, road, nn, n, x, w, diag);
+            t_in = fmin(t_in, cli_wall_seconds() - t0);
+            const tirenv_ride_track front = {x[0], x[1] - x[0], n, w[0]};
+            const tirenv_ride_track rear = {x[0], x[1] - x[0], n, w[1]};
+            t0 = cli_wall_seconds();
+            if (!status)
+                status = tirenv_ride_run(&v, &front, &rear, &s, out, diag);
+            t_ode = fmin(t_ode, cli_wall_seconds() - t0);
+        }
+        if (!status) {
+            const double factor = s.duration / (t_in + t_ode);
+            const int targeted = strcmp(models[i], "cam") == 0 || strcmp(models[i], "nn") == 0;
+            printf("  %-10s %10.3f %10.3f %10.0f %10s %8s\n", models[i], t_in, t_ode, factor,
+                   targeted ? "100" : "-", !targeted ? "" : factor >= ride_target ? "met"
+                                                                                  : "missed");
+        }
+    }
+    free(w[0]);
+    free(w[1]);
+    free(out);
+    return status;
+}
