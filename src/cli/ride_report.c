@@ -129,7 +129,7 @@ static void script_tail(FILE *fp)
 
 /* seat: the unweighted seat acceleration over the front axle's position. */
 static int seat_plot(const char *dir, const ride_options *r, const ride_series series[],
-                     tirenv_diag *diag)
+                     double wheelbase, tirenv_diag *diag)
 {
     char path[1024];
     tirenv_outfile f;
@@ -161,14 +161,14 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
                 "position, point contact against enveloping", r);
     fprintf(f.fp,
             "    set multiplot layout %zu,1 title \"Seat vertical acceleration (unweighted)\"\n"
-            "    set xlabel \"front axle position (m)\"\n"
+            "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
             "    set ylabel \"seat a_z (m/s²)\"\n"
             "    do for [j = 1:words(speeds)] {\n"
             "        set title word(speeds, j).\" km/h\"\n"
             "        plot for [i = 1:words(models)] 'seat.dat' index (j - 1) using 1:(column(i + 1)) "
             "with lines ls i title word(models, i)\n"
             "    }\n",
-            r->n_speeds);
+            r->n_speeds, wheelbase);
     script_tail(f.fp);
     if ((status = finish(&f, diag)))
         return status;
@@ -243,7 +243,7 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
     fprintf(f.fp,
             "    set multiplot layout %zu,1 title \"Seat vertical acceleration spectrum\"\n"
             "    set logscale xy\n"
-            "    set format y '10^{%%L}'\n"
+            "    set format y '%%.0e'\n"
             "    set xrange [0.5:100]   # ISO 2631-1's band for comfort (Wk)\n"
             "    set xlabel \"frequency (Hz)\"\n"
             "    set ylabel \"PSD of seat a_z ((m/s²)²/Hz)\"\n"
@@ -260,7 +260,8 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
     return tirenv_plot__draw(&ps, "spectrum", diag);
 }
 
-int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[])
+int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],
+                    double wheelbase)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
@@ -272,7 +273,7 @@ int ride_cli_report(const ride_options *r, const ride_result res[], const ride_s
         status = write_md(path, r, res, &diag);
     }
     if (!status)
-        status = seat_plot(r->out_dir, r, series, &diag);
+        status = seat_plot(r->out_dir, r, series, wheelbase, &diag);
     if (!status)
         status = spectrum_plot(r->out_dir, r, series, &diag);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;

@@ -98,15 +98,13 @@ static int nn_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in
             status = tirenv_nn_road_eval(road, s->n, x, in->w[*axle], NULL, diag);
         if (!status) {
             const tirenv_nn_road_info info = tirenv_nn_road_get_info(road);
-            const size_t out = info.height_below + info.height_above + info.length_below +
-                               info.length_above;
-            if (out)
-                fprintf(stderr, "tirenv: ride: warning: nn, %s axle (contact length %.3f m): "
-                        "%zu of %zu obstacles outside the network's training range (heights "
-                        "%zu below, %zu above; lengths %zu below, %zu above), see "
-                        "include/tirenv/nn_road.h\n", *axle ? "rear" : "front",
-                        flat.contact_length, out, info.obstacles, info.height_below,
-                        info.height_above, info.length_below, info.length_above);
+            if (info.height_below + info.height_above + info.length_below + info.length_above)
+                fprintf(stderr, "tirenv: ride: warning: nn, %s axle (contact length %.3f m), "
+                        "of %zu obstacles: %zu lower than trained (scaled), %zu higher, %zu "
+                        "shorter and %zu longer (clamped); see include/tirenv/nn_road.h\n",
+                        *axle ? "rear" : "front", flat.contact_length, info.obstacles,
+                        info.height_below, info.height_above, info.length_below,
+                        info.length_above);
         }
         tirenv_nn_road_free(road);
     }
@@ -330,7 +328,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     }
     print_table(stdout, res, n_runs);
     if (r->out_dir)
-        code = ride_cli_report(r, res, series);
+        code = ride_cli_report(r, res, series, s.v.a + s.v.b);
 done:
     for (size_t i = 0; i < RIDE_MAX_MODELS; ++i) {
         free(in[i].w[0]);
