@@ -165,6 +165,55 @@ static void test_symmetry_and_far_field(void **state)
     }
 }
 
+/* Level ground within reach skips the solver (issue 6): no force evaluation, z exactly
+ * z_flat + level, and the same point the solver finds, to its tolerance: a bump of 1e-12 m
+ * placed within reach but beyond every element's tip (at x + R0) makes the ground not level,
+ * so the full equilibrium runs there; the two heights agree within eps_z = 1e-10 m plus the
+ * force tolerance over the stiffness (1e-6 N / 8e5 N/m). A lugged ring, not the same at every
+ * x, never skips. */
+static void test_level_ground_skip(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    const double level = 0.0371, R0 = t.springs.R0, x = 3.3;
+    const double xs[] = {-5, 5}, zs[] = {level, level};
+    const double xb[] = {-5, x + R0, x + R0, 5}, zb[] = {level, level, level + 1e-12, level};
+    tirenv_profile *flat = tirenv_profile_alloc(2, xs, zs);
+    tirenv_profile *bump = tirenv_profile_alloc(4, xb, zb);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+    assert_non_null(flat);
+    assert_non_null(bump);
+    assert_non_null(m);
+    tirenv_diag diag;
+    tirenv_flat f;
+    assert_int_equal(tirenv_model_flat(m, 1.2e4, &f, &diag), 0);
+    assert_int_equal(tirenv_model_set(m, flat, 1.2e4, &diag), 0);
+    tirenv_point skip, full;
+    assert_int_equal(tirenv_model_eval(m, x, &skip, &diag), 0);
+    assert_true(skip.iterations == 0 && skip.z == f.z_flat + level && skip.h == level);
+    assert_true(skip.contacts > 0 && skip.slope == 0);
+    assert_near(skip.fz, 1.2e4, 1e-6, 0);
+    assert_int_equal(tirenv_model_set(m, bump, 1.2e4, &diag), 0);
+    assert_int_equal(tirenv_model_eval(m, x, &full, &diag), 0);
+    assert_true(full.iterations > 0);
+    assert_near(full.z, skip.z, 1e-10 + 1e-6 / f.stiffness, 0);
+    assert_true(full.contacts == skip.contacts);
+    tirenv_model_free(m);
+
+    tirenv_tire lugged = tirenv_tire_default();
+    lugged.ring.lug_count = 24;
+    lugged.ring.lug_fraction = 0.4;
+    lugged.ring.lug_ratio = 0.5;
+    m = tirenv_model_alloc(tirenv_model_ring, &lugged);
+    assert_non_null(m);
+    assert_int_equal(tirenv_model_set(m, flat, 1.2e4, &diag), 0);
+    assert_int_equal(tirenv_model_eval(m, x, &full, &diag), 0);
+    assert_true(full.iterations > 0);
+    tirenv_model_free(m);
+    tirenv_profile_free(flat);
+    tirenv_profile_free(bump);
+}
+
 /* F_z never increases with z, and dF_z/dz equals a central difference away from kinks. */
 static void test_force_monotone_and_derivative(void **state)
 {
@@ -371,6 +420,7 @@ int main(void)
         cmocka_unit_test(test_refinement_converges),
         cmocka_unit_test(test_tips_reproduce_forces),
         cmocka_unit_test(test_overload_fails_loudly),
+        cmocka_unit_test(test_level_ground_skip),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include "core/equilibrium.h"
 #include "model/rigid_impl.h"
+#include "profile/profile_impl.h"
 
 typedef struct {
     const tirenv_deformable_ops *ops;
@@ -22,6 +23,10 @@ typedef struct {
     double eval_x, last_fx;
     size_t last_contacts;
     size_t rigid_hint;           /* profile segment of the last position, for the bracket */
+    /* The flat-ground equilibrium at the load set, for level stretches of ground. */
+    int shift_invariant;
+    double flat_F;
+    size_t flat_contacts;
 } deformable_state;
 
 static int force_at(void *ctx, double z, double *F, double *dF_dz)
@@ -40,6 +45,7 @@ void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_o
     st->ops = ops;
     st->tire = *tire;
     st->elem = ops->alloc(tire);
+    st->shift_invariant = !ops->shift_invariant || ops->shift_invariant(tire);
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
     if (!st->elem || !st->flat) {
         tirenv_deformable_free(st);
@@ -106,12 +112,17 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
                           tirenv_diag *diag)
 {
     deformable_state *st = state;
-    (void)diag;
     st->prof = p;
     st->G = load;
     st->z_flat = z_flat;
     st->have_prev = 0;
-    return TIRENV_OK;
+    st->eval_prof = st->flat;
+    st->eval_x = 0;
+    double dF;
+    const int status = force_at(st, z_flat, &st->flat_F, &dF);
+    st->flat_contacts = st->last_contacts;
+    return status ? tirenv_error(diag, status, "", 0, "", "the flat-ground forces failed")
+                  : TIRENV_OK;
 }
 
 /* The next window of the same ground: the equilibrium of the last position still holds, so the
@@ -126,6 +137,20 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
+    /* Level ground within reach (the default reach of model_impl.h): the flat-ground
+     * equilibrium shifted by the level, with no force evaluation. The solver would land
+     * within its tolerance of the same height; a road's run-in and run-out cost nothing. */
+    double level;
+    if (st->shift_invariant &&
+        tirenv_profile__level(st->prof, x - TIRENV_MODEL__REACH * R0,
+                              x + TIRENV_MODEL__REACH * R0, &level)) {
+        /* fx is 0 by symmetry, which the force sum only meets to round-off. */
+        *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
+                              .fz = st->flat_F, .contacts = st->flat_contacts};
+        st->z_prev = out->z;
+        st->have_prev = 1;
+        return TIRENV_OK;
+    }
     const double deflection = R0 - st->z_flat;
     const double z_hi = tirenv_rigid__height_hint(st->prof, R0, x, &st->rigid_hint, NULL, NULL);
     tirenv_eq_problem prob = {

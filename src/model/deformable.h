@@ -17,6 +17,9 @@ typedef struct {
     /* Flat-ground centre height z (m) at which the contact length is l_c (m). */
     int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double *z,
                                 tirenv_diag *diag);
+    /* Whether the tire looks the same at every x (no lugs turning with it), so that on level
+     * ground the equilibrium is the flat one; NULL means always. */
+    int (*shift_invariant)(const tirenv_tire *tire);
 } tirenv_deformable_ops;
 
 /* The model-type functions of model_impl.h for any deformable model; alloc takes the ops. */

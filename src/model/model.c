@@ -130,7 +130,7 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
  * within R0 of the centre's x. */
 double tirenv_model_reach(const tirenv_model *m)
 {
-    return m->type->reach ? m->type->reach(m->state) : 1.05 * m->tire.springs.R0;
+    return m->type->reach ? m->type->reach(m->state) : TIRENV_MODEL__REACH * m->tire.springs.R0;
 }
 
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)

@@ -18,8 +18,12 @@ struct tirenv_model_type {
      * start (streaming); NULL falls back to set, which restarts the warm start. */
     void (*set_profile)(void *state, const tirenv_profile *p);
     /* Optional: how far from x (m) eval reads the profile at the load set; NULL means the
-     * default of tirenv_model_reach, 1.05*R0. */
+     * default of tirenv_model_reach, TIRENV_MODEL__REACH*R0. */
     double (*reach)(const void *state);
 };
+
+/* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
+ * R0 from its centre; 5 % covers a tread standing out of the free circle. */
+#define TIRENV_MODEL__REACH 1.05
 
 #endif

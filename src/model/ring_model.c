@@ -78,12 +78,16 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
     return 0;
 }
 
+/* Lugs turn with the tread, so a lugged ring is not the same at every x. */
+static int ring_shift_invariant(const tirenv_tire *tire) { return !(tire->ring.lug_count > 0); }
+
 static const tirenv_deformable_ops ring_ops = {
     .alloc = ring_alloc,
     .free = ring_free,
     .forces = ring_forces,
     .contact_length = ring_contact_length,
     .z_for_contact_length = ring_z_for_contact_length,
+    .shift_invariant = ring_shift_invariant,
 };
 
 static void *ring_model_alloc(const tirenv_tire *tire)

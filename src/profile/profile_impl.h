@@ -85,4 +85,9 @@ static inline size_t tirenv_profile__segment_near(const struct tirenv_profile *p
     return lo == 0 ? 0 : lo - 1;
 }
 
+/* Whether the ground is one level over [lo, hi] (every vertex there, and the segments
+ * reaching into it from either side, at one height), and that height in *level. O(number of
+ * vertices in the interval), and O(1) on ground that is not level near lo. */
+int tirenv_profile__level(const struct tirenv_profile *p, double lo, double hi, double *level);
+
 #endif
