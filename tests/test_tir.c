@@ -15,87 +15,10 @@
 
 /* ---- helpers ------------------------------------------------------------------------- */
 
-/* Each test gets a fresh directory, removed (and checked empty of strays) afterwards. */
-typedef struct {
-    char dir[64];
-} fixture;
-
-static int setup(void **state)
-{
-    fixture *fx = calloc(1, sizeof *fx);
-    if (!fx)
-        return -1;
-    snprintf(fx->dir, sizeof fx->dir, "/tmp/tirenv_test_tir_XXXXXX");
-    if (!mkdtemp(fx->dir)) {
-        free(fx);
-        return -1;
-    }
-    *state = fx;
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    fixture *fx = *state;
-    DIR *d = opendir(fx->dir);
-    if (d) {
-        const struct dirent *e;
-        char path[600];
-        while ((e = readdir(d)) != NULL) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                continue;
-            snprintf(path, sizeof path, "%s/%s", fx->dir, e->d_name);
-            remove(path);
-        }
-        closedir(d);
-    }
-    const int r = rmdir(fx->dir);
-    free(fx);
-    return r;
-}
-
-static const char *in_dir(const fixture *fx, const char *name, char buf[600])
-{
-    snprintf(buf, 600, "%s/%s", fx->dir, name);
-    return buf;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    assert_int_equal(fputs(text, fp) >= 0, 1);
-    assert_int_equal(fclose(fp), 0);
-}
-
-static size_t count_entries(const fixture *fx, const char *containing)
-{
-    DIR *d = opendir(fx->dir);
-    assert_non_null(d);
-    size_t n = 0;
-    const struct dirent *e;
-    while ((e = readdir(d)) != NULL)
-        if (strstr(e->d_name, containing) && strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            n++;
-    closedir(d);
-    return n;
-}
-
 static int file_exists(const char *path)
 {
     struct stat st;
     return stat(path, &st) == 0;
-}
-
-/* Exactness is the claim here, so compare the bits, and print them when they differ. */
-#define assert_bits_equal(a, b) check_bits((a), (b), #a, __FILE__, __LINE__)
-
-static void check_bits(double a, double b, const char *expr, const char *file, int line)
-{
-    if (memcmp(&a, &b, sizeof a) != 0) {
-        print_error("%s = %.17g (%a), expected exactly %.17g (%a)\n", expr, a, a, b, b);
-        _fail(file, line);
-    }
 }
 
 static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
@@ -180,9 +103,9 @@ static void test_mftyre_excerpt_loads(void **state)
 
 static void test_comments_and_case(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    write_text(in_dir(fx, "case.tir", path),
+    tirenv_test_write_text(tirenv_test_path(fx, "case.tir", path),
                "\xEF\xBB\xBF$ a BOM, a leading comment, then lower-case names\r\n"
                "  [ dimension ]  $ spaces inside the brackets\r\n"
                "unloaded_radius=0.6837$no space before the comment\r\n"
@@ -287,12 +210,12 @@ static const read_error_case read_errors[] = {
 
 static void test_read_errors(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     for (size_t i = 0; i < sizeof read_errors / sizeof read_errors[0]; i++) {
         const read_error_case *k = &read_errors[i];
         char path[600], name[32];
         snprintf(name, sizeof name, "err%02zu.tir", i);
-        write_text(in_dir(fx, name, path), k->text);
+        tirenv_test_write_text(tirenv_test_path(fx, name, path), k->text);
         const tirenv_tire before = entropic_tire();
         tirenv_tire t = before;
         tirenv_diag d;
@@ -312,9 +235,9 @@ static void test_read_errors(void **state)
 
 static void test_missing_file(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    in_dir(fx, "no-such.tir", path);
+    tirenv_test_path(fx, "no-such.tir", path);
     tirenv_tire t = entropic_tire();
     const tirenv_tire before = t;
     tirenv_diag d;
@@ -428,7 +351,7 @@ static void test_set_errors(void **state)
  * must come out short (0.68, not 0.68000000000000005). */
 static void test_write_read_round_trip(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     tirenv_tire extreme = entropic_tire();
     extreme.springs.R0 = 0.1 + 0.2; /* 0.30000000000000004 */
     extreme.springs.c_r = DBL_MAX;
@@ -443,17 +366,17 @@ static void test_write_read_round_trip(void **state)
     const tirenv_tire tires[] = {entropic_tire(), tirenv_tire_default(), extreme};
     for (size_t i = 0; i < sizeof tires / sizeof tires[0]; i++) {
         char path[600];
-        in_dir(fx, "rt.tir", path);
+        tirenv_test_path(fx, "rt.tir", path);
         tirenv_diag d;
         assert_int_equal(tirenv_tir_write(path, &tires[i], &d), TIRENV_OK);
         tirenv_tire back = i == 0 ? tirenv_tire_default() : entropic_tire();
         assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
         assert_tire_identical(&back, &tires[i]);
     }
-    assert_int_equal(count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
 
     char path[600], text[4096];
-    in_dir(fx, "default.tir", path);
+    tirenv_test_path(fx, "default.tir", path);
     tirenv_diag d;
     const tirenv_tire def = tirenv_tire_default();
     assert_int_equal(tirenv_tir_write(path, &def, &d), TIRENV_OK);
@@ -469,23 +392,23 @@ static void test_write_read_round_trip(void **state)
 
 static void test_write_refuses_unphysical(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    in_dir(fx, "bad.tir", path);
+    tirenv_test_path(fx, "bad.tir", path);
     tirenv_tire t = tirenv_tire_default();
     t.springs.c_r = -1.6e6;
     tirenv_diag d;
     assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "RADIAL_STIFFNESS");
     assert_false(file_exists(path));
-    assert_int_equal(count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
 }
 
 static void test_write_into_missing_dir(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    in_dir(fx, "no-such-dir/x.tir", path);
+    tirenv_test_path(fx, "no-such-dir/x.tir", path);
     const tirenv_tire t = tirenv_tire_default();
     tirenv_diag d;
     assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_EIO);
@@ -505,9 +428,9 @@ static void read_back(const char *path, char *buf, size_t n)
 
 static void test_outfile_commit(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600], text[64];
-    in_dir(fx, "out.csv", path);
+    tirenv_test_path(fx, "out.csv", path);
     const mode_t old_mask = umask(027);
     tirenv_outfile f;
     tirenv_diag d;
@@ -515,12 +438,12 @@ static void test_outfile_commit(void **state)
     fputs("x_m,z_m\n", f.fp);
     /* Until commit, readers see no target, only the temporary file. */
     assert_false(file_exists(path));
-    assert_int_equal(count_entries(fx, "out.csv.tmp."), 1);
+    assert_int_equal(tirenv_test_count_entries(fx, "out.csv.tmp."), 1);
     assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
     umask(old_mask);
     read_back(path, text, sizeof text);
     assert_string_equal(text, "x_m,z_m\n");
-    assert_int_equal(count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
     /* mkstemp's 0600 would surprise; a new file gets 0666 minus the umask, like fopen. */
     struct stat st;
     assert_int_equal(stat(path, &st), 0);
@@ -531,9 +454,9 @@ static void test_outfile_commit(void **state)
 
 static void test_outfile_abort(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    in_dir(fx, "out.csv", path);
+    tirenv_test_path(fx, "out.csv", path);
     tirenv_outfile f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
@@ -541,18 +464,18 @@ static void test_outfile_abort(void **state)
     tirenv_outfile_abort(&f);
     tirenv_outfile_abort(&f); /* safe twice */
     assert_false(file_exists(path));
-    assert_int_equal(count_entries(fx, ".tmp."), 0);
-    assert_int_equal(count_entries(fx, ""), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ""), 0);
     assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_EINVAL);
     assert_false(file_exists(path));
 }
 
 static void test_outfile_replaces_existing(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600], text[64];
-    in_dir(fx, "out.csv", path);
-    write_text(path, "old contents, longer than the new ones\n");
+    tirenv_test_path(fx, "out.csv", path);
+    tirenv_test_write_text(path, "old contents, longer than the new ones\n");
     assert_int_equal(chmod(path, 0604), 0);
     tirenv_outfile f;
     tirenv_diag d;
@@ -566,14 +489,14 @@ static void test_outfile_replaces_existing(void **state)
     struct stat st;
     assert_int_equal(stat(path, &st), 0);
     assert_int_equal(st.st_mode & 0777, 0604); /* the replaced file's mode is kept */
-    assert_int_equal(count_entries(fx, ""), 1);
+    assert_int_equal(tirenv_test_count_entries(fx, ""), 1);
 }
 
 static void test_outfile_errors(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    in_dir(fx, "missing/out.csv", path);
+    tirenv_test_path(fx, "missing/out.csv", path);
     tirenv_outfile f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_EIO);
@@ -603,7 +526,7 @@ static void test_outfile_stdout(void **state)
 
 int main(void)
 {
-#define T(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
+#define T(fn) cmocka_unit_test_setup_teardown(fn, tirenv_test_dir_setup, tirenv_test_dir_teardown)
     const struct CMUnitTest tests[] = {
         T(test_default_file_matches_builtin),
         T(test_mftyre_excerpt_loads),

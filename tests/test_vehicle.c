@@ -14,83 +14,6 @@
 
 /* ---- helpers ------------------------------------------------------------------------- */
 
-/* Each test gets a fresh directory, removed (and checked empty of strays) afterwards. */
-typedef struct {
-    char dir[64];
-} fixture;
-
-static int setup(void **state)
-{
-    fixture *fx = calloc(1, sizeof *fx);
-    if (!fx)
-        return -1;
-    snprintf(fx->dir, sizeof fx->dir, "/tmp/tirenv_test_vehicle_XXXXXX");
-    if (!mkdtemp(fx->dir)) {
-        free(fx);
-        return -1;
-    }
-    *state = fx;
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    fixture *fx = *state;
-    DIR *d = opendir(fx->dir);
-    if (d) {
-        const struct dirent *e;
-        char path[600];
-        while ((e = readdir(d)) != NULL) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                continue;
-            snprintf(path, sizeof path, "%s/%s", fx->dir, e->d_name);
-            remove(path);
-        }
-        closedir(d);
-    }
-    const int r = rmdir(fx->dir);
-    free(fx);
-    return r;
-}
-
-static const char *in_dir(const fixture *fx, const char *name, char buf[600])
-{
-    snprintf(buf, 600, "%s/%s", fx->dir, name);
-    return buf;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    assert_int_equal(fputs(text, fp) >= 0, 1);
-    assert_int_equal(fclose(fp), 0);
-}
-
-static size_t count_entries(const fixture *fx, const char *containing)
-{
-    DIR *d = opendir(fx->dir);
-    assert_non_null(d);
-    size_t n = 0;
-    const struct dirent *e;
-    while ((e = readdir(d)) != NULL)
-        if (strstr(e->d_name, containing) && strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            n++;
-    closedir(d);
-    return n;
-}
-
-/* Exactness is the claim here, so compare the bits, and print them when they differ. */
-#define assert_bits_equal(a, b) check_bits((a), (b), #a, __FILE__, __LINE__)
-
-static void check_bits(double a, double b, const char *expr, const char *file, int line)
-{
-    if (memcmp(&a, &b, sizeof a) != 0) {
-        print_error("%s = %.17g (%a), expected exactly %.17g (%a)\n", expr, a, a, b, b);
-        _fail(file, line);
-    }
-}
-
 static void assert_axle_identical(const tirenv_axle *a, const tirenv_axle *b)
 {
     assert_string_equal(a->tire_file, b->tire_file);
@@ -270,9 +193,9 @@ static void test_check(void **state)
  * the file's directory, absolute ones and '' (the built-in tire) kept; names in any case. */
 static void test_read_paths_and_case(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    write_text(in_dir(fx, "v.veh", path),
+    tirenv_test_write_text(tirenv_test_path(fx, "v.veh", path),
                "\xEF\xBB\xBF$ a BOM first\r\n"
                "[units]\r\n"
                "mass = 'KG'\r\n"
@@ -292,7 +215,7 @@ static void test_read_paths_and_case(void **state)
     assert_string_equal(v.front.tire_file, expected);
     assert_string_equal(v.rear.tire_file, "/abs/rear $1.tir");
 
-    write_text(path, "[FRONT_AXLE]\nTIRE_FILE = ''\n[REAR_AXLE]\nTIRE_FILE = 'r.tir'\n");
+    tirenv_test_write_text(path, "[FRONT_AXLE]\nTIRE_FILE = ''\n[REAR_AXLE]\nTIRE_FILE = 'r.tir'\n");
     v = entropic_vehicle();
     assert_int_equal(tirenv_vehicle_read(path, &v, &d), TIRENV_OK);
     assert_string_equal(v.front.tire_file, "");
@@ -372,12 +295,12 @@ static const read_error_case read_errors[] = {
 
 static void test_read_errors(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     for (size_t i = 0; i < sizeof read_errors / sizeof read_errors[0]; i++) {
         const read_error_case *k = &read_errors[i];
         char path[600], name[32];
         snprintf(name, sizeof name, "err%02zu.veh", i);
-        write_text(in_dir(fx, name, path), k->text);
+        tirenv_test_write_text(tirenv_test_path(fx, name, path), k->text);
         const tirenv_vehicle before = entropic_vehicle();
         tirenv_vehicle v = before;
         tirenv_diag d;
@@ -397,12 +320,12 @@ static void test_read_errors(void **state)
 
 static void test_missing_file(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
     tirenv_vehicle v = entropic_vehicle();
     const tirenv_vehicle before = v;
     tirenv_diag d;
-    assert_int_equal(tirenv_vehicle_read(in_dir(fx, "no-such.veh", path), &v, &d), TIRENV_EIO);
+    assert_int_equal(tirenv_vehicle_read(tirenv_test_path(fx, "no-such.veh", path), &v, &d), TIRENV_EIO);
     assert_string_equal(d.file, path);
     assert_vehicle_identical(&v, &before);
 }
@@ -513,7 +436,7 @@ static void test_set_errors(void **state)
  * empty paths, one with a '$' and spaces. */
 static void test_write_read_round_trip(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     tirenv_vehicle extreme = entropic_vehicle();
     extreme.m = 0.1 + 0.2; /* 0.30000000000000004 */
     extreme.I_y = DBL_MAX;
@@ -530,7 +453,7 @@ static void test_write_read_round_trip(void **state)
     const tirenv_vehicle vehicles[] = {entropic_vehicle(), tirenv_vehicle_default(), extreme};
     for (size_t i = 0; i < sizeof vehicles / sizeof vehicles[0]; i++) {
         char path[600];
-        in_dir(fx, "rt.veh", path);
+        tirenv_test_path(fx, "rt.veh", path);
         tirenv_diag d;
         assert_int_equal(tirenv_vehicle_write(path, &vehicles[i], &d), TIRENV_OK);
         tirenv_vehicle back = i == 0 ? tirenv_vehicle_default() : entropic_vehicle();
@@ -540,10 +463,10 @@ static void test_write_read_round_trip(void **state)
         assert_int_equal(status, TIRENV_OK);
         assert_vehicle_identical(&back, &vehicles[i]);
     }
-    assert_int_equal(count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
 
     char path[600], text[8192];
-    in_dir(fx, "default.veh", path);
+    tirenv_test_path(fx, "default.veh", path);
     tirenv_diag d;
     const tirenv_vehicle def = tirenv_vehicle_default();
     assert_int_equal(tirenv_vehicle_write(path, &def, &d), TIRENV_OK);
@@ -561,13 +484,13 @@ static void test_write_read_round_trip(void **state)
  * another directory: it is written absolute there, and kept relative in the working one. */
 static void test_write_relative_path(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     tirenv_vehicle v = tirenv_vehicle_default();
     snprintf(v.front.tire_file, sizeof v.front.tire_file, "tires/front.tir");
     char path[600], cwd[512], expected[600];
     assert_non_null(getcwd(cwd, sizeof cwd));
     tirenv_diag d;
-    assert_int_equal(tirenv_vehicle_write(in_dir(fx, "rel.veh", path), &v, &d), TIRENV_OK);
+    assert_int_equal(tirenv_vehicle_write(tirenv_test_path(fx, "rel.veh", path), &v, &d), TIRENV_OK);
     tirenv_vehicle back = entropic_vehicle();
     assert_int_equal(tirenv_vehicle_read(path, &back, &d), TIRENV_OK);
     snprintf(expected, sizeof expected, "%s/tires/front.tir", cwd);
@@ -586,9 +509,9 @@ static void test_write_relative_path(void **state)
 
 static void test_write_refuses(void **state)
 {
-    fixture *fx = *state;
+    tirenv_test_dir *fx = *state;
     char path[600];
-    in_dir(fx, "bad.veh", path);
+    tirenv_test_path(fx, "bad.veh", path);
     tirenv_vehicle v = tirenv_vehicle_default();
     v.rear.k_s = 1e5;
     tirenv_diag d;
@@ -599,12 +522,12 @@ static void test_write_refuses(void **state)
     assert_int_equal(tirenv_vehicle_write(path, &v, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "REAR_AXLE.TIRE_FILE");
     assert_non_null(strstr(d.message, "quote"));
-    assert_int_equal(count_entries(fx, ""), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, ""), 0);
 }
 
 int main(void)
 {
-#define T(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
+#define T(fn) cmocka_unit_test_setup_teardown(fn, tirenv_test_dir_setup, tirenv_test_dir_teardown)
     const struct CMUnitTest tests[] = {
         T(test_default_file_matches_builtin),
         T(test_tire_loads),
