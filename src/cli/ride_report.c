@@ -122,9 +122,34 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
             260 * r->n_speeds + 60, 260 * r->n_speeds + 60);
 }
 
-static void script_tail(FILE *fp)
+/* Writes <dir>/<base>.gp, one panel per speed drawing every model's column of <base>.dat,
+ * with the panel settings 'axes' (gnuplot lines), and draws it as PNG and SVG. */
+static int draw(const char *dir, const char *base, const char *what, const char *title,
+                const char *axes, const ride_options *r, tirenv_diag *diag)
 {
-    fputs("    unset multiplot\n}\nunset output\n", fp);
+    char path[1024];
+    tirenv_outfile f;
+    snprintf(path, sizeof path, "%s/%s.gp", dir, base);
+    int status = tirenv_outfile_open(&f, path, diag);
+    if (status)
+        return status;
+    script_head(f.fp, base, what, r);
+    fprintf(f.fp,
+            "    set multiplot layout %zu,1 title \"%s\"\n"
+            "%s"
+            "    do for [j = 1:words(speeds)] {\n"
+            "        set title word(speeds, j).\" km/h\"\n"
+            "        plot for [i = 1:words(models)] '%s.dat' index (j - 1) using 1:(column(i + 1)) "
+            "with lines ls i title word(models, i)\n"
+            "    }\n"
+            "    unset multiplot\n"
+            "}\n"
+            "unset output\n",
+            r->n_speeds, title, axes, base);
+    if ((status = finish(&f, diag)))
+        return status;
+    const tirenv_plot__settings ps = {.dir = dir};
+    return tirenv_plot__draw(&ps, base, diag);
 }
 
 /* seat: the unweighted seat acceleration over the front axle's position. */
@@ -154,26 +179,13 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
     }
     if ((status = finish(&f, diag)))
         return status;
-    snprintf(path, sizeof path, "%s/seat.gp", dir);
-    if ((status = tirenv_outfile_open(&f, path, diag)))
-        return status;
-    script_head(f.fp, "seat", "vertical acceleration at the seat over the front axle's "
-                "position, point contact against enveloping", r);
-    fprintf(f.fp,
-            "    set multiplot layout %zu,1 title \"Seat vertical acceleration (unweighted)\"\n"
-            "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
-            "    set ylabel \"seat a_z (m/s²)\"\n"
-            "    do for [j = 1:words(speeds)] {\n"
-            "        set title word(speeds, j).\" km/h\"\n"
-            "        plot for [i = 1:words(models)] 'seat.dat' index (j - 1) using 1:(column(i + 1)) "
-            "with lines ls i title word(models, i)\n"
-            "    }\n",
-            r->n_speeds, wheelbase);
-    script_tail(f.fp);
-    if ((status = finish(&f, diag)))
-        return status;
-    const tirenv_plot__settings ps = {.dir = dir};
-    return tirenv_plot__draw(&ps, "seat", diag);
+    char axes[200];
+    snprintf(axes, sizeof axes,
+             "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
+             "    set ylabel \"seat a_z (m/s²)\"\n", wheelbase);
+    return draw(dir, "seat", "vertical acceleration at the seat over the front axle's position, "
+                "point contact against enveloping", "Seat vertical acceleration (unweighted)",
+                axes, r, diag);
 }
 
 /* The longest power-of-two segment up to WELCH_MAX_SEGMENT giving at least 3 half-overlapping
@@ -235,29 +247,15 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
     }
     if ((status = finish(&f, diag)))
         return status;
-    snprintf(path, sizeof path, "%s/spectrum.gp", dir);
-    if ((status = tirenv_outfile_open(&f, path, diag)))
-        return status;
-    script_head(f.fp, "spectrum", "power spectral density of the vertical acceleration at the "
-                "seat (Welch, Hann, 50 % overlap), point contact against enveloping", r);
-    fprintf(f.fp,
-            "    set multiplot layout %zu,1 title \"Seat vertical acceleration spectrum\"\n"
-            "    set logscale xy\n"
-            "    set format y '%%.0e'\n"
-            "    set xrange [0.5:100]   # ISO 2631-1's band for comfort (Wk)\n"
-            "    set xlabel \"frequency (Hz)\"\n"
-            "    set ylabel \"PSD of seat a_z ((m/s²)²/Hz)\"\n"
-            "    do for [j = 1:words(speeds)] {\n"
-            "        set title word(speeds, j).\" km/h\"\n"
-            "        plot for [i = 1:words(models)] 'spectrum.dat' index (j - 1) using 1:(column(i + 1)) "
-            "with lines ls i title word(models, i)\n"
-            "    }\n",
-            r->n_speeds);
-    script_tail(f.fp);
-    if ((status = finish(&f, diag)))
-        return status;
-    const tirenv_plot__settings ps = {.dir = dir};
-    return tirenv_plot__draw(&ps, "spectrum", diag);
+    return draw(dir, "spectrum", "power spectral density of the vertical acceleration at "
+                "the seat (Welch, Hann, 50 % overlap), point contact against enveloping",
+                "Seat vertical acceleration spectrum",
+                "    set logscale xy\n"
+                "    set format y '%.0e'\n"
+                "    set xrange [0.5:100]   # ISO 2631-1's band for comfort (Wk)\n"
+                "    set xlabel \"frequency (Hz)\"\n"
+                "    set ylabel \"PSD of seat a_z ((m/s²)²/Hz)\"\n",
+                r, diag);
 }
 
 int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],
