@@ -1,6 +1,7 @@
 /* The tandem elliptical cam (MODEL.md section 7): the basic function against its closed form,
  * a brute-force oracle, its limits, the tandem's symmetry and double hump, the model type and
- * the MF-Swift example file. SPDX-License-Identifier: GPL-3.0-or-later
+ * the MF-Swift example file, and the model's sweeps against single lifts, bit for bit.
+ * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * Tolerances. Heights are below 1 m; the lift and each closed form take a handful of correctly
  * rounded operations (pow, exp, log, expm1, log1p: glibc's are within 1 ulp), so they agree to
@@ -536,6 +537,81 @@ static void test_model_point(void **state)
     tirenv_model_free(m);
 }
 
+/* The model's positions against tirenv_cam_tandem, bit for bit (memcmp, so that even -0 and
+ * +0 would differ): the model lifts its cams through a sweep (a floor table, a memo of
+ * tangencies shared by the two cams, the last position of each), tirenv_cam_tandem through
+ * none, and both must equal the plain scan exactly (test_scan_exact), so no tolerance. */
+static void check_against_tandem(tirenv_model *m, const tirenv_profile *p,
+                                 const tirenv_cam_shape *s, double l_s, double G, double x,
+                                 const char *what)
+{
+    tirenv_diag diag;
+    tirenv_point pt;
+    double w, tb;
+    assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), 0);
+    assert_int_equal(tirenv_cam_tandem(p, s, l_s, x, &w, &tb), 0);
+    const double fx = -G * tb;
+    if (memcmp(&pt.h, &w, sizeof w) || memcmp(&pt.fx, &fx, sizeof fx))
+        fail_msg("%s, x = %.17g: model h %.17g fx %.17g, tandem w %.17g -G*tan(beta) %.17g",
+                 what, x, pt.h, pt.fx, w, fx);
+}
+
+/* The model over long roads, as the bench runs it (in order, the default tire at a 0.33 m
+ * patch), and out of order: backward, at random, after tirenv_model_set_profile to another
+ * road and to a window of the first (as tirenv_model_stream does), and back. Each position
+ * equals tirenv_cam_tandem's, bit for bit. */
+static void test_model_sweep_exact(void **state)
+{
+    (void)state;
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
+    assert_non_null(m);
+    tirenv_diag diag;
+    double G;
+    assert_int_equal(tirenv_model_load_for_contact_length(m, 0.33, &G, &diag), 0);
+    tirenv_flat f;
+    assert_int_equal(tirenv_model_flat(m, G, &f, &diag), 0);
+    const double R0 = t.springs.R0, l_s = t.cam.shift * f.contact_length;
+    const tirenv_cam_shape s = {t.cam.length * R0, t.cam.height * R0, t.cam.order};
+
+    tirenv_road_settings rs = tirenv_road_default();
+    rs.length = 41.3;
+    rs.seed = 17;
+    tirenv_profile *road = NULL, *fine = NULL, *window = NULL;
+    assert_int_equal(tirenv_road_iso8608(&rs, &road, &diag), 0);
+    rs.road_class = 'E';
+    rs.length = 4.7;
+    rs.dx = 0.001;
+    assert_int_equal(tirenv_road_iso8608(&rs, &fine, &diag), 0);
+    /* A window of the road: its vertices 1200 .. 2399, x from 12 m to 23.99 m. */
+    const double *xs = tirenv_profile_x(road), *zs = tirenv_profile_z(road);
+    window = tirenv_profile_alloc(1200, xs + 1200, zs + 1200);
+    assert_non_null(window);
+
+    assert_int_equal(tirenv_model_set(m, road, G, &diag), 0);
+    for (size_t k = 0; k <= 4130; k++) /* forward, at 10 mm, off both ends */
+        check_against_tandem(m, road, &s, l_s, G, -0.5 + 0.01 * (double)k, "forward");
+    for (size_t k = 4130; k-- > 0;) /* backward, at 7.31 mm, between the vertices */
+        check_against_tandem(m, road, &s, l_s, G, 0.00731 * (double)k, "backward");
+    for (size_t k = 0; k < 1500; k++) /* at random */
+        check_against_tandem(m, road, &s, l_s, G, -1.5 + 44.0 * uniform(), "random");
+
+    assert_int_equal(tirenv_model_set_profile(m, fine, &diag), 0);
+    for (size_t k = 0; k <= 6000; k++) /* forward at 0.9 mm on another road */
+        check_against_tandem(m, fine, &s, l_s, G, -0.2 + 0.0009 * (double)k, "fine");
+    assert_int_equal(tirenv_model_set_profile(m, window, &diag), 0);
+    for (size_t k = 0; k <= 1300; k++)
+        check_against_tandem(m, window, &s, l_s, G, 11.5 + 0.01 * (double)k, "window");
+    assert_int_equal(tirenv_model_set_profile(m, road, &diag), 0);
+    for (size_t k = 0; k < 1500; k++)
+        check_against_tandem(m, road, &s, l_s, G, 10.0 + 3.0 * uniform(), "back, random");
+
+    tirenv_profile_free(window);
+    tirenv_profile_free(fine);
+    tirenv_profile_free(road);
+    tirenv_model_free(m);
+}
+
 /* Each cam key out of range is refused by tirenv_tire_check, naming the key. */
 static void test_tire_check(void **state)
 {
@@ -616,6 +692,7 @@ int main(void)
         cmocka_unit_test(test_double_hump),
         cmocka_unit_test(test_flat_and_contact_length),
         cmocka_unit_test(test_model_point),
+        cmocka_unit_test(test_model_sweep_exact),
         cmocka_unit_test(test_tire_check),
         cmocka_unit_test(test_mfswift_file),
     };

@@ -33,6 +33,8 @@ typedef struct {
     double z_flat;              /* R0 - rho0, m */
     double l_s;                 /* tandem base ELLIPS_SHIFT*2a, m */
     double z_cap;               /* the profile's highest vertex, m: bounds the scan */
+    tirenv_cam__sweep sweep;    /* drop floor and tangency memo, shared by the two cams */
+    tirenv_cam__track front, rear; /* where each cam was */
 } cam_state;
 
 static void *cam_alloc(const tirenv_tire *tire)
@@ -49,6 +51,7 @@ static void *cam_alloc(const tirenv_tire *tire)
         free(st);
         return NULL;
     }
+    tirenv_cam__sweep_init(&st->sweep, &st->cam);
     return st;
 }
 
@@ -139,18 +142,25 @@ static int cam_set(void *state, const tirenv_profile *p, double load, double z_f
     st->z_cap = z[0];
     for (size_t k = 1; k < n; k++)
         st->z_cap = fmax(st->z_cap, z[k]);
+    /* The memo is indexed by segment: a new profile starts it afresh. The tracks may stay
+     * as they are (any content gives the same results), but a fresh start is tidier. */
+    tirenv_cam__sweep_forget(&st->sweep);
+    st->front = st->rear = (tirenv_cam__track){0};
     return TIRENV_OK;
 }
 
+/* Positions usually come in order, so each cam keeps a track, and the two share the sweep's
+ * memo: the rear cam meets the front one's tangencies l_s later. Results do not depend on
+ * either, whatever the order of positions. */
 static int cam_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 {
-    const cam_state *st = state;
+    cam_state *st = state;
     if (!isfinite(x))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x", "must be finite, got %g", x);
     const double Z_f = tirenv_cam__lift(&st->cam, st->prof, x + 0.5 * st->l_s, st->z_cap,
-                                        NULL, NULL);
+                                        &st->sweep, &st->front, NULL, NULL);
     const double Z_r = tirenv_cam__lift(&st->cam, st->prof, x - 0.5 * st->l_s, st->z_cap,
-                                        NULL, NULL);
+                                        &st->sweep, &st->rear, NULL, NULL);
     const double w = 0.5 * (Z_f + Z_r), tan_beta = (Z_f - Z_r) / st->l_s;
     *out = (tirenv_point){.x = x, .z = st->z_flat + w, .h = w, .fx = -st->G * tan_beta,
                           .fz = st->G, .contacts = 2, .iterations = 0};

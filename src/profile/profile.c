@@ -74,6 +74,14 @@ void tirenv_profile__seal(struct tirenv_profile *p)
             z_max = fmax(z_max, p->z[k]);
         p->z_block[b] = z_max;
     }
+    p->z_abs_max = fabs(p->z[0]);
+    p->slope_max = 0.0;
+    for (size_t k = 1; k < p->n; k++) {
+        p->z_abs_max = fmax(p->z_abs_max, fabs(p->z[k]));
+        const double dx = p->x[k] - p->x[k - 1];
+        if (dx > 0.0)
+            p->slope_max = fmax(p->slope_max, fabs(p->z[k] - p->z[k - 1]) / dx);
+    }
 }
 
 tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[])

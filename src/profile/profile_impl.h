@@ -21,6 +21,11 @@ struct tirenv_profile {
     double *x;       /* abscissae (m), non-decreasing */
     double *z;       /* heights (m) */
     double *z_block; /* block maxima of z (m), see above */
+    /* Once sealed, also: the largest |z_k| (m), and the steepest |z_k+1 - z_k|/(x_k+1 - x_k)
+     * of the segments that are not walls (x_k+1 > x_k), 0 if none. The cam bounds the
+     * rounding of its lifts by them (src/model/cam_lift.c). */
+    double z_abs_max;
+    double slope_max;
 };
 
 /* An uninitialised profile of n >= 1 vertices in one block, for generators that fill the
@@ -28,7 +33,8 @@ struct tirenv_profile {
  * tirenv_profile__seal. NULL if out of memory. */
 struct tirenv_profile *tirenv_profile__new(size_t n);
 
-/* Builds the block maxima from x and z, once they are final. O(n). */
+/* Builds the block maxima (and z_abs_max, slope_max) from x and z, once they are final.
+ * O(n). */
 void tirenv_profile__seal(struct tirenv_profile *p);
 
 /* Index k of the last vertex with x_k <= x, found by binary search in O(log n); 0 when
