@@ -9,8 +9,7 @@
 #include <time.h>
 
 #include "cli/bench.h"
-#include "tirenv/nn_road.h"
-#include "tirenv/ride.h"
+#include "cli/ride_cli.h"
 
 static const double ride_speed = 10 / 3.6;   /* m/s */
 static const double ride_target = 100;       /* times faster than real time */
@@ -22,31 +21,10 @@ static int inputs(const char *model, const tirenv_tire *tire, const tirenv_vehic
                   double *w[2], tirenv_diag *diag)
 {
     int status = TIRENV_OK;
-    for (int axle = 0; axle < 2 && !status; ++axle) {
-        const double load = tirenv_vehicle_tire_load(v, axle);
-        if (strcmp(model, "nn") == 0) {
-            /* The network's regime: the springs model's contact length at this load. */
-            tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, tire);
-            tirenv_flat flat;
-            tirenv_nn_road *r = NULL;
-            status = m ? tirenv_model_flat(m, load, &flat, diag) : TIRENV_ENOMEM;
-            tirenv_model_free(m);
-            if (!status)
-                status = tirenv_nn_road_alloc(nn, tire->springs.R0, flat.contact_length, road,
-                                              NULL, &r, diag);
-            if (!status)
-                status = tirenv_nn_road_eval(r, n, x, w[axle], NULL, diag);
-            tirenv_nn_road_free(r);
-        } else {
-            const tirenv_model_type *type =
-                strcmp(model, "point") == 0 ? NULL : tirenv_model_type_find(model);
-            tirenv_model *m = type ? tirenv_model_alloc(type, tire) : NULL;
-            status = type && !m ? TIRENV_ENOMEM
-                                : tirenv_ride_effective(m, road, load, x[0], x[1] - x[0], n,
-                                                        w[axle], diag);
-            tirenv_model_free(m);
-        }
-    }
+    for (int axle = 0; axle < 2 && !status; ++axle)
+        status = ride_cli_axle_input(model, tire, tirenv_vehicle_tire_load(v, axle), road, nn,
+                                     tire->springs.R0, x[0], x[1] - x[0], n, w[axle], NULL,
+                                     diag);
     return status;
 }
 

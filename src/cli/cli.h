@@ -108,6 +108,10 @@ void cli_help_obstacle(FILE *fp);
 /* "--model NAME", listing the models the library has, then fallback (e.g. " (default x)"). */
 void cli_help_model(FILE *fp, const char *fallback);
 
+/* rel (e.g. "dataset") under the data directory: $TIRENV_DATA if set, else the installed
+ * one; in buf. */
+const char *cli_data_path(const char *rel, char *buf, size_t n);
+
 /* The tire file in use: --tire, else $TIRENV_DATA/tires/default.tir, else the installed one. */
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 

@@ -304,11 +304,9 @@ static int road_time(const tirenv_tire *tire, const char *model, const tirenv_pr
  * with the reason in diag if the data set cannot be read. *seconds: training time. */
 static tirenv_nn *road_network(const tirenv_tire *tire, double *seconds, tirenv_diag *diag)
 {
-    const char *env = getenv("TIRENV_DATA");
     char dir[600];
-    snprintf(dir, sizeof dir, "%s/dataset", env && env[0] ? env : TIRENV_DATA_DIR);
     tirenv_dataset ds;
-    if (tirenv_dataset_read(dir, tire->springs.R0, &ds, diag))
+    if (tirenv_dataset_read(cli_data_path("dataset", dir, sizeof dir), tire->springs.R0, &ds, diag))
         return NULL;
     tirenv_samples s[3];
     double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};

@@ -281,9 +281,7 @@ int cli_compare_main(int argc, char *argv[])
     char data_buf[1024], tire_buf[1024];
     if (!co.data) {
         /* The embedded data set, simulated on the ring reference tire (MODEL.md 5). */
-        const char *env = getenv("TIRENV_DATA");
-        snprintf(data_buf, sizeof data_buf, "%s/dataset", env && env[0] ? env : TIRENV_DATA_DIR);
-        co.data = data_buf;
+        co.data = cli_data_path("dataset", data_buf, sizeof data_buf);
         if (!co.s.simulated_by)
             co.s.simulated_by = tirenv_model_ring;
         co.s.simulated = 1;

@@ -74,7 +74,8 @@ int cli_study_main(int argc, char *argv[])
     cli_options o;
     cli_options_init(&o);
     tirenv_study_settings s = tirenv_study_default();
-    s.data_dir = TIRENV_DATA_DIR "/dataset";
+    char data_buf[1024];
+    s.data_dir = cli_data_path("dataset", data_buf, sizeof data_buf);
     int data_given = 0, sim_given = 0, c;
     long seed;
     cli_getopt_reset();

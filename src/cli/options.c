@@ -257,13 +257,16 @@ void cli_help_obstacle(FILE *fp)
           fp);
 }
 
+const char *cli_data_path(const char *rel, char *buf, size_t n)
+{
+    const char *dir = getenv("TIRENV_DATA");
+    snprintf(buf, n, "%s/%s", dir && dir[0] ? dir : TIRENV_DATA_DIR, rel);
+    return buf;
+}
+
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
 {
-    if (o->tire_path)
-        return o->tire_path;
-    const char *dir = getenv("TIRENV_DATA");
-    snprintf(buf, n, "%s/tires/default.tir", dir && dir[0] ? dir : TIRENV_DATA_DIR);
-    return buf;
+    return o->tire_path ? o->tire_path : cli_data_path("tires/default.tir", buf, n);
 }
 
 int cli_tire(const cli_options *o, tirenv_tire *tire)

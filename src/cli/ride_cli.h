@@ -5,6 +5,7 @@
 
 #include "cli/cli.h"
 #include "tirenv/comfort.h"
+#include "tirenv/nn_road.h"
 #include "tirenv/ride.h"
 
 enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = 16 };
@@ -47,6 +48,15 @@ typedef struct {
     double *a_w;                   /* Wk-weighted seat_az, m/s^2 */
     size_t n;
 } ride_series;
+
+/* What one axle's tires follow on the grid x0 + k*dx (k < n), into w[]: model "point" (the
+ * profile itself), a model type's effective height at the load of one tire (N), or "nn", the
+ * network nn over the profile (nn_road.h, x_N referred to R0_nn, m) at the springs model's
+ * contact length for this tire and load, its decomposition's counts in *info if not NULL. */
+int ride_cli_axle_input(const char *model, const tirenv_tire *tire, double load,
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
+                        double dx, size_t n, double w[], tirenv_nn_road_info *info,
+                        tirenv_diag *diag);
 
 /* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes
  * what the options ask for; returns an exit code after printing any error. */

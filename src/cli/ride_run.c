@@ -7,13 +7,7 @@
 #include <string.h>
 
 #include "cli/ride_cli.h"
-#include "tirenv/comfort.h"
-#include "tirenv/nn_road.h"
 #include "tirenv/train.h"
-
-#ifndef TIRENV_DATA_DIR
-#error "TIRENV_DATA_DIR must name the data directory (CMake defines it)"
-#endif
 
 /* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
  * its end inside a run; and the default run-in before the obstacle and settling after it. */
@@ -41,12 +35,8 @@ typedef struct {
 static int load_vehicle(const ride_options *r, ride_setup *s)
 {
     char buf[1024];
-    const char *dir = getenv("TIRENV_DATA");
-    const char *path = r->vehicle_path;
-    if (!path) {
-        snprintf(buf, sizeof buf, "%s/vehicles/tractor.veh", dir && dir[0] ? dir : TIRENV_DATA_DIR);
-        path = buf;
-    }
+    const char *path = r->vehicle_path ? r->vehicle_path
+                                       : cli_data_path("vehicles/tractor.veh", buf, sizeof buf);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     s->v = tirenv_vehicle_default();
@@ -71,50 +61,6 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
     return CLI_EXIT_OK;
 }
 
-/* The network's inputs for both axles (nn_road.h): the contact length of each axle's tire at
- * its load is the springs model's, as for 'tirenv predict --load'; x_N refers to the R0 the
- * network's data had. Obstacles outside the trained range are counted in a warning. */
-static int nn_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in, int *axle,
-                     tirenv_diag *diag)
-{
-    tirenv_nn *nn = NULL;
-    tirenv_train_record rec;
-    double *x = malloc(s->n * sizeof *x);
-    int status = x ? tirenv_nn_read_json(r->nn_path, &nn, &rec, diag)
-                   : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    for (size_t k = 0; x && k < s->n; ++k)
-        x[k] = s->x0 + (double)k * s->dx;
-    for (*axle = 0; *axle < 2 && !status; ++*axle) {
-        tirenv_model *springs = tirenv_model_alloc(tirenv_model_springs, &s->tire[*axle]);
-        tirenv_flat flat;
-        status = springs ? tirenv_model_flat(springs, s->load[*axle], &flat, diag)
-                         : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        tirenv_model_free(springs);
-        tirenv_nn_road *road = NULL;
-        const double R0 = rec.R0 > 0 ? rec.R0 : s->tire[*axle].springs.R0;
-        if (!status)
-            status = tirenv_nn_road_alloc(nn, R0, flat.contact_length, s->p, NULL, &road, diag);
-        if (!status)
-            status = tirenv_nn_road_eval(road, s->n, x, in->w[*axle], NULL, diag);
-        if (!status) {
-            const tirenv_nn_road_info info = tirenv_nn_road_get_info(road);
-            if (info.height_below + info.height_above + info.length_below + info.length_above)
-                fprintf(stderr, "tirenv: ride: warning: nn, %s axle (contact length %.3f m), "
-                        "of %zu obstacles: %zu lower than trained (scaled), %zu higher, %zu "
-                        "shorter and %zu longer (clamped); see include/tirenv/nn_road.h\n",
-                        *axle ? "rear" : "front", flat.contact_length, info.obstacles,
-                        info.height_below, info.height_above, info.length_below,
-                        info.length_above);
-        }
-        tirenv_nn_road_free(road);
-    }
-    if (status)
-        --*axle;
-    tirenv_nn_free(nn);
-    free(x);
-    return status;
-}
-
 static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in)
 {
     tirenv_diag diag;
@@ -122,24 +68,29 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     for (int axle = 0; axle < 2; ++axle)
         if (!(in->w[axle] = malloc(s->n * sizeof *in->w[axle])))
             return cli_fail(TIRENV_ENOMEM, NULL);
-    const double t0 = cli_cpu_seconds();
+    tirenv_nn *nn = NULL;
+    tirenv_train_record rec = {.R0 = 0};
     int status = TIRENV_OK, axle = 0;
-    if (strcmp(in->name, "nn") == 0) {
-        status = nn_inputs(r, s, in, &axle, &diag);
-    } else {
-        const tirenv_model_type *type =
-            strcmp(in->name, "point") == 0 ? NULL : tirenv_model_type_find(in->name);
-        for (; axle < 2; ++axle) {
-            tirenv_model *m = type ? tirenv_model_alloc(type, &s->tire[axle]) : NULL;
-            if (type && !m)
-                return cli_fail(TIRENV_ENOMEM, NULL);
-            status = tirenv_ride_effective(m, s->p, s->load[axle], s->x0, s->dx, s->n,
-                                           in->w[axle], &diag);
-            tirenv_model_free(m);
-            if (status)
-                break;
-        }
+    if (strcmp(in->name, "nn") == 0 &&
+        (status = tirenv_nn_read_json(r->nn_path, &nn, &rec, &diag)))
+        return cli_fail(status, &diag);
+    const double t0 = cli_cpu_seconds();
+    for (; axle < 2; ++axle) {
+        tirenv_nn_road_info info = {0};
+        /* x_N refers to the radius of the network's data, when the file records it. */
+        const double R0_nn = rec.R0 > 0 ? rec.R0 : s->tire[axle].springs.R0;
+        if ((status = ride_cli_axle_input(in->name, &s->tire[axle], s->load[axle], s->p, nn,
+                                          R0_nn, s->x0, s->dx, s->n, in->w[axle], &info,
+                                          &diag)))
+            break;
+        if (info.height_below + info.height_above + info.length_below + info.length_above)
+            fprintf(stderr, "tirenv: ride: warning: nn, %s axle, of %zu obstacles: %zu lower "
+                    "than trained (scaled), %zu higher, %zu shorter and %zu longer (clamped); "
+                    "see include/tirenv/nn_road.h\n", axle ? "rear" : "front", info.obstacles,
+                    info.height_below, info.height_above, info.length_below,
+                    info.length_above);
     }
+    tirenv_nn_free(nn);
     in->seconds = cli_cpu_seconds() - t0;
     if (status) {
         char msg[1200];
