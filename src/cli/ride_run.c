@@ -49,10 +49,9 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         return cli_fail(status, &diag);
     for (int axle = 0; axle < 2; ++axle) {
         const tirenv_axle *ax = axle ? &s->v.rear : &s->v.front;
-        cli_options none;
-        cli_options_init(&none);
-        const char *tire_path = ax->tire_file[0] ? ax->tire_file
-                                                 : cli_tire_path(&none, buf, sizeof buf);
+        const char *tire_path = ax->tire_file[0]
+                                    ? ax->tire_file
+                                    : cli_data_path("tires/default.tir", buf, sizeof buf);
         s->tire[axle] = tirenv_tire_default();
         if ((status = tirenv_tir_read(tire_path, &s->tire[axle], &diag)))
             return cli_fail(status, &diag);
