@@ -68,8 +68,9 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
                                          tirenv_diag *diag);
 
 /* Sets the ground profile (borrowed: it must outlive its use) and the load (N); computes the
- * flat-ground reference z_flat. TIRENV_ERANGE if the profile rises above the flat-ground
- * centre height within reach of the tire. Resets the warm start. */
+ * flat-ground reference z_flat. TIRENV_ERANGE if any vertex of the profile reaches the
+ * flat-ground centre height z_flat (the whole profile is checked, so give long roads as
+ * heights about their own level, not with a large grade). Resets the warm start. */
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
 

@@ -41,9 +41,10 @@ typedef struct {
 
 /* Evaluates the positions x_k = x_from + k*dx (m) up to x_to (m; as the CLI's sweep) at load
  * (N), reading vertices from in only as far as the tire's reach ahead needs, and passing each
- * point to sink. Equals tirenv_model_set + tirenv_model_envelope over the whole file, except
- * that deformable models restart their warm start when the window moves (within the
- * equilibrium tolerances) and that the flat-ground check covers only the ground read.
+ * point to sink. Equals tirenv_model_set + tirenv_model_envelope over the whole file bit for
+ * bit, iterations included (the warm start carries over as the window moves), except that
+ * the check that the ground stays below the flat-ground centre height covers only the ground
+ * read.
  * stats may be NULL. Consumes in from where it stands. */
 int tirenv_model_stream(tirenv_model *m, tirenv_profile_reader *in, double x_from,
                         double x_to, double dx, double load, tirenv_point_sink sink, void *ctx,

@@ -135,6 +135,7 @@ double tirenv_model_reach(const tirenv_model *m)
 
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
+    out->x = x;  /* as the header promises, on failure too */
     if (!m->ready)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "no profile and load set (call tirenv_model_set first)");

@@ -8,6 +8,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include "model/springs_impl.h"
+#include "profile/profile_impl.h"
 
 /* Passes of the active-set iteration before giving up; it typically needs 2 to 4. */
 enum { RING_MAX_PASSES = 100 };
@@ -172,11 +173,15 @@ static void cast_candidates(tirenv_ring *r, const tirenv_profile *p, double x, d
     size_t m = r->M / 4; /* up to the horizontal */
     if (gap > 0)
         m = (size_t)fmin((double)m, acos(gap / reach) / r->dth + 1);
+    /* What every ray needs of x, found once (the same bits as tirenv_springs__ray). */
+    const size_t k_x = tirenv_profile__segment_at(p, x);
+    const double g_x = tirenv_profile_height(p, x);
     for (size_t j = r->i0 - m; j <= r->i0 + m; ++j) {
         if (r->cos_t[j] < 0)
             continue;
         double drho;
-        const double rho = tirenv_springs__ray(p, x, z, r->sin_t[j], r->cos_t[j], reach, &drho);
+        const double rho = tirenv_springs__ray_at(p, x, k_x, g_x, z, r->sin_t[j], r->cos_t[j],
+                                                  reach, &drho);
         if (!isfinite(rho))
             continue;
         const size_t k = r->nc++;

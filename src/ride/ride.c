@@ -193,9 +193,11 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
     gsl_set_error_handler_off();
     ride r = {.v = v, .V = s->speed, .x_front0 = s->x_front0, .l = v->a + v->b,
               .suspended = v->front.k_s > 0};
+    /* The static loads the effective profiles were computed for (tirenv_vehicle_tire_load);
+     * a suspension carries the body's share of the front axle's. */
+    r.F0_front = v->front.tires * tirenv_vehicle_tire_load(v, 0);
+    r.F0_rear = v->rear.tires * tirenv_vehicle_tire_load(v, 1);
     r.F0_susp = v->m * v->g * v->b / r.l;
-    r.F0_rear = v->m * v->g * v->a / r.l;
-    r.F0_front = r.F0_susp + (r.suspended ? v->front.m_a * v->g : 0);
     gsl_odeiv2_driver *d = NULL;
     gsl_odeiv2_step *step = NULL;
     if ((status = input_init(&r.front, front)) || (status = input_init(&r.rear, rear))) {
