@@ -2,7 +2,6 @@
  * runs it on the embedded data set. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
@@ -38,13 +37,6 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* One line per stage on a terminal, redrawn in place; silent otherwise. */
 static void progress(void *ctx, const char *stage, size_t step, size_t steps)
 {
@@ -52,7 +44,7 @@ static void progress(void *ctx, const char *stage, size_t step, size_t steps)
     if (!isatty(STDERR_FILENO))
         return;
     fprintf(stderr, "\r\033[Ktirenv: study: [%zu/%zu] %s (%.1f s)%s", step, steps, stage,
-            seconds() - *t0, step == steps ? "\n" : "");
+            cli_wall_seconds() - *t0, step == steps ? "\n" : "");
 }
 
 int cli_study_main(int argc, char *argv[])
@@ -139,7 +131,7 @@ int cli_study_main(int argc, char *argv[])
         return code;
     char label[1024];
     s.tire_label = cli_tire_path(&o, label, sizeof label);
-    double t0 = seconds();
+    double t0 = cli_wall_seconds();
     s.progress = progress;
     s.progress_ctx = &t0;
     tirenv_diag diag;
@@ -148,6 +140,6 @@ int cli_study_main(int argc, char *argv[])
     if (status)
         return cli_fail(status, &diag);
     printf("tirenv: study: report written to %s/report.md (%.1f s)\n", s.out_dir,
-           seconds() - t0);
+           cli_wall_seconds() - t0);
     return CLI_EXIT_OK;
 }

@@ -5,7 +5,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
@@ -59,17 +58,10 @@ typedef struct {
     int drawn;
 } bar;
 
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 static int draw(const tirenv_train_progress *p, void *data)
 {
     bar *b = data;
-    const double t = now_s();
+    const double t = cli_wall_seconds();
     if (b->drawn && t - b->last < 0.1)
         return 0;
     b->last = t;

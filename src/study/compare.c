@@ -11,12 +11,12 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
-#include <time.h>
 
 #include "study/compare_impl.h"
 #include "study/plot.h"
 #include "tirenv/io.h"
 #include "tirenv/nn.h"
+#include "core/clock.h"
 
 /* A cap on timing repeats, should the clock not advance. */
 enum { MAX_REPEATS = 1000000 };
@@ -319,13 +319,6 @@ static int select_models(const tirenv_compare_settings *s, const tirenv_nn *nn,
 
 /* ---- evaluating --------------------------------------------------------------------------- */
 
-static double now_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* One model, physical or the network, behind one call. */
 typedef struct {
     tirenv_model *m;       /* a physical model, or NULL for the network */
@@ -364,9 +357,9 @@ static void run_model(evaluator *ev, size_t j, const tirenv_dataset *ds,
         tirenv_compare_entry *e = &r->entry[i * r->n_models + j];
         tirenv_diag d;
         tirenv_diag_clear(&d);
-        const double t0 = now_seconds();
+        const double t0 = tirenv__wall_seconds();
         int status = evaluate(ev, c, e->h, &d);
-        const double t1 = now_seconds();
+        const double t1 = tirenv__wall_seconds();
         if (!status)
             status = tirenv_curve_errors_compute(c->curve.n, c->curve.x, c->curve.h, e->h,
                                                  s->rise_threshold, &e->errors);
@@ -385,11 +378,11 @@ static void run_model(evaluator *ev, size_t j, const tirenv_dataset *ds,
     double best = pass, total = pass;
     size_t repeats = 1;
     while (total < s->min_time && repeats < MAX_REPEATS) {
-        const double t0 = now_seconds();
+        const double t0 = tirenv__wall_seconds();
         for (size_t i = 0; i < r->n_cases; ++i)
             if (r->entry[i * r->n_models + j].status == TIRENV_OK)
                 (void)evaluate(ev, &ds->cases[r->case_index[i]], scratch, NULL);
-        const double t = now_seconds() - t0;
+        const double t = tirenv__wall_seconds() - t0;
         total += t;
         best = fmin(best, t);
         ++repeats;

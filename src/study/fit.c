@@ -1,10 +1,10 @@
 /* Identification of a physical model on measured curves (MODEL.md section 8): nonlinear least
  * squares on h over the training cases, with standard errors from the covariance. */
 #include "tirenv/study.h"
+#include "core/clock.h"
 
 #include <math.h>
 #include <stdlib.h>
-#include <time.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
@@ -95,13 +95,6 @@ static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
     return GSL_SUCCESS;
 }
 
-static double now_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 static void fit_callback(const size_t iter, void *params_, const gsl_multifit_nlinear_workspace *w)
 {
     const tirenv_fit_settings *s = params_;
@@ -117,7 +110,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
 {
     gsl_set_error_handler_off();
-    const double t0 = now_seconds();
+    const double t0 = tirenv__wall_seconds();
     const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
     const int cam = type == tirenv_model_cam;
     if (!cam && type != tirenv_model_springs)
@@ -194,7 +187,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         }
         *tire = c.tire;
     }
-    report->seconds = now_seconds() - t0;
+    report->seconds = tirenv__wall_seconds() - t0;
     free(c.h);
     gsl_multifit_nlinear_free(w);
     gsl_vector_free(p0);

@@ -276,8 +276,7 @@ static char *study_notes(const tirenv_fit_report *fit, const tirenv_fit_report *
     fprintf(fp, "## How the models were obtained\n\n"
                 "**Physical model (springs)**, identified on the training cases by nonlinear "
                 "least squares on h (%zu points, %zu iterations, %.1f s, RMS %.2f mm); standard "
-                "errors from the covariance, scaled by the residual variance:\n\n"
-                "| parameter | value | standard error |\n|---|---|---|\n",
+                "errors from the covariance, scaled by the residual variance:\n\n",
             fit->n_points, fit->iterations, fit->seconds, 1e3 * fit->rms);
     fit_table(fp, fit);
     fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (MODEL.md "

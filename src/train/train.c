@@ -4,10 +4,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <gsl/gsl_errno.h>
 
 #include "train/train_impl.h"
+#include "core/clock.h"
 
 extern const struct tirenv_trainer_type tirenv_train__backprop_type;
 extern const struct tirenv_trainer_type tirenv_train__rprop_type;
@@ -207,13 +207,6 @@ int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
     return TIRENV_OK;
 }
 
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* splitmix64 (Steele, Lea and Flood 2014): decorrelates the seeds of consecutive restarts, so
  * that restart r is reproducible on its own, whatever the others drew. */
 static unsigned long restart_seed(unsigned long seed, size_t r)
@@ -346,7 +339,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
     }
 
     const double out_std = out_std_of(r.nn);
-    const double t_start = now_s();
+    const double t_start = tirenv__wall_seconds();
     tirenv_train_report rep = {0};
     double best_overall = INFINITY;
     int cancelled = 0;
@@ -357,7 +350,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             run_free(type, &r);
             return status;
         }
-        const double t_restart = now_s();
+        const double t_restart = tirenv__wall_seconds();
         double best = tirenv_train__sse(r.nn, sel, r.y);
         size_t best_epoch = 0, epoch = 0;
         double best_time = 0;
@@ -375,7 +368,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             if (e < best) {
                 best = e;
                 best_epoch = epoch;
-                best_time = now_s() - t_restart;
+                best_time = tirenv__wall_seconds() - t_restart;
                 tirenv_nn_copy(r.cand, r.nn);
             }
             if (s->progress) {
@@ -418,7 +411,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             rep.stop = stop;
         }
     }
-    rep.wall_time = now_s() - t_start;
+    rep.wall_time = tirenv__wall_seconds() - t_start;
     rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(r.best, train);
     rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(r.best, control);
     rep.error[TIRENV_SPLIT_VALIDATION] = tirenv_train_evaluate(r.best, validation);

@@ -1,0 +1,11 @@
+/* The library's one clock. SPDX-License-Identifier: GPL-3.0-or-later */
+#include "core/clock.h"
+
+#include <time.h>
+
+double tirenv__wall_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}

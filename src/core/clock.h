@@ -1,0 +1,9 @@
+/* Private: the library's one clock, for the timings its reports carry.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_CORE_CLOCK_H
+#define TIRENV_CORE_CLOCK_H
+
+/* Wall time since an arbitrary start (CLOCK_MONOTONIC), s. */
+double tirenv__wall_seconds(void);
+
+#endif
