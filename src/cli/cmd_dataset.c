@@ -15,8 +15,9 @@ static void usage(FILE *fp)
           "flexible-ring reference tire on the virtual rig (19 train, 5 control, 4\n"
           "validation, the paper's Table 3 cases F, J and R among them), raw logs in\n"
           "DIR/logs, imported approach-half curves in DIR/curves, manifest DIR/cases.csv.\n"
-          "The data are SIMULATED. Default DIR: the shipped data/dataset.\n"
-          "list: prints a data set's manifest as a table (default: the shipped one).\n"
+          "The data are SIMULATED. Default DIR: $TIRENV_DATA/dataset if TIRENV_DATA is set,\n"
+          "else the shipped data/dataset.\n"
+          "list: prints a data set's manifest as a table (default DIR as for build).\n"
           "\n"
           "options:\n"
           "  -o DIR               where to build (created if missing)\n",
@@ -62,7 +63,8 @@ int cli_dataset_main(int argc, char *argv[])
     };
     cli_options o;
     cli_options_init(&o);
-    const char *dir = TIRENV_DATA_DIR "/dataset";
+    char dir_buf[1024];
+    const char *dir = cli_data_path("dataset", dir_buf, sizeof dir_buf);
     /* "tirenv dataset ACTION [options]": the action first, then its options. */
     const char *action = argc > 1 && argv[1][0] != '-' ? argv[1] : NULL;
     if (action) {

@@ -82,16 +82,19 @@ static int parse_speed(const char *s, double *v)
     return 0;
 }
 
-/* Splits a comma-separated list in place into at most max items; 0 on success. */
+/* Splits a comma-separated list in place into 1 to max non-empty items; 0 on success. */
 static int split(char *s, const char *items[], size_t max, size_t *n)
 {
-    *n = 0;
-    for (char *tok = strtok(s, ","); tok; tok = strtok(NULL, ",")) {
-        if (*n == max)
+    for (*n = 0;; s = s + strlen(s) + 1) {
+        char *comma = strchr(s, ',');
+        if (comma)
+            *comma = '\0';
+        if (!*s || *n == max)
             return -1;
-        items[(*n)++] = tok;
+        items[(*n)++] = s;
+        if (!comma)
+            return 0;
     }
-    return *n ? 0 : -1;
 }
 
 static int known_model(const char *name)
@@ -152,7 +155,8 @@ static int parse(int argc, char *argv[], cli_options *o, ride_options *r)
         case OPT_SPEED: {
             snprintf(r->speed_buf, sizeof r->speed_buf, "%s", optarg);
             if (split(r->speed_buf, speeds, RIDE_MAX_SPEEDS, &r->n_speeds)) {
-                cli_error("ride: --speed expects 1 to %d speeds, got '%s'", RIDE_MAX_SPEEDS,
+                cli_error("ride: --speed expects 1 to %d comma-separated speeds, got '%s'",
+                          RIDE_MAX_SPEEDS,
                           optarg);
                 return CLI_EXIT_USAGE;
             }
@@ -167,14 +171,17 @@ static int parse(int argc, char *argv[], cli_options *o, ride_options *r)
         case OPT_MODEL:
             snprintf(r->model_buf, sizeof r->model_buf, "%s", optarg);
             if (split(r->model_buf, r->models, RIDE_MAX_MODELS, &r->n_models)) {
-                cli_error("ride: --model expects 1 to %d models, got '%s'", RIDE_MAX_MODELS,
+                cli_error("ride: --model expects 1 to %d comma-separated models, got '%s'",
+                          RIDE_MAX_MODELS,
                           optarg);
                 return CLI_EXIT_USAGE;
             }
             for (size_t i = 0; i < r->n_models; ++i)
                 if (!known_model(r->models[i])) {
-                    cli_error("ride: --model: expected point, rigid, springs, ring, cam or nn, "
-                              "got '%s'", r->models[i]);
+                    fputs("tirenv: ride: --model: expected point,", stderr);
+                    for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
+                        fprintf(stderr, " %s,", tirenv_model_type_name(*t));
+                    fprintf(stderr, " or nn, got '%s'\n", r->models[i]);
                     return CLI_EXIT_USAGE;
                 }
             break;

@@ -1,7 +1,6 @@
 /* tirenv ride --out-dir: the comfort table as CSV and Markdown, and two gnuplot figures, the
  * seat acceleration over distance and its spectrum, one panel per speed, one line per model.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,15 +26,6 @@ static const char *colour(const char *model)
     return "black";
 }
 
-static int finish(tirenv_outfile *f, tirenv_diag *diag)
-{
-    if (ferror(f->fp)) {
-        tirenv_outfile_abort(f);
-        return tirenv_error(diag, TIRENV_EIO, f->path, 0, "", "write failed");
-    }
-    return tirenv_outfile_commit(f, diag);
-}
-
 static int write_csv(const char *path, const ride_options *r, const ride_result res[],
                      tirenv_diag *diag)
 {
@@ -54,7 +44,7 @@ static int write_csv(const char *path, const ride_options *r, const ride_result 
                 q->pitch.vdv, q->a_v, q->peak_az, q->lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
-    return finish(&f, diag);
+    return tirenv_outfile_commit(&f, diag);
 }
 
 static int write_md(const char *path, const ride_options *r, const ride_result res[],
@@ -80,7 +70,7 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
                 q->seat.vdv, q->seat.mtvv, q->pitch.rms, q->a_v, q->peak_az, q->lift_off,
                 q->seconds, q->duration / fmax(q->seconds, 1e-9));
     }
-    return finish(&f, diag);
+    return tirenv_outfile_commit(&f, diag);
 }
 
 /* The gnuplot preamble both figures share: the image names tirenv sets on the command line,
@@ -146,7 +136,7 @@ static int draw(const char *dir, const char *base, const char *what, const char 
             "}\n"
             "unset output\n",
             r->n_speeds, title, axes, base);
-    if ((status = finish(&f, diag)))
+    if ((status = tirenv_outfile_commit(&f, diag)))
         return status;
     const tirenv_plot__settings ps = {.dir = dir};
     return tirenv_plot__draw(&ps, base, diag);
@@ -177,7 +167,7 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
             fputc('\n', f.fp);
         }
     }
-    if ((status = finish(&f, diag)))
+    if ((status = tirenv_outfile_commit(&f, diag)))
         return status;
     char axes[200];
     snprintf(axes, sizeof axes,
@@ -245,7 +235,7 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
         tirenv_outfile_abort(&f);
         return status;
     }
-    if ((status = finish(&f, diag)))
+    if ((status = tirenv_outfile_commit(&f, diag)))
         return status;
     return draw(dir, "spectrum", "power spectral density of the vertical acceleration at "
                 "the seat (Welch, Hann, 50 % overlap), point contact against enveloping",

@@ -120,11 +120,7 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
                 s->t, s->x_front, s->w_front, s->w_rear, s->z, s->theta, s->z_a, s->seat_az,
                 rs->a_w[k], s->seat_ax, s->atheta, s->F_front, s->F_rear);
     }
-    if (ferror(out.fp)) {
-        tirenv_outfile_abort(&out);
-        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "write failed");
-    }
-    return tirenv_outfile_commit(&out, diag);
+    return tirenv_outfile_commit(&out, diag);  /* it checks ferror and removes the file */
 }
 
 /* The comfort figures of one run; the weighted seat acceleration stays in rs->a_w. */
