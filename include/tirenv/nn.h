@@ -68,7 +68,8 @@ size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
 
 /* Nguyen-Widrow initialisation of every hidden layer (each neuron's weights uniform in
  * [-0.5, 0.5] rescaled to norm 0.7*n_hidden^(1/n_in), bias uniform in +-that norm), and
- * uniform [-0.5, 0.5] for the output layer; draws from rng in weight order. */
+ * uniform [-0.5, 0.5] for the output layer; draws from rng neuron by neuron (its n_in
+ * weights, then its bias), so a seed gives the same network on every machine. */
 void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng);
 
 /* Scaling: the net sees u_i = (x_i - in_mean_i)/in_std_i and outputs y = out_mean +

@@ -141,7 +141,8 @@ typedef struct {
 /* Evaluates the chosen models on the chosen cases of ds and writes into s->out_dir: per case
  * <case>.dat and <case>.gp (and, with s->images, <case>.png and <case>.svg drawn by gnuplot),
  * errors.csv, errors.md and timing.csv. Physical models are built from tire (checked), the
- * network (NULL: none) is run at the cases' contact lengths with the tire's R0. A model that
+ * network (NULL: none) is run at the cases' contact lengths with s->nn_R0 when it is above 0
+ * (the radius the network's data referred to), else the tire's R0. A model that
  * fails on a case does not stop the comparison: its entry records why. Timing repeats each
  * model's pass over all cases until s->min_time has passed and keeps the fastest pass.
  * *out must be freed with tirenv_compare_result_free, also after a failure. TIRENV_EINVAL

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "study/compare_impl.h"
 #include "tirenv/io.h"
 #include "tirenv/rig.h"
 #include "tirenv/train.h"
@@ -225,35 +226,13 @@ static int outside_dataset(const tirenv_tire *tire, tirenv_dataset *out,
     return status;
 }
 
-static void own_dataset_free(tirenv_dataset *ds)
-{
-    for (size_t i = 0; i < ds->n; ++i)
-        tirenv_curve_free(&ds->cases[i].curve);
-    free(ds->cases);
-    memset(ds, 0, sizeof *ds);
-}
-
 /* ---- the report's own account ------------------------------------------------------------- */
-
-/* Mean RMS (m) of each model over the compared cases, NaN where it failed. */
-static double mean_rms(const tirenv_compare_result *r, size_t model)
-{
-    double sum = 0;
-    size_t n = 0;
-    for (size_t c = 0; c < r->n_cases; ++c) {
-        const double e = r->entry[c * r->n_models + model].errors.rms;
-        if (isfinite(e)) {
-            sum += e;
-            ++n;
-        }
-    }
-    return n ? sum / (double)n : NAN;
-}
 
 static void append_model_means(FILE *fp, const tirenv_compare_result *r)
 {
     for (size_t m = 0; m < r->n_models; ++m)
-        fprintf(fp, "%s%s %.2f mm", m ? ", " : "", r->model[m], 1e3 * mean_rms(r, m));
+        fprintf(fp, "%s%s %.2f mm", m ? ", " : "", r->model[m],
+                1e3 * tirenv_compare__mean_rms(r, m, NULL));
 }
 
 static void fit_table(FILE *fp, const tirenv_fit_report *fit)
@@ -336,7 +315,8 @@ static char *study_notes(const tirenv_fit_report *fit, const tirenv_fit_report *
         if (strcmp(out_r->model[m], "springs") == 0)
             springs_m = m;
     if (nn_m >= 0) {
-        const double ratio = mean_rms(out_r, (size_t)nn_m) / mean_rms(out_r, springs_m);
+        const double ratio = tirenv_compare__mean_rms(out_r, (size_t)nn_m, NULL) /
+                             tirenv_compare__mean_rms(out_r, springs_m, NULL);
         fprintf(fp, ". Outside its training range the network's mean error is %.1f times the "
                     "physical model's%s. Plots: [outside/](outside/report.md).\n\n",
                 ratio, ratio > 1 ? ": the physical model generalises, the network does not"
@@ -448,8 +428,8 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     tirenv_compare_result_free(&out_r);
     tirenv_nn_free(nn);
     tirenv_nn_free(nn_phys);
-    own_dataset_free(&phys_ds);
-    own_dataset_free(&out_ds);
+    tirenv_dataset_free(&phys_ds);
+    tirenv_dataset_free(&out_ds);
     for (size_t i = 0; i < N_OUTSIDE; ++i)
         tirenv_profile_free(profiles[i]);
     tirenv_dataset_free(&ds);

@@ -30,8 +30,8 @@
 
 #include "train/train_impl.h"
 
-/* Rows of J formed at a time: 256 x 56 doubles (112 KiB) stay in L2. A multiple of 4, the
- * rows lm_accumulate takes together. */
+/* Rows of J formed at a time: 256 x 56 doubles (112 KiB) stay in L2. A multiple of
+ * LM_BLOCK, the rows lm_accumulate takes together. */
 enum { LM_ROWS = 256 };
 
 /* Columns of J^T J summed together: one AVX-512 register of doubles. Rows of J and of J^T J
@@ -229,8 +229,8 @@ static inline void lm_axpy(double *a, const double *c, size_t c_stride, const do
 }
 
 /* A += sum_k g_k g_k^T and b += sum_k r_k g_k over m rows g_k of J (stride P, zero columns
- * past p, and zero rows up to a multiple of 4). Four rows at a time, so each row of A is
- * loaded and stored once per four; LM_LANES columns at a time, so the lower triangle is
+ * past p, and zero rows up to a multiple of LM_BLOCK). LM_BLOCK rows at a time, so each row
+ * of A is loaded and stored once per block; LM_LANES columns at a time, so the lower triangle is
  * rounded up to whole groups and a few entries above the diagonal are summed too (never
  * read). This replaces gslcblas's reference dsyrk, which took 70 % of an LM run. */
 LM_CLONES static void lm_accumulate(size_t m, size_t p, size_t P, const double *restrict J,
@@ -257,7 +257,7 @@ static double lm_normal_equations(lm_state *st, tirenv_nn *nn, const tirenv_samp
     memset(st->b, 0, P * sizeof(double));
     for (size_t k0 = 0; k0 < train->n; k0 += LM_ROWS) {
         const size_t m = train->n - k0 < LM_ROWS ? train->n - k0 : LM_ROWS;
-        const size_t m4 = (m + LM_BLOCK - 1) / LM_BLOCK * LM_BLOCK;
+        const size_t m_blk = (m + LM_BLOCK - 1) / LM_BLOCK * LM_BLOCK;
         for (size_t k = 0; k < m; ++k) {
             double *g = st->Jc + k * P;
             const double y = tirenv_nn_gradient(nn, train->x + (k0 + k) * n_in, g);
@@ -267,11 +267,11 @@ static double lm_normal_equations(lm_state *st, tirenv_nn *nn, const tirenv_samp
             for (size_t j = 0; j < p; ++j)
                 g[j] *= inv_std;
         }
-        for (size_t k = m; k < m4; ++k) {  /* the zero rows of a short last block */
+        for (size_t k = m; k < m_blk; ++k) {  /* the zero rows of a short last block */
             memset(st->Jc + k * P, 0, P * sizeof(double));
             st->yc[k] = 0;
         }
-        lm_accumulate(m4, p, P, st->Jc, st->yc, st->A, st->b);
+        lm_accumulate(m_blk, p, P, st->Jc, st->yc, st->A, st->b);
     }
     for (size_t j = 0; j < p; ++j)
         gsl_vector_set(st->g, j, st->b[j]);
