@@ -39,6 +39,11 @@ typedef struct {
     size_t rebuilds;       /* windows built */
 } tirenv_stream_stats;
 
+/* Number of positions x_k = x_from + k*dx (m, dx > 0, x_to >= x_from) up to x_to plus a
+ * billionth of a step, so that 0 .. 1 at 0.1 gives 11 despite rounding: the sweeps of the CLI
+ * and of tirenv_model_stream. */
+size_t tirenv_positions_count(double x_from, double x_to, double dx);
+
 /* Evaluates the positions x_k = x_from + k*dx (m) up to x_to (m; as the CLI's sweep) at load
  * (N), reading vertices from in only as far as the tire's reach ahead needs, and passing each
  * point to sink. Equals tirenv_model_set + tirenv_model_envelope over the whole file bit for

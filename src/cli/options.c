@@ -380,19 +380,13 @@ int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t 
                   x_from, x_to);
         return CLI_EXIT_USAGE;
     }
-    const double limit = x_to + dx * 1e-9;
-    const double steps = floor((limit - x_from) / dx);
+    const double steps = floor((x_to + dx * 1e-9 - x_from) / dx);
     if (!(steps < CLI_MAX_POSITIONS)) {
         cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1,
                   CLI_MAX_POSITIONS);
         return CLI_EXIT_USAGE;
     }
-    size_t n = (size_t)steps + 1;
-    /* The division can land one step off either way; the product decides. */
-    while (n > 1 && x_from + (double)(n - 1) * dx > limit)
-        --n;
-    while (x_from + (double)n * dx <= limit)
-        ++n;
+    const size_t n = tirenv_positions_count(x_from, x_to, dx);
     double *x = malloc(n * sizeof *x);
     if (!x)
         return cli_fail(TIRENV_ENOMEM, NULL);

@@ -96,12 +96,11 @@ static int window_profile(const window *w, tirenv_profile **p, tirenv_diag *diag
     return *p ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
 }
 
-/* The positions as the CLI's sweep makes them (cli_positions): x_from + k*dx while not
- * beyond x_to by more than a billionth of a step. */
-static size_t position_count(double x_from, double x_to, double dx)
+size_t tirenv_positions_count(double x_from, double x_to, double dx)
 {
     const double limit = x_to + dx * 1e-9;
     size_t n = (size_t)floor((limit - x_from) / dx) + 1;
+    /* The division can land one step off either way; the product decides. */
     while (n > 1 && x_from + (double)(n - 1) * dx > limit)
         --n;
     while (x_from + (double)n * dx <= limit)
@@ -130,7 +129,7 @@ int tirenv_model_stream(tirenv_model *m, tirenv_profile_reader *in, double x_fro
     if (!status && !(status = window_profile(&w, &p, diag)))
         status = tirenv_model_set(m, p, load, diag);
     const double r = tirenv_model_reach(m), ahead = 2 * r;
-    const size_t n = status ? 0 : position_count(x_from, x_to, dx);
+    const size_t n = status ? 0 : tirenv_positions_count(x_from, x_to, dx);
     int have_window = 0;
     for (size_t k = 0; k < n && !status; ++k) {
         const double x = x_from + (double)k * dx;
