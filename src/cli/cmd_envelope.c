@@ -316,10 +316,8 @@ int cli_envelope_main(int argc, char *argv[])
             fputs(header, out.fp);
             for (size_t k = 0; k < n; ++k)
                 write_row(out.fp, &pt[k]);
-            if (ferror(out.fp))
-                status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
         }
-        if (!status)
+        if (!status)  /* commit checks the writes and removes the file if one failed */
             status = tirenv_outfile_commit(&out, &diag);
         else
             tirenv_outfile_abort(&out);

@@ -224,12 +224,7 @@ static int write_curve(const char *path, size_t n, const double x[], const doubl
         for (size_t k = 0; k < n; ++k)
             fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k],
                     slope[k], load);
-        if (ferror(out.fp)) {
-            tirenv_outfile_abort(&out);
-            status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
-        } else {
-            status = tirenv_outfile_commit(&out, &diag);
-        }
+        status = tirenv_outfile_commit(&out, &diag);  /* it checks the writes */
     }
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
