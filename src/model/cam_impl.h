@@ -41,9 +41,14 @@ static inline double tirenv_cam__edge(const tirenv_cam__geom *g, double tc)
  * of the lift above the segment's line under the bottom. Five exp/log. */
 void tirenv_cam__tangent(const tirenv_cam__geom *g, double m, double *u, double *rise);
 
-/* The drop floor's grid: 32 steps per octave of t, from 2^-FLOOR_OCTAVES up to 1. */
+/* The drop floor's grid: 2^FLOOR_BITS steps per octave of t (the top FLOOR_BITS bits of the
+ * mantissa), from 2^-FLOOR_OCTAVES up to 1; FLOOR_SHIFT drops the rest of a double's bits
+ * and FLOOR_I0 is the step index of 2^-FLOOR_OCTAVES in those bits. */
+#define TIRENV_CAM__FLOOR_BITS 5
 #define TIRENV_CAM__FLOOR_OCTAVES 32
-#define TIRENV_CAM__FLOOR_N (32 * TIRENV_CAM__FLOOR_OCTAVES)
+#define TIRENV_CAM__FLOOR_N ((1 << TIRENV_CAM__FLOOR_BITS) * TIRENV_CAM__FLOOR_OCTAVES)
+#define TIRENV_CAM__FLOOR_SHIFT (52 - TIRENV_CAM__FLOOR_BITS)
+#define TIRENV_CAM__FLOOR_I0 ((int64_t)(1023 - TIRENV_CAM__FLOOR_OCTAVES) << TIRENV_CAM__FLOOR_BITS)
 
 /* A lower bound on the cam's edge drop -tirenv_cam__edge, as a function of t, without a pow:
  * the drop grows with t, so on each step [t_i, t_i+1) it is at least its value d_i at t_i.
@@ -62,8 +67,8 @@ static inline size_t tirenv_cam__floor_step(double t)
 {
     uint64_t bits;
     memcpy(&bits, &t, sizeof bits);
-    const int64_t i_0 = (int64_t)(1023 - TIRENV_CAM__FLOOR_OCTAVES) << 5; /* 2^-OCTAVES's */
-    const int64_t i = (int64_t)((bits >> 47) & 0xffff) - i_0; /* & 0xffff: -0 as 0 */
+    /* & 0xffff: -0 as 0 */
+    const int64_t i = (int64_t)((bits >> TIRENV_CAM__FLOOR_SHIFT) & 0xffff) - TIRENV_CAM__FLOOR_I0;
     return (size_t)(i < 0 ? 0 : i < TIRENV_CAM__FLOOR_N ? i : TIRENV_CAM__FLOOR_N - 1);
 }
 

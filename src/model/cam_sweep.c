@@ -13,10 +13,9 @@
  * ends at t = 1. */
 static void floor_set(tirenv_cam__floor *f, const tirenv_cam__geom *g)
 {
-    const uint64_t i_0 = (uint64_t)(1023 - TIRENV_CAM__FLOOR_OCTAVES) << 5;
     f->d[0] = 0.0;
     for (size_t i = 1; i < TIRENV_CAM__FLOOR_N; i++) {
-        const uint64_t bits = (i_0 + i) << 47;
+        const uint64_t bits = ((uint64_t)TIRENV_CAM__FLOOR_I0 + i) << TIRENV_CAM__FLOOR_SHIFT;
         double t;
         memcpy(&t, &bits, sizeof t);
         f->d[i] = -tirenv_cam__edge(g, pow(t, g->c_e)) * (1.0 - 1e-9);
