@@ -16,12 +16,10 @@ static int is_size(double v)
  * NULL here rather than as a corrupt profile inside a model. */
 static tirenv_profile *checked(tirenv_profile *p)
 {
-    if (p && tirenv_profile_validate(p->n, p->x, p->z, NULL) != TIRENV_OK) {
+    if (p && tirenv_profile__finish(p, NULL) != TIRENV_OK) {
         tirenv_profile_free(p);
         return NULL;
     }
-    if (p)
-        tirenv_profile__seal(p);
     return p;
 }
 

@@ -190,3 +190,11 @@ int tirenv_profile__level(const struct tirenv_profile *p, double lo, double hi, 
     *level = z0;
     return 1;
 }
+
+int tirenv_profile__finish(struct tirenv_profile *p, tirenv_diag *diag)
+{
+    const int status = tirenv_profile_validate(p->n, p->x, p->z, diag);
+    if (!status)
+        tirenv_profile__seal(p);
+    return status;
+}

@@ -37,6 +37,10 @@ struct tirenv_profile *tirenv_profile__new(size_t n);
  * O(n). */
 void tirenv_profile__seal(struct tirenv_profile *p);
 
+/* A generator's last step: validates the filled profile (tirenv_profile_validate's errors)
+ * and seals it. On failure the caller still owns and frees p. */
+int tirenv_profile__finish(struct tirenv_profile *p, tirenv_diag *diag);
+
 /* Index k of the last vertex with x_k <= x, found by binary search in O(log n); 0 when
  * x < x_0 (callers tell the left flat extension apart by x < p->x[0]). At a wall
  * (x_k == x_{k+1} == x) this is the wall's second vertex k+1. Segment k is [x_k, x_{k+1}]

@@ -153,12 +153,9 @@ int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
         p->x[j] = (double)j * s->dx;
         p->z[j] = c[j] - c[0];
     }
-    if (tirenv_profile_validate(p->n, p->x, p->z, diag) == TIRENV_OK) {
-        tirenv_profile__seal(p);
+    if (!(status = tirenv_profile__finish(p, diag))) {
         *out = p;
         p = NULL;
-    } else {
-        status = TIRENV_EINVAL;
     }
 done:
     tirenv_profile_free(p);
