@@ -3,7 +3,6 @@
 #include "testutil.h"
 #include "tirenv/vehicle.h"
 
-#include <dirent.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,5 @@
 /* tirenv envelope: the enveloping curve of one model over one obstacle, as CSV.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 

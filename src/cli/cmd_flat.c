@@ -1,7 +1,6 @@
 /* tirenv flat: the tire's state on flat ground, at one load or at the paper's three working
  * regimes. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
-#include <string.h>
 
 #include "cli/cli.h"
 

@@ -1,9 +1,7 @@
 /* tirenv ride: the pitch-plane tractor driven over a profile by each axle's effective
  * profile, for several models and speeds, with ISO 2631-1 comfort figures.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"

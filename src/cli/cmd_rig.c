@@ -1,7 +1,6 @@
 /* tirenv rig: the virtual rig, a cart run over an obstacle written as a raw log.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
-#include <string.h>
 
 #include "cli/cli.h"
 

@@ -1,7 +1,6 @@
 /* tirenv train: the empirical model's network trained on a data set (MODEL.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <limits.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
