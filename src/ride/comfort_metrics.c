@@ -138,32 +138,31 @@ static void running(const double a_w[], size_t n, double N_div, size_t N, double
     *max = m;
 }
 
-int tirenv_comfort_running_rms(const double a_w[], size_t n, double fs, double tau,
-                               double out[], tirenv_diag *diag)
-{
-    double N_div = 1.0, max;
-    size_t N = 1;
-    int status = window(n, fs, tau, &N_div, &N, diag);
-    if (!status)
-        status = check_samples(a_w, n, diag);
-    if (status)
-        return status;
-    running(a_w, n, N_div, N, out, &max);
-    return TIRENV_OK;
-}
-
-int tirenv_comfort_mtvv(const double a_w[], size_t n, double fs, double tau, double *mtvv,
-                        tirenv_diag *diag)
+/* The checks both public entries need, then the running r.m.s. */
+static int checked_running(const double a_w[], size_t n, double fs, double tau, double out[],
+                           double *max, tirenv_diag *diag)
 {
     double N_div = 1.0;
     size_t N = 1;
     int status = window(n, fs, tau, &N_div, &N, diag);
     if (!status)
         status = check_samples(a_w, n, diag);
-    if (status)
-        return status;
-    running(a_w, n, N_div, N, NULL, mtvv);
-    return TIRENV_OK;
+    if (!status)
+        running(a_w, n, N_div, N, out, max);
+    return status;
+}
+
+int tirenv_comfort_running_rms(const double a_w[], size_t n, double fs, double tau,
+                               double out[], tirenv_diag *diag)
+{
+    double max;
+    return checked_running(a_w, n, fs, tau, out, &max, diag);
+}
+
+int tirenv_comfort_mtvv(const double a_w[], size_t n, double fs, double tau, double *mtvv,
+                        tirenv_diag *diag)
+{
+    return checked_running(a_w, n, fs, tau, NULL, mtvv, diag);
 }
 
 int tirenv_comfort_metrics_compute(const double a_w[], size_t n, double fs,
