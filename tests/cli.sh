@@ -171,7 +171,7 @@ check "--method secant (the paper's eq. 2) over a cleat: exit 0, full curve" \
 run "$bin" envelope --model springs $cleat_F -o n.csv
 check "secant and newton curves agree to 1e-7 m" 'same_h s.csv n.csv 1e-7'
 
-# The independent reference curves of MODEL.md section 4, through --set and the CLI's sweep.
+# The independent reference curves of docs/models.md section 4, through --set and the CLI's sweep.
 ref=$data/springs-reference.csv
 for c in 1 2 3 4; do
     # shellcheck disable=SC2046 # one line of numbers, split on purpose

@@ -1,4 +1,4 @@
-/* The tandem elliptical cam (MODEL.md section 7): the basic function against its closed form,
+/* The tandem elliptical cam (docs/models.md section 7): the basic function against its closed form,
  * a brute-force oracle, its limits, the tandem's symmetry and double hump, the model type and
  * the MF-Swift example file, and the model's sweeps against single lifts, bit for bit.
  * SPDX-License-Identifier: GPL-3.0-or-later
@@ -35,7 +35,7 @@ static double edge(const tirenv_cam_shape *s, double d)
     return t <= 1 ? s->b_e * (pow(1 - pow(t, s->c_e), 1 / s->c_e) - 1) : -INFINITY;
 }
 
-/* MODEL.md's reference: over a step of height h < b_e the rise starts
+/* docs/models.md section 7: over a step of height h < b_e the rise starts
  * x_0 = a_e*(1 - (1 - h/b_e)^c_e)^(1/c_e) before the step, where the edge reaches its top. */
 static double x_rise(const tirenv_cam_shape *s, double h)
 {
@@ -234,8 +234,8 @@ static void test_rigid_disc(void **state)
     }
 }
 
-/* What a huge or tiny b_e tends to (MODEL.md says "the rigid disc"; that holds for c_e = 2,
- * a_e = b_e = R0 above, not for b_e -> infinity). As b_e grows the edge's drop
+/* What a huge or tiny b_e tends to (an early draft of the spec said "the rigid disc"; that holds for
+ * c_e = 2, a_e = b_e = R0 above, not for b_e -> infinity). As b_e grows the edge's drop
  * b_e*(1 - g(t)) >= b_e*t^c/c (from (1 - y)^(1/c) <= 1 - y/c) grows without bound at any
  * t > 0: the cam becomes a point follower, Z -> q(x). A corner of height H above the ground
  * under x can only lift it within d_max = a_e*(c*H/b_e)^(1/c) of the corner, and elsewhere

@@ -1,4 +1,4 @@
-/* Curves: storage, the normalised position x_N (MODEL.md section 1), the CSV format with its
+/* Curves: storage, the normalised position x_N (docs/models.md section 1), the CSV format with its
  * errors, and data sets (manifest, curve files, logs imported on reading).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"

@@ -1,4 +1,4 @@
-/* The network (MODEL.md section 6): layout, initialisation, scaling, evaluation against a
+/* The network (docs/models.md section 6): layout, initialisation, scaling, evaluation against a
  * plain reference, batch against single samples, back-propagation against finite
  * differences, and the enveloping model built on it.
  * SPDX-License-Identifier: GPL-3.0-or-later

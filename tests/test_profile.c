@@ -1,4 +1,4 @@
-/* Profile object and generators (MODEL.md section 2).
+/* Profile object and generators (docs/models.md section 2).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * Tolerances. Heights here are O(0.1 m); an interpolation is three or four rounded

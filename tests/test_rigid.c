@@ -1,4 +1,4 @@
-/* The rigid disc (MODEL.md section 3) against closed forms and a brute-force oracle.
+/* The rigid disc (docs/models.md section 3) against closed forms and a brute-force oracle.
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * Tolerances. Centre heights are below 1 m; the implementation and each closed form take a

@@ -1,4 +1,4 @@
-/* The flexible-ring reference tire (MODEL.md section 5): the prototype's figures, the limit
+/* The flexible-ring reference tire (docs/models.md section 5): the prototype's figures, the limit
  * where it is the springs model, the contact conditions, symmetry, derivative, lugs. */
 #include <math.h>
 #include <stdio.h>
@@ -85,7 +85,7 @@ static void test_cleat_curves_match_prototype(void **state)
 }
 
 /* With no bending, no pretension and a rigid tread the ring is the pure radial springs model
- * with c_r = k_f R (MODEL.md section 5). The tread's compliance 1/k_t is left: with
+ * with c_r = k_f R (docs/models.md section 5). The tread's compliance 1/k_t is left: with
  * k_t = 1e6 k_f the curves differ by about 1e-6 of the deflection, far below 1e-7 m. */
 static void test_reduces_to_springs(void **state)
 {

@@ -1,5 +1,5 @@
-/* The pruned scans of the rigid disc (block maxima, MODEL.md section 3) and of the elliptical
- * cam (MODEL.md section 7) against the plain scans they replace, on long random polylines and
+/* The pruned scans of the rigid disc (block maxima, docs/models.md section 3) and of the elliptical
+ * cam (docs/models.md section 7) against the plain scans they replace, on long random polylines and
  * roads: equal bit for bit, contact point included.
  * SPDX-License-Identifier: GPL-3.0-or-later
  *

@@ -1,4 +1,4 @@
-/* The springs model (MODEL.md section 4): closed forms, limits, LCP conditions, symmetry,
+/* The springs model (docs/models.md section 4): closed forms, limits, LCP conditions, symmetry,
  * refinement, derivatives, methods, and an independent implementation. */
 #include <math.h>
 #include <stdio.h>
@@ -96,7 +96,7 @@ static void test_lcp_conditions(void **state)
     gsl_rng_free(rng);
 }
 
-/* Curves agree with an independent implementation of MODEL.md section 4
+/* Curves agree with an independent implementation of docs/models.md section 4
  * (../shared/reference/springs-reference.csv, copied to tests/data). The file has 9 decimals
  * (5e-10 m rounding) and our equilibrium stops within 1e-10 m, so 1e-9 m is the bound; the
  * issue asks for 0.1 mm. */

@@ -1,4 +1,4 @@
-/* The comparison (MODEL.md section 8): curve errors on hand-made curves with known answers,
+/* The comparison (docs/models.md section 8): curve errors on hand-made curves with known answers,
  * per-case predictions against the curves that generated them, and tirenv_compare end to end
  * on a small synthetic data set, down to the images gnuplot draws. */
 #include <dirent.h>
@@ -140,7 +140,7 @@ static void test_metrics_errors(void **state)
 /* ---- predictions -------------------------------------------------------------------------- */
 
 /* One case over an L x H cleat at contact length l_c: points on x_N from -0.15 to 1 (the
- * convention of MODEL.md section 1, with the tire's R0), h left zero. */
+ * convention of docs/models.md section 1, with the tire's R0), h left zero. */
 static void case_init(tirenv_case *c, const char *name, tirenv_split split, double l_c,
                       double load, double L, double H, double R0, size_t n)
 {

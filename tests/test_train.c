@@ -1,4 +1,4 @@
-/* Training (MODEL.md section 6): each trainer learns a known smooth function on the embedded
+/* Training (docs/models.md section 6): each trainer learns a known smooth function on the embedded
  * data set's 28-case design, early stopping keeps the best control weights, restarts keep the
  * best restart, runs are bit-for-bit reproducible, and model files round-trip exactly and
  * refuse every kind of damage with a message naming file and field.

@@ -1,15 +1,14 @@
-/* tirenv: the tandem elliptical cam, the effective road model of MF-Swift (MODEL.md
+/* tirenv: the tandem elliptical cam, the effective road model of MF-Swift (docs/models.md
  * section 7). The model type is tirenv_model_cam in model.h; these are its geometric parts.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_CAM_H
 #define TIRENV_CAM_H
 
+#include "tirenv/decls.h"
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* One cam: the super-ellipse |u/a_e|^c_e + |v/b_e|^c_e = 1 (u along the road, v up). */
 typedef struct {
@@ -34,7 +33,5 @@ double tirenv_cam_lift(const tirenv_profile *p, const tirenv_cam_shape *cam, dou
 int tirenv_cam_tandem(const tirenv_profile *p, const tirenv_cam_shape *cam, double l_s,
                       double x, double *w, double *tan_beta);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

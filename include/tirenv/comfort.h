@@ -4,12 +4,11 @@
 #ifndef TIRENV_COMFORT_H
 #define TIRENV_COMFORT_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* ---- Frequency weightings (ISO 2631-1 Annex A; src/ride/comfort_weighting.c) ---- */
 
@@ -181,7 +180,5 @@ size_t tirenv_welch_bins(const tirenv_welch *w);
 int tirenv_welch_psd(tirenv_welch *w, const double x[], size_t n, double fs, double psd[],
                      size_t *segments, tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

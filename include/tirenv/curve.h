@@ -1,14 +1,13 @@
 /* tirenv: measured or simulated enveloping curves, approach half, on an x_N grid
- * (MODEL.md section 1), and the normalised position itself. */
+ * (docs/models.md section 1), and the normalised position itself. */
 #ifndef TIRENV_CURVE_H
 #define TIRENV_CURVE_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* The approach half of an enveloping curve over a symmetric obstacle centred at x = 0. */
 typedef struct {
@@ -23,7 +22,7 @@ int tirenv_curve_alloc(tirenv_curve *c, size_t n);
 /* Frees the arrays and zeroes c; NULL or an empty curve is a no-op. */
 void tirenv_curve_free(tirenv_curve *c);
 
-/* x_0 of MODEL.md section 1 (m, obstacle coordinates): where the free circle of radius R0 at
+/* x_0 of docs/models.md section 1 (m, obstacle coordinates): where the free circle of radius R0 at
  * the chord height sqrt(R0^2 - (l_c/2)^2) touches the leading top corner (-L/2, H). NaN if
  * the corner is out of reach. */
 double tirenv_xN_origin(double R0, double l_c, double L, double H);
@@ -36,7 +35,5 @@ int tirenv_curve_read_csv(const char *path, tirenv_curve *out, tirenv_diag *diag
 int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *comment,
                            tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -3,15 +3,14 @@
 #ifndef TIRENV_DATASET_H
 #define TIRENV_DATASET_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/curve.h"
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 #include "tirenv/tire.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 typedef enum {
     TIRENV_SPLIT_TRAIN = 0,   /* fits and trains on it */
@@ -67,7 +66,5 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                          void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
                          tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

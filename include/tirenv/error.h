@@ -2,11 +2,10 @@
 #ifndef TIRENV_ERROR_H
 #define TIRENV_ERROR_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* Every function that can fail returns one of these; 0 is success. */
 typedef enum {
@@ -50,7 +49,5 @@ int tirenv_error(tirenv_diag *diag, int status, const char *file, size_t line,
  * buf of size n; returns buf. */
 char *tirenv_diag_format(const tirenv_diag *diag, char *buf, size_t n);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

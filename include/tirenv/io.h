@@ -3,14 +3,13 @@
 #ifndef TIRENV_IO_H
 #define TIRENV_IO_H
 
+#include "tirenv/decls.h"
 #include <stdio.h>
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 #include "tirenv/tire.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* Reads a .tir file (sections in brackets, KEY = value, '$' comments, [UNITS] in SI) into
  * *tire, overriding only the keys present. Keys this library knows (see data/tires/default.tir)
@@ -49,7 +48,5 @@ void tirenv_outfile_comment(tirenv_outfile *f, const char *text);
 /* Closes and removes the temporary file (after a failure); safe to call twice. */
 void tirenv_outfile_abort(tirenv_outfile *f);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

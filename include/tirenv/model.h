@@ -2,23 +2,22 @@
 #ifndef TIRENV_MODEL_H
 #define TIRENV_MODEL_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 #include "tirenv/tire.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
-/* One position of the enveloping curve (MODEL.md sections 1 and 4). */
+/* One position of the enveloping curve (docs/models.md sections 1 and 4). */
 typedef struct {
     double x;              /* tire-centre longitudinal position, m */
     double z;              /* tire-centre height at equilibrium, m */
     double h;              /* effective profile height z - z_flat, m */
     double slope;          /* effective road slope tan(beta) = -fx/fz, the inclination of the
                             * resultant ground force (MF-Swift's effective slope); for the cam
-                            * exactly (Z_f - Z_r)/l_s (MODEL.md 7) */
+                            * exactly (Z_f - Z_r)/l_s (docs/models.md section 7) */
     double fx;             /* longitudinal hub force (positive forward), N */
     double fz;             /* vertical hub force (equals the load at equilibrium), N */
     size_t contacts;       /* elements (or contact points) touching the ground */
@@ -38,8 +37,8 @@ typedef struct {
 typedef struct tirenv_model_type tirenv_model_type;
 extern const tirenv_model_type *tirenv_model_rigid;
 extern const tirenv_model_type *tirenv_model_springs;
-extern const tirenv_model_type *tirenv_model_ring;  /* the reference tire (MODEL.md 5) */
-extern const tirenv_model_type *tirenv_model_cam;   /* tandem elliptical cam (MODEL.md 7) */
+extern const tirenv_model_type *tirenv_model_ring;  /* reference tire, docs/models.md section 5 */
+extern const tirenv_model_type *tirenv_model_cam;   /* tandem cam, docs/models.md section 7 */
 
 /* The type with this name ("rigid", "springs", "ring", "cam"), or NULL. */
 const tirenv_model_type *tirenv_model_type_find(const char *name);
@@ -94,7 +93,5 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
                           size_t *failed, tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -1,17 +1,16 @@
 /* tirenv: the empirical enveloping model, a small fully connected feed-forward network
- * (paper, Tables 1 and 2; MODEL.md section 6). Logistic hidden layers, one identity output.
+ * (paper, Tables 1 and 2; docs/models.md section 6). Logistic hidden layers, one identity output.
  * Training is in train.h, which also holds the model file (it records how the net was
  * trained). SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_NN_H
 #define TIRENV_NN_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include <gsl/gsl_rng.h>
 #include "tirenv/error.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 #define TIRENV_NN_MAX_LAYERS 6   /* layers counting input and output: up to 4 hidden */
 #define TIRENV_NN_MAX_WIDTH 64   /* neurons in any layer */
@@ -19,7 +18,7 @@ extern "C" {
 /* The inputs of the enveloping model in the paper's order (Table 1: normalised position,
  * working regime, obstacle height, obstacle length); its one output is h, m. */
 enum {
-    TIRENV_NN_X_N = 0,           /* normalised position x_N (MODEL.md section 1) */
+    TIRENV_NN_X_N = 0,           /* normalised position x_N (docs/models.md section 1) */
     TIRENV_NN_CONTACT_LENGTH,    /* contact length l_c, m */
     TIRENV_NN_HEIGHT,            /* obstacle height H, m */
     TIRENV_NN_LENGTH,            /* obstacle length L, m */
@@ -102,7 +101,7 @@ void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], d
 
 /* The enveloping model: h (m) at tire-centre positions x[] (m) over a rectangular cleat of
  * length L and height H (m) centred at x = 0, at contact length l_c (m), for a tire of free
- * radius R0 (m). The approach half x <= 0 is the network at x_N(x) (MODEL.md section 1); the
+ * radius R0 (m). The approach half x <= 0 is the network at x_N(x) (docs/models.md section 1); the
  * other half is its mirror image; h = 0 before the lowest x_N seen in training (the tire is
  * still on flat ground) and where the network says h < 0 (a cleat cannot lower the centre).
  * Needs a 4-input net (TIRENV_NN_INPUTS). TIRENV_EINVAL for non-physical arguments,
@@ -111,7 +110,5 @@ void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], d
 int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
                        const double x[], double h[], tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

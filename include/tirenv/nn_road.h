@@ -1,7 +1,7 @@
 /* tirenv: the empirical model (nn.h) over any ground profile, by equivalent-cleat
  * decomposition with max-plus superposition. SPDX-License-Identifier: GPL-3.0-or-later
  *
- * A MODEL CHOICE BEYOND THE PAPER. The network of MODEL.md section 6 was trained on single
+ * A MODEL CHOICE BEYOND THE PAPER. The network of docs/models.md section 6 was trained on single
  * rectangular cleats on flat ground; the paper says nothing about other profiles. This module
  * extends it as follows, and the result is only as good as that extension (it has not been
  * validated against a physical model or a rig over roads):
@@ -30,14 +30,13 @@
 #ifndef TIRENV_NN_ROAD_H
 #define TIRENV_NN_ROAD_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/nn.h"
 #include "tirenv/profile.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* How the decomposition is built. */
 typedef struct {
@@ -109,7 +108,5 @@ double tirenv_nn_road_baseline(const tirenv_nn_road *r, double x);
 const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r);
 tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -1,13 +1,12 @@
-/* tirenv: 2-D ground profiles (MODEL.md section 2). */
+/* tirenv: 2-D ground profiles (docs/models.md section 2). */
 #ifndef TIRENV_PROFILE_H
 #define TIRENV_PROFILE_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* A ground profile: a polyline (x_k, z_k), k = 0..n-1, with non-decreasing x. Two consecutive
  * vertices with equal x form a vertical wall. Outside [x_0, x_{n-1}] the ground is flat at the
@@ -49,7 +48,5 @@ tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments); /* insc
 tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double periods,
                                     size_t points_per_period);    /* A(1-cos(2pi x/wl)), x>=0 */
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

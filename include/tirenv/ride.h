@@ -1,17 +1,16 @@
 /* tirenv: ride simulation of a pitch-plane tractor driven by each axle's effective profile
- * (issue 7). SPDX-License-Identifier: GPL-3.0-or-later */
+ * (docs/models.md section 9). SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_RIDE_H
 #define TIRENV_RIDE_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/model.h"
 #include "tirenv/profile.h"
 #include "tirenv/vehicle.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* What an axle's tires follow: heights w (m) on a uniform grid x_k = x0 + k*dx, joined by
  * GSL's Steffen interpolation, which is monotone between samples (no overshoot at a cleat's
@@ -83,7 +82,5 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
  * inputs are constant. For tests and diagnostics. */
 double tirenv_ride_energy(const tirenv_vehicle *v, const tirenv_ride_sample *s);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

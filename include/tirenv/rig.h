@@ -1,16 +1,15 @@
 /* tirenv: rig logs (t, x, z of the tire centre) to enveloping curves, and the virtual rig
- * (MODEL.md section 5; the paper's Figure 2). */
+ * (docs/models.md section 5; the paper's Figure 2). */
 #ifndef TIRENV_RIG_H
 #define TIRENV_RIG_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/curve.h"
 #include "tirenv/error.h"
 #include "tirenv/model.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* What the import needs to know about the run, and the output grid. */
 typedef struct {
@@ -72,7 +71,5 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
 int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char *comment,
                          tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

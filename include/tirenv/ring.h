@@ -1,16 +1,15 @@
-/* tirenv: the flexible-ring reference tire, node level (MODEL.md section 5). It drives the
+/* tirenv: the flexible-ring reference tire, node level (docs/models.md section 5). It drives the
  * virtual rig; tirenv/model.h offers it as the model "ring". */
 #ifndef TIRENV_RING_H
 #define TIRENV_RING_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 #include "tirenv/tire.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* Workspace of the ring model for one tire: nodes, the belt's compliance, and the state of
  * the last force evaluation. Evaluation never allocates. */
@@ -43,7 +42,5 @@ double tirenv_ring_patch_length(const tirenv_ring *r);
  * f_j (N) of the last evaluation, into arrays of tirenv_ring_size() entries (may be NULL). */
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

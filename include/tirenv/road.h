@@ -3,13 +3,12 @@
 #ifndef TIRENV_ROAD_H
 #define TIRENV_ROAD_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 #define TIRENV_ISO8608_N0 0.1            /* reference spatial frequency n0, cycles/m */
 #define TIRENV_ROAD_MAX_POINTS 33554432  /* 2^25 vertices, about 1 GB while generating */
@@ -43,7 +42,5 @@ double tirenv_road_psd(const tirenv_road_settings *s, double n);
 int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
                         tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -1,17 +1,16 @@
-/* tirenv: the radial + interradial springs model, element level (MODEL.md section 4).
+/* tirenv: the radial + interradial springs model, element level (docs/models.md section 4).
  * Most users want tirenv/model.h; this header exposes the parts for tests, plots of the
  * deformed tire, and models built on top. */
 #ifndef TIRENV_SPRINGS_H
 #define TIRENV_SPRINGS_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 #include "tirenv/tire.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* Workspace of the springs model for one tire: element angles, stiffnesses, and the state of
  * the last force evaluation. Evaluation never allocates. */
@@ -47,7 +46,5 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
 int tirenv_springs_lcp(size_t n, double k_r, double k_ir, const double d[], double w[],
                        double p[], double work[], size_t max_iter, size_t *passes);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -1,15 +1,14 @@
 /* tirenv: the enveloping curve over a profile read as it goes, in memory bounded by the
- * tire's reach rather than by the road's length (issue 6, point 2). */
+ * tire's reach rather than by the road's length. */
 #ifndef TIRENV_STREAM_H
 #define TIRENV_STREAM_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/model.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* A profile CSV ("x_m,z_m", as tirenv_profile_read_csv) read one vertex at a time. */
 typedef struct tirenv_profile_reader tirenv_profile_reader;
@@ -55,7 +54,5 @@ int tirenv_model_stream(tirenv_model *m, tirenv_profile_reader *in, double x_fro
                         double x_to, double dx, double load, tirenv_point_sink sink, void *ctx,
                         tirenv_stream_stats *stats, tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -1,17 +1,16 @@
-/* tirenv: the paper's study (MODEL.md section 8): identify the physical model on the training
+/* tirenv: the paper's study (docs/models.md section 8): identify the physical model on the training
  * cases, evaluate every model on a data set's cases, and measure how far each is off. This is
  * the convenience layer on top of the models, the data sets and the network. */
 #ifndef TIRENV_STUDY_H
 #define TIRENV_STUDY_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/dataset.h"
 #include "tirenv/error.h"
 #include "tirenv/model.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 typedef struct tirenv_nn tirenv_nn;  /* the network, tirenv/nn.h */
 
@@ -77,7 +76,7 @@ typedef struct {
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag);
 
-/* ---- Comparison (MODEL.md section 8; the paper's Table 3 and Figure 5) ------------------- */
+/* ---- Comparison (docs/models.md section 8; the paper's Table 3 and Figure 5) ------------ */
 
 #define TIRENV_COMPARE_MAX_MODELS 8   /* physical models plus the network */
 
@@ -186,7 +185,5 @@ tirenv_study_settings tirenv_study_default(void);
 
 int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -2,14 +2,13 @@
 #ifndef TIRENV_TIRE_H
 #define TIRENV_TIRE_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
-/* How the constant-load equilibrium F_z(x, z) = G_T is solved in z (MODEL.md section 4). */
+/* How the constant-load equilibrium F_z(x, z) = G_T is solved in z (docs/models.md section 4). */
 typedef enum {
     TIRENV_EQ_NEWTON = 0, /* default: Newton on dF_z/dz inside a bracket, bisection fallback */
     TIRENV_EQ_SECANT,     /* the paper's plain secant iteration (its eq. 2), for comparison */
@@ -27,7 +26,7 @@ typedef struct {
     double secant_dz;      /* secant only: offset of the second starting point, m */
 } tirenv_eq_settings;
 
-/* Parameters of the radial + interradial springs model (MODEL.md section 4); the rigid model
+/* Parameters of the radial + interradial springs model (docs/models.md section 4); the rigid model
  * uses R0 only. Stiffnesses are discretisation-independent: k_r = c_r*dphi, k_ir = c_b/dphi. */
 typedef struct {
     double R0;             /* [DIMENSION] UNLOADED_RADIUS: free radius, m */
@@ -37,7 +36,7 @@ typedef struct {
     double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
 } tirenv_springs_params;
 
-/* Parameters of the flexible-ring reference tire (MODEL.md section 5): a belt of radius
+/* Parameters of the flexible-ring reference tire (docs/models.md section 5): a belt of radius
  * R = R0 - t_r on an elastic foundation, with a tread layer of radial brush springs. Energy per
  * unit belt length: 1/2 EI ((w''+w)/R^2)^2 + 1/2 (T/R^2)(w'^2 - w^2) + 1/2 k_f w^2. */
 typedef struct {
@@ -52,7 +51,7 @@ typedef struct {
     double lug_ratio;      /* LUG_GROOVE_RATIO: tread stiffness between lugs / on lugs, (0, 1] */
 } tirenv_ring_params;
 
-/* Parameters of the tandem elliptical cam model (MODEL.md section 7), the MF-Tyre keys of
+/* Parameters of the tandem elliptical cam model (docs/models.md section 7), the MF-Tyre keys of
  * the same names, so that an MF-Tyre / MF-Swift property file supplies them unchanged. The cam
  * scales with R0 (springs.R0): a_e = ELLIPS_LENGTH*R0, b_e = ELLIPS_HEIGHT*R0. */
 typedef struct {
@@ -85,7 +84,5 @@ tirenv_tire tirenv_tire_default(void);
  * TIRENV_EINVAL with the offending key in diag. */
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

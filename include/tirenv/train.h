@@ -1,18 +1,17 @@
-/* tirenv: training the empirical model's network (MODEL.md section 6), and its model file.
+/* tirenv: training the empirical model's network (docs/models.md section 6), and its model file.
  * Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_TRAIN_H
 #define TIRENV_TRAIN_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include <stdint.h>
 #include "tirenv/dataset.h"
 #include "tirenv/error.h"
 #include "tirenv/nn.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* n samples of n_in inputs and one output, borrowed from the caller. For the enveloping
  * model the inputs are x_N, l_c (m), H (m), L (m) and the output is h (m). */
@@ -192,7 +191,5 @@ int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_tra
 int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
                         tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

@@ -1,14 +1,13 @@
-/* tirenv: the pitch-plane tractor of the ride simulation (issue 7) and its property file.
+/* tirenv: the pitch-plane tractor of the ride simulation and its property file.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_VEHICLE_H
 #define TIRENV_VEHICLE_H
 
+#include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+TIRENV_BEGIN_DECLS
 
 /* One axle: its tires as vertical spring-dampers in parallel (Kelvin-Voigt) acting on the
  * axle's effective profile, and, for the front axle, an optional suspension between the body
@@ -74,7 +73,5 @@ int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *d
  * file goes to another directory than the working one, so that it names the same tire. */
 int tirenv_vehicle_write(const char *path, const tirenv_vehicle *v, tirenv_diag *diag);
 
-#ifdef __cplusplus
-}
-#endif
+TIRENV_END_DECLS
 #endif

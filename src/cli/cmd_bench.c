@@ -49,7 +49,7 @@ static void usage(FILE *fp)
           "paper's eq. 2, brent). Reports the best of N runs, single-threaded. Then the\n"
           "rig-log import of a 10,000-sample log, read from CSV and from memory. Then the\n"
           "road: rigid, cam and springs (contact length 0.33 m) over a 1 km ISO 8608 class C\n"
-          "road at 10 mm (seed 1), 100,001 positions, against the targets of issue 6; and nn,\n"
+          "road at 10 mm (seed 1), 100,001 positions, against the project's targets; and nn,\n"
           "the network trained on the embedded data set (lm, seed 1) over the same road by\n"
           "equivalent-cleat decomposition, h and slope, the decomposition's build timed apart.\n"
           "Last the ride: the default tractor over that road at 10 km/h with point contact,\n"
@@ -210,7 +210,7 @@ static void print_table(long repeat, const bench_result r[])
         printf("  rigid / springs newton speed: %.1f x\n", r[1].best / r[0].best);
 }
 
-/* The rig-log import (issue 3 asks for well under 10 ms at 10,000 samples): a springs-model
+/* The rig-log import (target: well under 10 ms at 10,000 samples): a springs-model
  * run over the same cleat sampled to 10,000 samples, written as CSV, then read and imported
  * (and imported alone, from memory), best of repeat. */
 static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, long repeat)
@@ -264,8 +264,8 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
 
-/* The road (issue 6, "speed over roads"): a 1 km ISO 8608 class C road at 10 mm, seed 1, and
- * the centre x = 0 .. 1000 m at 10 mm. The targets are the issue's, on one core. */
+/* The road (speed over roads): a 1 km ISO 8608 class C road at 10 mm, seed 1, and
+ * the centre x = 0 .. 1000 m at 10 mm. The targets are the project's, on one core. */
 static const double road_l_c = 0.33, road_length = 1000.0, road_dx = 0.01; /* m */
 static const struct {
     const char *model;

@@ -1,5 +1,5 @@
 /* tirenv compare: every model against a data set's curves, as the paper's Table 3 and
- * Figure 5 do (MODEL.md section 8): plots, error tables, timing and a report.
+ * Figure 5 do (docs/models.md section 8): plots, error tables, timing and a report.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
 #include <stdlib.h>
@@ -280,7 +280,8 @@ int cli_compare_main(int argc, char *argv[])
     }
     char data_buf[1024], tire_buf[1024];
     if (!co.data) {
-        /* The embedded data set, simulated on the ring reference tire (MODEL.md 5). */
+        /* The embedded data set, simulated on the ring reference tire
+         * (docs/models.md section 5). */
         co.data = cli_data_path("dataset", data_buf, sizeof data_buf);
         if (!co.s.simulated_by)
             co.s.simulated_by = tirenv_model_ring;

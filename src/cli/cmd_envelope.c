@@ -20,7 +20,7 @@ static void usage(FILE *fp)
           "vertical load, one CSV row per centre position x:\n"
           "  x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n"
           "slope is the effective road slope tan(beta) = -fx/fz, the inclination of the ground\n"
-          "force (for the cam exactly (Z_f - Z_r)/l_s, MODEL.md section 7).\n"
+          "force (for the cam exactly (Z_f - Z_r)/l_s, docs/models.md section 7).\n"
           "A one-line summary (peak, first rise, iterations) goes to standard error.\n"
           "\n"
           "options:\n",

@@ -18,7 +18,7 @@ static void usage(FILE *fp)
           "either direction, constant offsets, noise, repeated or missing samples), over a\n"
           "symmetric cleat: removes the flat baseline, finds the obstacle centre, folds the\n"
           "departure half onto the approach half, filters the noise without shifting the\n"
-          "curve, and writes the approach half on an x_N grid (MODEL.md section 1):\n"
+          "curve, and writes the approach half on an x_N grid (docs/models.md section 1):\n"
           "  x_N,x_m,h_m\n"
           "x_m in obstacle coordinates (centre at 0), h_m above the flat ground. A summary\n"
           "(noise, centre, smoothing) goes to standard error. A log that does not hold a\n"
@@ -44,7 +44,7 @@ static void usage(FILE *fp)
 }
 
 /* The working regime: --contact-length as given, or the springs model's flat-ground contact
- * length at --load (the chord at the flat-ground height, MODEL.md section 1). */
+ * length at --load (the chord at the flat-ground height, docs/models.md section 1). */
 static int contact_length(const cli_options *o, const tirenv_tire *tire, double *l_c)
 {
     if (o->have_contact_length) {

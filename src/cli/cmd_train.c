@@ -1,4 +1,4 @@
-/* tirenv train: the empirical model's network trained on a data set (MODEL.md section 6).
+/* tirenv train: the empirical model's network trained on a data set (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <limits.h>
 #include <stdio.h>

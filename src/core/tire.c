@@ -28,7 +28,7 @@ tirenv_tire tirenv_tire_default(void)
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
-        /* MODEL.md section 5's starting point: EI and T of a bias-ply-like tractor belt,
+        /* docs/models.md section 5's starting point: EI and T of a bias-ply-like tractor belt,
          * T ~ p*b*R (140 kPa * 0.38 m * 0.64 m = 34 kN). */
         .ring = {
             .t_r = 0.04,
@@ -42,7 +42,7 @@ tirenv_tire tirenv_tire_default(void)
             .lug_ratio = 1,
         },
         .eq = tirenv_eq_default(),
-        /* The cam (MODEL.md section 7): the dimensionless cam shape of TNO's public 205/60R15
+        /* The cam (docs/models.md section 7): the dimensionless cam shape of TNO's public 205/60R15
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
          * fitted to the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
@@ -57,7 +57,7 @@ tirenv_tire tirenv_tire_default(void)
     };
 }
 
-/* The cam model's keys (MODEL.md section 7). ELLIPS_ORDER must exceed 1: the exact lift
+/* The cam model's keys (docs/models.md section 7). ELLIPS_ORDER must exceed 1: the exact lift
  * (src/model/cam.c) relies on a strictly convex cam, whose touching height along a straight
  * segment has a single smooth maximum; MF-Swift's fitted orders are about 1.5 to 2. A negative
  * Q_RA2 is accepted (fitted files may have one); the contact length then peaks at some load,

@@ -1,4 +1,4 @@
-/* Enveloping curves on an x_N grid: storage, the normalised position of MODEL.md section 1,
+/* Enveloping curves on an x_N grid: storage, the normalised position of docs/models.md section 1,
  * and the CSV format "x_N,x_m,h_m" the import writes and the data sets read.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/curve.h"
@@ -45,7 +45,7 @@ void tirenv_curve_free(tirenv_curve *c)
     c->x_N = c->x = c->h = NULL;
 }
 
-/* MODEL.md section 1. The chord height z_c is where a free circle of radius R0 has a chord of
+/* docs/models.md section 1. The chord height z_c is where a free circle of radius R0 has a chord of
  * length l_c on flat ground: a convention computable before any simulation. That circle,
  * moved forward, first touches the obstacle's leading top corner (-L/2, H) when the corner is
  * R0 from its centre: horizontally sqrt(R0^2 - (z_c - H)^2) behind the corner. */

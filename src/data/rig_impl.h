@@ -1,5 +1,5 @@
 /* Private to the rig-log import (src/data/rig_*.c, the import command and its tests): the
- * stages of tirenv_rig_import_samples and what they share. MODEL.md sections 1 and 5.
+ * stages of tirenv_rig_import_samples and what they share. docs/models.md sections 1 and 5.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_RIG_IMPL_H
 #define TIRENV_RIG_IMPL_H
@@ -50,7 +50,7 @@ typedef struct {
     double sigma;          /* estimated z noise, m */
     double baseline;       /* flat-ground z of the log, m */
     double centre;         /* obstacle centre in the log's own x, m */
-    double x_0;            /* x_N origin in obstacle coordinates (MODEL.md section 1), m */
+    double x_0;            /* x_N origin in obstacle coordinates (docs/models.md section 1), m */
     double half_width;     /* smoothing half-width used, m */
     double noise_se;       /* standard error of h that the noise leaves after smoothing, m */
 } tirenv_rig__info;

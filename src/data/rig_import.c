@@ -1,4 +1,4 @@
-/* Rig logs to enveloping curves (MODEL.md section 5): the settings, stage 1 (put the samples
+/* Rig logs to enveloping curves (docs/models.md section 5): the settings, stage 1 (put the samples
  * in order: one per time, x increasing) and the driver that runs the stages
  *   1. prepare (here): sort by time, drop repeated times, mirror a run towards -x;
  *   2. tirenv_rig__find_passage (rig_passage.c): noise, flat baseline, bump, centre;
@@ -17,7 +17,7 @@
 enum { RIG_MIN_SAMPLES = 50 };
 
 /* The output grid of the paper's Figure 5: from before first contact (a real tire whose patch
- * is shorter than the chord rises early, MODEL.md section 1) to the centre, 101 points. */
+ * is shorter than the chord rises early, docs/models.md section 1) to the centre, 101 points. */
 tirenv_import_settings tirenv_import_default(void)
 {
     return (tirenv_import_settings){

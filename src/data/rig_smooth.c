@@ -1,7 +1,7 @@
 /* Stage 3 of the rig-log import: both halves of the passage folded onto the approach half,
  * filtered without shifting the curve, and evaluated on the x_N grid.
  *
- * Folding: the curve over a symmetric obstacle is symmetric (MODEL.md section 1), so the
+ * Folding: the curve over a symmetric obstacle is symmetric (docs/models.md section 1), so the
  * departure half, mirrored about the centre, samples the same curve as the approach half.
  * Using both halves doubles the samples behind each point and halves the noise variance. It
  * also forgives the centre: an error dc in it shifts the two halves by +dc and -dc along x,

@@ -1,4 +1,4 @@
-/* The elliptical cam (MODEL.md section 7): its shape, its tangency with a straight segment,
+/* The elliptical cam (docs/models.md section 7): its shape, its tangency with a straight segment,
  * and the public lift and tandem of two cams (the exact lift itself is cam_lift.c's).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>

@@ -1,4 +1,4 @@
-/* What a sweep of cam positions keeps between lifts (MODEL.md section 7; the lift itself is
+/* What a sweep of cam positions keeps between lifts (docs/models.md section 7; the lift itself is
  * cam_lift.c's): the drop floor of the cam's shape, and the tangency memo. None of it changes
  * a bit of any lift, only how fast it is found.
  * SPDX-License-Identifier: GPL-3.0-or-later */

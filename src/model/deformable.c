@@ -1,4 +1,4 @@
-/* The constant-load equilibrium per position (MODEL.md section 4), shared by every deformable
+/* The constant-load equilibrium per position (docs/models.md section 4), shared by every deformable
  * model: it only needs their hub-force function and their contact length. */
 #include "model/deformable.h"
 

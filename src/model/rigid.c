@@ -1,4 +1,4 @@
-/* The rigid disc over a profile, the geometric limit of every model (MODEL.md section 3).
+/* The rigid disc over a profile, the geometric limit of every model (docs/models.md section 3).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/rigid.h"
 

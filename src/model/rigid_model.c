@@ -1,4 +1,4 @@
-/* The rigid disc as a tirenv_model_type: no deflection, no iteration (MODEL.md section 3). */
+/* The rigid disc as a tirenv_model_type: no deflection, no iteration (docs/models.md section 3). */
 #include <math.h>
 #include <stdlib.h>
 #include "model/model_impl.h"

@@ -1,4 +1,4 @@
-/* The flexible-ring reference tire (MODEL.md section 5): a belt on an elastic foundation with
+/* The flexible-ring reference tire (docs/models.md section 5): a belt on an elastic foundation with
  * a tread of radial brush springs, in contact with the ground along rays from the centre. */
 #include "tirenv/ring.h"
 

@@ -1,4 +1,4 @@
-/* The ring reference tire as a tirenv_model_type (MODEL.md section 5). */
+/* The ring reference tire as a tirenv_model_type (docs/models.md section 5). */
 #include <math.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -19,7 +19,7 @@ static int ring_forces(void *elem, const tirenv_profile *p, double x, double z, 
 }
 
 /* The ring's contact length is its real patch, where the tread pressure is positive: shorter
- * than the chord of the free circle, as real tires' are (MODEL.md section 1). */
+ * than the chord of the free circle, as real tires' are (docs/models.md section 1). */
 static int ring_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c)
 {
     double fx, fz;

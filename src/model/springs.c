@@ -1,4 +1,4 @@
-/* The radial + interradial springs model (MODEL.md section 4, the paper's Figure 4): element
+/* The radial + interradial springs model (docs/models.md section 4, the paper's Figure 4): element
  * layout, stiffness, and the hub forces for a given centre position. */
 #include "tirenv/springs.h"
 
@@ -65,8 +65,8 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     if (!s)
         return NULL;
     s->par = *par;
-    /* Elements at theta_i = i*dphi for every integer i with |theta_i| <= phi/2 (the issue's
-     * layout); the relative slack keeps phi/2 itself when it is a multiple of dphi. */
+    /* Elements at theta_i = i*dphi for every integer i with |theta_i| <= phi/2 (docs/models.md
+     * section 4); the relative slack keeps phi/2 itself when it is a multiple of dphi. */
     s->i0 = (size_t)floor(0.5 * par->phi / par->dphi * (1 + 1e-12));
     s->N = 2 * s->i0 + 1;
     s->k_r = par->c_r * par->dphi;

@@ -1,4 +1,4 @@
-/* Private: the pieces of the springs model (MODEL.md section 4), one file each. */
+/* Private: the pieces of the springs model (docs/models.md section 4), one file each. */
 #ifndef TIRENV_SPRINGS_IMPL_H
 #define TIRENV_SPRINGS_IMPL_H
 

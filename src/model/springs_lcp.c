@@ -1,4 +1,4 @@
-/* The tip LCP of the springs model (MODEL.md section 4): a tridiagonal obstacle problem. */
+/* The tip LCP of the springs model (docs/models.md section 4): a tridiagonal obstacle problem. */
 #include "model/springs_impl.h"
 
 #include <stddef.h>

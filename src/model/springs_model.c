@@ -1,4 +1,4 @@
-/* The springs model as a tirenv_model_type (MODEL.md section 4). */
+/* The springs model as a tirenv_model_type (docs/models.md section 4). */
 #include <math.h>
 #include "model/deformable.h"
 #include "tirenv/springs.h"
@@ -16,7 +16,7 @@ static int springs_forces(void *elem, const tirenv_profile *p, double x, double 
     return tirenv_springs_forces(elem, p, x, z, fx, fz, dfz_dz, contacts);
 }
 
-/* MODEL.md section 1: the springs model's contact length is the chord of the free circle at
+/* docs/models.md section 1: the springs model's contact length is the chord of the free circle at
  * the centre height, so z_flat follows from l_c in closed form. */
 static double springs_R0(void *elem) { return tirenv_springs_params_of(elem)->R0; }
 

@@ -1,4 +1,4 @@
-/* Ray casting of the radial elements onto the ground polyline (MODEL.md section 4,
+/* Ray casting of the radial elements onto the ground polyline (docs/models.md section 4,
  * "geometric penetration"). */
 #include "model/springs_impl.h"
 

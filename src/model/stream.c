@@ -1,5 +1,5 @@
 /* tirenv_model_stream: the enveloping curve over a profile file of any length, holding only
- * the vertices within the tire's reach of the current position (issue 6, point 2).
+ * the vertices within the tire's reach of the current position.
  *
  * Every model reads the ground only within tirenv_model_reach = r of the centre's x. The
  * window holds the vertices from the last one before x - r to the first one after

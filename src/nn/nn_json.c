@@ -1,4 +1,4 @@
-/* Model files of the empirical model (MODEL.md section 6): the network and how it was
+/* Model files of the empirical model (docs/models.md section 6): the network and how it was
  * trained, as JSON through jansson. Reading trusts nothing: every field is checked for
  * presence, type, finiteness and range, and the network's numbers against a checksum, and a
  * failure names the file and the field. SPDX-License-Identifier: GPL-3.0-or-later

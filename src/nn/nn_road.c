@@ -11,8 +11,8 @@
  * each is replaced by the rectangle of equal height and area, so a true rectangular cleat is
  * reproduced exactly, and a bump of another shape by the cleat that stores the same volume of
  * ground under the tire. Contributions are combined by their maximum (max-plus), as the cam
- * model of MODEL.md section 7 combines ground points: the tire is carried by whatever holds it
- * highest, and a maximum is exactly the single-cleat curve wherever one obstacle dominates.
+ * model of docs/models.md section 7 combines ground points: the tire is carried by whatever
+ * holds it highest, and a maximum is exactly the single-cleat curve wherever one obstacle dominates.
  *
  * Two departures from "b_k + g_k", with reasons:
  * - The lift g_k is added to the baseline under the tire, b(x), rather than to the obstacle's
@@ -416,7 +416,7 @@ static int build(tirenv_nn_road *r, const tirenv_profile *p, double a, double ds
 }
 
 /* Network inputs and reach of each obstacle: clamped to the trained range (and counted), x_0
- * of MODEL.md section 1 for the cleat the network is asked about. */
+ * of docs/models.md section 1 for the cleat the network is asked about. */
 static int prepare_obstacles(tirenv_nn_road *r, double R0, const double lo[],
                              const double hi[], tirenv_diag *diag)
 {

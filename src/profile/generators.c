@@ -1,4 +1,4 @@
-/* Obstacle generators (MODEL.md section 2): the shapes of the paper's rig and a few more.
+/* Obstacle generators (docs/models.md section 2): the shapes of the paper's rig and a few more.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "profile/profile_impl.h"
 

@@ -1,4 +1,4 @@
-/* The ground profile object (MODEL.md section 2): validation, storage, height queries.
+/* The ground profile object (docs/models.md section 2): validation, storage, height queries.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "profile/profile_impl.h"
 

@@ -1,5 +1,5 @@
-/* The paper's comparison (MODEL.md section 8; Table 3 and Figure 5): every model on the chosen
- * cases of a data set, how far each is off, how long each takes per position, one plot per
+/* The paper's comparison (docs/models.md section 8; Table 3 and Figure 5): every model on
+ * the chosen cases of a data set, how far each is off, how long each takes per position, one plot per
  * case, and the tables. The report built on them is in report.c.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/study.h"

@@ -1,4 +1,4 @@
-/* Identification of a physical model on measured curves (MODEL.md section 8): nonlinear least
+/* Identification of a physical model on measured curves (docs/models.md section 8): nonlinear least
  * squares on h over the training cases, with standard errors from the covariance. */
 #include "tirenv/study.h"
 #include "core/clock.h"

@@ -1,4 +1,4 @@
-/* How far a model's enveloping curve is from a measured one (MODEL.md section 8): the four
+/* How far a model's enveloping curve is from a measured one (docs/models.md section 8): the four
  * figures of the comparison table. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/study.h"
 

@@ -195,7 +195,7 @@ static int write_script(const char *path, const char *base, const tirenv_plot__s
     errno = 0;
     fprintf(fp,
             "# tirenv compare: the enveloping curve of case %s, measured and modelled, in the\n"
-            "# manner of the paper's Figure 5 (Stojic et al.; tirenv MODEL.md section 8).\n"
+            "# manner of the paper's Figure 5 (Stojic et al.; tirenv docs/models.md section 8).\n"
             "# %s.\n",
             c->name, caption);
     if (ps->simulated)

@@ -1,5 +1,5 @@
 /* Each model's curve for one case of a data set, at the case's own points, driven the way the
- * paper drives it (MODEL.md section 1): the physical models by the applied load, the network
+ * paper drives it (docs/models.md section 1): the physical models by the applied load, the network
  * by the measured contact length. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/study.h"
 

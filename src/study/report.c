@@ -1,4 +1,4 @@
-/* report.md: the comparison told in one page (MODEL.md section 8): what was compared, whether
+/* report.md: the comparison told in one page (docs/models.md section 8): what was compared, whether
  * the data are simulated, the tables, the plots, the speed, and what the numbers say. The
  * text is generated from the numbers only; it states them and does not interpret beyond
  * "closest" and "off by". SPDX-License-Identifier: GPL-3.0-or-later */
@@ -42,14 +42,14 @@ static void describe_models(FILE *fp, const tirenv_compare_settings *s,
         } else if (strcmp(name, "cam") == 0) {
             const tirenv_cam_params *cp = &r->tire.cam;
             fprintf(fp,
-                    "MF-Swift's tandem elliptical cam (MODEL.md section 7): ELLIPS_SHIFT %.4g, "
+                    "MF-Swift's tandem elliptical cam (docs/models.md section 7): ELLIPS_SHIFT %.4g, "
                     "ELLIPS_LENGTH %.4g, ELLIPS_HEIGHT %.4g, ELLIPS_ORDER %.4g, "
                     "VERTICAL_STIFFNESS %.4g N/m",
                     cp->shift, cp->length, cp->height, cp->order, cp->c_z);
             if (s->tire_label)
                 fprintf(fp, " (`%s`)", s->tire_label);
         } else if (strcmp(name, "ring") == 0) {
-            fputs("the flexible-ring reference tire (MODEL.md section 5) with the tire file's "
+            fputs("the flexible-ring reference tire (docs/models.md section 5) with the tire file's "
                   "[ENVELOPING_RING] parameters", fp);
         } else {
             fputs("a physical model with the tire file's parameters", fp);
@@ -79,7 +79,7 @@ static void introduction(FILE *fp, const tirenv_dataset *ds, const tirenv_compar
     list_cases(fp, ds, r);
     if (!(s->cases && s->n_cases))
         fprintf(fp, ": the %s cases", tirenv_split_name(s->split));
-    fputs(") in the manner of the paper's Table 3 and Figure 5 (MODEL.md section 8). The "
+    fputs(") in the manner of the paper's Table 3 and Figure 5 (docs/models.md section 8). The "
           "physical models are driven by each case's applied load and the network by its "
           "measured contact length, as in the paper; every curve is compared at the measured "
           "points of the approach half, from first contact (x_N = 0) to the tire axis over "
@@ -88,7 +88,7 @@ static void introduction(FILE *fp, const tirenv_dataset *ds, const tirenv_compar
     tirenv_compare__data_note(fp, ds, s);
     if (s->simulated || s->simulated_by)
         fputs("\n> **SIMULATED DATA.** The \"measured\" curves in this report were produced by "
-              "tirenv's virtual rig (MODEL.md section 5), a model with sensor noise added, not "
+              "tirenv's virtual rig (docs/models.md section 5), a model with sensor noise added, not "
               "by a tire on a real rig. The errors below say how well each model reproduces "
               "that reference, not a real tire.\n",
               fp);

@@ -1,4 +1,4 @@
-/* The paper's study in one call (MODEL.md section 8): identify, train, compare; then the
+/* The paper's study in one call (docs/models.md section 8): identify, train, compare; then the
  * paper's proposed workflow and the obstacles outside the training grid. */
 #include "tirenv/study.h"
 
@@ -258,7 +258,7 @@ static char *study_notes(const tirenv_fit_report *fit, const tirenv_fit_report *
                 "errors from the covariance, scaled by the residual variance:\n\n",
             fit->n_points, fit->iterations, fit->seconds, 1e3 * fit->rms);
     fit_table(fp, fit);
-    fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (MODEL.md "
+    fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (docs/models.md "
                 "section 7), identified the same way (%zu iterations, %.2f s, RMS %.2f mm); "
                 "its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay as in the tire "
                 "file:\n\n", cam_fit->iterations, cam_fit->seconds, 1e3 * cam_fit->rms);

@@ -1,5 +1,5 @@
 /* The training driver: trainer lookup and defaults, seeded restarts, early stopping on the
- * control set, errors per split, and the samples of a data set (MODEL.md section 6).
+ * control set, errors per split, and the samples of a data set (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
 #include <stdlib.h>
