@@ -1,0 +1,292 @@
+/* tirenv convert: a road from one file format to another (CSV, OpenCRG, TNO/Adams RDF).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "tirenv/crg.h"
+#include "tirenv/profile_file.h"
+#include "tirenv/rdf.h"
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv convert --profile IN -o OUT [--track V] [--side left|right|mean]\n"
+          "                      [--crg-encoding E] [--dx M] [--half-width M]\n"
+          "\n"
+          "Converts a road between profile CSV ('x_m,z_m'), ASAM OpenCRG (.crg) and TNO/Adams\n"
+          "2-D road (.rdf) files. IN's format is told by its content, OUT's by its extension\n"
+          "(.csv, .crg, .rdf; '-' writes CSV to standard output). From a .crg one track is\n"
+          "taken, the long section at --track (a .crg to a .crg without --track copies every\n"
+          "long section); a .crg is written with a straight reference line. A one-line\n"
+          "summary goes to standard error.\n"
+          "\n"
+          "options:\n"
+          "  --profile IN         road file to read: CSV, .crg or .rdf\n"
+          "  -o, --output OUT     file to write, complete or not at all\n"
+          "  --track V            .crg input: lateral position of the track, m, positive to\n"
+          "                       the left (default 0, the reference line)\n"
+          "  --side S             .rdf poly_line input: left, right or mean (default) of\n"
+          "                       its z_left and z_right\n"
+          "  --crg-encoding E     .crg output: kdbi (default: binary doubles, exact), krbi\n"
+          "                       (binary floats), ldfi or lrfi (text)\n"
+          "  --dx M               .crg output: resample every M m (default: the input's own\n"
+          "                       spacing, which must then be even)\n"
+          "  --half-width M       .crg output of one track: the road reaches M m to either\n"
+          "                       side, the same heights across (default 0.5)\n"
+          "  -h, --help           show this help\n",
+          fp);
+}
+
+typedef struct {
+    const char *in, *out;
+    int have_track;
+    tirenv_profile_source src;
+    tirenv_profile_write_options w;
+} convert;
+
+/* Returns an exit code, or -1 to go on. */
+static int parse(int argc, char *argv[], convert *cv)
+{
+    enum { OPT_PROFILE = CLI_OPT_FIRST_OWN, OPT_TRACK, OPT_SIDE, OPT_ENCODING, OPT_DX,
+           OPT_HALF_WIDTH };
+    static const struct option longopts[] = {
+        {"profile", required_argument, NULL, OPT_PROFILE},
+        {"track", required_argument, NULL, OPT_TRACK},
+        {"side", required_argument, NULL, OPT_SIDE},
+        {"crg-encoding", required_argument, NULL, OPT_ENCODING},
+        {"dx", required_argument, NULL, OPT_DX},
+        {"half-width", required_argument, NULL, OPT_HALF_WIDTH},
+        {"output", required_argument, NULL, 'o'},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0},
+    };
+    int c;
+    cli_getopt_reset();
+    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
+        switch (c) {
+        case 'h':
+            usage(stdout);
+            return CLI_EXIT_OK;
+        case 'o':
+            cv->out = optarg;
+            break;
+        case OPT_PROFILE:
+            cv->in = optarg;
+            break;
+        case OPT_TRACK:
+            if (cli_parse_double(optarg, &cv->src.crg.v)) {
+                cli_error("convert: --track expects a lateral position in m, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            cv->have_track = 1;
+            break;
+        case OPT_SIDE:
+            if (tirenv_rdf_side_find(optarg, &cv->src.rdf_side)) {
+                cli_error("convert: --side expects left, right or mean, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_ENCODING:
+            if (tirenv_crg_encoding_find(optarg, &cv->w.crg_encoding)) {
+                cli_error("convert: --crg-encoding expects kdbi, krbi, ldfi or lrfi, got '%s'",
+                          optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_DX:
+        case OPT_HALF_WIDTH: {
+            double *v = c == OPT_DX ? &cv->w.crg_u_increment : &cv->w.crg_half_width;
+            if (cli_parse_double(optarg, v) || !(*v > 0)) {
+                cli_error("convert: --%s expects a positive length in m, got '%s'",
+                          c == OPT_DX ? "dx" : "half-width", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        }
+        default:
+            usage(stderr);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    if (optind < argc) {
+        cli_error("convert: unexpected argument '%s'", argv[optind]);
+        return CLI_EXIT_USAGE;
+    }
+    if (!cv->in || !cv->out) {
+        cli_error("convert: expected %s; 'tirenv convert --help' shows the options",
+                  !cv->in ? "--profile IN" : "-o OUT");
+        return CLI_EXIT_USAGE;
+    }
+    return -1;
+}
+
+/* A .crg to a .crg without --track: every long section, row by row. */
+static int crg_copy(const tirenv_crg *crg, const convert *cv, tirenv_diag *diag)
+{
+    const size_t nv = tirenv_crg_long_sections(crg), nu = tirenv_crg_rows(crg);
+    double *v = malloc(nv * sizeof *v);
+    if (!v)
+        return tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
+    for (size_t j = 0; j < nv; j++)
+        v[j] = tirenv_crg_v(crg, j);
+    const tirenv_crg_layout layout = {
+        .encoding = cv->w.crg_encoding, .u_start = tirenv_crg_u_start(crg),
+        .u_increment = tirenv_crg_u_increment(crg), .rows = nu, .long_sections = nv, .v = v,
+        .comment = "Converted by tirenv convert: every long section, heights with the\n"
+                   "reference line's slope and banking, on a straight reference line."};
+    tirenv_crg_writer *w = NULL;
+    enum { BLOCK = 1024 };
+    double *z = malloc(BLOCK * nv * sizeof *z);
+    int status = z ? tirenv_crg_writer_open(cv->out, &layout, &w, diag)
+                   : tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
+    for (size_t i0 = 0; !status && i0 < nu; i0 += BLOCK) {
+        const size_t n = nu - i0 < BLOCK ? nu - i0 : BLOCK;
+        status = tirenv_crg_grid_rows(crg, i0, n, z, diag);
+        for (size_t k = 0; !status && k < n; k++)
+            status = tirenv_crg_writer_row(w, z + k * nv, diag);
+    }
+    free(z);
+    free(v);
+    if (status) {
+        tirenv_crg_writer_abort(w);
+        return status;
+    }
+    return tirenv_crg_writer_commit(w, diag);
+}
+
+/* The shortest "%.*g" that reads back to the same double. */
+static void shortest(char *buf, size_t n, double v)
+{
+    for (int prec = 1; prec < 17; prec++) {
+        snprintf(buf, n, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v)
+            return;
+    }
+    snprintf(buf, n, "%.17g", v);
+}
+
+/* A .crg track to CSV, a block of rows at a time, so a long road needs little memory. */
+static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
+                      tirenv_diag *diag)
+{
+    tirenv_crg_track_reader *r;
+    int status = tirenv_crg_track_reader_open(crg, &cv->src.crg, &r, diag);
+    if (status)
+        return status;
+    tirenv_outfile f;
+    if ((status = tirenv_outfile_open(&f, cv->out, diag))) {
+        tirenv_crg_track_reader_free(r);
+        return status;
+    }
+    char comment[160];
+    snprintf(comment, sizeof comment, "track at v = %.17g m of an OpenCRG road (tirenv convert)",
+             cv->src.crg.v);
+    tirenv_outfile_comment(&f, comment);
+    fputs("x_m,z_m\n", f.fp);
+    double u, z;
+    int got;
+    char a[32], b[32];
+    while (!(status = tirenv_crg_track_reader_next(r, &u, &z, &got, diag)) && got) {
+        shortest(a, sizeof a, u);
+        shortest(b, sizeof b, z);
+        fprintf(f.fp, "%s,%s\n", a, b);
+        range[2] = fmin(range[2], z);
+        range[3] = fmax(range[3], z);
+    }
+    tirenv_crg_track_reader_free(r);
+    if (status) {
+        tirenv_outfile_abort(&f);
+        return status;
+    }
+    range[0] = tirenv_crg_u_start(crg);
+    range[1] = tirenv_crg_u_end(crg);
+    return tirenv_outfile_commit(&f, diag);
+}
+
+static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, double range[4],
+                    tirenv_diag *diag)
+{
+    tirenv_crg *crg;
+    int status = tirenv_crg_open(cv->in, &crg, diag);
+    if (status)
+        return status;
+    *n = tirenv_crg_rows(crg);
+    if (to == TIRENV_PROFILE_CSV) {
+        status = crg_to_csv(crg, cv, range, diag);
+    } else if (to == TIRENV_PROFILE_CRG && !cv->have_track) {
+        range[0] = tirenv_crg_u_start(crg);
+        range[1] = tirenv_crg_u_end(crg);
+        status = crg_copy(crg, cv, diag);
+    } else {
+        tirenv_profile *p;
+        if (!(status = tirenv_crg_track(crg, &cv->src.crg, &p, diag))) {
+            status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
+            const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
+            range[0] = x[0];
+            range[1] = x[*n - 1];
+            for (size_t k = 0; k < *n; k++) {
+                range[2] = fmin(range[2], z[k]);
+                range[3] = fmax(range[3], z[k]);
+            }
+            tirenv_profile_free(p);
+        }
+    }
+    tirenv_crg_free(crg);
+    return status;
+}
+
+int cli_convert_main(int argc, char *argv[])
+{
+    convert cv = {.src = tirenv_profile_source_default(), .w = tirenv_profile_write_default()};
+    const int code = parse(argc, argv, &cv);
+    if (code >= 0)
+        return code;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_profile_format from, to = TIRENV_PROFILE_CSV;
+    if (strcmp(cv.out, "-") != 0 && tirenv_profile_format_of_name(cv.out, &to)) {
+        cli_error("convert: -o %s: unknown extension; expected .csv, .crg or .rdf", cv.out);
+        return CLI_EXIT_USAGE;
+    }
+    int status = tirenv_profile_detect(cv.in, &from, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    if (cv.have_track && from != TIRENV_PROFILE_CRG) {
+        cli_error("convert: --track applies to a .crg input; %s is %s", cv.in,
+                  from == TIRENV_PROFILE_RDF ? "an RDF road (use --side)" : "a CSV profile");
+        return CLI_EXIT_USAGE;
+    }
+    size_t n = 0;
+    double range[4] = {0, 0, INFINITY, -INFINITY};
+    if (from == TIRENV_PROFILE_CRG) {
+        status = from_crg(&cv, to, &n, range, &diag);
+    } else {
+        tirenv_profile *p;
+        if (!(status = tirenv_profile_read_file(cv.in, &cv.src, &p, &diag))) {
+            if (to == TIRENV_PROFILE_CSV)
+                status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
+            else
+                status = tirenv_profile_write_file(cv.out, p, &cv.w, &diag);
+            n = tirenv_profile_size(p);
+            const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
+            range[0] = x[0];
+            range[1] = x[n - 1];
+            for (size_t k = 0; k < n; k++) {
+                range[2] = fmin(range[2], z[k]);
+                range[3] = fmax(range[3], z[k]);
+            }
+            tirenv_profile_free(p);
+        }
+    }
+    if (status)
+        return cli_fail(status, &diag);
+    fprintf(stderr, "tirenv convert: %s (%s) -> %s (%s): %zu %s, x %g to %g m", cv.in,
+            tirenv_profile_format_name(from), cv.out, tirenv_profile_format_name(to), n,
+            from == TIRENV_PROFILE_CRG ? "rows" : "vertices", range[0], range[1]);
+    if (range[2] <= range[3])
+        fprintf(stderr, ", z %g to %g m", range[2], range[3]);
+    fputc('\n', stderr);
+    return CLI_EXIT_OK;
+}
