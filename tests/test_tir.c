@@ -180,14 +180,29 @@ static const read_error_case read_errors[] = {
     {"[]\n", TIRENV_EPARSE, 1, 1, "", "empty section name"},
     {"UNLOADED_RADIUS = 0.7\n[DIMENSION]\n", TIRENV_EPARSE, 1, 1, "",
      "before the first section"},
-    /* units: SI only */
-    {"[UNITS]\nLENGTH = 'meter'\nFORCE = 'kN'\n", TIRENV_EPARSE, 3, 10, "FORCE",
-     "unit 'kN' is not supported (tirenv reads SI only); expected 'newton'"},
-    {"[UNITS]\nANGLE = 'deg'\n", TIRENV_EPARSE, 2, 10, "ANGLE",
-     "expected 'radians' or 'rad'"},
+    /* units: the ones MF-Tyre and Adams files use, converted; others refused */
+    {"[UNITS]\nLENGTH = 'meter'\nFORCE = 'kip'\n[DIMENSION]\nUNLOADED_RADIUS = 0.7\n",
+     TIRENV_EPARSE, 3, 10, "FORCE", "unknown unit 'kip'; expected one of 'newtons'"},
+    {"[UNITS]\nANGLE = 'gradians'\n", TIRENV_EPARSE, 2, 10, "ANGLE",
+     "unknown unit 'gradians'; expected one of 'radians', 'degrees'"},
     {"[UNITS]\nLENGTH = 'meter\n", TIRENV_EPARSE, 2, 10, "LENGTH", "unterminated string"},
-    {"[UNITS]\nPRESSURE = 'pascal'\n", TIRENV_EPARSE, 2, 1, "PRESSURE",
-     "unknown key in [UNITS]"},
+    {"[UNITS]\nSPEED = 'm/s'\n", TIRENV_EPARSE, 2, 1, "SPEED", "unknown key in [UNITS]"},
+    {"[UNITS]\nLENGTH = 'mm'\n", TIRENV_EPARSE, 2, 0, "",
+     "the file sets none of the keys tirenv reads; expected at least one, such as "
+     "[DIMENSION] UNLOADED_RADIUS"},
+    {"", TIRENV_EPARSE, 0, 0, "", "the empty file sets none of the keys tirenv reads"},
+    {"$ nothing but comments\n\n! and more\n", TIRENV_EPARSE, 3, 0, "",
+     "sets none of the keys"},
+    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[VERTICAL]\nFNOMIN = 4000\n", TIRENV_EPARSE, 4, 0,
+     "", "sets none of the keys"},
+    /* a key tirenv reads, in another section tirenv reads: it would be ignored there */
+    {"[DIMENSION]\nUNLOADED_RADIUS = 0.7\nRADIAL_STIFFNESS = 1.6e6\n", TIRENV_EPARSE, 3, 1,
+     "RADIAL_STIFFNESS", "key of [ENVELOPING_SPRINGS] in [DIMENSION]; expected it in "
+     "[ENVELOPING_SPRINGS]"},
+    {"[VERTICAL]\nQ_RA1 = 0.7\n", TIRENV_EPARSE, 2, 1, "Q_RA1",
+     "key of [CONTACT_PATCH] in [VERTICAL]"},
+    {"[ENVELOPING_RING]\nUNLOADED_RADIUS = 0.7\n", TIRENV_EPARSE, 2, 1, "UNLOADED_RADIUS",
+     "key of [DIMENSION] in [ENVELOPING_RING]"},
     /* parsed fine, but unphysical: the line of the key, no column */
     {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[ENVELOPING_SPRINGS]\nSEGMENT_ANGLE = 3.0\n"
      "RADIAL_STIFFNESS = -1.6e6 $ sign typo\n", TIRENV_EINVAL, 5, 0, "RADIAL_STIFFNESS",

@@ -40,10 +40,13 @@ int ride_cli_axle_input(const char *model, const tirenv_tire *tire, double load,
         return nn_input(tire, load, p, nn, R0_nn, x0, dx, n, w, info, diag);
     const tirenv_model_type *type = strcmp(model, "point") == 0 ? NULL
                                                                 : tirenv_model_type_find(model);
+    int status = type == tirenv_model_cam ? tirenv_tire_check_cam_keys(tire, diag) : TIRENV_OK;
+    if (status)
+        return status;
     tirenv_model *m = type ? tirenv_model_alloc(type, tire) : NULL;
     if (type && !m)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    const int status = tirenv_ride_effective(m, p, load, x0, dx, n, w, diag);
+    status = tirenv_ride_effective(m, p, load, x0, dx, n, w, diag);
     tirenv_model_free(m);
     return status;
 }

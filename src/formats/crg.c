@@ -342,7 +342,8 @@ int tirenv_crg_grid_rows(const tirenv_crg *c, size_t first, size_t count, double
         return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "",
                             "rows %zu to %zu asked for; the file has %zu", first + 1,
                             first + count, c->nu);
-    const tirenv_crg_track_spec spec = tirenv_crg_track_default();
+    tirenv_crg_track_spec spec = tirenv_crg_track_default();
+    spec.v = c->v[0]; /* on the road: only the file's NaN mode, scale and smoothing matter */
     track t;
     int status = track_setup(c, &spec, &t, diag);
     const size_t block = block_rows(c);
