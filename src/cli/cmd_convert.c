@@ -180,9 +180,9 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
         tirenv_crg_track_reader_free(r);
         return status;
     }
-    char comment[160];
-    snprintf(comment, sizeof comment, "track at v = %.17g m of an OpenCRG road (tirenv convert)",
-             cv->src.crg.v);
+    char comment[160], v[32];
+    shortest(v, sizeof v, cv->src.crg.v);
+    snprintf(comment, sizeof comment, "track at v = %s m of an OpenCRG road (tirenv convert)", v);
     tirenv_outfile_comment(&f, comment);
     fputs("x_m,z_m\n", f.fp);
     double u, z;

@@ -130,9 +130,11 @@ static int number_value(const rdf *r, char *value, const char *key, double *out)
     const double v = strtod(value, &end);
     if (end == value)
         return fail(r, value, key, "expected a number, got '%.40s'", value);
-    if (*end)
-        return fail(r, end, key, "unexpected '%.40s' after the number %.*s; expected only a "
-                    "number", end, (int)(end - value), value);
+    if (*end) {
+        const char *junk = end + strspn(end, " \t");
+        return fail(r, junk, key, "unexpected '%.40s' after the number %.*s; expected only a "
+                    "number", junk, (int)(end - value), value);
+    }
     if (!isfinite(v))
         return fail(r, value, key, "expected a finite number, got '%.40s'", value);
     *out = v;
@@ -258,7 +260,8 @@ static int xz_row(rdf *r, char *text)
         char *end;
         v[k] = strtod(p, &end);
         if (end == p || !isfinite(v[k]) || (*end && !strchr(" \t,", *end)))
-            return fail(r, p, "XZ_DATA", "%s: expected a finite number, got '%.30s'", col[k], p);
+            return fail(r, p, "XZ_DATA", "%s: expected a finite number, got '%.*s'", col[k],
+                        (int)(strcspn(p, " \t,") < 30 ? strcspn(p, " \t,") : 30), p);
         p = end;
     }
     if (r->n == r->cap) {
@@ -302,8 +305,9 @@ static int bracketed(rdf *r, char *text, char close, char **name)
     char *end = strchr(text, close);
     if (!end)
         return fail(r, text, "", "unterminated '%c'; expected '%c'", text[0], close);
-    if (*trim(end + 1))
-        return fail(r, end + 1, "", "unexpected '%.40s' after '%c'", end + 1, close);
+    const char *rest = trim(end + 1);
+    if (*rest)
+        return fail(r, rest, "", "unexpected '%.40s' after '%c'", rest, close);
     *end = '\0';
     *name = trim(text + 1);
     return TIRENV_OK;
