@@ -156,15 +156,20 @@ static int crg_copy(const tirenv_crg *crg, const convert *cv, tirenv_diag *diag)
     return tirenv_crg_writer_commit(w, diag);
 }
 
-/* The shortest "%.*g" that reads back to the same double. */
+/* The shortest "%.*g" that reads back to the same double, by bisection on the precision
+ * (reading back only improves with more digits). */
 static void shortest(char *buf, size_t n, double v)
 {
-    for (int prec = 1; prec < 17; prec++) {
-        snprintf(buf, n, "%.*g", prec, v);
+    int lo = 1, hi = 17;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        snprintf(buf, n, "%.*g", mid, v);
         if (strtod(buf, NULL) == v)
-            return;
+            hi = mid;
+        else
+            lo = mid + 1;
     }
-    snprintf(buf, n, "%.17g", v);
+    snprintf(buf, n, "%.*g", lo, v);
 }
 
 /* A .crg track to CSV, a block of rows at a time, so a long road needs little memory. */

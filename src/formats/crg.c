@@ -311,7 +311,7 @@ int tirenv_crg_track_rows(const tirenv_crg *c, const tirenv_crg_track_spec *spec
         return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "",
                             "rows %zu to %zu asked for; the file has %zu", first + 1,
                             first + count, c->nu);
-    const size_t block = block_rows(c);
+    const size_t block = count < block_rows(c) ? (count ? count : 1) : block_rows(c);
     double *vals = malloc(block * c->nch * sizeof *vals);
     if (!vals)
         return tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
@@ -346,7 +346,7 @@ int tirenv_crg_grid_rows(const tirenv_crg *c, size_t first, size_t count, double
     spec.v = c->v[0]; /* on the road: only the file's NaN mode, scale and smoothing matter */
     track t;
     int status = track_setup(c, &spec, &t, diag);
-    const size_t block = block_rows(c);
+    const size_t block = count < block_rows(c) ? (count ? count : 1) : block_rows(c);
     double *vals = status ? NULL : malloc(block * c->nch * sizeof *vals);
     if (!status && !vals)
         status = tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
@@ -376,7 +376,7 @@ int tirenv_crg_refline(const tirenv_crg *c, double x[], double y[], double phi[]
     double *px = x ? x : malloc(n * sizeof *px), *py = y ? y : malloc(n * sizeof *py);
     double *pp = phi ? phi : malloc(n * sizeof *pp);
     double *vals = NULL;
-    const size_t block = block_rows(c);
+    const size_t block = n < block_rows(c) ? n : block_rows(c);
     int status = px && py && pp ? TIRENV_OK
                                 : tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "",
                                                "out of memory");
