@@ -4,7 +4,9 @@
 # tests names a section that exists, and nothing points outside the repository (../shared,
 # MODEL.md) or at issue numbers. Usage: sh cli_docs.sh BIN TESTDATA_DIR.
 # SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 root=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=tests/clilib.sh
 . "$(dirname "$0")/clilib.sh"
 
 models=$root/docs/models.md
