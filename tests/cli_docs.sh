@@ -24,41 +24,48 @@ find "$root/README.md" "$root/include" "$root/src" "$root/bench" "$root/tests" \
     -print | sort >files
 
 # Every citation, with the line breaks of comments and C strings joined, as "FILE: models 7.6".
-: >citations
-while read -r f; do
-    tr '\n' ' ' <"$f" |
-        sed 's/\\n"[[:space:]]*"/ /g; s/! : COMMENT :/ /g; s/ \* / /g; s/ [$!#] / /g' |
-        tr -s ' ' |
-        grep -o 'docs/\(models\|formats\)\.md,\{0,1\} sections\{0,1\} [0-9][0-9.]*\( and [0-9][0-9.]*\)\{0,1\}' |
-        sed 's|docs/\([a-z]*\)\.md,\{0,1\} sections\{0,1\} |\1 |; s/ and / /; s/\.$//; s/\. / /' |
-        while read -r doc a b; do
-            echo "${f#"$root"/}: $doc $a"
-            [ -n "$b" ] && echo "${f#"$root"/}: $doc ${b%.}"
-        done >>citations
-done <files
+# One awk over all files: a shell loop per file costs a fork per tool and file.
+# shellcheck disable=SC2046 # the file list is split on purpose (no blanks in its paths)
+awk -v root="$root/" '
+function flush(   t, m, doc, nums, k, parts) {
+    if (name == "")
+        return
+    t = text
+    gsub(/\\n"[[:space:]]*"/, " ", t)
+    gsub(/! : COMMENT :/, " ", t)
+    gsub(/ \* /, " ", t)
+    gsub(/ [$!#] /, " ", t)
+    gsub(/[[:space:]]+/, " ", t)
+    while (match(t, /docs\/(models|formats)\.md,? sections? [0-9][0-9.]*( and [0-9][0-9.]*)?/)) {
+        m = substr(t, RSTART, RLENGTH)
+        t = substr(t, RSTART + RLENGTH)
+        doc = m ~ /^docs\/models/ ? "models" : "formats"
+        sub(/^docs\/[a-z]*\.md,? sections? /, "", m)
+        k = split(m, parts, / and /)
+        for (i = 1; i <= k; i++) {
+            sub(/\.$/, "", parts[i])
+            print name ": " doc " " parts[i]
+        }
+    }
+}
+FNR == 1 { flush(); name = substr(FILENAME, length(root) + 1); text = "" }
+{ text = text " " $0 }
+END { flush() }' $(cat files) >citations
 check "more than 100 citations found (the scan is not vacuous)" '[ "$(wc -l <citations)" -gt 100 ]'
 
 # "## N. Title" for a section, "### N.M Title" for a subsection.
-: >missing
-while read -r where doc num; do
-    file=$models
-    [ "$doc" = formats ] && file=$formats
-    case $num in
-    *.*) pattern="^### $num " ;;
-    *) pattern="^## $num\\. " ;;
-    esac
-    grep -q "$pattern" "$file" || echo "$where cites docs/$doc.md section $num" >>missing
-done <citations
+awk '
+FILENAME == ARGV[1] && /^## [0-9]+\. / { sub(/\.$/, "", $2); have["models " $2] = 1 }
+FILENAME == ARGV[1] && /^### [0-9]+\.[0-9]+ / { have["models " $2] = 1 }
+FILENAME == ARGV[2] && /^## [0-9]+\. / { sub(/\.$/, "", $2); have["formats " $2] = 1 }
+FILENAME == ARGV[3] && !(($2 " " $3) in have) { print $1 " cites docs/" $2 ".md section " $3 }
+' "$models" "$formats" citations >missing
 cp missing err
 check "every cited section exists in docs/ ($(wc -l <citations) citations)" '[ ! -s missing ]'
 
 # A bare "models.md" in the code is a citation that lost its path.
-: >bare
-while read -r f; do
-    case $f in "$root"/tests/*) continue ;; esac
-    grep -n 'models\.md\|formats\.md' "$f" | grep -v 'docs/\(models\|formats\)\.md' |
-        sed "s|^|${f#"$root"/}:|" >>bare
-done <files
+grep -v "^$root/tests/" files | xargs grep -n 'models\.md\|formats\.md' |
+    grep -v 'docs/\(models\|formats\)\.md' >bare
 cp bare err
 check "no citation without its docs/ path" '[ ! -s bare ]'
 
