@@ -1,6 +1,6 @@
 /* tirenv: ASAM OpenCRG road files (the convenience layer): a road surface on a curved regular
  * grid, read as tracks (profiles along the reference line) and written from profiles.
- * What is read and how a track is evaluated: docs/formats.md, "OpenCRG". */
+ * What is read and how a track is evaluated: docs/formats.md section 5. */
 #ifndef TIRENV_CRG_H
 #define TIRENV_CRG_H
 

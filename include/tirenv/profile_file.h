@@ -1,6 +1,7 @@
 /* tirenv: a ground profile from or to any road file tirenv knows (the convenience layer): CSV
  * ("x_m,z_m"), ASAM OpenCRG (.crg) and TNO / Adams 2-D roads (.rdf), told apart by their
- * content when read and by the file name's extension when written. docs/formats.md. */
+ * content when read and by the file name's extension when written (docs/formats.md
+ * section 5). */
 #ifndef TIRENV_PROFILE_FILE_H
 #define TIRENV_PROFILE_FILE_H
 

@@ -1,5 +1,5 @@
 /* tirenv: TNO / Adams 2-D road files (.rdf, TeimOrbit format; the convenience layer): read
- * as a profile, written from profiles. What is read: docs/formats.md, "RDF". */
+ * as a profile, written from profiles. What is read: docs/formats.md section 5. */
 #ifndef TIRENV_RDF_H
 #define TIRENV_RDF_H
 

@@ -1,7 +1,7 @@
 /* The OpenCRG header: sections ($CT, $ROAD_CRG, $ROAD_CRG_MPRO, $KD_DEFINITION,
  * $ROAD_CRG_OPTS, $ROAD_CRG_MODS), "KEY = value" records, the data definition's "#:" format
  * and "D:" channels, '*' comment lines, '!' comments, and the "$$$$" line that ends the header
- * (docs/formats.md, "OpenCRG"). Written from the ASAM OpenCRG specification, section 6.
+ * (docs/formats.md section 5). Written from the ASAM OpenCRG specification, section 6.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "formats/crg_impl.h"
 
