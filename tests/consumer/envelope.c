@@ -43,12 +43,12 @@ int main(int argc, char *argv[])
         tirenv_model_set(m, cleat, load, &diag))
         return fail("setting the model", &diag);
 
-    /* The sweep of 'tirenv envelope': from R0 + 2 cm before the cleat to R0 + 2 cm after. */
+    /* The sweep of 'tirenv envelope': every 1 mm from R0 + 2 cm before the cleat to R0 + 2 cm
+     * after. */
     double first, last;  /* m */
     tirenv_profile_extent(cleat, &first, &last);
-    const double x_from = first - tire.springs.R0 - 0.02, x_to = last + tire.springs.R0 + 0.02;
-    const double dx = 0.001;
-    const size_t n = tirenv_positions_count(x_from, x_to, dx);
+    const double x_from = first - tire.springs.R0 - 0.02, dx = 0.001;
+    const size_t n = tirenv_positions_count(x_from, last + tire.springs.R0 + 0.02, dx);
 
     printf("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n");
     for (size_t k = 0; k < n; ++k) {
@@ -56,7 +56,7 @@ int main(int argc, char *argv[])
         if (tirenv_model_eval(m, x_from + (double)k * dx, &p, &diag))
             return fail("no equilibrium", &diag);  /* diag names x and the load */
         printf("%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", p.x, p.z, p.h, p.slope, p.fx, p.fz,
-               p.contacts, p.iterations);
+               p.contacts, p.iterations);  /* h: effective height (m); fx, fz: hub forces (N) */
     }
     tirenv_profile_free(cleat);
     tirenv_model_free(m);
