@@ -157,8 +157,8 @@ page() {
             if (p[k] != name) s = s (s == "" ? "" : ",\n") "\\fB" esc(p[k]) "\\fR(1)"
         print s
         print ".PP"
-        print "The model reference and the file formats: docs/ in the tirenv sources," \
-              " installed in share/doc/tirenv/docs."
+        print "What the models compute: docs/models.md; the file formats: docs/formats.md" \
+              " (in the tirenv sources, and installed in share/doc/tirenv/docs)."
     }'
 }
 

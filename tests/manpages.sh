@@ -36,13 +36,19 @@ for c in "" $commands; do
     check "$name.1: NAME says '$name \\- ...'" grep -q "^$name \\\\- ." "$page"
     if [ -n "$c" ]; then
         check "$name.1 has an OPTIONS section" grep -q '^\.SH OPTIONS$' "$page"
-        # Every --option of the help text, with its dashes as \- in roff.
-        "$bin" "$c" --help | grep -o -- '--[a-z][a-z-]*' | sort -u >"$tmp/options"
-        missing=""
-        while read -r opt; do
-            roff=$(printf '%s' "$opt" | sed 's/-/\\\\-/g')
-            grep -q -- "$roff" "$page" || missing="$missing $opt"
-        done <"$tmp/options"
+        # Every --option of the help text, with its dashes as \- in roff (one awk: the page's
+        # options with \- read back as -, then the help's looked up in them).
+        "$bin" "$c" --help >"$tmp/help"
+        missing=$(awk '
+            FNR == NR { gsub(/\\-/, "-"); s = $0
+                        while (match(s, /--[a-z][a-z-]*/)) {
+                            seen[substr(s, RSTART, RLENGTH)] = 1; s = substr(s, RSTART + RLENGTH) }
+                        next }
+            { s = $0
+              while (match(s, /--[a-z][a-z-]*/)) {
+                  o = substr(s, RSTART, RLENGTH); s = substr(s, RSTART + RLENGTH)
+                  if (!(o in seen) && !(o in told)) { told[o] = 1; printf " %s", o } } }
+        ' "$page" "$tmp/help")
         check "$name.1 names every option of 'tirenv $c --help'${missing:+ (missing:$missing)}" \
             test -z "$missing"
     fi
