@@ -86,6 +86,10 @@ check "tirenv flat reads the moved tree's default tire" \
 run "$Q/bin/tirenv" envelope --model springs --cleat 0.30,0.10 --contact-length 0.33 -o cli.csv
 check "moved, no TIRENV_DATA: tirenv envelope exits 0" test "$rc" -eq 0
 check "tirenv envelope writes 1701 positions" test "$(wc -l <cli.csv)" -eq 1702
+mkdir -p "$work/bin" && ln -s "$Q/bin/tirenv" "$work/bin/tirenv"
+run "$work/bin/tirenv" flat
+check "run through a symbolic link elsewhere, it still finds the moved tree's data" \
+    sh -c "test $rc -eq 0 && grep -qF 'tire $Q/share/tirenv/tires/default.tir,' '$out'"
 run env TIRENV_DATA="$work/none" "$Q/bin/tirenv" flat
 check "TIRENV_DATA overrides the installed data: exit 2 naming it" \
     sh -c "test $rc -eq 2 && grep -qF '$work/none/tires/default.tir' '$err'"
