@@ -1,7 +1,7 @@
 /* The springs model's fast paths against the plain ones they replace (docs/models.md
  * section 4): the pinned-chain tip solve against the Thomas active-set solve, the fan of rays
  * (each walk resuming the last) and its reuse across centre heights against one ray at a time,
- * and a workspace's kept state against a fresh workspace.
+ * a workspace's kept state against a fresh workspace, and ground narrower than the rays.
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * The rays are exact claims (the same operations on the same points, so the same bits); the
@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "tirenv/profile.h"
+#include "tirenv/model.h"
 #include "tirenv/road.h"
 #include "tirenv/springs.h"
 #include "tirenv/tire.h"
@@ -308,12 +309,136 @@ static void test_kept_state_is_invisible(void **state)
     gsl_rng_free(rng);
 }
 
+/* ---- Ground narrower than the rays ---- */
+
+/* A needle under the tire: the springs model refuses the position with TIRENV_ERANGE and says
+ * where and how wide, through the model API and the element level alike; today's model gave
+ * h = 0 there (the needle slipped between two rays). With its centre exactly over the needle
+ * the straight-down element stands on its tip: a contact the model does see (the tread rests
+ * on the needle, 70 mm up), not refused. */
+static void test_needle_refused(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_profile *needle = tirenv_profile_cleat(1e-9, 0.1);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(m, needle, 13000, &diag), TIRENV_OK);
+    tirenv_point pt;
+    assert_int_equal(tirenv_model_eval(m, 0.003, &pt, &diag), TIRENV_ERANGE);
+    print_message("%s\n", diag.message);
+    assert_non_null(strstr(diag.message, "at x = 0.003 m"));
+    assert_non_null(strstr(diag.message, "1e-09 m wide"));
+    assert_non_null(strstr(diag.message, "rays 0.00"));
+    assert_int_equal(tirenv_model_eval(m, 0.0, &pt, &diag), TIRENV_OK);
+    assert_true(pt.h > 0.05 && pt.contacts == 1);
+    tirenv_model_free(m);
+
+    tirenv_springs *s = tirenv_springs_alloc(&t.springs);
+    double fx, fz, dfz;
+    size_t c;
+    assert_int_equal(tirenv_springs_forces(s, needle, 0.003, 0.66, &fx, &fz, &dfz, &c),
+                     TIRENV_ERANGE);
+    tirenv_springs_refusal(s, &diag);
+    assert_non_null(strstr(diag.message, "1e-09 m wide"));
+    /* Cleared by the next evaluation that succeeds. */
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    assert_non_null(flat);
+    assert_int_equal(tirenv_springs_forces(s, flat, 0.0, 0.66, &fx, &fz, &dfz, &c), 0);
+    tirenv_springs_refusal(s, &diag);
+    assert_int_equal(diag.message[0], '\0');
+    tirenv_profile_free(flat);
+    tirenv_springs_free(s);
+    tirenv_profile_free(needle);
+}
+
+/* The pairs of rays the springs model looks between (found from the walks, so that most
+ * evaluations look at none) miss nothing a look between every pair of neighbours and of rays
+ * two apart finds: on random grounds with narrow spikes, at random positions and heights,
+ * with the tread at random depths, both find the same feature or none. */
+static void test_pairs_miss_nothing(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 5);
+    const double R0 = 0.6837;
+    enum { N = 361 };
+    static double sin_t[N], cos_t[N], s[N], drop[N], reach[N], rho[N], tread[N];
+    static tirenv_springs__ray_memo memo[N];
+    static size_t pairs[4 * N];
+    const size_t i0 = N / 2;
+    for (size_t i = 0; i < N; ++i) {
+        const double th = ((double)i - (double)i0) * M_PI / 360;
+        sin_t[i] = sin(th);
+        cos_t[i] = cos(th);
+    }
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, s, drop, reach);
+    const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
+                                           .cos_t = cos_t, .s = s, .drop = drop,
+                                           .reach = reach};
+    size_t found = 0, trials = 0;
+    for (int g = 0; g < 40; ++g) {
+        /* Flat ground with spikes 0.5 to 10 mm wide and up to 40 mm tall, some on walls. */
+        enum { V = 200 };
+        double x[V], z[V];
+        double X = -1.0;
+        size_t n = 0;
+        while (n + 4 < V && X < 1.0) {
+            X += 0.005 + 0.05 * gsl_rng_uniform(rng);
+            const double w = 0.0005 + 0.0095 * gsl_rng_uniform(rng);
+            const double h = 0.04 * gsl_rng_uniform(rng);
+            x[n] = X, z[n++] = 0;
+            if (gsl_rng_uniform(rng) < 0.5) {
+                x[n] = X, z[n++] = h; /* a wall up */
+                x[n] = X + w, z[n++] = h;
+            } else {
+                x[n] = X + 0.5 * w, z[n++] = h; /* a spike */
+            }
+            X += w;
+            x[n] = X, z[n++] = 0;
+        }
+        tirenv_profile *p = tirenv_profile_alloc(n, x, z);
+        assert_non_null(p);
+        for (int k = 0; k < 50; ++k, ++trials) {
+            const double xc = -0.6 + 1.2 * gsl_rng_uniform(rng);
+            const double zc = 0.62 + 0.08 * gsl_rng_uniform(rng);
+            tirenv_springs__fan_origin o;
+            tirenv_springs__fan_origin_at(p, xc, R0, &o);
+            const size_t a = i0 - 100, b = i0 + 100;
+            tirenv_springs__fan(p, &o, &rays, zc, a, b, rho, memo);
+            for (size_t i = a; i <= b; ++i) /* the tread at or inside the ground, anywhere */
+                tread[i] = fmin(R0, isfinite(rho[i]) ? rho[i] : R0) -
+                           0.01 * gsl_rng_uniform(rng);
+            tirenv_springs__feature f_all, f_pairs;
+            const int all = tirenv_springs__unseen_feature(p, &rays, xc, zc, a, b, rho, tread,
+                                                           1e-6, &f_all);
+            const size_t np = tirenv_springs__fan_pairs(&o, &rays, a, b, memo, pairs);
+            const int some = tirenv_springs__unseen_pairs(p, &rays, xc, zc, rho, tread, pairs,
+                                                          np, 1e-6, &f_pairs);
+            assert_int_equal(all, some);
+            if (all) {
+                assert_bits_equal(f_all.X, f_pairs.X);
+                assert_bits_equal(f_all.depth, f_pairs.depth);
+                assert_true(f_all.depth > f_all.spacing);
+                ++found;
+            }
+        }
+        tirenv_profile_free(p);
+    }
+    print_message("%zu of %zu states with a feature between the rays\n", found, trials);
+    assert_true(found > 100 && found < trials);
+    gsl_rng_free(rng);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pinned_matches_thomas),
         cmocka_unit_test(test_fan_matches_single_rays),
         cmocka_unit_test(test_kept_state_is_invisible),
+        cmocka_unit_test(test_needle_refused),
+        cmocka_unit_test(test_pairs_miss_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

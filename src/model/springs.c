@@ -3,6 +3,7 @@
 #include "tirenv/springs.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "model/springs_impl.h"
@@ -39,9 +40,12 @@ struct tirenv_springs {
     unsigned long long ray_serial;  /* profile serial; 0 = nothing kept */
     tirenv_springs__fan_origin origin;
     size_t ray_a, ray_b;
-    double *rho, *ray_s, *ray_drop, *ray_reach;
+    size_t *pairs, n_pairs, pairs_a, pairs_b;  /* of rays a..b, for check_unseen */
+    double *rho, *ray_s, *ray_drop, *ray_reach, *tread;
     tirenv_springs__fan_rays rays;
     tirenv_springs__ray_memo *memo;
+    int refused;           /* the last evaluation found ground the rays cannot see */
+    tirenv_diag refusal;   /* where, and what (when refused) */
 };
 
 static void precompute_chains(tirenv_springs *s)
@@ -88,19 +92,20 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->N = 2 * s->i0 + 1;
     s->k_r = par->c_r * par->dphi;
     s->k_ir = par->c_b / par->dphi;
-    const size_t N = s->N, n_arrays = 19, n_tables = 5;
+    const size_t N = s->N, n_arrays = 20, n_tables = 5;
     double *buf = calloc(n_arrays * N + n_tables * (N + 2), sizeof *buf);
     s->active = calloc(N, 1);
     s->pins.gap = calloc(2 * N, sizeof *s->pins.gap);
     s->memo = calloc(N, sizeof *s->memo);
-    if (!buf || !s->active || !s->pins.gap || !s->memo) {
+    s->pairs = calloc(4 * N, sizeof *s->pairs);
+    if (!buf || !s->active || !s->pins.gap || !s->memo || !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
     }
     double **arrays[] = {&s->theta, &s->sin_t, &s->cos_t, &s->diag, &s->L_D, &s->R_D, &s->lq,
                          &s->rq, &s->S_lc, &s->S_ls, &s->S_rc, &s->S_rs, &s->d, &s->p,
-                         &s->dd, &s->rho, &s->ray_s, &s->ray_drop, &s->ray_reach};
+                         &s->dd, &s->rho, &s->ray_s, &s->ray_drop, &s->ray_reach, &s->tread};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
         *arrays[k] = buf + k * N;
     double **tables[] = {&s->ce, &s->cm, &s->cmi, &s->w, &s->dw}; /* N + 2 each */
@@ -138,6 +143,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->active);
     free(s->pins.gap);
     free(s->memo);
+    free(s->pairs);
     free(s);
 }
 
@@ -189,6 +195,14 @@ static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
     s->ray_b = 0;
 }
 
+/* The ray pairs to look between for ground the rays cannot see, from the walks. */
+static void find_pairs(tirenv_springs *s, size_t a, size_t b)
+{
+    s->n_pairs = tirenv_springs__fan_pairs(&s->origin, &s->rays, a, b, s->memo, s->pairs);
+    s->pairs_a = a;
+    s->pairs_b = b;
+}
+
 /* rho[a..b] and drho[a..b] from (origin.x, z): the rays of the last evaluation again where
  * each provably still ends on the same face (same profile, same x), else a fresh fan. Both give
  * the bits tirenv_springs__ray_at gives. */
@@ -196,16 +210,71 @@ static void cast_rays(tirenv_springs *s, const tirenv_profile *prof, double z, s
                       size_t b)
 {
     if (s->ray_a <= a && b <= s->ray_b &&
-        tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo))
+        tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo)) {
+        if (a != s->pairs_a || b != s->pairs_b)
+            find_pairs(s, a, b);
         return;
+    }
     tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
     s->ray_a = a;
     s->ray_b = b;
+    find_pairs(s, a, b);
+}
+
+/* How far (in units of R0) ground must stand above what the rays see before it counts as a
+ * feature: far above rounding, far below the ray spacing that decides (springs_feature.c). */
+static const double feature_tol = 1e-6;
+
+/* Refuses the state just computed if ground pokes into the tread between rays that cannot see
+ * it (tirenv_springs__unseen_feature); the tread along each ray is R0 - w, with w carried
+ * out along the free chains beyond [f0, f1]. */
+static int check_unseen(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                        size_t a, size_t b, size_t f0, size_t f1)
+{
+    const double R0 = s->par.R0;
+    double *tread = s->tread;
+    if (s->n_pairs == 0)
+        return TIRENV_OK;
+    if (f0 <= f1) {
+        for (size_t i = f0; i <= f1; ++i)
+            tread[i] = R0 - s->w[i];
+        double w = s->w[f0];
+        for (size_t j = f0; j-- > a;)
+            tread[j] = R0 - (w *= s->lq[j]);
+        w = s->w[f1];
+        for (size_t j = f1 + 1; j <= b; ++j)
+            tread[j] = R0 - (w *= s->rq[j]);
+    } else {
+        for (size_t i = a; i <= b; ++i)
+            tread[i] = R0;
+    }
+    tirenv_springs__feature f;
+    if (!tirenv_springs__unseen_pairs(prof, &s->rays, x, z, s->rho, tread, s->pairs,
+                                      s->n_pairs, feature_tol * R0, &f))
+        return TIRENV_OK;
+    s->refused = 1;
+    /* The finest element angle that would see it: its angular width, if one is practical. */
+    const double angle = f.width / f.distance;
+    char remedy[160];
+    if (angle >= 1e-4)
+        snprintf(remedy, sizeof remedy, "an ELEMENT_ANGLE below %.3g rad would see it",
+                 angle);
+    else
+        snprintf(remedy, sizeof remedy, "no practical ELEMENT_ANGLE sees it; the rigid model "
+                 "follows it exactly");
+    return tirenv_error(&s->refusal, TIRENV_ERANGE, "", 0, "profile",
+                        "at x = %.9g m a feature of the ground %.3g m wide (at X = %.6g m, "
+                        "%.3g m from the centre) reaches %.3g m into the tread between two "
+                        "rays %.3g m apart that do not see it: narrower than the ray spacing, "
+                        "the springs model cannot resolve it (a real tread would rest on it); "
+                        "%s",
+                        x, f.width, f.X, f.distance, f.depth, f.spacing, remedy);
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                           double *fx, double *fz, double *dfz_dz, size_t *contacts)
 {
+    s->refused = 0;
     const double R0 = s->par.R0, k_r = s->k_r;
     size_t a = 1, b = 0;
     set_origin(s, prof, x);
@@ -241,7 +310,7 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
     s->b = f1;
     if (f0 > f1) {
         s->pins.count = 0;
-        return 0;
+        return any ? check_unseen(s, prof, x, z, a, b, f0, f1) : TIRENV_OK;
     }
 
     size_t passes;
@@ -275,7 +344,17 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
             sum += k_r * s->dw[i] * s->cos_t[i];
         *dfz_dz = sum;
     }
-    return 0;
+    return check_unseen(s, prof, x, z, a, b, f0, f1);
+}
+
+void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag)
+{
+    if (!diag)
+        return;
+    if (s->refused)
+        *diag = s->refusal;
+    else
+        tirenv_diag_clear(diag);
 }
 
 void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double p[])

@@ -75,6 +75,49 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
                               const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
                               double rho[], const tirenv_springs__ray_memo memo[]);
 
+/* A feature of the ground narrower than the ray spacing (springs_feature.c). */
+typedef struct {
+    double X, Z;      /* its highest point, m */
+    double width;     /* its width where it is inside the tread, m */
+    double rise;      /* how far it stands above that line, m */
+    double depth;     /* how far it reaches into the tread, m */
+    double distance;  /* from the centre, m */
+    double spacing;   /* the rays' spacing at that distance, m */
+} tirenv_springs__feature;
+
+/* Ground that pokes into the tread between two rays a..b of a fan from (x, z) while neither
+ * ray meets it, nor only the one ray between two others (on one side, or the straight-down
+ * ray between its neighbours): a feature narrower than the ray spacing, which the elements cannot see (a real, continuous tread rests on it). rho[i] is
+ * ray i's first crossing (INFINITY: none within rho_max), tread[i] the tread's distance from
+ * the centre along ray i (m). A feature counts if it rises from and falls back to the line
+ * joining what the rays on either side of it see (a crossing, or the ground under the tip of
+ * a ray that meets none within rho_max) between them, stands more than tol above that line
+ * and reaches deeper into the tread than the rays' spacing there (and than tol): shallower
+ * ones change the answer by less than the model's own discretisation error, a ray missing a
+ * corner by up to about a spacing. Returns 1 with *f describing the first one
+ * found, else 0. O(rays + vertices between them). Usable by any model casting a fan of rays
+ * (the ring: its belt's radius along each ray as tread). */
+int tirenv_springs__unseen_feature(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                   double x, double z, size_t a, size_t b, const double rho[],
+                                   const double tread[], double tol,
+                                   tirenv_springs__feature *f);
+
+/* The pairs of rays (k, m) = (pairs[2q], pairs[2q+1]) that tirenv_springs__unseen_feature
+ * must look between, given the walks of a fan (memo[a..b]): neighbours or rays two apart on
+ * one side whose anchors may have three vertices or more between them (fewer cannot hold a
+ * feature). pairs
+ * has room for 2 (b - a + 1) pairs; returns their number. O(rays); the same for every height
+ * the memo is reused at. */
+size_t tirenv_springs__fan_pairs(const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t a, size_t b,
+                                 const tirenv_springs__ray_memo memo[], size_t pairs[]);
+
+/* tirenv_springs__unseen_feature over those pairs only. */
+int tirenv_springs__unseen_pairs(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                 double x, double z, const double rho[], const double tread[],
+                                 const size_t pairs[], size_t n_pairs, double tol,
+                                 tirenv_springs__feature *f);
+
 /* A tridiagonal obstacle problem K w = p, w >= d, p >= 0, p.(w - d) = 0 with K given by its
  * diagonal diag[0..n-1] and constant off-diagonal -k_ir, solved by the primal-dual active
  * set method. active[] holds the starting guess (1 = w_i = d_i) and returns the final set.

@@ -364,3 +364,46 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
     }
     return 1;
 }
+
+size_t tirenv_springs__fan_pairs(const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t a, size_t b,
+                                 const tirenv_springs__ray_memo memo[], size_t pairs[])
+{
+    /* Forward, a walk that ended at vertex j has every vertex before j at or before its
+     * anchor (springs_feature.c: its crossing, or the ground under its tip, which lies past
+     * the last vertex the walk passed) and no vertex from j on strictly before it (the
+     * crossing lies on the segment ending at j, the tip before j). So at most j_m - j_k
+     * vertices lie strictly between the anchors of an inner ray k and an outer ray m: a
+     * feature, which needs three, needs j_m - j_k >= 3. Backward the same mirrored; the
+     * straight-down ray's anchor is under x, between first[0] and first[1]. The pairs come in
+     * the order tirenv_springs__unseen_feature looks at them. */
+    const size_t i0 = r->i0;
+    size_t n = 0;
+    for (int side = 0; side < 2; ++side) {
+        const long dir = side ? 1 : -1;
+        const size_t count = side ? b - i0 : i0 - a;
+        const tirenv_springs__ray_memo *mm = memo + i0;
+        long j1 = o->first[side], j2 = j1;
+        for (size_t step = 1; step <= count; ++step) {
+            const long jm = mm[dir * (long)step].j;
+            const size_t m = side ? i0 + step : i0 - step;
+            if (dir * (jm - j1) >= 3) {
+                pairs[2 * n] = side ? m - 1 : m + 1;
+                pairs[2 * n++ + 1] = m;
+            }
+            if (step >= 2 && dir * (jm - j2) >= 3) {
+                pairs[2 * n] = side ? m - 2 : m + 2;
+                pairs[2 * n++ + 1] = m;
+            }
+            j2 = j1;
+            j1 = jm;
+        }
+    }
+    /* The two rays either side of the straight-down one: vertices j_back + 1 .. j_fwd - 1 at
+     * most lie between their anchors. */
+    if (a < i0 && i0 < b && memo[i0 + 1].j - memo[i0 - 1].j - 1 >= 3) {
+        pairs[2 * n] = i0 - 1;
+        pairs[2 * n++ + 1] = i0 + 1;
+    }
+    return n;
+}
