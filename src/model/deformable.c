@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include "core/equilibrium.h"
 #include "model/rigid_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 typedef struct {
     const tirenv_deformable_ops *ops;

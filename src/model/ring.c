@@ -8,7 +8,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include "model/springs_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* Passes of the active-set iteration before giving up; it typically needs 2 to 4. */
 enum { RING_MAX_PASSES = 100 };

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "model/springs_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* Passes of the active-set iteration before giving up; it needs at most n in theory. */
 enum { LCP_MAX_PASSES = 200 };

@@ -3,7 +3,7 @@
 #include "model/springs_impl.h"
 
 #include <math.h>
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* The ground is a graph z = g(X) with vertical walls and the centre lies above it, so walking
  * from the centre along X in the ray's direction, the first vertex where the ray is at or below

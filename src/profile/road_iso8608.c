@@ -27,7 +27,7 @@
 #include <gsl/gsl_fft_halfcomplex.h>
 #include <gsl/gsl_rng.h>
 
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 tirenv_road_settings tirenv_road_default(void)
 {
