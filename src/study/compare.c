@@ -16,7 +16,7 @@
 #include "study/plot.h"
 #include "tirenv/io.h"
 #include "tirenv/nn.h"
-#include "core/clock.h"
+#include "study/clock.h"
 
 /* A cap on timing repeats, should the clock not advance. */
 enum { MAX_REPEATS = 1000000 };
@@ -357,9 +357,9 @@ static void run_model(evaluator *ev, size_t j, const tirenv_dataset *ds,
         tirenv_compare_entry *e = &r->entry[i * r->n_models + j];
         tirenv_diag d;
         tirenv_diag_clear(&d);
-        const double t0 = tirenv__wall_seconds();
+        const double t0 = tirenv_study__wall_seconds();
         int status = evaluate(ev, c, e->h, &d);
-        const double t1 = tirenv__wall_seconds();
+        const double t1 = tirenv_study__wall_seconds();
         if (!status)
             status = tirenv_curve_errors_compute(c->curve.n, c->curve.x, c->curve.h, e->h,
                                                  s->rise_threshold, &e->errors);
@@ -378,11 +378,11 @@ static void run_model(evaluator *ev, size_t j, const tirenv_dataset *ds,
     double best = pass, total = pass;
     size_t repeats = 1;
     while (total < s->min_time && repeats < MAX_REPEATS) {
-        const double t0 = tirenv__wall_seconds();
+        const double t0 = tirenv_study__wall_seconds();
         for (size_t i = 0; i < r->n_cases; ++i)
             if (r->entry[i * r->n_models + j].status == TIRENV_OK)
                 (void)evaluate(ev, &ds->cases[r->case_index[i]], scratch, NULL);
-        const double t = tirenv__wall_seconds() - t0;
+        const double t = tirenv_study__wall_seconds() - t0;
         total += t;
         best = fmin(best, t);
         ++repeats;

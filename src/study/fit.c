@@ -1,7 +1,7 @@
 /* Identification of a physical model on measured curves (docs/models.md section 8): nonlinear least
  * squares on h over the training cases, with standard errors from the covariance. */
 #include "tirenv/study.h"
-#include "core/clock.h"
+#include "study/clock.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -110,7 +110,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
 {
     gsl_set_error_handler_off();
-    const double t0 = tirenv__wall_seconds();
+    const double t0 = tirenv_study__wall_seconds();
     const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
     const int cam = type == tirenv_model_cam;
     if (!cam && type != tirenv_model_springs)
@@ -187,7 +187,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         }
         *tire = c.tire;
     }
-    report->seconds = tirenv__wall_seconds() - t0;
+    report->seconds = tirenv_study__wall_seconds() - t0;
     free(c.h);
     gsl_multifit_nlinear_free(w);
     gsl_vector_free(p0);

@@ -339,7 +339,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
     }
 
     const double out_std = out_std_of(r.nn);
-    const double t_start = tirenv__wall_seconds();
+    const double t_start = tirenv_core__wall_seconds();
     tirenv_train_report rep = {0};
     double best_overall = INFINITY;
     int cancelled = 0;
@@ -350,7 +350,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             run_free(type, &r);
             return status;
         }
-        const double t_restart = tirenv__wall_seconds();
+        const double t_restart = tirenv_core__wall_seconds();
         double best = tirenv_train__sse(r.nn, sel, r.y);
         size_t best_epoch = 0, epoch = 0;
         double best_time = 0;
@@ -368,7 +368,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             if (e < best) {
                 best = e;
                 best_epoch = epoch;
-                best_time = tirenv__wall_seconds() - t_restart;
+                best_time = tirenv_core__wall_seconds() - t_restart;
                 tirenv_nn_copy(r.cand, r.nn);
             }
             if (s->progress) {
@@ -411,7 +411,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             rep.stop = stop;
         }
     }
-    rep.wall_time = tirenv__wall_seconds() - t_start;
+    rep.wall_time = tirenv_core__wall_seconds() - t_start;
     rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(r.best, train);
     rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(r.best, control);
     rep.error[TIRENV_SPLIT_VALIDATION] = tirenv_train_evaluate(r.best, validation);
