@@ -5,6 +5,7 @@
 
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
+#include "tirenv/xn.h"
 #include "tirenv/road.h"
 #include "tirenv/tire.h"
 #include "tirenv/model.h"
