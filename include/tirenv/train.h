@@ -1,5 +1,5 @@
-/* tirenv: training the empirical model's network (docs/models.md section 6), and its model file.
- * Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
+/* tirenv: training the empirical model's network (docs/models.md section 6); its model file, a
+ * file format, is in nn_file.h. Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_TRAIN_H
 #define TIRENV_TRAIN_H
@@ -164,32 +164,6 @@ uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h);
 int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
                                 tirenv_samples *out, double **x, double **y,
                                 tirenv_diag *diag);
-
-/* ---- Model files (src/nn/nn_json.c): a network and how it was trained, as JSON. ---- */
-
-#define TIRENV_NN_FORMAT "tirenv-nn"
-#define TIRENV_NN_FORMAT_VERSION 1
-
-/* What a model file records besides the network. */
-typedef struct {
-    char trainer[32];                /* trainer name, or "" */
-    tirenv_train_settings settings;  /* as used (the callback is not saved) */
-    tirenv_train_report report;
-    uint64_t fingerprint;            /* tirenv_samples_fingerprint of train, control,
-                                        validation in turn */
-    double R0;                       /* free radius of the tire the data's x_N refers to, m;
-                                        0 if unknown */
-    char data[512];                  /* data set directory, or "" */
-} tirenv_train_record;
-
-/* Writes nn and rec (rec may be NULL) atomically (tirenv_outfile). Non-finite numbers are
- * refused. Reals are written with 17 significant digits, so reading gives the same bits. */
-int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
-                         tirenv_diag *diag);
-/* Reads a model file, checking format, version, sizes, finiteness, ranges and the network
- * checksum; errors name the file and the field. *out is NULL on failure; rec may be NULL. */
-int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
-                        tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

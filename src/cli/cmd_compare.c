@@ -8,7 +8,7 @@
 #include "cli/cli.h"
 #include "tirenv/nn.h"
 #include "tirenv/study.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 enum { MAX_CASES = 256 };
 

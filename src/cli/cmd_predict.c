@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 /* As tirenv envelope: the default sweep from R0 + 0.02 m before the cleat to as far beyond
  * it, 1 mm apart. */

@@ -8,7 +8,7 @@
 
 #include "cli/cli.h"
 #include "tirenv/dataset.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 static void usage(FILE *fp)
 {

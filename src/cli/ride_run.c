@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "cli/ride_cli.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 /* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
  * its end inside a run; and the default run-in before the obstacle and settling after it. */
