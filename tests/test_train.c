@@ -30,6 +30,7 @@
 #include <unistd.h>
 #include <jansson.h>
 
+#include "tirenv/dataset.h"
 #include "tirenv/nn_file.h"
 
 enum { POINTS = 21, MAX_SAMPLES = 28 * POINTS };

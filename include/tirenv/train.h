@@ -7,11 +7,17 @@
 #include "tirenv/decls.h"
 #include <stddef.h>
 #include <stdint.h>
-#include "tirenv/dataset.h"
 #include "tirenv/error.h"
 #include "tirenv/nn.h"
 
 TIRENV_BEGIN_DECLS
+
+/* The three sets of samples a network is trained, stopped and judged on. */
+typedef enum {
+    TIRENV_SPLIT_TRAIN = 0,   /* fits and trains on it */
+    TIRENV_SPLIT_CONTROL,     /* early stopping / model selection */
+    TIRENV_SPLIT_VALIDATION   /* reported only, never seen in training */
+} tirenv_split;
 
 /* n samples of n_in inputs and one output, borrowed from the caller. For the enveloping
  * model the inputs are x_N, l_c (m), H (m), L (m) and the output is h (m). */
@@ -157,13 +163,6 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
  * continuing from h (start with TIRENV_FNV1A64_OFFSET): the data-set fingerprint. */
 #define TIRENV_FNV1A64_OFFSET UINT64_C(0xcbf29ce484222325)
 uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h);
-
-/* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,
- * L), output h; cases of the given split only. Allocates *x and *y (free them); TIRENV_EINVAL
- * if a case has no curve. */
-int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
-                                tirenv_samples *out, double **x, double **y,
-                                tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif
