@@ -247,7 +247,7 @@ static int envelope_stream(const cli_options *o, const tirenv_tire *tire, tirenv
         !(status = tirenv_outfile_open(&out, out_path, &diag))) {
         so.fp = out.fp;
         fputs(header, out.fp);
-        status = tirenv_model_stream(m, in, s->x_from, s->x_to, s->dx, load, stream_row, &so,
+        status = tirenv_model_stream(m, tirenv_profile_reader_source, in, s->x_from, s->x_to, s->dx, load, stream_row, &so,
                                      NULL, &diag);
         if (status == TIRENV_EIO && ferror(out.fp))
             status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
