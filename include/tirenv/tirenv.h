@@ -20,6 +20,7 @@
 #include "tirenv/dataset.h"
 #include "tirenv/nn_road.h"
 #include "tirenv/vehicle.h"
+#include "tirenv/vehicle_file.h"
 #include "tirenv/ride.h"
 #include "tirenv/comfort.h"
 

@@ -1,8 +1,9 @@
 /* The vehicle property file (.veh): the .tir syntax through the property-file engine, with
  * the keys of data/vehicles/tractor.veh. SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/vehicle_file.h"
+
 #include "data/propfile.h"
-#include "tirenv/tirenv.h"
-#include "tirenv/vehicle.h"
+#include "tirenv/tirenv.h"  /* TIRENV_VERSION, written into the file */
 
 #include <stddef.h>
 #include <stdio.h>
