@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "data/rig_impl.h"
 
 static void usage(FILE *fp)
 {
@@ -66,7 +65,7 @@ static int contact_length(const cli_options *o, const tirenv_tire *tire, double 
     return CLI_EXIT_OK;
 }
 
-static void summary(const char *log, const tirenv_rig__info *in, const tirenv_curve *c)
+static void summary(const char *log, const tirenv_import_info *in, const tirenv_curve *c)
 {
     double peak = 0;
     for (size_t k = 0; k < c->n; k++)
@@ -191,8 +190,8 @@ int cli_import_main(int argc, char *argv[])
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_curve curve;
-    tirenv_rig__info info;
-    int status = tirenv_rig__import_file(a.log, &a.s, &curve, &info, &diag);
+    tirenv_import_info info;
+    int status = tirenv_rig_import_file(a.log, &a.s, &curve, &info, &diag);
     if (status == TIRENV_OK)
         status = tirenv_curve_write_csv(a.output, &curve, NULL, &diag);
     if (status == TIRENV_OK)
