@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
 
 #include "cli/cli.h"
 
@@ -91,6 +92,9 @@ int main(int argc, char *argv[])
         {"version", no_argument, NULL, 'V'},
         {NULL, 0, NULL, 0},
     };
+    /* The library checks every GSL status and reports failures itself; GSL's default handler
+     * would abort first. Setting it is the program's business, not the library's (error.h). */
+    gsl_set_error_handler_off();
     int c;
     /* '+' stops at the command name, so its options are left for it to parse. */
     while ((c = getopt_long(argc, argv, "+hV", longopts, NULL)) != -1) {

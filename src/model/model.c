@@ -2,7 +2,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
 #include "model/model_impl.h"
 
 struct tirenv_model {
@@ -39,8 +38,6 @@ const tirenv_tire *tirenv_model_tire(const tirenv_model *m) { return &m->tire; }
 
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
-    /* The library checks every GSL status itself; GSL's default handler would abort(). */
-    gsl_set_error_handler_off();
     if (!type || tirenv_tire_check(tire, NULL))
         return NULL;
     tirenv_model *m = calloc(1, sizeof *m);

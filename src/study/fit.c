@@ -109,7 +109,6 @@ static void fit_callback(const size_t iter, void *params_, const gsl_multifit_nl
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
 {
-    gsl_set_error_handler_off();
     const double t0 = tirenv_study__wall_seconds();
     const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
     const int cam = type == tirenv_model_cam;

@@ -4,7 +4,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
 
 #include "train/train_impl.h"
 #include "core/clock.h"
@@ -256,7 +255,6 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
                  tirenv_train_report *report, tirenv_diag *diag)
 {
     *out = NULL;
-    gsl_set_error_handler_off();
     if (!type || !settings || !train)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no trainer, settings or samples");
     if (train->n == 0)
