@@ -31,7 +31,7 @@ static void test_flat_loads_match_prototype(void **state)
             continue;
         double fx, fz;
         assert_int_equal(tirenv_ring_forces(r, flat, 0.0, t.springs.R0 - defl, &fx, &fz, NULL,
-                                            NULL), 0);
+                                            NULL, NULL), 0);
         assert_near(fz, load, 5e-4, 0);
         assert_near(fx, 0, 1e-9 * load, 0);
         /* The prototype's patch is the span of the nodes with pressure; ours interpolates the
@@ -133,7 +133,8 @@ static void test_contact_conditions(void **state)
     for (size_t ix = 0; ix < 4; ++ix) {
         double fx, fz;
         size_t contacts;
-        assert_int_equal(tirenv_ring_forces(r, p, xs[ix], 0.6713, &fx, &fz, NULL, &contacts), 0);
+        assert_int_equal(
+            tirenv_ring_forces(r, p, xs[ix], 0.6713, &fx, &fz, NULL, &contacts, NULL), 0);
         tirenv_ring_state(r, w, f);
         double sum = 0;
         size_t n_pos = 0, bulging = 0;
@@ -184,12 +185,12 @@ static void test_symmetry_and_derivative(void **state)
     for (double z = 0.64; z < 0.70; z += 0.00137) {
         double fx, F, dF, Fp, Fm, F0;
         const double dz = 1e-7;
-        tirenv_ring_forces(r, p, -0.1711, z, &fx, &F, &dF, NULL);
+        tirenv_ring_forces(r, p, -0.1711, z, &fx, &F, &dF, NULL, NULL);
         if (F < 10)
             continue;
-        tirenv_ring_forces(r, p, -0.1711, z + dz, &fx, &Fp, NULL, NULL);
-        tirenv_ring_forces(r, p, -0.1711, z - dz, &fx, &Fm, NULL, NULL);
-        tirenv_ring_forces(r, p, -0.1711, z, &fx, &F0, NULL, NULL);
+        tirenv_ring_forces(r, p, -0.1711, z + dz, &fx, &Fp, NULL, NULL, NULL);
+        tirenv_ring_forces(r, p, -0.1711, z - dz, &fx, &Fm, NULL, NULL, NULL);
+        tirenv_ring_forces(r, p, -0.1711, z, &fx, &F0, NULL, NULL, NULL);
         if (fabs((Fp - F0) - (F0 - Fm)) > 1e-6 * fabs(dF) * dz)
             continue; /* a kink or jump within dz: one-sided differences disagree */
         assert_near(dF, (Fp - Fm) / (2 * dz), 0, 1e-6);
@@ -215,20 +216,20 @@ static void test_lugs_roll_with_the_tread(void **state)
     tirenv_profile *flat = flat_ground();
     const double pitch = 2 * M_PI * t.springs.R0 / 23, z = 0.641;
     double F_min = INFINITY, F_max = 0, fx, F, F_smooth0;
-    tirenv_ring_forces(smooth, flat, 0, z, &fx, &F_smooth0, NULL, NULL);
+    tirenv_ring_forces(smooth, flat, 0, z, &fx, &F_smooth0, NULL, NULL, NULL);
     for (int k = 0; k < 17; ++k) {
         /* Mid-steps: a node exactly on a lug edge would flip with the last bit of x. */
         const double x = (k + 0.5) * pitch / 17;
         double Fs;
-        tirenv_ring_forces(lugged, flat, x, z, &fx, &F, NULL, NULL);
+        tirenv_ring_forces(lugged, flat, x, z, &fx, &F, NULL, NULL, NULL);
         F_min = fmin(F_min, F);
         F_max = fmax(F_max, F);
         double F_next;
-        tirenv_ring_forces(lugged, flat, x + pitch, z, &fx, &F_next, NULL, NULL);
+        tirenv_ring_forces(lugged, flat, x + pitch, z, &fx, &F_next, NULL, NULL, NULL);
         /* Same contact one pitch on: equal but for the rounding of theta + x/R0 (~1e-16
          * relative), which 1e-9 relative of ~1e4 N covers with room. */
         assert_near(F_next, F, 1e-6, 1e-9);
-        tirenv_ring_forces(smooth, flat, x, z, &fx, &Fs, NULL, NULL);
+        tirenv_ring_forces(smooth, flat, x, z, &fx, &Fs, NULL, NULL, NULL);
         /* Flat ground, smooth tread: x does not enter at all, up to round-off. */
         assert_near(Fs, F_smooth0, 1e-6, 1e-12);
     }

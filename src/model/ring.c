@@ -193,10 +193,20 @@ static void cast_candidates(tirenv_ring *r, const tirenv_profile *p, double x, d
     }
 }
 
+/* A Cholesky breakdown is its own failure, not a slow convergence: the active-set matrix
+ * C_AA + diag(1/kappa_A) is symmetric positive definite in exact arithmetic, so a breakdown
+ * means the belt's compliance is numerically singular (a far too stiff or too soft tire). */
+static int cholesky_failed(tirenv_diag *diag, size_t na)
+{
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                        "Cholesky factorisation of the %zu x %zu tread-contact matrix broke "
+                        "down (not numerically positive definite)", na, na);
+}
+
 /* With the active set fixed the tread forces f_A solve (C_AA + diag(1/kappa_A)) f_A = d_A: the
  * belt moves by C f and each compressed tread spring carries kappa (d - w). The matrix is SPD
  * (C is), so Cholesky; its factor stays in S for the derivative. */
-static int solve_active(tirenv_ring *r)
+static int solve_active(tirenv_ring *r, tirenv_diag *diag)
 {
     const size_t na = r->na;
     if (na == 0)
@@ -210,14 +220,14 @@ static int solve_active(tirenv_ring *r)
     }
     gsl_matrix_view S = gsl_matrix_view_array(r->S, na, na);
     gsl_vector_view f = gsl_vector_view_array(r->f, na);
-    if (gsl_linalg_cholesky_decomp1(&S.matrix))
-        return TIRENV_ENOCONV;
-    return gsl_linalg_cholesky_svx(&S.matrix, &f.vector) ? TIRENV_ENOCONV : 0;
+    if (gsl_linalg_cholesky_decomp1(&S.matrix) || gsl_linalg_cholesky_svx(&S.matrix, &f.vector))
+        return cholesky_failed(diag, na);
+    return 0;
 }
 
 /* Semi-smooth Newton (primal-dual active set) on f = kappa (d - C f)_+: solve with the set
  * fixed, then take as active every node whose tread would be compressed. */
-static int solve_contact(tirenv_ring *r)
+static int solve_contact(tirenv_ring *r, tirenv_diag *diag)
 {
     for (size_t k = 0; k < r->nc; ++k)
         r->act[k] = r->d[k] > 0 || r->warm[r->node[k]];
@@ -226,7 +236,7 @@ static int solve_contact(tirenv_ring *r)
         for (size_t k = 0; k < r->nc; ++k)
             if (r->act[k])
                 r->ai[r->na++] = k;
-        const int status = solve_active(r);
+        const int status = solve_active(r, diag);
         if (status)
             return status;
         int changed = 0;
@@ -244,7 +254,9 @@ static int solve_contact(tirenv_ring *r)
         if (!changed)
             return 0;
     }
-    return TIRENV_ENOCONV;
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                        "the tread contact's active set did not settle in %d passes",
+                        RING_MAX_PASSES);
 }
 
 /* Contact length: first to last active ground point, each edge extended to where the
@@ -263,10 +275,11 @@ static double patch_length(const tirenv_ring *r)
 }
 
 int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                       double *fx, double *fz, double *dfz_dz, size_t *contacts)
+                       double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                       tirenv_diag *diag)
 {
     cast_candidates(r, p, x, z);
-    const int status = solve_contact(r);
+    const int status = solve_contact(r, diag);
     memset(r->warm, 0, r->M);
     if (status)
         return status;
@@ -291,7 +304,7 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
             gsl_matrix_view S = gsl_matrix_view_array(r->S, r->na, r->na);
             gsl_vector_view v = gsl_vector_view_array(r->rhs, r->na);
             if (gsl_linalg_cholesky_svx(&S.matrix, &v.vector))
-                return TIRENV_ENOCONV;
+                return cholesky_failed(diag, r->na);
             for (size_t a = 0; a < r->na; ++a)
                 *dfz_dz += r->rhs[a] * r->cos_t[r->node[r->ai[a]]];
         }

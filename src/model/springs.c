@@ -136,7 +136,8 @@ static int candidate_span(const tirenv_springs *s, const tirenv_profile *prof, d
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
-                          double *fx, double *fz, double *dfz_dz, size_t *contacts)
+                          double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                          tirenv_diag *diag)
 {
     const double R0 = s->par.R0, k_r = s->k_r, k_ir = s->k_ir;
     size_t a = 1, b = 0;
@@ -173,7 +174,9 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
     const int status = tirenv_springs__lcp(n, s->red, k_ir, s->d + a, s->w + a, s->p + a,
                                            s->active + a, s->work, LCP_MAX_PASSES, &passes);
     if (status)
-        return status;
+        return tirenv_error(diag, status, "", 0, "springs",
+                            "the tip contact of elements %zu to %zu (the LCP) did not settle "
+                            "in %d active-set passes at z = %.9g m", a, b, LCP_MAX_PASSES, z);
 
     /* Eq. 1 and its horizontal counterpart; only the radial springs load the hub. */
     double sum_c = s->w[a] * s->S_lc[a] + s->w[b] * s->S_rc[b];

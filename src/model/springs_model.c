@@ -10,19 +10,22 @@ static void *springs_alloc(const tirenv_tire *tire)
 
 static void springs_free(void *elem) { tirenv_springs_free(elem); }
 
-static int springs_forces(void *elem, const tirenv_profile *p, double x, double z, double *fx,
-                          double *fz, double *dfz_dz, size_t *contacts)
+static int springs_forces(void *elem, const tirenv_profile *p, double x, double z,
+                          tirenv_eq_point *out, tirenv_diag *diag)
 {
-    return tirenv_springs_forces(elem, p, x, z, fx, fz, dfz_dz, contacts);
+    return tirenv_springs_forces(elem, p, x, z, &out->fx, &out->F, &out->dF_dz, &out->contacts,
+                                 diag);
 }
 
 /* docs/models.md section 1: the springs model's contact length is the chord of the free circle at
  * the centre height, so z_flat follows from l_c in closed form. */
 static double springs_R0(void *elem) { return tirenv_springs_params_of(elem)->R0; }
 
-static int springs_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c)
+static int springs_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c,
+                                  tirenv_diag *diag)
 {
     (void)flat;
+    (void)diag;
     const double R0 = springs_R0(elem);
     *l_c = z < R0 ? 2 * sqrt(R0 * R0 - z * z) : 0;
     return 0;
