@@ -163,6 +163,7 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         /* fx is 0 by symmetry, which the force sum only meets to round-off. */
         *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
                               .fz = st->flat_F, .contacts = st->flat_contacts};
+        out->slope = tirenv_model__slope(out);
         st->z_prev = out->z;
         st->have_prev = 1;
         return TIRENV_OK;
@@ -190,5 +191,6 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     out->fz = res.point.F;
     out->fx = res.point.fx;
     out->contacts = res.point.contacts;
+    out->slope = tirenv_model__slope(out);
     return TIRENV_OK;
 }

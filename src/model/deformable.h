@@ -36,15 +36,4 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
 int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag);
 void tirenv_deformable_set_profile(void *state, const tirenv_profile *p);
 
-/* The model-type record of a deformable model: only its name and alloc differ, so every one
- * gets the whole shared driver (set_profile included, which streaming needs). */
-#define TIRENV_DEFORMABLE_TYPE(type_name, alloc_fn)                                          \
-    {                                                                                        \
-        .name = (type_name), .alloc = (alloc_fn), .free = tirenv_deformable_free,            \
-        .flat = tirenv_deformable_flat,                                                      \
-        .load_for_contact_length = tirenv_deformable_load_for_contact_length,                \
-        .set = tirenv_deformable_set, .eval = tirenv_deformable_eval,                        \
-        .set_profile = tirenv_deformable_set_profile,                                        \
-    }
-
 #endif

@@ -101,5 +101,24 @@ static void *ring_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &ring_ops);
 }
 
-static const tirenv_model_type ring_type = TIRENV_DEFORMABLE_TYPE("ring", ring_model_alloc);
+static const tirenv_model_type ring_type = {
+    .name = "ring",
+    .summary = "a flexible ring on an elastic foundation with a tread: the reference tire",
+    .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS | TIRENV_MODEL_EQUILIBRIUM,
+    .params = NULL,
+    .n_params = 0,
+    .n_params_max = 0,
+    .alloc = ring_model_alloc,
+    .free = tirenv_deformable_free,
+    .flat = tirenv_deformable_flat,
+    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
+    .set = tirenv_deformable_set,
+    .eval = tirenv_deformable_eval,
+    .envelope = NULL,
+    .set_profile = tirenv_deformable_set_profile,
+    .reach = NULL,
+    .set_network = NULL,
+    .warnings = NULL,
+    .note = NULL,
+};
 const tirenv_model_type *tirenv_model_ring = &ring_type;
