@@ -51,7 +51,7 @@ const tirenv_model_type *tirenv_model_type_find(const char *name);
 /* Name of a type; its NULL-terminated list of all types. */
 const char *tirenv_model_type_name(const tirenv_model_type *type);
 const tirenv_model_type *const *tirenv_model_types(void);
-/* One line on what the type is, for help texts and reports. */
+/* What the type is, in 48 characters or fewer, for help texts and reports. */
 const char *tirenv_model_type_summary(const tirenv_model_type *type);
 
 /* What a model can do: the flags of its type (tirenv_model_type_flags). */

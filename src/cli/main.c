@@ -1,6 +1,7 @@
 /* tirenv: the command-line tool. A table of subcommands drives dispatch and "tirenv help",
  * as in kmod's tools/kmod.c; each subcommand lives in its own cmd_<name>.c.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
@@ -67,7 +68,8 @@ static const cli_command *find_command(const char *name)
 /* "tirenv help" lists everything; "tirenv help CMD" is "tirenv CMD --help". */
 static int help_main(int argc, char *argv[])
 {
-    if (argc < 2 || strcmp(argv[1], "help") == 0) {
+    if (argc < 2 || strcmp(argv[1], "help") == 0 || strcmp(argv[1], "--help") == 0 ||
+        strcmp(argv[1], "-h") == 0) {
         usage(stdout);
         return CLI_EXIT_OK;
     }

@@ -191,7 +191,7 @@ static const tirenv_model_param cam_params[] = {
 
 static const tirenv_model_type cam_type = {
     .name = "cam",
-    .summary = "MF-Swift's tandem elliptical cam, the industry's effective road",
+    .summary = "MF-Swift's tandem elliptical cam",
     .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS,
     .params = cam_params,
     .n_params = sizeof cam_params / sizeof cam_params[0],

@@ -8,7 +8,7 @@
 
 struct tirenv_model_type {
     const char *name;
-    const char *summary;       /* one line: what the model is */
+    const char *summary;       /* what the model is, in 48 characters or fewer */
     unsigned flags;            /* TIRENV_MODEL_* (model.h): what it can do */
     /* The tire parameters a fit identifies: the first n_params by default, n_params_max with
      * the optional ones; NULL and 0 if it cannot be fitted. */

@@ -332,7 +332,7 @@ static const char *nn_model_note(const void *state)
 
 static const tirenv_model_type nn_type = {
     .name = "nn",
-    .summary = "the paper's trained network (tirenv train); over roads by equivalent cleats",
+    .summary = "the paper's trained network (--nn FILE)",
     .flags = TIRENV_MODEL_NEEDS_NETWORK,
     .params = NULL,
     .n_params = 0,

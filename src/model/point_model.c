@@ -77,14 +77,16 @@ static int point_eval(void *state, double x, tirenv_point *out, tirenv_diag *dia
                              ? (p->z[k + 1] - p->z[k]) / (p->x[k + 1] - p->x[k])
                              : 0;
     const double h = tirenv_profile_height(p, x);
+    /* fx = -G*slope, with level ground's 0 written as 0, not -0. */
+    const double fx = slope != 0 ? -st->G * slope : 0;
     *out = (tirenv_point){.x = x, .z = st->tire.springs.R0 + h, .h = h, .slope = slope,
-                          .fx = -st->G * slope, .fz = st->G, .contacts = 1, .iterations = 0};
+                          .fx = fx, .fz = st->G, .contacts = 1, .iterations = 0};
     return TIRENV_OK;
 }
 
 static const tirenv_model_type point_type = {
     .name = "point",
-    .summary = "the classic single-point contact: the raw profile under the centre",
+    .summary = "single-point contact on the raw profile",
     .flags = TIRENV_MODEL_STREAMS,
     .params = NULL,
     .n_params = 0,

@@ -78,7 +78,7 @@ static int rigid_eval(void *state, double x, tirenv_point *out, tirenv_diag *dia
 
 static const tirenv_model_type rigid_type = {
     .name = "rigid",
-    .summary = "the rigid disc, exact on polylines: the geometric limit",
+    .summary = "the rigid disc: the geometric limit",
     .flags = TIRENV_MODEL_STREAMS,
     .params = NULL,
     .n_params = 0,

@@ -103,7 +103,7 @@ static void *ring_model_alloc(const tirenv_tire *tire)
 
 static const tirenv_model_type ring_type = {
     .name = "ring",
-    .summary = "a flexible ring on an elastic foundation with a tread: the reference tire",
+    .summary = "flexible ring and tread: the reference tire",
     .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS | TIRENV_MODEL_EQUILIBRIUM,
     .params = NULL,
     .n_params = 0,

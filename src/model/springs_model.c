@@ -65,7 +65,7 @@ static const tirenv_model_param springs_params[] = {
 
 static const tirenv_model_type springs_type = {
     .name = "springs",
-    .summary = "the paper's radial and interradial springs: the physical model",
+    .summary = "the paper's radial + interradial springs",
     .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS |
              TIRENV_MODEL_EQUILIBRIUM,
     .params = springs_params,
