@@ -166,9 +166,9 @@ static const eq_case cases[] = {
 static const tirenv_eq_solver_type *const *methods(void)
 {
     static const tirenv_eq_solver_type *list[3];
-    list[0] = tirenv_eq_newton;
-    list[1] = tirenv_eq_secant;
-    list[2] = tirenv_eq_brent;
+    list[0] = tirenv_eq__newton;
+    list[1] = tirenv_eq__secant;
+    list[2] = tirenv_eq__brent;
     return list;
 }
 
@@ -178,15 +178,15 @@ static void run_case(const eq_case *c, size_t m)
     tirenv_eq_settings eq = tirenv_eq_default();
     if (c->max_iter)
         eq.max_iter = c->max_iter;
-    tirenv_eq_solver *s = tirenv_eq_solver_alloc(T);
+    tirenv_eq_solver *s = tirenv_eq__solver_alloc(T);
     assert_non_null(s);
     recorder rec = {.L = &c->L, .n = 0};
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_eq_result res;
-    const int status = tirenv_eq_solve(s, &eq, force, &rec, c->G, &c->prob, &res, &diag);
+    const int status = tirenv_eq__solve(s, &eq, force, &rec, c->G, &c->prob, &res, &diag);
     print_message("%-8s %-52s -> %s, stop %s, %zu evaluations, z %.12g\n", T->name, c->name,
-                  tirenv_strerror(status), tirenv_eq_stop_name(res.stop), res.evals,
+                  tirenv_strerror(status), tirenv_eq__stop_name(res.stop), res.evals,
                   res.point.z);
     const expect *e = &c->e[m];
     assert_int_equal(status, e->status);
@@ -198,7 +198,7 @@ static void run_case(const eq_case *c, size_t m)
         assert_true(isnan(res.point.z));
         if (e->stop == TIRENV_EQ_FORCE_FAILED && c->L.z_fail > NEVER)
             assert_non_null(strstr(diag.message, "refused"));  /* the force's own words */
-        tirenv_eq_solver_free(s);
+        tirenv_eq__solver_free(s);
         return;
     }
     if (e->stop != TIRENV_EQ_RUNNING)
@@ -221,7 +221,7 @@ static void run_case(const eq_case *c, size_t m)
     } else {
         assert_near(res.point.z, root, eq.eps_z, 0);
     }
-    tirenv_eq_solver_free(s);
+    tirenv_eq__solver_free(s);
 }
 
 static void test_table_every_method(void **state)
@@ -240,27 +240,27 @@ static void test_steps_by_hand(void **state)
     const eq_case *c = &cases[2];  /* kinked */
     for (size_t m = 0; m < 3; ++m) {
         const tirenv_eq_settings eq = tirenv_eq_default();
-        tirenv_eq_solver *s = tirenv_eq_solver_alloc(methods()[m]);
+        tirenv_eq_solver *s = tirenv_eq__solver_alloc(methods()[m]);
         assert_non_null(s);
         recorder r1 = {.L = &c->L}, r2 = {.L = &c->L};
         tirenv_eq_result res;
-        assert_int_equal(tirenv_eq_solve(s, &eq, force, &r1, c->G, &c->prob, &res, NULL),
+        assert_int_equal(tirenv_eq__solve(s, &eq, force, &r1, c->G, &c->prob, &res, NULL),
                          TIRENV_OK);
         tirenv_eq_stop stop;
         const tirenv_eq_point *p = NULL;
-        assert_int_equal(tirenv_eq_solver_set(s, &eq, force, &r2, c->G, &c->prob, &stop, NULL),
+        assert_int_equal(tirenv_eq__solver_set(s, &eq, force, &r2, c->G, &c->prob, &stop, NULL),
                          TIRENV_OK);
         size_t steps = 0;
-        while (tirenv_eq_solver_test(s, &p) == TIRENV_EQ_RUNNING) {
+        while (tirenv_eq__solver_test(s, &p) == TIRENV_EQ_RUNNING) {
             assert_null(p);
-            assert_int_equal(tirenv_eq_solver_iterate(s, &stop, NULL), TIRENV_OK);
+            assert_int_equal(tirenv_eq__solver_iterate(s, &stop, NULL), TIRENV_OK);
             ++steps;
         }
         assert_true(steps >= 1);  /* the kink is not found from the first guess */
         assert_non_null(p);
         assert_int_equal(memcmp(p, &res.point, sizeof *p), 0);
         assert_int_equal(r2.calls, res.evals);
-        tirenv_eq_solver_free(s);
+        tirenv_eq__solver_free(s);
     }
 }
 
@@ -269,42 +269,42 @@ static void test_reuse_after_failure(void **state)
 {
     (void)state;
     for (size_t m = 0; m < 3; ++m) {
-        tirenv_eq_solver *s = tirenv_eq_solver_alloc(methods()[m]);
+        tirenv_eq_solver *s = tirenv_eq__solver_alloc(methods()[m]);
         const tirenv_eq_settings eq = tirenv_eq_default();
         recorder bad = {.L = &cases[6].L}, good = {.L = &cases[0].L};
         tirenv_eq_result res;
-        assert_int_equal(tirenv_eq_solve(s, &eq, force, &bad, cases[6].G, &cases[6].prob, &res,
+        assert_int_equal(tirenv_eq__solve(s, &eq, force, &bad, cases[6].G, &cases[6].prob, &res,
                                          NULL),
                          TIRENV_ERANGE);
-        assert_int_equal(tirenv_eq_solve(s, &eq, force, &good, cases[0].G, &cases[0].prob,
+        assert_int_equal(tirenv_eq__solve(s, &eq, force, &good, cases[0].G, &cases[0].prob,
                                          &res, NULL),
                          TIRENV_OK);
         assert_int_equal(res.evals, good.calls);
-        tirenv_eq_solver_free(s);
+        tirenv_eq__solver_free(s);
     }
 }
 
 static void test_names(void **state)
 {
     (void)state;
-    assert_string_equal(tirenv_eq_newton->name, "newton");
-    assert_string_equal(tirenv_eq_secant->name, "secant");
-    assert_string_equal(tirenv_eq_brent->name, "brent");
-    assert_ptr_equal(tirenv_eq_solver_type_of(TIRENV_EQ_NEWTON), tirenv_eq_newton);
-    assert_ptr_equal(tirenv_eq_solver_type_of(TIRENV_EQ_SECANT), tirenv_eq_secant);
-    assert_ptr_equal(tirenv_eq_solver_type_of(TIRENV_EQ_BRENT), tirenv_eq_brent);
+    assert_string_equal(tirenv_eq__newton->name, "newton");
+    assert_string_equal(tirenv_eq__secant->name, "secant");
+    assert_string_equal(tirenv_eq__brent->name, "brent");
+    assert_ptr_equal(tirenv_eq__solver_type_of(TIRENV_EQ_NEWTON), tirenv_eq__newton);
+    assert_ptr_equal(tirenv_eq__solver_type_of(TIRENV_EQ_SECANT), tirenv_eq__secant);
+    assert_ptr_equal(tirenv_eq__solver_type_of(TIRENV_EQ_BRENT), tirenv_eq__brent);
     const tirenv_eq_stop stops[] = {TIRENV_EQ_RUNNING, TIRENV_EQ_RESIDUAL, TIRENV_EQ_BRACKET,
                                     TIRENV_EQ_NO_BRACKET, TIRENV_EQ_MAX_EVALS,
                                     TIRENV_EQ_BREAKDOWN, TIRENV_EQ_FORCE_FAILED};
     for (size_t i = 0; i < sizeof stops / sizeof stops[0]; ++i) {
-        assert_string_not_equal(tirenv_eq_stop_name(stops[i]), "unknown");
+        assert_string_not_equal(tirenv_eq__stop_name(stops[i]), "unknown");
         for (size_t j = 0; j < i; ++j)
-            assert_string_not_equal(tirenv_eq_stop_name(stops[i]),
-                                    tirenv_eq_stop_name(stops[j]));
+            assert_string_not_equal(tirenv_eq__stop_name(stops[i]),
+                                    tirenv_eq__stop_name(stops[j]));
     }
-    assert_string_equal(tirenv_eq_stop_name((tirenv_eq_stop)99), "unknown");
-    tirenv_eq_solver_free(NULL);
-    assert_null(tirenv_eq_solver_alloc(NULL));
+    assert_string_equal(tirenv_eq__stop_name((tirenv_eq_stop)99), "unknown");
+    tirenv_eq__solver_free(NULL);
+    assert_null(tirenv_eq__solver_alloc(NULL));
 }
 
 int main(void)

@@ -12,7 +12,7 @@ TIRENV_BEGIN_DECLS
 
 struct tirenv_nn;  /* the network of the empirical model, tirenv/nn.h */
 
-/* One position of the enveloping curve (docs/models.md sections 1 and 4). */
+/* One position of the enveloping curve (docs/models.md section 1). */
 typedef struct {
     double x;              /* tire-centre longitudinal position, m */
     double z;              /* tire-centre height at equilibrium, m */
@@ -40,11 +40,11 @@ typedef struct {
 /* A model algorithm, chosen by name (GSL style: tirenv_model_springs, tirenv_model_rigid). */
 typedef struct tirenv_model_type tirenv_model_type;
 extern const tirenv_model_type *tirenv_model_rigid;   /* rigid disc, docs/models.md section 3 */
-extern const tirenv_model_type *tirenv_model_springs; /* the paper's springs, section 4 */
+extern const tirenv_model_type *tirenv_model_springs; /* paper's springs, docs section 4 */
 extern const tirenv_model_type *tirenv_model_ring;  /* reference tire, docs/models.md section 5 */
 extern const tirenv_model_type *tirenv_model_cam;   /* tandem cam, docs/models.md section 7 */
-extern const tirenv_model_type *tirenv_model_nn;    /* the trained network, section 6 */
-extern const tirenv_model_type *tirenv_model_point; /* single-point contact, section 9 */
+extern const tirenv_model_type *tirenv_model_nn;    /* trained network, sections 6 and 12 */
+extern const tirenv_model_type *tirenv_model_point; /* single-point contact, section 9.2 */
 
 /* The type with this name ("rigid", "springs", "ring", "cam", "nn", "point"), or NULL. */
 const tirenv_model_type *tirenv_model_type_find(const char *name);

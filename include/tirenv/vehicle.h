@@ -1,5 +1,5 @@
-/* tirenv: the pitch-plane tractor of the ride simulation (its property file, a file format,
- * is in vehicle_file.h).
+/* tirenv: the pitch-plane tractor of the ride simulation (docs/models.md section 9); its
+ * property file (docs/formats.md section 3), a file format, is in vehicle_file.h.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_VEHICLE_H
 #define TIRENV_VEHICLE_H

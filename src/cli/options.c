@@ -11,9 +11,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef TIRENV_DATA_DIR
-#error "TIRENV_DATA_DIR must name the data directory (CMake defines it)"
-#endif
 
 void cli_error(const char *fmt, ...)
 {
@@ -107,13 +104,6 @@ int cli_parse_count(const char *s, long min, long max, long *v)
         return -1;
     *v = l;
     return 0;
-}
-
-const char *cli_data_path(const char *rel, char *buf, size_t n)
-{
-    const char *dir = getenv("TIRENV_DATA");
-    snprintf(buf, n, "%s/%s", dir && dir[0] ? dir : TIRENV_DATA_DIR, rel);
-    return buf;
 }
 
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n)

@@ -280,8 +280,8 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
 
 void cli_help_tire(FILE *fp, int with_method)
 {
-    fputs("  --tire FILE          tire property file (.tir); default: $TIRENV_DATA/tires/\n"
-          "                       default.tir if TIRENV_DATA is set, else the installed one\n"
+    fputs("  --tire FILE          tire property file (.tir); default: tires/default.tir in\n"
+          "                       the data directory ($TIRENV_DATA, else the installed data)\n"
           "  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
           "                       applied in order), e.g. --set RADIAL_STIFFNESS=1.8e6\n",
           fp);

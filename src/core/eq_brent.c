@@ -1,5 +1,5 @@
 /* GSL's Brent-Dekker on the bracket [z_lo, z_hi], a derivative-free baseline for the
- * equilibrium (docs/models.md section 4). SPDX-License-Identifier: GPL-3.0-or-later
+ * equilibrium (docs/models.md section 11). SPDX-License-Identifier: GPL-3.0-or-later
  *
  * GSL evaluates through a plain function returning a double; the evaluation goes through the
  * solver (tirenv_eq__eval) so that it is counted and kept like any other. A failing evaluation
@@ -143,4 +143,4 @@ static const tirenv_eq_solver_type brent_type = {
     .test = brent_test,
 };
 
-const tirenv_eq_solver_type *const tirenv_eq_brent = &brent_type;
+const tirenv_eq_solver_type *const tirenv_eq__brent = &brent_type;

@@ -1,4 +1,4 @@
-/* The safeguarded Newton of docs/models.md section 4, the default equilibrium method.
+/* The safeguarded Newton of docs/models.md section 11, the default equilibrium method.
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
@@ -127,4 +127,4 @@ static const tirenv_eq_solver_type newton_type = {
     .test = newton_test,
 };
 
-const tirenv_eq_solver_type *const tirenv_eq_newton = &newton_type;
+const tirenv_eq_solver_type *const tirenv_eq__newton = &newton_type;

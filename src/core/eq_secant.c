@@ -77,4 +77,4 @@ static const tirenv_eq_solver_type secant_type = {
     .test = secant_test,
 };
 
-const tirenv_eq_solver_type *const tirenv_eq_secant = &secant_type;
+const tirenv_eq_solver_type *const tirenv_eq__secant = &secant_type;

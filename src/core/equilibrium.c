@@ -1,4 +1,4 @@
-/* The equilibrium driver (docs/models.md section 4): solver lifecycle, the one place every
+/* The equilibrium driver (docs/models.md section 11): solver lifecycle, the one place every
  * force evaluation passes through, and the loop set / test / iterate that says why it stopped,
  * in the manner of GSL's gsl_multifit_nlinear_driver. The methods are in eq_newton.c,
  * eq_secant.c and eq_brent.c. SPDX-License-Identifier: GPL-3.0-or-later */
@@ -17,23 +17,23 @@ static const char *const stop_names[] = {
     [TIRENV_EQ_FORCE_FAILED] = "force failed",
 };
 
-const char *tirenv_eq_stop_name(tirenv_eq_stop stop)
+const char *tirenv_eq__stop_name(tirenv_eq_stop stop)
 {
     return (size_t)stop < sizeof stop_names / sizeof stop_names[0] ? stop_names[stop]
                                                                    : "unknown";
 }
 
-const tirenv_eq_solver_type *tirenv_eq_solver_type_of(tirenv_eq_method method)
+const tirenv_eq_solver_type *tirenv_eq__solver_type_of(tirenv_eq_method method)
 {
     switch (method) {
-    case TIRENV_EQ_SECANT: return tirenv_eq_secant;
-    case TIRENV_EQ_BRENT: return tirenv_eq_brent;
+    case TIRENV_EQ_SECANT: return tirenv_eq__secant;
+    case TIRENV_EQ_BRENT: return tirenv_eq__brent;
     case TIRENV_EQ_NEWTON:
-    default: return tirenv_eq_newton;
+    default: return tirenv_eq__newton;
     }
 }
 
-tirenv_eq_solver *tirenv_eq_solver_alloc(const tirenv_eq_solver_type *T)
+tirenv_eq_solver *tirenv_eq__solver_alloc(const tirenv_eq_solver_type *T)
 {
     if (!T)
         return NULL;
@@ -50,7 +50,7 @@ tirenv_eq_solver *tirenv_eq_solver_alloc(const tirenv_eq_solver_type *T)
     return s;
 }
 
-void tirenv_eq_solver_free(tirenv_eq_solver *s)
+void tirenv_eq__solver_free(tirenv_eq_solver *s)
 {
     if (!s)
         return;
@@ -92,7 +92,7 @@ int tirenv_eq__eval(tirenv_eq_solver *s, double z, tirenv_eq_point *out, tirenv_
     return TIRENV_OK;
 }
 
-int tirenv_eq_solver_set(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
+int tirenv_eq__solver_set(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
                          tirenv_eq_force_fn force, void *ctx, double G,
                          const tirenv_eq_problem *prob, tirenv_eq_stop *stop,
                          tirenv_diag *diag)
@@ -108,12 +108,12 @@ int tirenv_eq_solver_set(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
     return s->type->set(s->state, s, stop, diag);
 }
 
-int tirenv_eq_solver_iterate(tirenv_eq_solver *s, tirenv_eq_stop *stop, tirenv_diag *diag)
+int tirenv_eq__solver_iterate(tirenv_eq_solver *s, tirenv_eq_stop *stop, tirenv_diag *diag)
 {
     return s->type->iterate(s->state, s, stop, diag);
 }
 
-tirenv_eq_stop tirenv_eq_solver_test(const tirenv_eq_solver *s,
+tirenv_eq_stop tirenv_eq__solver_test(const tirenv_eq_solver *s,
                                      const tirenv_eq_point **accepted)
 {
     *accepted = NULL;
@@ -131,7 +131,7 @@ static int evals_spent(const tirenv_eq_solver *s, tirenv_diag *diag)
                         s->type->name, s->eq.max_iter, lo, hi);
 }
 
-int tirenv_eq_solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
+int tirenv_eq__solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
                     tirenv_eq_force_fn force, void *ctx, double G,
                     const tirenv_eq_problem *prob, tirenv_eq_result *res, tirenv_diag *diag)
 {
@@ -142,11 +142,11 @@ int tirenv_eq_solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
     };
     tirenv_eq_stop stop = TIRENV_EQ_RUNNING;
     const tirenv_eq_point *accepted = NULL;
-    int status = tirenv_eq_solver_set(s, eq, force, ctx, G, prob, &stop, diag);
+    int status = tirenv_eq__solver_set(s, eq, force, ctx, G, prob, &stop, diag);
     /* Every iterate evaluates at least once or narrows the bracket to nothing, so the budget
      * ends the loop; the guard only keeps a faulty method from spinning. */
     for (size_t steps = 0; !status; ++steps) {
-        stop = tirenv_eq_solver_test(s, &accepted);
+        stop = tirenv_eq__solver_test(s, &accepted);
         if (stop != TIRENV_EQ_RUNNING)
             break;
         if (steps > 2 * eq->max_iter + 2) {
@@ -155,7 +155,7 @@ int tirenv_eq_solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
                                   "%s: no progress after %zu steps", s->type->name, steps);
             break;
         }
-        status = tirenv_eq_solver_iterate(s, &stop, diag);
+        status = tirenv_eq__solver_iterate(s, &stop, diag);
     }
     if (!status && !accepted) {  /* a test that converged must name its point */
         stop = TIRENV_EQ_BREAKDOWN;

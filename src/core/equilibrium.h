@@ -1,5 +1,5 @@
 /* Private to the core: the constant-load equilibrium F_z(z) = G_T in the centre height z
- * (docs/models.md section 4), shared by every deformable model. Solvers are types, as GSL's
+ * (docs/models.md section 11), shared by every deformable model. Solvers are types, as GSL's
  * root finders are (gsl_root_fsolver_type): each has set / iterate / test, and one driver runs
  * any of them and says why it stopped. SPDX-License-Identifier: GPL-3.0-or-later
  *
@@ -54,7 +54,7 @@ typedef enum {
 
 /* "running", "residual", "bracket", "no bracket", "evaluations spent", "breakdown", "force
  * failed". */
-const char *tirenv_eq_stop_name(tirenv_eq_stop stop);
+const char *tirenv_eq__stop_name(tirenv_eq_stop stop);
 
 typedef struct tirenv_eq_solver tirenv_eq_solver;
 
@@ -75,14 +75,14 @@ typedef struct {
                            const tirenv_eq_point **accepted);
 } tirenv_eq_solver_type;
 
-/* The safeguarded Newton of docs/models.md section 4 (the default), the paper's secant (its
+/* The safeguarded Newton of docs/models.md section 11 (the default), the paper's secant (its
  * eq. 2), and GSL's Brent-Dekker on the bracket, a derivative-free baseline. */
-extern const tirenv_eq_solver_type *const tirenv_eq_newton;
-extern const tirenv_eq_solver_type *const tirenv_eq_secant;
-extern const tirenv_eq_solver_type *const tirenv_eq_brent;
+extern const tirenv_eq_solver_type *const tirenv_eq__newton;
+extern const tirenv_eq_solver_type *const tirenv_eq__secant;
+extern const tirenv_eq_solver_type *const tirenv_eq__brent;
 
 /* The type of a tirenv_eq_method (tire.h); newton for an unknown one. */
-const tirenv_eq_solver_type *tirenv_eq_solver_type_of(tirenv_eq_method method);
+const tirenv_eq_solver_type *tirenv_eq__solver_type_of(tirenv_eq_method method);
 
 /* What every method shares, visible to the methods (src/core/eq_*.c) and to the driver. */
 struct tirenv_eq_solver {
@@ -104,20 +104,20 @@ struct tirenv_eq_solver {
 };
 
 /* A solver of type T; NULL if out of memory. Allocates once: a solve allocates nothing. */
-tirenv_eq_solver *tirenv_eq_solver_alloc(const tirenv_eq_solver_type *T);
-void tirenv_eq_solver_free(tirenv_eq_solver *s);  /* NULL is a no-op */
+tirenv_eq_solver *tirenv_eq__solver_alloc(const tirenv_eq_solver_type *T);
+void tirenv_eq__solver_free(tirenv_eq_solver *s);  /* NULL is a no-op */
 
 /* Starts a solve of F(z) = G (N) with settings eq (eps_F, eps_z, max_iter, secant_dz) and the
  * force function force(ctx, ...) on prob; evaluates the first point(s). */
-int tirenv_eq_solver_set(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
+int tirenv_eq__solver_set(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
                          tirenv_eq_force_fn force, void *ctx, double G,
                          const tirenv_eq_problem *prob, tirenv_eq_stop *stop,
                          tirenv_diag *diag);
 /* One step of the method. */
-int tirenv_eq_solver_iterate(tirenv_eq_solver *s, tirenv_eq_stop *stop, tirenv_diag *diag);
+int tirenv_eq__solver_iterate(tirenv_eq_solver *s, tirenv_eq_stop *stop, tirenv_diag *diag);
 /* TIRENV_EQ_RUNNING, or why the solver has converged and, in *accepted, the evaluation it
  * reports. */
-tirenv_eq_stop tirenv_eq_solver_test(const tirenv_eq_solver *s,
+tirenv_eq_stop tirenv_eq__solver_test(const tirenv_eq_solver *s,
                                      const tirenv_eq_point **accepted);
 
 /* For the methods: evaluates the force at z through the solver, so that every evaluation is
@@ -138,7 +138,7 @@ typedef struct {
  * TIRENV_ENOBRACKET (the load is too high), TIRENV_ENOCONV (evaluations spent, or the method
  * broke down), or the force function's status, with diag saying which method stopped where
  * and why, and res->stop the reason. */
-int tirenv_eq_solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
+int tirenv_eq__solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
                     tirenv_eq_force_fn force, void *ctx, double G,
                     const tirenv_eq_problem *prob, tirenv_eq_result *res, tirenv_diag *diag);
 

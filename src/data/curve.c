@@ -1,5 +1,6 @@
 /* Enveloping curves on an x_N grid (docs/models.md section 1; x_N itself is the core's,
- * src/model/xn.c): storage, and the CSV format "x_N,x_m,h_m" the import writes and the data sets read.
+ * src/model/xn.c): storage, and the CSV format "x_N,x_m,h_m" the import writes and the data
+ * sets read.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/curve.h"
 #include "tirenv/io.h"

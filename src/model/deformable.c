@@ -1,4 +1,4 @@
-/* The constant-load equilibrium per position (docs/models.md section 4), shared by every
+/* The constant-load equilibrium per position (docs/models.md section 11), shared by every
  * deformable model: it only needs their hub-force function and their contact length. The
  * equilibrium itself is the core's solver (src/core/equilibrium.c), which reports an
  * evaluated point: z, F_z, F_x and the contacts of a row all come from one force evaluation. */
@@ -55,7 +55,7 @@ void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_o
     st->ops = ops;
     st->tire = *tire;
     st->elem = ops->alloc(tire);
-    st->solver = tirenv_eq_solver_alloc(tirenv_eq_solver_type_of(tire->eq.method));
+    st->solver = tirenv_eq__solver_alloc(tirenv_eq__solver_type_of(tire->eq.method));
     st->shift_invariant = !ops->shift_invariant || ops->shift_invariant(tire);
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
     if (!st->elem || !st->solver || !st->flat) {
@@ -70,7 +70,7 @@ void tirenv_deformable_free(void *state)
     deformable_state *st = state;
     if (st->elem)
         st->ops->free(st->elem);
-    tirenv_eq_solver_free(st->solver);
+    tirenv_eq__solver_free(st->solver);
     tirenv_profile_free(st->flat);
     free(st);
 }
@@ -82,7 +82,7 @@ int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
     const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = R0, .dz_hint = 0.05 * R0};
     force_ctx fc = {st, st->flat, 0};
     tirenv_eq_result res;
-    int status = tirenv_eq_solve(st->solver, &st->tire.eq, force_at, &fc, load, &prob, &res,
+    int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, load, &prob, &res,
                                  diag);
     if (status)
         return status;
@@ -178,7 +178,7 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     };
     force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;
-    const int status = tirenv_eq_solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
+    const int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
                                        &res, diag);
     out->x = x;
     out->iterations = res.evals;

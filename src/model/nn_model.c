@@ -9,7 +9,8 @@
  *     regime given as a contact length reaches the network exactly;
  *   - over a single rectangular cleat centred at x = 0 on level ground (a profile of exactly
  *     the four corners) evaluates the paper's curve (tirenv_nn_envelope); over any other
- *     profile, the equivalent-cleat decomposition of nn_road.h, an extension beyond the paper;
+ *     profile, the equivalent-cleat decomposition of nn_road.h (docs/models.md section 12), an
+ *     extension beyond the paper;
  *   - reports z = z_flat + h with z_flat = sqrt(R0^2 - (l_c/2)^2), the chord height, fz the
  *     load, and fx, contacts and iterations 0: the network knows none of them. Its slope is
  *     dh/dx of its curve: over a cleat, central differences of the sweep's own curve (one-sided

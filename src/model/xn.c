@@ -1,4 +1,5 @@
-/* The normalised position x_N (docs/models.md section 1). SPDX-License-Identifier: GPL-3.0-or-later */
+/* The normalised position x_N (docs/models.md section 1).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/xn.h"
 
 #include <math.h>

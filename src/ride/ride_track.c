@@ -1,5 +1,6 @@
-/* What each axle's tires follow: a model's effective profile at the axle's static tire load
- * (the point contact's is the raw profile). SPDX-License-Identifier: GPL-3.0-or-later */
+/* What each axle's tires follow: a model's effective profile at the axle's static tire load,
+ * the point contact's being the raw profile (docs/models.md section 9.2).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/ride.h"
 
 /* Positions per call of tirenv_model_envelope: the network evaluates them as one batch. */
