@@ -46,80 +46,62 @@ typedef struct {
     tirenv_profile_write_options w;
 } convert;
 
-/* Returns an exit code, or -1 to go on. */
-static int parse(int argc, char *argv[], convert *cv)
+static int parse_track(void *dst, const char *arg)
 {
-    enum { OPT_PROFILE = CLI_OPT_FIRST_OWN, OPT_TRACK, OPT_SIDE, OPT_ENCODING, OPT_DX,
-           OPT_HALF_WIDTH };
-    static const struct option longopts[] = {
-        {"profile", required_argument, NULL, OPT_PROFILE},
-        {"track", required_argument, NULL, OPT_TRACK},
-        {"side", required_argument, NULL, OPT_SIDE},
-        {"crg-encoding", required_argument, NULL, OPT_ENCODING},
-        {"dx", required_argument, NULL, OPT_DX},
-        {"half-width", required_argument, NULL, OPT_HALF_WIDTH},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            cv->out = optarg;
-            break;
-        case OPT_PROFILE:
-            cv->in = optarg;
-            break;
-        case OPT_TRACK:
-            if (cli_parse_double(optarg, &cv->src.crg.v)) {
-                cli_error("convert: --track expects a lateral position in m, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            cv->have_track = 1;
-            break;
-        case OPT_SIDE:
-            if (tirenv_rdf_side_find(optarg, &cv->src.rdf_side)) {
-                cli_error("convert: --side expects left, right or mean, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_ENCODING:
-            if (tirenv_crg_encoding_find(optarg, &cv->w.crg_encoding)) {
-                cli_error("convert: --crg-encoding expects kdbi, krbi, ldfi or lrfi, got '%s'",
-                          optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_DX:
-        case OPT_HALF_WIDTH: {
-            double *v = c == OPT_DX ? &cv->w.crg_u_increment : &cv->w.crg_half_width;
-            if (cli_parse_double(optarg, v) || !(*v > 0)) {
-                cli_error("convert: --%s expects a positive length in m, got '%s'",
-                          c == OPT_DX ? "dx" : "half-width", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        }
-        default:
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("convert: unexpected argument '%s'", argv[optind]);
+    convert *cv = dst;
+    if (cli_parse_double(arg, &cv->src.crg.v)) {
+        cli_error("convert: --track expects a lateral position in m, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    cv->have_track = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_side(void *dst, const char *arg)
+{
+    if (tirenv_rdf_side_find(arg, dst)) {
+        cli_error("convert: --side expects left, right or mean, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_encoding(void *dst, const char *arg)
+{
+    if (tirenv_crg_encoding_find(arg, dst)) {
+        cli_error("convert: --crg-encoding expects kdbi, krbi, ldfi or lrfi, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* Returns an exit code, or CLI_GO_ON. */
+static int parse(int argc, char *argv[], convert *cv)
+{
+    const cli_opt own[] = {
+        {.name = "profile", .kind = CLI_STRING, .dst = &cv->in},
+        {.name = "track", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_track},
+        {.name = "side", .kind = CLI_CUSTOM, .dst = &cv->src.rdf_side, .parse = parse_side},
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &cv->w.crg_encoding,
+         .parse = parse_encoding},
+        {.name = "dx", .kind = CLI_POSITIVE, .dst = &cv->w.crg_u_increment,
+         .what = "a positive length in m"},
+        {.name = "half-width", .kind = CLI_POSITIVE, .dst = &cv->w.crg_half_width,
+         .what = "a positive length in m"},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "convert", .usage = usage, .opts = own, .groups = CLI_OUTPUT};
+    cli_options o;
+    const int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    cv->out = o.output;
     if (!cv->in || !cv->out) {
         cli_error("convert: expected %s; 'tirenv convert --help' shows the options",
                   !cv->in ? "--profile IN" : "-o OUT");
         return CLI_EXIT_USAGE;
     }
-    return -1;
+    return CLI_GO_ON;
 }
 
 /* A .crg to a .crg without --track: every long section, row by row. */
@@ -246,7 +228,7 @@ int cli_convert_main(int argc, char *argv[])
 {
     convert cv = {.src = tirenv_profile_source_default(), .w = tirenv_profile_write_default()};
     const int code = parse(argc, argv, &cv);
-    if (code >= 0)
+    if (code != CLI_GO_ON)
         return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
