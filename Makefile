@@ -4,7 +4,7 @@ ASAN_BUILD ?= build-asan
 JOBS       ?= 2
 DEMO_OUT   ?= out/study
 
-.PHONY: all deps build test test-asan demo bench clean
+.PHONY: all deps build test test-asan demo bench python fmu clean
 
 all: build
 
@@ -24,6 +24,15 @@ test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
+
+# The Python module in place under $(BUILD)/python (python/README.md), and the FMI 2.0
+# co-simulation FMU $(BUILD)/tirenv_effective_road.fmu (fmu/README.md); both are also part of
+# 'make build'.
+python: build
+	@cmake --build $(BUILD) -j $(JOBS) --target python
+
+fmu: build
+	@cmake --build $(BUILD) -j $(JOBS) --target fmu
 
 # The paper's study on the embedded (simulated) data set: fit, train, compare, report. Then
 # its next step, the tractor ride: over a cleat at three speeds (the README's picture), and
