@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Ground profiles: polylines (x, z) in m, from the library's generators, a road file, or
 arrays (docs/models.md section 2)."""
+import math
+
 import numpy as np
 
 from ._c import ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes
@@ -97,9 +99,10 @@ class Profile:
     @classmethod
     def read(cls, path, track=0.0):
         """A profile from a road file the CLI reads (--profile FILE): CSV "x_m,z_m". track is
-        the lateral position (m) in a file with several tracks; a CSV has one (track 0)."""
-        if track != 0:
-            raise invalid(f"a CSV profile has one track; got track {track} m", "track")
+        the lateral position (m) on a road that varies across; a CSV road is 2-D, the same
+        on every track."""
+        if not math.isfinite(track):
+            raise invalid(f"expected a finite lateral position, got {track}", "track")
         out = ffi.new("tirenv_profile **")
         diag = new_diag()
         check(lib.tirenv_profile_read_csv(path_bytes(path), out, diag), diag)
