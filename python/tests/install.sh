@@ -7,14 +7,12 @@
 #   sh python/tests/install.sh CMAKE BUILD_DIR SOURCE_DIR PYTHON
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -u
-stamp() { [ -n "${TIRENV_TIMING:-}" ] && date +%s.%N | cut -c1-14 >&2; return 0; }
 cmake=$1 build=$2 src=$3 python=$4
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/tirenv-pyinstall.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 unset PYTHONPATH LD_LIBRARY_PATH TIRENV_INCLUDE_DIR TIRENV_LIBRARY_DIR TIRENV_DATA
 n=0 failed=0
 check() {
-    stamp
     what=$1
     shift
     n=$((n + 1))
