@@ -57,3 +57,18 @@ def test_vehicle_and_comfort():
     assert a_w.shape == a.shape
     assert 0.6 < m.rms < 0.8 and m.duration == 20.0
     assert abs(tirenv.total_value([1, 1], [3, 4]) - 5) < 1e-12
+
+
+def test_network_ride_equals_cli(cli, network_file, tmp_path):
+    """The network over the cleat as each axle's input (src/cli/ride_input.c's choices)."""
+    out = tmp_path / "series.csv"
+    rc, _, err = run_cli(cli, "ride", "--cleat", "0.30,0.05", "--speed", "5km/h", "--model",
+                         "nn", "--nn", network_file, "-o", out)
+    assert rc == 0, err
+    lines = out.read_text().splitlines()[2:]
+    r = tirenv.ride(tirenv.Profile.cleat(0.30, 0.05), model="nn", speed="5km/h",
+                    network=tirenv.Network(network_file))
+    s = r.series
+    got = [",".join("%.9g" % s[f][k] for f in ("t", "x_front", "w_front", "w_rear", "z"))
+           for k in range(len(s))]
+    assert got == [",".join(line.split(",")[:5]) for line in lines]
