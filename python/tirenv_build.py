@@ -102,9 +102,15 @@ typedef struct tirenv_model tirenv_model;
 const tirenv_model_type *tirenv_model_type_find(const char *name);
 const char *tirenv_model_type_name(const tirenv_model_type *type);
 const tirenv_model_type *const *tirenv_model_types(void);
+#define TIRENV_MODEL_NEEDS_NETWORK ...
+unsigned tirenv_model_type_flags(const tirenv_model_type *type);
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire);
 void tirenv_model_free(tirenv_model *m);
 const char *tirenv_model_name(const tirenv_model *m);
+struct tirenv_nn;
+int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
+                             tirenv_diag *diag);
+const char *tirenv_model_warnings(const tirenv_model *m);
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
                                          tirenv_diag *diag);

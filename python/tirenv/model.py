@@ -46,19 +46,30 @@ def positions(x_from, x_to, dx=DEFAULT_DX):
 
 
 class Model:
-    """A model of the library's table ("rigid", "springs", "ring", "cam") for a tire (default:
-    Tire()). Not shareable between threads at once: calls on one model are serialised."""
+    """A model of the library's table ("rigid", "springs", "ring", "cam", "point", and "nn",
+    which needs network=Network(path)) for a tire (default: Tire()). Not shareable between
+    threads at once: calls on one model are serialised."""
 
-    def __init__(self, name, tire=None):
+    def __init__(self, name, tire=None, network=None):
         self.tire = tire if tire is not None else Tire()
         t = lib.tirenv_model_type_find(str(name).encode())
         if t == ffi.NULL:
             raise invalid(f"unknown model {name!r}; expected one of "
                           f"{', '.join(model_names())}", "model")
+        needs_network = bool(lib.tirenv_model_type_flags(t) & lib.TIRENV_MODEL_NEEDS_NETWORK)
+        if needs_network and network is None:
+            raise invalid(f"the {name} model needs network=Network(path)", "network")
         m = lib.tirenv_model_alloc(t, self.tire._t)
         if m == ffi.NULL:
             raise invalid("the tire's parameters are not valid for this model")
         self._m = ffi.gc(m, lib.tirenv_model_free)
+        self.network = network  # kept alive with the model
+        if needs_network:
+            diag = new_diag()
+            with network._lock:
+                check(lib.tirenv_model_set_network(self._m, network._nn,
+                                                   network.R0 if network.R0 else 0.0, diag),
+                      diag)
         self._lock = threading.Lock()
         self.profile = None   # the profile set: kept alive here, the library borrows it
         self.load = None

@@ -108,18 +108,12 @@ class Ride:
 
 
 def _inputs(name, tire, load, profile, network, x0, dx, n):
-    """What one axle's tires follow on the grid (src/cli/ride_input.c)."""
+    """What one axle's tires follow on the grid: the model type's effective height, the
+    network's through the same table (src/cli/ride_input.c)."""
     w, diag = np.empty(n), new_diag()
-    if name == "nn":
-        if network is None:
-            raise invalid("the nn model needs network=Network(path)", "network")
-        flat = Model("springs", tire).flat(load)
-        x = x0 + np.arange(n, dtype=np.float64) * dx
-        R0 = network.R0 if network.R0 is not None else tire.R0
-        return network.road(profile, flat.contact_length, R0).eval(x)[0]
-    m = None if name == "point" else Model(name, tire)
-    check(lib.tirenv_ride_effective(m._m if m else ffi.NULL, profile._p, load, x0, dx, n,
-                                    double_ptr(w), diag), diag)
+    m = Model(name, tire, network)
+    check(lib.tirenv_ride_effective(m._m, profile._p, load, x0, dx, n, double_ptr(w), diag),
+          diag)
     return w
 
 
