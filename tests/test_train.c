@@ -302,10 +302,10 @@ static void test_refusals(void **state)
 {
     const synthetic *d = *state;
     enum { LR, MOMENTUM, ETA_PLUS, DELTA, MU_DEC, MU_INC, EPOCHS, RESTARTS, TOPOLOGY,
-           INPUTS, N_BAD };
+           INPUTS, ENSEMBLE, FORM, LOSS, N_BAD };
     static const char *const field[N_BAD] = {"backprop", "backprop", "rprop", "rprop", "lm",
                                              "lm", "settings", "settings", "topology",
-                                             "topology"};
+                                             "topology", "ensemble", "form", "form"};
     for (int k = 0; k < N_BAD; ++k) {
         tirenv_train_settings s = tirenv_train_default(tirenv_trainer_lm);
         switch (k) {
@@ -319,6 +319,9 @@ static void test_refusals(void **state)
         case RESTARTS: s.restarts = 0; break;
         case TOPOLOGY: s.topology.size[2] = 2; break;
         case INPUTS: s.topology.size[0] = 3; break;
+        case ENSEMBLE: s.ensemble = 0; break;
+        case FORM: s.input = (tirenv_nn_input_form)7; break;
+        case LOSS: s.loss = (tirenv_train_loss)-1; break;
         }
         tirenv_diag diag;
         tirenv_diag_clear(&diag);
@@ -345,6 +348,7 @@ static void test_refusals(void **state)
     assert_string_equal(diag.field, "control");
     assert_int_equal(diag.line, 2);
     /* GSL's solver needs n >= p: 2 samples for 49 weights. */
+    s = tirenv_train_paper(tirenv_trainer_lm);
     s.lm.solver = TIRENV_LM_GSL;
     x[6] = 0.1;
     tirenv_diag_clear(&diag);

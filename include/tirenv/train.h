@@ -75,7 +75,8 @@ typedef struct {
                               exceeds it */
 } tirenv_lm_settings;
 
-/* What the progress callback sees after every epoch. Errors in m. */
+/* What the progress callback sees after every epoch: the loss as an RMS error, in m for the
+ * target h, as a fraction of H for h/H (for the curves loss the mean of the curves' RMS). */
 typedef struct {
     size_t restart;        /* 0-based */
     size_t restarts;       /* how many */
@@ -125,8 +126,9 @@ typedef struct {
     void *progress_data;
 } tirenv_train_settings;
 
-/* Defaults for a trainer (NULL: lm): 4-8-1, seed 1, the forms, loss and ensemble size of
- * TIRENV_TRAIN_DEFAULT_* below, and by trainer
+/* Defaults for a trainer (NULL: lm): 4-8-1, seed 1, the even input, the h/H target, the
+ * curves loss, an ensemble of 4 (each chosen on the validation error's median over 20 seeds
+ * of the embedded data set: train.c says by how much), and by trainer
  *   backprop  2e5 epochs (the paper's cycles), no early stop, 1 restart, online,
  *             learning rate 0.01, momentum 0.9;
  *   rprop     5000 epochs, patience 500, 4 restarts, delta0 0.1, [1e-6, 50], 1.2 / 0.5;

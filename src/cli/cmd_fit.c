@@ -86,8 +86,19 @@ static void print_report(const char *what, const tirenv_fit_report *r)
 {
     printf("%s: %zu points, %zu iterations (%s), %.2f s, rms %.3f mm\n", what, r->n_points,
            r->iterations, r->stop, r->seconds, 1e3 * r->rms);
-    for (size_t i = 0; i < r->n_params; ++i)
-        printf("  %-22s = %.6g +- %.2g (1 sigma)\n", r->names[i], r->value[i], r->std_error[i]);
+    size_t at_bound = 0;
+    for (size_t i = 0; i < r->n_params; ++i) {
+        printf("  %-22s = %.6g +- %.2g (1 sigma)", r->names[i], r->value[i], r->std_error[i]);
+        if (r->at_bound[i]) {
+            printf("  AT ITS LOWER BOUND %g", r->bound[i]);
+            ++at_bound;
+        }
+        putchar('\n');
+    }
+    if (at_bound)
+        printf("  %zu parameter%s at a bound: the data push the model to the edge of what it "
+               "can express; the fit is the best the model can do, not an identification\n",
+               at_bound, at_bound == 1 ? "" : "s");
 }
 
 int cli_fit_main(int argc, char *argv[])

@@ -1,6 +1,7 @@
 /* tirenv study: the paper's study in one command (identify, train, compare), as make demo
  * runs it on the embedded data set. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -11,7 +12,8 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
-          "                    [--seed S] [--measured | --simulated-by ring] [--no-images]\n"
+          "                    [--seed S] [--seeds N] [--input even|paper]\n"
+          "                    [--measured | --simulated-by ring] [--no-images]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
@@ -27,7 +29,13 @@ static void usage(FILE *fp)
           "  --data DIR           data set with cases.csv (default: the embedded, SIMULATED one)\n"
           "  -o DIR               report directory (default out/study)\n"
           "  --trainer NAME       network trainer (default lm)\n"
-          "  --seed S             training seed (default 1)\n"
+          "  --seed S             first training seed (default 1)\n"
+          "  --seeds N            train the network with seeds S to S+N-1 (default 20) and\n"
+          "                       report the median and quartiles of its validation error;\n"
+          "                       nn.json, the tables and plots are the seed nearest the\n"
+          "                       median, nn-seeds.csv has every seed\n"
+          "  --input FORM         the network's input: even (default, (1 - x_N)^2: smooth\n"
+          "                       over the obstacle centre) or paper (x_N, as in the paper)\n"
           "  --simulated-by ring  the data were simulated by the ring tire (default for the\n"
           "                       embedded data set; then the ring is compared too)\n"
           "  --measured           the data are real measurements\n"
@@ -50,7 +58,7 @@ static void progress(void *ctx, const char *stage, size_t step, size_t steps)
 int cli_study_main(int argc, char *argv[])
 {
     enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_SIMULATED, OPT_MEASURED,
-           OPT_NO_IMAGES };
+           OPT_NO_IMAGES, OPT_SEEDS, OPT_INPUT };
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         CLI_METHOD_LONGOPTS,
@@ -60,6 +68,8 @@ int cli_study_main(int argc, char *argv[])
         {"simulated-by", required_argument, NULL, OPT_SIMULATED},
         {"measured", no_argument, NULL, OPT_MEASURED},
         {"no-images", no_argument, NULL, OPT_NO_IMAGES},
+        {"seeds", required_argument, NULL, OPT_SEEDS},
+        {"input", required_argument, NULL, OPT_INPUT},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -68,6 +78,10 @@ int cli_study_main(int argc, char *argv[])
     tirenv_study_settings s = tirenv_study_default();
     char data_buf[1024];
     s.data_dir = cli_data_path("dataset", data_buf, sizeof data_buf);
+    /* The embedded one is named as in the repository, not by this build's absolute path;
+     * a TIRENV_DATA the user set is theirs to see. */
+    const char *env = getenv("TIRENV_DATA");
+    s.data_label = env && env[0] ? s.data_dir : "data/dataset";
     int data_given = 0, sim_given = 0, c;
     long seed;
     cli_getopt_reset();
@@ -80,9 +94,28 @@ int cli_study_main(int argc, char *argv[])
             s.out_dir = optarg;
             break;
         case OPT_DATA:
-            s.data_dir = optarg;
+            s.data_dir = s.data_label = optarg;
             data_given = 1;
             break;
+        case OPT_SEEDS: {
+            long n;
+            if (cli_parse_count(optarg, 1, 100000, &n)) {
+                cli_error("study: --seeds expects a whole number from 1 to 100000, got '%s'",
+                          optarg);
+                return CLI_EXIT_USAGE;
+            }
+            s.seeds = (size_t)n;
+            break;
+        }
+        case OPT_INPUT: {
+            const int f = tirenv_nn_input_form_find(optarg);
+            if (f < 0) {
+                cli_error("study: --input expects even or paper, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            s.input = (tirenv_nn_input_form)f;
+            break;
+        }
         case OPT_TRAINER:
             s.trainer = optarg;
             break;

@@ -8,6 +8,7 @@
 
 #include "cli/cli.h"
 #include "tirenv/dataset.h"
+#include "tirenv/study.h"
 #include "tirenv/train.h"
 
 static void usage(FILE *fp)
@@ -15,7 +16,9 @@ static void usage(FILE *fp)
     fputs("usage: tirenv train --data DIR [--trainer backprop|rprop|lm] [--seed S]\n"
           "                    [--restarts N] [--epochs N] [--patience N] [--hidden N[,N...]]\n"
           "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
-          "                    [--lm-solver cholesky|gsl] [-o MODEL.json]\n"
+          "                    [--lm-solver cholesky|gsl] [--ensemble K] [--input paper|even]\n"
+          "                    [--target h|h/H] [--loss points|curves] [--paper]\n"
+          "                    [--seeds N] [-o MODEL.json]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "Trains the empirical model's network (inputs x_N, contact length, obstacle height,\n"
@@ -30,8 +33,22 @@ static void usage(FILE *fp)
           "  --trainer NAME       lm (default): Levenberg-Marquardt; rprop: iRprop-;\n"
           "                       backprop: the paper's back-propagation with momentum\n"
           "  --seed S             seed of the initial weights (and online order), default 1\n"
-          "  --restarts N         independent starts, best on control kept (default: lm 8,\n"
-          "                       rprop 4, backprop 1)\n"
+          "  --restarts N         independent starts M (default: lm 8, rprop 4, backprop 1)\n"
+          "  --ensemble K         the model is the mean of the K restarts best on control\n"
+          "                       (default 4, at most M; 1: the best restart alone)\n"
+          "  --input FORM         even (default): the network sees (1 - x_N)^2, so the\n"
+          "                       mirrored curve is smooth over the obstacle centre; paper:\n"
+          "                       x_N itself, as in the paper\n"
+          "  --target T           h (default): the network outputs h; h/H: it learns h/H\n"
+          "                       (loss on h/H), its output times H is h\n"
+          "  --loss L             points (default): squared error summed over all points;\n"
+          "                       curves: the mean over curves of each curve's RMS error\n"
+          "  --paper              the paper's network: --input paper --target h --loss points\n"
+          "                       --ensemble 1 (options after it still apply)\n"
+          "  --seeds N            train with seeds S to S+N-1 and print the median and\n"
+          "                       quartiles of the validation error (the mean over the\n"
+          "                       validation cases of each case's RMS); -o writes the\n"
+          "                       model of the seed nearest the median\n"
           "  --epochs N           epochs per restart (default: lm 1000, rprop 5000,\n"
           "                       backprop 200000, the paper's cycles)\n"
           "  --patience N         stop after N epochs without a better control error; 0 never\n"
@@ -55,6 +72,7 @@ typedef struct {
     const char *trainer;
     double last;           /* s, when drawn last */
     int drawn;
+    int over_H;            /* the errors are of h/H, not of h in m */
 } bar;
 
 static int draw(const tirenv_train_progress *p, void *data)
@@ -68,10 +86,12 @@ static int draw(const tirenv_train_progress *p, void *data)
     static const char hashes[] = "##############################";
     const int width = (int)sizeof hashes - 1;
     const int filled = (int)((double)width * (double)p->epoch / (double)p->max_epochs);
+    const double unit = b->over_H ? 1e2 : 1e3;
     fprintf(stderr, "\rtirenv: train: %s restart %zu/%zu [%-*.*s] epoch %zu/%zu, control RMS "
-            "%.3f mm (best %.3f at %zu)\033[K",
+            "%.3f %s (best %.3f at %zu)\033[K",
             b->trainer, p->restart + 1, p->restarts, width, filled, hashes, p->epoch,
-            p->max_epochs, p->control_rms * 1e3, p->best_rms * 1e3, p->best_epoch);
+            p->max_epochs, p->control_rms * unit, b->over_H ? "% of H" : "mm",
+            p->best_rms * unit, p->best_epoch);
     return 0;
 }
 
@@ -104,8 +124,9 @@ typedef struct {
     const char *data, *out;
     const tirenv_trainer_type *type;
     int have_seed, have_restarts, have_epochs, have_patience, have_hidden, have_lr,
-        have_momentum, batch, have_solver;
-    long seed, restarts, epochs, patience;
+        have_momentum, batch, have_solver, have_ensemble, paper;
+    int input, target, loss;   /* -1: the default */
+    long seed, restarts, epochs, patience, ensemble, seeds;
     double learning_rate, momentum;
     tirenv_lm_solver solver;
     tirenv_nn_topology topology;
@@ -115,7 +136,8 @@ typedef struct {
 static int parse(int argc, char *argv[], cli_options *o, train_options *t)
 {
     enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_RESTARTS, OPT_EPOCHS,
-           OPT_PATIENCE, OPT_HIDDEN, OPT_LR, OPT_MOMENTUM, OPT_BATCH, OPT_SOLVER };
+           OPT_PATIENCE, OPT_HIDDEN, OPT_LR, OPT_MOMENTUM, OPT_BATCH, OPT_SOLVER,
+           OPT_ENSEMBLE, OPT_INPUT, OPT_TARGET, OPT_LOSS, OPT_PAPER, OPT_SEEDS };
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         {"data", required_argument, NULL, OPT_DATA},
@@ -129,6 +151,12 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
         {"momentum", required_argument, NULL, OPT_MOMENTUM},
         {"batch", no_argument, NULL, OPT_BATCH},
         {"lm-solver", required_argument, NULL, OPT_SOLVER},
+        {"ensemble", required_argument, NULL, OPT_ENSEMBLE},
+        {"input", required_argument, NULL, OPT_INPUT},
+        {"target", required_argument, NULL, OPT_TARGET},
+        {"loss", required_argument, NULL, OPT_LOSS},
+        {"paper", no_argument, NULL, OPT_PAPER},
+        {"seeds", required_argument, NULL, OPT_SEEDS},
         {"output", required_argument, NULL, 'o'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
@@ -194,6 +222,40 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
         case OPT_BATCH:
             t->batch = 1;
             break;
+        case OPT_ENSEMBLE:
+        case OPT_SEEDS: {
+            const long max = c == OPT_ENSEMBLE ? TIRENV_NN_MAX_MEMBERS : 100000;
+            if (cli_parse_count(optarg, 1, max, c == OPT_ENSEMBLE ? &t->ensemble : &t->seeds)) {
+                cli_error("--%s: expected an integer from 1 to %ld, got '%s'",
+                          longopts[longindex].name, max, optarg);
+                return CLI_EXIT_USAGE;
+            }
+            t->have_ensemble |= c == OPT_ENSEMBLE;
+            break;
+        }
+        case OPT_INPUT:
+            if ((t->input = tirenv_nn_input_form_find(optarg)) < 0) {
+                cli_error("--input: expected paper or even, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_TARGET:
+            if ((t->target = tirenv_nn_target_form_find(optarg)) < 0) {
+                cli_error("--target: expected h or h/H, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_LOSS:
+            if ((t->loss = tirenv_train_loss_find(optarg)) < 0) {
+                cli_error("--loss: expected points or curves, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
+        case OPT_PAPER:
+            t->paper = 1;
+            t->input = t->target = t->loss = -1;
+            t->have_ensemble = 0;
+            break;
         case OPT_SOLVER:
             if (strcmp(optarg, "cholesky") == 0)
                 t->solver = TIRENV_LM_CHOLESKY;
@@ -226,7 +288,16 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
 
 static tirenv_train_settings settings_from(const train_options *t)
 {
-    tirenv_train_settings s = tirenv_train_default(t->type);
+    tirenv_train_settings s = t->paper ? tirenv_train_paper(t->type)
+                                       : tirenv_train_default(t->type);
+    if (t->have_ensemble)
+        s.ensemble = (size_t)t->ensemble;
+    if (t->input >= 0)
+        s.input = (tirenv_nn_input_form)t->input;
+    if (t->target >= 0)
+        s.target = (tirenv_nn_target_form)t->target;
+    if (t->loss >= 0)
+        s.loss = (tirenv_train_loss)t->loss;
     if (t->have_seed)
         s.seed = (unsigned long)t->seed;
     if (t->have_restarts)
@@ -260,7 +331,17 @@ static void print_report(const char *data, const tirenv_dataset *ds,
     for (size_t l = 0; l < s->topology.n_layers; ++l)
         printf("%s%zu", l ? "-" : "", s->topology.size[l]);
     printf(", seed %lu\n", s->seed);
-    printf("  kept restart %zu of %zu: least control error at epoch %zu of %zu (stopped: %s, "
+    printf("  input %s, target %s, loss over %s; ", tirenv_nn_input_form_name(s->input),
+           tirenv_nn_target_form_name(s->target), tirenv_train_loss_name(s->loss));
+    if (r->members > 1) {
+        printf("the mean of the %zu restarts best on control (", r->members);
+        for (size_t k = 0; k < r->members; ++k)
+            printf("%s%zu", k ? ", " : "", r->member_restart[k] + 1);
+        printf(" of %zu)\n", s->restarts);
+    } else {
+        printf("the restart best on control alone\n");
+    }
+    printf("  best restart %zu of %zu: least control error at epoch %zu of %zu (stopped: %s, "
            "%.3f s in)\n", r->restart + 1, s->restarts, r->best_epoch, r->epochs,
            tirenv_train_stop_name(r->stop), r->best_time);
     printf("  %zu epochs in all, wall time %.3f s\n", r->total_epochs, r->wall_time);
@@ -270,6 +351,26 @@ static void print_report(const char *data, const tirenv_dataset *ds,
                r->error[sp].n, r->error[sp].rms * 1e3, r->error[sp].max * 1e3);
 }
 
+/* --seeds: one line per seed, then the spread. */
+static void print_seeds(const tirenv_dataset *ds, const tirenv_nn_seeds *r)
+{
+    printf("  %6s %10s", "seed", "mean mm");
+    for (size_t c = 0; c < r->n_cases; ++c)
+        printf(" %8s", ds->cases[r->case_index[c]].name);
+    printf("   (validation RMS per case, mm)\n");
+    for (size_t k = 0; k < r->n_seeds; ++k) {
+        printf("  %6lu %10.4f", r->seed[k], 1e3 * r->mean_rms[k]);
+        for (size_t c = 0; c < r->n_cases; ++c)
+            printf(" %8.4f", 1e3 * r->rms[k * r->n_cases + c]);
+        printf("%s\n", k == r->median_seed ? "   <- nearest the median" : "");
+    }
+    printf("  over %zu seeds (%.2f s): median %.4f mm, quartiles %.4f to %.4f mm (IQR %.4f), "
+           "range %.4f to %.4f mm\n", r->n_seeds, r->seconds, 1e3 * r->median, 1e3 * r->q1,
+           1e3 * r->q3, 1e3 * (r->q3 - r->q1), 1e3 * r->min, 1e3 * r->max);
+    printf("  control cases, the same measure: median %.4f mm, quartiles %.4f to %.4f mm\n",
+           1e3 * r->control_median, 1e3 * r->control_q1, 1e3 * r->control_q3);
+}
+
 int cli_train_main(int argc, char *argv[])
 {
     cli_options o;
@@ -277,6 +378,7 @@ int cli_train_main(int argc, char *argv[])
     train_options t;
     memset(&t, 0, sizeof t);
     t.type = tirenv_trainer_lm;
+    t.input = t.target = t.loss = -1;
     int code = parse(argc, argv, &o, &t);
     if (code >= 0)
         return code;
@@ -311,14 +413,28 @@ int cli_train_main(int argc, char *argv[])
         set.progress_data = &b;
     }
     tirenv_train_report rep;
-    status = tirenv_train(t.type, &set, &s[0], &s[1], &s[2], &nn, &rep, &diag);
+    tirenv_nn_seeds spread;
+    memset(&spread, 0, sizeof spread);
+    if (t.seeds > 0) {
+        set.progress = NULL;
+        status = tirenv_nn_train_seeds(t.type, &set, &ds, &ds, tire.springs.R0, (size_t)t.seeds,
+                                       &spread, &nn, &rep, &diag);
+        if (!status)
+            set.seed = spread.seed[spread.median_seed];
+    } else {
+        status = tirenv_train(t.type, &set, &s[0], &s[1], &s[2], &nn, &rep, &diag);
+    }
     if (b.drawn)
         fputs("\r\033[K", stderr);
     if (status) {
+        tirenv_nn_seeds_free(&spread);
         code = cli_fail(status, &diag);
         goto done;
     }
     print_report(t.data, &ds, &set, b.trainer, &rep);
+    if (t.seeds > 0)
+        print_seeds(&ds, &spread);
+    tirenv_nn_seeds_free(&spread);
 
     if (t.out) {
         tirenv_train_record rec;
