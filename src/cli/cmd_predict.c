@@ -38,7 +38,9 @@ static void usage(FILE *fp, const char *cmd)
           "An input outside the range the network was trained on draws a warning naming it;\n"
           "over a profile, one warning counts the bumps clamped to the range (bumps lower than\n"
           "the lowest trained cleat scale its curve down instead, and are only counted in the\n"
-          "summary). R0 is the one the network's data referred to (from the model file).\n"
+          "summary). R0 is the one the network's data referred to (from the model file), and\n"
+          "so are the network's input form (x_N or (1 - x_N)^2), target (h or h/H) and\n"
+          "ensemble size ('tirenv train --input, --target, --ensemble, --paper').\n"
           "\n"
           "options:\n"
           "  --nn FILE            the model file written by 'tirenv train -o'\n"
@@ -370,9 +372,15 @@ int cli_predict_main(int argc, char *argv[])
     for (size_t k = 1; k < n; ++k)
         if (h[k] > h[peak])
             peak = k;
-    fprintf(stderr, "tirenv %s: nn model %s, contact length %.4g m (load %.6g N), %s, %zu "
-            "positions: peak h %.3f mm at x = %.4f m\n",
-            strcmp(cmd, "envelope") == 0 ? "envelope" : "predict", p.nn_path, l_c, load, what,
+    tirenv_nn_input_form form;
+    tirenv_nn_target_form target;
+    tirenv_nn_get_form(nn, &form, &target);
+    fprintf(stderr, "tirenv %s: nn model %s (input %s, target %s, mean of %zu network%s), "
+            "contact length %.4g m (load %.6g N), %s, %zu positions: peak h %.3f mm at x = "
+            "%.4f m\n",
+            strcmp(cmd, "envelope") == 0 ? "envelope" : "predict", p.nn_path,
+            tirenv_nn_input_form_name(form), tirenv_nn_target_form_name(target),
+            tirenv_nn_n_members(nn), tirenv_nn_n_members(nn) == 1 ? "" : "s", l_c, load, what,
             n, h[peak] * 1e3, x[peak]);
     code = CLI_EXIT_OK;
 done:
