@@ -294,13 +294,14 @@ size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
 /* Nguyen and Widrow (1990): spread the hidden neurons' active regions over the input space,
  * which they assume to be [-1, 1]^n_in; the standardised inputs are close to that. The
  * uniform draws come from the caller's rng, so a seed fixes the weights bit for bit. */
-void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
+/* One member's weights w (its layers in tirenv_nn_weights order). */
+static void init_member(const tirenv_nn_topology *top, const size_t w_off[], double *w0,
+                        gsl_rng *rng)
 {
-    const size_t L = nn->top.n_layers - 1;
-    for (size_t m = 0; m < nn->members; ++m)
+    const size_t L = top->n_layers - 1;
     for (size_t l = 1; l <= L; ++l) {
-        const size_t n_in = nn->top.size[l - 1], n_out = nn->top.size[l];
-        double *w = nn->w + m * nn->member_weights + nn->w_off[l];
+        const size_t n_in = top->size[l - 1], n_out = top->size[l];
+        double *w = w0 + w_off[l];
         if (l == L) {
             for (size_t k = 0; k < (1 + n_in) * n_out; ++k)
                 w[k] = gsl_rng_uniform(rng) - 0.5;
@@ -320,6 +321,12 @@ void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
             w[j] = beta * (2 * gsl_rng_uniform(rng) - 1);
         }
     }
+}
+
+void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
+{
+    for (size_t m = 0; m < nn->members; ++m)
+        init_member(&nn->top, nn->w_off, nn->w + m * nn->member_weights, rng);
 }
 
 int tirenv_nn_set_form(tirenv_nn *nn, tirenv_nn_input_form input, tirenv_nn_target_form target,
