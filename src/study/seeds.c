@@ -60,12 +60,18 @@ static int mean_case_rms(tirenv_nn *nn, double R0, const tirenv_dataset *ds, tir
     return TIRENV_OK;
 }
 
-/* One seed: train, then the network's curve on every validation case and its RMS error. */
+/* One seed: train, then the network's curve on every validation case and its RMS error. A
+ * function of its arguments alone, with its own scratch: it writes only seed k's entries of
+ * out, *nn and *rep, so seeds may run in any order, or at once. */
 static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings *s,
                     const tirenv_samples set[3], const tirenv_dataset *fit,
-                    const tirenv_dataset *val, double R0, const tirenv_nn_seeds *out, size_t k,
-                    double h[], tirenv_nn **nn, tirenv_train_report *rep, tirenv_diag *diag)
+                    const tirenv_dataset *val, double R0, size_t n_max,
+                    const tirenv_nn_seeds *out, size_t k, tirenv_nn **nn,
+                    tirenv_train_report *rep, tirenv_diag *diag)
 {
+    double *h = malloc((n_max ? n_max : 1) * sizeof *h);
+    if (!h)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     int status = tirenv_train(type, s, &set[0], &set[1], &set[2], nn, rep, diag);
     if (!status)
         status = mean_case_rms(*nn, R0, fit, TIRENV_SPLIT_CONTROL, h, &out->control_rms[k],
@@ -84,6 +90,7 @@ static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings
         }
     }
     out->mean_rms[k] = sum / (double)out->n_cases;
+    free(h);
     return status;
 }
 
@@ -118,12 +125,12 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
     out->control_rms = malloc(n_seeds * sizeof *out->control_rms);
     tirenv_nn **nets = calloc(n_seeds, sizeof *nets);
     tirenv_train_report *reps = malloc(n_seeds * sizeof *reps);
-    double *h = malloc((n_max ? n_max : 1) * sizeof *h), *sorted = malloc(n_seeds * sizeof *sorted);
+    double *sorted = malloc(n_seeds * sizeof *sorted);
     tirenv_samples set[3];
     double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
     int status = TIRENV_OK;
     if (!out->seed || !out->case_index || !out->rms || !out->mean_rms || !out->control_rms ||
-        !nets || !reps || !h || !sorted)
+        !nets || !reps || !sorted)
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     for (size_t i = 0, c = 0; i < val->n && !status; ++i)
         if (val->cases[i].split == TIRENV_SPLIT_VALIDATION)
@@ -138,7 +145,7 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
         tirenv_train_settings s = *settings;
         s.seed = settings->seed + k;
         out->seed[k] = s.seed;
-        status = one_seed(type, &s, set, fit, val, R0, out, k, h, &nets[k], &reps[k], diag);
+        status = one_seed(type, &s, set, fit, val, R0, n_max, out, k, &nets[k], &reps[k], diag);
     }
     out->seconds = tirenv__wall_seconds() - t0;
     if (!status) {
@@ -175,7 +182,6 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
     }
     free(nets);
     free(reps);
-    free(h);
     free(sorted);
     return status;
 }
