@@ -456,6 +456,7 @@ static model_file *make_model_file(const synthetic *d)
     tirenv_train_settings s = tirenv_train_default(tirenv_trainer_lm);
     s.restarts = 2;
     s.ensemble = 2;
+    s.even_width = 0.3;
     s.target = TIRENV_NN_TARGET_H_OVER_H;
     s.loss = TIRENV_TRAIN_LOSS_CURVES;
     s.max_epochs = 20;
@@ -540,7 +541,8 @@ static void test_file_round_trip(void **state)
     assert_int_equal(in, TIRENV_NN_INPUT_EVEN);
     assert_int_equal(out, TIRENV_NN_TARGET_H_OVER_H);
     assert_true(s1->input == in && s1->target == out && s1->ensemble == s0->ensemble &&
-                s1->loss == s0->loss);
+                s1->loss == s0->loss && s1->even_width == 0.3);
+    assert_true(tirenv_nn_get_even_width(nn) == 0.3);
     assert_int_equal(r1->members, 2);
     assert_memory_equal(r1->member_restart, r0->member_restart, 2 * sizeof(size_t));
 
@@ -608,6 +610,7 @@ static void m_weight_value(json_t *r)
     json_array_set_new(bias, 0, json_real(json_number_value(json_array_get(bias, 0)) + 1e-9));
 }
 static void m_form(json_t *r) { json_object_set_new(r, "input_form", json_string("odd")); }
+static void m_width(json_t *r) { json_object_set_new(r, "even_width", json_real(-0.1)); }
 static void m_target(json_t *r) { json_object_set_new(r, "target", json_string("h/L")); }
 static void m_member_count(json_t *r) { json_array_remove(at(r, "members", NULL), 1); }
 static void m_loss(json_t *r) { json_object_set_new(at(r, "training", NULL), "loss", json_string("max")); }
@@ -653,6 +656,7 @@ static void test_file_refusals(void **state)
          "element 3: expected a number, found a string"},
         {m_weight_value, "checksum", "altered or corrupted"},
         {m_form, "input_form", "'odd'; expected 'paper'"},
+        {m_width, "even_width", "expected > 0"},
         {m_target, "target", "'h/L'"},
         {m_member_count, "checksum", "altered or corrupted"},
         {m_loss, "training.loss", "'max'"},

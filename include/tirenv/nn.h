@@ -28,15 +28,23 @@ enum {
 /* "x_N", "contact_length_m", "obstacle_height_m", "obstacle_length_m"; NULL past the end. */
 const char *tirenv_nn_input_name(size_t i);
 
-/* How the enveloping model's inputs and output reach the network (docs/models.md section 6).
+/* How the enveloping model's inputs and output reach the network (docs/models.md section 6.1).
  * The paper feeds x_N itself; its curve is then mirrored about x_N = 1, where nothing makes
  * the network's slope vanish, so the full curve can have a kink (a notch) over the obstacle
- * centre. (1 - x_N)^2 is even about x_N = 1: dh/dx_N = 0 there by construction, and it is
- * monotonic over x_N <= 1, so no two positions of the approach half share a feature. */
+ * centre. The even form feeds the distance from the centre rounded over a width a,
+ *     f = sqrt((1 - x_N)^2 + a^2) - a,
+ * even about x_N = 1 and smooth there, so dh/dx_N = 0 at the centre by construction; it is
+ * monotonic over x_N <= 1, so no two positions of the approach half share a feature. Beyond a
+ * it is |1 - x_N| - a, so the network keeps x_N's resolution over the rest of the curve (a
+ * large a tends to (1 - x_N)^2 / 2a, which crowds the top of the curve into a small range). */
 typedef enum {
     TIRENV_NN_INPUT_PAPER = 0,   /* x_N as is (the paper's Table 1) */
-    TIRENV_NN_INPUT_EVEN         /* (1 - x_N)^2 in place of x_N */
+    TIRENV_NN_INPUT_EVEN         /* sqrt((1 - x_N)^2 + a^2) - a in place of x_N */
 } tirenv_nn_input_form;
+
+/* The default width a of the even form, in x_N (chosen on the control error over seeds:
+ * src/train/train.c says with which figures). */
+#define TIRENV_NN_EVEN_WIDTH 0.2
 
 /* The paper's network outputs h; with TIRENV_NN_TARGET_H_OVER_H it learns h/H and its output
  * is H times that, so every obstacle's curve has the same scale to the network. */
@@ -107,6 +115,10 @@ int tirenv_nn_set_form(tirenv_nn *nn, tirenv_nn_input_form input, tirenv_nn_targ
                        tirenv_diag *diag);
 void tirenv_nn_get_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
                         tirenv_nn_target_form *target);
+/* The even form's width a (> 0, finite; TIRENV_NN_EVEN_WIDTH when allocated); TIRENV_EINVAL
+ * otherwise. Like the forms, set it before tirenv_nn_fit_scaling. */
+int tirenv_nn_set_even_width(tirenv_nn *nn, double a, tirenv_diag *diag);
+double tirenv_nn_get_even_width(const tirenv_nn *nn);
 
 /* All weights, member by member, each member's layer by layer; layer l (1-based, fed by
  * layer l-1 of n_in neurons, n_out neurons) is a (1 + n_in) x n_out row-major block: first
@@ -127,9 +139,10 @@ size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
 void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng);
 
 /* Scaling: the net sees u_i = (f_i - in_mean_i)/in_std_i, with the feature f_i = x_i except
- * f_0 = (1 - x_N)^2 under TIRENV_NN_INPUT_EVEN, and outputs y = out_mean + out_std*o (times H
- * under TIRENV_NN_TARGET_H_OVER_H, where out_mean and out_std are those of h/H). Every number
- * finite, stds > 0; else TIRENV_EINVAL. Units of the features and the target. */
+ * f_0 = sqrt((1 - x_N)^2 + a^2) - a under TIRENV_NN_INPUT_EVEN, and outputs y = out_mean +
+ * out_std*o (times H under TIRENV_NN_TARGET_H_OVER_H, where out_mean and out_std are those
+ * of h/H). Every number finite, stds > 0; else TIRENV_EINVAL. Units of the features and the
+ * target. */
 int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
                           double out_mean, double out_std, tirenv_diag *diag);
 void tirenv_nn_get_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],

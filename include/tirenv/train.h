@@ -114,6 +114,7 @@ typedef struct {
     size_t ensemble;              /* K: the model is the mean of the K restarts best on the
                                      control set (min(K, M); 1: the best one alone) */
     tirenv_nn_input_form input;   /* how x_N reaches the network (nn.h) */
+    double even_width;            /* a of the even form, in x_N (TIRENV_NN_EVEN_WIDTH) */
     tirenv_nn_target_form target; /* h or h/H; h/H also makes the loss one on h/H (each
                                      point's squared error weighted by 1/H^2) */
     tirenv_train_loss loss;

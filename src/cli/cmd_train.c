@@ -17,7 +17,8 @@ static void usage(FILE *fp)
           "                    [--restarts N] [--epochs N] [--patience N] [--hidden N[,N...]]\n"
           "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
           "                    [--lm-solver cholesky|gsl] [--ensemble K] [--input paper|even]\n"
-          "                    [--target h|h/H] [--loss points|curves] [--paper]\n"
+          "                    [--even-width A] [--target h|h/H] [--loss points|curves]\n"
+          "                    [--paper]\n"
           "                    [--seeds N] [-o MODEL.json]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
@@ -36,9 +37,11 @@ static void usage(FILE *fp)
           "  --restarts N         independent starts M (default: lm 8, rprop 4, backprop 1)\n"
           "  --ensemble K         the model is the mean of the K restarts best on control\n"
           "                       (default 4, at most M; 1: the best restart alone)\n"
-          "  --input FORM         even (default): the network sees (1 - x_N)^2, so the\n"
-          "                       mirrored curve is smooth over the obstacle centre; paper:\n"
-          "                       x_N itself, as in the paper\n"
+          "  --input FORM         even (default): the network sees the distance from the\n"
+          "                       obstacle centre, rounded: sqrt((1 - x_N)^2 + A^2) - A, so\n"
+          "                       the mirrored curve is smooth over the centre; paper: x_N\n"
+          "                       itself, as in the paper\n"
+          "  --even-width A       the rounding A of the even input, in x_N (default 0.2)\n"
           "  --target T           h (default): the network outputs h; h/H: it learns h/H\n"
           "                       (loss on h/H), its output times H is h\n"
           "  --loss L             points (default): squared error summed over all points;\n"
@@ -126,6 +129,7 @@ typedef struct {
     int have_seed, have_restarts, have_epochs, have_patience, have_hidden, have_lr,
         have_momentum, batch, have_solver, have_ensemble, paper;
     int input, target, loss;   /* -1: the default */
+    double even_width;         /* 0: the default */
     long seed, restarts, epochs, patience, ensemble, seeds;
     double learning_rate, momentum;
     tirenv_lm_solver solver;
@@ -137,7 +141,8 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
 {
     enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_RESTARTS, OPT_EPOCHS,
            OPT_PATIENCE, OPT_HIDDEN, OPT_LR, OPT_MOMENTUM, OPT_BATCH, OPT_SOLVER,
-           OPT_ENSEMBLE, OPT_INPUT, OPT_TARGET, OPT_LOSS, OPT_PAPER, OPT_SEEDS };
+           OPT_ENSEMBLE, OPT_INPUT, OPT_TARGET, OPT_LOSS, OPT_PAPER, OPT_SEEDS,
+           OPT_EVEN_WIDTH };
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         {"data", required_argument, NULL, OPT_DATA},
@@ -157,6 +162,7 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
         {"loss", required_argument, NULL, OPT_LOSS},
         {"paper", no_argument, NULL, OPT_PAPER},
         {"seeds", required_argument, NULL, OPT_SEEDS},
+        {"even-width", required_argument, NULL, OPT_EVEN_WIDTH},
         {"output", required_argument, NULL, 'o'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
@@ -245,6 +251,13 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
                 return CLI_EXIT_USAGE;
             }
             break;
+        case OPT_EVEN_WIDTH:
+            if (cli_parse_double(optarg, &t->even_width) || !(t->even_width > 0) ||
+                !(t->even_width < 1e6)) {
+                cli_error("--even-width: expected a width > 0 in x_N, got '%s'", optarg);
+                return CLI_EXIT_USAGE;
+            }
+            break;
         case OPT_LOSS:
             if ((t->loss = tirenv_train_loss_find(optarg)) < 0) {
                 cli_error("--loss: expected points or curves, got '%s'", optarg);
@@ -294,6 +307,8 @@ static tirenv_train_settings settings_from(const train_options *t)
         s.ensemble = (size_t)t->ensemble;
     if (t->input >= 0)
         s.input = (tirenv_nn_input_form)t->input;
+    if (t->even_width > 0)
+        s.even_width = t->even_width;
     if (t->target >= 0)
         s.target = (tirenv_nn_target_form)t->target;
     if (t->loss >= 0)
@@ -331,8 +346,11 @@ static void print_report(const char *data, const tirenv_dataset *ds,
     for (size_t l = 0; l < s->topology.n_layers; ++l)
         printf("%s%zu", l ? "-" : "", s->topology.size[l]);
     printf(", seed %lu\n", s->seed);
-    printf("  input %s, target %s, loss over %s; ", tirenv_nn_input_form_name(s->input),
-           tirenv_nn_target_form_name(s->target), tirenv_train_loss_name(s->loss));
+    printf("  input %s", tirenv_nn_input_form_name(s->input));
+    if (s->input == TIRENV_NN_INPUT_EVEN)
+        printf(" (width %g)", s->even_width);
+    printf(", target %s, loss over %s; ", tirenv_nn_target_form_name(s->target),
+           tirenv_train_loss_name(s->loss));
     if (r->members > 1) {
         printf("the mean of the %zu restarts best on control (", r->members);
         for (size_t k = 0; k < r->members; ++k)

@@ -47,6 +47,7 @@ struct tirenv_nn {
     size_t n_weights;                     /* K*member_weights */
     tirenv_nn_input_form input_form;
     tirenv_nn_target_form target_form;
+    double even_width;                    /* a of the even form */
     size_t n_act;                         /* neurons over all layers, with padding */
     size_t w_off[TIRENV_NN_MAX_LAYERS];   /* first weight of layer l, l >= 1 */
     size_t a_off[TIRENV_NN_MAX_LAYERS];   /* first activation of layer l, a multiple of
@@ -158,6 +159,7 @@ tirenv_nn *tirenv_nn_alloc_ensemble(const tirenv_nn_topology *t, size_t members)
     nn->n_weights = n_weights;
     nn->input_form = TIRENV_NN_INPUT_PAPER;
     nn->target_form = TIRENV_NN_TARGET_H;
+    nn->even_width = TIRENV_NN_EVEN_WIDTH;
     nn->n_act = n_act;
     nn->net_max = NN_NET_MAX;
     size_t w_off = 0, a_off = padded(t->size[0]);
@@ -221,6 +223,7 @@ static void copy_shared(tirenv_nn *dst, const tirenv_nn *src)
     dst->out_std = src->out_std;
     dst->input_form = src->input_form;
     dst->target_form = src->target_form;
+    dst->even_width = src->even_width;
 }
 
 static int same_shared(const tirenv_nn *a, const tirenv_nn *b)
@@ -230,7 +233,8 @@ static int same_shared(const tirenv_nn *a, const tirenv_nn *b)
            memcmp(a->in_lo, b->in_lo, n) == 0 && memcmp(a->in_hi, b->in_hi, n) == 0 &&
            memcmp(&a->out_mean, &b->out_mean, sizeof a->out_mean) == 0 &&
            memcmp(&a->out_std, &b->out_std, sizeof a->out_std) == 0 &&
-           a->input_form == b->input_form && a->target_form == b->target_form;
+           a->input_form == b->input_form && a->target_form == b->target_form &&
+           memcmp(&a->even_width, &b->even_width, sizeof a->even_width) == 0;
 }
 
 int tirenv_nn_copy(tirenv_nn *dst, const tirenv_nn *src)
@@ -357,11 +361,32 @@ void tirenv_nn_get_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
         *target = nn->target_form;
 }
 
-/* The feature the network sees for input i of value v: (1 - x_N)^2 for x_N under the even
- * form, else the input itself. */
-static inline double feature(tirenv_nn_input_form form, size_t i, double v)
+int tirenv_nn_set_even_width(tirenv_nn *nn, double a, tirenv_diag *diag)
 {
-    return form == TIRENV_NN_INPUT_EVEN && i == TIRENV_NN_X_N ? (1 - v) * (1 - v) : v;
+    if (!(a > 0) || !isfinite(a))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "even_width",
+                            "%g; expected a finite width > 0 (in x_N)", a);
+    nn->even_width = a;
+    return TIRENV_OK;
+}
+
+double tirenv_nn_get_even_width(const tirenv_nn *nn) { return nn->even_width; }
+
+/* The even form's feature of x_N: the distance 1 - x_N from the centre, rounded over the
+ * width a. */
+NN_INLINE double even_feature(double x_N, double a)
+{
+    const double d = 1 - x_N;
+    return sqrt(d * d + a * a) - a;
+}
+
+/* The feature the network sees for input i of value v: the even form's for x_N, else the
+ * input itself. */
+NN_INLINE double feature(const tirenv_nn *nn, size_t i, double v)
+{
+    return nn->input_form == TIRENV_NN_INPUT_EVEN && i == TIRENV_NN_X_N
+               ? even_feature(v, nn->even_width)
+               : v;
 }
 
 int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
@@ -437,7 +462,6 @@ int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const doubl
         lo[i] = INFINITY;
         hi[i] = -INFINITY;
     }
-    const tirenv_nn_input_form form = nn->input_form;
     const int over_H = nn->target_form == TIRENV_NN_TARGET_H_OVER_H;
     for (size_t s = 0; s < n; ++s) {
         for (size_t i = 0; i < n_in; ++i) {
@@ -446,7 +470,7 @@ int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const doubl
                 return tirenv_error(diag, TIRENV_EINVAL, "", s + 1, tirenv_nn_input_name(i),
                                     "sample %zu: input %zu is %g; expected a finite number", s,
                                     i, v);
-            mean[i] += feature(form, i, v);
+            mean[i] += feature(nn, i, v);
             lo[i] = v < lo[i] ? v : lo[i];
             hi[i] = v > hi[i] ? v : hi[i];
         }
@@ -464,7 +488,7 @@ int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const doubl
     y_mean /= (double)n;
     for (size_t s = 0; s < n; ++s) {
         for (size_t i = 0; i < n_in; ++i) {
-            const double d = feature(form, i, x[s * n_in + i]) - mean[i];
+            const double d = feature(nn, i, x[s * n_in + i]) - mean[i];
             std[i] += d * d;
         }
         const double t = over_H ? y[s] / x[s * n_in + TIRENV_NN_HEIGHT] : y[s];
@@ -651,7 +675,7 @@ NN_INLINE void layer_run_block(size_t n_in, size_t n_out, const double *restrict
 NN_INLINE void features_run(const tirenv_nn *nn, const double x[], double *restrict a)
 {
     for (size_t i = 0; i < nn->n_in; ++i)
-        a[i] = (feature(nn->input_form, i, x[i]) - nn->in_mean[i]) * nn->in_inv_std[i];
+        a[i] = (feature(nn, i, x[i]) - nn->in_mean[i]) * nn->in_inv_std[i];
 }
 
 /* Member k's scaled output o_k from the features in layer 0. */
@@ -704,10 +728,8 @@ NN_CLONES void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], do
             const double mean = nn->in_mean[i], inv_std = nn->in_inv_std[i];
             double *u = blk + i * NN_BLOCK;
             if (nn->input_form == TIRENV_NN_INPUT_EVEN && i == TIRENV_NN_X_N)
-                for (size_t s = 0; s < m; ++s) {
-                    const double d = 1 - xs[s * n_in + i];
-                    u[s] = (d * d - mean) * inv_std;
-                }
+                for (size_t s = 0; s < m; ++s)
+                    u[s] = (even_feature(xs[s * n_in + i], nn->even_width) - mean) * inv_std;
             else
                 for (size_t s = 0; s < m; ++s)
                     u[s] = (xs[s * n_in + i] - mean) * inv_std;

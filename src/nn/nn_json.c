@@ -7,13 +7,13 @@
  * Layout (version 2):
  *   format "tirenv-nn", version 2, inputs [names], output "h_m", topology [4, 8, 1],
  *   activation {hidden "logistic", output "identity"},
- *   input_form "paper" | "even", target "h" | "h/H"                         (nn.h),
+ *   input_form "paper" | "even", even_width a, target "h" | "h/H"            (nn.h),
  *   scaling {input_mean [], input_std [], output_mean, output_std},
  *   input_range {min [], max []},
  *   members [{layers [{bias [n_out], weights [[n_out] per input neuron]}]}]  (one per network
  *     of the ensemble, each in tirenv_nn_weights order),
  *   checksum "fnv1a64:<16 hex>" over topology, weights, scaling and ranges, then the member
- *     count and the two forms,
+ *     count, the two forms and the even width,
  *   training (optional) {trainer, seed, restarts, ensemble, loss, max_epochs, patience,
  *     settings {backprop {}, rprop {}, lm {}}, data {dir, fingerprint, tire_R0_m},
  *     result {restart, members [restarts], epochs, best_epoch, best_time_s, total_epochs,
@@ -83,9 +83,11 @@ static uint64_t nn_checksum(const tirenv_nn *nn, int version)
     tirenv_nn_input_form input;
     tirenv_nn_target_form target;
     tirenv_nn_get_form(nn, &input, &target);
+    const double a = tirenv_nn_get_even_width(nn);
     h = fnv_u64(h, tirenv_nn_n_members(nn));
     h = fnv_u64(h, (uint64_t)input);
-    return fnv_u64(h, (uint64_t)target);
+    h = fnv_u64(h, (uint64_t)target);
+    return fnv_doubles(h, 1, &a);
 }
 
 static void hash_text(char *buf, size_t n, uint64_t h)
@@ -260,6 +262,7 @@ static json_t *nn_json(wctx *c, const tirenv_nn *nn)
     tirenv_nn_target_form target;
     tirenv_nn_get_form(nn, &input, &target);
     put(c, root, "input_form", json_string(tirenv_nn_input_form_name(input)));
+    put(c, root, "even_width", json_real(tirenv_nn_get_even_width(nn)));
     put(c, root, "target", json_string(tirenv_nn_target_form_name(target)));
     json_t *sc = put(c, root, "scaling", json_object());
     if (sc) {
@@ -550,10 +553,11 @@ static int read_header(const rctx *c, const json_t *root, int *version)
 /* Version 2: the forms, and how many networks the "members" array holds. Version 1: one
  * network of the paper's forms. */
 static int read_forms(const rctx *c, const json_t *root, int version,
-                      tirenv_nn_input_form *input, tirenv_nn_target_form *target,
-                      size_t *members)
+                      tirenv_nn_input_form *input, double *even_width,
+                      tirenv_nn_target_form *target, size_t *members)
 {
     *input = TIRENV_NN_INPUT_PAPER;
+    *even_width = TIRENV_NN_EVEN_WIDTH;
     *target = TIRENV_NN_TARGET_H;
     *members = 1;
     if (version < 2)
@@ -565,8 +569,12 @@ static int read_forms(const rctx *c, const json_t *root, int version,
         return status;
     const int in = tirenv_nn_input_form_find(buf);
     if (in < 0)
-        return bad(c, "input_form", "'%s'; expected 'paper' (x_N) or 'even' ((1 - x_N)^2)",
-                   buf);
+        return bad(c, "input_form", "'%s'; expected 'paper' (x_N) or 'even' (the distance "
+                   "from x_N = 1, rounded)", buf);
+    if ((status = get_number(c, root, "even_width", "even_width", even_width)))
+        return status;
+    if (!(*even_width > 0))
+        return bad(c, "even_width", "%g; expected > 0", *even_width);
     if ((status = get_string(c, root, "target", "target", buf, sizeof buf)))
         return status;
     const int out = tirenv_nn_target_form_find(buf);
@@ -752,6 +760,7 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     rec->settings = tirenv_train_paper(NULL);
     rec->settings.topology = *tirenv_nn_get_topology(nn);
     tirenv_nn_get_form(nn, &rec->settings.input, &rec->settings.target);
+    rec->settings.even_width = tirenv_nn_get_even_width(nn);
     rec->report.members = tirenv_nn_n_members(nn);
     if (!t)
         return TIRENV_OK;  /* a network without its training record: allowed */
@@ -921,6 +930,7 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
     tirenv_nn_topology t;
     tirenv_nn_input_form input;
     tirenv_nn_target_form target;
+    double even_width;
     size_t members = 1;
     tirenv_nn *nn = NULL;
     if (!json_is_object(root))
@@ -932,13 +942,15 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
     if (!status)
         status = read_inputs(&c, root, t.size[0]);
     if (!status)
-        status = read_forms(&c, root, version, &input, &target, &members);
+        status = read_forms(&c, root, version, &input, &even_width, &target, &members);
     if (!status && !(nn = tirenv_nn_alloc_ensemble(&t, members)))
         status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
     tirenv_diag why;
     tirenv_diag_clear(&why);
     if (!status && tirenv_nn_set_form(nn, input, target, &why))
         status = bad(&c, "input_form", "%s", why.message);
+    if (!status)
+        tirenv_nn_set_even_width(nn, even_width, NULL);
     if (!status)
         status = read_network(&c, root, version, nn);
     tirenv_train_record scratch;

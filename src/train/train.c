@@ -66,6 +66,7 @@ tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type)
         .restarts = 8,
         .ensemble = 4,
         .input = TIRENV_NN_INPUT_EVEN,
+        .even_width = TIRENV_NN_EVEN_WIDTH,
         .target = TIRENV_NN_TARGET_H_OVER_H,
         .loss = TIRENV_TRAIN_LOSS_CURVES,
         .max_epochs = 1000,
@@ -314,6 +315,10 @@ int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *dia
                             "input form %d, target %d, loss %d; expected paper or even, h or "
                             "h/H, points or curves", (int)s->input, (int)s->target,
                             (int)s->loss);
+    if (!(s->even_width > 0) || !isfinite(s->even_width))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "form",
+                            "even width %g; expected a finite width > 0 (in x_N)",
+                            s->even_width);
     if ((s->input != TIRENV_NN_INPUT_PAPER || s->target != TIRENV_NN_TARGET_H) &&
         s->topology.size[0] != TIRENV_NN_INPUTS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "form",
@@ -621,6 +626,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
     }
     tirenv_samples tr = *train, sel = *sel_in;
     if (!(status = tirenv_nn_set_form(proto, s->input, s->target, diag)) &&
+        !(status = tirenv_nn_set_even_width(proto, s->even_width, diag)) &&
         !(status = tirenv_nn_fit_scaling(proto, train->n, train->x, train->y, diag)) &&
         !(status = base_weights(train, s, &w_train, diag)) &&
         !(status = base_weights(sel_in, s, &w_sel, diag))) {
