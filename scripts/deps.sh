@@ -2,7 +2,8 @@
 # Installs the Debian packages tirenv needs to build, test and draw its plots. Idempotent:
 # does nothing when they are present. As root it runs apt-get; otherwise it prints the line.
 set -eu
-need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox"
+# groff-base and man-db: the tests format and look up the generated man pages.
+need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
 
 missing=""

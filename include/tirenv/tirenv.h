@@ -21,7 +21,9 @@
 #include "tirenv/vehicle.h"
 #include "tirenv/ride.h"
 #include "tirenv/comfort.h"
-
-#define TIRENV_VERSION "0.1.0"
+#include "tirenv/nn.h"
+#include "tirenv/train.h"
+#include "tirenv/study.h"
+#include "tirenv/version.h"
 
 #endif

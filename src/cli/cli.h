@@ -108,11 +108,13 @@ void cli_help_obstacle(FILE *fp);
 /* "--model NAME", listing the models the library has, then fallback (e.g. " (default x)"). */
 void cli_help_model(FILE *fp, const char *fallback);
 
-/* rel (e.g. "dataset") under the data directory: $TIRENV_DATA if set, else the installed
- * one; in buf. */
+/* The data directory (datadir.c): $TIRENV_DATA if set, else the installed data found from the
+ * program's own location (or, in the build tree, the source tree's data/). */
+const char *cli_data_dir(void);
+/* rel (e.g. "dataset") under the data directory, in buf. */
 const char *cli_data_path(const char *rel, char *buf, size_t n);
 
-/* The tire file in use: --tire, else $TIRENV_DATA/tires/default.tir, else the installed one. */
+/* The tire file in use: --tire, else tires/default.tir in the data directory. */
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 
 /* Reads the tire file, applies --set in order and --method, and checks the result.

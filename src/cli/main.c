@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "tirenv/version.h"
 
 static int help_main(int argc, char *argv[]);
 
@@ -49,7 +50,12 @@ static void usage(FILE *fp)
           "     no convergence; the message names the position x\n"
           "\n"
           "environment:\n"
-          "  TIRENV_DATA  data directory; the default tire is $TIRENV_DATA/tires/default.tir\n"
+          "  TIRENV_DATA  the data directory: default tire tires/default.tir, tractor\n"
+          "               vehicles/tractor.veh, embedded data set dataset/. Unset: the\n"
+          "               installed data, share/tirenv under the prefix tirenv is\n"
+          "               installed in, found from the program's own location (the\n"
+          "               installed tree may be moved); for a program in its build\n"
+          "               tree, the source tree's data/\n"
           "\n"
           "Units are SI (m, N) in options and CSV files; summaries show mm and kN.\n",
           fp);
@@ -99,7 +105,7 @@ int main(int argc, char *argv[])
             usage(stdout);
             return CLI_EXIT_OK;
         case 'V':
-            printf("tirenv %s\n", TIRENV_VERSION);
+            printf("tirenv %s\n", TIRENV_VERSION);  /* tirenv/version.h */
             return CLI_EXIT_OK;
         default:
             usage(stderr);

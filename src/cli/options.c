@@ -9,10 +9,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef TIRENV_DATA_DIR
-#error "TIRENV_DATA_DIR must name the data directory (CMake defines it)"
-#endif
-
 /* Resolution of the generated curved obstacles: a 1 degree polygon for the cylinder and 64
  * vertices per sine period keep the polyline within 0.02 % of the curve's height. */
 enum { CYLINDER_SEGMENTS = 180, SINE_POINTS_PER_PERIOD = 64 };
@@ -216,8 +212,8 @@ int cli_option(cli_options *o, int code, const char *arg)
 
 void cli_help_tire(FILE *fp, int with_method)
 {
-    fputs("  --tire FILE          tire property file (.tir); default: $TIRENV_DATA/tires/\n"
-          "                       default.tir if TIRENV_DATA is set, else the installed one\n"
+    fputs("  --tire FILE          tire property file (.tir); default: tires/default.tir in\n"
+          "                       the data directory ($TIRENV_DATA, else the installed data)\n"
           "  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
           "                       applied in order), e.g. --set RADIAL_STIFFNESS=1.8e6\n",
           fp);
@@ -255,13 +251,6 @@ void cli_help_obstacle(FILE *fp)
           "                       z = A*(1 - cos(2*pi*x/WAVELENGTH)) from x = 0\n"
           "  --profile FILE.csv   measured profile: header x_m,z_m, one vertex per line\n",
           fp);
-}
-
-const char *cli_data_path(const char *rel, char *buf, size_t n)
-{
-    const char *dir = getenv("TIRENV_DATA");
-    snprintf(buf, n, "%s/%s", dir && dir[0] ? dir : TIRENV_DATA_DIR, rel);
-    return buf;
 }
 
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
