@@ -103,7 +103,7 @@ typedef struct {
     double control_median, control_q1, control_q3;  /* of control_rms, m */
     size_t median_seed;            /* the seed (index) whose mean_rms is nearest the median,
                                     * the lower one of two */
-    double seconds;                /* wall time, all seeds */
+    double seconds;                /* the trainings' wall time, summed over the seeds */
 } tirenv_nn_seeds;
 
 /* Trains with the trainer and settings on the train and control cases of fit and measures on

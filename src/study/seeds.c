@@ -7,8 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/clock.h"
-
 void tirenv_nn_seeds_free(tirenv_nn_seeds *r)
 {
     if (!r)
@@ -139,7 +137,6 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
     for (int sp = 0; sp < 3 && !status; ++sp)
         status = tirenv_samples_from_dataset(from[sp], (tirenv_split)sp, &set[sp], &x[sp],
                                              &y[sp], diag);
-    const double t0 = tirenv__wall_seconds();
     /* Independent seeds: no state is shared from one to the next. */
     for (size_t k = 0; k < n_seeds && !status; ++k) {
         tirenv_train_settings s = *settings;
@@ -147,7 +144,8 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
         out->seed[k] = s.seed;
         status = one_seed(type, &s, set, fit, val, R0, n_max, out, k, &nets[k], &reps[k], diag);
     }
-    out->seconds = tirenv__wall_seconds() - t0;
+    for (size_t k = 0; k < n_seeds && !status; ++k)
+        out->seconds += reps[k].wall_time;
     if (!status) {
         memcpy(sorted, out->mean_rms, n_seeds * sizeof *sorted);
         qsort(sorted, n_seeds, sizeof *sorted, cmp_double);
