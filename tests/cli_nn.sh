@@ -20,11 +20,11 @@ check "train (default forms) --ensemble 2: the mean of 2 of 3 restarts, even inp
 run "$bin" predict --nn ens.json --cleat 0.10,0.10 --contact-length 0.28 --x-from -0.0002 \
     --x-to 0 --dx 0.0001 -o centre.csv
 check "predict, even input: flat into the obstacle centre (|dh/dx| < 1e-3 over 0.1 mm)" \
-    '[ $rc -eq 0 ] && grep -q "input even, target h/H, mean of 2 networks" err &&
+    '[ $rc -eq 0 ] && grep -q "network: input even, target h/H, mean of 2 networks" err &&
      awk -F, "NR == 3 { a = \$3 } NR == 4 { d = (\$3 - a) / 1e-4; exit !(d < 1e-3 && d > -1e-3) }" centre.csv'
 run "$bin" predict --nn "$data/nn-v1.json" --cleat 0.10,0.10 --contact-length 0.28 -o v1.csv
 check "predict with a version 1 model file (the paper's form, one network)" \
-    '[ $rc -eq 0 ] && grep -q "input paper, target h, mean of 1 network)" err && [ -s v1.csv ]'
+    '[ $rc -eq 0 ] && grep -q "network: input paper, target h, mean of 1 network$" err && [ -s v1.csv ]'
 run "$bin" train --data "$set_data" --seeds 3 --restarts 2 --epochs 40 -o med.json
 check "train --seeds 3: a line per seed, the spread, the median seed written" \
     '[ $rc -eq 0 ] && [ $(grep -cE "^ +[123] +[0-9.]+ +[0-9.]+ " out) -eq 3 ] &&

@@ -1,6 +1,7 @@
 /* tirenv train: the empirical model's network trained on a data set (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,8 +9,8 @@
 
 #include "cli/cli.h"
 #include "tirenv/dataset.h"
+#include "tirenv/nn_file.h"
 #include "tirenv/study.h"
-#include "tirenv/train.h"
 
 static void usage(FILE *fp)
 {
@@ -18,8 +19,7 @@ static void usage(FILE *fp)
           "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
           "                    [--lm-solver cholesky|gsl] [--ensemble K] [--input paper|even]\n"
           "                    [--even-width A] [--target h|h/H] [--loss points|curves]\n"
-          "                    [--paper]\n"
-          "                    [--seeds N] [-o MODEL.json]\n"
+          "                    [--paper] [--seeds N] [-o MODEL.json]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "Trains the empirical model's network (inputs x_N, contact length, obstacle height,\n"
@@ -42,12 +42,12 @@ static void usage(FILE *fp)
           "                       the mirrored curve is smooth over the centre; paper: x_N\n"
           "                       itself, as in the paper\n"
           "  --even-width A       the rounding A of the even input, in x_N (default 0.2)\n"
-          "  --target T           h (default): the network outputs h; h/H: it learns h/H\n"
-          "                       (loss on h/H), its output times H is h\n"
-          "  --loss L             points (default): squared error summed over all points;\n"
-          "                       curves: the mean over curves of each curve's RMS error\n"
-          "  --paper              the paper's network: --input paper --target h --loss points\n"
-          "                       --ensemble 1 (options after it still apply)\n"
+          "  --target T           h/H (default): the network learns h/H (the loss is on h/H)\n"
+          "                       and its output times H is h; h: it outputs h\n"
+          "  --loss L             curves (default): the mean over curves of each curve's RMS\n"
+          "                       error; points: the squared error summed over all points\n"
+          "  --paper              start from the paper's network: --input paper --target h\n"
+          "                       --loss points --ensemble 1 (those options, given, override)\n"
           "  --seeds N            train with seeds S to S+N-1 and print the median and\n"
           "                       quartiles of the validation error (the mean over the\n"
           "                       validation cases of each case's RMS); -o writes the\n"
@@ -123,209 +123,163 @@ static int parse_hidden(const char *s, tirenv_nn_topology *t)
     return 0;
 }
 
+/* What the options asked for; a field left at -1 (or NaN) keeps the trainer's default. */
 typedef struct {
-    const char *data, *out;
+    const char *data;
     const tirenv_trainer_type *type;
-    int have_seed, have_restarts, have_epochs, have_patience, have_hidden, have_lr,
-        have_momentum, batch, have_solver, have_ensemble, paper;
-    int input, target, loss;   /* -1: the default */
-    double even_width;         /* 0: the default */
     long seed, restarts, epochs, patience, ensemble, seeds;
-    double learning_rate, momentum;
+    int have_hidden, batch, have_solver, paper;
+    int input, target, loss;   /* -1: the default */
+    double learning_rate, momentum, even_width;
     tirenv_lm_solver solver;
     tirenv_nn_topology topology;
 } train_options;
 
-/* Parses the options; returns an exit code, or -1 to go on. */
-static int parse(int argc, char *argv[], cli_options *o, train_options *t)
+static int parse_trainer(void *dst, const char *arg)
 {
-    enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_RESTARTS, OPT_EPOCHS,
-           OPT_PATIENCE, OPT_HIDDEN, OPT_LR, OPT_MOMENTUM, OPT_BATCH, OPT_SOLVER,
-           OPT_ENSEMBLE, OPT_INPUT, OPT_TARGET, OPT_LOSS, OPT_PAPER, OPT_SEEDS,
-           OPT_EVEN_WIDTH };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        {"data", required_argument, NULL, OPT_DATA},
-        {"trainer", required_argument, NULL, OPT_TRAINER},
-        {"seed", required_argument, NULL, OPT_SEED},
-        {"restarts", required_argument, NULL, OPT_RESTARTS},
-        {"epochs", required_argument, NULL, OPT_EPOCHS},
-        {"patience", required_argument, NULL, OPT_PATIENCE},
-        {"hidden", required_argument, NULL, OPT_HIDDEN},
-        {"learning-rate", required_argument, NULL, OPT_LR},
-        {"momentum", required_argument, NULL, OPT_MOMENTUM},
-        {"batch", no_argument, NULL, OPT_BATCH},
-        {"lm-solver", required_argument, NULL, OPT_SOLVER},
-        {"ensemble", required_argument, NULL, OPT_ENSEMBLE},
-        {"input", required_argument, NULL, OPT_INPUT},
-        {"target", required_argument, NULL, OPT_TARGET},
-        {"loss", required_argument, NULL, OPT_LOSS},
-        {"paper", no_argument, NULL, OPT_PAPER},
-        {"seeds", required_argument, NULL, OPT_SEEDS},
-        {"even-width", required_argument, NULL, OPT_EVEN_WIDTH},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    int c, longindex = 0;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, &longindex)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            t->out = optarg;
-            break;
-        case OPT_DATA:
-            t->data = optarg;
-            break;
-        case OPT_TRAINER:
-            if (!(t->type = tirenv_trainer_type_find(optarg))) {
-                cli_error("--trainer: expected backprop, rprop or lm, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_SEED:
-        case OPT_RESTARTS:
-        case OPT_EPOCHS:
-        case OPT_PATIENCE: {
-            const long min = c == OPT_SEED || c == OPT_PATIENCE ? 0 : 1;
-            long *v = c == OPT_SEED ? &t->seed : c == OPT_RESTARTS ? &t->restarts
-                      : c == OPT_EPOCHS ? &t->epochs : &t->patience;
-            if (cli_parse_count(optarg, min, LONG_MAX, v)) {
-                cli_error("--%s: expected an integer >= %ld, got '%s'",
-                          longopts[longindex].name, min, optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_seed |= c == OPT_SEED;
-            t->have_restarts |= c == OPT_RESTARTS;
-            t->have_epochs |= c == OPT_EPOCHS;
-            t->have_patience |= c == OPT_PATIENCE;
-            break;
-        }
-        case OPT_HIDDEN:
-            if (parse_hidden(optarg, &t->topology)) {
-                cli_error("--hidden: expected 1 to %d comma-separated layer sizes from 1 to %d, "
-                          "got '%s'", TIRENV_NN_MAX_LAYERS - 2, TIRENV_NN_MAX_WIDTH, optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_hidden = 1;
-            break;
-        case OPT_LR:
-        case OPT_MOMENTUM: {
-            double v;
-            const int lr = c == OPT_LR;
-            if (cli_parse_double(optarg, &v) || (lr ? !(v > 0) : !(v >= 0 && v < 1))) {
-                cli_error("--%s: expected %s, got '%s'", longopts[longindex].name,
-                          lr ? "a number > 0" : "a number in [0, 1)", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            *(lr ? &t->learning_rate : &t->momentum) = v;
-            *(lr ? &t->have_lr : &t->have_momentum) = 1;
-            break;
-        }
-        case OPT_BATCH:
-            t->batch = 1;
-            break;
-        case OPT_ENSEMBLE:
-        case OPT_SEEDS: {
-            const long max = c == OPT_ENSEMBLE ? TIRENV_NN_MAX_MEMBERS : 100000;
-            if (cli_parse_count(optarg, 1, max, c == OPT_ENSEMBLE ? &t->ensemble : &t->seeds)) {
-                cli_error("--%s: expected an integer from 1 to %ld, got '%s'",
-                          longopts[longindex].name, max, optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_ensemble |= c == OPT_ENSEMBLE;
-            break;
-        }
-        case OPT_INPUT:
-            if ((t->input = tirenv_nn_input_form_find(optarg)) < 0) {
-                cli_error("--input: expected paper or even, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_TARGET:
-            if ((t->target = tirenv_nn_target_form_find(optarg)) < 0) {
-                cli_error("--target: expected h or h/H, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_EVEN_WIDTH:
-            if (cli_parse_double(optarg, &t->even_width) || !(t->even_width > 0) ||
-                !(t->even_width < 1e6)) {
-                cli_error("--even-width: expected a width > 0 in x_N, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_LOSS:
-            if ((t->loss = tirenv_train_loss_find(optarg)) < 0) {
-                cli_error("--loss: expected points or curves, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_PAPER:
-            t->paper = 1;
-            t->input = t->target = t->loss = -1;
-            t->have_ensemble = 0;
-            break;
-        case OPT_SOLVER:
-            if (strcmp(optarg, "cholesky") == 0)
-                t->solver = TIRENV_LM_CHOLESKY;
-            else if (strcmp(optarg, "gsl") == 0)
-                t->solver = TIRENV_LM_GSL;
-            else {
-                cli_error("--lm-solver: expected cholesky or gsl, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_solver = 1;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("train: unexpected argument '%s'", argv[optind]);
+    const tirenv_trainer_type **type = dst;
+    if (!(*type = tirenv_trainer_type_find(arg))) {
+        cli_error("--trainer: expected backprop, rprop or lm, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    return CLI_EXIT_OK;
+}
+
+static int parse_hidden_opt(void *dst, const char *arg)
+{
+    train_options *t = dst;
+    if (parse_hidden(arg, &t->topology)) {
+        cli_error("--hidden: expected 1 to %d comma-separated layer sizes from 1 to %d, got "
+                  "'%s'", TIRENV_NN_MAX_LAYERS - 2, TIRENV_NN_MAX_WIDTH, arg);
+        return CLI_EXIT_USAGE;
+    }
+    t->have_hidden = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_momentum(void *dst, const char *arg)
+{
+    double *v = dst;
+    if (cli_parse_double(arg, v) || !(*v >= 0 && *v < 1)) {
+        cli_error("--momentum: expected a number in [0, 1), got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_solver(void *dst, const char *arg)
+{
+    train_options *t = dst;
+    if (strcmp(arg, "cholesky") == 0)
+        t->solver = TIRENV_LM_CHOLESKY;
+    else if (strcmp(arg, "gsl") == 0)
+        t->solver = TIRENV_LM_GSL;
+    else {
+        cli_error("--lm-solver: expected cholesky or gsl, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    t->have_solver = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_input(void *dst, const char *arg)
+{
+    if ((*(int *)dst = tirenv_nn_input_form_find(arg)) < 0) {
+        cli_error("--input: expected paper or even, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_target(void *dst, const char *arg)
+{
+    if ((*(int *)dst = tirenv_nn_target_form_find(arg)) < 0) {
+        cli_error("--target: expected h or h/H, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_loss(void *dst, const char *arg)
+{
+    if ((*(int *)dst = tirenv_train_loss_find(arg)) < 0) {
+        cli_error("--loss: expected points or curves, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* Parses the options; returns an exit code, or CLI_GO_ON. */
+static int parse(int argc, char *argv[], cli_options *o, train_options *t)
+{
+    const cli_opt own[] = {
+        {.name = "data", .kind = CLI_STRING, .dst = &t->data},
+        {.name = "trainer", .kind = CLI_CUSTOM, .dst = &t->type, .parse = parse_trainer},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &t->seed, .min = 0, .max = LONG_MAX,
+         .what = "an integer >= 0"},
+        {.name = "restarts", .kind = CLI_COUNT, .dst = &t->restarts, .min = 1,
+         .max = LONG_MAX, .what = "an integer >= 1"},
+        {.name = "epochs", .kind = CLI_COUNT, .dst = &t->epochs, .min = 1, .max = LONG_MAX,
+         .what = "an integer >= 1"},
+        {.name = "patience", .kind = CLI_COUNT, .dst = &t->patience, .min = 0,
+         .max = LONG_MAX, .what = "an integer >= 0"},
+        {.name = "hidden", .kind = CLI_CUSTOM, .dst = t, .parse = parse_hidden_opt},
+        {.name = "learning-rate", .kind = CLI_POSITIVE, .dst = &t->learning_rate,
+         .what = "a number > 0"},
+        {.name = "momentum", .kind = CLI_CUSTOM, .dst = &t->momentum, .parse = parse_momentum},
+        {.name = "batch", .kind = CLI_FLAG, .dst = &t->batch},
+        {.name = "lm-solver", .kind = CLI_CUSTOM, .dst = t, .parse = parse_solver},
+        {.name = "ensemble", .kind = CLI_COUNT, .dst = &t->ensemble, .min = 1,
+         .max = TIRENV_NN_MAX_MEMBERS, .what = "an integer from 1 to 64"},
+        {.name = "input", .kind = CLI_CUSTOM, .dst = &t->input, .parse = parse_input},
+        {.name = "even-width", .kind = CLI_POSITIVE, .dst = &t->even_width,
+         .what = "a width > 0 in x_N"},
+        {.name = "target", .kind = CLI_CUSTOM, .dst = &t->target, .parse = parse_target},
+        {.name = "loss", .kind = CLI_CUSTOM, .dst = &t->loss, .parse = parse_loss},
+        {.name = "paper", .kind = CLI_FLAG, .dst = &t->paper},
+        {.name = "seeds", .kind = CLI_COUNT, .dst = &t->seeds, .min = 1, .max = 100000,
+         .what = "an integer from 1 to 100000"},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "train", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_OUTPUT};
+    const int code = cli_parse(&p, argc, argv, o);
+    if (code != CLI_GO_ON)
+        return code;
     if (!t->data) {
         cli_error("train: expected --data DIR; 'tirenv train --help' shows the options");
         return CLI_EXIT_USAGE;
     }
-    return -1;
+    return CLI_GO_ON;
 }
 
 static tirenv_train_settings settings_from(const train_options *t)
 {
     tirenv_train_settings s = t->paper ? tirenv_train_paper(t->type)
                                        : tirenv_train_default(t->type);
-    if (t->have_ensemble)
+    if (t->ensemble > 0)
         s.ensemble = (size_t)t->ensemble;
     if (t->input >= 0)
         s.input = (tirenv_nn_input_form)t->input;
-    if (t->even_width > 0)
+    if (!isnan(t->even_width))
         s.even_width = t->even_width;
     if (t->target >= 0)
         s.target = (tirenv_nn_target_form)t->target;
     if (t->loss >= 0)
         s.loss = (tirenv_train_loss)t->loss;
-    if (t->have_seed)
+    if (t->seed >= 0)
         s.seed = (unsigned long)t->seed;
-    if (t->have_restarts)
+    if (t->restarts >= 0)
         s.restarts = (size_t)t->restarts;
-    if (t->have_epochs)
+    if (t->epochs >= 0)
         s.max_epochs = (size_t)t->epochs;
-    if (t->have_patience)
+    if (t->patience >= 0)
         s.patience = (size_t)t->patience;
     if (t->have_hidden)
         s.topology = t->topology;
-    if (t->have_lr)
+    if (!isnan(t->learning_rate))
         s.backprop.learning_rate = t->learning_rate;
-    if (t->have_momentum)
+    if (!isnan(t->momentum))
         s.backprop.momentum = t->momentum;
     if (t->batch)
         s.backprop.online = 0;
@@ -392,13 +346,14 @@ static void print_seeds(const tirenv_dataset *ds, const tirenv_nn_seeds *r)
 int cli_train_main(int argc, char *argv[])
 {
     cli_options o;
-    cli_options_init(&o);
     train_options t;
     memset(&t, 0, sizeof t);
     t.type = tirenv_trainer_lm;
+    t.seed = t.restarts = t.epochs = t.patience = t.ensemble = t.seeds = -1;
     t.input = t.target = t.loss = -1;
+    t.learning_rate = t.momentum = t.even_width = NAN;
     int code = parse(argc, argv, &o, &t);
-    if (code >= 0)
+    if (code != CLI_GO_ON)
         return code;
 
     tirenv_tire tire;
@@ -425,8 +380,9 @@ int cli_train_main(int argc, char *argv[])
     }
 
     tirenv_train_settings set = settings_from(&t);
-    bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0};
-    if (isatty(STDERR_FILENO)) {
+    bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0,
+             .over_H = set.target == TIRENV_NN_TARGET_H_OVER_H};
+    if (isatty(STDERR_FILENO) && t.seeds < 0) {
         set.progress = draw;
         set.progress_data = &b;
     }
@@ -434,7 +390,6 @@ int cli_train_main(int argc, char *argv[])
     tirenv_nn_seeds spread;
     memset(&spread, 0, sizeof spread);
     if (t.seeds > 0) {
-        set.progress = NULL;
         status = tirenv_nn_train_seeds(t.type, &set, &ds, &ds, tire.springs.R0, (size_t)t.seeds,
                                        &spread, &nn, &rep, &diag);
         if (!status)
@@ -454,7 +409,7 @@ int cli_train_main(int argc, char *argv[])
         print_seeds(&ds, &spread);
     tirenv_nn_seeds_free(&spread);
 
-    if (t.out) {
+    if (o.output) {
         tirenv_train_record rec;
         memset(&rec, 0, sizeof rec);
         snprintf(rec.trainer, sizeof rec.trainer, "%s", b.trainer);
@@ -468,11 +423,11 @@ int cli_train_main(int argc, char *argv[])
         rec.fingerprint = h;
         rec.R0 = tire.springs.R0;
         snprintf(rec.data, sizeof rec.data, "%s", t.data);
-        if ((status = tirenv_nn_write_json(t.out, nn, &rec, &diag))) {
+        if ((status = tirenv_nn_write_json(o.output, nn, &rec, &diag))) {
             code = cli_fail(status, &diag);
             goto done;
         }
-        printf("  model written to %s\n", t.out);
+        printf("  model written to %s\n", o.output);
     } else {
         printf("  model not saved (no -o FILE)\n");
     }

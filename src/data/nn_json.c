@@ -31,7 +31,7 @@
 #include <jansson.h>
 
 #include "tirenv/io.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 /* The largest integer jansson holds. */
 #if JSON_INTEGER_IS_LONG_LONG
