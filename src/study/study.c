@@ -328,14 +328,16 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
     tirenv_study__findings(fp, facts);
     fprintf(fp, "## How the models were obtained\n\n"
                 "**Physical model (springs)**, identified on the training cases by nonlinear "
-                "least squares on h (%zu points, %zu iterations, %.1f s, RMS %.2f mm); standard "
-                "errors from the covariance, scaled by the residual variance:\n\n",
-            fit->n_points, fit->iterations, fit->seconds, 1e3 * fit->rms);
+                "least squares on h (%zu points, %zu iterations, stopped by %s, %.1f s, RMS "
+                "%.2f mm); standard errors from the covariance, scaled by the residual "
+                "variance:\n\n",
+            fit->n_points, fit->iterations, fit->stop, fit->seconds, 1e3 * fit->rms);
     tirenv_study__fit_table(fp, fit);
     fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (docs/models.md "
-                "section 7), identified the same way (%zu iterations, %.2f s, RMS %.2f mm); "
-                "its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay as in the tire "
-                "file:\n\n", cam_fit->iterations, cam_fit->seconds, 1e3 * cam_fit->rms);
+                "section 7), identified the same way (%zu iterations, stopped by %s, %.2f s, "
+                "RMS %.2f mm); its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay "
+                "as in the tire file:\n\n",
+            cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
     tirenv_study__fit_table(fp, cam_fit);
     tirenv_study__cam_limits(fp, facts);
     fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
