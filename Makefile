@@ -9,7 +9,8 @@ PREFIX     ?= /usr/local
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps build test test-asan demo bench python fmu install clean
+.PHONY: all deps build test test-asan demo demo-study demo-study-205 demo-ride bench python fmu \
+        install clean
 
 all: build
 
@@ -44,10 +45,19 @@ fmu: build
 # The paper's study on the embedded (simulated) data set: fit, train, compare, report; the same
 # on the second one, the 205/60R15 car tire's made by its MF-Swift cam. Then its next step,
 # the tractor ride: over a cleat at three speeds (the README's picture), and over a 1 km
-# ISO 8608 class C road at 10 km/h, point contact against the enveloping models.
+# ISO 8608 class C road at 10 km/h, point contact against the enveloping models. The two
+# studies run side by side on JOBS cores, the rides after the tractor's study (they take its
+# network); -Otarget keeps each part's lines together.
 demo: build
+	@$(MAKE) --no-print-directory -j $(JOBS) -Otarget demo-study-205 demo-ride
+
+demo-study:
 	@$(BUILD)/tirenv study -o $(DEMO_OUT)
+
+demo-study-205:
 	@$(BUILD)/tirenv study --data data/dataset-205-60R15 -o $(DEMO_205)
+
+demo-ride: demo-study
 	@$(BUILD)/tirenv ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h \
 	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --out-dir out/ride-cleat
 	@mkdir -p out/ride-road
