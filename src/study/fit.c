@@ -100,6 +100,11 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "the %s model has %zu parameters; a fit takes at most %d",
                             tirenv_model_type_name(type), c.n_params, TIRENV_FIT_MAX_PARAMS);
+    /* The start must be a tire the model takes: out of range, every residual would read as
+     * a refused step (residuals()) and the fit would report 1 m as its result. */
+    const int start_ok = tirenv_tire_check(tire, diag);
+    if (start_ok)
+        return start_ok;
     size_t n = 0, n_max = 0;
     for (size_t i = 0; i < ds->n; ++i)
         if (ds->cases[i].split == split) {
