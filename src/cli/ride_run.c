@@ -90,7 +90,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
         char warnings[1024];
         /* x_N refers to the radius of the network's data, when the file records it. */
         if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, s->x0, s->dx, s->n, in->w[axle], warnings,
+                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n, in->w[axle], warnings,
                                           sizeof warnings, &diag)))
             break;
         axle_warnings(in->name, axle, warnings);

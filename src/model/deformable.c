@@ -114,7 +114,7 @@ static int valid_range(deformable_state *st, tirenv_diag *diag)
 /* A failure on flat ground has no position to name; the load is what the user gave. */
 static int on_flat_ground(double load, int status, tirenv_diag *diag)
 {
-    if (status && diag) {
+    if (status && status != TIRENV_ENOBRACKET && diag) {  /* that one names the load */
         char msg[sizeof diag->message];
         snprintf(msg, sizeof msg, "on flat ground at load %.6g N: %.440s", load, diag->message);
         memcpy(diag->message, msg, sizeof msg);
