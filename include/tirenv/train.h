@@ -153,8 +153,9 @@ tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
 /* Trains a network of settings->topology on train, early-stopping on control (if it is empty,
  * on train), and reports errors on all three (validation may be NULL or empty). Scaling and
  * input ranges come from train only. *out is the kept network (free it with tirenv_nn_free);
- * report may be NULL. GSL would abort on a singular matrix unless the program has turned its
- * error handler off (error.h).
+ * report may be NULL. TIRENV_ENOCONV (and *out NULL) if the kept restart diverged, its error
+ * no longer finite (docs/models.md section 6.4). GSL would abort on a singular matrix unless
+ * the program has turned its error handler off (error.h).
  * Deterministic: the same arguments give the same weights bit for bit. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,

@@ -364,6 +364,22 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             rep.stop = stop;
         }
     }
+    /* The kept restart's error became infinite or NaN: the weights of least control error it
+     * had before are not a trained model, and handing them back as one (exit 0, a model file
+     * of barely moved initial weights) was the fault. An error, saying what to change. */
+    if (rep.stop == TIRENV_TRAIN_DIVERGED) {
+        run_free(type, &r);
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "training",
+                            "the %s training diverged: restart %zu's error was no longer finite "
+                            "after %zu epochs (least control error at epoch %zu); %s%.3g%s",
+                            type->name, rep.restart + 1, rep.epochs, rep.best_epoch,
+                            type == tirenv_trainer_backprop ? "lower the learning rate (now "
+                                                            : "another seed or trainer may "
+                                                              "train (seed ",
+                            type == tirenv_trainer_backprop ? s->backprop.learning_rate
+                                                            : (double)s->seed,
+                            ")");
+    }
     rep.wall_time = tirenv_core__wall_seconds() - t_start;
     rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(r.best, train);
     rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(r.best, control);
