@@ -77,6 +77,12 @@ static void summary(const char *log, const tirenv_import_info *in, const tirenv_
             log, in->n_samples, in->n_repeated, in->reversed ? "-" : "+", in->sigma * 1e3,
             in->baseline, in->centre, in->x_0, in->half_width * 1e3, in->noise_se * 1e3,
             peak * 1e3);
+    if (in->width_capped)
+        fprintf(stderr,
+                "tirenv: import: warning: %s: the smoothing half-width stopped at its cap, "
+                "%.3g mm (5 %% of |x_0|, which keeps the curve's shape): the noise leaves a "
+                "standard error of %.2g mm on h against the %.2g mm aimed at\n",
+                log, in->half_width * 1e3, in->noise_se * 1e3, in->target_se * 1e3);
 }
 
 int cli_import_main(int argc, char *argv[])

@@ -50,9 +50,11 @@ static double patch_minus_target(double z, void *p)
 }
 
 /* The patch grows continuously as the centre comes down (its edges are interpolated) down to
- * the lowest height of the valid range, where it is longest (ring_lowest_z), so Brent on
- * [z_lo, R0] finds the height; 1e-12 m is far below any patch length's meaning and Brent
- * needs about 40 iterations for it from a 0.4 m bracket, so 200 is only a guard. */
+ * the lowest height of the valid range, z_lo, where it is longest (ring_lowest_z), so Brent
+ * finds the height: on [R0/2, R0] when the patch at R0/2 is long enough (every contact length
+ * up to 0.69 m for the default tire: the bracket of old, so the data set's loads keep their
+ * bits), else on [z_lo, R0/2]. 1e-12 m is far below any patch length's meaning and Brent
+ * needs about 40 iterations for it from a 0.34 m bracket, so 200 is only a guard. */
 enum { PATCH_MAX_ITER = 200 };
 static const double patch_z_tol = 1e-12; /* m */
 static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
@@ -60,7 +62,11 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
 {
     patch_ctx ctx = {elem, flat, l_c, 0, diag};
     gsl_function fn = {patch_minus_target, &ctx};
-    double hi = tirenv_ring_free_radius(elem), lo = z_lo;
+    double hi = tirenv_ring_free_radius(elem), lo = fmax(z_lo, 0.5 * hi);
+    if (lo > z_lo && patch_minus_target(lo, &ctx) < 0 && !ctx.status) {
+        hi = lo;
+        lo = z_lo;
+    }
     if (patch_minus_target(lo, &ctx) < 0 || ctx.status)
         return ctx.status ? ctx.status
                           : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
