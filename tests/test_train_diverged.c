@@ -29,8 +29,10 @@ static int train(double learning_rate, tirenv_nn **nn, tirenv_train_report *rep,
     static double x[2][N * 4], y[2][N];
     samples(x[0], y[0], 0);
     samples(x[1], y[1], N);
-    const tirenv_samples tr = {N, 4, x[0], y[0]}, co = {N, 4, x[1], y[1]};
-    tirenv_train_settings s = tirenv_train_default(tirenv_trainer_backprop);
+    const tirenv_samples tr = {.n = N, .n_in = 4, .x = x[0], .y = y[0]};
+    const tirenv_samples co = {.n = N, .n_in = 4, .x = x[1], .y = y[1]};
+    /* The paper's setup: a loss over points, which ungrouped samples allow. */
+    tirenv_train_settings s = tirenv_train_paper(tirenv_trainer_backprop);
     s.max_epochs = 30;
     s.backprop.learning_rate = learning_rate;
     tirenv_diag_clear(diag);
