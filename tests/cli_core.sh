@@ -106,7 +106,7 @@ check "rig --model nn (rig takes no network): exit 1 saying so, no file" \
     '[ $rc -eq 1 ] && grep -q "does not take" err && no_file log.csv'
 run "$bin" fit --model point --data "$data/dataset_good"
 check "fit --model point: exit 1 listing the models that can be fitted" \
-    '[ $rc -eq 1 ] && grep -q "springs cam" err'
+    '[ $rc -eq 1 ] && grep -q "springs ring cam" err'
 run "$bin" flat --model point --load 10000 --csv
 check "flat --model point: no deflection, no contact length" \
     '[ $rc -eq 0 ] && [ "$(sed -n 2p out | cut -d, -f3,4)" = 0,0 ]'

@@ -155,6 +155,13 @@ const char *cli_data_path(const char *rel, char *buf, size_t n);
 /* The tire file in use: --tire, else tires/default.tir in the data directory. */
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 
+/* What the data set in dir says about its source (its source.txt, tirenv_dataset_source):
+ * into *src, and when --tire is not given and it names the tire that simulated the data,
+ * that tire becomes the tire file (o->tire_path, kept in buf). Prints and returns an exit code
+ * for a malformed source.txt. */
+int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
+                    size_t n);
+
 /* Reads the tire file, applies --set in order and --method, and checks the result.
  * Returns an exit code after printing any error. */
 int cli_tire(const cli_options *o, tirenv_tire *tire);

@@ -32,8 +32,10 @@ static void usage(FILE *fp)
           "options:\n"
           "  --data DIR           data set (a directory with cases.csv); default: the\n"
           "                       embedded one, dataset in the data directory ($TIRENV_DATA,\n"
-          "                       else the installed data; 'tirenv --help'),\n"
-          "                       whose data are simulated by the ring reference tire\n"
+          "                       else the installed data; 'tirenv --help'). When its\n"
+          "                       source.txt names the model that simulated it (tirenv\n"
+          "                       dataset build), that model is compared as the reference\n"
+          "                       and its tire is the default --tire\n"
           "  --nn MODEL.json      the trained network (tirenv train); without it the\n"
           "                       network is left out\n"
           "  --cases LIST         comma-separated case names, e.g. F,J,R\n"
@@ -227,13 +229,18 @@ int cli_compare_main(int argc, char *argv[])
         free(co.case_list);
         return code;
     }
-    char data_buf[1024], tire_buf[1024];
-    if (!co.data) {
-        /* The embedded data set, simulated on the ring reference tire
-         * (docs/models.md section 5). */
+    char data_buf[1024], tire_buf[1024], src_tire[1024];
+    if (!co.data)
         co.data = cli_data_path("dataset", data_buf, sizeof data_buf);
-        if (!co.s.simulated_by)
-            co.s.simulated_by = tirenv_model_ring;
+    /* What simulated the data, with which tire, if the data set says (its source.txt, as
+     * tirenv dataset build writes it for the embedded sets). */
+    tirenv_dataset_source src;
+    if ((code = cli_data_source(co.data, &o, &src, src_tire, sizeof src_tire))) {
+        free(co.case_list);
+        return code;
+    }
+    if (src.model[0] && !co.s.simulated_by && !co.s.simulated) {
+        co.s.simulated_by = tirenv_model_type_find(src.model);
         co.s.simulated = 1;
     }
     co.s.data_label = co.data;

@@ -3,11 +3,13 @@
  * file says which keys a tire has and where they go.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "data/propfile.h"
+#include "data/tir_impl.h"
 #include "tirenv/io.h"
 #include "tirenv/tirenv.h"
 
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The engine stores a NAME as an int. */
 _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must be int-sized");
@@ -151,4 +153,27 @@ int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag)
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag)
 {
     return tirenv_propfile__write(&tir_schema, path, tire, diag);
+}
+
+/* The header names no tirenv version, so that a data set's tire.tir stays the same bytes
+ * from one version to the next as long as the tire does. */
+int tirenv_tir__write_noted(const char *path, const tirenv_tire *tire, const char *note,
+                            tirenv_diag *diag)
+{
+    char header[2048];
+    size_t n = (size_t)snprintf(header, sizeof header,
+                                "[MDI_HEADER]\n"
+                                "FILE_TYPE                = 'tir'\n"
+                                "FILE_VERSION             = 3.0\n"
+                                "FILE_FORMAT              = 'ASCII'\n");
+    /* Each line of the note as a '!' comment line. */
+    for (const char *p = note; p && *p && n < sizeof header;) {
+        const char *end = strchr(p, '\n');
+        const size_t len = end ? (size_t)(end - p) : strlen(p);
+        n += (size_t)snprintf(header + n, sizeof header - n, "! %.*s\n", (int)len, p);
+        p = end ? end + 1 : p + len;
+    }
+    if (n >= sizeof header)
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "the note is too long");
+    return tirenv_propfile__write_headed(&tir_schema, path, tire, header, diag);
 }

@@ -49,9 +49,11 @@ static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
     set_params(c, p);
     tirenv_model *m = tirenv_model_alloc(c->type, &c->tire);
     if (!m) {
-        c->status = tirenv_error(c->diag, TIRENV_EINVAL, "", 0, "fit",
-                                 "parameters left the physical range");
-        return GSL_EDOM;
+        /* A trial step out of the physical range (the ring's belt buckling on its
+         * foundation, say) is a step the trust region must refuse, not the end of the fit:
+         * a residual of 1 m at every point is worse than any curve of the model. */
+        gsl_vector_set_all(r, 1.0);
+        return GSL_SUCCESS;
     }
     size_t k = 0;
     for (size_t i = 0; i < c->ds->n; ++i) {
@@ -98,6 +100,11 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "the %s model has %zu parameters; a fit takes at most %d",
                             tirenv_model_type_name(type), c.n_params, TIRENV_FIT_MAX_PARAMS);
+    /* The start must be a tire the model takes: out of range, every residual would read as
+     * a refused step (residuals()) and the fit would report 1 m as its result. */
+    const int start_ok = tirenv_tire_check(tire, diag);
+    if (start_ok)
+        return start_ok;
     size_t n = 0, n_max = 0;
     for (size_t i = 0; i < ds->n; ++i)
         if (ds->cases[i].split == split) {

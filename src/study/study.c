@@ -17,7 +17,8 @@ tirenv_study_settings tirenv_study_default(void)
     return (tirenv_study_settings){.data_dir = NULL, .data_label = NULL, .out_dir = "out/study",
                                    .tire = tirenv_tire_default(), .tire_label = NULL,
                                    .trainer = "lm", .seed = 1, .seeds = 20,
-                                   .input = TIRENV_NN_INPUT_EVEN, .simulated_by_ring = 1,
+                                   .input = TIRENV_NN_INPUT_EVEN,
+                                   .simulated_by = tirenv_model_ring,
                                    .images = 1, .progress = NULL, .progress_ctx = NULL};
 }
 
@@ -182,18 +183,72 @@ static double load_at(const tirenv_dataset *ds, double l_c)
     return lo_G + (hi_G - lo_G) * (l_c - lo_l) / (hi_l - lo_l);
 }
 
-/* A grid of cleats over the data set's ranges, every fifth one for early stopping. */
-static const double grid_l_c[] = {0.28, 0.33, 0.38, 0.43};
-static const double grid_L[] = {0.05, 0.10, 0.15, 0.20, 0.25, 0.30};
-static const double grid_H[] = {0.025, 0.05, 0.075, 0.10};
-enum { N_GRID = 4 * 6 * 4 };
+/* A grid of cleats over the data set's ranges, every fifth one for early stopping: the data
+ * set's contact lengths (GRID_LC evenly from the shortest to the longest if it has more), and
+ * GRID_L lengths and GRID_H heights evenly over its ranges; for the tractor set 4 x 6 x 4 =
+ * 96 cleats, 0.28-0.43 m, 0.05-0.30 m, 0.025-0.10 m. Values are rounded to the micrometre, so
+ * that 0.15 m is the double that reads as 0.15. */
+enum { GRID_LC = 6, GRID_L = 6, GRID_H = 4, GRID_MAX = GRID_LC * GRID_L * GRID_H };
+
+typedef struct {
+    double l_c[GRID_LC], L[GRID_L], H[GRID_H];
+    size_t n_l_c;
+    double L_min, L_max, H_min, H_max;  /* the data set's ranges, m */
+} grid_design;
+
+static double micrometres(double v) { return round(v * 1e6) / 1e6; }
+
+static void even(double lo, double hi, size_t n, double out[])
+{
+    for (size_t k = 0; k < n; ++k)
+        out[k] = micrometres(n > 1 ? lo + (hi - lo) * (double)k / (double)(n - 1) : lo);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static void grid_of(const tirenv_dataset *ds, grid_design *g)
+{
+    double l_c[GRID_LC + 1];
+    size_t n = 0;
+    double lc_min = INFINITY, lc_max = -INFINITY;
+    g->L_min = g->H_min = INFINITY;
+    g->L_max = g->H_max = -INFINITY;
+    for (size_t i = 0; i < ds->n; ++i) {
+        const tirenv_case *c = &ds->cases[i];
+        lc_min = fmin(lc_min, c->contact_length);
+        lc_max = fmax(lc_max, c->contact_length);
+        g->L_min = fmin(g->L_min, c->L);
+        g->L_max = fmax(g->L_max, c->L);
+        g->H_min = fmin(g->H_min, c->H);
+        g->H_max = fmax(g->H_max, c->H);
+        size_t k = 0;
+        while (k < n && l_c[k] != c->contact_length)
+            ++k;
+        if (k == n && n <= GRID_LC)
+            l_c[n++] = c->contact_length;
+    }
+    if (n > GRID_LC) {
+        even(lc_min, lc_max, GRID_LC, g->l_c);
+        g->n_l_c = GRID_LC;
+    } else {
+        qsort(l_c, n, sizeof l_c[0], by_value);
+        memcpy(g->l_c, l_c, n * sizeof l_c[0]);
+        g->n_l_c = n;
+    }
+    even(g->L_min, g->L_max, GRID_L, g->L);
+    even(g->H_min, g->H_max, GRID_H, g->H);
+}
 
 static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted,
-                            tirenv_dataset *out, tirenv_diag *diag)
+                            const grid_design *g, tirenv_dataset *out, tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
     const tirenv_curve *grid = &real->cases[0].curve; /* the data set's x_N grid */
-    out->cases = calloc(N_GRID, sizeof *out->cases);
+    out->cases = calloc(GRID_MAX, sizeof *out->cases);
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, fitted);
     if (!out->cases || !m) {
         tirenv_model_free(m);
@@ -201,15 +256,15 @@ static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitte
     }
     snprintf(out->dir, sizeof out->dir, "(springs model curves)");
     int status = TIRENV_OK;
-    for (size_t a = 0; a < 4 && !status; ++a)
-        for (size_t b = 0; b < 6 && !status; ++b)
-            for (size_t c = 0; c < 4 && !status; ++c) {
+    for (size_t a = 0; a < g->n_l_c && !status; ++a)
+        for (size_t b = 0; b < GRID_L && !status; ++b)
+            for (size_t c = 0; c < GRID_H && !status; ++c) {
                 tirenv_case *cs = &out->cases[out->n];
                 snprintf(cs->name, sizeof cs->name, "g%zu", out->n);
                 cs->split = out->n % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
-                cs->contact_length = grid_l_c[a];
-                cs->L = grid_L[b];
-                cs->H = grid_H[c];
+                cs->contact_length = g->l_c[a];
+                cs->L = g->L[b];
+                cs->H = g->H[c];
                 cs->load = load_at(real, cs->contact_length);
                 ++out->n;
                 if ((status = tirenv_curve_alloc(&cs->curve, grid->n)))
@@ -228,13 +283,29 @@ static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitte
 
 /* ---- obstacles outside the training grid -------------------------------------------------- */
 
+/* A size from the data set's ranges: f_max times its largest plus f_min times its smallest
+ * obstacle length (of 'L') or height (of 'H'). */
+typedef struct {
+    char of;
+    double f_max, f_min;
+} size_rule;
+
 typedef struct {
     const char *name;
-    double l_c;
-    double L, H;                   /* extent: for x_N and the network */
+    size_t l_c;                    /* which of the data set's contact lengths (0-based) */
+    size_rule L, H;                /* extent: for x_N and the network */
     tirenv_profile *(*make)(const double arg[3]);
-    double arg[3];
+    size_rule arg[3];              /* the generator's arguments */
 } outside_design;
+
+static double size_of(const size_rule *r, const grid_design *g)
+{
+    if (r->of == 'H')
+        return micrometres(r->f_max * g->H_max + r->f_min * g->H_min);
+    if (r->of == 'L')
+        return micrometres(r->f_max * g->L_max + r->f_min * g->L_min);
+    return 0;
+}
 
 static tirenv_profile *make_cleat(const double a[3]) { return tirenv_profile_cleat(a[0], a[1]); }
 static tirenv_profile *make_cylinder(const double a[3])
@@ -247,25 +318,33 @@ static tirenv_profile *make_trapezoid(const double a[3])
 }
 
 /* Taller and shorter than any training cleat, and two shapes the network never saw (given to
- * it as their bounding rectangle, as a user would). */
+ * it as their bounding rectangle, as a user would), sized by the data set's ranges: factors of
+ * its tallest cleat and of its longest and shortest lengths. For the tractor set (heights up to
+ * 0.10 m, lengths 0.05-0.30 m): a 0.15 x 0.15 m cleat, a 0.03 x 0.05 m one, a half-cylinder
+ * of radius 0.08 m and a trapezoid 0.10 / 0.25 m by 0.08 m. The contact lengths are the data
+ * set's second and third shortest (the longest if it has fewer). */
 static const outside_design outside[] = {
-    {"tall", 0.33, 0.15, 0.15, make_cleat, {0.15, 0.15, 0}},
-    {"short", 0.38, 0.03, 0.05, make_cleat, {0.03, 0.05, 0}},
-    {"cylinder", 0.33, 0.16, 0.08, make_cylinder, {0.08, 0, 0}},
-    {"trapezoid", 0.38, 0.25, 0.08, make_trapezoid, {0.10, 0.25, 0.08}},
+    {"tall", 1, {'L', 0.5, 0}, {'H', 1.5, 0}, make_cleat, {{'L', 0.5, 0}, {'H', 1.5, 0}}},
+    {"short", 2, {'L', 0, 0.6}, {'H', 0.5, 0}, make_cleat, {{'L', 0, 0.6}, {'H', 0.5, 0}}},
+    {"cylinder", 1, {'H', 1.6, 0}, {'H', 0.8, 0}, make_cylinder, {{'H', 0.8, 0}}},
+    {"trapezoid", 2, {'L', 5.0 / 6.0, 0}, {'H', 0.8, 0}, make_trapezoid,
+     {{'L', 1.0 / 3.0, 0}, {'L', 5.0 / 6.0, 0}, {'H', 0.8, 0}}},
 };
 enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
-/* The reference curves: the ring tire on the virtual rig, imported like the data set's. */
-static int outside_dataset(const tirenv_tire *tire, tirenv_dataset *out,
+/* The reference curves: the model that simulated the data set (the ring for measured data)
+ * on the virtual rig, imported like the data set's. */
+static int outside_dataset(const tirenv_tire *tire, const tirenv_model_type *reference,
+                           const grid_design *g, tirenv_dataset *out,
                            tirenv_profile *profiles[N_OUTSIDE], tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    snprintf(out->dir, sizeof out->dir, "(virtual rig, ring tire)");
+    snprintf(out->dir, sizeof out->dir, "(virtual rig, %s model)",
+             tirenv_model_type_name(reference));
     out->cases = calloc(N_OUTSIDE, sizeof *out->cases);
-    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
-    if (!out->cases || !ring) {
-        tirenv_model_free(ring);
+    tirenv_model *ref = tirenv_model_alloc(reference, tire);
+    if (!out->cases || !ref) {
+        tirenv_model_free(ref);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     }
     int status = TIRENV_OK;
@@ -274,33 +353,35 @@ static int outside_dataset(const tirenv_tire *tire, tirenv_dataset *out,
         tirenv_case *cs = &out->cases[out->n++];
         snprintf(cs->name, sizeof cs->name, "%s", d->name);
         cs->split = TIRENV_SPLIT_VALIDATION;
-        cs->contact_length = d->l_c;
-        cs->L = d->L;
-        cs->H = d->H;
-        cs->profile = profiles[i] = d->make(d->arg);
+        cs->contact_length = g->l_c[d->l_c < g->n_l_c ? d->l_c : g->n_l_c - 1];
+        const double arg[3] = {size_of(&d->arg[0], g), size_of(&d->arg[1], g),
+                               size_of(&d->arg[2], g)};
+        cs->L = size_of(&d->L, g);
+        cs->H = size_of(&d->H, g);
+        cs->profile = profiles[i] = d->make(arg);
         if (!profiles[i]) {
             status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
             break;
         }
-        status = tirenv_model_load_for_contact_length(ring, d->l_c, &cs->load, diag);
+        status = tirenv_model_load_for_contact_length(ref, cs->contact_length, &cs->load, diag);
         if (!status)
-            status = tirenv_model_set(ring, profiles[i], cs->load, diag);
+            status = tirenv_model_set(ref, profiles[i], cs->load, diag);
         tirenv_rig_settings rig = tirenv_rig_default();
         rig.seed = 777 + i;
         tirenv_rig_log log = {0};
         if (!status)
-            status = tirenv_rig_simulate(ring, profiles[i], &rig, &log, diag);
+            status = tirenv_rig_simulate(ref, profiles[i], &rig, &log, diag);
         tirenv_import_settings imp = tirenv_import_default();
-        imp.L = d->L;
-        imp.H = d->H;
+        imp.L = cs->L;
+        imp.H = cs->H;
         imp.R0 = tire->springs.R0;
-        imp.contact_length = d->l_c;
+        imp.contact_length = cs->contact_length;
         if (!status)
             status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve,
                                                diag);
         tirenv_rig_log_free(&log);
     }
-    tirenv_model_free(ring);
+    tirenv_model_free(ref);
     return status;
 }
 
@@ -313,7 +394,10 @@ static void append_model_means(FILE *fp, const tirenv_compare_result *r)
                 1e3 * tirenv_compare__mean_rms(r, m, NULL));
 }
 
-static char *study_notes(const tirenv_study_settings *s, const tirenv_study__facts *facts,
+/* facts->cam_fit is NULL when the cam simulated the data (it is then the reference, not
+ * fitted). */
+static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
+                         const tirenv_study__facts *facts,
                          const tirenv_train_report *nn, const tirenv_train_report *nn_phys,
                          const tirenv_compare_result *phys, const tirenv_compare_result *out_r,
                          const tirenv_dataset *outside_ds)
@@ -333,14 +417,20 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
                 "variance:\n\n",
             fit->n_points, fit->iterations, fit->stop, fit->seconds, 1e3 * fit->rms);
     tirenv_study__fit_table(fp, fit);
-    fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (docs/models.md "
-                "section 7), identified the same way (%zu iterations, stopped by %s, %.2f s, "
-                "RMS %.2f mm); its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay "
-                "as in the tire file:\n\n",
-            cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
-    tirenv_study__fit_table(fp, cam_fit);
-    tirenv_study__cam_limits(fp, facts);
-    fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
+    if (cam_fit) {
+        fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model "
+                    "(docs/models.md section 7), identified the same way (%zu iterations, "
+                    "stopped by %s, %.2f s, RMS %.2f mm); its contact-length keys (Q_RA1, "
+                    "Q_RA2, VERTICAL_STIFFNESS) stay as in the tire file:\n\n",
+                cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
+        tirenv_study__fit_table(fp, cam_fit);
+        tirenv_study__cam_limits(fp, facts);
+        fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
+    } else {
+        fprintf(fp, "\n**Tandem elliptical cam (cam)**: it simulated the data, so it is the "
+                    "reference, run with the data set's tire as it is, not fitted. The fitted "
+                    "tire is in `fitted.tir`.\n\n");
+    }
     tirenv_train_settings ts = tirenv_train_default(tirenv_trainer_type_find(s->trainer));
     ts.input = s->input;
     size_t n_train = 0;
@@ -365,14 +455,15 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
             1e3 * nn->error[0].rms, 1e3 * nn->error[1].rms, 1e3 * nn->error[2].rms);
     fprintf(fp, "## The paper's proposed workflow: a network trained on the physical model\n\n"
                 "The paper proposes to train the network on curves of the physical model "
-                "instead of rig runs. Here: %d curves of the identified springs model over a "
-                "grid of cleats (lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact "
-                "lengths 0.28 to 0.43 m, loads read off the data set), no rig time, one seed "
+                "instead of rig runs. Here: %zu curves of the identified springs model over a "
+                "grid of cleats (lengths %.3g to %.3g m, heights %.3g to %.3g m, contact "
+                "lengths %.3g to %.3g m, loads read off the data set), no rig time, one seed "
                 "(%lu). Trained in %.2f s; its validation error (the mean over the measured "
                 "validation cases of each case's RMS) is %.2f mm, against a median of %.2f mm "
                 "over the seeds of the network trained on the measurements. Mean RMS over the "
                 "validation cases: ",
-            N_GRID, s->seed, nn_phys->wall_time,
+            g->n_l_c * GRID_L * GRID_H, g->L_min, g->L_max, g->H_min, g->H_max, g->l_c[0],
+            g->l_c[g->n_l_c - 1], s->seed, nn_phys->wall_time,
             phys->nn_model >= 0 ? 1e3 * tirenv_compare__mean_rms(phys, (size_t)phys->nn_model,
                                                                  NULL)
                                 : NAN,
@@ -381,7 +472,8 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
     fprintf(fp, "## Outside the training range\n\n"
                 "Obstacles no training case resembles, with reference curves from the same "
-                "virtual rig (ring tire, SIMULATED): ");
+                "virtual rig (%s model, SIMULATED): ",
+            tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring));
     for (size_t i = 0; i < outside_ds->n; ++i) {
         const tirenv_case *c = &outside_ds->cases[i];
         fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
@@ -436,9 +528,9 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     cs.images = s->images;
     cs.tire_label = "fitted.tir (identified on the training cases)";
     cs.data_label = data_label(s);
-    if (s->simulated_by_ring) {
+    if (s->simulated_by) {
         cs.simulated = 1;
-        cs.simulated_by = tirenv_model_ring;
+        cs.simulated_by = s->simulated_by;
     }
     return cs;
 }
@@ -465,10 +557,12 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     fs.type = tirenv_model_springs;
     if (!status)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &fit, diag);
-    /* The cam's keys live in their own part of the tire, so both fits share one file. */
+    /* The cam's keys live in their own part of the tire, so both fits share one file. A cam
+     * that simulated the data is the reference: it keeps the data set's values. */
     tirenv_fit_report cam_fit;
+    const int fit_cam = s->simulated_by != tirenv_model_cam;
     fs.type = tirenv_model_cam;
-    if (!status)
+    if (!status && fit_cam)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &cam_fit, diag);
     snprintf(path, sizeof path, "%s/fitted.tir", s->out_dir);
     if (!status)
@@ -483,8 +577,11 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
         status = tirenv_compare(&ds, &tire, nn, &cs, &main_r, diag);
 
     progress(s, "the paper's workflow: a network on physical-model curves", 4);
+    grid_design grid = {0};
     if (!status)
-        status = physical_dataset(&ds, &tire, &phys_ds, diag);
+        grid_of(&ds, &grid);
+    if (!status)
+        status = physical_dataset(&ds, &tire, &grid, &phys_ds, diag);
     snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
     if (!status)
         status = train_network(s, &phys_ds, &ds, path, &nn_phys, &phys_rep, diag);
@@ -498,13 +595,14 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
         status = tirenv_compare_report(&ds, &ps, &phys_r, NULL, diag);
 
     progress(s, "obstacles outside the training range", 5);
+    const tirenv_model_type *reference = s->simulated_by ? s->simulated_by : tirenv_model_ring;
     if (!status)
-        status = outside_dataset(&s->tire, &out_ds, profiles, diag);
+        status = outside_dataset(&s->tire, reference, &grid, &out_ds, profiles, diag);
     snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
     tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
                                                   "range");
     os.simulated = 1;
-    os.simulated_by = tirenv_model_ring;
+    os.simulated_by = reference;
     os.data_label = "taller, shorter and other shapes on the virtual rig";
     if (!status)
         status = tirenv_compare(&out_ds, &tire, nn, &os, &out_r, diag);
@@ -514,9 +612,11 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     progress(s, "writing the report", 6);
     const tirenv_study__facts facts = {.ds = &ds, .main = &main_r, .main_settings = &cs,
                                        .seeds = &seeds, .springs_fit = &fit,
-                                       .cam_fit = &cam_fit, .R0 = tire.springs.R0};
+                                       .cam_fit = fit_cam ? &cam_fit : NULL,
+                                       .R0 = tire.springs.R0};
     if (!status &&
-        !(notes = study_notes(s, &facts, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
+        !(notes = study_notes(s, &grid, &facts, &nn_rep, &phys_rep, &phys_r, &out_r,
+                              &out_ds)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     if (!status)
         status = tirenv_compare_report(&ds, &cs, &main_r, notes, diag);
