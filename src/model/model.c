@@ -144,12 +144,7 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
         return status;
     m->have_l_c = 1;
     m->l_c = l_c;
-    tirenv_model__tracks_free(m);
-    if (m->n_tracks > 1) {
-        m->n_tracks = 0;
-        m->ready = 0;
-    }
-    return TIRENV_OK;
+    return tirenv_model__tracks_contact_length(m, l_c, diag);
 }
 
 /* The enveloping models assume the centre clears the ground it rolls over. */

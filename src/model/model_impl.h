@@ -78,6 +78,8 @@ int tirenv_model__check_ground(const tirenv_model *m, const tirenv_profile *p,
 
 /* tracks.c: the driver's hooks for several tracks (m->n_tracks > 1). */
 void tirenv_model__tracks_free(tirenv_model *m);  /* and m->tracks = NULL */
+/* The contact length just given to the first track's state, given to the others too. */
+int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag *diag);
 int tirenv_model__tracks_eval(tirenv_model *m, double x, tirenv_point *out,
                               tirenv_diag *diag);
 int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],

@@ -82,6 +82,18 @@ void tirenv_model__tracks_free(tirenv_model *m)
     m->tracks = NULL;
 }
 
+int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag *diag)
+{
+    struct tirenv_model__tracks *t = m->tracks;
+    for (size_t k = 1; t && k < t->cap; ++k) {
+        double load;
+        const int status = m->type->load_for_contact_length(t->state[k], l_c, &load, diag);
+        if (status)
+            return status;
+    }
+    return TIRENV_OK;
+}
+
 /* Room for n given profiles (and so at most n distinct tracks) in the arrays. */
 static int tracks_arrays(tirenv_model *m, size_t n, tirenv_diag *diag)
 {

@@ -1,0 +1,109 @@
+/* The network over several tracks (tracks.h, docs/models.md section 13) after a contact
+ * length was made into a load (tirenv_model_load_for_contact_length): every track's state
+ * gets the contact length, those made before it as well as after, so each track reaches the
+ * network at exactly that l_c; the set in place stays in place, as with one track.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "testutil.h"
+#include "tirenv/tirenv.h"
+#include "tirenv/nn.h"
+
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+
+/* A 4-8-1 network with seeded weights scaled to plausible inputs: no model of a tire, but a
+ * network as the model type sees it. */
+static tirenv_nn *seeded_network(void)
+{
+    tirenv_nn_topology t = tirenv_nn_topology_default();
+    tirenv_nn *nn = tirenv_nn_alloc(&t);
+    assert_non_null(nn);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 977);
+    tirenv_nn_init_weights(nn, rng);
+    enum { N = 61 };
+    double x[N * TIRENV_NN_INPUTS], y[N];
+    for (size_t k = 0; k < N; ++k) {
+        double *u = x + k * TIRENV_NN_INPUTS;
+        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
+        y[k] = 0.04 * gsl_rng_uniform(rng);
+    }
+    tirenv_diag d;
+    assert_int_equal(tirenv_nn_fit_scaling(nn, N, x, y, &d), TIRENV_OK);
+    gsl_rng_free(rng);
+    return nn;
+}
+
+static void test_contact_length_reaches_every_track(void **state)
+{
+    (void)state;
+    const tirenv_tire tire = tirenv_tire_default();
+    const double R0 = tire.springs.R0, l_c = 0.3313, L = 0.1873, H = 0.0617;
+    enum { N = 301 };
+    static double x[N], h[N];
+    static tirenv_point before[N], pt[N];
+    for (size_t k = 0; k < N; ++k)
+        x[k] = -0.6 + 0.004 * (double)k;
+    tirenv_nn *nn = seeded_network();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &tire);
+    assert_non_null(m);
+    tirenv_diag d;
+    assert_int_equal(tirenv_model_set_network(m, nn, 0, &d), TIRENV_OK);
+    /* Two tracks of the same cleat in separate objects: two states, the mean of equal
+     * points (weights 1/2, exact). */
+    tirenv_profile *a = tirenv_profile_cleat(L, H), *b = tirenv_profile_cleat(L, H);
+    const tirenv_profile *two[2] = {a, b};
+    const double load_0 = 11903.6;  /* N: a regime before the contact length is given */
+    assert_int_equal(tirenv_model_set_tracks(m, 2, two, NULL, load_0, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_tracks(m), 2);
+    assert_int_equal(tirenv_model_envelope(m, N, x, before, NULL, &d), TIRENV_OK);
+
+    double load;
+    assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
+    /* The set in place is untouched. */
+    assert_int_equal(tirenv_model_tracks(m), 2);
+    assert_int_equal(tirenv_model_envelope(m, N, x, pt, NULL, &d), TIRENV_OK);
+    for (size_t k = 0; k < N; ++k)
+        assert_bits_equal(pt[k].h, before[k].h);
+
+    /* Set again at that load: both tracks see l_c exactly, so the mean is the paper's curve
+     * at l_c bit for bit (a load turned back into l_c by the springs would differ in the
+     * last bits, and the network's output with it). */
+    assert_int_equal(tirenv_model_set_tracks(m, 2, two, NULL, load, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_tracks(m), 2);
+    assert_int_equal(tirenv_model_envelope(m, N, x, pt, NULL, &d), TIRENV_OK);
+    assert_int_equal(tirenv_nn_envelope(nn, R0, l_c, L, H, N, x, h, &d), TIRENV_OK);
+    size_t raised = 0;
+    for (size_t k = 0; k < N; ++k) {
+        assert_bits_equal(pt[k].h, h[k]);
+        raised += h[k] > 1e-4;
+    }
+    assert_true(raised > N / 10);
+
+    /* A third track made after the contact length was given gets it too. */
+    tirenv_profile *c = tirenv_profile_cleat(L, H);
+    const tirenv_profile *three[3] = {a, b, c};
+    const double w[3] = {0.25, 0.5, 0.25};
+    assert_int_equal(tirenv_model_set_tracks(m, 3, three, w, load, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_tracks(m), 3);
+    assert_int_equal(tirenv_model_envelope(m, N, x, pt, NULL, &d), TIRENV_OK);
+    for (size_t k = 0; k < N; ++k)
+        assert_bits_equal(pt[k].h, h[k]);
+
+    tirenv_model_free(m);
+    tirenv_nn_free(nn);
+    tirenv_profile_free(a);
+    tirenv_profile_free(b);
+    tirenv_profile_free(c);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_contact_length_reaches_every_track),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
