@@ -1,7 +1,8 @@
 /* The network over several tracks (tracks.h, docs/models.md section 13) after a contact
  * length was made into a load (tirenv_model_load_for_contact_length): every track's state
  * gets the contact length, those made before it as well as after, so each track reaches the
- * network at exactly that l_c; the set in place stays in place, as with one track.
+ * network at exactly that l_c; the set in place stays in place, as with one track. And the
+ * permission to extrapolate (tirenv_model_set_extrapolate) reaches every track's state too.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
@@ -56,7 +57,7 @@ static void test_contact_length_reaches_every_track(void **state)
      * points (weights 1/2, exact). */
     tirenv_profile *a = tirenv_profile_cleat(L, H), *b = tirenv_profile_cleat(L, H);
     const tirenv_profile *two[2] = {a, b};
-    const double load_0 = 11903.6;  /* N: a regime before the contact length is given */
+    const double load_0 = 8000;  /* N: a trained regime before the contact length is given */
     assert_int_equal(tirenv_model_set_tracks(m, 2, two, NULL, load_0, &d), TIRENV_OK);
     assert_int_equal(tirenv_model_tracks(m), 2);
     assert_int_equal(tirenv_model_envelope(m, N, x, before, NULL, &d), TIRENV_OK);
@@ -100,10 +101,56 @@ static void test_contact_length_reaches_every_track(void **state)
     tirenv_profile_free(c);
 }
 
+/* A cleat far higher than the network saw (0.2 m against at most 0.1 m) on two tracks: refused
+ * by default; allowed, whether given before the tracks' states exist or after; refused again
+ * when withdrawn; the allowed mean equals one track's curve. */
+static void test_extrapolate_reaches_every_track(void **state)
+{
+    (void)state;
+    const tirenv_tire tire = tirenv_tire_default();
+    const double l_c = 0.3313, L = 0.1873, H = 0.2;
+    enum { N = 201 };
+    static double x[N];
+    static tirenv_point one[N], pt[N];
+    for (size_t k = 0; k < N; ++k)
+        x[k] = -0.6 + 0.006 * (double)k;
+    tirenv_nn *nn = seeded_network();
+    tirenv_profile *a = tirenv_profile_cleat(L, H), *b = tirenv_profile_cleat(L, H);
+    const tirenv_profile *two[2] = {a, b};
+    tirenv_diag d;
+    double load;
+    for (int before = 0; before < 2; ++before) {
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &tire);
+        assert_non_null(m);
+        assert_int_equal(tirenv_model_set_network(m, nn, 0, &d), TIRENV_OK);
+        assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
+        if (before) {
+            tirenv_model_set_extrapolate(m, 1);  /* no further state exists yet */
+        } else {
+            assert_int_equal(tirenv_model_set_tracks(m, 2, two, NULL, load, &d), TIRENV_ERANGE);
+            tirenv_model_set_extrapolate(m, 1);  /* the further state exists */
+        }
+        assert_int_equal(tirenv_model_set(m, a, load, &d), TIRENV_OK);
+        assert_int_equal(tirenv_model_envelope(m, N, x, one, NULL, &d), TIRENV_OK);
+        assert_int_equal(tirenv_model_set_tracks(m, 2, two, NULL, load, &d), TIRENV_OK);
+        assert_int_equal(tirenv_model_tracks(m), 2);
+        assert_int_equal(tirenv_model_envelope(m, N, x, pt, NULL, &d), TIRENV_OK);
+        for (size_t k = 0; k < N; ++k)
+            assert_bits_equal(pt[k].h, one[k].h);
+        tirenv_model_set_extrapolate(m, 0);
+        assert_int_equal(tirenv_model_set_tracks(m, 2, two, NULL, load, &d), TIRENV_ERANGE);
+        tirenv_model_free(m);
+    }
+    tirenv_nn_free(nn);
+    tirenv_profile_free(a);
+    tirenv_profile_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_contact_length_reaches_every_track),
+        cmocka_unit_test(test_extrapolate_reaches_every_track),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,7 +22,8 @@ static void usage(FILE *fp)
           "                       [--track V] [--side S] [--tracks N] [--width W]\n"
           "                       [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
           "                       [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
-          "                       [--nn FILE] [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
+          "                       [--nn FILE [--extrapolate]] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                       [--method M]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
@@ -42,7 +43,9 @@ static void usage(FILE *fp)
     fputs("  --nn FILE            the trained network (tirenv train -o) for --model nn: over\n"
           "                       --cleat the paper's curve, over any other obstacle or\n"
           "                       --profile an extension beyond the paper (equivalent cleats;\n"
-          "                       'tirenv predict --help')\n",
+          "                       'tirenv predict --help')\n"
+          "  --extrapolate        with --nn: evaluate the network outside the ranges it was\n"
+          "                       trained on (with a warning) instead of refusing the input\n",
           fp);
     cli_help_load(fp);
     cli_help_sweep(fp);

@@ -111,7 +111,19 @@ void *tirenv_model__track_state(const tirenv_model *m)
         m->type->free(state);
         return NULL;
     }
+    if (state && m->type->set_extrapolate)
+        m->type->set_extrapolate(state, m->extrapolate);
     return state;
+}
+
+/* Every track's state is told, those that exist and those made later
+ * (tirenv_model__track_state). */
+void tirenv_model_set_extrapolate(tirenv_model *m, int allow)
+{
+    m->extrapolate = allow != 0;
+    if (m->type->set_extrapolate)
+        m->type->set_extrapolate(m->state, m->extrapolate);
+    tirenv_model__tracks_extrapolate(m);
 }
 
 double tirenv_model_load(const tirenv_model *m) { return m->ready ? m->load : NAN; }

@@ -36,6 +36,9 @@ struct tirenv_model_type {
     double (*reach)(const void *state);
     /* With TIRENV_MODEL_NEEDS_NETWORK: the network (to be copied) and the R0 (m) of its x_N. */
     int (*set_network)(void *state, const struct tirenv_nn *nn, double R0, tirenv_diag *diag);
+    /* Optional: whether set may evaluate outside a trained range (tirenv_model_set_extrapolate);
+     * NULL for a model without one. */
+    void (*set_extrapolate)(void *state, int allow);
     /* Optional: the warnings and the note of the last set (tirenv_model_warnings). */
     const char *(*warnings)(const void *state);
     const char *(*note)(const void *state);
@@ -66,10 +69,12 @@ struct tirenv_model {
     double nn_R0;          /* m */
     int have_l_c;
     double l_c;            /* m */
+    int extrapolate;       /* tirenv_model_set_extrapolate's, given to every track's state */
 };
 
 /* Private to model.c and tracks.c: a new type state for a further track, told what the first
- * was told (network, contact length); NULL if out of memory or the network fails. */
+ * was told (network, contact length, extrapolation); NULL if out of memory or the network
+ * fails. */
 void *tirenv_model__track_state(const tirenv_model *m);
 
 /* model.c: the check of tirenv_model_set on a further track's profile, against m->z_flat. */
@@ -80,6 +85,8 @@ int tirenv_model__check_ground(const tirenv_model *m, const tirenv_profile *p,
 void tirenv_model__tracks_free(tirenv_model *m);  /* and m->tracks = NULL */
 /* The contact length just given to the first track's state, given to the others too. */
 int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag *diag);
+/* Whether the model may extrapolate (m->extrapolate), given to the others too. */
+void tirenv_model__tracks_extrapolate(tirenv_model *m);
 int tirenv_model__tracks_eval(tirenv_model *m, double x, tirenv_point *out,
                               tirenv_diag *diag);
 int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],

@@ -94,6 +94,13 @@ int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag
     return TIRENV_OK;
 }
 
+void tirenv_model__tracks_extrapolate(tirenv_model *m)
+{
+    struct tirenv_model__tracks *t = m->tracks;
+    for (size_t k = 1; t && m->type->set_extrapolate && k < t->cap; ++k)
+        m->type->set_extrapolate(t->state[k], m->extrapolate);
+}
+
 /* Room for n given profiles (and so at most n distinct tracks) in the arrays. */
 static int tracks_arrays(tirenv_model *m, size_t n, tirenv_diag *diag)
 {
