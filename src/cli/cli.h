@@ -53,8 +53,10 @@ enum {
     CLI_SWEEP = 1u << 4,    /* --x-from X, --x-to X, --dx DX (m) */
     CLI_OUTPUT = 1u << 5,   /* -o, --output PATH */
     CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
-    CLI_NETWORK = 1u << 7   /* --nn FILE, the trained network a model type may need, and
+    CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need, and
                              * --extrapolate */
+    CLI_TRACKS = 1u << 8    /* --width W, --tracks N: tracks across the tire's width (with
+                             * CLI_OBSTACLE, which has --track V and --side S) */
 };
 
 /* The obstacle options, for cli_options.obstacle. */
@@ -84,6 +86,12 @@ typedef struct {
     double contact_length;            /* --contact-length, m */
     int obstacle;                     /* CLI_CLEAT..CLI_PROFILE, or 0 for none */
     const char *obstacle_arg;         /* its argument as given, for messages */
+    int have_track, have_side;
+    double track;                     /* --track: lateral position on a .crg road, m */
+    tirenv_rdf_side side;             /* --side: which side of a .rdf poly_line road */
+    int have_width;
+    double width;                     /* --width: the width tracks spread over, m */
+    long tracks;                      /* --tracks: tracks across it; 0 if not given */
     double shape[3];                  /* the generator's numbers, m */
     double x_from, x_to, dx;          /* --x-from, --x-to, --dx, m; NaN if not given */
     const char *output;               /* -o, --output, or NULL */
@@ -189,8 +197,38 @@ void cli_model_warnings(const char *cmd, const tirenv_model *m);
 #define CLI_MAX_POSITIONS 10000000.0
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
 
-/* The obstacle the options ask for (one required); returns an exit code. */
+/* The obstacle the options ask for (one required): a generated one, or the --profile file's
+ * track (--track, --side); returns an exit code. */
 int cli_profile(const cli_options *o, tirenv_profile **out);
+
+/* ---- roads from files, and tracks across the width (road.c) --------------------------- */
+
+#define CLI_MAX_TRACKS 64
+
+/* The tracks the obstacle options ask for. */
+typedef struct {
+    int from_file;                 /* --profile */
+    tirenv_profile_format format;  /* its format (by content); CSV for a generated obstacle */
+    tirenv_profile_source src;     /* --track, --side */
+    size_t n;                      /* tracks evaluated: --tracks over a road that varies across
+                                    * (a .crg), else 1 */
+    double width;                  /* m: the width they spread over; 0 with one track */
+    double v[CLI_MAX_TRACKS];      /* their lateral positions, m */
+} cli_road;
+
+/* Checks --track, --side, --width and --tracks against the obstacle and the file's format and
+ * places the tracks (tire: the default width, [DIMENSION] WIDTH; NULL where --tracks is not
+ * taken). Prints and returns an exit code. */
+int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r);
+/* The tracks' profiles, whole: r->n of them into out (each to free). Returns an exit code. */
+int cli_road_read(const cli_options *o, const cli_road *r, tirenv_profile *out[]);
+/* The --profile file read a row of r->n heights at a time, for --stream. */
+int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_reader **out);
+/* "FILE", "FILE, track v = 0.9 m", "FILE, 5 tracks over 0.38 m around v = 0.9 m", or the
+ * generated obstacle as asked for. */
+void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n);
+/* The help text of --track, --side, --width, --tracks (with_tracks: the last two too). */
+void cli_help_road(FILE *fp, int with_tracks);
 /* How a message names the obstacle: the file, or the generator as it was asked for. */
 void cli_obstacle_label(const cli_options *o, char *buf, size_t n);
 

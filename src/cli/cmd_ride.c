@@ -42,6 +42,7 @@ static void usage(FILE *fp)
           "options:\n",
           fp);
     cli_help_obstacle(fp);
+    cli_help_road(fp, 0);
     fputs("  --speed V[,V...]     forward speeds, m/s, or km/h with the suffix km/h\n"
           "                       (e.g. 10km/h)\n"
           "  --model M[,M...]     models (default point,springs)\n"

@@ -39,6 +39,8 @@ static const tirenv_propfile__key tir_keys[] = {
     TIRENV_PROPFILE_CONVERTED_UNITS,
     TIR_REAL("DIMENSION", "UNLOADED_RADIUS", springs.R0, 1, 0, 0,
              "R0: free (unloaded) tire radius, m"),
+    TIR_REAL("DIMENSION", "WIDTH", width, 1, 0, 0,
+             "tire width, m: the default spread of tracks across it"),
     TIR_CAM("VERTICAL", "VERTICAL_STIFFNESS", cam.c_z, -1, 1, 0, TIRENV_CAM_C_Z,
              "cam: load / static deflection, N/m"),
     TIR_CAM("CONTACT_PATCH", "Q_RA1", cam.q_ra1, 0, 0, 0, TIRENV_CAM_Q_RA1,
@@ -93,7 +95,7 @@ static const tirenv_propfile__key tir_keys[] = {
 
 /* The sections tirenv reads. In a strict section an unknown key is a typo and an error; in
  * [DIMENSION], [VERTICAL] and [CONTACT_PATCH], which tirenv shares with MF-Tyre, the keys of
- * the other models (WIDTH, FNOMIN, Q_RB1...) are skipped. Any other section is skipped whole,
+ * the other models (FNOMIN, Q_RB1...) are skipped. Any other section is skipped whole,
  * unless its name starts with ENVELOPING_: those are tirenv's own, and an unknown one is a
  * typo, not MF-Tyre. */
 static const tirenv_propfile__section tir_sections[] = {
@@ -138,9 +140,16 @@ static const tirenv_propfile__schema tir_schema = {
     .given_mask = TIRENV_CAM_ALL,
 };
 
+/* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
+ * file must not inherit the tractor's 0.38 m. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
-    return tirenv_propfile__read(&tir_schema, path, tire, diag);
+    const double width = tire->width;
+    tire->width = 0;
+    const int status = tirenv_propfile__read(&tir_schema, path, tire, diag);
+    if (status)
+        tire->width = width;
+    return status;
 }
 
 /* "KEY=VALUE" or "SECTION.KEY=VALUE", for the keys that set a parameter (not [UNITS]). */
