@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/csv_row.h"
 #include "tirenv/train.h"
 
 /* As tirenv envelope: the default sweep from R0 + 0.02 m before the cleat to as far beyond
@@ -221,9 +222,17 @@ static int write_curve(const char *path, size_t n, const double x[], const doubl
     int status = tirenv_outfile_open(&out, path, &diag);
     if (!status) {
         fputs("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n", out.fp);
-        for (size_t k = 0; k < n; ++k)
-            fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,0,%.9g,0,0\n", x[k], z_flat + h[k], h[k],
-                    slope[k], load);
+        char load_text[CLI_ROW_FIELD];
+        tirenv_fmt_g(load, 9, load_text);
+        for (size_t k = 0; k < n; ++k) {  /* as "%.9g,%.9g,%.9g,%.9g,0,%.9g,0,0\n" */
+            char row[5 * CLI_ROW_FIELD + 32], *p = row;
+            p = cli_row_g(p, x[k], 9, ',');
+            p = cli_row_g(p, z_flat + h[k], 9, ',');
+            p = cli_row_g(p, h[k], 9, ',');
+            p = cli_row_g(p, slope[k], 9, ',');
+            p += sprintf(p, "0,%s,0,0\n", load_text);
+            fwrite(row, 1, (size_t)(p - row), out.fp);
+        }
         status = tirenv_outfile_commit(&out, &diag);  /* it checks the writes */
     }
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;

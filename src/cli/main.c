@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/signals.h"
 
 static int help_main(int argc, char *argv[]);
 
@@ -91,6 +92,7 @@ int main(int argc, char *argv[])
         {"version", no_argument, NULL, 'V'},
         {NULL, 0, NULL, 0},
     };
+    cli_signals_install();
     int c;
     /* '+' stops at the command name, so its options are left for it to parse. */
     while ((c = getopt_long(argc, argv, "+hV", longopts, NULL)) != -1) {

@@ -17,6 +17,7 @@ typedef struct {
     const char *nn_path;             /* --nn */
     const char *out_path;            /* -o: the one run's series */
     const char *out_dir;             /* --out-dir */
+    int series;                      /* --series: every run's series into out_dir */
     char model_buf[256], speed_buf[256];
     const char *models[RIDE_MAX_MODELS];
     size_t n_models;

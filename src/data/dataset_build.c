@@ -95,9 +95,9 @@ static int build_case(const char *dir, size_t i, tirenv_model *ring, double *loa
     return status;
 }
 
-int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
-                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
-                         tirenv_diag *diag)
+static int build_into(const char *dir, const tirenv_tire *tire,
+                      void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
+                      tirenv_diag *diag)
 {
     const size_t n = sizeof design / sizeof design[0];
     char path[1024];
@@ -138,4 +138,21 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                 tirenv_split_name(design[i].split), design[i].contact_length, load[i],
                 design[i].L, design[i].H, design[i].name, design[i].name);
     return tirenv_outfile_commit(&f, diag);
+}
+
+/* The data set is written as a whole (tirenv_outdir): a failed or killed build leaves the
+ * previous one as it was. */
+int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
+                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
+                         tirenv_diag *diag)
+{
+    tirenv_outdir *out;
+    int status = tirenv_outdir_begin(dir, &out, diag);
+    if (status)
+        return status;
+    if ((status = build_into(tirenv_outdir_path(out), tire, progress, ctx, diag))) {
+        tirenv_outdir_abort(out);
+        return status;
+    }
+    return tirenv_outdir_commit(out, diag);
 }

@@ -60,7 +60,9 @@ static int read_row(tirenv_csv__reader *rd, rows *r, char prev_x[32])
     r->z[r->n] = v[1];
     r->line[r->n] = rd->line;
     r->n++;
-    snprintf(prev_x, 32, "%s", f[0].text);
+    const size_t len = strnlen(f[0].text, 31);  /* snprintf(prev_x, 32, "%s"), faster */
+    memcpy(prev_x, f[0].text, len);
+    prev_x[len] = '\0';
     return TIRENV_OK;
 }
 
