@@ -3,8 +3,9 @@ BUILD      ?= build
 ASAN_BUILD ?= build-asan
 JOBS       ?= 2
 DEMO_OUT   ?= out/study
+FUZZ_SECONDS ?= 60
 
-.PHONY: all deps build test test-asan demo bench clean
+.PHONY: all deps build test test-asan demo bench fuzz clean
 
 all: build
 
@@ -21,7 +22,8 @@ test: build
 	@$(MAKE) --no-print-directory test-asan
 
 test-asan: deps
-	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
+	    -DTIRENV_FUZZ=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
@@ -44,6 +46,13 @@ bench: build
 	@cmake -S . -B $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS) --target tirenv-bench-nn
 	@$(BUILD)/tirenv bench
 	@$(BUILD)/bench/tirenv-bench-nn
+
+# Every libFuzzer harness (tests/fuzz/, built with clang, ASan and UBSan) for FUZZ_SECONDS
+# each, one after the other; make test runs them for a few seconds. New inputs collect in
+# $(BUILD)/fuzz-work/<parser>/corpus, findings beside it.
+fuzz: build
+	@cd $(BUILD) && FUZZ_SECONDS=$(FUZZ_SECONDS) ctest -L fuzz --output-on-failure \
+	    --timeout $$(($(FUZZ_SECONDS) + 600))
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out
