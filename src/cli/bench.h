@@ -11,4 +11,8 @@
 int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const tirenv_nn *nn,
                    size_t n, const double x[], long repeat, tirenv_diag *diag);
 
+/* The CSV number formatter against snprintf's "%.9g" on 10^6 values, best of repeat: prints
+ * both and their ratio, fails if a byte differs; the times per number in ns. */
+int cli_bench_fmt(long repeat, double *ns_fmt, double *ns_printf);
+
 #endif

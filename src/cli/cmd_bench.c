@@ -47,7 +47,8 @@ static void usage(FILE *fp)
           "0.30 x 0.10 m, centre x from -1.0 to 0.5 m at 1 mm (1501 positions), for the rigid\n"
           "model and the springs model with each equilibrium solver (newton, secant = the\n"
           "paper's eq. 2, brent). Reports the best of N runs, single-threaded. Then the\n"
-          "rig-log import of a 10,000-sample log, read from CSV and from memory. Then the\n"
+          "rig-log import of a 10,000-sample log, read from CSV and from memory, and the CSV\n"
+          "writers' number formatting against snprintf (10^6 numbers, same bytes). Then the\n"
           "road: rigid, cam and springs (contact length 0.33 m) over a 1 km ISO 8608 class C\n"
           "road at 10 mm (seed 1), 100,001 positions, against the project's targets; and nn,\n"
           "the network trained on the embedded data set (lm, seed 1) over the same road by\n"
@@ -489,6 +490,9 @@ int cli_bench_main(int argc, char *argv[])
     print_machine();
     print_table(repeat, r);
     code = bench_import(&tire, prof, repeat);
+    double ns_fmt, ns_printf;
+    if (!code)
+        code = cli_bench_fmt(repeat, &ns_fmt, &ns_printf);
     tirenv_profile_free(prof);
     return code ? code : bench_road(&tire, repeat);
 }

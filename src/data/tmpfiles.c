@@ -260,30 +260,39 @@ static int process_gone(long pid)
     return pid > 0 && pid <= INT_MAX && kill((pid_t)pid, 0) == -1 && errno == ESRCH;
 }
 
-/* Directories already swept by this process (device and inode), in a ring. */
+/* Directories already swept by this process, in a ring: device, inode and birth time (a
+ * directory made later with a freed inode is another one; where the file system records no
+ * birth time, it counts as the same). */
 enum { SWEPT = 64 };
-static struct {
-    dev_t dev;
-    ino_t ino;
-} swept[SWEPT];
+typedef struct {
+    uint32_t dev_major, dev_minor;
+    uint64_t ino;
+    int64_t btime_s;
+    uint32_t btime_ns;
+} dir_id;
+static dir_id swept[SWEPT];
 static size_t n_swept;
 static pthread_mutex_t swept_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static int first_visit(const char *dir)
 {
-    struct stat st;
-    if (stat(dir, &st) != 0)
+    struct statx sx;
+    if (statx(AT_FDCWD, dir, 0, STATX_INO | STATX_BTIME, &sx) != 0)
         return 0;
+    dir_id id = {sx.stx_dev_major, sx.stx_dev_minor, sx.stx_ino, 0, 0};
+    if (sx.stx_mask & STATX_BTIME) {
+        id.btime_s = sx.stx_btime.tv_sec;
+        id.btime_ns = sx.stx_btime.tv_nsec;
+    }
     pthread_mutex_lock(&swept_lock);
     int seen = 0;
     for (size_t i = 0; i < n_swept && i < SWEPT; ++i)
-        if (swept[i].dev == st.st_dev && swept[i].ino == st.st_ino)
+        if (swept[i].dev_major == id.dev_major && swept[i].dev_minor == id.dev_minor &&
+            swept[i].ino == id.ino && swept[i].btime_s == id.btime_s &&
+            swept[i].btime_ns == id.btime_ns)
             seen = 1;
-    if (!seen) {
-        swept[n_swept % SWEPT].dev = st.st_dev;
-        swept[n_swept % SWEPT].ino = st.st_ino;
-        n_swept++;
-    }
+    if (!seen)
+        swept[n_swept++ % SWEPT] = id;
     pthread_mutex_unlock(&swept_lock);
     return !seen;
 }
