@@ -12,7 +12,8 @@
 #include <unistd.h>
 
 /* The input as the file at the returned path (suffix: the extension a reader may expect).
- * The file lives in a private directory under $TMPDIR (or /tmp), removed at exit. */
+ * The file lives in a private directory under $TMPDIR, else /dev/shm (memory: no disk in
+ * the loop), else /tmp, removed at exit. */
 static const char *fuzz_input_file(const uint8_t *data, size_t size, const char *suffix);
 
 static char fuzz_dir[256], fuzz_path[320];
@@ -31,7 +32,9 @@ static const char *fuzz_input_dir(void)
 {
     if (!fuzz_dir[0]) {
         const char *tmp = getenv("TMPDIR");
-        snprintf(fuzz_dir, sizeof fuzz_dir, "%s/tirenv-fuzz-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+        if (!tmp || !*tmp)
+            tmp = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
+        snprintf(fuzz_dir, sizeof fuzz_dir, "%s/tirenv-fuzz-XXXXXX", tmp);
         if (!mkdtemp(fuzz_dir))
             abort();
         atexit(fuzz_cleanup);
