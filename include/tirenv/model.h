@@ -10,7 +10,7 @@
 
 TIRENV_BEGIN_DECLS
 
-/* One position of the enveloping curve (docs/models.md sections 1 and 4). */
+/* One position of the enveloping curve (docs/models.md section 1). */
 typedef struct {
     double x;              /* tire-centre longitudinal position, m */
     double z;              /* tire-centre height at equilibrium, m */

@@ -1,4 +1,5 @@
-/* tirenv: tire parameters and solver settings (the contents of a .tir file). */
+/* tirenv: tire parameters and solver settings (the contents of a .tir file, docs/formats.md
+ * section 2). */
 #ifndef TIRENV_TIRE_H
 #define TIRENV_TIRE_H
 
@@ -8,7 +9,7 @@
 
 TIRENV_BEGIN_DECLS
 
-/* How the constant-load equilibrium F_z(x, z) = G_T is solved in z (docs/models.md section 4). */
+/* How the constant-load equilibrium F_z(x, z) = G_T is solved in z (docs/models.md section 11). */
 typedef enum {
     TIRENV_EQ_NEWTON = 0, /* default: Newton on dF_z/dz inside a bracket, bisection fallback */
     TIRENV_EQ_SECANT,     /* the paper's plain secant iteration (its eq. 2), for comparison */

@@ -1,4 +1,5 @@
-/* tirenv: training the empirical model's network (docs/models.md section 6), and its model file.
+/* tirenv: training the empirical model's network (docs/models.md section 6), and its model file
+ * (docs/formats.md section 10).
  * Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_TRAIN_H

@@ -1,4 +1,5 @@
-/* tirenv: the pitch-plane tractor of the ride simulation and its property file.
+/* tirenv: the pitch-plane tractor of the ride simulation (docs/models.md section 9) and its
+ * property file (docs/formats.md section 3).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_VEHICLE_H
 #define TIRENV_VEHICLE_H

@@ -1,5 +1,5 @@
-/* Constant-load equilibrium in z: the default safeguarded Newton, the paper's secant (eq. 2),
- * and GSL's Brent as a derivative-free baseline. */
+/* Constant-load equilibrium in z (docs/models.md section 11): the default safeguarded Newton,
+ * the paper's secant (eq. 2), and GSL's Brent as a derivative-free baseline. */
 #include "core/equilibrium.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* Private: the constant-load equilibrium F_z(z) = G_T in the centre height z (docs/models.md
- * section 4), shared by every deformable model. */
+ * section 11), shared by every deformable model. */
 #ifndef TIRENV_EQUILIBRIUM_H
 #define TIRENV_EQUILIBRIUM_H
 

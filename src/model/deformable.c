@@ -1,5 +1,5 @@
-/* The constant-load equilibrium per position (docs/models.md section 4), shared by every deformable
- * model: it only needs their hub-force function and their contact length. */
+/* The constant-load equilibrium per position (docs/models.md section 11), shared by every
+ * deformable model: it only needs their hub-force function and their contact length. */
 #include "model/deformable.h"
 
 #include <math.h>

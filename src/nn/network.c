@@ -599,7 +599,8 @@ int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H,
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
                             "expected R0 > 0, 0 < l_c < 2*R0, L > 0, H > 0 (m); got R0 %g, "
                             "l_c %g, L %g, H %g", R0, l_c, L, H);
-    const double z_c = sqrt(R0 * R0 - 0.25 * l_c * l_c);  /* chord height, models.md 1 */
+    /* The chord height (docs/models.md section 1). */
+    const double z_c = sqrt(R0 * R0 - 0.25 * l_c * l_c);
     const double x_0 = tirenv_xN_origin(R0, l_c, L, H);
     if (!(H < z_c) || !(x_0 < 0))
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle_height_m",

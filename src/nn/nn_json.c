@@ -1,7 +1,8 @@
-/* Model files of the empirical model (docs/models.md section 6): the network and how it was
- * trained, as JSON through jansson. Reading trusts nothing: every field is checked for
- * presence, type, finiteness and range, and the network's numbers against a checksum, and a
- * failure names the file and the field. SPDX-License-Identifier: GPL-3.0-or-later
+/* Model files of the empirical model (docs/models.md section 6; the format: docs/formats.md
+ * section 10): the network and how it was trained, as JSON through jansson. Reading trusts
+ * nothing: every field is checked for presence, type, finiteness and range, and the network's
+ * numbers against a checksum, and a failure names the file and the field.
+ * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * Layout (version 1):
  *   format "tirenv-nn", version 1, inputs [names], output "h_m", topology [4, 8, 1],

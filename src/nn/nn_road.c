@@ -1,5 +1,6 @@
 /* The empirical model over any profile: equivalent-cleat decomposition with max-plus
- * superposition (nn_road.h states the model; this file says how and why).
+ * superposition (docs/models.md section 12; nn_road.h states the model, this file says how
+ * and why).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * Why this shape. The network knows one thing: the curve of a rectangular cleat (L, H) on flat

@@ -1,5 +1,5 @@
 /* The morphological opening (erosion then dilation by a flat element) of a sampled signal:
- * the baseline of the equivalent-cleat decomposition (nn_road.c).
+ * the baseline of the equivalent-cleat decomposition (nn_road.c, docs/models.md section 12).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "nn/opening.h"
 

@@ -1,4 +1,5 @@
-/* Metrics of a frequency-weighted acceleration by ISO 2631-1 clause 6.
+/* Metrics of a frequency-weighted acceleration by ISO 2631-1 clause 6 (docs/models.md
+ * section 10).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * For samples a_j = a_w(j/fs), j = 0..n-1, of a weighted acceleration over T = n/fs:

@@ -1,4 +1,4 @@
-/* The frequency weightings of ISO 2631-1, analogue and digital.
+/* The frequency weightings of ISO 2631-1, analogue and digital (docs/models.md section 10).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * ISO 2631-1 Annex A (parameters repeated in ISO 8041's table) defines each weighting as the

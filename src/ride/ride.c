@@ -1,4 +1,5 @@
-/* The pitch-plane tractor's equations of motion and their integration with GSL's odeiv2.
+/* The pitch-plane tractor's equations of motion and their integration with GSL's odeiv2
+ * (docs/models.md section 9).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * States, displacements from the static equilibrium on flat ground (small pitch angles):

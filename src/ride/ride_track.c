@@ -1,5 +1,6 @@
 /* What each axle's tires follow: the raw profile (point contact) or a model's effective
- * profile at the axle's static tire load. SPDX-License-Identifier: GPL-3.0-or-later */
+ * profile at the axle's static tire load (docs/models.md section 9.2).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/ride.h"
 
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,

@@ -1,4 +1,5 @@
-/* Welch's estimate of a one-sided power spectral density, for seat-acceleration spectra.
+/* Welch's estimate of a one-sided power spectral density, for seat-acceleration spectra
+ * (docs/models.md section 10).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
  * The series is cut into K segments of N samples (a power of two, for GSL's radix-2 real FFT)

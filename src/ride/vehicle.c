@@ -1,5 +1,5 @@
-/* The pitch-plane tractor of the ride simulation: its default, its physical check and its
- * static tire loads. The file format is in vehicle_file.c.
+/* The pitch-plane tractor of the ride simulation (docs/models.md section 9): its default, its
+ * physical check and its static tire loads. The file format is in vehicle_file.c.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/vehicle.h"
 

@@ -1,5 +1,6 @@
-/* The vehicle property file (.veh): the .tir syntax through the property-file engine, with
- * the keys of data/vehicles/tractor.veh. SPDX-License-Identifier: GPL-3.0-or-later */
+/* The vehicle property file (.veh, docs/formats.md section 3): the .tir syntax through the
+ * property-file engine, with the keys of data/vehicles/tractor.veh.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "data/propfile.h"
 #include "tirenv/tirenv.h"
 #include "tirenv/vehicle.h"
