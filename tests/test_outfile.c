@@ -526,10 +526,10 @@ static void test_outdir_symlink_and_refusals(void **state)
 static void test_rmtree(void **state)
 {
     scratch *s = *state;
-    char top[700], path[900], keep[700];
+    char top[700], path[1000], keep[700];
     assert_int_equal(mkdir(at(s, "top", top), 0755), 0);
     write_text(at(s, "keep.txt", keep), "keep");
-    char dir[900];
+    char dir[800];
     snprintf(dir, sizeof dir, "%s", top);
     for (int i = 0; i < 5; ++i) {
         strcat(dir, "/d");

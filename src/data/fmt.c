@@ -59,10 +59,21 @@ static int decimal_exponent_estimate(uint64_t m, int e)
     return (int)floor_shift40(l2 * (l2 >= 0 ? 315652 : 315653));
 }
 
-/* The p digits of n (10^(p-1) <= n < 10^p) into d[0..p-1], two at a time; 32-bit arithmetic
- * (cheaper division by constants) once n fits. */
+/* The p digits of n (10^(p-1) <= n < 10^p) into d[0..p-1], two at a time. Nine digits (the
+ * CSV writers' precision) in groups by constant divisors, which compile to multiplications;
+ * other precisions in a loop, in 32-bit arithmetic once n fits. */
 static void digits(uint64_t n, int p, char *d)
 {
+    if (p == 9) {
+        const uint32_t v = (uint32_t)n, lead = v / 100000000u, r = v - lead * 100000000u;
+        const uint32_t hi = r / 10000u, lo = r - hi * 10000u;
+        d[0] = (char)('0' + lead);
+        memcpy(d + 1, digit_pairs + 2 * (hi / 100u), 2);
+        memcpy(d + 3, digit_pairs + 2 * (hi % 100u), 2);
+        memcpy(d + 5, digit_pairs + 2 * (lo / 100u), 2);
+        memcpy(d + 7, digit_pairs + 2 * (lo % 100u), 2);
+        return;
+    }
     int i = p;
     while (n > UINT32_MAX) {
         const unsigned r = (unsigned)(n % 100);
@@ -87,7 +98,7 @@ static void digits(uint64_t n, int p, char *d)
  * whole: buf has TIRENV_FMT_G_SIZE bytes. */
 static size_t layout(int neg, uint64_t n, int X, int p, char *buf)
 {
-    char d[24] = {0}, w[64];
+    char d[40] = {0}, w[64];  /* d: room for a 17-byte copy from any digit */
     digits(n, p, d);
     int nd = p;
     while (nd > 1 && d[nd - 1] == '0')
@@ -154,10 +165,14 @@ static int fmt_fast(double x, int p, char *buf, size_t *len)
         if (tries > 1 || k < FMT_POW10_MIN || k > FMT_POW10_MAX)
             return 0;
         const fmt_u128 prod = (fmt_u128)m * fmt_pow10[k - FMT_POW10_MIN].P;
-        const int s = -(e + fmt_pow10[k - FMT_POW10_MIN].q);  /* fraction bits of A */
-        if (s < 2 || s > 127 || (prod >> s) >> 63)
+        /* A = prod / 2^s with prod in [2^126, 2^128) and 1 <= A < 10^18: 64 < s < 128, so
+         * A's integer part is in the high word and the rest can be done in 64 bits. */
+        const int s = -(e + fmt_pow10[k - FMT_POW10_MIN].q);
+        if (s <= 64 || s >= 128)
             return 0;
-        const uint64_t n0 = (uint64_t)(prod >> s);
+        const uint64_t hi = (uint64_t)(prod >> 64), lo = (uint64_t)prod;
+        const int t = s - 64;
+        const uint64_t n0 = hi >> t;
         if (n0 >= pow10_u64[p]) {  /* the exact value is at least as large: one decade up */
             ++X;
             continue;
@@ -166,13 +181,15 @@ static int fmt_fast(double x, int p, char *buf, size_t *len)
             --X;
             continue;
         }
-        const fmt_u128 frac = prod & (((fmt_u128)1 << s) - 1);
-        const fmt_u128 half = (fmt_u128)1 << (s - 1);
-        const int t = s + tol_exp[p];
-        const fmt_u128 tol = t > 0 ? (fmt_u128)1 << t : 1;
-        if (frac > half)            /* exact fraction >= frac > 1/2 */
+        /* The fraction of A in units of 2^-64: f, plus less than one unit from the bits
+         * below, plus less than 2^u from the bound on A's error (u = 64 + tol_exp[p]). */
+        const uint64_t f = (hi << (64 - t)) | (lo >> t);
+        const uint64_t half = (uint64_t)1 << 63;
+        const int u = 64 + tol_exp[p];
+        const uint64_t tol = (u > 0 ? (uint64_t)1 << u : 1) + 1;
+        if (f > half)               /* exact fraction > f >= 1/2 + 2^-64 */
             n = n0 + 1;
-        else if (frac + tol <= half) /* exact fraction < frac + tol <= 1/2 */
+        else if (f <= half - tol)   /* exact fraction < f + tol <= 1/2 */
             n = n0;
         else
             return 0;
