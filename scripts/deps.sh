@@ -2,9 +2,10 @@
 # Installs the Debian packages tirenv needs to build, test and draw its plots. Idempotent:
 # does nothing when they are present. As root it runs apt-get; otherwise it prints the line.
 set -eu
-# clang and its runtime libraries (libFuzzer, sanitizers: only recommended by clang's
-# packages, so named here) build the fuzz harnesses of tests/fuzz.
-need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox"
+# groff-base and man-db: the tests format and look up the generated man pages. clang and its
+# runtime libraries (libFuzzer, sanitizers: only recommended by clang's packages, so named
+# here) build the fuzz harnesses of tests/fuzz.
+need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
 need="$need clang libclang-rt-14-dev"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
 

@@ -5,14 +5,25 @@
 
 #include "cli/cli.h"
 
+/* What tirenv bench reports: the human table (cli_bench_say, printf-like; silent with --json)
+ * and every figure by name (cli_bench_figure: one number each, printed as one JSON object
+ * with --json). */
+void cli_bench_say(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+void cli_bench_figure(const char *name, double value);
+
 /* The ride over the bench road (profile road, centre positions x[0..n-1] on a uniform grid)
  * with the default tractor, point / cam / nn (skipped if nn is NULL) / springs, printing the
  * real-time factor of each; best of repeat. */
 int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const tirenv_nn *nn,
                    size_t n, const double x[], long repeat, tirenv_diag *diag);
 
-/* The CSV number formatter against snprintf's "%.9g" on 10^6 values, best of repeat: prints
- * both and their ratio, fails if a byte differs; the times per number in ns. */
-int cli_bench_fmt(long repeat, double *ns_fmt, double *ns_printf);
+/* The CSV number formatter against snprintf's "%.9g" on 10^6 values, best of repeat: the
+ * time of each per number (figures csv_fmt_ns, csv_snprintf_ns) and their ratio
+ * (csv_fmt_speedup); fails if a byte differs. */
+int cli_bench_fmt(long repeat);
 
 #endif

@@ -24,7 +24,7 @@ static void values(double v[])
     }
 }
 
-int cli_bench_fmt(long repeat, double *ns_fmt, double *ns_printf)
+int cli_bench_fmt(long repeat)
 {
     double *v = malloc(FMT_N * sizeof *v);
     if (!v)
@@ -54,12 +54,14 @@ int cli_bench_fmt(long repeat, double *ns_fmt, double *ns_printf)
             best_printf = t1 - t0;
     }
     free(v);
-    *ns_fmt = 1e9 * best_fmt / FMT_N;
-    *ns_printf = 1e9 * best_printf / FMT_N;
-    printf("\nCSV numbers: %d values as \"%%.9g\" (sweep positions, heights, forces), best of "
-           "%ld%s\n  tirenv_fmt_g %6.1f ns a number, snprintf %6.1f ns: %.1f x faster, %s\n",
-           FMT_N, repeat, sink ? "" : " ", *ns_fmt, *ns_printf, best_printf / best_fmt,
-           differ ? "BYTES DIFFER" : "the same bytes");
+    const double ns_fmt = 1e9 * best_fmt / FMT_N, ns_printf = 1e9 * best_printf / FMT_N;
+    cli_bench_figure("csv_fmt_ns", ns_fmt);
+    cli_bench_figure("csv_snprintf_ns", ns_printf);
+    cli_bench_figure("csv_fmt_speedup", best_printf / best_fmt);
+    cli_bench_say("\nCSV numbers: %d values as \"%%.9g\" (sweep positions, heights, forces), "
+                  "best of %ld%s\n  tirenv_fmt_g %6.1f ns a number, snprintf %6.1f ns: %.1f x "
+                  "faster, %s\n", FMT_N, repeat, sink ? "" : " ", ns_fmt, ns_printf,
+                  best_printf / best_fmt, differ ? "BYTES DIFFER" : "the same bytes");
     if (differ) {
         cli_error("bench: tirenv_fmt_g differs from snprintf on %zu values", differ);
         return CLI_EXIT_DATA;

@@ -1,10 +1,13 @@
 /* tirenv: the command-line tool. A table of subcommands drives dispatch and "tirenv help",
  * as in kmod's tools/kmod.c; each subcommand lives in its own cmd_<name>.c.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
 
 #include "cli/cli.h"
+#include "tirenv/version.h"
 #include "cli/signals.h"
 
 static int help_main(int argc, char *argv[]);
@@ -50,7 +53,12 @@ static void usage(FILE *fp)
           "     no convergence; the message names the position x\n"
           "\n"
           "environment:\n"
-          "  TIRENV_DATA  data directory; the default tire is $TIRENV_DATA/tires/default.tir\n"
+          "  TIRENV_DATA  the data directory: default tire tires/default.tir, tractor\n"
+          "               vehicles/tractor.veh, embedded data set dataset/. Unset: the\n"
+          "               installed data, share/tirenv under the prefix tirenv is\n"
+          "               installed in, found from the program's own location (the\n"
+          "               installed tree may be moved); for a program in its build\n"
+          "               tree, the source tree's data/\n"
           "\n"
           "Units are SI (m, N) in options and CSV files; summaries show mm and kN.\n",
           fp);
@@ -67,7 +75,8 @@ static const cli_command *find_command(const char *name)
 /* "tirenv help" lists everything; "tirenv help CMD" is "tirenv CMD --help". */
 static int help_main(int argc, char *argv[])
 {
-    if (argc < 2 || strcmp(argv[1], "help") == 0) {
+    if (argc < 2 || strcmp(argv[1], "help") == 0 || strcmp(argv[1], "--help") == 0 ||
+        strcmp(argv[1], "-h") == 0) {
         usage(stdout);
         return CLI_EXIT_OK;
     }
@@ -93,6 +102,9 @@ int main(int argc, char *argv[])
         {NULL, 0, NULL, 0},
     };
     cli_signals_install();
+    /* The library checks every GSL status and reports failures itself; GSL's default handler
+     * would abort first. Setting it is the program's business, not the library's (error.h). */
+    gsl_set_error_handler_off();
     int c;
     /* '+' stops at the command name, so its options are left for it to parse. */
     while ((c = getopt_long(argc, argv, "+hV", longopts, NULL)) != -1) {
@@ -101,7 +113,7 @@ int main(int argc, char *argv[])
             usage(stdout);
             return CLI_EXIT_OK;
         case 'V':
-            printf("tirenv %s\n", TIRENV_VERSION);
+            printf("tirenv %s\n", TIRENV_VERSION);  /* tirenv/version.h */
             return CLI_EXIT_OK;
         default:
             usage(stderr);

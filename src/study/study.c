@@ -9,7 +9,7 @@
 #include "study/compare_impl.h"
 #include "tirenv/io.h"
 #include "tirenv/rig.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 tirenv_study_settings tirenv_study_default(void)
 {

@@ -14,11 +14,11 @@
 /* The input as the file at the returned path (suffix: the extension a reader may expect).
  * The file lives in a private directory under $TMPDIR, else /dev/shm (memory: no disk in
  * the loop), else /tmp, removed at exit. */
-static const char *fuzz_input_file(const uint8_t *data, size_t size, const char *suffix);
+static inline const char *fuzz_input_file(const uint8_t *data, size_t size, const char *suffix);
 
 static char fuzz_dir[256], fuzz_path[320];
 
-static void fuzz_cleanup(void)
+static inline void fuzz_cleanup(void)
 {
     if (fuzz_path[0])
         unlink(fuzz_path);
@@ -28,7 +28,7 @@ static void fuzz_cleanup(void)
 
 /* The private directory, made on first use (a harness may put more files in it; it removes
  * them itself). */
-static const char *fuzz_input_dir(void)
+static inline const char *fuzz_input_dir(void)
 {
     if (!fuzz_dir[0]) {
         const char *tmp = getenv("TMPDIR");
@@ -42,7 +42,7 @@ static const char *fuzz_input_dir(void)
     return fuzz_dir;
 }
 
-static const char *fuzz_input_file(const uint8_t *data, size_t size, const char *suffix)
+static inline const char *fuzz_input_file(const uint8_t *data, size_t size, const char *suffix)
 {
     if (!fuzz_path[0])
         snprintf(fuzz_path, sizeof fuzz_path, "%s/input%s", fuzz_input_dir(), suffix);

@@ -2,7 +2,7 @@
  * with whatever network it accepts. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "fuzz_input.h"
 #include "tirenv/nn.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

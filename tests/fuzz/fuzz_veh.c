@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "fuzz_input.h"
 #include "tirenv/vehicle.h"
+#include "tirenv/vehicle_file.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

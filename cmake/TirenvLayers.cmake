@@ -1,0 +1,26 @@
+# The two layers of the library, in one place: the build globs its sources from these
+# directories and the 'layers' test (cmake/CheckLayers.cmake) checks the boundary by them.
+#
+# CORE: profiles, models, equilibrium, network evaluation, trainers, ride and comfort. It knows
+#   no file format, rig, data set, study or plot: it includes no AUX header, calls no AUX
+#   function and does not use jansson.
+# AUX (the convenience layer): file formats (.tir, .veh, CSV, JSON), rig simulation and import,
+#   data sets, study, compare, plots. It is written against the core's public headers alone.
+# The CLI (src/cli) uses public headers of both layers and its own cli/ headers only.
+
+# Directories under src/, one module each.
+set(TIRENV_CORE_DIRS core profile model nn train ride)
+set(TIRENV_AUX_DIRS data study formats)
+
+# Every public header under include/tirenv/ belongs to exactly one layer; the check fails on a
+# header listed in neither, so a new header must be placed here. (tirenv.h, the umbrella, and
+# decls.h, the declaration macros, belong to both.)
+set(TIRENV_CORE_HEADERS
+  error.h profile.h road.h tire.h model.h rigid.h cam.h springs.h ring.h stream.h xn.h
+  nn.h nn_road.h train.h vehicle.h ride.h comfort.h version.h)
+set(TIRENV_AUX_HEADERS
+  io.h curve.h rig.h dataset.h study.h plot.h nn_file.h vehicle_file.h)
+set(TIRENV_SHARED_HEADERS tirenv.h decls.h)
+
+# System headers of file-format libraries: the core includes none of them.
+set(TIRENV_AUX_SYSTEM_HEADERS jansson.h)
