@@ -91,7 +91,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
         char warnings[1024];
         /* x_N refers to the radius of the network's data, when the file records it. */
         if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, s->x0, s->dx, s->n, in->w[axle], warnings,
+                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n, in->w[axle], warnings,
                                           sizeof warnings, &diag)))
             break;
         axle_warnings(in->name, axle, warnings);
@@ -263,6 +263,18 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
             set.duration = (run_end(r, &s, set.speed, x_last) - x_from) / set.speed;
             set.dt = r->dt;
             set.method = r->method;
+            /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
+             * memory": a 10 km/h km of road is 0.36 M samples. */
+            if (!(set.duration / set.dt < CLI_MAX_POSITIONS)) {
+                cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
+                          "most %.0f: check --speed (%g m/s) and --dt", set.duration, set.dt,
+                          set.duration / set.dt,
+                          set.duration / set.dt * (double)(sizeof *rs->samples +
+                                                           sizeof *rs->a_w) / 1e9,
+                          CLI_MAX_POSITIONS, set.speed);
+                code = CLI_EXIT_USAGE;
+                goto done;
+            }
             rs->n = tirenv_ride_n_samples(&set);
             rs->samples = malloc(rs->n * sizeof *rs->samples);
             rs->a_w = malloc(rs->n * sizeof *rs->a_w);
