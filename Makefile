@@ -5,11 +5,12 @@ JOBS       ?= 2
 DEMO_OUT   ?= out/study
 DEMO_205   ?= out/study-205-60R15
 PREFIX     ?= /usr/local
+FUZZ_SECONDS ?= 60
 # Labels of tests to leave out of 'make test' (none by default); e.g. SKIP_LABELS=install.
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps build test test-asan demo demo-study demo-study-205 demo-ride bench python fmu \
+.PHONY: all deps build test test-asan demo demo-study demo-study-205 demo-ride bench fuzz python fmu \
         install clean
 
 all: build
@@ -29,7 +30,8 @@ test: build
 	@$(MAKE) --no-print-directory test-asan
 
 test-asan: deps
-	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
+	    -DTIRENV_FUZZ=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 
@@ -75,6 +77,13 @@ bench: build
 	@cmake -S . -B $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS) --target tirenv-bench-nn
 	@$(BUILD)/tirenv bench
 	@$(BUILD)/bench/tirenv-bench-nn
+
+# Every libFuzzer harness (tests/fuzz/, built with clang, ASan and UBSan) for FUZZ_SECONDS
+# each, one after the other; make test runs them for a few seconds. New inputs collect in
+# $(BUILD)/fuzz-work/<parser>/corpus, findings beside it.
+fuzz: build
+	@cd $(BUILD) && FUZZ_SECONDS=$(FUZZ_SECONDS) ctest -L fuzz --output-on-failure \
+	    --timeout $$(($(FUZZ_SECONDS) + 600))
 
 # Installs the CLI, libtirenv (.so and .a), headers, tirenv.pc, the CMake package, man pages
 # and data under PREFIX (default /usr/local); DESTDIR stages it under another root.

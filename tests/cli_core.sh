@@ -113,7 +113,7 @@ check "flat --model point: no deflection, no contact length" \
 
 # --- ride and the plots: the same models, the same colours ----------------------------------
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point,rigid,cam,nn --nn net.json \
-    --out-dir rd
+    --out-dir rd --series
 check "ride with point, rigid, cam and nn as model types: a row each" \
     '[ $rc -eq 0 ] && [ $(rows rd/comfort.csv) -eq 4 ] && [ -s rd/series-nn-10kmh.csv ]'
 run "$bin" compare --data "$data/dataset_good" --nn net.json --models rigid,cam,nn \

@@ -264,6 +264,12 @@ int cli_compare_main(int argc, char *argv[])
         if (!status)
             co.s.nn_R0 = rec.R0;
     }
+    /* The output directory is written as a whole (tirenv_outdir): a failed or killed
+     * comparison leaves the previous one as it was. */
+    const char *out_dir = co.s.out_dir;
+    tirenv_outdir *staged = NULL;
+    if (!status && !(status = tirenv_outdir_begin(out_dir, &staged, &diag)))
+        co.s.out_dir = tirenv_outdir_path(staged);
     if (!status)
         status = tirenv_compare(&ds, &tire, nn, &co.s, &r, &diag);
     if (!status)
@@ -273,11 +279,20 @@ int cli_compare_main(int argc, char *argv[])
         tirenv_diag report_diag;
         tirenv_diag_clear(&report_diag);
         code = cli_fail(status, &diag);
-        if (tirenv_compare_report(&ds, &co.s, &r, NULL, &report_diag) == TIRENV_OK)
+        if (tirenv_compare_report(&ds, &co.s, &r, NULL, &report_diag) == TIRENV_OK &&
+            tirenv_outdir_commit(staged, &report_diag) == TIRENV_OK)
             cli_error("compare: tables and report written to %s without images "
-                      "(--no-images skips gnuplot)", co.s.out_dir);
+                      "(--no-images skips gnuplot)", out_dir);
+        else
+            tirenv_outdir_abort(staged);
         goto done;
     }
+    co.s.out_dir = out_dir;
+    if (!status && staged) {
+        status = tirenv_outdir_commit(staged, &diag);
+        staged = NULL;
+    }
+    tirenv_outdir_abort(staged);
     if (status) {
         code = cli_fail(status, &diag);
         goto done;

@@ -211,18 +211,12 @@ static int write_source(const char *dir, const tirenv_design *d, const char *not
     return tirenv_outfile_commit(&f, diag);
 }
 
-int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
-                                const tirenv_tire *tire,
-                                void (*progress)(void *ctx, size_t done, size_t total),
-                                void *ctx, tirenv_diag *diag)
+/* The data set of design d (whose record r and model type are known good) into dir. */
+static int build_into(const char *dir, const tirenv_design *d, const design_record *r,
+                      const tirenv_model_type *type, const tirenv_tire *tire,
+                      void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
+                      tirenv_diag *diag)
 {
-    const design_record *r = d ? record_of(d) : NULL;
-    const tirenv_model_type *type = r ? tirenv_model_type_find(d->model) : NULL;
-    if (!type)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "design",
-                            "not one of the designs of tirenv_designs()");
-    if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(tire, diag))
-        return TIRENV_EINVAL;
     double load[N_OF(car_205) > N_OF(tractor) ? N_OF(car_205) : N_OF(tractor)];
     if (d->n_cases > N_OF(load))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "design",
@@ -279,6 +273,32 @@ int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
                 c->name);
     }
     return tirenv_outfile_commit(&f, diag);
+}
+
+/* The data set is written as a whole (tirenv_outdir): a failed or killed build leaves the
+ * previous one as it was. */
+int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
+                                const tirenv_tire *tire,
+                                void (*progress)(void *ctx, size_t done, size_t total),
+                                void *ctx, tirenv_diag *diag)
+{
+    const design_record *r = d ? record_of(d) : NULL;
+    const tirenv_model_type *type = r ? tirenv_model_type_find(d->model) : NULL;
+    if (!type)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "design",
+                            "not one of the designs of tirenv_designs()");
+    if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(tire, diag))
+        return TIRENV_EINVAL;
+    tirenv_outdir *out;
+    int status = tirenv_outdir_begin(dir, &out, diag);
+    if (status)
+        return status;
+    status = build_into(tirenv_outdir_path(out), d, r, type, tire, progress, ctx, diag);
+    if (status) {
+        tirenv_outdir_abort(out);
+        return status;
+    }
+    return tirenv_outdir_commit(out, diag);
 }
 
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,

@@ -535,7 +535,7 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     return cs;
 }
 
-int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
+static int study_into(const tirenv_study_settings *s, tirenv_diag *diag)
 {
     char path[1024], sub[1024];
     tirenv_dataset ds = {0}, phys_ds = {0}, out_ds = {0};
@@ -548,7 +548,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     tirenv_tire tire = s->tire;
     char *notes = NULL;
 
-    int status = tirenv_mkdir_p(s->out_dir, diag);
+    int status = TIRENV_OK;
     progress(s, "reading the data set", 0);
     if (!status)
         status = tirenv_dataset_read(s->data_dir, tire.springs.R0, &ds, diag);
@@ -635,4 +635,21 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
         tirenv_profile_free(profiles[i]);
     tirenv_dataset_free(&ds);
     return status;
+}
+
+/* The report directory is written as a whole (tirenv_outdir): a failed or killed study
+ * leaves the previous report as it was, and no empty directory. */
+int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
+{
+    tirenv_outdir *out;
+    int status = tirenv_outdir_begin(s->out_dir, &out, diag);
+    if (status)
+        return status;
+    tirenv_study_settings staged = *s;
+    staged.out_dir = tirenv_outdir_path(out);
+    if ((status = study_into(&staged, diag))) {
+        tirenv_outdir_abort(out);
+        return status;
+    }
+    return tirenv_outdir_commit(out, diag);
 }
