@@ -528,10 +528,17 @@ static void test_model_point(void **state)
         assert_false(x > 0.2 && pt.fx < 0);
     }
     assert_true(rising > 10 && falling > 10);
-    /* An obstacle up to the flat-ground centre height is outside the model's domain. */
-    tirenv_profile *tall = tirenv_profile_cleat(0.3, f.z_flat);
+    /* Ground that rises to the centre within the cam's reach is outside the model's domain:
+     * set takes any profile, the positions near a wall taller than the cam can climb are
+     * refused, those beyond its reach are not. */
+    tirenv_profile *tall = tirenv_profile_cleat(0.3, 2 * t.springs.R0);
     assert_non_null(tall);
-    assert_int_equal(tirenv_model_set(m, tall, G, &diag), TIRENV_ERANGE);
+    assert_int_equal(tirenv_model_set(m, tall, G, &diag), TIRENV_OK);
+    const double reach = tirenv_model_reach(m);
+    tirenv_point near;
+    assert_int_equal(tirenv_model_eval(m, -0.15 - 0.9 * reach, &near, &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "profile");
+    assert_int_equal(tirenv_model_eval(m, -0.15 - 1.01 * reach, &near, &diag), TIRENV_OK);
     tirenv_profile_free(tall);
     tirenv_profile_free(p);
     tirenv_model_free(m);

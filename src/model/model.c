@@ -3,16 +3,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/profile_impl.h"
 #include "model/model_impl.h"
-
-struct tirenv_model {
-    const tirenv_model_type *type;
-    void *state;
-    tirenv_tire tire;
-    double load;           /* N */
-    double z_flat;         /* flat-ground centre height at load, m */
-    int ready;             /* a profile and load are set */
-};
+#include "model/model_state.h"
 
 /* The table every command looks names up in: the physical models, the network, and the point
  * contact a ride compares them with. */
@@ -60,6 +53,7 @@ tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tir
         return NULL;
     m->type = type;
     m->tire = *tire;
+    m->tire_print = tirenv_model__tire_print(tire);
     m->load = NAN;
     m->state = type->alloc(tire);
     if (!m->state) {
@@ -103,12 +97,20 @@ const char *tirenv_model_note(const tirenv_model *m)
     return m->ready && m->type->note ? m->type->note(m->state) : "";
 }
 
-int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
+/* The loads a model takes, wherever a load comes in (flat, set, set_load). */
+static int load_ok(const tirenv_model *m, double load, tirenv_diag *diag)
 {
+    (void)m;
     if (!(load > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
                             "must be a positive force in N, got %g", load);
-    return m->type->flat(m->state, load, out, diag);
+    return TIRENV_OK;
+}
+
+int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    const int status = load_ok(m, load, diag);
+    return status ? status : m->type->flat(m->state, load, out, diag);
 }
 
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
@@ -117,18 +119,23 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
     return m->type->load_for_contact_length(m->state, l_c, load, diag);
 }
 
-/* The enveloping models assume the centre clears the ground it rolls over. */
-static int below_centre(const tirenv_profile *profile, double z_flat, tirenv_diag *diag)
+/* The highest vertex of a profile, from its block maxima. */
+static double profile_top(const tirenv_profile *p)
 {
-    const size_t n = tirenv_profile_size(profile);
-    const double *z = tirenv_profile_z(profile);
-    for (size_t k = 0; k < n; ++k)
-        if (z[k] >= z_flat)
-            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
-                                "ground at %g m reaches the tire centre's flat-ground height "
-                                "%g m: the enveloping models do not apply",
-                                z[k], z_flat);
-    return TIRENV_OK;
+    double top = p->z_block[0];
+    for (size_t b = 1; b < p->n_block; ++b)
+        top = fmax(top, p->z_block[b]);
+    return top;
+}
+
+/* What the driver keeps of a load just set (O(1)); a new profile's top is the caller's. */
+static void took(tirenv_model *m, const tirenv_profile *profile, double load, double z_flat)
+{
+    m->profile = profile;
+    m->load = load;
+    m->z_flat = z_flat;
+    m->ready = 1;
+    m->reach = tirenv_model_reach(m);
 }
 
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
@@ -136,13 +143,43 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
 {
     tirenv_flat flat;
     m->ready = 0;
+    if (!profile)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "profile", "expected a profile, got NULL");
     int status = tirenv_model_flat(m, load, &flat, diag);
-    if (status || (status = below_centre(profile, flat.z_flat, diag)))
+    if (!status)
+        status = m->type->set(m->state, profile, load, flat.z_flat, diag);
+    if (!status) {
+        m->z_top = profile_top(profile);  /* the same address may hold another profile */
+        took(m, profile, load, flat.z_flat);
+    } else {
+        m->profile = NULL;  /* the type may hold the new one half-set: nothing to restore on */
+    }
+    return status;
+}
+
+/* A load change is a new set for a type without its own: the whole profile again. */
+int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag)
+{
+    if (!m->ready)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "no profile and load set (call tirenv_model_set first)");
+    int status = load_ok(m, load, diag);
+    if (status || load == m->load)
         return status;
-    status = m->type->set(m->state, profile, load, flat.z_flat, diag);
-    m->load = load;
-    m->z_flat = flat.z_flat;
-    m->ready = status == TIRENV_OK;
+    double z_flat;
+    if (m->type->set_load) {
+        status = m->type->set_load(m->state, load, &z_flat, diag);
+    } else {
+        tirenv_flat flat;
+        status = m->type->flat(m->state, load, &flat, diag);
+        z_flat = flat.z_flat;
+        if (!status && (status = m->type->set(m->state, m->profile, load, z_flat, diag))) {
+            m->ready = 0;  /* the type's set failed half-way: nothing is known to hold */
+            m->profile = NULL;
+        }
+    }
+    if (!status)
+        took(m, m->profile, load, z_flat);
     return status;
 }
 
@@ -152,16 +189,24 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
 {
     if (!profile) {
         m->ready = 0;
+        m->profile = NULL;
         return TIRENV_OK;
     }
     if (!m->ready)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "no profile and load set (call tirenv_model_set first)");
-    int status = below_centre(profile, m->z_flat, diag);
-    if (!status && m->type->set_profile)
+    int status = TIRENV_OK;
+    if (m->type->set_profile)
         m->type->set_profile(m->state, profile);
-    else if (status || (status = m->type->set(m->state, profile, m->load, m->z_flat, diag)))
+    else
+        status = m->type->set(m->state, profile, m->load, m->z_flat, diag);
+    if (status) {
         m->ready = 0;
+        m->profile = NULL;
+    } else {
+        m->z_top = profile_top(profile);
+        took(m, profile, m->load, m->z_flat);
+    }
     return status;
 }
 
@@ -190,13 +235,33 @@ static int not_set(tirenv_diag *diag)
                         "no profile and load set (call tirenv_model_set first)");
 }
 
+/* The enveloping models assume the hub clears the ground (docs/models.md section 2.5): the
+ * ground within the model's reach of x must stay below the centre's height at x. Checked where
+ * the model is evaluated, so that a road may climb any height: O(1) when the whole profile is
+ * below the centre, else O(log n + the vertices within reach). */
+static int clears_ground(const tirenv_model *m, const tirenv_point *pt, tirenv_diag *diag)
+{
+    if (m->z_top < pt->z)
+        return TIRENV_OK;
+    const double x = pt->x;
+    const double top = tirenv_profile_max_height(m->profile, x - m->reach, x + m->reach);
+    if (top < pt->z)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
+                        "ground at %.6g m within the tire's reach of %.4g m rises to the "
+                        "centre's height %.6g m: the enveloping models assume the hub "
+                        "clears the ground", top, m->reach, pt->z);
+}
+
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
     out->x = x;  /* as the header promises, on failure too */
     if (!m->ready)
         return not_set(diag);
-    const int status = m->type->eval(m->state, x, out, diag);
+    int status = m->type->eval(m->state, x, out, diag);
     out->x = x;
+    if (!status)
+        status = clears_ground(m, out, diag);
     return at_position(m, x, status, diag);
 }
 
@@ -210,7 +275,10 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
             return not_set(diag);
         }
         size_t k = 0;
-        const int status = m->type->envelope(m->state, n, x, out, &k, diag);
+        int status = m->type->envelope(m->state, n, x, out, &k, diag);
+        if (!status)
+            for (k = 0; k < n && !(status = clears_ground(m, &out[k], diag)); ++k)
+                ;
         if (status && failed)
             *failed = k;
         return at_position(m, status ? x[k < n ? k : 0] : 0, status, diag);

@@ -4,6 +4,8 @@
 #ifndef TIRENV_MODEL_IMPL_H
 #define TIRENV_MODEL_IMPL_H
 
+#include <string.h>
+
 #include "tirenv/model.h"
 
 struct tirenv_model_type {
@@ -37,7 +39,49 @@ struct tirenv_model_type {
     /* Optional: the warnings and the note of the last set (tirenv_model_warnings). */
     const char *(*warnings)(const void *state);
     const char *(*note)(const void *state);
+    /* Optional: a new load (N) on the profile already set, at the cost of the work within the
+     * tire's reach: what depends on the profile alone is kept, and so is the warm start. The
+     * flat-ground centre height at the new load in *z_flat (m). On failure nothing of the
+     * state has changed. NULL: the driver sets the whole profile again (tirenv_model_set). */
+    int (*set_load)(void *state, double load, double *z_flat, tirenv_diag *diag);
+    /* Optional, all three or none: the bytes of what the model carries from one call to the
+     * next besides its profile (load, warm start, caches whose content can change a bit of a
+     * result), for tirenv_model_state_save / _restore. state_size is fixed for an instance
+     * (it may depend on the tire, never on what was evaluated); save writes exactly that many
+     * bytes; restore reads them back into an instance of the same type and tire whose profile
+     * is set, and may fail with diag filled (then the instance is unset by the driver). NULL:
+     * the type has no state of its own beyond the driver's load (never for a type that has). */
+    size_t (*state_size)(const void *state);
+    void (*state_save)(const void *state, unsigned char *buf);
+    int (*state_restore)(void *state, const unsigned char *buf, tirenv_diag *diag);
 };
+
+/* A model instance (model.c, model_state.c): the type's state and what the driver keeps. */
+struct tirenv_model {
+    const tirenv_model_type *type;
+    void *state;
+    tirenv_tire tire;
+    unsigned long long tire_print; /* fingerprint of the tire, for state restores */
+    const tirenv_profile *profile; /* the last profile set (borrowed), NULL if none */
+    double load;                   /* N */
+    double z_flat;                 /* flat-ground centre height at load, m */
+    double reach;                  /* tirenv_model_reach at the load set, m */
+    double z_top;                  /* the profile's highest vertex, m */
+    int ready;                     /* a profile and load are set */
+};
+
+/* Sequential reading and writing of a state's bytes (no alignment assumed): each returns the
+ * position after what it moved. */
+static inline unsigned char *tirenv_model__put(unsigned char *p, const void *v, size_t n)
+{
+    memcpy(p, v, n);
+    return p + n;
+}
+static inline const unsigned char *tirenv_model__get(const unsigned char *p, void *v, size_t n)
+{
+    memcpy(v, p, n);
+    return p + n;
+}
 
 /* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
  * R0 from its centre; 5 % covers a tread standing out of the free circle. */

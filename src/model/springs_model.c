@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stddef.h>
 #include "model/deformable.h"
+#include "model/springs_impl.h"
 #include "tirenv/springs.h"
 
 static void *springs_alloc(const tirenv_tire *tire)
@@ -42,12 +43,25 @@ static int springs_z_for_contact_length(void *elem, const tirenv_profile *flat, 
     return 0;
 }
 
+static size_t springs_state_size(const void *elem) { return tirenv_springs__state_size(elem); }
+static void springs_state_save(const void *elem, unsigned char *buf)
+{
+    tirenv_springs__state_save(elem, buf);
+}
+static void springs_state_restore(void *elem, const unsigned char *buf)
+{
+    tirenv_springs__state_restore(elem, buf);
+}
+
 static const tirenv_deformable_ops springs_ops = {
     .alloc = springs_alloc,
     .free = springs_free,
     .forces = springs_forces,
     .contact_length = springs_contact_length,
     .z_for_contact_length = springs_z_for_contact_length,
+    .state_size = springs_state_size,
+    .state_save = springs_state_save,
+    .state_restore = springs_state_restore,
 };
 
 static void *springs_model_alloc(const tirenv_tire *tire)
@@ -83,5 +97,9 @@ static const tirenv_model_type springs_type = {
     .set_network = NULL,
     .warnings = NULL,
     .note = NULL,
+    .set_load = tirenv_deformable_set_load,
+    .state_size = tirenv_deformable_state_size,
+    .state_save = tirenv_deformable_state_save,
+    .state_restore = tirenv_deformable_state_restore,
 };
 const tirenv_model_type *tirenv_model_springs = &springs_type;
