@@ -168,8 +168,8 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
 double tirenv_model_reach(const tirenv_model *m);
 
 /* Equilibrium at position x (m), warm-started from the previous call. On failure out->x is x
- * and diag says why (x, load, bracket). TIRENV_ERANGE where ground within the model's reach
- * of x rises to the centre's height z: the enveloping models assume the hub clears the ground
+ * and diag says why (x, load, bracket). TIRENV_ERANGE where ground within R0 of x rises to
+ * the centre's height z: the enveloping models assume the hub clears the ground
  * (docs/models.md section 2.5). */
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
 

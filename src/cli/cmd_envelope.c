@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "cli/envelope.h"
+#include "cli/level.h"
 
 /* The default sweep starts and ends this far beyond the tire's first and last reach, m. */
 static const double margin = 0.02;
@@ -17,7 +18,8 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
           "                       [--x-from X] [--x-to X] [--dx DX] [--stream] [-o FILE]\n"
-          "                       [--nn FILE] [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
+          "                       [--relative-to ground|datum] [--nn FILE] [--tire FILE]\n"
+          "                       [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
@@ -52,6 +54,7 @@ static void usage(FILE *fp)
           "                       the belt itself touches the ground), from one more ring\n"
           "                       evaluation at each row's (x, z); not with --stream\n",
           fp);
+    cli_help_relative_to(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
     cli_help_obstacle(fp);
@@ -140,17 +143,28 @@ static void summary(const char *cmd, tirenv_model *m, const cli_options *o, doub
             note);
 }
 
-/* The streamed sweep's sink: one row out and into the tally per position. */
+/* The streamed sweep's sink: one row out and into the tally per position, h relative to the
+ * road's local level from a second reading of the file if asked. */
 typedef struct {
     FILE *fp;
     tally t;
+    cli_level_stream *level;  /* NULL: h relative to the datum */
+    tirenv_diag diag;         /* why the level failed */
 } stream_out;
 
 static int stream_row(void *ctx, const tirenv_point *pt)
 {
     stream_out *s = ctx;
-    write_row(s->fp, pt);
-    tally_add(&s->t, pt);
+    tirenv_point row = *pt;
+    if (s->level) {
+        double level;
+        const int status = cli_level_stream_at(s->level, pt->x, &level, &s->diag);
+        if (status)
+            return status;
+        row.h -= level;
+    }
+    write_row(s->fp, &row);
+    tally_add(&s->t, &row);
     return ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
 }
 
@@ -185,7 +199,7 @@ static void sweep_ends(const cli_options *o, const tirenv_model *m, double first
 
 /* --stream: rows go out as they are computed; the output file is still all or nothing. */
 static int envelope_stream(const char *cmd, const cli_options *o, tirenv_model *m,
-                           double load)
+                           double load, cli_relative_to relative)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
@@ -200,24 +214,34 @@ static int envelope_stream(const char *cmd, const cli_options *o, tirenv_model *
                   x_from, x_to);
         return CLI_EXIT_USAGE;
     }
-    tirenv_profile_reader *in = NULL;
+    tirenv_profile_reader *in = NULL, *in_level = NULL;
     tirenv_outfile out;
     stream_out so = {0};
+    tirenv_diag_clear(&so.diag);
     const char *path = o->output ? o->output : "-";
     if (!(status = tirenv_profile_reader_open(o->obstacle_arg, &in, &diag)) &&
-        !(status = tirenv_outfile_open(&out, path, &diag))) {
+        relative == CLI_RELATIVE_GROUND &&
+        !(status = tirenv_profile_reader_open(o->obstacle_arg, &in_level, &diag)) &&
+        !(so.level = cli_level_stream_alloc(tirenv_profile_reader_source, in_level,
+                                            cli_level_width(tirenv_model_tire(m)))))
+        status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (!status && !(status = tirenv_outfile_open(&out, path, &diag))) {
         so.fp = out.fp;
         fputs(header, out.fp);
         status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx,
                                      load, stream_row, &so, NULL, &diag);
         if (status == TIRENV_EIO && ferror(out.fp))
             status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
+        else if (status && so.diag.message[0])  /* the level's reading failed */
+            diag = so.diag;
         if (!status)
             status = tirenv_outfile_commit(&out, &diag);
         else
             tirenv_outfile_abort(&out);
     }
     tirenv_profile_reader_free(in);
+    tirenv_profile_reader_free(in_level);
+    cli_level_stream_free(so.level);
     if (status)
         return cli_fail(status, &diag);
     summary(cmd, m, o, load, &so.t);
@@ -226,7 +250,7 @@ static int envelope_stream(const char *cmd, const cli_options *o, tirenv_model *
 
 /* The whole sweep in memory, through tirenv_model_envelope, the rows written after it. */
 static int envelope_whole(const char *cmd, const cli_options *o, tirenv_model *m, double load,
-                          const tirenv_profile *prof, int detail)
+                          const tirenv_profile *prof, int detail, cli_relative_to relative)
 {
     double first, last, x_from, x_to, *x = NULL;
     tirenv_profile_extent(prof, &first, &last);
@@ -249,6 +273,11 @@ static int envelope_whole(const char *cmd, const cli_options *o, tirenv_model *m
     /* Opened before the sweep so that a bad -o path fails at once, not after it. */
     if (!status && !(status = tirenv_outfile_open(&out, o->output ? o->output : "-", &diag))) {
         status = tirenv_model_envelope(m, n, x, pt, NULL, &diag);
+        if (!status && relative == CLI_RELATIVE_GROUND) {
+            const double width = cli_level_width(tirenv_model_tire(m));
+            for (size_t k = 0; k < n; ++k)
+                pt[k].h -= tirenv_profile_level(prof, width, pt[k].x);
+        }
         if (!status && detail) {
             status = write_detail(out.fp, tirenv_model_tire(m), prof, pt, n, &diag);
         } else if (!status) {
@@ -275,7 +304,7 @@ static int envelope_whole(const char *cmd, const cli_options *o, tirenv_model *m
 }
 
 int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_type *type,
-                     int stream, int detail)
+                     int stream, int detail, cli_relative_to relative)
 {
     const char *missing = NULL;
     if (!o->obstacle)
@@ -302,8 +331,8 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
     int code;
     if (!(code = cli_tire(o, &tire)) && (stream || !(code = cli_profile(o, &prof))) &&
         !(code = cli_model(type, &tire, o, &m)) && !(code = cli_load(o, m, &load)))
-        code = stream ? envelope_stream(cmd, o, m, load)
-                      : envelope_whole(cmd, o, m, load, prof, detail);
+        code = stream ? envelope_stream(cmd, o, m, load, relative)
+                      : envelope_whole(cmd, o, m, load, prof, detail, relative);
     tirenv_model_free(m);
     tirenv_profile_free(prof);
     return code;
@@ -312,9 +341,12 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
 int cli_envelope_main(int argc, char *argv[])
 {
     int stream = 0, detail = 0;
+    cli_relative_to relative = CLI_RELATIVE_DATUM;
     const cli_opt own[] = {
         {.name = "stream", .kind = CLI_FLAG, .dst = &stream},
         {.name = "detail", .kind = CLI_FLAG, .dst = &detail},
+        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &relative,
+         .parse = cli_parse_relative_to},
         {.name = NULL},
     };
     const cli_parser p = {.name = "envelope", .usage = usage, .opts = own,
@@ -328,5 +360,5 @@ int cli_envelope_main(int argc, char *argv[])
         cli_error("envelope: expected --model NAME; 'tirenv envelope --help' shows the options");
         return CLI_EXIT_USAGE;
     }
-    return cli_envelope_run("envelope", &o, o.type, stream, detail);
+    return cli_envelope_run("envelope", &o, o.type, stream, detail, relative);
 }

@@ -10,6 +10,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
           "                      [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
+          "                      [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
@@ -50,13 +51,20 @@ static void usage(FILE *fp)
           "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
           "                       '-': standard output)\n",
           fp);
+    cli_help_relative_to(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
 
 int cli_predict_main(int argc, char *argv[])
 {
-    const cli_parser p = {.name = "predict", .usage = usage,
+    cli_relative_to relative = CLI_RELATIVE_DATUM;
+    const cli_opt own[] = {
+        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &relative,
+         .parse = cli_parse_relative_to},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "predict", .usage = usage, .opts = own,
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
                                     CLI_SWEEP | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK};
     cli_options o;
@@ -74,5 +82,5 @@ int cli_predict_main(int argc, char *argv[])
                   "options");
         return CLI_EXIT_USAGE;
     }
-    return cli_envelope_run("predict", &o, o.type ? o.type : tirenv_model_nn, 0, 0);
+    return cli_envelope_run("predict", &o, o.type ? o.type : tirenv_model_nn, 0, 0, relative);
 }

@@ -235,22 +235,24 @@ static int not_set(tirenv_diag *diag)
                         "no profile and load set (call tirenv_model_set first)");
 }
 
-/* The enveloping models assume the hub clears the ground (docs/models.md section 2.5): the
- * ground within the model's reach of x must stay below the centre's height at x. Checked where
- * the model is evaluated, so that a road may climb any height: O(1) when the whole profile is
- * below the centre, else O(log n + the vertices within reach). */
+/* The enveloping models assume the hub clears the ground (docs/models.md section 2.5): no
+ * ground within the tire's free radius R0 of x (horizontally: where the free circle stands)
+ * may rise to the centre's height at x. A tire rolling off a cliff has ground above its hub
+ * once it is past the edge, farther than R0 behind: that is not refused. Checked where the
+ * model is evaluated, so that a road may climb any height: O(1) when the whole profile is
+ * below the centre, else O(log n + the vertices within R0). */
 static int clears_ground(const tirenv_model *m, const tirenv_point *pt, tirenv_diag *diag)
 {
     if (m->z_top < pt->z)
         return TIRENV_OK;
-    const double x = pt->x;
-    const double top = tirenv_profile_max_height(m->profile, x - m->reach, x + m->reach);
+    const double x = pt->x, R0 = m->tire.springs.R0;
+    const double top = tirenv_profile_max_height(m->profile, x - R0, x + R0);
     if (top < pt->z)
         return TIRENV_OK;
     return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
-                        "ground at %.6g m within the tire's reach of %.4g m rises to the "
-                        "centre's height %.6g m: the enveloping models assume the hub "
-                        "clears the ground", top, m->reach, pt->z);
+                        "ground at %.6g m within the tire's radius %.4g m of the centre rises "
+                        "to the centre's height %.6g m: the enveloping models assume the hub "
+                        "clears the ground", top, R0, pt->z);
 }
 
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
