@@ -30,3 +30,17 @@ int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load,
     }
     return status;
 }
+
+/* One row per load; the model's set at each load is the whole profile's (a table is built
+ * once per run, and tirenv_ride_effective's sweep dominates it). */
+int tirenv_ride_table_fill(tirenv_model *model, const tirenv_profile *p, size_t m,
+                           const double load[], double x0, double dx, size_t n, double w[],
+                           tirenv_diag *diag)
+{
+    if (!load || m < 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load", "expected at least one load");
+    int status = TIRENV_OK;
+    for (size_t j = 0; j < m && !status; ++j)
+        status = tirenv_ride_effective(model, p, load[j], x0, dx, n, w + j * n, diag);
+    return status;
+}
