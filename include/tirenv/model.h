@@ -131,6 +131,8 @@ int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag);
 
 /* The load (N) of the last successful tirenv_model_set or _set_load; NaN before. */
 double tirenv_model_load(const tirenv_model *m);
+/* The profile the model is set on (borrowed), or NULL when it is not set. */
+const tirenv_profile *tirenv_model_profile(const tirenv_model *m);
 
 /* What a host must keep to rewind the model (a co-simulation's step rejected, a state saved
  * and restored): the load, the flat-ground state, the warm start and every cache that can

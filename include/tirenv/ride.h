@@ -62,7 +62,8 @@ typedef struct {
  * the model's effective height h (m) at the load of one tire (N), by tirenv_model_envelope
  * over blocks of the grid; the point contact (tirenv_model_point), or m NULL, gives the
  * profile's own height under the wheel centre. The model is set to p and the load
- * (tirenv_model_set); its errors name the position. */
+ * (tirenv_model_set, or tirenv_model_set_load if it is set on p already: the rows of a
+ * table); its errors name the position. */
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 
@@ -93,7 +94,10 @@ typedef struct {
 } tirenv_ride_table;
 
 /* The rows of a table: tirenv_ride_effective of model m over profile p at each of the m
- * loads (N, per tire) into w[j*n + k]. The model ends set at the last load. */
+ * loads (N, per tire) into w[j*n + k], the model set on p once and its load changed for the
+ * others (tirenv_model_set_load: each row bit for bit a fresh set's for rigid, cam, nn and
+ * point, within the equilibrium's tolerances for springs and ring). The model ends set at
+ * the last load. */
 int tirenv_ride_table_fill(tirenv_model *model, const tirenv_profile *p, size_t m,
                            const double load[], double x0, double dx, size_t n, double w[],
                            tirenv_diag *diag);

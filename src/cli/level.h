@@ -1,5 +1,5 @@
-/* Private to the commands that write h: the road's local level (tirenv_profile_level, docs/
- * models.md section 2.6) along a sweep, over a whole profile or over a profile read as it goes.
+/* Private to the commands that write h: the road's local level (tirenv_profile_level,
+ * docs/models.md section 2.6) along a sweep, over a whole profile or one read as it goes.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_CLI_LEVEL_H
 #define TIRENV_CLI_LEVEL_H

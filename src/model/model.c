@@ -86,6 +86,10 @@ int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double
 }
 
 double tirenv_model_load(const tirenv_model *m) { return m->ready ? m->load : NAN; }
+const tirenv_profile *tirenv_model_profile(const tirenv_model *m)
+{
+    return m->ready ? m->profile : NULL;
+}
 
 const char *tirenv_model_warnings(const tirenv_model *m)
 {

@@ -20,6 +20,24 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* Steffen's monotone slopes (M. Steffen, A simple method for monotonic interpolation in one
+ * dimension, Astron. Astrophys. 239, 1990, his eq. 11 with the one-sided slopes at the ends, the
+ * "simplest possibility" of his section 2.2), on a uniform grid of spacing h: at an inner point
+ * the smallest of the two secants and half their mean, signed alike, 0 at an extremum. The same
+ * interpolant as GSL's gsl_interp_steffen, which a track uses; a table computes its own, so that
+ * its rows share one index per position and give value and slope together. */
+static void steffen_slopes(size_t n, double h, const double w[], double yp[])
+{
+    yp[0] = (w[1] - w[0]) / h;
+    yp[n - 1] = (w[n - 1] - w[n - 2]) / h;
+    for (size_t k = 1; k + 1 < n; ++k) {
+        const double s_l = (w[k] - w[k - 1]) / h, s_r = (w[k + 1] - w[k]) / h;
+        const double mean = 0.5 * (s_l + s_r);
+        const double mag = fmin(fmin(fabs(s_l), fabs(s_r)), 0.5 * fabs(mean));
+        yp[k] = (s_l > 0) == (s_r > 0) && s_l != 0 && s_r != 0 ? copysign(2 * mag, s_l) : 0;
+    }
+}
+
 int tirenv_ride__input_init(tirenv_ride__input *in, const tirenv_ride_track *track,
                             const tirenv_ride_table *table, const tirenv_ride_input *fn)
 {
@@ -29,36 +47,40 @@ int tirenv_ride__input_init(tirenv_ride__input *in, const tirenv_ride_track *tra
         in->dx = fn->dx;
         return TIRENV_OK;
     }
-    in->kind = track ? TIRENV_RIDE__TRACK : TIRENV_RIDE__TABLE;
     in->x0 = track ? track->x0 : table->x0;
     in->dx = track ? track->dx : table->dx;
     in->n = track ? track->n : table->n;
     in->m = track ? 1 : table->m;
     in->w = track ? track->w : table->w;
+    if (table) {
+        in->kind = TIRENV_RIDE__TABLE;
+        if (!(in->slope = malloc(in->m * in->n * sizeof *in->slope)))
+            return TIRENV_ENOMEM;
+        for (size_t j = 0; j < in->m; ++j)
+            steffen_slopes(in->n, in->dx, in->w + j * in->n, in->slope + j * in->n);
+        return TIRENV_OK;
+    }
+    in->kind = TIRENV_RIDE__TRACK;
     in->x = malloc(in->n * sizeof *in->x);
-    in->rows = calloc(in->m, sizeof *in->rows);
+    in->rows = calloc(1, sizeof *in->rows);
     in->acc = gsl_interp_accel_alloc();
     if (!in->x || !in->rows || !in->acc)
         return TIRENV_ENOMEM;
     for (size_t k = 0; k < in->n; ++k)
         in->x[k] = in->x0 + (double)k * in->dx;
-    for (size_t j = 0; j < in->m; ++j) {
-        if (!(in->rows[j] = gsl_interp_alloc(gsl_interp_steffen, in->n)))
-            return TIRENV_ENOMEM;
-        if (gsl_interp_init(in->rows[j], in->x, in->w + j * in->n, in->n))
-            return TIRENV_EINVAL;
-    }
-    /* Start at the segment of the static load, where a run starts. */
-    return TIRENV_OK;
+    if (!(in->rows[0] = gsl_interp_alloc(gsl_interp_steffen, in->n)))
+        return TIRENV_ENOMEM;
+    return gsl_interp_init(in->rows[0], in->x, in->w, in->n) ? TIRENV_EINVAL : TIRENV_OK;
 }
 
 void tirenv_ride__input_free(tirenv_ride__input *in)
 {
-    for (size_t j = 0; in->rows && j < in->m; ++j)
-        if (in->rows[j])
-            gsl_interp_free(in->rows[j]);
+    if (in->rows && in->rows[0])
+        gsl_interp_free(in->rows[0]);
     free(in->rows);
     free(in->x);
+    free(in->slope);
+    in->slope = NULL;
     if (in->acc)
         gsl_interp_accel_free(in->acc);
     in->rows = NULL;
@@ -71,18 +93,58 @@ double tirenv_ride__input_dx(const tirenv_ride__input *in)
     return in->dx;
 }
 
-/* Height and dw/dx of row j at position x; beyond the grid the end values, flat. */
-static void row_at(const tirenv_ride__input *in, size_t j, double x, double *w, double *w_x)
+/* A track's height and dw/dx at position x (GSL); beyond the grid the end values, flat. */
+static void track_at(const tirenv_ride__input *in, double x, double *w, double *w_x)
 {
-    const double *row = in->w + j * in->n;
+    const double *row = in->w;
     const double x_end = in->x0 + (double)(in->n - 1) * in->dx;
     if (x <= in->x0 || x >= x_end) {
         *w = x <= in->x0 ? row[0] : row[in->n - 1];
         *w_x = 0;
         return;
     }
-    *w = gsl_interp_eval(in->rows[j], in->x, row, x, in->acc);
-    *w_x = gsl_interp_eval_deriv(in->rows[j], in->x, row, x, in->acc);
+    *w = gsl_interp_eval(in->rows[0], in->x, row, x, in->acc);
+    *w_x = gsl_interp_eval_deriv(in->rows[0], in->x, row, x, in->acc);
+}
+
+/* Where position x falls on a table's grid: its cell k and the offset t (m) into it; the
+ * rows all read there. Beyond the grid (out = 1) the end values continue, flat. */
+typedef struct {
+    size_t k;
+    double t;
+    int out;
+} grid_spot;
+
+static grid_spot spot_of(const tirenv_ride__input *in, double x)
+{
+    const double x_end = in->x0 + (double)(in->n - 1) * in->dx;
+    if (x <= in->x0)
+        return (grid_spot){0, 0, 1};
+    if (x >= x_end)
+        return (grid_spot){in->n - 1, 0, 1};
+    const double u = (x - in->x0) / in->dx;
+    size_t k = (size_t)u;
+    if (k > in->n - 2)
+        k = in->n - 2;
+    return (grid_spot){k, x - (in->x0 + (double)k * in->dx), 0};
+}
+
+/* Row j's height and dw/dx at a spot: the cubic of Steffen's eqs. 2 to 5 on the cell, from its
+ * ends' heights and slopes. */
+static void row_at(const tirenv_ride__input *in, size_t j, const grid_spot *p, double *w,
+                   double *w_x)
+{
+    const double *row = in->w + j * in->n, *yp = in->slope + j * in->n;
+    if (p->out) {
+        *w = row[p->k];
+        *w_x = 0;
+        return;
+    }
+    const double h = in->dx, y0 = row[p->k], y1 = row[p->k + 1];
+    const double d0 = yp[p->k], d1 = yp[p->k + 1], s = (y1 - y0) / h, t = p->t;
+    const double a = (d0 + d1 - 2 * s) / (h * h), b = (3 * s - 2 * d0 - d1) / h;
+    *w = y0 + t * (d0 + t * (b + t * a));
+    *w_x = d0 + t * (2 * b + 3 * a * t);
 }
 
 /* The tire force of a track, as the ride has always computed it. */
@@ -109,16 +171,17 @@ static void table_axle(tirenv_ride__input *in, const balance *b, double x, doubl
 {
     const tirenv_ride_table *t = in->table;
     const size_t m = t->m;
+    const grid_spot p = spot_of(in, x);
     if (m == 1) {
-        row_at(in, 0, x, w, w_x);
+        row_at(in, 0, &p, w, w_x);
         const double g = g_of(b, *w, *w_x);
         *G = g > 0 ? g : 0;
         return;
     }
     size_t j = in->hint < m - 1 ? in->hint : m - 2;
     double wj, wxj, wk, wxk;  /* rows j and k = j + 1 */
-    row_at(in, j, x, &wj, &wxj);
-    row_at(in, j + 1, x, &wk, &wxk);
+    row_at(in, j, &p, &wj, &wxj);
+    row_at(in, j + 1, &p, &wk, &wxk);
     for (;;) {
         const double phi_j = g_of(b, wj, wxj) - t->load[j];
         const double phi_k = g_of(b, wk, wxk) - t->load[j + 1];
@@ -133,7 +196,7 @@ static void table_axle(tirenv_ride__input *in, const balance *b, double x, doubl
             --j;
             wk = wj;
             wxk = wxj;
-            row_at(in, j, x, &wj, &wxj);
+            row_at(in, j, &p, &wj, &wxj);
             continue;
         }
         if (phi_k >= 0 && j + 2 == m) {  /* heavier than the heaviest row */
@@ -146,7 +209,7 @@ static void table_axle(tirenv_ride__input *in, const balance *b, double x, doubl
             ++j;
             wj = wk;
             wxj = wxk;
-            row_at(in, j + 1, x, &wk, &wxk);
+            row_at(in, j + 1, &p, &wk, &wxk);
             continue;
         }
         /* phi_j >= 0 >= phi_k: g - G is a line on the segment, its zero the balance. */
@@ -226,7 +289,7 @@ int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, 
 {
     double w_x, G;
     if (in->kind == TIRENV_RIDE__TRACK) {
-        row_at(in, 0, x, w, &w_x);
+        track_at(in, x, w, &w_x);
         *w_dot = V * w_x;
         *F = tire_force(ax, ax->tires * G0, *w, *w_dot, z_a, zd_a);
         return TIRENV_OK;
@@ -253,8 +316,13 @@ int tirenv_ride__input_static(tirenv_ride__input *in, double G0, double x, doubl
         const double G = fmin(fmax(G0, in->fn->load_min), in->fn->load_max);
         return in->fn->fn(in->fn->ctx, x, G, w, &w_x, diag);
     }
+    if (in->kind == TIRENV_RIDE__TRACK) {
+        track_at(in, x, w, &w_x);
+        return TIRENV_OK;
+    }
+    const grid_spot p = spot_of(in, x);
     if (in->m == 1) {
-        row_at(in, 0, x, w, &w_x);
+        row_at(in, 0, &p, w, &w_x);
         return TIRENV_OK;
     }
     const double *load = in->table->load;
@@ -263,8 +331,8 @@ int tirenv_ride__input_static(tirenv_ride__input *in, double G0, double x, doubl
         ++j;
     in->hint = j;
     double wj, wk;
-    row_at(in, j, x, &wj, &w_x);
-    row_at(in, j + 1, x, &wk, &w_x);
+    row_at(in, j, &p, &wj, &w_x);
+    row_at(in, j + 1, &p, &wk, &w_x);
     const double s = fmin(fmax((G0 - load[j]) / (load[j + 1] - load[j]), 0.0), 1.0);
     *w = wj + s * (wk - wj);
     return TIRENV_OK;

@@ -25,8 +25,9 @@ typedef struct {
     size_t n, m;           /* grid points, rows */
     const double *w;       /* the rows, m*n heights, m */
     double *x;
-    gsl_interp **rows;
+    gsl_interp **rows;     /* a track's one row (GSL's Steffen spline) */
     gsl_interp_accel *acc;
+    double *slope;         /* a table's: the Steffen slopes dw/dx at its m*n points */
     size_t hint;           /* a table's segment of rows where the last load was found */
 } tirenv_ride__input;
 

@@ -17,7 +17,10 @@ int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load,
             w[k] = tirenv_profile_height(p, x0 + (double)k * dx);
         return TIRENV_OK;
     }
-    int status = tirenv_model_set(m, p, load, diag);
+    /* A model already set on this profile only changes its load (a table's next row): the
+     * profile's own work (the network's decomposition of a road) is not done again. */
+    int status = tirenv_model_profile(m) == p ? tirenv_model_set_load(m, load, diag)
+                                              : tirenv_model_set(m, p, load, diag);
     double x[RIDE_BLOCK];
     tirenv_point pt[RIDE_BLOCK];
     for (size_t k0 = 0; k0 < n && !status; k0 += RIDE_BLOCK) {
@@ -31,8 +34,7 @@ int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load,
     return status;
 }
 
-/* One row per load; the model's set at each load is the whole profile's (a table is built
- * once per run, and tirenv_ride_effective's sweep dominates it). */
+/* One row per load: the model is set on the profile once, then only its load changes. */
 int tirenv_ride_table_fill(tirenv_model *model, const tirenv_profile *p, size_t m,
                            const double load[], double x0, double dx, size_t n, double w[],
                            tirenv_diag *diag)
