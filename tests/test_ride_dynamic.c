@@ -36,10 +36,7 @@ static tirenv_ride_settings cleat_run(double speed)
     return s;
 }
 
-/* The loads of a table's rows, as the CLI's: factors of the static load of one tire. */
-static const double factors[] = {0.1, 0.2,  0.3, 0.4,  0.55, 0.7, 0.85,
-                                 1.0, 1.2, 1.45, 1.75, 2.1, 2.5, 3.0};
-enum { N_FACTORS = sizeof factors / sizeof factors[0] };
+enum { N_FACTORS = TIRENV_RIDE_TABLE_LOADS };
 
 static int samples_close(const tirenv_ride_sample *a, const tirenv_ride_sample *b, double rel)
 {
@@ -115,6 +112,18 @@ static void test_constant_load_is_static(void **state)
         free(rows[axle]);
     }
     tirenv_model_free(m);
+    /* The rigid disc's road does not depend on the load: its table is one row, at G0. */
+    tirenv_model *rigid = tirenv_model_alloc(tirenv_model_rigid, &tire);
+    double rl[TIRENV_RIDE_TABLE_LOADS], *rw = malloc(TIRENV_RIDE_TABLE_LOADS * GRID_N *
+                                                     sizeof *rw);
+    size_t rows_rigid = 0;
+    assert_non_null(rw);
+    assert_int_equal(tirenv_ride_table_build(rigid, cleat, G0[0], grid_x0, grid_dx, GRID_N, rl,
+                                             rw, &rows_rigid, NULL, 0, &d), TIRENV_OK);
+    assert_int_equal(rows_rigid, 1);
+    assert_true(rl[0] == G0[0]);
+    free(rw);
+    tirenv_model_free(rigid);
     tirenv_profile_free(cleat);
 }
 
@@ -192,15 +201,10 @@ static void test_follows_the_load(void **state)
             rows[axle] = malloc(N_FACTORS * GRID_N * sizeof(double));
             assert_non_null(rows[axle]);
             tirenv_model *tm = tirenv_model_alloc(type, &tire);
-            for (size_t j = 0; j < N_FACTORS; ++j) {
-                loads[axle][m] = factors[j] * G0;
-                if (tirenv_ride_effective(tm, cleat, loads[axle][m], grid_x0, grid_dx, GRID_N,
-                                          rows[axle] + m * GRID_N, &d) == TIRENV_OK)
-                    ++m;
-                else
-                    break;  /* the cam's contact law ends below 3 times the load */
-            }
-            assert_true(m >= 8);
+            assert_int_equal(tirenv_ride_table_build(tm, cleat, G0, grid_x0, grid_dx, GRID_N,
+                                                     loads[axle], rows[axle], &m, NULL, 0, &d),
+                             TIRENV_OK);
+            assert_true(m >= 8);  /* the cam's contact law ends below 3 times the load */
             tirenv_model_free(tm);
             table[axle] = (tirenv_ride_table){grid_x0, grid_dx, GRID_N, m, loads[axle],
                                               rows[axle]};

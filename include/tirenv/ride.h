@@ -93,6 +93,23 @@ typedef struct {
     const double *w;       /* m*n heights, m (borrowed) */
 } tirenv_ride_table;
 
+/* The loads of the rows of tirenv ride's tables for a tire of static load G0 (N): G0 times
+ * 0.1, 0.2, 0.3, 0.4, 0.55, 0.7, 0.85, 1, 1.2, 1.45, 1.75, 2.1, 2.5 and 3 (docs/models.md
+ * section 9.5), into load[TIRENV_RIDE_TABLE_LOADS]. */
+#define TIRENV_RIDE_TABLE_LOADS 14
+void tirenv_ride_table_loads(double G0, double load[]);
+
+/* tirenv ride's table for a tire of static load G0 (N): rows of model over profile p at the
+ * loads of tirenv_ride_table_loads (as tirenv_ride_table_fill), into load[] and w[] (room for
+ * TIRENV_RIDE_TABLE_LOADS rows of n), their number in *rows. A load the model refuses ends the
+ * rows above G0, or is left out below it; G0's row must succeed (its error is returned). Rows
+ * all alike (a model whose road does not depend on the load: rigid, point) become one, at G0.
+ * warnings (may be NULL) receives the model's warnings at G0, then those of the lightest and
+ * the heaviest rows if they have their own, one per line. */
+int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double G0, double x0,
+                            double dx, size_t n, double load[], double w[], size_t *rows,
+                            char *warnings, size_t warnings_size, tirenv_diag *diag);
+
 /* The rows of a table: tirenv_ride_effective of model m over profile p at each of the m
  * loads (N, per tire) into w[j*n + k], the model set on p once and its load changed for the
  * others (tirenv_model_set_load: each row bit for bit a fresh set's for rigid, cam, nn and

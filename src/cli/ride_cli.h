@@ -89,16 +89,9 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
                         double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
 
-/* The loads of a table's rows for a tire of static load G0 (N): G0 times the factors of
- * docs/models.md section 9.5, into load[] (room for RIDE_TABLE_LOADS); their number. */
-enum { RIDE_TABLE_LOADS = 16 };
-size_t ride_cli_table_loads(double G0, double load[]);
-
-/* What one axle's tires follow at every load of ride_cli_table_loads: the rows that the model
- * computes (a load it refuses ends the rows above the static load, or is left out below it),
- * into *table (loads and heights allocated: free table->load and table->w); rows all alike
- * (a model whose effective road does not depend on the load) become one. The static load's
- * row must succeed. Warnings as ride_cli_axle_input's, of the static load's row. */
+/* What one axle's tires follow at every load of tirenv_ride_table_loads
+ * (tirenv_ride_table_build for a model of this type), into *table (loads and heights
+ * allocated: free table->load and table->w). Warnings as tirenv_ride_table_build's. */
 int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, double G0,
                         const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
                         double dx, size_t n, tirenv_ride_table *table, char *warnings,

@@ -239,8 +239,9 @@ static int run_one(const ride_setup *s, ride_inputs *in, ride_enveloping env,
     ride_direct d[2];
     tirenv_ride_input fn[2];
     for (int axle = 0; axle < 2; ++axle) {
-        double load[RIDE_TABLE_LOADS];
-        size_t m = ride_cli_table_loads(s->load[axle], load);
+        double load[TIRENV_RIDE_TABLE_LOADS];
+        size_t m = TIRENV_RIDE_TABLE_LOADS;
+        tirenv_ride_table_loads(s->load[axle], load);
         /* The heaviest load the model takes, as the tables end. */
         while (m > 1 && load[m - 1] > s->load[axle] &&
                tirenv_model_set_load(in->direct[axle], load[m - 1], NULL))
