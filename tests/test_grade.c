@@ -15,6 +15,7 @@
 
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"
+#include "tirenv/profile_file.h"
 
 /* ---- the local level -------------------------------------------------------------------- */
 
@@ -375,6 +376,67 @@ static void test_clearance_is_local(void **state)
     tirenv_profile_free(p);
 }
 
+/* Chrono's designed twist track Horstwalde (250 m, up to 1.5 m high along its reference line,
+ * read by the OpenCRG reader): the rigid disc and the cam run it whole and follow its height,
+ * (the disc never below the road under it); relative to the local level what is left are
+ * the track's features shorter than the tire (up to 0.15 m away from its drop). The track
+ * drops some 0.73 m within 0.1 m at u = 150.2 to 150.3 m: the springs model runs up to it and
+ * is refused just past the edge (from 150.82 m), where its hub would pass under it, and runs
+ * again beyond R0 from it (docs/models.md section 2.5). */
+static void test_horstwalde(void **state)
+{
+    (void)state;
+    char path[600];
+    snprintf(path, sizeof path, "%s/crg/Horstwalde.crg", TIRENV_SAMPLES);
+    tirenv_profile *p = NULL;
+    tirenv_diag d;
+    if (tirenv_profile_read_file(path, NULL, &p, &d))
+        fail_msg("%s: %s (the sample files beside the repository are needed)", path, d.message);
+    double first, last;
+    tirenv_profile_extent(p, &first, &last);
+    assert_true(last - first > 249);
+    const tirenv_tire tire = tirenv_tire_default();
+    const double R0 = tire.springs.R0;
+    const char *names[] = {"rigid", "cam"};
+    for (size_t i = 0; i < 2; ++i) {
+        tirenv_model *m = model_named(names[i], &tire, NULL);
+        double G;
+        assert_int_equal(tirenv_model_load_for_contact_length(m, 0.33, &G, &d), TIRENV_OK);
+        assert_int_equal(tirenv_model_set(m, p, G, &d), TIRENV_OK);
+        double top = 0, worst_level = 0;
+        for (double x = first; x <= last; x += 0.05) {
+            tirenv_point pt;
+            if (tirenv_model_eval(m, x, &pt, &d))
+                fail_msg("%s at %g m: %s", names[i], x, d.message);
+            top = fmax(top, pt.h);
+            const double q = tirenv_profile_height(p, x);
+            if (i == 0)  /* the disc never sinks below the road under its centre */
+                assert_true(pt.h >= q - 1e-9);
+            const double rel = pt.h - tirenv_profile_level(p, 2 * R0, x);
+            if (fabs(x - 150.3) > 2 * R0)  /* away from the drop */
+                worst_level = fmax(worst_level, fabs(rel));
+        }
+        print_message("Horstwalde, %s: highest h %.4f m, |h - level| at most %.4f m away "
+                      "from the drop\n",
+                      names[i], top, worst_level);
+        assert_true(top > 1.4 && top < 1.6);
+        tirenv_model_free(m);
+    }
+    tirenv_model *s = model_named("springs", &tire, NULL);
+    double G;
+    assert_int_equal(tirenv_model_load_for_contact_length(s, 0.33, &G, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_set(s, p, G, &d), TIRENV_OK);
+    tirenv_point pt;
+    for (double x = 120.0; x <= 150.1; x += 0.1)
+        if (tirenv_model_eval(s, x, &pt, &d))
+            fail_msg("springs at %g m: %s", x, d.message);
+    assert_int_equal(tirenv_model_eval(s, 150.85, &pt, &d), TIRENV_ERANGE);
+    assert_string_equal(d.field, "profile");
+    assert_int_equal(tirenv_model_eval(s, 151.0, &pt, &d), TIRENV_OK);
+    tirenv_model_free(s);
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -384,6 +446,7 @@ int main(void)
         cmocka_unit_test(test_deformable_on_grade),
         cmocka_unit_test(test_stream_graded),
         cmocka_unit_test(test_clearance_is_local),
+        cmocka_unit_test(test_horstwalde),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
