@@ -107,23 +107,23 @@ class Ride:
                 "peak_az": float(np.max(np.abs(s["seat_az"]))), "lift_off": lift}
 
 
-def _inputs(name, tire, load, profile, network, x0, dx, n):
+def _inputs(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
     """What one axle's tires follow on the grid: the model type's effective height, the
     network's through the same table (src/cli/ride_input.c)."""
     w, diag = np.empty(n), new_diag()
-    m = Model(name, tire, network)
+    m = Model(name, tire, network, extrapolate)
     check(lib.tirenv_ride_effective(m._m, profile._p, load, x0, dx, n, double_ptr(w), diag),
           diag)
     return w
 
 
-def _table(name, tire, load, profile, network, x0, dx, n):
+def _table(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
     """What one axle's tires follow at every load of 'tirenv ride's table (docs/models.md
     section 9.5): (loads, rows), rows[j] on the grid at loads[j]."""
     m_max = lib.TIRENV_RIDE_TABLE_LOADS
     loads, w = np.empty(m_max), np.empty(m_max * n)
     rows, diag = ffi.new("size_t *"), new_diag()
-    m = Model(name, tire, network)
+    m = Model(name, tire, network, extrapolate)
     check(lib.tirenv_ride_table_build(m._m, profile._p, load, x0, dx, n, double_ptr(loads),
                                       double_ptr(w), rows, ffi.NULL, 0, diag), diag)
     return loads[:rows[0]].copy(), w[:rows[0] * n].reshape(rows[0], n).copy()
@@ -149,15 +149,17 @@ def speed_of(v):
 
 
 def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005, dt=0.001,
-         method="rk4", tol=1e-10, x_from=None, x_to=None, enveloping="dynamic"):
+         method="rk4", tol=1e-10, x_from=None, x_to=None, enveloping="dynamic",
+         extrapolate=False):
     """Drives the tractor at speed (m/s) over profile, each axle's tires following what model
     makes of it ("point" for single-point contact, a model name, or "nn" with network), as
     'tirenv ride' does: same grid, same start (1 m before the obstacle) and end (once the
     rear axle has passed and the body settled), and the same way of enveloping: "dynamic"
     (default), the effective road at the load the tires carry, from tables over loads, or
     "static", at the axle's static tire load (docs/models.md section 9.5). The integration is
-    one library call with the GIL released. Returns a Ride (w_front, w_rear: the static
-    load's rows)."""
+    one library call with the GIL released. extrapolate=True lets the network run outside its
+    trained ranges, as 'tirenv ride --extrapolate'. Returns a Ride (w_front, w_rear: the
+    static load's rows)."""
     v = vehicle if vehicle is not None else Vehicle()
     speed = speed_of(speed)
     if not (1 / dt >= 320.0):
@@ -184,14 +186,14 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005
     out = ffi.cast("tirenv_ride_sample *", ffi.from_buffer(series))
     diag = new_diag()
     if enveloping == "static":
-        w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n)
-             for axle in (0, 1)]
+        w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+                     extrapolate) for axle in (0, 1)]
         tracks = [ffi.new("tirenv_ride_track *",
                           {"x0": x0, "dx": dx, "n": n, "w": double_ptr(a)}) for a in w]
         check(lib.tirenv_ride_run(v._v, tracks[0], tracks[1], s, out, diag), diag)
     else:
-        tables = [_table(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n)
-                  for axle in (0, 1)]
+        tables = [_table(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+                         extrapolate) for axle in (0, 1)]
         c = [ffi.new("tirenv_ride_table *", {"x0": x0, "dx": dx, "n": n, "m": len(loads),
                                              "load": double_ptr(loads), "w": double_ptr(rows)})
              for loads, rows in tables]

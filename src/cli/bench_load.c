@@ -60,6 +60,9 @@ int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, cons
         const char *name = tirenv_model_type_name(types[i]);
         tirenv_model *m = tirenv_model_alloc(types[i], tire);
         status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        /* The network over the road's low bumps extrapolates, as in the bench's ride. */
+        if (m)
+            tirenv_model_set_extrapolate(m, 1);
         if (!status && needs_nn)
             status = tirenv_model_set_network(m, nn, 0, diag);
         double G0 = 0;

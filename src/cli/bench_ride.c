@@ -15,7 +15,9 @@ static const double ride_target = 100;       /* times faster than real time */
 
 
 /* Both axles' inputs on the grid x[] for one model type: at the static loads into w, or
- * (dynamic) tables over loads into table (their arrays allocated: the caller frees them). */
+ * (dynamic) tables over loads into table (their arrays allocated: the caller frees them). The
+ * network over the road's low bumps extrapolates (docs/models.md section 12), as make demo's
+ * road ride allows it: the bench times the same work. */
 static int inputs(const tirenv_model_type *type, const tirenv_tire *tire,
                   const tirenv_vehicle *v, const tirenv_profile *road, const tirenv_nn *nn,
                   size_t n, const double x[], int dynamic, double *w[2],
@@ -25,10 +27,10 @@ static int inputs(const tirenv_model_type *type, const tirenv_tire *tire,
     for (int axle = 0; axle < 2 && !status; ++axle) {
         const double G0 = tirenv_vehicle_tire_load(v, axle);
         if (dynamic)
-            status = ride_cli_axle_table(type, tire, G0, road, nn, tire->springs.R0, x[0],
+            status = ride_cli_axle_table(type, tire, G0, road, nn, tire->springs.R0, 1, x[0],
                                          x[1] - x[0], n, &table[axle], NULL, 0, diag);
         else
-            status = ride_cli_axle_input(type, tire, G0, road, nn, tire->springs.R0, x[0],
+            status = ride_cli_axle_input(type, tire, G0, road, nn, tire->springs.R0, 1, x[0],
                                          x[1] - x[0], n, w[axle], NULL, 0, diag);
     }
     return status;

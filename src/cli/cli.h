@@ -53,7 +53,8 @@ enum {
     CLI_SWEEP = 1u << 4,    /* --x-from X, --x-to X, --dx DX (m) */
     CLI_OUTPUT = 1u << 5,   /* -o, --output PATH */
     CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
-    CLI_NETWORK = 1u << 7   /* --nn FILE, the trained network a model type may need */
+    CLI_NETWORK = 1u << 7   /* --nn FILE, the trained network a model type may need, and
+                             * --extrapolate */
 };
 
 /* The obstacle options, for cli_options.obstacle. */
@@ -88,6 +89,8 @@ typedef struct {
     const char *output;               /* -o, --output, or NULL */
     const tirenv_model_type *type;    /* --model, or NULL */
     const char *nn_path;              /* --nn, or NULL */
+    int extrapolate;                  /* --extrapolate: the network outside its trained
+                                       * ranges (tirenv_model_set_extrapolate) */
     const char *args[CLI_MAX_ARGS];   /* positional arguments, in order */
     size_t n_args;
 } cli_options;

@@ -7,7 +7,8 @@
 #include "cli/ride_cli.h"
 
 int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, double load,
-                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
+                        int extrapolate, double x0,
                         double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag)
 {
@@ -19,6 +20,8 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
     }
     tirenv_model *m = tirenv_model_alloc(type, tire);
     int status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (m)
+        tirenv_model_set_extrapolate(m, extrapolate);
     if (!status && (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
         status = nn ? tirenv_model_set_network(m, nn, R0_nn, diag)
                     : tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
@@ -39,9 +42,10 @@ const char *ride_enveloping_name(ride_enveloping e)
 }
 
 int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, double G0,
-                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
-                        double dx, size_t n, tirenv_ride_table *table, char *warnings,
-                        size_t warnings_size, tirenv_diag *diag)
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
+                        int extrapolate, double x0, double dx, size_t n,
+                        tirenv_ride_table *table, char *warnings, size_t warnings_size,
+                        tirenv_diag *diag)
 {
     *table = (tirenv_ride_table){.x0 = x0, .dx = dx, .n = n, .m = 0};
     double *load = malloc(TIRENV_RIDE_TABLE_LOADS * sizeof *load);
@@ -49,6 +53,8 @@ int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, 
     tirenv_model *m = tirenv_model_alloc(type, tire);
     int status = load && w && m ? TIRENV_OK
                                 : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (m)
+        tirenv_model_set_extrapolate(m, extrapolate);
     if (!status && (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
         status = nn ? tirenv_model_set_network(m, nn, R0_nn, diag)
                     : tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",

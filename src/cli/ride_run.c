@@ -86,12 +86,14 @@ static int asks(const ride_options *r, ride_enveloping e)
 
 /* The direct evaluation's models, set on the profile at the static loads. */
 static int direct_models(const ride_setup *s, ride_inputs *in, const tirenv_nn *nn, double R0,
-                         tirenv_diag *diag)
+                         int r_extrapolate, tirenv_diag *diag)
 {
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle) {
         tirenv_model *m = in->direct[axle] = tirenv_model_alloc(in->type, &s->tire[axle]);
         status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        if (m)
+            tirenv_model_set_extrapolate(m, r_extrapolate);
         if (!status && (tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK))
             status = tirenv_model_set_network(m, nn, R0, diag);
         if (!status)
@@ -118,8 +120,8 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
         char warnings[1024];
         /* x_N refers to the radius of the network's data, when the file records it. */
         if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, s->x0, s->dx, s->n, in->w[axle], warnings,
-                                          sizeof warnings, &diag)))
+                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n,
+                                          in->w[axle], warnings, sizeof warnings, &diag)))
             break;
         axle_warnings(in->name, axle, warnings);
     }
@@ -128,7 +130,8 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     for (axle = 0; !status && axle < 2 && asks(r, RIDE_DYNAMIC); ++axle) {
         char warnings[1024];
         if ((status = ride_cli_axle_table(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, s->x0, s->dx, s->n, &in->table[axle],
+                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n,
+                                          &in->table[axle],
                                           warnings, sizeof warnings, &diag)))
             break;
         if (!asks(r, RIDE_STATIC))
@@ -137,7 +140,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     in->table_seconds = cli_cpu_seconds() - t0;
     if (!status && asks(r, RIDE_DIRECT)) {
         axle = 0;
-        status = direct_models(s, in, nn, rec.R0, &diag);
+        status = direct_models(s, in, nn, rec.R0, r->extrapolate, &diag);
     }
     tirenv_nn_free(nn);
     if (status) {
@@ -240,18 +243,22 @@ static int run_one(const ride_setup *s, ride_inputs *in, ride_enveloping env,
     tirenv_ride_input fn[2];
     for (int axle = 0; axle < 2; ++axle) {
         double load[TIRENV_RIDE_TABLE_LOADS];
-        size_t m = TIRENV_RIDE_TABLE_LOADS;
+        size_t m = TIRENV_RIDE_TABLE_LOADS, lo = 0;
         tirenv_ride_table_loads(s->load[axle], load);
-        /* The heaviest load the model takes, as the tables end. */
+        /* The heaviest and the lightest loads the model takes, as the tables end (a load
+         * beyond the model's valid range, the network's outside its trained range). */
         while (m > 1 && load[m - 1] > s->load[axle] &&
                tirenv_model_set_load(in->direct[axle], load[m - 1], NULL))
             --m;
+        while (lo + 1 < m && load[lo] < s->load[axle] &&
+               tirenv_model_set_load(in->direct[axle], load[lo], NULL))
+            ++lo;
         int status = tirenv_model_set_load(in->direct[axle], s->load[axle], diag);
         if (status)
             return status;
         d[axle] = (ride_direct){.m = in->direct[axle], .dx = s->dx};
         fn[axle] = (tirenv_ride_input){.fn = ride_cli_direct_input, .ctx = &d[axle],
-                                       .load_min = load[0], .load_max = load[m - 1],
+                                       .load_min = load[lo], .load_max = load[m - 1],
                                        .dx = s->dx};
     }
     return tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
@@ -325,6 +332,18 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
             set.duration = (run_end(r, &s, set.speed, x_last) - x_from) / set.speed;
             set.dt = r->dt;
             set.method = r->method;
+            /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
+             * memory": a 10 km/h km of road is 0.36 M samples. */
+            if (!(set.duration / set.dt < CLI_MAX_POSITIONS)) {
+                cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
+                          "most %.0f: check --speed (%g m/s) and --dt", set.duration, set.dt,
+                          set.duration / set.dt,
+                          set.duration / set.dt * (double)(sizeof *rs->samples +
+                                                           sizeof *rs->a_w) / 1e9,
+                          CLI_MAX_POSITIONS, set.speed);
+                code = CLI_EXIT_USAGE;
+                goto done;
+            }
             rs->n = tirenv_ride_n_samples(&set);
             rs->samples = malloc(rs->n * sizeof *rs->samples);
             rs->a_w = malloc(rs->n * sizeof *rs->a_w);

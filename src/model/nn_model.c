@@ -39,6 +39,7 @@ typedef struct {
     tirenv_nn *nn;             /* owned copy; NULL until tirenv_model_set_network */
     double R0;                 /* the free radius x_N refers to, m */
     char r0_warning[256];      /* the network's R0 is not the tire's, or "" */
+    int extrapolate;           /* evaluate outside the trained ranges (with warnings) */
     int pinned;                /* the last load_for_contact_length's pair: */
     double pin_load, pin_l_c;  /* N, m */
     /* The set: */
@@ -182,10 +183,10 @@ static void warn(nn_state *st, const char *fmt, ...)
     va_end(ap);
 }
 
-/* One warning per input the training never saw a value like, among the inputs from the
- * contact length up to end - 1 (the cleat's all three; over a road only the contact length,
- * the decomposition counts its obstacles itself). */
-static void warn_range(nn_state *st, size_t end)
+/* Among the inputs from the contact length up to end - 1 (the cleat's all three; over a road
+ * only the contact length, obstacles_in_range checks the obstacles), each the training never
+ * saw a value like: refused, or with extrapolation allowed one warning each. */
+static int check_range(nn_state *st, size_t end, tirenv_diag *diag)
 {
     static const char *const what[TIRENV_NN_INPUTS] = {"x_N", "contact length",
                                                        "obstacle height", "obstacle length"};
@@ -193,9 +194,47 @@ static void warn_range(nn_state *st, size_t end)
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
     tirenv_nn_get_input_range(st->nn, lo, hi);
     for (size_t i = tirenv_nn_out_of_range(st->nn, u, TIRENV_NN_CONTACT_LENGTH); i < end;
-         i = tirenv_nn_out_of_range(st->nn, u, i + 1))
+         i = tirenv_nn_out_of_range(st->nn, u, i + 1)) {
+        if (!st->extrapolate)
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, what[i],
+                                "%g m is outside the range the network was trained on, %g to "
+                                "%g m: the network would extrapolate, which is refused unless "
+                                "allowed (--extrapolate; tirenv_model_set_extrapolate)", u[i],
+                                lo[i], hi[i]);
         warn(st, "%s %g m is outside the range the network was trained on (%g to %g m): the "
              "prediction is an extrapolation", what[i], u[i], lo[i], hi[i]);
+    }
+    return TIRENV_OK;
+}
+
+/* Over a road, the first equivalent cleat (docs/models.md section 12) outside the trained
+ * heights or lengths, unless extrapolation is allowed: below the trained heights its curve
+ * would be the lowest trained one scaled, beyond the ranges clamped to them, curves the
+ * network never learned. */
+static int obstacles_in_range(const nn_state *st, tirenv_diag *diag)
+{
+    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    if (st->extrapolate)
+        return TIRENV_OK;
+    const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
+    size_t out = 0, first = 0;
+    for (size_t k = 0; k < in.obstacles; ++k)
+        if (!(ob[k].H >= in.H_min && ob[k].H <= in.H_max && ob[k].L >= in.L_min &&
+              ob[k].L <= in.L_max) && out++ == 0)
+            first = k;
+    if (out == 0)
+        return TIRENV_OK;
+    const tirenv_nn_obstacle *o = &ob[first];
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0,
+                        o->H >= in.H_min && o->H <= in.H_max ? "obstacle length"
+                                                             : "obstacle height",
+                        "the obstacle at x = %.6g m (%.6g to %.6g m, %.4g m high, %.4g m long "
+                        "as a cleat) is outside the range the network was trained on, heights "
+                        "%g to %g m, lengths %g to %g m (%zu of %zu obstacles are): the network "
+                        "would extrapolate (scale or clamp its curves), which is refused unless "
+                        "allowed (--extrapolate; tirenv_model_set_extrapolate)", o->c, o->x_lo,
+                        o->x_hi, o->H, o->L, in.H_min, in.H_max, in.L_min, in.L_max, out,
+                        in.obstacles);
 }
 
 /* The decomposition's obstacles outside the training range, in one warning into
@@ -225,16 +264,38 @@ static void warn_clamped(nn_state *st, const tirenv_nn_road_info *in)
              "cleat's", clamped, in->obstacles, detail);
 }
 
+/* The inputs the regime set checks: the cleat's three, or the contact length over a road. */
+static size_t checked_inputs(const nn_state *st)
+{
+    return st->cleat ? TIRENV_NN_INPUTS : TIRENV_NN_CONTACT_LENGTH + 1;
+}
+
 /* The warnings of the regime set: the network's R0, its inputs outside the training range
- * (the cleat's three, or the contact length over a road), the obstacles clamped. */
-static void warnings_build(nn_state *st)
+ * (refused unless extrapolation is allowed: check_range), the obstacles clamped. */
+static int warnings_build(nn_state *st, tirenv_diag *diag)
 {
     st->warnings[0] = '\0';
     if (st->r0_warning[0])
         warn(st, "%s", st->r0_warning);
-    warn_range(st, st->cleat ? TIRENV_NN_INPUTS : TIRENV_NN_CONTACT_LENGTH + 1);
+    const int status = check_range(st, checked_inputs(st), diag);
+    if (status)
+        return status;
     if (!st->cleat && st->clamped[0])
         warn(st, "%s", st->clamped);
+    return TIRENV_OK;
+}
+
+/* The network's forms after the note: what the model file says it was trained as. */
+static void note_forms(nn_state *st)
+{
+    tirenv_nn_input_form input;
+    tirenv_nn_target_form target;
+    tirenv_nn_get_form(st->nn, &input, &target);
+    const size_t used = strlen(st->note), K = tirenv_nn_n_members(st->nn);
+    snprintf(st->note + used, sizeof st->note - used,
+             "; network: input %s, target %s, mean of %zu network%s",
+             tirenv_nn_input_form_name(input), tirenv_nn_target_form_name(target), K,
+             K == 1 ? "" : "s");
 }
 
 static int nn_model_set(void *state, const tirenv_profile *p, double load, double z_flat,
@@ -255,21 +316,31 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     st->z_flat = z_flat;
     st->cleat = single_cleat(p, &st->L, &st->H);
     if (st->cleat) {
-        warnings_build(st);
+        const int s = warnings_build(st, diag);
+        if (s)
+            return s;
         st->x_0 = tirenv_xN_origin(st->R0, st->l_c, st->L, st->H);
         snprintf(st->note, sizeof st->note, "cleat %.4g x %.4g m", st->L, st->H);
+        note_forms(st);
         /* No positions: only the checks of the arguments, so that set says what is wrong. */
         return tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, 0, NULL, NULL, diag);
     }
-    const int s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag);
-    if (s)
+    int s = check_range(st, TIRENV_NN_CONTACT_LENGTH + 1, diag);
+    if (s || (s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag)) ||
+        (s = obstacles_in_range(st, diag)))
         return s;
     const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
     warn_clamped(st, &in);
-    warnings_build(st);
+    if ((s = warnings_build(st, diag)))
+        return s;
     snprintf(st->note, sizeof st->note, "%zu obstacles above a baseline of width %.3g m (%zu "
              "lower than the lowest trained cleat, scaled)", in.obstacles, in.width,
              in.height_below);
+    if (in.height_below)
+        warn(st, "%zu of %zu obstacles lower than the lowest trained cleat (%g m): their "
+             "curves are its curve scaled down, an extrapolation", in.height_below,
+             in.obstacles, in.H_min);
+    note_forms(st);
     return TIRENV_OK;
 }
 
@@ -279,7 +350,18 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
 static int nn_model_apply(nn_state *st, double load, double l_c, double z_flat,
                           tirenv_diag *diag)
 {
-    int status = st->cleat
+    /* The new contact length within the trained range first (extrapolation allowed, it can
+     * only warn: warnings_build below). */
+    int status = TIRENV_OK;
+    if (!st->extrapolate) {
+        const double l_c_was = st->l_c;
+        st->l_c = l_c;
+        status = check_range(st, checked_inputs(st), diag);
+        st->l_c = l_c_was;
+        if (status)
+            return status;
+    }
+    status = st->cleat
                      ? tirenv_nn_envelope(st->nn, st->R0, l_c, st->L, st->H, 0, NULL, NULL, diag)
                      : tirenv_nn_road_set_contact_length(st->road, l_c, diag);
     if (status)
@@ -289,8 +371,7 @@ static int nn_model_apply(nn_state *st, double load, double l_c, double z_flat,
     st->z_flat = z_flat;
     if (st->cleat)
         st->x_0 = tirenv_xN_origin(st->R0, l_c, st->L, st->H);
-    warnings_build(st);
-    return TIRENV_OK;
+    return warnings_build(st, diag);  /* the range is checked: it adds the warnings */
 }
 
 /* The regime at the new load, as tirenv_model_set finds it (the same flat-ground solve, so the
@@ -415,6 +496,11 @@ static int nn_model_envelope(void *state, size_t n, const double x[], tirenv_poi
     return TIRENV_OK;
 }
 
+static void nn_model_set_extrapolate(void *state, int allow)
+{
+    ((nn_state *)state)->extrapolate = allow;
+}
+
 static const char *nn_model_warnings(const void *state)
 {
     return ((const nn_state *)state)->warnings;
@@ -442,6 +528,7 @@ static const tirenv_model_type nn_type = {
     .set_profile = NULL,
     .reach = NULL,
     .set_network = nn_model_set_network,
+    .set_extrapolate = nn_model_set_extrapolate,
     .warnings = nn_model_warnings,
     .note = nn_model_note,
     .set_load = nn_model_set_load,

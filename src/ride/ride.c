@@ -12,6 +12,7 @@
  *   m_a z_a'' = F_tire_front - F_s - m_a g.
  * The static loads balance the weights, so gravity only matters once a tire lifts off. */
 #include "tirenv/ride.h"
+#include "ride/ride_impl.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
@@ -19,8 +20,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include "ride/ride_impl.h"
 
 typedef struct {
     const tirenv_vehicle *v;
@@ -214,6 +213,8 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
      * skip over a cleat's edge: substeps advance at most half a grid spacing. */
     const double dx_min = fmin(tirenv_ride__input_dx(&r->front), tirenv_ride__input_dx(&r->rear));
     const size_t n_sub = (size_t)fmax(1.0, ceil(2.0 * s->speed * s->dt / dx_min - 1e-9));
+    if (step && (status = tirenv_ride__rk4_check(v, s->dt / (double)n_sub, s->dt, n_sub, diag)))
+        goto done;
     double t = 0;
     if ((status = evaluate(r, t, y, NULL, &out[0])))
         goto failed;
@@ -242,6 +243,8 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
         t = t_k;
         if ((status = evaluate(r, t, y, NULL, &out[k])))
             goto failed;
+        if ((status = tirenv_ride__finite_sample(&out[k], diag)))
+            goto done;
     }
     goto done;
 failed:  /* an input failed: its own message, with where the run was */

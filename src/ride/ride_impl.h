@@ -1,12 +1,15 @@
 /* Private to the ride module: an axle's input (a track, a table over loads, or a function of
  * position and load) and the tire force it makes, shared by the integrator (ride.c) and
- * the inputs (ride_axle.c). SPDX-License-Identifier: GPL-3.0-or-later */
+ * the inputs (ride_axle.c), docs/models.md section 9.5; and the checks of ride_checks.c
+ * that the vehicle and the ride run use (section 9.6). SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_RIDE_IMPL_H
 #define TIRENV_RIDE_IMPL_H
 
+#include <stddef.h>
 #include <gsl/gsl_interp.h>
 
 #include "tirenv/ride.h"
+#include "tirenv/vehicle.h"
 
 typedef enum {
     TIRENV_RIDE__TRACK,    /* tirenv_ride_track: the load does not enter */
@@ -53,5 +56,23 @@ int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, 
 /* The input's height at x at the static load G0 (N, per tire): the steady start's. */
 int tirenv_ride__input_static(tirenv_ride__input *in, double G0, double x, double *w,
                               tirenv_diag *diag);
+
+/* The largest h*|lambda| RK4 is allowed, for the step h and the fastest mode lambda. */
+#define RK4_MAX_H_LAMBDA 0.5
+
+/* The largest |lambda| (1/s) of the vehicle's linear modes with every tire on the ground. */
+int tirenv_ride__fastest_mode(const tirenv_vehicle *v, double *lambda_max, tirenv_diag *diag);
+
+/* TIRENV_ERANGE, naming dt and the limit, if RK4's step h (s), dt split into n_sub, is too
+ * long for the fastest mode. */
+int tirenv_ride__rk4_check(const tirenv_vehicle *v, double h, double dt, size_t n_sub,
+                           tirenv_diag *diag);
+
+/* TIRENV_EINVAL if a static tire deflection is so large that the dynamic tire forces are
+ * lost in its rounding (called by tirenv_vehicle_check). */
+int tirenv_ride__static_check(const tirenv_vehicle *v, tirenv_diag *diag);
+
+/* TIRENV_ENOCONV, naming t and x, if any value of the sample is not finite. */
+int tirenv_ride__finite_sample(const tirenv_ride_sample *s, tirenv_diag *diag);
 
 #endif
