@@ -63,11 +63,13 @@ demo-study-205:
 
 demo-ride: demo-study
 	@$(BUILD)/tirenv ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h \
-	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --out-dir out/ride-cleat
+	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --enveloping static,dynamic \
+	    --out-dir out/ride-cleat
 	@mkdir -p out/ride-road
 	@$(BUILD)/tirenv road --class C --length 1000 --dx 0.01 --seed 1 -o out/ride-road/road.csv
 	@$(BUILD)/tirenv ride --profile out/ride-road/road.csv --speed 10km/h --dx 0.01 \
 	    --model point,rigid,springs,cam,nn --nn $(DEMO_OUT)/nn.json --extrapolate \
+	    --enveloping static,dynamic \
 	    --out-dir out/ride-road
 
 # Speed figures: the models and solvers (tirenv bench), then the network and its trainers

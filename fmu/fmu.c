@@ -1,8 +1,8 @@
 /* tirenv's FMI 2.0 co-simulation FMU: instances, variables, initialization and steps. At every
  * step the outputs are the model's equilibrium at the input position x and load, warm-started
  * from the previous step, exactly as 'tirenv envelope' sweeps positions at one load.
- * A load that changes sets the model anew on the road (tirenv_model_set: correct, and costs
- * O(road)); the FMU state is in fmu_state.c. SPDX-License-Identifier: GPL-3.0-or-later */
+ * A load that changes moves the model to it (tirenv_model_set_load: the work within the tire's
+ * reach, not the road's); the FMU state is in fmu_state.c. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <ctype.h>
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -83,11 +83,8 @@ void fmu__teardown(fmu_instance *f)
 {
     tirenv_model_free(f->m);
     tirenv_profile_free(f->road);
-    fmu__free(f, f->hist);
     f->m = NULL;
     f->road = NULL;
-    f->hist = NULL;
-    f->n_hist = f->cap_hist = 0;
     f->v.model_set = 0;
     f->v.evaluated = 0;
 }
@@ -174,9 +171,12 @@ fmi2Status fmu__set_load(fmu_instance *f, double load)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    f->v.model_set = 0;
-    f->n_hist = 0;
-    if (tirenv_model_set(f->m, f->road, load, &diag)) {
+    /* Set on the road once; a new load after that keeps the profile and the warm start. A
+     * load refused leaves the model at its last (tirenv_model_set_load). */
+    const int on_road = f->v.model_set && tirenv_model_profile(f->m) == f->road;
+    if (on_road ? tirenv_model_set_load(f->m, load, &diag)
+                : tirenv_model_set(f->m, f->road, load, &diag)) {
+        f->v.model_set = on_road && tirenv_model_profile(f->m) == f->road;
         char what[96];
         snprintf(what, sizeof what, "load %.9g N", load);
         return fmu__fail_diag(f, what, &diag);
@@ -184,23 +184,6 @@ fmi2Status fmu__set_load(fmu_instance *f, double load)
     f->v.model_set = 1;
     f->v.load_set = load;
     return fmi2OK;
-}
-
-static int remember(fmu_instance *f, double x)
-{
-    if (f->n_hist == f->cap_hist) {
-        const size_t cap = f->cap_hist ? 2 * f->cap_hist : 1024;
-        double *h = fmu__alloc(f, cap * sizeof *h);
-        if (!h)
-            return -1;
-        if (f->n_hist)
-            memcpy(h, f->hist, f->n_hist * sizeof *h);
-        fmu__free(f, f->hist);
-        f->hist = h;
-        f->cap_hist = cap;
-    }
-    f->hist[f->n_hist++] = x;
-    return 0;
 }
 
 fmi2Status fmu__evaluate(fmu_instance *f)
@@ -213,8 +196,6 @@ fmi2Status fmu__evaluate(fmu_instance *f)
     tirenv_point p;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    if (remember(f, v->x))
-        return fail(f, "out of memory recording the position history");
     if (tirenv_model_eval(f->m, v->x, &p, &diag)) {
         /* The warm start after a failed evaluation is the model's business: set it anew. */
         v->model_set = 0;

@@ -65,10 +65,6 @@ typedef struct {
     tirenv_tire tire;
     tirenv_profile *road;
     tirenv_model *m;
-    /* Positions evaluated since the model was last set, in order: with load_set, what
-     * rebuilds the model's warm start exactly (fmu_state.c). */
-    double *hist;
-    size_t n_hist, cap_hist;
 } fmu_instance;
 
 /* ---- the variables (variables.c) ---- */
@@ -106,14 +102,15 @@ void fmu__log(fmu_instance *f, fmi2Status status, const char *category, const ch
 fmi2Status fmu__fail_diag(fmu_instance *f, const char *what, const tirenv_diag *diag);
 void *fmu__alloc(const fmu_instance *f, size_t size);
 void fmu__free(const fmu_instance *f, void *p);
-/* Frees the library's objects of an instance (the model, the road, the history). */
+/* Frees the library's objects of an instance (the model, the road). */
 void fmu__teardown(fmu_instance *f);
 /* Builds them from the parameters in f->v (tire, road, model); fmi2OK or fmi2Error logged. */
 fmi2Status fmu__setup(fmu_instance *f);
-/* Sets the model to the road at load and clears the history; fmi2OK or fmi2Error logged. */
+/* Sets the model to the road at load (the first time), or moves it to a new load
+ * (tirenv_model_set_load); fmi2OK or fmi2Error logged. */
 fmi2Status fmu__set_load(fmu_instance *f, double load);
 /* Evaluates the model at f->v.x (after setting the load if it changed) into the outputs,
- * recording the position in the history; fmi2OK or fmi2Error logged. */
+ * fmi2OK or fmi2Error logged. */
 fmi2Status fmu__evaluate(fmu_instance *f);
 
 #endif

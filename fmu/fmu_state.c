@@ -1,22 +1,22 @@
-/* The FMU state (FMI 2.0 section 2.1.8): get, set, free and serialize. The library has no
- * API yet to save a model's warm start, so a state records what rebuilds it exactly: the
- * values of all variables, the load the model was set at and the positions evaluated since
- * (in order). Setting a state sets the model at that load and evaluates those positions
- * again, which leaves the warm start bit for bit where it was; the cost is one evaluation
- * per step since the last load change. SPDX-License-Identifier: GPL-3.0-or-later */
+/* The FMU state (FMI 2.0 section 2.1.8): get, set, free and serialize. A state records the
+ * values of all variables and, with the model set, the model's own state
+ * (tirenv_model_state_save: its load, flat-ground point, warm start and contact states), so
+ * that setting it leaves the warm start bit for bit where it was at a constant cost; only an
+ * instance whose model is not set on the road yet sets it first (once, O(road)).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdint.h>
 #include <string.h>
 
 #include "fmu_impl.h"
 
 #define STATE_MAGIC "TRNVFMU"   /* 8 bytes with its terminating zero */
-#define STATE_VERSION 1u
+#define STATE_VERSION 2u
 
 typedef struct {
     char magic[8];
     uint32_t version;
     uint32_t values_size;   /* sizeof(fmu_values) of the build that wrote it */
-    uint64_t n_hist;
+    uint64_t n_model;       /* bytes of the model's state (0: the model not set) */
     int32_t mode;
     int32_t pad;
 } state_header;
@@ -24,18 +24,18 @@ typedef struct {
 typedef struct {
     state_header hdr;
     fmu_values v;
-    double hist[];          /* hdr.n_hist positions, m */
+    unsigned char model[];  /* hdr.n_model bytes: tirenv_model_state_save's */
 } fmu_state;
 
-static fmu_state *state_alloc(const fmu_instance *f, size_t n_hist)
+static fmu_state *state_alloc(const fmu_instance *f, size_t n_model)
 {
-    fmu_state *s = fmu__alloc(f, sizeof *s + n_hist * sizeof(double));
+    fmu_state *s = fmu__alloc(f, sizeof *s + n_model);
     if (!s)
         return NULL;
     memcpy(s->hdr.magic, STATE_MAGIC, sizeof s->hdr.magic);
     s->hdr.version = STATE_VERSION;
     s->hdr.values_size = (uint32_t)sizeof(fmu_values);
-    s->hdr.n_hist = n_hist;
+    s->hdr.n_model = n_model;
     return s;
 }
 
@@ -52,9 +52,9 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
         return f ? fmu__fail_diag(f, "fmi2GetFMUstate", &(tirenv_diag){
                                      .message = "NULL state pointer"})
                  : fmi2Error;
-    const size_t n = f->v.model_set ? f->n_hist : 0;
+    const size_t n = f->v.model_set && f->m ? tirenv_model_state_size(f->m) : 0;
     fmu_state *s = *FMUstate;
-    if (!state_valid(s) || s->hdr.n_hist != n) {  /* a new one, or one of another size */
+    if (!state_valid(s) || s->hdr.n_model != n) {  /* a new one, or one of another size */
         if (state_valid(s))
             fmu__free(f, s);
         if (!(s = state_alloc(f, n)))
@@ -63,8 +63,13 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
     }
     s->hdr.mode = (int32_t)f->mode;
     s->v = f->v;
-    if (n)
-        memcpy(s->hist, f->hist, n * sizeof(double));
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    if (n && tirenv_model_state_save(f->m, s->model, n, &diag)) {
+        if (s != *FMUstate)
+            fmu__free(f, s);
+        return fmu__fail_diag(f, "fmi2GetFMUstate", &diag);
+    }
     *FMUstate = s;
     return fmi2OK;
 }
@@ -86,19 +91,22 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
         return fmu__fail_diag(f, "fmi2SetFMUstate",
                               &(tirenv_diag){.message = "not a state of this FMU"});
     const int rebuild = !f->m || !same_parameters(&f->v, &s->v);
+    /* The model on the road already: the state's bytes restore it whatever its load. */
+    const int on_road = !rebuild && f->v.model_set && tirenv_model_profile(f->m) == f->road;
     f->v = s->v;
     if (s->v.model_set || s->v.evaluated) {
         if (rebuild && fmu__setup(f) != fmi2OK)
             return fmi2Error;
         f->v = s->v;
         if (s->v.model_set) {
-            if (fmu__set_load(f, s->v.load_set) != fmi2OK)
+            tirenv_diag diag;
+            tirenv_diag_clear(&diag);
+            f->v.model_set = on_road;
+            if (!on_road && fmu__set_load(f, s->v.load_set) != fmi2OK)
                 return fmi2Error;
-            f->v.load = s->v.load_set;  /* the inputs of the steps replayed */
-            for (size_t k = 0; k < s->hdr.n_hist; ++k) {
-                f->v.x = s->hist[k];
-                if (fmu__evaluate(f) != fmi2OK)
-                    return fmi2Error;
+            if (tirenv_model_state_restore(f->m, s->model, (size_t)s->hdr.n_model, &diag)) {
+                f->v.model_set = 0;  /* the model is unset: set anew when next needed */
+                return fmu__fail_diag(f, "fmi2SetFMUstate", &diag);
             }
         }
     } else if (rebuild) {
@@ -131,7 +139,7 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, si
     if (!state_valid(s) || !size)
         return fmu__fail_diag(f, "fmi2SerializedFMUstateSize",
                               &(tirenv_diag){.message = "not a state of this FMU"});
-    *size = sizeof *s + s->hdr.n_hist * sizeof(double);
+    *size = sizeof *s + (size_t)s->hdr.n_model;
     return fmi2OK;
 }
 
@@ -166,12 +174,12 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
     memcpy(&hdr, serializedState, sizeof hdr);
     if (memcmp(hdr.magic, STATE_MAGIC, sizeof hdr.magic) != 0 ||
         hdr.version != STATE_VERSION || hdr.values_size != sizeof(fmu_values) ||
-        hdr.n_hist > (SIZE_MAX - sizeof(fmu_state)) / sizeof(double) ||
-        size != sizeof(fmu_state) + hdr.n_hist * sizeof(double))
+        hdr.n_model > SIZE_MAX - sizeof(fmu_state) ||
+        size != sizeof(fmu_state) + (size_t)hdr.n_model)
         return fmu__fail_diag(f, "fmi2DeSerializeFMUstate", &(tirenv_diag){
                                   .message = "not a serialized state of this FMU build "
                                              "(magic, version, value layout or size differ)"});
-    fmu_state *s = state_alloc(f, (size_t)hdr.n_hist);
+    fmu_state *s = state_alloc(f, (size_t)hdr.n_model);
     if (!s)
         return fmu__fail_diag(f, "fmi2DeSerializeFMUstate",
                               &(tirenv_diag){.message = "out of memory"});

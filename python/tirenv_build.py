@@ -201,6 +201,16 @@ size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);
 int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
                     const tirenv_ride_track *rear, const tirenv_ride_settings *s,
                     tirenv_ride_sample out[], tirenv_diag *diag);
+typedef struct {
+    double x0; double dx; size_t n; size_t m; const double *load; const double *w;
+} tirenv_ride_table;
+#define TIRENV_RIDE_TABLE_LOADS ...
+int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double G0, double x0,
+                            double dx, size_t n, double load[], double w[], size_t *rows,
+                            char *warnings, size_t warnings_size, tirenv_diag *diag);
+int tirenv_ride_run_dynamic(const tirenv_vehicle *v, const tirenv_ride_table *front,
+                            const tirenv_ride_table *rear, const tirenv_ride_settings *s,
+                            tirenv_ride_sample out[], tirenv_diag *diag);
 
 /* comfort.h */
 typedef enum { TIRENV_WK = 0, TIRENV_WD, TIRENV_WE } tirenv_weighting;

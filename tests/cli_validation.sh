@@ -27,7 +27,7 @@ check "envelope --model cam --contact-length 1.3: exit 2, no file" \
 run "$bin" flat --model rigid --load 1e9
 check "flat --model rigid takes any load" '[ $rc -eq 0 ]'
 
-# --- the ride's RK4 step and unphysical vehicles (section 9.5) -----------------------------
+# --- the ride's RK4 step and unphysical vehicles (section 9.6) -----------------------------
 stiff='--set FRONT_AXLE.TIRE_STIFFNESS=1e9 --set REAR_AXLE.TIRE_STIFFNESS=1e9'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point $stiff -o s.csv
 check "ride with 1e9 N/m tires at dt 1 ms: exit 2 naming dt, the limit and rk8pd, no file" \

@@ -528,10 +528,23 @@ static void test_model_point(void **state)
         assert_false(x > 0.2 && pt.fx < 0);
     }
     assert_true(rising > 10 && falling > 10);
-    /* An obstacle up to the flat-ground centre height is outside the model's domain. */
-    tirenv_profile *tall = tirenv_profile_cleat(0.3, f.z_flat);
+    /* Ground that rises to the centre within R0 of it is outside the model's domain: set
+     * takes any profile; before a wall a short cam (a_e = R0/2) does not reach, a position
+     * within R0 is refused, one farther is not. (The tire's own cam, a_e = 1.46 R0, climbs
+     * any wall before it comes within R0.) */
+    tirenv_tire t_short = t;
+    t_short.cam.length = 0.5;
+    tirenv_model *m_short = tirenv_model_alloc(tirenv_model_cam, &t_short);
+    assert_non_null(m_short);
+    tirenv_profile *tall = tirenv_profile_cleat(0.3, 2 * t.springs.R0);
     assert_non_null(tall);
-    assert_int_equal(tirenv_model_set(m, tall, G, &diag), TIRENV_ERANGE);
+    assert_int_equal(tirenv_model_set(m_short, tall, G, &diag), TIRENV_OK);
+    tirenv_point near;
+    const double R0 = t.springs.R0;
+    assert_int_equal(tirenv_model_eval(m_short, -0.15 - 0.95 * R0, &near, &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "profile");
+    assert_int_equal(tirenv_model_eval(m_short, -0.15 - 1.01 * R0, &near, &diag), TIRENV_OK);
+    tirenv_model_free(m_short);
     tirenv_profile_free(tall);
     tirenv_profile_free(p);
     tirenv_model_free(m);

@@ -1,4 +1,4 @@
-/* What the ride refuses (src/ride/ride_checks.c, docs/models.md section 9.5): an RK4 step too
+/* What the ride refuses (src/ride/ride_checks.c, docs/models.md section 9.6): an RK4 step too
  * long for the vehicle's fastest mode, a vehicle whose static loads drown the dynamic tire
  * forces in rounding, and samples that are not finite.
  * SPDX-License-Identifier: GPL-3.0-or-later */

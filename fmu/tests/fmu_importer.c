@@ -5,7 +5,8 @@
  *     slope, fx, fz as the CSV writes them, every row), and the Chrono-style outputs agree;
  *   - a load that changes every step gives, at each step, 'tirenv envelope' at that load;
  *   - an FMU state taken mid-cleat, set again (directly and through serialization), repeats
- *     the following steps bit for bit;
+ *     the following steps bit for bit; so does one taken while the load changes every step
+ *     (tirenv_model_set_load), and a state's size does not grow with the steps;
  *   - wrong value references, a parameter set too late, an unknown model, a missing road
  *     file and a wrong GUID give fmi2Error (or NULL) and a log message saying why.
  * Prints TAP lines; exits 1 if a check fails.
@@ -362,6 +363,46 @@ static void test_cleat(const char *road)
     free(ref.row);
 }
 
+/* A state taken while the load changes every step, set back after more steps at other loads:
+ * the steps repeat bit for bit (the model's load, flat-ground point and warm start are in the
+ * state), and the state's size does not grow with the steps taken. */
+static void test_state_with_load_changes(const char *road)
+{
+    enum { K0 = 300, N_AFTER = 100 };
+    fmi2Status st;
+    fmi2Component c = start("springs", road, X_FROM, LOAD, &st);
+    double out[8], first[N_AFTER], again[N_AFTER];
+    /* +-20 % about LOAD, a new load at every step */
+#define LOAD_AT(k) (LOAD * (1.0 + 0.2 * sin(0.05 * (double)(k))))
+    for (size_t k = 0; k < K0 && c && st == fmi2OK; ++k)
+        st = step(c, (double)k * 1e-3, X_FROM + (double)k * 2 * DX, LOAD_AT(k), out);
+    fmi2FMUstate saved = NULL, later = NULL;
+    size_t size0 = 0, size1 = 0;
+    const int got0 = c && st == fmi2OK && api.get_state(c, &saved) == fmi2OK &&
+                     api.state_size(c, saved, &size0) == fmi2OK;
+    check(got0, "fmi2GetFMUstate at step %d with the load changing every step", K0);
+    for (size_t k = K0; k < K0 + N_AFTER && st == fmi2OK; ++k) {
+        st = step(c, (double)k * 1e-3, X_FROM + (double)k * 2 * DX, LOAD_AT(k), out);
+        first[k - K0] = out[0];
+    }
+    const int got1 = st == fmi2OK && api.get_state(c, &later) == fmi2OK &&
+                     api.state_size(c, later, &size1) == fmi2OK;
+    check(got1 && size1 == size0, "a state's size does not grow with the steps (%zu bytes at step %d, %zu at %d)",
+          size0, K0, size1, K0 + N_AFTER);
+    check(api.set_state(c, saved) == fmi2OK, "fmi2SetFMUstate back to step %d", K0);
+    for (size_t k = K0; k < K0 + N_AFTER && st == fmi2OK; ++k) {
+        st = step(c, (double)k * 1e-3, X_FROM + (double)k * 2 * DX, LOAD_AT(k), out);
+        again[k - K0] = out[0];
+    }
+#undef LOAD_AT
+    check(st == fmi2OK && memcmp(first, again, sizeof again) == 0,
+          "after fmi2SetFMUstate the next %d steps at changing loads repeat bit for bit",
+          N_AFTER);
+    api.free_state(c, &saved);
+    api.free_state(c, &later);
+    api.free_instance(c);
+}
+
 /* h as 'tirenv envelope' writes it at one position x (m) and load (N), into want. */
 static int cli_h(const char *model, const char *road, double load, double x, char *want,
                  size_t n)
@@ -519,6 +560,7 @@ int main(int argc, char *argv[])
 
     test_cleat(road);
     test_load_changes(road);
+    test_state_with_load_changes(road);
     test_errors(road);
 
     dlclose(api.so);

@@ -125,14 +125,42 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
                                          tirenv_diag *diag);
 
 /* Sets the ground profile (borrowed: it must outlive its use) and the load (N); computes the
- * flat-ground reference z_flat. TIRENV_ERANGE if any vertex of the profile reaches the
- * flat-ground centre height z_flat (the whole profile is checked, so give long roads as
- * heights about their own level, not with a large grade). Resets the warm start. */
+ * flat-ground reference z_flat. The profile may have any elevation and grade: it is checked
+ * where it is evaluated (tirenv_model_eval). Resets the warm start. */
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
 
-/* The load (N) of the last successful tirenv_model_set; NaN before. */
+/* Changes the load (N) of a model already set, keeping its profile and its warm start, at the
+ * cost of the work within the tire's reach, not the road's (docs/models.md section 1.7): the
+ * next evaluations equal those of a model set at this load with tirenv_model_set, bit for bit
+ * for rigid, cam, nn and point, and within the equilibrium's tolerances (section 11.3) for
+ * springs and ring, whose flat-ground solve and equilibria start from where they stand.
+ * TIRENV_EINVAL if no profile is set; the load errors of tirenv_model_flat. On failure the
+ * model is unchanged (still set at its previous load). */
+int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag);
+
+/* The load (N) of the last successful tirenv_model_set or _set_load; NaN before. */
 double tirenv_model_load(const tirenv_model *m);
+/* The profile the model is set on (borrowed), or NULL when it is not set. */
+const tirenv_profile *tirenv_model_profile(const tirenv_model *m);
+
+/* What a host must keep to rewind the model (a co-simulation's step rejected, a state saved
+ * and restored): the load, the flat-ground state, the warm start and every cache that can
+ * change a bit of a later result, as opaque bytes for this build and machine (docs/models.md
+ * section 1.7). Not the profile, which the model only borrows. The size is fixed for an
+ * instance, whatever it has evaluated. */
+size_t tirenv_model_state_size(const tirenv_model *m);
+/* Writes the state into buf (size bytes); TIRENV_EINVAL if size is not
+ * tirenv_model_state_size(m). */
+int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tirenv_diag *diag);
+/* Restores a state saved from this instance or from one allocated with the same type and tire
+ * (and the same network): the evaluations that follow are bit for bit those that followed the
+ * save, given the same calls. The model's profile must be set (tirenv_model_set, with any
+ * load) and be the same ground as when the state was saved, which is the caller's to keep.
+ * TIRENV_EINVAL (the model then unset) for a buffer that is not such a state (its size, type
+ * or tire differ), or a state of a set model restored into one without a profile. */
+int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
+                               tirenv_diag *diag);
 
 /* What a user should hear about the last tirenv_model_set, one warning per line without a
  * final newline (the network: an input outside its training range, obstacles clamped to it),
@@ -143,8 +171,7 @@ const char *tirenv_model_note(const tirenv_model *m);
 
 /* Replaces the profile (borrowed) of a model already set, keeping its load and z_flat;
  * for tirenv_model_stream's moving window. TIRENV_EINVAL if tirenv_model_set has not
- * succeeded; TIRENV_ERANGE as tirenv_model_set (the model is then unset). NULL unsets the
- * model (tirenv_model_eval then fails until tirenv_model_set). */
+ * succeeded. NULL unsets the model (tirenv_model_eval then fails until tirenv_model_set). */
 int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tirenv_diag *diag);
 
 /* A bound (m) on how far from a position x the model reads the profile at the load set
@@ -153,7 +180,9 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
 double tirenv_model_reach(const tirenv_model *m);
 
 /* Equilibrium at position x (m), warm-started from the previous call. On failure out->x is x
- * and diag says why (x, load, bracket). */
+ * and diag says why (x, load, bracket). TIRENV_ERANGE where ground within R0 of x rises to
+ * the centre's height z: the enveloping models assume the hub clears the ground
+ * (docs/models.md section 2.5). */
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
 
 /* Evaluates n positions x[] in order into out[]; stops at the first failure (its index in

@@ -96,6 +96,13 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
                          tirenv_diag *diag);
 void tirenv_nn_road_free(tirenv_nn_road *r);  /* NULL is a no-op */
 
+/* Changes the contact length (m) of a decomposition, in O(1): the baseline and the obstacles
+ * depend on the profile alone; each obstacle's cleat origin x_0 and reach follow when it is
+ * next evaluated. The results then equal those of a decomposition built at l_c, bit for bit.
+ * TIRENV_EINVAL unless 0 < l_c < 2*R0, TIRENV_ERANGE if an obstacle's cleat reaches the chord
+ * height at l_c; on failure r keeps its contact length. */
+int tirenv_nn_road_set_contact_length(tirenv_nn_road *r, double l_c, tirenv_diag *diag);
+
 /* h[i] (m) at tire-centre positions x[i] (m), in any order (fastest increasing); slope[i] =
  * dh/dx if slope is not NULL: the derivative of the term that is the maximum (the network's
  * dy/dx_N by a central difference of step 1e-5 in x_N). No allocation; not thread-safe (the
@@ -106,7 +113,8 @@ int tirenv_nn_road_eval(tirenv_nn_road *r, size_t n, const double x[], double h[
 
 /* The baseline b(x) (m) at x (m). */
 double tirenv_nn_road_baseline(const tirenv_nn_road *r, double x);
-/* The obstacles, sorted by c; tirenv_nn_road_get_info(r).obstacles of them (owned by r). */
+/* The obstacles, sorted by c; tirenv_nn_road_get_info(r).obstacles of them (owned by r), their
+ * reach at the current contact length (both getters bring every obstacle to it: O(obstacles)). */
 const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r);
 tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r);
 

@@ -35,6 +35,15 @@ double tirenv_profile_height(const tirenv_profile *p, double x);
 /* Highest ground (m) over the closed interval [x_lo, x_hi] (m), including flat extensions. */
 double tirenv_profile_max_height(const tirenv_profile *p, double x_lo, double x_hi);
 
+/* The road's local level at x (m), docs/models.md section 2.6: the morphological opening of
+ * the ground by a level segment of length width (m), i.e. the highest level segment of that
+ * length that lies nowhere above the ground and covers x. It follows grades, steps and
+ * undulations longer than the segment and passes under obstacles shorter than it: level ground
+ * with a cleat shorter than width has the level of the ground. Exact on the polyline;
+ * O(log n + vertices within width of x). NAN if width is not positive and finite or x is not
+ * finite. */
+double tirenv_profile_level(const tirenv_profile *p, double width, double x);
+
 /* x-extent of the non-flat part: first and last vertex x (m). */
 void tirenv_profile_extent(const tirenv_profile *p, double *x_first, double *x_last);
 

@@ -62,7 +62,8 @@ typedef struct {
  * the model's effective height h (m) at the load of one tire (N), by tirenv_model_envelope
  * over blocks of the grid; the point contact (tirenv_model_point), or m NULL, gives the
  * profile's own height under the wheel centre. The model is set to p and the load
- * (tirenv_model_set); its errors name the position. */
+ * (tirenv_model_set, or tirenv_model_set_load if it is set on p already: the rows of a
+ * table); its errors name the position. */
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 
@@ -76,6 +77,77 @@ size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);
 int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
                     const tirenv_ride_track *rear, const tirenv_ride_settings *s,
                     tirenv_ride_sample out[], tirenv_diag *diag);
+
+/* What an axle's tires follow when it depends on their load (docs/models.md section 9.5):
+ * one model's effective heights at m >= 1 loads of one tire on the grid of tirenv_ride_track,
+ * w[j*n + k] at load[j] and x_k = x0 + k*dx. In x each row is a tirenv_ride_track (Steffen),
+ * in the load linear between rows; below load[0] the input is load[0]'s, above load[m-1]
+ * load[m-1]'s (m = 1: an input that does not depend on the load). tirenv_ride_table_fill
+ * computes one from a model. */
+typedef struct {
+    double x0;             /* first grid position, m */
+    double dx;             /* grid spacing, m */
+    size_t n;              /* grid points, >= 2 */
+    size_t m;              /* loads, >= 1 */
+    const double *load;    /* the loads of one tire, N, increasing, > 0 (borrowed) */
+    const double *w;       /* m*n heights, m (borrowed) */
+} tirenv_ride_table;
+
+/* The loads of the rows of tirenv ride's tables for a tire of static load G0 (N): G0 times
+ * 0.1, 0.2, 0.3, 0.4, 0.55, 0.7, 0.85, 1, 1.2, 1.45, 1.75, 2.1, 2.5 and 3 (docs/models.md
+ * section 9.5), into load[TIRENV_RIDE_TABLE_LOADS]. */
+#define TIRENV_RIDE_TABLE_LOADS 14
+void tirenv_ride_table_loads(double G0, double load[]);
+
+/* tirenv ride's table for a tire of static load G0 (N): rows of model over profile p at the
+ * loads of tirenv_ride_table_loads (as tirenv_ride_table_fill), into load[] and w[] (room for
+ * TIRENV_RIDE_TABLE_LOADS rows of n), their number in *rows. A load the model refuses ends the
+ * rows above G0, or is left out below it; G0's row must succeed (its error is returned). Rows
+ * all alike (a model whose road does not depend on the load: rigid, point) become one, at G0.
+ * warnings (may be NULL) receives the model's warnings at G0, then those of the lightest and
+ * the heaviest rows if they have their own, one per line. */
+int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double G0, double x0,
+                            double dx, size_t n, double load[], double w[], size_t *rows,
+                            char *warnings, size_t warnings_size, tirenv_diag *diag);
+
+/* The rows of a table: tirenv_ride_effective of model m over profile p at each of the m
+ * loads (N, per tire) into w[j*n + k], the model set on p once and its load changed for the
+ * others (tirenv_model_set_load: each row bit for bit a fresh set's for rigid, cam, nn and
+ * point, within the equilibrium's tolerances for springs and ring). The model ends set at
+ * the last load. */
+int tirenv_ride_table_fill(tirenv_model *model, const tirenv_profile *p, size_t m,
+                           const double load[], double x0, double dx, size_t n, double w[],
+                           tirenv_diag *diag);
+
+/* An axle's input as a function of position and tire load, for inputs that are neither a
+ * track nor a table (a model evaluated during the integration, say): fn puts the height
+ * w (m) and dw/dx at position x (m) and tire load (N, in [load_min, load_max]) into *w and
+ * *dw_dx, or returns a TIRENV_ code with diag filled, which stops the run. */
+typedef int (*tirenv_ride_input_fn)(void *ctx, double x, double load, double *w, double *dw_dx,
+                                    tirenv_diag *diag);
+typedef struct {
+    tirenv_ride_input_fn fn;
+    void *ctx;
+    double load_min, load_max; /* the loads it is evaluated at (per tire, N, > 0); a load
+                                * outside is evaluated at the nearer end */
+    double dx;                 /* the input's resolution, m: RK4 substeps advance at most half
+                                * of it, as over a grid */
+} tirenv_ride_input;
+
+/* The simulation with load-dependent inputs (docs/models.md section 9.5): at every evaluation
+ * each axle's input is taken at the load its tires then carry, the load G of one tire that
+ * balances G = max(0, G0 + k_t*(w(x, G) - z_axle) + c_t*(V*dw/dx(x, G) - dz_axle/dt)) (G0
+ * its static load), solved exactly on a table (linear in G between rows) and by a bracketing
+ * iteration on a function input; a tire off the ground (G = 0) follows the input at its
+ * lightest load (load[0], load_min), which decides where it touches down. A table of one row
+ * (or rows all alike) gives tirenv_ride_run's result to round-off. Errors as tirenv_ride_run;
+ * an input function's error stops the run, naming the time. */
+int tirenv_ride_run_dynamic(const tirenv_vehicle *v, const tirenv_ride_table *front,
+                            const tirenv_ride_table *rear, const tirenv_ride_settings *s,
+                            tirenv_ride_sample out[], tirenv_diag *diag);
+int tirenv_ride_run_input(const tirenv_vehicle *v, const tirenv_ride_input *front,
+                          const tirenv_ride_input *rear, const tirenv_ride_settings *s,
+                          tirenv_ride_sample out[], tirenv_diag *diag);
 
 /* The vehicle's vertical energy at a sample, J: kinetic + the tire and suspension springs'
  * energy about the static equilibrium (the preloads' work cancels gravity's). Exact for the

@@ -39,9 +39,9 @@ size_t tirenv_positions_count(double x_from, double x_to, double dx);
  * (N), taking vertices from source (called with source_ctx) only as far as the tire's reach
  * ahead needs, and passing each point to sink (called with ctx). Equals tirenv_model_set +
  * tirenv_model_envelope over the whole profile bit for bit, iterations included (the warm
- * start carries over as the window moves), except that the check that the ground stays below
- * the flat-ground centre height covers only the ground read. Vertices out of order, or not finite, stop it with TIRENV_EINVAL naming the vertex.
- * stats may be NULL. Takes the vertices from where the source stands. */
+ * start carries over as the window moves), the check that the hub clears the ground within
+ * reach included (tirenv_model_eval), so any elevation and grade stream. Vertices out of
+ * order, or not finite, stop it with TIRENV_EINVAL naming the vertex. stats may be NULL. Takes the vertices from where the source stands. */
 int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,
                         double x_from, double x_to, double dx, double load,
                         tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,

@@ -69,9 +69,12 @@ def test_no_equilibrium_raises_with_the_position():
 
 
 def test_obstacle_too_tall_is_a_range_error():
-    m = tirenv.Model("rigid")
+    """Ground within R0 rising to the hub is refused where it is met (docs/models.md section
+    2.5): the point contact before a 1 m wall."""
+    m = tirenv.Model("point")
+    m.set(tirenv.Profile.cleat(0.3, 1.0), 10000)
     with pytest.raises(tirenv.TirenvError) as e:
-        m.set(tirenv.Profile.cleat(0.3, 1.0), 10000)
+        m.envelope([-0.5])
     assert e.value.status == 8  # TIRENV_ERANGE
 
 

@@ -72,3 +72,23 @@ def test_network_ride_equals_cli(cli, network_file, tmp_path):
     got = [",".join("%.9g" % s[f][k] for f in ("t", "x_front", "w_front", "w_rear", "z"))
            for k in range(len(s))]
     assert got == [",".join(line.split(",")[:5]) for line in lines]
+
+
+def test_static_and_dynamic_enveloping_equal_cli(cli, tmp_path):
+    """enveloping="static" is 'tirenv ride --enveloping static', the default "dynamic" the
+    CLI's default (docs/models.md section 9.5); the two differ over a cleat."""
+    runs = {}
+    for way in ("static", "dynamic"):
+        out = tmp_path / f"{way}.csv"
+        rc, _, err = run_cli(cli, "ride", "--cleat", "0.30,0.05", "--speed", "5km/h",
+                             "--model", "cam", "--enveloping", way, "-o", out)
+        assert rc == 0, err
+        r = tirenv.ride(tirenv.Profile.cleat(0.30, 0.05), model="cam", speed="5km/h",
+                        enveloping=way)
+        s = r.series
+        got = [",".join("%.9g" % s[f][k] for f in ("t", "x_front", "w_front", "w_rear", "z"))
+               for k in range(len(s))]
+        lines = out.read_text().splitlines()[2:]
+        assert got == [",".join(line.split(",")[:5]) for line in lines]
+        runs[way] = s["w_front"]
+    assert not np.array_equal(runs["static"], runs["dynamic"])

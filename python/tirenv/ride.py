@@ -117,6 +117,18 @@ def _inputs(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
     return w
 
 
+def _table(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
+    """What one axle's tires follow at every load of 'tirenv ride's table (docs/models.md
+    section 9.5): (loads, rows), rows[j] on the grid at loads[j]."""
+    m_max = lib.TIRENV_RIDE_TABLE_LOADS
+    loads, w = np.empty(m_max), np.empty(m_max * n)
+    rows, diag = ffi.new("size_t *"), new_diag()
+    m = Model(name, tire, network, extrapolate)
+    check(lib.tirenv_ride_table_build(m._m, profile._p, load, x0, dx, n, double_ptr(loads),
+                                      double_ptr(w), rows, ffi.NULL, 0, diag), diag)
+    return loads[:rows[0]].copy(), w[:rows[0] * n].reshape(rows[0], n).copy()
+
+
 def speed_of(v):
     """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it: "10km/h"
     (times 1/3.6, as the CLI computes it), "2.5m/s" or "2.5"."""
@@ -137,13 +149,17 @@ def speed_of(v):
 
 
 def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005, dt=0.001,
-         method="rk4", tol=1e-10, x_from=None, x_to=None, extrapolate=False):
+         method="rk4", tol=1e-10, x_from=None, x_to=None, enveloping="dynamic",
+         extrapolate=False):
     """Drives the tractor at speed (m/s) over profile, each axle's tires following what model
     makes of it ("point" for single-point contact, a model name, or "nn" with network), as
     'tirenv ride' does: same grid, same start (1 m before the obstacle) and end (once the
-    rear axle has passed and the body settled). The integration is one library call with the
-    GIL released. extrapolate=True lets the network run outside its trained ranges, as
-    'tirenv ride --extrapolate'. Returns a Ride."""
+    rear axle has passed and the body settled), and the same way of enveloping: "dynamic"
+    (default), the effective road at the load the tires carry, from tables over loads, or
+    "static", at the axle's static tire load (docs/models.md section 9.5). The integration is
+    one library call with the GIL released. extrapolate=True lets the network run outside its
+    trained ranges, as 'tirenv ride --extrapolate'. Returns a Ride (w_front, w_rear: the
+    static load's rows)."""
     v = vehicle if vehicle is not None else Vehicle()
     speed = speed_of(speed)
     if not (1 / dt >= 320.0):
@@ -152,6 +168,8 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005
     methods = {"rk4": lib.TIRENV_RIDE_RK4, "rk8pd": lib.TIRENV_RIDE_RK8PD}
     if method not in methods:
         raise invalid(f"expected rk4 or rk8pd, got {method!r}", "method")
+    if enveloping not in ("static", "dynamic"):
+        raise invalid(f"expected static or dynamic, got {enveloping!r}", "enveloping")
     first, last = profile.extent
     x_from = first - RUN_IN if x_from is None else x_from
     if x_to is None:
@@ -160,17 +178,26 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005
         raise invalid(f"the run must end after it starts: x_from {x_from}, x_to {x_to}")
     x0 = x_from - v.wheelbase - GRID_MARGIN
     n = int(math.ceil((x_to + GRID_MARGIN - x0) / dx) + 1)
-    w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
-                 extrapolate) for axle in (0, 1)]
     s = ffi.new("tirenv_ride_settings *")
     s[0] = lib.tirenv_ride_default()
     s.speed, s.x_front0, s.dt, s.method, s.tol = speed, x_from, dt, methods[method], tol
     s.duration = (x_to - x_from) / speed
     series = np.zeros(lib.tirenv_ride_n_samples(s), dtype=SAMPLE_DTYPE)
-    tracks = [ffi.new("tirenv_ride_track *", {"x0": x0, "dx": dx, "n": n, "w": double_ptr(a)})
-              for a in w]
+    out = ffi.cast("tirenv_ride_sample *", ffi.from_buffer(series))
     diag = new_diag()
-    check(lib.tirenv_ride_run(v._v, tracks[0], tracks[1], s,
-                              ffi.cast("tirenv_ride_sample *", ffi.from_buffer(series)), diag),
-          diag)
+    if enveloping == "static":
+        w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+                     extrapolate) for axle in (0, 1)]
+        tracks = [ffi.new("tirenv_ride_track *",
+                          {"x0": x0, "dx": dx, "n": n, "w": double_ptr(a)}) for a in w]
+        check(lib.tirenv_ride_run(v._v, tracks[0], tracks[1], s, out, diag), diag)
+    else:
+        tables = [_table(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+                         extrapolate) for axle in (0, 1)]
+        c = [ffi.new("tirenv_ride_table *", {"x0": x0, "dx": dx, "n": n, "m": len(loads),
+                                             "load": double_ptr(loads), "w": double_ptr(rows)})
+             for loads, rows in tables]
+        check(lib.tirenv_ride_run_dynamic(v._v, c[0], c[1], s, out, diag), diag)
+        w = [rows[int(np.argmin(np.abs(loads - v.tire_load(axle))))]
+             for axle, (loads, rows) in enumerate(tables)]
     return Ride(model, speed, dt, series, x0 + np.arange(n, dtype=np.float64) * dx, w[0], w[1])

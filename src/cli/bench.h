@@ -26,4 +26,10 @@ int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const ti
  * (csv_fmt_speedup); fails if a byte differs. */
 int cli_bench_fmt(long repeat);
 
+/* The cam and the springs model (and nn if not NULL) over the road at contact length l_c (m),
+ * position by position, at a fixed load and with tirenv_model_set_load before every position,
+ * interleaved, best of repeat: the microseconds of a step of each and their ratio. */
+int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, const tirenv_nn *nn,
+                       double l_c, size_t n, const double x[], long repeat, tirenv_diag *diag);
+
 #endif

@@ -80,6 +80,8 @@ static void usage(FILE *fp)
           "project's targets; and nn, the network trained on the embedded data set (lm, seed 1)\n"
           "over the same road by equivalent-cleat decomposition, h and slope, the\n"
           "decomposition's build timed apart, and the network alone on batches of 4096 inputs.\n"
+          "Then a load that changes before every position (tirenv_model_set_load, +-20 %\n"
+          "over 0.5 m) against a fixed load, per position, for cam, springs and nn.\n"
           "Last the ride: the default tractor over that road at 10 km/h with point contact,\n"
           "cam, nn and springs, against real time (best of at most 3 runs).\n"
           "The ring reference tire runs the cleat sweep too (the solver table's last row).\n"
@@ -558,6 +560,8 @@ static int bench_road(const tirenv_tire *tire, long repeat)
         status = bench_road_nn(tire, road, n, x, repeat, nn, t_train, &why, &diag);
     if (!status && nn)
         bench_nn_batch(nn, repeat);
+    if (!status)
+        status = cli_bench_set_load(tire, road, nn, road_l_c, n, x, repeat, &diag);
     if (!status)
         status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
     tirenv_nn_free(nn);

@@ -10,6 +10,7 @@
 
 #include "cli/csv_row.h"
 #include "cli/envelope.h"
+#include "cli/level.h"
 #include "cli/road_out.h"
 
 /* The default sweep starts and ends this far beyond the tire's first and last reach, m. */
@@ -24,7 +25,8 @@ static void usage(FILE *fp)
           "                       [--track V] [--side S] [--tracks N] [--width W]\n"
           "                       [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
           "                       [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
-          "                       [--nn FILE [--extrapolate]] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                       [--relative-to ground|datum] [--nn FILE [--extrapolate]]\n"
+          "                       [--tire FILE] [--set KEY=VALUE]...\n"
           "                       [--method M]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
@@ -59,6 +61,7 @@ static void usage(FILE *fp)
           "                       not for the network, which reads the whole profile\n",
           fp);
     cli_help_envelope_output(fp);
+    cli_help_relative_to(fp);
     fputs("  --detail             with --model ring: two more columns, tread_max_m (the\n"
           "                       largest tread compression) and belt_contacts (nodes where\n"
           "                       the belt itself touches the ground), from one more ring\n"
@@ -176,7 +179,8 @@ void cli_help_envelope_output(FILE *fp)
 
 cli_envelope_opts cli_envelope_default(void)
 {
-    return (cli_envelope_opts){.stream = 0, .detail = 0, .encoding = TIRENV_CRG_KDBI};
+    return (cli_envelope_opts){.stream = 0, .detail = 0, .encoding = TIRENV_CRG_KDBI,
+                               .relative = CLI_RELATIVE_DATUM};
 }
 
 /* What a run needs besides the options: the tracks and how the curve goes out. */
@@ -226,7 +230,9 @@ static void road_comment(const run *r, const tirenv_model *m, double load, char 
     comment_line(buf, n, "of the %s model at load %.6g N, tire %s%s,", tirenv_model_name(m),
                  load, base_name(tire), r->o->n_sets ? " with --set" : "");
     comment_line(buf, n, "over %s", r->road.from_file ? base_name(road) : road);
-    comment_line(buf, n, "h is relative to the datum (the road's z = 0); %s",
+    comment_line(buf, n, "h is relative to %s; %s",
+                 r->e->relative == CLI_RELATIVE_GROUND ? "the road's local level (section 2.6)"
+                                                       : "the datum (the road's z = 0)",
                  r->out_format == TIRENV_PROFILE_CRG ? "both long sections" : "both sides");
     comment_line(buf, n, "carry it: the same height across the tire's width.");
 }
@@ -251,20 +257,28 @@ typedef struct {
     FILE *fp;
     cli_road_out *road;
     tally t;
-    tirenv_diag diag;      /* the road writer's failure */
+    cli_level_stream *level;  /* NULL: h relative to the datum */
+    tirenv_diag diag;         /* the road writer's or the level's failure */
 } stream_out;
 
 static int stream_row(void *ctx, const tirenv_point *pt)
 {
     stream_out *s = ctx;
+    tirenv_point row = *pt;
+    int status = TIRENV_OK;
+    if (s->level) {
+        double level;
+        if ((status = cli_level_stream_at(s->level, pt->x, &level, &s->diag)))
+            return status;
+        row.h -= level;
+    }
     if (s->road) {
-        const int status = cli_road_out_add(s->road, pt, &s->diag);
-        if (status)
+        if ((status = cli_road_out_add(s->road, &row, &s->diag)))
             return status;
     } else {
-        write_row(s->fp, pt);
+        write_row(s->fp, &row);
     }
-    tally_add(&s->t, pt);
+    tally_add(&s->t, &row);
     return s->fp && ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
 }
 
@@ -326,7 +340,17 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     int code = cli_road_open(o, &r->road, &in);
     if (code)
         return code;
-    if (r->out_format != TIRENV_PROFILE_CSV) {
+    /* The level under the centre: the file read a second time, at --track alone. */
+    tirenv_profile_file_reader *in_level = NULL;
+    const double v_centre = r->road.src.crg.v;
+    if (r->e->relative == CLI_RELATIVE_GROUND &&
+        !(status = tirenv_profile_file_reader_open(o->obstacle_arg, &r->road.src, 1, &v_centre,
+                                                   &in_level, &diag)) &&
+        !(so.level = cli_level_stream_alloc(tirenv_profile_file_reader_source, in_level,
+                                            cli_level_width(tirenv_model_tire(m)))))
+        status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (status) {
+    } else if (r->out_format != TIRENV_PROFILE_CSV) {
         status = road_out_open(r, m, load, x_from, dx, n, &so.road, &diag);
     } else if (!(status = tirenv_outfile_open(&out, path, &diag))) {
         have_out = 1;
@@ -339,7 +363,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
                                             x_to, dx, load, stream_row, &so, NULL, &diag);
         if (status == TIRENV_EIO && so.fp && ferror(so.fp))
             status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
-        else if (status && so.diag.message[0])  /* the road writer's */
+        else if (status && so.diag.message[0])  /* the road writer's or the level's */
             diag = so.diag;
         if (!status && so.road) {
             cli_road_out *w = so.road;
@@ -354,6 +378,8 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
         tirenv_outfile_abort(&out);
     cli_road_out_abort(so.road);
     tirenv_profile_file_reader_free(in);
+    tirenv_profile_file_reader_free(in_level);
+    cli_level_stream_free(so.level);
     if (status)
         return cli_fail(status, &diag);
     summary(r->cmd, m, o, load, &so.t);
@@ -426,6 +452,20 @@ static int whole_close(whole_out *w, int status, tirenv_diag *diag)
     return tirenv_outfile_commit(&w->out, diag);
 }
 
+/* --relative-to ground: h less the road's local level under the centre, the mean of the
+ * tracks' levels (each the opening of docs/models.md section 2.6). */
+static void to_ground(const run *r, const tirenv_model *m, tirenv_profile *const prof[],
+                      tirenv_point pt[], size_t n)
+{
+    const double width = cli_level_width(tirenv_model_tire(m));
+    for (size_t k = 0; k < n; ++k) {
+        double level = 0;
+        for (size_t i = 0; i < r->road.n; ++i)
+            level += tirenv_profile_level(prof[i], width, pt[k].x);
+        pt[k].h -= level / (double)r->road.n;
+    }
+}
+
 /* The sweep through tirenv_model_envelope, a chunk at a time (whole_chunk). */
 static int envelope_whole(const run *r, tirenv_model *m, double load,
                           tirenv_profile *const prof[])
@@ -457,6 +497,8 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
         for (size_t k0 = 0; k0 < n && !status; k0 += chunk) {
             const size_t n_k = n - k0 < chunk ? n - k0 : chunk;
             status = tirenv_model_envelope(m, n_k, x + k0, pt, NULL, &diag);
+            if (!status && r->e->relative == CLI_RELATIVE_GROUND)
+                to_ground(r, m, prof, pt, n_k);
             if (!status)
                 status = whole_write(r, m, prof[0], pt, k0, n_k, &w, &diag);
             for (size_t k = 0; k < n_k && !status; ++k)
@@ -540,6 +582,8 @@ int cli_envelope_main(int argc, char *argv[])
         {.name = "detail", .kind = CLI_FLAG, .dst = &e.detail},
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e.encoding,
          .parse = parse_encoding},
+        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e.relative,
+         .parse = cli_parse_relative_to},
         {.name = NULL},
     };
     const cli_parser p = {.name = "envelope", .usage = usage, .opts = own,

@@ -11,6 +11,7 @@ static void usage(FILE *fp)
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
           "                      [--track V] [--side S] [--tracks N] [--width W]\n"
           "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
+          "                      [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
@@ -57,6 +58,7 @@ static void usage(FILE *fp)
           fp);
     cli_help_road(fp, 1);
     cli_help_envelope_output(fp);
+    cli_help_relative_to(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -76,6 +78,8 @@ int cli_predict_main(int argc, char *argv[])
     const cli_opt own[] = {
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e.encoding,
          .parse = parse_encoding},
+        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e.relative,
+         .parse = cli_parse_relative_to},
         {.name = NULL},
     };
     const cli_parser p = {.name = "predict", .usage = usage, .opts = own,

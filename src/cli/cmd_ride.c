@@ -15,13 +15,15 @@ static void usage(FILE *fp)
           "                   [--vehicle FILE] [--set KEY=VALUE]... [--x-from X] [--x-to X]\n"
           "                   [--dx DX] [--dt S] [--solver rk4|rk8pd] [-o FILE]\n"
           "                   [--out-dir DIR [--series]]\n"
+          "                   [--enveloping static|dynamic|direct[,...]]\n"
           "\n"
           "Drives a pitch-plane tractor (body heave and pitch on a front and a rear axle, the\n"
           "tires as vertical spring-dampers, an optional front-axle suspension) over the\n"
           "obstacle at constant speed, each axle's tires following what the chosen model\n"
-          "makes of the ground at the axle's static tire load, and reports ISO 2631-1 comfort\n"
-          "figures at the seat: the Wk-weighted r.m.s. vertical acceleration, its crest factor,\n"
-          "VDV and MTVV, and the We-weighted pitch acceleration. Steady start: the tractor is\n"
+          "makes of the ground at the load they carry (or at the axle's static tire load, with\n"
+          "--enveloping static), and reports ISO 2631-1 comfort figures at the seat: the\n"
+          "Wk-weighted r.m.s. vertical acceleration, its crest factor, VDV and MTVV, and the\n"
+          "We-weighted pitch acceleration. Steady start: the tractor is\n"
           "at rest vertically in static equilibrium when the run begins. The model and the\n"
           "metrics: docs/models.md sections 9 and 10.\n"
           "\n"
@@ -64,6 +66,16 @@ static void usage(FILE *fp)
           "  --dt S               output interval, s (default 0.001)\n"
           "  --solver S           rk4 (default; fixed steps of at most half a grid spacing)\n"
           "                       or rk8pd (adaptive, tolerance 1e-10)\n"
+          "  --enveloping E[,E...]  how each axle's input follows the tire load\n"
+          "                       (docs/models.md section 9.5): dynamic (default), the\n"
+          "                       effective road at the load the tires carry at each instant,\n"
+          "                       from tables over 14 loads from 0.1 to 3 times the static\n"
+          "                       one (a tire that lifts off follows the lightest); static,\n"
+          "                       the effective road at the static load, the paper's\n"
+          "                       constant-load curve; direct, the model evaluated at the\n"
+          "                       load during the integration, the slow reference the tables\n"
+          "                       are checked against. Several: one run each, and comfort.md\n"
+          "                       compares them with the static run\n"
           "  -o, --output FILE    the time series of the one run, CSV, complete or not at all\n"
           "  --out-dir DIR        the comfort tables and plots into DIR (created if needed;\n"
           "                       replaced as a whole when the run succeeds, files of DIR\n"
@@ -158,6 +170,34 @@ static int parse_set(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
+/* --enveloping E[,E...]: static, dynamic, direct, each at most once. */
+static int parse_enveloping(void *dst, const char *arg)
+{
+    ride_options *r = dst;
+    r->n_envelopings = 0;
+    const char *p = arg;
+    for (;;) {
+        const size_t len = strcspn(p, ",");
+        size_t e = 0;
+        while (e < RIDE_N_ENVELOPING &&
+               !(strlen(ride_enveloping_name((ride_enveloping)e)) == len &&
+                 strncmp(p, ride_enveloping_name((ride_enveloping)e), len) == 0))
+            ++e;
+        int twice = 0;
+        for (size_t k = 0; k < r->n_envelopings; ++k)
+            twice |= r->envelopings[k] == (ride_enveloping)e;
+        if (e == RIDE_N_ENVELOPING || twice) {
+            cli_error("ride: --enveloping expects static, dynamic or direct, each at most "
+                      "once, comma-separated; got '%s'", arg);
+            return CLI_EXIT_USAGE;
+        }
+        r->envelopings[r->n_envelopings++] = (ride_enveloping)e;
+        if (!p[len])
+            return CLI_EXIT_OK;
+        p += len + 1;
+    }
+}
+
 static int parse_solver(void *dst, const char *arg)
 {
     tirenv_ride_method *method = dst;
@@ -184,6 +224,7 @@ int cli_ride_main(int argc, char *argv[])
         {.name = "set", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_set, .repeatable = 1},
         {.name = "dt", .kind = CLI_POSITIVE, .dst = &r.dt, .what = "a positive number in s"},
         {.name = "solver", .kind = CLI_CUSTOM, .dst = &r.method, .parse = parse_solver},
+        {.name = "enveloping", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_enveloping},
         {.name = "out-dir", .kind = CLI_STRING, .dst = &r.out_dir},
         {.name = "series", .kind = CLI_FLAG, .dst = &r.series},
         {.name = NULL},
@@ -206,9 +247,14 @@ int cli_ride_main(int argc, char *argv[])
         cli_error("ride: expected --speed V; 'tirenv ride --help' shows the options");
         return CLI_EXIT_USAGE;
     }
-    if (r.out_path && (r.n_models > 1 || r.n_speeds > 1)) {
-        cli_error("ride: -o writes the series of one run (one model, one speed); use "
-                  "--out-dir DIR for %zu models x %zu speeds", r.n_models, r.n_speeds);
+    if (!r.n_envelopings) {
+        r.envelopings[0] = RIDE_DEFAULT_ENVELOPING;
+        r.n_envelopings = 1;
+    }
+    if (r.out_path && (r.n_models > 1 || r.n_speeds > 1 || r.n_envelopings > 1)) {
+        cli_error("ride: -o writes the series of one run (one model, one speed, one way of "
+                  "enveloping); use --out-dir DIR for %zu models x %zu speeds x %zu ways",
+                  r.n_models, r.n_speeds, r.n_envelopings);
         return CLI_EXIT_USAGE;
     }
     if (r.series && !r.out_dir) {
@@ -216,6 +262,19 @@ int cli_ride_main(int argc, char *argv[])
                   "its series");
         return CLI_EXIT_USAGE;
     }
+    /* The columns of the tables and plots: each model, in each way asked, labelled by the
+     * model alone when there is one way. */
+    for (size_t i = 0; i < r.n_models; ++i)
+        for (size_t e = 0; e < r.n_envelopings; ++e) {
+            ride_column *c = &r.cols[r.n_cols++];
+            c->model = i;
+            c->enveloping = r.envelopings[e];
+            if (r.n_envelopings == 1)
+                snprintf(c->label, sizeof c->label, "%s", r.model_names[i]);
+            else
+                snprintf(c->label, sizeof c->label, "%s-%s", r.model_names[i],
+                         ride_enveloping_name(c->enveloping));
+        }
     for (size_t i = 0; i < r.n_models; ++i)
         if ((tirenv_model_type_flags(r.models[i]) & TIRENV_MODEL_NEEDS_NETWORK) && !r.nn_path) {
             cli_error("ride: --model %s needs the network: --nn FILE (from 'tirenv train')",

@@ -4,15 +4,17 @@
 #define TIRENV_CLI_ENVELOPE_H
 
 #include "cli/cli.h"
+#include "cli/level.h"
 
 /* How the curve is computed and written, besides the shared options. */
 typedef struct {
     int stream;                    /* read the --profile file as the tire rolls */
     int detail;                    /* the ring's tread_max_m and belt_contacts columns */
     tirenv_crg_encoding encoding;  /* -o X.crg: the effective road's encoding */
+    cli_relative_to relative;      /* h relative to the datum or to the road's local level */
 } cli_envelope_opts;
 
-/* KDBI, no stream, no detail. */
+/* KDBI, no stream, no detail, relative to the datum. */
 cli_envelope_opts cli_envelope_default(void);
 
 /* The curve of a model of this type over the options' obstacle (its tracks: --track, --tracks)

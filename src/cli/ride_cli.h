@@ -10,6 +10,30 @@
 
 enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = 16 };
 
+/* How each axle's input follows the load (--enveloping, docs/models.md section 9.5). */
+typedef enum {
+    RIDE_STATIC = 0,  /* the effective road at the axle's static tire load */
+    RIDE_DYNAMIC,     /* tables over loads, at the load the tires carry */
+    RIDE_DIRECT,      /* the model evaluated during the integration at that load (slow: the
+                       * reference the tables are checked against) */
+    RIDE_N_ENVELOPING
+} ride_enveloping;
+
+/* "static", "dynamic", "direct". */
+const char *ride_enveloping_name(ride_enveloping e);
+
+/* --enveloping when not given: dynamic, the effective road of the load the tires carry, which
+ * swings by tens of per cent over a cleat and to nothing when they lift off; static is the
+ * paper's constant-load curve (docs/models.md section 9.5). */
+#define RIDE_DEFAULT_ENVELOPING RIDE_DYNAMIC
+
+/* One column of the tables and plots: a model with one way of enveloping. */
+typedef struct {
+    size_t model;                    /* index into models */
+    ride_enveloping enveloping;
+    char label[48];                  /* "cam", or "cam-dynamic" when several are asked */
+} ride_column;
+
 typedef struct {
     const char *vehicle_path;        /* --vehicle, or NULL for the default file */
     const char *sets[CLI_MAX_SETS];  /* --set KEY=VALUE on the vehicle */
@@ -25,6 +49,10 @@ typedef struct {
     size_t n_models;
     double speeds[RIDE_MAX_SPEEDS];  /* m/s */
     size_t n_speeds;
+    ride_enveloping envelopings[RIDE_N_ENVELOPING];  /* --enveloping, in order */
+    size_t n_envelopings;
+    ride_column cols[RIDE_MAX_MODELS * RIDE_N_ENVELOPING];  /* models x envelopings */
+    size_t n_cols;
     int have_from, have_to;
     double x_from, x_to;             /* front-axle positions, m */
     double dx;                       /* input grid, m */
@@ -35,6 +63,8 @@ typedef struct {
 /* One run's figures. */
 typedef struct {
     const char *model;
+    const char *label;             /* its column's label */
+    ride_enveloping enveloping;
     double speed;                  /* m/s */
     double duration;               /* simulated time, s */
     double seconds;                /* CPU time of the model's inputs and the integration, s */
@@ -62,6 +92,25 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
                         int extrapolate, double x0,
                         double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
+
+/* What one axle's tires follow at every load of tirenv_ride_table_loads
+ * (tirenv_ride_table_build for a model of this type, extrapolate as ride_cli_axle_input's:
+ * without it the rows the network refuses are left out), into *table (loads and heights
+ * allocated: free table->load and table->w). Warnings as tirenv_ride_table_build's. */
+int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, double G0,
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
+                        int extrapolate, double x0, double dx, size_t n,
+                        tirenv_ride_table *table, char *warnings, size_t warnings_size,
+                        tirenv_diag *diag);
+
+/* The direct evaluation (RIDE_DIRECT): an input function evaluating a model at each position
+ * and load (tirenv_model_set_load, then tirenv_model_eval at x and x -+ dx/2 for dw/dx). */
+typedef struct {
+    tirenv_model *m;
+    double dx;                       /* the derivative's step, m */
+} ride_direct;
+int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *dw_dx,
+                          tirenv_diag *diag);
 
 /* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes
  * what the options ask for; returns an exit code after printing any error. */

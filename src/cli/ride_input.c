@@ -1,6 +1,8 @@
 /* What one axle's tires follow, for any model type: shared by tirenv ride and tirenv bench.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "cli/ride_cli.h"
 
@@ -31,4 +33,65 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
         snprintf(warnings, warnings_size, "%s", !status ? tirenv_model_warnings(m) : "");
     tirenv_model_free(m);
     return status;
+}
+
+const char *ride_enveloping_name(ride_enveloping e)
+{
+    static const char *const names[RIDE_N_ENVELOPING] = {"static", "dynamic", "direct"};
+    return (size_t)e < RIDE_N_ENVELOPING ? names[e] : "unknown";
+}
+
+int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, double G0,
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
+                        int extrapolate, double x0, double dx, size_t n,
+                        tirenv_ride_table *table, char *warnings, size_t warnings_size,
+                        tirenv_diag *diag)
+{
+    *table = (tirenv_ride_table){.x0 = x0, .dx = dx, .n = n, .m = 0};
+    double *load = malloc(TIRENV_RIDE_TABLE_LOADS * sizeof *load);
+    double *w = malloc(TIRENV_RIDE_TABLE_LOADS * n * sizeof *w);
+    tirenv_model *m = tirenv_model_alloc(type, tire);
+    int status = load && w && m ? TIRENV_OK
+                                : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (m)
+        tirenv_model_set_extrapolate(m, extrapolate);
+    if (!status && (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
+        status = nn ? tirenv_model_set_network(m, nn, R0_nn, diag)
+                    : tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                                   "the %s model needs a trained network",
+                                   tirenv_model_type_name(type));
+    size_t rows = 0;
+    if (!status)
+        status = tirenv_ride_table_build(m, p, G0, x0, dx, n, load, w, &rows, warnings,
+                                         warnings_size, diag);
+    tirenv_model_free(m);
+    if (status) {
+        free(load);
+        free(w);
+        return status;
+    }
+    table->m = rows;
+    table->load = load;
+    table->w = w;
+    return TIRENV_OK;
+}
+
+int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *dw_dx,
+                          tirenv_diag *diag)
+{
+    ride_direct *d = ctx;
+    tirenv_point lo, mid, hi;
+    const double h = 0.5 * d->dx;
+    int status = tirenv_model_set_load(d->m, load, diag);
+    if (!status)
+        status = tirenv_model_eval(d->m, x - h, &lo, diag);
+    if (!status)
+        status = tirenv_model_eval(d->m, x, &mid, diag);
+    if (!status)
+        status = tirenv_model_eval(d->m, x + h, &hi, diag);
+    if (status)
+        return status;
+    *w = mid.h;
+    *dw_dx = (hi.h - lo.h) / (2 * h);
+    return TIRENV_OK;
 }

@@ -22,16 +22,51 @@ static int write_csv(const char *path, const ride_options *r, const ride_result 
         return status;
     fputs("model,speed_m_s,speed_km_h,duration_s,a_wz_m_s2,crest,vdv_m_s1.75,mtvv_m_s2,"
           "peak_awz_m_s2,a_w_pitch_rad_s2,vdv_pitch_rad_s1.75,a_v_m_s2,peak_az_m_s2,"
-          "lift_off_s,cpu_s,real_time_factor\n", f.fp);
-    for (size_t k = 0; k < r->n_models * r->n_speeds; ++k) {
+          "lift_off_s,cpu_s,real_time_factor,enveloping\n", f.fp);
+    for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
         fprintf(f.fp, "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
-                "%.6g,%.6g\n", q->model, q->speed, q->speed * 3.6, q->duration, q->seat.rms,
+                "%.6g,%.6g,%s\n", q->model, q->speed, q->speed * 3.6, q->duration, q->seat.rms,
                 q->seat.crest, q->seat.vdv, q->seat.mtvv, q->seat.peak, q->pitch.rms,
                 q->pitch.vdv, q->a_v, q->peak_az, q->lift_off, q->seconds,
-                q->duration / fmax(q->seconds, 1e-9));
+                q->duration / fmax(q->seconds, 1e-9), ride_enveloping_name(q->enveloping));
     }
     return tirenv_outfile_commit(&f, diag);
+}
+
+/* The runs of one model at one speed in the other ways of enveloping against its static
+ * run: how much following the load changes what the driver feels. */
+static void write_differences(FILE *fp, const ride_options *r, const ride_result res[])
+{
+    int any = 0;
+    for (size_t j = 0; j < r->n_speeds; ++j)
+        for (size_t c = 0; c < r->n_cols; ++c) {
+            const ride_result *q = &res[j * r->n_cols + c];
+            if (q->enveloping == RIDE_STATIC)
+                continue;
+            const ride_result *base = NULL;
+            for (size_t b = 0; b < r->n_cols; ++b)
+                if (r->cols[b].model == r->cols[c].model &&
+                    r->cols[b].enveloping == RIDE_STATIC)
+                    base = &res[j * r->n_cols + b];
+            if (!base)
+                continue;
+            if (!any++)
+                fputs("\n## Following the load: against the static load's effective road\n\n"
+                      "`dynamic`: each axle's input at the load its tires carry at each instant,\n"
+                      "from tables over loads; `direct`: the model evaluated at that load during\n"
+                      "the integration (the reference of the tables). Differences relative to\n"
+                      "the static run (docs/models.md section 9.5).\n\n"
+                      "| model | km/h | way | a_wz static | a_wz | Δ a_wz | VDV static | VDV | "
+                      "Δ VDV | lift-off static s | lift-off s | CPU s |\n"
+                      "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", fp);
+            fprintf(fp, "| %s | %.1f | %s | %.3f | %.3f | %+.1f %% | %.3f | %.3f | %+.1f %% | "
+                    "%.3f | %.3f | %.3f |\n", q->model, q->speed * 3.6,
+                    ride_enveloping_name(q->enveloping), base->seat.rms, q->seat.rms,
+                    100 * (q->seat.rms / base->seat.rms - 1), base->seat.vdv, q->seat.vdv,
+                    100 * (q->seat.vdv / base->seat.vdv - 1), base->lift_off, q->lift_off,
+                    q->seconds);
+        }
 }
 
 static int write_md(const char *path, const ride_options *r, const ride_result res[],
@@ -47,16 +82,18 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
           "Crest factors above 9 mean the r.m.s. underestimates the shocks: read VDV and MTVV.\n"
           "CPU time covers the model's effective profiles for both axles and the integration.\n"
           "\n"
-          "| model | km/h | a_wz m/s² | crest | VDV m/s^1.75 | MTVV m/s² | a_w pitch rad/s² | "
-          "a_v m/s² | peak a_z m/s² | lift-off s | CPU s | × real time |\n"
-          "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", f.fp);
-    for (size_t k = 0; k < r->n_models * r->n_speeds; ++k) {
+          "| model | enveloping | km/h | a_wz m/s² | crest | VDV m/s^1.75 | MTVV m/s² | "
+          "a_w pitch rad/s² | a_v m/s² | peak a_z m/s² | lift-off s | CPU s | × real time |\n"
+          "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", f.fp);
+    for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
-        fprintf(f.fp, "| %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | %.3f | "
-                "%.3f | %.0f |\n", q->model, q->speed * 3.6, q->seat.rms, q->seat.crest,
-                q->seat.vdv, q->seat.mtvv, q->pitch.rms, q->a_v, q->peak_az, q->lift_off,
-                q->seconds, q->duration / fmax(q->seconds, 1e-9));
+        fprintf(f.fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
+                "%.3f | %.3f | %.0f |\n", q->model, ride_enveloping_name(q->enveloping),
+                q->speed * 3.6, q->seat.rms, q->seat.crest, q->seat.vdv, q->seat.mtvv,
+                q->pitch.rms, q->a_v, q->peak_az, q->lift_off, q->seconds,
+                q->duration / fmax(q->seconds, 1e-9));
     }
+    write_differences(f.fp, r, res);
     return tirenv_outfile_commit(&f, diag);
 }
 
@@ -75,17 +112,20 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
             "\n"
             "models = \"",
             what, base, base, base, base);
-    for (size_t i = 0; i < r->n_models; ++i)
-        fprintf(fp, "%s%s", i ? " " : "", r->model_names[i]);
+    for (size_t i = 0; i < r->n_cols; ++i)
+        fprintf(fp, "%s%s", i ? " " : "", r->cols[i].label);
     fputs("\"\nspeeds = \"", fp);
     for (size_t j = 0; j < r->n_speeds; ++j)
         fprintf(fp, "%s%g", j ? " " : "", r->speeds[j] * 3.6);
     fputs("\"   # km/h\n", fp);
-    for (size_t i = 0; i < r->n_models; ++i) {
-        /* The colours of every tirenv plot: a model looks the same here as in the study. */
-        const tirenv_plot_style st = tirenv_plot_style_of(r->model_names[i], i);
+    for (size_t i = 0; i < r->n_cols; ++i) {
+        /* The colours of every tirenv plot: a model looks the same here as in the study; a
+         * way of enveloping other than the static one is drawn dashed in the model's colour. */
+        const ride_column *c = &r->cols[i];
+        const tirenv_plot_style st = tirenv_plot_style_of(r->model_names[c->model], c->model);
+        const int dash = c->enveloping == RIDE_STATIC ? st.dash : 1 + (int)c->enveloping;
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
-                st.width, st.dash, r->model_names[i]);
+                st.width, dash, c->label);
     }
     fprintf(fp, "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key top right box opaque\n"
             "\n"
@@ -142,15 +182,15 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
         return status;
     for (size_t j = 0; j < r->n_speeds; ++j) {
         /* The runs at one speed share their length, so one x column serves every model. */
-        const ride_series *row = &series[j * r->n_models];
+        const ride_series *row = &series[j * r->n_cols];
         const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
         fprintf(f.fp, "%s# %g km/h: x_front_m", j ? "\n\n" : "", r->speeds[j] * 3.6);
-        for (size_t i = 0; i < r->n_models; ++i)
-            fprintf(f.fp, " seat_az_%s_m_s2", r->model_names[i]);
+        for (size_t i = 0; i < r->n_cols; ++i)
+            fprintf(f.fp, " seat_az_%s_m_s2", r->cols[i].label);
         fputc('\n', f.fp);
         for (size_t k = 0; k < n; k += every) {
             fprintf(f.fp, "%.6g", row[0].samples[k].x_front);
-            for (size_t i = 0; i < r->n_models; ++i)
+            for (size_t i = 0; i < r->n_cols; ++i)
                 fprintf(f.fp, " %.6g", row[i].samples[k].seat_az);
             fputc('\n', f.fp);
         }
@@ -188,16 +228,16 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
         return status;
     const double fs = 1 / r->dt;
     for (size_t j = 0; j < r->n_speeds && !status; ++j) {
-        const ride_series *row = &series[j * r->n_models];
+        const ride_series *row = &series[j * r->n_cols];
         const size_t seg = welch_segment(row[0].n);
         tirenv_welch *w = NULL;
         double *psd = NULL, *a = malloc(row[0].n * sizeof *a);
         status = a ? tirenv_welch_alloc(seg, &w, diag)
                    : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
         const size_t bins = w ? tirenv_welch_bins(w) : 0;
-        if (!status && !(psd = malloc(r->n_models * bins * sizeof *psd)))
+        if (!status && !(psd = malloc(r->n_cols * bins * sizeof *psd)))
             status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        for (size_t i = 0; i < r->n_models && !status; ++i) {
+        for (size_t i = 0; i < r->n_cols && !status; ++i) {
             for (size_t k = 0; k < row[i].n; ++k)
                 a[k] = row[i].samples[k].seat_az;
             status = tirenv_welch_psd(w, a, row[i].n, fs, psd + i * bins, NULL, diag);
@@ -205,12 +245,12 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
         if (!status) {
             fprintf(f.fp, "%s# %g km/h, Welch segments of %zu samples: f_Hz", j ? "\n\n" : "",
                     r->speeds[j] * 3.6, seg);
-            for (size_t i = 0; i < r->n_models; ++i)
-                fprintf(f.fp, " psd_%s_m2_s4_Hz", r->model_names[i]);
+            for (size_t i = 0; i < r->n_cols; ++i)
+                fprintf(f.fp, " psd_%s_m2_s4_Hz", r->cols[i].label);
             fputc('\n', f.fp);
             for (size_t k = 1; k < bins; ++k) {  /* bin 0 (the mean) has no place on log axes */
                 fprintf(f.fp, "%.6g", (double)k * fs / (double)seg);
-                for (size_t i = 0; i < r->n_models; ++i)
+                for (size_t i = 0; i < r->n_cols; ++i)
                     fprintf(f.fp, " %.6g", psd[i * bins + k]);
                 fputc('\n', f.fp);
             }

@@ -21,8 +21,11 @@ static const double settle_time = 2.0;   /* s */
 typedef struct {
     const tirenv_model_type *type;
     const char *name;
-    double *w[2];          /* front, rear inputs on the grid, m */
+    double *w[2];          /* front, rear inputs on the grid at the static loads, m */
     double seconds;        /* CPU time of the effective profiles, s */
+    tirenv_ride_table table[2];  /* front, rear over loads (--enveloping dynamic) */
+    double table_seconds;  /* CPU time of the tables, s */
+    tirenv_model *direct[2];     /* front, rear models for --enveloping direct */
 } ride_inputs;
 
 typedef struct {
@@ -73,6 +76,33 @@ static void axle_warnings(const char *model, int axle, const char *w)
     }
 }
 
+/* Whether the options ask for a way of enveloping. */
+static int asks(const ride_options *r, ride_enveloping e)
+{
+    for (size_t k = 0; k < r->n_envelopings; ++k)
+        if (r->envelopings[k] == e)
+            return 1;
+    return 0;
+}
+
+/* The direct evaluation's models, set on the profile at the static loads. */
+static int direct_models(const ride_setup *s, ride_inputs *in, const tirenv_nn *nn, double R0,
+                         int r_extrapolate, tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    for (int axle = 0; axle < 2 && !status; ++axle) {
+        tirenv_model *m = in->direct[axle] = tirenv_model_alloc(in->type, &s->tire[axle]);
+        status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        if (m)
+            tirenv_model_set_extrapolate(m, r_extrapolate);
+        if (!status && (tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK))
+            status = tirenv_model_set_network(m, nn, R0, diag);
+        if (!status)
+            status = tirenv_model_set(m, s->p, s->load[axle], diag);
+    }
+    return status;
+}
+
 static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in)
 {
     tirenv_diag diag;
@@ -86,18 +116,34 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     if ((tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK) &&
         (status = tirenv_nn_read_json(r->nn_path, &nn, &rec, &diag)))
         return cli_fail(status, &diag);
-    const double t0 = cli_cpu_seconds();
-    for (; axle < 2; ++axle) {
+    double t0 = cli_cpu_seconds();
+    for (; axle < 2 && asks(r, RIDE_STATIC); ++axle) {
         char warnings[1024];
         /* x_N refers to the radius of the network's data, when the file records it. */
         if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n, in->w[axle], warnings,
-                                          sizeof warnings, &diag)))
+                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n,
+                                          in->w[axle], warnings, sizeof warnings, &diag)))
             break;
         axle_warnings(in->name, axle, warnings);
     }
-    tirenv_nn_free(nn);
     in->seconds = cli_cpu_seconds() - t0;
+    t0 = cli_cpu_seconds();
+    for (axle = 0; !status && axle < 2 && asks(r, RIDE_DYNAMIC); ++axle) {
+        char warnings[1024];
+        if ((status = ride_cli_axle_table(in->type, &s->tire[axle], s->load[axle], s->p, nn,
+                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n,
+                                          &in->table[axle],
+                                          warnings, sizeof warnings, &diag)))
+            break;
+        if (!asks(r, RIDE_STATIC))
+            axle_warnings(in->name, axle, warnings);
+    }
+    in->table_seconds = cli_cpu_seconds() - t0;
+    if (!status && asks(r, RIDE_DIRECT)) {
+        axle = 0;
+        status = direct_models(s, in, nn, rec.R0, r->extrapolate, &diag);
+    }
+    tirenv_nn_free(nn);
     if (status) {
         char msg[1200];
         cli_error("ride: %s model, %s axle (tire load %.6g N): %s", in->name,
@@ -171,18 +217,56 @@ static double run_end(const ride_options *r, const ride_setup *s, double V, doub
 
 static void print_table(FILE *fp, const ride_result res[], size_t n)
 {
-    fprintf(fp, "%-8s %7s %9s %6s %9s %9s %10s %9s %9s %8s %8s %9s\n", "model", "km/h",
+    fprintf(fp, "%-16s %7s %9s %6s %9s %9s %10s %9s %9s %8s %8s %9s\n", "run", "km/h",
             "a_wz", "crest", "VDV", "MTVV", "a_w,pitch", "a_v", "peak_az", "liftoff",
             "cpu_s", "x_real");
-    fprintf(fp, "%-8s %7s %9s %6s %9s %9s %10s %9s %9s %8s %8s %9s\n", "", "", "m/s^2", "",
+    fprintf(fp, "%-16s %7s %9s %6s %9s %9s %10s %9s %9s %8s %8s %9s\n", "", "", "m/s^2", "",
             "m/s^1.75", "m/s^2", "rad/s^2", "m/s^2", "m/s^2", "s", "s", "time");
     for (size_t i = 0; i < n; ++i) {
         const ride_result *q = &res[i];
-        fprintf(fp, "%-8s %7.2f %9.4f %6.2f %9.4f %9.4f %10.4f %9.4f %9.3f %8.3f %8.3f %9.0f\n",
-                q->model, q->speed * 3.6, q->seat.rms, q->seat.crest, q->seat.vdv,
+        fprintf(fp, "%-16s %7.2f %9.4f %6.2f %9.4f %9.4f %10.4f %9.4f %9.3f %8.3f %8.3f %9.0f\n",
+                q->label, q->speed * 3.6, q->seat.rms, q->seat.crest, q->seat.vdv,
                 q->seat.mtvv, q->pitch.rms, q->a_v, q->peak_az, q->lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
+}
+
+/* One run of one model's inputs, the way of enveloping chosen. */
+static int run_one(const ride_setup *s, ride_inputs *in, ride_enveloping env,
+                   const tirenv_ride_settings *set, tirenv_ride_sample out[], tirenv_diag *diag)
+{
+    if (env == RIDE_STATIC) {
+        const tirenv_ride_track front = {s->x0, s->dx, s->n, in->w[0]};
+        const tirenv_ride_track rear = {s->x0, s->dx, s->n, in->w[1]};
+        return tirenv_ride_run(&s->v, &front, &rear, set, out, diag);
+    }
+    if (env == RIDE_DYNAMIC)
+        return tirenv_ride_run_dynamic(&s->v, &in->table[0], &in->table[1], set, out, diag);
+    /* Direct: the models between the loads the tables span, their positions every half grid
+     * spacing apart for dw/dx, as the tables' Steffen slope sees the grid. */
+    ride_direct d[2];
+    tirenv_ride_input fn[2];
+    for (int axle = 0; axle < 2; ++axle) {
+        double load[TIRENV_RIDE_TABLE_LOADS];
+        size_t m = TIRENV_RIDE_TABLE_LOADS, lo = 0;
+        tirenv_ride_table_loads(s->load[axle], load);
+        /* The heaviest and the lightest loads the model takes, as the tables end (a load
+         * beyond the model's valid range, the network's outside its trained range). */
+        while (m > 1 && load[m - 1] > s->load[axle] &&
+               tirenv_model_set_load(in->direct[axle], load[m - 1], NULL))
+            --m;
+        while (lo + 1 < m && load[lo] < s->load[axle] &&
+               tirenv_model_set_load(in->direct[axle], load[lo], NULL))
+            ++lo;
+        int status = tirenv_model_set_load(in->direct[axle], s->load[axle], diag);
+        if (status)
+            return status;
+        d[axle] = (ride_direct){.m = in->direct[axle], .dx = s->dx};
+        fn[axle] = (tirenv_ride_input){.fn = ride_cli_direct_input, .ctx = &d[axle],
+                                       .load_min = load[lo], .load_max = load[m - 1],
+                                       .dx = s->dx};
+    }
+    return tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
 }
 
 int ride_cli_run(const cli_options *o, const ride_options *r)
@@ -199,7 +283,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     if (code || (code = cli_profile(o, &p)))
         return code;
     s.p = p;
-    const size_t n_runs = r->n_models * r->n_speeds;
+    const size_t n_runs = r->n_cols * r->n_speeds;
     ride_inputs in[RIDE_MAX_MODELS] = {{0}};
     tirenv_outdir *staged = NULL;
     ride_result *res = calloc(n_runs, sizeof *res);
@@ -254,9 +338,11 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         r = &staged_r;
     }
     for (size_t j = 0; j < r->n_speeds; ++j) {
-        for (size_t i = 0; i < r->n_models; ++i) {
-            ride_result *q = &res[j * r->n_models + i];
-            ride_series *rs = &series[j * r->n_models + i];
+        for (size_t c = 0; c < r->n_cols; ++c) {
+            const size_t i = r->cols[c].model;
+            const ride_enveloping env = r->cols[c].enveloping;
+            ride_result *q = &res[j * r->n_cols + c];
+            ride_series *rs = &series[j * r->n_cols + c];
             tirenv_ride_settings set = tirenv_ride_default();
             set.speed = r->speeds[j];
             set.x_front0 = x_from;
@@ -282,26 +368,29 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
                 code = cli_fail(TIRENV_ENOMEM, NULL);
                 goto done;
             }
-            const tirenv_ride_track front = {s.x0, s.dx, s.n, in[i].w[0]};
-            const tirenv_ride_track rear = {s.x0, s.dx, s.n, in[i].w[1]};
             const double t0 = cli_cpu_seconds();
-            int status = tirenv_ride_run(&s.v, &front, &rear, &set, rs->samples, &diag);
-            *q = (ride_result){.model = in[i].name, .speed = set.speed,
+            int status = run_one(&s, &in[i], env, &set, rs->samples, &diag);
+            const double inputs = env == RIDE_STATIC    ? in[i].seconds
+                                  : env == RIDE_DYNAMIC ? in[i].table_seconds
+                                                        : 0;
+            *q = (ride_result){.model = in[i].name, .label = r->cols[c].label,
+                               .enveloping = env, .speed = set.speed,
                                .duration = set.duration,
-                               .seconds = in[i].seconds + cli_cpu_seconds() - t0};
+                               .seconds = inputs + cli_cpu_seconds() - t0};
             if (!status)
                 status = measure(r, rs, q, &diag);
             if (!status && r->out_path)
                 status = write_series(r->out_path, rs, q, &diag);
             if (!status && r->out_dir && r->series) {
                 char path[4200];
-                snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->model,
+                snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->label,
                          q->speed * 3.6);
                 status = write_series(path, rs, q, &diag);
             }
             if (status) {
                 char msg[1200];
-                cli_error("ride: %s model at %g m/s: %s", q->model, q->speed,
+                cli_error("ride: %s model (%s) at %g m/s: %s", q->model,
+                          ride_enveloping_name(env), q->speed,
                           tirenv_diag_format(&diag, msg, sizeof msg));
                 code = cli_exit_code(status);
                 goto done;
@@ -317,10 +406,13 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     }
 done:
     tirenv_outdir_abort(staged);
-    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i) {
-        free(in[i].w[0]);
-        free(in[i].w[1]);
-    }
+    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
+        for (int axle = 0; axle < 2; ++axle) {
+            free(in[i].w[axle]);
+            free((double *)in[i].table[axle].load);
+            free((double *)in[i].table[axle].w);
+            tirenv_model_free(in[i].direct[axle]);
+        }
     for (size_t k = 0; series && k < n_runs; ++k) {
         free(series[k].samples);
         free(series[k].a_w);

@@ -187,18 +187,31 @@ static int cam_load_for_contact_length(void *state, double l_c, double *load,
     return TIRENV_OK;
 }
 
-static int cam_set(void *state, const tirenv_profile *p, double load, double z_flat,
-                   tirenv_diag *diag)
+/* What depends on the load: the tandem base through the contact law, and the static
+ * deflection. The shape, the drop floor, the memo of tangencies and the scan's bound z_cap
+ * depend on the profile alone. */
+static int cam_load(cam_state *st, double load, double *z_flat, tirenv_diag *diag)
 {
-    cam_state *st = state;
     double rho = 0, a = 0;
     const int status = cam_patch(&st->tire, load, &rho, &a, diag);
     if (status)
         return status;
-    st->prof = p;
     st->G = load;
-    st->z_flat = z_flat;
+    st->z_flat = *z_flat = st->tire.springs.R0 - rho;  /* cam_flat's, bit for bit */
     st->l_s = st->tire.cam.shift * 2 * a;
+    return TIRENV_OK;
+}
+
+static int cam_set(void *state, const tirenv_profile *p, double load, double z_flat,
+                   tirenv_diag *diag)
+{
+    cam_state *st = state;
+    double z_load;
+    const int status = cam_load(st, load, &z_load, diag);
+    if (status)
+        return status;
+    st->z_flat = z_flat;  /* the driver's, which is z_load */
+    st->prof = p;
     const size_t n = tirenv_profile_size(p);
     const double *z = tirenv_profile_z(p);
     st->z_cap = z[0];
@@ -240,6 +253,39 @@ static double cam_reach(const void *state)
     return st->tire.cam.length * R0 + half_base;
 }
 
+/* O(1): the lifts do not depend on the load, only where the two cams stand. */
+static int cam_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
+{
+    return cam_load(state, load, z_flat, diag);
+}
+
+/* The load and what follows from it; the tracks and the memo change no bit of a lift. */
+static size_t cam_state_size(const void *state)
+{
+    (void)state;
+    return 3 * sizeof(double);
+}
+
+static void cam_state_save(const void *state, unsigned char *buf)
+{
+    const cam_state *st = state;
+    buf = tirenv_model__put(buf, &st->G, sizeof st->G);
+    buf = tirenv_model__put(buf, &st->z_flat, sizeof st->z_flat);
+    tirenv_model__put(buf, &st->l_s, sizeof st->l_s);
+}
+
+static int cam_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+{
+    cam_state *st = state;
+    buf = tirenv_model__get(buf, &st->G, sizeof st->G);
+    buf = tirenv_model__get(buf, &st->z_flat, sizeof st->z_flat);
+    tirenv_model__get(buf, &st->l_s, sizeof st->l_s);
+    if (!(st->l_s > 0) || !(st->G > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a cam state (load %g N, tandem base %g m)", st->G, st->l_s);
+    return TIRENV_OK;
+}
+
 /* The cam's shape and base, which a fit identifies (docs/models.md section 8). Its
  * contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) set where its two cams stand at a load
  * and trade off against ELLIPS_SHIFT, so they are left as the tire file gives them. */
@@ -270,5 +316,9 @@ static const tirenv_model_type cam_type = {
     .warnings = NULL,
     .note = NULL,
     .tracks = TIRENV_TRACKS_MEAN,
+    .set_load = cam_set_load,
+    .state_size = cam_state_size,
+    .state_save = cam_state_save,
+    .state_restore = cam_state_restore,
 };
 const tirenv_model_type *tirenv_model_cam = &cam_type;

@@ -14,7 +14,10 @@
 
 typedef struct {
     const tirenv_deformable_ops *ops;
-    void *elem;                  /* the model's own workspace */
+    void *elem;                  /* the model's own workspace, on the profile */
+    void *flat_elem;             /* another, on flat ground: a load change solves the flat
+                                  * equilibrium there without disturbing the first's warm
+                                  * state, and finds its own from the last load's */
     tirenv_tire tire;
     tirenv_eq_solver *solver;    /* of tire.eq.method, allocated once */
     tirenv_profile *flat;        /* flat ground z = 0, for the flat-ground reference */
@@ -29,10 +32,10 @@ typedef struct {
     int have_flat_point;
     double flat_load;
     tirenv_eq_point flat_point;
-    /* The flat-ground equilibrium at the load set, for level stretches of ground. */
+    /* The flat-ground equilibrium at the load set (z = z_flat), for level stretches of
+     * ground and as the start of the next load's. */
     int shift_invariant;
-    double flat_F;
-    size_t flat_contacts;
+    tirenv_eq_point flat_at;
     /* The valid range (docs/models.md section 1.3), found on first need: flat-ground centre
      * heights from z_min up to R0, loads up to G_max (N), contact lengths up to l_max (m). */
     int have_range;
@@ -53,6 +56,13 @@ static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag
     return c->st->ops->forces(c->st->elem, c->prof, c->x, z, out, diag);
 }
 
+/* The same on flat ground, with the flat-ground workspace. */
+static int flat_force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
+{
+    const force_ctx *c = ctx;
+    return c->st->ops->forces(c->st->flat_elem, c->st->flat, 0, z, out, diag);
+}
+
 void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_ops *ops)
 {
     deformable_state *st = calloc(1, sizeof *st);
@@ -62,10 +72,11 @@ void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_o
     st->ops = ops;
     st->tire = *tire;
     st->elem = ops->alloc(tire);
+    st->flat_elem = ops->alloc(tire);
     st->solver = tirenv_eq__solver_alloc(tirenv_eq__solver_type_of(tire->eq.method));
     st->shift_invariant = !ops->shift_invariant || ops->shift_invariant(tire);
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
-    if (!st->elem || !st->solver || !st->flat) {
+    if (!st->elem || !st->flat_elem || !st->solver || !st->flat) {
         tirenv_deformable_free(st);
         return NULL;
     }
@@ -77,6 +88,8 @@ void tirenv_deformable_free(void *state)
     deformable_state *st = state;
     if (st->elem)
         st->ops->free(st->elem);
+    if (st->flat_elem)
+        st->ops->free(st->flat_elem);
     tirenv_eq__solver_free(st->solver);
     tirenv_profile_free(st->flat);
     free(st);
@@ -92,7 +105,7 @@ static int valid_range(deformable_state *st, tirenv_diag *diag)
     const double R0 = st->tire.springs.R0;
     double z = 0;
     st->range_why[0] = '\0';
-    int status = st->ops->lowest_z ? st->ops->lowest_z(st->elem, st->flat, &z, st->range_why,
+    int status = st->ops->lowest_z ? st->ops->lowest_z(st->flat_elem, st->flat, &z, st->range_why,
                                                        sizeof st->range_why, diag)
                                    : TIRENV_OK;
     if (status)
@@ -102,8 +115,8 @@ static int valid_range(deformable_state *st, tirenv_diag *diag)
     st->l_max = 2 * R0;
     if (z > 0) {
         tirenv_eq_point p;
-        if ((status = st->ops->forces(st->elem, st->flat, 0, z, &p, diag)) ||
-            (status = st->ops->contact_length(st->elem, st->flat, z, &st->l_max, diag)))
+        if ((status = st->ops->forces(st->flat_elem, st->flat, 0, z, &p, diag)) ||
+            (status = st->ops->contact_length(st->flat_elem, st->flat, z, &st->l_max, diag)))
             return status;
         st->G_max = p.F;
     }
@@ -122,26 +135,37 @@ static int on_flat_ground(double load, int status, tirenv_diag *diag)
     return status;
 }
 
-int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+/* TIRENV_ERANGE if the load is beyond the valid range (docs/models.md section 1.3): for a
+ * first load (tirenv_deformable_flat) and a new one (tirenv_deformable_set_load) alike. */
+static int load_in_range(deformable_state *st, double load, tirenv_diag *diag)
 {
-    deformable_state *st = state;
-    const double R0 = st->tire.springs.R0;
     int status = valid_range(st, diag);
     if (status)
         return on_flat_ground(load, status, diag);
     if (load > st->G_max)
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
                             "%g N is beyond the %s model's valid range, up to %.6g N (centre "
-                            "height %.4g m, contact length %.4g m), %s", load, st->ops->name, st->G_max,
-                            st->z_min, st->l_max, st->range_why);
+                            "height %.4g m, contact length %.4g m), %s", load, st->ops->name,
+                            st->G_max, st->z_min, st->l_max, st->range_why);
+    return TIRENV_OK;
+}
+
+int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    deformable_state *st = state;
+    const double R0 = st->tire.springs.R0;
+    int status = load_in_range(st, load, diag);
+    if (status)
+        return status;
     const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = R0, .dz_hint = 0.05 * R0};
     force_ctx fc = {st, st->flat, 0};
     tirenv_eq_result res;
-    status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, load, &prob, &res, diag);
+    status = tirenv_eq__solve(st->solver, &st->tire.eq, flat_force_at, &fc, load, &prob, &res,
+                              diag);
     if (status)
         return on_flat_ground(load, status, diag);
     double l_c;
-    if ((status = st->ops->contact_length(st->elem, st->flat, res.point.z, &l_c, diag)))
+    if ((status = st->ops->contact_length(st->flat_elem, st->flat, res.point.z, &l_c, diag)))
         return on_flat_ground(load, status, diag);
     st->have_flat_point = 1;
     st->flat_load = load;
@@ -174,10 +198,10 @@ int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *l
                             "%.6g N, centre height %.4g m), %s", l_c, st->ops->name, st->l_max, st->G_max,
                             st->z_min, st->range_why);
     double z;
-    status = st->ops->z_for_contact_length(st->elem, st->flat, l_c, st->z_min, &z, diag);
+    status = st->ops->z_for_contact_length(st->flat_elem, st->flat, l_c, st->z_min, &z, diag);
     tirenv_eq_point p;
     if (!status)
-        status = st->ops->forces(st->elem, st->flat, 0, z, &p, diag);
+        status = st->ops->forces(st->flat_elem, st->flat, 0, z, &p, diag);
     if (!status)
         *load = p.F;
     return status;
@@ -195,11 +219,91 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
     tirenv_eq_point flat = st->flat_point;
     int status = TIRENV_OK;
     if (!(st->have_flat_point && st->flat_load == load && flat.z == z_flat))
-        status = st->ops->forces(st->elem, st->flat, 0, z_flat, &flat, diag);
+        status = st->ops->forces(st->flat_elem, st->flat, 0, z_flat, &flat, diag);
     if (status)
         return status;
-    st->flat_F = flat.F;
-    st->flat_contacts = flat.contacts;
+    flat.z = z_flat;
+    st->flat_at = flat;
+    return TIRENV_OK;
+}
+
+/* A new load: the flat-ground equilibrium there, Newton from the last load's flat point
+ * stepped along its tangent (z - (G_new - G)/k with k = -dF_z/dz), which on flat ground,
+ * with a load that changes by a few per cent, converges in two force evaluations where a
+ * start from R0 takes five or more; the profile is not looked at. The warm start moves with
+ * the flat-ground height, its best guess of how the tire sinks over any ground. */
+int tirenv_deformable_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
+{
+    deformable_state *st = state;
+    const double R0 = st->tire.springs.R0;
+    int status = load_in_range(st, load, diag);
+    if (status)
+        return status;
+    const tirenv_eq_point *at = &st->flat_at;
+    double z0 = at->dF_dz < 0 ? at->z + (load - st->G) / at->dF_dz : at->z;
+    z0 = fmin(fmax(z0, 0.0), R0);
+    const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = z0, .dz_hint = 0.05 * R0};
+    force_ctx fc = {st, st->flat, 0};
+    tirenv_eq_result res;
+    status = tirenv_eq__solve(st->solver, &st->tire.eq, flat_force_at, &fc, load, &prob, &res,
+                              diag);
+    if (status)
+        return on_flat_ground(load, status, diag);
+    if (st->have_prev)
+        st->z_prev += res.point.z - st->z_flat;
+    st->G = load;
+    st->z_flat = *z_flat = res.point.z;
+    st->flat_at = res.point;
+    return TIRENV_OK;
+}
+
+/* What the next evaluations depend on: the load and its flat-ground point, the warm start,
+ * and the contact states both workspaces start their next solves from (the model's own,
+ * ops->state_*). The rays' caches and the bracket's search hint change no bit of a result. */
+typedef struct {
+    double G, z_flat, z_prev;
+    tirenv_eq_point flat_at;
+    int have_prev;
+} deformable_saved;
+
+size_t tirenv_deformable_state_size(const void *state)
+{
+    const deformable_state *st = state;
+    return sizeof(deformable_saved) + st->ops->state_size(st->elem) +
+           st->ops->state_size(st->flat_elem);
+}
+
+void tirenv_deformable_state_save(const void *state, unsigned char *buf)
+{
+    const deformable_state *st = state;
+    deformable_saved sv;
+    memset(&sv, 0, sizeof sv);  /* the padding too: the same state, the same bytes */
+    sv.G = st->G;
+    sv.z_flat = st->z_flat;
+    sv.z_prev = st->z_prev;
+    sv.flat_at = st->flat_at;
+    sv.have_prev = st->have_prev;
+    buf = tirenv_model__put(buf, &sv, sizeof sv);
+    st->ops->state_save(st->elem, buf);
+    st->ops->state_save(st->flat_elem, buf + st->ops->state_size(st->elem));
+}
+
+int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+{
+    deformable_state *st = state;
+    deformable_saved sv;
+    buf = tirenv_model__get(buf, &sv, sizeof sv);
+    if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a state of the %s model (load %g N, z_flat %g m)",
+                            "deformable", sv.G, sv.z_flat);
+    st->G = sv.G;
+    st->z_flat = sv.z_flat;
+    st->z_prev = sv.z_prev;
+    st->flat_at = sv.flat_at;
+    st->have_prev = sv.have_prev;
+    st->ops->state_restore(st->elem, buf);
+    st->ops->state_restore(st->flat_elem, buf + st->ops->state_size(st->elem));
     return TIRENV_OK;
 }
 
@@ -231,7 +335,7 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
                               x + TIRENV_MODEL__REACH * R0, &level)) {
         /* fx is 0 by symmetry, which the force sum only meets to round-off. */
         *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
-                              .fz = st->flat_F, .contacts = st->flat_contacts};
+                              .fz = st->flat_at.F, .contacts = st->flat_at.contacts};
         out->slope = tirenv_model__slope(out);
         st->z_prev = out->z;
         st->have_prev = 1;

@@ -31,6 +31,11 @@ typedef struct {
     /* Whether the tire looks the same at every x (no lugs turning with it), so that on level
      * ground the equilibrium is the flat one; NULL means always. */
     int (*shift_invariant)(const tirenv_tire *tire);
+    /* The contact state a workspace starts its next solve from, as bytes (a fixed number for
+     * a tire): saved, and restored into a workspace of the same tire. */
+    size_t (*state_size)(const void *elem);
+    void (*state_save)(const void *elem, unsigned char *buf);
+    void (*state_restore)(void *elem, const unsigned char *buf);
 } tirenv_deformable_ops;
 
 /* The model-type functions of model_impl.h for any deformable model; alloc takes the ops. */
@@ -46,5 +51,9 @@ void tirenv_deformable_set_profile(void *state, const tirenv_profile *p);
 /* The hub forces at (x, z) on the profile set, for the equilibrium over several tracks. */
 int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *out,
                              tirenv_diag *diag);
+int tirenv_deformable_set_load(void *state, double load, double *z_flat, tirenv_diag *diag);
+size_t tirenv_deformable_state_size(const void *state);
+void tirenv_deformable_state_save(const void *state, unsigned char *buf);
+int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag);
 
 #endif

@@ -3,8 +3,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/profile_impl.h"
 #include "model/model_impl.h"
 #include "tirenv/nn.h"
+#include "model/model_state.h"
 
 /* The table every command looks names up in: the physical models, the network, and the point
  * contact a ride compares them with. */
@@ -52,6 +54,7 @@ tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tir
         return NULL;
     m->type = type;
     m->tire = *tire;
+    m->tire_print = tirenv_model__tire_print(tire);
     m->load = NAN;
     m->state = type->alloc(tire);
     if (!m->state) {
@@ -127,6 +130,10 @@ void tirenv_model_set_extrapolate(tirenv_model *m, int allow)
 }
 
 double tirenv_model_load(const tirenv_model *m) { return m->ready ? m->load : NAN; }
+const tirenv_profile *tirenv_model_profile(const tirenv_model *m)
+{
+    return m->ready ? m->profile : NULL;
+}
 
 const char *tirenv_model_warnings(const tirenv_model *m)
 {
@@ -138,12 +145,20 @@ const char *tirenv_model_note(const tirenv_model *m)
     return m->ready && m->type->note ? m->type->note(m->state) : "";
 }
 
-int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
+/* The loads a model takes, wherever a load comes in (flat, set, set_load). */
+static int load_ok(const tirenv_model *m, double load, tirenv_diag *diag)
 {
+    (void)m;
     if (!(load > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
                             "must be a positive force in N, got %g", load);
-    return m->type->flat(m->state, load, out, diag);
+    return TIRENV_OK;
+}
+
+int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    const int status = load_ok(m, load, diag);
+    return status ? status : m->type->flat(m->state, load, out, diag);
 }
 
 /* The network remembers the contact length it was given (model.h): a further track's state is
@@ -159,24 +174,23 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
     return tirenv_model__tracks_contact_length(m, l_c, diag);
 }
 
-/* The enveloping models assume the centre clears the ground it rolls over. */
-static int below_centre(const tirenv_profile *profile, double z_flat, tirenv_diag *diag)
+/* The highest vertex of a profile, from its block maxima. */
+double tirenv_model__profile_top(const tirenv_profile *p)
 {
-    const size_t n = tirenv_profile_size(profile);
-    const double *z = tirenv_profile_z(profile);
-    for (size_t k = 0; k < n; ++k)
-        if (z[k] >= z_flat)
-            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
-                                "ground at %g m reaches the tire centre's flat-ground height "
-                                "%g m: the enveloping models do not apply",
-                                z[k], z_flat);
-    return TIRENV_OK;
+    double top = p->z_block[0];
+    for (size_t b = 1; b < p->n_block; ++b)
+        top = fmax(top, p->z_block[b]);
+    return top;
 }
 
-int tirenv_model__check_ground(const tirenv_model *m, const tirenv_profile *p,
-                               tirenv_diag *diag)
+/* What the driver keeps of a load just set (O(1)); a new profile's top is the caller's. */
+void tirenv_model__took(tirenv_model *m, const tirenv_profile *profile, double load, double z_flat)
 {
-    return below_centre(p, m->z_flat, diag);
+    m->profile = profile;
+    m->load = load;
+    m->z_flat = z_flat;
+    m->ready = 1;
+    m->reach = tirenv_model_reach(m);
 }
 
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
@@ -185,14 +199,46 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
     tirenv_flat flat;
     m->ready = 0;
     m->n_tracks = 0;
+    if (!profile)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "profile", "expected a profile, got NULL");
     int status = tirenv_model_flat(m, load, &flat, diag);
-    if (status || (status = below_centre(profile, flat.z_flat, diag)))
+    if (!status)
+        status = m->type->set(m->state, profile, load, flat.z_flat, diag);
+    if (!status) {
+        m->z_top = tirenv_model__profile_top(profile);  /* the same address may hold another profile */
+        tirenv_model__took(m, profile, load, flat.z_flat);
+        m->n_tracks = 1;
+    } else {
+        m->profile = NULL;  /* the type may hold the new one half-set: nothing to restore on */
+    }
+    return status;
+}
+
+/* A load change is a new set for a type without its own: the whole profile again. */
+int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag)
+{
+    if (!m->ready)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "no profile and load set (call tirenv_model_set first)");
+    int status = load_ok(m, load, diag);
+    if (status || load == m->load)
         return status;
-    status = m->type->set(m->state, profile, load, flat.z_flat, diag);
-    m->load = load;
-    m->z_flat = flat.z_flat;
-    m->ready = status == TIRENV_OK;
-    m->n_tracks = m->ready ? 1 : 0;
+    if (m->n_tracks > 1)  /* every track's state at the new load */
+        return tirenv_model__tracks_set_load(m, load, diag);
+    double z_flat;
+    if (m->type->set_load) {
+        status = m->type->set_load(m->state, load, &z_flat, diag);
+    } else {
+        tirenv_flat flat;
+        status = m->type->flat(m->state, load, &flat, diag);
+        z_flat = flat.z_flat;
+        if (!status && (status = m->type->set(m->state, m->profile, load, z_flat, diag))) {
+            m->ready = 0;  /* the type's set failed half-way: nothing is known to hold */
+            m->profile = NULL;
+        }
+    }
+    if (!status)
+        tirenv_model__took(m, m->profile, load, z_flat);
     return status;
 }
 
@@ -202,6 +248,7 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
 {
     if (!profile) {
         m->ready = 0;
+        m->profile = NULL;
         return TIRENV_OK;
     }
     if (!m->ready)
@@ -213,11 +260,18 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
                             "set with %zu tracks: use tirenv_model_set_track_profiles",
                             m->n_tracks);
     }
-    int status = below_centre(profile, m->z_flat, diag);
-    if (!status && m->type->set_profile)
+    int status = TIRENV_OK;
+    if (m->type->set_profile)
         m->type->set_profile(m->state, profile);
-    else if (status || (status = m->type->set(m->state, profile, m->load, m->z_flat, diag)))
+    else
+        status = m->type->set(m->state, profile, m->load, m->z_flat, diag);
+    if (status) {
         m->ready = 0;
+        m->profile = NULL;
+    } else {
+        m->z_top = tirenv_model__profile_top(profile);
+        tirenv_model__took(m, profile, m->load, m->z_flat);
+    }
     return status;
 }
 
@@ -246,14 +300,37 @@ static int not_set(tirenv_diag *diag)
                         "no profile and load set (call tirenv_model_set first)");
 }
 
+/* The enveloping models assume the hub clears the ground (docs/models.md section 2.5): no
+ * ground within the tire's free radius R0 of x (horizontally: where the free circle stands)
+ * may rise to the centre's height at x. A tire rolling off a cliff has ground above its hub
+ * once it is past the edge, farther than R0 behind: that is not refused. Checked where the
+ * model is evaluated, so that a road may climb any height: O(1) when the whole profile is
+ * below the centre, else O(log n + the vertices within R0). */
+static int clears_ground(const tirenv_model *m, const tirenv_point *pt, tirenv_diag *diag)
+{
+    if (m->z_top < pt->z)
+        return TIRENV_OK;
+    const double x = pt->x, R0 = m->tire.springs.R0;
+    const double top = m->n_tracks > 1 ? tirenv_model__tracks_max_height(m, x - R0, x + R0)
+                                       : tirenv_profile_max_height(m->profile, x - R0, x + R0);
+    if (top < pt->z)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0, "profile",
+                        "ground at %.6g m within the tire's radius %.4g m of the centre rises "
+                        "to the centre's height %.6g m: the enveloping models assume the hub "
+                        "clears the ground", top, R0, pt->z);
+}
+
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
     out->x = x;  /* as the header promises, on failure too */
     if (!m->ready)
         return not_set(diag);
-    const int status = m->n_tracks > 1 ? tirenv_model__tracks_eval(m, x, out, diag)
+    int status = m->n_tracks > 1 ? tirenv_model__tracks_eval(m, x, out, diag)
                                        : m->type->eval(m->state, x, out, diag);
     out->x = x;
+    if (!status)
+        status = clears_ground(m, out, diag);
     return at_position(m, x, status, diag);
 }
 
@@ -262,7 +339,10 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
 {
     if (m->ready && m->n_tracks > 1 && n > 0) {
         size_t k = 0;
-        const int status = tirenv_model__tracks_envelope(m, n, x, out, &k, diag);
+        int status = tirenv_model__tracks_envelope(m, n, x, out, &k, diag);
+        if (!status)
+            for (k = 0; k < n && !(status = clears_ground(m, &out[k], diag)); ++k)
+                ;
         if (status && failed)
             *failed = k;
         return at_position(m, status ? x[k < n ? k : 0] : 0, status, diag);
@@ -274,7 +354,10 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
             return not_set(diag);
         }
         size_t k = 0;
-        const int status = m->type->envelope(m->state, n, x, out, &k, diag);
+        int status = m->type->envelope(m->state, n, x, out, &k, diag);
+        if (!status)
+            for (k = 0; k < n && !(status = clears_ground(m, &out[k], diag)); ++k)
+                ;
         if (status && failed)
             *failed = k;
         return at_position(m, status ? x[k < n ? k : 0] : 0, status, diag);

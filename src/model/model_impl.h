@@ -4,6 +4,8 @@
 #ifndef TIRENV_MODEL_IMPL_H
 #define TIRENV_MODEL_IMPL_H
 
+#include <string.h>
+
 #include "core/equilibrium.h"
 #include "tirenv/model.h"
 #include "tirenv/tracks.h"
@@ -49,27 +51,47 @@ struct tirenv_model_type {
      * profile set, F_z, dF_z/dz, F_x and the contacts of one evaluation in *out (out->z = z),
      * for the equilibrium over the tracks. */
     int (*forces)(void *state, double x, double z, tirenv_eq_point *out, tirenv_diag *diag);
+    /* Optional: a new load (N) on the profile already set, at the cost of the work within the
+     * tire's reach: what depends on the profile alone is kept, and so is the warm start. The
+     * flat-ground centre height at the new load in *z_flat (m). On failure nothing of the
+     * state has changed. NULL: the driver sets the whole profile again (tirenv_model_set). */
+    int (*set_load)(void *state, double load, double *z_flat, tirenv_diag *diag);
+    /* Optional, all three or none: the bytes of what the model carries from one call to the
+     * next besides its profile (load, warm start, caches whose content can change a bit of a
+     * result), for tirenv_model_state_save / _restore. state_size is fixed for an instance
+     * (it may depend on the tire, never on what was evaluated); save writes exactly that many
+     * bytes; restore reads them back into an instance of the same type and tire whose profile
+     * is set, and may fail with diag filled (then the instance is unset by the driver). NULL:
+     * the type has no state of its own beyond the driver's load (never for a type that has). */
+    size_t (*state_size)(const void *state);
+    void (*state_save)(const void *state, unsigned char *buf);
+    int (*state_restore)(void *state, const unsigned char *buf, tirenv_diag *diag);
 };
 
 struct tirenv_model__tracks;  /* several tracks (tracks.c) */
 
-/* A model instance (model.c, tracks.c): the type's state and what the driver keeps. */
+/* A model instance (model.c, model_state.c, tracks.c): the type's state and what the driver
+ * keeps. */
 struct tirenv_model {
     const tirenv_model_type *type;
     void *state;
     tirenv_tire tire;
-    double load;           /* N */
-    double z_flat;         /* flat-ground centre height at load, m */
-    int ready;             /* a profile and load are set */
-    size_t n_tracks;       /* distinct tracks set: 1 by tirenv_model_set, 0 before any */
+    unsigned long long tire_print; /* fingerprint of the tire, for state restores */
+    const tirenv_profile *profile; /* the last profile set (borrowed), NULL if none */
+    double load;                   /* N */
+    double z_flat;                 /* flat-ground centre height at load, m */
+    double reach;                  /* tirenv_model_reach at the load set, m */
+    double z_top;                  /* the profile's highest vertex, m */
+    int ready;                     /* a profile and load are set */
+    size_t n_tracks;               /* distinct tracks set: 1 by tirenv_model_set, 0 before */
     struct tirenv_model__tracks *tracks; /* the other tracks' states, NULL until needed */
     /* What a new track's state must be told that the first one was: the network (a copy) and
      * the R0 of its x_N, and the last contact length given (the network remembers it). */
     struct tirenv_nn *nn;
-    double nn_R0;          /* m */
+    double nn_R0;                  /* m */
     int have_l_c;
-    double l_c;            /* m */
-    int extrapolate;       /* tirenv_model_set_extrapolate's, given to every track's state */
+    double l_c;                    /* m */
+    int extrapolate;               /* tirenv_model_set_extrapolate's, given to every track */
 };
 
 /* Private to model.c and tracks.c: a new type state for a further track, told what the first
@@ -77,9 +99,11 @@ struct tirenv_model {
  * fails. */
 void *tirenv_model__track_state(const tirenv_model *m);
 
-/* model.c: the check of tirenv_model_set on a further track's profile, against m->z_flat. */
-int tirenv_model__check_ground(const tirenv_model *m, const tirenv_profile *p,
-                               tirenv_diag *diag);
+/* model.c: a profile's highest vertex (m), and the driver's record of a profile and load
+ * just set (profile, load, z_flat, ready, reach; the caller sets z_top). */
+double tirenv_model__profile_top(const tirenv_profile *p);
+void tirenv_model__took(tirenv_model *m, const tirenv_profile *profile, double load,
+                        double z_flat);
 
 /* tracks.c: the driver's hooks for several tracks (m->n_tracks > 1). */
 void tirenv_model__tracks_free(tirenv_model *m);  /* and m->tracks = NULL */
@@ -89,8 +113,25 @@ int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag
 void tirenv_model__tracks_extrapolate(tirenv_model *m);
 int tirenv_model__tracks_eval(tirenv_model *m, double x, tirenv_point *out,
                               tirenv_diag *diag);
+/* A new load on every track (tirenv_model_set_load); the highest ground of the tracks over
+ * [x0, x1] (m), for the hub's check. */
+int tirenv_model__tracks_set_load(tirenv_model *m, double load, tirenv_diag *diag);
+double tirenv_model__tracks_max_height(const tirenv_model *m, double x0, double x1);
 int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],
                                   tirenv_point out[], size_t *failed, tirenv_diag *diag);
+
+/* Sequential reading and writing of a state's bytes (no alignment assumed): each returns the
+ * position after what it moved. */
+static inline unsigned char *tirenv_model__put(unsigned char *p, const void *v, size_t n)
+{
+    memcpy(p, v, n);
+    return p + n;
+}
+static inline const unsigned char *tirenv_model__get(const unsigned char *p, void *v, size_t n)
+{
+    memcpy(v, p, n);
+    return p + n;
+}
 
 /* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
  * R0 from its centre; 5 % covers a tread standing out of the free circle. */

@@ -48,6 +48,7 @@ typedef struct {
     int cleat;                 /* the profile is a single cleat L x H */
     double L, H, x_0;          /* m; x_0 the x_N origin */
     tirenv_nn_road *road;      /* otherwise its decomposition */
+    char clamped[512];         /* the decomposition's obstacles outside the training range */
     char warnings[1024];
     char note[256];
 } nn_state;
@@ -236,9 +237,11 @@ static int obstacles_in_range(const nn_state *st, tirenv_diag *diag)
                         in.obstacles);
 }
 
-/* The decomposition's obstacles outside the training range, in one warning. */
+/* The decomposition's obstacles outside the training range, in one warning into
+ * st->clamped (a property of the profile, kept for the warnings of a new load). */
 static void warn_clamped(nn_state *st, const tirenv_nn_road_info *in)
 {
+    st->clamped[0] = '\0';
     const size_t clamped = in->height_above + in->length_below + in->length_above;
     if (!clamped)
         return;
@@ -256,8 +259,30 @@ static void warn_clamped(nn_state *st, const tirenv_nn_road_info *in)
             used += (size_t)snprintf(detail + used, sizeof detail - used, "%s%zu %s %g m",
                                      used ? ", " : "", parts[i].count, parts[i].text,
                                      parts[i].bound);
-    warn(st, "%zu of %zu obstacles outside the network's training range, clamped to it (%s): "
-         "their curves are the nearest trained cleat's", clamped, in->obstacles, detail);
+    snprintf(st->clamped, sizeof st->clamped, "%zu of %zu obstacles outside the network's "
+             "training range, clamped to it (%s): their curves are the nearest trained "
+             "cleat's", clamped, in->obstacles, detail);
+}
+
+/* The inputs the regime set checks: the cleat's three, or the contact length over a road. */
+static size_t checked_inputs(const nn_state *st)
+{
+    return st->cleat ? TIRENV_NN_INPUTS : TIRENV_NN_CONTACT_LENGTH + 1;
+}
+
+/* The warnings of the regime set: the network's R0, its inputs outside the training range
+ * (refused unless extrapolation is allowed: check_range), the obstacles clamped. */
+static int warnings_build(nn_state *st, tirenv_diag *diag)
+{
+    st->warnings[0] = '\0';
+    if (st->r0_warning[0])
+        warn(st, "%s", st->r0_warning);
+    const int status = check_range(st, checked_inputs(st), diag);
+    if (status)
+        return status;
+    if (!st->cleat && st->clamped[0])
+        warn(st, "%s", st->clamped);
+    return TIRENV_OK;
 }
 
 /* The network's forms after the note: what the model file says it was trained as. */
@@ -277,7 +302,7 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
                         tirenv_diag *diag)
 {
     nn_state *st = state;
-    st->warnings[0] = st->note[0] = '\0';
+    st->warnings[0] = st->note[0] = st->clamped[0] = '\0';
     tirenv_nn_road_free(st->road);
     st->road = NULL;
     if (!st->nn)
@@ -290,10 +315,8 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     st->load = load;
     st->z_flat = z_flat;
     st->cleat = single_cleat(p, &st->L, &st->H);
-    if (st->r0_warning[0])
-        warn(st, "%s", st->r0_warning);
     if (st->cleat) {
-        const int s = check_range(st, TIRENV_NN_INPUTS, diag);
+        const int s = warnings_build(st, diag);
         if (s)
             return s;
         st->x_0 = tirenv_xN_origin(st->R0, st->l_c, st->L, st->H);
@@ -308,6 +331,8 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
         return s;
     const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
     warn_clamped(st, &in);
+    if ((s = warnings_build(st, diag)))
+        return s;
     snprintf(st->note, sizeof st->note, "%zu obstacles above a baseline of width %.3g m (%zu "
              "lower than the lowest trained cleat, scaled)", in.obstacles, in.width,
              in.height_below);
@@ -316,6 +341,96 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
              "curves are its curve scaled down, an extrapolation", in.height_below,
              in.obstacles, in.H_min);
     note_forms(st);
+    return TIRENV_OK;
+}
+
+/* A contact length on the profile set: over a cleat its x_N origin, over a road the
+ * decomposition's (O(1), tirenv_nn_road_set_contact_length). Checked before anything changes;
+ * then the warnings follow. */
+static int nn_model_apply(nn_state *st, double load, double l_c, double z_flat,
+                          tirenv_diag *diag)
+{
+    /* The new contact length within the trained range first (extrapolation allowed, it can
+     * only warn: warnings_build below). */
+    int status = TIRENV_OK;
+    if (!st->extrapolate) {
+        const double l_c_was = st->l_c;
+        st->l_c = l_c;
+        status = check_range(st, checked_inputs(st), diag);
+        st->l_c = l_c_was;
+        if (status)
+            return status;
+    }
+    status = st->cleat
+                     ? tirenv_nn_envelope(st->nn, st->R0, l_c, st->L, st->H, 0, NULL, NULL, diag)
+                     : tirenv_nn_road_set_contact_length(st->road, l_c, diag);
+    if (status)
+        return status;
+    st->load = load;
+    st->l_c = l_c;
+    st->z_flat = z_flat;
+    if (st->cleat)
+        st->x_0 = tirenv_xN_origin(st->R0, l_c, st->L, st->H);
+    return warnings_build(st, diag);  /* the range is checked: it adds the warnings */
+}
+
+/* The regime at the new load, as tirenv_model_set finds it (the same flat-ground solve, so the
+ * same bits), without the decomposition of the road, which does not depend on it. */
+static int nn_model_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
+{
+    nn_state *st = state;
+    double l_c = NAN, z_c = NAN;
+    int status = regime(st, load, &l_c, NULL, diag);
+    if (!status)
+        status = chord_height(st, l_c, &z_c, diag);
+    if (!status)
+        status = nn_model_apply(st, load, l_c, z_c, diag);
+    if (!status)
+        *z_flat = z_c;
+    return status;
+}
+
+/* The regime and the pair load_for_contact_length made; the network, the profile and its
+ * decomposition are the instance's. */
+typedef struct {
+    double load, l_c, z_flat, pin_load, pin_l_c;
+    int pinned;
+} nn_saved;
+
+static size_t nn_model_state_size(const void *state)
+{
+    (void)state;
+    return sizeof(nn_saved);
+}
+
+static void nn_model_state_save(const void *state, unsigned char *buf)
+{
+    const nn_state *st = state;
+    nn_saved sv;
+    memset(&sv, 0, sizeof sv);
+    sv.load = st->load;
+    sv.l_c = st->l_c;
+    sv.z_flat = st->z_flat;
+    sv.pin_load = st->pin_load;
+    sv.pin_l_c = st->pin_l_c;
+    sv.pinned = st->pinned;
+    tirenv_model__put(buf, &sv, sizeof sv);
+}
+
+static int nn_model_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+{
+    nn_state *st = state;
+    nn_saved sv;
+    tirenv_model__get(buf, &sv, sizeof sv);
+    if (!st->nn || !(st->cleat || st->road))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "the nn model has no network and profile to restore onto");
+    const int status = nn_model_apply(st, sv.load, sv.l_c, sv.z_flat, diag);
+    if (status)
+        return status;
+    st->pinned = sv.pinned != 0;
+    st->pin_load = sv.pin_load;
+    st->pin_l_c = sv.pin_l_c;
     return TIRENV_OK;
 }
 
@@ -417,5 +532,9 @@ static const tirenv_model_type nn_type = {
     .warnings = nn_model_warnings,
     .note = nn_model_note,
     .tracks = TIRENV_TRACKS_MEAN,
+    .set_load = nn_model_set_load,
+    .state_size = nn_model_state_size,
+    .state_save = nn_model_state_save,
+    .state_restore = nn_model_state_restore,
 };
 const tirenv_model_type *tirenv_model_nn = &nn_type;

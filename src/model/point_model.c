@@ -84,6 +84,35 @@ static int point_eval(void *state, double x, tirenv_point *out, tirenv_diag *dia
     return TIRENV_OK;
 }
 
+/* The load scales the hub forces only: nothing of the profile to redo. */
+static int point_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
+{
+    point_state *st = state;
+    (void)diag;
+    st->G = load;
+    *z_flat = st->tire.springs.R0;
+    return TIRENV_OK;
+}
+
+/* The load is all it carries (the search hint changes no result). */
+static size_t point_state_size(const void *state)
+{
+    (void)state;
+    return sizeof(double);
+}
+
+static void point_state_save(const void *state, unsigned char *buf)
+{
+    tirenv_model__put(buf, &((const point_state *)state)->G, sizeof(double));
+}
+
+static int point_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+{
+    (void)diag;
+    tirenv_model__get(buf, &((point_state *)state)->G, sizeof(double));
+    return TIRENV_OK;
+}
+
 static const tirenv_model_type point_type = {
     .name = "point",
     .summary = "single-point contact on the raw profile",
@@ -104,5 +133,9 @@ static const tirenv_model_type point_type = {
     .warnings = NULL,
     .note = NULL,
     .tracks = TIRENV_TRACKS_MEAN,
+    .set_load = point_set_load,
+    .state_size = point_state_size,
+    .state_save = point_state_save,
+    .state_restore = point_state_restore,
 };
 const tirenv_model_type *tirenv_model_point = &point_type;

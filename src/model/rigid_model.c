@@ -76,6 +76,35 @@ static int rigid_eval(void *state, double x, tirenv_point *out, tirenv_diag *dia
     return TIRENV_OK;
 }
 
+/* The load scales the hub forces only: nothing of the profile to redo. */
+static int rigid_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
+{
+    rigid_state *st = state;
+    (void)diag;
+    st->G = load;
+    *z_flat = st->tire.springs.R0;
+    return TIRENV_OK;
+}
+
+/* The load is all it carries (the search hint changes no result). */
+static size_t rigid_state_size(const void *state)
+{
+    (void)state;
+    return sizeof(double);
+}
+
+static void rigid_state_save(const void *state, unsigned char *buf)
+{
+    tirenv_model__put(buf, &((const rigid_state *)state)->G, sizeof(double));
+}
+
+static int rigid_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+{
+    (void)diag;
+    tirenv_model__get(buf, &((rigid_state *)state)->G, sizeof(double));
+    return TIRENV_OK;
+}
+
 static const tirenv_model_type rigid_type = {
     .name = "rigid",
     .summary = "the rigid disc: the geometric limit",
@@ -96,5 +125,9 @@ static const tirenv_model_type rigid_type = {
     .warnings = NULL,
     .note = NULL,
     .tracks = TIRENV_TRACKS_HIGHEST,
+    .set_load = rigid_set_load,
+    .state_size = rigid_state_size,
+    .state_save = rigid_state_save,
+    .state_restore = rigid_state_restore,
 };
 const tirenv_model_type *tirenv_model_rigid = &rigid_type;

@@ -349,3 +349,25 @@ void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[
         }
     }
 }
+
+/* The node states the next contact solve starts from. */
+size_t tirenv_ring__state_size(const tirenv_ring *r)
+{
+    return 2 * sizeof(size_t) + r->M;
+}
+
+void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf)
+{
+    memcpy(buf, &r->warm_lo, sizeof r->warm_lo);
+    memcpy(buf + sizeof r->warm_lo, &r->warm_n, sizeof r->warm_n);
+    memcpy(buf + 2 * sizeof(size_t), r->warm, r->M);
+}
+
+void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
+{
+    memcpy(&r->warm_lo, buf, sizeof r->warm_lo);
+    memcpy(&r->warm_n, buf + sizeof r->warm_lo, sizeof r->warm_n);
+    memcpy(r->warm, buf + 2 * sizeof(size_t), r->M);
+    if (!(r->warm_lo <= r->M && r->warm_n <= r->M - r->warm_lo))
+        r->warm_lo = r->warm_n = 0;
+}

@@ -91,6 +91,12 @@ struct tirenv_ring {
  * settles or the banded Cholesky breaks down. */
 int tirenv_ring__solve_contact(tirenv_ring *r, tirenv_diag *diag);
 
+/* The node states the next contact solve starts from (ring.c), as bytes: their number for a
+ * ring, its bytes, and those bytes back into a ring of the same parameters. */
+size_t tirenv_ring__state_size(const tirenv_ring *r);
+void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf);
+void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf);
+
 /* dF_z/dz (N/m) with the states of the last tirenv_ring__solve_contact fixed. */
 double tirenv_ring__dfz_dz(tirenv_ring *r);
 

@@ -5,6 +5,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include "model/deformable.h"
+#include "model/ring_impl.h"
 #include "tirenv/ring.h"
 
 static void *ring_alloc(const tirenv_tire *tire)
@@ -170,6 +171,16 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
 /* Lugs turn with the tread, so a lugged ring is not the same at every x. */
 static int ring_shift_invariant(const tirenv_tire *tire) { return !(tire->ring.lug_count > 0); }
 
+static size_t ring_state_size(const void *elem) { return tirenv_ring__state_size(elem); }
+static void ring_state_save(const void *elem, unsigned char *buf)
+{
+    tirenv_ring__state_save(elem, buf);
+}
+static void ring_state_restore(void *elem, const unsigned char *buf)
+{
+    tirenv_ring__state_restore(elem, buf);
+}
+
 static const tirenv_deformable_ops ring_ops = {
     .name = "ring",
     .lowest_z = ring_lowest_z,
@@ -178,6 +189,9 @@ static const tirenv_deformable_ops ring_ops = {
     .forces = ring_forces,
     .contact_length = ring_contact_length,
     .z_for_contact_length = ring_z_for_contact_length,
+    .state_size = ring_state_size,
+    .state_save = ring_state_save,
+    .state_restore = ring_state_restore,
     .shift_invariant = ring_shift_invariant,
 };
 
@@ -218,5 +232,9 @@ static const tirenv_model_type ring_type = {
     .note = NULL,
     .tracks = TIRENV_TRACKS_EQUILIBRIUM,
     .forces = tirenv_deformable_forces,
+    .set_load = tirenv_deformable_set_load,
+    .state_size = tirenv_deformable_state_size,
+    .state_save = tirenv_deformable_state_save,
+    .state_restore = tirenv_deformable_state_restore,
 };
 const tirenv_model_type *tirenv_model_ring = &ring_type;

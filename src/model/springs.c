@@ -393,3 +393,29 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
     for (size_t j = b + 1; j < N; ++j)
         w[j] = s->k_ir / s->R_D[j] * w[j - 1];
 }
+
+/* The warm state of the tip contact: which elements may touch and which were pinned. The rays'
+ * cache is dropped on restore; it changes no bit of a result, only how fast it is found. */
+size_t tirenv_springs__state_size(const tirenv_springs *s)
+{
+    return 2 * sizeof(size_t) + s->N;
+}
+
+void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf)
+{
+    memcpy(buf, &s->a, sizeof s->a);
+    memcpy(buf + sizeof s->a, &s->b, sizeof s->b);
+    memcpy(buf + 2 * sizeof(size_t), s->active, s->N);
+}
+
+void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
+{
+    memcpy(&s->a, buf, sizeof s->a);
+    memcpy(&s->b, buf + sizeof s->a, sizeof s->b);
+    memcpy(s->active, buf + 2 * sizeof(size_t), s->N);
+    if (!(s->a <= s->b && s->b < s->N)) { /* nothing may touch */
+        s->a = 1;
+        s->b = 0;
+    }
+    s->ray_serial = 0;
+}

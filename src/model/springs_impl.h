@@ -4,6 +4,13 @@
 
 #include <stddef.h>
 #include "tirenv/profile.h"
+#include "tirenv/springs.h"
+
+/* The contact state the next force evaluation starts from (springs.c), as bytes: their
+ * number for a model, its bytes, and those bytes back into a model of the same parameters. */
+size_t tirenv_springs__state_size(const tirenv_springs *s);
+void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
+void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
 
 /* Ray casting: distance rho (m) from the centre (x, z) along u = (sin_t, -cos_t) to the first
  * crossing of the ground boundary, or INFINITY if there is none within rho_max. drho_dz is

@@ -3,6 +3,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "model/deformable.h"
+#include "model/springs_impl.h"
 #include "tirenv/springs.h"
 
 static void *springs_alloc(const tirenv_tire *tire)
@@ -44,6 +45,16 @@ static int springs_z_for_contact_length(void *elem, const tirenv_profile *flat, 
     return 0;
 }
 
+static size_t springs_state_size(const void *elem) { return tirenv_springs__state_size(elem); }
+static void springs_state_save(const void *elem, unsigned char *buf)
+{
+    tirenv_springs__state_save(elem, buf);
+}
+static void springs_state_restore(void *elem, const unsigned char *buf)
+{
+    tirenv_springs__state_restore(elem, buf);
+}
+
 /* docs/models.md section 4.1: the elements span the tread segment |theta| <= phi/2. With the
  * centre below R0*cos(phi/2) the flat ground would reach past the segment's last element, and
  * the elements the model does not have would carry load: its valid range ends there. The
@@ -73,6 +84,9 @@ static const tirenv_deformable_ops springs_ops = {
     .forces = springs_forces,
     .contact_length = springs_contact_length,
     .z_for_contact_length = springs_z_for_contact_length,
+    .state_size = springs_state_size,
+    .state_save = springs_state_save,
+    .state_restore = springs_state_restore,
 };
 
 static void *springs_model_alloc(const tirenv_tire *tire)
@@ -110,5 +124,9 @@ static const tirenv_model_type springs_type = {
     .note = NULL,
     .tracks = TIRENV_TRACKS_EQUILIBRIUM,
     .forces = tirenv_deformable_forces,
+    .set_load = tirenv_deformable_set_load,
+    .state_size = tirenv_deformable_state_size,
+    .state_save = tirenv_deformable_state_save,
+    .state_restore = tirenv_deformable_state_restore,
 };
 const tirenv_model_type *tirenv_model_springs = &springs_type;

@@ -101,6 +101,19 @@ void tirenv_model__tracks_extrapolate(tirenv_model *m)
         m->type->set_extrapolate(t->state[k], m->extrapolate);
 }
 
+/* The driver's record of tracks just set at load (z_flat in m): the first track stands for
+ * the profile, the highest vertex is over them all (the hub's check, model.c). */
+static void tracks_took(tirenv_model *m, double load, double z_flat)
+{
+    const struct tirenv_model__tracks *t = m->tracks;
+    double top = -INFINITY;
+    for (size_t k = 0; k < t->n; ++k)
+        top = fmax(top, tirenv_model__profile_top(t->prof[k]));
+    m->z_top = top;
+    tirenv_model__took(m, t->prof[0], load, z_flat);
+    m->n_tracks = t->n;
+}
+
 /* Room for n given profiles (and so at most n distinct tracks) in the arrays. */
 static int tracks_arrays(tirenv_model *m, size_t n, tirenv_diag *diag)
 {
@@ -224,9 +237,7 @@ int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *con
         return status;
     m->z_flat = flat.z_flat;
     for (size_t k = 0; k < t->n && !status; ++k) {
-        status = tirenv_model__check_ground(m, t->prof[k], diag);
-        if (!status)
-            status = m->type->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
+        status = m->type->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
         if (status && diag && t->n > 1) {
             char msg[sizeof diag->message];
             snprintf(msg, sizeof msg, "track %zu: %.400s", k + 1, diag->message);
@@ -236,9 +247,7 @@ int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *con
     }
     if (status)
         return status;
-    m->load = load;
-    m->ready = 1;
-    m->n_tracks = t->n;
+    tracks_took(m, load, flat.z_flat);
     return TIRENV_OK;
 }
 
@@ -274,15 +283,51 @@ int tirenv_model_set_track_profiles(tirenv_model *m, size_t n,
     for (size_t i = 0; i < n; ++i)
         t->prof[t->map[i]] = profiles[i];
     for (size_t k = 0; k < t->n && !status; ++k) {
-        status = tirenv_model__check_ground(m, t->prof[k], diag);
-        if (!status && m->type->set_profile)
+        if (m->type->set_profile)
             m->type->set_profile(t->state[k], t->prof[k]);
-        else if (!status)
+        else
             status = m->type->set(t->state[k], t->prof[k], m->load, m->z_flat, diag);
     }
-    if (status)
+    if (status) {
         m->ready = 0;
+        m->profile = NULL;
+    } else {
+        tracks_took(m, m->load, m->z_flat);
+    }
     return status;
+}
+
+/* Each track's state at the new load: the type's own set_load where it has one, else its set
+ * on the track's profile again. A failure leaves the model unset (some tracks may have moved). */
+int tirenv_model__tracks_set_load(tirenv_model *m, double load, tirenv_diag *diag)
+{
+    struct tirenv_model__tracks *t = m->tracks;
+    tirenv_flat flat;
+    int status = m->type->flat(m->state, load, &flat, diag);
+    double z_flat = flat.z_flat;
+    for (size_t k = 0; k < t->n && !status; ++k) {
+        if (m->type->set_load)
+            status = m->type->set_load(t->state[k], load, &z_flat, diag);
+        else
+            status = m->type->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
+    }
+    if (status) {
+        m->ready = 0;
+        m->profile = NULL;
+        return status;
+    }
+    t->have_prev = 0;
+    tracks_took(m, load, flat.z_flat);
+    return TIRENV_OK;
+}
+
+double tirenv_model__tracks_max_height(const tirenv_model *m, double x0, double x1)
+{
+    const struct tirenv_model__tracks *t = m->tracks;
+    double top = -INFINITY;
+    for (size_t k = 0; k < t->n; ++k)
+        top = fmax(top, tirenv_profile_max_height(t->prof[k], x0, x1));
+    return top;
 }
 
 size_t tirenv_model_tracks(const tirenv_model *m)

@@ -75,7 +75,9 @@ static const double range_tol = 1e-9;
  * take 8 GB of workspace while building). */
 static const double max_samples = 268435456.0;
 
-/* What a position needs of an obstacle, in one cache line. */
+/* What a position needs of an obstacle. x_0 and reach depend on the contact length: they
+ * are computed when the obstacle is first met at the current one (gen), so that a change of
+ * contact length costs O(1), not O(obstacles) (tirenv_nn_road_set_contact_length). */
 typedef struct {
     double c;              /* centre (centroid of q - b), m */
     double reach;          /* |x - c| beyond which its curve is 0 (with reach_margin), m */
@@ -84,6 +86,7 @@ typedef struct {
     double H;              /* the lift is clipped to [0, H], m */
     double top;            /* the term is capped at the highest ground point, m */
     double H_net, L_net;   /* the network's obstacle inputs, m */
+    unsigned long gen;     /* the contact length x_0 and reach are for (tirenv_nn_road.gen) */
 } road_obstacle;
 
 /* The workspace of an evaluation, so that it never allocates: per position of the chunk, and
@@ -103,7 +106,9 @@ typedef struct {
 
 struct tirenv_nn_road {
     tirenv_nn *nn;         /* own copy: its workspace is written by every evaluation */
+    double R0;             /* free radius, m */
     double l_c;            /* contact length, m */
+    unsigned long gen;     /* counts the contact lengths set */
     double x_N_min;        /* first x_N the network was trained on */
     int prune;
     /* Baseline: bs[j] at the samples xs[j] (increasing), linear in between (slope ms[j] on
@@ -120,7 +125,9 @@ struct tirenv_nn_road {
     size_t n_ob;
     road_obstacle *ob;
     tirenv_nn_obstacle *pub;
-    double reach_max;      /* largest ob[k].reach, m */
+    size_t k_H_max;        /* the obstacle of the highest network height H_net */
+    double L_net_max;      /* the longest network length, m */
+    double reach_max;      /* a bound on every ob[k].reach at the contact length, m */
     size_t hint;           /* first obstacle of the last window */
     tirenv_nn_road_info info;
     road_work work;
@@ -176,13 +183,49 @@ double tirenv_nn_road_baseline(const tirenv_nn_road *r, double x)
     return baseline_at(r, x, &db);
 }
 
+/* x_0 and reach of obstacle k at the current contact length (see road_obstacle), with the
+ * public record's reach. */
+static void obstacle_refresh(tirenv_nn_road *r, size_t k)
+{
+    road_obstacle *o = &r->ob[k];
+    tirenv_nn_obstacle *P = &r->pub[k];
+    const double x_0 = tirenv_xN_origin(r->R0, r->l_c, o->L_net, o->H_net);
+    P->reach = -x_0 * (1 - r->x_N_min);
+    o->x_0 = x_0;
+    o->reach = P->reach * (1 + reach_margin);
+    o->gen = r->gen;
+}
+
+static inline const road_obstacle *obstacle_at(tirenv_nn_road *r, size_t k)
+{
+    if (r->ob[k].gen != r->gen)
+        obstacle_refresh(r, k);
+    return &r->ob[k];
+}
+
+/* Every obstacle brought to the current contact length, and the reach of the info. The
+ * getters call it: they report, and need not be fast. */
+static void refresh_all(tirenv_nn_road *r)
+{
+    r->info.reach = 0;
+    for (size_t k = 0; k < r->n_ob; ++k) {
+        const tirenv_nn_obstacle *P = &r->pub[k];
+        obstacle_at(r, k);
+        r->info.reach = fmax(r->info.reach, P->reach + fmax(P->c - P->x_lo, P->x_hi - P->c));
+    }
+}
+
+/* The getters are const to their callers; the obstacles' values at the contact length are a
+ * cache of the object's, which lives in writable memory (tirenv_nn_road_alloc's). */
 const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r)
 {
+    refresh_all((tirenv_nn_road *)r);
     return r->pub;
 }
 
 tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r)
 {
+    refresh_all((tirenv_nn_road *)r);
     return r->info;
 }
 
@@ -416,20 +459,17 @@ static int build(tirenv_nn_road *r, const tirenv_profile *p, double a, double ds
     return status;
 }
 
-/* Network inputs and reach of each obstacle: clamped to the trained range (and counted), x_0
- * of docs/models.md section 1 for the cleat the network is asked about. */
-static int prepare_obstacles(tirenv_nn_road *r, double R0, const double lo[],
-                             const double hi[], tirenv_diag *diag)
+/* Network inputs of each obstacle, clamped to the trained range (and counted): what does not
+ * depend on the contact length. */
+static void prepare_obstacles(tirenv_nn_road *r, const double lo[], const double hi[])
 {
     const double H_min = lo[TIRENV_NN_HEIGHT], H_max = hi[TIRENV_NN_HEIGHT];
     const double L_min = lo[TIRENV_NN_LENGTH], L_max = hi[TIRENV_NN_LENGTH];
-    const double z_c = sqrt(R0 * R0 - 0.25 * r->l_c * r->l_c);  /* chord height */
     tirenv_nn_road_info *in = &r->info;
-    r->reach_max = 0;
-    in->reach = 0;
+    r->k_H_max = 0;
+    r->L_net_max = 0;
     for (size_t k = 0; k < r->n_ob; ++k) {
         tirenv_nn_obstacle *P = &r->pub[k];
-        road_obstacle *o = &r->ob[k];
         double scale = 1, H_net = P->H, L_net = P->L;
         if (P->H < H_min) {
             H_net = H_min;
@@ -446,21 +486,44 @@ static int prepare_obstacles(tirenv_nn_road *r, double R0, const double lo[],
             L_net = L_max;
             in->length_above += P->L > L_max * (1 + range_tol);
         }
-        const double x_0 = tirenv_xN_origin(R0, r->l_c, L_net, H_net);
-        if (!(H_net < z_c) || !(x_0 < 0))
+        P->H_net = H_net;
+        P->L_net = L_net;
+        r->ob[k] = (road_obstacle){.c = P->c, .scale = scale, .H = P->H, .top = P->top,
+                                   .H_net = H_net, .L_net = L_net, .gen = 0};
+        if (H_net > r->ob[r->k_H_max].H_net)
+            r->k_H_max = k;
+        r->L_net_max = fmax(r->L_net_max, L_net);
+    }
+}
+
+/* The contact length's part, O(1): the check that no obstacle's cleat reaches the chord height
+ * (the highest is enough), and the window of obstacles a position looks at. Each obstacle's
+ * reach is -x_0*(1 - x_N_min) with -x_0 = L/2 + sqrt(R0^2 - (z_c - H)^2) (tirenv_xN_origin),
+ * which grows with L and with H below z_c, so the longest and the highest bound them all; the
+ * window is only where obstacles are looked for, each is then held to its own reach, so that
+ * the bound changes no result. */
+int tirenv_nn_road_set_contact_length(tirenv_nn_road *r, double l_c, tirenv_diag *diag)
+{
+    const double R0 = r->R0;
+    if (!(l_c > 0) || !(l_c < 2 * R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                            "expected 0 < l_c < 2*R0 = %g m, got %g", 2 * R0, l_c);
+    const double z_c = sqrt(R0 * R0 - 0.25 * l_c * l_c);  /* chord height */
+    if (r->n_ob > 0) {
+        const tirenv_nn_obstacle *P = &r->pub[r->k_H_max];
+        if (!(P->H_net < z_c))
             return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle_height_m",
                                 "the obstacle at x = %g m is %g m high (network input %g m): "
                                 "it reaches the centre height %g m of a tire of radius %g m at "
-                                "contact length %g m", P->c, P->H, H_net, z_c, R0, r->l_c);
-        P->H_net = H_net;
-        P->L_net = L_net;
-        P->reach = -x_0 * (1 - r->x_N_min);
-        *o = (road_obstacle){.c = P->c, .reach = P->reach * (1 + reach_margin), .x_0 = x_0,
-                             .scale = scale, .H = P->H, .top = P->top, .H_net = H_net,
-                             .L_net = L_net};
-        r->reach_max = fmax(r->reach_max, o->reach);
-        in->reach = fmax(in->reach, P->reach + fmax(P->c - P->x_lo, P->x_hi - P->c));
+                                "contact length %g m", P->c, P->H, P->H_net, z_c, R0, l_c);
+        const double H = P->H_net;
+        r->reach_max = (0.5 * r->L_net_max + sqrt(R0 * R0 - (z_c - H) * (z_c - H))) *
+                       (1 - r->x_N_min) * (1 + 2 * reach_margin);
+    } else {
+        r->reach_max = 0;
     }
+    r->l_c = l_c;
+    r->gen++;
     return TIRENV_OK;
 }
 
@@ -526,7 +589,7 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
         free(r);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     }
-    r->l_c = l_c;
+    r->R0 = R0;
     r->x_N_min = x_N_min;
     r->prune = s.prune;
     r->info = (tirenv_nn_road_info){
@@ -541,8 +604,10 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
     if (!status && !(r->ob = malloc((f.n ? f.n : 1) * sizeof *r->ob)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for %zu "
                               "obstacles", f.n);
-    if (!status)
-        status = prepare_obstacles(r, R0, lo, hi, diag);
+    if (!status) {
+        prepare_obstacles(r, lo, hi);
+        status = tirenv_nn_road_set_contact_length(r, l_c, diag);
+    }
     if (status) {
         tirenv_nn_road_free(r);
         return status;
@@ -576,7 +641,7 @@ static void flush(tirenv_nn_road *r)
     tirenv_nn_run_batch(r->nn, w->n, w->in, w->y);
     for (size_t j = 0; j < w->n; ++j) {
         const size_t p = w->pos[j], k = w->k[j];
-        const road_obstacle *o = &r->ob[k];
+        const road_obstacle *o = &r->ob[k];  /* met at this contact length when pushed */
         const double y = w->y[j] >= 0 ? w->y[j] : 0;  /* NaN cannot come, but maps to 0 */
         double g = o->scale * y;
         int flat = 0;
@@ -651,7 +716,7 @@ static void chunk_pruned(tirenv_nn_road *r, size_t m, const double x[])
         size_t hi = lo, k_best = ROAD_NONE;
         double bound_best = w->b[p], x_N_best = 0;
         for (; hi < r->n_ob && r->ob[hi].c <= x[p] + r->reach_max; ++hi) {
-            const road_obstacle *o = &r->ob[hi];
+            const road_obstacle *o = obstacle_at(r, hi);
             const double d = x[p] - o->c;
             const double lift = w->b[p] + o->H, bound = o->top < lift ? o->top : lift;
             if (fabs(d) > o->reach || !(bound > bound_best))
@@ -672,7 +737,7 @@ static void chunk_pruned(tirenv_nn_road *r, size_t m, const double x[])
     flush(r);
     for (size_t p = 0; p < m; ++p) {
         for (size_t k = w->lo[p]; k < w->hi[p]; ++k) {
-            const road_obstacle *o = &r->ob[k];
+            const road_obstacle *o = obstacle_at(r, k);
             const double d = x[p] - o->c;
             const double lift = w->b[p] + o->H, bound = o->top < lift ? o->top : lift;
             if (k == w->first[p] || fabs(d) > o->reach || bound < w->h[p] ||
@@ -691,7 +756,7 @@ static void chunk_all(tirenv_nn_road *r, size_t m, const double x[])
 {
     for (size_t p = 0; p < m; ++p)
         for (size_t k = 0; k < r->n_ob; ++k) {
-            const double x_N = obstacle_xN(&r->ob[k], x[p] - r->ob[k].c);
+            const double x_N = obstacle_xN(obstacle_at(r, k), x[p] - r->ob[k].c);
             if (x_N >= r->x_N_min)
                 push(r, p, k, x_N);
         }

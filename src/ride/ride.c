@@ -15,84 +15,40 @@
 #include "ride/ride_impl.h"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_interp.h>
 #include <gsl/gsl_odeiv2.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
-
-typedef struct {
-    const tirenv_ride_track *track;
-    gsl_interp *interp;
-    gsl_interp_accel *acc;
-    double *x;             /* the grid, which gsl_interp wants as an array */
-} input;
+#include <string.h>
 
 typedef struct {
     const tirenv_vehicle *v;
     double V, x_front0, l;
-    double F0_front, F0_rear, F0_susp; /* static loads of the axles' tires and the suspension */
+    double G0_front, G0_rear;  /* static load of one tire of each axle, N */
+    double F0_susp;            /* static load of the suspension, N */
     int suspended;
-    input front, rear;
+    tirenv_ride__input front, rear;
+    int status;                /* an input function's failure, and why */
+    tirenv_diag diag;
 } ride;
 
-/* Height and its time derivative (V * dw/dx) of an axle's input at position x. */
-static void input_at(const input *in, double x, double V, double *w, double *w_dot)
-{
-    const tirenv_ride_track *t = in->track;
-    const double x_end = t->x0 + (double)(t->n - 1) * t->dx;
-    if (x <= t->x0 || x >= x_end) {
-        *w = x <= t->x0 ? t->w[0] : t->w[t->n - 1];
-        *w_dot = 0;
-        return;
-    }
-    *w = gsl_interp_eval(in->interp, in->x, t->w, x, in->acc);
-    *w_dot = V * gsl_interp_eval_deriv(in->interp, in->x, t->w, x, in->acc);
-}
-
-static int input_init(input *in, const tirenv_ride_track *t)
-{
-    in->track = t;
-    in->x = malloc(t->n * sizeof *in->x);
-    in->interp = gsl_interp_alloc(gsl_interp_steffen, t->n);
-    in->acc = gsl_interp_accel_alloc();
-    if (!in->x || !in->interp || !in->acc)
-        return TIRENV_ENOMEM;
-    for (size_t k = 0; k < t->n; ++k)
-        in->x[k] = t->x0 + (double)k * t->dx;
-    return gsl_interp_init(in->interp, in->x, t->w, t->n) ? TIRENV_EINVAL : TIRENV_OK;
-}
-
-static void input_free(input *in)
-{
-    free(in->x);
-    if (in->interp)
-        gsl_interp_free(in->interp);
-    if (in->acc)
-        gsl_interp_accel_free(in->acc);
-}
-
-static double tire_force(const tirenv_axle *ax, double F0, double w, double w_dot, double z,
-                         double z_dot)
-{
-    const double F = F0 + ax->tires * (ax->k_t * (w - z) + ax->c_t * (w_dot - z_dot));
-    return F > 0 ? F : 0;
-}
-
 /* The right-hand side, and everything a sample reports, at time t and state y. */
-static void evaluate(const ride *r, double t, const double y[], double dydt[],
-                     tirenv_ride_sample *s)
+static int evaluate(ride *r, double t, const double y[], double dydt[], tirenv_ride_sample *s)
 {
     const tirenv_vehicle *v = r->v;
     const double x_f = r->x_front0 + r->V * t;
-    double w_f, wd_f, w_r, wd_r;
-    input_at(&r->front, x_f, r->V, &w_f, &wd_f);
-    input_at(&r->rear, x_f - r->l, r->V, &w_r, &wd_r);
     const double z = y[0], vz = y[1], th = y[2], vth = y[3];
     const double z_fb = z + v->a * th, vz_fb = vz + v->a * vth;
     const double z_rb = z - v->b * th, vz_rb = vz - v->b * vth;
     const double z_a = r->suspended ? y[4] : z_fb, vz_a = r->suspended ? y[5] : vz_fb;
-    const double F_f = tire_force(&v->front, r->F0_front, w_f, wd_f, z_a, vz_a);
-    const double F_r = tire_force(&v->rear, r->F0_rear, w_r, wd_r, z_rb, vz_rb);
+    double w_f, wd_f, w_r, wd_r, F_f, F_r;
+    int status = tirenv_ride__axle(&r->front, &v->front, r->G0_front, r->V, x_f, z_a, vz_a,
+                                   &w_f, &wd_f, &F_f, &r->diag);
+    if (!status)
+        status = tirenv_ride__axle(&r->rear, &v->rear, r->G0_rear, r->V, x_f - r->l, z_rb,
+                                   vz_rb, &w_r, &wd_r, &F_r, &r->diag);
+    if (status)
+        return r->status = status;
     double F_body = F_f, az_a = 0;
     if (r->suspended) {
         F_body = r->F0_susp + v->front.k_s * (z_a - z_fb) + v->front.c_s * (vz_a - vz_fb);
@@ -116,12 +72,12 @@ static void evaluate(const ride *r, double t, const double y[], double dydt[],
                                   .vz_a = vz_a, .w_front = w_f, .w_rear = w_r,
                                   .seat_az = az + v->seat_x * ath,
                                   .seat_ax = -v->seat_h * ath, .F_front = F_f, .F_rear = F_r};
+    return TIRENV_OK;
 }
 
 static int rhs(double t, const double y[], double dydt[], void *params)
 {
-    evaluate(params, t, y, dydt, NULL);
-    return GSL_SUCCESS;
+    return evaluate(params, t, y, dydt, NULL) ? GSL_EBADFUNC : GSL_SUCCESS;
 }
 
 tirenv_ride_settings tirenv_ride_default(void)
@@ -136,9 +92,8 @@ size_t tirenv_ride_n_samples(const tirenv_ride_settings *s)
     return (size_t)floor(s->duration / s->dt + 1e-9) + 1;
 }
 
-static int check(const tirenv_vehicle *v, const tirenv_ride_track *front,
-                 const tirenv_ride_track *rear, const tirenv_ride_settings *s,
-                 tirenv_diag *diag)
+static int check_settings(const tirenv_vehicle *v, const tirenv_ride_settings *s,
+                          tirenv_diag *diag)
 {
     int status = tirenv_vehicle_check(v, diag);
     if (status)
@@ -154,27 +109,59 @@ static int check(const tirenv_vehicle *v, const tirenv_ride_track *front,
     if (s->method == TIRENV_RIDE_RK8PD && !(s->tol > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tol", "expected tol > 0, got %g",
                             s->tol);
-    const tirenv_ride_track *tracks[2] = {front, rear};
-    for (int i = 0; i < 2; ++i) {
-        const tirenv_ride_track *t = tracks[i];
-        if (!t || !t->w || t->n < 2 || !(t->dx > 0) || !isfinite(t->x0))
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, i ? "rear" : "front",
-                                "an axle's input needs >= 2 heights on a grid of dx > 0");
-        for (size_t k = 0; k < t->n; ++k)
-            if (!isfinite(t->w[k]))
-                return tirenv_error(diag, TIRENV_EINVAL, "", 0, i ? "rear" : "front",
-                                    "input height %zu (x = %g m) is not finite", k,
-                                    t->x0 + (double)k * t->dx);
-    }
     return TIRENV_OK;
 }
 
-/* Static equilibrium on the inputs at t = 0: every spring at its static length. */
-static size_t steady_start(const ride *r, double y[6])
+/* A grid of heights: n >= 2 finite heights per row on dx > 0 from a finite x0. */
+static int check_grid(const char *axle, double x0, double dx, size_t n, size_t m,
+                      const double *w, tirenv_diag *diag)
 {
-    double w_f, w_r, unused;
-    input_at(&r->front, r->x_front0, r->V, &w_f, &unused);
-    input_at(&r->rear, r->x_front0 - r->l, r->V, &w_r, &unused);
+    if (!w || n < 2 || m < 1 || !(dx > 0) || !isfinite(x0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle,
+                            "an axle's input needs >= 2 heights on a grid of dx > 0");
+    for (size_t k = 0; k < n * m; ++k)
+        if (!isfinite(w[k]))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle,
+                                "input height %zu (x = %g m) is not finite", k % n,
+                                x0 + (double)(k % n) * dx);
+    return TIRENV_OK;
+}
+
+static int check_table(const char *axle, const tirenv_ride_table *t, tirenv_diag *diag)
+{
+    if (!t)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle, "no input");
+    int status = check_grid(axle, t->x0, t->dx, t->n, t->m, t->w, diag);
+    for (size_t j = 0; !status && j < t->m; ++j)
+        if (!t->load || !(t->load[j] > 0) || !isfinite(t->load[j]) ||
+            (j > 0 && !(t->load[j] > t->load[j - 1])))
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, axle,
+                                  "the loads of an input's rows must be positive and "
+                                  "increasing; row %zu has %g N", j, t->load ? t->load[j] : 0);
+    return status;
+}
+
+static int check_fn(const char *axle, const tirenv_ride_input *f, tirenv_diag *diag)
+{
+    if (!f || !f->fn || !(f->load_min > 0) || !(f->load_max >= f->load_min) ||
+        !isfinite(f->load_max) || !(f->dx > 0) || !isfinite(f->dx))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle,
+                            "an input function needs 0 < load_min <= load_max (N) and a "
+                            "resolution dx > 0 m");
+    return TIRENV_OK;
+}
+
+/* Static equilibrium on the inputs at t = 0 (at the static loads): every spring at its
+ * static length. */
+static int steady_start(ride *r, double y[6], size_t *dim)
+{
+    double w_f, w_r;
+    int status = tirenv_ride__input_static(&r->front, r->G0_front, r->x_front0, &w_f, &r->diag);
+    if (!status)
+        status = tirenv_ride__input_static(&r->rear, r->G0_rear, r->x_front0 - r->l, &w_r,
+                                           &r->diag);
+    if (status)
+        return status;
     const double a = r->v->a, b = r->v->b;
     y[0] = (b * w_f + a * w_r) / r->l;
     y[1] = 0;
@@ -182,33 +169,35 @@ static size_t steady_start(const ride *r, double y[6])
     y[3] = 0;
     y[4] = w_f;
     y[5] = 0;
-    return r->suspended ? 6 : 4;
+    *dim = r->suspended ? 6 : 4;
+    return TIRENV_OK;
 }
 
-int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
-                    const tirenv_ride_track *rear, const tirenv_ride_settings *s,
-                    tirenv_ride_sample out[], tirenv_diag *diag)
+/* The integration, for inputs of any kind (set up by the callers below). */
+static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
+               tirenv_ride_sample out[], tirenv_diag *diag)
 {
-    int status = check(v, front, rear, s, diag);
-    if (status)
-        return status;
-    ride r = {.v = v, .V = s->speed, .x_front0 = s->x_front0, .l = v->a + v->b,
-              .suspended = v->front.k_s > 0};
+    r->v = v;
+    r->V = s->speed;
+    r->x_front0 = s->x_front0;
+    r->l = v->a + v->b;
+    r->suspended = v->front.k_s > 0;
     /* The static loads the effective profiles were computed for (tirenv_vehicle_tire_load);
      * a suspension carries the body's share of the front axle's. */
-    r.F0_front = v->front.tires * tirenv_vehicle_tire_load(v, 0);
-    r.F0_rear = v->rear.tires * tirenv_vehicle_tire_load(v, 1);
-    r.F0_susp = v->m * v->g * v->b / r.l;
+    r->G0_front = tirenv_vehicle_tire_load(v, 0);
+    r->G0_rear = tirenv_vehicle_tire_load(v, 1);
+    r->F0_susp = v->m * v->g * v->b / r->l;
+    tirenv_diag_clear(&r->diag);
     gsl_odeiv2_driver *d = NULL;
     gsl_odeiv2_step *step = NULL;
-    if ((status = input_init(&r.front, front)) || (status = input_init(&r.rear, rear))) {
-        status = status == TIRENV_ENOMEM
-                     ? tirenv_error(diag, status, "", 0, "", "out of memory")
-                     : tirenv_error(diag, status, "", 0, "", "GSL cannot interpolate an input");
-        goto done;
-    }
     double y[6], y_err[6];  /* RK4's error estimate is computed, and unused */
-    gsl_odeiv2_system sys = {rhs, NULL, steady_start(&r, y), &r};
+    size_t dim = 4;
+    int status = steady_start(r, y, &dim);
+    if (status) {
+        *diag = r->diag;
+        return status;
+    }
+    gsl_odeiv2_system sys = {rhs, NULL, dim, r};
     /* RK4 steps on its own (a driver would want an error estimate it does not have); RK8PD
      * goes through the driver, which adapts the step between outputs. */
     if (s->method == TIRENV_RIDE_RK4)
@@ -222,12 +211,13 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
     const size_t n = tirenv_ride_n_samples(s);
     /* RK4 samples the inputs at three points per step, so a step longer than the grid would
      * skip over a cleat's edge: substeps advance at most half a grid spacing. */
-    const double dx_min = fmin(front->dx, rear->dx);
+    const double dx_min = fmin(tirenv_ride__input_dx(&r->front), tirenv_ride__input_dx(&r->rear));
     const size_t n_sub = (size_t)fmax(1.0, ceil(2.0 * s->speed * s->dt / dx_min - 1e-9));
     if (step && (status = tirenv_ride__rk4_check(v, s->dt / (double)n_sub, s->dt, n_sub, diag)))
         goto done;
     double t = 0;
-    evaluate(&r, t, y, NULL, &out[0]);
+    if ((status = evaluate(r, t, y, NULL, &out[0])))
+        goto failed;
     for (size_t k = 1; k < n; ++k) {
         /* Each sample's time is k*dt, not a running sum, so long runs do not drift. */
         const double t_k = (double)k * s->dt;
@@ -240,25 +230,98 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
         } else {
             rc = gsl_odeiv2_driver_apply(d, &t, t_k, y);
         }
+        if (rc != GSL_SUCCESS && r->status) {
+            status = r->status;
+            goto failed;
+        }
         if (rc != GSL_SUCCESS) {
             status = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "", "the ODE solver failed "
                                   "at t = %.6g s (x_front = %.6g m): %s", t,
-                                  r.x_front0 + r.V * t, gsl_strerror(rc));
+                                  r->x_front0 + r->V * t, gsl_strerror(rc));
             goto done;
         }
         t = t_k;
-        evaluate(&r, t, y, NULL, &out[k]);
+        if ((status = evaluate(r, t, y, NULL, &out[k])))
+            goto failed;
         if ((status = tirenv_ride__finite_sample(&out[k], diag)))
             goto done;
+    }
+    goto done;
+failed:  /* an input failed: its own message, with where the run was */
+    *diag = r->diag;
+    {
+        char msg[sizeof diag->message];
+        snprintf(msg, sizeof msg, "at t = %.6g s (x_front = %.6g m): %.400s", t,
+                 r->x_front0 + r->V * t, r->diag.message);
+        memcpy(diag->message, msg, sizeof msg);
     }
 done:
     if (d)
         gsl_odeiv2_driver_free(d);
     if (step)
         gsl_odeiv2_step_free(step);
-    input_free(&r.front);
-    input_free(&r.rear);
     return status;
+}
+
+/* Sets up both inputs, runs, frees: the three public forms differ in their inputs alone. */
+static int run_with(const tirenv_vehicle *v, const tirenv_ride_track *tf,
+                    const tirenv_ride_track *tr, const tirenv_ride_table *bf,
+                    const tirenv_ride_table *br, const tirenv_ride_input *ff,
+                    const tirenv_ride_input *fr, const tirenv_ride_settings *s,
+                    tirenv_ride_sample out[], tirenv_diag *diag)
+{
+    ride r;
+    memset(&r, 0, sizeof r);
+    int status = tirenv_ride__input_init(&r.front, tf, bf, ff);
+    if (!status)
+        status = tirenv_ride__input_init(&r.rear, tr, br, fr);
+    if (status)
+        status = status == TIRENV_ENOMEM
+                     ? tirenv_error(diag, status, "", 0, "", "out of memory")
+                     : tirenv_error(diag, status, "", 0, "", "GSL cannot interpolate an input");
+    else
+        status = run(v, &r, s, out, diag);
+    tirenv_ride__input_free(&r.front);
+    tirenv_ride__input_free(&r.rear);
+    return status;
+}
+
+int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
+                    const tirenv_ride_track *rear, const tirenv_ride_settings *s,
+                    tirenv_ride_sample out[], tirenv_diag *diag)
+{
+    int status = check_settings(v, s, diag);
+    if (!status)
+        status = front ? check_grid("front", front->x0, front->dx, front->n, 1, front->w, diag)
+                       : tirenv_error(diag, TIRENV_EINVAL, "", 0, "front", "no input");
+    if (!status)
+        status = rear ? check_grid("rear", rear->x0, rear->dx, rear->n, 1, rear->w, diag)
+                      : tirenv_error(diag, TIRENV_EINVAL, "", 0, "rear", "no input");
+    return status ? status : run_with(v, front, rear, NULL, NULL, NULL, NULL, s, out, diag);
+}
+
+int tirenv_ride_run_dynamic(const tirenv_vehicle *v, const tirenv_ride_table *front,
+                            const tirenv_ride_table *rear, const tirenv_ride_settings *s,
+                            tirenv_ride_sample out[], tirenv_diag *diag)
+{
+    int status = check_settings(v, s, diag);
+    if (!status)
+        status = check_table("front", front, diag);
+    if (!status)
+        status = check_table("rear", rear, diag);
+    return status ? status : run_with(v, NULL, NULL, front, rear, NULL, NULL, s, out, diag);
+}
+
+int tirenv_ride_run_input(const tirenv_vehicle *v, const tirenv_ride_input *front,
+                          const tirenv_ride_input *rear, const tirenv_ride_settings *s,
+                          tirenv_ride_sample out[], tirenv_diag *diag)
+{
+    int status = check_settings(v, s, diag);
+    if (!status)
+        status = check_fn("front", front, diag);
+    if (!status)
+        status = check_fn("rear", rear, diag);
+    return status ? status : run_with(v, NULL, NULL, NULL, NULL, front, rear, s, out, diag);
 }
 
 double tirenv_ride_energy(const tirenv_vehicle *v, const tirenv_ride_sample *s)

@@ -1,4 +1,4 @@
-/* What the ride checks before and while it integrates (docs/models.md section 9.5): that the
+/* What the ride checks before and while it integrates (docs/models.md section 9.6): that the
  * fixed RK4 step resolves the stiffest mode of the vehicle, that the static loads leave the
  * dynamic tire forces resolvable in double precision, and that every sample is finite.
  * SPDX-License-Identifier: GPL-3.0-or-later */

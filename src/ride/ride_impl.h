@@ -1,11 +1,61 @@
-/* Private to src/ride: the checks of ride_checks.c that the vehicle and the ride run use
- * (docs/models.md section 9.5). SPDX-License-Identifier: GPL-3.0-or-later */
+/* Private to the ride module: an axle's input (a track, a table over loads, or a function of
+ * position and load) and the tire force it makes, shared by the integrator (ride.c) and
+ * the inputs (ride_axle.c), docs/models.md section 9.5; and the checks of ride_checks.c
+ * that the vehicle and the ride run use (section 9.6). SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_RIDE_IMPL_H
 #define TIRENV_RIDE_IMPL_H
 
 #include <stddef.h>
+#include <gsl/gsl_interp.h>
+
 #include "tirenv/ride.h"
 #include "tirenv/vehicle.h"
+
+typedef enum {
+    TIRENV_RIDE__TRACK,    /* tirenv_ride_track: the load does not enter */
+    TIRENV_RIDE__TABLE,    /* tirenv_ride_table: rows over loads */
+    TIRENV_RIDE__FUNCTION  /* tirenv_ride_input: a function of position and load */
+} tirenv_ride__kind;
+
+typedef struct {
+    tirenv_ride__kind kind;
+    const tirenv_ride_track *track;
+    const tirenv_ride_table *table;
+    const tirenv_ride_input *fn;
+    /* The grid of a track or a table: its abscissae (which gsl_interp wants as an array),
+     * one Steffen interpolation per row (a track is one row), one accelerator for all. */
+    double x0, dx;         /* m */
+    size_t n, m;           /* grid points, rows */
+    const double *w;       /* the rows, m*n heights, m */
+    double *x;
+    gsl_interp **rows;     /* a track's one row (GSL's Steffen spline) */
+    gsl_interp_accel *acc;
+    double *slope;         /* a table's: the Steffen slopes dw/dx at its m*n points */
+    size_t hint;           /* a table's segment of rows where the last load was found */
+} tirenv_ride__input;
+
+/* Sets up an input of one kind from exactly one of track, table, fn (the others NULL);
+ * TIRENV_ENOMEM, or TIRENV_EINVAL if GSL cannot interpolate the grid. in->rows etc. are
+ * then to be freed with tirenv_ride__input_free whatever the status. */
+int tirenv_ride__input_init(tirenv_ride__input *in, const tirenv_ride_track *track,
+                            const tirenv_ride_table *table, const tirenv_ride_input *fn);
+void tirenv_ride__input_free(tirenv_ride__input *in);
+
+/* The spacing RK4's substeps must resolve, m. */
+double tirenv_ride__input_dx(const tirenv_ride__input *in);
+
+/* The axle's input at position x for the axle's height z_a and its rate zd_a (m, m/s) at
+ * speed V, with its n tires of static load G0 each: the height w (m), its rate *w_dot
+ * (m/s) and the force of all n tires *F (N, >= 0). A track: F = max(0, n*G0 + n*(k_t*(w - z)
+ * + c_t*(w_dot - zd))) as it always was; a table or a function: the input at the load the
+ * tires carry (tirenv_ride_run_dynamic). A function's failure is returned with diag. */
+int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, double V,
+                      double x, double z_a, double zd_a, double *w, double *w_dot, double *F,
+                      tirenv_diag *diag);
+
+/* The input's height at x at the static load G0 (N, per tire): the steady start's. */
+int tirenv_ride__input_static(tirenv_ride__input *in, double G0, double x, double *w,
+                              tirenv_diag *diag);
 
 /* The largest h*|lambda| RK4 is allowed, for the step h and the fastest mode lambda. */
 #define RK4_MAX_H_LAMBDA 0.5

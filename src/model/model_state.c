@@ -1,0 +1,153 @@
+/* A model's state as bytes (docs/models.md section 1.7): what a host saves to rewind a model
+ * and restores into it, or into a twin of the same type and tire. The driver's part (the load
+ * and the flat-ground height) comes first, then the type's own (tirenv_model_type's
+ * state_size / _save / _restore). The profile is not in it: the model only borrows that.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "model/model_impl.h"
+#include "model/model_state.h"
+
+/* The layout: magic, total size, type name, tire fingerprint, load, z_flat, ready, then the
+ * type's bytes. Native byte order and doubles: a state is for this build and machine. */
+static const char magic[8] = {'t', 'i', 'r', 'e', 'n', 'v', 'S', '1'};
+enum { NAME_BYTES = 16 };
+#define HEAD_BYTES                                                                            \
+    (sizeof magic + sizeof(uint64_t) + NAME_BYTES + sizeof(uint64_t) + 2 * sizeof(double) + 1)
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; ++i) {
+        h ^= b[i];
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+/* The parameter blocks of only doubles are hashed as they lie (no padding in them); the
+ * solver settings field by field, as their struct may have padding. */
+unsigned long long tirenv_model__tire_print(const tirenv_tire *t)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    h = fnv(h, &t->springs, sizeof t->springs);
+    h = fnv(h, &t->ring, sizeof t->ring);
+    h = fnv(h, &t->cam, sizeof t->cam);
+    const int method = (int)t->eq.method;
+    const uint64_t max_iter = t->eq.max_iter;
+    h = fnv(h, &method, sizeof method);
+    h = fnv(h, &t->eq.eps_F, sizeof t->eq.eps_F);
+    h = fnv(h, &t->eq.eps_z, sizeof t->eq.eps_z);
+    h = fnv(h, &max_iter, sizeof max_iter);
+    h = fnv(h, &t->eq.secant_dz, sizeof t->eq.secant_dz);
+    return h;
+}
+
+static size_t type_bytes(const tirenv_model *m)
+{
+    return m->type->state_size ? m->type->state_size(m->state) : 0;
+}
+
+size_t tirenv_model_state_size(const tirenv_model *m)
+{
+    return HEAD_BYTES + type_bytes(m);
+}
+
+/* Several tracks hold several type states; the bytes are those of one. */
+static int one_track(const tirenv_model *m, tirenv_diag *diag)
+{
+    if (m->ready && m->n_tracks > 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "the %s model is set with %zu tracks: a state is that of one track",
+                            m->type->name, m->n_tracks);
+    return TIRENV_OK;
+}
+
+int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tirenv_diag *diag)
+{
+    if (one_track(m, diag))
+        return TIRENV_EINVAL;
+    const size_t need = tirenv_model_state_size(m);
+    if (!buf || size != need)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "the %s model's state takes %zu bytes; got a buffer of %zu%s",
+                            m->type->name, need, size, buf ? "" : " (NULL)");
+    char name[NAME_BYTES] = {0};
+    const size_t len = strlen(m->type->name);
+    memcpy(name, m->type->name, len < NAME_BYTES ? len : NAME_BYTES - 1);
+    const uint64_t total = need, print = m->tire_print;
+    const unsigned char ready = (unsigned char)(m->ready != 0);
+    unsigned char *p = buf;
+    p = tirenv_model__put(p, magic, sizeof magic);
+    p = tirenv_model__put(p, &total, sizeof total);
+    p = tirenv_model__put(p, name, sizeof name);
+    p = tirenv_model__put(p, &print, sizeof print);
+    p = tirenv_model__put(p, &m->load, sizeof m->load);
+    p = tirenv_model__put(p, &m->z_flat, sizeof m->z_flat);
+    p = tirenv_model__put(p, &ready, 1);
+    if (m->type->state_save)
+        m->type->state_save(m->state, p);
+    return TIRENV_OK;
+}
+
+/* Checks everything before it touches the model, so that a wrong buffer leaves it as it
+ * was; only the type's own restore may fail after that, and then the model is unset. */
+int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
+                               tirenv_diag *diag)
+{
+    if (one_track(m, diag))
+        return TIRENV_EINVAL;
+    const size_t need = tirenv_model_state_size(m);
+    if (!buf || size != need)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "a state of the %s model takes %zu bytes; got %zu%s",
+                            m->type->name, need, size, buf ? "" : " (NULL)");
+    char head[sizeof magic], name[NAME_BYTES];
+    uint64_t total, print;
+    double load, z_flat;
+    unsigned char ready;
+    const unsigned char *p = buf;
+    p = tirenv_model__get(p, head, sizeof head);
+    p = tirenv_model__get(p, &total, sizeof total);
+    p = tirenv_model__get(p, name, sizeof name);
+    p = tirenv_model__get(p, &print, sizeof print);
+    p = tirenv_model__get(p, &load, sizeof load);
+    p = tirenv_model__get(p, &z_flat, sizeof z_flat);
+    p = tirenv_model__get(p, &ready, 1);
+    name[NAME_BYTES - 1] = '\0';
+    if (memcmp(head, magic, sizeof magic) != 0 || total != need)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a saved model state (tirenv_model_state_save)");
+    if (strcmp(name, m->type->name) != 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "a state of the %s model cannot be restored into a %s model", name,
+                            m->type->name);
+    if (print != m->tire_print)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "the state was saved from a model of another tire");
+    if (ready > 1 || (ready && !(load > 0 && isfinite(z_flat))))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a saved model state (load %g N, z_flat %g m)", load, z_flat);
+    if (!ready) {
+        m->ready = 0;
+        return TIRENV_OK;
+    }
+    if (!m->profile)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "the %s model has no profile: set it on the ground the state was "
+                            "saved on (tirenv_model_set), then restore", m->type->name);
+    const int status = m->type->state_restore ? m->type->state_restore(m->state, p, diag)
+                                              : TIRENV_OK;
+    if (status) {
+        m->ready = 0;
+        m->profile = NULL;
+        return status;
+    }
+    m->load = load;
+    m->z_flat = z_flat;
+    m->ready = 1;
+    m->reach = tirenv_model_reach(m);
+    return TIRENV_OK;
+}
