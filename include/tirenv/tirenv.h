@@ -4,6 +4,7 @@
 #define TIRENV_TIRENV_H
 
 #include "tirenv/error.h"
+#include "tirenv/parallel.h"
 #include "tirenv/profile.h"
 #include "tirenv/road.h"
 #include "tirenv/tire.h"
