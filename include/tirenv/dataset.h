@@ -57,14 +57,25 @@ typedef struct {
  * Table 3 cases F, J and R among the validation ones); *n receives the count. */
 const tirenv_case_design *tirenv_dataset_design(size_t *n);
 
+/* How tirenv_dataset_build runs. */
+typedef struct {
+    size_t jobs;              /* cases run at once, each on its own thread with its own ring
+                               * (default 1: no thread is started; tirenv/parallel.h); the
+                               * bytes written are the same for every value */
+    void (*progress)(void *ctx, size_t done, size_t total); /* after each case (calls never
+                               * overlap, may come from any thread); may be NULL */
+    void *progress_ctx;
+} tirenv_dataset_build_settings;
+
+tirenv_dataset_build_settings tirenv_dataset_build_default(void);
+
 /* Builds the embedded data set into dir (created if missing): for each designed case the ring
  * reference tire of `tire` is loaded to the designed contact length, run over the cleat on the
  * virtual rig (seeded), its log written to dir/logs/<case>.csv, imported to dir/curves/<case>.csv,
  * and the manifest dir/cases.csv written last. Deterministic: the same tire gives the same
- * bytes. progress (may be NULL) is called after each case. */
+ * bytes, whatever s->jobs. s NULL: the defaults. */
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
-                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
-                         tirenv_diag *diag);
+                         const tirenv_dataset_build_settings *s, tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

@@ -54,6 +54,7 @@ enum {
     CLI_OPT_CYLINDER,
     CLI_OPT_SINE,
     CLI_OPT_PROFILE,
+    CLI_OPT_JOBS,
     CLI_OPT_FIRST_OWN  /* first code free for a subcommand's own long-only options */
 };
 
@@ -167,5 +168,13 @@ double cli_wall_seconds(void);
 
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);
+
+/* --jobs (jobs.c): the default, every core this process may run on; parses N in [1,
+ * CLI_MAX_JOBS] (prints "CMD: --jobs ..." and returns CLI_EXIT_USAGE if malformed); help. */
+#define CLI_MAX_JOBS 1024
+#define CLI_JOBS_LONGOPT {"jobs", required_argument, NULL, CLI_OPT_JOBS}
+size_t cli_jobs_default(void);
+int cli_parse_jobs(const char *cmd, const char *arg, size_t *jobs);
+void cli_help_jobs(FILE *fp);
 
 #endif

@@ -8,7 +8,7 @@
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv dataset build [-o DIR] [--tire FILE] [--set KEY=VALUE]...\n"
+    fputs("usage: tirenv dataset build [-o DIR] [--jobs N] [--tire FILE] [--set KEY=VALUE]...\n"
           "       tirenv dataset list [DIR]\n"
           "\n"
           "build: regenerates the embedded data set bit for bit: 28 cleat runs of the\n"
@@ -22,6 +22,7 @@ static void usage(FILE *fp)
           "options:\n"
           "  -o DIR               where to build (created if missing)\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -58,6 +59,7 @@ int cli_dataset_main(int argc, char *argv[])
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         CLI_METHOD_LONGOPTS,
+        CLI_JOBS_LONGOPT,
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -65,6 +67,9 @@ int cli_dataset_main(int argc, char *argv[])
     cli_options_init(&o);
     char dir_buf[1024];
     const char *dir = cli_data_path("dataset", dir_buf, sizeof dir_buf);
+    tirenv_dataset_build_settings build = tirenv_dataset_build_default();
+    build.jobs = cli_jobs_default();
+    build.progress = progress;
     /* "tirenv dataset ACTION [options]": the action first, then its options. */
     const char *action = argc > 1 && argv[1][0] != '-' ? argv[1] : NULL;
     if (action) {
@@ -80,6 +85,10 @@ int cli_dataset_main(int argc, char *argv[])
             return CLI_EXIT_OK;
         case 'o':
             dir = optarg;
+            break;
+        case CLI_OPT_JOBS:
+            if (cli_parse_jobs("dataset", optarg, &build.jobs))
+                return CLI_EXIT_USAGE;
             break;
         case '?':
             usage(stderr);
@@ -105,7 +114,7 @@ int cli_dataset_main(int argc, char *argv[])
         return list(dir, tire.springs.R0);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_dataset_build(dir, &tire, progress, NULL, &diag);
+    const int status = tirenv_dataset_build(dir, &tire, &build, &diag);
     if (status)
         return cli_fail(status, &diag);
     fprintf(stderr, "tirenv: dataset: 28 simulated cases written to %s\n", dir);

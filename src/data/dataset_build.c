@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "tirenv/io.h"
+#include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 
 /* Obstacle lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact lengths 0.28 to 0.43 m,
@@ -49,15 +50,23 @@ const tirenv_case_design *tirenv_dataset_design(size_t *n)
 }
 
 
-/* One case: load the ring to the contact length, run the rig, write the log, import it. */
-static int build_case(const char *dir, size_t i, tirenv_model *ring, double *load,
+/* One case: load the ring to the contact length, run the rig, write the log, import it.
+ * The ring is the case's own (a fresh instance), so that the case's bytes depend on the case
+ * alone, whichever thread runs it and whatever ran before. */
+static int build_case(const char *dir, size_t i, const tirenv_tire *tire, double *load,
                       tirenv_diag *diag)
 {
     const tirenv_case_design *c = &design[i];
+    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
+    if (!ring)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tire",
+                            "the ring reference tire cannot be built from these parameters");
     int status = tirenv_model_load_for_contact_length(ring, c->contact_length, load, diag);
     tirenv_profile *cleat = tirenv_profile_cleat(c->L, c->H);
-    if (!cleat)
+    if (!cleat) {
+        tirenv_model_free(ring);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
     if (!status)
         status = tirenv_model_set(ring, cleat, *load, diag);
     /* Each run has its own noise and its own rig zero, as separate runs of a real rig do. */
@@ -81,7 +90,7 @@ static int build_case(const char *dir, size_t i, tirenv_model *ring, double *loa
     tirenv_import_settings imp = tirenv_import_default();
     imp.L = c->L;
     imp.H = c->H;
-    imp.R0 = tirenv_model_tire(ring)->springs.R0;
+    imp.R0 = tire->springs.R0;
     imp.contact_length = c->contact_length;
     tirenv_curve curve = {0};
     if (!status)
@@ -92,13 +101,42 @@ static int build_case(const char *dir, size_t i, tirenv_model *ring, double *loa
     tirenv_curve_free(&curve);
     tirenv_rig_log_free(&log);
     tirenv_profile_free(cleat);
+    tirenv_model_free(ring);
     return status;
 }
 
-int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
-                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
-                         tirenv_diag *diag)
+tirenv_dataset_build_settings tirenv_dataset_build_default(void)
 {
+    return (tirenv_dataset_build_settings){.jobs = 1, .progress = NULL, .progress_ctx = NULL};
+}
+
+typedef struct {
+    const char *dir;
+    const tirenv_tire *tire;
+    const tirenv_dataset_build_settings *s;
+    double load[sizeof design / sizeof design[0]];  /* N, by case */
+} build_ctx;
+
+static int build_item(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    build_ctx *b = ctx;
+    (void)worker;
+    return build_case(b->dir, i, b->tire, &b->load[i], diag);
+}
+
+static void build_done(void *ctx, size_t i, size_t n_done)
+{
+    const build_ctx *b = ctx;
+    (void)i;
+    if (b->s->progress)
+        b->s->progress(b->s->progress_ctx, n_done, sizeof design / sizeof design[0]);
+}
+
+int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
+                         const tirenv_dataset_build_settings *settings, tirenv_diag *diag)
+{
+    const tirenv_dataset_build_settings defaults = tirenv_dataset_build_default();
+    const tirenv_dataset_build_settings *s = settings ? settings : &defaults;
     const size_t n = sizeof design / sizeof design[0];
     char path[1024];
     int status = tirenv_mkdir_p(dir, diag);
@@ -110,19 +148,10 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
         status = tirenv_mkdir_p(path, diag);
     if (status)
         return status;
-    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
-    if (!ring)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tire",
-                            "the ring reference tire cannot be built from these parameters");
-    double load[sizeof design / sizeof design[0]];
-    for (size_t i = 0; i < n && !status; ++i) {
-        status = build_case(dir, i, ring, &load[i], diag);
-        if (progress && !status)
-            progress(ctx, i + 1, n);
-    }
-    tirenv_model_free(ring);
-    if (status)
+    build_ctx b = {.dir = dir, .tire = tire, .s = s};
+    if ((status = tirenv_parallel_for(n, s->jobs, build_item, build_done, &b, diag)))
         return status;
+    const double *load = b.load;
     /* The manifest last: a data set with a manifest is a whole one. */
     tirenv_outfile f;
     snprintf(path, sizeof path, "%s/cases.csv", dir);
