@@ -25,6 +25,7 @@
 #include "tirenv/nn.h"
 #include "tirenv/train.h"
 #include "tirenv/study.h"
+#include "tirenv/sweep.h"
 #include "tirenv/version.h"
 
 #endif
