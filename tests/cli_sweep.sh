@@ -1,0 +1,83 @@
+#!/bin/sh
+# tirenv sweep from outside: a data set the other commands read, the same bytes for --jobs 1
+# and 3, shards merged equal to one run, a run killed midway resumed to the same bytes, the
+# progress bar where asked, and misuse refused. Usage: sh cli_sweep.sh BIN TESTDATA_DIR.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
+# shellcheck source=tests/clilib.sh
+. "$(dirname "$0")/clilib.sh"
+
+grid='--lengths 0.05,0.15,0.25 --heights 0.03,0.08 --contact-lengths 0.3,0.38
+      --set INTERRADIAL_STIFFNESS=8000,12000 --model springs --validation-fraction 0.25'
+
+run "$bin" sweep $grid -o one --jobs 1
+check "sweep writes a data set" '[ $rc -eq 0 ] && [ -s one/cases.csv ] && [ -d one/curves ] &&
+    [ "$(ls one/curves | wc -l)" -eq 24 ] && [ ! -e one.partial ]'
+check "the manifest says SIMULATED and has a row per case" \
+    'grep -q "^# SIMULATED" one/cases.csv && [ "$(grep -c "^c00" one/cases.csv)" -eq 24 ]'
+check "a quarter of the cases are validation ones" \
+    '[ "$(grep -c ",validation," one/cases.csv)" -eq 6 ]'
+check "no progress bar when stderr is not a terminal" '! grep -q "cases (" err'
+
+run "$bin" dataset list one
+check "dataset list reads it" '[ $rc -eq 0 ] && grep -q c0023 out'
+run "$bin" train --data one --restarts 1 --epochs 20 -o nn.json
+check "train reads it" '[ $rc -eq 0 ] && [ -s nn.json ]'
+
+run "$bin" sweep $grid -o three --jobs 3 --progress
+check "--jobs 3 writes the bytes of --jobs 1" '[ $rc -eq 0 ] && diff -r one three >&2'
+check "--progress draws lines on a pipe" 'grep -q "24/24 cases (100 %)" err'
+
+for k in 0 1 2 3; do
+    "$bin" sweep $grid -o "part$k" --shard "$k/4" --jobs 2 2>/dev/null
+done
+run "$bin" sweep merge part3 part1 part0 part2 -o merged
+check "four shards merged equal one run, byte for byte" '[ $rc -eq 0 ] && diff -r one merged >&2'
+run "$bin" sweep merge part0 part1 part2 -o merged2
+check "merge names a missing shard" '[ $rc -eq 2 ] && grep -q "missing: 3" err && [ ! -e merged2 ]'
+rm -f part2/cases.csv
+run "$bin" sweep merge part0 part1 part2 part3 -o merged3
+check "merge refuses an incomplete shard" '[ $rc -eq 2 ] && grep -q "not complete" err'
+
+# A run killed while it writes (the ring on the rig: about a quarter second a case), then the
+# same command: it keeps what was written and finishes with the uninterrupted bytes.
+slow='--lengths 0.1,0.2 --heights 0.05,0.1 --contact-lengths 0.3,0.35 --model ring --rig'
+"$bin" sweep $slow -o whole --jobs 2 2>/dev/null
+"$bin" sweep $slow -o killed --jobs 1 2>/dev/null &
+pid=$!
+tries=0
+while [ "$(ls killed.partial/curves 2>/dev/null | wc -l)" -lt 2 ] && [ $tries -lt 600 ]; do
+    sleep 0.05
+    tries=$((tries + 1))
+done
+kill -9 "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+check "a killed run leaves DIR.partial, not DIR" '[ -d killed.partial ] && [ ! -e killed ]'
+run "$bin" sweep $slow -o killed --jobs 2
+check "the same command resumes it, keeping the cases written" \
+    '[ $rc -eq 0 ] && grep -q "kept from an interrupted run" err && ! grep -q " 0 kept" err'
+check "and writes the uninterrupted bytes" 'diff -r whole killed >&2 && [ ! -e killed.partial ]'
+run "$bin" sweep $slow -o killed
+check "a complete sweep is not run again" '[ $rc -eq 0 ] && grep -q "nothing to do" err'
+
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --model springs -o killed
+check "another sweep into a complete one is refused" '[ $rc -eq 2 ] && grep -q "another sweep" err'
+run "$bin" sweep --lengths 0.1 --heights 0.05 -o x
+check "a regime list is required" '[ $rc -eq 1 ] && [ ! -e x ] && [ ! -e x.partial ]'
+run "$bin" sweep --lengths 0.1,abc --heights 0.05 --contact-lengths 0.3 -o x
+check "a malformed list is named" '[ $rc -eq 1 ] && grep -q "lengths" err'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --shard 4/4 -o x
+check "a shard beyond the count is refused" '[ $rc -eq 1 ] && grep -q "shard" err'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --set NOPE=1,2 -o x
+check "an unknown tire key is named" '[ $rc -eq 2 ] && grep -q "NOPE" err && [ ! -e x ]'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --split train \
+    --validation-fraction 0.1 -o x
+check "--split and the fractions together are refused" '[ $rc -eq 1 ]'
+run "$bin" sweep --jobs 0 --lengths 0.1 --heights 0.05 --contact-lengths 0.3 -o x
+check "--jobs 0 is refused" '[ $rc -eq 1 ] && grep -q -- "--jobs" err'
+run "$bin" sweep --help
+check "sweep --help documents shards, merge and --jobs" \
+    '[ $rc -eq 0 ] && grep -q -- "--shard K/N" out && grep -q "sweep merge" out &&
+     grep -q -- "--jobs N" out'
+
+clilib_done
