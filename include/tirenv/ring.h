@@ -28,9 +28,11 @@ double tirenv_ring_free_radius(const tirenv_ring *r);
 size_t tirenv_ring_size(const tirenv_ring *r);
 const double *tirenv_ring_theta(const tirenv_ring *r);
 
-/* Hub forces (N) with the centre at (x, z) (m): rays, then the contact of the tread with the
- * ground solved exactly by an active set on the belt's compliance; dfz_dz (N/m, may be NULL)
- * is exact for the current active set. TIRENV_ENOCONV if the active set does not settle. */
+/* Hub forces (N) with the centre at (x, z) (m): rays, then the contact of the tread, and of
+ * the belt where the tread is compressed through, with the ground, solved exactly by an active
+ * set on the belt's stiffness; dfz_dz (N/m, may be NULL) is exact for the current active set;
+ * contacts (may be NULL): nodes with a ground force. TIRENV_ENOCONV if the active set does not
+ * settle. */
 int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double z,
                        double *fx, double *fz, double *dfz_dz, size_t *contacts);
 
@@ -38,9 +40,25 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
  * positive tread pressure, edges interpolated between nodes. */
 double tirenv_ring_patch_length(const tirenv_ring *r);
 
-/* Belt inward displacement w_j (m, negative where it bulges out) and tread force per node
- * f_j (N) of the last evaluation, into arrays of tirenv_ring_size() entries (may be NULL). */
+/* Belt inward displacement w_j (m, negative where it bulges out) and ground force per node
+ * f_j (N: the tread's plus the belt's reaction) of the last evaluation, into arrays of
+ * tirenv_ring_size() entries (may be NULL). */
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
+
+/* The contact of the last evaluation per node, into arrays of tirenv_ring_size() entries (may
+ * be NULL): d_j = R0 - rho_j, the penetration of the node's ray (m; -INFINITY where it meets
+ * no ground within reach); b_j >= d_j, the penetration of the nearest ground in the node's
+ * sector of +-dtheta/2 (m; -INFINITY: none), which the belt must stay out of,
+ * w_j >= b_j - t_r; g_j >= 0, the belt's own ground reaction (N), zero unless w_j = b_j - t_r.
+ * The tread compression is e_j = d_j - w_j <= t_r and the tread force f_j - g_j =
+ * kappa_j max(0, e_j) with kappa_j = k_t (R0 - t_r) dtheta (times LUG_GROOVE_RATIO between
+ * lugs). */
+void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[]);
+
+/* Largest tread compression max_j min(max(0, e_j), t_r) (m) and number of nodes where the belt
+ * itself touches (g_j > 0) at the last evaluation. */
+double tirenv_ring_tread_max(const tirenv_ring *r);
+size_t tirenv_ring_belt_contacts(const tirenv_ring *r);
 
 TIRENV_END_DECLS
 #endif

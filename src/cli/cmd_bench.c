@@ -26,6 +26,7 @@ static const struct {
     {"springs newton", "springs", TIRENV_EQ_NEWTON},
     {"springs secant", "springs", TIRENV_EQ_SECANT},
     {"springs brent", "springs", TIRENV_EQ_BRENT},
+    {"ring", "ring", TIRENV_EQ_NEWTON},
 };
 enum { N_CASES = sizeof cases / sizeof cases[0] };
 
@@ -54,6 +55,7 @@ static void usage(FILE *fp)
           "equivalent-cleat decomposition, h and slope, the decomposition's build timed apart.\n"
           "Last the ride: the default tractor over that road at 10 km/h with point contact,\n"
           "cam, nn and springs, against real time (best of at most 3 runs).\n"
+          "The ring reference tire runs the cleat sweep too (the solver table's last row).\n"
           "\n"
           "options:\n"
           "  --repeat N           runs per method, best kept (default 5)\n",
@@ -208,6 +210,9 @@ static void print_table(long repeat, const bench_result r[])
                r[1].evals_mean / r[2].evals_mean);
     if (r[0].best > 0 && r[1].failed < SWEEP_N)
         printf("  rigid / springs newton speed: %.1f x\n", r[1].best / r[0].best);
+    /* cases[4] is the ring. */
+    if (r[0].best > 0 && r[4].failed < SWEEP_N)
+        printf("  rigid / ring speed: %.1f x\n", r[4].best / r[0].best);
 }
 
 /* The rig-log import (target: well under 10 ms at 10,000 samples): a springs-model

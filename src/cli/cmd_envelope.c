@@ -41,7 +41,11 @@ static void usage(FILE *fp)
           "                       bounded by the tire's reach whatever the road's length (the\n"
           "                       file is read twice: first to check it and find its ends)\n"
           "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
-          "                       '-': standard output)\n",
+          "                       '-': standard output)\n"
+          "  --detail             with --model ring: two more columns, tread_max_m (the\n"
+          "                       largest tread compression) and belt_contacts (nodes where\n"
+          "                       the belt itself touches the ground), from one more ring\n"
+          "                       evaluation at each row's (x, z); not with --stream\n",
           fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
@@ -50,6 +54,7 @@ static void usage(FILE *fp)
 
 typedef struct {
     int stream;            /* --stream */
+    int detail;            /* --detail */
     int have_from, have_to;
     double x_from, x_to, dx;  /* m */
 } sweep;
@@ -60,6 +65,32 @@ static void write_row(FILE *fp, const tirenv_point *pt)
 {
     fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", pt->x, pt->z, pt->h, pt->slope,
             pt->fx, pt->fz, pt->contacts, pt->iterations);
+}
+
+/* --detail: each row and the ring's own state at its (x, z), from a ring of its own (the
+ * model's evaluations are the equilibrium's; this one is at the accepted point). */
+static int write_detail(FILE *fp, const tirenv_tire *tire, const tirenv_profile *prof,
+                        const tirenv_point pt[], size_t n, tirenv_diag *diag)
+{
+    tirenv_ring *r = tirenv_ring_alloc(tire->springs.R0, &tire->ring);
+    if (!r)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    fputs("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations,tread_max_m,belt_contacts\n", fp);
+    int status = TIRENV_OK;
+    for (size_t k = 0; k < n && !status; ++k) {
+        double fx, fz;
+        status = tirenv_ring_forces(r, prof, pt[k].x, pt[k].z, &fx, &fz, NULL, NULL);
+        if (status) {
+            status = tirenv_error(diag, status, "", 0, "", "ring at x = %g m, z = %g m: no "
+                                  "contact solution", pt[k].x, pt[k].z);
+            break;
+        }
+        fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu,%.9g,%zu\n", pt[k].x, pt[k].z,
+                pt[k].h, pt[k].slope, pt[k].fx, pt[k].fz, pt[k].contacts, pt[k].iterations,
+                tirenv_ring_tread_max(r), tirenv_ring_belt_contacts(r));
+    }
+    tirenv_ring_free(r);
+    return status;
 }
 
 /* What a reader wants at a glance, gathered point by point so that a streamed sweep, which
@@ -128,7 +159,7 @@ static int stream_row(void *ctx, const tirenv_point *pt)
 static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type **type,
                  sweep *s, const char **out_path)
 {
-    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_X_FROM, OPT_X_TO, OPT_DX, OPT_STREAM };
+    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_X_FROM, OPT_X_TO, OPT_DX, OPT_STREAM, OPT_DETAIL };
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         CLI_METHOD_LONGOPTS,
@@ -139,6 +170,7 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
         {"x-to", required_argument, NULL, OPT_X_TO},
         {"dx", required_argument, NULL, OPT_DX},
         {"stream", no_argument, NULL, OPT_STREAM},
+        {"detail", no_argument, NULL, OPT_DETAIL},
         {"output", required_argument, NULL, 'o'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
@@ -155,6 +187,9 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
             break;
         case OPT_STREAM:
             s->stream = 1;
+            break;
+        case OPT_DETAIL:
+            s->detail = 1;
             break;
         case OPT_MODEL:
             if (cli_model_type(optarg, type))
@@ -194,6 +229,8 @@ static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type
         missing = "--load N or --contact-length M";
     else if (s->stream && o->obstacle != CLI_OPT_PROFILE)
         missing = "--profile FILE with --stream";
+    else if (s->detail && (*type != tirenv_model_ring || s->stream))
+        missing = "--model ring and no --stream with --detail";
     if (missing) {
         cli_error("envelope: expected %s; 'tirenv envelope --help' shows the options", missing);
         return CLI_EXIT_USAGE;
@@ -311,7 +348,9 @@ int cli_envelope_main(int argc, char *argv[])
     /* Opened before the sweep so that a bad -o path fails at once, not after it. */
     if (!status && !(status = tirenv_outfile_open(&out, out_path, &diag))) {
         status = tirenv_model_envelope(m, n, x, pt, NULL, &diag);
-        if (!status) {
+        if (!status && s.detail) {
+            status = write_detail(out.fp, &tire, prof, pt, n, &diag);
+        } else if (!status) {
             fputs(header, out.fp);
             for (size_t k = 0; k < n; ++k)
                 write_row(out.fp, &pt[k]);

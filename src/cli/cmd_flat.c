@@ -14,7 +14,8 @@ static void usage(FILE *fp)
           "\n"
           "The tire on flat ground: load, centre height, deflection, contact length and\n"
           "vertical stiffness. Without --load or --contact-length, a table for the paper's\n"
-          "working regimes, contact lengths 0.28, 0.33 and 0.38 m.\n"
+          "working regimes, contact lengths 0.28, 0.33 and 0.38 m. With --model ring also\n"
+          "the largest tread compression (and a column tread_max_m in the CSV).\n"
           "\n"
           "options:\n",
           fp);
@@ -27,7 +28,37 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-static void print_one(const char *model, const char *tire_path, const tirenv_flat *f)
+/* What the ring adds to a flat state: its largest tread compression (m, negative for the
+ * other models) and its belt-contact nodes. */
+typedef struct {
+    double tread_max;
+    size_t belt_contacts;
+} ring_extra;
+
+/* The ring's extra at the flat state's height, from a ring of its own. */
+static int ring_tread(const tirenv_model_type *type, const tirenv_tire *tire,
+                      const tirenv_flat *f, ring_extra *e)
+{
+    e->tread_max = -1;
+    if (type != tirenv_model_ring)
+        return CLI_EXIT_OK;
+    const double zero = 0;
+    tirenv_ring *r = tirenv_ring_alloc(tire->springs.R0, &tire->ring);
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    double fx, fz;
+    const int status = r && flat ? tirenv_ring_forces(r, flat, 0, f->z_flat, &fx, &fz, NULL, NULL)
+                                 : TIRENV_ENOMEM;
+    if (!status) {
+        e->tread_max = tirenv_ring_tread_max(r);
+        e->belt_contacts = tirenv_ring_belt_contacts(r);
+    }
+    tirenv_profile_free(flat);
+    tirenv_ring_free(r);
+    return status ? cli_fail(status, NULL) : CLI_EXIT_OK;
+}
+
+static void print_one(const char *model, const char *tire_path, const tirenv_flat *f,
+                      const ring_extra *e)
 {
     printf("%s model, tire %s\n", model, tire_path);
     printf("  load                %.6g N (%.4g kN)\n", f->load, f->load / 1e3);
@@ -35,18 +66,26 @@ static void print_one(const char *model, const char *tire_path, const tirenv_fla
     printf("  deflection          %.6g m (%.4g mm)\n", f->deflection, f->deflection * 1e3);
     printf("  contact length      %.6g m\n", f->contact_length);
     printf("  vertical stiffness  %.6g N/m (%.4g kN/m)\n", f->stiffness, f->stiffness / 1e3);
+    if (e->tread_max >= 0)
+        printf("  tread compression   %.6g m (%.4g mm), belt contacts %zu\n", e->tread_max,
+               e->tread_max * 1e3, e->belt_contacts);
 }
 
-static void print_row(int csv, const tirenv_flat *f)
+static void print_row(int csv, const tirenv_flat *f, const ring_extra *e)
 {
     if (csv)
-        printf("%.9g,%.9g,%.9g,%.9g,%.9g\n", f->load, f->z_flat, f->deflection,
+        printf("%.9g,%.9g,%.9g,%.9g,%.9g", f->load, f->z_flat, f->deflection,
                f->contact_length, f->stiffness);
     else
-        printf("%10.1f %8.3f %10.5f %10.5f %10.2f %10.4f %10.2f\n", f->load, f->load / 1e3,
+        printf("%10.1f %8.3f %10.5f %10.5f %10.2f %10.4f %10.2f", f->load, f->load / 1e3,
                f->z_flat, f->deflection, f->deflection * 1e3, f->contact_length,
                f->stiffness / 1e3);
+    if (e->tread_max >= 0)
+        printf(csv ? ",%.9g" : " %10.2f", csv ? e->tread_max : e->tread_max * 1e3);
+    putchar('\n');
 }
+
+static const char csv_header[] = "load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m";
 
 /* One flat-ground state for the load the options (or a regime's contact length) ask for. */
 static int flat_at(tirenv_model *m, const cli_options *o, tirenv_flat *f)
@@ -113,30 +152,32 @@ int cli_flat_main(int argc, char *argv[])
     const char *tire_path = cli_tire_path(&o, buf, sizeof buf);
 
     tirenv_flat f;
+    ring_extra e;
+    const int ring = type == tirenv_model_ring;
     if (o.have_load || o.have_contact_length) {
-        if (!(code = flat_at(m, &o, &f))) {
+        if (!(code = flat_at(m, &o, &f)) && !(code = ring_tread(type, &tire, &f, &e))) {
             if (csv) {
-                puts("load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m");
-                print_row(1, &f);
+                printf("%s%s\n", csv_header, ring ? ",tread_max_m" : "");
+                print_row(1, &f, &e);
             } else {
-                print_one(tirenv_model_type_name(type), tire_path, &f);
+                print_one(tirenv_model_type_name(type), tire_path, &f, &e);
             }
         }
         tirenv_model_free(m);
         return code;
     }
     if (csv)
-        puts("load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m");
+        printf("%s%s\n", csv_header, ring ? ",tread_max_m" : "");
     else
         printf("%s model, tire %s, at the paper's working regimes\n"
-               "%10s %8s %10s %10s %10s %10s %10s\n",
+               "%10s %8s %10s %10s %10s %10s %10s%s\n",
                tirenv_model_type_name(type), tire_path, "load_N", "load_kN", "z_flat_m", "defl_m", "defl_mm",
-               "contact_m", "k_kN/m");
+               "contact_m", "k_kN/m", ring ? "   tread_mm" : "");
     for (size_t i = 0; i < sizeof regimes / sizeof regimes[0] && !code; ++i) {
         o.have_contact_length = 1;
         o.contact_length = regimes[i];
-        if (!(code = flat_at(m, &o, &f)))
-            print_row(csv, &f);
+        if (!(code = flat_at(m, &o, &f)) && !(code = ring_tread(type, &tire, &f, &e)))
+            print_row(csv, &f, &e);
     }
     tirenv_model_free(m);
     return code;

@@ -1,5 +1,5 @@
 /* Raw rig logs: CSV "t_s,x_m,z_m", one sample of the tire centre per line (docs/formats.md
- * section 7; docs/models.md section 5.8; the paper's Figure 2). Order, rate and repeats are
+ * section 7; docs/models.md section 5.7; the paper's Figure 2). Order, rate and repeats are
  * the importer's business; this file only reads, and remembers each sample's line for
  * messages.
  * SPDX-License-Identifier: GPL-3.0-or-later */

@@ -1,42 +1,39 @@
-/* The flexible-ring reference tire (docs/models.md section 5): a belt on an elastic foundation with
- * a tread of radial brush springs, in contact with the ground along rays from the centre. */
+/* The flexible-ring reference tire (docs/models.md section 5): a belt on an elastic foundation
+ * with a tread of radial brush springs of finite thickness, in contact with the ground along
+ * rays from the centre; where the tread is compressed through, the belt itself meets the
+ * ground. This file casts the rays and owns the public API; ring_contact.c solves the contact,
+ * ring_belt.c holds the belt's stiffness and the banded solver.
+ *
+ * The contact per node j (in the window of nodes that can touch, see cast_window):
+ *   d_j = R0 - rho_j      penetration of the node's ray (rho_j: distance to the ground along it)
+ *   b_j >= d_j            penetration of the nearest ground in the node's sector
+ *                         |theta - theta_j| <= dtheta/2: the ray's, or a ground vertex's there
+ *   w_j                   inward radial displacement of the belt
+ *   e_j = d_j - w_j       tread compression
+ *   F_j                   ground force on the node (N), radial: F_j = (S w)_j with S the belt's
+ *                         stiffness condensed onto the window (ring_belt.c)
+ *   tread:  F_j - g_j = kappa_j max(0, e_j)
+ *   belt:   w_j >= b_j - t_r,  g_j >= 0,  g_j (w_j - b_j + t_r) = 0
+ * so e_j <= t_r - (b_j - d_j) <= t_r: the tread is never compressed beyond its thickness, and
+ * no ground point comes closer to the centre than the belt minus t_r at its node, even one
+ * between two rays (a blade narrower than the node spacing). Each node is free (F = 0), in tread
+ * contact (F = kappa (d - w)) or held by the belt (w = b - t_r, F = (S w)_j). With the states
+ * fixed the belt displacements solve one symmetric positive definite banded system (S +
+ * diag(kappa) on tread rows; identity rows holding w = b - t_r on belt rows, their values moved
+ * to the right-hand side), whose factor also gives dF_z/dz exactly. */
 #include "tirenv/ring.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_linalg.h>
+#include "model/ring_impl.h"
 #include "model/springs_impl.h"
 #include "profile/profile_impl.h"
 
-/* Passes of the active-set iteration before giving up; it typically needs 2 to 4. */
-enum { RING_MAX_PASSES = 100 };
+/* The smallest window the band solver takes (ring_impl.h). */
+enum { RING_MIN_WINDOW = 6 };
 
-struct tirenv_ring {
-    double R0;             /* free radius at the tread surface, m */
-    double R;              /* belt radius R0 - t_r, m */
-    tirenv_ring_params par;
-    size_t M;              /* nodes around the circle */
-    size_t i0;             /* node at theta = 0 */
-    double dth;            /* node spacing 2*pi/M, rad */
-    double *theta, *sin_t, *cos_t;
-    double *c;             /* circulant compliance: w_j = sum_k c[|j-k| mod M] f_k, m/N */
-    /* The last evaluation: candidate nodes (rays that meet the ground within reach), in
-     * ascending node order, and the active ones among them (positive tread force). */
-    size_t nc, na;
-    size_t *node;          /* node index of candidate k */
-    double *d;             /* R0 - rho: tread compression if the belt did not move, m */
-    double *drho;          /* d(rho)/dz, 1 */
-    double *X;             /* ground point abscissa x + rho sin(theta), m */
-    double *kappa;         /* tread stiffness of the node, k_t*R*dtheta, N/m */
-    double *gap;           /* d - w: positive where the tread is compressed, m */
-    unsigned char *act;    /* per candidate: active */
-    unsigned char *warm;   /* per node: active at the last evaluation */
-    size_t *ai;            /* candidate index of active a */
-    double *S, *f, *rhs;   /* contact system (na x na), tread forces (N), right-hand side */
-    double patch;          /* contact length of the last evaluation, m */
-};
+enum { FREE = TIRENV_RING_FREE, T_BASIC = TIRENV_RING_T_BASIC, B_BASIC = TIRENV_RING_B_BASIC };
 
 /* Fourier symbol of the belt per node: for w_j = cos(n theta_j) the energy per unit length
  * 1/2 EI ((w''+w)/R^2)^2 + 1/2 (T/R^2)(w'^2 - w^2) + 1/2 k_f w^2, with w'' the second and w'
@@ -51,8 +48,9 @@ static double mode_stiffness(const tirenv_ring *r, size_t n)
     return R * r->dth * e;
 }
 
-/* The belt's stiffness matrix is circulant (a uniform ring), so its inverse is too: one
- * column, the inverse discrete cosine transform of 1/lambda_n, once per tire. */
+/* The belt's compliance is circulant (a uniform ring): one column, the inverse discrete cosine
+ * transform of 1/lambda_n, once per tire. Only the state outside the window uses it
+ * (tirenv_ring_state); the contact itself is solved on the banded stiffness. */
 static int compute_compliance(tirenv_ring *r)
 {
     const size_t M = r->M;
@@ -92,30 +90,29 @@ tirenv_ring *tirenv_ring_alloc(double R0, const tirenv_ring_params *par)
     r->i0 = r->M / 2;
     r->dth = 2 * M_PI / (double)r->M;
     const size_t M = r->M;
-    r->theta = malloc(10 * M * sizeof(double));
-    r->node = malloc(2 * M * sizeof(size_t));
-    r->act = calloc(2 * M, 1);
-    /* The contact system is at most the lower half of the nodes square. */
-    r->S = malloc((M / 2 + 1) * (M / 2 + 1) * sizeof(double));
-    if (!r->theta || !r->node || !r->act || !r->S) {
+    /* theta, then the other per-node arrays, in one block. */
+    double **const arrays[] = {&r->sin_t, &r->cos_t, &r->c,       &r->d,       &r->dd,
+                               &r->b,     &r->db,    &r->X,       &r->kappa,   &r->w,
+                               &r->F,     &r->rhs,   &r->A.a0,    &r->A.a1,    &r->A.a2,
+                               &r->A.bm[0], &r->A.bm[1], &r->pn_w, &r->pn_p,   &r->pn_t,
+                               &r->pn_g};
+    const size_t n_arrays = sizeof arrays / sizeof arrays[0];
+    r->theta = malloc((n_arrays + 1) * M * sizeof(double));
+    r->state = calloc(3 * M, 1);
+    r->belt = tirenv_ring__belt_alloc(M, r->R, par);
+    if (!r->theta || !r->state || !r->belt) {
         tirenv_ring_free(r);
         return NULL;
     }
-    double **arrays[] = {&r->sin_t, &r->cos_t, &r->c, &r->d, &r->drho, &r->X, &r->kappa,
-                         &r->gap, &r->f};
-    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
+    for (size_t k = 0; k < n_arrays; ++k)
         *arrays[k] = r->theta + (k + 1) * M;
-    r->rhs = malloc(M * sizeof(double));
-    r->ai = r->node + M;
-    r->warm = r->act + M;
-    if (!r->rhs) {
-        tirenv_ring_free(r);
-        return NULL;
-    }
+    r->warm = r->state + M;
+    r->flip = r->state + 2 * M;
     for (size_t j = 0; j < M; ++j) {
         r->theta[j] = ((double)j - (double)r->i0) * r->dth;
         r->sin_t[j] = sin(r->theta[j]);
         r->cos_t[j] = cos(r->theta[j]);
+        r->d[j] = r->b[j] = -INFINITY;
     }
     if (!compute_compliance(r)) {
         tirenv_ring_free(r);
@@ -129,10 +126,8 @@ void tirenv_ring_free(tirenv_ring *r)
     if (!r)
         return;
     free(r->theta);
-    free(r->node);
-    free(r->act);
-    free(r->S);
-    free(r->rhs);
+    free(r->state);
+    tirenv_ring__belt_free(r->belt);
     free(r);
 }
 
@@ -140,11 +135,8 @@ double tirenv_ring_free_radius(const tirenv_ring *r) { return r->R0; }
 size_t tirenv_ring_size(const tirenv_ring *r) { return r->M; }
 const double *tirenv_ring_theta(const tirenv_ring *r) { return r->theta; }
 double tirenv_ring_patch_length(const tirenv_ring *r) { return r->patch; }
-
-static double compliance(const tirenv_ring *r, size_t j, size_t k)
-{
-    return r->c[j > k ? j - k : k - j];  /* c is even: c[m] = c[M - m] */
-}
+double tirenv_ring_tread_max(const tirenv_ring *r) { return r->tread_max; }
+size_t tirenv_ring_belt_contacts(const tirenv_ring *r) { return r->n_belt; }
 
 /* Tread stiffness per node: lugs move with the tread, which turns by x/R0 as the tire rolls
  * forward, so the node at theta sees the tread point that was at theta + x/R0 at x = 0. */
@@ -160,14 +152,50 @@ static double tread_kappa(const tirenv_ring *r, double theta, double x)
     return k_t * r->R * r->dth;
 }
 
-/* Rays of the lower half that reach the ground within R0 + t_r: the belt bulges outward away
- * from the patch (w < 0), so a ray a little longer than R0 may still touch; the tread
- * thickness bounds the bulge we allow for. */
-static void cast_candidates(tirenv_ring *r, const tirenv_profile *p, double x, double z)
+/* The nearest ground of a node's sector, where it is a vertex of the profile: each vertex
+ * within reach below the centre raises b of the node whose sector holds its angle. Rays alone
+ * would let a blade narrower than the node spacing pass between two nodes. */
+static void vertices_in_sectors(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                                double reach, size_t j_lo, size_t j_hi)
 {
+    const double *X = p->x, *Z = p->z;
+    size_t k = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
+    for (; k < p->n && X[k] <= x + reach; ++k) {
+        const double dx = X[k] - x, dz = z - Z[k];
+        if (!(dz > 0) || X[k] < x - reach)
+            continue;
+        const double rho = sqrt(dx * dx + dz * dz);
+        if (!(rho < reach))
+            continue;
+        const double jr = (double)r->i0 + round(atan2(dx, dz) / r->dth);
+        if (jr < (double)j_lo || jr > (double)j_hi)
+            continue;
+        const size_t j = (size_t)jr;
+        if (r->R0 - rho > r->b[j]) {
+            if (r->d[j] == -INFINITY)
+                r->X[j] = X[k]; /* the ground point of a node its ray misses */
+            r->b[j] = r->R0 - rho;
+            r->db[j] = -dz / rho;
+        }
+    }
+}
+
+/* Rays of the lower half that reach the ground within R0 + t_r (the belt bulges outward away
+ * from the patch, w < 0, so a ray a little longer than R0 may still touch; the tread thickness
+ * bounds the bulge we allow for), and the ground vertices in their sectors. The window is the
+ * span of nodes that see ground, widened to the band solver's smallest size. */
+static void clear_window(tirenv_ring *r)
+{
+    for (size_t j = r->lo; j < r->lo + r->n; ++j)
+        r->d[j] = r->b[j] = -INFINITY;
+    r->n = 0;
+}
+
+static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, double z)
+{
+    clear_window(r);
     const double reach = r->R0 + r->par.t_r;
     const double gap = z - tirenv_profile_max_height(p, x - reach, x + reach);
-    r->nc = 0;
     if (gap >= reach)
         return;
     size_t m = r->M / 4; /* up to the horizontal */
@@ -176,6 +204,7 @@ static void cast_candidates(tirenv_ring *r, const tirenv_profile *p, double x, d
     /* What every ray needs of x, found once (the same bits as tirenv_springs__ray). */
     const size_t k_x = tirenv_profile__segment_at(p, x);
     const double g_x = tirenv_profile_height(p, x);
+    size_t first = r->M, last = 0;
     for (size_t j = r->i0 - m; j <= r->i0 + m; ++j) {
         if (r->cos_t[j] < 0)
             continue;
@@ -184,133 +213,138 @@ static void cast_candidates(tirenv_ring *r, const tirenv_profile *p, double x, d
                                                   reach, &drho);
         if (!isfinite(rho))
             continue;
-        const size_t k = r->nc++;
-        r->node[k] = j;
-        r->d[k] = r->R0 - rho;
-        r->drho[k] = drho;
-        r->X[k] = x + rho * r->sin_t[j];
-        r->kappa[k] = tread_kappa(r, r->theta[j], x);
+        r->d[j] = r->b[j] = r->R0 - rho;
+        r->dd[j] = r->db[j] = -drho;
+        r->X[j] = x + rho * r->sin_t[j];
     }
-}
-
-/* With the active set fixed the tread forces f_A solve (C_AA + diag(1/kappa_A)) f_A = d_A: the
- * belt moves by C f and each compressed tread spring carries kappa (d - w). The matrix is SPD
- * (C is), so Cholesky; its factor stays in S for the derivative. */
-static int solve_active(tirenv_ring *r)
-{
-    const size_t na = r->na;
-    if (na == 0)
-        return 0;
-    for (size_t a = 0; a < na; ++a) {
-        const size_t ka = r->ai[a];
-        for (size_t b = 0; b <= a; ++b)
-            r->S[a * na + b] = r->S[b * na + a] = compliance(r, r->node[ka], r->node[r->ai[b]]);
-        r->S[a * na + a] += 1 / r->kappa[ka];
-        r->f[a] = r->d[ka];
-    }
-    gsl_matrix_view S = gsl_matrix_view_array(r->S, na, na);
-    gsl_vector_view f = gsl_vector_view_array(r->f, na);
-    if (gsl_linalg_cholesky_decomp1(&S.matrix))
-        return TIRENV_ENOCONV;
-    return gsl_linalg_cholesky_svx(&S.matrix, &f.vector) ? TIRENV_ENOCONV : 0;
-}
-
-/* Semi-smooth Newton (primal-dual active set) on f = kappa (d - C f)_+: solve with the set
- * fixed, then take as active every node whose tread would be compressed. */
-static int solve_contact(tirenv_ring *r)
-{
-    for (size_t k = 0; k < r->nc; ++k)
-        r->act[k] = r->d[k] > 0 || r->warm[r->node[k]];
-    for (size_t pass = 0; pass < RING_MAX_PASSES; ++pass) {
-        r->na = 0;
-        for (size_t k = 0; k < r->nc; ++k)
-            if (r->act[k])
-                r->ai[r->na++] = k;
-        const int status = solve_active(r);
-        if (status)
-            return status;
-        int changed = 0;
-        for (size_t k = 0, a = 0; k < r->nc; ++k) {
-            double w = 0;
-            for (size_t b = 0; b < r->na; ++b)
-                w += compliance(r, r->node[k], r->node[r->ai[b]]) * r->f[b];
-            r->gap[k] = r->d[k] - w;
-            /* On the active set gap = f/kappa exactly; use f there to avoid round-off. */
-            const int is_active = a < r->na && r->ai[a] == k;
-            const unsigned char now = is_active ? r->f[a++] > 0 : r->gap[k] > 0;
-            changed |= now != r->act[k];
-            r->act[k] = now;
+    vertices_in_sectors(r, p, x, z, reach, r->i0 - m, r->i0 + m);
+    for (size_t j = r->i0 - m; j <= r->i0 + m; ++j)
+        if (r->b[j] > -INFINITY) {
+            first = j < first ? j : first;
+            last = j;
         }
-        if (!changed)
-            return 0;
+    if (first > last)
+        return;
+    /* Widen symmetrically; the window stays well inside the lower half plus two nodes. */
+    while (last - first + 1 < RING_MIN_WINDOW) {
+        --first;
+        if (last - first + 1 < RING_MIN_WINDOW)
+            ++last;
     }
-    return TIRENV_ENOCONV;
+    r->lo = first;
+    r->n = last - first + 1;
+    for (size_t j = first; j <= last; ++j)
+        if (r->d[j] > -INFINITY)
+            r->kappa[j] = tread_kappa(r, r->theta[j], x);
 }
 
-/* Contact length: first to last active ground point, each edge extended to where the
- * interpolated gap between the edge node and its inactive neighbour crosses zero. */
+/* Contact length: first to last node with a ground force, each edge extended to where the
+ * interpolated tread compression between the edge node and its free neighbour crosses zero. */
 static double patch_length(const tirenv_ring *r)
 {
-    if (r->na == 0)
+    size_t j1 = r->M, j2 = 0;
+    for (size_t j = r->lo; j < r->lo + r->n; ++j)
+        if (r->state[j] != FREE) {
+            j1 = j < j1 ? j : j1;
+            j2 = j;
+        }
+    if (j1 > j2)
         return 0;
-    const size_t k1 = r->ai[0], k2 = r->ai[r->na - 1];
-    double len = r->X[k2] - r->X[k1];
-    if (k1 > 0 && r->node[k1 - 1] + 1 == r->node[k1])
-        len += r->gap[k1] / (r->gap[k1] - r->gap[k1 - 1]) * (r->X[k1] - r->X[k1 - 1]);
-    if (k2 + 1 < r->nc && r->node[k2 + 1] == r->node[k2] + 1)
-        len += r->gap[k2] / (r->gap[k2] - r->gap[k2 + 1]) * (r->X[k2 + 1] - r->X[k2]);
+    double len = r->X[j2] - r->X[j1];
+    const double e1 = r->d[j1] - r->w[j1], e2 = r->d[j2] - r->w[j2];
+    if (j1 > r->lo && r->d[j1 - 1] > -INFINITY && r->d[j1] > -INFINITY) {
+        const double e0 = r->d[j1 - 1] - r->w[j1 - 1];
+        if (e1 > 0 && e0 <= 0)
+            len += e1 / (e1 - e0) * (r->X[j1] - r->X[j1 - 1]);
+    }
+    if (j2 + 1 < r->lo + r->n && r->d[j2 + 1] > -INFINITY && r->d[j2] > -INFINITY) {
+        const double e3 = r->d[j2 + 1] - r->w[j2 + 1];
+        if (e2 > 0 && e3 <= 0)
+            len += e2 / (e2 - e3) * (r->X[j2 + 1] - r->X[j2]);
+    }
     return len;
+}
+
+/* The last evaluation's contact counts and largest tread compression. */
+static void summarise(tirenv_ring *r)
+{
+    r->n_contact = r->n_belt = 0;
+    r->tread_max = 0;
+    for (size_t j = r->lo; j < r->lo + r->n; ++j) {
+        double e = 0;
+        if (r->state[j] & T_BASIC) /* on the belt d - w = t_r - (b - d) >= 0 here */
+            e = r->d[j] - r->w[j];
+        r->n_contact += r->state[j] != FREE;
+        r->n_belt += (r->state[j] & B_BASIC) != 0;
+        r->tread_max = fmax(r->tread_max, e);
+    }
 }
 
 int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double z,
                        double *fx, double *fz, double *dfz_dz, size_t *contacts)
 {
-    cast_candidates(r, p, x, z);
-    const int status = solve_contact(r);
-    memset(r->warm, 0, r->M);
-    if (status)
+    cast_window(r, p, x, z);
+    const int status = r->n ? tirenv_ring__solve_contact(r) : 0;
+    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
+        r->warm[j] = FREE;
+    r->warm_lo = r->warm_n = 0;
+    if (status) {
+        clear_window(r); /* nothing of a failed solve is reported */
         return status;
-    double sum_c = 0, sum_s = 0;
-    for (size_t a = 0; a < r->na; ++a) {
-        const size_t j = r->node[r->ai[a]];
-        r->warm[j] = 1;
-        sum_c += r->f[a] * r->cos_t[j];
-        sum_s += r->f[a] * r->sin_t[j];
     }
+    double sum_c = 0, sum_s = 0;
+    for (size_t j = r->lo; j < r->lo + r->n; ++j) {
+        if (r->state[j] == FREE)
+            continue;
+        sum_c += r->F[j] * r->cos_t[j];
+        sum_s += r->F[j] * r->sin_t[j];
+    }
+    memcpy(r->warm + r->lo, r->state + r->lo, r->n);
+    r->warm_lo = r->lo;
+    r->warm_n = r->n;
     *fz = sum_c;
     *fx = -sum_s;
+    summarise(r);
     if (contacts)
-        *contacts = r->na;
+        *contacts = r->n_contact;
     r->patch = patch_length(r);
-    if (dfz_dz) {
-        /* d(d)/dz = -d(rho)/dz on the active nodes, through the same Cholesky factor. */
-        *dfz_dz = 0;
-        if (r->na > 0) {
-            for (size_t a = 0; a < r->na; ++a)
-                r->rhs[a] = -r->drho[r->ai[a]];
-            gsl_matrix_view S = gsl_matrix_view_array(r->S, r->na, r->na);
-            gsl_vector_view v = gsl_vector_view_array(r->rhs, r->na);
-            if (gsl_linalg_cholesky_svx(&S.matrix, &v.vector))
-                return TIRENV_ENOCONV;
-            for (size_t a = 0; a < r->na; ++a)
-                *dfz_dz += r->rhs[a] * r->cos_t[r->node[r->ai[a]]];
-        }
-    }
+    if (dfz_dz)
+        *dfz_dz = r->n ? tirenv_ring__dfz_dz(r) : 0;
     return 0;
 }
 
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
 {
+    const size_t lo = r->lo, hi = r->lo + r->n;
     for (size_t j = 0; j < r->M; ++j) {
-        if (w) {
+        const int inside = j >= lo && j < hi;
+        if (w && inside) {
+            w[j] = r->w[j];
+        } else if (w) {
             w[j] = 0;
-            for (size_t a = 0; a < r->na; ++a)
-                w[j] += compliance(r, j, r->node[r->ai[a]]) * r->f[a];
+            for (size_t k = lo; k < hi; ++k)
+                if (r->state[k] != FREE)
+                    w[j] += r->c[j > k ? j - k : k - j] * r->F[k];
         }
         if (f)
-            f[j] = 0;
+            f[j] = inside && r->state[j] != FREE ? r->F[j] : 0;
     }
-    if (f)
-        for (size_t a = 0; a < r->na; ++a)
-            f[r->node[r->ai[a]]] = r->f[a];
+}
+
+void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[])
+{
+    const size_t lo = r->lo, hi = r->lo + r->n;
+    for (size_t j = 0; j < r->M; ++j) {
+        const int inside = j >= lo && j < hi;
+        if (d)
+            d[j] = inside ? r->d[j] : -INFINITY;
+        if (b)
+            b[j] = inside ? r->b[j] : -INFINITY;
+        if (g) {
+            g[j] = 0;
+            if (inside && r->state[j] & B_BASIC)
+                g[j] = r->state[j] & T_BASIC ? r->F[j] - r->kappa[j] * (r->d[j] - r->w[j])
+                                             : r->F[j];
+        }
+    }
 }

@@ -10,7 +10,7 @@
 /* The values of data/vehicles/tractor.veh, where each is explained; a test keeps them equal. */
 tirenv_vehicle tirenv_vehicle_default(void)
 {
-    const tirenv_axle axle = {.tire_file = "", .tires = 2, .k_t = 342000, .c_t = 3000,
+    const tirenv_axle axle = {.tire_file = "", .tires = 2, .k_t = 296000, .c_t = 3000,
                               .k_s = 0, .c_s = 0, .m_a = 400};
     return (tirenv_vehicle){.m = 4500, .I_y = 5000, .a = 1.45, .b = 0.95, .seat_x = -0.75,
                             .seat_h = 1.2, .front = axle, .rear = axle, .g = 9.81};

@@ -1,0 +1,96 @@
+/* Private: the ring reference tire's pieces (docs/models.md section 5), one file each: the belt
+ * as a stiffness matrix condensed onto a window of nodes and the banded solver of its contact
+ * system (ring_belt.c), the contact solve (ring_contact.c), rays and the public API
+ * (ring.c). */
+#ifndef TIRENV_RING_IMPL_H
+#define TIRENV_RING_IMPL_H
+
+#include <stddef.h>
+#include "tirenv/ring.h"
+#include "tirenv/tire.h"
+
+/* The belt's stiffness K per node around the full circle of M nodes is the circulant
+ * pentadiagonal matrix with K[j][j] = s[0], K[j][j+-1] = s[1], K[j][j+-2] = s[2] (N/m): the
+ * finite-difference form of the belt energy (section 5), whose Fourier symbol is the mode
+ * stiffness R dtheta [EI (sigma - 1)^2 / R^4 + T (sigma - 1) / R^2 + k_f]. Nodes outside a
+ * window of contiguous nodes carry no load, so they condense out exactly: the window's
+ * stiffness is K_WW - K_WE K_EE^-1 K_EW, which differs from K_WW only on the two nodes at
+ * each end of the window (K is pentadiagonal). That correction depends on the window's length
+ * alone (the ring is uniform); tirenv_ring__belt_alloc keeps a table of them, filled when a
+ * length is first needed. */
+typedef struct tirenv_ring_belt tirenv_ring_belt;
+
+/* NULL if out of memory. R: belt radius (m), dtheta = 2 pi / M (rad). The caller has checked
+ * the parameters (tirenv_tire_check: K is positive definite). */
+tirenv_ring_belt *tirenv_ring__belt_alloc(size_t M, double R, const tirenv_ring_params *par);
+void tirenv_ring__belt_free(tirenv_ring_belt *b);
+
+/* Stencil s[0..2] of K (N/m). */
+const double *tirenv_ring__belt_stencil(const tirenv_ring_belt *b);
+
+/* The condensed window stiffness's end correction for a window of n >= 6 nodes (n <= M - 6):
+ * q[0..3][0..3] (N/m) over the window nodes 0, 1, n-2, n-1, to be subtracted from K_WW. */
+const double (*tirenv_ring__belt_end(tirenv_ring_belt *b, size_t n))[4];
+
+/* A symmetric positive definite n x n matrix (n >= 6) that is pentadiagonal but for a coupling
+ * of its first two rows with its last two, and its Cholesky factor A = L L^T in place of it.
+ * Each row of the contact system is one window node (section 5): the condensed belt plus the
+ * tread on the nodes in tread contact, or an identity row where the belt itself is held. */
+typedef struct {
+    size_t n;
+    double *a0, *a1, *a2;  /* A[i][i], A[i][i+1], A[i][i+2] (N/m); then L[i][i], L[i+1][i],
+                            * L[i+2][i] for the band rows i < n-2 */
+    double c[2][2];        /* A[i][n-2+k] for i, k in {0, 1}, on top of the band */
+    double *bm[2];         /* factor: L[n-2+k][i], i < n-2 (the last two rows) */
+    double t[3];           /* factor: L[n-2][n-2], L[n-1][n-2], L[n-1][n-1] */
+} tirenv_ring_band;
+
+/* Factorises A in place; nonzero if A is not positive definite. O(n). */
+int tirenv_ring__band_factor(tirenv_ring_band *A);
+
+/* Solves A x = b with the factor, x overwriting b (n entries). O(n). */
+void tirenv_ring__band_solve(const tirenv_ring_band *A, double b[]);
+
+/* A node's state: which of its two complementarity pairs (ring_contact.c) are basic. FREE: no
+ * force; TREAD: the tread carries kappa (d - w); with B_BASIC the belt is held at b - t_r, and
+ * with T_BASIC too the tread carries kappa (d - w) of its force, without it none. */
+enum { TIRENV_RING_FREE = 0, TIRENV_RING_T_BASIC = 1, TIRENV_RING_B_BASIC = 2 };
+
+struct tirenv_ring {
+    double R0;             /* free radius at the tread surface, m */
+    double R;              /* belt radius R0 - t_r, m */
+    tirenv_ring_params par;
+    size_t M;              /* nodes around the circle */
+    size_t i0;             /* node at theta = 0 */
+    double dth;            /* node spacing 2*pi/M, rad */
+    double *theta, *sin_t, *cos_t;
+    double *c;             /* circulant compliance: w_j = sum_k c[|j-k| mod M] F_k, m/N */
+    tirenv_ring_belt *belt;
+    /* Per node (global index), over the last window: */
+    double *d, *dd;        /* ray penetration R0 - rho (m, -INFINITY: no ground) and d(d)/dz */
+    double *b, *db;        /* belt-limit penetration b >= d (m, -INFINITY: none), d(b)/dz */
+    double *X;             /* ground point abscissa of the ray (or vertex), m */
+    double *kappa;         /* tread stiffness of the node, k_t*R*dtheta, N/m */
+    double *w;             /* belt inward displacement, m */
+    double *F;             /* ground force on the node, N */
+    unsigned char *state;  /* TIRENV_RING_FREE, or T_BASIC and/or B_BASIC */
+    unsigned char *warm;   /* the states of the last evaluation, FREE outside its window */
+    unsigned char *flip;   /* the violated pairs of a pass */
+    double *pn_w, *pn_p, *pn_t, *pn_g; /* projected Newton: iterate, step, trial, gradient */
+    size_t lo, n;          /* the window: nodes lo .. lo + n - 1 (n = 0: no ground in reach) */
+    size_t warm_lo, warm_n;
+    tirenv_ring_band A;    /* the window's contact system and its factor */
+    double *rhs;           /* right-hand side, then solution, of the window system */
+    double patch;          /* contact length of the last evaluation, m */
+    double tread_max;      /* largest tread compression of the last evaluation, m */
+    size_t n_contact, n_belt;
+};
+
+/* The contact on the window lo .. lo + n - 1 (n >= 6) of the rays cast: states, w and F of
+ * every window node, from the states in warm. TIRENV_ENOCONV if no method settles. */
+int tirenv_ring__solve_contact(tirenv_ring *r);
+
+/* dF_z/dz (N/m) with the states of the last tirenv_ring__solve_contact fixed. */
+double tirenv_ring__dfz_dz(tirenv_ring *r);
+
+#endif
