@@ -9,12 +9,17 @@ PREFIX     ?= /usr/local
 SKIP_LABELS ?= layers
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps build test test-asan demo bench install clean
+.PHONY: all deps deps-test build test test-asan test-slurm demo bench install clean
 
 all: build
 
 deps:
 	@sh scripts/deps.sh
+
+# What the tests need besides: slurm-wlm and munge for the Slurm test (optional: without
+# them, or without root, that test reports itself skipped).
+deps-test: deps
+	@sh scripts/deps.sh --slurm
 
 build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -22,15 +27,20 @@ build: deps
 
 # Release build and tests, then the same tests under AddressSanitizer + UBSan.
 # The Release run includes the install checks (label install: install into a temporary
-# prefix, build tests/consumer/ against it, run the installed CLI moved away from the clone).
-test: build
+# prefix, build tests/consumer/ against it, run the installed CLI moved away from the clone)
+# and the Slurm scripts on a single-node cluster it starts (label slurm, about 20 s).
+test: build deps-test
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(skip)
 	@$(MAKE) --no-print-directory test-asan
+
+# The Slurm test alone: scripts/slurm/ on a private single-node cluster (needs root).
+test-slurm: build deps-test
+	@cd $(BUILD) && ctest --output-on-failure -L slurm
 
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
+	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 
 # The paper's study on the embedded (simulated) data set: fit, train, compare, report. Then
 # its next step, the tractor ride: over a cleat at three speeds (the README's picture), and

@@ -5,6 +5,14 @@ set -eu
 # groff-base and man-db: the tests format and look up the generated man pages.
 need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
+# --slurm: Slurm and munge, for tests/slurm.sh (scripts/slurm/ on a private single-node
+# cluster). Optional: without them that test reports itself skipped, so a user who cannot
+# install them is told how and goes on.
+optional=0
+if [ "${1:-}" = "--slurm" ]; then
+    need="slurm-wlm munge"
+    optional=1
+fi
 
 missing=""
 for pkg in $need; do
@@ -19,10 +27,21 @@ done
 if [ "$(id -u)" -eq 0 ]; then
     echo "deps: installing$missing" >&2
     export DEBIAN_FRONTEND=noninteractive
+    if [ "$optional" -eq 1 ]; then
+        if ! { apt-get update -qq && apt-get install -y -qq --no-install-recommends $missing \
+                   >/dev/null; }; then
+            echo "deps: could not install$missing (optional: the Slurm test is skipped)" >&2
+        fi
+        exit 0
+    fi
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends $missing >/dev/null
 else
     echo "deps: missing packages; run:" >&2
     echo "  sudo apt-get update && sudo apt-get install -y$missing" >&2
+    if [ "$optional" -eq 1 ]; then
+        echo "deps: (optional: without them the Slurm test is skipped)" >&2
+        exit 0
+    fi
     exit 1
 fi

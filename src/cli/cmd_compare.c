@@ -16,7 +16,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv compare [--data DIR] [--tire FITTED.tir] [--nn MODEL.json]\n"
           "                      [--cases F,J,R | --split NAME] [--simulated-by MODEL]\n"
-          "                      [-o REPORT_DIR] [--models LIST] [--no-images]\n"
+          "                      [-o REPORT_DIR] [--models LIST] [--no-images] [--jobs N]\n"
           "\n"
           "Evaluates every model on the chosen cases of a data set and writes to\nREPORT_DIR:\n"
           "  <case>.png, <case>.svg  h (mm) over x_N: measured points, one line per model\n"
@@ -54,6 +54,7 @@ static void usage(FILE *fp)
           "  -o, --output DIR     report directory, created if missing\n"
           "                       (default out/compare)\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -171,6 +172,7 @@ static int parse(int argc, char *argv[], cli_options *o, compare_options *co)
         {"title", required_argument, NULL, OPT_TITLE},
         {"no-images", no_argument, NULL, OPT_NO_IMAGES},
         {"output", required_argument, NULL, 'o'},
+        CLI_JOBS_LONGOPT,
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -217,6 +219,10 @@ static int parse(int argc, char *argv[], cli_options *o, compare_options *co)
             break;
         case OPT_NO_IMAGES:
             co->s.images = 0;
+            break;
+        case CLI_OPT_JOBS:
+            if (cli_parse_jobs("compare", optarg, &co->s.jobs))
+                return CLI_EXIT_USAGE;
             break;
         case '?':
             usage(stderr);
@@ -274,6 +280,7 @@ int cli_compare_main(int argc, char *argv[])
     cli_options o;
     cli_options_init(&o);
     compare_options co = {.s = tirenv_compare_default()};
+    co.s.jobs = cli_jobs_default();
     int code = parse(argc, argv, &o, &co);
     if (code >= 0) {
         free(co.case_list);

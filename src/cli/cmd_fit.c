@@ -11,7 +11,8 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv fit --data DIR [--model springs|cam] [--fit-radius]\n"
-          "                  [--check-refinement] [-o FITTED.tir] [--tire FILE] [--set K=V]...\n"
+          "                  [--check-refinement] [-o FITTED.tir] [--jobs N] [--tire FILE]\n"
+          "                  [--set K=V]...\n"
           "\n"
           "Identifies RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS (and UNLOADED_RADIUS with\n"
           "--fit-radius) of the springs model, or ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
@@ -28,6 +29,7 @@ static void usage(FILE *fp)
           "  --check-refinement   refit with ELEMENT_ANGLE / 2 and compare\n"
           "  -o FILE              write the fitted tire (.tir); default: print only\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -100,6 +102,7 @@ int cli_fit_main(int argc, char *argv[])
         {"model", required_argument, NULL, OPT_MODEL},
         {"fit-radius", no_argument, NULL, OPT_RADIUS},
         {"check-refinement", no_argument, NULL, OPT_REFINE},
+        CLI_JOBS_LONGOPT,
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
@@ -108,6 +111,7 @@ int cli_fit_main(int argc, char *argv[])
     tirenv_fit_settings fs = tirenv_fit_default();
     fs.type = tirenv_model_springs;
     fs.progress = progress;
+    fs.jobs = cli_jobs_default();
     const char *data = NULL, *out = NULL;
     int refine = 0, c;
     cli_getopt_reset();
@@ -136,6 +140,10 @@ int cli_fit_main(int argc, char *argv[])
             break;
         case OPT_REFINE:
             refine = 1;
+            break;
+        case CLI_OPT_JOBS:
+            if (cli_parse_jobs("fit", optarg, &fs.jobs))
+                return CLI_EXIT_USAGE;
             break;
         case '?':
             usage(stderr);

@@ -12,7 +12,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
           "                    [--seed S] [--measured | --simulated-by ring] [--no-images]\n"
-          "                    [--tire FILE] [--set KEY=VALUE]...\n"
+          "                    [--jobs N] [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
           "on the data set's training cases (tirenv fit), trains the 4-8-1 network with\n"
@@ -33,6 +33,7 @@ static void usage(FILE *fp)
           "  --measured           the data are real measurements\n"
           "  --no-images          write the gnuplot scripts but do not run gnuplot\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -60,12 +61,14 @@ int cli_study_main(int argc, char *argv[])
         {"simulated-by", required_argument, NULL, OPT_SIMULATED},
         {"measured", no_argument, NULL, OPT_MEASURED},
         {"no-images", no_argument, NULL, OPT_NO_IMAGES},
+        CLI_JOBS_LONGOPT,
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
     cli_options o;
     cli_options_init(&o);
     tirenv_study_settings s = tirenv_study_default();
+    s.jobs = cli_jobs_default();
     char data_buf[1024];
     s.data_dir = cli_data_path("dataset", data_buf, sizeof data_buf);
     int data_given = 0, sim_given = 0, c;
@@ -106,6 +109,10 @@ int cli_study_main(int argc, char *argv[])
             break;
         case OPT_NO_IMAGES:
             s.images = 0;
+            break;
+        case CLI_OPT_JOBS:
+            if (cli_parse_jobs("study", optarg, &s.jobs))
+                return CLI_EXIT_USAGE;
             break;
         case '?':
             usage(stderr);

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "study/compare_impl.h"
 #include "tirenv/io.h"
+#include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "tirenv/train.h"
 
@@ -16,7 +17,8 @@ tirenv_study_settings tirenv_study_default(void)
     return (tirenv_study_settings){.data_dir = NULL, .out_dir = "out/study",
                                    .tire = tirenv_tire_default(), .tire_label = NULL,
                                    .trainer = "lm", .seed = 1, .simulated_by_ring = 1,
-                                   .images = 1, .progress = NULL, .progress_ctx = NULL};
+                                   .images = 1, .jobs = 1, .progress = NULL,
+                                   .progress_ctx = NULL};
 }
 
 enum { STEPS = 7 };
@@ -110,41 +112,57 @@ static const double grid_L[] = {0.05, 0.10, 0.15, 0.20, 0.25, 0.30};
 static const double grid_H[] = {0.025, 0.05, 0.075, 0.10};
 enum { N_GRID = 4 * 6 * 4 };
 
-static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted,
+/* Grid case k, with the springs model of the worker running it. */
+typedef struct {
+    const tirenv_dataset *real;
+    const tirenv_tire *fitted;
+    tirenv_dataset *out;
+    tirenv_model **models;         /* one per worker, built on first use */
+} physical_pass;
+
+static int physical_case(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    physical_pass *p = ctx;
+    if (!p->models[worker] &&
+        !(p->models[worker] = tirenv_model_alloc(tirenv_model_springs, p->fitted)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    tirenv_case *cs = &p->out->cases[k];
+    const tirenv_curve *grid = &p->real->cases[0].curve; /* the data set's x_N grid */
+    const size_t a = k / 24, b = k / 4 % 6, c = k % 4;
+    snprintf(cs->name, sizeof cs->name, "g%zu", k);
+    cs->split = k % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
+    cs->contact_length = grid_l_c[a];
+    cs->L = grid_L[b];
+    cs->H = grid_H[c];
+    cs->load = load_at(p->real, cs->contact_length);
+    int status = tirenv_curve_alloc(&cs->curve, grid->n);
+    if (status)
+        return tirenv_error(diag, status, "", 0, "study", "out of memory");
+    const double x_0 = tirenv_xN_origin(p->fitted->springs.R0, cs->contact_length, cs->L,
+                                        cs->H);
+    for (size_t j = 0; j < grid->n; ++j) {
+        cs->curve.x_N[j] = grid->x_N[j];
+        cs->curve.x[j] = x_0 * (1 - grid->x_N[j]);
+    }
+    return tirenv_case_predict_model(p->models[worker], cs, cs->curve.h, diag);
+}
+
+static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted, size_t jobs,
                             tirenv_dataset *out, tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    const tirenv_curve *grid = &real->cases[0].curve; /* the data set's x_N grid */
     out->cases = calloc(N_GRID, sizeof *out->cases);
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, fitted);
-    if (!out->cases || !m) {
-        tirenv_model_free(m);
+    physical_pass p = {real, fitted, out, calloc(jobs, sizeof *p.models)};
+    if (!out->cases || !p.models) {
+        free(p.models);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     }
     snprintf(out->dir, sizeof out->dir, "(springs model curves)");
-    int status = TIRENV_OK;
-    for (size_t a = 0; a < 4 && !status; ++a)
-        for (size_t b = 0; b < 6 && !status; ++b)
-            for (size_t c = 0; c < 4 && !status; ++c) {
-                tirenv_case *cs = &out->cases[out->n];
-                snprintf(cs->name, sizeof cs->name, "g%zu", out->n);
-                cs->split = out->n % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
-                cs->contact_length = grid_l_c[a];
-                cs->L = grid_L[b];
-                cs->H = grid_H[c];
-                cs->load = load_at(real, cs->contact_length);
-                ++out->n;
-                if ((status = tirenv_curve_alloc(&cs->curve, grid->n)))
-                    break;
-                const double x_0 = tirenv_xN_origin(fitted->springs.R0, cs->contact_length,
-                                                    cs->L, cs->H);
-                for (size_t j = 0; j < grid->n; ++j) {
-                    cs->curve.x_N[j] = grid->x_N[j];
-                    cs->curve.x[j] = x_0 * (1 - grid->x_N[j]);
-                }
-                status = tirenv_case_predict_model(m, cs, cs->curve.h, diag);
-            }
-    tirenv_model_free(m);
+    out->n = N_GRID;  /* every case's curve is freed with the data set, allocated or not */
+    const int status = tirenv_parallel_for(N_GRID, jobs, physical_case, NULL, &p, diag);
+    for (size_t w = 0; w < jobs; ++w)
+        tirenv_model_free(p.models[w]);
+    free(p.models);
     return status;
 }
 
@@ -178,52 +196,62 @@ static const outside_design outside[] = {
 };
 enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
-/* The reference curves: the ring tire on the virtual rig, imported like the data set's. */
-static int outside_dataset(const tirenv_tire *tire, tirenv_dataset *out,
+/* The reference curves: the ring tire on the virtual rig, imported like the data set's; each
+ * obstacle with its own ring, so that its curve depends on it alone. */
+typedef struct {
+    const tirenv_tire *tire;
+    tirenv_dataset *out;
+    tirenv_profile **profiles;
+} outside_pass;
+
+static int outside_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    outside_pass *p = ctx;
+    const outside_design *d = &outside[i];
+    tirenv_case *cs = &p->out->cases[i];
+    (void)worker;
+    snprintf(cs->name, sizeof cs->name, "%s", d->name);
+    cs->split = TIRENV_SPLIT_VALIDATION;
+    cs->contact_length = d->l_c;
+    cs->L = d->L;
+    cs->H = d->H;
+    cs->profile = p->profiles[i] = d->make(d->arg);
+    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, p->tire);
+    if (!p->profiles[i] || !ring) {
+        tirenv_model_free(ring);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    }
+    int status = tirenv_model_load_for_contact_length(ring, d->l_c, &cs->load, diag);
+    if (!status)
+        status = tirenv_model_set(ring, p->profiles[i], cs->load, diag);
+    tirenv_rig_settings rig = tirenv_rig_default();
+    rig.seed = 777 + i;
+    tirenv_rig_log log = {0};
+    if (!status)
+        status = tirenv_rig_simulate(ring, p->profiles[i], &rig, &log, diag);
+    tirenv_import_settings imp = tirenv_import_default();
+    imp.L = d->L;
+    imp.H = d->H;
+    imp.R0 = p->tire->springs.R0;
+    imp.contact_length = d->l_c;
+    if (!status)
+        status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve, diag);
+    tirenv_rig_log_free(&log);
+    tirenv_model_free(ring);
+    return status;
+}
+
+static int outside_dataset(const tirenv_tire *tire, size_t jobs, tirenv_dataset *out,
                            tirenv_profile *profiles[N_OUTSIDE], tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
     snprintf(out->dir, sizeof out->dir, "(virtual rig, ring tire)");
     out->cases = calloc(N_OUTSIDE, sizeof *out->cases);
-    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
-    if (!out->cases || !ring) {
-        tirenv_model_free(ring);
+    if (!out->cases)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
-    }
-    int status = TIRENV_OK;
-    for (size_t i = 0; i < N_OUTSIDE && !status; ++i) {
-        const outside_design *d = &outside[i];
-        tirenv_case *cs = &out->cases[out->n++];
-        snprintf(cs->name, sizeof cs->name, "%s", d->name);
-        cs->split = TIRENV_SPLIT_VALIDATION;
-        cs->contact_length = d->l_c;
-        cs->L = d->L;
-        cs->H = d->H;
-        cs->profile = profiles[i] = d->make(d->arg);
-        if (!profiles[i]) {
-            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
-            break;
-        }
-        status = tirenv_model_load_for_contact_length(ring, d->l_c, &cs->load, diag);
-        if (!status)
-            status = tirenv_model_set(ring, profiles[i], cs->load, diag);
-        tirenv_rig_settings rig = tirenv_rig_default();
-        rig.seed = 777 + i;
-        tirenv_rig_log log = {0};
-        if (!status)
-            status = tirenv_rig_simulate(ring, profiles[i], &rig, &log, diag);
-        tirenv_import_settings imp = tirenv_import_default();
-        imp.L = d->L;
-        imp.H = d->H;
-        imp.R0 = tire->springs.R0;
-        imp.contact_length = d->l_c;
-        if (!status)
-            status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve,
-                                               diag);
-        tirenv_rig_log_free(&log);
-    }
-    tirenv_model_free(ring);
-    return status;
+    out->n = N_OUTSIDE;
+    outside_pass p = {tire, out, profiles};
+    return tirenv_parallel_for(N_OUTSIDE, jobs, outside_case, NULL, &p, diag);
 }
 
 /* ---- the report's own account ------------------------------------------------------------- */
@@ -338,6 +366,7 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     cs.out_dir = dir;
     cs.title = title;
     cs.images = s->images;
+    cs.jobs = s->jobs;
     cs.tire_label = "fitted.tir (identified on the training cases)";
     if (s->simulated_by_ring) {
         cs.simulated = 1;
@@ -365,6 +394,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     progress(s, "identifying the springs model", 1);
     tirenv_fit_settings fs = tirenv_fit_default();
     fs.type = tirenv_model_springs;
+    fs.jobs = s->jobs;
     if (!status)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &fit, diag);
     /* The cam's keys live in their own part of the tire, so both fits share one file. */
@@ -387,7 +417,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
 
     progress(s, "the paper's workflow: a network on physical-model curves", 4);
     if (!status)
-        status = physical_dataset(&ds, &tire, &phys_ds, diag);
+        status = physical_dataset(&ds, &tire, s->jobs ? s->jobs : 1, &phys_ds, diag);
     snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
     if (!status)
         status = train_network(s, &phys_ds, &ds, path, &nn_phys, &phys_rep, diag);
@@ -402,7 +432,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
 
     progress(s, "obstacles outside the training range", 5);
     if (!status)
-        status = outside_dataset(&s->tire, &out_ds, profiles, diag);
+        status = outside_dataset(&s->tire, s->jobs ? s->jobs : 1, &out_ds, profiles, diag);
     snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
     tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
                                                   "range");
