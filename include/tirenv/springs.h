@@ -30,9 +30,16 @@ const double *tirenv_springs_theta(const tirenv_springs *s);
 
 /* Hub forces (N) with the centre at (x, z) (m) over a profile: casts the rays, solves the tip
  * LCP exactly, sums eq. 1. dfz_dz (N/m, may be NULL) is the exact derivative of F_z on the
- * current piece (active set and hit segments fixed). */
+ * current piece (active set and hit segments fixed). TIRENV_ERANGE if the ground has a
+ * feature narrower than the ray spacing at its distance that reaches into the tread between
+ * two rays unseen (a needle between the elements: a real tread would rest on it; the model
+ * cannot see it); tirenv_springs_refusal says where and how wide. */
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *p, double x, double z,
                           double *fx, double *fz, double *dfz_dz, size_t *contacts);
+
+/* Why the last tirenv_springs_forces call returned TIRENV_ERANGE: the position, the feature's
+ * width, its distance from the centre and the ray spacing there; cleared if it did not. */
+void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag);
 
 /* Full-length tip state of the last tirenv_springs_forces call, into caller arrays of
  * tirenv_springs_size() entries (any may be NULL): penetration d_i (m), tip deflection w_i (m),

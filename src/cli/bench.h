@@ -5,6 +5,16 @@
 
 #include "cli/cli.h"
 
+/* What tirenv bench reports: the human table (cli_bench_say, printf-like; silent with --json)
+ * and every figure by name (cli_bench_figure: one number each, printed as one JSON object
+ * with --json). */
+void cli_bench_say(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+void cli_bench_figure(const char *name, double value);
+
 /* The ride over the bench road (profile road, centre positions x[0..n-1] on a uniform grid)
  * with the default tractor, point / cam / nn (skipped if nn is NULL) / springs, printing the
  * real-time factor of each; best of repeat. */

@@ -41,10 +41,11 @@ int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const ti
     double *w[2] = {malloc(n * sizeof(double)), malloc(n * sizeof(double))};
     tirenv_ride_sample *out = malloc(n_out * sizeof *out);
     int status = w[0] && w[1] && out ? TIRENV_OK : TIRENV_ENOMEM;
-    printf("\nride: the default tractor (data/vehicles/tractor.veh, this tire on both axles) "
+    cli_bench_say("\nride: the default tractor (data/vehicles/tractor.veh, this tire on both axles) "
            "over the road at\n%.0f km/h, %.1f s simulated at %g ms (RK4); inputs of both axles "
            "+ integration, best of %ld\n", s.speed * 3.6, s.duration, 1e3 * s.dt, repeat);
-    printf("  %-10s %10s %10s %10s %10s %8s\n", "model", "inputs_s", "ode_s", "x_real",
+    cli_bench_figure("ride_simulated_s", s.duration);
+    cli_bench_say("  %-10s %10s %10s %10s %10s %8s\n", "model", "inputs_s", "ode_s", "x_real",
            "target", "");
     for (size_t i = 0; i < sizeof models / sizeof models[0] && !status; ++i) {
         if (strcmp(models[i], "nn") == 0 && !nn)
@@ -64,7 +65,14 @@ int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const ti
         if (!status) {
             const double factor = s.duration / (t_in + t_ode);
             const int targeted = strcmp(models[i], "cam") == 0 || strcmp(models[i], "nn") == 0;
-            printf("  %-10s %10.3f %10.3f %10.0f %10s %8s\n", models[i], t_in, t_ode, factor,
+            char key[64];
+            snprintf(key, sizeof key, "ride_%s_inputs_s", models[i]);
+            cli_bench_figure(key, t_in);
+            snprintf(key, sizeof key, "ride_%s_ode_s", models[i]);
+            cli_bench_figure(key, t_ode);
+            snprintf(key, sizeof key, "ride_%s_x_real", models[i]);
+            cli_bench_figure(key, factor);
+            cli_bench_say("  %-10s %10.3f %10.3f %10.0f %10s %8s\n", models[i], t_in, t_ode, factor,
                    targeted ? "100" : "-", !targeted ? "" : factor >= ride_target ? "met"
                                                                                   : "missed");
         }

@@ -1,7 +1,9 @@
 /* tirenv bench: wall time of the models and of the springs model's equilibrium solvers on one
  * fixed sweep, so that figures from different machines and versions can be compared.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <jansson.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli/bench.h"
+#include "tirenv/nn.h"
 #include "tirenv/road.h"
 #include "tirenv/train.h"
 
@@ -17,16 +20,37 @@ static const double bench_l_c = 0.38, cleat_L = 0.30, cleat_H = 0.10;  /* m */
 static const double sweep_from = -1.0, sweep_dx = 0.001;                /* m */
 enum { SWEEP_N = 1501 };
 
+/* The figures of one run, by name, for --json; the table goes to stdout unless --json. */
+static json_t *figures;
+static int as_json;
+
+void cli_bench_say(const char *fmt, ...)
+{
+    if (as_json)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+}
+
+void cli_bench_figure(const char *name, double value)
+{
+    if (figures && isfinite(value))
+        json_object_set_new(figures, name, json_real(value));
+}
+
 static const struct {
     const char *label;
     const char *model;
     tirenv_eq_method method;
+    const char *key; /* figure names: <key>_cleat_pos_per_s, <key>_evals_per_pos, ... */
 } cases[] = {
-    {"rigid", "rigid", TIRENV_EQ_NEWTON},
-    {"springs newton", "springs", TIRENV_EQ_NEWTON},
-    {"springs secant", "springs", TIRENV_EQ_SECANT},
-    {"springs brent", "springs", TIRENV_EQ_BRENT},
-    {"ring", "ring", TIRENV_EQ_NEWTON},
+    {"rigid", "rigid", TIRENV_EQ_NEWTON, "rigid"},
+    {"springs newton", "springs", TIRENV_EQ_NEWTON, "springs"},
+    {"springs secant", "springs", TIRENV_EQ_SECANT, "springs_secant"},
+    {"springs brent", "springs", TIRENV_EQ_BRENT, "springs_brent"},
+    {"ring newton", "ring", TIRENV_EQ_NEWTON, "ring"},
 };
 enum { N_CASES = sizeof cases / sizeof cases[0] };
 
@@ -42,23 +66,29 @@ typedef struct {
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv bench [--repeat N] [--tire FILE] [--set KEY=VALUE]...\n"
+    fputs("usage: tirenv bench [--repeat N] [--quick] [--json] [--tire FILE] "
+          "[--set KEY=VALUE]...\n"
           "\n"
           "Times tirenv_model_envelope over a fixed sweep: contact length 0.38 m, cleat\n"
           "0.30 x 0.10 m, centre x from -1.0 to 0.5 m at 1 mm (1501 positions), for the rigid\n"
-          "model and the springs model with each equilibrium solver (newton, secant = the\n"
-          "paper's eq. 2, brent). Reports the best of N runs, single-threaded. Then the\n"
-          "rig-log import of a 10,000-sample log, read from CSV and from memory. Then the\n"
-          "road: rigid, cam and springs (contact length 0.33 m) over a 1 km ISO 8608 class C\n"
-          "road at 10 mm (seed 1), 100,001 positions, against the project's targets; and nn,\n"
-          "the network trained on the embedded data set (lm, seed 1) over the same road by\n"
-          "equivalent-cleat decomposition, h and slope, the decomposition's build timed apart.\n"
+          "model, the springs model with each equilibrium solver (newton, secant = the\n"
+          "paper's eq. 2, brent) and the ring reference tire. Reports the best of N runs,\n"
+          "single-threaded. Then the rig-log import of a 10,000-sample log, read from CSV and\n"
+          "from memory. Then the road: rigid, cam and springs (contact length 0.33 m) over a\n"
+          "1 km ISO 8608 class C road at 10 mm (seed 1), 100,001 positions, against the\n"
+          "project's targets; and nn, the network trained on the embedded data set (lm, seed 1)\n"
+          "over the same road by equivalent-cleat decomposition, h and slope, the\n"
+          "decomposition's build timed apart, and the network alone on batches of 4096 inputs.\n"
           "Last the ride: the default tractor over that road at 10 km/h with point contact,\n"
           "cam, nn and springs, against real time (best of at most 3 runs).\n"
           "The ring reference tire runs the cleat sweep too (the solver table's last row).\n"
           "\n"
           "options:\n"
-          "  --repeat N           runs per method, best kept (default 5)\n",
+          "  --repeat N           runs per method, best kept (default 5)\n"
+          "  --quick              one run each and a 100 m road: every figure in seconds,\n"
+          "                       rougher\n"
+          "  --json               print every figure as one JSON object of name: number\n"
+          "                       pairs (positions/s, seconds, ratios) instead of the tables\n",
           fp);
     cli_help_tire(fp, 0);
     fputs("  -h, --help           show this help\n", fp);
@@ -175,44 +205,62 @@ static void print_machine(void)
         fclose(fp);
     }
     if (uname(&u) == 0)
-        printf("machine: %s %s %s, %s\n", u.sysname, u.release, u.machine, cpu);
+        cli_bench_say("machine: %s %s %s, %s\n", u.sysname, u.release, u.machine, cpu);
     else
-        printf("machine: %s\n", cpu);
-    printf("note: one core, one thread; figures are single-threaded wall times "
+        cli_bench_say("machine: %s\n", cpu);
+    cli_bench_say("note: one core, one thread; figures are single-threaded wall times "
            "(CLOCK_MONOTONIC), independent of the number of cores\n");
 }
 
 static void print_table(long repeat, const bench_result r[])
 {
-    printf("\n%-16s %13s %12s %11s %10s %8s\n", "method", "positions/s", "us/position",
-           "evals mean", "evals max", "failed");
+    cli_bench_say("\n%-16s %13s %12s %11s %10s %8s\n", "method", "positions/s", "us/position",
+                  "evals mean", "evals max", "failed");
     for (size_t i = 0; i < N_CASES; ++i) {
-        if (r[i].failed == SWEEP_N)
-            printf("%-16s %13s %12s %11s %10s %8zu\n", cases[i].label, "-", "-", "-", "-",
-                   r[i].failed);
-        else
-            printf("%-16s %13.0f %12.3f %11.2f %10zu %8zu\n", cases[i].label,
-                   SWEEP_N / r[i].best, 1e6 * r[i].best / SWEEP_N, r[i].evals_mean,
-                   r[i].evals_max, r[i].failed);
+        char key[64];
+        snprintf(key, sizeof key, "%s_cleat_failed", cases[i].key);
+        cli_bench_figure(key, (double)r[i].failed);
+        if (r[i].failed == SWEEP_N) {
+            cli_bench_say("%-16s %13s %12s %11s %10s %8zu\n", cases[i].label, "-", "-", "-",
+                          "-", r[i].failed);
+            continue;
+        }
+        snprintf(key, sizeof key, "%s_cleat_pos_per_s", cases[i].key);
+        cli_bench_figure(key, SWEEP_N / r[i].best);
+        if (strcmp(cases[i].model, "rigid") != 0) {
+            snprintf(key, sizeof key, "%s_evals_per_pos", cases[i].key);
+            cli_bench_figure(key, r[i].evals_mean);
+            snprintf(key, sizeof key, "%s_evals_max", cases[i].key);
+            cli_bench_figure(key, (double)r[i].evals_max);
+        }
+        cli_bench_say("%-16s %13.0f %12.3f %11.2f %10zu %8zu\n", cases[i].label,
+                      SWEEP_N / r[i].best, 1e6 * r[i].best / SWEEP_N, r[i].evals_mean,
+                      r[i].evals_max, r[i].failed);
     }
     for (size_t i = 0; i < N_CASES; ++i) {
         if (r[i].failed == SWEEP_N)
-            printf("%s failed everywhere, %s\n", cases[i].label, r[i].first_fail);
+            cli_bench_say("%s failed everywhere, %s\n", cases[i].label, r[i].first_fail);
         else if (r[i].failed)
-            printf("%s failed at %zu of %d positions (timed position by position), first "
-                   "at x = %.4f m: %s\n",
-                   cases[i].label, r[i].failed, SWEEP_N, r[i].first_fail_x, r[i].first_fail);
+            cli_bench_say("%s failed at %zu of %d positions (timed position by position), "
+                          "first at x = %.4f m: %s\n",
+                          cases[i].label, r[i].failed, SWEEP_N, r[i].first_fail_x,
+                          r[i].first_fail);
     }
-    /* cases[1] is springs newton, cases[2] secant. */
-    printf("\nratios (best of %ld):\n", repeat);
-    if (r[1].evals_mean > 0 && r[2].evals_mean > 0)
-        printf("  springs newton / secant evaluations per position: %.3f\n",
-               r[1].evals_mean / r[2].evals_mean);
-    if (r[0].best > 0 && r[1].failed < SWEEP_N)
-        printf("  rigid / springs newton speed: %.1f x\n", r[1].best / r[0].best);
-    /* cases[4] is the ring. */
-    if (r[0].best > 0 && r[4].failed < SWEEP_N)
-        printf("  rigid / ring speed: %.1f x\n", r[4].best / r[0].best);
+    /* cases[0] is rigid, [1] springs newton, [2] secant, [4] ring. */
+    cli_bench_say("\nratios (best of %ld):\n", repeat);
+    if (r[1].evals_mean > 0 && r[2].evals_mean > 0) {
+        cli_bench_figure("springs_newton_over_secant_evals", r[1].evals_mean / r[2].evals_mean);
+        cli_bench_say("  springs newton / secant evaluations per position: %.3f\n",
+                      r[1].evals_mean / r[2].evals_mean);
+    }
+    if (r[0].best > 0 && r[1].failed < SWEEP_N) {
+        cli_bench_figure("springs_over_rigid_cleat", r[1].best / r[0].best);
+        cli_bench_say("  springs newton / rigid time: %.1f x\n", r[1].best / r[0].best);
+    }
+    if (r[0].best > 0 && r[4].failed < SWEEP_N) {
+        cli_bench_figure("ring_over_rigid_cleat", r[4].best / r[0].best);
+        cli_bench_say("  ring / rigid time: %.0f x\n", r[4].best / r[0].best);
+    }
 }
 
 /* The rig-log import (target: well under 10 ms at 10,000 samples): a springs-model
@@ -261,9 +309,13 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     }
     if (fd >= 0)
         remove(path);
-    if (!status)
-        printf("\nrig-log import of a %zu-sample log (best of %ld): read + import %.2f ms, "
-               "import alone %.2f ms\n", log.n, repeat, 1e3 * best_file, 1e3 * best_mem);
+    if (!status) {
+        cli_bench_figure("import_read_ms", 1e3 * best_file);
+        cli_bench_figure("import_ms", 1e3 * best_mem);
+        cli_bench_say("\nrig-log import of a %zu-sample log (best of %ld): read + import %.2f "
+                      "ms, import alone %.2f ms\n", log.n, repeat, 1e3 * best_file,
+                      1e3 * best_mem);
+    }
     tirenv_rig_log_free(&log);
     tirenv_model_free(m);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
@@ -271,7 +323,8 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
 
 /* The road (speed over roads): a 1 km ISO 8608 class C road at 10 mm, seed 1, and
  * the centre x = 0 .. 1000 m at 10 mm. The targets are the project's, on one core. */
-static const double road_l_c = 0.33, road_length = 1000.0, road_dx = 0.01; /* m */
+static const double road_l_c = 0.33, road_dx = 0.01; /* m */
+static double road_length = 1000.0;                    /* m; 100 with --quick */
 static const struct {
     const char *model;
     double target; /* positions/s */
@@ -286,7 +339,7 @@ enum { N_ROAD_CASES = sizeof road_cases / sizeof road_cases[0] };
  * set (which resets the warm start) before every sweep and outside the timing. */
 static int road_time(const tirenv_tire *tire, const char *model, const tirenv_profile *road,
                      size_t n, const double x[], tirenv_point pt[], long repeat,
-                     double *seconds, tirenv_diag *diag)
+                     double *seconds, double *evals, tirenv_diag *diag)
 {
     tirenv_model *m = tirenv_model_alloc(tirenv_model_type_find(model), tire);
     double load;
@@ -300,6 +353,10 @@ static int road_time(const tirenv_tire *tire, const char *model, const tirenv_pr
         status = tirenv_model_envelope(m, n, x, pt, NULL, diag);
         *seconds = fmin(*seconds, cli_wall_seconds() - t0);
     }
+    double sum = 0;
+    for (size_t k = 0; k < n && !status; ++k)
+        sum += (double)pt[k].iterations;
+    *evals = sum / (double)n;
     tirenv_model_free(m);
     return status;
 }
@@ -342,8 +399,8 @@ static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, si
 {
     if (!nn) {
         char msg[1200];
-        printf("  %-10s %13s %12.0f %8s\nnn: skipped, no network: %s\n", "nn", "-", 1e7,
-               "n/a", tirenv_diag_format(why, msg, sizeof msg));
+        cli_bench_say("  %-10s %13s %12.0f %8s\nnn: skipped, no network: %s\n", "nn", "-",
+                      1e7, "n/a", tirenv_diag_format(why, msg, sizeof msg));
         return TIRENV_OK;
     }
     double *h = malloc(n * sizeof *h), *slope = malloc(n * sizeof *slope);
@@ -370,9 +427,14 @@ static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, si
         tirenv_nn_road_free(r);
     }
     if (!status) {
-        printf("  %-10s %13.0f %12.0f %8s\n", "nn", (double)n / t_eval, 1e7,
+        cli_bench_figure("nn_road_pos_per_s", (double)n / t_eval);
+        cli_bench_figure("nn_road_h_pos_per_s", (double)n / t_h);
+        cli_bench_figure("nn_train_s", t_train);
+        cli_bench_figure("nn_road_build_ms", 1e3 * t_build);
+        cli_bench_figure("nn_road_build_first_ms", 1e3 * t_first);
+        cli_bench_say("  %-10s %13.0f %12.0f %8s\n", "nn", (double)n / t_eval, 1e7,
                (double)n / t_eval >= 1e7 ? "met" : "missed");
-        printf("nn: the network trained on the embedded data set (lm, seed 1) in %.2f s; the "
+        cli_bench_say("nn: the network trained on the embedded data set (lm, seed 1) in %.2f s; the "
                "road's equivalent-cleat\ndecomposition (%zu obstacles, opening %.2f m) built "
                "in %.2f ms (first run %.2f ms), not in the rate;\nh and slope as above, h "
                "alone %.0f positions/s\n", t_train, info.obstacles, info.width,
@@ -381,6 +443,65 @@ static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, si
     free(h);
     free(slope);
     return status;
+}
+
+/* The network alone on batches (tirenv_nn_run_batch) of 4096 inputs spread over its training
+ * ranges, a working set that stays in cache; and one input at a time. Predictions per
+ * second, the best of repeat runs of at least 0.2 s each. */
+static volatile double nn_sink;
+
+static double nn_rate(tirenv_nn *nn, int batch, const double *x, double *y, size_t n,
+                      long repeat)
+{
+    double best = 0;
+    for (long r = 0; r < repeat; ++r) {
+        size_t done = 0;
+        const double t0 = cli_wall_seconds();
+        double t;
+        do {
+            double acc = 0;
+            if (batch) {
+                tirenv_nn_run_batch(nn, n, x, y);
+                acc = y[n - 1];
+            } else {
+                for (size_t k = 0; k < n; ++k)
+                    acc += tirenv_nn_run(nn, x + 4 * k);
+            }
+            nn_sink = acc;
+            done += n;
+            t = cli_wall_seconds() - t0;
+        } while (t < 0.2);
+        best = fmax(best, (double)done / t);
+    }
+    return best;
+}
+
+static void bench_nn_batch(tirenv_nn *nn, long repeat)
+{
+    enum { N_IN = 4096 };
+    double *x = malloc(4 * N_IN * sizeof *x), *y = malloc(N_IN * sizeof *y);
+    if (!x || !y) {
+        cli_bench_say("nn batch: skipped, out of memory\n");
+    } else {
+        double lo[4], hi[4];
+        tirenv_nn_get_input_range(nn, lo, hi);
+        unsigned long long state = 0x9e3779b97f4a7c15ull;
+        for (size_t k = 0; k < 4 * N_IN; ++k) {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            const double u = (double)(state >> 11) * 0x1p-53;
+            const double a = lo[k % 4], b = hi[k % 4];
+            x[k] = isfinite(a) && isfinite(b) ? a + u * (b - a) : u;
+        }
+        const double batch = nn_rate(nn, 1, x, y, N_IN, repeat);
+        const double single = nn_rate(nn, 0, x, y, N_IN, repeat);
+        cli_bench_figure("nn_batch_per_s", batch);
+        cli_bench_figure("nn_single_per_s", single);
+        cli_bench_say("nn alone (the same network, %d inputs over its training ranges, best of "
+                      "%ld): batches %.1f M/s, one at a time %.1f M/s\n",
+                      N_IN, repeat, batch / 1e6, single / 1e6);
+    }
+    free(x);
+    free(y);
 }
 
 static int bench_road(const tirenv_tire *tire, long repeat)
@@ -401,18 +522,32 @@ static int bench_road(const tirenv_tire *tire, long repeat)
         status = TIRENV_ENOMEM;
     for (size_t k = 0; k < n && !status; ++k)
         x[k] = (double)k * road_dx;
-    printf("\nroad: ISO 8608 class %c, %.0f m at %g mm (seed %lu, %zu vertices), contact "
+    cli_bench_figure("road_positions", (double)n);
+    cli_bench_say("\nroad: ISO 8608 class %c, %.0f m at %g mm (seed %lu, %zu vertices), contact "
            "length %.2f m,\n%zu positions x = 0 .. %.0f m at %g mm, best of %ld runs\n",
            rs.road_class, road_length, 1e3 * road_dx, rs.seed, tirenv_profile_size(road),
            road_l_c, n, road_length, 1e3 * road_dx, repeat);
     /* Rows indented, so that they are not mistaken for the solver table's above. */
-    printf("  %-10s %13s %12s %8s\n", "model", "positions/s", "target", "");
+    cli_bench_say("  %-10s %13s %12s %8s\n", "model", "positions/s", "target", "");
+    double rate[N_ROAD_CASES] = {0};
     for (size_t i = 0; i < N_ROAD_CASES && !status; ++i) {
-        double t;
-        status = road_time(tire, road_cases[i].model, road, n, x, pt, repeat, &t, &diag);
-        if (!status)
-            printf("  %-10s %13.0f %12.0f %8s\n", road_cases[i].model, (double)n / t,
-                   road_cases[i].target, (double)n / t >= road_cases[i].target ? "met" : "missed");
+        double t, evals;
+        status = road_time(tire, road_cases[i].model, road, n, x, pt, repeat, &t, &evals, &diag);
+        if (status)
+            break;
+        rate[i] = (double)n / t;
+        char key[64];
+        snprintf(key, sizeof key, "%s_road_pos_per_s", road_cases[i].model);
+        cli_bench_figure(key, rate[i]);
+        if (strcmp(road_cases[i].model, "springs") == 0)
+            cli_bench_figure("springs_road_evals_per_pos", evals);
+        cli_bench_say("  %-10s %13.0f %12.0f %8s\n", road_cases[i].model, rate[i],
+                      road_cases[i].target, rate[i] >= road_cases[i].target ? "met" : "missed");
+    }
+    /* road_cases[0] is rigid, [2] springs. */
+    if (!status && rate[2] > 0) {
+        cli_bench_figure("springs_over_rigid_road", rate[0] / rate[2]);
+        cli_bench_say("  springs / rigid time over the road: %.1f x\n", rate[0] / rate[2]);
     }
     double t_train = 0;
     tirenv_diag why;
@@ -420,6 +555,8 @@ static int bench_road(const tirenv_tire *tire, long repeat)
     tirenv_nn *nn = status ? NULL : road_network(tire, &t_train, &why);
     if (!status)
         status = bench_road_nn(tire, road, n, x, repeat, nn, t_train, &why, &diag);
+    if (!status && nn)
+        bench_nn_batch(nn, repeat);
     if (!status)
         status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
     tirenv_nn_free(nn);
@@ -431,16 +568,19 @@ static int bench_road(const tirenv_tire *tire, long repeat)
 
 int cli_bench_main(int argc, char *argv[])
 {
-    enum { OPT_REPEAT = CLI_OPT_FIRST_OWN };
+    enum { OPT_REPEAT = CLI_OPT_FIRST_OWN, OPT_QUICK, OPT_JSON };
     static const struct option longopts[] = {
         CLI_TIRE_LONGOPTS,
         {"repeat", required_argument, NULL, OPT_REPEAT},
+        {"quick", no_argument, NULL, OPT_QUICK},
+        {"json", no_argument, NULL, OPT_JSON},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0},
     };
     cli_options o;
     cli_options_init(&o);
     long repeat = 5;
+    int quick = 0, json = 0, repeat_set = 0;
     int c;
     cli_getopt_reset();
     while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
@@ -454,6 +594,13 @@ int cli_bench_main(int argc, char *argv[])
                           optarg);
                 return CLI_EXIT_USAGE;
             }
+            repeat_set = 1;
+            break;
+        case OPT_QUICK:
+            quick = 1;
+            break;
+        case OPT_JSON:
+            json = 1;
             break;
         case '?':
             usage(stderr);
@@ -467,13 +614,24 @@ int cli_bench_main(int argc, char *argv[])
         cli_error("bench: unexpected argument '%s'", argv[optind]);
         return CLI_EXIT_USAGE;
     }
+    if (quick) {
+        road_length = 100.0;
+        if (!repeat_set)
+            repeat = 1;
+    }
     tirenv_tire tire;
     int code = cli_tire(&o, &tire);
     if (code)
         return code;
     tirenv_profile *prof = tirenv_profile_cleat(cleat_L, cleat_H);
-    if (!prof)
+    as_json = json;
+    figures = json_object();
+    if (!prof || !figures) {
+        tirenv_profile_free(prof);
+        json_decref(figures);
+        figures = NULL;
         return cli_fail(TIRENV_ENOMEM, NULL);
+    }
     double x[SWEEP_N];
     for (size_t k = 0; k < SWEEP_N; ++k)
         x[k] = sweep_from + (double)k * sweep_dx;
@@ -483,17 +641,32 @@ int cli_bench_main(int argc, char *argv[])
     memset(r, 0, sizeof r);
     for (size_t i = 0; i < N_CASES && !code; ++i)
         code = run_case(&tire, i, prof, x, repeat, &r[i]);
-    if (code) {
-        tirenv_profile_free(prof);
-        return code;
+    if (!code) {
+        cli_bench_figure("repeat", (double)repeat);
+        cli_bench_figure("quick", quick);
+        cli_bench_figure("cleat_positions", SWEEP_N);
+        cli_bench_say("tirenv bench: tire %s, contact length %.2f m (load %.6g N), cleat %.2f x "
+                      "%.2f m,\n%d positions x = %.3f .. %.3f m at %g mm, best of %ld runs per "
+                      "method%s\n",
+                      cli_tire_path(&o, buf, sizeof buf), bench_l_c, r[1].load, cleat_L,
+                      cleat_H, SWEEP_N, x[0], x[SWEEP_N - 1], sweep_dx * 1e3, repeat,
+                      quick ? " (--quick: rough figures)" : "");
+        print_machine();
+        print_table(repeat, r);
+        code = bench_import(&tire, prof, repeat);
     }
-    printf("tirenv bench: tire %s, contact length %.2f m (load %.6g N), cleat %.2f x %.2f m,\n"
-           "%d positions x = %.3f .. %.3f m at %g mm, best of %ld runs per method\n",
-           cli_tire_path(&o, buf, sizeof buf), bench_l_c, r[1].load, cleat_L, cleat_H, SWEEP_N,
-           x[0], x[SWEEP_N - 1], sweep_dx * 1e3, repeat);
-    print_machine();
-    print_table(repeat, r);
-    code = bench_import(&tire, prof, repeat);
     tirenv_profile_free(prof);
-    return code ? code : bench_road(&tire, repeat);
+    if (!code)
+        code = bench_road(&tire, repeat);
+    if (!code && as_json) {
+        char *text = json_dumps(figures, JSON_INDENT(2)); /* 17 digits: reads back the same */
+        if (!text)
+            code = cli_fail(TIRENV_ENOMEM, NULL);
+        else
+            printf("%s\n", text);
+        free(text);
+    }
+    json_decref(figures);
+    figures = NULL;
+    return code;
 }

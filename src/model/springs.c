@@ -3,6 +3,7 @@
 #include "tirenv/springs.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "model/springs_impl.h"
@@ -19,16 +20,32 @@ struct tirenv_springs {
     double k_ir;           /* interradial element stiffness c_b/dphi, N/m */
     double *theta, *sin_t, *cos_t;  /* element angles, rad */
     double *diag;          /* diagonal of K over all elements, N/m */
-    /* Elements outside the candidate span [a, b] have d = 0 and p = 0, so they form free chains
-     * whose effect on the span is a Schur complement, precomputed by Gaussian elimination from
+    /* Elements with d = 0 never touch (p = 0), so the free chains from either end of the
+     * tire to the first element that can touch are solved once, by Gaussian elimination from
      * each end: L_D[j] is the eliminated diagonal of element j with 0..j-1 eliminated, R_D[j]
-     * the same from the right. The chains' share of the hub forces is proportional to the end
-     * element's deflection: S_lc[a] = sum_{j<a} k_r cos(theta_j) w_j / w_a, and so on. */
-    double *L_D, *R_D, *S_lc, *S_ls, *S_rc, *S_rs;
-    /* State of the last evaluation: span [a, b] (empty if a > b), per-element arrays. */
+     * the same from the right, lq[j] = k_ir / L_D[j] and rq[j] = k_ir / R_D[j] carry a
+     * deflection outward along them. The chains' share of the hub forces is proportional to
+     * the end element's deflection: S_lc[a] = sum_{j<a} k_r cos(theta_j) w_j / w_a, and so on. */
+    double *L_D, *R_D, *lq, *rq, *S_lc, *S_ls, *S_rc, *S_rs;
+    double *ce, *cm, *cmi;  /* the closed form between pinned tips (springs_lcp.c) */
+    tirenv_springs__chains chains;
+    /* State of the last evaluation: elements [a, b] may touch (d > 0 at both ends; empty if
+     * a > b), per-element arrays. */
     size_t a, b;
-    double *d, *drho, *w, *p, *red, *work, *dd;
+    double *d, *w, *p, *dd, *dw;  /* w and dw have a spare entry before 0 and after N - 1 */
     unsigned char *active;
+    tirenv_springs__pins pins;
+    /* The rays of the last evaluation, kept for the next one at the same x on the same
+     * profile (tirenv_springs__fan_reuse): [ray_a, ray_b] were cast from (origin.x, any z). */
+    unsigned long long ray_serial;  /* profile serial; 0 = nothing kept */
+    tirenv_springs__fan_origin origin;
+    size_t ray_a, ray_b;
+    size_t *pairs, n_pairs, pairs_a, pairs_b;  /* of rays a..b, for check_unseen */
+    double *rho, *ray_s, *ray_drop, *ray_reach, *tread;
+    tirenv_springs__fan_rays rays;
+    tirenv_springs__ray_memo *memo;
+    int refused;           /* the last evaluation found ground the rays cannot see */
+    tirenv_diag refusal;   /* where, and what (when refused) */
 };
 
 static void precompute_chains(tirenv_springs *s)
@@ -41,6 +58,10 @@ static void precompute_chains(tirenv_springs *s)
     s->R_D[N - 1] = s->diag[N - 1];
     for (size_t j = N - 1; j-- > 0;)
         s->R_D[j] = s->diag[j] - kk / s->R_D[j + 1];
+    for (size_t j = 0; j < N; ++j) {
+        s->lq[j] = s->k_ir / s->L_D[j];
+        s->rq[j] = s->k_ir / s->R_D[j];
+    }
     s->S_lc[0] = s->S_ls[0] = 0;
     for (size_t a = 1; a < N; ++a) {
         const double r = s->k_ir / s->L_D[a - 1];
@@ -71,19 +92,27 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->N = 2 * s->i0 + 1;
     s->k_r = par->c_r * par->dphi;
     s->k_ir = par->c_b / par->dphi;
-    const size_t N = s->N, n_arrays = 19;
-    double *buf = calloc(n_arrays * N, sizeof *buf);
+    const size_t N = s->N, n_arrays = 20, n_tables = 5;
+    double *buf = calloc(n_arrays * N + n_tables * (N + 2), sizeof *buf);
     s->active = calloc(N, 1);
-    if (!buf || !s->active) {
+    s->pins.gap = calloc(2 * N, sizeof *s->pins.gap);
+    s->memo = calloc(N, sizeof *s->memo);
+    s->pairs = calloc(4 * N, sizeof *s->pairs);
+    if (!buf || !s->active || !s->pins.gap || !s->memo || !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
     }
-    double **arrays[] = {&s->theta, &s->sin_t, &s->cos_t, &s->diag, &s->L_D, &s->R_D,
-                         &s->S_lc, &s->S_ls, &s->S_rc, &s->S_rs, &s->d, &s->drho, &s->w,
-                         &s->p, &s->red, &s->dd, &s->work};
+    double **arrays[] = {&s->theta, &s->sin_t, &s->cos_t, &s->diag, &s->L_D, &s->R_D, &s->lq,
+                         &s->rq, &s->S_lc, &s->S_ls, &s->S_rc, &s->S_rs, &s->d, &s->p,
+                         &s->dd, &s->rho, &s->ray_s, &s->ray_drop, &s->ray_reach, &s->tread};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
-        *arrays[k] = buf + k * N;  /* work is last and takes the remaining 3*N */
+        *arrays[k] = buf + k * N;
+    double **tables[] = {&s->ce, &s->cm, &s->cmi, &s->w, &s->dw}; /* N + 2 each */
+    for (size_t k = 0; k < n_tables; ++k)
+        *tables[k] = buf + n_arrays * N + k * (N + 2);
+    s->w += 1;
+    s->dw += 1;
     for (size_t i = 0; i < N; ++i) {
         s->theta[i] = ((double)i - (double)s->i0) * par->dphi;
         s->sin_t[i] = sin(s->theta[i]);
@@ -92,6 +121,15 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
         s->diag[i] = s->k_r + neighbours * s->k_ir;
     }
     precompute_chains(s);
+    tirenv_springs__chain_tables(N, s->k_r, s->k_ir, s->ce, s->cm, s->cmi);
+    s->chains = (tirenv_springs__chains){.N = N, .k_ir = s->k_ir, .diag = s->diag,
+                                         .lq = s->lq, .rq = s->rq, .ce = s->ce, .cm = s->cm,
+                                         .cmi = s->cmi};
+    tirenv_springs__fan_rays_fill(N, s->sin_t, s->cos_t, par->R0, s->ray_s, s->ray_drop,
+                                  s->ray_reach);
+    s->rays = (tirenv_springs__fan_rays){.i0 = s->i0, .rho_max = par->R0, .sin_t = s->sin_t,
+                                         .cos_t = s->cos_t, .s = s->ray_s, .drop = s->ray_drop,
+                                         .reach = s->ray_reach};
     s->a = 1;
     s->b = 0;
     return s;
@@ -103,6 +141,9 @@ void tirenv_springs_free(tirenv_springs *s)
         return;
     free(s->theta);
     free(s->active);
+    free(s->pins.gap);
+    free(s->memo);
+    free(s->pairs);
     free(s);
 }
 
@@ -115,91 +156,205 @@ size_t tirenv_springs_size(const tirenv_springs *s) { return s->N; }
 const double *tirenv_springs_theta(const tirenv_springs *s) { return s->theta; }
 
 /* Elements that can touch the ground: a ray reaches no lower than its tip z - R0 cos(theta),
- * so it can only meet ground no higher than z_max = the highest ground within R0 if
- * cos(theta) >= (z - z_max)/R0. One extra element on each side absorbs rounding. */
-static int candidate_span(const tirenv_springs *s, const tirenv_profile *prof, double x,
-                          double z, size_t *a, size_t *b)
+ * so it can only meet ground no higher than z_max = (a bound of) the highest ground within R0
+ * on its side if cos(theta) >= (z - z_max)/R0. One extra element on each side absorbs
+ * rounding. The two bounds depend on x alone and are kept with the rays' origin. */
+static size_t side_span(const tirenv_springs *s, double gap)
 {
     const double R0 = s->par.R0;
-    const double gap = z - tirenv_profile_max_height(prof, x - R0, x + R0);
     if (gap >= R0)
         return 0;
-    size_t m = s->i0;
     if (gap > 0) {
         const double m_real = acos(gap / R0) / s->par.dphi + 1;
         if (m_real < (double)s->i0)
-            m = (size_t)m_real;
+            return (size_t)m_real;
     }
-    *a = s->i0 - m;
-    *b = s->i0 + m;
+    return s->i0;
+}
+
+static int candidate_span(const tirenv_springs *s, double z, size_t *a, size_t *b)
+{
+    const double R0 = s->par.R0;
+    const double gap_back = z - s->origin.z_max[0], gap_fwd = z - s->origin.z_max[1];
+    if (gap_back >= R0 && gap_fwd >= R0)
+        return 0;
+    *a = s->i0 - side_span(s, gap_back);
+    *b = s->i0 + side_span(s, gap_fwd);
     return 1;
+}
+
+/* Everything the rays need of x alone, found when x or the profile changes. */
+static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
+{
+    const double R0 = s->par.R0;
+    if (s->ray_serial == prof->serial && s->origin.x == x)
+        return;
+    tirenv_springs__fan_origin_at(prof, x, R0, &s->origin);
+    s->ray_serial = prof->serial;
+    s->ray_a = 1;
+    s->ray_b = 0;
+}
+
+/* The ray pairs to look between for ground the rays cannot see, from the walks. */
+static void find_pairs(tirenv_springs *s, size_t a, size_t b)
+{
+    s->n_pairs = tirenv_springs__fan_pairs(&s->origin, &s->rays, a, b, s->memo, s->pairs);
+    s->pairs_a = a;
+    s->pairs_b = b;
+}
+
+/* rho[a..b] and drho[a..b] from (origin.x, z): the rays of the last evaluation again where
+ * each provably still ends on the same face (same profile, same x), else a fresh fan. Both give
+ * the bits tirenv_springs__ray_at gives. */
+static void cast_rays(tirenv_springs *s, const tirenv_profile *prof, double z, size_t a,
+                      size_t b)
+{
+    if (s->ray_a <= a && b <= s->ray_b &&
+        tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo)) {
+        if (a != s->pairs_a || b != s->pairs_b)
+            find_pairs(s, a, b);
+        return;
+    }
+    tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+    s->ray_a = a;
+    s->ray_b = b;
+    find_pairs(s, a, b);
+}
+
+/* How far (in units of R0) ground must stand above what the rays see before it counts as a
+ * feature: far above rounding, far below the ray spacing that decides (springs_feature.c). */
+static const double feature_tol = 1e-6;
+
+/* Refuses the state just computed if ground pokes into the tread between rays that cannot see
+ * it (tirenv_springs__unseen_feature); the tread along each ray is R0 - w, with w carried
+ * out along the free chains beyond [f0, f1]. */
+static int check_unseen(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                        size_t a, size_t b, size_t f0, size_t f1)
+{
+    const double R0 = s->par.R0;
+    double *tread = s->tread;
+    if (s->n_pairs == 0)
+        return TIRENV_OK;
+    if (f0 <= f1) {
+        for (size_t i = f0; i <= f1; ++i)
+            tread[i] = R0 - s->w[i];
+        double w = s->w[f0];
+        for (size_t j = f0; j-- > a;)
+            tread[j] = R0 - (w *= s->lq[j]);
+        w = s->w[f1];
+        for (size_t j = f1 + 1; j <= b; ++j)
+            tread[j] = R0 - (w *= s->rq[j]);
+    } else {
+        for (size_t i = a; i <= b; ++i)
+            tread[i] = R0;
+    }
+    tirenv_springs__feature f;
+    if (!tirenv_springs__unseen_pairs(prof, &s->rays, x, z, s->rho, tread, s->pairs,
+                                      s->n_pairs, feature_tol * R0, &f))
+        return TIRENV_OK;
+    s->refused = 1;
+    /* The finest element angle that would see it: its angular width, if one is practical. */
+    const double angle = f.width / f.distance;
+    char remedy[160];
+    if (angle >= 1e-4)
+        snprintf(remedy, sizeof remedy, "an ELEMENT_ANGLE below %.3g rad would see it",
+                 angle);
+    else
+        snprintf(remedy, sizeof remedy, "no practical ELEMENT_ANGLE sees it; the rigid model "
+                 "follows it exactly");
+    return tirenv_error(&s->refusal, TIRENV_ERANGE, "", 0, "profile",
+                        "at x = %.9g m a feature of the ground %.3g m wide (at X = %.6g m, "
+                        "%.3g m from the centre) reaches %.3g m into the tread between two "
+                        "rays %.3g m apart that do not see it: narrower than the ray spacing, "
+                        "the springs model cannot resolve it (a real tread would rest on it); "
+                        "%s",
+                        x, f.width, f.X, f.distance, f.depth, f.spacing, remedy);
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                           double *fx, double *fz, double *dfz_dz, size_t *contacts)
 {
-    const double R0 = s->par.R0, k_r = s->k_r, k_ir = s->k_ir;
+    s->refused = 0;
+    const double R0 = s->par.R0, k_r = s->k_r;
     size_t a = 1, b = 0;
-    const int any = candidate_span(s, prof, x, z, &a, &b);
-    /* Elements leaving the span forget their contact state (the warm start). */
-    for (size_t i = s->a; i <= s->b && i < s->N; ++i)
-        if (!any || i < a || i > b)
-            s->active[i] = 0;
-    s->a = a;
-    s->b = b;
+    set_origin(s, prof, x);
+    const int any = candidate_span(s, z, &a, &b);
     *fx = *fz = 0;
     if (dfz_dz)
         *dfz_dz = 0;
     if (contacts)
         *contacts = 0;
-    if (!any)
-        return 0;
-
-    const size_t n = b - a + 1;
-    const size_t k_x = tirenv_profile__segment_at(prof, x);
-    const double g_x = tirenv_profile_height(prof, x);
-    for (size_t i = a; i <= b; ++i) {
-        const double rho = tirenv_springs__ray_at(prof, x, k_x, g_x, z, s->sin_t[i],
-                                                  s->cos_t[i], R0, &s->drho[i]);
-        s->d[i] = rho < R0 ? R0 - rho : 0;
-        s->red[i - a] = s->diag[i];
+    size_t f0 = 1, f1 = 0; /* the elements that touch: d > 0 */
+    if (any) {
+        cast_rays(s, prof, z, a, b);
+        double *d = s->d;
+        const double *rho = s->rho;
+        for (size_t i = a; i <= b; ++i)
+            d[i] = rho[i] < R0 ? R0 - rho[i] : 0;
+        for (f0 = a; f0 <= b && !(d[f0] > 0); ++f0)
+            ;
+        for (f1 = b; f1 > f0 && !(d[f1] > 0); --f1)
+            ;
+        if (f0 > b)
+            f1 = 0;
     }
-    if (a > 0)
-        s->red[0] -= k_ir * k_ir / s->L_D[a - 1];
-    if (b + 1 < s->N)
-        s->red[n - 1] -= k_ir * k_ir / s->R_D[b + 1];
+    /* Elements that cannot touch now forget their contact state (the warm start); inside
+     * [f0, f1] the LCP does it. */
+    if (s->a <= s->b) {
+        for (size_t i = s->a; i <= s->b && i < f0; ++i)
+            s->active[i] = 0;
+        for (size_t i = f1 + 1 > s->a ? f1 + 1 : s->a; i <= s->b; ++i)
+            s->active[i] = 0;
+    }
+    s->a = f0;
+    s->b = f1;
+    if (f0 > f1) {
+        s->pins.count = 0;
+        return any ? check_unseen(s, prof, x, z, a, b, f0, f1) : TIRENV_OK;
+    }
 
     size_t passes;
-    const int status = tirenv_springs__lcp(n, s->red, k_ir, s->d + a, s->w + a, s->p + a,
-                                           s->active + a, s->work, LCP_MAX_PASSES, &passes);
+    const int status = tirenv_springs__lcp_pinned(&s->chains, f0, f1, s->d, s->w, s->p,
+                                                  s->active, &s->pins, LCP_MAX_PASSES,
+                                                  &passes);
     if (status)
         return status;
 
-    /* Eq. 1 and its horizontal counterpart; only the radial springs load the hub. */
-    double sum_c = s->w[a] * s->S_lc[a] + s->w[b] * s->S_rc[b];
-    double sum_s = s->w[a] * s->S_ls[a] + s->w[b] * s->S_rs[b];
-    size_t in_contact = 0;
-    for (size_t i = a; i <= b; ++i) {
+    /* Eq. 1 and its horizontal counterpart; only the radial springs load the hub. The free
+     * chains beyond [f0, f1] carry w[f0] S_lc[f0] and w[f1] S_rc[f1]. */
+    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
+    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
+    for (size_t i = f0; i <= f1; ++i) {
         sum_c += k_r * s->w[i] * s->cos_t[i];
         sum_s += k_r * s->w[i] * s->sin_t[i];
-        in_contact += s->active[i];
     }
     *fz = sum_c;
     *fx = -sum_s;
     if (contacts)
-        *contacts = in_contact;
+        *contacts = s->pins.count;
     if (dfz_dz) {
-        /* d(d_i)/dz = -d(rho_i)/dz on the active elements; the same factorisation gives dw. */
-        double *dd = s->dd + a, *dw = s->red; /* red is free again after the LCP */
-        for (size_t i = a; i <= b; ++i)
-            dd[i - a] = -s->drho[i];
-        tirenv_springs__lcp_tangent(n, k_ir, dd, s->active + a, s->work, dw);
-        double sum = dw[0] * s->S_lc[a] + dw[n - 1] * s->S_rc[b];
-        for (size_t i = a; i <= b; ++i)
-            sum += k_r * dw[i - a] * s->cos_t[i];
+        /* d(d_i)/dz = -d(rho_i)/dz on the pinned elements; the same closed form gives dw. */
+        if (s->pins.count > 0)
+            for (size_t i = s->pins.first; i <= s->pins.last; ++i)
+                if (s->active[i])
+                    s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
+        tirenv_springs__pinned_solve(&s->chains, f0, f1, &s->pins, s->dd, s->dw);
+        double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+        for (size_t i = f0; i <= f1; ++i)
+            sum += k_r * s->dw[i] * s->cos_t[i];
         *dfz_dz = sum;
     }
-    return 0;
+    return check_unseen(s, prof, x, z, a, b, f0, f1);
+}
+
+void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag)
+{
+    if (!diag)
+        return;
+    if (s->refused)
+        *diag = s->refusal;
+    else
+        tirenv_diag_clear(diag);
 }
 
 void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double p[])

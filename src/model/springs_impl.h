@@ -17,6 +17,107 @@ double tirenv_springs__ray(const tirenv_profile *p, double x, double z, double s
 double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, double g, double z,
                               double sin_t, double cos_t, double rho_max, double *drho_dz);
 
+/* What one ray of a fan found, kept so that the next cast from the same x at another height
+ * can reuse it (tirenv_springs__fan_reuse). */
+typedef struct {
+    long j;         /* the vertex that ended the walk (-1 or n: it ran off the profile) */
+    int kind;       /* how it ended (springs_ray.c) */
+    double z_low;   /* the walk's path holds for every centre height above this, m */
+    double drho;    /* d(rho)/dz on the face it ends on, m/m; NAN until asked for */
+} tirenv_springs__ray_memo;
+
+/* Everything a fan of rays needs of its centre's x, found once per x. */
+typedef struct {
+    double x;       /* m */
+    double g;       /* ground height at x, m */
+    long first[2];  /* first vertex strictly ahead of x backward [0] and forward [1] */
+    double tol;     /* rounding allowance of the reuse test (without the |z| part), m */
+    double z_max[2];  /* bounds of the ground within rho_max behind [0] and ahead [1], m */
+} tirenv_springs__fan_origin;
+
+void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho_max,
+                                   tirenv_springs__fan_origin *o);
+
+/* A fan's rays: ray i points along (sin_t[i], -cos_t[i]); i0 straight down, the others' angles
+ * growing monotonically away from it on either side; s, drop and reach from
+ * tirenv_springs__fan_rays_fill, the per-ray constants of the walk. */
+typedef struct {
+    size_t i0;
+    double rho_max;  /* m */
+    const double *sin_t, *cos_t, *s, *drop, *reach;
+} tirenv_springs__fan_rays;
+
+/* s = |sin_t|, drop = cos_t / s, reach = rho_max s for n rays. */
+void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
+                                   double rho_max, double s[], double drop[], double reach[]);
+
+/* Casts the rays a..b (a <= i0 <= b) from (o->x, z): rho[i] as tirenv_springs__ray_at gives
+ * it, bit for bit. Each ray's walk resumes where the previous ray's stopped (a ray turned
+ * further from the vertical lies above its neighbour at every distance along the ground, so
+ * it cannot cross the ground before where the neighbour did), so a fan costs O(rays +
+ * vertices) instead of O(rays x vertices). memo[a..b] records each walk, for
+ * tirenv_springs__fan_drho and tirenv_springs__fan_reuse. */
+void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                         const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
+                         double rho[], tirenv_springs__ray_memo memo[]);
+
+/* d(rho)/dz of ray i with a finite rho, from its memo: what tirenv_springs__ray_at gives
+ * (computed once per memo, kept in it). */
+double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                size_t i, tirenv_springs__ray_memo *m);
+
+/* Recomputes rho[a..b] at a new centre height z from the walks recorded in memo[a..b] (from
+ * the same profile and origin), where each ray provably still ends on the same face: its new
+ * first crossing is found by the same arithmetic, so the result equals a fresh
+ * tirenv_springs__fan bit for bit, and the memos stay valid. Returns 0, with nothing
+ * guaranteed in rho, if some ray may have changed face; then call tirenv_springs__fan. */
+int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
+                              double rho[], const tirenv_springs__ray_memo memo[]);
+
+/* A feature of the ground narrower than the ray spacing (springs_feature.c). */
+typedef struct {
+    double X, Z;      /* its highest point, m */
+    double width;     /* its width where it is inside the tread, m */
+    double rise;      /* how far it stands above that line, m */
+    double depth;     /* how far it reaches into the tread, m */
+    double distance;  /* from the centre, m */
+    double spacing;   /* the rays' spacing at that distance, m */
+} tirenv_springs__feature;
+
+/* Ground that pokes into the tread between two rays a..b of a fan from (x, z) while neither
+ * ray meets it, nor only the one ray between two others (on one side, or the straight-down
+ * ray between its neighbours): a feature narrower than the ray spacing, which the elements cannot see (a real, continuous tread rests on it). rho[i] is
+ * ray i's first crossing (INFINITY: none within rho_max), tread[i] the tread's distance from
+ * the centre along ray i (m). A feature counts if it rises from and falls back to the line
+ * joining what the rays on either side of it see (a crossing, or the ground under the tip of
+ * a ray that meets none within rho_max) between them, stands more than tol above that line
+ * and reaches deeper into the tread than the rays' spacing there (and than tol): shallower
+ * ones change the answer by less than the model's own discretisation error, a ray missing a
+ * corner by up to about a spacing. Returns 1 with *f describing the first one
+ * found, else 0. O(rays + vertices between them). Usable by any model casting a fan of rays
+ * (the ring: its belt's radius along each ray as tread). */
+int tirenv_springs__unseen_feature(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                   double x, double z, size_t a, size_t b, const double rho[],
+                                   const double tread[], double tol,
+                                   tirenv_springs__feature *f);
+
+/* The pairs of rays (k, m) = (pairs[2q], pairs[2q+1]) that tirenv_springs__unseen_feature
+ * must look between, given the walks of a fan (memo[a..b]): neighbours or rays two apart on
+ * one side whose anchors may have three vertices or more between them (fewer cannot hold a
+ * feature). pairs
+ * has room for 2 (b - a + 1) pairs; returns their number. O(rays); the same for every height
+ * the memo is reused at. */
+size_t tirenv_springs__fan_pairs(const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t a, size_t b,
+                                 const tirenv_springs__ray_memo memo[], size_t pairs[]);
+
+/* tirenv_springs__unseen_feature over those pairs only. */
+int tirenv_springs__unseen_pairs(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                 double x, double z, const double rho[], const double tread[],
+                                 const size_t pairs[], size_t n_pairs, double tol,
+                                 tirenv_springs__feature *f);
+
 /* A tridiagonal obstacle problem K w = p, w >= d, p >= 0, p.(w - d) = 0 with K given by its
  * diagonal diag[0..n-1] and constant off-diagonal -k_ir, solved by the primal-dual active
  * set method. active[] holds the starting guess (1 = w_i = d_i) and returns the final set.
@@ -30,5 +131,49 @@ int tirenv_springs__lcp(size_t n, const double diag[], double k_ir, const double
 void tirenv_springs__lcp_tangent(size_t n, double k_ir, const double dd[],
                                  const unsigned char active[], const double work[],
                                  double dw[]);
+
+/* The tip LCP of a whole tire of N elements (k_r on the diagonal plus k_ir per neighbour,
+ * -k_ir between neighbours) solved in closed form between pinned tips: a free element's
+ * deflection follows from the two nearest pinned tips (or one pinned tip and a free end)
+ * alone, so each pass of the active-set method is a few multiplications per element with no
+ * division and no serial chain. The tables depend only on N, k_r and k_ir. */
+typedef struct {
+    size_t N;
+    double k_ir;
+    const double *diag;  /* N: the diagonal of K, N/m */
+    const double *lq;    /* N: w_j = lq[j] w_{j+1} when 0..j are free */
+    const double *rq;    /* N: w_j = rq[j] w_{j-1} when j..N-1 are free */
+    const double *ce;    /* N+2: exp(-k mu), cosh(mu) = 1 + k_r / (2 k_ir) */
+    const double *cm;    /* N+2: 1 - exp(-2 k mu) */
+    const double *cmi;   /* N+2: 1 / cm[k] (k >= 1) */
+} tirenv_springs__chains;
+
+/* Fills the tables ce, cm, cmi (N+2 entries each) for tirenv_springs__chains. */
+void tirenv_springs__chain_tables(size_t N, double k_r, double k_ir, double ce[], double cm[],
+                                  double cmi[]);
+
+/* An active set over [f0, f1]: count pinned elements from first to last, and the n_gaps
+ * pairs of neighbouring pins gap[2k] < gap[2k+1] with free elements between them. gap holds
+ * room for N pairs. */
+typedef struct {
+    size_t count, first, last, n_gaps;
+    size_t *gap;
+} tirenv_springs__pins;
+
+/* The LCP with d[i] = 0 outside [f0, f1] (d[f0] > 0 and d[f1] > 0): only elements in
+ * [f0, f1] can touch, so the active set lives there. Arrays are indexed by element over the
+ * whole tire; only [f0, f1] of d, p and active and [f0 - 1, f1 + 1] of w are read or written
+ * (w must have room for w[-1] and w[N]). active[] holds the starting guess and returns the
+ * final set, also described in *P. */
+int tirenv_springs__lcp_pinned(const tirenv_springs__chains *c, size_t f0, size_t f1,
+                               const double d[], double w[], double p[],
+                               unsigned char active[], tirenv_springs__pins *P,
+                               size_t max_passes, size_t *passes);
+
+/* The deflections over [f0, f1] for values v[] on the pinned elements of P (the same closed
+ * form as the LCP's; v is read over [P->first, P->last]): dw for a change dd of the obstacle
+ * when v = dd. */
+void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, size_t f1,
+                                  const tirenv_springs__pins *P, const double v[], double w[]);
 
 #endif

@@ -10,10 +10,22 @@ static void *springs_alloc(const tirenv_tire *tire)
 
 static void springs_free(void *elem) { tirenv_springs_free(elem); }
 
+/* The force callback carries no diagnostic, so why an evaluation was refused (ground the
+ * rays cannot see) travels from the callback to springs_eval, on the same thread, here. */
+static _Thread_local struct {
+    int set;
+    tirenv_diag diag;
+} refusal;
+
 static int springs_forces(void *elem, const tirenv_profile *p, double x, double z, double *fx,
                           double *fz, double *dfz_dz, size_t *contacts)
 {
-    return tirenv_springs_forces(elem, p, x, z, fx, fz, dfz_dz, contacts);
+    const int status = tirenv_springs_forces(elem, p, x, z, fx, fz, dfz_dz, contacts);
+    if (status == TIRENV_ERANGE) {
+        tirenv_springs_refusal(elem, &refusal.diag);
+        refusal.set = 1;
+    }
+    return status;
 }
 
 /* docs/models.md section 1: the springs model's contact length is the chord of the free circle at
@@ -51,6 +63,21 @@ static void *springs_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &springs_ops);
 }
 
-static const tirenv_model_type springs_type =
-    TIRENV_DEFORMABLE_TYPE("springs", springs_model_alloc);
+static int springs_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    refusal.set = 0;
+    const int status = tirenv_deformable_eval(state, x, out, diag);
+    if (status == TIRENV_ERANGE && refusal.set && diag)
+        *diag = refusal.diag;
+    return status;
+}
+
+/* TIRENV_DEFORMABLE_TYPE with its own eval, for the message above. */
+static const tirenv_model_type springs_type = {
+    .name = "springs", .alloc = springs_model_alloc, .free = tirenv_deformable_free,
+    .flat = tirenv_deformable_flat,
+    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
+    .set = tirenv_deformable_set, .eval = springs_eval,
+    .set_profile = tirenv_deformable_set_profile,
+};
 const tirenv_model_type *tirenv_model_springs = &springs_type;

@@ -2,14 +2,115 @@
  * "geometric penetration"). */
 #include "model/springs_impl.h"
 
+#include <float.h>
 #include <math.h>
 #include "profile/profile_impl.h"
+
+/* How a walk ended, at vertex j: */
+enum {
+    RAY_HIT,   /* f(j) <= 0: the first crossing lies on the segment ending at j */
+    RAY_WALL,  /* the same on a vertical wall: rho does not depend on z */
+    RAY_REACH, /* f(j) > 0 but j lies beyond the ray's reach: no crossing */
+    RAY_END,   /* every vertex passed: the flat extension past the last one decides */
+    RAY_DOWN,  /* the ray straight down (no walk) */
+    RAY_NONE   /* the centre on or below the ground: nothing to reuse */
+};
 
 /* The ground is a graph z = g(X) with vertical walls and the centre lies above it, so walking
  * from the centre along X in the ray's direction, the first vertex where the ray is at or below
  * the ground closes the segment that holds the first crossing: f(X) = ray height - ground is
- * linear between vertices. Most rays hit the segment under the centre, so this is O(1) per ray
- * after one O(log n) search. */
+ * linear between vertices. The walk starts at vertex j, whose predecessor on the walk (the
+ * centre if j is first_j, the first vertex ahead of x, else vertex j - dir) is known to lie
+ * above the ground with everything before it. *f_min takes the minimum of f over every point
+ * passed (all of them strictly before the vertex that ends the walk); it is what bounds how far
+ * the centre may sink before the walk could end elsewhere. s = |sin_t|, drop = cos_t / s (the
+ * ray's descent per metre of walk) and reach = rho_max s (the walk length of the whole ray)
+ * come from the caller. The slope of the face hit is left to slope_drho: most rays of a fan
+ * never need it. */
+static inline double walk(const tirenv_profile *p, double x, double z, double f0, long first_j,
+                          long j, int dir, double s, double drop, double reach, double cos_t,
+                          double rho_max, long *j_end, int *kind, double *f_min)
+{
+    const double *X = p->x, *Z = p->z;
+    const long n = (long)p->n;
+    double a_prev, f_prev;                  /* walk distance and f at the last check point */
+    if (j == first_j) {
+        a_prev = 0;
+        f_prev = f0;
+    } else {
+        const long jp = j - dir;
+        a_prev = dir * (X[jp] - x);
+        f_prev = z - a_prev * drop - Z[jp];
+    }
+    double fm = f_prev < *f_min ? f_prev : *f_min;
+    for (; j >= 0 && j < n; j += dir) {
+        const double a = dir * (X[j] - x);
+        const double f = z - a * drop - Z[j];
+        if (f <= 0) {
+            *j_end = j;
+            *f_min = fm;
+            if (a == a_prev) {              /* a vertical wall: rho does not depend on z */
+                *kind = RAY_WALL;
+                return a <= reach ? a / s : INFINITY;
+            }
+            *kind = RAY_HIT;
+            const double a_hit = a_prev + f_prev * (a - a_prev) / (f_prev - f);
+            return a_hit > reach ? INFINITY : a_hit / s;
+        }
+        if (a > reach) {                    /* f(j) > 0 is checked again on reuse */
+            *j_end = j;
+            *kind = RAY_REACH;
+            *f_min = fm;
+            return INFINITY;
+        }
+        fm = f < fm ? f : fm;
+        a_prev = a;
+        f_prev = f;
+    }
+    *j_end = j;
+    *kind = RAY_END;
+    *f_min = fm;
+    /* Past the last vertex the ground is flat at the end height, and f > 0 at a_prev. */
+    if (cos_t <= 0)
+        return INFINITY;
+    const double rho = (z - Z[dir > 0 ? n - 1 : 0]) / cos_t;
+    return rho > rho_max ? INFINITY : rho;
+}
+
+/* d(rho)/dz of a ray whose walk ended at vertex j in the way kind, with rho finite: on a face
+ * of slope dZ/dX, rho (cos_t + sin_t slope) = z - (the face's height under the centre). */
+static double slope_drho(const tirenv_profile *p, long j, int dir, int kind, double sin_t,
+                         double cos_t)
+{
+    const double *X = p->x, *Z = p->z;
+    const long n = (long)p->n;
+    switch (kind) {
+    case RAY_HIT: {
+        const long jp = j - dir;            /* the hit segment is [jp, j]; -1 or n: flat */
+        const double slope = jp >= 0 && jp < n ? (Z[j] - Z[jp]) / (X[j] - X[jp]) : 0;
+        return 1 / (cos_t + sin_t * slope);
+    }
+    case RAY_END:
+        return 1 / cos_t;
+    case RAY_DOWN:
+        return 1;
+    default:                                /* a wall, or no crossing */
+        return 0;
+    }
+}
+
+/* First vertex strictly ahead of x in each direction, given k = segment_at(x). */
+static long first_vertex(const tirenv_profile *p, double x, size_t k, int dir)
+{
+    const double *X = p->x;
+    if (dir > 0)
+        return X[k] <= x ? (long)k + 1 : (long)k;
+    long j = X[k] < x ? (long)k : (long)k - 1;
+    while (j >= 0 && X[j] >= x)
+        --j;
+    return j;
+}
+
 double tirenv_springs__ray(const tirenv_profile *p, double x, double z, double sin_t,
                            double cos_t, double rho_max, double *drho_dz)
 {
@@ -19,12 +120,11 @@ double tirenv_springs__ray(const tirenv_profile *p, double x, double z, double s
 }
 
 /* The walk itself; k and g depend on x alone, so a caller casting many rays from one centre
- * finds them once (two binary searches saved per ray). */
+ * finds them once (two binary searches saved per ray). Most rays hit the segment under the
+ * centre, so this is O(1) per ray after one O(log n) search. */
 double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, double g, double z,
                               double sin_t, double cos_t, double rho_max, double *drho_dz)
 {
-    const double *X = p->x, *Z = p->z;
-    const size_t n = p->n;
     const double f0 = z - g;
     *drho_dz = 0;
     if (f0 <= 0)
@@ -35,46 +135,275 @@ double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, doubl
     }
     const int dir = sin_t > 0 ? 1 : -1;
     const double s = fabs(sin_t);
-    const double drop = cos_t / s;          /* ray descent per metre of walk */
-    const double reach = rho_max * s;       /* walk length of the whole ray */
-
-    /* First vertex strictly ahead of x in the walking direction. */
-    long j;
-    if (dir > 0) {
-        j = X[k] <= x ? (long)k + 1 : (long)k;
-    } else {
-        j = X[k] < x ? (long)k : (long)k - 1;
-        while (j >= 0 && X[j] >= x)
-            --j;
-    }
-    double a_prev = 0, f_prev = f0;         /* walk distance and f at the last check point */
-    for (; j >= 0 && j < (long)n; j += dir) {
-        const double a = dir * (X[j] - x);
-        const double f = z - a * drop - Z[j];
-        if (f <= 0) {
-            if (a == a_prev) {              /* a vertical wall: rho does not depend on z */
-                return a <= reach ? a / s : INFINITY;
-            }
-            const double a_hit = a_prev + f_prev * (a - a_prev) / (f_prev - f);
-            if (a_hit > reach)
-                return INFINITY;
-            const long jp = j - dir;        /* the hit segment is [jp, j]; -1 or n: flat */
-            const double slope =
-                jp >= 0 && jp < (long)n ? (Z[j] - Z[jp]) / (X[j] - X[jp]) : 0;
-            *drho_dz = 1 / (cos_t + sin_t * slope);
-            return a_hit / s;
-        }
-        if (a > reach)
-            return INFINITY;
-        a_prev = a;
-        f_prev = f;
-    }
-    /* Past the last vertex the ground is flat at the end height, and f > 0 at a_prev. */
-    if (cos_t <= 0)
-        return INFINITY;
-    const double rho = (z - Z[dir > 0 ? n - 1 : 0]) / cos_t;
-    if (rho > rho_max)
-        return INFINITY;
-    *drho_dz = 1 / cos_t;
+    const long first_j = first_vertex(p, x, k, dir);
+    long j_end;
+    int kind;
+    double f_min = f0;
+    const double rho = walk(p, x, z, f0, first_j, first_j, dir, s, cos_t / s, rho_max * s,
+                            cos_t, rho_max, &j_end, &kind, &f_min);
+    if (isfinite(rho))
+        *drho_dz = slope_drho(p, j_end, dir, kind, sin_t, cos_t);
     return rho;
+}
+
+void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
+                                   double rho_max, double s[], double drop[], double reach[])
+{
+    for (size_t i = 0; i < n; ++i) {
+        s[i] = fabs(sin_t[i]);
+        drop[i] = cos_t[i] / s[i]; /* +-infinity straight down: never used there */
+        reach[i] = rho_max * s[i];
+    }
+}
+
+/* tirenv_profile_height(p, x) given k = segment_at(p, x): the same operations, so the same
+ * bits, without the second search. */
+static double height_in(const tirenv_profile *p, double x, size_t k)
+{
+    const double *xs = p->x, *zs = p->z;
+    if (x < xs[0])
+        return zs[0];
+    if (x == xs[k] && k >= 1 && xs[k - 1] == xs[k])
+        return fmax(zs[k - 1], zs[k]);
+    if (k == p->n - 1)
+        return zs[k];
+    const double t = (x - xs[k]) / (xs[k + 1] - xs[k]);
+    return zs[k] + (zs[k + 1] - zs[k]) * t;
+}
+
+/* An upper bound of the ground over [x, x + dir len]: g, every vertex inside, and the first
+ * vertex beyond (which bounds the segment that crosses the end), whole blocks at a time from
+ * the block maxima where a block lies inside. */
+static double side_max(const tirenv_profile *p, double x, double g, long j, int dir, double len)
+{
+    const double *X = p->x, *Z = p->z, *Zb = p->z_block;
+    const long n = (long)p->n, B = TIRENV_PROFILE__BLOCK;
+    double m = g;
+    if (dir > 0) {
+        const double lim = x + len;
+        while (j < n) {
+            if (j % B == 0 && j + B < n && X[j + B] <= lim) { /* block j/B: vertices j..j+B */
+                m = fmax(m, Zb[j / B]);
+                j += B;
+                continue;
+            }
+            m = fmax(m, Z[j]);
+            if (X[j] > lim)
+                break;
+            ++j;
+        }
+    } else {
+        const double lim = x - len;
+        while (j >= 0) {
+            if (j % B == 0 && j >= B && X[j - B] >= lim) { /* block j/B - 1: j-B..j */
+                m = fmax(m, Zb[j / B - 1]);
+                j -= B;
+                continue;
+            }
+            m = fmax(m, Z[j]);
+            if (X[j] < lim)
+                break;
+            --j;
+        }
+    }
+    return m;
+}
+
+void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho_max,
+                                   tirenv_springs__fan_origin *o)
+{
+    const size_t k = tirenv_profile__segment_at(p, x);
+    o->x = x;
+    o->g = height_in(p, x, k);
+    o->first[0] = first_vertex(p, x, k, -1);
+    o->first[1] = first_vertex(p, x, k, 1);
+    o->z_max[0] = side_max(p, x, o->g, o->first[0], -1, rho_max);
+    o->z_max[1] = side_max(p, x, o->g, o->first[1], 1, rho_max);
+    /* The reuse test compares computed f = (z - a drop) - Z at two heights; each rounding is
+     * at most an ulp of |z| + a drop + |Z| <= |z| + rho_max + max |Z| for every point a walk
+     * passes (a <= reach), and the centre can sink at most by f0 <= |z| + |g|: see
+     * tirenv_springs__fan_reuse. */
+    o->tol = 8 * DBL_EPSILON * (fabs(o->g) + rho_max + p->z_abs_max);
+}
+
+/* The rounding allowance at centre height z. */
+static double fan_tol(const tirenv_springs__fan_origin *o, double z)
+{
+    return o->tol + 8 * DBL_EPSILON * fabs(z);
+}
+
+void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                         const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
+                         double rho[], tirenv_springs__ray_memo memo[])
+{
+    const double f0 = z - o->g, rho_max = r->rho_max;
+    const size_t i0 = r->i0;
+    if (!(f0 > 0)) { /* centre on or below the ground: every ray has length 0 */
+        for (size_t i = a; i <= b; ++i) {
+            rho[i] = 0;
+            memo[i] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_NONE, .z_low = INFINITY,
+                                                 .drho = 0};
+        }
+        return;
+    }
+    const double tol = fan_tol(o, z);
+    rho[i0] = f0 <= rho_max ? f0 : INFINITY;
+    memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
+    for (int side = 0; side < 2; ++side) {
+        const int dir = side ? 1 : -1;
+        const long first_j = o->first[side];
+        const size_t count = side ? b - i0 : i0 - a; /* rays on this side */
+        long j = first_j;
+        double f_min = f0, drop_prev = INFINITY, reach_prev = 0;
+        for (size_t step = 1; step <= count; ++step) {
+            const size_t i = side ? i0 + step : i0 - step;
+            const double drop = r->drop[i], reach = r->reach[i];
+            /* The resumption is exact only if this ray lies above the last at every vertex
+             * (its computed descent is no steeper) and reaches at least as far; the element
+             * layout gives both, but the computed values decide. */
+            if (!(drop <= drop_prev && reach >= reach_prev)) {
+                j = first_j;
+                f_min = f0;
+            }
+            drop_prev = drop;
+            reach_prev = reach;
+            long j_end;
+            int kind;
+            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->s[i], drop, reach, r->cos_t[i],
+                          rho_max, &j_end, &kind, &f_min);
+            memo[i] = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
+                                                 .z_low = z - (f_min - tol), .drho = NAN};
+            j = j_end;
+        }
+    }
+}
+
+double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                size_t i, tirenv_springs__ray_memo *m)
+{
+    if (isnan(m->drho)) /* the face does not change while the memo holds */
+        m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i], r->cos_t[i]);
+    return m->drho;
+}
+
+/* Why reuse is exact. Along one ray from one x, f_k(z) = (z - a_k drop) - Z_k at every point
+ * k; rounding is monotone, so the computed f_k never decreases when z grows. A walk that
+ * ended at vertex j with every earlier point above the ground (f > 0) therefore ends at j
+ * again at any higher z as long as j itself is still at or below the ray (checked by
+ * computing f_j at the new z, exactly as the walk would); at a lower z it does if the centre
+ * sank by less than the smallest earlier f, less the rounding allowance (z > z_low). The
+ * crossing on the segment ending at j is then computed from the same two points with the
+ * same operations as the walk: the same bits. The rounding allowance: with t = a drop <=
+ * rho_max for every point passed (a <= reach), the computed f at the lower height z' stays
+ * positive if z - z' < f_min - u (|z - t| + |z' - t|) - 2 u f_min (u the unit roundoff, the
+ * last term the rounding of z_low itself); 8 DBL_EPSILON (|z| + |g| + rho_max + max |Z|) =
+ * 16 u (...) exceeds that, since f_min <= f0 = z - g. */
+int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
+                              double rho[], const tirenv_springs__ray_memo memo[])
+{
+    const double *X = p->x, *Z = p->z;
+    const long n = (long)p->n;
+    const double f0 = z - o->g, x = o->x, rho_max = r->rho_max;
+    const size_t i0 = r->i0;
+    if (!(f0 > 0))
+        return 0;
+    for (size_t i = a; i <= b; ++i) {
+        const tirenv_springs__ray_memo *m = &memo[i];
+        if (!(z > m->z_low))
+            return 0;
+        const int dir = i > i0 ? 1 : -1;
+        const double s = r->s[i], drop = r->drop[i], reach = r->reach[i];
+        const long j = m->j;
+        switch (m->kind) {
+        case RAY_DOWN:
+            rho[i] = f0 <= rho_max ? f0 : INFINITY;
+            break;
+        case RAY_HIT:
+        case RAY_WALL: {
+            const double a_j = dir * (X[j] - x);
+            const double f = z - a_j * drop - Z[j];
+            if (f > 0)
+                return 0; /* the crossing moved past j */
+            if (m->kind == RAY_WALL) {
+                rho[i] = a_j <= reach ? a_j / s : INFINITY;
+                break;
+            }
+            double a_prev, f_prev;
+            if (j == o->first[i > i0]) {
+                a_prev = 0;
+                f_prev = f0;
+            } else {
+                a_prev = dir * (X[j - dir] - x);
+                f_prev = z - a_prev * drop - Z[j - dir];
+            }
+            const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
+            rho[i] = a_hit > reach ? INFINITY : a_hit / s;
+            break;
+        }
+        case RAY_REACH: {
+            const double a_j = dir * (X[j] - x);
+            if (!(z - a_j * drop - Z[j] > 0))
+                return 0; /* the ground beyond reach came up to the ray: walk again */
+            rho[i] = INFINITY;
+            break;
+        }
+        case RAY_END: {
+            const double cos_t = r->cos_t[i];
+            if (cos_t <= 0) {
+                rho[i] = INFINITY;
+                break;
+            }
+            const double rr = (z - Z[dir > 0 ? n - 1 : 0]) / cos_t;
+            rho[i] = rr > rho_max ? INFINITY : rr;
+            break;
+        }
+        default:
+            return 0;
+        }
+    }
+    return 1;
+}
+
+size_t tirenv_springs__fan_pairs(const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t a, size_t b,
+                                 const tirenv_springs__ray_memo memo[], size_t pairs[])
+{
+    /* Forward, a walk that ended at vertex j has every vertex before j at or before its
+     * anchor (springs_feature.c: its crossing, or the ground under its tip, which lies past
+     * the last vertex the walk passed) and no vertex from j on strictly before it (the
+     * crossing lies on the segment ending at j, the tip before j). So at most j_m - j_k
+     * vertices lie strictly between the anchors of an inner ray k and an outer ray m: a
+     * feature, which needs three, needs j_m - j_k >= 3. Backward the same mirrored; the
+     * straight-down ray's anchor is under x, between first[0] and first[1]. The pairs come in
+     * the order tirenv_springs__unseen_feature looks at them. */
+    const size_t i0 = r->i0;
+    size_t n = 0;
+    for (int side = 0; side < 2; ++side) {
+        const long dir = side ? 1 : -1;
+        const size_t count = side ? b - i0 : i0 - a;
+        const tirenv_springs__ray_memo *mm = memo + i0;
+        long j1 = o->first[side], j2 = j1;
+        for (size_t step = 1; step <= count; ++step) {
+            const long jm = mm[dir * (long)step].j;
+            const size_t m = side ? i0 + step : i0 - step;
+            if (dir * (jm - j1) >= 3) {
+                pairs[2 * n] = side ? m - 1 : m + 1;
+                pairs[2 * n++ + 1] = m;
+            }
+            if (step >= 2 && dir * (jm - j2) >= 3) {
+                pairs[2 * n] = side ? m - 2 : m + 2;
+                pairs[2 * n++ + 1] = m;
+            }
+            j2 = j1;
+            j1 = jm;
+        }
+    }
+    /* The two rays either side of the straight-down one: vertices j_back + 1 .. j_fwd - 1 at
+     * most lie between their anchors. */
+    if (a < i0 && i0 < b && memo[i0 + 1].j - memo[i0 - 1].j - 1 >= 3) {
+        pairs[2 * n] = i0 - 1;
+        pairs[2 * n++ + 1] = i0 + 1;
+    }
+    return n;
 }

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdalign.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -66,6 +67,8 @@ struct tirenv_profile *tirenv_profile__new(size_t n)
 
 void tirenv_profile__seal(struct tirenv_profile *p)
 {
+    static atomic_ullong next_serial = 1;
+    p->serial = atomic_fetch_add_explicit(&next_serial, 1, memory_order_relaxed);
     const size_t B = TIRENV_PROFILE__BLOCK;
     for (size_t b = 0; b < p->n_block; b++) {
         const size_t k_end = b * B + B < p->n - 1 ? b * B + B : p->n - 1;

@@ -26,6 +26,10 @@ struct tirenv_profile {
      * rounding of its lifts by them (src/model/cam_lift.c). */
     double z_abs_max;
     double slope_max;
+    /* Once sealed: a number no other profile of this process has had, so that a model may
+     * keep what it found on this profile and know it is still the same ground even when a
+     * new profile comes to sit at a freed one's address (src/model/springs.c). */
+    unsigned long long serial;
 };
 
 /* An uninitialised profile of n >= 1 vertices in one block, for generators that fill the
@@ -33,8 +37,8 @@ struct tirenv_profile {
  * tirenv_profile__seal. NULL if out of memory. */
 struct tirenv_profile *tirenv_profile__new(size_t n);
 
-/* Builds the block maxima (and z_abs_max, slope_max) from x and z, once they are final.
- * O(n). */
+/* Builds the block maxima (and z_abs_max, slope_max) from x and z, once they are final,
+ * and gives the profile its serial. O(n). */
 void tirenv_profile__seal(struct tirenv_profile *p);
 
 /* A generator's last step: validates the filled profile (tirenv_profile_validate's errors)
