@@ -22,6 +22,7 @@
 #include <time.h>
 
 #include <doublefann.h>
+#include <gsl/gsl_errno.h>
 
 #include "tirenv/dataset.h"
 #include "tirenv/model.h"
@@ -371,6 +372,7 @@ static long parse_long(const char *opt, const char *s, long min)
 
 int main(int argc, char *argv[])
 {
+    gsl_set_error_handler_off();  /* tirenv reports GSL's failures itself (tirenv/error.h) */
     const char *dir = NULL;
     size_t backprop_epochs = 200000;
     int repeats = 5, synthetic = 0;

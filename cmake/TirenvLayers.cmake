@@ -13,8 +13,7 @@ set(TIRENV_CORE_DIRS core profile model nn train ride)
 set(TIRENV_AUX_DIRS data study formats)
 
 # Every public header under include/tirenv/ belongs to exactly one layer; the check fails on a
-# header listed in neither, so a new header must be placed here (names not yet in the tree are
-# harmless: xn.h, plot.h, nn_file.h and vehicle_file.h are the core branch's). (tirenv.h, the umbrella, and
+# header listed in neither, so a new header must be placed here. (tirenv.h, the umbrella, and
 # decls.h, the declaration macros, belong to both.)
 set(TIRENV_CORE_HEADERS
   error.h profile.h road.h tire.h model.h rigid.h cam.h springs.h ring.h stream.h xn.h

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 #include "tirenv/profile.h"
 
 #define TOL 1e-15

@@ -362,7 +362,7 @@ static void check_recovers(const rig_case *c, unsigned long seed)
     rig_log g = log_make(c, seed);
     const tirenv_import_settings s = case_f_settings(c->smooth);
     tirenv_curve out;
-    tirenv_rig__info info;
+    tirenv_import_info info;
     tirenv_diag d;
     tirenv_diag_clear(&d);
     const int status = tirenv_rig__import(g.n, g.t, g.x, g.z, &s, &out, &info, &d);
@@ -429,7 +429,7 @@ static void test_automatic_half_width(void **state)
     for (int i = 0; i < 2; i++) {
         rig_log g = log_make(i ? &slow : &fast, 7);
         tirenv_curve out;
-        tirenv_rig__info info;
+        tirenv_import_info info;
         assert_int_equal(tirenv_rig__import(g.n, g.t, g.x, g.z, &s, &out, &info, NULL),
                          TIRENV_OK);
         assert_near(info.noise_se, 0.05e-3, 0, 1e-9);

@@ -53,7 +53,7 @@ static void test_flat_loads_match_prototype(void **state)
             continue;
         double fx, fz;
         assert_int_equal(tirenv_ring_forces(r, flat, 0.0, t.springs.R0 - defl, &fx, &fz, NULL,
-                                            NULL), 0);
+                                            NULL, NULL), 0);
         assert_int_equal(tirenv_ring_belt_contacts(r), 0);
         assert_true(tirenv_ring_tread_max(r) < t.ring.t_r);
         assert_near(fz, load, 5e-4, 0);
@@ -101,7 +101,7 @@ static void test_cleat_curves_match_prototype(void **state)
         tirenv_point pt;
         assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
         double fx, fz;
-        assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, NULL), 0);
+        assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, NULL, NULL), 0);
         if (tirenv_ring_belt_contacts(r) == 0) {
             worst = fmax(worst, fabs(pt.h - h));
             ++same;
@@ -156,7 +156,7 @@ static void test_thick_tread_unchanged(void **state)
         worst_h = fmax(worst_h, fabs(pt.h - h));
         worst_fx = fmax(worst_fx, fabs(pt.fx - fx_ref));
         double fx, fz;
-        assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, NULL), 0);
+        assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, NULL, NULL), 0);
         assert_int_equal(tirenv_ring_belt_contacts(r), 0);
         tread_max = fmax(tread_max, tirenv_ring_tread_max(r));
         ++rows;
@@ -303,7 +303,7 @@ static void test_contact_law(void **state)
             assert_int_equal(st, TIRENV_OK);
             double fx, fz;
             size_t contacts, belt;
-            assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, &contacts), 0);
+            assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, &contacts, NULL), 0);
             const double e_max = check_contact_law(r, &t.ring, t.springs.R0, fz, contacts, &belt);
             with_belt += belt > 0;
             at_limit += e_max > t.ring.t_r - 1e-9;
@@ -318,7 +318,7 @@ static void test_contact_law(void **state)
         for (double z = 0.62; z < 0.78; z += 0.0213) {
             double fx, fz;
             size_t contacts, belt;
-            assert_int_equal(tirenv_ring_forces(r, p, xs[ix], z, &fx, &fz, NULL, &contacts), 0);
+            assert_int_equal(tirenv_ring_forces(r, p, xs[ix], z, &fx, &fz, NULL, &contacts, NULL), 0);
             check_contact_law(r, &t.ring, t.springs.R0, fz, contacts, &belt);
             with_belt += belt > 0;
             ++checked;
@@ -360,7 +360,7 @@ static void test_window_matches_compliance(void **state)
     const double zs[] = {0.70, 0.66, 0.63};
     for (size_t iz = 0; iz < 3; ++iz) {
         double fx, fz;
-        assert_int_equal(tirenv_ring_forces(r, p, -0.0731, zs[iz], &fx, &fz, NULL, NULL), 0);
+        assert_int_equal(tirenv_ring_forces(r, p, -0.0731, zs[iz], &fx, &fz, NULL, NULL, NULL), 0);
         tirenv_ring_state(r, w, f);
         double w_max = 0, err = 0;
         for (size_t j = 0; j < M; ++j) {
@@ -398,7 +398,7 @@ static void test_blade_lifts_the_hub(void **state)
         assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
         h_min = fmin(h_min, pt.h);
         double fx, fz;
-        assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, NULL), 0);
+        assert_int_equal(tirenv_ring_forces(r, p, x, pt.z, &fx, &fz, NULL, NULL, NULL), 0);
         assert_true(tirenv_ring_belt_contacts(r) > 0);
         assert_true(tirenv_ring_tread_max(r) <= t.ring.t_r);
     }
@@ -452,13 +452,13 @@ static void test_symmetry_and_derivative(void **state)
         for (double z = 0.62; z < 0.70; z += 0.00137) {
             const double x = xs[ix], dz = 1e-5;
             double fx, F, dF, Fp, Fm, F0;
-            tirenv_ring_forces(r, p, x, z, &fx, &F, &dF, NULL);
+            tirenv_ring_forces(r, p, x, z, &fx, &F, &dF, NULL, NULL);
             const size_t belt = tirenv_ring_belt_contacts(r);
             if (F < 10)
                 continue;
-            tirenv_ring_forces(r, p, x, z + dz, &fx, &Fp, NULL, NULL);
-            tirenv_ring_forces(r, p, x, z - dz, &fx, &Fm, NULL, NULL);
-            tirenv_ring_forces(r, p, x, z, &fx, &F0, NULL, NULL);
+            tirenv_ring_forces(r, p, x, z + dz, &fx, &Fp, NULL, NULL, NULL);
+            tirenv_ring_forces(r, p, x, z - dz, &fx, &Fm, NULL, NULL, NULL);
+            tirenv_ring_forces(r, p, x, z, &fx, &F0, NULL, NULL, NULL);
             if (fabs((Fp - F0) - (F0 - Fm)) > 1e-6 * fabs(dF) * dz)
                 continue; /* a kink or jump within dz: one-sided differences disagree */
             assert_near(dF, (Fp - Fm) / (2 * dz), 0, 1e-6);
@@ -488,20 +488,20 @@ static void test_lugs_roll_with_the_tread(void **state)
     tirenv_profile *flat = flat_ground();
     const double pitch = 2 * M_PI * t.springs.R0 / 23, z = 0.641;
     double F_min = INFINITY, F_max = 0, fx, F, F_smooth0;
-    tirenv_ring_forces(smooth, flat, 0, z, &fx, &F_smooth0, NULL, NULL);
+    tirenv_ring_forces(smooth, flat, 0, z, &fx, &F_smooth0, NULL, NULL, NULL);
     for (int k = 0; k < 17; ++k) {
         /* Mid-steps: a node exactly on a lug edge would flip with the last bit of x. */
         const double x = (k + 0.5) * pitch / 17;
         double Fs;
-        tirenv_ring_forces(lugged, flat, x, z, &fx, &F, NULL, NULL);
+        tirenv_ring_forces(lugged, flat, x, z, &fx, &F, NULL, NULL, NULL);
         F_min = fmin(F_min, F);
         F_max = fmax(F_max, F);
         double F_next;
-        tirenv_ring_forces(lugged, flat, x + pitch, z, &fx, &F_next, NULL, NULL);
+        tirenv_ring_forces(lugged, flat, x + pitch, z, &fx, &F_next, NULL, NULL, NULL);
         /* Same contact one pitch on: equal but for the rounding of theta + x/R0 (~1e-16
          * relative), which 1e-9 relative of ~1e4 N covers with room. */
         assert_near(F_next, F, 1e-6, 1e-9);
-        tirenv_ring_forces(smooth, flat, x, z, &fx, &Fs, NULL, NULL);
+        tirenv_ring_forces(smooth, flat, x, z, &fx, &Fs, NULL, NULL, NULL);
         /* Flat ground, smooth tread: x does not enter at all, up to round-off. */
         assert_near(Fs, F_smooth0, 1e-6, 1e-12);
     }

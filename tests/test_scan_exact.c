@@ -21,7 +21,7 @@
 #include "tirenv/road.h"
 #include "model/cam_impl.h"
 #include "model/rigid_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* The plain scan, as rigid.c had it before the block maxima: every vertex and every sloped
  * segment's tangency within [x - R0, x + R0], left to right, plus the flat extensions. */

@@ -51,7 +51,8 @@ static void test_flat_closed_form(void **state)
             const tirenv_tire t = tire_with(R0, c_r, 0, dphi);
             tirenv_springs *s = tirenv_springs_alloc(&t.springs);
             double fx, fz;
-            assert_int_equal(tirenv_springs_forces(s, flat, 0.0123, z, &fx, &fz, NULL, NULL), 0);
+            assert_int_equal(
+                tirenv_springs_forces(s, flat, 0.0123, z, &fx, &fz, NULL, NULL, NULL), 0);
             assert_near(fz, exact, c_r * R0 * dphi * dphi * (a / 6 + sin(a)), 0);
             assert_near(fx, 0, 1e-9 * exact, 0); /* symmetric patch: no longitudinal force */
             tirenv_springs_free(s);
@@ -228,7 +229,8 @@ static void test_force_monotone_and_derivative(void **state)
         double F_prev = INFINITY;
         for (double z = 0.55; z < 0.8; z += 0.000731) {
             double fx, F, dF;
-            assert_int_equal(tirenv_springs_forces(s, p, xs[ix], z, &fx, &F, &dF, NULL), 0);
+            assert_int_equal(tirenv_springs_forces(s, p, xs[ix], z, &fx, &F, &dF, NULL, NULL),
+                             0);
             assert_true(F <= F_prev + 1e-9 * fabs(F_prev));
             assert_true(dF <= 0);
             F_prev = F;
@@ -239,9 +241,9 @@ static void test_force_monotone_and_derivative(void **state)
              * points are detected by one-sided differences disagreeing, and skipped. */
             const double h = 1e-7;
             double Fp, Fm, F0;
-            tirenv_springs_forces(s, p, xs[ix], z + h, &fx, &Fp, NULL, NULL);
-            tirenv_springs_forces(s, p, xs[ix], z - h, &fx, &Fm, NULL, NULL);
-            tirenv_springs_forces(s, p, xs[ix], z, &fx, &F0, NULL, NULL);
+            tirenv_springs_forces(s, p, xs[ix], z + h, &fx, &Fp, NULL, NULL, NULL);
+            tirenv_springs_forces(s, p, xs[ix], z - h, &fx, &Fm, NULL, NULL, NULL);
+            tirenv_springs_forces(s, p, xs[ix], z, &fx, &F0, NULL, NULL, NULL);
             const double fwd = (Fp - F0) / h, bwd = (F0 - Fm) / h;
             if (fabs(fwd - bwd) > 1e-6 * fabs(dF))
                 continue;
@@ -363,7 +365,8 @@ static void test_tips_reproduce_forces(void **state)
     double *d = malloc(n * sizeof *d), *w = malloc(n * sizeof *w), *r = malloc(n * sizeof *r);
     double fx, fz;
     size_t contacts;
-    assert_int_equal(tirenv_springs_forces(s, p, -0.0731, 0.6521, &fx, &fz, NULL, &contacts), 0);
+    assert_int_equal(
+        tirenv_springs_forces(s, p, -0.0731, 0.6521, &fx, &fz, NULL, &contacts, NULL), 0);
     tirenv_springs_tips(s, d, w, r);
     const double *theta = tirenv_springs_theta(s), k_r = t.springs.c_r * t.springs.dphi;
     double sz = 0, sx = 0;

@@ -23,7 +23,7 @@
 #include "tirenv/springs.h"
 #include "tirenv/tire.h"
 #include "model/springs_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* ---- The tip LCP ---- */
 
@@ -290,9 +290,9 @@ static void test_kept_state_is_invisible(void **state)
             const double z = 0.6 + 0.12 * gsl_rng_uniform(rng);
             double fx1, fz1, df1, fx2, fz2, df2;
             size_t c1, c2;
-            const int s1 = tirenv_springs_forces(kept, p, x, z, &fx1, &fz1, &df1, &c1);
+            const int s1 = tirenv_springs_forces(kept, p, x, z, &fx1, &fz1, &df1, &c1, NULL);
             tirenv_springs *fresh = tirenv_springs_alloc(&t.springs);
-            const int s2 = tirenv_springs_forces(fresh, p, x, z, &fx2, &fz2, &df2, &c2);
+            const int s2 = tirenv_springs_forces(fresh, p, x, z, &fx2, &fz2, &df2, &c2, NULL);
             tirenv_springs_free(fresh);
             assert_int_equal(s1, s2);
             assert_bits_equal(fz1, fz2);
@@ -337,7 +337,7 @@ static void test_needle_refused(void **state)
     tirenv_springs *s = tirenv_springs_alloc(&t.springs);
     double fx, fz, dfz;
     size_t c;
-    assert_int_equal(tirenv_springs_forces(s, needle, 0.003, 0.66, &fx, &fz, &dfz, &c),
+    assert_int_equal(tirenv_springs_forces(s, needle, 0.003, 0.66, &fx, &fz, &dfz, &c, NULL),
                      TIRENV_ERANGE);
     tirenv_springs_refusal(s, &diag);
     assert_non_null(strstr(diag.message, "1e-09 m wide"));
@@ -345,7 +345,7 @@ static void test_needle_refused(void **state)
     const double zero = 0;
     tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
     assert_non_null(flat);
-    assert_int_equal(tirenv_springs_forces(s, flat, 0.0, 0.66, &fx, &fz, &dfz, &c), 0);
+    assert_int_equal(tirenv_springs_forces(s, flat, 0.0, 0.66, &fx, &fz, &dfz, &c, NULL), 0);
     tirenv_springs_refusal(s, &diag);
     assert_int_equal(diag.message[0], '\0');
     tirenv_profile_free(flat);

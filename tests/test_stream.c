@@ -80,7 +80,8 @@ static int stream_file(tirenv_model *m, const char *path, double x_from, double 
     int status = tirenv_profile_reader_open(path, &in, d);
     if (status)
         return status;
-    status = tirenv_model_stream(m, in, x_from, x_to, dx, 4123.5, collect_point, c, stats, d);
+    status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx, 4123.5,
+                                 collect_point, c, stats, d);
     tirenv_profile_reader_free(in);
     return status;
 }

@@ -30,7 +30,8 @@
 #include <unistd.h>
 #include <jansson.h>
 
-#include "tirenv/train.h"
+#include "tirenv/dataset.h"
+#include "tirenv/nn_file.h"
 
 enum { POINTS = 21, MAX_SAMPLES = 28 * POINTS };
 

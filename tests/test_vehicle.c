@@ -1,7 +1,7 @@
 /* The vehicle of the ride simulation: default, check, static tire loads, and its property
  * file (reader, --set, writer). SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
-#include "tirenv/vehicle.h"
+#include "tirenv/vehicle_file.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,11 +1,12 @@
 /* tirenv: measured or simulated enveloping curves, approach half, on an x_N grid
- * (docs/models.md section 1), and the normalised position itself. */
+ * (docs/models.md section 1; x_N itself is in xn.h), and their CSV format. */
 #ifndef TIRENV_CURVE_H
 #define TIRENV_CURVE_H
 
 #include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
+#include "tirenv/xn.h"  /* x_N itself, an equation of the core */
 
 TIRENV_BEGIN_DECLS
 
@@ -21,13 +22,6 @@ typedef struct {
 int tirenv_curve_alloc(tirenv_curve *c, size_t n);
 /* Frees the arrays and zeroes c; NULL or an empty curve is a no-op. */
 void tirenv_curve_free(tirenv_curve *c);
-
-/* x_0 of docs/models.md section 1 (m, obstacle coordinates): where the free circle of radius R0 at
- * the chord height sqrt(R0^2 - (l_c/2)^2) touches the leading top corner (-L/2, H). NaN if
- * the corner is out of reach. */
-double tirenv_xN_origin(double R0, double l_c, double L, double H);
-/* x_N = (x - x_0)/(0 - x_0) for the obstacle centred at 0. */
-double tirenv_xN(double x, double x_0);
 
 /* CSV "x_N,x_m,h_m" (the import's output, the data set's curve files); '#' lines are
  * comments. The write is atomic and starts with comment (may be NULL) as '#' lines. */

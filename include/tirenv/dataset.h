@@ -9,15 +9,11 @@
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 #include "tirenv/tire.h"
+#include "tirenv/train.h"
 
 TIRENV_BEGIN_DECLS
 
-typedef enum {
-    TIRENV_SPLIT_TRAIN = 0,   /* fits and trains on it */
-    TIRENV_SPLIT_CONTROL,     /* early stopping / model selection */
-    TIRENV_SPLIT_VALIDATION   /* reported only, never seen in training */
-} tirenv_split;
-
+/* A case's split (tirenv_split, train.h) by its manifest name: */
 /* "train", "control", "validation". */
 const char *tirenv_split_name(tirenv_split split);
 
@@ -76,6 +72,13 @@ tirenv_dataset_build_settings tirenv_dataset_build_default(void);
  * bytes, whatever s->jobs. s NULL: the defaults. */
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                          const tirenv_dataset_build_settings *s, tirenv_diag *diag);
+
+/* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,
+ * L), output h; cases of the given split only. Allocates *x and *y (free them); TIRENV_EINVAL
+ * if a case has no curve. */
+int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
+                                tirenv_samples *out, double **x, double **y,
+                                tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

@@ -28,6 +28,28 @@ int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *dia
  * lines allowed. Errors name file, line and column. *out is NULL on failure. */
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);
 
+/* A profile CSV ("x_m,z_m", as tirenv_profile_read_csv) read one vertex at a time, for
+ * tirenv_model_stream (stream.h) over a road longer than memory. */
+typedef struct tirenv_profile_reader tirenv_profile_reader;
+
+/* Opens path and checks its header; *out is NULL on failure (diag names file and line). */
+int tirenv_profile_reader_open(const char *path, tirenv_profile_reader **out,
+                               tirenv_diag *diag);
+
+/* The next vertex (m) in *x, *z with *got = 1, or *got = 0 at the end of the file. Applies
+ * the checks of tirenv_profile_read_csv (numbers, x non-decreasing, at most two vertices at
+ * one x, at least one row) and names file, line and column on failure. */
+int tirenv_profile_reader_next(tirenv_profile_reader *r, double *x, double *z, int *got,
+                               tirenv_diag *diag);
+
+/* Closes the file; NULL is a no-op. */
+void tirenv_profile_reader_free(tirenv_profile_reader *r);
+
+/* tirenv_profile_reader_next in the form of a tirenv_vertex_source (stream.h): ctx is the
+ * reader. */
+int tirenv_profile_reader_source(void *reader, double *x, double *z, int *got,
+                                 tirenv_diag *diag);
+
 /* An output file written to "<path>.tmp.XXXXXX" and renamed over path on commit, so readers
  * never see half a file. */
 typedef struct {

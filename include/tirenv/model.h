@@ -10,6 +10,8 @@
 
 TIRENV_BEGIN_DECLS
 
+struct tirenv_nn;  /* the network of the empirical model, tirenv/nn.h */
+
 /* One position of the enveloping curve (docs/models.md section 1). */
 typedef struct {
     double x;              /* tire-centre longitudinal position, m */
@@ -17,7 +19,9 @@ typedef struct {
     double h;              /* effective profile height z - z_flat, m */
     double slope;          /* effective road slope tan(beta) = -fx/fz, the inclination of the
                             * resultant ground force (MF-Swift's effective slope); for the cam
-                            * exactly (Z_f - Z_r)/l_s (docs/models.md section 7) */
+                            * exactly (Z_f - Z_r)/l_s (docs/models.md section 7); for the
+                            * point contact the ground's slope under the centre; for the
+                            * network dh/dx of its curve (it knows no forces: fx is 0) */
     double fx;             /* longitudinal hub force (positive forward), N */
     double fz;             /* vertical hub force (equals the load at equilibrium), N */
     size_t contacts;       /* elements (or contact points) touching the ground */
@@ -35,34 +39,78 @@ typedef struct {
 
 /* A model algorithm, chosen by name (GSL style: tirenv_model_springs, tirenv_model_rigid). */
 typedef struct tirenv_model_type tirenv_model_type;
-extern const tirenv_model_type *tirenv_model_rigid;
-extern const tirenv_model_type *tirenv_model_springs;
+extern const tirenv_model_type *tirenv_model_rigid;   /* rigid disc, docs/models.md section 3 */
+extern const tirenv_model_type *tirenv_model_springs; /* paper's springs, docs section 4 */
 extern const tirenv_model_type *tirenv_model_ring;  /* reference tire, docs/models.md section 5 */
 extern const tirenv_model_type *tirenv_model_cam;   /* tandem cam, docs/models.md section 7 */
+extern const tirenv_model_type *tirenv_model_nn;    /* trained network, sections 6 and 12 */
+extern const tirenv_model_type *tirenv_model_point; /* single-point contact, section 9.2 */
 
-/* The type with this name ("rigid", "springs", "ring", "cam"), or NULL. */
+/* The type with this name ("rigid", "springs", "ring", "cam", "nn", "point"), or NULL. */
 const tirenv_model_type *tirenv_model_type_find(const char *name);
 /* Name of a type; its NULL-terminated list of all types. */
 const char *tirenv_model_type_name(const tirenv_model_type *type);
 const tirenv_model_type *const *tirenv_model_types(void);
+/* What the type is, in 48 characters or fewer, for help texts and reports. */
+const char *tirenv_model_type_summary(const tirenv_model_type *type);
+
+/* What a model can do: the flags of its type (tirenv_model_type_flags). */
+enum {
+    TIRENV_MODEL_FITTABLE = 1u << 0,       /* tirenv_fit identifies its parameters
+                                            * (tirenv_model_type_params) */
+    TIRENV_MODEL_NEEDS_NETWORK = 1u << 1,  /* it evaluates a trained network, which
+                                            * tirenv_model_set_network gives it */
+    TIRENV_MODEL_CONTACT_LENGTH = 1u << 2, /* it has a flat-ground contact length of its own;
+                                            * without, tirenv_model_load_for_contact_length
+                                            * goes through the springs model of the tire */
+    TIRENV_MODEL_STREAMS = 1u << 3,        /* it reads the ground only within
+                                            * tirenv_model_reach of x, so tirenv_model_stream
+                                            * takes it */
+    TIRENV_MODEL_EQUILIBRIUM = 1u << 4     /* it solves the constant-load equilibrium at every
+                                            * position, by the tire's equilibrium method */
+};
+unsigned tirenv_model_type_flags(const tirenv_model_type *type);
+
+/* A tire parameter that shapes a model's curve and that tirenv_fit identifies. */
+typedef struct {
+    const char *key;       /* its .tir key, e.g. "RADIAL_STIFFNESS" */
+    size_t offset;         /* where it lives in tirenv_tire, e.g.
+                            * offsetof(tirenv_tire, springs.c_r) */
+    double lower;          /* it stays above this (0 for stiffnesses, 1 for ELLIPS_ORDER) */
+} tirenv_model_param;
+
+/* The parameters a fit identifies, in order: the first *n by default, *n_max (>= *n) with
+ * the optional ones (the springs model's UNLOADED_RADIUS); NULL with 0 and 0 for a type that
+ * cannot be fitted. n and n_max may be NULL. */
+const tirenv_model_param *tirenv_model_type_params(const tirenv_model_type *type, size_t *n,
+                                                   size_t *n_max);
 
 /* A model instance: owns its workspace, so evaluation never allocates. Not thread-safe; use
  * one instance per thread. */
 typedef struct tirenv_model tirenv_model;
 
 /* Allocates a model of the given type for a tire (copied). NULL if the tire fails
- * tirenv_tire_check or memory runs out. */
+ * tirenv_tire_check or memory runs out. A type with TIRENV_MODEL_NEEDS_NETWORK needs
+ * tirenv_model_set_network before tirenv_model_set. */
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire);
 void tirenv_model_free(tirenv_model *m);  /* NULL is a no-op */
 const char *tirenv_model_name(const tirenv_model *m);
 /* The tire the model was built for (read-only, owned by the model). */
 const tirenv_tire *tirenv_model_tire(const tirenv_model *m);
 
+/* The network a TIRENV_MODEL_NEEDS_NETWORK model evaluates (copied: nn may then be freed),
+ * and the free radius R0 (m) its inputs x_N refer to (the model file's record; 0: the tire's).
+ * TIRENV_EINVAL for a model without a network or a network that does not fit (the enveloping
+ * model's 4 inputs). The model is left unset. */
+int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
+                             tirenv_diag *diag);
+
 /* Flat-ground state at load G (N). TIRENV_ENOBRACKET if the tire cannot carry G. */
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 
 /* Load (N) at which the model's flat-ground contact length is l_c (m); TIRENV_EINVAL if
- * l_c is not in (0, 2*R0). */
+ * l_c is not in (0, 2*R0). A model whose input is the contact length (the network) remembers
+ * it: tirenv_model_set at that load then works at exactly l_c. */
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
                                          tirenv_diag *diag);
 
@@ -72,6 +120,16 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
  * heights about their own level, not with a large grade). Resets the warm start. */
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
+
+/* The load (N) of the last successful tirenv_model_set; NaN before. */
+double tirenv_model_load(const tirenv_model *m);
+
+/* What a user should hear about the last tirenv_model_set, one warning per line without a
+ * final newline (the network: an input outside its training range, obstacles clamped to it),
+ * or "" if nothing; and one line on what the model made of the ground (the network: the
+ * equivalent cleats it saw), or "". Owned by the model, valid until the next set. */
+const char *tirenv_model_warnings(const tirenv_model *m);
+const char *tirenv_model_note(const tirenv_model *m);
 
 /* Replaces the profile (borrowed) of a model already set, keeping its load and z_flat;
  * for tirenv_model_stream's moving window. TIRENV_EINVAL if tirenv_model_set has not
@@ -89,7 +147,9 @@ double tirenv_model_reach(const tirenv_model *m);
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
 
 /* Evaluates n positions x[] in order into out[]; stops at the first failure (its index in
- * *failed if not NULL). */
+ * *failed if not NULL). The same points as tirenv_model_eval one after the other, except the
+ * network's slope, which over a single cleat is dh/dx of this sweep's curve (central
+ * differences, one-sided at its ends). */
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
                           size_t *failed, tirenv_diag *diag);
 

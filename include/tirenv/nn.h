@@ -1,7 +1,7 @@
 /* tirenv: the empirical enveloping model, a small fully connected feed-forward network
  * (paper, Tables 1 and 2; docs/models.md section 6). Logistic hidden layers, one identity output.
- * Training is in train.h, which also holds the model file (it records how the net was
- * trained). SPDX-License-Identifier: GPL-3.0-or-later */
+ * Training is in train.h; the model file (the net and how it was trained) in nn_file.h.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_NN_H
 #define TIRENV_NN_H
 

@@ -59,9 +59,10 @@ typedef struct {
 } tirenv_ride_sample;
 
 /* What an axle's tires follow over profile p on the grid x_k = x0 + k*dx (k < n), into w[]:
- * with m NULL the classic single-point contact, the profile's own height under the wheel
- * centre; otherwise the model's effective height h (m) at the load of one tire (N). The
- * model is set to p and the load (tirenv_model_set); its errors name the position. */
+ * the model's effective height h (m) at the load of one tire (N), by tirenv_model_envelope
+ * over blocks of the grid; the point contact (tirenv_model_point), or m NULL, gives the
+ * profile's own height under the wheel centre. The model is set to p and the load
+ * (tirenv_model_set); its errors name the position. */
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 

@@ -38,6 +38,23 @@ int tirenv_rig_import_samples(size_t n, const double t[], const double x[], cons
 int tirenv_rig_import(const char *path, const tirenv_import_settings *s, tirenv_curve *out,
                       tirenv_diag *diag);
 
+/* Everything an import found, for a summary line (tirenv import's) and for tests. */
+typedef struct {
+    size_t n_samples;      /* distinct samples used */
+    size_t n_repeated;     /* samples dropped because their time repeats an earlier one */
+    int reversed;          /* 1 if the cart moved towards -x */
+    double sigma;          /* estimated z noise, m */
+    double baseline;       /* flat-ground z of the log, m */
+    double centre;         /* obstacle centre in the log's own x, m */
+    double x_0;            /* x_N origin in obstacle coordinates (docs/models.md section 1), m */
+    double half_width;     /* smoothing half-width used, m */
+    double noise_se;       /* standard error of h that the noise leaves after smoothing, m */
+} tirenv_import_info;
+
+/* tirenv_rig_import, also saying what it found in *info (may be NULL). */
+int tirenv_rig_import_file(const char *path, const tirenv_import_settings *s,
+                           tirenv_curve *out, tirenv_import_info *info, tirenv_diag *diag);
+
 /* The virtual rig (paper, Figure 2): a cart moves the tire at constant speed over the
  * profile at constant load; x(t), z(t) of the centre are sampled with sensor noise. */
 typedef struct {

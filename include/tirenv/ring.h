@@ -32,9 +32,10 @@ const double *tirenv_ring_theta(const tirenv_ring *r);
  * the belt where the tread is compressed through, with the ground, solved exactly by an active
  * set on the belt's stiffness; dfz_dz (N/m, may be NULL) is exact for the current active set;
  * contacts (may be NULL): nodes with a ground force. TIRENV_ENOCONV if the active set does not
- * settle. */
+ * settle or its factorisation breaks down, diag (may be NULL) saying which. */
 int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                       double *fx, double *fz, double *dfz_dz, size_t *contacts);
+                       double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                       tirenv_diag *diag);
 
 /* Length (m) of ground in contact at the last evaluation: from the first to the last point of
  * positive tread pressure, edges interpolated between nodes. */

@@ -1,5 +1,6 @@
-/* tirenv: the enveloping curve over a profile read as it goes, in memory bounded by the
- * tire's reach rather than by the road's length. */
+/* tirenv: the enveloping curve over a profile taken as it goes from a vertex source (a file
+ * reader, a generator, a simulator's road), in memory bounded by the tire's reach rather than
+ * by the road's length. */
 #ifndef TIRENV_STREAM_H
 #define TIRENV_STREAM_H
 
@@ -10,21 +11,12 @@
 
 TIRENV_BEGIN_DECLS
 
-/* A profile CSV ("x_m,z_m", as tirenv_profile_read_csv) read one vertex at a time. */
-typedef struct tirenv_profile_reader tirenv_profile_reader;
-
-/* Opens path and checks its header; *out is NULL on failure (diag names file and line). */
-int tirenv_profile_reader_open(const char *path, tirenv_profile_reader **out,
-                               tirenv_diag *diag);
-
-/* The next vertex (m) in *x, *z with *got = 1, or *got = 0 at the end of the file. Applies
- * the checks of tirenv_profile_read_csv (numbers, x non-decreasing, at most two vertices at
- * one x, at least one row) and names file, line and column on failure. */
-int tirenv_profile_reader_next(tirenv_profile_reader *r, double *x, double *z, int *got,
-                               tirenv_diag *diag);
-
-/* Closes the file; NULL is a no-op. */
-void tirenv_profile_reader_free(tirenv_profile_reader *r);
+/* Where a streamed sweep gets its ground, one vertex at a time: the next vertex (m) in *x, *z
+ * with *got = 1, or *got = 0 at the end of the profile. Vertices come in profile order (x
+ * non-decreasing, at most two at one x: a wall); a nonzero return (a TIRENV_ code, with diag
+ * filled) stops the sweep. A file format provides one (the profile CSV reader of io.h). */
+typedef int (*tirenv_vertex_source)(void *ctx, double *x, double *z, int *got,
+                                    tirenv_diag *diag);
 
 /* Receives each position as it is computed; a nonzero return stops the sweep with that
  * status (use a TIRENV_ code, e.g. TIRENV_EIO). */
@@ -33,7 +25,7 @@ typedef int (*tirenv_point_sink)(void *ctx, const tirenv_point *pt);
 /* What a streamed sweep did, for callers and tests of its memory bound. */
 typedef struct {
     size_t positions;      /* positions passed to the sink */
-    size_t vertices_read;  /* vertices read from the file */
+    size_t vertices_read;  /* vertices taken from the source */
     size_t window_max;     /* most vertices held in the window at once */
     size_t rebuilds;       /* windows built */
 } tirenv_stream_stats;
@@ -44,15 +36,16 @@ typedef struct {
 size_t tirenv_positions_count(double x_from, double x_to, double dx);
 
 /* Evaluates the positions x_k = x_from + k*dx (m) up to x_to (m; as the CLI's sweep) at load
- * (N), reading vertices from in only as far as the tire's reach ahead needs, and passing each
- * point to sink. Equals tirenv_model_set + tirenv_model_envelope over the whole file bit for
- * bit, iterations included (the warm start carries over as the window moves), except that
- * the check that the ground stays below the flat-ground centre height covers only the ground
- * read.
- * stats may be NULL. Consumes in from where it stands. */
-int tirenv_model_stream(tirenv_model *m, tirenv_profile_reader *in, double x_from,
-                        double x_to, double dx, double load, tirenv_point_sink sink, void *ctx,
-                        tirenv_stream_stats *stats, tirenv_diag *diag);
+ * (N), taking vertices from source (called with source_ctx) only as far as the tire's reach
+ * ahead needs, and passing each point to sink (called with ctx). Equals tirenv_model_set +
+ * tirenv_model_envelope over the whole profile bit for bit, iterations included (the warm
+ * start carries over as the window moves), except that the check that the ground stays below
+ * the flat-ground centre height covers only the ground read. Vertices out of order, or not finite, stop it with TIRENV_EINVAL naming the vertex.
+ * stats may be NULL. Takes the vertices from where the source stands. */
+int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,
+                        double x_from, double x_to, double dx, double load,
+                        tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,
+                        tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

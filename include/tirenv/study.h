@@ -43,11 +43,12 @@ int tirenv_case_predict_nn(tirenv_nn *nn, double R0, const tirenv_case *c, doubl
 
 /* Identification of a physical model on the training cases by nonlinear least squares on h
  * (GSL multifit_nlinear, trust region with Levenberg-Marquardt steps), in log parameters so
- * they stay in range: springs: c_r and c_b (optionally R0); cam: ELLIPS_SHIFT, ELLIPS_LENGTH,
- * ELLIPS_HEIGHT, ELLIPS_ORDER. */
+ * they stay in range. The parameters are the type's (tirenv_model_type_params): springs: c_r
+ * and c_b (optionally R0); cam: ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER. */
 typedef struct {
-    const tirenv_model_type *type;  /* springs (default) or cam */
-    int fit_R0;            /* also fit UNLOADED_RADIUS */
+    const tirenv_model_type *type;  /* a type with TIRENV_MODEL_FITTABLE; NULL: springs */
+    int fit_R0;            /* also fit the type's optional parameters (the springs model's
+                            * UNLOADED_RADIUS) */
     size_t max_iter;       /* trust-region iterations (default 50) */
     double xtol;           /* relative step tolerance (default 1e-6) */
     size_t jobs;           /* training cases evaluated at once, each worker with its own
@@ -90,8 +91,11 @@ typedef struct {
     size_t n_cases;
     tirenv_split split;         /* used when no names are given (default validation) */
     const tirenv_model_type *models[TIRENV_COMPARE_MAX_MODELS - 1];
-    size_t n_models;            /* physical models evaluated (default rigid, springs) */
-    int with_nn;                /* also the network, when one is given (default 1) */
+    size_t n_models;            /* models evaluated (default rigid, springs); the network's
+                                 * type (TIRENV_MODEL_NEEDS_NETWORK) among them needs nn and
+                                 * comes last, run at the cases' contact lengths */
+    int with_nn;                /* also the network when one is given and it is not listed
+                                 * (default 1) */
     int simulated;              /* 1: the "measured" curves are simulated (default 0) */
     const tirenv_model_type *simulated_by; /* the reference model that simulated them, or
                                  * NULL; it is evaluated too (with the tire's parameters)

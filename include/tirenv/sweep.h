@@ -17,6 +17,8 @@
 
 TIRENV_BEGIN_DECLS
 
+struct tirenv_nn;  /* the network of the empirical model, tirenv/nn.h */
+
 #define TIRENV_SWEEP_MAX_KEYS 8
 
 /* One tire key swept over values (a numeric key of the .tir file, as --set takes it). */
@@ -31,6 +33,12 @@ typedef struct {
  * its name is "c" and i zero-padded to at least 4 digits (c0000, c0001, ...). */
 typedef struct {
     const tirenv_model_type *type;/* the model that makes every curve (default ring) */
+    const struct tirenv_nn *network; /* for a type that needs a network
+                                   * (TIRENV_MODEL_NEEDS_NETWORK): the network every case's
+                                   * model copies (tirenv_model_set_network); else NULL */
+    double network_R0;            /* the radius its x_N refers to, m (0: the tire's) */
+    const char *network_id;       /* how sweep.txt names that network (e.g. a fingerprint of
+                                   * its file), so that a resumed run and a merge can tell */
     int rig;                      /* 1: the model drives the virtual rig, whose noisy log is
                                    * imported (as tirenv_dataset_build does); 0 (default): the
                                    * model's curve at the points of the import's x_N grid */

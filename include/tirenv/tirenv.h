@@ -1,11 +1,19 @@
 /* tirenv: quasi-static enveloping models of a tractor tire over short obstacles.
- * Umbrella header. SPDX-License-Identifier: GPL-3.0-or-later */
+ * Umbrella header. SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * Two layers, as Lua's lua.h and lauxlib.h. The core computes and knows no file format:
+ * decls, error, profile, xn, road, tire, model, rigid, cam, springs, ring, stream, nn,
+ * nn_road, train, vehicle, ride, comfort (src/core, src/profile, src/model, src/nn,
+ * src/train, src/ride include no other header). The auxiliary layer reads and writes files
+ * and runs the study on top of the core's public headers alone: io, curve, rig, dataset,
+ * nn_file, vehicle_file, study, plot (src/data, src/study). */
 #ifndef TIRENV_TIRENV_H
 #define TIRENV_TIRENV_H
 
 #include "tirenv/error.h"
 #include "tirenv/parallel.h"
 #include "tirenv/profile.h"
+#include "tirenv/xn.h"
 #include "tirenv/road.h"
 #include "tirenv/tire.h"
 #include "tirenv/model.h"
@@ -18,8 +26,11 @@
 #include "tirenv/curve.h"
 #include "tirenv/rig.h"
 #include "tirenv/dataset.h"
+#include "tirenv/nn_file.h"
+#include "tirenv/plot.h"
 #include "tirenv/nn_road.h"
 #include "tirenv/vehicle.h"
+#include "tirenv/vehicle_file.h"
 #include "tirenv/ride.h"
 #include "tirenv/comfort.h"
 #include "tirenv/nn.h"

@@ -1,5 +1,5 @@
-/* tirenv: training the empirical model's network (docs/models.md section 6), and its model file
- * (docs/formats.md section 10).
+/* tirenv: training the empirical model's network (docs/models.md section 6); its model file
+ * (docs/formats.md section 10), a file format, is in nn_file.h.
  * Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_TRAIN_H
@@ -8,11 +8,17 @@
 #include "tirenv/decls.h"
 #include <stddef.h>
 #include <stdint.h>
-#include "tirenv/dataset.h"
 #include "tirenv/error.h"
 #include "tirenv/nn.h"
 
 TIRENV_BEGIN_DECLS
+
+/* The three sets of samples a network is trained, stopped and judged on. */
+typedef enum {
+    TIRENV_SPLIT_TRAIN = 0,   /* fits and trains on it */
+    TIRENV_SPLIT_CONTROL,     /* early stopping / model selection */
+    TIRENV_SPLIT_VALIDATION   /* reported only, never seen in training */
+} tirenv_split;
 
 /* n samples of n_in inputs and one output, borrowed from the caller. For the enveloping
  * model the inputs are x_N, l_c (m), H (m), L (m) and the output is h (m). */
@@ -147,7 +153,8 @@ tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
 /* Trains a network of settings->topology on train, early-stopping on control (if it is empty,
  * on train), and reports errors on all three (validation may be NULL or empty). Scaling and
  * input ranges come from train only. *out is the kept network (free it with tirenv_nn_free);
- * report may be NULL. Sets GSL's error handler off (GSL would abort on a singular matrix).
+ * report may be NULL. GSL would abort on a singular matrix unless the program has turned its
+ * error handler off (error.h).
  * Deterministic: the same arguments give the same weights bit for bit. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,
@@ -158,39 +165,6 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
  * continuing from h (start with TIRENV_FNV1A64_OFFSET): the data-set fingerprint. */
 #define TIRENV_FNV1A64_OFFSET UINT64_C(0xcbf29ce484222325)
 uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h);
-
-/* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,
- * L), output h; cases of the given split only. Allocates *x and *y (free them); TIRENV_EINVAL
- * if a case has no curve. */
-int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
-                                tirenv_samples *out, double **x, double **y,
-                                tirenv_diag *diag);
-
-/* ---- Model files (src/nn/nn_json.c): a network and how it was trained, as JSON. ---- */
-
-#define TIRENV_NN_FORMAT "tirenv-nn"
-#define TIRENV_NN_FORMAT_VERSION 1
-
-/* What a model file records besides the network. */
-typedef struct {
-    char trainer[32];                /* trainer name, or "" */
-    tirenv_train_settings settings;  /* as used (the callback is not saved) */
-    tirenv_train_report report;
-    uint64_t fingerprint;            /* tirenv_samples_fingerprint of train, control,
-                                        validation in turn */
-    double R0;                       /* free radius of the tire the data's x_N refers to, m;
-                                        0 if unknown */
-    char data[512];                  /* data set directory, or "" */
-} tirenv_train_record;
-
-/* Writes nn and rec (rec may be NULL) atomically (tirenv_outfile). Non-finite numbers are
- * refused. Reals are written with 17 significant digits, so reading gives the same bits. */
-int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
-                         tirenv_diag *diag);
-/* Reads a model file, checking format, version, sizes, finiteness, ranges and the network
- * checksum; errors name the file and the field. *out is NULL on failure; rec may be NULL. */
-int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
-                        tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

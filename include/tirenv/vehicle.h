@@ -1,5 +1,5 @@
-/* tirenv: the pitch-plane tractor of the ride simulation (docs/models.md section 9) and its
- * property file (docs/formats.md section 3).
+/* tirenv: the pitch-plane tractor of the ride simulation (docs/models.md section 9); its
+ * property file (docs/formats.md section 3), a file format, is in vehicle_file.h.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_VEHICLE_H
 #define TIRENV_VEHICLE_H
@@ -56,23 +56,6 @@ int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag);
  * front (m*g*b/(a+b) + (k_s > 0 ? m_a*g : 0)) / front.tires, rear m*g*a/(a+b) / rear.tires;
  * NAN for another axle. */
 double tirenv_vehicle_tire_load(const tirenv_vehicle *v, int axle);
-
-/* Reads a vehicle property file (the .tir syntax: [SECTION]s of KEY = value, '$' comments,
- * SI units; keys in data/vehicles/tractor.veh) over *v, which changes only if the whole
- * file passes (parsing and tirenv_vehicle_check); errors name the file, line, column and
- * key. A relative TIRE_FILE is relative to the vehicle file's directory and is stored with
- * that directory put before it, so that it opens from the working directory. */
-int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag);
-
-/* Applies one "KEY=VALUE" override (KEY as in the file, e.g. MASS=5200; the axle keys need
- * their section, e.g. FRONT_AXLE.TIRES=4), then checks; *v changes only if both pass. A
- * relative TIRE_FILE given here is relative to the working directory. */
-int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *diag);
-
-/* Writes *v as a vehicle property file (atomically: all or nothing); refuses a vehicle that
- * fails tirenv_vehicle_check. A relative TIRE_FILE is written as an absolute path when the
- * file goes to another directory than the working one, so that it names the same tire. */
-int tirenv_vehicle_write(const char *path, const tirenv_vehicle *v, tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

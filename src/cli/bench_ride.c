@@ -5,7 +5,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "cli/bench.h"
 #include "cli/ride_cli.h"
@@ -14,15 +13,15 @@ static const double ride_speed = 10 / 3.6;   /* m/s */
 static const double ride_target = 100;       /* times faster than real time */
 
 
-/* Both axles' inputs on the grid x[] for one model ("point", a model type, or "nn"). */
-static int inputs(const char *model, const tirenv_tire *tire, const tirenv_vehicle *v,
-                  const tirenv_profile *road, const tirenv_nn *nn, size_t n, const double x[],
-                  double *w[2], tirenv_diag *diag)
+/* Both axles' inputs on the grid x[] for one model type. */
+static int inputs(const tirenv_model_type *type, const tirenv_tire *tire,
+                  const tirenv_vehicle *v, const tirenv_profile *road, const tirenv_nn *nn,
+                  size_t n, const double x[], double *w[2], tirenv_diag *diag)
 {
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle)
-        status = ride_cli_axle_input(model, tire, tirenv_vehicle_tire_load(v, axle), road, nn,
-                                     tire->springs.R0, x[0], x[1] - x[0], n, w[axle], NULL,
+        status = ride_cli_axle_input(type, tire, tirenv_vehicle_tire_load(v, axle), road, nn,
+                                     tire->springs.R0, x[0], x[1] - x[0], n, w[axle], NULL, 0,
                                      diag);
     return status;
 }
@@ -30,7 +29,15 @@ static int inputs(const char *model, const tirenv_tire *tire, const tirenv_vehic
 int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const tirenv_nn *nn,
                    size_t n, const double x[], long repeat, tirenv_diag *diag)
 {
-    static const char *const models[] = {"point", "cam", "nn", "springs"};
+    /* The models and the project's targets: 100 times real time with the cam or the
+     * network, on one core. */
+    const struct {
+        const tirenv_model_type *type;
+        int targeted;
+    } models[] = {{tirenv_model_point, 0},
+                  {tirenv_model_cam, 1},
+                  {tirenv_model_nn, 1},
+                  {tirenv_model_springs, 0}};
     const tirenv_vehicle v = tirenv_vehicle_default();
     tirenv_ride_settings s = tirenv_ride_default();
     const double l = v.a + v.b, margin = 1.0;  /* m: the interpolation never runs out */
@@ -48,12 +55,13 @@ int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const ti
     cli_bench_say("  %-10s %10s %10s %10s %10s %8s\n", "model", "inputs_s", "ode_s", "x_real",
            "target", "");
     for (size_t i = 0; i < sizeof models / sizeof models[0] && !status; ++i) {
-        if (strcmp(models[i], "nn") == 0 && !nn)
+        const char *name = tirenv_model_type_name(models[i].type);
+        if ((tirenv_model_type_flags(models[i].type) & TIRENV_MODEL_NEEDS_NETWORK) && !nn)
             continue;  /* bench_road said why */
         double t_in = INFINITY, t_ode = INFINITY;
         for (long rep = 0; rep < repeat && !status; ++rep) {
             double t0 = cli_wall_seconds();
-            status = inputs(models[i], tire, &v, road, nn, n, x, w, diag);
+            status = inputs(models[i].type, tire, &v, road, nn, n, x, w, diag);
             t_in = fmin(t_in, cli_wall_seconds() - t0);
             const tirenv_ride_track front = {x[0], x[1] - x[0], n, w[0]};
             const tirenv_ride_track rear = {x[0], x[1] - x[0], n, w[1]};
@@ -64,15 +72,15 @@ int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const ti
         }
         if (!status) {
             const double factor = s.duration / (t_in + t_ode);
-            const int targeted = strcmp(models[i], "cam") == 0 || strcmp(models[i], "nn") == 0;
+            const int targeted = models[i].targeted;
             char key[64];
-            snprintf(key, sizeof key, "ride_%s_inputs_s", models[i]);
+            snprintf(key, sizeof key, "ride_%s_inputs_s", name);
             cli_bench_figure(key, t_in);
-            snprintf(key, sizeof key, "ride_%s_ode_s", models[i]);
+            snprintf(key, sizeof key, "ride_%s_ode_s", name);
             cli_bench_figure(key, t_ode);
-            snprintf(key, sizeof key, "ride_%s_x_real", models[i]);
+            snprintf(key, sizeof key, "ride_%s_x_real", name);
             cli_bench_figure(key, factor);
-            cli_bench_say("  %-10s %10.3f %10.3f %10.0f %10s %8s\n", models[i], t_in, t_ode, factor,
+            cli_bench_say("  %-10s %10.3f %10.3f %10.0f %10s %8s\n", name, t_in, t_ode, factor,
                    targeted ? "100" : "-", !targeted ? "" : factor >= ride_target ? "met"
                                                                                   : "missed");
         }

@@ -1,9 +1,11 @@
-/* Private to the tirenv command-line tool: the command table, exit codes, and the options
- * every subcommand shares (tire, load, obstacle). SPDX-License-Identifier: GPL-3.0-or-later */
+/* Private to the tirenv command-line tool: the command table, exit codes, and the one option
+ * parser every subcommand goes through (cli_parse): the options they share (tire, load,
+ * obstacle, sweep, output, model, network), -h/--help, misuse, repeated options and leftover
+ * arguments, so that each command lists only what is its own. Like every part of the CLI it
+ * uses the library's public headers alone. SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_CLI_H
 #define TIRENV_CLI_H
 
-#include <getopt.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -31,7 +33,6 @@ int cli_rig_main(int argc, char *argv[]);
 int cli_import_main(int argc, char *argv[]);
 int cli_train_main(int argc, char *argv[]);
 int cli_predict_main(int argc, char *argv[]);
-int cli_predict_is_nn(int argc, char *argv[]);  /* envelope --model nn: run predict */
 int cli_dataset_main(int argc, char *argv[]);
 int cli_compare_main(int argc, char *argv[]);
 int cli_fit_main(int argc, char *argv[]);
@@ -40,46 +41,38 @@ int cli_road_main(int argc, char *argv[]);
 int cli_ride_main(int argc, char *argv[]);
 int cli_sweep_main(int argc, char *argv[]);
 
-/* getopt_long codes of the shared long options; above 255 so they never clash with a short
- * option character. */
+/* ---- the shared parser ------------------------------------------------------------------ */
+
+/* The option groups a command takes from cli_parse, besides its own. */
 enum {
-    CLI_OPT_TIRE = 256,
-    CLI_OPT_SET,
-    CLI_OPT_METHOD,
-    CLI_OPT_LOAD,
-    CLI_OPT_CONTACT_LENGTH,
-    CLI_OPT_CLEAT,
-    CLI_OPT_STEP,
-    CLI_OPT_TRAPEZOID,
-    CLI_OPT_TRIANGLE,
-    CLI_OPT_CYLINDER,
-    CLI_OPT_SINE,
-    CLI_OPT_PROFILE,
-    CLI_OPT_JOBS,
-    CLI_OPT_FIRST_OWN  /* first code free for a subcommand's own long-only options */
+    CLI_TIRE = 1u << 0,     /* --tire FILE, --set KEY=VALUE (repeatable) */
+    CLI_METHOD = 1u << 1,   /* --method newton|secant|brent */
+    CLI_LOAD = 1u << 2,     /* --load N | --contact-length M */
+    CLI_OBSTACLE = 1u << 3, /* one of --cleat, --step, --trapezoid, --triangle, --cylinder,
+                             * --sine, --profile */
+    CLI_SWEEP = 1u << 4,    /* --x-from X, --x-to X, --dx DX (m) */
+    CLI_OUTPUT = 1u << 5,   /* -o, --output PATH */
+    CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
+    CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need */
+    CLI_JOBS = 1u << 8      /* --jobs N: work items at once (default: the cores) */
 };
 
-/* struct option entries to paste into a subcommand's table, by group. */
-#define CLI_TIRE_LONGOPTS                                                                    \
-    {"tire", required_argument, NULL, CLI_OPT_TIRE},                                         \
-    {"set", required_argument, NULL, CLI_OPT_SET}
-#define CLI_METHOD_LONGOPTS {"method", required_argument, NULL, CLI_OPT_METHOD}
-#define CLI_LOAD_LONGOPTS                                                                    \
-    {"load", required_argument, NULL, CLI_OPT_LOAD},                                         \
-    {"contact-length", required_argument, NULL, CLI_OPT_CONTACT_LENGTH}
-#define CLI_OBSTACLE_LONGOPTS                                                                \
-    {"cleat", required_argument, NULL, CLI_OPT_CLEAT},                                       \
-    {"step", required_argument, NULL, CLI_OPT_STEP},                                         \
-    {"trapezoid", required_argument, NULL, CLI_OPT_TRAPEZOID},                               \
-    {"triangle", required_argument, NULL, CLI_OPT_TRIANGLE},                                 \
-    {"cylinder", required_argument, NULL, CLI_OPT_CYLINDER},                                 \
-    {"sine", required_argument, NULL, CLI_OPT_SINE},                                         \
-    {"profile", required_argument, NULL, CLI_OPT_PROFILE}
+/* The obstacle options, for cli_options.obstacle. */
+enum {
+    CLI_CLEAT = 1,
+    CLI_STEP,
+    CLI_TRAPEZOID,
+    CLI_TRIANGLE,
+    CLI_CYLINDER,
+    CLI_SINE,
+    CLI_PROFILE
+};
 
 #define CLI_MAX_SETS 64
+#define CLI_MAX_ARGS 4
 
-/* What the shared options said: filled by cli_option, turned into objects by cli_tire,
- * cli_load and cli_profile. */
+/* What the shared options said: filled by cli_parse, turned into objects by cli_tire,
+ * cli_load, cli_profile and cli_network. */
 typedef struct {
     const char *tire_path;            /* --tire, or NULL for the default tire file */
     const char *sets[CLI_MAX_SETS];   /* --set KEY=VALUE, in command-line order */
@@ -89,26 +82,69 @@ typedef struct {
     int have_load, have_contact_length;
     double load;                      /* --load, N */
     double contact_length;            /* --contact-length, m */
-    int obstacle;                     /* CLI_OPT_CLEAT..CLI_OPT_PROFILE, or 0 for none */
+    int obstacle;                     /* CLI_CLEAT..CLI_PROFILE, or 0 for none */
     const char *obstacle_arg;         /* its argument as given, for messages */
     double shape[3];                  /* the generator's numbers, m */
+    double x_from, x_to, dx;          /* --x-from, --x-to, --dx, m; NaN if not given */
+    const char *output;               /* -o, --output, or NULL */
+    const tirenv_model_type *type;    /* --model, or NULL */
+    const char *nn_path;              /* --nn, or NULL */
+    size_t jobs;                      /* --jobs, else cli_jobs_default() (with CLI_JOBS) */
+    const char *args[CLI_MAX_ARGS];   /* positional arguments, in order */
+    size_t n_args;
 } cli_options;
 
-void cli_options_init(cli_options *o);
+/* How a command's own option takes its argument. */
+typedef enum {
+    CLI_FLAG,      /* no argument: *(int *)dst = 1 */
+    CLI_STRING,    /* *(const char **)dst = the argument */
+    CLI_NUMBER,    /* *(double *)dst, any finite number */
+    CLI_POSITIVE,  /* *(double *)dst, a number > 0 */
+    CLI_COUNT,     /* *(long *)dst, a whole number in [min, max] */
+    CLI_CUSTOM     /* parse(dst, arg) decides, and says why it refuses */
+} cli_kind;
 
-/* Handles one shared option (code from the tables above). Returns CLI_EXIT_OK, or
- * CLI_EXIT_USAGE after printing why the value is malformed. */
-int cli_option(cli_options *o, int code, const char *arg);
+/* One option of a command's own, in a table ended by {NULL}. A malformed value is refused
+ * with "--NAME: expected WHAT, got 'ARG'" and exit status 1. */
+typedef struct cli_opt {
+    const char *name;      /* long name, without "--" */
+    cli_kind kind;
+    void *dst;
+    const char *what;      /* what a number must be, for the message ("a length in m") */
+    long min, max;         /* CLI_COUNT's range */
+    int (*parse)(void *dst, const char *arg);  /* CLI_CUSTOM: an exit code, after printing */
+    int repeatable;        /* may be given more than once (else that is misuse) */
+} cli_opt;
 
-/* Restarts getopt scanning for a subcommand's own argv (optind = 0 resets glibc and musl). */
-void cli_getopt_reset(void);
+/* A command's parser. */
+typedef struct {
+    const char *name;           /* the command, for messages ("envelope") */
+    void (*usage)(FILE *fp);    /* its usage text */
+    unsigned groups;            /* CLI_TIRE | CLI_LOAD | ... */
+    const cli_opt *opts;        /* its own options, or NULL */
+    size_t max_args;            /* positional arguments it takes (into o->args) */
+} cli_parser;
+
+/* Parses argv (argv[0] is the command) into o (initialised here) and the own options' dst:
+ * -h/--help prints the usage on stdout and returns CLI_EXIT_OK; an unknown option or a missing
+ * argument prints the usage on stderr, a malformed value or a single-valued option given twice
+ * names the option, more positional arguments than p->max_args name the first extra one: each
+ * returns CLI_EXIT_USAGE. A model type that needs a network without --nn (or in a command that
+ * takes none) is misuse too. Returns CLI_GO_ON when the command has work to do. */
+#define CLI_GO_ON (-1)
+int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o);
 
 /* Option help text for the groups above, indented for a usage message. */
 void cli_help_tire(FILE *fp, int with_method);
 void cli_help_load(FILE *fp);
 void cli_help_obstacle(FILE *fp);
-/* "--model NAME", listing the models the library has, then fallback (e.g. " (default x)"). */
-void cli_help_model(FILE *fp, const char *fallback);
+void cli_help_sweep(FILE *fp);
+void cli_help_jobs(FILE *fp);
+/* "--model NAME", listing the models the library has (those whose flags include all of
+ * `with` and none of `without`), then fallback (e.g. " (default x)"). */
+void cli_help_model(FILE *fp, unsigned with, unsigned without, const char *fallback);
+
+/* ---- turning options into objects ----------------------------------------------------- */
 
 /* The data directory (datadir.c): $TIRENV_DATA if set, else the installed data found from the
  * program's own location (or, in the build tree, the source tree's data/). */
@@ -123,16 +159,22 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
  * Returns an exit code after printing any error. */
 int cli_tire(const cli_options *o, tirenv_tire *tire);
 
-/* The model type named by --model; prints the valid names and returns CLI_EXIT_USAGE if
- * there is none. */
+/* The model type named name; prints the valid names and returns CLI_EXIT_USAGE if there is
+ * none. */
 int cli_model_type(const char *name, const tirenv_model_type **type);
 
-/* Allocates a model for a checked tire; prints and returns an exit code on failure. */
-int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, tirenv_model **out);
+/* Allocates a model for a checked tire and, if its type needs one, gives it the network of
+ * --nn (read from the model file, with the R0 its x_N refers to); prints and returns an exit
+ * code on failure. */
+int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_options *o,
+              tirenv_model **out);
 
 /* The load (N) the options ask for: --load as given, or --contact-length through the model's
  * own flat-ground contact length. Needs one of them; returns an exit code. */
 int cli_load(const cli_options *o, tirenv_model *m, double *load);
+
+/* Prints the model's warnings of its last set, one "tirenv: CMD: warning: ..." line each. */
+void cli_model_warnings(const char *cmd, const tirenv_model *m);
 
 /* Positions from x_from to x_to (m) every dx (m), allocated (free it); at most
  * CLI_MAX_POSITIONS, beyond which a sweep is surely a typo in --dx. Prints why and returns an
@@ -142,6 +184,10 @@ int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t 
 
 /* The obstacle the options ask for (one required); returns an exit code. */
 int cli_profile(const cli_options *o, tirenv_profile **out);
+/* How a message names the obstacle: the file, or the generator as it was asked for. */
+void cli_obstacle_label(const cli_options *o, char *buf, size_t n);
+
+/* ---- small things --------------------------------------------------------------------- */
 
 /* Parsers with full checks (whole string consumed, finite, in range); 0 on success. */
 int cli_parse_double(const char *s, double *v);
@@ -170,12 +216,10 @@ double cli_wall_seconds(void);
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);
 
-/* --jobs (jobs.c): the default, every core this process may run on; parses N in [1,
- * CLI_MAX_JOBS] (prints "CMD: --jobs ..." and returns CLI_EXIT_USAGE if malformed); help. */
+/* --jobs (jobs.c): the default, every core this process may run on; N parsed from arg, in
+ * [1, CLI_MAX_JOBS] (else prints why and returns CLI_EXIT_USAGE). */
 #define CLI_MAX_JOBS 1024
-#define CLI_JOBS_LONGOPT {"jobs", required_argument, NULL, CLI_OPT_JOBS}
 size_t cli_jobs_default(void);
-int cli_parse_jobs(const char *cmd, const char *arg, size_t *jobs);
-void cli_help_jobs(FILE *fp);
+int cli_parse_jobs(const char *arg, size_t *jobs);
 
 #endif

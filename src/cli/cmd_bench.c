@@ -152,7 +152,7 @@ static int run_case(const tirenv_tire *tire0, size_t i, const tirenv_profile *pr
     tire.eq.method = cases[i].method;
     const tirenv_model_type *type = tirenv_model_type_find(cases[i].model);
     tirenv_model *m;
-    int code = cli_model(type, &tire, &m);
+    int code = cli_model(type, &tire, NULL, &m);
     if (code)
         return code;
     tirenv_point *pt = malloc(SWEEP_N * sizeof *pt);
@@ -568,59 +568,26 @@ static int bench_road(const tirenv_tire *tire, long repeat)
 
 int cli_bench_main(int argc, char *argv[])
 {
-    enum { OPT_REPEAT = CLI_OPT_FIRST_OWN, OPT_QUICK, OPT_JSON };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        {"repeat", required_argument, NULL, OPT_REPEAT},
-        {"quick", no_argument, NULL, OPT_QUICK},
-        {"json", no_argument, NULL, OPT_JSON},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
+    long repeat = 0; /* 0: not given */
+    int quick = 0, json = 0;
+    const cli_opt own[] = {
+        {.name = "repeat", .kind = CLI_COUNT, .dst = &repeat, .min = 1, .max = 1000000,
+         .what = "a whole number from 1 to 1000000"},
+        {.name = "quick", .kind = CLI_FLAG, .dst = &quick},
+        {.name = "json", .kind = CLI_FLAG, .dst = &json},
+        {.name = NULL},
     };
+    const cli_parser p = {.name = "bench", .usage = usage, .opts = own, .groups = CLI_TIRE};
     cli_options o;
-    cli_options_init(&o);
-    long repeat = 5;
-    int quick = 0, json = 0, repeat_set = 0;
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case OPT_REPEAT:
-            if (cli_parse_count(optarg, 1, 1000000, &repeat)) {
-                cli_error("--repeat: expected a whole number from 1 to 1000000, got '%s'",
-                          optarg);
-                return CLI_EXIT_USAGE;
-            }
-            repeat_set = 1;
-            break;
-        case OPT_QUICK:
-            quick = 1;
-            break;
-        case OPT_JSON:
-            json = 1;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(&o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("bench: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
-    if (quick) {
+    int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    if (quick)
         road_length = 100.0;
-        if (!repeat_set)
-            repeat = 1;
-    }
+    if (repeat == 0)
+        repeat = quick ? 1 : 5;
     tirenv_tire tire;
-    int code = cli_tire(&o, &tire);
+    code = cli_tire(&o, &tire);
     if (code)
         return code;
     tirenv_profile *prof = tirenv_profile_cleat(cleat_L, cleat_H);

@@ -8,7 +8,7 @@
 #include "cli/cli.h"
 #include "tirenv/nn.h"
 #include "tirenv/study.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 enum { MAX_CASES = 256 };
 
@@ -47,8 +47,8 @@ static void usage(FILE *fp)
           fp);
     for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
         fprintf(fp, " %s", tirenv_model_type_name(*t));
-    fputs(" nn\n"
-          "                       (default: rigid,springs,nn)\n"
+    fputs("\n"
+          "                       (default: rigid,springs,nn; nn needs --nn)\n"
           "  --title TEXT         headline of the report\n"
           "  --no-images          write the gnuplot scripts but do not run gnuplot\n"
           "  -o, --output DIR     report directory, created if missing\n"
@@ -61,17 +61,17 @@ static void usage(FILE *fp)
 
 typedef struct {
     const char *data;
-    const char *nn_path;
-    int nn_listed;                    /* --models names nn */
+    int have_cases, have_split;
     char *case_list;                  /* a copy of --cases, cut at the commas */
     const char *case_names[MAX_CASES];
     tirenv_compare_settings s;
 } compare_options;
 
 /* "F,J,R" into names, in place; empty names are refused. */
-static int parse_cases(compare_options *co, const char *arg)
+static int parse_cases(void *dst, const char *arg)
 {
-    free(co->case_list);
+    compare_options *co = dst;
+    co->have_cases = 1;
     co->case_list = malloc(strlen(arg) + 1);
     if (!co->case_list) {
         cli_error("out of memory");
@@ -98,10 +98,12 @@ static int parse_cases(compare_options *co, const char *arg)
     return CLI_EXIT_OK;
 }
 
-static int parse_split(compare_options *co, const char *arg)
+static int parse_split(void *dst, const char *arg)
 {
+    compare_options *co = dst;
     const tirenv_split splits[] = {TIRENV_SPLIT_TRAIN, TIRENV_SPLIT_CONTROL,
                                    TIRENV_SPLIT_VALIDATION};
+    co->have_split = 1;
     for (size_t k = 0; k < sizeof splits / sizeof splits[0]; ++k)
         if (strcmp(arg, tirenv_split_name(splits[k])) == 0) {
             co->s.split = splits[k];
@@ -111,9 +113,11 @@ static int parse_split(compare_options *co, const char *arg)
     return CLI_EXIT_USAGE;
 }
 
-/* "rigid,springs,nn": physical models by their names, and "nn" for the network. */
-static int parse_models(compare_options *co, const char *arg)
+/* "rigid,springs,nn": model types by their names; the list replaces the default, network
+ * included. */
+static int parse_models(void *dst, const char *arg)
 {
+    compare_options *co = dst;
     co->s.n_models = 0;
     co->s.with_nn = 0;
     const char *p = arg;
@@ -126,18 +130,14 @@ static int parse_models(compare_options *co, const char *arg)
         }
         memcpy(name, p, len);
         name[len] = '\0';
-        if (strcmp(name, "nn") == 0) {
-            co->s.with_nn = co->nn_listed = 1;
-        } else {
-            const tirenv_model_type *type;
-            if (cli_model_type(name, &type))
-                return CLI_EXIT_USAGE;
-            if (co->s.n_models == sizeof co->s.models / sizeof co->s.models[0]) {
-                cli_error("--models: too many models in '%s'", arg);
-                return CLI_EXIT_USAGE;
-            }
-            co->s.models[co->s.n_models++] = type;
+        const tirenv_model_type *type;
+        if (cli_model_type(name, &type))
+            return CLI_EXIT_USAGE;
+        if (co->s.n_models == sizeof co->s.models / sizeof co->s.models[0]) {
+            cli_error("--models: too many models in '%s'", arg);
+            return CLI_EXIT_USAGE;
         }
+        co->s.models[co->s.n_models++] = type;
         if (!p[len])
             break;
         p += len + 1;
@@ -145,106 +145,52 @@ static int parse_models(compare_options *co, const char *arg)
     return CLI_EXIT_OK;
 }
 
-/* Parses the options; returns an exit code, or -1 to go on. */
+static int parse_simulated_by(void *dst, const char *arg)
+{
+    compare_options *co = dst;
+    co->s.simulated = 1;
+    return cli_model_type(arg, &co->s.simulated_by);
+}
+
+/* Parses the options; returns an exit code, or CLI_GO_ON. */
 static int parse(int argc, char *argv[], cli_options *o, compare_options *co)
 {
-    enum {
-        OPT_DATA = CLI_OPT_FIRST_OWN,
-        OPT_NN,
-        OPT_CASES,
-        OPT_SPLIT,
-        OPT_SIMULATED_BY,
-        OPT_SIMULATED,
-        OPT_MODELS,
-        OPT_TITLE,
-        OPT_NO_IMAGES
+    int simulated = 0, no_images = 0;
+    const cli_opt own[] = {
+        {.name = "data", .kind = CLI_STRING, .dst = &co->data},
+        {.name = "cases", .kind = CLI_CUSTOM, .dst = co, .parse = parse_cases},
+        {.name = "split", .kind = CLI_CUSTOM, .dst = co, .parse = parse_split},
+        {.name = "simulated-by", .kind = CLI_CUSTOM, .dst = co, .parse = parse_simulated_by},
+        {.name = "simulated", .kind = CLI_FLAG, .dst = &simulated},
+        {.name = "models", .kind = CLI_CUSTOM, .dst = co, .parse = parse_models},
+        {.name = "title", .kind = CLI_STRING, .dst = &co->s.title},
+        {.name = "no-images", .kind = CLI_FLAG, .dst = &no_images},
+        {.name = NULL},
     };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        {"data", required_argument, NULL, OPT_DATA},
-        {"nn", required_argument, NULL, OPT_NN},
-        {"cases", required_argument, NULL, OPT_CASES},
-        {"split", required_argument, NULL, OPT_SPLIT},
-        {"simulated-by", required_argument, NULL, OPT_SIMULATED_BY},
-        {"simulated", no_argument, NULL, OPT_SIMULATED},
-        {"models", required_argument, NULL, OPT_MODELS},
-        {"title", required_argument, NULL, OPT_TITLE},
-        {"no-images", no_argument, NULL, OPT_NO_IMAGES},
-        {"output", required_argument, NULL, 'o'},
-        CLI_JOBS_LONGOPT,
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    int c, have_cases = 0, have_split = 0, code;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            co->s.out_dir = optarg;
-            break;
-        case OPT_DATA:
-            co->data = optarg;
-            break;
-        case OPT_NN:
-            co->nn_path = optarg;
-            break;
-        case OPT_CASES:
-            have_cases = 1;
-            if ((code = parse_cases(co, optarg)))
-                return code;
-            break;
-        case OPT_SPLIT:
-            have_split = 1;
-            if ((code = parse_split(co, optarg)))
-                return code;
-            break;
-        case OPT_SIMULATED_BY:
-            if (cli_model_type(optarg, &co->s.simulated_by))
-                return CLI_EXIT_USAGE;
-            co->s.simulated = 1;
-            break;
-        case OPT_SIMULATED:
-            co->s.simulated = 1;
-            break;
-        case OPT_MODELS:
-            if ((code = parse_models(co, optarg)))
-                return code;
-            break;
-        case OPT_TITLE:
-            co->s.title = optarg;
-            break;
-        case OPT_NO_IMAGES:
-            co->s.images = 0;
-            break;
-        case CLI_OPT_JOBS:
-            if (cli_parse_jobs("compare", optarg, &co->s.jobs))
-                return CLI_EXIT_USAGE;
-            break;
-        case '?':
-            usage(stderr);
+    const cli_parser p = {.name = "compare", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_NETWORK |
+                                    CLI_JOBS};
+    const int code = cli_parse(&p, argc, argv, o);
+    if (code != CLI_GO_ON)
+        return code;
+    co->s.jobs = o->jobs;
+    co->s.simulated |= simulated;
+    if (no_images)
+        co->s.images = 0;
+    if (o->output)
+        co->s.out_dir = o->output;
+    for (size_t k = 0; k < co->s.n_models; ++k)
+        if ((tirenv_model_type_flags(co->s.models[k]) & TIRENV_MODEL_NEEDS_NETWORK) &&
+            !o->nn_path) {
+            cli_error("compare: --models lists %s; expected --nn MODEL.json",
+                      tirenv_model_type_name(co->s.models[k]));
             return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(o, c, optarg))
-                return CLI_EXIT_USAGE;
         }
-    }
-    if (optind < argc) {
-        cli_error("compare: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
-    if (co->nn_listed && !co->nn_path) {
-        cli_error("compare: --models lists nn; expected --nn MODEL.json");
-        return CLI_EXIT_USAGE;
-    }
-    if (have_cases && have_split) {
+    if (co->have_cases && co->have_split) {
         cli_error("compare: expected --cases or --split, not both");
         return CLI_EXIT_USAGE;
     }
-    return -1;
+    return CLI_GO_ON;
 }
 
 /* One line per model a reader can act on: the mean RMS error and the speed. */
@@ -278,11 +224,9 @@ static void summary(const compare_options *co, const tirenv_compare_result *r)
 int cli_compare_main(int argc, char *argv[])
 {
     cli_options o;
-    cli_options_init(&o);
     compare_options co = {.s = tirenv_compare_default()};
-    co.s.jobs = cli_jobs_default();
     int code = parse(argc, argv, &o, &co);
-    if (code >= 0) {
+    if (code != CLI_GO_ON) {
         free(co.case_list);
         return code;
     }
@@ -297,7 +241,7 @@ int cli_compare_main(int argc, char *argv[])
     }
     co.s.data_label = co.data;
     co.s.tire_label = cli_tire_path(&o, tire_buf, sizeof tire_buf);
-    co.s.nn_label = co.nn_path;
+    co.s.nn_label = o.nn_path;
 
     tirenv_tire tire;
     tirenv_dataset ds = {0};
@@ -310,9 +254,9 @@ int cli_compare_main(int argc, char *argv[])
         goto done;
     int status = tirenv_dataset_read(co.data, tire.springs.R0, &ds, &diag);
     have_ds = status == TIRENV_OK;
-    if (!status && co.nn_path) {
+    if (!status && o.nn_path) {
         tirenv_train_record rec;
-        status = tirenv_nn_read_json(co.nn_path, &nn, &rec, &diag);
+        status = tirenv_nn_read_json(o.nn_path, &nn, &rec, &diag);
         if (!status)
             co.s.nn_R0 = rec.R0;
     }

@@ -56,65 +56,42 @@ static int list(const char *dir, double R0)
 
 int cli_dataset_main(int argc, char *argv[])
 {
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        CLI_JOBS_LONGOPT,
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
+    const cli_parser p = {.name = "dataset", .usage = usage, .max_args = 2,
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_JOBS};
     cli_options o;
-    cli_options_init(&o);
-    char dir_buf[1024];
-    const char *dir = cli_data_path("dataset", dir_buf, sizeof dir_buf);
-    tirenv_dataset_build_settings build = tirenv_dataset_build_default();
-    build.jobs = cli_jobs_default();
-    build.progress = progress;
-    /* "tirenv dataset ACTION [options]": the action first, then its options. */
-    const char *action = argc > 1 && argv[1][0] != '-' ? argv[1] : NULL;
-    if (action) {
-        --argc;
-        ++argv;
-    }
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            dir = optarg;
-            break;
-        case CLI_OPT_JOBS:
-            if (cli_parse_jobs("dataset", optarg, &build.jobs))
-                return CLI_EXIT_USAGE;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(&o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (action && strcmp(action, "list") == 0 && optind < argc)
-        dir = argv[optind++];
-    if (!action || (strcmp(action, "build") && strcmp(action, "list")) || optind < argc) {
+    const int parsed = cli_parse(&p, argc, argv, &o);
+    if (parsed != CLI_GO_ON)
+        return parsed;
+    /* "tirenv dataset build [-o DIR]" or "tirenv dataset list [DIR]". */
+    const char *action = o.n_args ? o.args[0] : NULL;
+    const int build = action && strcmp(action, "build") == 0;
+    const int listing = action && strcmp(action, "list") == 0;
+    if (!build && !listing) {
         cli_error("dataset: expected 'build' or 'list'%s%s", action ? ", got " : "",
                   action ? action : "");
         usage(stderr);
         return CLI_EXIT_USAGE;
     }
+    if (build && o.n_args > 1) {
+        cli_error("dataset: build writes to -o DIR, not to the argument '%s'", o.args[1]);
+        return CLI_EXIT_USAGE;
+    }
+    char dir_buf[1024];
+    const char *dir = o.n_args > 1 ? o.args[1]
+                      : o.output   ? o.output
+                                   : cli_data_path("dataset", dir_buf, sizeof dir_buf);
     tirenv_tire tire;
     int code = cli_tire(&o, &tire);
     if (code)
         return code;
-    if (strcmp(action, "list") == 0)
+    if (listing)
         return list(dir, tire.springs.R0);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_dataset_build(dir, &tire, &build, &diag);
+    tirenv_dataset_build_settings bs = tirenv_dataset_build_default();
+    bs.jobs = o.jobs;
+    bs.progress = progress;
+    const int status = tirenv_dataset_build(dir, &tire, &bs, &diag);
     if (status)
         return cli_fail(status, &diag);
     fprintf(stderr, "tirenv: dataset: 28 simulated cases written to %s\n", dir);

@@ -1,9 +1,12 @@
-/* tirenv envelope: the enveloping curve of one model over one obstacle, as CSV.
+/* tirenv envelope: the enveloping curve of one model over one obstacle, as CSV. Every model
+ * type of the library's table runs through the same path, the network (--model nn --nn FILE)
+ * and the point contact included; tirenv predict is this command with the network.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cli/cli.h"
+#include "cli/envelope.h"
 
 /* The default sweep starts and ends this far beyond the tire's first and last reach, m. */
 static const double margin = 0.02;
@@ -14,32 +17,34 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
           "                       [--x-from X] [--x-to X] [--dx DX] [--stream] [-o FILE]\n"
-          "                       [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
+          "                       [--nn FILE] [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
           "  x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n"
           "slope is the effective road slope tan(beta) = -fx/fz, the inclination of the ground\n"
-          "force (for the cam exactly (Z_f - Z_r)/l_s, docs/models.md section 7).\n"
-          "A one-line summary (peak, first rise, iterations) goes to standard error.\n"
+          "force (for the cam exactly (Z_f - Z_r)/l_s, docs/models.md section 7; for the point\n"
+          "contact the ground's slope; for the network dh/dx of its curve).\n"
+          "A one-line summary (peak, first rise, iterations) goes to standard error, after any\n"
+          "warning the model has (the network's inputs outside its training range).\n"
           "\n"
           "options:\n",
           fp);
-    cli_help_model(fp, "");
-    fputs("  --model nn --nn FILE the trained network (tirenv train), the rows as 'tirenv\n"
-          "                       predict' writes them: over --cleat the paper's curve, over\n"
-          "                       any other obstacle or --profile an extension beyond the\n"
-          "                       paper (equivalent cleats; 'tirenv predict --help'); no\n"
-          "                       --stream\n",
+    cli_help_model(fp, 0, 0, "");
+    for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
+        fprintf(fp, "%22s %s: %s\n", "", tirenv_model_type_name(*t),
+                tirenv_model_type_summary(*t));
+    fputs("  --nn FILE            the trained network (tirenv train -o) for --model nn: over\n"
+          "                       --cleat the paper's curve, over any other obstacle or\n"
+          "                       --profile an extension beyond the paper (equivalent cleats;\n"
+          "                       'tirenv predict --help')\n",
           fp);
     cli_help_load(fp);
-    fputs("  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"
-          "                       before the obstacle's first vertex to R0 + 0.02 m after its\n"
-          "                       last\n"
-          "  --dx DX              spacing of the positions, m (default 0.001)\n"
-          "  --stream             with --profile: read the file as the tire rolls, in memory\n"
+    cli_help_sweep(fp);
+    fputs("  --stream             with --profile: read the file as the tire rolls, in memory\n"
           "                       bounded by the tire's reach whatever the road's length (the\n"
-          "                       file is read twice: first to check it and find its ends)\n"
+          "                       file is read twice: first to check it and find its ends);\n"
+          "                       not for the network, which reads the whole profile\n"
           "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
           "                       '-': standard output)\n"
           "  --detail             with --model ring: two more columns, tread_max_m (the\n"
@@ -51,13 +56,6 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
     cli_help_obstacle(fp);
 }
-
-typedef struct {
-    int stream;            /* --stream */
-    int detail;            /* --detail */
-    int have_from, have_to;
-    double x_from, x_to, dx;  /* m */
-} sweep;
 
 static const char header[] = "x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n";
 
@@ -79,12 +77,9 @@ static int write_detail(FILE *fp, const tirenv_tire *tire, const tirenv_profile 
     int status = TIRENV_OK;
     for (size_t k = 0; k < n && !status; ++k) {
         double fx, fz;
-        status = tirenv_ring_forces(r, prof, pt[k].x, pt[k].z, &fx, &fz, NULL, NULL);
-        if (status) {
-            status = tirenv_error(diag, status, "", 0, "", "ring at x = %g m, z = %g m: no "
-                                  "contact solution", pt[k].x, pt[k].z);
+        status = tirenv_ring_forces(r, prof, pt[k].x, pt[k].z, &fx, &fz, NULL, NULL, diag);
+        if (status)
             break;
-        }
         fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu,%.9g,%zu\n", pt[k].x, pt[k].z,
                 pt[k].h, pt[k].slope, pt[k].fx, pt[k].fz, pt[k].contacts, pt[k].iterations,
                 tirenv_ring_tread_max(r), tirenv_ring_belt_contacts(r));
@@ -119,8 +114,10 @@ static void tally_add(tally *t, const tirenv_point *pt)
     t->n++;
 }
 
-/* The rigid disc has no contact length of its own, so it shows the one asked for, if any. */
-static void summary(tirenv_model *m, const cli_options *o, double load, const tally *t)
+/* The rigid disc has no contact length of its own, so it shows the one asked for, if any;
+ * the model's note (the network's view of the ground) ends the line. */
+static void summary(const char *cmd, tirenv_model *m, const cli_options *o, double load,
+                    const tally *t)
 {
     tirenv_flat flat;
     double l_c = 0;
@@ -134,11 +131,13 @@ static void summary(tirenv_model *m, const cli_options *o, double load, const ta
     char rise_text[64] = "no rise above 0.1 mm";
     if (t->have_rise)
         snprintf(rise_text, sizeof rise_text, "first rise at x = %.4f m", t->rise_x);
+    const char *note = tirenv_model_note(m);
     fprintf(stderr,
-            "tirenv envelope: %s model, load %.6g N (%s), %zu positions: peak h %.3f mm at "
-            "x = %.4f m, %s, iterations per position mean %.2f max %zu\n",
-            tirenv_model_name(m), load, lc_text, t->n, t->peak.h * 1e3, t->peak.x, rise_text,
-            t->n ? t->it_sum / (double)t->n : 0.0, t->it_max);
+            "tirenv %s: %s model, load %.6g N (%s), %zu positions: peak h %.3f mm at "
+            "x = %.4f m, %s, iterations per position mean %.2f max %zu%s%s\n",
+            cmd, tirenv_model_name(m), load, lc_text, t->n, t->peak.h * 1e3, t->peak.x,
+            rise_text, t->n ? t->it_sum / (double)t->n : 0.0, t->it_max, note[0] ? "; " : "",
+            note);
 }
 
 /* The streamed sweep's sink: one row out and into the tally per position. */
@@ -153,89 +152,6 @@ static int stream_row(void *ctx, const tirenv_point *pt)
     write_row(s->fp, pt);
     tally_add(&s->t, pt);
     return ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
-}
-
-/* Parses the options; returns an exit code, or -1 to go on. */
-static int parse(int argc, char *argv[], cli_options *o, const tirenv_model_type **type,
-                 sweep *s, const char **out_path)
-{
-    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_X_FROM, OPT_X_TO, OPT_DX, OPT_STREAM, OPT_DETAIL };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        CLI_LOAD_LONGOPTS,
-        CLI_OBSTACLE_LONGOPTS,
-        {"model", required_argument, NULL, OPT_MODEL},
-        {"x-from", required_argument, NULL, OPT_X_FROM},
-        {"x-to", required_argument, NULL, OPT_X_TO},
-        {"dx", required_argument, NULL, OPT_DX},
-        {"stream", no_argument, NULL, OPT_STREAM},
-        {"detail", no_argument, NULL, OPT_DETAIL},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    int c, longindex = 0;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, &longindex)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            *out_path = optarg;
-            break;
-        case OPT_STREAM:
-            s->stream = 1;
-            break;
-        case OPT_DETAIL:
-            s->detail = 1;
-            break;
-        case OPT_MODEL:
-            if (cli_model_type(optarg, type))
-                return CLI_EXIT_USAGE;
-            break;
-        case OPT_X_FROM:
-        case OPT_X_TO:
-        case OPT_DX: {
-            double *v = c == OPT_X_FROM ? &s->x_from : c == OPT_X_TO ? &s->x_to : &s->dx;
-            if (cli_parse_double(optarg, v)) {
-                cli_error("--%s: expected a number in m, got '%s'", longopts[longindex].name,
-                          optarg);
-                return CLI_EXIT_USAGE;
-            }
-            s->have_from |= c == OPT_X_FROM;
-            s->have_to |= c == OPT_X_TO;
-            break;
-        }
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("envelope: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
-    const char *missing = NULL;
-    if (!*type)
-        missing = "--model NAME";
-    else if (!o->obstacle)
-        missing = "an obstacle option";
-    else if (!o->have_load && !o->have_contact_length)
-        missing = "--load N or --contact-length M";
-    else if (s->stream && o->obstacle != CLI_OPT_PROFILE)
-        missing = "--profile FILE with --stream";
-    else if (s->detail && (*type != tirenv_model_ring || s->stream))
-        missing = "--model ring and no --stream with --detail";
-    if (missing) {
-        cli_error("envelope: expected %s; 'tirenv envelope --help' shows the options", missing);
-        return CLI_EXIT_USAGE;
-    }
-    return -1;
 }
 
 /* The first pass of --stream: checks the whole file (so that a bad row late in it fails
@@ -258,36 +174,44 @@ static int stream_extent(const char *path, double *first, double *last, tirenv_d
     return status;
 }
 
+/* The sweep's ends: as asked, or R0 + margin beyond the obstacle's first and last vertex. */
+static void sweep_ends(const cli_options *o, const tirenv_model *m, double first, double last,
+                       double *x_from, double *x_to)
+{
+    const double R0 = tirenv_model_tire(m)->springs.R0;
+    *x_from = isnan(o->x_from) ? first - R0 - margin : o->x_from;
+    *x_to = isnan(o->x_to) ? last + R0 + margin : o->x_to;
+}
+
 /* --stream: rows go out as they are computed; the output file is still all or nothing. */
-static int envelope_stream(const cli_options *o, const tirenv_tire *tire, tirenv_model *m,
-                           double load, sweep *s, const char *out_path)
+static int envelope_stream(const char *cmd, const cli_options *o, tirenv_model *m,
+                           double load)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    double first = 0, last = 0;
+    double first = 0, last = 0, x_from, x_to;
     int status = stream_extent(o->obstacle_arg, &first, &last, &diag);
     if (status)
         return cli_fail(status, &diag);
-    if (!s->have_from)
-        s->x_from = first - tire->springs.R0 - margin;
-    if (!s->have_to)
-        s->x_to = last + tire->springs.R0 + margin;
-    if (!(s->dx > 0) || !(s->x_to >= s->x_from)) {
-        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m",
-                  s->dx, s->x_from, s->x_to);
+    sweep_ends(o, m, first, last, &x_from, &x_to);
+    const double dx = isnan(o->dx) ? default_dx : o->dx;
+    if (!(x_to >= x_from)) {
+        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
+                  x_from, x_to);
         return CLI_EXIT_USAGE;
     }
     tirenv_profile_reader *in = NULL;
     tirenv_outfile out;
     stream_out so = {0};
+    const char *path = o->output ? o->output : "-";
     if (!(status = tirenv_profile_reader_open(o->obstacle_arg, &in, &diag)) &&
-        !(status = tirenv_outfile_open(&out, out_path, &diag))) {
+        !(status = tirenv_outfile_open(&out, path, &diag))) {
         so.fp = out.fp;
         fputs(header, out.fp);
-        status = tirenv_model_stream(m, in, s->x_from, s->x_to, s->dx, load, stream_row, &so,
-                                     NULL, &diag);
+        status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx,
+                                     load, stream_row, &so, NULL, &diag);
         if (status == TIRENV_EIO && ferror(out.fp))
-            status = tirenv_error(&diag, TIRENV_EIO, out_path, 0, "", "write failed");
+            status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
         if (!status)
             status = tirenv_outfile_commit(&out, &diag);
         else
@@ -296,60 +220,37 @@ static int envelope_stream(const cli_options *o, const tirenv_tire *tire, tirenv
     tirenv_profile_reader_free(in);
     if (status)
         return cli_fail(status, &diag);
-    summary(m, o, load, &so.t);
+    summary(cmd, m, o, load, &so.t);
     return CLI_EXIT_OK;
 }
 
-int cli_envelope_main(int argc, char *argv[])
+/* The whole sweep in memory, through tirenv_model_envelope, the rows written after it. */
+static int envelope_whole(const char *cmd, const cli_options *o, tirenv_model *m, double load,
+                          const tirenv_profile *prof, int detail)
 {
-    /* --model nn: the network, which reads --nn FILE (cmd_predict.c). */
-    if (cli_predict_is_nn(argc, argv))
-        return cli_predict_main(argc, argv);
-    cli_options o;
-    cli_options_init(&o);
-    const tirenv_model_type *type = NULL;
-    sweep s = {.dx = default_dx};
-    const char *out_path = "-";
-    int code = parse(argc, argv, &o, &type, &s, &out_path);
-    if (code >= 0)
-        return code;
-
-    tirenv_tire tire;
-    tirenv_model *m = NULL;
-    tirenv_profile *prof = NULL;
-    double *x = NULL;
-    tirenv_point *pt = NULL;
-    size_t n = 0;
-    double load = 0;
-    if ((code = cli_tire(&o, &tire)) || (!s.stream && (code = cli_profile(&o, &prof))) ||
-        (code = cli_model(type, &tire, &m)) || (code = cli_load(&o, m, &load)))
-        goto done;
-    if (s.stream) {
-        code = envelope_stream(&o, &tire, m, load, &s, out_path);
-        goto done;
-    }
-    double first, last;
+    double first, last, x_from, x_to, *x = NULL;
     tirenv_profile_extent(prof, &first, &last);
-    if (!s.have_from)
-        s.x_from = first - tire.springs.R0 - margin;
-    if (!s.have_to)
-        s.x_to = last + tire.springs.R0 + margin;
-    if ((code = cli_positions(s.x_from, s.x_to, s.dx, &x, &n)))
-        goto done;
-    if (!(pt = malloc(n * sizeof *pt))) {
-        code = cli_fail(TIRENV_ENOMEM, NULL);
-        goto done;
+    sweep_ends(o, m, first, last, &x_from, &x_to);
+    size_t n = 0;
+    int code = cli_positions(x_from, x_to, isnan(o->dx) ? default_dx : o->dx, &x, &n);
+    if (code)
+        return code;
+    tirenv_point *pt = malloc(n * sizeof *pt);
+    if (!pt) {
+        free(x);
+        return cli_fail(TIRENV_ENOMEM, NULL);
     }
-
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_outfile out;
     int status = tirenv_model_set(m, prof, load, &diag);
+    if (!status)
+        cli_model_warnings(cmd, m);
     /* Opened before the sweep so that a bad -o path fails at once, not after it. */
-    if (!status && !(status = tirenv_outfile_open(&out, out_path, &diag))) {
+    if (!status && !(status = tirenv_outfile_open(&out, o->output ? o->output : "-", &diag))) {
         status = tirenv_model_envelope(m, n, x, pt, NULL, &diag);
-        if (!status && s.detail) {
-            status = write_detail(out.fp, &tire, prof, pt, n, &diag);
+        if (!status && detail) {
+            status = write_detail(out.fp, tirenv_model_tire(m), prof, pt, n, &diag);
         } else if (!status) {
             fputs(header, out.fp);
             for (size_t k = 0; k < n; ++k)
@@ -362,17 +263,70 @@ int cli_envelope_main(int argc, char *argv[])
     }
     if (status) {
         code = cli_fail(status, &diag);
-        goto done;
+    } else {
+        tally t = {0};
+        for (size_t k = 0; k < n; ++k)
+            tally_add(&t, &pt[k]);
+        summary(cmd, m, o, load, &t);
     }
-    tally t = {0};
-    for (size_t k = 0; k < n; ++k)
-        tally_add(&t, &pt[k]);
-    summary(m, &o, load, &t);
-    code = CLI_EXIT_OK;
-done:
     free(pt);
     free(x);
+    return code;
+}
+
+int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_type *type,
+                     int stream, int detail)
+{
+    const char *missing = NULL;
+    if (!o->obstacle)
+        missing = "an obstacle option";
+    else if (!o->have_load && !o->have_contact_length)
+        missing = "--load N or --contact-length M";
+    else if (stream && o->obstacle != CLI_PROFILE)
+        missing = "--profile FILE with --stream";
+    else if (detail && (type != tirenv_model_ring || stream))
+        missing = "--model ring and no --stream with --detail";
+    if (missing) {
+        cli_error("%s: expected %s; 'tirenv %s --help' shows the options", cmd, missing, cmd);
+        return CLI_EXIT_USAGE;
+    }
+    if (stream && !(tirenv_model_type_flags(type) & TIRENV_MODEL_STREAMS)) {
+        cli_error("%s: --stream: the %s model reads the whole profile at once; it cannot "
+                  "stream", cmd, tirenv_model_type_name(type));
+        return CLI_EXIT_USAGE;
+    }
+    tirenv_tire tire;
+    tirenv_model *m = NULL;
+    tirenv_profile *prof = NULL;
+    double load = 0;
+    int code;
+    if (!(code = cli_tire(o, &tire)) && (stream || !(code = cli_profile(o, &prof))) &&
+        !(code = cli_model(type, &tire, o, &m)) && !(code = cli_load(o, m, &load)))
+        code = stream ? envelope_stream(cmd, o, m, load)
+                      : envelope_whole(cmd, o, m, load, prof, detail);
     tirenv_model_free(m);
     tirenv_profile_free(prof);
     return code;
+}
+
+int cli_envelope_main(int argc, char *argv[])
+{
+    int stream = 0, detail = 0;
+    const cli_opt own[] = {
+        {.name = "stream", .kind = CLI_FLAG, .dst = &stream},
+        {.name = "detail", .kind = CLI_FLAG, .dst = &detail},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "envelope", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
+                                    CLI_SWEEP | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK};
+    cli_options o;
+    const int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    if (!o.type) {
+        cli_error("envelope: expected --model NAME; 'tirenv envelope --help' shows the options");
+        return CLI_EXIT_USAGE;
+    }
+    return cli_envelope_run("envelope", &o, o.type, stream, detail);
 }

@@ -18,17 +18,17 @@ static void usage(FILE *fp)
           "--fit-radius) of the springs model, or ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
           "and ELLIPS_ORDER of the cam model, on the data set's training cases by nonlinear\n"
           "least squares on h (GSL multifit_nlinear), starting from the tire file, and\n"
-          "reports standard errors and the fit per case. The discretisation (ELEMENT_ANGLE) is a setting, not a\n"
-          "fitted parameter: --check-refinement refits with it halved and reports how much\n"
-          "the parameters and the fitted curves change.\n"
+          "reports standard errors and the fit per case. The discretisation (ELEMENT_ANGLE)\n"
+          "is a setting, not a fitted parameter: --check-refinement refits with it halved and\n"
+          "reports how much the parameters and the fitted curves change.\n"
           "\n"
           "options:\n"
           "  --data DIR           data set directory with cases.csv\n"
-          "  --model NAME         model to identify: springs (default) or cam\n"
           "  --fit-radius         also fit UNLOADED_RADIUS\n"
           "  --check-refinement   refit with ELEMENT_ANGLE / 2 and compare\n"
-          "  -o FILE              write the fitted tire (.tir); default: print only\n",
+          "  -o, --output FILE    write the fitted tire (.tir); default: print only\n",
           fp);
+    cli_help_model(fp, TIRENV_MODEL_FITTABLE, 0, " (default springs)");
     cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
@@ -94,73 +94,44 @@ static void print_report(const char *what, const tirenv_fit_report *r)
 
 int cli_fit_main(int argc, char *argv[])
 {
-    enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_MODEL, OPT_RADIUS, OPT_REFINE };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        {"data", required_argument, NULL, OPT_DATA},
-        {"model", required_argument, NULL, OPT_MODEL},
-        {"fit-radius", no_argument, NULL, OPT_RADIUS},
-        {"check-refinement", no_argument, NULL, OPT_REFINE},
-        CLI_JOBS_LONGOPT,
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
+    const char *data = NULL;
+    int fit_radius = 0, refine = 0;
+    const cli_opt own[] = {
+        {.name = "data", .kind = CLI_STRING, .dst = &data},
+        {.name = "fit-radius", .kind = CLI_FLAG, .dst = &fit_radius},
+        {.name = "check-refinement", .kind = CLI_FLAG, .dst = &refine},
+        {.name = NULL},
     };
+    const cli_parser p = {.name = "fit", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_MODEL | CLI_OUTPUT |
+                                    CLI_JOBS};
     cli_options o;
-    cli_options_init(&o);
+    const int parsed = cli_parse(&p, argc, argv, &o);
+    if (parsed != CLI_GO_ON)
+        return parsed;
     tirenv_fit_settings fs = tirenv_fit_default();
-    fs.type = tirenv_model_springs;
+    fs.type = o.type ? o.type : tirenv_model_springs;
+    fs.fit_R0 = fit_radius;
     fs.progress = progress;
-    fs.jobs = cli_jobs_default();
-    const char *data = NULL, *out = NULL;
-    int refine = 0, c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            out = optarg;
-            break;
-        case OPT_DATA:
-            data = optarg;
-            break;
-        case OPT_MODEL:
-            if (cli_model_type(optarg, &fs.type))
-                return CLI_EXIT_USAGE;
-            if (fs.type != tirenv_model_springs && fs.type != tirenv_model_cam) {
-                cli_error("fit: --model %s has no parameters tirenv fits; expected springs or "
-                          "cam (the ring is the reference tire)", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_RADIUS:
-            fs.fit_R0 = 1;
-            break;
-        case OPT_REFINE:
-            refine = 1;
-            break;
-        case CLI_OPT_JOBS:
-            if (cli_parse_jobs("fit", optarg, &fs.jobs))
-                return CLI_EXIT_USAGE;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(&o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (refine && fs.type != tirenv_model_springs) {
-        cli_error("fit: --check-refinement halves ELEMENT_ANGLE, a springs-model setting; the "
-                  "cam has no discretisation");
+    fs.jobs = o.jobs;
+    const char *out = o.output;
+    const unsigned flags = tirenv_model_type_flags(fs.type);
+    if (!(flags & TIRENV_MODEL_FITTABLE)) {
+        fprintf(stderr, "tirenv: fit: --model %s has no parameters tirenv fits; expected one of",
+                tirenv_model_type_name(fs.type));
+        for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
+            if (tirenv_model_type_flags(*t) & TIRENV_MODEL_FITTABLE)
+                fprintf(stderr, " %s", tirenv_model_type_name(*t));
+        fputs(" (the ring is the reference tire)\n", stderr);
         return CLI_EXIT_USAGE;
     }
-    if (optind < argc || !data) {
-        cli_error(data ? "fit: unexpected argument '%s'" : "fit: --data DIR is required%s",
-                  data ? argv[optind] : "");
+    if (refine && !(flags & TIRENV_MODEL_EQUILIBRIUM)) {
+        cli_error("fit: --check-refinement halves ELEMENT_ANGLE, the discretisation of the "
+                  "springs model; the %s model has none", tirenv_model_type_name(fs.type));
+        return CLI_EXIT_USAGE;
+    }
+    if (!data) {
+        cli_error("fit: --data DIR is required");
         return CLI_EXIT_USAGE;
     }
     tirenv_tire tire;

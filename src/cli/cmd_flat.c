@@ -20,7 +20,7 @@ static void usage(FILE *fp)
           "options:\n",
           fp);
     cli_help_load(fp);
-    cli_help_model(fp, " (default springs)");
+    cli_help_model(fp, 0, TIRENV_MODEL_NEEDS_NETWORK, " (default springs)");
     fputs("  --csv                CSV: load_N,z_flat_m,deflection_m,contact_length_m,\n"
           "                       stiffness_N_per_m\n",
           fp);
@@ -46,7 +46,7 @@ static int ring_tread(const tirenv_model_type *type, const tirenv_tire *tire,
     tirenv_ring *r = tirenv_ring_alloc(tire->springs.R0, &tire->ring);
     tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
     double fx, fz;
-    const int status = r && flat ? tirenv_ring_forces(r, flat, 0, f->z_flat, &fx, &fz, NULL, NULL)
+    const int status = r && flat ? tirenv_ring_forces(r, flat, 0, f->z_flat, &fx, &fz, NULL, NULL, NULL)
                                  : TIRENV_ENOMEM;
     if (!status) {
         e->tread_max = tirenv_ring_tread_max(r);
@@ -102,51 +102,24 @@ static int flat_at(tirenv_model *m, const cli_options *o, tirenv_flat *f)
 
 int cli_flat_main(int argc, char *argv[])
 {
-    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_CSV };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        CLI_LOAD_LONGOPTS,
-        {"model", required_argument, NULL, OPT_MODEL},
-        {"csv", no_argument, NULL, OPT_CSV},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
+    int csv = 0;
+    const cli_opt own[] = {
+        {.name = "csv", .kind = CLI_FLAG, .dst = &csv},
+        {.name = NULL},
     };
+    const cli_parser p = {.name = "flat", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_MODEL};
     cli_options o;
-    cli_options_init(&o);
-    const tirenv_model_type *type = tirenv_model_springs;
-    int csv = 0, c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case OPT_MODEL:
-            if (cli_model_type(optarg, &type))
-                return CLI_EXIT_USAGE;
-            break;
-        case OPT_CSV:
-            csv = 1;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(&o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("flat: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
+    const int parsed = cli_parse(&p, argc, argv, &o);
+    if (parsed != CLI_GO_ON)
+        return parsed;
+    const tirenv_model_type *type = o.type ? o.type : tirenv_model_springs;
     tirenv_tire tire;
     int code = cli_tire(&o, &tire);
     if (code)
         return code;
     tirenv_model *m;
-    if ((code = cli_model(type, &tire, &m)))
+    if ((code = cli_model(type, &tire, &o, &m)))
         return code;
     char buf[1024];
     const char *tire_path = cli_tire_path(&o, buf, sizeof buf);

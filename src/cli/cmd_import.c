@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "data/rig_impl.h"
 
 static void usage(FILE *fp)
 {
@@ -52,7 +51,7 @@ static int contact_length(const cli_options *o, const tirenv_tire *tire, double 
         return CLI_EXIT_OK;
     }
     tirenv_model *m;
-    int code = cli_model(tirenv_model_springs, tire, &m);
+    int code = cli_model(tirenv_model_springs, tire, NULL, &m);
     if (code)
         return code;
     tirenv_flat flat;
@@ -66,7 +65,7 @@ static int contact_length(const cli_options *o, const tirenv_tire *tire, double 
     return CLI_EXIT_OK;
 }
 
-static void summary(const char *log, const tirenv_rig__info *in, const tirenv_curve *c)
+static void summary(const char *log, const tirenv_import_info *in, const tirenv_curve *c)
 {
     double peak = 0;
     for (size_t k = 0; k < c->n; k++)
@@ -80,123 +79,51 @@ static void summary(const char *log, const tirenv_rig__info *in, const tirenv_cu
             peak * 1e3);
 }
 
-/* Own options, parsed into the import settings; returns an exit code. */
-typedef struct {
-    const char *log;
-    const char *output;
-    tirenv_import_settings s;
-} import_args;
-
-enum { OPT_LOG = CLI_OPT_FIRST_OWN, OPT_XN_FROM, OPT_XN_TO, OPT_DXN, OPT_SMOOTH };
-
-static int own_option(import_args *a, int code, const char *arg)
+int cli_import_main(int argc, char *argv[])
 {
-    static const struct {
-        int code;
-        const char *name, *expected;
-    } numbers[] = {
-        {OPT_XN_FROM, "x-n-from", "a number"},
-        {OPT_XN_TO, "x-n-to", "a number"},
-        {OPT_DXN, "dx-n", "a positive number"},
-        {OPT_SMOOTH, "smooth", "a positive length in m"},
+    tirenv_import_settings set = tirenv_import_default();
+    const char *log = NULL;
+    const cli_opt own[] = {
+        {.name = "log", .kind = CLI_STRING, .dst = &log},
+        {.name = "x-n-from", .kind = CLI_NUMBER, .dst = &set.xN_from},
+        {.name = "x-n-to", .kind = CLI_NUMBER, .dst = &set.xN_to},
+        {.name = "dx-n", .kind = CLI_POSITIVE, .dst = &set.dxN},
+        {.name = "smooth", .kind = CLI_POSITIVE, .dst = &set.smooth,
+         .what = "a positive length in m"},
+        {.name = NULL},
     };
-    double *target[] = {&a->s.xN_from, &a->s.xN_to, &a->s.dxN, &a->s.smooth};
-    for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; i++) {
-        if (numbers[i].code != code)
-            continue;
-        double v;
-        if (cli_parse_double(arg, &v) || (code == OPT_DXN && !(v > 0))
-            || (code == OPT_SMOOTH && !(v > 0))) {
-            cli_error("--%s: expected %s, got '%s'", numbers[i].name, numbers[i].expected,
-                      arg);
-            return CLI_EXIT_USAGE;
-        }
-        *target[i] = v;
-        return CLI_EXIT_OK;
-    }
-    return CLI_EXIT_USAGE;
-}
-
-/* Returns an exit code, or -1 once --help has been answered (nothing more to do). */
-static int parse_args(int argc, char *argv[], cli_options *o, import_args *a)
-{
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_LOAD_LONGOPTS,
-        {"cleat", required_argument, NULL, CLI_OPT_CLEAT},
-        {"log", required_argument, NULL, OPT_LOG},
-        {"x-n-from", required_argument, NULL, OPT_XN_FROM},
-        {"x-n-to", required_argument, NULL, OPT_XN_TO},
-        {"dx-n", required_argument, NULL, OPT_DXN},
-        {"smooth", required_argument, NULL, OPT_SMOOTH},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        int code = CLI_EXIT_OK;
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return -1;
-        case 'o':
-            a->output = optarg;
-            break;
-        case OPT_LOG:
-            a->log = optarg;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            code = c >= CLI_OPT_FIRST_OWN ? own_option(a, c, optarg) : cli_option(o, c, optarg);
-        }
-        if (code)
-            return code;
-    }
-    if (optind < argc) {
-        cli_error("import: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
-    const char *missing = !a->log         ? "--log FILE"
-                          : !o->obstacle ? "--cleat L,H"
-                          : !(o->have_load || o->have_contact_length)
+    const cli_parser p = {.name = "import", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_LOAD | CLI_OBSTACLE | CLI_OUTPUT};
+    cli_options o;
+    int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    const char *missing = !log                         ? "--log FILE"
+                          : o.obstacle != CLI_CLEAT    ? "--cleat L,H"
+                          : !(o.have_load || o.have_contact_length)
                               ? "--load N or --contact-length M"
                               : NULL;
     if (missing) {
         cli_error("import: %s is required ('tirenv import --help' shows the options)", missing);
         return CLI_EXIT_USAGE;
     }
-    return CLI_EXIT_OK;
-}
-
-int cli_import_main(int argc, char *argv[])
-{
-    cli_options o;
-    cli_options_init(&o);
-    import_args a = {NULL, "-", tirenv_import_default()};
-    int code = parse_args(argc, argv, &o, &a);
-    if (code)
-        return code < 0 ? CLI_EXIT_OK : code;
     tirenv_tire tire;
     if ((code = cli_tire(&o, &tire)))
         return code;
-    a.s.R0 = tire.springs.R0;
-    a.s.L = o.shape[0];
-    a.s.H = o.shape[1];
-    if ((code = contact_length(&o, &tire, &a.s.contact_length)))
+    set.R0 = tire.springs.R0;
+    set.L = o.shape[0];
+    set.H = o.shape[1];
+    if ((code = contact_length(&o, &tire, &set.contact_length)))
         return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_curve curve;
-    tirenv_rig__info info;
-    int status = tirenv_rig__import_file(a.log, &a.s, &curve, &info, &diag);
+    tirenv_import_info info;
+    int status = tirenv_rig_import_file(log, &set, &curve, &info, &diag);
     if (status == TIRENV_OK)
-        status = tirenv_curve_write_csv(a.output, &curve, NULL, &diag);
+        status = tirenv_curve_write_csv(o.output ? o.output : "-", &curve, NULL, &diag);
     if (status == TIRENV_OK)
-        summary(a.log, &info, &curve);
+        summary(log, &info, &curve);
     tirenv_curve_free(&curve);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }

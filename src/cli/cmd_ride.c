@@ -1,6 +1,7 @@
 /* tirenv ride: the pitch-plane tractor driven over a profile by each axle's effective
  * profile, for several models and speeds, with ISO 2631-1 comfort figures.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -22,9 +23,10 @@ static void usage(FILE *fp)
           "at rest vertically in static equilibrium when the run begins. The model and the\n"
           "metrics: docs/models.md sections 9 and 10.\n"
           "\n"
-          "Models: point (the classic single-point contact: the tire follows the raw profile\n"
-          "under its centre, the baseline), rigid, springs, ring, cam (effective profiles of\n"
-          "'tirenv envelope') and nn (the trained network of 'tirenv train', --nn FILE).\n"
+          "Models: every model of 'tirenv envelope' (the same effective profiles), among\n"
+          "them point (the classic single-point contact: the tire follows the raw profile\n"
+          "under its centre, the baseline) and nn (the trained network of 'tirenv train',\n"
+          "--nn FILE).\n"
           "\n"
           "A table with one row per model and speed goes to standard output (also the run's\n"
           "time against real time). With one model and one speed, -o writes the time series;\n"
@@ -81,177 +83,126 @@ static int parse_speed(const char *s, double *v)
     return 0;
 }
 
-/* Splits a comma-separated list in place into 1 to max non-empty items; 0 on success. */
-static int split(char *s, const char *items[], size_t max, size_t *n)
+/* --speed V[,V...]: 1 to RIDE_MAX_SPEEDS speeds. */
+static int parse_speeds(void *dst, const char *arg)
 {
-    for (*n = 0;; s = s + strlen(s) + 1) {
-        char *comma = strchr(s, ',');
+    ride_options *r = dst;
+    snprintf(r->speed_buf, sizeof r->speed_buf, "%s", arg);
+    r->n_speeds = 0;
+    for (char *p = r->speed_buf;; ++p) {
+        char *comma = strchr(p, ',');
         if (comma)
             *comma = '\0';
-        if (!*s || *n == max)
-            return -1;
-        items[(*n)++] = s;
+        if (!*p || r->n_speeds == RIDE_MAX_SPEEDS) {
+            cli_error("ride: --speed expects 1 to %d comma-separated speeds, got '%s'",
+                      RIDE_MAX_SPEEDS, arg);
+            return CLI_EXIT_USAGE;
+        }
+        if (parse_speed(p, &r->speeds[r->n_speeds++])) {
+            cli_error("ride: --speed expects speeds > 0 in m/s or with the suffix km/h, got "
+                      "'%s'", p);
+            return CLI_EXIT_USAGE;
+        }
         if (!comma)
-            return 0;
-    }
-}
-
-static int known_model(const char *name)
-{
-    return strcmp(name, "point") == 0 || strcmp(name, "nn") == 0 ||
-           tirenv_model_type_find(name) != NULL;
-}
-
-/* Parses the options; returns an exit code, or -1 to go on. */
-static int parse(int argc, char *argv[], cli_options *o, ride_options *r)
-{
-    enum { OPT_SPEED = CLI_OPT_FIRST_OWN, OPT_MODEL, OPT_NN, OPT_VEHICLE, OPT_X_FROM, OPT_X_TO,
-           OPT_DX, OPT_DT, OPT_SOLVER, OPT_OUT_DIR };
-    static const struct option longopts[] = {
-        CLI_OBSTACLE_LONGOPTS,
-        {"set", required_argument, NULL, CLI_OPT_SET},
-        {"speed", required_argument, NULL, OPT_SPEED},
-        {"model", required_argument, NULL, OPT_MODEL},
-        {"nn", required_argument, NULL, OPT_NN},
-        {"vehicle", required_argument, NULL, OPT_VEHICLE},
-        {"x-from", required_argument, NULL, OPT_X_FROM},
-        {"x-to", required_argument, NULL, OPT_X_TO},
-        {"dx", required_argument, NULL, OPT_DX},
-        {"dt", required_argument, NULL, OPT_DT},
-        {"solver", required_argument, NULL, OPT_SOLVER},
-        {"out-dir", required_argument, NULL, OPT_OUT_DIR},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    const char *speeds[RIDE_MAX_SPEEDS];
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
             return CLI_EXIT_OK;
-        case 'o':
-            r->out_path = optarg;
-            break;
-        case OPT_OUT_DIR:
-            r->out_dir = optarg;
-            break;
-        case OPT_NN:
-            r->nn_path = optarg;
-            break;
-        case OPT_VEHICLE:
-            r->vehicle_path = optarg;
-            break;
-        case CLI_OPT_SET:
-            if (r->n_sets == CLI_MAX_SETS) {
-                cli_error("ride: at most %d --set options", CLI_MAX_SETS);
-                return CLI_EXIT_USAGE;
-            }
-            r->sets[r->n_sets++] = optarg;
-            break;
-        case OPT_SPEED: {
-            snprintf(r->speed_buf, sizeof r->speed_buf, "%s", optarg);
-            if (split(r->speed_buf, speeds, RIDE_MAX_SPEEDS, &r->n_speeds)) {
-                cli_error("ride: --speed expects 1 to %d comma-separated speeds, got '%s'",
-                          RIDE_MAX_SPEEDS,
-                          optarg);
-                return CLI_EXIT_USAGE;
-            }
-            for (size_t i = 0; i < r->n_speeds; ++i)
-                if (parse_speed(speeds[i], &r->speeds[i])) {
-                    cli_error("ride: --speed expects speeds > 0 in m/s or with the suffix "
-                              "km/h, got '%s'", speeds[i]);
-                    return CLI_EXIT_USAGE;
-                }
-            break;
-        }
-        case OPT_MODEL:
-            snprintf(r->model_buf, sizeof r->model_buf, "%s", optarg);
-            if (split(r->model_buf, r->models, RIDE_MAX_MODELS, &r->n_models)) {
-                cli_error("ride: --model expects 1 to %d comma-separated models, got '%s'",
-                          RIDE_MAX_MODELS,
-                          optarg);
-                return CLI_EXIT_USAGE;
-            }
-            for (size_t i = 0; i < r->n_models; ++i)
-                if (!known_model(r->models[i])) {
-                    fputs("tirenv: ride: --model: expected point,", stderr);
-                    for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
-                        fprintf(stderr, " %s,", tirenv_model_type_name(*t));
-                    fprintf(stderr, " or nn, got '%s'\n", r->models[i]);
-                    return CLI_EXIT_USAGE;
-                }
-            break;
-        case OPT_X_FROM:
-        case OPT_X_TO:
-            if (cli_parse_double(optarg, c == OPT_X_FROM ? &r->x_from : &r->x_to)) {
-                cli_error("ride: --%s expects a position in m, got '%s'",
-                          c == OPT_X_FROM ? "x-from" : "x-to", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            *(c == OPT_X_FROM ? &r->have_from : &r->have_to) = 1;
-            break;
-        case OPT_DX:
-        case OPT_DT: {
-            double *v = c == OPT_DX ? &r->dx : &r->dt;
-            if (cli_parse_double(optarg, v) || !(*v > 0)) {
-                cli_error("ride: --%s expects a positive number (%s), got '%s'",
-                          c == OPT_DX ? "dx" : "dt", c == OPT_DX ? "m" : "s", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        }
-        case OPT_SOLVER:
-            if (strcmp(optarg, "rk4") == 0) {
-                r->method = TIRENV_RIDE_RK4;
-            } else if (strcmp(optarg, "rk8pd") == 0) {
-                r->method = TIRENV_RIDE_RK8PD;
-            } else {
-                cli_error("ride: --solver expects rk4 or rk8pd, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        default:
-            if (c >= CLI_OPT_CLEAT && c <= CLI_OPT_PROFILE) {
-                if (cli_option(o, c, optarg))
-                    return CLI_EXIT_USAGE;
-                break;
-            }
-            usage(stderr);
+        p = comma;
+    }
+}
+
+/* --model M[,M...]: 1 to RIDE_MAX_MODELS names from the library's table of model types. */
+static int parse_models(void *dst, const char *arg)
+{
+    ride_options *r = dst;
+    r->n_models = 0;
+    const char *p = arg;
+    for (;;) {
+        const size_t len = strcspn(p, ",");
+        char name[32];
+        if (len == 0 || len >= sizeof name || r->n_models == RIDE_MAX_MODELS) {
+            cli_error("ride: --model expects 1 to %d comma-separated models, got '%s'",
+                      RIDE_MAX_MODELS, arg);
             return CLI_EXIT_USAGE;
         }
-    }
-    if (optind < argc) {
-        cli_error("ride: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
-    if (!r->n_speeds) {
-        cli_error("ride: expected --speed V; 'tirenv ride --help' shows the options");
-        return CLI_EXIT_USAGE;
-    }
-    if (r->out_path && (r->n_models > 1 || r->n_speeds > 1)) {
-        cli_error("ride: -o writes the series of one run (one model, one speed); use "
-                  "--out-dir DIR for %zu models x %zu speeds", r->n_models, r->n_speeds);
-        return CLI_EXIT_USAGE;
-    }
-    for (size_t i = 0; i < r->n_models; ++i)
-        if (strcmp(r->models[i], "nn") == 0 && !r->nn_path) {
-            cli_error("ride: --model nn needs the network: --nn FILE (from 'tirenv train')");
+        memcpy(name, p, len);
+        name[len] = '\0';
+        const tirenv_model_type *type;
+        if (cli_model_type(name, &type))
             return CLI_EXIT_USAGE;
-        }
-    return -1;
+        r->model_names[r->n_models] = tirenv_model_type_name(type);
+        r->models[r->n_models++] = type;
+        if (!p[len])
+            return CLI_EXIT_OK;
+        p += len + 1;
+    }
+}
+
+static int parse_set(void *dst, const char *arg)
+{
+    ride_options *r = dst;
+    if (r->n_sets == CLI_MAX_SETS) {
+        cli_error("ride: at most %d --set options", CLI_MAX_SETS);
+        return CLI_EXIT_USAGE;
+    }
+    r->sets[r->n_sets++] = arg;
+    return CLI_EXIT_OK;
+}
+
+static int parse_solver(void *dst, const char *arg)
+{
+    tirenv_ride_method *method = dst;
+    if (strcmp(arg, "rk4") == 0) {
+        *method = TIRENV_RIDE_RK4;
+    } else if (strcmp(arg, "rk8pd") == 0) {
+        *method = TIRENV_RIDE_RK8PD;
+    } else {
+        cli_error("ride: --solver expects rk4 or rk8pd, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
 }
 
 int cli_ride_main(int argc, char *argv[])
 {
+    ride_options r = {.dt = 0.001, .method = TIRENV_RIDE_RK4,
+                      .models = {tirenv_model_point, tirenv_model_springs},
+                      .model_names = {"point", "springs"}, .n_models = 2};
+    const cli_opt own[] = {
+        {.name = "speed", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_speeds},
+        {.name = "model", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_models},
+        {.name = "vehicle", .kind = CLI_STRING, .dst = &r.vehicle_path},
+        {.name = "set", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_set, .repeatable = 1},
+        {.name = "dt", .kind = CLI_POSITIVE, .dst = &r.dt, .what = "a positive number in s"},
+        {.name = "solver", .kind = CLI_CUSTOM, .dst = &r.method, .parse = parse_solver},
+        {.name = "out-dir", .kind = CLI_STRING, .dst = &r.out_dir},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "ride", .usage = usage, .opts = own,
+                          .groups = CLI_OBSTACLE | CLI_SWEEP | CLI_OUTPUT | CLI_NETWORK};
     cli_options o;
-    cli_options_init(&o);
-    ride_options r = {.dx = 0.005, .dt = 0.001, .method = TIRENV_RIDE_RK4,
-                      .models = {"point", "springs"}, .n_models = 2};
-    const int code = parse(argc, argv, &o, &r);
-    if (code >= 0)
+    const int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
         return code;
+    r.nn_path = o.nn_path;
+    r.out_path = o.output;
+    r.dx = isnan(o.dx) ? 0.005 : o.dx;
+    r.have_from = !isnan(o.x_from);
+    r.have_to = !isnan(o.x_to);
+    r.x_from = o.x_from;
+    r.x_to = o.x_to;
+    if (!r.n_speeds) {
+        cli_error("ride: expected --speed V; 'tirenv ride --help' shows the options");
+        return CLI_EXIT_USAGE;
+    }
+    if (r.out_path && (r.n_models > 1 || r.n_speeds > 1)) {
+        cli_error("ride: -o writes the series of one run (one model, one speed); use "
+                  "--out-dir DIR for %zu models x %zu speeds", r.n_models, r.n_speeds);
+        return CLI_EXIT_USAGE;
+    }
+    for (size_t i = 0; i < r.n_models; ++i)
+        if ((tirenv_model_type_flags(r.models[i]) & TIRENV_MODEL_NEEDS_NETWORK) && !r.nn_path) {
+            cli_error("ride: --model %s needs the network: --nn FILE (from 'tirenv train')",
+                      r.model_names[i]);
+            return CLI_EXIT_USAGE;
+        }
     return ride_cli_run(&o, &r);
 }

@@ -19,7 +19,7 @@ static void usage(FILE *fp)
           fp);
     cli_help_obstacle(fp);
     cli_help_load(fp);
-    cli_help_model(fp, " (default ring, the reference tire)");
+    cli_help_model(fp, 0, TIRENV_MODEL_NEEDS_NETWORK, " (default ring, the reference tire)");
     fputs("  --speed M_S          cart speed, m/s (default 0.1)\n"
           "  --rate HZ            sampling rate, Hz (default 100)\n"
           "  --noise SX,SZ        sensor noise sigma on x and z, m (default 5e-5,2e-4)\n"
@@ -31,89 +31,60 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-int cli_rig_main(int argc, char *argv[])
+/* --noise SX,SZ and --offset X,Z into two fields of the rig settings. */
+static int parse_noise(void *dst, const char *arg)
 {
-    enum { OPT_MODEL = CLI_OPT_FIRST_OWN, OPT_SPEED, OPT_RATE, OPT_NOISE, OPT_OFFSET, OPT_SEED };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        CLI_LOAD_LONGOPTS,
-        CLI_OBSTACLE_LONGOPTS,
-        {"model", required_argument, NULL, OPT_MODEL},
-        {"speed", required_argument, NULL, OPT_SPEED},
-        {"rate", required_argument, NULL, OPT_RATE},
-        {"noise", required_argument, NULL, OPT_NOISE},
-        {"offset", required_argument, NULL, OPT_OFFSET},
-        {"seed", required_argument, NULL, OPT_SEED},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    cli_options o;
-    cli_options_init(&o);
-    const tirenv_model_type *type = tirenv_model_ring;
-    tirenv_rig_settings rig = tirenv_rig_default();
-    const char *out_path = NULL;
-    double pair[2];
-    long seed;
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            out_path = optarg;
-            break;
-        case OPT_MODEL:
-            if (cli_model_type(optarg, &type))
-                return CLI_EXIT_USAGE;
-            break;
-        case OPT_SPEED:
-        case OPT_RATE:
-            if (cli_parse_double(optarg, c == OPT_SPEED ? &rig.speed : &rig.rate) ||
-                !((c == OPT_SPEED ? rig.speed : rig.rate) > 0)) {
-                cli_error("rig: --%s expects a positive number, got '%s'",
-                          c == OPT_SPEED ? "speed" : "rate", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_NOISE:
-        case OPT_OFFSET:
-            if (cli_parse_doubles(optarg, pair, 2) || (c == OPT_NOISE && (pair[0] < 0 || pair[1] < 0))) {
-                cli_error("rig: --%s expects two numbers X,Z%s, got '%s'",
-                          c == OPT_NOISE ? "noise" : "offset",
-                          c == OPT_NOISE ? " (not negative)" : "", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            if (c == OPT_NOISE) {
-                rig.noise_x = pair[0];
-                rig.noise_z = pair[1];
-            } else {
-                rig.x_offset = pair[0];
-                rig.z_offset = pair[1];
-            }
-            break;
-        case OPT_SEED:
-            if (cli_parse_count(optarg, 0, 2147483647L, &seed)) {
-                cli_error("rig: --seed expects a whole number >= 0, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            rig.seed = (unsigned long)seed;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(&o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc || !out_path) {
-        cli_error(optind < argc ? "rig: unexpected argument '%s'" : "rig: -o LOG.csv is required%s",
-                  optind < argc ? argv[optind] : "");
+    tirenv_rig_settings *rig = dst;
+    double v[2];
+    if (cli_parse_doubles(arg, v, 2) || v[0] < 0 || v[1] < 0) {
+        cli_error("--noise: expected SX,SZ, two numbers >= 0 in m, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    rig->noise_x = v[0];
+    rig->noise_z = v[1];
+    return CLI_EXIT_OK;
+}
+
+static int parse_offset(void *dst, const char *arg)
+{
+    tirenv_rig_settings *rig = dst;
+    double v[2];
+    if (cli_parse_doubles(arg, v, 2)) {
+        cli_error("--offset: expected X,Z, two numbers in m, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    rig->x_offset = v[0];
+    rig->z_offset = v[1];
+    return CLI_EXIT_OK;
+}
+
+int cli_rig_main(int argc, char *argv[])
+{
+    tirenv_rig_settings rig = tirenv_rig_default();
+    long seed = (long)rig.seed;
+    const cli_opt own[] = {
+        {.name = "speed", .kind = CLI_POSITIVE, .dst = &rig.speed, .what = "a speed > 0 in m/s"},
+        {.name = "rate", .kind = CLI_POSITIVE, .dst = &rig.rate, .what = "a rate > 0 in Hz"},
+        {.name = "noise", .kind = CLI_CUSTOM, .dst = &rig, .parse = parse_noise},
+        {.name = "offset", .kind = CLI_CUSTOM, .dst = &rig, .parse = parse_offset},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L,
+         .what = "a whole number >= 0"},
+        {.name = NULL},
+    };
+    const cli_parser parser = {.name = "rig", .usage = usage, .opts = own,
+                               .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
+                                         CLI_OUTPUT | CLI_MODEL};
+    cli_options o;
+    const int parsed = cli_parse(&parser, argc, argv, &o);
+    if (parsed != CLI_GO_ON)
+        return parsed;
+    if (!o.output) {
+        cli_error("rig: -o LOG.csv is required");
+        return CLI_EXIT_USAGE;
+    }
+    rig.seed = (unsigned long)seed;
+    const tirenv_model_type *type = o.type ? o.type : tirenv_model_ring;
+    const char *out_path = o.output;
     tirenv_tire tire;
     tirenv_model *m = NULL;
     tirenv_profile *p = NULL;
@@ -122,7 +93,7 @@ int cli_rig_main(int argc, char *argv[])
     if (!code)
         code = cli_profile(&o, &p);
     if (!code)
-        code = cli_model(type, &tire, &m);
+        code = cli_model(type, &tire, &o, &m);
     if (!code)
         code = cli_load(&o, m, &load);
     tirenv_diag diag;

@@ -31,88 +31,73 @@ static void usage(FILE *fp)
           fp);
 }
 
-/* Parses the options into *s; returns an exit code, or -1 to go on. */
+static int parse_class(void *dst, const char *arg)
+{
+    tirenv_road_settings *s = dst;
+    if (strlen(arg) != 1 || isnan(tirenv_iso8608_gd0(arg[0]))) {
+        cli_error("road: --class expects one letter A to H, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    s->road_class = arg[0];
+    return CLI_EXIT_OK;
+}
+
+static int parse_band(void *dst, const char *arg)
+{
+    tirenv_road_settings *s = dst;
+    double band[2];
+    if (cli_parse_doubles(arg, band, 2) || !(band[0] > 0 && band[1] > band[0])) {
+        cli_error("road: --band expects NMIN,NMAX in cycles/m with 0 < NMIN < NMAX, got '%s'",
+                  arg);
+        return CLI_EXIT_USAGE;
+    }
+    s->n_min = band[0];
+    s->n_max = band[1];
+    return CLI_EXIT_OK;
+}
+
+static int parse_waviness(void *dst, const char *arg)
+{
+    double *w = dst;
+    if (cli_parse_double(arg, w) || !(*w >= 0)) {
+        cli_error("road: --waviness expects a number >= 0, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* Parses the options into *s; returns an exit code, or CLI_GO_ON. */
 static int parse(int argc, char *argv[], tirenv_road_settings *s, const char **out_path)
 {
-    enum { OPT_CLASS = CLI_OPT_FIRST_OWN, OPT_LENGTH, OPT_DX, OPT_SEED, OPT_BAND, OPT_WAVINESS };
-    static const struct option longopts[] = {
-        {"class", required_argument, NULL, OPT_CLASS},
-        {"length", required_argument, NULL, OPT_LENGTH},
-        {"dx", required_argument, NULL, OPT_DX},
-        {"seed", required_argument, NULL, OPT_SEED},
-        {"band", required_argument, NULL, OPT_BAND},
-        {"waviness", required_argument, NULL, OPT_WAVINESS},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
+    const char unset = '\0';
+    s->road_class = unset;
+    s->length = NAN;
+    long seed = (long)s->seed;
+    const cli_opt own[] = {
+        {.name = "class", .kind = CLI_CUSTOM, .dst = s, .parse = parse_class},
+        {.name = "length", .kind = CLI_POSITIVE, .dst = &s->length,
+         .what = "a positive length in m"},
+        {.name = "dx", .kind = CLI_POSITIVE, .dst = &s->dx, .what = "a positive length in m"},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L,
+         .what = "a whole number >= 0"},
+        {.name = "band", .kind = CLI_CUSTOM, .dst = s, .parse = parse_band},
+        {.name = "waviness", .kind = CLI_CUSTOM, .dst = &s->waviness, .parse = parse_waviness},
+        {.name = NULL},
     };
-    int have_class = 0, have_length = 0, c;
-    double band[2];
-    long seed;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            *out_path = optarg;
-            break;
-        case OPT_CLASS:
-            if (strlen(optarg) != 1 || isnan(tirenv_iso8608_gd0(optarg[0]))) {
-                cli_error("road: --class expects one letter A to H, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            s->road_class = optarg[0];
-            have_class = 1;
-            break;
-        case OPT_LENGTH:
-        case OPT_DX:
-            if (cli_parse_double(optarg, c == OPT_LENGTH ? &s->length : &s->dx) ||
-                !((c == OPT_LENGTH ? s->length : s->dx) > 0)) {
-                cli_error("road: --%s expects a positive length in m, got '%s'",
-                          c == OPT_LENGTH ? "length" : "dx", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            have_length |= c == OPT_LENGTH;
-            break;
-        case OPT_SEED:
-            if (cli_parse_count(optarg, 0, 2147483647L, &seed)) {
-                cli_error("road: --seed expects a whole number >= 0, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            s->seed = (unsigned long)seed;
-            break;
-        case OPT_BAND:
-            if (cli_parse_doubles(optarg, band, 2) || !(band[0] > 0 && band[1] > band[0])) {
-                cli_error("road: --band expects NMIN,NMAX in cycles/m with 0 < NMIN < NMAX, "
-                          "got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            s->n_min = band[0];
-            s->n_max = band[1];
-            break;
-        case OPT_WAVINESS:
-            if (cli_parse_double(optarg, &s->waviness) || !(s->waviness >= 0)) {
-                cli_error("road: --waviness expects a number >= 0, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        default:
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("road: unexpected argument '%s'", argv[optind]);
-        return CLI_EXIT_USAGE;
-    }
-    if (!have_class || !have_length) {
+    const cli_parser p = {.name = "road", .usage = usage, .opts = own, .groups = CLI_OUTPUT};
+    cli_options o;
+    const int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    s->seed = (unsigned long)seed;
+    if (o.output)
+        *out_path = o.output;
+    if (s->road_class == unset || isnan(s->length)) {
         cli_error("road: expected %s; 'tirenv road --help' shows the options",
-                  !have_class ? "--class A..H" : "--length M");
+                  s->road_class == unset ? "--class A..H" : "--length M");
         return CLI_EXIT_USAGE;
     }
-    return -1;
+    return CLI_GO_ON;
 }
 
 static void write_csv(FILE *fp, const tirenv_profile *p)
@@ -129,7 +114,7 @@ int cli_road_main(int argc, char *argv[])
     tirenv_road_settings s = tirenv_road_default();
     const char *out_path = "-";
     const int code = parse(argc, argv, &s, &out_path);
-    if (code >= 0)
+    if (code != CLI_GO_ON)
         return code;
 
     tirenv_diag diag;

@@ -48,91 +48,61 @@ static void progress(void *ctx, const char *stage, size_t step, size_t steps)
             cli_wall_seconds() - *t0, step == steps ? "\n" : "");
 }
 
-int cli_study_main(int argc, char *argv[])
+/* --simulated-by: the embedded data set's reference tire is the only simulator the study
+ * knows how to compare (tirenv_study_settings.simulated_by_ring). */
+static int parse_simulated_by(void *dst, const char *arg)
 {
-    enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_SIMULATED, OPT_MEASURED,
-           OPT_NO_IMAGES };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        CLI_METHOD_LONGOPTS,
-        {"data", required_argument, NULL, OPT_DATA},
-        {"trainer", required_argument, NULL, OPT_TRAINER},
-        {"seed", required_argument, NULL, OPT_SEED},
-        {"simulated-by", required_argument, NULL, OPT_SIMULATED},
-        {"measured", no_argument, NULL, OPT_MEASURED},
-        {"no-images", no_argument, NULL, OPT_NO_IMAGES},
-        CLI_JOBS_LONGOPT,
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    cli_options o;
-    cli_options_init(&o);
-    tirenv_study_settings s = tirenv_study_default();
-    s.jobs = cli_jobs_default();
-    char data_buf[1024];
-    s.data_dir = cli_data_path("dataset", data_buf, sizeof data_buf);
-    int data_given = 0, sim_given = 0, c;
-    long seed;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            s.out_dir = optarg;
-            break;
-        case OPT_DATA:
-            s.data_dir = optarg;
-            data_given = 1;
-            break;
-        case OPT_TRAINER:
-            s.trainer = optarg;
-            break;
-        case OPT_SEED:
-            if (cli_parse_count(optarg, 0, 2147483647L, &seed)) {
-                cli_error("study: --seed expects a whole number >= 0, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            s.seed = (unsigned long)seed;
-            break;
-        case OPT_SIMULATED:
-            if (strcmp(optarg, "ring") != 0) {
-                cli_error("study: --simulated-by expects 'ring', got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            s.simulated_by_ring = sim_given = 1;
-            break;
-        case OPT_MEASURED:
-            s.simulated_by_ring = 0;
-            sim_given = 1;
-            break;
-        case OPT_NO_IMAGES:
-            s.images = 0;
-            break;
-        case CLI_OPT_JOBS:
-            if (cli_parse_jobs("study", optarg, &s.jobs))
-                return CLI_EXIT_USAGE;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(&o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("study: unexpected argument '%s'", argv[optind]);
+    const tirenv_model_type *type;
+    if (cli_model_type(arg, &type))
+        return CLI_EXIT_USAGE;
+    if (type != tirenv_model_ring) {
+        cli_error("study: --simulated-by expects 'ring', got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    *(int *)dst = 1;
+    return CLI_EXIT_OK;
+}
+
+int cli_study_main(int argc, char *argv[])
+{
+    tirenv_study_settings s = tirenv_study_default();
+    char data_buf[1024];
+    const char *data = NULL;
+    long seed = (long)s.seed;
+    int by_ring = 0, measured = 0, no_images = 0;
+    const cli_opt own[] = {
+        {.name = "data", .kind = CLI_STRING, .dst = &data},
+        {.name = "trainer", .kind = CLI_STRING, .dst = &s.trainer},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L,
+         .what = "a whole number >= 0"},
+        {.name = "simulated-by", .kind = CLI_CUSTOM, .dst = &by_ring,
+         .parse = parse_simulated_by},
+        {.name = "measured", .kind = CLI_FLAG, .dst = &measured},
+        {.name = "no-images", .kind = CLI_FLAG, .dst = &no_images},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "study", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_JOBS};
+    cli_options o;
+    const int parsed = cli_parse(&p, argc, argv, &o);
+    if (parsed != CLI_GO_ON)
+        return parsed;
+    if (by_ring && measured) {
+        cli_error("study: --measured and --simulated-by contradict each other: give one");
+        return CLI_EXIT_USAGE;
+    }
+    s.data_dir = data ? data : cli_data_path("dataset", data_buf, sizeof data_buf);
+    s.seed = (unsigned long)seed;
+    s.images = !no_images;
+    s.jobs = o.jobs;
+    if (o.output)
+        s.out_dir = o.output;
+    /* A user's own data set is taken as measured unless they say otherwise. */
+    s.simulated_by_ring = by_ring || (!measured && !data);
     if (!tirenv_trainer_type_find(s.trainer)) {
         cli_error("study: unknown trainer '%s'; expected lm, rprop or backprop", s.trainer);
         return CLI_EXIT_USAGE;
     }
-    /* A user's own data set is taken as measured unless they say otherwise. */
-    if (data_given && !sim_given)
-        s.simulated_by_ring = 0;
     int code = cli_tire(&o, &s.tire);
     if (code)
         return code;

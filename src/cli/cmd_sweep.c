@@ -1,13 +1,16 @@
 /* tirenv sweep: a data set over a grid of cleats x regimes x tire-key values, resumable,
  * in shards for a cluster, and the merge of the shards (tirenv/sweep.h).
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <inttypes.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "tirenv/nn_file.h"
 #include "tirenv/sweep.h"
 
 static void usage(FILE *fp)
@@ -17,7 +20,7 @@ static void usage(FILE *fp)
           "                    [--model NAME] [--rig] [--set KEY=V1,V2,...]...\n"
           "                    [--split NAME | --control-fraction F --validation-fraction F\n"
           "                    [--split-seed S]] [--seed S] [--shard K/N] [--jobs N]\n"
-          "                    [--progress] [--tire FILE] [--method NAME]\n"
+          "                    [--progress] [--tire FILE] [--method NAME] [--nn FILE]\n"
           "       tirenv sweep merge PART... -o DIR\n"
           "\n"
           "Writes a data set (cases.csv, curves/, with --rig logs/; what tirenv train,\n"
@@ -45,7 +48,8 @@ static void usage(FILE *fp)
           "  --loads G,...        regimes as loads, N (the contact length is the model's)\n"
           "  -o DIR               the data set (a part, with --shard) to write\n",
           fp);
-    cli_help_model(fp, " (default ring, the reference tire)");
+    cli_help_model(fp, 0, 0, " (default ring, the reference tire); nn needs\n"
+                   "                       --nn FILE");
     fputs("  --rig                through the virtual rig (noise, import); default: the\n"
           "                       model's curve itself\n"
           "  --set KEY=V1,V2,...  sweep a numeric tire key over these values (repeatable,\n"
@@ -56,7 +60,8 @@ static void usage(FILE *fp)
           "                       permutation of the whole grid, the rest train\n"
           "  --split-seed S       the permutation's seed (default 1)\n"
           "  --seed S             rig noise: case i runs with seed S + i (default 1)\n"
-          "  --shard K/N          write part K (0 <= K < N) of N\n",
+          "  --shard K/N          write part K (0 <= K < N) of N\n"
+          "  --nn FILE            the trained network, for --model nn\n",
           fp);
     cli_help_jobs(fp);
     fputs("  --progress           a progress bar on standard error even when it is not a\n"
@@ -73,70 +78,123 @@ static void usage(FILE *fp)
 
 enum { MAX_VALUES = 100000 };
 
+/* A list option's destination. */
+typedef struct {
+    const char *opt;       /* its name, for messages */
+    double *v;
+    size_t n;
+} value_list;
+
 /* "a,b,c" into an allocated array; prints why and returns CLI_EXIT_USAGE if malformed. */
-static int parse_list(const char *opt, const char *arg, double **out, size_t *n)
+static int parse_values(const char *opt, const char *arg, double **out, size_t *n)
 {
     size_t count = 1;
     for (const char *p = arg; *p; ++p)
         count += *p == ',';
-    if (*n) {
-        cli_error("sweep: %s given twice; give all its values in one list", opt);
-        return CLI_EXIT_USAGE;
-    }
     if (count > MAX_VALUES) {
         cli_error("sweep: %s: %zu values; at most %d", opt, count, MAX_VALUES);
         return CLI_EXIT_USAGE;
     }
     double *v = malloc(count * sizeof *v);
-    char *copy = strdup(arg);
-    if (!v || !copy) {
-        free(v);
-        free(copy);
+    if (!v)
         return cli_fail(TIRENV_ENOMEM, NULL);
-    }
-    size_t k = 0;
-    char *save = NULL;
-    for (char *tok = copy; k <= count; tok = NULL) {
-        char *t = strtok_r(tok, ",", &save);
-        if (!t)
-            break;
-        if (cli_parse_double(t, &v[k])) {
-            cli_error("sweep: %s: expected comma-separated numbers, got '%s'", opt, t);
+    const char *p = arg;
+    for (size_t k = 0; k < count; ++k) {
+        const size_t len = strcspn(p, ",");
+        char field[64];
+        if (len == 0 || len >= sizeof field) {
+            cli_error("sweep: %s: expected comma-separated numbers, got '%s'", opt, arg);
             free(v);
-            free(copy);
             return CLI_EXIT_USAGE;
         }
-        ++k;
-    }
-    free(copy);
-    if (k != count) {
-        cli_error("sweep: %s: expected comma-separated numbers, got '%s'", opt, arg);
-        free(v);
-        return CLI_EXIT_USAGE;
+        memcpy(field, p, len);
+        field[len] = '\0';
+        if (cli_parse_double(field, &v[k])) {
+            cli_error("sweep: %s: expected comma-separated numbers, got '%s'", opt, field);
+            free(v);
+            return CLI_EXIT_USAGE;
+        }
+        p += len + (p[len] == ',');
     }
     *out = v;
-    *n = k;
+    *n = count;
     return CLI_EXIT_OK;
 }
 
-/* --shard K/N */
-static int parse_shard(const char *arg, size_t *k, size_t *n)
+static int parse_list(void *dst, const char *arg)
 {
+    value_list *l = dst;
+    return parse_values(l->opt, arg, &l->v, &l->n);
+}
+
+/* --shard K/N */
+static int parse_shard(void *dst, const char *arg)
+{
+    size_t *kn = dst;
     const char *slash = strchr(arg, '/');
-    long kk, nn;
+    long k, n;
     char left[32];
     if (slash && (size_t)(slash - arg) < sizeof left) {
         memcpy(left, arg, (size_t)(slash - arg));
         left[slash - arg] = '\0';
-        if (!cli_parse_count(left, 0, 1000000, &kk) && !cli_parse_count(slash + 1, 1, 1000000, &nn) &&
-            kk < nn) {
-            *k = (size_t)kk;
-            *n = (size_t)nn;
+        if (!cli_parse_count(left, 0, 1000000, &k) &&
+            !cli_parse_count(slash + 1, 1, 1000000, &n) && k < n) {
+            kn[0] = (size_t)k;
+            kn[1] = (size_t)n;
             return CLI_EXIT_OK;
         }
     }
-    cli_error("sweep: --shard expects K/N with 0 <= K < N (e.g. 0/4), got '%s'", arg);
+    cli_error("sweep: --shard: expected K/N with 0 <= K < N (e.g. 0/4), got '%s'", arg);
     return CLI_EXIT_USAGE;
+}
+
+/* The swept tire keys: --set KEY=V1,V2,... (repeatable). */
+typedef struct {
+    size_t n;
+    char *keys[TIRENV_SWEEP_MAX_KEYS];
+    double *values[TIRENV_SWEEP_MAX_KEYS];
+    size_t counts[TIRENV_SWEEP_MAX_KEYS];
+} sweep_keys;
+
+static int parse_axis(void *dst, const char *arg)
+{
+    sweep_keys *k = dst;
+    const char *eq = strchr(arg, '=');
+    if (!eq || eq == arg) {
+        cli_error("sweep: --set: expected KEY=V1,V2,..., got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    if (k->n == TIRENV_SWEEP_MAX_KEYS) {
+        cli_error("sweep: --set: at most %d keys", TIRENV_SWEEP_MAX_KEYS);
+        return CLI_EXIT_USAGE;
+    }
+    if (!(k->keys[k->n] = strndup(arg, (size_t)(eq - arg))))
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    char opt[200];
+    snprintf(opt, sizeof opt, "--set %s", k->keys[k->n]);
+    const int code = parse_values(opt, eq + 1, &k->values[k->n], &k->counts[k->n]);
+    if (code)
+        return code;
+    ++k->n;
+    return CLI_EXIT_OK;
+}
+
+/* FNV-1a (64 bit) of a file's bytes: how sweep.txt names the network a sweep evaluated. */
+static int file_fingerprint(const char *path, char out[32])
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return -1;
+    uint64_t h = UINT64_C(0xcbf29ce484222325);
+    int c;
+    while ((c = getc(fp)) != EOF) {
+        h ^= (uint64_t)(unsigned char)c;
+        h *= UINT64_C(0x100000001b3);
+    }
+    const int failed = ferror(fp);
+    fclose(fp);
+    snprintf(out, 32, "fnv1a64:%016" PRIx64, h);
+    return failed ? -1 : 0;
 }
 
 /* The progress bar: redrawn in place on a terminal; elsewhere (a batch job's log) a line at
@@ -182,87 +240,61 @@ static void progress(void *ctx, size_t done, size_t total)
     fflush(stderr);
 }
 
+/* "tirenv sweep merge PART... -o DIR": parts are as many as the shards, more than the
+ * shared parser's positional arguments, so this small form is parsed here. */
 static int merge_main(int argc, char *argv[])
 {
-    static const struct option longopts[] = {
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
     const char *out = NULL;
-    int c;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
+    const char **parts = calloc((size_t)argc, sizeof *parts);
+    size_t n = 0;
+    if (!parts)
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    int code = CLI_EXIT_OK;
+    for (int i = 1; i < argc && !code; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             usage(stdout);
+            free(parts);
             return CLI_EXIT_OK;
-        case 'o':
-            out = optarg;
-            break;
-        default:
+        }
+        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
+            strncmp(a, "--output=", 9) == 0 || (a[0] == '-' && a[1] == 'o' && a[2])) {
+            const char *v = a[1] == 'o' && a[2] ? a + 2 : strchr(a, '=') ? strchr(a, '=') + 1
+                                                                        : argv[++i];
+            if (!v) {
+                cli_error("sweep merge: -o needs a directory");
+                code = CLI_EXIT_USAGE;
+            } else if (out) {
+                cli_error("sweep merge: -o given twice; give it once");
+                code = CLI_EXIT_USAGE;
+            }
+            out = v;
+        } else if (a[0] == '-' && a[1]) {
+            cli_error("sweep merge: unknown option '%s'", a);
             usage(stderr);
-            return CLI_EXIT_USAGE;
+            code = CLI_EXIT_USAGE;
+        } else {
+            parts[n++] = a;
         }
     }
-    if (!out || optind >= argc) {
+    if (!code && (!out || n == 0)) {
         cli_error("sweep merge: expected the parts and -o DIR");
         usage(stderr);
-        return CLI_EXIT_USAGE;
+        code = CLI_EXIT_USAGE;
+    }
+    if (code) {
+        free(parts);
+        return code;
     }
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     const double t0 = cli_wall_seconds();
-    const int status =
-        tirenv_sweep_merge(out, (size_t)(argc - optind), (const char *const *)argv + optind,
-                           &diag);
+    const int status = tirenv_sweep_merge(out, n, parts, &diag);
+    free(parts);
     if (status)
         return cli_fail(status, &diag);
-    fprintf(stderr, "tirenv: sweep: %d parts merged into %s (%.1f s)\n", argc - optind, out,
+    fprintf(stderr, "tirenv: sweep: %zu parts merged into %s (%.1f s)\n", n, out,
             cli_wall_seconds() - t0);
-    return CLI_EXIT_OK;
-}
-
-typedef struct {
-    double *lists[4];      /* lengths, heights, contact lengths, loads */
-    size_t counts[4];
-    double *values[TIRENV_SWEEP_MAX_KEYS];
-    char *keys[TIRENV_SWEEP_MAX_KEYS];
-} sweep_lists;
-
-static void lists_free(sweep_lists *l)
-{
-    for (size_t k = 0; k < 4; ++k)
-        free(l->lists[k]);
-    for (size_t k = 0; k < TIRENV_SWEEP_MAX_KEYS; ++k) {
-        free(l->values[k]);
-        free(l->keys[k]);
-    }
-}
-
-/* --set KEY=V1,V2,... */
-static int parse_axis(const char *arg, tirenv_sweep_settings *s, sweep_lists *l)
-{
-    const char *eq = strchr(arg, '=');
-    if (!eq || eq == arg) {
-        cli_error("sweep: --set expects KEY=V1,V2,..., got '%s'", arg);
-        return CLI_EXIT_USAGE;
-    }
-    if (s->n_keys == TIRENV_SWEEP_MAX_KEYS) {
-        cli_error("sweep: at most %d --set keys", TIRENV_SWEEP_MAX_KEYS);
-        return CLI_EXIT_USAGE;
-    }
-    const size_t k = s->n_keys;
-    l->keys[k] = strndup(arg, (size_t)(eq - arg));
-    if (!l->keys[k])
-        return cli_fail(TIRENV_ENOMEM, NULL);
-    size_t n = 0;
-    char opt[200];
-    snprintf(opt, sizeof opt, "--set %s", l->keys[k]);
-    const int code = parse_list(opt, eq + 1, &l->values[k], &n);
-    if (code)
-        return code;
-    s->keys[k] = (tirenv_sweep_axis){l->keys[k], n, l->values[k]};
-    s->n_keys = k + 1;
     return CLI_EXIT_OK;
 }
 
@@ -270,125 +302,60 @@ int cli_sweep_main(int argc, char *argv[])
 {
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
-    enum { OPT_LENGTHS = CLI_OPT_FIRST_OWN, OPT_HEIGHTS, OPT_CONTACT_LENGTHS, OPT_LOADS,
-           OPT_MODEL, OPT_RIG, OPT_SWEEP_SET, OPT_SPLIT, OPT_CONTROL, OPT_VALIDATION,
-           OPT_SPLIT_SEED, OPT_SEED, OPT_SHARD, OPT_PROGRESS };
-    static const struct option longopts[] = {
-        {"tire", required_argument, NULL, CLI_OPT_TIRE},
-        CLI_METHOD_LONGOPTS,
-        CLI_JOBS_LONGOPT,
-        {"lengths", required_argument, NULL, OPT_LENGTHS},
-        {"heights", required_argument, NULL, OPT_HEIGHTS},
-        {"contact-lengths", required_argument, NULL, OPT_CONTACT_LENGTHS},
-        {"loads", required_argument, NULL, OPT_LOADS},
-        {"model", required_argument, NULL, OPT_MODEL},
-        {"rig", no_argument, NULL, OPT_RIG},
-        {"set", required_argument, NULL, OPT_SWEEP_SET},
-        {"split", required_argument, NULL, OPT_SPLIT},
-        {"control-fraction", required_argument, NULL, OPT_CONTROL},
-        {"validation-fraction", required_argument, NULL, OPT_VALIDATION},
-        {"split-seed", required_argument, NULL, OPT_SPLIT_SEED},
-        {"seed", required_argument, NULL, OPT_SEED},
-        {"shard", required_argument, NULL, OPT_SHARD},
-        {"progress", no_argument, NULL, OPT_PROGRESS},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
+    value_list lists[4] = {{"--lengths", NULL, 0}, {"--heights", NULL, 0},
+                           {"--contact-lengths", NULL, 0}, {"--loads", NULL, 0}};
+    sweep_keys keys;
+    memset(&keys, 0, sizeof keys);
+    const char *split = NULL, *tire_path = NULL;
+    double control = NAN, validation = NAN;
+    long seed = 1, split_seed = 1;
+    size_t shard[2] = {0, 1};
+    int rig = 0, want_progress = 0;
+    const cli_opt own[] = {
+        {.name = "lengths", .kind = CLI_CUSTOM, .dst = &lists[0], .parse = parse_list},
+        {.name = "heights", .kind = CLI_CUSTOM, .dst = &lists[1], .parse = parse_list},
+        {.name = "contact-lengths", .kind = CLI_CUSTOM, .dst = &lists[2], .parse = parse_list},
+        {.name = "loads", .kind = CLI_CUSTOM, .dst = &lists[3], .parse = parse_list},
+        {.name = "set", .kind = CLI_CUSTOM, .dst = &keys, .parse = parse_axis, .repeatable = 1},
+        {.name = "tire", .kind = CLI_STRING, .dst = &tire_path},
+        {.name = "rig", .kind = CLI_FLAG, .dst = &rig},
+        {.name = "split", .kind = CLI_STRING, .dst = &split},
+        {.name = "control-fraction", .kind = CLI_NUMBER, .dst = &control},
+        {.name = "validation-fraction", .kind = CLI_NUMBER, .dst = &validation},
+        {.name = "split-seed", .kind = CLI_COUNT, .dst = &split_seed, .min = 0,
+         .max = 2147483647L},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L},
+        {.name = "shard", .kind = CLI_CUSTOM, .dst = shard, .parse = parse_shard},
+        {.name = "progress", .kind = CLI_FLAG, .dst = &want_progress},
+        {.name = NULL},
     };
+    const cli_parser p = {.name = "sweep", .usage = usage, .opts = own,
+                          .groups = CLI_METHOD | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK |
+                                    CLI_JOBS};
     cli_options o;
-    cli_options_init(&o);
+    int code = cli_parse(&p, argc, argv, &o);
+    code = code == CLI_GO_ON ? CLI_EXIT_OK : code == CLI_EXIT_OK ? -1 : code;
     tirenv_sweep_settings s = tirenv_sweep_default();
-    s.jobs = cli_jobs_default();
-    sweep_lists l;
-    memset(&l, 0, sizeof l);
-    const char *out = NULL, *split = NULL;
-    int have_fraction = 0, want_progress = 0, c, code = CLI_EXIT_OK;
-    long count;
-    cli_getopt_reset();
-    while (!code && (c = getopt_long(argc, argv, "ho:", longopts, NULL)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            lists_free(&l);
-            return CLI_EXIT_OK;
-        case 'o':
-            out = optarg;
-            break;
-        case OPT_LENGTHS:
-        case OPT_HEIGHTS:
-        case OPT_CONTACT_LENGTHS:
-        case OPT_LOADS: {
-            static const char *const names[] = {"--lengths", "--heights", "--contact-lengths",
-                                                "--loads"};
-            const size_t k = (size_t)(c - OPT_LENGTHS);
-            code = parse_list(names[k], optarg, &l.lists[k], &l.counts[k]);
-            break;
-        }
-        case OPT_MODEL:
-            code = cli_model_type(optarg, &s.type);
-            break;
-        case OPT_RIG:
-            s.rig = 1;
-            break;
-        case OPT_SWEEP_SET:
-            code = parse_axis(optarg, &s, &l);
-            break;
-        case OPT_SPLIT:
-            split = optarg;
-            break;
-        case OPT_CONTROL:
-        case OPT_VALIDATION: {
-            double f;
-            if (cli_parse_double(optarg, &f) || !(f >= 0 && f <= 1)) {
-                cli_error("sweep: --%s-fraction expects a number in [0, 1], got '%s'",
-                          c == OPT_CONTROL ? "control" : "validation", optarg);
-                code = CLI_EXIT_USAGE;
-            }
-            *(c == OPT_CONTROL ? &s.control_fraction : &s.validation_fraction) = f;
-            have_fraction = 1;
-            break;
-        }
-        case OPT_SPLIT_SEED:
-        case OPT_SEED:
-            if (cli_parse_count(optarg, 0, 2147483647L, &count)) {
-                cli_error("sweep: --%s expects a whole number >= 0, got '%s'",
-                          c == OPT_SEED ? "seed" : "split-seed", optarg);
-                code = CLI_EXIT_USAGE;
-            }
-            *(c == OPT_SEED ? &s.seed : &s.split_seed) = (unsigned long)count;
-            break;
-        case OPT_SHARD:
-            code = parse_shard(optarg, &s.shard, &s.shards);
-            break;
-        case OPT_PROGRESS:
-            want_progress = 1;
-            break;
-        case CLI_OPT_JOBS:
-            code = cli_parse_jobs("sweep", optarg, &s.jobs);
-            break;
-        case '?':
-            usage(stderr);
-            code = CLI_EXIT_USAGE;
-            break;
-        default:
-            code = cli_option(&o, c, optarg) ? CLI_EXIT_USAGE : CLI_EXIT_OK;
-        }
-    }
-    if (!code && optind < argc) {
-        cli_error("sweep: unexpected argument '%s'", argv[optind]);
-        code = CLI_EXIT_USAGE;
-    }
-    if (!code && !out) {
+    if (!code && !o.output) {
         cli_error("sweep: -o DIR is required");
         code = CLI_EXIT_USAGE;
     }
-    if (!code && (!l.counts[0] || !l.counts[1] || !l.counts[2] == !l.counts[3])) {
+    if (!code && (!lists[0].n || !lists[1].n || !lists[2].n == !lists[3].n)) {
         cli_error("sweep: expected --lengths, --heights and one of --contact-lengths and "
                   "--loads");
         code = CLI_EXIT_USAGE;
     }
-    if (!code && split && have_fraction) {
+    const int fractions = !isnan(control) || !isnan(validation);
+    if (!code && split && fractions) {
         cli_error("sweep: --split gives every case one split; the fractions draw them: give "
                   "one or the other");
+        code = CLI_EXIT_USAGE;
+    }
+    if (!code && fractions &&
+        !((isnan(control) || (control >= 0 && control <= 1)) &&
+          (isnan(validation) || (validation >= 0 && validation <= 1)))) {
+        cli_error("sweep: --control-fraction and --validation-fraction: expected numbers in "
+                  "[0, 1]");
         code = CLI_EXIT_USAGE;
     }
     if (!code && split) {
@@ -396,38 +363,84 @@ int cli_sweep_main(int argc, char *argv[])
         while (k < 3 && strcmp(split, tirenv_split_name((tirenv_split)k)) != 0)
             ++k;
         if (k == 3) {
-            cli_error("sweep: --split expects train, control or validation, got '%s'", split);
+            cli_error("sweep: --split: expected train, control or validation, got '%s'",
+                      split);
             code = CLI_EXIT_USAGE;
         }
         s.split = (tirenv_split)k;
     }
     tirenv_tire tire;
+    o.tire_path = tire_path;
     if (!code)
         code = cli_tire(&o, &tire);
-    if (code) {
-        lists_free(&l);
-        return code;
+    /* A model that evaluates a network gets it with the radius its x_N refers to; sweep.txt
+     * names the model file by its bytes. */
+    tirenv_nn *with_net = NULL;
+    tirenv_train_record rec = {.R0 = 0};
+    char net_id[32] = "";
+    if (!code && o.type)
+        s.type = o.type;
+    if (!code && (tirenv_model_type_flags(s.type) & TIRENV_MODEL_NEEDS_NETWORK)) {
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        const int st = tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
+        if (st)
+            code = cli_fail(st, &d);
+        else if (file_fingerprint(o.nn_path, net_id)) {
+            cli_error("sweep: %s: cannot read", o.nn_path);
+            code = CLI_EXIT_DATA;
+        }
     }
-    s.lengths = l.lists[0];
-    s.n_lengths = l.counts[0];
-    s.heights = l.lists[1];
-    s.n_heights = l.counts[1];
-    s.contact_lengths = l.lists[2];
-    s.n_contact_lengths = l.counts[2];
-    s.loads = l.lists[3];
-    s.n_loads = l.counts[3];
-    progress_state ps = {.on = want_progress || isatty(STDERR_FILENO),
-                         .tty = isatty(STDERR_FILENO), .t0 = cli_wall_seconds(),
+    if (code) {
+        for (size_t k = 0; k < 4; ++k)
+            free(lists[k].v);
+        for (size_t k = 0; k < keys.n; ++k) {
+            free(keys.keys[k]);
+            free(keys.values[k]);
+        }
+        tirenv_nn_free(with_net);
+        return code < 0 ? CLI_EXIT_OK : code;
+    }
+    s.network = with_net;
+    s.network_R0 = rec.R0;
+    s.network_id = net_id;
+    s.rig = rig;
+    s.jobs = o.jobs;
+    s.seed = (unsigned long)seed;
+    s.split_seed = (unsigned long)split_seed;
+    s.control_fraction = isnan(control) ? 0 : control;
+    s.validation_fraction = isnan(validation) ? 0 : validation;
+    s.shard = shard[0];
+    s.shards = shard[1];
+    s.lengths = lists[0].v;
+    s.n_lengths = lists[0].n;
+    s.heights = lists[1].v;
+    s.n_heights = lists[1].n;
+    s.contact_lengths = lists[2].v;
+    s.n_contact_lengths = lists[2].n;
+    s.loads = lists[3].v;
+    s.n_loads = lists[3].n;
+    for (size_t k = 0; k < keys.n; ++k)
+        s.keys[k] = (tirenv_sweep_axis){keys.keys[k], keys.counts[k], keys.values[k]};
+    s.n_keys = keys.n;
+    const int tty = isatty(STDERR_FILENO);
+    progress_state ps = {.on = want_progress || tty, .tty = tty, .t0 = cli_wall_seconds(),
                          .first = (size_t)-1, .last_tenth = (size_t)-1};
     s.progress = progress;
     s.progress_ctx = &ps;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_sweep_report rep;
-    const int status = tirenv_sweep_run(out, &tire, &s, &rep, &diag);
-    lists_free(&l);
+    const int status = tirenv_sweep_run(o.output, &tire, &s, &rep, &diag);
+    for (size_t k = 0; k < 4; ++k)
+        free(lists[k].v);
+    for (size_t k = 0; k < keys.n; ++k) {
+        free(keys.keys[k]);
+        free(keys.values[k]);
+    }
+    tirenv_nn_free(with_net);
     if (status) {
-        if (ps.tty && ps.first != (size_t)-1)
+        if (tty && ps.first != (size_t)-1)
             fputc('\n', stderr);
         return cli_fail(status, &diag);
     }
@@ -437,10 +450,10 @@ int cli_sweep_main(int argc, char *argv[])
                  rep.part_cases);
     if (rep.already_complete)
         fprintf(stderr, "tirenv: sweep: %s already holds this sweep%s, complete; nothing to "
-                "do\n", out, part);
+                "do\n", o.output, part);
     else
         fprintf(stderr, "tirenv: sweep: %zu-case grid%s written to %s: %zu cases run, %zu "
-                "kept from an interrupted run (%.1f s)\n", rep.cases, part, out, rep.run,
+                "kept from an interrupted run (%.1f s)\n", rep.cases, part, o.output, rep.run,
                 rep.resumed, cli_wall_seconds() - ps.t0);
     return CLI_EXIT_OK;
 }

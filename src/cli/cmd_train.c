@@ -1,6 +1,7 @@
 /* tirenv train: the empirical model's network trained on a data set (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,7 +9,7 @@
 
 #include "cli/cli.h"
 #include "tirenv/dataset.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 static void usage(FILE *fp)
 {
@@ -100,146 +101,114 @@ static int parse_hidden(const char *s, tirenv_nn_topology *t)
     return 0;
 }
 
+/* What the options asked for; a field left at -1 (or NaN) keeps the trainer's default. */
 typedef struct {
-    const char *data, *out;
+    const char *data;
     const tirenv_trainer_type *type;
-    int have_seed, have_restarts, have_epochs, have_patience, have_hidden, have_lr,
-        have_momentum, batch, have_solver;
     long seed, restarts, epochs, patience;
+    int have_hidden, batch, have_solver;
     double learning_rate, momentum;
     tirenv_lm_solver solver;
     tirenv_nn_topology topology;
 } train_options;
 
-/* Parses the options; returns an exit code, or -1 to go on. */
-static int parse(int argc, char *argv[], cli_options *o, train_options *t)
+static int parse_trainer(void *dst, const char *arg)
 {
-    enum { OPT_DATA = CLI_OPT_FIRST_OWN, OPT_TRAINER, OPT_SEED, OPT_RESTARTS, OPT_EPOCHS,
-           OPT_PATIENCE, OPT_HIDDEN, OPT_LR, OPT_MOMENTUM, OPT_BATCH, OPT_SOLVER };
-    static const struct option longopts[] = {
-        CLI_TIRE_LONGOPTS,
-        {"data", required_argument, NULL, OPT_DATA},
-        {"trainer", required_argument, NULL, OPT_TRAINER},
-        {"seed", required_argument, NULL, OPT_SEED},
-        {"restarts", required_argument, NULL, OPT_RESTARTS},
-        {"epochs", required_argument, NULL, OPT_EPOCHS},
-        {"patience", required_argument, NULL, OPT_PATIENCE},
-        {"hidden", required_argument, NULL, OPT_HIDDEN},
-        {"learning-rate", required_argument, NULL, OPT_LR},
-        {"momentum", required_argument, NULL, OPT_MOMENTUM},
-        {"batch", no_argument, NULL, OPT_BATCH},
-        {"lm-solver", required_argument, NULL, OPT_SOLVER},
-        {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0},
-    };
-    int c, longindex = 0;
-    cli_getopt_reset();
-    while ((c = getopt_long(argc, argv, "ho:", longopts, &longindex)) != -1) {
-        switch (c) {
-        case 'h':
-            usage(stdout);
-            return CLI_EXIT_OK;
-        case 'o':
-            t->out = optarg;
-            break;
-        case OPT_DATA:
-            t->data = optarg;
-            break;
-        case OPT_TRAINER:
-            if (!(t->type = tirenv_trainer_type_find(optarg))) {
-                cli_error("--trainer: expected backprop, rprop or lm, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            break;
-        case OPT_SEED:
-        case OPT_RESTARTS:
-        case OPT_EPOCHS:
-        case OPT_PATIENCE: {
-            const long min = c == OPT_SEED || c == OPT_PATIENCE ? 0 : 1;
-            long *v = c == OPT_SEED ? &t->seed : c == OPT_RESTARTS ? &t->restarts
-                      : c == OPT_EPOCHS ? &t->epochs : &t->patience;
-            if (cli_parse_count(optarg, min, LONG_MAX, v)) {
-                cli_error("--%s: expected an integer >= %ld, got '%s'",
-                          longopts[longindex].name, min, optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_seed |= c == OPT_SEED;
-            t->have_restarts |= c == OPT_RESTARTS;
-            t->have_epochs |= c == OPT_EPOCHS;
-            t->have_patience |= c == OPT_PATIENCE;
-            break;
-        }
-        case OPT_HIDDEN:
-            if (parse_hidden(optarg, &t->topology)) {
-                cli_error("--hidden: expected 1 to %d comma-separated layer sizes from 1 to %d, "
-                          "got '%s'", TIRENV_NN_MAX_LAYERS - 2, TIRENV_NN_MAX_WIDTH, optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_hidden = 1;
-            break;
-        case OPT_LR:
-        case OPT_MOMENTUM: {
-            double v;
-            const int lr = c == OPT_LR;
-            if (cli_parse_double(optarg, &v) || (lr ? !(v > 0) : !(v >= 0 && v < 1))) {
-                cli_error("--%s: expected %s, got '%s'", longopts[longindex].name,
-                          lr ? "a number > 0" : "a number in [0, 1)", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            *(lr ? &t->learning_rate : &t->momentum) = v;
-            *(lr ? &t->have_lr : &t->have_momentum) = 1;
-            break;
-        }
-        case OPT_BATCH:
-            t->batch = 1;
-            break;
-        case OPT_SOLVER:
-            if (strcmp(optarg, "cholesky") == 0)
-                t->solver = TIRENV_LM_CHOLESKY;
-            else if (strcmp(optarg, "gsl") == 0)
-                t->solver = TIRENV_LM_GSL;
-            else {
-                cli_error("--lm-solver: expected cholesky or gsl, got '%s'", optarg);
-                return CLI_EXIT_USAGE;
-            }
-            t->have_solver = 1;
-            break;
-        case '?':
-            usage(stderr);
-            return CLI_EXIT_USAGE;
-        default:
-            if (cli_option(o, c, optarg))
-                return CLI_EXIT_USAGE;
-        }
-    }
-    if (optind < argc) {
-        cli_error("train: unexpected argument '%s'", argv[optind]);
+    const tirenv_trainer_type **type = dst;
+    if (!(*type = tirenv_trainer_type_find(arg))) {
+        cli_error("--trainer: expected backprop, rprop or lm, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    return CLI_EXIT_OK;
+}
+
+static int parse_hidden_opt(void *dst, const char *arg)
+{
+    train_options *t = dst;
+    if (parse_hidden(arg, &t->topology)) {
+        cli_error("--hidden: expected 1 to %d comma-separated layer sizes from 1 to %d, got "
+                  "'%s'", TIRENV_NN_MAX_LAYERS - 2, TIRENV_NN_MAX_WIDTH, arg);
+        return CLI_EXIT_USAGE;
+    }
+    t->have_hidden = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_momentum(void *dst, const char *arg)
+{
+    double *v = dst;
+    if (cli_parse_double(arg, v) || !(*v >= 0 && *v < 1)) {
+        cli_error("--momentum: expected a number in [0, 1), got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_solver(void *dst, const char *arg)
+{
+    train_options *t = dst;
+    if (strcmp(arg, "cholesky") == 0)
+        t->solver = TIRENV_LM_CHOLESKY;
+    else if (strcmp(arg, "gsl") == 0)
+        t->solver = TIRENV_LM_GSL;
+    else {
+        cli_error("--lm-solver: expected cholesky or gsl, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    t->have_solver = 1;
+    return CLI_EXIT_OK;
+}
+
+/* Parses the options; returns an exit code, or CLI_GO_ON. */
+static int parse(int argc, char *argv[], cli_options *o, train_options *t)
+{
+    const cli_opt own[] = {
+        {.name = "data", .kind = CLI_STRING, .dst = &t->data},
+        {.name = "trainer", .kind = CLI_CUSTOM, .dst = &t->type, .parse = parse_trainer},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &t->seed, .min = 0, .max = LONG_MAX,
+         .what = "an integer >= 0"},
+        {.name = "restarts", .kind = CLI_COUNT, .dst = &t->restarts, .min = 1,
+         .max = LONG_MAX, .what = "an integer >= 1"},
+        {.name = "epochs", .kind = CLI_COUNT, .dst = &t->epochs, .min = 1, .max = LONG_MAX,
+         .what = "an integer >= 1"},
+        {.name = "patience", .kind = CLI_COUNT, .dst = &t->patience, .min = 0,
+         .max = LONG_MAX, .what = "an integer >= 0"},
+        {.name = "hidden", .kind = CLI_CUSTOM, .dst = t, .parse = parse_hidden_opt},
+        {.name = "learning-rate", .kind = CLI_POSITIVE, .dst = &t->learning_rate,
+         .what = "a number > 0"},
+        {.name = "momentum", .kind = CLI_CUSTOM, .dst = &t->momentum, .parse = parse_momentum},
+        {.name = "batch", .kind = CLI_FLAG, .dst = &t->batch},
+        {.name = "lm-solver", .kind = CLI_CUSTOM, .dst = t, .parse = parse_solver},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "train", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_OUTPUT};
+    const int code = cli_parse(&p, argc, argv, o);
+    if (code != CLI_GO_ON)
+        return code;
     if (!t->data) {
         cli_error("train: expected --data DIR; 'tirenv train --help' shows the options");
         return CLI_EXIT_USAGE;
     }
-    return -1;
+    return CLI_GO_ON;
 }
 
 static tirenv_train_settings settings_from(const train_options *t)
 {
     tirenv_train_settings s = tirenv_train_default(t->type);
-    if (t->have_seed)
+    if (t->seed >= 0)
         s.seed = (unsigned long)t->seed;
-    if (t->have_restarts)
+    if (t->restarts >= 0)
         s.restarts = (size_t)t->restarts;
-    if (t->have_epochs)
+    if (t->epochs >= 0)
         s.max_epochs = (size_t)t->epochs;
-    if (t->have_patience)
+    if (t->patience >= 0)
         s.patience = (size_t)t->patience;
     if (t->have_hidden)
         s.topology = t->topology;
-    if (t->have_lr)
+    if (!isnan(t->learning_rate))
         s.backprop.learning_rate = t->learning_rate;
-    if (t->have_momentum)
+    if (!isnan(t->momentum))
         s.backprop.momentum = t->momentum;
     if (t->batch)
         s.backprop.online = 0;
@@ -273,12 +242,13 @@ static void print_report(const char *data, const tirenv_dataset *ds,
 int cli_train_main(int argc, char *argv[])
 {
     cli_options o;
-    cli_options_init(&o);
     train_options t;
     memset(&t, 0, sizeof t);
     t.type = tirenv_trainer_lm;
+    t.seed = t.restarts = t.epochs = t.patience = -1;
+    t.learning_rate = t.momentum = NAN;
     int code = parse(argc, argv, &o, &t);
-    if (code >= 0)
+    if (code != CLI_GO_ON)
         return code;
 
     tirenv_tire tire;
@@ -320,7 +290,7 @@ int cli_train_main(int argc, char *argv[])
     }
     print_report(t.data, &ds, &set, b.trainer, &rep);
 
-    if (t.out) {
+    if (o.output) {
         tirenv_train_record rec;
         memset(&rec, 0, sizeof rec);
         snprintf(rec.trainer, sizeof rec.trainer, "%s", b.trainer);
@@ -334,11 +304,11 @@ int cli_train_main(int argc, char *argv[])
         rec.fingerprint = h;
         rec.R0 = tire.springs.R0;
         snprintf(rec.data, sizeof rec.data, "%s", t.data);
-        if ((status = tirenv_nn_write_json(t.out, nn, &rec, &diag))) {
+        if ((status = tirenv_nn_write_json(o.output, nn, &rec, &diag))) {
             code = cli_fail(status, &diag);
             goto done;
         }
-        printf("  model written to %s\n", t.out);
+        printf("  model written to %s\n", o.output);
     } else {
         printf("  model not saved (no -o FILE)\n");
     }

@@ -18,12 +18,12 @@ size_t cli_jobs_default(void)
     return online > 0 ? (size_t)online : 1;
 }
 
-int cli_parse_jobs(const char *cmd, const char *arg, size_t *jobs)
+int cli_parse_jobs(const char *arg, size_t *jobs)
 {
     long n;
     if (cli_parse_count(arg, 1, CLI_MAX_JOBS, &n)) {
-        cli_error("%s: --jobs expects a whole number from 1 to %d, got '%s'", cmd,
-                  CLI_MAX_JOBS, arg);
+        cli_error("--jobs: expected a whole number from 1 to %d, got '%s'", CLI_MAX_JOBS,
+                  arg);
         return CLI_EXIT_USAGE;
     }
     *jobs = (size_t)n;

@@ -1,8 +1,10 @@
 /* tirenv: the command-line tool. A table of subcommands drives dispatch and "tirenv help",
  * as in kmod's tools/kmod.c; each subcommand lives in its own cmd_<name>.c.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
 
 #include "cli/cli.h"
 #include "tirenv/version.h"
@@ -73,7 +75,8 @@ static const cli_command *find_command(const char *name)
 /* "tirenv help" lists everything; "tirenv help CMD" is "tirenv CMD --help". */
 static int help_main(int argc, char *argv[])
 {
-    if (argc < 2 || strcmp(argv[1], "help") == 0) {
+    if (argc < 2 || strcmp(argv[1], "help") == 0 || strcmp(argv[1], "--help") == 0 ||
+        strcmp(argv[1], "-h") == 0) {
         usage(stdout);
         return CLI_EXIT_OK;
     }
@@ -98,6 +101,9 @@ int main(int argc, char *argv[])
         {"version", no_argument, NULL, 'V'},
         {NULL, 0, NULL, 0},
     };
+    /* The library checks every GSL status and reports failures itself; GSL's default handler
+     * would abort first. Setting it is the program's business, not the library's (error.h). */
+    gsl_set_error_handler_off();
     int c;
     /* '+' stops at the command name, so its options are left for it to parse. */
     while ((c = getopt_long(argc, argv, "+hV", longopts, NULL)) != -1) {

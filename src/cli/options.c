@@ -1,6 +1,8 @@
-/* What the subcommands share: number parsing, the tire / load / obstacle options, and the
- * mapping from library status to exit code. SPDX-License-Identifier: GPL-3.0-or-later */
+/* What the subcommands share once their options are parsed (parse.c): the tire, the model
+ * and its network, the load, the positions, number parsing, and the mapping from library
+ * status to exit code. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "cli/cli.h"
+#include "tirenv/nn_file.h"
 
 #include <errno.h>
 #include <math.h>
@@ -9,9 +11,6 @@
 #include <string.h>
 #include <time.h>
 
-/* Resolution of the generated curved obstacles: a 1 degree polygon for the cylinder and 64
- * vertices per sine period keep the polyline within 0.02 % of the curve's height. */
-enum { CYLINDER_SEGMENTS = 180, SINE_POINTS_PER_PERIOD = 64 };
 
 void cli_error(const char *fmt, ...)
 {
@@ -107,152 +106,6 @@ int cli_parse_count(const char *s, long min, long max, long *v)
     return 0;
 }
 
-void cli_options_init(cli_options *o)
-{
-    memset(o, 0, sizeof *o);
-}
-
-void cli_getopt_reset(void)
-{
-    optind = 0;
-}
-
-/* The numbers each obstacle option takes, and how to say so when they are malformed. */
-static const struct {
-    int code;
-    const char *name;
-    size_t n;
-    const char *expected;
-} obstacles[] = {
-    {CLI_OPT_CLEAT, "cleat", 2, "L,H: length and height in m"},
-    {CLI_OPT_STEP, "step", 2, "X0,H: position and height in m (H < 0 steps down)"},
-    {CLI_OPT_TRAPEZOID, "trapezoid", 3, "LTOP,LBASE,H: top and base lengths and height in m"},
-    {CLI_OPT_TRIANGLE, "triangle", 2, "L,H: base length and height in m"},
-    {CLI_OPT_CYLINDER, "cylinder", 1, "R: radius in m"},
-    {CLI_OPT_SINE, "sine", 3, "A,WAVELENGTH,PERIODS: amplitude and wavelength in m, periods"},
-    {CLI_OPT_PROFILE, "profile", 0, "FILE.csv with header x_m,z_m"},
-};
-
-enum { N_OBSTACLES = sizeof obstacles / sizeof obstacles[0] };
-
-/* Index of an obstacle option in the table, or N_OBSTACLES if code is none of them. */
-static size_t obstacle_index(int code)
-{
-    size_t i = 0;
-    while (i < N_OBSTACLES && obstacles[i].code != code)
-        ++i;
-    return i;
-}
-
-int cli_option(cli_options *o, int code, const char *arg)
-{
-    switch (code) {
-    case CLI_OPT_TIRE:
-        o->tire_path = arg;
-        return CLI_EXIT_OK;
-    case CLI_OPT_SET:
-        if (o->n_sets == CLI_MAX_SETS) {
-            cli_error("--set: at most %d assignments", CLI_MAX_SETS);
-            return CLI_EXIT_USAGE;
-        }
-        o->sets[o->n_sets++] = arg;
-        return CLI_EXIT_OK;
-    case CLI_OPT_METHOD:
-        if (strcmp(arg, "newton") == 0)
-            o->method = TIRENV_EQ_NEWTON;
-        else if (strcmp(arg, "secant") == 0)
-            o->method = TIRENV_EQ_SECANT;
-        else if (strcmp(arg, "brent") == 0)
-            o->method = TIRENV_EQ_BRENT;
-        else {
-            cli_error("--method: expected newton, secant or brent, got '%s'", arg);
-            return CLI_EXIT_USAGE;
-        }
-        o->have_method = 1;
-        return CLI_EXIT_OK;
-    case CLI_OPT_LOAD:
-    case CLI_OPT_CONTACT_LENGTH: {
-        const int is_load = code == CLI_OPT_LOAD;
-        double v;
-        if (cli_parse_double(arg, &v)) {
-            cli_error("--%s: expected a number in %s, got '%s'",
-                      is_load ? "load" : "contact-length", is_load ? "N" : "m", arg);
-            return CLI_EXIT_USAGE;
-        }
-        if (is_load ? o->have_contact_length : o->have_load) {
-            cli_error("--load and --contact-length exclude each other: give one");
-            return CLI_EXIT_USAGE;
-        }
-        *(is_load ? &o->load : &o->contact_length) = v;
-        *(is_load ? &o->have_load : &o->have_contact_length) = 1;
-        return CLI_EXIT_OK;
-    }
-    default:
-        break;
-    }
-    /* An obstacle option; anything else is a subcommand's code it forgot to handle. */
-    const size_t i = obstacle_index(code);
-    if (i == N_OBSTACLES) {
-        cli_error("internal error: unhandled option code %d", code);
-        return CLI_EXIT_USAGE;
-    }
-    if (o->obstacle && o->obstacle != code) {
-        cli_error("--%s: only one obstacle option may be given (already --%s)",
-                  obstacles[i].name, obstacles[obstacle_index(o->obstacle)].name);
-        return CLI_EXIT_USAGE;
-    }
-    if (obstacles[i].n && cli_parse_doubles(arg, o->shape, obstacles[i].n)) {
-        cli_error("--%s: expected %s, got '%s'", obstacles[i].name, obstacles[i].expected, arg);
-        return CLI_EXIT_USAGE;
-    }
-    o->obstacle = code;
-    o->obstacle_arg = arg;
-    return CLI_EXIT_OK;
-}
-
-void cli_help_tire(FILE *fp, int with_method)
-{
-    fputs("  --tire FILE          tire property file (.tir); default: tires/default.tir in\n"
-          "                       the data directory ($TIRENV_DATA, else the installed data)\n"
-          "  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
-          "                       applied in order), e.g. --set RADIAL_STIFFNESS=1.8e6\n",
-          fp);
-    if (with_method)
-        fputs("  --method M           equilibrium solver: newton (default), secant (the\n"
-              "                       paper's eq. 2) or brent\n",
-              fp);
-}
-
-void cli_help_load(FILE *fp)
-{
-    fputs("  --load N             vertical load, N\n"
-          "  --contact-length M   the load at which the model's flat-ground contact length\n"
-          "                       is M, in m (excludes --load)\n",
-          fp);
-}
-
-void cli_help_model(FILE *fp, const char *fallback)
-{
-    fputs("  --model NAME         one of", fp);
-    for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
-        fprintf(fp, " %s", tirenv_model_type_name(*t));
-    fprintf(fp, "%s\n", fallback);
-}
-
-void cli_help_obstacle(FILE *fp)
-{
-    fputs("obstacle (exactly one; lengths in m, centred at x = 0):\n"
-          "  --cleat L,H          rectangular cleat\n"
-          "  --step X0,H          step of height H at X0 (H < 0 steps down)\n"
-          "  --trapezoid LTOP,LBASE,H\n"
-          "  --triangle L,H       triangle of base L\n"
-          "  --cylinder R         half-cylinder of radius R\n"
-          "  --sine A,WAVELENGTH,PERIODS\n"
-          "                       z = A*(1 - cos(2*pi*x/WAVELENGTH)) from x = 0\n"
-          "  --profile FILE.csv   measured profile: header x_m,z_m, one vertex per line\n",
-          fp);
-}
-
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
 {
     return o->tire_path ? o->tire_path : cli_data_path("tires/default.tir", buf, n);
@@ -303,12 +156,44 @@ int cli_model_type(const char *name, const tirenv_model_type **type)
     return CLI_EXIT_USAGE;
 }
 
-int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, tirenv_model **out)
+/* The network comes with the radius its x_N refers to, recorded in the model file. */
+int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_options *o,
+              tirenv_model **out)
 {
     *out = tirenv_model_alloc(type, tire);
     if (!*out)  /* the tire was checked: only memory is left */
         return cli_fail(TIRENV_ENOMEM, NULL);
+    if (!(tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
+        return CLI_EXIT_OK;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_nn *nn = NULL;
+    tirenv_train_record rec;
+    int status = o && o->nn_path
+                     ? tirenv_nn_read_json(o->nn_path, &nn, &rec, &diag)
+                     : tirenv_error(&diag, TIRENV_EINVAL, "", 0, "network",
+                                    "the %s model needs a trained network (--nn FILE)",
+                                    tirenv_model_type_name(type));
+    if (!status && (status = tirenv_model_set_network(*out, nn, rec.R0, &diag)) &&
+        !diag.file[0])
+        snprintf(diag.file, sizeof diag.file, "%s", o->nn_path);
+    tirenv_nn_free(nn);
+    if (status) {
+        tirenv_model_free(*out);
+        *out = NULL;
+        return cli_fail(status, &diag);
+    }
     return CLI_EXIT_OK;
+}
+
+void cli_model_warnings(const char *cmd, const tirenv_model *m)
+{
+    const char *w = tirenv_model_warnings(m);
+    while (*w) {
+        const size_t len = strcspn(w, "\n");
+        fprintf(stderr, "tirenv: %s: warning: %.*s\n", cmd, (int)len, w);
+        w += len + (w[len] == '\n');
+    }
 }
 
 int cli_load(const cli_options *o, tirenv_model *m, double *load)
@@ -322,42 +207,6 @@ int cli_load(const cli_options *o, tirenv_model *m, double *load)
     const int status =
         tirenv_model_load_for_contact_length(m, o->contact_length, load, &diag);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
-}
-
-int cli_profile(const cli_options *o, tirenv_profile **out)
-{
-    const double *s = o->shape;
-    *out = NULL;
-    switch (o->obstacle) {
-    case CLI_OPT_PROFILE: {
-        tirenv_diag diag;
-        tirenv_diag_clear(&diag);
-        const int status = tirenv_profile_read_csv(o->obstacle_arg, out, &diag);
-        return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
-    }
-    case CLI_OPT_CLEAT: *out = tirenv_profile_cleat(s[0], s[1]); break;
-    case CLI_OPT_STEP: *out = tirenv_profile_step(s[0], s[1]); break;
-    case CLI_OPT_TRAPEZOID: *out = tirenv_profile_trapezoid(s[0], s[1], s[2]); break;
-    case CLI_OPT_TRIANGLE: *out = tirenv_profile_triangle(s[0], s[1]); break;
-    case CLI_OPT_CYLINDER: *out = tirenv_profile_half_cylinder(s[0], CYLINDER_SEGMENTS); break;
-    case CLI_OPT_SINE:
-        *out = tirenv_profile_sine(s[0], s[1], s[2], SINE_POINTS_PER_PERIOD);
-        break;
-    default:
-        cli_error("an obstacle option is required (--cleat, --step, --trapezoid, --triangle, "
-                  "--cylinder, --sine or --profile)");
-        return CLI_EXIT_USAGE;
-    }
-    if (*out)
-        return CLI_EXIT_OK;
-    /* The generators refuse non-positive sizes (and a zero step) with NULL. */
-    const size_t i = obstacle_index(o->obstacle);
-    const char *why = o->obstacle == CLI_OPT_STEP        ? "H nonzero"
-                      : o->obstacle == CLI_OPT_TRAPEZOID ? "all positive, LBASE >= LTOP"
-                                                         : "all positive";
-    cli_error("--%s %s: not a valid obstacle; expected %s, %s", obstacles[i].name,
-              o->obstacle_arg, obstacles[i].expected, why);
-    return CLI_EXIT_DATA;
 }
 
 /* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by

@@ -5,7 +5,7 @@
 
 #include "cli/cli.h"
 #include "tirenv/comfort.h"
-#include "tirenv/nn_road.h"
+#include "tirenv/nn.h"
 #include "tirenv/ride.h"
 
 enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = 16 };
@@ -17,8 +17,9 @@ typedef struct {
     const char *nn_path;             /* --nn */
     const char *out_path;            /* -o: the one run's series */
     const char *out_dir;             /* --out-dir */
-    char model_buf[256], speed_buf[256];
-    const char *models[RIDE_MAX_MODELS];
+    char speed_buf[256];
+    const tirenv_model_type *models[RIDE_MAX_MODELS];
+    const char *model_names[RIDE_MAX_MODELS];  /* their names, for the files and tables */
     size_t n_models;
     double speeds[RIDE_MAX_SPEEDS];  /* m/s */
     size_t n_speeds;
@@ -49,13 +50,13 @@ typedef struct {
     size_t n;
 } ride_series;
 
-/* What one axle's tires follow on the grid x0 + k*dx (k < n), into w[]: model "point" (the
- * profile itself), a model type's effective height at the load of one tire (N), or "nn", the
- * network nn over the profile (nn_road.h, x_N referred to R0_nn, m) at the springs model's
- * contact length for this tire and load, its decomposition's counts in *info if not NULL. */
-int ride_cli_axle_input(const char *model, const tirenv_tire *tire, double load,
+/* What one axle's tires follow on the grid x0 + k*dx (k < n), into w[]: the effective height
+ * of a model of this type at the load of one tire (N), the same for every type (the point
+ * contact: the profile itself). A type that needs a network gets nn (x_N referred to R0_nn,
+ * m; 0: the tire's). The model's warnings, if any, are copied into warnings (may be NULL). */
+int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, double load,
                         const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
-                        double dx, size_t n, double w[], tirenv_nn_road_info *info,
+                        double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
 
 /* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes

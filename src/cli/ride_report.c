@@ -7,24 +7,11 @@
 #include <string.h>
 
 #include "cli/ride_cli.h"
-#include "study/plot.h"
+#include "tirenv/plot.h"
 
 /* At most this many points per line in the seat plot (a 1 km road at 1 kHz has 360,000); and
  * the longest Welch segment, 4096 samples: 0.24 Hz bins at 1 kHz. */
 enum { SEAT_MAX_POINTS = 20000, WELCH_MAX_SEGMENT = 4096 };
-
-/* Line colours by model, point contact first: the same model keeps its colour across plots. */
-static const char *colour(const char *model)
-{
-    static const struct {
-        const char *model, *colour;
-    } table[] = {{"point", "#d62728"}, {"rigid", "#7f7f7f"}, {"springs", "#1f77b4"},
-                 {"ring", "#2ca02c"},  {"cam", "#ff7f0e"},   {"nn", "#9467bd"}};
-    for (size_t i = 0; i < sizeof table / sizeof table[0]; ++i)
-        if (strcmp(table[i].model, model) == 0)
-            return table[i].colour;
-    return "black";
-}
 
 static int write_csv(const char *path, const ride_options *r, const ride_result res[],
                      tirenv_diag *diag)
@@ -89,15 +76,17 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
             "models = \"",
             what, base, base, base, base);
     for (size_t i = 0; i < r->n_models; ++i)
-        fprintf(fp, "%s%s", i ? " " : "", r->models[i]);
+        fprintf(fp, "%s%s", i ? " " : "", r->model_names[i]);
     fputs("\"\nspeeds = \"", fp);
     for (size_t j = 0; j < r->n_speeds; ++j)
         fprintf(fp, "%s%g", j ? " " : "", r->speeds[j] * 3.6);
     fputs("\"   # km/h\n", fp);
-    for (size_t i = 0; i < r->n_models; ++i)
-        fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f   # %s\n", i + 1,
-                colour(r->models[i]), strcmp(r->models[i], "point") == 0 ? 1.0 : 1.8,
-                r->models[i]);
+    for (size_t i = 0; i < r->n_models; ++i) {
+        /* The colours of every tirenv plot: a model looks the same here as in the study. */
+        const tirenv_plot_style st = tirenv_plot_style_of(r->model_names[i], i);
+        fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
+                st.width, st.dash, r->model_names[i]);
+    }
     fprintf(fp, "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key top right box opaque\n"
             "\n"
             "do for [pass = 1:2] {\n"
@@ -138,8 +127,7 @@ static int draw(const char *dir, const char *base, const char *what, const char 
             r->n_speeds, title, axes, base);
     if ((status = tirenv_outfile_commit(&f, diag)))
         return status;
-    const tirenv_plot__settings ps = {.dir = dir};
-    return tirenv_plot__draw(&ps, base, diag);
+    return tirenv_plot_draw(dir, base, NULL, diag);
 }
 
 /* seat: the unweighted seat acceleration over the front axle's position. */
@@ -158,7 +146,7 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
         const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
         fprintf(f.fp, "%s# %g km/h: x_front_m", j ? "\n\n" : "", r->speeds[j] * 3.6);
         for (size_t i = 0; i < r->n_models; ++i)
-            fprintf(f.fp, " seat_az_%s_m_s2", r->models[i]);
+            fprintf(f.fp, " seat_az_%s_m_s2", r->model_names[i]);
         fputc('\n', f.fp);
         for (size_t k = 0; k < n; k += every) {
             fprintf(f.fp, "%.6g", row[0].samples[k].x_front);
@@ -218,7 +206,7 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
             fprintf(f.fp, "%s# %g km/h, Welch segments of %zu samples: f_Hz", j ? "\n\n" : "",
                     r->speeds[j] * 3.6, seg);
             for (size_t i = 0; i < r->n_models; ++i)
-                fprintf(f.fp, " psd_%s_m2_s4_Hz", r->models[i]);
+                fprintf(f.fp, " psd_%s_m2_s4_Hz", r->model_names[i]);
             fputc('\n', f.fp);
             for (size_t k = 1; k < bins; ++k) {  /* bin 0 (the mean) has no place on log axes */
                 fprintf(f.fp, "%.6g", (double)k * fs / (double)seg);

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "cli/ride_cli.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 /* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
  * its end inside a run; and the default run-in before the obstacle and settling after it. */
@@ -18,6 +18,7 @@ static const double settle_time = 2.0;   /* s */
 
 /* What one model makes of the obstacle for both axles, and what it cost. */
 typedef struct {
+    const tirenv_model_type *type;
     const char *name;
     double *w[2];          /* front, rear inputs on the grid, m */
     double seconds;        /* CPU time of the effective profiles, s */
@@ -60,6 +61,17 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
     return CLI_EXIT_OK;
 }
 
+/* The model's warnings of one axle, one line each. */
+static void axle_warnings(const char *model, int axle, const char *w)
+{
+    while (*w) {
+        const size_t len = strcspn(w, "\n");
+        fprintf(stderr, "tirenv: ride: warning: %s model, %s axle: %.*s\n", model,
+                axle ? "rear" : "front", (int)len, w);
+        w += len + (w[len] == '\n');
+    }
+}
+
 static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in)
 {
     tirenv_diag diag;
@@ -70,24 +82,18 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     tirenv_nn *nn = NULL;
     tirenv_train_record rec = {.R0 = 0};
     int status = TIRENV_OK, axle = 0;
-    if (strcmp(in->name, "nn") == 0 &&
+    if ((tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK) &&
         (status = tirenv_nn_read_json(r->nn_path, &nn, &rec, &diag)))
         return cli_fail(status, &diag);
     const double t0 = cli_cpu_seconds();
     for (; axle < 2; ++axle) {
-        tirenv_nn_road_info info = {0};
+        char warnings[1024];
         /* x_N refers to the radius of the network's data, when the file records it. */
-        const double R0_nn = rec.R0 > 0 ? rec.R0 : s->tire[axle].springs.R0;
-        if ((status = ride_cli_axle_input(in->name, &s->tire[axle], s->load[axle], s->p, nn,
-                                          R0_nn, s->x0, s->dx, s->n, in->w[axle], &info,
-                                          &diag)))
+        if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
+                                          rec.R0, s->x0, s->dx, s->n, in->w[axle], warnings,
+                                          sizeof warnings, &diag)))
             break;
-        if (info.height_below + info.height_above + info.length_below + info.length_above)
-            fprintf(stderr, "tirenv: ride: warning: nn, %s axle, of %zu obstacles: %zu lower "
-                    "than trained (scaled), %zu higher, %zu shorter and %zu longer (clamped); "
-                    "see include/tirenv/nn_road.h\n", axle ? "rear" : "front", info.obstacles,
-                    info.height_below, info.height_above, info.length_below,
-                    info.length_above);
+        axle_warnings(in->name, axle, warnings);
     }
     tirenv_nn_free(nn);
     in->seconds = cli_cpu_seconds() - t0;
@@ -223,7 +229,8 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     }
     s.n = (size_t)n_grid;
     for (size_t i = 0; i < r->n_models; ++i) {
-        in[i].name = r->models[i];
+        in[i].type = r->models[i];
+        in[i].name = r->model_names[i];
         if ((code = model_inputs(r, &s, &in[i])))
             goto done;
     }

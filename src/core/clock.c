@@ -3,7 +3,7 @@
 
 #include <time.h>
 
-double tirenv__wall_seconds(void)
+double tirenv_core__wall_seconds(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);

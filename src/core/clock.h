@@ -4,6 +4,6 @@
 #define TIRENV_CORE_CLOCK_H
 
 /* Wall time since an arbitrary start (CLOCK_MONOTONIC), s. */
-double tirenv__wall_seconds(void);
+double tirenv_core__wall_seconds(void);
 
 #endif

@@ -1,8 +1,9 @@
-/* Profile CSV read one vertex at a time for tirenv_model_stream: the format and the checks of
- * profile_csv.c, with the whole-profile check of tirenv_profile_validate (x non-decreasing, at
- * most two vertices at one x) done row by row so that it needs no memory of the past rows.
+/* Profile CSV read one vertex at a time, the vertex source of tirenv_model_stream: the format
+ * and the checks of profile_csv.c, with the whole-profile check of tirenv_profile_validate (x
+ * non-decreasing, at most two vertices at one x) done row by row so that it needs no memory
+ * of the past rows.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "tirenv/stream.h"
+#include "tirenv/io.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -105,4 +106,10 @@ int tirenv_profile_reader_next(tirenv_profile_reader *r, double *x, double *z, i
     *z = v[1];
     *got = 1;
     return TIRENV_OK;
+}
+
+int tirenv_profile_reader_source(void *reader, double *x, double *z, int *got,
+                                 tirenv_diag *diag)
+{
+    return tirenv_profile_reader_next(reader, x, z, got, diag);
 }

@@ -1,4 +1,4 @@
-/* Private to the rig-log import (src/data/rig_*.c, the import command and its tests): the
+/* Private to the rig-log import (src/data/rig_*.c and its tests): the
  * stages of tirenv_rig_import_samples and what they share. docs/models.md sections 1 and 5.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef TIRENV_RIG_IMPL_H
@@ -42,29 +42,12 @@ typedef struct {
     double centre;         /* obstacle centre, m, in the frame of tirenv_rig__samples */
 } tirenv_rig__passage;
 
-/* Everything the import found, for the command's summary line and for tests. */
-typedef struct {
-    size_t n_samples;      /* distinct samples used */
-    size_t n_repeated;     /* samples dropped because their time repeats an earlier one */
-    int reversed;          /* 1 if the cart moved towards -x */
-    double sigma;          /* estimated z noise, m */
-    double baseline;       /* flat-ground z of the log, m */
-    double centre;         /* obstacle centre in the log's own x, m */
-    double x_0;            /* x_N origin in obstacle coordinates (docs/models.md section 1), m */
-    double half_width;     /* smoothing half-width used, m */
-    double noise_se;       /* standard error of h that the noise leaves after smoothing, m */
-} tirenv_rig__info;
-
 /* tirenv_rig_import_samples, also saying what it found (info may be NULL). On failure diag's
  * line is the 1-based index of the sample at fault (0 if none) and its field "t", "x" or "z",
  * so that a file reader can turn them into its own line and column. */
 int tirenv_rig__import(size_t n, const double t[], const double x[], const double z[],
                        const tirenv_import_settings *s, tirenv_curve *out,
-                       tirenv_rig__info *info, tirenv_diag *diag);
-
-/* The same from a CSV log, errors in the file's terms. */
-int tirenv_rig__import_file(const char *path, const tirenv_import_settings *s,
-                            tirenv_curve *out, tirenv_rig__info *info, tirenv_diag *diag);
+                       tirenv_import_info *info, tirenv_diag *diag);
 
 /* Stage 2 (rig_passage.c): noise, flat baseline, bump and centre; TIRENV_EINVAL with the
  * reason when the samples do not hold a whole passage. x_0 (m, < 0) sets the bump's scale. */

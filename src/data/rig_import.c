@@ -155,7 +155,7 @@ static int mirror_if_reversed(rig_sample r[], size_t n, int *reversed, tirenv_di
  * order (the usual case) costs one pass. The records live only as long as this stage, so
  * the next stages' scratch arrays can reuse their memory. */
 static int prepare_samples(size_t n, const double t[], const double x[], const double z[],
-                           tirenv_rig__samples *s, tirenv_rig__info *info, tirenv_diag *diag)
+                           tirenv_rig__samples *s, tirenv_import_info *info, tirenv_diag *diag)
 {
     rig_sample *r = malloc(n * sizeof *r);
     if (!r)
@@ -187,10 +187,10 @@ static int prepare_samples(size_t n, const double t[], const double x[], const d
 
 int tirenv_rig__import(size_t n, const double t[], const double x[], const double z[],
                        const tirenv_import_settings *set, tirenv_curve *out,
-                       tirenv_rig__info *info, tirenv_diag *diag)
+                       tirenv_import_info *info, tirenv_diag *diag)
 {
     *out = (tirenv_curve){0};
-    tirenv_rig__info found = {0};
+    tirenv_import_info found = {0};
     double x_0 = NAN;
     int status = settings_check(set, &x_0, diag);
     if (status == TIRENV_OK)
@@ -258,12 +258,12 @@ static void diag_to_file(tirenv_diag *diag, const char *path,
         snprintf(diag->file, sizeof diag->file, "%s", path);
 }
 
-int tirenv_rig__import_file(const char *path, const tirenv_import_settings *s,
-                            tirenv_curve *out, tirenv_rig__info *info, tirenv_diag *diag)
+int tirenv_rig_import_file(const char *path, const tirenv_import_settings *s,
+                           tirenv_curve *out, tirenv_import_info *info, tirenv_diag *diag)
 {
     *out = (tirenv_curve){0};
     if (info)
-        *info = (tirenv_rig__info){0};
+        *info = (tirenv_import_info){0};
     /* Settings first: their errors are not the file's. */
     double x_0 = NAN;
     int status = settings_check(s, &x_0, diag);
@@ -283,5 +283,5 @@ int tirenv_rig__import_file(const char *path, const tirenv_import_settings *s,
 int tirenv_rig_import(const char *path, const tirenv_import_settings *s, tirenv_curve *out,
                       tirenv_diag *diag)
 {
-    return tirenv_rig__import_file(path, s, out, NULL, diag);
+    return tirenv_rig_import_file(path, s, out, NULL, diag);
 }

@@ -196,6 +196,9 @@ int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
 {
     if (!s->type)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model", "no model type");
+    if ((tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK) && !s->network)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                            "the %s model needs a trained network", tirenv_model_type_name(s->type));
     const double R0 = tire->springs.R0;
     int status = check_list("lengths", s->lengths, s->n_lengths, INFINITY, NULL, diag);
     if (!status)
@@ -289,6 +292,9 @@ char *tirenv_sweep__spec(const tirenv_sweep_settings *s)
     fprintf(fp, "format = tirenv-sweep 1\n");
     fprintf(fp, "model = %s\n", tirenv_model_type_name(s->type));
     fprintf(fp, "curves = %s\n", s->rig ? "rig" : "model");
+    if (tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK)
+        fprintf(fp, "network = %s\n", s->network_id && s->network_id[0] ? s->network_id
+                                                                       : "(unnamed)");
     list_line(fp, "lengths_m", s->lengths, s->n_lengths);
     list_line(fp, "heights_m", s->heights, s->n_heights);
     if (s->n_contact_lengths)

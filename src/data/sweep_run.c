@@ -76,6 +76,25 @@ static int case_failed(const sweep_run *r, size_t i, int status, tirenv_diag *di
     return status;
 }
 
+/* A model of the sweep's type for a tire variant, with the sweep's network if it needs one. */
+static int sweep_model(const tirenv_sweep_settings *s, const tirenv_tire *t, tirenv_model **m,
+                       tirenv_diag *diag)
+{
+    *m = tirenv_model_alloc(s->type, t);
+    if (!*m)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tire",
+                            "the %s model cannot be built from this tire (or memory ran out)",
+                            tirenv_model_type_name(s->type));
+    if (!(tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK))
+        return TIRENV_OK;
+    const int status = tirenv_model_set_network(*m, s->network, s->network_R0, diag);
+    if (status) {
+        tirenv_model_free(*m);
+        *m = NULL;
+    }
+    return status;
+}
+
 /* ---- loads and contact lengths, once per (tire variant, regime) ------------------------- */
 
 static int pair_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
@@ -86,12 +105,10 @@ static int pair_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     const size_t p = r->pairs[k], v = p / regimes, a = p % regimes;
     (void)worker;
     tirenv_tire t;
+    tirenv_model *m = NULL;
     int status = tirenv_sweep__variant_tire(s, r->tire, v, &t, diag);
-    tirenv_model *m = status ? NULL : tirenv_model_alloc(s->type, &t);
-    if (!status && !m)
-        status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "tire",
-                              "the %s model cannot be built from this tire",
-                              tirenv_model_type_name(s->type));
+    if (!status)
+        status = sweep_model(s, &t, &m, diag);
     if (!status && s->n_contact_lengths) {
         r->l_c[p] = s->contact_lengths[a];
         status = tirenv_model_load_for_contact_length(m, r->l_c[p], &r->load[p], diag);
@@ -227,13 +244,26 @@ static int case_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     const size_t p = c.variant * tirenv_sweep__regimes(s) + c.regime;
     const double L = s->lengths[c.length], H = s->heights[c.height];
     tirenv_tire t;
+    tirenv_model *m = NULL;
     int status = tirenv_sweep__variant_tire(s, r->tire, c.variant, &t, diag);
     /* The case's own model instance: its curve depends on the case alone. */
-    tirenv_model *m = status ? NULL : tirenv_model_alloc(s->type, &t);
+    if (!status)
+        status = sweep_model(s, &t, &m, diag);
     tirenv_profile *cleat = tirenv_profile_cleat(L, H);
-    if (!status && (!m || !cleat))
-        status = tirenv_error(diag, m ? TIRENV_ENOMEM : TIRENV_EINVAL, "", 0, "", "%s",
-                              m ? "out of memory" : "the model cannot be built from the tire");
+    if (!status && !cleat)
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    /* At a contact length, the case's model finds its load itself (a model whose input is the
+     * contact length, the network, remembers it); the same number as the table's, which the
+     * manifest writes. */
+    if (!status && s->n_contact_lengths) {
+        double load;
+        status = tirenv_model_load_for_contact_length(m, r->l_c[p], &load, diag);
+        if (!status && load != r->load[p])
+            status = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "load",
+                                  "the load at contact length %.17g m came out %.17g N here "
+                                  "and %.17g N before: the model is not deterministic",
+                                  r->l_c[p], load, r->load[p]);
+    }
     char name[32], L_s[32], H_s[32], load_s[32], l_c_s[32], path[1200], comment[1200];
     tirenv_sweep__case_name(s, i, name);
     tirenv_sweep__number(L, L_s);

@@ -20,6 +20,7 @@
  * nominal 4 kN (2a = 0.13 m) this gives l_s = 0.11 m, against 0.055 m for ELLIPS_SHIFT * a,
  * under half the patch. */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 
 #include "model/cam_impl.h"
@@ -164,6 +165,7 @@ static int cam_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
     const double w = 0.5 * (Z_f + Z_r), tan_beta = (Z_f - Z_r) / st->l_s;
     *out = (tirenv_point){.x = x, .z = st->z_flat + w, .h = w, .fx = -st->G * tan_beta,
                           .fz = st->G, .contacts = 2, .iterations = 0};
+    out->slope = tirenv_model__slope(out);
     return TIRENV_OK;
 }
 
@@ -177,14 +179,34 @@ static double cam_reach(const void *state)
     return st->tire.cam.length * R0 + half_base;
 }
 
+/* The cam's shape and base, which a fit identifies (docs/models.md section 8). Its
+ * contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) set where its two cams stand at a load
+ * and trade off against ELLIPS_SHIFT, so they are left as the tire file gives them. */
+static const tirenv_model_param cam_params[] = {
+    {"ELLIPS_SHIFT", offsetof(tirenv_tire, cam.shift), 0},
+    {"ELLIPS_LENGTH", offsetof(tirenv_tire, cam.length), 0},
+    {"ELLIPS_HEIGHT", offsetof(tirenv_tire, cam.height), 0},
+    {"ELLIPS_ORDER", offsetof(tirenv_tire, cam.order), 1},
+};
+
 static const tirenv_model_type cam_type = {
     .name = "cam",
+    .summary = "MF-Swift's tandem elliptical cam",
+    .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS,
+    .params = cam_params,
+    .n_params = sizeof cam_params / sizeof cam_params[0],
+    .n_params_max = sizeof cam_params / sizeof cam_params[0],
     .alloc = cam_alloc,
     .free = cam_free,
     .flat = cam_flat,
     .load_for_contact_length = cam_load_for_contact_length,
     .set = cam_set,
     .eval = cam_eval,
+    .envelope = NULL,
+    .set_profile = NULL,
     .reach = cam_reach,
+    .set_network = NULL,
+    .warnings = NULL,
+    .note = NULL,
 };
 const tirenv_model_type *tirenv_model_cam = &cam_type;

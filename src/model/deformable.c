@@ -1,39 +1,49 @@
 /* The constant-load equilibrium per position (docs/models.md section 11), shared by every
- * deformable model: it only needs their hub-force function and their contact length. */
+ * deformable model: it only needs their hub-force function and their contact length. The
+ * equilibrium itself is the core's solver (src/core/equilibrium.c), which reports an
+ * evaluated point: z, F_z, F_x and the contacts of a row all come from one force evaluation. */
 #include "model/deformable.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include "core/equilibrium.h"
+#include "core/profile_impl.h"
 #include "model/rigid_impl.h"
-#include "profile/profile_impl.h"
 
 typedef struct {
     const tirenv_deformable_ops *ops;
     void *elem;                  /* the model's own workspace */
     tirenv_tire tire;
+    tirenv_eq_solver *solver;    /* of tire.eq.method, allocated once */
     tirenv_profile *flat;        /* flat ground z = 0, for the flat-ground reference */
     const tirenv_profile *prof;  /* current profile (borrowed) */
     double G;                    /* load, N */
     double z_flat;               /* flat-ground centre height at G, m */
     double z_prev;               /* warm start: last equilibrium, m */
     int have_prev;
-    /* What the last force evaluation saw, for the output row. */
-    const tirenv_profile *eval_prof;
-    double eval_x, last_fx;
-    size_t last_contacts;
     size_t rigid_hint;           /* profile segment of the last position, for the bracket */
+    /* The last flat-ground equilibrium: its load (N) and point, so that tirenv_model_set,
+     * which solves it first, does not evaluate it again. */
+    int have_flat_point;
+    double flat_load;
+    tirenv_eq_point flat_point;
     /* The flat-ground equilibrium at the load set, for level stretches of ground. */
     int shift_invariant;
     double flat_F;
     size_t flat_contacts;
 } deformable_state;
 
-static int force_at(void *ctx, double z, double *F, double *dF_dz)
+/* The force function the solver calls: the model's forces at one position. */
+typedef struct {
+    deformable_state *st;
+    const tirenv_profile *prof;
+    double x;                    /* m */
+} force_ctx;
+
+static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
 {
-    deformable_state *st = ctx;
-    return st->ops->forces(st->elem, st->eval_prof, st->eval_x, z, &st->last_fx, F, dF_dz,
-                           &st->last_contacts);
+    const force_ctx *c = ctx;
+    return c->st->ops->forces(c->st->elem, c->prof, c->x, z, out, diag);
 }
 
 void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_ops *ops)
@@ -45,9 +55,10 @@ void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_o
     st->ops = ops;
     st->tire = *tire;
     st->elem = ops->alloc(tire);
+    st->solver = tirenv_eq__solver_alloc(tirenv_eq__solver_type_of(tire->eq.method));
     st->shift_invariant = !ops->shift_invariant || ops->shift_invariant(tire);
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
-    if (!st->elem || !st->flat) {
+    if (!st->elem || !st->solver || !st->flat) {
         tirenv_deformable_free(st);
         return NULL;
     }
@@ -59,6 +70,7 @@ void tirenv_deformable_free(void *state)
     deformable_state *st = state;
     if (st->elem)
         st->ops->free(st->elem);
+    tirenv_eq__solver_free(st->solver);
     tirenv_profile_free(st->flat);
     free(st);
 }
@@ -67,25 +79,25 @@ int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
-    st->eval_prof = st->flat;
-    st->eval_x = 0;
     const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = R0, .dz_hint = 0.05 * R0};
+    force_ctx fc = {st, st->flat, 0};
     tirenv_eq_result res;
-    int status = tirenv_eq_solve(&st->tire.eq, force_at, st, load, &prob, &res, diag);
+    int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, load, &prob, &res,
+                                 diag);
     if (status)
         return status;
-    double F, dF, l_c;
-    status = force_at(st, res.z, &F, &dF);
-    if (!status)
-        status = st->ops->contact_length(st->elem, st->flat, res.z, &l_c);
-    if (status)
+    double l_c;
+    if ((status = st->ops->contact_length(st->elem, st->flat, res.point.z, &l_c, diag)))
         return status;
+    st->have_flat_point = 1;
+    st->flat_load = load;
+    st->flat_point = res.point;
     *out = (tirenv_flat){
         .load = load,
-        .z_flat = res.z,
-        .deflection = R0 - res.z,
+        .z_flat = res.point.z,
+        .deflection = R0 - res.point.z,
         .contact_length = l_c,
-        .stiffness = -dF,
+        .stiffness = -res.point.dF_dz,
     };
     return TIRENV_OK;
 }
@@ -99,13 +111,14 @@ int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *l
     if (!(l_c > 0 && l_c < 2 * R0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
                             "must be in (0, 2*R0) = (0, %g) m, got %g", 2 * R0, l_c);
-    double z, dF;
-    const int status = st->ops->z_for_contact_length(st->elem, st->flat, l_c, &z, diag);
-    if (status)
-        return status;
-    st->eval_prof = st->flat;
-    st->eval_x = 0;
-    return force_at(st, z, load, &dF);
+    double z;
+    int status = st->ops->z_for_contact_length(st->elem, st->flat, l_c, &z, diag);
+    tirenv_eq_point p;
+    if (!status)
+        status = st->ops->forces(st->elem, st->flat, 0, z, &p, diag);
+    if (!status)
+        *load = p.F;
+    return status;
 }
 
 int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
@@ -116,13 +129,16 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
     st->G = load;
     st->z_flat = z_flat;
     st->have_prev = 0;
-    st->eval_prof = st->flat;
-    st->eval_x = 0;
-    double dF;
-    const int status = force_at(st, z_flat, &st->flat_F, &dF);
-    st->flat_contacts = st->last_contacts;
-    return status ? tirenv_error(diag, status, "", 0, "", "the flat-ground forces failed")
-                  : TIRENV_OK;
+    /* tirenv_model_set has just solved the flat ground at this load: its point is z_flat. */
+    tirenv_eq_point flat = st->flat_point;
+    int status = TIRENV_OK;
+    if (!(st->have_flat_point && st->flat_load == load && flat.z == z_flat))
+        status = st->ops->forces(st->elem, st->flat, 0, z_flat, &flat, diag);
+    if (status)
+        return status;
+    st->flat_F = flat.F;
+    st->flat_contacts = flat.contacts;
+    return TIRENV_OK;
 }
 
 /* The next window of the same ground: the equilibrium of the last position still holds, so the
@@ -147,32 +163,34 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         /* fx is 0 by symmetry, which the force sum only meets to round-off. */
         *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
                               .fz = st->flat_F, .contacts = st->flat_contacts};
+        out->slope = tirenv_model__slope(out);
         st->z_prev = out->z;
         st->have_prev = 1;
         return TIRENV_OK;
     }
     const double deflection = R0 - st->z_flat;
     const double z_hi = tirenv_rigid__height_hint(st->prof, R0, x, &st->rigid_hint, NULL, NULL);
-    tirenv_eq_problem prob = {
+    const tirenv_eq_problem prob = {
         .z_lo = tirenv_profile_height(st->prof, x),
         .z_hi = z_hi,
         .z0 = st->have_prev ? st->z_prev : z_hi - deflection,
         .dz_hint = deflection,
     };
-    st->eval_prof = st->prof;
-    st->eval_x = x;
+    force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;
-    const int status = tirenv_eq_solve(&st->tire.eq, force_at, st, st->G, &prob, &res, diag);
+    const int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
+                                       &res, diag);
     out->x = x;
     out->iterations = res.evals;
     if (status)
         return status;
-    st->z_prev = res.z;
+    st->z_prev = res.point.z;
     st->have_prev = 1;
-    out->z = res.z;
-    out->h = res.z - st->z_flat;
-    out->fz = res.F;
-    out->fx = st->last_fx;
-    out->contacts = st->last_contacts;
+    out->z = res.point.z;
+    out->h = res.point.z - st->z_flat;
+    out->fz = res.point.F;
+    out->fx = res.point.fx;
+    out->contacts = res.point.contacts;
+    out->slope = tirenv_model__slope(out);
     return TIRENV_OK;
 }

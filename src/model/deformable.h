@@ -4,16 +4,19 @@
 #ifndef TIRENV_DEFORMABLE_H
 #define TIRENV_DEFORMABLE_H
 
+#include "core/equilibrium.h"
 #include "model/model_impl.h"
 
 typedef struct {
     void *(*alloc)(const tirenv_tire *tire);
     void (*free)(void *elem);
-    /* Hub forces (N) and dF_z/dz (N/m) with the centre at (x, z) (m). */
-    int (*forces)(void *elem, const tirenv_profile *p, double x, double z, double *fx,
-                  double *fz, double *dfz_dz, size_t *contacts);
+    /* Hub forces with the centre at (x, z) (m): F_z (N), dF_z/dz (N/m), F_x (N) and the
+     * contacts, all of one evaluation, in *out; a failure says what failed in diag. */
+    int (*forces)(void *elem, const tirenv_profile *p, double x, double z,
+                  tirenv_eq_point *out, tirenv_diag *diag);
     /* Flat-ground contact length (m) with the centre at height z (m). */
-    int (*contact_length)(void *elem, const tirenv_profile *flat, double z, double *l_c);
+    int (*contact_length)(void *elem, const tirenv_profile *flat, double z, double *l_c,
+                          tirenv_diag *diag);
     /* Flat-ground centre height z (m) at which the contact length is l_c (m). */
     int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double *z,
                                 tirenv_diag *diag);
@@ -32,16 +35,5 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
                           tirenv_diag *diag);
 int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag);
 void tirenv_deformable_set_profile(void *state, const tirenv_profile *p);
-
-/* The model-type record of a deformable model: only its name and alloc differ, so every one
- * gets the whole shared driver (set_profile included, which streaming needs). */
-#define TIRENV_DEFORMABLE_TYPE(type_name, alloc_fn)                                          \
-    {                                                                                        \
-        .name = (type_name), .alloc = (alloc_fn), .free = tirenv_deformable_free,            \
-        .flat = tirenv_deformable_flat,                                                      \
-        .load_for_contact_length = tirenv_deformable_load_for_contact_length,                \
-        .set = tirenv_deformable_set, .eval = tirenv_deformable_eval,                        \
-        .set_profile = tirenv_deformable_set_profile,                                        \
-    }
 
 #endif

@@ -1,8 +1,8 @@
 /* The generic model driver: name lookup, lifecycle, and the sweep over positions. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
 #include "model/model_impl.h"
 
 struct tirenv_model {
@@ -14,11 +14,13 @@ struct tirenv_model {
     int ready;             /* a profile and load are set */
 };
 
+/* The table every command looks names up in: the physical models, the network, and the point
+ * contact a ride compares them with. */
 const tirenv_model_type *const *tirenv_model_types(void)
 {
-    static const tirenv_model_type *const *types[] = {&tirenv_model_rigid,
-                                                      &tirenv_model_springs, &tirenv_model_ring,
-                                                      &tirenv_model_cam};
+    static const tirenv_model_type *const *types[] = {
+        &tirenv_model_rigid, &tirenv_model_springs, &tirenv_model_ring,
+        &tirenv_model_cam,   &tirenv_model_nn,      &tirenv_model_point};
     static const tirenv_model_type *list[sizeof types / sizeof types[0] + 1];
     for (size_t i = 0; i < sizeof types / sizeof types[0]; ++i)
         list[i] = *types[i];
@@ -34,13 +36,23 @@ const tirenv_model_type *tirenv_model_type_find(const char *name)
 }
 
 const char *tirenv_model_type_name(const tirenv_model_type *type) { return type->name; }
+const char *tirenv_model_type_summary(const tirenv_model_type *type) { return type->summary; }
+unsigned tirenv_model_type_flags(const tirenv_model_type *type) { return type->flags; }
+
+const tirenv_model_param *tirenv_model_type_params(const tirenv_model_type *type, size_t *n,
+                                                   size_t *n_max)
+{
+    if (n)
+        *n = type->n_params;
+    if (n_max)
+        *n_max = type->n_params_max;
+    return type->params;
+}
 const char *tirenv_model_name(const tirenv_model *m) { return m->type->name; }
 const tirenv_tire *tirenv_model_tire(const tirenv_model *m) { return &m->tire; }
 
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
-    /* The library checks every GSL status itself; GSL's default handler would abort(). */
-    gsl_set_error_handler_off();
     if (!type || tirenv_tire_check(tire, NULL))
         return NULL;
     tirenv_model *m = calloc(1, sizeof *m);
@@ -48,6 +60,7 @@ tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tir
         return NULL;
     m->type = type;
     m->tire = *tire;
+    m->load = NAN;
     m->state = type->alloc(tire);
     if (!m->state) {
         free(m);
@@ -62,6 +75,32 @@ void tirenv_model_free(tirenv_model *m)
         return;
     m->type->free(m->state);
     free(m);
+}
+
+int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
+                             tirenv_diag *diag)
+{
+    m->ready = 0;
+    if (!(m->type->flags & TIRENV_MODEL_NEEDS_NETWORK) || !m->type->set_network)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                            "the %s model evaluates no network", m->type->name);
+    if (!nn || !(R0 >= 0 && isfinite(R0)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                            "expected a network and R0 >= 0 m, got %s and %g",
+                            nn ? "a network" : "none", R0);
+    return m->type->set_network(m->state, nn, R0, diag);
+}
+
+double tirenv_model_load(const tirenv_model *m) { return m->ready ? m->load : NAN; }
+
+const char *tirenv_model_warnings(const tirenv_model *m)
+{
+    return m->ready && m->type->warnings ? m->type->warnings(m->state) : "";
+}
+
+const char *tirenv_model_note(const tirenv_model *m)
+{
+    return m->ready && m->type->note ? m->type->note(m->state) : "";
 }
 
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
@@ -133,18 +172,10 @@ double tirenv_model_reach(const tirenv_model *m)
     return m->type->reach ? m->type->reach(m->state) : TIRENV_MODEL__REACH * m->tire.springs.R0;
 }
 
-int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
+/* Names the position: a failure without its x is useless in a 1,500-point sweep. */
+static int at_position(const tirenv_model *m, double x, int status, tirenv_diag *diag)
 {
-    out->x = x;  /* as the header promises, on failure too */
-    if (!m->ready)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
-                            "no profile and load set (call tirenv_model_set first)");
-    const int status = m->type->eval(m->state, x, out, diag);
-    /* One definition for every model: at equilibrium fz is the load, so this is never 0/0. */
-    if (!status)
-        out->slope = out->fz > 0 ? -out->fx / out->fz : 0;
     if (status && diag) {
-        /* Name the position: a failure without its x is useless in a 1,500-point sweep. */
         char msg[sizeof diag->message];  /* the original message is cut at 400 chars */
         snprintf(msg, sizeof msg, "%s model at x = %.6g m, load %.6g N: %.400s", m->type->name, x,
                  m->load, diag->message);
@@ -153,9 +184,37 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
     return status;
 }
 
+static int not_set(tirenv_diag *diag)
+{
+    return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                        "no profile and load set (call tirenv_model_set first)");
+}
+
+int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    out->x = x;  /* as the header promises, on failure too */
+    if (!m->ready)
+        return not_set(diag);
+    const int status = m->type->eval(m->state, x, out, diag);
+    out->x = x;
+    return at_position(m, x, status, diag);
+}
+
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
                           size_t *failed, tirenv_diag *diag)
 {
+    if (m->type->envelope && n > 0) {
+        if (!m->ready) {
+            if (failed)
+                *failed = 0;
+            return not_set(diag);
+        }
+        size_t k = 0;
+        const int status = m->type->envelope(m->state, n, x, out, &k, diag);
+        if (status && failed)
+            *failed = k;
+        return at_position(m, status ? x[k < n ? k : 0] : 0, status, diag);
+    }
     for (size_t k = 0; k < n; ++k) {
         const int status = tirenv_model_eval(m, x[k], &out[k], diag);
         if (status) {

@@ -1,4 +1,6 @@
-/* Private: what a model algorithm provides to the generic driver in model.c. */
+/* Private: what a model algorithm provides to the generic driver in model.c: its type record,
+ * written out field by field in the algorithm's file as GSL writes gsl_root_fsolver_brent at
+ * the end of roots/brent.c. */
 #ifndef TIRENV_MODEL_IMPL_H
 #define TIRENV_MODEL_IMPL_H
 
@@ -6,6 +8,12 @@
 
 struct tirenv_model_type {
     const char *name;
+    const char *summary;       /* what the model is, in 48 characters or fewer */
+    unsigned flags;            /* TIRENV_MODEL_* (model.h): what it can do */
+    /* The tire parameters a fit identifies: the first n_params by default, n_params_max with
+     * the optional ones; NULL and 0 if it cannot be fitted. */
+    const tirenv_model_param *params;
+    size_t n_params, n_params_max;
     void *(*alloc)(const tirenv_tire *tire);              /* NULL on failure */
     void (*free)(void *state);
     int (*flat)(void *state, double load, tirenv_flat *out, tirenv_diag *diag);
@@ -13,17 +21,33 @@ struct tirenv_model_type {
     /* New profile and load; z_flat is the model's flat-ground centre height at that load. */
     int (*set)(void *state, const tirenv_profile *p, double load, double z_flat,
                tirenv_diag *diag);
+    /* One position: every field of *out but x (set by the driver). */
     int (*eval)(void *state, double x, tirenv_point *out, tirenv_diag *diag);
+    /* Optional: a whole sweep at once (the network's batch); NULL: eval at each position. */
+    int (*envelope)(void *state, size_t n, const double x[], tirenv_point out[],
+                    size_t *failed, tirenv_diag *diag);
     /* Optional: swap in another window of the same ground, keeping load, z_flat and the warm
      * start (streaming); NULL falls back to set, which restarts the warm start. */
     void (*set_profile)(void *state, const tirenv_profile *p);
     /* Optional: how far from x (m) eval reads the profile at the load set; NULL means the
      * default of tirenv_model_reach, TIRENV_MODEL__REACH*R0. */
     double (*reach)(const void *state);
+    /* With TIRENV_MODEL_NEEDS_NETWORK: the network (to be copied) and the R0 (m) of its x_N. */
+    int (*set_network)(void *state, const struct tirenv_nn *nn, double R0, tirenv_diag *diag);
+    /* Optional: the warnings and the note of the last set (tirenv_model_warnings). */
+    const char *(*warnings)(const void *state);
+    const char *(*note)(const void *state);
 };
 
 /* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
  * R0 from its centre; 5 % covers a tread standing out of the free circle. */
 #define TIRENV_MODEL__REACH 1.05
+
+/* The effective road slope of docs/models.md section 1 from a point's forces: the inclination
+ * -fx/fz of the resultant ground force (never 0/0: at equilibrium fz is the load). */
+static inline double tirenv_model__slope(const tirenv_point *pt)
+{
+    return pt->fz > 0 ? -pt->fx / pt->fz : 0;
+}
 
 #endif

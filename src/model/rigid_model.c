@@ -72,16 +72,28 @@ static int rigid_eval(void *state, double x, tirenv_point *out, tirenv_diag *dia
     const double z = tirenv_rigid__height_hint(st->prof, R0, x, &st->hint, &px, &pz);
     *out = (tirenv_point){.x = x, .z = z, .h = z - R0, .fz = st->G,
                           .fx = st->G * (x - px) / (z - pz), .contacts = 1, .iterations = 0};
+    out->slope = tirenv_model__slope(out);
     return TIRENV_OK;
 }
 
 static const tirenv_model_type rigid_type = {
     .name = "rigid",
+    .summary = "the rigid disc: the geometric limit",
+    .flags = TIRENV_MODEL_STREAMS,
+    .params = NULL,
+    .n_params = 0,
+    .n_params_max = 0,
     .alloc = rigid_alloc,
     .free = rigid_free,
     .flat = rigid_flat,
     .load_for_contact_length = rigid_load_for_contact_length,
     .set = rigid_set,
     .eval = rigid_eval,
+    .envelope = NULL,
+    .set_profile = NULL,
+    .reach = NULL,
+    .set_network = NULL,
+    .warnings = NULL,
+    .note = NULL,
 };
 const tirenv_model_type *tirenv_model_rigid = &rigid_type;

@@ -28,7 +28,7 @@
 #include <string.h>
 #include "model/ring_impl.h"
 #include "model/springs_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* The smallest window the band solver takes (ring_impl.h). */
 enum { RING_MIN_WINDOW = 6 };
@@ -281,10 +281,11 @@ static void summarise(tirenv_ring *r)
 }
 
 int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                       double *fx, double *fz, double *dfz_dz, size_t *contacts)
+                       double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                       tirenv_diag *diag)
 {
     cast_window(r, p, x, z);
-    const int status = r->n ? tirenv_ring__solve_contact(r) : 0;
+    const int status = r->n ? tirenv_ring__solve_contact(r, diag) : 0;
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->warm[j] = FREE;
     r->warm_lo = r->warm_n = 0;

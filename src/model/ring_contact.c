@@ -286,7 +286,7 @@ static int projected_newton(tirenv_ring *r, const double (*q)[4])
         }
         assemble_matrix(r, q);
         if (tirenv_ring__band_factor(&r->A))
-            return TIRENV_ENOCONV;
+            return -1;
         tirenv_ring__band_solve(&r->A, p);
         for (size_t i = 0; i < n; ++i)
             if (r->state[lo + i] & B_BASIC)
@@ -312,16 +312,31 @@ static int projected_newton(tirenv_ring *r, const double (*q)[4])
         }
         const int st = pivot(r, q, RING_PN_PIVOTS);
         if (st < 0)
-            return TIRENV_ENOCONV;
+            return -1;
         if (st == 0)
             return 0;
     }
     return TIRENV_ENOCONV;
 }
 
+/* A breakdown of the banded Cholesky is its own failure, not a slow convergence: the contact
+ * system is symmetric positive definite in exact arithmetic, so a breakdown means the belt's
+ * stiffness is numerically singular (far too stiff or too soft a tire). */
+static int contact_failed(const tirenv_ring *r, int breakdown, tirenv_diag *diag)
+{
+    if (breakdown)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the Cholesky factorisation of the %zu-node banded contact system "
+                            "broke down (not numerically positive definite)", r->n);
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                        "the tread and belt contact states of %zu nodes did not settle "
+                        "(block pivoting stalled and projected Newton ran out of %d iterations)",
+                        r->n, RING_PN_ITER);
+}
+
 /* From the last evaluation's states (or tread contact wherever a ray penetrates, if there was
  * none), pivoting; where it stalls, projected Newton. */
-int tirenv_ring__solve_contact(tirenv_ring *r)
+int tirenv_ring__solve_contact(tirenv_ring *r, tirenv_diag *diag)
 {
     const size_t n = r->n, lo = r->lo;
     const int warm = r->warm_n > 0;
@@ -336,10 +351,10 @@ int tirenv_ring__solve_contact(tirenv_ring *r)
         r->state[j] = s;
     }
     const double(*q)[4] = tirenv_ring__belt_end(r->belt, n);
-    const int status = pivot(r, q, RING_MAX_PASSES);
-    if (status <= 0)
-        return status ? TIRENV_ENOCONV : 0;
-    return projected_newton(r, q);
+    int status = pivot(r, q, RING_MAX_PASSES);
+    if (status > 0)
+        status = projected_newton(r, q);
+    return status ? contact_failed(r, status < 0, diag) : 0;
 }
 
 /* dF_z/dz with the states fixed: d and b move with z (d' = -d(rho)/dz), the tread rows carry

@@ -87,8 +87,9 @@ struct tirenv_ring {
 };
 
 /* The contact on the window lo .. lo + n - 1 (n >= 6) of the rays cast: states, w and F of
- * every window node, from the states in warm. TIRENV_ENOCONV if no method settles. */
-int tirenv_ring__solve_contact(tirenv_ring *r);
+ * every window node, from the states in warm. TIRENV_ENOCONV, diag saying which, if no method
+ * settles or the banded Cholesky breaks down. */
+int tirenv_ring__solve_contact(tirenv_ring *r, tirenv_diag *diag);
 
 /* dF_z/dz (N/m) with the states of the last tirenv_ring__solve_contact fixed. */
 double tirenv_ring__dfz_dz(tirenv_ring *r);

@@ -12,18 +12,20 @@ static void *ring_alloc(const tirenv_tire *tire)
 
 static void ring_free(void *elem) { tirenv_ring_free(elem); }
 
-static int ring_forces(void *elem, const tirenv_profile *p, double x, double z, double *fx,
-                       double *fz, double *dfz_dz, size_t *contacts)
+static int ring_forces(void *elem, const tirenv_profile *p, double x, double z,
+                       tirenv_eq_point *out, tirenv_diag *diag)
 {
-    return tirenv_ring_forces(elem, p, x, z, fx, fz, dfz_dz, contacts);
+    return tirenv_ring_forces(elem, p, x, z, &out->fx, &out->F, &out->dF_dz, &out->contacts,
+                              diag);
 }
 
 /* The ring's contact length is its real patch, where the tread pressure is positive: shorter
  * than the chord of the free circle, as real tires' are (docs/models.md section 1). */
-static int ring_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c)
+static int ring_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c,
+                               tirenv_diag *diag)
 {
     double fx, fz;
-    const int status = tirenv_ring_forces(elem, flat, 0, z, &fx, &fz, NULL, NULL);
+    const int status = tirenv_ring_forces(elem, flat, 0, z, &fx, &fz, NULL, NULL, diag);
     *l_c = tirenv_ring_patch_length(elem);
     return status;
 }
@@ -33,13 +35,14 @@ typedef struct {
     const tirenv_profile *flat;
     double l_c;
     int status;
+    tirenv_diag *diag;
 } patch_ctx;
 
 static double patch_minus_target(double z, void *p)
 {
     patch_ctx *c = p;
     double l;
-    const int s = ring_contact_length(c->elem, c->flat, z, &l);
+    const int s = ring_contact_length(c->elem, c->flat, z, &l, c->diag);
     if (s && !c->status)
         c->status = s;
     return l - c->l_c;
@@ -53,12 +56,13 @@ static const double patch_z_tol = 1e-12; /* m */
 static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
                                      double *z, tirenv_diag *diag)
 {
-    patch_ctx ctx = {elem, flat, l_c, 0};
+    patch_ctx ctx = {elem, flat, l_c, 0, diag};
     gsl_function fn = {patch_minus_target, &ctx};
     double hi = tirenv_ring_free_radius(elem), lo = 0.5 * hi;
-    if (patch_minus_target(lo, &ctx) < 0)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
-                            "%g m is beyond the ring tire's reach", l_c);
+    if (patch_minus_target(lo, &ctx) < 0 || ctx.status)
+        return ctx.status ? ctx.status
+                          : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                                         "%g m is beyond the ring tire's reach", l_c);
     gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     if (!s)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
@@ -72,9 +76,11 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
     }
     *z = gsl_root_fsolver_root(s);
     gsl_root_fsolver_free(s);
-    if (ctx.status || status)
-        return tirenv_error(diag, ctx.status ? ctx.status : TIRENV_ENOCONV, "", 0,
-                            "contact length", "no ring height found for %g m", l_c);
+    if (ctx.status)  /* the forces' own message says what failed */
+        return ctx.status;
+    if (status)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "contact length",
+                            "no ring height found for %g m: %s", l_c, gsl_strerror(status));
     return 0;
 }
 
@@ -95,5 +101,24 @@ static void *ring_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &ring_ops);
 }
 
-static const tirenv_model_type ring_type = TIRENV_DEFORMABLE_TYPE("ring", ring_model_alloc);
+static const tirenv_model_type ring_type = {
+    .name = "ring",
+    .summary = "flexible ring and tread: the reference tire",
+    .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS | TIRENV_MODEL_EQUILIBRIUM,
+    .params = NULL,
+    .n_params = 0,
+    .n_params_max = 0,
+    .alloc = ring_model_alloc,
+    .free = tirenv_deformable_free,
+    .flat = tirenv_deformable_flat,
+    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
+    .set = tirenv_deformable_set,
+    .eval = tirenv_deformable_eval,
+    .envelope = NULL,
+    .set_profile = tirenv_deformable_set_profile,
+    .reach = NULL,
+    .set_network = NULL,
+    .warnings = NULL,
+    .note = NULL,
+};
 const tirenv_model_type *tirenv_model_ring = &ring_type;

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "model/springs_impl.h"
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 /* Passes of the active-set iteration before giving up; it needs at most n in theory. */
 enum { LCP_MAX_PASSES = 200 };
@@ -229,7 +229,7 @@ static const double feature_tol = 1e-6;
  * it (tirenv_springs__unseen_feature); the tread along each ray is R0 - w, with w carried
  * out along the free chains beyond [f0, f1]. */
 static int check_unseen(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
-                        size_t a, size_t b, size_t f0, size_t f1)
+                        size_t a, size_t b, size_t f0, size_t f1, tirenv_diag *diag)
 {
     const double R0 = s->par.R0;
     double *tread = s->tread;
@@ -262,17 +262,21 @@ static int check_unseen(tirenv_springs *s, const tirenv_profile *prof, double x,
     else
         snprintf(remedy, sizeof remedy, "no practical ELEMENT_ANGLE sees it; the rigid model "
                  "follows it exactly");
-    return tirenv_error(&s->refusal, TIRENV_ERANGE, "", 0, "profile",
-                        "at x = %.9g m a feature of the ground %.3g m wide (at X = %.6g m, "
-                        "%.3g m from the centre) reaches %.3g m into the tread between two "
-                        "rays %.3g m apart that do not see it: narrower than the ray spacing, "
-                        "the springs model cannot resolve it (a real tread would rest on it); "
-                        "%s",
-                        x, f.width, f.X, f.distance, f.depth, f.spacing, remedy);
+    tirenv_error(&s->refusal, TIRENV_ERANGE, "", 0, "profile",
+                 "at x = %.9g m a feature of the ground %.3g m wide (at X = %.6g m, "
+                 "%.3g m from the centre) reaches %.3g m into the tread between two "
+                 "rays %.3g m apart that do not see it: narrower than the ray spacing, "
+                 "the springs model cannot resolve it (a real tread would rest on it); "
+                 "%s",
+                 x, f.width, f.X, f.distance, f.depth, f.spacing, remedy);
+    if (diag)
+        *diag = s->refusal;
+    return TIRENV_ERANGE;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
-                          double *fx, double *fz, double *dfz_dz, size_t *contacts)
+                          double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                          tirenv_diag *diag)
 {
     s->refused = 0;
     const double R0 = s->par.R0, k_r = s->k_r;
@@ -310,7 +314,7 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
     s->b = f1;
     if (f0 > f1) {
         s->pins.count = 0;
-        return any ? check_unseen(s, prof, x, z, a, b, f0, f1) : TIRENV_OK;
+        return any ? check_unseen(s, prof, x, z, a, b, f0, f1, diag) : TIRENV_OK;
     }
 
     size_t passes;
@@ -318,7 +322,9 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
                                                   s->active, &s->pins, LCP_MAX_PASSES,
                                                   &passes);
     if (status)
-        return status;
+        return tirenv_error(diag, status, "", 0, "springs",
+                            "the tip contact of elements %zu to %zu (the LCP) did not settle "
+                            "in %d active-set passes at z = %.9g m", a, b, LCP_MAX_PASSES, z);
 
     /* Eq. 1 and its horizontal counterpart; only the radial springs load the hub. The free
      * chains beyond [f0, f1] carry w[f0] S_lc[f0] and w[f1] S_rc[f1]. */
@@ -344,7 +350,7 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
             sum += k_r * s->dw[i] * s->cos_t[i];
         *dfz_dz = sum;
     }
-    return check_unseen(s, prof, x, z, a, b, f0, f1);
+    return check_unseen(s, prof, x, z, a, b, f0, f1, diag);
 }
 
 void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag)

@@ -8,7 +8,9 @@
  * first vertex or ends at its last, its flat extension is the whole profile's. With
  * ahead = 2r a window serves about 2r of travel before it is rebuilt, so the rebuilding
  * (an allocation of the window's few hundred vertices) costs O(1) per position amortised, and
- * the memory is O(r / vertex spacing), whatever the road's length.
+ * the memory is O(r / vertex spacing), whatever the road's length. The vertices come from a
+ * callback (tirenv_vertex_source), so the core knows no file format: the CSV reader is one
+ * source, in the auxiliary layer.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/stream.h"
 
@@ -24,6 +26,8 @@ typedef struct {
     int eof;               /* the file's last vertex has been read */
     size_t read;           /* vertices read from the file */
     size_t max;            /* largest n so far */
+    double x_last;         /* the last vertex taken, m */
+    size_t same_x;         /* vertices taken at x_last */
 } window;
 
 static int window_grow(window *w)
@@ -40,6 +44,34 @@ static int window_grow(window *w)
         return TIRENV_ENOMEM;
     w->z = z;
     w->cap = cap;
+    return TIRENV_OK;
+}
+
+/* The source and what the sweep checks of it. */
+typedef struct {
+    tirenv_vertex_source next;
+    void *ctx;
+} vertex_source;
+
+/* The order a profile needs (x non-decreasing, at most two vertices at one x) is checked as
+ * each vertex comes, against the last one taken: a source other than the checked CSV reader
+ * may hand anything. */
+static int vertex_check(window *w, double x, double z, tirenv_diag *diag)
+{
+    const size_t k = w->read + 1;  /* 1-based index of this vertex in the source */
+    if (!isfinite(x) || !isfinite(z))
+        return tirenv_error(diag, TIRENV_EINVAL, "", k, isfinite(x) ? "z" : "x",
+                            "vertex %zu of the source is not finite (x %g m, z %g m)", k, x, z);
+    if (w->read > 0 && x < w->x_last)
+        return tirenv_error(diag, TIRENV_EINVAL, "", k, "x",
+                            "vertex %zu of the source goes back: x %.9g m after %.9g m", k, x,
+                            w->x_last);
+    w->same_x = w->read > 0 && x == w->x_last ? w->same_x + 1 : 1;
+    w->x_last = x;
+    if (w->same_x > 2)
+        return tirenv_error(diag, TIRENV_EINVAL, "", k, "x",
+                            "vertex %zu of the source is the third at x = %.9g m (a wall has "
+                            "two)", k, x);
     return TIRENV_OK;
 }
 
@@ -60,14 +92,16 @@ static void window_drop(window *w, double x_keep)
 /* Makes the window cover [x_keep, x_need]: reads until a vertex lies beyond x_need or the
  * file ends, dropping what falls behind x_keep as it goes so that a far x_from costs no
  * memory either. */
-static int window_fill(window *w, tirenv_profile_reader *in, double x_keep, double x_need,
+static int window_fill(window *w, const vertex_source *in, double x_keep, double x_need,
                        tirenv_diag *diag)
 {
     window_drop(w, x_keep);
     while (!w->eof && !(w->n > 0 && w->x[w->n - 1] > x_need)) {
         double x, z;
-        int got;
-        const int status = tirenv_profile_reader_next(in, &x, &z, &got, diag);
+        int got = 0;
+        int status = in->next(in->ctx, &x, &z, &got, diag);
+        if (!status && got)
+            status = vertex_check(w, x, z, diag);
         if (status)
             return status;
         if (!got) {
@@ -108,10 +142,13 @@ size_t tirenv_positions_count(double x_from, double x_to, double dx)
     return n;
 }
 
-int tirenv_model_stream(tirenv_model *m, tirenv_profile_reader *in, double x_from,
-                        double x_to, double dx, double load, tirenv_point_sink sink, void *ctx,
-                        tirenv_stream_stats *stats, tirenv_diag *diag)
+int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,
+                        double x_from, double x_to, double dx, double load,
+                        tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,
+                        tirenv_diag *diag)
 {
+    const vertex_source src = {source, source_ctx};
+    const vertex_source *in = &src;
     if (stats)
         *stats = (tirenv_stream_stats){0};
     if (!(isfinite(x_from) && isfinite(x_to) && dx > 0 && isfinite(dx) && x_to >= x_from))

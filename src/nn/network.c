@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "tirenv/curve.h"
+#include "tirenv/xn.h"
 
 /* Samples evaluated together by tirenv_nn_run_batch. A block of activations of a 4-8-1 net
  * is 13*64 doubles (6.5 KiB), well inside L1; a compile-time trip count is what lets GCC's

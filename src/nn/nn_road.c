@@ -47,7 +47,7 @@
 #include <string.h>
 
 #include "nn/opening.h"
-#include "tirenv/curve.h"
+#include "tirenv/xn.h"
 
 /* A forward pass gives up on the window hint and bisects when it is this many obstacles
  * behind. Positions are evaluated ROAD_CHUNK at a time, their network evaluations queued and

@@ -23,11 +23,10 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_halfcomplex.h>
 #include <gsl/gsl_rng.h>
 
-#include "profile/profile_impl.h"
+#include "core/profile_impl.h"
 
 tirenv_road_settings tirenv_road_default(void)
 {
@@ -106,8 +105,6 @@ static int check(const tirenv_road_settings *s, size_t *n_out, tirenv_diag *diag
 int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
                         tirenv_diag *diag)
 {
-    /* The library checks every GSL status itself; GSL's default handler would abort(). */
-    gsl_set_error_handler_off();
     *out = NULL;
     size_t n = 0;
     int status = check(s, &n, diag);

@@ -191,7 +191,6 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
     int status = check(v, front, rear, s, diag);
     if (status)
         return status;
-    gsl_set_error_handler_off();
     ride r = {.v = v, .V = s->speed, .x_front0 = s->x_front0, .l = v->a + v->b,
               .suspended = v->front.k_s > 0};
     /* The static loads the effective profiles were computed for (tirenv_vehicle_tire_load);

@@ -73,8 +73,6 @@ size_t tirenv_welch_bins(const tirenv_welch *w)
 int tirenv_welch_psd(tirenv_welch *w, const double x[], size_t n, double fs, double psd[],
                      size_t *segments, tirenv_diag *diag)
 {
-    /* The library checks every GSL status itself; GSL's default handler would abort(). */
-    gsl_set_error_handler_off();
     const size_t N = w->n_seg, hop = N / 2, bins = N / 2 + 1;
     if (!(fs > 0 && isfinite(fs)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "fs",

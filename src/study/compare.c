@@ -17,7 +17,6 @@
 #include "study/plot.h"
 #include "tirenv/io.h"
 #include "tirenv/nn.h"
-#include "core/clock.h"
 #include "tirenv/parallel.h"
 
 /* A cap on timing repeats, should the clock not advance. */
@@ -80,19 +79,20 @@ void tirenv_compare__caption(const tirenv_case *c, char *buf, size_t size)
              c->L * 1e3, c->H * 1e3);
 }
 
+/* The role of each model in the paper's study, for legends and tables. */
 const char *tirenv_compare__label(const tirenv_compare_result *r, size_t j)
 {
-    const char *name = r->model[j];
+    static const struct {
+        const char *name, *role;
+    } roles[] = {{"rigid", "geometric limit"}, {"springs", "physical model"},
+                 {"cam", "tandem cam"}, {"point", "point contact"}};
     if ((int)j == r->reference_model)
         return "reference";
     if ((int)j == r->nn_model)
         return "empirical model";
-    if (strcmp(name, "rigid") == 0)
-        return "geometric limit";
-    if (strcmp(name, "springs") == 0)
-        return "physical model";
-    if (strcmp(name, "cam") == 0)
-        return "tandem cam";
+    for (size_t k = 0; k < sizeof roles / sizeof roles[0]; ++k)
+        if (strcmp(r->model[j], roles[k].name) == 0)
+            return roles[k].role;
     return NULL;
 }
 
@@ -271,7 +271,8 @@ static int select_cases(const tirenv_dataset *ds, const tirenv_compare_settings 
 }
 
 /* The physical models asked for, then the one that simulated the data if it is not among
- * them, then the network. */
+ * them, then the network: a type that evaluates a network (TIRENV_MODEL_NEEDS_NETWORK) is the
+ * last column, whether listed or added by with_nn. */
 static int select_models(const tirenv_compare_settings *s, const tirenv_nn *nn,
                          const tirenv_model_type *types[], tirenv_compare_result *r,
                          tirenv_diag *diag)
@@ -281,18 +282,34 @@ static int select_models(const tirenv_compare_settings *s, const tirenv_nn *nn,
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models",
                             "%zu physical models asked for; at most %zu", s->n_models, max);
     size_t n = 0;
+    const tirenv_model_type *network = NULL;
     r->reference_model = -1;
     r->nn_model = -1;
     for (size_t k = 0; k < s->n_models; ++k) {
         if (!s->models[k])
             return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models",
                                 "model %zu of the list is NULL", k + 1);
+        if (tirenv_model_type_flags(s->models[k]) & TIRENV_MODEL_NEEDS_NETWORK) {
+            if (!nn)
+                return tirenv_error(diag, TIRENV_EINVAL, "", 0, "models",
+                                    "the %s model needs a trained network, and none is given",
+                                    tirenv_model_type_name(s->models[k]));
+            network = s->models[k];
+            continue;
+        }
         size_t dup = 0;
         while (dup < n && types[dup] != s->models[k])
             ++dup;
         if (dup == n)
             types[n++] = s->models[k];
     }
+    if (!network && s->with_nn)
+        network = tirenv_model_nn;
+    if (s->simulated_by &&
+        (tirenv_model_type_flags(s->simulated_by) & TIRENV_MODEL_NEEDS_NETWORK))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "simulated_by",
+                            "the data cannot have been simulated by the %s model: the virtual "
+                            "rig runs a physical model", tirenv_model_type_name(s->simulated_by));
     if (s->simulated_by) {
         size_t k = 0;
         while (k < n && types[k] != s->simulated_by)
@@ -309,9 +326,10 @@ static int select_models(const tirenv_compare_settings *s, const tirenv_nn *nn,
     }
     for (size_t k = 0; k < n; ++k)
         snprintf(r->model[k], sizeof r->model[k], "%s", tirenv_model_type_name(types[k]));
-    if (nn && s->with_nn) {
+    if (nn && network) {
         r->nn_model = (int)n;
-        snprintf(r->model[n], sizeof r->model[n], "nn");
+        types[n] = network;
+        snprintf(r->model[n], sizeof r->model[n], "%s", tirenv_model_type_name(network));
         ++n;
     }
     if (n == 0)

@@ -1,7 +1,7 @@
 /* Identification of a physical model on measured curves (docs/models.md section 8): nonlinear least
  * squares on h over the training cases, with standard errors from the covariance. */
 #include "tirenv/study.h"
-#include "core/clock.h"
+#include "study/clock.h"
 #include "tirenv/parallel.h"
 
 #include <math.h>
@@ -16,45 +16,21 @@ tirenv_fit_settings tirenv_fit_default(void)
                                  .jobs = 1, .progress = NULL, .progress_ctx = NULL};
 }
 
-/* The fitted parameters, each by its .tir key, where it lives in the tire, and its offset:
- * a parameter is fitted as log(value - offset), which keeps it above the offset (positive
+/* A parameter is fitted as log(value - lower), which keeps it above its bound (positive
  * stiffnesses, ELLIPS_ORDER > 1) and gives a stiffness of 1e6 and a radius of 0.7 steps of the
- * same relative size. */
-typedef struct {
-    const char *key;
-    double *(*field)(tirenv_tire *t);
-    double offset;
-} fit_param;
-
-static double *field_c_r(tirenv_tire *t) { return &t->springs.c_r; }
-static double *field_c_b(tirenv_tire *t) { return &t->springs.c_b; }
-static double *field_R0(tirenv_tire *t) { return &t->springs.R0; }
-static double *field_shift(tirenv_tire *t) { return &t->cam.shift; }
-static double *field_length(tirenv_tire *t) { return &t->cam.length; }
-static double *field_height(tirenv_tire *t) { return &t->cam.height; }
-static double *field_order(tirenv_tire *t) { return &t->cam.order; }
-
-/* Per model, the parameters that shape h; the last one of springs (R0) only with fit_R0. The
- * cam's contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) set where its two cams stand at
- * a load and trade off against ELLIPS_SHIFT, so only the cam shape and base are fitted. */
-static const fit_param springs_params[] = {
-    {"RADIAL_STIFFNESS", field_c_r, 0},
-    {"INTERRADIAL_STIFFNESS", field_c_b, 0},
-    {"UNLOADED_RADIUS", field_R0, 0},
-};
-static const fit_param cam_params[] = {
-    {"ELLIPS_SHIFT", field_shift, 0},
-    {"ELLIPS_LENGTH", field_length, 0},
-    {"ELLIPS_HEIGHT", field_height, 0},
-    {"ELLIPS_ORDER", field_order, 1},
-};
+ * same relative size. Which parameters a model has is a property of its type
+ * (tirenv_model_type_params). */
+static double *field(tirenv_tire *t, const tirenv_model_param *p)
+{
+    return (double *)((char *)t + p->offset);
+}
 
 typedef struct {
     const tirenv_dataset *ds;
     tirenv_split split;
     const tirenv_model_type *type;
     tirenv_tire tire;             /* the working copy the parameters are written into */
-    const fit_param *params;
+    const tirenv_model_param *params;
     size_t n_params;
     size_t jobs;                  /* cases evaluated at once (tirenv/parallel.h) */
     size_t n_cases;               /* cases of the split */
@@ -71,7 +47,7 @@ typedef struct {
 static void set_params(fit_ctx *c, const gsl_vector *p)
 {
     for (size_t i = 0; i < c->n_params; ++i)
-        *c->params[i].field(&c->tire) = c->params[i].offset + exp(gsl_vector_get(p, i));
+        *field(&c->tire, &c->params[i]) = c->params[i].lower + exp(gsl_vector_get(p, i));
 }
 
 /* One case's residuals h_model - h_meas, into its own stretch of r: the cases are
@@ -127,18 +103,20 @@ static void fit_callback(const size_t iter, void *params_, const gsl_multifit_nl
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
 {
-    gsl_set_error_handler_off();
-    const double t0 = tirenv__wall_seconds();
+    const double t0 = tirenv_study__wall_seconds();
     const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
-    const int cam = type == tirenv_model_cam;
-    if (!cam && type != tirenv_model_springs)
+    size_t n_params, n_params_max;
+    const tirenv_model_param *params = tirenv_model_type_params(type, &n_params, &n_params_max);
+    if (!(tirenv_model_type_flags(type) & TIRENV_MODEL_FITTABLE) || !params)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
-                            "the %s model has no parameters to fit; expected springs or cam",
-                            tirenv_model_type_name(type));
-    fit_ctx c = {.ds = ds, .split = split, .type = type, .tire = *tire,
-                 .params = cam ? cam_params : springs_params,
-                 .n_params = cam ? 4 : s->fit_R0 ? 3 : 2, .jobs = s->jobs ? s->jobs : 1,
-                 .diag = diag};
+                            "the %s model has no parameters to fit", tirenv_model_type_name(type));
+    fit_ctx c = {.ds = ds, .split = split, .type = type, .tire = *tire, .params = params,
+                 .n_params = s->fit_R0 ? n_params_max : n_params,
+                 .jobs = s->jobs ? s->jobs : 1, .diag = diag};
+    if (c.n_params > TIRENV_FIT_MAX_PARAMS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "the %s model has %zu parameters; a fit takes at most %d",
+                            tirenv_model_type_name(type), c.n_params, TIRENV_FIT_MAX_PARAMS);
     size_t n = 0;
     for (size_t i = 0; i < ds->n; ++i)
         if (ds->cases[i].split == split) {
@@ -185,7 +163,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "fit", "out of memory");
     }
     for (size_t i = 0; i < c.n_params; ++i)
-        gsl_vector_set(p0, i, log(fmax(*c.params[i].field(&c.tire) - c.params[i].offset,
+        gsl_vector_set(p0, i, log(fmax(*field(&c.tire, &c.params[i]) - c.params[i].lower,
                                        1e-12)));
     gsl_multifit_nlinear_fdf fdf = {.f = residuals, .df = NULL, .fvv = NULL, .n = n,
                                     .p = c.n_params, .params = &c};
@@ -201,7 +179,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         result = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "fit", "%s", gsl_strerror(status));
     } else {
         /* Covariance of the log parameters, scaled by the residual variance; for
-         * c = offset + e^p the standard error is (c - offset) * sigma_p to first order. */
+         * c = lower + e^p the standard error is (c - lower) * sigma_p to first order. */
         const gsl_vector *f = gsl_multifit_nlinear_residual(w);
         double chisq;
         gsl_blas_ddot(f, f, &chisq);
@@ -219,13 +197,13 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         };
         for (size_t i = 0; i < c.n_params; ++i) {
             report->names[i] = c.params[i].key;
-            report->value[i] = *c.params[i].field(&c.tire);
-            report->std_error[i] = (report->value[i] - c.params[i].offset) *
+            report->value[i] = *field(&c.tire, &c.params[i]);
+            report->std_error[i] = (report->value[i] - c.params[i].lower) *
                                    sqrt(sigma2 * gsl_matrix_get(covar, i, i));
         }
         *tire = c.tire;
     }
-    report->seconds = tirenv__wall_seconds() - t0;
+    report->seconds = tirenv_study__wall_seconds() - t0;
     free(c.h);
     free(c.cases);
     free(c.offset);

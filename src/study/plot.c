@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "tirenv/io.h"
+#include "tirenv/plot.h"
 
 /* Image size in pixels: the width of a report column, the paper's aspect ratio. */
 enum { PLOT_WIDTH = 900, PLOT_HEIGHT = 600 };
@@ -35,31 +36,29 @@ void tirenv_plot__base(const char *case_name, char *base, size_t size)
         snprintf(base, size, "case");
 }
 
-/* A line style per model, the same on every plot so a reader learns the colours once: the
- * physical models in cool colours, the network in red, the rigid limit grey and dashed. */
-typedef struct {
+/* One line style per model, the same on every plot of tirenv (the study's and the ride's), so a
+ * reader learns the colours once: the physical models in cool colours, the network in red,
+ * the rigid limit grey and dashed, the point contact (the ride's baseline) orange and thin. */
+static const struct {
     const char *name;
-    const char *colour;
-    int dash;              /* gnuplot dashtype: 1 solid, 2 dashed, 4 dash-dot */
-    double width;
-} plot_style;
-
-static const plot_style styles[] = {
-    {"rigid", "#808080", 2, 2.0},
-    {"springs", "#1f5fbf", 1, 2.5},
-    {"ring", "#2a9d3a", 4, 2.0},
-    {"cam", "#9467bd", 1, 2.0},
-    {"nn", "#d62728", 1, 2.5},
+    tirenv_plot_style style;
+} styles[] = {
+    {"rigid", {"#808080", 2, 2.0}},
+    {"springs", {"#1f5fbf", 1, 2.5}},
+    {"ring", {"#2a9d3a", 4, 2.0}},
+    {"cam", {"#9467bd", 1, 2.0}},
+    {"nn", {"#d62728", 1, 2.5}},
+    {"point", {"#ff7f0e", 1, 1.5}},
 };
-static const char *const spare_colours[] = {"#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+static const char *const spare_colours[] = {"#8c564b", "#e377c2", "#17becf", "#bcbd22"};
 
-static plot_style style_for(const char *name, size_t i)
+tirenv_plot_style tirenv_plot_style_of(const char *model, size_t i)
 {
     for (size_t k = 0; k < sizeof styles / sizeof styles[0]; ++k)
-        if (strcmp(styles[k].name, name) == 0)
-            return styles[k];
+        if (strcmp(styles[k].name, model) == 0)
+            return styles[k].style;
     const size_t n_spare = sizeof spare_colours / sizeof spare_colours[0];
-    return (plot_style){name, spare_colours[i % n_spare], 1, 2.0};
+    return (tirenv_plot_style){spare_colours[i % n_spare], 1, 2.0};
 }
 
 /* A gnuplot double-quoted string: backslash escapes are processed in these, so backslash and
@@ -236,7 +235,7 @@ static int write_script(const char *path, const char *base, const tirenv_plot__s
             "set style line 1 lc rgb 'black' pt 7 ps 0.8   # measured\n",
             x_lo, x_hi);
     for (size_t j = 0; j < n_series; ++j) {
-        const plot_style st = style_for(series[j].name, j);
+        const tirenv_plot_style st = tirenv_plot_style_of(series[j].name, j);
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", j + 2, st.colour,
                 st.width, st.dash, series[j].name);
     }
@@ -392,19 +391,17 @@ static int join(char *buf, size_t size, const char *dir, const char *base, const
 
 /* Draws both images under temporary names and renames them into place only when gnuplot has
  * succeeded; on any failure neither temporary file is left behind. */
-int tirenv_plot__draw(const tirenv_plot__settings *ps, const char *case_name,
-                      tirenv_diag *diag)
+int tirenv_plot_draw(const char *dir, const char *base, const char *gnuplot,
+                     tirenv_diag *diag)
 {
-    char base[64];
-    tirenv_plot__base(case_name, base, sizeof base);
     char tmp_ext[2][64], tmp[2][512], final[2][512], script[300];
     const char *ext[2] = {".png", ".svg"};
     int status = TIRENV_OK;
     for (int i = 0; i < 2 && !status; ++i) {
         snprintf(tmp_ext[i], sizeof tmp_ext[i], "%s.tmp.%ld", ext[i], (long)getpid());
-        status = join(tmp[i], sizeof tmp[i], ps->dir, base, tmp_ext[i], diag);
+        status = join(tmp[i], sizeof tmp[i], dir, base, tmp_ext[i], diag);
         if (!status)
-            status = join(final[i], sizeof final[i], ps->dir, base, ext[i], diag);
+            status = join(final[i], sizeof final[i], dir, base, ext[i], diag);
     }
     if (status)
         return status;
@@ -416,7 +413,7 @@ int tirenv_plot__draw(const tirenv_plot__settings *ps, const char *case_name,
     gp_single(svg_q, sizeof svg_q, name);
     snprintf(assign, sizeof assign, "png_out = %s; svg_out = %s", png_q, svg_q);
     snprintf(script, sizeof script, "%s.gp", base);
-    status = tirenv_plot__run(ps->gnuplot, ps->dir, script, assign, diag);
+    status = tirenv_plot__run(gnuplot, dir, script, assign, diag);
     for (int i = 0; i < 2 && !status; ++i)
         if (rename(tmp[i], final[i]) != 0)
             status = tirenv_error(diag, TIRENV_EIO, final[i], 0, "gnuplot",
@@ -427,6 +424,14 @@ int tirenv_plot__draw(const tirenv_plot__settings *ps, const char *case_name,
         remove(tmp[1]);
     }
     return status;
+}
+
+int tirenv_plot__draw(const tirenv_plot__settings *ps, const char *case_name,
+                      tirenv_diag *diag)
+{
+    char base[64];
+    tirenv_plot__base(case_name, base, sizeof base);
+    return tirenv_plot_draw(ps->dir, base, ps->gnuplot, diag);
 }
 
 int tirenv_plot__case(const tirenv_plot__settings *ps, const tirenv_case *c, size_t n_series,

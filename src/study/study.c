@@ -10,7 +10,7 @@
 #include "tirenv/io.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 tirenv_study_settings tirenv_study_default(void)
 {

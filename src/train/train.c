@@ -1,10 +1,9 @@
 /* The training driver: trainer lookup and defaults, seeded restarts, early stopping on the
- * control set, errors per split, and the samples of a data set (docs/models.md section 6).
+ * control set, errors per split (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
 
 #include "train/train_impl.h"
 #include "core/clock.h"
@@ -162,51 +161,6 @@ uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h)
     return h;
 }
 
-int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
-                                tirenv_samples *out, double **x, double **y,
-                                tirenv_diag *diag)
-{
-    size_t n = 0;
-    *x = *y = NULL;
-    *out = (tirenv_samples){.n = 0, .n_in = TIRENV_NN_INPUTS, .x = NULL, .y = NULL};
-    for (size_t c = 0; c < ds->n; ++c) {
-        const tirenv_case *cs = &ds->cases[c];
-        if (cs->split != split)
-            continue;
-        if (cs->curve.n == 0 || !cs->curve.x_N || !cs->curve.h)
-            return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "curve",
-                                "case '%s' has no curve points", cs->name);
-        n += cs->curve.n;
-    }
-    if (n == 0)
-        return TIRENV_OK;
-    double *xs = malloc(n * TIRENV_NN_INPUTS * sizeof *xs);
-    double *ys = malloc(n * sizeof *ys);
-    if (!xs || !ys) {
-        free(xs);
-        free(ys);
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for %zu samples", n);
-    }
-    size_t k = 0;
-    for (size_t c = 0; c < ds->n; ++c) {
-        const tirenv_case *cs = &ds->cases[c];
-        if (cs->split != split)
-            continue;
-        for (size_t i = 0; i < cs->curve.n; ++i, ++k) {
-            double *u = xs + k * TIRENV_NN_INPUTS;
-            u[TIRENV_NN_X_N] = cs->curve.x_N[i];
-            u[TIRENV_NN_CONTACT_LENGTH] = cs->contact_length;
-            u[TIRENV_NN_HEIGHT] = cs->H;
-            u[TIRENV_NN_LENGTH] = cs->L;
-            ys[k] = cs->curve.h[i];
-        }
-    }
-    *x = xs;
-    *y = ys;
-    *out = (tirenv_samples){.n = n, .n_in = TIRENV_NN_INPUTS, .x = xs, .y = ys};
-    return TIRENV_OK;
-}
-
 /* splitmix64 (Steele, Lea and Flood 2014): decorrelates the seeds of consecutive restarts, so
  * that restart r is reproducible on its own, whatever the others drew. */
 static unsigned long restart_seed(unsigned long seed, size_t r)
@@ -301,7 +255,6 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
                  tirenv_train_report *report, tirenv_diag *diag)
 {
     *out = NULL;
-    gsl_set_error_handler_off();
     if (!type || !settings || !train)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no trainer, settings or samples");
     if (train->n == 0)
@@ -339,7 +292,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
     }
 
     const double out_std = out_std_of(r.nn);
-    const double t_start = tirenv__wall_seconds();
+    const double t_start = tirenv_core__wall_seconds();
     tirenv_train_report rep = {0};
     double best_overall = INFINITY;
     int cancelled = 0;
@@ -350,7 +303,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             run_free(type, &r);
             return status;
         }
-        const double t_restart = tirenv__wall_seconds();
+        const double t_restart = tirenv_core__wall_seconds();
         double best = tirenv_train__sse(r.nn, sel, r.y);
         size_t best_epoch = 0, epoch = 0;
         double best_time = 0;
@@ -368,7 +321,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             if (e < best) {
                 best = e;
                 best_epoch = epoch;
-                best_time = tirenv__wall_seconds() - t_restart;
+                best_time = tirenv_core__wall_seconds() - t_restart;
                 tirenv_nn_copy(r.cand, r.nn);
             }
             if (s->progress) {
@@ -411,7 +364,7 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
             rep.stop = stop;
         }
     }
-    rep.wall_time = tirenv__wall_seconds() - t_start;
+    rep.wall_time = tirenv_core__wall_seconds() - t_start;
     rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(r.best, train);
     rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(r.best, control);
     rep.error[TIRENV_SPLIT_VALIDATION] = tirenv_train_evaluate(r.best, validation);

@@ -1,9 +1,10 @@
 /* The vehicle property file (.veh, docs/formats.md section 3): the .tir syntax through the
  * property-file engine, with the keys of data/vehicles/tractor.veh.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/vehicle_file.h"
+
 #include "data/propfile.h"
-#include "tirenv/tirenv.h"
-#include "tirenv/vehicle.h"
+#include "tirenv/version.h"  /* TIRENV_VERSION, written into the file */
 
 #include <stddef.h>
 #include <stdio.h>

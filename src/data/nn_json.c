@@ -25,7 +25,7 @@
 #include <jansson.h>
 
 #include "tirenv/io.h"
-#include "tirenv/train.h"
+#include "tirenv/nn_file.h"
 
 /* The largest integer jansson holds. */
 #if JSON_INTEGER_IS_LONG_LONG

@@ -1,5 +1,7 @@
-/* Private: the profile's layout, shared with the models that walk its segments directly
- * (the rigid disc, the springs model's ray caster). Not part of the public API. */
+/* Private to the core: the profile's layout (src/profile builds it), shared with the models
+ * that walk its segments directly (the rigid disc, the springs model's ray caster, the cam,
+ * the ring). It lives in src/core, what every core module may use, so that no module reaches
+ * into another's private header. Not part of the public API. */
 #ifndef TIRENV_PROFILE_IMPL_H
 #define TIRENV_PROFILE_IMPL_H
 

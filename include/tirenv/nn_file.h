@@ -1,0 +1,40 @@
+/* tirenv: the empirical model's file (docs/formats.md): a network (nn.h) and how it was trained
+ * (train.h), as JSON. A file format, so it belongs to the auxiliary layer (src/data/nn_json.c),
+ * not to the network or its trainers. SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_NN_FILE_H
+#define TIRENV_NN_FILE_H
+
+#include "tirenv/decls.h"
+#include <stdint.h>
+#include "tirenv/error.h"
+#include "tirenv/nn.h"
+#include "tirenv/train.h"
+
+TIRENV_BEGIN_DECLS
+
+#define TIRENV_NN_FORMAT "tirenv-nn"
+#define TIRENV_NN_FORMAT_VERSION 1
+
+/* What a model file records besides the network. */
+typedef struct {
+    char trainer[32];                /* trainer name, or "" */
+    tirenv_train_settings settings;  /* as used (the callback is not saved) */
+    tirenv_train_report report;
+    uint64_t fingerprint;            /* tirenv_samples_fingerprint of train, control,
+                                        validation in turn */
+    double R0;                       /* free radius of the tire the data's x_N refers to, m;
+                                        0 if unknown */
+    char data[512];                  /* data set directory, or "" */
+} tirenv_train_record;
+
+/* Writes nn and rec (rec may be NULL) atomically (tirenv_outfile). Non-finite numbers are
+ * refused. Reals are written with 17 significant digits, so reading gives the same bits. */
+int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
+                         tirenv_diag *diag);
+/* Reads a model file, checking format, version, sizes, finiteness, ranges and the network
+ * checksum; errors name the file and the field. *out is NULL on failure; rec may be NULL. */
+int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
+                        tirenv_diag *diag);
+
+TIRENV_END_DECLS
+#endif

@@ -1,0 +1,130 @@
+/* The safeguarded Newton of docs/models.md section 11, the default equilibrium method.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
+ * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton on the exact dF/dz is taken when it stays inside
+ * and converges; otherwise the step falls back to bisection, as in Numerical Recipes' rtsafe.
+ * Converged when the residual and the next correction are both within tolerance, or when the
+ * bracket is narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes
+ * the face it hits, so its length jumps), and then the equilibrium is the jump, located to
+ * eps_z, and the end of the bracket with the smaller residual is reported as it was
+ * evaluated. */
+#include "core/equilibrium.h"
+
+#include <math.h>
+
+typedef struct {
+    double lo, hi;         /* the bracket, m */
+    double f_lo, f_hi;     /* f at its ends, N (f_lo NaN until checked) */
+    int lo_checked;        /* f(lo) >= 0 is known, not only expected */
+    double down;           /* the step from a guess with no contact, m; grows each time */
+    double dz_old, last_dz;/* the steps before, m, to see Newton stall */
+    tirenv_eq_point cur;   /* the latest iterate */
+    double step;           /* Newton's correction from it, m (INFINITY if dF/dz >= 0) */
+} newton_state;
+
+/* A new iterate: the bracket, and the correction Newton proposes from it. */
+static void take(newton_state *st, const tirenv_eq_point *p, double G)
+{
+    const double f = p->F - G;
+    if (f >= 0) {
+        st->lo = p->z;
+        st->f_lo = f;
+        st->lo_checked = 1;
+    } else {
+        st->hi = p->z;
+        st->f_hi = f;
+    }
+    st->cur = *p;
+    st->step = p->dF_dz < 0 ? -f / p->dF_dz : INFINITY;
+}
+
+static int newton_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
+                      tirenv_diag *diag)
+{
+    newton_state *st = state;
+    const tirenv_eq_problem *prob = &s->prob;
+    *st = (newton_state){.lo = prob->z_lo, .hi = prob->z_hi, .f_lo = NAN, .f_hi = -s->G,
+                         .lo_checked = 0, .down = prob->dz_hint, .dz_old = INFINITY,
+                         .last_dz = INFINITY};
+    tirenv_eq_point p;
+    const int status = tirenv_eq__eval(s, fmin(fmax(prob->z0, st->lo), st->hi), &p, stop, diag);
+    if (!status)
+        take(st, &p, s->G);
+    return status;
+}
+
+static tirenv_eq_stop newton_test(const void *state, const tirenv_eq_solver *s,
+                                  const tirenv_eq_point **accepted)
+{
+    const newton_state *st = state;
+    if (fabs(st->cur.F - s->G) <= s->eq.eps_F && fabs(st->step) <= s->eq.eps_z) {
+        *accepted = &st->cur;
+        return TIRENV_EQ_RESIDUAL;
+    }
+    if (st->lo_checked && st->hi - st->lo <= s->eq.eps_z) {
+        /* The ends of the bracket are the latest evaluations on either side of the root. */
+        const int above = s->have_above &&
+                          fabs(s->above.F - s->G) < fabs(s->below.F - s->G);
+        *accepted = above ? &s->above : &s->below;
+        return TIRENV_EQ_BRACKET;
+    }
+    return TIRENV_EQ_RUNNING;
+}
+
+static int newton_iterate(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
+                          tirenv_diag *diag)
+{
+    newton_state *st = state;
+    const double G = s->G, z = st->cur.z, f = st->cur.F - G, dF = st->cur.dF_dz;
+    double z_next = z + st->step;
+    /* Newton that leaves the bracket, or does not halve the step from the step before last
+     * (it oscillates across a jump of F_z), gives way to bisection. */
+    const int stalled = fabs(2 * st->step) > st->dz_old;
+    if (!(z_next > st->lo && z_next < st->hi) || (stalled && st->lo_checked)) {
+        if (dF >= 0 && f < 0) {
+            /* No contact yet: the discrete elements can miss a corner that the rigid disc
+             * (z_hi) touches, so the first contact may lie well below. */
+            z_next = fmax(z - st->down, 0.5 * (st->lo + st->hi));
+            st->down *= 4;
+        } else if (st->lo_checked) {
+            z_next = 0.5 * (st->lo + st->hi);
+        } else {
+            /* Verify the bracket's lower end before relying on it. */
+            st->lo_checked = 1;
+            tirenv_eq_point p;
+            const int status = tirenv_eq__eval(s, st->lo, &p, stop, diag);
+            if (status)
+                return status;
+            if (p.F < G) {
+                *stop = TIRENV_EQ_NO_BRACKET;
+                return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
+                                    "load %.6g N exceeds the %.6g N the tire carries with its "
+                                    "centre at the ground (z = %.6g m)",
+                                    G, p.F, st->lo);
+            }
+            st->f_lo = p.F - G;
+            /* One false-position step. */
+            z_next = st->lo + st->f_lo * (st->hi - st->lo) / (st->f_lo - st->f_hi);
+        }
+    }
+    st->dz_old = st->last_dz;
+    st->last_dz = fabs(z_next - z);
+    tirenv_eq_point p;
+    const int status = tirenv_eq__eval(s, z_next, &p, stop, diag);
+    if (!status)
+        take(st, &p, G);
+    return status;
+}
+
+static const tirenv_eq_solver_type newton_type = {
+    .name = "newton",
+    .size = sizeof(newton_state),
+    .alloc = NULL,
+    .free = NULL,
+    .set = newton_set,
+    .iterate = newton_iterate,
+    .test = newton_test,
+};
+
+const tirenv_eq_solver_type *const tirenv_eq__newton = &newton_type;

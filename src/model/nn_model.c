@@ -1,0 +1,354 @@
+/* The empirical model, the paper's trained network (docs/models.md section 6), as a
+ * tirenv_model_type, so that every command runs it as it runs the physical models.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * The network's inputs are the working regime (the contact length l_c), the obstacle's
+ * height and length, and the normalised position x_N; its output is h. So the model
+ *   - turns a load into l_c through the springs model of the same tire (its flat-ground
+ *     chord), and remembers the pair tirenv_model_load_for_contact_length made, so that a
+ *     regime given as a contact length reaches the network exactly;
+ *   - over a single rectangular cleat centred at x = 0 on level ground (a profile of exactly
+ *     the four corners) evaluates the paper's curve (tirenv_nn_envelope); over any other
+ *     profile, the equivalent-cleat decomposition of nn_road.h (docs/models.md section 12), an
+ *     extension beyond the paper;
+ *   - reports z = z_flat + h with z_flat = sqrt(R0^2 - (l_c/2)^2), the chord height, fz the
+ *     load, and fx, contacts and iterations 0: the network knows none of them. Its slope is
+ *     dh/dx of its curve: over a cleat, central differences of the sweep's own curve (one-sided
+ *     at its ends), or of a step of 1e-5 in x_N at a single position; over a road, the
+ *     decomposition's own derivative.
+ * It reads the whole profile at set (the decomposition needs it), so it does not stream. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model/model_impl.h"
+#include "tirenv/nn.h"
+#include "tirenv/nn_road.h"
+#include "tirenv/xn.h"
+
+/* Positions per block of a sweep: the network's batch path, on the stack. */
+enum { NN_MODEL_BLOCK = 256 };
+/* The x_N step of the slope at a single position over a cleat. */
+static const double slope_step_xN = 1e-5;
+
+typedef struct {
+    tirenv_tire tire;
+    tirenv_model *springs;     /* the working regime: load <-> contact length */
+    tirenv_nn *nn;             /* owned copy; NULL until tirenv_model_set_network */
+    double R0;                 /* the free radius x_N refers to, m */
+    char r0_warning[256];      /* the network's R0 is not the tire's, or "" */
+    int pinned;                /* the last load_for_contact_length's pair: */
+    double pin_load, pin_l_c;  /* N, m */
+    /* The set: */
+    const tirenv_profile *prof;
+    double load, l_c, z_flat;  /* N, m, m */
+    int cleat;                 /* the profile is a single cleat L x H */
+    double L, H, x_0;          /* m; x_0 the x_N origin */
+    tirenv_nn_road *road;      /* otherwise its decomposition */
+    char warnings[1024];
+    char note[256];
+} nn_state;
+
+static void nn_model_free(void *state)
+{
+    nn_state *st = state;
+    tirenv_model_free(st->springs);
+    tirenv_nn_free(st->nn);
+    tirenv_nn_road_free(st->road);
+    free(st);
+}
+
+static void *nn_model_alloc(const tirenv_tire *tire)
+{
+    nn_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return NULL;
+    st->tire = *tire;
+    st->R0 = tire->springs.R0;
+    if (!(st->springs = tirenv_model_alloc(tirenv_model_springs, tire))) {
+        nn_model_free(st);
+        return NULL;
+    }
+    return st;
+}
+
+static int nn_model_set_network(void *state, const struct tirenv_nn *nn, double R0,
+                                tirenv_diag *diag)
+{
+    nn_state *st = state;
+    if (tirenv_nn_n_inputs(nn) != TIRENV_NN_INPUTS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                            "a network of %zu inputs; the enveloping model has %d (x_N, "
+                            "contact length, obstacle height, obstacle length)",
+                            tirenv_nn_n_inputs(nn), TIRENV_NN_INPUTS);
+    tirenv_nn *copy = tirenv_nn_clone(nn);
+    if (!copy)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    tirenv_nn_free(st->nn);
+    st->nn = copy;
+    const double R0_tire = st->tire.springs.R0;
+    st->R0 = R0 > 0 ? R0 : R0_tire;
+    st->r0_warning[0] = '\0';
+    if (R0 > 0 && fabs(R0 - R0_tire) > 1e-9 * R0)
+        snprintf(st->r0_warning, sizeof st->r0_warning,
+                 "the network's data refer to a tire of R0 %g m, the tire file's is %g m; x_N "
+                 "and z use %g m", R0, R0_tire, st->R0);
+    return TIRENV_OK;
+}
+
+/* The network's regime at a load: the springs model's contact length, or exactly the one the
+ * load was made from. flat may be NULL. */
+static int regime(nn_state *st, double load, double *l_c, tirenv_flat *flat, tirenv_diag *diag)
+{
+    tirenv_flat f;
+    const int status = tirenv_model_flat(st->springs, load, &f, diag);
+    if (status)
+        return status;
+    *l_c = st->pinned && load == st->pin_load ? st->pin_l_c : f.contact_length;
+    if (flat)
+        *flat = f;
+    return TIRENV_OK;
+}
+
+/* The chord height of docs/models.md section 1: where the network's z is measured from. */
+static int chord_height(const nn_state *st, double l_c, double *z_c, tirenv_diag *diag)
+{
+    if (!(l_c > 0 && l_c < 2 * st->R0))
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
+                            "%g m is no chord of a tire of radius %g m", l_c, st->R0);
+    *z_c = sqrt(st->R0 * st->R0 - 0.25 * l_c * l_c);
+    return TIRENV_OK;
+}
+
+static int nn_model_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    nn_state *st = state;
+    tirenv_flat f;
+    double l_c = NAN, z_c = NAN;
+    int status = regime(st, load, &l_c, &f, diag);
+    if (!status)
+        status = chord_height(st, l_c, &z_c, diag);
+    if (status)
+        return status;
+    *out = (tirenv_flat){.load = load, .z_flat = z_c, .deflection = st->R0 - z_c,
+                         .contact_length = l_c, .stiffness = f.stiffness};
+    return TIRENV_OK;
+}
+
+static int nn_model_load_for_contact_length(void *state, double l_c, double *load,
+                                            tirenv_diag *diag)
+{
+    nn_state *st = state;
+    const int status = tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
+    st->pinned = status == TIRENV_OK;
+    st->pin_load = *load;
+    st->pin_l_c = l_c;
+    return status;
+}
+
+/* A single rectangular cleat centred at x = 0 on level ground 0: the network's own case. */
+static int single_cleat(const tirenv_profile *p, double *L, double *H)
+{
+    if (tirenv_profile_size(p) != 4)
+        return 0;
+    const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
+    if (!(x[0] == x[1] && x[2] == x[3] && x[0] < 0 && x[3] == -x[0] && z[0] == 0 &&
+          z[3] == 0 && z[1] == z[2] && z[1] > 0))
+        return 0;
+    *L = x[3] - x[0];
+    *H = z[1];
+    return 1;
+}
+
+/* Appends one line to the warnings. */
+static void warn(nn_state *st, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static void warn(nn_state *st, const char *fmt, ...)
+{
+    size_t used = strlen(st->warnings);
+    if (used && used + 1 < sizeof st->warnings) {
+        st->warnings[used++] = '\n';
+        st->warnings[used] = '\0';
+    }
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(st->warnings + used, sizeof st->warnings - used, fmt, ap);
+    va_end(ap);
+}
+
+/* One warning per input the training never saw a value like, among the inputs from the
+ * contact length up to end - 1 (the cleat's all three; over a road only the contact length,
+ * the decomposition counts its obstacles itself). */
+static void warn_range(nn_state *st, size_t end)
+{
+    static const char *const what[TIRENV_NN_INPUTS] = {"x_N", "contact length",
+                                                       "obstacle height", "obstacle length"};
+    const double u[TIRENV_NN_INPUTS] = {0.5, st->l_c, st->H, st->L};
+    double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
+    tirenv_nn_get_input_range(st->nn, lo, hi);
+    for (size_t i = tirenv_nn_out_of_range(st->nn, u, TIRENV_NN_CONTACT_LENGTH); i < end;
+         i = tirenv_nn_out_of_range(st->nn, u, i + 1))
+        warn(st, "%s %g m is outside the range the network was trained on (%g to %g m): the "
+             "prediction is an extrapolation", what[i], u[i], lo[i], hi[i]);
+}
+
+/* The decomposition's obstacles outside the training range, in one warning. */
+static void warn_clamped(nn_state *st, const tirenv_nn_road_info *in)
+{
+    const size_t clamped = in->height_above + in->length_below + in->length_above;
+    if (!clamped)
+        return;
+    char detail[256] = "";
+    size_t used = 0;
+    const struct {
+        size_t count;
+        const char *text;
+        double bound;
+    } parts[] = {{in->height_above, "heights above", in->H_max},
+                 {in->length_below, "lengths below", in->L_min},
+                 {in->length_above, "lengths above", in->L_max}};
+    for (size_t i = 0; i < sizeof parts / sizeof parts[0]; ++i)
+        if (parts[i].count && used < sizeof detail)
+            used += (size_t)snprintf(detail + used, sizeof detail - used, "%s%zu %s %g m",
+                                     used ? ", " : "", parts[i].count, parts[i].text,
+                                     parts[i].bound);
+    warn(st, "%zu of %zu obstacles outside the network's training range, clamped to it (%s): "
+         "their curves are the nearest trained cleat's", clamped, in->obstacles, detail);
+}
+
+static int nn_model_set(void *state, const tirenv_profile *p, double load, double z_flat,
+                        tirenv_diag *diag)
+{
+    nn_state *st = state;
+    st->warnings[0] = st->note[0] = '\0';
+    tirenv_nn_road_free(st->road);
+    st->road = NULL;
+    if (!st->nn)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                            "the nn model has no network (tirenv_model_set_network)");
+    const int status = regime(st, load, &st->l_c, NULL, diag);
+    if (status)
+        return status;
+    st->prof = p;
+    st->load = load;
+    st->z_flat = z_flat;
+    st->cleat = single_cleat(p, &st->L, &st->H);
+    if (st->r0_warning[0])
+        warn(st, "%s", st->r0_warning);
+    if (st->cleat) {
+        warn_range(st, TIRENV_NN_INPUTS);
+        st->x_0 = tirenv_xN_origin(st->R0, st->l_c, st->L, st->H);
+        snprintf(st->note, sizeof st->note, "cleat %.4g x %.4g m", st->L, st->H);
+        /* No positions: only the checks of the arguments, so that set says what is wrong. */
+        return tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, 0, NULL, NULL, diag);
+    }
+    warn_range(st, TIRENV_NN_CONTACT_LENGTH + 1);
+    const int s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag);
+    if (s)
+        return s;
+    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    warn_clamped(st, &in);
+    snprintf(st->note, sizeof st->note, "%zu obstacles above a baseline of width %.3g m (%zu "
+             "lower than the lowest trained cleat, scaled)", in.obstacles, in.width,
+             in.height_below);
+    return TIRENV_OK;
+}
+
+static void fill(const nn_state *st, double x, double h, double slope, tirenv_point *out)
+{
+    *out = (tirenv_point){.x = x, .z = st->z_flat + h, .h = h, .slope = slope, .fx = 0,
+                          .fz = st->load, .contacts = 0, .iterations = 0};
+}
+
+static int nn_model_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    nn_state *st = state;
+    if (!isfinite(x))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x", "must be finite, got %g", x);
+    double h, slope;
+    int status;
+    if (st->cleat) {
+        const double d = slope_step_xN * fabs(st->x_0);
+        const double xs[3] = {x - d, x, x + d};
+        double hs[3];
+        status = tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, 3, xs, hs, diag);
+        h = hs[1];
+        slope = (hs[2] - hs[0]) / (xs[2] - xs[0]);
+    } else {
+        status = tirenv_nn_road_eval(st->road, 1, &x, &h, &slope, diag);
+    }
+    if (!status)
+        fill(st, x, h, slope, out);
+    return status;
+}
+
+/* The sweep in blocks through the network's batch path; over a cleat the slope is the sweep's
+ * own curve's, as 'tirenv predict' has always written it. */
+static int nn_model_envelope(void *state, size_t n, const double x[], tirenv_point out[],
+                             size_t *failed, tirenv_diag *diag)
+{
+    nn_state *st = state;
+    double h[NN_MODEL_BLOCK], slope[NN_MODEL_BLOCK];
+    for (size_t k = 0; k < n; ++k)
+        if (!isfinite(x[k])) {
+            *failed = k;
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x", "must be finite, got %g",
+                                x[k]);
+        }
+    for (size_t k0 = 0; k0 < n; k0 += NN_MODEL_BLOCK) {
+        const size_t m = n - k0 < NN_MODEL_BLOCK ? n - k0 : NN_MODEL_BLOCK;
+        const int status =
+            st->cleat ? tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, m, x + k0, h,
+                                           diag)
+                      : tirenv_nn_road_eval(st->road, m, x + k0, h, slope, diag);
+        if (status) {
+            *failed = k0;
+            return status;
+        }
+        for (size_t k = 0; k < m; ++k)
+            fill(st, x[k0 + k], h[k], st->cleat ? 0 : slope[k], &out[k0 + k]);
+    }
+    if (st->cleat && n > 1)
+        for (size_t k = 0; k < n; ++k) {
+            const size_t lo = k > 0 ? k - 1 : 0, hi = k + 1 < n ? k + 1 : n - 1;
+            out[k].slope = (out[hi].h - out[lo].h) / (x[hi] - x[lo]);
+        }
+    return TIRENV_OK;
+}
+
+static const char *nn_model_warnings(const void *state)
+{
+    return ((const nn_state *)state)->warnings;
+}
+
+static const char *nn_model_note(const void *state)
+{
+    return ((const nn_state *)state)->note;
+}
+
+static const tirenv_model_type nn_type = {
+    .name = "nn",
+    .summary = "the paper's trained network (--nn FILE)",
+    .flags = TIRENV_MODEL_NEEDS_NETWORK,
+    .params = NULL,
+    .n_params = 0,
+    .n_params_max = 0,
+    .alloc = nn_model_alloc,
+    .free = nn_model_free,
+    .flat = nn_model_flat,
+    .load_for_contact_length = nn_model_load_for_contact_length,
+    .set = nn_model_set,
+    .eval = nn_model_eval,
+    .envelope = nn_model_envelope,
+    .set_profile = NULL,
+    .reach = NULL,
+    .set_network = nn_model_set_network,
+    .warnings = nn_model_warnings,
+    .note = nn_model_note,
+};
+const tirenv_model_type *tirenv_model_nn = &nn_type;

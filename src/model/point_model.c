@@ -1,0 +1,107 @@
+/* The classic single-point contact as a tirenv_model_type: the tire touches the ground at one
+ * point under its centre and follows the raw profile, with no enveloping at all. It is what
+ * vehicle models without a tire model assume, and the baseline a ride compares the enveloping
+ * models with (docs/models.md section 9.2). SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/profile_impl.h"
+#include "model/model_impl.h"
+
+typedef struct {
+    tirenv_tire tire;
+    const tirenv_profile *prof;
+    double G;                /* load, N */
+    size_t hint;             /* segment of the last position: a sweep's next is near it */
+    tirenv_model *springs;   /* only to translate a contact length into a load */
+} point_state;
+
+static void *point_alloc(const tirenv_tire *tire)
+{
+    point_state *st = calloc(1, sizeof *st);
+    if (st)
+        st->tire = *tire;
+    return st;
+}
+
+static void point_free(void *state)
+{
+    point_state *st = state;
+    tirenv_model_free(st->springs);
+    free(st);
+}
+
+/* The point does not deflect: the spring of a vehicle model carries the load. */
+static int point_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+{
+    const point_state *st = state;
+    (void)diag;
+    *out = (tirenv_flat){.load = load, .z_flat = st->tire.springs.R0, .deflection = 0,
+                         .contact_length = 0, .stiffness = INFINITY};
+    return TIRENV_OK;
+}
+
+/* No contact length of its own: as for the rigid disc, the springs model's load. */
+static int point_load_for_contact_length(void *state, double l_c, double *load,
+                                         tirenv_diag *diag)
+{
+    point_state *st = state;
+    if (!st->springs && !(st->springs = tirenv_model_alloc(tirenv_model_springs, &st->tire)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    return tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
+}
+
+static int point_set(void *state, const tirenv_profile *p, double load, double z_flat,
+                     tirenv_diag *diag)
+{
+    point_state *st = state;
+    (void)z_flat;
+    (void)diag;
+    st->prof = p;
+    st->G = load;
+    st->hint = 0;
+    return TIRENV_OK;
+}
+
+/* h is the ground under the centre (the higher side of a wall, as tirenv_profile_height
+ * says), and the ground force is normal to the ground there: its slope is the segment's
+ * (0 on the flat extensions, and on the segment after a wall where x is the wall's). */
+static int point_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
+{
+    point_state *st = state;
+    if (!isfinite(x))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x", "must be finite, got %g", x);
+    const tirenv_profile *p = st->prof;
+    const size_t k = st->hint = tirenv_profile__segment_near(p, st->hint, x);
+    const double slope = x >= p->x[0] && k + 1 < p->n && p->x[k + 1] > p->x[k]
+                             ? (p->z[k + 1] - p->z[k]) / (p->x[k + 1] - p->x[k])
+                             : 0;
+    const double h = tirenv_profile_height(p, x);
+    /* fx = -G*slope, with level ground's 0 written as 0, not -0. */
+    const double fx = slope != 0 ? -st->G * slope : 0;
+    *out = (tirenv_point){.x = x, .z = st->tire.springs.R0 + h, .h = h, .slope = slope,
+                          .fx = fx, .fz = st->G, .contacts = 1, .iterations = 0};
+    return TIRENV_OK;
+}
+
+static const tirenv_model_type point_type = {
+    .name = "point",
+    .summary = "single-point contact on the raw profile",
+    .flags = TIRENV_MODEL_STREAMS,
+    .params = NULL,
+    .n_params = 0,
+    .n_params_max = 0,
+    .alloc = point_alloc,
+    .free = point_free,
+    .flat = point_flat,
+    .load_for_contact_length = point_load_for_contact_length,
+    .set = point_set,
+    .eval = point_eval,
+    .envelope = NULL,
+    .set_profile = NULL,
+    .reach = NULL,  /* it reads the ground at x alone; the default keeps windows long */
+    .set_network = NULL,
+    .warnings = NULL,
+    .note = NULL,
+};
+const tirenv_model_type *tirenv_model_point = &point_type;

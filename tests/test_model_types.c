@@ -1,0 +1,282 @@
+/* The table of model types: every model, the network and the point contact included, is a
+ * type record whose properties (flags, fitted parameters, summary, plot style) say what it
+ * can do, and those properties hold when the models run. SPDX-License-Identifier:
+ * GPL-3.0-or-later */
+#include "testutil.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_rng.h>
+
+#include "tirenv/tirenv.h"
+#include "tirenv/nn.h"
+#include "tirenv/nn_road.h"
+#include "tirenv/plot.h"
+#include "tirenv/study.h"
+
+static size_t n_types(void)
+{
+    size_t n = 0;
+    while (tirenv_model_types()[n])
+        ++n;
+    return n;
+}
+
+/* A 4-8-1 network with seeded weights, scaled to the embedded data set's input ranges: no
+ * good model of a tire, but a network as the model type sees it. */
+static tirenv_nn *made_up_network(void)
+{
+    tirenv_nn_topology t = tirenv_nn_topology_default();
+    tirenv_nn *nn = tirenv_nn_alloc(&t);
+    assert_non_null(nn);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 4242);
+    tirenv_nn_init_weights(nn, rng);
+    enum { N = 97 };
+    double x[N * TIRENV_NN_INPUTS], y[N];
+    for (size_t k = 0; k < N; ++k) {
+        double *u = x + k * TIRENV_NN_INPUTS;
+        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
+        y[k] = 0.04 * gsl_rng_uniform(rng);
+    }
+    tirenv_diag d;
+    assert_int_equal(tirenv_nn_fit_scaling(nn, N, x, y, &d), TIRENV_OK);
+    gsl_rng_free(rng);
+    return nn;
+}
+
+/* Names unique and found by name; summaries short; the flags and the fitted parameters agree;
+ * every parameter is a .tir key of a double in the tire. */
+static void test_records(void **state)
+{
+    (void)state;
+    const size_t n = n_types();
+    assert_true(n >= 6);
+    const tirenv_tire tire = tirenv_tire_default();
+    for (size_t i = 0; i < n; ++i) {
+        const tirenv_model_type *t = tirenv_model_types()[i];
+        const char *name = tirenv_model_type_name(t);
+        assert_true(name[0] != '\0');
+        assert_ptr_equal(tirenv_model_type_find(name), t);
+        for (size_t j = 0; j < i; ++j)
+            assert_string_not_equal(name, tirenv_model_type_name(tirenv_model_types()[j]));
+        const char *summary = tirenv_model_type_summary(t);
+        assert_true(summary[0] != '\0' && strlen(summary) <= 48);
+        size_t np, np_max;
+        const tirenv_model_param *p = tirenv_model_type_params(t, &np, &np_max);
+        const int fittable = (tirenv_model_type_flags(t) & TIRENV_MODEL_FITTABLE) != 0;
+        assert_int_equal(fittable, p != NULL && np > 0);
+        assert_true(np <= np_max && np_max <= TIRENV_FIT_MAX_PARAMS);
+        for (size_t k = 0; k < np_max; ++k) {
+            assert_true(p[k].offset + sizeof(double) <= sizeof(tirenv_tire));
+            const double v = *(const double *)((const char *)&tire + p[k].offset);
+            assert_true(v > p[k].lower);  /* the default tire is inside the fit's domain */
+            /* The key sets the field it claims. */
+            char assignment[96];
+            snprintf(assignment, sizeof assignment, "%s=%.17g", p[k].key, v * 1.0625);
+            tirenv_tire changed = tire;
+            tirenv_diag d;
+            assert_int_equal(tirenv_tir_set(&changed, assignment, &d), TIRENV_OK);
+            assert_near(*(const double *)((const char *)&changed + p[k].offset), v * 1.0625,
+                        0, 1e-15);
+        }
+    }
+    assert_null(tirenv_model_type_find("no-such-model"));
+    assert_null(tirenv_model_type_find(NULL));
+    assert_ptr_equal(tirenv_model_type_find("nn"), tirenv_model_nn);
+    assert_ptr_equal(tirenv_model_type_find("point"), tirenv_model_point);
+    /* What the study fits, and what it must not. */
+    assert_true(tirenv_model_type_flags(tirenv_model_springs) & TIRENV_MODEL_FITTABLE);
+    assert_true(tirenv_model_type_flags(tirenv_model_cam) & TIRENV_MODEL_FITTABLE);
+    assert_false(tirenv_model_type_flags(tirenv_model_ring) & TIRENV_MODEL_FITTABLE);
+    assert_true(tirenv_model_type_flags(tirenv_model_nn) & TIRENV_MODEL_NEEDS_NETWORK);
+}
+
+/* One style per model on every plot: each type has its own colour, none of them a spare, and
+ * no two alike. */
+static void test_plot_styles(void **state)
+{
+    (void)state;
+    const size_t n = n_types();
+    const tirenv_plot_style spare = tirenv_plot_style_of("no-such-model", 0);
+    for (size_t i = 0; i < n; ++i) {
+        const char *name = tirenv_model_type_name(tirenv_model_types()[i]);
+        const tirenv_plot_style s = tirenv_plot_style_of(name, i);
+        assert_string_not_equal(s.colour, spare.colour);
+        assert_true(s.width > 0 && s.dash >= 1);
+        /* The index only picks a spare: a model's own style does not depend on it. */
+        assert_string_equal(tirenv_plot_style_of(name, i + 3).colour, s.colour);
+        for (size_t j = 0; j < i; ++j)
+            assert_string_not_equal(
+                s.colour, tirenv_plot_style_of(tirenv_model_type_name(tirenv_model_types()[j]),
+                                               j).colour);
+    }
+}
+
+/* The flags hold when the models run: a type with its own contact length gives back the l_c
+ * a load was made from; the equilibrium types iterate, the others do not; only the network
+ * needs one. */
+static void test_flags_hold(void **state)
+{
+    (void)state;
+    const tirenv_tire tire = tirenv_tire_default();
+    tirenv_profile *cleat = tirenv_profile_cleat(0.2117, 0.0513);
+    tirenv_nn *nn = made_up_network();
+    const double l_c = 0.3371, R0 = tire.springs.R0;
+    for (size_t i = 0; i < n_types(); ++i) {
+        const tirenv_model_type *t = tirenv_model_types()[i];
+        const unsigned f = tirenv_model_type_flags(t);
+        tirenv_model *m = tirenv_model_alloc(t, &tire);
+        assert_non_null(m);
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        if (f & TIRENV_MODEL_NEEDS_NETWORK) {
+            double load;
+            assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d),
+                             TIRENV_OK);
+            assert_int_equal(tirenv_model_set(m, cleat, load, &d), TIRENV_EINVAL);
+            assert_true(d.message[0] != '\0');
+            assert_int_equal(tirenv_model_set_network(m, nn, R0, &d), TIRENV_OK);
+        } else {
+            assert_int_equal(tirenv_model_set_network(m, nn, R0, &d), TIRENV_EINVAL);
+        }
+        double load;
+        assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
+        tirenv_flat flat;
+        assert_int_equal(tirenv_model_flat(m, load, &flat, &d), TIRENV_OK);
+        if (f & TIRENV_MODEL_CONTACT_LENGTH)
+            assert_near(flat.contact_length, l_c, 1e-9, 0);
+        else if (!(f & TIRENV_MODEL_NEEDS_NETWORK))
+            assert_true(flat.contact_length == 0);
+        else  /* the network's regime is the contact length itself: exactly */
+            assert_true(flat.contact_length == l_c);
+        assert_int_equal(tirenv_model_set(m, cleat, load, &d), TIRENV_OK);
+        assert_true(tirenv_model_load(m) == load);
+        tirenv_point pt;
+        assert_int_equal(tirenv_model_eval(m, -0.0731, &pt, &d), TIRENV_OK);
+        assert_true(pt.x == -0.0731 && isfinite(pt.h) && isfinite(pt.slope));
+        assert_int_equal(pt.iterations > 0, (f & TIRENV_MODEL_EQUILIBRIUM) != 0);
+        print_message("%-8s flags %#04x: h(-0.0731 m) = %.6f m, %zu iterations\n",
+                      tirenv_model_type_name(t), f, pt.h, pt.iterations);
+        tirenv_model_free(m);
+    }
+    tirenv_nn_free(nn);
+    tirenv_profile_free(cleat);
+}
+
+/* The point contact is the raw profile: h is the ground's height under the centre and the
+ * ride's input equals the one without a model, bit for bit. */
+static void test_point_is_the_profile(void **state)
+{
+    (void)state;
+    const double x[] = {-0.8, -0.31, -0.31, 0.12, 0.12, 0.57, 1.3};
+    const double z[] = {0.0, 0.013, 0.061, 0.047, -0.02, 0.0, 0.033};
+    tirenv_profile *p = tirenv_profile_alloc(7, x, z);
+    const tirenv_tire tire = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_point, &tire);
+    assert_non_null(p);
+    assert_non_null(m);
+    enum { N = 613 };
+    static double w_point[N], w_raw[N];
+    tirenv_diag d;
+    assert_int_equal(tirenv_ride_effective(m, p, 11234.5, -1.0317, 0.0041, N, w_point, &d),
+                     TIRENV_OK);
+    assert_int_equal(tirenv_ride_effective(NULL, p, 11234.5, -1.0317, 0.0041, N, w_raw, &d),
+                     TIRENV_OK);
+    for (size_t k = 0; k < N; ++k)
+        assert_bits_equal(w_point[k], w_raw[k]);
+    /* The slope is the segment's; the force leans with it. */
+    tirenv_point pt;
+    assert_int_equal(tirenv_model_set(m, p, 10000, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_eval(m, 0.3, &pt, &d), TIRENV_OK);
+    assert_near(pt.slope, (0.0 - -0.02) / (0.57 - 0.12), 1e-15, 0);
+    assert_near(pt.fx, -10000 * pt.slope, 1e-9, 0);
+    assert_bits_equal(pt.h, tirenv_profile_height(p, 0.3));
+    tirenv_model_free(m);
+    tirenv_profile_free(p);
+}
+
+/* The network as a model: over the four corners of a centred cleat it is the paper's curve
+ * (tirenv_nn_envelope) bit for bit, over anything else the road decomposition's, blocks of
+ * the sweep included; a contact length made into a load reaches the network exactly. */
+static void test_network_model(void **state)
+{
+    (void)state;
+    const tirenv_tire tire = tirenv_tire_default();
+    const double R0 = tire.springs.R0, l_c = 0.3313, L = 0.1873, H = 0.0617;
+    tirenv_nn *nn = made_up_network();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &tire);
+    assert_non_null(m);
+    tirenv_diag d;
+    assert_int_equal(tirenv_model_set_network(m, nn, 0, &d), TIRENV_OK);
+    enum { N = 700 };  /* more than one block of the network's batch */
+    static double x[N], h[N];
+    static tirenv_point pt[N];
+    for (size_t k = 0; k < N; ++k)
+        x[k] = -0.9 + 0.0026 * (double)k;
+    double load;
+    assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
+    tirenv_profile *cleat = tirenv_profile_cleat(L, H);
+    assert_int_equal(tirenv_model_set(m, cleat, load, &d), TIRENV_OK);
+    assert_non_null(strstr(tirenv_model_note(m), "cleat"));
+    assert_int_equal(tirenv_model_envelope(m, N, x, pt, NULL, &d), TIRENV_OK);
+    assert_int_equal(tirenv_nn_envelope(nn, R0, l_c, L, H, N, x, h, &d), TIRENV_OK);
+    const double z_c = sqrt(R0 * R0 - 0.25 * l_c * l_c);
+    size_t raised = 0;
+    for (size_t k = 0; k < N; ++k) {
+        assert_bits_equal(pt[k].h, h[k]);
+        assert_bits_equal(pt[k].z, z_c + h[k]);
+        assert_true(pt[k].fx == 0 && pt[k].fz == load && pt[k].iterations == 0);
+        raised += h[k] > 1e-4;
+        /* A single position's slope (a step of 1e-5 in x_N) against the sweep's. */
+        if (k > 0 && k + 1 < N && k % 37 == 0) {
+            tirenv_point one;
+            assert_int_equal(tirenv_model_eval(m, x[k], &one, &d), TIRENV_OK);
+            assert_bits_equal(one.h, h[k]);
+            if (fabs(x[k]) > 0.02 && h[k] > 1e-3 && h[k - 1] > 1e-3 && h[k + 1] > 1e-3)
+                assert_near(one.slope, pt[k].slope, 0.02, 0.05);
+        }
+    }
+    assert_true(raised > N / 10);
+
+    /* A bump that is not the bare cleat: the decomposition. */
+    const double bx[] = {-1.1, -0.0937, -0.0937, 0.0937, 0.0937, 1.2};
+    const double bz[] = {0, 0, H, H, 0, 0};
+    tirenv_profile *bump = tirenv_profile_alloc(6, bx, bz);
+    assert_int_equal(tirenv_model_set(m, bump, load, &d), TIRENV_OK);
+    assert_non_null(strstr(tirenv_model_note(m), "obstacles above a baseline"));
+    assert_int_equal(tirenv_model_envelope(m, N, x, pt, NULL, &d), TIRENV_OK);
+    tirenv_nn_road *road = NULL;
+    static double slope[N];
+    assert_int_equal(tirenv_nn_road_alloc(nn, R0, l_c, bump, NULL, &road, &d), TIRENV_OK);
+    assert_int_equal(tirenv_nn_road_eval(road, N, x, h, slope, &d), TIRENV_OK);
+    for (size_t k = 0; k < N; ++k) {
+        assert_bits_equal(pt[k].h, h[k]);
+        assert_bits_equal(pt[k].slope, slope[k]);
+    }
+    tirenv_nn_road_free(road);
+    tirenv_profile_free(bump);
+    tirenv_profile_free(cleat);
+    tirenv_model_free(m);
+    tirenv_nn_free(nn);
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();  /* as every program using tirenv does (tirenv/error.h) */
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_records),
+        cmocka_unit_test(test_plot_styles),
+        cmocka_unit_test(test_flags_hold),
+        cmocka_unit_test(test_point_is_the_profile),
+        cmocka_unit_test(test_network_model),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

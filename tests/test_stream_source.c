@@ -1,0 +1,141 @@
+/* Streamed sweeps from a vertex source that is not a file (tirenv_vertex_source): the core
+ * takes its ground through a callback, so a generator in memory streams as the CSV reader
+ * does, and a source handing vertices out of order is stopped with the vertex named.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "testutil.h"
+#include "tirenv/tirenv.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* A source over arrays in memory: vertex k of n, then the end. */
+typedef struct {
+    const double *x, *z;
+    size_t n, k;
+    size_t calls;
+} array_source;
+
+static int array_next(void *ctx, double *x, double *z, int *got, tirenv_diag *diag)
+{
+    (void)diag;
+    array_source *s = ctx;
+    ++s->calls;
+    *got = s->k < s->n;
+    if (*got) {
+        *x = s->x[s->k];
+        *z = s->z[s->k];
+        ++s->k;
+    }
+    return TIRENV_OK;
+}
+
+typedef struct {
+    tirenv_point *pt;
+    size_t n, cap;
+} collect;
+
+static int collect_point(void *ctx, const tirenv_point *pt)
+{
+    collect *c = ctx;
+    if (c->n == c->cap) {
+        c->cap = c->cap ? 2 * c->cap : 512;
+        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
+        assert_non_null(c->pt);
+    }
+    c->pt[c->n++] = *pt;
+    return TIRENV_OK;
+}
+
+/* A bumpy stretch of 8 m every 7 mm: sums of sines, nothing level for long. */
+enum { N_ROAD = 1143 };
+static void bumpy(double x[], double z[])
+{
+    for (size_t k = 0; k < N_ROAD; ++k) {
+        x[k] = 0.007 * (double)k;
+        z[k] = 0.011 * sin(2.3 * x[k]) + 0.0047 * sin(11.9 * x[k] + 0.4);
+    }
+}
+
+/* The springs model streamed from memory equals the whole profile bit for bit, iterations
+ * included, and the source was asked only for what it had plus the one "end" answer. */
+static void test_memory_source_equals_whole(void **state)
+{
+    (void)state;
+    static double x[N_ROAD], z[N_ROAD];
+    bumpy(x, z);
+    const tirenv_tire tire = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
+    tirenv_profile *whole = tirenv_profile_alloc(N_ROAD, x, z);
+    assert_non_null(m);
+    assert_non_null(whole);
+    array_source src = {x, z, N_ROAD, 0, 0};
+    collect c = {0};
+    tirenv_stream_stats st;
+    tirenv_diag d;
+    const double x_from = -0.4173, x_to = 8.2917, dx = 0.0113, load = 11234.5;
+    assert_int_equal(tirenv_model_stream(m, array_next, &src, x_from, x_to, dx, load,
+                                         collect_point, &c, &st, &d),
+                     TIRENV_OK);
+    assert_int_equal(st.vertices_read, N_ROAD);
+    assert_int_equal(src.calls, N_ROAD + 1);
+    assert_true(st.rebuilds > 1);
+    assert_int_equal(c.n, tirenv_positions_count(x_from, x_to, dx));
+    assert_int_equal(tirenv_model_set(m, whole, load, &d), TIRENV_OK);
+    size_t raised = 0;
+    for (size_t k = 0; k < c.n; ++k) {
+        tirenv_point w;
+        assert_int_equal(tirenv_model_eval(m, c.pt[k].x, &w, &d), TIRENV_OK);
+        assert_true(c.pt[k].h == w.h);
+        assert_true(c.pt[k].fx == w.fx);
+        assert_int_equal(c.pt[k].iterations, w.iterations);
+        raised += fabs(w.h) > 1e-3;
+    }
+    assert_true(raised > c.n / 4);  /* the comparison is over ground that matters */
+    free(c.pt);
+    tirenv_profile_free(whole);
+    tirenv_model_free(m);
+}
+
+/* Sources that break a profile's order are stopped with TIRENV_EINVAL, the vertex's 1-based
+ * index in diag's line and the field at fault: x going back, a third vertex at one x, a
+ * number that is not finite. */
+static void test_bad_sources(void **state)
+{
+    (void)state;
+    static const struct {
+        double x[5], z[5];
+        size_t bad;             /* 1-based index of the vertex at fault */
+        const char *field;
+    } cases[] = {
+        {{-1.0, -0.2, 0.3, 0.25, 2.0}, {0, 0, 0.01, 0, 0}, 4, "x"},
+        {{-1.0, 0.1, 0.1, 0.1, 2.0}, {0, 0, 0.02, 0.01, 0}, 4, "x"},
+        {{-1.0, 0.1, 0.2, 0.3, 2.0}, {0, 0, NAN, 0, 0}, 3, "z"},
+        {{-1.0, 0.1, INFINITY, 0.3, 2.0}, {0, 0, 0, 0, 0}, 3, "x"},
+    };
+    const tirenv_tire tire = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
+    assert_non_null(m);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        array_source src = {cases[i].x, cases[i].z, 5, 0, 0};
+        collect c = {0};
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        assert_int_equal(tirenv_model_stream(m, array_next, &src, -1.5, 2.5, 0.01, 10000,
+                                             collect_point, &c, NULL, &d),
+                         TIRENV_EINVAL);
+        assert_int_equal(d.line, cases[i].bad);
+        assert_string_equal(d.field, cases[i].field);
+        assert_true(d.message[0] != '\0');
+        free(c.pt);
+    }
+    tirenv_model_free(m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_memory_source_equals_whole),
+        cmocka_unit_test(test_bad_sources),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
