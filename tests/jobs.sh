@@ -82,5 +82,18 @@ done
 check "compare: --jobs 3 = --jobs 1 (19 cases x 5 models)" \
     '[ -s compare-1/errors.csv ] && same_apart_from_timings compare-1 compare-3'
 
+# ride: 4 models x 3 speeds; the comfort tables apart from their last two columns (CPU time
+# and times real time), every series and plot file byte for byte.
+for j in 1 3; do
+    "$bin" ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h --model point,springs,cam,nn \
+        --nn study-1/nn.json --out-dir "ride-$j" --jobs $j >"ride-$j.txt" 2>"ride-$j.err"
+    awk '{ NF -= 2; print }' "ride-$j.txt" >"ride-$j/table.txt"
+    cut -d, -f1-14 "ride-$j/comfort.csv" >"ride-$j/comfort-untimed.csv"
+    rm "ride-$j/comfort.csv" "ride-$j/comfort.md"
+done
+check "ride: --jobs 3 = --jobs 1 (comfort figures, series, plots)" \
+    '[ -s ride-1/comfort-untimed.csv ] && [ "$(wc -l <ride-1/table.txt)" -eq 14 ] &&
+     same_apart_from_timings ride-1 ride-3 && cmp -s ride-1.err ride-3.err'
+
 echo "$((n - failed)) passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -210,6 +210,8 @@ int cli_exit_code(int status);
 
 /* CPU time of this process, s (what "on one core" means for a single-threaded run). */
 double cli_cpu_seconds(void);
+/* CPU time of the calling thread, s: one work item's cost when several run at once. */
+double cli_thread_seconds(void);
 /* Wall time since an arbitrary start (CLOCK_MONOTONIC), s. */
 double cli_wall_seconds(void);
 

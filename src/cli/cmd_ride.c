@@ -13,6 +13,7 @@ static void usage(FILE *fp)
     fputs("usage: tirenv ride OBSTACLE --speed V[,V...] [--model M[,M...]] [--nn FILE]\n"
           "                   [--vehicle FILE] [--set KEY=VALUE]... [--x-from X] [--x-to X]\n"
           "                   [--dx DX] [--dt S] [--solver rk4|rk8pd] [-o FILE] [--out-dir DIR]\n"
+          "                   [--jobs N]\n"
           "\n"
           "Drives a pitch-plane tractor (body heave and pitch on a front and a rear axle, the\n"
           "tires as vertical spring-dampers, an optional front-axle suspension) over the\n"
@@ -57,9 +58,10 @@ static void usage(FILE *fp)
           "  --solver S           rk4 (default; fixed steps of at most half a grid spacing)\n"
           "                       or rk8pd (adaptive, tolerance 1e-10)\n"
           "  -o, --output FILE    the time series of the one run, CSV, complete or not at all\n"
-          "  --out-dir DIR        all outputs into DIR (created if needed)\n"
-          "  -h, --help           show this help\n",
+          "  --out-dir DIR        all outputs into DIR (created if needed)\n",
           fp);
+    cli_help_jobs(fp);
+    fputs("  -h, --help           show this help\n", fp);
 }
 
 /* "10", "2.5m/s" or "10km/h" in m/s; 0 on success. */
@@ -177,11 +179,13 @@ int cli_ride_main(int argc, char *argv[])
         {.name = NULL},
     };
     const cli_parser p = {.name = "ride", .usage = usage, .opts = own,
-                          .groups = CLI_OBSTACLE | CLI_SWEEP | CLI_OUTPUT | CLI_NETWORK};
+                          .groups = CLI_OBSTACLE | CLI_SWEEP | CLI_OUTPUT | CLI_NETWORK |
+                                    CLI_JOBS};
     cli_options o;
     const int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)
         return code;
+    r.jobs = o.jobs;
     r.nn_path = o.nn_path;
     r.out_path = o.output;
     r.dx = isnan(o.dx) ? 0.005 : o.dx;

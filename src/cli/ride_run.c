@@ -8,6 +8,7 @@
 
 #include "cli/ride_cli.h"
 #include "tirenv/nn_file.h"
+#include "tirenv/parallel.h"
 
 /* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
  * its end inside a run; and the default run-in before the obstacle and settling after it. */
@@ -72,39 +73,78 @@ static void axle_warnings(const char *model, int axle, const char *w)
     }
 }
 
-static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in)
+/* The inputs of every model for both axles: n_models x 2 independent items on --jobs
+ * threads, each with a model instance of its own (ride_cli_axle_input makes one), timed on
+ * its own thread's CPU clock; warnings and failures are reported afterwards, in order. */
+typedef struct {
+    const ride_options *r;
+    const ride_setup *s;
+    ride_inputs *in;
+    tirenv_nn **nn;            /* per model, the network it evaluates, or NULL */
+    double *R0_nn;             /* per model, the radius its x_N refers to, m */
+    double *seconds;           /* per item */
+    char (*warnings)[1024];    /* per item */
+    int *status;               /* per item */
+} inputs_pass;
+
+static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
 {
+    inputs_pass *p = ctx;
+    const size_t i = k / 2;
+    const int axle = (int)(k % 2);
+    (void)worker;
+    const double t0 = cli_thread_seconds();
+    p->status[k] = ride_cli_axle_input(p->in[i].type, &p->s->tire[axle], p->s->load[axle],
+                                       p->s->p, p->nn[i], p->R0_nn[i], p->s->x0, p->s->dx,
+                                       p->s->n, p->in[i].w[axle], p->warnings[k],
+                                       sizeof p->warnings[k], diag);
+    p->seconds[k] = cli_thread_seconds() - t0;
+    return p->status[k];
+}
+
+static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs in[])
+{
+    const size_t n_items = 2 * r->n_models;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    for (int axle = 0; axle < 2; ++axle)
-        if (!(in->w[axle] = malloc(s->n * sizeof *in->w[axle])))
-            return cli_fail(TIRENV_ENOMEM, NULL);
-    tirenv_nn *nn = NULL;
-    tirenv_train_record rec = {.R0 = 0};
-    int status = TIRENV_OK, axle = 0;
-    if ((tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK) &&
-        (status = tirenv_nn_read_json(r->nn_path, &nn, &rec, &diag)))
-        return cli_fail(status, &diag);
-    const double t0 = cli_cpu_seconds();
-    for (; axle < 2; ++axle) {
-        char warnings[1024];
+    tirenv_nn *nn[RIDE_MAX_MODELS] = {0};
+    double R0_nn[RIDE_MAX_MODELS] = {0};
+    double seconds[2 * RIDE_MAX_MODELS];
+    char warnings[2 * RIDE_MAX_MODELS][1024];
+    int item_status[2 * RIDE_MAX_MODELS] = {0};
+    inputs_pass pass = {r, s, in, nn, R0_nn, seconds, warnings, item_status};
+    int code = CLI_EXIT_OK, status = TIRENV_OK;
+    for (size_t i = 0; i < r->n_models && !code; ++i) {
+        for (int axle = 0; axle < 2; ++axle)
+            if (!(in[i].w[axle] = malloc(s->n * sizeof *in[i].w[axle])))
+                code = cli_fail(TIRENV_ENOMEM, NULL);
         /* x_N refers to the radius of the network's data, when the file records it. */
-        if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, s->x0, s->dx, s->n, in->w[axle], warnings,
-                                          sizeof warnings, &diag)))
+        tirenv_train_record rec = {.R0 = 0};
+        if (!code && (tirenv_model_type_flags(in[i].type) & TIRENV_MODEL_NEEDS_NETWORK)) {
+            if ((status = tirenv_nn_read_json(r->nn_path, &nn[i], &rec, &diag)))
+                code = cli_fail(status, &diag);
+            R0_nn[i] = rec.R0;
+        }
+    }
+    if (!code)
+        status = tirenv_parallel_for(n_items, r->jobs, input_item, NULL, &pass, &diag);
+    for (size_t k = 0; k < n_items && !code; ++k) {
+        const size_t i = k / 2;
+        const int axle = (int)(k % 2);
+        if (item_status[k]) {
+            char msg[1200];
+            cli_error("ride: %s model, %s axle (tire load %.6g N): %s", in[i].name,
+                      axle ? "rear" : "front", s->load[axle],
+                      tirenv_diag_format(&diag, msg, sizeof msg));
+            code = cli_exit_code(status);
             break;
-        axle_warnings(in->name, axle, warnings);
+        }
+        axle_warnings(in[i].name, axle, warnings[k]);
+        in[i].seconds = axle ? in[i].seconds + seconds[k] : seconds[k];
     }
-    tirenv_nn_free(nn);
-    in->seconds = cli_cpu_seconds() - t0;
-    if (status) {
-        char msg[1200];
-        cli_error("ride: %s model, %s axle (tire load %.6g N): %s", in->name,
-                  axle ? "rear" : "front", s->load[axle],
-                  tirenv_diag_format(&diag, msg, sizeof msg));
-        return cli_exit_code(status);
-    }
-    return CLI_EXIT_OK;
+    for (size_t i = 0; i < r->n_models; ++i)
+        tirenv_nn_free(nn[i]);
+    return code;
 }
 
 static int write_series(const char *path, const ride_series *rs, const ride_result *res,
@@ -180,6 +220,61 @@ static void print_table(FILE *fp, const ride_result res[], size_t n)
     }
 }
 
+/* Every (speed, model) run: independent items on --jobs threads, each integrating, measuring
+ * and writing its own series; the CPU time of a run is its thread's. */
+typedef struct {
+    const ride_options *r;
+    const ride_setup *s;
+    const ride_inputs *in;
+    ride_result *res;
+    ride_series *series;
+    double x_from, x_last;     /* m */
+    int *status;               /* per run */
+} ride_runs;
+
+static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
+{
+    const ride_options *r = p->r;
+    const size_t j = k / r->n_models, i = k % r->n_models;
+    ride_result *q = &p->res[k];
+    ride_series *rs = &p->series[k];
+    tirenv_ride_settings set = tirenv_ride_default();
+    set.speed = r->speeds[j];
+    set.x_front0 = p->x_from;
+    set.duration = (run_end(r, p->s, set.speed, p->x_last) - p->x_from) / set.speed;
+    set.dt = r->dt;
+    set.method = r->method;
+    *q = (ride_result){.model = p->in[i].name, .speed = set.speed, .duration = set.duration};
+    rs->n = tirenv_ride_n_samples(&set);
+    rs->samples = malloc(rs->n * sizeof *rs->samples);
+    rs->a_w = malloc(rs->n * sizeof *rs->a_w);
+    if (!rs->samples || !rs->a_w)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    const tirenv_ride_track front = {p->s->x0, p->s->dx, p->s->n, p->in[i].w[0]};
+    const tirenv_ride_track rear = {p->s->x0, p->s->dx, p->s->n, p->in[i].w[1]};
+    const double t0 = cli_thread_seconds();
+    int status = tirenv_ride_run(&p->s->v, &front, &rear, &set, rs->samples, diag);
+    q->seconds = p->in[i].seconds + cli_thread_seconds() - t0;
+    if (!status)
+        status = measure(r, rs, q, diag);
+    if (!status && r->out_path)
+        status = write_series(r->out_path, rs, q, diag);
+    if (!status && r->out_dir) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->model,
+                 q->speed * 3.6);
+        status = write_series(path, rs, q, diag);
+    }
+    return status;
+}
+
+static int run_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    ride_runs *p = ctx;
+    (void)worker;
+    return p->status[k] = run_one(p, k, diag);
+}
+
 int ride_cli_run(const cli_options *o, const ride_options *r)
 {
     if (!(1 / r->dt >= TIRENV_COMFORT_FS_MIN)) {
@@ -231,54 +326,28 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = r->model_names[i];
-        if ((code = model_inputs(r, &s, &in[i])))
-            goto done;
     }
+    if ((code = model_inputs(r, &s, in)))
+        goto done;
     if (r->out_dir && (code = cli_mkdir(r->out_dir)))
         goto done;
-    for (size_t j = 0; j < r->n_speeds; ++j) {
-        for (size_t i = 0; i < r->n_models; ++i) {
-            ride_result *q = &res[j * r->n_models + i];
-            ride_series *rs = &series[j * r->n_models + i];
-            tirenv_ride_settings set = tirenv_ride_default();
-            set.speed = r->speeds[j];
-            set.x_front0 = x_from;
-            set.duration = (run_end(r, &s, set.speed, x_last) - x_from) / set.speed;
-            set.dt = r->dt;
-            set.method = r->method;
-            rs->n = tirenv_ride_n_samples(&set);
-            rs->samples = malloc(rs->n * sizeof *rs->samples);
-            rs->a_w = malloc(rs->n * sizeof *rs->a_w);
-            if (!rs->samples || !rs->a_w) {
-                code = cli_fail(TIRENV_ENOMEM, NULL);
-                goto done;
-            }
-            const tirenv_ride_track front = {s.x0, s.dx, s.n, in[i].w[0]};
-            const tirenv_ride_track rear = {s.x0, s.dx, s.n, in[i].w[1]};
-            const double t0 = cli_cpu_seconds();
-            int status = tirenv_ride_run(&s.v, &front, &rear, &set, rs->samples, &diag);
-            *q = (ride_result){.model = in[i].name, .speed = set.speed,
-                               .duration = set.duration,
-                               .seconds = in[i].seconds + cli_cpu_seconds() - t0};
-            if (!status)
-                status = measure(r, rs, q, &diag);
-            if (!status && r->out_path)
-                status = write_series(r->out_path, rs, q, &diag);
-            if (!status && r->out_dir) {
-                char path[1024];
-                snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->model,
-                         q->speed * 3.6);
-                status = write_series(path, rs, q, &diag);
-            }
-            if (status) {
-                char msg[1200];
-                cli_error("ride: %s model at %g m/s: %s", q->model, q->speed,
-                          tirenv_diag_format(&diag, msg, sizeof msg));
-                code = cli_exit_code(status);
-                goto done;
-            }
-        }
+    ride_runs runs = {r, &s, in, res, series, x_from, x_last, NULL};
+    if (!(runs.status = calloc(n_runs, sizeof *runs.status))) {
+        code = cli_fail(TIRENV_ENOMEM, NULL);
+        goto done;
     }
+    const int status = tirenv_parallel_for(n_runs, r->jobs, run_item, NULL, &runs, &diag);
+    for (size_t k = 0; status && k < n_runs; ++k)
+        if (runs.status[k]) {  /* the first failing run: the one diag is about */
+            char msg[1200];
+            cli_error("ride: %s model at %g m/s: %s", res[k].model, res[k].speed,
+                      tirenv_diag_format(&diag, msg, sizeof msg));
+            code = cli_exit_code(status);
+            break;
+        }
+    free(runs.status);
+    if (code)
+        goto done;
     print_table(stdout, res, n_runs);
     if (r->out_dir)
         code = ride_cli_report(r, res, series, s.v.a + s.v.b);
