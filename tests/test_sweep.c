@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const double lengths[] = {0.05, 0.2, 0.15};
@@ -214,9 +215,21 @@ static void test_runs(void **state)
     assert_int_equal(rep.cases, 24);
     assert_int_equal(rep.run, 24);
     assert_int_equal(rep.resumed, 0);
-    s.jobs = 3;
+    /* Eight threads writing files at once: each gets the mode the umask gives, and the
+     * umask stays what it was. */
+    const mode_t old_mask = umask(027);
+    s.jobs = 8;
     run_ok(three, &s, &rep);
+    assert_int_equal(umask(old_mask), 027);
     assert_true(same_tree(one, three));
+    for (size_t i = 0; i < 24; ++i) {
+        char f[800];
+        struct stat st;
+        snprintf(f, sizeof f, "%s/curves/c%04zu.csv", three, i);
+        assert_int_equal(stat(f, &st), 0);
+        assert_int_equal(st.st_mode & 0777, 0640);
+    }
+    s.jobs = 3;
     /* Again: complete, nothing to do. */
     run_ok(three, &s, &rep);
     assert_true(rep.already_complete);

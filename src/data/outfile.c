@@ -2,6 +2,7 @@
  * on success, so a reader (or a plot script) never sees half a file after a failure.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/io.h"
+#include "data/umask.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -18,16 +19,14 @@ static int outfile_is_stdout(const tirenv_outfile *f)
 
 /* mkstemp creates the file with mode 0600 and rename keeps it, whereas fopen would have given
  * 0666 minus the umask. So give the temporary file the mode the target already has, or the
- * one fopen would give. The umask can only be read by setting it; the moment it is 0 only
- * matters to a program creating files from several threads at once. */
+ * one fopen would give (the umask read without setting it: files are written from several
+ * threads at once, tirenv/parallel.h). */
 static mode_t outfile_mode(const char *path)
 {
     struct stat st;
     if (stat(path, &st) == 0)
         return st.st_mode & 0777;
-    const mode_t mask = umask(0);
-    umask(mask);
-    return 0666 & ~mask;
+    return 0666 & ~tirenv_data__umask();
 }
 
 int tirenv_outfile_open(tirenv_outfile *f, const char *path, tirenv_diag *diag)
