@@ -8,7 +8,7 @@ PREFIX     ?= /usr/local
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps deps-test build test test-asan test-slurm demo bench install clean
+.PHONY: all deps deps-test build test test-asan test-slurm demo bench python fmu install clean
 
 all: build
 
@@ -40,6 +40,15 @@ test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
+
+# The Python module in place under $(BUILD)/python (python/README.md), and the FMI 2.0
+# co-simulation FMU $(BUILD)/tirenv_effective_road.fmu (fmu/README.md); both are also part of
+# 'make build'.
+python: build
+	@cmake --build $(BUILD) -j $(JOBS) --target python
+
+fmu: build
+	@cmake --build $(BUILD) -j $(JOBS) --target fmu
 
 # The paper's study on the embedded (simulated) data set: fit, train, compare, report. Then
 # its next step, the tractor ride: over a cleat at three speeds (the README's picture), and

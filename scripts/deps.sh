@@ -4,6 +4,9 @@
 set -eu
 # groff-base and man-db: the tests format and look up the generated man pages.
 need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
+# The Python module (python/) and its tests; the FMU's packaging and checks (fmu/).
+need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
+need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
 # --slurm: Slurm and munge, for tests/slurm.sh (scripts/slurm/ on a private single-node
 # cluster). Optional: without them that test reports itself skipped, so a user who cannot

@@ -1,0 +1,530 @@
+/* A small FMI 2.0 co-simulation importer of our own for tirenv's FMU: unzips it into a
+ * temporary directory, reads the GUID and value references from modelDescription.xml,
+ * dlopens the binary and checks it against the CLI:
+ *   - stepping along a 0.10 x 0.10 m cleat at one load gives 'tirenv envelope's curve (h,
+ *     slope, fx, fz as the CSV writes them, every row), and the Chrono-style outputs agree;
+ *   - a load that changes every step gives, at each step, 'tirenv envelope' at that load;
+ *   - an FMU state taken mid-cleat, set again (directly and through serialization), repeats
+ *     the following steps bit for bit;
+ *   - wrong value references, a parameter set too late, an unknown model, a missing road
+ *     file and a wrong GUID give fmi2Error (or NULL) and a log message saying why.
+ * Prints TAP lines; exits 1 if a check fails.
+ * usage: fmu_importer FMU CLI        SPDX-License-Identifier: GPL-3.0-or-later */
+#include <dlfcn.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fmi2.h"
+
+static int n_checks, n_failed;
+
+static void check(int ok, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    printf("%s %d - ", ok ? "ok" : "not ok", ++n_checks);
+    vprintf(fmt, ap);
+    putchar('\n');
+    va_end(ap);
+    n_failed += !ok;
+}
+
+/* ---- the logger: keeps the last message, formatted as the standard says ------------------ */
+static char last_log[4096];
+static int n_logs;
+
+static void logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
+                   fmi2String category, fmi2String message, ...)
+{
+    (void)env;
+    char text[3000];
+    va_list ap;
+    va_start(ap, message);
+    vsnprintf(text, sizeof text, message, ap);
+    va_end(ap);
+    snprintf(last_log, sizeof last_log, "[%s] %s (status %d): %s", category, instance,
+             (int)status, text);
+    ++n_logs;
+}
+
+static int logged(const char *needle)
+{
+    return strstr(last_log, needle) != NULL;
+}
+
+/* ---- the FMU's functions ---------------------------------------------------------------- */
+typedef struct {
+    void *so;
+    fmi2Component (*instantiate)(fmi2String, fmi2Type, fmi2String, fmi2String,
+                                 const fmi2CallbackFunctions *, fmi2Boolean, fmi2Boolean);
+    void (*free_instance)(fmi2Component);
+    fmi2Status (*setup)(fmi2Component, fmi2Boolean, fmi2Real, fmi2Real, fmi2Boolean, fmi2Real);
+    fmi2Status (*enter_init)(fmi2Component);
+    fmi2Status (*exit_init)(fmi2Component);
+    fmi2Status (*terminate)(fmi2Component);
+    fmi2Status (*get_real)(fmi2Component, const fmi2ValueReference[], size_t, fmi2Real[]);
+    fmi2Status (*set_real)(fmi2Component, const fmi2ValueReference[], size_t, const fmi2Real[]);
+    fmi2Status (*get_string)(fmi2Component, const fmi2ValueReference[], size_t, fmi2String[]);
+    fmi2Status (*set_string)(fmi2Component, const fmi2ValueReference[], size_t,
+                             const fmi2String[]);
+    fmi2Status (*do_step)(fmi2Component, fmi2Real, fmi2Real, fmi2Boolean);
+    fmi2Status (*get_state)(fmi2Component, fmi2FMUstate *);
+    fmi2Status (*set_state)(fmi2Component, fmi2FMUstate);
+    fmi2Status (*free_state)(fmi2Component, fmi2FMUstate *);
+    fmi2Status (*state_size)(fmi2Component, fmi2FMUstate, size_t *);
+    fmi2Status (*serialize)(fmi2Component, fmi2FMUstate, fmi2Byte[], size_t);
+    fmi2Status (*deserialize)(fmi2Component, const fmi2Byte[], size_t, fmi2FMUstate *);
+} fmu_api;
+
+static void *sym(void *so, const char *name)
+{
+    void *p = dlsym(so, name);
+    if (!p) {
+        fprintf(stderr, "fmu_importer: %s missing from the FMU\n", name);
+        exit(1);
+    }
+    return p;
+}
+
+#define BIND(field, name) *(void **)&api->field = sym(api->so, name)
+
+static void bind(fmu_api *api)
+{
+    BIND(instantiate, "fmi2Instantiate");
+    BIND(free_instance, "fmi2FreeInstance");
+    BIND(setup, "fmi2SetupExperiment");
+    BIND(enter_init, "fmi2EnterInitializationMode");
+    BIND(exit_init, "fmi2ExitInitializationMode");
+    BIND(terminate, "fmi2Terminate");
+    BIND(get_real, "fmi2GetReal");
+    BIND(set_real, "fmi2SetReal");
+    BIND(get_string, "fmi2GetString");
+    BIND(set_string, "fmi2SetString");
+    BIND(do_step, "fmi2DoStep");
+    BIND(get_state, "fmi2GetFMUstate");
+    BIND(set_state, "fmi2SetFMUstate");
+    BIND(free_state, "fmi2FreeFMUstate");
+    BIND(state_size, "fmi2SerializedFMUstateSize");
+    BIND(serialize, "fmi2SerializeFMUstate");
+    BIND(deserialize, "fmi2DeSerializeFMUstate");
+}
+
+/* ---- modelDescription.xml, read just enough: the GUID and a variable's reference -------- */
+static char *xml;
+
+static char *slurp(const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return NULL;
+    fseek(fp, 0, SEEK_END);
+    const long n = ftell(fp);
+    rewind(fp);
+    char *s = malloc((size_t)n + 1);
+    if (s && fread(s, 1, (size_t)n, fp) != (size_t)n) {
+        free(s);
+        s = NULL;
+    }
+    if (s)
+        s[n] = '\0';
+    fclose(fp);
+    return s;
+}
+
+static void attribute(const char *from, const char *name, char *out, size_t n)
+{
+    char key[64];
+    snprintf(key, sizeof key, " %s=\"", name);
+    const char *p = strstr(from, key);
+    out[0] = '\0';
+    if (!p)
+        return;
+    p += strlen(key);
+    size_t k = 0;
+    while (*p && *p != '"' && k + 1 < n)
+        out[k++] = *p++;
+    out[k] = '\0';
+}
+
+/* The value reference of the variable called name; exits if the description has none. */
+static fmi2ValueReference vr_of(const char *name)
+{
+    char key[128], buf[32];
+    snprintf(key, sizeof key, "<ScalarVariable name=\"%s\"", name);
+    const char *p = strstr(xml, key);
+    if (!p) {
+        fprintf(stderr, "fmu_importer: no variable '%s' in modelDescription.xml\n", name);
+        exit(1);
+    }
+    attribute(p, "valueReference", buf, sizeof buf);
+    return (fmi2ValueReference)strtoul(buf, NULL, 10);
+}
+
+/* ---- the CLI's curve -------------------------------------------------------------------- */
+typedef struct {
+    size_t n;
+    char (*row)[256];  /* "x,z,h,slope,fx,fz,contacts,iterations" */
+} csv;
+
+static csv read_csv(const char *path)
+{
+    csv c = {0, NULL};
+    FILE *fp = fopen(path, "r");
+    char line[256];
+    size_t cap = 0;
+    if (!fp || !fgets(line, sizeof line, fp))
+        return c;
+    while (fgets(line, sizeof line, fp)) {
+        if (c.n == cap) {
+            cap = cap ? 2 * cap : 2048;
+            c.row = realloc(c.row, cap * sizeof *c.row);
+        }
+        line[strcspn(line, "\r\n")] = '\0';
+        snprintf(c.row[c.n++], sizeof c.row[0], "%s", line);
+    }
+    fclose(fp);
+    return c;
+}
+
+/* Field k (0-based) of a CSV row, into out. */
+static void field(const char *row, int k, char *out, size_t n)
+{
+    for (; k > 0 && row; --k)
+        row = strchr(row, ',') ? strchr(row, ',') + 1 : NULL;
+    snprintf(out, n, "%.*s", row ? (int)strcspn(row, ",") : 0, row ? row : "");
+}
+
+static int run(const char *cmd)
+{
+    const int rc = system(cmd);
+    if (rc != 0)
+        fprintf(stderr, "fmu_importer: '%s' failed (%d)\n", cmd, rc);
+    return rc;
+}
+
+/* ---- driving the FMU ----------------------------------------------------------------------- */
+static fmu_api api;
+static fmi2CallbackFunctions cb = {logger, calloc, free, NULL, NULL};
+static char guid[128], resources[1200], dir[64], cli[1024];
+static fmi2ValueReference VR_X, VR_LOAD, VR_H, VR_SLOPE, VR_TH, VR_NX, VR_NY, VR_NZ, VR_FX,
+    VR_FZ, VR_MODEL, VR_ROAD, VR_TIRE;
+
+/* An instance in step mode over road (NULL: the default) with model at x0 and load. */
+static fmi2Component start(const char *model, const char *road, double x0, double load,
+                           fmi2Status *exit_status)
+{
+    fmi2Component c = api.instantiate("tire", fmi2CoSimulation, guid, resources, &cb,
+                                      fmi2False, fmi2False);
+    if (!c)
+        return NULL;
+    const fmi2ValueReference s_vr[2] = {VR_MODEL, VR_ROAD};
+    const fmi2String s_val[2] = {model, road};
+    const fmi2ValueReference r_vr[2] = {VR_X, VR_LOAD};
+    const fmi2Real r_val[2] = {x0, load};
+    fmi2Status st = api.setup(c, fmi2False, 0, 0, fmi2False, 0);
+    if (st == fmi2OK)
+        st = api.set_string(c, s_vr, road ? 2 : 1, s_val);
+    if (st == fmi2OK)
+        st = api.enter_init(c);
+    if (st == fmi2OK)
+        st = api.set_real(c, r_vr, 2, r_val);
+    if (st == fmi2OK)
+        st = api.exit_init(c);
+    *exit_status = st;
+    return c;
+}
+
+/* One step to x at load; the outputs h, slope, terrain_height, normal xyz, fx, fz in out. */
+static fmi2Status step(fmi2Component c, double t, double x, double load, double out[8])
+{
+    const fmi2ValueReference in_vr[2] = {VR_X, VR_LOAD};
+    const double in[2] = {x, load};
+    const fmi2ValueReference out_vr[8] = {VR_H, VR_SLOPE, VR_TH, VR_NX, VR_NY, VR_NZ, VR_FX,
+                                          VR_FZ};
+    fmi2Status st = api.set_real(c, in_vr, 2, in);
+    if (st == fmi2OK)
+        st = api.do_step(c, t, 1e-3, fmi2False);
+    if (st == fmi2OK)
+        st = api.get_real(c, out_vr, 8, out);
+    return st;
+}
+
+static const double X_FROM = -0.8, X_TO = 0.8, DX = 0.001, LOAD = 7500;
+
+static void test_cleat(const char *road)
+{
+    char cmd[4096], path[256];
+    snprintf(path, sizeof path, "%s/envelope.csv", dir);
+    snprintf(cmd, sizeof cmd, "'%s' envelope --model springs --profile '%s' --load %.17g "
+             "--x-from %.17g --x-to %.17g --dx %.17g -o '%s' 2>/dev/null", cli, road, LOAD,
+             X_FROM, X_TO, DX, path);
+    if (run(cmd))
+        exit(1);
+    const csv ref = read_csv(path);
+    check(ref.n == 1601, "tirenv envelope wrote %zu rows over the cleat", ref.n);
+    fmi2Status st;
+    fmi2Component c = start("springs", road, X_FROM, LOAD, &st);
+    check(c && st == fmi2OK, "instantiated and initialized over the cleat (status %d)", st);
+    if (!c || st != fmi2OK)
+        return;
+    size_t same = 0, chrono_ok = 0, first_diff = 0;
+    int first = 1;
+    double *h = malloc(ref.n * sizeof *h);
+    for (size_t k = 0; k < ref.n; ++k) {
+        const double x = X_FROM + (double)k * DX;  /* the CLI's positions */
+        double out[8];
+        if (step(c, (double)k * 1e-3, x, LOAD, out) != fmi2OK)
+            break;
+        h[k] = out[0];
+        char got[200], want[4][64];
+        for (int j = 0; j < 4; ++j)
+            field(ref.row[k], j == 0 ? 2 : j == 1 ? 3 : j + 2, want[j], sizeof want[j]);
+        snprintf(got, sizeof got, "%.9g,%.9g,%.9g,%.9g", out[0], out[1], out[6], out[7]);
+        char wanted[300];
+        snprintf(wanted, sizeof wanted, "%s,%s,%s,%s", want[0], want[1], want[2], want[3]);
+        if (strcmp(got, wanted) == 0)
+            ++same;
+        else if (first) {
+            first = 0;
+            first_diff = k;
+            fprintf(stderr, "# row %zu: FMU %s, CLI %s\n", k, got, wanted);
+        }
+        const double norm = sqrt(1 + out[1] * out[1]);
+        chrono_ok += out[2] == out[0] && out[3] == -out[1] / norm && out[4] == 0 &&
+                     out[5] == 1 / norm;
+    }
+    check(same == ref.n, "h, slope, fx, fz at every step are tirenv envelope's (%zu of %zu "
+          "rows; first difference at %zu)", same, ref.n, first_diff);
+    check(chrono_ok == ref.n, "terrain_height = h and terrain_normal = (-slope, 0, 1)/|.| at "
+          "every step (%zu of %zu)", chrono_ok, ref.n);
+
+    /* The FMU state: taken at step 700 (on the cleat's approach), set back, repeated. */
+    fmi2Component d;
+    d = start("springs", road, X_FROM, LOAD, &st);
+    double out[8];
+    const size_t k0 = 700, n_after = 200;
+    for (size_t k = 0; k < k0 && st == fmi2OK; ++k)
+        st = step(d, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
+    fmi2FMUstate saved = NULL;
+    check(st == fmi2OK && api.get_state(d, &saved) == fmi2OK && saved,
+          "fmi2GetFMUstate at step %zu", k0);
+    double first_pass[200], again[200], restored[200];
+    for (size_t k = k0; k < k0 + n_after; ++k) {
+        st = step(d, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
+        first_pass[k - k0] = out[0];
+    }
+    check(st == fmi2OK && memcmp(first_pass, h + k0, sizeof first_pass) == 0,
+          "the run with a state taken is the run without, bit for bit");
+    check(api.set_state(d, saved) == fmi2OK, "fmi2SetFMUstate back to step %zu", k0);
+    for (size_t k = k0; k < k0 + n_after; ++k) {
+        st = step(d, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
+        again[k - k0] = out[0];
+    }
+    check(st == fmi2OK && memcmp(first_pass, again, sizeof again) == 0,
+          "after fmi2SetFMUstate the next %zu steps repeat bit for bit", n_after);
+    size_t size = 0;
+    fmi2FMUstate copy = NULL;
+    st = api.state_size(d, saved, &size);
+    check(st == fmi2OK && size > 0, "fmi2SerializedFMUstateSize: %zu bytes", size);
+    fmi2Byte *bytes = malloc(size);
+    check(api.serialize(d, saved, bytes, size) == fmi2OK &&
+          api.deserialize(d, bytes, size, &copy) == fmi2OK && copy,
+          "serialized and deserialized");
+    /* ... into a fresh instance, which must read the road itself */
+    fmi2Component e = start("springs", road, X_FROM, LOAD, &st);
+    check(e && api.set_state(e, copy) == fmi2OK, "the deserialized state set in a new instance");
+    for (size_t k = k0; k < k0 + n_after; ++k) {
+        st = step(e, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
+        restored[k - k0] = out[0];
+    }
+    check(st == fmi2OK && memcmp(first_pass, restored, sizeof restored) == 0,
+          "and the new instance repeats the steps bit for bit");
+    bytes[0] ^= 1;
+    fmi2FMUstate bad = NULL;
+    n_logs = 0;
+    check(api.deserialize(d, bytes, size, &bad) == fmi2Error && n_logs && logged("not a serialized"),
+          "a corrupted serialized state is refused with a log message");
+    check(api.deserialize(d, bytes, size / 2, &bad) == fmi2Error,
+          "a truncated serialized state is refused");
+    free(bytes);
+    api.free_state(d, &saved);
+    api.free_state(d, &copy);
+    check(saved == NULL && copy == NULL, "fmi2FreeFMUstate clears the pointers");
+    api.terminate(c);
+    api.free_instance(c);
+    api.free_instance(d);
+    api.free_instance(e);
+    free(h);
+    free(ref.row);
+}
+
+/* h as 'tirenv envelope' writes it at one position x (m) and load (N), into want. */
+static int cli_h(const char *model, const char *road, double load, double x, char *want,
+                 size_t n)
+{
+    char cmd[4096], path[256];
+    snprintf(path, sizeof path, "%s/one.csv", dir);
+    snprintf(cmd, sizeof cmd, "'%s' envelope --model %s --profile '%s' --load %.17g "
+             "--x-from %.17g --x-to %.17g -o '%s' 2>/dev/null", cli, model, road, load, x, x,
+             path);
+    if (run(cmd))
+        return -1;
+    const csv one = read_csv(path);
+    if (one.n == 1)
+        field(one.row[0], 2, want, n);
+    free(one.row);
+    return one.n == 1 ? 0 : -1;
+}
+
+/* A load that changes every step: at each step the effective road at that load, as the CLI
+ * computes one position at that load. */
+static void test_load_changes(const char *road)
+{
+    static const double xs[6] = {-0.35, -0.2, -0.08, -0.03, 0.0, 0.12};
+    static const double loads[6] = {7500, 11903.6, 9000, 17860.4, 7500, 12000};
+    fmi2Status st;
+    fmi2Component c = start("springs", road, xs[0], loads[0], &st);
+    size_t same = 0;
+    for (int k = 0; k < 6 && c && st == fmi2OK; ++k) {
+        double out[8];
+        if ((st = step(c, k * 1e-3, xs[k], loads[k], out)) != fmi2OK)
+            break;
+        char want[64], got[64];
+        if (cli_h("springs", road, loads[k], xs[k], want, sizeof want))
+            break;
+        snprintf(got, sizeof got, "%.9g", out[0]);
+        same += strcmp(want, got) == 0;
+        if (strcmp(want, got))
+            fprintf(stderr, "# x %g load %g: FMU h %s, CLI %s\n", xs[k], loads[k], got, want);
+    }
+    check(st == fmi2OK && same == 6, "with the load changing every step, h is tirenv "
+          "envelope's at that load and position (%zu of 6)", same);
+    api.free_instance(c);
+}
+
+static void test_errors(const char *road)
+{
+    fmi2Status st;
+    fmi2Component c = start("springs", road, 0, LOAD, &st);
+    double v = 1;
+    const fmi2ValueReference bad = 999, string_vr = VR_MODEL, output_vr = VR_H;
+    n_logs = 0;
+    check(c && api.set_real(c, &bad, 1, &v) == fmi2Error && n_logs && logged("999"),
+          "fmi2SetReal of an unknown value reference: fmi2Error, logged (%s)", last_log);
+    n_logs = 0;
+    check(api.get_real(c, &string_vr, 1, &v) == fmi2Error && n_logs,
+          "fmi2GetReal of a String's value reference: fmi2Error, logged");
+    n_logs = 0;
+    check(api.set_real(c, &output_vr, 1, &v) == fmi2Error && logged("output"),
+          "setting an output: fmi2Error, logged (%s)", last_log);
+    const fmi2String name = "cam";
+    n_logs = 0;
+    check(api.set_string(c, &string_vr, 1, &name) == fmi2Error && logged("fixed parameter"),
+          "setting a parameter in step mode: fmi2Error, logged (%s)", last_log);
+    const fmi2ValueReference load_vr = VR_LOAD;
+    v = -5;
+    n_logs = 0;
+    check(api.set_real(c, &load_vr, 1, &v) == fmi2Error && logged("load"),
+          "a negative load: fmi2Error, logged (%s)", last_log);
+    api.free_instance(c);
+
+    n_logs = 0;
+    c = start("sprongs", road, 0, LOAD, &st);
+    check(c && st == fmi2Error && logged("sprongs") && logged("springs"),
+          "an unknown model: fmi2Error at initialization, logged (%s)", last_log);
+    api.free_instance(c);
+
+    char missing[256];
+    snprintf(missing, sizeof missing, "%s/no-such-road.csv", dir);
+    n_logs = 0;
+    c = start("springs", missing, 0, LOAD, &st);
+    check(c && st == fmi2Error && logged("no-such-road.csv") && logged("cannot open"),
+          "a missing road file: fmi2Error at initialization, logged (%s)", last_log);
+    double x = 0.1;
+    const fmi2ValueReference x_vr = VR_X;
+    check(api.set_real(c, &x_vr, 1, &x) == fmi2Error && api.do_step(c, 0, 1e-3, fmi2False) ==
+          fmi2Error, "and the instance refuses to step after it");
+    api.free_instance(c);
+
+    n_logs = 0;
+    c = api.instantiate("tire", fmi2CoSimulation, "{not-this-fmu}", resources, &cb, fmi2False,
+                        fmi2False);
+    check(!c && n_logs && logged("GUID"), "a wrong GUID: NULL, logged (%s)", last_log);
+    n_logs = 0;
+    c = api.instantiate("tire", fmi2ModelExchange, guid, resources, &cb, fmi2False, fmi2False);
+    check(!c && n_logs && logged("co-simulation"), "model exchange: NULL, logged");
+
+    /* the defaults of the description: the packed tire and road */
+    c = start("cam", NULL, 12.3, 10000, &st);
+    double h;
+    const fmi2ValueReference h_vr = VR_H;
+    fmi2String road_name = NULL;
+    const fmi2ValueReference road_vr = VR_ROAD;
+    const int ok = c && st == fmi2OK && api.get_real(c, &h_vr, 1, &h) == fmi2OK &&
+                   api.get_string(c, &road_vr, 1, &road_name) == fmi2OK &&
+                   strcmp(road_name, "road.csv") == 0;
+    char packed_road[1300], want[64] = "", got[64];
+    snprintf(packed_road, sizeof packed_road, "%s/resources/road.csv", dir);
+    snprintf(got, sizeof got, "%.9g", ok ? h : NAN);
+    check(ok && cli_h("cam", packed_road, 10000, 12.3, want, sizeof want) == 0 &&
+          strcmp(got, want) == 0, "the default road and tire from resources/ (cam at x = 12.3 "
+          "m: h = %s m; tirenv envelope: %s m)", got, want);
+    api.free_instance(c);
+}
+
+int main(int argc, char *argv[])
+{
+    if (argc != 3) {
+        fputs("usage: fmu_importer FMU CLI\n", stderr);
+        return 2;
+    }
+    snprintf(cli, sizeof cli, "%s", argv[2]);
+    snprintf(dir, sizeof dir, "/tmp/tirenv-fmu-XXXXXX");
+    if (!mkdtemp(dir))
+        return 1;
+    char cmd[2048], path[1200];
+    snprintf(cmd, sizeof cmd, "unzip -q '%s' -d '%s'", argv[1], dir);
+    if (run(cmd))
+        return 1;
+    snprintf(path, sizeof path, "%s/modelDescription.xml", dir);
+    if (!(xml = slurp(path)))
+        return 1;
+    attribute(strstr(xml, "<fmiModelDescription"), "guid", guid, sizeof guid);
+    VR_X = vr_of("x"), VR_LOAD = vr_of("load"), VR_H = vr_of("h"), VR_SLOPE = vr_of("slope");
+    VR_TH = vr_of("terrain_height"), VR_NX = vr_of("terrain_normal.x");
+    VR_NY = vr_of("terrain_normal.y"), VR_NZ = vr_of("terrain_normal.z");
+    VR_FX = vr_of("fx"), VR_FZ = vr_of("fz"), VR_MODEL = vr_of("model");
+    VR_ROAD = vr_of("road_file"), VR_TIRE = vr_of("tire_file");
+    (void)VR_TIRE;
+    snprintf(resources, sizeof resources, "file://%s/resources", dir);
+    snprintf(path, sizeof path, "%s/binaries/linux64/tirenv_effective_road.so", dir);
+    if (!(api.so = dlopen(path, RTLD_NOW | RTLD_LOCAL))) {
+        fprintf(stderr, "fmu_importer: %s\n", dlerror());
+        return 1;
+    }
+    bind(&api);
+
+    /* the cleat of case R, written as a profile file */
+    char road[256];
+    snprintf(road, sizeof road, "%s/cleat.csv", dir);
+    FILE *fp = fopen(road, "w");
+    if (!fp)
+        return 1;
+    fputs("x_m,z_m\n-0.05,0\n-0.05,0.1\n0.05,0.1\n0.05,0\n", fp);
+    fclose(fp);
+
+    test_cleat(road);
+    test_load_changes(road);
+    test_errors(road);
+
+    dlclose(api.so);
+    free(xml);
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    run(cmd);
+    printf("1..%d\n%d passed, %d failed\n", n_checks, n_checks - n_failed, n_failed);
+    return n_failed ? 1 : 0;
+}

@@ -1,0 +1,5 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# pip install --no-build-isolation ./python, against an installed libtirenv (python/README.md).
+from setuptools import setup
+
+setup(cffi_modules=["tirenv_build.py:ffibuilder"])

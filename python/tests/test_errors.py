@@ -1,0 +1,99 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Bad input raises TirenvError carrying the library's diagnostic; nothing crashes."""
+import pytest
+
+import tirenv
+
+
+def test_missing_tire_file_names_the_file(tmp_path):
+    path = tmp_path / "nope.tir"
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Tire(path)
+    assert e.value.file == str(path)
+    assert "cannot open" in e.value.message
+    assert str(path) in str(e.value)
+    assert e.value.status_name == "input/output error"
+
+
+def test_bad_tire_line_names_line_and_key(tmp_path):
+    path = tmp_path / "bad.tir"
+    path.write_text("[DIMENSION]\nUNLOADED_RADIUS = 0.68\n[ENVELOPING_SPRINGS]\n"
+                    "RADIAL_STIFFNESS = lots\n")
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Tire(path)
+    assert (e.value.file, e.value.line, e.value.field) == (str(path), 4, "RADIAL_STIFFNESS")
+    assert f"{path}:4" in str(e.value)
+
+
+def test_set_of_unknown_key_and_unphysical_value():
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Tire(set={"NO_SUCH_KEY": 1})
+    assert "NO_SUCH_KEY" in str(e.value)
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Tire(set={"UNLOADED_RADIUS": -1.0})
+    assert "UNLOADED_RADIUS" in str(e.value) or "R0" in str(e.value)
+    t = tirenv.Tire(set={"UNLOADED_RADIUS": 0.7})
+    assert t.R0 == 0.7
+
+
+def test_unknown_model_lists_the_names():
+    with pytest.raises(tirenv.TirenvError, match="springs"):
+        tirenv.Model("sprongs")
+
+
+def test_bad_profile_file_names_line(tmp_path):
+    path = tmp_path / "p.csv"
+    path.write_text("x_m,z_m\n0,0\n1,zero\n")
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Profile.read(path)
+    assert (e.value.file, e.value.line) == (str(path), 3)
+
+
+def test_bad_generator_and_arrays():
+    with pytest.raises(tirenv.TirenvError, match="positive"):
+        tirenv.Profile.cleat(-0.1, 0.1)
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Profile([0, 1, 0.5], [0, 0, 0])  # x decreasing
+    assert e.value.field == "x" and e.value.line == 3
+    with pytest.raises(tirenv.TirenvError):
+        tirenv.Profile.road("Z")
+
+
+def test_no_equilibrium_raises_with_the_position():
+    m = tirenv.Model("springs")
+    with pytest.raises(tirenv.TirenvError) as e:
+        m.set(tirenv.Profile.cleat(0.3, 0.05), 1e9)  # more than the tire can carry
+    assert e.value.status_name
+    with pytest.raises(tirenv.TirenvError):
+        m.load_for_contact_length(5.0)  # not in (0, 2 R0)
+
+
+def test_obstacle_too_tall_is_a_range_error():
+    m = tirenv.Model("rigid")
+    with pytest.raises(tirenv.TirenvError) as e:
+        m.set(tirenv.Profile.cleat(0.3, 1.0), 10000)
+    assert e.value.status == 8  # TIRENV_ERANGE
+
+
+def test_envelope_before_set():
+    with pytest.raises(tirenv.TirenvError, match="set"):
+        tirenv.Model("cam").envelope([0.0])
+
+
+def test_bad_network_file(tmp_path):
+    path = tmp_path / "nn.json"
+    path.write_text('{"format": "something else"}')
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Network(path)
+    assert e.value.file == str(path)
+
+
+def test_bad_vehicle_and_ride_arguments(tmp_path):
+    with pytest.raises(tirenv.TirenvError, match="MASS"):
+        tirenv.Vehicle(set={"MASS": -5})
+    with pytest.raises(tirenv.TirenvError, match="speed"):
+        tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), speed="fast")
+    with pytest.raises(tirenv.TirenvError, match="network"):
+        tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), model="nn")
+    with pytest.raises(tirenv.TirenvError, match="Wk"):
+        tirenv.comfort([0.0] * 1000, 1000.0, "Wz")

@@ -1,0 +1,74 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The ride and its comfort figures are 'tirenv ride's."""
+import numpy as np
+
+import tirenv
+from conftest import run_cli
+
+COLUMNS = ("t", "x_front", "w_front", "w_rear", "z", "theta", "z_a", "seat_az", None,
+           "seat_ax", "atheta", "F_front", "F_rear")
+
+
+def test_ride_series_equals_cli(cli, tmp_path):
+    out = tmp_path / "series.csv"
+    rc, table, err = run_cli(cli, "ride", "--cleat", "0.30,0.05", "--speed", "10km/h",
+                             "--model", "springs", "-o", out)
+    assert rc == 0, err
+    lines = out.read_text().splitlines()
+    assert lines[1].startswith("t_s,x_front_m,w_front_m")
+    r = tirenv.ride(tirenv.Profile.cleat(0.30, 0.05), model="springs", speed="10km/h")
+    c = r.comfort()
+    s = r.series
+    awz = c["seat_awz"]
+    rows = []
+    for k in range(len(s)):
+        vals = [awz[k] if f is None else s[f][k] for f in COLUMNS]
+        rows.append(",".join("%.9g" % v for v in vals))
+    assert len(rows) == len(lines) - 2 > 3000
+    assert rows == lines[2:]
+    # the table's figures: a_wz, crest, VDV, MTVV, pitch, a_v, peak, lift-off
+    cols = table.splitlines()[2].split()
+    assert cols[0] == "springs"
+    assert "%.4f" % c["seat"].rms == cols[2] and "%.2f" % c["seat"].crest == cols[3]
+    assert "%.4f" % c["seat"].vdv == cols[4] and "%.4f" % c["seat"].mtvv == cols[5]
+    assert "%.4f" % c["pitch"].rms == cols[6] and "%.4f" % c["a_v"] == cols[7]
+    assert "%.3f" % c["peak_az"] == cols[8] and "%.3f" % c["lift_off"] == cols[9]
+
+
+def test_point_contact_follows_the_ground():
+    p = tirenv.Profile.cleat(0.30, 0.05)
+    r = tirenv.ride(p, model="point", speed=2.0)
+    assert np.array_equal(r.w_front, p.height(r.x))
+    assert np.array_equal(r.w_front, r.w_rear)
+    s = r.series
+    assert s["t"][0] == 0 and np.allclose(np.diff(s["t"]), 1e-3)
+    assert s["x_front"][0] == -1.15  # 1 m before the cleat
+
+
+def test_vehicle_and_comfort():
+    v = tirenv.Vehicle(set={"MASS": 5200.0})
+    d = tirenv.Vehicle()
+    assert v.tire_load("rear") > d.tire_load("rear")
+    assert v.tire("front").R0 == tirenv.Tire().R0
+    fs = 1000.0
+    t = np.arange(20000) / fs
+    a = np.sin(2 * np.pi * 5 * t)  # 5 Hz, where Wk is about 1
+    a_w, m = tirenv.comfort(a, fs, "Wk")
+    assert a_w.shape == a.shape
+    assert 0.6 < m.rms < 0.8 and m.duration == 20.0
+    assert abs(tirenv.total_value([1, 1], [3, 4]) - 5) < 1e-12
+
+
+def test_network_ride_equals_cli(cli, network_file, tmp_path):
+    """The network over the cleat as each axle's input (src/cli/ride_input.c's choices)."""
+    out = tmp_path / "series.csv"
+    rc, _, err = run_cli(cli, "ride", "--cleat", "0.30,0.05", "--speed", "5km/h", "--model",
+                         "nn", "--nn", network_file, "-o", out)
+    assert rc == 0, err
+    lines = out.read_text().splitlines()[2:]
+    r = tirenv.ride(tirenv.Profile.cleat(0.30, 0.05), model="nn", speed="5km/h",
+                    network=tirenv.Network(network_file))
+    s = r.series
+    got = [",".join("%.9g" % s[f][k] for f in ("t", "x_front", "w_front", "w_rear", "z"))
+           for k in range(len(s))]
+    assert got == [",".join(line.split(",")[:5]) for line in lines]

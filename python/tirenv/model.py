@@ -1,0 +1,141 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Enveloping models over a profile at constant vertical load (tirenv/model.h)."""
+import collections
+import threading
+
+import numpy as np
+
+from ._c import (ffi, lib, check, doubles, double_ptr, error_from, invalid, new_diag,
+                 struct_dtype)
+from .tire import Tire
+
+# One row of 'tirenv envelope's CSV, laid out as the library's tirenv_point, so that the
+# library writes straight into the array.
+POINT_DTYPE = struct_dtype("tirenv_point", [
+    ("x_m", "x", "f8"), ("z_m", "z", "f8"), ("h_m", "h", "f8"), ("slope", "slope", "f8"),
+    ("fx_N", "fx", "f8"), ("fz_N", "fz", "f8"),
+    ("contacts", "contacts", np.uintp), ("iterations", "iterations", np.uintp)])
+
+Flat = collections.namedtuple("Flat", "load z_flat deflection contact_length stiffness")
+Flat.__doc__ = "The tire on flat ground: load N, centre height m, deflection m, " \
+               "contact length m, vertical stiffness N/m."
+
+# The CLI's default sweep: dx, and the margin beyond the tire's first and last reach (m).
+DEFAULT_DX = 0.001
+SWEEP_MARGIN = 0.02
+
+
+def model_names():
+    """Names of the model types of the library's table."""
+    types = lib.tirenv_model_types()
+    names, i = [], 0
+    while types[i] != ffi.NULL:
+        names.append(ffi.string(lib.tirenv_model_type_name(types[i])).decode())
+        i += 1
+    return names
+
+
+def positions(x_from, x_to, dx=DEFAULT_DX):
+    """The CLI's sweep x_k = x_from + k*dx up to x_to (with its 1e-9 dx allowance), bit for
+    bit the positions 'tirenv envelope --x-from --x-to --dx' evaluates."""
+    if not (dx > 0 and x_to >= x_from):
+        raise invalid(f"expected dx > 0 and x_to >= x_from, got dx {dx} from {x_from} to "
+                      f"{x_to}", "dx")
+    n = lib.tirenv_positions_count(x_from, x_to, dx)
+    return x_from + np.arange(n, dtype=np.float64) * dx
+
+
+class Model:
+    """A model of the library's table ("rigid", "springs", "ring", "cam", "point", and "nn",
+    which needs network=Network(path)) for a tire (default: Tire()). Not shareable between
+    threads at once: calls on one model are serialised."""
+
+    def __init__(self, name, tire=None, network=None):
+        self.tire = tire if tire is not None else Tire()
+        t = lib.tirenv_model_type_find(str(name).encode())
+        if t == ffi.NULL:
+            raise invalid(f"unknown model {name!r}; expected one of "
+                          f"{', '.join(model_names())}", "model")
+        needs_network = bool(lib.tirenv_model_type_flags(t) & lib.TIRENV_MODEL_NEEDS_NETWORK)
+        if needs_network and network is None:
+            raise invalid(f"the {name} model needs network=Network(path)", "network")
+        m = lib.tirenv_model_alloc(t, self.tire._t)
+        if m == ffi.NULL:
+            raise invalid("the tire's parameters are not valid for this model")
+        self._m = ffi.gc(m, lib.tirenv_model_free)
+        self.network = network  # kept alive with the model
+        if needs_network:
+            diag = new_diag()
+            with network._lock:
+                check(lib.tirenv_model_set_network(self._m, network._nn,
+                                                   network.R0 if network.R0 else 0.0, diag),
+                      diag)
+        self._lock = threading.Lock()
+        self.profile = None   # the profile set: kept alive here, the library borrows it
+        self.load = None
+
+    @property
+    def name(self):
+        return ffi.string(lib.tirenv_model_name(self._m)).decode()
+
+    @property
+    def reach(self):
+        """How far from a position the model reads the profile, m."""
+        return lib.tirenv_model_reach(self._m)
+
+    def load_for_contact_length(self, l_c):
+        """The load (N) at which the flat-ground contact length is l_c (m)."""
+        load, diag = ffi.new("double *"), new_diag()
+        with self._lock:
+            check(lib.tirenv_model_load_for_contact_length(self._m, l_c, load, diag), diag)
+        return load[0]
+
+    def flat(self, load):
+        """The tire on flat ground at load (N): a Flat."""
+        out, diag = ffi.new("tirenv_flat *"), new_diag()
+        with self._lock:
+            check(lib.tirenv_model_flat(self._m, load, out, diag), diag)
+        return Flat(out.load, out.z_flat, out.deflection, out.contact_length, out.stiffness)
+
+    def set(self, profile, load):
+        """Sets the ground profile and the load (N); resets the warm start."""
+        diag = new_diag()
+        with self._lock:
+            check(lib.tirenv_model_set(self._m, profile._p, load, diag), diag)
+            self.profile, self.load = profile, load
+        return self
+
+    def envelope(self, x):
+        """The equilibrium at each position x (m), in order, warm-started from the previous:
+        a structured array with the envelope CSV's fields x_m, z_m, h_m, slope, fx_N, fz_N,
+        contacts, iterations. x may be any 1-D real array (copied to float64 if needed).
+        One library call, with the GIL released. TirenvError (with .index) if a position
+        has no equilibrium."""
+        if self.profile is None:
+            raise invalid("no profile: call set(profile, load) first")
+        x = doubles(x, "x")
+        out = np.zeros(x.size, dtype=POINT_DTYPE)
+        failed, diag = ffi.new("size_t *"), new_diag()
+        with self._lock:
+            status = lib.tirenv_model_envelope(self._m, x.size, double_ptr(x),
+                                               ffi.cast("tirenv_point *", ffi.from_buffer(out)),
+                                               failed, diag)
+        if status:
+            e = error_from(status, diag)
+            e.index = failed[0]
+            raise e
+        return out
+
+    def sweep(self, x_from=None, x_to=None, dx=DEFAULT_DX):
+        """envelope() over the CLI's default positions: from the profile's first vertex minus
+        R0 + 0.02 m to its last plus R0 + 0.02 m, every dx (as 'tirenv envelope')."""
+        if self.profile is None:
+            raise invalid("no profile: call set(profile, load) first")
+        first, last = self.profile.extent
+        R0 = self.tire.R0
+        x_from = first - R0 - SWEEP_MARGIN if x_from is None else x_from
+        x_to = last + R0 + SWEEP_MARGIN if x_to is None else x_to
+        return self.envelope(positions(x_from, x_to, dx))
+
+    def __repr__(self):
+        return f"<tirenv.Model {self.name}, {self.tire!r}>"

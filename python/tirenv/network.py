@@ -1,0 +1,90 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The empirical model: a trained network read from its model file (tirenv train -o FILE),
+over a single cleat (docs/models.md section 6) or any profile (section 12)."""
+import threading
+
+import numpy as np
+
+from ._c import ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes
+
+INPUTS = ("x_N", "contact_length_m", "obstacle_height_m", "obstacle_length_m")
+
+
+class Network:
+    """A network model file. predict() runs the bare network; envelope() gives h over a
+    cleat and road() over any profile. R0 is the free radius (m) of the data it was trained
+    on, as the file records it (None if not). Calls on one network are serialised."""
+
+    def __init__(self, path):
+        out, rec, diag = ffi.new("tirenv_nn **"), ffi.new("tirenv_train_record *"), new_diag()
+        check(lib.tirenv_nn_read_json(path_bytes(path), out, rec, diag), diag)
+        self._nn = ffi.gc(out[0], lib.tirenv_nn_free)
+        self.R0 = rec.R0 if rec.R0 > 0 else None
+        self.path = path
+        self._lock = threading.Lock()
+
+    @property
+    def n_inputs(self):
+        return lib.tirenv_nn_n_inputs(self._nn)
+
+    def _R0(self, R0):
+        R0 = R0 if R0 is not None else self.R0
+        if R0 is None:
+            raise invalid("the model file records no R0: pass R0 (m)", "R0")
+        return R0
+
+    def predict(self, inputs):
+        """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4)."""
+        a = np.asarray(inputs)
+        if a.dtype.kind not in "biuf":
+            raise TypeError(f"inputs: expected real numbers, got dtype {a.dtype}")
+        a = np.ascontiguousarray(np.atleast_2d(a), dtype=np.float64)
+        if a.ndim != 2 or a.shape[1] != self.n_inputs:
+            raise ValueError(f"inputs: expected shape (n, {self.n_inputs}), got {a.shape}")
+        y = np.empty(a.shape[0])
+        with self._lock:
+            lib.tirenv_nn_run_batch(self._nn, a.shape[0], double_ptr(a), double_ptr(y))
+        return y
+
+    def envelope(self, x, contact_length, length, height, R0=None):
+        """h (m) at centre positions x (m) over a length x height (m) cleat centred at 0, at
+        the given contact length (m)."""
+        x = doubles(x, "x")
+        h, diag = np.empty(x.size), new_diag()
+        with self._lock:
+            check(lib.tirenv_nn_envelope(self._nn, self._R0(R0), contact_length, length,
+                                         height, x.size, double_ptr(x), double_ptr(h), diag),
+                  diag)
+        return h
+
+    def road(self, profile, contact_length, R0=None):
+        """The network over any profile by equivalent cleats (include/tirenv/nn_road.h)."""
+        return NetworkRoad(self, profile, contact_length, self._R0(R0))
+
+
+class NetworkRoad:
+    """The network's decomposition of one profile at one contact length."""
+
+    def __init__(self, net, profile, contact_length, R0):
+        out, diag = ffi.new("tirenv_nn_road **"), new_diag()
+        with net._lock:
+            check(lib.tirenv_nn_road_alloc(net._nn, R0, contact_length, profile._p, ffi.NULL,
+                                           out, diag), diag)
+        self._r = ffi.gc(out[0], lib.tirenv_nn_road_free)
+        self.profile = profile
+        self._lock = threading.Lock()
+        info = lib.tirenv_nn_road_get_info(self._r)
+        self.obstacles = info.obstacles
+        self.outside_training = {"height_below": info.height_below,
+                                 "height_above": info.height_above,
+                                 "length_below": info.length_below,
+                                 "length_above": info.length_above}
+
+    def eval(self, x):
+        """(h, slope) at centre positions x (m): h m, slope dh/dx."""
+        x = doubles(x, "x")
+        h, slope, diag = np.empty(x.size), np.empty(x.size), new_diag()
+        with self._lock:
+            check(lib.tirenv_nn_road_eval(self._r, x.size, double_ptr(x), double_ptr(h),
+                                          double_ptr(slope), diag), diag)
+        return h, slope

@@ -1,0 +1,141 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Ground profiles: polylines (x, z) in m, from the library's generators, a road file, or
+arrays (docs/models.md section 2)."""
+import math
+
+import numpy as np
+
+from ._c import ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes
+
+# The CLI's resolution of --cylinder and --sine (src/cli/options.c), so that the same
+# obstacle gives the same profile here and there.
+CYLINDER_SEGMENTS = 180
+SINE_POINTS_PER_PERIOD = 64
+
+
+class Profile:
+    """An immutable ground profile. Build one with Profile(x, z) or the class methods."""
+
+    def __init__(self, x, z):
+        x = doubles(x, "x")
+        z = doubles(z, "z")
+        if x.size != z.size:
+            raise ValueError(f"x and z differ in length: {x.size} and {z.size}")
+        diag = new_diag()
+        check(lib.tirenv_profile_validate(x.size, double_ptr(x), double_ptr(z), diag), diag)
+        self._adopt(lib.tirenv_profile_alloc(x.size, double_ptr(x), double_ptr(z)),
+                    "out of memory")
+
+    def _adopt(self, p, why):
+        if p == ffi.NULL:
+            raise invalid(why)
+        self._p = ffi.gc(p, lib.tirenv_profile_free)
+
+    @classmethod
+    def _from(cls, p, why):
+        self = cls.__new__(cls)
+        self._adopt(p, why)
+        return self
+
+    # --- generators: obstacles on flat ground z = 0, centred at x = 0 unless noted --------
+    @classmethod
+    def cleat(cls, length, height):
+        """A rectangular cleat length x height (m)."""
+        return cls._from(lib.tirenv_profile_cleat(length, height),
+                         f"cleat {length} x {height}: expected positive sizes")
+
+    @classmethod
+    def step(cls, x0, height):
+        """A step of height (m; negative: down) at x0 (m)."""
+        return cls._from(lib.tirenv_profile_step(x0, height),
+                         f"step at {x0} of {height}: expected a finite x0 and a nonzero height")
+
+    @classmethod
+    def trapezoid(cls, top_length, base_length, height):
+        return cls._from(lib.tirenv_profile_trapezoid(top_length, base_length, height),
+                         f"trapezoid {top_length}, {base_length}, {height}: expected all "
+                         "positive, base_length >= top_length")
+
+    @classmethod
+    def triangle(cls, base_length, height):
+        return cls._from(lib.tirenv_profile_triangle(base_length, height),
+                         f"triangle {base_length} x {height}: expected positive sizes")
+
+    @classmethod
+    def cylinder(cls, radius, segments=CYLINDER_SEGMENTS):
+        """A half cylinder of radius (m), as a polygon of segments chords."""
+        return cls._from(lib.tirenv_profile_half_cylinder(radius, segments),
+                         f"cylinder of radius {radius} in {segments} segments: expected a "
+                         "positive radius and at least 2 segments")
+
+    @classmethod
+    def sine(cls, amplitude, wavelength, periods, points_per_period=SINE_POINTS_PER_PERIOD):
+        """amplitude*(1 - cos(2 pi x/wavelength)) from x = 0 over periods periods."""
+        return cls._from(lib.tirenv_profile_sine(amplitude, wavelength, periods,
+                                                 points_per_period),
+                         f"sine {amplitude}, {wavelength}, {periods}: expected all positive")
+
+    @classmethod
+    def road(cls, road_class="C", length=100.0, dx=0.01, seed=1, band=None, waviness=None):
+        """A random road of an ISO 8608 class (as 'tirenv road'): length and dx in m, the
+        phases seeded (same seed, same road bit for bit), band (n_min, n_max) in cycles/m."""
+        s = ffi.new("tirenv_road_settings *")
+        s[0] = lib.tirenv_road_default()
+        if not (isinstance(road_class, str) and len(road_class) == 1):
+            raise invalid(f"expected one letter A..H, got {road_class!r}", "class")
+        s.road_class = road_class.encode()
+        s.length = length
+        s.dx = dx
+        s.seed = seed
+        if band is not None:
+            s.n_min, s.n_max = band
+        if waviness is not None:
+            s.waviness = waviness
+        out = ffi.new("tirenv_profile **")
+        diag = new_diag()
+        check(lib.tirenv_road_iso8608(s, out, diag), diag)
+        return cls._from(out[0], "no road")
+
+    @classmethod
+    def read(cls, path, track=0.0):
+        """A profile from a road file the CLI reads (--profile FILE): CSV "x_m,z_m". track is
+        the lateral position (m) on a road that varies across; a CSV road is 2-D, the same
+        on every track."""
+        if not math.isfinite(track):
+            raise invalid(f"expected a finite lateral position, got {track}", "track")
+        out = ffi.new("tirenv_profile **")
+        diag = new_diag()
+        check(lib.tirenv_profile_read_csv(path_bytes(path), out, diag), diag)
+        return cls._from(out[0], "no profile")
+
+    # --- what it holds ---------------------------------------------------------------------
+    def __len__(self):
+        return lib.tirenv_profile_size(self._p)
+
+    @property
+    def x(self):
+        """Vertex positions, m (a copy)."""
+        return np.frombuffer(ffi.buffer(lib.tirenv_profile_x(self._p), 8 * len(self)),
+                             dtype=np.float64).copy()
+
+    @property
+    def z(self):
+        """Vertex heights, m (a copy)."""
+        return np.frombuffer(ffi.buffer(lib.tirenv_profile_z(self._p), 8 * len(self)),
+                             dtype=np.float64).copy()
+
+    @property
+    def extent(self):
+        """(first, last) vertex x, m."""
+        lo, hi = ffi.new("double *"), ffi.new("double *")
+        lib.tirenv_profile_extent(self._p, lo, hi)
+        return lo[0], hi[0]
+
+    def height(self, x):
+        """Ground height (m) at each x (m); at a wall the higher side."""
+        x = doubles(x, "x")
+        return np.array([lib.tirenv_profile_height(self._p, v) for v in x])
+
+    def __repr__(self):
+        lo, hi = self.extent
+        return f"<tirenv.Profile {len(self)} vertices, x {lo:g} .. {hi:g} m>"

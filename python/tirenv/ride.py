@@ -1,0 +1,175 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The tractor ride (docs/models.md section 9) and ISO 2631-1 comfort (section 10)."""
+import collections
+import math
+
+import numpy as np
+
+from ._c import (ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes,
+                 struct_dtype)
+from .model import Model
+from .tire import Tire
+
+SAMPLE_FIELDS = ("t", "x_front", "z", "vz", "az", "theta", "vtheta", "atheta", "z_a", "vz_a",
+                 "w_front", "w_rear", "seat_az", "seat_ax", "F_front", "F_rear")
+# One output sample of the ride, laid out as the library's tirenv_ride_sample.
+SAMPLE_DTYPE = struct_dtype("tirenv_ride_sample", [(f, f, "f8") for f in SAMPLE_FIELDS])
+
+Metrics = collections.namedtuple("Metrics", "duration rms peak crest vdv mtvv")
+Metrics.__doc__ = "ISO 2631-1 clause 6 figures of one weighted series (units of the input)."
+
+# 'tirenv ride's grid and run length (src/cli/ride_run.c), so that a run here is the CLI's.
+GRID_MARGIN = 1.0   # m
+RUN_IN = 1.0        # m
+SETTLE_MIN = 3.0    # m
+SETTLE_TIME = 2.0   # s
+AXLES = {"front": 0, "rear": 1, 0: 0, 1: 1}
+
+
+def _axle(axle):
+    if axle not in AXLES:
+        raise invalid(f"expected 'front', 'rear', 0 or 1, got {axle!r}", "axle")
+    return AXLES[axle]
+
+
+class Vehicle:
+    """The pitch-plane tractor: Vehicle() the built-in default (data/vehicles/tractor.veh),
+    Vehicle(path) a vehicle file, set={"MASS": 5200, "FRONT_AXLE.TIRES": 4} overrides."""
+
+    def __init__(self, path=None, set=None):
+        self._v = ffi.new("tirenv_vehicle *")
+        self._v[0] = lib.tirenv_vehicle_default()
+        diag = new_diag()
+        if path is not None:
+            check(lib.tirenv_vehicle_read(path_bytes(path), self._v, diag), diag)
+        for key, value in (set or {}).items():
+            value = repr(value) if isinstance(value, float) else value
+            check(lib.tirenv_vehicle_set(self._v, f"{key}={value}".encode(), diag), diag)
+        check(lib.tirenv_vehicle_check(self._v, diag), diag)
+
+    @property
+    def wheelbase(self):
+        return self._v.a + self._v.b
+
+    def tire_load(self, axle):
+        """Static load of one tire of the axle ('front' or 'rear'), N."""
+        return lib.tirenv_vehicle_tire_load(self._v, _axle(axle))
+
+    def tire(self, axle):
+        """The axle's tire: its TIRE_FILE, or the default tire."""
+        ax = self._v.rear if _axle(axle) else self._v.front
+        path = ffi.string(ax.tire_file).decode()
+        return Tire(path) if path else Tire()
+
+
+def comfort(a, fs, weighting="Wk"):
+    """Weights the series a (m/s^2, or rad/s^2 for We) sampled at fs (Hz) with an ISO 2631-1
+    weighting ("Wk", "Wd", "We") and returns (a_w, Metrics)."""
+    a = doubles(a, "a")
+    w, diag = ffi.new("tirenv_weighting *"), new_diag()
+    check(lib.tirenv_weighting_parse(str(weighting).encode(), w, diag), diag)
+    a_w, m = np.empty_like(a), ffi.new("tirenv_comfort_metrics *")
+    check(lib.tirenv_comfort_evaluate(w[0], fs, double_ptr(a), double_ptr(a_w), a.size, m,
+                                      diag), diag)
+    return a_w, Metrics(m.duration, m.rms, m.peak, m.crest, m.vdv, m.mtvv)
+
+
+def total_value(k, a_w):
+    """ISO 2631-1 6.5: (sum (k_i a_w,i)^2)^(1/2) over axes."""
+    k, a_w = doubles(k, "k"), doubles(a_w, "a_w")
+    if k.size != a_w.size:
+        raise ValueError("k and a_w differ in length")
+    out, diag = ffi.new("double *"), new_diag()
+    check(lib.tirenv_comfort_total_value(double_ptr(k), double_ptr(a_w), k.size, out, diag),
+          diag)
+    return out[0]
+
+
+class Ride:
+    """One run: series (structured array, fields SAMPLE_FIELDS), the inputs' grid x (m) and
+    what each axle's tires followed, w_front and w_rear (m)."""
+
+    def __init__(self, model, speed, dt, series, x, w_front, w_rear):
+        self.model, self.speed, self.dt = model, speed, dt
+        self.series, self.x, self.w_front, self.w_rear = series, x, w_front, w_rear
+
+    def comfort(self):
+        """The seat's figures as 'tirenv ride' reports them: a dict with seat (Wk, vertical),
+        pitch (We), a_v (vibration total value, k = 1 and 0.4 m/rad), seat_awz (the
+        weighted series), peak_az and lift_off (s with a tire off the ground)."""
+        fs = 1 / self.dt
+        s = self.series
+        seat_awz, seat = comfort(s["seat_az"], fs, "Wk")
+        _, pitch = comfort(s["atheta"], fs, "We")
+        a_v = total_value([1.0, 0.40], [seat.rms, pitch.rms])
+        lift = float(np.count_nonzero((s["F_front"] == 0) | (s["F_rear"] == 0))) * self.dt
+        return {"seat": seat, "pitch": pitch, "a_v": a_v, "seat_awz": seat_awz,
+                "peak_az": float(np.max(np.abs(s["seat_az"]))), "lift_off": lift}
+
+
+def _inputs(name, tire, load, profile, network, x0, dx, n):
+    """What one axle's tires follow on the grid: the model type's effective height, the
+    network's through the same table (src/cli/ride_input.c)."""
+    w, diag = np.empty(n), new_diag()
+    m = Model(name, tire, network)
+    check(lib.tirenv_ride_effective(m._m, profile._p, load, x0, dx, n, double_ptr(w), diag),
+          diag)
+    return w
+
+
+def speed_of(v):
+    """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it: "10km/h"
+    (times 1/3.6, as the CLI computes it), "2.5m/s" or "2.5"."""
+    if isinstance(v, str):
+        text, scale = v.strip(), 1.0
+        if text.endswith("km/h"):
+            text, scale = text[:-4], 1 / 3.6
+        elif text.endswith("m/s"):
+            text = text[:-3]
+        try:
+            v = float(text) * scale
+        except ValueError:
+            raise invalid(f"expected a speed > 0 in m/s or with the suffix km/h, got {v!r}",
+                          "speed") from None
+    if not (v > 0 and math.isfinite(v)):
+        raise invalid(f"expected a speed > 0, got {v!r}", "speed")
+    return float(v)
+
+
+def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005, dt=0.001,
+         method="rk4", tol=1e-10, x_from=None, x_to=None):
+    """Drives the tractor at speed (m/s) over profile, each axle's tires following what model
+    makes of it ("point" for single-point contact, a model name, or "nn" with network), as
+    'tirenv ride' does: same grid, same start (1 m before the obstacle) and end (once the
+    rear axle has passed and the body settled). The integration is one library call with the
+    GIL released. Returns a Ride."""
+    v = vehicle if vehicle is not None else Vehicle()
+    speed = speed_of(speed)
+    if not (1 / dt >= 320.0):
+        raise invalid(f"dt {dt} s is too coarse for ISO 2631-1's weightings: at most "
+                      f"{1 / 320.0} s", "dt")
+    methods = {"rk4": lib.TIRENV_RIDE_RK4, "rk8pd": lib.TIRENV_RIDE_RK8PD}
+    if method not in methods:
+        raise invalid(f"expected rk4 or rk8pd, got {method!r}", "method")
+    first, last = profile.extent
+    x_from = first - RUN_IN if x_from is None else x_from
+    if x_to is None:
+        x_to = last + v.wheelbase + max(SETTLE_MIN, SETTLE_TIME * speed)
+    if not (x_to > x_from):
+        raise invalid(f"the run must end after it starts: x_from {x_from}, x_to {x_to}")
+    x0 = x_from - v.wheelbase - GRID_MARGIN
+    n = int(math.ceil((x_to + GRID_MARGIN - x0) / dx) + 1)
+    w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n)
+         for axle in (0, 1)]
+    s = ffi.new("tirenv_ride_settings *")
+    s[0] = lib.tirenv_ride_default()
+    s.speed, s.x_front0, s.dt, s.method, s.tol = speed, x_from, dt, methods[method], tol
+    s.duration = (x_to - x_from) / speed
+    series = np.zeros(lib.tirenv_ride_n_samples(s), dtype=SAMPLE_DTYPE)
+    tracks = [ffi.new("tirenv_ride_track *", {"x0": x0, "dx": dx, "n": n, "w": double_ptr(a)})
+              for a in w]
+    diag = new_diag()
+    check(lib.tirenv_ride_run(v._v, tracks[0], tracks[1], s,
+                              ffi.cast("tirenv_ride_sample *", ffi.from_buffer(series)), diag),
+          diag)
+    return Ride(model, speed, dt, series, x0 + np.arange(n, dtype=np.float64) * dx, w[0], w[1])
