@@ -82,6 +82,14 @@ done
 check "compare: --jobs 3 = --jobs 1 (19 cases x 5 models)" \
     '[ -s compare-1/errors.csv ] && same_apart_from_timings compare-1 compare-3'
 
+for j in 1 3; do
+    mkdir -p "train-$j"
+    "$bin" train --data "$data" --jobs $j -o "train-$j/nn.json" 2>/dev/null |
+        grep -v "model written to" >"train-$j/out.txt"
+done
+check "train: --jobs 3 = --jobs 1 (8 restarts: the network, its errors)" \
+    '[ -s train-1/nn.json ] && same_apart_from_timings train-1 train-3'
+
 # ride: 4 models x 3 speeds; the comfort tables apart from their last two columns (CPU time
 # and times real time), every series and plot file byte for byte.
 for j in 1 3; do

@@ -62,6 +62,7 @@ static int train_network(const tirenv_study_settings *s, const tirenv_dataset *f
                                              &ss.y[k], diag);
     tirenv_train_settings ts = tirenv_train_default(type);
     ts.seed = s->seed;
+    ts.jobs = s->jobs;
     if (!status)
         status = tirenv_train(type, &ts, &ss.set[0], &ss.set[1], &ss.set[2], nn, rep, diag);
     if (!status) {

@@ -2,11 +2,13 @@
  * control set, errors per split (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "train/train_impl.h"
 #include "core/clock.h"
+#include "tirenv/parallel.h"
 
 extern const struct tirenv_trainer_type tirenv_train__backprop_type;
 extern const struct tirenv_trainer_type tirenv_train__rprop_type;
@@ -54,6 +56,7 @@ tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type)
         .rprop = {.delta0 = 0.1, .delta_min = 1e-6, .delta_max = 50, .eta_plus = 1.2,
                   .eta_minus = 0.5},
         .lm = {.solver = TIRENV_LM_CHOLESKY, .tau = 1e-3, .mu_max = 1e10},
+        .jobs = 1,
         .progress = NULL,
         .progress_data = NULL,
     };
@@ -227,9 +230,12 @@ int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *dia
     return TIRENV_OK;
 }
 
-/* Everything a run holds, so that one cleanup frees it. */
+/* What a worker holds for its restarts, so that one cleanup frees it: the trainer's state is
+ * reset by its set at every restart, the network's weights by tirenv_nn_init_weights and the
+ * generator by its seed, so a restart's result is a function of (data, settings, restart)
+ * alone, whichever worker runs it. */
 typedef struct {
-    tirenv_nn *nn, *cand, *best;
+    tirenv_nn *nn, *cand;
     void *state;
     gsl_rng *rng;
     double *y;
@@ -239,16 +245,140 @@ static void run_free(const tirenv_trainer_type *type, run_state *r)
 {
     tirenv_nn_free(r->nn);
     tirenv_nn_free(r->cand);
-    tirenv_nn_free(r->best);
     if (r->state)
         type->free(r->state);
     gsl_rng_free(r->rng);
     free(r->y);
+    memset(r, 0, sizeof *r);
 }
 
-/* Early stopping (Prechelt, "Early stopping - but when?", 1998): train, and keep the weights
- * of least control error; stop when it has not improved for `patience` epochs. Restarts are
- * independent runs from new initial weights; the one with the least control error wins. */
+/* What one restart leaves. */
+typedef struct {
+    tirenv_nn *net;        /* its weights of least control error */
+    double best;           /* that error (sum of squares of the scaled residuals) */
+    size_t epochs, best_epoch;
+    double best_time;      /* s */
+    tirenv_train_stop stop;
+    int cancelled;         /* the progress callback asked to stop */
+} restart_result;
+
+/* The restarts, run on settings->jobs threads. */
+typedef struct {
+    const tirenv_trainer_type *type;
+    const tirenv_train_settings *s;
+    const tirenv_samples *train, *sel;
+    const tirenv_nn *proto;    /* topology and scaling */
+    run_state *workers;        /* one per worker, built on first use */
+    restart_result *res;       /* one per restart */
+    pthread_mutex_t lock;      /* the progress callback is called by one restart at a time */
+    int cancel;                /* set when the callback asks to stop */
+} train_pass;
+
+static int worker_state(train_pass *p, size_t w, run_state **out, tirenv_diag *diag)
+{
+    run_state *r = &p->workers[w];
+    *out = r;
+    if (r->nn)
+        return TIRENV_OK;
+    if (!(r->nn = tirenv_nn_clone(p->proto)) || !(r->cand = tirenv_nn_clone(p->proto)) ||
+        !(r->rng = gsl_rng_alloc(gsl_rng_mt19937)) ||
+        !(r->y = malloc(p->sel->n * sizeof *r->y))) {
+        run_free(p->type, r);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
+    const int status = p->type->alloc(&r->state, r->nn, p->train, p->s, diag);
+    if (status) {
+        r->state = NULL;
+        run_free(p->type, r);
+    }
+    return status;
+}
+
+/* Early stopping (Prechelt, "Early stopping - but when?", 1998) within restart k: train, and
+ * keep the weights of least control error; stop when it has not improved for `patience`
+ * epochs. */
+static int run_restart(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    train_pass *p = ctx;
+    const tirenv_train_settings *s = p->s;
+    const tirenv_samples *train = p->train, *sel = p->sel;
+    restart_result *out = &p->res[k];
+    run_state *r;
+    int status = worker_state(p, worker, &r, diag);
+    if (status)
+        return status;
+    const double out_std = out_std_of(r->nn);
+    gsl_rng_set(r->rng, restart_seed(s->seed, k));
+    tirenv_nn_init_weights(r->nn, r->rng);
+    if ((status = p->type->set(r->state, r->nn, train, diag)))
+        return status;
+    const double t_restart = tirenv_core__wall_seconds();
+    double best = tirenv_train__sse(r->nn, sel, r->y);
+    size_t best_epoch = 0, epoch = 0;
+    double best_time = 0;
+    tirenv_nn_copy(r->cand, r->nn);
+    tirenv_train_stop stop = TIRENV_TRAIN_MAX_EPOCHS;
+    while (epoch < s->max_epochs) {
+        if (__atomic_load_n(&p->cancel, __ATOMIC_RELAXED)) {
+            stop = TIRENV_TRAIN_CANCELLED;
+            break;
+        }
+        double train_sse = 0;
+        const int st = p->type->epoch(r->state, r->nn, train, r->rng, &train_sse, diag);
+        if (st != TIRENV_OK && st != TIRENV_ECONTINUE)
+            return st;
+        ++epoch;
+        const double e = tirenv_train__sse(r->nn, sel, r->y);
+        if (e < best) {
+            best = e;
+            best_epoch = epoch;
+            best_time = tirenv_core__wall_seconds() - t_restart;
+            tirenv_nn_copy(r->cand, r->nn);
+        }
+        if (s->progress) {
+            const tirenv_train_progress pr = {
+                .restart = k, .restarts = s->restarts, .epoch = epoch,
+                .max_epochs = s->max_epochs,
+                .train_rms = sqrt(train_sse / (double)train->n) * out_std,
+                .control_rms = sqrt(e / (double)sel->n) * out_std,
+                .best_rms = sqrt(best / (double)sel->n) * out_std,
+                .best_epoch = best_epoch};
+            pthread_mutex_lock(&p->lock);
+            const int stop_now = s->progress(&pr, s->progress_data);
+            pthread_mutex_unlock(&p->lock);
+            if (stop_now) {
+                __atomic_store_n(&p->cancel, 1, __ATOMIC_RELAXED);
+                out->cancelled = 1;
+                stop = TIRENV_TRAIN_CANCELLED;
+                break;
+            }
+        }
+        if (!isfinite(e) || !isfinite(train_sse)) {
+            stop = TIRENV_TRAIN_DIVERGED;
+            break;
+        }
+        if (st == TIRENV_OK) {
+            stop = TIRENV_TRAIN_CONVERGED;
+            break;
+        }
+        if (s->patience && epoch - best_epoch >= s->patience) {
+            stop = TIRENV_TRAIN_PATIENCE;
+            break;
+        }
+    }
+    if (!(out->net = tirenv_nn_clone(r->cand)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    out->best = best;
+    out->epochs = epoch;
+    out->best_epoch = best_epoch;
+    out->best_time = best_time;
+    out->stop = stop;
+    return TIRENV_OK;
+}
+
+/* Restarts are independent runs from new initial weights; the one with the least control
+ * error wins. They run on settings->jobs threads; the choice among them is made afterwards in
+ * restart order, so the network is the same, bit for bit, for every number of jobs. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,
                  const tirenv_samples *validation, tirenv_nn **out,
@@ -271,107 +401,62 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
         (status = check_samples(validation, "validation", train->n_in, diag)))
         return status;
     const tirenv_samples *sel = control && control->n ? control : train;
+    const size_t jobs = s->jobs < 1 ? 1 : s->jobs < s->restarts ? s->jobs : s->restarts;
 
-    run_state r = {0};
-    if (!(r.nn = tirenv_nn_alloc(&s->topology)) || !(r.rng = gsl_rng_alloc(gsl_rng_mt19937)) ||
-        !(r.y = malloc(sel->n * sizeof *r.y))) {
-        run_free(type, &r);
+    tirenv_nn *proto = tirenv_nn_alloc(&s->topology);
+    train_pass p = {.type = type, .s = s, .train = train, .sel = sel, .proto = proto,
+                    .workers = calloc(jobs, sizeof *p.workers),
+                    .res = calloc(s->restarts, sizeof *p.res), .cancel = 0};
+    if (!proto || !p.workers || !p.res) {
+        tirenv_nn_free(proto);
+        free(p.workers);
+        free(p.res);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     }
-    if ((status = tirenv_nn_fit_scaling(r.nn, train->n, train->x, train->y, diag))) {
-        run_free(type, &r);
-        return status;
-    }
-    if (!(r.cand = tirenv_nn_clone(r.nn)) || !(r.best = tirenv_nn_clone(r.nn))) {
-        run_free(type, &r);
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    }
-    if ((status = type->alloc(&r.state, r.nn, train, s, diag))) {
-        run_free(type, &r);
-        return status;
-    }
-
-    const double out_std = out_std_of(r.nn);
+    pthread_mutex_init(&p.lock, NULL);
     const double t_start = tirenv_core__wall_seconds();
+    status = tirenv_nn_fit_scaling(proto, train->n, train->x, train->y, diag);
+    if (!status)
+        status = tirenv_parallel_for(s->restarts, jobs, run_restart, NULL, &p, diag);
     tirenv_train_report rep = {0};
+    tirenv_nn *best_net = NULL;
     double best_overall = INFINITY;
-    int cancelled = 0;
-    for (size_t k = 0; k < s->restarts && !cancelled; ++k) {
-        gsl_rng_set(r.rng, restart_seed(s->seed, k));
-        tirenv_nn_init_weights(r.nn, r.rng);
-        if ((status = type->set(r.state, r.nn, train, diag))) {
-            run_free(type, &r);
-            return status;
-        }
-        const double t_restart = tirenv_core__wall_seconds();
-        double best = tirenv_train__sse(r.nn, sel, r.y);
-        size_t best_epoch = 0, epoch = 0;
-        double best_time = 0;
-        tirenv_nn_copy(r.cand, r.nn);
-        tirenv_train_stop stop = TIRENV_TRAIN_MAX_EPOCHS;
-        while (epoch < s->max_epochs) {
-            double train_sse = 0;
-            const int st = type->epoch(r.state, r.nn, train, r.rng, &train_sse, diag);
-            if (st != TIRENV_OK && st != TIRENV_ECONTINUE) {
-                run_free(type, &r);
-                return st;
-            }
-            ++epoch;
-            const double e = tirenv_train__sse(r.nn, sel, r.y);
-            if (e < best) {
-                best = e;
-                best_epoch = epoch;
-                best_time = tirenv_core__wall_seconds() - t_restart;
-                tirenv_nn_copy(r.cand, r.nn);
-            }
-            if (s->progress) {
-                const tirenv_train_progress p = {
-                    .restart = k, .restarts = s->restarts, .epoch = epoch,
-                    .max_epochs = s->max_epochs,
-                    .train_rms = sqrt(train_sse / (double)train->n) * out_std,
-                    .control_rms = sqrt(e / (double)sel->n) * out_std,
-                    .best_rms = sqrt(best / (double)sel->n) * out_std,
-                    .best_epoch = best_epoch};
-                if (s->progress(&p, s->progress_data)) {
-                    stop = TIRENV_TRAIN_CANCELLED;
-                    cancelled = 1;
-                    break;
-                }
-            }
-            if (!isfinite(e) || !isfinite(train_sse)) {
-                stop = TIRENV_TRAIN_DIVERGED;
-                break;
-            }
-            if (st == TIRENV_OK) {
-                stop = TIRENV_TRAIN_CONVERGED;
-                break;
-            }
-            if (s->patience && epoch - best_epoch >= s->patience) {
-                stop = TIRENV_TRAIN_PATIENCE;
-                break;
-            }
-        }
-        rep.total_epochs += epoch;
-        /* Strictly better, so the earliest restart wins a tie: the result does not depend on
-         * how many restarts were asked for beyond the one that found it. */
-        if (k == 0 || best < best_overall) {
-            best_overall = best;
-            tirenv_nn_copy(r.best, r.cand);
+    /* In restart order, up to the first one cancelled (the restarts after it would not have
+     * run one after the other). Strictly better, so the earliest restart wins a tie: the
+     * result does not depend on how many restarts were asked for beyond the one that found
+     * it. */
+    for (size_t k = 0; k < s->restarts && !status && p.res[k].net; ++k) {
+        const restart_result *q = &p.res[k];
+        rep.total_epochs += q->epochs;
+        if (k == 0 || q->best < best_overall) {
+            best_overall = q->best;
+            best_net = q->net;
             rep.restart = k;
-            rep.epochs = epoch;
-            rep.best_epoch = best_epoch;
-            rep.best_time = best_time;
-            rep.stop = stop;
+            rep.epochs = q->epochs;
+            rep.best_epoch = q->best_epoch;
+            rep.best_time = q->best_time;
+            rep.stop = q->stop;
         }
+        if (q->cancelled)
+            break;
     }
-    rep.wall_time = tirenv_core__wall_seconds() - t_start;
-    rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(r.best, train);
-    rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(r.best, control);
-    rep.error[TIRENV_SPLIT_VALIDATION] = tirenv_train_evaluate(r.best, validation);
-    if (report)
-        *report = rep;
-    *out = r.best;
-    r.best = NULL;
-    run_free(type, &r);
-    return TIRENV_OK;
+    if (!status) {
+        rep.wall_time = tirenv_core__wall_seconds() - t_start;
+        rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(best_net, train);
+        rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(best_net, control);
+        rep.error[TIRENV_SPLIT_VALIDATION] = tirenv_train_evaluate(best_net, validation);
+        if (report)
+            *report = rep;
+        *out = best_net;
+    }
+    for (size_t k = 0; k < s->restarts; ++k)
+        if (p.res[k].net != *out)
+            tirenv_nn_free(p.res[k].net);
+    for (size_t w = 0; w < jobs; ++w)
+        run_free(type, &p.workers[w]);
+    pthread_mutex_destroy(&p.lock);
+    free(p.workers);
+    free(p.res);
+    tirenv_nn_free(proto);
+    return status;
 }
