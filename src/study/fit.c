@@ -40,6 +40,7 @@ typedef struct {
     double *h;                    /* scratch: one case's model curve per worker */
     tirenv_model **models;        /* one model per worker, for the parameters of a pass */
     gsl_vector *r;                /* the pass's residuals */
+    double last_pass;             /* wall time of the previous pass, s (-1: none yet) */
     int status;                   /* first failure inside the residual function */
     tirenv_diag *diag;
 } fit_ctx;
@@ -70,6 +71,13 @@ static int case_residuals(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
+/* Threads pay only for passes that take a while: starting them and handing out the cases
+ * costs tens of microseconds, and on a loaded machine a new thread may wait milliseconds for
+ * its first turn, against a pass of the cam (19 cases x 101 points at 0.1 us) that takes a
+ * fraction of one. So the first pass runs on this thread, and the others run on c->jobs only
+ * when the one before took PARALLEL_PASS or longer. The residuals are the same either way. */
+enum { PARALLEL_PASS_US = 5000 };
+
 /* Residuals h_model - h_meas over every point of every case of the split. */
 static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
 {
@@ -78,8 +86,11 @@ static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
     c->r = r;
     for (size_t w = 0; w < c->jobs; ++w)
         c->models[w] = NULL;
-    const int status = tirenv_parallel_for(c->n_cases, c->jobs, case_residuals, NULL, c,
+    const size_t jobs = c->last_pass >= 1e-6 * PARALLEL_PASS_US ? c->jobs : 1;
+    const double t0 = tirenv_study__wall_seconds();
+    const int status = tirenv_parallel_for(c->n_cases, jobs, case_residuals, NULL, c,
                                            c->diag);
+    c->last_pass = tirenv_study__wall_seconds() - t0;
     for (size_t w = 0; w < c->jobs; ++w)
         tirenv_model_free(c->models[w]);
     if (status) {
@@ -112,7 +123,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
                             "the %s model has no parameters to fit", tirenv_model_type_name(type));
     fit_ctx c = {.ds = ds, .split = split, .type = type, .tire = *tire, .params = params,
                  .n_params = s->fit_R0 ? n_params_max : n_params,
-                 .jobs = s->jobs ? s->jobs : 1, .diag = diag};
+                 .jobs = s->jobs ? s->jobs : 1, .last_pass = -1, .diag = diag};
     if (c.n_params > TIRENV_FIT_MAX_PARAMS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "the %s model has %zu parameters; a fit takes at most %d",
