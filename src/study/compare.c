@@ -617,6 +617,19 @@ static int write_plot_files(const tirenv_dataset *ds, const tirenv_compare_resul
     return status;
 }
 
+typedef struct {
+    const tirenv_plot__settings *ps;
+    const tirenv_dataset *ds;
+    const tirenv_compare_result *r;
+} draw_pass;
+
+static int draw_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    const draw_pass *p = ctx;
+    (void)worker;
+    return tirenv_plot__draw(p->ps, p->ds->cases[p->r->case_index[i]].name, diag);
+}
+
 int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn *nn,
                    const tirenv_compare_settings *s, tirenv_compare_result *out,
                    tirenv_diag *diag)
@@ -696,9 +709,11 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
         status = write_errors_md(ds, s, out, diag);
     if (!status)
         status = write_plot_files(ds, out, &ps, diag);
-    /* Last, so that without gnuplot everything else is already written. */
-    for (size_t i = 0; i < out->n_cases && !status && s->images; ++i)
-        status = tirenv_plot__draw(&ps, ds->cases[out->case_index[i]].name, diag);
+    /* Last, so that without gnuplot everything else is already written; one gnuplot per case,
+     * s->jobs at once. */
+    draw_pass dp = {&ps, ds, out};
+    if (!status && s->images)
+        status = tirenv_parallel_for(out->n_cases, jobs, draw_case, NULL, &dp, diag);
     out->images = !status && s->images;
     return status;
 }
