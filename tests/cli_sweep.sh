@@ -1,7 +1,7 @@
 #!/bin/sh
 # tirenv sweep from outside: a data set the other commands read, the same bytes for --jobs 1
-# and 3, shards merged equal to one run, a run killed midway resumed to the same bytes, the
-# progress bar where asked, and misuse refused. Usage: sh cli_sweep.sh BIN TESTDATA_DIR.
+# and 3, shards merged equal to one run, the progress bar where asked, and misuse refused
+# (a run killed midway and resumed: sweep_killed.sh). Usage: sh cli_sweep.sh BIN TESTDATA_DIR.
 # SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 # shellcheck source=tests/clilib.sh
@@ -39,29 +39,10 @@ rm -f part2/cases.csv
 run "$bin" sweep merge part0 part1 part2 part3 -o merged3
 check "merge refuses an incomplete shard" '[ $rc -eq 2 ] && grep -q "not complete" err'
 
-# A run killed while it writes (the ring on the rig: about a quarter second a case), then the
-# same command: it keeps what was written and finishes with the uninterrupted bytes.
-slow='--lengths 0.1,0.2 --heights 0.05,0.1 --contact-lengths 0.3,0.35 --model ring --rig'
-"$bin" sweep $slow -o whole --jobs 2 2>/dev/null
-"$bin" sweep $slow -o killed --jobs 1 2>/dev/null &
-pid=$!
-tries=0
-while [ "$(ls killed.partial/curves 2>/dev/null | wc -l)" -lt 2 ] && [ $tries -lt 600 ]; do
-    sleep 0.05
-    tries=$((tries + 1))
-done
-kill -9 "$pid" 2>/dev/null
-wait "$pid" 2>/dev/null
-check "a killed run leaves DIR.partial, not DIR" '[ -d killed.partial ] && [ ! -e killed ]'
-run "$bin" sweep $slow -o killed --jobs 2
-check "the same command resumes it, keeping the cases written" \
-    '[ $rc -eq 0 ] && grep -q "kept from an interrupted run" err && ! grep -q " 0 kept" err'
-check "and writes the uninterrupted bytes" 'diff -r whole killed >&2 && [ ! -e killed.partial ]'
-run "$bin" sweep $slow -o killed
-check "a complete sweep is not run again" '[ $rc -eq 0 ] && grep -q "nothing to do" err'
-
-run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --model springs -o killed
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --model springs -o one
 check "another sweep into a complete one is refused" '[ $rc -eq 2 ] && grep -q "another sweep" err'
+run "$bin" sweep $grid -o one
+check "a complete sweep is not run again" '[ $rc -eq 0 ] && grep -q "nothing to do" err'
 run "$bin" sweep --lengths 0.1 --heights 0.05 -o x
 check "a regime list is required" '[ $rc -eq 1 ] && [ ! -e x ] && [ ! -e x.partial ]'
 run "$bin" sweep --lengths 0.1,abc --heights 0.05 --contact-lengths 0.3 -o x

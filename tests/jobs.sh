@@ -2,16 +2,20 @@
 # --jobs N changes how long a command takes, never what it computes: each command run with
 # --jobs 1 (serial) and --jobs 3 (more threads than this machine's cores, so the work really
 # interleaves) writes the same files, byte for byte, apart from the timings they report.
-# (dataset build: tests/dataset_regenerates.sh; sweep: tests/cli_sweep.sh and test_sweep.)
+# (dataset build: tests/dataset_regenerates.sh; study: tests/study_runs.sh; sweep:
+# tests/cli_sweep.sh and test_sweep.)
 #   sh tests/jobs.sh BIN DATASET_DIR
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -u
 bin=$1 data=$2
 case $bin in /*) ;; *) bin=$PWD/$bin ;; esac
 case $data in /*) ;; *) data=$PWD/$data ;; esac
+here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 2
+# shellcheck source=tests/untimed.sh
+. "$here/untimed.sh"
 n=0 failed=0
 check() {
     n=$((n + 1))
@@ -23,64 +27,11 @@ check() {
     fi
 }
 
-# A report's text without what was timed: durations become T, and the lines of the timing
-# tables and the speed sentences (ratios of timings) go.
-untimed() {
-    sed -E 's/[0-9][0-9.]*(e[-+]?[0-9]+)? ?(ns|µs|us|ms|s)([^a-zA-Z0-9]|$)/T\3/g' "$1" |
-        grep -v -E '^\| [a-z]+ \| T \||Per position, measured|times as long|_time_s|took T'
-}
-
-# Two output trees equal apart from timings: timing.csv skipped, reports and JSON through
-# untimed, everything else byte for byte. Prints the first difference.
-same_apart_from_timings() {
-    ok=0
-    for f in $(cd "$1" && find . -type f | sort); do
-        case $f in
-        */timing.csv) continue ;;
-        *.md | *.json | *.txt)
-            untimed "$1/$f" >a.txt
-            untimed "$2/$f" >b.txt
-            if ! cmp -s a.txt b.txt; then
-                echo "# $f differs beyond timings:"
-                diff a.txt b.txt | head -n 6 | sed 's/^/#   /'
-                ok=1
-            fi
-            ;;
-        *)
-            if ! cmp -s "$1/$f" "$2/$f"; then
-                echo "# $f differs"
-                ok=1
-            fi
-            ;;
-        esac
-    done
-    [ "$(cd "$1" && find . -type f | sort)" = "$(cd "$2" && find . -type f | sort)" ] || {
-        echo "# the two runs wrote different files"
-        ok=1
-    }
-    return $ok
-}
-
-for j in 1 3; do
-    "$bin" study --jobs $j --no-images -o "study-$j" >/dev/null 2>"study-$j.err" ||
-        sed 's/^/# /' "study-$j.err"
-done
-check "study: --jobs 3 = --jobs 1 (fit, network, errors, plots' data, reports)" \
-    'same_apart_from_timings study-1 study-3'
-
 for j in 1 3; do
     "$bin" fit --data "$data" --jobs $j -o "fit-$j.tir" >"fit-$j.txt" 2>/dev/null
     mkdir -p "fit-$j" && mv "fit-$j.tir" "fit-$j/fitted.tir" && mv "fit-$j.txt" "fit-$j/out.txt"
 done
 check "fit: --jobs 3 = --jobs 1 (fitted tire, per-case errors)" 'same_apart_from_timings fit-1 fit-3'
-
-for j in 1 3; do
-    "$bin" compare --tire study-1/fitted.tir --nn study-1/nn.json --split train \
-        --models rigid,springs,cam,ring,nn --no-images --jobs $j -o "compare-$j" \
-        >/dev/null 2>&1
-done
-check "compare: --jobs 3 = --jobs 1 (19 cases x 5 models)" \
-    '[ -s compare-1/errors.csv ] && same_apart_from_timings compare-1 compare-3'
 
 for j in 1 3; do
     mkdir -p "train-$j"
@@ -90,11 +41,19 @@ done
 check "train: --jobs 3 = --jobs 1 (8 restarts: the network, its errors)" \
     '[ -s train-1/nn.json ] && same_apart_from_timings train-1 train-3'
 
+for j in 1 3; do
+    "$bin" compare --tire fit-1/fitted.tir --nn train-1/nn.json --split train \
+        --models rigid,springs,cam,ring,nn --no-images --jobs $j -o "compare-$j" \
+        >/dev/null 2>&1
+done
+check "compare: --jobs 3 = --jobs 1 (19 cases x 5 models)" \
+    '[ -s compare-1/errors.csv ] && same_apart_from_timings compare-1 compare-3'
+
 # ride: 4 models x 3 speeds; the comfort tables apart from their last two columns (CPU time
 # and times real time), every series and plot file byte for byte.
 for j in 1 3; do
     "$bin" ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h --model point,springs,cam,nn \
-        --nn study-1/nn.json --out-dir "ride-$j" --jobs $j >"ride-$j.txt" 2>"ride-$j.err"
+        --nn train-1/nn.json --out-dir "ride-$j" --jobs $j >"ride-$j.txt" 2>"ride-$j.err"
     awk '{ NF -= 2; print }' "ride-$j.txt" >"ride-$j/table.txt"
     cut -d, -f1-14 "ride-$j/comfort.csv" >"ride-$j/comfort-untimed.csv"
     rm "ride-$j/comfort.csv" "ride-$j/comfort.md"

@@ -191,6 +191,15 @@ static int same_tree(const char *a, const char *b)
     return system(cmd) == 0;
 }
 
+/* The grid the runs use: one contact length, 12 cases (3 validation, round(1.5) = 2
+ * control), so that the sanitizer build runs them in seconds. */
+static tirenv_sweep_settings small_grid(void)
+{
+    tirenv_sweep_settings s = grid();
+    s.n_contact_lengths = 1;
+    return s;
+}
+
 static void run_ok(const char *dir, const tirenv_sweep_settings *s, tirenv_sweep_report *rep)
 {
     const tirenv_tire tire = tirenv_tire_default();
@@ -209,11 +218,11 @@ static void test_runs(void **state)
     tirenv_test_path(t, "one", one);
     tirenv_test_path(t, "three", three);
     tirenv_test_path(t, "merged", merged);
-    tirenv_sweep_settings s = grid();
+    tirenv_sweep_settings s = small_grid();
     tirenv_sweep_report rep;
     run_ok(one, &s, &rep);
-    assert_int_equal(rep.cases, 24);
-    assert_int_equal(rep.run, 24);
+    assert_int_equal(rep.cases, 12);
+    assert_int_equal(rep.run, 12);
     assert_int_equal(rep.resumed, 0);
     /* Eight threads writing files at once: each gets the mode the umask gives, and the
      * umask stays what it was. */
@@ -222,7 +231,7 @@ static void test_runs(void **state)
     run_ok(three, &s, &rep);
     assert_int_equal(umask(old_mask), 027);
     assert_true(same_tree(one, three));
-    for (size_t i = 0; i < 24; ++i) {
+    for (size_t i = 0; i < 12; ++i) {
         char f[800];
         struct stat st;
         snprintf(f, sizeof f, "%s/curves/c%04zu.csv", three, i);
@@ -244,7 +253,7 @@ static void test_runs(void **state)
         s.shards = 3;
         s.jobs = 2;
         run_ok(parts[k], &s, &rep);
-        assert_int_equal(rep.part_cases, 8);
+        assert_int_equal(rep.part_cases, 4);
         order[(k + 1) % 3] = parts[k];
     }
     tirenv_diag d;
@@ -261,7 +270,7 @@ static void test_runs(void **state)
     /* The data set reads, with the splits drawn. */
     tirenv_dataset ds;
     assert_int_equal(tirenv_dataset_read(one, 0.68, &ds, &d), TIRENV_OK);
-    assert_int_equal(ds.n, 24);
+    assert_int_equal(ds.n, 12);
     size_t n_val = 0;
     for (size_t i = 0; i < ds.n; ++i) {
         n_val += ds.cases[i].split == TIRENV_SPLIT_VALIDATION;
@@ -272,12 +281,12 @@ static void test_runs(void **state)
         /* The curve rises over the cleat, and never above it. */
         assert_true(peak > 0.2 * ds.cases[i].H && peak <= ds.cases[i].H + 1e-9);
     }
-    assert_int_equal(n_val, 6);
-    /* The swept key took effect: the stiffer variant (cases 12 to 23) needs more load for
+    assert_int_equal(n_val, 3);
+    /* The swept key took effect: the stiffer variant (cases 6 to 11) needs more load for
      * the same contact length. */
-    assert_string_equal(ds.cases[12].name, "c0012");
-    assert_true(ds.cases[12].contact_length == ds.cases[0].contact_length);
-    assert_true(ds.cases[12].load > 1.1 * ds.cases[0].load);
+    assert_string_equal(ds.cases[6].name, "c0006");
+    assert_true(ds.cases[6].contact_length == ds.cases[0].contact_length);
+    assert_true(ds.cases[6].load > 1.1 * ds.cases[0].load);
     tirenv_dataset_free(&ds);
     snprintf(path, sizeof path, "%s/sweep.csv", one);
     assert_int_equal(access(path, R_OK), 0);
@@ -291,7 +300,7 @@ static void test_resume(void **state)
     char one[600], two[600], cmd[8192];
     tirenv_test_path(t, "one", one);
     tirenv_test_path(t, "two", two);
-    tirenv_sweep_settings s = grid();
+    tirenv_sweep_settings s = small_grid();
     s.type = tirenv_model_cam;
     tirenv_sweep_report rep;
     run_ok(one, &s, &rep);
@@ -299,7 +308,7 @@ static void test_resume(void **state)
      * file and a manifest it was writing. */
     snprintf(cmd, sizeof cmd,
              "set -e; mkdir -p '%s.partial/curves'; cp '%s/sweep.txt' '%s/tire.tir' '%s.partial/';"
-             "cp '%s/curves/c0003.csv' '%s/curves/c0011.csv' '%s.partial/curves/';"
+             "cp '%s/curves/c0003.csv' '%s/curves/c0009.csv' '%s.partial/curves/';"
              "echo half > '%s.partial/curves/c0004.csv.tmp.abc123';"
              "echo half > '%s.partial/cases.csv.tmp.xyz'",
              two, one, one, two, one, one, two, two, two);
@@ -307,7 +316,7 @@ static void test_resume(void **state)
     s.jobs = 2;
     run_ok(two, &s, &rep);
     assert_int_equal(rep.resumed, 2);
-    assert_int_equal(rep.run, 22);
+    assert_int_equal(rep.run, 10);
     assert_true(same_tree(one, two));
     char partial[700];
     snprintf(partial, sizeof partial, "%s.partial", two);
@@ -317,7 +326,7 @@ static void test_resume(void **state)
     snprintf(cmd, sizeof cmd, "mkdir -p '%s.partial' && cp '%s/sweep.txt' '%s.partial/'", two,
              one, two);
     assert_int_equal(system(cmd), 0);
-    tirenv_sweep_settings other = grid();
+    tirenv_sweep_settings other = small_grid();
     other.type = tirenv_model_springs;
     const tirenv_tire tire = tirenv_tire_default();
     tirenv_diag d;

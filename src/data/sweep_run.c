@@ -116,7 +116,8 @@ static int pair_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
         tirenv_flat flat;
         r->load[p] = s->loads[a];
         status = tirenv_model_flat(m, r->load[p], &flat, diag);
-        r->l_c[p] = flat.contact_length;
+        if (!status)
+            r->l_c[p] = flat.contact_length;
         if (!status && !(flat.contact_length > 0 && flat.contact_length < 2 * t.springs.R0))
             status = tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
                                   "the %s model's contact length at %g N is %g m; a case "
