@@ -664,7 +664,7 @@ static void test_mfswift_file(void **state)
     expected.springs.R0 = 0.3135;
     expected.cam = (tirenv_cam_params){.c_z = 209651.5, .q_ra1 = 0.6715, .q_ra2 = 0.7308,
                                        .shift = 0.8328, .length = 1.4634, .height = 0.9551,
-                                       .order = 1.5257};
+                                       .order = 1.5257, .given = TIRENV_CAM_ALL};
     assert_memory_equal(&t.springs, &expected.springs, sizeof t.springs);
     assert_memory_equal(&t.ring, &expected.ring, sizeof t.ring);
     assert_memory_equal(&t.cam, &expected.cam, sizeof t.cam);

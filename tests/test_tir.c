@@ -180,14 +180,29 @@ static const read_error_case read_errors[] = {
     {"[]\n", TIRENV_EPARSE, 1, 1, "", "empty section name"},
     {"UNLOADED_RADIUS = 0.7\n[DIMENSION]\n", TIRENV_EPARSE, 1, 1, "",
      "before the first section"},
-    /* units: SI only */
-    {"[UNITS]\nLENGTH = 'meter'\nFORCE = 'kN'\n", TIRENV_EPARSE, 3, 10, "FORCE",
-     "unit 'kN' is not supported (tirenv reads SI only); expected 'newton'"},
-    {"[UNITS]\nANGLE = 'deg'\n", TIRENV_EPARSE, 2, 10, "ANGLE",
-     "expected 'radians' or 'rad'"},
+    /* units: the ones MF-Tyre and Adams files use, converted; others refused */
+    {"[UNITS]\nLENGTH = 'meter'\nFORCE = 'kip'\n[DIMENSION]\nUNLOADED_RADIUS = 0.7\n",
+     TIRENV_EPARSE, 3, 10, "FORCE", "unknown unit 'kip'; expected one of 'newtons'"},
+    {"[UNITS]\nANGLE = 'gradians'\n", TIRENV_EPARSE, 2, 10, "ANGLE",
+     "unknown unit 'gradians'; expected one of 'radians', 'degrees'"},
     {"[UNITS]\nLENGTH = 'meter\n", TIRENV_EPARSE, 2, 10, "LENGTH", "unterminated string"},
-    {"[UNITS]\nPRESSURE = 'pascal'\n", TIRENV_EPARSE, 2, 1, "PRESSURE",
-     "unknown key in [UNITS]"},
+    {"[UNITS]\nSPEED = 'm/s'\n", TIRENV_EPARSE, 2, 1, "SPEED", "unknown key in [UNITS]"},
+    {"[UNITS]\nLENGTH = 'mm'\n", TIRENV_EPARSE, 2, 0, "",
+     "the file sets none of the keys tirenv reads; expected at least one, such as "
+     "[DIMENSION] UNLOADED_RADIUS"},
+    {"", TIRENV_EPARSE, 0, 0, "", "the empty file sets none of the keys tirenv reads"},
+    {"$ nothing but comments\n\n! and more\n", TIRENV_EPARSE, 3, 0, "",
+     "sets none of the keys"},
+    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[VERTICAL]\nFNOMIN = 4000\n", TIRENV_EPARSE, 4, 0,
+     "", "sets none of the keys"},
+    /* a key tirenv reads, in another section tirenv reads: it would be ignored there */
+    {"[DIMENSION]\nUNLOADED_RADIUS = 0.7\nRADIAL_STIFFNESS = 1.6e6\n", TIRENV_EPARSE, 3, 1,
+     "RADIAL_STIFFNESS", "key of [ENVELOPING_SPRINGS] in [DIMENSION]; expected it in "
+     "[ENVELOPING_SPRINGS]"},
+    {"[VERTICAL]\nQ_RA1 = 0.7\n", TIRENV_EPARSE, 2, 1, "Q_RA1",
+     "key of [CONTACT_PATCH] in [VERTICAL]"},
+    {"[ENVELOPING_RING]\nUNLOADED_RADIUS = 0.7\n", TIRENV_EPARSE, 2, 1, "UNLOADED_RADIUS",
+     "key of [DIMENSION] in [ENVELOPING_RING]"},
     /* parsed fine, but unphysical: the line of the key, no column */
     {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[ENVELOPING_SPRINGS]\nSEGMENT_ANGLE = 3.0\n"
      "RADIAL_STIFFNESS = -1.6e6 $ sign typo\n", TIRENV_EINVAL, 5, 0, "RADIAL_STIFFNESS",
@@ -524,6 +539,139 @@ static void test_outfile_stdout(void **state)
     assert_int_equal(fflush(stdout), 0);
 }
 
+/* ---- real MF-Tyre / PAC2002 files ------------------------------------------------------ */
+
+/* Every sample .tir of the ecosystem loads unchanged: the radius and vertical stiffness are
+ * the file's (in SI whatever [UNITS] says), the cam keys given where the file has them. */
+static void test_sample_tir_files(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name;
+        double R0, c_z;
+        unsigned given;
+    } cases[] = {
+        {"335_65R22_5_G275MSA_60psi.tir", 0.4987, 5.6519e5, TIRENV_CAM_C_Z},
+        {"HMMWV_Pac02Tire.tir", 0.4699, 1e6, TIRENV_CAM_C_Z},
+        {"Truck_430_50R38-excerpt.tir", 0.6731, 1e6, TIRENV_CAM_ALL},
+        {"mf_185_80R14.tir", 0.376, 1.75e5, TIRENV_CAM_C_Z},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char path[600];
+        snprintf(path, sizeof path, "%s/tir/%s", TIRENV_SAMPLES, cases[k].name);
+        if (access(path, R_OK) != 0) {
+            print_error("sample file %s is missing\n", path);
+            fail();
+        }
+        tirenv_tire t = tirenv_tire_default();
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        const int status = tirenv_tir_read(path, &t, &d);
+        char line[1200];
+        print_message("%s: %s\n", cases[k].name,
+                      status ? tirenv_diag_format(&d, line, sizeof line) : "ok");
+        assert_int_equal(status, TIRENV_OK);
+        assert_bits_equal(t.springs.R0, cases[k].R0);
+        assert_bits_equal(t.cam.c_z, cases[k].c_z);
+        assert_int_equal(t.cam.given, cases[k].given);
+        assert_int_equal(tirenv_tire_check_cam_keys(&t, &d),
+                         cases[k].given == TIRENV_CAM_ALL ? TIRENV_OK : TIRENV_EINVAL);
+        if (cases[k].given != TIRENV_CAM_ALL) {
+            assert_string_equal(d.field, "Q_RA1");
+            assert_non_null(strstr(d.message, "Q_RA1, Q_RA2, ELLIPS_SHIFT, ELLIPS_LENGTH, "
+                                              "ELLIPS_HEIGHT, ELLIPS_ORDER"));
+        }
+    }
+}
+
+/* Values in the file's [UNITS] come out in SI, whatever the order of the sections: each
+ * factor worked out by hand from the unit's definition. */
+static void test_units_converted(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    char path[600];
+    tirenv_test_write_text(tirenv_test_path(fx, "units.tir", path),
+                           "[DIMENSION]\nUNLOADED_RADIUS = 680\n"
+                           "[VERTICAL]\nVERTICAL_STIFFNESS = 0.342  $ kN/mm\n"
+                           "[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS = 27.925  $ kN/mm/deg\n"
+                           "INTERRADIAL_STIFFNESS = 573  $ kN*deg/mm\n"
+                           "SEGMENT_ANGLE = 180\nELEMENT_ANGLE = 0.5\n"
+                           "[ENVELOPING_RING]\nBELT_BENDING_STIFFNESS = 5e5  $ kN*mm^2\n"
+                           "FOUNDATION_STIFFNESS = 1.3e-3  $ kN/mm^2\nNODE_ANGLE = 1\n"
+                           "[ENVELOPING_SOLVER]\nFORCE_TOLERANCE = 1e-9\n"
+                           "STEP_TOLERANCE = 1e-7\n"
+                           "[UNITS]\nLENGTH = 'mm'\nFORCE = 'KN'\nANGLE = 'Degrees'\n"
+                           "MASS = 'tonne'\nTIME = 'milli'\nPRESSURE = 'psi'\n");
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    const int status = tirenv_tir_read(path, &t, &d);
+    char msg[1200];
+    print_message("%s\n", tirenv_diag_format(&d, msg, sizeof msg));
+    assert_int_equal(status, TIRENV_OK);
+    const double deg = M_PI / 180;
+    assert_near(t.springs.R0, 0.68, 1e-15, 0);
+    assert_near(t.cam.c_z, 342e3, 0, 1e-15);
+    assert_near(t.springs.c_r, 27.925e3 / 1e-3 / deg, 0, 1e-15);
+    assert_near(t.springs.c_b, 573e3 * deg / 1e-3, 0, 1e-15);
+    assert_near(t.springs.phi, M_PI, 0, 1e-15);
+    assert_near(t.springs.dphi, M_PI / 360, 0, 1e-15);
+    assert_near(t.ring.EI, 5e5 * 1e3 * 1e-6, 0, 1e-15);
+    assert_near(t.ring.k_f, 1.3e-3 * 1e3 / 1e-6, 0, 1e-15);
+    assert_near(t.ring.dtheta, deg, 0, 1e-15);
+    assert_near(t.eq.eps_F, 1e-6, 0, 1e-15);
+    assert_near(t.eq.eps_z, 1e-10, 0, 1e-15);
+    /* Imperial units, and the spellings of the Adams documentation. */
+    tirenv_test_write_text(path, "[UNITS]\nLENGTH = 'inch'\nFORCE = 'pound_force'\n"
+                                 "ANGLE = 'rad'\nMASS = 'slug'\nTIME = 'sec'\n"
+                                 "PRESSURE = 'bar'\n[DIMENSION]\nUNLOADED_RADIUS = 26.77\n"
+                                 "[VERTICAL]\nVERTICAL_STIFFNESS = 1954\n");
+    t = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_near(t.springs.R0, 26.77 * 0.0254, 0, 1e-15);
+    assert_near(t.cam.c_z, 1954 * 0.45359237 * 9.80665 / 0.0254, 0, 1e-15);
+    /* --set is in SI, whatever units the file had. */
+    assert_int_equal(tirenv_tir_set(&t, "UNLOADED_RADIUS=0.7", &d), TIRENV_OK);
+    assert_bits_equal(t.springs.R0, 0.7);
+}
+
+/* Which cam keys a tire has of its own: a file sets the bits of the keys it holds and clears
+ * the others; --set sets its key's. */
+static void test_cam_keys_given(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(t.cam.given, TIRENV_CAM_ALL);
+    assert_int_equal(tirenv_tire_check_cam_keys(&t, &d), TIRENV_OK);
+    char path[600];
+    tirenv_test_write_text(tirenv_test_path(fx, "cam.tir", path),
+                           "[DIMENSION]\nUNLOADED_RADIUS = 0.5\n"
+                           "[CONTACT_PATCH]\nQ_RA1 = 0.7\nELLIPS_ORDER = 1.7\n");
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_int_equal(t.cam.given, TIRENV_CAM_Q_RA1 | TIRENV_CAM_ORDER);
+    assert_int_equal(tirenv_tire_check_cam_keys(&t, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "VERTICAL_STIFFNESS");
+    assert_non_null(strstr(d.message, "VERTICAL_STIFFNESS, Q_RA2, ELLIPS_SHIFT, ELLIPS_LENGTH, "
+                                      "ELLIPS_HEIGHT ("));
+    static const char *const sets[] = {"VERTICAL_STIFFNESS=2e5", "Q_RA2=0.8",
+                                       "ELLIPS_SHIFT=0.8", "ELLIPS_LENGTH=1.4",
+                                       "ELLIPS_HEIGHT=0.9"};
+    for (size_t k = 0; k < 5; k++) {
+        assert_int_equal(tirenv_tire_check_cam_keys(&t, &d), TIRENV_EINVAL);
+        assert_int_equal(tirenv_tir_set(&t, sets[k], &d), TIRENV_OK);
+    }
+    assert_int_equal(t.cam.given, TIRENV_CAM_ALL);
+    assert_int_equal(tirenv_tire_check_cam_keys(&t, &d), TIRENV_OK);
+    /* The file written from it has every key, so it reads back whole. */
+    tirenv_test_path(fx, "all.tir", path);
+    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_OK);
+    tirenv_tire back = tirenv_tire_default();
+    back.cam.given = 0;
+    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
+    assert_int_equal(back.cam.given, TIRENV_CAM_ALL);
+}
+
 int main(void)
 {
 #define T(fn) cmocka_unit_test_setup_teardown(fn, tirenv_test_dir_setup, tirenv_test_dir_teardown)
@@ -543,6 +691,9 @@ int main(void)
         T(test_outfile_replaces_existing),
         T(test_outfile_errors),
         T(test_outfile_stdout),
+        T(test_sample_tir_files),
+        T(test_units_converted),
+        T(test_cam_keys_given),
     };
 #undef T
     return cmocka_run_group_tests(tests, NULL, NULL);

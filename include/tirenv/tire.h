@@ -63,7 +63,21 @@ typedef struct {
     double length;         /* ELLIPS_LENGTH: cam half length / R0 */
     double height;         /* ELLIPS_HEIGHT: cam half height / R0 */
     double order;          /* ELLIPS_ORDER: super-ellipse exponent c_e, > 1 */
+    unsigned given;        /* TIRENV_CAM_* bits of the keys with a value of this tire's own (a
+                            * .tir file read clears the others); the default tire has all */
 } tirenv_cam_params;
+
+/* Bits of tirenv_cam_params.given, one per cam key. */
+enum {
+    TIRENV_CAM_C_Z = 1u << 0,     /* [VERTICAL] VERTICAL_STIFFNESS */
+    TIRENV_CAM_Q_RA1 = 1u << 1,   /* [CONTACT_PATCH] Q_RA1 */
+    TIRENV_CAM_Q_RA2 = 1u << 2,
+    TIRENV_CAM_SHIFT = 1u << 3,   /* ELLIPS_SHIFT */
+    TIRENV_CAM_LENGTH = 1u << 4,  /* ELLIPS_LENGTH */
+    TIRENV_CAM_HEIGHT = 1u << 5,  /* ELLIPS_HEIGHT */
+    TIRENV_CAM_ORDER = 1u << 6,   /* ELLIPS_ORDER */
+    TIRENV_CAM_ALL = (1u << 7) - 1
+};
 
 /* Everything a model needs to know about the tire and how to solve it. */
 typedef struct {
@@ -84,6 +98,11 @@ tirenv_tire tirenv_tire_default(void);
  * phi <= pi, tolerances > 0, the ring's and the cam's keys in range). Returns 0 or
  * TIRENV_EINVAL with the offending key in diag. */
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
+
+/* Whether the tire has its own value for every cam key (cam.given): TIRENV_OK, or
+ * TIRENV_EINVAL naming the missing keys, for a tire file without MF-Swift's cam data used with
+ * the cam model, which would otherwise take another tire's cam shape. */
+int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag);
 
 TIRENV_END_DECLS
 #endif

@@ -38,6 +38,7 @@ int cli_compare_main(int argc, char *argv[]);
 int cli_fit_main(int argc, char *argv[]);
 int cli_study_main(int argc, char *argv[]);
 int cli_road_main(int argc, char *argv[]);
+int cli_convert_main(int argc, char *argv[]);
 int cli_ride_main(int argc, char *argv[]);
 int cli_sweep_main(int argc, char *argv[]);
 

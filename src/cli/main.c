@@ -16,6 +16,7 @@ static const cli_command commands[] = {
     {"flat", cli_flat_main, "flat-ground state: load, deflection, contact length, stiffness"},
     {"envelope", cli_envelope_main, "enveloping curve over an obstacle, as CSV"},
     {"road", cli_road_main, "random road profile of an ISO 8608 class, as CSV"},
+    {"convert", cli_convert_main, "a road from one file format to another: CSV, OpenCRG, RDF"},
     {"rig", cli_rig_main, "virtual test rig: a simulated cart run written as a raw log"},
     {"import", cli_import_main, "rig log to an approach-half enveloping curve, as CSV"},
     {"dataset", cli_dataset_main, "build or list the embedded (simulated) data set"},

@@ -167,13 +167,16 @@ int cli_model_type(const char *name, const tirenv_model_type **type)
 int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_options *o,
               tirenv_model **out)
 {
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    *out = NULL;
+    if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(tire, &diag))
+        return cli_fail(TIRENV_EINVAL, &diag);  /* the tire file lacks MF-Swift's cam data */
     *out = tirenv_model_alloc(type, tire);
     if (!*out)  /* the tire was checked: only memory is left */
         return cli_fail(TIRENV_ENOMEM, NULL);
     if (!(tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
         return CLI_EXIT_OK;
-    tirenv_diag diag;
-    tirenv_diag_clear(&diag);
     tirenv_nn *nn = NULL;
     tirenv_train_record rec;
     int status = o && o->nn_path

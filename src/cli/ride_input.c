@@ -9,6 +9,12 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
                         double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag)
 {
+    /* A tire file without MF-Swift's cam data would give the cam another tire's shape. */
+    if (type == tirenv_model_cam) {
+        const int status = tirenv_tire_check_cam_keys(tire, diag);
+        if (status)
+            return status;
+    }
     tirenv_model *m = tirenv_model_alloc(type, tire);
     int status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     if (!status && (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))

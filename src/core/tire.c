@@ -2,6 +2,8 @@
 #include "tirenv/tire.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 tirenv_eq_settings tirenv_eq_default(void)
 {
@@ -55,6 +57,7 @@ tirenv_tire tirenv_tire_default(void)
             .length = 1.4634,
             .height = 0.9551,
             .order = 1.5257,
+            .given = TIRENV_CAM_ALL,
         },
     };
 }
@@ -165,4 +168,28 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
     return cam_check(&tire->cam, diag);
+}
+
+int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag)
+{
+    static const struct { unsigned bit; const char *key; } keys[] = {
+        {TIRENV_CAM_C_Z, "VERTICAL_STIFFNESS"}, {TIRENV_CAM_Q_RA1, "Q_RA1"},
+        {TIRENV_CAM_Q_RA2, "Q_RA2"}, {TIRENV_CAM_SHIFT, "ELLIPS_SHIFT"},
+        {TIRENV_CAM_LENGTH, "ELLIPS_LENGTH"}, {TIRENV_CAM_HEIGHT, "ELLIPS_HEIGHT"},
+        {TIRENV_CAM_ORDER, "ELLIPS_ORDER"},
+    };
+    char missing[160] = "";
+    const char *first = NULL;
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
+        if (!(tire->cam.given & keys[k].bit)) {
+            const size_t n = strlen(missing);
+            snprintf(missing + n, sizeof missing - n, "%s%s", n ? ", " : "", keys[k].key);
+            first = first ? first : keys[k].key;
+        }
+    if (!first)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EINVAL, "", 0, first, "the tire has no value of its own "
+                        "for the cam keys %s ([VERTICAL], [CONTACT_PATCH] of an MF-Swift "
+                        ".tir file); the cam model needs them: add them to the tire file or "
+                        "give them with --set", missing);
 }

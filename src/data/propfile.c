@@ -28,6 +28,7 @@ typedef struct {
     const char *base; /* start of the line: columns count from here; NULL for no columns */
     size_t dir_len;   /* length of file's directory part with its '/', 0 if none or --set */
     tirenv_diag *diag;
+    double *factor;   /* the file's [UNITS]: factor to SI per quantity; NULL for --set */
 } pf_ctx;
 
 /* Records a parse error; 'at' points into the line at the offending character. */
@@ -278,6 +279,16 @@ static int pf_apply(const pf_ctx *c, const pf_key *e, char *value, void *obj)
         return pf_fail(c, value, e->key, "unknown %s '%.60s'; expected %s", e->noun, value,
                        pf_name_list(e, names, sizeof names));
     case TIRENV_PROPFILE_UNIT:
+        if (e->converts) {
+            double f;
+            char list[512];
+            if (tirenv_units__factor(e->unit, value, &f) != TIRENV_OK)
+                return pf_fail(c, value, e->key, "unknown unit '%.60s'; expected one of %s",
+                               value, tirenv_units__list(e->unit, list, sizeof list));
+            if (c->factor)
+                c->factor[e->unit] = f;
+            return TIRENV_OK;
+        }
         for (size_t a = 0; a < sizeof e->names / sizeof e->names[0] && e->names[a]; a++)
             if (strcasecmp(value, e->names[a]) == 0)
                 return TIRENV_OK;
@@ -351,6 +362,12 @@ static int pf_key_line(const pf_schema *s, const pf_ctx *c, char *text, const pf
         return pf_fail(c, eq, "", "missing key before '='; expected KEY = value");
     const size_t i = pf_find_key(s, sec->name, key, 0, NULL);
     if (i == s->n_keys) {
+        /* A key this format reads elsewhere would be skipped here without a word. */
+        const size_t other = pf_find_key(s, NULL, key, 1, NULL);
+        if (other < s->n_keys)
+            return pf_fail(c, key, s->keys[other].key, "key of [%s] in [%s]; expected it in "
+                           "[%s], where it is read", s->keys[other].section, sec->name,
+                           s->keys[other].section);
         if (!sec->strict)
             return TIRENV_OK;
         char keys[256];
@@ -385,6 +402,58 @@ static int pf_line(const pf_schema *s, const pf_ctx *c, char *line, const pf_sec
     return pf_key_line(s, c, p, *sec, obj, seen);
 }
 
+/* The file's REAL values from its [UNITS] to SI: times each quantity's factor to the power
+ * of the key's dimension. */
+static void pf_convert(const pf_schema *s, void *obj, const size_t seen[], const double f[])
+{
+    for (size_t i = 0; i < s->n_keys; i++) {
+        const pf_key *e = &s->keys[i];
+        if (e->kind != TIRENV_PROPFILE_REAL || !seen[i])
+            continue;
+        double factor = 1;
+        for (int k = 0; k < TIRENV_UNIT_KINDS; k++)
+            for (int p = 0; p < abs(e->dim[k]); p++)
+                factor = e->dim[k] > 0 ? factor * f[k] : factor / f[k];
+        double v;
+        memcpy(&v, (unsigned char *)obj + e->offset, sizeof v);
+        v *= factor;
+        memcpy((unsigned char *)obj + e->offset, &v, sizeof v);
+    }
+}
+
+/* Which tracked keys have a value of the file's own: the others' bits are cleared. */
+static void pf_mark_given(const pf_schema *s, void *obj, const size_t seen[])
+{
+    if (!s->given_mask)
+        return;
+    unsigned given;
+    memcpy(&given, (unsigned char *)obj + s->given_offset, sizeof given);
+    given &= ~s->given_mask;
+    for (size_t i = 0; i < s->n_keys; i++)
+        if (seen[i])
+            given |= s->keys[i].given;
+    memcpy((unsigned char *)obj + s->given_offset, &given, sizeof given);
+}
+
+/* A file that sets no value (empty, comments only, or only another program's sections) is
+ * not a tire or vehicle: refused rather than read as the defaults. */
+static int pf_check_any(const pf_schema *s, const char *path, size_t lines, const size_t seen[],
+                        tirenv_diag *diag)
+{
+    const pf_key *first = NULL;
+    for (size_t i = 0; i < s->n_keys; i++) {
+        if (s->keys[i].kind == TIRENV_PROPFILE_UNIT)
+            continue;
+        if (seen[i])
+            return TIRENV_OK;
+        if (!first)
+            first = &s->keys[i];
+    }
+    return tirenv_error(diag, TIRENV_EPARSE, path, lines, "", "%s sets none of the keys tirenv "
+                        "reads; expected at least one, such as [%s] %s", lines ? "the file" :
+                        "the empty file", first ? first->section : "", first ? first->key : "");
+}
+
 int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tirenv_diag *diag)
 {
     FILE *fp = fopen(path, "r");
@@ -405,7 +474,10 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
     char *buf = NULL;
     size_t cap = 0;
     ssize_t len;
-    pf_ctx c = {path, 0, NULL, slash ? (size_t)(slash - path) + 1 : 0, diag};
+    double factor[TIRENV_UNIT_KINDS];
+    for (int k = 0; k < TIRENV_UNIT_KINDS; k++)
+        factor[k] = 1;
+    pf_ctx c = {path, 0, NULL, slash ? (size_t)(slash - path) + 1 : 0, diag, factor};
     int status = TIRENV_OK;
     while (status == TIRENV_OK && (len = getline(&buf, &cap, fp)) != -1) {
         c.line++;
@@ -421,7 +493,12 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
     free(buf);
     fclose(fp);
     if (status == TIRENV_OK)
+        status = pf_check_any(s, path, c.line, seen, diag);
+    if (status == TIRENV_OK) {
+        pf_convert(s, copy, seen, factor);
+        pf_mark_given(s, copy, seen);
         status = pf_check(s, copy, path, seen, diag);
+    }
     if (status == TIRENV_OK)
         memcpy(obj, copy, s->size);
     free(copy);
@@ -433,7 +510,7 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
 static int pf_set_buf(const pf_schema *s, void *obj, char *buf, const char *assignment,
                       tirenv_diag *diag)
 {
-    const pf_ctx c = {"--set", 0, NULL, 0, diag};
+    const pf_ctx c = {"--set", 0, NULL, 0, diag, NULL};
     char *eq = strchr(buf, '=');
     if (!eq)
         return pf_fail(&c, NULL, "", "expected KEY=VALUE, got '%.60s'", assignment);
@@ -472,6 +549,12 @@ static int pf_set_buf(const pf_schema *s, void *obj, char *buf, const char *assi
         return tirenv_error(diag, TIRENV_ENOMEM, "--set", 0, "", "out of memory");
     memcpy(copy, obj, s->size);
     int status = pf_apply(&c, &s->keys[i], pf_trim(eq + 1), copy);
+    if (status == TIRENV_OK && s->keys[i].given) {
+        unsigned given;
+        memcpy(&given, (unsigned char *)copy + s->given_offset, sizeof given);
+        given |= s->keys[i].given;
+        memcpy((unsigned char *)copy + s->given_offset, &given, sizeof given);
+    }
     if (status == TIRENV_OK)
         status = pf_check(s, copy, "--set", NULL, diag);
     if (status == TIRENV_OK)

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "data/units.h"
 #include "tirenv/error.h"
 
 /* How a key's value is parsed and where it goes. */
@@ -17,7 +18,9 @@ typedef enum {
     TIRENV_PROPFILE_COUNT, /* a positive integer, stored as size_t at offset */
     TIRENV_PROPFILE_NAME,  /* one of names[], stored as its index (an int or an enum of int's
                             * size) at offset */
-    TIRENV_PROPFILE_UNIT,  /* one of names[] (the first is written); stores nothing */
+    TIRENV_PROPFILE_UNIT,  /* one of names[] (the first is written), or with converts any
+                            * unit of its quantity that data/units.c knows; stores nothing,
+                            * but converts the file's REAL values to SI */
     TIRENV_PROPFILE_PATH   /* a file path, quoted or not, stored as a string in a char array
                             * of size bytes at offset; a relative path read from a file is
                             * taken relative to that file's directory */
@@ -32,6 +35,13 @@ typedef struct {
     size_t size;             /* PATH: capacity of the char array, '\0' included */
     const char *names[4];    /* NAME: the names of values 0, 1...; UNIT: accepted spellings */
     const char *noun;        /* NAME: what the names are, for messages ("method") */
+    int converts;            /* UNIT: any unit of quantity `unit` is read and converted */
+    tirenv_unit_kind unit;   /* UNIT: the quantity this key sets the unit of */
+    /* REAL: the value's dimension as exponents of the [UNITS] quantities (N/m/rad: length -1,
+     * force 1, angle -1); a value read from a file is converted to SI with them. */
+    signed char dim[TIRENV_UNIT_KINDS];
+    unsigned given;          /* a bit set in the schema's given field when the key has a
+                              * value from a file or --set; 0: not tracked */
 } tirenv_propfile__key;
 
 /* Table entries. The macro parameters avoid the member names: a parameter called key would
@@ -42,6 +52,20 @@ typedef struct {
 #define TIRENV_PROPFILE_UNIT_KEY(name, text, ...)                                              \
     {.section = "UNITS", .key = (name), .kind = TIRENV_PROPFILE_UNIT, .comment = (text),       \
      .names = {__VA_ARGS__}}
+
+/* A [UNITS] key whose every unit of the quantity is read, and values converted to SI. */
+#define TIRENV_PROPFILE_CONVERTED_UNIT(name, text, si, quantity)                               \
+    {.section = "UNITS", .key = (name), .kind = TIRENV_PROPFILE_UNIT, .comment = (text),       \
+     .names = {si}, .converts = 1, .unit = (quantity)}
+
+/* The [UNITS] section of MF-Tyre and Adams files, converted to SI. */
+#define TIRENV_PROPFILE_CONVERTED_UNITS                                                        \
+    TIRENV_PROPFILE_CONVERTED_UNIT("LENGTH", "lengths in m", "meter", TIRENV_UNIT_LENGTH),     \
+    TIRENV_PROPFILE_CONVERTED_UNIT("FORCE", "forces in N", "newton", TIRENV_UNIT_FORCE),       \
+    TIRENV_PROPFILE_CONVERTED_UNIT("ANGLE", "angles in rad", "radians", TIRENV_UNIT_ANGLE),    \
+    TIRENV_PROPFILE_CONVERTED_UNIT("MASS", "masses in kg", "kg", TIRENV_UNIT_MASS),            \
+    TIRENV_PROPFILE_CONVERTED_UNIT("TIME", "times in s", "second", TIRENV_UNIT_TIME),          \
+    TIRENV_PROPFILE_CONVERTED_UNIT("PRESSURE", "pressures in Pa", "pascal", TIRENV_UNIT_PRESSURE)
 
 /* The [UNITS] section of an SI-only file: any other unit is refused rather than converted. */
 #define TIRENV_PROPFILE_SI_UNITS                                                               \
@@ -74,10 +98,17 @@ typedef struct {
     int (*check)(const void *obj, tirenv_diag *diag);
     /* Writes what comes before the first section (a header, comments). */
     void (*preamble)(FILE *fp);
+    /* Where the keys' given bits are kept (an unsigned in the struct), and all of them: a
+     * file read clears them, then sets those of the keys it has; --set sets its key's. */
+    size_t given_offset;
+    unsigned given_mask;     /* 0: nothing tracked */
 } tirenv_propfile__schema;
 
-/* Reads path over *obj (only the keys present change), then checks the result; *obj changes
- * only if everything passes. Errors name file, line, column (when it helps) and key. */
+/* Reads path over *obj (only the keys present change), converting REAL values to SI by the
+ * file's [UNITS], then checks the result; *obj changes only if everything passes. A file
+ * that sets none of the keys is an error (an empty file is not a tire), and so is a key of
+ * the schema met in another section the schema reads (it would be ignored there). Errors
+ * name file, line, column (when it helps) and key. */
 int tirenv_propfile__read(const tirenv_propfile__schema *s, const char *path, void *obj,
                           tirenv_diag *diag);
 

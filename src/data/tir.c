@@ -12,8 +12,16 @@
 /* The engine stores a NAME as an int. */
 _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must be int-sized");
 
-#define TIR_REAL(sec, name, member, text)                                                      \
-    TIRENV_PROPFILE_KEY(tirenv_tire, sec, name, TIRENV_PROPFILE_REAL, member, text)
+/* A real value and its dimension as exponents of length, force and angle (the [UNITS] a
+ * file states are converted to SI with them). */
+#define TIR_REAL(sec, name, member, L, F, A, text)                                             \
+    {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
+     .offset = offsetof(tirenv_tire, member), .comment = (text), .dim = {L, F, A}}
+/* A cam key: tracked in cam.given, for tirenv_tire_check_cam_keys. */
+#define TIR_CAM(sec, name, member, L, F, A, bit, text)                                         \
+    {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
+     .offset = offsetof(tirenv_tire, member), .comment = (text), .dim = {L, F, A},            \
+     .given = (bit)}
 #define TIR_COUNT(sec, name, member, text)                                                     \
     TIRENV_PROPFILE_KEY(tirenv_tire, sec, name, TIRENV_PROPFILE_COUNT, member, text)
 #define TIR_METHOD(sec, name, member, text)                                                    \
@@ -26,58 +34,58 @@ _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must b
 /* Every key tirenv reads, checks, accepts in --set and writes: one table instead of a chain of
  * string comparisons, so the reader, the writer and the error messages cannot drift apart. */
 static const tirenv_propfile__key tir_keys[] = {
-    TIRENV_PROPFILE_SI_UNITS,
-    TIR_REAL("DIMENSION", "UNLOADED_RADIUS", springs.R0,
+    TIRENV_PROPFILE_CONVERTED_UNITS,
+    TIR_REAL("DIMENSION", "UNLOADED_RADIUS", springs.R0, 1, 0, 0,
              "R0: free (unloaded) tire radius, m"),
-    TIR_REAL("VERTICAL", "VERTICAL_STIFFNESS", cam.c_z,
+    TIR_CAM("VERTICAL", "VERTICAL_STIFFNESS", cam.c_z, -1, 1, 0, TIRENV_CAM_C_Z,
              "cam: load / static deflection, N/m"),
-    TIR_REAL("CONTACT_PATCH", "Q_RA1", cam.q_ra1,
+    TIR_CAM("CONTACT_PATCH", "Q_RA1", cam.q_ra1, 0, 0, 0, TIRENV_CAM_Q_RA1,
              "cam: contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0))"),
-    TIR_REAL("CONTACT_PATCH", "Q_RA2", cam.q_ra2,
+    TIR_CAM("CONTACT_PATCH", "Q_RA2", cam.q_ra2, 0, 0, 0, TIRENV_CAM_Q_RA2,
              "cam: linear term of the contact half length"),
-    TIR_REAL("CONTACT_PATCH", "ELLIPS_SHIFT", cam.shift,
+    TIR_CAM("CONTACT_PATCH", "ELLIPS_SHIFT", cam.shift, 0, 0, 0, TIRENV_CAM_SHIFT,
              "cam: tandem base l_s = ELLIPS_SHIFT*2a"),
-    TIR_REAL("CONTACT_PATCH", "ELLIPS_LENGTH", cam.length,
+    TIR_CAM("CONTACT_PATCH", "ELLIPS_LENGTH", cam.length, 0, 0, 0, TIRENV_CAM_LENGTH,
              "cam: half length a_e = ELLIPS_LENGTH*R0"),
-    TIR_REAL("CONTACT_PATCH", "ELLIPS_HEIGHT", cam.height,
+    TIR_CAM("CONTACT_PATCH", "ELLIPS_HEIGHT", cam.height, 0, 0, 0, TIRENV_CAM_HEIGHT,
              "cam: half height b_e = ELLIPS_HEIGHT*R0"),
-    TIR_REAL("CONTACT_PATCH", "ELLIPS_ORDER", cam.order,
+    TIR_CAM("CONTACT_PATCH", "ELLIPS_ORDER", cam.order, 0, 0, 0, TIRENV_CAM_ORDER,
              "cam: super-ellipse exponent c_e, > 1"),
-    TIR_REAL("ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", springs.c_r,
+    TIR_REAL("ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", springs.c_r, -1, 1, -1,
              "c_r: radial stiffness per radian of tread, N/m/rad"),
-    TIR_REAL("ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", springs.c_b,
+    TIR_REAL("ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", springs.c_b, -1, 1, 1,
              "c_b: interradial (bending) stiffness, N*rad/m"),
-    TIR_REAL("ENVELOPING_SPRINGS", "SEGMENT_ANGLE", springs.phi,
+    TIR_REAL("ENVELOPING_SPRINGS", "SEGMENT_ANGLE", springs.phi, 0, 0, 1,
              "phi: width of the modelled tread segment, rad"),
-    TIR_REAL("ENVELOPING_SPRINGS", "ELEMENT_ANGLE", springs.dphi,
+    TIR_REAL("ENVELOPING_SPRINGS", "ELEMENT_ANGLE", springs.dphi, 0, 0, 1,
              "dphi: angle between adjacent radial elements, rad"),
-    TIR_REAL("ENVELOPING_RING", "TREAD_THICKNESS", ring.t_r,
+    TIR_REAL("ENVELOPING_RING", "TREAD_THICKNESS", ring.t_r, 1, 0, 0,
              "t_r: tread layer between belt and ground, m"),
-    TIR_REAL("ENVELOPING_RING", "BELT_BENDING_STIFFNESS", ring.EI,
+    TIR_REAL("ENVELOPING_RING", "BELT_BENDING_STIFFNESS", ring.EI, 2, 1, 0,
              "EI: bending stiffness of the belt, N*m^2"),
-    TIR_REAL("ENVELOPING_RING", "BELT_PRETENSION", ring.T,
+    TIR_REAL("ENVELOPING_RING", "BELT_PRETENSION", ring.T, 0, 1, 0,
              "T: belt tension from inflation, about p*b*R, N"),
-    TIR_REAL("ENVELOPING_RING", "FOUNDATION_STIFFNESS", ring.k_f,
+    TIR_REAL("ENVELOPING_RING", "FOUNDATION_STIFFNESS", ring.k_f, -2, 1, 0,
              "k_f: sidewall + air foundation per unit belt length, N/m^2"),
-    TIR_REAL("ENVELOPING_RING", "TREAD_STIFFNESS", ring.k_t,
+    TIR_REAL("ENVELOPING_RING", "TREAD_STIFFNESS", ring.k_t, -2, 1, 0,
              "k_t: tread brush stiffness per unit belt length, N/m^2"),
-    TIR_REAL("ENVELOPING_RING", "NODE_ANGLE", ring.dtheta,
+    TIR_REAL("ENVELOPING_RING", "NODE_ANGLE", ring.dtheta, 0, 0, 1,
              "dtheta: node spacing around the full circle, rad"),
-    TIR_REAL("ENVELOPING_RING", "LUG_COUNT", ring.lug_count,
+    TIR_REAL("ENVELOPING_RING", "LUG_COUNT", ring.lug_count, 0, 0, 0,
              "lugs around the circumference; 0 = smooth tread"),
-    TIR_REAL("ENVELOPING_RING", "LUG_FRACTION", ring.lug_fraction,
+    TIR_REAL("ENVELOPING_RING", "LUG_FRACTION", ring.lug_fraction, 0, 0, 0,
              "share of the circumference under lugs"),
-    TIR_REAL("ENVELOPING_RING", "LUG_GROOVE_RATIO", ring.lug_ratio,
+    TIR_REAL("ENVELOPING_RING", "LUG_GROOVE_RATIO", ring.lug_ratio, 0, 0, 0,
              "tread stiffness between lugs / on lugs"),
     TIR_METHOD("ENVELOPING_SOLVER", "METHOD", eq.method,
              "equilibrium iteration: 'newton', 'secant' or 'brent'"),
-    TIR_REAL("ENVELOPING_SOLVER", "FORCE_TOLERANCE", eq.eps_F,
+    TIR_REAL("ENVELOPING_SOLVER", "FORCE_TOLERANCE", eq.eps_F, 0, 1, 0,
              "eps_F: converged when |F_z - G_T| <= eps_F, N"),
-    TIR_REAL("ENVELOPING_SOLVER", "STEP_TOLERANCE", eq.eps_z,
+    TIR_REAL("ENVELOPING_SOLVER", "STEP_TOLERANCE", eq.eps_z, 1, 0, 0,
              "eps_z: converged also needs the last step |dz| <= eps_z, m"),
     TIR_COUNT("ENVELOPING_SOLVER", "MAX_ITERATIONS", eq.max_iter,
              "force evaluations allowed per position"),
-    TIR_REAL("ENVELOPING_SOLVER", "SECANT_STEP", eq.secant_dz,
+    TIR_REAL("ENVELOPING_SOLVER", "SECANT_STEP", eq.secant_dz, 1, 0, 0,
              "secant only: offset of the second starting point, m"),
 };
 
@@ -124,6 +132,8 @@ static const tirenv_propfile__schema tir_schema = {
     .size = sizeof(tirenv_tire),
     .check = tir_check,
     .preamble = tir_preamble,
+    .given_offset = offsetof(tirenv_tire, cam.given),
+    .given_mask = TIRENV_CAM_ALL,
 };
 
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)

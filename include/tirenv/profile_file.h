@@ -1,0 +1,76 @@
+/* tirenv: a ground profile from or to any road file tirenv knows (the convenience layer): CSV
+ * ("x_m,z_m"), ASAM OpenCRG (.crg) and TNO / Adams 2-D roads (.rdf), told apart by their
+ * content when read and by the file name's extension when written (docs/formats.md
+ * section 5). */
+#ifndef TIRENV_PROFILE_FILE_H
+#define TIRENV_PROFILE_FILE_H
+
+#include "tirenv/decls.h"
+#include <stddef.h>
+#include "tirenv/crg.h"
+#include "tirenv/error.h"
+#include "tirenv/profile.h"
+#include "tirenv/rdf.h"
+
+TIRENV_BEGIN_DECLS
+
+typedef enum {
+    TIRENV_PROFILE_CSV = 0,
+    TIRENV_PROFILE_CRG,
+    TIRENV_PROFILE_RDF
+} tirenv_profile_format;
+
+/* "csv", "crg", "rdf"; NULL for another value. */
+const char *tirenv_profile_format_name(tirenv_profile_format f);
+
+/* Which profile to take from a road file that holds more than one. */
+typedef struct {
+    tirenv_crg_track_spec crg;   /* OpenCRG: the track (v, m) and its border handling */
+    tirenv_rdf_side rdf_side;    /* RDF poly_line: left, right or their mean */
+} tirenv_profile_source;
+
+/* The reference line of a CRG (v = 0, the file's border options), the mean of an RDF. */
+tirenv_profile_source tirenv_profile_source_default(void);
+
+/* The format of size bytes of a file's start, by content: a CRG header ('*' comment lines,
+ * then $CT, $ROAD_CRG...), a TeimOrbit file ('$' / '!' comment lines, then a [BLOCK]), or
+ * else CSV. */
+tirenv_profile_format tirenv_profile_detect_memory(const void *data, size_t size);
+
+/* The same for a file (its first 64 KB); TIRENV_EIO if it cannot be read. */
+int tirenv_profile_detect(const char *path, tirenv_profile_format *f, tirenv_diag *diag);
+
+/* The format a file name's extension names (.csv, .crg, .rdf, any case); TIRENV_EINVAL for
+ * another name. */
+int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f);
+
+/* Reads path, of whatever format its content shows, as one profile: a CSV whole, a CRG's
+ * track (src->crg), an RDF road (src->rdf_side). src NULL means the defaults. Errors name
+ * file, line and field. *out is NULL on failure. */
+int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
+                             tirenv_profile **out, tirenv_diag *diag);
+
+/* Writes a profile as CSV: "x_m,z_m" and one row per vertex in the shortest form that reads
+ * back to the same doubles; comment (NULL for none) first as '#' lines. All or nothing. */
+int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const char *comment,
+                             tirenv_diag *diag);
+
+/* How tirenv_profile_write_file writes what the format leaves open. */
+typedef struct {
+    tirenv_crg_encoding crg_encoding;  /* default KDBI: binary doubles, exact */
+    double crg_u_increment;            /* m; 0: the profile's own even spacing */
+    double crg_half_width;             /* m: the profile is the long sections at -w and +w */
+    const char *comment;               /* NULL for none */
+} tirenv_profile_write_options;
+
+/* KDBI, increment 0, half width 0.5 m, no comment. */
+tirenv_profile_write_options tirenv_profile_write_default(void);
+
+/* Writes p in the format path's extension names (o NULL: the defaults): CSV, an RDF
+ * 'poly_line' road, or a CRG road whose width is uniform (two equal long sections at v =
+ * -crg_half_width and +crg_half_width). */
+int tirenv_profile_write_file(const char *path, const tirenv_profile *p,
+                              const tirenv_profile_write_options *o, tirenv_diag *diag);
+
+TIRENV_END_DECLS
+#endif

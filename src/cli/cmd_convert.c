@@ -1,0 +1,279 @@
+/* tirenv convert: a road from one file format to another (CSV, OpenCRG, TNO/Adams RDF).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "tirenv/crg.h"
+#include "tirenv/profile_file.h"
+#include "tirenv/rdf.h"
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv convert --profile IN -o OUT [--track V] [--side left|right|mean]\n"
+          "                      [--crg-encoding E] [--dx M] [--half-width M]\n"
+          "\n"
+          "Converts a road between profile CSV ('x_m,z_m'), ASAM OpenCRG (.crg) and TNO/Adams\n"
+          "2-D road (.rdf) files. IN's format is told by its content, OUT's by its extension\n"
+          "(.csv, .crg, .rdf; '-' writes CSV to standard output). From a .crg one track is\n"
+          "taken, the long section at --track (a .crg to a .crg without --track copies every\n"
+          "long section); a .crg is written with a straight reference line. A one-line\n"
+          "summary goes to standard error.\n"
+          "\n"
+          "options:\n"
+          "  --profile IN         road file to read: CSV, .crg or .rdf\n"
+          "  -o, --output OUT     file to write, complete or not at all\n"
+          "  --track V            .crg input: lateral position of the track, m, positive to\n"
+          "                       the left (default 0, the reference line)\n"
+          "  --side S             .rdf poly_line input: left, right or mean (default) of\n"
+          "                       its z_left and z_right\n"
+          "  --crg-encoding E     .crg output: kdbi (default: binary doubles, exact), krbi\n"
+          "                       (binary floats), ldfi or lrfi (text)\n"
+          "  --dx M               .crg output: resample every M m (default: the input's own\n"
+          "                       spacing, which must then be even)\n"
+          "  --half-width M       .crg output of one track: the road reaches M m to either\n"
+          "                       side, the same heights across (default 0.5)\n"
+          "  -h, --help           show this help\n",
+          fp);
+}
+
+typedef struct {
+    const char *in, *out;
+    int have_track;
+    tirenv_profile_source src;
+    tirenv_profile_write_options w;
+} convert;
+
+static int parse_track(void *dst, const char *arg)
+{
+    convert *cv = dst;
+    if (cli_parse_double(arg, &cv->src.crg.v)) {
+        cli_error("convert: --track expects a lateral position in m, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    cv->have_track = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_side(void *dst, const char *arg)
+{
+    if (tirenv_rdf_side_find(arg, dst)) {
+        cli_error("convert: --side expects left, right or mean, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_encoding(void *dst, const char *arg)
+{
+    if (tirenv_crg_encoding_find(arg, dst)) {
+        cli_error("convert: --crg-encoding expects kdbi, krbi, ldfi or lrfi, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* Returns an exit code, or CLI_GO_ON. */
+static int parse(int argc, char *argv[], convert *cv)
+{
+    const cli_opt own[] = {
+        {.name = "profile", .kind = CLI_STRING, .dst = &cv->in},
+        {.name = "track", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_track},
+        {.name = "side", .kind = CLI_CUSTOM, .dst = &cv->src.rdf_side, .parse = parse_side},
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &cv->w.crg_encoding,
+         .parse = parse_encoding},
+        {.name = "dx", .kind = CLI_POSITIVE, .dst = &cv->w.crg_u_increment,
+         .what = "a positive length in m"},
+        {.name = "half-width", .kind = CLI_POSITIVE, .dst = &cv->w.crg_half_width,
+         .what = "a positive length in m"},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "convert", .usage = usage, .opts = own, .groups = CLI_OUTPUT};
+    cli_options o;
+    const int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    cv->out = o.output;
+    if (!cv->in || !cv->out) {
+        cli_error("convert: expected %s; 'tirenv convert --help' shows the options",
+                  !cv->in ? "--profile IN" : "-o OUT");
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_GO_ON;
+}
+
+/* A .crg to a .crg without --track: every long section, row by row. */
+static int crg_copy(const tirenv_crg *crg, const convert *cv, tirenv_diag *diag)
+{
+    const size_t nv = tirenv_crg_long_sections(crg), nu = tirenv_crg_rows(crg);
+    double *v = malloc(nv * sizeof *v);
+    if (!v)
+        return tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
+    for (size_t j = 0; j < nv; j++)
+        v[j] = tirenv_crg_v(crg, j);
+    const tirenv_crg_layout layout = {
+        .encoding = cv->w.crg_encoding, .u_start = tirenv_crg_u_start(crg),
+        .u_increment = tirenv_crg_u_increment(crg), .rows = nu, .long_sections = nv, .v = v,
+        .comment = "Converted by tirenv convert: every long section, heights with the\n"
+                   "reference line's slope and banking, on a straight reference line."};
+    tirenv_crg_writer *w = NULL;
+    enum { BLOCK = 1024 };
+    double *z = malloc(BLOCK * nv * sizeof *z);
+    int status = z ? tirenv_crg_writer_open(cv->out, &layout, &w, diag)
+                   : tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
+    for (size_t i0 = 0; !status && i0 < nu; i0 += BLOCK) {
+        const size_t n = nu - i0 < BLOCK ? nu - i0 : BLOCK;
+        status = tirenv_crg_grid_rows(crg, i0, n, z, diag);
+        for (size_t k = 0; !status && k < n; k++)
+            status = tirenv_crg_writer_row(w, z + k * nv, diag);
+    }
+    free(z);
+    free(v);
+    if (status) {
+        tirenv_crg_writer_abort(w);
+        return status;
+    }
+    return tirenv_crg_writer_commit(w, diag);
+}
+
+/* The shortest "%.*g" that reads back to the same double, by bisection on the precision
+ * (reading back only improves with more digits). */
+static void shortest(char *buf, size_t n, double v)
+{
+    int lo = 1, hi = 17;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        snprintf(buf, n, "%.*g", mid, v);
+        if (strtod(buf, NULL) == v)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    snprintf(buf, n, "%.*g", lo, v);
+}
+
+/* A .crg track to CSV, a block of rows at a time, so a long road needs little memory. */
+static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
+                      tirenv_diag *diag)
+{
+    tirenv_crg_track_reader *r;
+    int status = tirenv_crg_track_reader_open(crg, &cv->src.crg, &r, diag);
+    if (status)
+        return status;
+    tirenv_outfile f;
+    if ((status = tirenv_outfile_open(&f, cv->out, diag))) {
+        tirenv_crg_track_reader_free(r);
+        return status;
+    }
+    char comment[160], v[32];
+    shortest(v, sizeof v, cv->src.crg.v);
+    snprintf(comment, sizeof comment, "track at v = %s m of an OpenCRG road (tirenv convert)", v);
+    tirenv_outfile_comment(&f, comment);
+    fputs("x_m,z_m\n", f.fp);
+    double u, z;
+    int got;
+    char a[32], b[32];
+    while (!(status = tirenv_crg_track_reader_next(r, &u, &z, &got, diag)) && got) {
+        shortest(a, sizeof a, u);
+        shortest(b, sizeof b, z);
+        fprintf(f.fp, "%s,%s\n", a, b);
+        range[2] = fmin(range[2], z);
+        range[3] = fmax(range[3], z);
+    }
+    tirenv_crg_track_reader_free(r);
+    if (status) {
+        tirenv_outfile_abort(&f);
+        return status;
+    }
+    range[0] = tirenv_crg_u_start(crg);
+    range[1] = tirenv_crg_u_end(crg);
+    return tirenv_outfile_commit(&f, diag);
+}
+
+static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, double range[4],
+                    tirenv_diag *diag)
+{
+    tirenv_crg *crg;
+    int status = tirenv_crg_open(cv->in, &crg, diag);
+    if (status)
+        return status;
+    *n = tirenv_crg_rows(crg);
+    if (to == TIRENV_PROFILE_CSV) {
+        status = crg_to_csv(crg, cv, range, diag);
+    } else if (to == TIRENV_PROFILE_CRG && !cv->have_track) {
+        range[0] = tirenv_crg_u_start(crg);
+        range[1] = tirenv_crg_u_end(crg);
+        status = crg_copy(crg, cv, diag);
+    } else {
+        tirenv_profile *p;
+        if (!(status = tirenv_crg_track(crg, &cv->src.crg, &p, diag))) {
+            status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
+            const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
+            range[0] = x[0];
+            range[1] = x[*n - 1];
+            for (size_t k = 0; k < *n; k++) {
+                range[2] = fmin(range[2], z[k]);
+                range[3] = fmax(range[3], z[k]);
+            }
+            tirenv_profile_free(p);
+        }
+    }
+    tirenv_crg_free(crg);
+    return status;
+}
+
+int cli_convert_main(int argc, char *argv[])
+{
+    convert cv = {.src = tirenv_profile_source_default(), .w = tirenv_profile_write_default()};
+    const int code = parse(argc, argv, &cv);
+    if (code != CLI_GO_ON)
+        return code;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_profile_format from, to = TIRENV_PROFILE_CSV;
+    if (strcmp(cv.out, "-") != 0 && tirenv_profile_format_of_name(cv.out, &to)) {
+        cli_error("convert: -o %s: unknown extension; expected .csv, .crg or .rdf", cv.out);
+        return CLI_EXIT_USAGE;
+    }
+    int status = tirenv_profile_detect(cv.in, &from, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    if (cv.have_track && from != TIRENV_PROFILE_CRG) {
+        cli_error("convert: --track applies to a .crg input; %s is %s", cv.in,
+                  from == TIRENV_PROFILE_RDF ? "an RDF road (use --side)" : "a CSV profile");
+        return CLI_EXIT_USAGE;
+    }
+    size_t n = 0;
+    double range[4] = {0, 0, INFINITY, -INFINITY};
+    if (from == TIRENV_PROFILE_CRG) {
+        status = from_crg(&cv, to, &n, range, &diag);
+    } else {
+        tirenv_profile *p;
+        if (!(status = tirenv_profile_read_file(cv.in, &cv.src, &p, &diag))) {
+            if (to == TIRENV_PROFILE_CSV)
+                status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
+            else
+                status = tirenv_profile_write_file(cv.out, p, &cv.w, &diag);
+            n = tirenv_profile_size(p);
+            const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
+            range[0] = x[0];
+            range[1] = x[n - 1];
+            for (size_t k = 0; k < n; k++) {
+                range[2] = fmin(range[2], z[k]);
+                range[3] = fmax(range[3], z[k]);
+            }
+            tirenv_profile_free(p);
+        }
+    }
+    if (status)
+        return cli_fail(status, &diag);
+    fprintf(stderr, "tirenv convert: %s (%s) -> %s (%s): %zu %s, x %g to %g m", cv.in,
+            tirenv_profile_format_name(from), cv.out, tirenv_profile_format_name(to), n,
+            from == TIRENV_PROFILE_CRG ? "rows" : "vertices", range[0], range[1]);
+    if (range[2] <= range[3])
+        fprintf(stderr, ", z %g to %g m", range[2], range[3]);
+    fputc('\n', stderr);
+    return CLI_EXIT_OK;
+}

@@ -1,0 +1,107 @@
+/* Private to the OpenCRG reader: the open file's parsed header and where its rows are, shared
+ * by the header parser (crg_header.c), the row reader (crg_rows.c) and the evaluation of
+ * tracks (crg.c). SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TIRENV_CRG_IMPL_H
+#define TIRENV_CRG_IMPL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "formats/source.h"
+#include "tirenv/crg.h"
+
+/* No such channel. */
+#define TIRENV_CRG__NONE SIZE_MAX
+
+/* Text data: the file position of every TIRENV_CRG__CHECKPOINT-th row, so that a window of
+ * rows is found without parsing the rows before it. */
+#define TIRENV_CRG__CHECKPOINT 1024
+
+/* The keys of $ROAD_CRG (the specification's table, in its order). */
+enum {
+    CRG_RL_START_U, CRG_RL_END_U, CRG_RL_INCREMENT,
+    CRG_LS_V_RIGHT, CRG_LS_V_LEFT, CRG_LS_V_INCREMENT,
+    CRG_RL_START_S, CRG_RL_END_S, CRG_RL_START_B, CRG_RL_END_B,
+    CRG_RL_START_X, CRG_RL_START_Y, CRG_RL_END_X, CRG_RL_END_Y,
+    CRG_RL_OFFSET_X, CRG_RL_OFFSET_Y,
+    CRG_RL_START_PHI, CRG_RL_END_PHI, CRG_RL_OFFSET_PHI,
+    CRG_RL_START_Z, CRG_RL_END_Z, CRG_RL_OFFSET_Z,
+    CRG_RL_START_LON, CRG_RL_START_LAT, CRG_RL_END_LON, CRG_RL_END_LAT,
+    CRG_RL_START_ALT, CRG_RL_END_ALT,
+    CRG_ROAD_KEYS
+};
+
+/* The keys of $ROAD_CRG_OPTS that tirenv applies; every other option of the specification is
+ * accepted and has no effect on a track (see crg_header.c). */
+enum {
+    CRG_OPT_BORDER_MODE_V, CRG_OPT_BORDER_OFFSET_V,
+    CRG_OPT_BORDER_SMOOTH_UBEG, CRG_OPT_BORDER_SMOOTH_UEND,
+    CRG_OPTS_USED
+};
+
+/* The keys of $ROAD_CRG_MODS that tirenv applies; the others are refused. */
+enum {
+    CRG_MOD_GRID_NAN_MODE, CRG_MOD_GRID_NAN_OFFSET, CRG_MOD_SCALE_Z_GRID,
+    CRG_MOD_REFLINE_ROTCENTER_X, CRG_MOD_REFLINE_ROTCENTER_Y, CRG_MOD_REFLINE_OFFSET_PHI,
+    CRG_MOD_REFLINE_OFFSET_X, CRG_MOD_REFLINE_OFFSET_Y, CRG_MOD_REFLINE_OFFSET_Z,
+    CRG_MODS_USED
+};
+
+/* A key's value and the line that set it (0: not set). */
+typedef struct {
+    double value;
+    size_t line;
+} tirenv_crg__value;
+
+struct tirenv_crg {
+    tirenv_source src;
+    tirenv_crg_encoding enc;
+    size_t header_lines;      /* lines up to and including the $$$$ line */
+    size_t data_offset;       /* byte offset of the road data */
+
+    tirenv_crg__value road[CRG_ROAD_KEYS];
+    tirenv_crg__value opts[CRG_OPTS_USED];
+    tirenv_crg__value mods[CRG_MODS_USED];
+    int has_mods;             /* a $ROAD_CRG_MODS section was present */
+
+    /* Channels: columns of a data row. */
+    size_t nch;
+    size_t ch_phi, ch_slope, ch_bank;  /* column, or TIRENV_CRG__NONE */
+    size_t kd_line_phi, kd_line_slope, kd_line_bank; /* their D: lines */
+    size_t nv;                /* long sections */
+    size_t *ch_z;             /* column of long section j */
+    size_t *kd_line_z;        /* its D: line */
+    double *v;                /* its lateral position, ascending, m */
+
+    /* Rows. */
+    size_t nu;
+    double u0, du;            /* u of row i = u0 + i*du, m */
+    size_t values_per_record; /* 20/10 binary, 8/4 text */
+    size_t value_size;        /* binary: 4 or 8 bytes */
+    size_t records_per_row;   /* text */
+    size_t *ckpt_off;         /* text: byte offset of row k*CHECKPOINT */
+    size_t *ckpt_line;        /* and its line */
+
+    /* The reference line's height at each row when it has a slope channel (else z0 + (u - u0)
+     * * s0), m; its banking when it has no banking channel. */
+    double *rz;
+    double z0, s0, b0;
+    double z_offset;          /* REFERENCE_LINE_OFFSET_Z + REFLINE_OFFSET_Z, m */
+};
+
+/* Parses the header from the start of c->src: sections, keys, channels, the end of header;
+ * fills everything above the rows. */
+int tirenv_crg__parse_header(tirenv_crg *c, tirenv_diag *diag);
+
+/* Works out the row count from the data block, checks every row once and fills the rows part
+ * (count, checkpoints, rz). Needs the header. */
+int tirenv_crg__scan(tirenv_crg *c, tirenv_diag *diag);
+
+/* The raw values of count rows from row first, nch per row, into vals (NaN where missing). */
+int tirenv_crg__read_rows(const tirenv_crg *c, size_t first, size_t count, double vals[],
+                          tirenv_diag *diag);
+
+/* The name a message gives channel col ("long section 3 (v = -0.5 m)", "slope"). */
+const char *tirenv_crg__channel_name(const tirenv_crg *c, size_t col, char *buf, size_t n);
+
+#endif

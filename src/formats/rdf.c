@@ -1,0 +1,541 @@
+/* TNO / Adams 2-D road files (TeimOrbit: [BLOCK]s of KEY = value, (SUB_BLOCK)s, {table}
+ * headers, '$' and '!' comments): 'poly_line', 'plank' and 'flat' roads read as a profile
+ * (docs/formats.md section 5). SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/rdf.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "data/units.h"
+#include "formats/source.h"
+
+static const char *const side_names[] = {"mean", "left", "right"};
+
+const char *tirenv_rdf_side_name(tirenv_rdf_side side)
+{
+    return (unsigned)side < 3 ? side_names[side] : NULL;
+}
+
+int tirenv_rdf_side_find(const char *name, tirenv_rdf_side *side)
+{
+    for (int k = 0; k < 3; k++)
+        if (name && strcasecmp(name, side_names[k]) == 0) {
+            *side = (tirenv_rdf_side)k;
+            return TIRENV_OK;
+        }
+    return TIRENV_EINVAL;
+}
+
+/* The numeric road keys, read from [PARAMETERS] or [MODEL] (files put a plank's keys in
+ * either). */
+enum { K_OFFSET, K_ROTATION, K_MU, K_HEIGHT, K_START, K_LENGTH, K_BEVEL, K_DIRECTION,
+       K_EDGE_ROUNDED, K_MU_CLEAT, N_KEYS };
+static const char *const key_names[N_KEYS] = {
+    "OFFSET", "ROTATION_ANGLE_XY_PLANE", "MU", "HEIGHT", "START", "LENGTH",
+    "BEVEL_EDGE_LENGTH", "DIRECTION", "EDGE_ROUNDED", "MU_FACTOR_CLEAT",
+};
+
+typedef struct {
+    double value;
+    size_t line;
+} setting;
+
+typedef enum { B_OTHER, B_HEADER, B_UNITS, B_MODEL, B_PARAMETERS } block;
+
+typedef struct {
+    const tirenv_source *src;
+    tirenv_diag *diag;
+    size_t line;
+    const char *base;
+    block blk;
+    int in_xz;                 /* rows of (XZ_DATA) follow */
+    size_t xz_line;
+    setting keys[N_KEYS];
+    setting unit[TIRENV_UNIT_KINDS]; /* value: factor to SI */
+    char method[16], road_type[24];
+    size_t method_line, road_type_line;
+    double *x, *zl, *zr;       /* (XZ_DATA), file units */
+    size_t *row_line;
+    size_t n, cap;
+} rdf;
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
+static int fail(const rdf *r, const char *at, const char *field, const char *fmt, ...)
+{
+    char msg[sizeof ((tirenv_diag *)NULL)->message];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->src->name, r->line, field, "%s",
+                                    msg);
+    if (r->diag && at && r->base)
+        r->diag->column = (size_t)(at - r->base) + 1;
+    return status;
+}
+
+static char *trim(char *s)
+{
+    while (isspace((unsigned char)*s))
+        s++;
+    size_t n = strlen(s);
+    while (n > 0 && isspace((unsigned char)s[n - 1]))
+        s[--n] = '\0';
+    return s;
+}
+
+/* '$' and '!' start a comment, except inside a quoted string. */
+static void strip_comment(char *s)
+{
+    int quoted = 0;
+    for (; *s; s++) {
+        if (*s == '\'')
+            quoted = !quoted;
+        else if ((*s == '$' || *s == '!') && !quoted) {
+            *s = '\0';
+            return;
+        }
+    }
+}
+
+/* A quoted string's contents, or a bare word; *out points into value (modified). */
+static int string_value(const rdf *r, char *value, const char *key, char **out)
+{
+    if (value[0] == '\'') {
+        char *close = strchr(value + 1, '\'');
+        if (!close)
+            return fail(r, value, key, "unterminated string; expected a closing '");
+        if (*trim(close + 1))
+            return fail(r, close + 1, key, "unexpected '%.40s' after the string", close + 1);
+        *close = '\0';
+        *out = trim(value + 1);
+        return TIRENV_OK;
+    }
+    if (!*value)
+        return fail(r, value, key, "missing value after '='");
+    *out = value;
+    return TIRENV_OK;
+}
+
+static int number_value(const rdf *r, char *value, const char *key, double *out)
+{
+    char *end;
+    const double v = strtod(value, &end);
+    if (end == value)
+        return fail(r, value, key, "expected a number, got '%.40s'", value);
+    if (*end) {
+        const char *junk = end + strspn(end, " \t");
+        return fail(r, junk, key, "unexpected '%.40s' after the number %.*s; expected only a "
+                    "number", junk, (int)(end - value), value);
+    }
+    if (!isfinite(v))
+        return fail(r, value, key, "expected a finite number, got '%.40s'", value);
+    *out = v;
+    return TIRENV_OK;
+}
+
+static int set_once(const rdf *r, setting *s, const char *key, const char *at, double v)
+{
+    if (s->line)
+        return fail(r, at, key, "set twice (first on line %zu); expected each key once",
+                    s->line);
+    s->value = v;
+    s->line = r->line;
+    return TIRENV_OK;
+}
+
+static int units_key(rdf *r, const char *key, char *value)
+{
+    for (int k = 0; k < TIRENV_UNIT_KINDS; k++) {
+        if (strcasecmp(key, tirenv_units__key((tirenv_unit_kind)k)) != 0)
+            continue;
+        char *name = NULL;
+        int status = string_value(r, value, key, &name);
+        if (status)
+            return status;
+        double f;
+        if (tirenv_units__factor((tirenv_unit_kind)k, name, &f) != TIRENV_OK) {
+            char list[512];
+            return fail(r, name, tirenv_units__key((tirenv_unit_kind)k), "unknown unit "
+                        "'%.30s'; expected one of %s", name,
+                        tirenv_units__list((tirenv_unit_kind)k, list, sizeof list));
+        }
+        return set_once(r, &r->unit[k], tirenv_units__key((tirenv_unit_kind)k), name, f);
+    }
+    return fail(r, key, key, "unknown key in [UNITS]; expected LENGTH, FORCE, ANGLE, MASS, "
+                "TIME or PRESSURE");
+}
+
+static int copy_name(const rdf *r, char *value, const char *key, char *dst, size_t n,
+                     size_t *line)
+{
+    char *s = NULL;
+    const int status = string_value(r, value, key, &s);
+    if (status)
+        return status;
+    if (*line)
+        return fail(r, value, key, "set twice (first on line %zu); expected each key once",
+                    *line);
+    snprintf(dst, n, "%s", s);
+    *line = r->line;
+    return TIRENV_OK;
+}
+
+static int key_line(rdf *r, char *text)
+{
+    char *eq = strchr(text, '=');
+    if (!eq)
+        return fail(r, text, "", "unexpected '%.40s'; expected KEY = value, a [BLOCK] or a "
+                    "(SUB_BLOCK)", text);
+    *eq = '\0';
+    char *key = trim(text), *value = trim(eq + 1);
+    if (!*key)
+        return fail(r, eq, "", "missing key before '='");
+    switch (r->blk) {
+    case B_OTHER:
+        return TIRENV_OK;
+    case B_HEADER:
+        if (strcasecmp(key, "FILE_TYPE") == 0) {
+            char *type;
+            const int status = string_value(r, value, key, &type);
+            if (status)
+                return status;
+            if (strcasecmp(type, "rdf") != 0)
+                return fail(r, type, "FILE_TYPE", "'%.20s' is not a road file; expected "
+                            "'rdf'", type);
+        }
+        return TIRENV_OK;
+    case B_UNITS:
+        return units_key(r, key, value);
+    case B_MODEL:
+        if (strcasecmp(key, "METHOD") == 0)
+            return copy_name(r, value, "METHOD", r->method, sizeof r->method, &r->method_line);
+        if (strcasecmp(key, "ROAD_TYPE") == 0)
+            return copy_name(r, value, "ROAD_TYPE", r->road_type, sizeof r->road_type,
+                             &r->road_type_line);
+        break;
+    case B_PARAMETERS:
+        if (r->in_xz)
+            return fail(r, key, key, "KEY = value inside (XZ_DATA); expected rows of x, z_left "
+                        "and z_right");
+        break;
+    }
+    for (int k = 0; k < N_KEYS; k++)
+        if (strcasecmp(key, key_names[k]) == 0) {
+            double v = 0;
+            const int status = number_value(r, value, key_names[k], &v);
+            return status ? status : set_once(r, &r->keys[k], key_names[k], key, v);
+        }
+    if (r->blk == B_MODEL)
+        return TIRENV_OK; /* other programs' model settings */
+    return fail(r, key, key, "unknown key in [PARAMETERS]; expected OFFSET, "
+                "ROTATION_ANGLE_XY_PLANE, MU, the plank's HEIGHT, START, LENGTH, "
+                "BEVEL_EDGE_LENGTH, DIRECTION, or the (XZ_DATA) table");
+}
+
+static int xz_row(rdf *r, char *text)
+{
+    double v[3];
+    char *p = text;
+    for (int k = 0; k < 4; k++) {
+        while (*p == ' ' || *p == '\t' || *p == ',')
+            p++;
+        if (k == 3) {
+            if (*p)
+                return fail(r, p, "XZ_DATA", "unexpected '%.40s' after three numbers; expected "
+                            "rows of x, z_left, z_right", p);
+            break;
+        }
+        static const char *const col[3] = {"x", "z_left", "z_right"};
+        if (!*p)
+            return fail(r, p, "XZ_DATA", "missing %s; expected rows of x, z_left, z_right",
+                        col[k]);
+        char *end;
+        v[k] = strtod(p, &end);
+        if (end == p || !isfinite(v[k]) || (*end && !strchr(" \t,", *end)))
+            return fail(r, p, "XZ_DATA", "%s: expected a finite number, got '%.*s'", col[k],
+                        (int)(strcspn(p, " \t,") < 30 ? strcspn(p, " \t,") : 30), p);
+        p = end;
+    }
+    if (r->n == r->cap) {
+        const size_t cap = r->cap ? 2 * r->cap : 64;
+        double *x = realloc(r->x, cap * sizeof *x);
+        if (x)
+            r->x = x;
+        double *zl = x ? realloc(r->zl, cap * sizeof *zl) : NULL;
+        if (zl)
+            r->zl = zl;
+        double *zr = zl ? realloc(r->zr, cap * sizeof *zr) : NULL;
+        if (zr)
+            r->zr = zr;
+        size_t *ln = zr ? realloc(r->row_line, cap * sizeof *ln) : NULL;
+        if (ln)
+            r->row_line = ln;
+        if (!ln)
+            return tirenv_error(r->diag, TIRENV_ENOMEM, r->src->name, r->line, "",
+                                "out of memory");
+        r->cap = cap;
+    }
+    r->x[r->n] = v[0];
+    r->zl[r->n] = v[1];
+    r->zr[r->n] = v[2];
+    r->row_line[r->n] = r->line;
+    r->n++;
+    return TIRENV_OK;
+}
+
+static block block_of(const char *name)
+{
+    return strcasecmp(name, "MDI_HEADER") == 0   ? B_HEADER
+           : strcasecmp(name, "UNITS") == 0      ? B_UNITS
+           : strcasecmp(name, "MODEL") == 0      ? B_MODEL
+           : strcasecmp(name, "PARAMETERS") == 0 ? B_PARAMETERS
+                                                  : B_OTHER;
+}
+
+static int bracketed(rdf *r, char *text, char close, char **name)
+{
+    char *end = strchr(text, close);
+    if (!end)
+        return fail(r, text, "", "unterminated '%c'; expected '%c'", text[0], close);
+    const char *rest = trim(end + 1);
+    if (*rest)
+        return fail(r, rest, "", "unexpected '%.40s' after '%c'", rest, close);
+    *end = '\0';
+    *name = trim(text + 1);
+    return TIRENV_OK;
+}
+
+static int line_of(rdf *r, char *text)
+{
+    strip_comment(text);
+    text = trim(text);
+    if (!*text)
+        return TIRENV_OK;
+    char *name = NULL;
+    int status;
+    if (text[0] == '[') {
+        if ((status = bracketed(r, text, ']', &name)))
+            return status;
+        r->blk = block_of(name);
+        r->in_xz = 0;
+        return TIRENV_OK;
+    }
+    if (text[0] == '(') {
+        if ((status = bracketed(r, text, ')', &name)))
+            return status;
+        r->in_xz = r->blk == B_PARAMETERS && strcasecmp(name, "XZ_DATA") == 0;
+        if (r->in_xz && r->xz_line)
+            return fail(r, name, "XZ_DATA", "(XZ_DATA) given twice (first on line %zu)",
+                        r->xz_line);
+        if (r->in_xz)
+            r->xz_line = r->line;
+        return TIRENV_OK;
+    }
+    if (text[0] == '{' || r->blk == B_OTHER)
+        return TIRENV_OK; /* a table's column names; another program's block */
+    if (r->in_xz && !strchr(text, '='))
+        return xz_row(r, text);
+    return key_line(r, text);
+}
+
+/* ---- the road ------------------------------------------------------------------------- */
+
+static int need_unit(rdf *r, tirenv_unit_kind kind, const char *why, double *f)
+{
+    if (r->unit[kind].line) {
+        *f = r->unit[kind].value;
+        return TIRENV_OK;
+    }
+    r->line = 0;
+    return fail(r, NULL, tirenv_units__key(kind), "no [UNITS] %s; expected it for %s",
+                tirenv_units__key(kind), why);
+}
+
+static int profile_of(rdf *r, size_t n, const double x[], const double z[],
+                      const size_t line[], tirenv_profile **out)
+{
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    if (tirenv_profile_validate(n, x, z, &d) != TIRENV_OK) {
+        r->line = line && d.line >= 1 && d.line <= n ? line[d.line - 1] : 0;
+        return fail(r, NULL, line ? "XZ_DATA" : "", "%s", d.message);
+    }
+    if (!(*out = tirenv_profile_alloc(n, x, z)))
+        return tirenv_error(r->diag, TIRENV_ENOMEM, r->src->name, 0, "", "out of memory");
+    return TIRENV_OK;
+}
+
+static int poly_line(rdf *r, tirenv_rdf_side side, double f, double offset, tirenv_profile **out)
+{
+    if (!r->xz_line || r->n == 0) {
+        r->line = r->xz_line ? r->xz_line : r->road_type_line;
+        return fail(r, NULL, "XZ_DATA", "ROAD_TYPE 'poly_line' without %s; expected rows of "
+                    "x, z_left, z_right in [PARAMETERS] (XZ_DATA)",
+                    r->xz_line ? "rows in (XZ_DATA)" : "an (XZ_DATA) table");
+    }
+    double *x = malloc(r->n * sizeof *x), *z = malloc(r->n * sizeof *z);
+    int status = TIRENV_OK;
+    if (!x || !z)
+        status = tirenv_error(r->diag, TIRENV_ENOMEM, r->src->name, 0, "", "out of memory");
+    for (size_t k = 0; !status && k < r->n; k++) {
+        const double zs = side == TIRENV_RDF_LEFT    ? r->zl[k]
+                          : side == TIRENV_RDF_RIGHT ? r->zr[k]
+                                                     : 0.5 * (r->zl[k] + r->zr[k]);
+        x[k] = f * r->x[k];
+        z[k] = f * (zs + offset);
+    }
+    if (!status)
+        status = profile_of(r, r->n, x, z, r->row_line, out);
+    free(x);
+    free(z);
+    return status;
+}
+
+/* A plank across the road (DIRECTION 0) from START, LENGTH long along x including its 45-degree
+ * bevel edges of BEVEL_EDGE_LENGTH along x at its top corners; a negative HEIGHT mirrors it
+ * into a depression. */
+static int plank(rdf *r, double f, double offset, tirenv_profile **out)
+{
+    const int req[] = {K_HEIGHT, K_START, K_LENGTH};
+    for (size_t k = 0; k < 3; k++)
+        if (!r->keys[req[k]].line) {
+            r->line = r->road_type_line;
+            return fail(r, NULL, key_names[req[k]], "ROAD_TYPE 'plank' needs %s in "
+                        "[PARAMETERS]; expected HEIGHT, START and LENGTH", key_names[req[k]]);
+        }
+    const double H = r->keys[K_HEIGHT].value, S = r->keys[K_START].value;
+    const double L = r->keys[K_LENGTH].value, b = r->keys[K_BEVEL].value;
+    if (r->keys[K_DIRECTION].value != 0) {
+        r->line = r->keys[K_DIRECTION].line;
+        return fail(r, NULL, "DIRECTION", "%.17g: an oblique plank meets each wheel track at "
+                    "another x, and a 2-D profile is one track; expected 0 (a plank across "
+                    "the road)", r->keys[K_DIRECTION].value);
+    }
+    if (r->keys[K_EDGE_ROUNDED].value != 0) {
+        r->line = r->keys[K_EDGE_ROUNDED].line;
+        return fail(r, NULL, "EDGE_ROUNDED", "rounded plank edges are not supported; expected "
+                    "0 (45-degree bevel edges)");
+    }
+    const struct { int key; int bad; const char *want; } checks[] = {
+        {K_LENGTH, !(L > 0), "a positive length"},
+        {K_BEVEL, !(b >= 0), "a length >= 0"},
+        {K_BEVEL, !(2 * b <= L), "at most half of LENGTH (a bevel at each edge)"},
+        {K_BEVEL, !(b <= fabs(H)), "at most |HEIGHT| (a 45-degree bevel cannot rise higher)"},
+    };
+    for (size_t k = 0; k < sizeof checks / sizeof checks[0]; k++)
+        if (checks[k].bad) {
+            r->line = r->keys[checks[k].key].line;
+            return fail(r, NULL, key_names[checks[k].key], "%.17g; expected %s",
+                        r->keys[checks[k].key].value, checks[k].want);
+        }
+    const double s = H < 0 ? -1 : 1, shoulder = s * (fabs(H) - b);
+    const double px[] = {S, S, S + b, S + L - b, S + L, S + L};
+    const double pz[] = {0, shoulder, H, H, shoulder, 0};
+    double x[6], z[6];
+    size_t n = 0;
+    for (size_t k = 0; k < 6; k++) {
+        if (n > 0 && px[k] == px[k - 1] && pz[k] == pz[k - 1])
+            continue; /* a corner that a zero bevel or a full bevel removes */
+        x[n] = f * px[k];
+        z[n] = f * (pz[k] + offset);
+        n++;
+    }
+    return profile_of(r, n, x, z, NULL, out);
+}
+
+static int road(rdf *r, tirenv_rdf_side side, tirenv_profile **out)
+{
+    r->base = NULL;
+    if (!r->method_line || !r->road_type_line) {
+        r->line = r->method_line ? r->method_line : r->road_type_line;
+        return fail(r, NULL, r->method_line ? "ROAD_TYPE" : "METHOD", "missing in [MODEL]; "
+                    "expected METHOD = '2D' and ROAD_TYPE");
+    }
+    if (strcasecmp(r->method, "2D") != 0) {
+        r->line = r->method_line;
+        return fail(r, NULL, "METHOD", "'%s': tirenv reads 2-D roads; expected '2D'",
+                    r->method);
+    }
+    double f = 1;
+    const int status = need_unit(r, TIRENV_UNIT_LENGTH, "the road's lengths", &f);
+    if (status)
+        return status;
+    const double offset = r->keys[K_OFFSET].value;
+    if (strcasecmp(r->road_type, "poly_line") == 0)
+        return poly_line(r, side, f, offset, out);
+    if (strcasecmp(r->road_type, "plank") == 0)
+        return plank(r, f, offset, out);
+    if (strcasecmp(r->road_type, "flat") == 0) {
+        const double x = 0, z = f * offset;
+        return profile_of(r, 1, &x, &z, NULL, out);
+    }
+    r->line = r->road_type_line;
+    return fail(r, NULL, "ROAD_TYPE", "'%s' is not supported; expected 'poly_line', 'plank' "
+                "or 'flat'", r->road_type);
+}
+
+static int read_source(const tirenv_source *src, tirenv_rdf_side side, tirenv_profile **out,
+                       tirenv_diag *diag)
+{
+    if (!tirenv_rdf_side_name(side))
+        return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
+                            (int)side);
+    rdf r = {.src = src, .diag = diag};
+    tirenv_lines lines;
+    int status = tirenv_lines__init(&lines, src, 0, 1, diag);
+    if (status)
+        return status;
+    int got;
+    while (!status && (got = tirenv_lines__next(&lines, diag)) > 0) {
+        r.line = lines.line;
+        char *text = lines.text;
+        if (r.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
+            text += 3;
+        r.base = text;
+        status = line_of(&r, text);
+    }
+    if (!status && got < 0)
+        status = -got;
+    tirenv_lines__free(&lines);
+    if (!status)
+        status = road(&r, side, out);
+    free(r.x);
+    free(r.zl);
+    free(r.zr);
+    free(r.row_line);
+    return status;
+}
+
+int tirenv_rdf_read(const char *path, tirenv_rdf_side side, tirenv_profile **out,
+                    tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_source src;
+    int status = tirenv_source__open_file(&src, path, diag);
+    if (status)
+        return status;
+    status = read_source(&src, side, out, diag);
+    tirenv_source__close(&src);
+    return status;
+}
+
+int tirenv_rdf_read_memory(const void *data, size_t size, const char *name,
+                           tirenv_rdf_side side, tirenv_profile **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_source src;
+    int status = tirenv_source__open_memory(&src, data, size, name, diag);
+    if (status)
+        return status;
+    status = read_source(&src, side, out, diag);
+    tirenv_source__close(&src);
+    return status;
+}
