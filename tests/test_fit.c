@@ -12,15 +12,16 @@ enum { N_CASES = 6, N_POINTS = 61 };
 
 /* Curves of the springs model at known c_r, c_b over cleats, on an x_N grid like the data
  * set's, with Gaussian noise sigma on h: what a rig would have measured of that tire. */
-static void make_dataset(tirenv_dataset *ds, tirenv_case cases[], const tirenv_tire *truth,
-                         double sigma, unsigned long seed)
+static void make_dataset_of(const tirenv_model_type *type, tirenv_dataset *ds,
+                            tirenv_case cases[], const tirenv_tire *truth, double sigma,
+                            unsigned long seed)
 {
     static const double design[N_CASES][3] = {{0.28, 0.10, 0.05}, {0.33, 0.30, 0.075},
                                               {0.38, 0.15, 0.10}, {0.43, 0.05, 0.025},
                                               {0.33, 0.20, 0.05}, {0.38, 0.30, 0.025}};
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, seed);
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, truth);
+    tirenv_model *m = tirenv_model_alloc(type, truth);
     memset(ds, 0, sizeof *ds);
     ds->n = N_CASES;
     ds->cases = cases;
@@ -47,6 +48,12 @@ static void make_dataset(tirenv_dataset *ds, tirenv_case cases[], const tirenv_t
     }
     tirenv_model_free(m);
     gsl_rng_free(rng);
+}
+
+static void make_dataset(tirenv_dataset *ds, tirenv_case cases[], const tirenv_tire *truth,
+                         double sigma, unsigned long seed)
+{
+    make_dataset_of(tirenv_model_springs, ds, cases, truth, sigma, seed);
 }
 
 static void free_dataset(tirenv_case cases[])
@@ -113,9 +120,47 @@ static void test_refuses_empty_split(void **state)
     free_dataset(cases);
 }
 
+/* A fit the data drive to a bound says so: curves of a cam of ELLIPS_ORDER 1.002, just above
+ * the bound 1 of a convex cam, pull the fitted order from 1.5 down to within 1 % of 1, and
+ * the report flags it (and only it); curves of a cam of order 1.6 leave every parameter
+ * inside. The fitted order is also checked against the truth, so the flag is not a fit
+ * that merely wandered. */
+static void test_reports_bound(void **state)
+{
+    (void)state;
+    static const double order[2] = {1.002, 1.6};
+    for (int k = 0; k < 2; ++k) {
+        tirenv_tire truth = tirenv_tire_default();
+        truth.cam.order = order[k];
+        static tirenv_case cases[N_CASES];
+        tirenv_dataset ds;
+        make_dataset_of(tirenv_model_cam, &ds, cases, &truth, 0, 7);
+        tirenv_tire tire = truth;
+        tire.cam.order = 1.5;
+        tire.cam.height *= 1.2;
+        tirenv_fit_settings s = tirenv_fit_default();
+        s.type = tirenv_model_cam;
+        tirenv_fit_report rep;
+        tirenv_diag diag;
+        assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag),
+                         TIRENV_OK);
+        print_message("truth ELLIPS_ORDER %.4g: fitted %.6g (flag %d), rms %.3g mm\n",
+                      order[k], rep.value[3], rep.at_bound[3], 1e3 * rep.rms);
+        assert_int_equal(rep.n_params, 4);
+        assert_string_equal(rep.names[3], "ELLIPS_ORDER");
+        assert_near(rep.value[3], order[k], 1e-3, 0);
+        assert_int_equal(rep.at_bound[3], k == 0 ? -1 : 0);
+        assert_true(rep.bound[3] == 1.0);
+        for (size_t i = 0; i < 3; ++i)
+            assert_int_equal(rep.at_bound[i], 0);
+        free_dataset(cases);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_reports_bound),
         cmocka_unit_test(test_recovers_known_parameters),
         cmocka_unit_test(test_refuses_empty_split),
     };

@@ -68,26 +68,74 @@ static void fill_inputs(gsl_rng *rng, size_t n, size_t n_in, double x[])
         x[k] = 2.385 * (gsl_rng_uniform(rng) - 0.5) + 0.1 * (double)(k % n_in);
 }
 
-/* The plain definition: scaled inputs, libm's exp, sums in any order. */
+/* The plain definition: the features (sqrt((1 - x_N)^2 + a^2) - a for the even input), scaled,
+ * libm's exp,
+ * sums in any order, the mean over the members, times H for the h/H target. */
 static double reference_run(const tirenv_nn *nn, const double x[])
 {
     const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
     const double *w = tirenv_nn_weights_const(nn);
+    const size_t K = tirenv_nn_n_members(nn), per = tirenv_nn_n_weights(nn) / K;
     double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], out_mean, out_std;
     double a[TIRENV_NN_MAX_WIDTH], b[TIRENV_NN_MAX_WIDTH];
+    tirenv_nn_input_form in;
+    tirenv_nn_target_form target;
     tirenv_nn_get_scaling(nn, mean, std, &out_mean, &out_std);
-    for (size_t i = 0; i < t->size[0]; ++i)
-        a[i] = (x[i] - mean[i]) / std[i];
-    for (size_t l = 1; l < t->n_layers; ++l) {
-        for (size_t j = 0; j < t->size[l]; ++j) {
-            double net = w[tirenv_nn_weight_index(nn, l, 0, j)];
-            for (size_t i = 0; i < t->size[l - 1]; ++i)
-                net += w[tirenv_nn_weight_index(nn, l, 1 + i, j)] * a[i];
-            b[j] = l + 1 < t->n_layers ? 1 / (1 + exp(-net)) : net;
+    tirenv_nn_get_form(nn, &in, &target);
+    double sum = 0;
+    for (size_t k = 0; k < K; ++k) {
+        for (size_t i = 0; i < t->size[0]; ++i) {
+            const double width = tirenv_nn_get_even_width(nn);
+            const double f = in == TIRENV_NN_INPUT_EVEN && i == 0
+                                 ? hypot(1 - x[0], width) - width
+                                 : x[i];
+            a[i] = (f - mean[i]) / std[i];
         }
-        memcpy(a, b, t->size[l] * sizeof a[0]);
+        for (size_t l = 1; l < t->n_layers; ++l) {
+            for (size_t j = 0; j < t->size[l]; ++j) {
+                double net = w[k * per + tirenv_nn_weight_index(nn, l, 0, j)];
+                for (size_t i = 0; i < t->size[l - 1]; ++i)
+                    net += w[k * per + tirenv_nn_weight_index(nn, l, 1 + i, j)] * a[i];
+                b[j] = l + 1 < t->n_layers ? 1 / (1 + exp(-net)) : net;
+            }
+            memcpy(a, b, t->size[l] * sizeof a[0]);
+        }
+        sum += a[0];
     }
-    return out_mean + out_std * a[0];
+    const double y = out_mean + out_std * sum / (double)K;
+    return target == TIRENV_NN_TARGET_H_OVER_H ? y * x[TIRENV_NN_HEIGHT] : y;
+}
+
+/* The variants of the enveloping model's network: members, input form, target form. */
+typedef struct {
+    size_t members;
+    tirenv_nn_input_form input;
+    tirenv_nn_target_form target;
+} variant;
+
+static const variant variants[] = {
+    {1, TIRENV_NN_INPUT_EVEN, TIRENV_NN_TARGET_H},
+    {3, TIRENV_NN_INPUT_PAPER, TIRENV_NN_TARGET_H_OVER_H},
+    {5, TIRENV_NN_INPUT_EVEN, TIRENV_NN_TARGET_H_OVER_H},
+};
+enum { N_VARIANTS = sizeof variants / sizeof variants[0] };
+
+/* A network of topology t with the variant's members (each from its own seed, through
+ * make_net, so they share scaling) and forms. */
+static tirenv_nn *make_variant(const tirenv_nn_topology *t, const variant *v,
+                               unsigned long seed)
+{
+    tirenv_nn *nets[8];
+    assert_true(v->members <= 8);
+    for (size_t k = 0; k < v->members; ++k) {
+        nets[k] = make_net(t, seed + 1000 * k);
+        assert_int_equal(tirenv_nn_set_form(nets[k], v->input, v->target, NULL), TIRENV_OK);
+    }
+    tirenv_nn *e = tirenv_nn_ensemble((const tirenv_nn *const *)nets, v->members);
+    assert_non_null(e);
+    for (size_t k = 0; k < v->members; ++k)
+        tirenv_nn_free(nets[k]);
+    return e;
 }
 
 static void test_topology(void **state)
@@ -387,6 +435,212 @@ static void test_envelope(void **state)
     tirenv_nn_free(three);
 }
 
+
+/* Every variant (ensembles, the even input, the h/H target) against the plain definition,
+ * batch against single samples to the bit, back-propagation against central differences. */
+static void test_variants(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 19);
+    const tirenv_nn_topology *t4[] = {&topologies[0], &topologies[1]};
+    for (size_t k = 0; k < 2; ++k)
+        for (size_t v = 0; v < N_VARIANTS; ++v) {
+            tirenv_nn *nn = make_variant(t4[k], &variants[v], 600 + 10 * k + v);
+            assert_int_equal(tirenv_nn_n_members(nn), variants[v].members);
+            const size_t n = 130, p = tirenv_nn_n_weights(nn);
+            double x[130 * 4], y[130], *grad = malloc(p * sizeof *grad);
+            double *w = tirenv_nn_weights(nn);
+            fill_inputs(rng, n, 4, x);
+            for (size_t s = 0; s < n; ++s)  /* H > 0, as the h/H target needs */
+                x[s * 4 + TIRENV_NN_HEIGHT] = 0.02 + 0.1 * gsl_rng_uniform(rng);
+            tirenv_nn_run_batch(nn, n, x, y);
+            for (size_t s = 0; s < n; ++s) {
+                const double single = tirenv_nn_run(nn, x + 4 * s);
+                assert_memory_equal(&y[s], &single, sizeof single);
+                assert_near(single, reference_run(nn, x + 4 * s), REF_TOL * 0.0271, REF_TOL);
+            }
+            for (size_t s = 0; s < 3; ++s) {
+                const double *xs = x + 4 * s;
+                assert_true(tirenv_nn_gradient(nn, xs, grad) == tirenv_nn_run(nn, xs));
+                for (size_t j = 0; j < p; ++j) {
+                    const double w0 = w[j], h = 1e-6 * fmax(1.0, fabs(w0));
+                    w[j] = w0 + h;
+                    const double yp = tirenv_nn_run(nn, xs);
+                    w[j] = w0 - h;
+                    const double ym = tirenv_nn_run(nn, xs);
+                    w[j] = w0;
+                    assert_near(grad[j], (yp - ym) / (2 * h), FD_ABS, FD_REL);
+                }
+            }
+            free(grad);
+            tirenv_nn_free(nn);
+        }
+    gsl_rng_free(rng);
+}
+
+/* The even input makes the mirrored curve smooth over the centre by construction: the
+ * network sees a smooth even function of 1 - x_N, so its outputs at 1 + e and 1 - e are the
+ * same number and its slope at x_N = 1 is zero to round-off (the central difference is
+ * exactly 0, the one-sided one shrinks like e: a factor 100 from e = 1e-2 to 1e-4, bound
+ * 2e-2 for the curvature's own change); the same weights fed x_N itself have a slope there.
+ * Over the enveloping curve, the slope just before the centre shrinks with the step
+ * likewise. */
+static void test_even_symmetry(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 23);
+    for (size_t k = 0; k < 4; ++k) {
+        tirenv_nn *even = make_variant(&topologies[0], &variants[k % 2 ? 2 : 0], 700 + k);
+        tirenv_nn *paper = tirenv_nn_clone(even);
+        tirenv_nn_target_form target;
+        tirenv_nn_get_form(even, NULL, &target);
+        assert_int_equal(tirenv_nn_set_form(paper, TIRENV_NN_INPUT_PAPER, target, NULL),
+                         TIRENV_OK);
+        const double l_c = 0.28 + 0.15 * gsl_rng_uniform(rng),
+                     H = 0.025 + 0.075 * gsl_rng_uniform(rng),
+                     L = 0.05 + 0.25 * gsl_rng_uniform(rng);
+        double slope_e[2], slope_p = 0;
+        for (int i = 0; i < 2; ++i) {
+            const double e = i ? 1e-4 : 1e-2;
+            const double up[] = {1 + e, l_c, H, L}, dn[] = {1 - e, l_c, H, L},
+                         at[] = {1, l_c, H, L};
+            assert_true(tirenv_nn_run(even, up) == tirenv_nn_run(even, dn));
+            slope_e[i] = (tirenv_nn_run(even, at) - tirenv_nn_run(even, dn)) / e;
+            if (i)
+                slope_p = (tirenv_nn_run(paper, up) - tirenv_nn_run(paper, dn)) / (2 * e);
+        }
+        print_message("net %zu: dh/dx_N at x_N = 1, one-sided: %.3g (e = 0.01), %.3g (e = "
+                      "1e-4) even; %.3g paper\n", k, slope_e[0], slope_e[1], slope_p);
+        assert_true(fabs(slope_e[1]) <= 2e-2 * fabs(slope_e[0]) + 1e-12);
+        assert_true(fabs(slope_p) > 1e3 * fabs(slope_e[1]));
+
+        /* The curve: the left difference quotient at the centre shrinks with the step. */
+        const double R0 = 0.68, x_m[] = {-1e-3, -1e-6, 0};
+        double h[3], hp[3];
+        assert_int_equal(tirenv_nn_envelope(even, R0, l_c, L, H, 3, x_m, h, NULL), TIRENV_OK);
+        assert_int_equal(tirenv_nn_envelope(paper, R0, l_c, L, H, 3, x_m, hp, NULL),
+                         TIRENV_OK);
+        const double d3 = (h[2] - h[0]) / 1e-3, d6 = (h[2] - h[1]) / 1e-6;
+        assert_true(fabs(d6) <= 2e-3 * fabs(d3) + 1e-12);
+        assert_true(fabs((hp[2] - hp[1]) / 1e-6) > 1e3 * fabs(d6));
+        tirenv_nn_free(even);
+        tirenv_nn_free(paper);
+    }
+    gsl_rng_free(rng);
+}
+
+/* An ensemble: the mean of its members (to round-off: the same sums in another order),
+ * members taken out and put together again to the bit, each member's block of the gradient
+ * its own gradient over K; refusals. */
+static void test_ensemble(void **state)
+{
+    (void)state;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 29);
+    const variant v = {3, TIRENV_NN_INPUT_PAPER, TIRENV_NN_TARGET_H};
+    tirenv_nn *e = make_variant(&topologies[0], &v, 800);
+    const size_t p = tirenv_nn_n_weights(e), per = p / 3;
+    assert_int_equal(per, 49);
+    tirenv_nn *m[3];
+    for (size_t k = 0; k < 3; ++k) {
+        m[k] = tirenv_nn_member(e, k);
+        assert_non_null(m[k]);
+        assert_int_equal(tirenv_nn_n_members(m[k]), 1);
+        assert_memory_equal(tirenv_nn_weights(m[k]), tirenv_nn_weights(e) + k * per,
+                            per * sizeof(double));
+    }
+    assert_null(tirenv_nn_member(e, 3));
+    double *g = malloc(p * sizeof *g), *gk = malloc(per * sizeof *gk);
+    for (int s = 0; s < 20; ++s) {
+        double x[4];
+        fill_inputs(rng, 1, 4, x);
+        const double y = tirenv_nn_gradient(e, x, g);
+        double mean = 0;
+        for (size_t k = 0; k < 3; ++k) {
+            mean += tirenv_nn_gradient(m[k], x, gk) / 3;
+            for (size_t j = 0; j < per; ++j)
+                assert_near(g[k * per + j], gk[j] / 3, 1e-16, 1e-14);
+        }
+        assert_near(y, mean, 1e-15, 1e-14);
+    }
+    tirenv_nn *again = tirenv_nn_ensemble((const tirenv_nn *const *)m, 3);
+    assert_non_null(again);
+    assert_memory_equal(tirenv_nn_weights(again), tirenv_nn_weights(e), p * sizeof(double));
+    /* Refused: another scaling, another form, an ensemble as a member, no members. */
+    double mean[4] = {0, 0, 0, 0}, std[4] = {1, 1, 1, 1};
+    tirenv_nn *odd = tirenv_nn_clone(m[1]);
+    const tirenv_nn *pair[2] = {m[0], odd};
+    assert_int_equal(tirenv_nn_set_scaling(odd, mean, std, 0, 1, NULL), TIRENV_OK);
+    assert_null(tirenv_nn_ensemble(pair, 2));
+    tirenv_nn_copy(odd, m[1]);
+    assert_int_equal(tirenv_nn_set_form(odd, TIRENV_NN_INPUT_EVEN, TIRENV_NN_TARGET_H, NULL),
+                     TIRENV_OK);
+    assert_null(tirenv_nn_ensemble(pair, 2));
+    pair[1] = e;
+    assert_null(tirenv_nn_ensemble(pair, 2));
+    assert_null(tirenv_nn_ensemble(pair, 0));
+    assert_null(tirenv_nn_alloc_ensemble(&topologies[0], 0));
+    assert_null(tirenv_nn_alloc_ensemble(&topologies[0], TIRENV_NN_MAX_MEMBERS + 1));
+    assert_int_equal(tirenv_nn_copy(m[0], e), TIRENV_EINVAL);  /* other member count */
+    /* Forms need the enveloping model's four inputs. */
+    tirenv_nn *three = make_net(&topologies[2], 801);
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_nn_set_form(three, TIRENV_NN_INPUT_EVEN, TIRENV_NN_TARGET_H,
+                                        &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "form");
+    assert_int_equal(tirenv_nn_set_form(three, TIRENV_NN_INPUT_PAPER, TIRENV_NN_TARGET_H,
+                                        NULL), TIRENV_OK);
+    tirenv_nn_free(three);
+    free(g);
+    free(gk);
+    tirenv_nn_free(odd);
+    tirenv_nn_free(again);
+    for (size_t k = 0; k < 3; ++k)
+        tirenv_nn_free(m[k]);
+    tirenv_nn_free(e);
+    gsl_rng_free(rng);
+}
+
+/* Scaling from samples under the forms: the mean and deviation of the even feature
+ * sqrt((1 - x_N)^2 + a^2) - a (with a = 0.75, where the three x_N give 0.5, 0.15139 and 0)
+ * and of the target h/H; the input ranges stay those of x_N and of the raw inputs. */
+static void test_scaling_forms(void **state)
+{
+    (void)state;
+    tirenv_nn *nn = tirenv_nn_alloc(&topologies[0]);
+    assert_true(tirenv_nn_get_even_width(nn) == TIRENV_NN_EVEN_WIDTH);
+    assert_int_equal(tirenv_nn_set_form(nn, TIRENV_NN_INPUT_EVEN, TIRENV_NN_TARGET_H_OVER_H,
+                                        NULL), TIRENV_OK);
+    assert_int_equal(tirenv_nn_set_even_width(nn, 0.75, NULL), TIRENV_OK);
+    assert_int_equal(tirenv_nn_set_even_width(nn, 0, NULL), TIRENV_EINVAL);
+    assert_int_equal(tirenv_nn_set_even_width(nn, INFINITY, NULL), TIRENV_EINVAL);
+    assert_true(tirenv_nn_get_even_width(nn) == 0.75);
+    const double x[] = {0.0, 0.3, 0.05, 0.1, 0.5, 0.3, 0.1, 0.1, 1.0, 0.3, 0.025, 0.1};
+    const double y[] = {0.01, 0.06, 0.02};  /* h/H: 0.2, 0.6, 0.8 */
+    assert_int_equal(tirenv_nn_fit_scaling(nn, 3, x, y, NULL), TIRENV_OK);
+    double mean[4], std[4], om, os, lo[4], hi[4];
+    tirenv_nn_get_scaling(nn, mean, std, &om, &os);
+    tirenv_nn_get_input_range(nn, lo, hi);
+    const double f1 = 0.5, f2 = sqrt(0.25 + 0.5625) - 0.75;  /* x_N = 0 and 0.5; 1 gives 0 */
+    const double f_mean = (f1 + f2 + 0.0) / 3;
+    assert_near(mean[0], f_mean, 1e-15, 0);
+    assert_near(std[0], sqrt((pow(f1 - f_mean, 2) + pow(f2 - f_mean, 2) + f_mean * f_mean) /
+                             3), 0, 1e-14);
+    assert_true(lo[0] == 0.0 && hi[0] == 1.0);
+    assert_near(om, 1.6 / 3, 1e-15, 0);
+    assert_near(os, sqrt((pow(0.2 - 1.6 / 3, 2) + pow(0.6 - 1.6 / 3, 2) +
+                          pow(0.8 - 1.6 / 3, 2)) / 3), 0, 1e-14);
+    const double no_height[] = {0.5, 0.3, 0.0, 0.1};
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_nn_fit_scaling(nn, 1, no_height, y, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "obstacle_height_m");
+    tirenv_nn_free(nn);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -394,6 +648,8 @@ int main(void)
         cmocka_unit_test(test_run_reference), cmocka_unit_test(test_batch_exact),
         cmocka_unit_test(test_gradient),     cmocka_unit_test(test_jacobian),
         cmocka_unit_test(test_scaling),      cmocka_unit_test(test_envelope),
+        cmocka_unit_test(test_variants),     cmocka_unit_test(test_even_symmetry),
+        cmocka_unit_test(test_ensemble),     cmocka_unit_test(test_scaling_forms),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -393,14 +393,28 @@ static void test_compare_writes_everything(void **state)
 
     char *text = read_text(out_dir, "errors.csv");
     assert_non_null(text);
-    assert_non_null(strstr(text, "case,model,rms_mm,max_mm,peak_mm,first_rise_mm\n"));
+    assert_non_null(strstr(text, "case,model,rms_mm,max_mm,peak_mm,first_rise_mm,rms_over_H\n"));
     assert_int_equal(count_lines(text), 1 + N_CMP * 4);
     assert_non_null(strstr(text, "\nR,springs,"));
+    /* rms_over_H is the RMS over the case's obstacle height: the row's rms_mm (4 decimals)
+     * over H in mm, to the rounding of either column. */
+    for (size_t i = 0; i < N_CMP; ++i) {
+        char key[48];
+        snprintf(key, sizeof key, "\n%.31s,springs,", cases[i].name);
+        const char *row = strstr(text, key);
+        assert_non_null(row);
+        double rms_mm, max_mm, peak_mm, rise_mm, over_H;
+        assert_int_equal(sscanf(row + strlen(key), "%lf,%lf,%lf,%lf,%lf", &rms_mm, &max_mm,
+                                &peak_mm, &rise_mm, &over_H), 5);
+        assert_near(over_H, rms_mm / (1e3 * cases[i].H), 1e-6 + 5e-5 / (1e3 * cases[i].H), 0);
+        assert_near(over_H, r.entry[i * r.n_models + 1].errors.rms / cases[i].H, 1e-6, 0);
+    }
     assert_non_null(strstr(text, "\nF,nn,"));
     assert_int_equal(count_lines(read_text(out_dir, "timing.csv")), 1 + 4);
     text = read_text(out_dir, "errors.md");
     assert_non_null(text);
     assert_non_null(strstr(text, "| Case |"));
+    assert_non_null(strstr(text, "| RMS/H (%) |"));
     assert_non_null(strstr(text, "SIMULATED"));
     text = read_text(out_dir, "report.md");
     assert_non_null(text);
@@ -485,7 +499,7 @@ static void test_compare_failures(void **state)
     assert_int_equal(r.entry[0 * r.n_models + 1].status, TIRENV_OK);
     char *text = read_text(dir, "errors.csv");
     assert_non_null(text);
-    assert_non_null(strstr(text, "\nJ,springs,nan,nan,nan,nan\n"));
+    assert_non_null(strstr(text, "\nJ,springs,nan,nan,nan,nan,nan\n"));
     assert_non_null(strstr(text, "\nR,springs,"));
     assert_non_null(read_text(dir, "R.gp"));
     text = read_text(dir, "J.gp");

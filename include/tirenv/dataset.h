@@ -74,8 +74,9 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                          const tirenv_dataset_build_settings *s, tirenv_diag *diag);
 
 /* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,
- * L), output h; cases of the given split only. Allocates *x and *y (free them); TIRENV_EINVAL
- * if a case has no curve. */
+ * L), output h, one curve per case (out->n_curves, out->curve_start); cases of the given
+ * split only. Allocates *x and *y (free them; *x also holds the curve offsets that
+ * out->curve_start points to); TIRENV_EINVAL if a case has no curve. */
 int tirenv_samples_from_dataset(const tirenv_dataset *ds, tirenv_split split,
                                 tirenv_samples *out, double **x, double **y,
                                 tirenv_diag *diag);

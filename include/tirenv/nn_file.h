@@ -13,7 +13,7 @@
 TIRENV_BEGIN_DECLS
 
 #define TIRENV_NN_FORMAT "tirenv-nn"
-#define TIRENV_NN_FORMAT_VERSION 1
+#define TIRENV_NN_FORMAT_VERSION 2  /* 2: ensembles and forms; version 1 files still read */
 
 /* What a model file records besides the network. */
 typedef struct {

@@ -9,10 +9,9 @@
 #include "tirenv/dataset.h"
 #include "tirenv/error.h"
 #include "tirenv/model.h"
+#include "tirenv/train.h"
 
 TIRENV_BEGIN_DECLS
-
-typedef struct tirenv_nn tirenv_nn;  /* the network, tirenv/nn.h */
 
 /* How far a model curve is from a measured one on the same points (all in m). */
 typedef struct {
@@ -68,6 +67,13 @@ typedef struct {
     double value[TIRENV_FIT_MAX_PARAMS];        /* fitted, SI */
     double std_error[TIRENV_FIT_MAX_PARAMS];    /* from the covariance, scaled by the residual
                                                  * variance, SI */
+    int at_bound[TIRENV_FIT_MAX_PARAMS];        /* -1: the fit drove it to its lower bound
+                                                 * (within 1 % of the bound's scale: |bound|,
+                                                 * or the start value for a bound of 0), so
+                                                 * the data want a value the model cannot
+                                                 * take; 0: inside its range */
+    double bound[TIRENV_FIT_MAX_PARAMS];        /* that lower bound (ELLIPS_ORDER 1, a
+                                                 * stiffness 0), SI */
     size_t iterations;
     size_t n_points;       /* residuals */
     double rms;            /* over all training points, m */
@@ -79,6 +85,41 @@ typedef struct {
  * writing the result into *tire. */
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag);
+
+/* ---- The network over seeds ------------------------------------------------------------ */
+
+/* With 19 training curves a network's validation error depends on its seed about as much as
+ * on anything else, so one seed's figure says little: this trains one configuration with n
+ * seeds and reports the distribution. The measure is the study's: per seed the mean over
+ * the validation cases of each case's RMS error (the network's curve as tirenv_compare
+ * draws it, tirenv_case_predict_nn). */
+typedef struct {
+    size_t n_seeds, n_cases;
+    unsigned long *seed;           /* n_seeds: settings->seed, settings->seed + 1, ... */
+    size_t *case_index;            /* n_cases: the validation cases, indices into val */
+    double *rms;                   /* n_seeds x n_cases: seed s on case c, rms[s*n_cases + c], m */
+    double *mean_rms;              /* n_seeds: the mean over the cases, m */
+    double median, q1, q3, min, max;  /* of mean_rms, m; quartiles interpolated linearly
+                                      * between order statistics (R's type 7) */
+    double *control_rms;           /* n_seeds: the same measure on fit's control cases, m
+                                    * (what a choice of settings may be tuned on; NaN if
+                                    * there are none) */
+    double control_median, control_q1, control_q3;  /* of control_rms, m */
+    size_t median_seed;            /* the seed (index) whose mean_rms is nearest the median,
+                                    * the lower one of two */
+    double seconds;                /* the trainings' wall time, summed over the seeds */
+} tirenv_nn_seeds;
+
+/* Trains with the trainer and settings on the train and control cases of fit and measures on
+ * the validation cases of val, for seeds settings->seed to settings->seed + n_seeds - 1, R0
+ * the radius x_N refers to. Each seed is a function of its arguments alone. median_net (may
+ * be NULL) receives the model of the median seed and median_report its training report
+ * (may be NULL). Free out with tirenv_nn_seeds_free, also after a failure. */
+int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
+                          const tirenv_dataset *fit, const tirenv_dataset *val, double R0,
+                          size_t n_seeds, tirenv_nn_seeds *out, tirenv_nn **median_net,
+                          tirenv_train_report *median_report, tirenv_diag *diag);
+void tirenv_nn_seeds_free(tirenv_nn_seeds *r);  /* NULL is a no-op */
 
 /* ---- Comparison (docs/models.md section 8; the paper's Table 3 and Figure 5) ------------ */
 
@@ -178,15 +219,25 @@ int tirenv_compare_report(const tirenv_dataset *ds, const tirenv_compare_setting
  * curves of the identified physical model over a dense grid of obstacles, no rig time) and the
  * models on obstacles outside the training grid (taller, shorter, other shapes), whose
  * reference curves the virtual rig simulates with the ring tire. Writes into out_dir:
- * fitted.tir, nn.json, nn-physical.json, report.md with plots and tables, and the
+ * fitted.tir, nn.json, nn-physical.json, nn-seeds.csv (seed,validation_rms_mm and one
+ * <case>_rms_mm column per validation case, mm), report.md with plots and tables, and the
  * subdirectories physical-network/ and outside/ with theirs. */
 typedef struct {
     const char *data_dir;          /* data set with cases.csv */
+    const char *data_label;        /* how the report and the model files name it (a path as
+                                    * the user gave it, never the build machine's); NULL:
+                                    * data_dir */
     const char *out_dir;           /* report directory, created if missing */
     tirenv_tire tire;              /* start of the fit; its ring is the reference tire */
     const char *tire_label;        /* where the tire came from, for the report */
     const char *trainer;           /* "lm" (default), "rprop" or "backprop" */
-    unsigned long seed;            /* training seed (default 1) */
+    unsigned long seed;            /* first training seed (default 1) */
+    size_t seeds;                  /* the network is trained with seeds seed .. seed + seeds -
+                                    * 1 (default 20); nn-seeds.csv holds each one's
+                                    * validation error, the report their median and
+                                    * quartiles, and nn.json (with the tables and plots) is
+                                    * the seed nearest the median */
+    tirenv_nn_input_form input;    /* the network's input form (default even; paper: x_N) */
     int simulated_by_ring;         /* the data set was simulated by the ring tire (default 1:
                                     * the embedded one) */
     int images;                    /* draw PNG and SVG with gnuplot (default 1) */

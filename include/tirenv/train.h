@@ -21,12 +21,17 @@ typedef enum {
 } tirenv_split;
 
 /* n samples of n_in inputs and one output, borrowed from the caller. For the enveloping
- * model the inputs are x_N, l_c (m), H (m), L (m) and the output is h (m). */
+ * model the inputs are x_N, l_c (m), H (m), L (m) and the output is h (m). The samples may
+ * come in curves (one per obstacle run): curve c is samples curve_start[c] to
+ * curve_start[c + 1] - 1, and curve_start[n_curves] = n. */
 typedef struct {
     size_t n;              /* samples (0: an empty set) */
     size_t n_in;           /* inputs per sample */
     const double *x;       /* n*n_in inputs, row-major */
     const double *y;       /* n outputs */
+    const double *w;       /* n weights (> 0) on each sample's squared error; NULL: all 1 */
+    size_t n_curves;       /* 0: not grouped */
+    const size_t *curve_start; /* n_curves + 1 offsets, or NULL */
 } tirenv_samples;
 
 /* A trainer algorithm (GSL style: tirenv_trainer_lm); the record is private. */
@@ -77,7 +82,8 @@ typedef struct {
                               exceeds it */
 } tirenv_lm_settings;
 
-/* What the progress callback sees after every epoch. Errors in m. */
+/* What the progress callback sees after every epoch: the loss as an RMS error, in m for the
+ * target h, as a fraction of H for h/H (for the curves loss the mean of the curves' RMS). */
 typedef struct {
     size_t restart;        /* 0-based */
     size_t restarts;       /* how many */
@@ -92,10 +98,32 @@ typedef struct {
 /* Returns 0 to go on, nonzero to stop training (the best weights so far are kept). */
 typedef int (*tirenv_train_progress_fn)(const tirenv_train_progress *p, void *data);
 
+/* What the trainers minimise over the training samples (and early stopping over control). */
+typedef enum {
+    TIRENV_TRAIN_LOSS_POINTS = 0, /* the sum of squared errors over all points (the paper's) */
+    TIRENV_TRAIN_LOSS_CURVES      /* the mean over curves of each curve's RMS error: every
+                                     curve counts once, however many points it has and
+                                     however well it is fitted (the study's own measure);
+                                     minimised by reweighting each curve by 1/its RMS error
+                                     at the start of every epoch */
+} tirenv_train_loss;
+
+/* "points", "curves"; NULL for an unknown value. */
+const char *tirenv_train_loss_name(tirenv_train_loss loss);
+/* The loss of that name; -1 if none. */
+int tirenv_train_loss_find(const char *name);
+
 typedef struct {
     tirenv_nn_topology topology;  /* size[0] must equal the samples' n_in */
     unsigned long seed;           /* fixes initial weights and online order, bit for bit */
-    size_t restarts;              /* independent starts; the best on the control set is kept */
+    size_t restarts;              /* independent starts (M), each from its own seed */
+    size_t ensemble;              /* K: the model is the mean of the K restarts best on the
+                                     control set (min(K, M); 1: the best one alone) */
+    tirenv_nn_input_form input;   /* how x_N reaches the network (nn.h) */
+    double even_width;            /* a of the even form, in x_N (TIRENV_NN_EVEN_WIDTH) */
+    tirenv_nn_target_form target; /* h or h/H; h/H also makes the loss one on h/H (each
+                                     point's squared error weighted by 1/H^2) */
+    tirenv_train_loss loss;
     size_t max_epochs;            /* per restart */
     size_t patience;              /* stop after this many epochs without a better control
                                      error; 0: never stop early (still keep the best) */
@@ -111,15 +139,21 @@ typedef struct {
     void *progress_data;
 } tirenv_train_settings;
 
-/* Defaults for a trainer (NULL: lm): 4-8-1, seed 1, and by trainer
+/* Defaults for a trainer (NULL: lm): 4-8-1, seed 1, the even input, the h/H target, the
+ * curves loss, an ensemble of 4 (each chosen on the control error's median over 20 seeds of
+ * the embedded data set: train.c says by how much), and by trainer
  *   backprop  2e5 epochs (the paper's cycles), no early stop, 1 restart, online,
  *             learning rate 0.01, momentum 0.9;
  *   rprop     5000 epochs, patience 500, 4 restarts, delta0 0.1, [1e-6, 50], 1.2 / 0.5;
- *   lm        1000 epochs, patience 60, 8 restarts, tau 1e-3, mu_max 1e10. */
+ *   lm        1000 epochs, patience 60, 8 restarts, tau 1e-3, mu_max 1e10.
+ * The paper's own setup is tirenv_train_paper. */
 tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type);
+/* The same with the paper's network: x_N as input, h as target, the loss over points, the
+ * best restart alone. */
+tirenv_train_settings tirenv_train_paper(const tirenv_trainer_type *type);
 
-/* TIRENV_OK, or TIRENV_EINVAL naming the first bad setting (topology, counts, each
- * trainer's constants) in diag. */
+/* TIRENV_OK, or TIRENV_EINVAL naming the first bad setting (topology, counts, forms,
+ * each trainer's constants) in diag. */
 int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *diag);
 
 /* Why a restart stopped. */
@@ -142,14 +176,17 @@ typedef struct {
 } tirenv_train_error;
 
 typedef struct {
-    size_t restart;        /* the kept restart, 0-based */
+    size_t restart;        /* the restart best on control, 0-based */
     size_t epochs;         /* epochs it ran */
     size_t best_epoch;     /* its epoch of least control error (0: the initial weights) */
     double best_time;      /* s from its start to that epoch */
     size_t total_epochs;   /* over all restarts */
     double wall_time;      /* s, all restarts */
     tirenv_train_stop stop;/* why the kept restart stopped */
-    tirenv_train_error error[3];  /* indexed by tirenv_split: train, control, validation */
+    size_t members;        /* networks in the model (the ensemble's K) */
+    size_t member_restart[TIRENV_NN_MAX_MEMBERS]; /* the restart of each, best first */
+    tirenv_train_error error[3];  /* of the model, indexed by tirenv_split: train, control,
+                                     validation */
 } tirenv_train_report;
 
 /* Errors of nn on a sample set; uses the batch path. */
@@ -157,10 +194,12 @@ tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
 
 /* Trains a network of settings->topology on train, early-stopping on control (if it is empty,
  * on train), and reports errors on all three (validation may be NULL or empty). Scaling and
- * input ranges come from train only. *out is the kept network (free it with tirenv_nn_free);
- * report may be NULL. GSL would abort on a singular matrix unless the program has turned its
- * error handler off (error.h).
- * Deterministic: the same arguments give the same weights bit for bit. */
+ * input ranges come from train only. Each restart r is a function of the samples, the
+ * settings and r alone (its seed is derived from settings->seed and r), so restarts can run
+ * in any order. *out is the model, the kept network or the ensemble of the kept ones (free
+ * it with tirenv_nn_free); report may be NULL. GSL would abort on a singular matrix unless
+ * the program has turned its error handler off (error.h). Deterministic: the same arguments
+ * give the same weights bit for bit. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,
                  const tirenv_samples *validation, tirenv_nn **out,

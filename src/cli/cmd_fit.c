@@ -18,9 +18,11 @@ static void usage(FILE *fp)
           "--fit-radius) of the springs model, or ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
           "and ELLIPS_ORDER of the cam model, on the data set's training cases by nonlinear\n"
           "least squares on h (GSL multifit_nlinear), starting from the tire file, and\n"
-          "reports standard errors and the fit per case. The discretisation (ELEMENT_ANGLE)\n"
-          "is a setting, not a fitted parameter: --check-refinement refits with it halved and\n"
-          "reports how much the parameters and the fitted curves change.\n"
+          "reports standard errors and the fit per case; a parameter the data drive to its\n"
+          "bound (ELLIPS_ORDER to 1, a stiffness towards 0) is reported AT ITS LOWER BOUND.\n"
+          "The discretisation (ELEMENT_ANGLE) is a setting, not a fitted parameter:\n"
+          "--check-refinement refits with it halved and reports how much the parameters\n"
+          "and the fitted curves change.\n"
           "\n"
           "options:\n"
           "  --data DIR           data set directory with cases.csv\n"
@@ -88,8 +90,19 @@ static void print_report(const char *what, const tirenv_fit_report *r)
 {
     printf("%s: %zu points, %zu iterations (%s), %.2f s, rms %.3f mm\n", what, r->n_points,
            r->iterations, r->stop, r->seconds, 1e3 * r->rms);
-    for (size_t i = 0; i < r->n_params; ++i)
-        printf("  %-22s = %.6g +- %.2g (1 sigma)\n", r->names[i], r->value[i], r->std_error[i]);
+    size_t at_bound = 0;
+    for (size_t i = 0; i < r->n_params; ++i) {
+        printf("  %-22s = %.6g +- %.2g (1 sigma)", r->names[i], r->value[i], r->std_error[i]);
+        if (r->at_bound[i]) {
+            printf("  AT ITS LOWER BOUND %g", r->bound[i]);
+            ++at_bound;
+        }
+        putchar('\n');
+    }
+    if (at_bound)
+        printf("  %zu parameter%s at a bound: the data push the model to the edge of what it "
+               "can express; the fit is the best the model can do, not an identification\n",
+               at_bound, at_bound == 1 ? "" : "s");
 }
 
 int cli_fit_main(int argc, char *argv[])

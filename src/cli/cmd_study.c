@@ -1,6 +1,7 @@
 /* tirenv study: the paper's study in one command (identify, train, compare), as make demo
  * runs it on the embedded data set. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -11,8 +12,9 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
-          "                    [--seed S] [--measured | --simulated-by ring] [--no-images]\n"
-          "                    [--jobs N] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                    [--seed S] [--seeds N] [--input even|paper]\n"
+          "                    [--measured | --simulated-by ring] [--no-images] [--jobs N]\n"
+          "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
           "on the data set's training cases (tirenv fit), trains the 4-8-1 network with\n"
@@ -27,7 +29,14 @@ static void usage(FILE *fp)
           "  --data DIR           data set with cases.csv (default: the embedded, SIMULATED one)\n"
           "  -o DIR               report directory (default out/study)\n"
           "  --trainer NAME       network trainer (default lm)\n"
-          "  --seed S             training seed (default 1)\n"
+          "  --seed S             first training seed (default 1)\n"
+          "  --seeds N            train the network with seeds S to S+N-1 (default 20) and\n"
+          "                       report the median and quartiles of its validation error;\n"
+          "                       nn.json, the tables and plots are the seed nearest the\n"
+          "                       median, nn-seeds.csv has every seed\n"
+          "  --input FORM         the network's input: even (default, the rounded distance\n"
+          "                       from the obstacle centre: smooth over the centre) or\n"
+          "                       paper (x_N, as in the paper)\n"
           "  --simulated-by ring  the data were simulated by the ring tire (default for the\n"
           "                       embedded data set; then the ring is compared too)\n"
           "  --measured           the data are real measurements\n"
@@ -63,12 +72,24 @@ static int parse_simulated_by(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
+/* --input: the network's input form. */
+static int parse_input(void *dst, const char *arg)
+{
+    const int f = tirenv_nn_input_form_find(arg);
+    if (f < 0) {
+        cli_error("study: --input expects even or paper, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    *(tirenv_nn_input_form *)dst = (tirenv_nn_input_form)f;
+    return CLI_EXIT_OK;
+}
+
 int cli_study_main(int argc, char *argv[])
 {
     tirenv_study_settings s = tirenv_study_default();
     char data_buf[1024];
     const char *data = NULL;
-    long seed = (long)s.seed;
+    long seed = (long)s.seed, seeds = (long)s.seeds;
     int by_ring = 0, measured = 0, no_images = 0;
     const cli_opt own[] = {
         {.name = "data", .kind = CLI_STRING, .dst = &data},
@@ -77,6 +98,9 @@ int cli_study_main(int argc, char *argv[])
          .what = "a whole number >= 0"},
         {.name = "simulated-by", .kind = CLI_CUSTOM, .dst = &by_ring,
          .parse = parse_simulated_by},
+        {.name = "seeds", .kind = CLI_COUNT, .dst = &seeds, .min = 1, .max = 100000,
+         .what = "a whole number from 1 to 100000"},
+        {.name = "input", .kind = CLI_CUSTOM, .dst = &s.input, .parse = parse_input},
         {.name = "measured", .kind = CLI_FLAG, .dst = &measured},
         {.name = "no-images", .kind = CLI_FLAG, .dst = &no_images},
         {.name = NULL},
@@ -92,7 +116,12 @@ int cli_study_main(int argc, char *argv[])
         return CLI_EXIT_USAGE;
     }
     s.data_dir = data ? data : cli_data_path("dataset", data_buf, sizeof data_buf);
+    /* The embedded one is named as in the repository, not by this build's absolute path;
+     * a path the user gave (--data, TIRENV_DATA) is theirs to see. */
+    const char *env = getenv("TIRENV_DATA");
+    s.data_label = data ? data : env && env[0] ? s.data_dir : "data/dataset";
     s.seed = (unsigned long)seed;
+    s.seeds = (size_t)seeds;
     s.images = !no_images;
     s.jobs = o.jobs;
     if (o.output)

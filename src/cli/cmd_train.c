@@ -10,13 +10,16 @@
 #include "cli/cli.h"
 #include "tirenv/dataset.h"
 #include "tirenv/nn_file.h"
+#include "tirenv/study.h"
 
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv train --data DIR [--trainer backprop|rprop|lm] [--seed S]\n"
           "                    [--restarts N] [--epochs N] [--patience N] [--hidden N[,N...]]\n"
           "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
-          "                    [--lm-solver cholesky|gsl] [-o MODEL.json] [--jobs N]\n"
+          "                    [--lm-solver cholesky|gsl] [--ensemble K] [--input paper|even]\n"
+          "                    [--even-width A] [--target h|h/H] [--loss points|curves]\n"
+          "                    [--paper] [--seeds N] [-o MODEL.json] [--jobs N]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "Trains the empirical model's network (inputs x_N, contact length, obstacle height,\n"
@@ -31,8 +34,24 @@ static void usage(FILE *fp)
           "  --trainer NAME       lm (default): Levenberg-Marquardt; rprop: iRprop-;\n"
           "                       backprop: the paper's back-propagation with momentum\n"
           "  --seed S             seed of the initial weights (and online order), default 1\n"
-          "  --restarts N         independent starts, best on control kept (default: lm 8,\n"
-          "                       rprop 4, backprop 1)\n"
+          "  --restarts N         independent starts M (default: lm 8, rprop 4, backprop 1)\n"
+          "  --ensemble K         the model is the mean of the K restarts best on control\n"
+          "                       (default 4, at most M; 1: the best restart alone)\n"
+          "  --input FORM         even (default): the network sees the distance from the\n"
+          "                       obstacle centre, rounded: sqrt((1 - x_N)^2 + A^2) - A, so\n"
+          "                       the mirrored curve is smooth over the centre; paper: x_N\n"
+          "                       itself, as in the paper\n"
+          "  --even-width A       the rounding A of the even input, in x_N (default 0.2)\n"
+          "  --target T           h/H (default): the network learns h/H (the loss is on h/H)\n"
+          "                       and its output times H is h; h: it outputs h\n"
+          "  --loss L             curves (default): the mean over curves of each curve's RMS\n"
+          "                       error; points: the squared error summed over all points\n"
+          "  --paper              start from the paper's network: --input paper --target h\n"
+          "                       --loss points --ensemble 1 (those options, given, override)\n"
+          "  --seeds N            train with seeds S to S+N-1 and print the median and\n"
+          "                       quartiles of the validation error (the mean over the\n"
+          "                       validation cases of each case's RMS); -o writes the\n"
+          "                       model of the seed nearest the median\n"
           "  --epochs N           epochs per restart (default: lm 1000, rprop 5000,\n"
           "                       backprop 200000, the paper's cycles)\n"
           "  --patience N         stop after N epochs without a better control error; 0 never\n"
@@ -57,6 +76,7 @@ typedef struct {
     const char *trainer;
     double last;           /* s, when drawn last */
     int drawn;
+    int over_H;            /* the errors are of h/H, not of h in m */
 } bar;
 
 static int draw(const tirenv_train_progress *p, void *data)
@@ -70,10 +90,12 @@ static int draw(const tirenv_train_progress *p, void *data)
     static const char hashes[] = "##############################";
     const int width = (int)sizeof hashes - 1;
     const int filled = (int)((double)width * (double)p->epoch / (double)p->max_epochs);
+    const double unit = b->over_H ? 1e2 : 1e3;
     fprintf(stderr, "\rtirenv: train: %s restart %zu/%zu [%-*.*s] epoch %zu/%zu, control RMS "
-            "%.3f mm (best %.3f at %zu)\033[K",
+            "%.3f %s (best %.3f at %zu)\033[K",
             b->trainer, p->restart + 1, p->restarts, width, filled, hashes, p->epoch,
-            p->max_epochs, p->control_rms * 1e3, p->best_rms * 1e3, p->best_epoch);
+            p->max_epochs, p->control_rms * unit, b->over_H ? "% of H" : "mm",
+            p->best_rms * unit, p->best_epoch);
     return 0;
 }
 
@@ -106,9 +128,10 @@ static int parse_hidden(const char *s, tirenv_nn_topology *t)
 typedef struct {
     const char *data;
     const tirenv_trainer_type *type;
-    long seed, restarts, epochs, patience;
-    int have_hidden, batch, have_solver;
-    double learning_rate, momentum;
+    long seed, restarts, epochs, patience, ensemble, seeds;
+    int have_hidden, batch, have_solver, paper;
+    int input, target, loss;   /* -1: the default */
+    double learning_rate, momentum, even_width;
     tirenv_lm_solver solver;
     tirenv_nn_topology topology;
 } train_options;
@@ -160,6 +183,33 @@ static int parse_solver(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
+static int parse_input(void *dst, const char *arg)
+{
+    if ((*(int *)dst = tirenv_nn_input_form_find(arg)) < 0) {
+        cli_error("--input: expected paper or even, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_target(void *dst, const char *arg)
+{
+    if ((*(int *)dst = tirenv_nn_target_form_find(arg)) < 0) {
+        cli_error("--target: expected h or h/H, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_loss(void *dst, const char *arg)
+{
+    if ((*(int *)dst = tirenv_train_loss_find(arg)) < 0) {
+        cli_error("--loss: expected points or curves, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 /* Parses the options; returns an exit code, or CLI_GO_ON. */
 static int parse(int argc, char *argv[], cli_options *o, train_options *t)
 {
@@ -180,6 +230,16 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
         {.name = "momentum", .kind = CLI_CUSTOM, .dst = &t->momentum, .parse = parse_momentum},
         {.name = "batch", .kind = CLI_FLAG, .dst = &t->batch},
         {.name = "lm-solver", .kind = CLI_CUSTOM, .dst = t, .parse = parse_solver},
+        {.name = "ensemble", .kind = CLI_COUNT, .dst = &t->ensemble, .min = 1,
+         .max = TIRENV_NN_MAX_MEMBERS, .what = "an integer from 1 to 64"},
+        {.name = "input", .kind = CLI_CUSTOM, .dst = &t->input, .parse = parse_input},
+        {.name = "even-width", .kind = CLI_POSITIVE, .dst = &t->even_width,
+         .what = "a width > 0 in x_N"},
+        {.name = "target", .kind = CLI_CUSTOM, .dst = &t->target, .parse = parse_target},
+        {.name = "loss", .kind = CLI_CUSTOM, .dst = &t->loss, .parse = parse_loss},
+        {.name = "paper", .kind = CLI_FLAG, .dst = &t->paper},
+        {.name = "seeds", .kind = CLI_COUNT, .dst = &t->seeds, .min = 1, .max = 100000,
+         .what = "an integer from 1 to 100000"},
         {.name = NULL},
     };
     const cli_parser p = {.name = "train", .usage = usage, .opts = own,
@@ -196,7 +256,18 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
 
 static tirenv_train_settings settings_from(const train_options *t)
 {
-    tirenv_train_settings s = tirenv_train_default(t->type);
+    tirenv_train_settings s = t->paper ? tirenv_train_paper(t->type)
+                                       : tirenv_train_default(t->type);
+    if (t->ensemble > 0)
+        s.ensemble = (size_t)t->ensemble;
+    if (t->input >= 0)
+        s.input = (tirenv_nn_input_form)t->input;
+    if (!isnan(t->even_width))
+        s.even_width = t->even_width;
+    if (t->target >= 0)
+        s.target = (tirenv_nn_target_form)t->target;
+    if (t->loss >= 0)
+        s.loss = (tirenv_train_loss)t->loss;
     if (t->seed >= 0)
         s.seed = (unsigned long)t->seed;
     if (t->restarts >= 0)
@@ -230,7 +301,20 @@ static void print_report(const char *data, const tirenv_dataset *ds,
     for (size_t l = 0; l < s->topology.n_layers; ++l)
         printf("%s%zu", l ? "-" : "", s->topology.size[l]);
     printf(", seed %lu\n", s->seed);
-    printf("  kept restart %zu of %zu: least control error at epoch %zu of %zu (stopped: %s, "
+    printf("  input %s", tirenv_nn_input_form_name(s->input));
+    if (s->input == TIRENV_NN_INPUT_EVEN)
+        printf(" (width %g)", s->even_width);
+    printf(", target %s, loss over %s; ", tirenv_nn_target_form_name(s->target),
+           tirenv_train_loss_name(s->loss));
+    if (r->members > 1) {
+        printf("the mean of the %zu restarts best on control (", r->members);
+        for (size_t k = 0; k < r->members; ++k)
+            printf("%s%zu", k ? ", " : "", r->member_restart[k] + 1);
+        printf(" of %zu)\n", s->restarts);
+    } else {
+        printf("the restart best on control alone\n");
+    }
+    printf("  best restart %zu of %zu: least control error at epoch %zu of %zu (stopped: %s, "
            "%.3f s in)\n", r->restart + 1, s->restarts, r->best_epoch, r->epochs,
            tirenv_train_stop_name(r->stop), r->best_time);
     printf("  %zu epochs in all, wall time %.3f s\n", r->total_epochs, r->wall_time);
@@ -240,14 +324,35 @@ static void print_report(const char *data, const tirenv_dataset *ds,
                r->error[sp].n, r->error[sp].rms * 1e3, r->error[sp].max * 1e3);
 }
 
+/* --seeds: one line per seed, then the spread. */
+static void print_seeds(const tirenv_dataset *ds, const tirenv_nn_seeds *r)
+{
+    printf("  %6s %10s", "seed", "mean mm");
+    for (size_t c = 0; c < r->n_cases; ++c)
+        printf(" %8s", ds->cases[r->case_index[c]].name);
+    printf("   (validation RMS per case, mm)\n");
+    for (size_t k = 0; k < r->n_seeds; ++k) {
+        printf("  %6lu %10.4f", r->seed[k], 1e3 * r->mean_rms[k]);
+        for (size_t c = 0; c < r->n_cases; ++c)
+            printf(" %8.4f", 1e3 * r->rms[k * r->n_cases + c]);
+        printf("%s\n", k == r->median_seed ? "   <- nearest the median" : "");
+    }
+    printf("  over %zu seeds (%.2f s): median %.4f mm, quartiles %.4f to %.4f mm (IQR %.4f), "
+           "range %.4f to %.4f mm\n", r->n_seeds, r->seconds, 1e3 * r->median, 1e3 * r->q1,
+           1e3 * r->q3, 1e3 * (r->q3 - r->q1), 1e3 * r->min, 1e3 * r->max);
+    printf("  control cases, the same measure: median %.4f mm, quartiles %.4f to %.4f mm\n",
+           1e3 * r->control_median, 1e3 * r->control_q1, 1e3 * r->control_q3);
+}
+
 int cli_train_main(int argc, char *argv[])
 {
     cli_options o;
     train_options t;
     memset(&t, 0, sizeof t);
     t.type = tirenv_trainer_lm;
-    t.seed = t.restarts = t.epochs = t.patience = -1;
-    t.learning_rate = t.momentum = NAN;
+    t.seed = t.restarts = t.epochs = t.patience = t.ensemble = t.seeds = -1;
+    t.input = t.target = t.loss = -1;
+    t.learning_rate = t.momentum = t.even_width = NAN;
     int code = parse(argc, argv, &o, &t);
     if (code != CLI_GO_ON)
         return code;
@@ -277,20 +382,34 @@ int cli_train_main(int argc, char *argv[])
 
     tirenv_train_settings set = settings_from(&t);
     set.jobs = o.jobs;
-    bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0};
-    if (isatty(STDERR_FILENO)) {
+    bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0,
+             .over_H = set.target == TIRENV_NN_TARGET_H_OVER_H};
+    if (isatty(STDERR_FILENO) && t.seeds < 0) {
         set.progress = draw;
         set.progress_data = &b;
     }
     tirenv_train_report rep;
-    status = tirenv_train(t.type, &set, &s[0], &s[1], &s[2], &nn, &rep, &diag);
+    tirenv_nn_seeds spread;
+    memset(&spread, 0, sizeof spread);
+    if (t.seeds > 0) {
+        status = tirenv_nn_train_seeds(t.type, &set, &ds, &ds, tire.springs.R0, (size_t)t.seeds,
+                                       &spread, &nn, &rep, &diag);
+        if (!status)
+            set.seed = spread.seed[spread.median_seed];
+    } else {
+        status = tirenv_train(t.type, &set, &s[0], &s[1], &s[2], &nn, &rep, &diag);
+    }
     if (b.drawn)
         fputs("\r\033[K", stderr);
     if (status) {
+        tirenv_nn_seeds_free(&spread);
         code = cli_fail(status, &diag);
         goto done;
     }
     print_report(t.data, &ds, &set, b.trainer, &rep);
+    if (t.seeds > 0)
+        print_seeds(&ds, &spread);
+    tirenv_nn_seeds_free(&spread);
 
     if (o.output) {
         tirenv_train_record rec;

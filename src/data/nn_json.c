@@ -4,17 +4,23 @@
  * numbers against a checksum, and a failure names the file and the field.
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
- * Layout (version 1):
- *   format "tirenv-nn", version 1, inputs [names], output "h_m", topology [4, 8, 1],
+ * Layout (version 2):
+ *   format "tirenv-nn", version 2, inputs [names], output "h_m", topology [4, 8, 1],
  *   activation {hidden "logistic", output "identity"},
+ *   input_form "paper" | "even", even_width a, target "h" | "h/H"            (nn.h),
  *   scaling {input_mean [], input_std [], output_mean, output_std},
  *   input_range {min [], max []},
- *   layers [{bias [n_out], weights [[n_out] per input neuron]}]   (tirenv_nn_weights order),
- *   checksum "fnv1a64:<16 hex>" over topology, weights, scaling and ranges,
- *   training (optional) {trainer, seed, restarts, max_epochs, patience,
+ *   members [{layers [{bias [n_out], weights [[n_out] per input neuron]}]}]  (one per network
+ *     of the ensemble, each in tirenv_nn_weights order),
+ *   checksum "fnv1a64:<16 hex>" over topology, weights, scaling and ranges, then the member
+ *     count, the two forms and the even width,
+ *   training (optional) {trainer, seed, restarts, ensemble, loss, max_epochs, patience,
  *     settings {backprop {}, rprop {}, lm {}}, data {dir, fingerprint, tire_R0_m},
- *     result {restart, epochs, best_epoch, best_time_s, total_epochs, wall_time_s, stop},
- *     errors_m {train {n, rms, max}, control {}, validation {}}} */
+ *     result {restart, members [restarts], epochs, best_epoch, best_time_s, total_epochs,
+ *     wall_time_s, stop}, errors_m {train {n, rms, max}, control {}, validation {}}}
+ * Version 1 (still read) had one network: its "layers" at the top level, no forms, no
+ * members (the paper's x_N and h), its checksum without the last three, and no ensemble,
+ * loss or result.members in the training record. */
 #include <inttypes.h>
 #include <limits.h>
 #include <math.h>
@@ -55,7 +61,7 @@ static uint64_t fnv_doubles(uint64_t h, size_t n, const double v[])
     return h;
 }
 
-static uint64_t nn_checksum(const tirenv_nn *nn)
+static uint64_t nn_checksum(const tirenv_nn *nn, int version)
 {
     const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
     const size_t n_in = tirenv_nn_n_inputs(nn);
@@ -71,7 +77,17 @@ static uint64_t nn_checksum(const tirenv_nn *nn)
     h = fnv_doubles(h, n_in, std);
     h = fnv_doubles(h, 2, out);
     h = fnv_doubles(h, n_in, lo);
-    return fnv_doubles(h, n_in, hi);
+    h = fnv_doubles(h, n_in, hi);
+    if (version < 2)
+        return h;
+    tirenv_nn_input_form input;
+    tirenv_nn_target_form target;
+    tirenv_nn_get_form(nn, &input, &target);
+    const double a = tirenv_nn_get_even_width(nn);
+    h = fnv_u64(h, tirenv_nn_n_members(nn));
+    h = fnv_u64(h, (uint64_t)input);
+    h = fnv_u64(h, (uint64_t)target);
+    return fnv_doubles(h, 1, &a);
 }
 
 static void hash_text(char *buf, size_t n, uint64_t h)
@@ -148,6 +164,8 @@ static json_t *training_json(wctx *c, const tirenv_train_record *rec)
     put(c, t, "trainer", json_string(rec->trainer));
     put(c, t, "seed", json_integer((json_int_t)s->seed));
     put(c, t, "restarts", json_integer((json_int_t)s->restarts));
+    put(c, t, "ensemble", json_integer((json_int_t)s->ensemble));
+    put(c, t, "loss", json_string(tirenv_train_loss_name(s->loss)));
     put(c, t, "max_epochs", json_integer((json_int_t)s->max_epochs));
     put(c, t, "patience", json_integer((json_int_t)s->patience));
     json_t *set = put(c, t, "settings", json_object());
@@ -185,6 +203,10 @@ static json_t *training_json(wctx *c, const tirenv_train_record *rec)
     json_t *res = put(c, t, "result", json_object());
     if (res) {
         put(c, res, "restart", json_integer((json_int_t)r->restart));
+        json_t *mem = put(c, res, "members", json_array());
+        for (size_t i = 0; mem && i < r->members; ++i)
+            if (json_array_append_new(mem, json_integer((json_int_t)r->member_restart[i])))
+                c->failed = 1;
         put(c, res, "epochs", json_integer((json_int_t)r->epochs));
         put(c, res, "best_epoch", json_integer((json_int_t)r->best_epoch));
         put(c, res, "best_time_s", json_real(r->best_time));
@@ -236,6 +258,12 @@ static json_t *nn_json(wctx *c, const tirenv_nn *nn)
         put(c, act, "hidden", json_string("logistic"));
         put(c, act, "output", json_string("identity"));
     }
+    tirenv_nn_input_form input;
+    tirenv_nn_target_form target;
+    tirenv_nn_get_form(nn, &input, &target);
+    put(c, root, "input_form", json_string(tirenv_nn_input_form_name(input)));
+    put(c, root, "even_width", json_real(tirenv_nn_get_even_width(nn)));
+    put(c, root, "target", json_string(tirenv_nn_target_form_name(target)));
     json_t *sc = put(c, root, "scaling", json_object());
     if (sc) {
         put(c, sc, "input_mean", real_array(c, n_in, mean, 1));
@@ -248,23 +276,32 @@ static json_t *nn_json(wctx *c, const tirenv_nn *nn)
         put(c, range, "min", real_array(c, n_in, lo, 1));
         put(c, range, "max", real_array(c, n_in, hi, 1));
     }
-    json_t *layers = put(c, root, "layers", json_array());
-    for (size_t l = 1; layers && l < t->n_layers; ++l) {
-        const size_t n_prev = t->size[l - 1], n_out = t->size[l];
-        const double *wl = w + tirenv_nn_weight_index(nn, l, 0, 0);
-        json_t *layer = json_object();
-        if (!layer || json_array_append_new(layers, layer)) {
+    json_t *members = put(c, root, "members", json_array());
+    const size_t K = tirenv_nn_n_members(nn), per = tirenv_nn_n_weights(nn) / K;
+    for (size_t k = 0; members && k < K; ++k) {
+        json_t *member = json_object();
+        if (!member || json_array_append_new(members, member)) {
             c->failed = 1;
             break;
         }
-        put(c, layer, "bias", real_array(c, n_out, wl, 1));
-        json_t *rows = put(c, layer, "weights", json_array());
-        for (size_t i = 0; rows && i < n_prev; ++i)
-            if (json_array_append_new(rows, real_array(c, n_out, wl + (1 + i) * n_out, 1)))
+        json_t *layers = put(c, member, "layers", json_array());
+        for (size_t l = 1; layers && l < t->n_layers; ++l) {
+            const size_t n_prev = t->size[l - 1], n_out = t->size[l];
+            const double *wl = w + k * per + tirenv_nn_weight_index(nn, l, 0, 0);
+            json_t *layer = json_object();
+            if (!layer || json_array_append_new(layers, layer)) {
                 c->failed = 1;
+                break;
+            }
+            put(c, layer, "bias", real_array(c, n_out, wl, 1));
+            json_t *rows = put(c, layer, "weights", json_array());
+            for (size_t i = 0; rows && i < n_prev; ++i)
+                if (json_array_append_new(rows, real_array(c, n_out, wl + (1 + i) * n_out, 1)))
+                    c->failed = 1;
+        }
     }
     char sum[32];
-    hash_text(sum, sizeof sum, nn_checksum(nn));
+    hash_text(sum, sizeof sum, nn_checksum(nn, TIRENV_NN_FORMAT_VERSION));
     put(c, root, "checksum", json_string(sum));
     return root;
 }
@@ -296,6 +333,11 @@ static int check_finite(const tirenv_nn *nn, const tirenv_train_record *rec, tir
             if (!isfinite(v[k]))
                 return tirenv_error(diag, TIRENV_EINVAL, path, 0, "training",
                                     "a training figure is %g; expected finite numbers", v[k]);
+        if (r->members > TIRENV_NN_MAX_MEMBERS ||
+            (r->members && r->members != tirenv_nn_n_members(nn)))
+            return tirenv_error(diag, TIRENV_EINVAL, path, 0, "training.result.members",
+                                "the record lists %zu members; the model has %zu", r->members,
+                                tirenv_nn_n_members(nn));
         if (rec->settings.seed > (unsigned long)NN_JSON_INT_MAX)
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "training.seed",
                                 "seed %lu is beyond JSON's integers", rec->settings.seed);
@@ -489,7 +531,7 @@ static int read_topology(const rctx *c, const json_t *root, tirenv_nn_topology *
     return TIRENV_OK;
 }
 
-static int read_header(const rctx *c, const json_t *root)
+static int read_header(const rctx *c, const json_t *root, int *version)
 {
     char buf[64];
     json_t *v;
@@ -501,9 +543,51 @@ static int read_header(const rctx *c, const json_t *root)
                    TIRENV_NN_FORMAT);
     if ((status = member(c, root, "version", "version", JSON_INTEGER, &v)))
         return status;
-    if (json_integer_value(v) != TIRENV_NN_FORMAT_VERSION)
-        return bad(c, "version", "format version %lld; this build reads version %d only",
+    if (json_integer_value(v) < 1 || json_integer_value(v) > TIRENV_NN_FORMAT_VERSION)
+        return bad(c, "version", "format version %lld; this build reads versions 1 to %d",
                    (long long)json_integer_value(v), TIRENV_NN_FORMAT_VERSION);
+    *version = (int)json_integer_value(v);
+    return TIRENV_OK;
+}
+
+/* Version 2: the forms, and how many networks the "members" array holds. Version 1: one
+ * network of the paper's forms. */
+static int read_forms(const rctx *c, const json_t *root, int version,
+                      tirenv_nn_input_form *input, double *even_width,
+                      tirenv_nn_target_form *target, size_t *members)
+{
+    *input = TIRENV_NN_INPUT_PAPER;
+    *even_width = TIRENV_NN_EVEN_WIDTH;
+    *target = TIRENV_NN_TARGET_H;
+    *members = 1;
+    if (version < 2)
+        return TIRENV_OK;
+    char buf[32];
+    json_t *m;
+    int status = get_string(c, root, "input_form", "input_form", buf, sizeof buf);
+    if (status)
+        return status;
+    const int in = tirenv_nn_input_form_find(buf);
+    if (in < 0)
+        return bad(c, "input_form", "'%s'; expected 'paper' (x_N) or 'even' (the distance "
+                   "from x_N = 1, rounded)", buf);
+    if ((status = get_number(c, root, "even_width", "even_width", even_width)))
+        return status;
+    if (!(*even_width > 0))
+        return bad(c, "even_width", "%g; expected > 0", *even_width);
+    if ((status = get_string(c, root, "target", "target", buf, sizeof buf)))
+        return status;
+    const int out = tirenv_nn_target_form_find(buf);
+    if (out < 0)
+        return bad(c, "target", "'%s'; expected 'h' or 'h/H'", buf);
+    if ((status = member(c, root, "members", "members", JSON_ARRAY, &m)))
+        return status;
+    if (json_array_size(m) < 1 || json_array_size(m) > TIRENV_NN_MAX_MEMBERS)
+        return bad(c, "members", "%zu networks; expected 1 to %d", json_array_size(m),
+                   TIRENV_NN_MAX_MEMBERS);
+    *input = (tirenv_nn_input_form)in;
+    *target = (tirenv_nn_target_form)out;
+    *members = json_array_size(m);
     return TIRENV_OK;
 }
 
@@ -541,9 +625,45 @@ static int read_inputs(const rctx *c, const json_t *root, size_t n_in)
     return TIRENV_OK;
 }
 
-static int read_network(const rctx *c, const json_t *root, tirenv_nn *nn)
+/* One network's "layers" array into the weights w of one member. */
+static int read_layers(const rctx *c, const json_t *layers, const char *prefix,
+                       const tirenv_nn *nn, double *w)
 {
     const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    int status;
+    if (json_array_size(layers) != t->n_layers - 1)
+        return bad(c, prefix, "%zu layers of weights; the topology needs %zu",
+                   json_array_size(layers), t->n_layers - 1);
+    for (size_t l = 1; l < t->n_layers; ++l) {
+        const size_t n_prev = t->size[l - 1], n_out = t->size[l];
+        double *wl = w + tirenv_nn_weight_index(nn, l, 0, 0);
+        const json_t *layer = json_array_get(layers, l - 1);
+        char field[96];
+        json_t *rows;
+        snprintf(field, sizeof field, "%s[%zu]", prefix, l - 1);
+        if (!json_is_object(layer))
+            return bad(c, field, "expected an object, found %s", json_kind(layer));
+        snprintf(field, sizeof field, "%s[%zu].bias", prefix, l - 1);
+        if ((status = get_number_array(c, layer, "bias", field, n_out, wl)))
+            return status;
+        snprintf(field, sizeof field, "%s[%zu].weights", prefix, l - 1);
+        if ((status = member(c, layer, "weights", field, JSON_ARRAY, &rows)))
+            return status;
+        if (json_array_size(rows) != n_prev)
+            return bad(c, field, "%zu rows; expected one per input neuron, %zu",
+                       json_array_size(rows), n_prev);
+        for (size_t i = 0; i < n_prev; ++i) {
+            snprintf(field, sizeof field, "%s[%zu].weights[%zu]", prefix, l - 1, i);
+            if ((status = number_array(c, json_array_get(rows, i), field, n_out,
+                                       wl + (1 + i) * n_out)))
+                return status;
+        }
+    }
+    return TIRENV_OK;
+}
+
+static int read_network(const rctx *c, const json_t *root, int version, tirenv_nn *nn)
+{
     const size_t n_in = tirenv_nn_n_inputs(nn);
     double *w = tirenv_nn_weights(nn);
     double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
@@ -571,33 +691,24 @@ static int read_network(const rctx *c, const json_t *root, tirenv_nn *nn)
     tirenv_nn_set_scaling(nn, mean, std, out_mean, out_std, NULL);
     tirenv_nn_set_input_range(nn, lo, hi, NULL);
 
-    if ((status = member(c, root, "layers", "layers", JSON_ARRAY, &layers)))
-        return status;
-    if (json_array_size(layers) != t->n_layers - 1)
-        return bad(c, "layers", "%zu layers of weights; the topology needs %zu",
-                   json_array_size(layers), t->n_layers - 1);
-    for (size_t l = 1; l < t->n_layers; ++l) {
-        const size_t n_prev = t->size[l - 1], n_out = t->size[l];
-        double *wl = w + tirenv_nn_weight_index(nn, l, 0, 0);
-        const json_t *layer = json_array_get(layers, l - 1);
-        char field[64];
-        json_t *rows;
-        snprintf(field, sizeof field, "layers[%zu]", l - 1);
-        if (!json_is_object(layer))
-            return bad(c, field, "expected an object, found %s", json_kind(layer));
-        snprintf(field, sizeof field, "layers[%zu].bias", l - 1);
-        if ((status = get_number_array(c, layer, "bias", field, n_out, wl)))
+    if (version < 2) {
+        if ((status = member(c, root, "layers", "layers", JSON_ARRAY, &layers)) ||
+            (status = read_layers(c, layers, "layers", nn, w)))
             return status;
-        snprintf(field, sizeof field, "layers[%zu].weights", l - 1);
-        if ((status = member(c, layer, "weights", field, JSON_ARRAY, &rows)))
+    } else {
+        json_t *members;
+        const size_t K = tirenv_nn_n_members(nn), per = tirenv_nn_n_weights(nn) / K;
+        if ((status = member(c, root, "members", "members", JSON_ARRAY, &members)))
             return status;
-        if (json_array_size(rows) != n_prev)
-            return bad(c, field, "%zu rows; expected one per input neuron, %zu",
-                       json_array_size(rows), n_prev);
-        for (size_t i = 0; i < n_prev; ++i) {
-            snprintf(field, sizeof field, "layers[%zu].weights[%zu]", l - 1, i);
-            if ((status = number_array(c, json_array_get(rows, i), field, n_out,
-                                       wl + (1 + i) * n_out)))
+        for (size_t k = 0; k < K; ++k) {
+            char field[64];
+            const json_t *m = json_array_get(members, k);
+            snprintf(field, sizeof field, "members[%zu]", k);
+            if (!json_is_object(m))
+                return bad(c, field, "expected an object, found %s", json_kind(m));
+            snprintf(field, sizeof field, "members[%zu].layers", k);
+            if ((status = member(c, m, "layers", field, JSON_ARRAY, &layers)) ||
+                (status = read_layers(c, layers, field, nn, w + k * per)))
                 return status;
         }
     }
@@ -607,9 +718,9 @@ static int read_network(const rctx *c, const json_t *root, tirenv_nn *nn)
         return status;
     if (hash_parse(sum, &h))
         return bad(c, "checksum", "'%s'; expected 'fnv1a64:' and 16 lower-case hex digits", sum);
-    if (h != nn_checksum(nn)) {
+    if (h != nn_checksum(nn, version)) {
         char want[32];
-        hash_text(want, sizeof want, nn_checksum(nn));
+        hash_text(want, sizeof want, nn_checksum(nn, version));
         return bad(c, "checksum", "the network's numbers give %s, the file says %s: the file "
                    "was altered or corrupted", want, sum);
     }
@@ -641,13 +752,16 @@ static int read_error(const rctx *c, const json_t *errs, const char *key,
     return TIRENV_OK;
 }
 
-static int read_training(const rctx *c, const json_t *root, const tirenv_nn *nn,
+static int read_training(const rctx *c, const json_t *root, int version, const tirenv_nn *nn,
                          tirenv_train_record *rec)
 {
     json_t *t = json_object_get(root, "training");
     memset(rec, 0, sizeof *rec);
-    rec->settings = tirenv_train_default(NULL);
+    rec->settings = tirenv_train_paper(NULL);
     rec->settings.topology = *tirenv_nn_get_topology(nn);
+    tirenv_nn_get_form(nn, &rec->settings.input, &rec->settings.target);
+    rec->settings.even_width = tirenv_nn_get_even_width(nn);
+    rec->report.members = tirenv_nn_n_members(nn);
     if (!t)
         return TIRENV_OK;  /* a network without its training record: allowed */
     if (!json_is_object(t))
@@ -671,6 +785,16 @@ static int read_training(const rctx *c, const json_t *root, const tirenv_nn *nn,
         (status = get_count(c, t, "patience", "training.patience", big, &s->patience)))
         return status;
     s->seed = (unsigned long)seed;
+    if (version >= 2) {
+        if ((status = get_count(c, t, "ensemble", "training.ensemble", TIRENV_NN_MAX_MEMBERS,
+                                &s->ensemble)) ||
+            (status = get_string(c, t, "loss", "training.loss", buf, sizeof buf)))
+            return status;
+        const int loss = tirenv_train_loss_find(buf);
+        if (loss < 0)
+            return bad(c, "training.loss", "'%s'; expected 'points' or 'curves'", buf);
+        s->loss = (tirenv_train_loss)loss;
+    }
     if ((status = member(c, t, "settings", "training.settings", JSON_OBJECT, &set)) ||
         (status = member(c, set, "backprop", "training.settings.backprop", JSON_OBJECT, &b)) ||
         (status = get_number(c, b, "learning_rate",
@@ -736,6 +860,28 @@ static int read_training(const rctx *c, const json_t *root, const tirenv_nn *nn,
                              &r->wall_time)) ||
         (status = get_string(c, res, "stop", "training.result.stop", buf, sizeof buf)))
         return status;
+    r->members = 0;
+    if (version < 2) {
+        r->members = 1;
+        r->member_restart[0] = r->restart;
+    } else {
+        json_t *mem;
+        if ((status = member(c, res, "members", "training.result.members", JSON_ARRAY, &mem)))
+            return status;
+        const size_t n = json_array_size(mem);
+        if (n != 0 && n != tirenv_nn_n_members(nn))
+            return bad(c, "training.result.members", "%zu restarts listed for %zu networks", n,
+                       tirenv_nn_n_members(nn));
+        for (size_t i = 0; i < n; ++i) {
+            const json_t *e = json_array_get(mem, i);
+            if (!json_is_integer(e) || json_integer_value(e) < 0 ||
+                (unsigned long long)json_integer_value(e) >= s->restarts)
+                return bad(c, "training.result.members", "element %zu: expected a restart "
+                           "number from 0 to %zu", i, s->restarts ? s->restarts - 1 : 0);
+            r->member_restart[i] = (size_t)json_integer_value(e);
+        }
+        r->members = n;
+    }
     if (r->best_epoch > r->epochs || r->epochs > r->total_epochs ||
         (s->restarts && r->restart >= s->restarts) || r->best_time < 0 || r->wall_time < 0)
         return bad(c, "training.result", "inconsistent: restart %zu of %zu, best epoch %zu of "
@@ -780,24 +926,36 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
             diag->column = (size_t)err.column;
         return status;
     }
-    int status = TIRENV_OK;
+    int status = TIRENV_OK, version = 0;
     tirenv_nn_topology t;
+    tirenv_nn_input_form input;
+    tirenv_nn_target_form target;
+    double even_width;
+    size_t members = 1;
     tirenv_nn *nn = NULL;
     if (!json_is_object(root))
         status = bad(&c, "", "expected a JSON object at the top, found %s", json_kind(root));
     if (!status)
-        status = read_header(&c, root);
+        status = read_header(&c, root, &version);
     if (!status)
         status = read_topology(&c, root, &t);
     if (!status)
         status = read_inputs(&c, root, t.size[0]);
-    if (!status && !(nn = tirenv_nn_alloc(&t)))
-        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
     if (!status)
-        status = read_network(&c, root, nn);
+        status = read_forms(&c, root, version, &input, &even_width, &target, &members);
+    if (!status && !(nn = tirenv_nn_alloc_ensemble(&t, members)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    tirenv_diag why;
+    tirenv_diag_clear(&why);
+    if (!status && tirenv_nn_set_form(nn, input, target, &why))
+        status = bad(&c, "input_form", "%s", why.message);
+    if (!status)
+        tirenv_nn_set_even_width(nn, even_width, NULL);
+    if (!status)
+        status = read_network(&c, root, version, nn);
     tirenv_train_record scratch;
     if (!status)
-        status = read_training(&c, root, nn, rec ? rec : &scratch);
+        status = read_training(&c, root, version, nn, rec ? rec : &scratch);
     json_decref(root);
     if (status) {
         tirenv_nn_free(nn);

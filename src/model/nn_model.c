@@ -221,6 +221,19 @@ static void warn_clamped(nn_state *st, const tirenv_nn_road_info *in)
          "their curves are the nearest trained cleat's", clamped, in->obstacles, detail);
 }
 
+/* The network's forms after the note: what the model file says it was trained as. */
+static void note_forms(nn_state *st)
+{
+    tirenv_nn_input_form input;
+    tirenv_nn_target_form target;
+    tirenv_nn_get_form(st->nn, &input, &target);
+    const size_t used = strlen(st->note), K = tirenv_nn_n_members(st->nn);
+    snprintf(st->note + used, sizeof st->note - used,
+             "; network: input %s, target %s, mean of %zu network%s",
+             tirenv_nn_input_form_name(input), tirenv_nn_target_form_name(target), K,
+             K == 1 ? "" : "s");
+}
+
 static int nn_model_set(void *state, const tirenv_profile *p, double load, double z_flat,
                         tirenv_diag *diag)
 {
@@ -244,6 +257,7 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
         warn_range(st, TIRENV_NN_INPUTS);
         st->x_0 = tirenv_xN_origin(st->R0, st->l_c, st->L, st->H);
         snprintf(st->note, sizeof st->note, "cleat %.4g x %.4g m", st->L, st->H);
+        note_forms(st);
         /* No positions: only the checks of the arguments, so that set says what is wrong. */
         return tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, 0, NULL, NULL, diag);
     }
@@ -256,6 +270,7 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     snprintf(st->note, sizeof st->note, "%zu obstacles above a baseline of width %.3g m (%zu "
              "lower than the lowest trained cleat, scaled)", in.obstacles, in.width,
              in.height_below);
+    note_forms(st);
     return TIRENV_OK;
 }
 

@@ -42,7 +42,12 @@ enum { NN_LANES = 8 };
 struct tirenv_nn {
     tirenv_nn_topology top;
     size_t n_in;                          /* inputs, top.size[0] */
-    size_t n_weights;
+    size_t members;                       /* K: networks averaged (1: a single one) */
+    size_t member_weights;                /* weights of one member */
+    size_t n_weights;                     /* K*member_weights */
+    tirenv_nn_input_form input_form;
+    tirenv_nn_target_form target_form;
+    double even_width;                    /* a of the even form */
     size_t n_act;                         /* neurons over all layers, with padding */
     size_t w_off[TIRENV_NN_MAX_LAYERS];   /* first weight of layer l, l >= 1 */
     size_t a_off[TIRENV_NN_MAX_LAYERS];   /* first activation of layer l, a multiple of
@@ -52,8 +57,9 @@ struct tirenv_nn {
      * the resulting control flow stops it vectorising the loop. */
     double net_max;
     double out_mean, out_std;             /* output scaling, units of the output */
-    double *w;                            /* n_weights, then NN_LANES zeros (read, never
-                                             used, by the last group of layer_run) */
+    double *w;                            /* n_weights (member after member), then NN_LANES
+                                             zeros (read, never used, by the last group of
+                                             layer_run) */
     double *in_mean, *in_std, *in_inv_std;/* n_in each: input scaling */
     double *in_lo, *in_hi;                /* n_in each: range seen in training */
     double *a;                            /* n_act: activations of one sample, layers
@@ -63,6 +69,32 @@ struct tirenv_nn {
     double *blk;                          /* NN_BLOCK*n_act, 64-byte aligned: activations of a
                                              block of samples, neuron-major */
 };
+
+const char *tirenv_nn_input_form_name(tirenv_nn_input_form f)
+{
+    return f == TIRENV_NN_INPUT_PAPER ? "paper" : f == TIRENV_NN_INPUT_EVEN ? "even" : NULL;
+}
+
+const char *tirenv_nn_target_form_name(tirenv_nn_target_form f)
+{
+    return f == TIRENV_NN_TARGET_H ? "h" : f == TIRENV_NN_TARGET_H_OVER_H ? "h/H" : NULL;
+}
+
+int tirenv_nn_input_form_find(const char *name)
+{
+    for (int f = TIRENV_NN_INPUT_PAPER; f <= TIRENV_NN_INPUT_EVEN; ++f)
+        if (name && strcmp(name, tirenv_nn_input_form_name((tirenv_nn_input_form)f)) == 0)
+            return f;
+    return -1;
+}
+
+int tirenv_nn_target_form_find(const char *name)
+{
+    for (int f = TIRENV_NN_TARGET_H; f <= TIRENV_NN_TARGET_H_OVER_H; ++f)
+        if (name && strcmp(name, tirenv_nn_target_form_name((tirenv_nn_target_form)f)) == 0)
+            return f;
+    return -1;
+}
 
 const char *tirenv_nn_input_name(size_t i)
 {
@@ -101,16 +133,19 @@ static size_t padded(size_t n)
 }
 
 /* One malloc, genann style: the struct, then every array, the block workspace last and
- * rounded up to a 64-byte boundary (a cache line, an AVX-512 register) for aligned loads. */
-tirenv_nn *tirenv_nn_alloc(const tirenv_nn_topology *t)
+ * rounded up to a 64-byte boundary (a cache line, an AVX-512 register) for aligned loads.
+ * The members of an ensemble share everything but their weights. */
+tirenv_nn *tirenv_nn_alloc_ensemble(const tirenv_nn_topology *t, size_t members)
 {
-    if (!t || tirenv_nn_topology_check(t, NULL))
+    if (!t || tirenv_nn_topology_check(t, NULL) || members < 1 ||
+        members > TIRENV_NN_MAX_MEMBERS)
         return NULL;
-    size_t n_weights = 0, n_act = padded(t->size[0]);
+    size_t member_weights = 0, n_act = padded(t->size[0]);
     for (size_t l = 1; l < t->n_layers; ++l) {
-        n_weights += (1 + t->size[l - 1]) * t->size[l];
+        member_weights += (1 + t->size[l - 1]) * t->size[l];
         n_act += padded(t->size[l]);
     }
+    const size_t n_weights = members * member_weights;
     const size_t n_in = t->size[0];
     const size_t n_doubles = n_weights + NN_LANES + 5 * n_in + 2 * n_act + NN_BLOCK * n_act;
     tirenv_nn *nn = malloc(sizeof *nn + (n_doubles + 8) * sizeof(double));
@@ -119,7 +154,12 @@ tirenv_nn *tirenv_nn_alloc(const tirenv_nn_topology *t)
     memset(nn, 0, sizeof *nn);
     nn->top = *t;
     nn->n_in = n_in;
+    nn->members = members;
+    nn->member_weights = member_weights;
     nn->n_weights = n_weights;
+    nn->input_form = TIRENV_NN_INPUT_PAPER;
+    nn->target_form = TIRENV_NN_TARGET_H;
+    nn->even_width = TIRENV_NN_EVEN_WIDTH;
     nn->n_act = n_act;
     nn->net_max = NN_NET_MAX;
     size_t w_off = 0, a_off = padded(t->size[0]);
@@ -154,17 +194,25 @@ tirenv_nn *tirenv_nn_alloc(const tirenv_nn_topology *t)
     return nn;
 }
 
+tirenv_nn *tirenv_nn_alloc(const tirenv_nn_topology *t)
+{
+    return tirenv_nn_alloc_ensemble(t, 1);
+}
+
 void tirenv_nn_free(tirenv_nn *nn)
 {
     free(nn);
 }
 
-int tirenv_nn_copy(tirenv_nn *dst, const tirenv_nn *src)
+static int same_topology(const tirenv_nn *a, const tirenv_nn *b)
 {
-    if (dst->top.n_layers != src->top.n_layers ||
-        memcmp(dst->top.size, src->top.size, src->top.n_layers * sizeof src->top.size[0]))
-        return TIRENV_EINVAL;
-    memcpy(dst->w, src->w, src->n_weights * sizeof(double));
+    return a->top.n_layers == b->top.n_layers &&
+           memcmp(a->top.size, b->top.size, a->top.n_layers * sizeof a->top.size[0]) == 0;
+}
+
+/* Scaling, ranges and forms: what the members of an ensemble share. */
+static void copy_shared(tirenv_nn *dst, const tirenv_nn *src)
+{
     const size_t n = src->n_in * sizeof(double);
     memcpy(dst->in_mean, src->in_mean, n);
     memcpy(dst->in_std, src->in_std, n);
@@ -173,12 +221,63 @@ int tirenv_nn_copy(tirenv_nn *dst, const tirenv_nn *src)
     memcpy(dst->in_hi, src->in_hi, n);
     dst->out_mean = src->out_mean;
     dst->out_std = src->out_std;
+    dst->input_form = src->input_form;
+    dst->target_form = src->target_form;
+    dst->even_width = src->even_width;
+}
+
+static int same_shared(const tirenv_nn *a, const tirenv_nn *b)
+{
+    const size_t n = a->n_in * sizeof(double);
+    return memcmp(a->in_mean, b->in_mean, n) == 0 && memcmp(a->in_std, b->in_std, n) == 0 &&
+           memcmp(a->in_lo, b->in_lo, n) == 0 && memcmp(a->in_hi, b->in_hi, n) == 0 &&
+           memcmp(&a->out_mean, &b->out_mean, sizeof a->out_mean) == 0 &&
+           memcmp(&a->out_std, &b->out_std, sizeof a->out_std) == 0 &&
+           a->input_form == b->input_form && a->target_form == b->target_form &&
+           memcmp(&a->even_width, &b->even_width, sizeof a->even_width) == 0;
+}
+
+int tirenv_nn_copy(tirenv_nn *dst, const tirenv_nn *src)
+{
+    if (!same_topology(dst, src) || dst->members != src->members)
+        return TIRENV_EINVAL;
+    memcpy(dst->w, src->w, src->n_weights * sizeof(double));
+    copy_shared(dst, src);
     return TIRENV_OK;
+}
+
+tirenv_nn *tirenv_nn_ensemble(const tirenv_nn *const nets[], size_t n)
+{
+    if (!nets || n < 1 || n > TIRENV_NN_MAX_MEMBERS)
+        return NULL;
+    for (size_t k = 0; k < n; ++k)
+        if (!nets[k] || nets[k]->members != 1 || !same_topology(nets[0], nets[k]) ||
+            !same_shared(nets[0], nets[k]))
+            return NULL;
+    tirenv_nn *e = tirenv_nn_alloc_ensemble(&nets[0]->top, n);
+    if (!e)
+        return NULL;
+    copy_shared(e, nets[0]);
+    for (size_t k = 0; k < n; ++k)
+        memcpy(e->w + k * e->member_weights, nets[k]->w, e->member_weights * sizeof(double));
+    return e;
+}
+
+tirenv_nn *tirenv_nn_member(const tirenv_nn *nn, size_t k)
+{
+    if (k >= nn->members)
+        return NULL;
+    tirenv_nn *m = tirenv_nn_alloc(&nn->top);
+    if (!m)
+        return NULL;
+    copy_shared(m, nn);
+    memcpy(m->w, nn->w + k * nn->member_weights, nn->member_weights * sizeof(double));
+    return m;
 }
 
 tirenv_nn *tirenv_nn_clone(const tirenv_nn *nn)
 {
-    tirenv_nn *c = tirenv_nn_alloc(&nn->top);
+    tirenv_nn *c = tirenv_nn_alloc_ensemble(&nn->top, nn->members);
     if (c)
         tirenv_nn_copy(c, nn);
     return c;
@@ -186,6 +285,7 @@ tirenv_nn *tirenv_nn_clone(const tirenv_nn *nn)
 
 const tirenv_nn_topology *tirenv_nn_get_topology(const tirenv_nn *nn) { return &nn->top; }
 size_t tirenv_nn_n_inputs(const tirenv_nn *nn) { return nn->n_in; }
+size_t tirenv_nn_n_members(const tirenv_nn *nn) { return nn->members; }
 size_t tirenv_nn_n_weights(const tirenv_nn *nn) { return nn->n_weights; }
 double *tirenv_nn_weights(tirenv_nn *nn) { return nn->w; }
 const double *tirenv_nn_weights_const(const tirenv_nn *nn) { return nn->w; }
@@ -198,12 +298,14 @@ size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
 /* Nguyen and Widrow (1990): spread the hidden neurons' active regions over the input space,
  * which they assume to be [-1, 1]^n_in; the standardised inputs are close to that. The
  * uniform draws come from the caller's rng, so a seed fixes the weights bit for bit. */
-void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
+/* One member's weights w (its layers in tirenv_nn_weights order). */
+static void init_member(const tirenv_nn_topology *top, const size_t w_off[], double *w0,
+                        gsl_rng *rng)
 {
-    const size_t L = nn->top.n_layers - 1;
+    const size_t L = top->n_layers - 1;
     for (size_t l = 1; l <= L; ++l) {
-        const size_t n_in = nn->top.size[l - 1], n_out = nn->top.size[l];
-        double *w = nn->w + nn->w_off[l];
+        const size_t n_in = top->size[l - 1], n_out = top->size[l];
+        double *w = w0 + w_off[l];
         if (l == L) {
             for (size_t k = 0; k < (1 + n_in) * n_out; ++k)
                 w[k] = gsl_rng_uniform(rng) - 0.5;
@@ -223,6 +325,68 @@ void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
             w[j] = beta * (2 * gsl_rng_uniform(rng) - 1);
         }
     }
+}
+
+void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
+{
+    for (size_t m = 0; m < nn->members; ++m)
+        init_member(&nn->top, nn->w_off, nn->w + m * nn->member_weights, rng);
+}
+
+int tirenv_nn_set_form(tirenv_nn *nn, tirenv_nn_input_form input, tirenv_nn_target_form target,
+                       tirenv_diag *diag)
+{
+    if (!tirenv_nn_input_form_name(input) || !tirenv_nn_target_form_name(target))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "form",
+                            "input form %d, target form %d; expected paper or even, h or h/H",
+                            (int)input, (int)target);
+    if ((input != TIRENV_NN_INPUT_PAPER || target != TIRENV_NN_TARGET_H) &&
+        nn->n_in != TIRENV_NN_INPUTS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "form",
+                            "the %s input and the %s target need the enveloping model's %d "
+                            "inputs (x_N, l_c, H, L); this network has %zu",
+                            tirenv_nn_input_form_name(input), tirenv_nn_target_form_name(target),
+                            TIRENV_NN_INPUTS, nn->n_in);
+    nn->input_form = input;
+    nn->target_form = target;
+    return TIRENV_OK;
+}
+
+void tirenv_nn_get_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
+                        tirenv_nn_target_form *target)
+{
+    if (input)
+        *input = nn->input_form;
+    if (target)
+        *target = nn->target_form;
+}
+
+int tirenv_nn_set_even_width(tirenv_nn *nn, double a, tirenv_diag *diag)
+{
+    if (!(a > 0) || !isfinite(a))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "even_width",
+                            "%g; expected a finite width > 0 (in x_N)", a);
+    nn->even_width = a;
+    return TIRENV_OK;
+}
+
+double tirenv_nn_get_even_width(const tirenv_nn *nn) { return nn->even_width; }
+
+/* The even form's feature of x_N: the distance 1 - x_N from the centre, rounded over the
+ * width a. */
+NN_INLINE double even_feature(double x_N, double a)
+{
+    const double d = 1 - x_N;
+    return sqrt(d * d + a * a) - a;
+}
+
+/* The feature the network sees for input i of value v: the even form's for x_N, else the
+ * input itself. */
+NN_INLINE double feature(const tirenv_nn *nn, size_t i, double v)
+{
+    return nn->input_form == TIRENV_NN_INPUT_EVEN && i == TIRENV_NN_X_N
+               ? even_feature(v, nn->even_width)
+               : v;
 }
 
 int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
@@ -298,6 +462,7 @@ int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const doubl
         lo[i] = INFINITY;
         hi[i] = -INFINITY;
     }
+    const int over_H = nn->target_form == TIRENV_NN_TARGET_H_OVER_H;
     for (size_t s = 0; s < n; ++s) {
         for (size_t i = 0; i < n_in; ++i) {
             const double v = x[s * n_in + i];
@@ -305,24 +470,29 @@ int tirenv_nn_fit_scaling(tirenv_nn *nn, size_t n, const double x[], const doubl
                 return tirenv_error(diag, TIRENV_EINVAL, "", s + 1, tirenv_nn_input_name(i),
                                     "sample %zu: input %zu is %g; expected a finite number", s,
                                     i, v);
-            mean[i] += v;
+            mean[i] += feature(nn, i, v);
             lo[i] = v < lo[i] ? v : lo[i];
             hi[i] = v > hi[i] ? v : hi[i];
         }
         if (!isfinite(y[s]))
             return tirenv_error(diag, TIRENV_EINVAL, "", s + 1, "output",
                                 "sample %zu: output is %g; expected a finite number", s, y[s]);
-        y_mean += y[s];
+        if (over_H && !(x[s * n_in + TIRENV_NN_HEIGHT] > 0))
+            return tirenv_error(diag, TIRENV_EINVAL, "", s + 1, "obstacle_height_m",
+                                "sample %zu: H is %g; the h/H target needs H > 0", s,
+                                x[s * n_in + TIRENV_NN_HEIGHT]);
+        y_mean += over_H ? y[s] / x[s * n_in + TIRENV_NN_HEIGHT] : y[s];
     }
     for (size_t i = 0; i < n_in; ++i)
         mean[i] /= (double)n;
     y_mean /= (double)n;
     for (size_t s = 0; s < n; ++s) {
         for (size_t i = 0; i < n_in; ++i) {
-            const double d = x[s * n_in + i] - mean[i];
+            const double d = feature(nn, i, x[s * n_in + i]) - mean[i];
             std[i] += d * d;
         }
-        y_var += (y[s] - y_mean) * (y[s] - y_mean);
+        const double t = over_H ? y[s] / x[s * n_in + TIRENV_NN_HEIGHT] : y[s];
+        y_var += (t - y_mean) * (t - y_mean);
     }
     for (size_t i = 0; i < n_in; ++i) {
         std[i] = sqrt(std[i] / (double)n);
@@ -501,22 +671,55 @@ NN_INLINE void layer_run_block(size_t n_in, size_t n_out, const double *restrict
     }
 }
 
-NN_CLONES double tirenv_nn_run(tirenv_nn *nn, const double x[])
+/* The scaled features of one sample into layer 0. */
+NN_INLINE void features_run(const tirenv_nn *nn, const double x[], double *restrict a)
+{
+    for (size_t i = 0; i < nn->n_in; ++i)
+        a[i] = (feature(nn, i, x[i]) - nn->in_mean[i]) * nn->in_inv_std[i];
+}
+
+/* Member k's scaled output o_k from the features in layer 0. */
+NN_INLINE double member_run(tirenv_nn *nn, size_t k)
 {
     double *a = nn->a;
-    for (size_t i = 0; i < nn->n_in; ++i)
-        a[i] = (x[i] - nn->in_mean[i]) * nn->in_inv_std[i];
+    const double *w = nn->w + k * nn->member_weights;
     const size_t L = nn->top.n_layers - 1;
     for (size_t l = 1; l <= L; ++l)
-        layer_run(nn->top.size[l - 1], nn->top.size[l], nn->w + nn->w_off[l],
+        layer_run(nn->top.size[l - 1], nn->top.size[l], w + nn->w_off[l],
                   a + nn->a_off[l - 1], a + nn->a_off[l], l < L, nn->net_max);
-    return nn->out_mean + nn->out_std * a[nn->a_off[L]];
+    return a[nn->a_off[L]];
+}
+
+/* y from the sum of the members' outputs: the mean, unscaled, times H for h/H. Dividing by
+ * one member is exact, so a single network gives the bits it always did. */
+NN_INLINE double output_of(const tirenv_nn *nn, const double x[], double sum)
+{
+    const double y = nn->out_mean + nn->out_std * (sum / (double)nn->members);
+    return nn->target_form == TIRENV_NN_TARGET_H_OVER_H ? y * x[TIRENV_NN_HEIGHT] : y;
+}
+
+NN_CLONES double tirenv_nn_run(tirenv_nn *nn, const double x[])
+{
+    features_run(nn, x, nn->a);
+    double sum = member_run(nn, 0);
+    for (size_t k = 1; k < nn->members; ++k)
+        sum += member_run(nn, k);
+    return output_of(nn, x, sum);
+}
+
+/* Member k's forward pass for the gradient, compiled per instruction set like
+ * tirenv_nn_run so that both give the same bits (they do on every clone anyway: see
+ * NN_CLONES). */
+NN_CLONES static double member_forward(tirenv_nn *nn, size_t k)
+{
+    return member_run(nn, k);
 }
 
 NN_CLONES void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], double y[])
 {
     const size_t n_in = nn->n_in, L = nn->top.n_layers - 1;
     double *blk = nn->blk;
+    double sum[NN_BLOCK];
     for (size_t s0 = 0; s0 < n; s0 += NN_BLOCK) {
         const size_t m = n - s0 < NN_BLOCK ? n - s0 : NN_BLOCK;
         const double *xs = x + s0 * n_in;
@@ -524,37 +727,49 @@ NN_CLONES void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], do
         for (size_t i = 0; i < n_in; ++i) {
             const double mean = nn->in_mean[i], inv_std = nn->in_inv_std[i];
             double *u = blk + i * NN_BLOCK;
-            for (size_t s = 0; s < m; ++s)
-                u[s] = (xs[s * n_in + i] - mean) * inv_std;
+            if (nn->input_form == TIRENV_NN_INPUT_EVEN && i == TIRENV_NN_X_N)
+                for (size_t s = 0; s < m; ++s)
+                    u[s] = (even_feature(xs[s * n_in + i], nn->even_width) - mean) * inv_std;
+            else
+                for (size_t s = 0; s < m; ++s)
+                    u[s] = (xs[s * n_in + i] - mean) * inv_std;
             for (size_t s = m; s < NN_BLOCK; ++s)
                 u[s] = 0;
         }
-        for (size_t l = 1; l <= L; ++l)
-            layer_run_block(nn->top.size[l - 1], nn->top.size[l], nn->w + nn->w_off[l],
-                            blk + nn->a_off[l - 1] * NN_BLOCK,
-                            blk + nn->a_off[l] * NN_BLOCK, l < L, nn->net_max);
         const double *o = blk + nn->a_off[L] * NN_BLOCK;
+        for (size_t k = 0; k < nn->members; ++k) {
+            const double *w = nn->w + k * nn->member_weights;
+            for (size_t l = 1; l <= L; ++l)
+                layer_run_block(nn->top.size[l - 1], nn->top.size[l], w + nn->w_off[l],
+                                blk + nn->a_off[l - 1] * NN_BLOCK,
+                                blk + nn->a_off[l] * NN_BLOCK, l < L, nn->net_max);
+            if (k == 0)
+                for (size_t s = 0; s < NN_BLOCK; ++s)
+                    sum[s] = o[s];
+            else
+                for (size_t s = 0; s < NN_BLOCK; ++s)
+                    sum[s] += o[s];
+        }
         for (size_t s = 0; s < m; ++s)
-            y[s0 + s] = nn->out_mean + nn->out_std * o[s];
+            y[s0 + s] = output_of(nn, xs + s * n_in, sum[s]);
     }
 }
 
 /* Back-propagation: delta_j = dy/d(net input of j), from the output (identity, scaled:
  * out_std) down, through the logistic's f' = f(1 - f); dy/dw_ij = delta_j * a_i with a_0 = 1
  * for the bias. */
-double tirenv_nn_gradient(tirenv_nn *nn, const double x[], double grad[])
+static void member_backprop(tirenv_nn *nn, size_t k, double dy_do, double grad[])
 {
-    const double y = tirenv_nn_run(nn, x);
     const double *a = nn->a;
     double *d = nn->delta;
     const size_t L = nn->top.n_layers - 1;
-    d[nn->a_off[L]] = nn->out_std;
+    d[nn->a_off[L]] = dy_do;
     for (size_t l = L; l >= 1; --l) {
         const size_t n_in = nn->top.size[l - 1], n_out = nn->top.size[l];
         const double *d_out = d + nn->a_off[l];
         const double *a_in = a + nn->a_off[l - 1];
-        const double *w = nn->w + nn->w_off[l];
-        double *g = grad + nn->w_off[l];
+        const double *w = nn->w + k * nn->member_weights + nn->w_off[l];
+        double *g = grad + k * nn->member_weights + nn->w_off[l];
         for (size_t j = 0; j < n_out; ++j)
             g[j] = d_out[j];
         for (size_t i = 0; i < n_in; ++i)
@@ -570,7 +785,23 @@ double tirenv_nn_gradient(tirenv_nn *nn, const double x[], double grad[])
             }
         }
     }
-    return y;
+}
+
+/* Member by member: its forward pass leaves its activations in nn->a, its backward pass
+ * turns them into its block of the gradient, with dy/do_k = out_std/K (times H for h/H). */
+double tirenv_nn_gradient(tirenv_nn *nn, const double x[], double grad[])
+{
+    double dy_do = nn->out_std / (double)nn->members;
+    if (nn->target_form == TIRENV_NN_TARGET_H_OVER_H)
+        dy_do *= x[TIRENV_NN_HEIGHT];
+    features_run(nn, x, nn->a);
+    double sum = 0;
+    for (size_t k = 0; k < nn->members; ++k) {
+        const double o = member_forward(nn, k);
+        sum = k ? sum + o : o;
+        member_backprop(nn, k, dy_do, grad);
+    }
+    return output_of(nn, x, sum);
 }
 
 void tirenv_nn_jacobian(tirenv_nn *nn, size_t n, const double x[], double y[], double J[])

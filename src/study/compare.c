@@ -143,6 +143,30 @@ void tirenv_compare__ratio(char *buf, size_t size, double ratio)
         snprintf(buf, size, "%.2f", ratio);
 }
 
+/* RMS/H as a percentage with one decimal, "nan" without a number. */
+void tirenv_compare__percent(char *buf, size_t size, double fraction)
+{
+    if (isfinite(fraction))
+        snprintf(buf, size, "%.1f", fraction * 1e2);
+    else
+        snprintf(buf, size, "nan");
+}
+
+double tirenv_compare__mean_rms_over_H(const tirenv_dataset *ds, const tirenv_compare_result *r,
+                                       size_t j)
+{
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < r->n_cases; ++i) {
+        const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
+        if (e->status == TIRENV_OK) {
+            sum += e->errors.rms / ds->cases[r->case_index[i]].H;
+            ++n;
+        }
+    }
+    return n ? sum / (double)n : NAN;
+}
+
 double tirenv_compare__mean_rms(const tirenv_compare_result *r, size_t j, size_t *n_ok)
 {
     double sum = 0;
@@ -169,13 +193,15 @@ void tirenv_compare__tables(FILE *fp, const char *hashes, const tirenv_dataset *
     fprintf(fp, "%s Errors per case and model\n\n", hashes);
     fprintf(fp,
             "Model minus measurement, in mm. RMS and Max: root mean square and largest "
-            "absolute difference of h over the case's points. Peak: the model's highest h "
-            "minus the measured one. First rise: where the model's h first exceeds %.3g mm "
-            "minus where the measured h does (negative: the model rises earlier), along x.\n\n",
+            "absolute difference of h over the case's points; RMS/H: the RMS as a share of "
+            "the obstacle height, which compares obstacles (and tires) of any size. Peak: the "
+            "model's highest h minus the measured one. First rise: where the model's h first "
+            "exceeds %.3g mm minus where the measured h does (negative: the model rises "
+            "earlier), along x.\n\n",
             s->rise_threshold * 1e3);
-    fputs("| Case | Contact length (mm) | Obstacle L x H (mm) | Model | RMS (mm) | Max (mm) "
-          "| Peak (mm) | First rise (mm) |\n"
-          "|---|---:|---:|---|---:|---:|---:|---:|\n",
+    fputs("| Case | Contact length (mm) | Obstacle L x H (mm) | Model | RMS (mm) | RMS/H (%) "
+          "| Max (mm) | Peak (mm) | First rise (mm) |\n"
+          "|---|---:|---:|---|---:|---:|---:|---:|---:|\n",
           fp);
     for (size_t i = 0; i < r->n_cases; ++i) {
         const tirenv_case *cs = &ds->cases[r->case_index[i]];
@@ -187,26 +213,29 @@ void tirenv_compare__tables(FILE *fp, const char *hashes, const tirenv_dataset *
             else
                 fputs("| | | ", fp);
             if (e->status) {
-                fprintf(fp, "| %s | failed: %s | | | |\n", r->model[j],
+                fprintf(fp, "| %s | failed: %s | | | | |\n", r->model[j],
                         tirenv_strerror(e->status));
                 continue;
             }
+            char q[32];
             tirenv_compare__mm(a, sizeof a, e->errors.rms);
+            tirenv_compare__percent(q, sizeof q, e->errors.rms / cs->H);
             tirenv_compare__mm(b, sizeof b, e->errors.max);
             tirenv_compare__signed_mm(c, sizeof c, e->errors.peak);
             tirenv_compare__signed_mm(d, sizeof d, e->errors.first_rise);
-            fprintf(fp, "| %s | %s | %s | %s | %s |\n", r->model[j], a, b, c,
+            fprintf(fp, "| %s | %s | %s | %s | %s | %s |\n", r->model[j], a, q, b, c,
                     isfinite(e->errors.first_rise) ? d : "n/a");
         }
     }
 
     fprintf(fp, "\n%s Mean RMS error per model\n\n", hashes);
-    fputs("| Model | Mean RMS (mm) | Cases |\n|---|---:|---:|\n", fp);
+    fputs("| Model | Mean RMS (mm) | Mean RMS/H (%) | Cases |\n|---|---:|---:|---:|\n", fp);
     for (size_t j = 0; j < r->n_models; ++j) {
         size_t n_ok;
         const double mean = tirenv_compare__mean_rms(r, j, &n_ok);
         tirenv_compare__mm(a, sizeof a, mean);
-        fprintf(fp, "| %s | %s | %zu of %zu |\n", r->model[j], a, n_ok, r->n_cases);
+        tirenv_compare__percent(b, sizeof b, tirenv_compare__mean_rms_over_H(ds, r, j));
+        fprintf(fp, "| %s | %s | %s | %zu of %zu |\n", r->model[j], a, b, n_ok, r->n_cases);
     }
 
     fprintf(fp, "\n%s Evaluation time per position\n\n", hashes);
@@ -525,16 +554,18 @@ static int write_errors_csv(const tirenv_dataset *ds, const tirenv_compare_setti
     int status = tirenv_compare__open(&f, s->out_dir, "errors.csv", diag);
     if (status)
         return status;
-    fputs("case,model,rms_mm,max_mm,peak_mm,first_rise_mm\n", f.fp);
+    fputs("case,model,rms_mm,max_mm,peak_mm,first_rise_mm,rms_over_H\n", f.fp);
     for (size_t i = 0; i < r->n_cases; ++i)
         for (size_t j = 0; j < r->n_models; ++j) {
             const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
-            fprintf(f.fp, "%s,%s", ds->cases[r->case_index[i]].name, r->model[j]);
+            const tirenv_case *c = &ds->cases[r->case_index[i]];
+            const double over_H = e->errors.rms / c->H;
+            fprintf(f.fp, "%s,%s", c->name, r->model[j]);
             csv_mm(f.fp, e->errors.rms);
             csv_mm(f.fp, e->errors.max);
             csv_mm(f.fp, e->errors.peak);
             csv_mm(f.fp, e->errors.first_rise);
-            fputc('\n', f.fp);
+            fprintf(f.fp, isfinite(over_H) ? ",%.6f\n" : ",nan\n", over_H);
         }
     return tirenv_compare__close(&f, diag);
 }

@@ -21,6 +21,11 @@ void tirenv_compare__mm(char *buf, size_t size, double metres);
 void tirenv_compare__signed_mm(char *buf, size_t size, double metres);
 void tirenv_compare__duration(char *buf, size_t size, double seconds);
 void tirenv_compare__ratio(char *buf, size_t size, double ratio);
+/* A fraction as a percentage with one decimal ("1.2"), or "nan". */
+void tirenv_compare__percent(char *buf, size_t size, double fraction);
+/* Mean of RMS/H of model j over the cases it did not fail on; NaN if none. */
+double tirenv_compare__mean_rms_over_H(const tirenv_dataset *ds, const tirenv_compare_result *r,
+                                       size_t j);
 /* Mean RMS error of model j over the cases it did not fail on (their count in *n_ok, if not
  * NULL), m; NaN if none. */
 double tirenv_compare__mean_rms(const tirenv_compare_result *r, size_t j, size_t *n_ok);

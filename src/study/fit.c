@@ -178,6 +178,9 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
                                        1e-12)));
     gsl_multifit_nlinear_fdf fdf = {.f = residuals, .df = NULL, .fvv = NULL, .n = n,
                                     .p = c.n_params, .params = &c};
+    double start[TIRENV_FIT_MAX_PARAMS];
+    for (size_t i = 0; i < c.n_params; ++i)
+        start[i] = *field(&c.tire, &c.params[i]);
     int info = 0;
     int status = gsl_multifit_nlinear_init(p0, &fdf, w);
     if (!status)
@@ -211,6 +214,13 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
             report->value[i] = *field(&c.tire, &c.params[i]);
             report->std_error[i] = (report->value[i] - c.params[i].lower) *
                                    sqrt(sigma2 * gsl_matrix_get(covar, i, i));
+            /* In log(value - lower) the bound is at minus infinity: the solver only gets
+             * near it, so "at the bound" is within 1 % of the bound's own scale (|lower|, or
+             * the start for a bound of 0, as a stiffness has). */
+            const double lo = c.params[i].lower;
+            const double scale = lo != 0 ? fabs(lo) : fabs(start[i] - lo);
+            report->bound[i] = lo;
+            report->at_bound[i] = report->value[i] - lo <= 0.01 * scale ? -1 : 0;
         }
         *tire = c.tire;
     }

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "study/compare_impl.h"
+#include "study/study_impl.h"
 #include "tirenv/io.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
@@ -14,9 +15,10 @@
 
 tirenv_study_settings tirenv_study_default(void)
 {
-    return (tirenv_study_settings){.data_dir = NULL, .out_dir = "out/study",
+    return (tirenv_study_settings){.data_dir = NULL, .data_label = NULL, .out_dir = "out/study",
                                    .tire = tirenv_tire_default(), .tire_label = NULL,
-                                   .trainer = "lm", .seed = 1, .simulated_by_ring = 1,
+                                   .trainer = "lm", .seed = 1, .seeds = 20,
+                                   .input = TIRENV_NN_INPUT_EVEN, .simulated_by_ring = 1,
                                    .images = 1, .jobs = 1, .progress = NULL,
                                    .progress_ctx = NULL};
 }
@@ -44,41 +46,117 @@ static void sample_sets_free(sample_sets *ss)
     }
 }
 
-/* Trains the network on `fit` (train and control splits) and reports validation on `val`,
- * then writes it with its record to path. */
-static int train_network(const tirenv_study_settings *s, const tirenv_dataset *fit,
-                         const tirenv_dataset *val, const char *path, tirenv_nn **nn,
-                         tirenv_train_report *rep, tirenv_diag *diag)
+static const char *data_label(const tirenv_study_settings *s)
 {
-    const tirenv_trainer_type *type = tirenv_trainer_type_find(s->trainer);
-    if (!type)
+    return s->data_label ? s->data_label : s->data_dir;
+}
+
+static int trainer_of(const tirenv_study_settings *s, const tirenv_trainer_type **type,
+                      tirenv_train_settings *ts, tirenv_diag *diag)
+{
+    if (!(*type = tirenv_trainer_type_find(s->trainer)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "trainer",
                             "unknown trainer '%s'; expected lm, rprop or backprop", s->trainer);
+    *ts = tirenv_train_default(*type);
+    ts->seed = s->seed;
+    ts->input = s->input;
+    ts->jobs = s->jobs;
+    return TIRENV_OK;
+}
+
+/* The model file: the network and how it was trained on fit's train and control cases (val's
+ * validation cases reported). */
+static int write_model(const tirenv_study_settings *s, const tirenv_train_settings *ts,
+                       const tirenv_train_report *rep, const tirenv_dataset *fit,
+                       const tirenv_dataset *val, const char *path, const tirenv_nn *nn,
+                       tirenv_diag *diag)
+{
     sample_sets ss = {0};
     const tirenv_dataset *from[3] = {fit, fit, val};
     int status = TIRENV_OK;
     for (int k = 0; k < 3 && !status; ++k)
         status = tirenv_samples_from_dataset(from[k], (tirenv_split)k, &ss.set[k], &ss.x[k],
                                              &ss.y[k], diag);
-    tirenv_train_settings ts = tirenv_train_default(type);
-    ts.seed = s->seed;
-    ts.jobs = s->jobs;
-    if (!status)
-        status = tirenv_train(type, &ts, &ss.set[0], &ss.set[1], &ss.set[2], nn, rep, diag);
     if (!status) {
         tirenv_train_record rec;
         memset(&rec, 0, sizeof rec);
         snprintf(rec.trainer, sizeof rec.trainer, "%s", s->trainer);
-        rec.settings = ts;
+        rec.settings = *ts;
         rec.report = *rep;
         rec.fingerprint = TIRENV_FNV1A64_OFFSET;
         for (int k = 0; k < 3; ++k)
             rec.fingerprint = tirenv_samples_fingerprint(&ss.set[k], rec.fingerprint);
         rec.R0 = s->tire.springs.R0;
-        snprintf(rec.data, sizeof rec.data, "%s", s->data_dir);
-        status = tirenv_nn_write_json(path, *nn, &rec, diag);
+        snprintf(rec.data, sizeof rec.data, "%s", data_label(s));
+        status = tirenv_nn_write_json(path, nn, &rec, diag);
     }
     sample_sets_free(&ss);
+    return status;
+}
+
+/* Trains the network on `fit` (train and control splits) with one seed and reports
+ * validation on `val`, then writes it with its record to path. */
+static int train_network(const tirenv_study_settings *s, const tirenv_dataset *fit,
+                         const tirenv_dataset *val, const char *path, tirenv_nn **nn,
+                         tirenv_train_report *rep, tirenv_diag *diag)
+{
+    const tirenv_trainer_type *type;
+    tirenv_train_settings ts;
+    int status = trainer_of(s, &type, &ts, diag);
+    sample_sets ss = {0};
+    const tirenv_dataset *from[3] = {fit, fit, val};
+    for (int k = 0; k < 3 && !status; ++k)
+        status = tirenv_samples_from_dataset(from[k], (tirenv_split)k, &ss.set[k], &ss.x[k],
+                                             &ss.y[k], diag);
+    if (!status)
+        status = tirenv_train(type, &ts, &ss.set[0], &ss.set[1], &ss.set[2], nn, rep, diag);
+    sample_sets_free(&ss);
+    if (!status)
+        status = write_model(s, &ts, rep, fit, val, path, *nn, diag);
+    return status;
+}
+
+/* nn-seeds.csv: per seed its validation error (the mean over the cases) and each case's. */
+static int write_seeds_csv(const char *dir, const tirenv_dataset *ds, const tirenv_nn_seeds *r,
+                           tirenv_diag *diag)
+{
+    tirenv_outfile f;
+    int status = tirenv_compare__open(&f, dir, "nn-seeds.csv", diag);
+    if (status)
+        return status;
+    fputs("seed,validation_rms_mm", f.fp);
+    for (size_t c = 0; c < r->n_cases; ++c)
+        fprintf(f.fp, ",%s_rms_mm", ds->cases[r->case_index[c]].name);
+    fputc('\n', f.fp);
+    for (size_t k = 0; k < r->n_seeds; ++k) {
+        fprintf(f.fp, "%lu,%.4f", r->seed[k], 1e3 * r->mean_rms[k]);
+        for (size_t c = 0; c < r->n_cases; ++c)
+            fprintf(f.fp, ",%.4f", 1e3 * r->rms[k * r->n_cases + c]);
+        fputc('\n', f.fp);
+    }
+    return tirenv_compare__close(&f, diag);
+}
+
+/* The network on the measured data over s->seeds seeds: nn-seeds.csv, and nn.json the
+ * model of the seed nearest the median, so the tables and plots show a typical network
+ * rather than a lucky or an unlucky one. */
+static int train_seeds(const tirenv_study_settings *s, const tirenv_dataset *ds, tirenv_nn **nn,
+                       tirenv_train_report *rep, tirenv_nn_seeds *seeds, tirenv_diag *diag)
+{
+    const tirenv_trainer_type *type;
+    tirenv_train_settings ts;
+    char path[1024];
+    int status = trainer_of(s, &type, &ts, diag);
+    if (!status)
+        status = tirenv_nn_train_seeds(type, &ts, ds, ds, s->tire.springs.R0,
+                                       s->seeds ? s->seeds : 1, seeds, nn, rep, diag);
+    if (!status)
+        status = write_seeds_csv(s->out_dir, ds, seeds, diag);
+    if (!status) {
+        ts.seed = seeds->seed[seeds->median_seed];
+        snprintf(path, sizeof path, "%s/nn.json", s->out_dir);
+        status = write_model(s, &ts, rep, ds, ds, path, *nn, diag);
+    }
     return status;
 }
 
@@ -148,6 +226,8 @@ static int physical_case(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     return tirenv_case_predict_model(p->models[worker], cs, cs->curve.h, diag);
 }
 
+/* The 96 grid curves on `jobs` threads (a model is set afresh on every case, so a curve does
+ * not depend on the worker that made it). */
 static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted, size_t jobs,
                             tirenv_dataset *out, tirenv_diag *diag)
 {
@@ -264,54 +344,70 @@ static void append_model_means(FILE *fp, const tirenv_compare_result *r)
                 1e3 * tirenv_compare__mean_rms(r, m, NULL));
 }
 
-static void fit_table(FILE *fp, const tirenv_fit_report *fit)
+static char *study_notes(const tirenv_study_settings *s, const tirenv_study__facts *facts,
+                         const tirenv_train_report *nn, const tirenv_train_report *nn_phys,
+                         const tirenv_compare_result *phys, const tirenv_compare_result *out_r,
+                         const tirenv_dataset *outside_ds)
 {
-    fprintf(fp, "| parameter | value | standard error |\n|---|---|---|\n");
-    for (size_t i = 0; i < fit->n_params; ++i)
-        fprintf(fp, "| %s | %.6g | %.2g |\n", fit->names[i], fit->value[i], fit->std_error[i]);
-}
-
-static char *study_notes(const tirenv_fit_report *fit, const tirenv_fit_report *cam_fit,
-                         const tirenv_train_report *nn,
-                         const tirenv_train_report *nn_phys, const tirenv_compare_result *phys,
-                         const tirenv_compare_result *out_r, const tirenv_dataset *outside_ds)
-{
+    const tirenv_fit_report *fit = facts->springs_fit, *cam_fit = facts->cam_fit;
+    const tirenv_nn_seeds *seeds = facts->seeds;
     char *buf = NULL;
     size_t len = 0;
     FILE *fp = open_memstream(&buf, &len);
     if (!fp)
         return NULL;
+    tirenv_study__findings(fp, facts);
     fprintf(fp, "## How the models were obtained\n\n"
                 "**Physical model (springs)**, identified on the training cases by nonlinear "
-                "least squares on h (%zu points, %zu iterations, %.1f s, RMS %.2f mm); standard "
-                "errors from the covariance, scaled by the residual variance:\n\n",
-            fit->n_points, fit->iterations, fit->seconds, 1e3 * fit->rms);
-    fit_table(fp, fit);
+                "least squares on h (%zu points, %zu iterations, stopped by %s, %.1f s, RMS "
+                "%.2f mm); standard errors from the covariance, scaled by the residual "
+                "variance:\n\n",
+            fit->n_points, fit->iterations, fit->stop, fit->seconds, 1e3 * fit->rms);
+    tirenv_study__fit_table(fp, fit);
     fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (docs/models.md "
-                "section 7), identified the same way (%zu iterations, %.2f s, RMS %.2f mm); "
-                "its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay as in the tire "
-                "file:\n\n", cam_fit->iterations, cam_fit->seconds, 1e3 * cam_fit->rms);
-    fit_table(fp, cam_fit);
-    /* ELLIPS_ORDER is fitted as 1 + e^p: a value at 1 means the data push the cam towards a
-     * pointed (diamond) shape, the edge of what the cam model can be. */
-    if (cam_fit->n_params == 4 && cam_fit->value[3] < 1.01)
-        fprintf(fp, "\nELLIPS_ORDER ends at its lower bound 1: these curves push the cam "
-                    "towards a pointed shape, the edge of what the model can express.\n");
-    fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n"
-                "**Empirical model (nn)**, 4-8-1, trained on the training cases with early "
-                "stopping on the control cases: %zu epochs in %.2f s (best at epoch %zu); RMS "
-                "error train %.2f mm, control %.2f mm, validation %.2f mm (`nn.json`).\n\n",
-            nn->total_epochs, nn->wall_time, nn->best_epoch, 1e3 * nn->error[0].rms,
-            1e3 * nn->error[1].rms, 1e3 * nn->error[2].rms);
+                "section 7), identified the same way (%zu iterations, stopped by %s, %.2f s, "
+                "RMS %.2f mm); its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay "
+                "as in the tire file:\n\n",
+            cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
+    tirenv_study__fit_table(fp, cam_fit);
+    tirenv_study__cam_limits(fp, facts);
+    fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
+    tirenv_train_settings ts = tirenv_train_default(tirenv_trainer_type_find(s->trainer));
+    ts.input = s->input;
+    size_t n_train = 0;
+    for (size_t i = 0; i < facts->ds->n; ++i)
+        n_train += facts->ds->cases[i].split == TIRENV_SPLIT_TRAIN;
+    fprintf(fp, "**Empirical model (nn)**, 4-8-1 (input %s, target %s, loss over %s), trained "
+                "on the training cases with early stopping on the control cases; each model is "
+                "the mean of the %zu of %zu restarts best on control. With %zu training curves "
+                "the result depends on the seed, so it was trained with %zu seeds (%lu to "
+                "%lu, %.1f s in all; each seed's errors in `nn-seeds.csv`): validation error "
+                "(the mean over the validation cases of each case's RMS) median %.2f mm, "
+                "quartiles %.2f to %.2f mm, range %.2f to %.2f mm. The network in the tables "
+                "and plots, `nn.json`, is seed %lu, the one nearest the median: %zu epochs "
+                "in %.2f s; RMS error over the points of the train, control and validation "
+                "cases %.2f, %.2f and %.2f mm.\n\n",
+            tirenv_nn_input_form_name(ts.input), tirenv_nn_target_form_name(ts.target),
+            tirenv_train_loss_name(ts.loss), nn->members, ts.restarts,
+            n_train, seeds->n_seeds, seeds->seed[0],
+            seeds->seed[seeds->n_seeds - 1], seeds->seconds, 1e3 * seeds->median,
+            1e3 * seeds->q1, 1e3 * seeds->q3, 1e3 * seeds->min, 1e3 * seeds->max,
+            seeds->seed[seeds->median_seed], nn->total_epochs, nn->wall_time,
+            1e3 * nn->error[0].rms, 1e3 * nn->error[1].rms, 1e3 * nn->error[2].rms);
     fprintf(fp, "## The paper's proposed workflow: a network trained on the physical model\n\n"
                 "The paper proposes to train the network on curves of the physical model "
                 "instead of rig runs. Here: %d curves of the identified springs model over a "
                 "grid of cleats (lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact "
-                "lengths 0.28 to 0.43 m, loads read off the data set), no rig time. Trained in "
-                "%.2f s; its RMS error on the measured validation cases is %.2f mm against "
-                "%.2f mm for the network trained on the measurements. Mean RMS over the "
+                "lengths 0.28 to 0.43 m, loads read off the data set), no rig time, one seed "
+                "(%lu). Trained in %.2f s; its validation error (the mean over the measured "
+                "validation cases of each case's RMS) is %.2f mm, against a median of %.2f mm "
+                "over the seeds of the network trained on the measurements. Mean RMS over the "
                 "validation cases: ",
-            N_GRID, nn_phys->wall_time, 1e3 * nn_phys->error[2].rms, 1e3 * nn->error[2].rms);
+            N_GRID, s->seed, nn_phys->wall_time,
+            phys->nn_model >= 0 ? 1e3 * tirenv_compare__mean_rms(phys, (size_t)phys->nn_model,
+                                                                 NULL)
+                                : NAN,
+            1e3 * seeds->median);
     append_model_means(fp, phys);
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
     fprintf(fp, "## Outside the training range\n\n"
@@ -348,8 +444,10 @@ static char *study_notes(const tirenv_fit_report *fit, const tirenv_fit_report *
                              tirenv_compare__mean_rms(out_r, springs_m, NULL);
         fprintf(fp, ". Outside its training range the network's mean error is %.1f times the "
                     "physical model's%s. Plots: [outside/](outside/report.md).\n\n",
-                ratio, ratio > 1 ? ": the physical model generalises, the network does not"
-                                 : ": here the network held up");
+                ratio, ratio >= 2   ? ": the physical model generalises, the network does not"
+                       : ratio > 1 ? ": both degrade, the network more"
+                                   : ": here the network held up as well as the physical "
+                                     "model");
     }
     fclose(fp);
     return buf;
@@ -369,6 +467,7 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     cs.images = s->images;
     cs.jobs = s->jobs;
     cs.tire_label = "fitted.tir (identified on the training cases)";
+    cs.data_label = data_label(s);
     if (s->simulated_by_ring) {
         cs.simulated = 1;
         cs.simulated_by = tirenv_model_ring;
@@ -385,6 +484,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     tirenv_compare_result main_r = {0}, phys_r = {0}, out_r = {0};
     tirenv_fit_report fit;
     tirenv_train_report nn_rep, phys_rep;
+    tirenv_nn_seeds seeds = {0};
     tirenv_tire tire = s->tire;
     char *notes = NULL;
 
@@ -406,10 +506,9 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     snprintf(path, sizeof path, "%s/fitted.tir", s->out_dir);
     if (!status)
         status = tirenv_tir_write(path, &tire, diag);
-    progress(s, "training the network", 2);
-    snprintf(path, sizeof path, "%s/nn.json", s->out_dir);
+    progress(s, "training the network over seeds", 2);
     if (!status)
-        status = train_network(s, &ds, &ds, path, &nn, &nn_rep, diag);
+        status = train_seeds(s, &ds, &nn, &nn_rep, &seeds, diag);
     progress(s, "comparing on the validation cases", 3);
     tirenv_compare_settings cs = compare_settings(s, s->out_dir, "tirenv study: the paper's "
                                                   "comparison on the validation cases");
@@ -446,14 +545,18 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
         status = tirenv_compare_report(&out_ds, &os, &out_r, NULL, diag);
 
     progress(s, "writing the report", 6);
+    const tirenv_study__facts facts = {.ds = &ds, .main = &main_r, .main_settings = &cs,
+                                       .seeds = &seeds, .springs_fit = &fit,
+                                       .cam_fit = &cam_fit, .R0 = tire.springs.R0};
     if (!status &&
-        !(notes = study_notes(&fit, &cam_fit, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
+        !(notes = study_notes(s, &facts, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     if (!status)
         status = tirenv_compare_report(&ds, &cs, &main_r, notes, diag);
     progress(s, "done", STEPS);
 
     free(notes);
+    tirenv_nn_seeds_free(&seeds);
     tirenv_compare_result_free(&main_r);
     tirenv_compare_result_free(&phys_r);
     tirenv_compare_result_free(&out_r);

@@ -91,9 +91,10 @@ static int backprop_epoch(void *state, tirenv_nn *nn, const tirenv_samples *trai
     for (size_t k = 0; k < train->n; ++k) {
         const size_t s = st->order[k];
         const double y = tirenv_nn_gradient(nn, train->x + s * train->n_in, st->grad);
-        const double r = (y - train->y[s]) * inv_std;
+        const double scale = tirenv_train__residual_scale(train, s, inv_std);
+        const double r = (y - train->y[s]) * scale;
         sse += r * r;
-        const double c = -eta * r * inv_std;  /* dE_s/dw = r * grad / out_std */
+        const double c = -eta * r * scale;  /* dE_s/dw = r * grad * scale */
         for (size_t j = 0; j < p; ++j) {
             dw[j] = c * st->grad[j] + alpha * dw[j];
             w[j] += dw[j];

@@ -115,7 +115,8 @@ static int lm_gsl_f(const gsl_vector *x, void *params, gsl_vector *f)
     const double inv_std = lm_inv_std(st->nn);
     tirenv_nn_run_batch(st->nn, st->n, st->train->x, st->y);
     for (size_t s = 0; s < st->n; ++s)
-        gsl_vector_set(f, s, (st->y[s] - st->train->y[s]) * inv_std);
+        gsl_vector_set(f, s, (st->y[s] - st->train->y[s]) *
+                                 tirenv_train__residual_scale(st->train, s, inv_std));
     return GSL_SUCCESS;
 }
 
@@ -127,8 +128,9 @@ static int lm_gsl_df(const gsl_vector *x, void *params, gsl_matrix *J)
     for (size_t s = 0; s < st->n; ++s) {
         gsl_vector_view row = gsl_matrix_row(J, s);
         tirenv_nn_gradient(st->nn, st->train->x + s * st->train->n_in, st->Jc);
+        const double scale = tirenv_train__residual_scale(st->train, s, inv_std);
         for (size_t j = 0; j < st->p; ++j)
-            gsl_vector_set(&row.vector, j, st->Jc[j] * inv_std);
+            gsl_vector_set(&row.vector, j, st->Jc[j] * scale);
     }
     return GSL_SUCCESS;
 }
@@ -261,11 +263,12 @@ static double lm_normal_equations(lm_state *st, tirenv_nn *nn, const tirenv_samp
         for (size_t k = 0; k < m; ++k) {
             double *g = st->Jc + k * P;
             const double y = tirenv_nn_gradient(nn, train->x + (k0 + k) * n_in, g);
-            const double r = (y - train->y[k0 + k]) * inv_std;
+            const double scale = tirenv_train__residual_scale(train, k0 + k, inv_std);
+            const double r = (y - train->y[k0 + k]) * scale;
             st->yc[k] = r;
             sse += r * r;
             for (size_t j = 0; j < p; ++j)
-                g[j] *= inv_std;
+                g[j] *= scale;
         }
         for (size_t k = m; k < m_blk; ++k) {  /* the zero rows of a short last block */
             memset(st->Jc + k * P, 0, P * sizeof(double));

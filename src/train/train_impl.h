@@ -3,12 +3,13 @@
 #ifndef TIRENV_TRAIN_IMPL_H
 #define TIRENV_TRAIN_IMPL_H
 
+#include <math.h>
 #include <gsl/gsl_rng.h>
 #include "tirenv/train.h"
 
 /* Every trainer minimises E = 1/2 sum_s r_s^2 over the training samples, with the residual
- * of the scaled output r_s = (y_s - t_s)/out_std: the scaling makes one learning rate or one
- * damping fit every data set. */
+ * of the scaled output r_s = sqrt(w_s) (y_s - t_s)/out_std (w_s the sample's weight, 1
+ * without): the scaling makes one learning rate or one damping fit every data set. */
 struct tirenv_trainer_type {
     const char *name;
     /* State for training nets shaped like nn on sets of train's size, into *state. Fails
@@ -24,6 +25,15 @@ struct tirenv_trainer_type {
                  double *train_sse, tirenv_diag *diag);
     void (*free)(void *state);  /* NULL is a no-op */
 };
+
+/* What turns sample k's error y - t into its residual r: 1/out_std (inv_std), times the
+ * square root of its weight if the set has weights. Without weights exactly inv_std, so
+ * unweighted sums are the same bits as ever. */
+static inline double tirenv_train__residual_scale(const tirenv_samples *s, size_t k,
+                                                  double inv_std)
+{
+    return s->w ? inv_std * sqrt(s->w[k]) : inv_std;
+}
 
 /* sum_s r_s^2 over s and g = dE/dw (n_weights); grad is workspace of n_weights. */
 double tirenv_train__gradient(tirenv_nn *nn, const tirenv_samples *s, double g[],
