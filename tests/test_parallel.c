@@ -206,12 +206,67 @@ static void test_small(void **state)
     assert_int_equal(tirenv_parallel_for(3, 2, NULL, NULL, NULL, &d), TIRENV_EINVAL);
 }
 
+/* Nested calls share the outer budget: with 3 jobs outside and 3 inside each item, never
+ * more than 3 threads run inner items at once, and every inner item runs once. */
+typedef struct {
+    int running, max_running;
+    int runs[6][40];
+    double out[6][40];
+} nested_ctx;
+
+typedef struct {
+    nested_ctx *c;
+    size_t outer;
+} inner_arg;
+
+static int inner_item(void *vctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    const inner_arg *a = vctx;
+    (void)worker;
+    (void)diag;
+    const int now = __atomic_add_fetch(&a->c->running, 1, __ATOMIC_SEQ_CST);
+    int seen = __atomic_load_n(&a->c->max_running, __ATOMIC_SEQ_CST);
+    while (now > seen &&
+           !__atomic_compare_exchange_n(&a->c->max_running, &seen, now, 0, __ATOMIC_SEQ_CST,
+                                        __ATOMIC_SEQ_CST))
+        ;
+    a->c->out[a->outer][i] = busy(i + 40 * a->outer);
+    __atomic_add_fetch(&a->c->runs[a->outer][i], 1, __ATOMIC_SEQ_CST);
+    __atomic_sub_fetch(&a->c->running, 1, __ATOMIC_SEQ_CST);
+    return TIRENV_OK;
+}
+
+static int outer_item(void *vctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    inner_arg a = {vctx, i};
+    (void)worker;
+    return tirenv_parallel_for(40, 3, inner_item, NULL, &a, diag);
+}
+
+static void test_nested_budget(void **state)
+{
+    (void)state;
+    nested_ctx *c = calloc(1, sizeof *c);
+    assert_non_null(c);
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    assert_int_equal(tirenv_parallel_for(6, 3, outer_item, NULL, c, &d), TIRENV_OK);
+    for (size_t o = 0; o < 6; ++o)
+        for (size_t i = 0; i < 40; ++i) {
+            assert_int_equal(c->runs[o][i], 1);
+            assert_bits_equal(c->out[o][i], busy(i + 40 * o));
+        }
+    assert_true(c->max_running >= 1 && c->max_running <= 3);
+    free(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_every_item_once),
         cmocka_unit_test(test_lowest_failure),
         cmocka_unit_test(test_small),
+        cmocka_unit_test(test_nested_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -31,9 +31,12 @@ typedef void (*tirenv_parallel_done_fn)(void *ctx, size_t item, size_t n_done);
  * any jobs, provided each item writes only its own outputs (and per-worker scratch) and its
  * result does not depend on what ran before it in the same worker: when items fail, the one
  * with the lowest index is reported (its status, its diag copied into diag), and no item
- * after it is started. The new threads block SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE,
- * SIGALRM, SIGUSR1 and SIGUSR2, so that a program's handlers for them run on its own
- * thread. If a thread cannot be started the others do its share. done may be NULL. */
+ * after it is started. An item may call tirenv_parallel_for again: the inner call shares the
+ * outer call's budget, so that at most the outer `jobs` threads run items at any moment
+ * (the inner call's threads wait for a turn, using no processor). The new threads block
+ * SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1 and SIGUSR2, so that a
+ * program's handlers for them run on its own thread. If a thread cannot be started the
+ * others do its share. done may be NULL. */
 int tirenv_parallel_for(size_t n, size_t jobs, tirenv_parallel_fn fn,
                         tirenv_parallel_done_fn done, void *ctx, tirenv_diag *diag);
 

@@ -402,7 +402,7 @@ static double thread_seconds(void)
 }
 
 /* Every (model, case) entry is independent: they run on s->jobs threads, each worker with
- * its own instance of every model (a network is cloned: an instance is not thread-safe), and
+ * its own instance of every model (the network cloned: an instance is not thread-safe), and
  * each entry's evaluation is timed on its own thread's clock. */
 typedef struct {
     const tirenv_dataset *ds;
@@ -424,7 +424,9 @@ static int instance(compare_pass *p, size_t worker, size_t j, evaluator **out,
         return TIRENV_OK;
     ev->R0 = p->s->nn_R0 > 0 ? p->s->nn_R0 : p->tire->springs.R0;
     if ((int)j == p->r->nn_model)
-        ev->nn = worker == 0 ? p->nn : tirenv_nn_clone(p->nn);
+        ev->nn = tirenv_nn_clone(p->nn);  /* also on the caller's thread: the caller's network
+                                           * may be in use by other threads (a study runs its
+                                           * comparisons side by side) */
     else
         ev->m = tirenv_model_alloc(p->types[j], p->tire);
     if (!ev->m && !ev->nn)
@@ -501,8 +503,7 @@ static void pass_free(compare_pass *p, size_t jobs)
 {
     for (size_t k = 0; p->ev && k < jobs * p->r->n_models; ++k) {
         tirenv_model_free(p->ev[k].m);
-        if (p->ev[k].nn != p->nn)
-            tirenv_nn_free(p->ev[k].nn);
+        tirenv_nn_free(p->ev[k].nn);
     }
     free(p->ev);
     free(p->seconds);

@@ -125,8 +125,8 @@ typedef struct {
     tirenv_nn **nets;
     tirenv_train_report *reps;
     progress_gate gate;
-    tirenv_train_settings inner;   /* each seed's training: serial restarts when the seeds
-                                    * run at once, its progress through the gate */
+    tirenv_train_settings inner;   /* each seed's training, its progress through the gate
+                                    * when the seeds run at once */
 } seeds_pass;
 
 static int seed_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
@@ -186,12 +186,12 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
         status = tirenv_samples_from_dataset(from[sp], (tirenv_split)sp, &set[sp], &x[sp],
                                              &y[sp], diag);
     /* Independent seeds: no state is shared from one to the next, so they run on
-     * settings->jobs threads (each training's restarts then one after the other). */
+     * settings->jobs threads, each training's restarts sharing the same threads
+     * (tirenv/parallel.h: nested calls share the budget). */
     seeds_pass sp_ = {type, settings, set, fit, val, R0, n_max, out, nets, reps,
                       {NULL, NULL, PTHREAD_MUTEX_INITIALIZER, 0}, *settings};
     const size_t jobs = settings->jobs < 1 ? 1 : settings->jobs;
     if (jobs > 1 && n_seeds > 1) {
-        sp_.inner.jobs = 1;
         if (settings->progress) {
             sp_.gate.fn = settings->progress;
             sp_.gate.data = settings->progress_data;

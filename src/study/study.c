@@ -475,9 +475,80 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     return cs;
 }
 
+/* ---- the three comparisons ----------------------------------------------------------------- */
+
+typedef struct {
+    const tirenv_study_settings *s;
+    const tirenv_dataset *ds;
+    const tirenv_tire *tire;
+    tirenv_nn *nn;
+    tirenv_compare_settings cs;
+    tirenv_compare_result *main_r;
+    tirenv_dataset *phys_ds;
+    tirenv_nn **nn_phys;
+    tirenv_train_report *phys_rep;
+    tirenv_compare_result *phys_r;
+    tirenv_dataset *out_ds;
+    tirenv_profile **profiles;
+    tirenv_compare_result *out_r;
+} study_parts;
+
+/* The paper's comparison on the validation cases. */
+static int part_main(study_parts *p, tirenv_diag *diag)
+{
+    return tirenv_compare(p->ds, p->tire, p->nn, &p->cs, p->main_r, diag);
+}
+
+/* The paper's workflow: a network trained on the identified physical model's curves. */
+static int part_physical(study_parts *p, tirenv_diag *diag)
+{
+    const tirenv_study_settings *s = p->s;
+    char path[1024], sub[1024];
+    int status = physical_dataset(p->ds, p->tire, s->jobs ? s->jobs : 1, p->phys_ds, diag);
+    snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
+    if (!status)
+        status = train_network(s, p->phys_ds, p->ds, path, p->nn_phys, p->phys_rep, diag);
+    snprintf(sub, sizeof sub, "%s/physical-network", s->out_dir);
+    tirenv_compare_settings ps = compare_settings(s, sub, "A network trained on the identified "
+                                                  "physical model's curves (no rig time)");
+    ps.nn_label = "nn-physical.json (trained on springs-model curves)";
+    if (!status)
+        status = tirenv_compare(p->ds, p->tire, *p->nn_phys, &ps, p->phys_r, diag);
+    if (!status)
+        status = tirenv_compare_report(p->ds, &ps, p->phys_r, NULL, diag);
+    return status;
+}
+
+/* The obstacles outside the training grid. */
+static int part_outside(study_parts *p, tirenv_diag *diag)
+{
+    const tirenv_study_settings *s = p->s;
+    char sub[1024];
+    int status = outside_dataset(&s->tire, s->jobs ? s->jobs : 1, p->out_ds, p->profiles, diag);
+    snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
+    tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
+                                                  "range");
+    os.simulated = 1;
+    os.simulated_by = tirenv_model_ring;
+    os.data_label = "taller, shorter and other shapes on the virtual rig";
+    if (!status)
+        status = tirenv_compare(p->out_ds, p->tire, p->nn, &os, p->out_r, diag);
+    if (!status)
+        status = tirenv_compare_report(p->out_ds, &os, p->out_r, NULL, diag);
+    return status;
+}
+
+static int study_part(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    study_parts *p = ctx;
+    (void)worker;
+    return k == 0 ? part_main(p, diag) : k == 1 ? part_physical(p, diag)
+                                                : part_outside(p, diag);
+}
+
 int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
 {
-    char path[1024], sub[1024];
+    char path[1024];
     tirenv_dataset ds = {0}, phys_ds = {0}, out_ds = {0};
     tirenv_profile *profiles[N_OUTSIDE] = {0};
     tirenv_nn *nn = NULL, *nn_phys = NULL;
@@ -509,40 +580,20 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     progress(s, "training the network over seeds", 2);
     if (!status)
         status = train_seeds(s, &ds, &nn, &nn_rep, &seeds, diag);
-    progress(s, "comparing on the validation cases", 3);
-    tirenv_compare_settings cs = compare_settings(s, s->out_dir, "tirenv study: the paper's "
-                                                  "comparison on the validation cases");
+    /* Three independent parts, side by side on the jobs (each with its own work items, all
+     * drawing on the same threads: tirenv/parallel.h), in the order a failure is reported:
+     * the comparison on the validation cases, the paper's workflow, the obstacles outside. */
+    progress(s, "comparing the models: validation cases, a network on physical-model curves, "
+                "obstacles outside the training range", 3);
+    study_parts parts = {.s = s, .ds = &ds, .tire = &tire, .nn = nn, .main_r = &main_r,
+                         .phys_ds = &phys_ds, .nn_phys = &nn_phys, .phys_rep = &phys_rep,
+                         .phys_r = &phys_r, .out_ds = &out_ds, .profiles = profiles,
+                         .out_r = &out_r};
+    parts.cs = compare_settings(s, s->out_dir, "tirenv study: the paper's comparison on the "
+                                               "validation cases");
     if (!status)
-        status = tirenv_compare(&ds, &tire, nn, &cs, &main_r, diag);
-
-    progress(s, "the paper's workflow: a network on physical-model curves", 4);
-    if (!status)
-        status = physical_dataset(&ds, &tire, s->jobs ? s->jobs : 1, &phys_ds, diag);
-    snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
-    if (!status)
-        status = train_network(s, &phys_ds, &ds, path, &nn_phys, &phys_rep, diag);
-    snprintf(sub, sizeof sub, "%s/physical-network", s->out_dir);
-    tirenv_compare_settings ps = compare_settings(s, sub, "A network trained on the identified "
-                                                  "physical model's curves (no rig time)");
-    ps.nn_label = "nn-physical.json (trained on springs-model curves)";
-    if (!status)
-        status = tirenv_compare(&ds, &tire, nn_phys, &ps, &phys_r, diag);
-    if (!status)
-        status = tirenv_compare_report(&ds, &ps, &phys_r, NULL, diag);
-
-    progress(s, "obstacles outside the training range", 5);
-    if (!status)
-        status = outside_dataset(&s->tire, s->jobs ? s->jobs : 1, &out_ds, profiles, diag);
-    snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
-    tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
-                                                  "range");
-    os.simulated = 1;
-    os.simulated_by = tirenv_model_ring;
-    os.data_label = "taller, shorter and other shapes on the virtual rig";
-    if (!status)
-        status = tirenv_compare(&out_ds, &tire, nn, &os, &out_r, diag);
-    if (!status)
-        status = tirenv_compare_report(&out_ds, &os, &out_r, NULL, diag);
+        status = tirenv_parallel_for(3, s->jobs ? s->jobs : 1, study_part, NULL, &parts, diag);
+    const tirenv_compare_settings cs = parts.cs;
 
     progress(s, "writing the report", 6);
     const tirenv_study__facts facts = {.ds = &ds, .main = &main_r, .main_settings = &cs,
