@@ -241,9 +241,10 @@ typedef struct {
     int simulated_by_ring;         /* the data set was simulated by the ring tire (default 1:
                                     * the embedded one) */
     int images;                    /* draw PNG and SVG with gnuplot (default 1) */
-    size_t jobs;                   /* work items run at once: the fit's cases, the training's
-                                    * restarts, the comparisons' evaluations, the grid and
-                                    * outside curves (default 1: no thread; tirenv/parallel.h);
+    size_t jobs;                   /* threads running at once (default 1: none started;
+                                    * tirenv/parallel.h): the fit's cases, the seeds and the
+                                    * trainings' restarts, the grid and outside curves, and the
+                                    * three comparisons side by side with their evaluations;
                                     * every result but the timings is the same, bit for bit,
                                     * for every value */
     void (*progress)(void *ctx, const char *stage, size_t step, size_t steps);
