@@ -111,6 +111,7 @@ struct tirenv_nn;
 int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
                              tirenv_diag *diag);
 const char *tirenv_model_warnings(const tirenv_model *m);
+void tirenv_model_set_extrapolate(tirenv_model *m, int allow);
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
                                          tirenv_diag *diag);

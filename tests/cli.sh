@@ -202,7 +202,7 @@ check "help lists road" '[ $rc -eq 0 ] && grep -q "^  road " out'
 run "$bin" train --data "$data/../../data/dataset" --restarts 1 -o net.json
 check "train on the embedded data set writes a model file" '[ $rc -eq 0 ] && [ -s net.json ]'
 run "$bin" envelope --model nn --nn net.json --profile road.csv --contact-length 0.33 \
-    --dx 0.01 -o rn.csv
+    --dx 0.01 --extrapolate -o rn.csv
 check "envelope --model nn --profile over the generated road: header, 5141 finite rows" \
     '[ $rc -eq 0 ] && [ "$(head -n 1 rn.csv)" = "$header" ] && [ $(rows rn.csv) -eq 5141 ] &&
      grep -q "obstacles above a baseline" err &&
@@ -213,9 +213,9 @@ run "$bin" envelope --model nn --nn net.json --cleat 0.10,0.075 --contact-length
 check "envelope --model nn: a cleat as --profile gives --cleat's curve (h within 1e-9 m)" \
     '[ $rc -eq 0 ] && same_h pc.csv cc.csv 1e-9 && near "$(peak_h cc.csv)" 0.04 0.035'
 # A bump on a stretch of flat ground (not the bare four corners of a centred cleat, which the
-# network takes as its own case, the cleat): the decomposition clamps it.
+# network takes as its own case, the cleat): with --extrapolate the decomposition clamps it.
 printf 'x_m,z_m\n-1,0\n-0.05,0\n-0.05,0.15\n0.05,0.15\n0.05,0\n1,0\n' >tall.csv
-run "$bin" predict --nn net.json --profile tall.csv --contact-length 0.38 -o o.csv
+run "$bin" predict --nn net.json --profile tall.csv --contact-length 0.38 --extrapolate -o o.csv
 check "predict --profile with a bump above the trained heights: one warning with the count" \
     '[ $rc -eq 0 ] && [ $(grep -c "warning: 1 of 1 obstacles outside" err) -eq 1 ] &&
      grep -q "1 heights above 0.1 m" err'
@@ -255,7 +255,8 @@ check "ride with a bad vehicle file: exit 2 naming file:line and key, no file" \
 run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --set MASS=-1 -o neg.csv
 check "ride --set MASS=-1: exit 2 naming MASS, no file" \
     '[ $rc -eq 2 ] && grep -q MASS err && no_file neg.csv'
-run "$bin" ride --profile road.csv --speed 10km/h --model nn,cam --nn net.json --dx 0.01
+run "$bin" ride --profile road.csv --speed 10km/h --model nn,cam --nn net.json --dx 0.01 \
+    --extrapolate
 check "ride --model nn,cam over the generated road: a finite row for each" \
     '[ $rc -eq 0 ] && [ $(grep -Ec "^(nn|cam) +10\.00 +[0-9]" out) -eq 2 ]'
 

@@ -105,11 +105,21 @@ const tirenv_tire *tirenv_model_tire(const tirenv_model *m);
 int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
                              tirenv_diag *diag);
 
-/* Flat-ground state at load G (N). TIRENV_ENOBRACKET if the tire cannot carry G. */
+/* Whether a model with a trained range (the network: its inputs l_c, H, L as trained,
+ * docs/models.md sections 6.3 and 12) may be evaluated outside it. 0, the default: such input
+ * is refused by tirenv_model_set with TIRENV_ERANGE naming the input, its value and the range.
+ * 1: it is evaluated (the network's curve at the value, or over roads the obstacle scaled or
+ * clamped to the range) with a warning (tirenv_model_warnings). Kept across sets; the other
+ * models have no trained range and ignore it. */
+void tirenv_model_set_extrapolate(tirenv_model *m, int allow);
+
+/* Flat-ground state at load G (N). TIRENV_ENOBRACKET if the tire cannot carry G;
+ * TIRENV_ERANGE beyond the model's valid load range (docs/models.md section 1.3). */
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 
 /* Load (N) at which the model's flat-ground contact length is l_c (m); TIRENV_EINVAL if
- * l_c is not in (0, 2*R0). A model whose input is the contact length (the network) remembers
+ * l_c is not in (0, 2*R0), TIRENV_ERANGE if it is beyond the contact lengths of the model's
+ * valid load range. A model whose input is the contact length (the network) remembers
  * it: tirenv_model_set at that load then works at exactly l_c. */
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
                                          tirenv_diag *diag);

@@ -17,7 +17,8 @@ TIRENV_BEGIN_DECLS
 
 /* What a model file records besides the network. */
 typedef struct {
-    char trainer[32];                /* trainer name, or "" */
+    char trainer[32];                /* trainer name, or "": no record (a file without
+                                        one reads so, and is written without one) */
     tirenv_train_settings settings;  /* as used (the callback is not saved) */
     tirenv_train_report report;
     uint64_t fingerprint;            /* tirenv_samples_fingerprint of train, control,

@@ -22,7 +22,8 @@
  *      keeps h continuous on sloping ground; the cap top_k keeps h below the ground's highest
  *      point. Heights below the trained range use the curve at the smallest trained height
  *      scaled by H/H_min; lengths below or above the range and heights above it are clamped
- *      to it and counted (tirenv_nn_road_info).
+ *      to it and counted (tirenv_nn_road_info): extrapolations, which the model type nn
+ *      refuses unless allowed (tirenv_model_set_extrapolate, docs/models.md section 12).
  * The baseline is followed as is: the network knows no pits, so a hollow narrower than the
  * tire is followed rather than bridged. On a slope an obstacle is measured from the level of
  * its higher foot (where the opening is flat under it). h inherits the network curve's own

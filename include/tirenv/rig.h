@@ -49,6 +49,10 @@ typedef struct {
     double x_0;            /* x_N origin in obstacle coordinates (docs/models.md section 1), m */
     double half_width;     /* smoothing half-width used, m */
     double noise_se;       /* standard error of h that the noise leaves after smoothing, m */
+    double target_se;      /* the standard error the automatic half-width aims at, m */
+    int width_capped;      /* 1: the automatic half-width stopped at its cap, which keeps the
+                              curve's shape (docs/models.md section 5.7), short of what the
+                              noise or the sampling asked for: noise_se may exceed target_se */
 } tirenv_import_info;
 
 /* tirenv_rig_import, also saying what it found in *info (may be NULL). */

@@ -39,6 +39,8 @@ typedef struct {
     double network_R0;            /* the radius its x_N refers to, m (0: the tire's) */
     const char *network_id;       /* how sweep.txt names that network (e.g. a fingerprint of
                                    * its file), so that a resumed run and a merge can tell */
+    int extrapolate;              /* 1: the network may run outside its trained ranges
+                                   * (tirenv_model_set_extrapolate); 0 (default): refused */
     int rig;                      /* 1: the model drives the virtual rig, whose noisy log is
                                    * imported (as tirenv_dataset_build does); 0 (default): the
                                    * model's curve at the points of the import's x_N grid */

@@ -197,9 +197,10 @@ tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
  * input ranges come from train only. Each restart r is a function of the samples, the
  * settings and r alone (its seed is derived from settings->seed and r), so restarts can run
  * in any order. *out is the model, the kept network or the ensemble of the kept ones (free
- * it with tirenv_nn_free); report may be NULL. GSL would abort on a singular matrix unless
- * the program has turned its error handler off (error.h). Deterministic: the same arguments
- * give the same weights bit for bit. */
+ * it with tirenv_nn_free); report may be NULL. TIRENV_ENOCONV (and *out NULL) if a kept
+ * restart diverged, its error no longer finite (docs/models.md section 6.4). GSL would abort
+ * on a singular matrix unless the program has turned its error handler off (error.h).
+ * Deterministic: the same arguments give the same weights bit for bit. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,
                  const tirenv_samples *validation, tirenv_nn **out,

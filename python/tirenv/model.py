@@ -47,10 +47,11 @@ def positions(x_from, x_to, dx=DEFAULT_DX):
 
 class Model:
     """A model of the library's table ("rigid", "springs", "ring", "cam", "point", and "nn",
-    which needs network=Network(path)) for a tire (default: Tire()). Not shareable between
-    threads at once: calls on one model are serialised."""
+    which needs network=Network(path)) for a tire (default: Tire()). The network refuses input
+    outside its trained ranges unless extrapolate=True (tirenv_model_set_extrapolate). Not
+    shareable between threads at once: calls on one model are serialised."""
 
-    def __init__(self, name, tire=None, network=None):
+    def __init__(self, name, tire=None, network=None, extrapolate=False):
         self.tire = tire if tire is not None else Tire()
         t = lib.tirenv_model_type_find(str(name).encode())
         if t == ffi.NULL:
@@ -63,6 +64,7 @@ class Model:
         if m == ffi.NULL:
             raise invalid("the tire's parameters are not valid for this model")
         self._m = ffi.gc(m, lib.tirenv_model_free)
+        lib.tirenv_model_set_extrapolate(self._m, 1 if extrapolate else 0)
         self.network = network  # kept alive with the model
         if needs_network:
             diag = new_diag()

@@ -107,11 +107,11 @@ class Ride:
                 "peak_az": float(np.max(np.abs(s["seat_az"]))), "lift_off": lift}
 
 
-def _inputs(name, tire, load, profile, network, x0, dx, n):
+def _inputs(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
     """What one axle's tires follow on the grid: the model type's effective height, the
     network's through the same table (src/cli/ride_input.c)."""
     w, diag = np.empty(n), new_diag()
-    m = Model(name, tire, network)
+    m = Model(name, tire, network, extrapolate)
     check(lib.tirenv_ride_effective(m._m, profile._p, load, x0, dx, n, double_ptr(w), diag),
           diag)
     return w
@@ -137,12 +137,13 @@ def speed_of(v):
 
 
 def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005, dt=0.001,
-         method="rk4", tol=1e-10, x_from=None, x_to=None):
+         method="rk4", tol=1e-10, x_from=None, x_to=None, extrapolate=False):
     """Drives the tractor at speed (m/s) over profile, each axle's tires following what model
     makes of it ("point" for single-point contact, a model name, or "nn" with network), as
     'tirenv ride' does: same grid, same start (1 m before the obstacle) and end (once the
     rear axle has passed and the body settled). The integration is one library call with the
-    GIL released. Returns a Ride."""
+    GIL released. extrapolate=True lets the network run outside its trained ranges, as
+    'tirenv ride --extrapolate'. Returns a Ride."""
     v = vehicle if vehicle is not None else Vehicle()
     speed = speed_of(speed)
     if not (1 / dt >= 320.0):
@@ -159,8 +160,8 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005
         raise invalid(f"the run must end after it starts: x_from {x_from}, x_to {x_to}")
     x0 = x_from - v.wheelbase - GRID_MARGIN
     n = int(math.ceil((x_to + GRID_MARGIN - x0) / dx) + 1)
-    w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n)
-         for axle in (0, 1)]
+    w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+                 extrapolate) for axle in (0, 1)]
     s = ffi.new("tirenv_ride_settings *")
     s[0] = lib.tirenv_ride_default()
     s.speed, s.x_front0, s.dt, s.method, s.tol = speed, x_from, dt, methods[method], tol

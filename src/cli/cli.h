@@ -54,7 +54,8 @@ enum {
     CLI_SWEEP = 1u << 4,    /* --x-from X, --x-to X, --dx DX (m) */
     CLI_OUTPUT = 1u << 5,   /* -o, --output PATH */
     CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
-    CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need */
+    CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need, and
+                             * --extrapolate */
     CLI_JOBS = 1u << 8      /* --jobs N: work items at once (default: the cores) */
 };
 
@@ -91,6 +92,8 @@ typedef struct {
     const tirenv_model_type *type;    /* --model, or NULL */
     const char *nn_path;              /* --nn, or NULL */
     size_t jobs;                      /* --jobs, else cli_jobs_default() (with CLI_JOBS) */
+    int extrapolate;                  /* --extrapolate: the network outside its trained
+                                       * ranges (tirenv_model_set_extrapolate) */
     const char *args[CLI_MAX_ARGS];   /* positional arguments, in order */
     size_t n_args;
 } cli_options;

@@ -17,7 +17,8 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
           "                       [--x-from X] [--x-to X] [--dx DX] [--stream] [-o FILE]\n"
-          "                       [--nn FILE] [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
+          "                       [--nn FILE [--extrapolate]] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                       [--method M]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
@@ -37,7 +38,9 @@ static void usage(FILE *fp)
     fputs("  --nn FILE            the trained network (tirenv train -o) for --model nn: over\n"
           "                       --cleat the paper's curve, over any other obstacle or\n"
           "                       --profile an extension beyond the paper (equivalent cleats;\n"
-          "                       'tirenv predict --help')\n",
+          "                       'tirenv predict --help')\n"
+          "  --extrapolate        with --nn: evaluate the network outside the ranges it was\n"
+          "                       trained on (with a warning) instead of refusing the input\n",
           fp);
     cli_help_load(fp);
     cli_help_sweep(fp);

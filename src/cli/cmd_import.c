@@ -21,7 +21,12 @@ static void usage(FILE *fp)
           "  x_N,x_m,h_m\n"
           "x_m in obstacle coordinates (centre at 0), h_m above the flat ground. A summary\n"
           "(noise, centre, smoothing) goes to standard error. A log that does not hold a\n"
-          "whole passage (flat ground, the bump, flat ground) is refused with the reason.\n"
+          "whole passage (flat ground, the bump, flat ground) is refused with the reason, as\n"
+          "is a curve the tire and obstacle cannot give (h above H + R0, a bump wider than\n"
+          "L/2 + 1.05 R0 either side: a log not in metres). The smoothing never exceeds 5 %\n"
+          "of |x_0|, which keeps the curve's shape; a log too noisy or sparse for the noise\n"
+          "target is smoothed at that cap with a warning, and refused only when the cap's\n"
+          "window holds fewer than 8 samples.\n"
           "\n"
           "options:\n"
           "  --log FILE           the raw log\n"
@@ -77,6 +82,12 @@ static void summary(const char *log, const tirenv_import_info *in, const tirenv_
             log, in->n_samples, in->n_repeated, in->reversed ? "-" : "+", in->sigma * 1e3,
             in->baseline, in->centre, in->x_0, in->half_width * 1e3, in->noise_se * 1e3,
             peak * 1e3);
+    if (in->width_capped)
+        fprintf(stderr,
+                "tirenv: import: warning: %s: the smoothing half-width stopped at its cap, "
+                "%.3g mm (5 %% of |x_0|, which keeps the curve's shape): the noise leaves a "
+                "standard error of %.2g mm on h against the %.2g mm aimed at\n",
+                log, in->half_width * 1e3, in->noise_se * 1e3, in->target_se * 1e3);
 }
 
 int cli_import_main(int argc, char *argv[])

@@ -10,7 +10,8 @@
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv ride OBSTACLE --speed V[,V...] [--model M[,M...]] [--nn FILE]\n"
+    fputs("usage: tirenv ride OBSTACLE --speed V[,V...] [--model M[,M...]]\n"
+          "                   [--nn FILE [--extrapolate]]\n"
           "                   [--vehicle FILE] [--set KEY=VALUE]... [--x-from X] [--x-to X]\n"
           "                   [--dx DX] [--dt S] [--solver rk4|rk8pd] [-o FILE] [--out-dir DIR]\n"
           "                   [--jobs N]\n"
@@ -46,6 +47,9 @@ static void usage(FILE *fp)
           "                       (e.g. 10km/h)\n"
           "  --model M[,M...]     models (default point,springs)\n"
           "  --nn FILE            the network for --model nn\n"
+          "  --extrapolate        let the network run outside its trained ranges (over a\n"
+          "                       road, bumps lower or longer than its cleats), with a\n"
+          "                       warning; without it such input is refused\n"
           "  --vehicle FILE       vehicle property file; default: vehicles/tractor.veh in\n"
           "                       the data directory ($TIRENV_DATA, else the installed data)\n"
           "  --set KEY=VALUE      override a key of the vehicle file (e.g. MASS=5200);\n"
@@ -187,6 +191,7 @@ int cli_ride_main(int argc, char *argv[])
         return code;
     r.jobs = o.jobs;
     r.nn_path = o.nn_path;
+    r.extrapolate = o.extrapolate;
     r.out_path = o.output;
     r.dx = isnan(o.dx) ? 0.005 : o.dx;
     r.have_from = !isnan(o.x_from);

@@ -21,9 +21,13 @@ static void usage(FILE *fp)
     cli_help_load(fp);
     cli_help_model(fp, 0, TIRENV_MODEL_NEEDS_NETWORK, " (default ring, the reference tire)");
     fputs("  --speed M_S          cart speed, m/s (default 0.1)\n"
-          "  --rate HZ            sampling rate, Hz (default 100)\n"
+          "  --rate HZ            sampling rate, Hz (default 100); speed/rate must leave at\n"
+          "                       least 40 samples over L/2 + R0 (what the import needs),\n"
+          "                       and the rate at most 1 MHz (the log's 1 us)\n"
           "  --noise SX,SZ        sensor noise sigma on x and z, m (default 5e-5,2e-4)\n"
-          "  --offset X,Z         rig readings at obstacle x = 0 and centre z = 0, m (default 0,0)\n"
+          "  --offset X,Z         rig readings at obstacle x = 0 and centre z = 0, m (default 0,0);\n"
+          "                       readings up to 2.25e9 m, which doubles resolve to the log's\n"
+          "                       1 um\n"
           "  --seed S             noise seed (default 1)\n"
           "  -o FILE              the log to write (required; '-' for stdout)\n",
           fp);

@@ -20,7 +20,8 @@ static void usage(FILE *fp)
           "                    [--model NAME] [--rig] [--set KEY=V1,V2,...]...\n"
           "                    [--split NAME | --control-fraction F --validation-fraction F\n"
           "                    [--split-seed S]] [--seed S] [--shard K/N] [--jobs N]\n"
-          "                    [--progress] [--tire FILE] [--method NAME] [--nn FILE]\n"
+          "                    [--progress] [--tire FILE] [--method NAME]\n"
+          "                    [--nn FILE [--extrapolate]]\n"
           "       tirenv sweep merge PART... -o DIR\n"
           "\n"
           "Writes a data set (cases.csv, curves/, with --rig logs/; what tirenv train,\n"
@@ -61,7 +62,9 @@ static void usage(FILE *fp)
           "  --split-seed S       the permutation's seed (default 1)\n"
           "  --seed S             rig noise: case i runs with seed S + i (default 1)\n"
           "  --shard K/N          write part K (0 <= K < N) of N\n"
-          "  --nn FILE            the trained network, for --model nn\n",
+          "  --nn FILE            the trained network, for --model nn\n"
+          "  --extrapolate        with --nn: evaluate the network outside the ranges it was\n"
+          "                       trained on (with a warning) instead of refusing the input\n",
           fp);
     cli_help_jobs(fp);
     fputs("  --progress           a progress bar on standard error even when it is not a\n"
@@ -404,6 +407,7 @@ int cli_sweep_main(int argc, char *argv[])
     s.network = with_net;
     s.network_R0 = rec.R0;
     s.network_id = net_id;
+    s.extrapolate = o.extrapolate;
     s.rig = rig;
     s.jobs = o.jobs;
     s.seed = (unsigned long)seed;

@@ -184,6 +184,8 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
                      : tirenv_error(&diag, TIRENV_EINVAL, "", 0, "network",
                                     "the %s model needs a trained network (--nn FILE)",
                                     tirenv_model_type_name(type));
+    if (o)
+        tirenv_model_set_extrapolate(*out, o->extrapolate);
     if (!status && (status = tirenv_model_set_network(*out, nn, rec.R0, &diag)) &&
         !diag.file[0])
         snprintf(diag.file, sizeof diag.file, "%s", o->nn_path);

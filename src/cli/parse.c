@@ -23,6 +23,7 @@ enum {
     OPT_MODEL,
     OPT_NN,
     OPT_JOBS,
+    OPT_EXTRAPOLATE,
     OPT_OWN                /* OPT_OWN + i: the command's own option i */
 };
 
@@ -68,6 +69,7 @@ static const struct {
     {CLI_MODEL, {"model", required_argument, NULL, OPT_MODEL}, 0},
     {CLI_NETWORK, {"nn", required_argument, NULL, OPT_NN}, 0},
     {CLI_JOBS, {"jobs", required_argument, NULL, OPT_JOBS}, 0},
+    {CLI_NETWORK, {"extrapolate", no_argument, NULL, OPT_EXTRAPOLATE}, 0},
 };
 enum { N_SHARED = sizeof shared / sizeof shared[0], MAX_OWN = 32 };
 
@@ -145,6 +147,9 @@ static int shared_option(cli_options *o, int code, const char *arg)
         return CLI_EXIT_OK;
     case OPT_JOBS:
         return cli_parse_jobs(arg, &o->jobs);
+    case OPT_EXTRAPOLATE:
+        o->extrapolate = 1;
+        return CLI_EXIT_OK;
     default:
         break;
     }
@@ -208,6 +213,11 @@ static int check_network(const cli_parser *p, const cli_options *o)
     if (needs && !o->nn_path) {
         cli_error("%s: --model %s needs the trained network: --nn FILE (from 'tirenv train')",
                   p->name, tirenv_model_type_name(o->type));
+        return CLI_EXIT_USAGE;
+    }
+    if (o->extrapolate && !o->nn_path) {
+        cli_error("%s: --extrapolate is for a trained network (--nn FILE), which alone has a "
+                  "trained range", p->name);
         return CLI_EXIT_USAGE;
     }
     if (o->nn_path && (p->groups & CLI_MODEL) && o->type && !needs) {

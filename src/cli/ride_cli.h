@@ -15,6 +15,7 @@ typedef struct {
     const char *sets[CLI_MAX_SETS];  /* --set KEY=VALUE on the vehicle */
     size_t n_sets;
     const char *nn_path;             /* --nn */
+    int extrapolate;                 /* --extrapolate: the network outside its ranges */
     const char *out_path;            /* -o: the one run's series */
     const char *out_dir;             /* --out-dir */
     char speed_buf[256];
@@ -54,9 +55,11 @@ typedef struct {
 /* What one axle's tires follow on the grid x0 + k*dx (k < n), into w[]: the effective height
  * of a model of this type at the load of one tire (N), the same for every type (the point
  * contact: the profile itself). A type that needs a network gets nn (x_N referred to R0_nn,
- * m; 0: the tire's). The model's warnings, if any, are copied into warnings (may be NULL). */
+ * m; 0: the tire's), evaluated outside its trained ranges only if extrapolate is set. The
+ * model's warnings, if any, are copied into warnings (may be NULL). */
 int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, double load,
-                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
+                        int extrapolate, double x0,
                         double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
 

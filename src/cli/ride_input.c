@@ -5,7 +5,8 @@
 #include "cli/ride_cli.h"
 
 int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, double load,
-                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn, double x0,
+                        const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
+                        int extrapolate, double x0,
                         double dx, size_t n, double w[], char *warnings, size_t warnings_size,
                         tirenv_diag *diag)
 {
@@ -17,6 +18,8 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
     }
     tirenv_model *m = tirenv_model_alloc(type, tire);
     int status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (m)
+        tirenv_model_set_extrapolate(m, extrapolate);
     if (!status && (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
         status = nn ? tirenv_model_set_network(m, nn, R0_nn, diag)
                     : tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",

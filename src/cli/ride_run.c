@@ -95,7 +95,8 @@ static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     (void)worker;
     const double t0 = cli_thread_seconds();
     p->status[k] = ride_cli_axle_input(p->in[i].type, &p->s->tire[axle], p->s->load[axle],
-                                       p->s->p, p->nn[i], p->R0_nn[i], p->s->x0, p->s->dx,
+                                       p->s->p, p->nn[i], p->R0_nn[i], p->r->extrapolate,
+                                       p->s->x0, p->s->dx,
                                        p->s->n, p->in[i].w[axle], p->warnings[k],
                                        sizeof p->warnings[k], diag);
     p->seconds[k] = cli_thread_seconds() - t0;
@@ -331,6 +332,22 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         goto done;
     if (r->out_dir && (code = cli_mkdir(r->out_dir)))
         goto done;
+    /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
+     * memory": a 10 km/h km of road is 0.36 M samples. */
+    for (size_t j = 0; j < r->n_speeds; ++j) {
+        const double speed = r->speeds[j];
+        const double duration = (run_end(r, &s, speed, x_last) - x_from) / speed;
+        if (!(duration / r->dt < CLI_MAX_POSITIONS)) {
+            cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
+                      "most %.0f: check --speed (%g m/s) and --dt", duration, r->dt,
+                      duration / r->dt,
+                      duration / r->dt * (double)(sizeof *series->samples +
+                                                  sizeof *series->a_w) / 1e9,
+                      CLI_MAX_POSITIONS, speed);
+            code = CLI_EXIT_USAGE;
+            goto done;
+        }
+    }
     ride_runs runs = {r, &s, in, res, series, x_from, x_last, NULL};
     if (!(runs.status = calloc(n_runs, sizeof *runs.status))) {
         code = cli_fail(TIRENV_ENOMEM, NULL);

@@ -8,6 +8,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 
 int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag)
@@ -18,6 +19,14 @@ int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag)
     r->fp = fopen(path, "r");
     if (!r->fp)
         return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", strerror(errno));
+    /* fopen takes a directory; only the first read fails, with a bare "Is a directory". */
+    struct stat st;
+    if (fstat(fileno(r->fp), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(r->fp);
+        r->fp = NULL;
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "is a directory; expected a CSV "
+                            "file");
+    }
     return TIRENV_OK;
 }
 
@@ -35,13 +44,24 @@ int tirenv_csv__next(tirenv_csv__reader *r)
 {
     for (;;) {
         errno = 0;
-        if (getline(&r->buf, &r->cap, r->fp) == -1) {
+        const ssize_t len = getline(&r->buf, &r->cap, r->fp);
+        if (len == -1) {
             if (ferror(r->fp))
                 return -tirenv_error(r->diag, TIRENV_EIO, r->file, r->line + 1, "",
                                      "cannot read: %s", strerror(errno ? errno : EIO));
             return 0;
         }
         r->line++;
+        /* A NUL ends the C string: the rest of the line would be dropped without a word. */
+        const char *nul = memchr(r->buf, '\0', (size_t)len);
+        if (nul) {
+            const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line, "",
+                                            "a NUL byte in the line; expected text (is this "
+                                            "a binary file?)");
+            if (r->diag)
+                r->diag->column = (size_t)(nul - r->buf) + 1;
+            return -status;
+        }
         char *text = r->buf;
         if (r->line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3; /* the UTF-8 byte-order mark spreadsheet programs write */

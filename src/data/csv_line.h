@@ -32,7 +32,8 @@ int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag)
 
 /* Advances to the next line with content, skipping blank lines and '#' comment lines;
  * accepts a UTF-8 byte-order mark and CRLF ends. Returns 1 for a line, 0 at the end of the
- * file, or TIRENV_EIO (negated, so < 0) on a read error with diag set. */
+ * file, or a status negated (so < 0) with diag set: TIRENV_EIO on a read error, TIRENV_EPARSE
+ * for a NUL byte in a line (its column in diag). */
 int tirenv_csv__next(tirenv_csv__reader *r);
 
 /* Frees the buffer and closes the file; safe after a failed open. */

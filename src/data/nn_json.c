@@ -351,6 +351,10 @@ static int check_finite(const tirenv_nn *nn, const tirenv_train_record *rec, tir
 int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
                          tirenv_diag *diag)
 {
+    /* An empty record, as the reader makes for a file without one, is none: written as such,
+     * the file reads back ("trainer": "" would not). */
+    if (rec && !rec->trainer[0])
+        rec = NULL;
     int status = check_finite(nn, rec, diag, path);
     if (status)
         return status;

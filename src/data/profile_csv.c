@@ -75,7 +75,9 @@ static int read_rows(const char *path, rows *r, tirenv_diag *diag)
         status = tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
                               "no header line (only blank or comment lines); expected the "
                               "header 'x_m,z_m', then data rows");
-    else if (got > 0)
+    else if (got < 0)
+        status = -got;  /* a line that cannot be read (a NUL byte): never skipped */
+    else
         status = tirenv_csv__header(&rd, names, FIELDS);
     char prev_x[32] = "";
     while (status == TIRENV_OK && (got = tirenv_csv__next(&rd)) > 0)

@@ -482,6 +482,14 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
     while (status == TIRENV_OK && (len = getline(&buf, &cap, fp)) != -1) {
         c.line++;
         char *line = buf;
+        /* A NUL ends the C string: the rest of the line would be dropped without a word. */
+        const char *nul = memchr(buf, '\0', (size_t)len);
+        if (nul) {
+            c.base = buf;
+            status = pf_fail(&c, nul, "", "a NUL byte in the line; expected text (is this a "
+                             "binary file?)");
+            break;
+        }
         if (c.line == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
             line += 3; /* a UTF-8 byte-order mark some Windows editors add */
         c.base = line;

@@ -40,6 +40,9 @@ typedef struct {
     double sigma;          /* estimated standard deviation of the z noise, m */
     double baseline;       /* flat-ground z, m */
     double centre;         /* obstacle centre, m, in the frame of tirenv_rig__samples */
+    double x_a, x_b;       /* where the bump rises from and falls back to the flat level, m,
+                              to a detection bin of width delta (m) */
+    double delta;
 } tirenv_rig__passage;
 
 /* tirenv_rig_import_samples, also saying what it found (info may be NULL). On failure diag's
@@ -55,10 +58,11 @@ int tirenv_rig__find_passage(const tirenv_rig__samples *s, double x_0,
                              tirenv_rig__passage *p, tirenv_diag *diag);
 
 /* Stage 3 (rig_smooth.c): fold both halves onto the approach half, filter without shifting
- * and evaluate on the settings' x_N grid. Sets *half_width and *noise_se (m). */
+ * and evaluate on the settings' x_N grid. Sets info's half_width, noise_se, target_se and
+ * width_capped. */
 int tirenv_rig__smooth(const tirenv_rig__samples *s, const tirenv_rig__passage *p,
                        const tirenv_import_settings *set, double x_0, tirenv_curve *out,
-                       double *half_width, double *noise_se, tirenv_diag *diag);
+                       tirenv_import_info *info, tirenv_diag *diag);
 
 /* Median of v[0..n-1] (n >= 1) using scratch[0..n-1]; v is left unchanged. */
 double tirenv_rig__median(const double v[], size_t n, double scratch[]);

@@ -183,6 +183,46 @@ static int prepare_samples(size_t n, const double t[], const double x[], const d
     return status;
 }
 
+/* ---- the result against the obstacle and the tire ---------------------------------------- */
+
+/* A tire of free radius R0 touches no ground farther than R0 from its centre (5 % more for a
+ * tread standing out, docs/models.md section 1.5), so the bump cannot begin before the centre
+ * is that close to the obstacle's edge: L/2 + 1.05 R0 from its centre, to a detection bin. And
+ * the centre rises over the obstacle at most by H plus the tire's deflection, which is less
+ * than R0: h <= H + R0. A log in other units than metres breaks one or the other (z in mm put
+ * the peak of a 0.1 m cleat at 98.7 m; x in mm stretches the bump a thousandfold), as does a
+ * wrong obstacle or tire: refused with the reason rather than imported. */
+static const double REACH_FACTOR = 1.05;
+
+static int plausible(const tirenv_import_settings *set, const tirenv_rig__passage *p,
+                     const tirenv_curve *c, tirenv_diag *diag)
+{
+    const double reach = 0.5 * set->L + REACH_FACTOR * set->R0 + p->delta;
+    const double before = p->centre - p->x_a, after = p->x_b - p->centre;
+    if (before > reach || after > reach)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x",
+                            "the bump rises %.4g m before the obstacle's centre and falls back "
+                            "%.4g m after it, but a tire of free radius %g m touches a %g m "
+                            "long obstacle only within %.4g m of its centre (L/2 + %.2f R0): "
+                            "x is not in metres, or the obstacle or the tire is not the one "
+                            "logged", before, after, set->R0, set->L, reach, REACH_FACTOR);
+    double peak = -INFINITY;
+    size_t at = 0;
+    for (size_t k = 0; k < c->n; ++k)
+        if (c->h[k] > peak) {
+            peak = c->h[k];
+            at = k;
+        }
+    if (peak > set->H + set->R0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "z",
+                            "the curve peaks at h = %.4g m (x_N = %.4g), but over a %g m high "
+                            "obstacle a tire of free radius %g m rises at most H + R0 = %.4g m "
+                            "(H plus its deflection): z is not in metres, or the obstacle or the "
+                            "tire is not the one logged", peak, c->x_N[at], set->H, set->R0,
+                            set->H + set->R0);
+    return TIRENV_OK;
+}
+
 /* ---- the driver --------------------------------------------------------------------------- */
 
 int tirenv_rig__import(size_t n, const double t[], const double x[], const double z[],
@@ -211,8 +251,9 @@ int tirenv_rig__import(size_t n, const double t[], const double x[], const doubl
     if (status == TIRENV_OK)
         status = tirenv_rig__find_passage(&s, x_0, &p, diag);
     if (status == TIRENV_OK)
-        status = tirenv_rig__smooth(&s, &p, set, x_0, out, &found.half_width, &found.noise_se,
-                                    diag);
+        status = tirenv_rig__smooth(&s, &p, set, x_0, out, &found, diag);
+    if (status == TIRENV_OK && (status = plausible(set, &p, out, diag)))
+        tirenv_curve_free(out);
     if (status == TIRENV_OK) {
         found.sigma = p.sigma;
         found.baseline = p.baseline;

@@ -361,6 +361,9 @@ static int passage_on_bins(const tirenv_rig__samples *s, double x_0, rig_bin b[]
     size_t k_lo, k_hi;
     bins_between(b, m, bump.x_a - margin, bump.x_b + margin, &k_lo, &k_hi);
     p->centre = centre_refine(b, m, k_lo, k_hi, bump.c0, delta, p->sigma);
+    p->x_a = bump.x_a;
+    p->x_b = bump.x_b;
+    p->delta = delta;
     return TIRENV_OK;
 }
 

@@ -88,6 +88,8 @@ static int sweep_model(const tirenv_sweep_settings *s, const tirenv_tire *t, tir
     if (!(tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK))
         return TIRENV_OK;
     const int status = tirenv_model_set_network(*m, s->network, s->network_R0, diag);
+    if (!status)
+        tirenv_model_set_extrapolate(*m, s->extrapolate);
     if (status) {
         tirenv_model_free(*m);
         *m = NULL;

@@ -21,6 +21,7 @@
  * under half the patch. */
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "model/cam_impl.h"
@@ -61,10 +62,71 @@ static void cam_free(void *state)
     free(state);
 }
 
+/* The cam's valid range (docs/models.md section 7.3), as the largest relative deflection
+ * y_max = rho/R0 and what ends it there, the first of:
+ *   - the patch reaching the chord of the free circle at that deflection: a patch longer than
+ *     the chord, 2*sqrt(rho*(2*R0 - rho)), would press the ground on tread the undeformed
+ *     tire does not reach there, however much it bulged (real patches are shorter; the public
+ *     205/60R15's law reaches its chord at 54 % deflection). With y = s^2 the law meets the
+ *     chord where Q_RA2*s + Q_RA1 = sqrt(2 - s^2), the positive root of
+ *     (1 + Q_RA2^2) s^2 + 2 Q_RA1 Q_RA2 s + Q_RA1^2 - 2 = 0; Q_RA1 >= sqrt(2) puts every
+ *     patch past its chord;
+ *   - with Q_RA2 < 0, the law's peak at s = Q_RA1/(2|Q_RA2|): past it the patch would shrink
+ *     under more load;
+ *   - the centre at the ground, rho = R0. */
+typedef struct {
+    double y_max;       /* rho/R0 at the end of the range */
+    char why[160];
+} cam_range;
+
+static cam_range cam_valid_range(const tirenv_tire *t)
+{
+    const double q1 = t->cam.q_ra1, q2 = t->cam.q_ra2;
+    cam_range r = {1, "with the centre at the ground"};
+    const double disc = 2 * (1 + q2 * q2) - q1 * q1;
+    if (q1 >= M_SQRT2) {
+        r.y_max = 0;
+        snprintf(r.why, sizeof r.why, "none: with Q_RA1 %g >= sqrt(2) every patch is longer "
+                 "than the chord of the free circle", q1);
+        return r;
+    }
+    const double s_chord = (-q1 * q2 + sqrt(disc)) / (1 + q2 * q2);
+    if (s_chord > 0 && s_chord * s_chord < r.y_max && q2 * s_chord + q1 >= 0) {
+        r.y_max = s_chord * s_chord;
+        snprintf(r.why, sizeof r.why, "where the patch of Q_RA1 %g, Q_RA2 %g reaches the chord "
+                 "of the free circle: a longer patch would press tread the tire does not "
+                 "reach there", q1, q2);
+    }
+    if (q2 < 0) {
+        const double s_peak = q1 / (-2 * q2);
+        if (s_peak * s_peak < r.y_max) {
+            r.y_max = s_peak * s_peak;
+            snprintf(r.why, sizeof r.why, "where the contact length of Q_RA1 %g, Q_RA2 %g "
+                     "peaks: under more load the patch would shrink", q1, q2);
+        }
+    }
+    return r;
+}
+
+static int out_of_range(const tirenv_tire *t, const cam_range *r, double load, double l_c,
+                        tirenv_diag *diag)
+{
+    const double R0 = t->springs.R0, rho = r->y_max * R0;
+    const double a = R0 * (t->cam.q_ra2 * r->y_max + t->cam.q_ra1 * sqrt(r->y_max));
+    if (l_c > 0)
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
+                            "%g m is beyond the cam model's valid range, up to %.4g m (load "
+                            "%.6g N, deflection %.4g m), %s", l_c, 2 * a, t->cam.c_z * rho,
+                            rho, r->why);
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
+                        "%g N (deflection %g m at VERTICAL_STIFFNESS %g N/m) is beyond the cam "
+                        "model's valid range, up to %.6g N (deflection %.4g m, contact length "
+                        "%.4g m), %s", load, load / t->cam.c_z, t->cam.c_z, t->cam.c_z * rho,
+                        rho, 2 * a, r->why);
+}
+
 /* The static deflection rho = G / VERTICAL_STIFFNESS and MF-Tyre's contact half length
- * a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)). With Q_RA2 < 0 the law peaks at
- * sqrt(rho/R0) = Q_RA1 / (2|Q_RA2|) and loads beyond are refused: past it the patch would
- * shrink under more load. */
+ * a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)), within the valid range. */
 static int cam_patch(const tirenv_tire *t, double load, double *rho, double *a,
                      tirenv_diag *diag)
 {
@@ -74,14 +136,10 @@ static int cam_patch(const tirenv_tire *t, double load, double *rho, double *a,
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
                             "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m), "
                             "beyond its free radius %g m", load, *rho, t->cam.c_z, R0);
+    const cam_range range = cam_valid_range(t);
+    if (!(*rho <= range.y_max * R0))
+        return out_of_range(t, &range, load, 0, diag);
     const double r = *rho / R0, y = sqrt(r);
-    if (q_ra2 < 0 && y > q_ra1 / (-2 * q_ra2)) {
-        const double y_peak = q_ra1 / (-2 * q_ra2);
-        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
-                            "%g N is beyond the load %g N where the contact length of Q_RA1 "
-                            "%g, Q_RA2 %g peaks", load, t->cam.c_z * R0 * y_peak * y_peak,
-                            q_ra1, q_ra2);
-    }
     *a = R0 * (q_ra2 * r + q_ra1 * y);
     return TIRENV_OK;
 }
@@ -122,6 +180,9 @@ static int cam_load_for_contact_length(void *state, double l_c, double *load,
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "contact length",
                             "%g m needs a deflection of %g m, beyond the free radius %g m",
                             l_c, rho, R0);
+    const cam_range range = cam_valid_range(&st->tire);
+    if (!(rho <= range.y_max * R0))
+        return out_of_range(&st->tire, &range, 0, l_c, diag);
     *load = st->tire.cam.c_z * rho;
     return TIRENV_OK;
 }

@@ -5,7 +5,9 @@
 #include "model/deformable.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "core/equilibrium.h"
 #include "core/profile_impl.h"
 #include "model/rigid_impl.h"
@@ -31,6 +33,11 @@ typedef struct {
     int shift_invariant;
     double flat_F;
     size_t flat_contacts;
+    /* The valid range (docs/models.md section 1.3), found on first need: flat-ground centre
+     * heights from z_min up to R0, loads up to G_max (N), contact lengths up to l_max (m). */
+    int have_range;
+    double z_min, G_max, l_max;
+    char range_why[160];
 } deformable_state;
 
 /* The force function the solver calls: the model's forces at one position. */
@@ -75,20 +82,67 @@ void tirenv_deformable_free(void *state)
     free(st);
 }
 
+/* The valid range, once per model: the load and contact length at the lowest centre height
+ * the model's physics allows. Without a limit of the model's own, the centre at the ground
+ * bounds the load, which the equilibrium's bracket reports (TIRENV_ENOBRACKET). */
+static int valid_range(deformable_state *st, tirenv_diag *diag)
+{
+    if (st->have_range)
+        return TIRENV_OK;
+    const double R0 = st->tire.springs.R0;
+    double z = 0;
+    st->range_why[0] = '\0';
+    int status = st->ops->lowest_z ? st->ops->lowest_z(st->elem, st->flat, &z, st->range_why,
+                                                       sizeof st->range_why, diag)
+                                   : TIRENV_OK;
+    if (status)
+        return status;
+    st->z_min = z;
+    st->G_max = INFINITY;
+    st->l_max = 2 * R0;
+    if (z > 0) {
+        tirenv_eq_point p;
+        if ((status = st->ops->forces(st->elem, st->flat, 0, z, &p, diag)) ||
+            (status = st->ops->contact_length(st->elem, st->flat, z, &st->l_max, diag)))
+            return status;
+        st->G_max = p.F;
+    }
+    st->have_range = 1;
+    return TIRENV_OK;
+}
+
+/* A failure on flat ground has no position to name; the load is what the user gave. */
+static int on_flat_ground(double load, int status, tirenv_diag *diag)
+{
+    if (status && status != TIRENV_ENOBRACKET && diag) {  /* that one names the load */
+        char msg[sizeof diag->message];
+        snprintf(msg, sizeof msg, "on flat ground at load %.6g N: %.440s", load, diag->message);
+        memcpy(diag->message, msg, sizeof msg);
+    }
+    return status;
+}
+
 int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
+    int status = valid_range(st, diag);
+    if (status)
+        return on_flat_ground(load, status, diag);
+    if (load > st->G_max)
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
+                            "%g N is beyond the %s model's valid range, up to %.6g N (centre "
+                            "height %.4g m, contact length %.4g m), %s", load, st->ops->name, st->G_max,
+                            st->z_min, st->l_max, st->range_why);
     const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = R0, .dz_hint = 0.05 * R0};
     force_ctx fc = {st, st->flat, 0};
     tirenv_eq_result res;
-    int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, load, &prob, &res,
-                                 diag);
+    status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, load, &prob, &res, diag);
     if (status)
-        return status;
+        return on_flat_ground(load, status, diag);
     double l_c;
     if ((status = st->ops->contact_length(st->elem, st->flat, res.point.z, &l_c, diag)))
-        return status;
+        return on_flat_ground(load, status, diag);
     st->have_flat_point = 1;
     st->flat_load = load;
     st->flat_point = res.point;
@@ -111,8 +165,16 @@ int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *l
     if (!(l_c > 0 && l_c < 2 * R0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
                             "must be in (0, 2*R0) = (0, %g) m, got %g", 2 * R0, l_c);
+    int status = valid_range(st, diag);
+    if (status)
+        return status;
+    if (l_c > st->l_max)
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
+                            "%g m is beyond the %s model's valid range, up to %.4g m (load "
+                            "%.6g N, centre height %.4g m), %s", l_c, st->ops->name, st->l_max, st->G_max,
+                            st->z_min, st->range_why);
     double z;
-    int status = st->ops->z_for_contact_length(st->elem, st->flat, l_c, &z, diag);
+    status = st->ops->z_for_contact_length(st->elem, st->flat, l_c, st->z_min, &z, diag);
     tirenv_eq_point p;
     if (!status)
         status = st->ops->forces(st->elem, st->flat, 0, z, &p, diag);

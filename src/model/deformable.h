@@ -8,6 +8,7 @@
 #include "model/model_impl.h"
 
 typedef struct {
+    const char *name;  /* the model type's, for messages */
     void *(*alloc)(const tirenv_tire *tire);
     void (*free)(void *elem);
     /* Hub forces with the centre at (x, z) (m): F_z (N), dF_z/dz (N/m), F_x (N) and the
@@ -17,9 +18,16 @@ typedef struct {
     /* Flat-ground contact length (m) with the centre at height z (m). */
     int (*contact_length)(void *elem, const tirenv_profile *flat, double z, double *l_c,
                           tirenv_diag *diag);
-    /* Flat-ground centre height z (m) at which the contact length is l_c (m). */
-    int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double *z,
-                                tirenv_diag *diag);
+    /* Flat-ground centre height z (m) at which the contact length is l_c (m), searched in
+     * [z_lo, R0]: z_lo is the lowest height of the valid range (lowest_z), where the contact
+     * length is the longest. */
+    int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double z_lo,
+                                double *z, tirenv_diag *diag);
+    /* Optional: the lowest flat-ground centre height z (m) of the model's valid range and why
+     * the range ends there (a phrase for messages, into why[n]); z = 0 and "" when it ends
+     * only where the centre meets the ground. NULL means that. docs/models.md section 1.3. */
+    int (*lowest_z)(void *elem, const tirenv_profile *flat, double *z, char *why, size_t n,
+                    tirenv_diag *diag);
     /* Whether the tire looks the same at every x (no lugs turning with it), so that on level
      * ground the equilibrium is the flat one; NULL means always. */
     int (*shift_invariant)(const tirenv_tire *tire);

@@ -91,6 +91,12 @@ int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double
     return m->type->set_network(m->state, nn, R0, diag);
 }
 
+void tirenv_model_set_extrapolate(tirenv_model *m, int allow)
+{
+    if (m->type->set_extrapolate)
+        m->type->set_extrapolate(m->state, allow != 0);
+}
+
 double tirenv_model_load(const tirenv_model *m) { return m->ready ? m->load : NAN; }
 
 const char *tirenv_model_warnings(const tirenv_model *m)

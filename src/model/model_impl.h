@@ -34,6 +34,9 @@ struct tirenv_model_type {
     double (*reach)(const void *state);
     /* With TIRENV_MODEL_NEEDS_NETWORK: the network (to be copied) and the R0 (m) of its x_N. */
     int (*set_network)(void *state, const struct tirenv_nn *nn, double R0, tirenv_diag *diag);
+    /* Optional: whether set may evaluate outside a trained range (tirenv_model_set_extrapolate);
+     * NULL for a model without one. */
+    void (*set_extrapolate)(void *state, int allow);
     /* Optional: the warnings and the note of the last set (tirenv_model_warnings). */
     const char *(*warnings)(const void *state);
     const char *(*note)(const void *state);

@@ -39,6 +39,7 @@ typedef struct {
     tirenv_nn *nn;             /* owned copy; NULL until tirenv_model_set_network */
     double R0;                 /* the free radius x_N refers to, m */
     char r0_warning[256];      /* the network's R0 is not the tire's, or "" */
+    int extrapolate;           /* evaluate outside the trained ranges (with warnings) */
     int pinned;                /* the last load_for_contact_length's pair: */
     double pin_load, pin_l_c;  /* N, m */
     /* The set: */
@@ -181,10 +182,10 @@ static void warn(nn_state *st, const char *fmt, ...)
     va_end(ap);
 }
 
-/* One warning per input the training never saw a value like, among the inputs from the
- * contact length up to end - 1 (the cleat's all three; over a road only the contact length,
- * the decomposition counts its obstacles itself). */
-static void warn_range(nn_state *st, size_t end)
+/* Among the inputs from the contact length up to end - 1 (the cleat's all three; over a road
+ * only the contact length, obstacles_in_range checks the obstacles), each the training never
+ * saw a value like: refused, or with extrapolation allowed one warning each. */
+static int check_range(nn_state *st, size_t end, tirenv_diag *diag)
 {
     static const char *const what[TIRENV_NN_INPUTS] = {"x_N", "contact length",
                                                        "obstacle height", "obstacle length"};
@@ -192,9 +193,47 @@ static void warn_range(nn_state *st, size_t end)
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
     tirenv_nn_get_input_range(st->nn, lo, hi);
     for (size_t i = tirenv_nn_out_of_range(st->nn, u, TIRENV_NN_CONTACT_LENGTH); i < end;
-         i = tirenv_nn_out_of_range(st->nn, u, i + 1))
+         i = tirenv_nn_out_of_range(st->nn, u, i + 1)) {
+        if (!st->extrapolate)
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, what[i],
+                                "%g m is outside the range the network was trained on, %g to "
+                                "%g m: the network would extrapolate, which is refused unless "
+                                "allowed (--extrapolate; tirenv_model_set_extrapolate)", u[i],
+                                lo[i], hi[i]);
         warn(st, "%s %g m is outside the range the network was trained on (%g to %g m): the "
              "prediction is an extrapolation", what[i], u[i], lo[i], hi[i]);
+    }
+    return TIRENV_OK;
+}
+
+/* Over a road, the first equivalent cleat (docs/models.md section 12) outside the trained
+ * heights or lengths, unless extrapolation is allowed: below the trained heights its curve
+ * would be the lowest trained one scaled, beyond the ranges clamped to them, curves the
+ * network never learned. */
+static int obstacles_in_range(const nn_state *st, tirenv_diag *diag)
+{
+    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    if (st->extrapolate)
+        return TIRENV_OK;
+    const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
+    size_t out = 0, first = 0;
+    for (size_t k = 0; k < in.obstacles; ++k)
+        if (!(ob[k].H >= in.H_min && ob[k].H <= in.H_max && ob[k].L >= in.L_min &&
+              ob[k].L <= in.L_max) && out++ == 0)
+            first = k;
+    if (out == 0)
+        return TIRENV_OK;
+    const tirenv_nn_obstacle *o = &ob[first];
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0,
+                        o->H >= in.H_min && o->H <= in.H_max ? "obstacle length"
+                                                             : "obstacle height",
+                        "the obstacle at x = %.6g m (%.6g to %.6g m, %.4g m high, %.4g m long "
+                        "as a cleat) is outside the range the network was trained on, heights "
+                        "%g to %g m, lengths %g to %g m (%zu of %zu obstacles are): the network "
+                        "would extrapolate (scale or clamp its curves), which is refused unless "
+                        "allowed (--extrapolate; tirenv_model_set_extrapolate)", o->c, o->x_lo,
+                        o->x_hi, o->H, o->L, in.H_min, in.H_max, in.L_min, in.L_max, out,
+                        in.obstacles);
 }
 
 /* The decomposition's obstacles outside the training range, in one warning. */
@@ -254,22 +293,28 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     if (st->r0_warning[0])
         warn(st, "%s", st->r0_warning);
     if (st->cleat) {
-        warn_range(st, TIRENV_NN_INPUTS);
+        const int s = check_range(st, TIRENV_NN_INPUTS, diag);
+        if (s)
+            return s;
         st->x_0 = tirenv_xN_origin(st->R0, st->l_c, st->L, st->H);
         snprintf(st->note, sizeof st->note, "cleat %.4g x %.4g m", st->L, st->H);
         note_forms(st);
         /* No positions: only the checks of the arguments, so that set says what is wrong. */
         return tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, 0, NULL, NULL, diag);
     }
-    warn_range(st, TIRENV_NN_CONTACT_LENGTH + 1);
-    const int s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag);
-    if (s)
+    int s = check_range(st, TIRENV_NN_CONTACT_LENGTH + 1, diag);
+    if (s || (s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag)) ||
+        (s = obstacles_in_range(st, diag)))
         return s;
     const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
     warn_clamped(st, &in);
     snprintf(st->note, sizeof st->note, "%zu obstacles above a baseline of width %.3g m (%zu "
              "lower than the lowest trained cleat, scaled)", in.obstacles, in.width,
              in.height_below);
+    if (in.height_below)
+        warn(st, "%zu of %zu obstacles lower than the lowest trained cleat (%g m): their "
+             "curves are its curve scaled down, an extrapolation", in.height_below,
+             in.obstacles, in.H_min);
     note_forms(st);
     return TIRENV_OK;
 }
@@ -336,6 +381,11 @@ static int nn_model_envelope(void *state, size_t n, const double x[], tirenv_poi
     return TIRENV_OK;
 }
 
+static void nn_model_set_extrapolate(void *state, int allow)
+{
+    ((nn_state *)state)->extrapolate = allow;
+}
+
 static const char *nn_model_warnings(const void *state)
 {
     return ((const nn_state *)state)->warnings;
@@ -363,6 +413,7 @@ static const tirenv_model_type nn_type = {
     .set_profile = NULL,
     .reach = NULL,
     .set_network = nn_model_set_network,
+    .set_extrapolate = nn_model_set_extrapolate,
     .warnings = nn_model_warnings,
     .note = nn_model_note,
 };

@@ -1,5 +1,6 @@
 /* The ring reference tire as a tirenv_model_type (docs/models.md section 5). */
 #include <math.h>
+#include <stdio.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include "model/deformable.h"
@@ -48,17 +49,24 @@ static double patch_minus_target(double z, void *p)
     return l - c->l_c;
 }
 
-/* The patch grows continuously as the centre comes down (its edges are interpolated), so
- * Brent on [R0/2, R0] finds the height; 1e-12 m is far below any patch length's meaning and
- * Brent needs about 40 iterations for it from a 0.34 m bracket, so 200 is only a guard. */
+/* The patch grows continuously as the centre comes down (its edges are interpolated) down to
+ * the lowest height of the valid range, z_lo, where it is longest (ring_lowest_z), so Brent
+ * finds the height: on [R0/2, R0] when the patch at R0/2 is long enough (every contact length
+ * up to 0.69 m for the default tire: the bracket of old, so the data set's loads keep their
+ * bits), else on [z_lo, R0/2]. 1e-12 m is far below any patch length's meaning and Brent
+ * needs about 40 iterations for it from a 0.34 m bracket, so 200 is only a guard. */
 enum { PATCH_MAX_ITER = 200 };
 static const double patch_z_tol = 1e-12; /* m */
 static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
-                                     double *z, tirenv_diag *diag)
+                                     double z_lo, double *z, tirenv_diag *diag)
 {
     patch_ctx ctx = {elem, flat, l_c, 0, diag};
     gsl_function fn = {patch_minus_target, &ctx};
-    double hi = tirenv_ring_free_radius(elem), lo = 0.5 * hi;
+    double hi = tirenv_ring_free_radius(elem), lo = fmax(z_lo, 0.5 * hi);
+    if (lo > z_lo && patch_minus_target(lo, &ctx) < 0 && !ctx.status) {
+        hi = lo;
+        lo = z_lo;
+    }
     if (patch_minus_target(lo, &ctx) < 0 || ctx.status)
         return ctx.status ? ctx.status
                           : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
@@ -84,10 +92,86 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
     return 0;
 }
 
+/* The ring is a linear model of small belt displacements; pressed far enough, its rays fan
+ * out over ground ever farther below the belt and its patch, after growing with the load,
+ * shrinks (the default tire's from about 0.83 m at 255 kN down to 0.53 m at 448 kN, where the
+ * centre meets the ground). A patch that shrinks under more load is no tire: the valid range
+ * ends where the flat-ground patch is longest (docs/models.md section 5.4). It is found on a
+ * grid of RANGE_STEPS heights from R0 down, stopping two steps past the longest, then by
+ * golden sections between that one's neighbours to RANGE_TOL*R0; about 45 force evaluations,
+ * once per model. A force that fails on the way ends the scan: the range ends above it. */
+enum { RANGE_STEPS = 32 };
+static const double RANGE_TOL = 1e-6;
+
+static int patch_at(void *elem, const tirenv_profile *flat, double z, double *l,
+                    tirenv_diag *diag)
+{
+    return ring_contact_length(elem, flat, z, l, diag);
+}
+
+static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char *why,
+                         size_t n, tirenv_diag *diag)
+{
+    const double R0 = tirenv_ring_free_radius(elem), dz = R0 / RANGE_STEPS;
+    double best_l = 0;
+    size_t best = 0, k;
+    for (k = 1; k <= RANGE_STEPS; ++k) {
+        double l;
+        if (patch_at(elem, flat, R0 - (double)k * dz, &l, NULL))
+            break;
+        if (l > best_l) {
+            best_l = l;
+            best = k;
+        } else if (k >= best + 2) {
+            break;
+        }
+    }
+    const size_t last = k - 1;  /* the lowest height evaluated */
+    *z = 0;
+    why[0] = '\0';
+    if (best == 0)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "no flat-ground patch found below the free radius %g m", R0);
+    if (best == last && last == RANGE_STEPS)
+        return 0;  /* longest with the centre at the ground: the bracket is the limit */
+    /* Golden sections on [a, b] around the longest patch, a below it. */
+    const double g = 0.5 * (sqrt(5.0) - 1);
+    double a = R0 - (double)(best + 1) * dz, b = R0 - (double)(best - 1) * dz;
+    if (best == last)
+        a = R0 - (double)best * dz;  /* the next one down failed */
+    double c = b - g * (b - a), d = a + g * (b - a), lc, ld;
+    int status = patch_at(elem, flat, c, &lc, diag);
+    if (!status)
+        status = patch_at(elem, flat, d, &ld, diag);
+    while (!status && b - a > RANGE_TOL * R0) {
+        if (lc > ld) {
+            b = d;
+            d = c;
+            ld = lc;
+            c = b - g * (b - a);
+            status = patch_at(elem, flat, c, &lc, diag);
+        } else {
+            a = c;
+            c = d;
+            lc = ld;
+            d = a + g * (b - a);
+            status = patch_at(elem, flat, d, &ld, diag);
+        }
+    }
+    if (status)
+        return status;
+    *z = 0.5 * (a + b);
+    snprintf(why, n, "where its flat-ground contact length peaks: under more load its patch "
+             "would shrink, which no tire does");
+    return 0;
+}
+
 /* Lugs turn with the tread, so a lugged ring is not the same at every x. */
 static int ring_shift_invariant(const tirenv_tire *tire) { return !(tire->ring.lug_count > 0); }
 
 static const tirenv_deformable_ops ring_ops = {
+    .name = "ring",
+    .lowest_z = ring_lowest_z,
     .alloc = ring_alloc,
     .free = ring_free,
     .forces = ring_forces,

@@ -1,6 +1,7 @@
 /* The springs model as a tirenv_model_type (docs/models.md section 4). */
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include "model/deformable.h"
 #include "tirenv/springs.h"
 
@@ -33,16 +34,40 @@ static int springs_contact_length(void *elem, const tirenv_profile *flat, double
 }
 
 static int springs_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
-                                        double *z, tirenv_diag *diag)
+                                        double z_lo, double *z, tirenv_diag *diag)
 {
     (void)flat;
+    (void)z_lo;
     (void)diag;
     const double R0 = springs_R0(elem);
     *z = sqrt(R0 * R0 - 0.25 * l_c * l_c);
     return 0;
 }
 
+/* docs/models.md section 4.1: the elements span the tread segment |theta| <= phi/2. With the
+ * centre below R0*cos(phi/2) the flat ground would reach past the segment's last element, and
+ * the elements the model does not have would carry load: its valid range ends there. The
+ * default segment, the lower half (phi = pi), ends only with the centre at the ground. */
+static int springs_lowest_z(void *elem, const tirenv_profile *flat, double *z, char *why,
+                            size_t n, tirenv_diag *diag)
+{
+    (void)flat;
+    (void)diag;
+    const tirenv_springs_params *par = tirenv_springs_params_of(elem);
+    *z = 0;
+    why[0] = '\0';
+    if (par->phi < M_PI) {
+        *z = par->R0 * cos(0.5 * par->phi);
+        snprintf(why, n, "where the flat contact reaches the ends of the tread segment "
+                 "(SEGMENT_ANGLE %g rad): beyond, ground would press elements the model does "
+                 "not have", par->phi);
+    }
+    return 0;
+}
+
 static const tirenv_deformable_ops springs_ops = {
+    .name = "springs",
+    .lowest_z = springs_lowest_z,
     .alloc = springs_alloc,
     .free = springs_free,
     .forces = springs_forces,

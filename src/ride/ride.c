@@ -12,6 +12,7 @@
  *   m_a z_a'' = F_tire_front - F_s - m_a g.
  * The static loads balance the weights, so gravity only matters once a tire lifts off. */
 #include "tirenv/ride.h"
+#include "ride/ride_impl.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
@@ -223,6 +224,8 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
      * skip over a cleat's edge: substeps advance at most half a grid spacing. */
     const double dx_min = fmin(front->dx, rear->dx);
     const size_t n_sub = (size_t)fmax(1.0, ceil(2.0 * s->speed * s->dt / dx_min - 1e-9));
+    if (step && (status = tirenv_ride__rk4_check(v, s->dt / (double)n_sub, s->dt, n_sub, diag)))
+        goto done;
     double t = 0;
     evaluate(&r, t, y, NULL, &out[0]);
     for (size_t k = 1; k < n; ++k) {
@@ -245,6 +248,8 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
         }
         t = t_k;
         evaluate(&r, t, y, NULL, &out[k]);
+        if ((status = tirenv_ride__finite_sample(&out[k], diag)))
+            goto done;
     }
 done:
     if (d)

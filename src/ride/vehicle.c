@@ -2,6 +2,7 @@
  * physical check and its static tire loads. The file format is in vehicle_file.c.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/vehicle.h"
+#include "ride/ride_impl.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -42,6 +43,13 @@ static int vehicle_check_axle(const tirenv_axle *ax, const char *section, int re
     if (!memchr(ax->tire_file, '\0', sizeof ax->tire_file))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("TIRE_FILE"),
                             "is not terminated within its %zu bytes", sizeof ax->tire_file);
+    /* The file format has no escapes (docs/formats.md section 3): a path holding a quote or a
+     * line break could be read, but never written back. */
+    if (strpbrk(ax->tire_file, "'\n\r"))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("TIRE_FILE"),
+                            "path \"%.60s\" holds a quote or a line break, which a vehicle "
+                            "file cannot hold; expected a path in single quotes, such as "
+                            "'tires/default.tir'", ax->tire_file);
     int status;
     if (!(ax->tires >= 1 && ax->tires == floor(ax->tires) && isfinite(ax->tires)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("TIRES"),
@@ -83,9 +91,10 @@ int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag)
     if (!isfinite(v->seat_h))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SEAT_ABOVE_CG",
                             "must be a finite length in m, got %g", v->seat_h);
-    if ((status = vehicle_check_axle(&v->front, "FRONT_AXLE", 0, diag)))
+    if ((status = vehicle_check_axle(&v->front, "FRONT_AXLE", 0, diag)) ||
+        (status = vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag)))
         return status;
-    return vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag);
+    return tirenv_ride__static_check(v, diag);
 }
 
 /* Moments about the axles split the body's weight m*g in the ratio b : a; a suspended front

@@ -279,6 +279,13 @@ static int select_cases(const tirenv_dataset *ds, const tirenv_compare_settings 
                                     "no case '%s' in the data set; its cases are %s%s",
                                     s->cases[k], list, ds->n > 0 ? "" : "(none)");
             }
+            /* Twice in the list, a case would count twice in the means (section 8.3). */
+            for (size_t m = 0; m < r->n_cases; ++m)
+                if (r->case_index[m] == i)
+                    return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "cases",
+                                        "case '%s' is listed twice (cases %zu and %zu of the "
+                                        "list); expected each case once, as each counts once "
+                                        "in the means", s->cases[k], m + 1, k + 1);
             r->case_index[r->n_cases++] = i;
         }
     } else {
@@ -676,6 +683,14 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
                             "expected rise_threshold >= 0 m, min_time in [0, 3600) s and "
                             "fail_fraction > 0; got %g, %g, %g",
                             s->rise_threshold, s->min_time, s->fail_fraction);
+    /* The title heads the Markdown report: a line break or another control character would
+     * break it (a heading is one line). */
+    for (const char *t = s->title; t && *t; ++t)
+        if ((unsigned char)*t < 0x20 || *t == 0x7f)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "title",
+                                "a control character (0x%02x) at position %zu; expected one "
+                                "line of text", (unsigned)(unsigned char)*t,
+                                (size_t)(t - s->title) + 1);
     const tirenv_model_type *types[TIRENV_COMPARE_MAX_MODELS];
     int status = tirenv_tire_check(tire, diag);
     if (!status)

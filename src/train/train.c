@@ -681,6 +681,23 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
         order[i] = k;
     }
     const size_t n_kept = s->ensemble < done ? s->ensemble : done;
+    /* A kept restart whose error became infinite or NaN: the weights of least control error it
+     * had before are not a trained network, and handing them back as the model (exit 0, a
+     * model file of barely moved initial weights) was the fault. An error, saying what to
+     * change (docs/models.md section 6.4). */
+    for (size_t i = 0; i < n_kept && !status; ++i) {
+        const restart_result *d = &res[order[i]];
+        if (d->stop == TIRENV_TRAIN_DIVERGED)
+            status = tirenv_error(
+                diag, TIRENV_ENOCONV, "", 0, "training",
+                "the %s training diverged: restart %zu's error was no longer finite after %zu "
+                "epochs (least control error at epoch %zu); %s%.3g%s", type->name,
+                order[i] + 1, d->epochs, d->best_epoch,
+                type == tirenv_trainer_backprop ? "lower the learning rate (now "
+                                                : "another seed or trainer may train (seed ",
+                type == tirenv_trainer_backprop ? s->backprop.learning_rate : (double)s->seed,
+                ")");
+    }
     tirenv_nn *model = NULL;
     if (!status) {
         const tirenv_nn *nets[TIRENV_NN_MAX_MEMBERS];

@@ -1,0 +1,38 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The library's refusals reach Python as they reach the CLI (docs/models.md sections 1.3,
+6.3 and 9.5): loads beyond a model's valid range, the network outside its trained ranges
+unless extrapolate=True, a ride step too long for RK4, an unphysical vehicle."""
+import pytest
+
+import tirenv
+
+
+def test_load_beyond_the_valid_range():
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Model("cam").flat(2e5)
+    assert e.value.field == "load" and "valid range, up to" in e.value.message
+    assert tirenv.Model("rigid").flat(2e5).load == 2e5
+
+
+def test_network_outside_its_range(network_file):
+    net = tirenv.Network(network_file)
+    tall = tirenv.Profile.cleat(0.10, 0.20)
+    m = tirenv.Model("nn", network=net)
+    with pytest.raises(tirenv.TirenvError) as e:
+        m.set(tall, m.load_for_contact_length(0.33))
+    assert e.value.field == "obstacle height" and "0.2 m is outside" in e.value.message
+    m = tirenv.Model("nn", network=net, extrapolate=True)
+    m.set(tall, m.load_for_contact_length(0.33))
+    assert len(m.sweep()) > 0
+
+
+def test_ride_refusals():
+    cleat = tirenv.Profile.cleat(0.30, 0.05)
+    stiff = tirenv.Vehicle(set={"FRONT_AXLE.TIRE_STIFFNESS": 1e9,
+                                "REAR_AXLE.TIRE_STIFFNESS": 1e9})
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.ride(cleat, speed="10km/h", vehicle=stiff)
+    assert e.value.field == "dt" and "rk8pd" in e.value.message
+    assert tirenv.ride(cleat, speed="10km/h", vehicle=stiff, method="rk8pd") is not None
+    with pytest.raises(tirenv.TirenvError, match="unphysical"):
+        tirenv.Vehicle(set={"MASS": 1e30})
