@@ -3,12 +3,15 @@ BUILD      ?= build
 ASAN_BUILD ?= build-asan
 JOBS       ?= 2
 DEMO_OUT   ?= out/study
+DEMO_205   ?= out/study-205-60R15
 PREFIX     ?= /usr/local
+FUZZ_SECONDS ?= 60
 # Labels of tests to leave out of 'make test' (none by default); e.g. SKIP_LABELS=install.
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps deps-test build test test-asan test-slurm demo bench python fmu install clean
+.PHONY: all deps deps-test build test test-asan test-slurm demo demo-study demo-study-205 \
+        demo-ride bench fuzz python fmu install clean
 
 all: build
 
@@ -37,7 +40,8 @@ test-slurm: build deps-test
 	@cd $(BUILD) && ctest --output-on-failure -L slurm
 
 test-asan: deps
-	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON >/dev/null
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
+	    -DTIRENV_FUZZ=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 
@@ -50,20 +54,34 @@ python: build
 fmu: build
 	@cmake --build $(BUILD) -j $(JOBS) --target fmu
 
-# The paper's study on the embedded (simulated) data set: fit, train, compare, report. Then
-# its next step, the tractor ride: over a cleat at three speeds (the README's picture), and
-# over a 1 km ISO 8608 class C road at 10 km/h, point contact against the enveloping models.
-# The road's bumps are all lower than the network's lowest trained cleat: its curves there are
-# that cleat's scaled down (docs/models.md section 12), an extrapolation, hence --extrapolate.
+# The paper's study on the embedded (simulated) data set: fit, train, compare, report; the same
+# on the second one, the 205/60R15 car tire's made by its MF-Swift cam. Then its next step,
+# the tractor ride: over a cleat at three speeds (the README's picture), and over a 1 km
+# ISO 8608 class C road at 10 km/h, point contact against the enveloping models. The two
+# studies run side by side on JOBS cores, the rides after the tractor's study (they take its
+# network); -Otarget keeps each part's lines together. Each command also runs its own items
+# on --jobs $(JOBS) threads, so that a study left alone (the other one done) still has every
+# core; the outputs are the same for any --jobs. The road's bumps are all lower than
+# the network's lowest trained cleat: its curves there are that cleat's scaled down
+# (docs/models.md section 12), an extrapolation, hence --extrapolate.
 demo: build
-	@$(BUILD)/tirenv study -o $(DEMO_OUT)
+	@$(MAKE) --no-print-directory -j $(JOBS) -Otarget demo-study-205 demo-ride
+
+demo-study:
+	@$(BUILD)/tirenv study --jobs $(JOBS) -o $(DEMO_OUT)
+
+demo-study-205:
+	@$(BUILD)/tirenv study --jobs $(JOBS) --data data/dataset-205-60R15 -o $(DEMO_205)
+
+demo-ride: demo-study
 	@$(BUILD)/tirenv ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h \
-	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --out-dir out/ride-cleat
+	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --jobs $(JOBS) \
+	    --out-dir out/ride-cleat
 	@mkdir -p out/ride-road
 	@$(BUILD)/tirenv road --class C --length 1000 --dx 0.01 --seed 1 -o out/ride-road/road.csv
 	@$(BUILD)/tirenv ride --profile out/ride-road/road.csv --speed 10km/h --dx 0.01 \
 	    --model point,rigid,springs,cam,nn --nn $(DEMO_OUT)/nn.json --extrapolate \
-	    --out-dir out/ride-road
+	    --jobs $(JOBS) --out-dir out/ride-road
 
 # Speed figures: the models and solvers (tirenv bench), then the network and its trainers
 # against FANN, the benchmark-only peer (scripts/deps.sh --bench installs libfann-dev).
@@ -72,6 +90,13 @@ bench: build
 	@cmake -S . -B $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS) --target tirenv-bench-nn
 	@$(BUILD)/tirenv bench
 	@$(BUILD)/bench/tirenv-bench-nn
+
+# Every libFuzzer harness (tests/fuzz/, built with clang, ASan and UBSan) for FUZZ_SECONDS
+# each, one after the other; make test runs them for a few seconds. New inputs collect in
+# $(BUILD)/fuzz-work/<parser>/corpus, findings beside it.
+fuzz: build
+	@cd $(BUILD) && FUZZ_SECONDS=$(FUZZ_SECONDS) ctest -L fuzz --output-on-failure \
+	    --timeout $$(($(FUZZ_SECONDS) + 600))
 
 # Installs the CLI, libtirenv (.so and .a), headers, tirenv.pc, the CMake package, man pages
 # and data under PREFIX (default /usr/local); DESTDIR stages it under another root.

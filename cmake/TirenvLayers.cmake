@@ -16,7 +16,7 @@ set(TIRENV_AUX_DIRS data study formats)
 # header listed in neither, so a new header must be placed here. (tirenv.h, the umbrella, and
 # decls.h, the declaration macros, belong to both.)
 set(TIRENV_CORE_HEADERS
-  error.h profile.h road.h tire.h model.h rigid.h cam.h springs.h ring.h stream.h xn.h
+  error.h profile.h road.h tire.h model.h tracks.h rigid.h cam.h springs.h ring.h stream.h xn.h
   nn.h nn_road.h train.h vehicle.h ride.h comfort.h version.h parallel.h)
 set(TIRENV_AUX_HEADERS
   io.h curve.h rig.h dataset.h study.h plot.h nn_file.h vehicle_file.h crg.h rdf.h

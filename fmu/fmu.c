@@ -145,9 +145,21 @@ fmi2Status fmu__setup(fmu_instance *f)
         return fail(f, "road_file: empty; expected a road profile file");
     if (resolve(f, v->road_file, path, sizeof path))
         return fail(f, "road_file: path too long: %s", v->road_file);
-    /* A CSV road is 2-D: the same on every track and across the tire's width, so track and
-     * width select nothing in it. */
-    if (tirenv_profile_read_csv(path, &f->road, &diag))
+    /* Any road file the CLI's --profile reads: a CSV or RDF road is 2-D, the same on every
+     * track and across the tire's width, so track and width select nothing in it; an OpenCRG
+     * road's track is the long section at v = track. Several tracks across a width are the
+     * CLI's (tirenv envelope --tracks, which can write the effective road for this FMU as a
+     * road file): the FMU evaluates one. */
+    tirenv_profile_format format;
+    if (tirenv_profile_detect(path, &format, &diag))
+        return fmu__fail_diag(f, "road_file", &diag);
+    if (format == TIRENV_PROFILE_CRG && v->width > 0)
+        return fail(f, "width: %g m over the OpenCRG road %s: the FMU evaluates one track "
+                    "(width 0); for the tire's width run 'tirenv envelope --tracks N' and give "
+                    "its effective road (-o ROAD.crg) as road_file", v->width, v->road_file);
+    tirenv_profile_source src = tirenv_profile_source_default();
+    src.crg.v = v->track;
+    if (tirenv_profile_read_file(path, &src, &f->road, &diag))
         return fmu__fail_diag(f, "road_file", &diag);
 
     if (!(f->m = tirenv_model_alloc(type, &f->tire)))

@@ -19,12 +19,15 @@ static const fmu_variable variables[] = {
      "tire property file (.tir); relative to the FMU's resources unless absolute; empty: "
      "the built-in default tire", STRING(tire_file)},
     {"road_file", 102, FMU_STRING, FMU_PARAMETER, NULL,
-     "road profile file (CSV x_m,z_m); relative to the FMU's resources unless absolute",
+     "road file (CSV x_m,z_m, OpenCRG .crg or TNO/Adams .rdf); relative to the FMU's "
+     "resources unless absolute",
      STRING(road_file)},
     {"track", 0, FMU_REAL, FMU_PARAMETER, "m",
-     "lateral position of the wheel on the road (0: a 2-D road's only track)", REAL(track)},
+     "lateral position of the wheel on an OpenCRG road, + left (a 2-D road's only track)",
+     REAL(track)},
     {"width", 1, FMU_REAL, FMU_PARAMETER, "m",
-     "tire width over which tracks are combined (a 2-D road is the same across it)",
+     "tire width over which tracks are combined: 0 (a 2-D road is the same across it; an "
+     "OpenCRG road is evaluated on one track)",
      REAL(width)},
     {"x", 2, FMU_REAL, FMU_INPUT, "m", "wheel-centre position along the road", REAL(x)},
     {"load", 3, FMU_REAL, FMU_INPUT, "N", "vertical load on the tire (> 0)", REAL(load)},

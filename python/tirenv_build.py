@@ -76,6 +76,16 @@ tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double 
                                     size_t points_per_period);
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);
 
+/* crg.h, rdf.h, profile_file.h: a road file of any format, one track of it */
+typedef struct { double v; int border_mode_v; int grid_nan_mode; ...; } tirenv_crg_track_spec;
+typedef enum { TIRENV_RDF_MEAN = 0, TIRENV_RDF_LEFT, TIRENV_RDF_RIGHT } tirenv_rdf_side;
+int tirenv_rdf_side_find(const char *name, tirenv_rdf_side *side);
+typedef struct { tirenv_crg_track_spec crg; tirenv_rdf_side rdf_side; ...; }
+    tirenv_profile_source;
+tirenv_profile_source tirenv_profile_source_default(void);
+int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
+                             tirenv_profile **out, tirenv_diag *diag);
+
 /* road.h */
 typedef struct {
     char road_class;
@@ -117,6 +127,11 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
                                          tirenv_diag *diag);
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
+
+/* tracks.h: tracks across the tire's width */
+int tirenv_tracks_spread(size_t n, double v, double width, double v_out[], tirenv_diag *diag);
+int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *const profiles[],
+                            const double weights[], double load, tirenv_diag *diag);
 double tirenv_model_reach(const tirenv_model *m);
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],

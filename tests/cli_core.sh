@@ -106,14 +106,14 @@ check "rig --model nn (rig takes no network): exit 1 saying so, no file" \
     '[ $rc -eq 1 ] && grep -q "does not take" err && no_file log.csv'
 run "$bin" fit --model point --data "$data/dataset_good"
 check "fit --model point: exit 1 listing the models that can be fitted" \
-    '[ $rc -eq 1 ] && grep -q "springs cam" err'
+    '[ $rc -eq 1 ] && grep -q "springs ring cam" err'
 run "$bin" flat --model point --load 10000 --csv
 check "flat --model point: no deflection, no contact length" \
     '[ $rc -eq 0 ] && [ "$(sed -n 2p out | cut -d, -f3,4)" = 0,0 ]'
 
 # --- ride and the plots: the same models, the same colours ----------------------------------
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point,rigid,cam,nn --nn net.json \
-    --out-dir rd
+    --out-dir rd --series
 check "ride with point, rigid, cam and nn as model types: a row each" \
     '[ $rc -eq 0 ] && [ $(rows rd/comfort.csv) -eq 4 ] && [ -s rd/series-nn-10kmh.csv ]'
 run "$bin" compare --data "$data/dataset_good" --nn net.json --models rigid,cam,nn \

@@ -19,7 +19,8 @@ check "docs/formats.md exists" '[ $rc -eq 0 ]'
 
 # The files that cite the documentation.
 find "$root/README.md" "$root/include" "$root/src" "$root/bench" "$root/tests" \
-    "$root/data/tires" "$root/data/vehicles" "$root/data/dataset/README.md" -type f \
+    "$root/data/tires" "$root/data/vehicles" "$root/data/dataset/README.md" \
+    "$root/data/dataset-205-60R15/README.md" -type f \
     \( -name '*.[ch]' -o -name '*.md' -o -name '*.tir' -o -name '*.veh' -o -name '*.sh' \) \
     -print | sort >files
 

@@ -138,7 +138,7 @@ check "ride --dt 1e-9: the same" '[ $rc -eq 1 ] && grep -q "samples" err'
 mkdir adir
 run "$bin" ride --profile adir --speed 3 --model point
 check "ride --profile DIR: exit 2, is a directory" \
-    '[ $rc -eq 2 ] && grep -q "adir: is a directory; expected a CSV file" err'
+    '[ $rc -eq 2 ] && grep -q "adir: is a directory; expected a CSV" err'
 run "$bin" dataset list "$dataset" extra
 check "dataset list DIR extra: exit 1 naming the extra argument" \
     '[ $rc -eq 1 ] && grep -q "unexpected argument .extra." err'

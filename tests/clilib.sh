@@ -50,9 +50,10 @@ check() {
     fi
 }
 
-# No output file and no temporary file beside it.
+# No output file and no temporary file beside it (.NAME.tirenv-tmp.* of an output, NAME.tmp.*
+# of a plot being drawn).
 no_file() {
-    [ ! -e "$1" ] && [ -z "$(find . -name '*.tmp.*' -print)" ]
+    [ ! -e "$1" ] && [ -z "$(find . -name '*tmp.*' -print)" ]
 }
 
 # Number of CSV data rows (lines after the header).

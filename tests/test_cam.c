@@ -650,8 +650,9 @@ static void test_tire_check(void **state)
 }
 
 /* The shipped MF-Swift example loads unchanged over the default tire: its radius, vertical
- * stiffness and cam; every other key (the springs', the ring's) stays the default's. At
- * 4 kN its patch is 2a = 0.1318 m and the tandem base 0.1097 m. */
+ * stiffness and cam, and tirenv's own sections for this tire (the springs' start values, a
+ * car-sized ring); the discretisation and the ring's lugs stay the default's. At 4 kN its patch
+ * is 2a = 0.1318 m and the tandem base 0.1097 m. */
 static void test_mfswift_file(void **state)
 {
     (void)state;
@@ -662,6 +663,13 @@ static void test_mfswift_file(void **state)
                      TIRENV_OK);
     tirenv_tire expected = tirenv_tire_default();
     expected.springs.R0 = 0.3135;
+    expected.springs.c_r = 2.46e5;
+    expected.springs.c_b = 4.51e4;
+    expected.ring.t_r = 0.010;
+    expected.ring.EI = 5;
+    expected.ring.T = 10700;
+    expected.ring.k_f = 8.5e5;
+    expected.ring.k_t = 6.7e7;
     expected.cam = (tirenv_cam_params){.c_z = 209651.5, .q_ra1 = 0.6715, .q_ra2 = 0.7308,
                                        .shift = 0.8328, .length = 1.4634, .height = 0.9551,
                                        .order = 1.5257, .given = TIRENV_CAM_ALL};

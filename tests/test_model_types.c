@@ -92,10 +92,18 @@ static void test_records(void **state)
     assert_null(tirenv_model_type_find(NULL));
     assert_ptr_equal(tirenv_model_type_find("nn"), tirenv_model_nn);
     assert_ptr_equal(tirenv_model_type_find("point"), tirenv_model_point);
-    /* What the study fits, and what it must not. */
+    /* What tirenv fit identifies: the study's springs and cam, and the ring (its foundation
+     * and tread; its belt's bending and tension as the optional ones). */
     assert_true(tirenv_model_type_flags(tirenv_model_springs) & TIRENV_MODEL_FITTABLE);
     assert_true(tirenv_model_type_flags(tirenv_model_cam) & TIRENV_MODEL_FITTABLE);
-    assert_false(tirenv_model_type_flags(tirenv_model_ring) & TIRENV_MODEL_FITTABLE);
+    assert_true(tirenv_model_type_flags(tirenv_model_ring) & TIRENV_MODEL_FITTABLE);
+    size_t n_ring, n_ring_max;
+    const tirenv_model_param *rp = tirenv_model_type_params(tirenv_model_ring, &n_ring,
+                                                            &n_ring_max);
+    assert_int_equal(n_ring, 2);
+    assert_int_equal(n_ring_max, 4);
+    assert_string_equal(rp[0].key, "FOUNDATION_STIFFNESS");
+    assert_string_equal(rp[1].key, "TREAD_STIFFNESS");
     assert_true(tirenv_model_type_flags(tirenv_model_nn) & TIRENV_MODEL_NEEDS_NETWORK);
 }
 

@@ -324,7 +324,7 @@ static void remove_dir(const char *dir)
     while ((e = readdir(d))) {
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
-        if (strstr(e->d_name, ".tmp"))
+        if (strstr(e->d_name, "tmp."))
             fail_msg("temporary file left behind: %s/%s", dir, e->d_name);
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);

@@ -28,6 +28,7 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->springs.c_b, b->springs.c_b);
     assert_bits_equal(a->springs.phi, b->springs.phi);
     assert_bits_equal(a->springs.dphi, b->springs.dphi);
+    assert_bits_equal(a->width, b->width);
     assert_bits_equal(a->ring.t_r, b->ring.t_r);
     assert_bits_equal(a->ring.EI, b->ring.EI);
     assert_bits_equal(a->ring.T, b->ring.T);
@@ -64,6 +65,7 @@ static tirenv_tire entropic_tire(void)
                .secant_dz = 7.31e-4},
         .cam = {.c_z = 413927.3, .q_ra1 = 0.7131, .q_ra2 = -0.2417, .shift = 0.7913,
                 .length = 1.3171, .height = 0.8837, .order = 1.8131},
+        .width = 0.3917,
     };
 }
 
@@ -94,6 +96,7 @@ static void test_mftyre_excerpt_loads(void **state)
     assert_int_equal(status, TIRENV_OK);
     tirenv_tire expected = tirenv_tire_default();
     expected.springs.R0 = 0.7125;
+    expected.width = 0.42;
     expected.cam.c_z = 520000;
     expected.cam.q_ra1 = 0.6715;
     expected.cam.q_ra2 = 0.7308;
@@ -119,6 +122,7 @@ static void test_comments_and_case(void **state)
     tirenv_diag d;
     assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
     assert_bits_equal(t.springs.R0, 0.6837);
+    assert_bits_equal(t.width, 0);  /* no WIDTH in the file: none, not the tire's before */
     assert_int_equal(t.eq.method, TIRENV_EQ_SECANT);
     assert_int_equal(t.eq.max_iter, 37);
 }
@@ -323,7 +327,8 @@ static void test_set_errors(void **state)
     } cases[] = {
         {"RADIAL_STIFFNESS", TIRENV_EPARSE, "", "expected KEY=VALUE, got 'RADIAL_STIFFNESS'"},
         {"RADIAL_STIFNESS=1e6", TIRENV_EPARSE, "RADIAL_STIFNESS", "unknown key; expected one of"},
-        {"WIDTH=0.42", TIRENV_EPARSE, "WIDTH", "unknown key"},
+        {"ASPECT_RATIO=0.85", TIRENV_EPARSE, "ASPECT_RATIO", "unknown key"},
+        {"WIDTH=-0.42", TIRENV_EINVAL, "WIDTH", "length >= 0"},
         {"LENGTH=meter", TIRENV_EPARSE, "LENGTH", "unknown key"},
         {"DIMENSION.RADIAL_STIFFNESS=1e6", TIRENV_EPARSE, "RADIAL_STIFFNESS",
          "unknown key in section DIMENSION"},
@@ -388,7 +393,7 @@ static void test_write_read_round_trip(void **state)
         assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
         assert_tire_identical(&back, &tires[i]);
     }
-    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
 
     char path[600], text[4096];
     tirenv_test_path(fx, "default.tir", path);
@@ -416,7 +421,7 @@ static void test_write_refuses_unphysical(void **state)
     assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "RADIAL_STIFFNESS");
     assert_false(file_exists(path));
-    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
 }
 
 static void test_write_into_missing_dir(void **state)
@@ -453,12 +458,12 @@ static void test_outfile_commit(void **state)
     fputs("x_m,z_m\n", f.fp);
     /* Until commit, readers see no target, only the temporary file. */
     assert_false(file_exists(path));
-    assert_int_equal(tirenv_test_count_entries(fx, "out.csv.tmp."), 1);
+    assert_int_equal(tirenv_test_count_entries(fx, ".out.csv.tirenv-tmp."), 1);
     assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
     umask(old_mask);
     read_back(path, text, sizeof text);
     assert_string_equal(text, "x_m,z_m\n");
-    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
     /* mkstemp's 0600 would surprise; a new file gets 0666 minus the umask, like fopen. */
     struct stat st;
     assert_int_equal(stat(path, &st), 0);
@@ -479,7 +484,7 @@ static void test_outfile_abort(void **state)
     tirenv_outfile_abort(&f);
     tirenv_outfile_abort(&f); /* safe twice */
     assert_false(file_exists(path));
-    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
     assert_int_equal(tirenv_test_count_entries(fx, ""), 0);
     assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_EINVAL);
     assert_false(file_exists(path));
@@ -520,7 +525,7 @@ static void test_outfile_errors(void **state)
     assert_null(f.fp);
     tirenv_outfile_abort(&f); /* after a failed open: harmless */
 
-    char long_path[600];
+    char long_path[1100];
     memset(long_path, 'a', sizeof long_path - 1);
     long_path[sizeof long_path - 1] = '\0';
     assert_int_equal(tirenv_outfile_open(&f, long_path, &d), TIRENV_EINVAL);

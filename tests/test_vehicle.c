@@ -462,7 +462,7 @@ static void test_write_read_round_trip(void **state)
         assert_int_equal(status, TIRENV_OK);
         assert_vehicle_identical(&back, &vehicles[i]);
     }
-    assert_int_equal(tirenv_test_count_entries(fx, ".tmp."), 0);
+    assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
 
     char path[600], text[8192];
     tirenv_test_path(fx, "default.veh", path);

@@ -243,6 +243,43 @@ def test_steps_along_a_cleat_as_tirenv_envelope(fmu, tmp_path):
     fmu.so.fmi2FreeInstance(c)
 
 
+def test_crg_road_track_as_tirenv_envelope(fmu, tmp_path):
+    """An OpenCRG road file: the track at v = track, as 'tirenv envelope --track'; a width
+    over it is refused (the FMU evaluates one track)."""
+    road = os.path.join(os.environ["TIRENV_SAMPLES"], "crg", "handmade_curved.crg")
+    ref = tmp_path / "ref.csv"
+    load, x_from, dx, n = 11903.6, -0.5, 0.01, 2301
+    subprocess.run([os.environ["TIRENV_CLI"], "envelope", "--model", "springs", "--profile",
+                    road, "--track", "0.5", "--load", repr(load), "--x-from", repr(x_from),
+                    "--x-to", "22.5", "--dx", repr(dx), "-o", str(ref)], check=True,
+                   capture_output=True)
+    rows = [r.split(",") for r in ref.read_text().splitlines()[1:]]
+    assert len(rows) == n
+    c = fmu.instantiate()
+    assert fmu.set_string(c, {"model": "springs", "road_file": road}) == OK
+    assert fmu.set_real(c, {"track": 0.5}) == OK
+    assert fmu.so.fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0) == OK
+    assert fmu.so.fmi2EnterInitializationMode(c) == OK
+    assert fmu.set_real(c, {"x": x_from, "load": load}) == OK
+    assert fmu.so.fmi2ExitInitializationMode(c) == OK
+    t = 0.0
+    for k in range(n):
+        assert fmu.set_real(c, {"x": x_from + k * dx, "load": load}) == OK
+        assert fmu.so.fmi2DoStep(c, t, 0.01, 1) == OK
+        t += 0.01
+        status, (hk, slope) = fmu.get_real(c, ["h", "slope"])
+        assert status == OK
+        assert ["%.9g" % v for v in (hk, slope)] == [rows[k][2], rows[k][3]], f"row {k}"
+    fmu.so.fmi2FreeInstance(c)
+    c = fmu.instantiate()
+    assert fmu.set_string(c, {"road_file": road}) == OK
+    assert fmu.set_real(c, {"width": 0.38}) == OK
+    assert fmu.so.fmi2EnterInitializationMode(c) == OK
+    assert fmu.so.fmi2ExitInitializationMode(c) == ERROR
+    assert "one track" in fmu.messages[-1][2]
+    fmu.so.fmi2FreeInstance(c)
+
+
 def test_errors_are_logged(fmu, tmp_path):
     assert not fmu.instantiate(guid="{another}")
     assert "GUID" in fmu.messages[-1][2]

@@ -117,6 +117,10 @@ int tirenv_crg_track_reader_open(const tirenv_crg *crg, const tirenv_crg_track_s
 int tirenv_crg_track_reader_next(tirenv_crg_track_reader *r, double *u, double *z, int *got,
                                  tirenv_diag *diag);
 void tirenv_crg_track_reader_free(tirenv_crg_track_reader *r);  /* NULL is a no-op */
+/* tirenv_crg_track_reader_next in the form of a tirenv_vertex_source (stream.h): reader is
+ * the tirenv_crg_track_reader, so that tirenv_model_stream takes a CRG track as it goes. */
+int tirenv_crg_track_reader_source(void *reader, double *u, double *z, int *got,
+                                   tirenv_diag *diag);
 
 /* ---- writing ------------------------------------------------------------------------- */
 

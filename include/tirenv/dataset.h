@@ -49,15 +49,34 @@ typedef struct {
     double L, H;              /* obstacle length and height, m */
 } tirenv_case_design;
 
-/* The 28 cases of the embedded data set (19 train, 5 control, 4 validation; the paper's
- * Table 3 cases F, J and R among the validation ones); *n receives the count. */
+/* The 28 cases of the embedded tractor data set (19 train, 5 control, 4 validation; the
+ * paper's Table 3 cases F, J and R among the validation ones); *n receives the count. */
 const tirenv_case_design *tirenv_dataset_design(size_t *n);
 
-/* How tirenv_dataset_build runs. */
+/* An embedded data set as designed (docs/models.md section 5.8): its cases, the model the
+ * virtual rig runs to simulate them and the tire file it runs with. */
 typedef struct {
-    size_t jobs;              /* cases run at once, each on its own thread with its own ring
-                               * (default 1: no thread is started; tirenv/parallel.h); the
-                               * bytes written are the same for every value */
+    const char *name;         /* "14.9R28" (the tractor set, the default), "205-60R15" */
+    const char *summary;      /* one line: the tire and the model */
+    const char *model;        /* the simulating model's type name ("ring", "cam") */
+    const char *tire_file;    /* its tire, relative to the data directory */
+    const char *dir;          /* the shipped data set, relative to the data directory */
+    const tirenv_case_design *cases;
+    size_t n_cases;
+    unsigned long seed;       /* case i's rig noise seed is seed + i */
+} tirenv_design;
+
+/* The embedded designs, NULL-terminated, the default (the tractor's) first. */
+const tirenv_design *const *tirenv_designs(void);
+/* The design of this name, or NULL. */
+const tirenv_design *tirenv_design_find(const char *name);
+
+/* How a data set is built. */
+typedef struct {
+    size_t jobs;              /* cases run at once, each on its own thread with its own model
+                               * instance (default 1: no thread is started;
+                               * tirenv/parallel.h); the bytes written are the same for every
+                               * value */
     void (*progress)(void *ctx, size_t done, size_t total); /* after each case (calls never
                                * overlap, may come from any thread); may be NULL */
     void *progress_ctx;
@@ -65,13 +84,34 @@ typedef struct {
 
 tirenv_dataset_build_settings tirenv_dataset_build_default(void);
 
-/* Builds the embedded data set into dir (created if missing): for each designed case the ring
- * reference tire of `tire` is loaded to the designed contact length, run over the cleat on the
- * virtual rig (seeded), its log written to dir/logs/<case>.csv, imported to dir/curves/<case>.csv,
- * and the manifest dir/cases.csv written last. Deterministic: the same tire gives the same
- * bytes, whatever s->jobs. s NULL: the defaults. */
+/* Builds a designed data set into dir (created if missing; written as a whole, see
+ * tirenv_outdir): for each case a fresh instance of the design's model of `tire` is loaded to
+ * the case's contact length, run over the cleat on the virtual rig (seeded), its log written
+ * to dir/logs/<case>.csv, imported to dir/curves/<case>.csv; then dir/tire.tir (the tire as
+ * simulated), dir/source.txt (what simulated the data, tirenv_dataset_source) and last the
+ * manifest dir/cases.csv. Deterministic: the same design and tire give the same bytes,
+ * whatever s->jobs. s NULL: the defaults. */
+int tirenv_dataset_build_design(const char *dir, const tirenv_design *design,
+                                const tirenv_tire *tire,
+                                const tirenv_dataset_build_settings *s, tirenv_diag *diag);
+
+/* tirenv_dataset_build_design with the default design (the tractor set, the ring). */
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                          const tirenv_dataset_build_settings *s, tirenv_diag *diag);
+
+/* What a data set says about where its curves came from: dir/source.txt (docs/formats.md
+ * section 9), written by tirenv dataset build. A data set without it says nothing (measured,
+ * or unknown). */
+typedef struct {
+    int present;              /* 1 if dir/source.txt exists */
+    char design[64];          /* the design it was built from, or "" */
+    char model[32];           /* the model that simulated it ("ring", "cam"), or "" */
+    char tire[512];           /* the tire it was simulated with, full path, or "" */
+} tirenv_dataset_source;
+
+/* Reads dir/source.txt into *out (present 0 if there is none). Errors name file, line and
+ * key: an unknown key, a model that is not a physical model type, a malformed line. */
+int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tirenv_diag *diag);
 
 /* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,
  * L), output h, one curve per case (out->n_curves, out->curve_start); cases of the given

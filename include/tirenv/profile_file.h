@@ -50,6 +50,36 @@ int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f);
 int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
                              tirenv_profile **out, tirenv_diag *diag);
 
+/* Reads n >= 1 tracks of path at the lateral positions v[n] (m) into out[n] (each the
+ * caller's to free): a CRG's tracks as tirenv_crg_track with src->crg but v[i] (the file
+ * opened once); a CSV or an RDF road is 2-D, the same on every track, so out[i] are copies of
+ * one profile. v NULL: every track at src->crg.v. On failure every out[i] is NULL. */
+int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *src, size_t n,
+                               const double v[], tirenv_profile *out[], tirenv_diag *diag);
+
+/* A road file read a row at a time, whatever its format, for a streamed sweep
+ * (tirenv_model_stream_tracks, or tirenv_model_stream for one track): each row is an x (m) and
+ * the heights (m) of n tracks there. A CSV is read row by row (tirenv_profile_reader), a CRG
+ * a block of rows at a time (a tirenv_crg_track_reader per track: memory of a few blocks,
+ * whatever the road's length), an RDF road whole (its poly_line is small). A CSV or RDF road is
+ * 2-D: every track gets its height. */
+typedef struct tirenv_profile_file_reader tirenv_profile_file_reader;
+
+/* Opens path (format by content) for n >= 1 tracks at v[n] (m; v NULL: every track at
+ * src->crg.v); src NULL means the defaults. */
+int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_source *src,
+                                    size_t n, const double v[],
+                                    tirenv_profile_file_reader **out, tirenv_diag *diag);
+/* The next row: *x and z[n] with *got = 1, or *got = 0 after the last. */
+int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, double z[],
+                                    int *got, tirenv_diag *diag);
+/* tirenv_profile_file_reader_next in the form of a tirenv_row_source (stream.h). */
+int tirenv_profile_file_reader_source(void *reader, double *x, double z[], int *got,
+                                      tirenv_diag *diag);
+/* The format the reader found. */
+tirenv_profile_format tirenv_profile_file_reader_format(const tirenv_profile_file_reader *r);
+void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r);  /* NULL is a no-op */
+
 /* Writes a profile as CSV: "x_m,z_m" and one row per vertex in the shortest form that reads
  * back to the same doubles; comment (NULL for none) first as '#' lines. All or nothing. */
 int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const char *comment,

@@ -47,5 +47,21 @@ int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *sour
                         tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,
                         tirenv_diag *diag);
 
+/* Where a streamed sweep over several tracks across the tire's width (tracks.h) gets its
+ * ground: the next row, its x (m) in *x and the height (m) of each track there in z[n], with
+ * *got = 1, or *got = 0 at the end. Rows come in profile order, as the vertices of a
+ * tirenv_vertex_source; a nonzero return (a TIRENV_ code, with diag filled) stops the sweep. */
+typedef int (*tirenv_row_source)(void *ctx, double *x, double z[], int *got,
+                                 tirenv_diag *diag);
+
+/* tirenv_model_stream over n >= 1 tracks with weights[n] (NULL: equal), as
+ * tirenv_model_set_tracks: a window per track, combined by the type's rule. Equals
+ * tirenv_model_set_tracks with the whole tracks (separate profiles) + tirenv_model_envelope
+ * bit for bit, as tirenv_model_stream does for one; n = 1 is tirenv_model_stream. */
+int tirenv_model_stream_tracks(tirenv_model *m, size_t n, const double weights[],
+                               tirenv_row_source source, void *source_ctx, double x_from,
+                               double x_to, double dx, double load, tirenv_point_sink sink,
+                               void *ctx, tirenv_stream_stats *stats, tirenv_diag *diag);
+
 TIRENV_END_DECLS
 #endif

@@ -213,12 +213,14 @@ int tirenv_compare_report(const tirenv_dataset *ds, const tirenv_compare_setting
                           const tirenv_compare_result *r, const char *notes,
                           tirenv_diag *diag);
 
-/* The whole study in one call (tirenv study, make demo): identify the springs model on the
- * training cases, train the network on the training cases (early stopping on control), compare
- * every model on the validation cases; then the paper's proposed workflow (a network trained on
- * curves of the identified physical model over a dense grid of obstacles, no rig time) and the
- * models on obstacles outside the training grid (taller, shorter, other shapes), whose
- * reference curves the virtual rig simulates with the ring tire. Writes into out_dir:
+/* The whole study in one call (tirenv study, make demo): identify the springs model (and the
+ * cam, unless it simulated the data) on the training cases, train the network on the
+ * training cases (early stopping on control), compare every model on the validation cases;
+ * then the paper's proposed workflow (a network trained on curves of the identified physical
+ * model over a dense grid of obstacles spanning the data set's, no rig time) and the models
+ * on obstacles outside the training grid (taller, shorter, other shapes, scaled to the data
+ * set's), whose reference curves the virtual rig simulates with the model that simulated the
+ * data (the ring for measured data). Writes into out_dir:
  * fitted.tir, nn.json, nn-physical.json, nn-seeds.csv (seed,validation_rms_mm and one
  * <case>_rms_mm column per validation case, mm), report.md with plots and tables, and the
  * subdirectories physical-network/ and outside/ with theirs. */
@@ -238,8 +240,13 @@ typedef struct {
                                     * quartiles, and nn.json (with the tables and plots) is
                                     * the seed nearest the median */
     tirenv_nn_input_form input;    /* the network's input form (default even; paper: x_N) */
-    int simulated_by_ring;         /* the data set was simulated by the ring tire (default 1:
-                                    * the embedded one) */
+    const tirenv_model_type *simulated_by; /* the model that simulated the data set on the
+                                    * virtual rig, with .tire (its source.txt says which,
+                                    * tirenv_dataset_source): the reference of the comparison
+                                    * and of the obstacles outside the training range, not
+                                    * fitted; NULL: measured data, the outside references
+                                    * then from the ring (default: the ring, the embedded
+                                    * tractor set) */
     int images;                    /* draw PNG and SVG with gnuplot (default 1) */
     size_t jobs;                   /* threads running at once (default 1: none started;
                                     * tirenv/parallel.h): the fit's cases, the seeds and the

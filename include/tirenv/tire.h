@@ -85,6 +85,10 @@ typedef struct {
     tirenv_ring_params ring;
     tirenv_eq_settings eq;
     tirenv_cam_params cam;
+    double width;          /* [DIMENSION] WIDTH: the tire's width, m; 0 when a tire file read
+                            * gives none (the default tire: 0.38). Where several tracks
+                            * across the width are evaluated, their default spread
+                            * (docs/models.md section 13) */
 } tirenv_tire;
 
 /* The equilibrium defaults: Newton, eps_F = 1e-6 N, eps_z = 1e-10 m, 100 evaluations,
@@ -94,7 +98,7 @@ tirenv_eq_settings tirenv_eq_default(void);
 /* The shipped default tractor tire (same values as data/tires/default.tir). */
 tirenv_tire tirenv_tire_default(void);
 
-/* Checks that parameters are physical (R0 > 0, c_r > 0, c_b >= 0, 0 < dphi <= phi/2,
+/* Checks that parameters are physical (R0 > 0, c_r > 0, c_b >= 0, 0 < dphi <= phi/2, width >= 0,
  * phi <= pi, tolerances > 0, the ring's and the cam's keys in range). Returns 0 or
  * TIRENV_EINVAL with the offending key in diag. */
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);

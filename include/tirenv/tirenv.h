@@ -2,7 +2,7 @@
  * Umbrella header. SPDX-License-Identifier: GPL-3.0-or-later
  *
  * Two layers, as Lua's lua.h and lauxlib.h. The core computes and knows no file format:
- * decls, error, profile, xn, road, tire, model, rigid, cam, springs, ring, stream, nn,
+ * decls, error, profile, xn, road, tire, model, tracks, rigid, cam, springs, ring, stream, nn,
  * nn_road, train, vehicle, ride, comfort (src/core, src/profile, src/model, src/nn,
  * src/train, src/ride include no other header). The auxiliary layer reads and writes files
  * and runs the study on top of the core's public headers alone: io, curve, rig, dataset,
@@ -17,6 +17,7 @@
 #include "tirenv/road.h"
 #include "tirenv/tire.h"
 #include "tirenv/model.h"
+#include "tirenv/tracks.h"
 #include "tirenv/rigid.h"
 #include "tirenv/cam.h"
 #include "tirenv/springs.h"

@@ -11,7 +11,7 @@ Errors of the library raise TirenvError carrying its diagnostic (file, line, fie
 Every long loop (an envelope over many positions, a ride) is one library call, during which
 cffi releases the GIL."""
 from ._c import TirenvError
-from .model import Flat, Model, POINT_DTYPE, model_names, positions
+from .model import Flat, Model, POINT_DTYPE, model_names, positions, track_positions
 from .network import Network, NetworkRoad
 from .profile import Profile
 from .ride import Metrics, Ride, SAMPLE_DTYPE, Vehicle, comfort, ride, total_value
@@ -19,4 +19,4 @@ from .tire import Tire
 
 __all__ = ["TirenvError", "Tire", "Model", "Profile", "Network", "NetworkRoad", "Vehicle",
            "Ride", "Flat", "Metrics", "ride", "comfort", "total_value", "positions",
-           "model_names", "POINT_DTYPE", "SAMPLE_DTYPE"]
+           "track_positions", "model_names", "POINT_DTYPE", "SAMPLE_DTYPE"]

@@ -35,6 +35,15 @@ def model_names():
     return names
 
 
+def track_positions(n, track=0.0, width=0.38):
+    """The lateral positions (m) of n tracks spread over a tire of width (m) around track
+    (m): the centres of n equal slices, as 'tirenv envelope --tracks N --width W --track V'
+    places them (docs/models.md section 13)."""
+    out, diag = ffi.new("double[]", max(int(n), 1)), new_diag()
+    check(lib.tirenv_tracks_spread(int(n), track, width, out, diag), diag)
+    return np.array([out[i] for i in range(int(n))])
+
+
 def positions(x_from, x_to, dx=DEFAULT_DX):
     """The CLI's sweep x_k = x_from + k*dx up to x_to (with its 1e-9 dx allowance), bit for
     bit the positions 'tirenv envelope --x-from --x-to --dx' evaluates."""
@@ -99,12 +108,32 @@ class Model:
             check(lib.tirenv_model_flat(self._m, load, out, diag), diag)
         return Flat(out.load, out.z_flat, out.deflection, out.contact_length, out.stiffness)
 
-    def set(self, profile, load):
-        """Sets the ground profile and the load (N); resets the warm start."""
+    def set(self, profile, load, weights=None):
+        """Sets the ground profile and the load (N); resets the warm start. profile may be a
+        list of profiles, the tracks across the tire's width (tirenv_model_set_tracks,
+        docs/models.md section 13), with weights (default equal); the model then combines
+        them by its type's rule (springs and ring: one equilibrium of the slices)."""
         diag = new_diag()
+        if isinstance(profile, (list, tuple)):
+            tracks = list(profile)
+            if not tracks:
+                raise invalid("expected at least one track", "tracks")
+            w = ffi.NULL
+            if weights is not None:
+                w = doubles(weights, "weights")
+                if w.size != len(tracks):
+                    raise invalid(f"{len(tracks)} tracks and {w.size} weights", "weights")
+            ps = ffi.new("const tirenv_profile *[]", [t._p for t in tracks])
+            with self._lock:
+                check(lib.tirenv_model_set_tracks(self._m, len(tracks), ps,
+                                                  w if w is ffi.NULL else double_ptr(w), load,
+                                                  diag), diag)
+                # the first track gives the sweep's extent; all are kept alive with the model
+                self.profile, self.load, self._tracks = tracks[0], load, (tracks, w)
+            return self
         with self._lock:
             check(lib.tirenv_model_set(self._m, profile._p, load, diag), diag)
-            self.profile, self.load = profile, load
+            self.profile, self.load, self._tracks = profile, load, None
         return self
 
     def envelope(self, x):

@@ -97,15 +97,24 @@ class Profile:
         return cls._from(out[0], "no road")
 
     @classmethod
-    def read(cls, path, track=0.0):
-        """A profile from a road file the CLI reads (--profile FILE): CSV "x_m,z_m". track is
-        the lateral position (m) on a road that varies across; a CSV road is 2-D, the same
-        on every track."""
+    def read(cls, path, track=0.0, side="mean"):
+        """A profile from a road file the CLI reads (--profile FILE), its format told by its
+        content: CSV "x_m,z_m", an OpenCRG road (.crg) or a TNO/Adams 2-D road (.rdf). track
+        is the lateral position (m, positive to the left) on an OpenCRG road, which varies
+        across (--track); side is "left", "right" or "mean" of an RDF poly_line road's two
+        sides (--side). A CSV road is 2-D, the same on every track."""
         if not math.isfinite(track):
             raise invalid(f"expected a finite lateral position, got {track}", "track")
+        src = ffi.new("tirenv_profile_source *")
+        src[0] = lib.tirenv_profile_source_default()
+        src.crg.v = track
+        side_c = ffi.new("tirenv_rdf_side *")
+        if not isinstance(side, str) or lib.tirenv_rdf_side_find(side.encode(), side_c):
+            raise invalid(f"expected left, right or mean, got {side!r}", "side")
+        src.rdf_side = side_c[0]
         out = ffi.new("tirenv_profile **")
         diag = new_diag()
-        check(lib.tirenv_profile_read_csv(path_bytes(path), out, diag), diag)
+        check(lib.tirenv_profile_read_file(path_bytes(path), src, out, diag), diag)
         return cls._from(out[0], "no profile")
 
     # --- what it holds ---------------------------------------------------------------------

@@ -56,7 +56,9 @@ enum {
     CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
     CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need, and
                              * --extrapolate */
-    CLI_JOBS = 1u << 8      /* --jobs N: work items at once (default: the cores) */
+    CLI_TRACKS = 1u << 8,   /* --width W, --tracks N: tracks across the tire's width (with
+                             * CLI_OBSTACLE, which has --track V and --side S) */
+    CLI_JOBS = 1u << 9      /* --jobs N: work items at once (default: the cores) */
 };
 
 /* The obstacle options, for cli_options.obstacle. */
@@ -86,6 +88,12 @@ typedef struct {
     double contact_length;            /* --contact-length, m */
     int obstacle;                     /* CLI_CLEAT..CLI_PROFILE, or 0 for none */
     const char *obstacle_arg;         /* its argument as given, for messages */
+    int have_track, have_side;
+    double track;                     /* --track: lateral position on a .crg road, m */
+    tirenv_rdf_side side;             /* --side: which side of a .rdf poly_line road */
+    int have_width;
+    double width;                     /* --width: the width tracks spread over, m */
+    long tracks;                      /* --tracks: tracks across it; 0 if not given */
     double shape[3];                  /* the generator's numbers, m */
     double x_from, x_to, dx;          /* --x-from, --x-to, --dx, m; NaN if not given */
     const char *output;               /* -o, --output, or NULL */
@@ -159,6 +167,13 @@ const char *cli_data_path(const char *rel, char *buf, size_t n);
 /* The tire file in use: --tire, else tires/default.tir in the data directory. */
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 
+/* What the data set in dir says about its source (its source.txt, tirenv_dataset_source):
+ * into *src, and when --tire is not given and it names the tire that simulated the data,
+ * that tire becomes the tire file (o->tire_path, kept in buf). Prints and returns an exit code
+ * for a malformed source.txt. */
+int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
+                    size_t n);
+
 /* Reads the tire file, applies --set in order and --method, and checks the result.
  * Returns an exit code after printing any error. */
 int cli_tire(const cli_options *o, tirenv_tire *tire);
@@ -186,8 +201,38 @@ void cli_model_warnings(const char *cmd, const tirenv_model *m);
 #define CLI_MAX_POSITIONS 10000000.0
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
 
-/* The obstacle the options ask for (one required); returns an exit code. */
+/* The obstacle the options ask for (one required): a generated one, or the --profile file's
+ * track (--track, --side); returns an exit code. */
 int cli_profile(const cli_options *o, tirenv_profile **out);
+
+/* ---- roads from files, and tracks across the width (road.c) --------------------------- */
+
+#define CLI_MAX_TRACKS 64
+
+/* The tracks the obstacle options ask for. */
+typedef struct {
+    int from_file;                 /* --profile */
+    tirenv_profile_format format;  /* its format (by content); CSV for a generated obstacle */
+    tirenv_profile_source src;     /* --track, --side */
+    size_t n;                      /* tracks evaluated: --tracks over a road that varies across
+                                    * (a .crg), else 1 */
+    double width;                  /* m: the width they spread over; 0 with one track */
+    double v[CLI_MAX_TRACKS];      /* their lateral positions, m */
+} cli_road;
+
+/* Checks --track, --side, --width and --tracks against the obstacle and the file's format and
+ * places the tracks (tire: the default width, [DIMENSION] WIDTH; NULL where --tracks is not
+ * taken). Prints and returns an exit code. */
+int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r);
+/* The tracks' profiles, whole: r->n of them into out (each to free). Returns an exit code. */
+int cli_road_read(const cli_options *o, const cli_road *r, tirenv_profile *out[]);
+/* The --profile file read a row of r->n heights at a time, for --stream. */
+int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_reader **out);
+/* "FILE", "FILE, track v = 0.9 m", "FILE, 5 tracks over 0.38 m around v = 0.9 m", or the
+ * generated obstacle as asked for. */
+void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n);
+/* The help text of --track, --side, --width, --tracks (with_tracks: the last two too). */
+void cli_help_road(FILE *fp, int with_tracks);
 /* How a message names the obstacle: the file, or the generator as it was asked for. */
 void cli_obstacle_label(const cli_options *o, char *buf, size_t n);
 

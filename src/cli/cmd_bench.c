@@ -74,7 +74,8 @@ static void usage(FILE *fp)
           "model, the springs model with each equilibrium solver (newton, secant = the\n"
           "paper's eq. 2, brent) and the ring reference tire. Reports the best of N runs,\n"
           "single-threaded. Then the rig-log import of a 10,000-sample log, read from CSV and\n"
-          "from memory. Then the road: rigid, cam and springs (contact length 0.33 m) over a\n"
+          "from memory, and the CSV writers' number formatting against snprintf (10^6\n"
+          "numbers, same bytes). Then the road: rigid, cam and springs (contact length 0.33 m) over a\n"
           "1 km ISO 8608 class C road at 10 mm (seed 1), 100,001 positions, against the\n"
           "project's targets; and nn, the network trained on the embedded data set (lm, seed 1)\n"
           "over the same road by equivalent-cleat decomposition, h and slope, the\n"
@@ -621,6 +622,8 @@ int cli_bench_main(int argc, char *argv[])
         print_machine();
         print_table(repeat, r);
         code = bench_import(&tire, prof, repeat);
+        if (!code)
+            code = cli_bench_fmt(repeat);
     }
     tirenv_profile_free(prof);
     if (!code)

@@ -32,8 +32,10 @@ static void usage(FILE *fp)
           "options:\n"
           "  --data DIR           data set (a directory with cases.csv); default: the\n"
           "                       embedded one, dataset in the data directory ($TIRENV_DATA,\n"
-          "                       else the installed data; 'tirenv --help'),\n"
-          "                       whose data are simulated by the ring reference tire\n"
+          "                       else the installed data; 'tirenv --help'). When its\n"
+          "                       source.txt names the model that simulated it (tirenv\n"
+          "                       dataset build), that model is compared as the reference\n"
+          "                       and its tire is the default --tire\n"
           "  --nn MODEL.json      the trained network (tirenv train); without it the\n"
           "                       network is left out\n"
           "  --cases LIST         comma-separated case names, e.g. F,J,R\n"
@@ -230,13 +232,18 @@ int cli_compare_main(int argc, char *argv[])
         free(co.case_list);
         return code;
     }
-    char data_buf[1024], tire_buf[1024];
-    if (!co.data) {
-        /* The embedded data set, simulated on the ring reference tire
-         * (docs/models.md section 5). */
+    char data_buf[1024], tire_buf[1024], src_tire[1024];
+    if (!co.data)
         co.data = cli_data_path("dataset", data_buf, sizeof data_buf);
-        if (!co.s.simulated_by)
-            co.s.simulated_by = tirenv_model_ring;
+    /* What simulated the data, with which tire, if the data set says (its source.txt, as
+     * tirenv dataset build writes it for the embedded sets). */
+    tirenv_dataset_source src;
+    if ((code = cli_data_source(co.data, &o, &src, src_tire, sizeof src_tire))) {
+        free(co.case_list);
+        return code;
+    }
+    if (src.model[0] && !co.s.simulated_by && !co.s.simulated) {
+        co.s.simulated_by = tirenv_model_type_find(src.model);
         co.s.simulated = 1;
     }
     co.s.data_label = co.data;
@@ -260,6 +267,12 @@ int cli_compare_main(int argc, char *argv[])
         if (!status)
             co.s.nn_R0 = rec.R0;
     }
+    /* The output directory is written as a whole (tirenv_outdir): a failed or killed
+     * comparison leaves the previous one as it was. */
+    const char *out_dir = co.s.out_dir;
+    tirenv_outdir *staged = NULL;
+    if (!status && !(status = tirenv_outdir_begin(out_dir, &staged, &diag)))
+        co.s.out_dir = tirenv_outdir_path(staged);
     if (!status)
         status = tirenv_compare(&ds, &tire, nn, &co.s, &r, &diag);
     if (!status)
@@ -269,11 +282,20 @@ int cli_compare_main(int argc, char *argv[])
         tirenv_diag report_diag;
         tirenv_diag_clear(&report_diag);
         code = cli_fail(status, &diag);
-        if (tirenv_compare_report(&ds, &co.s, &r, NULL, &report_diag) == TIRENV_OK)
+        if (tirenv_compare_report(&ds, &co.s, &r, NULL, &report_diag) == TIRENV_OK &&
+            tirenv_outdir_commit(staged, &report_diag) == TIRENV_OK)
             cli_error("compare: tables and report written to %s without images "
-                      "(--no-images skips gnuplot)", co.s.out_dir);
+                      "(--no-images skips gnuplot)", out_dir);
+        else
+            tirenv_outdir_abort(staged);
         goto done;
     }
+    co.s.out_dir = out_dir;
+    if (!status && staged) {
+        status = tirenv_outdir_commit(staged, &diag);
+        staged = NULL;
+    }
+    tirenv_outdir_abort(staged);
     if (status) {
         code = cli_fail(status, &diag);
         goto done;

@@ -3,20 +3,27 @@
  * and the point contact included; tirenv predict is this command with the network.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include "cli/csv_row.h"
 #include "cli/envelope.h"
+#include "cli/road_out.h"
 
 /* The default sweep starts and ends this far beyond the tire's first and last reach, m. */
 static const double margin = 0.02;
 static const double default_dx = 0.001;  /* m */
 static const double rise_threshold = 1e-4;  /* first rise: h above 0.1 mm, m */
+enum { SWEEP_CHUNK = 8192 };  /* positions computed and written at a time into a file */
 
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
-          "                       [--x-from X] [--x-to X] [--dx DX] [--stream] [-o FILE]\n"
+          "                       [--track V] [--side S] [--tracks N] [--width W]\n"
+          "                       [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
+          "                       [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                       [--nn FILE [--extrapolate]] [--tire FILE] [--set KEY=VALUE]...\n"
           "                       [--method M]\n"
           "\n"
@@ -44,16 +51,18 @@ static void usage(FILE *fp)
           fp);
     cli_help_load(fp);
     cli_help_sweep(fp);
+    cli_help_road(fp, 1);
     fputs("  --stream             with --profile: read the file as the tire rolls, in memory\n"
           "                       bounded by the tire's reach whatever the road's length (the\n"
-          "                       file is read twice: first to check it and find its ends);\n"
-          "                       not for the network, which reads the whole profile\n"
-          "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
-          "                       '-': standard output)\n"
-          "  --detail             with --model ring: two more columns, tread_max_m (the\n"
+          "                       file is read twice: first to check it and find its ends; an\n"
+          "                       OpenCRG road a block of rows at a time, an RDF road whole);\n"
+          "                       not for the network, which reads the whole profile\n",
+          fp);
+    cli_help_envelope_output(fp);
+    fputs("  --detail             with --model ring: two more columns, tread_max_m (the\n"
           "                       largest tread compression) and belt_contacts (nodes where\n"
           "                       the belt itself touches the ground), from one more ring\n"
-          "                       evaluation at each row's (x, z); not with --stream\n",
+          "                       evaluation at each row's (x, z); one track, no --stream\n",
           fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
@@ -62,10 +71,19 @@ static void usage(FILE *fp)
 
 static const char header[] = "x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n";
 
+/* The bytes of fprintf("%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n"), several times faster. */
 static void write_row(FILE *fp, const tirenv_point *pt)
 {
-    fprintf(fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", pt->x, pt->z, pt->h, pt->slope,
-            pt->fx, pt->fz, pt->contacts, pt->iterations);
+    char row[8 * CLI_ROW_FIELD], *p = row;
+    p = cli_row_g(p, pt->x, 9, ',');
+    p = cli_row_g(p, pt->z, 9, ',');
+    p = cli_row_g(p, pt->h, 9, ',');
+    p = cli_row_g(p, pt->slope, 9, ',');
+    p = cli_row_g(p, pt->fx, 9, ',');
+    p = cli_row_g(p, pt->fz, 9, ',');
+    p = cli_row_size(p, pt->contacts, ',');
+    p = cli_row_size(p, pt->iterations, '\n');
+    fwrite(row, 1, (size_t)(p - row), fp);
 }
 
 /* --detail: each row and the ring's own state at its (x, z), from a ring of its own (the
@@ -143,37 +161,132 @@ static void summary(const char *cmd, tirenv_model *m, const cli_options *o, doub
             note);
 }
 
-/* The streamed sweep's sink: one row out and into the tally per position. */
+void cli_help_envelope_output(FILE *fp)
+{
+    fputs("  -o, --output FILE    write the curve to FILE, complete or not at all (default or\n"
+          "                       '-': CSV on standard output). FILE.crg or FILE.rdf writes\n"
+          "                       the effective road instead: h along x as an OpenCRG road\n"
+          "                       (straight reference line, rows at the positions, the same\n"
+          "                       h at -w/2 and +w/2 across the width w) or a TNO/Adams\n"
+          "                       poly_line road, for a point-contact tire in another tool\n"
+          "  --crg-encoding E     FILE.crg: kdbi (default: binary doubles, exact), krbi,\n"
+          "                       ldfi or lrfi\n",
+          fp);
+}
+
+cli_envelope_opts cli_envelope_default(void)
+{
+    return (cli_envelope_opts){.stream = 0, .detail = 0, .encoding = TIRENV_CRG_KDBI};
+}
+
+/* What a run needs besides the options: the tracks and how the curve goes out. */
+typedef struct {
+    const char *cmd;
+    const cli_options *o;
+    const cli_envelope_opts *e;
+    cli_road road;
+    tirenv_profile_format out_format;  /* CSV: the curve; CRG, RDF: the effective road */
+    char label[640];                   /* the road, for the summary and the file's comment */
+} run;
+
+/* A file's name without its directories. */
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* Appends one comment line of at most 72 characters (the OpenCRG header's record). */
+static void comment_line(char *buf, size_t n, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static void comment_line(char *buf, size_t n, const char *fmt, ...)
+{
+    char line[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    const size_t used = strlen(buf);
+    snprintf(buf + used, n - used, "%s%.72s", used ? "\n" : "", line);
+}
+
+/* The effective road's file says what it is: the model, the tire, the load, the road and the
+ * frame of h (the writers add the program and its version). */
+static void road_comment(const run *r, const tirenv_model *m, double load, char *buf,
+                         size_t n)
+{
+    char tire[1024], road[700];
+    cli_tire_path(r->o, tire, sizeof tire);
+    cli_road_label(r->o, &r->road, road, sizeof road);
+    buf[0] = '\0';
+    comment_line(buf, n, "Effective road: h(x) = z - z_flat, the hub's effective height");
+    comment_line(buf, n, "of the %s model at load %.6g N, tire %s%s,", tirenv_model_name(m),
+                 load, base_name(tire), r->o->n_sets ? " with --set" : "");
+    comment_line(buf, n, "over %s", r->road.from_file ? base_name(road) : road);
+    comment_line(buf, n, "h is relative to the datum (the road's z = 0); %s",
+                 r->out_format == TIRENV_PROFILE_CRG ? "both long sections" : "both sides");
+    comment_line(buf, n, "carry it: the same height across the tire's width.");
+}
+
+/* The effective road's writer for n positions from x_from every dx, if one is wanted. */
+static int road_out_open(const run *r, const tirenv_model *m, double load, double x_from,
+                         double dx, size_t n, cli_road_out **w, tirenv_diag *diag)
+{
+    char comment[1024];
+    road_comment(r, m, load, comment, sizeof comment);
+    const tirenv_tire *tire = tirenv_model_tire(m);
+    const double width = r->road.width > 0 ? r->road.width : tire->width > 0 ? tire->width : 1;
+    const cli_road_out_layout l = {.x_from = x_from, .dx = dx, .n = n,
+                                   .half_width = 0.5 * width, .encoding = r->e->encoding,
+                                   .comment = comment};
+    return cli_road_out_open(r->o->output, r->out_format, &l, w, diag);
+}
+
+/* The streamed sweep's sink: one row out (or into the effective road) and into the tally
+ * per position. */
 typedef struct {
     FILE *fp;
+    cli_road_out *road;
     tally t;
+    tirenv_diag diag;      /* the road writer's failure */
 } stream_out;
 
 static int stream_row(void *ctx, const tirenv_point *pt)
 {
     stream_out *s = ctx;
-    write_row(s->fp, pt);
+    if (s->road) {
+        const int status = cli_road_out_add(s->road, pt, &s->diag);
+        if (status)
+            return status;
+    } else {
+        write_row(s->fp, pt);
+    }
     tally_add(&s->t, pt);
-    return ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
+    return s->fp && ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
 }
 
-/* The first pass of --stream: checks the whole file (so that a bad row late in it fails
- * before any output) and finds its first and last x, in constant memory. */
-static int stream_extent(const char *path, double *first, double *last, tirenv_diag *diag)
+/* The first pass of --stream: checks the whole file, every track (so that a bad row late in
+ * it fails before any output), and finds its first and last x, in constant memory. */
+static int stream_extent(const run *r, double *first, double *last, tirenv_diag *diag)
 {
-    tirenv_profile_reader *r;
-    int status = tirenv_profile_reader_open(path, &r, diag);
+    tirenv_profile_file_reader *in;
+    int status = tirenv_profile_file_reader_open(r->o->obstacle_arg, &r->road.src, r->road.n,
+                                                 r->road.v, &in, diag);
     int got = 1;
+    double z[CLI_MAX_TRACKS];
     for (size_t k = 0; !status && got; ++k) {
-        double x, z;
-        status = tirenv_profile_reader_next(r, &x, &z, &got, diag);
+        double x;
+        status = tirenv_profile_file_reader_next(in, &x, z, &got, diag);
         if (!status && got) {
             if (k == 0)
                 *first = x;
             *last = x;
         }
     }
-    tirenv_profile_reader_free(r);
+    tirenv_profile_file_reader_free(in);
     return status;
 }
 
@@ -187,13 +300,13 @@ static void sweep_ends(const cli_options *o, const tirenv_model *m, double first
 }
 
 /* --stream: rows go out as they are computed; the output file is still all or nothing. */
-static int envelope_stream(const char *cmd, const cli_options *o, tirenv_model *m,
-                           double load)
+static int envelope_stream(const run *r, tirenv_model *m, double load)
 {
+    const cli_options *o = r->o;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     double first = 0, last = 0, x_from, x_to;
-    int status = stream_extent(o->obstacle_arg, &first, &last, &diag);
+    int status = stream_extent(r, &first, &last, &diag);
     if (status)
         return cli_fail(status, &diag);
     sweep_ends(o, m, first, last, &x_from, &x_to);
@@ -203,126 +316,236 @@ static int envelope_stream(const char *cmd, const cli_options *o, tirenv_model *
                   x_from, x_to);
         return CLI_EXIT_USAGE;
     }
-    tirenv_profile_reader *in = NULL;
+    tirenv_profile_file_reader *in = NULL;
     tirenv_outfile out;
+    int have_out = 0;
     stream_out so = {0};
+    tirenv_diag_clear(&so.diag);
     const char *path = o->output ? o->output : "-";
-    if (!(status = tirenv_profile_reader_open(o->obstacle_arg, &in, &diag)) &&
-        !(status = tirenv_outfile_open(&out, path, &diag))) {
+    const size_t n = tirenv_positions_count(x_from, x_to, dx);
+    int code = cli_road_open(o, &r->road, &in);
+    if (code)
+        return code;
+    if (r->out_format != TIRENV_PROFILE_CSV) {
+        status = road_out_open(r, m, load, x_from, dx, n, &so.road, &diag);
+    } else if (!(status = tirenv_outfile_open(&out, path, &diag))) {
+        have_out = 1;
         so.fp = out.fp;
         fputs(header, out.fp);
-        status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx,
-                                     load, stream_row, &so, NULL, &diag);
-        if (status == TIRENV_EIO && ferror(out.fp))
-            status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
-        if (!status)
-            status = tirenv_outfile_commit(&out, &diag);
-        else
-            tirenv_outfile_abort(&out);
     }
-    tirenv_profile_reader_free(in);
+    if (!status) {
+        status = tirenv_model_stream_tracks(m, r->road.n, NULL,
+                                            tirenv_profile_file_reader_source, in, x_from,
+                                            x_to, dx, load, stream_row, &so, NULL, &diag);
+        if (status == TIRENV_EIO && so.fp && ferror(so.fp))
+            status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
+        else if (status && so.diag.message[0])  /* the road writer's */
+            diag = so.diag;
+        if (!status && so.road) {
+            cli_road_out *w = so.road;
+            so.road = NULL;
+            status = cli_road_out_commit(w, &diag);
+        } else if (!status) {
+            have_out = 0;
+            status = tirenv_outfile_commit(&out, &diag);
+        }
+    }
+    if (have_out)
+        tirenv_outfile_abort(&out);
+    cli_road_out_abort(so.road);
+    tirenv_profile_file_reader_free(in);
     if (status)
         return cli_fail(status, &diag);
-    summary(cmd, m, o, load, &so.t);
+    summary(r->cmd, m, o, load, &so.t);
     return CLI_EXIT_OK;
 }
 
-/* The whole sweep in memory, through tirenv_model_envelope, the rows written after it. */
-static int envelope_whole(const char *cmd, const cli_options *o, tirenv_model *m, double load,
-                          const tirenv_profile *prof, int detail)
+/* Where a whole sweep goes: the CSV curve or the effective road, opened before the sweep so
+ * that a bad -o fails at once, not after it. Both reach their target only on commit. */
+typedef struct {
+    tirenv_outfile out;
+    int have_out;
+    cli_road_out *road;
+} whole_out;
+
+static int whole_open(const run *r, const tirenv_model *m, double load, double x_from,
+                      double dx, size_t n, whole_out *w, tirenv_diag *diag)
 {
+    memset(w, 0, sizeof *w);
+    if (r->out_format != TIRENV_PROFILE_CSV)
+        return road_out_open(r, m, load, x_from, dx, n, &w->road, diag);
+    const int status = tirenv_outfile_open(&w->out, r->o->output ? r->o->output : "-", diag);
+    w->have_out = status == TIRENV_OK;
+    return status;
+}
+
+/* Points a sweep may write as they come: into a temporary file or road (nothing reaches the
+ * target before commit), so that a long road's points never all sit in memory, whose first
+ * touch costs as much as formatting them. Written through (stdout, a FIFO) or with --detail,
+ * the sweep is computed whole first, so that a failure midway writes nothing. */
+static size_t whole_chunk(const run *r, const whole_out *w, size_t n)
+{
+    const int atomic = w->road || tirenv_outfile_is_atomic(&w->out);
+    return atomic && !r->e->detail && n > SWEEP_CHUNK ? SWEEP_CHUNK : n;
+}
+
+/* Writes the points [k0, k0 + n) of the sweep. */
+static int whole_write(const run *r, tirenv_model *m, const tirenv_profile *prof,
+                       const tirenv_point pt[], size_t k0, size_t n, whole_out *w,
+                       tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    if (w->road) {
+        for (size_t k = 0; k < n && !status; ++k)
+            status = cli_road_out_add(w->road, &pt[k], diag);
+        return status;
+    }
+    if (r->e->detail)
+        return write_detail(w->out.fp, tirenv_model_tire(m), prof, pt, n, diag);
+    if (k0 == 0)
+        fputs(header, w->out.fp);
+    for (size_t k = 0; k < n; ++k)
+        write_row(w->out.fp, &pt[k]);
+    return TIRENV_OK;
+}
+
+/* Puts the output in place (checking the writes), or on failure leaves nothing. */
+static int whole_close(whole_out *w, int status, tirenv_diag *diag)
+{
+    cli_road_out *road = w->road;
+    w->road = NULL;
+    if (road)
+        return status ? (cli_road_out_abort(road), status) : cli_road_out_commit(road, diag);
+    if (!w->have_out)
+        return status;
+    w->have_out = 0;
+    if (status) {
+        tirenv_outfile_abort(&w->out);
+        return status;
+    }
+    return tirenv_outfile_commit(&w->out, diag);
+}
+
+/* The sweep through tirenv_model_envelope, a chunk at a time (whole_chunk). */
+static int envelope_whole(const run *r, tirenv_model *m, double load,
+                          tirenv_profile *const prof[])
+{
+    const cli_options *o = r->o;
     double first, last, x_from, x_to, *x = NULL;
-    tirenv_profile_extent(prof, &first, &last);
+    tirenv_profile_extent(prof[0], &first, &last);
     sweep_ends(o, m, first, last, &x_from, &x_to);
+    const double dx = isnan(o->dx) ? default_dx : o->dx;
     size_t n = 0;
-    int code = cli_positions(x_from, x_to, isnan(o->dx) ? default_dx : o->dx, &x, &n);
+    int code = cli_positions(x_from, x_to, dx, &x, &n);
     if (code)
         return code;
-    tirenv_point *pt = malloc(n * sizeof *pt);
-    if (!pt) {
-        free(x);
-        return cli_fail(TIRENV_ENOMEM, NULL);
-    }
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    tirenv_outfile out;
-    int status = tirenv_model_set(m, prof, load, &diag);
+    const tirenv_profile *tracks[CLI_MAX_TRACKS];
+    for (size_t k = 0; k < r->road.n; ++k)
+        tracks[k] = prof[k];
+    whole_out w;
+    tirenv_point *pt = NULL;
+    tally t = {0};
+    int status = tirenv_model_set_tracks(m, r->road.n, tracks, NULL, load, &diag);
     if (!status)
-        cli_model_warnings(cmd, m);
-    /* Opened before the sweep so that a bad -o path fails at once, not after it. */
-    if (!status && !(status = tirenv_outfile_open(&out, o->output ? o->output : "-", &diag))) {
-        status = tirenv_model_envelope(m, n, x, pt, NULL, &diag);
-        if (!status && detail) {
-            status = write_detail(out.fp, tirenv_model_tire(m), prof, pt, n, &diag);
-        } else if (!status) {
-            fputs(header, out.fp);
-            for (size_t k = 0; k < n; ++k)
-                write_row(out.fp, &pt[k]);
+        cli_model_warnings(r->cmd, m);
+    if (!status && !(status = whole_open(r, m, load, x_from, dx, n, &w, &diag))) {
+        const size_t chunk = whole_chunk(r, &w, n);
+        if (!(pt = malloc(chunk * sizeof *pt)))
+            status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        for (size_t k0 = 0; k0 < n && !status; k0 += chunk) {
+            const size_t n_k = n - k0 < chunk ? n - k0 : chunk;
+            status = tirenv_model_envelope(m, n_k, x + k0, pt, NULL, &diag);
+            if (!status)
+                status = whole_write(r, m, prof[0], pt, k0, n_k, &w, &diag);
+            for (size_t k = 0; k < n_k && !status; ++k)
+                tally_add(&t, &pt[k]);
         }
-        if (!status)  /* commit checks the writes and removes the file if one failed */
-            status = tirenv_outfile_commit(&out, &diag);
-        else
-            tirenv_outfile_abort(&out);
+        status = whole_close(&w, status, &diag);
     }
-    if (status) {
+    if (status)
         code = cli_fail(status, &diag);
-    } else {
-        tally t = {0};
-        for (size_t k = 0; k < n; ++k)
-            tally_add(&t, &pt[k]);
-        summary(cmd, m, o, load, &t);
-    }
+    else
+        summary(r->cmd, m, o, load, &t);
     free(pt);
     free(x);
     return code;
 }
 
 int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_type *type,
-                     int stream, int detail)
+                     const cli_envelope_opts *e)
 {
     const char *missing = NULL;
     if (!o->obstacle)
         missing = "an obstacle option";
     else if (!o->have_load && !o->have_contact_length)
         missing = "--load N or --contact-length M";
-    else if (stream && o->obstacle != CLI_PROFILE)
+    else if (e->stream && o->obstacle != CLI_PROFILE)
         missing = "--profile FILE with --stream";
-    else if (detail && (type != tirenv_model_ring || stream))
+    else if (e->detail && (type != tirenv_model_ring || e->stream))
         missing = "--model ring and no --stream with --detail";
     if (missing) {
         cli_error("%s: expected %s; 'tirenv %s --help' shows the options", cmd, missing, cmd);
         return CLI_EXIT_USAGE;
     }
-    if (stream && !(tirenv_model_type_flags(type) & TIRENV_MODEL_STREAMS)) {
+    if (e->stream && !(tirenv_model_type_flags(type) & TIRENV_MODEL_STREAMS)) {
         cli_error("%s: --stream: the %s model reads the whole profile at once; it cannot "
                   "stream", cmd, tirenv_model_type_name(type));
         return CLI_EXIT_USAGE;
     }
+    run r = {.cmd = cmd, .o = o, .e = e, .out_format = TIRENV_PROFILE_CSV};
+    cli_road_out_wanted(o->output, &r.out_format);
+    if (e->detail && r.out_format != TIRENV_PROFILE_CSV) {
+        cli_error("%s: --detail adds columns to the CSV curve; -o %s writes an effective road",
+                  cmd, o->output);
+        return CLI_EXIT_USAGE;
+    }
     tirenv_tire tire;
     tirenv_model *m = NULL;
-    tirenv_profile *prof = NULL;
+    tirenv_profile *prof[CLI_MAX_TRACKS] = {NULL};
     double load = 0;
-    int code;
-    if (!(code = cli_tire(o, &tire)) && (stream || !(code = cli_profile(o, &prof))) &&
-        !(code = cli_model(type, &tire, o, &m)) && !(code = cli_load(o, m, &load)))
-        code = stream ? envelope_stream(cmd, o, m, load)
-                      : envelope_whole(cmd, o, m, load, prof, detail);
+    int code = cli_tire(o, &tire);
+    if (!code)
+        code = cli_road_plan(o, &tire, &r.road);
+    if (!code && e->detail && r.road.n > 1) {
+        cli_error("%s: --detail is one ring's state on one track; not with --tracks", cmd);
+        code = CLI_EXIT_USAGE;
+    }
+    cli_road_label(o, &r.road, r.label, sizeof r.label);
+    if (!code && !e->stream)
+        code = cli_road_read(o, &r.road, prof);
+    if (!code && !(code = cli_model(type, &tire, o, &m)) && !(code = cli_load(o, m, &load)))
+        code = e->stream ? envelope_stream(&r, m, load) : envelope_whole(&r, m, load, prof);
     tirenv_model_free(m);
-    tirenv_profile_free(prof);
+    for (size_t k = 0; k < r.road.n; ++k)
+        tirenv_profile_free(prof[k]);
     return code;
+}
+
+static int parse_encoding(void *dst, const char *arg)
+{
+    if (tirenv_crg_encoding_find(arg, dst)) {
+        cli_error("--crg-encoding: expected kdbi, krbi, ldfi or lrfi, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
 }
 
 int cli_envelope_main(int argc, char *argv[])
 {
-    int stream = 0, detail = 0;
+    cli_envelope_opts e = cli_envelope_default();
     const cli_opt own[] = {
-        {.name = "stream", .kind = CLI_FLAG, .dst = &stream},
-        {.name = "detail", .kind = CLI_FLAG, .dst = &detail},
+        {.name = "stream", .kind = CLI_FLAG, .dst = &e.stream},
+        {.name = "detail", .kind = CLI_FLAG, .dst = &e.detail},
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e.encoding,
+         .parse = parse_encoding},
         {.name = NULL},
     };
     const cli_parser p = {.name = "envelope", .usage = usage, .opts = own,
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
-                                    CLI_SWEEP | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK};
+                                    CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
+                                    CLI_NETWORK};
     cli_options o;
     const int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)
@@ -331,5 +554,5 @@ int cli_envelope_main(int argc, char *argv[])
         cli_error("envelope: expected --model NAME; 'tirenv envelope --help' shows the options");
         return CLI_EXIT_USAGE;
     }
-    return cli_envelope_run("envelope", &o, o.type, stream, detail);
+    return cli_envelope_run("envelope", &o, o.type, &e);
 }

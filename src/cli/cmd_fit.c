@@ -10,23 +10,27 @@
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv fit --data DIR [--model springs|cam] [--fit-radius]\n"
+    fputs("usage: tirenv fit --data DIR [--model springs|cam|ring] [--fit-radius | --all]\n"
           "                  [--check-refinement] [-o FITTED.tir] [--jobs N] [--tire FILE]\n"
           "                  [--set K=V]...\n"
           "\n"
           "Identifies RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS (and UNLOADED_RADIUS with\n"
-          "--fit-radius) of the springs model, or ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
-          "and ELLIPS_ORDER of the cam model, on the data set's training cases by nonlinear\n"
-          "least squares on h (GSL multifit_nlinear), starting from the tire file, and\n"
-          "reports standard errors and the fit per case; a parameter the data drive to its\n"
-          "bound (ELLIPS_ORDER to 1, a stiffness towards 0) is reported AT ITS LOWER BOUND.\n"
-          "The discretisation (ELEMENT_ANGLE) is a setting, not a fitted parameter:\n"
-          "--check-refinement refits with it halved and reports how much the parameters\n"
-          "and the fitted curves change.\n"
+          "--fit-radius) of the springs model, ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
+          "and ELLIPS_ORDER of the cam model, or FOUNDATION_STIFFNESS and TREAD_STIFFNESS\n"
+          "(and BELT_BENDING_STIFFNESS and BELT_PRETENSION with --all) of the ring, on the\n"
+          "data set's training cases by nonlinear least squares on h (GSL multifit_nlinear),\n"
+          "starting from the tire file (the data set's own when its source.txt names one and\n"
+          "--tire is not given), and reports standard errors and the fit per case; a\n"
+          "parameter the data drive to its bound (ELLIPS_ORDER to 1, a stiffness towards 0)\n"
+          "is reported AT ITS LOWER BOUND. The discretisation (ELEMENT_ANGLE) is a setting,\n"
+          "not a fitted parameter: --check-refinement refits the springs model with it\n"
+          "halved and reports how much the parameters and the fitted curves change.\n"
           "\n"
           "options:\n"
           "  --data DIR           data set directory with cases.csv\n"
-          "  --fit-radius         also fit UNLOADED_RADIUS\n"
+          "  --fit-radius         also fit UNLOADED_RADIUS (springs)\n"
+          "  --all                also fit the model's optional parameters (springs: the\n"
+          "                       radius; ring: the belt's bending stiffness and tension)\n"
           "  --check-refinement   refit with ELEMENT_ANGLE / 2 and compare\n"
           "  -o, --output FILE    write the fitted tire (.tir); default: print only\n",
           fp);
@@ -108,10 +112,11 @@ static void print_report(const char *what, const tirenv_fit_report *r)
 int cli_fit_main(int argc, char *argv[])
 {
     const char *data = NULL;
-    int fit_radius = 0, refine = 0;
+    int fit_radius = 0, fit_all = 0, refine = 0;
     const cli_opt own[] = {
         {.name = "data", .kind = CLI_STRING, .dst = &data},
         {.name = "fit-radius", .kind = CLI_FLAG, .dst = &fit_radius},
+        {.name = "all", .kind = CLI_FLAG, .dst = &fit_all},
         {.name = "check-refinement", .kind = CLI_FLAG, .dst = &refine},
         {.name = NULL},
     };
@@ -124,7 +129,7 @@ int cli_fit_main(int argc, char *argv[])
         return parsed;
     tirenv_fit_settings fs = tirenv_fit_default();
     fs.type = o.type ? o.type : tirenv_model_springs;
-    fs.fit_R0 = fit_radius;
+    fs.fit_R0 = fit_radius || fit_all;
     fs.progress = progress;
     fs.jobs = o.jobs;
     const char *out = o.output;
@@ -135,21 +140,31 @@ int cli_fit_main(int argc, char *argv[])
         for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
             if (tirenv_model_type_flags(*t) & TIRENV_MODEL_FITTABLE)
                 fprintf(stderr, " %s", tirenv_model_type_name(*t));
-        fputs(" (the ring is the reference tire)\n", stderr);
+        fputc('\n', stderr);
         return CLI_EXIT_USAGE;
     }
-    if (refine && !(flags & TIRENV_MODEL_EQUILIBRIUM)) {
+    if (refine && fs.type != tirenv_model_springs) {
         cli_error("fit: --check-refinement halves ELEMENT_ANGLE, the discretisation of the "
                   "springs model; the %s model has none", tirenv_model_type_name(fs.type));
+        return CLI_EXIT_USAGE;
+    }
+    if (fit_radius && fs.type != tirenv_model_springs) {
+        cli_error("fit: --fit-radius fits the springs model's UNLOADED_RADIUS; for the %s "
+                  "model --all fits its optional parameters", tirenv_model_type_name(fs.type));
         return CLI_EXIT_USAGE;
     }
     if (!data) {
         cli_error("fit: --data DIR is required");
         return CLI_EXIT_USAGE;
     }
-    tirenv_tire tire;
-    int code = cli_tire(&o, &tire);
+    /* The tire that simulated the data, if the data set says (its source.txt). */
+    tirenv_dataset_source src;
+    char tire_buf[1024];
+    int code = cli_data_source(data, &o, &src, tire_buf, sizeof tire_buf);
     if (code)
+        return code;
+    tirenv_tire tire;
+    if ((code = cli_tire(&o, &tire)))
         return code;
     tirenv_dataset ds;
     tirenv_diag diag;

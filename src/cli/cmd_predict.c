@@ -9,6 +9,7 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
+          "                      [--track V] [--side S] [--tracks N] [--width W]\n"
           "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
@@ -42,9 +43,9 @@ static void usage(FILE *fp)
           "                       warning) instead of refusing the input\n"
           "  --cleat L,H          rectangular cleat: length and height in m (h is 0 before\n"
           "                       the first x_N the network saw, and never below 0)\n"
-          "  --profile FILE       or a ground profile, CSV x_m,z_m (or a generated obstacle:\n"
-          "                       --step, --trapezoid, --triangle, --cylinder, --sine as in\n"
-          "                       'tirenv envelope --help')\n"
+          "  --profile FILE       or a road file: CSV x_m,z_m, OpenCRG .crg or TNO/Adams .rdf\n"
+          "                       (or a generated obstacle: --step, --trapezoid, --triangle,\n"
+          "                       --cylinder, --sine as in 'tirenv envelope --help')\n"
           "  --contact-length M   the working regime, the network's input, in m\n"
           "  --load N             or the load, N, turned into the contact length of the springs\n"
           "                       model of the tire file (--contact-length is turned into the\n"
@@ -52,19 +53,35 @@ static void usage(FILE *fp)
           "  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"
           "                       before the obstacle's first vertex to R0 + 0.02 m after its\n"
           "                       last\n"
-          "  --dx DX              spacing of the positions, m (default 0.001)\n"
-          "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
-          "                       '-': standard output)\n",
+          "  --dx DX              spacing of the positions, m (default 0.001)\n",
           fp);
+    cli_help_road(fp, 1);
+    cli_help_envelope_output(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
 
+static int parse_encoding(void *dst, const char *arg)
+{
+    if (tirenv_crg_encoding_find(arg, dst)) {
+        cli_error("--crg-encoding: expected kdbi, krbi, ldfi or lrfi, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 int cli_predict_main(int argc, char *argv[])
 {
-    const cli_parser p = {.name = "predict", .usage = usage,
+    cli_envelope_opts e = cli_envelope_default();
+    const cli_opt own[] = {
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e.encoding,
+         .parse = parse_encoding},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "predict", .usage = usage, .opts = own,
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
-                                    CLI_SWEEP | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK};
+                                    CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
+                                    CLI_NETWORK};
     cli_options o;
     const int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)
@@ -80,5 +97,5 @@ int cli_predict_main(int argc, char *argv[])
                   "options");
         return CLI_EXIT_USAGE;
     }
-    return cli_envelope_run("predict", &o, o.type ? o.type : tirenv_model_nn, 0, 0);
+    return cli_envelope_run("predict", &o, o.type ? o.type : tirenv_model_nn, &e);
 }

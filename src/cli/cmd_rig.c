@@ -18,6 +18,7 @@ static void usage(FILE *fp)
           "options:\n",
           fp);
     cli_help_obstacle(fp);
+    cli_help_road(fp, 0);
     cli_help_load(fp);
     cli_help_model(fp, 0, TIRENV_MODEL_NEEDS_NETWORK, " (default ring, the reference tire)");
     fputs("  --speed M_S          cart speed, m/s (default 0.1)\n"

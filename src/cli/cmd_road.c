@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/csv_row.h"
 
 static void usage(FILE *fp)
 {
@@ -105,8 +106,12 @@ static void write_csv(FILE *fp, const tirenv_profile *p)
     const size_t n = tirenv_profile_size(p);
     const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
     fputs("x_m,z_m\n", fp);
-    for (size_t j = 0; j < n; ++j)
-        fprintf(fp, "%.10g,%.9g\n", x[j], z[j]);
+    for (size_t j = 0; j < n; ++j) {  /* as "%.10g,%.9g\n" */
+        char row[2 * CLI_ROW_FIELD], *r = row;
+        r = cli_row_g(r, x[j], 10, ',');
+        r = cli_row_g(r, z[j], 9, '\n');
+        fwrite(row, 1, (size_t)(r - row), fp);
+    }
 }
 
 int cli_road_main(int argc, char *argv[])

@@ -13,20 +13,24 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
           "                    [--seed S] [--seeds N] [--input even|paper]\n"
-          "                    [--measured | --simulated-by ring] [--no-images] [--jobs N]\n"
+          "                    [--measured | --simulated-by MODEL] [--no-images] [--jobs N]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
           "on the data set's training cases (tirenv fit), trains the 4-8-1 network with\n"
           "early stopping on the control cases (tirenv train), and compares rigid, springs,\n"
-          "cam, the network (and the ring reference tire when it simulated the data) on the\n"
+          "cam, the network (and the model that simulated the data, as the reference) on the\n"
           "validation cases, with a plot per case in the manner of the paper's Figure 5,\n"
           "error tables, timings and report.md. Then the paper's proposed workflow (a\n"
           "network trained on the identified physical model's curves) and obstacles outside\n"
-          "the training range.\n"
+          "the training range. A data set's source.txt (as tirenv dataset build writes it)\n"
+          "says which model simulated it and with which tire: that model is the reference,\n"
+          "not fitted, and that tire is the tire unless --tire is given. A data set without\n"
+          "it is taken as measured.\n"
           "\n"
           "options:\n"
-          "  --data DIR           data set with cases.csv (default: the embedded, SIMULATED one)\n"
+          "  --data DIR           data set with cases.csv (default: the embedded, SIMULATED\n"
+          "                       tractor set; data/dataset-205-60R15 is the car tire's)\n"
           "  -o DIR               report directory (default out/study)\n"
           "  --trainer NAME       network trainer (default lm)\n"
           "  --seed S             first training seed (default 1)\n"
@@ -37,8 +41,8 @@ static void usage(FILE *fp)
           "  --input FORM         the network's input: even (default, the rounded distance\n"
           "                       from the obstacle centre: smooth over the centre) or\n"
           "                       paper (x_N, as in the paper)\n"
-          "  --simulated-by ring  the data were simulated by the ring tire (default for the\n"
-          "                       embedded data set; then the ring is compared too)\n"
+          "  --simulated-by MODEL the data were simulated by this model (ring, cam, ...),\n"
+          "                       whatever the data set's source.txt says\n"
           "  --measured           the data are real measurements\n"
           "  --no-images          write the gnuplot scripts but do not run gnuplot\n",
           fp);
@@ -57,18 +61,18 @@ static void progress(void *ctx, const char *stage, size_t step, size_t steps)
             cli_wall_seconds() - *t0, step == steps ? "\n" : "");
 }
 
-/* --simulated-by: the embedded data set's reference tire is the only simulator the study
- * knows how to compare (tirenv_study_settings.simulated_by_ring). */
+/* --simulated-by: any physical model the virtual rig can run. */
 static int parse_simulated_by(void *dst, const char *arg)
 {
     const tirenv_model_type *type;
     if (cli_model_type(arg, &type))
         return CLI_EXIT_USAGE;
-    if (type != tirenv_model_ring) {
-        cli_error("study: --simulated-by expects 'ring', got '%s'", arg);
+    if (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK) {
+        cli_error("study: --simulated-by expects a physical model (e.g. ring, cam), got '%s'",
+                  arg);
         return CLI_EXIT_USAGE;
     }
-    *(int *)dst = 1;
+    *(const tirenv_model_type **)dst = type;
     return CLI_EXIT_OK;
 }
 
@@ -90,13 +94,14 @@ int cli_study_main(int argc, char *argv[])
     char data_buf[1024];
     const char *data = NULL;
     long seed = (long)s.seed, seeds = (long)s.seeds;
-    int by_ring = 0, measured = 0, no_images = 0;
+    const tirenv_model_type *simulated_by = NULL;
+    int measured = 0, no_images = 0;
     const cli_opt own[] = {
         {.name = "data", .kind = CLI_STRING, .dst = &data},
         {.name = "trainer", .kind = CLI_STRING, .dst = &s.trainer},
         {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L,
          .what = "a whole number >= 0"},
-        {.name = "simulated-by", .kind = CLI_CUSTOM, .dst = &by_ring,
+        {.name = "simulated-by", .kind = CLI_CUSTOM, .dst = &simulated_by,
          .parse = parse_simulated_by},
         {.name = "seeds", .kind = CLI_COUNT, .dst = &seeds, .min = 1, .max = 100000,
          .what = "a whole number from 1 to 100000"},
@@ -111,7 +116,7 @@ int cli_study_main(int argc, char *argv[])
     const int parsed = cli_parse(&p, argc, argv, &o);
     if (parsed != CLI_GO_ON)
         return parsed;
-    if (by_ring && measured) {
+    if (simulated_by && measured) {
         cli_error("study: --measured and --simulated-by contradict each other: give one");
         return CLI_EXIT_USAGE;
     }
@@ -126,17 +131,30 @@ int cli_study_main(int argc, char *argv[])
     s.jobs = o.jobs;
     if (o.output)
         s.out_dir = o.output;
-    /* A user's own data set is taken as measured unless they say otherwise. */
-    s.simulated_by_ring = by_ring || (!measured && !data);
+    /* The data set says what simulated it and with which tire (source.txt, as tirenv dataset
+     * build writes it); a data set that says nothing is taken as measured. */
+    tirenv_dataset_source src;
+    char tire_buf[1024];
+    int code = cli_data_source(s.data_dir, &o, &src, tire_buf, sizeof tire_buf);
+    if (code)
+        return code;
+    s.simulated_by = simulated_by                ? simulated_by
+                     : measured || !src.model[0] ? NULL
+                                                 : tirenv_model_type_find(src.model);
     if (!tirenv_trainer_type_find(s.trainer)) {
         cli_error("study: unknown trainer '%s'; expected lm, rprop or backprop", s.trainer);
         return CLI_EXIT_USAGE;
     }
-    int code = cli_tire(&o, &s.tire);
-    if (code)
+    if ((code = cli_tire(&o, &s.tire)))
         return code;
     char label[1024];
     s.tire_label = cli_tire_path(&o, label, sizeof label);
+    /* The data set's own tire is named as the data set is (data/dataset/tire.tir). */
+    const size_t n_dir = strlen(s.data_dir);
+    if (o.tire_path == tire_buf && strncmp(tire_buf, s.data_dir, n_dir) == 0) {
+        snprintf(label, sizeof label, "%s%s", s.data_label, tire_buf + n_dir);
+        s.tire_label = label;
+    }
     double t0 = cli_wall_seconds();
     s.progress = progress;
     s.progress_ctx = &t0;

@@ -357,6 +357,11 @@ int cli_train_main(int argc, char *argv[])
     if (code != CLI_GO_ON)
         return code;
 
+    /* The radius x_N refers to: the tire that simulated the data, if the data set says. */
+    tirenv_dataset_source src;
+    char tire_buf[1024];
+    if ((code = cli_data_source(t.data, &o, &src, tire_buf, sizeof tire_buf)))
+        return code;
     tirenv_tire tire;
     if ((code = cli_tire(&o, &tire)))
         return code;

@@ -5,11 +5,24 @@
 
 #include "cli/cli.h"
 
-/* The curve of a model of this type over the options' obstacle at their load, as CSV to
- * o->output (stdout if NULL), streamed from the --profile file if stream, with the ring's
- * tread_max_m and belt_contacts columns if detail; the summary line starts "tirenv CMD:".
- * Returns an exit code after printing any error. */
+/* How the curve is computed and written, besides the shared options. */
+typedef struct {
+    int stream;                    /* read the --profile file as the tire rolls */
+    int detail;                    /* the ring's tread_max_m and belt_contacts columns */
+    tirenv_crg_encoding encoding;  /* -o X.crg: the effective road's encoding */
+} cli_envelope_opts;
+
+/* KDBI, no stream, no detail. */
+cli_envelope_opts cli_envelope_default(void);
+
+/* The curve of a model of this type over the options' obstacle (its tracks: --track, --tracks)
+ * at their load, as CSV to o->output (stdout if NULL), or as the effective road if o->output
+ * names a .crg or .rdf file; the summary line starts "tirenv CMD:". Returns an exit code
+ * after printing any error. */
 int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_type *type,
-                     int stream, int detail);
+                     const cli_envelope_opts *e);
+
+/* The help text of -o and --crg-encoding for the commands that write the curve. */
+void cli_help_envelope_output(FILE *fp);
 
 #endif

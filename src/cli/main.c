@@ -8,6 +8,7 @@
 
 #include "cli/cli.h"
 #include "tirenv/version.h"
+#include "cli/signals.h"
 
 static int help_main(int argc, char *argv[]);
 
@@ -102,6 +103,7 @@ int main(int argc, char *argv[])
         {"version", no_argument, NULL, 'V'},
         {NULL, 0, NULL, 0},
     };
+    cli_signals_install();
     /* The library checks every GSL status and reports failures itself; GSL's default handler
      * would abort first. Setting it is the program's business, not the library's (error.h). */
     gsl_set_error_handler_off();

@@ -113,6 +113,21 @@ int cli_parse_count(const char *s, long min, long max, long *v)
     return 0;
 }
 
+int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
+                    size_t n)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_dataset_source_read(dir, src, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    if (!o->tire_path && src->tire[0]) {
+        snprintf(buf, n, "%s", src->tire);
+        o->tire_path = buf;
+    }
+    return CLI_EXIT_OK;
+}
+
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
 {
     return o->tire_path ? o->tire_path : cli_data_path("tires/default.tir", buf, n);

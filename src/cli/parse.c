@@ -22,6 +22,10 @@ enum {
     OPT_DX,
     OPT_MODEL,
     OPT_NN,
+    OPT_TRACK,
+    OPT_SIDE,
+    OPT_WIDTH,
+    OPT_TRACKS,
     OPT_JOBS,
     OPT_EXTRAPOLATE,
     OPT_OWN                /* OPT_OWN + i: the command's own option i */
@@ -40,7 +44,7 @@ static const struct {
     {CLI_TRIANGLE, "triangle", 2, "L,H: base length and height in m"},
     {CLI_CYLINDER, "cylinder", 1, "R: radius in m"},
     {CLI_SINE, "sine", 3, "A,WAVELENGTH,PERIODS: amplitude and wavelength in m, periods"},
-    {CLI_PROFILE, "profile", 0, "FILE.csv with header x_m,z_m"},
+    {CLI_PROFILE, "profile", 0, "a road file: CSV x_m,z_m, OpenCRG .crg or TNO/Adams .rdf"},
 };
 enum { N_OBSTACLES = sizeof obstacles / sizeof obstacles[0] };
 
@@ -62,6 +66,10 @@ static const struct {
     {CLI_OBSTACLE, {"cylinder", required_argument, NULL, OPT_OBSTACLE + CLI_CYLINDER}, 0},
     {CLI_OBSTACLE, {"sine", required_argument, NULL, OPT_OBSTACLE + CLI_SINE}, 0},
     {CLI_OBSTACLE, {"profile", required_argument, NULL, OPT_OBSTACLE + CLI_PROFILE}, 0},
+    {CLI_OBSTACLE, {"track", required_argument, NULL, OPT_TRACK}, 0},
+    {CLI_OBSTACLE, {"side", required_argument, NULL, OPT_SIDE}, 0},
+    {CLI_TRACKS, {"width", required_argument, NULL, OPT_WIDTH}, 0},
+    {CLI_TRACKS, {"tracks", required_argument, NULL, OPT_TRACKS}, 0},
     {CLI_SWEEP, {"x-from", required_argument, NULL, OPT_X_FROM}, 0},
     {CLI_SWEEP, {"x-to", required_argument, NULL, OPT_X_TO}, 0},
     {CLI_SWEEP, {"dx", required_argument, NULL, OPT_DX}, 0},
@@ -147,6 +155,34 @@ static int shared_option(cli_options *o, int code, const char *arg)
         return CLI_EXIT_OK;
     case OPT_JOBS:
         return cli_parse_jobs(arg, &o->jobs);
+    case OPT_TRACK:
+        if (cli_parse_double(arg, &o->track)) {
+            cli_error("--track: expected a lateral position in m, got '%s'", arg);
+            return CLI_EXIT_USAGE;
+        }
+        o->have_track = 1;
+        return CLI_EXIT_OK;
+    case OPT_SIDE:
+        if (tirenv_rdf_side_find(arg, &o->side)) {
+            cli_error("--side: expected left, right or mean, got '%s'", arg);
+            return CLI_EXIT_USAGE;
+        }
+        o->have_side = 1;
+        return CLI_EXIT_OK;
+    case OPT_WIDTH:
+        if (cli_parse_double(arg, &o->width) || !(o->width > 0)) {
+            cli_error("--width: expected a positive width in m, got '%s'", arg);
+            return CLI_EXIT_USAGE;
+        }
+        o->have_width = 1;
+        return CLI_EXIT_OK;
+    case OPT_TRACKS:
+        if (cli_parse_count(arg, 1, CLI_MAX_TRACKS, &o->tracks)) {
+            cli_error("--tracks: expected a whole number of tracks from 1 to %d, got '%s'",
+                      CLI_MAX_TRACKS, arg);
+            return CLI_EXIT_USAGE;
+        }
+        return CLI_EXIT_OK;
     case OPT_EXTRAPOLATE:
         o->extrapolate = 1;
         return CLI_EXIT_OK;
@@ -344,7 +380,10 @@ void cli_help_obstacle(FILE *fp)
           "  --cylinder R         half-cylinder of radius R\n"
           "  --sine A,WAVELENGTH,PERIODS\n"
           "                       z = A*(1 - cos(2*pi*x/WAVELENGTH)) from x = 0\n"
-          "  --profile FILE.csv   measured profile: header x_m,z_m, one vertex per line\n",
+          "  --profile FILE       a road file, its format told by its content: a profile CSV\n"
+          "                       (header x_m,z_m, one vertex per line), an OpenCRG road\n"
+          "                       (.crg) or a TNO/Adams 2-D road (.rdf); docs/formats.md\n"
+          "                       sections 4 and 5\n",
           fp);
 }
 
@@ -360,10 +399,9 @@ int cli_profile(const cli_options *o, tirenv_profile **out)
     *out = NULL;
     switch (o->obstacle) {
     case CLI_PROFILE: {
-        tirenv_diag diag;
-        tirenv_diag_clear(&diag);
-        const int status = tirenv_profile_read_csv(o->obstacle_arg, out, &diag);
-        return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+        cli_road r;
+        const int code = cli_road_plan(o, NULL, &r);
+        return code ? code : cli_road_read(o, &r, out);
     }
     case CLI_CLEAT: *out = tirenv_profile_cleat(s[0], s[1]); break;
     case CLI_STEP: *out = tirenv_profile_step(s[0], s[1]); break;

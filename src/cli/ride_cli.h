@@ -18,6 +18,7 @@ typedef struct {
     int extrapolate;                 /* --extrapolate: the network outside its ranges */
     const char *out_path;            /* -o: the one run's series */
     const char *out_dir;             /* --out-dir */
+    int series;                      /* --series: every run's series into out_dir */
     char speed_buf[256];
     const tirenv_model_type *models[RIDE_MAX_MODELS];
     const char *model_names[RIDE_MAX_MODELS];  /* their names, for the files and tables */

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/csv_row.h"
 #include "cli/ride_cli.h"
 #include "tirenv/nn_file.h"
 #include "tirenv/parallel.h"
@@ -161,11 +162,15 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
     tirenv_outfile_comment(&out, comment);
     fputs("t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,"
           "seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N\n", out.fp);
-    for (size_t k = 0; k < rs->n; ++k) {
+    for (size_t k = 0; k < rs->n; ++k) {  /* each field as "%.9g" */
         const tirenv_ride_sample *s = &rs->samples[k];
-        fprintf(out.fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-                s->t, s->x_front, s->w_front, s->w_rear, s->z, s->theta, s->z_a, s->seat_az,
-                rs->a_w[k], s->seat_ax, s->atheta, s->F_front, s->F_rear);
+        const double v[13] = {s->t, s->x_front, s->w_front, s->w_rear, s->z, s->theta,
+                              s->z_a, s->seat_az, rs->a_w[k], s->seat_ax, s->atheta,
+                              s->F_front, s->F_rear};
+        char row[13 * CLI_ROW_FIELD], *p = row;
+        for (size_t j = 0; j < 13; ++j)
+            p = cli_row_g(p, v[j], 9, j + 1 < 13 ? ',' : '\n');
+        fwrite(row, 1, (size_t)(p - row), out.fp);
     }
     return tirenv_outfile_commit(&out, diag);  /* it checks ferror and removes the file */
 }
@@ -260,8 +265,8 @@ static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
         status = measure(r, rs, q, diag);
     if (!status && r->out_path)
         status = write_series(r->out_path, rs, q, diag);
-    if (!status && r->out_dir) {
-        char path[1024];
+    if (!status && r->out_dir && r->series) {
+        char path[4200];
         snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->model,
                  q->speed * 3.6);
         status = write_series(path, rs, q, diag);
@@ -292,6 +297,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     s.p = p;
     const size_t n_runs = r->n_models * r->n_speeds;
     ride_inputs in[RIDE_MAX_MODELS] = {{0}};
+    tirenv_outdir *staged = NULL;
     ride_result *res = calloc(n_runs, sizeof *res);
     ride_series *series = calloc(n_runs, sizeof *series);
     tirenv_diag diag;
@@ -330,8 +336,6 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     }
     if ((code = model_inputs(r, &s, in)))
         goto done;
-    if (r->out_dir && (code = cli_mkdir(r->out_dir)))
-        goto done;
     /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
      * memory": a 10 km/h km of road is 0.36 M samples. */
     for (size_t j = 0; j < r->n_speeds; ++j) {
@@ -347,6 +351,20 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
             code = CLI_EXIT_USAGE;
             goto done;
         }
+    }
+    /* --out-dir is written as a whole (tirenv_outdir): a failed or killed ride leaves the
+     * previous directory as it was. The runs write their series into the staging
+     * directory. */
+    ride_options staged_r;
+    if (r->out_dir) {
+        const int status = tirenv_outdir_begin(r->out_dir, &staged, &diag);
+        if (status) {
+            code = cli_fail(status, &diag);
+            goto done;
+        }
+        staged_r = *r;
+        staged_r.out_dir = tirenv_outdir_path(staged);
+        r = &staged_r;
     }
     ride_runs runs = {r, &s, in, res, series, x_from, x_last, NULL};
     if (!(runs.status = calloc(n_runs, sizeof *runs.status))) {
@@ -366,9 +384,14 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     if (code)
         goto done;
     print_table(stdout, res, n_runs);
-    if (r->out_dir)
-        code = ride_cli_report(r, res, series, s.v.a + s.v.b);
+    if (r->out_dir && !(code = ride_cli_report(r, res, series, s.v.a + s.v.b))) {
+        const int committed = tirenv_outdir_commit(staged, &diag);
+        staged = NULL;
+        if (committed)
+            code = cli_fail(committed, &diag);
+    }
 done:
+    tirenv_outdir_abort(staged);
     for (size_t i = 0; i < RIDE_MAX_MODELS; ++i) {
         free(in[i].w[0]);
         free(in[i].w[1]);

@@ -31,6 +31,7 @@ tirenv_tire tirenv_tire_default(void)
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
+        .width = 0.38,  /* 14.9 in section width, the 380 of 380/85R28 */
         /* A radial 14.9R28 at 1.2 bar (data/tires/default.tir gives each value's reasoning):
          * 40 mm lugs of rubber, stiff against the foundation (sidewalls + air), which takes
          * the deflection; T = p*b*R = 120 kPa * 0.34 m * 0.64 m. */
@@ -101,6 +102,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(s->R0 > 0 && isfinite(s->R0)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "UNLOADED_RADIUS",
                             "must be a positive length in m, got %g", s->R0);
+    if (!(tire->width >= 0 && isfinite(tire->width)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "WIDTH",
+                            "must be a length >= 0 in m, got %g", tire->width);
     if (!(s->c_r > 0 && isfinite(s->c_r)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "RADIAL_STIFFNESS",
                             "must be positive (N/m per rad), got %g", s->c_r);

@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -159,14 +160,91 @@ int tirenv_csv__fields(tirenv_csv__reader *r, const char *const names[], size_t 
     return TIRENV_OK;
 }
 
+/* Exact powers of ten: every one up to 1e22 is a double (5^22 < 2^53). */
+static const double exact_pow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+/* Clinger's fast path: a plain decimal [+-]digits[.digits][e[+-]digits] whose digits make an
+ * integer w <= 2^53 with a power of ten 10^k, |k| <= 22, is w * 10^k or w / 10^-k: one
+ * correctly rounded operation on two exact doubles, so exactly strtod's value. Returns 0
+ * for anything else (more digits, larger powers, hexadecimal, inf, nan, malformed text),
+ * which strtod then parses or refuses as before. */
+static int decimal_fast(const char *s, double *out)
+{
+    const char *p = s;
+    const int neg = *p == '-';
+    if (*p == '-' || *p == '+')
+        ++p;
+    uint64_t w = 0;
+    int digits = 0, frac = 0, any = 0;
+    for (; *p >= '0' && *p <= '9'; ++p, any = 1)
+        if (w || *p != '0') {
+            if (++digits > 19)
+                return 0;
+            w = 10 * w + (uint64_t)(*p - '0');
+        }
+    if (*p == '.')
+        for (++p; *p >= '0' && *p <= '9'; ++p, any = 1) {
+            ++frac;
+            if (w || *p != '0') {
+                if (++digits > 19)
+                    return 0;
+                w = 10 * w + (uint64_t)(*p - '0');
+            }
+        }
+    if (!any)
+        return 0;
+    int k = 0;
+    if (*p == 'e' || *p == 'E') {
+        ++p;
+        const int eneg = *p == '-';
+        if (*p == '-' || *p == '+')
+            ++p;
+        if (!(*p >= '0' && *p <= '9'))
+            return 0;
+        for (; *p >= '0' && *p <= '9'; ++p) {
+            if (k > 10000)
+                return 0;
+            k = 10 * k + (*p - '0');
+        }
+        k = eneg ? -k : k;
+    }
+    if (*p != '\0' || w > ((uint64_t)1 << 53))
+        return 0;
+    k -= frac;
+    double v;
+    if (w == 0)
+        v = 0;
+    else if (k >= 0 && k <= 22)
+        v = (double)w * exact_pow10[k];
+    else if (k < 0 && k >= -22)
+        v = (double)w / exact_pow10[-k];
+    else
+        return 0;
+    *out = neg ? -v : v;
+    return 1;
+}
+
+int tirenv_csv__parse_double(const char *s, double *out)
+{
+    if (decimal_fast(s, out))
+        return 0;
+    char *end;
+    const double v = strtod(s, &end);
+    if (end == s || *end)
+        return -1;
+    *out = v;
+    return 0;
+}
+
 int tirenv_csv__number(const tirenv_csv__reader *r, const tirenv_csv__field *f,
                        const char *name, double *out)
 {
     if (f->text[0] == '\0')
         return tirenv_csv__fail(r, f->column, name, "expected a number, got an empty field");
-    char *end;
-    const double v = strtod(f->text, &end);
-    if (end == f->text || *end)
+    double v;
+    if (tirenv_csv__parse_double(f->text, &v))
         return tirenv_csv__fail(r, f->column, name, "expected a number, got '%.60s'", f->text);
     /* Overflow gives infinity; underflow to a denormal or 0 is a fine small number. */
     if (!isfinite(v))

@@ -59,6 +59,11 @@ int tirenv_csv__header(tirenv_csv__reader *r, const char *const names[], size_t 
 int tirenv_csv__fields(tirenv_csv__reader *r, const char *const names[], size_t n,
                        tirenv_csv__field f[]);
 
+/* strtod(s) that must take the whole of s: 0 with *out set, or -1 (empty, trailing text).
+ * Plain decimals of at most 19 digits with powers of ten up to 22 (what CSV files hold) take
+ * an exact fast path, several times faster than strtod and bit for bit the same value. */
+int tirenv_csv__parse_double(const char *s, double *out);
+
 /* strtod with an end-pointer check; refuses empty text, trailing characters, NaN, infinity
  * and overflow. */
 int tirenv_csv__number(const tirenv_csv__reader *r, const tirenv_csv__field *f,

@@ -62,8 +62,17 @@ int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *
         return status;
     tirenv_outfile_comment(&f, comment);
     int bad = fprintf(f.fp, "%s\n", curve_header) < 0;
-    for (size_t k = 0; k < c->n && !bad; k++)
-        bad = fprintf(f.fp, "%.17g,%.17g,%.17g\n", c->x_N[k], c->x[k], c->h[k]) < 0;
+    for (size_t k = 0; k < c->n && !bad; k++) {
+        /* As "%.17g,%.17g,%.17g\n", through the faster formatter. */
+        char row[3 * TIRENV_FMT_G_SIZE], *p = row;
+        p += tirenv_fmt_g(c->x_N[k], 17, p);
+        *p++ = ',';
+        p += tirenv_fmt_g(c->x[k], 17, p);
+        *p++ = ',';
+        p += tirenv_fmt_g(c->h[k], 17, p);
+        *p++ = '\n';
+        bad = fwrite(row, 1, (size_t)(p - row), f.fp) != (size_t)(p - row);
+    }
     if (bad) {
         const int e = errno;
         tirenv_outfile_abort(&f);

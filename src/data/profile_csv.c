@@ -15,7 +15,6 @@ static const char *const names[FIELDS] = {"x_m", "z_m"};
 
 typedef struct {
     double *x, *z;         /* vertices, m */
-    size_t *line;          /* file line of each vertex, for validation errors */
     size_t n, cap;
 } rows;
 
@@ -33,10 +32,6 @@ static int rows_grow(rows *r)
     if (!z)
         return TIRENV_ENOMEM;
     r->z = z;
-    size_t *line = realloc(r->line, cap * sizeof *line);
-    if (!line)
-        return TIRENV_ENOMEM;
-    r->line = line;
     r->cap = cap;
     return TIRENV_OK;
 }
@@ -58,9 +53,10 @@ static int read_row(tirenv_csv__reader *rd, rows *r, char prev_x[32])
         return tirenv_error(rd->diag, TIRENV_ENOMEM, rd->file, rd->line, "", "out of memory");
     r->x[r->n] = v[0];
     r->z[r->n] = v[1];
-    r->line[r->n] = rd->line;
     r->n++;
-    snprintf(prev_x, 32, "%s", f[0].text);
+    const size_t len = strnlen(f[0].text, 31);  /* snprintf(prev_x, 32, "%s"), faster */
+    memcpy(prev_x, f[0].text, len);
+    prev_x[len] = '\0';
     return TIRENV_OK;
 }
 
@@ -92,28 +88,42 @@ static int read_rows(const char *path, rows *r, tirenv_diag *diag)
     return status;
 }
 
+/* The file line of data row k (1-based), read again: only an error needs it, and a table of
+ * every row's line would cost more memory than the vertices (8 MB a million rows). */
+static size_t line_of_row(const char *path, size_t k)
+{
+    tirenv_csv__reader rd;
+    if (tirenv_csv__open(&rd, path, NULL))
+        return 0;
+    size_t line = 0;
+    for (size_t row = 0; row <= k && tirenv_csv__next(&rd) > 0; ++row)  /* row 0: header */
+        line = rd.line;
+    tirenv_csv__close(&rd);
+    return line;
+}
+
 /* After the rows parse, tirenv_profile_validate has the last word (e.g. three vertices at
- * one x); its vertex index is turned back into the file line. */
+ * one x); its vertex index is turned back into the file line. tirenv_profile_alloc
+ * validates too: it is asked first, and only a refusal runs the check that says why. */
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag)
 {
     *out = NULL;
     rows r = {0};
     int status = read_rows(path, &r, diag);
-    if (status == TIRENV_OK) {
+    if (status == TIRENV_OK && !(*out = tirenv_profile_alloc(r.n, r.x, r.z))) {
         tirenv_diag d;
         tirenv_diag_clear(&d);
         if (tirenv_profile_validate(r.n, r.x, r.z, &d) != TIRENV_OK) {
-            const size_t line = d.line >= 1 && d.line <= r.n ? r.line[d.line - 1] : 0;
+            const size_t line = d.line >= 1 && d.line <= r.n ? line_of_row(path, d.line) : 0;
             const char *field = strcmp(d.field, "x") == 0   ? "x_m"
                                 : strcmp(d.field, "z") == 0 ? "z_m"
                                                             : d.field;
             status = tirenv_error(diag, TIRENV_EPARSE, path, line, field, "%s", d.message);
+        } else {
+            status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
         }
     }
-    if (status == TIRENV_OK && !(*out = tirenv_profile_alloc(r.n, r.x, r.z)))
-        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
     free(r.x);
     free(r.z);
-    free(r.line);
     return status;
 }

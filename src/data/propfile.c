@@ -641,9 +641,12 @@ static int pf_check_paths(const pf_schema *s, const void *obj, const char *path,
     return TIRENV_OK;
 }
 
-static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *cwd)
+static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *cwd,
+                     const char *header)
 {
-    if (s->preamble)
+    if (header)
+        fputs(header, fp);
+    else if (s->preamble)
         s->preamble(fp);
     for (size_t k = 0; k < s->n_sections; k++) {
         const char *name = s->sections[k].name;
@@ -699,6 +702,12 @@ static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *
 int tirenv_propfile__write(const pf_schema *s, const char *path, const void *obj,
                            tirenv_diag *diag)
 {
+    return tirenv_propfile__write_headed(s, path, obj, NULL, diag);
+}
+
+int tirenv_propfile__write_headed(const pf_schema *s, const char *path, const void *obj,
+                                  const char *header, tirenv_diag *diag)
+{
     int status = s->check ? s->check(obj, diag) : TIRENV_OK;
     if (status != TIRENV_OK)
         return status;
@@ -710,6 +719,6 @@ int tirenv_propfile__write(const pf_schema *s, const char *path, const void *obj
     status = tirenv_outfile_open(&f, path, diag);
     if (status != TIRENV_OK)
         return status;
-    pf_print(s, f.fp, obj, cwd);
+    pf_print(s, f.fp, obj, cwd, header);
     return tirenv_outfile_commit(&f, diag);
 }

@@ -124,4 +124,8 @@ int tirenv_propfile__set(const tirenv_propfile__schema *s, void *obj, const char
 int tirenv_propfile__write(const tirenv_propfile__schema *s, const char *path,
                            const void *obj, tirenv_diag *diag);
 
+/* The same with header (if not NULL) written in place of the schema's preamble. */
+int tirenv_propfile__write_headed(const tirenv_propfile__schema *s, const char *path,
+                                  const void *obj, const char *header, tirenv_diag *diag);
+
 #endif

@@ -5,7 +5,6 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "data/sweep_impl.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -263,31 +262,6 @@ static int write_table(const char *path, const part *parts, size_t n, int keys, 
     return tirenv_outfile_commit(&f, diag);
 }
 
-/* Removes the staging directory after a failure (what merge put there: files, and the
- * logs/ and curves/ directories of files). */
-static void remove_stage(const char *stage)
-{
-    const char *subs[] = {"logs", "curves", ""};
-    for (size_t k = 0; k < 3; ++k) {
-        char path[1200];
-        snprintf(path, sizeof path, "%s/%s", stage, subs[k]);
-        DIR *d = opendir(path);
-        if (!d)
-            continue;
-        struct dirent *e;
-        while ((e = readdir(d))) {
-            char full[1500];
-            snprintf(full, sizeof full, "%s/%s", path, e->d_name);
-            if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-                (void)unlink(full);
-        }
-        closedir(d);
-        if (subs[k][0])
-            (void)rmdir(path);
-    }
-    (void)rmdir(stage);
-}
-
 static int merge_into(const char *stage, const part *parts, size_t n, size_t m,
                       tirenv_diag *diag)
 {
@@ -400,35 +374,18 @@ int tirenv_sweep_merge(const char *dir, size_t n, const char *const parts_dir[],
                 status = -state;
         }
     }
+    /* Written as a whole (tirenv_outdir): a staging directory beside dir, swapped into place
+     * once every file is there. A merge is not resumable (it only links or copies), so a
+     * killed one leaves nothing that the next run in that directory does not sweep away. */
     if (!status && state == 0) {
-        char stage[1024], parent[1024];
-        snprintf(parent, sizeof parent, "%s", dir);
-        char *slash = strrchr(parent, '/');
-        if (slash && slash != parent) {
-            *slash = '\0';
-            status = tirenv_mkdir_p(parent, diag);
-        }
-        /* A name of this process's own (mkdir, unlike mkdtemp, gives the usual mode). */
-        int made = -1;
-        for (unsigned k = 0; !status && made != 0 && k < 100; ++k) {
-            snprintf(stage, sizeof stage, "%s.merge.%ld.%u", dir, (long)getpid(), k);
-            made = mkdir(stage, 0777);
-            if (made != 0 && errno != EEXIST)
-                break;
-        }
-        if (!status && made != 0)
-            status = tirenv_error(diag, TIRENV_EIO, stage, 0, "",
-                                  "cannot create the directory to merge into: %s",
-                                  strerror(errno));
-        else if (!status) {
-            status = merge_into(stage, parts, n, m, diag);
-            if (!status && rename(stage, dir) != 0)
-                status = tirenv_error(diag, TIRENV_EIO, dir, 0, "",
-                                      "cannot move the merged sweep %s into place: %s", stage,
-                                      strerror(errno));
-            if (status)
-                remove_stage(stage);
-        }
+        tirenv_outdir *out = NULL;
+        status = tirenv_outdir_begin(dir, &out, diag);
+        if (!status)
+            status = merge_into(tirenv_outdir_path(out), parts, n, m, diag);
+        if (!status)
+            status = tirenv_outdir_commit(out, diag);
+        else
+            tirenv_outdir_abort(out);
     }
     free(rest);
     for (size_t k = 0; k < n; ++k)

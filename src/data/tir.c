@@ -3,11 +3,13 @@
  * file says which keys a tire has and where they go.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "data/propfile.h"
+#include "data/tir_impl.h"
 #include "tirenv/io.h"
 #include "tirenv/tirenv.h"
 
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The engine stores a NAME as an int. */
 _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must be int-sized");
@@ -37,6 +39,8 @@ static const tirenv_propfile__key tir_keys[] = {
     TIRENV_PROPFILE_CONVERTED_UNITS,
     TIR_REAL("DIMENSION", "UNLOADED_RADIUS", springs.R0, 1, 0, 0,
              "R0: free (unloaded) tire radius, m"),
+    TIR_REAL("DIMENSION", "WIDTH", width, 1, 0, 0,
+             "tire width, m: the default spread of tracks across it"),
     TIR_CAM("VERTICAL", "VERTICAL_STIFFNESS", cam.c_z, -1, 1, 0, TIRENV_CAM_C_Z,
              "cam: load / static deflection, N/m"),
     TIR_CAM("CONTACT_PATCH", "Q_RA1", cam.q_ra1, 0, 0, 0, TIRENV_CAM_Q_RA1,
@@ -91,7 +95,7 @@ static const tirenv_propfile__key tir_keys[] = {
 
 /* The sections tirenv reads. In a strict section an unknown key is a typo and an error; in
  * [DIMENSION], [VERTICAL] and [CONTACT_PATCH], which tirenv shares with MF-Tyre, the keys of
- * the other models (WIDTH, FNOMIN, Q_RB1...) are skipped. Any other section is skipped whole,
+ * the other models (FNOMIN, Q_RB1...) are skipped. Any other section is skipped whole,
  * unless its name starts with ENVELOPING_: those are tirenv's own, and an unknown one is a
  * typo, not MF-Tyre. */
 static const tirenv_propfile__section tir_sections[] = {
@@ -136,9 +140,16 @@ static const tirenv_propfile__schema tir_schema = {
     .given_mask = TIRENV_CAM_ALL,
 };
 
+/* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
+ * file must not inherit the tractor's 0.38 m. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
-    return tirenv_propfile__read(&tir_schema, path, tire, diag);
+    const double width = tire->width;
+    tire->width = 0;
+    const int status = tirenv_propfile__read(&tir_schema, path, tire, diag);
+    if (status)
+        tire->width = width;
+    return status;
 }
 
 /* "KEY=VALUE" or "SECTION.KEY=VALUE", for the keys that set a parameter (not [UNITS]). */
@@ -151,4 +162,27 @@ int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag)
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag)
 {
     return tirenv_propfile__write(&tir_schema, path, tire, diag);
+}
+
+/* The header names no tirenv version, so that a data set's tire.tir stays the same bytes
+ * from one version to the next as long as the tire does. */
+int tirenv_tir__write_noted(const char *path, const tirenv_tire *tire, const char *note,
+                            tirenv_diag *diag)
+{
+    char header[2048];
+    size_t n = (size_t)snprintf(header, sizeof header,
+                                "[MDI_HEADER]\n"
+                                "FILE_TYPE                = 'tir'\n"
+                                "FILE_VERSION             = 3.0\n"
+                                "FILE_FORMAT              = 'ASCII'\n");
+    /* Each line of the note as a '!' comment line. */
+    for (const char *p = note; p && *p && n < sizeof header;) {
+        const char *end = strchr(p, '\n');
+        const size_t len = end ? (size_t)(end - p) : strlen(p);
+        n += (size_t)snprintf(header + n, sizeof header - n, "! %.*s\n", (int)len, p);
+        p = end ? end + 1 : p + len;
+    }
+    if (n >= sizeof header)
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "the note is too long");
+    return tirenv_propfile__write_headed(&tir_schema, path, tire, header, diag);
 }

@@ -511,3 +511,89 @@ int tirenv_crg_track_reader_next(tirenv_crg_track_reader *r, double *u, double *
     *got = 1;
     return TIRENV_OK;
 }
+
+int tirenv_crg_track_reader_source(void *reader, double *u, double *z, int *got,
+                                   tirenv_diag *diag)
+{
+    return tirenv_crg_track_reader_next(reader, u, z, got, diag);
+}
+
+/* ---- several tracks a block at a time ---------------------------------------------------- */
+
+/* Each block of rows is read once for all the tracks: n tracks cost one read of the file. */
+struct tirenv_crg__tracks_reader {
+    const tirenv_crg *crg;
+    size_t n;
+    track *t;              /* [n] */
+    size_t block;          /* rows per block */
+    size_t first, len;     /* rows in vals: first .. first + len - 1 */
+    size_t next;           /* the row next returns */
+    double *vals;          /* [block * nch] */
+};
+
+void tirenv_crg__tracks_reader_free(tirenv_crg__tracks_reader *r)
+{
+    if (!r)
+        return;
+    free(r->t);
+    free(r->vals);
+    free(r);
+}
+
+int tirenv_crg__tracks_reader_open(const tirenv_crg *c, const tirenv_crg_track_spec *spec,
+                                   size_t n, const double v[],
+                                   tirenv_crg__tracks_reader **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_crg__tracks_reader *r = calloc(1, sizeof *r);
+    if (!r || !(r->t = calloc(n ? n : 1, sizeof *r->t))) {
+        free(r);
+        return tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
+    }
+    r->crg = c;
+    r->n = n;
+    r->block = block_rows(c);
+    int status = TIRENV_OK;
+    for (size_t k = 0; k < n && !status; ++k) {
+        tirenv_crg_track_spec sk = *spec;
+        if (v)
+            sk.v = v[k];
+        status = track_setup(c, &sk, &r->t[k], diag);
+    }
+    if (!status && !(r->vals = malloc(r->block * c->nch * sizeof *r->vals)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
+    if (status) {
+        tirenv_crg__tracks_reader_free(r);
+        return status;
+    }
+    *out = r;
+    return TIRENV_OK;
+}
+
+int tirenv_crg__tracks_reader_next(tirenv_crg__tracks_reader *r, double *u, double z[],
+                                   int *got, tirenv_diag *diag)
+{
+    const tirenv_crg *c = r->crg;
+    *got = 0;
+    if (r->next >= c->nu)
+        return TIRENV_OK;
+    if (r->next >= r->first + r->len) {
+        const size_t n = c->nu - r->next < r->block ? c->nu - r->next : r->block;
+        const int status = tirenv_crg__read_rows(c, r->next, n, r->vals, diag);
+        if (status)
+            return status;
+        r->first = r->next;
+        r->len = n;
+    }
+    const size_t i = r->next;
+    const double *row = r->vals + (i - r->first) * c->nch;
+    for (size_t k = 0; k < r->n; ++k) {
+        const int status = track_z(c, &r->t[k], i, row, &z[k], diag);
+        if (status)
+            return status;
+    }
+    *u = c->u0 + (double)i * c->du;
+    r->next++;
+    *got = 1;
+    return TIRENV_OK;
+}

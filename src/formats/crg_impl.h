@@ -104,4 +104,15 @@ int tirenv_crg__read_rows(const tirenv_crg *c, size_t first, size_t count, doubl
 /* The name a message gives channel col ("long section 3 (v = -0.5 m)", "slope"). */
 const char *tirenv_crg__channel_name(const tirenv_crg *c, size_t col, char *buf, size_t n);
 
+/* Several tracks of one file read together, a block of rows at a time (crg.c), for the
+ * profile-file reader of any format (profile_reader.c): tracks at v[n] (v NULL: spec->v), the
+ * rest of spec for each; the rows as tirenv_crg_track_reader gives them, with n heights. */
+typedef struct tirenv_crg__tracks_reader tirenv_crg__tracks_reader;
+int tirenv_crg__tracks_reader_open(const tirenv_crg *c, const tirenv_crg_track_spec *spec,
+                                   size_t n, const double v[],
+                                   tirenv_crg__tracks_reader **out, tirenv_diag *diag);
+int tirenv_crg__tracks_reader_next(tirenv_crg__tracks_reader *r, double *u, double z[],
+                                   int *got, tirenv_diag *diag);
+void tirenv_crg__tracks_reader_free(tirenv_crg__tracks_reader *r);
+
 #endif

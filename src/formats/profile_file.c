@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 #include "tirenv/io.h"
 #include "formats/numtext.h"
@@ -71,6 +72,13 @@ int tirenv_profile_detect(const char *path, tirenv_profile_format *f, tirenv_dia
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", strerror(errno));
+    /* fopen takes a directory; only the first read fails, with a bare "Is a directory". */
+    struct stat st;
+    if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(fp);
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "is a directory; expected a CSV, "
+                            "OpenCRG or RDF road file");
+    }
     enum { HEAD = 65536 };
     char *buf = malloc(HEAD);
     if (!buf) {

@@ -269,5 +269,6 @@ static const tirenv_model_type cam_type = {
     .set_network = NULL,
     .warnings = NULL,
     .note = NULL,
+    .tracks = TIRENV_TRACKS_MEAN,
 };
 const tirenv_model_type *tirenv_model_cam = &cam_type;

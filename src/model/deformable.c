@@ -211,6 +211,13 @@ void tirenv_deformable_set_profile(void *state, const tirenv_profile *p)
     st->prof = p;
 }
 
+int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *out,
+                             tirenv_diag *diag)
+{
+    deformable_state *st = state;
+    return st->ops->forces(st->elem, st->prof, x, z, out, diag);
+}
+
 int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 {
     deformable_state *st = state;

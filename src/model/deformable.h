@@ -43,5 +43,8 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
                           tirenv_diag *diag);
 int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag);
 void tirenv_deformable_set_profile(void *state, const tirenv_profile *p);
+/* The hub forces at (x, z) on the profile set, for the equilibrium over several tracks. */
+int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *out,
+                             tirenv_diag *diag);
 
 #endif

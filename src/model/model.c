@@ -4,15 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "model/model_impl.h"
-
-struct tirenv_model {
-    const tirenv_model_type *type;
-    void *state;
-    tirenv_tire tire;
-    double load;           /* N */
-    double z_flat;         /* flat-ground centre height at load, m */
-    int ready;             /* a profile and load are set */
-};
+#include "tirenv/nn.h"
 
 /* The table every command looks names up in: the physical models, the network, and the point
  * contact a ride compares them with. */
@@ -74,6 +66,8 @@ void tirenv_model_free(tirenv_model *m)
     if (!m)
         return;
     m->type->free(m->state);
+    tirenv_model__tracks_free(m);
+    tirenv_nn_free(m->nn);
     free(m);
 }
 
@@ -88,13 +82,48 @@ int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
                             "expected a network and R0 >= 0 m, got %s and %g",
                             nn ? "a network" : "none", R0);
-    return m->type->set_network(m->state, nn, R0, diag);
+    const int status = m->type->set_network(m->state, nn, R0, diag);
+    if (status)
+        return status;
+    /* Kept for the states of further tracks (tirenv_model_set_tracks), which are made later;
+     * the old tracks' states knew the old network, so they go. */
+    tirenv_nn *copy = tirenv_nn_clone(nn);
+    if (!copy)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    tirenv_nn_free(m->nn);
+    m->nn = copy;
+    m->nn_R0 = R0;
+    tirenv_model__tracks_free(m);
+    m->n_tracks = 0;
+    return TIRENV_OK;
 }
 
+void *tirenv_model__track_state(const tirenv_model *m)
+{
+    void *state = m->type->alloc(&m->tire);
+    double load;
+    if (state && m->nn && m->type->set_network(state, m->nn, m->nn_R0, NULL) != TIRENV_OK) {
+        m->type->free(state);
+        return NULL;
+    }
+    if (state && m->have_l_c &&
+        m->type->load_for_contact_length(state, m->l_c, &load, NULL) != TIRENV_OK) {
+        m->type->free(state);
+        return NULL;
+    }
+    if (state && m->type->set_extrapolate)
+        m->type->set_extrapolate(state, m->extrapolate);
+    return state;
+}
+
+/* Every track's state is told, those that exist and those made later
+ * (tirenv_model__track_state). */
 void tirenv_model_set_extrapolate(tirenv_model *m, int allow)
 {
+    m->extrapolate = allow != 0;
     if (m->type->set_extrapolate)
-        m->type->set_extrapolate(m->state, allow != 0);
+        m->type->set_extrapolate(m->state, m->extrapolate);
+    tirenv_model__tracks_extrapolate(m);
 }
 
 double tirenv_model_load(const tirenv_model *m) { return m->ready ? m->load : NAN; }
@@ -117,10 +146,17 @@ int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_dia
     return m->type->flat(m->state, load, out, diag);
 }
 
+/* The network remembers the contact length it was given (model.h): a further track's state is
+ * told the same (tirenv_model__track_state), and so are those that exist. */
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
                                          tirenv_diag *diag)
 {
-    return m->type->load_for_contact_length(m->state, l_c, load, diag);
+    const int status = m->type->load_for_contact_length(m->state, l_c, load, diag);
+    if (status)
+        return status;
+    m->have_l_c = 1;
+    m->l_c = l_c;
+    return tirenv_model__tracks_contact_length(m, l_c, diag);
 }
 
 /* The enveloping models assume the centre clears the ground it rolls over. */
@@ -137,11 +173,18 @@ static int below_centre(const tirenv_profile *profile, double z_flat, tirenv_dia
     return TIRENV_OK;
 }
 
+int tirenv_model__check_ground(const tirenv_model *m, const tirenv_profile *p,
+                               tirenv_diag *diag)
+{
+    return below_centre(p, m->z_flat, diag);
+}
+
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag)
 {
     tirenv_flat flat;
     m->ready = 0;
+    m->n_tracks = 0;
     int status = tirenv_model_flat(m, load, &flat, diag);
     if (status || (status = below_centre(profile, flat.z_flat, diag)))
         return status;
@@ -149,6 +192,7 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
     m->load = load;
     m->z_flat = flat.z_flat;
     m->ready = status == TIRENV_OK;
+    m->n_tracks = m->ready ? 1 : 0;
     return status;
 }
 
@@ -163,6 +207,12 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
     if (!m->ready)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "no profile and load set (call tirenv_model_set first)");
+    if (m->n_tracks > 1) {
+        m->ready = 0;
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "set with %zu tracks: use tirenv_model_set_track_profiles",
+                            m->n_tracks);
+    }
     int status = below_centre(profile, m->z_flat, diag);
     if (!status && m->type->set_profile)
         m->type->set_profile(m->state, profile);
@@ -201,7 +251,8 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
     out->x = x;  /* as the header promises, on failure too */
     if (!m->ready)
         return not_set(diag);
-    const int status = m->type->eval(m->state, x, out, diag);
+    const int status = m->n_tracks > 1 ? tirenv_model__tracks_eval(m, x, out, diag)
+                                       : m->type->eval(m->state, x, out, diag);
     out->x = x;
     return at_position(m, x, status, diag);
 }
@@ -209,6 +260,13 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
                           size_t *failed, tirenv_diag *diag)
 {
+    if (m->ready && m->n_tracks > 1 && n > 0) {
+        size_t k = 0;
+        const int status = tirenv_model__tracks_envelope(m, n, x, out, &k, diag);
+        if (status && failed)
+            *failed = k;
+        return at_position(m, status ? x[k < n ? k : 0] : 0, status, diag);
+    }
     if (m->type->envelope && n > 0) {
         if (!m->ready) {
             if (failed)

@@ -4,7 +4,9 @@
 #ifndef TIRENV_MODEL_IMPL_H
 #define TIRENV_MODEL_IMPL_H
 
+#include "core/equilibrium.h"
 #include "tirenv/model.h"
+#include "tirenv/tracks.h"
 
 struct tirenv_model_type {
     const char *name;
@@ -40,7 +42,55 @@ struct tirenv_model_type {
     /* Optional: the warnings and the note of the last set (tirenv_model_warnings). */
     const char *(*warnings)(const void *state);
     const char *(*note)(const void *state);
+    /* How several tracks across the width combine (tirenv/tracks.h, docs/models.md section
+     * 13). */
+    tirenv_tracks_rule tracks;
+    /* With TIRENV_TRACKS_EQUILIBRIUM: the hub forces with the centre at (x, z) (m) on the
+     * profile set, F_z, dF_z/dz, F_x and the contacts of one evaluation in *out (out->z = z),
+     * for the equilibrium over the tracks. */
+    int (*forces)(void *state, double x, double z, tirenv_eq_point *out, tirenv_diag *diag);
 };
+
+struct tirenv_model__tracks;  /* several tracks (tracks.c) */
+
+/* A model instance (model.c, tracks.c): the type's state and what the driver keeps. */
+struct tirenv_model {
+    const tirenv_model_type *type;
+    void *state;
+    tirenv_tire tire;
+    double load;           /* N */
+    double z_flat;         /* flat-ground centre height at load, m */
+    int ready;             /* a profile and load are set */
+    size_t n_tracks;       /* distinct tracks set: 1 by tirenv_model_set, 0 before any */
+    struct tirenv_model__tracks *tracks; /* the other tracks' states, NULL until needed */
+    /* What a new track's state must be told that the first one was: the network (a copy) and
+     * the R0 of its x_N, and the last contact length given (the network remembers it). */
+    struct tirenv_nn *nn;
+    double nn_R0;          /* m */
+    int have_l_c;
+    double l_c;            /* m */
+    int extrapolate;       /* tirenv_model_set_extrapolate's, given to every track's state */
+};
+
+/* Private to model.c and tracks.c: a new type state for a further track, told what the first
+ * was told (network, contact length, extrapolation); NULL if out of memory or the network
+ * fails. */
+void *tirenv_model__track_state(const tirenv_model *m);
+
+/* model.c: the check of tirenv_model_set on a further track's profile, against m->z_flat. */
+int tirenv_model__check_ground(const tirenv_model *m, const tirenv_profile *p,
+                               tirenv_diag *diag);
+
+/* tracks.c: the driver's hooks for several tracks (m->n_tracks > 1). */
+void tirenv_model__tracks_free(tirenv_model *m);  /* and m->tracks = NULL */
+/* The contact length just given to the first track's state, given to the others too. */
+int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag *diag);
+/* Whether the model may extrapolate (m->extrapolate), given to the others too. */
+void tirenv_model__tracks_extrapolate(tirenv_model *m);
+int tirenv_model__tracks_eval(tirenv_model *m, double x, tirenv_point *out,
+                              tirenv_diag *diag);
+int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],
+                                  tirenv_point out[], size_t *failed, tirenv_diag *diag);
 
 /* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
  * R0 from its centre; 5 % covers a tread standing out of the free circle. */

@@ -416,5 +416,6 @@ static const tirenv_model_type nn_type = {
     .set_extrapolate = nn_model_set_extrapolate,
     .warnings = nn_model_warnings,
     .note = nn_model_note,
+    .tracks = TIRENV_TRACKS_MEAN,
 };
 const tirenv_model_type *tirenv_model_nn = &nn_type;

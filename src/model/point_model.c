@@ -103,5 +103,6 @@ static const tirenv_model_type point_type = {
     .set_network = NULL,
     .warnings = NULL,
     .note = NULL,
+    .tracks = TIRENV_TRACKS_MEAN,
 };
 const tirenv_model_type *tirenv_model_point = &point_type;

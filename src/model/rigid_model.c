@@ -95,5 +95,6 @@ static const tirenv_model_type rigid_type = {
     .set_network = NULL,
     .warnings = NULL,
     .note = NULL,
+    .tracks = TIRENV_TRACKS_HIGHEST,
 };
 const tirenv_model_type *tirenv_model_rigid = &rigid_type;

@@ -1,5 +1,6 @@
 /* The ring reference tire as a tirenv_model_type (docs/models.md section 5). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -185,13 +186,24 @@ static void *ring_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &ring_ops);
 }
 
+/* What tirenv fit identifies on rig data (docs/models.md section 8.4): the foundation and the
+ * tread by default, the belt's bending stiffness and pretension as the optional ones. The
+ * thickness and the discretisation are settings. */
+static const tirenv_model_param ring_params[] = {
+    {"FOUNDATION_STIFFNESS", offsetof(tirenv_tire, ring.k_f), 0},
+    {"TREAD_STIFFNESS", offsetof(tirenv_tire, ring.k_t), 0},
+    {"BELT_BENDING_STIFFNESS", offsetof(tirenv_tire, ring.EI), 0},
+    {"BELT_PRETENSION", offsetof(tirenv_tire, ring.T), 0},
+};
+
 static const tirenv_model_type ring_type = {
     .name = "ring",
     .summary = "flexible ring and tread: the reference tire",
-    .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS | TIRENV_MODEL_EQUILIBRIUM,
-    .params = NULL,
-    .n_params = 0,
-    .n_params_max = 0,
+    .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS |
+             TIRENV_MODEL_EQUILIBRIUM,
+    .params = ring_params,
+    .n_params = 2,
+    .n_params_max = 4,
     .alloc = ring_model_alloc,
     .free = tirenv_deformable_free,
     .flat = tirenv_deformable_flat,
@@ -204,5 +216,7 @@ static const tirenv_model_type ring_type = {
     .set_network = NULL,
     .warnings = NULL,
     .note = NULL,
+    .tracks = TIRENV_TRACKS_EQUILIBRIUM,
+    .forces = tirenv_deformable_forces,
 };
 const tirenv_model_type *tirenv_model_ring = &ring_type;

@@ -108,5 +108,7 @@ static const tirenv_model_type springs_type = {
     .set_network = NULL,
     .warnings = NULL,
     .note = NULL,
+    .tracks = TIRENV_TRACKS_EQUILIBRIUM,
+    .forces = tirenv_deformable_forces,
 };
 const tirenv_model_type *tirenv_model_springs = &springs_type;

@@ -10,9 +10,11 @@
  * (an allocation of the window's few hundred vertices) costs O(1) per position amortised, and
  * the memory is O(r / vertex spacing), whatever the road's length. The vertices come from a
  * callback (tirenv_vertex_source), so the core knows no file format: the CSV reader is one
- * source, in the auxiliary layer.
+ * source, in the auxiliary layer. Several tracks across the tire's width (tracks.h) come as
+ * rows, one x and a height per track (tirenv_row_source), and make one window per track.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/stream.h"
+#include "tirenv/tracks.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -20,7 +22,9 @@
 #include <string.h>
 
 typedef struct {
-    double *x, *z;         /* vertices, m */
+    size_t tracks;         /* heights per vertex */
+    double *x;             /* vertices, m */
+    double **z;            /* z[k][i]: track k's height at x[i], m */
     size_t n, cap;
     int bof;               /* x[0] is the file's first vertex */
     int eof;               /* the file's last vertex has been read */
@@ -39,29 +43,42 @@ static int window_grow(window *w)
     if (!x)
         return TIRENV_ENOMEM;
     w->x = x;
-    double *z = realloc(w->z, cap * sizeof *z);
-    if (!z)
-        return TIRENV_ENOMEM;
-    w->z = z;
+    for (size_t k = 0; k < w->tracks; ++k) {
+        double *z = realloc(w->z[k], cap * sizeof *z);
+        if (!z)
+            return TIRENV_ENOMEM;
+        w->z[k] = z;
+    }
     w->cap = cap;
     return TIRENV_OK;
 }
 
+static void window_free(window *w)
+{
+    free(w->x);
+    for (size_t k = 0; w->z && k < w->tracks; ++k)
+        free(w->z[k]);
+    free(w->z);
+}
+
 /* The source and what the sweep checks of it. */
 typedef struct {
-    tirenv_vertex_source next;
+    tirenv_row_source next;
     void *ctx;
+    double *row;           /* the heights of one row, [tracks] */
 } vertex_source;
 
 /* The order a profile needs (x non-decreasing, at most two vertices at one x) is checked as
  * each vertex comes, against the last one taken: a source other than the checked CSV reader
  * may hand anything. */
-static int vertex_check(window *w, double x, double z, tirenv_diag *diag)
+static int vertex_check(window *w, double x, const double z[], tirenv_diag *diag)
 {
     const size_t k = w->read + 1;  /* 1-based index of this vertex in the source */
-    if (!isfinite(x) || !isfinite(z))
-        return tirenv_error(diag, TIRENV_EINVAL, "", k, isfinite(x) ? "z" : "x",
-                            "vertex %zu of the source is not finite (x %g m, z %g m)", k, x, z);
+    for (size_t j = 0; j < w->tracks; ++j)
+        if (!isfinite(x) || !isfinite(z[j]))
+            return tirenv_error(diag, TIRENV_EINVAL, "", k, isfinite(x) ? "z" : "x",
+                                "vertex %zu of the source is not finite (x %g m, z %g m%s)", k,
+                                x, z[j], w->tracks > 1 ? " on one of its tracks" : "");
     if (w->read > 0 && x < w->x_last)
         return tirenv_error(diag, TIRENV_EINVAL, "", k, "x",
                             "vertex %zu of the source goes back: x %.9g m after %.9g m", k, x,
@@ -84,7 +101,8 @@ static void window_drop(window *w, double x_keep)
     if (lo == 0)
         return;
     memmove(w->x, w->x + lo, (w->n - lo) * sizeof *w->x);
-    memmove(w->z, w->z + lo, (w->n - lo) * sizeof *w->z);
+    for (size_t k = 0; k < w->tracks; ++k)
+        memmove(w->z[k], w->z[k] + lo, (w->n - lo) * sizeof *w->z[k]);
     w->n -= lo;
     w->bof = 0;
 }
@@ -97,11 +115,11 @@ static int window_fill(window *w, const vertex_source *in, double x_keep, double
 {
     window_drop(w, x_keep);
     while (!w->eof && !(w->n > 0 && w->x[w->n - 1] > x_need)) {
-        double x, z;
+        double x;
         int got = 0;
-        int status = in->next(in->ctx, &x, &z, &got, diag);
+        int status = in->next(in->ctx, &x, in->row, &got, diag);
         if (!status && got)
-            status = vertex_check(w, x, z, diag);
+            status = vertex_check(w, x, in->row, diag);
         if (status)
             return status;
         if (!got) {
@@ -114,7 +132,8 @@ static int window_fill(window *w, const vertex_source *in, double x_keep, double
                 return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
         }
         w->x[w->n] = x;
-        w->z[w->n] = z;
+        for (size_t k = 0; k < w->tracks; ++k)
+            w->z[k][w->n] = in->row[k];
         w->n++;
         w->read++;
         if (w->n > w->max)
@@ -123,11 +142,22 @@ static int window_fill(window *w, const vertex_source *in, double x_keep, double
     return TIRENV_OK;
 }
 
-/* The window as a profile, handed to the model; the previous one is freed once replaced. */
-static int window_profile(const window *w, tirenv_profile **p, tirenv_diag *diag)
+/* The window as a profile per track, handed to the model; the previous ones are freed once
+ * replaced. */
+static int window_profile(const window *w, tirenv_profile *p[], tirenv_diag *diag)
 {
-    *p = tirenv_profile_alloc(w->n, w->x, w->z);
-    return *p ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    for (size_t k = 0; k < w->tracks; ++k)
+        if (!(p[k] = tirenv_profile_alloc(w->n, w->x, w->z[k])))
+            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    return TIRENV_OK;
+}
+
+static void profiles_free(tirenv_profile *p[], size_t n)
+{
+    for (size_t k = 0; k < n; ++k) {
+        tirenv_profile_free(p[k]);
+        p[k] = NULL;
+    }
 }
 
 size_t tirenv_positions_count(double x_from, double x_to, double dx)
@@ -142,29 +172,45 @@ size_t tirenv_positions_count(double x_from, double x_to, double dx)
     return n;
 }
 
-int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,
-                        double x_from, double x_to, double dx, double load,
-                        tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,
-                        tirenv_diag *diag)
+int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double weights[],
+                               tirenv_row_source source, void *source_ctx, double x_from,
+                               double x_to, double dx, double load, tirenv_point_sink sink,
+                               void *ctx, tirenv_stream_stats *stats, tirenv_diag *diag)
 {
-    const vertex_source src = {source, source_ctx};
-    const vertex_source *in = &src;
     if (stats)
         *stats = (tirenv_stream_stats){0};
+    if (n_tracks == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tracks", "expected at least one track");
     if (!(isfinite(x_from) && isfinite(x_to) && dx > 0 && isfinite(dx) && x_to >= x_from))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
                             "expected dx > 0 and x_to >= x_from, got dx %g m from %g to %g m",
                             dx, x_from, x_to);
     if (!((x_to - x_from) / dx < 1e15))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx", "too many positions");
-    window w = {.bof = 1};
-    tirenv_profile *p = NULL, *next = NULL;
+    window w = {.bof = 1, .tracks = n_tracks};
+    vertex_source src = {source, source_ctx, NULL};
+    const vertex_source *in = &src;
+    /* The window's profiles, the next ones being built, and the same as const for the model. */
+    tirenv_profile **p = calloc(3 * n_tracks, sizeof *p);
+    tirenv_profile **next = p ? p + n_tracks : NULL;
+    const tirenv_profile **use = p ? (const tirenv_profile **)(p + 2 * n_tracks) : NULL;
+    w.z = calloc(n_tracks, sizeof *w.z);
+    src.row = malloc(n_tracks * sizeof *src.row);
+    if (!p || !w.z || !src.row) {
+        free(p);
+        window_free(&w);
+        free(src.row);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
     size_t rebuilds = 0, done = 0;
     /* One vertex is enough to set the load and find z_flat; only then is the reach at that
      * load known (the cam's tandem base depends on it), and the window is read to fit it. */
     int status = window_fill(&w, in, -INFINITY, -INFINITY, diag);
-    if (!status && !(status = window_profile(&w, &p, diag)))
-        status = tirenv_model_set(m, p, load, diag);
+    if (!status && !(status = window_profile(&w, p, diag))) {
+        for (size_t k = 0; k < n_tracks; ++k)
+            use[k] = p[k];
+        status = tirenv_model_set_tracks(m, n_tracks, use, weights, load, diag);
+    }
     const double r = tirenv_model_reach(m), ahead = 2 * r;
     const size_t n = status ? 0 : tirenv_positions_count(x_from, x_to, dx);
     int have_window = 0;
@@ -172,12 +218,17 @@ int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *sour
         const double x = x_from + (double)k * dx;
         if (!have_window || !(w.eof || w.x[w.n - 1] > x + r)) {
             if ((status = window_fill(&w, in, x - r, x + r + ahead, diag)) ||
-                (status = window_profile(&w, &next, diag)) ||
-                (status = tirenv_model_set_profile(m, next, diag)))
+                (status = window_profile(&w, next, diag)))
                 break;
-            tirenv_profile_free(p);
-            p = next;
-            next = NULL;
+            for (size_t j = 0; j < n_tracks; ++j)
+                use[j] = next[j];
+            if ((status = tirenv_model_set_track_profiles(m, n_tracks, use, diag)))
+                break;
+            profiles_free(p, n_tracks);
+            for (size_t j = 0; j < n_tracks; ++j) {
+                p[j] = next[j];
+                next[j] = NULL;
+            }
             have_window = 1;
             ++rebuilds;
         }
@@ -192,11 +243,34 @@ int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *sour
         *stats = (tirenv_stream_stats){.positions = done, .vertices_read = w.read,
                                        .window_max = w.max, .rebuilds = rebuilds};
     /* The model must not keep pointing at a freed window: it is left unset. */
-    if (p && m)
+    if (p[0] && m)
         tirenv_model_set_profile(m, NULL, NULL);
-    tirenv_profile_free(next);
-    tirenv_profile_free(p);
-    free(w.x);
-    free(w.z);
+    profiles_free(next, n_tracks);
+    profiles_free(p, n_tracks);
+    free(p);
+    window_free(&w);
+    free(src.row);
     return status;
+}
+
+/* One track: the vertex source read as rows of one height. */
+typedef struct {
+    tirenv_vertex_source next;
+    void *ctx;
+} one_track;
+
+static int one_track_row(void *ctx, double *x, double z[], int *got, tirenv_diag *diag)
+{
+    const one_track *o = ctx;
+    return o->next(o->ctx, x, &z[0], got, diag);
+}
+
+int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,
+                        double x_from, double x_to, double dx, double load,
+                        tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,
+                        tirenv_diag *diag)
+{
+    one_track o = {source, source_ctx};
+    return tirenv_model_stream_tracks(m, 1, NULL, one_track_row, &o, x_from, x_to, dx, load,
+                                      sink, ctx, stats, diag);
 }

@@ -86,6 +86,13 @@ static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
     c->r = r;
     for (size_t w = 0; w < c->jobs; ++w)
         c->models[w] = NULL;
+    if (!(c->models[0] = tirenv_model_alloc(c->type, &c->tire))) {
+        /* A trial step out of the physical range (the ring's belt buckling on its
+         * foundation, say) is a step the trust region must refuse, not the end of the fit:
+         * a residual of 1 m at every point is worse than any curve of the model. */
+        gsl_vector_set_all(r, 1.0);
+        return GSL_SUCCESS;
+    }
     const size_t jobs = c->last_pass >= 1e-6 * PARALLEL_PASS_US ? c->jobs : 1;
     const double t0 = tirenv_study__wall_seconds();
     const int status = tirenv_parallel_for(c->n_cases, jobs, case_residuals, NULL, c,
@@ -128,6 +135,11 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "the %s model has %zu parameters; a fit takes at most %d",
                             tirenv_model_type_name(type), c.n_params, TIRENV_FIT_MAX_PARAMS);
+    /* The start must be a tire the model takes: out of range, every residual would read as
+     * a refused step (residuals()) and the fit would report 1 m as its result. */
+    const int start_ok = tirenv_tire_check(tire, diag);
+    if (start_ok)
+        return start_ok;
     size_t n = 0;
     for (size_t i = 0; i < ds->n; ++i)
         if (ds->cases[i].split == split) {

@@ -46,7 +46,8 @@ static void describe_models(FILE *fp, const tirenv_compare_settings *s,
                     "ELLIPS_LENGTH %.4g, ELLIPS_HEIGHT %.4g, ELLIPS_ORDER %.4g, "
                     "VERTICAL_STIFFNESS %.4g N/m",
                     cp->shift, cp->length, cp->height, cp->order, cp->c_z);
-            if (s->tire_label)
+            /* As the reference it keeps the tire that simulated the data. */
+            if (s->tire_label && (int)j != r->reference_model)
                 fprintf(fp, " (`%s`)", s->tire_label);
         } else if (strcmp(name, "ring") == 0) {
             fputs("the flexible-ring reference tire (docs/models.md section 5) with the tire file's "

@@ -18,7 +18,8 @@ tirenv_study_settings tirenv_study_default(void)
     return (tirenv_study_settings){.data_dir = NULL, .data_label = NULL, .out_dir = "out/study",
                                    .tire = tirenv_tire_default(), .tire_label = NULL,
                                    .trainer = "lm", .seed = 1, .seeds = 20,
-                                   .input = TIRENV_NN_INPUT_EVEN, .simulated_by_ring = 1,
+                                   .input = TIRENV_NN_INPUT_EVEN,
+                                   .simulated_by = tirenv_model_ring,
                                    .images = 1, .jobs = 1, .progress = NULL,
                                    .progress_ctx = NULL};
 }
@@ -185,16 +186,72 @@ static double load_at(const tirenv_dataset *ds, double l_c)
     return lo_G + (hi_G - lo_G) * (l_c - lo_l) / (hi_l - lo_l);
 }
 
-/* A grid of cleats over the data set's ranges, every fifth one for early stopping. */
-static const double grid_l_c[] = {0.28, 0.33, 0.38, 0.43};
-static const double grid_L[] = {0.05, 0.10, 0.15, 0.20, 0.25, 0.30};
-static const double grid_H[] = {0.025, 0.05, 0.075, 0.10};
-enum { N_GRID = 4 * 6 * 4 };
+/* A grid of cleats over the data set's ranges, every fifth one for early stopping: the data
+ * set's contact lengths (GRID_LC evenly from the shortest to the longest if it has more), and
+ * GRID_L lengths and GRID_H heights evenly over its ranges; for the tractor set 4 x 6 x 4 =
+ * 96 cleats, 0.28-0.43 m, 0.05-0.30 m, 0.025-0.10 m. Values are rounded to the micrometre, so
+ * that 0.15 m is the double that reads as 0.15. */
+enum { GRID_LC = 6, GRID_L = 6, GRID_H = 4, GRID_MAX = GRID_LC * GRID_L * GRID_H };
 
-/* Grid case k, with the springs model of the worker running it. */
+typedef struct {
+    double l_c[GRID_LC], L[GRID_L], H[GRID_H];
+    size_t n_l_c;
+    double L_min, L_max, H_min, H_max;  /* the data set's ranges, m */
+} grid_design;
+
+static double micrometres(double v) { return round(v * 1e6) / 1e6; }
+
+static void even(double lo, double hi, size_t n, double out[])
+{
+    for (size_t k = 0; k < n; ++k)
+        out[k] = micrometres(n > 1 ? lo + (hi - lo) * (double)k / (double)(n - 1) : lo);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static void grid_of(const tirenv_dataset *ds, grid_design *g)
+{
+    double l_c[GRID_LC + 1];
+    size_t n = 0;
+    double lc_min = INFINITY, lc_max = -INFINITY;
+    g->L_min = g->H_min = INFINITY;
+    g->L_max = g->H_max = -INFINITY;
+    for (size_t i = 0; i < ds->n; ++i) {
+        const tirenv_case *c = &ds->cases[i];
+        lc_min = fmin(lc_min, c->contact_length);
+        lc_max = fmax(lc_max, c->contact_length);
+        g->L_min = fmin(g->L_min, c->L);
+        g->L_max = fmax(g->L_max, c->L);
+        g->H_min = fmin(g->H_min, c->H);
+        g->H_max = fmax(g->H_max, c->H);
+        size_t k = 0;
+        while (k < n && l_c[k] != c->contact_length)
+            ++k;
+        if (k == n && n <= GRID_LC)
+            l_c[n++] = c->contact_length;
+    }
+    if (n > GRID_LC) {
+        even(lc_min, lc_max, GRID_LC, g->l_c);
+        g->n_l_c = GRID_LC;
+    } else {
+        qsort(l_c, n, sizeof l_c[0], by_value);
+        memcpy(g->l_c, l_c, n * sizeof l_c[0]);
+        g->n_l_c = n;
+    }
+    even(g->L_min, g->L_max, GRID_L, g->L);
+    even(g->H_min, g->H_max, GRID_H, g->H);
+}
+
+/* Grid case k, with the springs model of the worker running it; k runs over the grid's
+ * contact lengths, then lengths, then heights (heights fastest). */
 typedef struct {
     const tirenv_dataset *real;
     const tirenv_tire *fitted;
+    const grid_design *g;
     tirenv_dataset *out;
     tirenv_model **models;         /* one per worker, built on first use */
 } physical_pass;
@@ -207,12 +264,12 @@ static int physical_case(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     tirenv_case *cs = &p->out->cases[k];
     const tirenv_curve *grid = &p->real->cases[0].curve; /* the data set's x_N grid */
-    const size_t a = k / 24, b = k / 4 % 6, c = k % 4;
+    const size_t a = k / (GRID_L * GRID_H), b = k / GRID_H % GRID_L, c = k % GRID_H;
     snprintf(cs->name, sizeof cs->name, "g%zu", k);
     cs->split = k % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
-    cs->contact_length = grid_l_c[a];
-    cs->L = grid_L[b];
-    cs->H = grid_H[c];
+    cs->contact_length = p->g->l_c[a];
+    cs->L = p->g->L[b];
+    cs->H = p->g->H[c];
     cs->load = load_at(p->real, cs->contact_length);
     int status = tirenv_curve_alloc(&cs->curve, grid->n);
     if (status)
@@ -226,21 +283,23 @@ static int physical_case(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     return tirenv_case_predict_model(p->models[worker], cs, cs->curve.h, diag);
 }
 
-/* The 96 grid curves on `jobs` threads (a model is set afresh on every case, so a curve does
+/* The grid's curves on `jobs` threads (a model is set afresh on every case, so a curve does
  * not depend on the worker that made it). */
-static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted, size_t jobs,
-                            tirenv_dataset *out, tirenv_diag *diag)
+static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted,
+                            const grid_design *g, size_t jobs, tirenv_dataset *out,
+                            tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    out->cases = calloc(N_GRID, sizeof *out->cases);
-    physical_pass p = {real, fitted, out, calloc(jobs, sizeof *p.models)};
+    const size_t n = g->n_l_c * GRID_L * GRID_H;
+    out->cases = calloc(GRID_MAX, sizeof *out->cases);
+    physical_pass p = {real, fitted, g, out, calloc(jobs, sizeof *p.models)};
     if (!out->cases || !p.models) {
         free(p.models);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     }
     snprintf(out->dir, sizeof out->dir, "(springs model curves)");
-    out->n = N_GRID;  /* every case's curve is freed with the data set, allocated or not */
-    const int status = tirenv_parallel_for(N_GRID, jobs, physical_case, NULL, &p, diag);
+    out->n = n;  /* every case's curve is freed with the data set, allocated or not */
+    const int status = tirenv_parallel_for(n, jobs, physical_case, NULL, &p, diag);
     for (size_t w = 0; w < jobs; ++w)
         tirenv_model_free(p.models[w]);
     free(p.models);
@@ -249,13 +308,29 @@ static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitte
 
 /* ---- obstacles outside the training grid -------------------------------------------------- */
 
+/* A size from the data set's ranges: f_max times its largest plus f_min times its smallest
+ * obstacle length (of 'L') or height (of 'H'). */
+typedef struct {
+    char of;
+    double f_max, f_min;
+} size_rule;
+
 typedef struct {
     const char *name;
-    double l_c;
-    double L, H;                   /* extent: for x_N and the network */
+    size_t l_c;                    /* which of the data set's contact lengths (0-based) */
+    size_rule L, H;                /* extent: for x_N and the network */
     tirenv_profile *(*make)(const double arg[3]);
-    double arg[3];
+    size_rule arg[3];              /* the generator's arguments */
 } outside_design;
+
+static double size_of(const size_rule *r, const grid_design *g)
+{
+    if (r->of == 'H')
+        return micrometres(r->f_max * g->H_max + r->f_min * g->H_min);
+    if (r->of == 'L')
+        return micrometres(r->f_max * g->L_max + r->f_min * g->L_min);
+    return 0;
+}
 
 static tirenv_profile *make_cleat(const double a[3]) { return tirenv_profile_cleat(a[0], a[1]); }
 static tirenv_profile *make_cylinder(const double a[3])
@@ -268,19 +343,27 @@ static tirenv_profile *make_trapezoid(const double a[3])
 }
 
 /* Taller and shorter than any training cleat, and two shapes the network never saw (given to
- * it as their bounding rectangle, as a user would). */
+ * it as their bounding rectangle, as a user would), sized by the data set's ranges: factors of
+ * its tallest cleat and of its longest and shortest lengths. For the tractor set (heights up to
+ * 0.10 m, lengths 0.05-0.30 m): a 0.15 x 0.15 m cleat, a 0.03 x 0.05 m one, a half-cylinder
+ * of radius 0.08 m and a trapezoid 0.10 / 0.25 m by 0.08 m. The contact lengths are the data
+ * set's second and third shortest (the longest if it has fewer). */
 static const outside_design outside[] = {
-    {"tall", 0.33, 0.15, 0.15, make_cleat, {0.15, 0.15, 0}},
-    {"short", 0.38, 0.03, 0.05, make_cleat, {0.03, 0.05, 0}},
-    {"cylinder", 0.33, 0.16, 0.08, make_cylinder, {0.08, 0, 0}},
-    {"trapezoid", 0.38, 0.25, 0.08, make_trapezoid, {0.10, 0.25, 0.08}},
+    {"tall", 1, {'L', 0.5, 0}, {'H', 1.5, 0}, make_cleat, {{'L', 0.5, 0}, {'H', 1.5, 0}}},
+    {"short", 2, {'L', 0, 0.6}, {'H', 0.5, 0}, make_cleat, {{'L', 0, 0.6}, {'H', 0.5, 0}}},
+    {"cylinder", 1, {'H', 1.6, 0}, {'H', 0.8, 0}, make_cylinder, {{'H', 0.8, 0}}},
+    {"trapezoid", 2, {'L', 5.0 / 6.0, 0}, {'H', 0.8, 0}, make_trapezoid,
+     {{'L', 1.0 / 3.0, 0}, {'L', 5.0 / 6.0, 0}, {'H', 0.8, 0}}},
 };
 enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
-/* The reference curves: the ring tire on the virtual rig, imported like the data set's; each
- * obstacle with its own ring, so that its curve depends on it alone. */
+/* The reference curves: the model that simulated the data set (the ring for measured data)
+ * on the virtual rig, imported like the data set's; each obstacle with its own instance of
+ * it, so that its curve depends on it alone. */
 typedef struct {
     const tirenv_tire *tire;
+    const tirenv_model_type *reference;
+    const grid_design *g;
     tirenv_dataset *out;
     tirenv_profile **profiles;
 } outside_pass;
@@ -289,49 +372,54 @@ static int outside_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
 {
     outside_pass *p = ctx;
     const outside_design *d = &outside[i];
+    const grid_design *g = p->g;
     tirenv_case *cs = &p->out->cases[i];
     (void)worker;
     snprintf(cs->name, sizeof cs->name, "%s", d->name);
     cs->split = TIRENV_SPLIT_VALIDATION;
-    cs->contact_length = d->l_c;
-    cs->L = d->L;
-    cs->H = d->H;
-    cs->profile = p->profiles[i] = d->make(d->arg);
-    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, p->tire);
-    if (!p->profiles[i] || !ring) {
-        tirenv_model_free(ring);
+    cs->contact_length = g->l_c[d->l_c < g->n_l_c ? d->l_c : g->n_l_c - 1];
+    const double arg[3] = {size_of(&d->arg[0], g), size_of(&d->arg[1], g),
+                           size_of(&d->arg[2], g)};
+    cs->L = size_of(&d->L, g);
+    cs->H = size_of(&d->H, g);
+    cs->profile = p->profiles[i] = d->make(arg);
+    tirenv_model *ref = tirenv_model_alloc(p->reference, p->tire);
+    if (!p->profiles[i] || !ref) {
+        tirenv_model_free(ref);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     }
-    int status = tirenv_model_load_for_contact_length(ring, d->l_c, &cs->load, diag);
+    int status = tirenv_model_load_for_contact_length(ref, cs->contact_length, &cs->load, diag);
     if (!status)
-        status = tirenv_model_set(ring, p->profiles[i], cs->load, diag);
+        status = tirenv_model_set(ref, p->profiles[i], cs->load, diag);
     tirenv_rig_settings rig = tirenv_rig_default();
     rig.seed = 777 + i;
     tirenv_rig_log log = {0};
     if (!status)
-        status = tirenv_rig_simulate(ring, p->profiles[i], &rig, &log, diag);
+        status = tirenv_rig_simulate(ref, p->profiles[i], &rig, &log, diag);
     tirenv_import_settings imp = tirenv_import_default();
-    imp.L = d->L;
-    imp.H = d->H;
+    imp.L = cs->L;
+    imp.H = cs->H;
     imp.R0 = p->tire->springs.R0;
-    imp.contact_length = d->l_c;
+    imp.contact_length = cs->contact_length;
     if (!status)
         status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve, diag);
     tirenv_rig_log_free(&log);
-    tirenv_model_free(ring);
+    tirenv_model_free(ref);
     return status;
 }
 
-static int outside_dataset(const tirenv_tire *tire, size_t jobs, tirenv_dataset *out,
+static int outside_dataset(const tirenv_tire *tire, const tirenv_model_type *reference,
+                           const grid_design *g, size_t jobs, tirenv_dataset *out,
                            tirenv_profile *profiles[N_OUTSIDE], tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    snprintf(out->dir, sizeof out->dir, "(virtual rig, ring tire)");
+    snprintf(out->dir, sizeof out->dir, "(virtual rig, %s model)",
+             tirenv_model_type_name(reference));
     out->cases = calloc(N_OUTSIDE, sizeof *out->cases);
     if (!out->cases)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     out->n = N_OUTSIDE;
-    outside_pass p = {tire, out, profiles};
+    outside_pass p = {tire, reference, g, out, profiles};
     return tirenv_parallel_for(N_OUTSIDE, jobs, outside_case, NULL, &p, diag);
 }
 
@@ -344,7 +432,10 @@ static void append_model_means(FILE *fp, const tirenv_compare_result *r)
                 1e3 * tirenv_compare__mean_rms(r, m, NULL));
 }
 
-static char *study_notes(const tirenv_study_settings *s, const tirenv_study__facts *facts,
+/* facts->cam_fit is NULL when the cam simulated the data (it is then the reference, not
+ * fitted). */
+static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
+                         const tirenv_study__facts *facts,
                          const tirenv_train_report *nn, const tirenv_train_report *nn_phys,
                          const tirenv_compare_result *phys, const tirenv_compare_result *out_r,
                          const tirenv_dataset *outside_ds)
@@ -364,14 +455,20 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
                 "variance:\n\n",
             fit->n_points, fit->iterations, fit->stop, fit->seconds, 1e3 * fit->rms);
     tirenv_study__fit_table(fp, fit);
-    fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model (docs/models.md "
-                "section 7), identified the same way (%zu iterations, stopped by %s, %.2f s, "
-                "RMS %.2f mm); its contact-length keys (Q_RA1, Q_RA2, VERTICAL_STIFFNESS) stay "
-                "as in the tire file:\n\n",
-            cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
-    tirenv_study__fit_table(fp, cam_fit);
-    tirenv_study__cam_limits(fp, facts);
-    fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
+    if (cam_fit) {
+        fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model "
+                    "(docs/models.md section 7), identified the same way (%zu iterations, "
+                    "stopped by %s, %.2f s, RMS %.2f mm); its contact-length keys (Q_RA1, "
+                    "Q_RA2, VERTICAL_STIFFNESS) stay as in the tire file:\n\n",
+                cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
+        tirenv_study__fit_table(fp, cam_fit);
+        tirenv_study__cam_limits(fp, facts);
+        fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
+    } else {
+        fprintf(fp, "\n**Tandem elliptical cam (cam)**: it simulated the data, so it is the "
+                    "reference, run with the data set's tire as it is, not fitted. The fitted "
+                    "tire is in `fitted.tir`.\n\n");
+    }
     tirenv_train_settings ts = tirenv_train_default(tirenv_trainer_type_find(s->trainer));
     ts.input = s->input;
     size_t n_train = 0;
@@ -396,14 +493,15 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
             1e3 * nn->error[0].rms, 1e3 * nn->error[1].rms, 1e3 * nn->error[2].rms);
     fprintf(fp, "## The paper's proposed workflow: a network trained on the physical model\n\n"
                 "The paper proposes to train the network on curves of the physical model "
-                "instead of rig runs. Here: %d curves of the identified springs model over a "
-                "grid of cleats (lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact "
-                "lengths 0.28 to 0.43 m, loads read off the data set), no rig time, one seed "
+                "instead of rig runs. Here: %zu curves of the identified springs model over a "
+                "grid of cleats (lengths %.3g to %.3g m, heights %.3g to %.3g m, contact "
+                "lengths %.3g to %.3g m, loads read off the data set), no rig time, one seed "
                 "(%lu). Trained in %.2f s; its validation error (the mean over the measured "
                 "validation cases of each case's RMS) is %.2f mm, against a median of %.2f mm "
                 "over the seeds of the network trained on the measurements. Mean RMS over the "
                 "validation cases: ",
-            N_GRID, s->seed, nn_phys->wall_time,
+            g->n_l_c * GRID_L * GRID_H, g->L_min, g->L_max, g->H_min, g->H_max, g->l_c[0],
+            g->l_c[g->n_l_c - 1], s->seed, nn_phys->wall_time,
             phys->nn_model >= 0 ? 1e3 * tirenv_compare__mean_rms(phys, (size_t)phys->nn_model,
                                                                  NULL)
                                 : NAN,
@@ -412,7 +510,8 @@ static char *study_notes(const tirenv_study_settings *s, const tirenv_study__fac
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
     fprintf(fp, "## Outside the training range\n\n"
                 "Obstacles no training case resembles, with reference curves from the same "
-                "virtual rig (ring tire, SIMULATED): ");
+                "virtual rig (%s model, SIMULATED): ",
+            tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring));
     for (size_t i = 0; i < outside_ds->n; ++i) {
         const tirenv_case *c = &outside_ds->cases[i];
         fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
@@ -468,9 +567,9 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     cs.jobs = s->jobs;
     cs.tire_label = "fitted.tir (identified on the training cases)";
     cs.data_label = data_label(s);
-    if (s->simulated_by_ring) {
+    if (s->simulated_by) {
         cs.simulated = 1;
-        cs.simulated_by = tirenv_model_ring;
+        cs.simulated_by = s->simulated_by;
     }
     return cs;
 }
@@ -481,6 +580,8 @@ typedef struct {
     const tirenv_study_settings *s;
     const tirenv_dataset *ds;
     const tirenv_tire *tire;
+    const grid_design *grid;
+    const tirenv_model_type *reference;  /* what simulates the obstacles outside */
     tirenv_nn *nn;
     tirenv_compare_settings cs;
     tirenv_compare_result *main_r;
@@ -504,7 +605,8 @@ static int part_physical(study_parts *p, tirenv_diag *diag)
 {
     const tirenv_study_settings *s = p->s;
     char path[1024], sub[1024];
-    int status = physical_dataset(p->ds, p->tire, s->jobs ? s->jobs : 1, p->phys_ds, diag);
+    int status = physical_dataset(p->ds, p->tire, p->grid, s->jobs ? s->jobs : 1, p->phys_ds,
+                                  diag);
     snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
     if (!status)
         status = train_network(s, p->phys_ds, p->ds, path, p->nn_phys, p->phys_rep, diag);
@@ -524,12 +626,13 @@ static int part_outside(study_parts *p, tirenv_diag *diag)
 {
     const tirenv_study_settings *s = p->s;
     char sub[1024];
-    int status = outside_dataset(&s->tire, s->jobs ? s->jobs : 1, p->out_ds, p->profiles, diag);
+    int status = outside_dataset(&s->tire, p->reference, p->grid, s->jobs ? s->jobs : 1,
+                                 p->out_ds, p->profiles, diag);
     snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
     tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
                                                   "range");
     os.simulated = 1;
-    os.simulated_by = tirenv_model_ring;
+    os.simulated_by = p->reference;
     os.data_label = "taller, shorter and other shapes on the virtual rig";
     if (!status)
         status = tirenv_compare(p->out_ds, p->tire, p->nn, &os, p->out_r, diag);
@@ -546,7 +649,7 @@ static int study_part(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
                                                 : part_outside(p, diag);
 }
 
-int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
+static int study_into(const tirenv_study_settings *s, tirenv_diag *diag)
 {
     char path[1024];
     tirenv_dataset ds = {0}, phys_ds = {0}, out_ds = {0};
@@ -559,7 +662,7 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     tirenv_tire tire = s->tire;
     char *notes = NULL;
 
-    int status = tirenv_mkdir_p(s->out_dir, diag);
+    int status = TIRENV_OK;
     progress(s, "reading the data set", 0);
     if (!status)
         status = tirenv_dataset_read(s->data_dir, tire.springs.R0, &ds, diag);
@@ -569,10 +672,12 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     fs.jobs = s->jobs;
     if (!status)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &fit, diag);
-    /* The cam's keys live in their own part of the tire, so both fits share one file. */
+    /* The cam's keys live in their own part of the tire, so both fits share one file. A cam
+     * that simulated the data is the reference: it keeps the data set's values. */
     tirenv_fit_report cam_fit;
+    const int fit_cam = s->simulated_by != tirenv_model_cam;
     fs.type = tirenv_model_cam;
-    if (!status)
+    if (!status && fit_cam)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &cam_fit, diag);
     snprintf(path, sizeof path, "%s/fitted.tir", s->out_dir);
     if (!status)
@@ -585,7 +690,12 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
      * the comparison on the validation cases, the paper's workflow, the obstacles outside. */
     progress(s, "comparing the models: validation cases, a network on physical-model curves, "
                 "obstacles outside the training range", 3);
-    study_parts parts = {.s = s, .ds = &ds, .tire = &tire, .nn = nn, .main_r = &main_r,
+    grid_design grid = {0};
+    if (!status)
+        grid_of(&ds, &grid);
+    study_parts parts = {.s = s, .ds = &ds, .tire = &tire, .grid = &grid,
+                         .reference = s->simulated_by ? s->simulated_by : tirenv_model_ring,
+                         .nn = nn, .main_r = &main_r,
                          .phys_ds = &phys_ds, .nn_phys = &nn_phys, .phys_rep = &phys_rep,
                          .phys_r = &phys_r, .out_ds = &out_ds, .profiles = profiles,
                          .out_r = &out_r};
@@ -598,9 +708,11 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
     progress(s, "writing the report", 6);
     const tirenv_study__facts facts = {.ds = &ds, .main = &main_r, .main_settings = &cs,
                                        .seeds = &seeds, .springs_fit = &fit,
-                                       .cam_fit = &cam_fit, .R0 = tire.springs.R0};
+                                       .cam_fit = fit_cam ? &cam_fit : NULL,
+                                       .R0 = tire.springs.R0};
     if (!status &&
-        !(notes = study_notes(s, &facts, &nn_rep, &phys_rep, &phys_r, &out_r, &out_ds)))
+        !(notes = study_notes(s, &grid, &facts, &nn_rep, &phys_rep, &phys_r, &out_r,
+                              &out_ds)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     if (!status)
         status = tirenv_compare_report(&ds, &cs, &main_r, notes, diag);
@@ -619,4 +731,21 @@ int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
         tirenv_profile_free(profiles[i]);
     tirenv_dataset_free(&ds);
     return status;
+}
+
+/* The report directory is written as a whole (tirenv_outdir): a failed or killed study
+ * leaves the previous report as it was, and no empty directory. */
+int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
+{
+    tirenv_outdir *out;
+    int status = tirenv_outdir_begin(s->out_dir, &out, diag);
+    if (status)
+        return status;
+    tirenv_study_settings staged = *s;
+    staged.out_dir = tirenv_outdir_path(out);
+    if ((status = study_into(&staged, diag))) {
+        tirenv_outdir_abort(out);
+        return status;
+    }
+    return tirenv_outdir_commit(out, diag);
 }

@@ -1,0 +1,65 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Roads from other tools: Profile.read takes OpenCRG and RDF roads as the CLI's --profile does,
+# and a list of tracks is the CLI's --tracks, bit for bit.
+import os
+
+import numpy as np
+import pytest
+
+import tirenv
+from conftest import run_cli
+
+
+def samples(source_dir):
+    path = os.path.join(source_dir, "..", "shared", "samples")
+    if not os.path.isdir(path):
+        pytest.fail(f"the sample road files are missing: {path}")
+    return path
+
+
+def csv_rows(curve):
+    return ["%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d" % tuple(r) for r in curve.tolist()]
+
+
+def test_read_crg_track_equals_convert(cli, source_dir, tmp_path):
+    road = os.path.join(samples(source_dir), "crg", "halfround_6in.crg")
+    out = tmp_path / "t.csv"
+    rc, _, err = run_cli(cli, "convert", "--profile", road, "--track", 0.9, "-o", out)
+    assert rc == 0, err
+    via_csv = tirenv.Profile.read(out)
+    p = tirenv.Profile.read(road, track=0.9)
+    assert len(p) == len(via_csv) == 10001
+    assert np.array_equal(p.x, via_csv.x) and np.array_equal(p.z, via_csv.z)
+
+
+def test_read_rdf_sides(source_dir):
+    road = os.path.join(samples(source_dir), "rdf", "Plateau_Road.rdf")
+    mean = tirenv.Profile.read(road)
+    left = tirenv.Profile.read(road, side="left")
+    right = tirenv.Profile.read(road, side="right")
+    assert np.array_equal(mean.z, (left.z + right.z) / 2)
+    with pytest.raises(tirenv.TirenvError, match="left, right or mean"):
+        tirenv.Profile.read(road, side="middle")
+
+
+def test_tracks_equal_the_cli(cli, source_dir, tmp_path):
+    road = os.path.join(samples(source_dir), "crg", "handmade_curved.crg")
+    v = tirenv.track_positions(3, 0.2, 0.38)
+    assert np.allclose(v, [0.2 - 0.38 / 3, 0.2, 0.2 + 0.38 / 3], rtol=0, atol=1e-15)
+    for name in ("springs", "cam", "rigid"):
+        out = tmp_path / f"{name}.csv"
+        rc, _, err = run_cli(cli, "envelope", "--model", name, "--profile", road, "--track",
+                             0.2, "--tracks", 3, "--contact-length", 0.33, "--dx", 0.01,
+                             "-o", out)
+        assert rc == 0, err
+        m = tirenv.Model(name)
+        m.set([tirenv.Profile.read(road, track=t) for t in v], m.load_for_contact_length(0.33))
+        assert csv_rows(m.sweep(dx=0.01)) == out.read_text().splitlines()[1:]
+
+
+def test_one_track_list_is_set():
+    p = tirenv.Profile.cleat(0.3, 0.05)
+    a, b = tirenv.Model("springs"), tirenv.Model("springs")
+    a.set(p, 11903.6)
+    b.set([p, p, p], 11903.6, weights=[1, 2, 3])
+    assert np.array_equal(a.sweep(), b.sweep())

@@ -1,0 +1,139 @@
+/* Roads from files for the commands that take --profile: which track of a road that varies
+ * across (--track, an OpenCRG file's lateral position), which side of an RDF road (--side), and
+ * the tracks spread across the tire's width (--width, --tracks; docs/models.md section 13),
+ * read whole or a row at a time. SPDX-License-Identifier: GPL-3.0-or-later */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+void cli_help_road(FILE *fp, int with_tracks)
+{
+    fputs("  --track V            with --profile ROAD.crg: the track at lateral position V, m,\n"
+          "                       positive to the left of the reference line (default 0, the\n"
+          "                       reference line); a CSV or RDF road is 2-D, the same on\n"
+          "                       every track\n"
+          "  --side S             with --profile ROAD.rdf: left, right or mean (default) of\n"
+          "                       a poly_line road's z_left and z_right\n",
+          fp);
+    if (with_tracks)
+        fputs("  --tracks N           evaluate N tracks across the tire's width around --track\n"
+              "                       (slice centres) and combine them: springs and ring by\n"
+              "                       one equilibrium of the slices, rigid by the highest, the\n"
+              "                       others by the mean (docs/models.md section 13); a 2-D\n"
+              "                       road is one track (default 1)\n"
+              "  --width W            the width the tracks spread over, m (default: the tire\n"
+              "                       file's [DIMENSION] WIDTH, 0.38 for the default tire)\n",
+              fp);
+}
+
+/* The lateral position as text: the shortest form that reads back the same. */
+static void shortest(char *buf, size_t n, double v)
+{
+    for (int p = 1; p <= 17; ++p) {
+        snprintf(buf, n, "%.*g", p, v);
+        double back;
+        if (cli_parse_double(buf, &back) == 0 && back == v)
+            return;
+    }
+}
+
+int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
+{
+    memset(r, 0, sizeof *r);
+    r->src = tirenv_profile_source_default();
+    r->format = TIRENV_PROFILE_CSV;
+    r->n = 1;
+    r->from_file = o->obstacle == CLI_PROFILE;
+    if ((o->have_track || o->have_side) && !r->from_file) {
+        cli_error("--%s applies to a road file (--profile FILE), not to a generated obstacle",
+                  o->have_track ? "track" : "side");
+        return CLI_EXIT_USAGE;
+    }
+    if (o->have_width && !o->tracks) {
+        cli_error("--width W spreads the tracks of --tracks N: give --tracks too");
+        return CLI_EXIT_USAGE;
+    }
+    if (r->from_file) {
+        tirenv_diag diag;
+        tirenv_diag_clear(&diag);
+        const int status = tirenv_profile_detect(o->obstacle_arg, &r->format, &diag);
+        if (status)
+            return cli_fail(status, &diag);
+    }
+    if (o->have_track && r->format != TIRENV_PROFILE_CRG) {
+        cli_error("--track applies to an OpenCRG road; %s is %s, the same on every track",
+                  o->obstacle_arg,
+                  r->format == TIRENV_PROFILE_RDF ? "an RDF road (use --side)"
+                                                  : "a CSV profile");
+        return CLI_EXIT_USAGE;
+    }
+    if (o->have_side && r->format != TIRENV_PROFILE_RDF) {
+        cli_error("--side applies to an RDF road; %s is %s", o->obstacle_arg,
+                  r->format == TIRENV_PROFILE_CRG ? "an OpenCRG road (use --track)"
+                                                  : "a CSV profile");
+        return CLI_EXIT_USAGE;
+    }
+    if (o->have_track)
+        r->src.crg.v = o->track;
+    if (o->have_side)
+        r->src.rdf_side = o->side;
+    r->v[0] = r->src.crg.v;
+    /* A 2-D road, or a generated obstacle, is the same on every track: one track is all of
+     * them, bit for bit (docs/models.md section 13.1). */
+    if (o->tracks > 1 && r->format == TIRENV_PROFILE_CRG) {
+        r->n = (size_t)o->tracks;
+        r->width = o->have_width ? o->width : tire ? tire->width : 0;
+        if (!(r->width > 0)) {
+            cli_error("--tracks %ld: the tire file gives no [DIMENSION] WIDTH to spread them "
+                      "over; give --width W", o->tracks);
+            return CLI_EXIT_USAGE;
+        }
+        tirenv_diag diag;
+        tirenv_diag_clear(&diag);
+        const int status = tirenv_tracks_spread(r->n, r->src.crg.v, r->width, r->v, &diag);
+        if (status)
+            return cli_fail(status, &diag);
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_road_read(const cli_options *o, const cli_road *r, tirenv_profile *out[])
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    if (!r->from_file) {
+        const int code = cli_profile(o, &out[0]);
+        for (size_t k = 1; k < r->n; ++k)
+            out[k] = NULL;
+        return code;
+    }
+    const int status = tirenv_profile_read_tracks(o->obstacle_arg, &r->src, r->n, r->v, out,
+                                                  &diag);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_reader **out)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_profile_file_reader_open(o->obstacle_arg, &r->src, r->n, r->v,
+                                                       out, &diag);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n)
+{
+    char name[512], v[32], w[32];
+    cli_obstacle_label(o, name, sizeof name);
+    shortest(v, sizeof v, r->src.crg.v);
+    shortest(w, sizeof w, r->width);
+    if (r->format == TIRENV_PROFILE_CRG && r->n > 1)
+        snprintf(buf, n, "%s, %zu tracks over %s m around v = %s m", name, r->n, w, v);
+    else if (r->format == TIRENV_PROFILE_CRG)
+        snprintf(buf, n, "%s, track v = %s m", name, v);
+    else if (r->format == TIRENV_PROFILE_RDF)
+        snprintf(buf, n, "%s, side %s", name, tirenv_rdf_side_name(r->src.rdf_side));
+    else
+        snprintf(buf, n, "%s", name);
+}

@@ -1,0 +1,40 @@
+/* The signal handler that keeps an interrupted tirenv from leaving temporary files: a
+ * killed write leaves the old output and nothing else. SIGKILL cannot be caught: what it
+ * leaves is removed by the next run writing into the same directory (src/data/tmpfiles.c).
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "cli/signals.h"
+
+#include <signal.h>
+#include <string.h>
+
+#include "tirenv/io.h"
+
+static const int handled[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+enum { N_HANDLED = sizeof handled / sizeof handled[0] };
+
+/* Only async-signal-safe calls: unlink, getdents64, rmdir, close inside the cleanup, then
+ * signal and raise. The signal stays blocked until the handler returns, and is then
+ * delivered with the default action: the exit status says what killed the program. */
+static void on_signal(int sig)
+{
+    tirenv_cleanup_on_signal();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+void cli_signals_install(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (int i = 0; i < N_HANDLED; ++i)  /* no second handler in the middle of the first */
+        sigaddset(&sa.sa_mask, handled[i]);
+    for (int i = 0; i < N_HANDLED; ++i) {
+        struct sigaction old;
+        /* A signal ignored on entry (nohup, a shell's background job) stays ignored. */
+        if (sigaction(handled[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;
+        sigaction(handled[i], &sa, NULL);
+    }
+}

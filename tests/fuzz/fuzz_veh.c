@@ -1,0 +1,16 @@
+/* libFuzzer harness: the vehicle file reader (tirenv_vehicle_read) and its check.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "fuzz_input.h"
+#include "tirenv/vehicle.h"
+#include "tirenv/vehicle_file.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    const char *path = fuzz_input_file(data, size, ".veh");
+    tirenv_vehicle v = tirenv_vehicle_default();
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    if (tirenv_vehicle_read(path, &v, &diag) == TIRENV_OK)
+        (void)tirenv_vehicle_check(&v, &diag);
+    return 0;
+}

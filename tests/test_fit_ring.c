@@ -1,0 +1,125 @@
+/* Identification of the ring (tirenv fit --model ring, docs/models.md section 8.4): its
+ * foundation and tread recovered from its own curves, the optional belt parameters listed,
+ * and a start the model refuses reported as an error rather than fitted. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "testutil.h"
+#include "tirenv/tirenv.h"
+#include "tirenv/study.h"
+
+enum { N_CASES = 3, N_POINTS = 31 };
+
+/* Noise-free curves of the ring at known parameters over three cleats, on an x_N grid like
+ * the data sets'. 2 degree nodes keep the test quick; the fit does not care. */
+static void make_ring_dataset(tirenv_dataset *ds, tirenv_case cases[],
+                              const tirenv_tire *truth)
+{
+    static const double design[N_CASES][3] = {{0.28, 0.10, 0.05}, {0.33, 0.30, 0.075},
+                                              {0.38, 0.15, 0.10}};
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, truth);
+    assert_non_null(m);
+    memset(ds, 0, sizeof *ds);
+    ds->n = N_CASES;
+    ds->cases = cases;
+    for (size_t i = 0; i < N_CASES; ++i) {
+        tirenv_case *c = &cases[i];
+        memset(c, 0, sizeof *c);
+        snprintf(c->name, sizeof c->name, "K%zu", i);
+        c->split = TIRENV_SPLIT_TRAIN;
+        c->contact_length = design[i][0];
+        c->L = design[i][1];
+        c->H = design[i][2];
+        tirenv_diag diag;
+        assert_int_equal(tirenv_model_load_for_contact_length(m, c->contact_length, &c->load,
+                                                              &diag), TIRENV_OK);
+        assert_int_equal(tirenv_curve_alloc(&c->curve, N_POINTS), TIRENV_OK);
+        const double x_0 = tirenv_xN_origin(truth->springs.R0, c->contact_length, c->L, c->H);
+        for (size_t j = 0; j < N_POINTS; ++j) {
+            c->curve.x_N[j] = -0.2 + 1.2 * (double)j / (N_POINTS - 1);
+            c->curve.x[j] = x_0 * (1 - c->curve.x_N[j]);
+        }
+        assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
+    }
+    tirenv_model_free(m);
+}
+
+static void free_dataset(tirenv_case cases[])
+{
+    for (size_t i = 0; i < N_CASES; ++i)
+        tirenv_curve_free(&cases[i].curve);
+}
+
+static tirenv_tire coarse_truth(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.ring.dtheta = M_PI / 90;
+    return t;
+}
+
+/* From k_f and k_t 30 % off (the belt's EI and T as the truth's), the fit comes back to them
+ * on noise-free curves: within 2 % (the trust region stops on a small step, and the ring's
+ * h is only piecewise smooth in its parameters where contact states switch), with a residual
+ * far below any rig's noise. */
+static void test_ring_recovers_foundation_and_tread(void **state)
+{
+    (void)state;
+    const tirenv_tire truth = coarse_truth();
+    static tirenv_case cases[N_CASES];
+    tirenv_dataset ds;
+    make_ring_dataset(&ds, cases, &truth);
+    tirenv_tire tire = truth;
+    tire.ring.k_f = 1.3 * truth.ring.k_f;
+    tire.ring.k_t = 0.7 * truth.ring.k_t;
+    tirenv_fit_settings s = tirenv_fit_default();
+    s.type = tirenv_model_ring;
+    tirenv_fit_report rep;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag), TIRENV_OK);
+    print_message("ring: k_f %.6g (true %.6g), k_t %.6g (true %.6g), rms %.3g mm, %zu "
+                  "iterations, stopped by %s\n", rep.value[0], truth.ring.k_f, rep.value[1],
+                  truth.ring.k_t, 1e3 * rep.rms, rep.iterations, rep.stop);
+    assert_int_equal(rep.n_params, 2);
+    assert_string_equal(rep.names[0], "FOUNDATION_STIFFNESS");
+    assert_string_equal(rep.names[1], "TREAD_STIFFNESS");
+    assert_near(rep.value[0], truth.ring.k_f, 0, 0.02);
+    assert_near(rep.value[1], truth.ring.k_t, 0, 0.02);
+    assert_true(rep.rms < 0.02e-3);
+    assert_near(tire.ring.k_f, rep.value[0], 0, 0);  /* written into the tire */
+    assert_true(tire.ring.EI == truth.ring.EI && tire.ring.T == truth.ring.T);
+    free_dataset(cases);
+}
+
+/* A start the model refuses (a belt whose pretension buckles it on its foundation) is an
+ * error naming the key, not a fit that reports its penalty residuals as a result. */
+static void test_refuses_unphysical_start(void **state)
+{
+    (void)state;
+    const tirenv_tire truth = coarse_truth();
+    static tirenv_case cases[N_CASES];
+    tirenv_dataset ds;
+    make_ring_dataset(&ds, cases, &truth);
+    tirenv_tire tire = truth;
+    tire.ring.T = 1e7;
+    const tirenv_tire before = tire;
+    tirenv_fit_settings s = tirenv_fit_default();
+    s.type = tirenv_model_ring;
+    tirenv_fit_report rep;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag),
+                     TIRENV_EINVAL);
+    assert_true(diag.field[0] != '\0');
+    assert_memory_equal(&tire.ring, &before.ring, sizeof tire.ring);
+    free_dataset(cases);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ring_recovers_foundation_and_tread),
+        cmocka_unit_test(test_refuses_unphysical_start),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
