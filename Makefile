@@ -10,13 +10,18 @@ FUZZ_SECONDS ?= 60
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps build test test-asan demo demo-study demo-study-205 demo-ride bench fuzz python fmu \
-        install clean
+.PHONY: all deps deps-test build test test-asan test-slurm demo demo-study demo-study-205 \
+        demo-ride bench fuzz python fmu install clean
 
 all: build
 
 deps:
 	@sh scripts/deps.sh
+
+# What the tests need besides: slurm-wlm and munge for the Slurm test (optional: without
+# them, or without root, that test reports itself skipped).
+deps-test: deps
+	@sh scripts/deps.sh --slurm
 
 build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -24,16 +29,21 @@ build: deps
 
 # Release build and tests, then the same tests under AddressSanitizer + UBSan.
 # The Release run includes the install checks (label install: install into a temporary
-# prefix, build tests/consumer/ against it, run the installed CLI moved away from the clone).
-test: build
+# prefix, build tests/consumer/ against it, run the installed CLI moved away from the clone)
+# and the Slurm scripts on a single-node cluster it starts (label slurm, about 20 s).
+test: build deps-test
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(skip)
 	@$(MAKE) --no-print-directory test-asan
+
+# The Slurm test alone: scripts/slurm/ on a private single-node cluster (needs root).
+test-slurm: build deps-test
+	@cd $(BUILD) && ctest --output-on-failure -L slurm
 
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
 	    -DTIRENV_FUZZ=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
+	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 
 # The Python module in place under $(BUILD)/python (python/README.md), and the FMI 2.0
 # co-simulation FMU $(BUILD)/tirenv_effective_road.fmu (fmu/README.md); both are also part of
@@ -49,28 +59,31 @@ fmu: build
 # the tractor ride: over a cleat at three speeds (the README's picture), and over a 1 km
 # ISO 8608 class C road at 10 km/h, point contact against the enveloping models. The two
 # studies run side by side on JOBS cores, the rides after the tractor's study (they take its
-# network); -Otarget keeps each part's lines together. The road's bumps are all lower than
+# network); -Otarget keeps each part's lines together. Each command also runs its own items
+# on --jobs $(JOBS) threads, so that a study left alone (the other one done) still has every
+# core; the outputs are the same for any --jobs. The road's bumps are all lower than
 # the network's lowest trained cleat: its curves there are that cleat's scaled down
 # (docs/models.md section 12), an extrapolation, hence --extrapolate.
 demo: build
 	@$(MAKE) --no-print-directory -j $(JOBS) -Otarget demo-study-205 demo-ride
 
 demo-study:
-	@$(BUILD)/tirenv study -o $(DEMO_OUT)
+	@$(BUILD)/tirenv study --jobs $(JOBS) -o $(DEMO_OUT)
 
 demo-study-205:
-	@$(BUILD)/tirenv study --data data/dataset-205-60R15 -o $(DEMO_205)
+	@$(BUILD)/tirenv study --jobs $(JOBS) --data data/dataset-205-60R15 -o $(DEMO_205)
 
 demo-ride: demo-study
 	@$(BUILD)/tirenv ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h \
 	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --enveloping static,dynamic \
+	    --jobs $(JOBS) \
 	    --out-dir out/ride-cleat
 	@mkdir -p out/ride-road
 	@$(BUILD)/tirenv road --class C --length 1000 --dx 0.01 --seed 1 -o out/ride-road/road.csv
 	@$(BUILD)/tirenv ride --profile out/ride-road/road.csv --speed 10km/h --dx 0.01 \
 	    --model point,rigid,springs,cam,nn --nn $(DEMO_OUT)/nn.json --extrapolate \
 	    --enveloping static,dynamic \
-	    --out-dir out/ride-road
+	    --jobs $(JOBS) --out-dir out/ride-road
 
 # Speed figures: the models and solvers (tirenv bench), then the network and its trainers
 # against FANN, the benchmark-only peer (scripts/deps.sh --bench installs libfann-dev).

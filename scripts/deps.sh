@@ -11,6 +11,14 @@ need="$need clang libclang-rt-14-dev"
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
 need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
+# --slurm: Slurm and munge, for tests/slurm.sh (scripts/slurm/ on a private single-node
+# cluster). Optional: without them that test reports itself skipped, so a user who cannot
+# install them is told how and goes on.
+optional=0
+if [ "${1:-}" = "--slurm" ]; then
+    need="slurm-wlm munge"
+    optional=1
+fi
 
 missing=""
 for pkg in $need; do
@@ -25,10 +33,21 @@ done
 if [ "$(id -u)" -eq 0 ]; then
     echo "deps: installing$missing" >&2
     export DEBIAN_FRONTEND=noninteractive
+    if [ "$optional" -eq 1 ]; then
+        if ! { apt-get update -qq && apt-get install -y -qq --no-install-recommends $missing \
+                   >/dev/null; }; then
+            echo "deps: could not install$missing (optional: the Slurm test is skipped)" >&2
+        fi
+        exit 0
+    fi
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends $missing >/dev/null
 else
     echo "deps: missing packages; run:" >&2
     echo "  sudo apt-get update && sudo apt-get install -y$missing" >&2
+    if [ "$optional" -eq 1 ]; then
+        echo "deps: (optional: without them the Slurm test is skipped)" >&2
+        exit 0
+    fi
     exit 1
 fi

@@ -1,8 +1,11 @@
 #!/bin/sh
 # tirenv study end to end on the embedded data set: every promised file, the simulated-data
-# label, one error row per validation case and model, and a fitted tire that reads back.
+# label, one error row per validation case and model, and a fitted tire that reads back; and
+# the same study with --jobs 1 and --jobs 3 (more threads than cores) writing the same files
+# apart from the timings they report (tests/untimed.sh).
 set -eu
 bin=$1
+here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pass=0 fail=0
@@ -12,7 +15,7 @@ check() { # check N "what" command...
     if "$@" >/dev/null 2>&1; then pass=$((pass + 1)); echo "ok $n - $what"
     else fail=$((fail + 1)); echo "not ok $n - $what"; fi
 }
-"$bin" study -o "$tmp/s" >"$tmp/out" 2>&1 || { cat "$tmp/out"; echo "0 passed, 1 failed"; exit 1; }
+"$bin" study --jobs 3 -o "$tmp/s" >"$tmp/out" 2>&1 || { cat "$tmp/out"; echo "0 passed, 1 failed"; exit 1; }
 for f in report.md errors.csv errors.md timing.csv fitted.tir nn.json nn-physical.json nn-seeds.csv \
          F.png F.svg F.gp F.dat J.png R.png AB.png physical-network/report.md \
          outside/report.md outside/tall.png outside/cylinder.png; do
@@ -45,5 +48,13 @@ check 10 "the report names the data set relatively" grep -q 'Data: `data/dataset
 check 11 "no absolute path of this machine in the report or model" \
     sh -c '! grep -q "$1" "$2/report.md" "$2/nn.json"' sh "$(cd "$(dirname "$0")/.." && pwd)" "$tmp/s"
 check 12 "errors.csv has rms_over_H" grep -q "^case,model,rms_mm,max_mm,peak_mm,first_rise_mm,rms_over_H$" "$tmp/s/errors.csv"
+# shellcheck source=tests/untimed.sh
+. "$here/untimed.sh"
+"$bin" study --jobs 1 -o "$tmp/s1" >"$tmp/out1" 2>&1 || cat "$tmp/out1"
+if same_apart_from_timings "$tmp/s1" "$tmp/s"; then
+    pass=$((pass + 1)); echo "ok 13 - --jobs 1 = --jobs 3: the fit, networks, errors, plot data, reports"
+else
+    fail=$((fail + 1)); echo "not ok 13 - --jobs 1 = --jobs 3: the fit, networks, errors, plot data, reports"
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -2,7 +2,8 @@
 # tirenv study end to end on the 205/60R15 car tire's data set (simulated by TNO's MF-Swift
 # cam, as make demo runs it): every promised file, the simulated-data label naming the cam as
 # the reference, one error row per validation case and model, the data set's own tire used
-# and written back, and the stated accuracy.
+# and written back, the stated accuracy, and --jobs 1 and --jobs 3 writing the same files
+# apart from timings (the cam as the reference of the obstacles outside, one instance each).
 # Usage: tests/study_runs_205.sh BIN DATA_DIR.
 set -eu
 bin=$1 data=$2
@@ -15,7 +16,7 @@ check() { # check N "what" command...
     if "$@" >/dev/null 2>&1; then pass=$((pass + 1)); echo "ok $n - $what"
     else fail=$((fail + 1)); echo "not ok $n - $what"; fi
 }
-"$bin" study --data "$data" -o "$tmp/s" >"$tmp/out" 2>&1 ||
+"$bin" study --data "$data" --jobs 3 -o "$tmp/s" >"$tmp/out" 2>&1 ||
     { cat "$tmp/out"; echo "0 passed, 1 failed"; exit 1; }
 for f in report.md errors.csv errors.md timing.csv fitted.tir nn.json nn-physical.json \
          F.png F.svg F.gp F.dat J.png R.png AB.png physical-network/report.md \
@@ -59,5 +60,10 @@ better() {
         "$tmp/s/errors.csv"
 }
 check 13 "springs nearer than the rigid disc on each validation case" better
+# shellcheck source=tests/untimed.sh
+. "$(dirname "$0")/untimed.sh"
+"$bin" study --data "$data" --jobs 1 -o "$tmp/s1" >"$tmp/out1" 2>&1 || cat "$tmp/out1"
+check 14 "--jobs 1 = --jobs 3: the fit, networks, errors, plot data, reports" \
+    same_apart_from_timings "$tmp/s1" "$tmp/s"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

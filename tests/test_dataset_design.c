@@ -208,7 +208,7 @@ static void test_build_205(void **state)
     tirenv_diag_clear(&diag);
     assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/205-60R15-mfswift.tir", &t, &diag),
                      TIRENV_OK);
-    assert_int_equal(tirenv_dataset_build_design(dir, d, &t, NULL, NULL, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_dataset_build_design(dir, d, &t, NULL, &diag), TIRENV_OK);
     tirenv_dataset_source src;
     assert_int_equal(tirenv_dataset_source_read(dir, &src, &diag), TIRENV_OK);
     assert_string_equal(src.design, "205-60R15");

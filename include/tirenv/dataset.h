@@ -71,21 +71,33 @@ const tirenv_design *const *tirenv_designs(void);
 /* The design of this name, or NULL. */
 const tirenv_design *tirenv_design_find(const char *name);
 
-/* Builds a designed data set into dir (created if missing): for each case the design's model
- * of `tire` is loaded to the case's contact length, run over the cleat on the virtual rig
- * (seeded), its log written to dir/logs/<case>.csv, imported to dir/curves/<case>.csv; then
- * dir/tire.tir (the tire as simulated), dir/source.txt (what simulated the data,
- * tirenv_dataset_source) and last the manifest dir/cases.csv. Deterministic: the same design
- * and tire give the same bytes. progress (may be NULL) is called after each case. */
+/* How a data set is built. */
+typedef struct {
+    size_t jobs;              /* cases run at once, each on its own thread with its own model
+                               * instance (default 1: no thread is started;
+                               * tirenv/parallel.h); the bytes written are the same for every
+                               * value */
+    void (*progress)(void *ctx, size_t done, size_t total); /* after each case (calls never
+                               * overlap, may come from any thread); may be NULL */
+    void *progress_ctx;
+} tirenv_dataset_build_settings;
+
+tirenv_dataset_build_settings tirenv_dataset_build_default(void);
+
+/* Builds a designed data set into dir (created if missing; written as a whole, see
+ * tirenv_outdir): for each case a fresh instance of the design's model of `tire` is loaded to
+ * the case's contact length, run over the cleat on the virtual rig (seeded), its log written
+ * to dir/logs/<case>.csv, imported to dir/curves/<case>.csv; then dir/tire.tir (the tire as
+ * simulated), dir/source.txt (what simulated the data, tirenv_dataset_source) and last the
+ * manifest dir/cases.csv. Deterministic: the same design and tire give the same bytes,
+ * whatever s->jobs. s NULL: the defaults. */
 int tirenv_dataset_build_design(const char *dir, const tirenv_design *design,
                                 const tirenv_tire *tire,
-                                void (*progress)(void *ctx, size_t done, size_t total),
-                                void *ctx, tirenv_diag *diag);
+                                const tirenv_dataset_build_settings *s, tirenv_diag *diag);
 
 /* tirenv_dataset_build_design with the default design (the tractor set, the ring). */
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
-                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
-                         tirenv_diag *diag);
+                         const tirenv_dataset_build_settings *s, tirenv_diag *diag);
 
 /* What a data set says about where its curves came from: dir/source.txt (docs/formats.md
  * section 9), written by tirenv dataset build. A data set without it says nothing (measured,

@@ -50,6 +50,9 @@ typedef struct {
                             * UNLOADED_RADIUS) */
     size_t max_iter;       /* trust-region iterations (default 50) */
     double xtol;           /* relative step tolerance (default 1e-6) */
+    size_t jobs;           /* training cases evaluated at once, each worker with its own
+                            * model (default 1: no thread; tirenv/parallel.h); the result is
+                            * the same, bit for bit, for every value */
     void (*progress)(void *ctx, size_t iter, double rms); /* may be NULL */
     void *progress_ctx;
 } tirenv_fit_settings;
@@ -152,6 +155,11 @@ typedef struct {
     const char *nn_label;       /* where the network came from, or NULL */
     int images;                 /* 1: run gnuplot to draw PNG and SVG (default 1) */
     const char *gnuplot;        /* the gnuplot program (default "gnuplot", found on PATH) */
+    size_t jobs;                /* (model, case) evaluations run at once, each worker with
+                                 * its own instance of every model (default 1: no thread;
+                                 * tirenv/parallel.h); the curves and errors are the same, bit
+                                 * for bit, for every value, the timings are each thread's
+                                 * own CPU time */
 } tirenv_compare_settings;
 
 tirenv_compare_settings tirenv_compare_default(void);
@@ -187,8 +195,9 @@ typedef struct {
  * errors.csv, errors.md and timing.csv. Physical models are built from tire (checked), the
  * network (NULL: none) is run at the cases' contact lengths with s->nn_R0 when it is above 0
  * (the radius the network's data referred to), else the tire's R0. A model that
- * fails on a case does not stop the comparison: its entry records why. Timing repeats each
- * model's pass over all cases until s->min_time has passed and keeps the fastest pass.
+ * fails on a case does not stop the comparison: its entry records why. Timing (CPU time of
+ * the evaluating thread) repeats each model's pass over all cases until s->min_time has
+ * passed and keeps the fastest pass.
  * *out must be freed with tirenv_compare_result_free, also after a failure. TIRENV_EINVAL
  * for an unknown case name or no case; TIRENV_EIO when a file cannot be written or gnuplot
  * fails (diag names it). */
@@ -239,6 +248,12 @@ typedef struct {
                                     * then from the ring (default: the ring, the embedded
                                     * tractor set) */
     int images;                    /* draw PNG and SVG with gnuplot (default 1) */
+    size_t jobs;                   /* threads running at once (default 1: none started;
+                                    * tirenv/parallel.h): the fit's cases, the seeds and the
+                                    * trainings' restarts, the grid and outside curves, and the
+                                    * three comparisons side by side with their evaluations;
+                                    * every result but the timings is the same, bit for bit,
+                                    * for every value */
     void (*progress)(void *ctx, const char *stage, size_t step, size_t steps);
     void *progress_ctx;
 } tirenv_study_settings;

@@ -11,6 +11,7 @@
 #define TIRENV_TIRENV_H
 
 #include "tirenv/error.h"
+#include "tirenv/parallel.h"
 #include "tirenv/profile.h"
 #include "tirenv/xn.h"
 #include "tirenv/road.h"
@@ -39,6 +40,7 @@
 #include "tirenv/nn.h"
 #include "tirenv/train.h"
 #include "tirenv/study.h"
+#include "tirenv/sweep.h"
 #include "tirenv/version.h"
 
 #endif

@@ -130,6 +130,11 @@ typedef struct {
     tirenv_backprop_settings backprop;
     tirenv_rprop_settings rprop;
     tirenv_lm_settings lm;
+    size_t jobs;                  /* restarts run at once, one thread each (default 1: no
+                                     thread; tirenv/parallel.h); the network is the same, bit
+                                     for bit, for every value. With more than one, progress
+                                     calls come from several threads (never at once), and a
+                                     cancel stops every restart running */
     tirenv_train_progress_fn progress;  /* NULL: none */
     void *progress_data;
 } tirenv_train_settings;

@@ -40,6 +40,7 @@ int cli_study_main(int argc, char *argv[]);
 int cli_road_main(int argc, char *argv[]);
 int cli_convert_main(int argc, char *argv[]);
 int cli_ride_main(int argc, char *argv[]);
+int cli_sweep_main(int argc, char *argv[]);
 
 /* ---- the shared parser ------------------------------------------------------------------ */
 
@@ -55,8 +56,9 @@ enum {
     CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
     CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need, and
                              * --extrapolate */
-    CLI_TRACKS = 1u << 8    /* --width W, --tracks N: tracks across the tire's width (with
+    CLI_TRACKS = 1u << 8,   /* --width W, --tracks N: tracks across the tire's width (with
                              * CLI_OBSTACLE, which has --track V and --side S) */
+    CLI_JOBS = 1u << 9      /* --jobs N: work items at once (default: the cores) */
 };
 
 /* The obstacle options, for cli_options.obstacle. */
@@ -97,6 +99,7 @@ typedef struct {
     const char *output;               /* -o, --output, or NULL */
     const tirenv_model_type *type;    /* --model, or NULL */
     const char *nn_path;              /* --nn, or NULL */
+    size_t jobs;                      /* --jobs, else cli_jobs_default() (with CLI_JOBS) */
     int extrapolate;                  /* --extrapolate: the network outside its trained
                                        * ranges (tirenv_model_set_extrapolate) */
     const char *args[CLI_MAX_ARGS];   /* positional arguments, in order */
@@ -148,6 +151,7 @@ void cli_help_tire(FILE *fp, int with_method);
 void cli_help_load(FILE *fp);
 void cli_help_obstacle(FILE *fp);
 void cli_help_sweep(FILE *fp);
+void cli_help_jobs(FILE *fp);
 /* "--model NAME", listing the models the library has (those whose flags include all of
  * `with` and none of `without`), then fallback (e.g. " (default x)"). */
 void cli_help_model(FILE *fp, unsigned with, unsigned without, const char *fallback);
@@ -255,10 +259,18 @@ int cli_exit_code(int status);
 
 /* CPU time of this process, s (what "on one core" means for a single-threaded run). */
 double cli_cpu_seconds(void);
+/* CPU time of the calling thread, s: one work item's cost when several run at once. */
+double cli_thread_seconds(void);
 /* Wall time since an arbitrary start (CLOCK_MONOTONIC), s. */
 double cli_wall_seconds(void);
 
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);
+
+/* --jobs (jobs.c): the default, every core this process may run on; N parsed from arg, in
+ * [1, CLI_MAX_JOBS] (else prints why and returns CLI_EXIT_USAGE). */
+#define CLI_MAX_JOBS 1024
+size_t cli_jobs_default(void);
+int cli_parse_jobs(const char *arg, size_t *jobs);
 
 #endif

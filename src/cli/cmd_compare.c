@@ -16,7 +16,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv compare [--data DIR] [--tire FITTED.tir] [--nn MODEL.json]\n"
           "                      [--cases F,J,R | --split NAME] [--simulated-by MODEL]\n"
-          "                      [-o REPORT_DIR] [--models LIST] [--no-images]\n"
+          "                      [-o REPORT_DIR] [--models LIST] [--no-images] [--jobs N]\n"
           "\n"
           "Evaluates every model on the chosen cases of a data set and writes to\nREPORT_DIR:\n"
           "  <case>.png, <case>.svg  h (mm) over x_N: measured points, one line per model\n"
@@ -56,6 +56,7 @@ static void usage(FILE *fp)
           "  -o, --output DIR     report directory, created if missing\n"
           "                       (default out/compare)\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -169,10 +170,12 @@ static int parse(int argc, char *argv[], cli_options *o, compare_options *co)
         {.name = NULL},
     };
     const cli_parser p = {.name = "compare", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_NETWORK};
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_NETWORK |
+                                    CLI_JOBS};
     const int code = cli_parse(&p, argc, argv, o);
     if (code != CLI_GO_ON)
         return code;
+    co->s.jobs = o->jobs;
     co->s.simulated |= simulated;
     if (no_images)
         co->s.images = 0;

@@ -8,7 +8,8 @@
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv dataset build [--design NAME] [-o DIR] [--tire FILE] [--set KEY=VALUE]...\n"
+    fputs("usage: tirenv dataset build [--design NAME] [-o DIR] [--jobs N] [--tire FILE]\n"
+          "                           [--set KEY=VALUE]...\n"
           "       tirenv dataset list [DIR]\n"
           "\n"
           "build: regenerates an embedded data set bit for bit: 28 cleat runs on the virtual\n"
@@ -30,6 +31,7 @@ static void usage(FILE *fp)
           "  --design NAME        the data set to build (default 14.9R28)\n"
           "  -o DIR               where to build (created if missing)\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -89,7 +91,7 @@ int cli_dataset_main(int argc, char *argv[])
         {.name = NULL},
     };
     const cli_parser p = {.name = "dataset", .usage = usage, .max_args = 2, .opts = own,
-                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT};
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_JOBS};
     cli_options o;
     const int parsed = cli_parse(&p, argc, argv, &o);
     if (parsed != CLI_GO_ON)
@@ -134,7 +136,10 @@ int cli_dataset_main(int argc, char *argv[])
         return list(dir, tire.springs.R0);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_dataset_build_design(dir, design, &tire, progress, NULL, &diag);
+    tirenv_dataset_build_settings bs = tirenv_dataset_build_default();
+    bs.jobs = o.jobs;
+    bs.progress = progress;
+    const int status = tirenv_dataset_build_design(dir, design, &tire, &bs, &diag);
     if (status)
         return cli_fail(status, &diag);
     fprintf(stderr, "tirenv: dataset: %zu simulated cases (%s) written to %s\n",

@@ -11,7 +11,8 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv fit --data DIR [--model springs|cam|ring] [--fit-radius | --all]\n"
-          "                  [--check-refinement] [-o FITTED.tir] [--tire FILE] [--set K=V]...\n"
+          "                  [--check-refinement] [-o FITTED.tir] [--jobs N] [--tire FILE]\n"
+          "                  [--set K=V]...\n"
           "\n"
           "Identifies RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS (and UNLOADED_RADIUS with\n"
           "--fit-radius) of the springs model, ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
@@ -34,6 +35,7 @@ static void usage(FILE *fp)
           "  -o, --output FILE    write the fitted tire (.tir); default: print only\n",
           fp);
     cli_help_model(fp, TIRENV_MODEL_FITTABLE, 0, " (default springs)");
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -119,7 +121,8 @@ int cli_fit_main(int argc, char *argv[])
         {.name = NULL},
     };
     const cli_parser p = {.name = "fit", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_METHOD | CLI_MODEL | CLI_OUTPUT};
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_MODEL | CLI_OUTPUT |
+                                    CLI_JOBS};
     cli_options o;
     const int parsed = cli_parse(&p, argc, argv, &o);
     if (parsed != CLI_GO_ON)
@@ -128,6 +131,7 @@ int cli_fit_main(int argc, char *argv[])
     fs.type = o.type ? o.type : tirenv_model_springs;
     fs.fit_R0 = fit_radius || fit_all;
     fs.progress = progress;
+    fs.jobs = o.jobs;
     const char *out = o.output;
     const unsigned flags = tirenv_model_type_flags(fs.type);
     if (!(flags & TIRENV_MODEL_FITTABLE)) {

@@ -14,7 +14,7 @@ static void usage(FILE *fp)
           "                   [--nn FILE [--extrapolate]]\n"
           "                   [--vehicle FILE] [--set KEY=VALUE]... [--x-from X] [--x-to X]\n"
           "                   [--dx DX] [--dt S] [--solver rk4|rk8pd] [-o FILE]\n"
-          "                   [--out-dir DIR [--series]]\n"
+          "                   [--out-dir DIR [--series]] [--jobs N]\n"
           "                   [--enveloping static|dynamic|direct[,...]]\n"
           "\n"
           "Drives a pitch-plane tractor (body heave and pitch on a front and a rear axle, the\n"
@@ -80,9 +80,10 @@ static void usage(FILE *fp)
           "  --out-dir DIR        the comfort tables and plots into DIR (created if needed;\n"
           "                       replaced as a whole when the run succeeds, files of DIR\n"
           "                       the run does not write are kept)\n"
-          "  --series             with --out-dir: also every run's time series\n"
-          "  -h, --help           show this help\n",
+          "  --series             with --out-dir: also every run's time series\n",
           fp);
+    cli_help_jobs(fp);
+    fputs("  -h, --help           show this help\n", fp);
 }
 
 /* "10", "2.5m/s" or "10km/h" in m/s; 0 on success. */
@@ -230,11 +231,13 @@ int cli_ride_main(int argc, char *argv[])
         {.name = NULL},
     };
     const cli_parser p = {.name = "ride", .usage = usage, .opts = own,
-                          .groups = CLI_OBSTACLE | CLI_SWEEP | CLI_OUTPUT | CLI_NETWORK};
+                          .groups = CLI_OBSTACLE | CLI_SWEEP | CLI_OUTPUT | CLI_NETWORK |
+                                    CLI_JOBS};
     cli_options o;
     const int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)
         return code;
+    r.jobs = o.jobs;
     r.nn_path = o.nn_path;
     r.extrapolate = o.extrapolate;
     r.out_path = o.output;

@@ -13,7 +13,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
           "                    [--seed S] [--seeds N] [--input even|paper]\n"
-          "                    [--measured | --simulated-by MODEL] [--no-images]\n"
+          "                    [--measured | --simulated-by MODEL] [--no-images] [--jobs N]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
@@ -46,6 +46,7 @@ static void usage(FILE *fp)
           "  --measured           the data are real measurements\n"
           "  --no-images          write the gnuplot scripts but do not run gnuplot\n",
           fp);
+    cli_help_jobs(fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -110,7 +111,7 @@ int cli_study_main(int argc, char *argv[])
         {.name = NULL},
     };
     const cli_parser p = {.name = "study", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT};
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_OUTPUT | CLI_JOBS};
     cli_options o;
     const int parsed = cli_parse(&p, argc, argv, &o);
     if (parsed != CLI_GO_ON)
@@ -127,6 +128,7 @@ int cli_study_main(int argc, char *argv[])
     s.seed = (unsigned long)seed;
     s.seeds = (size_t)seeds;
     s.images = !no_images;
+    s.jobs = o.jobs;
     if (o.output)
         s.out_dir = o.output;
     /* The data set says what simulated it and with which tire (source.txt, as tirenv dataset

@@ -19,7 +19,7 @@ static void usage(FILE *fp)
           "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
           "                    [--lm-solver cholesky|gsl] [--ensemble K] [--input paper|even]\n"
           "                    [--even-width A] [--target h|h/H] [--loss points|curves]\n"
-          "                    [--paper] [--seeds N] [-o MODEL.json]\n"
+          "                    [--paper] [--seeds N] [-o MODEL.json] [--jobs N]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "Trains the empirical model's network (inputs x_N, contact length, obstacle height,\n"
@@ -65,9 +65,10 @@ static void usage(FILE *fp)
           "                       the network is not saved\n"
           "  --tire FILE, --set KEY=VALUE\n"
           "                       the tire whose UNLOADED_RADIUS imports raw logs and defines\n"
-          "                       x_N (default: the default tire)\n"
-          "  -h, --help           show this help\n",
+          "                       x_N (default: the default tire)\n",
           fp);
+    cli_help_jobs(fp);
+    fputs("  -h, --help           show this help\n", fp);
 }
 
 /* The bar on standard error, redrawn at most ten times a second. */
@@ -242,7 +243,7 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
         {.name = NULL},
     };
     const cli_parser p = {.name = "train", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_OUTPUT};
+                          .groups = CLI_TIRE | CLI_OUTPUT | CLI_JOBS};
     const int code = cli_parse(&p, argc, argv, o);
     if (code != CLI_GO_ON)
         return code;
@@ -385,6 +386,7 @@ int cli_train_main(int argc, char *argv[])
     }
 
     tirenv_train_settings set = settings_from(&t);
+    set.jobs = o.jobs;
     bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0,
              .over_H = set.target == TIRENV_NN_TARGET_H_OVER_H};
     if (isatty(STDERR_FILENO) && t.seeds < 0) {

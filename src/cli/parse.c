@@ -26,6 +26,7 @@ enum {
     OPT_SIDE,
     OPT_WIDTH,
     OPT_TRACKS,
+    OPT_JOBS,
     OPT_EXTRAPOLATE,
     OPT_OWN                /* OPT_OWN + i: the command's own option i */
 };
@@ -75,6 +76,7 @@ static const struct {
     {CLI_OUTPUT, {"output", required_argument, NULL, 'o'}, 0},
     {CLI_MODEL, {"model", required_argument, NULL, OPT_MODEL}, 0},
     {CLI_NETWORK, {"nn", required_argument, NULL, OPT_NN}, 0},
+    {CLI_JOBS, {"jobs", required_argument, NULL, OPT_JOBS}, 0},
     {CLI_NETWORK, {"extrapolate", no_argument, NULL, OPT_EXTRAPOLATE}, 0},
 };
 enum { N_SHARED = sizeof shared / sizeof shared[0], MAX_OWN = 32 };
@@ -151,6 +153,8 @@ static int shared_option(cli_options *o, int code, const char *arg)
     case OPT_NN:
         o->nn_path = arg;
         return CLI_EXIT_OK;
+    case OPT_JOBS:
+        return cli_parse_jobs(arg, &o->jobs);
     case OPT_TRACK:
         if (cli_parse_double(arg, &o->track)) {
             cli_error("--track: expected a lateral position in m, got '%s'", arg);
@@ -264,6 +268,7 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
 {
     memset(o, 0, sizeof *o);
     o->x_from = o->x_to = o->dx = NAN;
+    o->jobs = p->groups & CLI_JOBS ? cli_jobs_default() : 1;
     struct option longopts[N_SHARED + MAX_OWN + 2];
     int repeatable[N_SHARED + MAX_OWN + 2];
     size_t seen[N_SHARED + MAX_OWN + 2] = {0};

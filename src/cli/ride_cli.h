@@ -58,6 +58,7 @@ typedef struct {
     double dx;                       /* input grid, m */
     double dt;                       /* output interval, s */
     tirenv_ride_method method;
+    size_t jobs;                     /* --jobs: model inputs and runs at once */
 } ride_options;
 
 /* One run's figures. */

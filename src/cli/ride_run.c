@@ -9,6 +9,7 @@
 #include "cli/csv_row.h"
 #include "cli/ride_cli.h"
 #include "tirenv/nn_file.h"
+#include "tirenv/parallel.h"
 
 /* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
  * its end inside a run; and the default run-in before the obstacle and settling after it. */
@@ -25,7 +26,8 @@ typedef struct {
     double seconds;        /* CPU time of the effective profiles, s */
     tirenv_ride_table table[2];  /* front, rear over loads (--enveloping dynamic) */
     double table_seconds;  /* CPU time of the tables, s */
-    tirenv_model *direct[2];     /* front, rear models for --enveloping direct */
+    tirenv_nn *nn;         /* the network the model evaluates, or NULL */
+    double R0_nn;          /* the radius its x_N refers to (0: the tire's), m */
 } ride_inputs;
 
 typedef struct {
@@ -85,73 +87,117 @@ static int asks(const ride_options *r, ride_enveloping e)
     return 0;
 }
 
-/* The direct evaluation's models, set on the profile at the static loads. */
-static int direct_models(const ride_setup *s, ride_inputs *in, const tirenv_nn *nn, double R0,
-                         int r_extrapolate, tirenv_diag *diag)
+/* The direct evaluation's models of one run, set on the profile at the static loads (a run
+ * changes their load as it goes, so no two runs share them). */
+static int direct_models(const ride_setup *s, const ride_inputs *in, int extrapolate,
+                         tirenv_model *m[2], tirenv_diag *diag)
 {
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle) {
-        tirenv_model *m = in->direct[axle] = tirenv_model_alloc(in->type, &s->tire[axle]);
-        status = m ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        if (m)
-            tirenv_model_set_extrapolate(m, r_extrapolate);
-        if (!status && (tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK))
-            status = tirenv_model_set_network(m, nn, R0, diag);
+        m[axle] = tirenv_model_alloc(in->type, &s->tire[axle]);
+        if (!m[axle])
+            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        tirenv_model_set_extrapolate(m[axle], extrapolate);
+        if (in->nn)
+            status = tirenv_model_set_network(m[axle], in->nn, in->R0_nn, diag);
         if (!status)
-            status = tirenv_model_set(m, s->p, s->load[axle], diag);
+            status = tirenv_model_set(m[axle], s->p, s->load[axle], diag);
     }
     return status;
 }
 
-static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs *in)
+/* The inputs of every model for both axles: n_models x 2 independent items on --jobs
+ * threads, each with model instances of its own (ride_cli_axle_input and _table make them),
+ * timed on its own thread's CPU clock; warnings and failures are reported afterwards, in
+ * order. */
+typedef struct {
+    const ride_options *r;
+    const ride_setup *s;
+    ride_inputs *in;
+    double (*seconds)[2];      /* per item: the static inputs', the tables' */
+    char (*warnings)[1024];    /* per item */
+    int *status;               /* per item */
+} inputs_pass;
+
+static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
 {
+    inputs_pass *p = ctx;
+    const ride_options *r = p->r;
+    const ride_setup *s = p->s;
+    ride_inputs *in = &p->in[k / 2];
+    const int axle = (int)(k % 2);
+    (void)worker;
+    int status = TIRENV_OK;
+    double t0 = cli_thread_seconds();
+    if (asks(r, RIDE_STATIC))
+        status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, in->nn,
+                                     in->R0_nn, r->extrapolate, s->x0, s->dx, s->n,
+                                     in->w[axle], p->warnings[k], sizeof p->warnings[k], diag);
+    p->seconds[k][0] = cli_thread_seconds() - t0;
+    t0 = cli_thread_seconds();
+    if (!status && asks(r, RIDE_DYNAMIC)) {
+        char table_warnings[1024];
+        status = ride_cli_axle_table(in->type, &s->tire[axle], s->load[axle], s->p, in->nn,
+                                     in->R0_nn, r->extrapolate, s->x0, s->dx, s->n,
+                                     &in->table[axle], table_warnings, sizeof table_warnings,
+                                     diag);
+        if (!asks(r, RIDE_STATIC))
+            snprintf(p->warnings[k], sizeof p->warnings[k], "%s", table_warnings);
+    }
+    p->seconds[k][1] = cli_thread_seconds() - t0;
+    /* Direct runs make their models as they go; set one here so that a profile or load the
+     * model refuses is named before any run. */
+    if (!status && asks(r, RIDE_DIRECT)) {
+        tirenv_model *m[2] = {NULL, NULL};
+        status = direct_models(s, in, r->extrapolate, m, diag);
+        tirenv_model_free(m[0]);
+        tirenv_model_free(m[1]);
+    }
+    return p->status[k] = status;
+}
+
+static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs in[])
+{
+    const size_t n_items = 2 * r->n_models;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    for (int axle = 0; axle < 2; ++axle)
-        if (!(in->w[axle] = malloc(s->n * sizeof *in->w[axle])))
-            return cli_fail(TIRENV_ENOMEM, NULL);
-    tirenv_nn *nn = NULL;
-    tirenv_train_record rec = {.R0 = 0};
-    int status = TIRENV_OK, axle = 0;
-    if ((tirenv_model_type_flags(in->type) & TIRENV_MODEL_NEEDS_NETWORK) &&
-        (status = tirenv_nn_read_json(r->nn_path, &nn, &rec, &diag)))
-        return cli_fail(status, &diag);
-    double t0 = cli_cpu_seconds();
-    for (; axle < 2 && asks(r, RIDE_STATIC); ++axle) {
-        char warnings[1024];
+    double seconds[2 * RIDE_MAX_MODELS][2];
+    char warnings[2 * RIDE_MAX_MODELS][1024];
+    int item_status[2 * RIDE_MAX_MODELS] = {0};
+    inputs_pass pass = {r, s, in, seconds, warnings, item_status};
+    int code = CLI_EXIT_OK, status = TIRENV_OK;
+    for (size_t i = 0; i < r->n_models && !code; ++i) {
+        for (int axle = 0; axle < 2; ++axle)
+            if (!(in[i].w[axle] = malloc(s->n * sizeof *in[i].w[axle])))
+                code = cli_fail(TIRENV_ENOMEM, NULL);
         /* x_N refers to the radius of the network's data, when the file records it. */
-        if ((status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n,
-                                          in->w[axle], warnings, sizeof warnings, &diag)))
+        tirenv_train_record rec = {.R0 = 0};
+        if (!code && (tirenv_model_type_flags(in[i].type) & TIRENV_MODEL_NEEDS_NETWORK)) {
+            if ((status = tirenv_nn_read_json(r->nn_path, &in[i].nn, &rec, &diag)))
+                code = cli_fail(status, &diag);
+            in[i].R0_nn = rec.R0;
+        }
+    }
+    for (size_t k = 0; k < n_items; ++k)
+        warnings[k][0] = '\0';
+    if (!code)
+        status = tirenv_parallel_for(n_items, r->jobs, input_item, NULL, &pass, &diag);
+    for (size_t k = 0; k < n_items && !code; ++k) {
+        const size_t i = k / 2;
+        const int axle = (int)(k % 2);
+        if (item_status[k]) {
+            char msg[1200];
+            cli_error("ride: %s model, %s axle (tire load %.6g N): %s", in[i].name,
+                      axle ? "rear" : "front", s->load[axle],
+                      tirenv_diag_format(&diag, msg, sizeof msg));
+            code = cli_exit_code(status);
             break;
-        axle_warnings(in->name, axle, warnings);
+        }
+        axle_warnings(in[i].name, axle, warnings[k]);
+        in[i].seconds = (axle ? in[i].seconds : 0) + seconds[k][0];
+        in[i].table_seconds = (axle ? in[i].table_seconds : 0) + seconds[k][1];
     }
-    in->seconds = cli_cpu_seconds() - t0;
-    t0 = cli_cpu_seconds();
-    for (axle = 0; !status && axle < 2 && asks(r, RIDE_DYNAMIC); ++axle) {
-        char warnings[1024];
-        if ((status = ride_cli_axle_table(in->type, &s->tire[axle], s->load[axle], s->p, nn,
-                                          rec.R0, r->extrapolate, s->x0, s->dx, s->n,
-                                          &in->table[axle],
-                                          warnings, sizeof warnings, &diag)))
-            break;
-        if (!asks(r, RIDE_STATIC))
-            axle_warnings(in->name, axle, warnings);
-    }
-    in->table_seconds = cli_cpu_seconds() - t0;
-    if (!status && asks(r, RIDE_DIRECT)) {
-        axle = 0;
-        status = direct_models(s, in, nn, rec.R0, r->extrapolate, &diag);
-    }
-    tirenv_nn_free(nn);
-    if (status) {
-        char msg[1200];
-        cli_error("ride: %s model, %s axle (tire load %.6g N): %s", in->name,
-                  axle ? "rear" : "front", s->load[axle],
-                  tirenv_diag_format(&diag, msg, sizeof msg));
-        return cli_exit_code(status);
-    }
-    return CLI_EXIT_OK;
+    return code;
 }
 
 static int write_series(const char *path, const ride_series *rs, const ride_result *res,
@@ -232,8 +278,9 @@ static void print_table(FILE *fp, const ride_result res[], size_t n)
 }
 
 /* One run of one model's inputs, the way of enveloping chosen. */
-static int run_one(const ride_setup *s, ride_inputs *in, ride_enveloping env,
-                   const tirenv_ride_settings *set, tirenv_ride_sample out[], tirenv_diag *diag)
+static int integrate(const ride_options *r, const ride_setup *s, const ride_inputs *in,
+                     ride_enveloping env, const tirenv_ride_settings *set,
+                     tirenv_ride_sample out[], tirenv_diag *diag)
 {
     if (env == RIDE_STATIC) {
         const tirenv_ride_track front = {s->x0, s->dx, s->n, in->w[0]};
@@ -244,29 +291,92 @@ static int run_one(const ride_setup *s, ride_inputs *in, ride_enveloping env,
         return tirenv_ride_run_dynamic(&s->v, &in->table[0], &in->table[1], set, out, diag);
     /* Direct: the models between the loads the tables span, their positions every half grid
      * spacing apart for dw/dx, as the tables' Steffen slope sees the grid. */
+    tirenv_model *m[2] = {NULL, NULL};
     ride_direct d[2];
     tirenv_ride_input fn[2];
-    for (int axle = 0; axle < 2; ++axle) {
+    int status = direct_models(s, in, r->extrapolate, m, diag);
+    for (int axle = 0; axle < 2 && !status; ++axle) {
         double load[TIRENV_RIDE_TABLE_LOADS];
-        size_t m = TIRENV_RIDE_TABLE_LOADS, lo = 0;
+        size_t top = TIRENV_RIDE_TABLE_LOADS, lo = 0;
         tirenv_ride_table_loads(s->load[axle], load);
         /* The heaviest and the lightest loads the model takes, as the tables end (a load
          * beyond the model's valid range, the network's outside its trained range). */
-        while (m > 1 && load[m - 1] > s->load[axle] &&
-               tirenv_model_set_load(in->direct[axle], load[m - 1], NULL))
-            --m;
-        while (lo + 1 < m && load[lo] < s->load[axle] &&
-               tirenv_model_set_load(in->direct[axle], load[lo], NULL))
+        while (top > 1 && load[top - 1] > s->load[axle] &&
+               tirenv_model_set_load(m[axle], load[top - 1], NULL))
+            --top;
+        while (lo + 1 < top && load[lo] < s->load[axle] &&
+               tirenv_model_set_load(m[axle], load[lo], NULL))
             ++lo;
-        int status = tirenv_model_set_load(in->direct[axle], s->load[axle], diag);
-        if (status)
-            return status;
-        d[axle] = (ride_direct){.m = in->direct[axle], .dx = s->dx};
+        status = tirenv_model_set_load(m[axle], s->load[axle], diag);
+        d[axle] = (ride_direct){.m = m[axle], .dx = s->dx};
         fn[axle] = (tirenv_ride_input){.fn = ride_cli_direct_input, .ctx = &d[axle],
-                                       .load_min = load[lo], .load_max = load[m - 1],
+                                       .load_min = load[lo], .load_max = load[top - 1],
                                        .dx = s->dx};
     }
-    return tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
+    if (!status)
+        status = tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
+    tirenv_model_free(m[0]);
+    tirenv_model_free(m[1]);
+    return status;
+}
+
+/* Every (speed, column) run: independent items on --jobs threads, each integrating,
+ * measuring and writing its own series; the CPU time of a run is its thread's. */
+typedef struct {
+    const ride_options *r;
+    const ride_setup *s;
+    const ride_inputs *in;
+    ride_result *res;
+    ride_series *series;
+    double x_from, x_last;     /* m */
+    int *status;               /* per run */
+} ride_runs;
+
+static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
+{
+    const ride_options *r = p->r;
+    const size_t j = k / r->n_cols, c = k % r->n_cols;
+    const ride_inputs *in = &p->in[r->cols[c].model];
+    const ride_enveloping env = r->cols[c].enveloping;
+    ride_result *q = &p->res[k];
+    ride_series *rs = &p->series[k];
+    tirenv_ride_settings set = tirenv_ride_default();
+    set.speed = r->speeds[j];
+    set.x_front0 = p->x_from;
+    set.duration = (run_end(r, p->s, set.speed, p->x_last) - p->x_from) / set.speed;
+    set.dt = r->dt;
+    set.method = r->method;
+    *q = (ride_result){.model = in->name, .label = r->cols[c].label, .enveloping = env,
+                       .speed = set.speed, .duration = set.duration};
+    rs->n = tirenv_ride_n_samples(&set);
+    rs->samples = malloc(rs->n * sizeof *rs->samples);
+    rs->a_w = malloc(rs->n * sizeof *rs->a_w);
+    if (!rs->samples || !rs->a_w)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    const double t0 = cli_thread_seconds();
+    int status = integrate(r, p->s, in, env, &set, rs->samples, diag);
+    const double inputs = env == RIDE_STATIC    ? in->seconds
+                          : env == RIDE_DYNAMIC ? in->table_seconds
+                                                : 0;
+    q->seconds = inputs + cli_thread_seconds() - t0;
+    if (!status)
+        status = measure(r, rs, q, diag);
+    if (!status && r->out_path)
+        status = write_series(r->out_path, rs, q, diag);
+    if (!status && r->out_dir && r->series) {
+        char path[4200];
+        snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->label,
+                 q->speed * 3.6);
+        status = write_series(path, rs, q, diag);
+    }
+    return status;
+}
+
+static int run_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    ride_runs *p = ctx;
+    (void)worker;
+    return p->status[k] = run_one(p, k, diag);
 }
 
 int ride_cli_run(const cli_options *o, const ride_options *r)
@@ -321,11 +431,28 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = r->model_names[i];
-        if ((code = model_inputs(r, &s, &in[i])))
-            goto done;
     }
+    /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
+     * memory": a 10 km/h km of road is 0.36 M samples. */
+    for (size_t j = 0; j < r->n_speeds; ++j) {
+        const double speed = r->speeds[j];
+        const double duration = (run_end(r, &s, speed, x_last) - x_from) / speed;
+        if (!(duration / r->dt < CLI_MAX_POSITIONS)) {
+            cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
+                      "most %.0f: check --speed (%g m/s) and --dt", duration, r->dt,
+                      duration / r->dt,
+                      duration / r->dt * (double)(sizeof *series->samples +
+                                                  sizeof *series->a_w) / 1e9,
+                      CLI_MAX_POSITIONS, speed);
+            code = CLI_EXIT_USAGE;
+            goto done;
+        }
+    }
+    if ((code = model_inputs(r, &s, in)))
+        goto done;
     /* --out-dir is written as a whole (tirenv_outdir): a failed or killed ride leaves the
-     * previous directory as it was. */
+     * previous directory as it was. The runs write their series into the staging
+     * directory. */
     ride_options staged_r;
     if (r->out_dir) {
         const int status = tirenv_outdir_begin(r->out_dir, &staged, &diag);
@@ -337,72 +464,30 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         staged_r.out_dir = tirenv_outdir_path(staged);
         r = &staged_r;
     }
-    for (size_t j = 0; j < r->n_speeds; ++j) {
-        for (size_t c = 0; c < r->n_cols; ++c) {
-            const size_t i = r->cols[c].model;
-            const ride_enveloping env = r->cols[c].enveloping;
-            ride_result *q = &res[j * r->n_cols + c];
-            ride_series *rs = &series[j * r->n_cols + c];
-            tirenv_ride_settings set = tirenv_ride_default();
-            set.speed = r->speeds[j];
-            set.x_front0 = x_from;
-            set.duration = (run_end(r, &s, set.speed, x_last) - x_from) / set.speed;
-            set.dt = r->dt;
-            set.method = r->method;
-            /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
-             * memory": a 10 km/h km of road is 0.36 M samples. */
-            if (!(set.duration / set.dt < CLI_MAX_POSITIONS)) {
-                cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
-                          "most %.0f: check --speed (%g m/s) and --dt", set.duration, set.dt,
-                          set.duration / set.dt,
-                          set.duration / set.dt * (double)(sizeof *rs->samples +
-                                                           sizeof *rs->a_w) / 1e9,
-                          CLI_MAX_POSITIONS, set.speed);
-                code = CLI_EXIT_USAGE;
-                goto done;
-            }
-            rs->n = tirenv_ride_n_samples(&set);
-            rs->samples = malloc(rs->n * sizeof *rs->samples);
-            rs->a_w = malloc(rs->n * sizeof *rs->a_w);
-            if (!rs->samples || !rs->a_w) {
-                code = cli_fail(TIRENV_ENOMEM, NULL);
-                goto done;
-            }
-            const double t0 = cli_cpu_seconds();
-            int status = run_one(&s, &in[i], env, &set, rs->samples, &diag);
-            const double inputs = env == RIDE_STATIC    ? in[i].seconds
-                                  : env == RIDE_DYNAMIC ? in[i].table_seconds
-                                                        : 0;
-            *q = (ride_result){.model = in[i].name, .label = r->cols[c].label,
-                               .enveloping = env, .speed = set.speed,
-                               .duration = set.duration,
-                               .seconds = inputs + cli_cpu_seconds() - t0};
-            if (!status)
-                status = measure(r, rs, q, &diag);
-            if (!status && r->out_path)
-                status = write_series(r->out_path, rs, q, &diag);
-            if (!status && r->out_dir && r->series) {
-                char path[4200];
-                snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->label,
-                         q->speed * 3.6);
-                status = write_series(path, rs, q, &diag);
-            }
-            if (status) {
-                char msg[1200];
-                cli_error("ride: %s model (%s) at %g m/s: %s", q->model,
-                          ride_enveloping_name(env), q->speed,
-                          tirenv_diag_format(&diag, msg, sizeof msg));
-                code = cli_exit_code(status);
-                goto done;
-            }
-        }
+    ride_runs runs = {r, &s, in, res, series, x_from, x_last, NULL};
+    if (!(runs.status = calloc(n_runs, sizeof *runs.status))) {
+        code = cli_fail(TIRENV_ENOMEM, NULL);
+        goto done;
     }
+    const int status = tirenv_parallel_for(n_runs, r->jobs, run_item, NULL, &runs, &diag);
+    for (size_t k = 0; status && k < n_runs; ++k)
+        if (runs.status[k]) {  /* the first failing run: the one diag is about */
+            char msg[1200];
+            cli_error("ride: %s model (%s) at %g m/s: %s", res[k].model,
+                      ride_enveloping_name(res[k].enveloping), res[k].speed,
+                      tirenv_diag_format(&diag, msg, sizeof msg));
+            code = cli_exit_code(status);
+            break;
+        }
+    free(runs.status);
+    if (code)
+        goto done;
     print_table(stdout, res, n_runs);
     if (r->out_dir && !(code = ride_cli_report(r, res, series, s.v.a + s.v.b))) {
-        const int status = tirenv_outdir_commit(staged, &diag);
+        const int committed = tirenv_outdir_commit(staged, &diag);
         staged = NULL;
-        if (status)
-            code = cli_fail(status, &diag);
+        if (committed)
+            code = cli_fail(committed, &diag);
     }
 done:
     tirenv_outdir_abort(staged);
@@ -411,8 +496,9 @@ done:
             free(in[i].w[axle]);
             free((double *)in[i].table[axle].load);
             free((double *)in[i].table[axle].w);
-            tirenv_model_free(in[i].direct[axle]);
         }
+    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
+        tirenv_nn_free(in[i].nn);
     for (size_t k = 0; series && k < n_runs; ++k) {
         free(series[k].samples);
         free(series[k].a_w);

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "data/tir_impl.h"
 #include "tirenv/io.h"
+#include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 
 /* Obstacle lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact lengths 0.28 to 0.43 m,
@@ -148,16 +149,25 @@ const tirenv_case_design *tirenv_dataset_design(size_t *n)
     return tractor;
 }
 
-/* One case: load the model to the contact length, run the rig, write the log, import it. */
-static int build_case(const char *dir, const design_record *r, size_t i, tirenv_model *m,
-                      double *load, tirenv_diag *diag)
+/* One case: load the model to the contact length, run the rig, write the log, import it.
+ * The model is the case's own (a fresh instance), so that the case's bytes depend on the case
+ * alone, whichever thread runs it and whatever ran before. */
+static int build_case(const char *dir, const design_record *r, size_t i,
+                      const tirenv_model_type *type, const tirenv_tire *tire, double *load,
+                      tirenv_diag *diag)
 {
     const tirenv_design *d = &r->d;
     const tirenv_case_design *c = &d->cases[i];
+    tirenv_model *m = tirenv_model_alloc(type, tire);
+    if (!m)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tire",
+                            "the %s model cannot be built from these parameters", d->model);
     int status = tirenv_model_load_for_contact_length(m, c->contact_length, load, diag);
     tirenv_profile *cleat = tirenv_profile_cleat(c->L, c->H);
-    if (!cleat)
+    if (!cleat) {
+        tirenv_model_free(m);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
     if (!status)
         status = tirenv_model_set(m, cleat, *load, diag);
     /* Each run has its own noise and its own rig zero, as separate runs of a real rig do. */
@@ -192,7 +202,38 @@ static int build_case(const char *dir, const design_record *r, size_t i, tirenv_
     tirenv_curve_free(&curve);
     tirenv_rig_log_free(&log);
     tirenv_profile_free(cleat);
+    tirenv_model_free(m);
     return status;
+}
+
+tirenv_dataset_build_settings tirenv_dataset_build_default(void)
+{
+    return (tirenv_dataset_build_settings){.jobs = 1, .progress = NULL, .progress_ctx = NULL};
+}
+
+/* What the parallel loop's items share: read-only but for load, each item its own slot. */
+typedef struct {
+    const char *dir;
+    const design_record *r;
+    const tirenv_model_type *type;
+    const tirenv_tire *tire;
+    const tirenv_dataset_build_settings *s;
+    double *load;             /* N, by case */
+} build_ctx;
+
+static int build_item(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    const build_ctx *b = ctx;
+    (void)worker;
+    return build_case(b->dir, b->r, i, b->type, b->tire, &b->load[i], diag);
+}
+
+static void build_done(void *ctx, size_t i, size_t n_done)
+{
+    const build_ctx *b = ctx;
+    (void)i;
+    if (b->s->progress)
+        b->s->progress(b->s->progress_ctx, n_done, b->r->d.n_cases);
 }
 
 /* source.txt (docs/formats.md section 9): what a study needs to know about the data. */
@@ -214,8 +255,7 @@ static int write_source(const char *dir, const tirenv_design *d, const char *not
 /* The data set of design d (whose record r and model type are known good) into dir. */
 static int build_into(const char *dir, const tirenv_design *d, const design_record *r,
                       const tirenv_model_type *type, const tirenv_tire *tire,
-                      void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
-                      tirenv_diag *diag)
+                      const tirenv_dataset_build_settings *s, tirenv_diag *diag)
 {
     double load[N_OF(car_205) > N_OF(tractor) ? N_OF(car_205) : N_OF(tractor)];
     if (d->n_cases > N_OF(load))
@@ -231,16 +271,8 @@ static int build_into(const char *dir, const tirenv_design *d, const design_reco
         status = tirenv_mkdir_p(path, diag);
     if (status)
         return status;
-    tirenv_model *m = tirenv_model_alloc(type, tire);
-    if (!m)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "tire",
-                            "the %s model cannot be built from these parameters", d->model);
-    for (size_t i = 0; i < d->n_cases && !status; ++i) {
-        status = build_case(dir, r, i, m, &load[i], diag);
-        if (progress && !status)
-            progress(ctx, i + 1, d->n_cases);
-    }
-    tirenv_model_free(m);
+    build_ctx b = {.dir = dir, .r = r, .type = type, .tire = tire, .s = s, .load = load};
+    status = tirenv_parallel_for(d->n_cases, s->jobs, build_item, build_done, &b, diag);
     char note[512];
     snprintf(note, sizeof note, "SIMULATED data set: %s, on the virtual rig; not measurements "
                                 "of a real tire.\nWritten by: tirenv dataset build%s%s",
@@ -279,9 +311,11 @@ static int build_into(const char *dir, const tirenv_design *d, const design_reco
  * previous one as it was. */
 int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
                                 const tirenv_tire *tire,
-                                void (*progress)(void *ctx, size_t done, size_t total),
-                                void *ctx, tirenv_diag *diag)
+                                const tirenv_dataset_build_settings *settings,
+                                tirenv_diag *diag)
 {
+    const tirenv_dataset_build_settings defaults = tirenv_dataset_build_default();
+    const tirenv_dataset_build_settings *s = settings ? settings : &defaults;
     const design_record *r = d ? record_of(d) : NULL;
     const tirenv_model_type *type = r ? tirenv_model_type_find(d->model) : NULL;
     if (!type)
@@ -293,7 +327,7 @@ int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
     int status = tirenv_outdir_begin(dir, &out, diag);
     if (status)
         return status;
-    status = build_into(tirenv_outdir_path(out), d, r, type, tire, progress, ctx, diag);
+    status = build_into(tirenv_outdir_path(out), d, r, type, tire, s, diag);
     if (status) {
         tirenv_outdir_abort(out);
         return status;
@@ -302,8 +336,7 @@ int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
 }
 
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
-                         void (*progress)(void *ctx, size_t done, size_t total), void *ctx,
-                         tirenv_diag *diag)
+                         const tirenv_dataset_build_settings *s, tirenv_diag *diag)
 {
-    return tirenv_dataset_build_design(dir, designs[0], tire, progress, ctx, diag);
+    return tirenv_dataset_build_design(dir, designs[0], tire, s, diag);
 }

@@ -30,6 +30,7 @@
 #include <unistd.h>
 
 #include "data/tmpfiles.h"
+#include "data/umask.h"
 
 /* More entries than this in an existing target is not a report directory but a mistake
  * (-o ~), which must not be copied and swapped. */
@@ -278,9 +279,8 @@ int tirenv_outdir_begin(const char *target, tirenv_outdir **out, tirenv_diag *di
         status = tirenv_error(diag, TIRENV_EIO, d->path, 0, "out_dir", "cannot use it: %s",
                               strerror(errno));
     } else if (!status) {
-        const mode_t mask = umask(0);
-        umask(mask);
-        mode = 0777 & ~mask;
+        mode = 0777 & ~tirenv_data__umask(); /* read without setting it: other threads may
+                                                * be creating files (tirenv/parallel.h) */
     }
     if (!status)
         status = make_parents(d, diag);

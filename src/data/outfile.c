@@ -4,6 +4,7 @@
  * device, a FIFO) is written through, and never replaced.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/io.h"
+#include "data/umask.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -27,13 +28,11 @@ static int outfile_is_stdout(const tirenv_outfile *f)
 
 /* The temporary file is created with mode 0600, and rename keeps it, whereas fopen would
  * have given 0666 minus the umask. So give it the mode the target already has, or the one
- * fopen would give. The umask can only be read by setting it; the moment it is 0 only
- * matters to a program creating files from several threads at once. */
+ * fopen would give: the umask read without setting it (the umask(0)/umask(mask) dance would
+ * leave it 0 for a moment while other threads create files, tirenv/parallel.h). */
 static mode_t new_file_mode(void)
 {
-    const mode_t mask = umask(0);
-    umask(mask);
-    return 0666 & ~mask;
+    return 0666 & ~tirenv_data__umask();
 }
 
 /* Writes through to descriptor fd (a name of it, or "-"): stdout itself for 1, so that its

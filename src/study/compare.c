@@ -11,12 +11,13 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <time.h>
 
 #include "study/compare_impl.h"
 #include "study/plot.h"
 #include "tirenv/io.h"
 #include "tirenv/nn.h"
-#include "study/clock.h"
+#include "tirenv/parallel.h"
 
 /* A cap on timing repeats, should the clock not advance. */
 enum { MAX_REPEATS = 1000000 };
@@ -42,6 +43,7 @@ tirenv_compare_settings tirenv_compare_default(void)
         .nn_label = NULL,
         .images = 1,
         .gnuplot = NULL,
+        .jobs = 1,
     };
     s.models[0] = tirenv_model_rigid;
     s.models[1] = tirenv_model_springs;
@@ -397,53 +399,121 @@ static void entry_failed(tirenv_compare_entry *e, size_t n, int status, const ti
         e->h[k] = NAN;
 }
 
-/* Model j on every case, then its timing. The first pass gives the curves (and is timed
- * too); more passes are run only until min_time has passed, and the fastest counts: the
- * others are the same work slowed by whatever else the machine did. Cases the model failed
- * on are left out of the timing. */
-static void run_model(evaluator *ev, size_t j, const tirenv_dataset *ds,
-                      const tirenv_compare_settings *s, tirenv_compare_result *r,
-                      double scratch[])
+/* The time a thread has spent running, s: what an evaluation costs on one core, whatever
+ * else runs beside it (other workers, other programs). */
+static double thread_seconds(void)
 {
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Every (model, case) entry is independent: they run on s->jobs threads, each worker with
+ * its own instance of every model (the network cloned: an instance is not thread-safe), and
+ * each entry's evaluation is timed on its own thread's clock. */
+typedef struct {
+    const tirenv_dataset *ds;
+    const tirenv_compare_settings *s;
+    tirenv_compare_result *r;
+    const tirenv_model_type *const *types;
+    const tirenv_tire *tire;
+    tirenv_nn *nn;
+    evaluator *ev;         /* jobs x n_models, built when a worker first needs one */
+    double *seconds;       /* per entry (model-major), s */
+} compare_pass;
+
+static int instance(compare_pass *p, size_t worker, size_t j, evaluator **out,
+                    tirenv_diag *diag)
+{
+    evaluator *ev = &p->ev[worker * p->r->n_models + j];
+    *out = ev;
+    if (ev->m || ev->nn)
+        return TIRENV_OK;
+    ev->R0 = p->s->nn_R0 > 0 ? p->s->nn_R0 : p->tire->springs.R0;
+    if ((int)j == p->r->nn_model)
+        ev->nn = tirenv_nn_clone(p->nn);  /* also on the caller's thread: the caller's network
+                                           * may be in use by other threads (a study runs its
+                                           * comparisons side by side) */
+    else
+        ev->m = tirenv_model_alloc(p->types[j], p->tire);
+    if (!ev->m && !ev->nn)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, p->r->model[j],
+                            "cannot allocate the %s model", p->r->model[j]);
+    return TIRENV_OK;
+}
+
+/* Entry k: model k / n_cases on case k % n_cases. A model failing on a case does not stop
+ * the comparison: the entry records why. */
+static int evaluate_entry(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    compare_pass *p = ctx;
+    tirenv_compare_result *r = p->r;
+    const size_t j = k / r->n_cases, i = k % r->n_cases;
+    evaluator *ev;
+    const int st = instance(p, worker, j, &ev, diag);
+    if (st)
+        return st;
+    const tirenv_case *c = &p->ds->cases[r->case_index[i]];
+    tirenv_compare_entry *e = &r->entry[i * r->n_models + j];
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    const double t0 = thread_seconds();
+    int status = evaluate(ev, c, e->h, &d);
+    p->seconds[k] = thread_seconds() - t0;
+    if (!status)
+        status = tirenv_curve_errors_compute(c->curve.n, c->curve.x, c->curve.h, e->h,
+                                             p->s->rise_threshold, &e->errors);
+    if (status)
+        entry_failed(e, c->curve.n, status, &d);
+    return TIRENV_OK;
+}
+
+/* Model j's timing: its first pass is the entries' own times; more passes, one model at a
+ * time on this thread, only until min_time has passed, and the fastest counts: the others
+ * are the same work slowed by whatever else the machine did. Cases the model failed on are
+ * left out. */
+static void time_model(compare_pass *p, size_t j, double scratch[])
+{
+    tirenv_compare_result *r = p->r;
     double pass = 0;
     size_t positions = 0;
-    for (size_t i = 0; i < r->n_cases; ++i) {
-        const tirenv_case *c = &ds->cases[r->case_index[i]];
-        tirenv_compare_entry *e = &r->entry[i * r->n_models + j];
-        tirenv_diag d;
-        tirenv_diag_clear(&d);
-        const double t0 = tirenv_study__wall_seconds();
-        int status = evaluate(ev, c, e->h, &d);
-        const double t1 = tirenv_study__wall_seconds();
-        if (!status)
-            status = tirenv_curve_errors_compute(c->curve.n, c->curve.x, c->curve.h, e->h,
-                                                 s->rise_threshold, &e->errors);
-        if (status) {
-            entry_failed(e, c->curve.n, status, &d);
-            continue;
+    for (size_t i = 0; i < r->n_cases; ++i)
+        if (r->entry[i * r->n_models + j].status == TIRENV_OK) {
+            pass += p->seconds[j * r->n_cases + i];
+            positions += p->ds->cases[r->case_index[i]].curve.n;
         }
-        pass += t1 - t0;
-        positions += c->curve.n;
-    }
     r->timed_positions[j] = positions;
+    r->timed_repeats[j] = 1;
     if (positions == 0) {
         r->time_per_position[j] = NAN;
         return;
     }
+    evaluator *ev = NULL;
     double best = pass, total = pass;
     size_t repeats = 1;
-    while (total < s->min_time && repeats < MAX_REPEATS) {
-        const double t0 = tirenv_study__wall_seconds();
+    while (total < p->s->min_time && repeats < MAX_REPEATS &&
+           instance(p, 0, j, &ev, NULL) == TIRENV_OK) {
+        const double t0 = thread_seconds();
         for (size_t i = 0; i < r->n_cases; ++i)
             if (r->entry[i * r->n_models + j].status == TIRENV_OK)
-                (void)evaluate(ev, &ds->cases[r->case_index[i]], scratch, NULL);
-        const double t = tirenv_study__wall_seconds() - t0;
+                (void)evaluate(ev, &p->ds->cases[r->case_index[i]], scratch, NULL);
+        const double t = thread_seconds() - t0;
         total += t;
         best = fmin(best, t);
         ++repeats;
     }
     r->timed_repeats[j] = repeats;
     r->time_per_position[j] = best / (double)positions;
+}
+
+static void pass_free(compare_pass *p, size_t jobs)
+{
+    for (size_t k = 0; p->ev && k < jobs * p->r->n_models; ++k) {
+        tirenv_model_free(p->ev[k].m);
+        tirenv_nn_free(p->ev[k].nn);
+    }
+    free(p->ev);
+    free(p->seconds);
 }
 
 /* ---- writing ------------------------------------------------------------------------------ */
@@ -586,6 +656,19 @@ static int write_plot_files(const tirenv_dataset *ds, const tirenv_compare_resul
     return status;
 }
 
+typedef struct {
+    const tirenv_plot__settings *ps;
+    const tirenv_dataset *ds;
+    const tirenv_compare_result *r;
+} draw_pass;
+
+static int draw_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    const draw_pass *p = ctx;
+    (void)worker;
+    return tirenv_plot__draw(p->ps, p->ds->cases[p->r->case_index[i]].name, diag);
+}
+
 int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn *nn,
                    const tirenv_compare_settings *s, tirenv_compare_result *out,
                    tirenv_diag *diag)
@@ -647,15 +730,18 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
                 status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
         }
 
-    for (size_t j = 0; j < out->n_models && !status; ++j) {
-        evaluator ev = {NULL, nn, s->nn_R0 > 0 ? s->nn_R0 : tire->springs.R0};
-        if ((int)j != out->nn_model && !(ev.m = tirenv_model_alloc(types[j], tire)))
-            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, out->model[j],
-                                  "cannot allocate the %s model", out->model[j]);
-        if (!status)
-            run_model(&ev, j, ds, s, out, scratch);
-        tirenv_model_free(ev.m);
-    }
+    const size_t jobs = s->jobs ? s->jobs : 1;
+    compare_pass pass = {ds, s, out, types, tire, nn, NULL, NULL};
+    pass.ev = calloc(jobs * out->n_models, sizeof *pass.ev);
+    pass.seconds = calloc(out->n_cases * out->n_models, sizeof *pass.seconds);
+    if (!status && (!pass.ev || !pass.seconds))
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    if (!status)
+        status = tirenv_parallel_for(out->n_cases * out->n_models, jobs, evaluate_entry, NULL,
+                                     &pass, diag);
+    for (size_t j = 0; j < out->n_models && !status; ++j)
+        time_model(&pass, j, scratch);
+    pass_free(&pass, jobs);
     free(scratch);
 
     const tirenv_plot__settings ps = {s->out_dir, s->simulated || s->simulated_by != NULL,
@@ -670,9 +756,11 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
         status = write_errors_md(ds, s, out, diag);
     if (!status)
         status = write_plot_files(ds, out, &ps, diag);
-    /* Last, so that without gnuplot everything else is already written. */
-    for (size_t i = 0; i < out->n_cases && !status && s->images; ++i)
-        status = tirenv_plot__draw(&ps, ds->cases[out->case_index[i]].name, diag);
+    /* Last, so that without gnuplot everything else is already written; one gnuplot per case,
+     * s->jobs at once. */
+    draw_pass dp = {&ps, ds, out};
+    if (!status && s->images)
+        status = tirenv_parallel_for(out->n_cases, jobs, draw_case, NULL, &dp, diag);
     out->images = !status && s->images;
     return status;
 }

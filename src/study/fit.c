@@ -2,6 +2,7 @@
  * squares on h over the training cases, with standard errors from the covariance. */
 #include "tirenv/study.h"
 #include "study/clock.h"
+#include "tirenv/parallel.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -12,7 +13,7 @@
 tirenv_fit_settings tirenv_fit_default(void)
 {
     return (tirenv_fit_settings){.type = NULL, .fit_R0 = 0, .max_iter = 50, .xtol = 1e-6,
-                                 .progress = NULL, .progress_ctx = NULL};
+                                 .jobs = 1, .progress = NULL, .progress_ctx = NULL};
 }
 
 /* A parameter is fitted as log(value - lower), which keeps it above its bound (positive
@@ -31,7 +32,15 @@ typedef struct {
     tirenv_tire tire;             /* the working copy the parameters are written into */
     const tirenv_model_param *params;
     size_t n_params;
-    double *h;                    /* scratch: one case's model curve */
+    size_t jobs;                  /* cases evaluated at once (tirenv/parallel.h) */
+    size_t n_cases;               /* cases of the split */
+    size_t *cases;                /* their indices in ds */
+    size_t *offset;               /* where each one's residuals start */
+    size_t n_max;                 /* the most points of a case */
+    double *h;                    /* scratch: one case's model curve per worker */
+    tirenv_model **models;        /* one model per worker, for the parameters of a pass */
+    gsl_vector *r;                /* the pass's residuals */
+    double last_pass;             /* wall time of the previous pass, s (-1: none yet) */
     int status;                   /* first failure inside the residual function */
     tirenv_diag *diag;
 } fit_ctx;
@@ -42,34 +51,59 @@ static void set_params(fit_ctx *c, const gsl_vector *p)
         *field(&c->tire, &c->params[i]) = c->params[i].lower + exp(gsl_vector_get(p, i));
 }
 
+/* One case's residuals h_model - h_meas, into its own stretch of r: the cases are
+ * independent, so they run on c->jobs threads, each worker with a model of its own built for
+ * this pass's parameters (a model is set afresh on every case, so its curve does not depend
+ * on which worker ran it). */
+static int case_residuals(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    fit_ctx *c = ctx;
+    if (!c->models[worker] && !(c->models[worker] = tirenv_model_alloc(c->type, &c->tire)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "fit",
+                            "parameters left the physical range");
+    const tirenv_case *cs = &c->ds->cases[c->cases[k]];
+    double *h = c->h + worker * c->n_max;
+    const int status = tirenv_case_predict_model(c->models[worker], cs, h, diag);
+    if (status)
+        return status;
+    for (size_t j = 0; j < cs->curve.n; ++j)
+        gsl_vector_set(c->r, c->offset[k] + j, h[j] - cs->curve.h[j]);
+    return TIRENV_OK;
+}
+
+/* Threads pay only for passes that take a while: starting them and handing out the cases
+ * costs tens of microseconds, and on a loaded machine a new thread may wait milliseconds for
+ * its first turn, against a pass of the cam (19 cases x 101 points at 0.1 us) that takes a
+ * fraction of one. So the first pass runs on this thread, and the others run on c->jobs only
+ * when the one before took PARALLEL_PASS or longer. The residuals are the same either way. */
+enum { PARALLEL_PASS_US = 5000 };
+
 /* Residuals h_model - h_meas over every point of every case of the split. */
 static int residuals(const gsl_vector *p, void *data, gsl_vector *r)
 {
     fit_ctx *c = data;
     set_params(c, p);
-    tirenv_model *m = tirenv_model_alloc(c->type, &c->tire);
-    if (!m) {
+    c->r = r;
+    for (size_t w = 0; w < c->jobs; ++w)
+        c->models[w] = NULL;
+    if (!(c->models[0] = tirenv_model_alloc(c->type, &c->tire))) {
         /* A trial step out of the physical range (the ring's belt buckling on its
          * foundation, say) is a step the trust region must refuse, not the end of the fit:
          * a residual of 1 m at every point is worse than any curve of the model. */
         gsl_vector_set_all(r, 1.0);
         return GSL_SUCCESS;
     }
-    size_t k = 0;
-    for (size_t i = 0; i < c->ds->n; ++i) {
-        const tirenv_case *cs = &c->ds->cases[i];
-        if (cs->split != c->split)
-            continue;
-        const int status = tirenv_case_predict_model(m, cs, c->h, c->diag);
-        if (status) {
-            c->status = status;
-            tirenv_model_free(m);
-            return GSL_EDOM;
-        }
-        for (size_t j = 0; j < cs->curve.n; ++j)
-            gsl_vector_set(r, k++, c->h[j] - cs->curve.h[j]);
+    const size_t jobs = c->last_pass >= 1e-6 * PARALLEL_PASS_US ? c->jobs : 1;
+    const double t0 = tirenv_study__wall_seconds();
+    const int status = tirenv_parallel_for(c->n_cases, jobs, case_residuals, NULL, c,
+                                           c->diag);
+    c->last_pass = tirenv_study__wall_seconds() - t0;
+    for (size_t w = 0; w < c->jobs; ++w)
+        tirenv_model_free(c->models[w]);
+    if (status) {
+        c->status = status;
+        return GSL_EDOM;
     }
-    tirenv_model_free(m);
     return GSL_SUCCESS;
 }
 
@@ -94,8 +128,9 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
     if (!(tirenv_model_type_flags(type) & TIRENV_MODEL_FITTABLE) || !params)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "the %s model has no parameters to fit", tirenv_model_type_name(type));
-    fit_ctx c = {ds, split, type, *tire, params, s->fit_R0 ? n_params_max : n_params, NULL, 0,
-                 diag};
+    fit_ctx c = {.ds = ds, .split = split, .type = type, .tire = *tire, .params = params,
+                 .n_params = s->fit_R0 ? n_params_max : n_params,
+                 .jobs = s->jobs ? s->jobs : 1, .last_pass = -1, .diag = diag};
     if (c.n_params > TIRENV_FIT_MAX_PARAMS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                             "the %s model has %zu parameters; a fit takes at most %d",
@@ -105,17 +140,32 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
     const int start_ok = tirenv_tire_check(tire, diag);
     if (start_ok)
         return start_ok;
-    size_t n = 0, n_max = 0;
+    size_t n = 0;
     for (size_t i = 0; i < ds->n; ++i)
         if (ds->cases[i].split == split) {
             n += ds->cases[i].curve.n;
-            n_max = ds->cases[i].curve.n > n_max ? ds->cases[i].curve.n : n_max;
+            c.n_max = ds->cases[i].curve.n > c.n_max ? ds->cases[i].curve.n : c.n_max;
+            ++c.n_cases;
         }
     if (n <= c.n_params)
         return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "split",
                             "%zu points in the %s cases: too few to fit %zu parameters", n,
                             tirenv_split_name(split), c.n_params);
-    c.h = malloc(n_max * sizeof *c.h);
+    if (c.jobs > c.n_cases)
+        c.jobs = c.n_cases;
+    c.cases = malloc(c.n_cases * sizeof *c.cases);
+    c.offset = malloc(c.n_cases * sizeof *c.offset);
+    c.models = calloc(c.jobs, sizeof *c.models);
+    c.h = malloc(c.jobs * c.n_max * sizeof *c.h);
+    if (c.cases && c.offset) {
+        size_t k = 0, at = 0;
+        for (size_t i = 0; i < ds->n; ++i)
+            if (ds->cases[i].split == split) {
+                c.cases[k] = i;
+                c.offset[k++] = at;
+                at += ds->cases[i].curve.n;
+            }
+    }
     gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
     fp.trs = gsl_multifit_nlinear_trs_lm;
     /* Finite-difference Jacobian: the step must dwarf the equilibrium tolerance (1e-10 m)
@@ -125,8 +175,11 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fp, n, c.n_params);
     gsl_vector *p0 = gsl_vector_alloc(c.n_params);
     gsl_matrix *covar = gsl_matrix_alloc(c.n_params, c.n_params);
-    if (!c.h || !w || !p0 || !covar) {
+    if (!c.h || !c.cases || !c.offset || !c.models || !w || !p0 || !covar) {
         free(c.h);
+        free(c.cases);
+        free(c.offset);
+        free(c.models);
         gsl_multifit_nlinear_free(w);
         gsl_vector_free(p0);
         gsl_matrix_free(covar);
@@ -185,6 +238,9 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
     }
     report->seconds = tirenv_study__wall_seconds() - t0;
     free(c.h);
+    free(c.cases);
+    free(c.offset);
+    free(c.models);
     gsl_multifit_nlinear_free(w);
     gsl_vector_free(p0);
     gsl_matrix_free(covar);

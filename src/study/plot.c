@@ -2,9 +2,11 @@
  * measured curve as markers and one line per model. The numbers go to a plain data file and
  * the drawing to a gnuplot script a reader can edit and rerun; tirenv runs that script to
  * draw the PNG for the report and the SVG for print. SPDX-License-Identifier: GPL-3.0-or-later */
+#define _GNU_SOURCE  /* pipe2 */
 #include "study/plot.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -290,8 +292,11 @@ int tirenv_plot__run(const char *gnuplot, const char *dir, const char *script,
     const char *prog = gnuplot && *gnuplot ? gnuplot : "gnuplot";
     char where[1024];  /* the script as messages name it */
     snprintf(where, sizeof where, "%s/%s", dir, script);
+    /* Close-on-exec: another thread of a parallel comparison may fork its own gnuplot at the
+     * same moment, and a child holding this pipe's write end would keep the read below waiting
+     * until that other gnuplot ends too (dup2 in the child clears the flag where it counts). */
     int fd[2];
-    if (pipe(fd) != 0)
+    if (pipe2(fd, O_CLOEXEC) != 0)
         return tirenv_error(diag, TIRENV_EIO, where, 0, "", "cannot run %s: pipe: %s", prog,
                             strerror(errno));
     const pid_t pid = fork();

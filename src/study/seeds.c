@@ -4,8 +4,10 @@
 #include "tirenv/study.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include "tirenv/parallel.h"
 
 void tirenv_nn_seeds_free(tirenv_nn_seeds *r)
 {
@@ -92,6 +94,52 @@ static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings
     return status;
 }
 
+/* The seeds as work items (tirenv/parallel.h); a progress callback is called by one training
+ * at a time, and once it asks to stop, every training running stops at its next call. */
+typedef struct {
+    tirenv_train_progress_fn fn;
+    void *data;
+    pthread_mutex_t lock;
+    int stop;
+} progress_gate;
+
+static int gated_progress(const tirenv_train_progress *p, void *data)
+{
+    progress_gate *g = data;
+    pthread_mutex_lock(&g->lock);
+    if (!g->stop && g->fn(p, g->data))
+        g->stop = 1;
+    const int stop = g->stop;
+    pthread_mutex_unlock(&g->lock);
+    return stop;
+}
+
+typedef struct {
+    const tirenv_trainer_type *type;
+    const tirenv_train_settings *settings;
+    const tirenv_samples *set;
+    const tirenv_dataset *fit, *val;
+    double R0;
+    size_t n_max;
+    tirenv_nn_seeds *out;
+    tirenv_nn **nets;
+    tirenv_train_report *reps;
+    progress_gate gate;
+    tirenv_train_settings inner;   /* each seed's training, its progress through the gate
+                                    * when the seeds run at once */
+} seeds_pass;
+
+static int seed_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    seeds_pass *p = ctx;
+    (void)worker;
+    tirenv_train_settings s = p->inner;
+    s.seed = p->settings->seed + k;
+    p->out->seed[k] = s.seed;
+    return one_seed(p->type, &s, p->set, p->fit, p->val, p->R0, p->n_max, p->out, k,
+                    &p->nets[k], &p->reps[k], diag);
+}
+
 int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                           const tirenv_dataset *fit, const tirenv_dataset *val, double R0,
                           size_t n_seeds, tirenv_nn_seeds *out, tirenv_nn **median_net,
@@ -137,13 +185,22 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
     for (int sp = 0; sp < 3 && !status; ++sp)
         status = tirenv_samples_from_dataset(from[sp], (tirenv_split)sp, &set[sp], &x[sp],
                                              &y[sp], diag);
-    /* Independent seeds: no state is shared from one to the next. */
-    for (size_t k = 0; k < n_seeds && !status; ++k) {
-        tirenv_train_settings s = *settings;
-        s.seed = settings->seed + k;
-        out->seed[k] = s.seed;
-        status = one_seed(type, &s, set, fit, val, R0, n_max, out, k, &nets[k], &reps[k], diag);
+    /* Independent seeds: no state is shared from one to the next, so they run on
+     * settings->jobs threads, each training's restarts sharing the same threads
+     * (tirenv/parallel.h: nested calls share the budget). */
+    seeds_pass sp_ = {type, settings, set, fit, val, R0, n_max, out, nets, reps,
+                      {NULL, NULL, PTHREAD_MUTEX_INITIALIZER, 0}, *settings};
+    const size_t jobs = settings->jobs < 1 ? 1 : settings->jobs;
+    if (jobs > 1 && n_seeds > 1) {
+        if (settings->progress) {
+            sp_.gate.fn = settings->progress;
+            sp_.gate.data = settings->progress_data;
+            sp_.inner.progress = gated_progress;
+            sp_.inner.progress_data = &sp_.gate;
+        }
     }
+    if (!status)
+        status = tirenv_parallel_for(n_seeds, jobs, seed_item, NULL, &sp_, diag);
     for (size_t k = 0; k < n_seeds && !status; ++k)
         out->seconds += reps[k].wall_time;
     if (!status) {

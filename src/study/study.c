@@ -9,6 +9,7 @@
 #include "study/compare_impl.h"
 #include "study/study_impl.h"
 #include "tirenv/io.h"
+#include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "tirenv/nn_file.h"
 
@@ -19,7 +20,8 @@ tirenv_study_settings tirenv_study_default(void)
                                    .trainer = "lm", .seed = 1, .seeds = 20,
                                    .input = TIRENV_NN_INPUT_EVEN,
                                    .simulated_by = tirenv_model_ring,
-                                   .images = 1, .progress = NULL, .progress_ctx = NULL};
+                                   .images = 1, .jobs = 1, .progress = NULL,
+                                   .progress_ctx = NULL};
 }
 
 enum { STEPS = 7 };
@@ -59,6 +61,7 @@ static int trainer_of(const tirenv_study_settings *s, const tirenv_trainer_type 
     *ts = tirenv_train_default(*type);
     ts->seed = s->seed;
     ts->input = s->input;
+    ts->jobs = s->jobs;
     return TIRENV_OK;
 }
 
@@ -243,41 +246,63 @@ static void grid_of(const tirenv_dataset *ds, grid_design *g)
     even(g->H_min, g->H_max, GRID_H, g->H);
 }
 
+/* Grid case k, with the springs model of the worker running it; k runs over the grid's
+ * contact lengths, then lengths, then heights (heights fastest). */
+typedef struct {
+    const tirenv_dataset *real;
+    const tirenv_tire *fitted;
+    const grid_design *g;
+    tirenv_dataset *out;
+    tirenv_model **models;         /* one per worker, built on first use */
+} physical_pass;
+
+static int physical_case(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    physical_pass *p = ctx;
+    if (!p->models[worker] &&
+        !(p->models[worker] = tirenv_model_alloc(tirenv_model_springs, p->fitted)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    tirenv_case *cs = &p->out->cases[k];
+    const tirenv_curve *grid = &p->real->cases[0].curve; /* the data set's x_N grid */
+    const size_t a = k / (GRID_L * GRID_H), b = k / GRID_H % GRID_L, c = k % GRID_H;
+    snprintf(cs->name, sizeof cs->name, "g%zu", k);
+    cs->split = k % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
+    cs->contact_length = p->g->l_c[a];
+    cs->L = p->g->L[b];
+    cs->H = p->g->H[c];
+    cs->load = load_at(p->real, cs->contact_length);
+    int status = tirenv_curve_alloc(&cs->curve, grid->n);
+    if (status)
+        return tirenv_error(diag, status, "", 0, "study", "out of memory");
+    const double x_0 = tirenv_xN_origin(p->fitted->springs.R0, cs->contact_length, cs->L,
+                                        cs->H);
+    for (size_t j = 0; j < grid->n; ++j) {
+        cs->curve.x_N[j] = grid->x_N[j];
+        cs->curve.x[j] = x_0 * (1 - grid->x_N[j]);
+    }
+    return tirenv_case_predict_model(p->models[worker], cs, cs->curve.h, diag);
+}
+
+/* The grid's curves on `jobs` threads (a model is set afresh on every case, so a curve does
+ * not depend on the worker that made it). */
 static int physical_dataset(const tirenv_dataset *real, const tirenv_tire *fitted,
-                            const grid_design *g, tirenv_dataset *out, tirenv_diag *diag)
+                            const grid_design *g, size_t jobs, tirenv_dataset *out,
+                            tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    const tirenv_curve *grid = &real->cases[0].curve; /* the data set's x_N grid */
+    const size_t n = g->n_l_c * GRID_L * GRID_H;
     out->cases = calloc(GRID_MAX, sizeof *out->cases);
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, fitted);
-    if (!out->cases || !m) {
-        tirenv_model_free(m);
+    physical_pass p = {real, fitted, g, out, calloc(jobs, sizeof *p.models)};
+    if (!out->cases || !p.models) {
+        free(p.models);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     }
     snprintf(out->dir, sizeof out->dir, "(springs model curves)");
-    int status = TIRENV_OK;
-    for (size_t a = 0; a < g->n_l_c && !status; ++a)
-        for (size_t b = 0; b < GRID_L && !status; ++b)
-            for (size_t c = 0; c < GRID_H && !status; ++c) {
-                tirenv_case *cs = &out->cases[out->n];
-                snprintf(cs->name, sizeof cs->name, "g%zu", out->n);
-                cs->split = out->n % 5 == 4 ? TIRENV_SPLIT_CONTROL : TIRENV_SPLIT_TRAIN;
-                cs->contact_length = g->l_c[a];
-                cs->L = g->L[b];
-                cs->H = g->H[c];
-                cs->load = load_at(real, cs->contact_length);
-                ++out->n;
-                if ((status = tirenv_curve_alloc(&cs->curve, grid->n)))
-                    break;
-                const double x_0 = tirenv_xN_origin(fitted->springs.R0, cs->contact_length,
-                                                    cs->L, cs->H);
-                for (size_t j = 0; j < grid->n; ++j) {
-                    cs->curve.x_N[j] = grid->x_N[j];
-                    cs->curve.x[j] = x_0 * (1 - grid->x_N[j]);
-                }
-                status = tirenv_case_predict_model(m, cs, cs->curve.h, diag);
-            }
-    tirenv_model_free(m);
+    out->n = n;  /* every case's curve is freed with the data set, allocated or not */
+    const int status = tirenv_parallel_for(n, jobs, physical_case, NULL, &p, diag);
+    for (size_t w = 0; w < jobs; ++w)
+        tirenv_model_free(p.models[w]);
+    free(p.models);
     return status;
 }
 
@@ -333,56 +358,69 @@ static const outside_design outside[] = {
 enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
 /* The reference curves: the model that simulated the data set (the ring for measured data)
- * on the virtual rig, imported like the data set's. */
+ * on the virtual rig, imported like the data set's; each obstacle with its own instance of
+ * it, so that its curve depends on it alone. */
+typedef struct {
+    const tirenv_tire *tire;
+    const tirenv_model_type *reference;
+    const grid_design *g;
+    tirenv_dataset *out;
+    tirenv_profile **profiles;
+} outside_pass;
+
+static int outside_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
+{
+    outside_pass *p = ctx;
+    const outside_design *d = &outside[i];
+    const grid_design *g = p->g;
+    tirenv_case *cs = &p->out->cases[i];
+    (void)worker;
+    snprintf(cs->name, sizeof cs->name, "%s", d->name);
+    cs->split = TIRENV_SPLIT_VALIDATION;
+    cs->contact_length = g->l_c[d->l_c < g->n_l_c ? d->l_c : g->n_l_c - 1];
+    const double arg[3] = {size_of(&d->arg[0], g), size_of(&d->arg[1], g),
+                           size_of(&d->arg[2], g)};
+    cs->L = size_of(&d->L, g);
+    cs->H = size_of(&d->H, g);
+    cs->profile = p->profiles[i] = d->make(arg);
+    tirenv_model *ref = tirenv_model_alloc(p->reference, p->tire);
+    if (!p->profiles[i] || !ref) {
+        tirenv_model_free(ref);
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
+    }
+    int status = tirenv_model_load_for_contact_length(ref, cs->contact_length, &cs->load, diag);
+    if (!status)
+        status = tirenv_model_set(ref, p->profiles[i], cs->load, diag);
+    tirenv_rig_settings rig = tirenv_rig_default();
+    rig.seed = 777 + i;
+    tirenv_rig_log log = {0};
+    if (!status)
+        status = tirenv_rig_simulate(ref, p->profiles[i], &rig, &log, diag);
+    tirenv_import_settings imp = tirenv_import_default();
+    imp.L = cs->L;
+    imp.H = cs->H;
+    imp.R0 = p->tire->springs.R0;
+    imp.contact_length = cs->contact_length;
+    if (!status)
+        status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve, diag);
+    tirenv_rig_log_free(&log);
+    tirenv_model_free(ref);
+    return status;
+}
+
 static int outside_dataset(const tirenv_tire *tire, const tirenv_model_type *reference,
-                           const grid_design *g, tirenv_dataset *out,
+                           const grid_design *g, size_t jobs, tirenv_dataset *out,
                            tirenv_profile *profiles[N_OUTSIDE], tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
     snprintf(out->dir, sizeof out->dir, "(virtual rig, %s model)",
              tirenv_model_type_name(reference));
     out->cases = calloc(N_OUTSIDE, sizeof *out->cases);
-    tirenv_model *ref = tirenv_model_alloc(reference, tire);
-    if (!out->cases || !ref) {
-        tirenv_model_free(ref);
+    if (!out->cases)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
-    }
-    int status = TIRENV_OK;
-    for (size_t i = 0; i < N_OUTSIDE && !status; ++i) {
-        const outside_design *d = &outside[i];
-        tirenv_case *cs = &out->cases[out->n++];
-        snprintf(cs->name, sizeof cs->name, "%s", d->name);
-        cs->split = TIRENV_SPLIT_VALIDATION;
-        cs->contact_length = g->l_c[d->l_c < g->n_l_c ? d->l_c : g->n_l_c - 1];
-        const double arg[3] = {size_of(&d->arg[0], g), size_of(&d->arg[1], g),
-                               size_of(&d->arg[2], g)};
-        cs->L = size_of(&d->L, g);
-        cs->H = size_of(&d->H, g);
-        cs->profile = profiles[i] = d->make(arg);
-        if (!profiles[i]) {
-            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
-            break;
-        }
-        status = tirenv_model_load_for_contact_length(ref, cs->contact_length, &cs->load, diag);
-        if (!status)
-            status = tirenv_model_set(ref, profiles[i], cs->load, diag);
-        tirenv_rig_settings rig = tirenv_rig_default();
-        rig.seed = 777 + i;
-        tirenv_rig_log log = {0};
-        if (!status)
-            status = tirenv_rig_simulate(ref, profiles[i], &rig, &log, diag);
-        tirenv_import_settings imp = tirenv_import_default();
-        imp.L = cs->L;
-        imp.H = cs->H;
-        imp.R0 = tire->springs.R0;
-        imp.contact_length = cs->contact_length;
-        if (!status)
-            status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve,
-                                               diag);
-        tirenv_rig_log_free(&log);
-    }
-    tirenv_model_free(ref);
-    return status;
+    out->n = N_OUTSIDE;
+    outside_pass p = {tire, reference, g, out, profiles};
+    return tirenv_parallel_for(N_OUTSIDE, jobs, outside_case, NULL, &p, diag);
 }
 
 /* ---- the report's own account ------------------------------------------------------------- */
@@ -526,6 +564,7 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     cs.out_dir = dir;
     cs.title = title;
     cs.images = s->images;
+    cs.jobs = s->jobs;
     cs.tire_label = "fitted.tir (identified on the training cases)";
     cs.data_label = data_label(s);
     if (s->simulated_by) {
@@ -535,9 +574,84 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     return cs;
 }
 
+/* ---- the three comparisons ----------------------------------------------------------------- */
+
+typedef struct {
+    const tirenv_study_settings *s;
+    const tirenv_dataset *ds;
+    const tirenv_tire *tire;
+    const grid_design *grid;
+    const tirenv_model_type *reference;  /* what simulates the obstacles outside */
+    tirenv_nn *nn;
+    tirenv_compare_settings cs;
+    tirenv_compare_result *main_r;
+    tirenv_dataset *phys_ds;
+    tirenv_nn **nn_phys;
+    tirenv_train_report *phys_rep;
+    tirenv_compare_result *phys_r;
+    tirenv_dataset *out_ds;
+    tirenv_profile **profiles;
+    tirenv_compare_result *out_r;
+} study_parts;
+
+/* The paper's comparison on the validation cases. */
+static int part_main(study_parts *p, tirenv_diag *diag)
+{
+    return tirenv_compare(p->ds, p->tire, p->nn, &p->cs, p->main_r, diag);
+}
+
+/* The paper's workflow: a network trained on the identified physical model's curves. */
+static int part_physical(study_parts *p, tirenv_diag *diag)
+{
+    const tirenv_study_settings *s = p->s;
+    char path[1024], sub[1024];
+    int status = physical_dataset(p->ds, p->tire, p->grid, s->jobs ? s->jobs : 1, p->phys_ds,
+                                  diag);
+    snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
+    if (!status)
+        status = train_network(s, p->phys_ds, p->ds, path, p->nn_phys, p->phys_rep, diag);
+    snprintf(sub, sizeof sub, "%s/physical-network", s->out_dir);
+    tirenv_compare_settings ps = compare_settings(s, sub, "A network trained on the identified "
+                                                  "physical model's curves (no rig time)");
+    ps.nn_label = "nn-physical.json (trained on springs-model curves)";
+    if (!status)
+        status = tirenv_compare(p->ds, p->tire, *p->nn_phys, &ps, p->phys_r, diag);
+    if (!status)
+        status = tirenv_compare_report(p->ds, &ps, p->phys_r, NULL, diag);
+    return status;
+}
+
+/* The obstacles outside the training grid. */
+static int part_outside(study_parts *p, tirenv_diag *diag)
+{
+    const tirenv_study_settings *s = p->s;
+    char sub[1024];
+    int status = outside_dataset(&s->tire, p->reference, p->grid, s->jobs ? s->jobs : 1,
+                                 p->out_ds, p->profiles, diag);
+    snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
+    tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
+                                                  "range");
+    os.simulated = 1;
+    os.simulated_by = p->reference;
+    os.data_label = "taller, shorter and other shapes on the virtual rig";
+    if (!status)
+        status = tirenv_compare(p->out_ds, p->tire, p->nn, &os, p->out_r, diag);
+    if (!status)
+        status = tirenv_compare_report(p->out_ds, &os, p->out_r, NULL, diag);
+    return status;
+}
+
+static int study_part(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    study_parts *p = ctx;
+    (void)worker;
+    return k == 0 ? part_main(p, diag) : k == 1 ? part_physical(p, diag)
+                                                : part_outside(p, diag);
+}
+
 static int study_into(const tirenv_study_settings *s, tirenv_diag *diag)
 {
-    char path[1024], sub[1024];
+    char path[1024];
     tirenv_dataset ds = {0}, phys_ds = {0}, out_ds = {0};
     tirenv_profile *profiles[N_OUTSIDE] = {0};
     tirenv_nn *nn = NULL, *nn_phys = NULL;
@@ -555,6 +669,7 @@ static int study_into(const tirenv_study_settings *s, tirenv_diag *diag)
     progress(s, "identifying the springs model", 1);
     tirenv_fit_settings fs = tirenv_fit_default();
     fs.type = tirenv_model_springs;
+    fs.jobs = s->jobs;
     if (!status)
         status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &fit, diag);
     /* The cam's keys live in their own part of the tire, so both fits share one file. A cam
@@ -570,44 +685,25 @@ static int study_into(const tirenv_study_settings *s, tirenv_diag *diag)
     progress(s, "training the network over seeds", 2);
     if (!status)
         status = train_seeds(s, &ds, &nn, &nn_rep, &seeds, diag);
-    progress(s, "comparing on the validation cases", 3);
-    tirenv_compare_settings cs = compare_settings(s, s->out_dir, "tirenv study: the paper's "
-                                                  "comparison on the validation cases");
-    if (!status)
-        status = tirenv_compare(&ds, &tire, nn, &cs, &main_r, diag);
-
-    progress(s, "the paper's workflow: a network on physical-model curves", 4);
+    /* Three independent parts, side by side on the jobs (each with its own work items, all
+     * drawing on the same threads: tirenv/parallel.h), in the order a failure is reported:
+     * the comparison on the validation cases, the paper's workflow, the obstacles outside. */
+    progress(s, "comparing the models: validation cases, a network on physical-model curves, "
+                "obstacles outside the training range", 3);
     grid_design grid = {0};
     if (!status)
         grid_of(&ds, &grid);
+    study_parts parts = {.s = s, .ds = &ds, .tire = &tire, .grid = &grid,
+                         .reference = s->simulated_by ? s->simulated_by : tirenv_model_ring,
+                         .nn = nn, .main_r = &main_r,
+                         .phys_ds = &phys_ds, .nn_phys = &nn_phys, .phys_rep = &phys_rep,
+                         .phys_r = &phys_r, .out_ds = &out_ds, .profiles = profiles,
+                         .out_r = &out_r};
+    parts.cs = compare_settings(s, s->out_dir, "tirenv study: the paper's comparison on the "
+                                               "validation cases");
     if (!status)
-        status = physical_dataset(&ds, &tire, &grid, &phys_ds, diag);
-    snprintf(path, sizeof path, "%s/nn-physical.json", s->out_dir);
-    if (!status)
-        status = train_network(s, &phys_ds, &ds, path, &nn_phys, &phys_rep, diag);
-    snprintf(sub, sizeof sub, "%s/physical-network", s->out_dir);
-    tirenv_compare_settings ps = compare_settings(s, sub, "A network trained on the identified "
-                                                  "physical model's curves (no rig time)");
-    ps.nn_label = "nn-physical.json (trained on springs-model curves)";
-    if (!status)
-        status = tirenv_compare(&ds, &tire, nn_phys, &ps, &phys_r, diag);
-    if (!status)
-        status = tirenv_compare_report(&ds, &ps, &phys_r, NULL, diag);
-
-    progress(s, "obstacles outside the training range", 5);
-    const tirenv_model_type *reference = s->simulated_by ? s->simulated_by : tirenv_model_ring;
-    if (!status)
-        status = outside_dataset(&s->tire, reference, &grid, &out_ds, profiles, diag);
-    snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
-    tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
-                                                  "range");
-    os.simulated = 1;
-    os.simulated_by = reference;
-    os.data_label = "taller, shorter and other shapes on the virtual rig";
-    if (!status)
-        status = tirenv_compare(&out_ds, &tire, nn, &os, &out_r, diag);
-    if (!status)
-        status = tirenv_compare_report(&out_ds, &os, &out_r, NULL, diag);
+        status = tirenv_parallel_for(3, s->jobs ? s->jobs : 1, study_part, NULL, &parts, diag);
+    const tirenv_compare_settings cs = parts.cs;
 
     progress(s, "writing the report", 6);
     const tirenv_study__facts facts = {.ds = &ds, .main = &main_r, .main_settings = &cs,

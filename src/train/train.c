@@ -2,11 +2,13 @@
  * control set, errors per split (docs/models.md section 6).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "train/train_impl.h"
 #include "core/clock.h"
+#include "tirenv/parallel.h"
 
 extern const struct tirenv_trainer_type tirenv_train__backprop_type;
 extern const struct tirenv_trainer_type tirenv_train__rprop_type;
@@ -88,6 +90,7 @@ tirenv_train_settings tirenv_train_default(const tirenv_trainer_type *type)
         .rprop = {.delta0 = 0.1, .delta_min = 1e-6, .delta_max = 50, .eta_plus = 1.2,
                   .eta_minus = 0.5},
         .lm = {.solver = TIRENV_LM_CHOLESKY, .tau = 1e-3, .mu_max = 1e10},
+        .jobs = 1,
         .progress = NULL,
         .progress_data = NULL,
     };
@@ -543,6 +546,62 @@ static int run_restart(const tirenv_trainer_type *type, const tirenv_train_setti
     return TIRENV_OK;
 }
 
+/* The restarts as work items (tirenv/parallel.h): run_restart is a function of its arguments
+ * alone, so restart k gives the same network whichever thread runs it, and the choice among
+ * them (below, in restart order) is the serial one. The progress callback is called by one
+ * restart at a time; once it asks to stop, every restart running stops at its next call. */
+typedef struct {
+    tirenv_train_progress_fn fn;
+    void *data;
+    pthread_mutex_t lock;
+    int stop;
+} progress_gate;
+
+static int gated_progress(const tirenv_train_progress *p, void *data)
+{
+    progress_gate *g = data;
+    pthread_mutex_lock(&g->lock);
+    if (!g->stop && g->fn(p, g->data))
+        g->stop = 1;
+    const int stop = g->stop;
+    pthread_mutex_unlock(&g->lock);
+    return stop;
+}
+
+typedef struct {
+    const tirenv_trainer_type *type;
+    const tirenv_train_settings *s;
+    const tirenv_samples *train, *sel;
+    const tirenv_nn *proto;
+    restart_result *res;
+    progress_gate gate;
+    tirenv_train_settings gated;  /* s with its progress through the gate */
+} restarts_pass;
+
+static int restart_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
+{
+    restarts_pass *p = ctx;
+    (void)worker;
+    return run_restart(p->type, &p->gated, p->train, p->train->w, p->sel, p->proto, k,
+                       &p->res[k], diag);
+}
+
+static int restarts_run(restarts_pass *p, tirenv_diag *diag)
+{
+    const size_t jobs = p->s->jobs < 1 ? 1 : p->s->jobs;
+    if (jobs > 1 && p->s->progress) {
+        p->gate.fn = p->s->progress;
+        p->gate.data = p->s->progress_data;
+        pthread_mutex_init(&p->gate.lock, NULL);
+        p->gated.progress = gated_progress;
+        p->gated.progress_data = &p->gate;
+    }
+    const int status = tirenv_parallel_for(p->s->restarts, jobs, restart_item, NULL, p, diag);
+    if (jobs > 1 && p->s->progress)
+        pthread_mutex_destroy(&p->gate.lock);
+    return status;
+}
+
 /* Early stopping (Prechelt, "Early stopping - but when?", 1998): train, and keep the weights
  * of least control error; stop when it has not improved for `patience` epochs. Restarts are
  * independent runs from new initial weights; the model is the one with the least control
@@ -596,14 +655,16 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
     }
 
     const double t_start = tirenv_core__wall_seconds();
+    /* The restarts on s->jobs threads; the ones considered are those the serial loop would
+     * have run: up to the first cancelled one. */
+    restarts_pass rp = {type, s, &tr, &sel, proto, res, {0}, *s};
+    if (!status)
+        status = restarts_run(&rp, diag);
     size_t done = 0;
-    for (size_t k = 0; k < s->restarts && !status; ++k) {
-        status = run_restart(type, s, &tr, tr.w, &sel, proto, k, &res[k], diag);
-        if (!status)
-            ++done;
-        if (!status && res[k].cancelled)
-            break;
-    }
+    while (!status && done < s->restarts && !res[done].cancelled)
+        ++done;
+    if (!status && done < s->restarts)
+        ++done;  /* the cancelled one counts, as it did one after the other */
 
     /* The restarts by control criterion, the earliest first among equals (a stable
      * insertion sort), so the result does not depend on how many restarts were asked for
