@@ -176,8 +176,8 @@ static int track_setup(const tirenv_crg *c, const tirenv_crg_track_spec *spec, t
         switch (t->border_mode) {
         case 0:
             return tirenv_error(diag, TIRENV_ERANGE, c->src.name, 0, "v",
-                                "track at v = %.17g m lies beyond the road's long sections, "
-                                "v = %.17g to %.17g m (BORDER_MODE_V 0: refused); expected a v "
+                                "track at v = %.9g m lies beyond the road's long sections, "
+                                "v = %.9g to %.9g m (BORDER_MODE_V 0: refused); expected a v "
                                 "on the road", spec->v, vmin, vmax);
         case 1:
         case 2:
@@ -262,8 +262,8 @@ static int track_z(const tirenv_crg *c, const track *t, size_t i, const double r
     if (isnan(zl) || isnan(zr)) {
         const size_t j = isnan(zl) ? t->j : t->j + 1;
         return tirenv_error(diag, TIRENV_ERANGE, c->src.name, 0, "v",
-                            "the track at v = %.17g m needs long section %zu (v = %.17g m) at "
-                            "row %zu (u = %.17g m), where the road data has no value; expected "
+                            "the track at v = %.9g m needs long section %zu (v = %.9g m) at "
+                            "row %zu (u = %.9g m), where the road data has no value; expected "
                             "a track over the road's valid part (or GRID_NAN_MODE 1 or 2 in "
                             "$ROAD_CRG_MODS to fill missing values)", t->v, j + 1, c->v[j],
                             i + 1, c->u0 + (double)i * c->du);
