@@ -22,5 +22,9 @@ graded plateau-left cam "$rdf/Plateau_Road.rdf" "--side left" "--x-from 95 --x-t
 graded measured springs measured.crg "--track 0.9" "--dx 0.002"
 graded measured-cam cam measured.crg "--track 0.9" "--dx 0.002"
 graded measured-nn-free point measured.crg "--track -1.3" "--dx 0.002"
+# h relative to the road's local level: the level read from the file (whole, or streamed at
+# --track) is the same as from its track converted to CSV.
+graded measured-ground cam measured.crg "--track 0.9" "--dx 0.002 --relative-to ground"
+graded measured-ground-springs springs measured.crg "--track 0.9" "--dx 0.004 --relative-to ground"
 
 clilib_done

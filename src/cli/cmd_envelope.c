@@ -313,6 +313,24 @@ static void sweep_ends(const cli_options *o, const tirenv_model *m, double first
     *x_to = isnan(o->x_to) ? last + R0 + margin : o->x_to;
 }
 
+/* --relative-to ground, streamed: the level under the centre, from the file read a second
+ * time at --track alone (*in and *level NULL otherwise). */
+static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_reader **in,
+                      cli_level_stream **level, tirenv_diag *diag)
+{
+    *in = NULL;
+    *level = NULL;
+    if (r->e->relative != CLI_RELATIVE_GROUND)
+        return TIRENV_OK;
+    const double v = r->road.src.crg.v;
+    int status = tirenv_profile_file_reader_open(r->o->obstacle_arg, &r->road.src, 1, &v, in,
+                                                 diag);
+    if (!status && !(*level = cli_level_stream_alloc(tirenv_profile_file_reader_source, *in,
+                                                     cli_level_width(tirenv_model_tire(m)))))
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    return status;
+}
+
 /* --stream: rows go out as they are computed; the output file is still all or nothing. */
 static int envelope_stream(const run *r, tirenv_model *m, double load)
 {
@@ -340,19 +358,11 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     int code = cli_road_open(o, &r->road, &in);
     if (code)
         return code;
-    /* The level under the centre: the file read a second time, at --track alone. */
     tirenv_profile_file_reader *in_level = NULL;
-    const double v_centre = r->road.src.crg.v;
-    if (r->e->relative == CLI_RELATIVE_GROUND &&
-        !(status = tirenv_profile_file_reader_open(o->obstacle_arg, &r->road.src, 1, &v_centre,
-                                                   &in_level, &diag)) &&
-        !(so.level = cli_level_stream_alloc(tirenv_profile_file_reader_source, in_level,
-                                            cli_level_width(tirenv_model_tire(m)))))
-        status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    if (status) {
-    } else if (r->out_format != TIRENV_PROFILE_CSV) {
+    status = level_open(r, m, &in_level, &so.level, &diag);
+    if (!status && r->out_format != TIRENV_PROFILE_CSV) {
         status = road_out_open(r, m, load, x_from, dx, n, &so.road, &diag);
-    } else if (!(status = tirenv_outfile_open(&out, path, &diag))) {
+    } else if (!status && !(status = tirenv_outfile_open(&out, path, &diag))) {
         have_out = 1;
         so.fp = out.fp;
         fputs(header, out.fp);
