@@ -27,41 +27,6 @@
 #include "model/cam_impl.h"
 #include "model/model_impl.h"
 
-typedef struct {
-    tirenv_tire tire;
-    tirenv_cam__geom cam;       /* a_e = ELLIPS_LENGTH*R0, b_e = ELLIPS_HEIGHT*R0, c_e */
-    const tirenv_profile *prof;
-    double G;                   /* load, N */
-    double z_flat;              /* R0 - rho0, m */
-    double l_s;                 /* tandem base ELLIPS_SHIFT*2a, m */
-    double z_cap;               /* the profile's highest vertex, m: bounds the scan */
-    tirenv_cam__sweep sweep;    /* drop floor and tangency memo, shared by the two cams */
-    tirenv_cam__track front, rear; /* where each cam was */
-} cam_state;
-
-static void *cam_alloc(const tirenv_tire *tire)
-{
-    const double R0 = tire->springs.R0;
-    const tirenv_cam_shape shape = {.a_e = tire->cam.length * R0,
-                                    .b_e = tire->cam.height * R0,
-                                    .c_e = tire->cam.order};
-    cam_state *st = calloc(1, sizeof *st);
-    if (!st)
-        return NULL;
-    st->tire = *tire;
-    if (tirenv_cam__geom_set(&st->cam, &shape) != TIRENV_OK) {
-        free(st);
-        return NULL;
-    }
-    tirenv_cam__sweep_init(&st->sweep, &st->cam);
-    return st;
-}
-
-static void cam_free(void *state)
-{
-    free(state);
-}
-
 /* The cam's valid range (docs/models.md section 7.3), as the largest relative deflection
  * y_max = rho/R0 and what ends it there, the first of:
  *   - the patch reaching the chord of the free circle at that deflection: a patch longer than
@@ -108,6 +73,43 @@ static cam_range cam_valid_range(const tirenv_tire *t)
     return r;
 }
 
+typedef struct {
+    tirenv_tire tire;
+    cam_range range;            /* of the tire, found once: a load change only compares */
+    tirenv_cam__geom cam;       /* a_e = ELLIPS_LENGTH*R0, b_e = ELLIPS_HEIGHT*R0, c_e */
+    const tirenv_profile *prof;
+    double G;                   /* load, N */
+    double z_flat;              /* R0 - rho0, m */
+    double l_s;                 /* tandem base ELLIPS_SHIFT*2a, m */
+    double z_cap;               /* the profile's highest vertex, m: bounds the scan */
+    tirenv_cam__sweep sweep;    /* drop floor and tangency memo, shared by the two cams */
+    tirenv_cam__track front, rear; /* where each cam was */
+} cam_state;
+
+static void *cam_alloc(const tirenv_tire *tire)
+{
+    const double R0 = tire->springs.R0;
+    const tirenv_cam_shape shape = {.a_e = tire->cam.length * R0,
+                                    .b_e = tire->cam.height * R0,
+                                    .c_e = tire->cam.order};
+    cam_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return NULL;
+    st->tire = *tire;
+    st->range = cam_valid_range(tire);
+    if (tirenv_cam__geom_set(&st->cam, &shape) != TIRENV_OK) {
+        free(st);
+        return NULL;
+    }
+    tirenv_cam__sweep_init(&st->sweep, &st->cam);
+    return st;
+}
+
+static void cam_free(void *state)
+{
+    free(state);
+}
+
 static int out_of_range(const tirenv_tire *t, const cam_range *r, double load, double l_c,
                         tirenv_diag *diag)
 {
@@ -127,8 +129,8 @@ static int out_of_range(const tirenv_tire *t, const cam_range *r, double load, d
 
 /* The static deflection rho = G / VERTICAL_STIFFNESS and MF-Tyre's contact half length
  * a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)), within the valid range. */
-static int cam_patch(const tirenv_tire *t, double load, double *rho, double *a,
-                     tirenv_diag *diag)
+static int cam_patch(const tirenv_tire *t, const cam_range *range, double load, double *rho,
+                     double *a, tirenv_diag *diag)
 {
     const double R0 = t->springs.R0, q_ra1 = t->cam.q_ra1, q_ra2 = t->cam.q_ra2;
     *rho = load / t->cam.c_z;
@@ -136,9 +138,8 @@ static int cam_patch(const tirenv_tire *t, double load, double *rho, double *a,
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
                             "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m), "
                             "beyond its free radius %g m", load, *rho, t->cam.c_z, R0);
-    const cam_range range = cam_valid_range(t);
-    if (!(*rho <= range.y_max * R0))
-        return out_of_range(t, &range, load, 0, diag);
+    if (!(*rho <= range->y_max * R0))
+        return out_of_range(t, range, load, 0, diag);
     const double r = *rho / R0, y = sqrt(r);
     *a = R0 * (q_ra2 * r + q_ra1 * y);
     return TIRENV_OK;
@@ -148,7 +149,7 @@ static int cam_flat(void *state, double load, tirenv_flat *out, tirenv_diag *dia
 {
     const cam_state *st = state;
     double rho = 0, a = 0;
-    const int status = cam_patch(&st->tire, load, &rho, &a, diag);
+    const int status = cam_patch(&st->tire, &st->range, load, &rho, &a, diag);
     if (status)
         return status;
     *out = (tirenv_flat){.load = load, .z_flat = st->tire.springs.R0 - rho, .deflection = rho,
@@ -180,9 +181,8 @@ static int cam_load_for_contact_length(void *state, double l_c, double *load,
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "contact length",
                             "%g m needs a deflection of %g m, beyond the free radius %g m",
                             l_c, rho, R0);
-    const cam_range range = cam_valid_range(&st->tire);
-    if (!(rho <= range.y_max * R0))
-        return out_of_range(&st->tire, &range, 0, l_c, diag);
+    if (!(rho <= st->range.y_max * R0))
+        return out_of_range(&st->tire, &st->range, 0, l_c, diag);
     *load = st->tire.cam.c_z * rho;
     return TIRENV_OK;
 }
@@ -193,7 +193,7 @@ static int cam_load_for_contact_length(void *state, double l_c, double *load,
 static int cam_load(cam_state *st, double load, double *z_flat, tirenv_diag *diag)
 {
     double rho = 0, a = 0;
-    const int status = cam_patch(&st->tire, load, &rho, &a, diag);
+    const int status = cam_patch(&st->tire, &st->range, load, &rho, &a, diag);
     if (status)
         return status;
     st->G = load;
