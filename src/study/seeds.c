@@ -4,7 +4,6 @@
 #include "tirenv/study.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include "tirenv/parallel.h"
@@ -95,25 +94,8 @@ static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings
 }
 
 /* The seeds as work items (tirenv/parallel.h); a progress callback is called by one training
- * at a time, and once it asks to stop, every training running stops at its next call. */
-typedef struct {
-    tirenv_train_progress_fn fn;
-    void *data;
-    pthread_mutex_t lock;
-    int stop;
-} progress_gate;
-
-static int gated_progress(const tirenv_train_progress *p, void *data)
-{
-    progress_gate *g = data;
-    pthread_mutex_lock(&g->lock);
-    if (!g->stop && g->fn(p, g->data))
-        g->stop = 1;
-    const int stop = g->stop;
-    pthread_mutex_unlock(&g->lock);
-    return stop;
-}
-
+ * at a time, and once it asks to stop, every training running stops at its next call
+ * (tirenv_train_progress_gate). */
 typedef struct {
     const tirenv_trainer_type *type;
     const tirenv_train_settings *settings;
@@ -124,7 +106,6 @@ typedef struct {
     tirenv_nn_seeds *out;
     tirenv_nn **nets;
     tirenv_train_report *reps;
-    progress_gate gate;
     tirenv_train_settings inner;   /* each seed's training, its progress through the gate
                                     * when the seeds run at once */
 } seeds_pass;
@@ -188,19 +169,15 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
     /* Independent seeds: no state is shared from one to the next, so they run on
      * settings->jobs threads, each training's restarts sharing the same threads
      * (tirenv/parallel.h: nested calls share the budget). */
-    seeds_pass sp_ = {type, settings, set, fit, val, R0, n_max, out, nets, reps,
-                      {NULL, NULL, PTHREAD_MUTEX_INITIALIZER, 0}, *settings};
+    seeds_pass sp_ = {type, settings, set, fit, val, R0, n_max, out, nets, reps, *settings};
     const size_t jobs = settings->jobs < 1 ? 1 : settings->jobs;
-    if (jobs > 1 && n_seeds > 1) {
-        if (settings->progress) {
-            sp_.gate.fn = settings->progress;
-            sp_.gate.data = settings->progress_data;
-            sp_.inner.progress = gated_progress;
-            sp_.inner.progress_data = &sp_.gate;
-        }
-    }
+    tirenv_train_progress_gate *gate = NULL;
+    if (!status && jobs > 1 && n_seeds > 1 && settings->progress &&
+        !(gate = tirenv_train_progress_gate_alloc(&sp_.inner)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     if (!status)
         status = tirenv_parallel_for(n_seeds, jobs, seed_item, NULL, &sp_, diag);
+    tirenv_train_progress_gate_free(gate);
     for (size_t k = 0; k < n_seeds && !status; ++k)
         out->seconds += reps[k].wall_time;
     if (!status) {
