@@ -34,6 +34,20 @@ static double quantile(const double v[], size_t n, double p)
     return lo + 1 < n ? v[lo] + (h - (double)lo) * (v[lo + 1] - v[lo]) : v[n - 1];
 }
 
+/* The RMS error of the network's curve on one case; h is scratch of cs->curve.n. */
+static int case_rms(tirenv_nn *nn, double R0, const tirenv_case *cs, double h[], double *rms,
+                    tirenv_diag *diag)
+{
+    tirenv_curve_errors e;
+    int status = tirenv_case_predict_nn(nn, R0, cs, h, diag);
+    if (!status)
+        status = tirenv_curve_errors_compute(cs->curve.n, cs->curve.x, cs->curve.h, h, 1e-3,
+                                             &e);
+    if (!status)
+        *rms = e.rms;
+    return status;
+}
+
 /* The mean over the cases of `split` in ds of each one's RMS error (the network's curve);
  * NaN if there are none. */
 static int mean_case_rms(tirenv_nn *nn, double R0, const tirenv_dataset *ds, tirenv_split split,
@@ -42,17 +56,13 @@ static int mean_case_rms(tirenv_nn *nn, double R0, const tirenv_dataset *ds, tir
     double sum = 0;
     size_t n = 0;
     for (size_t i = 0; i < ds->n; ++i) {
-        const tirenv_case *cs = &ds->cases[i];
-        if (cs->split != split)
+        if (ds->cases[i].split != split)
             continue;
-        tirenv_curve_errors e;
-        int status = tirenv_case_predict_nn(nn, R0, cs, h, diag);
-        if (!status)
-            status = tirenv_curve_errors_compute(cs->curve.n, cs->curve.x, cs->curve.h, h,
-                                                 1e-3, &e);
+        double rms;
+        const int status = case_rms(nn, R0, &ds->cases[i], h, &rms, diag);
         if (status)
             return status;
-        sum += e.rms;
+        sum += rms;
         ++n;
     }
     *mean = n ? sum / (double)n : NAN;
@@ -77,16 +87,10 @@ static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings
                                diag);
     double sum = 0;
     for (size_t c = 0; c < out->n_cases && !status; ++c) {
-        const tirenv_case *cs = &val->cases[out->case_index[c]];
-        tirenv_curve_errors e;
-        status = tirenv_case_predict_nn(*nn, R0, cs, h, diag);
+        double *rms = &out->rms[k * out->n_cases + c];
+        status = case_rms(*nn, R0, &val->cases[out->case_index[c]], h, rms, diag);
         if (!status)
-            status = tirenv_curve_errors_compute(cs->curve.n, cs->curve.x, cs->curve.h, h,
-                                                 1e-3, &e);
-        if (!status) {
-            out->rms[k * out->n_cases + c] = e.rms;
-            sum += e.rms;
-        }
+            sum += *rms;
     }
     out->mean_rms[k] = sum / (double)out->n_cases;
     free(h);
