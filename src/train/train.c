@@ -64,7 +64,8 @@ int tirenv_train_loss_find(const char *name)
  * control cases of each case's RMS (tirenv train --seeds 20), each option on and off with
  * the others at their defaults (lm, 8 restarts):
  *   input     even 0.78 mm against the paper's x_N 0.91 mm; its width a 0.2: 0.79 / 0.78 /
- *             0.83 mm at 0.1 / 0.2 / 0.3 ((1 - x_N)^2, the limit of large a: 0.96 mm);
+ *             0.83 mm at 0.1 / 0.2 / 0.3 (the limit of large a, (1 - x_N)^2 up to scale, was
+ *             0.96 mm when that was the form; a = 1000 gives 0.94 mm);
  *   target    h/H 0.78 mm against h 0.91 mm;
  *   loss      curves 0.78 mm against points 0.90 mm;
  *   ensemble  4 of 8: 0.78 mm against 0.80 mm for 1 and 2, 0.86 mm for 8 (its quartiles
