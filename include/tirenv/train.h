@@ -206,6 +206,18 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
                  const tirenv_samples *validation, tirenv_nn **out,
                  tirenv_train_report *report, tirenv_diag *diag);
 
+/* One progress callback shared by trainings that run at once (tirenv_train calls as work
+ * items of tirenv_parallel_for, or the restarts of one on settings.jobs threads): its calls
+ * never overlap, and once it asks to stop, every training stops at its next call. */
+typedef struct tirenv_train_progress_gate tirenv_train_progress_gate;
+
+/* A gate for s's progress callback, and s's progress and progress_data pointed through it
+ * (s without a callback is left as it is); give s, or copies of it, to the trainings. NULL if
+ * out of memory. */
+tirenv_train_progress_gate *tirenv_train_progress_gate_alloc(tirenv_train_settings *s);
+/* Frees g after the trainings that use it have returned; NULL is a no-op. */
+void tirenv_train_progress_gate_free(tirenv_train_progress_gate *g);
+
 /* FNV-1a (64 bit) over the IEEE bits of every input and output in order, little-endian,
  * continuing from h (start with TIRENV_FNV1A64_OFFSET): the data-set fingerprint. */
 #define TIRENV_FNV1A64_OFFSET UINT64_C(0xcbf29ce484222325)

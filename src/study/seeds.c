@@ -4,7 +4,6 @@
 #include "tirenv/study.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include "tirenv/parallel.h"
@@ -35,6 +34,20 @@ static double quantile(const double v[], size_t n, double p)
     return lo + 1 < n ? v[lo] + (h - (double)lo) * (v[lo + 1] - v[lo]) : v[n - 1];
 }
 
+/* The RMS error of the network's curve on one case; h is scratch of cs->curve.n. */
+static int case_rms(tirenv_nn *nn, double R0, const tirenv_case *cs, double h[], double *rms,
+                    tirenv_diag *diag)
+{
+    tirenv_curve_errors e;
+    int status = tirenv_case_predict_nn(nn, R0, cs, h, diag);
+    if (!status)
+        status = tirenv_curve_errors_compute(cs->curve.n, cs->curve.x, cs->curve.h, h, 1e-3,
+                                             &e);
+    if (!status)
+        *rms = e.rms;
+    return status;
+}
+
 /* The mean over the cases of `split` in ds of each one's RMS error (the network's curve);
  * NaN if there are none. */
 static int mean_case_rms(tirenv_nn *nn, double R0, const tirenv_dataset *ds, tirenv_split split,
@@ -43,17 +56,13 @@ static int mean_case_rms(tirenv_nn *nn, double R0, const tirenv_dataset *ds, tir
     double sum = 0;
     size_t n = 0;
     for (size_t i = 0; i < ds->n; ++i) {
-        const tirenv_case *cs = &ds->cases[i];
-        if (cs->split != split)
+        if (ds->cases[i].split != split)
             continue;
-        tirenv_curve_errors e;
-        int status = tirenv_case_predict_nn(nn, R0, cs, h, diag);
-        if (!status)
-            status = tirenv_curve_errors_compute(cs->curve.n, cs->curve.x, cs->curve.h, h,
-                                                 1e-3, &e);
+        double rms;
+        const int status = case_rms(nn, R0, &ds->cases[i], h, &rms, diag);
         if (status)
             return status;
-        sum += e.rms;
+        sum += rms;
         ++n;
     }
     *mean = n ? sum / (double)n : NAN;
@@ -78,16 +87,10 @@ static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings
                                diag);
     double sum = 0;
     for (size_t c = 0; c < out->n_cases && !status; ++c) {
-        const tirenv_case *cs = &val->cases[out->case_index[c]];
-        tirenv_curve_errors e;
-        status = tirenv_case_predict_nn(*nn, R0, cs, h, diag);
+        double *rms = &out->rms[k * out->n_cases + c];
+        status = case_rms(*nn, R0, &val->cases[out->case_index[c]], h, rms, diag);
         if (!status)
-            status = tirenv_curve_errors_compute(cs->curve.n, cs->curve.x, cs->curve.h, h,
-                                                 1e-3, &e);
-        if (!status) {
-            out->rms[k * out->n_cases + c] = e.rms;
-            sum += e.rms;
-        }
+            sum += *rms;
     }
     out->mean_rms[k] = sum / (double)out->n_cases;
     free(h);
@@ -95,25 +98,8 @@ static int one_seed(const tirenv_trainer_type *type, const tirenv_train_settings
 }
 
 /* The seeds as work items (tirenv/parallel.h); a progress callback is called by one training
- * at a time, and once it asks to stop, every training running stops at its next call. */
-typedef struct {
-    tirenv_train_progress_fn fn;
-    void *data;
-    pthread_mutex_t lock;
-    int stop;
-} progress_gate;
-
-static int gated_progress(const tirenv_train_progress *p, void *data)
-{
-    progress_gate *g = data;
-    pthread_mutex_lock(&g->lock);
-    if (!g->stop && g->fn(p, g->data))
-        g->stop = 1;
-    const int stop = g->stop;
-    pthread_mutex_unlock(&g->lock);
-    return stop;
-}
-
+ * at a time, and once it asks to stop, every training running stops at its next call
+ * (tirenv_train_progress_gate). */
 typedef struct {
     const tirenv_trainer_type *type;
     const tirenv_train_settings *settings;
@@ -124,7 +110,6 @@ typedef struct {
     tirenv_nn_seeds *out;
     tirenv_nn **nets;
     tirenv_train_report *reps;
-    progress_gate gate;
     tirenv_train_settings inner;   /* each seed's training, its progress through the gate
                                     * when the seeds run at once */
 } seeds_pass;
@@ -188,19 +173,15 @@ int tirenv_nn_train_seeds(const tirenv_trainer_type *type, const tirenv_train_se
     /* Independent seeds: no state is shared from one to the next, so they run on
      * settings->jobs threads, each training's restarts sharing the same threads
      * (tirenv/parallel.h: nested calls share the budget). */
-    seeds_pass sp_ = {type, settings, set, fit, val, R0, n_max, out, nets, reps,
-                      {NULL, NULL, PTHREAD_MUTEX_INITIALIZER, 0}, *settings};
+    seeds_pass sp_ = {type, settings, set, fit, val, R0, n_max, out, nets, reps, *settings};
     const size_t jobs = settings->jobs < 1 ? 1 : settings->jobs;
-    if (jobs > 1 && n_seeds > 1) {
-        if (settings->progress) {
-            sp_.gate.fn = settings->progress;
-            sp_.gate.data = settings->progress_data;
-            sp_.inner.progress = gated_progress;
-            sp_.inner.progress_data = &sp_.gate;
-        }
-    }
+    tirenv_train_progress_gate *gate = NULL;
+    if (!status && jobs > 1 && n_seeds > 1 && settings->progress &&
+        !(gate = tirenv_train_progress_gate_alloc(&sp_.inner)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     if (!status)
         status = tirenv_parallel_for(n_seeds, jobs, seed_item, NULL, &sp_, diag);
+    tirenv_train_progress_gate_free(gate);
     for (size_t k = 0; k < n_seeds && !status; ++k)
         out->seconds += reps[k].wall_time;
     if (!status) {
