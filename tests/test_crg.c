@@ -774,6 +774,8 @@ static const malformed bad[] = {
     /* header keys */
     {"= 0.5\n", "= 0.5x\n", TIRENV_EPARSE, 5, 31, "REFERENCE_LINE_INCREMENT",
      "unexpected 'x' after the number 0.5"},
+    {"= 0.5\n", "= 0.5 x\n", TIRENV_EPARSE, 5, 32, "REFERENCE_LINE_INCREMENT",
+     "unexpected 'x' after the number 0.5"}, /* the column of the junk, not of the blank */
     {"= 0.5\n", "= nan\n", TIRENV_EPARSE, 5, 28, "REFERENCE_LINE_INCREMENT",
      "expected a finite number"},
     {"= 0.5\n", "= -0.5\n", TIRENV_EPARSE, 5, 0, "REFERENCE_LINE_INCREMENT",

@@ -128,7 +128,7 @@ int tirenv_propfile__write(const tirenv_propfile__schema *s, const char *path,
 int tirenv_propfile__write_headed(const tirenv_propfile__schema *s, const char *path,
                                   const void *obj, const char *header, tirenv_diag *diag);
 
-/* ---- What the RDF road reader shares with this engine ---------------------------------- */
+/* ---- What the RDF road and OpenCRG header readers share with this engine ------------ */
 
 /* Where the text being parsed came from, so that an error names file, line and column. */
 typedef struct {
