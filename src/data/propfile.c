@@ -21,34 +21,32 @@ typedef tirenv_propfile__key pf_key;
 typedef tirenv_propfile__section pf_section;
 typedef tirenv_propfile__schema pf_schema;
 
-/* Where the text being parsed came from, so every error can name file, line and column. */
+/* Where the text being parsed came from (file is the path, or "--set" with line 0), the
+ * file's directory for relative paths, and its [UNITS]. */
 typedef struct {
-    const char *file; /* path, or "--set" */
-    size_t line;      /* 1-based, or 0 for --set */
-    const char *base; /* start of the line: columns count from here; NULL for no columns */
+    tirenv_propfile__where at;
     size_t dir_len;   /* length of file's directory part with its '/', 0 if none or --set */
-    tirenv_diag *diag;
     double *factor;   /* the file's [UNITS]: factor to SI per quantity; NULL for --set */
 } pf_ctx;
 
 /* Records a parse error; 'at' points into the line at the offending character. */
-#if defined(__GNUC__)
-__attribute__((format(printf, 4, 5)))
-#endif
-static int pf_fail(const pf_ctx *c, const char *at, const char *field, const char *fmt, ...)
+#define pf_fail(c, ...) tirenv_propfile__fail(&(c)->at, __VA_ARGS__)
+
+int tirenv_propfile__fail(const tirenv_propfile__where *w, const char *at, const char *field,
+                          const char *fmt, ...)
 {
     char msg[sizeof ((tirenv_diag *)NULL)->message];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    const int status = tirenv_error(c->diag, TIRENV_EPARSE, c->file, c->line, field, "%s", msg);
-    if (c->diag && c->base && at)
-        c->diag->column = (size_t)(at - c->base) + 1;
+    const int status = tirenv_error(w->diag, TIRENV_EPARSE, w->file, w->line, field, "%s", msg);
+    if (w->diag && w->base && at)
+        w->diag->column = (size_t)(at - w->base) + 1;
     return status;
 }
 
-static char *pf_trim(char *s)
+char *tirenv_propfile__trim(char *s)
 {
     while (isspace((unsigned char)*s))
         s++;
@@ -174,19 +172,21 @@ static const char *pf_key_list(const pf_schema *s, const char *section, char *bu
     return buf;
 }
 
-static int pf_parse_real(const pf_ctx *c, const pf_key *e, const char *text, double *out)
+int tirenv_propfile__real(const tirenv_propfile__where *w, const char *key, const char *text,
+                          double *out)
 {
     char *end;
     const double v = strtod(text, &end);
     if (end == text)
-        return pf_fail(c, text, e->key, "expected a number, got '%.60s'", text);
+        return tirenv_propfile__fail(w, text, key, "expected a number, got '%.60s'", text);
     if (*end) {
         const char *junk = end + strspn(end, " \t");
-        return pf_fail(c, junk, e->key, "unexpected '%.60s' after the number %.*s; expected "
-                       "only a number", junk, (int)(end - text), text);
+        return tirenv_propfile__fail(w, junk, key, "unexpected '%.60s' after the number %.*s; "
+                                     "expected only a number", junk, (int)(end - text), text);
     }
     if (!isfinite(v))
-        return pf_fail(c, text, e->key, "expected a finite number, got '%.60s'", text);
+        return tirenv_propfile__fail(w, text, key, "expected a finite number, got '%.60s'",
+                                     text);
     *out = v;
     return TIRENV_OK;
 }
@@ -221,7 +221,7 @@ static int pf_parse_path(const pf_ctx *c, const pf_key *e, const char *text, cha
         return pf_fail(c, text, e->key, "path of %zu characters%s is too long; expected at "
                        "most %zu", n, dir ? " (with the file's directory before it)" : "",
                        e->size - 1);
-    memcpy(out, c->file, dir);
+    memcpy(out, c->at.file, dir);
     memcpy(out + dir, text, n - dir + 1);
     return TIRENV_OK;
 }
@@ -258,7 +258,7 @@ static int pf_apply(const pf_ctx *c, const pf_key *e, char *value, void *obj)
     switch (e->kind) {
     case TIRENV_PROPFILE_REAL: {
         double v = 0;
-        const int status = pf_parse_real(c, e, value, &v);
+        const int status = tirenv_propfile__real(&c->at, e->key, value, &v);
         if (status == TIRENV_OK)
             memcpy(field, &v, sizeof v);
         return status;
@@ -325,11 +325,11 @@ static int pf_section_line(const pf_schema *s, const pf_ctx *c, char *open,
     char *close = strchr(open, ']');
     if (!close)
         return pf_fail(c, open, "", "unterminated section header; expected ']'");
-    char *rest = pf_trim(close + 1);
+    char *rest = tirenv_propfile__trim(close + 1);
     if (*rest)
         return pf_fail(c, rest, "", "unexpected '%.60s' after the section header", rest);
     *close = '\0';
-    const char *name = pf_trim(open + 1);
+    const char *name = tirenv_propfile__trim(open + 1);
     if (!*name)
         return pf_fail(c, open, "", "empty section name; expected [NAME]");
     *sec = pf_find_section(s, name);
@@ -356,8 +356,8 @@ static int pf_key_line(const pf_schema *s, const pf_ctx *c, char *text, const pf
         return status;
     }
     *eq = '\0';
-    const char *key = pf_trim(text);
-    char *value = pf_trim(eq + 1);
+    const char *key = tirenv_propfile__trim(text);
+    char *value = tirenv_propfile__trim(eq + 1);
     if (!*key)
         return pf_fail(c, eq, "", "missing key before '='; expected KEY = value");
     const size_t i = pf_find_key(s, sec->name, key, 0, NULL);
@@ -377,7 +377,7 @@ static int pf_key_line(const pf_schema *s, const pf_ctx *c, char *text, const pf
     if (seen[i])
         return pf_fail(c, key, s->keys[i].key, "duplicate key (first set on line %zu); "
                        "expected each key once", seen[i]);
-    seen[i] = c->line;
+    seen[i] = c->at.line;
     return pf_apply(c, &s->keys[i], value, obj);
 }
 
@@ -477,31 +477,31 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
     double factor[TIRENV_UNIT_KINDS];
     for (int k = 0; k < TIRENV_UNIT_KINDS; k++)
         factor[k] = 1;
-    pf_ctx c = {path, 0, NULL, slash ? (size_t)(slash - path) + 1 : 0, diag, factor};
+    pf_ctx c = {{path, 0, NULL, diag}, slash ? (size_t)(slash - path) + 1 : 0, factor};
     int status = TIRENV_OK;
     while (status == TIRENV_OK && (len = getline(&buf, &cap, fp)) != -1) {
-        c.line++;
+        c.at.line++;
         char *line = buf;
         /* A NUL ends the C string: the rest of the line would be dropped without a word. */
         const char *nul = memchr(buf, '\0', (size_t)len);
         if (nul) {
-            c.base = buf;
+            c.at.base = buf;
             status = pf_fail(&c, nul, "", "a NUL byte in the line; expected text (is this a "
                              "binary file?)");
             break;
         }
-        if (c.line == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
+        if (c.at.line == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
             line += 3; /* a UTF-8 byte-order mark some Windows editors add */
-        c.base = line;
+        c.at.base = line;
         status = pf_line(s, &c, line, &sec, &in_section, copy, seen);
     }
     if (status == TIRENV_OK && ferror(fp))
-        status = tirenv_error(diag, TIRENV_EIO, path, c.line + 1, "", "cannot read: %s",
+        status = tirenv_error(diag, TIRENV_EIO, path, c.at.line + 1, "", "cannot read: %s",
                               strerror(errno));
     free(buf);
     fclose(fp);
     if (status == TIRENV_OK)
-        status = pf_check_any(s, path, c.line, seen, diag);
+        status = pf_check_any(s, path, c.at.line, seen, diag);
     if (status == TIRENV_OK) {
         pf_convert(s, copy, seen, factor);
         pf_mark_given(s, copy, seen);
@@ -518,12 +518,12 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
 static int pf_set_buf(const pf_schema *s, void *obj, char *buf, const char *assignment,
                       tirenv_diag *diag)
 {
-    const pf_ctx c = {"--set", 0, NULL, 0, diag, NULL};
+    const pf_ctx c = {{"--set", 0, NULL, diag}, 0, NULL};
     char *eq = strchr(buf, '=');
     if (!eq)
         return pf_fail(&c, NULL, "", "expected KEY=VALUE, got '%.60s'", assignment);
     *eq = '\0';
-    char *key = pf_trim(buf);
+    char *key = tirenv_propfile__trim(buf);
     const char *section = NULL;
     char *dot = strchr(key, '.');
     if (dot) {
@@ -556,7 +556,7 @@ static int pf_set_buf(const pf_schema *s, void *obj, char *buf, const char *assi
     if (!copy)
         return tirenv_error(diag, TIRENV_ENOMEM, "--set", 0, "", "out of memory");
     memcpy(copy, obj, s->size);
-    int status = pf_apply(&c, &s->keys[i], pf_trim(eq + 1), copy);
+    int status = pf_apply(&c, &s->keys[i], tirenv_propfile__trim(eq + 1), copy);
     if (status == TIRENV_OK && s->keys[i].given) {
         unsigned given;
         memcpy(&given, (unsigned char *)copy + s->given_offset, sizeof given);

@@ -128,4 +128,31 @@ int tirenv_propfile__write(const tirenv_propfile__schema *s, const char *path,
 int tirenv_propfile__write_headed(const tirenv_propfile__schema *s, const char *path,
                                   const void *obj, const char *header, tirenv_diag *diag);
 
+/* ---- What the RDF road and OpenCRG header readers share with this engine ------------ */
+
+/* Where the text being parsed came from, so that an error names file, line and column. */
+typedef struct {
+    const char *file;   /* name for messages */
+    size_t line;        /* 1-based, or 0 for none */
+    const char *base;   /* start of the line: columns count from here; NULL for no column */
+    tirenv_diag *diag;
+} tirenv_propfile__where;
+
+/* Records TIRENV_EPARSE at w's file and line for field, with the column of at when both at
+ * and w->base are set. */
+int tirenv_propfile__fail(const tirenv_propfile__where *w, const char *at, const char *field,
+                          const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* s without white space at either end (the end cut in place). */
+char *tirenv_propfile__trim(char *s);
+
+/* A finite number that fills text (trimmed): strtod with an end check. Errors name key and
+ * point at the offending character. */
+int tirenv_propfile__real(const tirenv_propfile__where *w, const char *key, const char *text,
+                          double *out);
+
 #endif

@@ -7,11 +7,12 @@
 
 #include <ctype.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+
+#include "data/propfile.h"
 
 /* Header records are at most 72 characters; the specification says anything beyond is
  * ignored. */
@@ -122,31 +123,14 @@ typedef struct {
 /* What the parse gathers besides c's fields. */
 typedef struct {
     tirenv_crg *c;
-    tirenv_diag *diag;
-    size_t line;
-    const char *base;          /* the line, for columns */
+    tirenv_propfile__where at; /* the file's name, the line being read */
     size_t seen[SEC_COUNT];    /* line of each section's start, 0 if absent */
     size_t format_line;        /* the #: line */
     section_name *names;       /* per long section */
     size_t cap;
 } parse;
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 4, 5)))
-#endif
-static int fail(const parse *p, const char *at, const char *field, const char *fmt, ...)
-{
-    char msg[sizeof ((tirenv_diag *)NULL)->message];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    const int status = tirenv_error(p->diag, TIRENV_EPARSE, p->c->src.name, p->line, field,
-                                    "%s", msg);
-    if (p->diag && at && p->base)
-        p->diag->column = (size_t)(at - p->base) + 1;
-    return status;
-}
+#define fail(p, ...) tirenv_propfile__fail(&(p)->at, __VA_ARGS__)
 
 static char *trim(char *s)
 {
@@ -177,22 +161,6 @@ static size_t keyword_length(const char *s)
     return n;
 }
 
-/* A number that fills text (trimmed): strtod with an end check, finite. */
-static int parse_number(const parse *p, char *text, const char *field, double *out)
-{
-    char *end;
-    const double v = strtod(text, &end);
-    if (end == text || !*text)
-        return fail(p, text, field, "expected a number, got '%.40s'", text);
-    if (*end)
-        return fail(p, end, field, "unexpected '%.40s' after the number %.*s; expected only "
-                    "a number", end, (int)(end - text), text);
-    if (!isfinite(v))
-        return fail(p, text, field, "expected a finite number, got '%.40s'", text);
-    *out = v;
-    return TIRENV_OK;
-}
-
 /* Stores a key's value; a key given twice must give the same value (a repeated option line
  * is harmless, a contradiction is not). */
 static int store(const parse *p, tirenv_crg__value *slot, const char *key, const char *at,
@@ -203,7 +171,7 @@ static int store(const parse *p, tirenv_crg__value *slot, const char *key, const
                     v, slot->value, slot->line);
     if (!slot->line) {
         slot->value = v;
-        slot->line = p->line;
+        slot->line = p->at.line;
     }
     return TIRENV_OK;
 }
@@ -232,7 +200,7 @@ static int key_line(parse *p, section sec, char *text)
     if (sec == SEC_ROAD) {
         for (size_t i = 0; i < CRG_ROAD_KEYS; i++)
             if (strcasecmp(key, road_names[i]) == 0) {
-                if ((status = parse_number(p, value, road_names[i], &v)))
+                if ((status = tirenv_propfile__real(&p->at, road_names[i], value, &v)))
                     return status;
                 return store(p, &c->road[i], road_names[i], value, v);
             }
@@ -244,7 +212,7 @@ static int key_line(parse *p, section sec, char *text)
             const opt_def *d = &opt_defs[i];
             if (strcasecmp(key, d->name) != 0)
                 continue;
-            if ((status = parse_number(p, value, d->name, &v)))
+            if ((status = tirenv_propfile__real(&p->at, d->name, value, &v)))
                 return status;
             if (d->integer_max > 0 && !(v == floor(v) && v >= d->lo && v <= d->integer_max))
                 return fail(p, value, d->name, "expected a whole number from %d to %d, got "
@@ -261,7 +229,7 @@ static int key_line(parse *p, section sec, char *text)
         const mod_def *d = &mod_defs[i];
         if (strcasecmp(key, d->name) != 0)
             continue;
-        if ((status = parse_number(p, value, d->name, &v)))
+        if ((status = tirenv_propfile__real(&p->at, d->name, value, &v)))
             return status;
         if (d->used < 0)
             return fail(p, key, d->name, "modifier not supported by tirenv (it re-scales or "
@@ -310,13 +278,13 @@ static int add_long_section(parse *p, const section_name *n)
         if (ln)
             c->kd_line_z = ln;
         if (!ln)
-            return tirenv_error(p->diag, TIRENV_ENOMEM, c->src.name, p->line, "",
+            return tirenv_error(p->at.diag, TIRENV_ENOMEM, c->src.name, p->at.line, "",
                                 "out of memory");
         p->cap = cap;
     }
     p->names[c->nv] = *n;
     c->ch_z[c->nv] = c->nch;
-    c->kd_line_z[c->nv] = p->line;
+    c->kd_line_z[c->nv] = p->at.line;
     c->nv++;
     return TIRENV_OK;
 }
@@ -406,7 +374,7 @@ static int channel_line(parse *p, char *text)
             return fail(p, def, "D", "channel '%s' defined twice (first on line %zu)", name,
                         *slot_line);
         *slot = c->nch;
-        *slot_line = p->line;
+        *slot_line = p->at.line;
     } else {
         section_name n;
         if ((status = long_section_name(p, name, name + 12, &n)) ||
@@ -432,7 +400,7 @@ static int kd_line(parse *p, char *text)
             return fail(p, fmt, "#:", "unknown data format '%.20s'; expected LRFI, LDFI, KRBI "
                         "or KDBI", fmt);
         c->enc = e;
-        p->format_line = p->line;
+        p->format_line = p->at.line;
         return TIRENV_OK;
     }
     if (strncasecmp(text, "D:", 2) == 0)
@@ -466,7 +434,7 @@ static int section_line(parse *p, char *text, section *sec)
         if (s == SEC_FILE)
             return fail(p, kw, section_names[s], "file references are not supported; open "
                         "the referenced OpenCRG file itself");
-        p->seen[s] = p->line;
+        p->seen[s] = p->at.line;
         *sec = (section)s;
         return TIRENV_OK;
     }
@@ -527,7 +495,7 @@ static int numbered_positions(parse *p)
         if (right->line && left->line) {
             const double last = first + span * step;
             if (fabs(last - left->value) > tolerance(last, left->value)) {
-                p->line = left->line;
+                p->at.line = left->line;
                 return fail(p, NULL, road_names[CRG_LS_V_LEFT], "with LONG_SECTION_V_RIGHT = "
                             "%.17g and LONG_SECTION_V_INCREMENT = %.17g, the %zu long sections "
                             "end at v = %.17g, not at %.17g", first, step, c->nv, last,
@@ -538,14 +506,14 @@ static int numbered_positions(parse *p)
         first = right->value;
         step = (left->value - right->value) / span;
     } else {
-        p->line = c->kd_line_z[0];
+        p->at.line = c->kd_line_z[0];
         return fail(p, NULL, road_names[CRG_LS_V_INCREMENT], "numbered long sections need "
                     "LONG_SECTION_V_INCREMENT (or both LONG_SECTION_V_RIGHT and _LEFT) in "
                     "$ROAD_CRG");
     }
     for (size_t j = 0; j < c->nv; j++) {
         if (p->names[j].n != j + 1) {
-            p->line = c->kd_line_z[j];
+            p->at.line = c->kd_line_z[j];
             return fail(p, NULL, "D", "long section %lu where %zu was expected; numbered long "
                         "sections go 1, 2, ... from right to left", p->names[j].n, j + 1);
         }
@@ -561,7 +529,7 @@ static int explicit_positions(parse *p)
     for (size_t j = 0; j < c->nv; j++) {
         c->v[j] = p->names[j].v;
         if (j > 0 && !(c->v[j] > c->v[j - 1])) {
-            p->line = c->kd_line_z[j];
+            p->at.line = c->kd_line_z[j];
             return fail(p, NULL, "D", "long section at v = %.17g after v = %.17g; expected "
                         "ascending v (right to left)", c->v[j], c->v[j - 1]);
         }
@@ -572,7 +540,7 @@ static int explicit_positions(parse *p)
     for (size_t k = 0; k < 2; k++) {
         const tirenv_crg__value *h = &c->road[ends[k].key];
         if (h->line && fabs(h->value - ends[k].v) > tolerance(h->value, ends[k].v)) {
-            p->line = h->line;
+            p->at.line = h->line;
             return fail(p, NULL, road_names[ends[k].key], "%.17g, but the long sections of "
                         "$KD_DEFINITION %s at v = %.17g", h->value, k ? "end" : "start",
                         ends[k].v);
@@ -582,7 +550,7 @@ static int explicit_positions(parse *p)
     for (size_t j = 1; inc->line && j < c->nv; j++) {
         const double d = c->v[j] - c->v[j - 1];
         if (fabs(d - inc->value) > tolerance(d, inc->value)) {
-            p->line = inc->line;
+            p->at.line = inc->line;
             return fail(p, NULL, road_names[CRG_LS_V_INCREMENT], "%.17g, but long sections "
                         "%zu and %zu are %.17g m apart", inc->value, j, j + 1, d);
         }
@@ -594,8 +562,8 @@ static int explicit_positions(parse *p)
 static int finish(parse *p, size_t last_line)
 {
     tirenv_crg *c = p->c;
-    p->base = NULL;
-    p->line = last_line;
+    p->at.base = NULL;
+    p->at.line = last_line;
     if (!p->seen[SEC_ROAD])
         return fail(p, NULL, "ROAD_CRG", "no $ROAD_CRG section; expected the road parameters "
                     "(REFERENCE_LINE_INCREMENT at least)");
@@ -604,53 +572,53 @@ static int finish(parse *p, size_t last_line)
                     "format and channels");
     const tirenv_crg__value *inc = &c->road[CRG_RL_INCREMENT];
     if (!inc->line) {
-        p->line = p->seen[SEC_ROAD];
+        p->at.line = p->seen[SEC_ROAD];
         return fail(p, NULL, road_names[CRG_RL_INCREMENT], "missing in $ROAD_CRG; expected "
                     "the distance between cross sections, m (the one mandatory key)");
     }
     if (!(inc->value > 0)) {
-        p->line = inc->line;
+        p->at.line = inc->line;
         return fail(p, NULL, road_names[CRG_RL_INCREMENT], "%.17g; expected a positive "
                     "length, m", inc->value);
     }
     const tirenv_crg__value *u0 = &c->road[CRG_RL_START_U], *u1 = &c->road[CRG_RL_END_U];
     if (u0->line && u1->line && !(u1->value > u0->value)) {
-        p->line = u1->line;
+        p->at.line = u1->line;
         return fail(p, NULL, road_names[CRG_RL_END_U], "%.17g is not beyond "
                     "REFERENCE_LINE_START_U = %.17g", u1->value, u0->value);
     }
     const tirenv_crg__value *vinc = &c->road[CRG_LS_V_INCREMENT];
     if (vinc->line && !(vinc->value > 0)) {
-        p->line = vinc->line;
+        p->at.line = vinc->line;
         return fail(p, NULL, road_names[CRG_LS_V_INCREMENT], "%.17g; expected a positive "
                     "length, m", vinc->value);
     }
     const tirenv_crg__value *vr = &c->road[CRG_LS_V_RIGHT], *vl = &c->road[CRG_LS_V_LEFT];
     if (vr->line && vl->line && !(vl->value > vr->value)) {
-        p->line = vl->line;
+        p->at.line = vl->line;
         return fail(p, NULL, road_names[CRG_LS_V_LEFT], "%.17g is not left of "
                     "LONG_SECTION_V_RIGHT = %.17g; expected V_RIGHT < V_LEFT", vl->value,
                     vr->value);
     }
     if (c->nv < 2) {
-        p->line = p->seen[SEC_KD];
+        p->at.line = p->seen[SEC_KD];
         return fail(p, NULL, "D", "%zu long section%s; expected at least two (a road has a "
                     "width)", c->nv, c->nv == 1 ? "" : "s");
     }
     for (size_t j = 1; j < c->nv; j++)
         if (p->names[j].numbered != p->names[0].numbered) {
-            p->line = c->kd_line_z[j];
+            p->at.line = c->kd_line_z[j];
             return fail(p, NULL, "D", "long sections both numbered and at given v; expected "
                         "one way for all");
         }
     if (!(c->v = malloc(c->nv * sizeof *c->v)))
-        return tirenv_error(p->diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
+        return tirenv_error(p->at.diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
     return p->names[0].numbered ? numbered_positions(p) : explicit_positions(p);
 }
 
 int tirenv_crg__parse_header(tirenv_crg *c, tirenv_diag *diag)
 {
-    parse p = {.c = c, .diag = diag};
+    parse p = {.c = c, .at = {.file = c->src.name, .diag = diag}};
     c->enc = TIRENV_CRG_KRBI; /* the specification's default when no #: line is given */
     c->ch_phi = c->ch_slope = c->ch_bank = TIRENV_CRG__NONE;
     tirenv_lines r;
@@ -661,12 +629,12 @@ int tirenv_crg__parse_header(tirenv_crg *c, tirenv_diag *diag)
     char text[RECORD + 1];
     int got, ended = 0;
     while (!ended && (got = tirenv_lines__next(&r, diag)) > 0) {
-        p.line = r.line;
+        p.at.line = r.line;
         const char *line = r.text;
         if (r.line == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
             line += 3; /* a UTF-8 byte-order mark */
         snprintf(text, sizeof text, "%s", line);
-        p.base = text;
+        p.at.base = text;
         if (text[0] == '$' && text[1] == '$') {
             ended = 1;
             c->header_lines = r.line;
@@ -678,8 +646,8 @@ int tirenv_crg__parse_header(tirenv_crg *c, tirenv_diag *diag)
     if (!status && got < 0)
         status = -got;
     if (!status && !ended) {
-        p.base = NULL;
-        p.line = r.line;
+        p.at.base = NULL;
+        p.at.line = r.line;
         status = fail(&p, NULL, "$$$$", "no end of header (a '$$$$' line) by the end of the "
                       "file; expected the header, a '$$$$' line, then the road data");
     }

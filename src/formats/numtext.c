@@ -3,6 +3,8 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "formats/numtext.h"
 
+#include "tirenv/io.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,13 +17,13 @@ void tirenv_numtext__shortest(char *buf, size_t n, double v)
     int lo = 1, hi = 17;
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
-        snprintf(buf, n, "%.*g", mid, v);
+        tirenv_fmt_g(v, mid, buf); /* the bytes of "%.*g", without printf's cost */
         if (strtod(buf, NULL) == v)
             hi = mid;
         else
             lo = mid + 1;
     }
-    snprintf(buf, n, "%.*g", lo, v);
+    tirenv_fmt_g(v, lo, buf);
     /* "%g" writes -10000 as -1e+04: plain decimals read better wherever they are no longer. */
     if (!strchr(buf, 'e') || !(fabs(v) >= 1e-4 && fabs(v) < 1e15))
         return;

@@ -3,14 +3,13 @@
  * (docs/formats.md section 5). SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/rdf.h"
 
-#include <ctype.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
+#include "data/propfile.h"
 #include "data/units.h"
 #include "formats/source.h"
 
@@ -48,10 +47,7 @@ typedef struct {
 typedef enum { B_OTHER, B_HEADER, B_UNITS, B_MODEL, B_PARAMETERS } block;
 
 typedef struct {
-    const tirenv_source *src;
-    tirenv_diag *diag;
-    size_t line;
-    const char *base;
+    tirenv_propfile__where at; /* the source's name, the line being read */
     block blk;
     int in_xz;                 /* rows of (XZ_DATA) follow */
     size_t xz_line;
@@ -64,32 +60,7 @@ typedef struct {
     size_t n, cap;
 } rdf;
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 4, 5)))
-#endif
-static int fail(const rdf *r, const char *at, const char *field, const char *fmt, ...)
-{
-    char msg[sizeof ((tirenv_diag *)NULL)->message];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->src->name, r->line, field, "%s",
-                                    msg);
-    if (r->diag && at && r->base)
-        r->diag->column = (size_t)(at - r->base) + 1;
-    return status;
-}
-
-static char *trim(char *s)
-{
-    while (isspace((unsigned char)*s))
-        s++;
-    size_t n = strlen(s);
-    while (n > 0 && isspace((unsigned char)s[n - 1]))
-        s[--n] = '\0';
-    return s;
-}
+#define fail(r, ...) tirenv_propfile__fail(&(r)->at, __VA_ARGS__)
 
 /* '$' and '!' start a comment, except inside a quoted string. */
 static void strip_comment(char *s)
@@ -112,32 +83,15 @@ static int string_value(const rdf *r, char *value, const char *key, char **out)
         char *close = strchr(value + 1, '\'');
         if (!close)
             return fail(r, value, key, "unterminated string; expected a closing '");
-        if (*trim(close + 1))
+        if (*tirenv_propfile__trim(close + 1))
             return fail(r, close + 1, key, "unexpected '%.40s' after the string", close + 1);
         *close = '\0';
-        *out = trim(value + 1);
+        *out = tirenv_propfile__trim(value + 1);
         return TIRENV_OK;
     }
     if (!*value)
         return fail(r, value, key, "missing value after '='");
     *out = value;
-    return TIRENV_OK;
-}
-
-static int number_value(const rdf *r, char *value, const char *key, double *out)
-{
-    char *end;
-    const double v = strtod(value, &end);
-    if (end == value)
-        return fail(r, value, key, "expected a number, got '%.40s'", value);
-    if (*end) {
-        const char *junk = end + strspn(end, " \t");
-        return fail(r, junk, key, "unexpected '%.40s' after the number %.*s; expected only a "
-                    "number", junk, (int)(end - value), value);
-    }
-    if (!isfinite(v))
-        return fail(r, value, key, "expected a finite number, got '%.40s'", value);
-    *out = v;
     return TIRENV_OK;
 }
 
@@ -147,7 +101,7 @@ static int set_once(const rdf *r, setting *s, const char *key, const char *at, d
         return fail(r, at, key, "set twice (first on line %zu); expected each key once",
                     s->line);
     s->value = v;
-    s->line = r->line;
+    s->line = r->at.line;
     return TIRENV_OK;
 }
 
@@ -184,7 +138,7 @@ static int copy_name(const rdf *r, char *value, const char *key, char *dst, size
         return fail(r, value, key, "set twice (first on line %zu); expected each key once",
                     *line);
     snprintf(dst, n, "%s", s);
-    *line = r->line;
+    *line = r->at.line;
     return TIRENV_OK;
 }
 
@@ -195,7 +149,7 @@ static int key_line(rdf *r, char *text)
         return fail(r, text, "", "unexpected '%.40s'; expected KEY = value, a [BLOCK] or a "
                     "(SUB_BLOCK)", text);
     *eq = '\0';
-    char *key = trim(text), *value = trim(eq + 1);
+    char *key = tirenv_propfile__trim(text), *value = tirenv_propfile__trim(eq + 1);
     if (!*key)
         return fail(r, eq, "", "missing key before '='");
     switch (r->blk) {
@@ -230,7 +184,7 @@ static int key_line(rdf *r, char *text)
     for (int k = 0; k < N_KEYS; k++)
         if (strcasecmp(key, key_names[k]) == 0) {
             double v = 0;
-            const int status = number_value(r, value, key_names[k], &v);
+            const int status = tirenv_propfile__real(&r->at, key_names[k], value, &v);
             return status ? status : set_once(r, &r->keys[k], key_names[k], key, v);
         }
     if (r->blk == B_MODEL)
@@ -279,14 +233,14 @@ static int xz_row(rdf *r, char *text)
         if (ln)
             r->row_line = ln;
         if (!ln)
-            return tirenv_error(r->diag, TIRENV_ENOMEM, r->src->name, r->line, "",
+            return tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, r->at.line, "",
                                 "out of memory");
         r->cap = cap;
     }
     r->x[r->n] = v[0];
     r->zl[r->n] = v[1];
     r->zr[r->n] = v[2];
-    r->row_line[r->n] = r->line;
+    r->row_line[r->n] = r->at.line;
     r->n++;
     return TIRENV_OK;
 }
@@ -305,18 +259,18 @@ static int bracketed(rdf *r, char *text, char close, char **name)
     char *end = strchr(text, close);
     if (!end)
         return fail(r, text, "", "unterminated '%c'; expected '%c'", text[0], close);
-    const char *rest = trim(end + 1);
+    const char *rest = tirenv_propfile__trim(end + 1);
     if (*rest)
         return fail(r, rest, "", "unexpected '%.40s' after '%c'", rest, close);
     *end = '\0';
-    *name = trim(text + 1);
+    *name = tirenv_propfile__trim(text + 1);
     return TIRENV_OK;
 }
 
 static int line_of(rdf *r, char *text)
 {
     strip_comment(text);
-    text = trim(text);
+    text = tirenv_propfile__trim(text);
     if (!*text)
         return TIRENV_OK;
     char *name = NULL;
@@ -336,7 +290,7 @@ static int line_of(rdf *r, char *text)
             return fail(r, name, "XZ_DATA", "(XZ_DATA) given twice (first on line %zu)",
                         r->xz_line);
         if (r->in_xz)
-            r->xz_line = r->line;
+            r->xz_line = r->at.line;
         return TIRENV_OK;
     }
     if (text[0] == '{' || r->blk == B_OTHER)
@@ -354,7 +308,7 @@ static int need_unit(rdf *r, tirenv_unit_kind kind, const char *why, double *f)
         *f = r->unit[kind].value;
         return TIRENV_OK;
     }
-    r->line = 0;
+    r->at.line = 0;
     return fail(r, NULL, tirenv_units__key(kind), "no [UNITS] %s; expected it for %s",
                 tirenv_units__key(kind), why);
 }
@@ -365,18 +319,18 @@ static int profile_of(rdf *r, size_t n, const double x[], const double z[],
     tirenv_diag d;
     tirenv_diag_clear(&d);
     if (tirenv_profile_validate(n, x, z, &d) != TIRENV_OK) {
-        r->line = line && d.line >= 1 && d.line <= n ? line[d.line - 1] : 0;
+        r->at.line = line && d.line >= 1 && d.line <= n ? line[d.line - 1] : 0;
         return fail(r, NULL, line ? "XZ_DATA" : "", "%s", d.message);
     }
     if (!(*out = tirenv_profile_alloc(n, x, z)))
-        return tirenv_error(r->diag, TIRENV_ENOMEM, r->src->name, 0, "", "out of memory");
+        return tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, 0, "", "out of memory");
     return TIRENV_OK;
 }
 
 static int poly_line(rdf *r, tirenv_rdf_side side, double f, double offset, tirenv_profile **out)
 {
     if (!r->xz_line || r->n == 0) {
-        r->line = r->xz_line ? r->xz_line : r->road_type_line;
+        r->at.line = r->xz_line ? r->xz_line : r->road_type_line;
         return fail(r, NULL, "XZ_DATA", "ROAD_TYPE 'poly_line' without %s; expected rows of "
                     "x, z_left, z_right in [PARAMETERS] (XZ_DATA)",
                     r->xz_line ? "rows in (XZ_DATA)" : "an (XZ_DATA) table");
@@ -384,7 +338,7 @@ static int poly_line(rdf *r, tirenv_rdf_side side, double f, double offset, tire
     double *x = malloc(r->n * sizeof *x), *z = malloc(r->n * sizeof *z);
     int status = TIRENV_OK;
     if (!x || !z)
-        status = tirenv_error(r->diag, TIRENV_ENOMEM, r->src->name, 0, "", "out of memory");
+        status = tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, 0, "", "out of memory");
     for (size_t k = 0; !status && k < r->n; k++) {
         const double zs = side == TIRENV_RDF_LEFT    ? r->zl[k]
                           : side == TIRENV_RDF_RIGHT ? r->zr[k]
@@ -407,20 +361,20 @@ static int plank(rdf *r, double f, double offset, tirenv_profile **out)
     const int req[] = {K_HEIGHT, K_START, K_LENGTH};
     for (size_t k = 0; k < 3; k++)
         if (!r->keys[req[k]].line) {
-            r->line = r->road_type_line;
+            r->at.line = r->road_type_line;
             return fail(r, NULL, key_names[req[k]], "ROAD_TYPE 'plank' needs %s in "
                         "[PARAMETERS]; expected HEIGHT, START and LENGTH", key_names[req[k]]);
         }
     const double H = r->keys[K_HEIGHT].value, S = r->keys[K_START].value;
     const double L = r->keys[K_LENGTH].value, b = r->keys[K_BEVEL].value;
     if (r->keys[K_DIRECTION].value != 0) {
-        r->line = r->keys[K_DIRECTION].line;
+        r->at.line = r->keys[K_DIRECTION].line;
         return fail(r, NULL, "DIRECTION", "%.17g: an oblique plank meets each wheel track at "
                     "another x, and a 2-D profile is one track; expected 0 (a plank across "
                     "the road)", r->keys[K_DIRECTION].value);
     }
     if (r->keys[K_EDGE_ROUNDED].value != 0) {
-        r->line = r->keys[K_EDGE_ROUNDED].line;
+        r->at.line = r->keys[K_EDGE_ROUNDED].line;
         return fail(r, NULL, "EDGE_ROUNDED", "rounded plank edges are not supported; expected "
                     "0 (45-degree bevel edges)");
     }
@@ -432,7 +386,7 @@ static int plank(rdf *r, double f, double offset, tirenv_profile **out)
     };
     for (size_t k = 0; k < sizeof checks / sizeof checks[0]; k++)
         if (checks[k].bad) {
-            r->line = r->keys[checks[k].key].line;
+            r->at.line = r->keys[checks[k].key].line;
             return fail(r, NULL, key_names[checks[k].key], "%.17g; expected %s",
                         r->keys[checks[k].key].value, checks[k].want);
         }
@@ -453,14 +407,14 @@ static int plank(rdf *r, double f, double offset, tirenv_profile **out)
 
 static int road(rdf *r, tirenv_rdf_side side, tirenv_profile **out)
 {
-    r->base = NULL;
+    r->at.base = NULL;
     if (!r->method_line || !r->road_type_line) {
-        r->line = r->method_line ? r->method_line : r->road_type_line;
+        r->at.line = r->method_line ? r->method_line : r->road_type_line;
         return fail(r, NULL, r->method_line ? "ROAD_TYPE" : "METHOD", "missing in [MODEL]; "
                     "expected METHOD = '2D' and ROAD_TYPE");
     }
     if (strcasecmp(r->method, "2D") != 0) {
-        r->line = r->method_line;
+        r->at.line = r->method_line;
         return fail(r, NULL, "METHOD", "'%s': tirenv reads 2-D roads; expected '2D'",
                     r->method);
     }
@@ -477,7 +431,7 @@ static int road(rdf *r, tirenv_rdf_side side, tirenv_profile **out)
         const double x = 0, z = f * offset;
         return profile_of(r, 1, &x, &z, NULL, out);
     }
-    r->line = r->road_type_line;
+    r->at.line = r->road_type_line;
     return fail(r, NULL, "ROAD_TYPE", "'%s' is not supported; expected 'poly_line', 'plank' "
                 "or 'flat'", r->road_type);
 }
@@ -488,18 +442,18 @@ static int read_source(const tirenv_source *src, tirenv_rdf_side side, tirenv_pr
     if (!tirenv_rdf_side_name(side))
         return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
                             (int)side);
-    rdf r = {.src = src, .diag = diag};
+    rdf r = {.at = {.file = src->name, .diag = diag}};
     tirenv_lines lines;
     int status = tirenv_lines__init(&lines, src, 0, 1, diag);
     if (status)
         return status;
     int got;
     while (!status && (got = tirenv_lines__next(&lines, diag)) > 0) {
-        r.line = lines.line;
+        r.at.line = lines.line;
         char *text = lines.text;
-        if (r.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
+        if (r.at.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3;
-        r.base = text;
+        r.at.base = text;
         status = line_of(&r, text);
     }
     if (!status && got < 0)
