@@ -4,8 +4,9 @@
 #   sh scripts/roads-crg.sh path/to/tirenv path/to/halfround_6in.crg [OUTDIR]
 # The road is Project Chrono's halfround_6in.crg (data/vehicle/terrain/crg_roads/, BSD-3: a
 # 6 inch half-round across a flat road, 1 cm grid, binary KRBI). The default tire at
-# 17860 N, the ring reference tire's load at the paper's middle regime (its 0.33 m patch,
-# tirenv flat --model ring); the track at v = 0.9 m, every 2 mm over the obstacle. Writes
+# 17860 N, about the ring reference tire's load at the paper's middle regime (17848 N at its
+# 0.33 m patch, tirenv flat --model ring); the track at v = 0.9 m, every 2 mm over the
+# obstacle. Writes
 # OUTDIR/roads-crg.dat (block 0: the raw track, x and z; block 1: x and h of each model, all in
 # m and mm), then runs gnuplot in OUTDIR on docs/roads-crg.gp (kept in the repository beside
 # the .dat it reads; run it by hand from docs/).
