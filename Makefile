@@ -15,6 +15,8 @@ skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
 all: build
 
+# The Debian packages the build, tests and plots need (scripts/deps.sh: installs them as root,
+# else prints the apt-get line and fails).
 deps:
 	@sh scripts/deps.sh
 
@@ -23,11 +25,12 @@ deps:
 deps-test: deps
 	@sh scripts/deps.sh --slurm
 
+# Release build under BUILD: the library, CLI, tests, Python module and FMU.
 build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# Release build and tests, then the same tests under AddressSanitizer + UBSan.
+# Release build and every test, then test-asan.
 # The Release run includes the install checks (label install: install into a temporary
 # prefix, build tests/consumer/ against it, run the installed CLI moved away from the clone)
 # and the Slurm scripts on a single-node cluster it starts (label slurm, about 20 s).
@@ -39,6 +42,8 @@ test: build deps-test
 test-slurm: build deps-test
 	@cd $(BUILD) && ctest --output-on-failure -L slurm
 
+# Debug build under AddressSanitizer + UBSan in ASAN_BUILD, and its tests: all but the labels
+# slow, install and slurm (and no fuzz harnesses: TIRENV_FUZZ=OFF; make test ran them).
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
 	    -DTIRENV_FUZZ=OFF >/dev/null
@@ -67,12 +72,17 @@ fmu: build
 demo: build
 	@$(MAKE) --no-print-directory -j $(JOBS) -Otarget demo-study-205 demo-ride
 
+# The tractor's study alone, into DEMO_OUT, with the CLI already built (demo-ride's nn model
+# uses its nn.json).
 demo-study:
 	@$(BUILD)/tirenv study --jobs $(JOBS) -o $(DEMO_OUT)
 
+# The 205/60R15 car tire's study alone, into DEMO_205.
 demo-study-205:
 	@$(BUILD)/tirenv study --jobs $(JOBS) --data data/dataset-205-60R15 -o $(DEMO_205)
 
+# The tractor's rides, after demo-study: over the cleat (out/ride-cleat/) and the road
+# (out/ride-road/).
 demo-ride: demo-study
 	@$(BUILD)/tirenv ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h \
 	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --enveloping static,dynamic \
@@ -105,5 +115,6 @@ fuzz: build
 install: build
 	@DESTDIR='$(DESTDIR)' cmake --install $(BUILD) --prefix '$(PREFIX)'
 
+# Removes both build trees and out/ (the demo's outputs).
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -14,7 +14,8 @@
 
 static const fmu_variable variables[] = {
     {"model", 100, FMU_STRING, FMU_PARAMETER, NULL,
-     "enveloping model: rigid, springs, ring or cam", STRING(model)},
+     "enveloping model: rigid, springs, ring or cam; point passes the road's own height and "
+     "slope on (nn, which needs a network file, is refused)", STRING(model)},
     {"tire_file", 101, FMU_STRING, FMU_PARAMETER, NULL,
      "tire property file (.tir); relative to the FMU's resources unless absolute; empty: "
      "the built-in default tire", STRING(tire_file)},

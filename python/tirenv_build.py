@@ -213,6 +213,7 @@ int tirenv_ride_run_dynamic(const tirenv_vehicle *v, const tirenv_ride_table *fr
                             tirenv_ride_sample out[], tirenv_diag *diag);
 
 /* comfort.h */
+static const double TIRENV_COMFORT_FS_MIN;
 typedef enum { TIRENV_WK = 0, TIRENV_WD, TIRENV_WE } tirenv_weighting;
 typedef struct {
     double duration; double rms; double peak; double crest; double vdv; double mtvv;

@@ -4,14 +4,16 @@
 #   sh scripts/roads-crg.sh path/to/tirenv path/to/halfround_6in.crg [OUTDIR]
 # The road is Project Chrono's halfround_6in.crg (data/vehicle/terrain/crg_roads/, BSD-3: a
 # 6 inch half-round across a flat road, 1 cm grid, binary KRBI). The default tire at
-# 17860 N, the ring reference tire's load at the paper's middle regime (its 0.33 m patch,
-# tirenv flat --model ring); the track at v = 0.9 m, every 2 mm over the obstacle. Writes
+# 17860 N, about the ring reference tire's load at the paper's middle regime (17848 N at its
+# 0.33 m patch, tirenv flat --model ring); the track at v = 0.9 m, every 2 mm over the
+# obstacle. Writes
 # OUTDIR/roads-crg.dat (block 0: the raw track, x and z; block 1: x and h of each model, all in
-# m and mm), then runs gnuplot on OUTDIR/roads-crg.gp, which is kept in the repository beside
-# them and can be run by hand from OUTDIR.
+# m and mm), then runs gnuplot in OUTDIR on docs/roads-crg.gp (kept in the repository beside
+# the .dat it reads; run it by hand from docs/).
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -eu
 bin=$1 road=$2 out=${3:-docs}
+gp=$(cd "$(dirname "$0")/../docs" && pwd)/roads-crg.gp
 load=17860
 track=0.9
 sweep="--x-from 48.8 --x-to 51.5 --dx 0.002"
@@ -36,4 +38,4 @@ done
             1000 * $19, 1000 * $27 }'
 } >"$out/roads-crg.dat"
 cd "$out"
-gnuplot roads-crg.gp
+gnuplot "$gp"

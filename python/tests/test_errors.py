@@ -59,13 +59,15 @@ def test_bad_generator_and_arrays():
         tirenv.Profile.road("Z")
 
 
-def test_no_equilibrium_raises_with_the_position():
+def test_load_the_tire_cannot_carry_and_contact_length_out_of_range():
     m = tirenv.Model("springs")
     with pytest.raises(tirenv.TirenvError) as e:
         m.set(tirenv.Profile.cleat(0.3, 0.05), 1e9)  # more than the tire can carry
-    assert e.value.status_name
-    with pytest.raises(tirenv.TirenvError):
+    assert e.value.status == 5 and e.value.field == "load"  # TIRENV_ENOBRACKET
+    assert "the tire carries with its centre at the ground" in e.value.message
+    with pytest.raises(tirenv.TirenvError) as e:
         m.load_for_contact_length(5.0)  # not in (0, 2 R0)
+    assert e.value.status == 1 and e.value.field == "contact length"  # TIRENV_EINVAL
 
 
 def test_obstacle_too_tall_is_a_range_error():
@@ -98,5 +100,8 @@ def test_bad_vehicle_and_ride_arguments(tmp_path):
         tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), speed="fast")
     with pytest.raises(tirenv.TirenvError, match="network"):
         tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), model="nn")
+    with pytest.raises(tirenv.TirenvError, match="too coarse") as e:  # 100 Hz < 320 Hz
+        tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), dt=0.01)
+    assert e.value.field == "dt"
     with pytest.raises(tirenv.TirenvError, match="Wk"):
         tirenv.comfort([0.0] * 1000, 1000.0, "Wz")

@@ -162,9 +162,9 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005
     static load's rows)."""
     v = vehicle if vehicle is not None else Vehicle()
     speed = speed_of(speed)
-    if not (1 / dt >= 320.0):
+    if not (1 / dt >= lib.TIRENV_COMFORT_FS_MIN):
         raise invalid(f"dt {dt} s is too coarse for ISO 2631-1's weightings: at most "
-                      f"{1 / 320.0} s", "dt")
+                      f"{1 / lib.TIRENV_COMFORT_FS_MIN} s", "dt")
     methods = {"rk4": lib.TIRENV_RIDE_RK4, "rk8pd": lib.TIRENV_RIDE_RK8PD}
     if method not in methods:
         raise invalid(f"expected rk4 or rk8pd, got {method!r}", "method")
