@@ -82,7 +82,7 @@ int tirenv_ride_run(const tirenv_vehicle *v, const tirenv_ride_track *front,
  * one model's effective heights at m >= 1 loads of one tire on the grid of tirenv_ride_track,
  * w[j*n + k] at load[j] and x_k = x0 + k*dx. In x each row is a tirenv_ride_track (Steffen),
  * in the load linear between rows; below load[0] the input is load[0]'s, above load[m-1]
- * load[m-1]'s (m = 1: an input that does not depend on the load). tirenv_ride_table_fill
+ * load[m-1]'s (m = 1: an input that does not depend on the load). tirenv_ride_table_build
  * computes one from a model. */
 typedef struct {
     double x0;             /* first grid position, m */
@@ -100,7 +100,7 @@ typedef struct {
 void tirenv_ride_table_loads(double G0, double load[]);
 
 /* tirenv ride's table for a tire of static load G0 (N): rows of model over profile p at the
- * loads of tirenv_ride_table_loads (as tirenv_ride_table_fill), into load[] and w[] (room for
+ * loads of tirenv_ride_table_loads (each row tirenv_ride_effective's), into load[] and w[] (room for
  * TIRENV_RIDE_TABLE_LOADS rows of n), their number in *rows. A load the model refuses ends the
  * rows above G0, or is left out below it; G0's row must succeed (its error is returned). Rows
  * all alike (a model whose road does not depend on the load: rigid, point) become one, at G0.
@@ -109,15 +109,6 @@ void tirenv_ride_table_loads(double G0, double load[]);
 int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double G0, double x0,
                             double dx, size_t n, double load[], double w[], size_t *rows,
                             char *warnings, size_t warnings_size, tirenv_diag *diag);
-
-/* The rows of a table: tirenv_ride_effective of model m over profile p at each of the m
- * loads (N, per tire) into w[j*n + k], the model set on p once and its load changed for the
- * others (tirenv_model_set_load: each row bit for bit a fresh set's for rigid, cam, nn and
- * point, within the equilibrium's tolerances for springs and ring). The model ends set at
- * the last load. */
-int tirenv_ride_table_fill(tirenv_model *model, const tirenv_profile *p, size_t m,
-                           const double load[], double x0, double dx, size_t n, double w[],
-                           tirenv_diag *diag);
 
 /* An axle's input as a function of position and tire load, for inputs that are neither a
  * track nor a table (a model evaluated during the integration, say): fn puts the height

@@ -37,19 +37,6 @@ int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load,
     return status;
 }
 
-/* One row per load: the model is set on the profile once, then only its load changes. */
-int tirenv_ride_table_fill(tirenv_model *model, const tirenv_profile *p, size_t m,
-                           const double load[], double x0, double dx, size_t n, double w[],
-                           tirenv_diag *diag)
-{
-    if (!load || m < 1)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load", "expected at least one load");
-    int status = TIRENV_OK;
-    for (size_t j = 0; j < m && !status; ++j)
-        status = tirenv_ride_effective(model, p, load[j], x0, dx, n, w + j * n, diag);
-    return status;
-}
-
 /* Factors of the static load (docs/models.md section 9.5): from a tenth, below which a tire is
  * nearly off the ground, to three times, beyond which the loads over the demo's cleats do not
  * go; closer at light loads, where the patch and with it the enveloping change fastest (like
