@@ -83,6 +83,14 @@ typedef struct {
     size_t n;
 } ride_series;
 
+/* A model of this type for one axle's tire into *m (free it, also on failure; NULL if not
+ * made): a cam only with the tire's cam data, a type that needs a network with nn (x_N
+ * referred to R0_nn, m; 0: the tire's), evaluated outside its trained ranges only if
+ * extrapolate is set. */
+int ride_cli_axle_model(const tirenv_model_type *type, const tirenv_tire *tire,
+                        const tirenv_nn *nn, double R0_nn, int extrapolate, tirenv_model **m,
+                        tirenv_diag *diag);
+
 /* What one axle's tires follow on the grid x0 + k*dx (k < n), into w[]: the effective height
  * of a model of this type at the load of one tire (N), the same for every type (the point
  * contact: the profile itself). A type that needs a network gets nn (x_N referred to R0_nn,

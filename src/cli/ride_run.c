@@ -94,12 +94,8 @@ static int direct_models(const ride_setup *s, const ride_inputs *in, int extrapo
 {
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle) {
-        m[axle] = tirenv_model_alloc(in->type, &s->tire[axle]);
-        if (!m[axle])
-            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        tirenv_model_set_extrapolate(m[axle], extrapolate);
-        if (in->nn)
-            status = tirenv_model_set_network(m[axle], in->nn, in->R0_nn, diag);
+        status = ride_cli_axle_model(in->type, &s->tire[axle], in->nn, in->R0_nn, extrapolate,
+                                     &m[axle], diag);
         if (!status)
             status = tirenv_model_set(m[axle], s->p, s->load[axle], diag);
     }
