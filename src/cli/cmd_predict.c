@@ -10,7 +10,8 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
           "                      [--track V] [--side S] [--tracks N] [--width W]\n"
-          "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
+          "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX]\n"
+          "                      [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                      [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
