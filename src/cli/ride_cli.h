@@ -126,8 +126,8 @@ int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *d
 int ride_cli_run(const cli_options *o, const ride_options *r);
 
 /* Writes comfort.csv, comfort.md and the seat and spectrum plots into r->out_dir, for the
- * runs res[j*n_models + i] (speed j, model i) of a vehicle of this wheelbase (m); returns an
- * exit code after printing any error. */
+ * runs res[j*n_cols + c] (speed j, column c of r->cols) of a vehicle of this wheelbase (m);
+ * returns an exit code after printing any error. */
 int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],
                     double wheelbase);
 
