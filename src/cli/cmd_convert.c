@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/road_out.h"
 #include "tirenv/crg.h"
 #include "tirenv/profile_file.h"
 #include "tirenv/rdf.h"
@@ -66,15 +67,6 @@ static int parse_side(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
-static int parse_encoding(void *dst, const char *arg)
-{
-    if (tirenv_crg_encoding_find(arg, dst)) {
-        cli_error("convert: --crg-encoding expects kdbi, krbi, ldfi or lrfi, got '%s'", arg);
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
-}
-
 /* Returns an exit code, or CLI_GO_ON. */
 static int parse(int argc, char *argv[], convert *cv)
 {
@@ -83,7 +75,7 @@ static int parse(int argc, char *argv[], convert *cv)
         {.name = "track", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_track},
         {.name = "side", .kind = CLI_CUSTOM, .dst = &cv->src.rdf_side, .parse = parse_side},
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &cv->w.crg_encoding,
-         .parse = parse_encoding},
+         .parse = cli_parse_crg_encoding},
         {.name = "dx", .kind = CLI_POSITIVE, .dst = &cv->w.crg_u_increment,
          .what = "a positive length in m"},
         {.name = "half-width", .kind = CLI_POSITIVE, .dst = &cv->w.crg_half_width,

@@ -177,7 +177,7 @@ void cli_help_envelope_output(FILE *fp)
           fp);
 }
 
-cli_envelope_opts cli_envelope_default(void)
+static cli_envelope_opts envelope_default(void)
 {
     return (cli_envelope_opts){.stream = 0, .detail = 0, .encoding = TIRENV_CRG_KDBI,
                                .relative = CLI_RELATIVE_DATUM};
@@ -575,33 +575,33 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
     return code;
 }
 
-static int parse_encoding(void *dst, const char *arg)
+int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *argv[],
+                       cli_options *o, cli_envelope_opts *e)
 {
-    if (tirenv_crg_encoding_find(arg, dst)) {
-        cli_error("--crg-encoding: expected kdbi, krbi, ldfi or lrfi, got '%s'", arg);
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
+    *e = envelope_default();
+    const cli_opt own[] = {
+        /* envelope's own two first: predict's table starts after them */
+        {.name = "stream", .kind = CLI_FLAG, .dst = &e->stream},
+        {.name = "detail", .kind = CLI_FLAG, .dst = &e->detail},
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e->encoding,
+         .parse = cli_parse_crg_encoding},
+        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e->relative,
+         .parse = cli_parse_relative_to},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = cmd, .usage = help,
+                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 2),
+                          .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
+                                    CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
+                                    CLI_NETWORK};
+    return cli_parse(&p, argc, argv, o);
 }
 
 int cli_envelope_main(int argc, char *argv[])
 {
-    cli_envelope_opts e = cli_envelope_default();
-    const cli_opt own[] = {
-        {.name = "stream", .kind = CLI_FLAG, .dst = &e.stream},
-        {.name = "detail", .kind = CLI_FLAG, .dst = &e.detail},
-        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e.encoding,
-         .parse = parse_encoding},
-        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e.relative,
-         .parse = cli_parse_relative_to},
-        {.name = NULL},
-    };
-    const cli_parser p = {.name = "envelope", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
-                                    CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
-                                    CLI_NETWORK};
+    cli_envelope_opts e;
     cli_options o;
-    const int code = cli_parse(&p, argc, argv, &o);
+    const int code = cli_envelope_parse("envelope", usage, argc, argv, &o, &e);
     if (code != CLI_GO_ON)
         return code;
     if (!o.type) {

@@ -10,7 +10,8 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
           "                      [--track V] [--side S] [--tracks N] [--width W]\n"
-          "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX] [-o FILE]\n"
+          "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX]\n"
+          "                      [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                      [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
@@ -63,31 +64,11 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-static int parse_encoding(void *dst, const char *arg)
-{
-    if (tirenv_crg_encoding_find(arg, dst)) {
-        cli_error("--crg-encoding: expected kdbi, krbi, ldfi or lrfi, got '%s'", arg);
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
-}
-
 int cli_predict_main(int argc, char *argv[])
 {
-    cli_envelope_opts e = cli_envelope_default();
-    const cli_opt own[] = {
-        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e.encoding,
-         .parse = parse_encoding},
-        {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e.relative,
-         .parse = cli_parse_relative_to},
-        {.name = NULL},
-    };
-    const cli_parser p = {.name = "predict", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
-                                    CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
-                                    CLI_NETWORK};
+    cli_envelope_opts e;
     cli_options o;
-    const int code = cli_parse(&p, argc, argv, &o);
+    const int code = cli_envelope_parse("predict", usage, argc, argv, &o, &e);
     if (code != CLI_GO_ON)
         return code;
     /* The network is what this command runs: any type that evaluates one. */

@@ -301,6 +301,18 @@ static int merge_main(int argc, char *argv[])
     return CLI_EXIT_OK;
 }
 
+/* What cli_sweep_main allocates for the sweep: the value lists, the keys' axes, the network. */
+static void free_axes(value_list lists[4], sweep_keys *keys, tirenv_nn *net)
+{
+    for (size_t k = 0; k < 4; ++k)
+        free(lists[k].v);
+    for (size_t k = 0; k < keys->n; ++k) {
+        free(keys->keys[k]);
+        free(keys->values[k]);
+    }
+    tirenv_nn_free(net);
+}
+
 int cli_sweep_main(int argc, char *argv[])
 {
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
@@ -395,13 +407,7 @@ int cli_sweep_main(int argc, char *argv[])
         }
     }
     if (code) {
-        for (size_t k = 0; k < 4; ++k)
-            free(lists[k].v);
-        for (size_t k = 0; k < keys.n; ++k) {
-            free(keys.keys[k]);
-            free(keys.values[k]);
-        }
-        tirenv_nn_free(with_net);
+        free_axes(lists, &keys, with_net);
         return code < 0 ? CLI_EXIT_OK : code;
     }
     s.network = with_net;
@@ -436,13 +442,7 @@ int cli_sweep_main(int argc, char *argv[])
     tirenv_diag_clear(&diag);
     tirenv_sweep_report rep;
     const int status = tirenv_sweep_run(o.output, &tire, &s, &rep, &diag);
-    for (size_t k = 0; k < 4; ++k)
-        free(lists[k].v);
-    for (size_t k = 0; k < keys.n; ++k) {
-        free(keys.keys[k]);
-        free(keys.values[k]);
-    }
-    tirenv_nn_free(with_net);
+    free_axes(lists, &keys, with_net);
     if (status) {
         if (tty && ps.first != (size_t)-1)
             fputc('\n', stderr);

@@ -5,6 +5,7 @@
 
 #include "cli/cli.h"
 #include "cli/level.h"
+#include "cli/road_out.h"
 
 /* How the curve is computed and written, besides the shared options. */
 typedef struct {
@@ -14,8 +15,11 @@ typedef struct {
     cli_relative_to relative;      /* h relative to the datum or to the road's local level */
 } cli_envelope_opts;
 
-/* KDBI, no stream, no detail, relative to the datum. */
-cli_envelope_opts cli_envelope_default(void);
+/* Parses the options of tirenv CMD ("envelope", or "predict", which has no --stream and no
+ * --detail) into *o and *e, its defaults KDBI, no stream, no detail, relative to the datum;
+ * returns cli_parse's code. */
+int cli_envelope_parse(const char *cmd, void (*usage)(FILE *fp), int argc, char *argv[],
+                       cli_options *o, cli_envelope_opts *e);
 
 /* The curve of a model of this type over the options' obstacle (its tracks: --track, --tracks)
  * at their load, as CSV to o->output (stdout if NULL), or as the effective road if o->output

@@ -83,6 +83,14 @@ typedef struct {
     size_t n;
 } ride_series;
 
+/* A model of this type for one axle's tire into *m (free it, also on failure; NULL if not
+ * made): a cam only with the tire's cam data, a type that needs a network with nn (x_N
+ * referred to R0_nn, m; 0: the tire's), evaluated outside its trained ranges only if
+ * extrapolate is set. */
+int ride_cli_axle_model(const tirenv_model_type *type, const tirenv_tire *tire,
+                        const tirenv_nn *nn, double R0_nn, int extrapolate, tirenv_model **m,
+                        tirenv_diag *diag);
+
 /* What one axle's tires follow on the grid x0 + k*dx (k < n), into w[]: the effective height
  * of a model of this type at the load of one tire (N), the same for every type (the point
  * contact: the profile itself). A type that needs a network gets nn (x_N referred to R0_nn,
@@ -118,8 +126,8 @@ int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *d
 int ride_cli_run(const cli_options *o, const ride_options *r);
 
 /* Writes comfort.csv, comfort.md and the seat and spectrum plots into r->out_dir, for the
- * runs res[j*n_models + i] (speed j, model i) of a vehicle of this wheelbase (m); returns an
- * exit code after printing any error. */
+ * runs res[j*n_cols + c] (speed j, column c of r->cols) of a vehicle of this wheelbase (m);
+ * returns an exit code after printing any error. */
 int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],
                     double wheelbase);
 

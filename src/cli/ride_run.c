@@ -94,12 +94,8 @@ static int direct_models(const ride_setup *s, const ride_inputs *in, int extrapo
 {
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle) {
-        m[axle] = tirenv_model_alloc(in->type, &s->tire[axle]);
-        if (!m[axle])
-            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        tirenv_model_set_extrapolate(m[axle], extrapolate);
-        if (in->nn)
-            status = tirenv_model_set_network(m[axle], in->nn, in->R0_nn, diag);
+        status = ride_cli_axle_model(in->type, &s->tire[axle], in->nn, in->R0_nn, extrapolate,
+                                     &m[axle], diag);
         if (!status)
             status = tirenv_model_set(m[axle], s->p, s->load[axle], diag);
     }
@@ -194,8 +190,8 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
             break;
         }
         axle_warnings(in[i].name, axle, warnings[k]);
-        in[i].seconds = (axle ? in[i].seconds : 0) + seconds[k][0];
-        in[i].table_seconds = (axle ? in[i].table_seconds : 0) + seconds[k][1];
+        in[i].seconds += seconds[k][0];  /* in[] starts zeroed */
+        in[i].table_seconds += seconds[k][1];
     }
     return code;
 }
@@ -407,12 +403,26 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     double x_first, x_last;
     tirenv_profile_extent(p, &x_first, &x_last);
     const double x_from = r->have_from ? r->x_from : x_first - run_in;
+    /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
+     * memory": a 10 km/h km of road is 0.36 M samples. */
     double x_to_max = x_from;
     for (size_t j = 0; j < r->n_speeds; ++j) {
-        const double x_to = run_end(r, &s, r->speeds[j], x_last);
+        const double speed = r->speeds[j];
+        const double x_to = run_end(r, &s, speed, x_last);
+        const double duration = (x_to - x_from) / speed;
         if (!(x_to > x_from)) {
             cli_error("ride: the run must end after it starts: --x-from %g m, --x-to %g m",
                       x_from, x_to);
+            code = CLI_EXIT_USAGE;
+            goto done;
+        }
+        if (!(duration / r->dt < CLI_MAX_POSITIONS)) {
+            cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
+                      "most %.0f: check --speed (%g m/s) and --dt", duration, r->dt,
+                      duration / r->dt,
+                      duration / r->dt * (double)(sizeof *series->samples +
+                                                  sizeof *series->a_w) / 1e9,
+                      CLI_MAX_POSITIONS, speed);
             code = CLI_EXIT_USAGE;
             goto done;
         }
@@ -431,22 +441,6 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = r->model_names[i];
-    }
-    /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
-     * memory": a 10 km/h km of road is 0.36 M samples. */
-    for (size_t j = 0; j < r->n_speeds; ++j) {
-        const double speed = r->speeds[j];
-        const double duration = (run_end(r, &s, speed, x_last) - x_from) / speed;
-        if (!(duration / r->dt < CLI_MAX_POSITIONS)) {
-            cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
-                      "most %.0f: check --speed (%g m/s) and --dt", duration, r->dt,
-                      duration / r->dt,
-                      duration / r->dt * (double)(sizeof *series->samples +
-                                                  sizeof *series->a_w) / 1e9,
-                      CLI_MAX_POSITIONS, speed);
-            code = CLI_EXIT_USAGE;
-            goto done;
-        }
     }
     if ((code = model_inputs(r, &s, in)))
         goto done;

@@ -26,6 +26,15 @@ int cli_road_out_wanted(const char *path, tirenv_profile_format *f)
            *f != TIRENV_PROFILE_CSV;
 }
 
+int cli_parse_crg_encoding(void *dst, const char *arg)
+{
+    if (tirenv_crg_encoding_find(arg, dst)) {
+        cli_error("--crg-encoding: expected kdbi, krbi, ldfi or lrfi, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 void cli_road_out_abort(cli_road_out *w)
 {
     if (!w)

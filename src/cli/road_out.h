@@ -10,6 +10,10 @@
  * which; a CSV (or '-') is the curve itself, written by the command. */
 int cli_road_out_wanted(const char *path, tirenv_profile_format *f);
 
+/* --crg-encoding kdbi|krbi|ldfi|lrfi, for a command's own option table (dst:
+ * tirenv_crg_encoding). */
+int cli_parse_crg_encoding(void *dst, const char *arg);
+
 /* What the file says and how it is laid out. */
 typedef struct {
     double x_from, dx;           /* the positions x_k = x_from + k*dx, m */
