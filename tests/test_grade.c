@@ -117,31 +117,6 @@ static void test_level_shapes(void **state)
 
 /* ---- models on a grade ------------------------------------------------------------------ */
 
-/* A 4-8-1 network with seeded weights (no good model of a tire, but a network). */
-static tirenv_nn *made_up_network(void)
-{
-    tirenv_nn_topology t = tirenv_nn_topology_default();
-    tirenv_nn *nn = tirenv_nn_alloc(&t);
-    assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 4242);
-    tirenv_nn_init_weights(nn, rng);
-    enum { N = 97 };
-    double x[N * TIRENV_NN_INPUTS], y[N];
-    for (size_t k = 0; k < N; ++k) {
-        double *u = x + k * TIRENV_NN_INPUTS;
-        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
-        y[k] = 0.04 * gsl_rng_uniform(rng);
-    }
-    tirenv_diag d;
-    assert_int_equal(tirenv_nn_fit_scaling(nn, N, x, y, &d), TIRENV_OK);
-    gsl_rng_free(rng);
-    return nn;
-}
-
 static tirenv_model *model_named(const char *name, const tirenv_tire *tire, tirenv_nn *nn)
 {
     const tirenv_model_type *type = tirenv_model_type_find(name);
@@ -204,7 +179,7 @@ static void test_closed_forms(void **state)
 {
     (void)state;
     const tirenv_tire tire = tirenv_tire_default();
-    tirenv_nn *nn = made_up_network();
+    tirenv_nn *nn = tirenv_test_made_up_network(4242, 97);
     const double R0 = tire.springs.R0, a_e = tire.cam.length * R0, b_e = tire.cam.height * R0;
     const double c_e = tire.cam.order, p = c_e / (c_e - 1);
     const double grades[] = {-0.12, -0.03, 0.0, 0.0123, 0.05, 0.2};

@@ -10,14 +10,6 @@
 #include <string.h>
 #include <unistd.h>
 
-static tirenv_tire default_tire(void)
-{
-    tirenv_tire t = tirenv_tire_default();
-    tirenv_diag d;
-    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d), TIRENV_OK);
-    return t;
-}
-
 /* A class C road of length m every 0.01 m (seed 7), written with round-trip precision. */
 static void write_road(char path[64], double length, size_t *n_out)
 {
@@ -94,7 +86,7 @@ static void check_equal(const tirenv_model_type *type, double tol_h)
     char path[64];
     size_t n_vert;
     write_road(path, 12.0, &n_vert);
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(type, &tire);
     assert_non_null(m);
     tirenv_diag d;
@@ -162,7 +154,7 @@ static void test_springs_equals_whole(void **state)
 static void test_window_bounded(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
     assert_non_null(m);
     const double reach = tirenv_model_reach(m);
@@ -205,7 +197,7 @@ static void test_sink_stops(void **state)
     char path[64];
     size_t n_vert;
     write_road(path, 3.0, &n_vert);
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
     collect c = {.stop = 17};
     tirenv_stream_stats st;
@@ -238,7 +230,7 @@ static void test_malformed(void **state)
         {"x_m,z_m\n", TIRENV_EPARSE, 0, ""},
         {"# only\n", TIRENV_EPARSE, 0, ""},
     };
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char path[64];
