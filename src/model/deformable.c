@@ -296,7 +296,7 @@ int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tiren
     if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
-                            "deformable", sv.G, sv.z_flat);
+                            st->ops->name, sv.G, sv.z_flat);
     st->G = sv.G;
     st->z_flat = sv.z_flat;
     st->z_prev = sv.z_prev;
