@@ -390,12 +390,7 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
         return status;
     t->z_prev = res.point.z;
     t->have_prev = 1;
-    out->z = res.point.z;
-    out->h = res.point.z - m->z_flat;
-    out->fz = res.point.F;
-    out->fx = res.point.fx;
-    out->contacts = res.point.contacts;
-    out->slope = tirenv_model__slope(out);
+    tirenv_model__eq_point(&res.point, m->z_flat, out);
     return TIRENV_OK;
 }
 
