@@ -216,13 +216,16 @@ static void test_network_model(void **state)
         assert_bits_equal(pt[k].z, z_c + h[k]);
         assert_true(pt[k].fx == 0 && pt[k].fz == load && pt[k].iterations == 0);
         raised += h[k] > 1e-4;
-        /* A single position's slope (a step of 1e-5 in x_N) against the sweep's. */
+        /* A single position's slope (a step of 1e-5 in x_N) against the sweep's (central
+         * differences over 2 x 2.6 mm): they differ by the truncation of the wider step,
+         * measured up to 1.6e-7 on this network; 1e-6 leaves room for the rounding of
+         * another libm, not for a slope of the wrong curve or step. */
         if (k > 0 && k + 1 < N && k % 37 == 0) {
             tirenv_point one;
             assert_int_equal(tirenv_model_eval(m, x[k], &one, &d), TIRENV_OK);
             assert_bits_equal(one.h, h[k]);
             if (fabs(x[k]) > 0.02 && h[k] > 1e-3 && h[k - 1] > 1e-3 && h[k + 1] > 1e-3)
-                assert_near(one.slope, pt[k].slope, 0.02, 0.05);
+                assert_near(one.slope, pt[k].slope, 1e-6, 0);
         }
     }
     assert_true(raised > N / 10);
