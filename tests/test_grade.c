@@ -267,18 +267,6 @@ static int next_vertex(void *ctx, double *x, double *z, int *got, tirenv_diag *d
     return TIRENV_OK;
 }
 
-typedef struct {
-    tirenv_point *pt;
-    size_t n;
-} collect;
-
-static int keep(void *ctx, const tirenv_point *pt)
-{
-    collect *c = ctx;
-    c->pt[c->n++] = *pt;
-    return TIRENV_OK;
-}
-
 /* A 60 m road climbing 6 m (10 %) in undulations, from 2.1 m: streamed in windows of the
  * reach, it gives the whole road's points bit for bit (rigid, cam, springs). */
 static void test_stream_graded(void **state)
@@ -303,7 +291,7 @@ static void test_stream_graded(void **state)
         const double from = 1.0, to = 58.0, dx = 0.01;
         const size_t n = tirenv_positions_count(from, to, dx);
         tirenv_point *whole = malloc(n * sizeof *whole);
-        collect c = {malloc(n * sizeof *c.pt), 0};
+        tirenv_test_points c = {malloc(n * sizeof *c.pt), 0, n, 0};
         assert_true(whole && c.pt);
         double *xs = malloc(n * sizeof *xs);
         for (size_t k = 0; k < n; ++k)
@@ -312,7 +300,7 @@ static void test_stream_graded(void **state)
         assert_int_equal(tirenv_model_envelope(m, n, xs, whole, NULL, &d), TIRENV_OK);
         array_source src = {p, 0};
         tirenv_stream_stats st;
-        if (tirenv_model_stream(m, next_vertex, &src, from, to, dx, G, keep, &c, &st, &d))
+        if (tirenv_model_stream(m, next_vertex, &src, from, to, dx, G, tirenv_test_keep_point, &c, &st, &d))
             fail_msg("%s: %s", names[i], d.message);
         assert_int_equal(c.n, n);
         assert_true(st.window_max < NV / 4);

@@ -45,25 +45,7 @@ static void write_text(char path[64], const char *text)
     assert_int_equal(fclose(fp), 0);
 }
 
-/* The sink: collects points, or stops after `stop` of them. */
-typedef struct {
-    tirenv_point *pt;
-    size_t n, cap, stop;
-} collect;
-
-static int collect_point(void *ctx, const tirenv_point *pt)
-{
-    collect *c = ctx;
-    if (c->stop && c->n == c->stop)
-        return TIRENV_EIO;
-    if (c->n == c->cap) {
-        c->cap = c->cap ? 2 * c->cap : 1024;
-        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
-        assert_non_null(c->pt);
-    }
-    c->pt[c->n++] = *pt;
-    return TIRENV_OK;
-}
+typedef tirenv_test_points collect;  /* the sink of the streamed points */
 
 static int stream_file(tirenv_model *m, const char *path, double x_from, double x_to,
                        double dx, collect *c, tirenv_stream_stats *stats, tirenv_diag *d)
@@ -73,7 +55,7 @@ static int stream_file(tirenv_model *m, const char *path, double x_from, double 
     if (status)
         return status;
     status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx, 4123.5,
-                                 collect_point, c, stats, d);
+                                 tirenv_test_keep_point, c, stats, d);
     tirenv_profile_reader_free(in);
     return status;
 }

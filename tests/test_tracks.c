@@ -329,18 +329,6 @@ static int rows_next(void *ctx, double *x, double z[], int *got, tirenv_diag *di
     return TIRENV_OK;
 }
 
-typedef struct {
-    tirenv_point *pt;
-    size_t n;
-} sink_buf;
-
-static int sink_point(void *ctx, const tirenv_point *pt)
-{
-    sink_buf *s = ctx;
-    s->pt[s->n++] = *pt;
-    return TIRENV_OK;
-}
-
 /* Two tracks of different ISO 8608 roads, 12 m, streamed: every point as over the whole
  * tracks, bit for bit, for the equilibrium (springs) and the mean (cam); the window stays
  * small. */
@@ -373,10 +361,10 @@ static void test_stream_tracks(void **state)
         assert_int_equal(tirenv_model_envelope(m, n, x, whole, NULL, &d), TIRENV_OK);
         rows src = {tirenv_profile_x(r0), tirenv_profile_z(r0), tirenv_profile_z(r1),
                     tirenv_profile_size(r0), 0};
-        sink_buf sb = {streamed, 0};
+        tirenv_test_points sb = {streamed, 0, n, 0};
         tirenv_stream_stats st;
         assert_int_equal(tirenv_model_stream_tracks(m, 2, w, rows_next, &src, x_from, x_to, dx,
-                                                    load, sink_point, &sb, &st, &d),
+                                                    load, tirenv_test_keep_point, &sb, &st, &d),
                          TIRENV_OK);
         assert_int_equal(sb.n, n);
         for (size_t k = 0; k < n; ++k)

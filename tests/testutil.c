@@ -123,3 +123,17 @@ tirenv_nn *tirenv_test_made_up_network(unsigned long seed, size_t n_samples)
     gsl_rng_free(rng);
     return nn;
 }
+
+int tirenv_test_keep_point(void *ctx, const tirenv_point *pt)
+{
+    tirenv_test_points *c = ctx;
+    if (c->stop && c->n == c->stop)
+        return TIRENV_EIO;
+    if (c->n == c->cap) {
+        c->cap = c->cap ? 2 * c->cap : 1024;
+        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
+        assert_non_null(c->pt);
+    }
+    c->pt[c->n++] = *pt;
+    return TIRENV_OK;
+}
