@@ -117,31 +117,6 @@ static void test_level_shapes(void **state)
 
 /* ---- models on a grade ------------------------------------------------------------------ */
 
-/* A 4-8-1 network with seeded weights (no good model of a tire, but a network). */
-static tirenv_nn *made_up_network(void)
-{
-    tirenv_nn_topology t = tirenv_nn_topology_default();
-    tirenv_nn *nn = tirenv_nn_alloc(&t);
-    assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 4242);
-    tirenv_nn_init_weights(nn, rng);
-    enum { N = 97 };
-    double x[N * TIRENV_NN_INPUTS], y[N];
-    for (size_t k = 0; k < N; ++k) {
-        double *u = x + k * TIRENV_NN_INPUTS;
-        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
-        y[k] = 0.04 * gsl_rng_uniform(rng);
-    }
-    tirenv_diag d;
-    assert_int_equal(tirenv_nn_fit_scaling(nn, N, x, y, &d), TIRENV_OK);
-    gsl_rng_free(rng);
-    return nn;
-}
-
 static tirenv_model *model_named(const char *name, const tirenv_tire *tire, tirenv_nn *nn)
 {
     const tirenv_model_type *type = tirenv_model_type_find(name);
@@ -204,7 +179,7 @@ static void test_closed_forms(void **state)
 {
     (void)state;
     const tirenv_tire tire = tirenv_tire_default();
-    tirenv_nn *nn = made_up_network();
+    tirenv_nn *nn = tirenv_test_made_up_network(4242, 97);
     const double R0 = tire.springs.R0, a_e = tire.cam.length * R0, b_e = tire.cam.height * R0;
     const double c_e = tire.cam.order, p = c_e / (c_e - 1);
     const double grades[] = {-0.12, -0.03, 0.0, 0.0123, 0.05, 0.2};
@@ -292,18 +267,6 @@ static int next_vertex(void *ctx, double *x, double *z, int *got, tirenv_diag *d
     return TIRENV_OK;
 }
 
-typedef struct {
-    tirenv_point *pt;
-    size_t n;
-} collect;
-
-static int keep(void *ctx, const tirenv_point *pt)
-{
-    collect *c = ctx;
-    c->pt[c->n++] = *pt;
-    return TIRENV_OK;
-}
-
 /* A 60 m road climbing 6 m (10 %) in undulations, from 2.1 m: streamed in windows of the
  * reach, it gives the whole road's points bit for bit (rigid, cam, springs). */
 static void test_stream_graded(void **state)
@@ -328,7 +291,7 @@ static void test_stream_graded(void **state)
         const double from = 1.0, to = 58.0, dx = 0.01;
         const size_t n = tirenv_positions_count(from, to, dx);
         tirenv_point *whole = malloc(n * sizeof *whole);
-        collect c = {malloc(n * sizeof *c.pt), 0};
+        tirenv_test_points c = {malloc(n * sizeof *c.pt), 0, n, 0};
         assert_true(whole && c.pt);
         double *xs = malloc(n * sizeof *xs);
         for (size_t k = 0; k < n; ++k)
@@ -337,7 +300,7 @@ static void test_stream_graded(void **state)
         assert_int_equal(tirenv_model_envelope(m, n, xs, whole, NULL, &d), TIRENV_OK);
         array_source src = {p, 0};
         tirenv_stream_stats st;
-        if (tirenv_model_stream(m, next_vertex, &src, from, to, dx, G, keep, &c, &st, &d))
+        if (tirenv_model_stream(m, next_vertex, &src, from, to, dx, G, tirenv_test_keep_point, &c, &st, &d))
             fail_msg("%s: %s", names[i], d.message);
         assert_int_equal(c.n, n);
         assert_true(st.window_max < NV / 4);

@@ -177,18 +177,6 @@ static void test_errors(void **state)
     assert_int_equal(tirenv_profile_read_tracks(missing, NULL, 1, NULL, t, &d), TIRENV_EIO);
 }
 
-typedef struct {
-    tirenv_point *pt;
-    size_t n;
-} sink_buf;
-
-static int sink_point(void *ctx, const tirenv_point *pt)
-{
-    sink_buf *s = ctx;
-    s->pt[s->n++] = *pt;
-    return TIRENV_OK;
-}
-
 /* The reader as the stream's row source over two tracks, and the CRG track reader as a vertex
  * source over one: each equals the whole sweep bit for bit. */
 static void test_stream_from_file(void **state)
@@ -213,9 +201,9 @@ static void test_stream_from_file(void **state)
     assert_int_equal(tirenv_model_envelope(m, n, x, whole, NULL, &d), TIRENV_OK);
     tirenv_profile_file_reader *r = NULL;
     assert_int_equal(tirenv_profile_file_reader_open(path, NULL, 2, v, &r, &d), TIRENV_OK);
-    sink_buf sb = {got, 0};
+    tirenv_test_points sb = {got, 0, n, 0};
     assert_int_equal(tirenv_model_stream_tracks(m, 2, NULL, tirenv_profile_file_reader_source,
-                                                r, x_from, x_to, dx, load, sink_point, &sb,
+                                                r, x_from, x_to, dx, load, tirenv_test_keep_point, &sb,
                                                 NULL, &d),
                      TIRENV_OK);
     assert_int_equal(sb.n, n);
@@ -236,8 +224,9 @@ static void test_stream_from_file(void **state)
     assert_int_equal(tirenv_crg_track_reader_open(crg, &s, &tr, &d), TIRENV_OK);
     sb.n = 0;
     assert_int_equal(tirenv_model_stream(m, tirenv_crg_track_reader_source, tr, x_from, x_to,
-                                         dx, load, sink_point, &sb, NULL, &d),
+                                         dx, load, tirenv_test_keep_point, &sb, NULL, &d),
                      TIRENV_OK);
+    assert_int_equal(sb.n, n);  /* then sb.pt is still got */
     for (size_t k = 0; k < n; ++k) {
         assert_bits_equal(got[k].h, whole[k].h);
         assert_int_equal(got[k].iterations, whole[k].iterations);

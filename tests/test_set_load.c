@@ -9,37 +9,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_rng.h>
 
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"
 #include "tirenv/road.h"
-
-/* A 4-8-1 network with seeded weights, scaled to the embedded data set's input ranges: no
- * good model of a tire, but a network as the model type sees it. */
-static tirenv_nn *made_up_network(void)
-{
-    tirenv_nn_topology t = tirenv_nn_topology_default();
-    tirenv_nn *nn = tirenv_nn_alloc(&t);
-    assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 4242);
-    tirenv_nn_init_weights(nn, rng);
-    enum { N = 97 };
-    double x[N * TIRENV_NN_INPUTS], y[N];
-    for (size_t k = 0; k < N; ++k) {
-        double *u = x + k * TIRENV_NN_INPUTS;
-        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
-        y[k] = 0.04 * gsl_rng_uniform(rng);
-    }
-    tirenv_diag d;
-    assert_int_equal(tirenv_nn_fit_scaling(nn, N, x, y, &d), TIRENV_OK);
-    gsl_rng_free(rng);
-    return nn;
-}
 
 static tirenv_nn *network;  /* for the nn model, made once */
 
@@ -50,7 +23,7 @@ static tirenv_model *model_of(const tirenv_model_type *type, const tirenv_tire *
     tirenv_diag d;
     if (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK) {
         if (!network)
-            network = made_up_network();
+            network = tirenv_test_made_up_network(4242, 97);
         assert_int_equal(tirenv_model_set_network(m, network, 0, &d), TIRENV_OK);
         /* The road's bumps are lower than the made-up network's cleats: what these tests
          * check of set_load holds outside its ranges too (test_set_load_errors: refused). */

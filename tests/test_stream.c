@@ -10,14 +10,6 @@
 #include <string.h>
 #include <unistd.h>
 
-static tirenv_tire default_tire(void)
-{
-    tirenv_tire t = tirenv_tire_default();
-    tirenv_diag d;
-    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d), TIRENV_OK);
-    return t;
-}
-
 /* A class C road of length m every 0.01 m (seed 7), written with round-trip precision. */
 static void write_road(char path[64], double length, size_t *n_out)
 {
@@ -53,25 +45,7 @@ static void write_text(char path[64], const char *text)
     assert_int_equal(fclose(fp), 0);
 }
 
-/* The sink: collects points, or stops after `stop` of them. */
-typedef struct {
-    tirenv_point *pt;
-    size_t n, cap, stop;
-} collect;
-
-static int collect_point(void *ctx, const tirenv_point *pt)
-{
-    collect *c = ctx;
-    if (c->stop && c->n == c->stop)
-        return TIRENV_EIO;
-    if (c->n == c->cap) {
-        c->cap = c->cap ? 2 * c->cap : 1024;
-        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
-        assert_non_null(c->pt);
-    }
-    c->pt[c->n++] = *pt;
-    return TIRENV_OK;
-}
+typedef tirenv_test_points collect;  /* the sink of the streamed points */
 
 static int stream_file(tirenv_model *m, const char *path, double x_from, double x_to,
                        double dx, collect *c, tirenv_stream_stats *stats, tirenv_diag *d)
@@ -81,7 +55,7 @@ static int stream_file(tirenv_model *m, const char *path, double x_from, double 
     if (status)
         return status;
     status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx, 4123.5,
-                                 collect_point, c, stats, d);
+                                 tirenv_test_keep_point, c, stats, d);
     tirenv_profile_reader_free(in);
     return status;
 }
@@ -94,7 +68,7 @@ static void check_equal(const tirenv_model_type *type, double tol_h)
     char path[64];
     size_t n_vert;
     write_road(path, 12.0, &n_vert);
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(type, &tire);
     assert_non_null(m);
     tirenv_diag d;
@@ -162,7 +136,7 @@ static void test_springs_equals_whole(void **state)
 static void test_window_bounded(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
     assert_non_null(m);
     const double reach = tirenv_model_reach(m);
@@ -205,7 +179,7 @@ static void test_sink_stops(void **state)
     char path[64];
     size_t n_vert;
     write_road(path, 3.0, &n_vert);
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
     collect c = {.stop = 17};
     tirenv_stream_stats st;
@@ -238,7 +212,7 @@ static void test_malformed(void **state)
         {"x_m,z_m\n", TIRENV_EPARSE, 0, ""},
         {"# only\n", TIRENV_EPARSE, 0, ""},
     };
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char path[64];

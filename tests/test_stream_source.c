@@ -29,22 +29,7 @@ static int array_next(void *ctx, double *x, double *z, int *got, tirenv_diag *di
     return TIRENV_OK;
 }
 
-typedef struct {
-    tirenv_point *pt;
-    size_t n, cap;
-} collect;
-
-static int collect_point(void *ctx, const tirenv_point *pt)
-{
-    collect *c = ctx;
-    if (c->n == c->cap) {
-        c->cap = c->cap ? 2 * c->cap : 512;
-        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
-        assert_non_null(c->pt);
-    }
-    c->pt[c->n++] = *pt;
-    return TIRENV_OK;
-}
+typedef tirenv_test_points collect;  /* the sink of the streamed points */
 
 /* A bumpy stretch of 8 m every 7 mm: sums of sines, nothing level for long. */
 enum { N_ROAD = 1143 };
@@ -74,7 +59,7 @@ static void test_memory_source_equals_whole(void **state)
     tirenv_diag d;
     const double x_from = -0.4173, x_to = 8.2917, dx = 0.0113, load = 11234.5;
     assert_int_equal(tirenv_model_stream(m, array_next, &src, x_from, x_to, dx, load,
-                                         collect_point, &c, &st, &d),
+                                         tirenv_test_keep_point, &c, &st, &d),
                      TIRENV_OK);
     assert_int_equal(st.vertices_read, N_ROAD);
     assert_int_equal(src.calls, N_ROAD + 1);
@@ -121,7 +106,7 @@ static void test_bad_sources(void **state)
         tirenv_diag d;
         tirenv_diag_clear(&d);
         assert_int_equal(tirenv_model_stream(m, array_next, &src, -1.5, 2.5, 0.01, 10000,
-                                             collect_point, &c, NULL, &d),
+                                             tirenv_test_keep_point, &c, NULL, &d),
                          TIRENV_EINVAL);
         assert_int_equal(d.line, cases[i].bad);
         assert_string_equal(d.field, cases[i].field);

@@ -13,14 +13,6 @@
 static const double load = 11903.6;      /* N: the default tire at its 0.33 m patch */
 static const double cleat_L = 0.3, cleat_H = 0.0713;  /* m */
 
-static tirenv_tire default_tire(void)
-{
-    tirenv_tire t = tirenv_tire_default();
-    tirenv_diag d;
-    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d), TIRENV_OK);
-    return t;
-}
-
 static tirenv_profile *flat_at(double h)
 {
     const double x = 0;
@@ -83,7 +75,7 @@ static void curve(tirenv_model *m, const double x[N_POS], tirenv_point out[N_POS
 static void test_one_track_is_set(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_profile *cleat = tirenv_profile_cleat(cleat_L, cleat_H);
     double x[N_POS];
     positions(x);
@@ -119,7 +111,7 @@ static void test_one_track_is_set(void **state)
 static void test_equal_copies(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_profile *cleat = tirenv_profile_cleat(cleat_L, cleat_H);
     tirenv_profile *c1 = copy_of(cleat), *c2 = copy_of(cleat);
     double x[N_POS];
@@ -156,7 +148,7 @@ static void test_equal_copies(void **state)
 static void test_flat_and_cleat(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_profile *cleat = tirenv_profile_cleat(cleat_L, cleat_H);
     tirenv_profile *flat = flat_at(0);
     double x[N_POS];
@@ -258,7 +250,7 @@ static double closed_form_z(const tirenv_tire *t, double w, double H, double G)
 static void test_equilibrium_closed_form(void **state)
 {
     (void)state;
-    tirenv_tire tire = default_tire();
+    tirenv_tire tire = tirenv_test_default_tire();
     tire.springs.c_b = 0;
     tire.springs.dphi = 0.0123;  /* not a divisor of phi: an uneven layout */
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
@@ -291,7 +283,7 @@ static void test_equilibrium_closed_form(void **state)
 static void test_highest_two_cleats(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_profile *a = tirenv_profile_cleat(0.2, 0.05), *b = tirenv_profile_cleat(0.1, 0.08);
     tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
     double x[N_POS];
@@ -337,25 +329,13 @@ static int rows_next(void *ctx, double *x, double z[], int *got, tirenv_diag *di
     return TIRENV_OK;
 }
 
-typedef struct {
-    tirenv_point *pt;
-    size_t n;
-} sink_buf;
-
-static int sink_point(void *ctx, const tirenv_point *pt)
-{
-    sink_buf *s = ctx;
-    s->pt[s->n++] = *pt;
-    return TIRENV_OK;
-}
-
 /* Two tracks of different ISO 8608 roads, 12 m, streamed: every point as over the whole
  * tracks, bit for bit, for the equilibrium (springs) and the mean (cam); the window stays
  * small. */
 static void test_stream_tracks(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_road_settings rs = tirenv_road_default();
     rs.road_class = 'D';
     rs.length = 12;
@@ -381,10 +361,10 @@ static void test_stream_tracks(void **state)
         assert_int_equal(tirenv_model_envelope(m, n, x, whole, NULL, &d), TIRENV_OK);
         rows src = {tirenv_profile_x(r0), tirenv_profile_z(r0), tirenv_profile_z(r1),
                     tirenv_profile_size(r0), 0};
-        sink_buf sb = {streamed, 0};
+        tirenv_test_points sb = {streamed, 0, n, 0};
         tirenv_stream_stats st;
         assert_int_equal(tirenv_model_stream_tracks(m, 2, w, rows_next, &src, x_from, x_to, dx,
-                                                    load, sink_point, &sb, &st, &d),
+                                                    load, tirenv_test_keep_point, &sb, &st, &d),
                          TIRENV_OK);
         assert_int_equal(sb.n, n);
         for (size_t k = 0; k < n; ++k)
@@ -429,7 +409,7 @@ static void test_spread(void **state)
 static void test_errors(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &tire);
     tirenv_profile *a = flat_at(0), *b = flat_at(0.01), *c = flat_at(0.02);
     const tirenv_profile *ab[2] = {a, b}, *aa[2] = {a, a}, *cc[2] = {c, c}, *an[2] = {a, NULL};

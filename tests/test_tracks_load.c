@@ -13,14 +13,6 @@
 
 static const double load_1 = 11903.6, load_2 = 15500.0;  /* N */
 
-static tirenv_tire default_tire(void)
-{
-    tirenv_tire t = tirenv_tire_default();
-    tirenv_diag d;
-    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d), TIRENV_OK);
-    return t;
-}
-
 enum { N_POS = 121 };
 
 /* set_load(load_2) after set_tracks(load_1) and a sweep, against set_tracks(load_2) on a fresh
@@ -30,7 +22,7 @@ enum { N_POS = 121 };
 static void test_set_load_every_track(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_profile *cleat = tirenv_profile_cleat(0.3, 0.06);
     tirenv_profile *step = tirenv_profile_step(0.1, 0.03);
     const tirenv_profile *two[2] = {cleat, step};
@@ -68,7 +60,7 @@ static void test_set_load_every_track(void **state)
 static void test_clearance_every_track(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     const double xf[2] = {-5, 5}, zf[2] = {0, 0};
     const double xw[4] = {-5, 0.0, 0.0, 5}, zw[4] = {0, 0, 2.0, 2.0};
     tirenv_profile *flat = tirenv_profile_alloc(2, xf, zf);
@@ -91,7 +83,7 @@ static void test_clearance_every_track(void **state)
 static void test_state_one_track(void **state)
 {
     (void)state;
-    const tirenv_tire tire = default_tire();
+    const tirenv_tire tire = tirenv_test_default_tire();
     tirenv_profile *cleat = tirenv_profile_cleat(0.3, 0.06);
     tirenv_profile *step = tirenv_profile_step(0.1, 0.03);
     const tirenv_profile *two[2] = {cleat, step};

@@ -8,35 +8,8 @@
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"
 
-#include <gsl/gsl_rng.h>
 #include <math.h>
 #include <stdlib.h>
-
-/* A 4-8-1 network with seeded weights scaled to plausible inputs: no model of a tire, but a
- * network as the model type sees it. */
-static tirenv_nn *seeded_network(void)
-{
-    tirenv_nn_topology t = tirenv_nn_topology_default();
-    tirenv_nn *nn = tirenv_nn_alloc(&t);
-    assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 977);
-    tirenv_nn_init_weights(nn, rng);
-    enum { N = 61 };
-    double x[N * TIRENV_NN_INPUTS], y[N];
-    for (size_t k = 0; k < N; ++k) {
-        double *u = x + k * TIRENV_NN_INPUTS;
-        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
-        y[k] = 0.04 * gsl_rng_uniform(rng);
-    }
-    tirenv_diag d;
-    assert_int_equal(tirenv_nn_fit_scaling(nn, N, x, y, &d), TIRENV_OK);
-    gsl_rng_free(rng);
-    return nn;
-}
 
 static void test_contact_length_reaches_every_track(void **state)
 {
@@ -48,7 +21,7 @@ static void test_contact_length_reaches_every_track(void **state)
     static tirenv_point before[N], pt[N];
     for (size_t k = 0; k < N; ++k)
         x[k] = -0.6 + 0.004 * (double)k;
-    tirenv_nn *nn = seeded_network();
+    tirenv_nn *nn = tirenv_test_made_up_network(977, 61);
     tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &tire);
     assert_non_null(m);
     tirenv_diag d;
@@ -114,7 +87,7 @@ static void test_extrapolate_reaches_every_track(void **state)
     static tirenv_point one[N], pt[N];
     for (size_t k = 0; k < N; ++k)
         x[k] = -0.6 + 0.006 * (double)k;
-    tirenv_nn *nn = seeded_network();
+    tirenv_nn *nn = tirenv_test_made_up_network(977, 61);
     tirenv_profile *a = tirenv_profile_cleat(L, H), *b = tirenv_profile_cleat(L, H);
     const tirenv_profile *two[2] = {a, b};
     tirenv_diag d;

@@ -6,6 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <gsl/gsl_rng.h>
+
+#include "tirenv/io.h"
 
 void tirenv_test_assert_near(double actual, double expected, double abs_tol, double rel_tol,
                              const char *expr, const char *file, int line)
@@ -85,4 +88,52 @@ size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containin
             n++;
     closedir(dir);
     return n;
+}
+
+tirenv_tire tirenv_test_default_tire(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d), TIRENV_OK);
+    return t;
+}
+
+tirenv_nn *tirenv_test_made_up_network(unsigned long seed, size_t n_samples)
+{
+    enum { MAX = 128 };
+    assert_true(n_samples <= MAX);
+    tirenv_nn_topology t = tirenv_nn_topology_default();
+    tirenv_nn *nn = tirenv_nn_alloc(&t);
+    assert_non_null(nn);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    assert_non_null(rng);
+    gsl_rng_set(rng, seed);
+    tirenv_nn_init_weights(nn, rng);
+    double x[MAX * TIRENV_NN_INPUTS], y[MAX];
+    for (size_t k = 0; k < n_samples; ++k) {
+        double *u = x + k * TIRENV_NN_INPUTS;
+        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
+        y[k] = 0.04 * gsl_rng_uniform(rng);
+    }
+    tirenv_diag d;
+    assert_int_equal(tirenv_nn_fit_scaling(nn, n_samples, x, y, &d), TIRENV_OK);
+    gsl_rng_free(rng);
+    return nn;
+}
+
+int tirenv_test_keep_point(void *ctx, const tirenv_point *pt)
+{
+    tirenv_test_points *c = ctx;
+    if (c->stop && c->n == c->stop)
+        return TIRENV_EIO;
+    if (c->n == c->cap) {
+        c->cap = c->cap ? 2 * c->cap : 1024;
+        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
+        assert_non_null(c->pt);
+    }
+    c->pt[c->n++] = *pt;
+    return TIRENV_OK;
 }

@@ -8,6 +8,10 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include "tirenv/model.h"
+#include "tirenv/nn.h"
+#include "tirenv/tire.h"
+
 /* Fails unless |actual - expected| <= abs_tol + rel_tol*|expected|; prints both values. */
 #define assert_near(actual, expected, abs_tol, rel_tol)                                      \
     tirenv_test_assert_near((actual), (expected), (abs_tol), (rel_tol), #actual, __FILE__,   \
@@ -20,6 +24,25 @@ void tirenv_test_assert_near(double actual, double expected, double abs_tol, dou
 #define assert_bits_equal(a, b) tirenv_test_check_bits((a), (b), #a, __FILE__, __LINE__)
 
 void tirenv_test_check_bits(double a, double b, const char *expr, const char *file, int line);
+
+/* The repository's data/tires/default.tir over tirenv_tire_default(), asserting it reads. */
+tirenv_tire tirenv_test_default_tire(void);
+
+/* A 4-8-1 network with weights from the seed, scaled to n_samples (at most 128) random
+ * inputs over the embedded data set's ranges: no good model of a tire, but a network as the
+ * model type sees it. */
+tirenv_nn *tirenv_test_made_up_network(unsigned long seed, size_t n_samples);
+
+/* A sink of streamed points (tirenv_model_stream's callback with this as its context): pt
+ * NULL or malloc'd with room for cap points, grown by realloc as points come (the caller
+ * frees pt, and reads the points there); with stop > 0 the point after the first stop is
+ * refused with TIRENV_EIO. */
+typedef struct {
+    tirenv_point *pt;
+    size_t n, cap, stop;
+} tirenv_test_points;
+
+int tirenv_test_keep_point(void *ctx, const tirenv_point *pt);
 
 /* A fresh scratch directory per test: cmocka setup and teardown (the teardown removes the
  * files left in it and fails if the directory itself cannot go). */

@@ -212,11 +212,7 @@ static int cam_set(void *state, const tirenv_profile *p, double load, double z_f
         return status;
     st->z_flat = z_flat;  /* the driver's, which is z_load */
     st->prof = p;
-    const size_t n = tirenv_profile_size(p);
-    const double *z = tirenv_profile_z(p);
-    st->z_cap = z[0];
-    for (size_t k = 1; k < n; k++)
-        st->z_cap = fmax(st->z_cap, z[k]);
+    st->z_cap = tirenv_model__profile_top(p);  /* from the block maxima, O(n/16) */
     /* The memo is indexed by segment: a new profile starts it afresh. The tracks may stay
      * as they are (any content gives the same results), but a fresh start is tidier. */
     tirenv_cam__sweep_forget(&st->sweep);

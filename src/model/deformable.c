@@ -135,6 +135,22 @@ static int on_flat_ground(double load, int status, tirenv_diag *diag)
     return status;
 }
 
+/* The flat-ground equilibrium at load from z0 in [0, R0], on the flat-ground workspace. */
+static int solve_flat(deformable_state *st, double load, double z0, tirenv_eq_point *out,
+                      tirenv_diag *diag)
+{
+    const double R0 = st->tire.springs.R0;
+    const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = z0, .dz_hint = 0.05 * R0};
+    force_ctx fc = {st, st->flat, 0};
+    tirenv_eq_result res;
+    const int status = tirenv_eq__solve(st->solver, &st->tire.eq, flat_force_at, &fc, load,
+                                        &prob, &res, diag);
+    if (status)
+        return on_flat_ground(load, status, diag);
+    *out = res.point;
+    return TIRENV_OK;
+}
+
 /* TIRENV_ERANGE if the load is beyond the valid range (docs/models.md section 1.3): for a
  * first load (tirenv_deformable_flat) and a new one (tirenv_deformable_set_load) alike. */
 static int load_in_range(deformable_state *st, double load, tirenv_diag *diag)
@@ -157,25 +173,21 @@ int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
     int status = load_in_range(st, load, diag);
     if (status)
         return status;
-    const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = R0, .dz_hint = 0.05 * R0};
-    force_ctx fc = {st, st->flat, 0};
-    tirenv_eq_result res;
-    status = tirenv_eq__solve(st->solver, &st->tire.eq, flat_force_at, &fc, load, &prob, &res,
-                              diag);
-    if (status)
-        return on_flat_ground(load, status, diag);
+    tirenv_eq_point p;
+    if ((status = solve_flat(st, load, R0, &p, diag)))
+        return status;
     double l_c;
-    if ((status = st->ops->contact_length(st->flat_elem, st->flat, res.point.z, &l_c, diag)))
+    if ((status = st->ops->contact_length(st->flat_elem, st->flat, p.z, &l_c, diag)))
         return on_flat_ground(load, status, diag);
     st->have_flat_point = 1;
     st->flat_load = load;
-    st->flat_point = res.point;
+    st->flat_point = p;
     *out = (tirenv_flat){
         .load = load,
-        .z_flat = res.point.z,
-        .deflection = R0 - res.point.z,
+        .z_flat = p.z,
+        .deflection = R0 - p.z,
         .contact_length = l_c,
-        .stiffness = -res.point.dF_dz,
+        .stiffness = -p.dF_dz,
     };
     return TIRENV_OK;
 }
@@ -242,18 +254,14 @@ int tirenv_deformable_set_load(void *state, double load, double *z_flat, tirenv_
     const tirenv_eq_point *at = &st->flat_at;
     double z0 = at->dF_dz < 0 ? at->z + (load - st->G) / at->dF_dz : at->z;
     z0 = fmin(fmax(z0, 0.0), R0);
-    const tirenv_eq_problem prob = {.z_lo = 0, .z_hi = R0, .z0 = z0, .dz_hint = 0.05 * R0};
-    force_ctx fc = {st, st->flat, 0};
-    tirenv_eq_result res;
-    status = tirenv_eq__solve(st->solver, &st->tire.eq, flat_force_at, &fc, load, &prob, &res,
-                              diag);
-    if (status)
-        return on_flat_ground(load, status, diag);
+    tirenv_eq_point p;
+    if ((status = solve_flat(st, load, z0, &p, diag)))
+        return status;
     if (st->have_prev)
-        st->z_prev += res.point.z - st->z_flat;
+        st->z_prev += p.z - st->z_flat;
     st->G = load;
-    st->z_flat = *z_flat = res.point.z;
-    st->flat_at = res.point;
+    st->z_flat = *z_flat = p.z;
+    st->flat_at = p;
     return TIRENV_OK;
 }
 
@@ -296,7 +304,7 @@ int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tiren
     if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
-                            "deformable", sv.G, sv.z_flat);
+                            st->ops->name, sv.G, sv.z_flat);
     st->G = sv.G;
     st->z_flat = sv.z_flat;
     st->z_prev = sv.z_prev;
@@ -359,11 +367,6 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         return status;
     st->z_prev = res.point.z;
     st->have_prev = 1;
-    out->z = res.point.z;
-    out->h = res.point.z - st->z_flat;
-    out->fz = res.point.F;
-    out->fx = res.point.fx;
-    out->contacts = res.point.contacts;
-    out->slope = tirenv_model__slope(out);
+    tirenv_model__eq_point(&res.point, st->z_flat, out);
     return TIRENV_OK;
 }

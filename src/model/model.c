@@ -337,24 +337,18 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
                           size_t *failed, tirenv_diag *diag)
 {
-    if (m->ready && m->n_tracks > 1 && n > 0) {
-        size_t k = 0;
-        int status = tirenv_model__tracks_envelope(m, n, x, out, &k, diag);
-        if (!status)
-            for (k = 0; k < n && !(status = clears_ground(m, &out[k], diag)); ++k)
-                ;
-        if (status && failed)
-            *failed = k;
-        return at_position(m, status ? x[k < n ? k : 0] : 0, status, diag);
-    }
-    if (m->type->envelope && n > 0) {
+    /* Several tracks, or a type with a batched sweep (the network): the whole sweep, then the
+     * hub's check position by position. */
+    const int tracks = m->ready && m->n_tracks > 1;
+    if ((tracks || m->type->envelope) && n > 0) {
         if (!m->ready) {
             if (failed)
                 *failed = 0;
             return not_set(diag);
         }
         size_t k = 0;
-        int status = m->type->envelope(m->state, n, x, out, &k, diag);
+        int status = tracks ? tirenv_model__tracks_envelope(m, n, x, out, &k, diag)
+                            : m->type->envelope(m->state, n, x, out, &k, diag);
         if (!status)
             for (k = 0; k < n && !(status = clears_ground(m, &out[k], diag)); ++k)
                 ;

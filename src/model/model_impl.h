@@ -144,4 +144,17 @@ static inline double tirenv_model__slope(const tirenv_point *pt)
     return pt->fz > 0 ? -pt->fx / pt->fz : 0;
 }
 
+/* A converged equilibrium p as the model's point at its x (out->x and out->iterations are the
+ * caller's): z, h = z - z_flat, the forces and contacts of that one evaluation, the slope. */
+static inline void tirenv_model__eq_point(const tirenv_eq_point *p, double z_flat,
+                                          tirenv_point *out)
+{
+    out->z = p->z;
+    out->h = p->z - z_flat;
+    out->fz = p->F;
+    out->fx = p->fx;
+    out->contacts = p->contacts;
+    out->slope = tirenv_model__slope(out);
+}
+
 #endif

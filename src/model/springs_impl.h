@@ -128,16 +128,10 @@ int tirenv_springs__unseen_pairs(const tirenv_profile *p, const tirenv_springs__
 /* A tridiagonal obstacle problem K w = p, w >= d, p >= 0, p.(w - d) = 0 with K given by its
  * diagonal diag[0..n-1] and constant off-diagonal -k_ir, solved by the primal-dual active
  * set method. active[] holds the starting guess (1 = w_i = d_i) and returns the final set.
- * work holds 2*n doubles and keeps the factorisation for tirenv_springs__lcp_tangent. */
+ * work holds 2*n doubles (the factorisation of the last pass). */
 int tirenv_springs__lcp(size_t n, const double diag[], double k_ir, const double d[],
                         double w[], double p[], unsigned char active[], double work[],
                         size_t max_passes, size_t *passes);
-
-/* With the active set and factorisation of the last tirenv_springs__lcp call: dw (m/m) for a
- * change dd of the obstacle on the active elements (inactive entries of dd are ignored). */
-void tirenv_springs__lcp_tangent(size_t n, double k_ir, const double dd[],
-                                 const unsigned char active[], const double work[],
-                                 double dw[]);
 
 /* The tip LCP of a whole tire of N elements (k_r on the diagonal plus k_ir per neighbour,
  * -k_ir between neighbours) solved in closed form between pinned tips: a free element's

@@ -55,21 +55,6 @@ int tirenv_springs__lcp(size_t n, const double diag[], double k_ir, const double
     return TIRENV_ENOCONV;
 }
 
-void tirenv_springs__lcp_tangent(size_t n, double k_ir, const double dd[],
-                                 const unsigned char active[], const double work[],
-                                 double dw[])
-{
-    const double *cp = work, *inv = work + n;
-    double rp_prev = 0;
-    for (size_t i = 0; i < n; ++i) {
-        const double sub = active[i] || i == 0 ? 0 : -k_ir;
-        rp_prev = ((active[i] ? dd[i] : 0) - sub * rp_prev) * inv[i];
-        dw[i] = rp_prev;
-    }
-    for (size_t i = n - 1; n > 0 && i-- > 0;)
-        dw[i] -= cp[i] * dw[i + 1];
-}
-
 int tirenv_springs_lcp(size_t n, double k_r, double k_ir, const double d[], double w[],
                        double p[], double work[], size_t max_iter, size_t *passes)
 {

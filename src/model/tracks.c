@@ -390,13 +390,21 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
         return status;
     t->z_prev = res.point.z;
     t->have_prev = 1;
-    out->z = res.point.z;
-    out->h = res.point.z - m->z_flat;
-    out->fz = res.point.F;
-    out->fx = res.point.fx;
-    out->contacts = res.point.contacts;
-    out->slope = tirenv_model__slope(out);
+    tirenv_model__eq_point(&res.point, m->z_flat, out);
     return TIRENV_OK;
+}
+
+/* o += w p, the mean rule's step: the weighted fields, and the contacts and iterations added
+ * up. */
+static void add_weighted(tirenv_point *o, double w, const tirenv_point *p)
+{
+    o->z += w * p->z;
+    o->h += w * p->h;
+    o->slope += w * p->slope;
+    o->fx += w * p->fx;
+    o->fz += w * p->fz;
+    o->contacts += p->contacts;
+    o->iterations += p->iterations;
 }
 
 /* The tracks' points pt[n] made one by the mean or the highest rule. */
@@ -405,35 +413,29 @@ static void combine(const tirenv_model *m, const tirenv_point pt[], tirenv_point
     const struct tirenv_model__tracks *t = m->tracks;
     const double x = out->x;
     *out = (tirenv_point){.x = x};
-    for (size_t k = 0; k < t->n; ++k)
-        out->iterations += pt[k].iterations;
-    if (m->type->tracks == TIRENV_TRACKS_HIGHEST) {
-        double z = pt[0].z;
-        for (size_t k = 1; k < t->n; ++k)
-            z = fmax(z, pt[k].z);
-        double w = 0;
+    if (m->type->tracks != TIRENV_TRACKS_HIGHEST) {
         for (size_t k = 0; k < t->n; ++k)
-            if (pt[k].z == z) {
-                out->h = pt[k].h;
-                out->fx += t->w[k] * pt[k].fx;
-                out->fz += t->w[k] * pt[k].fz;
-                out->contacts += pt[k].contacts;
-                w += t->w[k];
-            }
-        out->z = z;
-        out->fx /= w;
-        out->fz /= w;
-        out->slope = tirenv_model__slope(out);
+            add_weighted(out, t->w[k], &pt[k]);
         return;
     }
-    for (size_t k = 0; k < t->n; ++k) {
-        out->z += t->w[k] * pt[k].z;
-        out->h += t->w[k] * pt[k].h;
-        out->slope += t->w[k] * pt[k].slope;
-        out->fx += t->w[k] * pt[k].fx;
-        out->fz += t->w[k] * pt[k].fz;
-        out->contacts += pt[k].contacts;
-    }
+    for (size_t k = 0; k < t->n; ++k)
+        out->iterations += pt[k].iterations;
+    double z = pt[0].z;
+    for (size_t k = 1; k < t->n; ++k)
+        z = fmax(z, pt[k].z);
+    double w = 0;
+    for (size_t k = 0; k < t->n; ++k)
+        if (pt[k].z == z) {
+            out->h = pt[k].h;
+            out->fx += t->w[k] * pt[k].fx;
+            out->fz += t->w[k] * pt[k].fz;
+            out->contacts += pt[k].contacts;
+            w += t->w[k];
+        }
+    out->z = z;
+    out->fx /= w;
+    out->fz /= w;
+    out->slope = tirenv_model__slope(out);
 }
 
 int tirenv_model__tracks_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
@@ -478,18 +480,9 @@ int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],
                 return status;
             }
             for (size_t i = 0; i < nb; ++i) {
-                tirenv_point *o = &out[i0 + i];
-                const tirenv_point *p = &t->block[i];
-                const double w = t->w[k];
                 if (k == 0)
-                    *o = (tirenv_point){.x = x[i0 + i]};
-                o->z += w * p->z;
-                o->h += w * p->h;
-                o->slope += w * p->slope;
-                o->fx += w * p->fx;
-                o->fz += w * p->fz;
-                o->contacts += p->contacts;
-                o->iterations += p->iterations;
+                    out[i0 + i] = (tirenv_point){.x = x[i0 + i]};
+                add_weighted(&out[i0 + i], t->w[k], &t->block[i]);
             }
         }
     }
