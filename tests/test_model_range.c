@@ -11,14 +11,6 @@
 
 #include "tirenv/tirenv.h"
 
-static tirenv_tire default_tire(void)
-{
-    tirenv_tire t = tirenv_tire_default();
-    tirenv_diag diag;
-    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &diag), 0);
-    return t;
-}
-
 /* The limit a refusal names: the number after "up to ". */
 static double limit_named(const tirenv_diag *diag)
 {
@@ -59,7 +51,7 @@ static void check_refused(tirenv_model *m, double load, double l_c, double *G_ma
 static void test_ring(void **state)
 {
     (void)state;
-    const tirenv_tire t = default_tire();
+    const tirenv_tire t = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
     assert_non_null(m);
     double G_max, l_max;
@@ -93,7 +85,7 @@ static void test_ring(void **state)
 static void test_springs_segment(void **state)
 {
     (void)state;
-    tirenv_tire t = default_tire();
+    tirenv_tire t = tirenv_test_default_tire();
     t.springs.phi = 1.5;
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
     assert_non_null(m);
@@ -120,7 +112,7 @@ static void test_springs_segment(void **state)
 static void test_cam_chord(void **state)
 {
     (void)state;
-    const tirenv_tire t = default_tire();
+    const tirenv_tire t = tirenv_test_default_tire();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
     assert_non_null(m);
     double G_max, l_max;
@@ -142,7 +134,7 @@ static void test_cam_chord(void **state)
 static void test_rigid_any(void **state)
 {
     (void)state;
-    const tirenv_tire t = default_tire();
+    const tirenv_tire t = tirenv_test_default_tire();
     const tirenv_model_type *types[] = {tirenv_model_rigid, tirenv_model_point};
     for (size_t i = 0; i < 2; ++i) {
         tirenv_model *m = tirenv_model_alloc(types[i], &t);
@@ -166,7 +158,7 @@ static void test_fine_elements(void **state)
     double z[2], h[2];
     const double dphi[2] = {2e-4, 1e-3};
     for (int k = 0; k < 2; ++k) {
-        tirenv_tire t = default_tire();
+        tirenv_tire t = tirenv_test_default_tire();
         t.springs.dphi = dphi[k];
         tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
         assert_non_null(m);

@@ -304,10 +304,10 @@ int tirenv_model__tracks_set_load(tirenv_model *m, double load, tirenv_diag *dia
     struct tirenv_model__tracks *t = m->tracks;
     tirenv_flat flat;
     int status = m->type->flat(m->state, load, &flat, diag);
-    double z_flat = flat.z_flat;
     for (size_t k = 0; k < t->n && !status; ++k) {
+        double z_k;  /* the type's own z_flat at the load: flat's, as every track's tire is one */
         if (m->type->set_load)
-            status = m->type->set_load(t->state[k], load, &z_flat, diag);
+            status = m->type->set_load(t->state[k], load, &z_k, diag);
         else
             status = m->type->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
     }
