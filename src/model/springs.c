@@ -206,6 +206,14 @@ static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
     s->ray_b = 0;
 }
 
+void tirenv_springs__bracket(tirenv_springs *s, const tirenv_profile *p, double x,
+                             double *z_lo, double *z_hi)
+{
+    set_origin(s, p, x);
+    *z_lo = s->origin.g;
+    *z_hi = fmax(s->origin.z_max[0], s->origin.z_max[1]) + s->par.R0;
+}
+
 /* The ray pairs to look between for ground the rays cannot see, from the walks. */
 static void find_pairs(tirenv_springs *s, size_t a, size_t b)
 {

@@ -12,6 +12,12 @@ size_t tirenv_springs__state_size(const tirenv_springs *s);
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
 
+/* The equilibrium's bracket at x (m) on p: the ground height under the centre (*z_lo) and R0
+ * above the highest ground within R0 either side (*z_hi), where no element can reach the
+ * ground; both from the rays' origin, which the force evaluations at x then reuse. */
+void tirenv_springs__bracket(tirenv_springs *s, const tirenv_profile *p, double x,
+                             double *z_lo, double *z_hi);
+
 /* Ray casting: distance rho (m) from the centre (x, z) along u = (sin_t, -cos_t) to the first
  * crossing of the ground boundary, or INFINITY if there is none within rho_max. drho_dz is
  * d(rho)/dz with the hit segment fixed (0 on a vertical wall). A centre on or below the ground
