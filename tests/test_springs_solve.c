@@ -188,7 +188,7 @@ static void test_fan_matches_single_rays(void **state)
     gsl_rng_set(rng, 7);
     const double R0 = 0.6837;
     enum { N = 361 };
-    static double sin_t[N], cos_t[N], s[N], drop[N], reach[N], rho[N];
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N];
     static tirenv_springs__ray_memo memo[N];
     const size_t i0 = N / 2;
     for (size_t i = 0; i < N; ++i) {
@@ -196,9 +196,9 @@ static void test_fan_matches_single_rays(void **state)
         sin_t[i] = sin(th);
         cos_t[i] = cos(th);
     }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, s, drop, reach);
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
     const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                           .cos_t = cos_t, .s = s, .drop = drop,
+                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
                                            .reach = reach};
     tirenv_road_settings rs = tirenv_road_default();
     rs.length = 20;
@@ -364,7 +364,7 @@ static void test_pairs_miss_nothing(void **state)
     gsl_rng_set(rng, 5);
     const double R0 = 0.6837;
     enum { N = 361 };
-    static double sin_t[N], cos_t[N], s[N], drop[N], reach[N], rho[N], tread[N];
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], tread[N];
     static tirenv_springs__ray_memo memo[N];
     static size_t pairs[4 * N];
     const size_t i0 = N / 2;
@@ -373,9 +373,9 @@ static void test_pairs_miss_nothing(void **state)
         sin_t[i] = sin(th);
         cos_t[i] = cos(th);
     }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, s, drop, reach);
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
     const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                           .cos_t = cos_t, .s = s, .drop = drop,
+                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
                                            .reach = reach};
     size_t found = 0, trials = 0;
     for (int g = 0; g < 40; ++g) {

@@ -52,17 +52,20 @@ void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho
                                    tirenv_springs__fan_origin *o);
 
 /* A fan's rays: ray i points along (sin_t[i], -cos_t[i]); i0 straight down, the others' angles
- * growing monotonically away from it on either side; s, drop and reach from
+ * growing monotonically away from it on either side; inv_s, drop and reach from
  * tirenv_springs__fan_rays_fill, the per-ray constants of the walk. */
 typedef struct {
     size_t i0;
     double rho_max;  /* m */
-    const double *sin_t, *cos_t, *s, *drop, *reach;
+    const double *sin_t, *cos_t, *inv_s, *drop, *reach;
 } tirenv_springs__fan_rays;
 
-/* s = |sin_t|, drop = cos_t / s, reach = rho_max s for n rays. */
+/* With s = |sin_t|: inv_s = 1 / s (a ray's length per metre of walk along the ground: a
+ * multiplication where a division was a tenth of a fan's cost), drop = cos_t / s, reach =
+ * rho_max s, for n rays. */
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
-                                   double rho_max, double s[], double drop[], double reach[]);
+                                   double rho_max, double inv_s[], double drop[],
+                                   double reach[]);
 
 /* Casts the rays a..b (a <= i0 <= b) from (o->x, z): rho[i] as tirenv_springs__ray_at gives
  * it, bit for bit. Each ray's walk resumes where the previous ray's stopped (a ray turned

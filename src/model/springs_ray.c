@@ -23,12 +23,12 @@ enum {
  * centre if j is first_j, the first vertex ahead of x, else vertex j - dir) is known to lie
  * above the ground with everything before it. *f_min takes the minimum of f over every point
  * passed (all of them strictly before the vertex that ends the walk); it is what bounds how far
- * the centre may sink before the walk could end elsewhere. s = |sin_t|, drop = cos_t / s (the
+ * the centre may sink before the walk could end elsewhere. inv_s = 1/|sin_t|, drop = cos_t / |sin_t| (the
  * ray's descent per metre of walk) and reach = rho_max s (the walk length of the whole ray)
  * come from the caller. The slope of the face hit is left to slope_drho: most rays of a fan
  * never need it. */
 static inline double walk(const tirenv_profile *p, double x, double z, double f0, long first_j,
-                          long j, int dir, double s, double drop, double reach, double cos_t,
+                          long j, int dir, double inv_s, double drop, double reach, double cos_t,
                           double rho_max, long *j_end, int *kind, double *f_min)
 {
     const double *X = p->x, *Z = p->z;
@@ -51,11 +51,11 @@ static inline double walk(const tirenv_profile *p, double x, double z, double f0
             *f_min = fm;
             if (a == a_prev) {              /* a vertical wall: rho does not depend on z */
                 *kind = RAY_WALL;
-                return a <= reach ? a / s : INFINITY;
+                return a <= reach ? a * inv_s : INFINITY;
             }
             *kind = RAY_HIT;
             const double a_hit = a_prev + f_prev * (a - a_prev) / (f_prev - f);
-            return a_hit > reach ? INFINITY : a_hit / s;
+            return a_hit > reach ? INFINITY : a_hit * inv_s;
         }
         if (a > reach) {                    /* f(j) > 0 is checked again on reuse */
             *j_end = j;
@@ -87,8 +87,12 @@ static double slope_drho(const tirenv_profile *p, long j, int dir, int kind, dou
     switch (kind) {
     case RAY_HIT: {
         const long jp = j - dir;            /* the hit segment is [jp, j]; -1 or n: flat */
-        const double slope = jp >= 0 && jp < n ? (Z[j] - Z[jp]) / (X[j] - X[jp]) : 0;
-        return 1 / (cos_t + sin_t * slope);
+        if (!(jp >= 0 && jp < n))
+            return 1 / cos_t;
+        /* 1 / (cos_t + sin_t slope) with slope = dZ/dX, in one division: dX != 0 (not a
+         * wall). */
+        const double dX = X[j] - X[jp], dZ = Z[j] - Z[jp];
+        return dX / (cos_t * dX + sin_t * dZ);
     }
     case RAY_END:
         return 1 / cos_t;
@@ -139,7 +143,7 @@ double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, doubl
     long j_end;
     int kind;
     double f_min = f0;
-    const double rho = walk(p, x, z, f0, first_j, first_j, dir, s, cos_t / s, rho_max * s,
+    const double rho = walk(p, x, z, f0, first_j, first_j, dir, 1 / s, cos_t / s, rho_max * s,
                             cos_t, rho_max, &j_end, &kind, &f_min);
     if (isfinite(rho))
         *drho_dz = slope_drho(p, j_end, dir, kind, sin_t, cos_t);
@@ -147,12 +151,14 @@ double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, doubl
 }
 
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
-                                   double rho_max, double s[], double drop[], double reach[])
+                                   double rho_max, double inv_s[], double drop[],
+                                   double reach[])
 {
     for (size_t i = 0; i < n; ++i) {
-        s[i] = fabs(sin_t[i]);
-        drop[i] = cos_t[i] / s[i]; /* +-infinity straight down: never used there */
-        reach[i] = rho_max * s[i];
+        const double s = fabs(sin_t[i]);
+        inv_s[i] = 1 / s;
+        drop[i] = cos_t[i] / s; /* +-infinity straight down: never used there */
+        reach[i] = rho_max * s;
     }
 }
 
@@ -269,7 +275,7 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
             reach_prev = reach;
             long j_end;
             int kind;
-            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->s[i], drop, reach, r->cos_t[i],
+            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach, r->cos_t[i],
                           rho_max, &j_end, &kind, &f_min);
             memo[i] = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
                                                  .z_low = z - (f_min - tol), .drho = NAN};
@@ -313,7 +319,7 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
         if (!(z > m->z_low))
             return 0;
         const int dir = i > i0 ? 1 : -1;
-        const double s = r->s[i], drop = r->drop[i], reach = r->reach[i];
+        const double inv_s = r->inv_s[i], drop = r->drop[i], reach = r->reach[i];
         const long j = m->j;
         switch (m->kind) {
         case RAY_DOWN:
@@ -326,7 +332,7 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
             if (f > 0)
                 return 0; /* the crossing moved past j */
             if (m->kind == RAY_WALL) {
-                rho[i] = a_j <= reach ? a_j / s : INFINITY;
+                rho[i] = a_j <= reach ? a_j * inv_s : INFINITY;
                 break;
             }
             double a_prev, f_prev;
@@ -338,7 +344,7 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
                 f_prev = z - a_prev * drop - Z[j - dir];
             }
             const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
-            rho[i] = a_hit > reach ? INFINITY : a_hit / s;
+            rho[i] = a_hit > reach ? INFINITY : a_hit * inv_s;
             break;
         }
         case RAY_REACH: {
