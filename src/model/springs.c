@@ -49,6 +49,18 @@ struct tirenv_springs {
     double *rho, *ray_inv_s, *ray_drop, *ray_reach, *tread;
     tirenv_springs__fan_rays rays;
     tirenv_springs__ray_memo *memo;
+    /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
+     * pins: the last one solved for is kept with them and given again, bit for bit, when they
+     * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
+     * the fresh fans cast: the faces are the same while it is. */
+    unsigned long long fans;
+    struct {
+        int valid;
+        unsigned long long fans;
+        size_t f0, f1, count, first, last, n_gaps;
+        size_t *gap;       /* N pairs, as in pins */
+        double dfz_dz;     /* N/m */
+    } slope;
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -101,9 +113,10 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     double *buf = calloc(n_arrays * N + n_tables * (N + 2), sizeof *buf);
     s->active = calloc(N, 1);
     s->pins.gap = calloc(2 * N, sizeof *s->pins.gap);
+    s->slope.gap = calloc(2 * N, sizeof *s->slope.gap);
     s->memo = calloc(N, sizeof *s->memo);
     s->pairs = calloc(4 * N, sizeof *s->pairs);
-    if (!buf || !s->active || !s->pins.gap || !s->memo || !s->pairs) {
+    if (!buf || !s->active || !s->pins.gap || !s->slope.gap || !s->memo || !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
@@ -147,6 +160,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->theta);
     free(s->active);
     free(s->pins.gap);
+    free(s->slope.gap);
     free(s->memo);
     free(s->pairs);
     free(s);
@@ -235,6 +249,7 @@ static void cast_rays(tirenv_springs *s, const tirenv_profile *prof, double z, s
         return;
     }
     tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+    ++s->fans;
     s->ray_a = a;
     s->ray_b = b;
     find_pairs(s, a, b);
@@ -291,6 +306,44 @@ static int check_unseen(tirenv_springs *s, const tirenv_profile *prof, double x,
     if (diag)
         *diag = s->refusal;
     return TIRENV_ERANGE;
+}
+
+/* Whether the slope kept was solved for these faces, this span and these pins. */
+static int same_slope(const tirenv_springs *s, size_t f0, size_t f1)
+{
+    const tirenv_springs__pins *P = &s->pins;
+    return s->slope.valid && s->slope.fans == s->fans && s->slope.f0 == f0 &&
+           s->slope.f1 == f1 && s->slope.count == P->count && s->slope.first == P->first &&
+           s->slope.last == P->last && s->slope.n_gaps == P->n_gaps &&
+           !memcmp(s->slope.gap, P->gap, 2 * P->n_gaps * sizeof *P->gap);
+}
+
+/* dF_z/dz of the state just solved, over the touching span [f0, f1]: d(d_i)/dz =
+ * -d(rho_i)/dz on the pinned elements, and the LCP's closed form carries it to dw. */
+static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t f0, size_t f1)
+{
+    const tirenv_springs__pins *P = &s->pins;
+    if (same_slope(s, f0, f1))
+        return s->slope.dfz_dz;
+    if (P->count > 0)
+        for (size_t i = P->first; i <= P->last; ++i)
+            if (s->active[i])
+                s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
+    tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+    for (size_t i = f0; i <= f1; ++i)
+        sum += s->k_r * s->dw[i] * s->cos_t[i];
+    s->slope.valid = 1;
+    s->slope.fans = s->fans;
+    s->slope.f0 = f0;
+    s->slope.f1 = f1;
+    s->slope.count = P->count;
+    s->slope.first = P->first;
+    s->slope.last = P->last;
+    s->slope.n_gaps = P->n_gaps;
+    memcpy(s->slope.gap, P->gap, 2 * P->n_gaps * sizeof *P->gap);
+    s->slope.dfz_dz = sum;
+    return sum;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
@@ -360,18 +413,8 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
     *fx = -sum_s;
     if (contacts)
         *contacts = s->pins.count;
-    if (dfz_dz) {
-        /* d(d_i)/dz = -d(rho_i)/dz on the pinned elements; the same closed form gives dw. */
-        if (s->pins.count > 0)
-            for (size_t i = s->pins.first; i <= s->pins.last; ++i)
-                if (s->active[i])
-                    s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
-        tirenv_springs__pinned_solve(&s->chains, f0, f1, &s->pins, s->dd, s->dw);
-        double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-        for (size_t i = f0; i <= f1; ++i)
-            sum += k_r * s->dw[i] * s->cos_t[i];
-        *dfz_dz = sum;
-    }
+    if (dfz_dz)
+        *dfz_dz = slope_dfz_dz(s, prof, f0, f1);
     return check_unseen(s, prof, x, z, a, b, f0, f1, diag);
 }
 
