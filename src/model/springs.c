@@ -326,9 +326,8 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
     if (same_slope(s, f0, f1))
         return s->slope.dfz_dz;
     if (P->count > 0)
-        for (size_t i = P->first; i <= P->last; ++i)
-            if (s->active[i])
-                s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
+        tirenv_springs__fan_drho_neg(prof, &s->rays, P->first, P->last, s->active, s->memo,
+                                     s->dd);
     tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
     double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
     for (size_t i = f0; i <= f1; ++i)

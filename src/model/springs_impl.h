@@ -82,6 +82,13 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                 size_t i, tirenv_springs__ray_memo *m);
 
+/* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
+ * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an
+ * evaluation. */
+void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                  size_t first, size_t last, const unsigned char mask[],
+                                  tirenv_springs__ray_memo memo[], double dd[]);
+
 /* Recomputes rho[a..b] at a new centre height z from the walks recorded in memo[a..b] (from
  * the same profile and origin), where each ray provably still ends on the same face: its new
  * first crossing is found by the same arithmetic, so the result equals a fresh

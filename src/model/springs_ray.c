@@ -177,6 +177,10 @@ static double height_in(const tirenv_profile *p, double x, size_t k)
     return zs[k] + (zs[k + 1] - zs[k]) * t;
 }
 
+/* fmax for finite heights, inlined (GCC calls libm's for its NaN rules: 2 % of the springs
+ * model over a road). */
+static inline double higher(double a, double b) { return b > a ? b : a; }
+
 /* An upper bound of the ground over [x, x + dir len]: g, every vertex inside, and the first
  * vertex beyond (which bounds the segment that crosses the end), whole blocks at a time from
  * the block maxima where a block lies inside. */
@@ -189,11 +193,11 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
         const double lim = x + len;
         while (j < n) {
             if (j % B == 0 && j + B < n && X[j + B] <= lim) { /* block j/B: vertices j..j+B */
-                m = fmax(m, Zb[j / B]);
+                m = higher(m, Zb[j / B]);
                 j += B;
                 continue;
             }
-            m = fmax(m, Z[j]);
+            m = higher(m, Z[j]);
             if (X[j] > lim)
                 break;
             ++j;
@@ -202,11 +206,11 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
         const double lim = x - len;
         while (j >= 0) {
             if (j % B == 0 && j >= B && X[j - B] >= lim) { /* block j/B - 1: j-B..j */
-                m = fmax(m, Zb[j / B - 1]);
+                m = higher(m, Zb[j / B - 1]);
                 j -= B;
                 continue;
             }
-            m = fmax(m, Z[j]);
+            m = higher(m, Z[j]);
             if (X[j] < lim)
                 break;
             --j;
@@ -290,6 +294,21 @@ double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__f
     if (isnan(m->drho)) /* the face does not change while the memo holds */
         m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i], r->cos_t[i]);
     return m->drho;
+}
+
+void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                  size_t first, size_t last, const unsigned char mask[],
+                                  tirenv_springs__ray_memo memo[], double dd[])
+{
+    for (size_t i = first; i <= last; ++i) {
+        if (!mask[i])
+            continue;
+        tirenv_springs__ray_memo *m = &memo[i];
+        if (isnan(m->drho))
+            m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i],
+                                 r->cos_t[i]);
+        dd[i] = -m->drho;
+    }
 }
 
 /* Why reuse is exact. Along one ray from one x, f_k(z) = (z - a_k drop) - Z_k at every point
