@@ -220,7 +220,7 @@ static void test_fan_matches_single_rays(void **state)
             const double g = tirenv_profile_height(p, x);
             const double z = g + 0.02 + 0.8 * gsl_rng_uniform(rng);
             tirenv_springs__fan_origin o;
-            tirenv_springs__fan_origin_at(p, x, R0, &o);
+            tirenv_springs__fan_origin_at(p, x, R0, 0, &o);
             assert_bits_equal(o.g, g);
             const size_t a = gsl_rng_uniform_int(rng, i0 + 1);
             const size_t b = i0 + gsl_rng_uniform_int(rng, N - i0);
@@ -404,7 +404,7 @@ static void test_pairs_miss_nothing(void **state)
             const double xc = -0.6 + 1.2 * gsl_rng_uniform(rng);
             const double zc = 0.62 + 0.08 * gsl_rng_uniform(rng);
             tirenv_springs__fan_origin o;
-            tirenv_springs__fan_origin_at(p, xc, R0, &o);
+            tirenv_springs__fan_origin_at(p, xc, R0, 0, &o);
             const size_t a = i0 - 100, b = i0 + 100;
             tirenv_springs__fan(p, &o, &rays, zc, a, b, rho, memo);
             for (size_t i = a; i <= b; ++i) /* the tread at or inside the ground, anywhere */

@@ -212,9 +212,10 @@ static int candidate_span(tirenv_springs *s, double z, size_t *a, size_t *b)
 static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
 {
     const double R0 = s->par.R0;
-    if (s->ray_serial == prof->serial && s->origin.x == x)
+    const int same_ground = s->ray_serial == prof->serial;
+    if (same_ground && s->origin.x == x)
         return;
-    tirenv_springs__fan_origin_at(prof, x, R0, &s->origin);
+    tirenv_springs__fan_origin_at(prof, x, R0, same_ground ? s->origin.k : 0, &s->origin);
     s->ray_serial = prof->serial;
     s->ray_a = 1;
     s->ray_b = 0;

@@ -46,10 +46,14 @@ typedef struct {
     long first[2];  /* first vertex strictly ahead of x backward [0] and forward [1] */
     double tol;     /* rounding allowance of the reuse test (without the |z| part), m */
     double z_max[2];  /* bounds of the ground within rho_max behind [0] and ahead [1], m */
+    size_t k;       /* tirenv_profile__segment_at(p, x) */
 } tirenv_springs__fan_origin;
 
+/* The origin at x; k_hint is any vertex index below p->n, near x for speed (the last
+ * origin's k on the same profile: an exponential search from it, not a binary search over a
+ * whole road). */
 void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho_max,
-                                   tirenv_springs__fan_origin *o);
+                                   size_t k_hint, tirenv_springs__fan_origin *o);
 
 /* A fan's rays: ray i points along (sin_t[i], -cos_t[i]); i0 straight down, the others' angles
  * growing monotonically away from it on either side; inv_s, drop and reach from

@@ -220,9 +220,10 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
 }
 
 void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho_max,
-                                   tirenv_springs__fan_origin *o)
+                                   size_t k_hint, tirenv_springs__fan_origin *o)
 {
-    const size_t k = tirenv_profile__segment_at(p, x);
+    const size_t k = tirenv_profile__segment_near(p, k_hint, x);
+    o->k = k;
     o->x = x;
     o->g = height_in(p, x, k);
     o->first[0] = first_vertex(p, x, k, -1);
