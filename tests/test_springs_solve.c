@@ -267,8 +267,10 @@ static void test_fan_matches_single_rays(void **state)
 
 /* A workspace that has seen other positions, heights and profiles (a new profile may sit at
  * a freed one's address) gives the forces of a fresh workspace, bit for bit: the rays it keeps
- * are tied to the profile's serial and x, and the final active set does not depend on the
- * warm start. */
+ * are tied to the profile's serial and x, the final active set does not depend on the warm
+ * start, and the dF_z/dz it keeps is given again only for the same faces, span and pins (every
+ * other height is a hair from the last, where they nearly always recur, as after a Newton
+ * step). */
 static void test_kept_state_is_invisible(void **state)
 {
     (void)state;
@@ -287,7 +289,10 @@ static void test_kept_state_is_invisible(void **state)
         last = p;
         const double x = round % 2 ? 0.0 : -0.13; /* the same x again and again */
         for (int k = 0; k < 8; ++k) {
-            const double z = 0.6 + 0.12 * gsl_rng_uniform(rng);
+            static double z_last = 0.65;
+            const double z = k % 2 ? z_last + 1e-9 * gsl_rng_uniform(rng)
+                                   : 0.6 + 0.12 * gsl_rng_uniform(rng);
+            z_last = z;
             double fx1, fz1, df1, fx2, fz2, df2;
             size_t c1, c2;
             const int s1 = tirenv_springs_forces(kept, p, x, z, &fx1, &fz1, &df1, &c1, NULL);
