@@ -354,7 +354,8 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
      * model may know more cheaply than the rigid disc's height. A cold start (z_hi less the
      * deflection), the plain secant of eq. 2 (no safeguard: two starts above contact break it
      * down) and Brent (its iterations grow with the bracket) keep the disc's, the tightest. */
-    const int cheap = st->ops->bracket && st->have_prev && st->tire.eq.method == TIRENV_EQ_NEWTON;
+    const int cheap =
+        st->ops->bracket && st->have_prev && st->tire.eq.method == TIRENV_EQ_NEWTON;
     double z_lo, z_hi;
     if (cheap) {
         st->ops->bracket(st->elem, st->prof, x, &z_lo, &z_hi);

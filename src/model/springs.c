@@ -123,7 +123,8 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     }
     double **arrays[] = {&s->theta, &s->sin_t, &s->cos_t, &s->diag, &s->L_D, &s->R_D, &s->lq,
                          &s->rq, &s->S_lc, &s->S_ls, &s->S_rc, &s->S_rs, &s->d, &s->p,
-                         &s->dd, &s->rho, &s->ray_inv_s, &s->ray_drop, &s->ray_reach, &s->tread};
+                         &s->dd, &s->rho, &s->ray_inv_s, &s->ray_drop, &s->ray_reach,
+                         &s->tread};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
         *arrays[k] = buf + k * N;
     double **tables[] = {&s->ce, &s->cm, &s->cmi, &s->w, &s->dw}; /* N + 2 each */
@@ -146,8 +147,8 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     tirenv_springs__fan_rays_fill(N, s->sin_t, s->cos_t, par->R0, s->ray_inv_s, s->ray_drop,
                                   s->ray_reach);
     s->rays = (tirenv_springs__fan_rays){.i0 = s->i0, .rho_max = par->R0, .sin_t = s->sin_t,
-                                         .cos_t = s->cos_t, .inv_s = s->ray_inv_s, .drop = s->ray_drop,
-                                         .reach = s->ray_reach};
+                                         .cos_t = s->cos_t, .inv_s = s->ray_inv_s,
+                                         .drop = s->ray_drop, .reach = s->ray_reach};
     s->a = 1;
     s->b = 0;
     return s;

@@ -23,13 +23,13 @@ enum {
  * centre if j is first_j, the first vertex ahead of x, else vertex j - dir) is known to lie
  * above the ground with everything before it. *f_min takes the minimum of f over every point
  * passed (all of them strictly before the vertex that ends the walk); it is what bounds how far
- * the centre may sink before the walk could end elsewhere. inv_s = 1/|sin_t|, drop = cos_t / |sin_t| (the
- * ray's descent per metre of walk) and reach = rho_max s (the walk length of the whole ray)
- * come from the caller. The slope of the face hit is left to slope_drho: most rays of a fan
- * never need it. */
+ * the centre may sink before the walk could end elsewhere. With s = |sin_t|, inv_s = 1/s (the
+ * ray's length per metre of walk), drop = cos_t / s (its descent per metre of walk) and
+ * reach = rho_max s (the walk length of the whole ray) come from the caller. The slope of the
+ * face hit is left to slope_drho: most rays of a fan never need it. */
 static inline double walk(const tirenv_profile *p, double x, double z, double f0, long first_j,
-                          long j, int dir, double inv_s, double drop, double reach, double cos_t,
-                          double rho_max, long *j_end, int *kind, double *f_min)
+                          long j, int dir, double inv_s, double drop, double reach,
+                          double cos_t, double rho_max, long *j_end, int *kind, double *f_min)
 {
     const double *X = p->x, *Z = p->z;
     const long n = (long)p->n;
