@@ -301,15 +301,9 @@ void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs_
                                   size_t first, size_t last, const unsigned char mask[],
                                   tirenv_springs__ray_memo memo[], double dd[])
 {
-    for (size_t i = first; i <= last; ++i) {
-        if (!mask[i])
-            continue;
-        tirenv_springs__ray_memo *m = &memo[i];
-        if (isnan(m->drho))
-            m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i],
-                                 r->cos_t[i]);
-        dd[i] = -m->drho;
-    }
+    for (size_t i = first; i <= last; ++i)
+        if (mask[i])
+            dd[i] = -tirenv_springs__fan_drho(p, r, i, &memo[i]); /* inlined here */
 }
 
 /* Why reuse is exact. Along one ray from one x, f_k(z) = (z - a_k drop) - Z_k at every point
