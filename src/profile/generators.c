@@ -91,7 +91,7 @@ tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments)
 }
 
 /* Fine enough that the polylines stand for the curves: the chords of a half cylinder stay
- * within 0.004 % of r of the circle (1 - cos(0.5 degree)), those of a sine within 0.06 % of
+ * within 0.004 % of r of the circle (1 - cos(0.5 degree)), those of a sine within 0.061 % of
  * its height 2A. */
 tirenv_profile_resolution tirenv_profile_resolution_default(void)
 {
