@@ -74,6 +74,9 @@ tirenv_profile *tirenv_profile_triangle(double L_base, double H);
 tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments);
 tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double periods,
                                     size_t points_per_period);
+typedef struct { size_t cylinder_segments; size_t sine_points_per_period; }
+    tirenv_profile_resolution;
+tirenv_profile_resolution tirenv_profile_resolution_default(void);
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);
 
 /* crg.h, rdf.h, profile_file.h: a road file of any format, one track of it */
@@ -139,6 +142,8 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
 
 /* stream.h */
 size_t tirenv_positions_count(double x_from, double x_to, double dx);
+typedef struct { double x_from; double x_to; double dx; } tirenv_positions;
+tirenv_positions tirenv_positions_default(double x_first, double x_last, double R0);
 
 /* nn.h, the network's model file */
 typedef struct tirenv_nn tirenv_nn;
@@ -195,6 +200,15 @@ typedef struct {
     double F_front, F_rear;
 } tirenv_ride_sample;
 tirenv_ride_settings tirenv_ride_default(void);
+typedef struct {
+    double run_in; double settle_min; double settle_time; double grid_margin; double dx;
+} tirenv_ride_span;
+tirenv_ride_span tirenv_ride_span_default(void);
+double tirenv_ride_span_start(const tirenv_ride_span *s, double x_first);
+double tirenv_ride_span_end(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_last,
+                            double V);
+double tirenv_ride_span_grid(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_from,
+                             double x_to, double *x0);
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);

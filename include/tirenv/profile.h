@@ -57,5 +57,14 @@ tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments); /* insc
 tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double periods,
                                     size_t points_per_period);    /* A(1-cos(2pi x/wl)), x>=0 */
 
+/* How finely the curved generators follow their curves. */
+typedef struct {
+    size_t cylinder_segments;      /* chords of tirenv_profile_half_cylinder */
+    size_t sine_points_per_period; /* segments per period of tirenv_profile_sine */
+} tirenv_profile_resolution;
+
+/* The CLI's (--cylinder, --sine): 180 chords (1 degree each) and 64 segments a period. */
+tirenv_profile_resolution tirenv_profile_resolution_default(void);
+
 TIRENV_END_DECLS
 #endif

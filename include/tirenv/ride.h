@@ -43,6 +43,35 @@ typedef struct {
 /* Defaults: 1 m/s, from x = 0, 10 s, dt 1 ms, RK4, tol 1e-10. */
 tirenv_ride_settings tirenv_ride_default(void);
 
+/* Where a run drives over ground, and the grid of the axles' inputs (tirenv_ride_track,
+ * tirenv_ride_table) that covers it (docs/models.md section 9.4). */
+typedef struct {
+    double run_in;         /* the front axle starts this far before the first vertex, m */
+    double settle_min;     /* the run ends once the rear axle is max(settle_min, */
+    double settle_time;    /* settle_time*V) past the last vertex: m, s */
+    double grid_margin;    /* the grid reaches this far beyond both axles' travel, m */
+    double dx;             /* grid spacing, m */
+} tirenv_ride_span;
+
+/* tirenv ride's: run-in 1 m, settling max(3 m, 2 s of travel), grid margin 1 m, dx 5 mm. */
+tirenv_ride_span tirenv_ride_span_default(void);
+
+/* The front axle's start (m) over ground whose first vertex is at x_first (m). */
+double tirenv_ride_span_start(const tirenv_ride_span *s, double x_first);
+
+/* The front axle's end (m) at speed V (m/s) over ground whose last vertex is at x_last (m):
+ * the rear axle of v, a wheelbase behind, is then max(settle_min, settle_time*V) past it. */
+double tirenv_ride_span_end(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_last,
+                            double V);
+
+/* The grid x_k = x0 + k*s->dx of a run whose front axle goes from x_from to x_to (m; over
+ * several speeds, the furthest end of all): from grid_margin behind the rear axle's start to
+ * grid_margin beyond the front axle's end. Puts x0 (m) into *x0 and returns the number of
+ * points, ceil((x_to + grid_margin - x0)/dx) + 1, as a double for the caller to check
+ * against what it can hold before converting (not finite unless dx > 0 and all is finite). */
+double tirenv_ride_span_grid(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_from,
+                             double x_to, double *x0);
+
 /* The state and what the driver feels at one output time. Displacements are from the static
  * equilibrium on flat ground at height 0 (so z = w on a flat road of height w). */
 typedef struct {

@@ -35,6 +35,18 @@ typedef struct {
  * and of tirenv_model_stream. */
 size_t tirenv_positions_count(double x_from, double x_to, double dx);
 
+/* A sweep: the positions x_k = x_from + k*dx up to x_to, tirenv_positions_count of them. */
+typedef struct {
+    double x_from;         /* first position, m */
+    double x_to;           /* last position, m (reached within a billionth of dx) */
+    double dx;             /* spacing, m (> 0) */
+} tirenv_positions;
+
+/* tirenv envelope's sweep for a tire of free radius R0 (m) over ground whose vertices run
+ * from x_first to x_last (m, tirenv_profile_extent): every 1 mm from R0 + 2 cm before
+ * x_first to R0 + 2 cm after x_last. Edit the fields to sweep otherwise. */
+tirenv_positions tirenv_positions_default(double x_first, double x_last, double R0);
+
 /* Evaluates the positions x_k = x_from + k*dx (m) up to x_to (m; as the CLI's sweep) at load
  * (N), taking vertices from source (called with source_ctx) only as far as the tire's reach
  * ahead needs, and passing each point to sink (called with ctx). Equals tirenv_model_set +

@@ -32,15 +32,14 @@ int main(int argc, char *argv[])
     if (!m || !p || tirenv_model_load_for_contact_length(m, strtod(argv[5], NULL), &load, &diag))
         return fail(&diag);
     tirenv_profile_extent(p, &first, &last);
-    const double margin = 0.02, dx = 0.001;  /* the CLI's defaults */
-    const double x_from = first - tire.springs.R0 - margin, x_to = last + tire.springs.R0 + margin;
-    const size_t n = tirenv_positions_count(x_from, x_to, dx);
+    const tirenv_positions s = tirenv_positions_default(first, last, tire.springs.R0);
+    const size_t n = tirenv_positions_count(s.x_from, s.x_to, s.dx);
     double *x = malloc(n * sizeof *x);
     tirenv_point *pt = malloc(n * sizeof *pt);
     if (!x || !pt)
         return 1;
     for (size_t k = 0; k < n; ++k)
-        x[k] = x_from + (double)k * dx;
+        x[k] = s.x_from + (double)k * s.dx;
     if (tirenv_model_set(m, p, load, &diag) || tirenv_model_envelope(m, n, x, pt, NULL, &diag))
         return fail(&diag);
     printf("%a\n", load);

@@ -20,10 +20,6 @@ Flat = collections.namedtuple("Flat", "load z_flat deflection contact_length sti
 Flat.__doc__ = "The tire on flat ground: load N, centre height m, deflection m, " \
                "contact length m, vertical stiffness N/m."
 
-# The CLI's default sweep: dx, and the margin beyond the tire's first and last reach (m).
-DEFAULT_DX = 0.001
-SWEEP_MARGIN = 0.02
-
 
 def model_names():
     """Names of the model types of the library's table."""
@@ -44,9 +40,12 @@ def track_positions(n, track=0.0, width=0.38):
     return np.array([out[i] for i in range(int(n))])
 
 
-def positions(x_from, x_to, dx=DEFAULT_DX):
+def positions(x_from, x_to, dx=None):
     """The CLI's sweep x_k = x_from + k*dx up to x_to (with its 1e-9 dx allowance), bit for
-    bit the positions 'tirenv envelope --x-from --x-to --dx' evaluates."""
+    bit the positions 'tirenv envelope --x-from --x-to --dx' evaluates; dx (m) by default
+    the CLI's (tirenv_positions_default)."""
+    if dx is None:
+        dx = lib.tirenv_positions_default(x_from, x_to, 0.0).dx
     if not (dx > 0 and x_to >= x_from):
         raise invalid(f"expected dx > 0 and x_to >= x_from, got dx {dx} from {x_from} to "
                       f"{x_to}", "dx")
@@ -157,16 +156,18 @@ class Model:
             raise e
         return out
 
-    def sweep(self, x_from=None, x_to=None, dx=DEFAULT_DX):
-        """envelope() over the CLI's default positions: from the profile's first vertex minus
-        R0 + 0.02 m to its last plus R0 + 0.02 m, every dx (as 'tirenv envelope')."""
+    def sweep(self, x_from=None, x_to=None, dx=None):
+        """envelope() over 'tirenv envelope's positions: the library's default sweep of the
+        tire over the profile (tirenv_positions_default: from R0 and a margin before its first
+        vertex to as far after its last), each of x_from, x_to, dx (m) given replacing its
+        part, as --x-from, --x-to and --dx do."""
         if self.profile is None:
             raise invalid("no profile: call set(profile, load) first")
         first, last = self.profile.extent
-        R0 = self.tire.R0
-        x_from = first - R0 - SWEEP_MARGIN if x_from is None else x_from
-        x_to = last + R0 + SWEEP_MARGIN if x_to is None else x_to
-        return self.envelope(positions(x_from, x_to, dx))
+        s = lib.tirenv_positions_default(first, last, self.tire.R0)
+        return self.envelope(positions(s.x_from if x_from is None else x_from,
+                                       s.x_to if x_to is None else x_to,
+                                       s.dx if dx is None else dx))
 
     def __repr__(self):
         return f"<tirenv.Model {self.name}, {self.tire!r}>"

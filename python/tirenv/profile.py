@@ -7,11 +7,6 @@ import numpy as np
 
 from ._c import ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes
 
-# The CLI's resolution of --cylinder and --sine (src/cli/options.c), so that the same
-# obstacle gives the same profile here and there.
-CYLINDER_SEGMENTS = 180
-SINE_POINTS_PER_PERIOD = 64
-
 
 class Profile:
     """An immutable ground profile. Build one with Profile(x, z) or the class methods."""
@@ -62,15 +57,22 @@ class Profile:
                          f"triangle {base_length} x {height}: expected positive sizes")
 
     @classmethod
-    def cylinder(cls, radius, segments=CYLINDER_SEGMENTS):
-        """A half cylinder of radius (m), as a polygon of segments chords."""
+    def cylinder(cls, radius, segments=None):
+        """A half cylinder of radius (m), as a polygon of segments chords (default the
+        CLI's --cylinder, tirenv_profile_resolution_default)."""
+        if segments is None:
+            segments = lib.tirenv_profile_resolution_default().cylinder_segments
         return cls._from(lib.tirenv_profile_half_cylinder(radius, segments),
                          f"cylinder of radius {radius} in {segments} segments: expected a "
                          "positive radius and at least 2 segments")
 
     @classmethod
-    def sine(cls, amplitude, wavelength, periods, points_per_period=SINE_POINTS_PER_PERIOD):
-        """amplitude*(1 - cos(2 pi x/wavelength)) from x = 0 over periods periods."""
+    def sine(cls, amplitude, wavelength, periods, points_per_period=None):
+        """amplitude*(1 - cos(2 pi x/wavelength)) from x = 0 over periods periods, in
+        points_per_period segments a period (default the CLI's --sine,
+        tirenv_profile_resolution_default)."""
+        if points_per_period is None:
+            points_per_period = lib.tirenv_profile_resolution_default().sine_points_per_period
         return cls._from(lib.tirenv_profile_sine(amplitude, wavelength, periods,
                                                  points_per_period),
                          f"sine {amplitude}, {wavelength}, {periods}: expected all positive")

@@ -18,11 +18,6 @@ SAMPLE_DTYPE = struct_dtype("tirenv_ride_sample", [(f, f, "f8") for f in SAMPLE_
 Metrics = collections.namedtuple("Metrics", "duration rms peak crest vdv mtvv")
 Metrics.__doc__ = "ISO 2631-1 clause 6 figures of one weighted series (units of the input)."
 
-# 'tirenv ride's grid and run length (src/cli/ride_run.c), so that a run here is the CLI's.
-GRID_MARGIN = 1.0   # m
-RUN_IN = 1.0        # m
-SETTLE_MIN = 3.0    # m
-SETTLE_TIME = 2.0   # s
 AXLES = {"front": 0, "rear": 1, 0: 0, 1: 1}
 
 
@@ -148,20 +143,34 @@ def speed_of(v):
     return float(v)
 
 
-def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005, dt=0.001,
-         method="rk4", tol=1e-10, x_from=None, x_to=None, enveloping="dynamic",
+def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None, dt=None,
+         method="rk4", tol=None, x_from=None, x_to=None, enveloping="dynamic",
          extrapolate=False):
     """Drives the tractor at speed (m/s) over profile, each axle's tires following what model
     makes of it ("point" for single-point contact, a model name, or "nn" with network), as
-    'tirenv ride' does: same grid, same start (1 m before the obstacle) and end (once the
-    rear axle has passed and the body settled), and the same way of enveloping: "dynamic"
-    (default), the effective road at the load the tires carry, from tables over loads, or
-    "static", at the axle's static tire load (docs/models.md section 9.5). The integration is
-    one library call with the GIL released. extrapolate=True lets the network run outside its
-    trained ranges, as 'tirenv ride --extrapolate'. Returns a Ride (w_front, w_rear: the
-    static load's rows)."""
+    'tirenv ride' does: the same grid of the inputs (every dx m), the same start x_from and
+    end x_to of the front axle (m; from a run-in before the obstacle to once the rear axle
+    has passed it and the body settled), all by default the library's, as the CLI's
+    (tirenv_ride_span_default; dt s and tol from tirenv_ride_default), and the same way of
+    enveloping: "dynamic" (default), the effective road at the load the tires carry, from
+    tables over loads, or "static", at the axle's static tire load (docs/models.md section
+    9.5). The integration is one library call with the GIL released. extrapolate=True lets
+    the network run outside its trained ranges, as 'tirenv ride --extrapolate'. Returns a
+    Ride (w_front, w_rear: the static load's rows)."""
     v = vehicle if vehicle is not None else Vehicle()
     speed = speed_of(speed)
+    s = ffi.new("tirenv_ride_settings *")
+    s[0] = lib.tirenv_ride_default()
+    dt = s.dt if dt is None else dt
+    tol = s.tol if tol is None else tol
+    span = ffi.new("tirenv_ride_span *")
+    span[0] = lib.tirenv_ride_span_default()
+    if dx is not None:
+        span.dx = dx
+    if not (span.dx > 0 and math.isfinite(span.dx)):
+        raise invalid(f"expected a grid spacing dx > 0 in m, got {dx!r}", "dx")
+    if not (dt > 0 and math.isfinite(dt)):
+        raise invalid(f"expected an output interval dt > 0 in s, got {dt!r}", "dt")
     if not (1 / dt >= lib.TIRENV_COMFORT_FS_MIN):
         raise invalid(f"dt {dt} s is too coarse for ISO 2631-1's weightings: at most "
                       f"{1 / lib.TIRENV_COMFORT_FS_MIN} s", "dt")
@@ -171,15 +180,17 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=0.005
     if enveloping not in ("static", "dynamic"):
         raise invalid(f"expected static or dynamic, got {enveloping!r}", "enveloping")
     first, last = profile.extent
-    x_from = first - RUN_IN if x_from is None else x_from
+    if x_from is None:
+        x_from = lib.tirenv_ride_span_start(span, first)
     if x_to is None:
-        x_to = last + v.wheelbase + max(SETTLE_MIN, SETTLE_TIME * speed)
+        x_to = lib.tirenv_ride_span_end(span, v._v, last, speed)
     if not (x_to > x_from):
         raise invalid(f"the run must end after it starts: x_from {x_from}, x_to {x_to}")
-    x0 = x_from - v.wheelbase - GRID_MARGIN
-    n = int(math.ceil((x_to + GRID_MARGIN - x0) / dx) + 1)
-    s = ffi.new("tirenv_ride_settings *")
-    s[0] = lib.tirenv_ride_default()
+    x0_c = ffi.new("double *")
+    n_grid = lib.tirenv_ride_span_grid(span, v._v, x_from, x_to, x0_c)
+    if not math.isfinite(n_grid):
+        raise invalid(f"no grid from {x_from} m to {x_to} m every {span.dx} m", "dx")
+    x0, dx, n = x0_c[0], span.dx, int(n_grid)
     s.speed, s.x_front0, s.dt, s.method, s.tol = speed, x_from, dt, methods[method], tol
     s.duration = (x_to - x_from) / speed
     series = np.zeros(lib.tirenv_ride_n_samples(s), dtype=SAMPLE_DTYPE)

@@ -13,9 +13,6 @@
 #include "cli/level.h"
 #include "cli/road_out.h"
 
-/* The default sweep starts and ends this far beyond the tire's first and last reach, m. */
-static const double margin = 0.02;
-static const double default_dx = 0.001;  /* m */
 static const double rise_threshold = 1e-4;  /* first rise: h above 0.1 mm, m */
 enum { SWEEP_CHUNK = 8192 };  /* positions computed and written at a time into a file */
 
@@ -304,13 +301,19 @@ static int stream_extent(const run *r, double *first, double *last, tirenv_diag 
     return status;
 }
 
-/* The sweep's ends: as asked, or R0 + margin beyond the obstacle's first and last vertex. */
-static void sweep_ends(const cli_options *o, const tirenv_model *m, double first, double last,
-                       double *x_from, double *x_to)
+/* The sweep: --x-from, --x-to and --dx as asked, the library's default sweep over the
+ * obstacle's first to last vertex for the rest. */
+static tirenv_positions sweep(const cli_options *o, const tirenv_model *m, double first,
+                              double last)
 {
-    const double R0 = tirenv_model_tire(m)->springs.R0;
-    *x_from = isnan(o->x_from) ? first - R0 - margin : o->x_from;
-    *x_to = isnan(o->x_to) ? last + R0 + margin : o->x_to;
+    tirenv_positions s = tirenv_positions_default(first, last, tirenv_model_tire(m)->springs.R0);
+    if (!isnan(o->x_from))
+        s.x_from = o->x_from;
+    if (!isnan(o->x_to))
+        s.x_to = o->x_to;
+    if (!isnan(o->dx))
+        s.dx = o->dx;
+    return s;
 }
 
 /* --relative-to ground, streamed: the level under the centre, from the file read a second
@@ -337,12 +340,12 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     const cli_options *o = r->o;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    double first = 0, last = 0, x_from, x_to;
+    double first = 0, last = 0;
     int status = stream_extent(r, &first, &last, &diag);
     if (status)
         return cli_fail(status, &diag);
-    sweep_ends(o, m, first, last, &x_from, &x_to);
-    const double dx = isnan(o->dx) ? default_dx : o->dx;
+    const tirenv_positions s = sweep(o, m, first, last);
+    const double x_from = s.x_from, x_to = s.x_to, dx = s.dx;
     if (!(x_to >= x_from)) {
         cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
                   x_from, x_to);
@@ -481,12 +484,11 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
                           tirenv_profile *const prof[])
 {
     const cli_options *o = r->o;
-    double first, last, x_from, x_to, *x = NULL;
+    double first, last, *x = NULL;
     tirenv_profile_extent(prof[0], &first, &last);
-    sweep_ends(o, m, first, last, &x_from, &x_to);
-    const double dx = isnan(o->dx) ? default_dx : o->dx;
+    const tirenv_positions s = sweep(o, m, first, last);
     size_t n = 0;
-    int code = cli_positions(x_from, x_to, dx, &x, &n);
+    int code = cli_positions(s.x_from, s.x_to, s.dx, &x, &n);
     if (code)
         return code;
     tirenv_diag diag;
@@ -500,7 +502,7 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     int status = tirenv_model_set_tracks(m, r->road.n, tracks, NULL, load, &diag);
     if (!status)
         cli_model_warnings(r->cmd, m);
-    if (!status && !(status = whole_open(r, m, load, x_from, dx, n, &w, &diag))) {
+    if (!status && !(status = whole_open(r, m, load, s.x_from, s.dx, n, &w, &diag))) {
         const size_t chunk = whole_chunk(r, &w, n);
         if (!(pt = malloc(chunk * sizeof *pt)))
             status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");

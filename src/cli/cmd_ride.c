@@ -215,7 +215,7 @@ static int parse_solver(void *dst, const char *arg)
 
 int cli_ride_main(int argc, char *argv[])
 {
-    ride_options r = {.dt = 0.001, .method = TIRENV_RIDE_RK4,
+    ride_options r = {.dt = tirenv_ride_default().dt, .method = TIRENV_RIDE_RK4,
                       .models = {tirenv_model_point, tirenv_model_springs},
                       .model_names = {"point", "springs"}, .n_models = 2};
     const cli_opt own[] = {
@@ -241,7 +241,9 @@ int cli_ride_main(int argc, char *argv[])
     r.nn_path = o.nn_path;
     r.extrapolate = o.extrapolate;
     r.out_path = o.output;
-    r.dx = isnan(o.dx) ? 0.005 : o.dx;
+    r.span = tirenv_ride_span_default();
+    if (!isnan(o.dx))
+        r.span.dx = o.dx;
     r.have_from = !isnan(o.x_from);
     r.have_to = !isnan(o.x_to);
     r.x_from = o.x_from;

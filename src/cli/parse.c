@@ -389,13 +389,10 @@ void cli_help_obstacle(FILE *fp)
 
 /* ---- the obstacle ----------------------------------------------------------------------- */
 
-/* Resolution of the generated curved obstacles: a 1 degree polygon for the cylinder and 64
- * vertices per sine period keep the polyline within 0.02 % of the curve's height. */
-enum { CYLINDER_SEGMENTS = 180, SINE_POINTS_PER_PERIOD = 64 };
-
 int cli_profile(const cli_options *o, tirenv_profile **out)
 {
     const double *s = o->shape;
+    const tirenv_profile_resolution res = tirenv_profile_resolution_default();
     *out = NULL;
     switch (o->obstacle) {
     case CLI_PROFILE: {
@@ -407,9 +404,9 @@ int cli_profile(const cli_options *o, tirenv_profile **out)
     case CLI_STEP: *out = tirenv_profile_step(s[0], s[1]); break;
     case CLI_TRAPEZOID: *out = tirenv_profile_trapezoid(s[0], s[1], s[2]); break;
     case CLI_TRIANGLE: *out = tirenv_profile_triangle(s[0], s[1]); break;
-    case CLI_CYLINDER: *out = tirenv_profile_half_cylinder(s[0], CYLINDER_SEGMENTS); break;
+    case CLI_CYLINDER: *out = tirenv_profile_half_cylinder(s[0], res.cylinder_segments); break;
     case CLI_SINE:
-        *out = tirenv_profile_sine(s[0], s[1], s[2], SINE_POINTS_PER_PERIOD);
+        *out = tirenv_profile_sine(s[0], s[1], s[2], res.sine_points_per_period);
         break;
     default:
         cli_error("an obstacle option is required (--cleat, --step, --trapezoid, --triangle, "

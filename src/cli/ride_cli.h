@@ -55,7 +55,8 @@ typedef struct {
     size_t n_cols;
     int have_from, have_to;
     double x_from, x_to;             /* front-axle positions, m */
-    double dx;                       /* input grid, m */
+    tirenv_ride_span span;           /* run-in, settling and the input grid: the
+                                      * library's, dx from --dx */
     double dt;                       /* output interval, s */
     tirenv_ride_method method;
     size_t jobs;                     /* --jobs: model inputs and runs at once */

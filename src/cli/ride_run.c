@@ -11,13 +11,6 @@
 #include "tirenv/nn_file.h"
 #include "tirenv/parallel.h"
 
-/* Margins of the input grid beyond the axles' travel, so the interpolation never runs off
- * its end inside a run; and the default run-in before the obstacle and settling after it. */
-static const double grid_margin = 1.0;   /* m */
-static const double run_in = 1.0;        /* m */
-static const double settle_min = 3.0;    /* m */
-static const double settle_time = 2.0;   /* s */
-
 /* What one model makes of the obstacle for both axles, and what it cost. */
 typedef struct {
     const tirenv_model_type *type;
@@ -254,7 +247,7 @@ static int measure(const ride_options *r, ride_series *rs, ride_result *res, tir
  * obstacle and the response has had time to settle. */
 static double run_end(const ride_options *r, const ride_setup *s, double V, double x_last)
 {
-    return r->have_to ? r->x_to : x_last + s->v.a + s->v.b + fmax(settle_min, settle_time * V);
+    return r->have_to ? r->x_to : tirenv_ride_span_end(&r->span, &s->v, x_last, V);
 }
 
 static void print_table(FILE *fp, const ride_result res[], size_t n)
@@ -402,7 +395,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     }
     double x_first, x_last;
     tirenv_profile_extent(p, &x_first, &x_last);
-    const double x_from = r->have_from ? r->x_from : x_first - run_in;
+    const double x_from = r->have_from ? r->x_from : tirenv_ride_span_start(&r->span, x_first);
     /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
      * memory": a 10 km/h km of road is 0.36 M samples. */
     double x_to_max = x_from;
@@ -428,12 +421,12 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         }
         x_to_max = fmax(x_to_max, x_to);
     }
-    s.dx = r->dx;
-    s.x0 = x_from - (s.v.a + s.v.b) - grid_margin;
-    const double n_grid = ceil((x_to_max + grid_margin - s.x0) / s.dx) + 1;
+    s.dx = r->span.dx;
+    const double n_grid = tirenv_ride_span_grid(&r->span, &s.v, x_from, x_to_max, &s.x0);
     if (n_grid > CLI_MAX_POSITIONS) {
         cli_error("ride: %.0f input positions (from %g m to %g m every %g m); at most %.0f: "
-                  "check --dx", n_grid, s.x0, x_to_max + grid_margin, s.dx, CLI_MAX_POSITIONS);
+                  "check --dx", n_grid, s.x0, x_to_max + r->span.grid_margin, s.dx,
+                  CLI_MAX_POSITIONS);
         code = CLI_EXIT_USAGE;
         goto done;
     }

@@ -160,18 +160,6 @@ static void profiles_free(tirenv_profile *p[], size_t n)
     }
 }
 
-size_t tirenv_positions_count(double x_from, double x_to, double dx)
-{
-    const double limit = x_to + dx * 1e-9;
-    size_t n = (size_t)floor((limit - x_from) / dx) + 1;
-    /* The division can land one step off either way; the product decides. */
-    while (n > 1 && x_from + (double)(n - 1) * dx > limit)
-        --n;
-    while (x_from + (double)n * dx <= limit)
-        ++n;
-    return n;
-}
-
 int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double weights[],
                                tirenv_row_source source, void *source_ctx, double x_from,
                                double x_to, double dx, double load, tirenv_point_sink sink,

@@ -90,6 +90,14 @@ tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments)
     return checked(p);
 }
 
+/* Fine enough that the polylines stand for the curves: the chords of a half cylinder stay
+ * within 0.004 % of r of the circle (1 - cos(0.5 degree)), those of a sine within 0.061 % of
+ * its height 2A. */
+tirenv_profile_resolution tirenv_profile_resolution_default(void)
+{
+    return (tirenv_profile_resolution){.cylinder_segments = 180, .sine_points_per_period = 64};
+}
+
 /* z = amplitude (1 - cos(2 pi x / wavelength)) on [0, periods * wavelength]: it starts at
  * z = 0 with zero slope, so it joins the flat ground on the left smoothly. The m segments
  * are equal, m = ceil(periods * points_per_period), so the last vertex lands exactly on

@@ -47,13 +47,13 @@ int main(int argc, char *argv[])
      * after. */
     double first, last;  /* m */
     tirenv_profile_extent(cleat, &first, &last);
-    const double x_from = first - tire.springs.R0 - 0.02, dx = 0.001;
-    const size_t n = tirenv_positions_count(x_from, last + tire.springs.R0 + 0.02, dx);
+    const tirenv_positions s = tirenv_positions_default(first, last, tire.springs.R0);
+    const size_t n = tirenv_positions_count(s.x_from, s.x_to, s.dx);
 
     printf("x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations\n");
     for (size_t k = 0; k < n; ++k) {
         tirenv_point p;
-        if (tirenv_model_eval(m, x_from + (double)k * dx, &p, &diag))
+        if (tirenv_model_eval(m, s.x_from + (double)k * s.dx, &p, &diag))
             return fail("no equilibrium", &diag);  /* diag names x and the load */
         printf("%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%zu\n", p.x, p.z, p.h, p.slope, p.fx, p.fz,
                p.contacts, p.iterations);  /* h: effective height (m); fx, fz: hub forces (N) */
