@@ -2,7 +2,8 @@
 # The documentation a user has is the repository's: every "docs/models.md section N" and
 # "docs/formats.md section N" cited by the README, headers, sources, help texts, data files and
 # tests names a section that exists, and nothing points outside the repository (../shared,
-# MODEL.md) or at issue numbers. Usage: sh cli_docs.sh BIN TESTDATA_DIR.
+# MODEL.md) or at issue numbers; every command's --help lists the options it takes. Usage: sh
+# cli_docs.sh BIN TESTDATA_DIR.
 # SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -87,6 +88,21 @@ for md in "$root/README.md" "$root"/docs/*.md; do
 done
 cp links err
 check "relative links in README.md and docs/ exist" '[ ! -s links ]'
+
+# Every command's --help lists every long option the command accepts: the parser compares
+# them itself when it prints the help (src/cli/parse.c) and names what is missing on stderr.
+commands=$("$bin" --help | awk '/^commands:$/ { on = 1; next } on && /^$/ { exit }
+                                on && $1 != "help" { print $1 }')
+: >unlisted
+for c in $commands; do
+    "$bin" "$c" --help >/dev/null 2>>unlisted || echo "$c --help: exit status $?" >>unlisted
+done
+cp unlisted err
+check "every command's --help lists all its long options ($(echo $commands | wc -w) commands)" \
+    '[ -n "$commands" ] && [ ! -s unlisted ]'
+run "$bin" predict --help
+check "tirenv predict --help lists --model, which it takes" \
+    '[ $rc -eq 0 ] && grep -q "^  --model NAME  " out'
 
 # The help texts that cite the documentation say so in the built program too.
 run "$bin" ride --help
