@@ -184,12 +184,81 @@ static void test_bad_precision(void **state)
     assert_int_equal(tirenv_fmt_g(1.5, 18, buf), 0);
 }
 
+/* tirenv_fmt_shortest, the writers' numbers: x reads back bit for bit (-0 too), the text is
+ * no longer than "%.17g", and it is the shortest "%.*g" that reads back, or plain decimals at
+ * most 4 characters longer (-10000 for -1e+04), never plain decimals that an exponent would
+ * beat by more. The answer "%.*g" is checked against is found here by trying every precision
+ * from 1 up. */
+static int shortest_ok(double x)  /* 1: written plain where "%.*g" has an exponent */
+{
+    char buf[TIRENV_FMT_G_SIZE + 8], want[64], g17[64];
+    memset(buf, 'Z', sizeof buf);
+    const size_t len = tirenv_fmt_shortest(x, buf);
+    const double back = strtod(buf, NULL);
+    int p = 1;
+    while (p < 17 && (snprintf(want, sizeof want, "%.*g", p, x), strtod(want, NULL) != x))
+        ++p;
+    snprintf(want, sizeof want, "%.*g", p, x);
+    snprintf(g17, sizeof g17, "%.17g", x);
+    if (len != strlen(buf) || len >= TIRENV_FMT_G_SIZE || memcmp(&back, &x, sizeof x) != 0 ||
+        len > strlen(g17) || len > strlen(want) + 4 ||
+        (strcmp(buf, want) != 0 && (strchr(buf, 'e') || !strchr(want, 'e')))) {
+        print_error("%a: tirenv_fmt_shortest '%s' (length %zu), shortest %%.*g '%s', %%.17g "
+                    "'%s'\n", x, buf, len, want, g17);
+        fail();
+    }
+    return strcmp(buf, want) != 0;
+}
+
+static void test_shortest(void **state)
+{
+    (void)state;
+    const double edge[] = {
+        0.0, -0.0, 0.1, -0.1, 1e300, -1e300, 1e-300, DBL_MAX, -DBL_MAX, DBL_MIN, -DBL_MIN,
+        DBL_TRUE_MIN, -DBL_TRUE_MIN, 0x1.fffffffffffffp-1023, 0x1.234p-1060, 1, -10000, 1e5,
+        123000, 1e-4, 9.9999999999999991e-5, 1e15, 999999999999999.9, 1e16, 0.68, 2.385,
+        1.0 / 3, 9007199254740993.0, 5e-324, 17860.4, -0.7, 6.02e23, 1e-7, 1e22, 1e23,
+    };
+    for (size_t i = 0; i < sizeof edge / sizeof edge[0]; ++i)
+        (void)shortest_ok(edge[i]);
+    char buf[TIRENV_FMT_G_SIZE];
+    const struct { double x; const char *text; } known[] = {
+        {0.0, "0"}, {-0.0, "-0"}, {0.1, "0.1"}, {1e300, "1e+300"}, {-10000, "-10000"},
+        {1e-7, "1e-07"}, {250.2, "250.2"}, {DBL_TRUE_MIN, "5e-324"},
+        {INFINITY, "inf"}, {-INFINITY, "-inf"},
+    };
+    for (size_t i = 0; i < sizeof known / sizeof known[0]; ++i) {
+        tirenv_fmt_shortest(known[i].x, buf);
+        assert_string_equal(buf, known[i].text);
+    }
+    tirenv_fmt_shortest(NAN, buf);
+    assert_true(isnan(strtod(buf, NULL)));
+    /* High-entropy values: random bits (every exponent), subnormals alone, and every decade
+     * tirenv writes at full precision. */
+    uint64_t s = 0x5407;
+    size_t plain = 0;
+    for (size_t i = 0; i < 90000; ++i) {
+        const uint64_t b = rng_next(&s);
+        double x;
+        switch (i % 3) {
+        case 0: x = from_bits(b); break;
+        case 1: x = from_bits(b & 0x800fffffffffffffULL); break;  /* subnormal (or +-0) */
+        default: x = ldexp(rng_uniform(&s) - 0.5, (int)(b % 80) - 40); break;
+        }
+        if (isfinite(x))
+            plain += (size_t)shortest_ok(x);
+    }
+    print_message("shortest: %zu values written plain instead of with an exponent\n", plain);
+    assert_true(plain >= 20);  /* the plain branch is exercised */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_edge_cases),       cmocka_unit_test(test_exact_ties),
         cmocka_unit_test(test_random_bits),      cmocka_unit_test(test_output_ranges),
         cmocka_unit_test(test_digit_boundaries), cmocka_unit_test(test_bad_precision),
+        cmocka_unit_test(test_shortest),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

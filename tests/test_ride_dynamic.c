@@ -304,12 +304,76 @@ static void test_errors(void **state)
     free(out);
 }
 
+/* The balance on a function input, by itself: at t = 0 the axle stands at rest at the height
+ * of its input, so on a ramp through the start, w = s(G)*(x - x_front0), the tire load balances
+ * G = G0 + c_t*V*s(G) (the damper alone). With s(G) = sigma*(G_bal/G)^3, sigma = (G_bal -
+ * G0)/(c_t*V), that has the one root G_bal (g(G) - G decreases): the run's first sample carries
+ * it within the solver's tolerance, found in 12 iterations. With a slope that jumps at G0
+ * from 1 to -1e-6 the balance is on the jump, with g(G) - G of 6000 N on one side and 6 mN
+ * on the other: regula falsi needs some 180 iterations to close its bracket on it, more
+ * than its budget of 100, and the run stops with TIRENV_ENOCONV naming the axle, the
+ * iterations, the bracket and the residual, after exactly 1 + 2 + 100 evaluations. The rear
+ * axle's input is flat. */
+typedef struct {
+    double x_c;          /* where the ramp passes 0, m */
+    double G0, G_bal;    /* N */
+    double sigma;        /* the smooth ramp's slope at G_bal (0: flat) */
+    int jump;            /* the slope jumps at G0 instead */
+    size_t calls;
+} ramp;
+
+static int ramp_input(void *ctx, double x, double load, double *w, double *dw_dx,
+                      tirenv_diag *diag)
+{
+    ramp *r = ctx;
+    (void)diag;
+    r->calls++;
+    const double s = r->jump ? (load < r->G0 ? 1 : -1e-6) : r->sigma * pow(r->G_bal / load, 3);
+    *w = s * (x - r->x_c);
+    *dw_dx = s;
+    return TIRENV_OK;
+}
+
+static void test_balance_budget(void **state)
+{
+    (void)state;
+    const tirenv_vehicle v = tractor();
+    tirenv_ride_settings s = cleat_run(2.0);
+    s.duration = 0;  /* the sample at t = 0 alone */
+    tirenv_ride_sample out[1];
+    const double G0 = tirenv_vehicle_tire_load(&v, 0), cV = v.front.c_t * s.speed;
+    ramp front = {.x_c = s.x_front0, .G0 = G0, .G_bal = 1.0734 * G0,
+                  .sigma = 0.0734 * G0 / cV};
+    ramp rear = {.x_c = s.x_front0, .G0 = G0, .G_bal = G0, .sigma = 0};
+    tirenv_ride_input fi = {ramp_input, &front, 1000, 20000, 0.005};
+    tirenv_ride_input ri = {ramp_input, &rear, 1000, 20000, 0.005};
+    tirenv_diag d;
+    if (tirenv_ride_run_input(&v, &fi, &ri, &s, out, &d))
+        fail_msg("smooth ramp: %s", d.message);
+    assert_near(out[0].F_front / v.front.tires, front.G_bal, 1e-9 * G0, 0);
+    assert_near(out[0].w_front, 0, 1e-15, 0);
+    print_message("smooth balance: %zu evaluations\n", front.calls);
+    assert_true(front.calls <= 1 + 2 + 15);  /* the steady start, the bracket, 12 iterations */
+    front.jump = 1;
+    front.calls = 0;
+    assert_int_equal(tirenv_ride_run_input(&v, &fi, &ri, &s, out, &d), TIRENV_ENOCONV);
+    print_message("%s: %s\n", d.field, d.message);
+    assert_int_equal(front.calls, 1 + 2 + 100);
+    assert_string_equal(d.field, "front");
+    const char *want[] = {"t = 0 s", "balances", "100 iterations", "G in [", "g(G) - G = ",
+                          "load range [1000, 20000] N"};
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; ++i)
+        if (!strstr(d.message, want[i]))
+            fail_msg("no \"%s\" in: %s", want[i], d.message);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_constant_load_is_static),
         cmocka_unit_test(test_follows_the_load),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_balance_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -123,6 +123,13 @@ void tirenv_outdir_abort(tirenv_outdir *d);
  * that much room left before each number: p += tirenv_fmt_g(v, 9, p). */
 size_t tirenv_fmt_g(double x, int precision, char *buf);
 
+/* Writes into buf (TIRENV_FMT_G_SIZE bytes, all of which may be written) the shortest text
+ * that strtod reads back to exactly x, and returns its length: the shortest "%.*g", or plain
+ * decimals where they are at most 4 characters longer (0.1, -10000, 250.2 rather than
+ * -1e+04; 1e-07, 6.02e+23 stay). Never longer than "%.17g"; -0 keeps its sign; inf and nan
+ * are written as "%g" writes them (a nan reads back as a nan, not its bits). */
+size_t tirenv_fmt_shortest(double x, char *buf);
+
 /* Writes text as '#' comment lines ("# " before each line of it); NULL writes nothing. */
 void tirenv_outfile_comment(tirenv_outfile *f, const char *text);
 /* Closes and removes the temporary file (after a failure); safe to call twice. */

@@ -161,7 +161,9 @@ typedef struct {
  * iteration on a function input; a tire off the ground (G = 0) follows the input at its
  * lightest load (load[0], load_min), which decides where it touches down. A table of one row
  * (or rows all alike) gives tirenv_ride_run's result to round-off. Errors as tirenv_ride_run;
- * an input function's error stops the run, naming the time. */
+ * an input function's error stops the run, naming the time, and so does a function input's
+ * balance not found in 100 iterations (TIRENV_ENOCONV, field the axle, the bracket and the
+ * residual reached in the message). */
 int tirenv_ride_run_dynamic(const tirenv_vehicle *v, const tirenv_ride_table *front,
                             const tirenv_ride_table *rear, const tirenv_ride_settings *s,
                             tirenv_ride_sample out[], tirenv_diag *diag);

@@ -54,11 +54,12 @@ enum {
     CLI_SWEEP = 1u << 4,    /* --x-from X, --x-to X, --dx DX (m) */
     CLI_OUTPUT = 1u << 5,   /* -o, --output PATH */
     CLI_MODEL = 1u << 6,    /* --model NAME, looked up in the library's table of types */
-    CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need, and
-                             * --extrapolate */
+    CLI_NETWORK = 1u << 7,  /* --nn FILE, the trained network a model type may need */
     CLI_TRACKS = 1u << 8,   /* --width W, --tracks N: tracks across the tire's width (with
                              * CLI_OBSTACLE, which has --track V and --side S) */
-    CLI_JOBS = 1u << 9      /* --jobs N: work items at once (default: the cores) */
+    CLI_JOBS = 1u << 9,     /* --jobs N: work items at once (default: the cores) */
+    CLI_EXTRAPOLATE = 1u << 10 /* --extrapolate: the network outside its trained ranges, for
+                                * a command that evaluates it on inputs of the user's */
 };
 
 /* The obstacle options, for cli_options.obstacle. */
@@ -138,7 +139,8 @@ typedef struct {
 } cli_parser;
 
 /* Parses argv (argv[0] is the command) into o (initialised here) and the own options' dst:
- * -h/--help prints the usage on stdout and returns CLI_EXIT_OK; an unknown option or a missing
+ * -h/--help prints the usage on stdout and returns CLI_EXIT_OK (CLI_EXIT_USAGE, naming them,
+ * if the usage's option entries miss a long option the command takes); an unknown option or a missing
  * argument prints the usage on stderr, a malformed value or a single-valued option given twice
  * names the option, more positional arguments than p->max_args name the first extra one: each
  * returns CLI_EXIT_USAGE. A model type that needs a network without --nn (or in a command that

@@ -130,22 +130,6 @@ static int crg_copy(const tirenv_crg *crg, const convert *cv, tirenv_diag *diag)
     return tirenv_crg_writer_commit(w, diag);
 }
 
-/* The shortest "%.*g" that reads back to the same double, by bisection on the precision
- * (reading back only improves with more digits). */
-static void shortest(char *buf, size_t n, double v)
-{
-    int lo = 1, hi = 17;
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        snprintf(buf, n, "%.*g", mid, v);
-        if (strtod(buf, NULL) == v)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    snprintf(buf, n, "%.*g", lo, v);
-}
-
 /* A .crg track to CSV, a block of rows at a time, so a long road needs little memory. */
 static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
                       tirenv_diag *diag)
@@ -159,17 +143,17 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
         tirenv_crg_track_reader_free(r);
         return status;
     }
-    char comment[160], v[32];
-    shortest(v, sizeof v, cv->src.crg.v);
+    char comment[160], v[TIRENV_FMT_G_SIZE];
+    tirenv_fmt_shortest(cv->src.crg.v, v);
     snprintf(comment, sizeof comment, "track at v = %s m of an OpenCRG road (tirenv convert)", v);
     tirenv_outfile_comment(&f, comment);
     fputs("x_m,z_m\n", f.fp);
     double u, z;
     int got;
-    char a[32], b[32];
+    char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
     while (!(status = tirenv_crg_track_reader_next(r, &u, &z, &got, diag)) && got) {
-        shortest(a, sizeof a, u);
-        shortest(b, sizeof b, z);
+        tirenv_fmt_shortest(u, a);  /* the heights read back exactly, as every writer's */
+        tirenv_fmt_shortest(z, b);
         fprintf(f.fp, "%s,%s\n", a, b);
         range[2] = fmin(range[2], z);
         range[3] = fmax(range[3], z);

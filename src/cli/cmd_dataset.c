@@ -29,7 +29,7 @@ static void usage(FILE *fp)
           "\n"
           "options:\n"
           "  --design NAME        the data set to build (default 14.9R28)\n"
-          "  -o DIR               where to build (created if missing)\n",
+          "  -o, --output DIR     where to build (created if missing)\n",
           fp);
     cli_help_jobs(fp);
     cli_help_tire(fp, 1);

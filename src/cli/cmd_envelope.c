@@ -595,7 +595,7 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
                           .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 2),
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
                                     CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
-                                    CLI_NETWORK};
+                                    CLI_NETWORK | CLI_EXTRAPOLATE};
     return cli_parse(&p, argc, argv, o);
 }
 

@@ -90,12 +90,23 @@ static void summary(const char *log, const tirenv_import_info *in, const tirenv_
                 log, in->half_width * 1e3, in->noise_se * 1e3, in->target_se * 1e3);
 }
 
+/* --cleat L,H: a rig log is folded over a symmetric cleat, the one obstacle import takes. */
+static int parse_cleat(void *dst, const char *arg)
+{
+    if (cli_parse_doubles(arg, dst, 2) == 0)
+        return CLI_EXIT_OK;
+    cli_error("--cleat: expected L,H: length and height in m, got '%s'", arg);
+    return CLI_EXIT_USAGE;
+}
+
 int cli_import_main(int argc, char *argv[])
 {
     tirenv_import_settings set = tirenv_import_default();
     const char *log = NULL;
+    double cleat[2] = {NAN, NAN};  /* L, H, m */
     const cli_opt own[] = {
         {.name = "log", .kind = CLI_STRING, .dst = &log},
+        {.name = "cleat", .kind = CLI_CUSTOM, .dst = cleat, .parse = parse_cleat},
         {.name = "x-n-from", .kind = CLI_NUMBER, .dst = &set.xN_from},
         {.name = "x-n-to", .kind = CLI_NUMBER, .dst = &set.xN_to},
         {.name = "dx-n", .kind = CLI_POSITIVE, .dst = &set.dxN},
@@ -104,13 +115,13 @@ int cli_import_main(int argc, char *argv[])
         {.name = NULL},
     };
     const cli_parser p = {.name = "import", .usage = usage, .opts = own,
-                          .groups = CLI_TIRE | CLI_LOAD | CLI_OBSTACLE | CLI_OUTPUT};
+                          .groups = CLI_TIRE | CLI_LOAD | CLI_OUTPUT};
     cli_options o;
     int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)
         return code;
     const char *missing = !log                         ? "--log FILE"
-                          : o.obstacle != CLI_CLEAT    ? "--cleat L,H"
+                          : isnan(cleat[0])            ? "--cleat L,H"
                           : !(o.have_load || o.have_contact_length)
                               ? "--load N or --contact-length M"
                               : NULL;
@@ -122,8 +133,8 @@ int cli_import_main(int argc, char *argv[])
     if ((code = cli_tire(&o, &tire)))
         return code;
     set.R0 = tire.springs.R0;
-    set.L = o.shape[0];
-    set.H = o.shape[1];
+    set.L = cleat[0];
+    set.H = cleat[1];
     if ((code = contact_length(&o, &tire, &set.contact_length)))
         return code;
     tirenv_diag diag;

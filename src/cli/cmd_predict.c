@@ -9,8 +9,8 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
-          "                      [--track V] [--side S] [--tracks N] [--width W]\n"
-          "                      [--extrapolate] [--x-from X] [--x-to X] [--dx DX]\n"
+          "                      [--model NAME] [--extrapolate] [--track V] [--side S]\n"
+          "                      [--tracks N] [--width W] [--x-from X] [--x-to X] [--dx DX]\n"
           "                      [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                      [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
@@ -40,14 +40,19 @@ static void usage(FILE *fp)
           "This command is 'tirenv envelope --model nn'.\n"
           "\n"
           "options:\n"
-          "  --nn FILE            the model file written by 'tirenv train -o'\n"
-          "  --extrapolate        evaluate the network outside its trained ranges (with a\n"
+          "  --nn FILE            the model file written by 'tirenv train -o'\n",
+          fp);
+    cli_help_model(fp, TIRENV_MODEL_NEEDS_NETWORK, 0,
+                   " (the default): this command runs the network;\n"
+                   "                       'tirenv envelope --model NAME' runs the others");
+    fputs("  --extrapolate        evaluate the network outside its trained ranges (with a\n"
           "                       warning) instead of refusing the input\n"
           "  --cleat L,H          rectangular cleat: length and height in m (h is 0 before\n"
           "                       the first x_N the network saw, and never below 0)\n"
           "  --profile FILE       or a road file: CSV x_m,z_m, OpenCRG .crg or TNO/Adams .rdf\n"
-          "                       (or a generated obstacle: --step, --trapezoid, --triangle,\n"
-          "                       --cylinder, --sine as in 'tirenv envelope --help')\n"
+          "  --step X0,H, --trapezoid LTOP,LBASE,H, --triangle L,H, --cylinder R,\n"
+          "  --sine A,WAVELENGTH,PERIODS\n"
+          "                       or a generated obstacle, as in 'tirenv envelope --help'\n"
           "  --contact-length M   the working regime, the network's input, in m\n"
           "  --load N             or the load, N, turned into the contact length of the springs\n"
           "                       model of the tire file (--contact-length is turned into the\n"

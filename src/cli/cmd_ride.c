@@ -232,7 +232,7 @@ int cli_ride_main(int argc, char *argv[])
     };
     const cli_parser p = {.name = "ride", .usage = usage, .opts = own,
                           .groups = CLI_OBSTACLE | CLI_SWEEP | CLI_OUTPUT | CLI_NETWORK |
-                                    CLI_JOBS};
+                                    CLI_EXTRAPOLATE | CLI_JOBS};
     cli_options o;
     const int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)

@@ -30,7 +30,7 @@ static void usage(FILE *fp)
           "                       readings up to 2.25e9 m, which doubles resolve to the log's\n"
           "                       1 um\n"
           "  --seed S             noise seed (default 1)\n"
-          "  -o FILE              the log to write (required; '-' for stdout)\n",
+          "  -o, --output FILE    the log to write (required; '-' for stdout)\n",
           fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);

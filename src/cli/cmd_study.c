@@ -31,7 +31,7 @@ static void usage(FILE *fp)
           "options:\n"
           "  --data DIR           data set with cases.csv (default: the embedded, SIMULATED\n"
           "                       tractor set; data/dataset-205-60R15 is the car tire's)\n"
-          "  -o DIR               report directory (default out/study)\n"
+          "  -o, --output DIR     report directory (default out/study)\n"
           "  --trainer NAME       network trainer (default lm)\n"
           "  --seed S             first training seed (default 1)\n"
           "  --seeds N            train the network with seeds S to S+N-1 (default 20) and\n"

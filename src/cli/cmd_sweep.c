@@ -47,7 +47,7 @@ static void usage(FILE *fp)
           "  --contact-lengths C,...  regimes as flat-ground contact lengths of the\n"
           "                       model, m (the load is the model's at each)\n"
           "  --loads G,...        regimes as loads, N (the contact length is the model's)\n"
-          "  -o DIR               the data set (a part, with --shard) to write\n",
+          "  -o, --output DIR     the data set (a part, with --shard) to write\n",
           fp);
     cli_help_model(fp, 0, 0, " (default ring, the reference tire); nn needs\n"
                    "                       --nn FILE");
@@ -75,7 +75,7 @@ static void usage(FILE *fp)
           "\n"
           "merge:\n"
           "  PART...              the N complete parts of one sweep, in any order\n"
-          "  -o DIR               the merged data set\n",
+          "  -o, --output DIR     the merged data set\n",
           fp);
 }
 
@@ -346,7 +346,7 @@ int cli_sweep_main(int argc, char *argv[])
     };
     const cli_parser p = {.name = "sweep", .usage = usage, .opts = own,
                           .groups = CLI_METHOD | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK |
-                                    CLI_JOBS};
+                                    CLI_EXTRAPOLATE | CLI_JOBS};
     cli_options o;
     int code = cli_parse(&p, argc, argv, &o);
     code = code == CLI_GO_ON ? CLI_EXIT_OK : code == CLI_EXIT_OK ? -1 : code;

@@ -6,6 +6,7 @@
 
 #include <getopt.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* getopt_long codes of the shared options; above 255 so they never clash with a short option
@@ -77,7 +78,7 @@ static const struct {
     {CLI_MODEL, {"model", required_argument, NULL, OPT_MODEL}, 0},
     {CLI_NETWORK, {"nn", required_argument, NULL, OPT_NN}, 0},
     {CLI_JOBS, {"jobs", required_argument, NULL, OPT_JOBS}, 0},
-    {CLI_NETWORK, {"extrapolate", no_argument, NULL, OPT_EXTRAPOLATE}, 0},
+    {CLI_EXTRAPOLATE, {"extrapolate", no_argument, NULL, OPT_EXTRAPOLATE}, 0},
 };
 enum { N_SHARED = sizeof shared / sizeof shared[0], MAX_OWN = 32 };
 
@@ -264,6 +265,67 @@ static int check_network(const cli_parser *p, const cli_options *o)
     return CLI_EXIT_OK;
 }
 
+/* The column where a help text's option descriptions start. */
+enum { HELP_TEXT_COLUMN = 23 };
+
+/* Whether help lists --name in an option entry, a line "  -..." up to its description
+ * ("  --x-from X, --x-to X first ..."), or all of it when the entry runs past the column
+ * ("  --control-fraction F, --validation-fraction F"); prose that mentions an option does not
+ * list it. */
+static int help_lists(const char *help, const char *name)
+{
+    const size_t len = strlen(name);
+    for (const char *line = help; *line;) {
+        const char *end = strchr(line, '\n');
+        if (!end)
+            end = line + strlen(line);
+        const char *entry_end = end;
+        if (end - line > HELP_TEXT_COLUMN && line[HELP_TEXT_COLUMN - 1] == ' ' &&
+            line[HELP_TEXT_COLUMN] != ' ')
+            entry_end = line + HELP_TEXT_COLUMN - 1;
+        if (strncmp(line, "  -", 3) == 0)
+            for (const char *s = line + 2; s + 2 + len <= entry_end; ++s) {
+                const char after = s[2 + len];
+                if (s[-1] == ' ' && strncmp(s, "--", 2) == 0 &&
+                    strncmp(s + 2, name, len) == 0 &&
+                    !(after == '-' || (after >= 'a' && after <= 'z') ||
+                      (after >= '0' && after <= '9')))
+                    return 1;
+            }
+        line = *end ? end + 1 : end;
+    }
+    return 0;
+}
+
+/* The help a command prints must list every long option it accepts: a missing one is the
+ * program's error, named (tests/cli_docs.sh runs every command's --help, the build's man
+ * pages come from them). */
+static int help_complete(const cli_parser *p, const struct option longopts[], size_t n)
+{
+    char *help = NULL;
+    size_t size = 0;
+    FILE *fp = open_memstream(&help, &size);
+    if (!fp) {
+        cli_error("%s: out of memory", p->name);
+        return CLI_EXIT_DATA;
+    }
+    p->usage(fp);
+    if (fclose(fp)) {
+        free(help);
+        cli_error("%s: out of memory", p->name);
+        return CLI_EXIT_DATA;
+    }
+    int code = CLI_EXIT_OK;
+    for (size_t k = 0; k < n; ++k)
+        if (!help_lists(help, longopts[k].name)) {
+            cli_error("%s: internal error: --help does not list --%s, which the command "
+                      "accepts", p->name, longopts[k].name);
+            code = CLI_EXIT_USAGE;
+        }
+    free(help);
+    return code;
+}
+
 int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
 {
     memset(o, 0, sizeof *o);
@@ -298,7 +360,7 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
     while ((c = getopt_long(argc, argv, shortopts, longopts, &index)) != -1) {
         if (c == 'h') {
             p->usage(stdout);
-            return CLI_EXIT_OK;
+            return help_complete(p, longopts, n);
         }
         if (c == '?' || c == ':') {  /* getopt has said what it did not understand */
             p->usage(stderr);

@@ -27,17 +27,6 @@ void cli_help_road(FILE *fp, int with_tracks)
               fp);
 }
 
-/* The lateral position as text: the shortest form that reads back the same. */
-static void shortest(char *buf, size_t n, double v)
-{
-    for (int p = 1; p <= 17; ++p) {
-        snprintf(buf, n, "%.*g", p, v);
-        double back;
-        if (cli_parse_double(buf, &back) == 0 && back == v)
-            return;
-    }
-}
-
 int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
 {
     memset(r, 0, sizeof *r);
@@ -124,10 +113,10 @@ int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_r
 
 void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n)
 {
-    char name[512], v[32], w[32];
+    char name[512], v[TIRENV_FMT_G_SIZE], w[TIRENV_FMT_G_SIZE];
     cli_obstacle_label(o, name, sizeof name);
-    shortest(v, sizeof v, r->src.crg.v);
-    shortest(w, sizeof w, r->width);
+    tirenv_fmt_shortest(r->src.crg.v, v);  /* the lateral position as it reads back */
+    tirenv_fmt_shortest(r->width, w);
     if (r->format == TIRENV_PROFILE_CRG && r->n > 1)
         snprintf(buf, n, "%s, %zu tracks over %s m around v = %s m", name, r->n, w, v);
     else if (r->format == TIRENV_PROFILE_CRG)

@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "formats/numtext.h"
 
 enum { RECORD_BYTES = 80, HEADER_RECORD = 72 };
 
@@ -96,20 +95,20 @@ static void write_header(FILE *fp, const tirenv_crg_layout *l)
             fputc('\n', fp);
     }
     fputs("$\n$ROAD_CRG\n", fp);
-    tirenv_numtext__shortest(a, sizeof a, l->u_start);
-    tirenv_numtext__shortest(b, sizeof b, l->u_start + (double)(l->rows - 1) * l->u_increment);
-    tirenv_numtext__shortest(c, sizeof c, l->u_increment);
+    tirenv_fmt_shortest(l->u_start, a);
+    tirenv_fmt_shortest(l->u_start + (double)(l->rows - 1) * l->u_increment, b);
+    tirenv_fmt_shortest(l->u_increment, c);
     fprintf(fp, "REFERENCE_LINE_START_U   = %s\nREFERENCE_LINE_END_U     = %s\n"
                 "REFERENCE_LINE_INCREMENT = %s\n", a, b, c);
     fputs("REFERENCE_LINE_START_X   = 0\nREFERENCE_LINE_START_Y   = 0\n"
           "REFERENCE_LINE_START_PHI = 0\n", fp);
-    tirenv_numtext__shortest(a, sizeof a, l->v[0]);
-    tirenv_numtext__shortest(b, sizeof b, l->v[l->long_sections - 1]);
+    tirenv_fmt_shortest(l->v[0], a);
+    tirenv_fmt_shortest(l->v[l->long_sections - 1], b);
     fprintf(fp, "LONG_SECTION_V_RIGHT     = %s\nLONG_SECTION_V_LEFT      = %s\n", a, b);
     fputs("$\n$KD_DEFINITION\n", fp);
     fprintf(fp, "#:%s\n", tirenv_crg_encoding_name(l->encoding));
     for (size_t j = 0; j < l->long_sections; j++) {
-        tirenv_numtext__shortest(a, sizeof a, l->v[j]);
+        tirenv_fmt_shortest(l->v[j], a);
         fprintf(fp, "D:long section at v = %s,m\n", a);
     }
     fputs("$\n", fp);

@@ -1,8 +1,6 @@
 /* Numbers as the shortest text that reads back to the same double, for files whose round
  * trip (read, convert, write, read) must give the same heights.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "formats/numtext.h"
-
 #include "tirenv/io.h"
 
 #include <math.h>
@@ -12,7 +10,7 @@
 
 /* Reading back is monotonic in the precision (more correctly rounded digits stay within half
  * an ulp), so the shortest one is found by bisection: 4 or 5 tries instead of up to 17. */
-void tirenv_numtext__shortest(char *buf, size_t n, double v)
+size_t tirenv_fmt_shortest(double v, char *buf)
 {
     int lo = 1, hi = 17;
     while (lo < hi) {
@@ -23,17 +21,22 @@ void tirenv_numtext__shortest(char *buf, size_t n, double v)
         else
             lo = mid + 1;
     }
-    tirenv_fmt_g(v, lo, buf);
-    /* "%g" writes -10000 as -1e+04: plain decimals read better wherever they are no longer. */
-    if (!strchr(buf, 'e') || !(fabs(v) >= 1e-4 && fabs(v) < 1e15))
-        return;
+    const size_t len = tirenv_fmt_g(v, lo, buf);
+    /* "%g" writes -10000 as -1e+04: plain decimals read better wherever they are no longer.
+     * Tried up to 1e17, where "%.17g" is plain itself: below it an exponent can make the
+     * shortest "%.*g" longer ("-4.78003600647523e+15" for -4780036006475230). */
+    if (!strchr(buf, 'e') || !(fabs(v) >= 1e-4 && fabs(v) < 1e17))
+        return len;
     char plain[64];
     for (int d = 0; d <= 20; d++) {
-        snprintf(plain, sizeof plain, "%.*f", d, v);
+        const int n = snprintf(plain, sizeof plain, "%.*f", d, v);
         if (strtod(plain, NULL) == v) {
-            if (strlen(plain) < n && strlen(plain) <= strlen(buf) + 4)
-                snprintf(buf, n, "%s", plain);
-            return;
+            if (n < TIRENV_FMT_G_SIZE && (size_t)n <= len + 4) {
+                memcpy(buf, plain, (size_t)n + 1);
+                return (size_t)n;
+            }
+            return len;
         }
     }
+    return len;
 }

@@ -11,7 +11,6 @@
 #include <sys/stat.h>
 
 #include "tirenv/io.h"
-#include "formats/numtext.h"
 
 static const char *const format_names[] = {"csv", "crg", "rdf"};
 
@@ -155,10 +154,10 @@ int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const ch
     fputs("x_m,z_m\n", f.fp);
     const size_t n = tirenv_profile_size(p);
     const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
-    char a[32], b[32];
+    char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
     for (size_t k = 0; k < n; k++) {
-        tirenv_numtext__shortest(a, sizeof a, x[k]);
-        tirenv_numtext__shortest(b, sizeof b, z[k]);
+        tirenv_fmt_shortest(x[k], a);
+        tirenv_fmt_shortest(z[k], b);
         fprintf(f.fp, "%s,%s\n", a, b);
     }
     return tirenv_outfile_commit(&f, diag);

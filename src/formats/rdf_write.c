@@ -7,8 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "formats/numtext.h"
-
 
 static void comment_lines(FILE *fp, const char *comment)
 {
@@ -55,9 +53,9 @@ int tirenv_rdf_write(const char *path, const tirenv_profile *left, const tirenv_
           "[MODEL]\n"
           "METHOD        = '2D'\n", fp);
     const double *zl = tirenv_profile_z(left), *zr = tirenv_profile_z(right);
-    char a[32], b[32], c[32];
+    char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE], c[TIRENV_FMT_G_SIZE];
     if (n == 1 && zl[0] == zr[0]) {
-        tirenv_numtext__shortest(a, sizeof a, zl[0]);
+        tirenv_fmt_shortest(zl[0], a);
         fprintf(fp, "ROAD_TYPE     = 'flat'\n"
                     "$--------------------------------------------------------------PARAMETERS\n"
                     "[PARAMETERS]\n"
@@ -73,9 +71,9 @@ int tirenv_rdf_write(const char *path, const tirenv_profile *left, const tirenv_
               "$ x_road z_left z_right, m\n"
               "(XZ_DATA)\n", fp);
         for (size_t k = 0; k < n; k++) {
-            tirenv_numtext__shortest(a, sizeof a, x[k]);
-            tirenv_numtext__shortest(b, sizeof b, zl[k]);
-            tirenv_numtext__shortest(c, sizeof c, zr[k]);
+            tirenv_fmt_shortest(x[k], a);
+            tirenv_fmt_shortest(zl[k], b);
+            tirenv_fmt_shortest(zr[k], c);
             fprintf(fp, "%s %s %s\n", a, b, c);
         }
     }

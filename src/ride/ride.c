@@ -272,9 +272,9 @@ static int run_with(const tirenv_vehicle *v, const tirenv_ride_track *tf,
 {
     ride r;
     memset(&r, 0, sizeof r);
-    int status = tirenv_ride__input_init(&r.front, tf, bf, ff);
+    int status = tirenv_ride__input_init(&r.front, "front", tf, bf, ff);
     if (!status)
-        status = tirenv_ride__input_init(&r.rear, tr, br, fr);
+        status = tirenv_ride__input_init(&r.rear, "rear", tr, br, fr);
     if (status)
         status = status == TIRENV_ENOMEM
                      ? tirenv_error(diag, status, "", 0, "", "out of memory")

@@ -38,10 +38,11 @@ static void steffen_slopes(size_t n, double h, const double w[], double yp[])
     }
 }
 
-int tirenv_ride__input_init(tirenv_ride__input *in, const tirenv_ride_track *track,
-                            const tirenv_ride_table *table, const tirenv_ride_input *fn)
+int tirenv_ride__input_init(tirenv_ride__input *in, const char *name,
+                            const tirenv_ride_track *track, const tirenv_ride_table *table,
+                            const tirenv_ride_input *fn)
 {
-    *in = (tirenv_ride__input){.track = track, .table = table, .fn = fn};
+    *in = (tirenv_ride__input){.name = name, .track = track, .table = table, .fn = fn};
     if (fn) {
         in->kind = TIRENV_RIDE__FUNCTION;
         in->dx = fn->dx;
@@ -224,7 +225,11 @@ static void table_axle(tirenv_ride__input *in, const balance *b, double x, doubl
 
 /* The balance on a function, by the Illinois variant of regula falsi on phi(G) = g(G) - G
  * over [load_min, load_max], to 1e-9 of the static load: far below anything a load changes
- * in a ride. */
+ * in a ride; or until the bracket is 1e-12 of load_max wide (a balance on a jump of phi,
+ * which the bracket closes in on). The models take at most 26 iterations over the demo's
+ * cleat (the cam and the springs, most under 8); a jump whose two sides differ by orders of
+ * magnitude can take more than the budget, and that is an error: the estimate it reached
+ * is not a balance. */
 enum { FN_MAX_ITER = 100 };
 
 static int fn_axle(tirenv_ride__input *in, const balance *b, double x, double *w, double *w_x,
@@ -251,18 +256,22 @@ static int fn_axle(tirenv_ride__input *in, const balance *b, double x, double *w
         *G = f_hi + hi;
         return TIRENV_OK;
     }
-    const double tol = 1e-9 * b->G0;
+    const double tol = 1e-9 * b->G0, width = 1e-12 * f->load_max;
     int side = 0;
-    double c = lo, wc = w_lo, wxc = wx_lo;
+    double c = lo, fc = f_lo, wc = w_lo, wxc = wx_lo;
     for (int it = 0; it < FN_MAX_ITER; ++it) {
         c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
         if (!(c > lo && c < hi))
             c = 0.5 * (lo + hi);
         if ((status = f->fn(f->ctx, x, c, &wc, &wxc, diag)))
             return status;
-        const double fc = g_of(b, wc, wxc) - c;
-        if (fabs(fc) <= tol || hi - lo <= 1e-12 * f->load_max)
-            break;
+        fc = g_of(b, wc, wxc) - c;
+        if (fabs(fc) <= tol || hi - lo <= width) {
+            *w = wc;
+            *w_x = wxc;
+            *G = c;
+            return TIRENV_OK;
+        }
         if (fc > 0) {
             lo = c;
             f_lo = fc;
@@ -277,10 +286,14 @@ static int fn_axle(tirenv_ride__input *in, const balance *b, double x, double *w
             side = -1;
         }
     }
-    *w = wc;
-    *w_x = wxc;
-    *G = c;
-    return TIRENV_OK;
+    tirenv_error(diag, TIRENV_ENOCONV, "", 0, in->name,
+                 "the load G of one tire that balances its input at x = %.6g m, "
+                 "G = max(0, g(G)), not found in %d iterations of regula falsi: G in "
+                 "[%.10g, %.10g] N (%.3g N wide; load range [%g, %g] N), g(G) - G = %.3g N at "
+                 "G = %.10g N; expected |g(G) - G| <= %.3g N or a bracket <= %.3g N (does "
+                 "the input jump with the load?)",
+                 x, FN_MAX_ITER, lo, hi, hi - lo, f->load_min, f->load_max, fc, c, tol, width);
+    return TIRENV_ENOCONV;  /* (what tirenv_error returns, visibly to the compiler) */
 }
 
 int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, double V,

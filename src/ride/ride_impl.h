@@ -19,6 +19,7 @@ typedef enum {
 
 typedef struct {
     tirenv_ride__kind kind;
+    const char *name;      /* the axle, "front" or "rear": the field of its errors */
     const tirenv_ride_track *track;
     const tirenv_ride_table *table;
     const tirenv_ride_input *fn;
@@ -34,11 +35,13 @@ typedef struct {
     size_t hint;           /* a table's segment of rows where the last load was found */
 } tirenv_ride__input;
 
-/* Sets up an input of one kind from exactly one of track, table, fn (the others NULL);
+/* Sets up the input of the axle name (static storage) of one kind from exactly one of track,
+ * table, fn (the others NULL);
  * TIRENV_ENOMEM, or TIRENV_EINVAL if GSL cannot interpolate the grid. in->rows etc. are
  * then to be freed with tirenv_ride__input_free whatever the status. */
-int tirenv_ride__input_init(tirenv_ride__input *in, const tirenv_ride_track *track,
-                            const tirenv_ride_table *table, const tirenv_ride_input *fn);
+int tirenv_ride__input_init(tirenv_ride__input *in, const char *name,
+                            const tirenv_ride_track *track, const tirenv_ride_table *table,
+                            const tirenv_ride_input *fn);
 void tirenv_ride__input_free(tirenv_ride__input *in);
 
 /* The spacing RK4's substeps must resolve, m. */
@@ -48,7 +51,8 @@ double tirenv_ride__input_dx(const tirenv_ride__input *in);
  * speed V, with its n tires of static load G0 each: the height w (m), its rate *w_dot
  * (m/s) and the force of all n tires *F (N, >= 0). A track: F = max(0, n*G0 + n*(k_t*(w - z)
  * + c_t*(w_dot - zd))) as it always was; a table or a function: the input at the load the
- * tires carry (tirenv_ride_run_dynamic). A function's failure is returned with diag. */
+ * tires carry (tirenv_ride_run_dynamic). A function's failure is returned with diag, and
+ * TIRENV_ENOCONV (field: the axle) if its balance is not found within the iteration budget. */
 int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, double V,
                       double x, double z_a, double zd_a, double *w, double *w_dot, double *F,
                       tirenv_diag *diag);
