@@ -188,7 +188,7 @@ static void test_fan_matches_single_rays(void **state)
     gsl_rng_set(rng, 7);
     const double R0 = 0.6837;
     enum { N = 361 };
-    static double sin_t[N], cos_t[N], s[N], drop[N], reach[N], rho[N];
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N];
     static tirenv_springs__ray_memo memo[N];
     const size_t i0 = N / 2;
     for (size_t i = 0; i < N; ++i) {
@@ -196,9 +196,9 @@ static void test_fan_matches_single_rays(void **state)
         sin_t[i] = sin(th);
         cos_t[i] = cos(th);
     }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, s, drop, reach);
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
     const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                           .cos_t = cos_t, .s = s, .drop = drop,
+                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
                                            .reach = reach};
     tirenv_road_settings rs = tirenv_road_default();
     rs.length = 20;
@@ -220,7 +220,7 @@ static void test_fan_matches_single_rays(void **state)
             const double g = tirenv_profile_height(p, x);
             const double z = g + 0.02 + 0.8 * gsl_rng_uniform(rng);
             tirenv_springs__fan_origin o;
-            tirenv_springs__fan_origin_at(p, x, R0, &o);
+            tirenv_springs__fan_origin_at(p, x, R0, 0, &o);
             assert_bits_equal(o.g, g);
             const size_t a = gsl_rng_uniform_int(rng, i0 + 1);
             const size_t b = i0 + gsl_rng_uniform_int(rng, N - i0);
@@ -267,8 +267,10 @@ static void test_fan_matches_single_rays(void **state)
 
 /* A workspace that has seen other positions, heights and profiles (a new profile may sit at
  * a freed one's address) gives the forces of a fresh workspace, bit for bit: the rays it keeps
- * are tied to the profile's serial and x, and the final active set does not depend on the
- * warm start. */
+ * are tied to the profile's serial and x, the final active set does not depend on the warm
+ * start, and the dF_z/dz it keeps is given again only for the same faces, span and pins (every
+ * other height is a hair from the last, where they nearly always recur, as after a Newton
+ * step). */
 static void test_kept_state_is_invisible(void **state)
 {
     (void)state;
@@ -287,7 +289,10 @@ static void test_kept_state_is_invisible(void **state)
         last = p;
         const double x = round % 2 ? 0.0 : -0.13; /* the same x again and again */
         for (int k = 0; k < 8; ++k) {
-            const double z = 0.6 + 0.12 * gsl_rng_uniform(rng);
+            static double z_last = 0.65;
+            const double z = k % 2 ? z_last + 1e-9 * gsl_rng_uniform(rng)
+                                   : 0.6 + 0.12 * gsl_rng_uniform(rng);
+            z_last = z;
             double fx1, fz1, df1, fx2, fz2, df2;
             size_t c1, c2;
             const int s1 = tirenv_springs_forces(kept, p, x, z, &fx1, &fz1, &df1, &c1, NULL);
@@ -364,7 +369,7 @@ static void test_pairs_miss_nothing(void **state)
     gsl_rng_set(rng, 5);
     const double R0 = 0.6837;
     enum { N = 361 };
-    static double sin_t[N], cos_t[N], s[N], drop[N], reach[N], rho[N], tread[N];
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], tread[N];
     static tirenv_springs__ray_memo memo[N];
     static size_t pairs[4 * N];
     const size_t i0 = N / 2;
@@ -373,9 +378,9 @@ static void test_pairs_miss_nothing(void **state)
         sin_t[i] = sin(th);
         cos_t[i] = cos(th);
     }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, s, drop, reach);
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
     const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                           .cos_t = cos_t, .s = s, .drop = drop,
+                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
                                            .reach = reach};
     size_t found = 0, trials = 0;
     for (int g = 0; g < 40; ++g) {
@@ -404,7 +409,7 @@ static void test_pairs_miss_nothing(void **state)
             const double xc = -0.6 + 1.2 * gsl_rng_uniform(rng);
             const double zc = 0.62 + 0.08 * gsl_rng_uniform(rng);
             tirenv_springs__fan_origin o;
-            tirenv_springs__fan_origin_at(p, xc, R0, &o);
+            tirenv_springs__fan_origin_at(p, xc, R0, 0, &o);
             const size_t a = i0 - 100, b = i0 + 100;
             tirenv_springs__fan(p, &o, &rays, zc, a, b, rho, memo);
             for (size_t i = a; i <= b; ++i) /* the tread at or inside the ground, anywhere */

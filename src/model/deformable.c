@@ -350,9 +350,21 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         return TIRENV_OK;
     }
     const double deflection = R0 - st->z_flat;
-    const double z_hi = tirenv_rigid__height_hint(st->prof, R0, x, &st->rigid_hint, NULL, NULL);
+    /* Warm, Newton guards each step with the bracket and needs only a valid one, which the
+     * model may know more cheaply than the rigid disc's height. A cold start (z_hi less the
+     * deflection), the plain secant of eq. 2 (no safeguard: two starts above contact break it
+     * down) and Brent (its iterations grow with the bracket) keep the disc's, the tightest. */
+    const int cheap =
+        st->ops->bracket && st->have_prev && st->tire.eq.method == TIRENV_EQ_NEWTON;
+    double z_lo, z_hi;
+    if (cheap) {
+        st->ops->bracket(st->elem, st->prof, x, &z_lo, &z_hi);
+    } else {
+        z_lo = tirenv_profile_height(st->prof, x);
+        z_hi = tirenv_rigid__height_hint(st->prof, R0, x, &st->rigid_hint, NULL, NULL);
+    }
     const tirenv_eq_problem prob = {
-        .z_lo = tirenv_profile_height(st->prof, x),
+        .z_lo = z_lo,
         .z_hi = z_hi,
         .z0 = st->have_prev ? st->z_prev : z_hi - deflection,
         .dz_hint = deflection,

@@ -28,6 +28,13 @@ typedef struct {
      * only where the centre meets the ground. NULL means that. docs/models.md section 1.3. */
     int (*lowest_z)(void *elem, const tirenv_profile *flat, double *z, char *why, size_t n,
                     tirenv_diag *diag);
+    /* Optional: the bracket of the equilibrium at x (m): z_lo the ground height under the
+     * centre, z_hi a height from which up nothing of the tire touches the ground, as cheaply
+     * as the model knows them (the springs model has both from the rays' origin). NULL: the
+     * ground height and the rigid disc's height at x, the tightest z_hi for any tire within
+     * its free circle. */
+    void (*bracket)(void *elem, const tirenv_profile *p, double x, double *z_lo,
+                    double *z_hi);
     /* Whether the tire looks the same at every x (no lugs turning with it), so that on level
      * ground the equilibrium is the flat one; NULL means always. */
     int (*shift_invariant)(const tirenv_tire *tire);

@@ -36,6 +36,7 @@ struct tirenv_springs {
     /* State of the last evaluation: elements [a, b] may touch (d > 0 at both ends; empty if
      * a > b), per-element arrays. */
     size_t a, b;
+    size_t span[2];        /* the last side_span walks' ends, back and forward */
     double *d, *w, *p, *dd, *dw;  /* w and dw have a spare entry before 0 and after N - 1 */
     unsigned char *active;
     tirenv_springs__pins pins;
@@ -45,9 +46,21 @@ struct tirenv_springs {
     tirenv_springs__fan_origin origin;
     size_t ray_a, ray_b;
     size_t *pairs, n_pairs, pairs_a, pairs_b;  /* of rays a..b, for check_unseen */
-    double *rho, *ray_s, *ray_drop, *ray_reach, *tread;
+    double *rho, *ray_inv_s, *ray_drop, *ray_reach, *tread;
     tirenv_springs__fan_rays rays;
     tirenv_springs__ray_memo *memo;
+    /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
+     * pins: the last one solved for is kept with them and given again, bit for bit, when they
+     * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
+     * the fresh fans cast: the faces are the same while it is. */
+    unsigned long long fans;
+    struct {
+        int valid;
+        unsigned long long fans;
+        size_t f0, f1, count, first, last, n_gaps;
+        size_t *gap;       /* N pairs, as in pins */
+        double dfz_dz;     /* N/m */
+    } slope;
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -100,16 +113,18 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     double *buf = calloc(n_arrays * N + n_tables * (N + 2), sizeof *buf);
     s->active = calloc(N, 1);
     s->pins.gap = calloc(2 * N, sizeof *s->pins.gap);
+    s->slope.gap = calloc(2 * N, sizeof *s->slope.gap);
     s->memo = calloc(N, sizeof *s->memo);
     s->pairs = calloc(4 * N, sizeof *s->pairs);
-    if (!buf || !s->active || !s->pins.gap || !s->memo || !s->pairs) {
+    if (!buf || !s->active || !s->pins.gap || !s->slope.gap || !s->memo || !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
     }
     double **arrays[] = {&s->theta, &s->sin_t, &s->cos_t, &s->diag, &s->L_D, &s->R_D, &s->lq,
                          &s->rq, &s->S_lc, &s->S_ls, &s->S_rc, &s->S_rs, &s->d, &s->p,
-                         &s->dd, &s->rho, &s->ray_s, &s->ray_drop, &s->ray_reach, &s->tread};
+                         &s->dd, &s->rho, &s->ray_inv_s, &s->ray_drop, &s->ray_reach,
+                         &s->tread};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
         *arrays[k] = buf + k * N;
     double **tables[] = {&s->ce, &s->cm, &s->cmi, &s->w, &s->dw}; /* N + 2 each */
@@ -129,11 +144,11 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->chains = (tirenv_springs__chains){.N = N, .k_ir = s->k_ir, .diag = s->diag,
                                          .lq = s->lq, .rq = s->rq, .ce = s->ce, .cm = s->cm,
                                          .cmi = s->cmi};
-    tirenv_springs__fan_rays_fill(N, s->sin_t, s->cos_t, par->R0, s->ray_s, s->ray_drop,
+    tirenv_springs__fan_rays_fill(N, s->sin_t, s->cos_t, par->R0, s->ray_inv_s, s->ray_drop,
                                   s->ray_reach);
     s->rays = (tirenv_springs__fan_rays){.i0 = s->i0, .rho_max = par->R0, .sin_t = s->sin_t,
-                                         .cos_t = s->cos_t, .s = s->ray_s, .drop = s->ray_drop,
-                                         .reach = s->ray_reach};
+                                         .cos_t = s->cos_t, .inv_s = s->ray_inv_s,
+                                         .drop = s->ray_drop, .reach = s->ray_reach};
     s->a = 1;
     s->b = 0;
     return s;
@@ -146,6 +161,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->theta);
     free(s->active);
     free(s->pins.gap);
+    free(s->slope.gap);
     free(s->memo);
     free(s->pairs);
     free(s);
@@ -161,29 +177,35 @@ const double *tirenv_springs_theta(const tirenv_springs *s) { return s->theta; }
 
 /* Elements that can touch the ground: a ray reaches no lower than its tip z - R0 cos(theta),
  * so it can only meet ground no higher than z_max = (a bound of) the highest ground within R0
- * on its side if cos(theta) >= (z - z_max)/R0. One extra element on each side absorbs
- * rounding. The two bounds depend on x alone and are kept with the rays' origin. */
-static size_t side_span(const tirenv_springs *s, double gap)
+ * on its side if R0 cos(theta) >= z - z_max = gap. The largest such |i - i0| is found by
+ * walking from the last one found on that side (*m: it moves by an element or two between
+ * evaluations, where acos cost a twentieth of the whole evaluation); one extra element
+ * absorbs rounding. The two bounds depend on x alone and are kept with the rays' origin. */
+static size_t side_span(const tirenv_springs *s, double gap, size_t *m)
 {
     const double R0 = s->par.R0;
+    const double *cos_t = s->cos_t + s->i0;
     if (gap >= R0)
         return 0;
-    if (gap > 0) {
-        const double m_real = acos(gap / R0) / s->par.dphi + 1;
-        if (m_real < (double)s->i0)
-            return (size_t)m_real;
-    }
-    return s->i0;
+    if (gap <= 0) /* ground level with the centre: every ray, even one turned upward */
+        return s->i0;
+    size_t k = *m;
+    while (k < s->i0 && R0 * cos_t[k + 1] >= gap)
+        ++k;
+    while (k > 0 && R0 * cos_t[k] < gap)
+        --k;
+    *m = k;
+    return k < s->i0 ? k + 1 : s->i0;
 }
 
-static int candidate_span(const tirenv_springs *s, double z, size_t *a, size_t *b)
+static int candidate_span(tirenv_springs *s, double z, size_t *a, size_t *b)
 {
     const double R0 = s->par.R0;
     const double gap_back = z - s->origin.z_max[0], gap_fwd = z - s->origin.z_max[1];
     if (gap_back >= R0 && gap_fwd >= R0)
         return 0;
-    *a = s->i0 - side_span(s, gap_back);
-    *b = s->i0 + side_span(s, gap_fwd);
+    *a = s->i0 - side_span(s, gap_back, &s->span[0]);
+    *b = s->i0 + side_span(s, gap_fwd, &s->span[1]);
     return 1;
 }
 
@@ -191,12 +213,21 @@ static int candidate_span(const tirenv_springs *s, double z, size_t *a, size_t *
 static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
 {
     const double R0 = s->par.R0;
-    if (s->ray_serial == prof->serial && s->origin.x == x)
+    const int same_ground = s->ray_serial == prof->serial;
+    if (same_ground && s->origin.x == x)
         return;
-    tirenv_springs__fan_origin_at(prof, x, R0, &s->origin);
+    tirenv_springs__fan_origin_at(prof, x, R0, same_ground ? s->origin.k : 0, &s->origin);
     s->ray_serial = prof->serial;
     s->ray_a = 1;
     s->ray_b = 0;
+}
+
+void tirenv_springs__bracket(tirenv_springs *s, const tirenv_profile *p, double x,
+                             double *z_lo, double *z_hi)
+{
+    set_origin(s, p, x);
+    *z_lo = s->origin.g;
+    *z_hi = fmax(s->origin.z_max[0], s->origin.z_max[1]) + s->par.R0;
 }
 
 /* The ray pairs to look between for ground the rays cannot see, from the walks. */
@@ -220,6 +251,7 @@ static void cast_rays(tirenv_springs *s, const tirenv_profile *prof, double z, s
         return;
     }
     tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+    ++s->fans;
     s->ray_a = a;
     s->ray_b = b;
     find_pairs(s, a, b);
@@ -276,6 +308,43 @@ static int check_unseen(tirenv_springs *s, const tirenv_profile *prof, double x,
     if (diag)
         *diag = s->refusal;
     return TIRENV_ERANGE;
+}
+
+/* Whether the slope kept was solved for these faces, this span and these pins. */
+static int same_slope(const tirenv_springs *s, size_t f0, size_t f1)
+{
+    const tirenv_springs__pins *P = &s->pins;
+    return s->slope.valid && s->slope.fans == s->fans && s->slope.f0 == f0 &&
+           s->slope.f1 == f1 && s->slope.count == P->count && s->slope.first == P->first &&
+           s->slope.last == P->last && s->slope.n_gaps == P->n_gaps &&
+           !memcmp(s->slope.gap, P->gap, 2 * P->n_gaps * sizeof *P->gap);
+}
+
+/* dF_z/dz of the state just solved, over the touching span [f0, f1]: d(d_i)/dz =
+ * -d(rho_i)/dz on the pinned elements, and the LCP's closed form carries it to dw. */
+static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t f0, size_t f1)
+{
+    const tirenv_springs__pins *P = &s->pins;
+    if (same_slope(s, f0, f1))
+        return s->slope.dfz_dz;
+    if (P->count > 0)
+        tirenv_springs__fan_drho_neg(prof, &s->rays, P->first, P->last, s->active, s->memo,
+                                     s->dd);
+    tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+    for (size_t i = f0; i <= f1; ++i)
+        sum += s->k_r * s->dw[i] * s->cos_t[i];
+    s->slope.valid = 1;
+    s->slope.fans = s->fans;
+    s->slope.f0 = f0;
+    s->slope.f1 = f1;
+    s->slope.count = P->count;
+    s->slope.first = P->first;
+    s->slope.last = P->last;
+    s->slope.n_gaps = P->n_gaps;
+    memcpy(s->slope.gap, P->gap, 2 * P->n_gaps * sizeof *P->gap);
+    s->slope.dfz_dz = sum;
+    return sum;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
@@ -345,18 +414,8 @@ int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double 
     *fx = -sum_s;
     if (contacts)
         *contacts = s->pins.count;
-    if (dfz_dz) {
-        /* d(d_i)/dz = -d(rho_i)/dz on the pinned elements; the same closed form gives dw. */
-        if (s->pins.count > 0)
-            for (size_t i = s->pins.first; i <= s->pins.last; ++i)
-                if (s->active[i])
-                    s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
-        tirenv_springs__pinned_solve(&s->chains, f0, f1, &s->pins, s->dd, s->dw);
-        double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-        for (size_t i = f0; i <= f1; ++i)
-            sum += k_r * s->dw[i] * s->cos_t[i];
-        *dfz_dz = sum;
-    }
+    if (dfz_dz)
+        *dfz_dz = slope_dfz_dz(s, prof, f0, f1);
     return check_unseen(s, prof, x, z, a, b, f0, f1, diag);
 }
 

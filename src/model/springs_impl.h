@@ -12,6 +12,12 @@ size_t tirenv_springs__state_size(const tirenv_springs *s);
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
 
+/* The equilibrium's bracket at x (m) on p: the ground height under the centre (*z_lo) and R0
+ * above the highest ground within R0 either side (*z_hi), where no element can reach the
+ * ground; both from the rays' origin, which the force evaluations at x then reuse. */
+void tirenv_springs__bracket(tirenv_springs *s, const tirenv_profile *p, double x,
+                             double *z_lo, double *z_hi);
+
 /* Ray casting: distance rho (m) from the centre (x, z) along u = (sin_t, -cos_t) to the first
  * crossing of the ground boundary, or INFINITY if there is none within rho_max. drho_dz is
  * d(rho)/dz with the hit segment fixed (0 on a vertical wall). A centre on or below the ground
@@ -40,23 +46,30 @@ typedef struct {
     long first[2];  /* first vertex strictly ahead of x backward [0] and forward [1] */
     double tol;     /* rounding allowance of the reuse test (without the |z| part), m */
     double z_max[2];  /* bounds of the ground within rho_max behind [0] and ahead [1], m */
+    size_t k;       /* tirenv_profile__segment_at(p, x) */
 } tirenv_springs__fan_origin;
 
+/* The origin at x; k_hint is any vertex index below p->n, near x for speed (the last
+ * origin's k on the same profile: an exponential search from it, not a binary search over a
+ * whole road). */
 void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho_max,
-                                   tirenv_springs__fan_origin *o);
+                                   size_t k_hint, tirenv_springs__fan_origin *o);
 
 /* A fan's rays: ray i points along (sin_t[i], -cos_t[i]); i0 straight down, the others' angles
- * growing monotonically away from it on either side; s, drop and reach from
+ * growing monotonically away from it on either side; inv_s, drop and reach from
  * tirenv_springs__fan_rays_fill, the per-ray constants of the walk. */
 typedef struct {
     size_t i0;
     double rho_max;  /* m */
-    const double *sin_t, *cos_t, *s, *drop, *reach;
+    const double *sin_t, *cos_t, *inv_s, *drop, *reach;
 } tirenv_springs__fan_rays;
 
-/* s = |sin_t|, drop = cos_t / s, reach = rho_max s for n rays. */
+/* With s = |sin_t|: inv_s = 1 / s (a ray's length per metre of walk along the ground: a
+ * multiplication where a division was a tenth of a fan's cost), drop = cos_t / s, reach =
+ * rho_max s, for n rays. */
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
-                                   double rho_max, double s[], double drop[], double reach[]);
+                                   double rho_max, double inv_s[], double drop[],
+                                   double reach[]);
 
 /* Casts the rays a..b (a <= i0 <= b) from (o->x, z): rho[i] as tirenv_springs__ray_at gives
  * it, bit for bit. Each ray's walk resumes where the previous ray's stopped (a ray turned
@@ -72,6 +85,13 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
  * (computed once per memo, kept in it). */
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                 size_t i, tirenv_springs__ray_memo *m);
+
+/* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
+ * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an
+ * evaluation. */
+void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                  size_t first, size_t last, const unsigned char mask[],
+                                  tirenv_springs__ray_memo memo[], double dd[]);
 
 /* Recomputes rho[a..b] at a new centre height z from the walks recorded in memo[a..b] (from
  * the same profile and origin), where each ray provably still ends on the same face: its new

@@ -45,6 +45,12 @@ static int springs_z_for_contact_length(void *elem, const tirenv_profile *flat, 
     return 0;
 }
 
+static void springs_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
+                            double *z_hi)
+{
+    tirenv_springs__bracket(elem, p, x, z_lo, z_hi);
+}
+
 static size_t springs_state_size(const void *elem) { return tirenv_springs__state_size(elem); }
 static void springs_state_save(const void *elem, unsigned char *buf)
 {
@@ -82,6 +88,7 @@ static const tirenv_deformable_ops springs_ops = {
     .alloc = springs_alloc,
     .free = springs_free,
     .forces = springs_forces,
+    .bracket = springs_bracket,
     .contact_length = springs_contact_length,
     .z_for_contact_length = springs_z_for_contact_length,
     .state_size = springs_state_size,

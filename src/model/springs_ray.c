@@ -23,13 +23,13 @@ enum {
  * centre if j is first_j, the first vertex ahead of x, else vertex j - dir) is known to lie
  * above the ground with everything before it. *f_min takes the minimum of f over every point
  * passed (all of them strictly before the vertex that ends the walk); it is what bounds how far
- * the centre may sink before the walk could end elsewhere. s = |sin_t|, drop = cos_t / s (the
- * ray's descent per metre of walk) and reach = rho_max s (the walk length of the whole ray)
- * come from the caller. The slope of the face hit is left to slope_drho: most rays of a fan
- * never need it. */
+ * the centre may sink before the walk could end elsewhere. With s = |sin_t|, inv_s = 1/s (the
+ * ray's length per metre of walk), drop = cos_t / s (its descent per metre of walk) and
+ * reach = rho_max s (the walk length of the whole ray) come from the caller. The slope of the
+ * face hit is left to slope_drho: most rays of a fan never need it. */
 static inline double walk(const tirenv_profile *p, double x, double z, double f0, long first_j,
-                          long j, int dir, double s, double drop, double reach, double cos_t,
-                          double rho_max, long *j_end, int *kind, double *f_min)
+                          long j, int dir, double inv_s, double drop, double reach,
+                          double cos_t, double rho_max, long *j_end, int *kind, double *f_min)
 {
     const double *X = p->x, *Z = p->z;
     const long n = (long)p->n;
@@ -51,11 +51,11 @@ static inline double walk(const tirenv_profile *p, double x, double z, double f0
             *f_min = fm;
             if (a == a_prev) {              /* a vertical wall: rho does not depend on z */
                 *kind = RAY_WALL;
-                return a <= reach ? a / s : INFINITY;
+                return a <= reach ? a * inv_s : INFINITY;
             }
             *kind = RAY_HIT;
             const double a_hit = a_prev + f_prev * (a - a_prev) / (f_prev - f);
-            return a_hit > reach ? INFINITY : a_hit / s;
+            return a_hit > reach ? INFINITY : a_hit * inv_s;
         }
         if (a > reach) {                    /* f(j) > 0 is checked again on reuse */
             *j_end = j;
@@ -87,8 +87,12 @@ static double slope_drho(const tirenv_profile *p, long j, int dir, int kind, dou
     switch (kind) {
     case RAY_HIT: {
         const long jp = j - dir;            /* the hit segment is [jp, j]; -1 or n: flat */
-        const double slope = jp >= 0 && jp < n ? (Z[j] - Z[jp]) / (X[j] - X[jp]) : 0;
-        return 1 / (cos_t + sin_t * slope);
+        if (!(jp >= 0 && jp < n))
+            return 1 / cos_t;
+        /* 1 / (cos_t + sin_t slope) with slope = dZ/dX, in one division: dX != 0 (not a
+         * wall). */
+        const double dX = X[j] - X[jp], dZ = Z[j] - Z[jp];
+        return dX / (cos_t * dX + sin_t * dZ);
     }
     case RAY_END:
         return 1 / cos_t;
@@ -139,7 +143,7 @@ double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, doubl
     long j_end;
     int kind;
     double f_min = f0;
-    const double rho = walk(p, x, z, f0, first_j, first_j, dir, s, cos_t / s, rho_max * s,
+    const double rho = walk(p, x, z, f0, first_j, first_j, dir, 1 / s, cos_t / s, rho_max * s,
                             cos_t, rho_max, &j_end, &kind, &f_min);
     if (isfinite(rho))
         *drho_dz = slope_drho(p, j_end, dir, kind, sin_t, cos_t);
@@ -147,12 +151,14 @@ double tirenv_springs__ray_at(const tirenv_profile *p, double x, size_t k, doubl
 }
 
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
-                                   double rho_max, double s[], double drop[], double reach[])
+                                   double rho_max, double inv_s[], double drop[],
+                                   double reach[])
 {
     for (size_t i = 0; i < n; ++i) {
-        s[i] = fabs(sin_t[i]);
-        drop[i] = cos_t[i] / s[i]; /* +-infinity straight down: never used there */
-        reach[i] = rho_max * s[i];
+        const double s = fabs(sin_t[i]);
+        inv_s[i] = 1 / s;
+        drop[i] = cos_t[i] / s; /* +-infinity straight down: never used there */
+        reach[i] = rho_max * s;
     }
 }
 
@@ -171,6 +177,10 @@ static double height_in(const tirenv_profile *p, double x, size_t k)
     return zs[k] + (zs[k + 1] - zs[k]) * t;
 }
 
+/* fmax for finite heights, inlined (GCC calls libm's for its NaN rules: 2 % of the springs
+ * model over a road). */
+static inline double higher(double a, double b) { return b > a ? b : a; }
+
 /* An upper bound of the ground over [x, x + dir len]: g, every vertex inside, and the first
  * vertex beyond (which bounds the segment that crosses the end), whole blocks at a time from
  * the block maxima where a block lies inside. */
@@ -183,11 +193,11 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
         const double lim = x + len;
         while (j < n) {
             if (j % B == 0 && j + B < n && X[j + B] <= lim) { /* block j/B: vertices j..j+B */
-                m = fmax(m, Zb[j / B]);
+                m = higher(m, Zb[j / B]);
                 j += B;
                 continue;
             }
-            m = fmax(m, Z[j]);
+            m = higher(m, Z[j]);
             if (X[j] > lim)
                 break;
             ++j;
@@ -196,11 +206,11 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
         const double lim = x - len;
         while (j >= 0) {
             if (j % B == 0 && j >= B && X[j - B] >= lim) { /* block j/B - 1: j-B..j */
-                m = fmax(m, Zb[j / B - 1]);
+                m = higher(m, Zb[j / B - 1]);
                 j -= B;
                 continue;
             }
-            m = fmax(m, Z[j]);
+            m = higher(m, Z[j]);
             if (X[j] < lim)
                 break;
             --j;
@@ -210,9 +220,10 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
 }
 
 void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho_max,
-                                   tirenv_springs__fan_origin *o)
+                                   size_t k_hint, tirenv_springs__fan_origin *o)
 {
-    const size_t k = tirenv_profile__segment_at(p, x);
+    const size_t k = tirenv_profile__segment_near(p, k_hint, x);
+    o->k = k;
     o->x = x;
     o->g = height_in(p, x, k);
     o->first[0] = first_vertex(p, x, k, -1);
@@ -269,7 +280,7 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
             reach_prev = reach;
             long j_end;
             int kind;
-            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->s[i], drop, reach, r->cos_t[i],
+            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach, r->cos_t[i],
                           rho_max, &j_end, &kind, &f_min);
             memo[i] = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
                                                  .z_low = z - (f_min - tol), .drho = NAN};
@@ -284,6 +295,15 @@ double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__f
     if (isnan(m->drho)) /* the face does not change while the memo holds */
         m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i], r->cos_t[i]);
     return m->drho;
+}
+
+void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                  size_t first, size_t last, const unsigned char mask[],
+                                  tirenv_springs__ray_memo memo[], double dd[])
+{
+    for (size_t i = first; i <= last; ++i)
+        if (mask[i])
+            dd[i] = -tirenv_springs__fan_drho(p, r, i, &memo[i]); /* inlined here */
 }
 
 /* Why reuse is exact. Along one ray from one x, f_k(z) = (z - a_k drop) - Z_k at every point
@@ -313,7 +333,7 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
         if (!(z > m->z_low))
             return 0;
         const int dir = i > i0 ? 1 : -1;
-        const double s = r->s[i], drop = r->drop[i], reach = r->reach[i];
+        const double inv_s = r->inv_s[i], drop = r->drop[i], reach = r->reach[i];
         const long j = m->j;
         switch (m->kind) {
         case RAY_DOWN:
@@ -326,7 +346,7 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
             if (f > 0)
                 return 0; /* the crossing moved past j */
             if (m->kind == RAY_WALL) {
-                rho[i] = a_j <= reach ? a_j / s : INFINITY;
+                rho[i] = a_j <= reach ? a_j * inv_s : INFINITY;
                 break;
             }
             double a_prev, f_prev;
@@ -338,7 +358,7 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
                 f_prev = z - a_prev * drop - Z[j - dir];
             }
             const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
-            rho[i] = a_hit > reach ? INFINITY : a_hit / s;
+            rho[i] = a_hit > reach ? INFINITY : a_hit * inv_s;
             break;
         }
         case RAY_REACH: {
