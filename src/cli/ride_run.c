@@ -433,7 +433,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     s.n = (size_t)n_grid;
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
-        in[i].name = r->model_names[i];
+        in[i].name = tirenv_model_type_name(r->models[i]);
     }
     if ((code = model_inputs(r, &s, in)))
         goto done;
