@@ -15,7 +15,8 @@
 typedef struct {
     const tirenv_model_type *type;
     const char *name;
-    double *w[2];          /* front, rear inputs on the grid at the static loads, m */
+    double *w[2];          /* front, rear inputs on the grid at the static loads, m (NULL
+                            * unless --enveloping static) */
     double seconds;        /* CPU time of the effective profiles, s */
     tirenv_ride_table table[2];  /* front, rear over loads (--enveloping dynamic) */
     double table_seconds;  /* CPU time of the tables, s */
@@ -156,7 +157,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     inputs_pass pass = {r, s, in, seconds, warnings, item_status};
     int code = CLI_EXIT_OK, status = TIRENV_OK;
     for (size_t i = 0; i < r->n_models && !code; ++i) {
-        for (int axle = 0; axle < 2; ++axle)
+        for (int axle = 0; axle < 2 && asks(r, RIDE_STATIC); ++axle)
             if (!(in[i].w[axle] = malloc(s->n * sizeof *in[i].w[axle])))
                 code = cli_fail(TIRENV_ENOMEM, NULL);
         /* x_N refers to the radius of the network's data, when the file records it. */
