@@ -81,18 +81,15 @@ static int asks(const ride_options *r, ride_enveloping e)
     return 0;
 }
 
-/* The direct evaluation's models of one run, set on the profile at the static loads (a run
- * changes their load as it goes, so no two runs share them). */
-static int direct_models(const ride_setup *s, const ride_inputs *in, int extrapolate,
-                         tirenv_model *m[2], tirenv_diag *diag)
+/* The direct evaluation's model of one axle for one run, set on the profile at the static
+ * load (a run changes its load as it goes, so no two runs share one). */
+static int direct_model(const ride_setup *s, const ride_inputs *in, int axle, int extrapolate,
+                        tirenv_model **m, tirenv_diag *diag)
 {
-    int status = TIRENV_OK;
-    for (int axle = 0; axle < 2 && !status; ++axle) {
-        status = ride_cli_axle_model(in->type, &s->tire[axle], in->nn, in->R0_nn, extrapolate,
-                                     &m[axle], diag);
-        if (!status)
-            status = tirenv_model_set(m[axle], s->p, s->load[axle], diag);
-    }
+    int status = ride_cli_axle_model(in->type, &s->tire[axle], in->nn, in->R0_nn, extrapolate,
+                                     m, diag);
+    if (!status)
+        status = tirenv_model_set(*m, s->p, s->load[axle], diag);
     return status;
 }
 
@@ -135,13 +132,12 @@ static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
             snprintf(p->warnings[k], sizeof p->warnings[k], "%s", table_warnings);
     }
     p->seconds[k][1] = cli_thread_seconds() - t0;
-    /* Direct runs make their models as they go; set one here so that a profile or load the
-     * model refuses is named before any run. */
+    /* Direct runs make their models as they go; set this axle's here so that a profile or
+     * load the model refuses is named, with its axle, before any run. */
     if (!status && asks(r, RIDE_DIRECT)) {
-        tirenv_model *m[2] = {NULL, NULL};
-        status = direct_models(s, in, r->extrapolate, m, diag);
-        tirenv_model_free(m[0]);
-        tirenv_model_free(m[1]);
+        tirenv_model *m = NULL;
+        status = direct_model(s, in, axle, r->extrapolate, &m, diag);
+        tirenv_model_free(m);
     }
     return p->status[k] = status;
 }
@@ -284,7 +280,9 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
     tirenv_model *m[2] = {NULL, NULL};
     ride_direct d[2];
     tirenv_ride_input fn[2];
-    int status = direct_models(s, in, r->extrapolate, m, diag);
+    int status = TIRENV_OK;
+    for (int axle = 0; axle < 2 && !status; ++axle)
+        status = direct_model(s, in, axle, r->extrapolate, &m[axle], diag);
     for (int axle = 0; axle < 2 && !status; ++axle) {
         double load[TIRENV_RIDE_TABLE_LOADS];
         size_t top = TIRENV_RIDE_TABLE_LOADS, lo = 0;
