@@ -288,7 +288,10 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
         size_t top = TIRENV_RIDE_TABLE_LOADS, lo = 0;
         tirenv_ride_table_loads(s->load[axle], load);
         /* The heaviest and the lightest loads the model takes, as the tables end (a load
-         * beyond the model's valid range, the network's outside its trained range). */
+         * beyond the model's valid range, the network's outside its trained range). Probed on
+         * each run's own models, as the run's first flat-ground solve starts from the probe's
+         * last: a range found once would start it elsewhere (not the same bits by
+         * construction) to save a handful of the run's tens of thousands of load changes. */
         while (top > 1 && load[top - 1] > s->load[axle] &&
                tirenv_model_set_load(m[axle], load[top - 1], NULL))
             --top;
