@@ -17,6 +17,14 @@ for e in static dynamic direct; do
     check "--enveloping $e: exit 2 naming the cam keys, no table" \
         '[ $rc -eq 2 ] && grep -q "cam keys Q_RA1, Q_RA2, ELLIPS_SHIFT" err && [ ! -s out ]'
 done
+# Only the rear tire without them: every way names the rear axle (direct named the front, whose
+# check set both axles' models).
+for e in static dynamic direct; do
+    run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model cam --enveloping $e \
+        --set "REAR_AXLE.TIRE_FILE=$PWD/nocam.tir"
+    check "only the rear tire without the cam keys, --enveloping $e: exit 2 naming the rear axle" \
+        '[ $rc -eq 2 ] && grep -q "cam model, rear axle" err && [ ! -s out ]'
+done
 run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model springs --enveloping dynamic \
     --vehicle nocam.veh
 check "the springs model does not need them: exit 0" '[ $rc -eq 0 ]'

@@ -152,7 +152,6 @@ static int parse_models(void *dst, const char *arg)
         const tirenv_model_type *type;
         if (cli_model_type(name, &type))
             return CLI_EXIT_USAGE;
-        r->model_names[r->n_models] = tirenv_model_type_name(type);
         r->models[r->n_models++] = type;
         if (!p[len])
             return CLI_EXIT_OK;
@@ -216,8 +215,7 @@ static int parse_solver(void *dst, const char *arg)
 int cli_ride_main(int argc, char *argv[])
 {
     ride_options r = {.dt = tirenv_ride_default().dt, .method = TIRENV_RIDE_RK4,
-                      .models = {tirenv_model_point, tirenv_model_springs},
-                      .model_names = {"point", "springs"}, .n_models = 2};
+                      .models = {tirenv_model_point, tirenv_model_springs}, .n_models = 2};
     const cli_opt own[] = {
         {.name = "speed", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_speeds},
         {.name = "model", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_models},
@@ -272,18 +270,19 @@ int cli_ride_main(int argc, char *argv[])
     for (size_t i = 0; i < r.n_models; ++i)
         for (size_t e = 0; e < r.n_envelopings; ++e) {
             ride_column *c = &r.cols[r.n_cols++];
+            const char *name = tirenv_model_type_name(r.models[i]);
             c->model = i;
             c->enveloping = r.envelopings[e];
             if (r.n_envelopings == 1)
-                snprintf(c->label, sizeof c->label, "%s", r.model_names[i]);
+                snprintf(c->label, sizeof c->label, "%s", name);
             else
-                snprintf(c->label, sizeof c->label, "%s-%s", r.model_names[i],
+                snprintf(c->label, sizeof c->label, "%s-%s", name,
                          ride_enveloping_name(c->enveloping));
         }
     for (size_t i = 0; i < r.n_models; ++i)
         if ((tirenv_model_type_flags(r.models[i]) & TIRENV_MODEL_NEEDS_NETWORK) && !r.nn_path) {
             cli_error("ride: --model %s needs the network: --nn FILE (from 'tirenv train')",
-                      r.model_names[i]);
+                      tirenv_model_type_name(r.models[i]));
             return CLI_EXIT_USAGE;
         }
     return ride_cli_run(&o, &r);

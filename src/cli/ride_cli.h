@@ -45,7 +45,6 @@ typedef struct {
     int series;                      /* --series: every run's series into out_dir */
     char speed_buf[256];
     const tirenv_model_type *models[RIDE_MAX_MODELS];
-    const char *model_names[RIDE_MAX_MODELS];  /* their names, for the files and tables */
     size_t n_models;
     double speeds[RIDE_MAX_SPEEDS];  /* m/s */
     size_t n_speeds;

@@ -122,7 +122,8 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
         /* The colours of every tirenv plot: a model looks the same here as in the study; a
          * way of enveloping other than the static one is drawn dashed in the model's colour. */
         const ride_column *c = &r->cols[i];
-        const tirenv_plot_style st = tirenv_plot_style_of(r->model_names[c->model], c->model);
+        const char *name = tirenv_model_type_name(r->models[c->model]);
+        const tirenv_plot_style st = tirenv_plot_style_of(name, c->model);
         const int dash = c->enveloping == RIDE_STATIC ? st.dash : 1 + (int)c->enveloping;
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
                 st.width, dash, c->label);

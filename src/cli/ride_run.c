@@ -15,7 +15,8 @@
 typedef struct {
     const tirenv_model_type *type;
     const char *name;
-    double *w[2];          /* front, rear inputs on the grid at the static loads, m */
+    double *w[2];          /* front, rear inputs on the grid at the static loads, m (NULL
+                            * unless --enveloping static) */
     double seconds;        /* CPU time of the effective profiles, s */
     tirenv_ride_table table[2];  /* front, rear over loads (--enveloping dynamic) */
     double table_seconds;  /* CPU time of the tables, s */
@@ -80,18 +81,15 @@ static int asks(const ride_options *r, ride_enveloping e)
     return 0;
 }
 
-/* The direct evaluation's models of one run, set on the profile at the static loads (a run
- * changes their load as it goes, so no two runs share them). */
-static int direct_models(const ride_setup *s, const ride_inputs *in, int extrapolate,
-                         tirenv_model *m[2], tirenv_diag *diag)
+/* The direct evaluation's model of one axle for one run, set on the profile at the static
+ * load (a run changes its load as it goes, so no two runs share one). */
+static int direct_model(const ride_setup *s, const ride_inputs *in, int axle, int extrapolate,
+                        tirenv_model **m, tirenv_diag *diag)
 {
-    int status = TIRENV_OK;
-    for (int axle = 0; axle < 2 && !status; ++axle) {
-        status = ride_cli_axle_model(in->type, &s->tire[axle], in->nn, in->R0_nn, extrapolate,
-                                     &m[axle], diag);
-        if (!status)
-            status = tirenv_model_set(m[axle], s->p, s->load[axle], diag);
-    }
+    int status = ride_cli_axle_model(in->type, &s->tire[axle], in->nn, in->R0_nn, extrapolate,
+                                     m, diag);
+    if (!status)
+        status = tirenv_model_set(*m, s->p, s->load[axle], diag);
     return status;
 }
 
@@ -134,13 +132,12 @@ static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
             snprintf(p->warnings[k], sizeof p->warnings[k], "%s", table_warnings);
     }
     p->seconds[k][1] = cli_thread_seconds() - t0;
-    /* Direct runs make their models as they go; set one here so that a profile or load the
-     * model refuses is named before any run. */
+    /* Direct runs make their models as they go; set this axle's here so that a profile or
+     * load the model refuses is named, with its axle, before any run. */
     if (!status && asks(r, RIDE_DIRECT)) {
-        tirenv_model *m[2] = {NULL, NULL};
-        status = direct_models(s, in, r->extrapolate, m, diag);
-        tirenv_model_free(m[0]);
-        tirenv_model_free(m[1]);
+        tirenv_model *m = NULL;
+        status = direct_model(s, in, axle, r->extrapolate, &m, diag);
+        tirenv_model_free(m);
     }
     return p->status[k] = status;
 }
@@ -156,7 +153,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     inputs_pass pass = {r, s, in, seconds, warnings, item_status};
     int code = CLI_EXIT_OK, status = TIRENV_OK;
     for (size_t i = 0; i < r->n_models && !code; ++i) {
-        for (int axle = 0; axle < 2; ++axle)
+        for (int axle = 0; axle < 2 && asks(r, RIDE_STATIC); ++axle)
             if (!(in[i].w[axle] = malloc(s->n * sizeof *in[i].w[axle])))
                 code = cli_fail(TIRENV_ENOMEM, NULL);
         /* x_N refers to the radius of the network's data, when the file records it. */
@@ -283,13 +280,18 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
     tirenv_model *m[2] = {NULL, NULL};
     ride_direct d[2];
     tirenv_ride_input fn[2];
-    int status = direct_models(s, in, r->extrapolate, m, diag);
+    int status = TIRENV_OK;
+    for (int axle = 0; axle < 2 && !status; ++axle)
+        status = direct_model(s, in, axle, r->extrapolate, &m[axle], diag);
     for (int axle = 0; axle < 2 && !status; ++axle) {
         double load[TIRENV_RIDE_TABLE_LOADS];
         size_t top = TIRENV_RIDE_TABLE_LOADS, lo = 0;
         tirenv_ride_table_loads(s->load[axle], load);
         /* The heaviest and the lightest loads the model takes, as the tables end (a load
-         * beyond the model's valid range, the network's outside its trained range). */
+         * beyond the model's valid range, the network's outside its trained range). Probed on
+         * each run's own models, as the run's first flat-ground solve starts from the probe's
+         * last: a range found once would start it elsewhere (not the same bits by
+         * construction) to save a handful of the run's tens of thousands of load changes. */
         while (top > 1 && load[top - 1] > s->load[axle] &&
                tirenv_model_set_load(m[axle], load[top - 1], NULL))
             --top;
@@ -433,7 +435,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     s.n = (size_t)n_grid;
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
-        in[i].name = r->model_names[i];
+        in[i].name = tirenv_model_type_name(r->models[i]);
     }
     if ((code = model_inputs(r, &s, in)))
         goto done;

@@ -360,8 +360,7 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     if (cheap) {
         st->ops->bracket(st->elem, st->prof, x, &z_lo, &z_hi);
     } else {
-        z_lo = tirenv_profile_height(st->prof, x);
-        z_hi = tirenv_rigid__height_hint(st->prof, R0, x, &st->rigid_hint, NULL, NULL);
+        tirenv_rigid__bracket(1, &st->prof, R0, x, &st->rigid_hint, &z_lo, &z_hi);
     }
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,

@@ -184,6 +184,19 @@ double tirenv_rigid__height_hint(const tirenv_profile *p, double R0, double x, s
     return best.z_c;
 }
 
+/* Track 0 starts the maxima, so that one track is its own heights bit for bit (a NaN
+ * included: a non-finite x). */
+void tirenv_rigid__bracket(size_t n, const tirenv_profile *const p[], double R0, double x,
+                           size_t hint[], double *z_lo, double *z_hi)
+{
+    *z_lo = tirenv_profile_height(p[0], x);
+    *z_hi = tirenv_rigid__height_hint(p[0], R0, x, &hint[0], NULL, NULL);
+    for (size_t k = 1; k < n; ++k) {
+        *z_lo = fmax(*z_lo, tirenv_profile_height(p[k], x));
+        *z_hi = fmax(*z_hi, tirenv_rigid__height_hint(p[k], R0, x, &hint[k], NULL, NULL));
+    }
+}
+
 double tirenv_rigid_height(const tirenv_profile *p, double R0, double x, double *px,
                            double *pz)
 {

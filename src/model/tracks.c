@@ -361,19 +361,15 @@ static int sum_forces(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *di
     return TIRENV_OK;
 }
 
-/* The bracket of docs/models.md section 11.1 over every track: no slice touches above the
- * highest rigid-disc height, and below the highest ground under x a slice's rim would be in
- * the ground. */
+/* The bracket of docs/models.md section 11.1 over every track, the rigid disc's, at every
+ * position: the cheaper one a warm Newton takes on one track (tirenv_deformable_eval) is the
+ * deformable model's own (its ops), which the type's state does not offer here. */
 static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
     struct tirenv_model__tracks *t = m->tracks;
     const double R0 = m->tire.springs.R0, deflection = R0 - m->z_flat;
-    double z_lo = -INFINITY, z_hi = -INFINITY;
-    for (size_t k = 0; k < t->n; ++k) {
-        z_lo = fmax(z_lo, tirenv_profile_height(t->prof[k], x));
-        z_hi = fmax(z_hi, tirenv_rigid__height_hint(t->prof[k], R0, x, &t->hint[k], NULL,
-                                                    NULL));
-    }
+    double z_lo, z_hi;
+    tirenv_rigid__bracket(t->n, t->prof, R0, x, t->hint, &z_lo, &z_hi);
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
