@@ -144,6 +144,19 @@ static void test_flags_hold(void **state)
         assert_int_equal(tirenv_model_eval(m, -0.0731, &pt, &d), TIRENV_OK);
         assert_true(pt.x == -0.0731 && isfinite(pt.h) && isfinite(pt.slope));
         assert_int_equal(pt.iterations > 0, (f & TIRENV_MODEL_EQUILIBRIUM) != 0);
+        /* A position that is not finite is refused by name, alone and within a sweep. */
+        const double bad[] = {NAN, INFINITY, -INFINITY};
+        for (size_t b = 0; b < 3; ++b) {
+            tirenv_diag_clear(&d);
+            assert_int_equal(tirenv_model_eval(m, bad[b], &pt, &d), TIRENV_EINVAL);
+            assert_string_equal(d.field, "x");
+            const double xs[] = {-0.0731, -0.05, bad[b], 0.01};
+            tirenv_point pts[4];
+            size_t failed = 99;
+            assert_int_equal(tirenv_model_envelope(m, 4, xs, pts, &failed, &d), TIRENV_EINVAL);
+            assert_int_equal(failed, 2);
+            assert_non_null(strstr(d.message, "finite"));
+        }
         print_message("%-8s flags %#04x: h(-0.0731 m) = %.6f m, %zu iterations\n",
                       tirenv_model_type_name(t), f, pt.h, pt.iterations);
         tirenv_model_free(m);

@@ -180,9 +180,9 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
 double tirenv_model_reach(const tirenv_model *m);
 
 /* Equilibrium at position x (m), warm-started from the previous call. On failure out->x is x
- * and diag says why (x, load, bracket). TIRENV_ERANGE where ground within R0 of x rises to
- * the centre's height z: the enveloping models assume the hub clears the ground
- * (docs/models.md section 2.5). */
+ * and diag says why (x, load, bracket). TIRENV_EINVAL if x is not finite (field "x").
+ * TIRENV_ERANGE where ground within R0 of x rises to the centre's height z: the enveloping
+ * models assume the hub clears the ground (docs/models.md section 2.5). */
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
 
 /* Evaluates n positions x[] in order into out[]; stops at the first failure (its index in

@@ -321,11 +321,22 @@ static int clears_ground(const tirenv_model *m, const tirenv_point *pt, tirenv_d
                         "clears the ground", top, R0, pt->z);
 }
 
+/* A position that is not a number of metres: refused before any model spends its solver's
+ * budget on it (an equilibrium once took 100 evaluations to fail with a bracket of NaNs). */
+static int finite_position(double x, tirenv_diag *diag)
+{
+    return isfinite(x) ? TIRENV_OK
+                       : tirenv_error(diag, TIRENV_EINVAL, "", 0, "x",
+                                      "a position must be finite, got %g m", x);
+}
+
 int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
     out->x = x;  /* as the header promises, on failure too */
     if (!m->ready)
         return not_set(diag);
+    if (finite_position(x, diag))
+        return TIRENV_EINVAL;
     int status = m->n_tracks > 1 ? tirenv_model__tracks_eval(m, x, out, diag)
                                        : m->type->eval(m->state, x, out, diag);
     out->x = x;
@@ -347,6 +358,13 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
             return not_set(diag);
         }
         size_t k = 0;
+        while (k < n && isfinite(x[k]))
+            ++k;
+        if (k < n) {
+            if (failed)
+                *failed = k;
+            return finite_position(x[k], diag);
+        }
         int status = tracks ? tirenv_model__tracks_envelope(m, n, x, out, &k, diag)
                             : m->type->envelope(m->state, n, x, out, &k, diag);
         if (!status)
