@@ -179,7 +179,7 @@ const double *tirenv_springs_theta(const tirenv_springs *s) { return s->theta; }
  * so it can only meet ground no higher than z_max = (a bound of) the highest ground within R0
  * on its side if R0 cos(theta) >= z - z_max = gap. The largest such |i - i0| is found by
  * walking from the last one found on that side (*m: it moves by an element or two between
- * evaluations, where acos cost a twentieth of the whole evaluation); one extra element
+ * evaluations, where acos cost 3 % of an evaluation over a road); one extra element
  * absorbs rounding. The two bounds depend on x alone and are kept with the rays' origin. */
 static size_t side_span(const tirenv_springs *s, double gap, size_t *m)
 {

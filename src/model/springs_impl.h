@@ -65,8 +65,8 @@ typedef struct {
 } tirenv_springs__fan_rays;
 
 /* With s = |sin_t|: inv_s = 1 / s (a ray's length per metre of walk along the ground: a
- * multiplication where a division was a tenth of a fan's cost), drop = cos_t / s, reach =
- * rho_max s, for n rays. */
+ * multiplication where there was a division per ray), drop = cos_t / s, reach = rho_max s,
+ * for n rays. */
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
                                    double rho_max, double inv_s[], double drop[],
                                    double reach[]);
