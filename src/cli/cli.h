@@ -140,8 +140,8 @@ typedef struct {
 
 /* Parses argv (argv[0] is the command) into o (initialised here) and the own options' dst:
  * -h/--help prints the usage on stdout and returns CLI_EXIT_OK (CLI_EXIT_USAGE, naming them,
- * if the usage's option entries miss a long option the command takes); an unknown option or a missing
- * argument prints the usage on stderr, a malformed value or a single-valued option given twice
+ * if the usage's option entries miss a long option the command takes); an unknown option or a
+ * missing argument prints the usage on stderr, a malformed value or a single-valued option given twice
  * names the option, more positional arguments than p->max_args name the first extra one: each
  * returns CLI_EXIT_USAGE. A model type that needs a network without --nn (or in a command that
  * takes none) is misuse too. Returns CLI_GO_ON when the command has work to do. */

@@ -293,7 +293,9 @@ static int fn_axle(tirenv_ride__input *in, const balance *b, double x, double *w
                  "G = %.10g N; expected |g(G) - G| <= %.3g N or a bracket <= %.3g N (does "
                  "the input jump with the load?)",
                  x, FN_MAX_ITER, lo, hi, hi - lo, f->load_min, f->load_max, fc, c, tol, width);
-    return TIRENV_ENOCONV;  /* (what tirenv_error returns, visibly to the compiler) */
+    /* The code itself, not tirenv_error's value: GCC cannot see that one is non-zero, and
+     * would take the caller's unset w_x and G as maybe used. */
+    return TIRENV_ENOCONV;
 }
 
 int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, double V,
