@@ -282,6 +282,7 @@ static void test_kept_state_is_invisible(void **state)
     const double heights[] = {0.1, 0.05, 0.12, 0.02, 0.08};
     size_t same_address = 0, checked = 0;
     const void *last = NULL;
+    double z_last = 0.65;  /* m */
     for (int round = 0; round < 40; ++round) {
         tirenv_profile *p = tirenv_profile_cleat(0.1 + 0.05 * (round % 4), heights[round % 5]);
         assert_non_null(p);
@@ -289,7 +290,6 @@ static void test_kept_state_is_invisible(void **state)
         last = p;
         const double x = round % 2 ? 0.0 : -0.13; /* the same x again and again */
         for (int k = 0; k < 8; ++k) {
-            static double z_last = 0.65;
             const double z = k % 2 ? z_last + 1e-9 * gsl_rng_uniform(rng)
                                    : 0.6 + 0.12 * gsl_rng_uniform(rng);
             z_last = z;
