@@ -44,7 +44,7 @@ def positions(x_from, x_to, dx=None):
     """The CLI's sweep x_k = x_from + k*dx up to x_to (with its 1e-9 dx allowance), bit for
     bit the positions 'tirenv envelope --x-from --x-to --dx' evaluates; dx (m) by default
     the CLI's (tirenv_positions_default)."""
-    if dx is None:
+    if dx is None:  # the default sweep's spacing, which does not depend on its ends
         dx = lib.tirenv_positions_default(x_from, x_to, 0.0).dx
     if not (dx > 0 and x_to >= x_from):
         raise invalid(f"expected dx > 0 and x_to >= x_from, got dx {dx} from {x_from} to "
