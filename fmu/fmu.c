@@ -36,13 +36,7 @@ void fmu__log(fmu_instance *f, fmi2Status status, const char *category, const ch
     f->cb.logger(f->cb.componentEnvironment, f->name, status, category, msg);
 }
 
-static fmi2Status fail(fmu_instance *f, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static fmi2Status fail(fmu_instance *f, const char *fmt, ...)
+fmi2Status fmu__fail(fmu_instance *f, const char *fmt, ...)
 {
     char msg[2048];
     va_list ap;
@@ -56,7 +50,7 @@ static fmi2Status fail(fmu_instance *f, const char *fmt, ...)
 fmi2Status fmu__fail_diag(fmu_instance *f, const char *what, const tirenv_diag *diag)
 {
     char buf[1600];
-    return fail(f, "%s: %s", what, tirenv_diag_format(diag, buf, sizeof buf));
+    return fmu__fail(f, "%s: %s", what, tirenv_diag_format(diag, buf, sizeof buf));
 }
 
 void *fmu__alloc(const fmu_instance *f, size_t size)
@@ -74,7 +68,9 @@ static const char *mode_name(fmu_mode m)
 {
     static const char *const names[] = {"instantiated", "initialization mode", "step mode",
                                         "terminated", "error"};
-    return names[m];
+    /* Only fmu_mode's values reach here (a restored state's mode is checked), but a name
+     * must never be read out of the table. */
+    return (unsigned)m < sizeof names / sizeof names[0] ? names[m] : "an unknown mode";
 }
 
 /* ---- the library's objects ------------------------------------------------------------ */
@@ -121,17 +117,17 @@ fmi2Status fmu__setup(fmu_instance *f)
     if (!type) {
         char names[256];
         model_names(names, sizeof names);
-        return fail(f, "model: unknown model '%s'; expected one of %s", v->model, names);
+        return fmu__fail(f, "model: unknown model '%s'; expected one of %s", v->model, names);
     }
     if (!isfinite(v->track))
-        return fail(f, "track: expected a finite lateral position, got %g m", v->track);
+        return fmu__fail(f, "track: expected a finite lateral position, got %g m", v->track);
     if (!(v->width >= 0) || !isfinite(v->width))
-        return fail(f, "width: expected a finite width >= 0 m, got %g m", v->width);
+        return fmu__fail(f, "width: expected a finite width >= 0 m, got %g m", v->width);
 
     f->tire = tirenv_tire_default();
     if (v->tire_file[0]) {
         if (resolve(f, v->tire_file, path, sizeof path))
-            return fail(f, "tire_file: path too long: %s", v->tire_file);
+            return fmu__fail(f, "tire_file: path too long: %s", v->tire_file);
         if (tirenv_tir_read(path, &f->tire, &diag))
             return fmu__fail_diag(f, "tire_file", &diag);
     }
@@ -139,9 +135,9 @@ fmi2Status fmu__setup(fmu_instance *f)
         return fmu__fail_diag(f, "tire_file", &diag);
 
     if (!v->road_file[0])
-        return fail(f, "road_file: empty; expected a road profile file");
+        return fmu__fail(f, "road_file: empty; expected a road profile file");
     if (resolve(f, v->road_file, path, sizeof path))
-        return fail(f, "road_file: path too long: %s", v->road_file);
+        return fmu__fail(f, "road_file: path too long: %s", v->road_file);
     /* Any road file the CLI's --profile reads: a CSV or RDF road is 2-D, the same on every
      * track and across the tire's width, so track and width select nothing in it; an OpenCRG
      * road's track is the long section at v = track. Several tracks across a width are the
@@ -151,16 +147,17 @@ fmi2Status fmu__setup(fmu_instance *f)
     if (tirenv_profile_detect(path, &format, &diag))
         return fmu__fail_diag(f, "road_file", &diag);
     if (format == TIRENV_PROFILE_CRG && v->width > 0)
-        return fail(f, "width: %g m over the OpenCRG road %s: the FMU evaluates one track "
-                    "(width 0); for the tire's width run 'tirenv envelope --tracks N' and give "
-                    "its effective road (-o ROAD.crg) as road_file", v->width, v->road_file);
+        return fmu__fail(f, "width: %g m over the OpenCRG road %s: the FMU evaluates one "
+                         "track (width 0); for the tire's width run 'tirenv envelope --tracks N' "
+                         "and give its effective road (-o ROAD.crg) as road_file", v->width,
+                         v->road_file);
     tirenv_profile_source src = tirenv_profile_source_default();
     src.crg.v = v->track;
     if (tirenv_profile_read_file(path, &src, &f->road, &diag))
         return fmu__fail_diag(f, "road_file", &diag);
 
     if (!(f->m = tirenv_model_alloc(type, &f->tire)))
-        return fail(f, "model: out of memory allocating the %s model", v->model);
+        return fmu__fail(f, "model: out of memory allocating the %s model", v->model);
     fmu__log(f, fmi2OK, "logAll", "%s model, tire %s, road %s (%zu vertices)", v->model,
              v->tire_file[0] ? v->tire_file : "(built-in default)", v->road_file,
              tirenv_profile_size(f->road));
@@ -249,11 +246,13 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
     fmu_instance *f = c;
     if (!f)
         return fmi2Error;
+    if (nCategories && !categories)
+        return fmu__fail(f, "fmi2SetDebugLogging: %zu categories but a NULL array", nCategories);
     for (size_t i = 0; i < nCategories; ++i)
         if (!categories[i] || (strcmp(categories[i], "logStatusError") != 0 &&
                                strcmp(categories[i], "logAll") != 0))
-            return fail(f, "fmi2SetDebugLogging: unknown log category '%s'; expected "
-                        "logStatusError or logAll", categories[i] ? categories[i] : "(null)");
+            return fmu__fail(f, "fmi2SetDebugLogging: unknown log category '%s'; expected "
+                             "logStatusError or logAll", categories[i] ? categories[i] : "(null)");
     f->logging = loggingOn != fmi2False;
     return fmi2OK;
 }
@@ -303,27 +302,27 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     char guid[64];
     fmu__guid(guid, sizeof guid);
     if (!instanceName || !instanceName[0]) {
-        fail(&tmp, "fmi2Instantiate: an instance name is required");
+        fmu__fail(&tmp, "fmi2Instantiate: an instance name is required");
         return NULL;
     }
     if (fmuType != fmi2CoSimulation) {
-        fail(&tmp, "fmi2Instantiate: this FMU supports co-simulation only (fmi2CoSimulation)");
+        fmu__fail(&tmp, "fmi2Instantiate: this FMU supports co-simulation only (fmi2CoSimulation)");
         return NULL;
     }
     if (!fmuGUID || strcmp(fmuGUID, guid) != 0) {
-        fail(&tmp, "fmi2Instantiate: GUID '%s' is not this FMU's %s (a modelDescription.xml "
-             "of another build?)", fmuGUID ? fmuGUID : "(null)", guid);
+        fmu__fail(&tmp, "fmi2Instantiate: GUID '%s' is not this FMU's %s (a modelDescription.xml "
+                  "of another build?)", fmuGUID ? fmuGUID : "(null)", guid);
         return NULL;
     }
     if (!fmuResourceLocation || resource_dir(fmuResourceLocation, tmp.resources,
                                              sizeof tmp.resources)) {
-        fail(&tmp, "fmi2Instantiate: expected the resources as a file: URI, got '%s'",
-             fmuResourceLocation ? fmuResourceLocation : "(null)");
+        fmu__fail(&tmp, "fmi2Instantiate: expected the resources as a file: URI, got '%s'",
+                  fmuResourceLocation ? fmuResourceLocation : "(null)");
         return NULL;
     }
     fmu_instance *f = fmu__alloc(&tmp, sizeof *f);
     if (!f) {
-        fail(&tmp, "fmi2Instantiate: out of memory");
+        fmu__fail(&tmp, "fmi2Instantiate: out of memory");
         return NULL;
     }
     *f = tmp;
@@ -337,6 +336,10 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     return f;
 }
 
+/* FMI 2.0 (section 2.1.5) ends the component's life here: a NULL component is ignored, but
+ * freeing the same component twice, or calling anything with it afterwards, is the importer's
+ * error and cannot be detected (the memory is the importer's allocator's again); fmu/README.md
+ * says so. */
 void fmi2FreeInstance(fmi2Component c)
 {
     fmu_instance *f = c;
@@ -354,12 +357,22 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
                                fmi2Boolean stopTimeDefined, fmi2Real stopTime)
 {
     fmu_instance *f = c;
-    (void)toleranceDefined, (void)tolerance, (void)stopTimeDefined, (void)stopTime;
     if (!f)
         return fmi2Error;
     if (f->mode != FMU_INSTANTIATED)
-        return fail(f, "fmi2SetupExperiment: only after fmi2Instantiate, not in %s",
-                    mode_name(f->mode));
+        return fmu__fail(f, "fmi2SetupExperiment: only after fmi2Instantiate, not in %s",
+                         mode_name(f->mode));
+    /* The tolerance is not used (a static map has no error to control), but a value given
+     * must be a number; a time that is not finite would leave no step possible. */
+    if (toleranceDefined && !(tolerance >= 0 && isfinite(tolerance)))
+        return fmu__fail(f, "fmi2SetupExperiment: tolerance %g: expected a finite number >= 0",
+                         tolerance);
+    if (!isfinite(startTime))
+        return fmu__fail(f, "fmi2SetupExperiment: start time %g s: expected a finite time",
+                         startTime);
+    if (stopTimeDefined && !(stopTime >= startTime && isfinite(stopTime)))
+        return fmu__fail(f, "fmi2SetupExperiment: stop time %g s: expected a finite time >= "
+                         "the start time %.17g s", stopTime, startTime);
     f->v.time = startTime;
     return fmi2OK;
 }
@@ -370,8 +383,8 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component c)
     if (!f)
         return fmi2Error;
     if (f->mode != FMU_INSTANTIATED)
-        return fail(f, "fmi2EnterInitializationMode: only after fmi2Instantiate, not in %s",
-                    mode_name(f->mode));
+        return fmu__fail(f, "fmi2EnterInitializationMode: only after fmi2Instantiate, not in %s",
+                         mode_name(f->mode));
     f->mode = FMU_INITIALIZATION;
     return fmi2OK;
 }
@@ -382,8 +395,8 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
     if (!f)
         return fmi2Error;
     if (f->mode != FMU_INITIALIZATION)
-        return fail(f, "fmi2ExitInitializationMode: not in initialization mode but in %s",
-                    mode_name(f->mode));
+        return fmu__fail(f, "fmi2ExitInitializationMode: not in initialization mode but in %s",
+                         mode_name(f->mode));
     if (outputs_current(f) != fmi2OK) {
         f->mode = FMU_ERROR;
         return fmi2Error;
@@ -398,7 +411,7 @@ fmi2Status fmi2Terminate(fmi2Component c)
     if (!f)
         return fmi2Error;
     if (f->mode != FMU_STEP && f->mode != FMU_ERROR)
-        return fail(f, "fmi2Terminate: not in step mode but in %s", mode_name(f->mode));
+        return fmu__fail(f, "fmi2Terminate: not in step mode but in %s", mode_name(f->mode));
     f->mode = FMU_TERMINATED;
     return fmi2OK;
 }
@@ -427,8 +440,8 @@ static const fmu_variable *lookup(fmu_instance *f, const char *call, fmi2ValueRe
 {
     const fmu_variable *var = fmu__variable_find(vr, t);
     if (!var)
-        fail(f, "%s: no %s variable has value reference %u (see modelDescription.xml)", call,
-             type_name(t), vr);
+        fmu__fail(f, "%s: no %s variable has value reference %u (see modelDescription.xml)", call,
+                  type_name(t), vr);
     return var;
 }
 
@@ -437,12 +450,12 @@ static const fmu_variable *lookup(fmu_instance *f, const char *call, fmi2ValueRe
 static fmi2Status settable(fmu_instance *f, const char *call, const fmu_variable *var)
 {
     if (var->causality == FMU_OUTPUT)
-        return fail(f, "%s: %s is an output; it cannot be set", call, var->name);
+        return fmu__fail(f, "%s: %s is an output; it cannot be set", call, var->name);
     if (f->mode == FMU_TERMINATED || f->mode == FMU_ERROR)
-        return fail(f, "%s: %s cannot be set in %s", call, var->name, mode_name(f->mode));
+        return fmu__fail(f, "%s: %s cannot be set in %s", call, var->name, mode_name(f->mode));
     if (var->causality == FMU_PARAMETER && f->mode == FMU_STEP)
-        return fail(f, "%s: %s is a fixed parameter: set it before "
-                    "fmi2ExitInitializationMode", call, var->name);
+        return fmu__fail(f, "%s: %s is a fixed parameter: set it before "
+                         "fmi2ExitInitializationMode", call, var->name);
     return fmi2OK;
 }
 
@@ -451,15 +464,15 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 {
     fmu_instance *f = c;
     if (!f || (nvr && (!vr || !value)))
-        return f ? fail(f, "fmi2GetReal: NULL arrays") : fmi2Error;
+        return f ? fmu__fail(f, "fmi2GetReal: NULL arrays") : fmi2Error;
     for (size_t i = 0; i < nvr; ++i) {
         const fmu_variable *var = lookup(f, "fmi2GetReal", vr[i], FMU_REAL);
         if (!var)
             return fmi2Error;
         if (var->causality == FMU_OUTPUT) {
             if (f->mode == FMU_INSTANTIATED)
-                return fail(f, "fmi2GetReal: output %s is computed from "
-                            "fmi2EnterInitializationMode on", var->name);
+                return fmu__fail(f, "fmi2GetReal: output %s is computed from "
+                                 "fmi2EnterInitializationMode on", var->name);
             if ((f->mode == FMU_INITIALIZATION || f->mode == FMU_STEP) &&
                 outputs_current(f) != fmi2OK)
                 return fmi2Error;
@@ -474,18 +487,18 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 {
     fmu_instance *f = c;
     if (!f || (nvr && (!vr || !value)))
-        return f ? fail(f, "fmi2SetReal: NULL arrays") : fmi2Error;
+        return f ? fmu__fail(f, "fmi2SetReal: NULL arrays") : fmi2Error;
     for (size_t i = 0; i < nvr; ++i) {
         const fmu_variable *var = lookup(f, "fmi2SetReal", vr[i], FMU_REAL);
         if (!var || settable(f, "fmi2SetReal", var) != fmi2OK)
             return fmi2Error;
         if (!isfinite(value[i]))
-            return fail(f, "fmi2SetReal: %s = %g: expected a finite number", var->name,
-                        value[i]);
+            return fmu__fail(f, "fmi2SetReal: %s = %g: expected a finite number", var->name,
+                             value[i]);
         if (strcmp(var->name, "load") == 0 && !(value[i] > 0))
-            return fail(f, "fmi2SetReal: load = %g N: expected a load > 0", value[i]);
+            return fmu__fail(f, "fmi2SetReal: load = %g N: expected a load > 0", value[i]);
         if (strcmp(var->name, "width") == 0 && !(value[i] >= 0))
-            return fail(f, "fmi2SetReal: width = %g m: expected a width >= 0", value[i]);
+            return fmu__fail(f, "fmi2SetReal: width = %g m: expected a width >= 0", value[i]);
         if (var->causality == FMU_PARAMETER)
             fmu__teardown(f);  /* built again from the new value when next needed */
         memcpy((char *)&f->v + var->offset, &value[i], sizeof(double));
@@ -498,7 +511,7 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 {
     fmu_instance *f = c;
     if (!f || (nvr && (!vr || !value)))
-        return f ? fail(f, "fmi2GetString: NULL arrays") : fmi2Error;
+        return f ? fmu__fail(f, "fmi2GetString: NULL arrays") : fmi2Error;
     for (size_t i = 0; i < nvr; ++i) {
         const fmu_variable *var = lookup(f, "fmi2GetString", vr[i], FMU_STRING);
         if (!var)
@@ -513,16 +526,16 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 {
     fmu_instance *f = c;
     if (!f || (nvr && (!vr || !value)))
-        return f ? fail(f, "fmi2SetString: NULL arrays") : fmi2Error;
+        return f ? fmu__fail(f, "fmi2SetString: NULL arrays") : fmi2Error;
     for (size_t i = 0; i < nvr; ++i) {
         const fmu_variable *var = lookup(f, "fmi2SetString", vr[i], FMU_STRING);
         if (!var || settable(f, "fmi2SetString", var) != fmi2OK)
             return fmi2Error;
         if (!value[i])
-            return fail(f, "fmi2SetString: %s: NULL string", var->name);
+            return fmu__fail(f, "fmi2SetString: %s: NULL string", var->name);
         if (strlen(value[i]) >= var->size)
-            return fail(f, "fmi2SetString: %s: longer than %zu bytes", var->name,
-                        var->size - 1);
+            return fmu__fail(f, "fmi2SetString: %s: longer than %zu bytes", var->name,
+                             var->size - 1);
         fmu__teardown(f);
         snprintf((char *)&f->v + var->offset, var->size, "%s", value[i]);
     }
@@ -537,8 +550,8 @@ static fmi2Status none(fmu_instance *f, const char *call, const char *type,
         return fmi2Error;
     if (!nvr)
         return fmi2OK;
-    return fail(f, "%s: this FMU has no %s variables (value reference %u)", call, type,
-                vr ? vr[0] : 0);
+    return fmu__fail(f, "%s: this FMU has no %s variables (value reference %u)", call, type,
+                     vr ? vr[0] : 0);
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -578,8 +591,8 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
 {
     (void)vUnknown_ref, (void)nUnknown, (void)vKnown_ref, (void)nKnown, (void)dvKnown;
     (void)dvUnknown;
-    return c ? fail(c, "fmi2GetDirectionalDerivative: not provided "
-                    "(providesDirectionalDerivative = false)")
+    return c ? fmu__fail(c, "fmi2GetDirectionalDerivative: not provided "
+                         "(providesDirectionalDerivative = false)")
              : fmi2Error;
 }
 
@@ -588,8 +601,8 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
                                        const fmi2Real value[])
 {
     (void)vr, (void)nvr, (void)order, (void)value;
-    return c ? fail(c, "fmi2SetRealInputDerivatives: inputs are not interpolated "
-                    "(canInterpolateInputs = false): the outputs follow the inputs' values")
+    return c ? fmu__fail(c, "fmi2SetRealInputDerivatives: inputs are not interpolated "
+                         "(canInterpolateInputs = false): the outputs follow the inputs' values")
              : fmi2Error;
 }
 
@@ -598,8 +611,8 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
                                         fmi2Real value[])
 {
     (void)vr, (void)nvr, (void)order, (void)value;
-    return c ? fail(c, "fmi2GetRealOutputDerivatives: not provided "
-                    "(maxOutputDerivativeOrder = 0)")
+    return c ? fmu__fail(c, "fmi2GetRealOutputDerivatives: not provided "
+                         "(maxOutputDerivativeOrder = 0)")
              : fmi2Error;
 }
 
@@ -612,13 +625,17 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
     if (!f)
         return fmi2Error;
     if (f->mode != FMU_STEP)
-        return fail(f, "fmi2DoStep: not in step mode but in %s", mode_name(f->mode));
-    if (!(communicationStepSize > 0))
-        return fail(f, "fmi2DoStep: step size %g s: expected > 0", communicationStepSize);
+        return fmu__fail(f, "fmi2DoStep: not in step mode but in %s", mode_name(f->mode));
+    if (!(communicationStepSize > 0) || !isfinite(communicationStepSize))
+        return fmu__fail(f, "fmi2DoStep: step size %g s: expected a finite step > 0",
+                         communicationStepSize);
     const double t = f->v.time;
+    if (!isfinite(currentCommunicationPoint + communicationStepSize))
+        return fmu__fail(f, "fmi2DoStep: the step from %.17g s by %.17g s ends at no finite "
+                         "time", currentCommunicationPoint, communicationStepSize);
     if (!(fabs(currentCommunicationPoint - t) <= 1e-9 * fmax(1, fabs(t))))
-        return fail(f, "fmi2DoStep: the communication point %.17g s is not the FMU's time "
-                    "%.17g s (restore an FMU state to go back)", currentCommunicationPoint, t);
+        return fmu__fail(f, "fmi2DoStep: the communication point %.17g s is not the FMU's time "
+                         "%.17g s (restore an FMU state to go back)", currentCommunicationPoint, t);
     /* A static map: the outputs at the end of the step are the equilibrium at the inputs
      * as they stand (set before this call). */
     if (outputs_current(f) != fmi2OK) {
@@ -631,8 +648,8 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
 
 fmi2Status fmi2CancelStep(fmi2Component c)
 {
-    return c ? fail(c, "fmi2CancelStep: fmi2DoStep never returns fmi2Pending "
-                    "(canRunAsynchronuously = false): nothing to cancel")
+    return c ? fmu__fail(c, "fmi2CancelStep: fmi2DoStep never returns fmi2Pending "
+                         "(canRunAsynchronuously = false): nothing to cancel")
              : fmi2Error;
 }
 

@@ -99,6 +99,12 @@ void fmu__log(fmu_instance *f, fmi2Status status, const char *category, const ch
     __attribute__((format(printf, 4, 5)))
 #endif
     ;
+/* Logs the message as an error (category logStatusError) and returns fmi2Error. */
+fmi2Status fmu__fail(fmu_instance *f, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
 fmi2Status fmu__fail_diag(fmu_instance *f, const char *what, const tirenv_diag *diag);
 void *fmu__alloc(const fmu_instance *f, size_t size);
 void fmu__free(const fmu_instance *f, void *p);

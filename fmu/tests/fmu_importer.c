@@ -6,7 +6,10 @@
  *   - a load that changes every step gives, at each step, 'tirenv envelope' at that load;
  *   - an FMU state taken mid-cleat, set again (directly and through serialization), repeats
  *     the following steps bit for bit; so does one taken while the load changes every step
- *     (tirenv_model_set_load), and a state's size does not grow with the steps;
+ *     (tirenv_model_set_load), and a state's size does not grow with the steps; a state
+ *     set into an instance that was only instantiated brings its mode and time and steps on;
+ *   - a serialized state with a corrupted mode is refused; NULL categories, NaN and infinite
+ *     times and steps give fmi2Error and leave the instance usable;
  *   - wrong value references, a parameter set too late, an unknown model, a missing road
  *     file and a wrong GUID give fmi2Error (or NULL) and a log message saying why.
  * Prints TAP lines; exits 1 if a check fails.
@@ -14,6 +17,7 @@
 #include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,6 +83,7 @@ typedef struct {
     fmi2Status (*state_size)(fmi2Component, fmi2FMUstate, size_t *);
     fmi2Status (*serialize)(fmi2Component, fmi2FMUstate, fmi2Byte[], size_t);
     fmi2Status (*deserialize)(fmi2Component, const fmi2Byte[], size_t, fmi2FMUstate *);
+    fmi2Status (*set_debug_logging)(fmi2Component, fmi2Boolean, size_t, const fmi2String[]);
 } fmu_api;
 
 static void *sym(void *so, const char *name)
@@ -112,6 +117,7 @@ static void bind(fmu_api *api)
     BIND(state_size, "fmi2SerializedFMUstateSize");
     BIND(serialize, "fmi2SerializeFMUstate");
     BIND(deserialize, "fmi2DeSerializeFMUstate");
+    BIND(set_debug_logging, "fmi2SetDebugLogging");
 }
 
 /* ---- modelDescription.xml, read just enough: the GUID and a variable's reference -------- */
@@ -256,6 +262,59 @@ static fmi2Status step(fmi2Component c, double t, double x, double load, double 
 
 static const double X_FROM = -0.8, X_TO = 0.8, DX = 0.001, LOAD = 7500;
 
+/* Serialized bytes an importer corrupted are refused, naming what is wrong, and the argument
+ * checks of the entry points hold (issue 27.5): bytes is a good serialized state of size
+ * bytes from instance d, in step mode; both are left as they were. */
+static void test_state_untrusted(fmi2Component d, const fmi2Byte *bytes, size_t size)
+{
+    /* The header as fmu_state.c lays it out: magic[8], version, values_size (uint32 each),
+     * n_model (uint64), mode (int32) at byte 24. */
+    const size_t mode_at = 24;
+    fmi2Byte *bad = malloc(size);
+    memcpy(bad, bytes, size);
+    const int32_t modes[3] = {100000000, -1, 5};
+    int refused = 0;
+    for (int i = 0; i < 3; ++i) {
+        memcpy(bad + mode_at, &modes[i], sizeof modes[i]);
+        fmi2FMUstate s = NULL;
+        n_logs = 0;
+        refused += api.deserialize(d, bad, size, &s) == fmi2Error && !s && logged("mode");
+    }
+    check(refused == 3, "a serialized state whose mode is 1e8, -1 or 5 is refused, naming the "
+          "mode (%d of 3; %s)", refused, last_log);
+    free(bad);
+
+    n_logs = 0;
+    check(api.set_debug_logging(d, fmi2True, 2, NULL) == fmi2Error && logged("NULL"),
+          "fmi2SetDebugLogging(c, 1, 2, NULL): fmi2Error, logged (%s)", last_log);
+    const fmi2String all = "logAll";
+    check(api.set_debug_logging(d, fmi2False, 1, &all) == fmi2OK,
+          "and a proper category list after it is taken");
+    double t;
+    const fmi2ValueReference t_vr = VR_H;
+    check(api.do_step(d, 0.9, INFINITY, fmi2False) == fmi2Error &&
+          api.do_step(d, 0.9, NAN, fmi2False) == fmi2Error &&
+          api.do_step(d, NAN, 1e-3, fmi2False) == fmi2Error,
+          "fmi2DoStep with an infinite or NaN step or time: fmi2Error");
+    check(api.get_real(d, &t_vr, 1, &t) == fmi2OK && isfinite(t),
+          "and the instance is still in step mode, its outputs readable");
+
+    fmi2Component c = api.instantiate("fresh", fmi2CoSimulation, guid, resources, &cb,
+                                      fmi2False, fmi2False);
+    n_logs = 0;
+    check(c && api.setup(c, fmi2False, 0, NAN, fmi2False, 0) == fmi2Error && logged("start"),
+          "fmi2SetupExperiment with a NaN start time: fmi2Error, logged (%s)", last_log);
+    check(api.setup(c, fmi2False, 0, INFINITY, fmi2False, 0) == fmi2Error &&
+          api.setup(c, fmi2False, 0, 0, fmi2True, -1) == fmi2Error &&
+          api.setup(c, fmi2True, NAN, 0, fmi2False, 0) == fmi2Error,
+          "an infinite start, a stop before the start, a NaN tolerance: fmi2Error");
+    check(api.setup(c, fmi2True, 1e-6, 0, fmi2True, 10) == fmi2OK,
+          "and the instance takes a proper experiment after them");
+    api.free_instance(c);
+    api.free_instance(NULL);
+    check(1, "fmi2FreeInstance(NULL) returns");
+}
+
 static void test_cleat(const char *road)
 {
     char cmd[4096], path[256];
@@ -344,6 +403,21 @@ static void test_cleat(const char *road)
     }
     check(st == fmi2OK && memcmp(first_pass, restored, sizeof restored) == 0,
           "and the new instance repeats the steps bit for bit");
+    /* ... into an instance that was only instantiated (fmusim's way): the state brings the
+     * mode (step mode), the parameters and the time with it. */
+    fmi2Component g = api.instantiate("bare", fmi2CoSimulation, guid, resources, &cb,
+                                      fmi2False, fmi2False);
+    check(g && api.set_state(g, copy) == fmi2OK,
+          "the deserialized state set in an instance that was only instantiated");
+    st = fmi2OK;
+    for (size_t k = k0; k < k0 + n_after && st == fmi2OK; ++k) {
+        st = step(g, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
+        restored[k - k0] = out[0];
+    }
+    check(st == fmi2OK && memcmp(first_pass, restored, sizeof restored) == 0,
+          "and it steps on from the state's time, repeating the steps bit for bit");
+    api.free_instance(g);
+    test_state_untrusted(d, bytes, size);
     bytes[0] ^= 1;
     fmi2FMUstate bad = NULL;
     n_logs = 0;
