@@ -11,6 +11,7 @@
 #                                      tirenv::tirenv_static
 #   share/man/man1/tirenv*.1           man pages
 #   share/tirenv/                      data: tires, vehicles, the embedded data set
+#   share/tirenv/fmu/                  the FMI 2.0 FMU, tirenv_effective_road.fmu
 #   share/doc/tirenv/                  README.md and docs/
 include(CMakePackageConfigHelpers)
 set(TIRENV_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tirenv)

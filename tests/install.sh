@@ -46,7 +46,8 @@ for f in bin/tirenv lib/libtirenv.so.$version lib/libtirenv.a include/tirenv/tir
          lib/cmake/tirenv/tirenvConfig.cmake lib/cmake/tirenv/tirenvConfigVersion.cmake \
          share/man/man1/tirenv.1 share/man/man1/tirenv-envelope.1 \
          share/tirenv/tires/default.tir share/tirenv/vehicles/tractor.veh \
-         share/tirenv/dataset/cases.csv share/doc/tirenv/README.md; do
+         share/tirenv/dataset/cases.csv share/doc/tirenv/README.md \
+         share/tirenv/fmu/tirenv_effective_road.fmu; do
     check "installs $f" test -f "$P/$f"
 done
 check "libtirenv.so.$major links to the versioned library" \
