@@ -56,6 +56,15 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag);
 int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag);
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag);
+typedef enum { TIRENV_TIR_REAL, TIRENV_TIR_COUNT, TIRENV_TIR_NAME } tirenv_tir_kind;
+const char *tirenv_tir_key(size_t i, const char **section);
+int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
+                   tirenv_tir_kind *kind, tirenv_diag *diag);
+
+/* version.h: the headers' version, the project's */
+#define TIRENV_VERSION_MAJOR ...
+#define TIRENV_VERSION_MINOR ...
+#define TIRENV_VERSION_PATCH ...
 
 /* profile.h */
 typedef struct tirenv_profile tirenv_profile;

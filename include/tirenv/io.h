@@ -24,6 +24,21 @@ int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag)
 /* Writes *tire as a .tir file (atomically: all or nothing). */
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag);
 
+/* What a tire key holds: a real number (SI), a count, or a name (METHOD). */
+typedef enum { TIRENV_TIR_REAL, TIRENV_TIR_COUNT, TIRENV_TIR_NAME } tirenv_tir_kind;
+
+/* The keys tirenv_tir_set and tirenv_tir_get take, in the order a .tir file is written: the
+ * i-th key's name (and, if section is not NULL, its [SECTION]); NULL past the last. Static
+ * strings. */
+const char *tirenv_tir_key(size_t i, const char **section);
+
+/* The value of key ("KEY" or "SECTION.KEY", as tirenv_tir_set takes it) in *tire as text into
+ * buf (n bytes, 64 always suffice), exactly as tirenv_tir_write writes it: the shortest text
+ * that reads back to the same double (SI units), a count, or a name unquoted; *kind (if not
+ * NULL) says which. An unknown key is TIRENV_EINVAL with the known keys in the message. */
+int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
+                   tirenv_tir_kind *kind, tirenv_diag *diag);
+
 /* Reads a profile CSV: header "x_m,z_m", one vertex per line, '#' comment lines and blank
  * lines allowed. Errors name file, line and column. *out is NULL on failure. */
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);

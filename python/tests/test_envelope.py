@@ -85,7 +85,8 @@ def test_envelope_takes_any_real_array():
     assert np.array_equal(got["x_m"], f32.astype(np.float64))  # float32 values, widened
     ints = m.set(m.profile, 11903.6).envelope(np.array([-1, 0, 1], dtype=np.int32))
     assert list(ints["x_m"]) == [-1.0, 0.0, 1.0]
-    assert m.envelope(0.0).shape == (1,)  # a scalar is one position
+    one = m.envelope(0.0)  # a scalar is one position, and gives one record
+    assert one.shape == () and one == m.envelope([0.0])[0]
     assert m.envelope([]).shape == (0,)
 
 

@@ -5,8 +5,8 @@ import threading
 
 import numpy as np
 
-from ._c import (ffi, lib, check, doubles, double_ptr, error_from, invalid, new_diag,
-                 struct_dtype)
+from ._c import (ffi, lib, check, doubles, double_ptr, error_from, invalid, is_scalar,
+                 new_diag, one_or_all, struct_dtype)
 from .tire import Tire
 
 # One row of 'tirenv envelope's CSV, laid out as the library's tirenv_point, so that the
@@ -140,9 +140,10 @@ class Model:
         a structured array with the envelope CSV's fields x_m, z_m, h_m, slope, fx_N, fz_N,
         contacts, iterations. x may be any 1-D real array (copied to float64 if needed).
         One library call, with the GIL released. TirenvError (with .index) if a position
-        has no equilibrium."""
+        has no equilibrium. A scalar x gives one record."""
         if self.profile is None:
             raise invalid("no profile: call set(profile, load) first")
+        scalar = is_scalar(x)
         x = doubles(x, "x")
         out = np.zeros(x.size, dtype=POINT_DTYPE)
         failed, diag = ffi.new("size_t *"), new_diag()
@@ -154,7 +155,7 @@ class Model:
             e = error_from(status, diag)
             e.index = failed[0]
             raise e
-        return out
+        return one_or_all(out, scalar)
 
     def sweep(self, x_from=None, x_to=None, dx=None):
         """envelope() over 'tirenv envelope's positions: the library's default sweep of the

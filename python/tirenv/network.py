@@ -5,7 +5,8 @@ import threading
 
 import numpy as np
 
-from ._c import ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes
+from ._c import (ffi, lib, check, doubles, double_ptr, invalid, is_scalar, new_diag, one_or_all,
+                 path_bytes)
 
 INPUTS = ("x_N", "contact_length_m", "obstacle_height_m", "obstacle_length_m")
 
@@ -34,28 +35,31 @@ class Network:
         return R0
 
     def predict(self, inputs):
-        """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4)."""
+        """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4) gives
+        n values, one row of 4 a float."""
         a = np.asarray(inputs)
+        one = a.ndim == 1
         if a.dtype.kind not in "biuf":
             raise TypeError(f"inputs: expected real numbers, got dtype {a.dtype}")
         a = np.ascontiguousarray(np.atleast_2d(a), dtype=np.float64)
         if a.ndim != 2 or a.shape[1] != self.n_inputs:
-            raise ValueError(f"inputs: expected shape (n, {self.n_inputs}), got {a.shape}")
+            raise invalid(f"expected shape (n, {self.n_inputs}), got {a.shape}", "inputs")
         y = np.empty(a.shape[0])
         with self._lock:
             lib.tirenv_nn_run_batch(self._nn, a.shape[0], double_ptr(a), double_ptr(y))
-        return y
+        return one_or_all(y, one)
 
     def envelope(self, x, contact_length, length, height, R0=None):
         """h (m) at centre positions x (m) over a length x height (m) cleat centred at 0, at
-        the given contact length (m)."""
+        the given contact length (m); a scalar x gives a float."""
+        scalar = is_scalar(x)
         x = doubles(x, "x")
         h, diag = np.empty(x.size), new_diag()
         with self._lock:
             check(lib.tirenv_nn_envelope(self._nn, self._R0(R0), contact_length, length,
                                          height, x.size, double_ptr(x), double_ptr(h), diag),
                   diag)
-        return h
+        return one_or_all(h, scalar)
 
     def road(self, profile, contact_length, R0=None):
         """The network over any profile by equivalent cleats (include/tirenv/nn_road.h)."""
@@ -81,10 +85,11 @@ class NetworkRoad:
                                  "length_above": info.length_above}
 
     def eval(self, x):
-        """(h, slope) at centre positions x (m): h m, slope dh/dx."""
+        """(h, slope) at centre positions x (m): h m, slope dh/dx; floats for a scalar x."""
+        scalar = is_scalar(x)
         x = doubles(x, "x")
         h, slope, diag = np.empty(x.size), np.empty(x.size), new_diag()
         with self._lock:
             check(lib.tirenv_nn_road_eval(self._r, x.size, double_ptr(x), double_ptr(h),
                                           double_ptr(slope), diag), diag)
-        return h, slope
+        return one_or_all(h, scalar), one_or_all(slope, scalar)

@@ -5,7 +5,8 @@ import math
 
 import numpy as np
 
-from ._c import ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes
+from ._c import (ffi, lib, check, doubles, double_ptr, invalid, is_scalar, new_diag, one_or_all,
+                 path_bytes)
 
 
 class Profile:
@@ -143,9 +144,12 @@ class Profile:
         return lo[0], hi[0]
 
     def height(self, x):
-        """Ground height (m) at each x (m); at a wall the higher side."""
+        """Ground height (m) at each x (m); at a wall the higher side. A scalar x gives a
+        float, an array an array."""
+        scalar = is_scalar(x)
         x = doubles(x, "x")
-        return np.array([lib.tirenv_profile_height(self._p, v) for v in x])
+        return one_or_all(np.array([lib.tirenv_profile_height(self._p, v) for v in x]),
+                          scalar)
 
     def __repr__(self):
         lo, hi = self.extent

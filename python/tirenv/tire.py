@@ -1,5 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Tires: the built-in default, or a .tir file, with keys overridden as --set does."""
+"""Tires: the built-in default, or a .tir file, with keys overridden as --set does; the keys
+read back as a mapping."""
+import collections.abc
+
 from ._c import ffi, lib, check, new_diag, path_bytes
 
 
@@ -9,10 +12,23 @@ def _assignment(key, value):
     return f"{key}={value}".encode()
 
 
-class Tire:
+def _keys():
+    names, i = [], 0
+    while (k := lib.tirenv_tir_key(i, ffi.NULL)) != ffi.NULL:
+        names.append(ffi.string(k).decode())
+        i += 1
+    return tuple(names)
+
+
+class Tire(collections.abc.Mapping):
     """Tire() is the built-in default tire (data/tires/default.tir); Tire(path) reads a .tir
     file over it; set={"KEY": value} overrides keys of the file (RADIAL_STIFFNESS=1.6e6, as
-    the CLI's --set KEY=VALUE). The result is checked (tirenv_tire_check)."""
+    the CLI's --set KEY=VALUE). The result is checked (tirenv_tire_check).
+
+    A read-only mapping of its keys, as a .tir file names them (tirenv_tir_get):
+    tire["RADIAL_STIFFNESS"] is a float in SI units, tire["MAX_ITERATIONS"] an int,
+    tire["METHOD"] a str; keys(), items(), "KEY" in tire, len(tire) as for a dict. A key
+    that is not one raises KeyError. To change one, make a new Tire with set=."""
 
     def __init__(self, path=None, set=None):
         self._t = ffi.new("tirenv_tire *")
@@ -29,6 +45,25 @@ class Tire:
     def R0(self):
         """Free radius, m."""
         return self._t.springs.R0
+
+    def __getitem__(self, key):
+        if not isinstance(key, str):
+            raise KeyError(key)
+        buf, kind, diag = ffi.new("char[64]"), ffi.new("tirenv_tir_kind *"), new_diag()
+        if lib.tirenv_tir_get(self._t, key.encode(), buf, len(buf), kind, diag):
+            raise KeyError(key)
+        text = ffi.string(buf).decode()
+        if kind[0] == lib.TIRENV_TIR_COUNT:
+            return int(text)
+        if kind[0] == lib.TIRENV_TIR_NAME:
+            return text
+        return float(text)  # the shortest text of the double: the same double back
+
+    def __iter__(self):
+        return iter(_keys())
+
+    def __len__(self):
+        return len(_keys())
 
     def write(self, path):
         """Writes the tire as a .tir file (all or nothing)."""

@@ -597,6 +597,77 @@ static void pf_format_real(char *buf, size_t n, double v)
     snprintf(buf, n, "%.17g", v);
 }
 
+const char *tirenv_propfile__key_at(const pf_schema *s, size_t i, const char **section)
+{
+    for (size_t k = 0; k < s->n_keys; k++) {
+        const pf_key *e = &s->keys[k];
+        if (e->kind == TIRENV_PROPFILE_UNIT || i-- > 0)
+            continue;
+        if (section)
+            *section = e->section;
+        return e->key;
+    }
+    return NULL;
+}
+
+int tirenv_propfile__get(const pf_schema *s, const void *obj, const char *field, char *buf,
+                         size_t n, tirenv_propfile__kind *kind, tirenv_diag *diag)
+{
+    char name[sizeof ((tirenv_diag *)NULL)->field], list[1024];
+    snprintf(name, sizeof name, "%s", field ? field : "");
+    char *dot = strchr(name, '.');
+    size_t matches = 0, i;
+    if (dot) {
+        *dot = '\0';
+        i = pf_find_key(s, name, dot + 1, 1, &matches);
+        *dot = '.';
+    } else {
+        i = pf_find_key(s, NULL, name, 1, &matches);
+    }
+    if (i == s->n_keys)
+        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "no such key; expected one of "
+                            "%s", pf_key_list(s, NULL, list, sizeof list));
+    if (matches > 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "the key is in %zu sections: "
+                            "name it as SECTION.KEY", matches);
+    const pf_key *e = &s->keys[i];
+    const unsigned char *at = (const unsigned char *)obj + e->offset;
+    char value[1100];
+    switch (e->kind) {
+    case TIRENV_PROPFILE_REAL: {
+        double v;
+        memcpy(&v, at, sizeof v);
+        pf_format_real(value, sizeof value, v);
+        break;
+    }
+    case TIRENV_PROPFILE_COUNT: {
+        size_t v;
+        memcpy(&v, at, sizeof v);
+        snprintf(value, sizeof value, "%zu", v);
+        break;
+    }
+    case TIRENV_PROPFILE_NAME: {
+        int v;
+        memcpy(&v, at, sizeof v);
+        const int known = v >= 0 && v < (int)(sizeof e->names / sizeof e->names[0]) &&
+                          e->names[v];
+        snprintf(value, sizeof value, "%s", known ? e->names[v] : "");
+        break;
+    }
+    default: /* PATH (UNIT keys are not found as settable) */
+        snprintf(value, sizeof value, "%.*s", (int)(e->size ? e->size - 1 : 0),
+                 (const char *)at);
+        break;
+    }
+    if (!buf || strlen(value) >= n)
+        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "the value takes %zu bytes; "
+                            "the buffer holds %zu", strlen(value) + 1, buf ? n : 0);
+    memcpy(buf, value, strlen(value) + 1);
+    if (kind)
+        *kind = e->kind;
+    return TIRENV_OK;
+}
+
 /* The name a write error gives a key: SECTION.KEY if the key is in several sections. */
 static const char *pf_key_name(const pf_schema *s, const pf_key *e, char *buf, size_t n)
 {

@@ -128,6 +128,18 @@ int tirenv_propfile__write(const tirenv_propfile__schema *s, const char *path,
 int tirenv_propfile__write_headed(const tirenv_propfile__schema *s, const char *path,
                                   const void *obj, const char *header, tirenv_diag *diag);
 
+/* The settable keys (not [UNITS]) of s, in table order: the i-th one's key and (if section
+ * is not NULL) section, or NULL past the last. */
+const char *tirenv_propfile__key_at(const tirenv_propfile__schema *s, size_t i,
+                                    const char **section);
+
+/* The value of "KEY" or "SECTION.KEY" in *obj as text into buf (n bytes), as the writer
+ * writes it: the shortest text that reads back to the same double, a count, a name unquoted,
+ * a path; *kind (if not NULL) its kind. An unknown or ambiguous key, or a buffer too small,
+ * is an error naming the key (file "get"). */
+int tirenv_propfile__get(const tirenv_propfile__schema *s, const void *obj, const char *field,
+                         char *buf, size_t n, tirenv_propfile__kind *kind, tirenv_diag *diag);
+
 /* ---- What the RDF road and OpenCRG header readers share with this engine ------------ */
 
 /* Where the text being parsed came from, so that an error names file, line and column. */

@@ -158,6 +158,25 @@ int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag)
     return tirenv_propfile__set(&tir_schema, tire, assignment, diag);
 }
 
+const char *tirenv_tir_key(size_t i, const char **section)
+{
+    return tirenv_propfile__key_at(&tir_schema, i, section);
+}
+
+int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
+                   tirenv_tir_kind *kind, tirenv_diag *diag)
+{
+    tirenv_propfile__kind k = TIRENV_PROPFILE_REAL;
+    if (!tire)
+        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, key ? key : "", "no tire (NULL)");
+    const int status = tirenv_propfile__get(&tir_schema, tire, key, buf, n, &k, diag);
+    if (!status && kind)
+        *kind = k == TIRENV_PROPFILE_COUNT ? TIRENV_TIR_COUNT
+              : k == TIRENV_PROPFILE_NAME  ? TIRENV_TIR_NAME
+                                           : TIRENV_TIR_REAL;
+    return status;
+}
+
 /* A tire that fails tirenv_tire_check is refused: its file could not be read back. */
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag)
 {
