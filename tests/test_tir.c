@@ -677,6 +677,61 @@ static void test_cam_keys_given(void **state)
     assert_int_equal(back.cam.given, TIRENV_CAM_ALL);
 }
 
+/* tirenv_tir_get gives each key as the writer writes it: set, got, set again from the text
+ * gives the same tire; unknown keys, a small buffer and a section-qualified key. */
+static void test_get_every_key(void **state)
+{
+    (void)state;
+    tirenv_diag d;
+    tirenv_tire t = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_set(&t, "RADIAL_STIFFNESS=1612345.678", &d), TIRENV_OK);
+    assert_int_equal(tirenv_tir_set(&t, "MAX_ITERATIONS=37", &d), TIRENV_OK);
+    assert_int_equal(tirenv_tir_set(&t, "METHOD=brent", &d), TIRENV_OK);
+    char buf[64];
+    tirenv_tir_kind kind;
+    assert_int_equal(tirenv_tir_get(&t, "RADIAL_STIFFNESS", buf, sizeof buf, &kind, &d), 0);
+    assert_string_equal(buf, "1612345.678");
+    assert_int_equal(kind, TIRENV_TIR_REAL);
+    assert_int_equal(tirenv_tir_get(&t, "enveloping_solver.max_iterations", buf, sizeof buf,
+                                    &kind, &d), 0);
+    assert_string_equal(buf, "37");
+    assert_int_equal(kind, TIRENV_TIR_COUNT);
+    assert_int_equal(tirenv_tir_get(&t, "METHOD", buf, sizeof buf, &kind, &d), 0);
+    assert_string_equal(buf, "brent");
+    assert_int_equal(kind, TIRENV_TIR_NAME);
+    size_t n = 0;
+    const char *section = NULL, *key;
+    tirenv_tire copy = tirenv_tire_default();
+    for (; (key = tirenv_tir_key(n, &section)) != NULL; ++n) {
+        assert_non_null(section);
+        assert_int_equal(tirenv_tir_get(&t, key, buf, sizeof buf, NULL, &d), TIRENV_OK);
+        char assignment[128];
+        snprintf(assignment, sizeof assignment, "%s.%s=%s", section, key, buf);
+        assert_int_equal(tirenv_tir_set(&copy, assignment, &d), TIRENV_OK);
+    }
+    assert_true(n >= 25);  /* every key of the .tir table but [UNITS] */
+    assert_int_equal(tirenv_tir_get(&copy, "RADIAL_STIFFNESS", buf, sizeof buf, NULL, &d), 0);
+    assert_string_equal(buf, "1612345.678");
+    /* Every key of the copy is the original's, to the bit: the text reads back exactly. */
+    for (size_t i = 0; (key = tirenv_tir_key(i, NULL)) != NULL; ++i) {
+        char a[64], b[64];
+        assert_int_equal(tirenv_tir_get(&t, key, a, sizeof a, &kind, &d), TIRENV_OK);
+        assert_int_equal(tirenv_tir_get(&copy, key, b, sizeof b, NULL, &d), TIRENV_OK);
+        assert_string_equal(a, b);
+        if (kind == TIRENV_TIR_REAL)
+            assert_true(strtod(a, NULL) == strtod(b, NULL));
+    }
+    assert_true(copy.springs.c_r == t.springs.c_r && copy.ring.k_t == t.ring.k_t &&
+                copy.eq.max_iter == t.eq.max_iter && copy.eq.method == t.eq.method);
+    assert_int_equal(tirenv_tir_get(&t, "FNOMIN", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "FNOMIN");
+    assert_non_null(strstr(d.message, "RADIAL_STIFFNESS"));
+    assert_int_equal(tirenv_tir_get(&t, "LENGTH", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_tir_get(&t, "RADIAL_STIFFNESS", buf, 5, NULL, &d), TIRENV_EINVAL);
+    assert_non_null(strstr(d.message, "buffer"));
+    assert_int_equal(tirenv_tir_get(NULL, "METHOD", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+}
+
 int main(void)
 {
 #define T(fn) cmocka_unit_test_setup_teardown(fn, tirenv_test_dir_setup, tirenv_test_dir_teardown)
@@ -699,6 +754,7 @@ int main(void)
         T(test_sample_tir_files),
         T(test_units_converted),
         T(test_cam_keys_given),
+        T(test_get_every_key),
     };
 #undef T
     return cmocka_run_group_tests(tests, NULL, NULL);
