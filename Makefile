@@ -10,7 +10,7 @@ FUZZ_SECONDS ?= 60
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps deps-test build test test-asan test-slurm demo demo-study demo-study-205 \
+.PHONY: all deps deps-test build wheel test test-asan test-slurm demo demo-study demo-study-205 \
         demo-ride bench fuzz python fmu install clean
 
 all: build
@@ -58,6 +58,11 @@ python: build
 
 fmu: build
 	@cmake --build $(BUILD) -j $(JOBS) --target fmu
+
+# A wheel of the Python module carrying libtirenv ($(BUILD)/wheel/tirenv-*.whl): install it
+# with 'pip install --no-index' into any virtual environment (python/README.md).
+wheel: build
+	@cmake --build $(BUILD) -j $(JOBS) --target wheel
 
 # The paper's study on the embedded (simulated) data set: fit, train, compare, report; the same
 # on the second one, the 205/60R15 car tire's made by its MF-Swift cam. Then its next step,

@@ -13,6 +13,7 @@ Used three ways:
     builds the package in place under DIR (build/python);
   * by setup.py (pip install ./python): the attribute ffibuilder, located through
     TIRENV_INCLUDE_DIR / TIRENV_LIBRARY_DIR if set, else pkg-config tirenv;
+  * by make_wheel.py (make wheel), which imports make_builder;
   * by nothing else: the module has no run-time dependency on cffi's compiler parts.
 """
 import argparse
@@ -264,16 +265,19 @@ SYSTEM_LIBDIRS = {"/usr/lib", "/usr/lib64", "/usr/lib/x86_64-linux-gnu", "/lib",
                   "/lib/x86_64-linux-gnu"}
 
 
-def make_builder(include_dirs, library_dirs):
+def make_builder(include_dirs, library_dirs, rpath=None):
     """An FFI builder for tirenv._native against headers in include_dirs and libtirenv.so in
-    library_dirs (run-time path set to them unless they are system directories)."""
+    library_dirs, its run path (RUNPATH) rpath if given (make_wheel.py: $ORIGIN), else the
+    library directories that are not system directories."""
     ffi = cffi.FFI()
     ffi.cdef(CDEF)
-    rpath = [d for d in library_dirs if os.path.realpath(d) not in SYSTEM_LIBDIRS]
+    if rpath is None:
+        rpath = [d for d in library_dirs if os.path.realpath(d) not in SYSTEM_LIBDIRS]
     ffi.set_source("tirenv._native", SOURCE, include_dirs=list(include_dirs),
                    library_dirs=list(library_dirs), libraries=["tirenv", "gsl", "m"],
                    extra_compile_args=STRICT,
-                   extra_link_args=["-Wl,-rpath," + d for d in rpath])
+                   extra_link_args=(["-Wl,--enable-new-dtags"] if rpath else []) +
+                   ["-Wl,-rpath," + d for d in rpath])
     return ffi
 
 
@@ -319,5 +323,5 @@ if __name__ == "__main__":
     ap.add_argument("--work", required=True, help="scratch directory of the compiler")
     a = ap.parse_args()
     build_in_place(a.out, a.include, a.libdir, a.work)
-else:
+elif __name__ == "__cffi__":  # setup.py's cffi_modules runs this file under that name
     ffibuilder = make_builder(*locate())
