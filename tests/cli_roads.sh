@@ -131,29 +131,38 @@ check "--tracks without --width spreads over the tire file's WIDTH (0.38 m)" \
     '[ $rc -eq 0 ] && cmp -s w3d.csv w3-springs.csv'
 
 # --- the effective road as a road file ----------------------------------------------------
+# Over a straight road placed off the origin: the effective road keeps its reference line and
+# the track's v (long sections at 0.9 -+ 0.19 m), so it reads back on the same track.
+make_measured 0 straight.crg straight
 for m in springs cam; do
-    run "$bin" envelope --model $m --profile measured.crg --track 0.9 $lc $sweep -o eff-$m.csv
-    run "$bin" envelope --model $m --profile measured.crg --track 0.9 $lc $sweep -o eff-$m.crg
+    run "$bin" envelope --model $m --profile straight.crg --track 0.9 $lc $sweep -o eff-$m.csv
+    run "$bin" envelope --model $m --profile straight.crg --track 0.9 $lc $sweep -o eff-$m.crg
     ok=$rc
-    run "$bin" envelope --model $m --profile measured.crg --track 0.9 $lc $sweep -o eff-$m.rdf
+    run "$bin" envelope --model $m --profile straight.crg --track 0.9 $lc $sweep -o eff-$m.rdf
     ok2=$rc
-    run "$bin" envelope --model $m --profile measured.crg --track 0.9 $lc $sweep --stream \
+    run "$bin" envelope --model $m --profile straight.crg --track 0.9 $lc $sweep --stream \
         -o eff-s-$m.crg
     check "$m: -o X.crg (KDBI) reads back to h at every x, exactly; streamed, the same file" \
-        '[ $ok -eq 0 ] && [ "$(road_xh eff-$m.crg)" = "$(xh eff-$m.csv)" ] &&
-         [ "$(road_xh eff-$m.crg --track 0.19)" = "$(xh eff-$m.csv)" ] && cmp -s eff-$m.crg eff-s-$m.crg &&
+        '[ $ok -eq 0 ] && [ "$(road_xh eff-$m.crg --track 0.9)" = "$(xh eff-$m.csv)" ] &&
+         [ "$(road_xh eff-$m.crg --track 1.09)" = "$(xh eff-$m.csv)" ] && cmp -s eff-$m.crg eff-s-$m.crg &&
+         grep -aq "^REFERENCE_LINE_START_PHI = 0.4" eff-$m.crg && grep -aq "^\$ROAD_CRG_MODS" eff-$m.crg &&
          grep -aq "^of the $m model at load" eff-$m.crg && grep -aq "Road surface written by tirenv" eff-$m.crg'
     check "$m: -o X.rdf reads back to h at every x, exactly" \
         '[ $ok2 -eq 0 ] && [ "$(road_xh eff-$m.rdf)" = "$(xh eff-$m.csv)" ] &&
          grep -q "^\$ of the $m model at load" eff-$m.rdf'
 done
-run "$bin" envelope --model springs --profile measured.crg --track 0.9 $lc $sweep --crg-encoding krbi -o eff-f.crg
+run "$bin" envelope --model springs --profile straight.crg --track 0.9 $lc $sweep --crg-encoding krbi -o eff-f.crg
 ok=$rc
-road_xh eff-f.crg >f.rows
+road_xh eff-f.crg --track 0.9 >f.rows
 xh eff-springs.csv >d.rows
+# The file holds h - REFERENCE_LINE_START_Z (the road's height at the first row, under 1 cm
+# here) in float32: 6e-8 relative to |h| + 1 cm.
 check "-o X.crg --crg-encoding krbi: h to float32 precision (6e-8 relative)" \
-    '[ $ok -eq 0 ] && paste -d, f.rows d.rows | awk -F, "{ d = \$2 - \$4; t = 6e-8 * (\$4 < 0 ? -\$4 : \$4) + 1e-12;
+    '[ $ok -eq 0 ] && paste -d, f.rows d.rows | awk -F, "{ d = \$2 - \$4; t = 6e-8 * ((\$4 < 0 ? -\$4 : \$4) + 0.01) + 1e-12;
         if (\$1 != \$3 || d > t || -d > t) bad = 1 } END { exit bad || NR < 100 }"'
+run "$bin" envelope --model springs --profile measured.crg --track 0.9 $lc $sweep -o eff-curved.crg
+check "the effective road of a curved road as .crg: refused (exit 2, naming the curve), nothing written" \
+    '[ $rc -eq 2 ] && grep -q "curved reference line" err && [ ! -e eff-curved.crg ]'
 run "$bin" envelope --model springs --cleat 0.1,0.05 $lc -o cleat.crg
 check "a generated obstacle's effective road as .crg" '[ $rc -eq 0 ] && grep -aq "^over --cleat 0.1,0.05" cleat.crg'
 run "$bin" envelope --model springs --cleat 0.1,0.05 $lc -o /nonexistent/dir/x.crg

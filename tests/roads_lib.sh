@@ -13,12 +13,13 @@ crg=$samples/crg
 rdf=$samples/rdf
 lc='--contact-length 0.33'
 
-# make_measured ELEVATION FILE: a measured-like OpenCRG road (LDFI text), 40 m on a 1 cm grid,
-# a curved reference line (heading 0.015 rad per m), 9 long sections over 4 m at the height
+# make_measured ELEVATION FILE [straight]: a measured-like OpenCRG road (LDFI text), 40 m on a
+# 1 cm grid, a curved reference line (heading 0.015 rad per m; with "straight", none: a straight
+# line from x = 7, y = -3 m at heading 0.4 rad), 9 long sections over 4 m at the height
 # ELEVATION (REFERENCE_LINE_START_Z), roughness of a few mm that differs across (two waves and
 # seeded noise), a 5 cm cleat under the left half at u = 12 m and a 3 cm pothole at 20 m.
 make_measured() {
-    awk -v elev="$1" 'function rec(vals, n,   i, line) {
+    awk -v elev="$1" -v straight="${3:-}" 'function rec(vals, n,   i, line) {
             line = ""
             for (i = 1; i <= n; i++) {
                 line = line vals[i]
@@ -34,18 +35,25 @@ make_measured() {
             print "REFERENCE_LINE_END_U     = 40"
             print "REFERENCE_LINE_INCREMENT = 0.01"
             printf "REFERENCE_LINE_START_Z   = %s\n", elev
+            if (straight) {
+                print "REFERENCE_LINE_START_X   = 7"
+                print "REFERENCE_LINE_START_Y   = -3"
+                print "REFERENCE_LINE_START_PHI = 0.4"
+            }
             print "LONG_SECTION_V_RIGHT     = -2"
             print "LONG_SECTION_V_LEFT      = 2"
             print "$KD_DEFINITION"
             print "#:LDFI"
-            print "D:reference line phi,rad"
+            if (!straight) print "D:reference line phi,rad"
             for (j = 0; j < nv; j++) printf "D:long section at v = %.1f,m\n", -2 + 0.5 * j
             print "$"
             print "$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$"
             seed = 12345
             for (i = 0; i < nu; i++) {
                 u = i * du
-                v[1] = (i == 0) ? sprintf("%20s", "*unused*") : sprintf("%20.12e", 0.015 * u)
+                k = straight ? 0 : 1
+                if (!straight)
+                    v[1] = (i == 0) ? sprintf("%20s", "*unused*") : sprintf("%20.12e", 0.015 * u)
                 for (j = 0; j < nv; j++) {
                     w = -2 + 0.5 * j
                     seed = (seed * 1103515245 + 12345) % 2147483648
@@ -53,9 +61,9 @@ make_measured() {
                         + 0.001 * (seed / 2147483648 - 0.5)
                     if (w > 0 && u >= 11.95 && u <= 12.05) g += 0.05
                     if (w >= 0.5 && w <= 1.5 && u >= 20 && u <= 20.4) g -= 0.03
-                    v[j + 2] = sprintf("%20.12e", g)
+                    v[j + 1 + k] = sprintf("%20.12e", g)
                 }
-                rec(v, nv + 1)
+                rec(v, nv + k)
             }
         }' >"$2"
 }

@@ -124,10 +124,19 @@ int tirenv_crg_track_reader_source(void *reader, double *u, double *z, int *got,
 
 /* ---- writing ------------------------------------------------------------------------- */
 
-/* The grid of a file to write: a straight reference line along x from (0, 0), rows at
- * u_start + i*u_increment, long sections at v[0] < v[1] < ... (m). */
+/* The grid of a file to write: a straight reference line from (x_start, y_start) with heading
+ * phi_start (0, 0, 0: along x from the origin), rows at u_start + i*u_increment, long sections
+ * at v[0] < v[1] < ... (m). The header states the placement and a $ROAD_CRG_MODS section
+ * without modifiers, so that OpenCRG (and Chrono, which applies OpenCRG's default modifiers
+ * to a file that states none) evaluates the road where the file puts it and at the heights
+ * written (docs/formats.md section 5). */
 typedef struct {
     tirenv_crg_encoding encoding;
+    double x_start, y_start;   /* the reference line at u_start in the x/y plane, m */
+    double phi_start;          /* its heading, rad from the x axis */
+    double z_start;            /* its height (REFERENCE_LINE_START_Z), m: the rows' heights
+                                * are written less it, so that a road high above z = 0 keeps
+                                * its detail in OpenCRG's single-precision grid */
     double u_start;            /* m */
     double u_increment;        /* m, > 0 */
     size_t rows;               /* rows that will follow, >= 2 */
@@ -142,7 +151,8 @@ typedef struct tirenv_crg_writer tirenv_crg_writer;
 /* Checks the layout, opens path and writes the header. */
 int tirenv_crg_writer_open(const char *path, const tirenv_crg_layout *layout,
                            tirenv_crg_writer **out, tirenv_diag *diag);
-/* One row: z[long_sections] heights, m. NaN is written as missing and allowed only at the
+/* One row: z[long_sections] heights, m (absolute: the file holds z - z_start, read back as
+ * z_start plus it, the same to round-off). NaN is written as missing and allowed only at the
  * borders of a row with at least one number (the format's rule); infinities are refused. */
 int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *diag);
 /* Checks that all rows came, pads the last binary record with NaN, renames the file into

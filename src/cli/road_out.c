@@ -1,9 +1,10 @@
-/* The effective road as a road file: an OpenCRG road with a straight reference line along x,
- * whose rows are the sweep's positions and whose long sections (the same h at -w/2 and +w/2)
- * carry the effective height across the tire's width, written row by row as the sweep goes;
+/* The effective road as a road file: an OpenCRG road with a straight reference line where the
+ * input road's is (cli_road_out_place), whose rows are the sweep's positions u and whose long
+ * sections (the same h at v_track -+ w/2) carry the effective height across the tire's width, written row by row as the sweep goes;
  * or a TNO/Adams poly_line road (x, z_left = z_right = h), written at the end from the heights
  * kept (16 bytes a position). Heights are h as the curve's h_m column has it.
  * SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -46,6 +47,53 @@ void cli_road_out_abort(cli_road_out *w)
     free(w);
 }
 
+int cli_road_out_place(const char *path, tirenv_profile_format format, double v,
+                       cli_road_out_layout *l, tirenv_diag *diag)
+{
+    l->v_track = l->x_start = l->y_start = l->phi_start = l->z_start = 0;
+    if (format != TIRENV_PROFILE_CRG)
+        return TIRENV_OK;
+    tirenv_crg *crg = NULL;
+    int status = tirenv_crg_open(path, &crg, diag);
+    if (status)
+        return status;
+    if (tirenv_crg_is_curved(crg)) {
+        tirenv_crg_free(crg);
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "reference line phi",
+                            "a curved reference line: tirenv writes an effective road on a "
+                            "straight one, which would lie beside this road; write it as "
+                            ".csv or .rdf (along u) instead");
+    }
+    /* Straight: the reference line at any u from its first row and its one heading. */
+    const size_t rows = tirenv_crg_rows(crg);
+    double *x = malloc(rows * sizeof *x), *y = malloc(rows * sizeof *y);
+    double *phi = malloc(rows * sizeof *phi);
+    status = x && y && phi ? tirenv_crg_refline(crg, x, y, phi, diag)
+                           : tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    /* The road's height on the track at the row at or before x_from: the written file's
+     * reference height, so that its grid holds only the relief (OpenCRG keeps the grid in
+     * single precision). */
+    tirenv_crg_track_spec spec = tirenv_crg_track_default();
+    spec.v = v;
+    double u0, z0 = 0;
+    if (!status)
+        status = tirenv_crg_track_rows(crg, &spec, tirenv_crg_row_at(crg, l->x_from), 1, &u0,
+                                       &z0, diag);
+    if (!status) {
+        const double du = l->x_from - tirenv_crg_u_start(crg);
+        l->z_start = z0;
+        l->phi_start = phi[0];
+        l->x_start = x[0] + cos(phi[0]) * du;
+        l->y_start = y[0] + sin(phi[0]) * du;
+        l->v_track = v;
+    }
+    free(x);
+    free(y);
+    free(phi);
+    tirenv_crg_free(crg);
+    return status;
+}
+
 int cli_road_out_open(const char *path, tirenv_profile_format f, const cli_road_out_layout *l,
                       cli_road_out **out, tirenv_diag *diag)
 {
@@ -67,8 +115,11 @@ int cli_road_out_open(const char *path, tirenv_profile_format f, const cli_road_
         if (l->n < 2)
             status = tirenv_error(diag, TIRENV_EINVAL, path, 0, "",
                                   "an OpenCRG road needs at least 2 positions, got %zu", l->n);
-        const double v[2] = {-l->half_width, l->half_width};
-        const tirenv_crg_layout layout = {.encoding = l->encoding, .u_start = l->x_from,
+        const double v[2] = {l->v_track - l->half_width, l->v_track + l->half_width};
+        const tirenv_crg_layout layout = {.encoding = l->encoding, .x_start = l->x_start,
+                                          .y_start = l->y_start, .phi_start = l->phi_start,
+                                          .z_start = l->z_start,
+                                          .u_start = l->x_from,
                                           .u_increment = l->dx, .rows = l->n,
                                           .long_sections = 2, .v = v, .comment = w->comment};
         if (!status)

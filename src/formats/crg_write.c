@@ -16,6 +16,7 @@ enum { RECORD_BYTES = 80, HEADER_RECORD = 72 };
 struct tirenv_crg_writer {
     tirenv_outfile out;
     tirenv_crg_encoding enc;
+    double z_start;                     /* m, subtracted from every height */
     size_t rows, nv, written;
     double *v;
     unsigned char record[RECORD_BYTES]; /* binary: the record being filled */
@@ -55,6 +56,11 @@ static int check_layout(const char *path, const tirenv_crg_layout *l, tirenv_dia
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "encoding",
                             "unknown encoding %d; expected LRFI, LDFI, KRBI or KDBI",
                             (int)l->encoding);
+    if (!(isfinite(l->x_start) && isfinite(l->y_start) && isfinite(l->phi_start) &&
+          isfinite(l->z_start)))
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "x_start",
+                            "reference line start (%g, %g, %g) m, heading %g rad: expected "
+                            "finite", l->x_start, l->y_start, l->z_start, l->phi_start);
     if (!(isfinite(l->u_start) && l->u_increment > 0 && isfinite(l->u_increment)))
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "u_increment",
                             "u_start %g and u_increment %g: expected finite, increment > 0",
@@ -100,11 +106,23 @@ static void write_header(FILE *fp, const tirenv_crg_layout *l)
     tirenv_fmt_shortest(l->u_increment, c);
     fprintf(fp, "REFERENCE_LINE_START_U   = %s\nREFERENCE_LINE_END_U     = %s\n"
                 "REFERENCE_LINE_INCREMENT = %s\n", a, b, c);
-    fputs("REFERENCE_LINE_START_X   = 0\nREFERENCE_LINE_START_Y   = 0\n"
-          "REFERENCE_LINE_START_PHI = 0\n", fp);
+    tirenv_fmt_shortest(l->x_start, a);
+    tirenv_fmt_shortest(l->y_start, b);
+    tirenv_fmt_shortest(l->phi_start, c);
+    fprintf(fp, "REFERENCE_LINE_START_X   = %s\nREFERENCE_LINE_START_Y   = %s\n"
+                "REFERENCE_LINE_START_PHI = %s\n", a, b, c);
+    if (l->z_start != 0) {
+        tirenv_fmt_shortest(l->z_start, a);
+        fprintf(fp, "REFERENCE_LINE_START_Z   = %s\n", a);
+    }
     tirenv_fmt_shortest(l->v[0], a);
     tirenv_fmt_shortest(l->v[l->long_sections - 1], b);
     fprintf(fp, "LONG_SECTION_V_RIGHT     = %s\nLONG_SECTION_V_LEFT      = %s\n", a, b);
+    /* A modifier section, even one that sets nothing, replaces OpenCRG's default modifiers
+     * (which move the reference point to x = y = z = 0, heading 0): the road stays where
+     * the reference line above puts it, at the heights below. */
+    fputs("$\n$ROAD_CRG_MODS\n"
+          "* no modifiers: evaluate the road where its reference line puts it\n", fp);
     fputs("$\n$KD_DEFINITION\n", fp);
     fprintf(fp, "#:%s\n", tirenv_crg_encoding_name(l->encoding));
     for (size_t j = 0; j < l->long_sections; j++) {
@@ -142,6 +160,7 @@ int tirenv_crg_writer_open(const char *path, const tirenv_crg_layout *layout,
     }
     memcpy(w->v, layout->v, layout->long_sections * sizeof *w->v);
     w->enc = layout->encoding;
+    w->z_start = layout->z_start;
     w->rows = layout->rows;
     w->nv = layout->long_sections;
     if ((status = tirenv_outfile_open(&w->out, path, diag))) {
@@ -187,7 +206,9 @@ int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *d
                             w->rows);
     size_t lo = w->nv, hi = 0;
     for (size_t j = 0; j < w->nv; j++) {
-        if (isinf(z[j]) || (w->enc == TIRENV_CRG_KRBI && !isnan(z[j]) && isinf((float)z[j])))
+        const double zw = z[j] - w->z_start;  /* what the file holds */
+        if (isinf(z[j]) || isinf(zw) || (w->enc == TIRENV_CRG_KRBI && !isnan(zw) &&
+                                         isinf((float)zw)))
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "z",
                                 "row %zu, long section %zu: height %g is not finite%s",
                                 w->written + 1, j + 1, z[j],
@@ -209,13 +230,13 @@ int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *d
                                 j + 1);
     if (w->enc == TIRENV_CRG_KRBI || w->enc == TIRENV_CRG_KDBI) {
         for (size_t j = 0; j < w->nv; j++)
-            put_binary(w, z[j]);
+            put_binary(w, z[j] - w->z_start);
     } else {
         const size_t width = w->enc == TIRENV_CRG_LRFI ? 10 : 20;
         const size_t per = RECORD_BYTES / width;
         char field[32];
         for (size_t j = 0; j < w->nv; j++) {
-            format_field(field, width, z[j]);
+            format_field(field, width, z[j] - w->z_start);
             fputs(field, w->out.fp);
             if ((j + 1) % per == 0 || j + 1 == w->nv)
                 fputc('\n', w->out.fp);
