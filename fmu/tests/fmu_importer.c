@@ -407,8 +407,11 @@ static void test_cleat(const char *road)
      * mode (step mode), the parameters and the time with it. */
     fmi2Component g = api.instantiate("bare", fmi2CoSimulation, guid, resources, &cb,
                                       fmi2False, fmi2False);
-    check(g && api.set_state(g, copy) == fmi2OK,
-          "the deserialized state set in an instance that was only instantiated");
+    n_logs = 0;
+    last_log[0] = '\0';
+    const fmi2Status set_bare = g ? api.set_state(g, copy) : fmi2Fatal;
+    check(set_bare == fmi2OK, "the deserialized state set in an instance that was only "
+          "instantiated%s%s", n_logs ? ": " : "", n_logs ? last_log : "");
     st = fmi2OK;
     for (size_t k = k0; k < k0 + n_after && st == fmi2OK; ++k) {
         st = step(g, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);

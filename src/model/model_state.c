@@ -4,6 +4,7 @@
  * state_size / _save / _restore). The profile is not in it: the model only borrows that.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -27,14 +28,17 @@ static uint64_t fnv(uint64_t h, const void *p, size_t n)
     return h;
 }
 
-/* The parameter blocks of only doubles are hashed as they lie (no padding in them); the
- * solver settings field by field, as their struct may have padding. */
+/* The parameter blocks of only doubles are hashed as they lie (no padding in them); the cam's
+ * doubles without its given bits (which keys a file set, not their values) and the padding
+ * after them, whose bytes are whatever the stack held (a state saved in one instance was
+ * refused by another of the same tire in a -O0 build); the solver settings field by field, as
+ * their struct may have padding. */
 unsigned long long tirenv_model__tire_print(const tirenv_tire *t)
 {
     uint64_t h = 0xcbf29ce484222325ull;
     h = fnv(h, &t->springs, sizeof t->springs);
     h = fnv(h, &t->ring, sizeof t->ring);
-    h = fnv(h, &t->cam, sizeof t->cam);
+    h = fnv(h, &t->cam, offsetof(tirenv_cam_params, given));
     const int method = (int)t->eq.method;
     const uint64_t max_iter = t->eq.max_iter;
     h = fnv(h, &method, sizeof method);
