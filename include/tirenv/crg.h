@@ -70,9 +70,12 @@ typedef struct {
      * 0 without one; 0 refuses the track naming the row and long section; 1 takes 0, 2 the
      * nearest valid value of the cross section, both plus GRID_NAN_OFFSET. */
     int grid_nan_mode;
+    /* With grid_nan_mode 1 or 2 set here (not -1): what is added to the filled value (mode 1:
+     * the value itself) instead of the file's GRID_NAN_OFFSET; NaN takes the file's. */
+    double grid_nan_offset;
 } tirenv_crg_track_spec;
 
-/* v = 0, border_mode_v = -1, grid_nan_mode = -1. */
+/* v = 0, border_mode_v = -1, grid_nan_mode = -1, grid_nan_offset = NaN. */
 tirenv_crg_track_spec tirenv_crg_track_default(void);
 
 /* The track as a profile: x = u of every row (m), z = the road's height there (m): the grid

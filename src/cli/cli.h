@@ -92,6 +92,8 @@ typedef struct {
     int have_track, have_side;
     double track;                     /* --track: lateral position on a .crg road, m */
     tirenv_rdf_side side;             /* --side: which side of a .rdf poly_line road */
+    int have_crg_nan;
+    tirenv_crg_track_spec crg_nan;    /* --crg-nan-mode: its grid_nan_mode and _offset */
     int have_width;
     double width;                     /* --width: the width tracks spread over, m */
     long tracks;                      /* --tracks: tracks across it; 0 if not given */
@@ -235,6 +237,9 @@ int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_r
 void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n);
 /* The help text of --track, --side, --width, --tracks (with_tracks: the last two too). */
 void cli_help_road(FILE *fp, int with_tracks);
+/* --crg-nan-mode keep|nearest|file|VALUE into spec's grid_nan_mode and grid_nan_offset (dst: a
+ * tirenv_crg_track_spec); prints the error and returns CLI_EXIT_USAGE on a bad argument. */
+int cli_parse_crg_nan_mode(void *dst, const char *arg);
 /* How a message names the obstacle: the file, or the generator as it was asked for. */
 void cli_obstacle_label(const cli_options *o, char *buf, size_t n);
 

@@ -14,7 +14,8 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv convert --profile IN -o OUT [--track V] [--side left|right|mean]\n"
-          "                      [--crg-encoding E] [--dx M] [--half-width M]\n"
+          "                      [--crg-nan-mode M] [--crg-encoding E] [--dx M]\n"
+          "                      [--half-width M]\n"
           "\n"
           "Converts a road between profile CSV ('x_m,z_m'), ASAM OpenCRG (.crg) and TNO/Adams\n"
           "2-D road (.rdf) files. IN's format is told by its content, OUT's by its extension\n"
@@ -30,6 +31,10 @@ static void usage(FILE *fp)
           "                       the left (default 0, the reference line)\n"
           "  --side S             .rdf poly_line input: left, right or mean (default) of\n"
           "                       its z_left and z_right\n"
+          "  --crg-nan-mode M     .crg input: a missing grid value a track needs is an\n"
+          "                       error (keep), the nearest valid value of its cross section\n"
+          "                       (nearest), the height M in m (a number), or as the file's\n"
+          "                       GRID_NAN_MODE says (file, the default)\n"
           "  --crg-encoding E     .crg output: kdbi (default: binary doubles, exact), krbi\n"
           "                       (binary floats), ldfi or lrfi (text)\n"
           "  --dx M               .crg output: resample every M m (default: the input's own\n"
@@ -74,6 +79,8 @@ static int parse(int argc, char *argv[], convert *cv)
         {.name = "profile", .kind = CLI_STRING, .dst = &cv->in},
         {.name = "track", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_track},
         {.name = "side", .kind = CLI_CUSTOM, .dst = &cv->src.rdf_side, .parse = parse_side},
+        {.name = "crg-nan-mode", .kind = CLI_CUSTOM, .dst = &cv->src.crg,
+         .parse = cli_parse_crg_nan_mode},
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &cv->w.crg_encoding,
          .parse = cli_parse_crg_encoding},
         {.name = "dx", .kind = CLI_POSITIVE, .dst = &cv->w.crg_u_increment,

@@ -25,6 +25,7 @@ enum {
     OPT_NN,
     OPT_TRACK,
     OPT_SIDE,
+    OPT_CRG_NAN_MODE,
     OPT_WIDTH,
     OPT_TRACKS,
     OPT_JOBS,
@@ -69,6 +70,7 @@ static const struct {
     {CLI_OBSTACLE, {"profile", required_argument, NULL, OPT_OBSTACLE + CLI_PROFILE}, 0},
     {CLI_OBSTACLE, {"track", required_argument, NULL, OPT_TRACK}, 0},
     {CLI_OBSTACLE, {"side", required_argument, NULL, OPT_SIDE}, 0},
+    {CLI_OBSTACLE, {"crg-nan-mode", required_argument, NULL, OPT_CRG_NAN_MODE}, 0},
     {CLI_TRACKS, {"width", required_argument, NULL, OPT_WIDTH}, 0},
     {CLI_TRACKS, {"tracks", required_argument, NULL, OPT_TRACKS}, 0},
     {CLI_SWEEP, {"x-from", required_argument, NULL, OPT_X_FROM}, 0},
@@ -162,6 +164,11 @@ static int shared_option(cli_options *o, int code, const char *arg)
             return CLI_EXIT_USAGE;
         }
         o->have_track = 1;
+        return CLI_EXIT_OK;
+    case OPT_CRG_NAN_MODE:
+        if (cli_parse_crg_nan_mode(&o->crg_nan, arg))
+            return CLI_EXIT_USAGE;
+        o->have_crg_nan = 1;
         return CLI_EXIT_OK;
     case OPT_SIDE:
         if (tirenv_rdf_side_find(arg, &o->side)) {

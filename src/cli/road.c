@@ -2,6 +2,7 @@
  * across (--track, an OpenCRG file's lateral position), which side of an RDF road (--side), and
  * the tracks spread across the tire's width (--width, --tracks; docs/models.md section 13),
  * read whole or a row at a time. SPDX-License-Identifier: GPL-3.0-or-later */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -14,7 +15,12 @@ void cli_help_road(FILE *fp, int with_tracks)
           "                       reference line); a CSV or RDF road is 2-D, the same on\n"
           "                       every track\n"
           "  --side S             with --profile ROAD.rdf: left, right or mean (default) of\n"
-          "                       a poly_line road's z_left and z_right\n",
+          "                       a poly_line road's z_left and z_right\n"
+          "  --crg-nan-mode M     with --profile ROAD.crg: a missing grid value the track\n"
+          "                       needs is an error (keep), the nearest valid value of its\n"
+          "                       cross section (nearest, OpenCRG's default), the height M in\n"
+          "                       m (a number), or as the file's GRID_NAN_MODE says (file,\n"
+          "                       the default; without one, an error)\n",
           fp);
     if (with_tracks)
         fputs("  --tracks N           evaluate N tracks across the tire's width around --track\n"
@@ -27,6 +33,29 @@ void cli_help_road(FILE *fp, int with_tracks)
               fp);
 }
 
+int cli_parse_crg_nan_mode(void *dst, const char *arg)
+{
+    tirenv_crg_track_spec *spec = dst;
+    double value;
+    if (strcmp(arg, "keep") == 0) {
+        spec->grid_nan_mode = 0;
+    } else if (strcmp(arg, "nearest") == 0) {
+        spec->grid_nan_mode = 2;
+        spec->grid_nan_offset = 0;
+    } else if (strcmp(arg, "file") == 0) {
+        spec->grid_nan_mode = -1;
+        spec->grid_nan_offset = NAN;
+    } else if (cli_parse_double(arg, &value) == 0) {
+        spec->grid_nan_mode = 1;  /* zero, plus the offset: the value */
+        spec->grid_nan_offset = value;
+    } else {
+        cli_error("--crg-nan-mode: expected keep, nearest, file or a height in m, got '%s'",
+                  arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
 {
     memset(r, 0, sizeof *r);
@@ -34,9 +63,9 @@ int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
     r->format = TIRENV_PROFILE_CSV;
     r->n = 1;
     r->from_file = o->obstacle == CLI_PROFILE;
-    if ((o->have_track || o->have_side) && !r->from_file) {
+    if ((o->have_track || o->have_side || o->have_crg_nan) && !r->from_file) {
         cli_error("--%s applies to a road file (--profile FILE), not to a generated obstacle",
-                  o->have_track ? "track" : "side");
+                  o->have_track ? "track" : o->have_side ? "side" : "crg-nan-mode");
         return CLI_EXIT_USAGE;
     }
     if (o->have_width && !o->tracks) {
@@ -62,6 +91,15 @@ int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
                   r->format == TIRENV_PROFILE_CRG ? "an OpenCRG road (use --track)"
                                                   : "a CSV profile");
         return CLI_EXIT_USAGE;
+    }
+    if (o->have_crg_nan && r->format != TIRENV_PROFILE_CRG) {
+        cli_error("--crg-nan-mode applies to an OpenCRG road; %s is %s", o->obstacle_arg,
+                  r->format == TIRENV_PROFILE_RDF ? "an RDF road" : "a CSV profile");
+        return CLI_EXIT_USAGE;
+    }
+    if (o->have_crg_nan) {
+        r->src.crg.grid_nan_mode = o->crg_nan.grid_nan_mode;
+        r->src.crg.grid_nan_offset = o->crg_nan.grid_nan_offset;
     }
     if (o->have_track)
         r->src.crg.v = o->track;

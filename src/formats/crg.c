@@ -105,7 +105,8 @@ size_t tirenv_crg_row_at(const tirenv_crg *c, double u)
 
 tirenv_crg_track_spec tirenv_crg_track_default(void)
 {
-    return (tirenv_crg_track_spec){.v = 0, .border_mode_v = -1, .grid_nan_mode = -1};
+    return (tirenv_crg_track_spec){.v = 0, .border_mode_v = -1, .grid_nan_mode = -1,
+                                   .grid_nan_offset = NAN};
 }
 
 /* ---- evaluation ------------------------------------------------------------------------- */
@@ -164,7 +165,13 @@ static int track_setup(const tirenv_crg *c, const tirenv_crg_track_spec *spec, t
     t->border_offset = c->opts[CRG_OPT_BORDER_OFFSET_V].value;
     t->nan_mode = spec->grid_nan_mode >= 0 ? spec->grid_nan_mode
                                            : (int)opt_or(&c->mods[CRG_MOD_GRID_NAN_MODE], 0);
-    t->nan_offset = c->mods[CRG_MOD_GRID_NAN_OFFSET].value;
+    if (isinf(spec->grid_nan_offset))
+        return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "grid_nan_offset",
+                            "%g: expected a finite height, or NaN for the file's",
+                            spec->grid_nan_offset);
+    t->nan_offset = spec->grid_nan_mode >= 0 && !isnan(spec->grid_nan_offset)
+                        ? spec->grid_nan_offset
+                        : c->mods[CRG_MOD_GRID_NAN_OFFSET].value;
     const double scale = c->mods[CRG_MOD_SCALE_Z_GRID].value;
     t->scale = scale != 0 ? scale : 1; /* OpenCRG: a factor of 0 means no scaling */
     t->smooth_beg = c->opts[CRG_OPT_BORDER_SMOOTH_UBEG].value;
