@@ -479,8 +479,10 @@ static double tolerance(double a, double b)
 }
 
 /* Lateral positions of numbered long sections from LONG_SECTION_V_RIGHT / _LEFT / _INCREMENT,
- * which the specification requires for them; a symmetric road when only the increment is
- * given, as the minimalist examples of the specification are. */
+ * which the specification requires for them. With only the increment the first long section
+ * is at v = 0 and the road lies to the left of the reference line, as OpenCRG's C API places
+ * it (its loader starts at V_RIGHT, 0 when not given; the centring it once had is commented
+ * out), so that a minimalist file is evaluated where OpenCRG and Chrono evaluate it. */
 static int numbered_positions(parse *p)
 {
     tirenv_crg *c = p->c;
@@ -491,7 +493,7 @@ static int numbered_positions(parse *p)
     if (inc->line) {
         step = inc->value;
         first = right->line ? right->value
-                : left->line ? left->value - span * step : -0.5 * span * step;
+                : left->line ? left->value - span * step : 0;
         if (right->line && left->line) {
             const double last = first + span * step;
             if (fabs(last - left->value) > tolerance(last, left->value)) {
