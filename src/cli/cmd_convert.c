@@ -15,7 +15,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv convert --profile IN -o OUT [--track V] [--side left|right|mean]\n"
           "                      [--crg-nan-mode M] [--crg-encoding E] [--dx M]\n"
-          "                      [--half-width M]\n"
+          "                      [--half-width M] [--pad M]\n"
           "\n"
           "Converts a road between profile CSV ('x_m,z_m'), ASAM OpenCRG (.crg) and TNO/Adams\n"
           "2-D road (.rdf) files. IN's format is told by its content, OUT's by its extension\n"
@@ -41,6 +41,10 @@ static void usage(FILE *fp)
           "                       spacing, which must then be even)\n"
           "  --half-width M       .crg output of one track: the road reaches M m to either\n"
           "                       side, the same heights across (default 0.5)\n"
+          "  --pad M              .crg output of a profile that starts or ends with a wall (a\n"
+          "                       bounded obstacle): M m of flat ground at its end heights\n"
+          "                       beyond the wall, which a road file has no other way to\n"
+          "                       keep (default 1; 0 refuses such a profile)\n"
           "  -h, --help           show this help\n",
           fp);
 }
@@ -48,6 +52,7 @@ static void usage(FILE *fp)
 typedef struct {
     const char *in, *out;
     int have_track;
+    double pad;                /* --pad: flat ground before and after a wall at an end, m */
     tirenv_profile_source src;
     tirenv_profile_write_options w;
 } convert;
@@ -60,6 +65,16 @@ static int parse_track(void *dst, const char *arg)
         return CLI_EXIT_USAGE;
     }
     cv->have_track = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_pad(void *dst, const char *arg)
+{
+    double *pad = dst;
+    if (cli_parse_double(arg, pad) || !(*pad >= 0) || !isfinite(*pad)) {
+        cli_error("convert: --pad expects a length >= 0 in m, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
     return CLI_EXIT_OK;
 }
 
@@ -87,6 +102,7 @@ static int parse(int argc, char *argv[], convert *cv)
          .what = "a positive length in m"},
         {.name = "half-width", .kind = CLI_POSITIVE, .dst = &cv->w.crg_half_width,
          .what = "a positive length in m"},
+        {.name = "pad", .kind = CLI_CUSTOM, .dst = &cv->pad, .parse = parse_pad},
         {.name = NULL},
     };
     const cli_parser p = {.name = "convert", .usage = usage, .opts = own, .groups = CLI_OUTPUT};
@@ -207,9 +223,58 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
     return status;
 }
 
+/* A profile that starts or ends with a wall (a bounded obstacle: two vertices at its first or
+ * last x) has its ground beyond that wall only by tirenv's rule that a profile goes on level
+ * at its end heights; an OpenCRG road has no ground beyond its rows, and its first row at the
+ * wall would take the wall's top (the higher side), so the obstacle would become a plateau.
+ * Flat ground of --pad m at the end heights is added before it is written (default 1 m), or
+ * with --pad 0 the conversion is refused, saying so. Other profiles are written unchanged. */
+static int pad_walls(const convert *cv, tirenv_profile **p, tirenv_diag *diag)
+{
+    const size_t n = tirenv_profile_size(*p);
+    const double *x = tirenv_profile_x(*p), *z = tirenv_profile_z(*p);
+    const int wall_first = n >= 2 && x[0] == x[1], wall_last = n >= 2 && x[n - 1] == x[n - 2];
+    if (!wall_first && !wall_last)
+        return TIRENV_OK;
+    if (!(cv->pad > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, cv->in, 0, "",
+                            "the profile %s with a wall at x = %g m: an OpenCRG road has no "
+                            "ground beyond its rows, so the wall and the ground %s it would be "
+                            "lost; give --pad M for M m of flat ground at each end",
+                            wall_first ? "starts" : "ends", wall_first ? x[0] : x[n - 1],
+                            wall_first ? "before" : "after");
+    double *px = malloc((n + 2) * sizeof *px), *pz = malloc((n + 2) * sizeof *pz);
+    if (!px || !pz) {
+        free(px);
+        free(pz);
+        return tirenv_error(diag, TIRENV_ENOMEM, cv->in, 0, "", "out of memory");
+    }
+    size_t m = 0;
+    if (wall_first) {
+        px[m] = x[0] - cv->pad;
+        pz[m++] = z[0];
+    }
+    memcpy(px + m, x, n * sizeof *px);
+    memcpy(pz + m, z, n * sizeof *pz);
+    m += n;
+    if (wall_last) {
+        px[m] = x[n - 1] + cv->pad;
+        pz[m++] = z[n - 1];
+    }
+    tirenv_profile *padded = tirenv_profile_alloc(m, px, pz);
+    free(px);
+    free(pz);
+    if (!padded)
+        return tirenv_error(diag, TIRENV_ENOMEM, cv->in, 0, "", "out of memory");
+    tirenv_profile_free(*p);
+    *p = padded;
+    return TIRENV_OK;
+}
+
 int cli_convert_main(int argc, char *argv[])
 {
-    convert cv = {.src = tirenv_profile_source_default(), .w = tirenv_profile_write_default()};
+    convert cv = {.pad = 1, .src = tirenv_profile_source_default(),
+                  .w = tirenv_profile_write_default()};
     const int code = parse(argc, argv, &cv);
     if (code != CLI_GO_ON)
         return code;
@@ -237,7 +302,7 @@ int cli_convert_main(int argc, char *argv[])
         if (!(status = tirenv_profile_read_file(cv.in, &cv.src, &p, &diag))) {
             if (to == TIRENV_PROFILE_CSV)
                 status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
-            else
+            else if (to != TIRENV_PROFILE_CRG || !(status = pad_walls(&cv, &p, &diag)))
                 status = tirenv_profile_write_file(cv.out, p, &cv.w, &diag);
             n = tirenv_profile_size(p);
             const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
