@@ -50,6 +50,9 @@ def positions(x_from, x_to, dx=None):
         raise invalid(f"expected dx > 0 and x_to >= x_from, got dx {dx} from {x_from} to "
                       f"{x_to}", "dx")
     n = lib.tirenv_positions_count(x_from, x_to, dx)
+    if n == 0:  # not finite, more than TIRENV_POSITIONS_MAX, or a step that does not move x
+        raise invalid(f"expected finite ends, at most 1e12 positions (TIRENV_POSITIONS_MAX) "
+                      f"and x + dx != x, got dx {dx} from {x_from} to {x_to}", "dx")
     return x_from + np.arange(n, dtype=np.float64) * dx
 
 
