@@ -41,6 +41,11 @@ class Network:
         a = np.ascontiguousarray(np.atleast_2d(a), dtype=np.float64)
         if a.ndim != 2 or a.shape[1] != self.n_inputs:
             raise ValueError(f"inputs: expected shape (n, {self.n_inputs}), got {a.shape}")
+        bad = ~np.isfinite(a)
+        if bad.any():  # the activations saturate: inf would map to a plausible-looking h
+            row, col = (int(i) for i in np.argwhere(bad)[0])
+            raise ValueError(f"inputs: expected finite numbers, got {a[row, col]} in row "
+                             f"{row}, column {col}")
         y = np.empty(a.shape[0])
         with self._lock:
             lib.tirenv_nn_run_batch(self._nn, a.shape[0], double_ptr(a), double_ptr(y))
