@@ -51,7 +51,7 @@ int tirenv_csv__next(tirenv_csv__reader *r)
             return 0;
         if (got == TIRENV_TEXT__LONG)
             return -tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + 1, "",
-                                 "line longer than %d characters; expected a CSV line (is "
+                                 "line longer than %d characters; expected a text line (is "
                                  "this a text file?)", TIRENV_TEXT__MAX_LINE);
         if (got == TIRENV_TEXT__ERROR)  /* a read error, or no memory: never the end */
             return -tirenv_error(r->diag, errno == ENOMEM ? TIRENV_ENOMEM : TIRENV_EIO,
