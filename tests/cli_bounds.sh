@@ -54,4 +54,25 @@ for kv in MASS=1e9 SEAT_AHEAD_OF_CG=1e9 GRAVITY=1e-308 FRONT_AXLE.TIRE_STIFFNESS
         '[ $rc -eq 2 ] && grep -q "${kv%%=*}: .*plausible range" err'
 done
 
+# Resources: a sweep of more than 1e6 cases is refused before anything is written; a
+# manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
+# name took 66 s there); a model file past 64 MiB is refused without being parsed.
+list=$(awk 'BEGIN { for (i = 1; i <= 101; ++i) printf "%s%.4f", (i > 1 ? "," : ""), 0.01 + i / 1000 }')
+run "$bin" sweep --lengths "$list" --heights "$list" --contact-lengths "$list" -o big
+check "sweep of 101^3 = 1,030,301 cases: exit 2 naming the cap, nothing written" \
+    '[ $rc -eq 2 ] && grep -q "more than 1000000 cases" err && [ ! -e big ] &&
+     [ ! -e big.partial ]'
+mkdir many
+awk 'BEGIN { print "case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve"
+             for (i = 1; i <= 100000; ++i) printf "c%d,train,0.3,13000,0.1,0.05,,c.csv\n", i
+             print "c77777,train,0.3,13000,0.1,0.05,,c.csv" }' >many/cases.csv
+run "$bin" dataset list many
+check "cases.csv: the duplicate c77777 named at line 100002" \
+    '[ $rc -eq 2 ] && grep -q "many/cases.csv:100002:1: case: case .c77777. appears twice" err'
+head -c 68000000 /dev/zero | tr '\0' ' ' >big.json
+run "$bin" predict --nn big.json --cleat 0.1,0.05 --contact-length 0.3
+check "a 68 MB model file: exit 2, larger than 64 MiB" \
+    '[ $rc -eq 2 ] && grep -q "big.json: larger than 64 MiB" err'
+rm -f big.json
+
 clilib_done

@@ -96,7 +96,7 @@ static int cam_check(const tirenv_cam_params *c, tirenv_diag *diag)
 }
 
 /* Where a value is plausible for a tire, from a scooter's to a mining truck's, as
- * docs/formats.md section 1 lists with each range's reason. A value outside is a typo or a
+ * docs/formats.md section 2.3 lists with each range's reason. A value outside is a typo or a
  * unit slip (1e308, 1e-308, kN for N), which the models would otherwise turn into results
  * that look like numbers (a cam load of 4.7e-310 N, a ring peak above the cleat). */
 static int plausible(const char *key, double value, double lo, double hi, const char *unit,
@@ -106,7 +106,7 @@ static int plausible(const char *key, double value, double lo, double hi, const 
         return TIRENV_OK;
     return tirenv_error(diag, TIRENV_EINVAL, "", 0, key,
                         "%g %s is outside the plausible range [%g, %g] %s of a tire "
-                        "(docs/formats.md section 1)", value, unit, lo, hi, unit);
+                        "(docs/formats.md section 2.3)", value, unit, lo, hi, unit);
 }
 
 /* Most nodes of the ring (2 round(pi/NODE_ANGLE)): 36,000, a node every 0.01 degree, 50
@@ -114,7 +114,7 @@ static int plausible(const char *key, double value, double lo, double hi, const 
  * 1e-20 overflowed the count. */
 #define TIRE_RING_MAX_NODES 36000.0
 
-/* The ranges of docs/formats.md section 1, checked once the signs and relations have been. */
+/* The ranges of docs/formats.md section 2.3, checked once the signs and relations have been. */
 static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
 {
     const tirenv_springs_params *s = &tire->springs;
