@@ -96,7 +96,7 @@ static int cam_check(const tirenv_cam_params *c, tirenv_diag *diag)
 }
 
 /* Where a value is plausible for a tire, from a scooter's to a mining truck's, as
- * docs/formats.md section 2.3 lists with each range's reason. A value outside is a typo or a
+ * docs/formats.md section 2 lists with each range's reason. A value outside is a typo or a
  * unit slip (1e308, 1e-308, kN for N), which the models would otherwise turn into results
  * that look like numbers (a cam load of 4.7e-310 N, a ring peak above the cleat). */
 static int plausible(const char *key, double value, double lo, double hi, const char *unit,
@@ -106,7 +106,7 @@ static int plausible(const char *key, double value, double lo, double hi, const 
         return TIRENV_OK;
     return tirenv_error(diag, TIRENV_EINVAL, "", 0, key,
                         "%g %s is outside the plausible range [%g, %g] %s of a tire "
-                        "(docs/formats.md section 2.3)", value, unit, lo, hi, unit);
+                        "(docs/formats.md section 2)", value, unit, lo, hi, unit);
 }
 
 /* Most nodes of the ring (2 round(pi/NODE_ANGLE)): 36,000, a node every 0.01 degree, 50
@@ -114,7 +114,7 @@ static int plausible(const char *key, double value, double lo, double hi, const 
  * 1e-20 overflowed the count. */
 #define TIRE_RING_MAX_NODES 36000.0
 
-/* The ranges of docs/formats.md section 2.3, checked once the signs and relations have been. */
+/* The ranges of docs/formats.md section 2, checked once the signs and relations have been. */
 static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
 {
     const tirenv_springs_params *s = &tire->springs;
@@ -124,12 +124,12 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
     int status;
     if ((status = plausible("UNLOADED_RADIUS", s->R0, 0.05, 5, "m", diag)) ||
         (status = plausible("WIDTH", tire->width, 0, 5, "m", diag)) ||
-        (status = plausible("RADIAL_STIFFNESS", s->c_r, 1e3, 1e9, "N/m per rad", diag)) ||
+        (status = plausible("RADIAL_STIFFNESS", s->c_r, 1e3, 1e12, "N/m per rad", diag)) ||
         (status = plausible("INTERRADIAL_STIFFNESS", s->c_b, 0, 1e8, "N*rad/m", diag)) ||
         (status = plausible("BELT_BENDING_STIFFNESS", r->EI, 0, 1e5, "N*m^2", diag)) ||
         (status = plausible("BELT_PRETENSION", r->T, 0, 1e7, "N", diag)) ||
-        (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 1e3, 1e9, "N/m^2", diag)) ||
-        (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e11, "N/m^2", diag)) ||
+        (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 1e3, 1e10, "N/m^2", diag)) ||
+        (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e13, "N/m^2", diag)) ||
         (status = plausible("NODE_ANGLE", r->dtheta, 2 * M_PI / TIRE_RING_MAX_NODES,
                             M_PI / 8, "rad", diag)) ||
         (status = plausible("FORCE_TOLERANCE", eq->eps_F, 0, 100, "N", diag)) ||

@@ -85,9 +85,17 @@ static int vehicle_check_axle(const tirenv_axle *ax, const char *section, int re
                             ax->c_s);
     /* A suspended axle's mass is a state of its own and divides by it; a rigid axle's is
      * part of the body's and unused. */
-    if ((status = vehicle_require(FIELD("AXLE_MASS"), ax->m_a, ax->k_s == 0, "kg", diag)) ||
-        (status = vehicle_plausible(FIELD("TIRES"), ax->tires, 1, 16, "tires", diag)) ||
-        (status = vehicle_plausible(FIELD("TIRE_STIFFNESS"), ax->k_t, 1e4, 1e8, "N/m",
+    return vehicle_require(FIELD("AXLE_MASS"), ax->m_a, ax->k_s == 0, "kg", diag);
+#undef FIELD
+}
+
+static int axle_plausible(const tirenv_axle *ax, const char *section, tirenv_diag *diag)
+{
+    char f[64];
+#define FIELD(key) axle_field(f, section, key)
+    int status;
+    if ((status = vehicle_plausible(FIELD("TIRES"), ax->tires, 1, 16, "tires", diag)) ||
+        (status = vehicle_plausible(FIELD("TIRE_STIFFNESS"), ax->k_t, 1e4, 1e10, "N/m",
                                     diag)) ||
         (status = vehicle_plausible(FIELD("TIRE_DAMPING"), ax->c_t, 0, 1e6, "N*s/m", diag)) ||
         (status = vehicle_plausible(FIELD("SUSPENSION_STIFFNESS"), ax->k_s, 0, 1e9, "N/m",
@@ -98,6 +106,24 @@ static int vehicle_check_axle(const tirenv_axle *ax, const char *section, int re
         return status;
     return TIRENV_OK;
 #undef FIELD
+}
+
+/* The ranges of docs/formats.md section 3, once the signs, the relations and the static
+ * loads have passed (their messages say more where they apply). */
+static int vehicle_plausible_all(const tirenv_vehicle *v, tirenv_diag *diag)
+{
+    int status;
+    if ((status = vehicle_plausible("MASS", v->m, 50, 1e6, "kg", diag)) ||
+        (status = vehicle_plausible("PITCH_INERTIA", v->I_y, 1, 1e8, "kg*m^2", diag)) ||
+        (status = vehicle_plausible("CG_TO_FRONT_AXLE", v->a, 0, 20, "m", diag)) ||
+        (status = vehicle_plausible("CG_TO_REAR_AXLE", v->b, 0, 20, "m", diag)) ||
+        (status = vehicle_plausible("GRAVITY", v->g, 1, 30, "m/s^2", diag)) ||
+        (status = vehicle_plausible("SEAT_AHEAD_OF_CG", v->seat_x, -20, 20, "m", diag)) ||
+        (status = vehicle_plausible("SEAT_ABOVE_CG", v->seat_h, -10, 10, "m", diag)) ||
+        (status = axle_plausible(&v->front, "FRONT_AXLE", diag)) ||
+        (status = axle_plausible(&v->rear, "REAR_AXLE", diag)))
+        return status;
+    return TIRENV_OK;
 }
 
 int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag)
@@ -115,18 +141,11 @@ int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag)
     if (!isfinite(v->seat_h))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SEAT_ABOVE_CG",
                             "must be a finite length in m, got %g", v->seat_h);
-    if ((status = vehicle_plausible("MASS", v->m, 50, 1e6, "kg", diag)) ||
-        (status = vehicle_plausible("PITCH_INERTIA", v->I_y, 1, 1e8, "kg*m^2", diag)) ||
-        (status = vehicle_plausible("CG_TO_FRONT_AXLE", v->a, 0, 20, "m", diag)) ||
-        (status = vehicle_plausible("CG_TO_REAR_AXLE", v->b, 0, 20, "m", diag)) ||
-        (status = vehicle_plausible("GRAVITY", v->g, 1, 30, "m/s^2", diag)) ||
-        (status = vehicle_plausible("SEAT_AHEAD_OF_CG", v->seat_x, -20, 20, "m", diag)) ||
-        (status = vehicle_plausible("SEAT_ABOVE_CG", v->seat_h, -10, 10, "m", diag)))
-        return status;
     if ((status = vehicle_check_axle(&v->front, "FRONT_AXLE", 0, diag)) ||
-        (status = vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag)))
+        (status = vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag)) ||
+        (status = tirenv_ride__static_check(v, diag)))
         return status;
-    return tirenv_ride__static_check(v, diag);
+    return vehicle_plausible_all(v, diag);
 }
 
 /* Moments about the axles split the body's weight m*g in the ratio b : a; a suspended front
