@@ -34,7 +34,8 @@ class Network:
         return R0
 
     def predict(self, inputs):
-        """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4)."""
+        """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4).
+        A NaN or infinite input raises ValueError naming its row and column."""
         a = np.asarray(inputs)
         if a.dtype.kind not in "biuf":
             raise TypeError(f"inputs: expected real numbers, got dtype {a.dtype}")
