@@ -20,7 +20,7 @@ enum { MAX_KEYS = 64 };
 
 /* The keys of the default tire as written, "SECTION.KEY" (METHOD and [UNITS] aside: a name,
  * not a number). */
-static size_t tire_keys(char keys[][80])
+static size_t tire_keys(char keys[][160])
 {
     char path[] = "/tmp/tirenv-test-keys-XXXXXX";
     const int fd = mkstemp(path);
@@ -43,7 +43,7 @@ static size_t tire_keys(char keys[][80])
             sscanf(line, " %63[A-Z0-9_] =", key) != 1 || strcmp(key, "METHOD") == 0)
             continue;
         assert_true(n < MAX_KEYS);
-        snprintf(keys[n++], 80, "%s.%s", section, key);
+        snprintf(keys[n++], 160, "%s.%s", section, key);
     }
     fclose(fp);
     unlink(path);
@@ -65,7 +65,7 @@ static void test_every_key_every_value(void **state)
 {
     (void)state;
     static const char *const values[] = {"0", "-1", "nan", "inf", "1e308", "1e-308"};
-    static char keys[MAX_KEYS][80];
+    static char keys[MAX_KEYS][160];
     const size_t n_keys = tire_keys(keys);
     assert_true(n_keys >= 20);  /* the table's 25 numeric keys, give or take a new one */
     const double L = 0.1, H = 0.05, load = 13000;  /* N: the default tire's working load */
@@ -78,7 +78,7 @@ static void test_every_key_every_value(void **state)
     size_t refused_set = 0, refused_model = 0, curves = 0;
     for (size_t i = 0; i < n_keys; ++i)
         for (size_t v = 0; v < sizeof values / sizeof values[0]; ++v) {
-            char assignment[128];
+            char assignment[200];
             snprintf(assignment, sizeof assignment, "%s=%s", keys[i], values[v]);
             const char *key = strchr(keys[i], '.') + 1;
             tirenv_tire t = tirenv_tire_default();
