@@ -294,32 +294,55 @@ static void test_cleanup_on_signal(void **state)
 {
     scratch *s = *state;
     char path[700], dir[700];
-    tirenv_outfile f;
-    tirenv_diag d;
-    assert_int_equal(tirenv_outfile_open(&f, at(s, "a.csv", path), &d), TIRENV_OK);
-    tirenv_outdir *od;
-    assert_int_equal(tirenv_outdir_begin(at(s, "rep", dir), &od, &d), TIRENV_OK);
-    char inner[800];
-    snprintf(inner, sizeof inner, "%s/sub", tirenv_outdir_path(od));
-    assert_int_equal(mkdir(inner, 0755), 0);
-    strcat(inner, "/deep.txt");
-    write_text(inner, "x");
-    assert_int_equal(count(s->dir, "tirenv-tmp"), 2);
-    tirenv_cleanup_on_signal();  /* what the CLI's handler calls */
-    assert_int_equal(count(s->dir, ""), 0);
-    /* The handles are still to be released, as after any failure. */
-    tirenv_outfile_abort(&f);
-    tirenv_outdir_abort(od);
+    /* Called directly, as the CLI's handler calls it; in a child, for afterwards the process
+     * makes no temporary entry any more (it is on its way out: a --jobs worker that went on
+     * creating files after the cleanup left one behind). The exit code says which check
+     * failed. */
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        tirenv_outfile f;
+        tirenv_diag d;
+        tirenv_outdir *od;
+        if (tirenv_outfile_open(&f, at(s, "a.csv", path), &d) ||
+            tirenv_outdir_begin(at(s, "rep", dir), &od, &d))
+            _exit(2);
+        char inner[800];
+        snprintf(inner, sizeof inner, "%s/sub", tirenv_outdir_path(od));
+        if (mkdir(inner, 0755) != 0)
+            _exit(3);
+        strcat(inner, "/deep.txt");
+        write_text(inner, "x");
+        if (count(s->dir, "tirenv-tmp") != 2)
+            _exit(4);
+        tirenv_cleanup_on_signal();  /* what the CLI's handler calls */
+        if (count(s->dir, "") != 0)
+            _exit(5);
+        /* The handles are still to be released, as after any failure. */
+        tirenv_outfile_abort(&f);
+        tirenv_outdir_abort(od);
+        /* No new output starts: nothing would remove it. */
+        tirenv_outfile g;
+        if (tirenv_outfile_open(&g, at(s, "b.csv", path), &d) != TIRENV_EIO ||
+            tirenv_outdir_begin(at(s, "rep2", dir), &od, &d) != TIRENV_EIO)
+            _exit(6);
+        _exit(count(s->dir, "") == 0 ? 0 : 7);
+    }
+    int status;
+    waitpid(child, &status, 0);
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 0);
 
     /* In a child killed by SIGTERM with a handler as the CLI's. */
-    const pid_t child = fork();
+    child = fork();
     assert_true(child >= 0);
     if (child == 0) {
         struct sigaction sa = {0};
         sa.sa_handler = on_term;
         sigaction(SIGTERM, &sa, NULL);
         tirenv_outfile g;
-        if (tirenv_outfile_open(&g, path, &d))
+        tirenv_diag d;
+        if (tirenv_outfile_open(&g, at(s, "a.csv", path), &d))
             _exit(2);
         fputs("half", g.fp);
         raise(SIGTERM);

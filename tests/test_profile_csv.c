@@ -75,16 +75,30 @@ static void test_bom_and_blanks(void **state)
     tirenv_profile_free(p);
 }
 
-/* No fixed limits: many rows (the array grows) and a very long comment line. */
+/* Many rows (the array grows) and a comment line as long as the line cap allows (65,536
+ * characters, docs/formats.md section 1); one character more is an error at its line. */
 static void test_large_file(void **state)
 {
     (void)state;
     char path[64];
-    write_temp(path, "");
-    FILE *fp = fopen(path, "w");
+    write_temp(path, "x_m,z_m\n0,0\n");
+    FILE *fp = fopen(path, "a");
     assert_non_null(fp);
     fputc('#', fp);
-    for (size_t k = 0; k < 100000; k++)
+    for (size_t k = 0; k < 65536; k++)
+        fputc('-', fp);
+    fputs("\n1,0\n", fp);
+    assert_int_equal(fclose(fp), 0);
+    tirenv_profile *q = NULL;
+    tirenv_diag e;
+    assert_int_equal(tirenv_profile_read_csv(path, &q, &e), TIRENV_EPARSE);
+    assert_null(q);
+    assert_int_equal(e.line, 3);
+    assert_non_null(strstr(e.message, "line longer than 65536 characters"));
+    fp = fopen(path, "w");
+    assert_non_null(fp);
+    fputc('#', fp);
+    for (size_t k = 0; k < 65535; k++)
         fputc('-', fp);
     fputs("\nx_m,z_m\n", fp);
     const size_t n = 20001;

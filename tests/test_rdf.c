@@ -100,6 +100,17 @@ static void test_poly_line(void **state)
     p = read_text(fx, text, TIRENV_RDF_MEAN);
     assert_vertices(p, 3, x, mean);
     tirenv_profile_free(p);
+    /* Another sub-block's table is not tirenv's: the quoted lines of an Adams header's
+     * (COMMENTS), even one that holds '=', are skipped, and the road reads as before
+     * (the fuzz seed corpus/rdf/poly_line.rdf was refused at 'a road'). */
+    static const char commented[] =
+        "[MDI_HEADER]\nFILE_TYPE = 'rdf'\n(COMMENTS)\n{comment_string}\n'a road'\n"
+        "'x = 1 is not a key'\n"
+        "[UNITS]\nLENGTH = 'mm'\n[MODEL]\nMETHOD = '2D'\nROAD_TYPE = 'poly_line'\n"
+        "[PARAMETERS]\nOFFSET = 10\n(XZ_DATA)\n0 0 2\n1000.5 20 40\n2000 -10 30\n";
+    p = read_text(fx, commented, TIRENV_RDF_LEFT);
+    assert_vertices(p, 3, x, left);
+    tirenv_profile_free(p);
     /* A vertical wall (two rows at one x) is allowed, as in a tirenv profile. */
     p = read_text(fx, "[UNITS]\nLENGTH = 'meter'\n[MODEL]\nMETHOD = '2d'\n"
                       "ROAD_TYPE = 'POLY_LINE'\n[PARAMETERS]\n(XZ_DATA)\n0 0 0\n1 0 0\n"

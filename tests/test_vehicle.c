@@ -431,22 +431,23 @@ static void test_set_errors(void **state)
 
 /* ---- writing --------------------------------------------------------------------------- */
 
-/* Values that need all 17 digits, extremes of the double range, everyday ones; absolute and
- * empty paths, one with a '$' and spaces. */
+/* Values that need all 17 digits, extremes of the plausible ranges (the double range's where
+ * they allow it: DBL_MIN, the smallest subnormal), everyday ones; absolute and empty paths,
+ * one with a '$' and spaces. */
 static void test_write_read_round_trip(void **state)
 {
     tirenv_test_dir *fx = *state;
     tirenv_vehicle extreme = entropic_vehicle();
-    extreme.m = 0.1 + 0.2; /* 0.30000000000000004 */
-    extreme.I_y = DBL_MAX;
+    extreme.m = nextafter(4500, 5000); /* 4500.0000000000009: 17 digits */
+    extreme.I_y = nextafter(1e8, 0);   /* the largest below the range's top */
     extreme.a = DBL_MIN;
     extreme.b = 4.9406564584124654e-324; /* the smallest subnormal */
     extreme.seat_x = -1.0 / 3.0;
     extreme.seat_h = -0.0;
     extreme.front.c_t = 0;
     extreme.front.k_s = M_PI;
-    extreme.front.c_s = 1e300;
-    extreme.rear.tires = 9007199254740992.0; /* 2^53 */
+    extreme.front.c_s = 1e7;   /* the plausible ranges' tops, docs/formats.md section 3 */
+    extreme.rear.tires = 16;
     snprintf(extreme.front.tire_file, sizeof extreme.front.tire_file, "/a b/$c.tir");
     extreme.rear.tire_file[0] = '\0';
     const tirenv_vehicle vehicles[] = {entropic_vehicle(), tirenv_vehicle_default(), extreme};

@@ -99,8 +99,11 @@ int tirenv_outfile_is_atomic(const tirenv_outfile *f);
 int tirenv_mkdir_p(const char *path, tirenv_diag *diag);
 
 /* Removes the temporary files and staging directories of every output this process has
- * open (tirenv_outfile, tirenv_outdir). Async-signal-safe: for a SIGINT or SIGTERM handler,
- * which then re-raises the signal (the tirenv command installs one). */
+ * open (tirenv_outfile, tirenv_outdir), after waiting (at most 0.2 s) for other threads
+ * creating one; from then on the process creates none (opening an output fails with
+ * TIRENV_EIO), so a thread still running cannot leave one behind. Async-signal-safe: for a
+ * SIGINT or SIGTERM handler, which then re-raises the signal (the tirenv command installs
+ * one); a process that carries on afterwards writes no more outputs. */
 void tirenv_cleanup_on_signal(void);
 
 /* An output directory written as a whole (tirenv study -o, compare -o, ride --out-dir,

@@ -96,7 +96,8 @@ typedef struct {
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 
-/* Number of samples a run writes: floor(duration / dt) + 1 (t = 0 included). */
+/* Number of samples a run writes: floor(duration / dt) + 1 (t = 0 included); 0 for settings
+ * a run refuses (dt not positive, duration negative or not finite, more than 1e9 steps). */
 size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);
 
 /* Runs the simulation from the steady start (static equilibrium on the inputs' heights at

@@ -30,9 +30,15 @@ typedef struct {
     size_t rebuilds;       /* windows built */
 } tirenv_stream_stats;
 
+/* Most positions a sweep may have (1e12: a million kilometres at 1 mm; beyond it a sweep is
+ * a mistake, and (double)k stays exact far past it). Callers cap lower for what they hold. */
+#define TIRENV_POSITIONS_MAX 1e12
+
 /* Number of positions x_k = x_from + k*dx (m, dx > 0, x_to >= x_from) up to x_to plus a
  * billionth of a step, so that 0 .. 1 at 0.1 gives 11 despite rounding: the sweeps of the CLI
- * and of tirenv_model_stream. */
+ * and of tirenv_model_stream. Returns 0 (never a valid count) if an argument is not finite,
+ * dx <= 0, x_to < x_from, the count would pass TIRENV_POSITIONS_MAX, or dx is too small to
+ * move x at the ends (x + dx == x). Constant time. */
 size_t tirenv_positions_count(double x_from, double x_to, double dx);
 
 /* A sweep: the positions x_k = x_from + k*dx up to x_to, tirenv_positions_count of them. */

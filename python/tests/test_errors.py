@@ -105,3 +105,35 @@ def test_bad_vehicle_and_ride_arguments(tmp_path):
     assert e.value.field == "dt"
     with pytest.raises(tirenv.TirenvError, match="Wk"):
         tirenv.comfort([0.0] * 1000, 1000.0, "Wz")
+
+
+def test_positions_that_would_never_end():
+    # tirenv_positions_count looped forever on these (issue 27.2); now each is an error.
+    for args in [(0.0, float("inf"), 0.1), (0.0, float("nan"), 0.1), (-1e300, 1e300, 0.1),
+                 (1e300, 1e300, 0.1), (0.0, 1.0, 1e-300)]:
+        with pytest.raises(tirenv.TirenvError, match="dx"):
+            tirenv.positions(*args)
+    assert len(tirenv.positions(0.0, 1.0, 0.1)) == 11
+
+
+def test_network_refuses_inputs_that_are_not_finite(network_file):
+    # The activations saturate: inf came out as a plausible h of -0.0187 m (issue 27.7).
+    import numpy as np
+    net = tirenv.Network(network_file)
+    good = np.array([[0.1, 0.3, 0.05, 0.1]])
+    assert np.isfinite(net.predict(good)).all()
+    for bad in [float("inf"), float("-inf"), float("nan")]:
+        rows = np.vstack([good, good])
+        rows[1, 2] = bad
+        with pytest.raises(ValueError, match="row 1, column 2"):
+            net.predict(rows)
+
+
+def test_plausible_ranges_name_the_key():
+    for key, value in [("TREAD_STIFFNESS", 1e-308), ("NODE_ANGLE", 1e-20),
+                       ("ELLIPS_SHIFT", 1e308)]:
+        with pytest.raises(tirenv.TirenvError, match=key):
+            tirenv.Tire(set={key: value})
+    for key, value in [("MASS", 1e9), ("GRAVITY", 1e-308), ("SEAT_AHEAD_OF_CG", 1e9)]:
+        with pytest.raises(tirenv.TirenvError, match=key):
+            tirenv.Vehicle(set={key: value})

@@ -43,13 +43,17 @@ def track_positions(n, track=0.0, width=0.38):
 def positions(x_from, x_to, dx=None):
     """The CLI's sweep x_k = x_from + k*dx up to x_to (with its 1e-9 dx allowance), bit for
     bit the positions 'tirenv envelope --x-from --x-to --dx' evaluates; dx (m) by default
-    the CLI's (tirenv_positions_default)."""
+    the CLI's (tirenv_positions_default). Ends that are not finite, more than 1e12 positions
+    or a dx too small to move x raise TirenvError (tirenv_positions_count gives 0)."""
     if dx is None:  # the default sweep's spacing, which does not depend on its ends
         dx = lib.tirenv_positions_default(x_from, x_to, 0.0).dx
     if not (dx > 0 and x_to >= x_from):
         raise invalid(f"expected dx > 0 and x_to >= x_from, got dx {dx} from {x_from} to "
                       f"{x_to}", "dx")
     n = lib.tirenv_positions_count(x_from, x_to, dx)
+    if n == 0:  # not finite, more than TIRENV_POSITIONS_MAX, or a step that does not move x
+        raise invalid(f"expected finite ends, at most 1e12 positions (TIRENV_POSITIONS_MAX) "
+                      f"and x + dx != x, got dx {dx} from {x_from} to {x_to}", "dx")
     return x_from + np.arange(n, dtype=np.float64) * dx
 
 

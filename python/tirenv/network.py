@@ -36,7 +36,8 @@ class Network:
 
     def predict(self, inputs):
         """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4) gives
-        n values, one row of 4 a float."""
+        n values, one row of 4 a float. A NaN or infinite input raises ValueError naming its
+        row and column."""
         a = np.asarray(inputs)
         one = a.ndim == 1
         if a.dtype.kind not in "biuf":
@@ -44,6 +45,11 @@ class Network:
         a = np.ascontiguousarray(np.atleast_2d(a), dtype=np.float64)
         if a.ndim != 2 or a.shape[1] != self.n_inputs:
             raise invalid(f"expected shape (n, {self.n_inputs}), got {a.shape}", "inputs")
+        bad = ~np.isfinite(a)
+        if bad.any():  # the activations saturate: inf would map to a plausible-looking h
+            row, col = (int(i) for i in np.argwhere(bad)[0])
+            raise invalid(f"expected finite numbers, got {a[row, col]} in row {row}, "
+                          f"column {col}", "inputs")
         y = np.empty(a.shape[0])
         with self._lock:
             lib.tirenv_nn_run_batch(self._nn, a.shape[0], double_ptr(a), double_ptr(y))

@@ -353,11 +353,9 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
         return cli_fail(status, &diag);
     const tirenv_positions s = sweep(o, m, first, last);
     const double x_from = s.x_from, x_to = s.x_to, dx = s.dx;
-    if (!(x_to >= x_from)) {
-        cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
-                  x_from, x_to);
-        return CLI_EXIT_USAGE;
-    }
+    const int bad = cli_positions_check(x_from, x_to, dx, CLI_MAX_STREAM_POSITIONS);
+    if (bad)
+        return bad;
     tirenv_profile_file_reader *in = NULL;
     tirenv_outfile out;
     int have_out = 0;

@@ -238,19 +238,33 @@ int cli_load(const cli_options *o, tirenv_model *m, double *load)
 
 /* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
  * multiplication so that no error accumulates over thousands of steps. */
-int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out)
+int cli_positions_check(double x_from, double x_to, double dx, double max)
 {
     if (!(dx > 0) || !(x_to >= x_from)) {
         cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
                   x_from, x_to);
         return CLI_EXIT_USAGE;
     }
+    /* %.3g: a count of 1e300 is not printed as 301 digits. */
     const double steps = floor((x_to + dx * 1e-9 - x_from) / dx);
-    if (!(steps < CLI_MAX_POSITIONS)) {
-        cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1,
-                  CLI_MAX_POSITIONS);
+    if (!(steps < max)) {
+        cli_error("%.3g positions from %g to %g m every %g m is too many (at most %.0f); "
+                  "raise --dx or narrow --x-from/--x-to", steps + 1, x_from, x_to, dx, max);
         return CLI_EXIT_USAGE;
     }
+    if (tirenv_positions_count(x_from, x_to, dx) == 0) {
+        cli_error("--dx %g m does not move x at %g m (x + dx == x); expected a larger --dx",
+                  dx, fabs(x_from) > fabs(x_to) ? x_from : x_to);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out)
+{
+    const int code = cli_positions_check(x_from, x_to, dx, CLI_MAX_POSITIONS);
+    if (code)
+        return code;
     const size_t n = tirenv_positions_count(x_from, x_to, dx);
     double *x = malloc(n * sizeof *x);
     if (!x)

@@ -426,7 +426,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     s.dx = r->span.dx;
     const double n_grid = tirenv_ride_span_grid(&r->span, &s.v, x_from, x_to_max, &s.x0);
     if (n_grid > CLI_MAX_POSITIONS) {
-        cli_error("ride: %.0f input positions (from %g m to %g m every %g m); at most %.0f: "
+        cli_error("ride: %.3g input positions (from %g m to %g m every %g m); at most %.0f: "
                   "check --dx", n_grid, s.x0, x_to_max + r->span.grid_margin, s.dx,
                   CLI_MAX_POSITIONS);
         code = CLI_EXIT_USAGE;

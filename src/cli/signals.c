@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "cli/signals.h"
 
+#include <errno.h>
 #include <signal.h>
 #include <string.h>
 
@@ -17,9 +18,11 @@ enum { N_HANDLED = sizeof handled / sizeof handled[0] };
  * delivered with the default action: the exit status says what killed the program. */
 static void on_signal(int sig)
 {
+    const int saved = errno;  /* the interrupted code's, should raise return (a blocked sig) */
     tirenv_cleanup_on_signal();
     signal(sig, SIG_DFL);
     raise(sig);
+    errno = saved;
 }
 
 void cli_signals_install(void)

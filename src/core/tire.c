@@ -95,6 +95,59 @@ static int cam_check(const tirenv_cam_params *c, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
+/* Where a value is plausible for a tire, from a scooter's to a mining truck's, as
+ * docs/formats.md section 2 lists with each range's reason. A value outside is a typo or a
+ * unit slip (1e308, 1e-308, kN for N), which the models would otherwise turn into results
+ * that look like numbers (a cam load of 4.7e-310 N, a ring peak above the cleat). */
+static int plausible(const char *key, double value, double lo, double hi, const char *unit,
+                     tirenv_diag *diag)
+{
+    if (value >= lo && value <= hi)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EINVAL, "", 0, key,
+                        "%g %s is outside the plausible range [%g, %g] %s of a tire "
+                        "(docs/formats.md section 2)", value, unit, lo, hi, unit);
+}
+
+/* Most nodes of the ring (2 round(pi/NODE_ANGLE)): 36,000, a node every 0.01 degree, 50
+ * times the default's 720. Each costs memory and time in every evaluation; NODE_ANGLE =
+ * 1e-20 overflowed the count. */
+#define TIRE_RING_MAX_NODES 36000.0
+
+/* The ranges of docs/formats.md section 2, checked once the signs and relations have been. */
+static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
+{
+    const tirenv_springs_params *s = &tire->springs;
+    const tirenv_ring_params *r = &tire->ring;
+    const tirenv_cam_params *c = &tire->cam;
+    const tirenv_eq_settings *eq = &tire->eq;
+    int status;
+    if ((status = plausible("UNLOADED_RADIUS", s->R0, 0.05, 5, "m", diag)) ||
+        (status = plausible("WIDTH", tire->width, 0, 5, "m", diag)) ||
+        (status = plausible("RADIAL_STIFFNESS", s->c_r, 1e3, 1e12, "N/m per rad", diag)) ||
+        (status = plausible("INTERRADIAL_STIFFNESS", s->c_b, 0, 1e8, "N*rad/m", diag)) ||
+        (status = plausible("BELT_BENDING_STIFFNESS", r->EI, 0, 1e5, "N*m^2", diag)) ||
+        (status = plausible("BELT_PRETENSION", r->T, 0, 1e7, "N", diag)) ||
+        (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 1e3, 1e10, "N/m^2", diag)) ||
+        (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e13, "N/m^2", diag)) ||
+        (status = plausible("NODE_ANGLE", r->dtheta, 2 * M_PI / TIRE_RING_MAX_NODES,
+                            M_PI / 8, "rad", diag)) ||
+        (status = plausible("FORCE_TOLERANCE", eq->eps_F, 0, 100, "N", diag)) ||
+        (status = plausible("STEP_TOLERANCE", eq->eps_z, 0, 1e-3, "m", diag)) ||
+        (status = plausible("MAX_ITERATIONS", (double)eq->max_iter, 2, 1e6, "evaluations",
+                            diag)) ||
+        (status = plausible("SECANT_STEP", eq->secant_dz, 0, 0.1, "m", diag)) ||
+        (status = plausible("VERTICAL_STIFFNESS", c->c_z, 1e4, 1e8, "N/m", diag)) ||
+        (status = plausible("Q_RA1", c->q_ra1, 0, 10, "(dimensionless)", diag)) ||
+        (status = plausible("Q_RA2", c->q_ra2, -10, 10, "(dimensionless)", diag)) ||
+        (status = plausible("ELLIPS_SHIFT", c->shift, 0, 5, "(dimensionless)", diag)) ||
+        (status = plausible("ELLIPS_LENGTH", c->length, 0, 10, "(dimensionless)", diag)) ||
+        (status = plausible("ELLIPS_HEIGHT", c->height, 0, 10, "(dimensionless)", diag)) ||
+        (status = plausible("ELLIPS_ORDER", c->order, 1, 100, "(dimensionless)", diag)))
+        return status;
+    return TIRENV_OK;
+}
+
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
 {
     const tirenv_springs_params *s = &tire->springs;
@@ -171,7 +224,8 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (eq->method > TIRENV_EQ_BRENT)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
-    return cam_check(&tire->cam, diag);
+    const int status = cam_check(&tire->cam, diag);
+    return status ? status : tire_plausible(tire, diag);
 }
 
 int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag)

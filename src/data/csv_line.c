@@ -1,6 +1,7 @@
 /* Line-by-line reading of the small CSV files of src/data (curves, rig logs, manifests).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "data/csv_line.h"
+#include "data/text_line.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -44,17 +45,21 @@ void tirenv_csv__close(tirenv_csv__reader *r)
 int tirenv_csv__next(tirenv_csv__reader *r)
 {
     for (;;) {
-        errno = 0;
-        const ssize_t len = getline(&r->buf, &r->cap, r->fp);
-        if (len == -1) {
-            if (ferror(r->fp))
-                return -tirenv_error(r->diag, TIRENV_EIO, r->file, r->line + 1, "",
-                                     "cannot read: %s", strerror(errno ? errno : EIO));
+        size_t len = 0;
+        const int got = tirenv_text__getline(&r->buf, &r->cap, r->fp, &len);
+        if (got == TIRENV_TEXT__EOF)
             return 0;
-        }
+        if (got == TIRENV_TEXT__LONG)
+            return -tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + 1, "",
+                                 "line longer than %d characters; expected a text line (is "
+                                 "this a text file?)", TIRENV_TEXT__MAX_LINE);
+        if (got == TIRENV_TEXT__ERROR)  /* a read error, or no memory: never the end */
+            return -tirenv_error(r->diag, errno == ENOMEM ? TIRENV_ENOMEM : TIRENV_EIO,
+                                 r->file, r->line + 1, "", "cannot read: %s",
+                                 strerror(errno));
         r->line++;
         /* A NUL ends the C string: the rest of the line would be dropped without a word. */
-        const char *nul = memchr(r->buf, '\0', (size_t)len);
+        const char *nul = memchr(r->buf, '\0', len);
         if (nul) {
             const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line, "",
                                             "a NUL byte in the line; expected text (is this "

@@ -13,7 +13,7 @@
 typedef struct {
     FILE *fp;
     const char *file;      /* name for messages */
-    char *buf;             /* getline buffer */
+    char *buf;             /* line buffer (text_line.h) */
     size_t cap;
     size_t line;           /* 1-based number of the current line */
     char *text;            /* current line without BOM and end-of-line characters */
@@ -32,8 +32,9 @@ int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag)
 
 /* Advances to the next line with content, skipping blank lines and '#' comment lines;
  * accepts a UTF-8 byte-order mark and CRLF ends. Returns 1 for a line, 0 at the end of the
- * file, or a status negated (so < 0) with diag set: TIRENV_EIO on a read error, TIRENV_EPARSE
- * for a NUL byte in a line (its column in diag). */
+ * file, or a status negated (so < 0) with diag set: TIRENV_EIO on a read error, TIRENV_ENOMEM
+ * when memory runs out, TIRENV_EPARSE for a NUL byte in a line (its column in diag) or a line
+ * longer than TIRENV_TEXT__MAX_LINE characters (text_line.h). */
 int tirenv_csv__next(tirenv_csv__reader *r);
 
 /* Frees the buffer and closes the file; safe after a failed open. */

@@ -85,8 +85,67 @@ static int parse_path(const tirenv_csv__reader *r, const tirenv_csv__field *f, s
     return TIRENV_OK;
 }
 
+/* The most cases a manifest holds: a million (the most tirenv sweep makes), about 1 GB of
+ * case records before any curve is read. */
+#define MANIFEST_MAX_CASES 1000000u
+
+/* The case names seen so far, for the duplicate check: open addressing on FNV-1a, indices
+ * into ds->cases plus one (0 = empty), at most half full. A scan of every earlier name made
+ * 100,000 cases take 66 s. */
+typedef struct {
+    size_t *slot;
+    size_t cap;   /* a power of two, or 0 */
+} name_set;
+
+static size_t name_hash(const char *s)
+{
+    uint64_t h = 14695981039346656037u;
+    for (; *s; ++s)
+        h = (h ^ (unsigned char)*s) * 1099511628211u;
+    return (size_t)h;
+}
+
+/* The case with this name, or NULL. */
+static const tirenv_case *name_find(const name_set *set, const tirenv_dataset *ds,
+                                    const char *name)
+{
+    if (!set->cap)
+        return NULL;
+    for (size_t i = name_hash(name) & (set->cap - 1);; i = (i + 1) & (set->cap - 1)) {
+        if (!set->slot[i])
+            return NULL;
+        if (strcmp(ds->cases[set->slot[i] - 1].name, name) == 0)
+            return &ds->cases[set->slot[i] - 1];
+    }
+}
+
+/* Records case k of ds (its name not yet in the set). */
+static int name_add(name_set *set, const tirenv_dataset *ds, size_t k)
+{
+    if (2 * (k + 1) > set->cap) {
+        const size_t cap = set->cap ? 2 * set->cap : 64;
+        size_t *slot = calloc(cap, sizeof *slot);
+        if (!slot)
+            return TIRENV_ENOMEM;
+        for (size_t j = 0; j < k; ++j) {
+            size_t i = name_hash(ds->cases[j].name) & (cap - 1);
+            while (slot[i])
+                i = (i + 1) & (cap - 1);
+            slot[i] = j + 1;
+        }
+        free(set->slot);
+        set->slot = slot;
+        set->cap = cap;
+    }
+    size_t i = name_hash(ds->cases[k].name) & (set->cap - 1);
+    while (set->slot[i])
+        i = (i + 1) & (set->cap - 1);
+    set->slot[i] = k + 1;
+    return TIRENV_OK;
+}
+
 static int parse_name(const tirenv_csv__reader *r, const tirenv_csv__field *f,
-                      const tirenv_dataset *ds, char out[32])
+                      const tirenv_dataset *ds, const name_set *names, char out[32])
 {
     const size_t n = strlen(f->text);
     if (n == 0)
@@ -94,20 +153,20 @@ static int parse_name(const tirenv_csv__reader *r, const tirenv_csv__field *f,
     if (n >= 32)
         return tirenv_csv__fail(r, f->column, "case",
                                 "case names have at most 31 characters, got %zu", n);
-    for (size_t i = 0; i < ds->n; i++)
-        if (strcmp(ds->cases[i].name, f->text) == 0)
-            return tirenv_csv__fail(r, f->column, "case",
-                                    "case '%s' appears twice; names must be unique", f->text);
+    if (name_find(names, ds, f->text))
+        return tirenv_csv__fail(r, f->column, "case",
+                                "case '%s' appears twice; names must be unique", f->text);
     memcpy(out, f->text, n + 1);
     return TIRENV_OK;
 }
 
-static int parse_case(tirenv_csv__reader *r, const tirenv_dataset *ds, tirenv_case *c)
+static int parse_case(tirenv_csv__reader *r, const tirenv_dataset *ds, const name_set *names,
+                      tirenv_case *c)
 {
     tirenv_csv__field f[MANIFEST_FIELDS + 1];
     int status = tirenv_csv__fields(r, manifest_names, MANIFEST_FIELDS, f);
     if (status == TIRENV_OK)
-        status = parse_name(r, &f[COL_CASE], ds, c->name);
+        status = parse_name(r, &f[COL_CASE], ds, names, c->name);
     if (status == TIRENV_OK)
         status = parse_split(r, &f[COL_SPLIT], &c->split);
     if (status == TIRENV_OK)
@@ -159,13 +218,22 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds)
     }
     int status = more < 0 ? -more : tirenv_csv__header(r, manifest_names, MANIFEST_FIELDS);
     size_t cap = 0;
+    name_set names = {NULL, 0};
     while (status == TIRENV_OK && (more = tirenv_csv__next(r)) > 0) {
+        if (ds->n == MANIFEST_MAX_CASES) {
+            status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line, "case",
+                                  "more than %u cases; expected at most that many (the "
+                                  "most tirenv sweep makes)", MANIFEST_MAX_CASES);
+            break;
+        }
         tirenv_case c = {0};
-        status = parse_case(r, ds, &c);
-        if (status == TIRENV_OK && add_case(ds, &cap, &c) != TIRENV_OK)
+        status = parse_case(r, ds, &names, &c);
+        if (status == TIRENV_OK && (add_case(ds, &cap, &c) != TIRENV_OK ||
+                                    name_add(&names, ds, ds->n - 1) != TIRENV_OK))
             status = tirenv_error(r->diag, TIRENV_ENOMEM, r->file, r->line, "",
                                   "out of memory");
     }
+    free(names.slot);
     if (status == TIRENV_OK && more < 0)
         status = -more;
     if (status == TIRENV_OK && ds->n == 0) {

@@ -21,6 +21,7 @@
  * Version 1 (still read) had one network: its "layers" at the top level, no forms, no
  * members (the paper's x_N and h), its checksum without the last three, and no ensemble,
  * loss or result.members in the training record. */
+#include <errno.h>
 #include <inttypes.h>
 #include <limits.h>
 #include <math.h>
@@ -908,20 +909,64 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     return TIRENV_OK;
 }
 
+/* The largest model file read: 64 MiB. The largest network tirenv writes (64 members of six
+ * layers 64 wide, 1.3 million weights at about 32 characters each, indentation included) is
+ * some 43 MB; jansson holds about ten times the text, so a 100 MB file took 980 MB. */
+#define NN_JSON_MAX_BYTES (64u << 20)
+
+/* jansson reads through here, so that a file (or a pipe, or /dev/zero) stops at the cap. */
+typedef struct {
+    FILE *fp;
+    size_t total;
+    int too_big, failed;
+} json_in;
+
+static size_t json_read(void *buf, size_t n, void *arg)
+{
+    json_in *in = arg;
+    if (in->total >= NN_JSON_MAX_BYTES) {
+        in->too_big = 1;
+        return (size_t)-1;
+    }
+    const size_t room = NN_JSON_MAX_BYTES - in->total;
+    const size_t got = fread(buf, 1, n < room + 1 ? n : room + 1, in->fp);  /* 1 past: over? */
+    in->total += got;
+    if (in->total > NN_JSON_MAX_BYTES) {
+        in->too_big = 1;
+        return (size_t)-1;
+    }
+    if (got == 0 && ferror(in->fp)) {
+        in->failed = errno ? errno : EIO;
+        return (size_t)-1;
+    }
+    return got;
+}
+
 int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
                         tirenv_diag *diag)
 {
     *out = NULL;
     const rctx c = {.path = path, .diag = diag};
     json_error_t err;
-    json_t *root = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
+    json_in in = {.fp = fopen(path, "r")};
+    if (!in.fp)
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open the model file: %s",
+                            strerror(errno));
+    errno = 0;
+    json_t *root = json_load_callback(json_read, &in, JSON_REJECT_DUPLICATES, &err);
+    fclose(in.fp);
+    if (in.too_big) {
+        json_decref(root);
+        return tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
+                            "larger than %u MiB; a tirenv model file is at most about 43 MB "
+                            "(64 members of six layers 64 wide)", NN_JSON_MAX_BYTES >> 20);
+    }
+    if (in.failed) {
+        json_decref(root);
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot read the model file: %s",
+                            strerror(in.failed));
+    }
     if (!root) {
-        if (json_error_code(&err) == json_error_cannot_open_file) {
-            /* jansson says "unable to open PATH: REASON"; the path is in diag already. */
-            const char *why = strrchr(err.text, ':');
-            return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open the model file: %s",
-                                why ? why + 2 : err.text);
-        }
         const int status = tirenv_error(diag, TIRENV_EPARSE, path,
                                         err.line > 0 ? (size_t)err.line : 0, "",
                                         "not valid JSON (truncated or corrupted?): %s",

@@ -294,9 +294,14 @@ int tirenv_outdir_begin(const char *target, tirenv_outdir **out, tirenv_diag *di
                 e = ENAMETOOLONG;
                 break;
             }
+            if (tirenv_tmp__create_begin()) {
+                e = EINTR;  /* a signal is ending the program */
+                break;
+            }
             d->slot = tirenv_tmp__register(d->staging, 1);
             made = mkdir(d->staging, 0700) == 0;
             e = errno;
+            tirenv_tmp__create_end();
             if (!made) {
                 tirenv_tmp__unregister(d->slot);
                 d->slot = -1;

@@ -85,9 +85,14 @@ static int open_temporary(tirenv_outfile *f, const struct stat *old, tirenv_diag
     for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
         if (tirenv_tmp__name(f->target, TIRENV_TMP_MARK, f->tmp))
             return tirenv_error(diag, TIRENV_EINVAL, f->path, 0, "", "path is too long");
+        if (tirenv_tmp__create_begin()) {
+            e = EINTR;  /* a signal is ending the program */
+            break;
+        }
         f->slot = tirenv_tmp__register(f->tmp, 0);
         fd = open(f->tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
         e = errno;
+        tirenv_tmp__create_end();
         if (fd < 0) {
             tirenv_tmp__unregister(f->slot);
             f->slot = -1;

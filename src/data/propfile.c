@@ -2,6 +2,7 @@
  * comments) read, overridden and written for any struct described by a key table.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "data/propfile.h"
+#include "data/text_line.h"
 
 #include "tirenv/io.h"
 
@@ -473,17 +474,30 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
     int in_section = 0;
     char *buf = NULL;
     size_t cap = 0;
-    ssize_t len;
+    size_t len = 0;
     double factor[TIRENV_UNIT_KINDS];
     for (int k = 0; k < TIRENV_UNIT_KINDS; k++)
         factor[k] = 1;
     pf_ctx c = {{path, 0, NULL, diag}, slash ? (size_t)(slash - path) + 1 : 0, factor};
     int status = TIRENV_OK;
-    while (status == TIRENV_OK && (len = getline(&buf, &cap, fp)) != -1) {
+    int got;
+    while (status == TIRENV_OK &&
+           (got = tirenv_text__getline(&buf, &cap, fp, &len)) != TIRENV_TEXT__EOF) {
+        if (got == TIRENV_TEXT__LONG) {
+            status = tirenv_error(diag, TIRENV_EPARSE, path, c.at.line + 1, "",
+                                  "line longer than %d characters; expected a text line (is "
+                                  "this a text file?)", TIRENV_TEXT__MAX_LINE);
+            break;
+        }
+        if (got == TIRENV_TEXT__ERROR) {  /* a read error, or no memory: never the end */
+            status = tirenv_error(diag, errno == ENOMEM ? TIRENV_ENOMEM : TIRENV_EIO, path,
+                                  c.at.line + 1, "", "cannot read: %s", strerror(errno));
+            break;
+        }
         c.at.line++;
         char *line = buf;
         /* A NUL ends the C string: the rest of the line would be dropped without a word. */
-        const char *nul = memchr(buf, '\0', (size_t)len);
+        const char *nul = memchr(buf, '\0', len);
         if (nul) {
             c.at.base = buf;
             status = pf_fail(&c, nul, "", "a NUL byte in the line; expected text (is this a "

@@ -92,9 +92,15 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
     int status = check_sampling(s, x_last - x_first, R0, x0, x1, z_max + R0, diag);
     if (status)
         return status;
-    const size_t n = (size_t)floor((x1 - x0) / dx) + 1;
-    if (n > 100000000)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "rig", "%zu samples is too many", n);
+    /* Counted as a double first: a speed of 1e-300 m/s made the cast overflow (undefined;
+     * it gave one sample and exit 0). */
+    const double steps = floor((x1 - x0) / dx);
+    if (!(steps < 1e8))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "rig",
+                            "%.3g samples (%g m every %g m: speed %g m/s at %g Hz) is too many; "
+                            "expected at most 1e8: drive faster or sample slower", steps + 1,
+                            x1 - x0, dx, s->speed, s->rate);
+    const size_t n = (size_t)steps + 1;
     double *buf = malloc(3 * n * sizeof *buf);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     if (!buf || !rng) {

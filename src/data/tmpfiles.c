@@ -113,6 +113,28 @@ static struct {
     char path[TIRENV_TMP_PATH];
 } slots[SLOTS];
 
+/* Set by the signal handler before it removes anything; creating counts the threads between
+ * tirenv_tmp__create_begin and _end. With --jobs, the other threads run on while one handles
+ * the signal: a worker that registered and then created its file after the handler's pass
+ * left the file behind (1 run in 60 of 'sweep --jobs 2' under SIGTERM). Now the handler
+ * waits for creations under way, and no new one starts. */
+static atomic_int dying, creating;
+
+int tirenv_tmp__create_begin(void)
+{
+    atomic_fetch_add(&creating, 1);
+    if (atomic_load(&dying)) {
+        atomic_fetch_sub(&creating, 1);
+        return -1;
+    }
+    return 0;
+}
+
+void tirenv_tmp__create_end(void)
+{
+    atomic_fetch_sub(&creating, 1);
+}
+
 int tirenv_tmp__register(const char *path, int is_dir)
 {
     if (strlen(path) >= TIRENV_TMP_PATH)
@@ -207,6 +229,13 @@ int tirenv_tmp__rmtree(const char *path)
 void tirenv_cleanup_on_signal(void)
 {
     const pid_t self = getpid();
+    /* If this thread was itself creating, the count never drops: wait at most 0.2 s. Its
+     * file, if made, is registered already (registration comes first). */
+    atomic_store(&dying, 1);
+    for (int i = 0; i < 2000 && atomic_load(&creating) > 0; ++i) {
+        const struct timespec pause = {0, 100000};
+        nanosleep(&pause, NULL);
+    }
     for (int i = 0; i < SLOTS; ++i)
         if (atomic_load(&slots[i].state) == SLOT_LIVE && slots[i].pid == self) {
             if (slots[i].is_dir)
@@ -377,14 +406,29 @@ int tirenv_tmp__resolve(const char *path, char out[TIRENV_TMP_PATH], int *fd,
         if (hops == 40)
             return tirenv_error(diag, TIRENV_EIO, path, 0, "",
                                 "too many levels of symbolic links");
+        char dir[TIRENV_TMP_PATH], base[TIRENV_TMP_PATH];
+        tirenv_tmp__split(cur, dir, base);
+        /* The kernel's protected_symlinks rule, which following by hand would bypass: in a
+         * sticky world-writable directory (/tmp), a link is followed only by its owner or
+         * when it belongs to the directory's owner. Else another user's link there could
+         * make this run's output replace a file of ours it points at. */
+        struct stat dst;
+        if (stat(dir, &dst) != 0)
+            return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot examine %s: %s", dir,
+                                strerror(errno));
+        if ((dst.st_mode & S_ISVTX) && (dst.st_mode & S_IWOTH) && st.st_uid != geteuid() &&
+            st.st_uid != dst.st_uid)
+            return tirenv_error(diag, TIRENV_EIO, path, 0, "",
+                                "refusing to follow the symbolic link %s: it belongs to "
+                                "another user (uid %ld) in the sticky world-writable "
+                                "directory %s, as the kernel's protected_symlinks would",
+                                cur, (long)st.st_uid, dir);
         char link[TIRENV_TMP_PATH];
         const ssize_t n = readlink(cur, link, sizeof link - 1);
         if (n < 0)
             return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot read the link %s: %s",
                                 cur, strerror(errno));
         link[n] = '\0';
-        char dir[TIRENV_TMP_PATH], base[TIRENV_TMP_PATH];
-        tirenv_tmp__split(cur, dir, base);
         int w;
         if (link[0] == '/' || !strchr(cur, '/'))
             w = snprintf(cur, sizeof cur, "%s", link);

@@ -28,6 +28,11 @@ int tirenv_tmp__name(const char *target, const char *mark, char buf[TIRENV_TMP_P
  * tirenv_cleanup_on_signal; returns the slot, or -1 if every slot is taken (the path is then
  * only swept by a later run). Register before creating it, unregister after renaming it. */
 int tirenv_tmp__register(const char *path, int is_dir);
+
+/* Bracket the registration and creation of a temporary entry: _begin returns -1 (create
+ * nothing) once a signal is being handled, and the handler waits for brackets under way. */
+int tirenv_tmp__create_begin(void);
+void tirenv_tmp__create_end(void);
 void tirenv_tmp__unregister(int slot);  /* -1 is a no-op */
 
 /* Removes path and, if it is a directory, everything under it (symbolic links are removed,

@@ -50,6 +50,7 @@ typedef struct {
     tirenv_propfile__where at; /* the source's name, the line being read */
     block blk;
     int in_xz;                 /* rows of (XZ_DATA) follow */
+    int in_table;              /* rows of another sub-block's table follow: (COMMENTS)... */
     size_t xz_line;
     setting keys[N_KEYS];
     setting unit[TIRENV_UNIT_KINDS]; /* value: factor to SI */
@@ -279,13 +280,14 @@ static int line_of(rdf *r, char *text)
         if ((status = bracketed(r, text, ']', &name)))
             return status;
         r->blk = block_of(name);
-        r->in_xz = 0;
+        r->in_xz = r->in_table = 0;
         return TIRENV_OK;
     }
     if (text[0] == '(') {
         if ((status = bracketed(r, text, ')', &name)))
             return status;
         r->in_xz = r->blk == B_PARAMETERS && strcasecmp(name, "XZ_DATA") == 0;
+        r->in_table = !r->in_xz;
         if (r->in_xz && r->xz_line)
             return fail(r, name, "XZ_DATA", "(XZ_DATA) given twice (first on line %zu)",
                         r->xz_line);
@@ -297,6 +299,10 @@ static int line_of(rdf *r, char *text)
         return TIRENV_OK; /* a table's column names; another program's block */
     if (r->in_xz && !strchr(text, '='))
         return xz_row(r, text);
+    /* A row of another table, such as the quoted lines of [MDI_HEADER] (COMMENTS) that
+     * Adams files carry: not tirenv's to read. */
+    if (r->in_table && (text[0] == '\'' || !strchr(text, '=')))
+        return TIRENV_OK;
     return key_line(r, text);
 }
 

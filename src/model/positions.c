@@ -3,16 +3,32 @@
 #include "tirenv/stream.h"
 
 #include <math.h>
+#include <stdint.h>
 
+/* Every bound is checked before the count is used, so no input loops or overflows: ends or a
+ * step that are not finite (NaN compares false everywhere), a count past
+ * TIRENV_POSITIONS_MAX (also what keeps (double)k exact and n within size_t), and a step
+ * below the spacing of the doubles at the ends, where x + dx == x and the positions stop
+ * moving (1e300 + 0.1). */
 size_t tirenv_positions_count(double x_from, double x_to, double dx)
 {
+    if (!(isfinite(x_from) && isfinite(x_to) && isfinite(dx) && dx > 0 && x_to >= x_from))
+        return 0;
+    if (x_from + dx == x_from || x_to + dx == x_to)
+        return 0;
     const double limit = x_to + dx * 1e-9;
-    size_t n = (size_t)floor((limit - x_from) / dx) + 1;
-    /* The division can land one step off either way; the product decides. */
-    while (n > 1 && x_from + (double)(n - 1) * dx > limit)
+    const double steps = floor((limit - x_from) / dx);
+    if (!(steps < TIRENV_POSITIONS_MAX - 2 && steps < (double)SIZE_MAX - 2))
+        return 0;
+    size_t n = (size_t)steps + 1;
+    /* The division can land one step off either way; the product decides. Each loop moves n
+     * by a step or two at most: the bound only guards against a case not foreseen. */
+    for (int i = 0; i < 4 && n > 1 && x_from + (double)(n - 1) * dx > limit; ++i)
         --n;
-    while (x_from + (double)n * dx <= limit)
+    for (int i = 0; i < 4 && x_from + (double)n * dx <= limit; ++i)
         ++n;
+    if (x_from + (double)n * dx <= limit || (n > 1 && x_from + (double)(n - 1) * dx > limit))
+        return 0;
     return n;
 }
 

@@ -173,8 +173,12 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
                             "expected dx > 0 and x_to >= x_from, got dx %g m from %g to %g m",
                             dx, x_from, x_to);
-    if (!((x_to - x_from) / dx < 1e15))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx", "too many positions");
+    if (tirenv_positions_count(x_from, x_to, dx) == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
+                            "%.3g positions from %g to %g m every %g m; expected at most %.0e "
+                            "and a step that moves x (x + dx != x)",
+                            floor((x_to - x_from) / dx) + 1, x_from, x_to, dx,
+                            TIRENV_POSITIONS_MAX);
     window w = {.bof = 1, .tracks = n_tracks};
     vertex_source src = {source, source_ctx, NULL};
     const vertex_source *in = &src;

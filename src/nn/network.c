@@ -26,9 +26,10 @@ enum { NN_LANES = 8 };
  * processor has is picked when the program loads (GCC's target_clones, through an ELF
  * ifunc). No FMA contraction happens in any clone (ISO C mode: -ffp-contract=off), so every
  * clone gives the same bits. The helpers are forced inline so that they are compiled for
- * the clone's instruction set too. */
+ * the clone's instruction set too. Not under ThreadSanitizer (GCC's __SANITIZE_THREAD__):
+ * the ifunc resolver runs before TSan's runtime is ready and crashed the program at load. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
-    !defined(TIRENV_NN_NO_CLONES)
+    !defined(TIRENV_NN_NO_CLONES) && !defined(__SANITIZE_THREAD__)
 #define NN_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define NN_CLONES

@@ -88,8 +88,12 @@ tirenv_ride_settings tirenv_ride_default(void)
 
 size_t tirenv_ride_n_samples(const tirenv_ride_settings *s)
 {
-    /* The 1e-9 guards duration = k*dt computed in floating point (10 / 1e-3 = 9999.999...). */
-    return (size_t)floor(s->duration / s->dt + 1e-9) + 1;
+    /* The 1e-9 guards duration = k*dt computed in floating point (10 / 1e-3 = 9999.999...).
+     * Settings the run refuses (check_settings) count 0, never an overflowing cast. */
+    const double steps = floor(s->duration / s->dt + 1e-9);
+    if (!(s->dt > 0 && steps >= 0 && steps <= 1e9))
+        return 0;
+    return (size_t)steps + 1;
 }
 
 static int check_settings(const tirenv_vehicle *v, const tirenv_ride_settings *s,

@@ -27,6 +27,19 @@ static int vehicle_require(const char *field, double value, int zero_ok, const c
                         zero_ok ? "zero or positive" : "positive", unit, value);
 }
 
+/* Where a value is plausible for a vehicle, from a garden tractor's to a mining truck's, as
+ * docs/formats.md section 3 lists with each range's reason: a value outside is a typo or a
+ * unit slip (MASS = 1e9 gave seat accelerations of 2.4e9 m/s^2). */
+static int vehicle_plausible(const char *field, double value, double lo, double hi,
+                             const char *unit, tirenv_diag *diag)
+{
+    if (value >= lo && value <= hi)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EINVAL, "", 0, field,
+                        "%g %s is outside the plausible range [%g, %g] %s of a vehicle "
+                        "(docs/formats.md section 3)", value, unit, lo, hi, unit);
+}
+
 /* An axle's field is named SECTION.KEY, as --set accepts it: the bare key is in both axle
  * sections. */
 static const char *axle_field(char f[64], const char *section, const char *key)
@@ -76,6 +89,43 @@ static int vehicle_check_axle(const tirenv_axle *ax, const char *section, int re
 #undef FIELD
 }
 
+static int axle_plausible(const tirenv_axle *ax, const char *section, tirenv_diag *diag)
+{
+    char f[64];
+#define FIELD(key) axle_field(f, section, key)
+    int status;
+    if ((status = vehicle_plausible(FIELD("TIRES"), ax->tires, 1, 16, "tires", diag)) ||
+        (status = vehicle_plausible(FIELD("TIRE_STIFFNESS"), ax->k_t, 1e4, 1e10, "N/m",
+                                    diag)) ||
+        (status = vehicle_plausible(FIELD("TIRE_DAMPING"), ax->c_t, 0, 1e6, "N*s/m", diag)) ||
+        (status = vehicle_plausible(FIELD("SUSPENSION_STIFFNESS"), ax->k_s, 0, 1e9, "N/m",
+                                    diag)) ||
+        (status = vehicle_plausible(FIELD("SUSPENSION_DAMPING"), ax->c_s, 0, 1e7, "N*s/m",
+                                    diag)) ||
+        (status = vehicle_plausible(FIELD("AXLE_MASS"), ax->m_a, 0, 1e5, "kg", diag)))
+        return status;
+    return TIRENV_OK;
+#undef FIELD
+}
+
+/* The ranges of docs/formats.md section 3, once the signs, the relations and the static
+ * loads have passed (their messages say more where they apply). */
+static int vehicle_plausible_all(const tirenv_vehicle *v, tirenv_diag *diag)
+{
+    int status;
+    if ((status = vehicle_plausible("MASS", v->m, 50, 1e6, "kg", diag)) ||
+        (status = vehicle_plausible("PITCH_INERTIA", v->I_y, 1, 1e8, "kg*m^2", diag)) ||
+        (status = vehicle_plausible("CG_TO_FRONT_AXLE", v->a, 0, 20, "m", diag)) ||
+        (status = vehicle_plausible("CG_TO_REAR_AXLE", v->b, 0, 20, "m", diag)) ||
+        (status = vehicle_plausible("GRAVITY", v->g, 1, 30, "m/s^2", diag)) ||
+        (status = vehicle_plausible("SEAT_AHEAD_OF_CG", v->seat_x, -20, 20, "m", diag)) ||
+        (status = vehicle_plausible("SEAT_ABOVE_CG", v->seat_h, -10, 10, "m", diag)) ||
+        (status = axle_plausible(&v->front, "FRONT_AXLE", diag)) ||
+        (status = axle_plausible(&v->rear, "REAR_AXLE", diag)))
+        return status;
+    return TIRENV_OK;
+}
+
 int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag)
 {
     int status;
@@ -92,9 +142,10 @@ int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SEAT_ABOVE_CG",
                             "must be a finite length in m, got %g", v->seat_h);
     if ((status = vehicle_check_axle(&v->front, "FRONT_AXLE", 0, diag)) ||
-        (status = vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag)))
+        (status = vehicle_check_axle(&v->rear, "REAR_AXLE", 1, diag)) ||
+        (status = tirenv_ride__static_check(v, diag)))
         return status;
-    return tirenv_ride__static_check(v, diag);
+    return vehicle_plausible_all(v, diag);
 }
 
 /* Moments about the axles split the body's weight m*g in the ratio b : a; a suspended front

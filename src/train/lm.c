@@ -43,9 +43,10 @@ enum { LM_LANES = 8 };
 enum { LM_BLOCK = 8 };
 
 /* As in nn/network.c: the kernel below is compiled per instruction set and picked at load
- * time; ISO C mode keeps FMA contraction off, so every clone sums the same way. */
+ * time; ISO C mode keeps FMA contraction off, so every clone sums the same way. Not under
+ * ThreadSanitizer, whose runtime is not up when the ifunc resolver runs. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
-    !defined(TIRENV_NN_NO_CLONES)
+    !defined(TIRENV_NN_NO_CLONES) && !defined(__SANITIZE_THREAD__)
 #define LM_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define LM_CLONES
