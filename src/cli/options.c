@@ -133,6 +133,32 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
     return o->tire_path ? o->tire_path : cli_data_path("tires/default.tir", buf, n);
 }
 
+tirenv_tir_origin cli_tire_origin;
+
+/* The enveloping models a model type needs to describe the tire: the springs model also
+ * stands for the contact length of the network and of the rigid disc. */
+static unsigned tire_needs(const tirenv_model_type *type)
+{
+    if (type == tirenv_model_ring)
+        return TIRENV_TIR_RING;
+    if (type == tirenv_model_cam || type == tirenv_model_point || type == tirenv_model_rigid)
+        return 0;
+    return TIRENV_TIR_SPRINGS;
+}
+
+int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
+                    tirenv_tir_origin *origin)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_tir_derive(path, tire, tire_needs(type), origin, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    if (origin->note[0])
+        fprintf(stderr, "tirenv: %s: %s\n", path, origin->note);
+    return CLI_EXIT_OK;
+}
+
 int cli_tire(const cli_options *o, tirenv_tire *tire)
 {
     char buf[1024];
@@ -143,6 +169,8 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     int status = tirenv_tir_read(path, tire, &diag);
     if (status)
         return cli_fail(status, &diag);
+    if ((status = cli_tire_derive(path, o->type, tire, &cli_tire_origin)))
+        return status;
     for (size_t i = 0; i < o->n_sets; ++i) {
         status = tirenv_tir_set(tire, o->sets[i], &diag);
         if (status && diag.file[0])  /* already says "--set: KEY: ..." */

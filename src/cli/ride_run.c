@@ -56,6 +56,9 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         s->tire[axle] = tirenv_tire_default();
         if ((status = tirenv_tir_read(tire_path, &s->tire[axle], &diag)))
             return cli_fail(status, &diag);
+        tirenv_tir_origin origin;
+        if ((status = cli_tire_derive(tire_path, NULL, &s->tire[axle], &origin)))
+            return status;
         s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
     }
     return CLI_EXIT_OK;
