@@ -51,6 +51,23 @@ typedef struct {
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
 
+/* One key of a .tir file to set by tirenv_tir_update. */
+typedef struct {
+    const char *section;   /* e.g. "ENVELOPING_SPRINGS" */
+    const char *key;       /* e.g. "RADIAL_STIFFNESS" */
+    double value;          /* SI; written with 6 significant digits */
+} tirenv_tir_value;
+
+/* Sets the n values[] in the .tir file at path in place, keeping every other line, comment
+ * and column (the file must state its [UNITS] in SI or not at all: its values are not
+ * converted): a key present has its value replaced, a missing one is added after its
+ * section's header, a missing section at the end. note (lines separated by '\n') replaces
+ * the '!' block between "! tirenv identify: begin" and "! tirenv identify: end" lines, or
+ * is added with them after the [MDI_HEADER] keys. The file is replaced atomically (or not
+ * at all) and must then read back with tirenv_tir_read. */
+int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
+                      const char *note, tirenv_diag *diag);
+
 /* Reads a profile CSV: header "x_m,z_m", one vertex per line, '#' comment lines and blank
  * lines allowed. Errors name file, line and column. *out is NULL on failure. */
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);

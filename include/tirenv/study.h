@@ -262,5 +262,25 @@ tirenv_study_settings tirenv_study_default(void);
 
 int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag);
 
+/* ---- One tire, every model: identification on a reference's flat ground (section 14.1) -- */
+
+/* The reference's flat ground at one load, and what the identified models make of it. */
+typedef struct {
+    double load;             /* N */
+    double deflection;       /* the reference's, m */
+    double contact_length;   /* the reference's, m */
+} tirenv_flat_target;
+
+/* Identifies, on the flat-ground states of the reference model of *tire (the ring for tirenv's
+ * tires) at the n >= 2 loads[] (N), the springs model's RADIAL_STIFFNESS and
+ * INTERRADIAL_STIFFNESS (its load-deflection curve: the ratio c_b/c_r by golden section on its
+ * logarithm, c_r in closed form for each ratio) and the cam's VERTICAL_STIFFNESS, Q_RA1 and
+ * Q_RA2 (its deflection, then its contact length: linear least squares in relative error).
+ * *out is *tire with those five values replaced; target[] (n entries, may be NULL) receives the
+ * reference's states. On failure *out is unchanged. */
+int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *reference, size_t n,
+                         const double loads[], tirenv_tire *out, tirenv_flat_target target[],
+                         tirenv_diag *diag);
+
 TIRENV_END_DECLS
 #endif

@@ -36,6 +36,7 @@ int cli_predict_main(int argc, char *argv[]);
 int cli_dataset_main(int argc, char *argv[]);
 int cli_compare_main(int argc, char *argv[]);
 int cli_fit_main(int argc, char *argv[]);
+int cli_identify_main(int argc, char *argv[]);
 int cli_study_main(int argc, char *argv[]);
 int cli_road_main(int argc, char *argv[]);
 int cli_convert_main(int argc, char *argv[]);
