@@ -56,7 +56,8 @@ static void usage(FILE *fp)
           "and the cam's VERTICAL_STIFFNESS, Q_RA1 and Q_RA2 on its load-deflection and\n"
           "load-contact-length curves (docs/models.md section 14.1), then tabulates the three\n"
           "models' deflections and contact lengths at each load and their largest relative\n"
-          "differences from the reference. The loads: 0.5 to 1.5 times the file's FNOMIN,\n"
+          "differences from the reference, all with the values rounded to three significant\n"
+          "digits, as written. The loads: 0.5 to 1.5 times the file's FNOMIN,\n"
           "or, for a file without it, the reference's loads at contact lengths 0.28 to\n"
           "0.38 m (the paper's working regimes).\n"
           "\n"
@@ -145,6 +146,14 @@ int cli_identify_main(int argc, char *argv[])
     int status = tirenv_identify_flat(&tire, ref, n, loads.v, &id, tg, &diag);
     if (status)
         return cli_fail(status, &diag);
+    /* Three significant digits, as written: the table and the note describe the file. */
+    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.cam.c_z, &id.cam.q_ra1,
+                           &id.cam.q_ra2};
+    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+        char t[32];
+        snprintf(t, sizeof t, "%.3g", *ids[k]);
+        *ids[k] = strtod(t, NULL);
+    }
     tirenv_flat fs[MAX_LOADS], fc[MAX_LOADS];
     if ((code = states(tirenv_model_springs, &id, n, loads.v, fs)) ||
         (code = states(tirenv_model_cam, &id, n, loads.v, fc)))

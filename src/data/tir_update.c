@@ -161,6 +161,13 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
             }
             continue;
         }
+        /* The note goes after [MDI_HEADER]'s keys and comments, before the first '$-' rule
+         * or section that follows them. */
+        if (!noted && !strcmp(sec, "MDI_HEADER") && l >= 2 && line[0] == '$' &&
+            line[1] == '-') {
+            put_note(fp, note);
+            noted = 1;
+        }
         char next[64];
         if (section_of(line, l, next)) {
             /* Before leaving a section: the note after [MDI_HEADER]'s keys, missing keys. */
