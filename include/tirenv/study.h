@@ -282,5 +282,15 @@ int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *refer
                          const double loads[], tirenv_tire *out, tirenv_flat_target target[],
                          tirenv_diag *diag);
 
+/* The load-to-contact-length relation of the tire a data set's curves came from, for the
+ * network trained on them (docs/models.md section 14.3): TIRENV_CONTACT_LAW_MAX loads spaced
+ * geometrically from half the smallest to 1.5 times the largest case load, each with the
+ * flat-ground contact length of the source model (the one that simulated the data, with its
+ * tire), or, with source NULL (measured data), of the power law l_c = a*G^b fitted to the
+ * cases' (load, contact length) pairs in log-log least squares. what (n bytes) says which. */
+int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type *source,
+                               const tirenv_tire *tire, tirenv_contact_law *law, char *what,
+                               size_t n, tirenv_diag *diag);
+
 TIRENV_END_DECLS
 #endif

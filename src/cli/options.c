@@ -232,6 +232,16 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
     if (!status && (status = tirenv_model_set_network(*out, nn, rec.R0, &diag)) &&
         !diag.file[0])
         snprintf(diag.file, sizeof diag.file, "%s", o->nn_path);
+    /* The network's own tire turns a load into its contact length; an older file has no
+     * record of it, and the springs model of the tire file stands in, as it used to. */
+    if (!status && rec.law.n)
+        status = tirenv_model_set_contact_law(*out, &rec.law, &diag);
+    else if (!status)
+        fprintf(stderr, "tirenv: warning: %s records no relation between load and contact "
+                "length of its tire (training.data.contact_law; a file written before tirenv "
+                "recorded it): loads become contact lengths by the springs model of the tire "
+                "file, not by the tire the network was trained on; train it again to record "
+                "it\n", o->nn_path);
     tirenv_nn_free(nn);
     if (status) {
         tirenv_model_free(*out);

@@ -165,6 +165,8 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
             if ((status = tirenv_nn_read_json(r->nn_path, &in[i].nn, &rec, &diag)))
                 code = cli_fail(status, &diag);
             in[i].R0_nn = rec.R0;
+            if (!code)
+                ride_cli_set_nn_law(r->nn_path, &rec.law);
         }
     }
     for (size_t k = 0; k < n_items; ++k)

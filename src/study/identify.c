@@ -5,6 +5,7 @@
 #include "tirenv/study.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -156,5 +157,60 @@ int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *refer
         if (target)
             memcpy(target, tg, n * sizeof tg[0]);
     }
+    return status;
+}
+
+int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type *source,
+                               const tirenv_tire *tire, tirenv_contact_law *law, char *what,
+                               size_t n, tirenv_diag *diag)
+{
+    double G_min = INFINITY, G_max = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    size_t m = 0;
+    for (size_t i = 0; i < ds->n; i++) {
+        const tirenv_case *c = &ds->cases[i];
+        if (!(c->load > 0 && c->contact_length > 0))
+            continue;
+        G_min = fmin(G_min, c->load);
+        G_max = fmax(G_max, c->load);
+        const double x = log(c->load), y = log(c->contact_length);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        m++;
+    }
+    if (m < 2 || !(G_max > G_min))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
+                            "the data set's cases have %zu positive loads, %s; a relation "
+                            "between load and contact length needs two different ones", m,
+                            m ? "all equal" : "none");
+    const size_t N = TIRENV_CONTACT_LAW_MAX;
+    const double lo = 0.5 * G_min, hi = 1.5 * G_max;
+    tirenv_contact_law out = {.n = N};
+    for (size_t k = 0; k < N; k++)
+        out.load[k] = lo * pow(hi / lo, (double)k / (double)(N - 1));
+    int status = TIRENV_OK;
+    if (source) {
+        tirenv_model *model = tirenv_model_alloc(source, tire);
+        if (!model)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for "
+                                "the %s model", tirenv_model_type_name(source));
+        for (size_t k = 0; k < N && !status; k++) {
+            tirenv_flat f;
+            if (!(status = tirenv_model_flat(model, out.load[k], &f, diag)))
+                out.l_c[k] = f.contact_length;
+        }
+        tirenv_model_free(model);
+        snprintf(what, n, "the %s model's flat ground", tirenv_model_type_name(source));
+    } else {
+        const double b = (m * sxy - sx * sy) / (m * sxx - sx * sx), a = (sy - b * sx) / m;
+        for (size_t k = 0; k < N; k++)
+            out.l_c[k] = exp(a + b * log(out.load[k]));
+        snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
+    }
+    if (!status)
+        status = tirenv_contact_law_check(&out, diag);
+    if (!status)
+        *law = out;
     return status;
 }
