@@ -130,6 +130,16 @@ fmi2Status fmu__setup(fmu_instance *f)
             return fmu__fail(f, "tire_file: path too long: %s", v->tire_file);
         if (tirenv_tir_read(path, &f->tire, &diag))
             return fmu__fail_diag(f, "tire_file", &diag);
+        /* A file without tirenv's sections: the springs and ring models of its own tire,
+         * derived from its MF-Tyre keys (docs/models.md section 14.2), logged. */
+        tirenv_tir_origin origin;
+        const unsigned need = type == tirenv_model_ring      ? TIRENV_TIR_RING
+                              : type == tirenv_model_springs ? TIRENV_TIR_SPRINGS
+                                                             : 0u;
+        if (tirenv_tir_derive(path, &f->tire, need, &origin, &diag))
+            return fmu__fail_diag(f, "tire_file", &diag);
+        if (origin.note[0])
+            fmu__log(f, fmi2Warning, "logAll", "%s: %s", path, origin.note);
     }
     if (tirenv_tire_check(&f->tire, &diag))
         return fmu__fail_diag(f, "tire_file", &diag);

@@ -162,7 +162,10 @@ size_t tirenv_nn_n_inputs(const tirenv_nn *nn);
 void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], double y[]);
 int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
                        const double x[], double h[], tirenv_diag *diag);
-typedef struct { double R0; ...; } tirenv_train_record;
+typedef struct { size_t n; double load[32]; double l_c[32]; } tirenv_contact_law;
+int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
+                                 tirenv_diag *diag);
+typedef struct { double R0; tirenv_contact_law law; ...; } tirenv_train_record;
 int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
                         tirenv_diag *diag);
 

@@ -17,7 +17,7 @@ fi
 sensible() {
     awk -F, -v r0="$2" 'NR > 1 { n++; d = $2 + $3 - r0
         if (d > 1e-8 || -d > 1e-8 || !($3 > 0 && $3 < r0 / 5) || !($5 > 0)) bad = 1 }
-        END { exit bad || n != 3 }' "$1"
+        END { exit bad || n != 5 }' "$1"
 }
 
 for spec in 335_65R22_5_G275MSA_60psi:0.4987 HMMWV_Pac02Tire:0.4699 \
@@ -25,8 +25,8 @@ for spec in 335_65R22_5_G275MSA_60psi:0.4987 HMMWV_Pac02Tire:0.4699 \
     name=${spec%%:*}
     r0=${spec#*:}
     run "$bin" flat --csv --tire "$samples/tir/$name.tir"
-    check "$name.tir loads; flat: z_flat + deflection = R0 = $r0 m, deflection < R0/5" \
-        '[ $rc -eq 0 ] && sensible out $r0'
+    check "$name.tir loads; flat: z_flat + deflection = R0 = $r0 m, deflection < R0/5, at 0.5 to 1.5 FNOMIN; springs derived" \
+        '[ $rc -eq 0 ] && sensible out $r0 && grep -q "derived RADIAL_STIFFNESS" err'
 done
 
 run "$bin" flat --csv --model cam --load 30000 --tire "$samples/tir/Truck_430_50R38-excerpt.tir"
@@ -56,6 +56,12 @@ check "RADIAL_STIFFNESS under [DIMENSION]: exit 2 naming both sections" \
     '[ $rc -eq 2 ] && grep -q "wrong.tir:3:1: RADIAL_STIFFNESS: key of \[ENVELOPING_SPRINGS\] in \[DIMENSION\]" err'
 printf '[UNITS]\nLENGTH = '"'mm'"'\n[DIMENSION]\nUNLOADED_RADIUS = 680\n' >mm.tir
 run "$bin" flat --csv --tire mm.tir
-check "LENGTH = 'mm': UNLOADED_RADIUS 680 mm is 0.68 m" '[ $rc -eq 0 ] && sensible out 0.68'
+check "a file with UNLOADED_RADIUS alone: the springs model is not derived, exit 2 naming FNOMIN" \
+    '[ $rc -eq 2 ] && grep -q "FNOMIN" err'
+# VERTICAL_STIFFNESS in N/mm: 296 N/mm is 296 kN/m.
+printf '[UNITS]\nLENGTH = '"'mm'"'\n[DIMENSION]\nUNLOADED_RADIUS = 680\n[VERTICAL]\nFNOMIN = 17700\nVERTICAL_STIFFNESS = 296\n' >mm.tir
+run "$bin" flat --csv --tire mm.tir --load 17700
+check "LENGTH = 'mm': UNLOADED_RADIUS 680 mm is 0.68 m, VERTICAL_STIFFNESS 296 N/mm is 296 kN/m" \
+    '[ $rc -eq 0 ] && awk -F, "NR == 2 { d = \$2 + \$3 - 0.68; exit !(d < 1e-9 && -d < 1e-9 && \$3 > 0.0597 && \$3 < 0.0599) }" out'
 
 clilib_done

@@ -112,7 +112,7 @@ static void test_springs_segment(void **state)
 static void test_cam_chord(void **state)
 {
     (void)state;
-    const tirenv_tire t = tirenv_test_default_tire();
+    const tirenv_tire t = tirenv_test_tire_before_identify();
     tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
     assert_non_null(m);
     double G_max, l_max;

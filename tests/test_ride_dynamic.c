@@ -61,7 +61,7 @@ static void test_constant_load_is_static(void **state)
 {
     (void)state;
     const tirenv_vehicle v = tractor();
-    const tirenv_tire tire = tirenv_tire_default();
+    const tirenv_tire tire = tirenv_test_tire_before_identify();
     tirenv_profile *cleat = tirenv_profile_cleat(0.30, 0.05);
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
     tirenv_diag d;
@@ -157,7 +157,7 @@ static int direct_input(void *ctx, double x, double load, double *w, double *dw_
 static double h_at(const tirenv_model_type *type, const tirenv_profile *p, double x,
                    double load)
 {
-    const tirenv_tire tire = tirenv_tire_default();
+    const tirenv_tire tire = tirenv_test_tire_before_identify();
     tirenv_model *m = tirenv_model_alloc(type, &tire);
     tirenv_diag d;
     tirenv_point pt;
@@ -181,7 +181,7 @@ static void test_follows_the_load(void **state)
 {
     (void)state;
     const tirenv_vehicle v = tractor();
-    const tirenv_tire tire = tirenv_tire_default();
+    const tirenv_tire tire = tirenv_test_tire_before_identify();
     tirenv_profile *cleat = tirenv_profile_cleat(0.30, 0.05);
     const char *names[] = {"cam", "springs"};
     for (size_t i = 0; i < 2; ++i) {

@@ -188,7 +188,7 @@ static void test_load_matters(void **state)
 static void test_set_load_errors(void **state)
 {
     (void)state;
-    const tirenv_tire tire = tirenv_tire_default();
+    const tirenv_tire tire = tirenv_test_tire_before_identify();
     tirenv_profile *cleat = tirenv_profile_cleat(0.2, 0.05);
     for (size_t c = 0; c < N_CASES; ++c) {
         const tirenv_model_type *type = tirenv_model_type_find(cases[c].name);

@@ -14,7 +14,7 @@
 static void test_contact_length_reaches_every_track(void **state)
 {
     (void)state;
-    const tirenv_tire tire = tirenv_tire_default();
+    const tirenv_tire tire = tirenv_test_tire_before_identify();
     const double R0 = tire.springs.R0, l_c = 0.3313, L = 0.1873, H = 0.0617;
     enum { N = 301 };
     static double x[N], h[N];
@@ -80,7 +80,7 @@ static void test_contact_length_reaches_every_track(void **state)
 static void test_extrapolate_reaches_every_track(void **state)
 {
     (void)state;
-    const tirenv_tire tire = tirenv_tire_default();
+    const tirenv_tire tire = tirenv_test_tire_before_identify();
     const double l_c = 0.3313, L = 0.1873, H = 0.2;
     enum { N = 201 };
     static double x[N];

@@ -90,6 +90,16 @@ size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containin
     return n;
 }
 
+tirenv_tire tirenv_test_tire_before_identify(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.springs.c_r = 7.83e5;
+    t.springs.c_b = 1.41e4;
+    t.cam.q_ra1 = 0.61;
+    t.cam.q_ra2 = 0.66;
+    return t;
+}
+
 tirenv_tire tirenv_test_default_tire(void)
 {
     tirenv_tire t = tirenv_tire_default();

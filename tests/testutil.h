@@ -26,6 +26,12 @@ void tirenv_test_assert_near(double actual, double expected, double abs_tol, dou
 void tirenv_test_check_bits(double a, double b, const char *expr, const char *file, int line);
 
 /* The repository's data/tires/default.tir over tirenv_tire_default(), asserting it reads. */
+/* The default tire with the springs and cam values it had before they were identified on the
+ * ring's flat ground (docs/models.md section 14.1): c_r 7.83e5, c_b 1.41e4 (fitted to the
+ * embedded data set's curves), Q_RA1 0.61, Q_RA2 0.66 (a law that meets the chord of the
+ * free circle below the deflection R0). For the tests of mechanisms that need those
+ * properties: lift-off over the ride's cleat, the cam's chord limit, a network's regime. */
+tirenv_tire tirenv_test_tire_before_identify(void);
 tirenv_tire tirenv_test_default_tire(void);
 
 /* A 4-8-1 network with weights from the seed, scaled to n_samples (at most 128) random

@@ -39,6 +39,50 @@ const char *tirenv_tir_key(size_t i, const char **section);
 int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
                    tirenv_tir_kind *kind, tirenv_diag *diag);
 
+/* The models of a tire file that tirenv_tir_derive may derive (docs/models.md section 14). */
+enum {
+    TIRENV_TIR_SPRINGS = 1u << 0, /* [ENVELOPING_SPRINGS]: c_r and c_b */
+    TIRENV_TIR_RING = 1u << 1     /* [ENVELOPING_RING]: t_r, EI, T, k_f, k_t */
+};
+
+/* What a tire file says of its own tire besides tirenv's keys, and what tirenv_tir_derive
+ * made of it. */
+typedef struct {
+    double fnomin;         /* [VERTICAL] FNOMIN: nominal load, N; 0 if the file has none */
+    double rho_nominal;    /* the file's deflection at FNOMIN and INFLPRES, m; 0 if unknown */
+    unsigned own;          /* TIRENV_TIR_* of the enveloping sections the file has */
+    unsigned derived;      /* TIRENV_TIR_* of the models derived from its MF-Tyre keys */
+    char note[1024];       /* which values were derived from which keys, or why a model
+                            * could not be; "" when the file has every section */
+} tirenv_tir_origin;
+
+/* After tirenv_tir_read(path, tire): for each enveloping model whose section the file lacks,
+ * derives its parameters from the file's MF-Tyre keys (UNLOADED_RADIUS, FNOMIN,
+ * VERTICAL_STIFFNESS, PFZ1/INFLPRES/NOMPRES, Q_FZ1/Q_FZ2, RIM_RADIUS or WIDTH and
+ * ASPECT_RATIO) so that its flat-ground deflection at FNOMIN is the file's, and says so in
+ * origin->note. need (TIRENV_TIR_* bits): the models that must describe this tire; one that
+ * can be neither read nor derived is TIRENV_EINVAL naming the missing key, where the others
+ * keep *tire's values with a note. On failure *tire is unchanged. */
+int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
+                      tirenv_tir_origin *origin, tirenv_diag *diag);
+
+/* One key of a .tir file to set by tirenv_tir_update. */
+typedef struct {
+    const char *section;   /* e.g. "ENVELOPING_SPRINGS" */
+    const char *key;       /* e.g. "RADIAL_STIFFNESS" */
+    double value;          /* SI; written with 6 significant digits */
+} tirenv_tir_value;
+
+/* Sets the n values[] in the .tir file at path in place, keeping every other line, comment
+ * and column (the file must state its [UNITS] in SI or not at all: its values are not
+ * converted): a key present has its value replaced, a missing one is added after its
+ * section's header, a missing section at the end. note (lines separated by '\n') replaces
+ * the '!' block between "! tirenv identify: begin" and "! tirenv identify: end" lines, or
+ * is added with them after the [MDI_HEADER] keys. The file is replaced atomically (or not
+ * at all) and must then read back with tirenv_tir_read. */
+int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
+                      const char *note, tirenv_diag *diag);
+
 /* Reads a profile CSV: header "x_m,z_m", one vertex per line, '#' comment lines and blank
  * lines allowed. Errors name file, line and column. *out is NULL on failure. */
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);

@@ -105,6 +105,26 @@ const tirenv_tire *tirenv_model_tire(const tirenv_model *m);
 int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
                              tirenv_diag *diag);
 
+/* A tire's flat-ground relation between load and contact length, as a table: how a model
+ * driven by the contact length (the network) turns a load into its input (docs/models.md
+ * section 14.3). Linear between the points; loads outside [load[0], load[n-1]] are refused. */
+enum { TIRENV_CONTACT_LAW_MAX = 32 };
+typedef struct {
+    size_t n;                               /* points, 2 to TIRENV_CONTACT_LAW_MAX; 0: none */
+    double load[TIRENV_CONTACT_LAW_MAX];    /* N, strictly ascending, > 0 */
+    double l_c[TIRENV_CONTACT_LAW_MAX];     /* m, strictly ascending, > 0 */
+} tirenv_contact_law;
+
+/* Checks a law: TIRENV_OK, or TIRENV_EINVAL naming the offending point. */
+int tirenv_contact_law_check(const tirenv_contact_law *law, tirenv_diag *diag);
+
+/* The load-to-contact-length relation of the tire a network's data came from (copied; NULL or
+ * n = 0: none, the springs model of the model's tire then gives the contact length, as
+ * before). TIRENV_EINVAL for a model without a network or a law that fails
+ * tirenv_contact_law_check. The model is left unset. */
+int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
+                                 tirenv_diag *diag);
+
 /* Whether a model with a trained range (the network: its inputs l_c, H, L as trained,
  * docs/models.md sections 6.3 and 12) may be evaluated outside it. 0, the default: such input
  * is refused by tirenv_model_set with TIRENV_ERANGE naming the input, its value and the range.

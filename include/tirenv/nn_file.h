@@ -7,6 +7,7 @@
 #include "tirenv/decls.h"
 #include <stdint.h>
 #include "tirenv/error.h"
+#include "tirenv/model.h"
 #include "tirenv/nn.h"
 #include "tirenv/train.h"
 
@@ -26,6 +27,10 @@ typedef struct {
     double R0;                       /* free radius of the tire the data's x_N refers to, m;
                                         0 if unknown */
     char data[512];                  /* data set directory, or "" */
+    /* The load-to-contact-length relation of the tire the data came from (training.data.
+     * contact_law, docs/formats.md): law.n = 0 in a file without one (older files). */
+    tirenv_contact_law law;
+    char law_source[96];             /* what made it: "ring model of tire.tir", "cases" */
 } tirenv_train_record;
 
 /* Writes nn and rec (rec may be NULL) atomically (tirenv_outfile). Non-finite numbers are

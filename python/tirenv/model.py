@@ -84,6 +84,8 @@ class Model:
                 check(lib.tirenv_model_set_network(self._m, network._nn,
                                                    network.R0 if network.R0 else 0.0, diag),
                       diag)
+            if network._law.n:
+                check(lib.tirenv_model_set_contact_law(self._m, network._law, diag), diag)
         self._lock = threading.Lock()
         self.profile = None   # the profile set: kept alive here, the library borrows it
         self.load = None

@@ -2,6 +2,7 @@
 """The empirical model: a trained network read from its model file (tirenv train -o FILE),
 over a single cleat (docs/models.md section 6) or any profile (section 12)."""
 import threading
+import warnings
 
 import numpy as np
 
@@ -21,6 +22,13 @@ class Network:
         check(lib.tirenv_nn_read_json(path_bytes(path), out, rec, diag), diag)
         self._nn = ffi.gc(out[0], lib.tirenv_nn_free)
         self.R0 = rec.R0 if rec.R0 > 0 else None
+        # The load-to-contact-length relation of the data's tire (docs/models.md section
+        # 14.3); an older file has none, and the springs model of the tire stands in.
+        self._law = ffi.new("tirenv_contact_law *", rec.law)
+        if rec.law.n == 0:
+            warnings.warn(f"{path} records no relation between load and contact length of its "
+                          "tire (training.data.contact_law): loads become contact lengths by "
+                          "the springs model of the tire; train it again to record it")
         self.path = path
         self._lock = threading.Lock()
 

@@ -36,6 +36,7 @@ int cli_predict_main(int argc, char *argv[]);
 int cli_dataset_main(int argc, char *argv[]);
 int cli_compare_main(int argc, char *argv[]);
 int cli_fit_main(int argc, char *argv[]);
+int cli_identify_main(int argc, char *argv[]);
 int cli_study_main(int argc, char *argv[]);
 int cli_road_main(int argc, char *argv[]);
 int cli_convert_main(int argc, char *argv[]);
@@ -177,6 +178,14 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
  * for a malformed source.txt. */
 int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
                     size_t n);
+
+/* The origin of the tire the last cli_tire read (what was derived, its FNOMIN). */
+extern tirenv_tir_origin cli_tire_origin;
+
+/* tirenv_tir_derive for a tire read from path for a model of this type (NULL: the springs
+ * model, every command's default), printing what was derived on standard error. */
+int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
+                    tirenv_tir_origin *origin);
 
 /* Reads the tire file, applies --set in order and --method, and checks the result.
  * Returns an exit code after printing any error. */

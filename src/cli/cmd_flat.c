@@ -4,8 +4,11 @@
 
 #include "cli/cli.h"
 
-/* The contact lengths of the paper's working regimes (Table 1 and Table 3), m. */
+/* The contact lengths of the paper's working regimes (Table 1 and Table 3), m: the table of
+ * a tire file without a nominal load (the default tire's). */
 static const double regimes[] = {0.28, 0.33, 0.38};
+/* The table of a tire file with FNOMIN: its own load range, these fractions of FNOMIN. */
+static const double nominal_fractions[] = {0.5, 0.75, 1.0, 1.25, 1.5};
 
 static void usage(FILE *fp)
 {
@@ -13,8 +16,10 @@ static void usage(FILE *fp)
           "                   [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The tire on flat ground: load, centre height, deflection, contact length and\n"
-          "vertical stiffness. Without --load or --contact-length, a table for the paper's\n"
-          "working regimes, contact lengths 0.28, 0.33 and 0.38 m. With --model ring also\n"
+          "vertical stiffness. Without --load or --contact-length, a table of the tire's own\n"
+          "load range, 0.5 to 1.5 times its nominal load [VERTICAL] FNOMIN, or, for a file\n"
+          "without FNOMIN (the default tire's), the paper's working regimes, contact lengths\n"
+          "0.28, 0.33 and 0.38 m. With --model ring also\n"
           "the largest tread compression (and a column tread_max_m in the CSV).\n"
           "\n"
           "options:\n",
@@ -139,16 +144,27 @@ int cli_flat_main(int argc, char *argv[])
         tirenv_model_free(m);
         return code;
     }
+    const double fnomin = cli_tire_origin.fnomin;
+    char what[96] = "at the paper's working regimes";
+    if (fnomin > 0)
+        snprintf(what, sizeof what, "at 0.5 to 1.5 times its nominal load %.6g N", fnomin);
+    const size_t n = fnomin > 0 ? sizeof nominal_fractions / sizeof nominal_fractions[0]
+                                : sizeof regimes / sizeof regimes[0];
     if (csv)
         printf("%s%s\n", csv_header, ring ? ",tread_max_m" : "");
     else
-        printf("%s model, tire %s, at the paper's working regimes\n"
+        printf("%s model, tire %s, %s\n"
                "%10s %8s %10s %10s %10s %10s %10s%s\n",
-               tirenv_model_type_name(type), tire_path, "load_N", "load_kN", "z_flat_m", "defl_m", "defl_mm",
-               "contact_m", "k_kN/m", ring ? "   tread_mm" : "");
-    for (size_t i = 0; i < sizeof regimes / sizeof regimes[0] && !code; ++i) {
-        o.have_contact_length = 1;
-        o.contact_length = regimes[i];
+               tirenv_model_type_name(type), tire_path, what, "load_N", "load_kN", "z_flat_m",
+               "defl_m", "defl_mm", "contact_m", "k_kN/m", ring ? "   tread_mm" : "");
+    for (size_t i = 0; i < n && !code; ++i) {
+        if (fnomin > 0) {
+            o.have_load = 1;
+            o.load = nominal_fractions[i] * fnomin;
+        } else {
+            o.have_contact_length = 1;
+            o.contact_length = regimes[i];
+        }
         if (!(code = flat_at(m, &o, &f)) && !(code = ring_tread(type, &tire, &f, &e)))
             print_row(csv, &f, &e);
     }

@@ -35,7 +35,8 @@ static void usage(FILE *fp)
     fprintf(fp,
             "  --contact-length M   the working regime: contact length in m (fixes x_N)\n"
             "  --load N             or the vertical load in N: the contact length is then the\n"
-            "                       springs model's flat-ground chord at that load\n"
+            "                       ring reference tire's flat-ground patch at that load (the\n"
+            "                       tire's, docs/models.md section 14)\n"
             "  --x-n-from A         first grid point (default %g: before first contact)\n"
             "  --x-n-to B           last grid point (default %g: over the centre)\n"
             "  --dx-n D             grid step (default %g)\n"
@@ -47,8 +48,9 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-/* The working regime: --contact-length as given, or the springs model's flat-ground contact
- * length at --load (the chord at the flat-ground height, docs/models.md section 1). */
+/* The working regime: --contact-length as given, or the tire's flat-ground contact length at
+ * --load, the ring reference tire's patch (docs/models.md section 14: the springs model's
+ * chord is longer than a tire's patch). */
 static int contact_length(const cli_options *o, const tirenv_tire *tire, double *l_c)
 {
     if (o->have_contact_length) {
@@ -56,7 +58,7 @@ static int contact_length(const cli_options *o, const tirenv_tire *tire, double 
         return CLI_EXIT_OK;
     }
     tirenv_model *m;
-    int code = cli_model(tirenv_model_springs, tire, NULL, &m);
+    int code = cli_model(tirenv_model_ring, tire, NULL, &m);
     if (code)
         return code;
     tirenv_flat flat;
@@ -130,6 +132,8 @@ int cli_import_main(int argc, char *argv[])
         return CLI_EXIT_USAGE;
     }
     tirenv_tire tire;
+    if (o.have_load)
+        o.type = tirenv_model_ring;  /* its patch is the regime: derived if the file has none */
     if ((code = cli_tire(&o, &tire)))
         return code;
     set.R0 = tire.springs.R0;

@@ -429,6 +429,16 @@ int cli_train_main(int argc, char *argv[])
             h = tirenv_samples_fingerprint(&s[sp], h);
         rec.fingerprint = h;
         rec.R0 = tire.springs.R0;
+        /* The relation between load and contact length of the tire the data came from, so
+         * that the network, driven by the contact length, takes a load as that tire would. */
+        const tirenv_model_type *source = src.model[0] ? tirenv_model_type_find(src.model) : NULL;
+        char law_what[80];
+        if ((status = tirenv_contact_law_of_data(&ds, source, &tire, &rec.law, law_what,
+                                                 sizeof law_what, &diag))) {
+            code = cli_fail(status, &diag);
+            goto done;
+        }
+        snprintf(rec.law_source, sizeof rec.law_source, "%s", law_what);
         snprintf(rec.data, sizeof rec.data, "%s", t.data);
         if ((status = tirenv_nn_write_json(o.output, nn, &rec, &diag))) {
             code = cli_fail(status, &diag);

@@ -23,6 +23,7 @@ static const cli_command commands[] = {
     {"dataset", cli_dataset_main, "build or list the embedded (simulated) data set"},
     {"study", cli_study_main, "the paper's study in one command: fit, train, compare"},
     {"sweep", cli_sweep_main, "a data set over a grid of cleats, regimes and tire keys"},
+    {"identify", cli_identify_main, "one tire, every model: springs and cam identified on the ring's flat ground"},
     {"fit", cli_fit_main, "identify the springs model's stiffnesses (or the cam's shape) on a data set"},
     {"train", cli_train_main, "train the empirical model's network on a data set"},
     {"predict", cli_predict_main, "the trained network's enveloping curve over a cleat, as CSV"},

@@ -133,6 +133,32 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
     return o->tire_path ? o->tire_path : cli_data_path("tires/default.tir", buf, n);
 }
 
+tirenv_tir_origin cli_tire_origin;
+
+/* The enveloping models a model type needs to describe the tire: the springs model also
+ * stands for the contact length of the network and of the rigid disc. */
+static unsigned tire_needs(const tirenv_model_type *type)
+{
+    if (type == tirenv_model_ring)
+        return TIRENV_TIR_RING;
+    if (type == tirenv_model_cam || type == tirenv_model_point || type == tirenv_model_rigid)
+        return 0;
+    return TIRENV_TIR_SPRINGS;
+}
+
+int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
+                    tirenv_tir_origin *origin)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_tir_derive(path, tire, tire_needs(type), origin, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    if (origin->note[0])
+        fprintf(stderr, "tirenv: %s: %s\n", path, origin->note);
+    return CLI_EXIT_OK;
+}
+
 int cli_tire(const cli_options *o, tirenv_tire *tire)
 {
     char buf[1024];
@@ -143,6 +169,8 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     int status = tirenv_tir_read(path, tire, &diag);
     if (status)
         return cli_fail(status, &diag);
+    if ((status = cli_tire_derive(path, o->type, tire, &cli_tire_origin)))
+        return status;
     for (size_t i = 0; i < o->n_sets; ++i) {
         status = tirenv_tir_set(tire, o->sets[i], &diag);
         if (status && diag.file[0])  /* already says "--set: KEY: ..." */
@@ -204,6 +232,16 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
     if (!status && (status = tirenv_model_set_network(*out, nn, rec.R0, &diag)) &&
         !diag.file[0])
         snprintf(diag.file, sizeof diag.file, "%s", o->nn_path);
+    /* The network's own tire turns a load into its contact length; an older file has no
+     * record of it, and the springs model of the tire file stands in, as it used to. */
+    if (!status && rec.law.n)
+        status = tirenv_model_set_contact_law(*out, &rec.law, &diag);
+    else if (!status)
+        fprintf(stderr, "tirenv: warning: %s records no relation between load and contact "
+                "length of its tire (training.data.contact_law; a file written before tirenv "
+                "recorded it): loads become contact lengths by the springs model of the tire "
+                "file, not by the tire the network was trained on; train it again to record "
+                "it\n", o->nn_path);
     tirenv_nn_free(nn);
     if (status) {
         tirenv_model_free(*out);

@@ -83,6 +83,11 @@ typedef struct {
     size_t n;
 } ride_series;
 
+/* The load-to-contact-length relation the network file records (law->n = 0: none, said once
+ * on standard error), which ride_cli_axle_model gives every network model it makes. Set
+ * before the models are made; read-only while they are. */
+void ride_cli_set_nn_law(const char *nn_path, const tirenv_contact_law *law);
+
 /* A model of this type for one axle's tire into *m (free it, also on failure; NULL if not
  * made): a cam only with the tire's cam data, a type that needs a network with nn (x_N
  * referred to R0_nn, m; 0: the tire's), evaluated outside its trained ranges only if

@@ -6,6 +6,18 @@
 
 #include "cli/ride_cli.h"
 
+static tirenv_contact_law nn_law;
+
+void ride_cli_set_nn_law(const char *nn_path, const tirenv_contact_law *law)
+{
+    if (!law->n && !nn_law.n)
+        fprintf(stderr, "tirenv: ride: warning: %s records no relation between load and "
+                "contact length of its tire (training.data.contact_law; a file written before "
+                "tirenv recorded it): loads become contact lengths by the springs model of "
+                "the tire file; train it again to record it\n", nn_path);
+    nn_law = *law;
+}
+
 int ride_cli_axle_model(const tirenv_model_type *type, const tirenv_tire *tire,
                         const tirenv_nn *nn, double R0_nn, int extrapolate, tirenv_model **m,
                         tirenv_diag *diag)
@@ -22,10 +34,13 @@ int ride_cli_axle_model(const tirenv_model_type *type, const tirenv_tire *tire,
     tirenv_model_set_extrapolate(*m, extrapolate);
     if (!(tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
         return TIRENV_OK;
-    return nn ? tirenv_model_set_network(*m, nn, R0_nn, diag)
-              : tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
-                             "the %s model needs a trained network",
-                             tirenv_model_type_name(type));
+    int status = nn ? tirenv_model_set_network(*m, nn, R0_nn, diag)
+                    : tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
+                                   "the %s model needs a trained network",
+                                   tirenv_model_type_name(type));
+    if (!status && nn_law.n)
+        status = tirenv_model_set_contact_law(*m, &nn_law, diag);
+    return status;
 }
 
 int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, double load,

@@ -56,6 +56,9 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         s->tire[axle] = tirenv_tire_default();
         if ((status = tirenv_tir_read(tire_path, &s->tire[axle], &diag)))
             return cli_fail(status, &diag);
+        tirenv_tir_origin origin;
+        if ((status = cli_tire_derive(tire_path, NULL, &s->tire[axle], &origin)))
+            return status;
         s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
     }
     return CLI_EXIT_OK;
@@ -162,6 +165,8 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
             if ((status = tirenv_nn_read_json(r->nn_path, &in[i].nn, &rec, &diag)))
                 code = cli_fail(status, &diag);
             in[i].R0_nn = rec.R0;
+            if (!code)
+                ride_cli_set_nn_law(r->nn_path, &rec.law);
         }
     }
     for (size_t k = 0; k < n_items; ++k)

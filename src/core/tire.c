@@ -18,16 +18,16 @@ tirenv_eq_settings tirenv_eq_default(void)
 
 /* The default tractor tire: a 14.9R28 (380/85R28) class drive tire at 1.2 bar.
  * R0 = 0.68 m is half its nominal 1.36 m overall diameter. The ring reference tire's values
- * come from the tire's construction and published data; c_r and c_b are the springs model's
- * identified on the ring's data set, VERTICAL_STIFFNESS and Q_RA1/Q_RA2 the ring's flat
- * ground (data/tires/default.tir gives the figures and reasoning). */
+ * come from the tire's construction and published data; c_r and c_b, VERTICAL_STIFFNESS and
+ * Q_RA1/Q_RA2 are identified on the ring's flat ground by `tirenv identify`, and copied here
+ * by scripts/identify-default-tire.sh (data/tires/default.tir gives the figures). */
 tirenv_tire tirenv_tire_default(void)
 {
     return (tirenv_tire){
         .springs = {
             .R0 = 0.68,
-            .c_r = 7.83e5,
-            .c_b = 1.41e4,
+            .c_r = 369000,
+            .c_b = 39600,
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
@@ -49,11 +49,11 @@ tirenv_tire tirenv_tire_default(void)
         .eq = tirenv_eq_default(),
         /* The cam (docs/models.md section 7): the dimensionless cam shape of TNO's public 205/60R15
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
-         * fitted to the ring reference tire's flat ground (data/tires/default.tir says how). */
+         * identified on the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
-            .c_z = 296e3,
-            .q_ra1 = 0.61,
-            .q_ra2 = 0.66,
+            .c_z = 296000,
+            .q_ra1 = 0.807,
+            .q_ra2 = 0.0242,
             .shift = 0.8328,
             .length = 1.4634,
             .height = 0.9551,

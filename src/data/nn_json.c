@@ -200,6 +200,17 @@ static json_t *training_json(wctx *c, const tirenv_train_record *rec)
         put(c, data, "dir", json_string(rec->data));
         put(c, data, "fingerprint", json_string(fp));
         put(c, data, "tire_R0_m", json_real(rec->R0));
+        if (rec->law.n) {
+            json_t *law = put(c, data, "contact_law", json_object());
+            json_t *G = law ? put(c, law, "load_N", json_array()) : NULL;
+            json_t *l = law ? put(c, law, "contact_length_m", json_array()) : NULL;
+            if (law)
+                put(c, law, "source", json_string(rec->law_source));
+            for (size_t k = 0; G && l && k < rec->law.n; ++k)
+                if (json_array_append_new(G, json_real(rec->law.load[k])) ||
+                    json_array_append_new(l, json_real(rec->law.l_c[k])))
+                    c->failed = 1;
+        }
     }
     json_t *res = put(c, t, "result", json_object());
     if (res) {
@@ -851,6 +862,34 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
         return status;
     if (rec->R0 < 0)
         return bad(c, "training.data.tire_R0_m", "%g; expected >= 0 (0: unknown)", rec->R0);
+    /* Optional: files written before it have none (the model's user is warned). */
+    rec->law.n = 0;
+    rec->law_source[0] = '\0';
+    json_t *law = json_object_get(data, "contact_law"), *G;
+    if (law) {
+        if ((status = member(c, data, "contact_law", "training.data.contact_law", JSON_OBJECT,
+                             &law)) ||
+            (status = get_string(c, law, "source", "training.data.contact_law.source",
+                                 rec->law_source, sizeof rec->law_source)) ||
+            (status = member(c, law, "load_N", "training.data.contact_law.load_N", JSON_ARRAY,
+                             &G)))
+            return status;
+        const size_t n = json_array_size(G);
+        if (n < 2 || n > TIRENV_CONTACT_LAW_MAX)
+            return bad(c, "training.data.contact_law.load_N", "%zu points; expected 2 to %d",
+                       n, TIRENV_CONTACT_LAW_MAX);
+        if ((status = number_array(c, G, "training.data.contact_law.load_N", n,
+                                   rec->law.load)) ||
+            (status = get_number_array(c, law, "contact_length_m",
+                                       "training.data.contact_law.contact_length_m", n,
+                                       rec->law.l_c)))
+            return status;
+        rec->law.n = n;
+        tirenv_diag law_why;
+        tirenv_diag_clear(&law_why);
+        if (tirenv_contact_law_check(&rec->law, &law_why))
+            return bad(c, "training.data.contact_law", "%s", law_why.message);
+    }
 
     if ((status = member(c, t, "result", "training.result", JSON_OBJECT, &res)) ||
         (status = get_count(c, res, "restart", "training.result.restart", big, &r->restart)) ||

@@ -101,6 +101,47 @@ int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double
     return TIRENV_OK;
 }
 
+int tirenv_contact_law_check(const tirenv_contact_law *law, tirenv_diag *diag)
+{
+    if (!(law->n >= 2 && law->n <= TIRENV_CONTACT_LAW_MAX))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact law",
+                            "%zu points; expected 2 to %d", law->n, TIRENV_CONTACT_LAW_MAX);
+    for (size_t i = 0; i < law->n; i++) {
+        const int bad = !(law->load[i] > 0 && isfinite(law->load[i]) && law->l_c[i] > 0 &&
+                          isfinite(law->l_c[i])) ||
+                        (i > 0 && !(law->load[i] > law->load[i - 1] &&
+                                    law->l_c[i] > law->l_c[i - 1]));
+        if (bad)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact law",
+                                "point %zu (%g N, %g m): loads and contact lengths must be "
+                                "positive and strictly ascending", i + 1, law->load[i],
+                                law->l_c[i]);
+    }
+    return TIRENV_OK;
+}
+
+int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
+                                 tirenv_diag *diag)
+{
+    m->ready = 0;
+    if (!m->type->set_contact_law)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact law",
+                            "the %s model takes its contact length from its own flat ground",
+                            m->type->name);
+    const tirenv_contact_law none = {.n = 0};
+    if (!law)
+        law = &none;
+    int status;
+    if (law->n && (status = tirenv_contact_law_check(law, diag)))
+        return status;
+    m->law = *law;
+    m->type->set_contact_law(m->state, law);
+    /* The other tracks' states knew the old law. */
+    tirenv_model__tracks_free(m);
+    m->n_tracks = 0;
+    return TIRENV_OK;
+}
+
 void *tirenv_model__track_state(const tirenv_model *m)
 {
     void *state = m->type->alloc(&m->tire);
@@ -109,6 +150,8 @@ void *tirenv_model__track_state(const tirenv_model *m)
         m->type->free(state);
         return NULL;
     }
+    if (state && m->law.n && m->type->set_contact_law)
+        m->type->set_contact_law(state, &m->law);
     if (state && m->have_l_c &&
         m->type->load_for_contact_length(state, m->l_c, &load, NULL) != TIRENV_OK) {
         m->type->free(state);

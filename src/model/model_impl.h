@@ -38,6 +38,8 @@ struct tirenv_model_type {
     double (*reach)(const void *state);
     /* With TIRENV_MODEL_NEEDS_NETWORK: the network (to be copied) and the R0 (m) of its x_N. */
     int (*set_network)(void *state, const struct tirenv_nn *nn, double R0, tirenv_diag *diag);
+    /* Optional, with a network: the load-to-contact-length relation of its tire (n = 0: none). */
+    void (*set_contact_law)(void *state, const tirenv_contact_law *law);
     /* Optional: whether set may evaluate outside a trained range (tirenv_model_set_extrapolate);
      * NULL for a model without one. */
     void (*set_extrapolate)(void *state, int allow);
@@ -89,6 +91,7 @@ struct tirenv_model {
      * the R0 of its x_N, and the last contact length given (the network remembers it). */
     struct tirenv_nn *nn;
     double nn_R0;                  /* m */
+    tirenv_contact_law law;        /* the network's tire, for further tracks; n = 0: none */
     int have_l_c;
     double l_c;                    /* m */
     int extrapolate;               /* tirenv_model_set_extrapolate's, given to every track */

@@ -40,6 +40,7 @@ typedef struct {
     double R0;                 /* the free radius x_N refers to, m */
     char r0_warning[256];      /* the network's R0 is not the tire's, or "" */
     int extrapolate;           /* evaluate outside the trained ranges (with warnings) */
+    tirenv_contact_law law;    /* the network's tire: load -> l_c; n = 0: the springs' chord */
     int pinned;                /* the last load_for_contact_length's pair: */
     double pin_load, pin_l_c;  /* N, m */
     /* The set: */
@@ -100,15 +101,51 @@ static int nn_model_set_network(void *state, const struct tirenv_nn *nn, double 
     return TIRENV_OK;
 }
 
-/* The network's regime at a load: the springs model's contact length, or exactly the one the
- * load was made from. flat may be NULL. */
+static void nn_model_set_contact_law(void *state, const tirenv_contact_law *law)
+{
+    nn_state *st = state;
+    st->law = *law;
+}
+
+/* y at x on the law's polyline xs -> ys (ascending), or TIRENV_ERANGE outside it. */
+static int law_at(const double xs[], const double ys[], size_t n, double x, double *y,
+                  const char *what, const char *unit, tirenv_diag *diag)
+{
+    if (!(x >= xs[0] && x <= xs[n - 1]))
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, what,
+                            "%g %s is outside %g to %g %s, the range of the relation between "
+                            "load and contact length that the network file records for its "
+                            "tire (docs/models.md section 14.3)", x, unit, xs[0], xs[n - 1],
+                            unit);
+    size_t i = 1;
+    while (i < n - 1 && x > xs[i])
+        i++;
+    const double t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+    *y = ys[i - 1] + t * (ys[i] - ys[i - 1]);
+    return TIRENV_OK;
+}
+
+/* The network's regime at a load: the contact length of the network's own tire (the law its
+ * file records), else the springs model's, or exactly the one the load was made from. flat
+ * may be NULL; with a law its stiffness is the springs model's where that has one, else 0. */
 static int regime(nn_state *st, double load, double *l_c, tirenv_flat *flat, tirenv_diag *diag)
 {
-    tirenv_flat f;
-    const int status = tirenv_model_flat(st->springs, load, &f, diag);
-    if (status)
-        return status;
-    *l_c = st->pinned && load == st->pin_load ? st->pin_l_c : f.contact_length;
+    tirenv_flat f = {.stiffness = 0};
+    int status;
+    if (st->law.n) {
+        if (st->pinned && load == st->pin_load)
+            *l_c = st->pin_l_c;
+        else if ((status = law_at(st->law.load, st->law.l_c, st->law.n, load, l_c, "load", "N",
+                                  diag)))
+            return status;
+        tirenv_flat s;
+        if (flat && tirenv_model_flat(st->springs, load, &s, NULL) == TIRENV_OK)
+            f.stiffness = s.stiffness;
+    } else {
+        if ((status = tirenv_model_flat(st->springs, load, &f, diag)))
+            return status;
+        *l_c = st->pinned && load == st->pin_load ? st->pin_l_c : f.contact_length;
+    }
     if (flat)
         *flat = f;
     return TIRENV_OK;
@@ -143,7 +180,10 @@ static int nn_model_load_for_contact_length(void *state, double l_c, double *loa
                                             tirenv_diag *diag)
 {
     nn_state *st = state;
-    const int status = tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
+    const int status =
+        st->law.n ? law_at(st->law.l_c, st->law.load, st->law.n, l_c, load, "contact length",
+                           "m", diag)
+                  : tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
     st->pinned = status == TIRENV_OK;
     st->pin_load = *load;
     st->pin_l_c = l_c;
@@ -528,6 +568,7 @@ static const tirenv_model_type nn_type = {
     .set_profile = NULL,
     .reach = NULL,
     .set_network = nn_model_set_network,
+    .set_contact_law = nn_model_set_contact_law,
     .set_extrapolate = nn_model_set_extrapolate,
     .warnings = nn_model_warnings,
     .note = nn_model_note,

@@ -1,0 +1,27 @@
+# SPDX-License-Identifier: Apache-2.0
+# The network's own tire (docs/models.md section 14.3): a network file records the relation
+# between load and contact length of its data's tire, and the Python model uses it; an older
+# file reads with a warning.
+import os
+import warnings
+
+import tirenv
+
+
+def test_network_takes_its_tires_contact_length(network_file):
+    # The embedded data set is the ring's: at 12935.16 N its patch is 0.28 m (tirenv flat
+    # --model ring); linear between the 32 recorded points, within 1e-4 m.
+    nn = tirenv.Model("nn", network=tirenv.Network(network_file))
+    ring = tirenv.Model("ring")
+    assert abs(ring.flat(12935.16).contact_length - 0.28) < 1e-6
+    assert abs(nn.flat(12935.16).contact_length - 0.28) < 1e-4
+    # The springs model's chord at that load is far longer (1.76 times).
+    assert tirenv.Model("springs").flat(12935.16).contact_length > 0.45
+
+
+def test_older_file_warns(source_dir):
+    path = os.path.join(source_dir, "tests", "data", "nn-v1.json")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        tirenv.Network(path)
+    assert any("training.data.contact_law" in str(w.message) for w in caught)

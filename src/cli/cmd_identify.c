@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* tirenv identify: one tire, every model. The springs model's stiffnesses and the cam's
+ * vertical and contact-length keys identified on the reference model's flat ground (the
+ * ring's), reported model against model, and written into the tire file with how
+ * (docs/models.md section 14.1). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "tirenv/study.h"
+
+enum { MAX_LOADS = 32 };
+
+/* Contact lengths (m) at which the reference gives the loads of a tire file without FNOMIN:
+ * the span of the paper's working regimes, 0.28 to 0.38 m. */
+static const double regime_lc[] = {0.28, 0.305, 0.33, 0.355, 0.38};
+/* The loads of a tire file with FNOMIN, as fractions of it (the range `tirenv flat` shows). */
+static const double nominal_fractions[] = {0.5, 0.75, 1.0, 1.25, 1.5};
+
+typedef struct {
+    double v[MAX_LOADS];
+    size_t n;
+} load_list;
+
+static int parse_loads(void *dst, const char *arg)
+{
+    load_list *l = dst;
+    l->n = 0;
+    for (const char *p = arg; *p;) {
+        char *end;
+        const double v = strtod(p, &end);
+        if (end == p || !(v > 0 && isfinite(v)) || (*end && *end != ',') || l->n == MAX_LOADS) {
+            cli_error("--loads: expected up to %d positive loads in N separated by commas, got "
+                      "'%s'", MAX_LOADS, arg);
+            return CLI_EXIT_USAGE;
+        }
+        l->v[l->n++] = v;
+        p = *end ? end + 1 : end;
+    }
+    if (l->n < 2) {
+        cli_error("--loads: at least two loads are needed, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static void usage(FILE *fp)
+{
+    fputs("usage: tirenv identify [--reference MODEL] [--loads G1,G2,...] [--write]\n"
+          "                       [--tire FILE] [--set KEY=VALUE]...\n"
+          "\n"
+          "One tire, every model: identifies the springs model's RADIAL_STIFFNESS and\n"
+          "INTERRADIAL_STIFFNESS on the reference model's flat-ground load-deflection curve,\n"
+          "and the cam's VERTICAL_STIFFNESS, Q_RA1 and Q_RA2 on its load-deflection and\n"
+          "load-contact-length curves (docs/models.md section 14.1), then tabulates the three\n"
+          "models' deflections and contact lengths at each load and their largest relative\n"
+          "differences from the reference, all with the values rounded to three significant\n"
+          "digits, as written. The loads: 0.5 to 1.5 times the file's FNOMIN,\n"
+          "or, for a file without it, the reference's loads at contact lengths 0.28 to\n"
+          "0.38 m (the paper's working regimes).\n"
+          "\n"
+          "options:\n"
+          "  --reference MODEL    the model the others are identified on (default ring)\n"
+          "  --loads G1,G2,...    the loads, N (at least two)\n"
+          "  --write              set the five values in the tire file in place, keeping its\n"
+          "                       comments, with a '!' note on how they were identified\n",
+          fp);
+    cli_help_tire(fp, 1);
+    fputs("  -h, --help           show this help\n", fp);
+}
+
+/* A model's flat-ground states at the loads. */
+static int states(const tirenv_model_type *type, const tirenv_tire *tire, size_t n,
+                  const double loads[], tirenv_flat f[])
+{
+    tirenv_model *m = tirenv_model_alloc(type, tire);
+    if (!m)
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < n && !status; i++)
+        status = tirenv_model_flat(m, loads[i], &f[i], &diag);
+    tirenv_model_free(m);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+static double rel(double a, double b) { return fabs(a - b) / b; }
+
+int cli_identify_main(int argc, char *argv[])
+{
+    const char *ref_name = "ring";
+    load_list loads = {.n = 0};
+    int write = 0;
+    const cli_opt own[] = {
+        {.name = "reference", .kind = CLI_STRING, .dst = &ref_name},
+        {.name = "loads", .kind = CLI_CUSTOM, .dst = &loads, .parse = parse_loads},
+        {.name = "write", .kind = CLI_FLAG, .dst = &write},
+        {.name = NULL},
+    };
+    const cli_parser p = {.name = "identify", .usage = usage, .opts = own,
+                          .groups = CLI_TIRE | CLI_METHOD};
+    cli_options o;
+    int code = cli_parse(&p, argc, argv, &o);
+    if (code != CLI_GO_ON)
+        return code;
+    const tirenv_model_type *ref;
+    if ((code = cli_model_type(ref_name, &ref)))
+        return code;
+    if (!(tirenv_model_type_flags(ref) & TIRENV_MODEL_CONTACT_LENGTH) ||
+        ref == tirenv_model_springs || ref == tirenv_model_cam) {
+        cli_error("--reference: expected a model with a contact length of its own other than "
+                  "the two identified (ring), got '%s'", ref_name);
+        return CLI_EXIT_USAGE;
+    }
+    o.type = ref;
+    tirenv_tire tire;
+    if ((code = cli_tire(&o, &tire)))
+        return code;
+    char buf[1024];
+    const char *path = cli_tire_path(&o, buf, sizeof buf);
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const double fnomin = cli_tire_origin.fnomin;
+    if (loads.n == 0) {
+        tirenv_model *m = tirenv_model_alloc(ref, &tire);
+        if (!m)
+            return cli_fail(TIRENV_ENOMEM, NULL);
+        const size_t n = fnomin > 0 ? sizeof nominal_fractions / sizeof nominal_fractions[0]
+                                    : sizeof regime_lc / sizeof regime_lc[0];
+        int status = TIRENV_OK;
+        for (size_t i = 0; i < n && !status; i++)
+            status = fnomin > 0 ? (loads.v[i] = nominal_fractions[i] * fnomin, TIRENV_OK)
+                                : tirenv_model_load_for_contact_length(m, regime_lc[i],
+                                                                       &loads.v[i], &diag);
+        tirenv_model_free(m);
+        if (status)
+            return cli_fail(status, &diag);
+        loads.n = n;
+    }
+    const size_t n = loads.n;
+    tirenv_tire id;
+    tirenv_flat_target tg[MAX_LOADS];
+    int status = tirenv_identify_flat(&tire, ref, n, loads.v, &id, tg, &diag);
+    if (status)
+        return cli_fail(status, &diag);
+    /* Three significant digits, as written: the table and the note describe the file. */
+    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.cam.c_z, &id.cam.q_ra1,
+                           &id.cam.q_ra2};
+    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+        char t[32];
+        snprintf(t, sizeof t, "%.3g", *ids[k]);
+        *ids[k] = strtod(t, NULL);
+    }
+    tirenv_flat fs[MAX_LOADS], fc[MAX_LOADS];
+    if ((code = states(tirenv_model_springs, &id, n, loads.v, fs)) ||
+        (code = states(tirenv_model_cam, &id, n, loads.v, fc)))
+        return code;
+
+    printf("identified on the %s model of %s at %zu loads %.6g to %.6g N\n", ref_name, path, n,
+           loads.v[0], loads.v[n - 1]);
+    printf("  RADIAL_STIFFNESS       %.6g N/m/rad (was %.6g)\n", id.springs.c_r, tire.springs.c_r);
+    printf("  INTERRADIAL_STIFFNESS  %.6g N*rad/m (was %.6g)\n", id.springs.c_b, tire.springs.c_b);
+    printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g)\n", id.cam.c_z, tire.cam.c_z);
+    printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire.cam.q_ra1);
+    printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire.cam.q_ra2);
+    printf("%10s  %-26s  %-26s\n", "", "deflection, mm", "contact length, m");
+    printf("%10s  %8s %8s %8s  %8s %8s %8s\n", "load_N", ref_name, "springs", "cam", ref_name,
+           "springs", "cam");
+    double e_sd = 0, e_cd = 0, e_sl = 0, e_cl = 0;
+    for (size_t i = 0; i < n; i++) {
+        printf("%10.1f  %8.2f %8.2f %8.2f  %8.4f %8.4f %8.4f\n", tg[i].load,
+               tg[i].deflection * 1e3, fs[i].deflection * 1e3, fc[i].deflection * 1e3,
+               tg[i].contact_length, fs[i].contact_length, fc[i].contact_length);
+        e_sd = fmax(e_sd, rel(fs[i].deflection, tg[i].deflection));
+        e_cd = fmax(e_cd, rel(fc[i].deflection, tg[i].deflection));
+        e_sl = fmax(e_sl, rel(fs[i].contact_length, tg[i].contact_length));
+        e_cl = fmax(e_cl, rel(fc[i].contact_length, tg[i].contact_length));
+    }
+    printf("largest difference from the %s: springs deflection %.1f %%, cam deflection %.1f %%, "
+           "cam contact length %.1f %%; springs contact length (the chord, docs/models.md "
+           "section 1.3) %.0f %%\n", ref_name, 100 * e_sd, 100 * e_cd, 100 * e_cl, 100 * e_sl);
+    if (!write)
+        return CLI_EXIT_OK;
+
+    char note[2048];
+    snprintf(note, sizeof note,
+             "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, VERTICAL_STIFFNESS, Q_RA1 and Q_RA2 below\n"
+             "are identified by `tirenv identify --write` (docs/models.md section 14.1) on the\n"
+             "%s model's flat ground at %zu loads %.4g to %.4g kN (deflection %.1f to %.1f mm,\n"
+             "contact length %.3f to %.3f m). Largest differences from it over these loads:\n"
+             "springs deflection %.1f %%, cam deflection %.1f %%, cam contact length %.1f %%.\n"
+             "The springs model's contact length is the chord of its free circle, %.0f %% longer\n"
+             "at most: its deflection, not its chord, is the tire's.",
+             ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
+             tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
+             100 * e_sd, 100 * e_cd, 100 * e_cl, 100 * e_sl);
+    const tirenv_tir_value values[] = {
+        {"VERTICAL", "VERTICAL_STIFFNESS", id.cam.c_z},
+        {"CONTACT_PATCH", "Q_RA1", id.cam.q_ra1},
+        {"CONTACT_PATCH", "Q_RA2", id.cam.q_ra2},
+        {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},
+        {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", id.springs.c_b},
+    };
+    if ((status = tirenv_tir_update(path, sizeof values / sizeof values[0], values, note, &diag)))
+        return cli_fail(status, &diag);
+    fprintf(stderr, "tirenv identify: wrote the five values into %s\n", path);
+    return CLI_EXIT_OK;
+}

@@ -1,0 +1,216 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* One tire, every model (docs/models.md section 14.1): the springs model's stiffnesses and the
+ * cam's vertical and contact-length keys identified on a reference model's flat ground, so
+ * that at one load the models of a tire file deflect alike. */
+#include "tirenv/study.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { MAX_LOADS = 64 };
+
+/* The springs model's load at deflection d (m), c_r = 1 and c_b = beta: its contact length is
+ * the chord of the free circle (section 1.3), so the load is one flat solve at that chord. */
+static int springs_unit_load(const tirenv_tire *tire, double beta, size_t n, const double d[],
+                             double f[], tirenv_diag *diag)
+{
+    tirenv_tire t = *tire;
+    t.springs.c_r = 1;
+    t.springs.c_b = beta;
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+    if (!m)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "no springs model");
+    const double R0 = t.springs.R0;
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < n && !status; i++) {
+        const double z = R0 - d[i];
+        status = tirenv_model_load_for_contact_length(m, 2 * sqrt(R0 * R0 - z * z), &f[i], diag);
+    }
+    tirenv_model_free(m);
+    return status;
+}
+
+/* For a ratio beta, the least-squares c_r of log(load) and the sum of squared residuals. */
+static int springs_residual(const tirenv_tire *tire, double log_beta, size_t n,
+                            const tirenv_flat_target tg[], double *c_r, double *ss,
+                            tirenv_diag *diag)
+{
+    double d[MAX_LOADS], f[MAX_LOADS], r[MAX_LOADS];
+    for (size_t i = 0; i < n; i++)
+        d[i] = tg[i].deflection;
+    const int status = springs_unit_load(tire, exp(log_beta), n, d, f, diag);
+    if (status)
+        return status;
+    double mean = 0;
+    for (size_t i = 0; i < n; i++)
+        mean += (r[i] = log(tg[i].load / f[i])) / (double)n;
+    *ss = 0;
+    for (size_t i = 0; i < n; i++)
+        *ss += (r[i] - mean) * (r[i] - mean);
+    *c_r = exp(mean);
+    return TIRENV_OK;
+}
+
+/* Golden section on log(c_b/c_r) over [1e-6, 10] rad^2: the fit is smooth and one-dimensional
+ * once c_r is eliminated; 60 steps narrow the bracket to 1e-12 of its width. */
+static int identify_springs(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
+                            tirenv_diag *diag)
+{
+    const double g = 0.5 * (sqrt(5.0) - 1);
+    double a = log(1e-6), b = log(10.0);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a), c1, c2, s1, s2;
+    int status = springs_residual(t, x1, n, tg, &c1, &s1, diag);
+    if (!status)
+        status = springs_residual(t, x2, n, tg, &c2, &s2, diag);
+    for (int k = 0; k < 60 && !status; k++) {
+        if (s1 <= s2) {
+            b = x2;
+            x2 = x1;
+            s2 = s1;
+            x1 = b - g * (b - a);
+            status = springs_residual(t, x1, n, tg, &c1, &s1, diag);
+        } else {
+            a = x1;
+            x1 = x2;
+            s1 = s2;
+            x2 = a + g * (b - a);
+            status = springs_residual(t, x2, n, tg, &c2, &s2, diag);
+        }
+    }
+    double c_r, ss;
+    if (!status)
+        status = springs_residual(t, 0.5 * (a + b), n, tg, &c_r, &ss, diag);
+    if (status)
+        return status;
+    t->springs.c_b = c_r * exp(0.5 * (a + b));
+    t->springs.c_r = c_r;
+    return TIRENV_OK;
+}
+
+/* The cam (section 7.3): rho = G/VERTICAL_STIFFNESS, so VERTICAL_STIFFNESS is the geometric
+ * mean of the reference's load over deflection (least squares in log deflection); then
+ * a/R0 = Q_RA2*s^2 + Q_RA1*s with s = sqrt(rho/R0) is linear in the two keys, fitted in
+ * relative error of the contact length by the 2x2 normal equations. */
+static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
+                        tirenv_diag *diag)
+{
+    const double R0 = t->springs.R0;
+    double mean = 0;
+    for (size_t i = 0; i < n; i++)
+        mean += log(tg[i].load / tg[i].deflection) / (double)n;
+    const double c_z = exp(mean);
+    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double s = sqrt(tg[i].load / c_z / R0), w = 2 * R0 / tg[i].contact_length;
+        const double u = w * s * s, v = w * s;  /* the rows for Q_RA2 and Q_RA1 */
+        A11 += u * u;
+        A12 += u * v;
+        A22 += v * v;
+        b1 += u;
+        b2 += v;
+    }
+    const double det = A11 * A22 - A12 * A12;
+    if (!(fabs(det) > 1e-12 * A11 * A22))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
+                            "the loads do not separate the contact law's two terms (give "
+                            "loads further apart)");
+    t->cam.c_z = c_z;
+    t->cam.q_ra2 = (b1 * A22 - b2 * A12) / det;
+    t->cam.q_ra1 = (A11 * b2 - A12 * b1) / det;
+    t->cam.given |= TIRENV_CAM_C_Z | TIRENV_CAM_Q_RA1 | TIRENV_CAM_Q_RA2;
+    return TIRENV_OK;
+}
+
+int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *reference, size_t n,
+                         const double loads[], tirenv_tire *out, tirenv_flat_target target[],
+                         tirenv_diag *diag)
+{
+    if (n < 2 || n > MAX_LOADS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
+                            "identification needs 2 to %d loads, got %zu", MAX_LOADS, n);
+    tirenv_flat_target tg[MAX_LOADS];
+    tirenv_model *m = tirenv_model_alloc(reference, tire);
+    if (!m)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for the "
+                            "%s model", tirenv_model_type_name(reference));
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < n && !status; i++) {
+        tirenv_flat f;
+        if (!(loads[i] > 0 && isfinite(loads[i])))
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
+                                  "load %zu must be a positive force in N, got %g", i + 1,
+                                  loads[i]);
+        else if (!(status = tirenv_model_flat(m, loads[i], &f, diag)))
+            tg[i] = (tirenv_flat_target){.load = loads[i], .deflection = f.deflection,
+                                         .contact_length = f.contact_length};
+    }
+    tirenv_model_free(m);
+    tirenv_tire t = *tire;
+    if (!status)
+        status = identify_springs(&t, n, tg, diag);
+    if (!status)
+        status = identify_cam(&t, n, tg, diag);
+    if (!status && (status = tirenv_tire_check(&t, diag)) == TIRENV_OK) {
+        *out = t;
+        if (target)
+            memcpy(target, tg, n * sizeof tg[0]);
+    }
+    return status;
+}
+
+int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type *source,
+                               const tirenv_tire *tire, tirenv_contact_law *law, char *what,
+                               size_t n, tirenv_diag *diag)
+{
+    double G_min = INFINITY, G_max = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    size_t m = 0;
+    for (size_t i = 0; i < ds->n; i++) {
+        const tirenv_case *c = &ds->cases[i];
+        if (!(c->load > 0 && c->contact_length > 0))
+            continue;
+        G_min = fmin(G_min, c->load);
+        G_max = fmax(G_max, c->load);
+        const double x = log(c->load), y = log(c->contact_length);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        m++;
+    }
+    if (m < 2 || !(G_max > G_min))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
+                            "the data set's cases have %zu positive loads, %s; a relation "
+                            "between load and contact length needs two different ones", m,
+                            m ? "all equal" : "none");
+    const size_t N = TIRENV_CONTACT_LAW_MAX;
+    const double lo = 0.5 * G_min, hi = 1.5 * G_max;
+    tirenv_contact_law out = {.n = N};
+    for (size_t k = 0; k < N; k++)
+        out.load[k] = lo * pow(hi / lo, (double)k / (double)(N - 1));
+    int status = TIRENV_OK;
+    if (source) {
+        tirenv_model *model = tirenv_model_alloc(source, tire);
+        if (!model)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for "
+                                "the %s model", tirenv_model_type_name(source));
+        for (size_t k = 0; k < N && !status; k++) {
+            tirenv_flat f;
+            if (!(status = tirenv_model_flat(model, out.load[k], &f, diag)))
+                out.l_c[k] = f.contact_length;
+        }
+        tirenv_model_free(model);
+        snprintf(what, n, "the %s model's flat ground", tirenv_model_type_name(source));
+    } else {
+        const double b = (m * sxy - sx * sy) / (m * sxx - sx * sx), a = (sy - b * sx) / m;
+        for (size_t k = 0; k < N; k++)
+            out.l_c[k] = exp(a + b * log(out.load[k]));
+        snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
+    }
+    if (!status)
+        status = tirenv_contact_law_check(&out, diag);
+    if (!status)
+        *law = out;
+    return status;
+}
