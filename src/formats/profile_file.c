@@ -178,7 +178,10 @@ int tirenv_profile_write_file(const char *path, const tirenv_profile *p,
     if (!o)
         o = &def;
     tirenv_profile_format f;
-    if (tirenv_profile_format_of_name(path, &f) != TIRENV_OK)
+    if (tirenv_profile_format_of_name(path, &f) != TIRENV_OK &&
+        tirenv_outfile_path_is_through(path))
+        f = TIRENV_PROFILE_CSV; /* "-", /dev/null, a FIFO without an extension: CSV */
+    else if (tirenv_profile_format_of_name(path, &f) != TIRENV_OK)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "unknown extension; expected a "
                             "file name ending in .csv, .crg or .rdf");
     switch (f) {
