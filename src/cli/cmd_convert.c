@@ -148,8 +148,8 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     char comment[160], v[TIRENV_FMT_G_SIZE];
     tirenv_fmt_shortest(cv->src.crg.v, v);
     snprintf(comment, sizeof comment, "track at v = %s m of an OpenCRG road (tirenv convert)", v);
-    tirenv_outfile_comment(&f, comment);
     fputs("x_m,z_m\n", f.fp);
+    tirenv_outfile_comment(&f, comment);
     double u, z;
     int got;
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];

@@ -150,8 +150,8 @@ int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const ch
     const int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    tirenv_outfile_comment(&f, comment);
     fputs("x_m,z_m\n", f.fp);
+    tirenv_outfile_comment(&f, comment);
     const size_t n = tirenv_profile_size(p);
     const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
