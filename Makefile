@@ -10,7 +10,7 @@ FUZZ_SECONDS ?= 60
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps deps-test build wheel test test-asan test-slurm demo demo-study demo-study-205 \
+.PHONY: all deps deps-test configure cli build wheel test test-asan test-slurm demo demo-study demo-study-205 \
         demo-ride bench fuzz python fmu install clean
 
 all: build
@@ -25,9 +25,16 @@ deps:
 deps-test: deps
 	@sh scripts/deps.sh --slurm
 
-# Release build under BUILD: the library, CLI, tests, Python module and FMU.
-build: deps
+# The Release build tree under BUILD, configured.
+configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+# The library and the CLI alone (what make demo runs), under BUILD.
+cli: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target tirenv
+
+# Release build under BUILD: the library, CLI, tests, fuzz harnesses, Python module and FMU.
+build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # Release build and every test, then test-asan.
@@ -74,7 +81,9 @@ wheel: build
 # core; the outputs are the same for any --jobs. The road's bumps are all lower than
 # the network's lowest trained cleat: its curves there are that cleat's scaled down
 # (docs/models.md section 12), an extrapolation, hence --extrapolate.
-demo: build
+# It builds the library and the CLI only (make cli); tests, fuzzers, Python and FMU have their
+# own targets.
+demo: cli
 	@$(MAKE) --no-print-directory -j $(JOBS) -Otarget demo-study-205 demo-ride
 
 # The tractor's study alone, into DEMO_OUT, with the CLI already built (demo-ride's nn model

@@ -2,7 +2,9 @@
 # End-to-end checks of the tirenv command-line tool: exit codes, where messages go, what they
 # name, exact CSV layout, and that a failure leaves no file (complete or partial) behind.
 # Usage: tests/cli.sh BIN TESTDATA_DIR. Prints "ok N - what" / "not ok N - what" per check
-# and exits non-zero if any failed. SPDX-License-Identifier: GPL-3.0-or-later
+# and exits non-zero if any failed. The road and cam, network and ride checks are in
+# cli_road_cam.sh, cli_network_road.sh and cli_ride_tractor.sh, which CTest runs beside this
+# one. SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/clilib.sh"
 
@@ -151,117 +153,11 @@ check "flat --contact-length 0.33 matches the table's row" \
 run "$bin" flat --load 15000
 check "flat --load: load in N and kN, stiffness in N/m and kN/m" \
     '[ $rc -eq 0 ] && grep -q "15000 N (15 kN)" out && grep -q "N/m (.* kN/m)" out'
-run "$bin" bench --repeat 1
-check "bench --repeat 1: four methods, the machine, the single-thread note" \
+# --quick: every part of the bench on a 100 m road (the full 1 km one took most of this
+# test's time under AddressSanitizer); cli_bench.sh checks the figures themselves.
+run "$bin" bench --repeat 1 --quick
+check "bench --repeat 1 --quick: four methods, the machine, the single-thread note" \
     '[ $rc -eq 0 ] && [ $(grep -Ec "^(rigid|springs newton|springs secant|springs brent) +[0-9]" out) -eq 4 ] &&
      grep -q "^machine:" out && grep -q "single-threaded" out'
-
-# --- road and the cam model ------------------------------------------------------------
-run "$bin" road --class C --length 50 --dx 0.01 --seed 3 -o road.csv
-check "road: exit 0, '#' header naming the class and seed, x_m,z_m, 5001 vertices from 0,0" \
-    '[ $rc -eq 0 ] && grep -q "^# ISO 8608 class C" road.csv && grep -q "seed 3" road.csv &&
-     [ "$(grep -v "^#" road.csv | head -n 1)" = x_m,z_m ] &&
-     [ "$(grep -v "^#" road.csv | sed -n 2p)" = 0,0 ] &&
-     [ $(grep -vc "^#" road.csv) -eq 5002 ] && grep -q "rms .* mm" err'
-run "$bin" road --class C --length 50 --dx 0.01 --seed 3 -o road2.csv
-check "road: same seed, same file" '[ $rc -eq 0 ] && cmp -s road.csv road2.csv'
-run "$bin" road --class Q --length 50 -o o.csv
-check "road --class Q: exit 1 naming A to H" '[ $rc -eq 1 ] && grep -q "A to H" err && no_file o.csv'
-run "$bin" road --class C -o o.csv
-check "road without --length: exit 1" '[ $rc -eq 1 ] && grep -q -- "--length" err && no_file o.csv'
-run "$bin" road --class C --length 50 --dx 0.5 -o o.csv
-check "road --dx too coarse for the band: exit 2 naming dx, no file" \
-    '[ $rc -eq 2 ] && grep -q "dx" err && no_file o.csv'
-run "$bin" envelope --model cam --profile road.csv --load 12000 --dx 0.01 -o rc.csv
-check "envelope --model cam over the generated road" \
-    '[ $rc -eq 0 ] && [ "$(head -n 1 rc.csv)" = x_m,z_m,h_m,slope,fx_N,fz_N,contacts,iterations ] &&
-     grep -q "cam model" err'
-run "$bin" envelope --model cam --cleat 0.30,0.10 --contact-length 0.33 -o cam.csv
-check "envelope --model cam: the tandem rides the 0.30 x 0.10 m cleat's full height" \
-    '[ $rc -eq 0 ] && grep -q "peak h 100.000 mm" err && [ "$(sed -n 2p cam.csv | cut -d, -f7,8)" = 2,0 ]'
-run "$bin" flat --model cam --contact-length 0.33 --csv
-check "flat --model cam --contact-length 0.33: contact length 0.33, VERTICAL_STIFFNESS" \
-    '[ $rc -eq 0 ] && [ "$(sed -n 2p out | cut -d, -f4,5)" = 0.33,296000 ]'
-# The warm start carries over from window to window, so --stream writes the whole-profile
-# CSV byte for byte, iterations included.
-for m in rigid springs cam; do
-    run "$bin" envelope --model $m --profile road.csv --load 12000 --dx 0.01 -o whole_$m.csv
-    run "$bin" envelope --model $m --profile road.csv --load 12000 --dx 0.01 --stream \
-        -o stream_$m.csv
-    check "envelope --model $m --stream: the whole-profile CSV, byte for byte" \
-        '[ $rc -eq 0 ] && cmp -s whole_$m.csv stream_$m.csv && grep -q "$m model" err &&
-         [ $(rows stream_$m.csv) -eq 5141 ]'
-done
-printf 'x_m,z_m\n0,0\n1,0.01\n0.5,0\n' >late.csv
-run "$bin" envelope --model rigid --profile late.csv --load 1e4 --stream -o o.csv
-check "envelope --stream over a malformed profile: exit 2 naming file:line, no file" \
-    '[ $rc -eq 2 ] && grep -q "late.csv:4" err && no_file o.csv'
-run "$bin" envelope --model rigid --cleat 0.1,0.02 --load 1e4 --stream -o o.csv
-check "envelope --stream without --profile: exit 1" '[ $rc -eq 1 ] && no_file o.csv'
-run "$bin" help
-check "help lists road" '[ $rc -eq 0 ] && grep -q "^  road " out'
-
-# --- the network over any profile (equivalent-cleat decomposition, nn_road.h) -----------
-# The network of the study, trained on the embedded data set (lm, seed 1, one restart).
-run "$bin" train --data "$data/../../data/dataset" --restarts 1 -o net.json
-check "train on the embedded data set writes a model file" '[ $rc -eq 0 ] && [ -s net.json ]'
-run "$bin" envelope --model nn --nn net.json --profile road.csv --contact-length 0.33 \
-    --dx 0.01 --extrapolate -o rn.csv
-check "envelope --model nn --profile over the generated road: header, 5141 finite rows" \
-    '[ $rc -eq 0 ] && [ "$(head -n 1 rn.csv)" = "$header" ] && [ $(rows rn.csv) -eq 5141 ] &&
-     grep -q "obstacles above a baseline" err &&
-     awk -F, "NR > 1 && (\$3 + 0 != \$3 || \$4 + 0 != \$4) { bad = 1 } END { exit bad }" rn.csv'
-printf 'x_m,z_m\n-0.05,0\n-0.05,0.075\n0.05,0.075\n0.05,0\n' >cleat.csv
-run "$bin" envelope --model nn --nn net.json --profile cleat.csv --contact-length 0.38 -o pc.csv
-run "$bin" envelope --model nn --nn net.json --cleat 0.10,0.075 --contact-length 0.38 -o cc.csv
-check "envelope --model nn: a cleat as --profile gives --cleat's curve (h within 1e-9 m)" \
-    '[ $rc -eq 0 ] && same_h pc.csv cc.csv 1e-9 && near "$(peak_h cc.csv)" 0.04 0.035'
-# A bump on a stretch of flat ground (not the bare four corners of a centred cleat, which the
-# network takes as its own case, the cleat): with --extrapolate the decomposition clamps it.
-printf 'x_m,z_m\n-1,0\n-0.05,0\n-0.05,0.15\n0.05,0.15\n0.05,0\n1,0\n' >tall.csv
-run "$bin" predict --nn net.json --profile tall.csv --contact-length 0.38 --extrapolate -o o.csv
-check "predict --profile with a bump above the trained heights: one warning with the count" \
-    '[ $rc -eq 0 ] && [ $(grep -c "warning: 1 of 1 obstacles outside" err) -eq 1 ] &&
-     grep -q "1 heights above 0.1 m" err'
-run "$bin" envelope --model nn --nn net.json --profile late.csv --contact-length 0.33 -o nn.csv
-check "envelope --model nn over a malformed profile: exit 2 naming file:line, no file" \
-    '[ $rc -eq 2 ] && grep -q "late.csv:4" err && no_file nn.csv'
-
-# --- ride: the tractor over a profile ------------------------------------------------------
-run "$bin" ride --help
-check "ride --help prints usage, exit 0" '[ $rc -eq 0 ] && grep -q "^usage: tirenv ride" out'
-run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point -o series.csv
-check "ride -o: exact header, 1 kHz rows from t = 0 at rest, a table row on stdout" \
-    '[ $rc -eq 0 ] && [ "$(grep -v "^#" series.csv | head -n 1)" = "t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N" ] &&
-     [ "$(grep -v "^#" series.csv | sed -n 2p | cut -d, -f1,5,6)" = 0,0,0 ] &&
-     [ "$(grep -v "^#" series.csv | sed -n 3p | cut -d, -f1)" = 0.001 ] &&
-     [ $(grep -c "^point " out) -eq 1 ]'
-run "$bin" ride --cleat 0.30,0.05 --speed 5km/h,15km/h --model point,cam --out-dir rd --series
-check "ride --out-dir: comfort table of 2 models x 2 speeds, both plots as PNG and SVG" \
-    '[ $rc -eq 0 ] && [ $(rows rd/comfort.csv) -eq 4 ] && [ -s rd/seat.png ] &&
-     [ -s rd/seat.svg ] && [ -s rd/spectrum.png ] && [ -s rd/spectrum.svg ] &&
-     [ -s rd/seat.gp ] && [ -s rd/series-cam-15kmh.csv ] &&
-     [ -z "$(find rd -name "*tmp.*")" ]'
-check "ride over a cleat: point contact's seat acceleration peaks higher than the cam's" \
-    'awk -F, "NR > 1 && \$3 == 5 { p[\$1] = \$13 } END { exit !(p[\"point\"] > 2 * p[\"cam\"]) }" rd/comfort.csv'
-run "$bin" ride --cleat 0.30,0.05 --speed 10km/h,20km/h --model point -o two.csv
-check "ride -o with two speeds: exit 1, no file" '[ $rc -eq 1 ] && no_file two.csv'
-run "$bin" ride --cleat 0.30,0.05 --speed 10mph
-check "ride --speed 10mph: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--speed" err'
-run "$bin" ride --cleat 0.30,0.05 --speed 3 --dt 0.01
-check "ride --dt too coarse for ISO 2631-1: exit 1" '[ $rc -eq 1 ] && grep -q "80 Hz" err'
-run "$bin" ride --cleat 0.30,0.05 --speed 3 --model nn
-check "ride --model nn without --nn: exit 1" '[ $rc -eq 1 ] && grep -q -- "--nn" err'
-printf '[BODY]\nMASS = 4500\nMASS_X = 1\n' >bad.veh
-run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --vehicle bad.veh -o badveh.csv
-check "ride with a bad vehicle file: exit 2 naming file:line and key, no file" \
-    '[ $rc -eq 2 ] && grep -q "bad.veh:3" err && grep -q MASS_X err && no_file badveh.csv'
-run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --set MASS=-1 -o neg.csv
-check "ride --set MASS=-1: exit 2 naming MASS, no file" \
-    '[ $rc -eq 2 ] && grep -q MASS err && no_file neg.csv'
-run "$bin" ride --profile road.csv --speed 10km/h --model nn,cam --nn net.json --dx 0.01 \
-    --extrapolate
-check "ride --model nn,cam over the generated road: a finite row for each" \
-    '[ $rc -eq 0 ] && [ $(grep -Ec "^(nn|cam) +10\.00 +[0-9]" out) -eq 2 ]'
 
 clilib_done

@@ -1,7 +1,7 @@
 #!/bin/sh
 # tirenv convert end to end: roads between CSV, OpenCRG and RDF files, formats told by content,
 # round trips to the written precision, misuse and bad files refused without output.
-# Usage: tests/cli_convert.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the ecosystem's
+# Usage: tests/cli_convert.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the
 # sample files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/clilib.sh"
@@ -36,7 +36,7 @@ check "unknown output extension: exit 1, nothing written" \
     '[ $rc -eq 1 ] && grep -q "unknown extension" err && no_file road.dat'
 run "$bin" convert --profile "$crg/Horstwalde.crg" --crg-encoding abcd -o x.crg
 check "bad --crg-encoding: exit 1" '[ $rc -eq 1 ] && grep -q "crg-encoding" err'
-run "$bin" convert --profile "$rdf/Plateau_Road.rdf" --track 0.5 -o x.csv
+run "$bin" convert --profile "$rdf/plateau.rdf" --track 0.5 -o x.csv
 check "--track on an RDF road: exit 1 pointing at --side" \
     '[ $rc -eq 1 ] && grep -q "use --side" err && no_file x.csv'
 run "$bin" convert --profile "$crg/Horstwalde.crg" --track abc -o x.csv
@@ -90,7 +90,7 @@ check "a curved, banked, sloped CRG track to RDF" \
      [ $(awk "/XZ_DATA/ { on = 1; next } on" c.rdf | wc -l) -eq 23 ]'
 
 # --- RDF and CSV --------------------------------------------------------------------------
-run "$bin" convert --profile "$rdf/Plateau_Road.rdf" -o p.csv
+run "$bin" convert --profile "$rdf/plateau.rdf" -o p.csv
 ok=$rc
 run "$bin" convert --profile p.csv -o p.rdf
 ok2=$rc
@@ -99,7 +99,7 @@ check "RDF -> CSV -> RDF -> CSV: the same numbers exactly" \
     '[ $ok -eq 0 ] && [ $ok2 -eq 0 ] && [ $rc -eq 0 ] && same_rows p.csv p2.csv 0 &&
      grep -q "^110,4.9$" p.csv'
 for side in left right mean; do
-    run "$bin" convert --profile "$rdf/Plateau_Road.rdf" --side $side -o s.csv
+    run "$bin" convert --profile "$rdf/plateau.rdf" --side $side -o s.csv
     check "--side $side" '[ $rc -eq 0 ] && same_rows p.csv s.csv 0'
 done
 printf 'x_m,z_m\n0,0\n0.1,0.01\n0.3,0.02\n' >uneven.csv

@@ -1,9 +1,11 @@
 #!/bin/sh
 # The documentation a user has is the repository's: every "docs/models.md section N" and
 # "docs/formats.md section N" cited by the README, headers, sources, help texts, data files and
-# tests names a section that exists, and nothing points outside the repository (../shared,
-# MODEL.md) or at issue numbers; the paths and tirenv_ names the Markdown writes exist; every
-# command's --help lists the options it takes. Usage: sh cli_docs.sh BIN TESTDATA_DIR.
+# tests names a section that exists, and nothing points outside the repository (a folder
+# beside the clone, MODEL.md) or at issue numbers; no file of the repository reads a folder
+# beside the clone (tests/data/samples/README.md: a test passes in any clone); the paths and
+# tirenv_ names the Markdown writes exist; every command's --help lists the options it takes.
+# Usage: sh cli_docs.sh BIN TESTDATA_DIR.
 # SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -77,6 +79,14 @@ grep -rn 'shared/\|MODEL\.md\|issue [0-9]' "$root/README.md" "$root/docs" "$root
 cp outside err
 check "README, docs, include, src, data point at nothing outside the repository" \
     '[ ! -s outside ]'
+
+# No test, script or build file reads the folder beside the clone that the developers' machines
+# once had: what the tests need is under tests/data.
+grep -rn --exclude-dir=.git '\.\./shared' "$root/README.md" "$root/Makefile" \
+    "$root/CMakeLists.txt" "$root/cmake" "$root/docs" "$root/include" "$root/src" \
+    "$root/data" "$root/tests" "$root/scripts" "$root/bench" "$root/python" "$root/fmu" >beside
+cp beside err
+check "no file of the repository reads a folder beside the clone" '[ ! -s beside ]'
 
 # Relative links of the documentation lead to files that exist.
 : >links

@@ -3,7 +3,8 @@
 # link and /dev/stdout leaves each what it was (the link's target updated); a write killed by
 # SIGTERM or SIGINT leaves no temporary file, one killed by SIGKILL leaves one that the next
 # run removes; a failed multi-file command leaves no directory, a killed one the old one; ride
-# --out-dir writes series only when asked. Usage: tests/cli_output.sh BIN TESTDATA_DIR.
+# --out-dir writes series only when asked; every single-file writer and convert's CSV onto
+# /dev/null and a FIFO. Usage: tests/cli_output.sh BIN TESTDATA_DIR.
 # SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/clilib.sh"
@@ -51,6 +52,37 @@ wait $reader
 check "-o onto a FIFO with a reader: the reader gets the CSV, the FIFO stays a FIFO" \
     '[ $rc -eq 0 ] && [ -p fifo ] && cmp -s from-fifo.csv ref.csv && no_tmp'
 rm -f fifo
+
+# Every command that writes one file writes through onto /dev/null (README: devices are
+# written through), whatever format the name would otherwise pick: convert and road take CSV
+# for a name without an extension that is a device, a FIFO or a descriptor, as for '-'.
+printf 'x_m,z_m\n-1,0\n0,0.05\n1,0\n' >bump.csv
+for args in "convert --profile bump.csv" "road --class C --length 10" "$rigid" \
+    "rig --model springs --cleat 0.1,0.025 --contact-length 0.43" \
+    "ride --cleat 0.30,0.05 --speed 10km/h --model point" \
+    "fit --data $data/dataset_good" \
+    "train --data $data/dataset_good --restarts 1 --epochs 5"; do
+    run "$bin" $args -o /dev/null
+    check "${args%% *} -o /dev/null: exit 0, /dev/null still the device" \
+        '[ $rc -eq 0 ] && [ -c /dev/null ] && [ "$(devnum /dev/null)" = 1,3 ]'
+done
+run "$bin" rig --model springs --cleat 0.1,0.025 --contact-length 0.43 -o log.csv
+run "$bin" import --log log.csv --cleat 0.1,0.025 --contact-length 0.43 -o /dev/null
+check "import -o /dev/null: exit 0" '[ $rc -eq 0 ] && [ -c /dev/null ]'
+run "$bin" convert --profile bump.csv -o /dev/stdout
+check "convert -o /dev/stdout: the CSV on stdout" \
+    '[ $rc -eq 0 ] && [ "$(head -n 1 out)" = x_m,z_m ] && grep -q "^0,0.05$" out'
+mkfifo fifo
+cat fifo >from-fifo.csv &
+reader=$!
+run "$bin" convert --profile bump.csv -o fifo
+wait $reader
+check "convert -o FIFO (no extension): its reader gets the CSV" \
+    '[ $rc -eq 0 ] && [ -p fifo ] && [ "$(head -n 1 from-fifo.csv)" = x_m,z_m ] && no_tmp'
+rm -f fifo
+run "$bin" convert --profile bump.csv -o plainfile
+check "convert -o a regular name without an extension: still exit 1 naming the extensions" \
+    '[ $rc -eq 1 ] && grep -q "unknown extension" err && [ ! -e plainfile ]'
 
 mkdir data
 echo old >data/target.csv

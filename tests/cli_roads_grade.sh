@@ -17,8 +17,8 @@ for f in handmade_sloped handmade_sloped_opts handmade_curved_banked_sloped hand
 done
 graded horstwalde springs "$crg/Horstwalde.crg" "--track 0.9" "--x-to 149 --dx 0.005"
 graded horstwalde-cam cam "$crg/Horstwalde.crg" "--track 0.9" "--dx 0.005"
-graded plateau springs "$rdf/Plateau_Road.rdf" "" "--x-from 95 --x-to 130 --dx 0.002"
-graded plateau-left cam "$rdf/Plateau_Road.rdf" "--side left" "--x-from 95 --x-to 130"
+graded plateau springs "$rdf/plateau.rdf" "" "--x-from 95 --x-to 130 --dx 0.002"
+graded plateau-left cam "$rdf/plateau.rdf" "--side left" "--x-from 95 --x-to 130"
 graded measured springs measured.crg "--track 0.9" "--dx 0.002"
 graded measured-cam cam measured.crg "--track 0.9" "--dx 0.002"
 graded measured-nn-free point measured.crg "--track -1.3" "--dx 0.002"

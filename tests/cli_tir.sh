@@ -2,7 +2,7 @@
 # Real MF-Tyre / PAC2002 .tir files through the CLI: every sample loads and 'tirenv flat' on it
 # prints sensible numbers (the file's own radius; deflections a tire has; the cam's stiffness
 # the file's VERTICAL_STIFFNESS), the cam refused without the cam keys, bad files refused.
-# Usage: tests/cli_tir.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the ecosystem's sample
+# Usage: tests/cli_tir.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the sample
 # files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/clilib.sh"
@@ -21,7 +21,7 @@ sensible() {
 }
 
 for spec in 335_65R22_5_G275MSA_60psi:0.4987 HMMWV_Pac02Tire:0.4699 \
-    Truck_430_50R38-excerpt:0.6731 mf_185_80R14:0.376; do
+    tractor_430_50R38:0.6731 mf_185_80R14:0.376; do
     name=${spec%%:*}
     r0=${spec#*:}
     run "$bin" flat --csv --tire "$samples/tir/$name.tir"
@@ -29,7 +29,7 @@ for spec in 335_65R22_5_G275MSA_60psi:0.4987 HMMWV_Pac02Tire:0.4699 \
         '[ $rc -eq 0 ] && sensible out $r0 && grep -q "derived RADIAL_STIFFNESS" err'
 done
 
-run "$bin" flat --csv --model cam --load 30000 --tire "$samples/tir/Truck_430_50R38-excerpt.tir"
+run "$bin" flat --csv --model cam --load 30000 --tire "$samples/tir/tractor_430_50R38.tir"
 check "cam at FNOMIN 30 kN: the file's VERTICAL_STIFFNESS 1e6 N/m, deflection 0.03 m" \
     '[ $rc -eq 0 ] && awk -F, "NR == 2 { exit !(\$3 == 0.03 && \$5 == 1000000) }" out'
 for name in 335_65R22_5_G275MSA_60psi HMMWV_Pac02Tire mf_185_80R14; do

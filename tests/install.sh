@@ -125,6 +125,26 @@ check "the static consumer needs no shared library" \
 "$work/make-static/envelope" "$Q/share/tirenv/tires/default.tir" >static.csv
 check "the static consumer's curve equals tirenv envelope's" cmp -s static.csv cli.csv
 
+# The README's program, whole, taken from the README and built with the README's cc line; and
+# tests/consumer/envelope.c is that program (after its two comment lines), so neither drifts.
+mkdir -p "$work/readme"
+awk '/^```c$/ { on = 1; next } on && /^```$/ { exit } on' "$src/README.md" \
+    >"$work/readme/envelope.c"
+check "the README holds a C program with main()" grep -q '^int main(' "$work/readme/envelope.c"
+check "tests/consumer/envelope.c is the README's program" \
+    sh -c "tail -n +3 '$src/tests/consumer/envelope.c' | cmp -s - '$work/readme/envelope.c'"
+(cd "$work/readme" &&
+    cc -o envelope envelope.c $(pkg-config --cflags --libs tirenv)) >"$tmp/readme.log" 2>&1
+check "the README's program builds with the README's cc line" test $? -eq 0 ||
+    cat "$tmp/readme.log"
+LD_LIBRARY_PATH=$Q/lib "$work/readme/envelope" "$Q/share/tirenv/tires/default.tir" >readme.csv
+check "the README's program: its curve equals tirenv envelope's bit for bit" \
+    cmp -s readme.csv cli.csv
+LD_LIBRARY_PATH=$Q/lib "$work/readme/envelope" "$work/missing.tir" >/dev/null 2>"$tmp/readme.err"
+rc=$?
+check "the README's program: a missing tire file exits 1 naming it" \
+    sh -c "test $rc -eq 1 && grep -qF '$work/missing.tir' '$tmp/readme.err'"
+
 # 6. A consumer with CMake: find_package(tirenv) and tirenv::tirenv / tirenv::tirenv_static.
 mkdir -p "$work/cm"
 cp "$src/tests/consumer/envelope.c" "$src/tests/consumer/CMakeLists.txt" "$work/cm/"

@@ -1,6 +1,6 @@
 #!/bin/sh
-# tirenv study killed at random moments, ten times in a row, over an existing report: after
-# each kill the directory holds the old report or the new one, whole, never a mixture (a file
+# tirenv study killed at random moments, four times in a row (TIRENV_KILLS=N for more), over
+# an existing report: after each kill the directory holds the old report or the new one, whole, never a mixture (a file
 # list and a checksum of every file compared with the two reference states). Runs alternate
 # between --seed 1 and --seed 2, whose networks differ, so old and new are told apart. Some
 # files hold measured times and differ between two runs of one seed (report.md, errors.md,
@@ -11,7 +11,9 @@
 # the study, every kind of file, 40 % less time than the embedded data set's 28), without
 # images (gnuplot's time, not tirenv's: the images are written and renamed inside the staging
 # directory like every other file). Usage: tests/study_killed.sh BIN TESTDATA_DIR.
-# TIRENV_KILL_SEED repeats a run's kill times. SPDX-License-Identifier: GPL-3.0-or-later
+# TIRENV_KILL_SEED repeats a run's kill times. Each run draws new times, so that the runs of
+# the test over time cover the study's stages; ten kills a run cost twice the time of four.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # $run is split on purpose (SC2086).
 # shellcheck disable=SC2086
 set -u
@@ -60,8 +62,12 @@ fi
 
 seed=${TIRENV_KILL_SEED:-$(date +%s)}
 echo "# one study takes ${T} s; kill times from seed $seed (TIRENV_KILL_SEED=$seed repeats them)"
-awk -v s="$seed" -v T="$T" 'BEGIN { srand(s); for (i = 0; i < 10; i++)
-    printf "%.2f %s\n", 0.2 + rand() * 1.3 * T, substr("TTTIIIKKKT", int(rand() * 10) + 1, 1) }' \
+# $kills kill times (default 4), each drawn anew; the signals cycle through TERM, INT and KILL
+# from a random start, so that four kills meet each of them at least once.
+kills=${TIRENV_KILLS:-4}
+awk -v s="$seed" -v T="$T" -v n="$kills" 'BEGIN { srand(s); off = int(rand() * 3)
+    for (i = 0; i < n; i++)
+        printf "%.2f %s\n", 0.2 + rand() * 1.3 * T, substr("TIK", (i + off) % 3 + 1, 1) }' \
     >plan
 
 cp -R ref1 rep

@@ -45,7 +45,7 @@ static void test_plateau(void **state)
 {
     (void)state;
     char path[600];
-    snprintf(path, sizeof path, "%s/rdf/Plateau_Road.rdf", TIRENV_SAMPLES);
+    snprintf(path, sizeof path, "%s/rdf/plateau.rdf", TIRENV_SAMPLES);
     struct stat st;
     if (stat(path, &st) != 0) {
         print_error("sample file %s is missing\n", path);
@@ -173,7 +173,7 @@ static void test_round_trip(void **state)
 {
     tirenv_test_dir *fx = *state;
     char src[600], csv[600], rdf[600];
-    snprintf(src, sizeof src, "%s/rdf/Plateau_Road.rdf", TIRENV_SAMPLES);
+    snprintf(src, sizeof src, "%s/rdf/plateau.rdf", TIRENV_SAMPLES);
     tirenv_test_path(fx, "p.csv", csv);
     tirenv_test_path(fx, "p.rdf", rdf);
     tirenv_profile *a = NULL, *b = NULL, *c = NULL;

@@ -34,7 +34,7 @@ static tirenv_tire prototype_tire(void)
 }
 
 /* Flat-ground loads at given deflections equal the independent prototype's
- * (../shared/reference/ring-prototype-flat.csv, 3 decimals: 5e-4 N rounding). The two
+ * (tests/data/ring-prototype-flat.csv, 3 decimals: 5e-4 N rounding). The two
  * discretise the belt the same way, so only the rounding is left. Up to 50 mm deflection the
  * prototype's tread is not compressed through, and ours does not touch with the belt. */
 static void test_flat_loads_match_prototype(void **state)

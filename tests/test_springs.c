@@ -98,7 +98,7 @@ static void test_lcp_conditions(void **state)
 }
 
 /* Curves agree with an independent implementation of docs/models.md section 4
- * (../shared/reference/springs-reference.csv, copied to tests/data). The file has 9 decimals
+ * (tests/data/springs-reference.csv). The file has 9 decimals
  * (5e-10 m rounding) and our equilibrium stops within 1e-10 m, so 1e-9 m is the bound; the
  * issue asks for 0.1 mm. */
 static void test_reference_curves(void **state)

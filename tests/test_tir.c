@@ -559,7 +559,7 @@ static void test_sample_tir_files(void **state)
     } cases[] = {
         {"335_65R22_5_G275MSA_60psi.tir", 0.4987, 5.6519e5, TIRENV_CAM_C_Z},
         {"HMMWV_Pac02Tire.tir", 0.4699, 1e6, TIRENV_CAM_C_Z},
-        {"Truck_430_50R38-excerpt.tir", 0.6731, 1e6, TIRENV_CAM_ALL},
+        {"tractor_430_50R38.tir", 0.6731, 1e6, TIRENV_CAM_ALL},
         {"mf_185_80R14.tir", 0.376, 1.75e5, TIRENV_CAM_C_Z},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {

@@ -24,7 +24,8 @@ int tirenv_curve_alloc(tirenv_curve *c, size_t n);
 void tirenv_curve_free(tirenv_curve *c);
 
 /* CSV "x_N,x_m,h_m" (the import's output, the data set's curve files); '#' lines are
- * comments. The write is atomic and starts with comment (may be NULL) as '#' lines. */
+ * comments. The write is atomic: the header line, then comment (may be NULL) as '#' lines,
+ * then the rows (docs/formats.md section 1). */
 int tirenv_curve_read_csv(const char *path, tirenv_curve *out, tirenv_diag *diag);
 int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *comment,
                            tirenv_diag *diag);

@@ -139,6 +139,12 @@ int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag);
 /* 1 if nothing reaches the target before commit (a temporary file), 0 when written through:
  * a writer that could fail midway may then want to compute everything first. */
 int tirenv_outfile_is_atomic(const tirenv_outfile *f);
+/* 1 if tirenv_outfile_open would write PATH through rather than replace it: "-", a
+ * descriptor's name (/dev/stdout, /dev/fd/N, /proc/self/fd/N), or what exists there, links
+ * followed, as a character device (/dev/null, a terminal) or a FIFO; 0 otherwise (a regular
+ * file, a name not yet taken, or what opening refuses). A writer that picks its format by
+ * the name's extension writes CSV to such a path when the name has none, as it does to "-". */
+int tirenv_outfile_path_is_through(const char *path);
 /* Creates a directory and its missing parents (mkdir -p); an existing one is fine. */
 int tirenv_mkdir_p(const char *path, tirenv_diag *diag);
 

@@ -98,7 +98,8 @@ tirenv_profile_write_options tirenv_profile_write_default(void);
 
 /* Writes p in the format path's extension names (o NULL: the defaults): CSV, an RDF
  * 'poly_line' road, or a CRG road whose width is uniform (two equal long sections at v =
- * -crg_half_width and +crg_half_width). */
+ * -crg_half_width and +crg_half_width). A path written through without one ("-",
+ * /dev/null, a FIFO: tirenv_outfile_path_is_through) gets CSV. */
 int tirenv_profile_write_file(const char *path, const tirenv_profile *p,
                               const tirenv_profile_write_options *o, tirenv_diag *diag);
 

@@ -87,7 +87,7 @@ void tirenv_rig_log_free(tirenv_rig_log *log);  /* frees the arrays, zeroes log 
 int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_rig_settings *s,
                         tirenv_rig_log *out, tirenv_diag *diag);
 
-/* Writes a log as CSV "t_s,x_m,z_m" (after '#' comment lines, if comment is not NULL;
+/* Writes a log as CSV "t_s,x_m,z_m" (the header, then '#' comment lines if comment is not NULL;
  * comment may hold several lines separated by '\n'), atomically. */
 int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char *comment,
                          tirenv_diag *diag);

@@ -15,7 +15,9 @@ def test_ride_series_equals_cli(cli, tmp_path):
                              "--model", "springs", "-o", out)
     assert rc == 0, err
     lines = out.read_text().splitlines()
-    assert lines[1].startswith("t_s,x_front_m,w_front_m")
+    # The header first, then the comment line (docs/formats.md section 1).
+    assert lines[0].startswith("t_s,x_front_m,w_front_m")
+    assert lines[1].startswith("# tirenv ride: springs model")
     r = tirenv.ride(tirenv.Profile.cleat(0.30, 0.05), model="springs", speed="10km/h")
     c = r.comfort()
     s = r.series

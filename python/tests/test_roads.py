@@ -11,7 +11,7 @@ from conftest import run_cli
 
 
 def samples(source_dir):
-    path = os.path.join(source_dir, "..", "shared", "samples")
+    path = os.path.join(source_dir, "tests", "data", "samples")
     if not os.path.isdir(path):
         pytest.fail(f"the sample road files are missing: {path}")
     return path
@@ -33,7 +33,7 @@ def test_read_crg_track_equals_convert(cli, source_dir, tmp_path):
 
 
 def test_read_rdf_sides(source_dir):
-    road = os.path.join(samples(source_dir), "rdf", "Plateau_Road.rdf")
+    road = os.path.join(samples(source_dir), "rdf", "plateau.rdf")
     mean = tirenv.Profile.read(road)
     left = tirenv.Profile.read(road, side="left")
     right = tirenv.Profile.read(road, side="right")

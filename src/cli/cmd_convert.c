@@ -8,6 +8,7 @@
 #include "cli/cli.h"
 #include "cli/road_out.h"
 #include "tirenv/crg.h"
+#include "tirenv/io.h"
 #include "tirenv/profile_file.h"
 #include "tirenv/rdf.h"
 
@@ -19,9 +20,10 @@ static void usage(FILE *fp)
           "\n"
           "Converts a road between profile CSV ('x_m,z_m'), ASAM OpenCRG (.crg) and TNO/Adams\n"
           "2-D road (.rdf) files. IN's format is told by its content, OUT's by its extension\n"
-          "(.csv, .crg, .rdf; '-' writes CSV to standard output). From a .crg one track is\n"
-          "taken, the long section at --track (a .crg to a .crg without --track copies every\n"
-          "long section); a .crg is written with a straight reference line. A one-line\n"
+          "(.csv, .crg, .rdf; '-', a device such as /dev/null or a FIFO without one is written\n"
+          "through as CSV). From a .crg one track is taken, the long section at --track (a .crg\n"
+          "to a .crg without --track copies every long section); a .crg is written with a\n"
+          "straight reference line. A one-line "
           "summary goes to standard error.\n"
           "\n"
           "options:\n"
@@ -169,8 +171,8 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     char comment[160], v[TIRENV_FMT_G_SIZE];
     tirenv_fmt_shortest(cv->src.crg.v, v);
     snprintf(comment, sizeof comment, "track at v = %s m of an OpenCRG road (tirenv convert)", v);
-    tirenv_outfile_comment(&f, comment);
     fputs("x_m,z_m\n", f.fp);
+    tirenv_outfile_comment(&f, comment);
     double u, z;
     int got;
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
@@ -281,8 +283,10 @@ int cli_convert_main(int argc, char *argv[])
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_profile_format from, to = TIRENV_PROFILE_CSV;
-    if (strcmp(cv.out, "-") != 0 && tirenv_profile_format_of_name(cv.out, &to)) {
-        cli_error("convert: -o %s: unknown extension; expected .csv, .crg or .rdf", cv.out);
+    /* "-", /dev/null, a FIFO: written through, as CSV unless the name says otherwise. */
+    if (tirenv_profile_format_of_name(cv.out, &to) && !tirenv_outfile_path_is_through(cv.out)) {
+        cli_error("convert: -o %s: unknown extension; expected .csv, .crg or .rdf, or a "
+                  "device, a FIFO or '-' (written as CSV)", cv.out);
         return CLI_EXIT_USAGE;
     }
     int status = tirenv_profile_detect(cv.in, &from, &diag);

@@ -101,11 +101,11 @@ static int parse(int argc, char *argv[], tirenv_road_settings *s, const char **o
     return CLI_GO_ON;
 }
 
+/* The data rows; the header and comment lines are written before. */
 static void write_csv(FILE *fp, const tirenv_profile *p)
 {
     const size_t n = tirenv_profile_size(p);
     const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
-    fputs("x_m,z_m\n", fp);
     for (size_t j = 0; j < n; ++j) {  /* as "%.10g,%.9g\n" */
         char row[2 * CLI_ROW_FIELD], *r = row;
         r = cli_row_g(r, x[j], 10, ',');
@@ -136,6 +136,7 @@ int cli_road_main(int argc, char *argv[])
                  "dx %g m, seed %lu",
                  s.road_class, tirenv_iso8608_gd0(s.road_class), TIRENV_ISO8608_N0,
                  s.waviness, s.n_min, s.n_max, s.length, s.dx, s.seed);
+        fputs("x_m,z_m\n", out.fp);
         tirenv_outfile_comment(&out, comment);
         write_csv(out.fp, p);
         status = tirenv_outfile_commit(&out, &diag);  /* it checks the writes */

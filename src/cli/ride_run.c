@@ -201,9 +201,9 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
     char comment[256];
     snprintf(comment, sizeof comment, "tirenv ride: %s model at %.6g m/s (%.6g km/h), %zu "
              "samples", res->model, res->speed, res->speed * 3.6, rs->n);
-    tirenv_outfile_comment(&out, comment);
     fputs("t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,"
           "seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N\n", out.fp);
+    tirenv_outfile_comment(&out, comment);
     for (size_t k = 0; k < rs->n; ++k) {  /* each field as "%.9g" */
         const tirenv_ride_sample *s = &rs->samples[k];
         const double v[13] = {s->t, s->x_front, s->w_front, s->w_rear, s->z, s->theta,

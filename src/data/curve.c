@@ -60,8 +60,8 @@ int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *
     int status = tirenv_outfile_open(&f, path, diag);
     if (status != TIRENV_OK)
         return status;
-    tirenv_outfile_comment(&f, comment);
     int bad = fprintf(f.fp, "%s\n", curve_header) < 0;
+    tirenv_outfile_comment(&f, comment);
     for (size_t k = 0; k < c->n && !bad; k++) {
         /* As "%.17g,%.17g,%.17g\n", through the faster formatter. */
         char row[3 * TIRENV_FMT_G_SIZE], *p = row;

@@ -295,9 +295,9 @@ static int build_into(const char *dir, const tirenv_design *d, const design_reco
              "a real tire. Regenerate with: tirenv dataset build%s%s",
              d->n_cases, r->made_by, d == designs[0] ? "" : " --design ",
              d == designs[0] ? "" : d->name);
-    tirenv_outfile_comment(&f, comment);
     fputs("case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve\n",
           f.fp);
+    tirenv_outfile_comment(&f, comment);
     for (size_t i = 0; i < d->n_cases; ++i) {
         const tirenv_case_design *c = &d->cases[i];
         fprintf(f.fp, "%s,%s,%.2f,%.2f,%.3f,%.3f,logs/%s.csv,curves/%s.csv\n", c->name,

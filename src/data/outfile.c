@@ -168,6 +168,22 @@ int tirenv_outfile_open(tirenv_outfile *f, const char *path, tirenv_diag *diag)
                         "character device, a FIFO or '-'");
 }
 
+int tirenv_outfile_path_is_through(const char *path)
+{
+    if (!path || !*path)
+        return 0;
+    if (strcmp(path, "-") == 0)
+        return 1;
+    char target[TIRENV_TMP_PATH];
+    int fd;
+    if (tirenv_tmp__resolve(path, target, &fd, NULL) != TIRENV_OK)
+        return 0;
+    if (fd >= 0)
+        return 1;
+    struct stat st;
+    return stat(target, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
+}
+
 int tirenv_outfile_is_atomic(const tirenv_outfile *f)
 {
     return !f->through;

@@ -41,6 +41,9 @@ enum { MIN_FLAT_SAMPLES = 10 };
  * medians, plus RAIL_LEVEL for rails that are straight but not perfectly so. */
 static const double LEVEL_K = 5.0;
 static const double RAIL_LEVEL = 0.2e-3; /* m */
+/* A hump of the passage is a run of bins at or above half the peak at least this many bins
+ * long and a quarter as long as the peak's own run: shorter runs are noise on a flank. */
+enum { MIN_HUMP_BINS = 3 };
 /* Centre refinement: within +-CENTRE_SEARCH bins of the half-peak midpoint, in steps of a
  * CENTRE_STEPS-th of a bin, then a parabola through the best step and its neighbours. */
 enum { CENTRE_SEARCH = 4, CENTRE_STEPS = 8 };
@@ -137,8 +140,8 @@ static size_t bins_peak(const rig_bin b[], size_t m)
     return peak;
 }
 
-/* Scanning from the peak in direction dir (-1 or +1), where the bin means first fall below
- * level: the position interpolated between the last bin above and the first below, and that
+/* Scanning from bin peak (at or above level) in direction dir (-1 or +1), where the bin
+ * means first fall below level: the position interpolated between the last bin above and the first below, and that
  * first bin in *stop. NaN if the run ends first. */
 static double crossing(const rig_bin b[], size_t m, size_t peak, int dir, double level,
                        size_t *stop)
@@ -309,30 +312,65 @@ static void bins_between(const rig_bin b[], size_t m, double x_lo, double x_hi, 
     *k_hi = hi;
 }
 
-/* Where the bump is, from its highest bin outwards. */
+/* Where the bump is: from its outermost humps outwards. */
 typedef struct {
-    double c0;             /* midpoint of the half-peak crossings, m: a first centre */
+    double c0;             /* midpoint of the outermost half-peak crossings, m: a first
+                              centre */
     double x_a, x_b;       /* where it rises from and falls back to the flat level, m */
 } rig_bump;
 
-/* The bump's half-peak crossings and its extent; refuses a run that starts or ends on it. */
+/* The whole passage's humps: the first and last bin of the outermost runs of bins at or
+ * above half (runs of MIN_HUMP_BINS bins and a quarter of the peak's run at least). A cleat
+ * shorter than the contact patch makes two humps, one as the patch's front reaches it and one
+ * as its rear leaves it, and the highest point is on either; a flat top is one run. */
+static void outer_humps(const rig_bin b[], size_t m, size_t peak, double half, size_t *first,
+                        size_t *last)
+{
+    size_t a = peak, z = peak;
+    while (a > 0 && b[a - 1].g >= half)
+        a--;
+    while (z + 1 < m && b[z + 1].g >= half)
+        z++;
+    const size_t quarter = (z - a + 1) / 4;
+    const size_t need = quarter > MIN_HUMP_BINS ? quarter : MIN_HUMP_BINS;
+    *first = a;
+    *last = z;
+    for (size_t k = 0; k < m;) {
+        if (b[k].g < half) {
+            k++;
+            continue;
+        }
+        size_t e = k;
+        while (e + 1 < m && b[e + 1].g >= half)
+            e++;
+        if (e - k + 1 >= need) {
+            *first = k < *first ? k : *first;
+            *last = e > *last ? e : *last;
+        }
+        k = e + 1;
+    }
+}
+
+/* The bump's half-peak crossings and its extent, over the whole passage; refuses a run that
+ * starts or ends on it. */
 static int bump_extent(const tirenv_rig__samples *s, const rig_bin b[], size_t m, double sigma,
                        rig_bump *bump, tirenv_diag *diag)
 {
-    size_t peak, stop;
+    size_t peak, stop, first, last;
     const int status = bump_find(s, b, m, sigma, &peak, diag);
     if (status != TIRENV_OK)
         return status;
     const double half = 0.5 * b[peak].g;
-    const double x_L = crossing(b, m, peak, -1, half, &stop);
-    const double x_R = crossing(b, m, peak, +1, half, &stop);
+    outer_humps(b, m, peak, half, &first, &last);
+    const double x_L = crossing(b, m, first, -1, half, &stop);
+    const double x_R = crossing(b, m, last, +1, half, &stop);
     if (isnan(x_L) || isnan(x_R))
         return cut_off(s, b, m, isnan(x_R) ? +1 : -1, diag);
     /* Never above the half-peak level, which the scans have just found on both sides. */
     const double se_bin = sigma / sqrt(MIN_BIN_SAMPLES);
     const double thr = fmin(half, fmax(SUPPORT_K * se_bin, SUPPORT_FRACTION * b[peak].g));
-    bump->x_a = crossing(b, m, peak, -1, thr, &stop);
-    bump->x_b = crossing(b, m, peak, +1, thr, &stop);
+    bump->x_a = crossing(b, m, first, -1, thr, &stop);
+    bump->x_b = crossing(b, m, last, +1, thr, &stop);
     if (isnan(bump->x_a) || isnan(bump->x_b))
         return cut_off(s, b, m, isnan(bump->x_b) ? +1 : -1, diag);
     bump->c0 = 0.5 * (x_L + x_R);

@@ -134,8 +134,8 @@ int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    tirenv_outfile_comment(&f, comment);
     fputs("t_s,x_m,z_m\n", f.fp);
+    tirenv_outfile_comment(&f, comment);
     /* Resolution 1 microsecond and 1 micrometre: more digits would only store noise. */
     for (size_t k = 0; k < log->n; ++k)
         fprintf(f.fp, "%.6f,%.6f,%.6f\n", log->t[k], log->x[k], log->z[k]);

@@ -37,8 +37,9 @@ static void part_free(part *p)
     free(p->key_rows);
 }
 
-/* The comment and header lines that open a table (up to and including the header), and its
- * data rows, each cut at its newline. */
+/* The lines that open a table, *head bytes: the header and the comment lines around it (before
+ * it, as earlier versions wrote them, and after it); then its data rows, each cut at its
+ * newline. */
 static int split_table(char *text, size_t len, const char *path, size_t *head, char ***rows,
                        size_t *n_rows, tirenv_diag *diag)
 {
@@ -56,8 +57,8 @@ static int split_table(char *text, size_t len, const char *path, size_t *head, c
         if (!eol)
             return tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
                                 "the last line has no newline: not a file a sweep wrote");
-        if (!have_header) {
-            have_header = p[0] != '#';
+        if (!have_header || (*n_rows == 0 && p[0] == '#')) {
+            have_header = have_header || p[0] != '#';
             *head = (size_t)(eol + 1 - text);
         } else {
             *eol = '\0';

@@ -543,10 +543,10 @@ static int write_manifest(const sweep_run *r, tirenv_diag *diag)
         free(comment);
         return status;
     }
-    tirenv_outfile_comment(&f, comment);
-    free(comment);
     fputs("case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve\n",
           f.fp);
+    tirenv_outfile_comment(&f, comment);
+    free(comment);
     for (size_t i = s->shard; i < r->n; i += s->shards) {
         tirenv_sweep__coords c;
         tirenv_sweep__coords_of(s, i, &c);
@@ -576,12 +576,12 @@ static int write_keys(const sweep_run *r, tirenv_diag *diag)
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    tirenv_outfile_comment(&f, "tirenv sweep: the tire-key values of each case (the tire: "
-                               "tire.tir with these keys set)");
     fputs("case,variant", f.fp);
     for (size_t k = 0; k < s->n_keys; ++k)
         fprintf(f.fp, ",%s", s->keys[k].key);
     fputc('\n', f.fp);
+    tirenv_outfile_comment(&f, "tirenv sweep: the tire-key values of each case (the tire: "
+                               "tire.tir with these keys set)");
     for (size_t i = s->shard; i < r->n; i += s->shards) {
         tirenv_sweep__coords c;
         tirenv_sweep__coords_of(s, i, &c);

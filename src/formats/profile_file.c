@@ -150,8 +150,8 @@ int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const ch
     const int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    tirenv_outfile_comment(&f, comment);
     fputs("x_m,z_m\n", f.fp);
+    tirenv_outfile_comment(&f, comment);
     const size_t n = tirenv_profile_size(p);
     const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
@@ -178,7 +178,10 @@ int tirenv_profile_write_file(const char *path, const tirenv_profile *p,
     if (!o)
         o = &def;
     tirenv_profile_format f;
-    if (tirenv_profile_format_of_name(path, &f) != TIRENV_OK)
+    if (tirenv_profile_format_of_name(path, &f) != TIRENV_OK &&
+        tirenv_outfile_path_is_through(path))
+        f = TIRENV_PROFILE_CSV; /* "-", /dev/null, a FIFO without an extension: CSV */
+    else if (tirenv_profile_format_of_name(path, &f) != TIRENV_OK)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "unknown extension; expected a "
                             "file name ending in .csv, .crg or .rdf");
     switch (f) {
