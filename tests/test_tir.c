@@ -60,7 +60,8 @@ static tirenv_tire entropic_tire(void)
                     .dphi = 0.0071893},
         .ring = {.t_r = 0.0417, .EI = 613.7, .T = 31872.5, .k_f = 1.0931e6, .k_t = 3.8317e6,
                  .dtheta = 0.0093731, .lug_count = 23, .lug_fraction = 0.4371,
-                 .lug_ratio = 0.3119},
+                 .lug_ratio = 0.3119, .b_p = 0.3271, .alpha_s = 1.1173, .p = 137913.7,
+                 .p_nom = 151374.9},
         .eq = {.method = TIRENV_EQ_BRENT, .eps_F = 3.7e-7, .eps_z = 2.9e-11, .max_iter = 73,
                .secant_dz = 7.31e-4},
         .cam = {.c_z = 413927.3, .q_ra1 = 0.7131, .q_ra2 = -0.2417, .shift = 0.7913,
@@ -395,7 +396,7 @@ static void test_write_read_round_trip(void **state)
     }
     assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
 
-    char path[600], text[4096];
+    char path[600], text[8192];
     tirenv_test_path(fx, "default.tir", path);
     tirenv_diag d;
     const tirenv_tire def = tirenv_tire_default();

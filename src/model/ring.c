@@ -36,16 +36,18 @@ enum { RING_MIN_WINDOW = 6 };
 enum { FREE = TIRENV_RING_FREE, T_BASIC = TIRENV_RING_T_BASIC, B_BASIC = TIRENV_RING_B_BASIC };
 
 /* Fourier symbol of the belt per node: for w_j = cos(n theta_j) the energy per unit length
- * 1/2 EI ((w''+w)/R^2)^2 + 1/2 (T/R^2)(w'^2 - w^2) + 1/2 k_f w^2, with w'' the second and w'
- * the forward difference (both give sigma = (2 sin(n dtheta/2)/dtheta)^2 for n^2), times the
- * arc R dtheta of a node. Rigid translations (n = 1, sigma ~ 1) cost only the foundation. */
+ * 1/2 EI ((w''+w)/R^2)^2 + 1/2 k_f w^2, with w'' the second difference (giving sigma =
+ * (2 sin(n dtheta/2)/dtheta)^2 for n^2), times the arc R dtheta of a node, plus the tension's
+ * c1 sum (dw)^2 + c0 sum w^2 (ring_belt.c), whose symbol is 8 c1 sin(n dtheta/2)^2 + 2 c0. */
 static double mode_stiffness(const tirenv_ring *r, size_t n)
 {
-    const double s = 2 * sin(M_PI * (double)n / (double)r->M) / r->dth;
+    const double sn = sin(M_PI * (double)n / (double)r->M), s = 2 * sn / r->dth;
     const double sigma = s * s, R = r->R;
+    double c1, c0;
+    tirenv_ring__tension(r->M, R, &r->par, &c1, &c0);
     const double e = r->par.EI * (sigma - 1) * (sigma - 1) / (R * R * R * R) +
-                     r->par.T * (sigma - 1) / (R * R) + r->par.k_f;
-    return R * r->dth * e;
+                     tirenv_ring__foundation(&r->par);
+    return R * r->dth * e + 8 * c1 * sn * sn + 2 * c0;
 }
 
 /* The belt's compliance is circulant (a uniform ring): one column, the inverse discrete cosine

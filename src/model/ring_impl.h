@@ -25,6 +25,15 @@ typedef struct tirenv_ring_belt tirenv_ring_belt;
 tirenv_ring_belt *tirenv_ring__belt_alloc(size_t M, double R, const tirenv_ring_params *par);
 void tirenv_ring__belt_free(tirenv_ring_belt *b);
 
+/* The pressure's share of the belt (docs/models.md section 5.1): gamma(alpha), the two
+ * sidewalls' radial stiffness per unit pressure (dimensionless); the foundation k_c +
+ * gamma p (N/m^2); the belt's tension energy c1 sum (w[j+1] - w[j])^2 + c0 sum w[j]^2 (N/m)
+ * of the carcass's pretension and the air's follower load. */
+double tirenv_ring__sidewall_gamma(double alpha);
+double tirenv_ring__foundation(const tirenv_ring_params *par);
+void tirenv_ring__tension(size_t M, double R, const tirenv_ring_params *par, double *c1,
+                          double *c0);
+
 /* Stencil s[0..2] of K (N/m). */
 const double *tirenv_ring__belt_stencil(const tirenv_ring_belt *b);
 
