@@ -37,6 +37,14 @@ typedef struct {
     double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
 } tirenv_springs_params;
 
+/* How the ring's tread meets the ground ([ENVELOPING_RING] CONTACT, docs/models.md section
+ * 5.3): the tread surface continuous between nodes (the default), or one ray per node as the
+ * paper's springs model casts them. */
+typedef enum {
+    TIRENV_RING_CONTINUOUS = 0, /* 'continuous' */
+    TIRENV_RING_RAYS = 1        /* 'rays' */
+} tirenv_ring_contact_kind;
+
 /* Parameters of the flexible-ring reference tire (docs/models.md section 5): a belt of radius
  * R = R0 - t_r on a foundation of sidewalls, carried by its inflation pressure p, with a tread
  * layer between belt and ground. Energy per unit belt length: 1/2 EI ((w''+w)/R^2)^2 +
@@ -60,6 +68,7 @@ typedef struct {
     double p;              /* [OPERATING_CONDITIONS] INFLPRES: inflation pressure, Pa */
     double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (read and written; the
                             * ring uses INFLPRES) */
+    tirenv_ring_contact_kind contact; /* [ENVELOPING_RING] CONTACT */
 } tirenv_ring_params;
 
 /* Parameters of the tandem elliptical cam model (docs/models.md section 7), the MF-Tyre keys of

@@ -41,7 +41,7 @@ tirenv_tire tirenv_tire_default(void)
             .T = 0,
             .k_f = 1.1e5,
             .k_t = 1.5e7,
-            .dtheta = M_PI / 360.0,
+            .dtheta = M_PI / 1440.0, /* converged: docs/models.md section 5.6 */
             .lug_count = 0,
             .lug_fraction = 0.5,
             .lug_ratio = 1,
@@ -147,6 +147,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->b_p >= 0 && r->b_p < 2 * s->R0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_WIDTH",
                             "must be in [0, 2 UNLOADED_RADIUS) m, got %g", r->b_p);
+    if (r->contact != TIRENV_RING_CONTINUOUS && r->contact != TIRENV_RING_RAYS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CONTACT",
+                            "unknown ring contact %d", (int)r->contact);
     if (!(r->alpha_s >= 0.1 && r->alpha_s <= M_PI / 2))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SIDEWALL_ANGLE",
                             "must be in [0.1, pi/2] rad, got %g", r->alpha_s);
