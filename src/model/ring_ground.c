@@ -69,10 +69,6 @@ static int first_line(const tirenv_profile *p, double x, double z, double sx, do
     long j = *cursor;
     for (; j >= 0 && j < n; j += dir) {
         const double a = dir * (X[j] - x);
-        if (a > reach) {
-            *cursor = j;
-            return 0;
-        }
         if ((z - Z[j]) * s <= a * cz) { /* the ray at or below vertex j */
             *cursor = j;
             const long jp = j - dir;
@@ -87,6 +83,10 @@ static int first_line(const tirenv_profile *p, double x, double z, double sx, do
                 t = L[1], L[1] = L[3], L[3] = t;
             }
             return 1;
+        }
+        if (a > reach) { /* above the ground up to a vertex beyond reach: no crossing */
+            *cursor = j;
+            return 0;
         }
     }
     *cursor = j;
@@ -166,7 +166,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho};
     }
     cut *v = r->cuts;
-    qsort(v, nv, sizeof *v, by_angle);
+    if (nv > 1)
+        qsort(v, nv, sizeof *v, by_angle);
     const size_t n_pieces = (jb - ja) + nv;
     if (reserve((void **)&r->pts, &r->cap_pts, 2 * n_pieces, sizeof *r->pts) ||
         reserve((void **)&r->lines, &r->cap_lines, n_pieces, sizeof *r->lines))
