@@ -38,6 +38,11 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->ring.lug_count, b->ring.lug_count);
     assert_bits_equal(a->ring.lug_fraction, b->ring.lug_fraction);
     assert_bits_equal(a->ring.lug_ratio, b->ring.lug_ratio);
+    assert_bits_equal(a->ring.b_p, b->ring.b_p);
+    assert_bits_equal(a->ring.alpha_s, b->ring.alpha_s);
+    assert_bits_equal(a->ring.p, b->ring.p);
+    assert_bits_equal(a->ring.p_nom, b->ring.p_nom);
+    assert_int_equal(a->ring.contact, b->ring.contact);
     assert_int_equal(a->eq.method, b->eq.method);
     assert_bits_equal(a->eq.eps_F, b->eq.eps_F);
     assert_bits_equal(a->eq.eps_z, b->eq.eps_z);
@@ -86,7 +91,8 @@ static void test_default_file_matches_builtin(void **state)
 
 /* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION], [VERTICAL] and
  * [CONTACT_PATCH] keys of other models, 'Newton' capitalised. Only UNLOADED_RADIUS,
- * VERTICAL_STIFFNESS and the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) are taken. */
+ * VERTICAL_STIFFNESS, the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) and
+ * [OPERATING_CONDITIONS] INFLPRES and NOMPRES (the ring's air) are taken. */
 static void test_mftyre_excerpt_loads(void **state)
 {
     (void)state;
@@ -102,6 +108,8 @@ static void test_mftyre_excerpt_loads(void **state)
     expected.cam.q_ra1 = 0.6715;
     expected.cam.q_ra2 = 0.7308;
     expected.cam.shift = 0.8328;
+    expected.ring.p = 140000;
+    expected.ring.p_nom = 160000;
     assert_tire_identical(&t, &expected);
 }
 
