@@ -680,9 +680,13 @@ static void test_mfswift_file(void **state)
     expected.springs.c_b = 4.51e4;
     expected.ring.t_r = 0.010;
     expected.ring.EI = 5;
-    expected.ring.T = 10700;
-    expected.ring.k_f = 8.5e5;
+    expected.ring.T = 0;
+    expected.ring.k_f = 1.95e5;
     expected.ring.k_t = 6.7e7;
+    expected.ring.b_p = 0.16;
+    expected.ring.alpha_s = 1.2;
+    expected.ring.p = 220000;
+    expected.ring.p_nom = 220000;
     expected.cam = (tirenv_cam_params){.c_z = 209651.5, .q_ra1 = 0.6715, .q_ra2 = 0.7308,
                                        .shift = 0.8328, .length = 1.4634, .height = 0.9551,
                                        .order = 1.5257, .given = TIRENV_CAM_ALL};

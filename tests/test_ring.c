@@ -29,6 +29,8 @@ static tirenv_tire prototype_tire(void)
         .lug_count = 0,
         .lug_fraction = 0.5,
         .lug_ratio = 1,
+        .alpha_s = 1.05, /* no air (p = 0): T and k_f are the whole tension and foundation */
+        .contact = TIRENV_RING_RAYS, /* the prototype's: one ray per node */
     };
     return t;
 }

@@ -38,6 +38,11 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->ring.lug_count, b->ring.lug_count);
     assert_bits_equal(a->ring.lug_fraction, b->ring.lug_fraction);
     assert_bits_equal(a->ring.lug_ratio, b->ring.lug_ratio);
+    assert_bits_equal(a->ring.b_p, b->ring.b_p);
+    assert_bits_equal(a->ring.alpha_s, b->ring.alpha_s);
+    assert_bits_equal(a->ring.p, b->ring.p);
+    assert_bits_equal(a->ring.p_nom, b->ring.p_nom);
+    assert_int_equal(a->ring.contact, b->ring.contact);
     assert_int_equal(a->eq.method, b->eq.method);
     assert_bits_equal(a->eq.eps_F, b->eq.eps_F);
     assert_bits_equal(a->eq.eps_z, b->eq.eps_z);
@@ -60,7 +65,8 @@ static tirenv_tire entropic_tire(void)
                     .dphi = 0.0071893},
         .ring = {.t_r = 0.0417, .EI = 613.7, .T = 31872.5, .k_f = 1.0931e6, .k_t = 3.8317e6,
                  .dtheta = 0.0093731, .lug_count = 23, .lug_fraction = 0.4371,
-                 .lug_ratio = 0.3119},
+                 .lug_ratio = 0.3119, .b_p = 0.3271, .alpha_s = 1.1173, .p = 137913.7,
+                 .p_nom = 151374.9},
         .eq = {.method = TIRENV_EQ_BRENT, .eps_F = 3.7e-7, .eps_z = 2.9e-11, .max_iter = 73,
                .secant_dz = 7.31e-4},
         .cam = {.c_z = 413927.3, .q_ra1 = 0.7131, .q_ra2 = -0.2417, .shift = 0.7913,
@@ -85,7 +91,8 @@ static void test_default_file_matches_builtin(void **state)
 
 /* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION], [VERTICAL] and
  * [CONTACT_PATCH] keys of other models, 'Newton' capitalised. Only UNLOADED_RADIUS,
- * VERTICAL_STIFFNESS and the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) are taken. */
+ * VERTICAL_STIFFNESS, the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) and
+ * [OPERATING_CONDITIONS] INFLPRES and NOMPRES (the ring's air) are taken. */
 static void test_mftyre_excerpt_loads(void **state)
 {
     (void)state;
@@ -101,6 +108,8 @@ static void test_mftyre_excerpt_loads(void **state)
     expected.cam.q_ra1 = 0.6715;
     expected.cam.q_ra2 = 0.7308;
     expected.cam.shift = 0.8328;
+    expected.ring.p = 140000;
+    expected.ring.p_nom = 160000;
     assert_tire_identical(&t, &expected);
 }
 
@@ -396,7 +405,7 @@ static void test_write_read_round_trip(void **state)
     }
     assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
 
-    char path[600], text[4096];
+    char path[600], text[8192];
     tirenv_test_path(fx, "default.tir", path);
     tirenv_diag d;
     const tirenv_tire def = tirenv_tire_default();

@@ -103,11 +103,18 @@ static void test_one_track_is_set(void **state)
     tirenv_profile_free(cleat);
 }
 
+/* How far an equilibrium's F_z may be from the load: the solver stops when |F_z - G| <= eps_F
+ * or when its last step is below eps_z (docs/models.md section 11.3), which at a vertical
+ * stiffness up to 4e5 N/m (the ring's at these loads) leaves 4e5 * eps_z = 4e-5 N. */
+static double eq_F_tol(const tirenv_tire *t) { return fmax(t->eq.eps_F, 4e5 * t->eq.eps_z); }
+
 /* Separate profiles with the same vertices are separate tracks: the combination agrees with
  * one track to round-off. Measured over this cleat at 0.75 mm steps with 2 to 5 copies: h
  * within 1.7e-15 m (the ring; springs 1.1e-16, cam 1.4e-17, rigid and point exact), the
- * slope within 8.6e-14; two and four copies give h bit for bit (weights that are powers of
- * two sum exactly). Checked here with margins: 1e-13 m, 1e-12. */
+ * slope within 8.6e-14 (7.0e-12 for the ring at its converged 2880 nodes, whose F_x sums
+ * forces of a belt with stencil entries near 1e11 N/m); two and four copies give h bit for
+ * bit (weights that are powers of two sum exactly). Checked here with margins: 1e-13 m,
+ * 3e-11. */
 static void test_equal_copies(void **state)
 {
     (void)state;
@@ -130,8 +137,8 @@ static void test_equal_copies(void **state)
         for (size_t k = 0; k < N_POS; ++k) {
             assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
             assert_near(got[k].h, ref[k].h, 1e-13, 0);
-            assert_near(got[k].slope, ref[k].slope, 1e-12, 0);
-            assert_near(got[k].fz, ref[k].fz, eq ? tire.eq.eps_F : 1e-9, 0);
+            assert_near(got[k].slope, ref[k].slope, 3e-11, 0);
+            assert_near(got[k].fz, ref[k].fz, eq ? eq_F_tol(&tire) : 1e-9, 0);
         }
         tirenv_model_free(m);
     }
@@ -184,7 +191,7 @@ static void test_flat_and_cleat(void **state)
                 assert_true(both[k].h <= on_cleat[k].h + tire.eq.eps_z);
                 assert_true(weighted[k].h >= both[k].h - tire.eq.eps_z);
                 assert_true(weighted[k].h <= on_cleat[k].h + tire.eq.eps_z);
-                assert_near(both[k].fz, load, tire.eq.eps_F, 0);
+                assert_near(both[k].fz, load, eq_F_tol(&tire), 0);
                 if (on_cleat[k].h > 1e-3) {
                     assert_true(both[k].h > 1e-4 && both[k].h < on_cleat[k].h - 1e-4);
                     ++between;

@@ -37,19 +37,38 @@ typedef struct {
     double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
 } tirenv_springs_params;
 
+/* How the ring's tread meets the ground ([ENVELOPING_RING] CONTACT, docs/models.md section
+ * 5.3): the tread surface continuous between nodes (the default), or one ray per node as the
+ * paper's springs model casts them. */
+typedef enum {
+    TIRENV_RING_CONTINUOUS = 0, /* 'continuous' */
+    TIRENV_RING_RAYS = 1        /* 'rays' */
+} tirenv_ring_contact_kind;
+
 /* Parameters of the flexible-ring reference tire (docs/models.md section 5): a belt of radius
- * R = R0 - t_r on an elastic foundation, with a tread layer of radial brush springs. Energy per
- * unit belt length: 1/2 EI ((w''+w)/R^2)^2 + 1/2 (T/R^2)(w'^2 - w^2) + 1/2 k_f w^2. */
+ * R = R0 - t_r on a foundation of sidewalls, carried by its inflation pressure p, with a tread
+ * layer between belt and ground. Energy per unit belt length: 1/2 EI ((w''+w)/R^2)^2 +
+ * 1/2 (T_p/R^2)(w'^2 - w^2) + 1/2 k_f w^2 with the tension T_p = T + p b R (the air's follower
+ * load on the crown) and the foundation k_f = k_c + gamma(alpha) p (the sidewalls as membranes
+ * under the air, plus the carcass's own k_c); docs/models.md section 5.1. */
 typedef struct {
     double t_r;            /* [ENVELOPING_RING] TREAD_THICKNESS, m */
     double EI;             /* BELT_BENDING_STIFFNESS, N*m^2 */
-    double T;              /* BELT_PRETENSION, N */
-    double k_f;            /* FOUNDATION_STIFFNESS, per unit belt length, N/m^2 */
+    double T;              /* BELT_PRETENSION: belt tension beyond the air's p*b*R, N */
+    double k_f;            /* FOUNDATION_STIFFNESS: the carcass's own radial stiffness beyond
+                            * the air's (k_c), per unit belt length, N/m^2 */
     double k_t;            /* TREAD_STIFFNESS, per unit belt length, N/m^2 */
     double dtheta;         /* NODE_ANGLE: node spacing around the full circle, rad */
     double lug_count;      /* LUG_COUNT: lugs around the circumference; 0 = smooth tread */
     double lug_fraction;   /* LUG_FRACTION: share of the circumference under lugs, (0, 1) */
     double lug_ratio;      /* LUG_GROOVE_RATIO: tread stiffness between lugs / on lugs, (0, 1] */
+    double b_p;            /* BELT_WIDTH: width of the crown the air presses on, m */
+    double alpha_s;        /* SIDEWALL_ANGLE: half angle of a sidewall's membrane arc, rad,
+                            * in (0, pi/2] */
+    double p;              /* [OPERATING_CONDITIONS] INFLPRES: inflation pressure, Pa */
+    double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (read and written; the
+                            * ring uses INFLPRES) */
+    tirenv_ring_contact_kind contact; /* [ENVELOPING_RING] CONTACT */
 } tirenv_ring_params;
 
 /* Parameters of the tandem elliptical cam model (docs/models.md section 7), the MF-Tyre keys of

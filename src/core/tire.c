@@ -38,13 +38,17 @@ tirenv_tire tirenv_tire_default(void)
         .ring = {
             .t_r = 0.04,
             .EI = 30,
-            .T = 26e3,
-            .k_f = 6e5,
+            .T = 0,
+            .k_f = 1.1e5,
             .k_t = 1.5e7,
-            .dtheta = M_PI / 360.0,
+            .dtheta = M_PI / 1440.0, /* converged: docs/models.md section 5.6 */
             .lug_count = 0,
             .lug_fraction = 0.5,
             .lug_ratio = 1,
+            .b_p = 0.34,
+            .alpha_s = 1.05,
+            .p = 1.2e5,
+            .p_nom = 1.2e5,
         },
         .eq = tirenv_eq_default(),
         /* The cam (docs/models.md section 7): the dimensionless cam shape of TNO's public 205/60R15
@@ -128,7 +132,7 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
         (status = plausible("INTERRADIAL_STIFFNESS", s->c_b, 0, 1e8, "N*rad/m", diag)) ||
         (status = plausible("BELT_BENDING_STIFFNESS", r->EI, 0, 1e5, "N*m^2", diag)) ||
         (status = plausible("BELT_PRETENSION", r->T, 0, 1e7, "N", diag)) ||
-        (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 1e3, 1e10, "N/m^2", diag)) ||
+        (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 0, 1e10, "N/m^2", diag)) ||
         (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e13, "N/m^2", diag)) ||
         (status = plausible("NODE_ANGLE", r->dtheta, 2 * M_PI / TIRE_RING_MAX_NODES,
                             M_PI / 8, "rad", diag)) ||
@@ -183,20 +187,47 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->T >= 0 && isfinite(r->T)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
                             "must be zero or positive (N), got %g", r->T);
-    if (!(r->k_f > 0 && isfinite(r->k_f)))
+    if (!(r->k_f >= 0 && isfinite(r->k_f)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FOUNDATION_STIFFNESS",
-                            "must be positive (N/m^2), got %g", r->k_f);
+                            "must be zero or positive (N/m^2), got %g", r->k_f);
+    if (!(r->p >= 0 && r->p < 1e8))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "INFLPRES",
+                            "must be zero or a positive pressure below 1e8 Pa, got %g", r->p);
+    if (!(r->p_nom >= 0 && r->p_nom < 1e8))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NOMPRES",
+                            "must be zero or a positive pressure below 1e8 Pa, got %g",
+                            r->p_nom);
+    if (!(r->b_p >= 0 && r->b_p < 2 * s->R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_WIDTH",
+                            "must be in [0, 2 UNLOADED_RADIUS) m, got %g", r->b_p);
+    if (r->contact != TIRENV_RING_CONTINUOUS && r->contact != TIRENV_RING_RAYS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CONTACT",
+                            "unknown ring contact %d", (int)r->contact);
+    if (!(r->alpha_s >= 0.1 && r->alpha_s <= M_PI / 2))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SIDEWALL_ANGLE",
+                            "must be in [0.1, pi/2] rad, got %g", r->alpha_s);
     if (!(r->k_t > 0 && isfinite(r->k_t)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_STIFFNESS",
                             "must be positive (N/m^2), got %g", r->k_t);
-    /* The belt's stiffness per mode is EI s^2/R^4 + T s/R^2 + k_f with s = n^2 - 1 >= -1;
-     * pretension lowers it for n = 0, and too much makes it negative: the belt buckles. */
-    const double R = s->R0 - r->t_r, s_min = fmax(-1, -r->T * R * R / (2 * fmax(r->EI, 1e-300)));
-    const double e_min = r->EI * s_min * s_min / (R * R * R * R) + r->T * s_min / (R * R) + r->k_f;
+    /* The belt's stiffness per mode is EI s^2/R^4 + T_p s/R^2 + k_f with s = n^2 - 1 >= -1,
+     * T_p = T + p b R and k_f = k_c + gamma p (the air's shares, docs/models.md section 5.1;
+     * gamma as tirenv_ring__sidewall_gamma); pretension lowers it for n = 0, and too much
+     * makes it negative: the belt buckles. */
+    const double R = s->R0 - r->t_r, a = r->alpha_s;
+    const double gamma = (a * sin(a) + cos(a)) / (sin(a) - a * cos(a));
+    const double T_p = r->T + r->p * r->b_p * R, k_f = r->k_f + gamma * r->p;
+    const double s_min = fmax(-1, -T_p * R * R / (2 * fmax(r->EI, 1e-300)));
+    const double e_min = r->EI * s_min * s_min / (R * R * R * R) + T_p * s_min / (R * R) + k_f;
+    /* 1e3 N/m^2: the plausible range's floor for the whole foundation (carcass and air). */
+    if (!(k_f >= 1e3))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FOUNDATION_STIFFNESS",
+                            "the sidewalls carry almost nothing: FOUNDATION_STIFFNESS %g N/m^2 "
+                            "and INFLPRES %g Pa give a foundation of %g N/m^2, below 1e3",
+                            r->k_f, r->p, k_f);
     if (!(e_min > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
-                            "%g N buckles the belt on its foundation (FOUNDATION_STIFFNESS %g "
-                            "N/m^2 too soft)", r->T, r->k_f);
+                            "%g N (with the air's) buckles the belt on its foundation "
+                            "(%g N/m^2 too soft)", T_p, k_f);
     if (!(r->dtheta > 0 && r->dtheta <= M_PI / 8))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NODE_ANGLE",
                             "must be in (0, pi/8] rad, got %g", r->dtheta);

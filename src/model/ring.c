@@ -36,16 +36,18 @@ enum { RING_MIN_WINDOW = 6 };
 enum { FREE = TIRENV_RING_FREE, T_BASIC = TIRENV_RING_T_BASIC, B_BASIC = TIRENV_RING_B_BASIC };
 
 /* Fourier symbol of the belt per node: for w_j = cos(n theta_j) the energy per unit length
- * 1/2 EI ((w''+w)/R^2)^2 + 1/2 (T/R^2)(w'^2 - w^2) + 1/2 k_f w^2, with w'' the second and w'
- * the forward difference (both give sigma = (2 sin(n dtheta/2)/dtheta)^2 for n^2), times the
- * arc R dtheta of a node. Rigid translations (n = 1, sigma ~ 1) cost only the foundation. */
+ * 1/2 EI ((w''+w)/R^2)^2 + 1/2 k_f w^2, with w'' the second difference (giving sigma =
+ * (2 sin(n dtheta/2)/dtheta)^2 for n^2), times the arc R dtheta of a node, plus the tension's
+ * c1 sum (dw)^2 + c0 sum w^2 (ring_belt.c), whose symbol is 8 c1 sin(n dtheta/2)^2 + 2 c0. */
 static double mode_stiffness(const tirenv_ring *r, size_t n)
 {
-    const double s = 2 * sin(M_PI * (double)n / (double)r->M) / r->dth;
+    const double sn = sin(M_PI * (double)n / (double)r->M), s = 2 * sn / r->dth;
     const double sigma = s * s, R = r->R;
+    double c1, c0;
+    tirenv_ring__tension(r->M, R, &r->par, &c1, &c0);
     const double e = r->par.EI * (sigma - 1) * (sigma - 1) / (R * R * R * R) +
-                     r->par.T * (sigma - 1) / (R * R) + r->par.k_f;
-    return R * r->dth * e;
+                     tirenv_ring__foundation(&r->par);
+    return R * r->dth * e + 8 * c1 * sn * sn + 2 * c0;
 }
 
 /* The belt's compliance is circulant (a uniform ring): one column, the inverse discrete cosine
@@ -95,7 +97,7 @@ tirenv_ring *tirenv_ring_alloc(double R0, const tirenv_ring_params *par)
                                &r->b,     &r->db,    &r->X,       &r->kappa,   &r->w,
                                &r->F,     &r->rhs,   &r->A.a0,    &r->A.a1,    &r->A.a2,
                                &r->A.bm[0], &r->A.bm[1], &r->pn_w, &r->pn_p,   &r->pn_t,
-                               &r->pn_g};
+                               &r->pn_g,  &r->g};
     const size_t n_arrays = sizeof arrays / sizeof arrays[0];
     r->theta = malloc((n_arrays + 1) * M * sizeof(double));
     r->state = calloc(3 * M, 1);
@@ -127,6 +129,9 @@ void tirenv_ring_free(tirenv_ring *r)
         return;
     free(r->theta);
     free(r->state);
+    free(r->pts);
+    free(r->cuts);
+    free(r->lines);
     tirenv_ring__belt_free(r->belt);
     free(r);
 }
@@ -238,6 +243,108 @@ static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             r->kappa[j] = tread_kappa(r, r->theta[j], x);
 }
 
+/* The continuous contact's window: the nodes whose interval holds a point of ground within
+ * reach (d > -t_r, as the rays' window), widened to the band solver's smallest size. */
+static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x, double z)
+{
+    for (size_t j = r->lo; j < r->lo + r->n; ++j)
+        r->F[j] = r->g[j] = 0;
+    r->n = 0;
+    r->n_pts = 0;
+    const double reach = r->R0 + r->par.t_r;
+    const double gap = z - tirenv_profile_max_height(p, x - reach, x + reach);
+    if (gap >= reach)
+        return 0;
+    size_t m = r->M / 4;
+    if (gap > 0)
+        m = (size_t)fmin((double)m, acos(gap / reach) / r->dth + 1);
+    const int status = tirenv_ring__sample(r, p, x, z, r->i0 - m, r->i0 + m);
+    if (status)
+        return status;
+    size_t first = r->M, last = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        tirenv_ring_point *q = &r->pts[k];
+        if (!(q->d > -r->par.t_r)) {
+            q->d = -INFINITY;
+            continue;
+        }
+        first = q->j < first ? q->j : first;
+        last = q->j + 1 > last ? q->j + 1 : last;
+        q->k_t = tread_kappa(r, q->phi, x) / (r->R * r->dth);
+    }
+    if (first > last)
+        return 0;
+    while (last - first + 1 < RING_MIN_WINDOW) {
+        --first;
+        if (last - first + 1 < RING_MIN_WINDOW)
+            ++last;
+    }
+    r->lo = first;
+    r->n = last - first + 1;
+    return 0;
+}
+
+/* The continuous contact's length: from the first to the last point of positive compression,
+ * each end extended to where the compression interpolated towards its free neighbour point
+ * crosses zero. */
+static double patch_length_smooth(const tirenv_ring *r)
+{
+    const tirenv_ring_point *q = r->pts;
+    size_t k1 = r->n_pts, k2 = 0;
+    for (size_t k = 0; k < r->n_pts; ++k)
+        if (q[k].st != 0) {
+            k1 = k < k1 ? k : k1;
+            k2 = k;
+        }
+    if (k1 > k2)
+        return 0;
+    double len = q[k2].X - q[k1].X;
+    if (k1 > 0 && q[k1 - 1].d > -INFINITY && q[k1 - 1].e <= 0)
+        len += q[k1].e / (q[k1].e - q[k1 - 1].e) * (q[k1].X - q[k1 - 1].X);
+    if (k2 + 1 < r->n_pts && q[k2 + 1].d > -INFINITY && q[k2 + 1].e <= 0)
+        len += q[k2].e / (q[k2].e - q[k2 + 1].e) * (q[k2 + 1].X - q[k2].X);
+    return len;
+}
+
+static void summarise_smooth(tirenv_ring *r)
+{
+    r->n_contact = r->n_belt = 0;
+    r->tread_max = 0;
+    for (size_t j = r->lo; j < r->lo + r->n; ++j) {
+        r->n_contact += r->F[j] > 0;
+        r->n_belt += r->g[j] > 0;
+    }
+    for (size_t k = 0; k < r->n_pts; ++k)
+        if (r->pts[k].st != 0)
+            r->tread_max = fmax(r->tread_max, fmin(r->pts[k].e, r->par.t_r));
+}
+
+static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                         double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                         tirenv_diag *diag)
+{
+    int status = cast_window_smooth(r, p, x, z);
+    if (status)
+        return tirenv_error(diag, status, "", 0, "ring", "out of memory for the contact of "
+                            "%zu ground points", r->n_pts);
+    *fx = *fz = 0;
+    if (dfz_dz)
+        *dfz_dz = 0;
+    if (r->n)
+        status = tirenv_ring__solve_smooth(r, fx, fz, dfz_dz, diag);
+    if (status) {
+        r->n = 0;
+        r->n_pts = 0;
+        r->warm_n = 0; /* nothing of a failed solve is reported or reused */
+        return status;
+    }
+    summarise_smooth(r);
+    if (contacts)
+        *contacts = r->n_contact;
+    r->patch = r->n ? patch_length_smooth(r) : 0;
+    return 0;
+}
+
 /* Contact length: first to last node with a ground force, each edge extended to where the
  * interpolated tread compression between the edge node and its free neighbour crosses zero. */
 static double patch_length(const tirenv_ring *r)
@@ -284,6 +391,8 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
                        double *fx, double *fz, double *dfz_dz, size_t *contacts,
                        tirenv_diag *diag)
 {
+    if (r->par.contact == TIRENV_RING_CONTINUOUS)
+        return forces_smooth(r, p, x, z, fx, fz, dfz_dz, contacts, diag);
     cast_window(r, p, x, z);
     const int status = r->n ? tirenv_ring__solve_contact(r, diag) : 0;
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
@@ -317,6 +426,21 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
 {
     const size_t lo = r->lo, hi = r->lo + r->n;
+    if (r->par.contact == TIRENV_RING_CONTINUOUS) {
+        for (size_t j = 0; j < r->M; ++j) {
+            const int inside = j >= lo && j < hi;
+            if (w && inside) {
+                w[j] = r->w[j];
+            } else if (w) {
+                w[j] = 0;
+                for (size_t k = lo; k < hi; ++k)
+                    w[j] += r->c[j > k ? j - k : k - j] * r->F[k];
+            }
+            if (f)
+                f[j] = inside ? r->F[j] : 0;
+        }
+        return;
+    }
     for (size_t j = 0; j < r->M; ++j) {
         const int inside = j >= lo && j < hi;
         if (w && inside) {
@@ -335,6 +459,31 @@ void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
 void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[])
 {
     const size_t lo = r->lo, hi = r->lo + r->n;
+    if (r->par.contact == TIRENV_RING_CONTINUOUS) {
+        /* d: the node's own ray (the larger of its one-sided values), b: the deepest point
+         * its two intervals hold, g: the belt layer's share of its force. */
+        for (size_t j = 0; j < r->M; ++j) {
+            if (d)
+                d[j] = -INFINITY;
+            if (b)
+                b[j] = -INFINITY;
+            if (g)
+                g[j] = j >= lo && j < hi ? r->g[j] : 0;
+        }
+        for (size_t k = 0; k < r->n_pts; ++k) {
+            const tirenv_ring_point *q = &r->pts[k];
+            if (q->d == -INFINITY)
+                continue;
+            const size_t jn[2] = {q->j, q->j + 1};
+            for (int e = 0; e < 2; ++e) {
+                if (b)
+                    b[jn[e]] = fmax(b[jn[e]], q->d);
+                if (d && q->s == (double)e)
+                    d[jn[e]] = fmax(d[jn[e]], q->d);
+            }
+        }
+        return;
+    }
     for (size_t j = 0; j < r->M; ++j) {
         const int inside = j >= lo && j < hi;
         if (d)

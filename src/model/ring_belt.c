@@ -15,17 +15,55 @@ struct tirenv_ring_belt {
     double *col;            /* a right-hand side of the exterior, M entries */
 };
 
-/* K = R dtheta [EI/R^4 L^2 + T/R^2 L + k_f I] with L = -D2 - I and D2 the second difference
- * (w[j-1] - 2 w[j] + w[j+1]) / dtheta^2: the symbol of -D2 is sigma = (2 sin(n dtheta/2) /
- * dtheta)^2, so this is the mode stiffness of section 5 node by node. L has the stencil
- * (l1, l0, l1) and L^2 the stencil (l1^2, 2 l0 l1, l0^2 + 2 l1^2, ...). */
+/* The sidewalls' radial stiffness per unit of pressure (docs/models.md section 5.1): each
+ * sidewall a membrane arc of half angle alpha under the meridional tension N = p r (r its
+ * radius) of the air; its length fixed, the pull N cos(alpha) it exerts on the crown edge falls
+ * as the crown comes in by dc, at the rate p (alpha sin(alpha) + cos(alpha)) /
+ * (2 (sin(alpha) - alpha cos(alpha))) per unit circumference; the two sidewalls give twice
+ * that. */
+double tirenv_ring__sidewall_gamma(double alpha)
+{
+    return (alpha * sin(alpha) + cos(alpha)) / (sin(alpha) - alpha * cos(alpha));
+}
+
+double tirenv_ring__foundation(const tirenv_ring_params *par)
+{
+    return par->k_f + tirenv_ring__sidewall_gamma(par->alpha_s) * par->p;
+}
+
+/* The belt's tension energy c1 sum (w[j+1] - w[j])^2 + c0 sum w[j]^2. The carcass's own
+ * pretension T in the finite-difference form of 1/2 (T/R^2)(w'^2 - w^2) (section 5.1). The
+ * air's part is the second variation of its follower load on the deformed belt: with the belt
+ * the polygon of nodes at radius R - w[j], the air does the work p b A (A: the polygon's area)
+ * and the belt, inextensible, holds it with the tension T_p = p b R cos(h) (h = dtheta/2) that
+ * balances it at w = 0, at the cost T_p L (L: its perimeter). The quadratic part of
+ * -p b A + T_p L is exactly c1 = T_p (1 + sin(h)^2) / (4 R sin(h)), c0 = -T_p sin(h) / R
+ * (tests/test_ring.c checks it against finite differences of A and L); both tend to the
+ * continuous form as dtheta -> 0. */
+void tirenv_ring__tension(size_t M, double R, const tirenv_ring_params *par, double *c1,
+                          double *c0)
+{
+    const double dth = 2 * M_PI / (double)M, h = 0.5 * dth, sh = sin(h);
+    const double T_p = par->p * par->b_p * R * cos(h);
+    *c1 = par->T / (2 * R * dth) + T_p * (1 + sh * sh) / (4 * R * sh);
+    *c0 = -par->T * dth / (2 * R) - T_p * sh / R;
+}
+
+/* K = R dtheta [EI/R^4 L^2 + k_f I] + the tension's, with L = -D2 - I and D2 the second
+ * difference (w[j-1] - 2 w[j] + w[j+1]) / dtheta^2: the symbol of -D2 is sigma =
+ * (2 sin(n dtheta/2) / dtheta)^2, so this is the mode stiffness of section 5 node by node. L
+ * has the stencil (l1, l0, l1) and L^2 the stencil (l1^2, 2 l0 l1, l0^2 + 2 l1^2, ...); the
+ * tension c1 sum (dw)^2 + c0 sum w^2 adds (-2 c1, 4 c1 + 2 c0, -2 c1). */
 static void stencil(size_t M, double R, const tirenv_ring_params *par, double s[3])
 {
     const double dth = 2 * M_PI / (double)M, e = 1 / (dth * dth);
     const double l0 = 2 * e - 1, l1 = -e;
-    const double bend = par->EI / (R * R * R * R), tens = par->T / (R * R), arc = R * dth;
-    s[0] = arc * (bend * (l0 * l0 + 2 * l1 * l1) + tens * l0 + par->k_f);
-    s[1] = arc * (bend * 2 * l0 * l1 + tens * l1);
+    const double bend = par->EI / (R * R * R * R), arc = R * dth;
+    double c1, c0;
+    tirenv_ring__tension(M, R, par, &c1, &c0);
+    s[0] = arc * (bend * (l0 * l0 + 2 * l1 * l1) + tirenv_ring__foundation(par)) + 4 * c1 +
+           2 * c0;
+    s[1] = arc * bend * 2 * l0 * l1 - 2 * c1;
     s[2] = arc * bend * l1 * l1;
 }
 

@@ -48,7 +48,8 @@ static size_t couplings(size_t n, size_t i, size_t k[6])
 }
 
 /* (S w)_i: the ground force that holds window node i where it is. */
-static double belt_force(const tirenv_ring *r, const double (*q)[4], const double w[], size_t i)
+double tirenv_ring__belt_force(const tirenv_ring *r, const double (*q)[4], const double w[],
+                               size_t i)
 {
     const size_t n = r->n;
     const int ei = i < 2 ? (int)i : i + 2 >= n ? (int)(i + 4 - n) : -1;
@@ -133,7 +134,7 @@ static int solve_states(tirenv_ring *r, const double (*q)[4])
     for (size_t i = 0; i < n; ++i) {
         const size_t j = lo + i;
         r->w[j] = r->rhs[i];
-        r->F[j] = r->state[j] & B_BASIC  ? belt_force(r, q, r->rhs, i)
+        r->F[j] = r->state[j] & B_BASIC  ? tirenv_ring__belt_force(r, q, r->rhs, i)
                   : r->state[j] == TREAD ? r->kappa[j] * (r->d[j] - r->w[j])
                                          : 0;
     }
@@ -188,7 +189,7 @@ static double energy(const tirenv_ring *r, const double (*q)[4], const double w[
     double f = 0;
     for (size_t i = 0; i < r->n; ++i) {
         const size_t j = r->lo + i;
-        const double Sw = belt_force(r, q, w, i), e = r->d[j] - w[i];
+        const double Sw = tirenv_ring__belt_force(r, q, w, i), e = r->d[j] - w[i];
         const double F_t = e > 0 ? r->kappa[j] * e : 0;
         f += 0.5 * (w[i] * Sw + F_t * fmax(e, 0));
         if (grad)
@@ -376,7 +377,7 @@ double tirenv_ring__dfz_dz(tirenv_ring *r)
     for (size_t i = 0; i < n; ++i) {
         const size_t j = lo + i;
         if (r->state[j] & B_BASIC)
-            dF += belt_force(r, q, v, i) * r->cos_t[j];
+            dF += tirenv_ring__belt_force(r, q, v, i) * r->cos_t[j];
         else if (r->state[j] == TREAD)
             dF += r->kappa[j] * (r->dd[j] - v[i]) * r->cos_t[j];
     }

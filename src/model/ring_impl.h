@@ -25,6 +25,15 @@ typedef struct tirenv_ring_belt tirenv_ring_belt;
 tirenv_ring_belt *tirenv_ring__belt_alloc(size_t M, double R, const tirenv_ring_params *par);
 void tirenv_ring__belt_free(tirenv_ring_belt *b);
 
+/* The pressure's share of the belt (docs/models.md section 5.1): gamma(alpha), the two
+ * sidewalls' radial stiffness per unit pressure (dimensionless); the foundation k_c +
+ * gamma p (N/m^2); the belt's tension energy c1 sum (w[j+1] - w[j])^2 + c0 sum w[j]^2 (N/m)
+ * of the carcass's pretension and the air's follower load. */
+double tirenv_ring__sidewall_gamma(double alpha);
+double tirenv_ring__foundation(const tirenv_ring_params *par);
+void tirenv_ring__tension(size_t M, double R, const tirenv_ring_params *par, double *c1,
+                          double *c0);
+
 /* Stencil s[0..2] of K (N/m). */
 const double *tirenv_ring__belt_stencil(const tirenv_ring_belt *b);
 
@@ -56,6 +65,29 @@ void tirenv_ring__band_solve(const tirenv_ring_band *A, double b[]);
  * with T_BASIC too the tread carries kappa (d - w) of its force, without it none. */
 enum { TIRENV_RING_FREE = 0, TIRENV_RING_T_BASIC = 1, TIRENV_RING_B_BASIC = 2 };
 
+/* A quadrature point of the continuous contact (ring_ground.c, ring_smooth.c): an end of a
+ * piece of the window along which the ground is one segment, in node interval j. */
+typedef struct {
+    double phi, sn, cs;    /* angle (rad) and its sine and cosine */
+    double omega;          /* weight: half its piece's angle, rad */
+    double s;              /* place in the interval: the tread there is (1 - s) w_j + s w_j+1 */
+    size_t j;              /* the interval's first node */
+    double d, dd;          /* penetration R0 - rho (m; -INFINITY: none) and its d/dz */
+    double X;              /* ground abscissa, m */
+    double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
+    double e, f;           /* last evaluation: tread compression (m) and ground force (N) */
+    unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+} tirenv_ring_point;
+
+/* A piece of the window between two cuts (nodes or ground vertices), and the ground line its
+ * middle ray meets (hit = 0: none within reach). */
+typedef struct {
+    double pa, sa, ca, pb, sb, cb; /* its ends' angles (rad), sines and cosines */
+    size_t j;                      /* its node interval */
+    int hit;
+    double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
+} tirenv_ring_piece;
+
 struct tirenv_ring {
     double R0;             /* free radius at the tread surface, m */
     double R;              /* belt radius R0 - t_r, m */
@@ -84,7 +116,29 @@ struct tirenv_ring {
     double patch;          /* contact length of the last evaluation, m */
     double tread_max;      /* largest tread compression of the last evaluation, m */
     size_t n_contact, n_belt;
+    /* The continuous contact's workspace (grown to the largest window met): */
+    tirenv_ring_point *pts;
+    size_t n_pts, cap_pts;
+    void *cuts;
+    size_t cap_cuts;
+    tirenv_ring_piece *lines;
+    size_t cap_lines;
+    double *g;             /* per node: the belt layer's share of F, N */
 };
+
+/* The quadrature points of the continuous contact over nodes ja .. jb (ring_ground.c):
+ * r->pts, r->n_pts. TIRENV_ENOMEM if its workspace cannot grow. */
+int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                        size_t ja, size_t jb);
+
+/* The continuous contact on the window r->lo, r->n (ring_smooth.c): w, F, g per node and e, f
+ * per point; TIRENV_ENOCONV with diag if Newton does not settle. dfz_dz (may be NULL). */
+int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *dfz_dz,
+                              tirenv_diag *diag);
+
+/* (S w)_i: the belt force holding window node i at w (ring_contact.c). */
+double tirenv_ring__belt_force(const tirenv_ring *r, const double (*q)[4], const double w[],
+                               size_t i);
 
 /* The contact on the window lo .. lo + n - 1 (n >= 6) of the rays cast: states, w and F of
  * every window node, from the states in warm. TIRENV_ENOCONV, diag saying which, if no method

@@ -200,14 +200,15 @@ static void *ring_model_alloc(const tirenv_tire *tire)
     return tirenv_deformable_alloc(tire, &ring_ops);
 }
 
-/* What tirenv fit identifies on rig data (docs/models.md section 8.4): the foundation and the
- * tread by default, the belt's bending stiffness and pretension as the optional ones. The
+/* What tirenv fit identifies on rig data (docs/models.md section 8.4): the carcass's
+ * foundation and the tread by default, the belt's bending stiffness and the inflation pressure
+ * (which sets the belt's tension and the sidewalls' stiffness) as the optional ones. The
  * thickness and the discretisation are settings. */
 static const tirenv_model_param ring_params[] = {
     {"FOUNDATION_STIFFNESS", offsetof(tirenv_tire, ring.k_f), 0},
     {"TREAD_STIFFNESS", offsetof(tirenv_tire, ring.k_t), 0},
     {"BELT_BENDING_STIFFNESS", offsetof(tirenv_tire, ring.EI), 0},
-    {"BELT_PRETENSION", offsetof(tirenv_tire, ring.T), 0},
+    {"INFLPRES", offsetof(tirenv_tire, ring.p), 0},
 };
 
 static const tirenv_model_type ring_type = {

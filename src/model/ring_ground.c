@@ -1,0 +1,221 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The ground as the ring's continuous tread sees it (docs/models.md section 5.3): the angles
+ * of the window cut at every node and at every ground vertex within reach into pieces, along
+ * each of which the first ground a ray from the centre meets lies on one segment of the
+ * profile, so that the penetration d(phi) = R0 - rho(phi) is smooth there. Each piece gives
+ * two quadrature points, its ends, with its one-sided values of d: the trapezoid rule of the
+ * tread's energy over the piece (ring_smooth.c). As the centre moves, the pieces' ends move
+ * continuously and a piece appears or vanishes only with zero length, so the sum is
+ * continuous in x and z even where d(phi) jumps (a vertical face, a corner that a ray
+ * passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, each
+ * with the weight dtheta: the rays model exactly. */
+#include <math.h>
+#include <stdlib.h>
+#include "core/profile_impl.h"
+#include "model/ring_impl.h"
+
+/* A cut of the window: a node or a ground vertex, at angle phi (rad, from the downward
+ * vertical, positive forward) with its sine and cosine. */
+typedef struct {
+    double phi, s, c;
+} cut;
+
+static int by_angle(const void *a, const void *b)
+{
+    const double pa = ((const cut *)a)->phi, pb = ((const cut *)b)->phi;
+    return (pa > pb) - (pa < pb);
+}
+
+/* Room for n entries of size sz in *buf (capacity *cap), growing geometrically: the workspace
+ * settles at the largest window a profile needs, after which evaluation does not allocate. */
+static int reserve(void **buf, size_t *cap, size_t n, size_t sz)
+{
+    if (n <= *cap)
+        return 0;
+    size_t c = *cap ? *cap : 256;
+    while (c < n)
+        c *= 2;
+    void *nb = realloc(*buf, c * sz);
+    if (!nb)
+        return TIRENV_ENOMEM;
+    *buf = nb;
+    *cap = c;
+    return 0;
+}
+
+/* The line (L[0], L[1]) - (L[2], L[3]) of the first ground met by the ray from (x, z) in the
+ * direction (sx, cz) (cz > 0, not normalised), walking the vertices in the ray's direction from
+ * *cursor; 0 if no ground within the horizontal distance reach. The ground is a graph with
+ * vertical walls, so the first vertex the ray passes at or above closes the segment that holds
+ * the crossing (springs_ray.c argues the same for the springs model's rays). *cursor keeps
+ * that vertex: a flatter ray of the same side lies above every vertex before it. */
+static int first_line(const tirenv_profile *p, double x, double z, double sx, double cz,
+                      double reach, long *cursor, double L[4])
+{
+    const double *X = p->x, *Z = p->z;
+    const long n = (long)p->n;
+    if (sx == 0) { /* straight down: the segment under the centre */
+        const size_t k = tirenv_profile__segment_at(p, x);
+        if (x < X[0] || k + 1 >= (size_t)n) {
+            const double zf = x < X[0] ? Z[0] : Z[n - 1];
+            L[0] = x - 1, L[1] = zf, L[2] = x + 1, L[3] = zf;
+        } else {
+            L[0] = X[k], L[1] = Z[k], L[2] = X[k + 1], L[3] = Z[k + 1];
+        }
+        return 1;
+    }
+    const int dir = sx > 0 ? 1 : -1;
+    const double s = fabs(sx);
+    long j = *cursor;
+    for (; j >= 0 && j < n; j += dir) {
+        const double a = dir * (X[j] - x);
+        if ((z - Z[j]) * s <= a * cz) { /* the ray at or below vertex j */
+            *cursor = j;
+            const long jp = j - dir;
+            if (jp < 0 || jp >= n) { /* the flat extension before vertex j */
+                L[0] = X[j] - dir, L[1] = Z[j], L[2] = X[j], L[3] = Z[j];
+            } else {
+                L[0] = X[jp], L[1] = Z[jp], L[2] = X[j], L[3] = Z[j];
+            }
+            if (dir < 0) { /* order the line left to right: its normal faces up */
+                double t = L[0];
+                L[0] = L[2], L[2] = t;
+                t = L[1], L[1] = L[3], L[3] = t;
+            }
+            return 1;
+        }
+        if (a > reach) { /* above the ground up to a vertex beyond reach: no crossing */
+            *cursor = j;
+            return 0;
+        }
+    }
+    *cursor = j;
+    /* Past the last vertex the ground is flat at the end height. */
+    const long e = dir > 0 ? n - 1 : 0;
+    if ((z - Z[e]) * s > reach * cz)
+        return 0;
+    L[0] = X[e] - 1, L[1] = Z[e], L[2] = X[e] + 1, L[3] = Z[e];
+    return 1;
+}
+
+/* rho along the ray at (s, c) (normalised) to the line L, and d(rho)/dz: from
+ * (x + rho s - X1) dZ = (z - rho c - Z1) dX. NAN if the line faces away (never for the line a
+ * ray of the piece meets first). */
+static double rho_on(const double L[4], double x, double z, double s, double c, double *drho)
+{
+    const double dX = L[2] - L[0], dZ = L[3] - L[1], den = s * dZ + c * dX;
+    if (!(den > 0)) {
+        *drho = 0;
+        return NAN;
+    }
+    *drho = dX / den;
+    return ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
+}
+
+/* The piece [a, b] of node interval j (nodes j, j + 1): its two points. */
+static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, const double L[4],
+                         double x, double z, int inside)
+{
+    const double omega = 0.5 * (b->phi - a->phi), th = r->theta[j];
+    const cut *ends[2] = {a, b};
+    for (int e = 0; e < 2; ++e) {
+        tirenv_ring_point *q = &r->pts[r->n_pts++];
+        const cut *k = ends[e];
+        double drho = 0, rho = 0;
+        if (!inside)
+            rho = rho_on(L, x, z, k->s, k->c, &drho);
+        q->sn = k->s;
+        q->cs = k->c;
+        q->phi = k->phi;
+        q->omega = omega;
+        q->j = j;
+        q->s = fmin(1, fmax(0, (k->phi - th) / r->dth));
+        if (k == ends[1] && b->phi == r->theta[j + 1])
+            q->s = 1;
+        if (k == ends[0] && a->phi == th)
+            q->s = 0;
+        q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+        q->dd = -drho;
+        q->X = x + (isfinite(rho) ? rho : 0) * k->s;
+    }
+}
+
+/* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
+ * pieces between them, and each piece's line from a ray along its middle. Rays of one side are
+ * cast outward from the vertical, so each walk starts where the last one ended. */
+int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                        size_t ja, size_t jb)
+{
+    const double *X = p->x, *Z = p->z, reach = r->R0 + r->par.t_r;
+    const double phi_a = r->theta[ja], phi_b = r->theta[jb];
+    /* The vertices within reach below the centre, by angle. */
+    size_t nv = 0;
+    size_t k = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
+    for (size_t kk = k; kk < p->n && X[kk] <= x + reach; ++kk) {
+        const double dx = X[kk] - x, dz = z - Z[kk];
+        if (!(dz > 0))
+            continue;
+        const double rho = sqrt(dx * dx + dz * dz);
+        if (!(rho < reach))
+            continue;
+        const double phi = atan2(dx, dz);
+        if (!(phi > phi_a && phi < phi_b))
+            continue;
+        if (reserve((void **)&r->cuts, &r->cap_cuts, nv + 1, sizeof(cut)))
+            return TIRENV_ENOMEM;
+        ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho};
+    }
+    cut *v = r->cuts;
+    if (nv > 1)
+        qsort(v, nv, sizeof *v, by_angle);
+    const size_t n_pieces = (jb - ja) + nv;
+    if (reserve((void **)&r->pts, &r->cap_pts, 2 * n_pieces, sizeof *r->pts) ||
+        reserve((void **)&r->lines, &r->cap_lines, n_pieces, sizeof *r->lines))
+        return TIRENV_ENOMEM;
+    v = r->cuts;
+    const int inside = !(z > tirenv_profile_height(p, x)); /* centre in the ground: rho = 0 */
+    /* The pieces in angle order, with their lines still to find. */
+    r->n_pts = 0;
+    size_t iv = 0, n_lines = 0;
+    for (size_t j = ja; j < jb; ++j) {
+        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j]};
+        for (;;) {
+            cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1]};
+            const int is_vertex = iv < nv && v[iv].phi < next.phi;
+            if (is_vertex)
+                next = v[iv++];
+            if (next.phi > prev.phi) {
+                r->lines[n_lines] = (tirenv_ring_piece){prev.phi, prev.s, prev.c, next.phi,
+                                                        next.s, next.c, j, 0, {0, 0, 0, 0}};
+                ++n_lines;
+            }
+            prev = next;
+            if (!is_vertex)
+                break;
+        }
+    }
+    /* Their lines: rays along the middle of each piece, each side walked outward. */
+    long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
+    if (!(X[cur_f] > x))
+        ++cur_f;
+    long cur_b = cur_f - 1;
+    while (cur_b >= 0 && X[cur_b] >= x)
+        --cur_b;
+    for (size_t side = 0; side < 2; ++side)     /* backward rays first, then forward */
+        for (size_t i = 0; i < n_lines; ++i) {
+            tirenv_ring_piece *c = &r->lines[side ? i : n_lines - 1 - i];
+            const double sx = c->sa + c->sb, cz = c->ca + c->cb;
+            if ((sx < 0) != (side == 0))
+                continue;
+            c->hit = inside || first_line(p, x, z, sx, cz, reach, sx < 0 ? &cur_b : &cur_f,
+                                          c->L);
+        }
+    for (size_t i = 0; i < n_lines; ++i) {
+        const tirenv_ring_piece *c = &r->lines[i];
+        if (!c->hit)
+            continue;
+        const cut a = {c->pa, c->sa, c->ca}, b = {c->pb, c->sb, c->cb};
+        piece_points(r, &a, &b, c->j, c->L, x, z, inside);
+    }
+    return 0;
+}

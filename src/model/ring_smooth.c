@@ -1,0 +1,258 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The ring's continuous contact (docs/models.md section 5.3): the belt's displacement w(phi)
+ * between nodes is the linear interpolation (1 - s) w_j + s w_j+1, the tread between belt and
+ * ground is compressed by e(phi) = d(phi) - w(phi), and the contact is the minimum over the
+ * window's w of
+ *     E(w) = 1/2 w.S w + sum_q omega_q R psi(e_q),
+ *     psi(e) = 1/2 k_t max(0, e)^2 + 1/2 k_b max(0, e - t_r)^2,
+ * the trapezoid rule of the tread's energy over the pieces of ring_ground.c. The second term of
+ * psi is the belt and carcass beneath the tread: where the ground has compressed the tread
+ * through its thickness t_r it meets them, k_b = RING_BELT_LAYER times stiffer than the tread,
+ * so nothing cuts through the belt (a compression beyond t_r costs a thousand times more).
+ * E is convex and piecewise quadratic, so Newton's method on it, with the pieces (the points'
+ * states: free, tread, tread and belt) taken from the current w, ends exactly, when a step
+ * does not change them; a backtracking line search on E makes it converge from anywhere. The
+ * hub force is the sum of the points' radial forces f_q = omega_q R psi'(e_q). */
+#include <math.h>
+#include <string.h>
+#include "model/ring_impl.h"
+
+/* k_b / k_t: the belt and carcass under the tread, in compression (docs/models.md 5.3). */
+static const double RING_BELT_LAYER = 1e3;
+enum { SMOOTH_MAX_ITER = 200, SMOOTH_BACKTRACK = 20 };
+static const double smooth_sigma = 1e-4; /* Armijo's sufficient decrease */
+/* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
+ * point whose compression is zero to round-off carries no force either way. */
+static const double smooth_step_tol = 1e-12;
+/* Where no step lowers E beyond round-off (the states of a few points at zero compression
+ * flip back and forth), a Newton step up to this long (m) is taken as the answer: its w then
+ * differs from the exact minimum by less, and h by far less. Seen at NODE_ANGLE 1/16 degree,
+ * 5.7e-7 m. */
+static const double smooth_stall_tol = 1e-6;
+
+static double compression(const tirenv_ring *r, const tirenv_ring_point *q, const double w[])
+{
+    const size_t i = q->j - r->lo;
+    return q->d - ((1 - q->s) * w[i] + q->s * w[i + 1]);
+}
+
+static unsigned char state_of(double e, double t_r) { return e > t_r ? 2 : e > 0 ? 1 : 0; }
+
+/* psi(e) and psi'(e) of a point, per unit of arc. */
+static double psi(const tirenv_ring_point *q, double k_b, double t_r, double e, double *dpsi)
+{
+    double f = 0, df = 0;
+    if (e > 0) {
+        f = 0.5 * q->k_t * e * e;
+        df = q->k_t * e;
+    }
+    if (e > t_r) {
+        f += 0.5 * k_b * (e - t_r) * (e - t_r);
+        df += k_b * (e - t_r);
+    }
+    *dpsi = df;
+    return f;
+}
+
+/* E(w) and, if grad is not NULL, its gradient S w - sum_q omega R psi'(e_q) N_q. */
+static double energy(const tirenv_ring *r, const double (*q4)[4], const double w[],
+                     double grad[])
+{
+    const size_t n = r->n;
+    const double t_r = r->par.t_r, R = r->R;
+    double E = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const double Sw = tirenv_ring__belt_force(r, q4, w, i);
+        E += 0.5 * w[i] * Sw;
+        if (grad)
+            grad[i] = Sw;
+    }
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->d == -INFINITY)
+            continue;
+        const double k_b = RING_BELT_LAYER * q->k_t, e = compression(r, q, w);
+        double dpsi;
+        E += q->omega * R * psi(q, k_b, t_r, e, &dpsi);
+        if (grad && dpsi != 0) {
+            const size_t i = q->j - r->lo;
+            grad[i] -= q->omega * R * dpsi * (1 - q->s);
+            grad[i + 1] -= q->omega * R * dpsi * q->s;
+        }
+    }
+    return E;
+}
+
+/* The window's belt stiffness S (band, corner) plus, on every point in tread (or belt)
+ * contact, omega R psi'' N N^T; the right-hand side the points' omega R (k_t d + k_b (d -
+ * t_r)) N, so that the solution is the minimum of E with the points' states fixed. */
+static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
+{
+    const size_t n = r->n;
+    const double *s = tirenv_ring__belt_stencil(r->belt), t_r = r->par.t_r, R = r->R;
+    tirenv_ring_band *A = &r->A;
+    A->n = n;
+    for (size_t i = 0; i < n; ++i) {
+        A->a0[i] = s[0];
+        A->a1[i] = i + 1 < n ? s[1] : 0;
+        A->a2[i] = i + 2 < n ? s[2] : 0;
+        rhs[i] = 0;
+    }
+    A->a0[0] -= q4[0][0];
+    A->a1[0] -= q4[0][1];
+    A->a0[1] -= q4[1][1];
+    A->a0[n - 2] -= q4[2][2];
+    A->a1[n - 2] -= q4[2][3];
+    A->a0[n - 1] -= q4[3][3];
+    for (size_t i = 0; i < 2; ++i)
+        for (size_t k = 0; k < 2; ++k)
+            A->c[i][k] = -q4[i][2 + k];
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double c = q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0));
+        const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
+        const size_t i = q->j - r->lo;
+        const double n0 = 1 - q->s, n1 = q->s;
+        A->a0[i] += c * n0 * n0;
+        A->a0[i + 1] += c * n1 * n1;
+        A->a1[i] += c * n0 * n1;
+        rhs[i] += b * n0;
+        rhs[i + 1] += b * n1;
+    }
+}
+
+/* Sets every point's state from w; the number that changed. */
+static size_t set_states(tirenv_ring *r, const double w[])
+{
+    size_t changed = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        tirenv_ring_point *q = &r->pts[k];
+        const unsigned char st = q->d == -INFINITY ? 0 : state_of(compression(r, q, w), r->par.t_r);
+        changed += st != q->st;
+        q->st = st;
+    }
+    return changed;
+}
+
+int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *dfz_dz,
+                              tirenv_diag *diag)
+{
+    const size_t n = r->n, lo = r->lo;
+    const double(*q4)[4] = tirenv_ring__belt_end(r->belt, n);
+    const double t_r = r->par.t_r, R = r->R;
+    double *w = r->pn_w, *wn = r->pn_p, *wt = r->pn_t, *g = r->pn_g;
+    /* From the last evaluation's belt where this window overlaps its window (zero
+     * elsewhere): the states there are usually this one's, and the solution does not depend
+     * on the start (the minimum of a strictly convex E). */
+    for (size_t i = 0; i < n; ++i) {
+        const size_t j = lo + i;
+        w[i] = j >= r->warm_lo && j < r->warm_lo + r->warm_n ? r->w[j] : 0;
+    }
+    for (size_t k = 0; k < r->n_pts; ++k)
+        r->pts[k].st = 255; /* none yet */
+    set_states(r, w);
+    size_t it = 0;
+    for (; it < SMOOTH_MAX_ITER; ++it) {
+        assemble(r, q4, wn);
+        if (tirenv_ring__band_factor(&r->A))
+            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                                "the Cholesky factorisation of the %zu-node banded contact "
+                                "system broke down (not numerically positive definite)", n);
+        tirenv_ring__band_solve(&r->A, wn);
+        double step = 0;
+        for (size_t i = 0; i < n; ++i)
+            step = fmax(step, fabs(wn[i] - w[i]));
+        /* The states at the solution: unchanged, it is the minimum. */
+        if (set_states(r, wn) == 0 || step <= smooth_step_tol) {
+            memcpy(w, wn, n * sizeof *w);
+            break;
+        }
+        /* Else a step towards it that lowers E enough. */
+        const double E0 = energy(r, q4, w, g);
+        double slope = 0;
+        for (size_t i = 0; i < n; ++i)
+            slope += g[i] * (wn[i] - w[i]);
+        double alpha = 1;
+        size_t b = 0;
+        for (; b < SMOOTH_BACKTRACK; ++b, alpha *= 0.5) {
+            for (size_t i = 0; i < n; ++i)
+                wt[i] = w[i] + alpha * (wn[i] - w[i]);
+            if (energy(r, q4, wt, NULL) <= E0 + smooth_sigma * alpha * slope)
+                break;
+        }
+        if (b == SMOOTH_BACKTRACK && step <= smooth_stall_tol) {
+            /* No step of at least 2^-20 of the way lowers E: w is the minimum to round-off,
+             * and the Newton point differs from it by a few points at zero compression
+             * flipping. (Shorter steps would "lower" E by its round-off alone.) */
+            memcpy(w, wn, n * sizeof *w);
+            set_states(r, w);
+            break;
+        }
+        memcpy(w, wt, n * sizeof *w);
+        set_states(r, w);
+    }
+    if (it == SMOOTH_MAX_ITER)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the continuous tread contact of %zu points on %zu nodes did not "
+                            "settle in %d Newton steps", r->n_pts, n, SMOOTH_MAX_ITER);
+    /* The factor of the final states, for dF_z/dz. */
+    assemble(r, q4, wt);
+    if (tirenv_ring__band_factor(&r->A))
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the Cholesky factorisation of the %zu-node banded contact system "
+                            "broke down (not numerically positive definite)", n);
+    double sum_c = 0, sum_s = 0;
+    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
+        r->w[j] = 0;
+    r->warm_lo = lo;
+    r->warm_n = n;
+    for (size_t i = 0; i < n; ++i) {
+        r->w[lo + i] = w[i];
+        r->F[lo + i] = 0;
+        r->g[lo + i] = 0;
+        wt[i] = 0;
+    }
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        tirenv_ring_point *q = &r->pts[k];
+        q->e = q->d == -INFINITY ? -INFINITY : compression(r, q, w);
+        q->f = 0;
+        if (q->st == 0)
+            continue;
+        const double k_b = RING_BELT_LAYER * q->k_t;
+        double dpsi;
+        psi(q, k_b, t_r, q->e, &dpsi);
+        q->f = q->omega * R * dpsi;
+        r->F[q->j] += (1 - q->s) * q->f;
+        r->F[q->j + 1] += q->s * q->f;
+        if (q->st == 2) {
+            const double gb = q->omega * R * k_b * (q->e - t_r);
+            r->g[q->j] += (1 - q->s) * gb;
+            r->g[q->j + 1] += q->s * gb;
+        }
+        sum_c += q->f * q->cs;
+        sum_s += q->f * q->sn;
+        /* dF_z/dz: the right-hand side omega R psi'' d' N. */
+        const double c = q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0)) * q->dd;
+        wt[q->j - lo] += c * (1 - q->s);
+        wt[q->j - lo + 1] += c * q->s;
+    }
+    *fz = sum_c;
+    *fx = -sum_s;
+    if (dfz_dz) {
+        tirenv_ring__band_solve(&r->A, wt);
+        double dF = 0;
+        for (size_t k = 0; k < r->n_pts; ++k) {
+            const tirenv_ring_point *q = &r->pts[k];
+            if (q->st == 0)
+                continue;
+            const double k_b = RING_BELT_LAYER * q->k_t;
+            const double de = q->dd - ((1 - q->s) * wt[q->j - lo] + q->s * wt[q->j - lo + 1]);
+            dF += q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0)) * de * q->cs;
+        }
+        *dfz_dz = dF;
+    }
+    return 0;
+}
