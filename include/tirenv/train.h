@@ -64,13 +64,11 @@ typedef struct {
     double eta_minus;      /* in (0, 1) */
 } tirenv_rprop_settings;
 
-/* How the Levenberg-Marquardt step is solved. Both damp with mu I and update mu by Nielsen's
- * rule; lm.c says which is the default and why. */
+/* How the Levenberg-Marquardt step is solved: damping mu I, Nielsen's update of mu (lm.c says
+ * why). One solver since GSL's gsl_multifit_nlinear left (version 0.1 offered it as a second). */
 typedef enum {
-    TIRENV_LM_CHOLESKY = 0, /* (J^T J + mu I) dw = -J^T r by Cholesky on normal equations
+    TIRENV_LM_CHOLESKY = 0  /* (J^T J + mu I) dw = -J^T r by Cholesky on normal equations
                                formed a block of rows at a time */
-    TIRENV_LM_GSL           /* GSL's gsl_multifit_nlinear trust region (trs_lm, Levenberg
-                               scaling, Cholesky), one gsl_multifit_nlinear_iterate per epoch */
 } tirenv_lm_solver;
 
 /* Levenberg-Marquardt on the full Jacobian of the residuals (one epoch = one accepted step). */
