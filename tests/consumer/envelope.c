@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include <gsl/gsl_errno.h>
 #include <tirenv/tirenv.h>
 
 static int fail(const char *what, const tirenv_diag *diag)
@@ -22,10 +21,6 @@ int main(int argc, char *argv[])
         fprintf(stderr, "usage: envelope TIRE.tir\n");
         return 1;
     }
-    /* GSL's default error handler aborts the process; tirenv reports every failure through
-     * its return codes and tirenv_diag, so the handler is turned off once, here. */
-    gsl_set_error_handler_off();
-
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_tire tire = tirenv_tire_default();   /* then the keys the file gives */
