@@ -357,7 +357,7 @@ static void usage(FILE *fp)
           "                       [--repeats N] [--seed S] [--lm-seeds N]\n"
           "\n"
           "Times the network's trainers (backprop for the paper's 2e5 cycles by default, rprop,\n"
-          "lm and lm with GSL's solver, FANN's RPROP) and its inference against FANN's\n"
+          "lm, FANN's RPROP) and its inference against FANN's\n"
           "fann_run on the same 4-8-1 network. Data: DIR, else the embedded data set if it is\n"
           "built (" TIRENV_DATA_DIR "/dataset), else (or with --synthetic) the embedded data\n"
           "set's 28 cases simulated with the springs model. lm with its default settings is\n"

@@ -296,7 +296,7 @@ static void test_rigid_limit(void **state)
     tirenv_profile_free(p);
 }
 
-/* The paper's secant, the default Newton and GSL's Brent find the same equilibrium, and the
+/* The paper's secant, the default Newton and Brent find the same equilibrium, and the
  * default needs fewer force evaluations than the secant. */
 static void test_methods_agree(void **state)
 {

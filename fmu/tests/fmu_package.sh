@@ -1,7 +1,7 @@
 #!/bin/sh
 # The FMU's package: the zip holds what FMI 2.0 section 2.3 asks of a linux64 co-simulation
 # FMU, modelDescription.xml is well-formed XML (xmllint), and the binary is self-contained
-# (ldd: libc and libm only, no GSL, jansson or libtirenv) and exports the fmi2 functions only.
+# (ldd: libc and libm only, no GSL, cminpack, jansson or libtirenv) and exports the fmi2 functions only.
 # In a sanitizer build (second argument 1) the sanitizers' runtimes are allowed besides.
 # usage: fmu_package.sh FMU [SANITIZED]        SPDX-License-Identifier: GPL-3.0-or-later
 set -u

@@ -74,7 +74,7 @@ typedef enum {
 /* Levenberg-Marquardt on the full Jacobian of the residuals (one epoch = one accepted step). */
 typedef struct {
     tirenv_lm_solver solver;
-    double tau;            /* first damping mu = tau * max diag(J^T J) (Nielsen's tau; GSL
+    double tau;            /* first damping mu = tau * max diag(J^T J) (Nielsen's tau; GSL's
                               fixes it at 1e-3) */
     double mu_max;         /* cholesky: give up (converged) when mu / max diag(J^T J)
                               exceeds it */
@@ -196,8 +196,7 @@ tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
  * settings and r alone (its seed is derived from settings->seed and r), so restarts can run
  * in any order. *out is the model, the kept network or the ensemble of the kept ones (free
  * it with tirenv_nn_free); report may be NULL. TIRENV_ENOCONV (and *out NULL) if a kept
- * restart diverged, its error no longer finite (docs/models.md section 6.4). GSL would abort
- * on a singular matrix unless the program has turned its error handler off (error.h).
+ * restart diverged, its error no longer finite (docs/models.md section 6.4).
  * Deterministic: the same arguments give the same weights bit for bit. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,

@@ -1,4 +1,4 @@
-/* The pitch-plane tractor's equations of motion and their integration with GSL's odeiv2
+/* The pitch-plane tractor's equations of motion and their integration (ode.c)
  * (docs/models.md section 9).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
@@ -271,7 +271,7 @@ static int run_with(const tirenv_vehicle *v, const tirenv_ride_track *tf,
     if (status)
         status = status == TIRENV_ENOMEM
                      ? tirenv_error(diag, status, "", 0, "", "out of memory")
-                     : tirenv_error(diag, status, "", 0, "", "GSL cannot interpolate an input");
+                     : tirenv_error(diag, status, "", 0, "", "an input has fewer than 2 grid points");
     else
         status = run(v, &r, s, out, diag);
     tirenv_ride__input_free(&r.front);
