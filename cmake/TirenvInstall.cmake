@@ -11,7 +11,7 @@
 #                                      tirenv::tirenv_static
 #   share/man/man1/tirenv*.1           man pages
 #   share/tirenv/                      data: tires, vehicles, the embedded data set
-#   share/doc/tirenv/                  README.md and docs/
+#   share/doc/tirenv/                  README.md, LICENSE, NOTICE and docs/
 include(CMakePackageConfigHelpers)
 set(TIRENV_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tirenv)
 
@@ -52,5 +52,5 @@ if(TIRENV_BUILD_CLI)
 endif()
 # Every data directory (tires, vehicles, dataset, ...), where the CLI looks for them.
 install(DIRECTORY data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tirenv)
-install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES README.md LICENSE NOTICE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs DESTINATION ${CMAKE_INSTALL_DOCDIR})

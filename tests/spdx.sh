@@ -32,4 +32,7 @@ grep -q 'Apache License' "$src/LICENSE" && grep -q 'Version 2.0, January 2004' "
     bad "LICENSE is not the Apache-2.0 text"
 grep -q 'Argonne National Laboratory' "$src/NOTICE" && ok "NOTICE: Minpack's acknowledgement" ||
     bad "NOTICE lacks Minpack's acknowledgement"
+cmp -s "$src/LICENSE" "$src/python/LICENSE" && cmp -s "$src/NOTICE" "$src/python/NOTICE" &&
+    ok "python/LICENSE and python/NOTICE (the wheel's copies) are the repository's" ||
+    bad "python/LICENSE or python/NOTICE differ from the repository's"
 exit $fail
