@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* The library's own numerical pieces that replaced GSL (issue 28), each against closed forms
+/* The library's own numerical pieces that replaced GSL, each against closed forms
  * or published values: the random generator (xoshiro256** test vector, splitmix64 seeding,
  * the moments of its distributions), Brent's root finder (a table of roots, and the cases that
  * must fail), the FFT (against the direct sum), Cholesky (a factor known exactly), the

@@ -8,7 +8,7 @@
  * the same residuals to GSL's gsl_multifit_nlinear trust region; it took the same 77 epochs
  * to the same errors on the embedded data set in 0.226 s against this one's 0.022 s (it
  * stored the n x p Jacobian and formed J^T J with gslcblas's reference dsyrk), so when GSL
- * left (issue 28) this one stayed, alone, rather than moving to Minpack's lmder, which also
+ * left this one stayed, alone, rather than moving to Minpack's lmder, which also
  * stores the whole Jacobian and factors it by QR (n p^2 flops against J^T J's n p^2/2).
  * - Choices that lost: MATLAB trainlm's update (mu x10 / x0.1) stalled where Nielsen's went
  *   on (tests' function, 100 epochs: training RMS 0.104 against 0.024 mm); GSL's default
