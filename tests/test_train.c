@@ -13,8 +13,11 @@
  * figure is reproduced exactly; the bounds are the measured validation RMS errors (seed 1)
  * times 2 to 3, which absorbs a different libm or compiler nudging the trajectory:
  *   lm        100 epochs    measured 0.033 mm   bound 0.1 mm   (the tightest)
- *   backprop  1000 epochs   measured 0.466 mm   bound 1.0 mm   (learning rate 0.03)
- *   rprop     1000 epochs   measured 0.947 mm   bound 2.0 mm
+ *   backprop  1000 epochs   measured 0.728 mm   bound 1.5 mm   (learning rate 0.03)
+ *   rprop     1000 epochs   measured 0.554 mm   bound 2.0 mm
+ * (measured with tirenv's xoshiro256** initialisation; with GSL's mt19937 until version 0.1
+ * they were 0.033, 0.466 and 0.947 mm, and backprop's bound 1.0 mm, now only 1.4 times its
+ * figure, became 1.5 to keep the factor 2)
  * (H is 25 to 100 mm, so even the loosest bound is a 2 % fit.) Early stopping's kept error is
  * compared with the best one the progress callback saw to 1e-12 relative: the two are the
  * same sum of squares taken in a different order (and units). */
@@ -110,7 +113,7 @@ static void test_learns(void **state)
         double bound;       /* validation RMS, m */
     } cases[] = {
         {"lm", 100, 0, 0.1e-3},
-        {"backprop", 1000, 0.03, 1.0e-3},
+        {"backprop", 1000, 0.03, 1.5e-3},
         {"rprop", 1000, 0, 2.0e-3},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
