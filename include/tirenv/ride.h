@@ -25,7 +25,7 @@ typedef struct {
 
 typedef enum {
     TIRENV_RIDE_RK4,       /* classical Runge-Kutta at the fixed step dt (default) */
-    TIRENV_RIDE_RK8PD      /* Prince-Dormand 8(9), adaptive, to rel/abs tolerance tol */
+    TIRENV_RIDE_RK8PD      /* Prince-Dormand RK8(7)13M, adaptive, to rel/abs tolerance tol */
 } tirenv_ride_method;
 
 typedef struct {
