@@ -22,7 +22,6 @@
 #include <time.h>
 
 #include <doublefann.h>
-#include <gsl/gsl_errno.h>
 
 #include "tirenv/dataset.h"
 #include "tirenv/model.h"
@@ -358,7 +357,7 @@ static void usage(FILE *fp)
           "                       [--repeats N] [--seed S] [--lm-seeds N]\n"
           "\n"
           "Times the network's trainers (backprop for the paper's 2e5 cycles by default, rprop,\n"
-          "lm and lm with GSL's solver, FANN's RPROP) and its inference against FANN's\n"
+          "lm, FANN's RPROP) and its inference against FANN's\n"
           "fann_run on the same 4-8-1 network. Data: DIR, else the embedded data set if it is\n"
           "built (" TIRENV_DATA_DIR "/dataset), else (or with --synthetic) the embedded data\n"
           "set's 28 cases simulated with the springs model. lm with its default settings is\n"
@@ -381,7 +380,6 @@ static long parse_long(const char *opt, const char *s, long min)
 
 int main(int argc, char *argv[])
 {
-    gsl_set_error_handler_off();  /* tirenv reports GSL's failures itself (tirenv/error.h) */
     const char *dir = NULL;
     size_t backprop_epochs = 200000;
     int repeats = 5, synthetic = 0;
@@ -431,7 +429,7 @@ int main(int argc, char *argv[])
            "same seed; errors in mm; times in s):\n");
     printf("  %-22s %8s %8s %9s %9s %8s %8s %8s %8s\n", "trainer", "epochs", "best_ep",
            "wall", "to_best", "rms_trn", "rms_ctl", "rms_val", "max_val");
-    train_row bp, rp, lm, lmg, lm4, lmd, fn;
+    train_row bp, rp, lm, lm4, lmd, fn;
     tirenv_train_settings s = tirenv_train_paper(tirenv_trainer_backprop);
     s.seed = seed;
     s.max_epochs = backprop_epochs;
@@ -446,8 +444,6 @@ int main(int argc, char *argv[])
     s.seed = seed;
     s.restarts = 1;
     tirenv_nn_free(run_trainer(&d, "lm (cholesky)", tirenv_trainer_lm, &s, &lm));
-    s.lm.solver = TIRENV_LM_GSL;
-    tirenv_nn_free(run_trainer(&d, "lm (gsl multifit)", tirenv_trainer_lm, &s, &lmg));
     s = tirenv_train_paper(tirenv_trainer_lm);
     s.seed = seed;
     char lm_label[64], lmd_label[64];
@@ -460,8 +456,6 @@ int main(int argc, char *argv[])
     const tirenv_train_settings rs = tirenv_train_default(tirenv_trainer_rprop);
     fann_train_row(&d, seed, (unsigned)rs.max_epochs, (unsigned)rs.patience, &fn);
 
-    printf("\n  lm solvers: cholesky %.3f s, gsl multifit %.3f s for %zu and %zu epochs\n",
-           lm.wall, lmg.wall, lm.epochs, lmg.epochs);
 
     /* The default lm over several seeds: what a user gets, not one lucky draw. */
     printf("\nlm with its default settings, seeds %lu to %lu (validation RMS mm, wall s):\n",

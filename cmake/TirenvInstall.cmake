@@ -12,7 +12,7 @@
 #   share/man/man1/tirenv*.1           man pages
 #   share/tirenv/                      data: tires, vehicles, the embedded data set
 #   share/tirenv/fmu/                  the FMI 2.0 FMU, tirenv_effective_road.fmu
-#   share/doc/tirenv/                  README.md and docs/
+#   share/doc/tirenv/                  README.md, LICENSE, NOTICE and docs/
 include(CMakePackageConfigHelpers)
 set(TIRENV_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tirenv)
 
@@ -53,5 +53,5 @@ if(TIRENV_BUILD_CLI)
 endif()
 # Every data directory (tires, vehicles, dataset, ...), where the CLI looks for them.
 install(DIRECTORY data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tirenv)
-install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES README.md LICENSE NOTICE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -33,7 +33,8 @@ int fmu__describe(FILE *fp)
                 "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"%s\" guid=\"%s\"\n"
                 "  description=\"The effective road of a tire (quasi-static enveloping) at a "
                 "wheel-centre position and vertical load\"\n"
-                "  generationTool=\"tirenv %s\" version=\"%s\" license=\"GPL-3.0-or-later\"\n"
+                "  generationTool=\"tirenv %s\" version=\"%s\" license=\"Apache-2.0\"\n"
+                "  copyright=\"Copyright 2026 the tirenv authors\"\n"
                 "  variableNamingConvention=\"flat\" numberOfEventIndicators=\"0\">\n",
             FMU_MODEL_IDENTIFIER, fmu__guid(guid, sizeof guid), TIRENV_VERSION,
             TIRENV_VERSION);

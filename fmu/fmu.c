@@ -4,7 +4,6 @@
  * A load that changes moves the model to it (tirenv_model_set_load: the work within the tire's
  * reach, not the road's); the FMU state is in fmu_state.c. SPDX-License-Identifier: GPL-3.0-or-later */
 #include <ctype.h>
-#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -339,9 +338,6 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     f->logging = loggingOn != fmi2False;
     f->mode = FMU_INSTANTIATED;
     f->v = fmu__start_values();
-    /* GSL's default handler aborts the process on an error; the library reports errors by
-     * status instead, and leaves the process-wide choice to the program: here, the FMU. */
-    gsl_set_error_handler_off();
     fmu__log(f, fmi2OK, "logAll", "instantiated, resources in %s", f->resources);
     return f;
 }

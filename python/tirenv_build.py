@@ -41,10 +41,6 @@ const char *tirenv_strerror(int status);
 void tirenv_diag_clear(tirenv_diag *diag);
 char *tirenv_diag_format(const tirenv_diag *diag, char *buf, size_t n);
 
-/* GSL: the program, not the library, chooses GSL's error handler */
-typedef ... gsl_error_handler_t;
-gsl_error_handler_t *gsl_set_error_handler_off(void);
-
 /* tire.h */
 typedef enum { TIRENV_EQ_NEWTON = 0, TIRENV_EQ_SECANT, TIRENV_EQ_BRENT } tirenv_eq_method;
 typedef struct { double R0; double c_r; double c_b; double phi; double dphi; }
@@ -253,7 +249,6 @@ int tirenv_comfort_total_value(const double k[], const double a_w[], size_t n, d
 """
 
 SOURCE = r"""
-#include <gsl/gsl_errno.h>
 #include <tirenv/tirenv.h>
 #include <tirenv/nn.h>
 #include <tirenv/nn_road.h>
@@ -277,7 +272,7 @@ def make_builder(include_dirs, library_dirs, rpath=None):
     if rpath is None:
         rpath = [d for d in library_dirs if os.path.realpath(d) not in SYSTEM_LIBDIRS]
     ffi.set_source("tirenv._native", SOURCE, include_dirs=list(include_dirs),
-                   library_dirs=list(library_dirs), libraries=["tirenv", "gsl", "m"],
+                   library_dirs=list(library_dirs), libraries=["tirenv", "m"],
                    extra_compile_args=STRICT,
                    extra_link_args=(["-Wl,--enable-new-dtags"] if rpath else []) +
                    ["-Wl,-rpath," + d for d in rpath])

@@ -5,7 +5,7 @@ set -eu
 # groff-base and man-db: the tests format and look up the generated man pages. clang and its
 # runtime libraries (libFuzzer, sanitizers: only recommended by clang's packages, so named
 # here) build the fuzz harnesses of tests/fuzz.
-need="cmake make gcc pkg-config libgsl-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
+need="cmake make gcc pkg-config libcminpack-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
 need="$need clang libclang-rt-14-dev"
 # The Python module (python/) and its tests; the FMU's packaging and checks (fmu/).
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"

@@ -33,7 +33,7 @@ run "$bin" train --data "$set_data" --input odd -o x.json
 check "train --input odd: exit 1, no file" '[ $rc -eq 1 ] && grep -q "paper or even" err && no_file x.json'
 run "$bin" train --data "$set_data" --ensemble 0 -o x.json
 check "train --ensemble 0: exit 1, no file" '[ $rc -eq 1 ] && no_file x.json'
-run "$bin" train --data "$set_data" --loss curves --lm-solver gsl -o x.json
-check "train --loss curves with GSL's solver: refused naming the loss, no file" \
-    '[ $rc -ne 0 ] && grep -q "loss" err && no_file x.json'
+run "$bin" train --data "$set_data" --lm-solver gsl -o x.json
+check "train --lm-solver gsl (version 0.1's, gone with GSL): exit 1 naming cholesky, no file" \
+    '[ $rc -eq 1 ] && grep -q "expected cholesky" err && no_file x.json'
 clilib_done

@@ -1,6 +1,6 @@
 #!/bin/sh
 # tirenv embedded in another project with add_subdirectory (tests/embed/CMakeLists.txt) is
-# configured where pkg-config can see GSL and jansson but not cmocka: it must configure.
+# configured where pkg-config can see jansson and cminpack but not cmocka: it must configure.
 #   sh tests/embed.sh CMAKE SOURCE_DIR
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -u
@@ -8,7 +8,7 @@ cmake=$1 src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir "$tmp/pc"
-for pkg in gsl jansson; do
+for pkg in jansson cminpack; do
     ln -s "$(pkg-config --variable=pcfiledir "$pkg")/$pkg.pc" "$tmp/pc/$pkg.pc"
 done
 if ! PKG_CONFIG_LIBDIR=$tmp/pc pkg-config --exists cmocka && PKG_CONFIG_LIBDIR=$tmp/pc \

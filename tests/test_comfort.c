@@ -6,8 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_randist.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 
 #include "tirenv/comfort.h"
 
@@ -407,11 +406,11 @@ static void test_metrics_evaluate(void **state)
     enum { N = 4000 };
     const double fs = 800.0;
     static double a[N], a_w[N], b[N];
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 11);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 11);
     for (size_t j = 0; j < N; j++)
-        a[j] = gsl_ran_gaussian(rng, 0.8);
-    gsl_rng_free(rng);
+        a[j] = tirenv_rng_gaussian(rng, 0.8);
+    tirenv_rng_free(rng);
     tirenv_comfort_metrics m, ref;
     tirenv_diag diag;
     assert_int_equal(tirenv_comfort_evaluate(TIRENV_WD, fs, a, a_w, N, &m, &diag), TIRENV_OK);
@@ -517,11 +516,11 @@ static void test_welch_white_noise(void **state)
     enum { NS = 256, N = 1 << 18 };
     const double s = 0.37, fs = 200.0;
     static double x[N], P[NS / 2 + 1];
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 1);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 1);
     for (size_t j = 0; j < N; j++)
-        x[j] = gsl_ran_gaussian(rng, s);
-    gsl_rng_free(rng);
+        x[j] = tirenv_rng_gaussian(rng, s);
+    tirenv_rng_free(rng);
     tirenv_welch *w = welch(NS);
     size_t K = 0;
     tirenv_diag diag;

@@ -3,8 +3,7 @@
  * a jump in F_z, a plateau, no bracket) and cases that must fail with the right status and
  * stop reason, looped over every method. Each solve also checks that the reported point is one
  * of the force function's own evaluations, bit for bit, and that the budget of evaluations
- * holds. GSL's error handler is left as it is (it aborts): the solvers must never make GSL
- * signal, whatever the force function does. SPDX-License-Identifier: GPL-3.0-or-later */
+ * holds, whatever the force function does. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
 
 #include <math.h>
@@ -146,7 +145,7 @@ static const eq_case cases[] = {
      {{TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}, {TIRENV_ENOCONV, TIRENV_EQ_BREAKDOWN},
       {TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}}},
     /* The root is at 0.67633 m: every method has to look in [0.6745, 0.678) m, Brent only
-     * after GSL has taken steps of its own. */
+     * after it has taken steps of its own. */
     {"the force function fails near the root",
      {SMOOTH, 0.6817, 0, 3.137e7, 0, 0, 0.678, NEVER}, 12345.6,
      {0.0, 0.6817, 0.68, 0.03}, NAN, 0,

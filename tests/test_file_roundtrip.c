@@ -4,7 +4,7 @@
  * refused on the next read. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
 
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,10 +48,10 @@ static void test_network_without_record(void **state)
     const tirenv_test_dir *d = *state;
     const tirenv_nn_topology t = tirenv_nn_topology_default();
     tirenv_nn *nn = tirenv_nn_alloc(&t);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 2385);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 2385);
     tirenv_nn_init_weights(nn, rng);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     const double mean[4] = {0.5, 0.35, 0.06, 0.17}, std[4] = {0.36, 0.05, 0.027, 0.08};
     const double lo[4] = {-0.25, 0.28, 0.025, 0.05}, hi[4] = {1, 0.43, 0.1, 0.3};
     tirenv_diag diag;

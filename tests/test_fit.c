@@ -2,8 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <gsl/gsl_randist.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 #include "tirenv/study.h"
@@ -19,8 +18,8 @@ static void make_dataset_of(const tirenv_model_type *type, tirenv_dataset *ds,
     static const double design[N_CASES][3] = {{0.28, 0.10, 0.05}, {0.33, 0.30, 0.075},
                                               {0.38, 0.15, 0.10}, {0.43, 0.05, 0.025},
                                               {0.33, 0.20, 0.05}, {0.38, 0.30, 0.025}};
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, seed);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, seed);
     tirenv_model *m = tirenv_model_alloc(type, truth);
     memset(ds, 0, sizeof *ds);
     ds->n = N_CASES;
@@ -44,10 +43,10 @@ static void make_dataset_of(const tirenv_model_type *type, tirenv_dataset *ds,
         }
         assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
         for (size_t j = 0; j < N_POINTS; ++j)
-            c->curve.h[j] += gsl_ran_gaussian(rng, sigma);
+            c->curve.h[j] += tirenv_rng_gaussian(rng, sigma);
     }
     tirenv_model_free(m);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 static void make_dataset(tirenv_dataset *ds, tirenv_case cases[], const tirenv_tire *truth,

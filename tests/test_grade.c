@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"
@@ -48,25 +48,25 @@ static double brute_level(const tirenv_profile *p, double width, double x, size_
 static void test_level_brute_force(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 2718);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 2718);
     enum { N = 60, M = 4000 };
     for (int trial = 0; trial < 40; ++trial) {
         double x[N], z[N], slope_max = 0;
         x[0] = 0;
-        z[0] = 0.1 * gsl_rng_uniform(rng);
+        z[0] = 0.1 * tirenv_rng_uniform(rng);
         for (size_t k = 1; k < N; ++k) {
-            const int wall = gsl_rng_uniform(rng) < 0.15 && x[k - 1] != (k >= 2 ? x[k - 2] : -1);
-            x[k] = x[k - 1] + (wall ? 0 : 0.005 + 0.12 * gsl_rng_uniform(rng));
-            z[k] = z[k - 1] + 0.08 * (gsl_rng_uniform(rng) - 0.5);
+            const int wall = tirenv_rng_uniform(rng) < 0.15 && x[k - 1] != (k >= 2 ? x[k - 2] : -1);
+            x[k] = x[k - 1] + (wall ? 0 : 0.005 + 0.12 * tirenv_rng_uniform(rng));
+            z[k] = z[k - 1] + 0.08 * (tirenv_rng_uniform(rng) - 0.5);
             if (!wall)
                 slope_max = fmax(slope_max, fabs(z[k] - z[k - 1]) / (x[k] - x[k - 1]));
         }
         tirenv_profile *p = tirenv_profile_alloc(N, x, z);
         assert_non_null(p);
-        const double width = 0.1 + 0.9 * gsl_rng_uniform(rng);
+        const double width = 0.1 + 0.9 * tirenv_rng_uniform(rng);
         for (int q = 0; q < 15; ++q) {
-            const double xq = -0.5 + (x[N - 1] + 1.0) * gsl_rng_uniform(rng);
+            const double xq = -0.5 + (x[N - 1] + 1.0) * tirenv_rng_uniform(rng);
             const double exact = tirenv_profile_level(p, width, xq);
             const double brute = brute_level(p, width, xq, M);
             const double step = width / M;
@@ -76,7 +76,7 @@ static void test_level_brute_force(void **state)
         }
         tirenv_profile_free(p);
     }
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* The shapes the level is for: a grade is its own level; a cleat shorter than the segment

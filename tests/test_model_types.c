@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
 
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"
@@ -267,7 +266,6 @@ static void test_network_model(void **state)
 
 int main(void)
 {
-    gsl_set_error_handler_off();  /* as every program using tirenv does (tirenv/error.h) */
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_records),
         cmocka_unit_test(test_plot_styles),

@@ -8,8 +8,7 @@
 #include "tirenv/rig.h"
 #include "data/rig_impl.h"
 
-#include <gsl/gsl_randist.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -159,14 +158,14 @@ static void log_push(rig_log *g, double t, double x, double z, int repeat)
 }
 
 /* The samples in a random order, as a logger that buffers per channel might hand them over. */
-static void log_shuffle(rig_log *g, gsl_rng *r)
+static void log_shuffle(rig_log *g, tirenv_rng *r)
 {
     size_t *perm = malloc(g->n * sizeof *perm);
     rig_log copy = {g->n, malloc(g->n * sizeof(double)), malloc(g->n * sizeof(double)),
                     malloc(g->n * sizeof(double)), malloc(g->n), g->repeated};
     for (size_t i = 0; i < g->n; i++)
         perm[i] = i;
-    gsl_ran_shuffle(r, perm, g->n, sizeof *perm);
+    tirenv_rng_shuffle(r, perm, g->n);
     for (size_t i = 0; i < g->n; i++) {
         copy.t[i] = g->t[perm[i]];
         copy.x[i] = g->x[perm[i]];
@@ -180,8 +179,8 @@ static void log_shuffle(rig_log *g, gsl_rng *r)
 
 static rig_log log_make(const rig_case *c, unsigned long seed)
 {
-    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(r, seed);
+    tirenv_rng *r = tirenv_rng_alloc(0);
+    tirenv_rng_seed(r, seed);
     const size_t steps = (size_t)(2 * RUN / SPEED * c->rate);
     rig_log g = {0, NULL, NULL, NULL, NULL, 0};
     const size_t cap = 2 * (steps + 1);
@@ -194,19 +193,19 @@ static rig_log log_make(const rig_case *c, unsigned long seed)
         const double s = -RUN + SPEED * (double)i / c->rate; /* travelled, obstacle frame */
         const double x = c->reversed ? X_OFFSET - s : X_OFFSET + s;
         const double z = Z_OFFSET + truth.z_flat + truth_at(truth.h, truth.n, s)
-                         + (c->sigma > 0 ? gsl_ran_gaussian(r, c->sigma) : 0.0);
+                         + (c->sigma > 0 ? tirenv_rng_gaussian(r, c->sigma) : 0.0);
         const int in_gap = c->drop > 0 && s >= GAP_FROM && s < GAP_TO;
-        if (in_gap || gsl_rng_uniform(r) < c->drop)
+        if (in_gap || tirenv_rng_uniform(r) < c->drop)
             continue;
         log_push(&g, t, x, z, 0);
-        if (gsl_rng_uniform(r) < c->repeat) {
+        if (tirenv_rng_uniform(r) < c->repeat) {
             log_push(&g, t, x, z, 1);
             g.repeated++;
         }
     }
     if (c->shuffle)
         log_shuffle(&g, r);
-    gsl_rng_free(r);
+    tirenv_rng_free(r);
     return g;
 }
 

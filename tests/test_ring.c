@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
@@ -278,24 +278,24 @@ static void test_contact_law(void **state)
     tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
     tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
     assert_int_equal(tirenv_ring_size(r), 720);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 11);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 11);
     tirenv_diag diag;
     size_t checked = 0, with_belt = 0, at_limit = 0;
     for (int k = 0; k < 24; ++k) {
         tirenv_profile *p;
         const int kind = k % 3;
         if (kind == 0)
-            p = tirenv_profile_cleat(0.02 + 0.3 * gsl_rng_uniform(rng),
-                                     0.01 + 0.14 * gsl_rng_uniform(rng));
+            p = tirenv_profile_cleat(0.02 + 0.3 * tirenv_rng_uniform(rng),
+                                     0.01 + 0.14 * tirenv_rng_uniform(rng));
         else if (kind == 1)
-            p = tirenv_profile_cleat(0.005, 0.05 + 0.25 * gsl_rng_uniform(rng));
+            p = tirenv_profile_cleat(0.005, 0.05 + 0.25 * tirenv_rng_uniform(rng));
         else
-            p = tirenv_profile_step(0, (gsl_rng_uniform(rng) < 0.5 ? -1 : 1) *
-                                           (0.02 + 0.1 * gsl_rng_uniform(rng)));
-        const double G = 6000 + 20000 * gsl_rng_uniform(rng);
+            p = tirenv_profile_step(0, (tirenv_rng_uniform(rng) < 0.5 ? -1 : 1) *
+                                           (0.02 + 0.1 * tirenv_rng_uniform(rng)));
+        const double G = 6000 + 20000 * tirenv_rng_uniform(rng);
         assert_int_equal(tirenv_model_set(m, p, G, &diag), TIRENV_OK);
-        for (double x = -0.5 + 0.1 * gsl_rng_uniform(rng); x < 0.5; x += 0.0537) {
+        for (double x = -0.5 + 0.1 * tirenv_rng_uniform(rng); x < 0.5; x += 0.0537) {
             tirenv_point pt;
             const int st = tirenv_model_eval(m, x, &pt, &diag);
             if (st) {
@@ -330,7 +330,7 @@ static void test_contact_law(void **state)
     assert_true(with_belt > checked / 5);
     assert_true(at_limit > 0);
     tirenv_profile_free(p);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     tirenv_ring_free(r);
     tirenv_model_free(m);
 }

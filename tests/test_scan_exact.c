@@ -11,7 +11,7 @@
  * any order of positions and across changes of profile. */
 #include "testutil.h"
 
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -69,7 +69,7 @@ static double plain_rigid(size_t n, const double xs[], const double zs[], double
 /* A random polyline of n vertices: spacing 0 (a wall, never three at one x), 1 mm or up to
  * 30 mm, and with steep set now and then 1e-7 m (a near-vertical segment); heights a random
  * walk with occasional jumps and flat runs, so that ties and walls both occur. */
-static tirenv_profile *random_polyline_steep(gsl_rng *rng, size_t n, int steep, double *x_end)
+static tirenv_profile *random_polyline_steep(tirenv_rng *rng, size_t n, int steep, double *x_end)
 {
     double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
     assert_non_null(x);
@@ -77,12 +77,12 @@ static tirenv_profile *random_polyline_steep(gsl_rng *rng, size_t n, int steep, 
     x[0] = -1.379;
     z[0] = 0.0;
     for (size_t k = 1; k < n; k++) {
-        const double r = gsl_rng_uniform(rng);
+        const double r = tirenv_rng_uniform(rng);
         const int wall_ok = k < 2 || x[k - 1] != x[k - 2];
         x[k] = x[k - 1] + (r < 0.05 && wall_ok ? 0.0
                            : steep && r < 0.08 ? 1e-7
                            : r < 0.3 ? 0.001 : 0.03 * r);
-        const double s = gsl_rng_uniform(rng);
+        const double s = tirenv_rng_uniform(rng);
         z[k] = s < 0.2 ? z[k - 1] : z[k - 1] + (s < 0.25 ? 0.2 : 0.01) * (s - 0.6);
     }
     tirenv_profile *p = tirenv_profile_alloc(n, x, z);
@@ -93,7 +93,7 @@ static tirenv_profile *random_polyline_steep(gsl_rng *rng, size_t n, int steep, 
     return p;
 }
 
-static tirenv_profile *random_polyline(gsl_rng *rng, size_t n, double *x_end)
+static tirenv_profile *random_polyline(tirenv_rng *rng, size_t n, double *x_end)
 {
     return random_polyline_steep(rng, n, 0, x_end);
 }
@@ -101,7 +101,7 @@ static tirenv_profile *random_polyline(gsl_rng *rng, size_t n, double *x_end)
 /* A smoother random polyline: spacing uniform in (0.1, 1) dx_max, the slope a random walk
  * (steps up to slope_step, now and then a kink), so that convex and concave stretches put
  * the cam's tangency on segments some way from x, not only next to it. */
-static tirenv_profile *random_smooth(gsl_rng *rng, size_t n, double dx_max, double slope_step)
+static tirenv_profile *random_smooth(tirenv_rng *rng, size_t n, double dx_max, double slope_step)
 {
     double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
     assert_non_null(x);
@@ -110,9 +110,9 @@ static tirenv_profile *random_smooth(gsl_rng *rng, size_t n, double dx_max, doub
     x[0] = -0.9173;
     z[0] = 0.0;
     for (size_t k = 1; k < n; k++) {
-        const double r = gsl_rng_uniform(rng);
-        x[k] = x[k - 1] + dx_max * (0.1 + 0.9 * gsl_rng_uniform(rng));
-        slope += slope_step * (2.0 * gsl_rng_uniform(rng) - 1.0) * (r < 0.03 ? 20.0 : 1.0);
+        const double r = tirenv_rng_uniform(rng);
+        x[k] = x[k - 1] + dx_max * (0.1 + 0.9 * tirenv_rng_uniform(rng));
+        slope += slope_step * (2.0 * tirenv_rng_uniform(rng) - 1.0) * (r < 0.03 ? 20.0 : 1.0);
         slope = fmax(-1.5, fmin(1.5, slope));
         z[k] = z[k - 1] + slope * (x[k] - x[k - 1]);
     }
@@ -126,8 +126,8 @@ static tirenv_profile *random_smooth(gsl_rng *rng, size_t n, double dx_max, doub
 static void test_rigid_equals_plain(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 2385);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 2385);
     static const double radii[] = {0.6837, 0.0213, 2.385};
     for (size_t trial = 0; trial < 6; trial++) {
         double x_end;
@@ -138,9 +138,9 @@ static void test_rigid_equals_plain(void **state)
         size_t hint = n / 2;
         for (size_t i = 0; i < 4000; i++) {
             /* Uniform over the profile and beyond both ends, and exactly at vertices. */
-            const double x = i % 4 == 0 ? xs[gsl_rng_uniform_int(rng, n)]
+            const double x = i % 4 == 0 ? xs[tirenv_rng_uniform_int(rng, n)]
                                         : xs[0] - 3.0 + (x_end - xs[0] + 6.0) *
-                                                            gsl_rng_uniform(rng);
+                                                            tirenv_rng_uniform(rng);
             double px, pz, px_ref, pz_ref;
             const double z = tirenv_rigid_height(p, R0, x, &px, &pz);
             const double z_ref = plain_rigid(n, xs, zs, R0, x, &px_ref, &pz_ref);
@@ -157,7 +157,7 @@ static void test_rigid_equals_plain(void **state)
         }
         tirenv_profile_free(p);
     }
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* The cam's touching height over a vertex at t = |u|/a_e, and over a sloped segment's
@@ -259,8 +259,8 @@ static double plain_cam(size_t n, const double xs[], const double zs[],
 static void test_cam_equals_plain(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 4357);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 4357);
     static const tirenv_cam_shape shapes[] = {
         {.a_e = 1.0245, .b_e = 0.6686, .c_e = 1.5257}, /* the default tire's */
         {.a_e = 0.0213, .b_e = 0.0417, .c_e = 1.13},
@@ -273,9 +273,9 @@ static void test_cam_equals_plain(void **state)
         const double *xs = tirenv_profile_x(p), *zs = tirenv_profile_z(p);
         const tirenv_cam_shape *cam = &shapes[trial % 3];
         for (size_t i = 0; i < 2000; i++) {
-            const double x = i % 4 == 0 ? xs[gsl_rng_uniform_int(rng, n)]
+            const double x = i % 4 == 0 ? xs[tirenv_rng_uniform_int(rng, n)]
                                         : xs[0] - 3.0 + (x_end - xs[0] + 6.0) *
-                                                            gsl_rng_uniform(rng);
+                                                            tirenv_rng_uniform(rng);
             double px, pz, px_ref, pz_ref;
             const double z = tirenv_cam_lift(p, cam, x, &px, &pz);
             const double z_ref = plain_cam(n, xs, zs, cam, x, &px_ref, &pz_ref);
@@ -286,7 +286,7 @@ static void test_cam_equals_plain(void **state)
         }
         tirenv_profile_free(p);
     }
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* The shapes of the cam tests: the default tire's, small and pointed ones, squarer ones. */
@@ -305,8 +305,8 @@ static const tirenv_cam_shape cam_shapes[] = {
 static void test_cam_floor_below_drop(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 2713);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 2713);
     tirenv_cam__sweep *sw = malloc(sizeof *sw);
     assert_non_null(sw);
     static const tirenv_cam_shape extra[] = {{0.7, 0.3, 1.0001}, {0.7, 0.3, 63.9}};
@@ -330,7 +330,7 @@ static void test_cam_floor_below_drop(void **state)
                 if (j % 2)
                     t = nextafter(t, 0.0);
             } else
-                t = gsl_rng_uniform(rng);
+                t = tirenv_rng_uniform(rng);
             if (!(t <= 1.0))
                 continue;
             const double floor = tirenv_cam__floor_at(&sw->floor, t);
@@ -356,7 +356,7 @@ static void test_cam_floor_below_drop(void **state)
         }
     }
     free(sw);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* One lift through the sweep path against the plain scan, bit for bit. */
@@ -408,8 +408,8 @@ static void check_profile_extremes(const tirenv_profile *p)
 static void test_cam_sweep_equals_plain(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 8317);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 8317);
     tirenv_cam__sweep *sw = malloc(sizeof *sw);
     assert_non_null(sw);
     tirenv_road_settings rs = tirenv_road_default();
@@ -460,8 +460,8 @@ static void test_cam_sweep_equals_plain(void **state)
                 check_sweep_lift(&g, shape, p, z_cap, sw, &front, x_lo + dx * (double)k,
                                  "backward");
             for (size_t k = 0; k < 600; k++) { /* random, and at vertices */
-                const double x = k % 3 == 0 ? xs[gsl_rng_uniform_int(rng, n)]
-                                            : x_lo + (x_hi - x_lo) * gsl_rng_uniform(rng);
+                const double x = k % 3 == 0 ? xs[tirenv_rng_uniform_int(rng, n)]
+                                            : x_lo + (x_hi - x_lo) * tirenv_rng_uniform(rng);
                 check_sweep_lift(&g, shape, p, z_cap, sw, &front, x, "random");
             }
             rear.k_x = (size_t)-1; /* garbage */
@@ -471,7 +471,7 @@ static void test_cam_sweep_equals_plain(void **state)
     for (size_t i = 0; i < N_PROFILES; i++)
         tirenv_profile_free(profiles[i]);
     free(sw);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 int main(void)

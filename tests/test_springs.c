@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
@@ -65,17 +65,17 @@ static void test_flat_closed_form(void **state)
 static void test_lcp_conditions(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 20261123);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261123);
     enum { N_MAX = 400 };
     static double d[N_MAX], w[N_MAX], p[N_MAX], work[4 * N_MAX];
     for (int trial = 0; trial < 300; ++trial) {
-        const size_t n = 1 + gsl_rng_uniform_int(rng, N_MAX);
-        const double k_r = pow(10, 2 + 6 * gsl_rng_uniform(rng));
-        const double k_ir = trial % 7 == 0 ? 0 : k_r * pow(10, -3 + 7 * gsl_rng_uniform(rng));
+        const size_t n = 1 + tirenv_rng_uniform_int(rng, N_MAX);
+        const double k_r = pow(10, 2 + 6 * tirenv_rng_uniform(rng));
+        const double k_ir = trial % 7 == 0 ? 0 : k_r * pow(10, -3 + 7 * tirenv_rng_uniform(rng));
         double scale = 0;
         for (size_t i = 0; i < n; ++i) {
-            d[i] = gsl_rng_uniform(rng) < 0.4 ? 0 : 0.05 * gsl_rng_uniform(rng);
+            d[i] = tirenv_rng_uniform(rng) < 0.4 ? 0 : 0.05 * tirenv_rng_uniform(rng);
             scale = fmax(scale, d[i]);
         }
         size_t passes;
@@ -94,7 +94,7 @@ static void test_lcp_conditions(void **state)
             assert_true(fabs(p[i] * (w[i] - d[i])) <= f_tol * w_tol);
         }
     }
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* Curves agree with an independent implementation of docs/models.md section 4
@@ -296,7 +296,7 @@ static void test_rigid_limit(void **state)
     tirenv_profile_free(p);
 }
 
-/* The paper's secant, the default Newton and GSL's Brent find the same equilibrium, and the
+/* The paper's secant, the default Newton and Brent find the same equilibrium, and the
  * default needs fewer force evaluations than the secant. */
 static void test_methods_agree(void **state)
 {

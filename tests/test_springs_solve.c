@@ -12,7 +12,7 @@
  * ~4500 eps, for up to 721 elements). */
 #include "testutil.h"
 
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,21 +75,21 @@ static void chain_set_free(chain_set *cs)
 static void test_pinned_matches_thomas(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 20261202);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261202);
     enum { N_MAX = 721 };
     static double d[N_MAX], w_ref[N_MAX], p_ref[N_MAX], work[2 * N_MAX], p[N_MAX], w_full[N_MAX];
     static unsigned char act_ref[N_MAX], act[N_MAX];
     static size_t gap[2 * N_MAX];
     size_t trials = 0, nontrivial = 0;
     for (int trial = 0; trial < 400; ++trial) {
-        const size_t N = 3 + gsl_rng_uniform_int(rng, N_MAX - 2);
-        const double k_r = pow(10, 2 + 5 * gsl_rng_uniform(rng));
-        const double k_ir = trial % 9 == 0 ? 0 : k_r * pow(10, -4 + 8 * gsl_rng_uniform(rng));
+        const size_t N = 3 + tirenv_rng_uniform_int(rng, N_MAX - 2);
+        const double k_r = pow(10, 2 + 5 * tirenv_rng_uniform(rng));
+        const double k_ir = trial % 9 == 0 ? 0 : k_r * pow(10, -4 + 8 * tirenv_rng_uniform(rng));
         chain_set cs;
         chain_set_init(&cs, N, k_r, k_ir);
         double *w = cs.w_buf + 1;
-        size_t f0 = gsl_rng_uniform_int(rng, N), f1 = gsl_rng_uniform_int(rng, N);
+        size_t f0 = tirenv_rng_uniform_int(rng, N), f1 = tirenv_rng_uniform_int(rng, N);
         if (f0 > f1) {
             const size_t t = f0;
             f0 = f1;
@@ -101,8 +101,8 @@ static void test_pinned_matches_thomas(void **state)
         memset(d, 0, N * sizeof *d);
         for (size_t i = f0; i <= f1; ++i) {
             const double u = ((double)i - c) / hw;
-            d[i] = fmax(0, 0.03 * (1 - u * u) + 0.01 * (gsl_rng_uniform(rng) - 0.3));
-            if (gsl_rng_uniform(rng) < 0.1)
+            d[i] = fmax(0, 0.03 * (1 - u * u) + 0.01 * (tirenv_rng_uniform(rng) - 0.3));
+            if (tirenv_rng_uniform(rng) < 0.1)
                 d[i] = 0;
             d_max = fmax(d_max, d[i]);
         }
@@ -115,7 +115,7 @@ static void test_pinned_matches_thomas(void **state)
                          TIRENV_OK);
         /* A random warm start, as a sweep leaves it. */
         for (size_t i = f0; i <= f1; ++i)
-            act[i] = gsl_rng_uniform(rng) < 0.5;
+            act[i] = tirenv_rng_uniform(rng) < 0.5;
         tirenv_springs__pins P = {.gap = gap};
         assert_int_equal(tirenv_springs__lcp_pinned(&cs.c, f0, f1, d, w, p, act, &P, 1000,
                                                     &passes),
@@ -155,23 +155,23 @@ static void test_pinned_matches_thomas(void **state)
         chain_set_free(&cs);
     }
     assert_true(nontrivial > 100); /* the guard: chains between pins really ran */
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* ---- Rays ---- */
 
 /* A random ground: a polyline with walls (two vertices at one x), spikes and flat runs. */
-static tirenv_profile *random_ground(gsl_rng *rng, size_t n)
+static tirenv_profile *random_ground(tirenv_rng *rng, size_t n)
 {
     double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
     double X = -1.5;
     for (size_t k = 0; k < n; ++k) {
-        const double r = gsl_rng_uniform(rng);
+        const double r = tirenv_rng_uniform(rng);
         if (k > 0 && r < 0.15 && !(k >= 2 && x[k - 2] == X))
             x[k] = X; /* a wall */
         else
-            x[k] = X += 0.002 + 0.05 * gsl_rng_uniform(rng) * gsl_rng_uniform(rng);
-        z[k] = r < 0.5 ? 0.08 * gsl_rng_uniform(rng) : k > 0 ? z[k - 1] : 0;
+            x[k] = X += 0.002 + 0.05 * tirenv_rng_uniform(rng) * tirenv_rng_uniform(rng);
+        z[k] = r < 0.5 ? 0.08 * tirenv_rng_uniform(rng) : k > 0 ? z[k - 1] : 0;
     }
     tirenv_profile *p = tirenv_profile_alloc(n, x, z);
     free(x);
@@ -184,8 +184,8 @@ static tirenv_profile *random_ground(gsl_rng *rng, size_t n)
 static void test_fan_matches_single_rays(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 7);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 7);
     const double R0 = 0.6837;
     enum { N = 361 };
     static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N];
@@ -214,16 +214,16 @@ static void test_fan_matches_single_rays(void **state)
         double x_lo, x_hi;
         tirenv_profile_extent(p, &x_lo, &x_hi);
         for (int trial = 0; trial < 300; ++trial) {
-            double x = x_lo - 0.5 + (x_hi - x_lo + 1) * gsl_rng_uniform(rng);
+            double x = x_lo - 0.5 + (x_hi - x_lo + 1) * tirenv_rng_uniform(rng);
             if (trial % 5 == 0) /* on a vertex, a wall's x included */
-                x = tirenv_profile_x(p)[gsl_rng_uniform_int(rng, tirenv_profile_size(p))];
+                x = tirenv_profile_x(p)[tirenv_rng_uniform_int(rng, tirenv_profile_size(p))];
             const double g = tirenv_profile_height(p, x);
-            const double z = g + 0.02 + 0.8 * gsl_rng_uniform(rng);
+            const double z = g + 0.02 + 0.8 * tirenv_rng_uniform(rng);
             tirenv_springs__fan_origin o;
             tirenv_springs__fan_origin_at(p, x, R0, 0, &o);
             assert_bits_equal(o.g, g);
-            const size_t a = gsl_rng_uniform_int(rng, i0 + 1);
-            const size_t b = i0 + gsl_rng_uniform_int(rng, N - i0);
+            const size_t a = tirenv_rng_uniform_int(rng, i0 + 1);
+            const size_t b = i0 + tirenv_rng_uniform_int(rng, N - i0);
             tirenv_springs__fan(p, &o, &rays, z, a, b, rho, memo);
             for (size_t i = a; i <= b; ++i) {
                 double drho;
@@ -236,7 +236,7 @@ static void test_fan_matches_single_rays(void **state)
                 ++rays_checked;
             }
             /* Another height: small steps as Newton takes them, and large ones. */
-            const double dz = (gsl_rng_uniform(rng) - 0.5) *
+            const double dz = (tirenv_rng_uniform(rng) - 0.5) *
                               (trial % 3 == 0 ? 0.2 : trial % 3 == 1 ? 1e-3 : 1e-8);
             const double z2 = z + dz;
             if (tirenv_springs__fan_reuse(p, &o, &rays, z2, a, b, rho, memo)) {
@@ -260,7 +260,7 @@ static void test_fan_matches_single_rays(void **state)
     assert_true(hits > 10000 && reused > 200 && declined > 50);
     for (size_t gi = 0; gi < 4; ++gi)
         tirenv_profile_free(grounds[gi]);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* ---- The workspace's kept state ---- */
@@ -274,8 +274,8 @@ static void test_fan_matches_single_rays(void **state)
 static void test_kept_state_is_invisible(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 11);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 11);
     const tirenv_tire t = tirenv_tire_default();
     tirenv_springs *kept = tirenv_springs_alloc(&t.springs);
     assert_non_null(kept);
@@ -290,8 +290,8 @@ static void test_kept_state_is_invisible(void **state)
         last = p;
         const double x = round % 2 ? 0.0 : -0.13; /* the same x again and again */
         for (int k = 0; k < 8; ++k) {
-            const double z = k % 2 ? z_last + 1e-9 * gsl_rng_uniform(rng)
-                                   : 0.6 + 0.12 * gsl_rng_uniform(rng);
+            const double z = k % 2 ? z_last + 1e-9 * tirenv_rng_uniform(rng)
+                                   : 0.6 + 0.12 * tirenv_rng_uniform(rng);
             z_last = z;
             double fx1, fz1, df1, fx2, fz2, df2;
             size_t c1, c2;
@@ -311,7 +311,7 @@ static void test_kept_state_is_invisible(void **state)
     print_message("%zu evaluations; a new profile at the freed one's address %zu times\n",
                   checked, same_address);
     tirenv_springs_free(kept);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 /* ---- Ground narrower than the rays ---- */
@@ -365,8 +365,8 @@ static void test_needle_refused(void **state)
 static void test_pairs_miss_nothing(void **state)
 {
     (void)state;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 5);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 5);
     const double R0 = 0.6837;
     enum { N = 361 };
     static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], tread[N];
@@ -390,11 +390,11 @@ static void test_pairs_miss_nothing(void **state)
         double X = -1.0;
         size_t n = 0;
         while (n + 4 < V && X < 1.0) {
-            X += 0.005 + 0.05 * gsl_rng_uniform(rng);
-            const double w = 0.0005 + 0.0095 * gsl_rng_uniform(rng);
-            const double h = 0.04 * gsl_rng_uniform(rng);
+            X += 0.005 + 0.05 * tirenv_rng_uniform(rng);
+            const double w = 0.0005 + 0.0095 * tirenv_rng_uniform(rng);
+            const double h = 0.04 * tirenv_rng_uniform(rng);
             x[n] = X, z[n++] = 0;
-            if (gsl_rng_uniform(rng) < 0.5) {
+            if (tirenv_rng_uniform(rng) < 0.5) {
                 x[n] = X, z[n++] = h; /* a wall up */
                 x[n] = X + w, z[n++] = h;
             } else {
@@ -406,15 +406,15 @@ static void test_pairs_miss_nothing(void **state)
         tirenv_profile *p = tirenv_profile_alloc(n, x, z);
         assert_non_null(p);
         for (int k = 0; k < 50; ++k, ++trials) {
-            const double xc = -0.6 + 1.2 * gsl_rng_uniform(rng);
-            const double zc = 0.62 + 0.08 * gsl_rng_uniform(rng);
+            const double xc = -0.6 + 1.2 * tirenv_rng_uniform(rng);
+            const double zc = 0.62 + 0.08 * tirenv_rng_uniform(rng);
             tirenv_springs__fan_origin o;
             tirenv_springs__fan_origin_at(p, xc, R0, 0, &o);
             const size_t a = i0 - 100, b = i0 + 100;
             tirenv_springs__fan(p, &o, &rays, zc, a, b, rho, memo);
             for (size_t i = a; i <= b; ++i) /* the tread at or inside the ground, anywhere */
                 tread[i] = fmin(R0, isfinite(rho[i]) ? rho[i] : R0) -
-                           0.01 * gsl_rng_uniform(rng);
+                           0.01 * tirenv_rng_uniform(rng);
             tirenv_springs__feature f_all, f_pairs;
             const int all = tirenv_springs__unseen_feature(p, &rays, xc, zc, a, b, rho, tread,
                                                            1e-6, &f_all);
@@ -433,7 +433,7 @@ static void test_pairs_miss_nothing(void **state)
     }
     print_message("%zu of %zu states with a feature between the rays\n", found, trials);
     assert_true(found > 100 && found < trials);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
 }
 
 int main(void)

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"
@@ -212,10 +212,10 @@ static void test_predict_nn_uses_case_xN(void **state)
     tirenv_nn_topology t = tirenv_nn_topology_default();
     tirenv_nn *nn = tirenv_nn_alloc(&t);
     assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 7211);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 7211);
     tirenv_nn_init_weights(nn, rng);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     const double mean[4] = {0.5, 0.33, 0.07, 0.2}, sd[4] = {0.3, 0.04, 0.03, 0.1};
     assert_int_equal(tirenv_nn_set_scaling(nn, mean, sd, 0.03, 0.02, NULL), TIRENV_OK);
     const double R0 = 0.6913;
@@ -275,10 +275,10 @@ static tirenv_nn *small_nn(void)
     tirenv_nn_topology t = tirenv_nn_topology_default();
     tirenv_nn *nn = tirenv_nn_alloc(&t);
     assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 99);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 99);
     tirenv_nn_init_weights(nn, rng);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     const double mean[4] = {0.5, 0.33, 0.07, 0.2}, sd[4] = {0.3, 0.04, 0.03, 0.1};
     assert_int_equal(tirenv_nn_set_scaling(nn, mean, sd, 0.04, 0.02, NULL), TIRENV_OK);
     return nn;

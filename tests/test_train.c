@@ -13,14 +13,14 @@
  * figure is reproduced exactly; the bounds are the measured validation RMS errors (seed 1)
  * times 2 to 3, which absorbs a different libm or compiler nudging the trajectory:
  *   lm        100 epochs    measured 0.033 mm   bound 0.1 mm   (the tightest)
- *   backprop  1000 epochs   measured 0.466 mm   bound 1.0 mm   (learning rate 0.03)
- *   rprop     1000 epochs   measured 0.947 mm   bound 2.0 mm
+ *   backprop  1000 epochs   measured 0.728 mm   bound 1.5 mm   (learning rate 0.03)
+ *   rprop     1000 epochs   measured 0.554 mm   bound 2.0 mm
+ * (measured with tirenv's xoshiro256** initialisation; with GSL's mt19937 until version 0.1
+ * they were 0.033, 0.466 and 0.947 mm, and backprop's bound 1.0 mm, now only 1.4 times its
+ * figure, became 1.5 to keep the factor 2)
  * (H is 25 to 100 mm, so even the loosest bound is a 2 % fit.) Early stopping's kept error is
  * compared with the best one the progress callback saw to 1e-12 relative: the two are the
- * same sum of squares taken in a different order (and units). The two LM solvers take the
- * same steps and differ only by round-off in J^T J; after 40 epochs their validation errors
- * agree to 1e-9 relative as measured, LM_AGREE = 1e-6 leaves a factor 1000 for the
- * trajectories to drift apart on another platform. */
+ * same sum of squares taken in a different order (and units). */
 #include "testutil.h"
 
 #include <math.h>
@@ -34,8 +34,6 @@
 #include "tirenv/nn_file.h"
 
 enum { POINTS = 21, MAX_SAMPLES = 28 * POINTS };
-
-#define LM_AGREE 1e-6
 
 static double known_h(double x_N, double l_c, double H, double L)
 {
@@ -115,7 +113,7 @@ static void test_learns(void **state)
         double bound;       /* validation RMS, m */
     } cases[] = {
         {"lm", 100, 0, 0.1e-3},
-        {"backprop", 1000, 0.03, 1.0e-3},
+        {"backprop", 1000, 0.03, 1.5e-3},
         {"rprop", 1000, 0, 2.0e-3},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
@@ -158,7 +156,7 @@ static void test_learns(void **state)
     assert_int_equal(n, 3);
 }
 
-/* Batch back-propagation and GSL's LM solver: both lower the error. */
+/* Batch back-propagation lowers the error. */
 static void test_variants(void **state)
 {
     const synthetic *d = *state;
@@ -172,21 +170,6 @@ static void test_variants(void **state)
     s.max_epochs = 1;
     assert_int_equal(train(d, tirenv_trainer_backprop, &s, &nn0, &r0), TIRENV_OK);
     assert_true(r.error[0].rms < 0.5 * r0.error[0].rms);
-    tirenv_nn_free(nn);
-    tirenv_nn_free(nn0);
-
-    /* The two LM solvers take the same steps (Levenberg damping, Nielsen's update, Cholesky),
-     * so they agree but for round-off in forming J^T J (in blocks or whole). */
-    tirenv_train_settings g = tirenv_train_paper(tirenv_trainer_lm);
-    g.restarts = 1;
-    g.max_epochs = 40;
-    assert_int_equal(train(d, tirenv_trainer_lm, &g, &nn0, &r0), TIRENV_OK);
-    g.lm.solver = TIRENV_LM_GSL;
-    assert_int_equal(train(d, tirenv_trainer_lm, &g, &nn, &r), TIRENV_OK);
-    print_message("lm 40 epochs: validation RMS %.9f mm (cholesky), %.9f mm (gsl)\n",
-                  r0.error[2].rms * 1e3, r.error[2].rms * 1e3);
-    assert_near(r.error[TIRENV_SPLIT_VALIDATION].rms, r0.error[TIRENV_SPLIT_VALIDATION].rms,
-                0, LM_AGREE);
     tirenv_nn_free(nn);
     tirenv_nn_free(nn0);
 }
@@ -348,9 +331,9 @@ static void test_refusals(void **state)
                                   &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "control");
     assert_int_equal(diag.line, 2);
-    /* GSL's solver needs n >= p: 2 samples for 49 weights. */
+    /* A solver that is not one: the settings are refused naming lm. */
     s = tirenv_train_paper(tirenv_trainer_lm);
-    s.lm.solver = TIRENV_LM_GSL;
+    s.lm.solver = (tirenv_lm_solver)1;
     x[6] = 0.1;
     tirenv_diag_clear(&diag);
     assert_int_equal(tirenv_train(tirenv_trainer_lm, &s, &bad, NULL, NULL, &nn, NULL, &diag),
@@ -788,7 +771,7 @@ static void test_ensemble(void **state)
 
 /* The curves loss: over one curve it is the points loss (every weight stays 1); early
  * stopping keeps the network of least mean per-curve control RMS, as the progress callback
- * saw it; samples without curves, or GSL's solver, are refused. */
+ * saw it; samples without curves are refused. */
 static void test_loss_curves(void **state)
 {
     const synthetic *d = *state;
@@ -848,11 +831,6 @@ static void test_loss_curves(void **state)
     assert_int_equal(tirenv_train(tirenv_trainer_lm, &s, &flat, NULL, NULL, &a, NULL, &diag),
                      TIRENV_EINVAL);
     assert_null(a);
-    assert_string_equal(diag.field, "loss");
-    s.lm.solver = TIRENV_LM_GSL;
-    tirenv_diag_clear(&diag);
-    assert_int_equal(tirenv_train(tirenv_trainer_lm, &s, &d->s[0], &d->s[1], NULL, &a, NULL,
-                                  &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "loss");
 }
 

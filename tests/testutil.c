@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 
 #include "tirenv/io.h"
 
@@ -115,22 +115,22 @@ tirenv_nn *tirenv_test_made_up_network(unsigned long seed, size_t n_samples)
     tirenv_nn_topology t = tirenv_nn_topology_default();
     tirenv_nn *nn = tirenv_nn_alloc(&t);
     assert_non_null(nn);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
     assert_non_null(rng);
-    gsl_rng_set(rng, seed);
+    tirenv_rng_seed(rng, seed);
     tirenv_nn_init_weights(nn, rng);
     double x[MAX * TIRENV_NN_INPUTS], y[MAX];
     for (size_t k = 0; k < n_samples; ++k) {
         double *u = x + k * TIRENV_NN_INPUTS;
-        u[TIRENV_NN_X_N] = -0.25 + 1.25 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * gsl_rng_uniform(rng);
-        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * gsl_rng_uniform(rng);
-        y[k] = 0.04 * gsl_rng_uniform(rng);
+        u[TIRENV_NN_X_N] = -0.25 + 1.25 * tirenv_rng_uniform(rng);
+        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * tirenv_rng_uniform(rng);
+        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * tirenv_rng_uniform(rng);
+        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * tirenv_rng_uniform(rng);
+        y[k] = 0.04 * tirenv_rng_uniform(rng);
     }
     tirenv_diag d;
     assert_int_equal(tirenv_nn_fit_scaling(nn, n_samples, x, y, &d), TIRENV_OK);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     return nn;
 }
 

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The FMU's package: the zip holds what FMI 2.0 section 2.3 asks of a linux64 co-simulation
 # FMU, modelDescription.xml is well-formed XML (xmllint), and the binary is self-contained
-# (ldd: libc and libm only, no GSL, jansson or libtirenv) and exports the fmi2 functions only.
+# (ldd: libc and libm only, no GSL, cminpack, jansson or libtirenv) and exports the fmi2 functions only.
 # In a sanitizer build (second argument 1) the sanitizers' runtimes are allowed besides.
 # usage: fmu_package.sh FMU [SANITIZED]        SPDX-License-Identifier: GPL-3.0-or-later
 set -u
@@ -28,7 +28,7 @@ check "its modelIdentifier names the binary" \
     'grep -q "modelIdentifier=\"tirenv_effective_road\"" "$work/modelDescription.xml"'
 ldd "$so" >"$work/ldd" 2>&1
 check "the binary needs only libc and libm (ldd: $(awk '{print $1}' "$work/ldd" | tr '\n' ' '))" \
-    '! grep -Eq "libgsl|libjansson|libtirenv|libcblas|not found" "$work/ldd" && [ "$(grep -Evc "$allowed" "$work/ldd")" -eq 0 ]'
+    '! grep -Eq "libgsl|libjansson|libtirenv|libcblas|libcminpack|not found" "$work/ldd" && [ "$(grep -Evc "$allowed" "$work/ldd")" -eq 0 ]'
 nm -D --defined-only "$so" | awk '{print $3}' >"$work/exports"
 check "it exports the 34 fmi2 functions of co-simulation and nothing else ($(wc -l <"$work/exports") symbols)" \
     '[ "$(grep -c "^fmi2" "$work/exports")" -eq 34 ] && ! grep -qv "^fmi2" "$work/exports"'

@@ -1,13 +1,7 @@
-/* tirenv: status codes and error details shared by every module.
- *
- * GSL's error handler. tirenv checks the status of every GSL call it makes and reports a
- * failure through its own status codes and tirenv_diag; it never changes GSL's error handler,
- * which is process-wide state that belongs to the program. But GSL's default handler aborts
- * the process on many failures (a singular matrix, a function value that is not finite, an
- * integrator that cannot keep its tolerance) before tirenv sees the status. So a program
- * using tirenv calls gsl_set_error_handler_off() once at start-up (or installs a handler of
- * its own that returns): the tirenv command-line tool does so first thing in main. Without
- * it, a failure that tirenv would report can abort the program instead. */
+/* tirenv: status codes and error details shared by every module. The library holds no
+ * process-wide error state and installs no handler: every failure, its own or a numerical
+ * one (a root not bracketed, an integrator that cannot keep its tolerance), comes back as a
+ * status and a tirenv_diag. */
 #ifndef TIRENV_ERROR_H
 #define TIRENV_ERROR_H
 

@@ -7,7 +7,7 @@
 
 #include "tirenv/decls.h"
 #include <stddef.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "tirenv/error.h"
 
 TIRENV_BEGIN_DECLS
@@ -136,7 +136,7 @@ size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
  * uniform [-0.5, 0.5] for the output layer; draws from rng neuron by neuron (its n_in
  * weights, then its bias), member after member, so a seed gives the same network on every
  * machine. */
-void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng);
+void tirenv_nn_init_weights(tirenv_nn *nn, tirenv_rng *rng);
 
 /* Scaling: the net sees u_i = (f_i - in_mean_i)/in_std_i, with the feature f_i = x_i except
  * f_0 = sqrt((1 - x_N)^2 + a^2) - a under TIRENV_NN_INPUT_EVEN, and outputs y = out_mean +

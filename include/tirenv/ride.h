@@ -13,7 +13,7 @@
 TIRENV_BEGIN_DECLS
 
 /* What an axle's tires follow: heights w (m) on a uniform grid x_k = x0 + k*dx, joined by
- * GSL's Steffen interpolation, which is monotone between samples (no overshoot at a cleat's
+ * Steffen's interpolation (1990), which is monotone between samples (no overshoot at a cleat's
  * edges) and has a continuous slope (the tire damper's force c*dw/dt stays continuous, so
  * the integrator keeps its order). Outside the grid the end values continue flat. */
 typedef struct {
@@ -25,7 +25,7 @@ typedef struct {
 
 typedef enum {
     TIRENV_RIDE_RK4,       /* classical Runge-Kutta at the fixed step dt (default) */
-    TIRENV_RIDE_RK8PD      /* Prince-Dormand 8(9), adaptive, to rel/abs tolerance tol */
+    TIRENV_RIDE_RK8PD      /* Prince-Dormand RK8(7)13M, adaptive, to rel/abs tolerance tol */
 } tirenv_ride_method;
 
 typedef struct {

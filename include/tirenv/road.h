@@ -18,7 +18,7 @@ typedef struct {
     char road_class;       /* 'A'..'H' (or lower case): the class's Gd(n0) */
     double length;         /* road length, m (> 0) */
     double dx;             /* vertex spacing, m (> 0, at most 1/(2*n_max)) */
-    unsigned long seed;    /* seed of the phases (GSL's mt19937; 0 means its default, 4357) */
+    unsigned long seed;    /* seed of the phases (tirenv_rng_seed; every value, 0 too, is a seed) */
     double n_min, n_max;   /* band of spatial frequencies generated, cycles/m */
     double waviness;       /* w in Gd(n) = Gd(n0)*(n/n0)^-w */
 } tirenv_road_settings;

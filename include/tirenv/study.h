@@ -41,7 +41,7 @@ int tirenv_case_predict_nn(tirenv_nn *nn, double R0, const tirenv_case *c, doubl
                            tirenv_diag *diag);
 
 /* Identification of a physical model on the training cases by nonlinear least squares on h
- * (GSL multifit_nlinear, trust region with Levenberg-Marquardt steps), in log parameters so
+ * (Minpack's lmdif: Levenberg-Marquardt with a trust region), in log parameters so
  * they stay in range. The parameters are the type's (tirenv_model_type_params): springs: c_r
  * and c_b (optionally R0); cam: ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER. */
 typedef struct {

@@ -13,7 +13,7 @@ TIRENV_BEGIN_DECLS
 typedef enum {
     TIRENV_EQ_NEWTON = 0, /* default: Newton on dF_z/dz inside a bracket, bisection fallback */
     TIRENV_EQ_SECANT,     /* the paper's plain secant iteration (its eq. 2), for comparison */
-    TIRENV_EQ_BRENT       /* GSL's Brent-Dekker on the bracket, a derivative-free baseline */
+    TIRENV_EQ_BRENT       /* Brent-Dekker on the bracket, a derivative-free baseline */
 } tirenv_eq_method;
 
 /* Tolerances of the equilibrium iteration. Convergence needs both |F_z - G_T| <= eps_F and

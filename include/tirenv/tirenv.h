@@ -37,6 +37,7 @@
 #include "tirenv/vehicle_file.h"
 #include "tirenv/ride.h"
 #include "tirenv/comfort.h"
+#include "tirenv/rng.h"
 #include "tirenv/nn.h"
 #include "tirenv/train.h"
 #include "tirenv/study.h"

@@ -64,19 +64,17 @@ typedef struct {
     double eta_minus;      /* in (0, 1) */
 } tirenv_rprop_settings;
 
-/* How the Levenberg-Marquardt step is solved. Both damp with mu I and update mu by Nielsen's
- * rule; lm.c says which is the default and why. */
+/* How the Levenberg-Marquardt step is solved: damping mu I, Nielsen's update of mu (lm.c says
+ * why). One solver since GSL's gsl_multifit_nlinear left (version 0.1 offered it as a second). */
 typedef enum {
-    TIRENV_LM_CHOLESKY = 0, /* (J^T J + mu I) dw = -J^T r by Cholesky on normal equations
+    TIRENV_LM_CHOLESKY = 0  /* (J^T J + mu I) dw = -J^T r by Cholesky on normal equations
                                formed a block of rows at a time */
-    TIRENV_LM_GSL           /* GSL's gsl_multifit_nlinear trust region (trs_lm, Levenberg
-                               scaling, Cholesky), one gsl_multifit_nlinear_iterate per epoch */
 } tirenv_lm_solver;
 
 /* Levenberg-Marquardt on the full Jacobian of the residuals (one epoch = one accepted step). */
 typedef struct {
     tirenv_lm_solver solver;
-    double tau;            /* first damping mu = tau * max diag(J^T J) (Nielsen's tau; GSL
+    double tau;            /* first damping mu = tau * max diag(J^T J) (Nielsen's tau; GSL's
                               fixes it at 1e-3) */
     double mu_max;         /* cholesky: give up (converged) when mu / max diag(J^T J)
                               exceeds it */
@@ -198,8 +196,7 @@ tirenv_train_error tirenv_train_evaluate(tirenv_nn *nn, const tirenv_samples *s)
  * settings and r alone (its seed is derived from settings->seed and r), so restarts can run
  * in any order. *out is the model, the kept network or the ensemble of the kept ones (free
  * it with tirenv_nn_free); report may be NULL. TIRENV_ENOCONV (and *out NULL) if a kept
- * restart diverged, its error no longer finite (docs/models.md section 6.4). GSL would abort
- * on a singular matrix unless the program has turned its error handler off (error.h).
+ * restart diverged, its error no longer finite (docs/models.md section 6.4).
  * Deterministic: the same arguments give the same weights bit for bit. */
 int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *settings,
                  const tirenv_samples *train, const tirenv_samples *control,

@@ -8,10 +8,6 @@ import numpy as np
 
 from ._native import ffi, lib
 
-# The library leaves GSL's process-wide error handler to the program (GSL's default aborts
-# the process); a Python process is the program here, so it turns the handler off once.
-lib.gsl_set_error_handler_off()
-
 
 class TirenvError(Exception):
     """A failure reported by the library: status (a TIRENV_ code), status_name, and the

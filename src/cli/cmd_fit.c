@@ -18,7 +18,7 @@ static void usage(FILE *fp)
           "--fit-radius) of the springs model, ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
           "and ELLIPS_ORDER of the cam model, or FOUNDATION_STIFFNESS and TREAD_STIFFNESS\n"
           "(and BELT_BENDING_STIFFNESS and INFLPRES with --all) of the ring, on the\n"
-          "data set's training cases by nonlinear least squares on h (GSL multifit_nlinear),\n"
+          "data set's training cases by nonlinear least squares on h (Minpack's lmdif),\n"
           "starting from the tire file (the data set's own when its source.txt names one and\n"
           "--tire is not given), and reports standard errors and the fit per case; a\n"
           "parameter the data drive to its bound (ELLIPS_ORDER to 1, a stiffness towards 0)\n"

@@ -17,7 +17,7 @@ static void usage(FILE *fp)
     fputs("usage: tirenv train --data DIR [--trainer backprop|rprop|lm] [--seed S]\n"
           "                    [--restarts N] [--epochs N] [--patience N] [--hidden N[,N...]]\n"
           "                    [--learning-rate ETA] [--momentum A] [--batch]\n"
-          "                    [--lm-solver cholesky|gsl] [--ensemble K] [--input paper|even]\n"
+          "                    [--lm-solver cholesky] [--ensemble K] [--input paper|even]\n"
           "                    [--even-width A] [--target h|h/H] [--loss points|curves]\n"
           "                    [--paper] [--seeds N] [-o MODEL.json] [--jobs N]\n"
           "                    [--tire FILE] [--set KEY=VALUE]...\n"
@@ -60,7 +60,7 @@ static void usage(FILE *fp)
           "  --learning-rate ETA  backprop: learning rate (default 0.01)\n"
           "  --momentum A         backprop: momentum in [0, 1) (default 0.9)\n"
           "  --batch              backprop: one update per epoch instead of per sample\n"
-          "  --lm-solver NAME     lm: cholesky (default) or gsl (gsl_multifit_nlinear)\n"
+          "  --lm-solver NAME     lm: cholesky (the one solver)\n"
           "  -o, --output FILE    write the model (JSON), complete or not at all; without it\n"
           "                       the network is not saved\n"
           "  --tire FILE, --set KEY=VALUE\n"
@@ -173,10 +173,8 @@ static int parse_solver(void *dst, const char *arg)
     train_options *t = dst;
     if (strcmp(arg, "cholesky") == 0)
         t->solver = TIRENV_LM_CHOLESKY;
-    else if (strcmp(arg, "gsl") == 0)
-        t->solver = TIRENV_LM_GSL;
     else {
-        cli_error("--lm-solver: expected cholesky or gsl, got '%s'", arg);
+        cli_error("--lm-solver: expected cholesky, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
     t->have_solver = 1;

@@ -4,7 +4,6 @@
 #include <getopt.h>
 #include <stdio.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
 
 #include "cli/cli.h"
 #include "tirenv/version.h"
@@ -105,9 +104,6 @@ int main(int argc, char *argv[])
         {NULL, 0, NULL, 0},
     };
     cli_signals_install();
-    /* The library checks every GSL status and reports failures itself; GSL's default handler
-     * would abort first. Setting it is the program's business, not the library's (error.h). */
-    gsl_set_error_handler_off();
     int c;
     /* '+' stops at the command name, so its options are left for it to parse. */
     while ((c = getopt_long(argc, argv, "+hV", longopts, NULL)) != -1) {

@@ -1,38 +1,34 @@
-/* GSL's Brent-Dekker on the bracket [z_lo, z_hi], a derivative-free baseline for the
- * equilibrium (docs/models.md section 11). SPDX-License-Identifier: GPL-3.0-or-later
+/* Brent-Dekker on the bracket [z_lo, z_hi] (core/brent.c), a derivative-free baseline for
+ * the equilibrium (docs/models.md section 11). SPDX-License-Identifier: GPL-3.0-or-later
  *
- * GSL evaluates through a plain function returning a double; the evaluation goes through the
+ * Brent evaluates through a plain function returning a double; the evaluation goes through the
  * solver (tirenv_eq__eval) so that it is counted and kept like any other. A failing evaluation
- * hands GSL a finite 0 and is reported after GSL returns, so that GSL never has a reason to
- * signal an error of its own. Brent's root is always an end of its bracket, and the ends are
- * the latest evaluations on either side of the root: the reported point is one of them. */
+ * hands Brent a finite 0 and is reported after Brent returns, so that Brent never has a reason
+ * to fail on its own. Brent's root is always an end of its bracket, and the ends are the latest
+ * evaluations on either side of the root: the reported point is one of them. */
 #include "core/equilibrium.h"
 
 #include <math.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
+#include "core/brent.h"
 
 typedef struct {
-    gsl_root_fsolver *gs;  /* allocated once, with the solver */
-    gsl_function fn;       /* GSL keeps a pointer to it between set and iterate */
+    tirenv_core__brent br;
     tirenv_eq_solver *s;   /* for the callback */
     tirenv_diag *diag;
-    int status;            /* the first failure inside GSL's calls, and why */
+    int status;            /* the first failure inside Brent's calls, and why */
     tirenv_eq_stop stop;
-    int iterated;          /* GSL has taken a step since set */
+    int iterated;          /* Brent has taken a step since set */
 } brent_state;
 
 static int brent_alloc(void *state)
 {
-    brent_state *st = state;
-    st->gs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    return st->gs ? TIRENV_OK : TIRENV_ENOMEM;
+    (void)state;
+    return TIRENV_OK;
 }
 
 static void brent_free(void *state)
 {
-    brent_state *st = state;
-    gsl_root_fsolver_free(st->gs);
+    (void)state;
 }
 
 static double brent_f(double z, void *p)
@@ -45,17 +41,17 @@ static double brent_f(double z, void *p)
     return st->status ? 0.0 : pt.F - st->s->G;
 }
 
-/* What GSL's call left: our failure first, then GSL's own status. */
-static int after_gsl(brent_state *st, int gsl_status, tirenv_eq_stop *stop, tirenv_diag *diag)
+/* What Brent's call left: our failure first, then Brent's own status. */
+static int after_brent(brent_state *st, int br_status, tirenv_eq_stop *stop, tirenv_diag *diag)
 {
     if (st->status) {
         *stop = st->stop;
         return st->status;
     }
-    if (gsl_status) {
+    if (br_status) {
         *stop = TIRENV_EQ_BREAKDOWN;
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium", "brent: %s",
-                            gsl_strerror(gsl_status));
+                            tirenv_core__brent_strerror(br_status));
     }
     return TIRENV_OK;
 }
@@ -79,8 +75,7 @@ static int brent_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
                             "load %.6g N exceeds what the tire carries with its centre at the "
                             "ground (z = %.6g m)", s->G, lo);
     }
-    st->fn = (gsl_function){brent_f, st};
-    return after_gsl(st, gsl_root_fsolver_set(st->gs, &st->fn, lo, hi), stop, diag);
+    return after_brent(st, tirenv_core__brent_set(&st->br, brent_f, st, lo, hi), stop, diag);
 }
 
 /* The kept evaluation at z: the latest, or the latest on either side of the root. */
@@ -97,28 +92,28 @@ static const tirenv_eq_point *kept(const tirenv_eq_solver *s, double z)
 
 /* Brent keeps a bracket, so a bracket within eps_z locates the root (or a jump of F_z, as for
  * Newton); so does a residual within eps_F at the point just evaluated when the bracket also
- * passes GSL's interval test. Once the budget is spent, a root within eps_F is accepted. */
+ * passes the interval test |hi - lo| < eps_z. Once the budget is spent, a root within eps_F is accepted. */
 static tirenv_eq_stop brent_test(const void *state, const tirenv_eq_solver *s,
                                  const tirenv_eq_point **accepted)
 {
     const brent_state *st = state;
     if (!st->iterated)
         return TIRENV_EQ_RUNNING;
-    const double z = gsl_root_fsolver_root(st->gs);
-    const double lo = gsl_root_fsolver_x_lower(st->gs), hi = gsl_root_fsolver_x_upper(st->gs);
+    const double z = st->br.root;
+    const double lo = st->br.lo, hi = st->br.hi;
     const tirenv_eq_point *p = kept(s, z);
     tirenv_eq_stop stop = TIRENV_EQ_RUNNING;
     if (hi - lo <= s->eq.eps_z)
         stop = TIRENV_EQ_BRACKET;
     else if (s->last.z == z && fabs(s->last.F - s->G) <= s->eq.eps_F &&
-             gsl_root_test_interval(lo, hi, s->eq.eps_z, 0) == GSL_SUCCESS)
+             tirenv_core__brent_converged(&st->br, s->eq.eps_z))
         stop = TIRENV_EQ_RESIDUAL;
     else if (s->evals >= s->eq.max_iter && p && fabs(p->F - s->G) <= s->eq.eps_F)
         stop = TIRENV_EQ_RESIDUAL;
     if (stop == TIRENV_EQ_RUNNING)
         return stop;
     if (!p)
-        return TIRENV_EQ_BREAKDOWN;  /* the driver says so: it cannot happen with GSL's Brent */
+        return TIRENV_EQ_BREAKDOWN;  /* the driver says so: it cannot happen with Brent */
     *accepted = p;
     return stop;
 }
@@ -130,7 +125,7 @@ static int brent_iterate(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
     (void)s;
     st->diag = diag;
     st->iterated = 1;
-    return after_gsl(st, gsl_root_fsolver_iterate(st->gs), stop, diag);
+    return after_brent(st, tirenv_core__brent_iterate(&st->br), stop, diag);
 }
 
 static const tirenv_eq_solver_type brent_type = {

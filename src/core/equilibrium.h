@@ -48,7 +48,7 @@ typedef enum {
     TIRENV_EQ_NO_BRACKET,  /* F_z(z_lo) < G: the tire cannot carry the load */
     TIRENV_EQ_MAX_EVALS,   /* eps->max_iter force evaluations spent */
     TIRENV_EQ_BREAKDOWN,   /* the method cannot go on (the secant's equal forces or a step
-                            * out of range, a failure inside GSL's Brent) */
+                            * out of range, a failure inside Brent) */
     TIRENV_EQ_FORCE_FAILED /* the force function failed (diag says how) */
 } tirenv_eq_stop;
 
@@ -76,7 +76,7 @@ typedef struct {
 } tirenv_eq_solver_type;
 
 /* The safeguarded Newton of docs/models.md section 11 (the default), the paper's secant (its
- * eq. 2), and GSL's Brent-Dekker on the bracket, a derivative-free baseline. */
+ * eq. 2), and Brent-Dekker on the bracket (core/brent.c), a derivative-free baseline. */
 extern const tirenv_eq_solver_type *const tirenv_eq__newton;
 extern const tirenv_eq_solver_type *const tirenv_eq__secant;
 extern const tirenv_eq_solver_type *const tirenv_eq__brent;

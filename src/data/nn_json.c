@@ -188,7 +188,7 @@ static json_t *training_json(wctx *c, const tirenv_train_record *rec)
         json_t *lm = put(c, set, "lm", json_object());
         if (lm) {
             put(c, lm, "solver",
-                json_string(s->lm.solver == TIRENV_LM_GSL ? "gsl" : "cholesky"));
+                json_string("cholesky"));
             put(c, lm, "tau", json_real(s->lm.tau));
             put(c, lm, "mu_max", json_real(s->lm.mu_max));
         }
@@ -837,10 +837,8 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
         return status;
     if (strcmp(buf, "cholesky") == 0)
         s->lm.solver = TIRENV_LM_CHOLESKY;
-    else if (strcmp(buf, "gsl") == 0)
-        s->lm.solver = TIRENV_LM_GSL;
-    else
-        return bad(c, "training.settings.lm.solver", "'%s'; expected 'cholesky' or 'gsl'", buf);
+    else  /* 'gsl' too: version 0.1's second solver, gone with GSL */
+        return bad(c, "training.settings.lm.solver", "'%s'; expected 'cholesky'", buf);
     if ((status = get_number(c, lm, "tau", "training.settings.lm.tau", &s->lm.tau)) ||
         (status = get_number(c, lm, "mu_max", "training.settings.lm.mu_max", &s->lm.mu_max)))
         return status;

@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <gsl/gsl_statistics_double.h>
 
 #include "data/rig_impl.h"
 
@@ -56,10 +55,51 @@ typedef struct {
     size_t first;          /* first sample of the bin (index into tirenv_rig__samples) */
 } rig_bin;
 
+/* The median of v[0..n-1], n >= 1, reordering v: Hoare's selection (Find, CACM 4(7), 1961)
+ * places the element of rank n/2 with everything before it no larger, in O(n) expected; for
+ * even n the other middle one is the largest of that lower part. The mean of the two middle
+ * values for even n, the value itself for odd n: the same as sorting and reading the middle. */
+static double median_in_place(double v[], const size_t n)
+{
+    const size_t k = n / 2;
+    size_t lo = 0, hi = n - 1;
+    while (lo < hi) {
+        const double pivot = v[lo + (hi - lo) / 2];
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (v[i] < pivot)
+                ++i;
+            while (v[j] > pivot)
+                --j;
+            if (i <= j) {
+                const double t = v[i];
+                v[i] = v[j];
+                v[j] = t;
+                ++i;
+                if (j == 0)
+                    break;
+                --j;
+            }
+        }
+        if (k <= j)
+            hi = j;
+        else if (k >= i)
+            lo = i;
+        else
+            break;  /* v[k] lies between the parts, equal to the pivot */
+    }
+    if (n % 2)
+        return v[k];
+    double below = v[0];
+    for (size_t i = 1; i < k; ++i)
+        below = fmax(below, v[i]);
+    return 0.5 * (below + v[k]);
+}
+
 double tirenv_rig__median(const double v[], size_t n, double scratch[])
 {
     memcpy(scratch, v, n * sizeof *v);
-    return gsl_stats_median(scratch, 1, n);
+    return median_in_place(scratch, n);
 }
 
 /* Gasser, Sroka and Jennen-Steinmetz (1986) pseudo-residuals: each z against the straight
@@ -76,7 +116,7 @@ static double noise_sigma(const tirenv_rig__samples *s, double scratch[])
         const double e = (a * s->z[i - 1] + b * s->z[i + 1] - s->z[i]) / sqrt(1 + a * a + b * b);
         scratch[m++] = fabs(e);
     }
-    const double sigma = MAD_TO_SIGMA * gsl_stats_median(scratch, 1, m);
+    const double sigma = MAD_TO_SIGMA * median_in_place(scratch, m);
     return sigma > SIGMA_FLOOR ? sigma : SIGMA_FLOOR;
 }
 
@@ -235,7 +275,7 @@ static int flat_baseline(const tirenv_rig__samples *s, double x_lo, double x_hi,
                             z_right > z_left ? "higher" : "lower", allowed * 1e3);
     memcpy(scratch, s->z, a * sizeof *scratch);
     memcpy(scratch + a, s->z + c, nr * sizeof *scratch);
-    *baseline = gsl_stats_median(scratch, 1, a + nr);
+    *baseline = median_in_place(scratch, a + nr);
     return TIRENV_OK;
 }
 

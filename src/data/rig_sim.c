@@ -4,8 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
-#include <gsl/gsl_randist.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "tirenv/io.h"
 
 tirenv_rig_settings tirenv_rig_default(void)
@@ -102,13 +101,12 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
                             x1 - x0, dx, s->speed, s->rate);
     const size_t n = (size_t)steps + 1;
     double *buf = malloc(3 * n * sizeof *buf);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    tirenv_rng *rng = tirenv_rng_alloc(s->seed);
     if (!buf || !rng) {
         free(buf);
-        gsl_rng_free(rng);
+        tirenv_rng_free(rng);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "rig", "out of memory");
     }
-    gsl_rng_set(rng, s->seed);
     *out = (tirenv_rig_log){n, buf, buf + n, buf + 2 * n};
     for (size_t k = 0; k < n; ++k) {
         const double x = x0 + (double)k * dx;
@@ -116,14 +114,14 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
         status = tirenv_model_eval(m, x, &pt, diag);
         if (status) {
             tirenv_rig_log_free(out);
-            gsl_rng_free(rng);
+            tirenv_rng_free(rng);
             return status;
         }
         out->t[k] = (double)k / s->rate;
-        out->x[k] = x + s->x_offset + gsl_ran_gaussian_ziggurat(rng, s->noise_x);
-        out->z[k] = pt.z + s->z_offset + gsl_ran_gaussian_ziggurat(rng, s->noise_z);
+        out->x[k] = x + s->x_offset + tirenv_rng_gaussian(rng, s->noise_x);
+        out->z[k] = pt.z + s->z_offset + tirenv_rng_gaussian(rng, s->noise_z);
     }
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     return TIRENV_OK;
 }
 

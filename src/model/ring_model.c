@@ -2,8 +2,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
+#include "core/brent.h"
 #include "model/deformable.h"
 #include "model/ring_impl.h"
 #include "tirenv/ring.h"
@@ -63,7 +62,6 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
                                      double z_lo, double *z, tirenv_diag *diag)
 {
     patch_ctx ctx = {elem, flat, l_c, 0, diag};
-    gsl_function fn = {patch_minus_target, &ctx};
     double hi = tirenv_ring_free_radius(elem), lo = fmax(z_lo, 0.5 * hi);
     if (lo > z_lo && patch_minus_target(lo, &ctx) < 0 && !ctx.status) {
         hi = lo;
@@ -73,24 +71,20 @@ static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, dou
         return ctx.status ? ctx.status
                           : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
                                          "%g m is beyond the ring tire's reach", l_c);
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (!s)
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    int status = gsl_root_fsolver_set(s, &fn, lo, hi);
+    tirenv_core__brent br;
+    int status = tirenv_core__brent_set(&br, patch_minus_target, &ctx, lo, hi);
     for (int it = 0; !status && it < PATCH_MAX_ITER; ++it) {
-        status = gsl_root_fsolver_iterate(s);
-        lo = gsl_root_fsolver_x_lower(s);
-        hi = gsl_root_fsolver_x_upper(s);
-        if (!status && gsl_root_test_interval(lo, hi, patch_z_tol, 0) == GSL_SUCCESS)
+        status = tirenv_core__brent_iterate(&br);
+        if (!status && tirenv_core__brent_converged(&br, patch_z_tol))
             break;
     }
-    *z = gsl_root_fsolver_root(s);
-    gsl_root_fsolver_free(s);
+    *z = br.root;
     if (ctx.status)  /* the forces' own message says what failed */
         return ctx.status;
     if (status)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "contact length",
-                            "no ring height found for %g m: %s", l_c, gsl_strerror(status));
+                            "no ring height found for %g m: %s", l_c,
+                            tirenv_core__brent_strerror(status));
     return 0;
 }
 

@@ -301,7 +301,7 @@ size_t tirenv_nn_weight_index(const tirenv_nn *nn, size_t l, size_t i, size_t j)
  * uniform draws come from the caller's rng, so a seed fixes the weights bit for bit. */
 /* One member's weights w (its layers in tirenv_nn_weights order). */
 static void init_member(const tirenv_nn_topology *top, const size_t w_off[], double *w0,
-                        gsl_rng *rng)
+                        tirenv_rng *rng)
 {
     const size_t L = top->n_layers - 1;
     for (size_t l = 1; l <= L; ++l) {
@@ -309,26 +309,26 @@ static void init_member(const tirenv_nn_topology *top, const size_t w_off[], dou
         double *w = w0 + w_off[l];
         if (l == L) {
             for (size_t k = 0; k < (1 + n_in) * n_out; ++k)
-                w[k] = gsl_rng_uniform(rng) - 0.5;
+                w[k] = tirenv_rng_uniform(rng) - 0.5;
             continue;
         }
         const double beta = 0.7 * pow((double)n_out, 1.0 / (double)n_in);
         for (size_t j = 0; j < n_out; ++j) {
             double norm2 = 0;
             for (size_t i = 1; i <= n_in; ++i) {
-                const double v = gsl_rng_uniform(rng) - 0.5;
+                const double v = tirenv_rng_uniform(rng) - 0.5;
                 w[i * n_out + j] = v;
                 norm2 += v * v;
             }
             const double scale = norm2 > 0 ? beta / sqrt(norm2) : 0;
             for (size_t i = 1; i <= n_in; ++i)
                 w[i * n_out + j] *= scale;
-            w[j] = beta * (2 * gsl_rng_uniform(rng) - 1);
+            w[j] = beta * (2 * tirenv_rng_uniform(rng) - 1);
         }
     }
 }
 
-void tirenv_nn_init_weights(tirenv_nn *nn, gsl_rng *rng)
+void tirenv_nn_init_weights(tirenv_nn *nn, tirenv_rng *rng)
 {
     for (size_t m = 0; m < nn->members; ++m)
         init_member(&nn->top, nn->w_off, nn->w + m * nn->member_weights, rng);

@@ -11,11 +11,11 @@
  * over every spatial frequency n_k = k dn of the band [n_min, n_max] (the standard's 0.011 to
  * 2.83 cycles/m by default): each cosine carries the variance A_k^2/2 = Gd(n_k) dn of its
  * slice of the spectrum, and the phases phi_k are uniform on [0, 2 pi), drawn in order of k
- * from GSL's mt19937 with the given seed. The frequency resolution is the finest the road
+ * from tirenv's xoshiro256** (tirenv/rng.h) with the given seed. The frequency resolution is the finest the road
  * allows: dn = 1/(M dx), with M the smallest power of two >= the number of vertices N, so
  * 1/(2L) < dn <= 1/L for a road of length L; the road's period M dx is at least L, so nothing
  * repeats within it. On this grid the sum is exactly an inverse real FFT of length M: the
- * cosines are evaluated at every vertex in O(M log M) (GSL's radix-2 half-complex transform)
+ * cosines are evaluated at every vertex in O(M log M) (the radix-2 FFT of core/fft.c)
  * instead of O(N K) for K cosines, with no interpolation. The amplitudes are deterministic
  * and only the phases random, so the PSD holds exactly on the generation grid; estimated on
  * other grids (Welch's method) it scatters like any Gaussian road's, many cosines per bin. */
@@ -23,8 +23,8 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <gsl/gsl_fft_halfcomplex.h>
-#include <gsl/gsl_rng.h>
+#include "core/fft.h"
+#include "tirenv/rng.h"
 
 #include "core/profile_impl.h"
 
@@ -123,32 +123,27 @@ int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
                             "resolution %g cycles/m leaves no component in it", s->length,
                             s->n_min, s->n_max, dn);
 
-    double *c = calloc(M, sizeof *c);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    double complex *c = calloc(M, sizeof *c);
+    tirenv_rng *rng = tirenv_rng_alloc(s->seed);
     struct tirenv_profile *p = tirenv_profile__new(n);
     if (!c || !rng || !p) {
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for a road of "
                               "%zu points", n);
         goto done;
     }
-    gsl_rng_set(rng, s->seed);
-    /* Half-complex layout of the radix-2 transform: Re c_k in c[k], Im c_k in c[M - k]. The
-     * backward transform sums c_k e^(2 pi i j k / M) over all k, so c_k = (A_k/2) e^(i phi_k)
-     * and its conjugate twin add up to A_k cos(2 pi n_k x_j + phi_k). */
+    /* The backward transform sums c_k e^(2 pi i j k / M) over all k, so c_k = (A_k/2)
+     * e^(i phi_k) and its conjugate twin c_(M-k) add up to A_k cos(2 pi n_k x_j + phi_k):
+     * the sum is real, to round-off, whose imaginary part is dropped. */
     for (size_t k = (size_t)k_lo; k <= (size_t)k_hi; k++) {
         const double A = sqrt(2.0 * tirenv_road_psd(s, (double)k * dn) * dn);
-        const double phi = 2.0 * M_PI * gsl_rng_uniform(rng);
-        c[k] = 0.5 * A * cos(phi);
-        c[M - k] = 0.5 * A * sin(phi);
+        const double phi = 2.0 * M_PI * tirenv_rng_uniform(rng);
+        c[k] = 0.5 * A * cos(phi) + I * (0.5 * A * sin(phi));
+        c[M - k] = conj(c[k]);
     }
-    if (gsl_fft_halfcomplex_radix2_backward(c, 1, M) != 0) {
-        status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "internal error: FFT of length "
-                              "%zu refused", M);
-        goto done;
-    }
+    tirenv_core__fft(c, M, +1);
     for (size_t j = 0; j < n; j++) {
         p->x[j] = (double)j * s->dx;
-        p->z[j] = c[j] - c[0];
+        p->z[j] = creal(c[j]) - creal(c[0]);
     }
     if (!(status = tirenv_profile__finish(p, diag))) {
         *out = p;
@@ -156,7 +151,7 @@ int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
     }
 done:
     tirenv_profile_free(p);
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     free(c);
     return status;
 }

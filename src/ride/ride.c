@@ -1,4 +1,4 @@
-/* The pitch-plane tractor's equations of motion and their integration with GSL's odeiv2
+/* The pitch-plane tractor's equations of motion and their integration (ode.c)
  * (docs/models.md section 9).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
@@ -12,10 +12,9 @@
  *   m_a z_a'' = F_tire_front - F_s - m_a g.
  * The static loads balance the weights, so gravity only matters once a tire lifts off. */
 #include "tirenv/ride.h"
+#include "ride/ode.h"
 #include "ride/ride_impl.h"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_odeiv2.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -77,7 +76,7 @@ static int evaluate(ride *r, double t, const double y[], double dydt[], tirenv_r
 
 static int rhs(double t, const double y[], double dydt[], void *params)
 {
-    return evaluate(params, t, y, dydt, NULL) ? GSL_EBADFUNC : GSL_SUCCESS;
+    return evaluate(params, t, y, dydt, NULL) ? 1 : 0;
 }
 
 tirenv_ride_settings tirenv_ride_default(void)
@@ -192,26 +191,17 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
     r->G0_rear = tirenv_vehicle_tire_load(v, 1);
     r->F0_susp = v->m * v->g * v->b / r->l;
     tirenv_diag_clear(&r->diag);
-    gsl_odeiv2_driver *d = NULL;
-    gsl_odeiv2_step *step = NULL;
-    double y[6], y_err[6];  /* RK4's error estimate is computed, and unused */
+    double y[TIRENV_RIDE__ODE_DIM];
     size_t dim = 4;
     int status = steady_start(r, y, &dim);
     if (status) {
         *diag = r->diag;
         return status;
     }
-    gsl_odeiv2_system sys = {rhs, NULL, dim, r};
-    /* RK4 steps on its own (a driver would want an error estimate it does not have); RK8PD
-     * goes through the driver, which adapts the step between outputs. */
-    if (s->method == TIRENV_RIDE_RK4)
-        step = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk4, sys.dimension);
-    else
-        d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, s->dt, s->tol, s->tol);
-    if (!step && !d) {
-        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        goto done;
-    }
+    const tirenv_ride__ode sys = {rhs, r, dim};
+    const int step = s->method == TIRENV_RIDE_RK4;
+    tirenv_ride__rk8 rk8;  /* RK8PD adapts its step between outputs (ode.c) */
+    tirenv_ride__rk8_init(&rk8, s->dt, s->tol);
     const size_t n = tirenv_ride_n_samples(s);
     /* RK4 samples the inputs at three points per step, so a step longer than the grid would
      * skip over a cleat's edge: substeps advance at most half a grid spacing. */
@@ -225,23 +215,30 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
     for (size_t k = 1; k < n; ++k) {
         /* Each sample's time is k*dt, not a running sum, so long runs do not drift. */
         const double t_k = (double)k * s->dt;
-        int rc = GSL_SUCCESS;
+        int rc = 0;
         if (step) {
+            /* Each substep h is two RK4 steps of h/2: what GSL's rk4 stepper, which the ride
+             * used until version 0.1, returned (it took one step of h as well, for an error
+             * estimate the ride never read). */
             const double h = (t_k - t) / (double)n_sub;
-            for (size_t j = 0; j < n_sub && rc == GSL_SUCCESS; ++j)
-                rc = gsl_odeiv2_step_apply(step, t + (double)j * h, h, y, y_err, NULL, NULL,
-                                           &sys);
+            for (size_t j = 0; j < n_sub && rc == 0; ++j) {
+                const double t_j = t + (double)j * h;
+                rc = tirenv_ride__rk4_step(&sys, t_j, 0.5 * h, y);
+                if (rc == 0)
+                    rc = tirenv_ride__rk4_step(&sys, t_j + 0.5 * h, 0.5 * h, y);
+            }
         } else {
-            rc = gsl_odeiv2_driver_apply(d, &t, t_k, y);
+            rc = tirenv_ride__rk8_advance(&rk8, &sys, &t, t_k, y);
         }
-        if (rc != GSL_SUCCESS && r->status) {
+        if (rc != 0 && r->status) {
             status = r->status;
             goto failed;
         }
-        if (rc != GSL_SUCCESS) {
+        if (rc != 0) {
             status = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "", "the ODE solver failed "
-                                  "at t = %.6g s (x_front = %.6g m): %s", t,
-                                  r->x_front0 + r->V * t, gsl_strerror(rc));
+                                  "at t = %.6g s (x_front = %.6g m): the step needed for "
+                                  "tolerance %g fell below round-off", t,
+                                  r->x_front0 + r->V * t, s->tol);
             goto done;
         }
         t = t_k;
@@ -260,10 +257,6 @@ failed:  /* an input failed: its own message, with where the run was */
         memcpy(diag->message, msg, sizeof msg);
     }
 done:
-    if (d)
-        gsl_odeiv2_driver_free(d);
-    if (step)
-        gsl_odeiv2_step_free(step);
     return status;
 }
 
@@ -282,7 +275,7 @@ static int run_with(const tirenv_vehicle *v, const tirenv_ride_track *tf,
     if (status)
         status = status == TIRENV_ENOMEM
                      ? tirenv_error(diag, status, "", 0, "", "out of memory")
-                     : tirenv_error(diag, status, "", 0, "", "GSL cannot interpolate an input");
+                     : tirenv_error(diag, status, "", 0, "", "an input has fewer than 2 grid points");
     else
         status = run(v, &r, s, out, diag);
     tirenv_ride__input_free(&r.front);

@@ -23,9 +23,11 @@
 /* Steffen's monotone slopes (M. Steffen, A simple method for monotonic interpolation in one
  * dimension, Astron. Astrophys. 239, 1990, his eq. 11 with the one-sided slopes at the ends, the
  * "simplest possibility" of his section 2.2), on a uniform grid of spacing h: at an inner point
- * the smallest of the two secants and half their mean, signed alike, 0 at an extremum. The same
- * interpolant as GSL's gsl_interp_steffen, which a track uses; a table computes its own, so that
- * its rows share one index per position and give value and slope together. */
+ * the smallest of the two secants and half their mean, signed alike, 0 at an extremum. Tracks
+ * and tables both use it (a track is a table of one row), so that a table's rows share one
+ * index per position and give value and slope together. Until version 0.1 a track went
+ * through GSL's gsl_interp_steffen, the same interpolant; its grid spacing x_(k+1) - x_k and
+ * slope mean differ from these by round-off, and so did the rides on tracks. */
 static void steffen_slopes(size_t n, double h, const double w[], double yp[])
 {
     yp[0] = (w[1] - w[0]) / h;
@@ -53,59 +55,25 @@ int tirenv_ride__input_init(tirenv_ride__input *in, const char *name,
     in->n = track ? track->n : table->n;
     in->m = track ? 1 : table->m;
     in->w = track ? track->w : table->w;
-    if (table) {
-        in->kind = TIRENV_RIDE__TABLE;
-        if (!(in->slope = malloc(in->m * in->n * sizeof *in->slope)))
-            return TIRENV_ENOMEM;
-        for (size_t j = 0; j < in->m; ++j)
-            steffen_slopes(in->n, in->dx, in->w + j * in->n, in->slope + j * in->n);
-        return TIRENV_OK;
-    }
-    in->kind = TIRENV_RIDE__TRACK;
-    in->x = malloc(in->n * sizeof *in->x);
-    in->rows = calloc(1, sizeof *in->rows);
-    in->acc = gsl_interp_accel_alloc();
-    if (!in->x || !in->rows || !in->acc)
+    in->kind = table ? TIRENV_RIDE__TABLE : TIRENV_RIDE__TRACK;
+    if (in->n < 2)
+        return TIRENV_EINVAL;
+    if (!(in->slope = malloc(in->m * in->n * sizeof *in->slope)))
         return TIRENV_ENOMEM;
-    for (size_t k = 0; k < in->n; ++k)
-        in->x[k] = in->x0 + (double)k * in->dx;
-    if (!(in->rows[0] = gsl_interp_alloc(gsl_interp_steffen, in->n)))
-        return TIRENV_ENOMEM;
-    return gsl_interp_init(in->rows[0], in->x, in->w, in->n) ? TIRENV_EINVAL : TIRENV_OK;
+    for (size_t j = 0; j < in->m; ++j)
+        steffen_slopes(in->n, in->dx, in->w + j * in->n, in->slope + j * in->n);
+    return TIRENV_OK;
 }
 
 void tirenv_ride__input_free(tirenv_ride__input *in)
 {
-    if (in->rows && in->rows[0])
-        gsl_interp_free(in->rows[0]);
-    free(in->rows);
-    free(in->x);
     free(in->slope);
     in->slope = NULL;
-    if (in->acc)
-        gsl_interp_accel_free(in->acc);
-    in->rows = NULL;
-    in->x = NULL;
-    in->acc = NULL;
 }
 
 double tirenv_ride__input_dx(const tirenv_ride__input *in)
 {
     return in->dx;
-}
-
-/* A track's height and dw/dx at position x (GSL); beyond the grid the end values, flat. */
-static void track_at(const tirenv_ride__input *in, double x, double *w, double *w_x)
-{
-    const double *row = in->w;
-    const double x_end = in->x0 + (double)(in->n - 1) * in->dx;
-    if (x <= in->x0 || x >= x_end) {
-        *w = x <= in->x0 ? row[0] : row[in->n - 1];
-        *w_x = 0;
-        return;
-    }
-    *w = gsl_interp_eval(in->rows[0], in->x, row, x, in->acc);
-    *w_x = gsl_interp_eval_deriv(in->rows[0], in->x, row, x, in->acc);
 }
 
 /* Where position x falls on a table's grid: its cell k and the offset t (m) into it; the
@@ -146,6 +114,13 @@ static void row_at(const tirenv_ride__input *in, size_t j, const grid_spot *p, d
     const double a = (d0 + d1 - 2 * s) / (h * h), b = (3 * s - 2 * d0 - d1) / h;
     *w = y0 + t * (d0 + t * (b + t * a));
     *w_x = d0 + t * (2 * b + 3 * a * t);
+}
+
+/* A track's height and dw/dx at position x; beyond the grid the end values, flat. */
+static void track_at(const tirenv_ride__input *in, double x, double *w, double *w_x)
+{
+    const grid_spot p = spot_of(in, x);
+    row_at(in, 0, &p, w, w_x);
 }
 
 /* The tire force of a track, as the ride has always computed it. */

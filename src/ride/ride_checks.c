@@ -5,11 +5,8 @@
 #include "ride/ride_impl.h"
 
 #include <float.h>
-#include <gsl/gsl_complex_math.h>
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_matrix.h>
 #include <math.h>
+#include "core/eigen.h"
 
 /* The largest |lambda| of the linear system with every tire on the ground (lift-off only
  * removes stiffness and damping). Generalised coordinates q = (z, theta[, z_a]), mass
@@ -38,38 +35,29 @@ int tirenv_ride__fastest_mode(const tirenv_vehicle *v, double *lambda_max, tiren
                 K[i][j] += springs[s].k * springs[s].e[i] * springs[s].e[j];
                 C[i][j] += springs[s].c * springs[s].e[i] * springs[s].e[j];
             }
-    gsl_matrix *A = gsl_matrix_calloc(N, N);
-    gsl_vector_complex *eval = gsl_vector_complex_alloc(N);
-    gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc(N);
-    int status = TIRENV_OK;
-    if (!A || !eval || !w) {
-        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        goto done;
-    }
+    double A[6 * 6] = {0};
     for (size_t i = 0; i < n; ++i) {
-        gsl_matrix_set(A, i, n + i, 1);
+        A[i * N + n + i] = 1;
         for (size_t j = 0; j < n; ++j) {
-            gsl_matrix_set(A, n + i, j, -K[i][j] / mass[i]);
-            gsl_matrix_set(A, n + i, n + j, -C[i][j] / mass[i]);
+            A[(n + i) * N + j] = -K[i][j] / mass[i];
+            A[(n + i) * N + n + j] = -C[i][j] / mass[i];
         }
     }
-    const int rc = gsl_eigen_nonsymm(A, eval, w);
-    if (rc) {
-        status = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "", "the vehicle's modes could not "
-                              "be found (GSL: %s)", gsl_strerror(rc));
-        goto done;
-    }
+    double complex eval[6];
+    const int rc = tirenv_core__eigenvalues(N, A, eval);
+    if (rc == 1)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the vehicle's modes are not "
+                            "finite: its stiffnesses, dampings and masses overflow");
+    if (rc)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "", "the vehicle's modes could not "
+                            "be found: the QR iteration did not converge");
     *lambda_max = 0;
     for (size_t i = 0; i < N; ++i)
-        *lambda_max = fmax(*lambda_max, gsl_complex_abs(gsl_vector_complex_get(eval, i)));
+        *lambda_max = fmax(*lambda_max, cabs(eval[i]));
     if (!isfinite(*lambda_max))
-        status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the vehicle's modes are not "
-                              "finite: its stiffnesses, dampings and masses overflow");
-done:
-    gsl_eigen_nonsymm_free(w);
-    gsl_vector_complex_free(eval);
-    gsl_matrix_free(A);
-    return status;
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the vehicle's modes are not "
+                            "finite: its stiffnesses, dampings and masses overflow");
+    return TIRENV_OK;
 }
 
 /* RK4's amplification per step on a mode e^(lambda t) is the Taylor polynomial of e^(h

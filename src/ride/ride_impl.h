@@ -6,7 +6,6 @@
 #define TIRENV_RIDE_IMPL_H
 
 #include <stddef.h>
-#include <gsl/gsl_interp.h>
 
 #include "tirenv/ride.h"
 #include "tirenv/vehicle.h"
@@ -23,21 +22,17 @@ typedef struct {
     const tirenv_ride_track *track;
     const tirenv_ride_table *table;
     const tirenv_ride_input *fn;
-    /* The grid of a track or a table: its abscissae (which gsl_interp wants as an array),
-     * one Steffen interpolation per row (a track is one row), one accelerator for all. */
+    /* The grid of a track or a table (a track is one row), and Steffen's slopes on it. */
     double x0, dx;         /* m */
     size_t n, m;           /* grid points, rows */
     const double *w;       /* the rows, m*n heights, m */
-    double *x;
-    gsl_interp **rows;     /* a track's one row (GSL's Steffen spline) */
-    gsl_interp_accel *acc;
-    double *slope;         /* a table's: the Steffen slopes dw/dx at its m*n points */
+    double *slope;         /* the Steffen slopes dw/dx at its m*n points */
     size_t hint;           /* a table's segment of rows where the last load was found */
 } tirenv_ride__input;
 
 /* Sets up the input of the axle name (static storage) of one kind from exactly one of track,
  * table, fn (the others NULL);
- * TIRENV_ENOMEM, or TIRENV_EINVAL if GSL cannot interpolate the grid. in->rows etc. are
+ * TIRENV_ENOMEM, or TIRENV_EINVAL if the grid has fewer than 2 points. in->slope is
  * then to be freed with tirenv_ride__input_free whatever the status. */
 int tirenv_ride__input_init(tirenv_ride__input *in, const char *name,
                             const tirenv_ride_track *track, const tirenv_ride_table *table,

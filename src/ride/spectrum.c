@@ -2,7 +2,7 @@
  * (docs/models.md section 10).
  * SPDX-License-Identifier: GPL-3.0-or-later
  *
- * The series is cut into K segments of N samples (a power of two, for GSL's radix-2 real FFT)
+ * The series is cut into K segments of N samples (a power of two, for the radix-2 FFT of core/fft.c)
  * starting every N/2 samples, each multiplied by the periodic Hann window
  * w_i = (1 - cos(2 pi i/N))/2, whose half-overlapped copies sum to a constant so that every
  * sample away from the ends counts equally. With X_k the DFT of one windowed segment and
@@ -20,34 +20,35 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_fft_real.h>
+#include "core/fft.h"
 
 struct tirenv_welch {
     size_t n_seg;          /* N, samples per segment */
     double U;              /* sum of w_i^2 (1) */
     double *w;             /* Hann window, N values */
-    double *seg;           /* the windowed segment, transformed in place; N values */
+    double complex *seg;   /* the windowed segment, transformed in place; N values */
 };
 
 int tirenv_welch_alloc(size_t n_seg, tirenv_welch **out, tirenv_diag *diag)
 {
     *out = NULL;
-    if (n_seg < 2 || (n_seg & (n_seg - 1)) != 0 || n_seg > SIZE_MAX / (2 * sizeof(double)))
+    if (n_seg < 2 || (n_seg & (n_seg - 1)) != 0 || n_seg > SIZE_MAX / (4 * sizeof(double)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "n_seg",
                             "segment length %zu is not a power of two >= 2 (the radix-2 FFT "
                             "needs one); try 256, 1024 or 4096", n_seg);
     tirenv_welch *w = malloc(sizeof *w);
-    double *buf = malloc(2 * n_seg * sizeof *buf);
-    if (!w || !buf) {
+    double *buf = malloc(n_seg * sizeof *buf);
+    double complex *seg = malloc(n_seg * sizeof *seg);
+    if (!w || !buf || !seg) {
         free(w);
         free(buf);
+        free(seg);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "n_seg",
                             "out of memory for segments of %zu samples", n_seg);
     }
     w->n_seg = n_seg;
     w->w = buf;
-    w->seg = buf + n_seg;
+    w->seg = seg;
     w->U = 0.0;
     for (size_t i = 0; i < n_seg; i++) {
         w->w[i] = 0.5 * (1.0 - cos(2.0 * M_PI * (double)i / (double)n_seg));
@@ -62,6 +63,7 @@ void tirenv_welch_free(tirenv_welch *w)
     if (!w)
         return;
     free(w->w);
+    free(w->seg);
     free(w);
 }
 
@@ -91,14 +93,13 @@ int tirenv_welch_psd(tirenv_welch *w, const double x[], size_t n, double fs, dou
     for (size_t start = 0; start + N <= n; start += hop, K++) {
         for (size_t i = 0; i < N; i++)
             w->seg[i] = w->w[i] * x[start + i];
-        if (gsl_fft_real_radix2_transform(w->seg, 1, N) != GSL_SUCCESS)
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "n_seg",
-                                "internal error: GSL refused an FFT of length %zu", N);
-        /* Half-complex order: Re X_k in seg[k], Im X_k in seg[N - k]; X_0, X_N/2 real. */
-        psd[0] += w->seg[0] * w->seg[0];
+        tirenv_core__fft(w->seg, N, -1);
+        /* X_0 and X_N/2 are real; X_N-k is the conjugate of X_k. */
+        psd[0] += creal(w->seg[0]) * creal(w->seg[0]);
         for (size_t k = 1; k < N / 2; k++)
-            psd[k] += 2.0 * (w->seg[k] * w->seg[k] + w->seg[N - k] * w->seg[N - k]);
-        psd[N / 2] += w->seg[N / 2] * w->seg[N / 2];
+            psd[k] += 2.0 * (creal(w->seg[k]) * creal(w->seg[k]) +
+                             cimag(w->seg[k]) * cimag(w->seg[k]));
+        psd[N / 2] += creal(w->seg[N / 2]) * creal(w->seg[N / 2]);
     }
     const double scale = 1.0 / (fs * w->U * (double)K);
     for (size_t k = 0; k < bins; k++)

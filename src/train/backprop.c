@@ -4,7 +4,6 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_randist.h>
 
 #include "train/train_impl.h"
 
@@ -68,7 +67,7 @@ static int backprop_set(void *state, tirenv_nn *nn, const tirenv_samples *train,
  * epoch would add up to at fixed weights, so one learning rate means about the same in
  * both modes. */
 static int backprop_epoch(void *state, tirenv_nn *nn, const tirenv_samples *train,
-                          gsl_rng *rng, double *train_sse, tirenv_diag *diag)
+                          tirenv_rng *rng, double *train_sse, tirenv_diag *diag)
 {
     backprop_state *st = state;
     const double eta = st->set.learning_rate, alpha = st->set.momentum;
@@ -86,7 +85,7 @@ static int backprop_epoch(void *state, tirenv_nn *nn, const tirenv_samples *trai
     double out_std;
     tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
     const double inv_std = 1.0 / out_std;
-    gsl_ran_shuffle(rng, st->order, train->n, sizeof st->order[0]);
+    tirenv_rng_shuffle(rng, st->order, train->n);
     double sse = 0;
     for (size_t k = 0; k < train->n; ++k) {
         const size_t s = st->order[k];

@@ -2,18 +2,14 @@
  * feedforward networks with the Marquardt algorithm", 1994): the network is small (49
  * weights), so the p x p normal equations cost little next to the Jacobian itself.
  *
- * Two solvers of the same algorithm: Levenberg damping (J^T J + mu I) dw = -J^T r, and
- * Nielsen's update of mu (1999). The default forms J^T J and J^T r a block of rows at a time
- * (J is never stored whole), solves by Cholesky, and keeps J through rejected steps. The
- * other hands the same residuals to GSL's gsl_multifit_nlinear trust region (trs_lm,
- * Levenberg scaling, Cholesky solver), iterated by hand so that the driver can stop early
- * between iterations. Measured:
- * - Same iterates: on the tests' function both reach the same validation error to 9 digits
- *   after 40 epochs; on the embedded data set the same 77 epochs and errors (one restart).
- * - Time, embedded data set (1919 training samples), those 77 epochs: 0.022 s here, 0.226 s
- *   through GSL, which stores the n x p Jacobian, fills it element by element through
- *   gsl_vector accessors and forms J^T J with gslcblas's reference dsyrk. That dsyrk was 70 %
- *   of the time of this file's first version too, hence lm_accumulate below.
+ * Levenberg damping (J^T J + mu I) dw = -J^T r and Nielsen's update of mu (1999). J^T J and
+ * J^T r are formed a block of rows at a time (J is never stored whole), solved by Cholesky
+ * (core/cholesky.c), and J is kept through rejected steps. Until version 0.1 a second solver handed
+ * the same residuals to GSL's gsl_multifit_nlinear trust region; it took the same 77 epochs
+ * to the same errors on the embedded data set in 0.226 s against this one's 0.022 s (it
+ * stored the n x p Jacobian and formed J^T J with gslcblas's reference dsyrk), so when GSL
+ * left this one stayed, alone, rather than moving to Minpack's lmder, which also
+ * stores the whole Jacobian and factors it by QR (n p^2 flops against J^T J's n p^2/2).
  * - Choices that lost: MATLAB trainlm's update (mu x10 / x0.1) stalled where Nielsen's went
  *   on (tests' function, 100 epochs: training RMS 0.104 against 0.024 mm); GSL's default
  *   More scaling stalled at 2.5 mm on the same function (Levenberg: 0.024 mm); weight decay
@@ -23,11 +19,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_blas.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_linalg.h>
-#include <gsl/gsl_multifit_nlinear.h>
 
+#include "core/cholesky.h"
 #include "train/train_impl.h"
 
 /* Rows of J formed at a time: 256 x 56 doubles (112 KiB) stay in L2. A multiple of
@@ -59,19 +52,12 @@ typedef struct {
     double mu, nu;         /* damping and its growth factor (Nielsen); mu = 0: not started */
     double *A;             /* p x P: J^T J, lower triangle */
     double *b;             /* P: J^T r */
-    gsl_matrix *M;         /* p x p: A + mu I, then its Cholesky factor */
-    gsl_vector *g;         /* p: J^T r */
-    gsl_vector *dw;        /* p: the step */
+    double *M;             /* p x p: A + mu I, then its Cholesky factor */
+    double *dw;            /* p: the step */
     double *w_old;         /* p */
     double *Jc;            /* LM_ROWS x P: a block of rows of J, zero-padded */
     double *yc;            /* LM_ROWS: outputs, then residuals, of the block */
     double *y;             /* n: outputs of a trial step */
-    /* The GSL solver */
-    gsl_multifit_nlinear_workspace *work;
-    gsl_multifit_nlinear_fdf fdf;
-    gsl_vector *x0;        /* p */
-    tirenv_nn *nn;         /* the network and samples the callbacks evaluate */
-    const tirenv_samples *train;
 } lm_state;
 
 static void lm_free(void *state)
@@ -81,25 +67,13 @@ static void lm_free(void *state)
         return;
     free(st->A);
     free(st->b);
-    gsl_matrix_free(st->M);
-    gsl_vector_free(st->g);
-    gsl_vector_free(st->dw);
+    free(st->M);
+    free(st->dw);
     free(st->w_old);
     free(st->Jc);
     free(st->yc);
     free(st->y);
-    if (st->work)
-        gsl_multifit_nlinear_free(st->work);
-    gsl_vector_free(st->x0);
     free(st);
-}
-
-/* The GSL callbacks: residuals r_s = (y_s - t_s)/out_std and their Jacobian at weights x. */
-static void lm_gsl_load(lm_state *st, const gsl_vector *x)
-{
-    double *w = tirenv_nn_weights(st->nn);
-    for (size_t j = 0; j < st->p; ++j)
-        w[j] = gsl_vector_get(x, j);
 }
 
 static double lm_inv_std(const tirenv_nn *nn)
@@ -107,33 +81,6 @@ static double lm_inv_std(const tirenv_nn *nn)
     double out_std;
     tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
     return 1.0 / out_std;
-}
-
-static int lm_gsl_f(const gsl_vector *x, void *params, gsl_vector *f)
-{
-    lm_state *st = params;
-    lm_gsl_load(st, x);
-    const double inv_std = lm_inv_std(st->nn);
-    tirenv_nn_run_batch(st->nn, st->n, st->train->x, st->y);
-    for (size_t s = 0; s < st->n; ++s)
-        gsl_vector_set(f, s, (st->y[s] - st->train->y[s]) *
-                                 tirenv_train__residual_scale(st->train, s, inv_std));
-    return GSL_SUCCESS;
-}
-
-static int lm_gsl_df(const gsl_vector *x, void *params, gsl_matrix *J)
-{
-    lm_state *st = params;
-    lm_gsl_load(st, x);
-    const double inv_std = lm_inv_std(st->nn);
-    for (size_t s = 0; s < st->n; ++s) {
-        gsl_vector_view row = gsl_matrix_row(J, s);
-        tirenv_nn_gradient(st->nn, st->train->x + s * st->train->n_in, st->Jc);
-        const double scale = tirenv_train__residual_scale(st->train, s, inv_std);
-        for (size_t j = 0; j < st->p; ++j)
-            gsl_vector_set(&row.vector, j, st->Jc[j] * scale);
-    }
-    return GSL_SUCCESS;
 }
 
 static int lm_alloc(void **state, const tirenv_nn *nn, const tirenv_samples *train,
@@ -150,40 +97,17 @@ static int lm_alloc(void **state, const tirenv_nn *nn, const tirenv_samples *tra
     st->P = (p + LM_LANES - 1) / LM_LANES * LM_LANES;
     st->A = calloc(p * st->P, sizeof(double));
     st->b = calloc(st->P, sizeof(double));
-    st->M = gsl_matrix_alloc(p, p);
-    st->g = gsl_vector_alloc(p);
-    st->dw = gsl_vector_alloc(p);
+    st->M = malloc(p * p * sizeof(double));
+    st->dw = malloc(p * sizeof(double));
     st->w_old = malloc(p * sizeof(double));
     st->Jc = calloc(LM_ROWS * st->P, sizeof(double));  /* the padding stays 0 */
     st->yc = calloc(LM_ROWS, sizeof(double));
     st->y = malloc(n * sizeof(double));
-    if (!st->A || !st->b || !st->M || !st->g || !st->dw || !st->w_old || !st->Jc || !st->yc ||
+    if (!st->A || !st->b || !st->M || !st->dw || !st->w_old || !st->Jc || !st->yc ||
         !st->y) {
         lm_free(st);
         *state = NULL;
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    }
-    if (st->set.solver == TIRENV_LM_GSL) {
-        if (n < p) {
-            lm_free(st);
-            *state = NULL;
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "lm",
-                                "GSL's solver needs at least as many samples as weights: %zu "
-                                "samples, %zu weights", n, p);
-        }
-        gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
-        params.trs = gsl_multifit_nlinear_trs_lm;
-        params.solver = gsl_multifit_nlinear_solver_cholesky;
-        params.scale = gsl_multifit_nlinear_scale_levenberg;
-        st->work = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p);
-        st->x0 = gsl_vector_alloc(p);
-        if (!st->work || !st->x0) {
-            lm_free(st);
-            *state = NULL;
-            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        }
-        st->fdf = (gsl_multifit_nlinear_fdf){.f = lm_gsl_f, .df = lm_gsl_df, .fvv = NULL,
-                                             .n = n, .p = p, .params = st};
     }
     return TIRENV_OK;
 }
@@ -191,19 +115,11 @@ static int lm_alloc(void **state, const tirenv_nn *nn, const tirenv_samples *tra
 static int lm_set(void *state, tirenv_nn *nn, const tirenv_samples *train, tirenv_diag *diag)
 {
     lm_state *st = state;
+    (void)nn;
+    (void)train;
+    (void)diag;
     st->mu = 0;
     st->nu = 2;
-    st->nn = nn;
-    st->train = train;
-    if (st->set.solver != TIRENV_LM_GSL)
-        return TIRENV_OK;
-    const double *w = tirenv_nn_weights(nn);
-    for (size_t j = 0; j < st->p; ++j)
-        gsl_vector_set(st->x0, j, w[j]);
-    const int status = gsl_multifit_nlinear_init(st->x0, &st->fdf, st->work);
-    if (status)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "lm",
-                            "gsl_multifit_nlinear_init: %s", gsl_strerror(status));
     return TIRENV_OK;
 }
 
@@ -235,7 +151,7 @@ static inline void lm_axpy(double *a, const double *c, size_t c_stride, const do
  * past p, and zero rows up to a multiple of LM_BLOCK). LM_BLOCK rows at a time, so each row
  * of A is loaded and stored once per block; LM_LANES columns at a time, so the lower triangle is
  * rounded up to whole groups and a few entries above the diagonal are summed too (never
- * read). This replaces gslcblas's reference dsyrk, which took 70 % of an LM run. */
+ * read). This replaced gslcblas's reference dsyrk, which took 70 % of an LM run. */
 LM_CLONES static void lm_accumulate(size_t m, size_t p, size_t P, const double *restrict J,
                                     const double *restrict r, double *restrict A,
                                     double *restrict b)
@@ -277,8 +193,6 @@ static double lm_normal_equations(lm_state *st, tirenv_nn *nn, const tirenv_samp
         }
         lm_accumulate(m_blk, p, P, st->Jc, st->yc, st->A, st->b);
     }
-    for (size_t j = 0; j < p; ++j)
-        gsl_vector_set(st->g, j, st->b[j]);
     return sse;
 }
 
@@ -303,21 +217,21 @@ static int lm_epoch_cholesky(lm_state *st, tirenv_nn *nn, const tirenv_samples *
     *train_sse = sse;
     memcpy(st->w_old, w, p * sizeof(double));
     for (;;) {
-        for (size_t i = 0; i < p; ++i) {  /* decomp1 reads the lower triangle only */
-            double *row = gsl_matrix_ptr(st->M, i, 0);
+        for (size_t i = 0; i < p; ++i) {  /* the factorisation reads the lower triangle only */
+            double *row = st->M + i * p;
             memcpy(row, st->A + i * st->P, (i + 1) * sizeof(double));
             row[i] += st->mu;
         }
         /* Not positive definite (J^T J singular to round-off and mu tiny): damp more. */
-        if (gsl_linalg_cholesky_decomp1(st->M) == GSL_SUCCESS &&
-            gsl_linalg_cholesky_solve(st->M, st->g, st->dw) == GSL_SUCCESS) {
+        if (tirenv_core__cholesky(st->M, p, p) == 0) {
+            tirenv_core__cholesky_solve(st->M, p, p, st->b, st->dw);
             /* dw solves (A + mu I) dw = g; the step is -dw. Predicted reduction of sse:
              * dw.(mu dw + g) (twice that of E = sse/2). */
             double predicted = 0;
             for (size_t j = 0; j < p; ++j) {
-                const double d = gsl_vector_get(st->dw, j);
+                const double d = st->dw[j];
                 w[j] = st->w_old[j] - d;
-                predicted += d * (st->mu * d + gsl_vector_get(st->g, j));
+                predicted += d * (st->mu * d + st->b[j]);
             }
             const double sse_new = tirenv_train__sse(nn, train, st->y);
             if (sse_new < sse) {
@@ -336,30 +250,12 @@ static int lm_epoch_cholesky(lm_state *st, tirenv_nn *nn, const tirenv_samples *
     }
 }
 
-static int lm_epoch_gsl(lm_state *st, tirenv_nn *nn, double *train_sse, tirenv_diag *diag)
-{
-    const int status = gsl_multifit_nlinear_iterate(st->work);
-    /* The callbacks leave the weights of the last trial in nn; the accepted point is GSL's. */
-    lm_gsl_load(st, gsl_multifit_nlinear_position(st->work));
-    double norm = gsl_blas_dnrm2(gsl_multifit_nlinear_residual(st->work));
-    *train_sse = norm * norm;
-    (void)nn;
-    if (status == GSL_ENOPROG)
-        return TIRENV_OK;  /* no step lowers the error */
-    if (status)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "lm",
-                            "gsl_multifit_nlinear_iterate: %s", gsl_strerror(status));
-    return TIRENV_ECONTINUE;
-}
-
-static int lm_epoch(void *state, tirenv_nn *nn, const tirenv_samples *train, gsl_rng *rng,
+static int lm_epoch(void *state, tirenv_nn *nn, const tirenv_samples *train, tirenv_rng *rng,
                     double *train_sse, tirenv_diag *diag)
 {
-    lm_state *st = state;
     (void)rng;
-    if (st->set.solver == TIRENV_LM_GSL)
-        return lm_epoch_gsl(st, nn, train_sse, diag);
-    return lm_epoch_cholesky(st, nn, train, train_sse);
+    (void)diag;
+    return lm_epoch_cholesky(state, nn, train, train_sse);
 }
 
 const struct tirenv_trainer_type tirenv_train__lm_type = {

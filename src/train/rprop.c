@@ -63,8 +63,8 @@ static int rprop_set(void *state, tirenv_nn *nn, const tirenv_samples *train,
     return TIRENV_OK;
 }
 
-static int rprop_epoch(void *state, tirenv_nn *nn, const tirenv_samples *train, gsl_rng *rng,
-                       double *train_sse, tirenv_diag *diag)
+static int rprop_epoch(void *state, tirenv_nn *nn, const tirenv_samples *train,
+                       tirenv_rng *rng, double *train_sse, tirenv_diag *diag)
 {
     rprop_state *st = state;
     const tirenv_rprop_settings *c = &st->set;

@@ -211,13 +211,13 @@ uint64_t tirenv_samples_fingerprint(const tirenv_samples *s, uint64_t h)
 
 /* splitmix64 (Steele, Lea and Flood 2014): decorrelates the seeds of consecutive restarts, so
  * that restart r is reproducible on its own, whatever the others drew. */
-static unsigned long restart_seed(unsigned long seed, size_t r)
+static uint64_t restart_seed(unsigned long seed, size_t r)
 {
     uint64_t z = (uint64_t)seed + (uint64_t)r * UINT64_C(0x9e3779b97f4a7c15);
     z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
     z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
     z ^= z >> 31;
-    return (unsigned long)(z & 0xffffffffu);  /* mt19937 takes 32 bits */
+    return z;
 }
 
 static int check_samples(const tirenv_samples *s, const char *name, size_t n_in,
@@ -291,11 +291,6 @@ int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *dia
                             tirenv_nn_input_form_name(s->input),
                             tirenv_nn_target_form_name(s->target), TIRENV_NN_INPUTS,
                             s->topology.size[0]);
-    if (s->loss == TIRENV_TRAIN_LOSS_CURVES && s->lm.solver == TIRENV_LM_GSL)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loss",
-                            "the curves loss reweights the samples every epoch, which GSL's "
-                            "solver (it keeps its own residuals) cannot follow; use the "
-                            "cholesky LM solver");
     const tirenv_backprop_settings *b = &s->backprop;
     if (!(b->learning_rate > 0) || !isfinite(b->learning_rate) || !(b->momentum >= 0) ||
         !(b->momentum < 1))
@@ -311,10 +306,10 @@ int tirenv_train_settings_check(const tirenv_train_settings *s, tirenv_diag *dia
                             "<= delta0 <= delta_max, eta+ > 1, 0 < eta- < 1",
                             r->delta0, r->delta_min, r->delta_max, r->eta_plus, r->eta_minus);
     const tirenv_lm_settings *m = &s->lm;
-    if ((m->solver != TIRENV_LM_CHOLESKY && m->solver != TIRENV_LM_GSL) || !(m->tau > 0) ||
+    if (m->solver != TIRENV_LM_CHOLESKY || !(m->tau > 0) ||
         !(m->mu_max >= m->tau) || !isfinite(m->mu_max))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "lm",
-                            "solver %d, tau %g, mu_max %g; expected cholesky or gsl, 0 < tau "
+                            "solver %d, tau %g, mu_max %g; expected cholesky, 0 < tau "
                             "<= mu_max < inf", (int)m->solver, m->tau, m->mu_max);
     return TIRENV_OK;
 }
@@ -432,7 +427,7 @@ typedef struct {
 typedef struct {
     tirenv_nn *nn, *cand;
     void *state;
-    gsl_rng *rng;
+    tirenv_rng *rng;
     double *y, *ms, *w;
 } restart_state;
 
@@ -442,7 +437,7 @@ static void restart_free(const tirenv_trainer_type *type, restart_state *r)
     tirenv_nn_free(r->cand);
     if (r->state)
         type->free(r->state);
-    gsl_rng_free(r->rng);
+    tirenv_rng_free(r->rng);
     free(r->y);
     free(r->ms);
     free(r->w);
@@ -463,7 +458,7 @@ static int run_restart(const tirenv_trainer_type *type, const tirenv_train_setti
     const size_t n_ms = sel->n_curves > train_in->n_curves ? sel->n_curves : train_in->n_curves;
     tirenv_samples train = *train_in;
     if (!(r.nn = tirenv_nn_clone(proto)) || !(r.cand = tirenv_nn_clone(proto)) ||
-        !(r.rng = gsl_rng_alloc(gsl_rng_mt19937)) || !(r.y = malloc(n_y * sizeof *r.y)) ||
+        !(r.rng = tirenv_rng_alloc(0)) || !(r.y = malloc(n_y * sizeof *r.y)) ||
         !(r.ms = malloc((n_ms ? n_ms : 1) * sizeof *r.ms)) ||
         (curves && !(r.w = malloc(train.n * sizeof *r.w)))) {
         restart_free(type, &r);
@@ -476,7 +471,7 @@ static int run_restart(const tirenv_trainer_type *type, const tirenv_train_setti
         restart_free(type, &r);
         return status;
     }
-    gsl_rng_set(r.rng, restart_seed(s->seed, k));
+    tirenv_rng_seed(r.rng, restart_seed(s->seed, k));
     tirenv_nn_init_weights(r.nn, r.rng);
     if (curves)
         reweight_curves(r.nn, &train, train_w0, r.w, r.y, r.ms);

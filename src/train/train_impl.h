@@ -4,7 +4,7 @@
 #define TIRENV_TRAIN_IMPL_H
 
 #include <math.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "tirenv/train.h"
 
 /* Every trainer minimises E = 1/2 sum_s r_s^2 over the training samples, with the residual
@@ -21,7 +21,7 @@ struct tirenv_trainer_type {
     /* One epoch (a pass over the samples, or one accepted LM step). Sets *train_sse to the
      * error E*2 seen during the epoch. Returns TIRENV_ECONTINUE to go on, TIRENV_OK when
      * converged (no step lowers the error), or a failure. */
-    int (*epoch)(void *state, tirenv_nn *nn, const tirenv_samples *train, gsl_rng *rng,
+    int (*epoch)(void *state, tirenv_nn *nn, const tirenv_samples *train, tirenv_rng *rng,
                  double *train_sse, tirenv_diag *diag);
     void (*free)(void *state);  /* NULL is a no-op */
 };

@@ -3,7 +3,7 @@
  * a file that opened (tracks at several v and border modes, windows, the block reader, the
  * whole grid, the reference line) and the format detector. Seeds: corpus/crg.
  * Build by hand: clang -g -O1 -fsanitize=fuzzer,address,undefined -Iinclude -Isrc
- *   tests/fuzz/fuzz_crg.c <the library's sources> -lgsl -lgslcblas -ljansson -lm
+ *   tests/fuzz/fuzz_crg.c <the library's sources> -lcminpack -ljansson -lm
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdint.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /* libFuzzer entry point for the TNO / Adams 2-D road reader: any bytes as an .rdf file, read
  * for each side, and the format detector. Seeds: corpus/rdf.
  * Build by hand: clang -g -O1 -fsanitize=fuzzer,address,undefined -Iinclude -Isrc
- *   tests/fuzz/fuzz_rdf.c <the library's sources> -lgsl -lgslcblas -ljansson -lm
+ *   tests/fuzz/fuzz_rdf.c <the library's sources> -lcminpack -ljansson -lm
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include <stdint.h>
 
