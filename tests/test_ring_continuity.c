@@ -8,19 +8,19 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <gsl/gsl_rng.h>
+#include "tirenv/rng.h"
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
-static tirenv_profile *random_obstacle(gsl_rng *rng, int kind)
+static tirenv_profile *random_obstacle(tirenv_rng *rng, int kind)
 {
     if (kind == 0)
-        return tirenv_profile_cleat(0.02 + 0.28 * gsl_rng_uniform(rng),
-                                    0.01 + 0.11 * gsl_rng_uniform(rng));
+        return tirenv_profile_cleat(0.02 + 0.28 * tirenv_rng_uniform(rng),
+                                    0.01 + 0.11 * tirenv_rng_uniform(rng));
     if (kind == 1)
-        return tirenv_profile_cleat(0.005, 0.05 + 0.15 * gsl_rng_uniform(rng));
-    return tirenv_profile_step(0, (gsl_rng_uniform(rng) < 0.5 ? -1 : 1) *
-                                      (0.02 + 0.1 * gsl_rng_uniform(rng)));
+        return tirenv_profile_cleat(0.005, 0.05 + 0.15 * tirenv_rng_uniform(rng));
+    return tirenv_profile_step(0, (tirenv_rng_uniform(rng) < 0.5 ? -1 : 1) *
+                                      (0.02 + 0.1 * tirenv_rng_uniform(rng)));
 }
 
 /* The largest |h(x +- 1e-12) - h(x)| (m) and |F_x(x +- 1e-12) - F_x(x)| (N) over the
@@ -33,14 +33,13 @@ static void jumps(tirenv_ring_contact_kind contact, unsigned long seed, double *
     t.ring.contact = contact;
     tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
     assert_non_null(m);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, seed);
+    tirenv_rng *rng = tirenv_rng_alloc(seed);
     tirenv_diag diag;
     *dh_max = *dfx_max = 0;
     *checked = 0;
     for (int k = 0; k < 9; ++k) {
         tirenv_profile *p = random_obstacle(rng, k % 3);
-        const double G = 8000 + 16000 * gsl_rng_uniform(rng);
+        const double G = 8000 + 16000 * tirenv_rng_uniform(rng);
         assert_int_equal(tirenv_model_set(m, p, G, &diag), TIRENV_OK);
         const size_t n = tirenv_profile_size(p);
         const double *X = tirenv_profile_x(p);
@@ -49,7 +48,7 @@ static void jumps(tirenv_ring_contact_kind contact, unsigned long seed, double *
              * near a node: offsets of 0.1 to 0.4 m, drawn. */
             for (int o = 0; o < 3; ++o) {
                 const double x = X[v] + (o == 0 ? 0 : (o == 1 ? 1 : -1) *
-                                                          (0.1 + 0.3 * gsl_rng_uniform(rng)));
+                                                          (0.1 + 0.3 * tirenv_rng_uniform(rng)));
                 tirenv_point a, b, c;
                 assert_int_equal(tirenv_model_eval(m, x, &a, &diag), TIRENV_OK);
                 assert_int_equal(tirenv_model_eval(m, x + 1e-12, &b, &diag), TIRENV_OK);
@@ -61,7 +60,7 @@ static void jumps(tirenv_ring_contact_kind contact, unsigned long seed, double *
         }
         tirenv_profile_free(p);
     }
-    gsl_rng_free(rng);
+    tirenv_rng_free(rng);
     tirenv_model_free(m);
 }
 
