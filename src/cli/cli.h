@@ -202,6 +202,8 @@ void cli_model_warnings(const char *cmd, const tirenv_model *m);
  * exit code on bad input. */
 #define CLI_MAX_POSITIONS 10000000.0
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
+/* The same check and count, without the positions. */
+int cli_positions_check(double x_from, double x_to, double dx, size_t *n_out);
 
 /* The obstacle the options ask for (one required): a generated one, or the --profile file's
  * track (--track, --side); returns an exit code. */
