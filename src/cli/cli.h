@@ -202,8 +202,11 @@ void cli_model_warnings(const char *cmd, const tirenv_model *m);
  * exit code on bad input. */
 #define CLI_MAX_POSITIONS 10000000.0
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
-/* The same check and count, without the positions. */
-int cli_positions_check(double x_from, double x_to, double dx, size_t *n_out);
+/* The same check and count, without the positions, at most max of them. */
+int cli_positions_check(double x_from, double x_to, double dx, double max, size_t *n_out);
+/* Positions a sweep whose rows go out as they are computed may have (tirenv envelope -o
+ * FILE.csv): 1,000 km every 1 mm, beyond which a sweep is surely a typo in --dx. */
+#define CLI_MAX_STREAMED_POSITIONS 1e9
 
 /* The obstacle the options ask for (one required): a generated one, or the --profile file's
  * track (--track, --side); returns an exit code. */

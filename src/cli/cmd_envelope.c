@@ -494,7 +494,7 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     tirenv_profile_extent(prof[0], &first, &last);
     const tirenv_positions s = sweep(o, m, first, last);
     size_t n = 0;
-    int code = cli_positions_check(s.x_from, s.x_to, s.dx, &n);
+    int code = cli_positions_check(s.x_from, s.x_to, s.dx, CLI_MAX_STREAMED_POSITIONS, &n);
     if (code)
         return code;
     tirenv_diag diag;
@@ -515,8 +515,16 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     if (!status && !(status = whole_open(r, m, load, s.x_from, s.dx, n, &w, &diag))) {
         const size_t n_chunks = n / CLI_CHUNK + (n % CLI_CHUNK != 0);
         const size_t round = whole_streams(r, &w) ? cli_chunks_round(c) : n_chunks;
+        if (!whole_streams(r, &w) || w.road ? (double)n > CLI_MAX_POSITIONS : 0)
+            status = tirenv_error(&diag, TIRENV_ERANGE, "", 0, "--dx",
+                                 "%zu positions is too many to hold in memory (at most %.0f "
+                                 "%s); write the CSV curve to a file with -o FILE.csv, whose "
+                                 "rows go out as they are computed, or raise --dx",
+                                 n, CLI_MAX_POSITIONS,
+                                 w.road ? "in an effective road"
+                                        : "written to standard output or with --detail");
         const size_t cap = round * CLI_CHUNK < n ? round * CLI_CHUNK : n;
-        if (!(pt = malloc((cap ? cap : 1) * sizeof *pt)))
+        if (!status && !(pt = malloc((cap ? cap : 1) * sizeof *pt)))
             status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
         for (size_t c0 = 0, k0 = 0; c0 < n_chunks && !status; c0 += round) {
             size_t n_k = 0;

@@ -238,7 +238,7 @@ int cli_load(const cli_options *o, tirenv_model *m, double *load)
 
 /* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
  * multiplication so that no error accumulates over thousands of steps. */
-int cli_positions_check(double x_from, double x_to, double dx, size_t *n_out)
+int cli_positions_check(double x_from, double x_to, double dx, double max, size_t *n_out)
 {
     if (!(dx > 0) || !(x_to >= x_from)) {
         cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
@@ -246,9 +246,8 @@ int cli_positions_check(double x_from, double x_to, double dx, size_t *n_out)
         return CLI_EXIT_USAGE;
     }
     const double steps = floor((x_to + dx * 1e-9 - x_from) / dx);
-    if (!(steps < CLI_MAX_POSITIONS)) {
-        cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1,
-                  CLI_MAX_POSITIONS);
+    if (!(steps < max)) {
+        cli_error("%.0f positions is too many (at most %.0f); raise --dx", steps + 1, max);
         return CLI_EXIT_USAGE;
     }
     *n_out = tirenv_positions_count(x_from, x_to, dx);
@@ -258,7 +257,7 @@ int cli_positions_check(double x_from, double x_to, double dx, size_t *n_out)
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out)
 {
     size_t n = 0;
-    const int code = cli_positions_check(x_from, x_to, dx, &n);
+    const int code = cli_positions_check(x_from, x_to, dx, CLI_MAX_POSITIONS, &n);
     if (code)
         return code;
     double *x = malloc(n * sizeof *x);
