@@ -16,7 +16,7 @@ static int timed_sweep(cli_chunks *c, size_t n, tirenv_point pt[], double *secon
     const size_t n_chunks = n / CLI_CHUNK + (n % CLI_CHUNK != 0);
     size_t done = 0;
     const double t0 = cli_wall_seconds();
-    const int status = cli_chunks_run(c, 0, n_chunks, pt, &done, diag);
+    const int status = cli_chunks_run(c, 0, n_chunks, pt, &done, NULL, NULL, diag);
     *seconds = fmin(*seconds, cli_wall_seconds() - t0);
     return status;
 }

@@ -483,6 +483,32 @@ static void to_ground(const run *r, const tirenv_model *m, tirenv_profile *const
     }
 }
 
+/* Points computed and not yet written: --relative-to ground applied, written, tallied. */
+typedef struct {
+    const run *r;
+    tirenv_model *m;             /* its tire only: another thread may be computing with it */
+    tirenv_profile *const *prof;
+    whole_out *w;
+    tally *t;
+    tirenv_point *pt;
+    size_t k0, n;                /* the sweep's points [k0, k0 + n) */
+} pending;
+
+static int pending_write(void *ctx, tirenv_diag *diag)
+{
+    pending *p = ctx;
+    if (p->n == 0)
+        return TIRENV_OK;
+    if (p->r->e->relative == CLI_RELATIVE_GROUND)
+        to_ground(p->r, p->m, p->prof, p->pt, p->n);
+    const int status = whole_write(p->r, p->m, p->prof[0], p->pt, p->k0, p->n, p->w, diag);
+    for (size_t k = 0; k < p->n && !status; ++k)
+        tally_add(p->t, &p->pt[k]);
+    p->k0 += p->n;
+    p->n = 0;
+    return status;
+}
+
 /* The sweep through tirenv_model_envelope in chunks of CLI_CHUNK positions on --jobs threads
  * (envelope_chunks.h), a round of chunks at a time when the output can take them as they come
  * (whole_streams), else all of them before the first is written. */
@@ -503,7 +529,7 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     for (size_t k = 0; k < r->road.n; ++k)
         tracks[k] = prof[k];
     whole_out w;
-    tirenv_point *pt = NULL;
+    tirenv_point *pt[2] = {NULL, NULL};
     cli_chunks *c = NULL;
     tally t = {0};
     int status = tirenv_model_set_tracks(m, r->road.n, tracks, NULL, load, &diag);
@@ -524,19 +550,20 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
                                  w.road ? "in an effective road"
                                         : "written to standard output or with --detail");
         const size_t cap = round * CLI_CHUNK < n ? round * CLI_CHUNK : n;
-        if (!status && !(pt = malloc((cap ? cap : 1) * sizeof *pt)))
-            status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        for (size_t c0 = 0, k0 = 0; c0 < n_chunks && !status; c0 += round) {
+        for (int b = 0; b < 1 + (n_chunks > round) && !status; ++b)
+            if (!(pt[b] = malloc((cap ? cap : 1) * sizeof *pt[b])))
+                status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        /* A round's chunks are computed into one buffer while the previous round's points,
+         * in the other, are written beside them. */
+        pending pw = {.r = r, .m = m, .prof = prof, .w = &w, .t = &t};
+        for (size_t c0 = 0, b = 0; c0 < n_chunks && !status; c0 += round, b ^= 1) {
             size_t n_k = 0;
-            status = cli_chunks_run(c, c0, round, pt, &n_k, &diag);
-            if (!status && r->e->relative == CLI_RELATIVE_GROUND)
-                to_ground(r, m, prof, pt, n_k);
-            if (!status)
-                status = whole_write(r, m, prof[0], pt, k0, n_k, &w, &diag);
-            for (size_t k = 0; k < n_k && !status; ++k)
-                tally_add(&t, &pt[k]);
-            k0 += n_k;
+            status = cli_chunks_run(c, c0, round, pt[b], &n_k, pending_write, &pw, &diag);
+            pw.pt = pt[b];
+            pw.n = n_k;
         }
+        if (!status)
+            status = pending_write(&pw, &diag);
         status = whole_close(&w, status, &diag);
     }
     if (status)
@@ -544,7 +571,8 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     else
         summary(r->cmd, m, o, load, &t);
     cli_chunks_free(c);
-    free(pt);
+    free(pt[0]);
+    free(pt[1]);
     return code;
 }
 

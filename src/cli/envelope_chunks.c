@@ -19,6 +19,8 @@ struct cli_chunks {
     /* the call under way */
     size_t c0;
     tirenv_point *pt;
+    int (*side)(void *side_ctx, tirenv_diag *diag);  /* item 0 if not NULL */
+    void *side_ctx;
 };
 
 void cli_chunks_free(cli_chunks *c)
@@ -89,6 +91,11 @@ size_t cli_chunks_round(const cli_chunks *c)
 static int chunk(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
 {
     cli_chunks *c = ctx;
+    if (c->side) {
+        if (item == 0)
+            return c->side(c->side_ctx, diag);
+        --item;
+    }
     const size_t k0 = (c->c0 + item) * CLI_CHUNK;
     const size_t n = c->n - k0 < CLI_CHUNK ? c->n - k0 : CLI_CHUNK;
     double *x = c->x + worker * CLI_CHUNK;
@@ -102,12 +109,15 @@ static int chunk(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
 }
 
 int cli_chunks_run(cli_chunks *c, size_t c0, size_t n_c, tirenv_point pt[], size_t *n_out,
+                   int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
                    tirenv_diag *diag)
 {
+    c->side = side;
+    c->side_ctx = side_ctx;
     const size_t n_chunks = c->n / CLI_CHUNK + (c->n % CLI_CHUNK != 0);
     if (c0 >= n_chunks) {
         *n_out = 0;
-        return TIRENV_OK;
+        return side ? side(side_ctx, diag) : TIRENV_OK;
     }
     if (n_c > n_chunks - c0)
         n_c = n_chunks - c0;
@@ -115,5 +125,5 @@ int cli_chunks_run(cli_chunks *c, size_t c0, size_t n_c, tirenv_point pt[], size
     c->pt = pt;
     const size_t end = (c0 + n_c) * CLI_CHUNK;
     *n_out = (end < c->n ? end : c->n) - c0 * CLI_CHUNK;
-    return tirenv_parallel_for(n_c, c->jobs, chunk, NULL, c, diag);
+    return tirenv_parallel_for(n_c + (side != NULL), c->jobs, chunk, NULL, c, diag);
 }

@@ -26,9 +26,12 @@ int cli_chunks_open(tirenv_model *m, const tirenv_model_type *type, const cli_op
 size_t cli_chunks_round(const cli_chunks *c);
 
 /* Computes the chunks [c0, c0 + n_c) (clipped to the sweep) into pt[] (their first position
- * at pt[0]), the chunks side by side; *n_out is how many points that is. On failure, the
- * failure of the lowest position that failed, as the serial loop would report it. */
+ * at pt[0]), the chunks side by side; *n_out is how many points that is. If side is not NULL,
+ * side(side_ctx, diag) runs once beside them, as the item before the first chunk (a writer of
+ * the previous round's points, which must not touch pt). On failure, the failure of the
+ * first item that failed (side, then the chunks by position), as the serial loop reports it. */
 int cli_chunks_run(cli_chunks *c, size_t c0, size_t n_c, tirenv_point pt[], size_t *n_out,
+                   int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
                    tirenv_diag *diag);
 
 /* Frees the models it made (not m). NULL does nothing. */
