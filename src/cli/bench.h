@@ -32,4 +32,12 @@ int cli_bench_fmt(long repeat);
 int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, const tirenv_nn *nn,
                        double l_c, size_t n, const double x[], long repeat, tirenv_diag *diag);
 
+/* tirenv envelope's chunked sweep (envelope_chunks.h) of the springs model over the road at
+ * contact length l_c (m), n positions from x_from every dx (m), on 1 and on 2 threads,
+ * interleaved, best of repeat: the wall times (envelope_jobs1_s, envelope_jobs2_s), their
+ * ratio (envelope_jobs2_over_jobs1) and whether the points are the same bits
+ * (envelope_jobs_identical; fails if not). */
+int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l_c,
+                   double x_from, double dx, size_t n, long repeat, tirenv_diag *diag);
+
 #endif

@@ -213,15 +213,15 @@ void cli_model_warnings(const char *cmd, const tirenv_model *m);
  * exit code on bad input. */
 #define CLI_MAX_POSITIONS 10000000.0
 
-/* Most positions of a streamed sweep (envelope --stream), which holds none of them: 100 km
- * every 1 mm, about 6 GB of CSV. Beyond it a sweep is a typo in --x-to or --dx, and would
- * fill the disk before it ends. */
+/* Most positions of a sweep whose rows go out as they are computed (envelope --stream, and
+ * -o FILE.csv in whole mode), which holds none of them: 100 km every 1 mm, about 6 GB of CSV.
+ * Beyond it a sweep is a typo in --x-to or --dx, and would fill the disk before it ends. */
 #define CLI_MAX_STREAM_POSITIONS 100000000.0
 
 /* Checks a sweep from x_from to x_to (m) every dx (m) has at most max positions (what
- * tirenv_positions_count allows, too); prints why not, naming the options, and returns an
- * exit code. */
-int cli_positions_check(double x_from, double x_to, double dx, double max);
+ * tirenv_positions_count allows, too) and sets *n_out to their count; prints why not, naming
+ * the options, and returns an exit code. */
+int cli_positions_check(double x_from, double x_to, double dx, double max, size_t *n_out);
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
 
 /* The obstacle the options ask for (one required): a generated one, or the --profile file's

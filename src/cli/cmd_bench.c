@@ -552,6 +552,8 @@ static int bench_road(const tirenv_tire *tire, long repeat)
         cli_bench_figure("springs_over_rigid_road", rate[0] / rate[2]);
         cli_bench_say("  springs / rigid time over the road: %.1f x\n", rate[0] / rate[2]);
     }
+    if (!status)
+        status = cli_bench_jobs(tire, road, road_l_c, 0, road_dx, n, repeat, &diag);
     double t_train = 0;
     tirenv_diag why;
     tirenv_diag_clear(&why);

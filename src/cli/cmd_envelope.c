@@ -10,11 +10,11 @@
 
 #include "cli/csv_row.h"
 #include "cli/envelope.h"
+#include "cli/envelope_chunks.h"
 #include "cli/level.h"
 #include "cli/road_out.h"
 
 static const double rise_threshold = 1e-4;  /* first rise: h above 0.1 mm, m */
-enum { SWEEP_CHUNK = 8192 };  /* positions computed and written at a time into a file */
 
 static void usage(FILE *fp)
 {
@@ -65,7 +65,11 @@ static void usage(FILE *fp)
           "                       evaluation at each row's (x, z); one track, no --stream\n",
           fp);
     cli_help_tire(fp, 1);
-    fputs("  -h, --help           show this help\n", fp);
+    cli_help_jobs(fp);
+    fputs("                       (without --stream: the positions in chunks of 8192, each\n"
+          "                       solved from a cold start at its first position)\n"
+          "  -h, --help           show this help\n",
+          fp);
     cli_help_obstacle(fp);
 }
 
@@ -184,6 +188,7 @@ static cli_envelope_opts envelope_default(void)
 typedef struct {
     const char *cmd;
     const cli_options *o;
+    const tirenv_model_type *type;
     const cli_envelope_opts *e;
     cli_road road;
     tirenv_profile_format out_format;  /* CSV: the curve; CRG, RDF: the effective road */
@@ -353,7 +358,9 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
         return cli_fail(status, &diag);
     const tirenv_positions s = sweep(o, m, first, last);
     const double x_from = s.x_from, x_to = s.x_to, dx = s.dx;
-    const int bad = cli_positions_check(x_from, x_to, dx, CLI_MAX_STREAM_POSITIONS);
+    size_t n_positions = 0;
+    const int bad = cli_positions_check(x_from, x_to, dx, CLI_MAX_STREAM_POSITIONS,
+                                        &n_positions);
     if (bad)
         return bad;
     tirenv_profile_file_reader *in = NULL;
@@ -427,10 +434,9 @@ static int whole_open(const run *r, const tirenv_model *m, double load, double x
  * target before commit), so that a long road's points never all sit in memory, whose first
  * touch costs as much as formatting them. Written through (stdout, a FIFO) or with --detail,
  * the sweep is computed whole first, so that a failure midway writes nothing. */
-static size_t whole_chunk(const run *r, const whole_out *w, size_t n)
+static int whole_streams(const run *r, const whole_out *w)
 {
-    const int atomic = w->road || tirenv_outfile_is_atomic(&w->out);
-    return atomic && !r->e->detail && n > SWEEP_CHUNK ? SWEEP_CHUNK : n;
+    return (w->road || tirenv_outfile_is_atomic(&w->out)) && !r->e->detail;
 }
 
 /* Writes the points [k0, k0 + n) of the sweep. */
@@ -484,16 +490,44 @@ static void to_ground(const run *r, const tirenv_model *m, tirenv_profile *const
     }
 }
 
-/* The sweep through tirenv_model_envelope, a chunk at a time (whole_chunk). */
+/* Points computed and not yet written: --relative-to ground applied, written, tallied. */
+typedef struct {
+    const run *r;
+    tirenv_model *m;             /* its tire only: another thread may be computing with it */
+    tirenv_profile *const *prof;
+    whole_out *w;
+    tally *t;
+    tirenv_point *pt;
+    size_t k0, n;                /* the sweep's points [k0, k0 + n) */
+} pending;
+
+static int pending_write(void *ctx, tirenv_diag *diag)
+{
+    pending *p = ctx;
+    if (p->n == 0)
+        return TIRENV_OK;
+    if (p->r->e->relative == CLI_RELATIVE_GROUND)
+        to_ground(p->r, p->m, p->prof, p->pt, p->n);
+    const int status = whole_write(p->r, p->m, p->prof[0], p->pt, p->k0, p->n, p->w, diag);
+    for (size_t k = 0; k < p->n && !status; ++k)
+        tally_add(p->t, &p->pt[k]);
+    p->k0 += p->n;
+    p->n = 0;
+    return status;
+}
+
+/* The sweep through tirenv_model_envelope in chunks of CLI_CHUNK positions on --jobs threads
+ * (envelope_chunks.h), a round of chunks at a time when the output can take them as they come
+ * (whole_streams), else all of them before the first is written. */
 static int envelope_whole(const run *r, tirenv_model *m, double load,
                           tirenv_profile *const prof[])
 {
     const cli_options *o = r->o;
-    double first, last, *x = NULL;
+    double first, last;
     tirenv_profile_extent(prof[0], &first, &last);
     const tirenv_positions s = sweep(o, m, first, last);
     size_t n = 0;
-    int code = cli_positions(s.x_from, s.x_to, s.dx, &x, &n);
+    int code = cli_positions_check(s.x_from, s.x_to, s.dx, CLI_MAX_STREAM_POSITIONS, &n);
     if (code)
         return code;
     tirenv_diag diag;
@@ -502,33 +536,50 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     for (size_t k = 0; k < r->road.n; ++k)
         tracks[k] = prof[k];
     whole_out w;
-    tirenv_point *pt = NULL;
+    tirenv_point *pt[2] = {NULL, NULL};
+    cli_chunks *c = NULL;
     tally t = {0};
     int status = tirenv_model_set_tracks(m, r->road.n, tracks, NULL, load, &diag);
     if (!status)
         cli_model_warnings(r->cmd, m);
+    if (!status)
+        status = cli_chunks_open(m, r->type, o, r->road.n, tracks, load, s.x_from, s.dx, n,
+                                 o->jobs, &c, &diag);
     if (!status && !(status = whole_open(r, m, load, s.x_from, s.dx, n, &w, &diag))) {
-        const size_t chunk = whole_chunk(r, &w, n);
-        if (!(pt = malloc(chunk * sizeof *pt)))
-            status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        for (size_t k0 = 0; k0 < n && !status; k0 += chunk) {
-            const size_t n_k = n - k0 < chunk ? n - k0 : chunk;
-            status = tirenv_model_envelope(m, n_k, x + k0, pt, NULL, &diag);
-            if (!status && r->e->relative == CLI_RELATIVE_GROUND)
-                to_ground(r, m, prof, pt, n_k);
-            if (!status)
-                status = whole_write(r, m, prof[0], pt, k0, n_k, &w, &diag);
-            for (size_t k = 0; k < n_k && !status; ++k)
-                tally_add(&t, &pt[k]);
+        const size_t n_chunks = n / CLI_CHUNK + (n % CLI_CHUNK != 0);
+        const size_t round = whole_streams(r, &w) ? cli_chunks_round(c) : n_chunks;
+        if (!whole_streams(r, &w) || w.road ? (double)n > CLI_MAX_POSITIONS : 0)
+            status = tirenv_error(&diag, TIRENV_ERANGE, "", 0, "--dx",
+                                 "%zu positions is too many to hold in memory (at most %.0f "
+                                 "%s); write the CSV curve to a file with -o FILE.csv, whose "
+                                 "rows go out as they are computed, or raise --dx",
+                                 n, CLI_MAX_POSITIONS,
+                                 w.road ? "in an effective road"
+                                        : "written to standard output or with --detail");
+        const size_t cap = round * CLI_CHUNK < n ? round * CLI_CHUNK : n;
+        for (int b = 0; b < 1 + (n_chunks > round) && !status; ++b)
+            if (!(pt[b] = malloc((cap ? cap : 1) * sizeof *pt[b])))
+                status = tirenv_error(&diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        /* A round's chunks are computed into one buffer while the previous round's points,
+         * in the other, are written beside them. */
+        pending pw = {.r = r, .m = m, .prof = prof, .w = &w, .t = &t};
+        for (size_t c0 = 0, b = 0; c0 < n_chunks && !status; c0 += round, b ^= 1) {
+            size_t n_k = 0;
+            status = cli_chunks_run(c, c0, round, pt[b], &n_k, pending_write, &pw, &diag);
+            pw.pt = pt[b];
+            pw.n = n_k;
         }
+        if (!status)
+            status = pending_write(&pw, &diag);
         status = whole_close(&w, status, &diag);
     }
     if (status)
         code = cli_fail(status, &diag);
     else
         summary(r->cmd, m, o, load, &t);
-    free(pt);
-    free(x);
+    cli_chunks_free(c);
+    free(pt[0]);
+    free(pt[1]);
     return code;
 }
 
@@ -553,7 +604,7 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
                   "stream", cmd, tirenv_model_type_name(type));
         return CLI_EXIT_USAGE;
     }
-    run r = {.cmd = cmd, .o = o, .e = e, .out_format = TIRENV_PROFILE_CSV};
+    run r = {.cmd = cmd, .o = o, .type = type, .e = e, .out_format = TIRENV_PROFILE_CSV};
     cli_road_out_wanted(o->output, &r.out_format);
     if (e->detail && r.out_format != TIRENV_PROFILE_CSV) {
         cli_error("%s: --detail adds columns to the CSV curve; -o %s writes an effective road",
@@ -600,7 +651,7 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
                           .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 2),
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
                                     CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
-                                    CLI_NETWORK | CLI_EXTRAPOLATE};
+                                    CLI_NETWORK | CLI_EXTRAPOLATE | CLI_JOBS};
     return cli_parse(&p, argc, argv, o);
 }
 

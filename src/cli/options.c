@@ -276,7 +276,7 @@ int cli_load(const cli_options *o, tirenv_model *m, double *load)
 
 /* Positions x_k = x_from + k*dx up to x_to (with a 1e-9 dx allowance for round-off), by
  * multiplication so that no error accumulates over thousands of steps. */
-int cli_positions_check(double x_from, double x_to, double dx, double max)
+int cli_positions_check(double x_from, double x_to, double dx, double max, size_t *n_out)
 {
     if (!(dx > 0) || !(x_to >= x_from)) {
         cli_error("expected --dx > 0 and --x-to >= --x-from, got dx %g m from %g to %g m", dx,
@@ -295,15 +295,16 @@ int cli_positions_check(double x_from, double x_to, double dx, double max)
                   dx, fabs(x_from) > fabs(x_to) ? x_from : x_to);
         return CLI_EXIT_USAGE;
     }
+    *n_out = tirenv_positions_count(x_from, x_to, dx);
     return CLI_EXIT_OK;
 }
 
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out)
 {
-    const int code = cli_positions_check(x_from, x_to, dx, CLI_MAX_POSITIONS);
+    size_t n = 0;
+    const int code = cli_positions_check(x_from, x_to, dx, CLI_MAX_POSITIONS, &n);
     if (code)
         return code;
-    const size_t n = tirenv_positions_count(x_from, x_to, dx);
     double *x = malloc(n * sizeof *x);
     if (!x)
         return cli_fail(TIRENV_ENOMEM, NULL);

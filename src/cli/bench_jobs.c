@@ -1,0 +1,68 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* tirenv bench: one road's sweep on one thread and on two (tirenv envelope --jobs), in chunks
+ * of CLI_CHUNK positions each from a cold start (envelope_chunks.h), the runs interleaved so
+ * that the load of the machine falls on both alike. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/bench.h"
+#include "cli/envelope_chunks.h"
+
+/* The whole sweep through c, into pt; *seconds is its wall time if less. */
+static int timed_sweep(cli_chunks *c, size_t n, tirenv_point pt[], double *seconds,
+                       tirenv_diag *diag)
+{
+    const size_t n_chunks = n / CLI_CHUNK + (n % CLI_CHUNK != 0);
+    size_t done = 0;
+    const double t0 = cli_wall_seconds();
+    const int status = cli_chunks_run(c, 0, n_chunks, pt, &done, NULL, NULL, diag);
+    *seconds = fmin(*seconds, cli_wall_seconds() - t0);
+    return status;
+}
+
+int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l_c,
+                   double x_from, double dx, size_t n, long repeat, tirenv_diag *diag)
+{
+    const tirenv_model_type *type = tirenv_model_type_find("springs");
+    tirenv_model *m = tirenv_model_alloc(type, tire);
+    tirenv_point *pt1 = malloc(n * sizeof *pt1), *pt2 = malloc(n * sizeof *pt2);
+    cli_chunks *c1 = NULL, *c2 = NULL;
+    double load = 0;
+    int status = m && pt1 && pt2 ? tirenv_model_load_for_contact_length(m, l_c, &load, diag)
+                                 : TIRENV_ENOMEM;
+    if (!status)
+        status = tirenv_model_set(m, road, load, diag);
+    /* c1 and c2 share m as their first thread's model and restore its cold state */
+    if (!status)
+        status = cli_chunks_open(m, type, NULL, 1, &road, load, x_from, dx, n, 1, &c1, diag);
+    if (!status)
+        status = cli_chunks_open(m, type, NULL, 1, &road, load, x_from, dx, n, 2, &c2, diag);
+    double t1 = INFINITY, t2 = INFINITY;
+    for (long rep = 0; rep < repeat && !status; ++rep) {
+        status = timed_sweep(c1, n, pt1, &t1, diag);
+        if (!status)
+            status = timed_sweep(c2, n, pt2, &t2, diag);
+    }
+    if (!status) {
+        const int same = memcmp(pt1, pt2, n * sizeof *pt1) == 0;
+        cli_bench_figure("envelope_jobs1_s", t1);
+        cli_bench_figure("envelope_jobs2_s", t2);
+        cli_bench_figure("envelope_jobs2_over_jobs1", t2 / t1);
+        cli_bench_figure("envelope_jobs_identical", same);
+        cli_bench_say("  springs, tirenv envelope's chunked sweep (%d positions a chunk, each "
+                      "from a cold start),\n  --jobs 2 / --jobs 1 wall time: %.3f (target "
+                      "0.62: %s), points %s\n",
+                      CLI_CHUNK, t2 / t1, t2 / t1 <= 0.62 ? "met" : "missed",
+                      same ? "identical" : "DIFFERENT");
+        if (!same)
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
+                                  "the sweep on 2 threads differs from the sweep on 1");
+    }
+    cli_chunks_free(c1);
+    cli_chunks_free(c2);
+    tirenv_model_free(m);
+    free(pt1);
+    free(pt2);
+    return status;
+}

@@ -1,0 +1,129 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* One sweep on several threads (envelope_chunks.h). A model instance is not thread-safe, so
+ * every thread has its own, set on the same (read-only) profiles; the cold state saved from
+ * the caller's model right after it was set is restored before every chunk, so that no chunk
+ * depends on which thread ran it, nor on what that thread ran before. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/envelope_chunks.h"
+
+struct cli_chunks {
+    size_t jobs;
+    tirenv_model **models;  /* one a thread; models[0] is the caller's */
+    double *x;              /* CLI_CHUNK positions a thread */
+    void *cold;             /* the state each chunk starts from */
+    size_t cold_size;
+    double x_from, dx;      /* m */
+    size_t n;               /* positions in the sweep */
+    /* the call under way */
+    size_t c0;
+    tirenv_point *pt;
+    int (*side)(void *side_ctx, tirenv_diag *diag);  /* item 0 if not NULL */
+    void *side_ctx;
+};
+
+void cli_chunks_free(cli_chunks *c)
+{
+    if (!c)
+        return;
+    for (size_t w = 1; c->models && w < c->jobs; ++w)
+        tirenv_model_free(c->models[w]);
+    free(c->models);
+    free(c->x);
+    free(c->cold);
+    free(c);
+}
+
+static int no_memory(tirenv_diag *diag)
+{
+    return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+}
+
+int cli_chunks_open(tirenv_model *m, const tirenv_model_type *type, const cli_options *o,
+                    size_t n_tracks, const tirenv_profile *const tracks[], double load,
+                    double x_from, double dx, size_t n, size_t jobs, cli_chunks **out,
+                    tirenv_diag *diag)
+{
+    *out = NULL;
+    const size_t n_chunks = n / CLI_CHUNK + (n % CLI_CHUNK != 0);
+    if (jobs < 1)
+        jobs = 1;
+    if (jobs > n_chunks)
+        jobs = n_chunks ? n_chunks : 1;
+    cli_chunks *c = calloc(1, sizeof *c);
+    if (!c)
+        return no_memory(diag);
+    c->jobs = jobs;
+    c->x_from = x_from;
+    c->dx = dx;
+    c->n = n;
+    c->cold_size = tirenv_model_state_size(m);
+    c->models = calloc(jobs, sizeof *c->models);
+    c->x = malloc(jobs * CLI_CHUNK * sizeof *c->x);
+    c->cold = malloc(c->cold_size ? c->cold_size : 1);
+    int status = c->models && c->x && c->cold ? TIRENV_OK : no_memory(diag);
+    if (!status) {
+        c->models[0] = m;
+        status = tirenv_model_state_save(m, c->cold, c->cold_size, diag);
+    }
+    for (size_t w = 1; w < jobs && !status; ++w) {
+        if (cli_model(type, tirenv_model_tire(m), o, &c->models[w]))
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "a model for thread %zu",
+                                  w);
+        else
+            status = tirenv_model_set_tracks(c->models[w], n_tracks, tracks, NULL, load, diag);
+    }
+    if (status) {
+        cli_chunks_free(c);
+        return status;
+    }
+    *out = c;
+    return TIRENV_OK;
+}
+
+size_t cli_chunks_round(const cli_chunks *c)
+{
+    return 4 * c->jobs;
+}
+
+/* One chunk: item i of the call is the sweep's chunk c0 + i. */
+static int chunk(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
+{
+    cli_chunks *c = ctx;
+    if (c->side) {
+        if (item == 0)
+            return c->side(c->side_ctx, diag);
+        --item;
+    }
+    const size_t k0 = (c->c0 + item) * CLI_CHUNK;
+    const size_t n = c->n - k0 < CLI_CHUNK ? c->n - k0 : CLI_CHUNK;
+    double *x = c->x + worker * CLI_CHUNK;
+    for (size_t k = 0; k < n; ++k)
+        x[k] = c->x_from + (double)(k0 + k) * c->dx;
+    tirenv_model *m = c->models[worker];
+    int status = tirenv_model_state_restore(m, c->cold, c->cold_size, diag);
+    if (!status)
+        status = tirenv_model_envelope(m, n, x, c->pt + item * CLI_CHUNK, NULL, diag);
+    return status;
+}
+
+int cli_chunks_run(cli_chunks *c, size_t c0, size_t n_c, tirenv_point pt[], size_t *n_out,
+                   int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
+                   tirenv_diag *diag)
+{
+    c->side = side;
+    c->side_ctx = side_ctx;
+    const size_t n_chunks = c->n / CLI_CHUNK + (c->n % CLI_CHUNK != 0);
+    if (c0 >= n_chunks) {
+        *n_out = 0;
+        return side ? side(side_ctx, diag) : TIRENV_OK;
+    }
+    if (n_c > n_chunks - c0)
+        n_c = n_chunks - c0;
+    c->c0 = c0;
+    c->pt = pt;
+    const size_t end = (c0 + n_c) * CLI_CHUNK;
+    *n_out = (end < c->n ? end : c->n) - c0 * CLI_CHUNK;
+    return tirenv_parallel_for(n_c + (side != NULL), c->jobs, chunk, NULL, c, diag);
+}
