@@ -6,11 +6,21 @@
 #   function and does not use jansson.
 # AUX (the convenience layer): file formats (.tir, .veh, CSV, JSON), rig simulation and import,
 #   data sets, study, compare, plots. It is written against the core's public headers alone.
+#   Its modules are listed from the bottom up, and each uses only those before it (checked by
+#   the includes and by the symbols):
+#     io       bytes in and out: CSV lines, number text, sources, atomic output files and
+#              directories, temporary files;
+#     formats  the file formats: property files and units, .tir, .veh, CSV profiles and
+#              streams, OpenCRG, RDF, network JSON, curves;
+#     rig      the virtual rig and the import of rig logs;
+#     dataset  data sets: reading, building the embedded ones;
+#     sweep    sweeps over a grid of cases, their shards and merge;
+#     study    fit, compare, findings, report and plots.
 # The CLI (src/cli) uses public headers of both layers and its own cli/ headers only.
 
 # Directories under src/, one module each.
 set(TIRENV_CORE_DIRS core profile model nn train ride)
-set(TIRENV_AUX_DIRS data study formats)
+set(TIRENV_AUX_DIRS io formats rig dataset sweep study)
 
 # Every public header under include/tirenv/ belongs to exactly one layer; the check fails on a
 # header listed in neither, so a new header must be placed here. (tirenv.h, the umbrella, and

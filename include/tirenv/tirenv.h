@@ -6,7 +6,7 @@
  * nn_road, train, vehicle, ride, comfort (src/core, src/profile, src/model, src/nn,
  * src/train, src/ride include no other header). The auxiliary layer reads and writes files
  * and runs the study on top of the core's public headers alone: io, curve, rig, dataset,
- * nn_file, vehicle_file, study, plot (src/data, src/study). */
+ * nn_file, vehicle_file, study, plot (src/io, src/formats, src/rig, src/dataset, src/sweep, src/study). */
 #ifndef TIRENV_TIRENV_H
 #define TIRENV_TIRENV_H
 

@@ -26,7 +26,7 @@
 #include <gsl/gsl_fft_halfcomplex.h>
 #include <gsl/gsl_rng.h>
 
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 tirenv_road_settings tirenv_road_default(void)
 {
