@@ -254,8 +254,8 @@ typedef struct {
     FILE *fp;
     cli_road_out *road;
     tally t;
-    cli_level_stream *level;  /* NULL: h relative to the datum */
-    tirenv_diag diag;         /* the road writer's or the level's failure */
+    tirenv_level_stream *level; /* NULL: h relative to the datum */
+    tirenv_diag diag;           /* the road writer's or the level's failure */
 } stream_out;
 
 static int stream_row(void *ctx, const tirenv_point *pt)
@@ -265,7 +265,7 @@ static int stream_row(void *ctx, const tirenv_point *pt)
     int status = TIRENV_OK;
     if (s->level) {
         double level;
-        if ((status = cli_level_stream_at(s->level, pt->x, &level, &s->diag)))
+        if ((status = tirenv_level_stream_at(s->level, pt->x, &level, &s->diag)))
             return status;
         row.h -= level;
     }
@@ -319,7 +319,7 @@ static tirenv_positions sweep(const cli_options *o, const tirenv_model *m, doubl
 /* --relative-to ground, streamed: the level under the centre, from the file read a second
  * time at --track alone (*in and *level NULL otherwise). */
 static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_reader **in,
-                      cli_level_stream **level, tirenv_diag *diag)
+                      tirenv_level_stream **level, tirenv_diag *diag)
 {
     *in = NULL;
     *level = NULL;
@@ -328,8 +328,9 @@ static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_r
     const double v = r->road.src.crg.v;
     int status = tirenv_profile_file_reader_open(r->o->obstacle_arg, &r->road.src, 1, &v, in,
                                                  diag);
-    if (!status && !(*level = cli_level_stream_alloc(tirenv_profile_file_reader_source, *in,
-                                                     cli_level_width(tirenv_model_tire(m)))))
+    const double width = tirenv_level_width(tirenv_model_tire(m));
+    if (!status && !(*level = tirenv_level_stream_alloc(tirenv_profile_file_reader_source, *in,
+                                                        width)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     return status;
 }
@@ -392,7 +393,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     cli_road_out_abort(so.road);
     tirenv_profile_file_reader_free(in);
     tirenv_profile_file_reader_free(in_level);
-    cli_level_stream_free(so.level);
+    tirenv_level_stream_free(so.level);
     if (status)
         return cli_fail(status, &diag);
     summary(r->cmd, m, o, load, &so.t);
@@ -470,7 +471,7 @@ static int whole_close(whole_out *w, int status, tirenv_diag *diag)
 static void to_ground(const run *r, const tirenv_model *m, tirenv_profile *const prof[],
                       tirenv_point pt[], size_t n)
 {
-    const double width = cli_level_width(tirenv_model_tire(m));
+    const double width = tirenv_level_width(tirenv_model_tire(m));
     for (size_t k = 0; k < n; ++k) {
         double level = 0;
         for (size_t i = 0; i < r->road.n; ++i)
