@@ -5,6 +5,7 @@
 
 #include "tirenv/decls.h"
 #include <stddef.h>
+#include "tirenv/comfort.h"
 #include "tirenv/error.h"
 #include "tirenv/model.h"
 #include "tirenv/profile.h"
@@ -95,6 +96,23 @@ typedef struct {
  * table); its errors name the position. */
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
+
+/* What the driver feels over one run, as tirenv ride reports it (docs/models.md section 10.4,
+ * ISO 2631-1). */
+typedef struct {
+    tirenv_comfort_metrics seat;   /* Wk-weighted vertical acceleration at the seat, m/s^2 */
+    tirenv_comfort_metrics pitch;  /* We-weighted pitch acceleration, rad/s^2 */
+    double a_v;            /* vibration total value of the two (k = 1, 0.4 m/rad), m/s^2 */
+    double peak_az;        /* largest unweighted seat acceleration, m/s^2 */
+    double lift_off;       /* time with a tire off the ground (a sample's dt each), s */
+} tirenv_ride_comfort;
+
+/* The comfort figures of a run's n samples s[] taken every dt (s) into *c; the Wk-weighted
+ * seat acceleration into seat_awz[] (n, m/s^2) unless it is NULL. TIRENV_EINVAL if dt is not
+ * positive and finite or as tirenv_comfort_evaluate (too few samples, dt too coarse for the
+ * weightings, a sample not finite); TIRENV_ENOMEM. */
+int tirenv_ride_comfort_measure(const tirenv_ride_sample s[], size_t n, double dt,
+                                double seat_awz[], tirenv_ride_comfort *c, tirenv_diag *diag);
 
 /* Number of samples a run writes: floor(duration / dt) + 1 (t = 0 included). */
 size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);

@@ -69,11 +69,7 @@ typedef struct {
     double speed;                  /* m/s */
     double duration;               /* simulated time, s */
     double seconds;                /* CPU time of the model's inputs and the integration, s */
-    tirenv_comfort_metrics seat;   /* Wk-weighted vertical acceleration at the seat, m/s^2 */
-    tirenv_comfort_metrics pitch;  /* We-weighted pitch acceleration, rad/s^2 */
-    double a_v;                    /* vibration total value of the two, m/s^2 */
-    double peak_az;                /* largest unweighted seat acceleration, m/s^2 */
-    double lift_off;               /* time with a tire off the ground, s */
+    tirenv_ride_comfort c;         /* what the driver feels (tirenv_ride_comfort_measure) */
 } ride_result;
 
 /* One run's samples and the weighted seat acceleration, kept for the plots. */

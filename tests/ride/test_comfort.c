@@ -10,6 +10,7 @@
 #include <gsl/gsl_rng.h>
 
 #include "tirenv/comfort.h"
+#include "tirenv/ride.h"
 
 /* ---- The table ---- */
 
@@ -629,6 +630,58 @@ static void test_welch_refusals(void **state)
     tirenv_welch_free(w);
 }
 
+/* A run's figures (tirenv_ride_comfort_measure, docs/models.md section 10.4) are the
+ * weightings' metrics of the seat and pitch series, their total value with k = 1 and
+ * 0.4 m/rad, the unweighted peak and dt for each sample with a tire off the ground. */
+static void test_ride_comfort_measure(void **state)
+{
+    (void)state;
+    enum { N = 7321 };
+    const double dt = 0.001;
+    static tirenv_ride_sample s[N];
+    static double az[N], ath[N], awz[N], tmp[N];
+    size_t off = 0;
+    double peak = 0;
+    for (size_t k = 0; k < N; ++k) {
+        const double t = (double)k * dt;
+        s[k] = (tirenv_ride_sample){.t = t};
+        s[k].seat_az = az[k] = 1.37 * sin(2 * M_PI * 4.3 * t) - 0.41 * cos(2 * M_PI * 11.7 * t);
+        s[k].atheta = ath[k] = 0.23 * sin(2 * M_PI * 1.9 * t + 0.3);
+        s[k].F_front = k % 17 == 3 ? 0.0 : 21000.5;
+        s[k].F_rear = k % 29 == 5 ? 0.0 : 33000.25;
+        off += s[k].F_front == 0 || s[k].F_rear == 0;
+        peak = fmax(peak, fabs(az[k]));
+    }
+    tirenv_ride_comfort c, c2;
+    tirenv_diag d;
+    assert_int_equal(tirenv_ride_comfort_measure(s, N, dt, awz, &c, &d), TIRENV_OK);
+    tirenv_comfort_metrics seat, pitch;
+    assert_int_equal(tirenv_comfort_evaluate(TIRENV_WK, 1 / dt, az, tmp, N, &seat, &d), 0);
+    assert_int_equal(tirenv_comfort_evaluate(TIRENV_WE, 1 / dt, ath, ath, N, &pitch, &d), 0);
+    for (size_t k = 0; k < N; ++k)
+        assert_bits_equal(awz[k], tmp[k]);
+    assert_bits_equal(c.seat.rms, seat.rms);
+    assert_bits_equal(c.seat.vdv, seat.vdv);
+    assert_bits_equal(c.seat.mtvv, seat.mtvv);
+    assert_bits_equal(c.pitch.rms, pitch.rms);
+    assert_bits_equal(c.peak_az, peak);
+    /* hypot and the library's sum differ by round-off: 4 ulps */
+    assert_near(c.a_v, hypot(seat.rms, 0.4 * pitch.rms), 0, 1e-15);
+    assert_true(off > 400);
+    /* a sum of off terms of dt: within off ulps of their product */
+    assert_near(c.lift_off, (double)off * dt, 0, (double)off * 2.3e-16);
+    /* no series wanted: the same figures */
+    assert_int_equal(tirenv_ride_comfort_measure(s, N, dt, NULL, &c2, &d), TIRENV_OK);
+    assert_bits_equal(c2.a_v, c.a_v);
+    assert_bits_equal(c2.lift_off, c.lift_off);
+    /* refused: dt not positive, no samples, a sample not finite */
+    assert_int_equal(tirenv_ride_comfort_measure(s, N, 0.0, NULL, &c2, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "dt");
+    assert_int_equal(tirenv_ride_comfort_measure(s, 0, dt, NULL, &c2, &d), TIRENV_EINVAL);
+    s[77].seat_az = NAN;
+    assert_int_equal(tirenv_ride_comfort_measure(s, N, dt, NULL, &c2, &d), TIRENV_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -650,6 +703,7 @@ int main(void)
         cmocka_unit_test(test_welch_white_noise),
         cmocka_unit_test(test_welch_sine),
         cmocka_unit_test(test_welch_refusals),
+        cmocka_unit_test(test_ride_comfort_measure),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
