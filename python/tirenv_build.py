@@ -241,6 +241,7 @@ typedef struct {
     tirenv_comfort_metrics seat, pitch;
     double a_v, peak_az, lift_off;
 } tirenv_ride_comfort;
+int tirenv_ride_speed_parse(const char *text, double *v, tirenv_diag *diag);
 int tirenv_ride_comfort_measure(const tirenv_ride_sample s[], size_t n, double dt,
                                 double seat_awz[], tirenv_ride_comfort *c, tirenv_diag *diag);
 """

@@ -44,6 +44,11 @@ typedef struct {
 /* Defaults: 1 m/s, from x = 0, 10 s, dt 1 ms, RK4, tol 1e-10. */
 tirenv_ride_settings tirenv_ride_default(void);
 
+/* A forward speed from text into *v (m/s): "2.5" or "2.5m/s" in m/s, "10km/h" in km/h (times
+ * 1/3.6), as tirenv ride --speed takes it. TIRENV_EINVAL (field "speed") unless the number is
+ * all of the text before the suffix, finite and > 0. */
+int tirenv_ride_speed_parse(const char *text, double *v, tirenv_diag *diag);
+
 /* Where a run drives over ground, and the grid of the axles' inputs (tirenv_ride_track,
  * tirenv_ride_table) that covers it (docs/models.md section 9.4). */
 typedef struct {

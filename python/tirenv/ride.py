@@ -130,19 +130,12 @@ def _table(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
 
 
 def speed_of(v):
-    """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it: "10km/h"
-    (times 1/3.6, as the CLI computes it), "2.5m/s" or "2.5"."""
+    """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it, by the
+    same library call (tirenv_ride_speed_parse): "10km/h", "2.5m/s" or "2.5"."""
     if isinstance(v, str):
-        text, scale = v.strip(), 1.0
-        if text.endswith("km/h"):
-            text, scale = text[:-4], 1 / 3.6
-        elif text.endswith("m/s"):
-            text = text[:-3]
-        try:
-            v = float(text) * scale
-        except ValueError:
-            raise invalid(f"expected a speed > 0 in m/s or with the suffix km/h, got {v!r}",
-                          "speed") from None
+        out, diag = ffi.new("double *"), new_diag()
+        check(lib.tirenv_ride_speed_parse(v.strip().encode(), out, diag), diag)
+        return out[0]
     if not (v > 0 and math.isfinite(v)):
         raise invalid(f"expected a speed > 0, got {v!r}", "speed")
     return float(v)

@@ -276,10 +276,44 @@ static void test_invalid(void **state)
     free((double *)t.w);
 }
 
+/* Speeds as tirenv ride --speed and the Python module take them: m/s bare or with "m/s",
+ * km/h times 1/3.6 (the CLI's conversion, bit for bit); the rest refused naming the field. */
+static void test_speed_parse(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text;
+        double v;          /* m/s; 0: refused */
+    } cases[] = {
+        {"2.5", 2.5},      {"2.5m/s", 2.5},   {"10km/h", 10 * (1 / 3.6)},
+        {"7.25km/h", 7.25 * (1 / 3.6)},       {"1e-3", 1e-3},   {"0", 0},
+        {"-3", 0},         {"km/h", 0},       {"m/s", 0},       {"", 0},
+        {"3 km/h", 0},     {"3kmh", 0},       {"inf", 0},       {"nan", 0},
+        {"1e400", 0},      {"3,4", 0},        {"fast", 0},
+        {"123456789012345678901234567890123456789012345678901234567890123km/h", 0},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        double v = -1;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        const int status = tirenv_ride_speed_parse(cases[k].text, &v, &d);
+        if (cases[k].v > 0) {
+            assert_int_equal(status, TIRENV_OK);
+            assert_bits_equal(v, cases[k].v);
+        } else {
+            assert_int_equal(status, TIRENV_EINVAL);
+            assert_string_equal(d.field, "speed");
+            assert_true(v == -1);  /* untouched */
+        }
+    }
+    assert_int_equal(tirenv_ride_speed_parse(NULL, NULL, NULL), TIRENV_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_static_equilibrium),
+        cmocka_unit_test(test_speed_parse),
         cmocka_unit_test(test_quarter_response),
         cmocka_unit_test(test_energy),
         cmocka_unit_test(test_cleat_liftoff_and_solvers),
