@@ -177,6 +177,21 @@ typedef struct {
                                 * of it, as over a grid */
 } tirenv_ride_input;
 
+/* A model evaluated during the run as an axle's input (tirenv ride --enveloping direct): at
+ * each position and load, tirenv_model_set_load then tirenv_model_eval at x and x -+ dx/2 for
+ * dw/dx. The caller owns it; it must outlive the run. */
+typedef struct {
+    tirenv_model *m;       /* the axle's model, set on the profile (borrowed) */
+    double dx;             /* the grid spacing, m: the derivative's step is dx/2 either side */
+} tirenv_ride_direct;
+
+/* Makes *in the direct input of model m (set on the profile at G0, the static load of one tire,
+ * N) over a grid every dx (m), its state in *d: load_min and load_max the lightest and the
+ * heaviest of tirenv_ride_table_loads(G0) that m takes (as the tables end), m left at G0,
+ * whose refusal is returned. */
+int tirenv_ride_direct_input(tirenv_model *m, double G0, double dx, tirenv_ride_direct *d,
+                             tirenv_ride_input *in, tirenv_diag *diag);
+
 /* The simulation with load-dependent inputs (docs/models.md section 9.5): at every evaluation
  * each axle's input is taken at the load its tires then carry, the load G of one tire that
  * balances G = max(0, G0 + k_t*(w(x, G) - z_axle) + c_t*(V*dw/dx(x, G) - dz_axle/dt)) (G0

@@ -108,15 +108,6 @@ int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, 
                         tirenv_ride_table *table, char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
 
-/* The direct evaluation (RIDE_DIRECT): an input function evaluating a model at each position
- * and load (tirenv_model_set_load, then tirenv_model_eval at x and x -+ dx/2 for dw/dx). */
-typedef struct {
-    tirenv_model *m;
-    double dx;                       /* the derivative's step, m */
-} ride_direct;
-int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *dw_dx,
-                          tirenv_diag *diag);
-
 /* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes
  * what the options ask for; returns an exit code after printing any error. */
 int ride_cli_run(const cli_options *o, const ride_options *r);

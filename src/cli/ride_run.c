@@ -250,32 +250,14 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
     /* Direct: the models between the loads the tables span, their positions every half grid
      * spacing apart for dw/dx, as the tables' Steffen slope sees the grid. */
     tirenv_model *m[2] = {NULL, NULL};
-    ride_direct d[2];
+    tirenv_ride_direct d[2];
     tirenv_ride_input fn[2];
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle)
         status = direct_model(s, in, axle, r->extrapolate, &m[axle], diag);
-    for (int axle = 0; axle < 2 && !status; ++axle) {
-        double load[TIRENV_RIDE_TABLE_LOADS];
-        size_t top = TIRENV_RIDE_TABLE_LOADS, lo = 0;
-        tirenv_ride_table_loads(s->load[axle], load);
-        /* The heaviest and the lightest loads the model takes, as the tables end (a load
-         * beyond the model's valid range, the network's outside its trained range). Probed on
-         * each run's own models, as the run's first flat-ground solve starts from the probe's
-         * last: a range found once would start it elsewhere (not the same bits by
-         * construction) to save a handful of the run's tens of thousands of load changes. */
-        while (top > 1 && load[top - 1] > s->load[axle] &&
-               tirenv_model_set_load(m[axle], load[top - 1], NULL))
-            --top;
-        while (lo + 1 < top && load[lo] < s->load[axle] &&
-               tirenv_model_set_load(m[axle], load[lo], NULL))
-            ++lo;
-        status = tirenv_model_set_load(m[axle], s->load[axle], diag);
-        d[axle] = (ride_direct){.m = m[axle], .dx = s->dx};
-        fn[axle] = (tirenv_ride_input){.fn = ride_cli_direct_input, .ctx = &d[axle],
-                                       .load_min = load[lo], .load_max = load[top - 1],
-                                       .dx = s->dx};
-    }
+    for (int axle = 0; axle < 2 && !status; ++axle)
+        status = tirenv_ride_direct_input(m[axle], s->load[axle], s->dx, &d[axle], &fn[axle],
+                                          diag);
     if (!status)
         status = tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
     tirenv_model_free(m[0]);

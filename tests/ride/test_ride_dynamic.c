@@ -216,6 +216,30 @@ static void test_follows_the_load(void **state)
         if (tirenv_ride_run_input(&v, &fn[0], &fn[1], &s, dir, &d))
             fail_msg("%s direct: %s", names[i], d.message);
         assert_true(dd[0].calls > n);
+        /* The library's direct input (tirenv_ride_direct_input, what tirenv ride --enveloping
+         * direct runs): the tables' load range, and this test's run to the solver's tolerance
+         * (its models start each solve from where the load probe left them, not from G0's). */
+        tirenv_ride_sample *lib = malloc(n * sizeof *lib);
+        assert_non_null(lib);
+        tirenv_model *lm[2];
+        tirenv_ride_direct ld[2];
+        tirenv_ride_input lf[2];
+        for (int axle = 0; axle < 2; ++axle) {
+            const double G0 = tirenv_vehicle_tire_load(&v, axle);
+            lm[axle] = tirenv_model_alloc(type, &tire);
+            assert_int_equal(tirenv_model_set(lm[axle], cleat, G0, &d), TIRENV_OK);
+            assert_int_equal(tirenv_ride_direct_input(lm[axle], G0, grid_dx, &ld[axle],
+                                                      &lf[axle], &d), TIRENV_OK);
+            assert_true(lf[axle].load_min == loads[axle][0]);
+            assert_true(lf[axle].load_max == loads[axle][table[axle].m - 1]);
+            assert_true(lf[axle].dx == grid_dx && lf[axle].ctx == &ld[axle]);
+        }
+        assert_int_equal(tirenv_ride_run_input(&v, &lf[0], &lf[1], &s, lib, &d), TIRENV_OK);
+        for (size_t k = 0; k < n; ++k)
+            assert_true(samples_close(&lib[k], &dir[k], 1e-9));
+        tirenv_model_free(lm[0]);
+        tirenv_model_free(lm[1]);
+        free(lib);
         assert_int_equal(tirenv_ride_run_dynamic(&v, &table[0], &table[1], &s, tab, &d), 0);
         const double n_f = v.front.tires, G0_f = tirenv_vehicle_tire_load(&v, 0);
         double G_min = INFINITY, G_max = 0, worst = 0;
