@@ -236,23 +236,23 @@ static void road_comment(const run *r, const tirenv_model *m, double load, char 
 
 /* The effective road's writer for n positions from x_from every dx, if one is wanted. */
 static int road_out_open(const run *r, const tirenv_model *m, double load, double x_from,
-                         double dx, size_t n, cli_road_out **w, tirenv_diag *diag)
+                         double dx, size_t n, tirenv_road_writer **w, tirenv_diag *diag)
 {
     char comment[1024];
     road_comment(r, m, load, comment, sizeof comment);
     const tirenv_tire *tire = tirenv_model_tire(m);
     const double width = r->road.width > 0 ? r->road.width : tire->width > 0 ? tire->width : 1;
-    const cli_road_out_layout l = {.x_from = x_from, .dx = dx, .n = n,
+    const tirenv_road_writer_layout l = {.x_from = x_from, .dx = dx, .n = n,
                                    .half_width = 0.5 * width, .encoding = r->e->encoding,
                                    .comment = comment};
-    return cli_road_out_open(r->o->output, r->out_format, &l, w, diag);
+    return tirenv_road_writer_open(r->o->output, r->out_format, &l, w, diag);
 }
 
 /* The streamed sweep's sink: one row out (or into the effective road) and into the tally
  * per position. */
 typedef struct {
     FILE *fp;
-    cli_road_out *road;
+    tirenv_road_writer *road;
     tally t;
     tirenv_level_stream *level; /* NULL: h relative to the datum */
     tirenv_diag diag;           /* the road writer's or the level's failure */
@@ -270,7 +270,7 @@ static int stream_row(void *ctx, const tirenv_point *pt)
         row.h -= level;
     }
     if (s->road) {
-        if ((status = cli_road_out_add(s->road, &row, &s->diag)))
+        if ((status = tirenv_road_writer_add(s->road, row.x, row.h, &s->diag)))
             return status;
     } else {
         write_row(s->fp, &row);
@@ -380,9 +380,9 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
         else if (status && so.diag.message[0])  /* the road writer's or the level's */
             diag = so.diag;
         if (!status && so.road) {
-            cli_road_out *w = so.road;
+            tirenv_road_writer *w = so.road;
             so.road = NULL;
-            status = cli_road_out_commit(w, &diag);
+            status = tirenv_road_writer_commit(w, &diag);
         } else if (!status) {
             have_out = 0;
             status = tirenv_outfile_commit(&out, &diag);
@@ -390,7 +390,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     }
     if (have_out)
         tirenv_outfile_abort(&out);
-    cli_road_out_abort(so.road);
+    tirenv_road_writer_abort(so.road);
     tirenv_profile_file_reader_free(in);
     tirenv_profile_file_reader_free(in_level);
     tirenv_level_stream_free(so.level);
@@ -405,7 +405,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
 typedef struct {
     tirenv_outfile out;
     int have_out;
-    cli_road_out *road;
+    tirenv_road_writer *road;
 } whole_out;
 
 static int whole_open(const run *r, const tirenv_model *m, double load, double x_from,
@@ -437,7 +437,7 @@ static int whole_write(const run *r, tirenv_model *m, const tirenv_profile *prof
     int status = TIRENV_OK;
     if (w->road) {
         for (size_t k = 0; k < n && !status; ++k)
-            status = cli_road_out_add(w->road, &pt[k], diag);
+            status = tirenv_road_writer_add(w->road, pt[k].x, pt[k].h, diag);
         return status;
     }
     if (r->e->detail)
@@ -452,10 +452,11 @@ static int whole_write(const run *r, tirenv_model *m, const tirenv_profile *prof
 /* Puts the output in place (checking the writes), or on failure leaves nothing. */
 static int whole_close(whole_out *w, int status, tirenv_diag *diag)
 {
-    cli_road_out *road = w->road;
+    tirenv_road_writer *road = w->road;
     w->road = NULL;
     if (road)
-        return status ? (cli_road_out_abort(road), status) : cli_road_out_commit(road, diag);
+        return status ? (tirenv_road_writer_abort(road), status)
+                      : tirenv_road_writer_commit(road, diag);
     if (!w->have_out)
         return status;
     w->have_out = 0;

@@ -1,24 +1,9 @@
-/* The effective road as a road file: an OpenCRG road with a straight reference line along x,
- * whose rows are the sweep's positions and whose long sections (the same h at -w/2 and +w/2)
- * carry the effective height across the tire's width, written row by row as the sweep goes;
- * or a TNO/Adams poly_line road (x, z_left = z_right = h), written at the end from the heights
- * kept (16 bytes a position). Heights are h as the curve's h_m column has it.
- * SPDX-License-Identifier: GPL-3.0-or-later */
-#include <stdlib.h>
+/* The effective road's options: which -o names a road file, --crg-encoding (the writer is the
+ * library's tirenv_road_writer). SPDX-License-Identifier: GPL-3.0-or-later */
 #include <string.h>
 #include <strings.h>
 
 #include "cli/road_out.h"
-
-struct cli_road_out {
-    tirenv_profile_format format;
-    char path[1024];
-    char *comment;
-    size_t n, added;
-    double x_from, dx;           /* m */
-    tirenv_crg_writer *crg;
-    double *x, *h;               /* .rdf: the road, kept until commit */
-};
 
 int cli_road_out_wanted(const char *path, tirenv_profile_format *f)
 {
@@ -33,92 +18,4 @@ int cli_parse_crg_encoding(void *dst, const char *arg)
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
-}
-
-void cli_road_out_abort(cli_road_out *w)
-{
-    if (!w)
-        return;
-    tirenv_crg_writer_abort(w->crg);
-    free(w->x);
-    free(w->h);
-    free(w->comment);
-    free(w);
-}
-
-int cli_road_out_open(const char *path, tirenv_profile_format f, const cli_road_out_layout *l,
-                      cli_road_out **out, tirenv_diag *diag)
-{
-    *out = NULL;
-    cli_road_out *w = calloc(1, sizeof *w);
-    const size_t len = l->comment ? strlen(l->comment) + 1 : 1;
-    if (!w || !(w->comment = malloc(len))) {
-        free(w);
-        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
-    }
-    memcpy(w->comment, l->comment ? l->comment : "", len);
-    snprintf(w->path, sizeof w->path, "%s", path);
-    w->format = f;
-    w->n = l->n;
-    w->x_from = l->x_from;
-    w->dx = l->dx;
-    int status = TIRENV_OK;
-    if (f == TIRENV_PROFILE_CRG) {
-        if (l->n < 2)
-            status = tirenv_error(diag, TIRENV_EINVAL, path, 0, "",
-                                  "an OpenCRG road needs at least 2 positions, got %zu", l->n);
-        const double v[2] = {-l->half_width, l->half_width};
-        const tirenv_crg_layout layout = {.encoding = l->encoding, .u_start = l->x_from,
-                                          .u_increment = l->dx, .rows = l->n,
-                                          .long_sections = 2, .v = v, .comment = w->comment};
-        if (!status)
-            status = tirenv_crg_writer_open(path, &layout, &w->crg, diag);
-    } else if (!(w->x = malloc(l->n * sizeof *w->x)) || !(w->h = malloc(l->n * sizeof *w->h))) {
-        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "",
-                              "out of memory for the %zu heights of the road", l->n);
-    }
-    if (status) {
-        cli_road_out_abort(w);
-        return status;
-    }
-    *out = w;
-    return TIRENV_OK;
-}
-
-int cli_road_out_add(cli_road_out *w, const tirenv_point *pt, tirenv_diag *diag)
-{
-    if (w->added == w->n)
-        return tirenv_error(diag, TIRENV_EINVAL, w->path, 0, "",
-                            "more than the %zu positions announced", w->n);
-    int status = TIRENV_OK;
-    if (w->crg) {
-        const double z[2] = {pt->h, pt->h};
-        status = tirenv_crg_writer_row(w->crg, z, diag);
-    } else {
-        w->x[w->added] = pt->x;
-        w->h[w->added] = pt->h;
-    }
-    if (!status)
-        w->added++;
-    return status;
-}
-
-int cli_road_out_commit(cli_road_out *w, tirenv_diag *diag)
-{
-    int status = TIRENV_OK;
-    if (w->added != w->n) {
-        status = tirenv_error(diag, TIRENV_EINVAL, w->path, 0, "",
-                              "%zu positions of %zu written", w->added, w->n);
-    } else if (w->crg) {
-        tirenv_crg_writer *crg = w->crg;
-        w->crg = NULL;  /* commit frees it, also on failure */
-        status = tirenv_crg_writer_commit(crg, diag);
-    } else {
-        tirenv_profile *p = tirenv_profile_alloc(w->n, w->x, w->h);
-        status = p ? tirenv_rdf_write(w->path, p, NULL, w->comment, diag)
-                   : tirenv_error(diag, TIRENV_ENOMEM, w->path, 0, "", "out of memory");
-        tirenv_profile_free(p);
-    }
-    cli_road_out_abort(w);
-    return status;
 }
