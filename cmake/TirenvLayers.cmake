@@ -29,8 +29,8 @@ set(TIRENV_CORE_HEADERS
   error.h profile.h road.h tire.h model.h tracks.h rigid.h cam.h springs.h ring.h stream.h xn.h
   nn.h nn_road.h train.h vehicle.h ride.h comfort.h version.h parallel.h)
 set(TIRENV_AUX_HEADERS
-  io.h curve.h rig.h dataset.h study.h plot.h nn_file.h vehicle_file.h crg.h rdf.h
-  profile_file.h sweep.h)
+  io.h numtext.h outfile.h profile_csv.h tir.h curve.h rig.h dataset.h study.h plot.h nn_file.h
+  vehicle_file.h crg.h rdf.h profile_file.h sweep.h)
 set(TIRENV_SHARED_HEADERS tirenv.h decls.h)
 
 # System headers of file-format libraries: the core includes none of them.

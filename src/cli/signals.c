@@ -7,7 +7,7 @@
 #include <signal.h>
 #include <string.h>
 
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 static const int handled[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 enum { N_HANDLED = sizeof handled / sizeof handled[0] };

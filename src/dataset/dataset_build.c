@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "formats/tir_impl.h"
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 

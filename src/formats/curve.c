@@ -3,7 +3,8 @@
  * sets read.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/curve.h"
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
+#include "tirenv/outfile.h"
 
 #include <errno.h>
 #include <math.h>

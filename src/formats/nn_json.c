@@ -31,7 +31,6 @@
 #include <jansson.h>
 
 #include "formats/nn_json_impl.h"
-#include "tirenv/io.h"
 #include "tirenv/nn_file.h"
 
 /* ---- The checksum of the network's numbers ---- */

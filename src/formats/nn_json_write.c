@@ -8,7 +8,7 @@
 #include <jansson.h>
 
 #include "formats/nn_json_impl.h"
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "tirenv/nn_file.h"
 
 /* ---- Writing ---- */

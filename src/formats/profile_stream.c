@@ -3,7 +3,7 @@
  * non-decreasing, at most two vertices at one x) done row by row so that it needs no memory
  * of the past rows.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "tirenv/io.h"
+#include "tirenv/profile_csv.h"
 
 #include <stdio.h>
 #include <stdlib.h>

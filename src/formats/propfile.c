@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "formats/propfile.h"
 
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 #include <ctype.h>
 #include <errno.h>

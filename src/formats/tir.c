@@ -4,7 +4,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "formats/propfile.h"
 #include "formats/tir_impl.h"
-#include "tirenv/io.h"
+#include "tirenv/tir.h"
 #include "tirenv/tirenv.h"
 
 #include <stddef.h>

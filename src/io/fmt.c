@@ -15,7 +15,7 @@
  * it, and snprintf decides (glibc rounds ties to even). Random doubles reach that case about
  * once in 10^9 for p = 9; tests/io/test_fmt.c checks the bytes against snprintf.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
 
 #include <math.h>
 #include <stdint.h>

@@ -1,7 +1,7 @@
 /* Numbers as the shortest text that reads back to the same double, for files whose round
  * trip (read, convert, write, read) must give the same heights.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -17,7 +17,7 @@
  * directory is never changed through the new one.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #define _GNU_SOURCE  /* renameat2, RENAME_EXCHANGE */
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 #include <dirent.h>
 #include <errno.h>

@@ -3,7 +3,7 @@
  * never sees half a file after a failure; what cannot be replaced by a rename (stdout, a
  * device, a FIFO) is written through, and never replaced.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "io/umask.h"
 
 #include <errno.h>

@@ -31,7 +31,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 /* ---- names ------------------------------------------------------------------------------ */
 

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 tirenv_rig_settings tirenv_rig_default(void)
 {

@@ -10,7 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
+#include "tirenv/tir.h"
 
 tirenv_sweep_settings tirenv_sweep_default(void)
 {

@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 enum { SPEC_MAX = 1 << 20, TABLE_MAX = 1 << 30 };
 

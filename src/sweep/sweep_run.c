@@ -14,7 +14,8 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
+#include "tirenv/tir.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 

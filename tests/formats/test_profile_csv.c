@@ -1,7 +1,7 @@
 /* Profile CSV import: good files, and each malformed case with its line, column and field.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
-#include "tirenv/io.h"
+#include "tirenv/profile_csv.h"
 
 #include <errno.h>
 #include <stdio.h>

@@ -1,7 +1,8 @@
 /* The .tir reader, --set and writer, and the all-or-nothing output file.
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
+#include "tirenv/tir.h"
 
 #include <dirent.h>
 #include <errno.h>

@@ -5,7 +5,7 @@
  * snprintf would match byte for byte and gain nothing. SPDX-License-Identifier:
  * GPL-3.0-or-later */
 #include "testutil.h"
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
 #include "io/fmt.h"
 
 #include <float.h>

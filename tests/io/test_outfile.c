@@ -2,7 +2,7 @@
  * temporary names, the cleanup on a signal, the sweep of what a SIGKILL left, and the
  * output directory written as a whole. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "testutil.h"
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "io/tmpfiles.h"
 
 #include <dirent.h>

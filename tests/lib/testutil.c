@@ -8,7 +8,7 @@
 #include <unistd.h>
 #include <gsl/gsl_rng.h>
 
-#include "tirenv/io.h"
+#include "tirenv/tir.h"
 
 void tirenv_test_assert_near(double actual, double expected, double abs_tol, double rel_tol,
                              const char *expr, const char *file, int line)
