@@ -52,7 +52,7 @@ typedef struct { tirenv_springs_params springs; ...; } tirenv_tire;
 tirenv_tire tirenv_tire_default(void);
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
 
-/* io.h */
+/* tir.h */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag);
 int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag);
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag);
