@@ -39,7 +39,7 @@ build: configure
 
 # Release build and every test, then test-asan.
 # The Release run includes the install checks (label install: install into a temporary
-# prefix, build tests/consumer/ against it, run the installed CLI moved away from the clone)
+# prefix, build tests/package/consumer/ against it, run the installed CLI moved away from the clone)
 # and the Slurm scripts on a single-node cluster it starts (label slurm, about 20 s).
 test: build deps-test
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(skip)

@@ -131,6 +131,12 @@ foreach(file ${aux_files})
       module_of(${name} m)
       if(NOT m IN_LIST TIRENV_AUX_DIRS)
         violation("${rel}:${line}: auxiliary layer includes ${name}, a private header of the ${m} module (only tirenv/*.h)")
+      else()
+        list(FIND TIRENV_AUX_DIRS ${module} own)
+        list(FIND TIRENV_AUX_DIRS ${m} theirs)
+        if(theirs GREATER own)
+          violation("${rel}:${line}: the ${module} module includes ${name}, a private header of ${m}, which comes after it (TIRENV_AUX_DIRS)")
+        endif()
       endif()
     endif()
   endforeach()
@@ -160,7 +166,8 @@ endforeach()
 # nm -P prints "name type ..." per symbol: U undefined (used), upper case defined and global,
 # i an indirect function (GCC's target_clones), other lower case local or weak undefined
 # (left out by the pattern). Sets
-# <defined_out>.<symbol> for every defined symbol, and <used_out> to "symbol|object" items.
+# <defined_out>.<symbol> to the defining module (src/<module>/) for every defined symbol, and
+# <used_out> to "symbol|object" items.
 function(read_symbols objects defined_out used_out)
   string(REPLACE "|" ";" objects "${objects}")
   # One nm for all objects; -A starts each line with "object.o: ".
@@ -180,7 +187,8 @@ function(read_symbols objects defined_out used_out)
     if(type STREQUAL "U")
       list(APPEND used "${sym}|${obj}")
     else()
-      set(${defined_out}.${sym} 1 PARENT_SCOPE)  # a set: one variable per symbol
+      string(REGEX REPLACE "^src/([^/]+)/.*$" "\\1" m "${obj}")
+      set(${defined_out}.${sym} ${m} PARENT_SCOPE)  # a map: one variable per symbol
     endif()
   endforeach()
   set(${used_out} "${used}" PARENT_SCOPE)
@@ -223,6 +231,14 @@ if(CORE_OBJECTS AND AUX_OBJECTS)
     set(src ${obj})
     if(sym MATCHES "__" AND DEFINED core_defined.${sym})
       violation("${src}: auxiliary layer calls ${sym}, internal to the core")
+    elseif(DEFINED aux_defined.${sym})
+      # The auxiliary modules in their order: each calls only those before it.
+      string(REGEX REPLACE "^src/([^/]+)/.*$" "\\1" module "${obj}")
+      list(FIND TIRENV_AUX_DIRS ${module} own)
+      list(FIND TIRENV_AUX_DIRS ${aux_defined.${sym}} theirs)
+      if(theirs GREATER own)
+        violation("${src}: the ${module} module calls ${sym}, defined in ${aux_defined.${sym}}, which comes after it (TIRENV_AUX_DIRS)")
+      endif()
     endif()
   endforeach()
 endif()

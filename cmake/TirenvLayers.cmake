@@ -6,11 +6,21 @@
 #   function and does not use jansson.
 # AUX (the convenience layer): file formats (.tir, .veh, CSV, JSON), rig simulation and import,
 #   data sets, study, compare, plots. It is written against the core's public headers alone.
+#   Its modules are listed from the bottom up, and each uses only those before it (checked by
+#   the includes and by the symbols):
+#     io       bytes in and out: CSV lines, number text, sources, atomic output files and
+#              directories, temporary files;
+#     formats  the file formats: property files and units, .tir, .veh, CSV profiles and
+#              streams, OpenCRG, RDF, network JSON, curves;
+#     rig      the virtual rig and the import of rig logs;
+#     dataset  data sets: reading, building the embedded ones;
+#     sweep    sweeps over a grid of cases, their shards and merge;
+#     study    fit, compare, findings, report and plots.
 # The CLI (src/cli) uses public headers of both layers and its own cli/ headers only.
 
 # Directories under src/, one module each.
 set(TIRENV_CORE_DIRS core profile model nn train ride)
-set(TIRENV_AUX_DIRS data study formats)
+set(TIRENV_AUX_DIRS io formats rig dataset sweep study)
 
 # Every public header under include/tirenv/ belongs to exactly one layer; the check fails on a
 # header listed in neither, so a new header must be placed here. (tirenv.h, the umbrella, and
@@ -19,8 +29,8 @@ set(TIRENV_CORE_HEADERS
   error.h profile.h road.h tire.h model.h tracks.h rigid.h cam.h springs.h ring.h stream.h xn.h
   nn.h nn_road.h train.h vehicle.h ride.h comfort.h version.h parallel.h rng.h)
 set(TIRENV_AUX_HEADERS
-  io.h curve.h rig.h dataset.h study.h plot.h nn_file.h vehicle_file.h crg.h rdf.h
-  profile_file.h sweep.h)
+  io.h numtext.h outfile.h profile_csv.h tir.h curve.h rig.h dataset.h study.h plot.h nn_file.h
+  vehicle_file.h crg.h rdf.h profile_file.h sweep.h)
 set(TIRENV_SHARED_HEADERS tirenv.h decls.h)
 
 # System headers of file-format libraries: the core includes none of them.

@@ -49,7 +49,7 @@ typedef struct { tirenv_springs_params springs; ...; } tirenv_tire;
 tirenv_tire tirenv_tire_default(void);
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
 
-/* io.h */
+/* tir.h */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag);
 int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag);
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag);
@@ -246,6 +246,13 @@ int tirenv_comfort_evaluate(tirenv_weighting w, double fs, const double a[], dou
                             size_t n, tirenv_comfort_metrics *m, tirenv_diag *diag);
 int tirenv_comfort_total_value(const double k[], const double a_w[], size_t n, double *a_v,
                                tirenv_diag *diag);
+typedef struct {
+    tirenv_comfort_metrics seat, pitch;
+    double a_v, peak_az, lift_off;
+} tirenv_ride_comfort;
+int tirenv_ride_speed_parse(const char *text, double *v, tirenv_diag *diag);
+int tirenv_ride_comfort_measure(const tirenv_ride_sample s[], size_t n, double dt,
+                                double seat_awz[], tirenv_ride_comfort *c, tirenv_diag *diag);
 """
 
 SOURCE = r"""

@@ -11,7 +11,7 @@ need="$need clang libclang-rt-14-dev"
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
 need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
-# --slurm: Slurm and munge, for tests/slurm.sh (scripts/slurm/ on a private single-node
+# --slurm: Slurm and munge, for tests/sweep/slurm.sh (scripts/slurm/ on a private single-node
 # cluster). Optional: without them that test reports itself skipped, so a user who cannot
 # install them is told how and goes on.
 optional=0

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-# Writes src/data/fmt_pow10.h: 10^k = P * 2^q for k = K_MIN..K_MAX, with P the 64-bit integer
+# Writes src/io/fmt_pow10.h: 10^k = P * 2^q for k = K_MIN..K_MAX, with P the 64-bit integer
 # in [2^63, 2^64) rounded DOWN (truncated), so that P * 2^q <= 10^k < (P + 1) * 2^q. The
-# number formatter (src/data/fmt.c) relies on that direction and bound. Exact integer
+# number formatter (src/io/fmt.c) relies on that direction and bound. Exact integer
 # arithmetic (Python's big integers); rerun after changing the range:
-#   python3 scripts/gen_pow10.py > src/data/fmt_pow10.h
+#   python3 scripts/gen_pow10.py > src/io/fmt_pow10.h
 # SPDX-License-Identifier: GPL-3.0-or-later
 K_MIN, K_MAX = -330, 350
 

@@ -5,7 +5,7 @@
 # VERTICAL_STIFFNESS, Q_RA1 and Q_RA2 on the ring reference tire's flat ground
 # (`tirenv identify --write` on data/tires/default.tir, which records how in its '!' note),
 # then copies the five values into tirenv_tire_default() (src/core/tire.c), which must equal
-# the file (tests/test_tir.c). Run it after any change to the ring or to its parameters:
+# the file (tests/formats/test_tir.c). Run it after any change to the ring or to its parameters:
 #     scripts/identify-default-tire.sh [path/to/tirenv]      (default build/tirenv)
 # then rebuild and check the vehicle file's comments on its loads (data/vehicles/tractor.veh)
 # against `tirenv flat --model ring --load 13335.5` and `--load 8737.03`.

@@ -5,7 +5,7 @@
 # The help texts follow one layout, which is all this relies on: "usage: " lines (continued
 # by indented lines), a description, then sections headed by a line "name:" whose items are
 # "  TAG   text" lines continued by deeper indented ones. The build runs it (CMakeLists.txt);
-# tests/manpages.sh checks the result with groff.
+# tests/cli/manpages.sh checks the result with groff.
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -eu
 bin=$1 out=$2

@@ -103,5 +103,42 @@ tirenv_profile_write_options tirenv_profile_write_default(void);
 int tirenv_profile_write_file(const char *path, const tirenv_profile *p,
                               const tirenv_profile_write_options *o, tirenv_diag *diag);
 
+/* A road written a position at a time (tirenv envelope -o X.crg|X.rdf: the effective road,
+ * docs/formats.md section 6): OpenCRG rows streamed to the file, an RDF poly_line kept (16
+ * bytes a position) and written at the commit; all or nothing, as every output file. */
+typedef struct {
+    double x_from, dx;             /* the positions x_k = x_from + k*dx, m */
+    size_t n;                      /* how many */
+    double half_width;             /* .crg: long sections at v = v_track -+ half_width, m */
+    double v_track;                /* .crg: the track's lateral position on the input road, m */
+    double x_start, y_start;       /* .crg: the reference line at x_from in the x/y plane, m */
+    double phi_start;              /* .crg: its heading, rad */
+    double z_start;                /* .crg: the road's height at x_from on the track, m */
+    tirenv_crg_encoding encoding;  /* .crg */
+    const char *comment;           /* what it is, lines of at most 72 characters (copied) */
+} tirenv_road_writer_layout;
+
+typedef struct tirenv_road_writer tirenv_road_writer;
+
+/* Where the effective road of the road file path (format, read at lateral position v) goes:
+ * an OpenCRG road's straight reference line at u = l->x_from, its heading, its height on the
+ * track there and v, into the layout (0 for a road of another format: the reference line is
+ * x itself). A curved OpenCRG road (a heading channel) is refused: its effective road written
+ * on a straight line would lie beside the road. */
+int tirenv_road_writer_place(const char *path, tirenv_profile_format format, double v,
+                             tirenv_road_writer_layout *l, tirenv_diag *diag);
+
+/* Opens path in format f (TIRENV_PROFILE_CRG or _RDF) for the n positions of the layout into
+ * *out (NULL on failure); a CRG needs n >= 2. */
+int tirenv_road_writer_open(const char *path, tirenv_profile_format f,
+                            const tirenv_road_writer_layout *l, tirenv_road_writer **out,
+                            tirenv_diag *diag);
+/* The next position's height h (m) at x (m), in order; more than n is TIRENV_EINVAL. */
+int tirenv_road_writer_add(tirenv_road_writer *w, double x, double h, tirenv_diag *diag);
+/* Checks that all n came and puts the file in place (all or nothing); frees w. */
+int tirenv_road_writer_commit(tirenv_road_writer *w, tirenv_diag *diag);
+/* Removes what was written and frees w; NULL is a no-op. */
+void tirenv_road_writer_abort(tirenv_road_writer *w);
+
 TIRENV_END_DECLS
 #endif

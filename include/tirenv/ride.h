@@ -5,6 +5,7 @@
 
 #include "tirenv/decls.h"
 #include <stddef.h>
+#include "tirenv/comfort.h"
 #include "tirenv/error.h"
 #include "tirenv/model.h"
 #include "tirenv/profile.h"
@@ -42,6 +43,11 @@ typedef struct {
 
 /* Defaults: 1 m/s, from x = 0, 10 s, dt 1 ms, RK4, tol 1e-10. */
 tirenv_ride_settings tirenv_ride_default(void);
+
+/* A forward speed from text into *v (m/s): "2.5" or "2.5m/s" in m/s, "10km/h" in km/h (times
+ * 1/3.6), as tirenv ride --speed takes it. TIRENV_EINVAL (field "speed") unless the number is
+ * all of the text before the suffix, finite and > 0. */
+int tirenv_ride_speed_parse(const char *text, double *v, tirenv_diag *diag);
 
 /* Where a run drives over ground, and the grid of the axles' inputs (tirenv_ride_track,
  * tirenv_ride_table) that covers it (docs/models.md section 9.4). */
@@ -95,6 +101,23 @@ typedef struct {
  * table); its errors name the position. */
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
+
+/* What the driver feels over one run, as tirenv ride reports it (docs/models.md section 10.4,
+ * ISO 2631-1). */
+typedef struct {
+    tirenv_comfort_metrics seat;   /* Wk-weighted vertical acceleration at the seat, m/s^2 */
+    tirenv_comfort_metrics pitch;  /* We-weighted pitch acceleration, rad/s^2 */
+    double a_v;            /* vibration total value of the two (k = 1, 0.4 m/rad), m/s^2 */
+    double peak_az;        /* largest unweighted seat acceleration, m/s^2 */
+    double lift_off;       /* time with a tire off the ground (a sample's dt each), s */
+} tirenv_ride_comfort;
+
+/* The comfort figures of a run's n samples s[] taken every dt (s) into *c; the Wk-weighted
+ * seat acceleration into seat_awz[] (n, m/s^2) unless it is NULL. TIRENV_EINVAL if dt is not
+ * positive and finite or as tirenv_comfort_evaluate (too few samples, dt too coarse for the
+ * weightings, a sample not finite); TIRENV_ENOMEM. */
+int tirenv_ride_comfort_measure(const tirenv_ride_sample s[], size_t n, double dt,
+                                double seat_awz[], tirenv_ride_comfort *c, tirenv_diag *diag);
 
 /* Number of samples a run writes: floor(duration / dt) + 1 (t = 0 included); 0 for settings
  * a run refuses (dt not positive, duration negative or not finite, more than 1e9 steps). */
@@ -154,6 +177,21 @@ typedef struct {
     double dx;                 /* the input's resolution, m: RK4 substeps advance at most half
                                 * of it, as over a grid */
 } tirenv_ride_input;
+
+/* A model evaluated during the run as an axle's input (tirenv ride --enveloping direct): at
+ * each position and load, tirenv_model_set_load then tirenv_model_eval at x and x -+ dx/2 for
+ * dw/dx. The caller owns it; it must outlive the run. */
+typedef struct {
+    tirenv_model *m;       /* the axle's model, set on the profile (borrowed) */
+    double dx;             /* the grid spacing, m: the derivative's step is dx/2 either side */
+} tirenv_ride_direct;
+
+/* Makes *in the direct input of model m (set on the profile at G0, the static load of one tire,
+ * N) over a grid every dx (m), its state in *d: load_min and load_max the lightest and the
+ * heaviest of tirenv_ride_table_loads(G0) that m takes (as the tables end), m left at G0,
+ * whose refusal is returned. */
+int tirenv_ride_direct_input(tirenv_model *m, double G0, double dx, tirenv_ride_direct *d,
+                             tirenv_ride_input *in, tirenv_diag *diag);
 
 /* The simulation with load-dependent inputs (docs/models.md section 9.5): at every evaluation
  * each axle's input is taken at the load its tires then carry, the load G of one tire that

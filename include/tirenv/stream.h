@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include "tirenv/error.h"
 #include "tirenv/model.h"
+#include "tirenv/tire.h"
 
 TIRENV_BEGIN_DECLS
 
@@ -17,6 +18,22 @@ TIRENV_BEGIN_DECLS
  * filled) stops the sweep. A file format provides one (the profile CSV reader of io.h). */
 typedef int (*tirenv_vertex_source)(void *ctx, double *x, double *z, int *got,
                                     tirenv_diag *diag);
+
+/* The level segment's length for a tire (m): its free diameter 2*R0. Obstacles shorter than
+ * it are what the tire envelopes, longer undulations, steps and grades ground it follows
+ * (docs/models.md section 2.6). */
+double tirenv_level_width(const tirenv_tire *tire);
+
+/* The road's local level (tirenv_profile_level) along a sweep in x order, its vertices taken
+ * from a source as the sweep needs them, the whole profile never held: a window of the
+ * vertices within width (m) of x, rebuilt every few widths of travel, as tirenv_model_stream's.
+ * NULL when out of memory; _free(NULL) is a no-op. _at gives the level (m) at x (m), x not
+ * below the last call's; the source's errors pass through. */
+typedef struct tirenv_level_stream tirenv_level_stream;
+tirenv_level_stream *tirenv_level_stream_alloc(tirenv_vertex_source source, void *ctx,
+                                               double width);
+void tirenv_level_stream_free(tirenv_level_stream *s);
+int tirenv_level_stream_at(tirenv_level_stream *s, double x, double *level, tirenv_diag *diag);
 
 /* Receives each position as it is computed; a nonzero return stops the sweep with that
  * status (use a TIRENV_ code, e.g. TIRENV_EIO). */

@@ -5,8 +5,9 @@
  * decls, error, profile, xn, road, tire, model, tracks, rigid, cam, springs, ring, stream, nn,
  * nn_road, train, vehicle, ride, comfort (src/core, src/profile, src/model, src/nn,
  * src/train, src/ride include no other header). The auxiliary layer reads and writes files
- * and runs the study on top of the core's public headers alone: io, curve, rig, dataset,
- * nn_file, vehicle_file, study, plot (src/data, src/study). */
+ * and runs the study on top of the core's public headers alone: io (numtext, outfile,
+ * profile_csv, tir), crg, rdf, profile_file, curve, rig, dataset, nn_file, vehicle_file,
+ * sweep, study, plot (src/io, src/formats, src/rig, src/dataset, src/sweep, src/study). */
 #ifndef TIRENV_TIRENV_H
 #define TIRENV_TIRENV_H
 
@@ -23,6 +24,10 @@
 #include "tirenv/springs.h"
 #include "tirenv/ring.h"
 #include "tirenv/io.h"
+#include "tirenv/numtext.h"
+#include "tirenv/outfile.h"
+#include "tirenv/profile_csv.h"
+#include "tirenv/tir.h"
 #include "tirenv/crg.h"
 #include "tirenv/rdf.h"
 #include "tirenv/profile_file.h"

@@ -96,3 +96,30 @@ def test_static_and_dynamic_enveloping_equal_cli(cli, tmp_path):
         assert got == [",".join(line.split(",")[:5]) for line in lines]
         runs[way] = s["w_front"]
     assert not np.array_equal(runs["static"], runs["dynamic"])
+
+
+def test_comfort_equals_cli_table(cli, tmp_path):
+    """Ride.comfort is the CLI's comfort.csv to the nine digits it writes: both are
+    tirenv_ride_comfort_measure (a static and a dynamic run over a cleat high enough to lift
+    a tire off)."""
+    rc, _, err = run_cli(cli, "ride", "--cleat", "0.10,0.15", "--speed", "3",
+                         "--model", "springs", "--enveloping", "static,dynamic",
+                         "--out-dir", tmp_path / "out")
+    assert rc == 0, err
+    rows = [line.split(",") for line in (tmp_path / "out" / "comfort.csv").read_text()
+            .splitlines() if not line.startswith("#")]
+    head, rows = rows[0], rows[1:]
+    assert len(rows) == 2
+    for row in rows:
+        f = dict(zip(head, row))
+        r = tirenv.ride(tirenv.Profile.cleat(0.10, 0.15), model="springs", speed=3.0,
+                        enveloping=f["enveloping"])
+        c = r.comfort()
+        got = {"a_wz_m_s2": c["seat"].rms, "crest": c["seat"].crest,
+               "vdv_m_s1.75": c["seat"].vdv, "mtvv_m_s2": c["seat"].mtvv,
+               "peak_awz_m_s2": c["seat"].peak, "a_w_pitch_rad_s2": c["pitch"].rms,
+               "vdv_pitch_rad_s1.75": c["pitch"].vdv, "a_v_m_s2": c["a_v"],
+               "peak_az_m_s2": c["peak_az"], "lift_off_s": c["lift_off"]}
+        for name, value in got.items():
+            assert "%.9g" % value == f[name], (f["enveloping"], name)
+    assert any(float(dict(zip(head, row))["lift_off_s"]) > 0 for row in rows)

@@ -89,17 +89,22 @@ class Ride:
         self.series, self.x, self.w_front, self.w_rear = series, x, w_front, w_rear
 
     def comfort(self):
-        """The seat's figures as 'tirenv ride' reports them: a dict with seat (Wk, vertical),
-        pitch (We), a_v (vibration total value, k = 1 and 0.4 m/rad), seat_awz (the
-        weighted series), peak_az and lift_off (s with a tire off the ground)."""
-        fs = 1 / self.dt
-        s = self.series
-        seat_awz, seat = comfort(s["seat_az"], fs, "Wk")
-        _, pitch = comfort(s["atheta"], fs, "We")
-        a_v = total_value([1.0, 0.40], [seat.rms, pitch.rms])
-        lift = float(np.count_nonzero((s["F_front"] == 0) | (s["F_rear"] == 0))) * self.dt
-        return {"seat": seat, "pitch": pitch, "a_v": a_v, "seat_awz": seat_awz,
-                "peak_az": float(np.max(np.abs(s["seat_az"]))), "lift_off": lift}
+        """The seat's figures as 'tirenv ride' reports them, by the same library call
+        (tirenv_ride_comfort_measure): a dict with seat (Wk, vertical), pitch (We), a_v
+        (vibration total value, k = 1 and 0.4 m/rad), seat_awz (the weighted series), peak_az
+        and lift_off (s with a tire off the ground)."""
+        s = np.ascontiguousarray(self.series)
+        seat_awz, c, diag = np.empty(s.size), ffi.new("tirenv_ride_comfort *"), new_diag()
+        check(lib.tirenv_ride_comfort_measure(ffi.cast("tirenv_ride_sample *",
+                                                       ffi.from_buffer(s)),
+                                              s.size, self.dt, double_ptr(seat_awz), c, diag),
+              diag)
+        seat = Metrics(c.seat.duration, c.seat.rms, c.seat.peak, c.seat.crest, c.seat.vdv,
+                       c.seat.mtvv)
+        pitch = Metrics(c.pitch.duration, c.pitch.rms, c.pitch.peak, c.pitch.crest,
+                        c.pitch.vdv, c.pitch.mtvv)
+        return {"seat": seat, "pitch": pitch, "a_v": c.a_v, "seat_awz": seat_awz,
+                "peak_az": c.peak_az, "lift_off": c.lift_off}
 
 
 def _inputs(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
@@ -125,19 +130,12 @@ def _table(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
 
 
 def speed_of(v):
-    """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it: "10km/h"
-    (times 1/3.6, as the CLI computes it), "2.5m/s" or "2.5"."""
+    """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it, by the
+    same library call (tirenv_ride_speed_parse): "10km/h", "2.5m/s" or "2.5"."""
     if isinstance(v, str):
-        text, scale = v.strip(), 1.0
-        if text.endswith("km/h"):
-            text, scale = text[:-4], 1 / 3.6
-        elif text.endswith("m/s"):
-            text = text[:-3]
-        try:
-            v = float(text) * scale
-        except ValueError:
-            raise invalid(f"expected a speed > 0 in m/s or with the suffix km/h, got {v!r}",
-                          "speed") from None
+        out, diag = ffi.new("double *"), new_diag()
+        check(lib.tirenv_ride_speed_parse(v.strip().encode(), out, diag), diag)
+        return out[0]
     if not (v > 0 and math.isfinite(v)):
         raise invalid(f"expected a speed > 0, got {v!r}", "speed")
     return float(v)

@@ -1,6 +1,6 @@
 #!/bin/sh
 # A private single-node Slurm cluster on this machine, for trying the sweep scripts and for
-# the tests (tests/slurm.sh): munged on its own socket with a key made here, slurmctld and
+# the tests (tests/sweep/slurm.sh): munged on its own socket with a key made here, slurmctld and
 # slurmd on two free TCP ports, every file (configuration, state, spool, logs) in DIR. No
 # cgroups (proctrack/linuxproc, task/none); job start and end times in DIR/jobcomp.log.
 # Needs root (the daemons run as root) and Debian's slurm-wlm and munge.

@@ -241,33 +241,34 @@ static void road_comment(const run *r, const tirenv_model *m, double load, char 
 
 /* The effective road's writer for n positions from x_from every dx, if one is wanted. */
 static int road_out_open(const run *r, const tirenv_model *m, double load, double x_from,
-                         double dx, size_t n, cli_road_out **w, tirenv_diag *diag)
+                         double dx, size_t n, tirenv_road_writer **w, tirenv_diag *diag)
 {
     char comment[1024];
     road_comment(r, m, load, comment, sizeof comment);
     const tirenv_tire *tire = tirenv_model_tire(m);
     const double width = r->road.width > 0 ? r->road.width : tire->width > 0 ? tire->width : 1;
-    cli_road_out_layout l = {.x_from = x_from, .dx = dx, .n = n, .half_width = 0.5 * width,
-                             .encoding = r->e->encoding, .comment = comment};
+    tirenv_road_writer_layout l = {.x_from = x_from, .dx = dx, .n = n,
+                                   .half_width = 0.5 * width, .encoding = r->e->encoding,
+                                   .comment = comment};
     /* An effective road of a road file lies where that road is (its reference line, the
      * track's v); of a generated obstacle, along x from the origin. */
     if (r->road.from_file && r->out_format == TIRENV_PROFILE_CRG) {
-        const int status = cli_road_out_place(r->o->obstacle_arg, r->road.format,
-                                              r->road.src.crg.v, &l, diag);
+        const int status = tirenv_road_writer_place(r->o->obstacle_arg, r->road.format,
+                                                    r->road.src.crg.v, &l, diag);
         if (status)
             return status;
     }
-    return cli_road_out_open(r->o->output, r->out_format, &l, w, diag);
+    return tirenv_road_writer_open(r->o->output, r->out_format, &l, w, diag);
 }
 
 /* The streamed sweep's sink: one row out (or into the effective road) and into the tally
  * per position. */
 typedef struct {
     FILE *fp;
-    cli_road_out *road;
+    tirenv_road_writer *road;
     tally t;
-    cli_level_stream *level;  /* NULL: h relative to the datum */
-    tirenv_diag diag;         /* the road writer's or the level's failure */
+    tirenv_level_stream *level; /* NULL: h relative to the datum */
+    tirenv_diag diag;           /* the road writer's or the level's failure */
 } stream_out;
 
 static int stream_row(void *ctx, const tirenv_point *pt)
@@ -277,12 +278,12 @@ static int stream_row(void *ctx, const tirenv_point *pt)
     int status = TIRENV_OK;
     if (s->level) {
         double level;
-        if ((status = cli_level_stream_at(s->level, pt->x, &level, &s->diag)))
+        if ((status = tirenv_level_stream_at(s->level, pt->x, &level, &s->diag)))
             return status;
         row.h -= level;
     }
     if (s->road) {
-        if ((status = cli_road_out_add(s->road, &row, &s->diag)))
+        if ((status = tirenv_road_writer_add(s->road, row.x, row.h, &s->diag)))
             return status;
     } else {
         write_row(s->fp, &row);
@@ -331,7 +332,7 @@ static tirenv_positions sweep(const cli_options *o, const tirenv_model *m, doubl
 /* --relative-to ground, streamed: the level under the centre, from the file read a second
  * time at --track alone (*in and *level NULL otherwise). */
 static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_reader **in,
-                      cli_level_stream **level, tirenv_diag *diag)
+                      tirenv_level_stream **level, tirenv_diag *diag)
 {
     *in = NULL;
     *level = NULL;
@@ -340,8 +341,9 @@ static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_r
     const double v = r->road.src.crg.v;
     int status = tirenv_profile_file_reader_open(r->o->obstacle_arg, &r->road.src, 1, &v, in,
                                                  diag);
-    if (!status && !(*level = cli_level_stream_alloc(tirenv_profile_file_reader_source, *in,
-                                                     cli_level_width(tirenv_model_tire(m)))))
+    const double width = tirenv_level_width(tirenv_model_tire(m));
+    if (!status && !(*level = tirenv_level_stream_alloc(tirenv_profile_file_reader_source, *in,
+                                                        width)))
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     return status;
 }
@@ -391,9 +393,9 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
         else if (status && so.diag.message[0])  /* the road writer's or the level's */
             diag = so.diag;
         if (!status && so.road) {
-            cli_road_out *w = so.road;
+            tirenv_road_writer *w = so.road;
             so.road = NULL;
-            status = cli_road_out_commit(w, &diag);
+            status = tirenv_road_writer_commit(w, &diag);
         } else if (!status) {
             have_out = 0;
             status = tirenv_outfile_commit(&out, &diag);
@@ -401,10 +403,10 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     }
     if (have_out)
         tirenv_outfile_abort(&out);
-    cli_road_out_abort(so.road);
+    tirenv_road_writer_abort(so.road);
     tirenv_profile_file_reader_free(in);
     tirenv_profile_file_reader_free(in_level);
-    cli_level_stream_free(so.level);
+    tirenv_level_stream_free(so.level);
     if (status)
         return cli_fail(status, &diag);
     summary(r->cmd, m, o, load, &so.t);
@@ -416,7 +418,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
 typedef struct {
     tirenv_outfile out;
     int have_out;
-    cli_road_out *road;
+    tirenv_road_writer *road;
 } whole_out;
 
 static int whole_open(const run *r, const tirenv_model *m, double load, double x_from,
@@ -447,7 +449,7 @@ static int whole_write(const run *r, tirenv_model *m, const tirenv_profile *prof
     int status = TIRENV_OK;
     if (w->road) {
         for (size_t k = 0; k < n && !status; ++k)
-            status = cli_road_out_add(w->road, &pt[k], diag);
+            status = tirenv_road_writer_add(w->road, pt[k].x, pt[k].h, diag);
         return status;
     }
     if (r->e->detail)
@@ -462,10 +464,11 @@ static int whole_write(const run *r, tirenv_model *m, const tirenv_profile *prof
 /* Puts the output in place (checking the writes), or on failure leaves nothing. */
 static int whole_close(whole_out *w, int status, tirenv_diag *diag)
 {
-    cli_road_out *road = w->road;
+    tirenv_road_writer *road = w->road;
     w->road = NULL;
     if (road)
-        return status ? (cli_road_out_abort(road), status) : cli_road_out_commit(road, diag);
+        return status ? (tirenv_road_writer_abort(road), status)
+                      : tirenv_road_writer_commit(road, diag);
     if (!w->have_out)
         return status;
     w->have_out = 0;
@@ -481,7 +484,7 @@ static int whole_close(whole_out *w, int status, tirenv_diag *diag)
 static void to_ground(const run *r, const tirenv_model *m, tirenv_profile *const prof[],
                       tirenv_point pt[], size_t n)
 {
-    const double width = cli_level_width(tirenv_model_tire(m));
+    const double width = tirenv_level_width(tirenv_model_tire(m));
     for (size_t k = 0; k < n; ++k) {
         double level = 0;
         for (size_t i = 0; i < r->road.n; ++i)

@@ -86,27 +86,6 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-/* "10", "2.5m/s" or "10km/h" in m/s; 0 on success. */
-static int parse_speed(const char *s, double *v)
-{
-    char buf[64];
-    const size_t n = strlen(s);
-    double scale = 1;
-    if (n >= sizeof buf)
-        return -1;
-    memcpy(buf, s, n + 1);
-    if (n > 4 && strcmp(buf + n - 4, "km/h") == 0) {
-        buf[n - 4] = '\0';
-        scale = 1 / 3.6;
-    } else if (n > 3 && strcmp(buf + n - 3, "m/s") == 0) {
-        buf[n - 3] = '\0';
-    }
-    if (cli_parse_double(buf, v) || !(*v > 0))
-        return -1;
-    *v *= scale;
-    return 0;
-}
-
 /* --speed V[,V...]: 1 to RIDE_MAX_SPEEDS speeds. */
 static int parse_speeds(void *dst, const char *arg)
 {
@@ -122,7 +101,7 @@ static int parse_speeds(void *dst, const char *arg)
                       RIDE_MAX_SPEEDS, arg);
             return CLI_EXIT_USAGE;
         }
-        if (parse_speed(p, &r->speeds[r->n_speeds++])) {
+        if (tirenv_ride_speed_parse(p, &r->speeds[r->n_speeds++], NULL)) {
             cli_error("ride: --speed expects speeds > 0 in m/s or with the suffix km/h, got "
                       "'%s'", p);
             return CLI_EXIT_USAGE;

@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
 
 /* Room a row buffer needs per field: each append writes up to this many bytes. */
 #define CLI_ROW_FIELD TIRENV_FMT_G_SIZE

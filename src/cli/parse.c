@@ -305,7 +305,7 @@ static int help_lists(const char *help, const char *name)
 }
 
 /* The help a command prints must list every long option it accepts: a missing one is the
- * program's error, named (tests/cli_docs.sh runs every command's --help, the build's man
+ * program's error, named (tests/cli/cli_docs.sh runs every command's --help, the build's man
  * pages come from them). */
 static int help_complete(const cli_parser *p, const struct option longopts[], size_t n)
 {

@@ -69,11 +69,7 @@ typedef struct {
     double speed;                  /* m/s */
     double duration;               /* simulated time, s */
     double seconds;                /* CPU time of the model's inputs and the integration, s */
-    tirenv_comfort_metrics seat;   /* Wk-weighted vertical acceleration at the seat, m/s^2 */
-    tirenv_comfort_metrics pitch;  /* We-weighted pitch acceleration, rad/s^2 */
-    double a_v;                    /* vibration total value of the two, m/s^2 */
-    double peak_az;                /* largest unweighted seat acceleration, m/s^2 */
-    double lift_off;               /* time with a tire off the ground, s */
+    tirenv_ride_comfort c;         /* what the driver feels (tirenv_ride_comfort_measure) */
 } ride_result;
 
 /* One run's samples and the weighted seat acceleration, kept for the plots. */
@@ -116,15 +112,6 @@ int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, 
                         int extrapolate, double x0, double dx, size_t n,
                         tirenv_ride_table *table, char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
-
-/* The direct evaluation (RIDE_DIRECT): an input function evaluating a model at each position
- * and load (tirenv_model_set_load, then tirenv_model_eval at x and x -+ dx/2 for dw/dx). */
-typedef struct {
-    tirenv_model *m;
-    double dx;                       /* the derivative's step, m */
-} ride_direct;
-int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *dw_dx,
-                          tirenv_diag *diag);
 
 /* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes
  * what the options ask for; returns an exit code after printing any error. */

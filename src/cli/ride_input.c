@@ -92,23 +92,3 @@ int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, 
     table->w = w;
     return TIRENV_OK;
 }
-
-int ride_cli_direct_input(void *ctx, double x, double load, double *w, double *dw_dx,
-                          tirenv_diag *diag)
-{
-    ride_direct *d = ctx;
-    tirenv_point lo, mid, hi;
-    const double h = 0.5 * d->dx;
-    int status = tirenv_model_set_load(d->m, load, diag);
-    if (!status)
-        status = tirenv_model_eval(d->m, x - h, &lo, diag);
-    if (!status)
-        status = tirenv_model_eval(d->m, x, &mid, diag);
-    if (!status)
-        status = tirenv_model_eval(d->m, x + h, &hi, diag);
-    if (status)
-        return status;
-    *w = mid.h;
-    *dw_dx = (hi.h - lo.h) / (2 * h);
-    return TIRENV_OK;
-}

@@ -26,9 +26,9 @@ static int write_csv(const char *path, const ride_options *r, const ride_result 
     for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
         fprintf(f.fp, "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
-                "%.6g,%.6g,%s\n", q->model, q->speed, q->speed * 3.6, q->duration, q->seat.rms,
-                q->seat.crest, q->seat.vdv, q->seat.mtvv, q->seat.peak, q->pitch.rms,
-                q->pitch.vdv, q->a_v, q->peak_az, q->lift_off, q->seconds,
+                "%.6g,%.6g,%s\n", q->model, q->speed, q->speed * 3.6, q->duration, q->c.seat.rms,
+                q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv, q->c.seat.peak, q->c.pitch.rms,
+                q->c.pitch.vdv, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9), ride_enveloping_name(q->enveloping));
     }
     return tirenv_outfile_commit(&f, diag);
@@ -62,9 +62,9 @@ static void write_differences(FILE *fp, const ride_options *r, const ride_result
                       "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", fp);
             fprintf(fp, "| %s | %.1f | %s | %.3f | %.3f | %+.1f %% | %.3f | %.3f | %+.1f %% | "
                     "%.3f | %.3f | %.3f |\n", q->model, q->speed * 3.6,
-                    ride_enveloping_name(q->enveloping), base->seat.rms, q->seat.rms,
-                    100 * (q->seat.rms / base->seat.rms - 1), base->seat.vdv, q->seat.vdv,
-                    100 * (q->seat.vdv / base->seat.vdv - 1), base->lift_off, q->lift_off,
+                    ride_enveloping_name(q->enveloping), base->c.seat.rms, q->c.seat.rms,
+                    100 * (q->c.seat.rms / base->c.seat.rms - 1), base->c.seat.vdv, q->c.seat.vdv,
+                    100 * (q->c.seat.vdv / base->c.seat.vdv - 1), base->c.lift_off, q->c.lift_off,
                     q->seconds);
         }
 }
@@ -89,8 +89,8 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
         const ride_result *q = &res[k];
         fprintf(f.fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
                 "%.3f | %.3f | %.0f |\n", q->model, ride_enveloping_name(q->enveloping),
-                q->speed * 3.6, q->seat.rms, q->seat.crest, q->seat.vdv, q->seat.mtvv,
-                q->pitch.rms, q->a_v, q->peak_az, q->lift_off, q->seconds,
+                q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv,
+                q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
     write_differences(f.fp, r, res);

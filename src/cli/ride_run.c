@@ -217,34 +217,6 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
     return tirenv_outfile_commit(&out, diag);  /* it checks ferror and removes the file */
 }
 
-/* The comfort figures of one run; the weighted seat acceleration stays in rs->a_w. */
-static int measure(const ride_options *r, ride_series *rs, ride_result *res, tirenv_diag *diag)
-{
-    const double fs = 1 / r->dt;
-    double *a = malloc(rs->n * sizeof *a);
-    if (!a)
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    res->peak_az = res->lift_off = 0;
-    for (size_t k = 0; k < rs->n; ++k) {
-        const tirenv_ride_sample *s = &rs->samples[k];
-        a[k] = s->seat_az;
-        res->peak_az = fmax(res->peak_az, fabs(s->seat_az));
-        res->lift_off += (s->F_front == 0 || s->F_rear == 0) ? r->dt : 0;
-    }
-    int status = tirenv_comfort_evaluate(TIRENV_WK, fs, a, rs->a_w, rs->n, &res->seat, diag);
-    for (size_t k = 0; k < rs->n; ++k)
-        a[k] = rs->samples[k].atheta;
-    if (!status)
-        status = tirenv_comfort_evaluate(TIRENV_WE, fs, a, a, rs->n, &res->pitch, diag);
-    /* ISO 2631-1 6.5: the seat's vertical and pitch axes, pitch with k = 0.4 m/rad. */
-    const double k[2] = {TIRENV_COMFORT_K_Z, TIRENV_COMFORT_K_RY};
-    const double a_w[2] = {res->seat.rms, res->pitch.rms};
-    if (!status)
-        status = tirenv_comfort_total_value(k, a_w, 2, &res->a_v, diag);
-    free(a);
-    return status;
-}
-
 /* Where the front axle stops at speed V: --x-to, or once the rear axle has passed the
  * obstacle and the response has had time to settle. */
 static double run_end(const ride_options *r, const ride_setup *s, double V, double x_last)
@@ -262,8 +234,8 @@ static void print_table(FILE *fp, const ride_result res[], size_t n)
     for (size_t i = 0; i < n; ++i) {
         const ride_result *q = &res[i];
         fprintf(fp, "%-16s %7.2f %9.4f %6.2f %9.4f %9.4f %10.4f %9.4f %9.3f %8.3f %8.3f %9.0f\n",
-                q->label, q->speed * 3.6, q->seat.rms, q->seat.crest, q->seat.vdv,
-                q->seat.mtvv, q->pitch.rms, q->a_v, q->peak_az, q->lift_off, q->seconds,
+                q->label, q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv,
+                q->c.seat.mtvv, q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
 }
@@ -283,32 +255,14 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
     /* Direct: the models between the loads the tables span, their positions every half grid
      * spacing apart for dw/dx, as the tables' Steffen slope sees the grid. */
     tirenv_model *m[2] = {NULL, NULL};
-    ride_direct d[2];
+    tirenv_ride_direct d[2];
     tirenv_ride_input fn[2];
     int status = TIRENV_OK;
     for (int axle = 0; axle < 2 && !status; ++axle)
         status = direct_model(s, in, axle, r->extrapolate, &m[axle], diag);
-    for (int axle = 0; axle < 2 && !status; ++axle) {
-        double load[TIRENV_RIDE_TABLE_LOADS];
-        size_t top = TIRENV_RIDE_TABLE_LOADS, lo = 0;
-        tirenv_ride_table_loads(s->load[axle], load);
-        /* The heaviest and the lightest loads the model takes, as the tables end (a load
-         * beyond the model's valid range, the network's outside its trained range). Probed on
-         * each run's own models, as the run's first flat-ground solve starts from the probe's
-         * last: a range found once would start it elsewhere (not the same bits by
-         * construction) to save a handful of the run's tens of thousands of load changes. */
-        while (top > 1 && load[top - 1] > s->load[axle] &&
-               tirenv_model_set_load(m[axle], load[top - 1], NULL))
-            --top;
-        while (lo + 1 < top && load[lo] < s->load[axle] &&
-               tirenv_model_set_load(m[axle], load[lo], NULL))
-            ++lo;
-        status = tirenv_model_set_load(m[axle], s->load[axle], diag);
-        d[axle] = (ride_direct){.m = m[axle], .dx = s->dx};
-        fn[axle] = (tirenv_ride_input){.fn = ride_cli_direct_input, .ctx = &d[axle],
-                                       .load_min = load[lo], .load_max = load[top - 1],
-                                       .dx = s->dx};
-    }
+    for (int axle = 0; axle < 2 && !status; ++axle)
+        status = tirenv_ride_direct_input(m[axle], s->load[axle], s->dx, &d[axle], &fn[axle],
+                                          diag);
     if (!status)
         status = tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
     tirenv_model_free(m[0]);
@@ -356,7 +310,7 @@ static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
                                                 : 0;
     q->seconds = inputs + cli_thread_seconds() - t0;
     if (!status)
-        status = measure(r, rs, q, diag);
+        status = tirenv_ride_comfort_measure(rs->samples, rs->n, r->dt, rs->a_w, &q->c, diag);
     if (!status && r->out_path)
         status = write_series(r->out_path, rs, q, diag);
     if (!status && r->out_dir && r->series) {

@@ -1,6 +1,6 @@
 /* The signal handler that keeps an interrupted tirenv from leaving temporary files: a
  * killed write leaves the old output and nothing else. SIGKILL cannot be caught: what it
- * leaves is removed by the next run writing into the same directory (src/data/tmpfiles.c).
+ * leaves is removed by the next run writing into the same directory (src/io/tmpfiles.c).
  * SPDX-License-Identifier: GPL-3.0-or-later */
 #include "cli/signals.h"
 
@@ -8,7 +8,7 @@
 #include <signal.h>
 #include <string.h>
 
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 
 static const int handled[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 enum { N_HANDLED = sizeof handled / sizeof handled[0] };

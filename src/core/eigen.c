@@ -8,7 +8,7 @@
  * eps times its neighbours on the diagonal, with an exceptional shift every tenth iteration.
  * Every step is a similarity by a unitary (or, for the balance, an exact diagonal) matrix, so
  * the eigenvalues are those of A to round-off in the norm of the balanced matrix. The sizes
- * here are tiny (n <= 8): clarity before speed. tests/test_numerics.c checks oscillators and a
+ * here are tiny (n <= 8): clarity before speed. tests/core/test_numerics.c checks oscillators and a
  * companion matrix with known roots. */
 #include "core/eigen.h"
 

@@ -12,7 +12,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "data/propfile.h"
+#include "formats/propfile.h"
 
 /* Header records are at most 72 characters; the specification says anything beyond is
  * ignored. */

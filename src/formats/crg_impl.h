@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "formats/source.h"
+#include "io/source.h"
 #include "tirenv/crg.h"
 
 /* No such channel. */

@@ -2,7 +2,8 @@
  * written one after the other in any of the four encodings, through tirenv_outfile (all or
  * nothing). SPDX-License-Identifier: GPL-3.0-or-later */
 #include "tirenv/crg.h"
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
+#include "tirenv/outfile.h"
 #include "tirenv/tirenv.h"
 
 #include <math.h>

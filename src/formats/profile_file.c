@@ -10,7 +10,9 @@
 #include <strings.h>
 #include <sys/stat.h>
 
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
+#include "tirenv/outfile.h"
+#include "tirenv/profile_csv.h"
 
 static const char *const format_names[] = {"csv", "crg", "rdf"};
 

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 
 #include "formats/crg_impl.h"
-#include "tirenv/io.h"
+#include "tirenv/profile_csv.h"
 
 static tirenv_profile_source source_or_default(const tirenv_profile_source *src)
 {

@@ -9,9 +9,9 @@
 #include <string.h>
 #include <strings.h>
 
-#include "data/propfile.h"
-#include "data/units.h"
-#include "formats/source.h"
+#include "formats/propfile.h"
+#include "formats/units.h"
+#include "io/source.h"
 
 static const char *const side_names[] = {"mean", "left", "right"};
 

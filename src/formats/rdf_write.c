@@ -1,6 +1,7 @@
 /* Writing TNO / Adams 2-D road files: a 'poly_line' road in SI units (or 'flat' for a profile
  * of one vertex), all or nothing. SPDX-License-Identifier: GPL-3.0-or-later */
-#include "tirenv/io.h"
+#include "tirenv/numtext.h"
+#include "tirenv/outfile.h"
 #include "tirenv/rdf.h"
 #include "tirenv/tirenv.h"
 

@@ -5,7 +5,7 @@
 #include <math.h>
 
 #include "model/cam_impl.h"
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 /* The best touching point found so far: lift Z, where the cam touches the profile, and
  * which candidate that is (its rank, see tirenv_cam__lift). */

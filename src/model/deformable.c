@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core/equilibrium.h"
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 #include "model/rigid_impl.h"
 
 typedef struct {

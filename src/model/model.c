@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 #include "model/model_impl.h"
 #include "tirenv/nn.h"
 #include "model/model_state.h"

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 #include "model/model_impl.h"
 
 typedef struct {

@@ -5,7 +5,7 @@
 #include <math.h>
 
 #include "model/rigid_impl.h"
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 /* The best touching point found so far: centre height z_c and where the disc touches. */
 typedef struct {

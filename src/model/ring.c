@@ -28,7 +28,7 @@
 #include <string.h>
 #include "model/ring_impl.h"
 #include "model/springs_impl.h"
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 /* The smallest window the band solver takes (ring_impl.h). */
 enum { RING_MIN_WINDOW = 6 };

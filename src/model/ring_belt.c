@@ -38,7 +38,7 @@ double tirenv_ring__foundation(const tirenv_ring_params *par)
  * and the belt, inextensible, holds it with the tension T_p = p b R cos(h) (h = dtheta/2) that
  * balances it at w = 0, at the cost T_p L (L: its perimeter). The quadratic part of
  * -p b A + T_p L is exactly c1 = T_p (1 + sin(h)^2) / (4 R sin(h)), c0 = -T_p sin(h) / R
- * (tests/test_ring.c checks it against finite differences of A and L); both tend to the
+ * (tests/model/test_ring.c checks it against finite differences of A and L); both tend to the
  * continuous form as dtheta -> 0. */
 void tirenv_ring__tension(size_t M, double R, const tirenv_ring_params *par, double *c1,
                           double *c0)

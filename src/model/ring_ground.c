@@ -11,7 +11,7 @@
  * with the weight dtheta: the rays model exactly. */
 #include <math.h>
 #include <stdlib.h>
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 #include "model/ring_impl.h"
 
 /* A cut of the window: a node or a ground vertex, at angle phi (rad, from the downward

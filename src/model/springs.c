@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "model/springs_impl.h"
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 /* The active-set iteration on an M-matrix changes its set monotonically, so it settles in at
  * most n passes for n elements that can touch, and one more confirms it (docs/models.md

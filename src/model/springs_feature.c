@@ -5,7 +5,7 @@
 #include "model/springs_impl.h"
 
 #include <math.h>
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 /* A ground point a ray stands for, and the vertex count up to it. */
 typedef struct {

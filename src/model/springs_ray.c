@@ -4,7 +4,7 @@
 
 #include <float.h>
 #include <math.h>
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 /* How a walk ended, at vertex j: */
 enum {

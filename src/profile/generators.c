@@ -1,6 +1,6 @@
 /* Obstacle generators (docs/models.md section 2): the shapes of the paper's rig and a few more.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 #include <math.h>
 #include <stdint.h>

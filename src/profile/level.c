@@ -14,7 +14,7 @@
  * after a binary search. Beyond the profile's ends the ground is flat at their heights; at a
  * wall the window's end takes the side it runs on, and a wall inside the window counts with
  * both of its vertices (its foot is ground too). */
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 #include <math.h>
 

@@ -1,6 +1,6 @@
 /* The ground profile object (docs/models.md section 2): validation, storage, height queries.
  * SPDX-License-Identifier: GPL-3.0-or-later */
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 #include <math.h>
 #include <stdalign.h>

@@ -26,7 +26,7 @@
 #include "core/fft.h"
 #include "tirenv/rng.h"
 
-#include "core/profile_impl.h"
+#include "profile/profile_impl.h"
 
 tirenv_road_settings tirenv_road_default(void)
 {

@@ -12,7 +12,7 @@
  * step, present in Wk only, rises from (f_5/f_6)^2 to 1; the factor (omega_5/omega_6)^2 makes
  * it (s^2 + omega_5 s/Q_5 + omega_5^2) / (s^2 + omega_6 s/Q_6 + omega_6^2), the form used.
  * At the nominal one-third-octave frequencies these products give the factors of Tables 3
- * and 4 within one unit of their last printed digit (tests/test_comfort.c).
+ * and 4 within one unit of their last printed digit (tests/ride/test_comfort.c).
  *
  * The digital filter is the same product, factor by factor, through the bilinear transform
  * s = K (1 - z^-1)/(1 + z^-1). It maps the analogue frequency Omega to the digital omega by

@@ -15,7 +15,7 @@
 
 #include "study/compare_impl.h"
 #include "study/plot.h"
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "tirenv/nn.h"
 #include "tirenv/parallel.h"
 

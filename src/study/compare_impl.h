@@ -6,7 +6,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "tirenv/study.h"
 
 /* Model j on the i-th compared case. */

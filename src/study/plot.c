@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
 #include "tirenv/plot.h"
 
 /* Image size in pixels: the width of a report column, the paper's aspect ratio. */

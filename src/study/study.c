@@ -8,7 +8,8 @@
 #include <string.h>
 #include "study/compare_impl.h"
 #include "study/study_impl.h"
-#include "tirenv/io.h"
+#include "tirenv/outfile.h"
+#include "tirenv/tir.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "tirenv/nn_file.h"

@@ -1,7 +1,7 @@
 /* libFuzzer harness: the profile CSV reader (tirenv_profile_read_csv), and the extent and
  * sampling of whatever profile it accepts. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "fuzz_input.h"
-#include "tirenv/io.h"
+#include "tirenv/profile_csv.h"
 #include "tirenv/profile.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -1,7 +1,7 @@
 /* libFuzzer harness: the streaming profile reader (tirenv_profile_reader_*), to the end of
  * the input or its first error. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "fuzz_input.h"
-#include "tirenv/io.h"
+#include "tirenv/profile_csv.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

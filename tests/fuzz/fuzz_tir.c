@@ -1,7 +1,7 @@
 /* libFuzzer harness: the .tir reader (tirenv_tir_read) on arbitrary bytes, then the checks
  * and the writer on whatever it accepted. SPDX-License-Identifier: GPL-3.0-or-later */
 #include "fuzz_input.h"
-#include "tirenv/io.h"
+#include "tirenv/tir.h"
 #include "tirenv/tire.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -1,0 +1,288 @@
+/* Data sets of enveloping curves: a directory with a manifest cases.csv, one case per line,
+ * pointing at each case's raw rig log and/or its imported approach-half curve (paths relative
+ * to the directory). The split follows the paper's Table 2: train, control, validation.
+ * SPDX-License-Identifier: GPL-3.0-or-later */
+#include "tirenv/dataset.h"
+#include "tirenv/rig.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/csv_line.h"
+
+enum {
+    COL_CASE,
+    COL_SPLIT,
+    COL_CONTACT_LENGTH,
+    COL_LOAD,
+    COL_L,
+    COL_H,
+    COL_LOG,
+    COL_CURVE,
+    MANIFEST_FIELDS
+};
+static const char *const manifest_names[MANIFEST_FIELDS] = {
+    "case", "split", "contact_length_m", "load_N", "obstacle_length_m", "obstacle_height_m",
+    "log", "curve"};
+static const char *const split_names[] = {"train", "control", "validation"};
+enum { N_SPLITS = sizeof split_names / sizeof split_names[0] };
+
+const char *tirenv_split_name(tirenv_split split)
+{
+    return (size_t)split < N_SPLITS ? split_names[split] : "unknown";
+}
+
+void tirenv_dataset_free(tirenv_dataset *ds)
+{
+    if (!ds)
+        return;
+    for (size_t i = 0; i < ds->n; i++)
+        tirenv_curve_free(&ds->cases[i].curve);
+    free(ds->cases);
+    ds->cases = NULL;
+    ds->n = 0;
+    ds->dir[0] = '\0';
+}
+
+static int parse_split(const tirenv_csv__reader *r, const tirenv_csv__field *f,
+                       tirenv_split *out)
+{
+    for (size_t k = 0; k < N_SPLITS; k++)
+        if (strcmp(f->text, split_names[k]) == 0) {
+            *out = (tirenv_split)k;
+            return TIRENV_OK;
+        }
+    return tirenv_csv__fail(r, f->column, "split",
+                            "expected train, control or validation, got '%.60s'", f->text);
+}
+
+/* A positive length or force: what every number of the manifest is. */
+static int parse_positive(const tirenv_csv__reader *r, const tirenv_csv__field *f, size_t col,
+                          double *out)
+{
+    const int status = tirenv_csv__number(r, f, manifest_names[col], out);
+    if (status == TIRENV_OK && !(*out > 0))
+        return tirenv_csv__fail(r, f->column, manifest_names[col],
+                                "expected a positive number, got '%.60s'", f->text);
+    return status;
+}
+
+/* A file of the case: relative to the data-set directory unless absolute; "" stays "". */
+static int parse_path(const tirenv_csv__reader *r, const tirenv_csv__field *f, size_t col,
+                      const char *dir, char out[512])
+{
+    out[0] = '\0';
+    if (f->text[0] == '\0')
+        return TIRENV_OK;
+    const int w = f->text[0] == '/' ? snprintf(out, 512, "%s", f->text)
+                                    : snprintf(out, 512, "%s/%s", dir, f->text);
+    if (w < 0 || w >= 512)
+        return tirenv_csv__fail(r, f->column, manifest_names[col],
+                                "the path is longer than 511 characters with the directory");
+    return TIRENV_OK;
+}
+
+/* The most cases a manifest holds: a million (the most tirenv sweep makes), about 1 GB of
+ * case records before any curve is read. */
+#define MANIFEST_MAX_CASES 1000000u
+
+/* The case names seen so far, for the duplicate check: open addressing on FNV-1a, indices
+ * into ds->cases plus one (0 = empty), at most half full. A scan of every earlier name made
+ * 100,000 cases take 66 s. */
+typedef struct {
+    size_t *slot;
+    size_t cap;   /* a power of two, or 0 */
+} name_set;
+
+static size_t name_hash(const char *s)
+{
+    uint64_t h = 14695981039346656037u;
+    for (; *s; ++s)
+        h = (h ^ (unsigned char)*s) * 1099511628211u;
+    return (size_t)h;
+}
+
+/* The case with this name, or NULL. */
+static const tirenv_case *name_find(const name_set *set, const tirenv_dataset *ds,
+                                    const char *name)
+{
+    if (!set->cap)
+        return NULL;
+    for (size_t i = name_hash(name) & (set->cap - 1);; i = (i + 1) & (set->cap - 1)) {
+        if (!set->slot[i])
+            return NULL;
+        if (strcmp(ds->cases[set->slot[i] - 1].name, name) == 0)
+            return &ds->cases[set->slot[i] - 1];
+    }
+}
+
+/* Records case k of ds (its name not yet in the set). */
+static int name_add(name_set *set, const tirenv_dataset *ds, size_t k)
+{
+    if (2 * (k + 1) > set->cap) {
+        const size_t cap = set->cap ? 2 * set->cap : 64;
+        size_t *slot = calloc(cap, sizeof *slot);
+        if (!slot)
+            return TIRENV_ENOMEM;
+        for (size_t j = 0; j < k; ++j) {
+            size_t i = name_hash(ds->cases[j].name) & (cap - 1);
+            while (slot[i])
+                i = (i + 1) & (cap - 1);
+            slot[i] = j + 1;
+        }
+        free(set->slot);
+        set->slot = slot;
+        set->cap = cap;
+    }
+    size_t i = name_hash(ds->cases[k].name) & (set->cap - 1);
+    while (set->slot[i])
+        i = (i + 1) & (set->cap - 1);
+    set->slot[i] = k + 1;
+    return TIRENV_OK;
+}
+
+static int parse_name(const tirenv_csv__reader *r, const tirenv_csv__field *f,
+                      const tirenv_dataset *ds, const name_set *names, char out[32])
+{
+    const size_t n = strlen(f->text);
+    if (n == 0)
+        return tirenv_csv__fail(r, f->column, "case", "expected a case name, got nothing");
+    if (n >= 32)
+        return tirenv_csv__fail(r, f->column, "case",
+                                "case names have at most 31 characters, got %zu", n);
+    if (name_find(names, ds, f->text))
+        return tirenv_csv__fail(r, f->column, "case",
+                                "case '%s' appears twice; names must be unique", f->text);
+    memcpy(out, f->text, n + 1);
+    return TIRENV_OK;
+}
+
+static int parse_case(tirenv_csv__reader *r, const tirenv_dataset *ds, const name_set *names,
+                      tirenv_case *c)
+{
+    tirenv_csv__field f[MANIFEST_FIELDS + 1];
+    int status = tirenv_csv__fields(r, manifest_names, MANIFEST_FIELDS, f);
+    if (status == TIRENV_OK)
+        status = parse_name(r, &f[COL_CASE], ds, names, c->name);
+    if (status == TIRENV_OK)
+        status = parse_split(r, &f[COL_SPLIT], &c->split);
+    if (status == TIRENV_OK)
+        status = parse_positive(r, &f[COL_CONTACT_LENGTH], COL_CONTACT_LENGTH,
+                                &c->contact_length);
+    if (status == TIRENV_OK)
+        status = parse_positive(r, &f[COL_LOAD], COL_LOAD, &c->load);
+    if (status == TIRENV_OK)
+        status = parse_positive(r, &f[COL_L], COL_L, &c->L);
+    if (status == TIRENV_OK)
+        status = parse_positive(r, &f[COL_H], COL_H, &c->H);
+    if (status == TIRENV_OK)
+        status = parse_path(r, &f[COL_LOG], COL_LOG, ds->dir, c->log);
+    if (status == TIRENV_OK)
+        status = parse_path(r, &f[COL_CURVE], COL_CURVE, ds->dir, c->curve_path);
+    if (status == TIRENV_OK && !c->log[0] && !c->curve_path[0])
+        status = tirenv_csv__fail(r, f[COL_LOG].column, "log",
+                                  "case '%s' has neither a log nor a curve file; expected at "
+                                  "least one", c->name);
+    return status;
+}
+
+static int add_case(tirenv_dataset *ds, size_t *cap, const tirenv_case *c)
+{
+    if (ds->n == *cap) {
+        const size_t want = *cap ? 2 * *cap : 32;
+        if (want > SIZE_MAX / sizeof *ds->cases)
+            return TIRENV_ENOMEM;
+        tirenv_case *p = realloc(ds->cases, want * sizeof *p);
+        if (!p)
+            return TIRENV_ENOMEM;
+        ds->cases = p;
+        *cap = want;
+    }
+    ds->cases[ds->n++] = *c;
+    return TIRENV_OK;
+}
+
+static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds)
+{
+    int more = tirenv_csv__next(r);
+    if (more == 0) {
+        const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, 1, "",
+                                        "no header: the file is empty or holds only blank and "
+                                        "comment lines; expected the manifest header");
+        if (r->diag)
+            r->diag->column = 1;
+        return status;
+    }
+    int status = more < 0 ? -more : tirenv_csv__header(r, manifest_names, MANIFEST_FIELDS);
+    size_t cap = 0;
+    name_set names = {NULL, 0};
+    while (status == TIRENV_OK && (more = tirenv_csv__next(r)) > 0) {
+        if (ds->n == MANIFEST_MAX_CASES) {
+            status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line, "case",
+                                  "more than %u cases; expected at most that many (the "
+                                  "most tirenv sweep makes)", MANIFEST_MAX_CASES);
+            break;
+        }
+        tirenv_case c = {0};
+        status = parse_case(r, ds, &names, &c);
+        if (status == TIRENV_OK && (add_case(ds, &cap, &c) != TIRENV_OK ||
+                                    name_add(&names, ds, ds->n - 1) != TIRENV_OK))
+            status = tirenv_error(r->diag, TIRENV_ENOMEM, r->file, r->line, "",
+                                  "out of memory");
+    }
+    free(names.slot);
+    if (status == TIRENV_OK && more < 0)
+        status = -more;
+    if (status == TIRENV_OK && ds->n == 0) {
+        status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + 1, "",
+                              "no cases after the header; expected one line per case");
+        if (r->diag)
+            r->diag->column = 1;
+    }
+    return status;
+}
+
+/* The curve file when there is one (the import is done once, when the data set is built);
+ * otherwise the log, imported with the case's own regime and obstacle. */
+static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
+{
+    if (c->curve_path[0])
+        return tirenv_curve_read_csv(c->curve_path, &c->curve, diag);
+    tirenv_import_settings s = tirenv_import_default();
+    s.R0 = R0;
+    s.contact_length = c->contact_length;
+    s.L = c->L;
+    s.H = c->H;
+    return tirenv_rig_import(c->log, &s, &c->curve, diag);
+}
+
+int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag)
+{
+    *out = (tirenv_dataset){{0}, 0, NULL};
+    if (!dir || !dir[0] || strlen(dir) >= sizeof out->dir)
+        return tirenv_error(diag, TIRENV_EINVAL, dir ? dir : "", 0, "",
+                            "expected a data-set directory name of 1 to %zu characters",
+                            sizeof out->dir - 1);
+    snprintf(out->dir, sizeof out->dir, "%s", dir);
+    char path[sizeof out->dir + 16];
+    snprintf(path, sizeof path, "%s/cases.csv", dir);
+    tirenv_csv__reader r;
+    int status = tirenv_csv__open(&r, path, diag);
+    if (status == TIRENV_OK)
+        status = parse_manifest(&r, out);
+    tirenv_csv__close(&r);
+    for (size_t i = 0; i < out->n && status == TIRENV_OK; i++) {
+        if (!out->cases[i].curve_path[0] && !(R0 > 0 && isfinite(R0)))
+            status = tirenv_error(diag, TIRENV_EINVAL, path, 0, "R0",
+                                  "importing the log of case '%s' needs the tire radius R0 > "
+                                  "0, got %g", out->cases[i].name, R0);
+        else
+            status = load_curve(&out->cases[i], R0, diag);
+    }
+    if (status != TIRENV_OK)
+        tirenv_dataset_free(out);
+    return status;
+}

@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Private to the model files' JSON (src/formats/nn_json.c reads, nn_json_write.c writes): the
+ * checksum of the network's numbers and its text, and the largest integer jansson holds. */
+#ifndef TIRENV_FORMATS_NN_JSON_IMPL_H
+#define TIRENV_FORMATS_NN_JSON_IMPL_H
+
+#include <limits.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <jansson.h>
+
+#include "tirenv/nn.h"
+
+#if JSON_INTEGER_IS_LONG_LONG
+#define NN_JSON_INT_MAX LLONG_MAX
+#else
+#define NN_JSON_INT_MAX LONG_MAX
+#endif
+
+/* FNV-1a 64 over the topology, weights, scaling and ranges, and from version 2 on the member
+ * count, the two forms and the even width (docs/formats.md section 10). */
+uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, int version);
+
+/* "fnv1a64:<16 hex>" into buf (n bytes). */
+void tirenv_nn_json__hash_text(char *buf, size_t n, uint64_t h);
+
+#endif

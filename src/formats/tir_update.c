@@ -1,0 +1,231 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* A .tir file's values set in place, comments and layout kept (tirenv_tir_update): how
+ * `tirenv identify --write` records identified parameters in a hand-written tire file. */
+#include "tirenv/outfile.h"
+#include "tirenv/tir.h"
+
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+static const char begin_mark[] = "! tirenv identify: begin";
+static const char end_mark[] = "! tirenv identify: end";
+
+/* The whole file, NUL-terminated, or NULL. */
+static char *slurp(const char *path, int *status, tirenv_diag *diag)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) {
+        *status = tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open the tire file");
+        return NULL;
+    }
+    size_t cap = 1 << 14, len = 0;
+    char *buf = malloc(cap);
+    for (size_t got; buf && (got = fread(buf + len, 1, cap - len - 1, fp)) > 0;) {
+        len += got;
+        if (len + 1 == cap) {
+            char *more = realloc(buf, cap *= 2);
+            if (!more) {
+                free(buf);
+                buf = NULL;
+            }
+            buf = more;
+        }
+    }
+    const int bad = ferror(fp);
+    fclose(fp);
+    if (!buf || bad || memchr(buf, '\0', len)) {
+        free(buf);
+        *status = tirenv_error(diag, bad ? TIRENV_EIO : buf ? TIRENV_EPARSE : TIRENV_ENOMEM, path, 0, "",
+                     "cannot read the tire file as text");
+        return NULL;
+    }
+    buf[len] = '\0';
+    return buf;
+}
+
+/* The section a line opens ("[NAME]", name copied upper-case into sec), or 0. */
+static int section_of(const char *line, size_t len, char sec[64])
+{
+    size_t i = 0;
+    while (i < len && (line[i] == ' ' || line[i] == '\t'))
+        i++;
+    if (i >= len || line[i] != '[')
+        return 0;
+    size_t k = 0;
+    for (i++; i < len && line[i] != ']' && k < 63; i++)
+        sec[k++] = (char)toupper((unsigned char)line[i]);
+    sec[k] = '\0';
+    return 1;
+}
+
+/* The index of the value this line sets in section sec, or n. */
+static size_t value_of(const char *line, size_t len, const char *sec, size_t n,
+                       const tirenv_tir_value v[], size_t *eq)
+{
+    size_t i = 0;
+    while (i < len && (line[i] == ' ' || line[i] == '\t'))
+        i++;
+    const size_t k0 = i;
+    while (i < len && (isalnum((unsigned char)line[i]) || line[i] == '_'))
+        i++;
+    const size_t k1 = i;
+    while (i < len && (line[i] == ' ' || line[i] == '\t'))
+        i++;
+    if (k1 == k0 || i >= len || line[i] != '=')
+        return n;
+    *eq = i;
+    for (size_t j = 0; j < n; j++)
+        if (!strcasecmp(v[j].section, sec) && strlen(v[j].key) == k1 - k0 &&
+            !strncasecmp(v[j].key, line + k0, k1 - k0))
+            return j;
+    return n;
+}
+
+static void put_key(FILE *fp, const tirenv_tir_value *v)
+{
+    fprintf(fp, "%-24s = %.6g\n", v->key, v->value);
+}
+
+/* The line with its value replaced: the comment ('$' on) stays at its column when the new
+ * value fits before it. */
+static void put_replaced(FILE *fp, const char *line, size_t len, size_t eq, double value)
+{
+    size_t i = eq + 1;
+    while (i < len && (line[i] == ' ' || line[i] == '\t'))
+        i++;
+    const char *dollar = memchr(line + i, '$', len - i);
+    char text[64];
+    const int w = snprintf(text, sizeof text, "%.6g", value);
+    fprintf(fp, "%.*s%s", (int)i, line, text);
+    if (dollar) {
+        const size_t col = (size_t)(dollar - line);
+        size_t at = i + (size_t)w;
+        fputc(' ', fp);
+        for (at++; at < col; at++)
+            fputc(' ', fp);
+        fprintf(fp, "%.*s", (int)(len - col), dollar);
+    }
+    fputc('\n', fp);
+}
+
+static void put_note(FILE *fp, const char *note)
+{
+    fprintf(fp, "%s\n", begin_mark);
+    for (const char *p = note; p && *p;) {
+        const size_t l = strcspn(p, "\n");
+        fprintf(fp, "! %.*s\n", (int)l, p);
+        p += l + (p[l] == '\n');
+    }
+    fprintf(fp, "%s\n", end_mark);
+}
+
+int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
+                      const char *note, tirenv_diag *diag)
+{
+    enum { MAX = 64 };
+    if (n > MAX)
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "more than %d values", MAX);
+    int status;
+    char *text = slurp(path, &status, diag);
+    if (!text)
+        return status;
+    int done[MAX] = {0};
+    tirenv_outfile out;
+    status = tirenv_outfile_open(&out, path, diag);
+    if (status) {
+        free(text);
+        return status;
+    }
+    FILE *fp = out.fp;
+    char sec[64] = "";
+    int in_note = 0, noted = 0;
+    for (const char *p = text; *p;) {
+        const size_t len = strcspn(p, "\n");
+        const char *line = p;
+        p += len + (p[len] == '\n');
+        size_t l = len;
+        if (l && line[l - 1] == '\r')
+            l--;
+        if (!strncmp(line, begin_mark, sizeof begin_mark - 1)) {
+            in_note = 1;
+            continue;
+        }
+        if (in_note) {
+            if (!strncmp(line, end_mark, sizeof end_mark - 1)) {
+                in_note = 0;
+                put_note(fp, note);
+                noted = 1;
+            }
+            continue;
+        }
+        /* The note goes after [MDI_HEADER]'s keys and comments, before the first '$-' rule
+         * or section that follows them. */
+        if (!noted && !strcmp(sec, "MDI_HEADER") && l >= 2 && line[0] == '$' &&
+            line[1] == '-') {
+            put_note(fp, note);
+            noted = 1;
+        }
+        char next[64];
+        if (section_of(line, l, next)) {
+            /* Before leaving a section: the note after [MDI_HEADER]'s keys, missing keys. */
+            if (!noted && !strcmp(sec, "MDI_HEADER")) {
+                put_note(fp, note);
+                noted = 1;
+            }
+            memcpy(sec, next, sizeof sec);
+            fprintf(fp, "%.*s\n", (int)l, line);
+            for (size_t j = 0; j < n; j++)
+                if (!strcasecmp(values[j].section, sec)) {
+                    /* Added right after the header only if the section lacks the key: look
+                     * ahead in this section. */
+                    int found = 0;
+                    char s2[64];
+                    for (const char *q = p; *q && !found;) {
+                        const size_t ql = strcspn(q, "\n");
+                        size_t eq;
+                        if (section_of(q, ql, s2))
+                            break;
+                        found = value_of(q, ql, sec, 1, &values[j], &eq) == 0;
+                        q += ql + (q[ql] == '\n');
+                    }
+                    if (!found) {
+                        put_key(fp, &values[j]);
+                        done[j] = 1;
+                    }
+                }
+            continue;
+        }
+        size_t eq;
+        const size_t j = value_of(line, l, sec, n, values, &eq);
+        if (j < n && !done[j]) {
+            put_replaced(fp, line, l, eq, values[j].value);
+            done[j] = 1;
+        } else {
+            fprintf(fp, "%.*s\n", (int)l, line);
+        }
+    }
+    if (!noted)
+        put_note(fp, note);
+    for (size_t j = 0; j < n; j++)
+        if (!done[j]) {
+            /* Sections absent from the file, each once, with all of its keys. */
+            int first = 1;
+            for (size_t i = 0; i < j; i++)
+                first &= !(!done[i] && !strcasecmp(values[i].section, values[j].section));
+            if (!first)
+                continue;
+            fprintf(fp, "[%s]\n", values[j].section);
+            for (size_t i = j; i < n; i++)
+                if (!done[i] && !strcasecmp(values[i].section, values[j].section))
+                    put_key(fp, &values[i]);
+        }
+    free(text);
+    if ((status = tirenv_outfile_commit(&out, diag)))
+        return status;
+    /* The result must be a tire file tirenv reads. */
+    tirenv_tire check = tirenv_tire_default();
+    return tirenv_tir_read(path, &check, diag);
+}

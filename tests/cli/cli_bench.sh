@@ -1,0 +1,42 @@
+#!/bin/sh
+# tirenv bench --json: every figure of one run as one JSON object of name: number pairs, the
+# figures the speed goals are stated in among them, all positive; the tables stay the default.
+# --quick keeps it to seconds (one run each, a 100 m road); the numbers are not checked
+# against targets here (timings are no test), only that each was measured.
+# Usage: tests/cli/cli_bench.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2034,SC2086
+. "$(dirname "$0")/../lib/clilib.sh"
+
+run "$bin" bench --quick --json
+check "bench --quick --json: exit 0, nothing on stderr" '[ "$rc" -eq 0 ] && [ ! -s err ]'
+check "stdout is one JSON object with the named figures, each a positive number" \
+    'python3 -c "
+import json, math, sys
+d = json.load(open(\"out\"))
+assert isinstance(d, dict)
+need = [\"rigid_cleat_pos_per_s\", \"springs_cleat_pos_per_s\", \"springs_road_pos_per_s\",
+        \"ring_cleat_pos_per_s\", \"cam_road_pos_per_s\", \"nn_batch_per_s\",
+        \"springs_evals_per_pos\", \"springs_over_rigid_cleat\", \"springs_over_rigid_road\",
+        \"ring_over_rigid_cleat\", \"springs_road_evals_per_pos\", \"import_ms\",
+        \"ride_springs_x_real\"]
+for k in need:
+    v = d[k]
+    assert isinstance(v, (int, float)) and not isinstance(v, bool), k
+    assert math.isfinite(v) and v > 0, (k, v)
+for k, v in d.items():
+    assert isinstance(v, (int, float)) and math.isfinite(v), k
+# Ratios as stated: springs time / rigid time from the same run.
+r = d[\"rigid_cleat_pos_per_s\"] / d[\"springs_cleat_pos_per_s\"]
+assert abs(d[\"springs_over_rigid_cleat\"] - r) <= 1e-9 * r
+assert d[\"springs_evals_per_pos\"] >= 1 and d[\"quick\"] == 1
+"'
+
+run "$bin" bench --quick
+check "without --json: the tables, no JSON" \
+    '[ "$rc" -eq 0 ] && grep -q "^springs newton " out && grep -q "^ring newton " out &&
+     ! grep -q "{" out'
+
+run "$bin" bench --json --frobnicate
+check "an unknown option: exit 1" '[ "$rc" -eq 1 ]'
+
+clilib_done

@@ -1,0 +1,78 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# Counts and values from input bounded before they are used (issue 27): positions from
+# --x-from/--x-to/--dx (--stream included), lines longer than the readers' cap in the middle
+# of a file, and tire and vehicle values outside their plausible ranges, each refused with a
+# message naming the option, line or key, exit 1 or 2, quickly, and no output left.
+. "$(dirname "$0")/../lib/clilib.sh"
+
+printf 'x_m,z_m\n0,0\n1,0.05\n2,0\n' >p.csv
+
+# Each of these hung, or wrote gigabytes, or printed a 301-digit count.
+for args in "--x-to 1e300" "--x-to 1e9" "--x-from -1e300 --x-to 1e300" "--dx 1e-300"; do
+    for mode in "" "--stream"; do
+        run timeout 20 "$bin" envelope --model springs --load 13000 --profile p.csv $mode \
+            $args -o out.csv
+        check "envelope $mode $args: exit 1, 'too many' with the cap, no output" \
+            '[ $rc -eq 1 ] && grep -q "positions from .* is too many (at most 10*)" err &&
+             [ "$(wc -c <err)" -lt 200 ] && no_file out.csv'
+    done
+done
+run timeout 20 "$bin" envelope --model springs --load 13000 --profile p.csv --stream \
+    --x-from 1e300 --x-to 1e300 -o out.csv
+check "--stream at x = 1e300: exit 1, the step does not move x" \
+    '[ $rc -eq 1 ] && grep -q "does not move x" err && no_file out.csv'
+# The cap of --stream is higher than a whole sweep's: 2e7 positions stream (not run: counted).
+run timeout 20 "$bin" envelope --model springs --load 13000 --profile p.csv --x-to 2e4 \
+    -o out.csv
+check "a whole sweep of 2e7 positions: refused at 1e7" \
+    '[ $rc -eq 1 ] && grep -q "at most 10000000)" err'
+
+# A comment line past the 65,536-character cap in the middle of a file: an error at its
+# line, never a file read up to it (convert wrote 3 of 6 vertices with exit 0).
+long=$(awk 'BEGIN { s = "#"; while (length(s) < 70000) s = s s; print s }')
+{ printf 'x_m,z_m\n0,0\n0.5,0\n'; echo "$long"; printf '1,0.05\n1.5,0\n2,0\n'; } >long.csv
+run "$bin" convert --profile long.csv -o out.csv
+check "convert: a 70,000-character comment on line 4 is an error at line 4" \
+    '[ $rc -eq 2 ] && grep -q "long.csv:4: line longer than 65536" err && no_file out.csv'
+{ printf '[DIMENSION]\nUNLOADED_RADIUS = 0.7\n'; echo "$long" | tr '#' '!';
+  printf '[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS = 1e6\n'; } >long.tir
+run "$bin" flat --model springs --load 13000 --tire long.tir
+check "flat: a 70,000-character comment in a .tir is an error at line 3" \
+    '[ $rc -eq 2 ] && grep -q "long.tir:3: line longer than 65536" err'
+
+# Values outside the plausible ranges (docs/formats.md sections 1 and 3), named.
+for kv in NODE_ANGLE=1e-20 TREAD_STIFFNESS=1e-308 VERTICAL_STIFFNESS=1e-308 \
+          ELLIPS_SHIFT=1e308 RADIAL_STIFFNESS=1e308 MAX_ITERATIONS=1000000000; do
+    run timeout 20 "$bin" flat --model ring --load 13000 --set "$kv"
+    check "--set $kv: exit 2 naming ${kv%%=*} and its range" \
+        '[ $rc -eq 2 ] && grep -q "${kv%%=*}" err && grep -q "range\|elements" err'
+done
+for kv in MASS=1e9 SEAT_AHEAD_OF_CG=1e9 GRAVITY=1e-308 FRONT_AXLE.TIRE_STIFFNESS=1e-308; do
+    run timeout 20 "$bin" ride --cleat 0.1,0.05 --speed 2 --set "$kv"
+    check "ride --set $kv: exit 2 naming ${kv%%=*}" \
+        '[ $rc -eq 2 ] && grep -q "${kv%%=*}: .*\(plausible range\|unphysical\)" err'
+done
+
+# Resources: a sweep of more than 1e6 cases is refused before anything is written; a
+# manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
+# name took 66 s there); a model file past 64 MiB is refused without being parsed.
+list=$(awk 'BEGIN { for (i = 1; i <= 101; ++i) printf "%s%.4f", (i > 1 ? "," : ""), 0.01 + i / 1000 }')
+run "$bin" sweep --lengths "$list" --heights "$list" --contact-lengths "$list" -o big
+check "sweep of 101^3 = 1,030,301 cases: exit 2 naming the cap, nothing written" \
+    '[ $rc -eq 2 ] && grep -q "more than 1000000 cases" err && [ ! -e big ] &&
+     [ ! -e big.partial ]'
+mkdir many
+awk 'BEGIN { print "case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve"
+             for (i = 1; i <= 100000; ++i) printf "c%d,train,0.3,13000,0.1,0.05,,c.csv\n", i
+             print "c77777,train,0.3,13000,0.1,0.05,,c.csv" }' >many/cases.csv
+run "$bin" dataset list many
+check "cases.csv: the duplicate c77777 named at line 100002" \
+    '[ $rc -eq 2 ] && grep -q "many/cases.csv:100002:1: case: case .c77777. appears twice" err'
+head -c 68000000 /dev/zero | tr '\0' ' ' >big.json
+run "$bin" predict --nn big.json --cleat 0.1,0.05 --contact-length 0.3
+check "a 68 MB model file: exit 2, larger than 64 MiB" \
+    '[ $rc -eq 2 ] && grep -q "big.json: larger than 64 MiB" err'
+rm -f big.json
+
+clilib_done

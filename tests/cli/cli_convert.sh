@@ -1,0 +1,120 @@
+#!/bin/sh
+# tirenv convert end to end: roads between CSV, OpenCRG and RDF files, formats told by content,
+# round trips to the written precision, misuse and bad files refused without output.
+# Usage: tests/cli/cli_convert.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the
+# sample files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2034,SC2086
+. "$(dirname "$0")/../lib/clilib.sh"
+
+samples=${TIRENV_SAMPLES:-}
+if [ -z "$samples" ] || [ ! -f "$samples/crg/Horstwalde.crg" ]; then
+    echo "not ok 1 - the sample files (TIRENV_SAMPLES='$samples') are missing"
+    exit 1
+fi
+crg=$samples/crg
+rdf=$samples/rdf
+
+# data rows of two CSVs equal number by number within TOL (the '#' comments may differ)
+same_rows() {
+    grep -v '^#' "$1" >a.rows && grep -v '^#' "$2" >b.rows &&
+        [ "$(wc -l <a.rows)" -eq "$(wc -l <b.rows)" ] && [ "$(wc -l <a.rows)" -gt 1 ] &&
+        paste -d, a.rows b.rows | awk -F, -v t="$3" '
+            NR == 1 { if ($1 != "x_m" || $3 != "x_m") bad = 1; next }
+            { for (k = 1; k <= 2; k++) { d = $k - $(k + 2); if (d > t || -d > t) bad = 1 } }
+            END { exit bad }'
+}
+
+# --- help and misuse ---------------------------------------------------------------------
+run "$bin" convert --help
+check "convert --help: usage on stdout, exit 0" '[ $rc -eq 0 ] && grep -q "^usage: tirenv convert" out'
+run "$bin" help
+check "'tirenv help' lists convert" 'grep -q "^  convert " out'
+run "$bin" convert --profile "$crg/Horstwalde.crg"
+check "no -o: exit 1 naming it" '[ $rc -eq 1 ] && grep -q -- "-o OUT" err'
+run "$bin" convert --profile "$crg/Horstwalde.crg" -o road.dat
+check "unknown output extension: exit 1, nothing written" \
+    '[ $rc -eq 1 ] && grep -q "unknown extension" err && no_file road.dat'
+run "$bin" convert --profile "$crg/Horstwalde.crg" --crg-encoding abcd -o x.crg
+check "bad --crg-encoding: exit 1" '[ $rc -eq 1 ] && grep -q "crg-encoding" err'
+run "$bin" convert --profile "$rdf/plateau.rdf" --track 0.5 -o x.csv
+check "--track on an RDF road: exit 1 pointing at --side" \
+    '[ $rc -eq 1 ] && grep -q "use --side" err && no_file x.csv'
+run "$bin" convert --profile "$crg/Horstwalde.crg" --track abc -o x.csv
+check "malformed --track: exit 1" '[ $rc -eq 1 ] && grep -q -- "--track" err'
+
+# --- CRG ----------------------------------------------------------------------------------
+run "$bin" convert --profile "$crg/Horstwalde.crg" -o h.csv
+check "Horstwalde to CSV: 2503 rows from x = 0 to 250.2, summary on stderr" \
+    '[ $rc -eq 0 ] && [ $(grep -vc "^#" h.csv) -eq 2504 ] && grep -q "^250.2[0-9]*,0$" h.csv &&
+     grep -q "^x_m,z_m$" h.csv && grep -q "2503 rows, x 0 to 250.2 m" err'
+for enc in kdbi krbi ldfi lrfi; do
+    run "$bin" convert --profile h.csv --crg-encoding $enc -o h-$enc.crg
+    ok=$rc
+    run "$bin" convert --profile h-$enc.crg -o h-$enc.csv
+    tol=0
+    [ $enc = lrfi ] && tol=5e-8
+    [ $enc = ldfi ] && tol=1e-16
+    [ $enc = krbi ] && tol=1e-7
+    check "CRG -> CSV -> CRG ($enc) -> CSV: the same heights within $tol m" \
+        '[ $ok -eq 0 ] && [ $rc -eq 0 ] && same_rows h.csv h-$enc.csv $tol'
+done
+check "KDBI keeps the CSV's numbers exactly, text and all" \
+    '[ "$(grep -v "^#" h.csv)" = "$(grep -v "^#" h-kdbi.csv)" ]'
+run "$bin" convert --profile "$crg/Horstwalde.crg" --track 1.6 -o h16.csv
+run "$bin" convert --profile "$crg/Horstwalde.crg" --crg-encoding ldfi -o all.crg
+ok=$rc
+run "$bin" convert --profile all.crg --track 1.6 -o all16.csv
+check "CRG -> CRG keeps every long section: the track at v = 1.6 m is unchanged" \
+    '[ $ok -eq 0 ] && [ $rc -eq 0 ] && grep -q "^#:LDFI" all.crg &&
+     [ $(grep -c "^D:long section" all.crg) -eq 45 ] && same_rows h16.csv all16.csv 1e-16'
+cp "$crg/halfround_6in.crg" road.txt
+run "$bin" convert --profile road.txt -o -
+check "a .crg named road.txt is read as one (by content); '-o -' writes CSV to stdout" \
+    '[ $rc -eq 0 ] && [ $(grep -vc "^#" out) -eq 10002 ] && grep -q "^50.15,0.1523" out'
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track -1.5 -o nan.csv
+check "a track through missing values: exit 2 naming row and long section, no file" \
+    '[ $rc -eq 2 ] && grep -q "long section 1 (v = -1.5 m) at row 8" err && no_file nan.csv'
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track 2 -o out.csv
+check "a track beyond the road: exit 2, no file" \
+    '[ $rc -eq 2 ] && grep -q "beyond the road" err && no_file out.csv'
+run "$bin" convert --profile "$crg/handmade_platform.crg" -o p.csv
+check "a malformed number in a .crg header: exit 2 naming file:line:column and key" \
+    '[ $rc -eq 2 ] && grep -q "handmade_platform.crg:35:28: GRID_NAN_MODE" err && no_file p.csv'
+head -c 3000 "$crg/Horstwalde.crg" >cut.crg
+run "$bin" convert --profile cut.crg -o cut.csv
+check "a truncated binary .crg: exit 2, no file" \
+    '[ $rc -eq 2 ] && grep -q "truncated data" err && no_file cut.csv'
+run "$bin" convert --profile "$crg/handmade_curved_banked_sloped.crg" --track 0.5 -o c.rdf
+check "a curved, banked, sloped CRG track to RDF" \
+    '[ $rc -eq 0 ] && grep -q "^ROAD_TYPE     = '"'poly_line'"'" c.rdf &&
+     [ $(awk "/XZ_DATA/ { on = 1; next } on" c.rdf | wc -l) -eq 23 ]'
+
+# --- RDF and CSV --------------------------------------------------------------------------
+run "$bin" convert --profile "$rdf/plateau.rdf" -o p.csv
+ok=$rc
+run "$bin" convert --profile p.csv -o p.rdf
+ok2=$rc
+run "$bin" convert --profile p.rdf -o p2.csv
+check "RDF -> CSV -> RDF -> CSV: the same numbers exactly" \
+    '[ $ok -eq 0 ] && [ $ok2 -eq 0 ] && [ $rc -eq 0 ] && same_rows p.csv p2.csv 0 &&
+     grep -q "^110,4.9$" p.csv'
+for side in left right mean; do
+    run "$bin" convert --profile "$rdf/plateau.rdf" --side $side -o s.csv
+    check "--side $side" '[ $rc -eq 0 ] && same_rows p.csv s.csv 0'
+done
+printf 'x_m,z_m\n0,0\n0.1,0.01\n0.3,0.02\n' >uneven.csv
+run "$bin" convert --profile uneven.csv -o u.crg
+check "an unevenly spaced CSV to .crg without --dx: exit 2, no file" \
+    '[ $rc -eq 2 ] && grep -q "evenly spaced" err && no_file u.crg'
+run "$bin" convert --profile uneven.csv --dx 0.05 --half-width 1.5 -o u.crg
+ok=$rc
+run "$bin" convert --profile u.crg --track -1.4 -o u.csv
+check "... with --dx 0.05: resampled on 7 rows, the same heights across 3 m" \
+    '[ $ok -eq 0 ] && [ $rc -eq 0 ] && [ $(grep -vc "^#" u.csv) -eq 8 ] &&
+     grep -q "^0.2,0.0150*1*$" u.csv && grep -aq "LONG_SECTION_V_LEFT      = 1.5" u.crg'
+printf 'x_m,z_m\n0,0\n1,x\n' >bad.csv
+run "$bin" convert --profile bad.csv -o b.rdf
+check "a malformed CSV: exit 2 naming file:line, no file" \
+    '[ $rc -eq 2 ] && grep -q "bad.csv:3" err && no_file b.rdf'
+
+clilib_done

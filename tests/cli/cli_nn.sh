@@ -1,0 +1,39 @@
+#!/bin/sh
+# The network's CLI: the paper's setup and the default (an ensemble with the even input) in
+# model files of version 2, a version-1 file still predicting, the centre of the default's
+# curve flat, tirenv train --seeds, and refusals. SPDX-License-Identifier: GPL-3.0-or-later
+. "$(dirname "$0")/../lib/clilib.sh"
+set_data="$data/../../data/dataset"
+
+run "$bin" train --data "$set_data" --paper --restarts 2 --epochs 60 -o paper.json
+check "train --paper: one network of the paper's form in a version 2 file" \
+    '[ $rc -eq 0 ] && grep -q "\"version\": 2" paper.json &&
+     grep -q "\"input_form\": \"paper\"" paper.json && grep -q "\"target\": \"h\"" paper.json &&
+     grep -q "the restart best on control alone" out'
+run "$bin" train --data "$set_data" --restarts 3 --ensemble 2 --epochs 60 -o ens.json
+check "train (default forms) --ensemble 2: the mean of 2 of 3 restarts, even input, h/H" \
+    '[ $rc -eq 0 ] && grep -q "\"input_form\": \"even\"" ens.json &&
+     grep -q "\"target\": \"h/H\"" ens.json && grep -q "the mean of the 2 restarts" out &&
+     [ "$(grep -c "\"layers\"" ens.json)" -eq 2 ]'
+# The last three positions before the centre, 0.1 mm apart: the slope into the centre of the
+# even input's curve vanishes with the step (dh/dx ~ x), so over 0.1 mm it is below 1e-3.
+run "$bin" predict --nn ens.json --cleat 0.10,0.10 --contact-length 0.28 --x-from -0.0002 \
+    --x-to 0 --dx 0.0001 -o centre.csv
+check "predict, even input: flat into the obstacle centre (|dh/dx| < 1e-3 over 0.1 mm)" \
+    '[ $rc -eq 0 ] && grep -q "network: input even, target h/H, mean of 2 networks" err &&
+     awk -F, "NR == 3 { a = \$3 } NR == 4 { d = (\$3 - a) / 1e-4; exit !(d < 1e-3 && d > -1e-3) }" centre.csv'
+run "$bin" predict --nn "$data/nn-v1.json" --cleat 0.10,0.10 --contact-length 0.28 -o v1.csv
+check "predict with a version 1 model file (the paper's form, one network)" \
+    '[ $rc -eq 0 ] && grep -q "network: input paper, target h, mean of 1 network$" err && [ -s v1.csv ]'
+run "$bin" train --data "$set_data" --seeds 3 --restarts 2 --epochs 40 -o med.json
+check "train --seeds 3: a line per seed, the spread, the median seed written" \
+    '[ $rc -eq 0 ] && [ $(grep -cE "^ +[123] +[0-9.]+ +[0-9.]+ " out) -eq 3 ] &&
+     grep -q "over 3 seeds" out && grep -q "<- nearest the median" out && [ -s med.json ]'
+run "$bin" train --data "$set_data" --input odd -o x.json
+check "train --input odd: exit 1, no file" '[ $rc -eq 1 ] && grep -q "paper or even" err && no_file x.json'
+run "$bin" train --data "$set_data" --ensemble 0 -o x.json
+check "train --ensemble 0: exit 1, no file" '[ $rc -eq 1 ] && no_file x.json'
+run "$bin" train --data "$set_data" --lm-solver gsl -o x.json
+check "train --lm-solver gsl (version 0.1's, gone with GSL): exit 1 naming cholesky, no file" \
+    '[ $rc -eq 1 ] && grep -q "expected cholesky" err && no_file x.json'
+clilib_done

@@ -1,0 +1,70 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# One tire, every model, from the command line (docs/models.md section 14): tirenv identify and
+# its in-place write; an MF-Tyre file without tirenv's sections (models derived and said, flat
+# at its own loads, refusal naming the key); the network's own tire in envelope and the ride.
+# Usage: tests/cli/cli_onetire.sh BIN TESTDATA_DIR.
+# shellcheck disable=SC2016,SC2034,SC2086
+. "$(dirname "$0")/../lib/clilib.sh"
+
+repo=$(cd "$data/../.." && pwd)
+
+# --- identify ------------------------------------------------------------------------------
+cp "$repo/data/tires/default.tir" t.tir
+run "$bin" identify --tire t.tir
+check "identify: the default tire's values are those it writes (unchanged file)" \
+    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *369000 " out && grep -q "Q_RA1 *0.807 " out &&
+     cmp -s t.tir "$repo/data/tires/default.tir"'
+run "$bin" identify --tire t.tir --set RADIAL_STIFFNESS=1e6 --write
+check "identify --write: the file re-read has the identified values, comments and note kept" \
+    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 369000 *\$ c_r" t.tir &&
+     [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
+     [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
+run "$bin" identify --loads 12000
+check "identify --loads with one load: exit 1 saying two are needed" \
+    '[ $rc -eq 1 ] && grep -q "at least two loads" err'
+
+# --- an MF-Tyre file without tirenv's sections ---------------------------------------------
+mf=$data/tir/mf_185_80R14.tir
+run "$bin" flat --tire "$mf" --csv
+check "flat on an MF-Tyre file: its own loads 0.5 to 1.5 FNOMIN (1900 to 5700 N), derived values said" \
+    '[ $rc -eq 0 ] && [ $(rows out) -eq 5 ] && [ "$(sed -n 2p out | cut -d, -f1)" = 1900 ] &&
+     [ "$(sed -n 6p out | cut -d, -f1)" = 5700 ] && grep -q "derived RADIAL_STIFFNESS" err'
+run "$bin" flat --tire "$mf" --load 3800 --csv
+check "its springs model: deflection FNOMIN/VERTICAL_STIFFNESS = 21.714 mm at FNOMIN" \
+    '[ $rc -eq 0 ] && near "$(sed -n 2p out | cut -d, -f3)" 0.0217143 1e-6'
+printf '[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\nVERTICAL_STIFFNESS = 1.75e5\n' >nof.tir
+run "$bin" flat --tire nof.tir --load 3000
+check "a file without FNOMIN and no [ENVELOPING_SPRINGS]: exit 2 naming FNOMIN" \
+    '[ $rc -eq 2 ] && grep -q "FNOMIN" err && grep -q "ENVELOPING_SPRINGS" err && [ ! -s out ]'
+run "$bin" flat --tire nof.tir --load 3000 --model rigid
+check "... the rigid disc needs neither: exit 0, the note says the springs model is not this tire's" \
+    '[ $rc -eq 0 ] && grep -q "not this tire" err'
+
+# --- the network's tire --------------------------------------------------------------------
+run "$bin" train --data "$repo/data/dataset" --trainer lm --seed 3 -o nn.json
+val_rms=$(awk '$1 == "validation" { print $3 }' out)
+check "train records the contact law of the data's tire (the ring of source.txt)" \
+    '[ $rc -eq 0 ] && [ -n "$val_rms" ] && grep -q "contact_law" nn.json &&
+     grep -q "the ring model" nn.json'
+run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12935.16 -o e.csv
+check "envelope --model nn --load 12935.16: the ring's 0.28 m, not the springs chord" \
+    '[ $rc -eq 0 ] && grep -q "contact length 0.28 m" err'
+run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 6000 -o o.csv
+check "an older network file: read, with a warning naming training.data.contact_law" \
+    '[ $rc -eq 0 ] && grep -q "warning: .*training.data.contact_law" err'
+# In the ride (inputs at each axle's static load), the network's input to the rear axle over
+# the cleat against the ring's, the tire it was trained on: the RMS over the samples where
+# either is above 0.1 mm within the network's own validation RMS (0.76 against 0.89 mm when
+# written; the springs model's chord gave 4.9 mm). The front tire's 8.74 kN is a 0.23 m
+# patch, below the data's 0.28 m: --extrapolate.
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model ring,nn --nn nn.json --extrapolate \
+    --enveloping static --out-dir rd --series
+rms=$(paste -d, rd/series-ring-10kmh.csv rd/series-nn-10kmh.csv | awk -F, '
+    /^#/ || /t_s/ { next }
+    { r = $4; q = $17; if (r > 1e-4 || q > 1e-4) { s += (q - r) ^ 2; n++ } }
+    END { if (n) printf "%.6f", 1e3 * sqrt(s / n) }')
+check "ride: the network's rear input within its validation RMS of the ring's ($rms vs $val_rms mm)" \
+    '[ $rc -eq 0 ] && [ -n "$rms" ] && awk -v a="$rms" -v b="$val_rms" "BEGIN { exit !(a < b) }"'
+
+clilib_done

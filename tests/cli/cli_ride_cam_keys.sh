@@ -1,0 +1,32 @@
+#!/bin/sh
+# tirenv ride --model cam on a tire file without the cam keys: refused, naming them, whichever
+# way of enveloping (docs/models.md section 9.5) is asked; before, only static checked and
+# dynamic and direct ran the cam with the default tire's shape.
+# Usage: tests/cli/cli_ride_cam_keys.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2034,SC2086
+repo=$(cd "$(dirname "$0")/../.." && pwd)
+. "$(dirname "$0")/../lib/clilib.sh"
+
+grep -v -e '^Q_RA' -e '^ELLIPS_' "$repo/data/tires/default.tir" > nocam.tir
+sed "s#'../tires/default.tir'#'$PWD/nocam.tir'#" "$repo/data/vehicles/tractor.veh" > nocam.veh
+check "the vehicle's tires are the tire file without the cam keys" \
+    '[ $(grep -c nocam.tir nocam.veh) -eq 2 ] && ! grep -q ^ELLIPS_ nocam.tir'
+for e in static dynamic direct; do
+    run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model cam --enveloping $e \
+        --vehicle nocam.veh
+    check "--enveloping $e: exit 2 naming the cam keys, no table" \
+        '[ $rc -eq 2 ] && grep -q "cam keys Q_RA1, Q_RA2, ELLIPS_SHIFT" err && [ ! -s out ]'
+done
+# Only the rear tire without them: every way names the rear axle (direct named the front, whose
+# check set both axles' models).
+for e in static dynamic direct; do
+    run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model cam --enveloping $e \
+        --set "REAR_AXLE.TIRE_FILE=$PWD/nocam.tir"
+    check "only the rear tire without the cam keys, --enveloping $e: exit 2 naming the rear axle" \
+        '[ $rc -eq 2 ] && grep -q "cam model, rear axle" err && [ ! -s out ]'
+done
+run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model springs --enveloping dynamic \
+    --vehicle nocam.veh
+check "the springs model does not need them: exit 0" '[ $rc -eq 0 ]'
+
+clilib_done

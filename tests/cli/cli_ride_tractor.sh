@@ -1,0 +1,43 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# End-to-end checks of tirenv ride: the tractor over a cleat, its series and comfort files, and
+# misuse and bad vehicle files refused without output.
+# Usage: tests/cli/cli_ride_tractor.sh BIN TESTDATA_DIR. TAP lines, as tests/cli/cli.sh, from which it
+# was split so that CTest runs the parts side by side.
+# shellcheck disable=SC2016,SC2034,SC2086
+. "$(dirname "$0")/../lib/clilib.sh"
+
+# --- ride: the tractor over a profile ------------------------------------------------------
+run "$bin" ride --help
+check "ride --help prints usage, exit 0" '[ $rc -eq 0 ] && grep -q "^usage: tirenv ride" out'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point -o series.csv
+check "ride -o: exact header, 1 kHz rows from t = 0 at rest, a table row on stdout" \
+    '[ $rc -eq 0 ] && [ "$(grep -v "^#" series.csv | head -n 1)" = "t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N" ] &&
+     [ "$(grep -v "^#" series.csv | sed -n 2p | cut -d, -f1,5,6)" = 0,0,0 ] &&
+     [ "$(grep -v "^#" series.csv | sed -n 3p | cut -d, -f1)" = 0.001 ] &&
+     [ $(grep -c "^point " out) -eq 1 ]'
+run "$bin" ride --cleat 0.30,0.05 --speed 5km/h,15km/h --model point,cam --out-dir rd --series
+check "ride --out-dir: comfort table of 2 models x 2 speeds, both plots as PNG and SVG" \
+    '[ $rc -eq 0 ] && [ $(rows rd/comfort.csv) -eq 4 ] && [ -s rd/seat.png ] &&
+     [ -s rd/seat.svg ] && [ -s rd/spectrum.png ] && [ -s rd/spectrum.svg ] &&
+     [ -s rd/seat.gp ] && [ -s rd/series-cam-15kmh.csv ] &&
+     [ -z "$(find rd -name "*tmp.*")" ]'
+check "ride over a cleat: point contact's seat acceleration peaks higher than the cam's" \
+    'awk -F, "NR > 1 && \$3 == 5 { p[\$1] = \$13 } END { exit !(p[\"point\"] > 2 * p[\"cam\"]) }" rd/comfort.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h,20km/h --model point -o two.csv
+check "ride -o with two speeds: exit 1, no file" '[ $rc -eq 1 ] && no_file two.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 10mph
+check "ride --speed 10mph: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--speed" err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --dt 0.01
+check "ride --dt too coarse for ISO 2631-1: exit 1" '[ $rc -eq 1 ] && grep -q "80 Hz" err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model nn
+check "ride --model nn without --nn: exit 1" '[ $rc -eq 1 ] && grep -q -- "--nn" err'
+printf '[BODY]\nMASS = 4500\nMASS_X = 1\n' >bad.veh
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --vehicle bad.veh -o badveh.csv
+check "ride with a bad vehicle file: exit 2 naming file:line and key, no file" \
+    '[ $rc -eq 2 ] && grep -q "bad.veh:3" err && grep -q MASS_X err && no_file badveh.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --set MASS=-1 -o neg.csv
+check "ride --set MASS=-1: exit 2 naming MASS, no file" \
+    '[ $rc -eq 2 ] && grep -q MASS err && no_file neg.csv'
+
+clilib_done

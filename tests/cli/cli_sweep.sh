@@ -1,0 +1,71 @@
+#!/bin/sh
+# tirenv sweep from outside: a data set the other commands read, the same bytes for --jobs 1
+# and 3, shards merged equal to one run, the progress bar where asked, and misuse refused
+# (a run killed midway and resumed: sweep_killed.sh). Usage: sh cli_sweep.sh BIN TESTDATA_DIR.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
+# shellcheck source=tests/lib/clilib.sh
+. "$(dirname "$0")/../lib/clilib.sh"
+
+grid='--lengths 0.05,0.15,0.25 --heights 0.03,0.08 --contact-lengths 0.3,0.38
+      --set INTERRADIAL_STIFFNESS=8000,12000 --model springs --validation-fraction 0.25'
+
+run "$bin" sweep $grid -o one --jobs 1
+check "sweep writes a data set" '[ $rc -eq 0 ] && [ -s one/cases.csv ] && [ -d one/curves ] &&
+    [ "$(ls one/curves | wc -l)" -eq 24 ] && [ ! -e one.partial ]'
+check "the manifest says SIMULATED and has a row per case" \
+    'grep -q "^# SIMULATED" one/cases.csv && [ "$(grep -c "^c00" one/cases.csv)" -eq 24 ]'
+check "a quarter of the cases are validation ones" \
+    '[ "$(grep -c ",validation," one/cases.csv)" -eq 6 ]'
+check "no progress bar when stderr is not a terminal" '! grep -q "cases (" err'
+
+run "$bin" dataset list one
+check "dataset list reads it" '[ $rc -eq 0 ] && grep -q c0023 out'
+run "$bin" train --data one --restarts 1 --epochs 20 -o nn.json
+check "train reads it" '[ $rc -eq 0 ] && [ -s nn.json ]'
+
+run "$bin" sweep $grid -o three --jobs 3 --progress
+check "--jobs 3 writes the bytes of --jobs 1" '[ $rc -eq 0 ] && diff -r one three >&2'
+check "--progress draws lines on a pipe" 'grep -q "24/24 cases (100 %)" err'
+
+for k in 0 1 2 3; do
+    "$bin" sweep $grid -o "part$k" --shard "$k/4" --jobs 2 2>/dev/null
+done
+run "$bin" sweep merge part3 part1 part0 part2 -o merged
+check "four shards merged equal one run, byte for byte" '[ $rc -eq 0 ] && diff -r one merged >&2'
+run "$bin" sweep merge part0 part1 part2 -o merged2
+check "merge names a missing shard" '[ $rc -eq 2 ] && grep -q "missing: 3" err && [ ! -e merged2 ]'
+rm -f part2/cases.csv
+run "$bin" sweep merge part0 part1 part2 part3 -o merged3
+check "merge refuses an incomplete shard" '[ $rc -eq 2 ] && grep -q "not complete" err'
+
+run "$bin" sweep --lengths 0.1 --heights 0.05 --loads 6000,9000 --model springs -o loads
+check "--loads: each case's contact length is the model's at its load, longer at more load" \
+    '[ $rc -eq 0 ] && grep -q "^loads_N = 6000,9000$" loads/sweep.txt &&
+     awk -F, '"'"'/^c0/ { l[NR] = $3; g[NR] = $4; n++ }
+         END { exit !(n == 2 && l[5] > 0.2 && l[6] > l[5] && g[5] == 6000 && g[6] == 9000) }'"'"' \
+         loads/cases.csv'
+
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --model springs -o one
+check "another sweep into a complete one is refused" '[ $rc -eq 2 ] && grep -q "another sweep" err'
+run "$bin" sweep $grid -o one
+check "a complete sweep is not run again" '[ $rc -eq 0 ] && grep -q "nothing to do" err'
+run "$bin" sweep --lengths 0.1 --heights 0.05 -o x
+check "a regime list is required" '[ $rc -eq 1 ] && [ ! -e x ] && [ ! -e x.partial ]'
+run "$bin" sweep --lengths 0.1,abc --heights 0.05 --contact-lengths 0.3 -o x
+check "a malformed list is named" '[ $rc -eq 1 ] && grep -q "lengths" err'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --shard 4/4 -o x
+check "a shard beyond the count is refused" '[ $rc -eq 1 ] && grep -q "shard" err'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --set NOPE=1,2 -o x
+check "an unknown tire key is named" '[ $rc -eq 2 ] && grep -q "NOPE" err && [ ! -e x ]'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --split train \
+    --validation-fraction 0.1 -o x
+check "--split and the fractions together are refused" '[ $rc -eq 1 ]'
+run "$bin" sweep --jobs 0 --lengths 0.1 --heights 0.05 --contact-lengths 0.3 -o x
+check "--jobs 0 is refused" '[ $rc -eq 1 ] && grep -q -- "--jobs" err'
+run "$bin" sweep --help
+check "sweep --help documents shards, merge and --jobs" \
+    '[ $rc -eq 0 ] && grep -q -- "--shard K/N" out && grep -q "sweep merge" out &&
+     grep -q -- "--jobs N" out'
+
+clilib_done

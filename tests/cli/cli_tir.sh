@@ -1,0 +1,67 @@
+#!/bin/sh
+# Real MF-Tyre / PAC2002 .tir files through the CLI: every sample loads and 'tirenv flat' on it
+# prints sensible numbers (the file's own radius; deflections a tire has; the cam's stiffness
+# the file's VERTICAL_STIFFNESS), the cam refused without the cam keys, bad files refused.
+# Usage: tests/cli/cli_tir.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the sample
+# files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
+# shellcheck disable=SC2016,SC2034,SC2086
+. "$(dirname "$0")/../lib/clilib.sh"
+
+samples=${TIRENV_SAMPLES:-}
+if [ -z "$samples" ] || [ ! -d "$samples/tir" ]; then
+    echo "not ok 1 - the sample files (TIRENV_SAMPLES='$samples') are missing"
+    exit 1
+fi
+
+# flat's CSV rows: z_flat + deflection = R0, 0 < deflection < R0/5, stiffness > 0
+sensible() {
+    awk -F, -v r0="$2" 'NR > 1 { n++; d = $2 + $3 - r0
+        if (d > 1e-8 || -d > 1e-8 || !($3 > 0 && $3 < r0 / 5) || !($5 > 0)) bad = 1 }
+        END { exit bad || n != 5 }' "$1"
+}
+
+for spec in 335_65R22_5_G275MSA_60psi:0.4987 HMMWV_Pac02Tire:0.4699 \
+    tractor_430_50R38:0.6731 mf_185_80R14:0.376; do
+    name=${spec%%:*}
+    r0=${spec#*:}
+    run "$bin" flat --csv --tire "$samples/tir/$name.tir"
+    check "$name.tir loads; flat: z_flat + deflection = R0 = $r0 m, deflection < R0/5, at 0.5 to 1.5 FNOMIN; springs derived" \
+        '[ $rc -eq 0 ] && sensible out $r0 && grep -q "derived RADIAL_STIFFNESS" err'
+done
+
+run "$bin" flat --csv --model cam --load 30000 --tire "$samples/tir/tractor_430_50R38.tir"
+check "cam at FNOMIN 30 kN: the file's VERTICAL_STIFFNESS 1e6 N/m, deflection 0.03 m" \
+    '[ $rc -eq 0 ] && awk -F, "NR == 2 { exit !(\$3 == 0.03 && \$5 == 1000000) }" out'
+for name in 335_65R22_5_G275MSA_60psi HMMWV_Pac02Tire mf_185_80R14; do
+    run "$bin" flat --model cam --tire "$samples/tir/$name.tir"
+    check "$name.tir has no cam keys: --model cam exits 2 naming them" \
+        '[ $rc -eq 2 ] && grep -q "cam keys Q_RA1, Q_RA2, ELLIPS_SHIFT, ELLIPS_LENGTH" err'
+    run "$bin" envelope --model cam --cleat 0.1,0.05 --load 5000 --tire "$samples/tir/$name.tir" \
+        -o e.csv
+    check "... and envelope --model cam too, without an output file" \
+        '[ $rc -eq 2 ] && grep -q "cam keys" err && no_file e.csv'
+done
+run "$bin" flat --model cam --tire "$samples/tir/mf_185_80R14.tir" --set Q_RA1=0.6 \
+    --set Q_RA2=0.7 --set ELLIPS_SHIFT=0.8 --set ELLIPS_LENGTH=1.4 --set ELLIPS_HEIGHT=0.9 \
+    --set ELLIPS_ORDER=1.6
+check "--set of the missing cam keys makes the cam run" '[ $rc -eq 0 ]'
+
+: >empty.tir
+run "$bin" flat --tire empty.tir
+check "an empty .tir: exit 2, not the default tire" \
+    '[ $rc -eq 2 ] && grep -q "empty.tir: the empty file sets none of the keys" err'
+printf '[DIMENSION]\nUNLOADED_RADIUS = 0.7\nRADIAL_STIFFNESS = 1.6e6\n' >wrong.tir
+run "$bin" flat --tire wrong.tir
+check "RADIAL_STIFFNESS under [DIMENSION]: exit 2 naming both sections" \
+    '[ $rc -eq 2 ] && grep -q "wrong.tir:3:1: RADIAL_STIFFNESS: key of \[ENVELOPING_SPRINGS\] in \[DIMENSION\]" err'
+printf '[UNITS]\nLENGTH = '"'mm'"'\n[DIMENSION]\nUNLOADED_RADIUS = 680\n' >mm.tir
+run "$bin" flat --csv --tire mm.tir
+check "a file with UNLOADED_RADIUS alone: the springs model is not derived, exit 2 naming FNOMIN" \
+    '[ $rc -eq 2 ] && grep -q "FNOMIN" err'
+# VERTICAL_STIFFNESS in N/mm: 296 N/mm is 296 kN/m.
+printf '[UNITS]\nLENGTH = '"'mm'"'\n[DIMENSION]\nUNLOADED_RADIUS = 680\n[VERTICAL]\nFNOMIN = 17700\nVERTICAL_STIFFNESS = 296\n' >mm.tir
+run "$bin" flat --csv --tire mm.tir --load 17700
+check "LENGTH = 'mm': UNLOADED_RADIUS 680 mm is 0.68 m, VERTICAL_STIFFNESS 296 N/mm is 296 kN/m" \
+    '[ $rc -eq 0 ] && awk -F, "NR == 2 { d = \$2 + \$3 - 0.68; exit !(d < 1e-9 && -d < 1e-9 && \$3 > 0.0597 && \$3 < 0.0599) }" out'
+
+clilib_done

@@ -1,0 +1,32 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# The effective road tirenv writes over an OpenCRG road lies where that road is, read by
+# OpenCRG's own C API as Chrono reads it (tests/formats/crg_opencrg.c): the road tests/data/
+# placed_bump.crg starts at x = 100, y = -20 m, heading 0.5 rad, 3.2 m high, and the track is
+# v = 0.9 m off its reference line. Then the same without the $ROAD_CRG_MODS section tirenv
+# writes: OpenCRG's default modifiers move the road to the origin and the check must fail
+# (the test can fail, and the section is what places the road).
+#   sh tests/formats/crg_opencrg.sh TIRENV CRG_OPENCRG DATA_DIR
+set -u
+cli=$1 reader=$2 data=$3
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/tirenv-opencrg.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+road=$data/placed_bump.crg
+run="envelope --model springs --profile $road --track 0.9 --load 4000 --x-from 47 --x-to 53.5 --dx 0.005"
+# shellcheck disable=SC2086 # $run is words
+"$cli" $run -o "$tmp/curve.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+# shellcheck disable=SC2086
+"$cli" $run -o "$tmp/eff.crg" --crg-encoding kdbi 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+"$reader" "$road" "$tmp/eff.crg" "$tmp/curve.csv" 0.9 1.0
+status=$?
+awk '/^\$ROAD_CRG_MODS/ {skip = 1; next} skip && /^\$/ {skip = 0; next} !skip' \
+    "$tmp/eff.crg" >"$tmp/nomods.crg"
+"$reader" "$road" "$tmp/nomods.crg" "$tmp/curve.csv" 0.9 1.0 >"$tmp/log" 2>&1
+if [ "$(grep -c '^not ok' "$tmp/log")" -eq 0 ] || ! grep -q '^ok 2 ' "$tmp/log"; then
+    echo "not ok - without \$ROAD_CRG_MODS the reader did not run or found no difference: the check cannot fail"
+    sed 's/^/#   /' "$tmp/log"
+    status=1
+else
+    echo "ok - without \$ROAD_CRG_MODS OpenCRG's default modifiers move the effective road (the check fails: $(grep -c '^not ok' "$tmp/log") checks)"
+fi
+exit $status

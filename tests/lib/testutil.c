@@ -1,0 +1,149 @@
+#include "testutil.h"
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "tirenv/rng.h"
+
+#include "tirenv/tir.h"
+
+void tirenv_test_assert_near(double actual, double expected, double abs_tol, double rel_tol,
+                             const char *expr, const char *file, int line)
+{
+    const double tol = abs_tol + rel_tol * fabs(expected);
+    if (!(fabs(actual - expected) <= tol)) {
+        print_error("%s = %.17g, expected %.17g within %.3g (off by %.3g)\n", expr, actual,
+                    expected, tol, actual - expected);
+        _fail(file, line);
+    }
+}
+
+void tirenv_test_check_bits(double a, double b, const char *expr, const char *file, int line)
+{
+    if (memcmp(&a, &b, sizeof a) != 0) {
+        print_error("%s = %.17g (%a), expected exactly %.17g (%a)\n", expr, a, a, b, b);
+        _fail(file, line);
+    }
+}
+
+int tirenv_test_dir_setup(void **state)
+{
+    tirenv_test_dir *d = calloc(1, sizeof *d);
+    if (!d)
+        return -1;
+    snprintf(d->dir, sizeof d->dir, "/tmp/tirenv_test_XXXXXX");
+    if (!mkdtemp(d->dir)) {
+        free(d);
+        return -1;
+    }
+    *state = d;
+    return 0;
+}
+
+int tirenv_test_dir_teardown(void **state)
+{
+    tirenv_test_dir *d = *state;
+    DIR *dir = opendir(d->dir);
+    if (dir) {
+        const struct dirent *e;
+        char path[600];
+        while ((e = readdir(dir)) != NULL) {
+            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                continue;
+            snprintf(path, sizeof path, "%s/%s", d->dir, e->d_name);
+            remove(path);
+        }
+        closedir(dir);
+    }
+    const int r = rmdir(d->dir);
+    free(d);
+    return r;
+}
+
+const char *tirenv_test_path(const tirenv_test_dir *d, const char *name, char buf[600])
+{
+    snprintf(buf, 600, "%s/%s", d->dir, name);
+    return buf;
+}
+
+void tirenv_test_write_text(const char *path, const char *text)
+{
+    FILE *fp = fopen(path, "w");
+    assert_non_null(fp);
+    assert_int_equal(fputs(text, fp) >= 0, 1);
+    assert_int_equal(fclose(fp), 0);
+}
+
+size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containing)
+{
+    DIR *dir = opendir(d->dir);
+    assert_non_null(dir);
+    size_t n = 0;
+    const struct dirent *e;
+    while ((e = readdir(dir)) != NULL)
+        if (strstr(e->d_name, containing) && strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
+            n++;
+    closedir(dir);
+    return n;
+}
+
+tirenv_tire tirenv_test_tire_before_identify(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.springs.c_r = 7.83e5;
+    t.springs.c_b = 1.41e4;
+    t.cam.q_ra1 = 0.61;
+    t.cam.q_ra2 = 0.66;
+    return t;
+}
+
+tirenv_tire tirenv_test_default_tire(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &d), TIRENV_OK);
+    return t;
+}
+
+tirenv_nn *tirenv_test_made_up_network(unsigned long seed, size_t n_samples)
+{
+    enum { MAX = 128 };
+    assert_true(n_samples <= MAX);
+    tirenv_nn_topology t = tirenv_nn_topology_default();
+    tirenv_nn *nn = tirenv_nn_alloc(&t);
+    assert_non_null(nn);
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    assert_non_null(rng);
+    tirenv_rng_seed(rng, seed);
+    tirenv_nn_init_weights(nn, rng);
+    double x[MAX * TIRENV_NN_INPUTS], y[MAX];
+    for (size_t k = 0; k < n_samples; ++k) {
+        double *u = x + k * TIRENV_NN_INPUTS;
+        u[TIRENV_NN_X_N] = -0.25 + 1.25 * tirenv_rng_uniform(rng);
+        u[TIRENV_NN_CONTACT_LENGTH] = 0.28 + 0.1 * tirenv_rng_uniform(rng);
+        u[TIRENV_NN_HEIGHT] = 0.025 + 0.075 * tirenv_rng_uniform(rng);
+        u[TIRENV_NN_LENGTH] = 0.05 + 0.25 * tirenv_rng_uniform(rng);
+        y[k] = 0.04 * tirenv_rng_uniform(rng);
+    }
+    tirenv_diag d;
+    assert_int_equal(tirenv_nn_fit_scaling(nn, n_samples, x, y, &d), TIRENV_OK);
+    tirenv_rng_free(rng);
+    return nn;
+}
+
+int tirenv_test_keep_point(void *ctx, const tirenv_point *pt)
+{
+    tirenv_test_points *c = ctx;
+    if (c->stop && c->n == c->stop)
+        return TIRENV_EIO;
+    if (c->n == c->cap) {
+        c->cap = c->cap ? 2 * c->cap : 1024;
+        c->pt = realloc(c->pt, c->cap * sizeof *c->pt);
+        assert_non_null(c->pt);
+    }
+    c->pt[c->n++] = *pt;
+    return TIRENV_OK;
+}

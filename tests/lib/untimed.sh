@@ -1,0 +1,44 @@
+#!/bin/sh
+# Sourced by tests/cli/jobs.sh and tests/study/study_runs.sh: two output trees equal apart from the
+# timings they report (--jobs changes how long a command takes, never what it computes).
+# SPDX-License-Identifier: GPL-3.0-or-later
+
+# A report's text without what was timed: durations become T, and the lines of the timing
+# tables and the speed sentences (ratios of timings) go.
+untimed() {
+    sed -E 's/[0-9][0-9.]*(e[-+]?[0-9]+)? ?(ns|µs|us|ms|s)([^a-zA-Z0-9]|$)/T\3/g' "$1" |
+        grep -v -E '^\| [a-z]+ \| T \||Per position, measured|times as long|_time_s|took T'
+}
+
+# Two output trees equal apart from timings: timing.csv and the images skipped, reports and
+# JSON through untimed, everything else byte for byte. Prints the first difference.
+same_apart_from_timings() {
+    ok=0
+    for f in $(cd "$1" && find . -type f | sort); do
+        case $f in
+        */timing.csv | *.png | *.svg) continue ;;
+        *.md | *.json | *.txt)
+            untimed "$1/$f" >a.txt
+            untimed "$2/$f" >b.txt
+            if ! cmp -s a.txt b.txt; then
+                echo "# $f differs beyond timings:"
+                diff a.txt b.txt | head -n 6 | sed 's/^/#   /'
+                ok=1
+            fi
+            ;;
+        *)
+            if ! cmp -s "$1/$f" "$2/$f"; then
+                echo "# $f differs"
+                ok=1
+            fi
+            ;;
+        esac
+    done
+    [ "$(cd "$1" && find . -type f ! -name '*.png' ! -name '*.svg' | sort)" = \
+      "$(cd "$2" && find . -type f ! -name '*.png' ! -name '*.svg' | sort)" ] || {
+        echo "# the two runs wrote different files"
+        ok=1
+    }
+    return $ok
+}
+

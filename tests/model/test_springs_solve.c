@@ -1,0 +1,449 @@
+/* The springs model's fast paths against the plain ones they replace (docs/models.md
+ * section 4): the pinned-chain tip solve against the Thomas active-set solve, the fan of rays
+ * (each walk resuming the last) and its reuse across centre heights against one ray at a time,
+ * a workspace's kept state against a fresh workspace, and ground narrower than the rays.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * The rays are exact claims (the same operations on the same points, so the same bits); the
+ * tip solve is a different formula for the same linear system, so it agrees to round-off: the
+ * closed form's factors are table entries accurate to an ulp or two, and exp(-k mu) carries
+ * mu's rounding times k, at most ~N eps relative where its weight is e^{-k mu}; in absolute
+ * terms every w is within a few hundred eps of max d (the bound used below is 1e-12 max d,
+ * ~4500 eps, for up to 721 elements). */
+#include "testutil.h"
+
+#include "tirenv/rng.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tirenv/profile.h"
+#include "tirenv/model.h"
+#include "tirenv/road.h"
+#include "tirenv/springs.h"
+#include "tirenv/tire.h"
+#include "model/springs_impl.h"
+#include "profile/profile_impl.h"
+
+/* ---- The tip LCP ---- */
+
+typedef struct {
+    size_t N;
+    double *diag, *L_D, *R_D, *lq, *rq, *ce, *cm, *cmi, *w_buf;
+    tirenv_springs__chains c;
+} chain_set;
+
+/* The tables as springs.c builds them, for N elements with k_r, k_ir. */
+static void chain_set_init(chain_set *cs, size_t N, double k_r, double k_ir)
+{
+    cs->N = N;
+    double **arrays[] = {&cs->diag, &cs->L_D, &cs->R_D, &cs->lq, &cs->rq};
+    for (size_t k = 0; k < 5; ++k)
+        assert_non_null(*arrays[k] = malloc(N * sizeof(double)));
+    double **tables[] = {&cs->ce, &cs->cm, &cs->cmi, &cs->w_buf};
+    for (size_t k = 0; k < 4; ++k)
+        assert_non_null(*tables[k] = malloc((N + 2) * sizeof(double)));
+    for (size_t i = 0; i < N; ++i)
+        cs->diag[i] = k_r + (double)((i > 0) + (i + 1 < N)) * k_ir;
+    cs->L_D[0] = cs->diag[0];
+    for (size_t j = 1; j < N; ++j)
+        cs->L_D[j] = cs->diag[j] - k_ir * k_ir / cs->L_D[j - 1];
+    cs->R_D[N - 1] = cs->diag[N - 1];
+    for (size_t j = N - 1; j-- > 0;)
+        cs->R_D[j] = cs->diag[j] - k_ir * k_ir / cs->R_D[j + 1];
+    for (size_t j = 0; j < N; ++j) {
+        cs->lq[j] = k_ir / cs->L_D[j];
+        cs->rq[j] = k_ir / cs->R_D[j];
+    }
+    tirenv_springs__chain_tables(N, k_r, k_ir, cs->ce, cs->cm, cs->cmi);
+    cs->c = (tirenv_springs__chains){.N = N, .k_ir = k_ir, .diag = cs->diag, .lq = cs->lq,
+                                     .rq = cs->rq, .ce = cs->ce, .cm = cs->cm, .cmi = cs->cmi};
+}
+
+static void chain_set_free(chain_set *cs)
+{
+    double *arrays[] = {cs->diag, cs->L_D, cs->R_D, cs->lq, cs->rq,
+                        cs->ce, cs->cm, cs->cmi, cs->w_buf};
+    for (size_t k = 0; k < 9; ++k)
+        free(arrays[k]);
+}
+
+/* Random obstacles d >= 0 with support in [f0, f1] on random tires (stiffness ratios from
+ * 1e-6 to 1e4, interradial stiffness 0 included), solved over the whole tire by the Thomas
+ * active-set method and over [f0, f1] by the pinned chains: the same active set, the same w
+ * to round-off, and the LCP's conditions on the full-length w. */
+static void test_pinned_matches_thomas(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261202);
+    enum { N_MAX = 721 };
+    static double d[N_MAX], w_ref[N_MAX], p_ref[N_MAX], work[2 * N_MAX], p[N_MAX], w_full[N_MAX];
+    static unsigned char act_ref[N_MAX], act[N_MAX];
+    static size_t gap[2 * N_MAX];
+    size_t trials = 0, nontrivial = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const size_t N = 3 + tirenv_rng_uniform_int(rng, N_MAX - 2);
+        const double k_r = pow(10, 2 + 5 * tirenv_rng_uniform(rng));
+        const double k_ir = trial % 9 == 0 ? 0 : k_r * pow(10, -4 + 8 * tirenv_rng_uniform(rng));
+        chain_set cs;
+        chain_set_init(&cs, N, k_r, k_ir);
+        double *w = cs.w_buf + 1;
+        size_t f0 = tirenv_rng_uniform_int(rng, N), f1 = tirenv_rng_uniform_int(rng, N);
+        if (f0 > f1) {
+            const size_t t = f0;
+            f0 = f1;
+            f1 = t;
+        }
+        /* A bump (a tire over a cleat or on the ground) plus noise, zero in places. */
+        const double c = 0.5 * (double)(f0 + f1), hw = 0.5 * (double)(f1 - f0) + 1;
+        double d_max = 0;
+        memset(d, 0, N * sizeof *d);
+        for (size_t i = f0; i <= f1; ++i) {
+            const double u = ((double)i - c) / hw;
+            d[i] = fmax(0, 0.03 * (1 - u * u) + 0.01 * (tirenv_rng_uniform(rng) - 0.3));
+            if (tirenv_rng_uniform(rng) < 0.1)
+                d[i] = 0;
+            d_max = fmax(d_max, d[i]);
+        }
+        d[f0] = fmax(d[f0], 1e-4);
+        d[f1] = fmax(d[f1], 1e-4);
+        memset(act_ref, 0, N);
+        size_t passes;
+        assert_int_equal(tirenv_springs__lcp(N, cs.diag, k_ir, d, w_ref, p_ref, act_ref, work,
+                                             1000, &passes),
+                         TIRENV_OK);
+        /* A random warm start, as a sweep leaves it. */
+        for (size_t i = f0; i <= f1; ++i)
+            act[i] = tirenv_rng_uniform(rng) < 0.5;
+        tirenv_springs__pins P = {.gap = gap};
+        assert_int_equal(tirenv_springs__lcp_pinned(&cs.c, f0, f1, d, w, p, act, &P, 1000,
+                                                    &passes),
+                         TIRENV_OK);
+        const double tol = 1e-12 * d_max;
+        size_t count = 0;
+        for (size_t i = f0; i <= f1; ++i) {
+            assert_int_equal(act[i], act_ref[i]);
+            assert_near(w[i], w_ref[i], tol, 0);
+            count += act[i];
+        }
+        assert_int_equal(P.count, count);
+        for (size_t i = 0; i < N; ++i)
+            if (i < f0 || i > f1)
+                assert_int_equal(act_ref[i], 0);
+        /* The full-length tire: free chains beyond [f0, f1]. */
+        for (size_t i = f0; i <= f1; ++i)
+            w_full[i] = w[i];
+        for (size_t j = f0; j-- > 0;)
+            w_full[j] = cs.lq[j] * w_full[j + 1];
+        for (size_t j = f1 + 1; j < N; ++j)
+            w_full[j] = cs.rq[j] * w_full[j - 1];
+        for (size_t i = 0; i < N; ++i) {
+            const double w_l = i > 0 ? w_full[i - 1] : 0, w_r = i + 1 < N ? w_full[i + 1] : 0;
+            const double r = cs.diag[i] * w_full[i] - k_ir * (w_l + w_r);
+            const double scale = (cs.diag[i] + 2 * k_ir) * d_max;
+            assert_true(w_full[i] >= d[i] - tol);
+            if (act[i] && i >= f0 && i <= f1) {
+                assert_true(r >= -1e-12 * scale);
+                assert_near(p[i], r, 1e-12 * scale, 0);
+            } else {
+                assert_near(r, 0, 1e-12 * scale, 0); /* free: no reaction */
+            }
+        }
+        nontrivial += count > 0 && count < f1 - f0 + 1;
+        ++trials;
+        chain_set_free(&cs);
+    }
+    assert_true(nontrivial > 100); /* the guard: chains between pins really ran */
+    tirenv_rng_free(rng);
+}
+
+/* ---- Rays ---- */
+
+/* A random ground: a polyline with walls (two vertices at one x), spikes and flat runs. */
+static tirenv_profile *random_ground(tirenv_rng *rng, size_t n)
+{
+    double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
+    double X = -1.5;
+    for (size_t k = 0; k < n; ++k) {
+        const double r = tirenv_rng_uniform(rng);
+        if (k > 0 && r < 0.15 && !(k >= 2 && x[k - 2] == X))
+            x[k] = X; /* a wall */
+        else
+            x[k] = X += 0.002 + 0.05 * tirenv_rng_uniform(rng) * tirenv_rng_uniform(rng);
+        z[k] = r < 0.5 ? 0.08 * tirenv_rng_uniform(rng) : k > 0 ? z[k - 1] : 0;
+    }
+    tirenv_profile *p = tirenv_profile_alloc(n, x, z);
+    free(x);
+    free(z);
+    return p;
+}
+
+/* The fan gives every ray the bits tirenv_springs__ray_at gives it, rho and d(rho)/dz; a reuse
+ * at another height either declines or gives the bits a fresh cast gives there. */
+static void test_fan_matches_single_rays(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 7);
+    const double R0 = 0.6837;
+    enum { N = 361 };
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N];
+    static tirenv_springs__ray_memo memo[N];
+    const size_t i0 = N / 2;
+    for (size_t i = 0; i < N; ++i) {
+        const double th = ((double)i - (double)i0) * M_PI / 360;
+        sin_t[i] = sin(th);
+        cos_t[i] = cos(th);
+    }
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
+    const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
+                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
+                                           .reach = reach};
+    tirenv_road_settings rs = tirenv_road_default();
+    rs.length = 20;
+    rs.dx = 0.003;
+    tirenv_profile *grounds[4] = {tirenv_profile_cleat(0.3, 0.1), NULL, NULL, NULL};
+    tirenv_diag diag;
+    assert_int_equal(tirenv_road_iso8608(&rs, &grounds[1], &diag), TIRENV_OK);
+    grounds[2] = random_ground(rng, 400);
+    grounds[3] = random_ground(rng, 60);
+    size_t rays_checked = 0, hits = 0, reused = 0, declined = 0;
+    for (size_t gi = 0; gi < 4; ++gi) {
+        const tirenv_profile *p = grounds[gi];
+        double x_lo, x_hi;
+        tirenv_profile_extent(p, &x_lo, &x_hi);
+        for (int trial = 0; trial < 300; ++trial) {
+            double x = x_lo - 0.5 + (x_hi - x_lo + 1) * tirenv_rng_uniform(rng);
+            if (trial % 5 == 0) /* on a vertex, a wall's x included */
+                x = tirenv_profile_x(p)[tirenv_rng_uniform_int(rng, tirenv_profile_size(p))];
+            const double g = tirenv_profile_height(p, x);
+            const double z = g + 0.02 + 0.8 * tirenv_rng_uniform(rng);
+            tirenv_springs__fan_origin o;
+            tirenv_springs__fan_origin_at(p, x, R0, 0, &o);
+            assert_bits_equal(o.g, g);
+            const size_t a = tirenv_rng_uniform_int(rng, i0 + 1);
+            const size_t b = i0 + tirenv_rng_uniform_int(rng, N - i0);
+            tirenv_springs__fan(p, &o, &rays, z, a, b, rho, memo);
+            for (size_t i = a; i <= b; ++i) {
+                double drho;
+                const double r = tirenv_springs__ray(p, x, z, sin_t[i], cos_t[i], R0, &drho);
+                assert_bits_equal(rho[i], r);
+                if (isfinite(r)) {
+                    assert_bits_equal(tirenv_springs__fan_drho(p, &rays, i, &memo[i]), drho);
+                    ++hits;
+                }
+                ++rays_checked;
+            }
+            /* Another height: small steps as Newton takes them, and large ones. */
+            const double dz = (tirenv_rng_uniform(rng) - 0.5) *
+                              (trial % 3 == 0 ? 0.2 : trial % 3 == 1 ? 1e-3 : 1e-8);
+            const double z2 = z + dz;
+            if (tirenv_springs__fan_reuse(p, &o, &rays, z2, a, b, rho, memo)) {
+                for (size_t i = a; i <= b; ++i) {
+                    double drho;
+                    const double r =
+                        tirenv_springs__ray(p, x, z2, sin_t[i], cos_t[i], R0, &drho);
+                    assert_bits_equal(rho[i], r);
+                    if (isfinite(r))
+                        assert_bits_equal(tirenv_springs__fan_drho(p, &rays, i, &memo[i]),
+                                          drho);
+                }
+                ++reused;
+            } else {
+                ++declined;
+            }
+        }
+    }
+    print_message("fan: %zu rays (%zu hits); reuse at another height: %zu taken, %zu "
+                  "declined\n", rays_checked, hits, reused, declined);
+    assert_true(hits > 10000 && reused > 200 && declined > 50);
+    for (size_t gi = 0; gi < 4; ++gi)
+        tirenv_profile_free(grounds[gi]);
+    tirenv_rng_free(rng);
+}
+
+/* ---- The workspace's kept state ---- */
+
+/* A workspace that has seen other positions, heights and profiles (a new profile may sit at
+ * a freed one's address) gives the forces of a fresh workspace, bit for bit: the rays it keeps
+ * are tied to the profile's serial and x, the final active set does not depend on the warm
+ * start, and the dF_z/dz it keeps is given again only for the same faces, span and pins (every
+ * other height is a hair from the last, where they nearly always recur, as after a Newton
+ * step). */
+static void test_kept_state_is_invisible(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 11);
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_springs *kept = tirenv_springs_alloc(&t.springs);
+    assert_non_null(kept);
+    const double heights[] = {0.1, 0.05, 0.12, 0.02, 0.08};
+    size_t same_address = 0, checked = 0;
+    const void *last = NULL;
+    double z_last = 0.65;  /* m */
+    for (int round = 0; round < 40; ++round) {
+        tirenv_profile *p = tirenv_profile_cleat(0.1 + 0.05 * (round % 4), heights[round % 5]);
+        assert_non_null(p);
+        same_address += (const void *)p == last;
+        last = p;
+        const double x = round % 2 ? 0.0 : -0.13; /* the same x again and again */
+        for (int k = 0; k < 8; ++k) {
+            const double z = k % 2 ? z_last + 1e-9 * tirenv_rng_uniform(rng)
+                                   : 0.6 + 0.12 * tirenv_rng_uniform(rng);
+            z_last = z;
+            double fx1, fz1, df1, fx2, fz2, df2;
+            size_t c1, c2;
+            const int s1 = tirenv_springs_forces(kept, p, x, z, &fx1, &fz1, &df1, &c1, NULL);
+            tirenv_springs *fresh = tirenv_springs_alloc(&t.springs);
+            const int s2 = tirenv_springs_forces(fresh, p, x, z, &fx2, &fz2, &df2, &c2, NULL);
+            tirenv_springs_free(fresh);
+            assert_int_equal(s1, s2);
+            assert_bits_equal(fz1, fz2);
+            assert_bits_equal(fx1, fx2);
+            assert_bits_equal(df1, df2);
+            assert_int_equal(c1, c2);
+            ++checked;
+        }
+        tirenv_profile_free(p);
+    }
+    print_message("%zu evaluations; a new profile at the freed one's address %zu times\n",
+                  checked, same_address);
+    tirenv_springs_free(kept);
+    tirenv_rng_free(rng);
+}
+
+/* ---- Ground narrower than the rays ---- */
+
+/* A needle under the tire: the springs model refuses the position with TIRENV_ERANGE and says
+ * where and how wide, through the model API and the element level alike; today's model gave
+ * h = 0 there (the needle slipped between two rays). With its centre exactly over the needle
+ * the straight-down element stands on its tip: a contact the model does see (the tread rests
+ * on the needle, 70 mm up), not refused. */
+static void test_needle_refused(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_profile *needle = tirenv_profile_cleat(1e-9, 0.1);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(m, needle, 13000, &diag), TIRENV_OK);
+    tirenv_point pt;
+    assert_int_equal(tirenv_model_eval(m, 0.003, &pt, &diag), TIRENV_ERANGE);
+    print_message("%s\n", diag.message);
+    assert_non_null(strstr(diag.message, "at x = 0.003 m"));
+    assert_non_null(strstr(diag.message, "1e-09 m wide"));
+    assert_non_null(strstr(diag.message, "rays 0.00"));
+    assert_int_equal(tirenv_model_eval(m, 0.0, &pt, &diag), TIRENV_OK);
+    assert_true(pt.h > 0.05 && pt.contacts == 1);
+    tirenv_model_free(m);
+
+    tirenv_springs *s = tirenv_springs_alloc(&t.springs);
+    double fx, fz, dfz;
+    size_t c;
+    assert_int_equal(tirenv_springs_forces(s, needle, 0.003, 0.66, &fx, &fz, &dfz, &c, NULL),
+                     TIRENV_ERANGE);
+    tirenv_springs_refusal(s, &diag);
+    assert_non_null(strstr(diag.message, "1e-09 m wide"));
+    /* Cleared by the next evaluation that succeeds. */
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    assert_non_null(flat);
+    assert_int_equal(tirenv_springs_forces(s, flat, 0.0, 0.66, &fx, &fz, &dfz, &c, NULL), 0);
+    tirenv_springs_refusal(s, &diag);
+    assert_int_equal(diag.message[0], '\0');
+    tirenv_profile_free(flat);
+    tirenv_springs_free(s);
+    tirenv_profile_free(needle);
+}
+
+/* The pairs of rays the springs model looks between (found from the walks, so that most
+ * evaluations look at none) miss nothing a look between every pair of neighbours and of rays
+ * two apart finds: on random grounds with narrow spikes, at random positions and heights,
+ * with the tread at random depths, both find the same feature or none. */
+static void test_pairs_miss_nothing(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 5);
+    const double R0 = 0.6837;
+    enum { N = 361 };
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], tread[N];
+    static tirenv_springs__ray_memo memo[N];
+    static size_t pairs[4 * N];
+    const size_t i0 = N / 2;
+    for (size_t i = 0; i < N; ++i) {
+        const double th = ((double)i - (double)i0) * M_PI / 360;
+        sin_t[i] = sin(th);
+        cos_t[i] = cos(th);
+    }
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
+    const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
+                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
+                                           .reach = reach};
+    size_t found = 0, trials = 0;
+    for (int g = 0; g < 40; ++g) {
+        /* Flat ground with spikes 0.5 to 10 mm wide and up to 40 mm tall, some on walls. */
+        enum { V = 200 };
+        double x[V], z[V];
+        double X = -1.0;
+        size_t n = 0;
+        while (n + 4 < V && X < 1.0) {
+            X += 0.005 + 0.05 * tirenv_rng_uniform(rng);
+            const double w = 0.0005 + 0.0095 * tirenv_rng_uniform(rng);
+            const double h = 0.04 * tirenv_rng_uniform(rng);
+            x[n] = X, z[n++] = 0;
+            if (tirenv_rng_uniform(rng) < 0.5) {
+                x[n] = X, z[n++] = h; /* a wall up */
+                x[n] = X + w, z[n++] = h;
+            } else {
+                x[n] = X + 0.5 * w, z[n++] = h; /* a spike */
+            }
+            X += w;
+            x[n] = X, z[n++] = 0;
+        }
+        tirenv_profile *p = tirenv_profile_alloc(n, x, z);
+        assert_non_null(p);
+        for (int k = 0; k < 50; ++k, ++trials) {
+            const double xc = -0.6 + 1.2 * tirenv_rng_uniform(rng);
+            const double zc = 0.62 + 0.08 * tirenv_rng_uniform(rng);
+            tirenv_springs__fan_origin o;
+            tirenv_springs__fan_origin_at(p, xc, R0, 0, &o);
+            const size_t a = i0 - 100, b = i0 + 100;
+            tirenv_springs__fan(p, &o, &rays, zc, a, b, rho, memo);
+            for (size_t i = a; i <= b; ++i) /* the tread at or inside the ground, anywhere */
+                tread[i] = fmin(R0, isfinite(rho[i]) ? rho[i] : R0) -
+                           0.01 * tirenv_rng_uniform(rng);
+            tirenv_springs__feature f_all, f_pairs;
+            const int all = tirenv_springs__unseen_feature(p, &rays, xc, zc, a, b, rho, tread,
+                                                           1e-6, &f_all);
+            const size_t np = tirenv_springs__fan_pairs(&o, &rays, a, b, memo, pairs);
+            const int some = tirenv_springs__unseen_pairs(p, &rays, xc, zc, rho, tread, pairs,
+                                                          np, 1e-6, &f_pairs);
+            assert_int_equal(all, some);
+            if (all) {
+                assert_bits_equal(f_all.X, f_pairs.X);
+                assert_bits_equal(f_all.depth, f_pairs.depth);
+                assert_true(f_all.depth > f_all.spacing);
+                ++found;
+            }
+        }
+        tirenv_profile_free(p);
+    }
+    print_message("%zu of %zu states with a feature between the rays\n", found, trials);
+    assert_true(found > 100 && found < trials);
+    tirenv_rng_free(rng);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pinned_matches_thomas),
+        cmocka_unit_test(test_fan_matches_single_rays),
+        cmocka_unit_test(test_kept_state_is_invisible),
+        cmocka_unit_test(test_needle_refused),
+        cmocka_unit_test(test_pairs_miss_nothing),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
