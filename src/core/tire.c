@@ -159,6 +159,10 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(s->R0 > 0 && isfinite(s->R0)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "UNLOADED_RADIUS",
                             "must be a positive length in m, got %g", s->R0);
+    /* Its range before any relation that derives from it (the air's tension p*b*R). */
+    int status = plausible("UNLOADED_RADIUS", s->R0, 0.05, 5, "m", diag);
+    if (status)
+        return status;
     if (!(tire->width >= 0 && isfinite(tire->width)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "WIDTH",
                             "must be a length >= 0 in m, got %g", tire->width);
@@ -255,7 +259,7 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (eq->method > TIRENV_EQ_BRENT)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
-    const int status = cam_check(&tire->cam, diag);
+    status = cam_check(&tire->cam, diag);
     return status ? status : tire_plausible(tire, diag);
 }
 
