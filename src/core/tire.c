@@ -27,7 +27,7 @@ tirenv_tire tirenv_tire_default(void)
         .springs = {
             .R0 = 0.68,
             .c_r = 369000,
-            .c_b = 39600,
+            .c_b = 39700,
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
@@ -55,9 +55,9 @@ tirenv_tire tirenv_tire_default(void)
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
          * identified on the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
-            .c_z = 296000,
+            .c_z = 297000,
             .q_ra1 = 0.807,
-            .q_ra2 = 0.0242,
+            .q_ra2 = 0.0241,
             .shift = 0.8328,
             .length = 1.4634,
             .height = 0.9551,
