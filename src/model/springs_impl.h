@@ -197,4 +197,94 @@ int tirenv_springs__lcp_pinned(const tirenv_springs__chains *c, size_t f0, size_
 void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, size_t f1,
                                   const tirenv_springs__pins *P, const double v[], double w[]);
 
+
+/* Continuous contact (springs_contact.c, docs/models.md section 4.3): the tread between
+ * neighbouring elements i and i + 1 is the curve at distance R0 - (a(t) w_i + b(t) w_(i+1))
+ * from the centre, t the parameter along the chord joining the two elements' unit directions
+ * (tirenv_springs__cc_weights). Every ground vertex under the tread and every element's ray
+ * crossing gives a row a w_i + b w_(i+1) >= h; the tip problem
+ * min 1/2 w^T K w over those rows is a strictly convex QP, solved exactly by a primal active
+ * set method on banded KKT systems. */
+
+/* What the contact needs of the tire: its elements and the tridiagonal K (diag, -k_ir off the
+ * diagonal) with the free chains beyond the rows' span eliminated by lq and rq. */
+typedef struct {
+    size_t N, i0;
+    double R0, k_r, k_ir;
+    double gamma, sin_gamma;  /* the tread's interpolation: tirenv_springs__cc_weights */
+    const double *sin_t, *cos_t, *diag, *lq, *rq;
+} tirenv_springs__cc_tire;
+
+/* gamma for a tire of element stiffnesses k_r and k_ir: acos(exp(-mu)), cosh(mu) =
+ * 1 + k_r / (2 k_ir), exp(-mu) the ratio of a neighbour's deflection to the loaded element's
+ * under a point load on an element (pi/2 with k_ir = 0). */
+double tirenv_springs__cc_gamma(double k_r, double k_ir);
+
+/* The tread's weights at t in [0, 1] between two elements: a = sin((1 - t) gamma) /
+ * sin(gamma), b = sin(t gamma) / sin(gamma) (and their derivatives in t). With a neighbour's
+ * deflection exp(-mu) = cos(gamma) times the loaded element's, a^2 + b^2 + 2 a b cos(gamma) =
+ * 1: a point load anywhere between the elements meets the same compliance as on an element
+ * (linear weights would make the tread 2 t (1 - t) (1 - cos(gamma)) stiffer between them, a
+ * ripple of h at the element spacing). */
+void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
+                                double *b, double *da_dt, double *db_dt);
+
+/* One constraint row: ga w_i + gb w_j >= h, j = i + 1 for a row between two elements (t in
+ * (0, 1): ga, gb the weights at t), t = 0 (ga = 1, gb = 0, j = i) for a row on element i
+ * alone (its ray, or a vertex on it). */
+typedef struct {
+    size_t i, j;
+    double t, tau;    /* chord parameter; tau = gb / (ga + gb), the hull's abscissa */
+    double ga, gb, h; /* h: m */
+    double dga_dz, dgb_dz; /* with the ground point fixed, 1/m */
+    double dh_dz;     /* dh/dz, m/m; unused for a ray's row (the ray's memo gives it) */
+    long id;          /* the ground vertex, or -1 - i for element i's ray */
+} tirenv_springs__cc_row;
+
+/* The workspace: rows, the active set, the banded KKT factors, the warm start. Grows (once)
+ * to the largest number of rows met. */
+typedef struct {
+    size_t cap_rows, cap_band;
+    tirenv_springs__cc_row *rows;
+    size_t n_rows, n_vertex_rows;
+    unsigned char *in_w;   /* per row: in the working set */
+    double *lambda;        /* per row: reaction, N */
+    size_t *order;         /* KKT unknowns: element (< N) or N + row */
+    size_t *pos;           /* per row: its KKT position (rows in the working set) */
+    double *band, *rhs;
+    size_t n_kkt, bw;
+    /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
+     * of w, scratch */
+    size_t *pin_row, *sec_first, *sec_count, *wpos;
+    double *pin_h, *w_try, *step, *raise;
+    /* warm start: the vertices of the last solution's active rows, ascending; pinned elements */
+    long *warm_ids;
+    size_t n_warm, cap_warm;
+    unsigned char *warm_pin;
+    size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
+    size_t iterations;     /* of the last solve */
+} tirenv_springs__cc;
+
+int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
+void tirenv_springs__cc_free(tirenv_springs__cc *c);
+void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start */
+
+/* Solves the tip problem at centre (x, z) over p given each element's ray penetration
+ * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach
+ * the ground). Writes w over [f0 - 1, f1 + 1] (free chains carried one element out) and
+ * pe[f0..f1] (each element's net contact reaction, N), obstacle[f0..f1] (the largest h of a
+ * row on the element alone, m). Returns TIRENV_ENOMEM or TIRENV_ENOCONV (with diag) on
+ * failure; c->f0 > c->f1 if nothing touches. */
+int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                             const double d[], double w[], double pe[], double obstacle[],
+                             tirenv_diag *diag);
+
+/* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
+ * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
+ * ray_active(c, i)). */
+int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i);
+void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                              const double w[], const double dd[], double dw[]);
+
 #endif
