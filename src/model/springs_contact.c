@@ -11,10 +11,11 @@
 #include <string.h>
 #include "core/profile_impl.h"
 
-/* t closer than this to 0 or 1 is taken as the element itself: two rows on nearly the same
- * element would make the KKT system nearly singular, and the answer moves by at most this
- * fraction of w_(i+1) - w_i (about 1e-12 m). */
-static const double t_snap = 1e-9;
+/* t closer than this to 0 or 1 is taken as the element itself, and of two rows of a sector
+ * closer than this in tau only the higher is kept: two rows on nearly the same point would
+ * make the KKT system nearly singular. The tread there moves by at most this fraction of
+ * w_(i+1) - w_i (under 1e-8 m). */
+static const double t_snap = 1e-6;
 
 double tirenv_springs__cc_gamma(double k_r, double k_ir)
 {
@@ -227,8 +228,26 @@ static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l,
         }
         stack[top++] = k;
     }
-    for (size_t q = 1; q + 1 < top; ++q)
-        c->rows[(*out)++] = r[stack[q] - 1];
+    /* Of two hull vertices within t_snap of each other in tau only the higher is kept (a
+     * vertex that near an end was made the element's own row: tau < t_snap needs t < tau). */
+    size_t kept = 0;
+    double tau_prev = 0, y_prev = 0;
+    for (size_t q = 1; q + 1 < top; ++q) {
+        const size_t k = stack[q];
+        const double y = PT_H(k);
+        if (kept > 0 && PT_T(k) - tau_prev < t_snap) {
+            if (y > y_prev) {
+                c->rows[*out - 1] = r[k - 1];
+                tau_prev = PT_T(k);
+                y_prev = y;
+            }
+            continue;
+        }
+        c->rows[(*out)++] = r[k - 1];
+        ++kept;
+        tau_prev = PT_T(k);
+        y_prev = y;
+    }
 #undef PT_T
 #undef PT_H
 }
@@ -307,7 +326,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
                 AT(p, p) = s;
         }
         const double D = AT(p, p);
-        if (c->order[p] < N ? !(D > 0) : !(D < -1e-12 / k_max))
+        if (c->order[p] < N ? !(D > 0) : !(D < -1e-14 / k_max))
             return 1;
     }
     return 0;
