@@ -364,7 +364,11 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
 }
 
 /* CONTACT = 'continuous': the rays give each element's own row, the ground's vertices the
- * rows between elements (springs_contact.c); the hub forces as with rays. */
+ * rows between elements (springs_contact.c); the hub forces as with rays. Most states have no
+ * row between elements active (the tread bows out between its tips, section 4.8): the
+ * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
+ * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
+ * else the QP is solved whole. */
 static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
@@ -378,27 +382,69 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         *dfz_dz = 0;
     if (contacts)
         *contacts = 0;
+    size_t f0 = 1, f1 = 0;
+    if (any) {
+        if (!(s->ray_a <= a && b <= s->ray_b &&
+              tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho,
+                                        s->memo))) {
+            tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+            s->ray_a = a;
+            s->ray_b = b;
+        }
+        for (size_t i = a; i <= b; ++i)
+            s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
+        const int status =
+            tirenv_springs__cc_rows(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, diag);
+        if (status)
+            return status;
+        f0 = s->cc.f0;
+        f1 = s->cc.f1;
+    }
+    /* The elements with a row of their own: [g0, g1]. */
+    const double *pin_h = s->cc.pin_h;
+    size_t g0 = f0, g1 = f1;
+    if (f0 <= f1) {
+        while (g0 <= f1 && !(pin_h[g0] > 0))
+            ++g0;
+        while (g1 > g0 && !(pin_h[g1] > 0))
+            --g1;
+    }
+    if (s->a <= s->b) { /* the LCP's warm start forgets elements that cannot touch now */
+        for (size_t i = s->a; i <= s->b && i < g0; ++i)
+            s->active[i] = 0;
+        for (size_t i = g1 + 1 > s->a ? g1 + 1 : s->a; i <= s->b; ++i)
+            s->active[i] = 0;
+    }
     s->a = 1;
     s->b = 0;
-    if (!any) { /* no ground within R0 of the centre: no vertex either */
+    if (f0 > f1) {
+        s->pins.count = 0;
         tirenv_springs__cc_forget(&s->cc);
         return TIRENV_OK;
     }
-    if (!(s->ray_a <= a && b <= s->ray_b &&
-          tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo))) {
-        tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
-        s->ray_a = a;
-        s->ray_b = b;
+    int fast = 0;
+    if (g0 <= f1) {
+        for (size_t e = g0; e <= g1; ++e)
+            s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
+        size_t passes;
+        if (tirenv_springs__lcp_pinned(&s->chains, g0, g1, s->d, s->w, s->p, s->active,
+                                       &s->pins, lcp_max_passes(g0, g1), &passes) == 0) {
+            for (size_t j = g0; j-- > f0;) /* the free chains, over the rows' span */
+                s->w[j] = s->lq[j] * s->w[j + 1];
+            for (size_t j = g1 + 1; j <= f1; ++j)
+                s->w[j] = s->rq[j] * s->w[j - 1];
+            fast = tirenv_springs__cc_pins_hold(&s->cc, s->w, 1e-12 * R0);
+        }
     }
-    for (size_t i = a; i <= b; ++i)
-        s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
-    const int status = tirenv_springs__cc_solve(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d,
-                                                s->w, s->p, s->d, diag);
-    if (status)
-        return status;
-    const size_t f0 = s->cc.f0, f1 = s->cc.f1;
-    if (f0 > f1)
-        return TIRENV_OK;
+    if (fast) {
+        f0 = g0;
+        f1 = g1;
+    } else {
+        const int status = tirenv_springs__cc_solve(&s->cc, &s->cc_tire, x, z, s->w, s->p,
+                                                    s->d, diag);
+        if (status)
+            return status;
+    }
     s->a = f0;
     s->b = f1;
     double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
@@ -415,16 +461,29 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             n += s->p[i] > 0;
         *contacts = n;
     }
-    if (dfz_dz) {
+    if (!dfz_dz)
+        return TIRENV_OK;
+    if (fast) {
+        /* d(d_i)/dz of each pinned element's row: its ray's, or the vertex's on it. */
+        const tirenv_springs__pins *P = &s->pins;
+        for (size_t i = P->first; P->count > 0 && i <= P->last; ++i) {
+            if (!s->active[i])
+                continue;
+            const tirenv_springs__cc_row *R = &s->cc.rows[s->cc.pin_row[i]];
+            s->dd[i] = R->id < 0 ? -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i])
+                                 : R->dh_dz;
+        }
+        tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+    } else {
         for (size_t i = f0; i <= f1; ++i)
             if (tirenv_springs__cc_ray_active(&s->cc, i))
                 s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
         tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw);
-        double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-        for (size_t i = f0; i <= f1; ++i)
-            sum += k_r * s->dw[i] * s->cos_t[i];
-        *dfz_dz = sum;
     }
+    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+    for (size_t i = f0; i <= f1; ++i)
+        sum += k_r * s->dw[i] * s->cos_t[i];
+    *dfz_dz = sum;
     return TIRENV_OK;
 }
 

@@ -534,15 +534,29 @@ static int keep_warm(tirenv_springs__cc *c, size_t N)
     return TIRENV_OK;
 }
 
-int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
-                             const double d[], double w[], double pe[], double obstacle[],
-                             tirenv_diag *diag)
+int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                            const double d[], tirenv_diag *diag)
 {
-    const size_t N = T->N;
     if (build_rows(c, T, p, x, z, a, b, d))
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "rows of the springs model");
+    return TIRENV_OK;
+}
+
+int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], double tol)
+{
+    for (size_t r = 0; r < c->n_rows; ++r)
+        if (c->rows[r].t > 0 && slack(&c->rows[r], w) < -tol)
+            return 0;
+    return 1;
+}
+
+int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             double x, double z, double w[], double pe[], double obstacle[],
+                             tirenv_diag *diag)
+{
+    const size_t N = T->N;
     c->iterations = 0;
     const size_t f0 = c->f0, f1 = c->f1, n_rows = c->n_rows;
     if (f0 > f1) {

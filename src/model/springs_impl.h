@@ -269,15 +269,25 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
 void tirenv_springs__cc_free(tirenv_springs__cc *c);
 void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start */
 
-/* Solves the tip problem at centre (x, z) over p given each element's ray penetration
+/* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach
- * the ground). Writes w over [f0 - 1, f1 + 1] (free chains carried one element out) and
- * pe[f0..f1] (each element's net contact reaction, N), obstacle[f0..f1] (the largest h of a
- * row on the element alone, m). Returns TIRENV_ENOMEM or TIRENV_ENOCONV (with diag) on
- * failure; c->f0 > c->f1 if nothing touches. */
+ * the ground): c->rows, their span c->f0..c->f1 (f0 > f1: nothing touches), c->pin_h[e]
+ * (each element's own row's h, 0 if none) and c->pin_row[e]. TIRENV_ENOMEM with diag. */
+int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                            const double d[], tirenv_diag *diag);
+
+/* Whether every row between two elements holds (slack >= -tol, m) at w (over c->f0..c->f1):
+ * then the solution of the elements' own rows alone (section 4.4's LCP with obstacle pin_h)
+ * is the QP's, the rows between elements inactive. */
+int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], double tol);
+
+/* Solves the tip problem on the rows built at (x, z) (for the messages). Writes w over
+ * [f0 - 1, f1 + 1] (free chains carried one element out) and pe[f0..f1] (each element's net
+ * contact reaction, N), obstacle[f0..f1] (pin_h, m). Returns TIRENV_ENOMEM or TIRENV_ENOCONV
+ * (with diag) on failure. */
 int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
-                             const double d[], double w[], double pe[], double obstacle[],
+                             double x, double z, double w[], double pe[], double obstacle[],
                              tirenv_diag *diag);
 
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
