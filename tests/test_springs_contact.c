@@ -231,11 +231,9 @@ static void setup_tire(tire_setup *S, const tirenv_springs_params *par)
         S->rq[j] = k_ir / S->R_D[j];
     }
     S->T = (tirenv_springs__cc_tire){.N = N, .i0 = i0, .R0 = par->R0, .k_r = k_r,
-                                     .k_ir = k_ir,
-                                     .gamma = tirenv_springs__cc_gamma(k_r, k_ir),
-                                     .sin_t = S->sin_t, .cos_t = S->cos_t, .diag = S->diag,
+                                     .k_ir = k_ir, .sin_t = S->sin_t, .cos_t = S->cos_t, .diag = S->diag,
                                      .lq = S->lq, .rq = S->rq};
-    S->T.sin_gamma = sin(S->T.gamma);
+    tirenv_springs__cc_tire_shape(&S->T);
 }
 
 static void free_tire(tire_setup *S)

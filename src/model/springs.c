@@ -154,12 +154,10 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
                                          .cos_t = s->cos_t, .inv_s = s->ray_inv_s,
                                          .drop = s->ray_drop, .reach = s->ray_reach};
     s->cc_tire = (tirenv_springs__cc_tire){.N = N, .i0 = s->i0, .R0 = par->R0, .k_r = s->k_r,
-                                           .k_ir = s->k_ir,
-                                           .gamma = tirenv_springs__cc_gamma(s->k_r, s->k_ir),
-                                           .sin_t = s->sin_t,
+                                           .k_ir = s->k_ir, .sin_t = s->sin_t,
                                            .cos_t = s->cos_t, .diag = s->diag, .lq = s->lq,
                                            .rq = s->rq};
-    s->cc_tire.sin_gamma = sin(s->cc_tire.gamma);
+    tirenv_springs__cc_tire_shape(&s->cc_tire);
     if (par->contact == TIRENV_SPRINGS_CONTINUOUS && tirenv_springs__cc_init(&s->cc, N)) {
         tirenv_springs_free(s);
         return NULL;

@@ -28,11 +28,34 @@ double tirenv_springs__cc_gamma(double k_r, double k_ir)
 void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
                                 double *b, double *da_dt, double *db_dt)
 {
-    const double g = T->gamma, inv = 1 / T->sin_gamma;
-    *a = sin((1 - t) * g) * inv;
-    *b = sin(t * g) * inv;
-    *da_dt = -g * cos((1 - t) * g) * inv;
-    *db_dt = g * cos(t * g) * inv;
+    /* sin((1 - t) g) = sin(g) cos(t g) - cos(g) sin(t g): one sine and cosine of t g. */
+    const double g = T->gamma, inv = 1 / T->sin_gamma, cot = T->cot_gamma;
+    const double sn = sin(t * g), cs = cos(t * g);
+    *a = cs - cot * sn;
+    *b = sn * inv;
+    *da_dt = -g * (sn + cot * cs);
+    *db_dt = g * cs * inv;
+}
+
+void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T)
+{
+    T->gamma = tirenv_springs__cc_gamma(T->k_r, T->k_ir);
+    T->sin_gamma = sin(T->gamma);
+    T->cot_gamma = cos(T->gamma) / T->sin_gamma;
+    /* The bounds from 4096 samples, with margins far above the sampling's error (both
+     * functions are smooth, their variation between samples below 1e-7 of their range):
+     * ab_lo 1 % under the smallest (a + b - 1) / (t (1 - t)) seen, tau_dev 1 % over the
+     * largest |tau - t| plus 1e-9. */
+    double lo = INFINITY, dev = 0;
+    for (int k = 1; k < 4096; ++k) {
+        const double t = k / 4096.0;
+        double a, b, da, db;
+        tirenv_springs__cc_weights(T, t, &a, &b, &da, &db);
+        lo = fmin(lo, (a + b - 1) / (t * (1 - t)));
+        dev = fmax(dev, fabs(b / (a + b) - t));
+    }
+    T->ab_lo = lo > 0 ? 0.99 * lo : 0;
+    T->tau_dev = 1.01 * dev + 1e-9;
 }
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
@@ -123,17 +146,28 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
  * R0 of the centre and inside the tread segment's angle, as a row on the sector of elements it
  * lies in (or on one element, if it lies on its ray). Appended after the n_rows present. */
 static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                       const tirenv_profile *p, double x, double z)
+                       const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                       const double d[])
 {
     const double *X = p->x, *Z = p->z, R0 = T->R0, R0sq = R0 * R0;
     const double *st = T->sin_t, *ct = T->cos_t;
     const size_t n = p->n, N = T->N;
-    /* The first vertex with X > x - R0. */
-    size_t j = tirenv_profile__segment_at(p, x - R0);
-    while (j < n && !(X[j] > x - R0))
+    /* A vertex within R0 of the centre lies within the angles of the elements that can reach
+     * the ground, [a, b], and one more either side (section 4.8): X - x = rho sin(psi). */
+    const size_t a1 = a > 0 ? a - 1 : 0, b1 = b + 1 < N ? b + 1 : N - 1;
+    const double lo = x + fmin(0, R0 * (ct[a1] >= 0 ? st[a1] : -1));
+    const double hi = x + fmax(0, R0 * (ct[b1] >= 0 ? st[b1] : 1));
+    size_t j = tirenv_profile__segment_at(p, lo);
+    while (j < n && X[j] < lo)
         ++j;
+    size_t j_end = j;
+    while (j_end < n && X[j_end] <= hi)
+        ++j_end;
+    if (reserve_rows(c, c->n_rows + (j_end - j), N))
+        return TIRENV_ENOMEM;
     size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
-    for (; j < n && X[j] < x + R0; ++j) {
+    tirenv_springs__cc_row *out = c->rows + c->n_rows;
+    for (; j < j_end; ++j) {
         const double dx = X[j] - x, dz = z - Z[j];
         if (!(dz > 0))
             continue; /* at or above the centre's height: outside the lower half */
@@ -148,11 +182,15 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         const double s_i = dx * ct[i] - dz * st[i];
         if (s_i < 0)
             continue; /* behind the first element */
-        const double rho = sqrt(rr), h = R0 - rho, dh_dz = -dz / rho;
+        const double rho = sqrt(rr), h = R0 - rho;
+        if (!(h > 0))
+            continue;
         /* A row on the element alone (t snapped, or exactly on its ray) keeps t = 0 while
-         * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. */
+         * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
+         * weights of a row between elements come later, for the rows that can bind
+         * (build_rows); dga_dz holds dt/dz until then. */
         tirenv_springs__cc_row r = {.i = i, .j = i, .t = 0, .tau = 0, .ga = 1, .gb = 0,
-                                    .h = h, .dga_dz = 0, .dgb_dz = 0, .dh_dz = dh_dz,
+                                    .h = h, .dga_dz = 0, .dgb_dz = 0, .dh_dz = -dz / rho,
                                     .id = (long)j};
         if (s_i > 0) {
             if (i + 1 >= N)
@@ -162,24 +200,34 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             if (t >= 1 - t_snap) {
                 r.i = r.j = i + 1;
             } else if (t > t_snap) {
+                /* Below the hull of the rays' own rows (build_rows' test with the rays'
+                 * penetrations, which the elements' rows only raise): never binds. */
+                const double P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
+                const double P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
+                const double chord = (1 - t) * P_l + t * P_r - fabs(P_r - P_l) * T->tau_dev;
+                if (!(h > chord * (1 + T->ab_lo * t * (1 - t))))
+                    continue;
                 r.j = i + 1;
                 r.t = t;
                 /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
-                const double dt_dz = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
-                double da, db;
-                tirenv_springs__cc_weights(T, t, &r.ga, &r.gb, &da, &db);
-                r.tau = r.gb / (r.ga + r.gb);
-                r.dga_dz = da * dt_dz;
-                r.dgb_dz = db * dt_dz;
+                r.dga_dz = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
             }
         }
-        if (!(h > 0))
-            continue;
-        if (reserve_rows(c, c->n_rows + 1, N))
-            return TIRENV_ENOMEM;
-        c->rows[c->n_rows++] = r;
+        *out++ = r;
     }
+    c->n_rows = (size_t)(out - c->rows);
     return TIRENV_OK;
+}
+
+/* The weights of a row between elements at its t (dga_dz holding dt/dz). */
+static void row_weights(const tirenv_springs__cc_tire *T, tirenv_springs__cc_row *r)
+{
+    const double dt_dz = r->dga_dz;
+    double da, db;
+    tirenv_springs__cc_weights(T, r->t, &r->ga, &r->gb, &da, &db);
+    r->tau = r->gb / (r->ga + r->gb);
+    r->dga_dz = da * dt_dz;
+    r->dgb_dz = db * dt_dz;
 }
 
 /* Rows ordered by sector, then t, then h: insertion sort (the walk gives nearly that order). */
@@ -398,15 +446,25 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
 {
     const size_t N = T->N;
     c->n_rows = 0;
-    if (vertex_rows(c, T, p, x, z))
+    if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
         return TIRENV_ENOMEM;
     const size_t nv = c->n_rows;
     if (reserve_rows(c, 2 * nv + N + 2, N))
         return TIRENV_ENOMEM;
     tirenv_springs__cc_row *R = c->rows;
     sort_rows(R, nv);
-    /* The elements any row can touch. */
-    size_t lo = a <= b ? a : N, hi = a <= b ? b : 0;
+    /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
+    size_t lo = N, hi = 0;
+    for (size_t e = a; a <= b && e <= b; ++e)
+        if (d[e] > 0) {
+            lo = e;
+            break;
+        }
+    for (size_t e = b + 1; a <= b && e-- > lo;)
+        if (d[e] > 0) {
+            hi = e;
+            break;
+        }
     if (nv > 0) {
         lo = R[0].i < lo ? R[0].i : lo;
         const size_t top = R[nv - 1].t > 0 ? R[nv - 1].i + 1 : R[nv - 1].i;
@@ -420,7 +478,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_row holds
      * the vertex row (SIZE_MAX: the ray) until the rows are laid out. */
     for (size_t e = lo; e <= hi; ++e) {
-        c->pin_h[e] = a <= e && e <= b ? d[e] : 0;
+        c->pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
         c->pin_row[e] = SIZE_MAX;
         c->sec_count[e] = 0;
     }
@@ -466,7 +524,24 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         if (m > 0 && e + 1 <= hi) {
             const double P_r = c->pin_h[e + 1] > 0 ? c->pin_h[e + 1] : 0;
             const double P_l = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
-            hull_rows(c, first, m, P_l, P_r, stack, &out);
+            /* A row lies below the hull if h / (ga + gb) is at most the chord between the
+             * ends at its tau: with ga + gb >= 1 + ab_lo t (1 - t) and |tau - t| <=
+             * tau_dev, if h / (1 + ab_lo t (1 - t)) <= (1 - t) P_l + t P_r - |P_r - P_l|
+             * tau_dev. Such rows (nearly every vertex of a smooth road: the tread bows out
+             * between its tips) are dropped before their weights are computed. */
+            const double slack_tau = fabs(P_r - P_l) * T->tau_dev;
+            size_t kept = 0;
+            for (size_t q = first; q < first + m; ++q) {
+                const double t = R[q].t;
+                const double chord = (1 - t) * P_l + t * P_r - slack_tau;
+                if (R[q].h > chord * (1 + T->ab_lo * t * (1 - t))) {
+                    R[first + kept] = R[q];
+                    row_weights(T, &R[first + kept]);
+                    ++kept;
+                }
+            }
+            if (kept > 0)
+                hull_rows(c, first, kept, P_l, P_r, stack, &out);
         }
         c->sec_count[e] = out - nv - c->sec_first[e];
         if (c->sec_count[e] > 0) {

@@ -211,9 +211,16 @@ void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, si
 typedef struct {
     size_t N, i0;
     double R0, k_r, k_ir;
-    double gamma, sin_gamma;  /* the tread's interpolation: tirenv_springs__cc_weights */
     const double *sin_t, *cos_t, *diag, *lq, *rq;
+    /* Filled by tirenv_springs__cc_tire_shape from k_r and k_ir: the tread's interpolation
+     * (tirenv_springs__cc_weights), and bounds that let most ground vertices be dropped
+     * before their weights: a(t) + b(t) >= 1 + ab_lo t (1 - t), |tau(t) - t| <= tau_dev. */
+    double gamma, sin_gamma, cot_gamma, ab_lo, tau_dev;
 } tirenv_springs__cc_tire;
+
+/* Fills the shape fields of T (gamma, sin_gamma, cot_gamma, ab_lo, tau_dev) from its k_r,
+ * k_ir. */
+void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T);
 
 /* gamma for a tire of element stiffnesses k_r and k_ir: acos(exp(-mu)), cosh(mu) =
  * 1 + k_r / (2 k_ir), exp(-mu) the ratio of a neighbour's deflection to the loaded element's
