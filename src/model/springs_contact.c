@@ -300,33 +300,45 @@ static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l,
 #undef PT_H
 }
 
-/* The KKT system of the working set: unknowns w_e (e in [f0, f1]) with, after each w_e, the
- * row on element e alone and the rows of sector e - 1 (whose elements then precede them), in
- * the symmetric form [K G^T; G 0] [w; mu] = [.; .], mu = -lambda. Every row follows the
- * unknowns it couples, so with K positive definite and the rows independent every leading
- * block is nonsingular and LDL^T needs no pivoting (w pivots > 0, row pivots < 0). Returns 1
- * if a pivot shows the rows dependent. */
+/* Whether element e is held by its own row in the working set: then w_e = h is known and
+ * neither w_e nor that row's reaction is an unknown of the KKT system. */
+static int fixed(const tirenv_springs__cc *c, size_t e)
+{
+    const size_t pr = c->pin_row[e];
+    return pr != SIZE_MAX && c->in_w[pr];
+}
+
+/* The KKT system of the working set on the unknowns left once the held elements are
+ * eliminated: w_e of the free elements in [f0, f1], each followed by the rows of sector e - 1
+ * in the working set (whose free elements then precede them), in the symmetric form
+ * [K G^T; G 0] [w; mu] = [.; .], mu = -lambda. Every row follows the unknowns it couples, so
+ * with K positive definite and the rows independent every leading block is nonsingular and
+ * LDL^T needs no pivoting (w pivots > 0, row pivots < 0). Returns 1 if a pivot shows the rows
+ * dependent (a row on held elements only, among others), -1 out of memory. */
 static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
-    size_t n = 0, bw = 1;
+    size_t n = 0, bw = 1, last_w = SIZE_MAX;
     for (size_t e = f0; e <= f1; ++e) {
-        c->wpos[e] = n;
-        c->order[n++] = e;
-        if (e > f0 && n - 1 - c->wpos[e - 1] > bw)
-            bw = n - 1 - c->wpos[e - 1];
-        const size_t pr = c->pin_row[e];
-        if (pr != SIZE_MAX && c->in_w[pr]) {
-            c->pos[pr] = n;
-            c->order[n++] = N + pr;
+        if (fixed(c, e)) {
+            c->wpos[e] = SIZE_MAX;
+        } else {
+            c->wpos[e] = n;
+            c->order[n++] = e;
+            if (last_w != SIZE_MAX && e > f0 && c->wpos[e - 1] != SIZE_MAX &&
+                n - 1 - c->wpos[e - 1] > bw)
+                bw = n - 1 - c->wpos[e - 1];
+            last_w = n - 1;
         }
         if (e > f0)
             for (size_t r = c->sec_first[e - 1], k = 0; k < c->sec_count[e - 1]; ++k, ++r)
                 if (c->in_w[r]) {
                     c->pos[r] = n;
                     c->order[n++] = N + r;
-                    if (n - 1 - c->wpos[e - 1] > bw)
-                        bw = n - 1 - c->wpos[e - 1];
+                    const size_t wl = c->wpos[e - 1], wr = c->wpos[e];
+                    const size_t low = wl != SIZE_MAX ? wl : wr;
+                    if (low != SIZE_MAX && n - 1 - low > bw)
+                        bw = n - 1 - low;
                 }
     }
     const size_t W = bw + 1;
@@ -343,37 +355,42 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     memset(L, 0, n * W * sizeof *L);
 #define AT(p, q) L[(p) * W + ((p) - (q))]
     for (size_t e = f0; e <= f1; ++e) {
+        if (c->wpos[e] == SIZE_MAX)
+            continue;
         double k_ee = T->diag[e];
         if (e == f0 && f0 > 0)
             k_ee -= T->k_ir * T->lq[f0 - 1];
         if (e == f1 && f1 + 1 < N)
             k_ee -= T->k_ir * T->rq[f1 + 1];
         AT(c->wpos[e], c->wpos[e]) = k_ee;
-        if (e > f0)
+        if (e > f0 && c->wpos[e - 1] != SIZE_MAX)
             AT(c->wpos[e], c->wpos[e - 1]) = -T->k_ir;
     }
     for (size_t p = 0; p < n; ++p) {
         if (c->order[p] < N)
             continue;
         const tirenv_springs__cc_row *r = &c->rows[c->order[p] - N];
-        AT(p, c->wpos[r->i]) = r->ga;
-        if (r->t > 0)
+        if (c->wpos[r->i] != SIZE_MAX)
+            AT(p, c->wpos[r->i]) = r->ga;
+        if (r->t > 0 && c->wpos[r->j] != SIZE_MAX)
             AT(p, c->wpos[r->j]) = r->gb;
     }
     const double k_max = T->k_r + 2 * T->k_ir;
     for (size_t p = 0; p < n; ++p) {
         const size_t lo = p > bw ? p - bw : 0;
+        double *Lp = L + p * W;
         for (size_t q = lo; q <= p; ++q) {
-            double s = AT(p, q);
+            const double *Lq = L + q * W;
+            double s = Lp[p - q];
             const size_t klo = q > bw && q - bw > lo ? q - bw : lo;
             for (size_t k = klo; k < q; ++k)
-                s -= AT(p, k) * AT(q, k) * AT(k, k);
+                s -= Lp[p - k] * Lq[q - k] * L[k * W];
             if (q < p)
-                AT(p, q) = s / AT(q, q);
+                Lp[p - q] = s / Lq[0];
             else
-                AT(p, p) = s;
+                Lp[0] = s;
         }
-        const double D = AT(p, p);
+        const double D = Lp[0];
         if (c->order[p] < N ? !(D > 0) : !(D < -1e-14 / k_max))
             return 1;
     }
@@ -387,13 +404,14 @@ static void kkt_solve(const tirenv_springs__cc *c, double b[])
     const double *L = c->band;
     for (size_t p = 0; p < n; ++p) {
         const size_t lo = p > bw ? p - bw : 0;
+        const double *Lp = L + p * W;
         double s = b[p];
         for (size_t k = lo; k < p; ++k)
-            s -= AT(p, k) * b[k];
+            s -= Lp[p - k] * b[k];
         b[p] = s;
     }
     for (size_t p = 0; p < n; ++p)
-        b[p] /= AT(p, p);
+        b[p] /= L[p * W];
     for (size_t p = n; p-- > 0;) {
         const size_t hi = p + bw < n - 1 ? p + bw : n - 1;
         double s = b[p];
@@ -404,23 +422,77 @@ static void kkt_solve(const tirenv_springs__cc *c, double b[])
 #undef AT
 }
 
+/* The right-hand side of the reduced system for held values v (v[e] on held elements) and
+ * w-part and row-part sources: w-part k_ir v of held neighbours, row-part less the held
+ * elements' share. */
+static void reduced_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                        const double v[], double b[])
+{
+    const size_t N = T->N, f0 = c->f0, f1 = c->f1;
+    for (size_t p = 0; p < c->n_kkt; ++p) {
+        const size_t u = c->order[p];
+        if (u < N) {
+            if (u > f0 && c->wpos[u - 1] == SIZE_MAX)
+                b[p] += T->k_ir * v[u - 1];
+            if (u < f1 && c->wpos[u + 1] == SIZE_MAX)
+                b[p] += T->k_ir * v[u + 1];
+        } else {
+            const tirenv_springs__cc_row *r = &c->rows[u - N];
+            if (c->wpos[r->i] == SIZE_MAX)
+                b[p] -= r->ga * v[r->i];
+            if (r->t > 0 && c->wpos[r->j] == SIZE_MAX)
+                b[p] -= r->gb * v[r->j];
+        }
+    }
+}
+
 /* The minimiser of 1/2 w^T K w on the working set's rows as equalities: w into wq[f0..f1],
- * the rows' reactions into lambda. 1 if the rows are dependent, -1 out of memory. */
+ * the rows' reactions into lambda (a held element's own row's from its equation of K w =
+ * G^T lambda). 1 if the rows are dependent, -1 out of memory. */
 static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double wq[])
 {
     const int st = kkt_factor(c, T);
     if (st)
         return st;
-    const size_t N = T->N;
+    const size_t N = T->N, f0 = c->f0, f1 = c->f1;
     double *b = c->rhs;
+    for (size_t e = f0; e <= f1; ++e)
+        if (c->wpos[e] == SIZE_MAX)
+            wq[e] = c->rows[c->pin_row[e]].h;
     for (size_t p = 0; p < c->n_kkt; ++p)
         b[p] = c->order[p] < N ? 0 : c->rows[c->order[p] - N].h;
+    reduced_rhs(c, T, wq, b);
     kkt_solve(c, b);
     for (size_t p = 0; p < c->n_kkt; ++p) {
         if (c->order[p] < N)
             wq[c->order[p]] = b[p];
         else
             c->lambda[c->order[p] - N] = -b[p];
+    }
+    /* The held elements' reactions: (K w)_e less what the working rows between elements
+     * put on e. */
+    for (size_t e = f0; e <= f1; ++e) {
+        if (c->wpos[e] != SIZE_MAX)
+            continue;
+        double k_ee = T->diag[e];
+        if (e == f0 && f0 > 0)
+            k_ee -= T->k_ir * T->lq[f0 - 1];
+        if (e == f1 && f1 + 1 < N)
+            k_ee -= T->k_ir * T->rq[f1 + 1];
+        double Kw = k_ee * wq[e];
+        if (e > f0)
+            Kw -= T->k_ir * wq[e - 1];
+        if (e < f1)
+            Kw -= T->k_ir * wq[e + 1];
+        for (int side = 0; side < 2; ++side) { /* sectors e - 1 and e */
+            if ((side == 0 && e == f0) || (side == 1 && e == f1))
+                continue;
+            const size_t sec = side == 0 ? e - 1 : e;
+            for (size_t r = c->sec_first[sec], k = 0; k < c->sec_count[sec]; ++k, ++r)
+                if (c->in_w[r])
+                    Kw -= (side == 0 ? c->rows[r].gb : c->rows[r].ga) * c->lambda[r];
+        }
+        c->lambda[c->pin_row[e]] = Kw;
     }
     return 0;
 }
@@ -786,7 +858,13 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         return;
     /* The factors are the working set's from the last eqp (the final set: the last solve
      * was at its minimiser). d/dz of K w = G^T lambda and of G w = h with the set fixed:
-     * K dw - G^T dlambda = dG^T lambda, G dw = dh - dG w. */
+     * K dw - G^T dlambda = dG^T lambda, G dw = dh - dG w; a held element's dw is its row's
+     * dh. */
+    for (size_t e = f0; e <= f1; ++e)
+        if (c->wpos[e] == SIZE_MAX) {
+            const tirenv_springs__cc_row *R = &c->rows[c->pin_row[e]];
+            dw[e] = R->id < 0 ? dd[e] : R->dh_dz;
+        }
     double *b = c->rhs;
     for (size_t p = 0; p < c->n_kkt; ++p)
         b[p] = 0;
@@ -795,16 +873,19 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             continue;
         const size_t r = c->order[p] - N;
         const tirenv_springs__cc_row *R = &c->rows[r];
-        const double dh = R->id < 0 ? dd[R->i] : R->dh_dz;
-        double rhs = dh;
+        double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
         if (R->t > 0) {
             rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j];
-            b[c->wpos[R->i]] += R->dga_dz * c->lambda[r];
-            b[c->wpos[R->j]] += R->dgb_dz * c->lambda[r];
+            if (c->wpos[R->i] != SIZE_MAX)
+                b[c->wpos[R->i]] += R->dga_dz * c->lambda[r];
+            if (c->wpos[R->j] != SIZE_MAX)
+                b[c->wpos[R->j]] += R->dgb_dz * c->lambda[r];
         }
         b[p] = rhs;
     }
+    reduced_rhs(c, T, dw, b);
     kkt_solve(c, b);
     for (size_t e = f0; e <= f1; ++e)
-        dw[e] = b[c->wpos[e]];
+        if (c->wpos[e] != SIZE_MAX)
+            dw[e] = b[c->wpos[e]];
 }
