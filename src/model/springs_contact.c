@@ -82,6 +82,8 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->in_w);
     free(c->lambda);
     free(c->order);
+    free(c->env_first);
+    free(c->env_last);
     free(c->pos);
     free(c->band);
     free(c->rhs);
@@ -134,6 +136,14 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     if (!order)
         return TIRENV_ENOMEM;
     c->order = order;
+    size_t *env_first = realloc(c->env_first, (cap + N) * sizeof *env_first);
+    if (!env_first)
+        return TIRENV_ENOMEM;
+    c->env_first = env_first;
+    size_t *env_last = realloc(c->env_last, (cap + N) * sizeof *env_last);
+    if (!env_last)
+        return TIRENV_ENOMEM;
+    c->env_last = env_last;
     double *rhs = realloc(c->rhs, (cap + N) * sizeof *rhs);
     if (!rhs)
         return TIRENV_ENOMEM;
@@ -354,6 +364,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     double *L = c->band;
     memset(L, 0, n * W * sizeof *L);
 #define AT(p, q) L[(p) * W + ((p) - (q))]
+    size_t *first = c->env_first, *last = c->env_last;
     for (size_t e = f0; e <= f1; ++e) {
         if (c->wpos[e] == SIZE_MAX)
             continue;
@@ -362,27 +373,45 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
             k_ee -= T->k_ir * T->lq[f0 - 1];
         if (e == f1 && f1 + 1 < N)
             k_ee -= T->k_ir * T->rq[f1 + 1];
-        AT(c->wpos[e], c->wpos[e]) = k_ee;
-        if (e > f0 && c->wpos[e - 1] != SIZE_MAX)
-            AT(c->wpos[e], c->wpos[e - 1]) = -T->k_ir;
+        const size_t p = c->wpos[e];
+        AT(p, p) = k_ee;
+        first[p] = p;
+        if (e > f0 && c->wpos[e - 1] != SIZE_MAX) {
+            AT(p, c->wpos[e - 1]) = -T->k_ir;
+            first[p] = c->wpos[e - 1];
+        }
     }
     for (size_t p = 0; p < n; ++p) {
         if (c->order[p] < N)
             continue;
         const tirenv_springs__cc_row *r = &c->rows[c->order[p] - N];
-        if (c->wpos[r->i] != SIZE_MAX)
+        first[p] = p;
+        if (c->wpos[r->i] != SIZE_MAX) {
             AT(p, c->wpos[r->i]) = r->ga;
-        if (r->t > 0 && c->wpos[r->j] != SIZE_MAX)
+            first[p] = c->wpos[r->i];
+        }
+        if (r->t > 0 && c->wpos[r->j] != SIZE_MAX) {
             AT(p, c->wpos[r->j]) = r->gb;
+            first[p] = c->wpos[r->j] < first[p] ? c->wpos[r->j] : first[p];
+        }
+    }
+    /* The envelope (skyline) of the band: LDL^T fills no entry of a row before its first
+     * nonzero, so each row's loops start there; the entries skipped are exact zeros, which
+     * leaves every sum as the full band's. last[q]: the last row p with first[p] <= q (the
+     * suffix minimum of first is nondecreasing, so one sweep finds it). */
+    for (size_t p = n, m = SIZE_MAX, q = n; p-- > 0;) {
+        m = first[p] < m ? first[p] : m; /* min of first[p..n-1] */
+        while (q > m)
+            last[--q] = p;
     }
     const double k_max = T->k_r + 2 * T->k_ir;
     for (size_t p = 0; p < n; ++p) {
-        const size_t lo = p > bw ? p - bw : 0;
+        const size_t lo = first[p];
         double *Lp = L + p * W;
         for (size_t q = lo; q <= p; ++q) {
             const double *Lq = L + q * W;
             double s = Lp[p - q];
-            const size_t klo = q > bw && q - bw > lo ? q - bw : lo;
+            const size_t klo = first[q] > lo ? first[q] : lo;
             for (size_t k = klo; k < q; ++k)
                 s -= Lp[p - k] * Lq[q - k] * L[k * W];
             if (q < p)
@@ -402,8 +431,9 @@ static void kkt_solve(const tirenv_springs__cc *c, double b[])
 {
     const size_t n = c->n_kkt, bw = c->bw, W = bw + 1;
     const double *L = c->band;
+    const size_t *first = c->env_first, *last = c->env_last;
     for (size_t p = 0; p < n; ++p) {
-        const size_t lo = p > bw ? p - bw : 0;
+        const size_t lo = first[p];
         const double *Lp = L + p * W;
         double s = b[p];
         for (size_t k = lo; k < p; ++k)
@@ -413,7 +443,7 @@ static void kkt_solve(const tirenv_springs__cc *c, double b[])
     for (size_t p = 0; p < n; ++p)
         b[p] /= L[p * W];
     for (size_t p = n; p-- > 0;) {
-        const size_t hi = p + bw < n - 1 ? p + bw : n - 1;
+        const size_t hi = last[p]; /* rows past it have a zero in column p */
         double s = b[p];
         for (size_t k = p + 1; k <= hi; ++k)
             s -= AT(k, p) * b[k];

@@ -259,6 +259,9 @@ typedef struct {
     size_t *order;         /* KKT unknowns: element (< N) or N + row */
     size_t *pos;           /* per row: its KKT position (rows in the working set) */
     double *band, *rhs;
+    /* per KKT unknown: the first column of its row's envelope (the first nonzero of the
+     * system's row), and the last row whose envelope reaches its column */
+    size_t *env_first, *env_last;
     size_t n_kkt, bw;
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
