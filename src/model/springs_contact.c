@@ -65,11 +65,14 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
-    double **dbl[] = {&c->pin_h, &c->w_try, &c->step, &c->raise};
+    double **dbl[] = {&c->pin_h, &c->w_try, &c->step, &c->raise, &c->tri_piv, &c->tri_mul,
+                      &c->tri_x};
     for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; ++k)
         if (!(*dbl[k] = calloc(N + 2, sizeof **dbl[k])))
             return TIRENV_ENOMEM;
     if (!(c->warm_pin = calloc(N, 1)))
+        return TIRENV_ENOMEM;
+    if (!(c->tri_y = calloc(TIRENV_SPRINGS__SCHUR_MAX * (N + 2), sizeof *c->tri_y)))
         return TIRENV_ENOMEM;
     c->f0 = 1;
     c->f1 = 0;
@@ -95,6 +98,10 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->w_try);
     free(c->step);
     free(c->raise);
+    free(c->tri_piv);
+    free(c->tri_mul);
+    free(c->tri_x);
+    free(c->tri_y);
     free(c->warm_ids);
     free(c->warm_pin);
     memset(c, 0, sizeof *c);
@@ -351,6 +358,14 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
                         bw = n - 1 - low;
                 }
     }
+    c->n_kkt = n;
+    c->n_schur = 0;
+    for (size_t p = 0; p < n && c->n_schur <= TIRENV_SPRINGS__SCHUR_MAX; ++p)
+        if (c->order[p] >= N && c->n_schur++ < TIRENV_SPRINGS__SCHUR_MAX)
+            c->schur_pos[c->n_schur - 1] = p;
+    c->use_schur = c->n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
+    if (c->use_schur)
+        return tirenv_springs__cc_schur_factor(c, T);
     const size_t W = bw + 1;
     if (n * W > c->cap_band) {
         double *band = realloc(c->band, n * W * sizeof *band);
@@ -427,8 +442,13 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 }
 
 /* Solves the factored system for b (length n_kkt) in place. */
-static void kkt_solve(const tirenv_springs__cc *c, double b[])
+static void kkt_solve(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                      double b[])
 {
+    if (c->use_schur) {
+        tirenv_springs__cc_schur_solve(c, T, b);
+        return;
+    }
     const size_t n = c->n_kkt, bw = c->bw, W = bw + 1;
     const double *L = c->band;
     const size_t *first = c->env_first, *last = c->env_last;
@@ -492,7 +512,7 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
     for (size_t p = 0; p < c->n_kkt; ++p)
         b[p] = c->order[p] < N ? 0 : c->rows[c->order[p] - N].h;
     reduced_rhs(c, T, wq, b);
-    kkt_solve(c, b);
+    kkt_solve(c, T, b);
     for (size_t p = 0; p < c->n_kkt; ++p) {
         if (c->order[p] < N)
             wq[c->order[p]] = b[p];
@@ -914,7 +934,7 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         b[p] = rhs;
     }
     reduced_rhs(c, T, dw, b);
-    kkt_solve(c, b);
+    kkt_solve(c, T, b);
     for (size_t e = f0; e <= f1; ++e)
         if (c->wpos[e] != SIZE_MAX)
             dw[e] = b[c->wpos[e]];

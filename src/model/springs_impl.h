@@ -248,6 +248,9 @@ typedef struct {
     long id;          /* the ground vertex, or -1 - i for element i's ray */
 } tirenv_springs__cc_row;
 
+/* The most working rows between elements solved through their Schur complement. */
+#define TIRENV_SPRINGS__SCHUR_MAX 4
+
 /* The workspace: rows, the active set, the banded KKT factors, the warm start. Grows (once)
  * to the largest number of rows met. */
 typedef struct {
@@ -263,6 +266,15 @@ typedef struct {
      * system's row), and the last row whose envelope reaches its column */
     size_t *env_first, *env_last;
     size_t n_kkt, bw;
+    /* with at most TIRENV_SPRINGS__SCHUR_MAX working rows between elements, the system is
+     * solved by the tridiagonal K_FF and the rows' Schur complement (springs_schur.c):
+     * per element the Thomas pivots and multipliers, scratch, the rows' columns of
+     * K_FF^-1 G^T (N + 2 each); S's LDL^T factors; the rows' KKT positions */
+    int use_schur;
+    size_t n_schur, schur_pos[TIRENV_SPRINGS__SCHUR_MAX];
+    size_t chain_lo[TIRENV_SPRINGS__SCHUR_MAX], chain_hi[TIRENV_SPRINGS__SCHUR_MAX];
+    double *tri_piv, *tri_mul, *tri_x, *tri_y;
+    double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
@@ -278,6 +290,12 @@ typedef struct {
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
 void tirenv_springs__cc_free(tirenv_springs__cc *c);
 void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start */
+/* springs_schur.c: factor the KKT system laid out by the banded path (wpos, order, the
+ * n_schur working rows between elements at schur_pos); 1 if the rows are dependent. Then
+ * solve it for b in the KKT order, in place, as the banded solve does. */
+int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T);
+void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
+                                    const tirenv_springs__cc_tire *T, double b[]);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach
