@@ -183,6 +183,9 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     if (reserve_rows(c, c->n_rows + (j_end - j), N))
         return TIRENV_ENOMEM;
     size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
+    /* the rays' penetrations at the ends of sector ci and the chord's slack there */
+    size_t ci = SIZE_MAX;
+    double P_l = 0, P_r = 0, slack_tau = 0;
     tirenv_springs__cc_row *out = c->rows + c->n_rows;
     for (; j < j_end; ++j) {
         const double dx = X[j] - x, dz = z - Z[j];
@@ -219,9 +222,13 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             } else if (t > t_snap) {
                 /* Below the hull of the rays' own rows (build_rows' test with the rays'
                  * penetrations, which the elements' rows only raise): never binds. */
-                const double P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
-                const double P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
-                const double chord = (1 - t) * P_l + t * P_r - fabs(P_r - P_l) * T->tau_dev;
+                if (ci != i) {
+                    ci = i;
+                    P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
+                    P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
+                    slack_tau = fabs(P_r - P_l) * T->tau_dev;
+                }
+                const double chord = (1 - t) * P_l + t * P_r - slack_tau;
                 if (!(h > chord * (1 + T->ab_lo * t * (1 - t))))
                     continue;
                 r.j = i + 1;
