@@ -178,6 +178,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(s->dphi > 0 && s->dphi <= 0.5 * s->phi * (1 + 1e-12)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "must be in (0, SEGMENT_ANGLE/2] rad, got %g", s->dphi);
+    if (s->contact != TIRENV_SPRINGS_CONTINUOUS && s->contact != TIRENV_SPRINGS_RAYS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CONTACT",
+                            "unknown springs contact %d", (int)s->contact);
     if (s->phi / s->dphi > 1e6)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "gives more than a million elements (%g rad)", s->dphi);
