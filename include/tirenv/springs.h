@@ -29,12 +29,14 @@ size_t tirenv_springs_size(const tirenv_springs *s);
 const double *tirenv_springs_theta(const tirenv_springs *s);
 
 /* Hub forces (N) with the centre at (x, z) (m) over a profile: casts the rays, solves the tip
- * LCP exactly, sums eq. 1. dfz_dz (N/m, may be NULL) is the exact derivative of F_z on the
- * current piece (active set and hit segments fixed). TIRENV_ENOCONV, with diag (may be NULL)
- * saying so, if the tip LCP does not settle; TIRENV_ERANGE if the ground has a feature
- * narrower than the ray spacing at its distance that reaches into the tread between two rays
- * unseen (a needle between the elements: a real tread would rest on it; the model cannot see
- * it), diag (and tirenv_springs_refusal) saying where and how wide. */
+ * contact exactly (with CONTACT 'continuous', the default, the QP of a tread between the
+ * elements that meets every ground vertex; with 'rays' the paper's LCP along the rays), sums
+ * eq. 1. dfz_dz (N/m, may be NULL) is the exact derivative of F_z on the current piece (active
+ * set and hit segments fixed). TIRENV_ENOCONV, with diag (may be NULL) saying so, if the tip
+ * contact does not settle; with 'rays', TIRENV_ERANGE if the ground has a feature narrower
+ * than the ray spacing at its distance that reaches into the tread between two rays unseen (a
+ * needle between the elements: a real tread would rest on it; the rays cannot see it), diag
+ * (and tirenv_springs_refusal) saying where and how wide. */
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *p, double x, double z,
                           double *fx, double *fz, double *dfz_dz, size_t *contacts,
                           tirenv_diag *diag);

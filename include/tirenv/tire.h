@@ -27,6 +27,14 @@ typedef struct {
     double secant_dz;      /* secant only: offset of the second starting point, m */
 } tirenv_eq_settings;
 
+/* How the springs model's tread meets the ground (docs/models.md section 4.3): [ENVELOPING_SPRINGS]
+ * CONTACT. */
+typedef enum {
+    TIRENV_SPRINGS_CONTINUOUS = 0, /* 'continuous': the tread between neighbouring elements is a
+                                    * curve, every ground vertex under it is a constraint */
+    TIRENV_SPRINGS_RAYS = 1        /* 'rays': each element touches only along its ray (the paper) */
+} tirenv_springs_contact;
+
 /* Parameters of the radial + interradial springs model (docs/models.md section 4); the rigid model
  * uses R0 only. Stiffnesses are discretisation-independent: k_r = c_r*dphi, k_ir = c_b/dphi. */
 typedef struct {
@@ -35,6 +43,7 @@ typedef struct {
     double c_b;            /* INTERRADIAL_STIFFNESS: interradial stiffness, N*rad/m */
     double phi;            /* SEGMENT_ANGLE: width of the tread segment, rad */
     double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
+    tirenv_springs_contact contact; /* CONTACT: 'continuous' (default, 0) or 'rays' */
 } tirenv_springs_params;
 
 /* How the ring's tread meets the ground ([ENVELOPING_RING] CONTACT, docs/models.md section

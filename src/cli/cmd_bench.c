@@ -77,7 +77,8 @@ static void usage(FILE *fp)
           "from memory, and the CSV writers' number formatting against snprintf (10^6\n"
           "numbers, same bytes). Then the road: rigid, cam and springs (contact length 0.33 m) over a\n"
           "1 km ISO 8608 class C road at 10 mm (seed 1), 100,001 positions, against the\n"
-          "project's targets; and nn, the network trained on the embedded data set (lm, seed 1)\n"
+          "project's targets, and springs over the same road sampled at 1 mm and 10 mm (a tenth\n"
+          "of its length, the same positions); and nn, the network trained on the embedded data set (lm, seed 1)\n"
           "over the same road by equivalent-cleat decomposition, h and slope, the\n"
           "decomposition's build timed apart, and the network alone on batches of 4096 inputs.\n"
           "Then a load that changes before every position (tirenv_model_set_load, +-20 %\n"
@@ -507,6 +508,42 @@ static void bench_nn_batch(tirenv_nn *nn, long repeat)
     free(y);
 }
 
+/* Finely sampled roads (measured roads come at 1 mm): the springs model over the same ISO 8608
+ * class C road (seed 1) generated at 1 mm and at 10 mm, a tenth of the road's length, at the
+ * same positions (every 10 mm): the time a position at 1 mm over that at 10 mm. */
+static int bench_fine_road(const tirenv_tire *tire, long repeat, tirenv_diag *diag)
+{
+    const double length = 0.1 * road_length, dxs[2] = {0.01, 0.001};
+    const size_t n = (size_t)floor(length / road_dx + 0.5) + 1;
+    double *x = malloc(n * sizeof *x), t[2] = {0, 0};
+    tirenv_point *pt = malloc(n * sizeof *pt);
+    int status = x && pt ? TIRENV_OK : TIRENV_ENOMEM;
+    for (size_t k = 0; k < n && !status; ++k)
+        x[k] = (double)k * road_dx;
+    for (int i = 0; i < 2 && !status; ++i) {
+        tirenv_road_settings rs = tirenv_road_default();
+        rs.length = length;
+        rs.dx = dxs[i];
+        tirenv_profile *road = NULL;
+        double evals;
+        status = tirenv_road_iso8608(&rs, &road, diag);
+        if (!status)
+            status = road_time(tire, "springs", road, n, x, pt, repeat, &t[i], &evals, diag);
+        tirenv_profile_free(road);
+    }
+    if (!status) {
+        cli_bench_figure("springs_road_10mm_pos_per_s", (double)n / t[0]);
+        cli_bench_figure("springs_road_1mm_pos_per_s", (double)n / t[1]);
+        cli_bench_figure("springs_fine_over_coarse_road", t[1] / t[0]);
+        cli_bench_say("  springs over the same road sampled at 1 mm and at 10 mm (%.0f m, %zu "
+                      "positions at 10 mm): %.0f and %.0f positions/s, %.2f x the time\n",
+                      length, n, (double)n / t[1], (double)n / t[0], t[1] / t[0]);
+    }
+    free(x);
+    free(pt);
+    return status;
+}
+
 static int bench_road(const tirenv_tire *tire, long repeat)
 {
     tirenv_road_settings rs = tirenv_road_default();
@@ -554,6 +591,8 @@ static int bench_road(const tirenv_tire *tire, long repeat)
     }
     if (!status)
         status = cli_bench_jobs(tire, road, road_l_c, 0, road_dx, n, repeat, &diag);
+    if (!status)
+        status = bench_fine_road(tire, repeat, &diag);
     double t_train = 0;
     tirenv_diag why;
     tirenv_diag_clear(&why);

@@ -27,7 +27,7 @@ tirenv_tire tirenv_tire_default(void)
         .springs = {
             .R0 = 0.68,
             .c_r = 369000,
-            .c_b = 39600,
+            .c_b = 39700,
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
@@ -55,9 +55,9 @@ tirenv_tire tirenv_tire_default(void)
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
          * identified on the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
-            .c_z = 296000,
+            .c_z = 297000,
             .q_ra1 = 0.807,
-            .q_ra2 = 0.0242,
+            .q_ra2 = 0.0241,
             .shift = 0.8328,
             .length = 1.4634,
             .height = 0.9551,
@@ -159,6 +159,10 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(s->R0 > 0 && isfinite(s->R0)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "UNLOADED_RADIUS",
                             "must be a positive length in m, got %g", s->R0);
+    /* Its range before any relation that derives from it (the air's tension p*b*R). */
+    int status = plausible("UNLOADED_RADIUS", s->R0, 0.05, 5, "m", diag);
+    if (status)
+        return status;
     if (!(tire->width >= 0 && isfinite(tire->width)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "WIDTH",
                             "must be a length >= 0 in m, got %g", tire->width);
@@ -174,6 +178,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(s->dphi > 0 && s->dphi <= 0.5 * s->phi * (1 + 1e-12)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "must be in (0, SEGMENT_ANGLE/2] rad, got %g", s->dphi);
+    if (s->contact != TIRENV_SPRINGS_CONTINUOUS && s->contact != TIRENV_SPRINGS_RAYS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CONTACT",
+                            "unknown springs contact %d", (int)s->contact);
     if (s->phi / s->dphi > 1e6)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "gives more than a million elements (%g rad)", s->dphi);
@@ -255,7 +262,7 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (eq->method > TIRENV_EQ_BRENT)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
-    const int status = cam_check(&tire->cam, diag);
+    status = cam_check(&tire->cam, diag);
     return status ? status : tire_plausible(tire, diag);
 }
 

@@ -13,6 +13,8 @@
 
 /* The engine stores a NAME as an int. */
 _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must be int-sized");
+_Static_assert(sizeof(tirenv_springs_contact) == sizeof(int),
+               "tirenv_springs_contact must be int-sized");
 
 /* A real value and its dimension as exponents of length, force and angle (the [UNITS] a
  * file states are converted to SI with them). */
@@ -32,6 +34,11 @@ _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must b
      .names = {[TIRENV_EQ_NEWTON] = "newton", [TIRENV_EQ_SECANT] = "secant",                   \
                [TIRENV_EQ_BRENT] = "brent"},                                                   \
      .noun = "method"}
+#define TIR_CONTACT(sec, name, member, text)                                                   \
+    {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_NAME,                            \
+     .offset = offsetof(tirenv_tire, member), .comment = (text),                               \
+     .names = {[TIRENV_SPRINGS_CONTINUOUS] = "continuous", [TIRENV_SPRINGS_RAYS] = "rays"},    \
+     .noun = "contact"}
 
 /* Every key tirenv reads, checks, accepts in --set and writes: one table instead of a chain of
  * string comparisons, so the reader, the writer and the error messages cannot drift apart. */
@@ -63,6 +70,8 @@ static const tirenv_propfile__key tir_keys[] = {
              "phi: width of the modelled tread segment, rad"),
     TIR_REAL("ENVELOPING_SPRINGS", "ELEMENT_ANGLE", springs.dphi, 0, 0, 1,
              "dphi: angle between adjacent radial elements, rad"),
+    TIR_CONTACT("ENVELOPING_SPRINGS", "CONTACT", springs.contact,
+             "'continuous': a tread between the elements; 'rays': the paper's"),
     TIR_REAL("ENVELOPING_RING", "TREAD_THICKNESS", ring.t_r, 1, 0, 0,
              "t_r: tread layer between belt and ground, m"),
     TIR_REAL("ENVELOPING_RING", "BELT_BENDING_STIFFNESS", ring.EI, 2, 1, 0,

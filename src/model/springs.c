@@ -54,6 +54,10 @@ struct tirenv_springs {
      * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
      * the fresh fans cast: the faces are the same while it is. */
     unsigned long long fans;
+    /* CONTACT = 'continuous' (springs_contact.c): the tip problem with rows between the
+     * elements; its workspace and what it needs of the tire. */
+    tirenv_springs__cc cc;
+    tirenv_springs__cc_tire cc_tire;
     struct {
         int valid;
         unsigned long long fans;
@@ -149,6 +153,15 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->rays = (tirenv_springs__fan_rays){.i0 = s->i0, .rho_max = par->R0, .sin_t = s->sin_t,
                                          .cos_t = s->cos_t, .inv_s = s->ray_inv_s,
                                          .drop = s->ray_drop, .reach = s->ray_reach};
+    s->cc_tire = (tirenv_springs__cc_tire){.N = N, .i0 = s->i0, .R0 = par->R0, .k_r = s->k_r,
+                                           .k_ir = s->k_ir, .sin_t = s->sin_t,
+                                           .cos_t = s->cos_t, .diag = s->diag, .lq = s->lq,
+                                           .rq = s->rq};
+    tirenv_springs__cc_tire_shape(&s->cc_tire);
+    if (par->contact == TIRENV_SPRINGS_CONTINUOUS && tirenv_springs__cc_init(&s->cc, N)) {
+        tirenv_springs_free(s);
+        return NULL;
+    }
     s->a = 1;
     s->b = 0;
     return s;
@@ -164,6 +177,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->slope.gap);
     free(s->memo);
     free(s->pairs);
+    tirenv_springs__cc_free(&s->cc);
     free(s);
 }
 
@@ -347,11 +361,137 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
     return sum;
 }
 
+/* CONTACT = 'continuous': the rays give each element's own row, the ground's vertices the
+ * rows between elements (springs_contact.c); the hub forces as with rays. Most states have no
+ * row between elements active (the tread bows out between its tips, section 4.8): the
+ * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
+ * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
+ * else the QP is solved whole. */
+static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                             double *fx, double *fz, double *dfz_dz, size_t *contacts,
+                             tirenv_diag *diag)
+{
+    const double R0 = s->par.R0, k_r = s->k_r;
+    size_t a = 1, b = 0;
+    set_origin(s, prof, x);
+    const int any = candidate_span(s, z, &a, &b);
+    *fx = *fz = 0;
+    if (dfz_dz)
+        *dfz_dz = 0;
+    if (contacts)
+        *contacts = 0;
+    size_t f0 = 1, f1 = 0;
+    if (any) {
+        if (!(s->ray_a <= a && b <= s->ray_b &&
+              tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho,
+                                        s->memo))) {
+            tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+            s->ray_a = a;
+            s->ray_b = b;
+        }
+        for (size_t i = a; i <= b; ++i)
+            s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
+        const int status =
+            tirenv_springs__cc_rows(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, diag);
+        if (status)
+            return status;
+        f0 = s->cc.f0;
+        f1 = s->cc.f1;
+    }
+    /* The elements with a row of their own: [g0, g1]. */
+    const double *pin_h = s->cc.pin_h;
+    size_t g0 = f0, g1 = f1;
+    if (f0 <= f1) {
+        while (g0 <= f1 && !(pin_h[g0] > 0))
+            ++g0;
+        while (g1 > g0 && !(pin_h[g1] > 0))
+            --g1;
+    }
+    if (s->a <= s->b) { /* the LCP's warm start forgets elements that cannot touch now */
+        for (size_t i = s->a; i <= s->b && i < g0; ++i)
+            s->active[i] = 0;
+        for (size_t i = g1 + 1 > s->a ? g1 + 1 : s->a; i <= s->b; ++i)
+            s->active[i] = 0;
+    }
+    s->a = 1;
+    s->b = 0;
+    if (f0 > f1) {
+        s->pins.count = 0;
+        tirenv_springs__cc_forget(&s->cc);
+        return TIRENV_OK;
+    }
+    int fast = 0;
+    if (g0 <= f1) {
+        for (size_t e = g0; e <= g1; ++e)
+            s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
+        size_t passes;
+        if (tirenv_springs__lcp_pinned(&s->chains, g0, g1, s->d, s->w, s->p, s->active,
+                                       &s->pins, lcp_max_passes(g0, g1), &passes) == 0) {
+            for (size_t j = g0; j-- > f0;) /* the free chains, over the rows' span */
+                s->w[j] = s->lq[j] * s->w[j + 1];
+            for (size_t j = g1 + 1; j <= f1; ++j)
+                s->w[j] = s->rq[j] * s->w[j - 1];
+            fast = tirenv_springs__cc_pins_hold(&s->cc, s->w, 1e-12 * R0);
+        }
+    }
+    if (fast) {
+        f0 = g0;
+        f1 = g1;
+    } else {
+        const int status = tirenv_springs__cc_solve(&s->cc, &s->cc_tire, x, z, s->w, s->p,
+                                                    s->d, diag);
+        if (status)
+            return status;
+    }
+    s->a = f0;
+    s->b = f1;
+    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
+    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
+    for (size_t i = f0; i <= f1; ++i) {
+        sum_c += k_r * s->w[i] * s->cos_t[i];
+        sum_s += k_r * s->w[i] * s->sin_t[i];
+    }
+    *fz = sum_c;
+    *fx = -sum_s;
+    if (contacts) { /* the elements the ground presses, as with rays */
+        size_t n = 0;
+        for (size_t i = f0; i <= f1; ++i)
+            n += s->p[i] > 0;
+        *contacts = n;
+    }
+    if (!dfz_dz)
+        return TIRENV_OK;
+    if (fast) {
+        /* d(d_i)/dz of each pinned element's row: its ray's, or the vertex's on it. */
+        const tirenv_springs__pins *P = &s->pins;
+        for (size_t i = P->first; P->count > 0 && i <= P->last; ++i) {
+            if (!s->active[i])
+                continue;
+            const tirenv_springs__cc_row *R = &s->cc.rows[s->cc.pin_row[i]];
+            s->dd[i] = R->id < 0 ? -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i])
+                                 : R->dh_dz;
+        }
+        tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+    } else {
+        for (size_t i = f0; i <= f1; ++i)
+            if (tirenv_springs__cc_ray_active(&s->cc, i))
+                s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
+        tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw);
+    }
+    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+    for (size_t i = f0; i <= f1; ++i)
+        sum += k_r * s->dw[i] * s->cos_t[i];
+    *dfz_dz = sum;
+    return TIRENV_OK;
+}
+
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                           double *fx, double *fz, double *dfz_dz, size_t *contacts,
                           tirenv_diag *diag)
 {
     s->refused = 0;
+    if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS)
+        return forces_continuous(s, prof, x, z, fx, fz, dfz_dz, contacts, diag);
     const double R0 = s->par.R0, k_r = s->k_r;
     size_t a = 1, b = 0;
     set_origin(s, prof, x);
@@ -477,4 +617,6 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
+    if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) /* its warm start is not in the state */
+        tirenv_springs__cc_forget(&s->cc);
 }

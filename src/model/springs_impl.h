@@ -197,4 +197,132 @@ int tirenv_springs__lcp_pinned(const tirenv_springs__chains *c, size_t f0, size_
 void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, size_t f1,
                                   const tirenv_springs__pins *P, const double v[], double w[]);
 
+
+/* Continuous contact (springs_contact.c, docs/models.md section 4.3): the tread between
+ * neighbouring elements i and i + 1 is the curve at distance R0 - (a(t) w_i + b(t) w_(i+1))
+ * from the centre, t the parameter along the chord joining the two elements' unit directions
+ * (tirenv_springs__cc_weights). Every ground vertex under the tread and every element's ray
+ * crossing gives a row a w_i + b w_(i+1) >= h; the tip problem
+ * min 1/2 w^T K w over those rows is a strictly convex QP, solved exactly by a primal active
+ * set method on banded KKT systems. */
+
+/* What the contact needs of the tire: its elements and the tridiagonal K (diag, -k_ir off the
+ * diagonal) with the free chains beyond the rows' span eliminated by lq and rq. */
+typedef struct {
+    size_t N, i0;
+    double R0, k_r, k_ir;
+    const double *sin_t, *cos_t, *diag, *lq, *rq;
+    /* Filled by tirenv_springs__cc_tire_shape from k_r and k_ir: the tread's interpolation
+     * (tirenv_springs__cc_weights), and bounds that let most ground vertices be dropped
+     * before their weights: a(t) + b(t) >= 1 + ab_lo t (1 - t), |tau(t) - t| <= tau_dev. */
+    double gamma, sin_gamma, cot_gamma, ab_lo, tau_dev;
+} tirenv_springs__cc_tire;
+
+/* Fills the shape fields of T (gamma, sin_gamma, cot_gamma, ab_lo, tau_dev) from its k_r,
+ * k_ir. */
+void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T);
+
+/* gamma for a tire of element stiffnesses k_r and k_ir: acos(exp(-mu)), cosh(mu) =
+ * 1 + k_r / (2 k_ir), exp(-mu) the ratio of a neighbour's deflection to the loaded element's
+ * under a point load on an element (pi/2 with k_ir = 0). */
+double tirenv_springs__cc_gamma(double k_r, double k_ir);
+
+/* The tread's weights at t in [0, 1] between two elements: a = sin((1 - t) gamma) /
+ * sin(gamma), b = sin(t gamma) / sin(gamma) (and their derivatives in t). With a neighbour's
+ * deflection exp(-mu) = cos(gamma) times the loaded element's, a^2 + b^2 + 2 a b cos(gamma) =
+ * 1: a point load anywhere between the elements meets the same compliance as on an element
+ * (linear weights would make the tread 2 t (1 - t) (1 - cos(gamma)) stiffer between them, a
+ * ripple of h at the element spacing). */
+void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
+                                double *b, double *da_dt, double *db_dt);
+
+/* One constraint row: ga w_i + gb w_j >= h, j = i + 1 for a row between two elements (t in
+ * (0, 1): ga, gb the weights at t), t = 0 (ga = 1, gb = 0, j = i) for a row on element i
+ * alone (its ray, or a vertex on it). */
+typedef struct {
+    size_t i, j;
+    double t, tau;    /* chord parameter; tau = gb / (ga + gb), the hull's abscissa */
+    double ga, gb, h; /* h: m */
+    double dga_dz, dgb_dz; /* with the ground point fixed, 1/m */
+    double dh_dz;     /* dh/dz, m/m; unused for a ray's row (the ray's memo gives it) */
+    long id;          /* the ground vertex, or -1 - i for element i's ray */
+} tirenv_springs__cc_row;
+
+/* The most working rows between elements solved through their Schur complement. */
+#define TIRENV_SPRINGS__SCHUR_MAX 4
+
+/* The workspace: rows, the active set, the banded KKT factors, the warm start. Grows (once)
+ * to the largest number of rows met. */
+typedef struct {
+    size_t cap_rows, cap_band;
+    tirenv_springs__cc_row *rows;
+    size_t n_rows, n_vertex_rows;
+    unsigned char *in_w;   /* per row: in the working set */
+    double *lambda;        /* per row: reaction, N */
+    size_t *order;         /* KKT unknowns: element (< N) or N + row */
+    size_t *pos;           /* per row: its KKT position (rows in the working set) */
+    double *band, *rhs;
+    /* per KKT unknown: the first column of its row's envelope (the first nonzero of the
+     * system's row), and the last row whose envelope reaches its column */
+    size_t *env_first, *env_last;
+    size_t n_kkt, bw;
+    /* with at most TIRENV_SPRINGS__SCHUR_MAX working rows between elements, the system is
+     * solved by the tridiagonal K_FF and the rows' Schur complement (springs_schur.c):
+     * per element the Thomas pivots and multipliers, scratch, the rows' columns of
+     * K_FF^-1 G^T (N + 2 each); S's LDL^T factors; the rows' KKT positions */
+    int use_schur;
+    size_t n_schur, schur_pos[TIRENV_SPRINGS__SCHUR_MAX];
+    size_t chain_lo[TIRENV_SPRINGS__SCHUR_MAX], chain_hi[TIRENV_SPRINGS__SCHUR_MAX];
+    double *tri_piv, *tri_mul, *tri_x, *tri_y;
+    double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
+    /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
+     * of w, scratch */
+    size_t *pin_row, *sec_first, *sec_count, *wpos;
+    double *pin_h, *w_try, *step, *raise;
+    /* warm start: the vertices of the last solution's active rows, ascending; pinned elements */
+    long *warm_ids;
+    size_t n_warm, cap_warm;
+    unsigned char *warm_pin;
+    size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
+    size_t iterations;     /* of the last solve */
+} tirenv_springs__cc;
+
+int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
+void tirenv_springs__cc_free(tirenv_springs__cc *c);
+void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start */
+/* springs_schur.c: factor the KKT system laid out by the banded path (wpos, order, the
+ * n_schur working rows between elements at schur_pos); 1 if the rows are dependent. Then
+ * solve it for b in the KKT order, in place, as the banded solve does. */
+int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T);
+void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
+                                    const tirenv_springs__cc_tire *T, double b[]);
+
+/* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
+ * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach
+ * the ground): c->rows, their span c->f0..c->f1 (f0 > f1: nothing touches), c->pin_h[e]
+ * (each element's own row's h, 0 if none) and c->pin_row[e]. TIRENV_ENOMEM with diag. */
+int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                            const double d[], tirenv_diag *diag);
+
+/* Whether every row between two elements holds (slack >= -tol, m) at w (over c->f0..c->f1):
+ * then the solution of the elements' own rows alone (section 4.4's LCP with obstacle pin_h)
+ * is the QP's, the rows between elements inactive. */
+int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], double tol);
+
+/* Solves the tip problem on the rows built at (x, z) (for the messages). Writes w over
+ * [f0 - 1, f1 + 1] (free chains carried one element out) and pe[f0..f1] (each element's net
+ * contact reaction, N), obstacle[f0..f1] (pin_h, m). Returns TIRENV_ENOMEM or TIRENV_ENOCONV
+ * (with diag) on failure. */
+int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             double x, double z, double w[], double pe[], double obstacle[],
+                             tirenv_diag *diag);
+
+/* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
+ * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
+ * ray_active(c, i)). */
+int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i);
+void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                              const double w[], const double dd[], double dw[]);
+
 #endif

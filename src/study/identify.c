@@ -11,22 +11,28 @@
 
 enum { MAX_LOADS = 64 };
 
-/* The springs model's load at deflection d (m), c_r = 1 and c_b = beta: its contact length is
- * the chord of the free circle (section 1.3), so the load is one flat solve at that chord. */
+/* The springs model's load at deflection d (m) per unit c_r, with c_b = beta*c_r: its contact
+ * length is the chord of the free circle (section 1.3), so the load is one flat solve at that
+ * chord. The load is proportional to (c_r, c_b) together; the solve runs at c_r = 1e6 N/m per
+ * rad, inside the plausible range (docs/formats.md section 2), and divides by it. */
 static int springs_unit_load(const tirenv_tire *tire, double beta, size_t n, const double d[],
                              double f[], tirenv_diag *diag)
 {
     tirenv_tire t = *tire;
-    t.springs.c_r = 1;
-    t.springs.c_b = beta;
+    const double c_unit = 1e6;
+    t.springs.c_r = c_unit;
+    t.springs.c_b = beta * c_unit;
     tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
     if (!m)
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "no springs model");
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "INTERRADIAL_STIFFNESS",
+                            "no springs model with c_r %g N/m per rad and c_b %g N*rad/m",
+                            c_unit, beta * c_unit);
     const double R0 = t.springs.R0;
     int status = TIRENV_OK;
     for (size_t i = 0; i < n && !status; i++) {
         const double z = R0 - d[i];
         status = tirenv_model_load_for_contact_length(m, 2 * sqrt(R0 * R0 - z * z), &f[i], diag);
+        f[i] /= c_unit;
     }
     tirenv_model_free(m);
     return status;

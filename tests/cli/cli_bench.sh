@@ -18,7 +18,8 @@ need = [\"rigid_cleat_pos_per_s\", \"springs_cleat_pos_per_s\", \"springs_road_p
         \"ring_cleat_pos_per_s\", \"cam_road_pos_per_s\", \"nn_batch_per_s\",
         \"springs_evals_per_pos\", \"springs_over_rigid_cleat\", \"springs_over_rigid_road\",
         \"ring_over_rigid_cleat\", \"springs_road_evals_per_pos\", \"import_ms\",
-        \"ride_springs_x_real\"]
+        \"ride_springs_x_real\", \"springs_road_10mm_pos_per_s\",
+        \"springs_road_1mm_pos_per_s\", \"springs_fine_over_coarse_road\"]
 for k in need:
     v = d[k]
     assert isinstance(v, (int, float)) and not isinstance(v, bool), k
@@ -29,6 +30,8 @@ for k, v in d.items():
 r = d[\"rigid_cleat_pos_per_s\"] / d[\"springs_cleat_pos_per_s\"]
 assert abs(d[\"springs_over_rigid_cleat\"] - r) <= 1e-9 * r
 assert d[\"springs_evals_per_pos\"] >= 1 and d[\"quick\"] == 1
+f = d[\"springs_road_10mm_pos_per_s\"] / d[\"springs_road_1mm_pos_per_s\"]
+assert abs(d[\"springs_fine_over_coarse_road\"] - f) <= 1e-9 * f
 "'
 
 run "$bin" bench --quick

@@ -1,13 +1,14 @@
 #!/bin/sh
 # Ground narrower than the springs model's ray spacing (docs/models.md section 4): a needle
-# must not slip between the rays unseen. The springs model refuses it, naming the position,
-# the feature's width and the spacing, and writes nothing; features the rays resolve, and
-# every model that follows the ground exactly, are unaffected.
+# must not slip between the rays unseen. With CONTACT = 'rays' (the paper's contact) the
+# springs model refuses it, naming the position, the feature's width and the spacing, and
+# writes nothing; with the default continuous contact the tread carries it; features the
+# rays resolve, and every model that follows the ground exactly, are unaffected.
 # Usage: tests/cli/cli_needle.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 
-needle='--cleat 1e-9,0.1 --load 13000'
+needle='--cleat 1e-9,0.1 --load 13000 --set CONTACT=rays'
 
 run "$bin" envelope --model springs $needle -o n.csv
 check "a 1e-9 m x 0.1 m needle: springs refuses it, exit 2" '[ "$rc" -eq 2 ]'
@@ -21,12 +22,12 @@ run "$bin" envelope --model springs $needle --x-from -0.02 --x-to 0.02 --dx 0.00
 check "right over the needle too (h = 0 there before)" \
     '[ "$rc" -eq 2 ] && grep -q "1e-09 m wide" err && no_file n0.csv'
 
-run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 -o p.csv
+run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 --set CONTACT=rays -o p.csv
 check "a 4 mm plate, narrower than the 5.9 mm spacing: refused" \
     '[ "$rc" -eq 2 ] && grep -q "0.004 m wide" err && no_file p.csv'
 
 run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 --set ELEMENT_ANGLE=0.0025 \
-    -o p2.csv
+    --set CONTACT=rays -o p2.csv
 check "the same plate with 0.0025 rad elements (1.7 mm apart): resolved" \
     '[ "$rc" -eq 0 ] && [ "$(rows p2.csv)" -gt 100 ]'
 
@@ -36,6 +37,12 @@ for obstacle in "--cleat 0.01,0.1" "--cleat 0.30,0.10" "--triangle 0.05,0.1" \
     check "springs over $obstacle (resolved, or within a spacing): a curve" \
         '[ "$rc" -eq 0 ] && [ "$(rows w.csv)" -gt 100 ]'
 done
+
+run "$bin" envelope --model springs --cleat 1e-9,0.1 --load 13000 -o c.csv
+check "the continuous tread carries the needle: a curve, its peak within 0.1 m" \
+    '[ "$rc" -eq 0 ] && [ "$(rows c.csv)" -gt 100 ] && awk -v p="$(peak_h c.csv)" "BEGIN { exit !(p > 0.05 && p <= 0.1) }"'
+run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 -o c2.csv
+check "and the 4 mm plate" '[ "$rc" -eq 0 ] && [ "$(rows c2.csv)" -gt 100 ]'
 
 run "$bin" envelope --model rigid $needle -o r.csv
 check "the rigid disc follows the needle exactly: peak h 0.1 m" \

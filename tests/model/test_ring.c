@@ -194,6 +194,7 @@ static void test_reduces_to_springs(void **state)
     t.springs.c_r = t.ring.k_f * (t.springs.R0 - t.ring.t_r);
     t.springs.c_b = 0;
     t.springs.dphi = t.ring.dtheta;
+    t.springs.contact = TIRENV_SPRINGS_RAYS; /* the ring's tread casts the same rays */
     tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, &t);
     tirenv_model *springs = tirenv_model_alloc(tirenv_model_springs, &t);
     tirenv_profile *p = tirenv_profile_cleat(0.1, 0.1);

@@ -25,6 +25,12 @@ static int setup(void **state)
     tirenv_tire t = tirenv_tire_default();
     tirenv_diag diag;
     assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/default.tir", &t, &diag), 0);
+    /* The springs model fitted to the data set's curves (tirenv_test_tire_before_identify),
+     * whose curve shape the tolerances of test_sparse_at_cap were derived on; the file's own
+     * are identified on the ring's flat ground and make a sharper curve at 0.28 m. */
+    const tirenv_tire fitted = tirenv_test_tire_before_identify();
+    t.springs.c_r = fitted.springs.c_r;
+    t.springs.c_b = fitted.springs.c_b;
     c->m = tirenv_model_alloc(tirenv_model_springs, &t);
     c->cleat = tirenv_profile_cleat(0.10, 0.10);
     double load;

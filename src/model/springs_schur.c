@@ -1,0 +1,165 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The KKT systems of the springs model's continuous contact (docs/models.md section 4.8) when
+ * few rows between elements are working: the free elements' stiffness K_FF is tridiagonal
+ * (the held elements split it into chains), so it is factorised by the Thomas algorithm and
+ * the working rows G between elements enter through their Schur complement S = G K_FF^-1 G^T,
+ * a k x k matrix for k rows (k <= TIRENV_SPRINGS__SCHUR_MAX, usually 1). O(n k) for n free
+ * elements, against the banded LDL^T's O(n bw^2) with its index work. */
+#include "model/springs_impl.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* The stiffness of free element e on [f0, f1]: K's diagonal with the free chains beyond the
+ * span folded in at its ends (the same as the banded system's). */
+static double k_diag(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, size_t e)
+{
+    double k_ee = T->diag[e];
+    if (e == c->f0 && c->f0 > 0)
+        k_ee -= T->k_ir * T->lq[c->f0 - 1];
+    if (e == c->f1 && c->f1 + 1 < T->N)
+        k_ee -= T->k_ir * T->rq[c->f1 + 1];
+    return k_ee;
+}
+
+/* Whether free element e is coupled to free element e - 1 (both free, e - 1 in the span). */
+static int coupled(const tirenv_springs__cc *c, size_t e)
+{
+    return e > c->f0 && c->wpos[e - 1] != SIZE_MAX;
+}
+
+/* x := K_FF^-1 x on the free elements of [f0, f1] (x indexed by element), which are whole
+ * chains between held elements: K_FF does not couple across a held element. */
+static void tri_solve(const tirenv_springs__cc *c, double x[], size_t f0, size_t f1)
+{
+    const double *piv = c->tri_piv, *mul = c->tri_mul;
+    for (size_t e = f0; e <= f1; ++e)
+        if (c->wpos[e] != SIZE_MAX && coupled(c, e))
+            x[e] -= mul[e] * x[e - 1];
+    for (size_t e = f1 + 1; e-- > f0;) {
+        if (c->wpos[e] == SIZE_MAX)
+            continue;
+        double v = x[e] / piv[e];
+        if (e < f1 && c->wpos[e + 1] != SIZE_MAX) /* e + 1 of the same chain */
+            v -= mul[e + 1] * x[e + 1];
+        x[e] = v;
+    }
+}
+
+/* g_r . x over the row's free elements within [lo, hi] (x is zero outside). */
+static double row_dot(const tirenv_springs__cc *c, const tirenv_springs__cc_row *r,
+                      const double x[], size_t lo, size_t hi)
+{
+    double s = 0;
+    if (c->wpos[r->i] != SIZE_MAX && lo <= r->i && r->i <= hi)
+        s += r->ga * x[r->i];
+    if (r->t > 0 && c->wpos[r->j] != SIZE_MAX && lo <= r->j && r->j <= hi)
+        s += r->gb * x[r->j];
+    return s;
+}
+
+int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const double k_ir = T->k_ir, k_max = T->k_r + 2 * T->k_ir;
+    double *piv = c->tri_piv, *mul = c->tri_mul;
+    for (size_t e = f0; e <= f1; ++e) {
+        if (c->wpos[e] == SIZE_MAX)
+            continue;
+        double d = k_diag(c, T, e);
+        if (coupled(c, e)) {
+            mul[e] = -k_ir / piv[e - 1];
+            d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
+        }
+        if (!(d > 0))
+            return 1;
+        piv[e] = d;
+    }
+    /* The working rows' columns of K_FF^-1 G^T, then S = G K_FF^-1 G^T by LDL^T. */
+    for (size_t q = 0; q < k; ++q) {
+        const tirenv_springs__cc_row *r = &c->rows[c->order[c->schur_pos[q]] - N];
+        double *y = c->tri_y + q * (N + 2);
+        /* K_FF^-1 g_r is nonzero on the chain of free elements holding the row's only */
+        size_t lo = c->wpos[r->i] != SIZE_MAX ? r->i : r->j, hi = lo;
+        if (c->wpos[lo] == SIZE_MAX) { /* on held elements only: dependent on their rows */
+            c->chain_lo[q] = 1;
+            c->chain_hi[q] = 0;
+            continue;
+        }
+        while (lo > f0 && c->wpos[lo - 1] != SIZE_MAX)
+            --lo;
+        while (hi < f1 && c->wpos[hi + 1] != SIZE_MAX)
+            ++hi;
+        c->chain_lo[q] = lo;
+        c->chain_hi[q] = hi;
+        for (size_t e = lo; e <= hi; ++e)
+            y[e] = 0;
+        if (c->wpos[r->i] != SIZE_MAX)
+            y[r->i] = r->ga;
+        if (r->t > 0 && c->wpos[r->j] != SIZE_MAX)
+            y[r->j] = r->gb;
+        tri_solve(c, y, lo, hi);
+    }
+    double *S = c->schur;
+    for (size_t p = 0; p < k; ++p) {
+        const tirenv_springs__cc_row *r = &c->rows[c->order[c->schur_pos[p]] - N];
+        for (size_t q = 0; q <= p; ++q)
+            S[p * TIRENV_SPRINGS__SCHUR_MAX + q] =
+                row_dot(c, r, c->tri_y + q * (N + 2), c->chain_lo[q], c->chain_hi[q]);
+    }
+    /* S = L D L^T in place (unit L below the diagonal, D on it); S is positive definite when
+     * the rows are independent: a pivot at round-off level shows them dependent, as the
+     * banded factorisation's row pivot does. */
+#define S_AT(p, q) S[(p) * TIRENV_SPRINGS__SCHUR_MAX + (q)]
+    for (size_t p = 0; p < k; ++p) {
+        for (size_t q = 0; q <= p; ++q) {
+            double s = S_AT(p, q);
+            for (size_t m = 0; m < q; ++m)
+                s -= S_AT(p, m) * S_AT(q, m) * S_AT(m, m);
+            if (q < p)
+                S_AT(p, q) = s / S_AT(q, q);
+            else
+                S_AT(p, p) = s;
+        }
+        if (!(S_AT(p, p) > 1e-14 / k_max))
+            return 1;
+    }
+    return 0;
+}
+
+void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
+                                    const tirenv_springs__cc_tire *T, double b[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const double *S = c->schur;
+    double *x = c->tri_x, lam[TIRENV_SPRINGS__SCHUR_MAX];
+    /* K w = b_w + G^T lambda, G w = b_r: w = w0 + K^-1 G^T lambda with w0 = K^-1 b_w, and
+     * S lambda = b_r - G w0. */
+    for (size_t e = f0; e <= f1; ++e)
+        if (c->wpos[e] != SIZE_MAX)
+            x[e] = b[c->wpos[e]];
+    tri_solve(c, x, f0, f1);
+    for (size_t p = 0; p < k; ++p) {
+        const size_t pos = c->schur_pos[p];
+        lam[p] = b[pos] - row_dot(c, &c->rows[c->order[pos] - N], x, f0, f1);
+    }
+    for (size_t p = 0; p < k; ++p)
+        for (size_t m = 0; m < p; ++m)
+            lam[p] -= S_AT(p, m) * lam[m];
+    for (size_t p = 0; p < k; ++p)
+        lam[p] /= S_AT(p, p);
+    for (size_t p = k; p-- > 0;)
+        for (size_t m = p + 1; m < k; ++m)
+            lam[p] -= S_AT(m, p) * lam[m];
+#undef S_AT
+    for (size_t q = 0; q < k; ++q) {
+        const double *y = c->tri_y + q * (N + 2);
+        for (size_t e = c->chain_lo[q]; e <= c->chain_hi[q]; ++e)
+            x[e] += lam[q] * y[e];
+    }
+    for (size_t e = f0; e <= f1; ++e)
+        if (c->wpos[e] != SIZE_MAX)
+            b[c->wpos[e]] = x[e];
+    for (size_t p = 0; p < k; ++p)
+        b[c->schur_pos[p]] = -lam[p]; /* the symmetric form's unknown, -lambda */
+}

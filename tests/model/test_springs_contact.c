@@ -1,0 +1,462 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The springs model's continuous contact (docs/models.md section 4.3): h continuous in x at
+ * every vertex of seeded random obstacles, the QP's optimality conditions to round-off,
+ * every ground vertex outside the tread, narrow features carried, dF_z/dz against finite
+ * differences over roads, and results that do not depend on the warm start. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testutil.h"
+#include "model/springs_impl.h"
+#include "tirenv/tirenv.h"
+
+/* splitmix64: a seeded generator of the tests' own (no library needed). */
+static uint64_t rng_state;
+static double uniform(void)
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+
+/* A random obstacle of the kinds the issue names: cleat, step (up or down), blade (a cleat
+ * a few mm wide), trapezoid, triangle. */
+static tirenv_profile *random_obstacle(int kind)
+{
+    switch (kind % 5) {
+    case 0:
+        return tirenv_profile_cleat(0.02 + 0.4 * uniform(), 0.01 + 0.11 * uniform());
+    case 1:
+        return tirenv_profile_step(0.0, (uniform() < 0.5 ? -1 : 1) * (0.01 + 0.1 * uniform()));
+    case 2:
+        return tirenv_profile_cleat(0.001 + 0.004 * uniform(), 0.02 + 0.1 * uniform());
+    case 3: {
+        const double top = 0.05 + 0.2 * uniform();
+        return tirenv_profile_trapezoid(top, top + 0.02 + 0.2 * uniform(),
+                                        0.02 + 0.08 * uniform());
+    }
+    default:
+        return tirenv_profile_triangle(0.05 + 0.3 * uniform(), 0.02 + 0.08 * uniform());
+    }
+}
+
+/* A road: n vertices dx apart, a random walk of slopes (rough like an ISO class C-D road at
+ * that spacing), plus a few spikes. */
+static tirenv_profile *random_road(size_t n, double dx, int spikes)
+{
+    double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
+    double level = 0, slope = 0;
+    for (size_t k = 0; k < n; ++k) {
+        x[k] = -0.5 * (double)n * dx + (double)k * dx;
+        slope = 0.97 * slope + 0.02 * (uniform() - 0.5);
+        level += slope * dx;
+        z[k] = level;
+    }
+    for (int s = 0; s < spikes; ++s) {
+        const size_t k = 1 + (size_t)(uniform() * (double)(n - 2));
+        z[k] += 0.005 + 0.03 * uniform();
+    }
+    tirenv_profile *p = tirenv_profile_alloc(n, x, z);
+    free(x);
+    free(z);
+    return p;
+}
+
+static tirenv_tire continuous_tire(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.springs.contact = TIRENV_SPRINGS_CONTINUOUS;
+    return t;
+}
+
+/* The issue's target: |h(x) - h(x +- 1e-12 m)| <= 1e-6 m at every edge. At every vertex X
+ * of 40 seeded random obstacles, with the centre exactly over it and 1e-12 m either side,
+ * at 13 kN; and at the issue's two positions, where rays jumped by 6.8 and 0.95 mm. */
+static void test_continuous_at_vertices(void **state)
+{
+    (void)state;
+    rng_state = 20261205;
+    const tirenv_tire t = continuous_tire();
+    size_t checked = 0;
+    double worst = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        tirenv_profile *p = random_obstacle(trial);
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+        tirenv_diag diag;
+        assert_int_equal(tirenv_model_set(m, p, 13000, &diag), TIRENV_OK);
+        const size_t n = tirenv_profile_size(p);
+        const double *X = tirenv_profile_x(p);
+        for (size_t k = 0; k < n; ++k) {
+            tirenv_point a, b, c;
+            assert_int_equal(tirenv_model_eval(m, X[k], &a, &diag), TIRENV_OK);
+            assert_int_equal(tirenv_model_eval(m, X[k] - 1e-12, &b, &diag), TIRENV_OK);
+            assert_int_equal(tirenv_model_eval(m, X[k] + 1e-12, &c, &diag), TIRENV_OK);
+            worst = fmax(worst, fmax(fabs(a.h - b.h), fabs(a.h - c.h)));
+            assert_near(a.h, b.h, 1e-6, 0);
+            assert_near(a.h, c.h, 1e-6, 0);
+            ++checked;
+        }
+        tirenv_model_free(m);
+        tirenv_profile_free(p);
+    }
+    const double L[] = {0.30, 0.10}, H[] = {0.08, 0.10};
+    const double x[2][2] = {{-0.15000000000000002, -0.15}, {-0.0500000000000001, -0.05}};
+    for (int k = 0; k < 2; ++k) {
+        tirenv_profile *p = tirenv_profile_cleat(L[k], H[k]);
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+        tirenv_diag diag;
+        tirenv_point a, b;
+        assert_int_equal(tirenv_model_set(m, p, 13000, &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_eval(m, x[k][0], &a, &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_eval(m, x[k][1], &b, &diag), TIRENV_OK);
+        assert_near(a.h, b.h, 1e-6, 0);
+        tirenv_model_free(m);
+        tirenv_profile_free(p);
+    }
+    print_message("%zu vertices: largest |h(X) - h(X +- 1e-12)| %.3g m\n", checked, worst);
+    assert_true(checked > 100);
+}
+
+/* The largest |h(b) - h(a)| left when [a, b] is bisected down to 1e-12 m, following the half
+ * with the larger change: a jump survives, a continuous curve leaves ~slope * 1e-12. */
+static double bisect_jump(tirenv_model *m, double a, double b, double ha, double hb)
+{
+    tirenv_diag diag;
+    while (b - a > 1e-12) {
+        const double c = 0.5 * (a + b);
+        if (c <= a || c >= b)
+            break;
+        tirenv_point pt;
+        assert_int_equal(tirenv_model_eval(m, c, &pt, &diag), TIRENV_OK);
+        if (fabs(pt.h - ha) > fabs(hb - pt.h)) {
+            b = c;
+            hb = pt.h;
+        } else {
+            a = c;
+            ha = pt.h;
+        }
+    }
+    return fabs(hb - ha);
+}
+
+/* Sweeps of 0.5 mm over seeded random obstacles and roads: wherever h moves faster than a
+ * slope of 0.4 between neighbours, the interval is bisected to 1e-12 m and what is left must be
+ * under 1e-6 m. With rays the same search finds the issue's jump on the 0.30 x 0.08 cleat
+ * (the guard: the search does find jumps). */
+static size_t largest_jump(const tirenv_tire *t, const tirenv_profile *p, double x0,
+                           double x1, double *worst)
+{
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, t);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(m, p, 13000, &diag), TIRENV_OK);
+    tirenv_point prev, pt;
+    assert_int_equal(tirenv_model_eval(m, x0, &prev, &diag), TIRENV_OK);
+    size_t searched = 0;
+    *worst = 0;
+    for (double x = x0 + 5e-4; x <= x1; x += 5e-4) {
+        assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
+        if (fabs(pt.h - prev.h) > 0.4 * 5e-4) {
+            *worst = fmax(*worst, bisect_jump(m, x - 5e-4, x, prev.h, pt.h));
+            ++searched;
+            assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
+        }
+        prev = pt;
+    }
+    tirenv_model_free(m);
+    return searched;
+}
+
+static void test_no_jumps_in_sweeps(void **state)
+{
+    (void)state;
+    rng_state = 31337;
+    tirenv_tire t = continuous_tire();
+    size_t searched = 0;
+    double worst_all = 0, worst;
+    for (int trial = 0; trial < 8; ++trial) {
+        tirenv_profile *p = trial < 5 ? random_obstacle(trial) : random_road(1500, 0.001, 2);
+        searched += largest_jump(&t, p, -0.45, 0.45, &worst);
+        worst_all = fmax(worst_all, worst);
+        assert_true(worst <= 1e-6);
+        tirenv_profile_free(p);
+    }
+    print_message("continuous: %zu fast intervals bisected, largest change left %.3g m\n",
+                  searched, worst_all);
+    tirenv_profile *cleat = tirenv_profile_cleat(0.30, 0.08);
+    t.springs.contact = TIRENV_SPRINGS_RAYS;
+    largest_jump(&t, cleat, -0.2, -0.1, &worst);
+    print_message("rays over the 0.30 x 0.08 cleat: a jump of %.3g m\n", worst);
+    assert_true(worst > 1e-4);
+    tirenv_profile_free(cleat);
+}
+
+/* The rows' problem at a state, checked from outside the solver: the KKT conditions of
+ * min 1/2 w^T K w subject to the rows (primal and dual feasibility, complementarity,
+ * stationarity over the whole tire with the free chains), and, independently of how the
+ * rows were built, every ground vertex under the segment outside the tread (the tread at the
+ * vertex's angle computed here from w and the weights). */
+typedef struct {
+    size_t N;
+    double *diag, *lq, *rq, *L_D, *R_D, *d, *w, *pe, *ob, *Kw;
+    tirenv_springs__cc_tire T;
+    double *theta, *sin_t, *cos_t;
+} tire_setup;
+
+static void setup_tire(tire_setup *S, const tirenv_springs_params *par)
+{
+    const size_t i0 = (size_t)floor(0.5 * par->phi / par->dphi * (1 + 1e-12));
+    const size_t N = 2 * i0 + 1;
+    S->N = N;
+    double **arrays[] = {&S->diag, &S->lq, &S->rq, &S->L_D, &S->R_D, &S->d, &S->pe,
+                         &S->ob, &S->Kw, &S->theta, &S->sin_t, &S->cos_t};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
+        *arrays[k] = calloc(N, sizeof(double));
+    S->w = calloc(N + 2, sizeof(double));
+    const double k_r = par->c_r * par->dphi, k_ir = par->c_b / par->dphi;
+    for (size_t i = 0; i < N; ++i) {
+        S->theta[i] = ((double)i - (double)i0) * par->dphi;
+        S->sin_t[i] = sin(S->theta[i]);
+        S->cos_t[i] = cos(S->theta[i]);
+        S->diag[i] = k_r + (double)((i > 0) + (i + 1 < N)) * k_ir;
+    }
+    for (size_t j = 0; j < N; ++j) {
+        S->L_D[j] = j == 0 ? S->diag[0] : S->diag[j] - k_ir * k_ir / S->L_D[j - 1];
+        S->lq[j] = k_ir / S->L_D[j];
+    }
+    for (size_t j = N; j-- > 0;) {
+        S->R_D[j] = j == N - 1 ? S->diag[j] : S->diag[j] - k_ir * k_ir / S->R_D[j + 1];
+        S->rq[j] = k_ir / S->R_D[j];
+    }
+    S->T = (tirenv_springs__cc_tire){.N = N, .i0 = i0, .R0 = par->R0, .k_r = k_r,
+                                     .k_ir = k_ir, .sin_t = S->sin_t, .cos_t = S->cos_t, .diag = S->diag,
+                                     .lq = S->lq, .rq = S->rq};
+    tirenv_springs__cc_tire_shape(&S->T);
+}
+
+static void free_tire(tire_setup *S)
+{
+    double *arrays[] = {S->diag, S->lq, S->rq, S->L_D, S->R_D, S->d, S->pe,
+                        S->ob, S->Kw, S->theta, S->sin_t, S->cos_t, S->w};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; ++k)
+        free(arrays[k]);
+}
+
+static void test_kkt_conditions(void **state)
+{
+    (void)state;
+    rng_state = 777;
+    size_t states = 0, active_rows = 0, coupled = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        tirenv_springs_params par = continuous_tire().springs;
+        par.c_b *= pow(10, -2 + 4 * uniform());
+        par.dphi = M_PI / (90 + floor(600 * uniform()));
+        tire_setup S;
+        setup_tire(&S, &par);
+        const size_t N = S.N;
+        tirenv_profile *p = trial % 2 ? random_road(200 + (size_t)(2000 * uniform()),
+                                                    0.0005 + 0.01 * uniform(), trial % 3)
+                                      : random_obstacle(trial / 2);
+        const double x = -0.3 + 0.6 * uniform();
+        const double g = tirenv_profile_max_height(p, x - 0.7, x + 0.7);
+        const double z = g + par.R0 - 0.02 - 0.1 * uniform();
+        for (size_t i = 0; i < N; ++i) {
+            double dr;
+            const double rho = tirenv_springs__ray(p, x, z, S.sin_t[i], S.cos_t[i], par.R0, &dr);
+            S.d[i] = rho < par.R0 ? par.R0 - rho : 0;
+        }
+        tirenv_springs__cc c;
+        assert_int_equal(tirenv_springs__cc_init(&c, N), TIRENV_OK);
+        tirenv_diag diag;
+        int st = tirenv_springs__cc_rows(&c, &S.T, p, x, z, 0, N - 1, S.d, &diag);
+        if (!st)
+            st = tirenv_springs__cc_solve(&c, &S.T, x, z, S.w + 1, S.pe, S.ob, &diag);
+        if (st)
+            print_error("%s\n", diag.message);
+        assert_int_equal(st, TIRENV_OK);
+        ++states;
+        double *w = S.w + 1;
+        if (c.f0 <= c.f1) {
+            /* The whole tire: the free chains carried out to both ends. */
+            for (size_t j = c.f0; j-- > 0;)
+                w[j] = S.lq[j] * w[j + 1];
+            for (size_t j = c.f1 + 1; j < N; ++j)
+                w[j] = S.rq[j] * w[j - 1];
+            double w_max = 0, l_max = 0;
+            for (size_t i = 0; i < N; ++i)
+                w_max = fmax(w_max, fabs(w[i]));
+            memset(S.Kw, 0, N * sizeof *S.Kw);
+            for (size_t r = 0; r < c.n_rows; ++r) {
+                const tirenv_springs__cc_row *R = &c.rows[r];
+                const double s = R->ga * w[R->i] + (R->t > 0 ? R->gb * w[R->j] : 0) - R->h;
+                const double lam = c.lambda[r];
+                l_max = fmax(l_max, lam);
+                assert_true(s >= -1e-12 * par.R0);           /* primal feasibility */
+                assert_true(lam >= 0);                        /* dual feasibility */
+                assert_true(lam * s <= 1e-12 * par.R0 * (lam + 1)); /* complementarity */
+                if (lam > 0) {
+                    ++active_rows;
+                    coupled += R->t > 0;
+                }
+                S.Kw[R->i] += R->ga * lam;
+                if (R->t > 0)
+                    S.Kw[R->j] += R->gb * lam;
+            }
+            /* Stationarity: K w = G^T lambda over all N elements. */
+            for (size_t i = 0; i < N; ++i) {
+                const double Kw = S.diag[i] * w[i] - S.T.k_ir * ((i > 0 ? w[i - 1] : 0) +
+                                                                 (i + 1 < N ? w[i + 1] : 0));
+                assert_near(Kw, S.Kw[i], 1e-9 * (l_max + S.diag[i] * w_max) + 1e-9, 0);
+            }
+        } else {
+            for (size_t i = 0; i < N; ++i)
+                w[i] = 0;
+        }
+        /* Every vertex below the centre within R0 and inside the segment: outside the tread,
+         * R0 - (a w_i + b w_(i+1)) at its angle (a, b the weights at its chord parameter). */
+        const double *X = tirenv_profile_x(p), *Z = tirenv_profile_z(p);
+        for (size_t k = 0; k < tirenv_profile_size(p); ++k) {
+            const double dx = X[k] - x, dz = z - Z[k], rho = hypot(dx, dz);
+            if (!(dz > 0) || !(rho < par.R0))
+                continue;
+            const double psi = atan2(dx, dz);
+            const double u = psi / par.dphi + (double)S.T.i0;
+            if (u < 0 || u > (double)(N - 1))
+                continue;
+            size_t i = (size_t)floor(u);
+            if (i == N - 1)
+                i = N - 2;
+            const double s_i = sin(psi - S.theta[i]), s_n = sin(S.theta[i + 1] - psi);
+            const double t = s_i / (s_i + s_n);
+            double a, b, da, db;
+            tirenv_springs__cc_weights(&S.T, t, &a, &b, &da, &db);
+            const double tread = a * w[i] + b * w[i + 1];
+            /* 1e-8 m: the snap of t near an element (t_snap |w_(i+1) - w_i|). */
+            assert_true(tread >= par.R0 - rho - 1e-8);
+        }
+        /* The model's forces, which solve the elements' own rows first and the QP only if a
+         * row between elements fails there: the QP's, to round-off. */
+        double Fz = 0, Fx = 0, fx, fz;
+        for (size_t i = 0; i < N; ++i) {
+            Fz += S.T.k_r * w[i] * S.cos_t[i];
+            Fx -= S.T.k_r * w[i] * S.sin_t[i];
+        }
+        tirenv_springs *model = tirenv_springs_alloc(&par);
+        assert_int_equal(tirenv_springs_forces(model, p, x, z, &fx, &fz, NULL, NULL, NULL), 0);
+        assert_near(fz, Fz, 1e-9 * fabs(Fz) + 1e-6, 0);
+        assert_near(fx, Fx, 1e-9 * fabs(Fz) + 1e-6, 0);
+        tirenv_springs_free(model);
+        tirenv_springs__cc_free(&c);
+        tirenv_profile_free(p);
+        free_tire(&S);
+    }
+    print_message("%zu states, %zu active rows, %zu of them between two elements\n", states,
+                  active_rows, coupled);
+    assert_true(coupled > 100); /* the guard: coupled rows really were exercised */
+}
+
+/* A needle and a 4 mm plate, which rays refuse (they slip between them), are carried by the
+ * tread: h > 0 over them and never above the rigid disc's, which follows them exactly. */
+static void test_narrow_features_carried(void **state)
+{
+    (void)state;
+    const tirenv_tire t = continuous_tire();
+    const double widths[] = {1e-9, 0.004};
+    for (int k = 0; k < 2; ++k) {
+        tirenv_profile *p = tirenv_profile_cleat(widths[k], 0.1);
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
+        tirenv_diag diag;
+        assert_int_equal(tirenv_model_set(m, p, 13000, &diag), TIRENV_OK);
+        for (double x = -0.3; x <= 0.3; x += 0.0037) {
+            tirenv_point pt;
+            assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
+            const double rigid = tirenv_rigid_height(p, t.springs.R0, x, NULL, NULL);
+            assert_true(pt.z <= rigid);
+            if (fabs(x) < 0.1)
+                assert_true(pt.h > 0.03);
+        }
+        tirenv_model_free(m);
+        tirenv_profile_free(p);
+    }
+}
+
+/* dF_z/dz is exact on the piece (active set fixed) with rows whose weights move with z:
+ * against a central difference over random roads, where one-sided differences agree (a kink
+ * inside [z - h, z + h] is skipped). */
+static void test_derivative_on_roads(void **state)
+{
+    (void)state;
+    rng_state = 4242;
+    const tirenv_tire t = continuous_tire();
+    size_t checked = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+        tirenv_profile *p = random_road(2000, 0.001, trial % 4);
+        tirenv_springs *s = tirenv_springs_alloc(&t.springs);
+        for (int k = 0; k < 20; ++k) {
+            const double x = -0.3 + 0.6 * uniform();
+            const double z = tirenv_profile_height(p, x) + 0.6 + 0.07 * uniform();
+            double fx, F, dF, Fp, Fm, F0;
+            assert_int_equal(tirenv_springs_forces(s, p, x, z, &fx, &F, &dF, NULL, NULL), 0);
+            if (F < 10)
+                continue;
+            const double h = 1e-7;
+            assert_int_equal(tirenv_springs_forces(s, p, x, z + h, &fx, &Fp, NULL, NULL, NULL), 0);
+            assert_int_equal(tirenv_springs_forces(s, p, x, z - h, &fx, &Fm, NULL, NULL, NULL), 0);
+            assert_int_equal(tirenv_springs_forces(s, p, x, z, &fx, &F0, NULL, NULL, NULL), 0);
+            assert_true(dF <= 0);
+            assert_true(Fp <= F0 && F0 <= Fm);
+            const double fwd = (Fp - F0) / h, bwd = (F0 - Fm) / h;
+            if (fabs(fwd - bwd) > 1e-6 * fabs(dF))
+                continue;
+            /* truncation ~ h^2 F''' and round-off ~ 1e-16 F / h: far below 1e-6 relative */
+            assert_near(dF, (Fp - Fm) / (2 * h), 1e-6 * fabs(dF), 0);
+            ++checked;
+        }
+        tirenv_springs_free(s);
+        tirenv_profile_free(p);
+    }
+    print_message("%zu derivatives checked\n", checked);
+    assert_true(checked > 300);
+}
+
+/* The result depends on the final active set only, not on the warm start: a sweep's every
+ * position evaluated again by a fresh model gives the same bits. */
+static void test_warm_start_invisible(void **state)
+{
+    (void)state;
+    rng_state = 99;
+    const tirenv_tire t = continuous_tire();
+    tirenv_profile *p = random_road(3000, 0.001, 3);
+    tirenv_model *warm = tirenv_model_alloc(tirenv_model_springs, &t);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(warm, p, 15000, &diag), TIRENV_OK);
+    for (double x = -0.4; x <= 0.4; x += 0.0231) {
+        tirenv_point a, b;
+        assert_int_equal(tirenv_model_eval(warm, x, &a, &diag), TIRENV_OK);
+        tirenv_springs *cold = tirenv_springs_alloc(&t.springs);
+        double fx, fz, dfz;
+        assert_int_equal(tirenv_springs_forces(cold, p, x, a.z, &fx, &fz, &dfz, NULL, NULL), 0);
+        b.fx = fx;
+        b.fz = fz;
+        assert_memory_equal(&a.fz, &b.fz, sizeof a.fz);
+        assert_memory_equal(&a.fx, &b.fx, sizeof a.fx);
+        tirenv_springs_free(cold);
+    }
+    tirenv_model_free(warm);
+    tirenv_profile_free(p);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_continuous_at_vertices),
+        cmocka_unit_test(test_no_jumps_in_sweeps),
+        cmocka_unit_test(test_kkt_conditions),
+        cmocka_unit_test(test_narrow_features_carried),
+        cmocka_unit_test(test_derivative_on_roads),
+        cmocka_unit_test(test_warm_start_invisible),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
