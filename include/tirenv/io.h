@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: file formats (the convenience layer): .tir tire property files, profile CSV,
  * and all-or-nothing output files. */
 #ifndef TIRENV_IO_H

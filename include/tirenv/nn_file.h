@@ -1,6 +1,6 @@
 /* tirenv: the empirical model's file (docs/formats.md): a network (nn.h) and how it was trained
  * (train.h), as JSON. A file format, so it belongs to the auxiliary layer (src/data/nn_json.c),
- * not to the network or its trainers. SPDX-License-Identifier: GPL-3.0-or-later */
+ * not to the network or its trainers. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_NN_FILE_H
 #define TIRENV_NN_FILE_H
 

@@ -1,5 +1,5 @@
 /* The road's local level along a sweep for the commands that write h (--relative-to ground).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

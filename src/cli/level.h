@@ -1,6 +1,6 @@
 /* Private to the commands that write h: the road's local level (tirenv_profile_level,
  * docs/models.md section 2.6) along a sweep, over a whole profile or one read as it goes.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_LEVEL_H
 #define TIRENV_CLI_LEVEL_H
 

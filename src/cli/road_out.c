@@ -3,7 +3,7 @@
  * sections (the same h at v_track -+ w/2) carry the effective height across the tire's width, written row by row as the sweep goes;
  * or a TNO/Adams poly_line road (x, z_left = z_right = h), written at the end from the heights
  * kept (16 bytes a position). Heights are h as the curve's h_m column has it.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

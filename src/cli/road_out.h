@@ -1,6 +1,6 @@
 /* Private to the commands that write an effective road (tirenv envelope -o X.crg|X.rdf): the
  * hub's effective height h along x as a road file that a point-contact tire in another tool
- * can drive on. SPDX-License-Identifier: GPL-3.0-or-later */
+ * can drive on. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_ROAD_OUT_H
 #define TIRENV_CLI_ROAD_OUT_H
 
