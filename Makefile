@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # tirenv: the two commands of the README, and a few more. CMake does the real work.
 BUILD      ?= build
 ASAN_BUILD ?= build-asan

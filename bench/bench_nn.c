@@ -12,7 +12,7 @@
  * least 0.2 s each over 4096 samples spread over the training ranges (a working set that stays
  * in cache, as a simulation calling the model at one wheel would). Training is timed once per
  * trainer with one restart and the same seed, so the figures compare algorithms, not luck.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <errno.h>
 #include <math.h>
 #include <unistd.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The layer boundary of cmake/TirenvLayers.cmake, checked twice: by the #include lines of the
 # sources, and by the symbols the compiled objects define and use (what the includes cannot
 # see: a function called without its header, a core file calling into the auxiliary layer).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # What 'cmake --install build --prefix P' (and 'make install PREFIX=P') puts where. Every path
 # is relative to the prefix, so an installed tree can be moved as a whole: the CMake package
 # and tirenv.pc locate themselves, the CLI finds its data from its own location.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The two layers of the library, in one place: the build globs its sources from these
 # directories and the 'layers' test (cmake/CheckLayers.cmake) checks the boundary by them.
 #

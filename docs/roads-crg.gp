@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The effective road of a tire over one track of an OpenCRG road against the raw track
 # (README, "Roads from other tools"). Data: roads-crg.dat in this directory, written by
 # scripts/roads-crg.sh (block 0: the raw track; block 1: h of each model). Draw by hand from

@@ -1,6 +1,6 @@
 /* modelDescription.xml of the FMU, written from the table the binary serves (variables.c):
  * FMI 2.0 section 2.2 (the model description schema) and 4.3 (co-simulation capabilities).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <string.h>
 

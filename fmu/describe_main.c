@@ -1,5 +1,5 @@
 /* Writes the FMU's modelDescription.xml to the file named by its argument (build step of
- * fmu/CMakeLists.txt). SPDX-License-Identifier: GPL-3.0-or-later */
+ * fmu/CMakeLists.txt). SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 
 #include "fmu_impl.h"

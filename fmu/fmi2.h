@@ -3,7 +3,7 @@
  * Co-Simulation, version 2.0: section 2.1.2 platform types, 2.1.3 status, 2.1.4 to 2.1.9 the
  * common functions, 4.2 the co-simulation functions). The FMU is compiled with the standard's
  * default platform types; names, argument orders and types follow the standard's text.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_FMI2_H
 #define TIRENV_FMI2_H
 

@@ -2,7 +2,7 @@
  * step the outputs are the model's equilibrium at the input position x and load, warm-started
  * from the previous step, exactly as 'tirenv envelope' sweeps positions at one load.
  * A load that changes moves the model to it (tirenv_model_set_load: the work within the tire's
- * reach, not the road's); the FMU state is in fmu_state.c. SPDX-License-Identifier: GPL-3.0-or-later */
+ * reach, not the road's); the FMU state is in fmu_state.c. SPDX-License-Identifier: Apache-2.0 */
 #include <ctype.h>
 #include <math.h>
 #include <stdarg.h>

@@ -1,7 +1,7 @@
 /* tirenv's FMI 2.0 co-simulation FMU: the effective road of a tire at a wheel-centre position
  * and load (fmu/README.md). What fmu.c, fmu_state.c, variables.c and describe.c share: the
  * instance, and the table of variables from which both the binary and its
- * modelDescription.xml are made. SPDX-License-Identifier: GPL-3.0-or-later */
+ * modelDescription.xml are made. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_FMU_IMPL_H
 #define TIRENV_FMU_IMPL_H
 

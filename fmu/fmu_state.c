@@ -7,7 +7,7 @@
  * Reference FMUs do: an instance that was only instantiated continues the run the state was
  * taken from. A state is not trusted: every field is checked before any is used
  * (state_check), whether it comes from fmi2GetFMUstate or from bytes.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>

@@ -2,7 +2,7 @@
  * describe.c writes modelDescription.xml, so the two cannot disagree. Value references are
  * unique over all types. Names follow Project Chrono's tire FMU where it takes the road from
  * a terrain: terrain_height and terrain_normal.x/.y/.z (fmu/README.md).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>

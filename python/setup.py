@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # pip install --no-build-isolation ./python, against an installed libtirenv (python/README.md).
 from setuptools import setup
 

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The C side of the tirenv Python module: cffi in API mode, compiled against tirenv's public
 headers and linked with libtirenv.so.
 

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian packages tirenv needs to build, test and draw its plots. Idempotent:
 # does nothing when they are present. As root it runs apt-get; otherwise it prints the line.
 set -eu

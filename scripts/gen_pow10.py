@@ -4,7 +4,7 @@
 # number formatter (src/io/fmt.c) relies on that direction and bound. Exact integer
 # arithmetic (Python's big integers); rerun after changing the range:
 #   python3 scripts/gen_pow10.py > src/io/fmt_pow10.h
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 K_MIN, K_MAX = -330, 350
 
 

@@ -6,7 +6,7 @@
 # by indented lines), a description, then sections headed by a line "name:" whose items are
 # "  TAG   text" lines continued by deeper indented ones. The build runs it (CMakeLists.txt);
 # tests/cli/manpages.sh checks the result with groff.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -eu
 bin=$1 out=$2
 

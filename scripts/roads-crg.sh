@@ -10,7 +10,7 @@
 # OUTDIR/roads-crg.dat (block 0: the raw track, x and z; block 1: x and h of each model, all in
 # m and mm), then runs gnuplot in OUTDIR on docs/roads-crg.gp (kept in the repository beside
 # the .dat it reads; run it by hand from docs/).
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -eu
 bin=$1 road=$2 out=${3:-docs}
 gp=$(cd "$(dirname "$0")/../docs" && pwd)/roads-crg.gp

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """Drives tirenv's FMU as a co-simulation master would, with nothing but Python's standard
 library: a wheel rolling at 10 km/h over the FMU's default road (100 m of ISO 8608 class C)
 with the cam model at 20 kN, one FMI 2.0 step every 10 ms; prints what the wheel follows.

@@ -13,7 +13,7 @@
  *   - wrong value references, a parameter set too late, an unknown model, a missing road
  *     file and a wrong GUID give fmi2Error (or NULL) and a log message saying why.
  * Prints TAP lines; exits 1 if a check fails.
- * usage: fmu_importer FMU CLI        SPDX-License-Identifier: GPL-3.0-or-later */
+ * usage: fmu_importer FMU CLI        SPDX-License-Identifier: Apache-2.0 */
 #include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>

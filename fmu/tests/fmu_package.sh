@@ -3,7 +3,7 @@
 # FMU, modelDescription.xml is well-formed XML (xmllint), and the binary is self-contained
 # (ldd: libc and libm only, no GSL, cminpack, jansson or libtirenv) and exports the fmi2 functions only.
 # In a sanitizer build (second argument 1) the sanitizers' runtimes are allowed besides.
-# usage: fmu_package.sh FMU [SANITIZED]        SPDX-License-Identifier: GPL-3.0-or-later
+# usage: fmu_package.sh FMU [SANITIZED]        SPDX-License-Identifier: Apache-2.0
 set -u
 fmu=$1
 sanitized=${2:-0}

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """A second importer of tirenv's FMU, independent of the C one and of the FMU's sources:
 written from the FMI 2.0 standard's text alone (2.1.2 types, 2.1.5 callbacks, 2.2 the model
 description, 2.3 the archive, 4.2 co-simulation) with Python's zipfile, xml.etree and ctypes.

@@ -1,6 +1,6 @@
 /* tirenv: the tandem elliptical cam, the effective road model of MF-Swift (docs/models.md
  * section 7). The model type is tirenv_model_cam in model.h; these are its geometric parts.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CAM_H
 #define TIRENV_CAM_H
 

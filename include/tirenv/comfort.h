@@ -1,7 +1,7 @@
 /* tirenv: ride comfort by ISO 2631-1:1997 (frequency weightings Wk, Wd, We, the r.m.s., peak,
  * crest factor, VDV, MTVV and the vibration total value) and Welch's PSD estimate for
  * seat-acceleration spectra (docs/models.md section 10).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_COMFORT_H
 #define TIRENV_COMFORT_H
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: ASAM OpenCRG road files (the convenience layer): a road surface on a curved regular
  * grid, read as tracks (profiles along the reference line) and written from profiles.
  * What is read and how a track is evaluated: docs/formats.md section 5. */

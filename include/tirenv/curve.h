@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: measured or simulated enveloping curves, approach half, on an x_N grid
  * (docs/models.md section 1; x_N itself is in xn.h), and their CSV format. */
 #ifndef TIRENV_CURVE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: data sets of enveloping curves: a directory with a manifest cases.csv
  * (case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve). */
 #ifndef TIRENV_DATASET_H

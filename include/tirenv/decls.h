@@ -1,7 +1,7 @@
 /* tirenv: how every public header opens and closes its declarations: C linkage for C++
  * callers, and default symbol visibility, so that a shared library built with
  * -fvisibility=hidden exports exactly what the public headers declare and nothing private.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_DECLS_H
 #define TIRENV_DECLS_H
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: status codes and error details shared by every module. The library holds no
  * process-wide error state and installs no handler: every failure, its own or a numerical
  * one (a root not bracketed, an integrator that cannot keep its tolerance), comes back as a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: enveloping models over a ground profile at constant vertical load (the core API). */
 #ifndef TIRENV_MODEL_H
 #define TIRENV_MODEL_H

@@ -1,7 +1,7 @@
 /* tirenv: the empirical enveloping model, a small fully connected feed-forward network
  * (paper, Tables 1 and 2; docs/models.md section 6). Logistic hidden layers, one identity output.
  * Training is in train.h; the model file (the net and how it was trained) in nn_file.h.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_NN_H
 #define TIRENV_NN_H
 

@@ -1,7 +1,7 @@
 /* tirenv: the empirical model's file (docs/formats.md): a network (nn.h) and how it was trained
  * (train.h), as JSON. A file format, so it belongs to the auxiliary layer (src/formats/nn_json.c
  * and nn_json_write.c), not to the network or its trainers.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_NN_FILE_H
 #define TIRENV_NN_FILE_H
 

@@ -1,6 +1,6 @@
 /* tirenv: the empirical model (nn.h) over any ground profile, by equivalent-cleat
  * decomposition with max-plus superposition (docs/models.md section 12).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * A MODEL CHOICE BEYOND THE PAPER. The network of docs/models.md section 6 was trained on single
  * rectangular cleats on flat ground; the paper says nothing about other profiles. This module

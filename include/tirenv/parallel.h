@@ -3,7 +3,7 @@
  * parallelises (tirenv_dataset_build_settings, tirenv_fit_settings, tirenv_train_settings,
  * tirenv_compare_settings, tirenv_study_settings, tirenv_sweep_settings) has a `jobs` field
  * whose default is 1, which runs everything on the caller's thread as before.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_PARALLEL_H
 #define TIRENV_PARALLEL_H
 

@@ -1,7 +1,7 @@
 /* tirenv: what every tirenv plot shares (the comparison figures of the study, the ride's):
  * one line style per model, so that a model keeps its colour from plot to plot, and gnuplot
  * run so that the images appear complete or not at all. Auxiliary layer.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_PLOT_H
 #define TIRENV_PLOT_H
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: 2-D ground profiles (docs/models.md section 2). */
 #ifndef TIRENV_PROFILE_H
 #define TIRENV_PROFILE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: a ground profile from or to any road file tirenv knows (the convenience layer): CSV
  * ("x_m,z_m"), ASAM OpenCRG (.crg) and TNO / Adams 2-D roads (.rdf), told apart by their
  * content when read and by the file name's extension when written (docs/formats.md

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: TNO / Adams 2-D road files (.rdf, TeimOrbit format; the convenience layer): read
  * as a profile, written from profiles. What is read: docs/formats.md section 5. */
 #ifndef TIRENV_RDF_H

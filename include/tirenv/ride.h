@@ -1,5 +1,5 @@
 /* tirenv: ride simulation of a pitch-plane tractor driven by each axle's effective profile
- * (docs/models.md section 9). SPDX-License-Identifier: GPL-3.0-or-later */
+ * (docs/models.md section 9). SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_RIDE_H
 #define TIRENV_RIDE_H
 

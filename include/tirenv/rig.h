@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: rig logs (t, x, z of the tire centre) to enveloping curves, and the virtual rig
  * (docs/models.md section 5; the paper's Figure 2). */
 #ifndef TIRENV_RIG_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: the rigid disc over a profile, the geometric limit (docs/models.md section 3). */
 #ifndef TIRENV_RIGID_H
 #define TIRENV_RIGID_H

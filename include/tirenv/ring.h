@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: the flexible-ring reference tire, node level (docs/models.md section 5). It drives the
  * virtual rig; tirenv/model.h offers it as the model "ring". */
 #ifndef TIRENV_RING_H

@@ -1,5 +1,5 @@
 /* tirenv: random road profiles by the road classes of ISO 8608.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_ROAD_H
 #define TIRENV_ROAD_H
 

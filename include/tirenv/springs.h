@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: the radial + interradial springs model, element level (docs/models.md section 4).
  * Most users want tirenv/model.h; this header exposes the parts for tests, plots of the
  * deformed tire, and models built on top. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: the enveloping curve over a profile taken as it goes from a vertex source (a file
  * reader, a generator, a simulator's road), in memory bounded by the tire's reach rather than
  * by the road's length. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: the paper's study (docs/models.md section 8): identify the physical model on the training
  * cases, evaluate every model on a data set's cases, and measure how far each is off. This is
  * the convenience layer on top of the models, the data sets and the network. */

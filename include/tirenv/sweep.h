@@ -4,7 +4,7 @@
  * the manifest format that tirenv_dataset_read (and so training and the study) reads.
  * A sweep is resumable (cases already written are kept), can be cut into shards run apart
  * (on the nodes of a cluster) and merged, and the result is the same bytes however it ran.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_SWEEP_H
 #define TIRENV_SWEEP_H
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: tire parameters and solver settings (the contents of a .tir file, docs/formats.md
  * section 2). */
 #ifndef TIRENV_TIRE_H

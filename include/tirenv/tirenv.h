@@ -1,5 +1,5 @@
 /* tirenv: quasi-static enveloping models of a tractor tire over short obstacles.
- * Umbrella header. SPDX-License-Identifier: GPL-3.0-or-later
+ * Umbrella header. SPDX-License-Identifier: Apache-2.0
  *
  * Two layers, as Lua's lua.h and lauxlib.h. The core computes and knows no file format:
  * decls, error, profile, xn, road, tire, model, tracks, rigid, cam, springs, ring, stream, nn,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv: the tire's width over a road that varies across it: several tracks side by side
  * under one tire, combined into one effective height and slope (docs/models.md section 13).
  * The core API: the tracks come as profiles; a road file's reader extracts them

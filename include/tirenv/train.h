@@ -1,7 +1,7 @@
 /* tirenv: training the empirical model's network (docs/models.md section 6); its model file
  * (docs/formats.md section 10), a file format, is in nn_file.h.
  * Trainers are chosen by name: "backprop" (the paper's baseline), "rprop", "lm".
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_TRAIN_H
 #define TIRENV_TRAIN_H
 

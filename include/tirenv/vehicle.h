@@ -1,6 +1,6 @@
 /* tirenv: the pitch-plane tractor of the ride simulation (docs/models.md section 9); its
  * property file (docs/formats.md section 3), a file format, is in vehicle_file.h.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_VEHICLE_H
 #define TIRENV_VEHICLE_H
 

@@ -1,6 +1,6 @@
 /* tirenv: the vehicle property file (.veh, docs/formats.md): the pitch-plane tractor of
  * vehicle.h read, overridden and written in the .tir syntax. A file format, so it belongs to
- * the auxiliary layer (src/formats/vehicle_file.c). SPDX-License-Identifier: GPL-3.0-or-later */
+ * the auxiliary layer (src/formats/vehicle_file.c). SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_VEHICLE_FILE_H
 #define TIRENV_VEHICLE_FILE_H
 

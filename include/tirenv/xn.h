@@ -1,7 +1,7 @@
 /* tirenv: the normalised position x_N of docs/models.md section 1, which puts enveloping curves
  * of different tires, loads and obstacles on one axis (0 at first contact, 1 over the obstacle
  * centre): an equation of the models, used by the network, the import and the study.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_XN_H
 #define TIRENV_XN_H
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """Case R of the paper (contact length 0.28 m, cleat 0.10 x 0.10 m): the effective road of the
 rigid disc, the springs model, the cam and the ring reference tire, plotted with matplotlib
 when it is installed (python3-matplotlib), else written as one CSV.

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # What the tests need from the build (set by CTest; see python/CMakeLists.txt): the CLI, the
 # source tree and the bit-for-bit reference program.
 import os

@@ -1,7 +1,7 @@
 /* The reference for the Python module's bit-for-bit test: what 'tirenv envelope --model M
  * --tire T --cleat L,H --contact-length C' computes (the same calls, the same positions as
  * src/cli/cmd_envelope.c), printed with %a, every bit. SPDX-License-Identifier:
- * GPL-3.0-or-later
+ * Apache-2.0
  * usage: envelope_ref MODEL TIRE L H CONTACT_LENGTH */
 #include <stdio.h>
 #include <stdlib.h>

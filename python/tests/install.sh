@@ -5,7 +5,7 @@
 # ./python' against the prefix found through pkg-config, then import it from elsewhere (no
 # PYTHONPATH, no LD_LIBRARY_PATH) and compute a curve equal to the installed CLI's.
 #   sh python/tests/install.sh CMAKE BUILD_DIR SOURCE_DIR PYTHON
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 cmake=$1 build=$2 src=$3 python=$4
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/tirenv-pyinstall.XXXXXX")

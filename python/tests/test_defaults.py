@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The module keeps no copy of the CLI's defaults: the resolution of --cylinder and --sine,
 'tirenv envelope's default sweep and 'tirenv ride's span and grid all come from the library,
 so the profiles, positions and runs here are the CLI's."""

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The module's curves are the CLI's: the same text in the envelope CSV, and the same bits as
 the library computes them for the CLI (envelope_ref.c prints every bit)."""
 import os

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """Bad input raises TirenvError carrying the library's diagnostic; nothing crashes."""
 import pytest
 

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The example runs and writes its figure (matplotlib) or its CSV (without)."""
 import os
 import subprocess

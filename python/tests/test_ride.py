@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The ride and its comfort figures are 'tirenv ride's."""
 import numpy as np
 

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # Roads from other tools: Profile.read takes OpenCRG and RDF roads as the CLI's --profile does,
 # and a list of tracks is the CLI's --tracks, bit for bit.
 import os

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The library's refusals reach Python as they reach the CLI (docs/models.md sections 1.3,
 6.3 and 9.6): loads beyond a model's valid range, the network outside its trained ranges
 unless extrapolate=True, a ride step too long for RK4, an unphysical vehicle."""

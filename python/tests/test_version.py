@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The Python package's version (python/pyproject.toml, which pip reads) is the project's, the
 one CMakeLists.txt's project(VERSION) gives the library and 'tirenv --version'."""
 import os

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """tirenv from Python: the quasi-static enveloping models of a tire over obstacles and roads,
 the empirical network, the tractor ride and ISO 2631-1 comfort, over libtirenv (python/README.md).
 

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The compiled side (cffi, API mode: tirenv_build.py), the exception, and small helpers
 shared by the modules of the package."""
 import errno

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """Enveloping models over a profile at constant vertical load (tirenv/model.h)."""
 import collections
 import threading

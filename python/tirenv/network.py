@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The empirical model: a trained network read from its model file (tirenv train -o FILE),
 over a single cleat (docs/models.md section 6) or any profile (section 12)."""
 import threading

@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """Ground profiles: polylines (x, z) in m, from the library's generators, a road file, or
 arrays (docs/models.md section 2)."""
 import math

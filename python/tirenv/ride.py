@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """The tractor ride (docs/models.md section 9) and ISO 2631-1 comfort (section 10)."""
 import collections
 import math

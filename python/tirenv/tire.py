@@ -1,4 +1,4 @@
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 """Tires: the built-in default, or a .tir file, with keys overridden as --set does; the keys
 read back as a mapping."""
 import collections.abc

@@ -10,7 +10,7 @@
 #
 # start exits 0 once the node takes jobs; otherwise it stops what it started, prints the
 # daemons' logs and why on stderr, and exits 1.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -eu
 
 # --- knobs ---------------------------------------------------------------------------------

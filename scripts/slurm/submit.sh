@@ -10,7 +10,7 @@
 # Run it from a directory every node sees (the logs go beside OUT). A shard that fails or is
 # cancelled can be submitted again alone (sbatch --array=K ... sweep.sbatch, with the same
 # environment): it keeps the cases already written. Then submit merge.sbatch.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -eu
 
 # --- knobs (each may be set in the environment instead) -------------------------------------

@@ -1,5 +1,5 @@
 /* Private to tirenv bench: its sections in their own files.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_BENCH_H
 #define TIRENV_CLI_BENCH_H
 

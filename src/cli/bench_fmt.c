@@ -1,6 +1,6 @@
 /* tirenv bench, the CSV numbers: tirenv_fmt_g against snprintf's "%.9g" on the kinds of
  * values the writers format (sweep positions, heights in m, forces in N), the same bytes
- * checked on every value. SPDX-License-Identifier: GPL-3.0-or-later */
+ * checked on every value. SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

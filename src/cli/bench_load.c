@@ -2,7 +2,7 @@
  * when the bench has one) over the bench's road, one position after the other, once at a fixed
  * load and once with tirenv_model_set_load before every position, timed in the same run. The
  * target: a step with a new load costs at most twice a step at a fixed load.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

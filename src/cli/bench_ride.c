@@ -1,7 +1,7 @@
 /* tirenv bench, the ride: the default tractor over the bench's 1 km road at 10 km/h, each
  * model's inputs for both axles and the integration timed together, against real time (the
  * project's target: 100 times faster with nn or cam, on one core).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

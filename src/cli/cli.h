@@ -2,7 +2,7 @@
  * parser every subcommand goes through (cli_parse): the options they share (tire, load,
  * obstacle, sweep, output, model, network), -h/--help, misuse, repeated options and leftover
  * arguments, so that each command lists only what is its own. Like every part of the CLI it
- * uses the library's public headers alone. SPDX-License-Identifier: GPL-3.0-or-later */
+ * uses the library's public headers alone. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_H
 #define TIRENV_CLI_H
 

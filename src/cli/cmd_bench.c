@@ -1,6 +1,6 @@
 /* tirenv bench: wall time of the models and of the springs model's equilibrium solvers on one
  * fixed sweep, so that figures from different machines and versions can be compared.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <jansson.h>
 #include <math.h>
 #include <stdarg.h>

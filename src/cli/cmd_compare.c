@@ -1,6 +1,6 @@
 /* tirenv compare: every model against a data set's curves, as the paper's Table 3 and
  * Figure 5 do (docs/models.md section 8): plots, error tables, timing and a report.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* tirenv convert: a road from one file format to another (CSV, OpenCRG, TNO/Adams RDF).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

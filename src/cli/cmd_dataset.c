@@ -1,5 +1,5 @@
 /* tirenv dataset: build the embedded data set, or list a data set's cases.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
 /* tirenv envelope: the enveloping curve of one model over one obstacle, as CSV. Every model
  * type of the library's table runs through the same path, the network (--model nn --nn FILE)
  * and the point contact included; tirenv predict is this command with the network.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>

@@ -1,5 +1,5 @@
 /* tirenv fit: identify the physical model's stiffnesses on a data set's training cases.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

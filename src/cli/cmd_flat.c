@@ -1,5 +1,5 @@
 /* tirenv flat: the tire's state on flat ground, at one load or at the paper's three working
- * regimes. SPDX-License-Identifier: GPL-3.0-or-later */
+ * regimes. SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 
 #include "cli/cli.h"

@@ -1,5 +1,5 @@
 /* tirenv import: a raw rig log (t, x, z of the tire centre) to an approach-half enveloping
- * curve on an x_N grid, as CSV. SPDX-License-Identifier: GPL-3.0-or-later */
+ * curve on an x_N grid, as CSV. SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -1,7 +1,7 @@
 /* tirenv predict: the enveloping curve of the trained network, which is tirenv envelope with
  * the model type nn (cmd_envelope.c): over a rectangular cleat the paper's curve, over any
  * profile the equivalent-cleat decomposition of nn_road.h, in the CSV of the other models.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 
 #include "cli/envelope.h"

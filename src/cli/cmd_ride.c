@@ -1,6 +1,6 @@
 /* tirenv ride: the pitch-plane tractor driven over a profile by each axle's effective
  * profile, for several models and speeds, with ISO 2631-1 comfort figures.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

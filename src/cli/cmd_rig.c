@@ -1,5 +1,5 @@
 /* tirenv rig: the virtual rig, a cart run over an obstacle written as a raw log.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 
 #include "cli/cli.h"

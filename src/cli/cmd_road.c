@@ -1,5 +1,5 @@
 /* tirenv road: a random road of an ISO 8608 class, as a profile CSV.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* tirenv study: the paper's study in one command (identify, train, compare), as make demo
- * runs it on the embedded data set. SPDX-License-Identifier: GPL-3.0-or-later */
+ * runs it on the embedded data set. SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

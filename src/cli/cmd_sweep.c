@@ -1,6 +1,6 @@
 /* tirenv sweep: a data set over a grid of cleats x regimes x tire-key values, resumable,
  * in shards for a cluster, and the merge of the shards (tirenv/sweep.h).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <inttypes.h>
 #include <math.h>
 #include <stdint.h>

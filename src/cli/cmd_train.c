@@ -1,5 +1,5 @@
 /* tirenv train: the empirical model's network trained on a data set (docs/models.md section 6).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* Private to the tirenv command-line tool: CSV rows of the big writers (envelope, predict,
  * road, ride series) built in a buffer, numbers as printf("%.9g") writes them but through
  * tirenv_fmt_g (several times faster, the same bytes), counts as "%zu" does.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_CSV_ROW_H
 #define TIRENV_CLI_CSV_ROW_H
 

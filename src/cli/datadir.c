@@ -1,6 +1,6 @@
 /* Where the CLI finds its data (the default tire, the tractor, the embedded data set): the
  * library itself takes every file by path and knows no data directory.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "cli/cli.h"
 
 #include <limits.h>

@@ -1,5 +1,5 @@
 /* Private to tirenv envelope and tirenv predict, which is envelope with the network.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_ENVELOPE_H
 #define TIRENV_CLI_ENVELOPE_H
 

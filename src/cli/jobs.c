@@ -1,6 +1,6 @@
 /* --jobs N: how many work items a command runs at once (tirenv/parallel.h). The library's
  * default is 1; the command's is every core this process may run on.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #define _GNU_SOURCE  /* sched_getaffinity, CPU_COUNT */
 #include <sched.h>
 #include <unistd.h>

@@ -1,5 +1,5 @@
 /* --relative-to for the commands that write h: what h_m is measured from.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <string.h>
 
 #include "cli/level.h"

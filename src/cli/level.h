@@ -1,6 +1,6 @@
 /* Private to the commands that write h: --relative-to, what h is measured from (the road's
  * local level is the library's: tirenv_profile_level, tirenv_level_stream).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_LEVEL_H
 #define TIRENV_CLI_LEVEL_H
 

@@ -1,6 +1,6 @@
 /* tirenv: the command-line tool. A table of subcommands drives dispatch and "tirenv help",
  * as in kmod's tools/kmod.c; each subcommand lives in its own cmd_<name>.c.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <getopt.h>
 #include <stdio.h>
 #include <string.h>

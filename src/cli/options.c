@@ -1,6 +1,6 @@
 /* What the subcommands share once their options are parsed (parse.c): the tire, the model
  * and its network, the load, the positions, number parsing, and the mapping from library
- * status to exit code. SPDX-License-Identifier: GPL-3.0-or-later */
+ * status to exit code. SPDX-License-Identifier: Apache-2.0 */
 #include "cli/cli.h"
 #include "tirenv/nn_file.h"
 

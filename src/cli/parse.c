@@ -1,7 +1,7 @@
 /* The one option parser of the subcommands (cli_parse): the groups of options they share, a
  * command's own options from a table, -h/--help, misuse, repeated options and leftover
  * arguments, and the help text of the shared groups. SPDX-License-Identifier:
- * GPL-3.0-or-later */
+ * Apache-2.0 */
 #include "cli/cli.h"
 
 #include <getopt.h>

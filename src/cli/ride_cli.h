@@ -1,5 +1,5 @@
 /* Private to tirenv ride: its options, and the runs they ask for.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_RIDE_H
 #define TIRENV_CLI_RIDE_H
 

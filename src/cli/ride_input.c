@@ -1,5 +1,5 @@
 /* What one axle's tires follow, for any model type: shared by tirenv ride and tirenv bench.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

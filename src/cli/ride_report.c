@@ -1,6 +1,6 @@
 /* tirenv ride --out-dir: the comfort table as CSV and Markdown, and two gnuplot figures, the
  * seat acceleration over distance and its spectrum, one panel per speed, one line per model.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

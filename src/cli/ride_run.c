@@ -1,6 +1,6 @@
 /* tirenv ride, the work: the vehicle and its tires, each model's inputs for both axles, one
  * run per model and speed, the comfort table and the files. SPDX-License-Identifier:
- * GPL-3.0-or-later */
+ * Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /* Roads from files for the commands that take --profile: which track of a road that varies
  * across (--track, an OpenCRG file's lateral position), which side of an RDF road (--side), and
  * the tracks spread across the tire's width (--width, --tracks; docs/models.md section 13),
- * read whole or a row at a time. SPDX-License-Identifier: GPL-3.0-or-later */
+ * read whole or a row at a time. SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

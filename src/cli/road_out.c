@@ -1,5 +1,5 @@
 /* The effective road's options: which -o names a road file, --crg-encoding (the writer is the
- * library's tirenv_road_writer). SPDX-License-Identifier: GPL-3.0-or-later */
+ * library's tirenv_road_writer). SPDX-License-Identifier: Apache-2.0 */
 #include <string.h>
 #include <strings.h>
 

@@ -1,7 +1,7 @@
 /* Private to the commands that write an effective road (tirenv envelope -o X.crg|X.rdf): the
  * hub's effective height h along x as a road file that a point-contact tire in another tool
  * can drive on, written by the library's tirenv_road_writer (profile_file.h).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_ROAD_OUT_H
 #define TIRENV_CLI_ROAD_OUT_H
 

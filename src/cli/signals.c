@@ -1,7 +1,7 @@
 /* The signal handler that keeps an interrupted tirenv from leaving temporary files: a
  * killed write leaves the old output and nothing else. SIGKILL cannot be caught: what it
  * leaves is removed by the next run writing into the same directory (src/io/tmpfiles.c).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "cli/signals.h"
 
 #include <errno.h>

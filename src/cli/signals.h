@@ -1,5 +1,5 @@
 /* Private to the tirenv command-line tool: what a signal that ends the program cleans up.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CLI_SIGNALS_H
 #define TIRENV_CLI_SIGNALS_H
 

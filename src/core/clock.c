@@ -1,4 +1,4 @@
-/* The library's one clock. SPDX-License-Identifier: GPL-3.0-or-later */
+/* The library's one clock. SPDX-License-Identifier: Apache-2.0 */
 #include "core/clock.h"
 
 #include <time.h>

@@ -1,5 +1,5 @@
 /* Private: the library's one clock, for the timings its reports carry.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CORE_CLOCK_H
 #define TIRENV_CORE_CLOCK_H
 

@@ -1,5 +1,5 @@
 /* Brent-Dekker on the bracket [z_lo, z_hi] (core/brent.c), a derivative-free baseline for
- * the equilibrium (docs/models.md section 11). SPDX-License-Identifier: GPL-3.0-or-later
+ * the equilibrium (docs/models.md section 11). SPDX-License-Identifier: Apache-2.0
  *
  * Brent evaluates through a plain function returning a double; the evaluation goes through the
  * solver (tirenv_eq__eval) so that it is counted and kept like any other. A failing evaluation

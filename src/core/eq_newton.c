@@ -1,5 +1,5 @@
 /* The safeguarded Newton of docs/models.md section 11, the default equilibrium method.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
  * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton on the exact dF/dz is taken when it stays inside

@@ -1,6 +1,6 @@
 /* The paper's eq. 2, as published: the plain secant iteration in z from z0 and
  * z0 - SECANT_STEP, with no bracket; kept to reproduce the paper and to compare against.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "core/equilibrium.h"
 
 #include <math.h>

@@ -1,7 +1,7 @@
 /* The equilibrium driver (docs/models.md section 11): solver lifecycle, the one place every
  * force evaluation passes through, and the loop set / test / iterate that says why it stopped,
  * in the manner of GSL's gsl_multifit_nlinear_driver. The methods are in eq_newton.c,
- * eq_secant.c and eq_brent.c. SPDX-License-Identifier: GPL-3.0-or-later */
+ * eq_secant.c and eq_brent.c. SPDX-License-Identifier: Apache-2.0 */
 #include "core/equilibrium.h"
 
 #include <math.h>

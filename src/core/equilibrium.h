@@ -1,7 +1,7 @@
 /* Private to the core: the constant-load equilibrium F_z(z) = G_T in the centre height z
  * (docs/models.md section 11), shared by every deformable model. Solvers are types, as GSL's
  * root finders are (gsl_root_fsolver_type): each has set / iterate / test, and one driver runs
- * any of them and says why it stopped. SPDX-License-Identifier: GPL-3.0-or-later
+ * any of them and says why it stopped. SPDX-License-Identifier: Apache-2.0
  *
  * The force function returns everything the caller reports (F_z, dF_z/dz, F_x, contacts) from
  * one evaluation in one struct, and the solver keeps the evaluations it may accept (the last

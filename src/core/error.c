@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* One place where every error is recorded, and the table of their descriptions. */
 #include "tirenv/error.h"
 

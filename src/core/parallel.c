@@ -21,7 +21,7 @@
  * Determinism: items are handed out in increasing order, each writes only its own outputs,
  * and the caller combines them in item order afterwards; the only decision made here is which
  * failure to report, and that is the lowest failing item, as in the serial loop.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/parallel.h"
 
 #include <pthread.h>

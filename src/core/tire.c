@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Default tire, default solver settings, and the physical-parameter check. */
 #include "tirenv/tire.h"
 

@@ -1,7 +1,7 @@
 /* Data sets of enveloping curves: a directory with a manifest cases.csv, one case per line,
  * pointing at each case's raw rig log and/or its imported approach-half curve (paths relative
  * to the directory). The split follows the paper's Table 2: train, control, validation.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/dataset.h"
 #include "tirenv/rig.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The embedded data sets (docs/models.md section 5.8): 28 cleat runs each on the virtual rig,
  * shaped like the paper's (Table 2: 28 obstacles, 19 train / 5 control / 4 validation;
  * Table 3): the tractor's, by the ring reference tire, and the 205/60R15 car tire's, by TNO's

@@ -1,6 +1,6 @@
 /* The enveloping model's training samples from a data set (docs/models.md section 6): the
  * bridge from the data sets of the auxiliary layer to the core's trainers.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/dataset.h"
 
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 /* A data set's source.txt: what simulated its curves and with which tire (docs/formats.md
  * section 9), so that a study compares the right reference model with the right tire.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/dataset.h"
 
 #include <errno.h>

@@ -1,7 +1,7 @@
 /* OpenCRG files opened as roads: the handle, its queries, and tracks evaluated as OpenCRG
  * evaluates a road at (u, v) (docs/formats.md section 5): the grid interpolated linearly
  * between long sections, plus the reference line's height and banking.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/crg_impl.h"
 
 #include <math.h>

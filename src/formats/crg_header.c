@@ -2,7 +2,7 @@
  * $ROAD_CRG_OPTS, $ROAD_CRG_MODS), "KEY = value" records, the data definition's "#:" format
  * and "D:" channels, '*' comment lines, '!' comments, and the "$$$$" line that ends the header
  * (docs/formats.md section 5). Written from the ASAM OpenCRG specification, section 6.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/crg_impl.h"
 
 #include <ctype.h>

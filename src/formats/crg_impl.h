@@ -1,6 +1,6 @@
 /* Private to the OpenCRG reader: the open file's parsed header and where its rows are, shared
  * by the header parser (crg_header.c), the row reader (crg_rows.c) and the evaluation of
- * tracks (crg.c). SPDX-License-Identifier: GPL-3.0-or-later */
+ * tracks (crg.c). SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CRG_IMPL_H
 #define TIRENV_CRG_IMPL_H
 

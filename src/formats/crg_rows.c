@@ -1,7 +1,7 @@
 /* The OpenCRG road data block: its rows in the four encodings (KRBI/KDBI big-endian binary
  * records of 80 bytes padded with NaN; LRFI/LDFI fixed-width text records of 80 characters
  * with '*' for a missing value), read a window at a time, and the one pass at open that
- * counts and checks them. SPDX-License-Identifier: GPL-3.0-or-later */
+ * counts and checks them. SPDX-License-Identifier: Apache-2.0 */
 #include "formats/crg_impl.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Writing OpenCRG files: a straight reference line along x, long sections at given v, rows
  * written one after the other in any of the four encodings, through tirenv_outfile (all or
- * nothing). SPDX-License-Identifier: GPL-3.0-or-later */
+ * nothing). SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/crg.h"
 #include "tirenv/numtext.h"
 #include "tirenv/outfile.h"

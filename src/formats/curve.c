@@ -1,7 +1,7 @@
 /* Enveloping curves on an x_N grid (docs/models.md section 1; x_N itself is the core's,
  * src/nn/xn.c): storage, and the CSV format "x_N,x_m,h_m" the import writes and the data
  * sets read.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/curve.h"
 #include "tirenv/numtext.h"
 #include "tirenv/outfile.h"

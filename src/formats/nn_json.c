@@ -2,7 +2,7 @@
  * section 10): the network and how it was trained, as JSON through jansson. Reading trusts
  * nothing: every field is checked for presence, type, finiteness and range, and the network's
  * numbers against a checksum, and a failure names the file and the field. This file reads and
- * holds the checksum; nn_json_write.c writes. SPDX-License-Identifier: GPL-3.0-or-later
+ * holds the checksum; nn_json_write.c writes. SPDX-License-Identifier: Apache-2.0
  *
  * Layout (version 2):
  *   format "tirenv-nn", version 2, inputs [names], output "h_m", topology [4, 8, 1],

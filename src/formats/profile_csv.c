@@ -1,6 +1,6 @@
 /* Measured ground profiles as CSV: header "x_m,z_m", one polyline vertex per line (docs/models.md
  * section 2). Reading, splitting and number checks are the shared ones of csv_line.c.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/profile_csv.h"
 
 #include <stdint.h>

@@ -1,5 +1,5 @@
 /* One entry point for profiles in any road file: the format told by content when reading,
- * by extension when writing. SPDX-License-Identifier: GPL-3.0-or-later */
+ * by extension when writing. SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/profile_file.h"
 
 #include <ctype.h>

@@ -2,7 +2,7 @@
  * time (tirenv_profile_file_reader), for the commands that take --profile and the streamed
  * sweeps. A CRG's tracks are read together, each block of rows once for all of them; a CSV
  * or RDF road is 2-D and gives every track the same heights.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/profile_file.h"
 
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * and the checks of profile_csv.c, with the whole-profile check of tirenv_profile_validate (x
  * non-decreasing, at most two vertices at one x) done row by row so that it needs no memory
  * of the past rows.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/profile_csv.h"
 
 #include <stdio.h>

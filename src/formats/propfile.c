@@ -1,6 +1,6 @@
 /* The property-file engine: the .tir syntax ([SECTION]s of KEY = value, '$' and '!'
  * comments) read, overridden and written for any struct described by a key table.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/propfile.h"
 #include "io/text_line.h"
 

@@ -2,7 +2,7 @@
  * vehicle file. A format is a schema (a table of keys with where each value goes in a struct,
  * its sections, a physical check); the engine reads, overrides (--set) and writes it, so the
  * formats share one syntax and one set of error messages.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_PROPFILE_H
 #define TIRENV_PROPFILE_H
 

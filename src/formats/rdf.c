@@ -1,6 +1,6 @@
 /* TNO / Adams 2-D road files (TeimOrbit: [BLOCK]s of KEY = value, (SUB_BLOCK)s, {table}
  * headers, '$' and '!' comments): 'poly_line', 'plank' and 'flat' roads read as a profile
- * (docs/formats.md section 5). SPDX-License-Identifier: GPL-3.0-or-later */
+ * (docs/formats.md section 5). SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/rdf.h"
 
 #include <math.h>

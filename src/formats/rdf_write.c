@@ -1,5 +1,5 @@
 /* Writing TNO / Adams 2-D road files: a 'poly_line' road in SI units (or 'flat' for a profile
- * of one vertex), all or nothing. SPDX-License-Identifier: GPL-3.0-or-later */
+ * of one vertex), all or nothing. SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/numtext.h"
 #include "tirenv/outfile.h"
 #include "tirenv/rdf.h"

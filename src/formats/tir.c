@@ -1,7 +1,7 @@
 /* The .tir tire property file: reading (MF-Tyre files included), --set overrides, writing.
  * The syntax, messages and atomic writing are the property-file engine's (propfile.c); this
  * file says which keys a tire has and where they go.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/propfile.h"
 #include "formats/tir_impl.h"
 #include "tirenv/tir.h"

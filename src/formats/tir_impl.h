@@ -1,5 +1,5 @@
 /* Private to the auxiliary layer: .tir writing beyond tirenv_tir_write (src/formats/tir.c).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_TIR_IMPL_H
 #define TIRENV_TIR_IMPL_H
 

@@ -1,7 +1,7 @@
 /* Unit names of TeimOrbit [UNITS] blocks and their factors to SI. The names and their
  * shortest abbreviations follow the Adams Tire documentation ("Units supported in tire
  * property files"); the factors are the exact definitions (inch, pound, psi) or standard
- * gravity for the kilogram-force. SPDX-License-Identifier: GPL-3.0-or-later */
+ * gravity for the kilogram-force. SPDX-License-Identifier: Apache-2.0 */
 #include "formats/units.h"
 
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* Private to the library's file readers: the unit names of the [UNITS] block of TeimOrbit
  * files (MF-Tyre / PAC2002 .tir tire files, Adams .rdf road files) and their factors to SI.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_UNITS_H
 #define TIRENV_UNITS_H
 

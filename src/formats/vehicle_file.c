@@ -1,6 +1,6 @@
 /* The vehicle property file (.veh, docs/formats.md section 3): the .tir syntax through the
  * property-file engine, with the keys of data/vehicles/tractor.veh.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/vehicle_file.h"
 
 #include "formats/propfile.h"

@@ -1,5 +1,5 @@
 /* Line-by-line reading of the small CSV files of the auxiliary layer (curves, rig logs, manifests).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "io/csv_line.h"
 #include "io/text_line.h"
 

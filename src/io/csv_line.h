@@ -1,6 +1,6 @@
 /* Private to src/io and the modules after it: reading small comma-separated files line by line, with the splitting,
  * number parsing and file:line:column errors that the curve, rig-log, manifest and profile
- * readers share. SPDX-License-Identifier: GPL-3.0-or-later */
+ * readers share. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_CSV_LINE_H
 #define TIRENV_CSV_LINE_H
 

@@ -14,7 +14,7 @@
  * within that bound below one half: the exact value may then be a tie or on either side of
  * it, and snprintf decides (glibc rounds ties to even). Random doubles reach that case about
  * once in 10^9 for p = 9; tests/io/test_fmt.c checks the bytes against snprintf.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/numtext.h"
 
 #include <math.h>

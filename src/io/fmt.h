@@ -1,5 +1,5 @@
 /* Private to the library and its tests: the number formatter's fast path alone.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_DATA_FMT_H
 #define TIRENV_DATA_FMT_H
 

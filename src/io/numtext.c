@@ -1,6 +1,6 @@
 /* Numbers as the shortest text that reads back to the same double, for files whose round
  * trip (read, convert, write, read) must give the same heights.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/numtext.h"
 
 #include <math.h>

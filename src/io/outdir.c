@@ -15,7 +15,7 @@
  * run does not write. Hard links cost no copy, and every writer of the library replaces a
  * file by renaming a new one over it, never writing into it, so a link shared with the old
  * directory is never changed through the new one.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #define _GNU_SOURCE  /* renameat2, RENAME_EXCHANGE */
 #include "tirenv/outfile.h"
 

@@ -2,7 +2,7 @@
  * temporary file beside it and renamed over it on success, so a reader (or a plot script)
  * never sees half a file after a failure; what cannot be replaced by a rename (stdout, a
  * device, a FIFO) is written through, and never replaced.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/outfile.h"
 #include "io/umask.h"
 

@@ -1,5 +1,5 @@
 /* Bytes and lines of a road file, from a file read where asked (pread) or from memory.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "io/source.h"
 
 #include <errno.h>

@@ -1,7 +1,7 @@
 /* Private to src/io, for the road-file readers of src/formats: the bytes a road-file reader parses, from a file (read where asked,
  * so that a long road need not be in memory) or from a caller's buffer (the fuzz harnesses,
  * embedded data), and the lines of its text parts, with line numbers for messages.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_IO_SOURCE_H
 #define TIRENV_IO_SOURCE_H
 

@@ -10,7 +10,7 @@
  * process, another user's (EPERM) or another host's keeps its files. A reused pid only delays
  * the removal to a later run. Two runs writing the same target still race for it, as any
  * two writers do; neither sees half a file.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #define _GNU_SOURCE  /* syscall(SYS_getdents64), DT_DIR */
 #include "io/tmpfiles.h"
 

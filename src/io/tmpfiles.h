@@ -1,7 +1,7 @@
 /* Private to src/io and the modules after it: the temporary files and directories that output files and output
  * directories are built in (outfile.c, outdir.c): their names, a registry that a signal
  * handler can empty, removal of whole trees, the sweep of those a killed run left behind,
- * and symbolic-link resolution. SPDX-License-Identifier: GPL-3.0-or-later */
+ * and symbolic-link resolution. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_DATA_TMPFILES_H
 #define TIRENV_DATA_TMPFILES_H
 

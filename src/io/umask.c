@@ -2,7 +2,7 @@
  * build has it at 0, another one creating a file gets mode 0666, and two threads dancing at
  * once can leave the process's umask at 0 for good. Linux (4.7 and later) shows it in
  * /proc/self/status; elsewhere the dance runs under a lock, so at least the library's own
- * threads never interleave it. SPDX-License-Identifier: GPL-3.0-or-later */
+ * threads never interleave it. SPDX-License-Identifier: Apache-2.0 */
 #include "io/umask.h"
 
 #include <pthread.h>

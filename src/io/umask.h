@@ -1,5 +1,5 @@
 /* Private to src/io and the modules after it: the process's file-creation mask, read without changing it.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_DATA_UMASK_H
 #define TIRENV_DATA_UMASK_H
 

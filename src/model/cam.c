@@ -1,6 +1,6 @@
 /* The elliptical cam (docs/models.md section 7): its shape, its tangency with a straight segment,
  * and the public lift and tandem of two cams (the exact lift itself is cam_lift.c's).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 
 #include "model/cam_impl.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private: the cam's geometry with its derived constants, and what a sweep of positions keeps
  * between lifts, shared by cam.c (the cam's formulas), cam_lift.c (the exact lift),
  * cam_sweep.c (the sweep's tables) and cam_model.c (the model type), so that the model

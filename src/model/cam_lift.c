@@ -1,7 +1,7 @@
 /* The elliptical cam's lift over a profile, exact on polylines (docs/models.md section 7): the
  * largest touching height over a finite set of candidates, most of them ruled out by bounds
  * that change no bit of the result. The candidates and the bounds are argued at
- * tirenv_cam__lift, at the end. SPDX-License-Identifier: GPL-3.0-or-later */
+ * tirenv_cam__lift, at the end. SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 
 #include "model/cam_impl.h"

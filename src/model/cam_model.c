@@ -1,5 +1,5 @@
 /* The tandem elliptical cam as a tirenv_model_type: MF-Swift's effective road, a geometric
- * filter with no iteration (docs/models.md section 7). SPDX-License-Identifier: GPL-3.0-or-later
+ * filter with no iteration (docs/models.md section 7). SPDX-License-Identifier: Apache-2.0
  *
  * The cam itself does not deflect: its parameters say how a tire at a given load envelopes,
  * and the load enters through the MF-Tyre contact-patch law alone. So the model reports

@@ -1,7 +1,7 @@
 /* What a sweep of cam positions keeps between lifts (docs/models.md section 7; the lift itself is
  * cam_lift.c's): the drop floor of the cam's shape, and the tangency memo. None of it changes
  * a bit of any lift, only how fast it is found.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The constant-load equilibrium per position (docs/models.md section 11), shared by every
  * deformable model: it only needs their hub-force function and their contact length. The
  * equilibrium itself is the core's solver (src/core/equilibrium.c), which reports an

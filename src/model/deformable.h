@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private: a deformable model is a hub-force function F(x, z) plus its own definition of the
  * flat-ground contact length; the constant-load equilibrium around it is shared
  * (deformable.c). */

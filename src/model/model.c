@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The generic model driver: name lookup, lifecycle, and the sweep over positions. */
 #include <math.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private: what a model algorithm provides to the generic driver in model.c: its type record,
  * written out field by field in the algorithm's file as GSL writes gsl_root_fsolver_brent at
  * the end of roots/brent.c. */

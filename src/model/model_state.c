@@ -2,7 +2,7 @@
  * and restores into it, or into a twin of the same type and tire. The driver's part (the load
  * and the flat-ground height) comes first, then the type's own (tirenv_model_type's
  * state_size / _save / _restore). The profile is not in it: the model only borrows that.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the model driver: what model.c and model_state.c share. */
 #ifndef TIRENV_MODEL_STATE_H
 #define TIRENV_MODEL_STATE_H

@@ -1,6 +1,6 @@
 /* The empirical model, the paper's trained network (docs/models.md section 6), as a
  * tirenv_model_type, so that every command runs it as it runs the physical models.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * The network's inputs are the working regime (the contact length l_c), the obstacle's
  * height and length, and the normalised position x_N; its output is h. So the model

@@ -1,7 +1,7 @@
 /* The classic single-point contact as a tirenv_model_type: the tire touches the ground at one
  * point under its centre and follows the raw profile, with no enveloping at all. It is what
  * vehicle models without a tire model assume, and the baseline a ride compares the enveloping
- * models with (docs/models.md section 9.2). SPDX-License-Identifier: GPL-3.0-or-later */
+ * models with (docs/models.md section 9.2). SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 

@@ -1,5 +1,5 @@
 /* The positions of a sweep: how many, and tirenv envelope's by default (include/tirenv/stream.h).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/stream.h"
 
 #include <math.h>

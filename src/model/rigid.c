@@ -1,5 +1,5 @@
 /* The rigid disc over a profile, the geometric limit of every model (docs/models.md section 3).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/rigid.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private: the rigid disc with a search hint, for sweeps that call it position after position. */
 #ifndef TIRENV_RIGID_IMPL_H
 #define TIRENV_RIGID_IMPL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The rigid disc as a tirenv_model_type: no deflection, no iteration (docs/models.md section 3). */
 #include <math.h>
 #include <stdlib.h>

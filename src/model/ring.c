@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The flexible-ring reference tire (docs/models.md section 5): a belt on an elastic foundation
  * with a tread of radial brush springs of finite thickness, in contact with the ground along
  * rays from the centre; where the tread is compressed through, the belt itself meets the

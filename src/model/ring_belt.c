@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The ring's belt (docs/models.md section 5): its banded stiffness, condensed onto a window of
  * nodes, and the O(n) Cholesky factorisation of the window's contact system. */
 #include "model/ring_impl.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The ring's contact (docs/models.md section 5) on the window of nodes that can touch: with
  * each node free, in tread contact or held by the belt, the belt displacements solve one banded
  * system; the states come from block principal pivoting, with projected Newton on the contact

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private: the ring reference tire's pieces (docs/models.md section 5), one file each: the belt
  * as a stiffness matrix condensed onto a window of nodes and the banded solver of its contact
  * system (ring_belt.c), the contact solve (ring_contact.c), rays and the public API

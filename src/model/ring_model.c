@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The ring reference tire as a tirenv_model_type (docs/models.md section 5). */
 #include <math.h>
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The radial + interradial springs model (docs/models.md section 4, the paper's Figure 4): element
  * layout, stiffness, and the hub forces for a given centre position. */
 #include "tirenv/springs.h"

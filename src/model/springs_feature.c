@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Ground that slips between two rays (docs/models.md section 4, "geometric penetration"): a
  * feature narrower than the ray spacing at its distance that pokes into the tread while no
  * ray meets it. The elements touch the ground only along their rays, so such a feature is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private: the pieces of the springs model (docs/models.md section 4), one file each. */
 #ifndef TIRENV_SPRINGS_IMPL_H
 #define TIRENV_SPRINGS_IMPL_H

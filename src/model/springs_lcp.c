@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The tip LCP of the springs model (docs/models.md section 4): a tridiagonal obstacle problem. */
 #include "model/springs_impl.h"
 

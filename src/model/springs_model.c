@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The springs model as a tirenv_model_type (docs/models.md section 4). */
 #include <math.h>
 #include <stddef.h>

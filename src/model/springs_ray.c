@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Ray casting of the radial elements onto the ground polyline (docs/models.md section 4,
  * "geometric penetration"). */
 #include "model/springs_impl.h"

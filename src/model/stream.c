@@ -12,7 +12,7 @@
  * callback (tirenv_vertex_source), so the core knows no file format: the CSV reader is one
  * source, in the auxiliary layer. Several tracks across the tire's width (tracks.h) come as
  * rows, one x and a height per track (tirenv_row_source), and make one window per track.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/stream.h"
 #include "tirenv/tracks.h"
 

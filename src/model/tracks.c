@@ -8,7 +8,7 @@
  *   equilibrium: sum_i w_i F_z,i(x, z) = G solved in z by the core's equilibrium driver
  *                (docs/models.md section 11) with dF_z/dz and F_x summed alike.
  * One distinct track goes through the ordinary single-track path, so n copies of one profile
- * are tirenv_model_set bit for bit. SPDX-License-Identifier: GPL-3.0-or-later */
+ * are tirenv_model_set bit for bit. SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

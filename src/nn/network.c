@@ -1,7 +1,7 @@
 /* The feed-forward network of the empirical model (paper, Tables 1 and 2;
  * docs/models.md section 6): layout, initialisation, evaluation (one sample and batches),
  * back-propagation; its forms, scaling and ranges are nn_scaling.c's.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/nn.h"
 
 #include <math.h>

@@ -1,7 +1,7 @@
 /* The empirical model over any profile: equivalent-cleat decomposition with max-plus
  * superposition (docs/models.md section 12; nn_road.h states the model, this file says how
  * and why, and builds it; nn_road_eval.c evaluates it).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Why this shape. The network knows one thing: the curve of a rectangular cleat (L, H) on flat
  * ground at contact length l_c. A road is not a cleat, so it is split into what the network

@@ -1,6 +1,6 @@
 /* The morphological opening (erosion then dilation by a flat element) of a sampled signal:
  * the baseline of the equivalent-cleat decomposition (nn_road.c, docs/models.md section 12).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "nn/opening.h"
 
 /* The running minimum (sign +1) or maximum (sign -1, by comparing -s) over the window

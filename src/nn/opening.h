@@ -1,5 +1,5 @@
 /* Private to the nn module: the morphological opening of a sampled signal, the baseline of
- * nn_road.c. SPDX-License-Identifier: GPL-3.0-or-later */
+ * nn_road.c. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_NN_OPENING_H
 #define TIRENV_NN_OPENING_H
 

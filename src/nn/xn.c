@@ -1,5 +1,5 @@
 /* The normalised position x_N (docs/models.md section 1).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/xn.h"
 
 #include <math.h>

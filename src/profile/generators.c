@@ -1,5 +1,5 @@
 /* Obstacle generators (docs/models.md section 2): the shapes of the paper's rig and a few more.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "profile/profile_impl.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* The road's local level (docs/models.md section 2.6): the morphological opening of the ground
- * by a level segment, exact on the polyline. SPDX-License-Identifier: GPL-3.0-or-later
+ * by a level segment, exact on the polyline. SPDX-License-Identifier: Apache-2.0
  *
  * With a = width/2, the opening at x is
  *     O(x) = max over y in [x - a, x + a] of E(y),   E(y) = min of q over [y - a, y + a]:

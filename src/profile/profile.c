@@ -1,5 +1,5 @@
 /* The ground profile object (docs/models.md section 2): validation, storage, height queries.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "profile/profile_impl.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the core: the profile's layout (src/profile builds it), shared with the models
  * that walk its segments directly (the rigid disc, the springs model's ray caster, the cam,
  * the ring). It lives beside the code that builds it, in src/profile, the one core module's

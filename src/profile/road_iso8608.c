@@ -1,4 +1,4 @@
-/* Random road profiles of the ISO 8608 road classes. SPDX-License-Identifier: GPL-3.0-or-later
+/* Random road profiles of the ISO 8608 road classes. SPDX-License-Identifier: Apache-2.0
  *
  * ISO 8608 classifies a road by its one-sided displacement PSD fitted as
  *   Gd(n) = Gd(n0) * (n/n0)^-w,  n0 = 0.1 cycles/m, waviness w = 2,

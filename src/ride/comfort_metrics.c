@@ -1,6 +1,6 @@
 /* Metrics of a frequency-weighted acceleration by ISO 2631-1 clause 6 (docs/models.md
  * section 10).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * For samples a_j = a_w(j/fs), j = 0..n-1, of a weighted acceleration over T = n/fs:
  *   r.m.s.        a_w  = (1/T int_0^T a_w^2 dt)^(1/2)  ~ (sum a_j^2 / n)^(1/2)       (6.1)

@@ -1,5 +1,5 @@
 /* The frequency weightings of ISO 2631-1, analogue and digital (docs/models.md section 10).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * ISO 2631-1 Annex A (parameters repeated in ISO 8041's table) defines each weighting as the
  * product of four analogue factors, with omega_i = 2 pi f_i:

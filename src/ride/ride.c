@@ -1,6 +1,6 @@
 /* The pitch-plane tractor's equations of motion and their integration (ode.c)
  * (docs/models.md section 9).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * States, displacements from the static equilibrium on flat ground (small pitch angles):
  *   y = (z, vz, theta, vtheta[, z_a, vz_a])      (the last two with a suspended front axle)

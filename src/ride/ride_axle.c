@@ -1,6 +1,6 @@
 /* What an axle's tires follow and the force they make (docs/models.md sections 9.2, 9.3 and
  * 9.5): a track at the static load, or an input that depends on the load, taken at the load
- * the tires then carry. SPDX-License-Identifier: GPL-3.0-or-later
+ * the tires then carry. SPDX-License-Identifier: Apache-2.0
  *
  * The load a tire carries depends on the input, and the input on the load: per tire
  *     G = max(0, g(G)),   g(G) = G0 + k_t*(w(x, G) - z_a) + c_t*(V*dw/dx(x, G) - dz_a/dt).

@@ -1,7 +1,7 @@
 /* What the ride checks before and while it integrates (docs/models.md section 9.6): that the
  * fixed RK4 step resolves the stiffest mode of the vehicle, that the static loads leave the
  * dynamic tire forces resolvable in double precision, and that every sample is finite.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "ride/ride_impl.h"
 
 #include <float.h>

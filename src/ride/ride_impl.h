@@ -1,7 +1,7 @@
 /* Private to the ride module: an axle's input (a track, a table over loads, or a function of
  * position and load) and the tire force it makes, shared by the integrator (ride.c) and
  * the inputs (ride_axle.c), docs/models.md section 9.5; and the checks of ride_checks.c
- * that the vehicle and the ride run use (section 9.6). SPDX-License-Identifier: GPL-3.0-or-later */
+ * that the vehicle and the ride run use (section 9.6). SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_RIDE_IMPL_H
 #define TIRENV_RIDE_IMPL_H
 

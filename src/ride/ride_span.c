@@ -1,5 +1,5 @@
 /* Where tirenv ride drives over an obstacle, and the input grid that covers the run
- * (include/tirenv/ride.h, docs/models.md section 9.4). SPDX-License-Identifier: GPL-3.0-or-later */
+ * (include/tirenv/ride.h, docs/models.md section 9.4). SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/ride.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 /* What each axle's tires follow: a model's effective profile at the axle's static tire load,
  * the point contact's being the raw profile (docs/models.md section 9.2).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/ride.h"
 
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* Welch's estimate of a one-sided power spectral density, for seat-acceleration spectra
  * (docs/models.md section 10).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * The series is cut into K segments of N samples (a power of two, for the radix-2 FFT of core/fft.c)
  * starting every N/2 samples, each multiplied by the periodic Hann window

@@ -1,6 +1,6 @@
 /* The pitch-plane tractor of the ride simulation (docs/models.md section 9): its default, its
  * physical check and its static tire loads. The file format is in vehicle_file.c.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/vehicle.h"
 #include "ride/ride_impl.h"
 

@@ -1,6 +1,6 @@
 /* Private to the rig-log import (src/rig/rig_*.c and its tests): the
  * stages of tirenv_rig_import_samples and what they share. docs/models.md sections 1 and 5.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_RIG_IMPL_H
 #define TIRENV_RIG_IMPL_H
 

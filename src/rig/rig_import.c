@@ -3,7 +3,7 @@
  *   1. prepare (here): sort by time, drop repeated times, mirror a run towards -x;
  *   2. tirenv_rig__find_passage (rig_passage.c): noise, flat baseline, bump, centre;
  *   3. tirenv_rig__smooth (rig_smooth.c): fold, zero-phase filter, resample on x_N.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * section 7; docs/models.md section 5.7; the paper's Figure 2). Order, rate and repeats are
  * the importer's business; this file only reads, and remembers each sample's line for
  * messages.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdint.h>
 #include <stdlib.h>
 #include <sys/stat.h>

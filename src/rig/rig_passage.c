@@ -2,7 +2,7 @@
  * baseline, the bump, and the obstacle's centre as the bump's axis of symmetry; a log that
  * does not hold a whole passage (flat ground, bump, flat ground) is refused with the reason.
  * The obstacle is a cleat on flat ground, so the bump rises above the flat level.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

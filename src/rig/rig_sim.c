@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The virtual rig: the paper's Figure 2 cart, run on a model instead of a tire. */
 #include "tirenv/rig.h"
 

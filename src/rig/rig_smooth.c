@@ -21,7 +21,7 @@
  *     spread of h' within the window.
  * Its noise: the standard error of h is sigma sqrt(1.25 / (rho w)) for rho samples per metre
  * of the folded data (1.25 = integral of K*^2), so halving it takes four times the width.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 

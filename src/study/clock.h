@@ -1,6 +1,6 @@
 /* Private to the study module: the wall clock of the timings its reports carry (fit time,
  * time per position). The auxiliary layer keeps its own: the core's clock is private to the
- * core. SPDX-License-Identifier: GPL-3.0-or-later */
+ * core. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_STUDY_CLOCK_H
 #define TIRENV_STUDY_CLOCK_H
 

@@ -1,7 +1,7 @@
 /* The paper's comparison (docs/models.md section 8; Table 3 and Figure 5): every model on
  * the chosen cases of a data set, how far each is off, how long each takes per position, one plot per
  * case, and the tables. The report built on them is in report.c.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/study.h"
 
 #include <errno.h>

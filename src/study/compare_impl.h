@@ -1,5 +1,5 @@
 /* Private to the comparison (src/study/compare.c and report.c): what the tables and the
- * report share. SPDX-License-Identifier: GPL-3.0-or-later */
+ * report share. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_STUDY_COMPARE_IMPL_H
 #define TIRENV_STUDY_COMPARE_IMPL_H
 

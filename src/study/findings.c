@@ -1,7 +1,7 @@
 /* The study report's own account of its numbers (docs/models.md section 8): which model is
  * off where, the network over seeds, whether the paper's finding on its case R holds, and
  * where the tandem cam cannot follow. Every sentence is chosen and filled from the numbers
- * of the run; nothing is fixed prose about results. SPDX-License-Identifier: GPL-3.0-or-later */
+ * of the run; nothing is fixed prose about results. SPDX-License-Identifier: Apache-2.0 */
 #include "study/study_impl.h"
 
 #include <math.h>

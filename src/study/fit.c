@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Identification of a physical model on measured curves (docs/models.md section 8): nonlinear least
  * squares on h over the training cases, with standard errors from the covariance.
  *

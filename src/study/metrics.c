@@ -1,5 +1,5 @@
 /* How far a model's enveloping curve is from a measured one (docs/models.md section 8): the four
- * figures of the comparison table. SPDX-License-Identifier: GPL-3.0-or-later */
+ * figures of the comparison table. SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/study.h"
 
 #include <math.h>

@@ -1,7 +1,7 @@
 /* Comparison plots in the manner of the paper's Figure 5: for one case, h in mm over x_N, the
  * measured curve as markers and one line per model. The numbers go to a plain data file and
  * the drawing to a gnuplot script a reader can edit and rerun; tirenv runs that script to
- * draw the PNG for the report and the SVG for print. SPDX-License-Identifier: GPL-3.0-or-later */
+ * draw the PNG for the report and the SVG for print. SPDX-License-Identifier: Apache-2.0 */
 #define _GNU_SOURCE  /* pipe2 */
 #include "study/plot.h"
 

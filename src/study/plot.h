@@ -1,7 +1,7 @@
 /* Private to the study module: one comparison plot per case, in the manner of the paper's
  * Figure 5 (h in mm over x_N, measured points, one line per model), written as a data file and
  * a gnuplot script, and drawn as PNG and SVG by running gnuplot on it.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_STUDY_PLOT_H
 #define TIRENV_STUDY_PLOT_H
 

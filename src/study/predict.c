@@ -1,6 +1,6 @@
 /* Each model's curve for one case of a data set, at the case's own points, driven the way the
  * paper drives it (docs/models.md section 1): the physical models by the applied load, the network
- * by the measured contact length. SPDX-License-Identifier: GPL-3.0-or-later */
+ * by the measured contact length. SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/study.h"
 
 #include <math.h>

@@ -1,7 +1,7 @@
 /* report.md: the comparison told in one page (docs/models.md section 8): what was compared, whether
  * the data are simulated, the tables, the plots, the speed, and what the numbers say. The
  * text is generated from the numbers only; it states them and does not interpret beyond
- * "closest" and "off by". SPDX-License-Identifier: GPL-3.0-or-later */
+ * "closest" and "off by". SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/study.h"
 
 #include <math.h>

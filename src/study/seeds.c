@@ -1,6 +1,6 @@
 /* The network trained with many seeds, and the spread of its validation error
  * (docs/models.md section 6): with 19 training curves one seed's figure is an anecdote.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/study.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The paper's study in one call (docs/models.md section 8): identify, train, compare; then the
  * paper's proposed workflow and the obstacles outside the training grid. */
 #include "tirenv/study.h"

@@ -1,5 +1,5 @@
 /* Private to the study (src/study/study.c, findings.c): the facts the report's generated
- * paragraphs are made from. SPDX-License-Identifier: GPL-3.0-or-later */
+ * paragraphs are made from. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_STUDY_IMPL_H
 #define TIRENV_STUDY_IMPL_H
 

@@ -1,7 +1,7 @@
 /* The sweep's grid (docs/formats.md section 13): which case is where, its name, its tire,
  * its split, and the description (sweep.txt) that a resumed run and a merge compare. Every
  * answer here is a function of the settings alone, so every shard of a sweep, on any node,
- * agrees on it. SPDX-License-Identifier: GPL-3.0-or-later */
+ * agrees on it. SPDX-License-Identifier: Apache-2.0 */
 #include "sweep/sweep_impl.h"
 
 #include <errno.h>

@@ -1,6 +1,6 @@
 /* Private to the sweep (src/sweep/sweep_*.c): the grid's arithmetic, the split, the files'
  * names and the description a resumed run and a merge compare.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_DATA_SWEEP_IMPL_H
 #define TIRENV_DATA_SWEEP_IMPL_H
 

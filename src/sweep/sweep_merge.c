@@ -2,7 +2,7 @@
  * run as one part writes, byte for byte: the description without its shard line, the same
  * tire, the manifest and sweep.csv rows interleaved back into case order (shard K holds the
  * cases K, K + N, K + 2N, ...), and every case's files linked (or copied) as they are.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "sweep/sweep_impl.h"
 
 #include <errno.h>

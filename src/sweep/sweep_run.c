@@ -1,7 +1,7 @@
 /* Running a sweep (docs/formats.md section 13): the cases of one shard into "<dir>.partial",
  * each case's files atomically, so that a killed run leaves only whole cases, which the next
  * run keeps; the manifest last, from the grid; then the directory renamed into place.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "sweep/sweep_impl.h"
 
 #include <dirent.h>

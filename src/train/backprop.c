@@ -1,7 +1,7 @@
 /* The paper's trainer (Table 1: "standard backpropagation algorithm"): gradient descent with
  * momentum, dw <- -eta*dE/dw + alpha*dw (Rumelhart, Hinton and Williams 1986), online or
  * batch. The baseline the modern trainers are measured against.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdlib.h>
 #include <string.h>
 

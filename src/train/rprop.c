@@ -1,6 +1,6 @@
 /* iRprop- (Igel and Huesken, "Improving the Rprop learning algorithm", 2000), the variant
  * FANN's FANN_TRAIN_RPROP implements: batch gradient, one step size per weight, only the
- * sign of the gradient used. SPDX-License-Identifier: GPL-3.0-or-later */
+ * sign of the gradient used. SPDX-License-Identifier: Apache-2.0 */
 #include <stdlib.h>
 #include <string.h>
 

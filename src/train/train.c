@@ -1,6 +1,6 @@
 /* The training driver: trainer lookup and defaults, seeded restarts, early stopping on the
  * control set, errors per split (docs/models.md section 6).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* Private to src/train: what a trainer provides to the driver in train.c, and the helpers
- * they share. SPDX-License-Identifier: GPL-3.0-or-later */
+ * they share. SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_TRAIN_IMPL_H
 #define TIRENV_TRAIN_IMPL_H
 

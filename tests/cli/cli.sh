@@ -4,7 +4,7 @@
 # Usage: tests/cli/cli.sh BIN TESTDATA_DIR. Prints "ok N - what" / "not ok N - what" per check
 # and exits non-zero if any failed. The road and cam, network and ride checks are in
 # cli_road_cam.sh, cli_network_road.sh and cli_ride_tractor.sh, which CTest runs beside this
-# one. SPDX-License-Identifier: GPL-3.0-or-later
+# one. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -3,7 +3,7 @@
 # figures the speed goals are stated in among them, all positive; the tables stay the default.
 # --quick keeps it to seconds (one run each, a 100 m road); the numbers are not checked
 # against targets here (timings are no test), only that each was measured.
-# Usage: tests/cli/cli_bench.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_bench.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -2,7 +2,7 @@
 # tirenv convert end to end: roads between CSV, OpenCRG and RDF files, formats told by content,
 # round trips to the written precision, misuse and bad files refused without output.
 # Usage: tests/cli/cli_convert.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the
-# sample files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
+# sample files (CTest sets it). SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

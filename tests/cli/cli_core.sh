@@ -3,7 +3,7 @@
 # misuse, a repeated option and a leftover argument alike; every model type, the network and
 # the point contact included, runs through envelope and ride; options may be abbreviated as
 # getopt allows (--mod nn). Usage: tests/cli/cli_core.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -2,7 +2,7 @@
 # The embedded data sets from the command line: dataset build --design, what a built data set
 # records about its source (source.txt, tire.tir) and how list, fit and study use it; bad
 # source files refused with file, line and key. Usage: tests/cli/cli_dataset.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

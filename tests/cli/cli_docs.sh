@@ -6,7 +6,7 @@
 # beside the clone (tests/data/samples/README.md: a test passes in any clone); the paths and
 # tirenv_ names the Markdown writes exist; every command's --help lists the options it takes.
 # Usage: sh cli_docs.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 root=$(cd "$(dirname "$0")/../.." && pwd)
 # shellcheck source=tests/lib/clilib.sh

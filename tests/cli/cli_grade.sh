@@ -4,7 +4,7 @@
 # --relative-to datum (the default) keeps the grade in h, --relative-to ground takes the road's
 # local level out (on the straight grade the rigid disc's h is then R0*(sqrt(1 + s^2) - 1));
 # on level ground at 0 both are the same, byte for byte; a bad value is misuse.
-# Usage: tests/cli/cli_grade.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_grade.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -3,7 +3,7 @@
 # threads: sweep passes it to every case's model, and ride's model inputs, computed on the
 # jobs, honour it, with the same table for --jobs 1 and 2 apart from the CPU times.
 # Usage: tests/cli/cli_jobs_extrapolate.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # Conditions are single-quoted for eval; bin, data and rc are clilib's.
 # shellcheck disable=SC2016,SC2034,SC2086,SC2154
 # shellcheck source=tests/lib/clilib.sh

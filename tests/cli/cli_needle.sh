@@ -4,7 +4,7 @@
 # springs model refuses it, naming the position, the feature's width and the spacing, and
 # writes nothing; with the default continuous contact the tread carries it; features the
 # rays resolve, and every model that follows the ground exactly, are unaffected.
-# Usage: tests/cli/cli_needle.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_needle.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The network's CLI: the paper's setup and the default (an ensemble with the even input) in
 # model files of version 2, a version-1 file still predicting, the centre of the default's
-# curve flat, tirenv train --seeds, and refusals. SPDX-License-Identifier: GPL-3.0-or-later
+# curve flat, tirenv train --seeds, and refusals. SPDX-License-Identifier: Apache-2.0
 . "$(dirname "$0")/../lib/clilib.sh"
 set_data="$data/../../data/dataset"
 

@@ -5,7 +5,7 @@
 # run removes; a failed multi-file command leaves no directory, a killed one the old one; ride
 # --out-dir writes series only when asked; every single-file writer and convert's CSV onto
 # /dev/null and a FIFO. Usage: tests/cli/cli_output.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -2,7 +2,7 @@
 # tirenv ride --model cam on a tire file without the cam keys: refused, naming them, whichever
 # way of enveloping (docs/models.md section 9.5) is asked; before, only static checked and
 # dynamic and direct ran the cam with the default tire's shape.
-# Usage: tests/cli/cli_ride_cam_keys.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_ride_cam_keys.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 repo=$(cd "$(dirname "$0")/../.." && pwd)
 . "$(dirname "$0")/../lib/clilib.sh"

@@ -3,7 +3,7 @@
 # default; static and dynamic side by side give a row each in comfort.csv (its last column
 # says which) and comfort.md compares them; a model whose road does not depend on the load
 # (the point contact) gives the same figures either way; bad values are misuse.
-# Usage: tests/cli/cli_ride_load.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_ride_load.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

@@ -2,7 +2,7 @@
 # The ring reference tire's own state from the command line (docs/models.md section 5): the
 # --detail columns of envelope, the tread compression of flat, and the embedded data set's
 # cases with their lugs within their thickness.
-# Usage: tests/cli/cli_ring.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_ring.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

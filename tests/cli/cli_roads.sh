@@ -4,7 +4,7 @@
 # tracks across the tire's width (--tracks, --width); the effective road written as .crg and
 # .rdf and read back to the written precision; misuse refused without output.
 # Usage: tests/cli/cli_roads.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the sample
-# files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
+# files (CTest sets it). SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 . "$(dirname "$0")/../lib/roads_lib.sh"

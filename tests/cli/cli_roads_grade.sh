@@ -5,7 +5,7 @@
 # reach, docs/models.md section 2.5). The springs model runs Horstwalde up to its 0.73 m drop,
 # where its hub would pass under the edge (refused there: tests/profile/test_grade.c).
 # Usage: tests/cli/cli_roads_grade.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES as for cli_roads.sh.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 . "$(dirname "$0")/../lib/roads_lib.sh"

@@ -2,7 +2,7 @@
 # tirenv sweep from outside: a data set the other commands read, the same bytes for --jobs 1
 # and 3, shards merged equal to one run, the progress bar where asked, and misuse refused
 # (a run killed midway and resumed: sweep_killed.sh). Usage: sh cli_sweep.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 # shellcheck source=tests/lib/clilib.sh
 . "$(dirname "$0")/../lib/clilib.sh"

@@ -5,7 +5,7 @@
 # a sweep's resumable DIR.partial is not such a staging directory and is never swept away by
 # another command writing beside it; files written from several threads at once get the
 # umask's mode. Usage: sh cli_sweep_outdir.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2086,SC2154 # conditions are single-quoted for eval; the grid's
 # options are split on purpose; bin is clilib's
 # shellcheck source=tests/lib/clilib.sh

@@ -3,7 +3,7 @@
 # prints sensible numbers (the file's own radius; deflections a tire has; the cam's stiffness
 # the file's VERTICAL_STIFFNESS), the cam refused without the cam keys, bad files refused.
 # Usage: tests/cli/cli_tir.sh BIN TESTDATA_DIR, with TIRENV_SAMPLES naming the sample
-# files (CTest sets it). SPDX-License-Identifier: GPL-3.0-or-later
+# files (CTest sets it). SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

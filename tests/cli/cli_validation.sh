@@ -4,7 +4,7 @@
 # warning where a user may mean it. The library's side of each is in tests/model/test_model_range.c,
 # test_ride_checks.c, test_nn_extrapolate.c, test_train_diverged.c, test_rig_checks.c,
 # test_readers_nul.c, test_compare_checks.c and test_file_roundtrip.c.
-# Usage: tests/cli/cli_validation.sh BIN TESTDATA_DIR. SPDX-License-Identifier: GPL-3.0-or-later
+# Usage: tests/cli/cli_validation.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 

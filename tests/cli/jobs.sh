@@ -5,7 +5,7 @@
 # (dataset build: tests/dataset/dataset_regenerates.sh; study: tests/study/study_runs.sh; sweep:
 # tests/cli/cli_sweep.sh and test_sweep.)
 #   sh tests/cli/jobs.sh BIN DATASET_DIR
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 bin=$1 data=$2
 case $bin in /*) ;; *) bin=$PWD/$bin ;; esac

@@ -3,7 +3,7 @@
 # that 'tirenv --help' lists, each with the sections a man page has, every long option of the
 # command's --help in it, and groff formats each without a warning (-ww: all of them).
 #   sh tests/cli/manpages.sh BIN MANDIR
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 bin=$1 dir=$2
 n=0 failed=0

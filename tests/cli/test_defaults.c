@@ -3,7 +3,7 @@
  * tirenv ride's span and input grid (ride.h). Their values and formulas, what the resolution
  * promises, and the CLI's outputs recomputed here through the public API alone: a CLI that
  * went back to a private value of its own would fail the last two tests.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -3,7 +3,7 @@
  * a jump in F_z, a plateau, no bracket) and cases that must fail with the right status and
  * stop reason, looped over every method. Each solve also checks that the reported point is one
  * of the force function's own evaluations, bit for bit, and that the budget of evaluations
- * holds, whatever the force function does. SPDX-License-Identifier: GPL-3.0-or-later */
+ * holds, whatever the force function does. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

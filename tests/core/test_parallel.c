@@ -1,6 +1,6 @@
 /* tirenv_parallel_for (tirenv/parallel.h): every item once, the serial loop's failure whatever
  * the number of threads, done calls that never overlap, no thread for one job, signals left
- * to the caller's thread. SPDX-License-Identifier: GPL-3.0-or-later */
+ * to the caller's thread. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/parallel.h"
 

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # A shipped data set equals a fresh regeneration, byte for byte (its README.md apart, which
 # a person writes), run serially (--jobs 1) and on three threads (--jobs 3): the bytes do not
 # depend on the number of jobs. tests/dataset/dataset_regenerates.sh BIN SHIPPED_DIR [DESIGN].

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The embedded data sets as designed (docs/models.md section 5.8): the paper's design shape in
  * each, the 205/60R15 set within its cam's validated range; a built data set's record of its
  * source (source.txt, tire.tir) and its curves against the simulating model's own. */

@@ -1,7 +1,7 @@
 /* The OpenCRG reader and writer: the ecosystem's sample files (ASAM's hand-made examples,
  * Chrono's binary half-round and Horstwalde), files the tests write in all four encodings,
  * windows of long roads, and malformed files.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/crg.h"
 #include "tirenv/profile_file.h"

@@ -1,6 +1,6 @@
 /* Curves: storage, the normalised position x_N (docs/models.md section 1), the CSV format with its
  * errors, and data sets (manifest, curve files, logs imported on reading).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/curve.h"
 #include "tirenv/dataset.h"

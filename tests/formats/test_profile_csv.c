@@ -1,5 +1,5 @@
 /* Profile CSV import: good files, and each malformed case with its line, column and field.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/profile_csv.h"
 

@@ -2,7 +2,7 @@
  * (tirenv_profile_read_tracks) or a row at a time (tirenv_profile_file_reader), the same
  * numbers as tirenv_crg_track per track, a 2-D road's heights on every track, errors passed on;
  * and a streamed sweep from the reader equals the whole one.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 

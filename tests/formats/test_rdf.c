@@ -1,6 +1,6 @@
 /* The TNO / Adams 2-D road reader and writer: the Simscape plateau sample, poly_line sides,
  * units, planks, flat roads, round trips and malformed files.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/profile_file.h"
 #include "tirenv/rdf.h"

@@ -1,7 +1,7 @@
 /* A NUL byte in a text file ended the C string: the rest of the line was dropped without a
  * word. Every line reader refuses it with file, line and column (docs/formats.md section 1):
  * profiles, the streaming profile, curves, rig logs, manifests, .tir and .veh files.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <stdio.h>

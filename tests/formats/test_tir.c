@@ -1,5 +1,5 @@
 /* The .tir reader, --set and writer, and the all-or-nothing output file.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/outfile.h"
 #include "tirenv/tir.h"

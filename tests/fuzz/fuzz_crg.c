@@ -4,7 +4,7 @@
  * whole grid, the reference line) and the format detector. Seeds: corpus/crg.
  * Build by hand: clang -g -O1 -fsanitize=fuzzer,address,undefined -Iinclude -Isrc
  *   tests/fuzz/fuzz_crg.c <the library's sources> -lcminpack -ljansson -lm
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdint.h>
 #include <stdlib.h>
 

@@ -1,5 +1,5 @@
 /* libFuzzer harness: the enveloping-curve CSV reader (tirenv_curve_read_csv).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/curve.h"
 

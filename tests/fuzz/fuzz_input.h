@@ -1,6 +1,6 @@
 /* What the libFuzzer harnesses share: the readers take file names, so each input is written
  * to one temporary file (made once, rewritten in place for every input) and read back.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #ifndef TIRENV_FUZZ_INPUT_H
 #define TIRENV_FUZZ_INPUT_H
 

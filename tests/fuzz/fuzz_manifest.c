@@ -1,7 +1,7 @@
 /* libFuzzer harness: a data set's manifest (cases.csv, tirenv_dataset_read). The input is the
  * manifest of a directory whose curves/ and logs/ hold the repository's data-set files
  * (linked), so that rows naming them go on to read them.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/dataset.h"
 

@@ -1,5 +1,5 @@
 /* libFuzzer harness: the network model file reader (tirenv_nn_read_json), and one prediction
- * with whatever network it accepts. SPDX-License-Identifier: GPL-3.0-or-later */
+ * with whatever network it accepts. SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/nn.h"
 #include "tirenv/nn_file.h"

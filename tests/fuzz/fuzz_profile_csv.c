@@ -1,5 +1,5 @@
 /* libFuzzer harness: the profile CSV reader (tirenv_profile_read_csv), and the extent and
- * sampling of whatever profile it accepts. SPDX-License-Identifier: GPL-3.0-or-later */
+ * sampling of whatever profile it accepts. SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/profile_csv.h"
 #include "tirenv/profile.h"

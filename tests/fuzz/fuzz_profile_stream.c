@@ -1,5 +1,5 @@
 /* libFuzzer harness: the streaming profile reader (tirenv_profile_reader_*), to the end of
- * the input or its first error. SPDX-License-Identifier: GPL-3.0-or-later */
+ * the input or its first error. SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/profile_csv.h"
 

@@ -2,7 +2,7 @@
  * for each side, and the format detector. Seeds: corpus/rdf.
  * Build by hand: clang -g -O1 -fsanitize=fuzzer,address,undefined -Iinclude -Isrc
  *   tests/fuzz/fuzz_rdf.c <the library's sources> -lcminpack -ljansson -lm
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdint.h>
 
 #include "tirenv/profile_file.h"

@@ -1,7 +1,7 @@
 /* libFuzzer harness: a rig log read and imported (tirenv_rig_import) as the paper's case F
  * (cleat 0.30 x 0.10 m, contact length 0.38 m, R0 0.68 m): the CSV reader, then the import's
  * baseline, obstacle location, smoothing and resampling on whatever it reads.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/rig.h"
 

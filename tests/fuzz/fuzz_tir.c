@@ -1,5 +1,5 @@
 /* libFuzzer harness: the .tir reader (tirenv_tir_read) on arbitrary bytes, then the checks
- * and the writer on whatever it accepted. SPDX-License-Identifier: GPL-3.0-or-later */
+ * and the writer on whatever it accepted. SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/tir.h"
 #include "tirenv/tire.h"

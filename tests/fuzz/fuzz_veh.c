@@ -1,5 +1,5 @@
 /* libFuzzer harness: the vehicle file reader (tirenv_vehicle_read) and its check.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/vehicle.h"
 #include "tirenv/vehicle_file.h"

@@ -4,7 +4,7 @@
 # FUZZ_SECONDS=N runs longer). New inputs go to WORK_DIR/corpus, never into the repository's
 # seed corpus; a crash, leak, hang (10 s per input) or sanitizer report writes its input to
 # WORK_DIR and fails, naming the file to reproduce it with (HARNESS FILE).
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 if [ $# -lt 3 ]; then
     echo "usage: $0 HARNESS SEED_CORPUS WORK_DIR [SECONDS]" >&2

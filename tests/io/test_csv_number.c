@@ -1,6 +1,6 @@
 /* The CSV readers' number parser against strtod, bit for bit: what tirenv and spreadsheets
  * write (%.9g, %.17g, %.6f, fixed decimals), long digit strings, exponents beyond the fast
- * path, signed zeros, and text strtod refuses. SPDX-License-Identifier: GPL-3.0-or-later */
+ * path, signed zeros, and text strtod refuses. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "io/csv_line.h"
 

@@ -3,7 +3,7 @@
  * digit-count and fixed/exponential boundaries, at the precisions in use (9, 10) and the
  * ends (1, 17). And the fast path must be what answers: a formatter that always called
  * snprintf would match byte for byte and gain nothing. SPDX-License-Identifier:
- * GPL-3.0-or-later */
+ * Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/numtext.h"
 #include "io/fmt.h"

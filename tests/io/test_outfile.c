@@ -1,6 +1,6 @@
 /* Output files and directories (include/tirenv/io.h): what each kind of target becomes, the
  * temporary names, the cleanup on a signal, the sweep of what a SIGKILL left, and the
- * output directory written as a whole. SPDX-License-Identifier: GPL-3.0-or-later */
+ * output directory written as a whole. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/outfile.h"
 #include "io/tmpfiles.h"

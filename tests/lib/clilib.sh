@@ -3,7 +3,7 @@
 # check, and small CSV predicates. Sourced after setting bin and data:
 #   . "$(dirname "$0")/../lib/clilib.sh"
 # Prints "ok N - what" / "not ok N - what" per check; end with clilib_done.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # Conditions are single-quoted shell code for eval (SC2016, SC2034); option lists in variables
 # are split on purpose (SC2086).
 # shellcheck disable=SC2016,SC2034,SC2086

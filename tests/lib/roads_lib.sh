@@ -1,7 +1,7 @@
 #!/bin/sh
 # What tests/cli/cli_roads.sh and tests/cli/cli_roads_grade.sh share: the sample files, a measured-like
 # OpenCRG road of their own, and the check that a road file gives the same curves as its track
-# converted to CSV. Sourced after clilib.sh. SPDX-License-Identifier: GPL-3.0-or-later
+# converted to CSV. Sourced after clilib.sh. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086,SC2154
 
 samples=${TIRENV_SAMPLES:-}

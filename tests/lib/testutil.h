@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Shared test helpers: cmocka 1.1 has no floating-point comparison. */
 #ifndef TIRENV_TESTUTIL_H
 #define TIRENV_TESTUTIL_H

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Sourced by tests/cli/jobs.sh and tests/study/study_runs.sh: two output trees equal apart from the
 # timings they report (--jobs changes how long a command takes, never what it computes).
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 
 # A report's text without what was timed: durations become T, and the lines of the timing
 # tables and the speed sentences (ratios of timings) go.

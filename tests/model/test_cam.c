@@ -1,7 +1,7 @@
 /* The tandem elliptical cam (docs/models.md section 7): the basic function against its closed form,
  * a brute-force oracle, its limits, the tandem's symmetry and double hump, the model type and
  * the MF-Swift example file, and the model's sweeps against single lifts, bit for bit.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Tolerances. Heights are below 1 m; the lift and each closed form take a handful of correctly
  * rounded operations (pow, exp, log, expm1, log1p: glibc's are within 1 ulp), so they agree to

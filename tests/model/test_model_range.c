@@ -1,7 +1,7 @@
 /* Each model's valid load range (docs/models.md section 1.3): loads and contact lengths
  * beyond it are TIRENV_ERANGE naming the load and the limit, in tirenv_model_flat,
  * tirenv_model_set and tirenv_model_load_for_contact_length; and the springs model's tip
- * contact with very fine elements. SPDX-License-Identifier: GPL-3.0-or-later */
+ * contact with very fine elements. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

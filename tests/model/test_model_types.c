@@ -1,7 +1,7 @@
 /* The table of model types: every model, the network and the point contact included, is a
  * type record whose properties (flags, fitted parameters, summary, plot style) say what it
  * can do, and those properties hold when the models run. SPDX-License-Identifier:
- * GPL-3.0-or-later */
+ * Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

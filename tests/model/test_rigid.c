@@ -1,5 +1,5 @@
 /* The rigid disc (docs/models.md section 3) against closed forms and a brute-force oracle.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Tolerances. Centre heights are below 1 m; the implementation and each closed form take a
  * handful of correctly rounded operations (a square root, a hypot, a few products), so they

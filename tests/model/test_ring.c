@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The flexible-ring reference tire (docs/models.md section 5): the prototype's figures, the
  * limit where it is the springs model, the contact conditions of tread and belt, symmetry,
  * derivative, blades, lugs. */

@@ -1,7 +1,7 @@
 /* The pruned scans of the rigid disc (block maxima, docs/models.md section 3) and of the elliptical
  * cam (docs/models.md section 7) against the plain scans they replace, on long random polylines and
  * roads: equal bit for bit, contact point included.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Exact equality is the contract, not a tolerance: the pruning only skips candidates strictly
  * below the final best, and ties resolve as in the plain scan's order (the rigid disc keeps

@@ -3,7 +3,7 @@
  * set afresh at that load (bit for bit where the model has no equilibrium to solve, within
  * the solver's tolerances where it has), a failed set_load leaves the model as it was, and a
  * restored state replays the same evaluations bit for bit, in the same instance or in a twin.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

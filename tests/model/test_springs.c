@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The springs model (docs/models.md section 4): closed forms, limits, LCP conditions, symmetry,
  * refinement, derivatives, methods, and an independent implementation. */
 #include <math.h>

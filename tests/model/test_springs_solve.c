@@ -2,7 +2,7 @@
  * section 4): the pinned-chain tip solve against the Thomas active-set solve, the fan of rays
  * (each walk resuming the last) and its reuse across centre heights against one ray at a time,
  * a workspace's kept state against a fresh workspace, and ground narrower than the rays.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * The rays are exact claims (the same operations on the same points, so the same bits); the
  * tip solve is a different formula for the same linear system, so it agrees to round-off: the

@@ -1,6 +1,6 @@
 /* Streamed sweeps (tirenv_model_stream): the same curve as over the whole profile in memory,
  * a window whose size does not grow with the road, and file:line errors from the reader.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 

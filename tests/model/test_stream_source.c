@@ -1,7 +1,7 @@
 /* Streamed sweeps from a vertex source that is not a file (tirenv_vertex_source): the core
  * takes its ground through a callback, so a generator in memory streams as the CSV reader
  * does, and a source handing vertices out of order is stopped with the vertex named.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 

@@ -2,7 +2,7 @@
  * tirenv_model_set bit for bit, a repeated profile is one track, a road flat on one half and
  * raised on the other gives something between, with the equilibrium's closed form on the
  * springs model without interradial springs, and a streamed sweep equals the whole one.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 

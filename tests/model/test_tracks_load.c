@@ -3,7 +3,7 @@
  * tracks gives the curve of tracks set afresh at the new load; the hub's clearance is checked
  * against every track, not only the first; a model set with several tracks refuses to save or
  * restore a state (a state is one track's).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 

@@ -3,7 +3,7 @@
  * gets the contact length, those made before it as well as after, so each track reaches the
  * network at exactly that l_c; the set in place stays in place, as with one track. And the
  * permission to extrapolate (tirenv_model_set_extrapolate) reaches every track's state too.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 #include "tirenv/nn.h"

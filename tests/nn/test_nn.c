@@ -1,7 +1,7 @@
 /* The network (docs/models.md section 6): layout, initialisation, scaling, evaluation against a
  * plain reference, batch against single samples, back-propagation against finite
  * differences, and the enveloping model built on it.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Tolerances.
  * - Reference evaluation: the network's own exp is within 3 ulp of libm's, so a logistic

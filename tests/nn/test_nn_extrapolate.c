@@ -1,7 +1,7 @@
 /* The network as a model outside its trained ranges (docs/models.md sections 6.3 and 12):
  * refused by tirenv_model_set naming the input, its value and the range, unless allowed by
  * tirenv_model_set_extrapolate, which evaluates it with a warning.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include "tirenv/rng.h"

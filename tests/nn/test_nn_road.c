@@ -4,7 +4,7 @@
  * constant offset shifts h by it; over an ISO 8608 road h is finite, between the baseline and
  * the ground's highest point in reach, and continuous but for the network's own step where a
  * curve begins; pruning changes no bit; bad arguments fail with the right code.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * The network is the study's, trained on the embedded (simulated) data set: Levenberg-
  * Marquardt, seed 1, one restart (0.03 s; the curves only need to be a trained network's,

@@ -2,7 +2,7 @@
 # tirenv embedded in another project with add_subdirectory (tests/package/embed/CMakeLists.txt) is
 # configured where pkg-config can see jansson and cminpack but not cmocka: it must configure.
 #   sh tests/package/embed.sh CMAKE SOURCE_DIR
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 cmake=$1 src=$2
 tmp=$(mktemp -d)

@@ -5,7 +5,7 @@
 #   sh tests/package/exports.sh LIBTIRENV.so INCLUDE_DIR MAJOR [--asan]
 # With --asan (a -fsanitize=address build) AddressSanitizer's __odr_asan.NAME, the one-
 # definition-rule indicator it adds beside each exported variable NAME, is left out.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 lib=$1 include=$2 major=$3 asan=${4:-}
 n=0 failed=0

@@ -2,7 +2,7 @@
 # The public headers as an embedder meets them: tirenv/tirenv.h includes every one of them,
 # and each compiles on its own (self-contained, strict C11, no warning).
 #   sh tests/package/headers.sh CC INCLUDE_DIR GENERATED_INCLUDE_DIR
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 cc=$1 include=$2 generated=$3
 n=0 failed=0

@@ -6,7 +6,7 @@
 # the installed 'tirenv envelope' bit for bit; then run the installed CLI with no
 # TIRENV_DATA from a directory unrelated to the clone.
 #   sh tests/package/install.sh CMAKE BUILD_DIR SOURCE_DIR VERSION
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 cmake=$1 build=$2 src=$3 version=$4
 major=${version%%.*}

@@ -5,7 +5,7 @@
  * contact and the network), tending to the level-ground 0 as s -> 0; streaming over a graded
  * road equals the whole road; and the road's local level (tirenv_profile_level), the exact
  * opening of the ground, against a dense brute force and on the shapes it is defined for.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* Profile object and generators (docs/models.md section 2).
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Tolerances. Heights here are O(0.1 m); an interpolation is three or four rounded
  * operations, so it is within a few ulp (about 1e-17 m) of the formula evaluated in the test.

@@ -1,6 +1,6 @@
 /* The ISO 8608 random road generator: class values, the PSD of a generated road against the
  * class's, exact scaling between classes, Parseval, reproducibility and refusals.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Ride comfort by ISO 2631-1: the weightings against the standard's table, the digital filters
  * against the analogue ones, the metrics on closed forms, Welch's PSD on known spectra, and
- * the refusals. SPDX-License-Identifier: GPL-3.0-or-later */
+ * the refusals. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

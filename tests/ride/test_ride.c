@@ -1,6 +1,6 @@
 /* The pitch-plane tractor (src/ride/ride.c) against static equilibrium, the analytic frequency
  * response of its quarter models, energy conservation without damping, and its solvers.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <complex.h>

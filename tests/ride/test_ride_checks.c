@@ -1,7 +1,7 @@
 /* What the ride refuses (src/ride/ride_checks.c, docs/models.md section 9.6): an RK4 step too
  * long for the vehicle's fastest mode, a vehicle whose static loads drown the dynamic tire
  * forces in rounding, and samples that are not finite.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -4,7 +4,7 @@
  * every sample the model's effective height at the load the tires then carry, exactly, and a
  * lifted tire's input is the lightest load's; tables over loads give the same within their
  * interpolation error, and the same comfort figures within a few tenths of a per cent.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* The vehicle of the ride simulation: default, check, static tire loads, and its property
- * file (reader, --set, writer). SPDX-License-Identifier: GPL-3.0-or-later */
+ * file (reader, --set, writer). SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/vehicle_file.h"
 

@@ -1,7 +1,7 @@
 /* What the virtual rig and the import of rig logs refuse, and what they import with a warning
  * (docs/models.md section 5.7): logs too sparse or with offsets that swallow the samples,
  * results implausible against the obstacle and the tire, sparse logs smoothed at the cap.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -1,7 +1,7 @@
 /* Rig-log import: a known curve recovered from synthetic logs (noise, offsets, direction,
  * rate, repeated and dropped samples) within a tolerance derived from the noise, the samples
  * behind each point and the smoother's bias; and every malformed log refused with file, line
- * and column, leaving no output file. SPDX-License-Identifier: GPL-3.0-or-later */
+ * and column, leaving no output file. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 #include "tirenv/curve.h"

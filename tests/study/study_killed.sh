@@ -13,7 +13,7 @@
 # directory like every other file). Usage: tests/study/study_killed.sh BIN TESTDATA_DIR.
 # TIRENV_KILL_SEED repeats a run's kill times. Each run draws new times, so that the runs of
 # the test over time cover the study's stages; ten kills a run cost twice the time of four.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # $run is split on purpose (SC2086).
 # shellcheck disable=SC2086
 set -u

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # tirenv study end to end on the embedded data set: every promised file, the simulated-data
 # label, one error row per validation case and model, and a fitted tire that reads back; and
 # the same study with --jobs 1 and --jobs 3 (more threads than cores) writing the same files

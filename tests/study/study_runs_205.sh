@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # tirenv study end to end on the 205/60R15 car tire's data set (simulated by TNO's MF-Swift
 # cam, as make demo runs it): every promised file, the simulated-data label naming the cam as
 # the reference, one error row per validation case and model, the data set's own tire used

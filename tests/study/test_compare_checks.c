@@ -1,6 +1,6 @@
 /* What compare refuses before it evaluates anything (docs/models.md section 8): a case listed
  * twice, which counted twice in the means, and a title with a control character, which broke
- * the report's Markdown heading. SPDX-License-Identifier: GPL-3.0-or-later */
+ * the report's Markdown heading. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <dirent.h>

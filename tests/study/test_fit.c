@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Identification: the fitter recovers the parameters that generated the curves. */
 #include <math.h>
 #include <stdio.h>

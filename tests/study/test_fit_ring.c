@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Identification of the ring (tirenv fit --model ring, docs/models.md section 8.4): its
  * foundation and tread recovered from its own curves, the optional belt parameters listed,
  * and a start the model refuses reported as an error rather than fitted. */

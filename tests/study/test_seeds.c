@@ -1,7 +1,7 @@
 /* The network over seeds (tirenv_nn_train_seeds): every seed is the plain training run of
  * that seed, each figure is recomputed here from the curves, the quartiles are R's type 7 of
  * the sorted figures, and the model handed back is the seed nearest the median.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Data: the embedded data set's 28-case design, each case's curve the smooth function
  * h = H (1 + tanh(5(x_N - 0.55) + 4(L - 0.2) - 6(l_c - 0.355)))/2 at 21 x_N (as

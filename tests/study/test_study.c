@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The comparison (docs/models.md section 8): curve errors on hand-made curves with known answers,
  * per-case predictions against the curves that generated them, and tirenv_compare end to end
  * on a small synthetic data set, down to the images gnuplot draws. */

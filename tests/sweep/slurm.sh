@@ -10,7 +10,7 @@
 # in README.md).
 # Exit 0 on success, 1 on failure, 77 (CTest's SKIP_RETURN_CODE) with a loud "SKIPPED: ..."
 # line when Slurm cannot start here (not root, the packages missing, the daemons failing).
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 set -u
 bin=$1 src=$2
 case $bin in /*) ;; *) bin=$PWD/$bin ;; esac

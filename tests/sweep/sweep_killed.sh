@@ -3,7 +3,7 @@
 # second a case), then the same command: it keeps what was written and finishes with the
 # bytes of an uninterrupted run. Labelled slow (the sanitizer build's ring would take
 # minutes). Usage: sh sweep_killed.sh BIN TESTDATA_DIR.
-# SPDX-License-Identifier: GPL-3.0-or-later
+# SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2154 # conditions are single-quoted for eval; bin is clilib's
 # shellcheck source=tests/lib/clilib.sh
 . "$(dirname "$0")/../lib/clilib.sh"

@@ -2,7 +2,7 @@
  * seed, the checks, and runs: the same bytes for any number of jobs, shards merged equal to
  * one run, a data set tirenv_dataset_read reads, a resumed run equal to an uninterrupted one,
  * and the refusals (another sweep in the way, incomplete or missing shards).
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "tirenv/dataset.h"
 #include "tirenv/sweep.h"

@@ -2,7 +2,7 @@
  * data set's 28-case design, early stopping keeps the best control weights, restarts keep the
  * best restart, runs are bit-for-bit reproducible, and model files round-trip exactly and
  * refuse every kind of damage with a message naming file and field.
- * SPDX-License-Identifier: GPL-3.0-or-later
+ * SPDX-License-Identifier: Apache-2.0
  *
  * The known function: h = H * (1 + tanh(5(x_N - 0.55) + 4(L - 0.2) - 6(l_c - 0.355)))/2, a
  * smooth rise to H that depends on all four inputs, sampled like a rig curve at 21 x_N from

@@ -1,6 +1,6 @@
 /* Training that diverges is an error (docs/models.md section 6.4): backprop at a learning
  * rate of 1e6 used to return its initial weights as the model with TIRENV_OK.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

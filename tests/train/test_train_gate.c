@@ -1,6 +1,6 @@
 /* One progress callback shared by trainings that run at once (tirenv_train_progress_gate):
  * its calls never overlap, and its request to stop holds for every later call.
- * SPDX-License-Identifier: GPL-3.0-or-later */
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The README's program, line for line after this line (tests/package/install.sh checks it). */
 /* envelope.c: the springs model's enveloping curve over a 0.30 x 0.10 m cleat at a 0.33 m
  * contact length, every 1 mm, in the CSV that 'tirenv envelope' writes.
