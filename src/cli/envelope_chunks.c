@@ -2,7 +2,9 @@
 /* One sweep on several threads (envelope_chunks.h). A model instance is not thread-safe, so
  * every thread has its own, set on the same (read-only) profiles; the cold state saved from
  * the caller's model right after it was set is restored before every chunk, so that no chunk
- * depends on which thread ran it, nor on what that thread ran before. */
+ * depends on which thread ran it, nor on what that thread ran before. A model set on several
+ * tracks has no state to save (tirenv_model_state_save is for one track): each chunk sets its
+ * model on the tracks again, which leaves it as cold as the first set did. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,6 +18,9 @@ struct cli_chunks {
     size_t cold_size;
     double x_from, dx;      /* m */
     size_t n;               /* positions in the sweep */
+    size_t n_tracks;        /* > 1: the chunks start by setting the tracks again */
+    const tirenv_profile *const *tracks;
+    double load;            /* N */
     /* the call under way */
     size_t c0;
     tirenv_point *pt;
@@ -58,14 +63,18 @@ int cli_chunks_open(tirenv_model *m, const tirenv_model_type *type, const cli_op
     c->x_from = x_from;
     c->dx = dx;
     c->n = n;
-    c->cold_size = tirenv_model_state_size(m);
+    c->n_tracks = n_tracks;
+    c->tracks = tracks;
+    c->load = load;
+    c->cold_size = n_tracks > 1 ? 0 : tirenv_model_state_size(m);
     c->models = calloc(jobs, sizeof *c->models);
     c->x = malloc(jobs * CLI_CHUNK * sizeof *c->x);
     c->cold = malloc(c->cold_size ? c->cold_size : 1);
     int status = c->models && c->x && c->cold ? TIRENV_OK : no_memory(diag);
     if (!status) {
         c->models[0] = m;
-        status = tirenv_model_state_save(m, c->cold, c->cold_size, diag);
+        if (n_tracks <= 1)
+            status = tirenv_model_state_save(m, c->cold, c->cold_size, diag);
     }
     for (size_t w = 1; w < jobs && !status; ++w) {
         if (cli_model(type, tirenv_model_tire(m), o, &c->models[w]))
@@ -102,7 +111,9 @@ static int chunk(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
     for (size_t k = 0; k < n; ++k)
         x[k] = c->x_from + (double)(k0 + k) * c->dx;
     tirenv_model *m = c->models[worker];
-    int status = tirenv_model_state_restore(m, c->cold, c->cold_size, diag);
+    int status = c->n_tracks > 1
+                     ? tirenv_model_set_tracks(m, c->n_tracks, c->tracks, NULL, c->load, diag)
+                     : tirenv_model_state_restore(m, c->cold, c->cold_size, diag);
     if (!status)
         status = tirenv_model_envelope(m, n, x, c->pt + item * CLI_CHUNK, NULL, diag);
     return status;

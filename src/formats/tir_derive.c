@@ -129,25 +129,54 @@ static double nominal_deflection(const mf_keys *k, double *factor, const char **
     return x * k->R0;
 }
 
-/* Scales the stiffnesses that make the load of a model at a given deflection (all of them:
- * its load at a fixed deflection is proportional to them) so that it carries FNOMIN at
- * rho_n. */
-static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const stiff[],
-                    size_t n, double fnomin, double rho_n, tirenv_diag *diag)
+/* The load (N) of a model of *t at deflection rho_n on flat ground. */
+static int load_at(const tirenv_model_type *type, const tirenv_tire *t, double rho_n,
+                   double guess, double *G, tirenv_diag *diag)
 {
     tirenv_model *m = tirenv_model_alloc(type, t);
     if (!m)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, tirenv_model_type_name(type),
                             "the %s model of the derived shape is not a valid tire",
                             tirenv_model_type_name(type));
-    double G;
-    const int status = tirenv_flat__load_at_deflection(m, rho_n, fnomin, &G, diag);
+    const int status = tirenv_flat__load_at_deflection(m, rho_n, guess, G, diag);
     tirenv_model_free(m);
+    return status;
+}
+
+/* Scales the stiffnesses stiff[] by one factor c so that the model carries FNOMIN at rho_n.
+ * Where they make all of the load (springs) the load is proportional to c and one step is
+ * exact; the ring's air (INFLPRES) carries a share that c does not scale, so c is found by a
+ * secant on log c (the load grows monotonically with c), to 1e-8 of FNOMIN (ten times the flat
+ * inversion's own tolerance on the deflection, 1e-9; the tests assert 1e-7). */
+static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const stiff[],
+                    size_t n, double fnomin, double rho_n, tirenv_diag *diag)
+{
+    enum { MAX_STIFF = 8, MAX_STEPS = 60 };
+    double base[MAX_STIFF];
+    for (size_t i = 0; i < n; i++)
+        base[i] = *stiff[i];
+    double u0 = 0, g0, G;
+    int status = load_at(type, t, rho_n, fnomin, &G, diag);
     if (status)
         return status;
-    for (size_t i = 0; i < n; i++)
-        *stiff[i] *= fnomin / G;
-    return TIRENV_OK;
+    g0 = log(G / fnomin);
+    double u1 = -g0;  /* the proportional step */
+    for (int step = 0; step < MAX_STEPS; step++) {
+        for (size_t i = 0; i < n; i++)
+            *stiff[i] = base[i] * exp(u1);
+        if ((status = load_at(type, t, rho_n, fnomin, &G, diag)))
+            return status;
+        const double g1 = log(G / fnomin);
+        if (fabs(g1) <= 1e-8)
+            return TIRENV_OK;
+        const double u2 = g1 != g0 ? u1 - g1 * (u1 - u0) / (g1 - g0) : u1 - g1;
+        u0 = u1, g0 = g1;
+        u1 = fmax(u1 - 5, fmin(u1 + 5, u2));  /* at most a factor e^5 a step */
+    }
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "VERTICAL_STIFFNESS",
+                        "the %s model's stiffnesses found no scale carrying FNOMIN %g N at "
+                        "the file's deflection %g m (its air alone may carry more)",
+                        tirenv_model_type_name(type), fnomin, rho_n);
 }
 
 /* docs/models.md section 14.2: the default tire's springs, c_b/c_r kept (a length ratio of
@@ -181,9 +210,15 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, tirenv_di
     const tirenv_tire d = tirenv_tire_default();
     const double H_d = d.springs.R0 - 14 * 0.0254;  /* 380/85R28 on a 28 in rim */
     const double H = section_height(k);
+    const double p = t->ring.p, p_nom = t->ring.p_nom;  /* the file's, or the default's */
     t->ring = d.ring;
+    t->ring.p = p;
+    t->ring.p_nom = p_nom;
     t->ring.t_r = d.ring.t_r * (H > 0 ? H / H_d : k->R0 / d.springs.R0);
     const double s = (k->R0 - t->ring.t_r) / (d.springs.R0 - d.ring.t_r);
+    /* The crown the air presses on: the default's share of its 0.38 m section width. */
+    t->ring.b_p = (k->given & MF_WIDTH) && k->width > 0 ? d.ring.b_p * k->width / 0.38
+                                                        : d.ring.b_p * s;
     t->ring.EI = d.ring.EI * s * s * s * s;
     t->ring.T = d.ring.T * s * s;
     double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};

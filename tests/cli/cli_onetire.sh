@@ -25,7 +25,7 @@ check "identify --loads with one load: exit 1 saying two are needed" \
     '[ $rc -eq 1 ] && grep -q "at least two loads" err'
 
 # --- an MF-Tyre file without tirenv's sections ---------------------------------------------
-mf=$data/tir/mf_185_80R14.tir
+mf=$data/samples/tir/mf_185_80R14.tir
 run "$bin" flat --tire "$mf" --csv
 check "flat on an MF-Tyre file: its own loads 0.5 to 1.5 FNOMIN (1900 to 5700 N), derived values said" \
     '[ $rc -eq 0 ] && [ $(rows out) -eq 5 ] && [ "$(sed -n 2p out | cut -d, -f1)" = 1900 ] &&

@@ -106,16 +106,16 @@ static void test_model_pairs(void **state)
 
 /* The MF-Tyre files the tests have, none with a tirenv section but 205-60R15-mfswift.tir. */
 static const char *const mf_files[] = {
-    TIRENV_TEST_DATA "/tir/335_65R22_5_G275MSA_60psi.tir",
-    TIRENV_TEST_DATA "/tir/HMMWV_Pac02Tire.tir",
-    TIRENV_TEST_DATA "/tir/Truck_430_50R38-excerpt.tir",
-    TIRENV_TEST_DATA "/tir/mf_185_80R14.tir",
+    TIRENV_TEST_DATA "/samples/tir/335_65R22_5_G275MSA_60psi.tir",
+    TIRENV_TEST_DATA "/samples/tir/HMMWV_Pac02Tire.tir",
+    TIRENV_TEST_DATA "/samples/tir/tractor_430_50R38.tir",
+    TIRENV_TEST_DATA "/samples/tir/mf_185_80R14.tir",
     TIRENV_TEST_DATA "/tir_mftyre.tir",
 };
 
 /* Derived springs and ring: each carries FNOMIN at the file's deflection (to the 1e-9 of the
  * inversion), so its secant stiffness there is the file's VERTICAL_STIFFNESS within 10 %
- * (exact for a linear law; the truck excerpt's Q_FZ2 makes it tangent, 0.6 % apart); none
+ * (exact for a linear law); none
  * keeps the tractor's values. */
 static void test_derived_from_mftyre(void **state)
 {
