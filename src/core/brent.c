@@ -5,7 +5,7 @@
  * the steps shrink fast enough, else bisect; never step less than the round-off tolerance
  * 0.5 eps |b|. The arithmetic follows the procedure term by term, the order GSL's
  * gsl_root_fsolver_brent uses too, so the roots the library found through GSL are found again
- * to the bit (tests/test_brent.c holds closed-form roots and the failure cases). */
+ * to the bit (tests/core/test_numerics.c holds closed-form roots and the failure cases). */
 #include "core/brent.h"
 
 #include <float.h>

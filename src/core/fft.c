@@ -3,7 +3,7 @@
  * Algorithms, 3rd ed., section 30.3): bit-reversal permutation, then log2 n passes of
  * butterflies. Each twiddle factor is computed by cos/sin of its own angle, not by repeated
  * multiplication, so its error stays at round-off whatever n (the error of the transform then
- * grows as log n, as for any FFT); tests/test_fft.c checks it against the direct sum. */
+ * grows as log n, as for any FFT); tests/core/test_numerics.c checks it against the direct sum. */
 #include "core/fft.h"
 
 #include <math.h>
