@@ -144,7 +144,15 @@ def test_road_and_read_equal_the_cli(cli, tmp_path):
     assert rc == 0, err
     m = tirenv.Model("springs")
     m.set(read, 11903.6)
-    assert csv_rows(m.sweep()) == out.read_text().splitlines()[1:]
+    # The CLI's sweep starts cold every 8192 positions (its --jobs chunks, docs/models.md
+    # section 2.4), the Python sweep runs warm throughout: the same values in every column,
+    # the iterations apart at a chunk's first row.
+    py, cli_rows = csv_rows(m.sweep()), out.read_text().splitlines()[1:]
+    assert len(py) == len(cli_rows) > 8192
+    for k, (a, b) in enumerate(zip(py, cli_rows)):
+        if k % 8192 == 0:
+            a, b = a.rsplit(",", 1)[0], b.rsplit(",", 1)[0]
+        assert a == b, k
 
 
 def test_profile_from_arrays():

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """Tires: the built-in default, or a .tir file, with keys overridden as --set does; the keys
 read back as a mapping."""
+import collections
 import collections.abc
 
 from ._c import ffi, lib, check, new_diag, path_bytes
@@ -13,11 +14,14 @@ def _assignment(key, value):
 
 
 def _keys():
-    names, i = [], 0
-    while (k := lib.tirenv_tir_key(i, ffi.NULL)) != ffi.NULL:
-        names.append(ffi.string(k).decode())
+    """The keys in file order; one that two sections share (CONTACT) as SECTION.KEY, the
+    form tirenv_tir_get and --set take for it."""
+    pairs, i, section = [], 0, ffi.new("char **")
+    while (k := lib.tirenv_tir_key(i, section)) != ffi.NULL:
+        pairs.append((ffi.string(section[0]).decode(), ffi.string(k).decode()))
         i += 1
-    return tuple(names)
+    counts = collections.Counter(key for _, key in pairs)
+    return tuple(f"{sec}.{key}" if counts[key] > 1 else key for sec, key in pairs)
 
 
 class Tire(collections.abc.Mapping):

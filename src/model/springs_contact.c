@@ -186,7 +186,8 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     /* the rays' penetrations at the ends of sector ci and the chord's slack there */
     size_t ci = SIZE_MAX;
     double P_l = 0, P_r = 0, slack_tau = 0;
-    tirenv_springs__cc_row *out = c->rows + c->n_rows;
+    /* rows is NULL while nothing was reserved (no vertex in reach): no offset on it then */
+    tirenv_springs__cc_row *out = c->rows ? c->rows + c->n_rows : NULL;
     for (; j < j_end; ++j) {
         const double dx = X[j] - x, dz = z - Z[j];
         if (!(dz > 0))

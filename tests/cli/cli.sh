@@ -90,7 +90,7 @@ for c in 1 2 3 4; do
     [ $# -eq 8 ] || set -- missing-reference-case x x x x x x x
     run "$bin" envelope --model springs --set UNLOADED_RADIUS="$1" --set RADIAL_STIFFNESS="$2" \
         --set INTERRADIAL_STIFFNESS="$3" --set SEGMENT_ANGLE="$5" --set ELEMENT_ANGLE="$4" \
-        --set CONTACT=rays \
+        --set ENVELOPING_SPRINGS.CONTACT=rays \
         --cleat "$7,$8" --contact-length "$6" --x-from -0.5 --x-to 0.1 --dx 0.05 -o ref$c.csv
     check "reference case $c through --set: h within 1e-8 m, load within 1e-3 N" \
         '[ $rc -eq 0 ] && matches_reference ref$c.csv $c "$ref"'
@@ -135,7 +135,7 @@ check "load beyond what the tire carries: exit 3 naming the load, no file" \
 # The paper's plain secant has no bracket; over case R's cleat at the largest contact length
 # it runs away at the corner where the rays' F_z jumps, and the message must say where.
 run "$bin" envelope --model springs --cleat 0.10,0.10 --contact-length 0.38 --method secant \
-    --set CONTACT=rays -o o.csv
+    --set ENVELOPING_SPRINGS.CONTACT=rays -o o.csv
 check "no convergence: exit 3 naming the position x, no file" \
     '[ $rc -eq 3 ] && grep -q "x = -\{0,1\}[0-9.]* m" err && no_file o.csv'
 # With the continuous contact F_z does not jump there, and the same secant converges.

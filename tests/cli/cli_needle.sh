@@ -8,7 +8,7 @@
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"
 
-needle='--cleat 1e-9,0.1 --load 13000 --set CONTACT=rays'
+needle='--cleat 1e-9,0.1 --load 13000 --set ENVELOPING_SPRINGS.CONTACT=rays'
 
 run "$bin" envelope --model springs $needle -o n.csv
 check "a 1e-9 m x 0.1 m needle: springs refuses it, exit 2" '[ "$rc" -eq 2 ]'
@@ -22,12 +22,12 @@ run "$bin" envelope --model springs $needle --x-from -0.02 --x-to 0.02 --dx 0.00
 check "right over the needle too (h = 0 there before)" \
     '[ "$rc" -eq 2 ] && grep -q "1e-09 m wide" err && no_file n0.csv'
 
-run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 --set CONTACT=rays -o p.csv
+run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 --set ENVELOPING_SPRINGS.CONTACT=rays -o p.csv
 check "a 4 mm plate, narrower than the 5.9 mm spacing: refused" \
     '[ "$rc" -eq 2 ] && grep -q "0.004 m wide" err && no_file p.csv'
 
 run "$bin" envelope --model springs --cleat 0.004,0.1 --load 13000 --set ELEMENT_ANGLE=0.0025 \
-    --set CONTACT=rays -o p2.csv
+    --set ENVELOPING_SPRINGS.CONTACT=rays -o p2.csv
 check "the same plate with 0.0025 rad elements (1.7 mm apart): resolved" \
     '[ "$rc" -eq 0 ] && [ "$(rows p2.csv)" -gt 100 ]'
 

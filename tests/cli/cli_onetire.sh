@@ -47,9 +47,11 @@ val_rms=$(awk '$1 == "validation" { print $3 }' out)
 check "train records the contact law of the data's tire (the ring of source.txt)" \
     '[ $rc -eq 0 ] && [ -n "$val_rms" ] && grep -q "contact_law" nn.json &&
      grep -q "the ring model" nn.json'
-run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12935.16 -o e.csv
-check "envelope --model nn --load 12935.16: the ring's 0.28 m, not the springs chord" \
-    '[ $rc -eq 0 ] && grep -q "contact length 0.28 m" err'
+# 13 kN, just above case R's 12963.52 N (whose 0.28 m is the trained range's very edge, which
+# the recorded law's interpolation puts 1e-6 m below it)
+run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 13000 -o e.csv
+check "envelope --model nn --load 13000: the ring's 0.28 m, not the springs chord's 0.42 m" \
+    '[ $rc -eq 0 ] && grep -q "contact length 0\.28[0-9]* m" err'
 run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 6000 -o o.csv
 check "an older network file: read, with a warning naming training.data.contact_law" \
     '[ $rc -eq 0 ] && grep -q "warning: .*training.data.contact_law" err'
