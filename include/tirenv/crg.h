@@ -33,7 +33,9 @@ typedef struct tirenv_crg tirenv_crg;
  * count against REFERENCE_LINE_END_U, NaN only at the borders of a cross section, the
  * reference line channels) and keeps only what a track needs besides the grid (the reference
  * line's height per row when it has a slope channel, and for the text encodings the file
- * position of every 1024th row). The grid stays in the file. Errors name the file and the
+ * position of every 1024th row). The grid stays in the file. The modifiers' placement by
+ * reference point (REFPOINT_*, or OpenCRG's defaults without $ROAD_CRG_MODS) is worked out
+ * here, reading the reference line once more if it is curved. Errors name the file and the
  * line (header, text data) or byte offset (binary data) and the key or channel. */
 int tirenv_crg_open(const char *path, tirenv_crg **out, tirenv_diag *diag);
 
@@ -68,8 +70,9 @@ typedef struct {
      * repeat, reflect), plus BORDER_OFFSET_V. */
     int border_mode_v;
     /* A NaN grid value the track needs: -1 takes the file's $ROAD_CRG_MODS GRID_NAN_MODE, or
-     * 0 without one; 0 refuses the track naming the row and long section; 1 takes 0, 2 the
-     * nearest valid value of the cross section, both plus GRID_NAN_OFFSET. */
+     * OpenCRG's default 2 in a file without that section, or 0 in one that does not set it;
+     * 0 refuses the track naming the row and long section; 1 takes 0, 2 the nearest valid
+     * value of the cross section, both plus GRID_NAN_OFFSET. */
     int grid_nan_mode;
     /* With grid_nan_mode 1 or 2 set here (not -1): what is added to the filled value (mode 1:
      * the value itself) instead of the file's GRID_NAN_OFFSET; NaN takes the file's. */
@@ -82,7 +85,9 @@ tirenv_crg_track_spec tirenv_crg_track_default(void);
 /* The track as a profile: x = u of every row (m), z = the road's height there (m): the grid
  * interpolated linearly between the two long sections around v, plus the reference line's
  * height (REFERENCE_LINE_START_Z, the slope channel or REFERENCE_LINE_START_S, and
- * REFERENCE_LINE_OFFSET_Z), plus banking times v. *out is NULL on failure. */
+ * REFERENCE_LINE_OFFSET_Z), plus banking times v, shifted as the modifiers say (REFPOINT_Z,
+ * or OpenCRG's default modifiers in a file without $ROAD_CRG_MODS: docs/formats.md section
+ * 5). *out is NULL on failure. */
 int tirenv_crg_track(const tirenv_crg *crg, const tirenv_crg_track_spec *spec,
                      tirenv_profile **out, tirenv_diag *diag);
 
@@ -105,8 +110,9 @@ int tirenv_crg_grid_rows(const tirenv_crg *crg, size_t first, size_t count, doub
  * heading of the segment that ends at each row into phi[rows] (rad; phi[0] is the first
  * segment's). Integrated from REFERENCE_LINE_START_X/Y with the heading channel, the end
  * position's mismatch (if REFERENCE_LINE_END_X/Y are given) spread linearly along the line as
- * OpenCRG does; REFERENCE_LINE_OFFSET_X/Y/PHI and $ROAD_CRG_MODS REFLINE_* applied. Any of
- * x, y, phi may be NULL. */
+ * OpenCRG does; REFERENCE_LINE_OFFSET_X/Y/PHI and $ROAD_CRG_MODS REFLINE_* or REFPOINT_*
+ * applied (OpenCRG's default REFPOINT_* in a file without that section). Any of x, y, phi
+ * may be NULL. */
 int tirenv_crg_refline(const tirenv_crg *crg, double x[], double y[], double phi[],
                        tirenv_diag *diag);
 

@@ -51,6 +51,11 @@ static int open_source(tirenv_crg *c, tirenv_crg **out, tirenv_diag *diag)
         return status;
     }
     c->z_offset = c->road[CRG_RL_OFFSET_Z].value + c->mods[CRG_MOD_REFLINE_OFFSET_Z].value;
+    status = tirenv_crg__place(c, diag);
+    if (status) {
+        tirenv_crg_free(c);
+        return status;
+    }
     *out = c;
     return TIRENV_OK;
 }
@@ -163,8 +168,7 @@ static int track_setup(const tirenv_crg *c, const tirenv_crg_track_spec *spec, t
                          ? spec->border_mode_v
                          : (int)opt_or(&c->opts[CRG_OPT_BORDER_MODE_V], 0);
     t->border_offset = c->opts[CRG_OPT_BORDER_OFFSET_V].value;
-    t->nan_mode = spec->grid_nan_mode >= 0 ? spec->grid_nan_mode
-                                           : (int)opt_or(&c->mods[CRG_MOD_GRID_NAN_MODE], 0);
+    t->nan_mode = spec->grid_nan_mode >= 0 ? spec->grid_nan_mode : tirenv_crg__nan_mode(c);
     if (isinf(spec->grid_nan_offset))
         return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "grid_nan_offset",
                             "%g: expected a finite height, or NaN for the file's",
@@ -379,6 +383,12 @@ int tirenv_crg_grid_rows(const tirenv_crg *c, size_t first, size_t count, double
 int tirenv_crg_refline(const tirenv_crg *c, double x[], double y[], double phi[],
                        tirenv_diag *diag)
 {
+    return tirenv_crg__refline(c, 1, x, y, phi, diag);
+}
+
+int tirenv_crg__refline(const tirenv_crg *c, int refpoint, double x[], double y[],
+                        double phi[], tirenv_diag *diag)
+{
     const size_t n = c->nu;
     double *px = x ? x : malloc(n * sizeof *px), *py = y ? y : malloc(n * sizeof *py);
     double *pp = phi ? phi : malloc(n * sizeof *pp);
@@ -437,6 +447,18 @@ int tirenv_crg_refline(const tirenv_crg *c, double x[], double y[], double phi[]
             px[i] = rcx + cos(rot) * (gx - rcx) - sin(rot) * (gy - rcy) + mx;
             py[i] = rcy + sin(rot) * (gx - rcx) + cos(rot) * (gy - rcy) + my;
             pp[i] += po + rot;
+        }
+        /* The placement by reference point (crg_place.c; never with the REFLINE_OFFSET_*
+         * modifiers): turned about the reference point, then moved to where it goes. */
+        if (refpoint && c->refpoint) {
+            const double cr = cos(c->rp_rot), sr = sin(c->rp_rot);
+            const double fx = c->rp_from_x, fy = c->rp_from_y;
+            for (size_t i = 0; i < n; i++) {
+                const double dx = px[i] - fx, dy = py[i] - fy;
+                px[i] = c->rp_x + cr * dx - sr * dy;
+                py[i] = c->rp_y + sr * dx + cr * dy;
+                pp[i] += c->rp_rot;
+            }
         }
     }
     free(vals);

@@ -70,8 +70,9 @@ static const opt_def opt_defs[] = {
 };
 
 /* Every modifier of the specification. Those with used >= 0 are applied (they shift or scale
- * heights, fill border NaNs, or move the reference line in x/y); the others re-scale or
- * re-place the road in ways tirenv does not implement, and are refused rather than ignored. */
+ * heights, fill border NaNs, or move the reference line in x/y, by offsets or by a reference
+ * point); the SCALE_* others re-shape the road in ways tirenv does not implement, and are
+ * refused rather than ignored. */
 typedef struct {
     const char *name;
     int used;              /* index into c->mods, or -1 (refused) */
@@ -87,16 +88,16 @@ static const mod_def mod_defs[] = {
     {"REFLINE_OFFSET_X", CRG_MOD_REFLINE_OFFSET_X},
     {"REFLINE_OFFSET_Y", CRG_MOD_REFLINE_OFFSET_Y},
     {"REFLINE_OFFSET_Z", CRG_MOD_REFLINE_OFFSET_Z},
-    {"REFPOINT_U", -1},
-    {"REFPOINT_V", -1},
-    {"REFPOINT_U_FRACTION", -1},
-    {"REFPOINT_U_OFFSET", -1},
-    {"REFPOINT_V_FRACTION", -1},
-    {"REFPOINT_V_OFFSET", -1},
-    {"REFPOINT_X", -1},
-    {"REFPOINT_Y", -1},
-    {"REFPOINT_Z", -1},
-    {"REFPOINT_PHI", -1},
+    {"REFPOINT_U", CRG_MOD_REFPOINT_U},
+    {"REFPOINT_V", CRG_MOD_REFPOINT_V},
+    {"REFPOINT_U_FRACTION", CRG_MOD_REFPOINT_U_FRACTION},
+    {"REFPOINT_U_OFFSET", CRG_MOD_REFPOINT_U_OFFSET},
+    {"REFPOINT_V_FRACTION", CRG_MOD_REFPOINT_V_FRACTION},
+    {"REFPOINT_V_OFFSET", CRG_MOD_REFPOINT_V_OFFSET},
+    {"REFPOINT_X", CRG_MOD_REFPOINT_X},
+    {"REFPOINT_Y", CRG_MOD_REFPOINT_Y},
+    {"REFPOINT_Z", CRG_MOD_REFPOINT_Z},
+    {"REFPOINT_PHI", CRG_MOD_REFPOINT_PHI},
     {"SCALE_SLOPE", -1},
     {"SCALE_BANKING", -1},
     {"SCALE_LENGTH", -1},
@@ -233,8 +234,8 @@ static int key_line(parse *p, section sec, char *text)
             return status;
         if (d->used < 0)
             return fail(p, key, d->name, "modifier not supported by tirenv (it re-scales or "
-                        "re-places the road); supported are GRID_NAN_MODE, GRID_NAN_OFFSET, "
-                        "SCALE_Z_GRID and the REFLINE_* offsets");
+                        "re-shapes the road); supported are GRID_NAN_MODE, GRID_NAN_OFFSET, "
+                        "SCALE_Z_GRID, the REFLINE_* offsets and the REFPOINT_* placement");
         if (d->used == CRG_MOD_GRID_NAN_MODE && !(v == 0 || v == 1 || v == 2))
             return fail(p, value, d->name, "expected 0, 1 or 2, got %.17g", v);
         return store(p, &c->mods[d->used], d->name, value, v);
@@ -435,6 +436,8 @@ static int section_line(parse *p, char *text, section *sec)
             return fail(p, kw, section_names[s], "file references are not supported; open "
                         "the referenced OpenCRG file itself");
         p->seen[s] = p->at.line;
+        if (s == SEC_MODS)
+            p->c->has_mods = 1;  /* even empty: OpenCRG then drops its default modifiers */
         *sec = (section)s;
         return TIRENV_OK;
     }
@@ -615,6 +618,7 @@ static int finish(parse *p, size_t last_line)
         }
     if (!(c->v = malloc(c->nv * sizeof *c->v)))
         return tirenv_error(p->at.diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
+    p->c->v_numbered = p->names[0].numbered;
     return p->names[0].numbered ? numbered_positions(p) : explicit_positions(p);
 }
 

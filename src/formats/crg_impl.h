@@ -44,6 +44,9 @@ enum {
     CRG_MOD_GRID_NAN_MODE, CRG_MOD_GRID_NAN_OFFSET, CRG_MOD_SCALE_Z_GRID,
     CRG_MOD_REFLINE_ROTCENTER_X, CRG_MOD_REFLINE_ROTCENTER_Y, CRG_MOD_REFLINE_OFFSET_PHI,
     CRG_MOD_REFLINE_OFFSET_X, CRG_MOD_REFLINE_OFFSET_Y, CRG_MOD_REFLINE_OFFSET_Z,
+    CRG_MOD_REFPOINT_U, CRG_MOD_REFPOINT_U_FRACTION, CRG_MOD_REFPOINT_U_OFFSET,
+    CRG_MOD_REFPOINT_V, CRG_MOD_REFPOINT_V_FRACTION, CRG_MOD_REFPOINT_V_OFFSET,
+    CRG_MOD_REFPOINT_X, CRG_MOD_REFPOINT_Y, CRG_MOD_REFPOINT_Z, CRG_MOD_REFPOINT_PHI,
     CRG_MODS_USED
 };
 
@@ -62,7 +65,18 @@ struct tirenv_crg {
     tirenv_crg__value road[CRG_ROAD_KEYS];
     tirenv_crg__value opts[CRG_OPTS_USED];
     tirenv_crg__value mods[CRG_MODS_USED];
-    int has_mods;             /* a $ROAD_CRG_MODS section was present */
+    int has_mods;             /* a $ROAD_CRG_MODS section was present; without one OpenCRG's
+                               * default modifiers apply: GRID_NAN_MODE 2 and REFPOINT_X, _Y,
+                               * _Z, _PHI = 0 (crg_place.c) */
+
+    /* The placement by reference point (REFPOINT_*, given or OpenCRG's defaults): the line
+     * is turned by rp_rot about the reference point (rp_from_x, rp_from_y) as the header
+     * places it, then moved so that that point lies at (rp_x, rp_y); heights move by the
+     * difference between REFPOINT_Z and the road's height there (in z_offset). */
+    int refpoint;
+    double rp_from_x, rp_from_y; /* m */
+    double rp_rot;               /* rad */
+    double rp_x, rp_y;           /* m */
 
     /* Channels: columns of a data row. */
     size_t nch;
@@ -72,6 +86,7 @@ struct tirenv_crg {
     size_t *ch_z;             /* column of long section j */
     size_t *kd_line_z;        /* its D: line */
     double *v;                /* its lateral position, ascending, m */
+    int v_numbered;           /* long sections numbered (else at given v) */
 
     /* Rows. */
     size_t nu;
@@ -86,7 +101,8 @@ struct tirenv_crg {
      * * s0), m; its banking when it has no banking channel. */
     double *rz;
     double z0, s0, b0;
-    double z_offset;          /* REFERENCE_LINE_OFFSET_Z + REFLINE_OFFSET_Z, m */
+    double z_offset;          /* REFERENCE_LINE_OFFSET_Z + REFLINE_OFFSET_Z, or the shift of
+                               * the placement by reference point, m */
 };
 
 /* Parses the header from the start of c->src: sections, keys, channels, the end of header;
@@ -100,6 +116,19 @@ int tirenv_crg__scan(tirenv_crg *c, tirenv_diag *diag);
 /* The raw values of count rows from row first, nch per row, into vals (NaN where missing). */
 int tirenv_crg__read_rows(const tirenv_crg *c, size_t first, size_t count, double vals[],
                           tirenv_diag *diag);
+
+/* OpenCRG's placement by reference point (crg_place.c), once the rows are scanned: works out
+ * the rp_* fields and the height shift from REFPOINT_* or OpenCRG's defaults. */
+int tirenv_crg__place(tirenv_crg *c, tirenv_diag *diag);
+
+/* The reference line as tirenv_crg_refline gives it, without (refpoint 0) or with (1) the
+ * placement by reference point. */
+int tirenv_crg__refline(const tirenv_crg *c, int refpoint, double x[], double y[],
+                        double phi[], tirenv_diag *diag);
+
+/* The GRID_NAN_MODE in effect when a track asks for the file's: the file's, else OpenCRG's
+ * default 2 without a $ROAD_CRG_MODS section, else 0. */
+int tirenv_crg__nan_mode(const tirenv_crg *c);
 
 /* The name a message gives channel col ("long section 3 (v = -0.5 m)", "slope"). */
 const char *tirenv_crg__channel_name(const tirenv_crg *c, size_t col, char *buf, size_t n);

@@ -20,10 +20,19 @@ check "nearest: rows 2 and 3 take the cross section's nearest values 0.021 and 0
 run "$bin" convert --profile "$road" --track 0.5 --crg-nan-mode -0.125 -o t.csv
 check "a number: the missing values are that height (v = 0.5: halfway to it)" \
     '[ $rc -eq 0 ] && grep -q "^0.5,-0.052" t.csv && grep -q "^1.5,0.028" t.csv'
-sed 's/^\$KD_DEFINITION/$ROAD_CRG_MODS\nGRID_NAN_MODE = 1\nGRID_NAN_OFFSET = 0.5\n$KD_DEFINITION/' \
-    "$road" >mods.crg
+sed 's/^\* none$/GRID_NAN_MODE = 1\nGRID_NAN_OFFSET = 0.5/' "$road" >mods.crg
 run "$bin" convert --profile mods.crg --track 1 --crg-nan-mode file -o t.csv
 check "file: the file's GRID_NAN_MODE 1 with its offset 0.5" '[ $rc -eq 0 ] && grep -q "^0.5,0.5$" t.csv'
+awk '/^\$ROAD_CRG_MODS/ { skip = 1; next } skip && /^\$/ { skip = 0; if ($0 == "$") next } !skip' \
+    "$road" >defaults.crg
+run "$bin" convert --profile defaults.crg --track 1 -o t.csv
+check "without a modifiers section, OpenCRG's defaults: GRID_NAN_MODE 2, and REFPOINT_Z = 0 at
+      (u = 0, v = -1) puts every height 0.010 m lower" \
+    '[ $rc -eq 0 ] && grep -v "^#" t.csv | awk -F, "NR > 1 { split(\"0.02 0.011 0.012 0.023 0.024\", e, \" \");
+      if (\$2 - e[NR - 1] > 1e-15 || e[NR - 1] - \$2 > 1e-15) bad = 1; n++ } END { exit bad || n != 5 }"'
+rm -f t.csv
+run "$bin" convert --profile defaults.crg --track 1 --crg-nan-mode keep -o t.csv
+check "... and --crg-nan-mode keep still refuses the missing values" '[ $rc -eq 2 ] && [ ! -e t.csv ]'
 rm -f t.csv
 run "$bin" convert --profile mods.crg --track 1 --crg-nan-mode keep -o t.csv
 check "the option overrides the file's mode" '[ $rc -eq 2 ] && [ ! -e t.csv ]'

@@ -161,15 +161,21 @@ static void test_handmade_straight_heights(void **state)
     tirenv_crg_free(c);
 }
 
-/* Rows 8 and 9 of handmade_straight miss their outer values: a track there is refused,
- * naming the row, unless a NaN mode fills them (OpenCRG's GRID_NAN_MODE). */
+/* Rows 8 and 9 of handmade_straight miss their outer values: with GRID_NAN_MODE 0 a track
+ * there is refused, naming the row; a NaN mode fills them (OpenCRG's GRID_NAN_MODE), and
+ * the file, without a modifiers section, takes OpenCRG's default 2. */
 static void test_handmade_nan_borders(void **state)
 {
     (void)state;
     char path[600];
     tirenv_crg *c = open_ok(sample("handmade_straight.crg", path));
     tirenv_crg_track_spec s = spec_v(-1.5);
-    tirenv_profile *p = NULL;
+    tirenv_profile *p = track_ok(c, &s);
+    assert_near(tirenv_profile_z(p)[7], 0.0111111, 1e-9, 0);
+    assert_near(tirenv_profile_z(p)[8], 0.0111111, 1e-9, 0);
+    tirenv_profile_free(p);
+    p = NULL;
+    s.grid_nan_mode = 0;
     tirenv_diag d;
     tirenv_diag_clear(&d);
     assert_int_equal(tirenv_crg_track(c, &s, &p, &d), TIRENV_ERANGE);
@@ -180,6 +186,7 @@ static void test_handmade_nan_borders(void **state)
     /* v = -1.25 needs v = -1.5 too; v = -1 does not. */
     s.v = -1.25;
     assert_int_equal(tirenv_crg_track(c, &s, &p, &d), TIRENV_ERANGE);
+    s.grid_nan_mode = -1;
     assert_near(z_at(c, -1.0, 7), 0.0111111, 1e-9, 0);
     /* Mode 2: the nearest valid value of the cross section (0.0111111 at v = -1 in both
      * rows); mode 1: zero. */
@@ -225,13 +232,18 @@ static void test_handmade_equivalents(void **state)
             tirenv_profile_free(ta);
             tirenv_profile_free(tb);
         }
+        /* Without modifiers sections OpenCRG's defaults put the point (START_U,
+         * LONG_SECTION_V_RIGHT) at the origin: v = -1.5 of the commented files, v = 0 of the
+         * minimalist ones (no V_RIGHT: OpenCRG's loader takes 0, also for long sections at
+         * given, unevenly spaced v). The straight twins then coincide on the ground (b's v is
+         * a's plus 1.5), the curved ones lie 1.5 m apart, as OpenCRG places them. */
         const size_t n = tirenv_crg_rows(a);
         double xa[32], ya[32], xb[32], yb[32];
         assert_int_equal(tirenv_crg_refline(a, xa, ya, NULL, NULL), TIRENV_OK);
         assert_int_equal(tirenv_crg_refline(b, xb, yb, NULL, NULL), TIRENV_OK);
         for (size_t i = 0; i < n; i++) {
-            assert_bits_equal(xa[i], xb[i]);
-            assert_bits_equal(ya[i], yb[i]);
+            assert_near(xa[i], xb[i], 1e-12, 0);
+            assert_near(ya[i], yb[i] + 1.5, 1e-12, 0);
         }
         tirenv_crg_free(a);
         tirenv_crg_free(b);
@@ -356,8 +368,9 @@ static void test_handmade_curved_reflines(void **state)
     const size_t n = tirenv_crg_rows(c);
     double x[32], y[32], phi[32];
     assert_int_equal(tirenv_crg_refline(c, x, y, phi, NULL), TIRENV_OK);
-    assert_near(x[0], 0, 0, 0);
-    assert_near(y[0], 0, 0, 0);
+    /* OpenCRG's defaults move the start of its right edge (v = -1.5) to the origin. */
+    assert_near(x[0], 0, 1e-15, 0);
+    assert_near(y[0], 1.5, 1e-15, 0);
     for (size_t i = 1; i < n; i++) {
         const double expected = i <= 9 ? 0.125 * (double)(i - 1)
                                 : i <= 18 ? 2.125 + 0.125 * (double)(i - 10) : 3.125;
@@ -667,7 +680,7 @@ static void test_curved_refline_circle(void **state)
     int k = snprintf(text, sizeof text,
                      "$CT\ncircle\n$\n$ROAD_CRG\nREFERENCE_LINE_INCREMENT = 0.7\n"
                      "REFERENCE_LINE_START_X = 3.1\nREFERENCE_LINE_START_Y = -2.2\n"
-                     "LONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\n$\n"
+                     "LONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\n$\n$ROAD_CRG_MODS\n$\n"
                      "$KD_DEFINITION\n#:LDFI\nD:reference line phi,rad\nD:long section 1,m\n"
                      "D:long section 2,m\n$\n$$$$\n");
     for (size_t i = 0; i < n; i++)
@@ -722,14 +735,18 @@ static void test_mods_and_opts(void **state)
         double v;
         double z[4];
     } cases[] = {
-        /* no modifiers: the offsets only (0.5 + 0.25) */
-        {"", 0, {0.77, 0.80, 0.83, 0.86}},
+        /* an empty modifiers section: the offsets only (0.5 + 0.25) */
+        {"$ROAD_CRG_MODS\n$\n", 0, {0.77, 0.80, 0.83, 0.86}},
+        /* none: OpenCRG's defaults, GRID_NAN_MODE 2 and the road's height 0 at (START_U,
+         * LONG_SECTION_V_RIGHT), where row 1's missing value takes 0.02 (+ 0.75) */
+        {"", 0, {0.0, 0.03, 0.06, 0.09}},
         {"$ROAD_CRG_MODS\nGRID_NAN_MODE = 2\nGRID_NAN_OFFSET = 0.001\n$\n", -1,
          {0.771, 0.79, 0.82, 0.85}},
         {"$ROAD_CRG_MODS\nGRID_NAN_MODE = 1\n$\n", 1, {0.78, 0.81, 0.75, 0.87}},
         {"$ROAD_CRG_MODS\nSCALE_Z_GRID = 2\nREFLINE_OFFSET_Z = -0.75\n$\n", 0,
          {0.04, 0.10, 0.16, 0.22}},
-        {"$ROAD_CRG_OPTS\nBORDER_SMOOTH_UBEG = 2\nLOG_EVAL = 20\nLOG_EVAL = 20\n$\n", 0,
+        {"$ROAD_CRG_MODS\n$\n$ROAD_CRG_OPTS\nBORDER_SMOOTH_UBEG = 2\nLOG_EVAL = 20\n"
+         "LOG_EVAL = 20\n$\n", 0,
          {0.75, 0.775, 0.83, 0.86}},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
@@ -743,6 +760,94 @@ static void test_mods_and_opts(void **state)
             assert_near(tirenv_profile_z(p)[i], cases[k].z[i], 1e-12, 0);
         tirenv_profile_free(p);
         tirenv_crg_free(c);
+    }
+}
+
+/* Placement by reference point (REFPOINT_*), as OpenCRG applies it: the road turned about its
+ * point (u_ref, v_ref) so that the reference line's heading there is REFPOINT_PHI, moved so
+ * that the point is at (REFPOINT_X, _Y), its heights shifted so that the road's height there
+ * is REFPOINT_Z; without a modifiers section, OpenCRG's defaults (all 0 at START_U and
+ * LONG_SECTION_V_RIGHT). Known answers worked out by hand for a straight road at x = 2.25,
+ * y = 1.5, heading 0.3, 0.4 m high, long sections at v = -1 and 1 holding 0.01 i and 0.02 i. */
+static void test_refpoint(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    static const char head[] =
+        "$CT\nplaced\n$\n$ROAD_CRG\nREFERENCE_LINE_INCREMENT = 1\n"
+        "REFERENCE_LINE_START_X = 2.25\nREFERENCE_LINE_START_Y = 1.5\n"
+        "REFERENCE_LINE_START_PHI = 0.3\nREFERENCE_LINE_END_PHI = 0.3\n"
+        "REFERENCE_LINE_START_Z = 0.4\nLONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\n$\n";
+    static const char tail[] = "$KD_DEFINITION\n#:LRFI\nD:long section 1,m\n"
+                               "D:long section 2,m\n$\n$$$$\n"
+                               " 0.0000000 0.0000000\n 0.0100000 0.0200000\n"
+                               " 0.0200000 0.0400000\n 0.0300000 0.0600000\n";
+    static const struct {
+        const char *mods;
+        double u_ref, x_ref, y_ref, phi_ref; /* the reference point and where it goes */
+        double v_ref;
+        double dz;                           /* the heights' shift, m */
+    } cases[] = {
+        /* REFPOINT_U = 2 on the reference line; z there 0.4 + 0.03, to 1.25 */
+        {"$ROAD_CRG_MODS\nREFPOINT_U = 2\nREFPOINT_V = 0\nREFPOINT_X = 10\nREFPOINT_Y = -4\n"
+         "REFPOINT_Z = 1.25\nREFPOINT_PHI = -0.5\n$\n", 2, 10, -4, -0.5, 0, 1.25 - 0.43},
+        /* the same point by fraction (2 of 3 m) and offset v = -1 + 0.75 * 2 - 0.5 */
+        {"$ROAD_CRG_MODS\nREFPOINT_U_FRACTION = 0.5\nREFPOINT_U_OFFSET = 0.5\n"
+         "REFPOINT_V_FRACTION = 0.75\nREFPOINT_V_OFFSET = -0.5\nREFPOINT_X = 10\n"
+         "REFPOINT_Y = -4\nREFPOINT_Z = 1.25\nREFPOINT_PHI = -0.5\n$\n", 2, 10, -4, -0.5, 0,
+         1.25 - 0.43},
+        /* no modifiers section: OpenCRG's defaults; z at (0, -1) is 0.4 */
+        {"", 0, 0, 0, 0, -1, -0.4},
+        /* an empty one: no placement at all */
+        {"$ROAD_CRG_MODS\n$\n", 0, 2.25, 1.5, 0.3, 0, 0},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char text[2048], path[600];
+        snprintf(text, sizeof text, "%s%s%s", head, cases[k].mods, tail);
+        tirenv_test_write_text(tirenv_test_path(fx, "placed.crg", path), text);
+        tirenv_crg *c = open_ok(path);
+        double x[4], y[4], phi[4];
+        assert_int_equal(tirenv_crg_refline(c, x, y, phi, NULL), TIRENV_OK);
+        const double a = cases[k].phi_ref, vr = cases[k].v_ref;
+        /* The point (u_ref, v_ref) is at (x_ref, y_ref): the line runs through it at a. */
+        for (size_t i = 0; i < 4; i++) {
+            const double s_u = (double)i - cases[k].u_ref;
+            assert_near(x[i], cases[k].x_ref + s_u * cos(a) + vr * sin(a), 1e-12, 0);
+            assert_near(y[i], cases[k].y_ref + s_u * sin(a) - vr * cos(a), 1e-12, 0);
+            assert_near(phi[i], a, 1e-15, 0);
+        }
+        for (size_t i = 0; i < 4; i++) {
+            assert_near(z_at(c, 1, i), 0.4 + 0.02 * (double)i + cases[k].dz, 1e-12, 0);
+            assert_near(z_at(c, 0, i), 0.4 + 0.015 * (double)i + cases[k].dz, 1e-12, 0);
+        }
+        tirenv_crg_free(c);
+    }
+    /* What OpenCRG's check refuses, refused naming the line and the modifier. */
+    static const struct {
+        const char *mods;
+        size_t line;
+        const char *field, *says;
+    } refused[] = {
+        {"$ROAD_CRG_MODS\nREFPOINT_U = 1\nREFPOINT_U_FRACTION = 0.5\n$\n", 16,
+         "REFPOINT_U_FRACTION", "with REFPOINT_U (line 15)"},
+        {"$ROAD_CRG_MODS\nREFPOINT_V_FRACTION = 0.5\nREFPOINT_V = 1\n$\n", 16, "REFPOINT_V",
+         "OpenCRG refuses both"},
+        {"$ROAD_CRG_MODS\nREFPOINT_X = 1\nREFLINE_OFFSET_Y = 2\n$\n", 16, "REFLINE_OFFSET_Y",
+         "both by offset and by reference point"},
+        {"$ROAD_CRG_MODS\nSCALE_WIDTH = 2\n$\n", 15, "SCALE_WIDTH", "not supported"},
+    };
+    for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++) {
+        char text[2048], path[600];
+        snprintf(text, sizeof text, "%s%s%s", head, refused[k].mods, tail);
+        tirenv_test_write_text(tirenv_test_path(fx, "placed.crg", path), text);
+        tirenv_crg *c = NULL;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        assert_int_equal(tirenv_crg_open(path, &c, &d), TIRENV_EPARSE);
+        assert_null(c);
+        print_message("%s:%zu: %s: %s\n", d.file, d.line, d.field, d.message);
+        assert_int_equal(d.line, refused[k].line);
+        assert_string_equal(d.field, refused[k].field);
+        assert_non_null(strstr(d.message, refused[k].says));
     }
 }
 
@@ -1087,7 +1192,9 @@ static void test_memory(void **state)
     tirenv_crg *c = NULL;
     tirenv_diag d;
     assert_int_equal(tirenv_crg_open_memory(base, strlen(base), "road", &c, &d), TIRENV_OK);
-    assert_near(z_at(c, 0.5, 2), 0.085, 1e-12, 0);
+    /* 0.085 less 0.01, the height OpenCRG's default REFPOINT_Z = 0 takes off (at u = 0 on
+     * the right edge, v = -1: base has no modifiers section). */
+    assert_near(z_at(c, 0.5, 2), 0.075, 1e-12, 0);
     tirenv_crg_free(c);
     assert_int_equal(tirenv_crg_open_memory(base, 100, "road", &c, &d), TIRENV_EPARSE);
     assert_string_equal(d.file, "road");
@@ -1120,6 +1227,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_round_trips, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_curved_refline_circle, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_refpoint, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_mods_and_opts, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),

@@ -16,7 +16,8 @@ lc='--contact-length 0.33'
 # make_measured ELEVATION FILE [straight]: a measured-like OpenCRG road (LDFI text), 40 m on a
 # 1 cm grid, a curved reference line (heading 0.015 rad per m; with "straight", none: a straight
 # line from x = 7, y = -3 m at heading 0.4 rad), 9 long sections over 4 m at the height
-# ELEVATION (REFERENCE_LINE_START_Z), roughness of a few mm that differs across (two waves and
+# ELEVATION (REFERENCE_LINE_START_Z), an empty $ROAD_CRG_MODS section (placed as the header
+# says, not by OpenCRG's default modifiers), roughness of a few mm that differs across (two waves and
 # seeded noise), a 5 cm cleat under the left half at u = 12 m and a 3 cm pothole at 20 m.
 make_measured() {
     awk -v elev="$1" -v straight="${3:-}" 'function rec(vals, n,   i, line) {
@@ -42,6 +43,10 @@ make_measured() {
             }
             print "LONG_SECTION_V_RIGHT     = -2"
             print "LONG_SECTION_V_LEFT      = 2"
+            print "$"
+            print "$ROAD_CRG_MODS"
+            print "* none: the road where the header places it (no default modifiers)"
+            print "$"
             print "$KD_DEFINITION"
             print "#:LDFI"
             if (!straight) print "D:reference line phi,rad"
