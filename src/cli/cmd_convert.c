@@ -121,24 +121,54 @@ static int parse(int argc, char *argv[], convert *cv)
     return CLI_GO_ON;
 }
 
-/* A .crg to a .crg without --track: every long section, row by row. */
+/* A .crg to a .crg without --track: every long section, row by row, where the input lies:
+ * its reference line's start and heading in x/y (its offsets and modifiers applied, as
+ * tirenv_crg_refline places it) and its first row's height as START_Z, so that OpenCRG
+ * evaluates the copy at every (x, y) as the input (tests/formats/crg_opencrg_samples.sh). A
+ * curved reference line is refused: the copy's is straight and would lie elsewhere. */
 static int crg_copy(const tirenv_crg *crg, const convert *cv, tirenv_diag *diag)
 {
+    if (tirenv_crg_is_curved(crg))
+        return tirenv_error(diag, TIRENV_EINVAL, cv->in, 0, "reference line phi",
+                            "a curved reference line: tirenv writes an OpenCRG road on a "
+                            "straight one, which would lie elsewhere; convert a track "
+                            "(--track V) to .csv, .rdf or .crg instead");
     const size_t nv = tirenv_crg_long_sections(crg), nu = tirenv_crg_rows(crg);
     double *v = malloc(nv * sizeof *v);
-    if (!v)
-        return tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
-    for (size_t j = 0; j < nv; j++)
+    double *x = malloc(nu * sizeof *x), *y = malloc(nu * sizeof *y);
+    double *phi = malloc(nu * sizeof *phi), *z0 = malloc(nv * sizeof *z0);
+    int status = v && x && y && phi && z0
+                     ? tirenv_crg_refline(crg, x, y, phi, diag)
+                     : tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
+    if (!status)
+        status = tirenv_crg_grid_rows(crg, 0, 1, z0, diag);
+    /* START_Z: the first row's first height (the rows then hold the relief less it, which
+     * OpenCRG keeps in single precision). */
+    double z_start = 0;
+    for (size_t j = 0; !status && j < nv; j++) {
         v[j] = tirenv_crg_v(crg, j);
+        if (isfinite(z0[j]) && z_start == 0)
+            z_start = z0[j];
+    }
     const tirenv_crg_layout layout = {
         .encoding = cv->w.crg_encoding, .u_start = tirenv_crg_u_start(crg),
+        .x_start = status ? 0 : x[0], .y_start = status ? 0 : y[0],
+        .phi_start = status ? 0 : phi[0], .z_start = z_start,
         .u_increment = tirenv_crg_u_increment(crg), .rows = nu, .long_sections = nv, .v = v,
         .comment = "Converted by tirenv convert: every long section, heights with the\n"
-                   "reference line's slope and banking, on a straight reference line."};
+                   "reference line's slope and banking, where the input's line lies."};
+    free(x);
+    free(y);
+    free(phi);
+    free(z0);
+    if (status) {
+        free(v);
+        return status;
+    }
     tirenv_crg_writer *w = NULL;
     enum { BLOCK = 1024 };
     double *z = malloc(BLOCK * nv * sizeof *z);
-    int status = z ? tirenv_crg_writer_open(cv->out, &layout, &w, diag)
+    status = z ? tirenv_crg_writer_open(cv->out, &layout, &w, diag)
                    : tirenv_error(diag, TIRENV_ENOMEM, cv->out, 0, "", "out of memory");
     for (size_t i0 = 0; !status && i0 < nu; i0 += BLOCK) {
         const size_t n = nu - i0 < BLOCK ? nu - i0 : BLOCK;

@@ -112,6 +112,10 @@ static void write_header(FILE *fp, const tirenv_crg_layout *l)
     tirenv_fmt_shortest(l->phi_start, c);
     fprintf(fp, "REFERENCE_LINE_START_X   = %s\nREFERENCE_LINE_START_Y   = %s\n"
                 "REFERENCE_LINE_START_PHI = %s\n", a, b, c);
+    /* OpenCRG takes a straight line's heading beyond its start (its xy2uv past the last row,
+     * its heading along the line) from END_PHI, 0 when not given: a turned line states it. */
+    if (l->phi_start != 0)
+        fprintf(fp, "REFERENCE_LINE_END_PHI   = %s\n", c);
     if (l->z_start != 0) {
         tirenv_fmt_shortest(l->z_start, a);
         fprintf(fp, "REFERENCE_LINE_START_Z   = %s\n", a);

@@ -71,9 +71,16 @@ cp "$crg/halfround_6in.crg" road.txt
 run "$bin" convert --profile road.txt -o -
 check "a .crg named road.txt is read as one (by content); '-o -' writes CSV to stdout" \
     '[ $rc -eq 0 ] && [ $(grep -vc "^#" out) -eq 10002 ] && grep -q "^50.15,0.1523" out'
-run "$bin" convert --profile "$crg/handmade_straight.crg" --track -1.5 -o nan.csv
-check "a track through missing values: exit 2 naming row and long section, no file" \
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track -1.5 --crg-nan-mode keep \
+    -o nan.csv
+check "a track through missing values, kept missing: exit 2 naming row and long section, no file" \
     '[ $rc -eq 2 ] && grep -q "long section 1 (v = -1.5 m) at row 8" err && no_file nan.csv'
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track -1.5 -o nan.csv
+check "... without a modifiers section, OpenCRG's default GRID_NAN_MODE 2 fills them (rows 8, 9)" \
+    '[ $rc -eq 0 ] && grep -q "^7,0.0111111$" nan.csv && grep -q "^8,0.0111111$" nan.csv'
+run "$bin" convert --profile "$crg/handmade_circle.crg" -o circle.crg
+check "a curved reference line to .crg: exit 2 saying why, no file" \
+    '[ $rc -eq 2 ] && grep -q "curved reference line" err && no_file circle.crg'
 run "$bin" convert --profile "$crg/handmade_straight.crg" --track 2 -o out.csv
 check "a track beyond the road: exit 2, no file" \
     '[ $rc -eq 2 ] && grep -q "beyond the road" err && no_file out.csv'
