@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* An independent reader of tirenv's OpenCRG files: the ASAM OpenCRG C API (vendored under
- * tests/third_party/opencrg, built for the tests only), used as Project Chrono's CRGTerrain
- * uses it: load, check, apply the data set's modifiers (the file's $ROAD_CRG_MODS, or
- * OpenCRG's defaults if it states none), then evaluate in x/y and u/v.
+ * tests/third_party/opencrg, built for the tests only), used in OpenCRG's own sequence: load,
+ * check, apply the data set's modifiers (the file's $ROAD_CRG_MODS, or OpenCRG's defaults if
+ * it states none), then evaluate in x/y and u/v. (Project Chrono's CRGTerrain loads and
+ * checks but applies no modifiers; a file with a $ROAD_CRG_MODS section that sets none, as
+ * every file tirenv writes, is evaluated the same both ways.)
  *
  *   crg_opencrg ROAD.crg EFFECTIVE.crg CURVE.csv V [REACH]
  *
@@ -36,9 +38,8 @@ static void check(int ok, const char *fmt, ...)
     n_failed += !ok;
 }
 
-/* A data set loaded, checked and with its modifiers applied, as CRGTerrain does; its
- * contact point, or -1. */
-static int open_as_chrono(const char *path)
+/* A data set loaded, checked and with its modifiers applied; its contact point, or -1. */
+static int open_opencrg(const char *path)
 {
     const int id = crgLoaderReadFile(path);
     if (id <= 0 || !crgCheck(id))
@@ -55,7 +56,7 @@ int main(int argc, char *argv[])
     }
     const double v = atof(argv[4]), reach = argc > 5 ? atof(argv[5]) : 1.0;
     crgMsgSetLevel(dCrgMsgLevelNone);
-    const int road = open_as_chrono(argv[1]), eff = open_as_chrono(argv[2]);
+    const int road = open_opencrg(argv[1]), eff = open_opencrg(argv[2]);
     check(road >= 0, "OpenCRG loads and checks the road %s", argv[1]);
     check(eff >= 0, "OpenCRG loads and checks tirenv's effective road %s", argv[2]);
     if (road < 0 || eff < 0)

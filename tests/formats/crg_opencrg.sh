@@ -3,9 +3,11 @@
 # The effective road tirenv writes over an OpenCRG road lies where that road is, read by
 # OpenCRG's own C API as Chrono reads it (tests/formats/crg_opencrg.c): the road tests/data/
 # placed_bump.crg starts at x = 100, y = -20 m, heading 0.5 rad, 3.2 m high, and the track is
-# v = 0.9 m off its reference line. Then the same without the $ROAD_CRG_MODS section tirenv
-# writes: OpenCRG's default modifiers move the road to the origin and the check must fail
-# (the test can fail, and the section is what places the road).
+# v = 0.9 m off its reference line; then the same over that road without its modifiers
+# section, which OpenCRG's default modifiers place (and tirenv with them). Then the effective
+# road without the $ROAD_CRG_MODS section tirenv writes: OpenCRG's default modifiers move it
+# to the origin and the check must fail (the test can fail, and the section is what places
+# the road).
 #   sh tests/formats/crg_opencrg.sh TIRENV CRG_OPENCRG DATA_DIR
 set -u
 cli=$1 reader=$2 data=$3
@@ -19,6 +21,22 @@ run="envelope --model springs --profile $road --track 0.9 --load 4000 --x-from 4
 "$cli" $run -o "$tmp/eff.crg" --crg-encoding kdbi 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
 "$reader" "$road" "$tmp/eff.crg" "$tmp/curve.csv" 0.9 1.0
 status=$?
+# The same road without its (empty) $ROAD_CRG_MODS section: OpenCRG's default modifiers place
+# it (its start at v = -1 at the origin, heading 0, height 0 there), tirenv reads it so too,
+# and the effective road lies where OpenCRG puts that road.
+awk '/^\$ROAD_CRG_MODS/ { skip = 1; next } skip && /^\$/ { skip = 0; if ($0 == "$") next } !skip' \
+    "$road" >"$tmp/defaults.crg"
+run2=$(echo "$run" | sed "s|$road|$tmp/defaults.crg|")
+# shellcheck disable=SC2086
+"$cli" $run2 -o "$tmp/curve2.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+# shellcheck disable=SC2086
+"$cli" $run2 -o "$tmp/eff2.crg" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+echo "# the road without a modifiers section (OpenCRG's defaults)"
+"$reader" "$tmp/defaults.crg" "$tmp/eff2.crg" "$tmp/curve2.csv" 0.9 1.0 || status=1
+if grep -q "^REFERENCE_LINE_START_X   = 100$" "$tmp/eff2.crg"; then
+    echo "not ok - over the road without modifiers the effective road kept the header's placement"
+    status=1
+fi
 awk '/^\$ROAD_CRG_MODS/ {skip = 1; next} skip && /^\$/ {skip = 0; next} !skip' \
     "$tmp/eff.crg" >"$tmp/nomods.crg"
 "$reader" "$road" "$tmp/nomods.crg" "$tmp/curve.csv" 0.9 1.0 >"$tmp/log" 2>&1
