@@ -51,12 +51,12 @@ test-slurm: build deps-test
 	@cd $(BUILD) && ctest --output-on-failure -L slurm
 
 # Debug build under AddressSanitizer + UBSan in ASAN_BUILD, and its tests: all but the labels
-# slow, install and slurm (and no fuzz harnesses: TIRENV_FUZZ=OFF; make test ran them).
+# slow, install, slurm and interop (and no fuzz harnesses: TIRENV_FUZZ=OFF; make test ran them).
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
 	    -DTIRENV_FUZZ=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
+	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm|interop$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 
 # The Python module in place under $(BUILD)/python (python/README.md), and the FMI 2.0
 # co-simulation FMU $(BUILD)/tirenv_effective_road.fmu (fmu/README.md); both are also part of
