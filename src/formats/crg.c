@@ -386,6 +386,75 @@ int tirenv_crg_refline(const tirenv_crg *c, double x[], double y[], double phi[]
     return tirenv_crg__refline(c, 1, x, y, phi, diag);
 }
 
+/* Rows first .. first + count - 1 of the reference line from their positions as integrated
+ * (px, py, pp[k] for row first + k): the end position's mismatch spread, the header's global
+ * offsets, the REFLINE_* modifiers, and with refpoint the placement by reference point. */
+static void refline_finish(const tirenv_crg *c, int refpoint, size_t first, size_t count,
+                           double ex, double ey, double px[], double py[], double pp[])
+{
+    const size_t n = c->nu;
+    const double po = c->road[CRG_RL_OFFSET_PHI].value;
+    const double xo = c->road[CRG_RL_OFFSET_X].value, yo = c->road[CRG_RL_OFFSET_Y].value;
+    const double rot = c->mods[CRG_MOD_REFLINE_OFFSET_PHI].value;
+    const double rcx = opt_or(&c->mods[CRG_MOD_REFLINE_ROTCENTER_X], c->road[CRG_RL_START_X].value);
+    const double rcy = opt_or(&c->mods[CRG_MOD_REFLINE_ROTCENTER_Y], c->road[CRG_RL_START_Y].value);
+    const double mx = c->mods[CRG_MOD_REFLINE_OFFSET_X].value;
+    const double my = c->mods[CRG_MOD_REFLINE_OFFSET_Y].value;
+    for (size_t k = 0; k < count; k++) {
+        const double f = (double)(first + k) / (double)(n - 1);
+        const double lx = px[k] + f * ex, ly = py[k] + f * ey;
+        const double gx = xo + cos(po) * lx - sin(po) * ly;
+        const double gy = yo + sin(po) * lx + cos(po) * ly;
+        px[k] = rcx + cos(rot) * (gx - rcx) - sin(rot) * (gy - rcy) + mx;
+        py[k] = rcy + sin(rot) * (gx - rcx) + cos(rot) * (gy - rcy) + my;
+        pp[k] += po + rot;
+    }
+    /* The placement by reference point (crg_place.c; never with the REFLINE_OFFSET_*
+     * modifiers): turned about the reference point, then moved to where it goes. */
+    if (refpoint && c->refpoint) {
+        const double cr = cos(c->rp_rot), sr = sin(c->rp_rot);
+        const double fx = c->rp_from_x, fy = c->rp_from_y;
+        for (size_t k = 0; k < count; k++) {
+            const double dx = px[k] - fx, dy = py[k] - fy;
+            px[k] = c->rp_x + cr * dx - sr * dy;
+            py[k] = c->rp_y + sr * dx + cr * dy;
+            pp[k] += c->rp_rot;
+        }
+    }
+}
+
+/* The end position, where given, is more precise than the integrated headings: its mismatch
+ * with the last row as integrated (checked at open) is spread linearly along the line. */
+static void end_mismatch(const tirenv_crg *c, double x_last, double y_last, double *ex,
+                         double *ey)
+{
+    *ex = c->road[CRG_RL_END_X].line ? c->road[CRG_RL_END_X].value - x_last : 0;
+    *ey = c->road[CRG_RL_END_Y].line ? c->road[CRG_RL_END_Y].value - y_last : 0;
+}
+
+/* A straight line's row i as integrated: from START_X/Y at START_PHI. */
+static void straight_row(const tirenv_crg *c, size_t i, double *x, double *y, double *phi)
+{
+    const double phi0 = c->road[CRG_RL_START_PHI].value;
+    *x = c->road[CRG_RL_START_X].value + (double)i * c->du * cos(phi0);
+    *y = c->road[CRG_RL_START_Y].value + (double)i * c->du * sin(phi0);
+    *phi = phi0;
+}
+
+int tirenv_crg__refline_rows(const tirenv_crg *c, int refpoint, size_t first, size_t count,
+                             double x[], double y[], double phi[])
+{
+    if (c->ch_phi != TIRENV_CRG__NONE || first > c->nu || count > c->nu - first)
+        return TIRENV_EINVAL;
+    double xl, yl, pl, ex, ey;
+    straight_row(c, c->nu - 1, &xl, &yl, &pl);
+    end_mismatch(c, xl, yl, &ex, &ey);
+    for (size_t k = 0; k < count; k++)
+        straight_row(c, first + k, &x[k], &y[k], &phi[k]);
+    refline_finish(c, refpoint, first, count, ex, ey, x, y, phi);
+    return TIRENV_OK;
+}
+
 int tirenv_crg__refline(const tirenv_crg *c, int refpoint, double x[], double y[],
                         double phi[], tirenv_diag *diag)
 {
@@ -397,12 +466,9 @@ int tirenv_crg__refline(const tirenv_crg *c, int refpoint, double x[], double y[
     int status = px && py && pp ? TIRENV_OK
                                 : tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "",
                                                "out of memory");
-    const double phi0 = c->road[CRG_RL_START_PHI].value;
-    if (!status) {
+    if (!status && c->ch_phi != TIRENV_CRG__NONE) {
         px[0] = c->road[CRG_RL_START_X].value;
         py[0] = c->road[CRG_RL_START_Y].value;
-    }
-    if (!status && c->ch_phi != TIRENV_CRG__NONE) {
         if (!(vals = malloc(block * c->nch * sizeof *vals)))
             status = tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
         for (size_t i0 = 0; !status && i0 < n; i0 += block) {
@@ -420,46 +486,13 @@ int tirenv_crg__refline(const tirenv_crg *c, int refpoint, double x[], double y[
             }
         }
     } else if (!status) {
-        for (size_t i = 0; i < n; i++) {
-            px[i] = px[0] + (double)i * c->du * cos(phi0);
-            py[i] = py[0] + (double)i * c->du * sin(phi0);
-            pp[i] = phi0;
-        }
+        for (size_t i = 0; i < n; i++)
+            straight_row(c, i, &px[i], &py[i], &pp[i]);
     }
     if (!status) {
-        /* The end position, where given, is more precise than the integrated headings: the
-         * mismatch (checked at open) is spread linearly along the line. */
-        const double ex = c->road[CRG_RL_END_X].line ? c->road[CRG_RL_END_X].value - px[n - 1] : 0;
-        const double ey = c->road[CRG_RL_END_Y].line ? c->road[CRG_RL_END_Y].value - py[n - 1] : 0;
-        /* The reference line's global offsets, then the modifiers' rotation and shift. */
-        const double po = c->road[CRG_RL_OFFSET_PHI].value;
-        const double xo = c->road[CRG_RL_OFFSET_X].value, yo = c->road[CRG_RL_OFFSET_Y].value;
-        const double rot = c->mods[CRG_MOD_REFLINE_OFFSET_PHI].value;
-        const double rcx = opt_or(&c->mods[CRG_MOD_REFLINE_ROTCENTER_X], px[0]);
-        const double rcy = opt_or(&c->mods[CRG_MOD_REFLINE_ROTCENTER_Y], py[0]);
-        const double mx = c->mods[CRG_MOD_REFLINE_OFFSET_X].value;
-        const double my = c->mods[CRG_MOD_REFLINE_OFFSET_Y].value;
-        for (size_t i = 0; i < n; i++) {
-            const double f = (double)i / (double)(n - 1);
-            const double lx = px[i] + f * ex, ly = py[i] + f * ey;
-            const double gx = xo + cos(po) * lx - sin(po) * ly;
-            const double gy = yo + sin(po) * lx + cos(po) * ly;
-            px[i] = rcx + cos(rot) * (gx - rcx) - sin(rot) * (gy - rcy) + mx;
-            py[i] = rcy + sin(rot) * (gx - rcx) + cos(rot) * (gy - rcy) + my;
-            pp[i] += po + rot;
-        }
-        /* The placement by reference point (crg_place.c; never with the REFLINE_OFFSET_*
-         * modifiers): turned about the reference point, then moved to where it goes. */
-        if (refpoint && c->refpoint) {
-            const double cr = cos(c->rp_rot), sr = sin(c->rp_rot);
-            const double fx = c->rp_from_x, fy = c->rp_from_y;
-            for (size_t i = 0; i < n; i++) {
-                const double dx = px[i] - fx, dy = py[i] - fy;
-                px[i] = c->rp_x + cr * dx - sr * dy;
-                py[i] = c->rp_y + sr * dx + cr * dy;
-                pp[i] += c->rp_rot;
-            }
-        }
+        double ex, ey;
+        end_mismatch(c, px[n - 1], py[n - 1], &ex, &ey);
+        refline_finish(c, refpoint, 0, n, ex, ey, px, py, pp);
     }
     free(vals);
     if (!x)

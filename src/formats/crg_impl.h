@@ -126,6 +126,11 @@ int tirenv_crg__place(tirenv_crg *c, tirenv_diag *diag);
 int tirenv_crg__refline(const tirenv_crg *c, int refpoint, double x[], double y[],
                         double phi[], tirenv_diag *diag);
 
+/* Rows first .. first + count - 1 of a straight reference line (no heading channel) as
+ * tirenv_crg__refline gives them, without the whole line: TIRENV_EINVAL for a curved one. */
+int tirenv_crg__refline_rows(const tirenv_crg *c, int refpoint, size_t first, size_t count,
+                             double x[], double y[], double phi[]);
+
 /* The GRID_NAN_MODE in effect when a track asks for the file's: the file's, else OpenCRG's
  * default 2 without a $ROAD_CRG_MODS section, else 0. */
 int tirenv_crg__nan_mode(const tirenv_crg *c);

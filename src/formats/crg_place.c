@@ -39,8 +39,15 @@ static int exclusive(const tirenv_crg *c, int a, int b, const char *na, const ch
  * within the line, between the lateral lines through the rows, each along the normal of
  * the chord from the row before to the row after; beyond its ends, straight on at the end's
  * heading. */
-static void uv2xy(const tirenv_crg *c, const double x[], const double y[], double phi_first,
-                  double phi_last, double u, double v, double *ox, double *oy)
+/* Rows base .. base + len - 1 of the reference line: x, y, phi[k] of row base + k. */
+typedef struct {
+    const double *x, *y, *phi;
+    size_t base;
+} rows_view;
+
+/* The row index i at or before u of OpenCRG's evaluation, clamped to 0 .. rows - 2, and the
+ * fraction of a row beyond it (may be < 0 or > 1 beyond the ends). */
+static size_t row_of(const tirenv_crg *c, double u, double *frac)
 {
     const size_t n = c->nu;
     double f = (u - c->u0) / c->du;
@@ -50,34 +57,48 @@ static void uv2xy(const tirenv_crg *c, const double x[], const double y[], doubl
         if (i >= n - 1)
             i = n - 2;
     }
-    f -= (double)i;
+    if (frac)
+        *frac = f - (double)i;
+    return i;
+}
+
+/* Row j of a view. */
+#define X(j) (r->x[(j) - r->base])
+#define Y(j) (r->y[(j) - r->base])
+
+static void uv2xy(const tirenv_crg *c, const rows_view *r, double phi_first, double phi_last,
+                  double u, double v, double *ox, double *oy)
+{
+    const size_t n = c->nu;
+    double f;
+    const size_t i = row_of(c, u, &f);
     if (f < 0) {
         const double d = f * c->du;
-        *ox = x[0] + d * cos(phi_first) - v * sin(phi_first);
-        *oy = y[0] + d * sin(phi_first) + v * cos(phi_first);
+        *ox = X(0) + d * cos(phi_first) - v * sin(phi_first);
+        *oy = Y(0) + d * sin(phi_first) + v * cos(phi_first);
         return;
     }
     if (f > 1) {
         const double d = (f - 1) * c->du;
-        *ox = x[n - 1] + d * cos(phi_last) - v * sin(phi_last);
-        *oy = y[n - 1] + d * sin(phi_last) + v * cos(phi_last);
+        *ox = X(n - 1) + d * cos(phi_last) - v * sin(phi_last);
+        *oy = Y(n - 1) + d * sin(phi_last) + v * cos(phi_last);
         return;
     }
-    double n12[2] = {-(y[i + 1] - y[i]), x[i + 1] - x[i]};
+    double n12[2] = {-(Y(i + 1) - Y(i)), X(i + 1) - X(i)};
     const double l12 = hypot(n12[0], n12[1]);
     n12[0] /= l12;
     n12[1] /= l12;
     double n1[2] = {n12[0], n12[1]}, n2[2] = {n12[0], n12[1]};
     if (i > 0) {
-        n1[0] = -(y[i + 1] - y[i - 1]);
-        n1[1] = x[i + 1] - x[i - 1];
+        n1[0] = -(Y(i + 1) - Y(i - 1));
+        n1[1] = X(i + 1) - X(i - 1);
         const double l = hypot(n1[0], n1[1]);
         n1[0] /= l;
         n1[1] /= l;
     }
     if (i < n - 2) {
-        n2[0] = -(y[i + 2] - y[i]);
-        n2[1] = x[i + 2] - x[i];
+        n2[0] = -(Y(i + 2) - Y(i));
+        n2[1] = X(i + 2) - X(i);
         const double l = hypot(n2[0], n2[1]);
         n2[0] /= l;
         n2[1] /= l;
@@ -92,26 +113,21 @@ static void uv2xy(const tirenv_crg *c, const double x[], const double y[], doubl
         n2[0] /= d2;
         n2[1] /= d2;
     }
-    const double ax = x[i] + v * n1[0], ay = y[i] + v * n1[1];
-    const double bx = x[i + 1] + v * n2[0], by = y[i + 1] + v * n2[1];
+    const double ax = X(i) + v * n1[0], ay = Y(i) + v * n1[1];
+    const double bx = X(i + 1) + v * n2[0], by = Y(i + 1) + v * n2[1];
     *ox = ax + f * (bx - ax);
     *oy = ay + f * (by - ay);
 }
+#undef X
+#undef Y
 
 /* OpenCRG's heading at u (crgDataEvaluv2pk): that of the segment ending at the row at or
  * before u, not interpolated; within half a metre (at least a row) of either end the line's
  * first or last heading. */
-static double heading_at(const tirenv_crg *c, const double phi[], double phi_first,
+static double heading_at(const tirenv_crg *c, const rows_view *r, double phi_first,
                          double phi_last, double u)
 {
-    const size_t n = c->nu;
-    const double f = (u - c->u0) / c->du;
-    size_t i = 0;
-    if (f >= 0) {
-        i = (size_t)f;
-        if (i >= n - 1)
-            i = n - 2;
-    }
+    const size_t n = c->nu, i = row_of(c, u, NULL);
     size_t nu = (size_t)(0.5 / c->du);
     if (nu < 1)
         nu = 1;
@@ -119,7 +135,7 @@ static double heading_at(const tirenv_crg *c, const double phi[], double phi_fir
         return phi_first;
     if (i + nu >= n)
         return phi_last;
-    return phi[i];
+    return r->phi[i - r->base];
 }
 
 /* The road's height at (u, v) before the placement: the track at v (OpenCRG's default border
@@ -201,18 +217,31 @@ int tirenv_crg__place(tirenv_crg *c, tirenv_diag *diag)
     double z_from;
     if ((status = height_at(c, u, v, &z_from, diag)))
         return status;
-    const size_t n = c->nu;
-    double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), *phi = malloc(n * sizeof *phi);
-    status = x && y && phi ? tirenv_crg__refline(c, 0, x, y, phi, diag)
-                           : tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "",
-                                          "out of memory");
+    /* The line as the header places it around u (rows i - 1 .. i + 2) and at its end: a
+     * straight one from its start, a curved one integrated whole. */
+    const size_t n = c->nu, i = row_of(c, u, NULL);
+    const size_t lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1;
+    const int curved = tirenv_crg_is_curved(c);
+    const size_t len = curved ? n : hi - lo + 1;
+    double *x = malloc(len * sizeof *x), *y = malloc(len * sizeof *y);
+    double *phi = malloc(len * sizeof *phi);
+    double last[3];
+    if (!x || !y || !phi)
+        status = tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
+    else if (curved)
+        status = tirenv_crg__refline(c, 0, x, y, phi, diag);
+    else
+        status = tirenv_crg__refline_rows(c, 0, lo, len, x, y, phi) ||
+                 tirenv_crg__refline_rows(c, 0, n - 1, 1, &last[0], &last[1], &last[2]);
     if (!status) {
+        const rows_view r = {x, y, phi, curved ? 0 : lo};
         /* OpenCRG's first heading is REFERENCE_LINE_START_PHI as given (0 without it), its
          * last the line's last; the header's global offsets turn both. */
         const double po = c->road[CRG_RL_OFFSET_PHI].value;
-        const double phi_first = c->road[CRG_RL_START_PHI].value + po, phi_last = phi[n - 1];
-        uv2xy(c, x, y, phi_first, phi_last, u, v, &c->rp_from_x, &c->rp_from_y);
-        c->rp_rot = m[CRG_MOD_REFPOINT_PHI].value - heading_at(c, phi, phi_first, phi_last, u);
+        const double phi_first = c->road[CRG_RL_START_PHI].value + po;
+        const double phi_last = curved ? phi[n - 1] : last[2];
+        uv2xy(c, &r, phi_first, phi_last, u, v, &c->rp_from_x, &c->rp_from_y);
+        c->rp_rot = m[CRG_MOD_REFPOINT_PHI].value - heading_at(c, &r, phi_first, phi_last, u);
         c->rp_x = m[CRG_MOD_REFPOINT_X].value;
         c->rp_y = m[CRG_MOD_REFPOINT_Y].value;
         c->z_offset += m[CRG_MOD_REFPOINT_Z].value - z_from;
