@@ -20,7 +20,8 @@ void cli_help_road(FILE *fp, int with_tracks)
           "                       needs is an error (keep), the nearest valid value of its\n"
           "                       cross section (nearest, OpenCRG's default), the height M in\n"
           "                       m (a number), or as the file's GRID_NAN_MODE says (file,\n"
-          "                       the default; without one, an error)\n",
+          "                       the default; OpenCRG's default nearest in a file without\n"
+          "                       $ROAD_CRG_MODS, an error in one that does not set it)\n",
           fp);
     if (with_tracks)
         fputs("  --tracks N           evaluate N tracks across the tire's width around --track\n"
