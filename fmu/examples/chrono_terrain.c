@@ -6,7 +6,8 @@
  *      reference line; the FMU's track parameter is the wheel's v), terrain_height and
  *      terrain_normal come out (normal in the road's frame: x along u, y to the left);
  *   2. through the effective road tirenv wrote as a .crg (tirenv envelope ... -o EFF.crg), read
- *      with the OpenCRG C API as Chrono's CRGTerrain reads it: load, check, apply modifiers,
+ *      with the OpenCRG C API: load, check, apply modifiers (Chrono's CRGTerrain skips this
+ *      step, the same for a file with an empty $ROAD_CRG_MODS section such as tirenv writes),
  *      then height = crgEvalxy2z(x, y) and the normal from central differences of it, 1 mm
  *      along and across the road.
  * The world point of each query is the road's point (u, v) as OpenCRG places it. Heights must
