@@ -39,6 +39,9 @@ with_mods "$samples/handmade_curved_banked_sloped.crg" "$tmp/cbs_refpoint.crg" \
 with_mods "$samples/handmade_sloped.crg" "$tmp/sloped_refpoint.crg" \
     "REFPOINT_U = 7.3;REFPOINT_V_FRACTION = 0.25;REFPOINT_V_OFFSET = 0.1;REFPOINT_X = 3.25" \
     ";REFPOINT_PHI = -0.75"
+with_mods "$samples/handmade_banked.crg" "$tmp/banked_before_start.crg" \
+    "REFPOINT_U = -2.5;REFPOINT_V = 1.2;REFPOINT_X = -7;REFPOINT_Y = 4;REFPOINT_Z = 0.3" \
+    ";REFPOINT_PHI = 2.5"
 with_mods "$samples/handmade_straight.crg" "$tmp/straight_refpoint.crg" \
     "GRID_NAN_MODE = 2;REFPOINT_PHI = 1.0;REFPOINT_Y = 12.5"
 without_mods "$data/nan_border.crg" "$tmp/nan_border_defaults.crg"

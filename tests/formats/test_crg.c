@@ -795,6 +795,10 @@ static void test_refpoint(void **state)
          "REFPOINT_V_FRACTION = 0.75\nREFPOINT_V_OFFSET = -0.5\nREFPOINT_X = 10\n"
          "REFPOINT_Y = -4\nREFPOINT_Z = 1.25\nREFPOINT_PHI = -0.5\n$\n", 2, 10, -4, -0.5, 0,
          1.25 - 0.43},
+        /* before the road's start: the line goes on straight, the height is the first row's */
+        {"$ROAD_CRG_MODS\nREFPOINT_U = -2\nREFPOINT_X = 10\nREFPOINT_Y = -4\n"
+         "REFPOINT_Z = 1.25\nREFPOINT_PHI = -0.5\nREFPOINT_V = 0\n$\n", -2, 10, -4, -0.5, 0,
+         1.25 - 0.4},
         /* no modifiers section: OpenCRG's defaults; z at (0, -1) is 0.4 */
         {"", 0, 0, 0, 0, -1, -0.4},
         /* an empty one: no placement at all */
