@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # Builds fmusim, the Modelica Association's FMU simulator, for the interop test fmu_fmusim
 # (fmu/tests/fmusim.sh), offline, from a checkout of github.com/modelica/Reference-FMUs and
-# Debian's libraries (libxml2-dev, zlib1g-dev, libminizip-dev, libsundials-dev; scripts/deps.sh
+# Debian's libraries (libxml2-dev, zlib1g-dev, libminizip-dev, libsundials-dev; `scripts/deps.sh --interop`
 # installs them). Its last C version is that repository's fmusim/ before commit 7b3fc08 (which
 # moved it to github.com/modelica/fmusim, rewritten in Rust); its own build fetches and builds
 # zlib, libxml2 and SUNDIALS 7, so this script compiles it directly, on a copy, with two

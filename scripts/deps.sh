@@ -11,9 +11,9 @@ need="$need clang libclang-rt-14-dev"
 # The Python module (python/) and its tests; the FMU's packaging and checks (fmu/).
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
 need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
-# fmusim for the interop test (scripts/build-fmusim.sh): its libraries.
-need="$need libxml2-dev zlib1g-dev libminizip-dev libsundials-dev"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
+# --interop: the libraries fmusim needs (scripts/build-fmusim.sh, the interop test fmu_fmusim).
+[ "${1:-}" = "--interop" ] && need="$need libxml2-dev zlib1g-dev libminizip-dev libsundials-dev"
 # --slurm: Slurm and munge, for tests/sweep/slurm.sh (scripts/slurm/ on a private single-node
 # cluster). Optional: without them that test reports itself skipped, so a user who cannot
 # install them is told how and goes on.
