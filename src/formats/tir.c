@@ -49,7 +49,7 @@ static const tirenv_propfile__key tir_keys[] = {
     TIR_REAL("DIMENSION", "WIDTH", width, 1, 0, 0,
              "tire width, m: the default spread of tracks across it"),
     TIR_CAM("VERTICAL", "VERTICAL_STIFFNESS", cam.c_z, -1, 1, 0, TIRENV_CAM_C_Z,
-             "cam: load / static deflection, N/m"),
+             "cam: load / static deflection, N/m; with Q_FZ2 the tangent at FNOMIN"),
     TIR_REAL("VERTICAL", "FNOMIN", cam.fnomin, 0, 1, 0,
              "nominal load, N: the load Q_FZ2 refers to (0: none)"),
     TIR_REAL("VERTICAL", "Q_FZ2", cam.q_fz2, 0, 0, 0,
