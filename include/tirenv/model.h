@@ -106,9 +106,10 @@ const tirenv_tire *tirenv_model_tire(const tirenv_model *m);
 int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
                              tirenv_diag *diag);
 
-/* A tire's flat-ground relation between load and contact length, as a table: how a model
- * driven by the contact length (the network) turns a load into its input (docs/models.md
- * section 14.3). Linear between the points; loads outside [load[0], load[n-1]] are refused. */
+/* A tire's flat-ground relation between load and contact length, as a table of knots: how a
+ * model driven by the contact length (the network) turns a load into its input (docs/models.md
+ * section 14.3). Between the knots a monotone cubic (Fritsch-Carlson), exact at them; loads
+ * outside [load[0], load[n-1]] are refused. */
 enum { TIRENV_CONTACT_LAW_MAX = 32 };
 typedef struct {
     size_t n;                               /* points, 2 to TIRENV_CONTACT_LAW_MAX; 0: none */
@@ -118,6 +119,16 @@ typedef struct {
 
 /* Checks a law: TIRENV_OK, or TIRENV_EINVAL naming the offending point. */
 int tirenv_contact_law_check(const tirenv_contact_law *law, tirenv_diag *diag);
+
+/* The contact length (m) at a load (N) of a checked law: a knot's own value at a knot,
+ * monotone between them. TIRENV_ERANGE outside the knots' loads, naming the range. */
+int tirenv_contact_law_eval(const tirenv_contact_law *law, double load, double *l_c,
+                            tirenv_diag *diag);
+
+/* Its inverse: the load (N) of a contact length (m), a knot's own load at a knot, else the
+ * double whose tirenv_contact_law_eval is nearest l_c. TIRENV_ERANGE outside the knots. */
+int tirenv_contact_law_inverse(const tirenv_contact_law *law, double l_c, double *load,
+                               tirenv_diag *diag);
 
 /* The load-to-contact-length relation of the tire a network's data came from (copied; NULL or
  * n = 0: none, the springs model of the model's tire then gives the contact length, as

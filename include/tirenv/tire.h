@@ -85,7 +85,12 @@ typedef struct {
  * the same names, so that an MF-Tyre / MF-Swift property file supplies them unchanged. The cam
  * scales with R0 (springs.R0): a_e = ELLIPS_LENGTH*R0, b_e = ELLIPS_HEIGHT*R0. */
 typedef struct {
-    double c_z;            /* [VERTICAL] VERTICAL_STIFFNESS: load / static deflection, N/m */
+    double c_z;            /* [VERTICAL] VERTICAL_STIFFNESS: load / static deflection, N/m,
+                            * or with Q_FZ2 the tangent stiffness at FNOMIN (docs/models.md
+                            * section 7.3) */
+    double fnomin;         /* [VERTICAL] FNOMIN: nominal load, N; 0: none (Q_FZ2 needs it) */
+    double q_fz2;          /* [VERTICAL] Q_FZ2: quadratic term of MF-Tyre's vertical law
+                            * F_z = FNOMIN*(Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2); 0: linear */
     double q_ra1;          /* [CONTACT_PATCH] Q_RA1: square-root term of the contact length */
     double q_ra2;          /* Q_RA2: linear term of the contact length */
     double shift;          /* ELLIPS_SHIFT: tandem base / contact length 2a */

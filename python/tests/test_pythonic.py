@@ -75,9 +75,10 @@ def test_tire_keys_read_like_a_dict(tmp_path):
     assert t["MAX_ITERATIONS"] == 37 and isinstance(t["MAX_ITERATIONS"], int)
     assert t["METHOD"] == "brent"
     assert t["UNLOADED_RADIUS"] == t.R0
-    assert "RADIAL_STIFFNESS" in t and "FNOMIN" not in t and 3 not in t
+    assert "RADIAL_STIFFNESS" in t and "Q_FZ1" not in t and 3 not in t
+    assert t["FNOMIN"] == 17900 and "Q_FZ2" in t  # the cam's vertical law (models.md 7.3)
     with pytest.raises(KeyError):
-        t["FNOMIN"]
+        t["Q_FZ1"]
     keys = list(t)
     assert len(keys) == len(t) and len(set(keys)) == len(keys)
     assert "UNLOADED_RADIUS" in keys and "NODE_ANGLE" in keys and "METHOD" in keys

@@ -9,8 +9,10 @@ import tirenv
 
 def test_load_beyond_the_valid_range():
     # The default tire's contact law before it was identified on the ring (Q_RA1 0.61, Q_RA2
-    # 0.66) meets the chord of the free circle at 136 kN; the identified one does not.
-    old_law = tirenv.Tire(set={"Q_RA1": 0.61, "Q_RA2": 0.66})
+    # 0.66, the linear vertical law of VERTICAL_STIFFNESS 297000 N/m) meets the chord of the
+    # free circle at 136 kN; the identified one at 337 kN.
+    old_law = tirenv.Tire(set={"Q_RA1": 0.61, "Q_RA2": 0.66, "VERTICAL_STIFFNESS": 297000,
+                               "Q_FZ2": 0})
     with pytest.raises(tirenv.TirenvError) as e:
         tirenv.Model("cam", old_law).flat(2e5)
     assert e.value.field == "load" and "valid range, up to" in e.value.message

@@ -144,7 +144,7 @@ int cli_flat_main(int argc, char *argv[])
         tirenv_model_free(m);
         return code;
     }
-    const double fnomin = cli_tire_origin.fnomin;
+    const double fnomin = cli_nominal_load(&tire);
     char what[96] = "at the paper's working regimes";
     if (fnomin > 0)
         snprintf(what, sizeof what, "at 0.5 to 1.5 times its nominal load %.6g N", fnomin);

@@ -64,7 +64,7 @@ static void usage(FILE *fp)
           "options:\n"
           "  --reference MODEL    the model the others are identified on (default ring)\n"
           "  --loads G1,G2,...    the loads, N (at least two)\n"
-          "  --write              set the five values in the tire file in place, keeping its\n"
+          "  --write              set the identified values in the tire file in place, keeping its\n"
           "                       comments, with a '!' note on how they were identified\n",
           fp);
     cli_help_tire(fp, 1);
@@ -123,7 +123,7 @@ int cli_identify_main(int argc, char *argv[])
     const char *path = cli_tire_path(&o, buf, sizeof buf);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const double fnomin = cli_tire_origin.fnomin;
+    const double fnomin = cli_nominal_load(&tire);
     if (loads.n == 0) {
         tirenv_model *m = tirenv_model_alloc(ref, &tire);
         if (!m)
@@ -147,8 +147,8 @@ int cli_identify_main(int argc, char *argv[])
     if (status)
         return cli_fail(status, &diag);
     /* Three significant digits, as written: the table and the note describe the file. */
-    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.cam.c_z, &id.cam.q_ra1,
-                           &id.cam.q_ra2};
+    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.cam.c_z, &id.cam.q_fz2,
+                           &id.cam.q_ra1, &id.cam.q_ra2};
     for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
         char t[32];
         snprintf(t, sizeof t, "%.3g", *ids[k]);
@@ -164,6 +164,9 @@ int cli_identify_main(int argc, char *argv[])
     printf("  RADIAL_STIFFNESS       %.6g N/m/rad (was %.6g)\n", id.springs.c_r, tire.springs.c_r);
     printf("  INTERRADIAL_STIFFNESS  %.6g N*rad/m (was %.6g)\n", id.springs.c_b, tire.springs.c_b);
     printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g)\n", id.cam.c_z, tire.cam.c_z);
+    if (id.cam.fnomin > 0)
+        printf("  Q_FZ2                  %.6g (was %.6g; FNOMIN %.6g N)\n", id.cam.q_fz2,
+               tire.cam.q_fz2, id.cam.fnomin);
     printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire.cam.q_ra1);
     printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire.cam.q_ra2);
     printf("%10s  %-26s  %-26s\n", "", "deflection, mm", "contact length, m");
@@ -187,14 +190,14 @@ int cli_identify_main(int argc, char *argv[])
 
     char note[2048];
     snprintf(note, sizeof note,
-             "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, VERTICAL_STIFFNESS, Q_RA1 and Q_RA2 below\n"
+             "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, VERTICAL_STIFFNESS,%s Q_RA1 and Q_RA2 below\n"
              "are identified by `tirenv identify --write` (docs/models.md section 14.1) on the\n"
              "%s model's flat ground at %zu loads %.4g to %.4g kN (deflection %.1f to %.1f mm,\n"
              "contact length %.3f to %.3f m). Largest differences from it over these loads:\n"
              "springs deflection %.1f %%, cam deflection %.1f %%, cam contact length %.1f %%.\n"
              "The springs model's contact length is the chord of its free circle, %.0f %% longer\n"
              "at most: its deflection, not its chord, is the tire's.",
-             ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
+             id.cam.fnomin > 0 ? " Q_FZ2," : "", ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
              tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
              100 * e_sd, 100 * e_cd, 100 * e_cl, 100 * e_sl);
     const tirenv_tir_value values[] = {
@@ -203,9 +206,11 @@ int cli_identify_main(int argc, char *argv[])
         {"CONTACT_PATCH", "Q_RA2", id.cam.q_ra2},
         {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},
         {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", id.springs.c_b},
+        {"VERTICAL", "Q_FZ2", id.cam.q_fz2},  /* only with FNOMIN, which it refers to */
     };
-    if ((status = tirenv_tir_update(path, sizeof values / sizeof values[0], values, note, &diag)))
+    const size_t n_values = sizeof values / sizeof values[0] - (id.cam.fnomin > 0 ? 0 : 1);
+    if ((status = tirenv_tir_update(path, n_values, values, note, &diag)))
         return cli_fail(status, &diag);
-    fprintf(stderr, "tirenv identify: wrote the five values into %s\n", path);
+    fprintf(stderr, "tirenv identify: wrote the %zu values into %s\n", n_values, path);
     return CLI_EXIT_OK;
 }

@@ -135,6 +135,21 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
 
 tirenv_tir_origin cli_tire_origin;
 
+double cli_nominal_load(const tirenv_tire *tire)
+{
+    const double fnomin = cli_tire_origin.fnomin;
+    if (!(fnomin > 0))
+        return 0;
+    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
+    double lo = 0, hi = 0;
+    const int inside = ring &&
+                       tirenv_model_load_for_contact_length(ring, 0.28, &lo, NULL) == 0 &&
+                       tirenv_model_load_for_contact_length(ring, 0.38, &hi, NULL) == 0 &&
+                       fnomin >= lo && fnomin <= hi;
+    tirenv_model_free(ring);
+    return inside ? 0 : fnomin;
+}
+
 /* The enveloping models a model type needs to describe the tire: the springs model also
  * stands for the contact length of the network and of the rigid disc. */
 static unsigned tire_needs(const tirenv_model_type *type)

@@ -56,9 +56,11 @@ tirenv_tire tirenv_tire_default(void)
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
          * identified on the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
-            .c_z = 297000,
-            .q_ra1 = 0.807,
-            .q_ra2 = 0.0241,
+            .c_z = 364000,
+            .fnomin = 17900,
+            .q_fz2 = 28.8,
+            .q_ra1 = 0.621,
+            .q_ra2 = 0.649,
             .shift = 0.8328,
             .length = 1.4634,
             .height = 0.9551,
@@ -78,6 +80,13 @@ static int cam_check(const tirenv_cam_params *c, tirenv_diag *diag)
     if (!(c->c_z > 0 && isfinite(c->c_z)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "VERTICAL_STIFFNESS",
                             "must be positive (N/m), got %g", c->c_z);
+    if (!(c->fnomin >= 0 && isfinite(c->fnomin)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FNOMIN",
+                            "must be zero (none) or positive (N), got %g", c->fnomin);
+    if (!isfinite(c->q_fz2) || (c->q_fz2 != 0 && !(c->fnomin > 0)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
+                            "must be finite, and needs FNOMIN (the load it refers to) when not "
+                            "0, got %g with FNOMIN %g", c->q_fz2, c->fnomin);
     if (!(c->q_ra1 >= 0 && isfinite(c->q_ra1)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
                             "must be zero or positive, got %g", c->q_ra1);
@@ -263,8 +272,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (eq->method > TIRENV_EQ_BRENT)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
-    status = cam_check(&tire->cam, diag);
-    return status ? status : tire_plausible(tire, diag);
+    if ((status = cam_check(&tire->cam, diag)))
+        return status;
+    return tire_plausible(tire, diag);
 }
 
 int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag)

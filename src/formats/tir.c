@@ -49,7 +49,11 @@ static const tirenv_propfile__key tir_keys[] = {
     TIR_REAL("DIMENSION", "WIDTH", width, 1, 0, 0,
              "tire width, m: the default spread of tracks across it"),
     TIR_CAM("VERTICAL", "VERTICAL_STIFFNESS", cam.c_z, -1, 1, 0, TIRENV_CAM_C_Z,
-             "cam: load / static deflection, N/m"),
+             "cam: load / static deflection, N/m; with Q_FZ2 the tangent at FNOMIN"),
+    TIR_REAL("VERTICAL", "FNOMIN", cam.fnomin, 0, 1, 0,
+             "nominal load, N: the load Q_FZ2 refers to (0: none)"),
+    TIR_REAL("VERTICAL", "Q_FZ2", cam.q_fz2, 0, 0, 0,
+             "cam: load = FNOMIN*(Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2), 0: linear"),
     TIR_CAM("CONTACT_PATCH", "Q_RA1", cam.q_ra1, 0, 0, 0, TIRENV_CAM_Q_RA1,
              "cam: contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0))"),
     TIR_CAM("CONTACT_PATCH", "Q_RA2", cam.q_ra2, 0, 0, 0, TIRENV_CAM_Q_RA2,
@@ -164,14 +168,20 @@ static const tirenv_propfile__schema tir_schema = {
 };
 
 /* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
- * file must not inherit the tractor's 0.38 m. */
+ * file must not inherit the tractor's 0.38 m. Likewise FNOMIN and Q_FZ2: a file without them
+ * has a linear vertical law, not the default tire's. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
-    const double width = tire->width;
+    const double width = tire->width, fnomin = tire->cam.fnomin, q_fz2 = tire->cam.q_fz2;
     tire->width = 0;
+    tire->cam.fnomin = 0;
+    tire->cam.q_fz2 = 0;
     const int status = tirenv_propfile__read(&tir_schema, path, tire, diag);
-    if (status)
+    if (status) {
         tire->width = width;
+        tire->cam.fnomin = fnomin;
+        tire->cam.q_fz2 = q_fz2;
+    }
     return status;
 }
 

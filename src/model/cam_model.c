@@ -4,8 +4,9 @@
  * The cam itself does not deflect: its parameters say how a tire at a given load envelopes,
  * and the load enters through the MF-Tyre contact-patch law alone. So the model reports
  *   h = w, the effective road height of the tandem (0 on flat ground),
- *   z = z_flat + w, with z_flat = R0 - rho0 and rho0 = G / VERTICAL_STIFFNESS the static
- *       deflection (the centre height of a linear vertical spring on the effective road),
+ *   z = z_flat + w, with z_flat = R0 - rho0 and rho0 the static deflection of MF-Tyre's
+ *       vertical law (G / VERTICAL_STIFFNESS, or with Q_FZ2 its quadratic: section 7.3), the
+ *       centre height of the vertical spring on the effective road,
  *   fx = -G*tan(beta): the ground force G, normal to the effective road plane of slope
  *       tan(beta), has the longitudinal part -G*tan(beta) when its vertical part is G, so a
  *       road rising in front pushes back, as in the other models,
@@ -26,6 +27,66 @@
 
 #include "model/cam_impl.h"
 #include "model/model_impl.h"
+
+/* MF-Tyre's vertical law at standstill (docs/models.md section 7.3), the load at a static
+ * deflection rho and back:
+ *   F_z = FNOMIN*(Q_FZ1*s + Q_FZ2*s^2),   s = rho/R0,
+ *   Q_FZ1 = sqrt((VERTICAL_STIFFNESS*R0/FNOMIN)^2 - 4*Q_FZ2),
+ * so that VERTICAL_STIFFNESS is the tangent stiffness at FNOMIN (MF-Tyre 6.1's Q_FZ1 when a file
+ * gives none; tirenv always derives it so). With Q_FZ2 = 0 it is the linear spring
+ * rho = F_z/VERTICAL_STIFFNESS, computed as such, bit for bit as before Q_FZ2 was read. */
+static double cam_q_fz1(const tirenv_tire *t)
+{
+    const double k = t->cam.c_z * t->springs.R0 / t->cam.fnomin;
+    return sqrt(k * k - 4 * t->cam.q_fz2);
+}
+
+/* Whether the law has a Q_FZ1 (Q_FZ2 < (VERTICAL_STIFFNESS*R0/FNOMIN)^2/4): a property of the
+ * cam with its tire's R0, checked where the cam meets a load (the tire check sees the cam keys
+ * alone, and other models combine them with another tire's R0). */
+static int cam_law_check(const tirenv_tire *t, tirenv_diag *diag)
+{
+    if (t->cam.q_fz2 == 0)
+        return TIRENV_OK;
+    const double k = t->cam.c_z * t->springs.R0 / t->cam.fnomin;
+    if (k * k - 4 * t->cam.q_fz2 > 0)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
+                        "%g leaves no Q_FZ1 = sqrt((VERTICAL_STIFFNESS*R0/FNOMIN)^2 - 4*Q_FZ2) "
+                        "(docs/models.md section 7.3): below (%g)^2/4 = %g expected",
+                        t->cam.q_fz2, k, k * k / 4);
+}
+
+/* The load (N) at deflection rho (m). */
+static double cam_load_at(const tirenv_tire *t, double rho)
+{
+    if (t->cam.q_fz2 == 0)
+        return t->cam.c_z * rho;
+    const double s = rho / t->springs.R0;
+    return t->cam.fnomin * (cam_q_fz1(t) * s + t->cam.q_fz2 * s * s);
+}
+
+/* The deflection (m) at a load (N): the rising root, in the form without cancellation; NAN
+ * beyond the largest load a law with Q_FZ2 < 0 carries. */
+static double cam_deflection_at(const tirenv_tire *t, double load)
+{
+    if (t->cam.q_fz2 == 0)
+        return load / t->cam.c_z;
+    const double g = load / t->cam.fnomin, q1 = cam_q_fz1(t);
+    const double disc = q1 * q1 + 4 * t->cam.q_fz2 * g;
+    if (!(disc >= 0))
+        return NAN;
+    return t->springs.R0 * 2 * g / (q1 + sqrt(disc));
+}
+
+/* The tangent stiffness dF_z/drho (N/m) at deflection rho (m). */
+static double cam_stiffness_at(const tirenv_tire *t, double rho)
+{
+    if (t->cam.q_fz2 == 0)
+        return t->cam.c_z;
+    return t->cam.fnomin / t->springs.R0 *
+           (cam_q_fz1(t) + 2 * t->cam.q_fz2 * rho / t->springs.R0);
+}
 
 /* The cam's valid range (docs/models.md section 7.3), as the largest relative deflection
  * y_max = rho/R0 and what ends it there, the first of:
@@ -68,6 +129,14 @@ static cam_range cam_valid_range(const tirenv_tire *t)
             r.y_max = s_peak * s_peak;
             snprintf(r.why, sizeof r.why, "where the contact length of Q_RA1 %g, Q_RA2 %g "
                      "peaks: under more load the patch would shrink", q1, q2);
+        }
+    }
+    if (t->cam.q_fz2 < 0) {
+        const double y_peak = cam_q_fz1(t) / (-2 * t->cam.q_fz2);
+        if (y_peak < r.y_max) {
+            r.y_max = y_peak;
+            snprintf(r.why, sizeof r.why, "where the vertical law of Q_FZ2 %g peaks: it "
+                     "carries no more load", t->cam.q_fz2);
         }
     }
     return r;
@@ -118,22 +187,34 @@ static int out_of_range(const tirenv_tire *t, const cam_range *r, double load, d
     if (l_c > 0)
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
                             "%g m is beyond the cam model's valid range, up to %.4g m (load "
-                            "%.6g N, deflection %.4g m), %s", l_c, 2 * a, t->cam.c_z * rho,
+                            "%.6g N, deflection %.4g m), %s", l_c, 2 * a, cam_load_at(t, rho),
                             rho, r->why);
     return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
-                        "%g N (deflection %g m at VERTICAL_STIFFNESS %g N/m) is beyond the cam "
-                        "model's valid range, up to %.6g N (deflection %.4g m, contact length "
-                        "%.4g m), %s", load, load / t->cam.c_z, t->cam.c_z, t->cam.c_z * rho,
-                        rho, 2 * a, r->why);
+                        "%g N (deflection %g m by VERTICAL_STIFFNESS %g N/m%s) is beyond the "
+                        "cam model's valid range, up to %.6g N (deflection %.4g m, contact "
+                        "length %.4g m), %s", load, cam_deflection_at(t, load), t->cam.c_z,
+                        t->cam.q_fz2 != 0 ? " and Q_FZ2" : "", cam_load_at(t, rho), rho,
+                        2 * a, r->why);
 }
 
-/* The static deflection rho = G / VERTICAL_STIFFNESS and MF-Tyre's contact half length
- * a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)), within the valid range. */
+/* The static deflection rho of the vertical law (G / VERTICAL_STIFFNESS without Q_FZ2) and
+ * MF-Tyre's contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)), within the valid
+ * range. */
 static int cam_patch(const tirenv_tire *t, const cam_range *range, double load, double *rho,
                      double *a, tirenv_diag *diag)
 {
     const double R0 = t->springs.R0, q_ra1 = t->cam.q_ra1, q_ra2 = t->cam.q_ra2;
-    *rho = load / t->cam.c_z;
+    const int status = cam_law_check(t, diag);
+    if (status)
+        return status;
+    *rho = cam_deflection_at(t, load);
+    if (isnan(*rho)) {
+        const double q1 = cam_q_fz1(t);
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
+                            "%g N is more than the vertical law of VERTICAL_STIFFNESS %g N/m, "
+                            "Q_FZ2 %g carries, at most %.6g N", load, t->cam.c_z, t->cam.q_fz2,
+                            t->cam.fnomin * q1 * q1 / (-4 * t->cam.q_fz2));
+    }
     if (!(*rho < R0))
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
                             "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m), "
@@ -153,7 +234,8 @@ static int cam_flat(void *state, double load, tirenv_flat *out, tirenv_diag *dia
     if (status)
         return status;
     *out = (tirenv_flat){.load = load, .z_flat = st->tire.springs.R0 - rho, .deflection = rho,
-                         .contact_length = 2 * a, .stiffness = st->tire.cam.c_z};
+                         .contact_length = 2 * a,
+                         .stiffness = cam_stiffness_at(&st->tire, rho)};
     return TIRENV_OK;
 }
 
@@ -170,6 +252,9 @@ static int cam_load_for_contact_length(void *state, double l_c, double *load,
     if (!(l_c > 0 && l_c < 2 * R0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
                             "must be in (0, 2*R0) = (0, %g) m, got %g", 2 * R0, l_c);
+    const int status = cam_law_check(&st->tire, diag);
+    if (status)
+        return status;
     const double A = l_c / (2 * R0), disc = q_ra1 * q_ra1 + 4 * q_ra2 * A;
     if (disc < 0)
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
@@ -183,7 +268,7 @@ static int cam_load_for_contact_length(void *state, double l_c, double *load,
                             l_c, rho, R0);
     if (!(rho <= st->range.y_max * R0))
         return out_of_range(&st->tire, &st->range, 0, l_c, diag);
-    *load = st->tire.cam.c_z * rho;
+    *load = cam_load_at(&st->tire, rho);
     return TIRENV_OK;
 }
 

@@ -102,25 +102,6 @@ int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double
     return TIRENV_OK;
 }
 
-int tirenv_contact_law_check(const tirenv_contact_law *law, tirenv_diag *diag)
-{
-    if (!(law->n >= 2 && law->n <= TIRENV_CONTACT_LAW_MAX))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact law",
-                            "%zu points; expected 2 to %d", law->n, TIRENV_CONTACT_LAW_MAX);
-    for (size_t i = 0; i < law->n; i++) {
-        const int bad = !(law->load[i] > 0 && isfinite(law->load[i]) && law->l_c[i] > 0 &&
-                          isfinite(law->l_c[i])) ||
-                        (i > 0 && !(law->load[i] > law->load[i - 1] &&
-                                    law->l_c[i] > law->l_c[i - 1]));
-        if (bad)
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact law",
-                                "point %zu (%g N, %g m): loads and contact lengths must be "
-                                "positive and strictly ascending", i + 1, law->load[i],
-                                law->l_c[i]);
-    }
-    return TIRENV_OK;
-}
-
 int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
                                  tirenv_diag *diag)
 {

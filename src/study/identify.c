@@ -95,21 +95,69 @@ static int identify_springs(tirenv_tire *t, size_t n, const tirenv_flat_target t
     return TIRENV_OK;
 }
 
-/* The cam (section 7.3): rho = G/VERTICAL_STIFFNESS, so VERTICAL_STIFFNESS is the geometric
- * mean of the reference's load over deflection (least squares in log deflection); then
- * a/R0 = Q_RA2*s^2 + Q_RA1*s with s = sqrt(rho/R0) is linear in the two keys, fitted in
- * relative error of the contact length by the 2x2 normal equations. */
+/* The cam (section 7.3). Without FNOMIN its vertical law is linear, rho = G/VERTICAL_STIFFNESS,
+ * and VERTICAL_STIFFNESS is the geometric mean of the reference's load over deflection (least
+ * squares in log deflection). With FNOMIN it is MF-Tyre's quadratic
+ * G/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 (s = rho/R0), linear in Q_FZ1 and Q_FZ2, fitted in relative
+ * load error by the 2x2 normal equations; VERTICAL_STIFFNESS is then its tangent at FNOMIN,
+ * (FNOMIN/R0)*sqrt(Q_FZ1^2 + 4*Q_FZ2). Then a/R0 = Q_RA2*s^2 + Q_RA1*s with s = sqrt(rho/R0),
+ * rho the law's deflection at each load, is linear in the two keys, fitted in relative error
+ * of the contact length by the 2x2 normal equations. */
+static int identify_vertical(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
+                             tirenv_diag *diag)
+{
+    const double R0 = t->springs.R0, F0 = t->cam.fnomin;
+    if (!(F0 > 0)) {
+        double mean = 0;
+        for (size_t i = 0; i < n; i++)
+            mean += log(tg[i].load / tg[i].deflection) / (double)n;
+        t->cam.c_z = exp(mean);
+        t->cam.q_fz2 = 0;
+        return TIRENV_OK;
+    }
+    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double s = tg[i].deflection / R0, g = tg[i].load / F0;
+        const double u = s / g, v = s * s / g;  /* the rows for Q_FZ1 and Q_FZ2 */
+        A11 += u * u;
+        A12 += u * v;
+        A22 += v * v;
+        b1 += u;
+        b2 += v;
+    }
+    const double det = A11 * A22 - A12 * A12;
+    const double q1 = (A22 * b1 - A12 * b2) / det, q2 = (A11 * b2 - A12 * b1) / det;
+    if (!(fabs(det) > 1e-12 * A11 * A22) || !(q1 * q1 + 4 * q2 > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
+                            "the loads do not separate the vertical law's two terms (give "
+                            "loads further apart)");
+    t->cam.c_z = F0 / R0 * sqrt(q1 * q1 + 4 * q2);
+    t->cam.q_fz2 = q2;
+    return TIRENV_OK;
+}
+
 static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
                         tirenv_diag *diag)
 {
     const double R0 = t->springs.R0;
-    double mean = 0;
-    for (size_t i = 0; i < n; i++)
-        mean += log(tg[i].load / tg[i].deflection) / (double)n;
-    const double c_z = exp(mean);
+    int status = identify_vertical(t, n, tg, diag);
+    if (status)
+        return status;
+    tirenv_model *cam = tirenv_model_alloc(tirenv_model_cam, t);
+    if (!cam)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    double rho[MAX_LOADS];
+    for (size_t i = 0; i < n && !status; i++) {
+        tirenv_flat f;
+        status = tirenv_model_flat(cam, tg[i].load, &f, diag);
+        rho[i] = f.deflection;
+    }
+    tirenv_model_free(cam);
+    if (status)
+        return status;
     double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
     for (size_t i = 0; i < n; i++) {
-        const double s = sqrt(tg[i].load / c_z / R0), w = 2 * R0 / tg[i].contact_length;
+        const double s = sqrt(rho[i] / R0), w = 2 * R0 / tg[i].contact_length;
         const double u = w * s * s, v = w * s;  /* the rows for Q_RA2 and Q_RA1 */
         A11 += u * u;
         A12 += u * v;
@@ -122,7 +170,6 @@ static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
                             "the loads do not separate the contact law's two terms (give "
                             "loads further apart)");
-    t->cam.c_z = c_z;
     t->cam.q_ra2 = (b1 * A22 - b2 * A12) / det;
     t->cam.q_ra1 = (A11 * b2 - A12 * b1) / det;
     t->cam.given |= TIRENV_CAM_C_Z | TIRENV_CAM_Q_RA1 | TIRENV_CAM_Q_RA2;
@@ -166,6 +213,49 @@ int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *refer
     return status;
 }
 
+/* The data set's distinct case loads with their contact lengths, ascending by load, into
+ * G[] and l[] (at most cap): *m of them, or TIRENV_EINVAL where one load has two contact
+ * lengths or the pairs do not ascend together (no tire's law). */
+static int case_knots(const tirenv_dataset *ds, double G[], double l[], size_t cap, size_t *m,
+                      tirenv_diag *diag)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < ds->n; i++) {
+        const tirenv_case *c = &ds->cases[i];
+        if (!(c->load > 0 && c->contact_length > 0))
+            continue;
+        size_t j = 0;
+        while (j < k && G[j] < c->load)
+            j++;
+        if (j < k && G[j] == c->load) {
+            if (l[j] != c->contact_length)
+                return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                                    "case %s: %g m at %g N, where another case has %g m at "
+                                    "the same load", c->name, c->contact_length, c->load,
+                                    l[j]);
+            continue;
+        }
+        if (k == cap) {
+            *m = cap + 1;  /* more than cap: the caller's grid alone */
+            return TIRENV_OK;
+        }
+        memmove(G + j + 1, G + j, (k - j) * sizeof G[0]);
+        memmove(l + j + 1, l + j, (k - j) * sizeof l[0]);
+        G[j] = c->load;
+        l[j] = c->contact_length;
+        k++;
+    }
+    *m = k;
+    return TIRENV_OK;
+}
+
+/* With a source model, the law's knots are the data set's cases themselves (their loads give
+ * back their contact lengths exactly, docs/models.md section 14.3) and, around them, the
+ * source model's flat ground on a geometric grid from half the smallest to 1.5 times the
+ * largest case load, less the grid points within a third of a grid step of a case (whose
+ * round-off difference from the case, 1e-6 m at the embedded data set's loads, would otherwise
+ * make a steep, possibly descending, sliver). A data set of more distinct loads than
+ * TIRENV_CONTACT_LAW_MAX / 2 has the grid alone. */
 int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type *source,
                                const tirenv_tire *tire, tirenv_contact_law *law, char *what,
                                size_t n, tirenv_diag *diag)
@@ -190,28 +280,55 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
                             "the data set's cases have %zu positive loads, %s; a relation "
                             "between load and contact length needs two different ones", m,
                             m ? "all equal" : "none");
-    const size_t N = TIRENV_CONTACT_LAW_MAX;
+    const size_t N = TIRENV_CONTACT_LAW_MAX, half = N / 2;
     const double lo = 0.5 * G_min, hi = 1.5 * G_max;
-    tirenv_contact_law out = {.n = N};
-    for (size_t k = 0; k < N; k++)
-        out.load[k] = lo * pow(hi / lo, (double)k / (double)(N - 1));
+    tirenv_contact_law out = {.n = 0};
     int status = TIRENV_OK;
     if (source) {
+        double G_case[TIRENV_CONTACT_LAW_MAX], l_case[TIRENV_CONTACT_LAW_MAX];
+        size_t n_case = 0;
+        if ((status = case_knots(ds, G_case, l_case, half, &n_case, diag)))
+            return status;
+        if (n_case > half)
+            n_case = 0;
+        const size_t n_grid = N - n_case;
+        const double step = log(hi / lo) / (double)(n_grid - 1);
         tirenv_model *model = tirenv_model_alloc(source, tire);
         if (!model)
             return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for "
                                 "the %s model", tirenv_model_type_name(source));
-        for (size_t k = 0; k < N && !status; k++) {
+        size_t j = 0;
+        for (size_t k = 0; k < n_grid && !status; k++) {
+            const double G = lo * exp(step * (double)k);
+            while (j < n_case && G_case[j] < G) {
+                out.load[out.n] = G_case[j];
+                out.l_c[out.n++] = l_case[j++];
+            }
+            const int near_case =
+                (j < n_case && log(G_case[j] / G) < step / 3) ||
+                (j > 0 && log(G / G_case[j - 1]) < step / 3);
             tirenv_flat f;
-            if (!(status = tirenv_model_flat(model, out.load[k], &f, diag)))
-                out.l_c[k] = f.contact_length;
+            if (near_case)
+                continue;
+            if (!(status = tirenv_model_flat(model, G, &f, diag))) {
+                out.load[out.n] = G;
+                out.l_c[out.n++] = f.contact_length;
+            }
+        }
+        while (!status && j < n_case) {
+            out.load[out.n] = G_case[j];
+            out.l_c[out.n++] = l_case[j++];
         }
         tirenv_model_free(model);
-        snprintf(what, n, "the %s model's flat ground", tirenv_model_type_name(source));
+        snprintf(what, n, "the %s model's flat ground%s", tirenv_model_type_name(source),
+                 n_case ? " through the cases" : "");
     } else {
         const double b = (m * sxy - sx * sy) / (m * sxx - sx * sx), a = (sy - b * sx) / m;
-        for (size_t k = 0; k < N; k++)
+        out.n = N;
+        for (size_t k = 0; k < N; k++) {
+            out.load[k] = lo * pow(hi / lo, (double)k / (double)(N - 1));
             out.l_c[k] = exp(a + b * log(out.load[k]));
+        }
         snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
     }
     if (!status)

@@ -13,7 +13,7 @@ repo=$(cd "$data/../.." && pwd)
 cp "$repo/data/tires/default.tir" t.tir
 run "$bin" identify --tire t.tir
 check "identify: the default tire's values are those it writes (unchanged file)" \
-    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *369000 " out && grep -q "Q_RA1 *0.807 " out &&
+    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *369000 " out && grep -q "Q_RA1 *0.621 " out &&
      cmp -s t.tir "$repo/data/tires/default.tir"'
 run "$bin" identify --tire t.tir --set RADIAL_STIFFNESS=1e6 --write
 check "identify --write: the file re-read has the identified values, comments and note kept" \
@@ -47,11 +47,24 @@ val_rms=$(awk '$1 == "validation" { print $3 }' out)
 check "train records the contact law of the data's tire (the ring of source.txt)" \
     '[ $rc -eq 0 ] && [ -n "$val_rms" ] && grep -q "contact_law" nn.json &&
      grep -q "the ring model" nn.json'
-# 13 kN, just above case R's 12963.52 N (whose 0.28 m is the trained range's very edge, which
-# the recorded law's interpolation puts 1e-6 m below it)
+# 13 kN, just above case R's 12963.52 N
 run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 13000 -o e.csv
 check "envelope --model nn --load 13000: the ring's 0.28 m, not the springs chord's 0.42 m" \
     '[ $rc -eq 0 ] && grep -q "contact length 0\.28[0-9]* m" err'
+# The data set's ends are its cases' loads, knots of the law: case R's own load gives its 0.28 m,
+# the trained range's very edge (its linear interpolation once gave 0.279999 m, refused); a
+# load 0.01 N below it (the resolution cases.csv records loads to; the ring's own load at
+# 0.28 m is 12963.5225 N) is 1e-7 m below the edge, within the 1e-6 m the nn model takes as
+# the edge: the same curve; 12 kN, below the cases, is refused.
+run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12963.52 -o r.csv
+check "envelope --model nn --load 12963.52 (case R's): accepted at exactly 0.28 m" \
+    '[ $rc -eq 0 ] && grep -q "contact length 0\.28 m" err'
+run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12963.51 -o r2.csv
+check "... 0.01 N below it: accepted as the trained range's edge, the same curve (x to fx)" \
+    '[ $rc -eq 0 ] && cut -d, -f1-5 r.csv >r.x && cut -d, -f1-5 r2.csv >r2.x && cmp -s r.x r2.x'
+run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12000 -o b.csv
+check "... 12 kN, below the data set's loads: refused, naming the contact length" \
+    '[ $rc -ne 0 ] && grep -q "contact length" err && no_file b.csv'
 run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 6000 -o o.csv
 check "an older network file: read, with a warning naming training.data.contact_law" \
     '[ $rc -eq 0 ] && grep -q "warning: .*training.data.contact_law" err'

@@ -12,8 +12,9 @@ dataset="$data/../../data/dataset"
 
 # --- each model's valid load range (docs/models.md section 1.3) ---------------------------
 # The contact law of the default tire before it was identified on the ring (Q_RA1 0.61, Q_RA2
-# 0.66), which meets the chord of the free circle at 136 kN; the identified one does not.
-old_law="--set Q_RA1=0.61 --set Q_RA2=0.66"
+# 0.66, with the linear vertical law of VERTICAL_STIFFNESS 297000 N/m identified before Q_FZ2
+# was read), which meets the chord of the free circle at 136 kN; the identified one at 337 kN.
+old_law="--set Q_RA1=0.61 --set Q_RA2=0.66 --set VERTICAL_STIFFNESS=297000 --set Q_FZ2=0"
 run "$bin" flat --model cam --load 2e5 $old_law
 check "flat --model cam --load 2e5 (a 1.7 m patch on a 1.36 m tire): exit 2 naming the limit" \
     '[ $rc -eq 2 ] && grep -q "200000 N .* beyond the cam model.s valid range, up to 136043 N" err &&

@@ -50,6 +50,8 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_int_equal(a->eq.max_iter, b->eq.max_iter);
     assert_bits_equal(a->eq.secant_dz, b->eq.secant_dz);
     assert_bits_equal(a->cam.c_z, b->cam.c_z);
+    assert_bits_equal(a->cam.fnomin, b->cam.fnomin);
+    assert_bits_equal(a->cam.q_fz2, b->cam.q_fz2);
     assert_bits_equal(a->cam.q_ra1, b->cam.q_ra1);
     assert_bits_equal(a->cam.q_ra2, b->cam.q_ra2);
     assert_bits_equal(a->cam.shift, b->cam.shift);
@@ -92,7 +94,7 @@ static void test_default_file_matches_builtin(void **state)
 
 /* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION], [VERTICAL] and
  * [CONTACT_PATCH] keys of other models, 'Newton' capitalised. Only UNLOADED_RADIUS,
- * VERTICAL_STIFFNESS, the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) and
+ * VERTICAL_STIFFNESS, FNOMIN, the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) and
  * [OPERATING_CONDITIONS] INFLPRES and NOMPRES (the ring's air) are taken. */
 static void test_mftyre_excerpt_loads(void **state)
 {
@@ -106,6 +108,8 @@ static void test_mftyre_excerpt_loads(void **state)
     expected.springs.R0 = 0.7125;
     expected.width = 0.42;
     expected.cam.c_z = 520000;
+    expected.cam.fnomin = 24000;
+    expected.cam.q_fz2 = 0;  /* none in the file: a linear law, not the default tire's */
     expected.cam.q_ra1 = 0.6715;
     expected.cam.q_ra2 = 0.7308;
     expected.cam.shift = 0.8328;
@@ -207,7 +211,7 @@ static const read_error_case read_errors[] = {
     {"", TIRENV_EPARSE, 0, 0, "", "the empty file sets none of the keys tirenv reads"},
     {"$ nothing but comments\n\n! and more\n", TIRENV_EPARSE, 3, 0, "",
      "sets none of the keys"},
-    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[VERTICAL]\nFNOMIN = 4000\n", TIRENV_EPARSE, 4, 0,
+    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[VERTICAL]\nQ_FZ1 = 12.5\n", TIRENV_EPARSE, 4, 0,
      "", "sets none of the keys"},
     /* a key tirenv reads, in another section tirenv reads: it would be ignored there */
     {"[DIMENSION]\nUNLOADED_RADIUS = 0.7\nRADIAL_STIFFNESS = 1.6e6\n", TIRENV_EPARSE, 3, 1,
@@ -301,6 +305,8 @@ static void test_set_good(void **state)
         {"SECANT_STEP=7.31e-4", offsetof(tirenv_tire, eq.secant_dz), 7.31e-4},
         {"VERTICAL_STIFFNESS=413927.3", offsetof(tirenv_tire, cam.c_z), 413927.3},
         {"vertical.vertical_stiffness=2.1e5", offsetof(tirenv_tire, cam.c_z), 2.1e5},
+        {"FNOMIN=4137.5", offsetof(tirenv_tire, cam.fnomin), 4137.5},
+        {"VERTICAL.Q_FZ2=13.71", offsetof(tirenv_tire, cam.q_fz2), 13.71},
         {"Q_RA1=0.7131", offsetof(tirenv_tire, cam.q_ra1), 0.7131},
         {"CONTACT_PATCH.Q_RA2 = -0.2417", offsetof(tirenv_tire, cam.q_ra2), -0.2417},
         {"ELLIPS_SHIFT=0.7913", offsetof(tirenv_tire, cam.shift), 0.7913},
@@ -355,7 +361,9 @@ static void test_set_errors(void **state)
         {"ELLIPS_ORDER=1", TIRENV_EINVAL, "ELLIPS_ORDER", "greater than 1"},
         {"VERTICAL_STIFFNESS=0", TIRENV_EINVAL, "VERTICAL_STIFFNESS", "must be positive"},
         {"DIMENSION.Q_RA1=0.7", TIRENV_EPARSE, "Q_RA1", "unknown key in section DIMENSION"},
-        {"FNOMIN=4000", TIRENV_EPARSE, "FNOMIN", "ELLIPS_ORDER"}, /* listed among the keys */
+        {"Q_FZ1=12.5", TIRENV_EPARSE, "Q_FZ1", "ELLIPS_ORDER"}, /* listed among the keys */
+        {"FNOMIN=-4000", TIRENV_EINVAL, "FNOMIN", "zero (none) or positive"},
+        {"Q_FZ2=inf", TIRENV_EPARSE, "Q_FZ2", "finite"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const tirenv_tire before = entropic_tire();
@@ -737,8 +745,8 @@ static void test_get_every_key(void **state)
     }
     assert_true(copy.springs.c_r == t.springs.c_r && copy.ring.k_t == t.ring.k_t &&
                 copy.eq.max_iter == t.eq.max_iter && copy.eq.method == t.eq.method);
-    assert_int_equal(tirenv_tir_get(&t, "FNOMIN", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
-    assert_string_equal(d.field, "FNOMIN");
+    assert_int_equal(tirenv_tir_get(&t, "Q_FZ1", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "Q_FZ1");
     assert_non_null(strstr(d.message, "RADIAL_STIFFNESS"));
     assert_int_equal(tirenv_tir_get(&t, "LENGTH", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
     assert_int_equal(tirenv_tir_get(&t, "RADIAL_STIFFNESS", buf, 5, NULL, &d), TIRENV_EINVAL);

@@ -98,6 +98,8 @@ tirenv_tire tirenv_test_tire_before_identify(void)
     t.springs.c_b = 1.41e4;
     t.cam.q_ra1 = 0.61;
     t.cam.q_ra2 = 0.66;
+    t.cam.c_z = 297000;  /* the linear vertical law identified before Q_FZ2 was read */
+    t.cam.q_fz2 = 0;
     return t;
 }
 

@@ -430,9 +430,9 @@ static double half_length(const tirenv_tire *t, double rho)
     return R0 * (t->cam.q_ra2 * r + t->cam.q_ra1 * sqrt(r));
 }
 
-/* Flat ground: rho = G/VERTICAL_STIFFNESS, contact length 2a, and the load for a contact
- * length inverts it (closed form: agreement to a few ulp, 1e-12 relative allows 4500). Laws
- * with Q_RA2 > 0, = 0, < 0 and Q_RA1 = 0. */
+/* Flat ground with the linear vertical law (Q_FZ2 = 0): rho = G/VERTICAL_STIFFNESS exactly,
+ * contact length 2a, and the load for a contact length inverts it (closed form: agreement to a
+ * few ulp, 1e-12 relative allows 4500). Laws with Q_RA2 > 0, = 0, < 0 and Q_RA1 = 0. */
 static void test_flat_and_contact_length(void **state)
 {
     (void)state;
@@ -440,6 +440,7 @@ static void test_flat_and_contact_length(void **state)
                            {0.0, 2.3711}};
     for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
         tirenv_tire t = tirenv_tire_default();
+        t.cam.q_fz2 = 0;
         t.cam.q_ra1 = q[i][0];
         t.cam.q_ra2 = q[i][1];
         tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
@@ -662,6 +663,67 @@ static void test_tire_check(void **state)
     assert_string_equal(diag.field, "Q_RA2");
 }
 
+/* MF-Tyre's quadratic vertical law (docs/models.md section 7.3) with Q_FZ2 > 0 (the default
+ * tire's) and < 0: at each load the deflection satisfies G = FNOMIN*(Q_FZ1*s + Q_FZ2*s^2) to
+ * 1e-13 relative (a closed-form root: a few ulp), the stiffness is its tangent (against a
+ * central difference of the law's loads, 1e-6 relative: the difference's truncation at a step
+ * of 1e-6 of rho), and at FNOMIN that tangent is VERTICAL_STIFFNESS (1e-12); the contact
+ * length gives back the load (1e-12). Q_FZ2 < 0: beyond the law's peak load refused, naming
+ * the load; Q_FZ2 too large for a Q_FZ1: refused naming Q_FZ2. */
+static void test_vertical_law_quadratic(void **state)
+{
+    (void)state;
+    const double q_fz2[] = {28.8, 13.71, -7.93};
+    for (size_t i = 0; i < sizeof q_fz2 / sizeof q_fz2[0]; i++) {
+        tirenv_tire t = tirenv_tire_default();
+        t.cam.q_fz2 = q_fz2[i];
+        const double R0 = t.springs.R0, F0 = t.cam.fnomin, k = t.cam.c_z * R0 / F0;
+        const double q1 = sqrt(k * k - 4 * q_fz2[i]);
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
+        assert_non_null(m);
+        tirenv_diag diag;
+        const double loads[] = {5931.7, 12963.52, F0, 23751.9};
+        for (size_t j = 0; j < sizeof loads / sizeof loads[0]; j++) {
+            tirenv_flat f;
+            assert_int_equal(tirenv_model_flat(m, loads[j], &f, &diag), TIRENV_OK);
+            const double s = f.deflection / R0;
+            assert_near(F0 * (q1 * s + q_fz2[i] * s * s), loads[j], 0, 1e-13);
+            const double d = 1e-6 * f.deflection, sp = (f.deflection + d) / R0,
+                         sm = (f.deflection - d) / R0;
+            const double dG = F0 * (q1 * (sp - sm) + q_fz2[i] * (sp * sp - sm * sm));
+            assert_near(f.stiffness, dG / (2 * d), 0, 1e-6);
+            if (loads[j] == F0)
+                assert_near(f.stiffness, t.cam.c_z, 0, 1e-12);
+            double G;
+            assert_int_equal(tirenv_model_load_for_contact_length(m, f.contact_length, &G,
+                                                                  &diag), TIRENV_OK);
+            assert_near(G, loads[j], 0, 1e-12);
+        }
+        if (q_fz2[i] < 0) {
+            const double G_peak = F0 * q1 * q1 / (-4 * q_fz2[i]);
+            tirenv_flat f;
+            assert_int_equal(tirenv_model_flat(m, 1.001 * G_peak, &f, &diag), TIRENV_ERANGE);
+            assert_string_equal(diag.field, "load");
+        }
+        tirenv_model_free(m);
+    }
+    tirenv_tire t = tirenv_tire_default();
+    const double k = t.cam.c_z * t.springs.R0 / t.cam.fnomin;
+    t.cam.q_fz2 = 0.2501 * k * k;
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
+    assert_non_null(m);
+    tirenv_flat f;
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_flat(m, 15000, &f, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "Q_FZ2");
+    tirenv_model_free(m);
+    /* Q_FZ2 without FNOMIN: refused by the tire check. */
+    t = tirenv_tire_default();
+    t.cam.fnomin = 0;
+    assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "Q_FZ2");
+}
+
 /* The shipped MF-Swift example loads unchanged over the default tire: its radius, vertical
  * stiffness and cam, and tirenv's own sections for this tire (the springs' start values, a
  * car-sized ring); the discretisation and the ring's lugs stay the default's. At 4 kN its patch
@@ -687,7 +749,8 @@ static void test_mfswift_file(void **state)
     expected.ring.alpha_s = 1.2;
     expected.ring.p = 220000;
     expected.ring.p_nom = 220000;
-    expected.cam = (tirenv_cam_params){.c_z = 209651.5, .q_ra1 = 0.6715, .q_ra2 = 0.7308,
+    expected.cam = (tirenv_cam_params){.c_z = 209651.5, .fnomin = 4000, .q_fz2 = 0,
+                                       .q_ra1 = 0.6715, .q_ra2 = 0.7308,
                                        .shift = 0.8328, .length = 1.4634, .height = 0.9551,
                                        .order = 1.5257, .given = TIRENV_CAM_ALL};
     assert_memory_equal(&t.springs, &expected.springs, sizeof t.springs);
@@ -716,6 +779,7 @@ int main(void)
         cmocka_unit_test(test_tandem_symmetry),
         cmocka_unit_test(test_double_hump),
         cmocka_unit_test(test_flat_and_contact_length),
+        cmocka_unit_test(test_vertical_law_quadratic),
         cmocka_unit_test(test_model_point),
         cmocka_unit_test(test_model_sweep_exact),
         cmocka_unit_test(test_tire_check),
