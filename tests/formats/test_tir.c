@@ -6,6 +6,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -463,14 +464,14 @@ static void test_outfile_commit(void **state)
     char path[600], text[64];
     tirenv_test_path(fx, "out.csv", path);
     const mode_t old_mask = umask(027);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    fputs("x_m,z_m\n", f.fp);
+    fputs("x_m,z_m\n", tirenv_outfile_stream(f));
     /* Until commit, readers see no target, only the temporary file. */
     assert_false(file_exists(path));
     assert_int_equal(tirenv_test_count_entries(fx, ".out.csv.tirenv-tmp."), 1);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     umask(old_mask);
     read_back(path, text, sizeof text);
     assert_string_equal(text, "x_m,z_m\n");
@@ -479,7 +480,6 @@ static void test_outfile_commit(void **state)
     struct stat st;
     assert_int_equal(stat(path, &st), 0);
     assert_int_equal(st.st_mode & 0777, 0640);
-    tirenv_outfile_abort(&f); /* after commit: nothing to do, and the file stays */
     assert_true(file_exists(path));
 }
 
@@ -488,16 +488,16 @@ static void test_outfile_abort(void **state)
     tirenv_test_dir *fx = *state;
     char path[600];
     tirenv_test_path(fx, "out.csv", path);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    fputs("half a fi", f.fp);
-    tirenv_outfile_abort(&f);
-    tirenv_outfile_abort(&f); /* safe twice */
+    fputs("half a fi", tirenv_outfile_stream(f));
+    tirenv_outfile_abort(f);
+    tirenv_outfile_abort(NULL); /* a no-op, as after a failed open */
     assert_false(file_exists(path));
     assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
     assert_int_equal(tirenv_test_count_entries(fx, ""), 0);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_outfile_commit(NULL, &d), TIRENV_EINVAL);
     assert_false(file_exists(path));
 }
 
@@ -508,13 +508,13 @@ static void test_outfile_replaces_existing(void **state)
     tirenv_test_path(fx, "out.csv", path);
     tirenv_test_write_text(path, "old contents, longer than the new ones\n");
     assert_int_equal(chmod(path, 0604), 0);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    fputs("new\n", f.fp);
+    fputs("new\n", tirenv_outfile_stream(f));
     read_back(path, text, sizeof text); /* the old file is intact until commit */
     assert_string_equal(text, "old contents, longer than the new ones\n");
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     read_back(path, text, sizeof text);
     assert_string_equal(text, "new\n");
     struct stat st;
@@ -528,31 +528,33 @@ static void test_outfile_errors(void **state)
     tirenv_test_dir *fx = *state;
     char path[600];
     tirenv_test_path(fx, "missing/out.csv", path);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_EIO);
     assert_string_equal(d.file, path);
     assert_non_null(strstr(d.message, strerror(ENOENT)));
-    assert_null(f.fp);
-    tirenv_outfile_abort(&f); /* after a failed open: harmless */
+    assert_null(f);
+    tirenv_outfile_abort(f); /* after a failed open: harmless */
 
     char long_path[1100];
     memset(long_path, 'a', sizeof long_path - 1);
     long_path[sizeof long_path - 1] = '\0';
     assert_int_equal(tirenv_outfile_open(&f, long_path, &d), TIRENV_EINVAL);
+    assert_null(f);
     assert_int_equal(tirenv_outfile_open(&f, "", &d), TIRENV_EINVAL);
+    assert_null(f);
 }
 
 static void test_outfile_stdout(void **state)
 {
     (void)state;
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, "-", &d), TIRENV_OK);
-    assert_ptr_equal(f.fp, stdout);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
-    tirenv_outfile_abort(&f); /* must not close stdout */
-    assert_int_equal(fflush(stdout), 0);
+    assert_ptr_equal(tirenv_outfile_stream(f), stdout);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
+    assert_int_equal(fflush(stdout), 0); /* commit did not close stdout */
+    assert_true(fcntl(STDOUT_FILENO, F_GETFD) >= 0);
 }
 
 /* ---- real MF-Tyre / PAC2002 files ------------------------------------------------------ */
