@@ -60,7 +60,7 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
 
 /* A road file read a row at a time, whatever its format, for a streamed sweep
  * (tirenv_model_stream_tracks, or tirenv_model_stream for one track): each row is an x (m) and
- * the heights (m) of n tracks there. A CSV is read row by row (tirenv_profile_reader), a CRG
+ * the heights (m) of n tracks there. A CSV is read row by row, a CRG
  * a block of rows at a time (a tirenv_crg_track_reader per track: memory of a few blocks,
  * whatever the road's length), an RDF road whole (its poly_line is small). A CSV or RDF road is
  * 2-D: every track gets its height. */
