@@ -247,17 +247,13 @@ static int road_out_open(const run *r, const tirenv_model *m, double load, doubl
     road_comment(r, m, load, comment, sizeof comment);
     const tirenv_tire *tire = tirenv_model_tire(m);
     const double width = r->road.width > 0 ? r->road.width : tire->width > 0 ? tire->width : 1;
-    tirenv_road_writer_layout l = {.x_from = x_from, .dx = dx, .n = n,
-                                   .half_width = 0.5 * width, .encoding = r->e->encoding,
-                                   .comment = comment};
-    /* An effective road of a road file lies where that road is (its reference line, the
-     * track's v); of a generated obstacle, along x from the origin. */
-    if (r->road.from_file && r->out_format == TIRENV_PROFILE_CRG) {
-        const int status = tirenv_road_writer_place(r->o->obstacle_arg, r->road.format,
-                                                    r->road.src.crg.v, &l, diag);
-        if (status)
-            return status;
-    }
+    /* An effective road of an OpenCRG road lies where that road is (its reference line, the
+     * track's v); of another road file or a generated obstacle, along x from the origin. */
+    const int on_crg = r->road.from_file && r->road.format == TIRENV_PROFILE_CRG;
+    const tirenv_road_writer_layout l = {
+        .x_from = x_from, .dx = dx, .n = n, .half_width = 0.5 * width,
+        .v_track = on_crg ? r->road.src.crg.v : 0, .encoding = r->e->encoding,
+        .comment = comment, .on_crg = on_crg ? r->o->obstacle_arg : NULL};
     return tirenv_road_writer_open(r->o->output, r->out_format, &l, w, diag);
 }
 
