@@ -113,6 +113,9 @@ foreach(file ${core_files})
 endforeach()
 
 # --- auxiliary sources: public headers and their own private ones ---------------------------
+# An auxiliary module includes its own private headers and the public ones, never another
+# module's private header (Lua's lauxlib.c is written against lua.h alone), save the io
+# readers listed in TIRENV_AUX_SHARED_HEADERS, and those only from a module after io.
 set(aux_files "")
 foreach(d ${TIRENV_AUX_DIRS})
   file(GLOB_RECURSE f ${SOURCE_DIR}/src/${d}/*.c ${SOURCE_DIR}/src/${d}/*.h)
@@ -132,11 +135,13 @@ foreach(file ${aux_files})
       module_of(${name} m)
       if(NOT m IN_LIST TIRENV_AUX_DIRS)
         violation("${rel}:${line}: auxiliary layer includes ${name}, a private header of the ${m} module (only tirenv/*.h)")
-      else()
+      elseif(NOT m STREQUAL module)
         list(FIND TIRENV_AUX_DIRS ${module} own)
         list(FIND TIRENV_AUX_DIRS ${m} theirs)
         if(theirs GREATER own)
           violation("${rel}:${line}: the ${module} module includes ${name}, a private header of ${m}, which comes after it (TIRENV_AUX_DIRS)")
+        elseif(NOT name IN_LIST TIRENV_AUX_SHARED_HEADERS)
+          violation("${rel}:${line}: the ${module} module includes ${name}, a private header of ${m}; an auxiliary module includes only its own private headers and public ones (tirenv/*.h)")
         endif()
       endif()
     endif()

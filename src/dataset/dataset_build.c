@@ -7,10 +7,10 @@
 
 #include <stdio.h>
 #include <string.h>
-#include "formats/tir_impl.h"
 #include "tirenv/outfile.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
+#include "tirenv/tir.h"
 
 /* Obstacle lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact lengths 0.28 to 0.43 m,
  * spread so that every value of each appears in training, and the validation cases are the
@@ -281,7 +281,7 @@ static int build_into(const char *dir, const tirenv_design *d, const design_reco
              d->summary, d == designs[0] ? "" : " --design ", d == designs[0] ? "" : d->name);
     snprintf(path, sizeof path, "%s/tire.tir", dir);
     if (!status)
-        status = tirenv_tir__write_noted(path, tire, note, diag);
+        status = tirenv_tir_write_noted(path, tire, note, diag);
     if (!status)
         status = write_source(dir, d, note, diag);
     if (status)
