@@ -20,28 +20,25 @@ TIRENV_BEGIN_DECLS
  * A block device, a socket or a directory is refused. The temporary file is removed on
  * failure, by tirenv_cleanup_on_signal on SIGINT/SIGTERM, and, after a SIGKILL, by the next
  * output opened in the same directory once the killed process is gone. */
-typedef struct {
-    FILE *fp;              /* write here between open and commit */
-    char path[1024];       /* the path as given, for messages */
-    /* private: */
-    char target[4096];     /* what commit replaces: path with its symbolic links followed */
-    char tmp[4096];        /* the temporary file, or "" when written through */
-    int through;           /* 1: written straight to the target or descriptor */
-    int slot;              /* registration for tirenv_cleanup_on_signal, or -1 */
-    char *buf;             /* stdio buffer of a temporary file */
-} tirenv_outfile;
+typedef struct tirenv_outfile tirenv_outfile;
 
-/* Opens the output (see above); path "-" writes to stdout. */
-int tirenv_outfile_open(tirenv_outfile *f, const char *path, tirenv_diag *diag);
-/* Flushes, checks every write, closes and renames into place; on any error removes the
- * temporary file. */
+/* Opens the output (see above); path "-" writes to stdout. *out is the new handle, NULL on
+ * failure; commit or abort frees it. */
+int tirenv_outfile_open(tirenv_outfile **out, const char *path, tirenv_diag *diag);
+/* Where to write between open and commit (owned by f: never fclose it). */
+FILE *tirenv_outfile_stream(tirenv_outfile *f);
+/* The path as given to open, for messages. */
+const char *tirenv_outfile_path(const tirenv_outfile *f);
+/* Flushes, checks every write, closes, renames into place and frees f; on any error removes
+ * the temporary file (and still frees f). NULL is TIRENV_EINVAL. */
 int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag);
 /* 1 if nothing reaches the target before commit (a temporary file), 0 when written through:
  * a writer that could fail midway may then want to compute everything first. */
 int tirenv_outfile_is_atomic(const tirenv_outfile *f);
 /* Writes text as '#' comment lines ("# " before each line of it); NULL writes nothing. */
 void tirenv_outfile_comment(tirenv_outfile *f, const char *text);
-/* Closes and removes the temporary file (after a failure); safe to call twice. */
+/* Closes and removes the temporary file (after a failure) and frees f; the target is left as
+ * it was. NULL is a no-op. */
 void tirenv_outfile_abort(tirenv_outfile *f);
 
 /* 1 if tirenv_outfile_open would write PATH through rather than replace it: "-", a

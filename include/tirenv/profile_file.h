@@ -60,7 +60,7 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
 
 /* A road file read a row at a time, whatever its format, for a streamed sweep
  * (tirenv_model_stream_tracks, or tirenv_model_stream for one track): each row is an x (m) and
- * the heights (m) of n tracks there. A CSV is read row by row (tirenv_profile_reader), a CRG
+ * the heights (m) of n tracks there. A CSV is read row by row, a CRG
  * a block of rows at a time (a tirenv_crg_track_reader per track: memory of a few blocks,
  * whatever the road's length), an RDF road whole (its poly_line is small). A CSV or RDF road is
  * 2-D: every track gets its height. */
@@ -115,19 +115,17 @@ typedef struct {
     double x_start, y_start;       /* .crg: the reference line at x_from in the x/y plane, m */
     double phi_start;              /* .crg: its heading, rad */
     double z_start;                /* .crg: the road's height at x_from on the track, m */
+    const char *on_crg;            /* .crg: the OpenCRG road file the positions run along, or
+                                    * NULL; open then takes x_start, y_start, phi_start and
+                                    * z_start from it (its straight reference line at u =
+                                    * x_from, its heading, its height on the track v_track
+                                    * there). A curved road (a heading channel) is refused: its
+                                    * effective road on a straight line would lie beside it. */
     tirenv_crg_encoding encoding;  /* .crg */
     const char *comment;           /* what it is, lines of at most 72 characters (copied) */
 } tirenv_road_writer_layout;
 
 typedef struct tirenv_road_writer tirenv_road_writer;
-
-/* Where the effective road of the road file path (format, read at lateral position v) goes:
- * an OpenCRG road's straight reference line at u = l->x_from, its heading, its height on the
- * track there and v, into the layout (0 for a road of another format: the reference line is
- * x itself). A curved OpenCRG road (a heading channel) is refused: its effective road written
- * on a straight line would lie beside the road. */
-int tirenv_road_writer_place(const char *path, tirenv_profile_format format, double v,
-                             tirenv_road_writer_layout *l, tirenv_diag *diag);
 
 /* Opens path in format f (TIRENV_PROFILE_CRG or _RDF) for the n positions of the layout into
  * *out (NULL on failure); a CRG needs n >= 2. */

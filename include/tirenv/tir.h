@@ -23,6 +23,11 @@ int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag)
 
 /* Writes *tire as a .tir file (atomically: all or nothing). */
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag);
+/* Writes *tire as tirenv_tir_write does, with note (lines separated by '\n') as '!' comment
+ * lines after the [MDI_HEADER] keys in place of tirenv's own preamble: no tirenv version, for
+ * files that must stay the same bytes across versions (a data set's tire.tir). */
+int tirenv_tir_write_noted(const char *path, const tirenv_tire *tire, const char *note,
+                           tirenv_diag *diag);
 
 /* What a tire key holds: a real number (SI), a count, or a name (METHOD). */
 typedef enum { TIRENV_TIR_REAL, TIRENV_TIR_COUNT, TIRENV_TIR_NAME } tirenv_tir_kind;

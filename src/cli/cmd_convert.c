@@ -194,7 +194,7 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     int status = tirenv_crg_track_reader_open(crg, &cv->src.crg, &r, diag);
     if (status)
         return status;
-    tirenv_outfile f;
+    tirenv_outfile *f;
     if ((status = tirenv_outfile_open(&f, cv->out, diag))) {
         tirenv_crg_track_reader_free(r);
         return status;
@@ -202,26 +202,27 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     char comment[160], v[TIRENV_FMT_G_SIZE];
     tirenv_fmt_shortest(cv->src.crg.v, v);
     snprintf(comment, sizeof comment, "track at v = %s m of an OpenCRG road (tirenv convert)", v);
-    fputs("x_m,z_m\n", f.fp);
-    tirenv_outfile_comment(&f, comment);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("x_m,z_m\n", fp);
+    tirenv_outfile_comment(f, comment);
     double u, z;
     int got;
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
     while (!(status = tirenv_crg_track_reader_next(r, &u, &z, &got, diag)) && got) {
         tirenv_fmt_shortest(u, a);  /* the heights read back exactly, as every writer's */
         tirenv_fmt_shortest(z, b);
-        fprintf(f.fp, "%s,%s\n", a, b);
+        fprintf(fp, "%s,%s\n", a, b);
         range[2] = fmin(range[2], z);
         range[3] = fmax(range[3], z);
     }
     tirenv_crg_track_reader_free(r);
     if (status) {
-        tirenv_outfile_abort(&f);
+        tirenv_outfile_abort(f);
         return status;
     }
     range[0] = tirenv_crg_u_start(crg);
     range[1] = tirenv_crg_u_end(crg);
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, double range[4],

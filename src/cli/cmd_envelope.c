@@ -247,17 +247,13 @@ static int road_out_open(const run *r, const tirenv_model *m, double load, doubl
     road_comment(r, m, load, comment, sizeof comment);
     const tirenv_tire *tire = tirenv_model_tire(m);
     const double width = r->road.width > 0 ? r->road.width : tire->width > 0 ? tire->width : 1;
-    tirenv_road_writer_layout l = {.x_from = x_from, .dx = dx, .n = n,
-                                   .half_width = 0.5 * width, .encoding = r->e->encoding,
-                                   .comment = comment};
-    /* An effective road of a road file lies where that road is (its reference line, the
-     * track's v); of a generated obstacle, along x from the origin. */
-    if (r->road.from_file && r->out_format == TIRENV_PROFILE_CRG) {
-        const int status = tirenv_road_writer_place(r->o->obstacle_arg, r->road.format,
-                                                    r->road.src.crg.v, &l, diag);
-        if (status)
-            return status;
-    }
+    /* An effective road of an OpenCRG road lies where that road is (its reference line, the
+     * track's v); of another road file or a generated obstacle, along x from the origin. */
+    const int on_crg = r->road.from_file && r->road.format == TIRENV_PROFILE_CRG;
+    const tirenv_road_writer_layout l = {
+        .x_from = x_from, .dx = dx, .n = n, .half_width = 0.5 * width,
+        .v_track = on_crg ? r->road.src.crg.v : 0, .encoding = r->e->encoding,
+        .comment = comment, .on_crg = on_crg ? r->o->obstacle_arg : NULL};
     return tirenv_road_writer_open(r->o->output, r->out_format, &l, w, diag);
 }
 
@@ -366,8 +362,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     if (bad)
         return bad;
     tirenv_profile_file_reader *in = NULL;
-    tirenv_outfile out;
-    int have_out = 0;
+    tirenv_outfile *out = NULL;
     stream_out so = {0};
     tirenv_diag_clear(&so.diag);
     const char *path = o->output ? o->output : "-";
@@ -380,9 +375,8 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     if (!status && r->out_format != TIRENV_PROFILE_CSV) {
         status = road_out_open(r, m, load, x_from, dx, n, &so.road, &diag);
     } else if (!status && !(status = tirenv_outfile_open(&out, path, &diag))) {
-        have_out = 1;
-        so.fp = out.fp;
-        fputs(header, out.fp);
+        so.fp = tirenv_outfile_stream(out);
+        fputs(header, so.fp);
     }
     if (!status) {
         status = tirenv_model_stream_tracks(m, r->road.n, NULL,
@@ -397,12 +391,11 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
             so.road = NULL;
             status = tirenv_road_writer_commit(w, &diag);
         } else if (!status) {
-            have_out = 0;
-            status = tirenv_outfile_commit(&out, &diag);
+            status = tirenv_outfile_commit(out, &diag);
+            out = NULL;
         }
     }
-    if (have_out)
-        tirenv_outfile_abort(&out);
+    tirenv_outfile_abort(out);
     tirenv_road_writer_abort(so.road);
     tirenv_profile_file_reader_free(in);
     tirenv_profile_file_reader_free(in_level);
@@ -416,8 +409,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
 /* Where a whole sweep goes: the CSV curve or the effective road, opened before the sweep so
  * that a bad -o fails at once, not after it. Both reach their target only on commit. */
 typedef struct {
-    tirenv_outfile out;
-    int have_out;
+    tirenv_outfile *out;  /* NULL once committed or aborted */
     tirenv_road_writer *road;
 } whole_out;
 
@@ -427,9 +419,7 @@ static int whole_open(const run *r, const tirenv_model *m, double load, double x
     memset(w, 0, sizeof *w);
     if (r->out_format != TIRENV_PROFILE_CSV)
         return road_out_open(r, m, load, x_from, dx, n, &w->road, diag);
-    const int status = tirenv_outfile_open(&w->out, r->o->output ? r->o->output : "-", diag);
-    w->have_out = status == TIRENV_OK;
-    return status;
+    return tirenv_outfile_open(&w->out, r->o->output ? r->o->output : "-", diag);
 }
 
 /* Points a sweep may write as they come: into a temporary file or road (nothing reaches the
@@ -438,7 +428,7 @@ static int whole_open(const run *r, const tirenv_model *m, double load, double x
  * the sweep is computed whole first, so that a failure midway writes nothing. */
 static int whole_streams(const run *r, const whole_out *w)
 {
-    return (w->road || tirenv_outfile_is_atomic(&w->out)) && !r->e->detail;
+    return (w->road || tirenv_outfile_is_atomic(w->out)) && !r->e->detail;
 }
 
 /* Writes the points [k0, k0 + n) of the sweep. */
@@ -452,12 +442,13 @@ static int whole_write(const run *r, tirenv_model *m, const tirenv_profile *prof
             status = tirenv_road_writer_add(w->road, pt[k].x, pt[k].h, diag);
         return status;
     }
+    FILE *fp = tirenv_outfile_stream(w->out);
     if (r->e->detail)
-        return write_detail(w->out.fp, tirenv_model_tire(m), prof, pt, n, diag);
+        return write_detail(fp, tirenv_model_tire(m), prof, pt, n, diag);
     if (k0 == 0)
-        fputs(header, w->out.fp);
+        fputs(header, fp);
     for (size_t k = 0; k < n; ++k)
-        write_row(w->out.fp, &pt[k]);
+        write_row(fp, &pt[k]);
     return TIRENV_OK;
 }
 
@@ -469,14 +460,15 @@ static int whole_close(whole_out *w, int status, tirenv_diag *diag)
     if (road)
         return status ? (tirenv_road_writer_abort(road), status)
                       : tirenv_road_writer_commit(road, diag);
-    if (!w->have_out)
+    tirenv_outfile *out = w->out;
+    w->out = NULL;
+    if (!out)
         return status;
-    w->have_out = 0;
     if (status) {
-        tirenv_outfile_abort(&w->out);
+        tirenv_outfile_abort(out);
         return status;
     }
-    return tirenv_outfile_commit(&w->out, diag);
+    return tirenv_outfile_commit(out, diag);
 }
 
 /* --relative-to ground: h less the road's local level under the centre, the mean of the

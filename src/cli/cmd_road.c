@@ -125,7 +125,7 @@ int cli_road_main(int argc, char *argv[])
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_profile *p = NULL;
-    tirenv_outfile out;
+    tirenv_outfile *out;
     /* Generated first: a refused setting must not leave an empty file behind. */
     int status = tirenv_road_iso8608(&s, &p, &diag);
     if (!status && !(status = tirenv_outfile_open(&out, out_path, &diag))) {
@@ -136,10 +136,10 @@ int cli_road_main(int argc, char *argv[])
                  "dx %g m, seed %lu",
                  s.road_class, tirenv_iso8608_gd0(s.road_class), TIRENV_ISO8608_N0,
                  s.waviness, s.n_min, s.n_max, s.length, s.dx, s.seed);
-        fputs("x_m,z_m\n", out.fp);
-        tirenv_outfile_comment(&out, comment);
-        write_csv(out.fp, p);
-        status = tirenv_outfile_commit(&out, &diag);  /* it checks the writes */
+        fputs("x_m,z_m\n", tirenv_outfile_stream(out));
+        tirenv_outfile_comment(out, comment);
+        write_csv(tirenv_outfile_stream(out), p);
+        status = tirenv_outfile_commit(out, &diag);  /* it checks the writes */
     }
     if (status) {
         tirenv_profile_free(p);

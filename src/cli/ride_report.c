@@ -16,22 +16,23 @@ enum { SEAT_MAX_POINTS = 20000, WELCH_MAX_SEGMENT = 4096 };
 static int write_csv(const char *path, const ride_options *r, const ride_result res[],
                      tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
+    FILE *fp = tirenv_outfile_stream(f);
     fputs("model,speed_m_s,speed_km_h,duration_s,a_wz_m_s2,crest,vdv_m_s1.75,mtvv_m_s2,"
           "peak_awz_m_s2,a_w_pitch_rad_s2,vdv_pitch_rad_s1.75,a_v_m_s2,peak_az_m_s2,"
-          "lift_off_s,cpu_s,real_time_factor,enveloping\n", f.fp);
+          "lift_off_s,cpu_s,real_time_factor,enveloping\n", fp);
     for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
-        fprintf(f.fp, "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
+        fprintf(fp, "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
                 "%.6g,%.6g,%s\n", q->model, q->speed, q->speed * 3.6, q->duration, q->c.seat.rms,
                 q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv, q->c.seat.peak, q->c.pitch.rms,
                 q->c.pitch.vdv, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9), ride_enveloping_name(q->enveloping));
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* The runs of one model at one speed in the other ways of enveloping against its static
@@ -72,10 +73,11 @@ static void write_differences(FILE *fp, const ride_options *r, const ride_result
 static int write_md(const char *path, const ride_options *r, const ride_result res[],
                     tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
+    FILE *fp = tirenv_outfile_stream(f);
     fputs("# Ride comfort at the seat (tirenv ride)\n\n"
           "ISO 2631-1:1997 figures of the seat's vertical acceleration (weighting Wk) and the\n"
           "body's pitch acceleration (We); a_v combines the two with k = 1 and 0.4 m/rad.\n"
@@ -84,17 +86,17 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
           "\n"
           "| model | enveloping | km/h | a_wz m/s² | crest | VDV m/s^1.75 | MTVV m/s² | "
           "a_w pitch rad/s² | a_v m/s² | peak a_z m/s² | lift-off s | CPU s | × real time |\n"
-          "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", f.fp);
+          "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", fp);
     for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
-        fprintf(f.fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
+        fprintf(fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
                 "%.3f | %.3f | %.0f |\n", q->model, ride_enveloping_name(q->enveloping),
                 q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv,
                 q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
-    write_differences(f.fp, r, res);
-    return tirenv_outfile_commit(&f, diag);
+    write_differences(fp, r, res);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* The gnuplot preamble both figures share: the image names tirenv sets on the command line,
@@ -148,13 +150,14 @@ static int draw(const char *dir, const char *base, const char *what, const char 
                 const char *axes, const ride_options *r, tirenv_diag *diag)
 {
     char path[1024];
-    tirenv_outfile f;
+    tirenv_outfile *f;
     snprintf(path, sizeof path, "%s/%s.gp", dir, base);
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    script_head(f.fp, base, what, r);
-    fprintf(f.fp,
+    FILE *fp = tirenv_outfile_stream(f);
+    script_head(fp, base, what, r);
+    fprintf(fp,
             "    set multiplot layout %zu,1 title \"%s\"\n"
             "%s"
             "    do for [j = 1:words(speeds)] {\n"
@@ -166,7 +169,7 @@ static int draw(const char *dir, const char *base, const char *what, const char 
             "}\n"
             "unset output\n",
             r->n_speeds, title, axes, base);
-    if ((status = tirenv_outfile_commit(&f, diag)))
+    if ((status = tirenv_outfile_commit(f, diag)))
         return status;
     return tirenv_plot_draw(dir, base, NULL, diag);
 }
@@ -176,27 +179,28 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
                      double wheelbase, tirenv_diag *diag)
 {
     char path[1024];
-    tirenv_outfile f;
+    tirenv_outfile *f;
     snprintf(path, sizeof path, "%s/seat.dat", dir);
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
+    FILE *fp = tirenv_outfile_stream(f);
     for (size_t j = 0; j < r->n_speeds; ++j) {
         /* The runs at one speed share their length, so one x column serves every model. */
         const ride_series *row = &series[j * r->n_cols];
         const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
-        fprintf(f.fp, "%s# %g km/h: x_front_m", j ? "\n\n" : "", r->speeds[j] * 3.6);
+        fprintf(fp, "%s# %g km/h: x_front_m", j ? "\n\n" : "", r->speeds[j] * 3.6);
         for (size_t i = 0; i < r->n_cols; ++i)
-            fprintf(f.fp, " seat_az_%s_m_s2", r->cols[i].label);
-        fputc('\n', f.fp);
+            fprintf(fp, " seat_az_%s_m_s2", r->cols[i].label);
+        fputc('\n', fp);
         for (size_t k = 0; k < n; k += every) {
-            fprintf(f.fp, "%.6g", row[0].samples[k].x_front);
+            fprintf(fp, "%.6g", row[0].samples[k].x_front);
             for (size_t i = 0; i < r->n_cols; ++i)
-                fprintf(f.fp, " %.6g", row[i].samples[k].seat_az);
-            fputc('\n', f.fp);
+                fprintf(fp, " %.6g", row[i].samples[k].seat_az);
+            fputc('\n', fp);
         }
     }
-    if ((status = tirenv_outfile_commit(&f, diag)))
+    if ((status = tirenv_outfile_commit(f, diag)))
         return status;
     char axes[200];
     snprintf(axes, sizeof axes,
@@ -222,11 +226,12 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
                          tirenv_diag *diag)
 {
     char path[1024];
-    tirenv_outfile f;
+    tirenv_outfile *f;
     snprintf(path, sizeof path, "%s/spectrum.dat", dir);
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
+    FILE *fp = tirenv_outfile_stream(f);
     const double fs = 1 / r->dt;
     for (size_t j = 0; j < r->n_speeds && !status; ++j) {
         const ride_series *row = &series[j * r->n_cols];
@@ -244,16 +249,16 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
             status = tirenv_welch_psd(w, a, row[i].n, fs, psd + i * bins, NULL, diag);
         }
         if (!status) {
-            fprintf(f.fp, "%s# %g km/h, Welch segments of %zu samples: f_Hz", j ? "\n\n" : "",
+            fprintf(fp, "%s# %g km/h, Welch segments of %zu samples: f_Hz", j ? "\n\n" : "",
                     r->speeds[j] * 3.6, seg);
             for (size_t i = 0; i < r->n_cols; ++i)
-                fprintf(f.fp, " psd_%s_m2_s4_Hz", r->cols[i].label);
-            fputc('\n', f.fp);
+                fprintf(fp, " psd_%s_m2_s4_Hz", r->cols[i].label);
+            fputc('\n', fp);
             for (size_t k = 1; k < bins; ++k) {  /* bin 0 (the mean) has no place on log axes */
-                fprintf(f.fp, "%.6g", (double)k * fs / (double)seg);
+                fprintf(fp, "%.6g", (double)k * fs / (double)seg);
                 for (size_t i = 0; i < r->n_cols; ++i)
-                    fprintf(f.fp, " %.6g", psd[i * bins + k]);
-                fputc('\n', f.fp);
+                    fprintf(fp, " %.6g", psd[i * bins + k]);
+                fputc('\n', fp);
             }
         }
         tirenv_welch_free(w);
@@ -261,10 +266,10 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
         free(a);
     }
     if (status) {
-        tirenv_outfile_abort(&f);
+        tirenv_outfile_abort(f);
         return status;
     }
-    if ((status = tirenv_outfile_commit(&f, diag)))
+    if ((status = tirenv_outfile_commit(f, diag)))
         return status;
     return draw(dir, "spectrum", "power spectral density of the vertical acceleration at "
                 "the seat (Welch, Hann, 50 % overlap), point contact against enveloping",

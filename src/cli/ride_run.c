@@ -194,16 +194,17 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
 static int write_series(const char *path, const ride_series *rs, const ride_result *res,
                         tirenv_diag *diag)
 {
-    tirenv_outfile out;
+    tirenv_outfile *out;
     int status = tirenv_outfile_open(&out, path, diag);
     if (status)
         return status;
     char comment[256];
     snprintf(comment, sizeof comment, "tirenv ride: %s model at %.6g m/s (%.6g km/h), %zu "
              "samples", res->model, res->speed, res->speed * 3.6, rs->n);
+    FILE *fp = tirenv_outfile_stream(out);
     fputs("t_s,x_front_m,w_front_m,w_rear_m,z_m,theta_rad,z_axle_m,seat_az_m_s2,seat_awz_m_s2,"
-          "seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N\n", out.fp);
-    tirenv_outfile_comment(&out, comment);
+          "seat_ax_m_s2,atheta_rad_s2,F_front_N,F_rear_N\n", fp);
+    tirenv_outfile_comment(out, comment);
     for (size_t k = 0; k < rs->n; ++k) {  /* each field as "%.9g" */
         const tirenv_ride_sample *s = &rs->samples[k];
         const double v[13] = {s->t, s->x_front, s->w_front, s->w_rear, s->z, s->theta,
@@ -212,9 +213,9 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
         char row[13 * CLI_ROW_FIELD], *p = row;
         for (size_t j = 0; j < 13; ++j)
             p = cli_row_g(p, v[j], 9, j + 1 < 13 ? ',' : '\n');
-        fwrite(row, 1, (size_t)(p - row), out.fp);
+        fwrite(row, 1, (size_t)(p - row), fp);
     }
-    return tirenv_outfile_commit(&out, diag);  /* it checks ferror and removes the file */
+    return tirenv_outfile_commit(out, diag);  /* it checks ferror and removes the file */
 }
 
 /* Where the front axle stops at speed V: --x-to, or once the rear axle has passed the

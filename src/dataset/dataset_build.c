@@ -7,10 +7,10 @@
 
 #include <stdio.h>
 #include <string.h>
-#include "formats/tir_impl.h"
 #include "tirenv/outfile.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
+#include "tirenv/tir.h"
 
 /* Obstacle lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact lengths 0.28 to 0.43 m,
  * spread so that every value of each appears in training, and the validation cases are the
@@ -242,15 +242,16 @@ static int write_source(const char *dir, const tirenv_design *d, const char *not
                         tirenv_diag *diag)
 {
     char path[1024];
-    tirenv_outfile f;
+    tirenv_outfile *f;
     snprintf(path, sizeof path, "%s/source.txt", dir);
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    tirenv_outfile_comment(&f, note);
-    fprintf(f.fp, "format = tirenv-dataset 1\ndesign = %s\nmodel = %s\ntire = tire.tir\n",
-            d->name, d->model);
-    return tirenv_outfile_commit(&f, diag);
+    tirenv_outfile_comment(f, note);
+    fprintf(tirenv_outfile_stream(f),
+            "format = tirenv-dataset 1\ndesign = %s\nmodel = %s\ntire = tire.tir\n", d->name,
+            d->model);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* The data set of design d (whose record r and model type are known good) into dir. */
@@ -280,13 +281,13 @@ static int build_into(const char *dir, const tirenv_design *d, const design_reco
              d->summary, d == designs[0] ? "" : " --design ", d == designs[0] ? "" : d->name);
     snprintf(path, sizeof path, "%s/tire.tir", dir);
     if (!status)
-        status = tirenv_tir__write_noted(path, tire, note, diag);
+        status = tirenv_tir_write_noted(path, tire, note, diag);
     if (!status)
         status = write_source(dir, d, note, diag);
     if (status)
         return status;
     /* The manifest last: a data set with a manifest is a whole one. */
-    tirenv_outfile f;
+    tirenv_outfile *f;
     snprintf(path, sizeof path, "%s/cases.csv", dir);
     if ((status = tirenv_outfile_open(&f, path, diag)))
         return status;
@@ -296,16 +297,17 @@ static int build_into(const char *dir, const tirenv_design *d, const design_reco
              "a real tire. Regenerate with: tirenv dataset build%s%s",
              d->n_cases, r->made_by, d == designs[0] ? "" : " --design ",
              d == designs[0] ? "" : d->name);
+    FILE *fp = tirenv_outfile_stream(f);
     fputs("case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve\n",
-          f.fp);
-    tirenv_outfile_comment(&f, comment);
+          fp);
+    tirenv_outfile_comment(f, comment);
     for (size_t i = 0; i < d->n_cases; ++i) {
         const tirenv_case_design *c = &d->cases[i];
-        fprintf(f.fp, "%s,%s,%.2f,%.2f,%.3f,%.3f,logs/%s.csv,curves/%s.csv\n", c->name,
+        fprintf(fp, "%s,%s,%.2f,%.2f,%.3f,%.3f,logs/%s.csv,curves/%s.csv\n", c->name,
                 tirenv_split_name(c->split), c->contact_length, load[i], c->L, c->H, c->name,
                 c->name);
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* The data set is written as a whole (tirenv_outdir): a failed or killed build leaves the

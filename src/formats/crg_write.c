@@ -15,7 +15,7 @@
 enum { RECORD_BYTES = 80, HEADER_RECORD = 72 };
 
 struct tirenv_crg_writer {
-    tirenv_outfile out;
+    tirenv_outfile *out;
     tirenv_crg_encoding enc;
     double z_start;                     /* m, subtracted from every height */
     size_t rows, nv, written;
@@ -144,7 +144,7 @@ void tirenv_crg_writer_abort(tirenv_crg_writer *w)
 {
     if (!w)
         return;
-    tirenv_outfile_abort(&w->out);
+    tirenv_outfile_abort(w->out);
     free(w->v);
     free(w);
 }
@@ -173,7 +173,7 @@ int tirenv_crg_writer_open(const char *path, const tirenv_crg_layout *layout,
         free(w);
         return status;
     }
-    write_header(w->out.fp, layout);
+    write_header(tirenv_outfile_stream(w->out), layout);
     *out = w;
     return TIRENV_OK;
 }
@@ -197,14 +197,14 @@ static void put_binary(tirenv_crg_writer *w, double v)
     memcpy(w->record + w->used, b, n);
     w->used += n;
     if (w->used == RECORD_BYTES) {
-        fwrite(w->record, 1, RECORD_BYTES, w->out.fp);
+        fwrite(w->record, 1, RECORD_BYTES, tirenv_outfile_stream(w->out));
         w->used = 0;
     }
 }
 
 int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *diag)
 {
-    const char *path = w->out.path;
+    const char *path = tirenv_outfile_path(w->out);
     if (w->written == w->rows)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "rows",
                             "row %zu beyond the %zu rows of the layout", w->written + 1,
@@ -242,9 +242,9 @@ int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *d
         char field[32];
         for (size_t j = 0; j < w->nv; j++) {
             format_field(field, width, z[j] - w->z_start);
-            fputs(field, w->out.fp);
+            fputs(field, tirenv_outfile_stream(w->out));
             if ((j + 1) % per == 0 || j + 1 == w->nv)
-                fputc('\n', w->out.fp);
+                fputc('\n', tirenv_outfile_stream(w->out));
         }
     }
     w->written++;
@@ -254,7 +254,7 @@ int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *d
 int tirenv_crg_writer_commit(tirenv_crg_writer *w, tirenv_diag *diag)
 {
     if (w->written != w->rows) {
-        const int status = tirenv_error(diag, TIRENV_EINVAL, w->out.path, 0, "rows",
+        const int status = tirenv_error(diag, TIRENV_EINVAL, tirenv_outfile_path(w->out), 0, "rows",
                                         "%zu rows written of the %zu the layout announced",
                                         w->written, w->rows);
         tirenv_crg_writer_abort(w);
@@ -262,7 +262,7 @@ int tirenv_crg_writer_commit(tirenv_crg_writer *w, tirenv_diag *diag)
     }
     while (w->used > 0) /* the last record is padded with NaN */
         put_binary(w, NAN);
-    const int status = tirenv_outfile_commit(&w->out, diag);
+    const int status = tirenv_outfile_commit(w->out, diag);
     free(w->v);
     free(w);
     return status;

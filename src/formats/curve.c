@@ -57,12 +57,13 @@ int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *
         if (!isfinite(c->x_N[k]) || !isfinite(c->x[k]) || !isfinite(c->h[k]))
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "",
                                 "curve point %zu is not finite; nothing written", k + 1);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status != TIRENV_OK)
         return status;
-    int bad = fprintf(f.fp, "%s\n", curve_header) < 0;
-    tirenv_outfile_comment(&f, comment);
+    FILE *fp = tirenv_outfile_stream(f);
+    int bad = fprintf(fp, "%s\n", curve_header) < 0;
+    tirenv_outfile_comment(f, comment);
     for (size_t k = 0; k < c->n && !bad; k++) {
         /* As "%.17g,%.17g,%.17g\n", through the faster formatter. */
         char row[3 * TIRENV_FMT_G_SIZE], *p = row;
@@ -72,15 +73,15 @@ int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *
         *p++ = ',';
         p += tirenv_fmt_g(c->h[k], 17, p);
         *p++ = '\n';
-        bad = fwrite(row, 1, (size_t)(p - row), f.fp) != (size_t)(p - row);
+        bad = fwrite(row, 1, (size_t)(p - row), fp) != (size_t)(p - row);
     }
     if (bad) {
         const int e = errno;
-        tirenv_outfile_abort(&f);
+        tirenv_outfile_abort(f);
         return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot write: %s",
                             strerror(e ? e : EIO));
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* ---- reading ---------------------------------------------------------------------------- */

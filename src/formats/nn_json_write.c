@@ -279,19 +279,20 @@ int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_tra
         return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "",
                             "out of memory building the model file");
     }
-    tirenv_outfile out;
+    tirenv_outfile *out;
     if ((status = tirenv_outfile_open(&out, path, diag))) {
         json_decref(root);
         return status;
     }
     /* 17 significant digits: every double reads back to the same bits. */
-    const int failed = json_dumpf(root, out.fp, JSON_INDENT(1) | JSON_REAL_PRECISION(17) |
-                                                     JSON_PRESERVE_ORDER) ||
-                       fputc('\n', out.fp) == EOF;
+    FILE *fp = tirenv_outfile_stream(out);
+    const int failed =
+        json_dumpf(root, fp, JSON_INDENT(1) | JSON_REAL_PRECISION(17) | JSON_PRESERVE_ORDER) ||
+        fputc('\n', fp) == EOF;
     json_decref(root);
     if (failed) {
-        tirenv_outfile_abort(&out);
+        tirenv_outfile_abort(out);
         return tirenv_error(diag, TIRENV_EIO, path, 0, "", "write failed");
     }
-    return tirenv_outfile_commit(&out, diag);
+    return tirenv_outfile_commit(out, diag);
 }

@@ -148,21 +148,22 @@ int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
 int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const char *comment,
                              tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     const int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    fputs("x_m,z_m\n", f.fp);
-    tirenv_outfile_comment(&f, comment);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("x_m,z_m\n", fp);
+    tirenv_outfile_comment(f, comment);
     const size_t n = tirenv_profile_size(p);
     const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
     for (size_t k = 0; k < n; k++) {
         tirenv_fmt_shortest(x[k], a);
         tirenv_fmt_shortest(z[k], b);
-        fprintf(f.fp, "%s,%s\n", a, b);
+        fprintf(fp, "%s,%s\n", a, b);
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 tirenv_profile_write_options tirenv_profile_write_default(void)

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "formats/crg_impl.h"
+#include "formats/profile_csv_impl.h"
 #include "tirenv/profile_csv.h"
 
 static tirenv_profile_source source_or_default(const tirenv_profile_source *src)
@@ -63,7 +64,7 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
 struct tirenv_profile_file_reader {
     tirenv_profile_format format;
     size_t n;                         /* tracks */
-    tirenv_profile_reader *csv;       /* CSV: row by row */
+    tirenv_profile_csv__reader *csv;  /* CSV: row by row */
     tirenv_crg *crg;                  /* CRG: the open file and its tracks */
     tirenv_crg__tracks_reader *tracks;
     tirenv_profile *rdf;              /* RDF: the whole road */
@@ -74,7 +75,7 @@ void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r)
 {
     if (!r)
         return;
-    tirenv_profile_reader_free(r->csv);
+    tirenv_profile_csv__reader_free(r->csv);
     tirenv_crg__tracks_reader_free(r->tracks);
     tirenv_crg_free(r->crg);
     tirenv_profile_free(r->rdf);
@@ -98,7 +99,7 @@ int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_sourc
     if (!status) {
         switch (r->format) {
         case TIRENV_PROFILE_CSV:
-            status = tirenv_profile_reader_open(path, &r->csv, diag);
+            status = tirenv_profile_csv__reader_open(path, &r->csv, diag);
             break;
         case TIRENV_PROFILE_RDF:
             status = tirenv_rdf_read(path, s.rdf_side, &r->rdf, diag);
@@ -126,7 +127,7 @@ int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, do
     case TIRENV_PROFILE_CRG:
         return tirenv_crg__tracks_reader_next(r->tracks, x, z, got, diag);
     case TIRENV_PROFILE_CSV:
-        status = tirenv_profile_reader_next(r->csv, x, &z[0], got, diag);
+        status = tirenv_profile_csv__reader_next(r->csv, x, &z[0], got, diag);
         break;
     case TIRENV_PROFILE_RDF:
         if (r->next < tirenv_profile_size(r->rdf)) {

@@ -3,7 +3,7 @@
  * non-decreasing, at most two vertices at one x) done row by row so that it needs no memory
  * of the past rows.
  * SPDX-License-Identifier: Apache-2.0 */
-#include "tirenv/profile_csv.h"
+#include "formats/profile_csv_impl.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,7 +14,7 @@
 enum { FIELDS = 2 };
 static const char *const names[FIELDS] = {"x_m", "z_m"};
 
-struct tirenv_profile_reader {
+struct tirenv_profile_csv__reader {
     tirenv_csv__reader rd;
     char *path;            /* copy: the diag of later calls names it */
     size_t rows;           /* vertices returned so far */
@@ -24,7 +24,7 @@ struct tirenv_profile_reader {
     int done;
 };
 
-void tirenv_profile_reader_free(tirenv_profile_reader *r)
+void tirenv_profile_csv__reader_free(tirenv_profile_csv__reader *r)
 {
     if (!r)
         return;
@@ -33,11 +33,11 @@ void tirenv_profile_reader_free(tirenv_profile_reader *r)
     free(r);
 }
 
-int tirenv_profile_reader_open(const char *path, tirenv_profile_reader **out,
+int tirenv_profile_csv__reader_open(const char *path, tirenv_profile_csv__reader **out,
                                tirenv_diag *diag)
 {
     *out = NULL;
-    tirenv_profile_reader *r = calloc(1, sizeof *r);
+    tirenv_profile_csv__reader *r = calloc(1, sizeof *r);
     const size_t len = strlen(path) + 1;
     if (!r || !(r->path = malloc(len))) {
         free(r);
@@ -60,14 +60,15 @@ int tirenv_profile_reader_open(const char *path, tirenv_profile_reader **out,
     else
         status = tirenv_csv__header(&r->rd, names, FIELDS);
     if (status) {
-        tirenv_profile_reader_free(r);
+        tirenv_profile_csv__reader_free(r);
         return status;
     }
     *out = r;
     return TIRENV_OK;
 }
 
-int tirenv_profile_reader_next(tirenv_profile_reader *r, double *x, double *z, int *got,
+int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
+                                    int *got,
                                tirenv_diag *diag)
 {
     *got = 0;
@@ -106,10 +107,4 @@ int tirenv_profile_reader_next(tirenv_profile_reader *r, double *x, double *z, i
     *z = v[1];
     *got = 1;
     return TIRENV_OK;
-}
-
-int tirenv_profile_reader_source(void *reader, double *x, double *z, int *got,
-                                 tirenv_diag *diag)
-{
-    return tirenv_profile_reader_next(reader, x, z, got, diag);
 }

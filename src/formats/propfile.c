@@ -800,10 +800,10 @@ int tirenv_propfile__write_headed(const pf_schema *s, const char *path, const vo
     status = pf_check_paths(s, obj, path, cwd, sizeof cwd, diag);
     if (status != TIRENV_OK)
         return status;
-    tirenv_outfile f;
+    tirenv_outfile *f;
     status = tirenv_outfile_open(&f, path, diag);
     if (status != TIRENV_OK)
         return status;
-    pf_print(s, f.fp, obj, cwd, header);
-    return tirenv_outfile_commit(&f, diag);
+    pf_print(s, tirenv_outfile_stream(f), obj, cwd, header);
+    return tirenv_outfile_commit(f, diag);
 }

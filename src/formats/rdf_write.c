@@ -31,11 +31,11 @@ int tirenv_rdf_write(const char *path, const tirenv_profile *left, const tirenv_
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "the left and right tracks do "
                             "not share their x (%zu and %zu vertices); a poly_line row holds "
                             "both heights at one x", n, tirenv_profile_size(right));
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    FILE *fp = f.fp;
+    FILE *fp = tirenv_outfile_stream(f);
     fprintf(fp, "$--------------------------------------------------------------MDI_HEADER\n"
                 "[MDI_HEADER]\n"
                 "FILE_TYPE     = 'rdf'\n"
@@ -78,5 +78,5 @@ int tirenv_rdf_write(const char *path, const tirenv_profile *left, const tirenv_
             fprintf(fp, "%s %s %s\n", a, b, c);
         }
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* A road written position by position (tirenv_road_writer, profile_file.h), as tirenv
  * envelope -o X.crg|X.rdf writes the effective road: an OpenCRG road with a straight reference
- * line where the input road's is (tirenv_road_writer_place), whose rows are the positions u
+ * line where the input road's is (layout on_crg, place below), whose rows are the positions u
  * and whose long sections (the same height at v_track -+ half_width) carry it across the
  * tire's width, written row by row as they come; or a TNO/Adams poly_line road (x, z_left = z_right = h), written at the end from the
  * heights kept (16 bytes a position). */
@@ -35,12 +35,12 @@ void tirenv_road_writer_abort(tirenv_road_writer *w)
     free(w);
 }
 
-int tirenv_road_writer_place(const char *path, tirenv_profile_format format, double v,
-                             tirenv_road_writer_layout *l, tirenv_diag *diag)
+/* Where the effective road of the OpenCRG road path, read at lateral position v, goes: its
+ * straight reference line at u = l->x_from, its heading, its height on the track there and
+ * v, into the layout. */
+static int place(const char *path, double v, tirenv_road_writer_layout *l, tirenv_diag *diag)
 {
     l->v_track = l->x_start = l->y_start = l->phi_start = l->z_start = 0;
-    if (format != TIRENV_PROFILE_CRG)
-        return TIRENV_OK;
     tirenv_crg *crg = NULL;
     int status = tirenv_crg_open(path, &crg, diag);
     if (status)
@@ -87,6 +87,14 @@ int tirenv_road_writer_open(const char *path, tirenv_profile_format f,
                             tirenv_diag *diag)
 {
     *out = NULL;
+    tirenv_road_writer_layout placed;
+    if (f == TIRENV_PROFILE_CRG && l->on_crg) {
+        placed = *l;
+        const int status = place(l->on_crg, l->v_track, &placed, diag);
+        if (status)
+            return status;
+        l = &placed;
+    }
     tirenv_road_writer *w = calloc(1, sizeof *w);
     const size_t len = l->comment ? strlen(l->comment) + 1 : 1;
     if (!w || !(w->comment = malloc(len))) {

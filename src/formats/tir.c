@@ -3,7 +3,6 @@
  * file says which keys a tire has and where they go.
  * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/propfile.h"
-#include "formats/tir_impl.h"
 #include "tirenv/tir.h"
 #include "tirenv/tirenv.h"
 
@@ -218,8 +217,8 @@ int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *dia
 
 /* The header names no tirenv version, so that a data set's tire.tir stays the same bytes
  * from one version to the next as long as the tire does. */
-int tirenv_tir__write_noted(const char *path, const tirenv_tire *tire, const char *note,
-                            tirenv_diag *diag)
+int tirenv_tir_write_noted(const char *path, const tirenv_tire *tire, const char *note,
+                           tirenv_diag *diag)
 {
     char header[2048];
     size_t n = (size_t)snprintf(header, sizeof header,

@@ -133,13 +133,13 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
     if (!text)
         return status;
     int done[MAX] = {0};
-    tirenv_outfile out;
+    tirenv_outfile *out;
     status = tirenv_outfile_open(&out, path, diag);
     if (status) {
         free(text);
         return status;
     }
-    FILE *fp = out.fp;
+    FILE *fp = tirenv_outfile_stream(out);
     char sec[64] = "";
     int in_note = 0, noted = 0;
     for (const char *p = text; *p;) {
@@ -223,7 +223,7 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
                     put_key(fp, &values[i]);
         }
     free(text);
-    if ((status = tirenv_outfile_commit(&out, diag)))
+    if ((status = tirenv_outfile_commit(out, diag)))
         return status;
     /* The result must be a tire file tirenv reads. */
     tirenv_tire check = tirenv_tire_default();

@@ -1,4 +1,4 @@
-/* All-or-nothing output files (include/tirenv/io.h): a regular file is written to a
+/* All-or-nothing output files (include/tirenv/outfile.h): a regular file is written to a
  * temporary file beside it and renamed over it on success, so a reader (or a plot script)
  * never sees half a file after a failure; what cannot be replaced by a rename (stdout, a
  * device, a FIFO) is written through, and never replaced.
@@ -16,6 +16,19 @@
 #include <unistd.h>
 
 #include "io/tmpfiles.h"
+
+struct tirenv_outfile {
+    FILE *fp;              /* write here between open and commit */
+    char path[1024];       /* the path as given, for messages */
+    char target[4096];     /* what commit replaces: path with its symbolic links followed */
+    char tmp[4096];        /* the temporary file, or "" when written through */
+    int through;           /* 1: written straight to the target or descriptor */
+    int slot;              /* registration for tirenv_cleanup_on_signal, or -1 */
+    char *buf;             /* stdio buffer of a temporary file */
+};
+
+static void discard(tirenv_outfile *f);
+static int commit(tirenv_outfile *f, tirenv_diag *diag);
 
 /* A temporary file's stdio buffer: large writes cost fewer system calls than 4 KiB ones
  * (a 70 MB CSV took 17,000 writes). */
@@ -114,7 +127,7 @@ static int open_temporary(tirenv_outfile *f, const struct stat *old, tirenv_diag
     if (!f->fp) {
         e = errno;
         close(fd);
-        tirenv_outfile_abort(f);
+        discard(f);
         return tirenv_error(diag, TIRENV_EIO, f->path, 0, "", "cannot open for writing: %s",
                             strerror(e));
     }
@@ -123,13 +136,8 @@ static int open_temporary(tirenv_outfile *f, const struct stat *old, tirenv_diag
     return TIRENV_OK;
 }
 
-int tirenv_outfile_open(tirenv_outfile *f, const char *path, tirenv_diag *diag)
+static int open_at(tirenv_outfile *f, const char *path, tirenv_diag *diag)
 {
-    f->fp = NULL;
-    f->path[0] = f->target[0] = f->tmp[0] = '\0';
-    f->through = 0;
-    f->slot = -1;
-    f->buf = NULL;
     if (!path || !*path)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
                             "empty output path; expected a file name or '-'");
@@ -168,6 +176,38 @@ int tirenv_outfile_open(tirenv_outfile *f, const char *path, tirenv_diag *diag)
                         "character device, a FIFO or '-'");
 }
 
+int tirenv_outfile_open(tirenv_outfile **out, const char *path, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_outfile *f = malloc(sizeof *f);
+    if (!f)
+        return tirenv_error(diag, TIRENV_ENOMEM, path ? path : "", 0, "",
+                            "out of memory opening an output file");
+    f->fp = NULL;
+    f->path[0] = f->target[0] = f->tmp[0] = '\0';
+    f->through = 0;
+    f->slot = -1;
+    f->buf = NULL;
+    const int status = open_at(f, path, diag);
+    if (status) {
+        discard(f);
+        free(f);
+        return status;
+    }
+    *out = f;
+    return TIRENV_OK;
+}
+
+FILE *tirenv_outfile_stream(tirenv_outfile *f)
+{
+    return f->fp;
+}
+
+const char *tirenv_outfile_path(const tirenv_outfile *f)
+{
+    return f->path;
+}
+
 int tirenv_outfile_path_is_through(const char *path)
 {
     if (!path || !*path)
@@ -204,13 +244,21 @@ static void release(tirenv_outfile *f)
  * that no longer exists, where the other order could leave the temporary file. */
 int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag)
 {
-    if (!f->fp)
-        return tirenv_error(diag, TIRENV_EINVAL, f->path, 0, "",
-                            "output file is not open (commit after abort or a failed open)");
+    if (!f)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
+                            "output file is not open (commit after a failed open)");
+    const int status = commit(f, diag);
+    free(f);
+    return status;
+}
+
+static int commit(tirenv_outfile *f, tirenv_diag *diag)
+{
+    const int to_stdout = outfile_is_stdout(f);  /* asked before fp is taken from f */
     FILE *fp = f->fp;
     f->fp = NULL;
     errno = 0;
-    if (outfile_is_stdout(f)) {
+    if (to_stdout) {
         if (fflush(fp) != 0 || ferror(fp))
             return tirenv_error(diag, TIRENV_EIO, f->path, 0, "",
                                 "cannot write to standard output: %s",
@@ -236,7 +284,7 @@ int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
-void tirenv_outfile_abort(tirenv_outfile *f)
+static void discard(tirenv_outfile *f)
 {
     if (f->fp && !outfile_is_stdout(f))
         fclose(f->fp);
@@ -244,6 +292,14 @@ void tirenv_outfile_abort(tirenv_outfile *f)
     if (f->tmp[0])
         unlink(f->tmp);
     release(f);
+}
+
+void tirenv_outfile_abort(tirenv_outfile *f)
+{
+    if (!f)
+        return;
+    discard(f);
+    free(f);
 }
 
 void tirenv_outfile_comment(tirenv_outfile *f, const char *text)

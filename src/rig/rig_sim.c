@@ -129,14 +129,15 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
 int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char *comment,
                          tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    fputs("t_s,x_m,z_m\n", f.fp);
-    tirenv_outfile_comment(&f, comment);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("t_s,x_m,z_m\n", fp);
+    tirenv_outfile_comment(f, comment);
     /* Resolution 1 microsecond and 1 micrometre: more digits would only store noise. */
     for (size_t k = 0; k < log->n; ++k)
-        fprintf(f.fp, "%.6f,%.6f,%.6f\n", log->t[k], log->x[k], log->z[k]);
-    return tirenv_outfile_commit(&f, diag);
+        fprintf(fp, "%.6f,%.6f,%.6f\n", log->t[k], log->x[k], log->z[k]);
+    return tirenv_outfile_commit(f, diag);
 }

@@ -528,21 +528,23 @@ static int path_in(char *buf, size_t size, const char *dir, const char *name, ti
 }
 
 /* Opens dir/name as an all-or-nothing output file. */
-int tirenv_compare__open(tirenv_outfile *f, const char *dir, const char *name,
+int tirenv_compare__open(tirenv_outfile **f, const char *dir, const char *name,
                          tirenv_diag *diag)
 {
     char path[512];
+    *f = NULL;
     const int status = path_in(path, sizeof path, dir, name, diag);
     return status ? status : tirenv_outfile_open(f, path, diag);
 }
 
 int tirenv_compare__close(tirenv_outfile *f, tirenv_diag *diag)
 {
-    if (ferror(f->fp)) {
+    if (ferror(tirenv_outfile_stream(f))) {
         const int e = errno;
+        const int status = tirenv_error(diag, TIRENV_EIO, tirenv_outfile_path(f), 0, "",
+                                        "cannot write: %s", strerror(e ? e : EIO));
         tirenv_outfile_abort(f);
-        return tirenv_error(diag, TIRENV_EIO, f->path, 0, "", "cannot write: %s",
-                            strerror(e ? e : EIO));
+        return status;
     }
     return tirenv_outfile_commit(f, diag);
 }
@@ -558,43 +560,45 @@ static void csv_mm(FILE *fp, double metres)
 static int write_errors_csv(const tirenv_dataset *ds, const tirenv_compare_settings *s,
                             const tirenv_compare_result *r, tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_compare__open(&f, s->out_dir, "errors.csv", diag);
     if (status)
         return status;
-    fputs("case,model,rms_mm,max_mm,peak_mm,first_rise_mm,rms_over_H\n", f.fp);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("case,model,rms_mm,max_mm,peak_mm,first_rise_mm,rms_over_H\n", fp);
     for (size_t i = 0; i < r->n_cases; ++i)
         for (size_t j = 0; j < r->n_models; ++j) {
             const tirenv_compare_entry *e = tirenv_compare__entry(r, i, j);
             const tirenv_case *c = &ds->cases[r->case_index[i]];
             const double over_H = e->errors.rms / c->H;
-            fprintf(f.fp, "%s,%s", c->name, r->model[j]);
-            csv_mm(f.fp, e->errors.rms);
-            csv_mm(f.fp, e->errors.max);
-            csv_mm(f.fp, e->errors.peak);
-            csv_mm(f.fp, e->errors.first_rise);
-            fprintf(f.fp, isfinite(over_H) ? ",%.6f\n" : ",nan\n", over_H);
+            fprintf(fp, "%s,%s", c->name, r->model[j]);
+            csv_mm(fp, e->errors.rms);
+            csv_mm(fp, e->errors.max);
+            csv_mm(fp, e->errors.peak);
+            csv_mm(fp, e->errors.first_rise);
+            fprintf(fp, isfinite(over_H) ? ",%.6f\n" : ",nan\n", over_H);
         }
-    return tirenv_compare__close(&f, diag);
+    return tirenv_compare__close(f, diag);
 }
 
 static int write_timing_csv(const tirenv_compare_settings *s, const tirenv_compare_result *r,
                             tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_compare__open(&f, s->out_dir, "timing.csv", diag);
     if (status)
         return status;
-    fputs("model,seconds_per_position,ratio_to_nn,positions_per_pass,passes\n", f.fp);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("model,seconds_per_position,ratio_to_nn,positions_per_pass,passes\n", fp);
     const double t_nn = r->nn_model >= 0 ? r->time_per_position[r->nn_model] : NAN;
     for (size_t j = 0; j < r->n_models; ++j) {
         const double t = r->time_per_position[j];
-        fprintf(f.fp, "%s,", r->model[j]);
-        fprintf(f.fp, isfinite(t) ? "%.6g," : "nan,", t);
-        fprintf(f.fp, isfinite(t / t_nn) ? "%.6g," : "nan,", t / t_nn);
-        fprintf(f.fp, "%zu,%zu\n", r->timed_positions[j], r->timed_repeats[j]);
+        fprintf(fp, "%s,", r->model[j]);
+        fprintf(fp, isfinite(t) ? "%.6g," : "nan,", t);
+        fprintf(fp, isfinite(t / t_nn) ? "%.6g," : "nan,", t / t_nn);
+        fprintf(fp, "%zu,%zu\n", r->timed_positions[j], r->timed_repeats[j]);
     }
-    return tirenv_compare__close(&f, diag);
+    return tirenv_compare__close(f, diag);
 }
 
 void tirenv_compare__data_note(FILE *fp, const tirenv_dataset *ds,
@@ -615,16 +619,17 @@ void tirenv_compare__data_note(FILE *fp, const tirenv_dataset *ds,
 static int write_errors_md(const tirenv_dataset *ds, const tirenv_compare_settings *s,
                            const tirenv_compare_result *r, tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_compare__open(&f, s->out_dir, "errors.md", diag);
     if (status)
         return status;
-    fprintf(f.fp, "# Enveloping-curve errors%s%s\n\n", s->title ? ": " : "",
+    FILE *fp = tirenv_outfile_stream(f);
+    fprintf(fp, "# Enveloping-curve errors%s%s\n\n", s->title ? ": " : "",
             s->title ? s->title : "");
-    tirenv_compare__data_note(f.fp, ds, s);
-    fputc('\n', f.fp);
-    tirenv_compare__tables(f.fp, "##", ds, s, r);
-    return tirenv_compare__close(&f, diag);
+    tirenv_compare__data_note(fp, ds, s);
+    fputc('\n', fp);
+    tirenv_compare__tables(fp, "##", ds, s, r);
+    return tirenv_compare__close(f, diag);
 }
 
 static void series_label(const tirenv_compare_result *r, size_t j, char *buf, size_t size)

@@ -36,7 +36,7 @@ void tirenv_compare__tables(FILE *fp, const char *hashes, const tirenv_dataset *
 void tirenv_compare__data_note(FILE *fp, const tirenv_dataset *ds,
                                const tirenv_compare_settings *s);
 /* dir/name as an all-or-nothing output file; close checks for write errors and commits. */
-int tirenv_compare__open(tirenv_outfile *f, const char *dir, const char *name,
+int tirenv_compare__open(tirenv_outfile **f, const char *dir, const char *name,
                          tirenv_diag *diag);
 int tirenv_compare__close(tirenv_outfile *f, tirenv_diag *diag);
 

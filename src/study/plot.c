@@ -109,9 +109,10 @@ static void simulated_note(const tirenv_plot__settings *ps, char *buf, size_t si
 static int write_failed(tirenv_outfile *f, tirenv_diag *diag)
 {
     const int e = errno;
+    const int status = tirenv_error(diag, TIRENV_EIO, tirenv_outfile_path(f), 0, "",
+                                    "cannot write: %s", strerror(e ? e : EIO));
     tirenv_outfile_abort(f);
-    return tirenv_error(diag, TIRENV_EIO, f->path, 0, "", "cannot write: %s",
-                        strerror(e ? e : EIO));
+    return status;
 }
 
 /* <base>.dat: x_N, then h in mm of the measurement and of each model, whitespace-separated,
@@ -119,43 +120,44 @@ static int write_failed(tirenv_outfile *f, tirenv_diag *diag)
 static int write_data(const char *path, const tirenv_plot__settings *ps, const tirenv_case *c,
                       size_t n_series, const tirenv_plot__series series[], tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
     char caption[256], note[256];
     case_caption(c, caption, sizeof caption);
     errno = 0;
-    fprintf(f.fp, "# tirenv compare: %s, load %.6g N\n", caption, c->load);
+    FILE *fp = tirenv_outfile_stream(f);
+    fprintf(fp, "# tirenv compare: %s, load %.6g N\n", caption, c->load);
     if (ps->simulated) {
         simulated_note(ps, note, sizeof note);
-        fprintf(f.fp, "# %s\n", note);
+        fprintf(fp, "# %s\n", note);
     }
     fputs("# x_N: normalised position (0 at first contact, 1 with the tire axis over the "
           "obstacle centre); h: effective profile height, mm; NaN: the model has no value\n"
           "# columns: x_N h_measured_mm",
-          f.fp);
+          fp);
     for (size_t j = 0; j < n_series; ++j)
-        fprintf(f.fp, " h_%s_mm", series[j].name);
-    fputc('\n', f.fp);
+        fprintf(fp, " h_%s_mm", series[j].name);
+    fputc('\n', fp);
     for (size_t j = 0; j < n_series; ++j)
         if (series[j].failure)
-            fprintf(f.fp, "# %s failed on this case: %s\n", series[j].name, series[j].failure);
+            fprintf(fp, "# %s failed on this case: %s\n", series[j].name, series[j].failure);
     const tirenv_curve *cv = &c->curve;
     for (size_t k = 0; k < cv->n; ++k) {
-        fprintf(f.fp, "%.6f %.4f", cv->x_N[k], cv->h[k] * 1e3);
+        fprintf(fp, "%.6f %.4f", cv->x_N[k], cv->h[k] * 1e3);
         for (size_t j = 0; j < n_series; ++j) {
             const double h = series[j].h ? series[j].h[k] : NAN;
             if (isfinite(h))
-                fprintf(f.fp, " %.4f", h * 1e3);
+                fprintf(fp, " %.4f", h * 1e3);
             else
-                fputs(" NaN", f.fp);
+                fputs(" NaN", fp);
         }
-        fputc('\n', f.fp);
+        fputc('\n', fp);
     }
-    if (ferror(f.fp))
-        return write_failed(&f, diag);
-    return tirenv_outfile_commit(&f, diag);
+    if (ferror(fp))
+        return write_failed(f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* The x range: the data's, widened to the next 0.05 so the axis ends on a tic. */
@@ -179,11 +181,11 @@ static int write_script(const char *path, const char *base, const tirenv_plot__s
                         const tirenv_case *c, size_t n_series,
                         const tirenv_plot__series series[], tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    FILE *fp = f.fp;
+    FILE *fp = tirenv_outfile_stream(f);
     char caption[256], note[256], title[600];
     case_caption(c, caption, sizeof caption);
     simulated_note(ps, note, sizeof note);
@@ -271,8 +273,8 @@ static int write_script(const char *path, const char *base, const tirenv_plot__s
             "unset output\n",
             PLOT_WIDTH, PLOT_HEIGHT);
     if (ferror(fp))
-        return write_failed(&f, diag);
-    return tirenv_outfile_commit(&f, diag);
+        return write_failed(f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* ---- running gnuplot ------------------------------------------------------------------- */

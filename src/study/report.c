@@ -291,11 +291,11 @@ int tirenv_compare_report(const tirenv_dataset *ds, const tirenv_compare_setting
     if (!r->entry || r->n_cases == 0 || r->n_models == 0)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
                             "no comparison to report (tirenv_compare did not complete)");
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_compare__open(&f, s->out_dir, "report.md", diag);
     if (status)
         return status;
-    FILE *fp = f.fp;
+    FILE *fp = tirenv_outfile_stream(f);
     introduction(fp, ds, s, r);
     if (notes && *notes)
         fprintf(fp, "\n%s%s", notes, notes[strlen(notes) - 1] == '\n' ? "" : "\n");
@@ -308,5 +308,5 @@ int tirenv_compare_report(const tirenv_dataset *ds, const tirenv_compare_setting
     fputs("\nThe same numbers are in `errors.csv` and `timing.csv`; `errors.md` holds the "
           "tables alone.\n",
           fp);
-    return tirenv_compare__close(&f, diag);
+    return tirenv_compare__close(f, diag);
 }

@@ -123,21 +123,22 @@ static int train_network(const tirenv_study_settings *s, const tirenv_dataset *f
 static int write_seeds_csv(const char *dir, const tirenv_dataset *ds, const tirenv_nn_seeds *r,
                            tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_compare__open(&f, dir, "nn-seeds.csv", diag);
     if (status)
         return status;
-    fputs("seed,validation_rms_mm", f.fp);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("seed,validation_rms_mm", fp);
     for (size_t c = 0; c < r->n_cases; ++c)
-        fprintf(f.fp, ",%s_rms_mm", ds->cases[r->case_index[c]].name);
-    fputc('\n', f.fp);
+        fprintf(fp, ",%s_rms_mm", ds->cases[r->case_index[c]].name);
+    fputc('\n', fp);
     for (size_t k = 0; k < r->n_seeds; ++k) {
-        fprintf(f.fp, "%lu,%.4f", r->seed[k], 1e3 * r->mean_rms[k]);
+        fprintf(fp, "%lu,%.4f", r->seed[k], 1e3 * r->mean_rms[k]);
         for (size_t c = 0; c < r->n_cases; ++c)
-            fprintf(f.fp, ",%.4f", 1e3 * r->rms[k * r->n_cases + c]);
-        fputc('\n', f.fp);
+            fprintf(fp, ",%.4f", 1e3 * r->rms[k * r->n_cases + c]);
+        fputc('\n', fp);
     }
-    return tirenv_compare__close(&f, diag);
+    return tirenv_compare__close(f, diag);
 }
 
 /* The network on the measured data over s->seeds seeds: nn-seeds.csv, and nn.json the

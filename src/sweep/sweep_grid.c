@@ -410,10 +410,10 @@ int tirenv_sweep__read_text(const char *path, size_t max, char **out, size_t *n,
 int tirenv_sweep__write_text(const char *path, const char *text, size_t len,
                              tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    fwrite(text, 1, len, f.fp);
-    return tirenv_outfile_commit(&f, diag);
+    fwrite(text, 1, len, tirenv_outfile_stream(f));
+    return tirenv_outfile_commit(f, diag);
 }

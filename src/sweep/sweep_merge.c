@@ -173,7 +173,7 @@ static int copy_file(const char *from, const char *to, tirenv_diag *diag)
     FILE *in = fopen(from, "rb");
     if (!in)
         return tirenv_error(diag, TIRENV_EIO, from, 0, "", "cannot open: %s", strerror(errno));
-    tirenv_outfile out;
+    tirenv_outfile *out;
     int status = tirenv_outfile_open(&out, to, diag);
     if (status) {
         fclose(in);
@@ -182,14 +182,14 @@ static int copy_file(const char *from, const char *to, tirenv_diag *diag)
     char buf[65536];
     size_t got;
     while ((got = fread(buf, 1, sizeof buf, in)) > 0)
-        fwrite(buf, 1, got, out.fp);
+        fwrite(buf, 1, got, tirenv_outfile_stream(out));
     const int failed = ferror(in);
     fclose(in);
     if (failed) {
-        tirenv_outfile_abort(&out);
+        tirenv_outfile_abort(out);
         return tirenv_error(diag, TIRENV_EIO, from, 0, "", "cannot read");
     }
-    return tirenv_outfile_commit(&out, diag);
+    return tirenv_outfile_commit(out, diag);
 }
 
 /* A case file (a manifest path relative to the part) into the merged directory. */
@@ -241,26 +241,27 @@ static int row_files(const char *row, const char **log, size_t *log_len, const c
 static int write_table(const char *path, const part *parts, size_t n, int keys, size_t m,
                        tirenv_diag *diag)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
     const part **by_shard = malloc(n * sizeof *by_shard);
     if (!by_shard) {
-        tirenv_outfile_abort(&f);
+        tirenv_outfile_abort(f);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     }
     for (size_t k = 0; k < n; ++k)
         by_shard[parts[k].shard] = &parts[k];
     const part *p0 = &parts[0];
-    fwrite(keys ? p0->keys : p0->cases, 1, keys ? p0->key_head : p0->case_head, f.fp);
+    FILE *fp = tirenv_outfile_stream(f);
+    fwrite(keys ? p0->keys : p0->cases, 1, keys ? p0->key_head : p0->case_head, fp);
     for (size_t i = 0; i < m; ++i) {
         const part *p = by_shard[i % n];
-        fputs((keys ? p->key_rows : p->case_rows)[i / n], f.fp);
-        fputc('\n', f.fp);
+        fputs((keys ? p->key_rows : p->case_rows)[i / n], fp);
+        fputc('\n', fp);
     }
     free(by_shard);
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 static int merge_into(const char *stage, const part *parts, size_t n, size_t m,

@@ -538,15 +538,16 @@ static int write_manifest(const sweep_run *r, tirenv_diag *diag)
     char *comment = tirenv_sweep__manifest_comment(s, r->n);
     if (!comment)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status) {
         free(comment);
         return status;
     }
+    FILE *fp = tirenv_outfile_stream(f);
     fputs("case,split,contact_length_m,load_N,obstacle_length_m,obstacle_height_m,log,curve\n",
-          f.fp);
-    tirenv_outfile_comment(&f, comment);
+          fp);
+    tirenv_outfile_comment(f, comment);
     free(comment);
     for (size_t i = s->shard; i < r->n; i += s->shards) {
         tirenv_sweep__coords c;
@@ -558,13 +559,13 @@ static int write_manifest(const sweep_run *r, tirenv_diag *diag)
         tirenv_sweep__number(r->load[p], load);
         tirenv_sweep__number(s->lengths[c.length], L);
         tirenv_sweep__number(s->heights[c.height], H);
-        fprintf(f.fp, "%s,%s,%s,%s,%s,%s,", name,
+        fprintf(fp, "%s,%s,%s,%s,%s,%s,", name,
                 tirenv_split_name((tirenv_split)r->split[i]), l_c, load, L, H);
         if (s->rig)
-            fprintf(f.fp, "logs/%s.csv", name);
-        fprintf(f.fp, ",curves/%s.csv\n", name);
+            fprintf(fp, "logs/%s.csv", name);
+        fprintf(fp, ",curves/%s.csv\n", name);
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 /* sweep.csv: each case's tire variant and the values of the swept keys. */
@@ -573,29 +574,30 @@ static int write_keys(const sweep_run *r, tirenv_diag *diag)
     const tirenv_sweep_settings *s = r->s;
     char path[1200];
     snprintf(path, sizeof path, "%s/sweep.csv", r->dir);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
-    fputs("case,variant", f.fp);
+    FILE *fp = tirenv_outfile_stream(f);
+    fputs("case,variant", fp);
     for (size_t k = 0; k < s->n_keys; ++k)
-        fprintf(f.fp, ",%s", s->keys[k].key);
-    fputc('\n', f.fp);
-    tirenv_outfile_comment(&f, "tirenv sweep: the tire-key values of each case (the tire: "
+        fprintf(fp, ",%s", s->keys[k].key);
+    fputc('\n', fp);
+    tirenv_outfile_comment(f, "tirenv sweep: the tire-key values of each case (the tire: "
                                "tire.tir with these keys set)");
     for (size_t i = s->shard; i < r->n; i += s->shards) {
         tirenv_sweep__coords c;
         tirenv_sweep__coords_of(s, i, &c);
         char name[32], v[32];
         tirenv_sweep__case_name(s, i, name);
-        fprintf(f.fp, "%s,%zu", name, c.variant);
+        fprintf(fp, "%s,%zu", name, c.variant);
         for (size_t k = 0; k < s->n_keys; ++k) {
             tirenv_sweep__number(s->keys[k].values[c.key_index[k]], v);
-            fprintf(f.fp, ",%s", v);
+            fprintf(fp, ",%s", v);
         }
-        fputc('\n', f.fp);
+        fputc('\n', fp);
     }
-    return tirenv_outfile_commit(&f, diag);
+    return tirenv_outfile_commit(f, diag);
 }
 
 static void run_free(sweep_run *r)

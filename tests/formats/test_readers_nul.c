@@ -44,21 +44,23 @@ static void test_profiles(void **state)
     assert_null(p);
     expect_nul(&diag, path, 3, 10);
 
-    tirenv_profile_reader *r = NULL;
-    assert_int_equal(tirenv_profile_reader_open(path, &r, &diag), 0);
+    tirenv_profile_file_reader *r = NULL;
+    assert_int_equal(tirenv_profile_file_reader_open(path, NULL, 1, NULL, &r, &diag), 0);
+    assert_int_equal(tirenv_profile_file_reader_format(r), TIRENV_PROFILE_CSV);
     double x, z;
     int got;
-    assert_int_equal(tirenv_profile_reader_next(r, &x, &z, &got, &diag), 0);
+    assert_int_equal(tirenv_profile_file_reader_next(r, &x, &z, &got, &diag), 0);
     assert_int_equal(got, 1);
-    assert_int_equal(tirenv_profile_reader_next(r, &x, &z, &got, &diag), TIRENV_EPARSE);
+    assert_int_equal(tirenv_profile_file_reader_next(r, &x, &z, &got, &diag), TIRENV_EPARSE);
     expect_nul(&diag, path, 3, 10);
-    tirenv_profile_reader_free(r);
+    tirenv_profile_file_reader_free(r);
 
     static const char header[] = "x_m,z\0_m\n-0.05,0\n0.05,0\n";
     write_bytes(d, "h.csv", header, sizeof header - 1, path);
     assert_int_equal(tirenv_profile_read_csv(path, &p, &diag), TIRENV_EPARSE);
     expect_nul(&diag, path, 1, 6);
-    assert_int_equal(tirenv_profile_reader_open(path, &r, &diag), TIRENV_EPARSE);
+    assert_int_equal(tirenv_profile_file_reader_open(path, NULL, 1, NULL, &r, &diag),
+                     TIRENV_EPARSE);
     expect_nul(&diag, path, 1, 6);
 }
 

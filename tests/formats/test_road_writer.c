@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* A road written a position at a time (tirenv_road_writer, profile_file.h; tirenv envelope
  * -o X.crg|X.rdf): read back, the heights are the ones given (KDBI and RDF exactly, KRBI to
- * float32); a wrong count or an abort leaves no file; a CRG of one position is refused. */
+ * float32); a wrong count or an abort leaves no file; a CRG of one position is refused; one
+ * written over an OpenCRG road (on_crg) lies on it. */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 #include <unistd.h>
 
 enum { N = 337 };
@@ -93,12 +96,71 @@ static void test_counts_and_abort(void **state)
     assert_int_equal(access(path, F_OK), -1);
 }
 
+/* on_crg: an effective road written over an OpenCRG road lies where that road is: its
+ * reference line goes on from the road's at x_from (the same heading), and its heights read
+ * back as given. A curved road is refused, leaving no file. */
+static void test_on_crg(void **state)
+{
+    const tirenv_test_dir *t = *state;
+    char base[600], path[600];
+    tirenv_test_path(t, "base.crg", base);
+    const double x0 = 12.5, y0 = -3.25, phi = 0.6137;
+    const tirenv_road_writer_layout lb = {.x_from = x_from, .dx = dx, .n = N, .half_width = 0.4,
+                                          .x_start = x0, .y_start = y0, .phi_start = phi,
+                                          .encoding = TIRENV_CRG_KDBI};
+    tirenv_road_writer *w = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_writer_open(base, TIRENV_PROFILE_CRG, &lb, &w, &d), 0);
+    for (size_t k = 0; k < N; ++k)
+        assert_int_equal(tirenv_road_writer_add(w, x_from + dx * (double)k, height(k), &d), 0);
+    assert_int_equal(tirenv_road_writer_commit(w, &d), TIRENV_OK);
+
+    enum { K0 = 37, M = 11 };  /* the effective road starts at the base road's row K0 */
+    const double u0 = x_from + dx * K0;
+    const tirenv_road_writer_layout l = {.x_from = u0, .dx = dx, .n = M, .half_width = 0.2,
+                                         .encoding = TIRENV_CRG_KDBI, .on_crg = base};
+    tirenv_test_path(t, "on.crg", path);
+    assert_int_equal(tirenv_road_writer_open(path, TIRENV_PROFILE_CRG, &l, &w, &d), 0);
+    for (size_t k = 0; k < M; ++k)
+        assert_int_equal(tirenv_road_writer_add(w, u0 + dx * (double)k, height(K0 + k), &d), 0);
+    assert_int_equal(tirenv_road_writer_commit(w, &d), TIRENV_OK);
+    tirenv_crg *crg = NULL;
+    assert_int_equal(tirenv_crg_open(path, &crg, &d), TIRENV_OK);
+    double x[M], y[M], h[M];
+    assert_int_equal(tirenv_crg_refline(crg, x, y, h, &d), TIRENV_OK);
+    /* 1e-12 m: the start is x0 + cos(phi) * K0 * dx, written in %.17g text or as doubles. */
+    assert_near(x[0], x0 + cos(phi) * (u0 - x_from), 1e-12, 0);
+    assert_near(y[0], y0 + sin(phi) * (u0 - x_from), 1e-12, 0);
+    assert_near(h[0], phi, 1e-15, 0);
+    tirenv_crg_free(crg);
+    tirenv_profile *p = NULL;
+    assert_int_equal(tirenv_profile_read_file(path, NULL, &p, &d), TIRENV_OK);
+    assert_int_equal(tirenv_profile_size(p), M);
+    for (size_t k = 0; k < M; ++k)  /* 1e-15 m: z less the road's z_start, then plus it */
+        assert_near(tirenv_profile_z(p)[k], height(K0 + k), 1e-15, 0);
+    tirenv_profile_free(p);
+
+    char curved[600];
+    snprintf(curved, sizeof curved, "%s/crg/handmade_curved.crg", TIRENV_SAMPLES);
+    const tirenv_road_writer_layout lc = {.x_from = 0, .dx = dx, .n = M, .on_crg = curved};
+    tirenv_test_path(t, "curved.crg", path);
+    w = (tirenv_road_writer *)&d;  /* set to NULL on failure */
+    assert_int_equal(tirenv_road_writer_open(path, TIRENV_PROFILE_CRG, &lc, &w, &d),
+                     TIRENV_EINVAL);
+    assert_null(w);
+    assert_string_equal(d.file, curved);
+    assert_non_null(strstr(d.message, "curved reference line"));
+    assert_int_equal(access(path, F_OK), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_round_trip, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_counts_and_abort, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_on_crg, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

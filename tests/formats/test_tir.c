@@ -6,6 +6,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -141,13 +142,7 @@ static void test_comments_and_case(void **state)
     assert_int_equal(t.eq.max_iter, 37);
 }
 
-typedef struct {
-    const char *text;   /* file contents */
-    int status;
-    size_t line, column;
-    const char *field;
-    const char *says;   /* a phrase the message must contain */
-} read_error_case;
+typedef tirenv_test_read_error read_error_case;
 
 static const read_error_case read_errors[] = {
     /* typos in our own sections */
@@ -254,14 +249,8 @@ static void test_read_errors(void **state)
         tirenv_diag d;
         tirenv_diag_clear(&d);
         const int status = tirenv_tir_read(path, &t, &d);
-        char line[1200];
-        print_message("case %zu: %s\n", i, tirenv_diag_format(&d, line, sizeof line));
-        assert_int_equal(status, k->status);
-        assert_string_equal(d.file, path);
-        assert_int_equal(d.line, k->line);
-        assert_int_equal(d.column, k->column);
-        assert_string_equal(d.field, k->field);
-        assert_non_null(strstr(d.message, k->says));
+        tirenv_test_expect_diag(i, status, &d, k->status, path, k->line, k->column, k->field,
+                                k->says);
         assert_tire_identical(&t, &before);
     }
 }
@@ -371,14 +360,8 @@ static void test_set_errors(void **state)
         tirenv_diag d;
         tirenv_diag_clear(&d);
         const int status = tirenv_tir_set(&t, cases[i].text, &d);
-        char line[1200];
-        print_message("case %zu: %s\n", i, tirenv_diag_format(&d, line, sizeof line));
-        assert_int_equal(status, cases[i].status);
-        assert_string_equal(d.file, "--set");
-        assert_int_equal(d.line, 0);
-        assert_int_equal(d.column, 0);
-        assert_string_equal(d.field, cases[i].field);
-        assert_non_null(strstr(d.message, cases[i].says));
+        tirenv_test_expect_diag(i, status, &d, cases[i].status, "--set", 0, 0, cases[i].field,
+                                cases[i].says);
         assert_tire_identical(&t, &before);
     }
 }
@@ -471,14 +454,14 @@ static void test_outfile_commit(void **state)
     char path[600], text[64];
     tirenv_test_path(fx, "out.csv", path);
     const mode_t old_mask = umask(027);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    fputs("x_m,z_m\n", f.fp);
+    fputs("x_m,z_m\n", tirenv_outfile_stream(f));
     /* Until commit, readers see no target, only the temporary file. */
     assert_false(file_exists(path));
     assert_int_equal(tirenv_test_count_entries(fx, ".out.csv.tirenv-tmp."), 1);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     umask(old_mask);
     read_back(path, text, sizeof text);
     assert_string_equal(text, "x_m,z_m\n");
@@ -487,7 +470,6 @@ static void test_outfile_commit(void **state)
     struct stat st;
     assert_int_equal(stat(path, &st), 0);
     assert_int_equal(st.st_mode & 0777, 0640);
-    tirenv_outfile_abort(&f); /* after commit: nothing to do, and the file stays */
     assert_true(file_exists(path));
 }
 
@@ -496,16 +478,16 @@ static void test_outfile_abort(void **state)
     tirenv_test_dir *fx = *state;
     char path[600];
     tirenv_test_path(fx, "out.csv", path);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    fputs("half a fi", f.fp);
-    tirenv_outfile_abort(&f);
-    tirenv_outfile_abort(&f); /* safe twice */
+    fputs("half a fi", tirenv_outfile_stream(f));
+    tirenv_outfile_abort(f);
+    tirenv_outfile_abort(NULL); /* a no-op, as after a failed open */
     assert_false(file_exists(path));
     assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
     assert_int_equal(tirenv_test_count_entries(fx, ""), 0);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_outfile_commit(NULL, &d), TIRENV_EINVAL);
     assert_false(file_exists(path));
 }
 
@@ -516,13 +498,13 @@ static void test_outfile_replaces_existing(void **state)
     tirenv_test_path(fx, "out.csv", path);
     tirenv_test_write_text(path, "old contents, longer than the new ones\n");
     assert_int_equal(chmod(path, 0604), 0);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    fputs("new\n", f.fp);
+    fputs("new\n", tirenv_outfile_stream(f));
     read_back(path, text, sizeof text); /* the old file is intact until commit */
     assert_string_equal(text, "old contents, longer than the new ones\n");
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     read_back(path, text, sizeof text);
     assert_string_equal(text, "new\n");
     struct stat st;
@@ -536,31 +518,33 @@ static void test_outfile_errors(void **state)
     tirenv_test_dir *fx = *state;
     char path[600];
     tirenv_test_path(fx, "missing/out.csv", path);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_EIO);
     assert_string_equal(d.file, path);
     assert_non_null(strstr(d.message, strerror(ENOENT)));
-    assert_null(f.fp);
-    tirenv_outfile_abort(&f); /* after a failed open: harmless */
+    assert_null(f);
+    tirenv_outfile_abort(f); /* after a failed open: harmless */
 
     char long_path[1100];
     memset(long_path, 'a', sizeof long_path - 1);
     long_path[sizeof long_path - 1] = '\0';
     assert_int_equal(tirenv_outfile_open(&f, long_path, &d), TIRENV_EINVAL);
+    assert_null(f);
     assert_int_equal(tirenv_outfile_open(&f, "", &d), TIRENV_EINVAL);
+    assert_null(f);
 }
 
 static void test_outfile_stdout(void **state)
 {
     (void)state;
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, "-", &d), TIRENV_OK);
-    assert_ptr_equal(f.fp, stdout);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
-    tirenv_outfile_abort(&f); /* must not close stdout */
-    assert_int_equal(fflush(stdout), 0);
+    assert_ptr_equal(tirenv_outfile_stream(f), stdout);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
+    assert_int_equal(fflush(stdout), 0); /* commit did not close stdout */
+    assert_true(fcntl(STDOUT_FILENO, F_GETFD) >= 0);
 }
 
 /* ---- real MF-Tyre / PAC2002 files ------------------------------------------------------ */

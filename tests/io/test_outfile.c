@@ -83,13 +83,13 @@ static size_t count(const char *dir, const char *containing)
 /* Writes text through a tirenv_outfile to path and commits; returns the status. */
 static int put(const char *path, const char *text)
 {
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     int status = tirenv_outfile_open(&f, path, &d);
     if (status)
         return status;
-    fputs(text, f.fp);
-    return tirenv_outfile_commit(&f, &d);
+    fputs(text, tirenv_outfile_stream(f));
+    return tirenv_outfile_commit(f, &d);
 }
 
 /* ---- regular files and symbolic links ------------------------------------------------------- */
@@ -99,18 +99,18 @@ static void test_regular_file_temporary_name(void **state)
     scratch *s = *state;
     char path[700], text[64];
     at(s, "out.csv", path);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    assert_true(tirenv_outfile_is_atomic(&f));
-    fputs("a,b\n", f.fp);
+    assert_true(tirenv_outfile_is_atomic(f));
+    fputs("a,b\n", tirenv_outfile_stream(f));
     /* Until commit the target does not exist; the temporary name says whose it is. */
     assert_int_equal(access(path, F_OK), -1);
     assert_int_equal(count(s->dir, ".out.csv.tirenv-tmp."), 1);
     char pid[32];
     snprintf(pid, sizeof pid, ".%ld.", (long)getpid());
     assert_int_equal(count(s->dir, pid), 1);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     read_text(path, text, sizeof text);
     assert_string_equal(text, "a,b\n");
     assert_int_equal(count(s->dir, ""), 1);
@@ -152,7 +152,9 @@ static void test_symlink_target_replaced(void **state)
     assert_int_equal(symlink("loop.csv", at(s, "loop.csv", loop)), 0);
     tirenv_diag d;
     assert_int_equal(put(loop, "x\n") != TIRENV_OK, 1);
-    assert_int_equal(tirenv_outfile_open(&(tirenv_outfile){0}, loop, &d), TIRENV_EIO);
+    tirenv_outfile *f;
+    assert_int_equal(tirenv_outfile_open(&f, loop, &d), TIRENV_EIO);
+    assert_null(f);
     assert_non_null(strstr(d.message, "symbolic links"));
 }
 
@@ -165,13 +167,13 @@ static void check_char_device(const char *path)
     struct stat before, after;
     assert_int_equal(stat(path, &before), 0);
     assert_true(S_ISCHR(before.st_mode));
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
-    assert_false(tirenv_outfile_is_atomic(&f));
+    assert_false(tirenv_outfile_is_atomic(f));
     for (int i = 0; i < 10000; ++i)
-        fputs("0.123456789,0.987654321\n", f.fp);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+        fputs("0.123456789,0.987654321\n", tirenv_outfile_stream(f));
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     assert_int_equal(lstat(path, &after), 0);
     assert_true(S_ISCHR(after.st_mode));
     assert_true(after.st_rdev == before.st_rdev && after.st_ino == before.st_ino);
@@ -193,7 +195,7 @@ static void test_character_device_written_through(void **state)
     /* A block device (a loop device's numbers) is refused before anything is opened. */
     char blk[700];
     assert_int_equal(mknod(at(s, "disk", blk), S_IFBLK | 0600, makedev(7, 0)), 0);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, blk, &d), TIRENV_EINVAL);
     assert_non_null(strstr(d.message, "block device"));
@@ -229,12 +231,12 @@ static void test_fifo_written_through(void **state)
         _exit(0);
     }
     close(report[1]);
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, fifo, &d), TIRENV_OK);
     for (int i = 0; i < 1000; ++i)
-        fputs("fifo line\n", f.fp);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+        fputs("fifo line\n", tirenv_outfile_stream(f));
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     char line[128] = "";
     assert_true(read(report[0], line, sizeof line - 1) > 0);
     close(report[0]);
@@ -263,23 +265,23 @@ static void test_descriptor_names(void **state)
     assert_true(read(p[0], buf, sizeof buf - 1) > 0);
     close(p[0]);
     assert_string_equal(buf, "through the pipe\nagain\n");
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, "/dev/fd/999", &d), TIRENV_EIO);
     assert_non_null(strstr(d.message, "descriptor 999"));
     assert_int_equal(tirenv_outfile_open(&f, "/dev/stdout", &d), TIRENV_OK);
-    assert_ptr_equal(f.fp, stdout);
-    assert_int_equal(tirenv_outfile_commit(&f, &d), TIRENV_OK);
+    assert_ptr_equal(tirenv_outfile_stream(f), stdout);
+    assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
 }
 
 static void test_directory_refused(void **state)
 {
     scratch *s = *state;
-    tirenv_outfile f;
+    tirenv_outfile *f;
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, s->dir, &d), TIRENV_EINVAL);
     assert_non_null(strstr(d.message, "directory"));
-    assert_null(f.fp);
+    assert_null(f);
 }
 
 /* ---- signals and stale files ------------------------------------------------------------ */
@@ -301,7 +303,7 @@ static void test_cleanup_on_signal(void **state)
     pid_t child = fork();
     assert_true(child >= 0);
     if (child == 0) {
-        tirenv_outfile f;
+        tirenv_outfile *f;
         tirenv_diag d;
         tirenv_outdir *od;
         if (tirenv_outfile_open(&f, at(s, "a.csv", path), &d) ||
@@ -319,10 +321,10 @@ static void test_cleanup_on_signal(void **state)
         if (count(s->dir, "") != 0)
             _exit(5);
         /* The handles are still to be released, as after any failure. */
-        tirenv_outfile_abort(&f);
+        tirenv_outfile_abort(f);
         tirenv_outdir_abort(od);
         /* No new output starts: nothing would remove it. */
-        tirenv_outfile g;
+        tirenv_outfile *g;
         if (tirenv_outfile_open(&g, at(s, "b.csv", path), &d) != TIRENV_EIO ||
             tirenv_outdir_begin(at(s, "rep2", dir), &od, &d) != TIRENV_EIO)
             _exit(6);
@@ -340,11 +342,11 @@ static void test_cleanup_on_signal(void **state)
         struct sigaction sa = {0};
         sa.sa_handler = on_term;
         sigaction(SIGTERM, &sa, NULL);
-        tirenv_outfile g;
+        tirenv_outfile *g;
         tirenv_diag d;
         if (tirenv_outfile_open(&g, at(s, "a.csv", path), &d))
             _exit(2);
-        fputs("half", g.fp);
+        fputs("half", tirenv_outfile_stream(g));
         raise(SIGTERM);
         _exit(count(s->dir, "tirenv-tmp") == 0 ? 0 : 1);
     }

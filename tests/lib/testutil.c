@@ -150,3 +150,17 @@ int tirenv_test_keep_point(void *ctx, const tirenv_point *pt)
     c->pt[c->n++] = *pt;
     return TIRENV_OK;
 }
+
+void tirenv_test_expect_diag(size_t i, int status, const tirenv_diag *d, int want,
+                             const char *file, size_t line, size_t column, const char *field,
+                             const char *says)
+{
+    char text[1200];
+    print_message("case %zu: %s\n", i, tirenv_diag_format(d, text, sizeof text));
+    assert_int_equal(status, want);
+    assert_string_equal(d->file, file);
+    assert_int_equal(d->line, line);
+    assert_int_equal(d->column, column);
+    assert_string_equal(d->field, field);
+    assert_non_null(strstr(d->message, says));
+}

@@ -57,6 +57,21 @@ typedef struct {
     char dir[64];
 } tirenv_test_dir;
 
+/* A file that a reader must refuse, with what its diag must say. */
+typedef struct {
+    const char *text;   /* file contents */
+    int status;
+    size_t line, column;
+    const char *field;
+    const char *says;   /* a phrase the message must contain */
+} tirenv_test_read_error;
+
+/* Prints case i's message (d), then asserts that the call returned want and that d names
+ * file, line, column (0: none), field and, in its message, the phrase says. */
+void tirenv_test_expect_diag(size_t i, int status, const tirenv_diag *d, int want,
+                             const char *file, size_t line, size_t column, const char *field,
+                             const char *says);
+
 int tirenv_test_dir_setup(void **state);
 int tirenv_test_dir_teardown(void **state);
 

@@ -50,13 +50,13 @@ typedef tirenv_test_points collect;  /* the sink of the streamed points */
 static int stream_file(tirenv_model *m, const char *path, double x_from, double x_to,
                        double dx, collect *c, tirenv_stream_stats *stats, tirenv_diag *d)
 {
-    tirenv_profile_reader *in = NULL;
-    int status = tirenv_profile_reader_open(path, &in, d);
+    tirenv_profile_file_reader *in = NULL;
+    int status = tirenv_profile_file_reader_open(path, NULL, 1, NULL, &in, d);
     if (status)
         return status;
-    status = tirenv_model_stream(m, tirenv_profile_reader_source, in, x_from, x_to, dx, 4123.5,
-                                 tirenv_test_keep_point, c, stats, d);
-    tirenv_profile_reader_free(in);
+    status = tirenv_model_stream(m, tirenv_profile_file_reader_source, in, x_from, x_to, dx,
+                                 4123.5, tirenv_test_keep_point, c, stats, d);
+    tirenv_profile_file_reader_free(in);
     return status;
 }
 
@@ -231,11 +231,12 @@ static void test_malformed(void **state)
         free(c.pt);
         unlink(path);
     }
-    tirenv_profile_reader *r = NULL;
+    tirenv_profile_file_reader *r = NULL;
     tirenv_diag d;
-    assert_int_equal(tirenv_profile_reader_open("/nonexistent/road.csv", &r, &d), TIRENV_EIO);
+    assert_int_equal(tirenv_profile_file_reader_open("/nonexistent/road.csv", NULL, 1, NULL, &r,
+                                                     &d), TIRENV_EIO);
     assert_null(r);
-    tirenv_profile_reader_free(NULL);
+    tirenv_profile_file_reader_free(NULL);
     tirenv_model_free(m);
 }
 

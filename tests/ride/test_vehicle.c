@@ -232,13 +232,7 @@ static void test_read_paths_and_case(void **state)
     assert_string_equal(v.rear.tire_file, "r.tir");
 }
 
-typedef struct {
-    const char *text;   /* file contents */
-    int status;
-    size_t line, column;
-    const char *field;
-    const char *says;   /* a phrase the message must contain */
-} read_error_case;
+typedef tirenv_test_read_error read_error_case;
 
 /* 600 characters: over the 511 a tire_file holds. */
 #define X10 "xxxxxxxxxx"
@@ -305,14 +299,8 @@ static void test_read_errors(void **state)
         tirenv_diag d;
         tirenv_diag_clear(&d);
         const int status = tirenv_vehicle_read(path, &v, &d);
-        char line[1200];
-        print_message("case %zu: %s\n", i, tirenv_diag_format(&d, line, sizeof line));
-        assert_int_equal(status, k->status);
-        assert_string_equal(d.file, path);
-        assert_int_equal(d.line, k->line);
-        assert_int_equal(d.column, k->column);
-        assert_string_equal(d.field, k->field);
-        assert_non_null(strstr(d.message, k->says));
+        tirenv_test_expect_diag(i, status, &d, k->status, path, k->line, k->column, k->field,
+                                k->says);
         assert_vehicle_identical(&v, &before);
     }
 }
@@ -417,14 +405,8 @@ static void test_set_errors(void **state)
         tirenv_diag d;
         tirenv_diag_clear(&d);
         const int status = tirenv_vehicle_set(&v, cases[i].text, &d);
-        char line[1200];
-        print_message("case %zu: %s\n", i, tirenv_diag_format(&d, line, sizeof line));
-        assert_int_equal(status, cases[i].status);
-        assert_string_equal(d.file, "--set");
-        assert_int_equal(d.line, 0);
-        assert_int_equal(d.column, 0);
-        assert_string_equal(d.field, cases[i].field);
-        assert_non_null(strstr(d.message, cases[i].says));
+        tirenv_test_expect_diag(i, status, &d, cases[i].status, "--set", 0, 0, cases[i].field,
+                                cases[i].says);
         assert_vehicle_identical(&v, &before);
     }
 }

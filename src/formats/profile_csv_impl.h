@@ -1,0 +1,25 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Private to src/formats: a profile CSV ("x_m,z_m", as tirenv_profile_read_csv) read one
+ * vertex at a time, the CSV case of the one public streaming reader,
+ * tirenv_profile_file_reader (profile_reader.c). */
+#ifndef TIRENV_FORMATS_PROFILE_CSV_IMPL_H
+#define TIRENV_FORMATS_PROFILE_CSV_IMPL_H
+
+#include "tirenv/error.h"
+
+typedef struct tirenv_profile_csv__reader tirenv_profile_csv__reader;
+
+/* Opens path and checks its header; *out is NULL on failure (diag names file and line). */
+int tirenv_profile_csv__reader_open(const char *path, tirenv_profile_csv__reader **out,
+                                    tirenv_diag *diag);
+
+/* The next vertex (m) in *x, *z with *got = 1, or *got = 0 at the end of the file. Applies
+ * the checks of tirenv_profile_read_csv (numbers, x non-decreasing, at most two vertices at
+ * one x, at least one row) and names file, line and column on failure. */
+int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
+                                    int *got, tirenv_diag *diag);
+
+/* Closes the file; NULL is a no-op. */
+void tirenv_profile_csv__reader_free(tirenv_profile_csv__reader *r);
+
+#endif
