@@ -177,11 +177,18 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     size_t j = tirenv_profile__segment_at(p, lo);
     while (j < n && X[j] < lo)
         ++j;
+    /* The end of the run from a search, not a walk over it: a road at 1 mm has hundreds of
+     * vertices under the patch. */
     size_t j_end = j;
-    while (j_end < n && X[j_end] <= hi)
-        ++j_end;
+    if (j < n && X[j] <= hi) {
+        j_end = tirenv_profile__segment_near(p, j, hi);
+        j_end = j_end < j ? j : j_end;
+        while (j_end < n && X[j_end] <= hi)
+            ++j_end;
+    }
     if (reserve_rows(c, c->n_rows + (j_end - j), N))
         return TIRENV_ENOMEM;
+    const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
     /* the rays' penetrations at the ends of sector ci and the chord's slack there */
     size_t ci = SIZE_MAX;
@@ -195,12 +202,25 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         const double rr = dx * dx + dz * dz;
         if (!(rr < R0sq))
             continue;
-        /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. */
-        while (i + 1 < N && dx * ct[i + 1] - dz * st[i + 1] >= 0)
+        /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. The walk keeps the
+         * sigmas it computes: sigma_(i+1) < 0 ends the forward walk, and s_n = -sigma_(i+1)
+         * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
+         * products; rounding to nearest is symmetric), never 0. */
+        double s_n = 0; /* 0: not known */
+        while (i + 1 < N) {
+            const double u = dx * ct[i + 1] - dz * st[i + 1];
+            if (!(u >= 0)) {
+                s_n = -u;
+                break;
+            }
             ++i;
-        while (i > 0 && dx * ct[i] - dz * st[i] < 0)
+        }
+        double s_i = dx * ct[i] - dz * st[i];
+        while (i > 0 && s_i < 0) {
             --i;
-        const double s_i = dx * ct[i] - dz * st[i];
+            s_i = dx * ct[i] - dz * st[i];
+            s_n = 0;
+        }
         if (s_i < 0)
             continue; /* behind the first element */
         const double rho = sqrt(rr), h = R0 - rho;
@@ -210,16 +230,16 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
          * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
          * weights of a row between elements come later, for the rows that can bind
          * (build_rows); dga_dz holds dt/dz until then. */
-        tirenv_springs__cc_row r = {.i = i, .j = i, .t = 0, .tau = 0, .ga = 1, .gb = 0,
-                                    .h = h, .dga_dz = 0, .dgb_dz = 0, .dh_dz = -dz / rho,
-                                    .id = (long)j};
+        size_t r_i = i, r_j = i;
+        double r_t = 0, r_dt = 0;
         if (s_i > 0) {
             if (i + 1 >= N)
                 continue; /* beyond the last element's ray */
-            const double s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
+            if (s_n == 0)
+                s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
             const double S = s_i + s_n, t = s_i / S;
             if (t >= 1 - t_snap) {
-                r.i = r.j = i + 1;
+                r_i = r_j = i + 1;
             } else if (t > t_snap) {
                 /* Below the hull of the rays' own rows (build_rows' test with the rays'
                  * penetrations, which the elements' rows only raise): never binds. */
@@ -227,18 +247,20 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                     ci = i;
                     P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
                     P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
-                    slack_tau = fabs(P_r - P_l) * T->tau_dev;
+                    slack_tau = fabs(P_r - P_l) * tau_dev;
                 }
                 const double chord = (1 - t) * P_l + t * P_r - slack_tau;
-                if (!(h > chord * (1 + T->ab_lo * t * (1 - t))))
+                if (!(h > chord * (1 + ab_lo * t * (1 - t))))
                     continue;
-                r.j = i + 1;
-                r.t = t;
+                r_j = i + 1;
+                r_t = t;
                 /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
-                r.dga_dz = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
+                r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
             }
         }
-        *out++ = r;
+        *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
+                                          .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
+                                          .dh_dz = -dz / rho, .id = (long)j};
     }
     c->n_rows = (size_t)(out - c->rows);
     return TIRENV_OK;
