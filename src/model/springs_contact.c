@@ -710,14 +710,6 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     return TIRENV_OK;
 }
 
-int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i)
-{
-    if (!(c->f0 <= i && i <= c->f1))
-        return 0;
-    const size_t r = c->pin_row[i];
-    return r != SIZE_MAX && c->in_w[r] && c->rows[r].id < 0;
-}
-
 /* The warm start's working set: the last solution's, where it still names rows here. */
 static void warm_set(tirenv_springs__cc *c)
 {

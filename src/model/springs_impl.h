@@ -4,6 +4,7 @@
 #define TIRENV_SPRINGS_IMPL_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "tirenv/profile.h"
 #include "tirenv/springs.h"
 
@@ -322,7 +323,13 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
  * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
  * ray_active(c, i)). */
-int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i);
+static inline int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i)
+{
+    if (!(c->f0 <= i && i <= c->f1))
+        return 0;
+    const size_t r = c->pin_row[i];
+    return r != SIZE_MAX && c->in_w[r] && c->rows[r].id < 0;
+}
 void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const double w[], const double dd[], double dw[]);
 
