@@ -422,7 +422,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         return TIRENV_OK;
     }
     int fast = 0;
-    if (g0 <= f1) {
+    if (g0 <= f1 && !s->cc.between) {
         for (size_t e = g0; e <= g1; ++e)
             s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
         size_t passes;
@@ -444,6 +444,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         if (status)
             return status;
     }
+    s->cc.between = !fast && s->cc.n_warm > 0;
     s->a = f0;
     s->b = f1;
     double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];

@@ -113,6 +113,7 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c)
     c->n_rows = 0;
     c->f0 = 1;
     c->f1 = 0;
+    c->between = 0;
 }
 
 /* Room for n rows (and their KKT unknowns alongside N elements). */

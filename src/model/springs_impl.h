@@ -287,6 +287,9 @@ typedef struct {
     unsigned char *warm_pin;
     size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
     size_t iterations;     /* of the last solve */
+    /* the last evaluation's solution had a row between elements working: the next one goes
+     * to the QP without trying the elements' own rows first (section 4.8, Cost) */
+    int between;
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
