@@ -366,37 +366,45 @@ static int fixed(const tirenv_springs__cc *c, size_t e)
 static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
-    size_t n = 0, bw = 1, last_w = SIZE_MAX;
+    size_t n = 0, n_schur = 0;
     for (size_t e = f0; e <= f1; ++e) {
         if (fixed(c, e)) {
             c->wpos[e] = SIZE_MAX;
         } else {
             c->wpos[e] = n;
             c->order[n++] = e;
-            if (last_w != SIZE_MAX && e > f0 && c->wpos[e - 1] != SIZE_MAX &&
-                n - 1 - c->wpos[e - 1] > bw)
-                bw = n - 1 - c->wpos[e - 1];
-            last_w = n - 1;
         }
         if (e > f0)
             for (size_t r = c->sec_first[e - 1], k = 0; k < c->sec_count[e - 1]; ++k, ++r)
                 if (c->in_w[r]) {
                     c->pos[r] = n;
+                    if (n_schur < TIRENV_SPRINGS__SCHUR_MAX)
+                        c->schur_pos[n_schur] = n;
+                    ++n_schur;
                     c->order[n++] = N + r;
-                    const size_t wl = c->wpos[e - 1], wr = c->wpos[e];
-                    const size_t low = wl != SIZE_MAX ? wl : wr;
-                    if (low != SIZE_MAX && n - 1 - low > bw)
-                        bw = n - 1 - low;
                 }
     }
     c->n_kkt = n;
-    c->n_schur = 0;
-    for (size_t p = 0; p < n && c->n_schur <= TIRENV_SPRINGS__SCHUR_MAX; ++p)
-        if (c->order[p] >= N && c->n_schur++ < TIRENV_SPRINGS__SCHUR_MAX)
-            c->schur_pos[c->n_schur - 1] = p;
-    c->use_schur = c->n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
+    c->n_schur = n_schur;
+    c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
     if (c->use_schur)
         return tirenv_springs__cc_schur_factor(c, T);
+    /* The band's half-width, for the banded path only: how far each unknown's row reaches
+     * back, an element to its free left neighbour, a row (of sector i, laid out after
+     * element i + 1) to the first free element of the two it couples. */
+    size_t bw = 1;
+    for (size_t p = 0; p < n; ++p) {
+        const size_t u = c->order[p];
+        size_t low;
+        if (u < N) {
+            low = u > f0 ? c->wpos[u - 1] : SIZE_MAX;
+        } else {
+            const size_t i = c->rows[u - N].i;
+            low = c->wpos[i] != SIZE_MAX ? c->wpos[i] : c->wpos[i + 1];
+        }
+        if (low != SIZE_MAX && p - low > bw)
+            bw = p - low;
+    }
     const size_t W = bw + 1;
     if (n * W > c->cap_band) {
         double *band = realloc(c->band, n * W * sizeof *band);
