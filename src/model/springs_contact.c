@@ -72,6 +72,8 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
             return TIRENV_ENOMEM;
     if (!(c->warm_pin = calloc(N, 1)))
         return TIRENV_ENOMEM;
+    if (!(c->chains = calloc(N + 2, sizeof *c->chains))) /* at most (N + 1) / 2 chains */
+        return TIRENV_ENOMEM;
     if (!(c->tri_y = calloc(TIRENV_SPRINGS__SCHUR_MAX * (N + 2), sizeof *c->tri_y)))
         return TIRENV_ENOMEM;
     c->f0 = 1;
@@ -102,6 +104,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->tri_mul);
     free(c->tri_x);
     free(c->tri_y);
+    free(c->chains);
     free(c->warm_ids);
     free(c->warm_pin);
     memset(c, 0, sizeof *c);
@@ -518,6 +521,24 @@ static void reduced_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
                         const double v[], double b[])
 {
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
+    if (c->use_schur) { /* a free element next to a held one ends a chain */
+        for (size_t q = 0; q < c->n_chains; ++q) {
+            const size_t lo = c->chains[2 * q], hi = c->chains[2 * q + 1];
+            if (lo > f0)
+                b[c->wpos[lo]] += T->k_ir * v[lo - 1];
+            if (hi < f1)
+                b[c->wpos[hi]] += T->k_ir * v[hi + 1];
+        }
+        for (size_t q = 0; q < c->n_schur; ++q) {
+            const size_t p = c->schur_pos[q];
+            const tirenv_springs__cc_row *r = &c->rows[c->order[p] - N];
+            if (c->wpos[r->i] == SIZE_MAX)
+                b[p] -= r->ga * v[r->i];
+            if (r->t > 0 && c->wpos[r->j] == SIZE_MAX)
+                b[p] -= r->gb * v[r->j];
+        }
+        return;
+    }
     for (size_t p = 0; p < c->n_kkt; ++p) {
         const size_t u = c->order[p];
         if (u < N) {

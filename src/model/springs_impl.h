@@ -276,6 +276,7 @@ typedef struct {
     size_t n_schur, schur_pos[TIRENV_SPRINGS__SCHUR_MAX];
     size_t chain_lo[TIRENV_SPRINGS__SCHUR_MAX], chain_hi[TIRENV_SPRINGS__SCHUR_MAX];
     double *tri_piv, *tri_mul, *tri_x, *tri_y;
+    size_t *chains, n_chains; /* the chains of free elements: first and last of each */
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
