@@ -143,8 +143,8 @@ void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
     double *x = c->tri_x, lam[TIRENV_SPRINGS__SCHUR_MAX];
     /* K w = b_w + G^T lambda, G w = b_r: w = w0 + K^-1 G^T lambda with w0 = K^-1 b_w, and
      * S lambda = b_r - G w0. */
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] != SIZE_MAX)
+    for (size_t q = 0; q < c->n_chains; ++q)
+        for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
             x[e] = b[c->wpos[e]];
     tri_solve(c, x);
     for (size_t p = 0; p < k; ++p) {
@@ -165,8 +165,8 @@ void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
         for (size_t e = c->chain_lo[q]; e <= c->chain_hi[q]; ++e)
             x[e] += lam[q] * y[e];
     }
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] != SIZE_MAX)
+    for (size_t q = 0; q < c->n_chains; ++q)
+        for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
             b[c->wpos[e]] = x[e];
     for (size_t p = 0; p < k; ++p)
         b[c->schur_pos[p]] = -lam[p]; /* the symmetric form's unknown, -lambda */
