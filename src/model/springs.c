@@ -422,7 +422,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         return TIRENV_OK;
     }
     int fast = 0;
-    if (g0 <= f1) {
+    if (g0 <= f1 && !s->cc.between) {
         for (size_t e = g0; e <= g1; ++e)
             s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
         size_t passes;
@@ -444,6 +444,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         if (status)
             return status;
     }
+    s->cc.between = !fast && s->cc.n_warm > 0;
     s->a = f0;
     s->b = f1;
     double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
@@ -594,11 +595,14 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
         w[j] = s->k_ir / s->R_D[j] * w[j - 1];
 }
 
-/* The warm state of the tip contact: which elements may touch and which were pinned. The rays'
- * cache is dropped on restore; it changes no bit of a result, only how fast it is found. */
+/* The warm state of the tip contact: which elements may touch and which were pinned, and
+ * whether the continuous contact's last solution had a row between elements working (it decides
+ * whether the closed form is tried first, which moves the last bits). The rays' cache and the
+ * QP's warm start are dropped on restore; they change no bit of a result, only how fast it is
+ * found. */
 size_t tirenv_springs__state_size(const tirenv_springs *s)
 {
-    return 2 * sizeof(size_t) + s->N;
+    return 2 * sizeof(size_t) + s->N + 1;
 }
 
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf)
@@ -606,6 +610,7 @@ void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf)
     memcpy(buf, &s->a, sizeof s->a);
     memcpy(buf + sizeof s->a, &s->b, sizeof s->b);
     memcpy(buf + 2 * sizeof(size_t), s->active, s->N);
+    buf[2 * sizeof(size_t) + s->N] = s->cc.between != 0;
 }
 
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
@@ -618,6 +623,8 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
-    if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) /* its warm start is not in the state */
+    if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
         tirenv_springs__cc_forget(&s->cc);
+        s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
+    }
 }

@@ -72,6 +72,8 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
             return TIRENV_ENOMEM;
     if (!(c->warm_pin = calloc(N, 1)))
         return TIRENV_ENOMEM;
+    if (!(c->chains = calloc(N + 2, sizeof *c->chains))) /* at most (N + 1) / 2 chains */
+        return TIRENV_ENOMEM;
     if (!(c->tri_y = calloc(TIRENV_SPRINGS__SCHUR_MAX * (N + 2), sizeof *c->tri_y)))
         return TIRENV_ENOMEM;
     c->f0 = 1;
@@ -102,6 +104,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->tri_mul);
     free(c->tri_x);
     free(c->tri_y);
+    free(c->chains);
     free(c->warm_ids);
     free(c->warm_pin);
     memset(c, 0, sizeof *c);
@@ -113,6 +116,7 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c)
     c->n_rows = 0;
     c->f0 = 1;
     c->f1 = 0;
+    c->between = 0;
 }
 
 /* Room for n rows (and their KKT unknowns alongside N elements). */
@@ -177,11 +181,18 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     size_t j = tirenv_profile__segment_at(p, lo);
     while (j < n && X[j] < lo)
         ++j;
+    /* The end of the run from a search, not a walk over it: a road at 1 mm has hundreds of
+     * vertices under the patch. */
     size_t j_end = j;
-    while (j_end < n && X[j_end] <= hi)
-        ++j_end;
+    if (j < n && X[j] <= hi) {
+        j_end = tirenv_profile__segment_near(p, j, hi);
+        j_end = j_end < j ? j : j_end;
+        while (j_end < n && X[j_end] <= hi)
+            ++j_end;
+    }
     if (reserve_rows(c, c->n_rows + (j_end - j), N))
         return TIRENV_ENOMEM;
+    const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
     /* the rays' penetrations at the ends of sector ci and the chord's slack there */
     size_t ci = SIZE_MAX;
@@ -195,12 +206,25 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         const double rr = dx * dx + dz * dz;
         if (!(rr < R0sq))
             continue;
-        /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. */
-        while (i + 1 < N && dx * ct[i + 1] - dz * st[i + 1] >= 0)
+        /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. The walk keeps the
+         * sigmas it computes: sigma_(i+1) < 0 ends the forward walk, and s_n = -sigma_(i+1)
+         * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
+         * products; rounding to nearest is symmetric), never 0. */
+        double s_n = 0; /* 0: not known */
+        while (i + 1 < N) {
+            const double u = dx * ct[i + 1] - dz * st[i + 1];
+            if (!(u >= 0)) {
+                s_n = -u;
+                break;
+            }
             ++i;
-        while (i > 0 && dx * ct[i] - dz * st[i] < 0)
+        }
+        double s_i = dx * ct[i] - dz * st[i];
+        while (i > 0 && s_i < 0) {
             --i;
-        const double s_i = dx * ct[i] - dz * st[i];
+            s_i = dx * ct[i] - dz * st[i];
+            s_n = 0;
+        }
         if (s_i < 0)
             continue; /* behind the first element */
         const double rho = sqrt(rr), h = R0 - rho;
@@ -210,16 +234,16 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
          * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
          * weights of a row between elements come later, for the rows that can bind
          * (build_rows); dga_dz holds dt/dz until then. */
-        tirenv_springs__cc_row r = {.i = i, .j = i, .t = 0, .tau = 0, .ga = 1, .gb = 0,
-                                    .h = h, .dga_dz = 0, .dgb_dz = 0, .dh_dz = -dz / rho,
-                                    .id = (long)j};
+        size_t r_i = i, r_j = i;
+        double r_t = 0, r_dt = 0;
         if (s_i > 0) {
             if (i + 1 >= N)
                 continue; /* beyond the last element's ray */
-            const double s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
+            if (s_n == 0)
+                s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
             const double S = s_i + s_n, t = s_i / S;
             if (t >= 1 - t_snap) {
-                r.i = r.j = i + 1;
+                r_i = r_j = i + 1;
             } else if (t > t_snap) {
                 /* Below the hull of the rays' own rows (build_rows' test with the rays'
                  * penetrations, which the elements' rows only raise): never binds. */
@@ -227,18 +251,20 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                     ci = i;
                     P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
                     P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
-                    slack_tau = fabs(P_r - P_l) * T->tau_dev;
+                    slack_tau = fabs(P_r - P_l) * tau_dev;
                 }
                 const double chord = (1 - t) * P_l + t * P_r - slack_tau;
-                if (!(h > chord * (1 + T->ab_lo * t * (1 - t))))
+                if (!(h > chord * (1 + ab_lo * t * (1 - t))))
                     continue;
-                r.j = i + 1;
-                r.t = t;
+                r_j = i + 1;
+                r_t = t;
                 /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
-                r.dga_dz = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
+                r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
             }
         }
-        *out++ = r;
+        *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
+                                          .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
+                                          .dh_dz = -dz / rho, .id = (long)j};
     }
     c->n_rows = (size_t)(out - c->rows);
     return TIRENV_OK;
@@ -343,37 +369,45 @@ static int fixed(const tirenv_springs__cc *c, size_t e)
 static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
-    size_t n = 0, bw = 1, last_w = SIZE_MAX;
+    size_t n = 0, n_schur = 0;
     for (size_t e = f0; e <= f1; ++e) {
         if (fixed(c, e)) {
             c->wpos[e] = SIZE_MAX;
         } else {
             c->wpos[e] = n;
             c->order[n++] = e;
-            if (last_w != SIZE_MAX && e > f0 && c->wpos[e - 1] != SIZE_MAX &&
-                n - 1 - c->wpos[e - 1] > bw)
-                bw = n - 1 - c->wpos[e - 1];
-            last_w = n - 1;
         }
         if (e > f0)
             for (size_t r = c->sec_first[e - 1], k = 0; k < c->sec_count[e - 1]; ++k, ++r)
                 if (c->in_w[r]) {
                     c->pos[r] = n;
+                    if (n_schur < TIRENV_SPRINGS__SCHUR_MAX)
+                        c->schur_pos[n_schur] = n;
+                    ++n_schur;
                     c->order[n++] = N + r;
-                    const size_t wl = c->wpos[e - 1], wr = c->wpos[e];
-                    const size_t low = wl != SIZE_MAX ? wl : wr;
-                    if (low != SIZE_MAX && n - 1 - low > bw)
-                        bw = n - 1 - low;
                 }
     }
     c->n_kkt = n;
-    c->n_schur = 0;
-    for (size_t p = 0; p < n && c->n_schur <= TIRENV_SPRINGS__SCHUR_MAX; ++p)
-        if (c->order[p] >= N && c->n_schur++ < TIRENV_SPRINGS__SCHUR_MAX)
-            c->schur_pos[c->n_schur - 1] = p;
-    c->use_schur = c->n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
+    c->n_schur = n_schur;
+    c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
     if (c->use_schur)
         return tirenv_springs__cc_schur_factor(c, T);
+    /* The band's half-width, for the banded path only: how far each unknown's row reaches
+     * back, an element to its free left neighbour, a row (of sector i, laid out after
+     * element i + 1) to the first free element of the two it couples. */
+    size_t bw = 1;
+    for (size_t p = 0; p < n; ++p) {
+        const size_t u = c->order[p];
+        size_t low;
+        if (u < N) {
+            low = u > f0 ? c->wpos[u - 1] : SIZE_MAX;
+        } else {
+            const size_t i = c->rows[u - N].i;
+            low = c->wpos[i] != SIZE_MAX ? c->wpos[i] : c->wpos[i + 1];
+        }
+        if (low != SIZE_MAX && p - low > bw)
+            bw = p - low;
+    }
     const size_t W = bw + 1;
     if (n * W > c->cap_band) {
         double *band = realloc(c->band, n * W * sizeof *band);
@@ -487,6 +521,24 @@ static void reduced_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
                         const double v[], double b[])
 {
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
+    if (c->use_schur) { /* a free element next to a held one ends a chain */
+        for (size_t q = 0; q < c->n_chains; ++q) {
+            const size_t lo = c->chains[2 * q], hi = c->chains[2 * q + 1];
+            if (lo > f0)
+                b[c->wpos[lo]] += T->k_ir * v[lo - 1];
+            if (hi < f1)
+                b[c->wpos[hi]] += T->k_ir * v[hi + 1];
+        }
+        for (size_t q = 0; q < c->n_schur; ++q) {
+            const size_t p = c->schur_pos[q];
+            const tirenv_springs__cc_row *r = &c->rows[c->order[p] - N];
+            if (c->wpos[r->i] == SIZE_MAX)
+                b[p] -= r->ga * v[r->i];
+            if (r->t > 0 && c->wpos[r->j] == SIZE_MAX)
+                b[p] -= r->gb * v[r->j];
+        }
+        return;
+    }
     for (size_t p = 0; p < c->n_kkt; ++p) {
         const size_t u = c->order[p];
         if (u < N) {
@@ -686,14 +738,6 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->f1 = 0;
     }
     return TIRENV_OK;
-}
-
-int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i)
-{
-    if (!(c->f0 <= i && i <= c->f1))
-        return 0;
-    const size_t r = c->pin_row[i];
-    return r != SIZE_MAX && c->in_w[r] && c->rows[r].id < 0;
 }
 
 /* The warm start's working set: the last solution's, where it still names rows here. */

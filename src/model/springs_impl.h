@@ -4,6 +4,7 @@
 #define TIRENV_SPRINGS_IMPL_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "tirenv/profile.h"
 #include "tirenv/springs.h"
 
@@ -275,6 +276,7 @@ typedef struct {
     size_t n_schur, schur_pos[TIRENV_SPRINGS__SCHUR_MAX];
     size_t chain_lo[TIRENV_SPRINGS__SCHUR_MAX], chain_hi[TIRENV_SPRINGS__SCHUR_MAX];
     double *tri_piv, *tri_mul, *tri_x, *tri_y;
+    size_t *chains, n_chains; /* the chains of free elements: first and last of each */
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
@@ -286,6 +288,9 @@ typedef struct {
     unsigned char *warm_pin;
     size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
     size_t iterations;     /* of the last solve */
+    /* the last evaluation's solution had a row between elements working: the next one goes
+     * to the QP without trying the elements' own rows first (section 4.8, Cost) */
+    int between;
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -322,7 +327,13 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
  * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
  * ray_active(c, i)). */
-int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i);
+static inline int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i)
+{
+    if (!(c->f0 <= i && i <= c->f1))
+        return 0;
+    const size_t r = c->pin_row[i];
+    return r != SIZE_MAX && c->in_w[r] && c->rows[r].id < 0;
+}
 void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const double w[], const double dd[], double dw[]);
 

@@ -28,22 +28,24 @@ static int coupled(const tirenv_springs__cc *c, size_t e)
     return e > c->f0 && c->wpos[e - 1] != SIZE_MAX;
 }
 
-/* x := K_FF^-1 x on the free elements of [f0, f1] (x indexed by element), which are whole
- * chains between held elements: K_FF does not couple across a held element. */
-static void tri_solve(const tirenv_springs__cc *c, double x[], size_t f0, size_t f1)
+/* x := K_FF^-1 x on one chain [lo, hi] of free elements (held or outside the span at both
+ * ends): K_FF does not couple across a held element. */
+static void chain_solve(const tirenv_springs__cc *c, double x[], size_t lo, size_t hi)
 {
     const double *piv = c->tri_piv, *mul = c->tri_mul;
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] != SIZE_MAX && coupled(c, e))
-            x[e] -= mul[e] * x[e - 1];
-    for (size_t e = f1 + 1; e-- > f0;) {
-        if (c->wpos[e] == SIZE_MAX)
-            continue;
-        double v = x[e] / piv[e];
-        if (e < f1 && c->wpos[e + 1] != SIZE_MAX) /* e + 1 of the same chain */
-            v -= mul[e + 1] * x[e + 1];
-        x[e] = v;
-    }
+    for (size_t e = lo + 1; e <= hi; ++e)
+        x[e] -= mul[e] * x[e - 1];
+    x[hi] = x[hi] / piv[hi];
+    for (size_t e = hi; e-- > lo;)
+        x[e] = x[e] / piv[e] - mul[e + 1] * x[e + 1];
+}
+
+/* x := K_FF^-1 x on every free element of [f0, f1], chain by chain (the chains the factor
+ * found). */
+static void tri_solve(const tirenv_springs__cc *c, double x[])
+{
+    for (size_t q = 0; q < c->n_chains; ++q)
+        chain_solve(c, x, c->chains[2 * q], c->chains[2 * q + 1]);
 }
 
 /* g_r . x over the row's free elements within [lo, hi] (x is zero outside). */
@@ -63,6 +65,7 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
     const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
     const double k_ir = T->k_ir, k_max = T->k_r + 2 * T->k_ir;
     double *piv = c->tri_piv, *mul = c->tri_mul;
+    size_t n_chains = 0;
     for (size_t e = f0; e <= f1; ++e) {
         if (c->wpos[e] == SIZE_MAX)
             continue;
@@ -70,11 +73,16 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
         if (coupled(c, e)) {
             mul[e] = -k_ir / piv[e - 1];
             d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
+            c->chains[2 * n_chains - 1] = e;
+        } else {
+            c->chains[2 * n_chains] = c->chains[2 * n_chains + 1] = e;
+            ++n_chains;
         }
         if (!(d > 0))
             return 1;
         piv[e] = d;
     }
+    c->n_chains = n_chains;
     /* The working rows' columns of K_FF^-1 G^T, then S = G K_FF^-1 G^T by LDL^T. */
     for (size_t q = 0; q < k; ++q) {
         const tirenv_springs__cc_row *r = &c->rows[c->order[c->schur_pos[q]] - N];
@@ -98,7 +106,7 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
             y[r->i] = r->ga;
         if (r->t > 0 && c->wpos[r->j] != SIZE_MAX)
             y[r->j] = r->gb;
-        tri_solve(c, y, lo, hi);
+        chain_solve(c, y, lo, hi);
     }
     double *S = c->schur;
     for (size_t p = 0; p < k; ++p) {
@@ -135,10 +143,10 @@ void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
     double *x = c->tri_x, lam[TIRENV_SPRINGS__SCHUR_MAX];
     /* K w = b_w + G^T lambda, G w = b_r: w = w0 + K^-1 G^T lambda with w0 = K^-1 b_w, and
      * S lambda = b_r - G w0. */
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] != SIZE_MAX)
+    for (size_t q = 0; q < c->n_chains; ++q)
+        for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
             x[e] = b[c->wpos[e]];
-    tri_solve(c, x, f0, f1);
+    tri_solve(c, x);
     for (size_t p = 0; p < k; ++p) {
         const size_t pos = c->schur_pos[p];
         lam[p] = b[pos] - row_dot(c, &c->rows[c->order[pos] - N], x, f0, f1);
@@ -157,8 +165,8 @@ void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
         for (size_t e = c->chain_lo[q]; e <= c->chain_hi[q]; ++e)
             x[e] += lam[q] * y[e];
     }
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] != SIZE_MAX)
+    for (size_t q = 0; q < c->n_chains; ++q)
+        for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
             b[c->wpos[e]] = x[e];
     for (size_t p = 0; p < k; ++p)
         b[c->schur_pos[p]] = -lam[p]; /* the symmetric form's unknown, -lambda */

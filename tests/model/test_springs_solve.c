@@ -266,21 +266,27 @@ static void test_fan_matches_single_rays(void **state)
 /* ---- The workspace's kept state ---- */
 
 /* A workspace that has seen other positions, heights and profiles (a new profile may sit at
- * a freed one's address) gives the forces of a fresh workspace, bit for bit: the rays it keeps
- * are tied to the profile's serial and x, the final active set does not depend on the warm
- * start, and the dF_z/dz it keeps is given again only for the same faces, span and pins (every
- * other height is a hair from the last, where they nearly always recur, as after a Newton
- * step). */
-static void test_kept_state_is_invisible(void **state)
+ * a freed one's address) gives the forces of a fresh workspace: the rays it keeps are tied to
+ * the profile's serial and x, the final active set does not depend on the warm start, and the
+ * dF_z/dz it keeps is given again only for the same faces, span and pins (every other height is
+ * a hair from the last, where they nearly always recur, as after a Newton step). With rays bit
+ * for bit. With continuous contact to round-off: after a state whose solution had a row between
+ * elements working the QP is solved without trying the closed form first (docs/models.md
+ * section 4.8, Cost), and the two solve the same problem by different arithmetic; 1e-9 of the
+ * force (7 uN of 7 kN, against 1e-3 N for 1e-9 m of the tire's stiffness) bounds round-off of
+ * solves over tens of elements by orders of magnitude. */
+static void kept_state(tirenv_springs_contact contact)
 {
-    (void)state;
     tirenv_rng *rng = tirenv_rng_alloc(0);
     tirenv_rng_seed(rng, 11);
-    const tirenv_tire t = tirenv_tire_default();
+    tirenv_tire t = tirenv_tire_default();
+    t.springs.contact = contact;
+    const int exact = contact == TIRENV_SPRINGS_RAYS;
     tirenv_springs *kept = tirenv_springs_alloc(&t.springs);
     assert_non_null(kept);
     const double heights[] = {0.1, 0.05, 0.12, 0.02, 0.08};
-    size_t same_address = 0, checked = 0;
+    size_t same_address = 0, checked = 0, moved = 0;
+    double worst = 0;
     const void *last = NULL;
     double z_last = 0.65;  /* m */
     for (int round = 0; round < 40; ++round) {
@@ -300,18 +306,37 @@ static void test_kept_state_is_invisible(void **state)
             const int s2 = tirenv_springs_forces(fresh, p, x, z, &fx2, &fz2, &df2, &c2, NULL);
             tirenv_springs_free(fresh);
             assert_int_equal(s1, s2);
-            assert_bits_equal(fz1, fz2);
-            assert_bits_equal(fx1, fx2);
-            assert_bits_equal(df1, df2);
+            if (exact) {
+                assert_bits_equal(fz1, fz2);
+                assert_bits_equal(fx1, fx2);
+                assert_bits_equal(df1, df2);
+            } else {
+                const double rel[] = {fabs(fz1 - fz2) / (fabs(fz2) + 1),
+                                      fabs(fx1 - fx2) / (fabs(fz2) + 1),
+                                      fabs(df1 - df2) / (fabs(df2) + 1)};
+                for (int q = 0; q < 3; ++q) {
+                    assert_true(rel[q] <= 1e-9);
+                    worst = fmax(worst, rel[q]);
+                }
+                moved += fz1 != fz2 || fx1 != fx2 || df1 != df2;
+            }
             assert_int_equal(c1, c2);
             ++checked;
         }
         tirenv_profile_free(p);
     }
-    print_message("%zu evaluations; a new profile at the freed one's address %zu times\n",
-                  checked, same_address);
+    print_message("%s: %zu evaluations (%zu not bit for bit, largest relative change %.3g); a "
+                  "new profile at the freed one's address %zu times\n",
+                  exact ? "rays" : "continuous", checked, moved, worst, same_address);
     tirenv_springs_free(kept);
     tirenv_rng_free(rng);
+}
+
+static void test_kept_state_is_invisible(void **state)
+{
+    (void)state;
+    kept_state(TIRENV_SPRINGS_RAYS);
+    kept_state(TIRENV_SPRINGS_CONTINUOUS);
 }
 
 /* ---- Ground narrower than the rays ---- */
