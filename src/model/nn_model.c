@@ -63,8 +63,9 @@ static void nn_model_free(void *state)
     free(st);
 }
 
-static void *nn_model_alloc(const tirenv_tire *tire)
+static void *nn_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
+    (void)type;
     nn_state *st = calloc(1, sizeof *st);
     if (!st)
         return NULL;
@@ -551,31 +552,36 @@ static const char *nn_model_note(const void *state)
     return ((const nn_state *)state)->note;
 }
 
-static const tirenv_model_type nn_type = {
-    .name = "nn",
-    .summary = "the paper's trained network (--nn FILE)",
-    .flags = TIRENV_MODEL_NEEDS_NETWORK,
-    .params = NULL,
-    .n_params = 0,
-    .n_params_max = 0,
+static const tirenv_model_ops nn_ops = {
     .alloc = nn_model_alloc,
     .free = nn_model_free,
     .flat = nn_model_flat,
     .load_for_contact_length = nn_model_load_for_contact_length,
     .set = nn_model_set,
+    .set_profile = nn_model_set,
+    .set_load = nn_model_set_load,
     .eval = nn_model_eval,
-    .envelope = nn_model_envelope,
-    .set_profile = NULL,
-    .reach = NULL,
+    .reach = tirenv_model__default_reach,
+    .state_size = nn_model_state_size,
+    .state_save = nn_model_state_save,
+    .state_restore = nn_model_state_restore,
+};
+
+static const tirenv_model_network nn_network = {
     .set_network = nn_model_set_network,
     .set_contact_law = nn_model_set_contact_law,
     .set_extrapolate = nn_model_set_extrapolate,
     .warnings = nn_model_warnings,
     .note = nn_model_note,
+    .envelope = nn_model_envelope,
+};
+
+static const tirenv_model_type nn_type = {
+    .name = "nn",
+    .summary = "the paper's trained network (--nn FILE)",
+    .flags = 0,
     .tracks = TIRENV_TRACKS_MEAN,
-    .set_load = nn_model_set_load,
-    .state_size = nn_model_state_size,
-    .state_save = nn_model_state_save,
-    .state_restore = nn_model_state_restore,
+    .ops = &nn_ops,
+    .network = &nn_network,
 };
 const tirenv_model_type *tirenv_model_nn = &nn_type;
