@@ -233,7 +233,7 @@ static int check_range(nn_state *st, size_t end, tirenv_diag *diag)
                                                        "obstacle height", "obstacle length"};
     const double u[TIRENV_NN_INPUTS] = {0.5, st->l_c, st->H, st->L};
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
-    tirenv_nn_get_input_range(st->nn, lo, hi);
+    tirenv_nn_input_range(st->nn, lo, hi);
     for (size_t i = tirenv_nn_out_of_range(st->nn, u, TIRENV_NN_CONTACT_LENGTH); i < end;
          i = tirenv_nn_out_of_range(st->nn, u, i + 1)) {
         if (!st->extrapolate)
@@ -254,7 +254,7 @@ static int check_range(nn_state *st, size_t end, tirenv_diag *diag)
  * network never learned. */
 static int obstacles_in_range(const nn_state *st, tirenv_diag *diag)
 {
-    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    const tirenv_nn_road_info in = tirenv_nn_road_info_of(st->road);
     if (st->extrapolate)
         return TIRENV_OK;
     const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
@@ -331,7 +331,7 @@ static void note_forms(nn_state *st)
 {
     tirenv_nn_input_form input;
     tirenv_nn_target_form target;
-    tirenv_nn_get_form(st->nn, &input, &target);
+    tirenv_nn_form(st->nn, &input, &target);
     const size_t used = strlen(st->note), K = tirenv_nn_n_members(st->nn);
     snprintf(st->note + used, sizeof st->note - used,
              "; network: input %s, target %s, mean of %zu network%s",
@@ -370,7 +370,7 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     if (s || (s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag)) ||
         (s = obstacles_in_range(st, diag)))
         return s;
-    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    const tirenv_nn_road_info in = tirenv_nn_road_info_of(st->road);
     warn_clamped(st, &in);
     if ((s = warnings_build(st, diag)))
         return s;
