@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* The rows of the springs model's continuous contact (docs/models.md section 4.8): every
- * ground vertex under the tread and every ray's pin as a row a w_i + b w_(i+1) >= h, reduced
- * to each sector's upper hull and laid out element by element for the active-set solve of
- * springs_contact.c. */
+/* The rows of the springs model's continuous contact (docs/models.md section 4.8): the
+ * tread's curve between elements (its weights a(t), b(t)), and every ground vertex under it
+ * and every ray's pin as a row a w_i + b w_(i+1) >= h, reduced to each sector's upper hull and
+ * laid out element by element for the active-set solve of springs_contact.c. */
 #include "model/springs_impl.h"
 
 #include <float.h>
@@ -17,6 +17,47 @@
  * make the KKT system nearly singular. The tread there moves by at most this fraction of
  * w_(i+1) - w_i (under 1e-8 m). */
 static const double t_snap = 1e-6;
+
+double tirenv_springs__cc_gamma(double k_r, double k_ir)
+{
+    if (!(k_ir > 0))
+        return 0.5 * M_PI;
+    const double ch = 1 + k_r / (2 * k_ir);
+    return acos(1 / (ch + sqrt((ch - 1) * (ch + 1)))); /* exp(-mu) without cancellation */
+}
+
+void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
+                                double *b, double *da_dt, double *db_dt)
+{
+    /* sin((1 - t) g) = sin(g) cos(t g) - cos(g) sin(t g): one sine and cosine of t g. */
+    const double g = T->gamma, inv = 1 / T->sin_gamma, cot = T->cot_gamma;
+    const double sn = sin(t * g), cs = cos(t * g);
+    *a = cs - cot * sn;
+    *b = sn * inv;
+    *da_dt = -g * (sn + cot * cs);
+    *db_dt = g * cs * inv;
+}
+
+void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T)
+{
+    T->gamma = tirenv_springs__cc_gamma(T->k_r, T->k_ir);
+    T->sin_gamma = sin(T->gamma);
+    T->cot_gamma = cos(T->gamma) / T->sin_gamma;
+    /* The bounds from 4096 samples, with margins far above the sampling's error (both
+     * functions are smooth, their variation between samples below 1e-7 of their range):
+     * ab_lo 1 % under the smallest (a + b - 1) / (t (1 - t)) seen, tau_dev 1 % over the
+     * largest |tau - t| plus 1e-9. */
+    double lo = INFINITY, dev = 0;
+    for (int k = 1; k < 4096; ++k) {
+        const double t = k / 4096.0;
+        double a, b, da, db;
+        tirenv_springs__cc_weights(T, t, &a, &b, &da, &db);
+        lo = fmin(lo, (a + b - 1) / (t * (1 - t)));
+        dev = fmax(dev, fabs(b / (a + b) - t));
+    }
+    T->ab_lo = lo > 0 ? 0.99 * lo : 0;
+    T->tau_dev = 1.01 * dev + 1e-9;
+}
 
 /* Room for n rows (and their KKT unknowns alongside N elements). */
 static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
