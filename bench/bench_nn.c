@@ -257,7 +257,7 @@ static void fann_train_row(const data_set *d, unsigned long seed, unsigned int m
     tirenv_nn *scaler = tirenv_nn_alloc(&top);
     double mean[4], std[4], om, os;
     tirenv_nn_fit_scaling(scaler, d->s[0].n, d->s[0].x, d->s[0].y, NULL);
-    tirenv_nn_get_scaling(scaler, mean, std, &om, &os);
+    tirenv_nn_scaling(scaler, mean, std, &om, &os);
     tirenv_nn_free(scaler);
     struct fann_train_data *train = fann_data(&d->s[0], mean, std, om, os);
     watch = (fann_watch){.control = fann_data(d->s[1].n ? &d->s[1] : &d->s[0], mean, std, om,
@@ -296,7 +296,7 @@ static struct fann *fann_copy_of(const tirenv_nn *nn)
     struct fann *ann = fann_net();
     const double *w = tirenv_nn_weights_const(nn);
     double mean[4], std[4], om, os;
-    tirenv_nn_get_scaling(nn, mean, std, &om, &os);
+    tirenv_nn_scaling(nn, mean, std, &om, &os);
     const unsigned in0 = 0, h0 = 5, out0 = 14;  /* first neuron of each layer; biases 4, 13 */
     for (unsigned j = 0; j < 8; ++j) {
         double b = w[tirenv_nn_weight_index(nn, 1, 0, j)];
@@ -498,7 +498,7 @@ int main(int argc, char *argv[])
 
     /* Inference, on the paper's network (the best of the LM restarts), then the default. */
     double lo[4], hi[4];
-    tirenv_nn_get_input_range(net, lo, hi);
+    tirenv_nn_input_range(net, lo, hi);
     double *x = malloc(N_BENCH * 4 * sizeof *x), *y = malloc(N_BENCH * sizeof *y);
     unsigned long long state = 0x9e3779b97f4a7c15ull ^ seed;
     for (size_t k = 0; k < N_BENCH * 4; ++k) {

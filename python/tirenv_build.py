@@ -179,7 +179,7 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
 void tirenv_nn_road_free(tirenv_nn_road *r);
 int tirenv_nn_road_eval(tirenv_nn_road *r, size_t n, const double x[], double h[],
                         double slope[], tirenv_diag *diag);
-tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r);
+tirenv_nn_road_info tirenv_nn_road_info_of(const tirenv_nn_road *r);
 
 /* vehicle.h */
 typedef struct {

@@ -102,7 +102,7 @@ tirenv_nn *tirenv_nn_ensemble(const tirenv_nn *const nets[], size_t n);
  * k is out of range or memory runs out. */
 tirenv_nn *tirenv_nn_member(const tirenv_nn *nn, size_t k);
 
-const tirenv_nn_topology *tirenv_nn_get_topology(const tirenv_nn *nn);
+const tirenv_nn_topology *tirenv_nn_topology_of(const tirenv_nn *nn);
 size_t tirenv_nn_n_inputs(const tirenv_nn *nn);
 size_t tirenv_nn_n_members(const tirenv_nn *nn);
 /* All weights of all members (n_members times those of one). */
@@ -113,12 +113,12 @@ size_t tirenv_nn_n_weights(const tirenv_nn *nn);
  * and the target they define. */
 int tirenv_nn_set_form(tirenv_nn *nn, tirenv_nn_input_form input, tirenv_nn_target_form target,
                        tirenv_diag *diag);
-void tirenv_nn_get_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
-                        tirenv_nn_target_form *target);
+void tirenv_nn_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
+                    tirenv_nn_target_form *target);
 /* The even form's width a (> 0, finite; TIRENV_NN_EVEN_WIDTH when allocated); TIRENV_EINVAL
  * otherwise. Like the forms, set it before tirenv_nn_fit_scaling. */
 int tirenv_nn_set_even_width(tirenv_nn *nn, double a, tirenv_diag *diag);
-double tirenv_nn_get_even_width(const tirenv_nn *nn);
+double tirenv_nn_even_width(const tirenv_nn *nn);
 
 /* All weights, member by member, each member's layer by layer; layer l (1-based, fed by
  * layer l-1 of n_in neurons, n_out neurons) is a (1 + n_in) x n_out row-major block: first
@@ -145,12 +145,12 @@ void tirenv_nn_init_weights(tirenv_nn *nn, tirenv_rng *rng);
  * target. */
 int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
                           double out_mean, double out_std, tirenv_diag *diag);
-void tirenv_nn_get_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],
-                           double *out_mean, double *out_std);
+void tirenv_nn_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],
+                       double *out_mean, double *out_std);
 /* The range of each input seen in training (lo <= hi, finite; or +-inf for unknown). */
 int tirenv_nn_set_input_range(tirenv_nn *nn, const double lo[], const double hi[],
                               tirenv_diag *diag);
-void tirenv_nn_get_input_range(const tirenv_nn *nn, double lo[], double hi[]);
+void tirenv_nn_input_range(const tirenv_nn *nn, double lo[], double hi[]);
 /* Sets scaling (mean and population standard deviation of the features and the target of
  * the net's forms; a constant column gets std 1) and input ranges (of the raw inputs) from n
  * samples: x row-major n x n_inputs, y n outputs (h, m). TIRENV_EINVAL if n = 0, a value is

@@ -113,10 +113,10 @@ int tirenv_nn_road_eval(tirenv_nn_road *r, size_t n, const double x[], double h[
 
 /* The baseline b(x) (m) at x (m). */
 double tirenv_nn_road_baseline(const tirenv_nn_road *r, double x);
-/* The obstacles, sorted by c; tirenv_nn_road_get_info(r).obstacles of them (owned by r), their
+/* The obstacles, sorted by c; tirenv_nn_road_info_of(r).obstacles of them (owned by r), their
  * reach at the current contact length (both getters bring every obstacle to it: O(obstacles)). */
 const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r);
-tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r);
+tirenv_nn_road_info tirenv_nn_road_info_of(const tirenv_nn_road *r);
 
 TIRENV_END_DECLS
 #endif

@@ -91,7 +91,7 @@ class NetworkRoad:
         self._r = ffi.gc(out[0], lib.tirenv_nn_road_free)
         self.profile = profile
         self._lock = threading.Lock()
-        info = lib.tirenv_nn_road_get_info(self._r)
+        info = lib.tirenv_nn_road_info_of(self._r)
         self.obstacles = info.obstacles
         self.outside_training = {"height_below": info.height_below,
                                  "height_above": info.height_above,

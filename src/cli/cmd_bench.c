@@ -420,7 +420,7 @@ static int bench_road_nn(const tirenv_tire *tire, const tirenv_profile *road, si
         const double t = cli_wall_seconds() - t0;
         t_first = rep == 0 ? t : t_first;
         t_build = fmin(t_build, t);
-        info = tirenv_nn_road_get_info(r);
+        info = tirenv_nn_road_info_of(r);
         t0 = cli_wall_seconds();
         status = tirenv_nn_road_eval(r, n, x, h, slope, diag);
         t_eval = fmin(t_eval, cli_wall_seconds() - t0);
@@ -488,7 +488,7 @@ static void bench_nn_batch(tirenv_nn *nn, long repeat)
         cli_bench_say("nn batch: skipped, out of memory\n");
     } else {
         double lo[4], hi[4];
-        tirenv_nn_get_input_range(nn, lo, hi);
+        tirenv_nn_input_range(nn, lo, hi);
         unsigned long long state = 0x9e3779b97f4a7c15ull;
         for (size_t k = 0; k < 4 * N_IN; ++k) {
             state = state * 6364136223846793005ull + 1442695040888963407ull;

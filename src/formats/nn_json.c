@@ -57,12 +57,12 @@ static uint64_t fnv_doubles(uint64_t h, size_t n, const double v[])
 
 uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, int version)
 {
-    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
     const size_t n_in = tirenv_nn_n_inputs(nn);
     double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
         hi[TIRENV_NN_MAX_WIDTH], out[2];
-    tirenv_nn_get_scaling(nn, mean, std, &out[0], &out[1]);
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_scaling(nn, mean, std, &out[0], &out[1]);
+    tirenv_nn_input_range(nn, lo, hi);
     uint64_t h = fnv_u64(TIRENV_FNV1A64_OFFSET, t->n_layers);
     for (size_t l = 0; l < t->n_layers; ++l)
         h = fnv_u64(h, t->size[l]);
@@ -76,8 +76,8 @@ uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, int version)
         return h;
     tirenv_nn_input_form input;
     tirenv_nn_target_form target;
-    tirenv_nn_get_form(nn, &input, &target);
-    const double a = tirenv_nn_get_even_width(nn);
+    tirenv_nn_form(nn, &input, &target);
+    const double a = tirenv_nn_even_width(nn);
     h = fnv_u64(h, tirenv_nn_n_members(nn));
     h = fnv_u64(h, (uint64_t)input);
     h = fnv_u64(h, (uint64_t)target);
@@ -353,7 +353,7 @@ static int read_inputs(const rctx *c, const json_t *root, size_t n_in)
 static int read_layers(const rctx *c, const json_t *layers, const char *prefix,
                        const tirenv_nn *nn, double *w)
 {
-    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
     int status;
     if (json_array_size(layers) != t->n_layers - 1)
         return bad(c, prefix, "%zu layers of weights; the topology needs %zu",
@@ -482,9 +482,9 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     json_t *t = json_object_get(root, "training");
     memset(rec, 0, sizeof *rec);
     rec->settings = tirenv_train_paper(NULL);
-    rec->settings.topology = *tirenv_nn_get_topology(nn);
-    tirenv_nn_get_form(nn, &rec->settings.input, &rec->settings.target);
-    rec->settings.even_width = tirenv_nn_get_even_width(nn);
+    rec->settings.topology = *tirenv_nn_topology_of(nn);
+    tirenv_nn_form(nn, &rec->settings.input, &rec->settings.target);
+    rec->settings.even_width = tirenv_nn_even_width(nn);
     rec->report.members = tirenv_nn_n_members(nn);
     if (!t)
         return TIRENV_OK;  /* a network without its training record: allowed */

@@ -137,13 +137,13 @@ static json_t *training_json(wctx *c, const tirenv_train_record *rec)
 
 static json_t *nn_json(wctx *c, const tirenv_nn *nn)
 {
-    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
     const size_t n_in = tirenv_nn_n_inputs(nn);
     const double *w = tirenv_nn_weights_const(nn);
     double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], lo[TIRENV_NN_MAX_WIDTH],
         hi[TIRENV_NN_MAX_WIDTH], out_mean, out_std;
-    tirenv_nn_get_scaling(nn, mean, std, &out_mean, &out_std);
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_scaling(nn, mean, std, &out_mean, &out_std);
+    tirenv_nn_input_range(nn, lo, hi);
     json_t *root = json_object();
     if (!root) {
         c->failed = 1;
@@ -172,9 +172,9 @@ static json_t *nn_json(wctx *c, const tirenv_nn *nn)
     }
     tirenv_nn_input_form input;
     tirenv_nn_target_form target;
-    tirenv_nn_get_form(nn, &input, &target);
+    tirenv_nn_form(nn, &input, &target);
     put(c, root, "input_form", json_string(tirenv_nn_input_form_name(input)));
-    put(c, root, "even_width", json_real(tirenv_nn_get_even_width(nn)));
+    put(c, root, "even_width", json_real(tirenv_nn_even_width(nn)));
     put(c, root, "target", json_string(tirenv_nn_target_form_name(target)));
     json_t *sc = put(c, root, "scaling", json_object());
     if (sc) {
@@ -226,7 +226,7 @@ static int check_finite(const tirenv_nn *nn, const tirenv_train_record *rec, tir
     const size_t n_in = tirenv_nn_n_inputs(nn), p = tirenv_nn_n_weights(nn);
     const double *w = tirenv_nn_weights_const(nn);
     double lo[TIRENV_NN_MAX_WIDTH], hi[TIRENV_NN_MAX_WIDTH];
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_input_range(nn, lo, hi);
     for (size_t k = 0; k < p; ++k)
         if (!isfinite(w[k]))
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "layers",

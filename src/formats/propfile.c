@@ -1,10 +1,10 @@
 /* The property-file engine: the .tir syntax ([SECTION]s of KEY = value, '$' and '!'
- * comments) read, overridden and written for any struct described by a key table.
+ * comments) read and overridden for any struct described by a key table; propfile_write.c
+ * writes it.
  * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/propfile.h"
+#include "formats/propfile_impl.h"
 #include "io/text_line.h"
-
-#include "tirenv/outfile.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -15,8 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/types.h>
-#include <unistd.h>
 
 typedef tirenv_propfile__key pf_key;
 typedef tirenv_propfile__section pf_section;
@@ -126,8 +124,8 @@ static const pf_section *pf_find_section(const pf_schema *s, const char *name)
 /* The index of the first matching key in s->keys, or s->n_keys. section NULL matches any
  * section; settable leaves out the [UNITS] keys (MASS is both a unit and a vehicle key).
  * *matches, if not NULL, counts the keys that match. */
-static size_t pf_find_key(const pf_schema *s, const char *section, const char *key,
-                          int settable, size_t *matches)
+size_t tirenv_propfile__find_key(const pf_schema *s, const char *section, const char *key,
+                                 int settable, size_t *matches)
 {
     size_t first = s->n_keys, count = 0;
     for (size_t i = 0; i < s->n_keys; i++) {
@@ -150,14 +148,15 @@ static size_t pf_find_field(const pf_schema *s, const char *field)
     snprintf(buf, sizeof buf, "%s", field);
     char *dot = strchr(buf, '.');
     if (!dot)
-        return pf_find_key(s, NULL, buf, 1, NULL);
+        return tirenv_propfile__find_key(s, NULL, buf, 1, NULL);
     *dot = '\0';
-    return pf_find_key(s, buf, dot + 1, 1, NULL);
+    return tirenv_propfile__find_key(s, buf, dot + 1, 1, NULL);
 }
 
 /* "A, B, C": the keys of one section, or every settable key (each name once) if section is
  * NULL. */
-static const char *pf_key_list(const pf_schema *s, const char *section, char *buf, size_t n)
+const char *tirenv_propfile__key_list(const pf_schema *s, const char *section, char *buf,
+                                      size_t n)
 {
     size_t k = 0;
     buf[0] = '\0';
@@ -165,7 +164,7 @@ static const char *pf_key_list(const pf_schema *s, const char *section, char *bu
         const pf_key *e = &s->keys[i];
         if (section ? strcmp(e->section, section) != 0 : e->kind == TIRENV_PROPFILE_UNIT)
             continue;
-        if (!section && pf_find_key(s, NULL, e->key, 1, NULL) != i)
+        if (!section && tirenv_propfile__find_key(s, NULL, e->key, 1, NULL) != i)
             continue; /* listed already, from an earlier section */
         const int r = snprintf(buf + k, n - k, "%s%s", k ? ", " : "", e->key);
         k += r > 0 ? (size_t)r : 0;
@@ -361,10 +360,10 @@ static int pf_key_line(const pf_schema *s, const pf_ctx *c, char *text, const pf
     char *value = tirenv_propfile__trim(eq + 1);
     if (!*key)
         return pf_fail(c, eq, "", "missing key before '='; expected KEY = value");
-    const size_t i = pf_find_key(s, sec->name, key, 0, NULL);
+    const size_t i = tirenv_propfile__find_key(s, sec->name, key, 0, NULL);
     if (i == s->n_keys) {
         /* A key this format reads elsewhere would be skipped here without a word. */
-        const size_t other = pf_find_key(s, NULL, key, 1, NULL);
+        const size_t other = tirenv_propfile__find_key(s, NULL, key, 1, NULL);
         if (other < s->n_keys)
             return pf_fail(c, key, s->keys[other].key, "key of [%s] in [%s]; expected it in "
                            "[%s], where it is read", s->keys[other].section, sec->name,
@@ -373,7 +372,7 @@ static int pf_key_line(const pf_schema *s, const pf_ctx *c, char *text, const pf
             return TIRENV_OK;
         char keys[256];
         return pf_fail(c, key, key, "unknown key in [%s]; expected one of %s", sec->name,
-                       pf_key_list(s, sec->name, keys, sizeof keys));
+                       tirenv_propfile__key_list(s, sec->name, keys, sizeof keys));
     }
     if (seen[i])
         return pf_fail(c, key, s->keys[i].key, "duplicate key (first set on line %zu); "
@@ -546,12 +545,12 @@ static int pf_set_buf(const pf_schema *s, void *obj, char *buf, const char *assi
         key = dot + 1;
     }
     size_t matches = 0;
-    const size_t i = pf_find_key(s, section, key, 1, &matches);
+    const size_t i = tirenv_propfile__find_key(s, section, key, 1, &matches);
     if (i == s->n_keys) {
         char keys[448]; /* every settable key: about 400 characters for the .tir */
         return pf_fail(&c, NULL, key, "unknown key%s%s; expected one of %s",
                        section ? " in section " : "", section ? section : "",
-                       pf_key_list(s, NULL, keys, sizeof keys));
+                       tirenv_propfile__key_list(s, NULL, keys, sizeof keys));
     }
     if (matches > 1) {
         char list[256];
@@ -599,18 +598,6 @@ int tirenv_propfile__set(const pf_schema *s, void *obj, const char *assignment,
     return status;
 }
 
-/* The shortest "%.*g" that reads back to the same double. Precision 17 always does, but
- * 0.68 then comes out as 0.68000000000000005, which a reader would take for a bug. */
-static void pf_format_real(char *buf, size_t n, double v)
-{
-    for (int prec = 1; prec < 17; prec++) {
-        snprintf(buf, n, "%.*g", prec, v);
-        if (strtod(buf, NULL) == v)
-            return;
-    }
-    snprintf(buf, n, "%.17g", v);
-}
-
 const char *tirenv_propfile__key_at(const pf_schema *s, size_t i, const char **section)
 {
     for (size_t k = 0; k < s->n_keys; k++) {
@@ -622,188 +609,4 @@ const char *tirenv_propfile__key_at(const pf_schema *s, size_t i, const char **s
         return e->key;
     }
     return NULL;
-}
-
-int tirenv_propfile__get(const pf_schema *s, const void *obj, const char *field, char *buf,
-                         size_t n, tirenv_propfile__kind *kind, tirenv_diag *diag)
-{
-    char name[sizeof ((tirenv_diag *)NULL)->field], list[1024];
-    snprintf(name, sizeof name, "%s", field ? field : "");
-    char *dot = strchr(name, '.');
-    size_t matches = 0, i;
-    if (dot) {
-        *dot = '\0';
-        i = pf_find_key(s, name, dot + 1, 1, &matches);
-        *dot = '.';
-    } else {
-        i = pf_find_key(s, NULL, name, 1, &matches);
-    }
-    if (i == s->n_keys)
-        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "no such key; expected one of "
-                            "%s", pf_key_list(s, NULL, list, sizeof list));
-    if (matches > 1)
-        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "the key is in %zu sections: "
-                            "name it as SECTION.KEY", matches);
-    const pf_key *e = &s->keys[i];
-    const unsigned char *at = (const unsigned char *)obj + e->offset;
-    char value[1100];
-    switch (e->kind) {
-    case TIRENV_PROPFILE_REAL: {
-        double v;
-        memcpy(&v, at, sizeof v);
-        pf_format_real(value, sizeof value, v);
-        break;
-    }
-    case TIRENV_PROPFILE_COUNT: {
-        size_t v;
-        memcpy(&v, at, sizeof v);
-        snprintf(value, sizeof value, "%zu", v);
-        break;
-    }
-    case TIRENV_PROPFILE_NAME: {
-        int v;
-        memcpy(&v, at, sizeof v);
-        const int known = v >= 0 && v < (int)(sizeof e->names / sizeof e->names[0]) &&
-                          e->names[v];
-        snprintf(value, sizeof value, "%s", known ? e->names[v] : "");
-        break;
-    }
-    default: /* PATH (UNIT keys are not found as settable) */
-        snprintf(value, sizeof value, "%.*s", (int)(e->size ? e->size - 1 : 0),
-                 (const char *)at);
-        break;
-    }
-    if (!buf || strlen(value) >= n)
-        return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "the value takes %zu bytes; "
-                            "the buffer holds %zu", strlen(value) + 1, buf ? n : 0);
-    memcpy(buf, value, strlen(value) + 1);
-    if (kind)
-        *kind = e->kind;
-    return TIRENV_OK;
-}
-
-/* The name a write error gives a key: SECTION.KEY if the key is in several sections. */
-static const char *pf_key_name(const pf_schema *s, const pf_key *e, char *buf, size_t n)
-{
-    size_t matches = 0;
-    pf_find_key(s, NULL, e->key, 1, &matches);
-    if (matches > 1)
-        snprintf(buf, n, "%s.%s", e->section, e->key);
-    else
-        snprintf(buf, n, "%s", e->key);
-    return buf;
-}
-
-/* A path cannot hold a quote: the format has no escapes. cwd is the prefix that makes a
- * relative path absolute, "" if it is to stay relative. */
-static int pf_check_paths(const pf_schema *s, const void *obj, const char *path, char *cwd,
-                          size_t n, tirenv_diag *diag)
-{
-    cwd[0] = '\0';
-    for (size_t i = 0; i < s->n_keys; i++) {
-        const pf_key *e = &s->keys[i];
-        if (e->kind != TIRENV_PROPFILE_PATH)
-            continue;
-        const char *value = (const char *)obj + e->offset;
-        char name[128];
-        if (!memchr(value, '\0', e->size))
-            return tirenv_error(diag, TIRENV_EINVAL, path, 0, pf_key_name(s, e, name, sizeof name),
-                                "path is not terminated within its %zu bytes", e->size);
-        if (strpbrk(value, "'\n\r"))
-            return tirenv_error(diag, TIRENV_EINVAL, path, 0, pf_key_name(s, e, name, sizeof name),
-                                "path '%.60s' holds a quote or a line break, which the file "
-                                "format cannot hold", value);
-        if (value[0] && value[0] != '/' && strchr(path, '/') && !cwd[0]) {
-            if (!getcwd(cwd, n - 1))
-                return tirenv_error(diag, TIRENV_EIO, path, 0,
-                                    pf_key_name(s, e, name, sizeof name),
-                                    "cannot find the working directory to write the relative "
-                                    "path '%.60s' as an absolute one: %s", value,
-                                    strerror(errno));
-            strcat(cwd, "/");
-        }
-    }
-    return TIRENV_OK;
-}
-
-static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *cwd,
-                     const char *header)
-{
-    if (header)
-        fputs(header, fp);
-    else if (s->preamble)
-        s->preamble(fp);
-    for (size_t k = 0; k < s->n_sections; k++) {
-        const char *name = s->sections[k].name;
-        fprintf(fp, "$----------------------------------------------------------------%s\n"
-                    "[%s]\n", name, name);
-        for (size_t i = 0; i < s->n_keys; i++) {
-            const pf_key *e = &s->keys[i];
-            if (strcmp(e->section, name) != 0)
-                continue;
-            const unsigned char *field = (const unsigned char *)obj + e->offset;
-            char value[40];
-            switch (e->kind) {
-            case TIRENV_PROPFILE_REAL: {
-                double v;
-                memcpy(&v, field, sizeof v);
-                pf_format_real(value, sizeof value, v);
-                break;
-            }
-            case TIRENV_PROPFILE_COUNT: {
-                size_t v;
-                memcpy(&v, field, sizeof v);
-                snprintf(value, sizeof value, "%zu", v);
-                break;
-            }
-            case TIRENV_PROPFILE_NAME: {
-                int v;
-                memcpy(&v, field, sizeof v);
-                if (v >= 0 && v < (int)(sizeof e->names / sizeof e->names[0]) && e->names[v])
-                    snprintf(value, sizeof value, "'%s'", e->names[v]);
-                else
-                    snprintf(value, sizeof value, "%d", v); /* unreadable, as it should be */
-                break;
-            }
-            case TIRENV_PROPFILE_UNIT:
-                snprintf(value, sizeof value, "'%s'", e->names[0]);
-                break;
-            case TIRENV_PROPFILE_PATH: {
-                /* Too long for value[]: printed here, padded as %-22s would. */
-                const char *p = (const char *)field;
-                const char *prefix = p[0] && p[0] != '/' ? cwd : "";
-                fprintf(fp, "%-24s = ", e->key);
-                const int w = fprintf(fp, "'%s%s'", prefix, p);
-                fprintf(fp, "%*s $ %s\n", w < 22 ? 22 - w : 0, "", e->comment);
-                continue;
-            }
-            }
-            fprintf(fp, "%-24s = %-22s $ %s\n", e->key, value, e->comment);
-        }
-    }
-}
-
-/* A struct that fails the check is refused: its file could not be read back. */
-int tirenv_propfile__write(const pf_schema *s, const char *path, const void *obj,
-                           tirenv_diag *diag)
-{
-    return tirenv_propfile__write_headed(s, path, obj, NULL, diag);
-}
-
-int tirenv_propfile__write_headed(const pf_schema *s, const char *path, const void *obj,
-                                  const char *header, tirenv_diag *diag)
-{
-    int status = s->check ? s->check(obj, diag) : TIRENV_OK;
-    if (status != TIRENV_OK)
-        return status;
-    char cwd[4096];
-    status = pf_check_paths(s, obj, path, cwd, sizeof cwd, diag);
-    if (status != TIRENV_OK)
-        return status;
-    tirenv_outfile *f;
-    status = tirenv_outfile_open(&f, path, diag);
-    if (status != TIRENV_OK)
-        return status;
-    pf_print(s, tirenv_outfile_stream(f), obj, cwd, header);
-    return tirenv_outfile_commit(f, diag);
 }

@@ -155,8 +155,9 @@ typedef struct {
     tirenv_cam__track front, rear; /* where each cam was */
 } cam_state;
 
-static void *cam_alloc(const tirenv_tire *tire)
+static void *cam_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
+    (void)type;
     const double R0 = tire->springs.R0;
     const tirenv_cam_shape shape = {.a_e = tire->cam.length * R0,
                                     .b_e = tire->cam.height * R0,
@@ -326,9 +327,10 @@ static int cam_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 
 /* The two cams sit l_s/2 either side of x and each reads a_e either side of its own centre.
  * Before a load is set, l_s = ELLIPS_SHIFT*2a is bounded with a <= R0. */
-static double cam_reach(const void *state)
+static double cam_reach(const void *state, const tirenv_tire *tire)
 {
     const cam_state *st = state;
+    (void)tire;  /* the state's own copy */
     const double R0 = st->tire.springs.R0;
     const double half_base = st->l_s > 0 ? 0.5 * st->l_s : st->tire.cam.shift * R0;
     return st->tire.cam.length * R0 + half_base;
@@ -377,29 +379,30 @@ static const tirenv_model_param cam_params[] = {
     {"ELLIPS_ORDER", offsetof(tirenv_tire, cam.order), 1},
 };
 
-static const tirenv_model_type cam_type = {
-    .name = "cam",
-    .summary = "MF-Swift's tandem elliptical cam",
-    .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS,
-    .params = cam_params,
-    .n_params = sizeof cam_params / sizeof cam_params[0],
-    .n_params_max = sizeof cam_params / sizeof cam_params[0],
+static const tirenv_model_ops cam_ops = {
     .alloc = cam_alloc,
     .free = cam_free,
     .flat = cam_flat,
     .load_for_contact_length = cam_load_for_contact_length,
     .set = cam_set,
-    .eval = cam_eval,
-    .envelope = NULL,
-    .set_profile = NULL,
-    .reach = cam_reach,
-    .set_network = NULL,
-    .warnings = NULL,
-    .note = NULL,
-    .tracks = TIRENV_TRACKS_MEAN,
+    .set_profile = cam_set,
     .set_load = cam_set_load,
+    .eval = cam_eval,
+    .reach = cam_reach,
     .state_size = cam_state_size,
     .state_save = cam_state_save,
     .state_restore = cam_state_restore,
+};
+
+enum { CAM_PARAMS = sizeof cam_params / sizeof cam_params[0] };
+static const tirenv_model_fit cam_fit = {cam_params, CAM_PARAMS, CAM_PARAMS};
+
+static const tirenv_model_type cam_type = {
+    .name = "cam",
+    .summary = "MF-Swift's tandem elliptical cam",
+    .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS,
+    .tracks = TIRENV_TRACKS_MEAN,
+    .ops = &cam_ops,
+    .fit = &cam_fit,
 };
 const tirenv_model_type *tirenv_model_cam = &cam_type;

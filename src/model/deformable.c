@@ -14,7 +14,8 @@
 #include "model/rigid_impl.h"
 
 typedef struct {
-    const tirenv_deformable_ops *ops;
+    const tirenv_model_type *type;  /* for its name in messages */
+    const tirenv_deformable *def;   /* the type's deformable record */
     void *elem;                  /* the model's own workspace, on the profile */
     void *flat_elem;             /* another, on flat ground: a load change solves the flat
                                   * equilibrium there without disturbing the first's warm
@@ -54,47 +55,50 @@ typedef struct {
 static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
 {
     const force_ctx *c = ctx;
-    return c->st->ops->forces(c->st->elem, c->prof, c->x, z, out, diag);
+    return c->st->def->forces(c->st->elem, c->prof, c->x, z, out, diag);
 }
 
 /* The same on flat ground, with the flat-ground workspace. */
 static int flat_force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
 {
     const force_ctx *c = ctx;
-    return c->st->ops->forces(c->st->flat_elem, c->st->flat, 0, z, out, diag);
+    return c->st->def->forces(c->st->flat_elem, c->st->flat, 0, z, out, diag);
 }
 
-void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_ops *ops)
+static void deformable_free(void *state)
 {
+    deformable_state *st = state;
+    if (st->elem)
+        st->def->free(st->elem);
+    if (st->flat_elem)
+        st->def->free(st->flat_elem);
+    tirenv_eq__solver_free(st->solver);
+    tirenv_profile_free(st->flat);
+    free(st);
+}
+
+static void *deformable_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
+{
+    const tirenv_deformable *def = type->deformable;
     deformable_state *st = calloc(1, sizeof *st);
     const double zero = 0;
     if (!st)
         return NULL;
-    st->ops = ops;
+    st->type = type;
+    st->def = def;
     st->tire = *tire;
-    st->elem = ops->alloc(tire);
-    st->flat_elem = ops->alloc(tire);
+    st->elem = def->alloc(tire);
+    st->flat_elem = def->alloc(tire);
     st->solver = tirenv_eq__solver_alloc(tirenv_eq__solver_type_of(tire->eq.method));
-    st->shift_invariant = !ops->shift_invariant || ops->shift_invariant(tire);
+    st->shift_invariant = def->shift_invariant(tire);
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
     if (!st->elem || !st->flat_elem || !st->solver || !st->flat) {
-        tirenv_deformable_free(st);
+        deformable_free(st);
         return NULL;
     }
     return st;
 }
 
-void tirenv_deformable_free(void *state)
-{
-    deformable_state *st = state;
-    if (st->elem)
-        st->ops->free(st->elem);
-    if (st->flat_elem)
-        st->ops->free(st->flat_elem);
-    tirenv_eq__solver_free(st->solver);
-    tirenv_profile_free(st->flat);
-    free(st);
-}
 
 /* The valid range, once per model: the load and contact length at the lowest centre height
  * the model's physics allows. Without a limit of the model's own, the centre at the ground
@@ -106,9 +110,8 @@ static int valid_range(deformable_state *st, tirenv_diag *diag)
     const double R0 = st->tire.springs.R0;
     double z = 0;
     st->range_why[0] = '\0';
-    int status = st->ops->lowest_z ? st->ops->lowest_z(st->flat_elem, st->flat, &z, st->range_why,
-                                                       sizeof st->range_why, diag)
-                                   : TIRENV_OK;
+    int status = st->def->lowest_z(st->flat_elem, st->flat, &z, st->range_why,
+                                   sizeof st->range_why, diag);
     if (status)
         return status;
     st->z_min = z;
@@ -116,8 +119,8 @@ static int valid_range(deformable_state *st, tirenv_diag *diag)
     st->l_max = 2 * R0;
     if (z > 0) {
         tirenv_eq_point p;
-        if ((status = st->ops->forces(st->flat_elem, st->flat, 0, z, &p, diag)) ||
-            (status = st->ops->contact_length(st->flat_elem, st->flat, z, &st->l_max, diag)))
+        if ((status = st->def->forces(st->flat_elem, st->flat, 0, z, &p, diag)) ||
+            (status = st->def->contact_length(st->flat_elem, st->flat, z, &st->l_max, diag)))
             return status;
         st->G_max = p.F;
     }
@@ -153,7 +156,7 @@ static int solve_flat(deformable_state *st, double load, double z0, tirenv_eq_po
 }
 
 /* TIRENV_ERANGE if the load is beyond the valid range (docs/models.md section 1.3): for a
- * first load (tirenv_deformable_flat) and a new one (tirenv_deformable_set_load) alike. */
+ * first load (deformable_flat) and a new one (deformable_set_load) alike. */
 static int load_in_range(deformable_state *st, double load, tirenv_diag *diag)
 {
     int status = valid_range(st, diag);
@@ -162,12 +165,12 @@ static int load_in_range(deformable_state *st, double load, tirenv_diag *diag)
     if (load > st->G_max)
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
                             "%g N is beyond the %s model's valid range, up to %.6g N (centre "
-                            "height %.4g m, contact length %.4g m), %s", load, st->ops->name,
+                            "height %.4g m, contact length %.4g m), %s", load, st->type->name,
                             st->G_max, st->z_min, st->l_max, st->range_why);
     return TIRENV_OK;
 }
 
-int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
+static int deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag)
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
@@ -178,7 +181,7 @@ int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
     if ((status = solve_flat(st, load, R0, &p, diag)))
         return status;
     double l_c;
-    if ((status = st->ops->contact_length(st->flat_elem, st->flat, p.z, &l_c, diag)))
+    if ((status = st->def->contact_length(st->flat_elem, st->flat, p.z, &l_c, diag)))
         return on_flat_ground(load, status, diag);
     st->have_flat_point = 1;
     st->flat_load = load;
@@ -194,7 +197,7 @@ int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
 }
 
 /* The model's own contact-length definition gives z_flat; the load is one force there. */
-int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *load,
+static int deformable_load_for_contact_length(void *state, double l_c, double *load,
                                               tirenv_diag *diag)
 {
     deformable_state *st = state;
@@ -208,19 +211,19 @@ int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *l
     if (l_c > st->l_max)
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
                             "%g m is beyond the %s model's valid range, up to %.4g m (load "
-                            "%.6g N, centre height %.4g m), %s", l_c, st->ops->name, st->l_max, st->G_max,
+                            "%.6g N, centre height %.4g m), %s", l_c, st->type->name, st->l_max, st->G_max,
                             st->z_min, st->range_why);
     double z;
-    status = st->ops->z_for_contact_length(st->flat_elem, st->flat, l_c, st->z_min, &z, diag);
+    status = st->def->z_for_contact_length(st->flat_elem, st->flat, l_c, st->z_min, &z, diag);
     tirenv_eq_point p;
     if (!status)
-        status = st->ops->forces(st->flat_elem, st->flat, 0, z, &p, diag);
+        status = st->def->forces(st->flat_elem, st->flat, 0, z, &p, diag);
     if (!status)
         *load = p.F;
     return status;
 }
 
-int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
+static int deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
                           tirenv_diag *diag)
 {
     deformable_state *st = state;
@@ -232,7 +235,7 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
     tirenv_eq_point flat = st->flat_point;
     int status = TIRENV_OK;
     if (!(st->have_flat_point && st->flat_load == load && flat.z == z_flat))
-        status = st->ops->forces(st->flat_elem, st->flat, 0, z_flat, &flat, diag);
+        status = st->def->forces(st->flat_elem, st->flat, 0, z_flat, &flat, diag);
     if (status)
         return status;
     flat.z = z_flat;
@@ -245,7 +248,7 @@ int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, dou
  * with a load that changes by a few per cent, converges in two force evaluations where a
  * start from R0 takes five or more; the profile is not looked at. The warm start moves with
  * the flat-ground height, its best guess of how the tire sinks over any ground. */
-int tirenv_deformable_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
+static int deformable_set_load(void *state, double load, double *z_flat, tirenv_diag *diag)
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
@@ -267,22 +270,23 @@ int tirenv_deformable_set_load(void *state, double load, double *z_flat, tirenv_
 }
 
 /* What the next evaluations depend on: the load and its flat-ground point, the warm start,
- * and the contact states both workspaces start their next solves from (the model's own,
- * ops->state_*). The rays' caches and the bracket's search hint change no bit of a result. */
+ * and the contact states both workspaces start their next solves from (the model's own, its
+ * deformable record's state_*). The rays' caches and the bracket's search hint change no bit
+ * of a result. */
 typedef struct {
     double G, z_flat, z_prev;
     tirenv_eq_point flat_at;
     int have_prev;
 } deformable_saved;
 
-size_t tirenv_deformable_state_size(const void *state)
+static size_t deformable_state_size(const void *state)
 {
     const deformable_state *st = state;
-    return sizeof(deformable_saved) + st->ops->state_size(st->elem) +
-           st->ops->state_size(st->flat_elem);
+    return sizeof(deformable_saved) + st->def->state_size(st->elem) +
+           st->def->state_size(st->flat_elem);
 }
 
-void tirenv_deformable_state_save(const void *state, unsigned char *buf)
+static void deformable_state_save(const void *state, unsigned char *buf)
 {
     const deformable_state *st = state;
     deformable_saved sv;
@@ -293,11 +297,11 @@ void tirenv_deformable_state_save(const void *state, unsigned char *buf)
     sv.flat_at = st->flat_at;
     sv.have_prev = st->have_prev;
     buf = tirenv_model__put(buf, &sv, sizeof sv);
-    st->ops->state_save(st->elem, buf);
-    st->ops->state_save(st->flat_elem, buf + st->ops->state_size(st->elem));
+    st->def->state_save(st->elem, buf);
+    st->def->state_save(st->flat_elem, buf + st->def->state_size(st->elem));
 }
 
-int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+static int deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
 {
     deformable_state *st = state;
     deformable_saved sv;
@@ -305,33 +309,38 @@ int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tiren
     if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
-                            st->ops->name, sv.G, sv.z_flat);
+                            st->type->name, sv.G, sv.z_flat);
     st->G = sv.G;
     st->z_flat = sv.z_flat;
     st->z_prev = sv.z_prev;
     st->flat_at = sv.flat_at;
     st->have_prev = sv.have_prev;
-    st->ops->state_restore(st->elem, buf);
-    st->ops->state_restore(st->flat_elem, buf + st->ops->state_size(st->elem));
+    st->def->state_restore(st->elem, buf);
+    st->def->state_restore(st->flat_elem, buf + st->def->state_size(st->elem));
     return TIRENV_OK;
 }
 
 /* The next window of the same ground: the equilibrium of the last position still holds, so the
  * warm start carries over and a stream gives the same iterations as one whole profile. */
-void tirenv_deformable_set_profile(void *state, const tirenv_profile *p)
+static int deformable_set_profile(void *state, const tirenv_profile *p, double load,
+                                  double z_flat, tirenv_diag *diag)
 {
     deformable_state *st = state;
+    (void)load;
+    (void)z_flat;
+    (void)diag;
     st->prof = p;
+    return TIRENV_OK;
 }
 
 int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *out,
                              tirenv_diag *diag)
 {
     deformable_state *st = state;
-    return st->ops->forces(st->elem, st->prof, x, z, out, diag);
+    return st->def->forces(st->elem, st->prof, x, z, out, diag);
 }
 
-int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
+static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
@@ -355,14 +364,11 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
      * model may know more cheaply than the rigid disc's height. A cold start (z_hi less the
      * deflection), the plain secant of eq. 2 (no safeguard: two starts above contact break it
      * down) and Brent (its iterations grow with the bracket) keep the disc's, the tightest. */
-    const int cheap =
-        st->ops->bracket && st->have_prev && st->tire.eq.method == TIRENV_EQ_NEWTON;
     double z_lo, z_hi;
-    if (cheap) {
-        st->ops->bracket(st->elem, st->prof, x, &z_lo, &z_hi);
-    } else {
+    const int cheap = st->have_prev && st->tire.eq.method == TIRENV_EQ_NEWTON &&
+                      st->def->bracket(st->elem, st->prof, x, &z_lo, &z_hi);
+    if (!cheap)
         tirenv_rigid__bracket(1, &st->prof, R0, x, &st->rigid_hint, &z_lo, &z_hi);
-    }
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
@@ -382,3 +388,35 @@ int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     tirenv_model__eq_point(&res.point, st->z_flat, out);
     return TIRENV_OK;
 }
+
+int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
+                                   double *z_hi)
+{
+    (void)elem;
+    (void)p;
+    (void)x;
+    (void)z_lo;
+    (void)z_hi;
+    return 0;
+}
+
+int tirenv_deformable_invariant(const tirenv_tire *tire)
+{
+    (void)tire;
+    return 1;
+}
+
+const tirenv_model_ops tirenv_deformable_ops = {
+    .alloc = deformable_alloc,
+    .free = deformable_free,
+    .flat = deformable_flat,
+    .load_for_contact_length = deformable_load_for_contact_length,
+    .set = deformable_set,
+    .set_profile = deformable_set_profile,
+    .set_load = deformable_set_load,
+    .eval = deformable_eval,
+    .reach = tirenv_model__default_reach,
+    .state_size = deformable_state_size,
+    .state_save = deformable_state_save,
+    .state_restore = deformable_state_restore,
+};

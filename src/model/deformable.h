@@ -8,8 +8,12 @@
 #include "core/equilibrium.h"
 #include "model/model_impl.h"
 
-typedef struct {
-    const char *name;  /* the model type's, for messages */
+/* What a deformable model is besides its type record: its own workspace with the hub-force
+ * function and the flat-ground contact length, the end of its valid range, and the contact
+ * state it carries. Every member set (the defaults below where a model has nothing of its
+ * own); the type record points here (tirenv_model_type's deformable) and names
+ * tirenv_deformable_ops as its functions. */
+struct tirenv_deformable {
     void *(*alloc)(const tirenv_tire *tire);
     void (*free)(void *elem);
     /* Hub forces with the centre at (x, z) (m): F_z (N), dF_z/dz (N/m), F_x (N) and the
@@ -24,44 +28,39 @@ typedef struct {
      * length is the longest. */
     int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double z_lo,
                                 double *z, tirenv_diag *diag);
-    /* Optional: the lowest flat-ground centre height z (m) of the model's valid range and why
-     * the range ends there (a phrase for messages, into why[n]); z = 0 and "" when it ends
-     * only where the centre meets the ground. NULL means that. docs/models.md section 1.3. */
+    /* The lowest flat-ground centre height z (m) of the model's valid range and why the range
+     * ends there (a phrase for messages, into why[n]); z = 0 and "" when it ends only where
+     * the centre meets the ground. docs/models.md section 1.3. */
     int (*lowest_z)(void *elem, const tirenv_profile *flat, double *z, char *why, size_t n,
                     tirenv_diag *diag);
-    /* Optional: the bracket of the equilibrium at x (m): z_lo the ground height under the
-     * centre, z_hi a height from which up nothing of the tire touches the ground, as cheaply
-     * as the model knows them (the springs model has both from the rays' origin). NULL: the
-     * ground height and the rigid disc's height at x, the tightest z_hi for any tire within
-     * its free circle. */
-    void (*bracket)(void *elem, const tirenv_profile *p, double x, double *z_lo,
-                    double *z_hi);
+    /* The bracket of a warm Newton's equilibrium at x (m) where the model knows one more
+     * cheaply than the rigid disc's height (the springs model has it from the rays' origin):
+     * z_lo the ground height under the centre, z_hi a height from which up nothing of the
+     * tire touches the ground; returns 1. tirenv_deformable_no_bracket: returns 0, and the
+     * rigid disc's bracket is taken, the tightest for any tire within its free circle. */
+    int (*bracket)(void *elem, const tirenv_profile *p, double x, double *z_lo, double *z_hi);
     /* Whether the tire looks the same at every x (no lugs turning with it), so that on level
-     * ground the equilibrium is the flat one; NULL means always. */
+     * ground the equilibrium is the flat one; tirenv_deformable_invariant: always. */
     int (*shift_invariant)(const tirenv_tire *tire);
     /* The contact state a workspace starts its next solve from, as bytes (a fixed number for
      * a tire): saved, and restored into a workspace of the same tire. */
     size_t (*state_size)(const void *elem);
     void (*state_save)(const void *elem, unsigned char *buf);
     void (*state_restore)(void *elem, const unsigned char *buf);
-} tirenv_deformable_ops;
+};
 
-/* The model-type functions of model_impl.h for any deformable model; alloc takes the ops. */
-void *tirenv_deformable_alloc(const tirenv_tire *tire, const tirenv_deformable_ops *ops);
-void tirenv_deformable_free(void *state);
-int tirenv_deformable_flat(void *state, double load, tirenv_flat *out, tirenv_diag *diag);
-int tirenv_deformable_load_for_contact_length(void *state, double l_c, double *load,
-                                              tirenv_diag *diag);
-int tirenv_deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
-                          tirenv_diag *diag);
-int tirenv_deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag);
-void tirenv_deformable_set_profile(void *state, const tirenv_profile *p);
-/* The hub forces at (x, z) on the profile set, for the equilibrium over several tracks. */
+/* The functions of every deformable model's type record (deformable.c): the constant-load
+ * equilibrium around the type's deformable record. */
+extern const tirenv_model_ops tirenv_deformable_ops;
+
+/* The defaults of struct tirenv_deformable's bracket and shift_invariant. */
+int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
+                                   double *z_hi);
+int tirenv_deformable_invariant(const tirenv_tire *tire);
+
+/* The hub forces at (x, z) on the profile set of a state of tirenv_deformable_ops, for the
+ * equilibrium over several tracks (tracks.c). */
 int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *out,
                              tirenv_diag *diag);
-int tirenv_deformable_set_load(void *state, double load, double *z_flat, tirenv_diag *diag);
-size_t tirenv_deformable_state_size(const void *state);
-void tirenv_deformable_state_save(const void *state, unsigned char *buf);
-int tirenv_deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag);
 
 #endif

@@ -32,16 +32,22 @@ const tirenv_model_type *tirenv_model_type_find(const char *name)
 
 const char *tirenv_model_type_name(const tirenv_model_type *type) { return type->name; }
 const char *tirenv_model_type_summary(const tirenv_model_type *type) { return type->summary; }
-unsigned tirenv_model_type_flags(const tirenv_model_type *type) { return type->flags; }
+/* The record's own flags and those its sub-records imply. */
+unsigned tirenv_model_type_flags(const tirenv_model_type *type)
+{
+    return type->flags | (type->fit ? TIRENV_MODEL_FITTABLE : 0u) |
+           (type->network ? TIRENV_MODEL_NEEDS_NETWORK : 0u) |
+           (type->deformable ? TIRENV_MODEL_EQUILIBRIUM : 0u);
+}
 
 const tirenv_model_param *tirenv_model_type_params(const tirenv_model_type *type, size_t *n,
                                                    size_t *n_max)
 {
     if (n)
-        *n = type->n_params;
+        *n = type->fit ? type->fit->n : 0;
     if (n_max)
-        *n_max = type->n_params_max;
-    return type->params;
+        *n_max = type->fit ? type->fit->n_max : 0;
+    return type->fit ? type->fit->params : NULL;
 }
 const char *tirenv_model_name(const tirenv_model *m) { return m->type->name; }
 const tirenv_tire *tirenv_model_tire(const tirenv_model *m) { return &m->tire; }
@@ -57,7 +63,7 @@ tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tir
     m->tire = *tire;
     m->tire_print = tirenv_model__tire_print(tire);
     m->load = NAN;
-    m->state = type->alloc(tire);
+    m->state = type->ops->alloc(type, tire);
     if (!m->state) {
         free(m);
         return NULL;
@@ -69,7 +75,7 @@ void tirenv_model_free(tirenv_model *m)
 {
     if (!m)
         return;
-    m->type->free(m->state);
+    m->type->ops->free(m->state);
     tirenv_model__tracks_free(m);
     tirenv_nn_free(m->nn);
     free(m);
@@ -79,14 +85,14 @@ int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double
                              tirenv_diag *diag)
 {
     m->ready = 0;
-    if (!(m->type->flags & TIRENV_MODEL_NEEDS_NETWORK) || !m->type->set_network)
+    if (!m->type->network)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
                             "the %s model evaluates no network", m->type->name);
     if (!nn || !(R0 >= 0 && isfinite(R0)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
                             "expected a network and R0 >= 0 m, got %s and %g",
                             nn ? "a network" : "none", R0);
-    const int status = m->type->set_network(m->state, nn, R0, diag);
+    const int status = m->type->network->set_network(m->state, nn, R0, diag);
     if (status)
         return status;
     /* Kept for the states of further tracks (tirenv_model_set_tracks), which are made later;
@@ -106,7 +112,7 @@ int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
                                  tirenv_diag *diag)
 {
     m->ready = 0;
-    if (!m->type->set_contact_law)
+    if (!m->type->network)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact law",
                             "the %s model takes its contact length from its own flat ground",
                             m->type->name);
@@ -117,7 +123,7 @@ int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
     if (law->n && (status = tirenv_contact_law_check(law, diag)))
         return status;
     m->law = *law;
-    m->type->set_contact_law(m->state, law);
+    m->type->network->set_contact_law(m->state, law);
     /* The other tracks' states knew the old law. */
     tirenv_model__tracks_free(m);
     m->n_tracks = 0;
@@ -126,21 +132,23 @@ int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
 
 void *tirenv_model__track_state(const tirenv_model *m)
 {
-    void *state = m->type->alloc(&m->tire);
+    const tirenv_model_ops *ops = m->type->ops;
+    const tirenv_model_network *net = m->type->network;
+    void *state = ops->alloc(m->type, &m->tire);
     double load;
-    if (state && m->nn && m->type->set_network(state, m->nn, m->nn_R0, NULL) != TIRENV_OK) {
-        m->type->free(state);
+    if (state && m->nn && net->set_network(state, m->nn, m->nn_R0, NULL) != TIRENV_OK) {
+        ops->free(state);
         return NULL;
     }
-    if (state && m->law.n && m->type->set_contact_law)
-        m->type->set_contact_law(state, &m->law);
+    if (state && m->law.n)  /* a law is only ever set on a model with a network */
+        net->set_contact_law(state, &m->law);
     if (state && m->have_l_c &&
-        m->type->load_for_contact_length(state, m->l_c, &load, NULL) != TIRENV_OK) {
-        m->type->free(state);
+        ops->load_for_contact_length(state, m->l_c, &load, NULL) != TIRENV_OK) {
+        ops->free(state);
         return NULL;
     }
-    if (state && m->type->set_extrapolate)
-        m->type->set_extrapolate(state, m->extrapolate);
+    if (state && net)
+        net->set_extrapolate(state, m->extrapolate);
     return state;
 }
 
@@ -149,8 +157,8 @@ void *tirenv_model__track_state(const tirenv_model *m)
 void tirenv_model_set_extrapolate(tirenv_model *m, int allow)
 {
     m->extrapolate = allow != 0;
-    if (m->type->set_extrapolate)
-        m->type->set_extrapolate(m->state, m->extrapolate);
+    if (m->type->network)
+        m->type->network->set_extrapolate(m->state, m->extrapolate);
     tirenv_model__tracks_extrapolate(m);
 }
 
@@ -162,12 +170,12 @@ const tirenv_profile *tirenv_model_profile(const tirenv_model *m)
 
 const char *tirenv_model_warnings(const tirenv_model *m)
 {
-    return m->ready && m->type->warnings ? m->type->warnings(m->state) : "";
+    return m->ready && m->type->network ? m->type->network->warnings(m->state) : "";
 }
 
 const char *tirenv_model_note(const tirenv_model *m)
 {
-    return m->ready && m->type->note ? m->type->note(m->state) : "";
+    return m->ready && m->type->network ? m->type->network->note(m->state) : "";
 }
 
 /* The loads a model takes, wherever a load comes in (flat, set, set_load). */
@@ -183,7 +191,7 @@ static int load_ok(const tirenv_model *m, double load, tirenv_diag *diag)
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag)
 {
     const int status = load_ok(m, load, diag);
-    return status ? status : m->type->flat(m->state, load, out, diag);
+    return status ? status : m->type->ops->flat(m->state, load, out, diag);
 }
 
 /* The network remembers the contact length it was given (model.h): a further track's state is
@@ -191,7 +199,7 @@ int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_dia
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
                                          tirenv_diag *diag)
 {
-    const int status = m->type->load_for_contact_length(m->state, l_c, load, diag);
+    const int status = m->type->ops->load_for_contact_length(m->state, l_c, load, diag);
     if (status)
         return status;
     m->have_l_c = 1;
@@ -228,7 +236,7 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "profile", "expected a profile, got NULL");
     int status = tirenv_model_flat(m, load, &flat, diag);
     if (!status)
-        status = m->type->set(m->state, profile, load, flat.z_flat, diag);
+        status = m->type->ops->set(m->state, profile, load, flat.z_flat, diag);
     if (!status) {
         m->z_top = tirenv_model__profile_top(profile);  /* the same address may hold another profile */
         tirenv_model__took(m, profile, load, flat.z_flat);
@@ -239,7 +247,7 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
     return status;
 }
 
-/* A load change is a new set for a type without its own: the whole profile again. */
+/* The type's own load change on one track; on several, each track's (tracks.c). */
 int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag)
 {
     if (!m->ready)
@@ -251,17 +259,7 @@ int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag)
     if (m->n_tracks > 1)  /* every track's state at the new load */
         return tirenv_model__tracks_set_load(m, load, diag);
     double z_flat;
-    if (m->type->set_load) {
-        status = m->type->set_load(m->state, load, &z_flat, diag);
-    } else {
-        tirenv_flat flat;
-        status = m->type->flat(m->state, load, &flat, diag);
-        z_flat = flat.z_flat;
-        if (!status && (status = m->type->set(m->state, m->profile, load, z_flat, diag))) {
-            m->ready = 0;  /* the type's set failed half-way: nothing is known to hold */
-            m->profile = NULL;
-        }
-    }
+    status = m->type->ops->set_load(m->state, load, &z_flat, diag);
     if (!status)
         tirenv_model__took(m, m->profile, load, z_flat);
     return status;
@@ -285,11 +283,7 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
                             "set with %zu tracks: use tirenv_model_set_track_profiles",
                             m->n_tracks);
     }
-    int status = TIRENV_OK;
-    if (m->type->set_profile)
-        m->type->set_profile(m->state, profile);
-    else
-        status = m->type->set(m->state, profile, m->load, m->z_flat, diag);
+    const int status = m->type->ops->set_profile(m->state, profile, m->load, m->z_flat, diag);
     if (status) {
         m->ready = 0;
         m->profile = NULL;
@@ -300,11 +294,17 @@ int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tir
     return status;
 }
 
-/* 5 % beyond R0 covers the rigid disc, the springs and the ring, which touch the ground only
- * within R0 of the centre's x. */
 double tirenv_model_reach(const tirenv_model *m)
 {
-    return m->type->reach ? m->type->reach(m->state) : TIRENV_MODEL__REACH * m->tire.springs.R0;
+    return m->type->ops->reach(m->state, &m->tire);
+}
+
+/* 5 % beyond R0 covers the rigid disc, the springs and the ring, which touch the ground only
+ * within R0 of the centre's x. */
+double tirenv_model__default_reach(const void *state, const tirenv_tire *tire)
+{
+    (void)state;
+    return TIRENV_MODEL__REACH * tire->springs.R0;
 }
 
 /* Names the position: a failure without its x is useless in a 1,500-point sweep. */
@@ -363,7 +363,7 @@ int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag 
     if (finite_position(x, diag))
         return TIRENV_EINVAL;
     int status = m->n_tracks > 1 ? tirenv_model__tracks_eval(m, x, out, diag)
-                                       : m->type->eval(m->state, x, out, diag);
+                                       : m->type->ops->eval(m->state, x, out, diag);
     out->x = x;
     if (!status)
         status = clears_ground(m, out, diag);
@@ -376,7 +376,7 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
     /* Several tracks, or a type with a batched sweep (the network): the whole sweep, then the
      * hub's check position by position. */
     const int tracks = m->ready && m->n_tracks > 1;
-    if ((tracks || m->type->envelope) && n > 0) {
+    if ((tracks || m->type->network) && n > 0) {
         if (!m->ready) {
             if (failed)
                 *failed = 0;
@@ -391,7 +391,7 @@ int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_po
             return finite_position(x[k], diag);
         }
         int status = tracks ? tirenv_model__tracks_envelope(m, n, x, out, &k, diag)
-                            : m->type->envelope(m->state, n, x, out, &k, diag);
+                            : m->type->network->envelope(m->state, n, x, out, &k, diag);
         if (!status)
             for (k = 0; k < n && !(status = clears_ground(m, &out[k], diag)); ++k)
                 ;

@@ -11,65 +11,89 @@
 #include "tirenv/model.h"
 #include "tirenv/tracks.h"
 
-struct tirenv_model_type {
-    const char *name;
-    const char *summary;       /* what the model is, in 48 characters or fewer */
-    unsigned flags;            /* TIRENV_MODEL_* (model.h): what it can do */
-    /* The tire parameters a fit identifies: the first n_params by default, n_params_max with
-     * the optional ones; NULL and 0 if it cannot be fitted. */
-    const tirenv_model_param *params;
-    size_t n_params, n_params_max;
-    void *(*alloc)(const tirenv_tire *tire);              /* NULL on failure */
+/* What every model does, as functions of its state: all set. A type with nothing of its own
+ * to say names the driver's default (tirenv_model__default_reach), or its set where a window
+ * of the same ground is as good as a new one. The deformable models share one record,
+ * tirenv_deformable_ops (deformable.h), around what is their own. */
+typedef struct {
+    /* The state for a tire (the type is passed for the records behind it); NULL on
+     * failure. */
+    void *(*alloc)(const tirenv_model_type *type, const tirenv_tire *tire);
     void (*free)(void *state);
     int (*flat)(void *state, double load, tirenv_flat *out, tirenv_diag *diag);
     int (*load_for_contact_length)(void *state, double l_c, double *load, tirenv_diag *diag);
     /* New profile and load; z_flat is the model's flat-ground centre height at that load. */
     int (*set)(void *state, const tirenv_profile *p, double load, double z_flat,
                tirenv_diag *diag);
+    /* Another window of the same ground at the same load and z_flat (streaming): a type with
+     * a warm start keeps it; one without names its set. */
+    int (*set_profile)(void *state, const tirenv_profile *p, double load, double z_flat,
+                       tirenv_diag *diag);
+    /* A new load (N) on the profile already set, at the cost of the work within the tire's
+     * reach: what depends on the profile alone is kept, and so is the warm start. The
+     * flat-ground centre height at the new load in *z_flat (m). On failure nothing of the
+     * state has changed. */
+    int (*set_load)(void *state, double load, double *z_flat, tirenv_diag *diag);
     /* One position: every field of *out but x (set by the driver). */
     int (*eval)(void *state, double x, tirenv_point *out, tirenv_diag *diag);
-    /* Optional: a whole sweep at once (the network's batch); NULL: eval at each position. */
-    int (*envelope)(void *state, size_t n, const double x[], tirenv_point out[],
-                    size_t *failed, tirenv_diag *diag);
-    /* Optional: swap in another window of the same ground, keeping load, z_flat and the warm
-     * start (streaming); NULL falls back to set, which restarts the warm start. */
-    void (*set_profile)(void *state, const tirenv_profile *p);
-    /* Optional: how far from x (m) eval reads the profile at the load set; NULL means the
-     * default of tirenv_model_reach, TIRENV_MODEL__REACH*R0. */
-    double (*reach)(const void *state);
-    /* With TIRENV_MODEL_NEEDS_NETWORK: the network (to be copied) and the R0 (m) of its x_N. */
-    int (*set_network)(void *state, const struct tirenv_nn *nn, double R0, tirenv_diag *diag);
-    /* Optional, with a network: the load-to-contact-length relation of its tire (n = 0: none). */
-    void (*set_contact_law)(void *state, const tirenv_contact_law *law);
-    /* Optional: whether set may evaluate outside a trained range (tirenv_model_set_extrapolate);
-     * NULL for a model without one. */
-    void (*set_extrapolate)(void *state, int allow);
-    /* Optional: the warnings and the note of the last set (tirenv_model_warnings). */
-    const char *(*warnings)(const void *state);
-    const char *(*note)(const void *state);
-    /* How several tracks across the width combine (tirenv/tracks.h, docs/models.md section
-     * 13). */
-    tirenv_tracks_rule tracks;
-    /* With TIRENV_TRACKS_EQUILIBRIUM: the hub forces with the centre at (x, z) (m) on the
-     * profile set, F_z, dF_z/dz, F_x and the contacts of one evaluation in *out (out->z = z),
-     * for the equilibrium over the tracks. */
-    int (*forces)(void *state, double x, double z, tirenv_eq_point *out, tirenv_diag *diag);
-    /* Optional: a new load (N) on the profile already set, at the cost of the work within the
-     * tire's reach: what depends on the profile alone is kept, and so is the warm start. The
-     * flat-ground centre height at the new load in *z_flat (m). On failure nothing of the
-     * state has changed. NULL: the driver sets the whole profile again (tirenv_model_set). */
-    int (*set_load)(void *state, double load, double *z_flat, tirenv_diag *diag);
-    /* Optional, all three or none: the bytes of what the model carries from one call to the
-     * next besides its profile (load, warm start, caches whose content can change a bit of a
-     * result), for tirenv_model_state_save / _restore. state_size is fixed for an instance
-     * (it may depend on the tire, never on what was evaluated); save writes exactly that many
-     * bytes; restore reads them back into an instance of the same type and tire whose profile
-     * is set, and may fail with diag filled (then the instance is unset by the driver). NULL:
-     * the type has no state of its own beyond the driver's load (never for a type that has). */
+    /* How far from x (m) eval reads the profile at the load set (tirenv_model_reach);
+     * tirenv_model__default_reach: TIRENV_MODEL__REACH*R0. */
+    double (*reach)(const void *state, const tirenv_tire *tire);
+    /* The bytes of what the model carries from one call to the next besides its profile
+     * (load, warm start, caches whose content can change a bit of a result), for
+     * tirenv_model_state_save / _restore. state_size is fixed for an instance (it may depend
+     * on the tire, never on what was evaluated); save writes exactly that many bytes; restore
+     * reads them back into an instance of the same type and tire whose profile is set, and
+     * may fail with diag filled (then the instance is unset by the driver). */
     size_t (*state_size)(const void *state);
     void (*state_save)(const void *state, unsigned char *buf);
     int (*state_restore)(void *state, const unsigned char *buf, tirenv_diag *diag);
+} tirenv_model_ops;
+
+/* The tire parameters a fit identifies (tirenv_model_type_params): the first n by default,
+ * n_max with the optional ones. */
+typedef struct {
+    const tirenv_model_param *params;
+    size_t n, n_max;
+} tirenv_model_fit;
+
+/* What only a model that evaluates a trained network has (the nn): every member set. */
+typedef struct {
+    /* The network (to be copied) and the R0 (m) of its x_N. */
+    int (*set_network)(void *state, const struct tirenv_nn *nn, double R0, tirenv_diag *diag);
+    /* The load-to-contact-length relation of its tire (n = 0: none). */
+    void (*set_contact_law)(void *state, const tirenv_contact_law *law);
+    /* Whether set may evaluate outside the trained range (tirenv_model_set_extrapolate). */
+    void (*set_extrapolate)(void *state, int allow);
+    /* The warnings and the note of the last set (tirenv_model_warnings, _note). */
+    const char *(*warnings)(const void *state);
+    const char *(*note)(const void *state);
+    /* A whole sweep at once, through the network's batch path. */
+    int (*envelope)(void *state, size_t n, const double x[], tirenv_point out[],
+                    size_t *failed, tirenv_diag *diag);
+} tirenv_model_network;
+
+typedef struct tirenv_deformable tirenv_deformable;  /* deformable.h */
+
+/* A model algorithm, in the manner of GSL's gsl_root_fsolver_type: its name, what it is, the
+ * functions every model has, and one pointer for each thing only some models have (NULL: the
+ * model has none of it). The flags that follow from those pointers (FITTABLE, NEEDS_NETWORK,
+ * EQUILIBRIUM) are the driver's to add (tirenv_model_type_flags). */
+struct tirenv_model_type {
+    const char *name;
+    const char *summary;       /* what the model is, in 48 characters or fewer */
+    unsigned flags;            /* TIRENV_MODEL_CONTACT_LENGTH, TIRENV_MODEL_STREAMS (model.h) */
+    /* How several tracks across the width combine (tirenv/tracks.h, docs/models.md section
+     * 13); TIRENV_TRACKS_EQUILIBRIUM for a deformable model and only for one. */
+    tirenv_tracks_rule tracks;
+    const tirenv_model_ops *ops;
+    const tirenv_model_fit *fit;             /* what a fit identifies */
+    const tirenv_deformable *deformable;     /* a hub force under the shared equilibrium */
+    const tirenv_model_network *network;     /* a trained network */
 };
+
+/* The default reach: TIRENV_MODEL__REACH*R0 of the tire, whatever the state. */
+double tirenv_model__default_reach(const void *state, const tirenv_tire *tire);
 
 struct tirenv_model__tracks;  /* several tracks (tracks.c) */
 

@@ -1,6 +1,6 @@
 /* A model's state as bytes (docs/models.md section 1.7): what a host saves to rewind a model
  * and restores into it, or into a twin of the same type and tire. The driver's part (the load
- * and the flat-ground height) comes first, then the type's own (tirenv_model_type's
+ * and the flat-ground height) comes first, then the type's own (tirenv_model_ops's
  * state_size / _save / _restore). The profile is not in it: the model only borrows that.
  * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
@@ -51,7 +51,7 @@ unsigned long long tirenv_model__tire_print(const tirenv_tire *t)
 
 static size_t type_bytes(const tirenv_model *m)
 {
-    return m->type->state_size ? m->type->state_size(m->state) : 0;
+    return m->type->ops->state_size(m->state);
 }
 
 size_t tirenv_model_state_size(const tirenv_model *m)
@@ -91,8 +91,7 @@ int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tiren
     p = tirenv_model__put(p, &m->load, sizeof m->load);
     p = tirenv_model__put(p, &m->z_flat, sizeof m->z_flat);
     p = tirenv_model__put(p, &ready, 1);
-    if (m->type->state_save)
-        m->type->state_save(m->state, p);
+    m->type->ops->state_save(m->state, p);
     return TIRENV_OK;
 }
 
@@ -142,8 +141,7 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "the %s model has no profile: set it on the ground the state was "
                             "saved on (tirenv_model_set), then restore", m->type->name);
-    const int status = m->type->state_restore ? m->type->state_restore(m->state, p, diag)
-                                              : TIRENV_OK;
+    const int status = m->type->ops->state_restore(m->state, p, diag);
     if (status) {
         m->ready = 0;
         m->profile = NULL;

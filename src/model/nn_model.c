@@ -65,8 +65,9 @@ static void nn_model_free(void *state)
     free(st);
 }
 
-static void *nn_model_alloc(const tirenv_tire *tire)
+static void *nn_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
+    (void)type;
     nn_state *st = calloc(1, sizeof *st);
     if (!st)
         return NULL;
@@ -241,7 +242,7 @@ static int check_range(nn_state *st, size_t end, tirenv_diag *diag)
                                                        "obstacle height", "obstacle length"};
     const double u[TIRENV_NN_INPUTS] = {0.5, st->l_c, st->H, st->L};
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
-    tirenv_nn_get_input_range(st->nn, lo, hi);
+    tirenv_nn_input_range(st->nn, lo, hi);
     for (size_t i = tirenv_nn_out_of_range(st->nn, u, TIRENV_NN_CONTACT_LENGTH); i < end;
          i = tirenv_nn_out_of_range(st->nn, u, i + 1)) {
         if (!st->extrapolate)
@@ -262,7 +263,7 @@ static int check_range(nn_state *st, size_t end, tirenv_diag *diag)
  * network never learned. */
 static int obstacles_in_range(const nn_state *st, tirenv_diag *diag)
 {
-    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    const tirenv_nn_road_info in = tirenv_nn_road_info_of(st->road);
     if (st->extrapolate)
         return TIRENV_OK;
     const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
@@ -339,7 +340,7 @@ static void note_forms(nn_state *st)
 {
     tirenv_nn_input_form input;
     tirenv_nn_target_form target;
-    tirenv_nn_get_form(st->nn, &input, &target);
+    tirenv_nn_form(st->nn, &input, &target);
     const size_t used = strlen(st->note), K = tirenv_nn_n_members(st->nn);
     snprintf(st->note + used, sizeof st->note - used,
              "; network: input %s, target %s, mean of %zu network%s",
@@ -378,7 +379,7 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     if (s || (s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag)) ||
         (s = obstacles_in_range(st, diag)))
         return s;
-    const tirenv_nn_road_info in = tirenv_nn_road_get_info(st->road);
+    const tirenv_nn_road_info in = tirenv_nn_road_info_of(st->road);
     warn_clamped(st, &in);
     if ((s = warnings_build(st, diag)))
         return s;
@@ -560,31 +561,36 @@ static const char *nn_model_note(const void *state)
     return ((const nn_state *)state)->note;
 }
 
-static const tirenv_model_type nn_type = {
-    .name = "nn",
-    .summary = "the paper's trained network (--nn FILE)",
-    .flags = TIRENV_MODEL_NEEDS_NETWORK,
-    .params = NULL,
-    .n_params = 0,
-    .n_params_max = 0,
+static const tirenv_model_ops nn_ops = {
     .alloc = nn_model_alloc,
     .free = nn_model_free,
     .flat = nn_model_flat,
     .load_for_contact_length = nn_model_load_for_contact_length,
     .set = nn_model_set,
+    .set_profile = nn_model_set,
+    .set_load = nn_model_set_load,
     .eval = nn_model_eval,
-    .envelope = nn_model_envelope,
-    .set_profile = NULL,
-    .reach = NULL,
+    .reach = tirenv_model__default_reach,
+    .state_size = nn_model_state_size,
+    .state_save = nn_model_state_save,
+    .state_restore = nn_model_state_restore,
+};
+
+static const tirenv_model_network nn_network = {
     .set_network = nn_model_set_network,
     .set_contact_law = nn_model_set_contact_law,
     .set_extrapolate = nn_model_set_extrapolate,
     .warnings = nn_model_warnings,
     .note = nn_model_note,
+    .envelope = nn_model_envelope,
+};
+
+static const tirenv_model_type nn_type = {
+    .name = "nn",
+    .summary = "the paper's trained network (--nn FILE)",
+    .flags = 0,
     .tracks = TIRENV_TRACKS_MEAN,
-    .set_load = nn_model_set_load,
-    .state_size = nn_model_state_size,
-    .state_save = nn_model_state_save,
-    .state_restore = nn_model_state_restore,
+    .ops = &nn_ops,
+    .network = &nn_network,
 };
 const tirenv_model_type *tirenv_model_nn = &nn_type;

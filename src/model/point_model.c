@@ -16,8 +16,9 @@ typedef struct {
     tirenv_model *springs;   /* only to translate a contact length into a load */
 } point_state;
 
-static void *point_alloc(const tirenv_tire *tire)
+static void *point_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
+    (void)type;
     point_state *st = calloc(1, sizeof *st);
     if (st)
         st->tire = *tire;
@@ -113,29 +114,27 @@ static int point_state_restore(void *state, const unsigned char *buf, tirenv_dia
     return TIRENV_OK;
 }
 
-static const tirenv_model_type point_type = {
-    .name = "point",
-    .summary = "single-point contact on the raw profile",
-    .flags = TIRENV_MODEL_STREAMS,
-    .params = NULL,
-    .n_params = 0,
-    .n_params_max = 0,
+static const tirenv_model_ops point_ops = {
     .alloc = point_alloc,
     .free = point_free,
     .flat = point_flat,
     .load_for_contact_length = point_load_for_contact_length,
     .set = point_set,
-    .eval = point_eval,
-    .envelope = NULL,
-    .set_profile = NULL,
-    .reach = NULL,  /* it reads the ground at x alone; the default keeps windows long */
-    .set_network = NULL,
-    .warnings = NULL,
-    .note = NULL,
-    .tracks = TIRENV_TRACKS_MEAN,
+    .set_profile = point_set,
     .set_load = point_set_load,
+    .eval = point_eval,
+    .reach = tirenv_model__default_reach,  /* it reads the ground at x alone; the default keeps
+                                            * windows long */
     .state_size = point_state_size,
     .state_save = point_state_save,
     .state_restore = point_state_restore,
+};
+
+static const tirenv_model_type point_type = {
+    .name = "point",
+    .summary = "single-point contact on the raw profile",
+    .flags = TIRENV_MODEL_STREAMS,
+    .tracks = TIRENV_TRACKS_MEAN,
+    .ops = &point_ops,
 };
 const tirenv_model_type *tirenv_model_point = &point_type;

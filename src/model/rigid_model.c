@@ -14,8 +14,9 @@ typedef struct {
     size_t hint;             /* segment of the last position: a sweep's next is near it */
 } rigid_state;
 
-static void *rigid_alloc(const tirenv_tire *tire)
+static void *rigid_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
 {
+    (void)type;
     rigid_state *st = calloc(1, sizeof *st);
     if (!st)
         return NULL;
@@ -106,29 +107,26 @@ static int rigid_state_restore(void *state, const unsigned char *buf, tirenv_dia
     return TIRENV_OK;
 }
 
-static const tirenv_model_type rigid_type = {
-    .name = "rigid",
-    .summary = "the rigid disc: the geometric limit",
-    .flags = TIRENV_MODEL_STREAMS,
-    .params = NULL,
-    .n_params = 0,
-    .n_params_max = 0,
+static const tirenv_model_ops rigid_ops = {
     .alloc = rigid_alloc,
     .free = rigid_free,
     .flat = rigid_flat,
     .load_for_contact_length = rigid_load_for_contact_length,
     .set = rigid_set,
-    .eval = rigid_eval,
-    .envelope = NULL,
-    .set_profile = NULL,
-    .reach = NULL,
-    .set_network = NULL,
-    .warnings = NULL,
-    .note = NULL,
-    .tracks = TIRENV_TRACKS_HIGHEST,
+    .set_profile = rigid_set,
     .set_load = rigid_set_load,
+    .eval = rigid_eval,
+    .reach = tirenv_model__default_reach,
     .state_size = rigid_state_size,
     .state_save = rigid_state_save,
     .state_restore = rigid_state_restore,
+};
+
+static const tirenv_model_type rigid_type = {
+    .name = "rigid",
+    .summary = "the rigid disc: the geometric limit",
+    .flags = TIRENV_MODEL_STREAMS,
+    .tracks = TIRENV_TRACKS_HIGHEST,
+    .ops = &rigid_ops,
 };
 const tirenv_model_type *tirenv_model_rigid = &rigid_type;

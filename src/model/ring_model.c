@@ -176,24 +176,19 @@ static void ring_state_restore(void *elem, const unsigned char *buf)
     tirenv_ring__state_restore(elem, buf);
 }
 
-static const tirenv_deformable_ops ring_ops = {
-    .name = "ring",
-    .lowest_z = ring_lowest_z,
+static const tirenv_deformable ring_deformable = {
     .alloc = ring_alloc,
     .free = ring_free,
     .forces = ring_forces,
     .contact_length = ring_contact_length,
     .z_for_contact_length = ring_z_for_contact_length,
+    .lowest_z = ring_lowest_z,
+    .bracket = tirenv_deformable_no_bracket,
+    .shift_invariant = ring_shift_invariant,
     .state_size = ring_state_size,
     .state_save = ring_state_save,
     .state_restore = ring_state_restore,
-    .shift_invariant = ring_shift_invariant,
 };
-
-static void *ring_model_alloc(const tirenv_tire *tire)
-{
-    return tirenv_deformable_alloc(tire, &ring_ops);
-}
 
 /* What tirenv fit identifies on rig data (docs/models.md section 8.4): the carcass's
  * foundation and the tread by default, the belt's bending stiffness and the inflation pressure
@@ -206,31 +201,15 @@ static const tirenv_model_param ring_params[] = {
     {"INFLPRES", offsetof(tirenv_tire, ring.p), 0},
 };
 
+static const tirenv_model_fit ring_fit = {ring_params, 2, 4};
+
 static const tirenv_model_type ring_type = {
     .name = "ring",
     .summary = "flexible ring and tread: the reference tire",
-    .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS |
-             TIRENV_MODEL_EQUILIBRIUM,
-    .params = ring_params,
-    .n_params = 2,
-    .n_params_max = 4,
-    .alloc = ring_model_alloc,
-    .free = tirenv_deformable_free,
-    .flat = tirenv_deformable_flat,
-    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
-    .set = tirenv_deformable_set,
-    .eval = tirenv_deformable_eval,
-    .envelope = NULL,
-    .set_profile = tirenv_deformable_set_profile,
-    .reach = NULL,
-    .set_network = NULL,
-    .warnings = NULL,
-    .note = NULL,
+    .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS,
     .tracks = TIRENV_TRACKS_EQUILIBRIUM,
-    .forces = tirenv_deformable_forces,
-    .set_load = tirenv_deformable_set_load,
-    .state_size = tirenv_deformable_state_size,
-    .state_save = tirenv_deformable_state_save,
-    .state_restore = tirenv_deformable_state_restore,
+    .ops = &tirenv_deformable_ops,
+    .fit = &ring_fit,
+    .deformable = &ring_deformable,
 };
 const tirenv_model_type *tirenv_model_ring = &ring_type;

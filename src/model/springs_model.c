@@ -46,10 +46,11 @@ static int springs_z_for_contact_length(void *elem, const tirenv_profile *flat, 
     return 0;
 }
 
-static void springs_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
-                            double *z_hi)
+static int springs_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
+                           double *z_hi)
 {
     tirenv_springs__bracket(elem, p, x, z_lo, z_hi);
+    return 1;
 }
 
 static size_t springs_state_size(const void *elem) { return tirenv_springs__state_size(elem); }
@@ -83,24 +84,19 @@ static int springs_lowest_z(void *elem, const tirenv_profile *flat, double *z, c
     return 0;
 }
 
-static const tirenv_deformable_ops springs_ops = {
-    .name = "springs",
-    .lowest_z = springs_lowest_z,
+static const tirenv_deformable springs_deformable = {
     .alloc = springs_alloc,
     .free = springs_free,
     .forces = springs_forces,
-    .bracket = springs_bracket,
     .contact_length = springs_contact_length,
     .z_for_contact_length = springs_z_for_contact_length,
+    .lowest_z = springs_lowest_z,
+    .bracket = springs_bracket,
+    .shift_invariant = tirenv_deformable_invariant,
     .state_size = springs_state_size,
     .state_save = springs_state_save,
     .state_restore = springs_state_restore,
 };
-
-static void *springs_model_alloc(const tirenv_tire *tire)
-{
-    return tirenv_deformable_alloc(tire, &springs_ops);
-}
 
 /* The stiffnesses that shape h, which a fit identifies, and the free radius on request
  * (docs/models.md section 8); the discretisation (ELEMENT_ANGLE) is a setting, not fitted. */
@@ -109,32 +105,15 @@ static const tirenv_model_param springs_params[] = {
     {"INTERRADIAL_STIFFNESS", offsetof(tirenv_tire, springs.c_b), 0},
     {"UNLOADED_RADIUS", offsetof(tirenv_tire, springs.R0), 0},
 };
+static const tirenv_model_fit springs_fit = {springs_params, 2, 3};
 
 static const tirenv_model_type springs_type = {
     .name = "springs",
     .summary = "the paper's radial + interradial springs",
-    .flags = TIRENV_MODEL_FITTABLE | TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS |
-             TIRENV_MODEL_EQUILIBRIUM,
-    .params = springs_params,
-    .n_params = 2,
-    .n_params_max = 3,
-    .alloc = springs_model_alloc,
-    .free = tirenv_deformable_free,
-    .flat = tirenv_deformable_flat,
-    .load_for_contact_length = tirenv_deformable_load_for_contact_length,
-    .set = tirenv_deformable_set,
-    .eval = tirenv_deformable_eval,
-    .envelope = NULL,
-    .set_profile = tirenv_deformable_set_profile,
-    .reach = NULL,
-    .set_network = NULL,
-    .warnings = NULL,
-    .note = NULL,
+    .flags = TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_STREAMS,
     .tracks = TIRENV_TRACKS_EQUILIBRIUM,
-    .forces = tirenv_deformable_forces,
-    .set_load = tirenv_deformable_set_load,
-    .state_size = tirenv_deformable_state_size,
-    .state_save = tirenv_deformable_state_save,
-    .state_restore = tirenv_deformable_state_restore,
+    .ops = &tirenv_deformable_ops,
+    .fit = &springs_fit,
+    .deformable = &springs_deformable,
 };
 const tirenv_model_type *tirenv_model_springs = &springs_type;

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "core/equilibrium.h"
+#include "model/deformable.h"
 #include "model/model_impl.h"
 #include "model/rigid_impl.h"
 
@@ -69,7 +70,7 @@ void tirenv_model__tracks_free(tirenv_model *m)
         return;
     for (size_t k = 1; k < t->cap; ++k)
         if (t->state[k])
-            m->type->free(t->state[k]);
+            m->type->ops->free(t->state[k]);
     free(t->state);
     free(t->map);
     free(t->prof);
@@ -87,7 +88,8 @@ int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag
     struct tirenv_model__tracks *t = m->tracks;
     for (size_t k = 1; t && k < t->cap; ++k) {
         double load;
-        const int status = m->type->load_for_contact_length(t->state[k], l_c, &load, diag);
+        const int status =
+            m->type->ops->load_for_contact_length(t->state[k], l_c, &load, diag);
         if (status)
             return status;
     }
@@ -97,8 +99,8 @@ int tirenv_model__tracks_contact_length(tirenv_model *m, double l_c, tirenv_diag
 void tirenv_model__tracks_extrapolate(tirenv_model *m)
 {
     struct tirenv_model__tracks *t = m->tracks;
-    for (size_t k = 1; t && m->type->set_extrapolate && k < t->cap; ++k)
-        m->type->set_extrapolate(t->state[k], m->extrapolate);
+    for (size_t k = 1; t && m->type->network && k < t->cap; ++k)
+        m->type->network->set_extrapolate(t->state[k], m->extrapolate);
 }
 
 /* The driver's record of tracks just set at load (z_flat in m): the first track stands for
@@ -165,7 +167,7 @@ static int tracks_states(tirenv_model *m, size_t n, tirenv_diag *diag)
         }
     }
     if (m->type->tracks == TIRENV_TRACKS_EQUILIBRIUM) {
-        if (!m->type->forces)
+        if (!m->type->deformable)
             return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
                                 "the %s model combines tracks by an equilibrium but has no "
                                 "force function", m->type->name);
@@ -237,7 +239,7 @@ int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *con
         return status;
     m->z_flat = flat.z_flat;
     for (size_t k = 0; k < t->n && !status; ++k) {
-        status = m->type->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
+        status = m->type->ops->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
         if (status && diag && t->n > 1) {
             char msg[sizeof diag->message];
             snprintf(msg, sizeof msg, "track %zu: %.400s", k + 1, diag->message);
@@ -282,12 +284,8 @@ int tirenv_model_set_track_profiles(tirenv_model *m, size_t n,
     int status = TIRENV_OK;
     for (size_t i = 0; i < n; ++i)
         t->prof[t->map[i]] = profiles[i];
-    for (size_t k = 0; k < t->n && !status; ++k) {
-        if (m->type->set_profile)
-            m->type->set_profile(t->state[k], t->prof[k]);
-        else
-            status = m->type->set(t->state[k], t->prof[k], m->load, m->z_flat, diag);
-    }
+    for (size_t k = 0; k < t->n && !status; ++k)
+        status = m->type->ops->set_profile(t->state[k], t->prof[k], m->load, m->z_flat, diag);
     if (status) {
         m->ready = 0;
         m->profile = NULL;
@@ -297,19 +295,16 @@ int tirenv_model_set_track_profiles(tirenv_model *m, size_t n,
     return status;
 }
 
-/* Each track's state at the new load: the type's own set_load where it has one, else its set
- * on the track's profile again. A failure leaves the model unset (some tracks may have moved). */
+/* Each track's state at the new load, by the type's set_load. A failure leaves the model unset
+ * (some tracks may have moved). */
 int tirenv_model__tracks_set_load(tirenv_model *m, double load, tirenv_diag *diag)
 {
     struct tirenv_model__tracks *t = m->tracks;
     tirenv_flat flat;
-    int status = m->type->flat(m->state, load, &flat, diag);
+    int status = m->type->ops->flat(m->state, load, &flat, diag);
     for (size_t k = 0; k < t->n && !status; ++k) {
         double z_k;  /* the type's own z_flat at the load: flat's, as every track's tire is one */
-        if (m->type->set_load)
-            status = m->type->set_load(t->state[k], load, &z_k, diag);
-        else
-            status = m->type->set(t->state[k], t->prof[k], load, flat.z_flat, diag);
+        status = m->type->ops->set_load(t->state[k], load, &z_k, diag);
     }
     if (status) {
         m->ready = 0;
@@ -350,7 +345,7 @@ static int sum_forces(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *di
     *out = (tirenv_eq_point){.z = z};
     for (size_t k = 0; k < t->n; ++k) {
         tirenv_eq_point p;
-        const int status = c->m->type->forces(t->state[k], c->x, z, &p, diag);
+        const int status = tirenv_deformable_forces(t->state[k], c->x, z, &p, diag);
         if (status)
             return status;
         out->F += t->w[k] * p.F;
@@ -362,8 +357,8 @@ static int sum_forces(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *di
 }
 
 /* The bracket of docs/models.md section 11.1 over every track, the rigid disc's, at every
- * position: the cheaper one a warm Newton takes on one track (tirenv_deformable_eval) is the
- * deformable model's own (its ops), which the type's state does not offer here. */
+ * position: the cheaper one a warm Newton takes on one track (deformable.c) is the deformable
+ * model's own for its one profile. */
 static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
     struct tirenv_model__tracks *t = m->tracks;
@@ -440,7 +435,7 @@ int tirenv_model__tracks_eval(tirenv_model *m, double x, tirenv_point *out, tire
     if (m->type->tracks == TIRENV_TRACKS_EQUILIBRIUM)
         return equilibrium(m, x, out, diag);
     for (size_t k = 0; k < t->n; ++k) {
-        const int status = m->type->eval(t->state[k], x, &t->pt[k], diag);
+        const int status = m->type->ops->eval(t->state[k], x, &t->pt[k], diag);
         if (status)
             return status;
     }
@@ -455,7 +450,7 @@ int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],
                                   tirenv_point out[], size_t *failed, tirenv_diag *diag)
 {
     struct tirenv_model__tracks *t = m->tracks;
-    if (!m->type->envelope || m->type->tracks != TIRENV_TRACKS_MEAN) {
+    if (!m->type->network || m->type->tracks != TIRENV_TRACKS_MEAN) {
         for (size_t i = 0; i < n; ++i) {
             const int status = tirenv_model__tracks_eval(m, x[i], &out[i], diag);
             if (status) {
@@ -470,7 +465,8 @@ int tirenv_model__tracks_envelope(tirenv_model *m, size_t n, const double x[],
         /* out[] holds the tracks' weighted sums as they come (the mean rule). */
         for (size_t k = 0; k < t->n; ++k) {
             size_t bad = 0;
-            const int status = m->type->envelope(t->state[k], nb, x + i0, t->block, &bad, diag);
+            const int status =
+                m->type->network->envelope(t->state[k], nb, x + i0, t->block, &bad, diag);
             if (status) {
                 *failed = i0 + bad;
                 return status;

@@ -227,7 +227,7 @@ tirenv_nn *tirenv_nn_clone(const tirenv_nn *nn)
     return c;
 }
 
-const tirenv_nn_topology *tirenv_nn_get_topology(const tirenv_nn *nn) { return &nn->top; }
+const tirenv_nn_topology *tirenv_nn_topology_of(const tirenv_nn *nn) { return &nn->top; }
 size_t tirenv_nn_n_inputs(const tirenv_nn *nn) { return nn->n_in; }
 size_t tirenv_nn_n_members(const tirenv_nn *nn) { return nn->members; }
 size_t tirenv_nn_n_weights(const tirenv_nn *nn) { return nn->n_weights; }

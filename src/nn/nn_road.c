@@ -96,7 +96,7 @@ const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r)
     return r->pub;
 }
 
-tirenv_nn_road_info tirenv_nn_road_get_info(const tirenv_nn_road *r)
+tirenv_nn_road_info tirenv_nn_road_info_of(const tirenv_nn_road *r)
 {
     refresh_all((tirenv_nn_road *)r);
     return r->info;
@@ -445,7 +445,7 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
                             "expected R0 > 0 and 0 < l_c < 2*R0 (m); got R0 %g, l_c %g", R0,
                             l_c);
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_input_range(nn, lo, hi);
     const double x_N_min = lo[TIRENV_NN_X_N];
     if (!isfinite(x_N_min) || !(x_N_min < 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_N",

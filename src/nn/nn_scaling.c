@@ -27,8 +27,8 @@ int tirenv_nn_set_form(tirenv_nn *nn, tirenv_nn_input_form input, tirenv_nn_targ
     return TIRENV_OK;
 }
 
-void tirenv_nn_get_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
-                        tirenv_nn_target_form *target)
+void tirenv_nn_form(const tirenv_nn *nn, tirenv_nn_input_form *input,
+                    tirenv_nn_target_form *target)
 {
     if (input)
         *input = nn->input_form;
@@ -45,7 +45,7 @@ int tirenv_nn_set_even_width(tirenv_nn *nn, double a, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
-double tirenv_nn_get_even_width(const tirenv_nn *nn) { return nn->even_width; }
+double tirenv_nn_even_width(const tirenv_nn *nn) { return nn->even_width; }
 
 int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in_std[],
                           double out_mean, double out_std, tirenv_diag *diag)
@@ -69,8 +69,8 @@ int tirenv_nn_set_scaling(tirenv_nn *nn, const double in_mean[], const double in
     return TIRENV_OK;
 }
 
-void tirenv_nn_get_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],
-                           double *out_mean, double *out_std)
+void tirenv_nn_scaling(const tirenv_nn *nn, double in_mean[], double in_std[],
+                       double *out_mean, double *out_std)
 {
     for (size_t i = 0; i < nn->n_in; ++i) {
         if (in_mean)
@@ -97,7 +97,7 @@ int tirenv_nn_set_input_range(tirenv_nn *nn, const double lo[], const double hi[
     return TIRENV_OK;
 }
 
-void tirenv_nn_get_input_range(const tirenv_nn *nn, double lo[], double hi[])
+void tirenv_nn_input_range(const tirenv_nn *nn, double lo[], double hi[])
 {
     memcpy(lo, nn->in_lo, nn->n_in * sizeof(double));
     memcpy(hi, nn->in_hi, nn->n_in * sizeof(double));

@@ -707,7 +707,7 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
     if (status)
         return status;
     if (nn) {
-        const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+        const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
         for (size_t l = 0; l < t->n_layers; ++l) {
             const size_t used = strlen(out->nn_layers);
             snprintf(out->nn_layers + used, sizeof out->nn_layers - used, "%s%zu",

@@ -83,7 +83,7 @@ static int backprop_epoch(void *state, tirenv_nn *nn, const tirenv_samples *trai
         return TIRENV_ECONTINUE;
     }
     double out_std;
-    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
+    tirenv_nn_scaling(nn, NULL, NULL, NULL, &out_std);
     const double inv_std = 1.0 / out_std;
     tirenv_rng_shuffle(rng, st->order, train->n);
     double sse = 0;

@@ -79,7 +79,7 @@ static void lm_free(void *state)
 static double lm_inv_std(const tirenv_nn *nn)
 {
     double out_std;
-    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
+    tirenv_nn_scaling(nn, NULL, NULL, NULL, &out_std);
     return 1.0 / out_std;
 }
 

@@ -131,7 +131,7 @@ const char *tirenv_train_stop_name(tirenv_train_stop stop)
 static double out_std_of(const tirenv_nn *nn)
 {
     double out_std;
-    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
+    tirenv_nn_scaling(nn, NULL, NULL, NULL, &out_std);
     return out_std;
 }
 
@@ -368,7 +368,7 @@ static double criterion(tirenv_nn *nn, const tirenv_samples *s, tirenv_train_los
     if (loss == TIRENV_TRAIN_LOSS_POINTS)
         return tirenv_train__sse(nn, s, y);
     double inv_std;
-    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &inv_std);
+    tirenv_nn_scaling(nn, NULL, NULL, NULL, &inv_std);
     inv_std = 1.0 / inv_std;
     tirenv_nn_run_batch(nn, s->n, s->x, y);
     curve_ms(s, s->w, y, inv_std, ms);
@@ -396,7 +396,7 @@ static void reweight_curves(tirenv_nn *nn, const tirenv_samples *s, const double
                             double w[], double y[], double ms[])
 {
     double out_std;
-    tirenv_nn_get_scaling(nn, NULL, NULL, NULL, &out_std);
+    tirenv_nn_scaling(nn, NULL, NULL, NULL, &out_std);
     tirenv_nn_run_batch(nn, s->n, s->x, y);
     curve_ms(s, w0, y, 1.0 / out_std, ms);
     double mean_rms = 0;

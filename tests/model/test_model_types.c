@@ -79,6 +79,43 @@ static void test_records(void **state)
     assert_true(tirenv_model_type_flags(tirenv_model_nn) & TIRENV_MODEL_NEEDS_NETWORK);
 }
 
+/* Each type's flags and tracks rule, those the driver derives from the record (FITTABLE,
+ * NEEDS_NETWORK, EQUILIBRIUM) included, as docs/models.md sections 1.6 and 13 table them: a
+ * deformable model, and only one, combines tracks by the equilibrium of its summed forces. */
+static void test_record_flags(void **state)
+{
+    (void)state;
+    enum {
+        FIT = TIRENV_MODEL_FITTABLE,
+        NET = TIRENV_MODEL_NEEDS_NETWORK,
+        LC = TIRENV_MODEL_CONTACT_LENGTH,
+        STREAM = TIRENV_MODEL_STREAMS,
+        EQ = TIRENV_MODEL_EQUILIBRIUM
+    };
+    static const struct {
+        const char *name;
+        unsigned flags;
+        tirenv_tracks_rule tracks;
+    } want[] = {
+        {"rigid", STREAM, TIRENV_TRACKS_HIGHEST},
+        {"springs", FIT | LC | STREAM | EQ, TIRENV_TRACKS_EQUILIBRIUM},
+        {"ring", FIT | LC | STREAM | EQ, TIRENV_TRACKS_EQUILIBRIUM},
+        {"cam", FIT | LC | STREAM, TIRENV_TRACKS_MEAN},
+        {"nn", NET, TIRENV_TRACKS_MEAN},
+        {"point", STREAM, TIRENV_TRACKS_MEAN},
+    };
+    const size_t n = sizeof want / sizeof want[0];
+    assert_int_equal(n_types(), n);
+    for (size_t i = 0; i < n; ++i) {
+        const tirenv_model_type *t = tirenv_model_type_find(want[i].name);
+        assert_non_null(t);
+        assert_int_equal(tirenv_model_type_flags(t), want[i].flags);
+        assert_int_equal(tirenv_model_type_tracks(t), want[i].tracks);
+        assert_int_equal((tirenv_model_type_flags(t) & EQ) != 0,
+                         tirenv_model_type_tracks(t) == TIRENV_TRACKS_EQUILIBRIUM);
+    }
+}
+
 /* One style per model on every plot: each type has its own colour, none of them a spare, and
  * no two alike. */
 static void test_plot_styles(void **state)
@@ -125,7 +162,13 @@ static void test_flags_hold(void **state)
             assert_true(d.message[0] != '\0');
             assert_int_equal(tirenv_model_set_network(m, nn, R0, &d), TIRENV_OK);
         } else {
+            /* Neither a network nor its tire's contact law for a model without one. */
             assert_int_equal(tirenv_model_set_network(m, nn, R0, &d), TIRENV_EINVAL);
+            const tirenv_contact_law law = {.n = 2, .load = {1000.0, 9000.0},
+                                            .l_c = {0.1, 0.4}};
+            tirenv_diag_clear(&d);
+            assert_int_equal(tirenv_model_set_contact_law(m, &law, &d), TIRENV_EINVAL);
+            assert_string_equal(d.field, "contact law");
         }
         double load;
         assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
@@ -143,6 +186,8 @@ static void test_flags_hold(void **state)
         assert_int_equal(tirenv_model_eval(m, -0.0731, &pt, &d), TIRENV_OK);
         assert_true(pt.x == -0.0731 && isfinite(pt.h) && isfinite(pt.slope));
         assert_int_equal(pt.iterations > 0, (f & TIRENV_MODEL_EQUILIBRIUM) != 0);
+        if (!(f & TIRENV_MODEL_NEEDS_NETWORK))  /* only the network warns or notes */
+            assert_true(tirenv_model_warnings(m)[0] == '\0' && tirenv_model_note(m)[0] == '\0');
         /* A position that is not finite is refused by name, alone and within a sweep. */
         const double bad[] = {NAN, INFINITY, -INFINITY};
         for (size_t b = 0; b < 3; ++b) {
@@ -268,6 +313,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_records),
+        cmocka_unit_test(test_record_flags),
         cmocka_unit_test(test_plot_styles),
         cmocka_unit_test(test_flags_hold),
         cmocka_unit_test(test_point_is_the_profile),

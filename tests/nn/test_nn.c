@@ -73,19 +73,19 @@ static void fill_inputs(tirenv_rng *rng, size_t n, size_t n_in, double x[])
  * sums in any order, the mean over the members, times H for the h/H target. */
 static double reference_run(const tirenv_nn *nn, const double x[])
 {
-    const tirenv_nn_topology *t = tirenv_nn_get_topology(nn);
+    const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
     const double *w = tirenv_nn_weights_const(nn);
     const size_t K = tirenv_nn_n_members(nn), per = tirenv_nn_n_weights(nn) / K;
     double mean[TIRENV_NN_MAX_WIDTH], std[TIRENV_NN_MAX_WIDTH], out_mean, out_std;
     double a[TIRENV_NN_MAX_WIDTH], b[TIRENV_NN_MAX_WIDTH];
     tirenv_nn_input_form in;
     tirenv_nn_target_form target;
-    tirenv_nn_get_scaling(nn, mean, std, &out_mean, &out_std);
-    tirenv_nn_get_form(nn, &in, &target);
+    tirenv_nn_scaling(nn, mean, std, &out_mean, &out_std);
+    tirenv_nn_form(nn, &in, &target);
     double sum = 0;
     for (size_t k = 0; k < K; ++k) {
         for (size_t i = 0; i < t->size[0]; ++i) {
-            const double width = tirenv_nn_get_even_width(nn);
+            const double width = tirenv_nn_even_width(nn);
             const double f = in == TIRENV_NN_INPUT_EVEN && i == 0
                                  ? hypot(1 - x[0], width) - width
                                  : x[i];
@@ -347,8 +347,8 @@ static void test_scaling(void **state)
     const double y[] = {0.01, 0.03, 0.05};
     assert_int_equal(tirenv_nn_fit_scaling(nn, 3, x, y, NULL), TIRENV_OK);
     double mean[3], std[3], om, os, lo[3], hi[3];
-    tirenv_nn_get_scaling(nn, mean, std, &om, &os);
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_scaling(nn, mean, std, &om, &os);
+    tirenv_nn_input_range(nn, lo, hi);
     assert_near(mean[0], 2.0, 1e-15, 0);
     assert_near(std[0], sqrt(2.0 / 3.0), 0, 1e-15);
     assert_near(mean[1], 0.33, 1e-15, 0);
@@ -375,7 +375,7 @@ static void test_scaling(void **state)
     assert_int_equal(tirenv_nn_set_input_range(nn, lo_bad, hi_bad, NULL), TIRENV_EINVAL);
     /* Unchanged by the refusals. */
     double std2[3];
-    tirenv_nn_get_scaling(nn, NULL, std2, NULL, NULL);
+    tirenv_nn_scaling(nn, NULL, std2, NULL, NULL);
     assert_memory_equal(std, std2, sizeof std);
 
     /* Copy and clone carry weights, scaling, ranges; copy refuses another shape. */
@@ -495,7 +495,7 @@ static void test_even_symmetry(void **state)
         tirenv_nn *even = make_variant(&topologies[0], &variants[k % 2 ? 2 : 0], 700 + k);
         tirenv_nn *paper = tirenv_nn_clone(even);
         tirenv_nn_target_form target;
-        tirenv_nn_get_form(even, NULL, &target);
+        tirenv_nn_form(even, NULL, &target);
         assert_int_equal(tirenv_nn_set_form(paper, TIRENV_NN_INPUT_PAPER, target, NULL),
                          TIRENV_OK);
         const double l_c = 0.28 + 0.15 * tirenv_rng_uniform(rng),
@@ -615,19 +615,19 @@ static void test_scaling_forms(void **state)
 {
     (void)state;
     tirenv_nn *nn = tirenv_nn_alloc(&topologies[0]);
-    assert_true(tirenv_nn_get_even_width(nn) == TIRENV_NN_EVEN_WIDTH);
+    assert_true(tirenv_nn_even_width(nn) == TIRENV_NN_EVEN_WIDTH);
     assert_int_equal(tirenv_nn_set_form(nn, TIRENV_NN_INPUT_EVEN, TIRENV_NN_TARGET_H_OVER_H,
                                         NULL), TIRENV_OK);
     assert_int_equal(tirenv_nn_set_even_width(nn, 0.75, NULL), TIRENV_OK);
     assert_int_equal(tirenv_nn_set_even_width(nn, 0, NULL), TIRENV_EINVAL);
     assert_int_equal(tirenv_nn_set_even_width(nn, INFINITY, NULL), TIRENV_EINVAL);
-    assert_true(tirenv_nn_get_even_width(nn) == 0.75);
+    assert_true(tirenv_nn_even_width(nn) == 0.75);
     const double x[] = {0.0, 0.3, 0.05, 0.1, 0.5, 0.3, 0.1, 0.1, 1.0, 0.3, 0.025, 0.1};
     const double y[] = {0.01, 0.06, 0.02};  /* h/H: 0.2, 0.6, 0.8 */
     assert_int_equal(tirenv_nn_fit_scaling(nn, 3, x, y, NULL), TIRENV_OK);
     double mean[4], std[4], om, os, lo[4], hi[4];
-    tirenv_nn_get_scaling(nn, mean, std, &om, &os);
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_scaling(nn, mean, std, &om, &os);
+    tirenv_nn_input_range(nn, lo, hi);
     const double f1 = 0.5, f2 = sqrt(0.25 + 0.5625) - 0.75;  /* x_N = 0 and 0.5; 1 gives 0 */
     const double f_mean = (f1 + f2 + 0.0) / 3;
     assert_near(mean[0], f_mean, 1e-15, 0);

@@ -130,7 +130,7 @@ static void cleat_curve(tirenv_nn *nn, double l_c, double L, double H, double c,
                         size_t n, const double x[], double h[])
 {
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_input_range(nn, lo, hi);
     const double H_net = fmin(fmax(H, lo[TIRENV_NN_HEIGHT]), hi[TIRENV_NN_HEIGHT]);
     const double L_net = fmin(fmax(L, lo[TIRENV_NN_LENGTH]), hi[TIRENV_NN_LENGTH]);
     const double scale = H < lo[TIRENV_NN_HEIGHT] ? H / lo[TIRENV_NN_HEIGHT] : 1.0;
@@ -184,7 +184,7 @@ static void test_single_cleat(void **state)
         const double zv[] = {0, H, H, 0};
         tirenv_profile *p = polyline(4, xv, zv);
         tirenv_nn_road *r = build(nn, l_c, p, NULL);
-        const tirenv_nn_road_info in = tirenv_nn_road_get_info(r);
+        const tirenv_nn_road_info in = tirenv_nn_road_info_of(r);
         assert_int_equal(in.obstacles, 1);
         assert_int_equal(in.height_below, cases[t].below);
         assert_int_equal(in.height_above, cases[t].above_H);
@@ -273,7 +273,7 @@ static void test_two_cleats_far(void **state)
     const double zv[] = {0, H1, H1, 0, 0, H2, H2, 0};
     tirenv_profile *p = polyline(8, xv, zv);
     tirenv_nn_road *r = build(nn, l_c, p, NULL);
-    assert_int_equal(tirenv_nn_road_get_info(r).obstacles, 2);
+    assert_int_equal(tirenv_nn_road_info_of(r).obstacles, 2);
     const tirenv_nn_obstacle *o = tirenv_nn_road_obstacles(r);
     assert_true(o[0].reach + o[1].reach < c2 - c1);
     assert_near(o[0].c, c1, GEOM_TOL, 0);
@@ -311,7 +311,7 @@ static void test_plateau(void **state)
     const double zv[] = {0, P, P, P + H, P + H, P, P, 0};
     tirenv_profile *p = polyline(8, xv, zv);
     tirenv_nn_road *r = build(nn, l_c, p, NULL);
-    assert_int_equal(tirenv_nn_road_get_info(r).obstacles, 1);
+    assert_int_equal(tirenv_nn_road_info_of(r).obstacles, 1);
     const tirenv_nn_obstacle *o = tirenv_nn_road_obstacles(r);
     assert_true(o->H == H || fabs(o->H - H) <= 1e-16);  /* (P + H) - P */
     assert_near(o->L, L, GEOM_TOL, 0);
@@ -353,7 +353,7 @@ static void test_ramp(void **state)
     const double top = zv[3];
     tirenv_profile *p = polyline(6, xv, zv);
     tirenv_nn_road *r = build(nn, l_c, p, NULL);
-    assert_int_equal(tirenv_nn_road_get_info(r).obstacles, 1);
+    assert_int_equal(tirenv_nn_road_info_of(r).obstacles, 1);
     const tirenv_nn_obstacle *o = tirenv_nn_road_obstacles(r);
     assert_near(o->H, H, sampling, 0);
     assert_true(o->top == top);
@@ -397,8 +397,8 @@ static void test_flat(void **state)
     for (size_t nv = 1; nv <= 2; ++nv) {
         tirenv_profile *p = polyline(nv, xv + 2 - nv, zv);
         tirenv_nn_road *r = build(nn, 0.33, p, NULL);
-        assert_int_equal(tirenv_nn_road_get_info(r).obstacles, 0);
-        assert_true(tirenv_nn_road_get_info(r).reach == 0);
+        assert_int_equal(tirenv_nn_road_info_of(r).obstacles, 0);
+        assert_true(tirenv_nn_road_info_of(r).reach == 0);
         enum { N = 1001 };
         double *x = positions(-7.3, 0.0147, N);
         double h[N], slope[N];
@@ -424,9 +424,9 @@ static void test_offset(void **state)
         zs[k] = tirenv_profile_z(p)[k] + offset;
     tirenv_profile *q = polyline(nv, tirenv_profile_x(p), zs);
     tirenv_nn_road *r = build(nn, 0.33, p, NULL), *rq = build(nn, 0.33, q, NULL);
-    assert_int_equal(tirenv_nn_road_get_info(r).obstacles,
-                     tirenv_nn_road_get_info(rq).obstacles);
-    assert_true(tirenv_nn_road_get_info(r).obstacles > 10);
+    assert_int_equal(tirenv_nn_road_info_of(r).obstacles,
+                     tirenv_nn_road_info_of(rq).obstacles);
+    assert_true(tirenv_nn_road_info_of(r).obstacles > 10);
     enum { N = 3301 };
     double *x = positions(-1, 0.01, N);
     double h[N], hq[N], s[N], sq[N];
@@ -455,14 +455,14 @@ static void test_iso_road(void **state)
     const double l_c = 0.33, dx = 1e-4;
     tirenv_profile *p = iso_road('C', 200, 0.01, 7);
     tirenv_nn_road *r = build(nn, l_c, p, NULL);
-    const tirenv_nn_road_info in = tirenv_nn_road_get_info(r);
+    const tirenv_nn_road_info in = tirenv_nn_road_info_of(r);
     print_message("class C, 200 m: %zu obstacles (%zu below H_min, %zu lengths clamped), "
                   "reach %.3f m\n", in.obstacles, in.height_below,
                   in.length_below + in.length_above, in.reach);
     assert_true(in.obstacles > 100);
     /* The largest step the network's curve starts with, over the obstacles. */
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS], edge = 0;
-    tirenv_nn_get_input_range(nn, lo, hi);
+    tirenv_nn_input_range(nn, lo, hi);
     const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(r);
     for (size_t k = 0; k < in.obstacles; ++k) {
         const double u[TIRENV_NN_INPUTS] = {lo[TIRENV_NN_X_N], l_c, ob[k].H_net, ob[k].L_net};
@@ -518,8 +518,8 @@ static void test_pruning_exact(void **state)
         s.prune = 0;
         tirenv_nn_road *slow = build(nn, 0.38, p, &s);
         print_message("class %c at %g mm: %zu obstacles\n", cases[t].road_class,
-                      1e3 * cases[t].dx, tirenv_nn_road_get_info(fast).obstacles);
-        assert_true(tirenv_nn_road_get_info(fast).obstacles > 20);
+                      1e3 * cases[t].dx, tirenv_nn_road_info_of(fast).obstacles);
+        assert_true(tirenv_nn_road_info_of(fast).obstacles > 20);
         enum { N = 10667 };
         double *x = positions(-1, 0.003, N);
         double h0[N], s0[N], h1[N], s1[N], xr[N], hr[N], sr[N];
@@ -568,15 +568,15 @@ static void test_width(void **state)
     tirenv_nn *nn = *state;
     tirenv_profile *p = tirenv_profile_cleat(0.5, 0.05);
     tirenv_nn_road *r = build(nn, 0.33, p, NULL);
-    assert_int_equal(tirenv_nn_road_get_info(r).obstacles, 0);
+    assert_int_equal(tirenv_nn_road_info_of(r).obstacles, 0);
     assert_true(tirenv_nn_road_baseline(r, 0.1) == 0.05);
     tirenv_nn_road_free(r);
     tirenv_nn_road_settings s = tirenv_nn_road_default();
     s.width = 0.6;
     r = build(nn, 0.33, p, &s);
-    assert_int_equal(tirenv_nn_road_get_info(r).obstacles, 1);
-    assert_true(tirenv_nn_road_get_info(r).width == 0.6);
-    assert_true(tirenv_nn_road_get_info(r).length_above == 1);
+    assert_int_equal(tirenv_nn_road_info_of(r).obstacles, 1);
+    assert_true(tirenv_nn_road_info_of(r).width == 0.6);
+    assert_true(tirenv_nn_road_info_of(r).length_above == 1);
     tirenv_nn_road_free(r);
     tirenv_profile_free(p);
 }

@@ -484,13 +484,13 @@ static void test_file_round_trip(void **state)
     assert_int_equal(tirenv_nn_n_weights(nn), p);
     assert_memory_equal(tirenv_nn_weights(nn), tirenv_nn_weights(m->nn), p * sizeof(double));
     double a[4], b[4], c[4], e[4], oa[2], ob[2];
-    tirenv_nn_get_scaling(m->nn, a, b, &oa[0], &oa[1]);
-    tirenv_nn_get_scaling(nn, c, e, &ob[0], &ob[1]);
+    tirenv_nn_scaling(m->nn, a, b, &oa[0], &oa[1]);
+    tirenv_nn_scaling(nn, c, e, &ob[0], &ob[1]);
     assert_memory_equal(a, c, sizeof a);
     assert_memory_equal(b, e, sizeof b);
     assert_memory_equal(oa, ob, sizeof oa);
-    tirenv_nn_get_input_range(m->nn, a, b);
-    tirenv_nn_get_input_range(nn, c, e);
+    tirenv_nn_input_range(m->nn, a, b);
+    tirenv_nn_input_range(nn, c, e);
     assert_memory_equal(a, c, sizeof a);
     assert_memory_equal(b, e, sizeof b);
     for (size_t k = 0; k < d->s[2].n; ++k) {
@@ -521,12 +521,12 @@ static void test_file_round_trip(void **state)
     assert_int_equal(tirenv_nn_n_members(nn), 2);
     tirenv_nn_input_form in;
     tirenv_nn_target_form out;
-    tirenv_nn_get_form(nn, &in, &out);
+    tirenv_nn_form(nn, &in, &out);
     assert_int_equal(in, TIRENV_NN_INPUT_EVEN);
     assert_int_equal(out, TIRENV_NN_TARGET_H_OVER_H);
     assert_true(s1->input == in && s1->target == out && s1->ensemble == s0->ensemble &&
                 s1->loss == s0->loss && s1->even_width == 0.3);
-    assert_true(tirenv_nn_get_even_width(nn) == 0.3);
+    assert_true(tirenv_nn_even_width(nn) == 0.3);
     assert_int_equal(r1->members, 2);
     assert_memory_equal(r1->member_restart, r0->member_restart, 2 * sizeof(size_t));
 
@@ -852,7 +852,7 @@ static void test_target_h_over_H(void **state)
         tirenv_train_report r;
         assert_int_equal(train(d, tirenv_trainer_lm, &s, &nn, &r), TIRENV_OK);
         tirenv_nn_target_form f;
-        tirenv_nn_get_form(nn, NULL, &f);
+        tirenv_nn_form(nn, NULL, &f);
         assert_int_equal(f, s.target);
         spread[over_H] = 0;
         for (double x_N = 0; x_N <= 1; x_N += 0.125) {
@@ -902,7 +902,7 @@ static void test_file_version1(void **state)
     assert_int_equal(tirenv_nn_n_members(nn), 1);
     tirenv_nn_input_form in;
     tirenv_nn_target_form out;
-    tirenv_nn_get_form(nn, &in, &out);
+    tirenv_nn_form(nn, &in, &out);
     assert_int_equal(in, TIRENV_NN_INPUT_PAPER);
     assert_int_equal(out, TIRENV_NN_TARGET_H);
     assert_string_equal(rec.data, "data/dataset");

@@ -1,0 +1,416 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The rows of the springs model's continuous contact (docs/models.md section 4.8): the
+ * tread's curve between elements (its weights a(t), b(t)), and every ground vertex under it
+ * and every ray's pin as a row a w_i + b w_(i+1) >= h, reduced to each sector's upper hull and
+ * laid out element by element for the active-set solve of springs_contact.c. */
+#include "model/springs_impl.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "profile/profile_impl.h"
+
+/* t closer than this to 0 or 1 is taken as the element itself, and of two rows of a sector
+ * closer than this in tau only the higher is kept: two rows on nearly the same point would
+ * make the KKT system nearly singular. The tread there moves by at most this fraction of
+ * w_(i+1) - w_i (under 1e-8 m). */
+static const double t_snap = 1e-6;
+
+double tirenv_springs__cc_gamma(double k_r, double k_ir)
+{
+    if (!(k_ir > 0))
+        return 0.5 * M_PI;
+    const double ch = 1 + k_r / (2 * k_ir);
+    return acos(1 / (ch + sqrt((ch - 1) * (ch + 1)))); /* exp(-mu) without cancellation */
+}
+
+void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
+                                double *b, double *da_dt, double *db_dt)
+{
+    /* sin((1 - t) g) = sin(g) cos(t g) - cos(g) sin(t g): one sine and cosine of t g. */
+    const double g = T->gamma, inv = 1 / T->sin_gamma, cot = T->cot_gamma;
+    const double sn = sin(t * g), cs = cos(t * g);
+    *a = cs - cot * sn;
+    *b = sn * inv;
+    *da_dt = -g * (sn + cot * cs);
+    *db_dt = g * cs * inv;
+}
+
+void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T)
+{
+    T->gamma = tirenv_springs__cc_gamma(T->k_r, T->k_ir);
+    T->sin_gamma = sin(T->gamma);
+    T->cot_gamma = cos(T->gamma) / T->sin_gamma;
+    /* The bounds from 4096 samples, with margins far above the sampling's error (both
+     * functions are smooth, their variation between samples below 1e-7 of their range):
+     * ab_lo 1 % under the smallest (a + b - 1) / (t (1 - t)) seen, tau_dev 1 % over the
+     * largest |tau - t| plus 1e-9. */
+    double lo = INFINITY, dev = 0;
+    for (int k = 1; k < 4096; ++k) {
+        const double t = k / 4096.0;
+        double a, b, da, db;
+        tirenv_springs__cc_weights(T, t, &a, &b, &da, &db);
+        lo = fmin(lo, (a + b - 1) / (t * (1 - t)));
+        dev = fmax(dev, fabs(b / (a + b) - t));
+    }
+    T->ab_lo = lo > 0 ? 0.99 * lo : 0;
+    T->tau_dev = 1.01 * dev + 1e-9;
+}
+
+/* Room for n rows (and their KKT unknowns alongside N elements). */
+static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
+{
+    if (n <= c->cap_rows)
+        return TIRENV_OK;
+    size_t cap = c->cap_rows ? c->cap_rows : 64;
+    while (cap < n)
+        cap *= 2;
+    void *r = realloc(c->rows, cap * sizeof *c->rows);
+    if (!r)
+        return TIRENV_ENOMEM;
+    c->rows = r;
+    unsigned char *in_w = realloc(c->in_w, cap);
+    if (!in_w)
+        return TIRENV_ENOMEM;
+    c->in_w = in_w;
+    double *lambda = realloc(c->lambda, cap * sizeof *lambda);
+    if (!lambda)
+        return TIRENV_ENOMEM;
+    c->lambda = lambda;
+    size_t *pos = realloc(c->pos, cap * sizeof *pos);
+    if (!pos)
+        return TIRENV_ENOMEM;
+    c->pos = pos;
+    size_t *order = realloc(c->order, (cap + N) * sizeof *order);
+    if (!order)
+        return TIRENV_ENOMEM;
+    c->order = order;
+    size_t *env_first = realloc(c->env_first, (cap + N) * sizeof *env_first);
+    if (!env_first)
+        return TIRENV_ENOMEM;
+    c->env_first = env_first;
+    size_t *env_last = realloc(c->env_last, (cap + N) * sizeof *env_last);
+    if (!env_last)
+        return TIRENV_ENOMEM;
+    c->env_last = env_last;
+    double *rhs = realloc(c->rhs, (cap + N) * sizeof *rhs);
+    if (!rhs)
+        return TIRENV_ENOMEM;
+    c->rhs = rhs;
+    c->cap_rows = cap;
+    return TIRENV_OK;
+}
+
+/* The vertex rows: every ground vertex below the centre's height, within
+ * R0 of the centre and inside the tread segment's angle, as a row on the sector of elements it
+ * lies in (or on one element, if it lies on its ray). Appended after the n_rows present. */
+static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                       const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                       const double d[])
+{
+    const double *X = p->x, *Z = p->z, R0 = T->R0, R0sq = R0 * R0;
+    const double *st = T->sin_t, *ct = T->cos_t;
+    const size_t n = p->n, N = T->N;
+    /* A vertex within R0 of the centre lies within the angles of the elements that can reach
+     * the ground, [a, b], and one more either side (section 4.8): X - x = rho sin(psi). */
+    const size_t a1 = a > 0 ? a - 1 : 0, b1 = b + 1 < N ? b + 1 : N - 1;
+    const double lo = x + fmin(0, R0 * (ct[a1] >= 0 ? st[a1] : -1));
+    const double hi = x + fmax(0, R0 * (ct[b1] >= 0 ? st[b1] : 1));
+    size_t j = tirenv_profile__segment_at(p, lo);
+    while (j < n && X[j] < lo)
+        ++j;
+    /* The end of the run from a search, not a walk over it: a road at 1 mm has hundreds of
+     * vertices under the patch. */
+    size_t j_end = j;
+    if (j < n && X[j] <= hi) {
+        j_end = tirenv_profile__segment_near(p, j, hi);
+        j_end = j_end < j ? j : j_end;
+        while (j_end < n && X[j_end] <= hi)
+            ++j_end;
+    }
+    if (reserve_rows(c, c->n_rows + (j_end - j), N))
+        return TIRENV_ENOMEM;
+    const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
+    size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
+    /* the rays' penetrations at the ends of sector ci and the chord's slack there */
+    size_t ci = SIZE_MAX;
+    double P_l = 0, P_r = 0, slack_tau = 0;
+    /* rows is NULL while nothing was reserved (no vertex in reach): no offset on it then */
+    tirenv_springs__cc_row *out = c->rows ? c->rows + c->n_rows : NULL;
+    for (; j < j_end; ++j) {
+        const double dx = X[j] - x, dz = z - Z[j];
+        if (!(dz > 0))
+            continue; /* at or above the centre's height: outside the lower half */
+        const double rr = dx * dx + dz * dz;
+        if (!(rr < R0sq))
+            continue;
+        /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. The walk keeps the
+         * sigmas it computes: sigma_(i+1) < 0 ends the forward walk, and s_n = -sigma_(i+1)
+         * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
+         * products; rounding to nearest is symmetric), never 0. */
+        double s_n = 0; /* 0: not known */
+        while (i + 1 < N) {
+            const double u = dx * ct[i + 1] - dz * st[i + 1];
+            if (!(u >= 0)) {
+                s_n = -u;
+                break;
+            }
+            ++i;
+        }
+        double s_i = dx * ct[i] - dz * st[i];
+        while (i > 0 && s_i < 0) {
+            --i;
+            s_i = dx * ct[i] - dz * st[i];
+            s_n = 0;
+        }
+        if (s_i < 0)
+            continue; /* behind the first element */
+        const double rho = sqrt(rr), h = R0 - rho;
+        if (!(h > 0))
+            continue;
+        /* A row on the element alone (t snapped, or exactly on its ray) keeps t = 0 while
+         * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
+         * weights of a row between elements come later, for the rows that can bind
+         * (build_rows); dga_dz holds dt/dz until then. */
+        size_t r_i = i, r_j = i;
+        double r_t = 0, r_dt = 0;
+        if (s_i > 0) {
+            if (i + 1 >= N)
+                continue; /* beyond the last element's ray */
+            if (s_n == 0)
+                s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
+            const double S = s_i + s_n, t = s_i / S;
+            if (t >= 1 - t_snap) {
+                r_i = r_j = i + 1;
+            } else if (t > t_snap) {
+                /* Below the hull of the rays' own rows (build_rows' test with the rays'
+                 * penetrations, which the elements' rows only raise): never binds. */
+                if (ci != i) {
+                    ci = i;
+                    P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
+                    P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
+                    slack_tau = fabs(P_r - P_l) * tau_dev;
+                }
+                const double chord = (1 - t) * P_l + t * P_r - slack_tau;
+                if (!(h > chord * (1 + ab_lo * t * (1 - t))))
+                    continue;
+                r_j = i + 1;
+                r_t = t;
+                /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
+                r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
+            }
+        }
+        *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
+                                          .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
+                                          .dh_dz = -dz / rho, .id = (long)j};
+    }
+    c->n_rows = (size_t)(out - c->rows);
+    return TIRENV_OK;
+}
+
+/* The weights of a row between elements at its t (dga_dz holding dt/dz). */
+static void row_weights(const tirenv_springs__cc_tire *T, tirenv_springs__cc_row *r)
+{
+    const double dt_dz = r->dga_dz;
+    double da, db;
+    tirenv_springs__cc_weights(T, r->t, &r->ga, &r->gb, &da, &db);
+    r->tau = r->gb / (r->ga + r->gb);
+    r->dga_dz = da * dt_dz;
+    r->dgb_dz = db * dt_dz;
+}
+
+/* Rows ordered by sector, then t, then h: insertion sort (the walk gives nearly that order). */
+static void sort_rows(tirenv_springs__cc_row *r, size_t n)
+{
+    for (size_t k = 1; k < n; ++k) {
+        const tirenv_springs__cc_row v = r[k];
+        size_t m = k;
+        while (m > 0 && (r[m - 1].i > v.i ||
+                         (r[m - 1].i == v.i && (r[m - 1].t > v.t ||
+                                                (r[m - 1].t == v.t && r[m - 1].h > v.h))))) {
+            r[m] = r[m - 1];
+            --m;
+        }
+        r[m] = v;
+    }
+}
+
+/* Upper hull of the sector's points (0, P_l), the rows' (tau, h / (ga + gb)) for rows
+ * [first, first + m) and (1, P_r): a row reads (1 - tau) w_i + tau w_j >= h / (ga + gb), so
+ * only rows on the hull can bind (a line over [0, 1] above the hull's vertices is above every
+ * point), and keeping only them keeps the KKT systems nonsingular. The kept rows
+ * are appended at c->rows[*out]; stack has room for m + 2. */
+static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+                      size_t *stack, size_t *out)
+{
+    const tirenv_springs__cc_row *r = c->rows + first;
+    size_t top = 0;
+    /* point k: 0 the left end, 1..m the rows, m + 1 the right end */
+#define PT_T(k) ((k) == 0 ? 0.0 : (k) == m + 1 ? 1.0 : r[(k) - 1].tau)
+#define PT_H(k) ((k) == 0 ? P_l : (k) == m + 1 ? P_r : r[(k) - 1].h / (r[(k) - 1].ga + r[(k) - 1].gb))
+    for (size_t k = 0; k <= m + 1; ++k) {
+        while (top >= 2) {
+            const size_t o = stack[top - 2], a = stack[top - 1];
+            const double cross = (PT_T(a) - PT_T(o)) * (PT_H(k) - PT_H(o)) -
+                                 (PT_H(a) - PT_H(o)) * (PT_T(k) - PT_T(o));
+            if (cross < 0)
+                break; /* a strictly above the line o-k: a right turn */
+            --top;
+        }
+        stack[top++] = k;
+    }
+    /* Of two hull vertices within t_snap of each other in tau only the higher is kept (a
+     * vertex that near an end was made the element's own row: tau < t_snap needs t < tau). */
+    size_t kept = 0;
+    double tau_prev = 0, y_prev = 0;
+    for (size_t q = 1; q + 1 < top; ++q) {
+        const size_t k = stack[q];
+        const double y = PT_H(k);
+        if (kept > 0 && PT_T(k) - tau_prev < t_snap) {
+            if (y > y_prev) {
+                c->rows[*out - 1] = r[k - 1];
+                tau_prev = PT_T(k);
+                y_prev = y;
+            }
+            continue;
+        }
+        c->rows[(*out)++] = r[k - 1];
+        ++kept;
+        tau_prev = PT_T(k);
+        y_prev = y;
+    }
+#undef PT_T
+#undef PT_H
+}
+
+/* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
+ * upper hull, laid out element by element; sets f0, f1. */
+static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                      const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                      const double d[])
+{
+    const size_t N = T->N;
+    c->n_rows = 0;
+    if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
+        return TIRENV_ENOMEM;
+    const size_t nv = c->n_rows;
+    if (reserve_rows(c, 2 * nv + N + 2, N))
+        return TIRENV_ENOMEM;
+    tirenv_springs__cc_row *R = c->rows;
+    sort_rows(R, nv);
+    /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
+    size_t lo = N, hi = 0;
+    for (size_t e = a; a <= b && e <= b; ++e)
+        if (d[e] > 0) {
+            lo = e;
+            break;
+        }
+    for (size_t e = b + 1; a <= b && e-- > lo;)
+        if (d[e] > 0) {
+            hi = e;
+            break;
+        }
+    if (nv > 0) {
+        lo = R[0].i < lo ? R[0].i : lo;
+        const size_t top = R[nv - 1].t > 0 ? R[nv - 1].i + 1 : R[nv - 1].i;
+        hi = top > hi ? top : hi;
+    }
+    if (lo > hi) {
+        c->f0 = 1;
+        c->f1 = 0;
+        return TIRENV_OK;
+    }
+    /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_row holds
+     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. */
+    for (size_t e = lo; e <= hi; ++e) {
+        c->pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
+        c->pin_row[e] = SIZE_MAX;
+        c->sec_count[e] = 0;
+    }
+    for (size_t k = 0; k < nv; ++k)
+        if (R[k].t == 0 && R[k].h > c->pin_h[R[k].i]) {
+            c->pin_h[R[k].i] = R[k].h;
+            c->pin_row[R[k].i] = k;
+        }
+    /* Lay out the kept rows after the vertex rows, then move them to the front. */
+    size_t out = nv, k = 0;
+    size_t *stack = c->pos;
+    c->f0 = SIZE_MAX;
+    c->f1 = 0;
+    for (size_t e = lo; e <= hi; ++e) {
+        if (c->pin_h[e] > 0) {
+            const size_t src = c->pin_row[e];
+            c->pin_row[e] = out - nv;
+            if (src != SIZE_MAX)
+                R[out] = R[src];
+            else
+                R[out] = (tirenv_springs__cc_row){.i = e, .j = e, .t = 0, .tau = 0, .ga = 1,
+                                                  .gb = 0, .h = c->pin_h[e], .dga_dz = 0,
+                                                  .dgb_dz = 0, .dh_dz = NAN,
+                                                  .id = -1 - (long)e};
+            ++out;
+            c->f0 = e < c->f0 ? e : c->f0;
+            c->f1 = e;
+        } else {
+            c->pin_row[e] = SIZE_MAX;
+        }
+        while (k < nv && R[k].i < e)
+            ++k;
+        size_t first = k, m = 0;
+        while (k < nv && R[k].i == e) {
+            if (R[k].t > 0) {
+                if (m == 0)
+                    first = k;
+                ++m;
+            }
+            ++k;
+        }
+        c->sec_first[e] = out - nv;
+        if (m > 0 && e + 1 <= hi) {
+            const double P_r = c->pin_h[e + 1] > 0 ? c->pin_h[e + 1] : 0;
+            const double P_l = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
+            /* A row lies below the hull if h / (ga + gb) is at most the chord between the
+             * ends at its tau: with ga + gb >= 1 + ab_lo t (1 - t) and |tau - t| <=
+             * tau_dev, if h / (1 + ab_lo t (1 - t)) <= (1 - t) P_l + t P_r - |P_r - P_l|
+             * tau_dev. Such rows (nearly every vertex of a smooth road: the tread bows out
+             * between its tips) are dropped before their weights are computed. */
+            const double slack_tau = fabs(P_r - P_l) * T->tau_dev;
+            size_t kept = 0;
+            for (size_t q = first; q < first + m; ++q) {
+                const double t = R[q].t;
+                const double chord = (1 - t) * P_l + t * P_r - slack_tau;
+                if (R[q].h > chord * (1 + T->ab_lo * t * (1 - t))) {
+                    R[first + kept] = R[q];
+                    row_weights(T, &R[first + kept]);
+                    ++kept;
+                }
+            }
+            if (kept > 0)
+                hull_rows(c, first, kept, P_l, P_r, stack, &out);
+        }
+        c->sec_count[e] = out - nv - c->sec_first[e];
+        if (c->sec_count[e] > 0) {
+            c->f0 = e < c->f0 ? e : c->f0;
+            c->f1 = e + 1;
+        }
+    }
+    c->n_rows = out - nv;
+    memmove(R, R + nv, c->n_rows * sizeof *R);
+    if (c->f0 == SIZE_MAX) {
+        c->f0 = 1;
+        c->f1 = 0;
+    }
+    return TIRENV_OK;
+}
+
+int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                            const double d[], tirenv_diag *diag)
+{
+    if (build_rows(c, T, p, x, z, a, b, d))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
+                            "rows of the springs model");
+    return TIRENV_OK;
+}
