@@ -128,7 +128,7 @@ static int law_contact_length(const nn_state *st, double load, double *l_c, tire
     if (status || !st->nn)
         return status;
     double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
-    tirenv_nn_get_input_range(st->nn, lo, hi);
+    tirenv_nn_input_range(st->nn, lo, hi);
     const size_t i = TIRENV_NN_CONTACT_LENGTH;
     if (*l_c < lo[i] && *l_c >= lo[i] - l_c_range_tol)
         *l_c = lo[i];
