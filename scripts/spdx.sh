@@ -36,20 +36,34 @@ line_for() {
     esac
 }
 
-# The identifiers a file states: the word after each SPDX tag and its colon, on its line
-# or, where a comment wrapped it, at the start of the next (after " * ").
+# The identifiers each file states, one line per file: "FILE<tab>ID ID ..." (nothing after
+# the tab where it states none): the word after each SPDX tag and its colon, on its line or,
+# where a comment wrapped it, at the start of the next (after " * "). One perl for all files.
 ids_of() {
-    perl -0ne 'print "$1\n" while /SPDX-License-Identifier:[ \t]*(?:\n[ \t]*\*?[ \t]*)?([A-Za-z0-9.+-]+)/g' "$1"
+    perl -e 'for my $f (@ARGV) {
+        open(my $h, "<", $f) or die "$f: $!\n";
+        my $t = do { local $/; <$h> };
+        my @i = $t =~ /SPDX-License-Identifier:[ \t]*(?:\n[ \t]*\*?[ \t]*)?([A-Za-z0-9.+-]+)/g;
+        print "$f\t@i\n";
+    }' "$@"
 }
 
+present() {
+    for f in $(files); do
+        [ -f "$f" ] && echo "$f"
+    done
+}
+
+if [ "$mode" = list ]; then
+    present
+    exit 0
+fi
+tab=$(printf '\t')
 changed=0
-for f in $(files); do
-    [ -f "$f" ] || continue
-    if [ "$mode" = list ]; then
-        echo "$f"
-        continue
-    fi
-    ids=$(ids_of "$f")
+# shellcheck disable=SC2046
+all=$(ids_of $(present))
+while IFS=$tab read -r f ids; do
+    [ -n "$f" ] || continue
     case "$ids" in
         Apache-2.0) continue ;;
         *GPL-3.0-or-later* | "") ;;
@@ -70,6 +84,8 @@ for f in $(files); do
     fi
     chmod --reference="$f" "$tmp" 2>/dev/null || true
     mv "$tmp" "$f"
-done
+done <<EOF
+$all
+EOF
 [ "$mode" = check ] && [ "$changed" -eq 1 ] && exit 1
 exit 0

@@ -8,27 +8,15 @@
 # SPDX-License-Identifier: Apache-2.0
 set -u
 cmake=$1 build=$2 src=$3 python=$4
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/tirenv-pyinstall.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
 unset PYTHONPATH LD_LIBRARY_PATH TIRENV_INCLUDE_DIR TIRENV_LIBRARY_DIR TIRENV_DATA
-n=0 failed=0
-check() {
-    what=$1
-    shift
-    n=$((n + 1))
-    if "$@" >"$tmp/log" 2>&1; then
-        echo "ok $n - $what"
-    else
-        failed=$((failed + 1))
-        echo "not ok $n - $what"
-        sed 's/^/#   /' "$tmp/log" | tail -20
-    fi
-}
+# shellcheck source=tests/lib/tap_venv.sh
+. "$(dirname "$0")/../../tests/lib/tap_venv.sh"
+tap_begin pyinstall
 prefix=$tmp/prefix
 check "cmake --install into a temporary prefix" "$cmake" --install "$build" --prefix "$prefix"
 libdir=$(dirname "$(find "$prefix" -name tirenv.pc | head -1)")
-check "a virtual environment with Debian's packages (their pip too)" \
-    "$python" -m venv --without-pip --system-site-packages "$tmp/venv"
+tap_venv "a virtual environment with Debian's packages (their pip too)" "$python" "$tmp/venv" \
+    --without-pip
 cp -R "$src/python" "$tmp/src"  # pip builds in the tree it is given: not in the clone
 check "pip install --no-build-isolation --no-index ./python against the prefix" \
     env PKG_CONFIG_PATH="$libdir" "$tmp/venv/bin/python" -m pip install -q \
@@ -49,6 +37,4 @@ print(len(rows), "rows equal")
 PY
 check "its springs curve over a cleat is the installed tirenv envelope's" \
     "$tmp/venv/bin/python" "$tmp/curve.py" "$tmp/cli.csv"
-echo "1..$n"
-echo "$((n - failed)) passed, $failed failed"
-[ "$failed" -eq 0 ]
+tap_end

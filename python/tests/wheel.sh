@@ -9,21 +9,9 @@
 #   sh python/tests/wheel.sh WHEEL_DIR CLI PYTHON
 set -u
 wheels=$1 cli=$2 python=$3
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/tirenv-wheel.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-n=0 failed=0
-check() {
-    what=$1
-    shift
-    n=$((n + 1))
-    if "$@" >"$tmp/log" 2>&1; then
-        echo "ok $n - $what"
-    else
-        failed=$((failed + 1))
-        echo "not ok $n - $what"
-        sed 's/^/#   /' "$tmp/log" | tail -20
-    fi
-}
+# shellcheck source=tests/lib/tap_venv.sh
+. "$(dirname "$0")/../../tests/lib/tap_venv.sh"
+tap_begin wheel
 set -- "$wheels"/tirenv-*.whl
 check "make wheel wrote one wheel ($*)" test $# -eq 1 -a -f "$1"
 wheel=$1
@@ -39,8 +27,7 @@ check "it carries libtirenv under its soname beside the extension" \
 check "the extension's RUNPATH is \$ORIGIN and nothing else" \
     sh -c "readelf -d '$tmp'/x/tirenv/_native.*.so | grep -E 'RPATH|RUNPATH' | grep -qxF ' 0x000000000000001d (RUNPATH)            Library runpath: [\$ORIGIN]'"
 venv="$tmp/another place/venv"
-check "a fresh venv: $python -m venv --system-site-packages" \
-    "$python" -m venv --system-site-packages "$venv"
+tap_venv "a fresh venv: $python -m venv --system-site-packages" "$python" "$venv"
 check "pip install --no-index the wheel, with an empty environment" \
     env -i "$venv/bin/python" -m pip install -q --no-index "$wheel"
 "$cli" envelope --model springs --cleat 0.3,0.1 --contact-length 0.38 -o "$tmp/cli.csv" \
@@ -64,6 +51,4 @@ cd / || exit 2
 check "imported with env -i from /: the venv's package and libtirenv, version $version, the CLI's curve" \
     env -i "$venv/bin/python" "$tmp/use.py" "$venv" "$tmp/cli.csv" "$version"
 sed 's/^/# /' "$tmp/log"
-echo "1..$n"
-echo "$((n - failed)) passed, $failed failed"
-[ "$failed" -eq 0 ]
+tap_end

@@ -177,116 +177,126 @@ static double h_at(const tirenv_model_type *type, const tirenv_profile *p, doubl
  * cleat at random positions and loads: at most 1.1 mm for the springs, 0.55 mm for the cam;
  * as much comes from the 5 mm grid in x as from the load), and the r.m.s. seat acceleration of
  * the two runs within 1 %. */
-static void test_follows_the_load(void **state)
+static void follows_the_load(size_t i)
 {
-    (void)state;
     const tirenv_vehicle v = tractor();
     const tirenv_tire tire = tirenv_test_tire_before_identify();
     tirenv_profile *cleat = tirenv_profile_cleat(0.30, 0.05);
     const char *names[] = {"cam", "springs"};
-    for (size_t i = 0; i < 2; ++i) {
-        const tirenv_model_type *type = tirenv_model_type_find(names[i]);
-        tirenv_ride_settings s = cleat_run(10 / 3.6);
-        const size_t n = tirenv_ride_n_samples(&s);
-        tirenv_ride_sample *dir = malloc(n * sizeof *dir), *tab = malloc(n * sizeof *tab);
-        assert_true(dir && tab);
-        direct dd[2];
-        tirenv_ride_input fn[2];
-        tirenv_ride_table table[2];
-        double loads[2][N_FACTORS], *rows[2];
-        tirenv_diag d;
-        for (int axle = 0; axle < 2; ++axle) {
-            const double G0 = tirenv_vehicle_tire_load(&v, axle);
-            size_t m = 0;
-            rows[axle] = malloc(N_FACTORS * GRID_N * sizeof(double));
-            assert_non_null(rows[axle]);
-            tirenv_model *tm = tirenv_model_alloc(type, &tire);
-            assert_int_equal(tirenv_ride_table_build(tm, cleat, G0, grid_x0, grid_dx, GRID_N,
-                                                     loads[axle], rows[axle], &m, NULL, 0, &d),
-                             TIRENV_OK);
-            assert_true(m >= 8);  /* the cam's contact law ends below 3 times the load */
-            tirenv_model_free(tm);
-            table[axle] = (tirenv_ride_table){grid_x0, grid_dx, GRID_N, m, loads[axle],
-                                              rows[axle]};
-            dd[axle] = (direct){tirenv_model_alloc(type, &tire), grid_dx, 0};
-            assert_int_equal(tirenv_model_set(dd[axle].m, cleat, G0, &d), TIRENV_OK);
-            fn[axle] = (tirenv_ride_input){direct_input, &dd[axle], loads[axle][0],
-                                           loads[axle][m - 1], grid_dx};
-        }
-        if (tirenv_ride_run_input(&v, &fn[0], &fn[1], &s, dir, &d))
-            fail_msg("%s direct: %s", names[i], d.message);
-        assert_true(dd[0].calls > n);
-        /* The library's direct input (tirenv_ride_direct_input, what tirenv ride --enveloping
-         * direct runs): the tables' load range, and this test's run to the solver's tolerance
-         * (its models start each solve from where the load probe left them, not from G0's). */
-        tirenv_ride_sample *lib = malloc(n * sizeof *lib);
-        assert_non_null(lib);
-        tirenv_model *lm[2];
-        tirenv_ride_direct ld[2];
-        tirenv_ride_input lf[2];
-        for (int axle = 0; axle < 2; ++axle) {
-            const double G0 = tirenv_vehicle_tire_load(&v, axle);
-            lm[axle] = tirenv_model_alloc(type, &tire);
-            assert_int_equal(tirenv_model_set(lm[axle], cleat, G0, &d), TIRENV_OK);
-            assert_int_equal(tirenv_ride_direct_input(lm[axle], G0, grid_dx, &ld[axle],
-                                                      &lf[axle], &d), TIRENV_OK);
-            assert_true(lf[axle].load_min == loads[axle][0]);
-            assert_true(lf[axle].load_max == loads[axle][table[axle].m - 1]);
-            assert_true(lf[axle].dx == grid_dx && lf[axle].ctx == &ld[axle]);
-        }
-        assert_int_equal(tirenv_ride_run_input(&v, &lf[0], &lf[1], &s, lib, &d), TIRENV_OK);
-        for (size_t k = 0; k < n; ++k)
-            assert_true(samples_close(&lib[k], &dir[k], 1e-9));
-        tirenv_model_free(lm[0]);
-        tirenv_model_free(lm[1]);
-        free(lib);
-        assert_int_equal(tirenv_ride_run_dynamic(&v, &table[0], &table[1], &s, tab, &d), 0);
-        const double n_f = v.front.tires, G0_f = tirenv_vehicle_tire_load(&v, 0);
-        double G_min = INFINITY, G_max = 0, worst = 0;
-        size_t checked = 0, lifted = 0;
-        for (size_t k = 50; k < n; k += 37) {
-            const double G = dir[k].F_front / n_f, x = dir[k].x_front;
-            if (G == 0) { /* lifted off: the lightest load's input */
-                const double want = h_at(type, cleat, x, loads[0][0]);
-                assert_near(dir[k].w_front, want, i ? 1e-9 : 0, 0);
-                ++lifted;
-                continue;
-            }
-            if (!(G > loads[0][0] && G < loads[0][table[0].m - 1]))
-                continue;
-            const double want = h_at(type, cleat, x, G);
-            assert_near(dir[k].w_front, want, i ? 1e-9 : 0, 0);
-            G_min = fmin(G_min, G);
-            G_max = fmax(G_max, G);
-            ++checked;
-            /* The table at the table run's own load and position. */
-            const double G_t = tab[k].F_front / n_f;
-            if (G_t > loads[0][0] && G_t < loads[0][table[0].m - 1]) {
-                const double e = fabs(tab[k].w_front - h_at(type, cleat, tab[k].x_front, G_t));
-                worst = fmax(worst, e);
-            }
-        }
-        print_message("%s: %zu samples checked, tire load %.0f to %.0f N (static %.0f N), %zu "
-                      "lifted off; tables within %.3g mm\n", names[i], checked, G_min, G_max,
-                      G0_f, lifted, 1e3 * worst);
-        assert_true(checked >= 20 && lifted >= 1);
-        assert_true(G_min < 0.6 * G0_f && G_max > 1.5 * G0_f);
-        assert_true(worst < (i ? 1.6e-3 : 0.7e-3));
-        /* What the driver feels, over the same samples. */
-        double s_dir = 0, s_tab = 0;
-        for (size_t k = 0; k < n; ++k) {
-            s_dir += dir[k].seat_az * dir[k].seat_az;
-            s_tab += tab[k].seat_az * tab[k].seat_az;
-        }
-        assert_near(sqrt(s_tab / (double)n), sqrt(s_dir / (double)n), 0, 0.01);
-        for (int axle = 0; axle < 2; ++axle) {
-            free(rows[axle]);
-            tirenv_model_free(dd[axle].m);
-        }
-        free(dir);
-        free(tab);
+    const tirenv_model_type *type = tirenv_model_type_find(names[i]);
+    tirenv_ride_settings s = cleat_run(10 / 3.6);
+    const size_t n = tirenv_ride_n_samples(&s);
+    tirenv_ride_sample *dir = malloc(n * sizeof *dir), *tab = malloc(n * sizeof *tab);
+    assert_true(dir && tab);
+    direct dd[2];
+    tirenv_ride_input fn[2];
+    tirenv_ride_table table[2];
+    double loads[2][N_FACTORS], *rows[2];
+    tirenv_diag d;
+    for (int axle = 0; axle < 2; ++axle) {
+        const double G0 = tirenv_vehicle_tire_load(&v, axle);
+        size_t m = 0;
+        rows[axle] = malloc(N_FACTORS * GRID_N * sizeof(double));
+        assert_non_null(rows[axle]);
+        tirenv_model *tm = tirenv_model_alloc(type, &tire);
+        assert_int_equal(tirenv_ride_table_build(tm, cleat, G0, grid_x0, grid_dx, GRID_N,
+                                                 loads[axle], rows[axle], &m, NULL, 0, &d),
+                         TIRENV_OK);
+        assert_true(m >= 8);  /* the cam's contact law ends below 3 times the load */
+        tirenv_model_free(tm);
+        table[axle] = (tirenv_ride_table){grid_x0, grid_dx, GRID_N, m, loads[axle],
+                                          rows[axle]};
+        dd[axle] = (direct){tirenv_model_alloc(type, &tire), grid_dx, 0};
+        assert_int_equal(tirenv_model_set(dd[axle].m, cleat, G0, &d), TIRENV_OK);
+        fn[axle] = (tirenv_ride_input){direct_input, &dd[axle], loads[axle][0],
+                                       loads[axle][m - 1], grid_dx};
     }
+    if (tirenv_ride_run_input(&v, &fn[0], &fn[1], &s, dir, &d))
+        fail_msg("%s direct: %s", names[i], d.message);
+    assert_true(dd[0].calls > n);
+    /* The library's direct input (tirenv_ride_direct_input, what tirenv ride --enveloping
+     * direct runs): the tables' load range, and this test's run to the solver's tolerance
+     * (its models start each solve from where the load probe left them, not from G0's). */
+    tirenv_ride_sample *lib = malloc(n * sizeof *lib);
+    assert_non_null(lib);
+    tirenv_model *lm[2];
+    tirenv_ride_direct ld[2];
+    tirenv_ride_input lf[2];
+    for (int axle = 0; axle < 2; ++axle) {
+        const double G0 = tirenv_vehicle_tire_load(&v, axle);
+        lm[axle] = tirenv_model_alloc(type, &tire);
+        assert_int_equal(tirenv_model_set(lm[axle], cleat, G0, &d), TIRENV_OK);
+        assert_int_equal(tirenv_ride_direct_input(lm[axle], G0, grid_dx, &ld[axle],
+                                                  &lf[axle], &d), TIRENV_OK);
+        assert_true(lf[axle].load_min == loads[axle][0]);
+        assert_true(lf[axle].load_max == loads[axle][table[axle].m - 1]);
+        assert_true(lf[axle].dx == grid_dx && lf[axle].ctx == &ld[axle]);
+    }
+    assert_int_equal(tirenv_ride_run_input(&v, &lf[0], &lf[1], &s, lib, &d), TIRENV_OK);
+    for (size_t k = 0; k < n; ++k)
+        assert_true(samples_close(&lib[k], &dir[k], 1e-9));
+    tirenv_model_free(lm[0]);
+    tirenv_model_free(lm[1]);
+    free(lib);
+    assert_int_equal(tirenv_ride_run_dynamic(&v, &table[0], &table[1], &s, tab, &d), 0);
+    const double n_f = v.front.tires, G0_f = tirenv_vehicle_tire_load(&v, 0);
+    double G_min = INFINITY, G_max = 0, worst = 0;
+    size_t checked = 0, lifted = 0;
+    for (size_t k = 50; k < n; k += 37) {
+        const double G = dir[k].F_front / n_f, x = dir[k].x_front;
+        if (G == 0) { /* lifted off: the lightest load's input */
+            const double want = h_at(type, cleat, x, loads[0][0]);
+            assert_near(dir[k].w_front, want, i ? 1e-9 : 0, 0);
+            ++lifted;
+            continue;
+        }
+        if (!(G > loads[0][0] && G < loads[0][table[0].m - 1]))
+            continue;
+        const double want = h_at(type, cleat, x, G);
+        assert_near(dir[k].w_front, want, i ? 1e-9 : 0, 0);
+        G_min = fmin(G_min, G);
+        G_max = fmax(G_max, G);
+        ++checked;
+        /* The table at the table run's own load and position. */
+        const double G_t = tab[k].F_front / n_f;
+        if (G_t > loads[0][0] && G_t < loads[0][table[0].m - 1]) {
+            const double e = fabs(tab[k].w_front - h_at(type, cleat, tab[k].x_front, G_t));
+            worst = fmax(worst, e);
+        }
+    }
+    print_message("%s: %zu samples checked, tire load %.0f to %.0f N (static %.0f N), %zu "
+                  "lifted off; tables within %.3g mm\n", names[i], checked, G_min, G_max,
+                  G0_f, lifted, 1e3 * worst);
+    assert_true(checked >= 20 && lifted >= 1);
+    assert_true(G_min < 0.6 * G0_f && G_max > 1.5 * G0_f);
+    assert_true(worst < (i ? 1.6e-3 : 0.7e-3));
+    /* What the driver feels, over the same samples. */
+    double s_dir = 0, s_tab = 0;
+    for (size_t k = 0; k < n; ++k) {
+        s_dir += dir[k].seat_az * dir[k].seat_az;
+        s_tab += tab[k].seat_az * tab[k].seat_az;
+    }
+    assert_near(sqrt(s_tab / (double)n), sqrt(s_dir / (double)n), 0, 0.01);
+    for (int axle = 0; axle < 2; ++axle) {
+        free(rows[axle]);
+        tirenv_model_free(dd[axle].m);
+    }
+    free(dir);
+    free(tab);
     tirenv_profile_free(cleat);
+}
+
+/* The cam and the springs model apart, so that CTest can run them side by side. */
+static void test_follows_the_load_cam(void **state)
+{
+    (void)state;
+    follows_the_load(0);
+}
+
+static void test_follows_the_load_springs(void **state)
+{
+    (void)state;
+    follows_the_load(1);
 }
 
 /* Refusals: a table whose loads do not increase, a function without a load range; an input
@@ -391,13 +401,14 @@ static void test_balance_budget(void **state)
             fail_msg("no \"%s\" in: %s", want[i], d.message);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_constant_load_is_static),
-        cmocka_unit_test(test_follows_the_load),
+        cmocka_unit_test(test_follows_the_load_cam),
+        cmocka_unit_test(test_follows_the_load_springs),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_balance_budget),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return tirenv_test_run(argc, argv, tests);
 }
