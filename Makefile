@@ -52,9 +52,10 @@ test-slurm: build deps-test
 
 # Debug build under AddressSanitizer + UBSan in ASAN_BUILD, and its tests: all but the labels
 # slow, install, slurm and interop (and no fuzz harnesses: TIRENV_FUZZ=OFF; make test ran them).
+# At -O1: the sanitizers find the same errors, and the tests take about half the time of -O0.
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
-	    -DTIRENV_FUZZ=OFF >/dev/null
+	    -DTIRENV_FUZZ=OFF '-DCMAKE_C_FLAGS_DEBUG=-g -O1' >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm|interop$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 

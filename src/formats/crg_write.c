@@ -48,7 +48,10 @@ static void format_field(char *buf, size_t w, double v)
     }
     const double ef = fixed[0] ? fabs(strtod(fixed, NULL) - v) : INFINITY;
     const double es = sci[0] ? fabs(strtod(sci, NULL) - v) : INFINITY;
-    snprintf(buf, w + 1, "%s", ef <= es ? fixed : sci);
+    const char *best = ef <= es ? fixed : sci; /* w characters, or "" */
+    const size_t len = strlen(best) < w ? strlen(best) : w;
+    memcpy(buf, best, len);
+    buf[len] = '\0';
 }
 
 static int check_layout(const char *path, const tirenv_crg_layout *l, tirenv_diag *diag)
