@@ -26,7 +26,7 @@
 
 /* k_g / k_t: the contact layer between the ground and the tread surface (docs/models.md 5.3),
  * and k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
-static const double RING_GROUND_LAYER = 1e3;
+static const double RING_GROUND_LAYER = 1e4;
 static const double RING_BELT_LAYER = 1e3;
 enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, BAND_P = 4, TAIL = 4, NB = 6 };
 static const double shear_sigma = 1e-4;    /* Armijo's sufficient decrease */
