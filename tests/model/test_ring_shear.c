@@ -125,7 +125,7 @@ static void test_rays_ignore_shear(void **state)
  * continuous layer's exp(-s / l)), and the blade's force tends to that of a Pasternak layer on
  * a rigid base, delta (k_c a + 2 sqrt(k_s k_c)) for a blade of width a pressed by delta. The
  * flat ground 30 mm below the tread, within reach but untouched, widens the window so that
- * the decay is seen on 40 nodes either side. Returns |F_z / closed form - 1|. */
+ * the decay is seen on its 77 nodes either side. Returns |F_z / closed form - 1|. */
 static double blade_on_stiff_belt(double dtheta)
 {
     tirenv_tire t = tirenv_tire_default();
@@ -145,8 +145,11 @@ static double blade_on_stiff_belt(double dtheta)
     const double c = 2 + (h / l) * (h / l), ratio = 0.5 * (c - sqrt(c * c - 4));
     const size_t i0 = r->i0;
     assert_true(r->lo + 45 < i0 && i0 + 45 < r->lo + r->n);
+    /* Up to the window's last nodes: the exterior's condensation holds the tail as the nodes
+     * beyond would (a free end would bend the ratio there). */
+    const size_t k_end = (i0 - r->lo < r->lo + r->n - 1 - i0 ? i0 - r->lo : r->lo + r->n - 1 - i0);
     double worst = 0;
-    for (size_t k = 4; k < 40; ++k)
+    for (size_t k = 4; k < k_end; ++k)
         for (int side = -1; side <= 1; side += 2) {
             const size_t j = side < 0 ? i0 - k : i0 + k, jn = side < 0 ? j - 1 : j + 1;
             const double v = u[j] - w[j], vn = u[jn] - w[jn];
