@@ -94,6 +94,28 @@ static int band_factor(tband *A)
         const double lii = sqrt(c[0]), inv = 1 / lii;
         c[0] = lii;
         const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
+        if (kmax == BAND_P && t == TAIL) {
+            /* The interior column, unrolled: the same operations on each entry as below. */
+            const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
+            c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
+            double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+                   *r4 = r3 + (BAND_P + 1);
+            r1[0] -= c1 * c1, r1[1] -= c2 * c1, r1[2] -= c3 * c1, r1[3] -= c4 * c1;
+            r2[0] -= c2 * c2, r2[1] -= c3 * c2, r2[2] -= c4 * c2;
+            r3[0] -= c3 * c3, r3[1] -= c4 * c3;
+            r4[0] -= c4 * c4;
+            double bi[TAIL];
+            for (size_t a = 0; a < TAIL; ++a) {
+                double *b = A->B[a] + i;
+                bi[a] = b[0] * inv;
+                b[0] = bi[a];
+                b[1] -= bi[a] * c1, b[2] -= bi[a] * c2, b[3] -= bi[a] * c3, b[4] -= bi[a] * c4;
+            }
+            for (size_t a = 0; a < TAIL; ++a)
+                for (size_t b = 0; b <= a; ++b)
+                    A->T[a][b] -= bi[a] * bi[b];
+            continue;
+        }
         for (size_t k = 1; k <= kmax; ++k)
             c[k] *= inv;
         for (size_t a = 0; a < t; ++a)
@@ -136,8 +158,16 @@ static void band_solve(const tband *A, double x[])
         y[a] = x[m + a];
     for (size_t i = 0; i < m; ++i) {
         double v = x[i];
-        for (size_t k = 1; k <= BAND_P && k <= i; ++k)
-            v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
+        if (i >= BAND_P) { /* unrolled: the same operations in the same order */
+            const double *l = L + (BAND_P + 1) * (i - 1);
+            v -= l[1] * x[i - 1];
+            v -= l[-(BAND_P + 1) + 2] * x[i - 2];
+            v -= l[-2 * (BAND_P + 1) + 3] * x[i - 3];
+            v -= l[-3 * (BAND_P + 1) + 4] * x[i - 4];
+        } else {
+            for (size_t k = 1; k <= i; ++k)
+                v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
+        }
         x[i] = v / L[(BAND_P + 1) * i];
         for (size_t a = 0; a < t; ++a)
             y[a] -= A->B[a][i] * x[i];
@@ -155,8 +185,16 @@ static void band_solve(const tband *A, double x[])
     }
     for (size_t i = m; i-- > 0;) {
         double v = x[i];
-        for (size_t k = 1; k <= BAND_P && i + k < m; ++k)
-            v -= L[(BAND_P + 1) * i + k] * x[i + k];
+        if (i + BAND_P < m) {
+            const double *l = L + (BAND_P + 1) * i;
+            v -= l[1] * x[i + 1];
+            v -= l[2] * x[i + 2];
+            v -= l[3] * x[i + 3];
+            v -= l[4] * x[i + 4];
+        } else {
+            for (size_t k = 1; k + i < m; ++k)
+                v -= L[(BAND_P + 1) * i + k] * x[i + k];
+        }
         for (size_t a = 0; a < t; ++a)
             v -= A->B[a][i] * x[m + a];
         x[i] = v / L[(BAND_P + 1) * i];
@@ -496,6 +534,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         r->pts[k].st = 255;
     set_states(r, x);
     size_t it = 0;
+    int factored = 0; /* the factor in T->win is that of the final states */
     for (; it < SHEAR_MAX_ITER; ++it) {
         assemble(r, Q, xn);
         if (band_factor(&T->win))
@@ -504,8 +543,10 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         double step = 0;
         for (size_t i = 0; i < N; ++i)
             step = fmax(step, fabs(xn[i] - x[i]));
-        if (set_states(r, xn) == 0 || step <= shear_step_tol) {
+        const size_t changed = set_states(r, xn);
+        if (changed == 0 || step <= shear_step_tol) {
             memcpy(x, xn, N * sizeof *x);
+            factored = changed == 0;
             break;
         }
         const double E0 = energy(r, Q, x, g);
@@ -532,10 +573,13 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the shear-coupled tread contact of %zu points on %zu nodes did not "
                             "settle in %d Newton steps", r->n_pts, n, SHEAR_MAX_ITER);
-    /* The factor of the final states, for dF_z/dz. */
-    assemble(r, Q, xt);
-    if (band_factor(&T->win))
-        return broke_down(n, diag);
+    /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
+     * change with it: the same matrix). */
+    if (!factored) {
+        assemble(r, Q, xt);
+        if (band_factor(&T->win))
+            return broke_down(n, diag);
+    }
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->w[j] = T->u[j] = 0;
     r->warm_lo = lo;
