@@ -42,7 +42,7 @@ tirenv_tire tirenv_tire_default(void)
             .T = 0,
             .k_f = 1.1e5,
             .k_t = 1.5e7,
-            .G_t = 1.0e6,
+            .G_t = 0, /* the Winkler tread; TREAD_SHEAR > 0 couples it in shear (5.3) */
             .dtheta = M_PI / 1440.0, /* converged: docs/models.md section 5.6 */
             .lug_count = 0,
             .lug_fraction = 0.5,
