@@ -28,7 +28,8 @@
  * and k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
 static const double RING_GROUND_LAYER = 1e4;
 static const double RING_BELT_LAYER = 1e3;
-enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, BAND_P = 4, TAIL = 4, NB = 6 };
+enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, SHEAR_POLISH = 8, BAND_P = 4, TAIL = 4,
+       NB = 6 };
 static const double shear_sigma = 1e-4;    /* Armijo's sufficient decrease */
 static const double shear_step_tol = 1e-12; /* m: as ring_smooth.c */
 static const double shear_stall_tol = 1e-6; /* m: as ring_smooth.c */
@@ -533,7 +534,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
     for (size_t k = 0; k < r->n_pts; ++k)
         r->pts[k].st = 255;
     set_states(r, x);
-    size_t it = 0;
+    size_t it = 0, polish = 0; /* full Newton steps taken after the line search stalled */
     int factored = 0; /* the factor in T->win is that of the final states */
     for (; it < SHEAR_MAX_ITER; ++it) {
         assemble(r, Q, xn);
@@ -549,6 +550,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
             factored = changed == 0;
             break;
         }
+        /* After a stall, full Newton steps: E's round-off hides their decrease, but the states
+         * settle within a few (a consistent set of states is the unique minimiser, whatever
+         * the start: tracks of equal copies agree to round-off); if a point keeps flipping,
+         * accept the Newton point as the stall did. */
+        if (polish > 0) {
+            memcpy(x, xn, N * sizeof *x);
+            if (++polish > SHEAR_POLISH)
+                break;
+            continue;
+        }
         const double E0 = energy(r, Q, x, g);
         double slope = 0;
         for (size_t i = 0; i < N; ++i)
@@ -562,9 +573,12 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                 break;
         }
         if (b == SHEAR_BACKTRACK && step <= shear_stall_tol) {
+            /* No step of at least 2^-20 of the way lowers E: x is the minimum to E's round-off,
+             * the Newton point differs from it by a few points at zero compression flipping.
+             * Take it, with its states, and polish (above). */
             memcpy(x, xn, N * sizeof *x);
-            set_states(r, x);
-            break;
+            polish = 1;
+            continue;
         }
         memcpy(x, xt, N * sizeof *x);
         set_states(r, x);
