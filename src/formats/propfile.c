@@ -747,6 +747,8 @@ static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *
             case TIRENV_PROPFILE_REAL: {
                 double v;
                 memcpy(&v, field, sizeof v);
+                if (e->omit_zero && v == 0)
+                    continue;
                 pf_format_real(value, sizeof value, v);
                 break;
             }

@@ -42,6 +42,9 @@ typedef struct {
     signed char dim[TIRENV_UNIT_KINDS];
     unsigned given;          /* a bit set in the schema's given field when the key has a
                               * value from a file or --set; 0: not tracked */
+    int omit_zero;           /* REAL: not written when 0, a key added after files were
+                              * shipped whose 0 is the default and the former behaviour, so
+                              * that they are written as before and read back the same */
 } tirenv_propfile__key;
 
 /* Table entries. The macro parameters avoid the member names: a parameter called key would
