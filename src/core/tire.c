@@ -42,6 +42,7 @@ tirenv_tire tirenv_tire_default(void)
             .T = 0,
             .k_f = 1.1e5,
             .k_t = 1.5e7,
+            .G_t = 0, /* the Winkler tread; TREAD_SHEAR > 0 couples it in shear (5.3) */
             .dtheta = M_PI / 1440.0, /* converged: docs/models.md section 5.6 */
             .lug_count = 0,
             .lug_fraction = 0.5,
@@ -144,6 +145,7 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
         (status = plausible("BELT_PRETENSION", r->T, 0, 1e7, "N", diag)) ||
         (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 0, 1e10, "N/m^2", diag)) ||
         (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e13, "N/m^2", diag)) ||
+        (status = plausible("TREAD_SHEAR", r->G_t, 0, 1e9, "Pa", diag)) ||
         (status = plausible("NODE_ANGLE", r->dtheta, 2 * M_PI / TIRE_RING_MAX_NODES,
                             M_PI / 8, "rad", diag)) ||
         (status = plausible("FORCE_TOLERANCE", eq->eps_F, 0, 100, "N", diag)) ||
@@ -226,6 +228,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->k_t > 0 && isfinite(r->k_t)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_STIFFNESS",
                             "must be positive (N/m^2), got %g", r->k_t);
+    if (!(r->G_t >= 0 && isfinite(r->G_t)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_SHEAR",
+                            "must be zero or a positive shear modulus (Pa), got %g", r->G_t);
     /* The belt's stiffness per mode is EI s^2/R^4 + T_p s/R^2 + k_f with s = n^2 - 1 >= -1,
      * T_p = T + p b R and k_f = k_c + gamma p (the air's shares, docs/models.md section 5.1;
      * gamma as tirenv_ring__sidewall_gamma); pretension lowers it for n = 0, and too much

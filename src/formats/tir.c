@@ -85,6 +85,8 @@ static const tirenv_propfile__key tir_keys[] = {
              "k_f: sidewall + air foundation per unit belt length, N/m^2"),
     TIR_REAL("ENVELOPING_RING", "TREAD_STIFFNESS", ring.k_t, -2, 1, 0,
              "k_t: tread brush stiffness per unit belt length, N/m^2"),
+    TIR_REAL("ENVELOPING_RING", "TREAD_SHEAR", ring.G_t, -2, 1, 0,
+             "G_t: tread rubber shear modulus, Pa (0: a Winkler tread)"),
     TIR_REAL("ENVELOPING_RING", "NODE_ANGLE", ring.dtheta, 0, 0, 1,
              "dtheta: node spacing around the full circle, rad"),
     TIR_REAL("ENVELOPING_RING", "LUG_COUNT", ring.lug_count, 0, 0, 0,

@@ -121,6 +121,15 @@ tirenv_ring *tirenv_ring_alloc(double R0, const tirenv_ring_params *par)
         tirenv_ring_free(r);
         return NULL;
     }
+    /* The shear-coupled tread (TREAD_SHEAR > 0) on the continuous contact; the rays keep the
+     * Winkler tread. */
+    if (par->contact == TIRENV_RING_CONTINUOUS && tirenv_ring__tread_shear(par) > 0) {
+        r->tread = tirenv_ring__tread_alloc(M, r->R, par, tirenv_ring__belt_stencil(r->belt));
+        if (!r->tread) {
+            tirenv_ring_free(r);
+            return NULL;
+        }
+    }
     return r;
 }
 
@@ -134,6 +143,7 @@ void tirenv_ring_free(tirenv_ring *r)
     free(r->cuts);
     free(r->lines);
     tirenv_ring__belt_free(r->belt);
+    tirenv_ring__tread_free(r->tread);
     free(r);
 }
 
@@ -146,7 +156,7 @@ size_t tirenv_ring_belt_contacts(const tirenv_ring *r) { return r->n_belt; }
 
 /* Tread stiffness per node: lugs move with the tread, which turns by x/R0 as the tire rolls
  * forward, so the node at theta sees the tread point that was at theta + x/R0 at x = 0. */
-static double tread_kappa(const tirenv_ring *r, double theta, double x)
+double tirenv_ring__tread_kappa(const tirenv_ring *r, double theta, double x)
 {
     const tirenv_ring_params *p = &r->par;
     double k_t = p->k_t;
@@ -241,7 +251,7 @@ static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     r->n = last - first + 1;
     for (size_t j = first; j <= last; ++j)
         if (r->d[j] > -INFINITY)
-            r->kappa[j] = tread_kappa(r, r->theta[j], x);
+            r->kappa[j] = tirenv_ring__tread_kappa(r, r->theta[j], x);
 }
 
 /* The continuous contact's window: the nodes whose interval holds a point of ground within
@@ -271,7 +281,7 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
         }
         first = q->j < first ? q->j : first;
         last = q->j + 1 > last ? q->j + 1 : last;
-        q->k_t = tread_kappa(r, q->phi, x) / (r->R * r->dth);
+        q->k_t = tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth);
     }
     if (first > last)
         return 0;
@@ -331,7 +341,9 @@ static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, doub
     *fx = *fz = 0;
     if (dfz_dz)
         *dfz_dz = 0;
-    if (r->n)
+    if (r->n && r->tread)
+        status = tirenv_ring__solve_shear(r, x, fx, fz, dfz_dz, diag);
+    else if (r->n)
         status = tirenv_ring__solve_smooth(r, fx, fz, dfz_dz, diag);
     if (status) {
         r->n = 0;
@@ -339,7 +351,13 @@ static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, doub
         r->warm_n = 0; /* nothing of a failed solve is reported or reused */
         return status;
     }
-    summarise_smooth(r);
+    if (r->tread) { /* the contact counts; tread_max is the solve's */
+        const double tread_max = r->n ? r->tread_max : 0;
+        summarise_smooth(r);
+        r->tread_max = tread_max;
+    } else {
+        summarise_smooth(r);
+    }
     if (contacts)
         *contacts = r->n_contact;
     r->patch = r->n ? patch_length_smooth(r) : 0;
@@ -427,6 +445,15 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
 {
     const size_t lo = r->lo, hi = r->lo + r->n;
+    if (r->tread && w) {
+        /* Outside the window the unloaded belt is held by its tread as well as its ends. */
+        if (tirenv_ring__tread_exterior(r, w))
+            for (size_t j = 0; j < r->M; ++j)
+                w[j] = NAN;
+        for (size_t j = lo; j < hi; ++j)
+            w[j] = r->w[j];
+        w = NULL;
+    }
     if (r->par.contact == TIRENV_RING_CONTINUOUS) {
         for (size_t j = 0; j < r->M; ++j) {
             const int inside = j >= lo && j < hi;

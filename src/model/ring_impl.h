@@ -21,6 +21,11 @@
  * length is first needed. */
 typedef struct tirenv_ring_belt tirenv_ring_belt;
 
+/* The tread coupled in shear along the arc (ring_shear.c, docs/models.md section 5.3): its
+ * constants, the exterior's condensation per window length, the banded system of the window's
+ * belt and tread surface, and the tread surface's displacement per node. */
+typedef struct tirenv_ring_tread tirenv_ring_tread;
+
 /* NULL if out of memory. R: belt radius (m), dtheta = 2 pi / M (rad). The caller has checked
  * the parameters (tirenv_tire_check: K is positive definite). */
 tirenv_ring_belt *tirenv_ring__belt_alloc(size_t M, double R, const tirenv_ring_params *par);
@@ -125,6 +130,7 @@ struct tirenv_ring {
     tirenv_ring_piece *lines;
     size_t cap_lines;
     double *g;             /* per node: the belt layer's share of F, N */
+    tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
 };
 
 /* The quadrature points of the continuous contact over nodes ja .. jb (ring_ground.c):
@@ -136,6 +142,32 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
  * per point; TIRENV_ENOCONV with diag if Newton does not settle. dfz_dz (may be NULL). */
 int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *dfz_dz,
                               tirenv_diag *diag);
+
+/* The tread's shear stiffness k_s = G_t t_r b per unit belt length (N): TREAD_SHEAR times the
+ * tread depth and BELT_WIDTH. Zero: a Winkler tread (ring_smooth.c). */
+double tirenv_ring__tread_shear(const tirenv_ring_params *par);
+
+/* NULL if out of memory. stencil: the belt's (tirenv_ring__belt_stencil). */
+tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_ring_params *par,
+                                            const double stencil[3]);
+void tirenv_ring__tread_free(tirenv_ring_tread *T);
+
+/* Per node (global index): the tread surface's inward displacement u over the last window, m. */
+double *tirenv_ring__tread_u(tirenv_ring_tread *T);
+
+/* The shear-coupled tread's contact on the window r->lo, r->n, the centre at abscissa x_c (m,
+ * for the lugs): w, u, F, g per node, e (the ground's overlap with the tread surface) and f
+ * per point, r->tread_max; TIRENV_ENOCONV with diag if Newton does not settle. */
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
+                             double *dfz_dz, tirenv_diag *diag);
+
+/* w (m) of the nodes outside the last window, from the exterior's exact solve (allocates;
+ * diagnostics only). Nonzero if out of memory. */
+int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[]);
+
+/* A node's tread stiffness k_t R dtheta (N/m) at angle theta (rad) with the centre at x (m):
+ * LUG_GROOVE_RATIO between lugs, which turn with the tire (ring.c). */
+double tirenv_ring__tread_kappa(const tirenv_ring *r, double theta, double x);
 
 /* (S w)_i: the belt force holding window node i at w (ring_contact.c). */
 double tirenv_ring__belt_force(const tirenv_ring *r, const double (*q)[4], const double w[],

@@ -36,6 +36,7 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->ring.T, b->ring.T);
     assert_bits_equal(a->ring.k_f, b->ring.k_f);
     assert_bits_equal(a->ring.k_t, b->ring.k_t);
+    assert_bits_equal(a->ring.G_t, b->ring.G_t);
     assert_bits_equal(a->ring.dtheta, b->ring.dtheta);
     assert_bits_equal(a->ring.lug_count, b->ring.lug_count);
     assert_bits_equal(a->ring.lug_fraction, b->ring.lug_fraction);
@@ -68,7 +69,7 @@ static tirenv_tire entropic_tire(void)
         .springs = {.R0 = 0.6837, .c_r = 1.5831e6, .c_b = 8734.29, .phi = 2.9137,
                     .dphi = 0.0071893},
         .ring = {.t_r = 0.0417, .EI = 613.7, .T = 31872.5, .k_f = 1.0931e6, .k_t = 3.8317e6,
-                 .dtheta = 0.0093731, .lug_count = 23, .lug_fraction = 0.4371,
+                 .G_t = 7.317e5, .dtheta = 0.0093731, .lug_count = 23, .lug_fraction = 0.4371,
                  .lug_ratio = 0.3119, .b_p = 0.3271, .alpha_s = 1.1173, .p = 137913.7,
                  .p_nom = 151374.9},
         .eq = {.method = TIRENV_EQ_BRENT, .eps_F = 3.7e-7, .eps_z = 2.9e-11, .max_iter = 73,
@@ -410,6 +411,16 @@ static void test_write_read_round_trip(void **state)
     assert_non_null(strstr(text, "\nUNLOADED_RADIUS          = 0.68 "));
     assert_non_null(strstr(text, "\nMETHOD                   = 'newton' "));
     assert_non_null(strstr(text, "\nLENGTH                   = 'meter' "));
+    assert_non_null(strstr(text, "\nTREAD_SHEAR              = 0 "));
+    const tirenv_tire sheared = entropic_tire();
+    assert_int_equal(tirenv_tir_write(path, &sheared, &d), TIRENV_OK);
+    fp = fopen(path, "r");
+    assert_non_null(fp);
+    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
+    fclose(fp);
+    const char *line = strstr(text, "\nTREAD_SHEAR              = ");
+    assert_non_null(line);
+    assert_true(strtod(line + 28, NULL) == sheared.ring.G_t);
 }
 
 static void test_write_refuses_unphysical(void **state)

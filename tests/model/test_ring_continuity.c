@@ -2,7 +2,7 @@
 /* The ring's continuous contact (docs/models.md section 5.3) is continuous in x: over seeded
  * random cleats, blades and steps, h and F_x at every vertex of the obstacle and 1e-12 m to
  * either side agree; the paper's rays (CONTACT = 'rays') jump there, which shows the test can
- * fail. On flat ground the continuous contact is the rays' exactly. The contact law of the
+ * fail; the same with the tread coupled in shear (TREAD_SHEAR > 0). On flat ground the continuous contact is the rays' exactly. The contact law of the
  * continuous contact: the belt's equilibrium S w = F node by node (the window against the
  * whole ring's compliance) and the hub force as the sum of the node forces' components. */
 #include <math.h>
@@ -24,13 +24,14 @@ static tirenv_profile *random_obstacle(tirenv_rng *rng, int kind)
 }
 
 /* The largest |h(x +- 1e-12) - h(x)| (m) and |F_x(x +- 1e-12) - F_x(x)| (N) over the
- * obstacle's vertices and positions near them, for one contact kind. The equilibrium is
- * solved to eps_z = 1e-10 m, far inside the 1e-6 m of the target. */
-static void jumps(tirenv_ring_contact_kind contact, unsigned long seed, double *dh_max,
-                  double *dfx_max, size_t *checked)
+ * obstacle's vertices and positions near them, for one contact kind and TREAD_SHEAR G_t (Pa).
+ * The equilibrium is solved to eps_z = 1e-10 m, far inside the 1e-6 m of the target. */
+static void jumps(tirenv_ring_contact_kind contact, double G_t, unsigned long seed,
+                  double *dh_max, double *dfx_max, size_t *checked)
 {
     tirenv_tire t = tirenv_tire_default();
     t.ring.contact = contact;
+    t.ring.G_t = G_t;
     tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
     assert_non_null(m);
     tirenv_rng *rng = tirenv_rng_alloc(seed);
@@ -72,14 +73,29 @@ static void test_continuous_in_x(void **state)
     (void)state;
     double dh, dfx, dh_rays, dfx_rays;
     size_t n, n_rays;
-    jumps(TIRENV_RING_CONTINUOUS, 23, &dh, &dfx, &n);
-    jumps(TIRENV_RING_RAYS, 23, &dh_rays, &dfx_rays, &n_rays);
+    jumps(TIRENV_RING_CONTINUOUS, 0, 23, &dh, &dfx, &n);
+    jumps(TIRENV_RING_RAYS, 0, 23, &dh_rays, &dfx_rays, &n_rays);
     print_message("%zu positions: continuous max |dh| %.3g m, |dfx| %.3g N; rays %.3g m, "
                   "%.3g N\n", n, dh, dfx, dh_rays, dfx_rays);
     assert_true(n > 50);
     assert_true(dh <= 1e-6);
     assert_true(dfx <= 1);
     assert_true(dh_rays > 1e-4);
+}
+
+/* The same with the tread coupled in shear (TREAD_SHEAR 1 MPa, off by default; docs/models.md
+ * section 5.3), over other draws: the same targets. */
+static void test_continuous_in_x_with_shear(void **state)
+{
+    (void)state;
+    double dh, dfx;
+    size_t n;
+    jumps(TIRENV_RING_CONTINUOUS, 1.0e6, 29, &dh, &dfx, &n);
+    print_message("TREAD_SHEAR 1 MPa, %zu positions: max |dh| %.3g m, |dfx| %.3g N\n", n, dh,
+                  dfx);
+    assert_true(n > 50);
+    assert_true(dh <= 1e-6);
+    assert_true(dfx <= 1);
 }
 
 /* On flat ground with its one vertex under the centre (at a node's angle) there are no
@@ -188,6 +204,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_continuous_in_x),
+        cmocka_unit_test(test_continuous_in_x_with_shear),
         cmocka_unit_test(test_flat_is_the_rays),
         cmocka_unit_test(test_contact_state),
         cmocka_unit_test(test_converged_at_default),

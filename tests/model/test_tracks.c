@@ -147,6 +147,49 @@ static void test_equal_copies(void **state)
     tirenv_profile_free(cleat);
 }
 
+/* The same for the ring with its tread coupled in shear (TREAD_SHEAR 1 MPa, an option off by
+ * default; docs/models.md section 5.3), three copies against one. Its Newton solve used to
+ * accept the Newton point when the line search stalled (E's round-off hiding the decrease),
+ * which left the answer depending on the warm start: h 1.5e-9 m apart, the slope 1.2e-9. It
+ * now polishes with full Newton steps to a consistent set of contact states, the unique
+ * minimiser: measured 3.9e-11 m and 7.4e-11 (3 stalls, all settled), of the order of the
+ * equilibrium's step tolerance eps_z = 1e-10 m and not shrinking with it (1.6e-11 m at
+ * eps_z = 1e-12): the round-off of the stiffer belt-and-tread solve, whose contact layer is
+ * 1e4 k_t. Checked with margins: 1e-10 m, 5e-10. */
+static void test_equal_copies_with_shear(void **state)
+{
+    (void)state;
+    tirenv_tire tire = tirenv_test_default_tire();
+    tire.ring.G_t = 1.0e6;
+    tirenv_profile *cleat = tirenv_profile_cleat(cleat_L, cleat_H);
+    tirenv_profile *c1 = copy_of(cleat), *c2 = copy_of(cleat);
+    double x[N_POS];
+    positions(x);
+    static tirenv_point ref[N_POS], got[N_POS];
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &tire);
+    tirenv_diag d;
+    assert_int_equal(tirenv_model_set(m, cleat, load, &d), TIRENV_OK);
+    curve(m, x, ref);
+    const tirenv_profile *three[3] = {cleat, c1, c2};
+    assert_int_equal(tirenv_model_set_tracks(m, 3, three, NULL, load, &d), TIRENV_OK);
+    curve(m, x, got);
+    double dh = 0, lifted = 0;
+    for (size_t k = 0; k < N_POS; ++k) {
+        assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
+        assert_near(got[k].h, ref[k].h, 1e-10, 0);
+        assert_near(got[k].slope, ref[k].slope, 5e-10, 0);
+        assert_near(got[k].fz, ref[k].fz, eq_F_tol(&tire), 0);
+        dh = fmax(dh, fabs(got[k].h - ref[k].h));
+        lifted = fmax(lifted, ref[k].h);
+    }
+    print_message("TREAD_SHEAR 1 MPa, three copies against one: max |dh| %.3g m\n", dh);
+    assert_true(lifted > 0.01); /* the cleat lifts the hub: the comparison can fail */
+    tirenv_model_free(m);
+    tirenv_profile_free(c2);
+    tirenv_profile_free(c1);
+    tirenv_profile_free(cleat);
+}
+
 /* Flat ground on one half of the width and a cleat on the other: the mean rule gives half the
  * cleat's curve exactly, the highest the cleat's, the equilibrium something between the flat
  * ground's 0 and the cleat's curve (the slices' forces rise with the ground, so the shared
@@ -464,6 +507,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_one_track_is_set),
         cmocka_unit_test(test_equal_copies),
+        cmocka_unit_test(test_equal_copies_with_shear),
         cmocka_unit_test(test_flat_and_cleat),
         cmocka_unit_test(test_equilibrium_closed_form),
         cmocka_unit_test(test_highest_two_cleats),

@@ -1,0 +1,714 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The ring's tread coupled in shear along the arc (docs/models.md section 5.3): a Pasternak
+ * (Filonenko-Borodich) layer between the belt and the ground. The tread surface's inward
+ * displacement u is a field of its own, nodal and interpolated between nodes like the belt's w;
+ * per unit of belt length the tread stores
+ *     1/2 k_c (u - w)^2 + 1/2 k_s (du/ds)^2,   k_s = G_t t_r b (TREAD_SHEAR, the tread depth,
+ *                                              BELT_WIDTH),
+ * and the ground presses on u at the continuous contact's quadrature points (ring_ground.c)
+ * through a contact layer k_g = RING_GROUND_LAYER k_t, with k_c chosen so that k_c in series
+ * with k_g is the tread's k_t: where the tread surface touches, the tread carries k_t times its
+ * compression as before; where it does not, its neighbours drag it in over the decay length
+ * sqrt(k_s / k_c). The belt layer beneath the tread acts on w as in ring_smooth.c, so nothing
+ * cuts through. The contact is the minimum over the window's (w, u) of the convex, piecewise
+ * quadratic
+ *     E = 1/2 x.K x + sum_q omega_q R [1/2 k_g max(0, d_q - u_q)^2
+ *                                      + 1/2 k_b max(0, d_q - w_q - t_r)^2],
+ * K the belt's and the tread's stiffness condensed onto the window. The unknowns are
+ * interleaved (w_0, u_0, w_1, u_1, ...), so K is banded with bandwidth 4; the nodes outside the
+ * window (no ground) condense out exactly into a 6 x 6 correction on the window's ends (their
+ * belt's two end nodes and tread's one), computed once per window length from six banded solves
+ * of the exterior. The solve is Newton's method with a line search, as ring_smooth.c. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "model/ring_impl.h"
+
+/* k_g / k_t: the contact layer between the ground and the tread surface (docs/models.md 5.3),
+ * and k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
+static const double RING_GROUND_LAYER = 1e4;
+static const double RING_BELT_LAYER = 1e3;
+enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, SHEAR_POLISH = 8, BAND_P = 4, TAIL = 4,
+       NB = 6 };
+static const double shear_sigma = 1e-4;    /* Armijo's sufficient decrease */
+static const double shear_step_tol = 1e-12; /* m: as ring_smooth.c */
+static const double shear_stall_tol = 1e-6; /* m: as ring_smooth.c */
+
+/* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t rows are dense
+ * (the window's ends coupled through the exterior), and its Cholesky factor in place: L[5 i + k]
+ * = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[a][i] = A[N - t + a][i]
+ * for i < N - t; T the dense t x t tail (lower triangle). */
+typedef struct {
+    size_t N, t;
+    double *L;
+    double *B[TAIL];
+    double T[TAIL][TAIL];
+} tband;
+
+struct tirenv_ring_tread {
+    size_t M;
+    double s[3];        /* the belt's stencil, N/m */
+    double k_sh;        /* shear between neighbouring nodes, k_s / (R dtheta), N/m */
+    double k_g;         /* contact layer per unit belt length, N/m^2 */
+    double kap0;        /* the tread's compression k_c R dtheta of a node without lugs, N/m */
+    int lugs;           /* kap differs between nodes: no cached ends */
+    double *kap;        /* per node (global): compression stiffness k_c R dtheta, N/m */
+    double *u;          /* per node (global): the tread surface's displacement, m */
+    double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
+    unsigned char *have;
+    tband ext, win;
+    double *col;        /* 2 M: a right-hand side of the exterior */
+    double *x, *xn, *xt, *g; /* 2 M each: iterate, Newton point, trial, gradient */
+};
+
+static void band_reset(tband *A, size_t N, size_t t)
+{
+    A->N = N;
+    A->t = t;
+    memset(A->L, 0, (BAND_P + 1) * N * sizeof *A->L);
+    for (size_t a = 0; a < t; ++a)
+        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    memset(A->T, 0, sizeof A->T);
+}
+
+/* A[k][i] += v, i <= k, k - i <= BAND_P unless row k is a tail row. */
+static void band_add(tband *A, size_t i, size_t k, double v)
+{
+    const size_t m = A->N - A->t;
+    if (k < m)
+        A->L[(BAND_P + 1) * i + (k - i)] += v;
+    else if (i < m)
+        A->B[k - m][i] += v;
+    else
+        A->T[k - m][i - m] += v;
+}
+
+/* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite. */
+static int band_factor(tband *A)
+{
+    const size_t N = A->N, t = A->t, m = N - t;
+    double *L = A->L;
+    for (size_t i = 0; i < m; ++i) {
+        double *c = L + (BAND_P + 1) * i;
+        if (!(c[0] > 0))
+            return 1;
+        const double lii = sqrt(c[0]), inv = 1 / lii;
+        c[0] = lii;
+        const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
+        if (kmax == BAND_P && t == TAIL) {
+            /* The interior column, unrolled: the same operations on each entry as below. */
+            const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
+            c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
+            double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+                   *r4 = r3 + (BAND_P + 1);
+            r1[0] -= c1 * c1, r1[1] -= c2 * c1, r1[2] -= c3 * c1, r1[3] -= c4 * c1;
+            r2[0] -= c2 * c2, r2[1] -= c3 * c2, r2[2] -= c4 * c2;
+            r3[0] -= c3 * c3, r3[1] -= c4 * c3;
+            r4[0] -= c4 * c4;
+            double bi[TAIL];
+            for (size_t a = 0; a < TAIL; ++a) {
+                double *b = A->B[a] + i;
+                bi[a] = b[0] * inv;
+                b[0] = bi[a];
+                b[1] -= bi[a] * c1, b[2] -= bi[a] * c2, b[3] -= bi[a] * c3, b[4] -= bi[a] * c4;
+            }
+            for (size_t a = 0; a < TAIL; ++a)
+                for (size_t b = 0; b <= a; ++b)
+                    A->T[a][b] -= bi[a] * bi[b];
+            continue;
+        }
+        for (size_t k = 1; k <= kmax; ++k)
+            c[k] *= inv;
+        for (size_t a = 0; a < t; ++a)
+            A->B[a][i] *= inv;
+        for (size_t k1 = 1; k1 <= kmax; ++k1) {
+            double *c1 = L + (BAND_P + 1) * (i + k1);
+            for (size_t k2 = k1; k2 <= kmax; ++k2)
+                c1[k2 - k1] -= c[k2] * c[k1];
+            for (size_t a = 0; a < t; ++a)
+                A->B[a][i + k1] -= A->B[a][i] * c[k1];
+        }
+        for (size_t a = 0; a < t; ++a)
+            for (size_t b = 0; b <= a; ++b)
+                A->T[a][b] -= A->B[a][i] * A->B[b][i];
+    }
+    for (size_t a = 0; a < t; ++a) {
+        for (size_t b = 0; b < a; ++b) {
+            double v = A->T[a][b];
+            for (size_t c = 0; c < b; ++c)
+                v -= A->T[a][c] * A->T[b][c];
+            A->T[a][b] = v / A->T[b][b];
+        }
+        double d = A->T[a][a];
+        for (size_t c = 0; c < a; ++c)
+            d -= A->T[a][c] * A->T[a][c];
+        if (!(d > 0))
+            return 1;
+        A->T[a][a] = sqrt(d);
+    }
+    return 0;
+}
+
+/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). */
+static void band_solve(const tband *A, double x[])
+{
+    const size_t N = A->N, t = A->t, m = N - t;
+    const double *L = A->L;
+    double y[TAIL];
+    for (size_t a = 0; a < t; ++a)
+        y[a] = x[m + a];
+    for (size_t i = 0; i < m; ++i) {
+        double v = x[i];
+        if (i >= BAND_P) { /* unrolled: the same operations in the same order */
+            const double *l = L + (BAND_P + 1) * (i - 1);
+            v -= l[1] * x[i - 1];
+            v -= l[-(BAND_P + 1) + 2] * x[i - 2];
+            v -= l[-2 * (BAND_P + 1) + 3] * x[i - 3];
+            v -= l[-3 * (BAND_P + 1) + 4] * x[i - 4];
+        } else {
+            for (size_t k = 1; k <= i; ++k)
+                v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
+        }
+        x[i] = v / L[(BAND_P + 1) * i];
+        for (size_t a = 0; a < t; ++a)
+            y[a] -= A->B[a][i] * x[i];
+    }
+    for (size_t a = 0; a < t; ++a) {
+        for (size_t b = 0; b < a; ++b)
+            y[a] -= A->T[a][b] * y[b];
+        y[a] /= A->T[a][a];
+    }
+    for (size_t a = t; a-- > 0;) {
+        for (size_t b = a + 1; b < t; ++b)
+            y[a] -= A->T[b][a] * y[b];
+        y[a] /= A->T[a][a];
+        x[m + a] = y[a];
+    }
+    for (size_t i = m; i-- > 0;) {
+        double v = x[i];
+        if (i + BAND_P < m) {
+            const double *l = L + (BAND_P + 1) * i;
+            v -= l[1] * x[i + 1];
+            v -= l[2] * x[i + 2];
+            v -= l[3] * x[i + 3];
+            v -= l[4] * x[i + 4];
+        } else {
+            for (size_t k = 1; k + i < m; ++k)
+                v -= L[(BAND_P + 1) * i + k] * x[i + k];
+        }
+        for (size_t a = 0; a < t; ++a)
+            v -= A->B[a][i] * x[m + a];
+        x[i] = v / L[(BAND_P + 1) * i];
+    }
+}
+
+static int band_alloc(tband *A, size_t N, size_t t)
+{
+    A->L = malloc((BAND_P + 1 + t) * N * sizeof *A->L);
+    if (!A->L)
+        return 1;
+    for (size_t a = 0; a < t; ++a)
+        A->B[a] = A->L + (BAND_P + 1 + a) * N;
+    return 0;
+}
+
+double tirenv_ring__tread_shear(const tirenv_ring_params *par)
+{
+    return par->G_t * par->t_r * par->b_p;
+}
+
+tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_ring_params *par,
+                                            const double stencil[3])
+{
+    tirenv_ring_tread *T = calloc(1, sizeof *T);
+    if (!T)
+        return NULL;
+    const double dth = 2 * M_PI / (double)M, k_t = par->k_t;
+    T->M = M;
+    memcpy(T->s, stencil, sizeof T->s);
+    T->k_sh = tirenv_ring__tread_shear(par) / (R * dth);
+    T->k_g = RING_GROUND_LAYER * k_t;
+    T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
+    T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
+    T->kap = malloc(2 * M * sizeof *T->kap);
+    T->end = malloc(M * sizeof *T->end);
+    T->have = calloc(M, 1);
+    T->col = malloc(10 * M * sizeof *T->col);
+    if (!T->kap || !T->end || !T->have || !T->col || band_alloc(&T->ext, 2 * M, 0) ||
+        band_alloc(&T->win, 2 * M, TAIL)) {
+        tirenv_ring__tread_free(T);
+        return NULL;
+    }
+    T->u = T->kap + M;
+    T->x = T->col + 2 * M;
+    T->xn = T->col + 4 * M;
+    T->xt = T->col + 6 * M;
+    T->g = T->col + 8 * M;
+    for (size_t j = 0; j < M; ++j) {
+        T->kap[j] = T->kap0;
+        T->u[j] = 0;
+    }
+    return T;
+}
+
+void tirenv_ring__tread_free(tirenv_ring_tread *T)
+{
+    if (!T)
+        return;
+    free(T->kap);
+    free(T->end);
+    free(T->have);
+    free(T->col);
+    free(T->ext.L);
+    free(T->win.L);
+    free(T);
+}
+
+double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
+
+/* The tread's compression stiffness of every node at the centre's x: lugs turn with the tire
+ * (ring.c, tread_kappa); k_c in series with the contact layer k_g is the node's k_t. */
+static void set_kappa(tirenv_ring *r, double x)
+{
+    tirenv_ring_tread *T = r->tread;
+    if (!T->lugs)
+        return;
+    for (size_t j = 0; j < T->M; ++j) {
+        const double k = tirenv_ring__tread_kappa(r, r->theta[j], x) / (r->R * r->dth);
+        T->kap[j] = k * T->k_g / (T->k_g - k) * r->R * r->dth;
+    }
+}
+
+/* The exterior of a window of n nodes starting at lo: the open arc of the other M - n nodes,
+ * (w, u) interleaved, unloaded. Only its first and last nodes couple to the window: the
+ * belt's pentadiagonal stencil reaches two nodes, the shear one. So K_WE K_EE^-1 K_EW needs
+ * K_EE^-1 on six exterior unknowns only. Window ends: w_0, u_0, w_1, w_n-2, w_n-1, u_n-1. */
+static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB])
+{
+    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
+    const double *s = T->s, k_sh = T->k_sh;
+    tband *E = &T->ext;
+    band_reset(E, Ne, 0);
+    for (size_t e = 0; e < ne; ++e) {
+        const double kap = T->kap[(lo + n + e) % M];
+        band_add(E, 2 * e, 2 * e, s[0] + kap);
+        band_add(E, 2 * e, 2 * e + 1, -kap);
+        band_add(E, 2 * e + 1, 2 * e + 1, kap + 2 * k_sh);
+        if (e + 1 < ne) {
+            band_add(E, 2 * e, 2 * e + 2, s[1]);
+            band_add(E, 2 * e + 1, 2 * e + 3, -k_sh);
+        }
+        if (e + 2 < ne)
+            band_add(E, 2 * e, 2 * e + 4, s[2]);
+    }
+    band_factor(E); /* a principal block of the positive definite whole */
+    const size_t eidx[NB] = {0, 1, 2, Ne - 4, Ne - 2, Ne - 1};
+    /* X[e][b]: the whole's entry between exterior unknown eidx[e] and window end b. */
+    double X[NB][NB] = {{0}};
+    X[0][3] = s[2], X[0][4] = s[1]; /* exterior w_0 - window w_n-2, w_n-1 */
+    X[1][5] = -k_sh;                /* exterior u_0 - window u_n-1 */
+    X[2][4] = s[2];                 /* exterior w_1 - window w_n-1 */
+    X[3][0] = s[2];                 /* exterior w_ne-2 - window w_0 */
+    X[4][0] = s[1], X[4][2] = s[2]; /* exterior w_ne-1 - window w_0, w_1 */
+    X[5][1] = -k_sh;                /* exterior u_ne-1 - window u_0 */
+    double G[NB][NB];
+    for (size_t a = 0; a < NB; ++a) {
+        memset(T->col, 0, Ne * sizeof *T->col);
+        T->col[eidx[a]] = 1;
+        band_solve(E, T->col);
+        for (size_t c = 0; c < NB; ++c)
+            G[c][a] = T->col[eidx[c]];
+    }
+    for (size_t v = 0; v < NB; ++v)
+        for (size_t u = 0; u < NB; ++u) {
+            double sum = 0;
+            for (size_t e = 0; e < NB; ++e)
+                for (size_t f = 0; f < NB; ++f)
+                    sum += X[e][v] * G[e][f] * X[f][u];
+            Q[v][u] = sum;
+        }
+    for (size_t v = 0; v < NB; ++v)
+        for (size_t u = 0; u < v; ++u)
+            Q[v][u] = Q[u][v] = 0.5 * (Q[v][u] + Q[u][v]);
+}
+
+static const double (*window_end(tirenv_ring *r))[NB]
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n;
+    if (T->lugs) {
+        compute_end(T, r->lo, n, T->end[0]);
+        return (const double(*)[NB])T->end[0];
+    }
+    if (!T->have[n]) {
+        compute_end(T, r->lo, n, T->end[n]);
+        T->have[n] = 1;
+    }
+    return (const double(*)[NB])T->end[n];
+}
+
+/* The window's ends in the interleaved unknowns. */
+static void end_index(size_t n, size_t b[NB])
+{
+    b[0] = 0, b[1] = 1, b[2] = 2, b[3] = 2 * n - 4, b[4] = 2 * n - 2, b[5] = 2 * n - 1;
+}
+
+/* y = K x: the window's belt and tread stiffness, condensed (x, y interleaved, 2 n entries). */
+static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[], double y[])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n, lo = r->lo;
+    const double *s = T->s, k_sh = T->k_sh;
+    for (size_t i = 0; i < n; ++i) {
+        const double w = x[2 * i], u = x[2 * i + 1], kap = T->kap[lo + i];
+        double yw = s[0] * w + kap * (w - u), yu = kap * (u - w) + 2 * k_sh * u;
+        if (i >= 1)
+            yw += s[1] * x[2 * i - 2], yu -= k_sh * x[2 * i - 1];
+        if (i + 1 < n)
+            yw += s[1] * x[2 * i + 2], yu -= k_sh * x[2 * i + 3];
+        if (i >= 2)
+            yw += s[2] * x[2 * i - 4];
+        if (i + 2 < n)
+            yw += s[2] * x[2 * i + 4];
+        y[2 * i] = yw;
+        y[2 * i + 1] = yu;
+    }
+    size_t b[NB];
+    end_index(n, b);
+    for (size_t v = 0; v < NB; ++v)
+        for (size_t u = 0; u < NB; ++u)
+            y[b[v]] -= Q[v][u] * x[b[u]];
+}
+
+/* A point's tread surface and belt, interpolated. */
+static double at_u(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
+{
+    const size_t i = q->j - r->lo;
+    return (1 - q->s) * x[2 * i + 1] + q->s * x[2 * i + 3];
+}
+
+static double at_w(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
+{
+    const size_t i = q->j - r->lo;
+    return (1 - q->s) * x[2 * i] + q->s * x[2 * i + 2];
+}
+
+/* A point's state: bit 1 the ground on the tread surface, bit 2 the belt layer. */
+static unsigned char state_of(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
+{
+    if (q->d == -INFINITY)
+        return 0;
+    return (unsigned char)((q->d > at_u(r, q, x) ? 1 : 0) |
+                           (q->d - at_w(r, q, x) > r->par.t_r ? 2 : 0));
+}
+
+static size_t set_states(tirenv_ring *r, const double x[])
+{
+    size_t changed = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        tirenv_ring_point *q = &r->pts[k];
+        const unsigned char st = state_of(r, q, x);
+        changed += st != q->st;
+        q->st = st;
+    }
+    return changed;
+}
+
+/* E(x) and, if grad is not NULL, its gradient. */
+static double energy(tirenv_ring *r, const double (*Q)[NB], const double x[], double grad[])
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t N = 2 * r->n;
+    const double t_r = r->par.t_r, R = r->R;
+    double *y = grad ? grad : T->col;
+    apply_K(r, Q, x, y);
+    double E = 0;
+    for (size_t i = 0; i < N; ++i)
+        E += 0.5 * x[i] * y[i];
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->d == -INFINITY)
+            continue;
+        const size_t i = q->j - r->lo;
+        const double eg = q->d - at_u(r, q, x), eb = q->d - at_w(r, q, x) - t_r;
+        const double k_b = RING_BELT_LAYER * q->k_t;
+        if (eg > 0) {
+            E += q->omega * R * 0.5 * T->k_g * eg * eg;
+            if (grad) {
+                const double f = q->omega * R * T->k_g * eg;
+                grad[2 * i + 1] -= f * (1 - q->s);
+                grad[2 * i + 3] -= f * q->s;
+            }
+        }
+        if (eb > 0) {
+            E += q->omega * R * 0.5 * k_b * eb * eb;
+            if (grad) {
+                const double f = q->omega * R * k_b * eb;
+                grad[2 * i] -= f * (1 - q->s);
+                grad[2 * i + 2] -= f * q->s;
+            }
+        }
+    }
+    return E;
+}
+
+/* The window's system with the points' states fixed: K plus the active layers, and their
+ * right-hand side, so that its solution is the minimum of E with those states. */
+static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n, lo = r->lo, N = 2 * n;
+    const double *s = T->s, k_sh = T->k_sh, t_r = r->par.t_r, R = r->R;
+    tband *A = &T->win;
+    band_reset(A, N, TAIL);
+    for (size_t i = 0; i < n; ++i) {
+        const double kap = T->kap[lo + i];
+        band_add(A, 2 * i, 2 * i, s[0] + kap);
+        band_add(A, 2 * i, 2 * i + 1, -kap);
+        band_add(A, 2 * i + 1, 2 * i + 1, kap + 2 * k_sh);
+        if (i + 1 < n) {
+            band_add(A, 2 * i, 2 * i + 2, s[1]);
+            band_add(A, 2 * i + 1, 2 * i + 3, -k_sh);
+        }
+        if (i + 2 < n)
+            band_add(A, 2 * i, 2 * i + 4, s[2]);
+    }
+    size_t b[NB];
+    end_index(n, b);
+    for (size_t v = 0; v < NB; ++v)
+        for (size_t u = v; u < NB; ++u)
+            band_add(A, b[v], b[u], -Q[v][u]);
+    memset(rhs, 0, N * sizeof *rhs);
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        const size_t i = q->j - r->lo;
+        const double n0 = 1 - q->s, n1 = q->s;
+        if (q->st & 1) {
+            const double c = q->omega * R * T->k_g;
+            band_add(A, 2 * i + 1, 2 * i + 1, c * n0 * n0);
+            band_add(A, 2 * i + 1, 2 * i + 3, c * n0 * n1);
+            band_add(A, 2 * i + 3, 2 * i + 3, c * n1 * n1);
+            rhs[2 * i + 1] += c * q->d * n0;
+            rhs[2 * i + 3] += c * q->d * n1;
+        }
+        if (q->st & 2) {
+            const double c = q->omega * R * RING_BELT_LAYER * q->k_t;
+            band_add(A, 2 * i, 2 * i, c * n0 * n0);
+            band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
+            band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
+            rhs[2 * i] += c * (q->d - t_r) * n0;
+            rhs[2 * i + 2] += c * (q->d - t_r) * n1;
+        }
+    }
+}
+
+static int broke_down(size_t n, tirenv_diag *diag)
+{
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                        "the Cholesky factorisation of the %zu-node banded belt-and-tread "
+                        "system broke down (not numerically positive definite)", n);
+}
+
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
+                             double *dfz_dz, tirenv_diag *diag)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n, lo = r->lo, N = 2 * n;
+    const double t_r = r->par.t_r, R = r->R;
+    if (n + 4 > r->M)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the contact window of %zu nodes leaves too few of the %zu outside "
+                            "it", n, r->M);
+    set_kappa(r, x_c);
+    const double(*Q)[NB] = window_end(r);
+    double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
+    /* From the last evaluation's belt and tread where this window overlaps its window. */
+    for (size_t i = 0; i < n; ++i) {
+        const size_t j = lo + i;
+        const int warm = j >= r->warm_lo && j < r->warm_lo + r->warm_n;
+        x[2 * i] = warm ? r->w[j] : 0;
+        x[2 * i + 1] = warm ? T->u[j] : 0;
+    }
+    for (size_t k = 0; k < r->n_pts; ++k)
+        r->pts[k].st = 255;
+    set_states(r, x);
+    size_t it = 0, polish = 0; /* full Newton steps taken after the line search stalled */
+    int factored = 0; /* the factor in T->win is that of the final states */
+    for (; it < SHEAR_MAX_ITER; ++it) {
+        assemble(r, Q, xn);
+        if (band_factor(&T->win))
+            return broke_down(n, diag);
+        band_solve(&T->win, xn);
+        double step = 0;
+        for (size_t i = 0; i < N; ++i)
+            step = fmax(step, fabs(xn[i] - x[i]));
+        const size_t changed = set_states(r, xn);
+        if (changed == 0 || step <= shear_step_tol) {
+            memcpy(x, xn, N * sizeof *x);
+            factored = changed == 0;
+            break;
+        }
+        /* After a stall, full Newton steps: E's round-off hides their decrease, but the states
+         * settle within a few (a consistent set of states is the unique minimiser, whatever
+         * the start: tracks of equal copies agree to round-off); if a point keeps flipping,
+         * accept the Newton point as the stall did. */
+        if (polish > 0) {
+            memcpy(x, xn, N * sizeof *x);
+            if (++polish > SHEAR_POLISH)
+                break;
+            continue;
+        }
+        const double E0 = energy(r, Q, x, g);
+        double slope = 0;
+        for (size_t i = 0; i < N; ++i)
+            slope += g[i] * (xn[i] - x[i]);
+        double alpha = 1;
+        size_t b = 0;
+        for (; b < SHEAR_BACKTRACK; ++b, alpha *= 0.5) {
+            for (size_t i = 0; i < N; ++i)
+                xt[i] = x[i] + alpha * (xn[i] - x[i]);
+            if (energy(r, Q, xt, NULL) <= E0 + shear_sigma * alpha * slope)
+                break;
+        }
+        if (b == SHEAR_BACKTRACK && step <= shear_stall_tol) {
+            /* No step of at least 2^-20 of the way lowers E: x is the minimum to E's round-off,
+             * the Newton point differs from it by a few points at zero compression flipping.
+             * Take it, with its states, and polish (above). */
+            memcpy(x, xn, N * sizeof *x);
+            polish = 1;
+            continue;
+        }
+        memcpy(x, xt, N * sizeof *x);
+        set_states(r, x);
+    }
+    if (it == SHEAR_MAX_ITER)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the shear-coupled tread contact of %zu points on %zu nodes did not "
+                            "settle in %d Newton steps", r->n_pts, n, SHEAR_MAX_ITER);
+    /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
+     * change with it: the same matrix). */
+    if (!factored) {
+        assemble(r, Q, xt);
+        if (band_factor(&T->win))
+            return broke_down(n, diag);
+    }
+    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
+        r->w[j] = T->u[j] = 0;
+    r->warm_lo = lo;
+    r->warm_n = n;
+    for (size_t i = 0; i < N; ++i)
+        xt[i] = 0;
+    for (size_t i = 0; i < n; ++i) {
+        r->w[lo + i] = x[2 * i];
+        T->u[lo + i] = x[2 * i + 1];
+        r->F[lo + i] = 0;
+        r->g[lo + i] = 0;
+    }
+    double sum_c = 0, sum_s = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        tirenv_ring_point *q = &r->pts[k];
+        q->f = 0;
+        if (q->d == -INFINITY) {
+            q->e = -INFINITY;
+            continue;
+        }
+        q->e = q->d - at_u(r, q, x); /* the ground's overlap with the tread surface */
+        if (q->st == 0)
+            continue;
+        const size_t i = q->j - lo;
+        const double k_b = RING_BELT_LAYER * q->k_t;
+        double fg = 0, fb = 0, cu = 0, cw = 0;
+        if (q->st & 1) {
+            fg = q->omega * R * T->k_g * q->e;
+            cu = q->omega * R * T->k_g * q->dd;
+        }
+        if (q->st & 2) {
+            fb = q->omega * R * k_b * (q->d - at_w(r, q, x) - t_r);
+            cw = q->omega * R * k_b * q->dd;
+        }
+        q->f = fg + fb;
+        r->F[q->j] += (1 - q->s) * q->f;
+        r->F[q->j + 1] += q->s * q->f;
+        r->g[q->j] += (1 - q->s) * fb;
+        r->g[q->j + 1] += q->s * fb;
+        sum_c += q->f * q->cs;
+        sum_s += q->f * q->sn;
+        xt[2 * i + 1] += cu * (1 - q->s);
+        xt[2 * i + 3] += cu * q->s;
+        xt[2 * i] += cw * (1 - q->s);
+        xt[2 * i + 2] += cw * q->s;
+    }
+    *fz = sum_c;
+    *fx = -sum_s;
+    if (dfz_dz) {
+        band_solve(&T->win, xt);
+        double dF = 0;
+        for (size_t k = 0; k < r->n_pts; ++k) {
+            const tirenv_ring_point *q = &r->pts[k];
+            if (q->st == 0)
+                continue;
+            double df = 0;
+            if (q->st & 1)
+                df += q->omega * R * T->k_g * (q->dd - at_u(r, q, xt));
+            if (q->st & 2)
+                df += q->omega * R * RING_BELT_LAYER * q->k_t * (q->dd - at_w(r, q, xt));
+            dF += df * q->cs;
+        }
+        *dfz_dz = dF;
+    }
+    /* The diagnostics: the largest tread compression u - w, at the nodes and the points. */
+    double e_max = 0;
+    for (size_t i = 0; i < n; ++i)
+        e_max = fmax(e_max, x[2 * i + 1] - x[2 * i]);
+    for (size_t k = 0; k < r->n_pts; ++k)
+        if (r->pts[k].st)
+            e_max = fmax(e_max, at_u(r, &r->pts[k], x) - at_w(r, &r->pts[k], x));
+    r->tread_max = fmin(e_max, t_r);
+    return 0;
+}
+
+/* The belt's w outside the window of the last evaluation: the exterior's unloaded (w, u) that
+ * the window's ends hold, -K_EE^-1 K_EW x_B, solved afresh (diagnostics only: it allocates).
+ * Writes w_out for every node outside the window; nonzero if out of memory. */
+int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[])
+{
+    const tirenv_ring_tread *T0 = r->tread;
+    const size_t M = r->M, n = r->n, lo = r->lo, ne = M - n, Ne = 2 * ne;
+    if (n == 0) {
+        for (size_t j = 0; j < M; ++j)
+            w_out[j] = 0;
+        return 0;
+    }
+    tirenv_ring_tread T = *T0; /* the constants; its own band and column */
+    if (band_alloc(&T.ext, Ne, 0))
+        return 1;
+    T.col = malloc(Ne * sizeof *T.col);
+    double *rhs = malloc(Ne * sizeof *rhs);
+    if (!T.col || !rhs) {
+        free(T.ext.L);
+        free(T.col);
+        free(rhs);
+        return 1;
+    }
+    double Q[NB][NB];
+    compute_end(&T, lo, n, Q); /* leaves the exterior's factor in T.ext */
+    const double *s = T.s, k_sh = T.k_sh;
+    const double *w = r->w, *u = T0->u;
+    const size_t j0 = lo, j1 = lo + 1, jm2 = lo + n - 2, jm1 = lo + n - 1;
+    memset(rhs, 0, Ne * sizeof *rhs);
+    rhs[0] = -(s[2] * w[jm2] + s[1] * w[jm1]);
+    rhs[1] = k_sh * u[jm1];
+    rhs[2] = -s[2] * w[jm1];
+    rhs[Ne - 4] = -s[2] * w[j0];
+    rhs[Ne - 2] = -(s[1] * w[j0] + s[2] * w[j1]);
+    rhs[Ne - 1] = k_sh * u[j0];
+    band_solve(&T.ext, rhs);
+    for (size_t e = 0; e < ne; ++e)
+        w_out[(lo + n + e) % M] = rhs[2 * e];
+    free(T.ext.L);
+    free(T.col);
+    free(rhs);
+    return 0;
+}

@@ -1,0 +1,325 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The ring's tread coupled in shear along the arc (TREAD_SHEAR, docs/models.md section 5.3):
+ * the layer's closed form on a stiff belt (the decay length sqrt(k_s / k_c) and the force of
+ * a blade), TREAD_SHEAR = 0 reproducing the Winkler tread bit for bit, a small shear close to
+ * it, one minimiser whatever the warm start, dF_z/dz against central differences, lugs, and
+ * the rays unaffected. The layer is an option, off by default (TREAD_SHEAR = 0): every test
+ * here sets it explicitly, to G_ON, the low end of a tread cap's published shear modulus
+ * (data/tires/default.tir). Continuity in x and the convergence in NODE_ANGLE of the default
+ * (Winkler) tread are in test_ring_continuity.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "testutil.h"
+#include "tirenv/tirenv.h"
+#include "model/ring_impl.h"
+
+/* h and F_x of the ring over three cases of the data set (the cleat of case R at its load, a
+ * 0.05 x 0.025 m cleat, a 0.1 m step), five positions each, evaluated in this order, as the
+ * Winkler tread computed them before the shear-coupled one was added (commit d84da19, the
+ * same calls against its library, printed with %a). */
+static const double winkler_bits[3][5][2] = {
+    {{0x1.b17f245924f9p-5, -0x1.01b91a3ae3d29p+12}, {0x1.70d548593327p-4, -0x1.c5319dddf9852p+9},
+     {0x1.79181d266036p-4, 0x1.bc436f633120ap+7}, {0x1.5f53f1148751p-4, 0x1.8ba184ae6725p+10},
+     {0x1.2acaf5c821688p-4, 0x1.5b4fa976e5e5ap+11}},
+    {{0x1.295d53905868p-8, -0x1.08225112b036p+10}, {0x1.610f3bd42c5p-8, -0x1.37f6834ad0eefp+9},
+     {0x1.66825c07764p-9, 0x1.d1245dfd4c1dbp+5}, {0x1.cb3f4077169p-8, 0x1.0a10cab035baap+10},
+     {0x1.d32df28d6318p-8, 0x1.596e20d3e2915p+10}},
+    {{0x1.e767cbc20a66p-6, -0x1.cea1b6daa90a8p+12}, {0x1.2c3cc47b9ecep-4, -0x1.06ce187717cc2p+12},
+     {0x1.61d6f7f68569p-4, -0x1.2dde7eea73662p+11}, {0x1.88ab25bf183dp-4, -0x1.ab84439bbc7edp+9},
+     {0x1.9742fa50bbf5p-4, -0x1.0e2b4d06cff5cp+7}},
+};
+/* TREAD_SHEAR for the tests of the layer, Pa: 1 MPa, the low end of the published range. */
+#define G_ON 1.0e6
+
+/* The default tire with the shear-coupled tread switched on at G_ON. */
+static tirenv_tire shear_tire(void)
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.ring.G_t = G_ON;
+    return t;
+}
+
+static const double case_load[3] = {12935.16, 17848.42, 23700.90};
+static const double case_x[5] = {-0.2137, -0.05, 0.0123, 0.0871, 0.15};
+
+static tirenv_profile *case_profile(size_t k)
+{
+    return k == 0 ? tirenv_profile_cleat(0.1, 0.1)
+                  : k == 1 ? tirenv_profile_cleat(0.05, 0.025) : tirenv_profile_step(0, 0.1);
+}
+
+/* The curves of the three cases at TREAD_SHEAR G (Pa) and NODE_ANGLE dtheta (0: the
+ * default) into h[3][5], fx[3][5]. */
+static void curves(double G, double dtheta, tirenv_ring_contact_kind contact, double h[3][5],
+                   double fx[3][5])
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.ring.G_t = G;
+    t.ring.contact = contact;
+    if (dtheta > 0)
+        t.ring.dtheta = dtheta;
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+    assert_non_null(m);
+    tirenv_diag diag;
+    for (size_t k = 0; k < 3; ++k) {
+        tirenv_profile *p = case_profile(k);
+        assert_int_equal(tirenv_model_set(m, p, case_load[k], &diag), TIRENV_OK);
+        for (size_t i = 0; i < 5; ++i) {
+            tirenv_point pt;
+            assert_int_equal(tirenv_model_eval(m, case_x[i], &pt, &diag), TIRENV_OK);
+            h[k][i] = pt.h;
+            fx[k][i] = pt.fx;
+        }
+        tirenv_profile_free(p);
+    }
+    tirenv_model_free(m);
+}
+
+static double max_dh(double a[3][5], double b[3][5])
+{
+    double d = 0;
+    for (size_t k = 0; k < 3; ++k)
+        for (size_t i = 0; i < 5; ++i)
+            d = fmax(d, fabs(a[k][i] - b[k][i]));
+    return d;
+}
+
+/* TREAD_SHEAR = 0, the default, is the Winkler tread, bit for bit, and G_ON moves h by more
+ * than a millimetre somewhere (so the comparison can fail). As the shear vanishes (1 Pa: k_s =
+ * 0.0136 N) the shear-coupled tread tends to the Winkler one up to their discretisations: the
+ * former's tread surface and compression are nodal, interpolated between nodes, the latter's
+ * compression is taken at each ground vertex, so they differ where a corner lies between
+ * nodes, by a first-order error that halving NODE_ANGLE must shrink (measured 0.30 mm at 0.125
+ * degrees, 0.10 at 0.0625: asserted to fall below 0.6 times). */
+static void test_zero_shear_is_winkler(void **state)
+{
+    (void)state;
+    double h0[3][5], fx0[3][5], h1[3][5], fx1[3][5], hd[3][5], fxd[3][5];
+    assert_true(tirenv_tire_default().ring.G_t == 0);
+    curves(0, 0, TIRENV_RING_CONTINUOUS, h0, fx0);
+    for (size_t k = 0; k < 3; ++k)
+        for (size_t i = 0; i < 5; ++i) {
+            assert_true(h0[k][i] == winkler_bits[k][i][0]);
+            assert_true(fx0[k][i] == winkler_bits[k][i][1]);
+        }
+    curves(G_ON, 0, TIRENV_RING_CONTINUOUS, hd, fxd);
+    curves(1, 0, TIRENV_RING_CONTINUOUS, h1, fx1);
+    const double d_default = max_dh(hd, h0), d_small = max_dh(h1, h0);
+    const double dth = 0.5 * tirenv_tire_default().ring.dtheta;
+    curves(0, dth, TIRENV_RING_CONTINUOUS, h0, fx0);
+    curves(1, dth, TIRENV_RING_CONTINUOUS, h1, fx1);
+    const double d_half = max_dh(h1, h0);
+    print_message("max |dh| from the Winkler tread: TREAD_SHEAR 1 MPa %.3g mm; TREAD_SHEAR 1 Pa "
+                  "%.3g mm, %.3g mm at half the NODE_ANGLE\n", 1e3 * d_default, 1e3 * d_small,
+                  1e3 * d_half);
+    assert_true(d_default > 1e-3);
+    assert_true(d_small <= 5e-4);
+    assert_true(d_half <= 0.6 * d_small);
+}
+
+/* The rays keep the Winkler tread: TREAD_SHEAR changes nothing there. */
+static void test_rays_ignore_shear(void **state)
+{
+    (void)state;
+    double h0[3][5], fx0[3][5], h1[3][5], fx1[3][5];
+    curves(0, 0, TIRENV_RING_RAYS, h0, fx0);
+    curves(2.5e6, 0, TIRENV_RING_RAYS, h1, fx1);
+    for (size_t k = 0; k < 3; ++k)
+        for (size_t i = 0; i < 5; ++i) {
+            assert_true(h0[k][i] == h1[k][i]);
+            assert_true(fx0[k][i] == fx1[k][i]);
+        }
+}
+
+/* The layer's closed form. On a belt that hardly moves (a carcass of 1e10 N/m^2, no air), a
+ * 5 mm blade pressed 5 mm into the tread drags the free tread surface around it: between the
+ * nodes, k_c (u - w) = k_sh (u[j+1] - 2 u[j] + u[j-1]), so v = u - w falls by the factor r per
+ * node with r + 1/r = 2 + (R dtheta / l)^2, l = sqrt(k_s / k_c) the decay length (the
+ * continuous layer's exp(-s / l)), and the blade's force tends to that of a Pasternak layer on
+ * a rigid base, delta (k_c a + 2 sqrt(k_s k_c)) for a blade of width a pressed by delta. The
+ * flat ground 30 mm below the tread, within reach but untouched, widens the window so that
+ * the decay is seen on its 77 nodes either side. Returns |F_z / closed form - 1|. */
+static double blade_on_stiff_belt(double dtheta)
+{
+    tirenv_tire t = shear_tire();
+    t.ring.k_f = 1e10;
+    t.ring.p = 0;
+    t.ring.dtheta = dtheta;
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    const double a = 0.005, delta = 0.005, H = 0.03 + delta, R0 = t.springs.R0;
+    tirenv_profile *p = tirenv_profile_cleat(a, H);
+    double fx, fz;
+    assert_int_equal(tirenv_ring_forces(r, p, 0, R0 + 0.03, &fx, &fz, NULL, NULL, NULL), 0);
+    const double *u = tirenv_ring__tread_u(r->tread), *w = r->w;
+    const double R = r->R, dth = r->dth, k_t = t.ring.k_t, k_g = 1e4 * k_t;
+    const double k_c = k_t * k_g / (k_g - k_t), k_s = t.ring.G_t * t.ring.t_r * t.ring.b_p;
+    const double l = sqrt(k_s / k_c), h = R * dth;
+    const double c = 2 + (h / l) * (h / l), ratio = 0.5 * (c - sqrt(c * c - 4));
+    const size_t i0 = r->i0;
+    assert_true(r->lo + 45 < i0 && i0 + 45 < r->lo + r->n);
+    /* Up to the window's last nodes: the exterior's condensation holds the tail as the nodes
+     * beyond would (a free end would bend the ratio there). */
+    const size_t k_end = (i0 - r->lo < r->lo + r->n - 1 - i0 ? i0 - r->lo : r->lo + r->n - 1 - i0);
+    double worst = 0;
+    for (size_t k = 4; k < k_end; ++k)
+        for (int side = -1; side <= 1; side += 2) {
+            const size_t j = side < 0 ? i0 - k : i0 + k, jn = side < 0 ? j - 1 : j + 1;
+            const double v = u[j] - w[j], vn = u[jn] - w[jn];
+            assert_true(v > 0);
+            worst = fmax(worst, fabs(vn / v - ratio));
+        }
+    const double l_fit = -h / log(ratio);
+    const double F_closed = delta * (k_c * a + 2 * sqrt(k_s * k_c));
+    print_message("NODE_ANGLE %.4g deg: decay length %.4f m (closed form %.4f m), per-node "
+                  "ratio off by %.2g; blade force %.1f N, closed form %.1f N\n",
+                  dtheta * 180 / M_PI, l_fit, l, worst, fz, F_closed);
+    /* The discrete ratio holds to the belt's own motion (w near 1e-6 of v here). */
+    assert_true(worst <= 1e-4);
+    assert_near(l_fit, l, 0, 1e-3);
+    /* Of the order of the tread depth, as a Pasternak layer of rubber is. */
+    assert_true(l > 0.5 * t.ring.t_r && l < 2 * t.ring.t_r);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+    return fabs(fz / F_closed - 1);
+}
+
+/* The force: the tails are exact to (h / l)^2, the blade's width is resolved to a node
+ * spacing (1.4 mm at the default's 0.125 degrees), and the contact layer k_g = 1e4 k_t spreads
+ * the layer's edge reaction, concentrated at the blade's edges for a hard contact, over
+ * sqrt(k_s / k_g), 0.3 mm: the model tends to the closed form within about sqrt(k_t / k_g) =
+ * 1 % (measured 0.3 % at 0.125 degrees, 1.3 % at 0.0625; asserted below 2 % at both). */
+static void test_decay_length(void **state)
+{
+    (void)state;
+    const double dth = tirenv_tire_default().ring.dtheta;
+    const double e1 = blade_on_stiff_belt(dth), e2 = blade_on_stiff_belt(0.5 * dth);
+    assert_true(e1 <= 0.02);
+    assert_true(e2 <= 0.02);
+}
+
+/* Convex: one minimiser. A solve started cold and one started from another position's
+ * belt and tread (other contact states) end at the same forces and displacements. */
+static void test_warm_starts_agree(void **state)
+{
+    (void)state;
+    const tirenv_tire t = shear_tire();
+    tirenv_ring *cold = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    tirenv_ring *warm = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    tirenv_profile *p = tirenv_profile_cleat(0.1, 0.1);
+    const double xs[] = {-0.1913, -0.0311, 0.0457}, zs[] = {0.652, 0.603, 0.571};
+    size_t compared = 0;
+    for (size_t i = 0; i < 3; ++i)
+        for (size_t k = 0; k < 3; ++k) {
+            double fx1, fz1, fx2, fz2, fxo, fzo;
+            tirenv_ring_free(cold);
+            cold = tirenv_ring_alloc(t.springs.R0, &t.ring);
+            assert_int_equal(tirenv_ring_forces(cold, p, xs[i], zs[k], &fx1, &fz1, NULL, NULL,
+                                                NULL), 0);
+            /* The warm one comes from another position and height. */
+            assert_int_equal(tirenv_ring_forces(warm, p, xs[(i + 1) % 3] + 0.05,
+                                                zs[(k + 2) % 3] - 0.01, &fxo, &fzo, NULL, NULL,
+                                                NULL), 0);
+            assert_int_equal(tirenv_ring_forces(warm, p, xs[i], zs[k], &fx2, &fz2, NULL, NULL,
+                                                NULL), 0);
+            /* The final solve is the same linear system: equal to its round-off (stiffnesses
+             * near 1e10 N/m times 0.05 m). */
+            assert_near(fz2, fz1, 1e-6, 1e-10);
+            assert_near(fx2, fx1, 1e-6 + 1e-10 * fabs(fz1), 0);
+            const double *u1 = tirenv_ring__tread_u(cold->tread);
+            const double *u2 = tirenv_ring__tread_u(warm->tread);
+            assert_int_equal(cold->lo, warm->lo);
+            for (size_t j = cold->lo; j < cold->lo + cold->n; ++j) {
+                assert_near(warm->w[j], cold->w[j], 1e-12, 0);
+                assert_near(u2[j], u1[j], 1e-12, 0);
+            }
+            ++compared;
+        }
+    assert_int_equal(compared, 9);
+    tirenv_profile_free(p);
+    tirenv_ring_free(cold);
+    tirenv_ring_free(warm);
+}
+
+/* dF_z/dz, exact for the final contact states, against central differences (as
+ * test_ring.c's for the Winkler tread: step 1e-5 m, skipped where a state changes within it)
+ * on level ground, where every point is a node's ray (no vertex between nodes), through the
+ * tread and, pressed hard, the belt layer. Over obstacles the continuous contact's dF_z/dz
+ * (the Winkler tread's as well) leaves out that the cuts at ground vertices move with z; the
+ * equilibrium solver uses it as a slope only. */
+static void test_derivative(void **state)
+{
+    (void)state;
+    const tirenv_tire t = shear_tire();
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    size_t checked = 0, checked_belt = 0;
+    for (double z = 0.42; z < 0.68; z += 0.00537) {
+        const double dz = 1e-5;
+        double fx, F, dF, Fp, Fm, F0;
+        assert_int_equal(tirenv_ring_forces(r, flat, 0, z, &fx, &F, &dF, NULL, NULL), 0);
+        const size_t belt = tirenv_ring_belt_contacts(r);
+        if (F < 10)
+            continue;
+        tirenv_ring_forces(r, flat, 0, z + dz, &fx, &Fp, NULL, NULL, NULL);
+        tirenv_ring_forces(r, flat, 0, z - dz, &fx, &Fm, NULL, NULL, NULL);
+        tirenv_ring_forces(r, flat, 0, z, &fx, &F0, NULL, NULL, NULL);
+        if (fabs((Fp - F0) - (F0 - Fm)) > 1e-6 * fabs(dF) * dz)
+            continue;
+        assert_near(dF, (Fp - Fm) / (2 * dz), 0, 1e-6);
+        ++checked;
+        checked_belt += belt > 0;
+    }
+    print_message("dF_z/dz against central differences at %zu heights, %zu with belt contact\n",
+                  checked, checked_belt);
+    assert_true(checked > 20);
+    tirenv_profile_free(flat);
+    tirenv_ring_free(r);
+}
+
+/* Lugs on the shear-coupled tread: the grooves' softer compression, the exterior condensed
+ * afresh at each position (it turns with the tire); a curve over a cleat is finite, lifts the
+ * hub, and differs from the smooth tread's. */
+static void test_lugs(void **state)
+{
+    (void)state;
+    tirenv_tire t = shear_tire();
+    tirenv_model *smooth = tirenv_model_alloc(tirenv_model_ring, &t);
+    t.ring.lug_count = 23;
+    t.ring.lug_ratio = 0.3;
+    tirenv_model *lugged = tirenv_model_alloc(tirenv_model_ring, &t);
+    assert_non_null(lugged);
+    tirenv_profile *p = tirenv_profile_cleat(0.1, 0.05);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(smooth, p, 17848.42, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_model_set(lugged, p, 17848.42, &diag), TIRENV_OK);
+    double differ = 0, h_max = 0;
+    for (double x = -0.3; x <= 0.3; x += 0.0373) {
+        tirenv_point a, b;
+        assert_int_equal(tirenv_model_eval(smooth, x, &a, &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_eval(lugged, x, &b, &diag), TIRENV_OK);
+        assert_true(isfinite(b.h) && b.h >= -1e-9 && b.h <= 0.05);
+        differ = fmax(differ, fabs(a.h - b.h));
+        h_max = fmax(h_max, b.h);
+    }
+    assert_true(h_max > 0.01);
+    assert_true(differ > 1e-4);
+    tirenv_profile_free(p);
+    tirenv_model_free(smooth);
+    tirenv_model_free(lugged);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_zero_shear_is_winkler),
+        cmocka_unit_test(test_rays_ignore_shear),
+        cmocka_unit_test(test_decay_length),
+        cmocka_unit_test(test_warm_starts_agree),
+        cmocka_unit_test(test_derivative),
+        cmocka_unit_test(test_lugs),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
