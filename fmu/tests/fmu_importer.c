@@ -25,18 +25,7 @@
 
 #include "fmi2.h"
 
-static int n_checks, n_failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    printf("%s %d - ", ok ? "ok" : "not ok", ++n_checks);
-    vprintf(fmt, ap);
-    putchar('\n');
-    va_end(ap);
-    n_failed += !ok;
-}
+#include "../../tests/lib/tap.h"
 
 /* ---- the logger: keeps the last message, formatted as the standard says ------------------ */
 static char last_log[4096];
@@ -644,6 +633,5 @@ int main(int argc, char *argv[])
     free(xml);
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     run(cmd);
-    printf("1..%d\n%d passed, %d failed\n", n_checks, n_checks - n_failed, n_failed);
-    return n_failed ? 1 : 0;
+    return tap_done();
 }

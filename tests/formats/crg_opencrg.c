@@ -25,18 +25,7 @@
 
 #include "crgBaseLib.h"
 
-static int n_checks, n_failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    printf("%s %d - ", ok ? "ok" : "not ok", ++n_checks);
-    vprintf(fmt, ap);
-    putchar('\n');
-    va_end(ap);
-    n_failed += !ok;
-}
+#include "../lib/tap.h"
 
 /* A data set loaded, checked and with its modifiers applied; its contact point, or -1. */
 static int open_opencrg(const char *path)
@@ -120,6 +109,5 @@ int main(int argc, char *argv[])
           "(%zu of %zu flat rows within 2e-8 m; worst %.3g m)", same_flat, flat, worst_flat);
     free(u);
     free(h);
-    printf("1..%d\n%d passed, %d failed\n", n_checks, n_checks - n_failed, n_failed);
-    return n_failed ? 1 : 0;
+    return tap_done();
 }

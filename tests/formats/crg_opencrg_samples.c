@@ -35,18 +35,7 @@
 #include "crgBaseLib.h"
 #include "tirenv/crg.h"
 
-static int n_checks, n_failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    printf("%s %d - ", ok ? "ok" : "not ok", ++n_checks);
-    vprintf(fmt, ap);
-    putchar('\n');
-    va_end(ap);
-    n_failed += !ok;
-}
+#include "../lib/tap.h"
 
 static const char *base(const char *path)
 {
@@ -270,6 +259,5 @@ int main(int argc, char *argv[])
     else
         for (int k = 1; k < argc; k++)
             compare(argv[k]);
-    printf("1..%d\n%d passed, %d failed\n", n_checks, n_checks - n_failed, n_failed);
-    return n_failed ? 1 : 0;
+    return tap_done();
 }
