@@ -164,32 +164,3 @@ void tirenv_test_expect_diag(size_t i, int status, const tirenv_diag *d, int wan
     assert_string_equal(d->field, field);
     assert_non_null(strstr(d->message, says));
 }
-
-int tirenv_test_run_shard(int argc, char **argv, const char *group,
-                          const struct CMUnitTest *tests, size_t n)
-{
-    if (argc < 2)
-        return _cmocka_run_group_tests(group, tests, n, NULL, NULL);
-    unsigned long k = 0, shares = 0;
-    char end = 0;
-    if (argc != 2 || sscanf(argv[1], "%lu/%lu%c", &k, &shares, &end) != 2 || shares == 0 ||
-        k >= shares || k >= n) {
-        fprintf(stderr, "%s: expected no argument or one share K/N with 0 <= K < N and K < "
-                        "%zu (the tests), not \"%s\"%s\n",
-                argv[0], n, argv[1], argc > 2 ? " and more" : "");
-        return 2;
-    }
-    struct CMUnitTest *mine = malloc(n * sizeof *mine);
-    if (!mine) {
-        fprintf(stderr, "%s: out of memory\n", argv[0]);
-        return 2;
-    }
-    size_t m = 0;
-    for (size_t i = k; i < n; i += shares)
-        mine[m++] = tests[i];
-    char name[200];
-    snprintf(name, sizeof name, "%s, share %lu/%lu", group, k, shares);
-    const int failed = _cmocka_run_group_tests(name, mine, m, NULL, NULL);
-    free(mine);
-    return failed;
-}

@@ -82,15 +82,4 @@ void tirenv_test_write_text(const char *path, const char *text);
 /* Entries of the directory whose name contains the string. */
 size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containing);
 
-/* Runs the group of tests (cmocka_run_group_tests with no group fixtures), or with the one
- * argument "K/N" (0 <= K < N) its K-th share alone: the tests whose index i has i % N == K.
- * tests/CMakeLists.txt registers the N shares of a slow executable as N CTest tests, which
- * CTest runs side by side; together they run every test once. Another argument, or a share
- * without a test, fails with a message (exit 2). */
-#define tirenv_test_run(argc, argv, tests)                                                     \
-    tirenv_test_run_shard((argc), (argv), #tests, (tests), sizeof(tests) / sizeof((tests)[0]))
-
-int tirenv_test_run_shard(int argc, char **argv, const char *group,
-                          const struct CMUnitTest *tests, size_t n);
-
 #endif

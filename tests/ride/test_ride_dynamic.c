@@ -401,7 +401,7 @@ static void test_balance_budget(void **state)
             fail_msg("no \"%s\" in: %s", want[i], d.message);
 }
 
-int main(int argc, char **argv)
+int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_constant_load_is_static),
@@ -410,5 +410,5 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_balance_budget),
     };
-    return tirenv_test_run(argc, argv, tests);
+    return cmocka_run_group_tests(tests, NULL, NULL);
 }
