@@ -63,8 +63,7 @@ check "stopped at t = 3.25 s with its state saved to a file" \
 rc=$?
 values() { awk -F, -v from="$2" -v to="$3" 'NR > 1 && $1 + 0 >= from - 1e-9 && $1 + 0 <= to + 1e-9 {
                 print $2 "," $3 }' "$1"; }
-check "restored into a fresh instance (no parameter set again), it goes on as the whole run,
-      bit for bit (651 rows from t = 3.25 s)" \
+check "restored into a fresh instance (no parameter set again), it goes on as the whole run, bit for bit (651 rows from t = 3.25 s)" \
     '[ $rc -eq 0 ] && [ "$(values "$tmp/second.csv" 3.25 6.5)" = "$(values "$tmp/whole.csv" 3.25 6.5)" ] &&
      [ "$(values "$tmp/second.csv" 3.25 6.5 | wc -l)" -eq 651 ]' || sed 's/^/#   /' "$tmp/log"
 check "... and the first half is the whole run's too" \

@@ -230,9 +230,8 @@ int tirenv_crg__place(tirenv_crg *c, tirenv_diag *diag)
         status = tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
     else if (curved)
         status = tirenv_crg__refline(c, 0, x, y, phi, diag);
-    else
-        status = tirenv_crg__refline_rows(c, 0, lo, len, x, y, phi) ||
-                 tirenv_crg__refline_rows(c, 0, n - 1, 1, &last[0], &last[1], &last[2]);
+    else if ((status = tirenv_crg__refline_rows(c, 0, lo, len, x, y, phi)) == TIRENV_OK)
+        status = tirenv_crg__refline_rows(c, 0, n - 1, 1, &last[0], &last[1], &last[2]);
     if (!status) {
         const rows_view r = {x, y, phi, curved ? 0 : lo};
         /* OpenCRG's first heading is REFERENCE_LINE_START_PHI as given (0 without it), its

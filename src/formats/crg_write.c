@@ -242,12 +242,13 @@ int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *d
     } else {
         const size_t width = w->enc == TIRENV_CRG_LRFI ? 10 : 20;
         const size_t per = RECORD_BYTES / width;
+        FILE *const fp = tirenv_outfile_stream(w->out);
         char field[32];
         for (size_t j = 0; j < w->nv; j++) {
             format_field(field, width, z[j] - w->z_start);
-            fputs(field, tirenv_outfile_stream(w->out));
+            fputs(field, fp);
             if ((j + 1) % per == 0 || j + 1 == w->nv)
-                fputc('\n', tirenv_outfile_stream(w->out));
+                fputc('\n', fp);
         }
     }
     w->written++;
