@@ -218,8 +218,9 @@ static int cam_patch(const tirenv_tire *t, const cam_range *range, double load, 
     }
     if (!(*rho < R0))
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
-                            "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m), "
-                            "beyond its free radius %g m", load, *rho, t->cam.c_z, R0);
+                            "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m%s), "
+                            "beyond its free radius %g m", load, *rho, t->cam.c_z,
+                            t->cam.q_fz2 != 0 ? " and Q_FZ2" : "", R0);
     if (!(*rho <= range->y_max * R0))
         return out_of_range(t, range, load, 0, diag);
     const double r = *rho / R0, y = sqrt(r);

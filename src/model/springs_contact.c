@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* Continuous contact of the springs model (docs/models.md section 4.3): a tread between the
+/* Continuous contact of the springs model (docs/models.md section 4.8): a tread between the
  * elements that meets every ground vertex, the tip problem as a QP whose rows couple
  * neighbouring elements, solved exactly by a primal active-set method. */
 #include "model/springs_impl.h"

@@ -324,9 +324,8 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
                              double x, double z, double w[], double pe[], double obstacle[],
                              tirenv_diag *diag);
 
-/* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
- * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
- * ray_active(c, i)). */
+/* Whether element i's own ray row is in the last solution's working set (inline: called per
+ * element of every full-QP evaluation). */
 static inline int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i)
 {
     if (!(c->f0 <= i && i <= c->f1))
@@ -334,6 +333,10 @@ static inline int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, siz
     const size_t r = c->pin_row[i];
     return r != SIZE_MAX && c->in_w[r] && c->rows[r].id < 0;
 }
+
+/* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
+ * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
+ * ray_active(c, i)). */
 void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const double w[], const double dd[], double dw[]);
 

@@ -141,6 +141,8 @@ static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
 {
     const double R0 = t->springs.R0;
     int status = identify_vertical(t, n, tg, diag);
+    if (!status)
+        status = tirenv_tire_check(t, diag); /* model_alloc's NULL would say only "invalid" */
     if (status)
         return status;
     tirenv_model *cam = tirenv_model_alloc(tirenv_model_cam, t);
