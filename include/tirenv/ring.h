@@ -46,8 +46,8 @@ double tirenv_ring_patch_length(const tirenv_ring *r);
  * f_j (N: the tread's plus the belt's reaction) of the last evaluation, into arrays of
  * tirenv_ring_size() entries (may be NULL). With the shear-coupled tread (an option,
  * TREAD_SHEAR > 0, off by default; docs/models.md section 5.3) w outside the contact window
- * comes from a solve of the unloaded belt and tread there, which allocates (NAN everywhere if
- * memory runs out). */
+ * comes from a solve of the unloaded belt and tread there, which allocates (NAN outside the
+ * window if memory runs out). */
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
 
 /* The contact of the last evaluation per node, into arrays of tirenv_ring_size() entries (may
@@ -61,8 +61,8 @@ void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
 void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[]);
 
 /* Largest tread compression max_j min(max(0, e_j), t_r) (m; with the shear-coupled tread the
- * largest u - w, the tread surface's displacement less the belt's) and number of nodes where
- * the belt itself touches (g_j > 0) at the last evaluation. */
+ * largest u - w, the tread surface's displacement less the belt's, capped at t_r) and number
+ * of nodes where the belt itself touches (g_j > 0) at the last evaluation. */
 double tirenv_ring_tread_max(const tirenv_ring *r);
 size_t tirenv_ring_belt_contacts(const tirenv_ring *r);
 

@@ -21,6 +21,10 @@
  * length is first needed. */
 typedef struct tirenv_ring_belt tirenv_ring_belt;
 
+/* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface
+ * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */
+#define TIRENV_RING_GROUND_LAYER 1e4
+
 /* The tread coupled in shear along the arc (ring_shear.c, docs/models.md section 5.3): its
  * constants, the exterior's condensation per window length, the banded system of the window's
  * belt and tread surface, and the tread surface's displacement per node. */

@@ -6,12 +6,12 @@
  *     1/2 k_c (u - w)^2 + 1/2 k_s (du/ds)^2,   k_s = G_t t_r b (TREAD_SHEAR, the tread depth,
  *                                              BELT_WIDTH),
  * and the ground presses on u at the continuous contact's quadrature points (ring_ground.c)
- * through a contact layer k_g = RING_GROUND_LAYER k_t, with k_c chosen so that k_c in series
- * with k_g is the tread's k_t: where the tread surface touches, the tread carries k_t times its
- * compression as before; where it does not, its neighbours drag it in over the decay length
- * sqrt(k_s / k_c). The belt layer beneath the tread acts on w as in ring_smooth.c, so nothing
- * cuts through. The contact is the minimum over the window's (w, u) of the convex, piecewise
- * quadratic
+ * through a contact layer k_g = TIRENV_RING_GROUND_LAYER k_t (ring_impl.h), with k_c chosen so
+ * that k_c in series with k_g is the tread's k_t: where the tread surface touches, the tread
+ * carries k_t times its compression as before; where it does not, its neighbours drag it in over
+ * the decay length sqrt(k_s / k_c). The belt layer beneath the tread acts on w as in
+ * ring_smooth.c, so nothing cuts through. The contact is the minimum over the window's (w, u) of
+ * the convex, piecewise quadratic
  *     E = 1/2 x.K x + sum_q omega_q R [1/2 k_g max(0, d_q - u_q)^2
  *                                      + 1/2 k_b max(0, d_q - w_q - t_r)^2],
  * K the belt's and the tread's stiffness condensed onto the window. The unknowns are
@@ -24,9 +24,7 @@
 #include <string.h>
 #include "model/ring_impl.h"
 
-/* k_g / k_t: the contact layer between the ground and the tread surface (docs/models.md 5.3),
- * and k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
-static const double RING_GROUND_LAYER = 1e4;
+/* k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
 static const double RING_BELT_LAYER = 1e3;
 enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, SHEAR_POLISH = 8, BAND_P = 4, TAIL = 4,
        NB = 6 };
@@ -227,7 +225,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->M = M;
     memcpy(T->s, stencil, sizeof T->s);
     T->k_sh = tirenv_ring__tread_shear(par) / (R * dth);
-    T->k_g = RING_GROUND_LAYER * k_t;
+    T->k_g = TIRENV_RING_GROUND_LAYER * k_t;
     T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
     T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
     T->kap = malloc(2 * M * sizeof *T->kap);
@@ -589,7 +587,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                             "settle in %d Newton steps", r->n_pts, n, SHEAR_MAX_ITER);
     /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
      * change with it: the same matrix). */
-    if (!factored) {
+    if (dfz_dz && !factored) {
         assemble(r, Q, xt);
         if (band_factor(&T->win))
             return broke_down(n, diag);

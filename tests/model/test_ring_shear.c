@@ -153,7 +153,7 @@ static double blade_on_stiff_belt(double dtheta)
     double fx, fz;
     assert_int_equal(tirenv_ring_forces(r, p, 0, R0 + 0.03, &fx, &fz, NULL, NULL, NULL), 0);
     const double *u = tirenv_ring__tread_u(r->tread), *w = r->w;
-    const double R = r->R, dth = r->dth, k_t = t.ring.k_t, k_g = 1e4 * k_t;
+    const double R = r->R, dth = r->dth, k_t = t.ring.k_t, k_g = TIRENV_RING_GROUND_LAYER * k_t;
     const double k_c = k_t * k_g / (k_g - k_t), k_s = t.ring.G_t * t.ring.t_r * t.ring.b_p;
     const double l = sqrt(k_s / k_c), h = R * dth;
     const double c = 2 + (h / l) * (h / l), ratio = 0.5 * (c - sqrt(c * c - 4));
@@ -170,7 +170,15 @@ static double blade_on_stiff_belt(double dtheta)
             assert_true(v > 0);
             worst = fmax(worst, fabs(vn / v - ratio));
         }
-    const double l_fit = -h / log(ratio);
+    /* The decay length fitted to the computed field: the mean per-node ratio from node 4 to
+     * the window's end, either side. */
+    double l_fit = 0;
+    for (int side = -1; side <= 1; side += 2) {
+        const size_t ja = side < 0 ? i0 - 4 : i0 + 4;
+        const size_t jb = side < 0 ? i0 - (k_end - 1) : i0 + (k_end - 1);
+        const double ratio_m = pow((u[jb] - w[jb]) / (u[ja] - w[ja]), 1.0 / (double)(k_end - 5));
+        l_fit += 0.5 * (-h / log(ratio_m));
+    }
     const double F_closed = delta * (k_c * a + 2 * sqrt(k_s * k_c));
     print_message("NODE_ANGLE %.4g deg: decay length %.4f m (closed form %.4f m), per-node "
                   "ratio off by %.2g; blade force %.1f N, closed form %.1f N\n",
