@@ -449,18 +449,16 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     s->b = f1;
     double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
     double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
+    size_t n = 0; /* the elements the ground presses, as with rays */
     for (size_t i = f0; i <= f1; ++i) {
         sum_c += k_r * s->w[i] * s->cos_t[i];
         sum_s += k_r * s->w[i] * s->sin_t[i];
+        n += s->p[i] > 0;
     }
     *fz = sum_c;
     *fx = -sum_s;
-    if (contacts) { /* the elements the ground presses, as with rays */
-        size_t n = 0;
-        for (size_t i = f0; i <= f1; ++i)
-            n += s->p[i] > 0;
+    if (contacts)
         *contacts = n;
-    }
     if (!dfz_dz)
         return TIRENV_OK;
     if (fast) {
@@ -475,9 +473,12 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
     } else {
-        for (size_t i = f0; i <= f1; ++i)
-            if (tirenv_springs__cc_ray_active(&s->cc, i))
+        const tirenv_springs__cc *cc = &s->cc; /* [f0, f1] is the QP's span */
+        for (size_t i = f0; i <= f1; ++i) { /* the elements held by their own ray's row */
+            const size_t r = cc->pin_row[i];
+            if (r != SIZE_MAX && cc->in_w[r] && cc->rows[r].id < 0)
                 s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
+        }
         tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw);
     }
     double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];

@@ -31,6 +31,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         return TIRENV_ENOMEM;
     c->f0 = 1;
     c->f1 = 0;
+    c->tri_ok = 0;
     return TIRENV_OK;
 }
 
@@ -97,8 +98,13 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     size_t n = 0, n_schur = 0;
+    /* wpos still marks the held elements of the last layout: the same span and held
+     * elements give the same K_FF, whose factor the Schur path then keeps */
+    int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
     for (size_t e = f0; e <= f1; ++e) {
-        if (fixed(c, e)) {
+        const int held = fixed(c, e);
+        same = same && held == (c->wpos[e] == SIZE_MAX);
+        if (held) {
             c->wpos[e] = SIZE_MAX;
         } else {
             c->wpos[e] = n;
@@ -117,8 +123,10 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     c->n_kkt = n;
     c->n_schur = n_schur;
     c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
+    c->tri_same = same;
     if (c->use_schur)
         return tirenv_springs__cc_schur_factor(c, T);
+    c->tri_ok = 0; /* wpos no longer describes the factor kept */
     /* The band's half-width, for the banded path only: how far each unknown's row reaches
      * back, an element to its free left neighbour, a row (of sector i, laid out after
      * element i + 1) to the first free element of the two it couples. */
@@ -356,38 +364,35 @@ static void warm_set(tirenv_springs__cc *c)
     }
 }
 
-static int keep_warm(tirenv_springs__cc *c, size_t N)
+/* Room in warm_ids for every row between elements (keep_warm fills it in the solve's last
+ * pass over the rows, with no count before). */
+static int reserve_warm(tirenv_springs__cc *c)
 {
-    memset(c->warm_pin, 0, N);
-    size_t n = 0;
-    for (size_t r = 0; r < c->n_rows; ++r)
-        if (c->in_w[r] && c->rows[r].t > 0)
-            ++n;
-    if (n > c->cap_warm) {
-        long *ids = realloc(c->warm_ids, n * sizeof *ids);
-        if (!ids)
-            return TIRENV_ENOMEM;
-        c->warm_ids = ids;
-        c->cap_warm = n;
-    }
-    n = 0;
-    for (size_t r = 0; r < c->n_rows; ++r) {
-        if (!c->in_w[r])
-            continue;
-        if (c->rows[r].t > 0) {
-            const long id = c->rows[r].id;
-            size_t m = n++;
-            while (m > 0 && c->warm_ids[m - 1] > id) {
-                c->warm_ids[m] = c->warm_ids[m - 1];
-                --m;
-            }
-            c->warm_ids[m] = id;
-        } else {
-            c->warm_pin[c->rows[r].i] = 1;
-        }
-    }
-    c->n_warm = n;
+    if (c->n_rows <= c->cap_warm)
+        return TIRENV_OK;
+    long *ids = realloc(c->warm_ids, c->n_rows * sizeof *ids);
+    if (!ids)
+        return TIRENV_ENOMEM;
+    c->warm_ids = ids;
+    c->cap_warm = c->n_rows;
     return TIRENV_OK;
+}
+
+/* Row r of the final working set joins the warm start: its element, or its vertex in
+ * warm_ids (kept ascending; *n of them so far). */
+static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
+{
+    if (c->rows[r].t > 0) {
+        const long id = c->rows[r].id;
+        size_t m = (*n)++;
+        while (m > 0 && c->warm_ids[m - 1] > id) {
+            c->warm_ids[m] = c->warm_ids[m - 1];
+            --m;
+        }
+        c->warm_ids[m] = id;
+    } else {
+        c->warm_pin[c->rows[r].i] = 1;
+    }
 }
 
 int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], double tol)
@@ -422,21 +427,26 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
     if (st == 0) {
-        for (size_t e = f0; e <= f1; ++e)
-            raise[e] = 0;
+        /* Usually no row is violated (the same working set as the last evaluation's, a step
+         * away): then wc = wq, and raise is not needed. */
         int violated = 0;
-        for (size_t r = 0; r < n_rows; ++r) {
-            const double s = slack(&c->rows[r], wq);
-            if (!c->in_w[r] && s < -tol) {
-                violated = 1;
-                const tirenv_springs__cc_row *R = &c->rows[r];
-                raise[R->i] = fmax(raise[R->i], -s);
-                if (R->t > 0)
-                    raise[R->j] = fmax(raise[R->j], -s);
+        for (size_t r = 0; r < n_rows && !violated; ++r)
+            violated = !c->in_w[r] && slack(&c->rows[r], wq) < -tol;
+        if (violated) {
+            for (size_t e = f0; e <= f1; ++e)
+                raise[e] = 0;
+            for (size_t r = 0; r < n_rows; ++r) {
+                const double s = slack(&c->rows[r], wq);
+                if (!c->in_w[r] && s < -tol) {
+                    const tirenv_springs__cc_row *R = &c->rows[r];
+                    raise[R->i] = fmax(raise[R->i], -s);
+                    if (R->t > 0)
+                        raise[R->j] = fmax(raise[R->j], -s);
+                }
             }
         }
-        for (size_t e = f0; e <= f1; ++e)
-            wc[e] = wq[e] + raise[e];
+        for (size_t e = f0; e <= f1; ++e) /* + 0 when nothing is raised: as wq + raise */
+            wc[e] = violated ? wq[e] + raise[e] : wq[e] + 0.0;
         if (violated) {
             for (size_t r = 0; r < n_rows; ++r) {
                 const tirenv_springs__cc_row *R = &c->rows[r];
@@ -510,30 +520,41 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         /* At the working set's minimiser: the reactions decide. */
         double l_min = 0, l_max = 0;
         size_t drop = SIZE_MAX;
-        for (size_t r = 0; r < n_rows; ++r)
-            if (c->in_w[r])
-                l_max = fmax(l_max, fabs(c->lambda[r]));
-        for (size_t r = 0; r < n_rows; ++r)
-            if (c->in_w[r] && c->lambda[r] < l_min) {
-                l_min = c->lambda[r];
+        for (size_t r = 0; r < n_rows; ++r) {
+            if (!c->in_w[r])
+                continue;
+            const double l = c->lambda[r], m = fabs(l);
+            if (m > l_max) /* fmax(l_max, |l|) but for a NaN, which fmax skips too */
+                l_max = m;
+            if (l < l_min) {
+                l_min = l;
                 drop = r;
             }
+        }
         if (drop == SIZE_MAX || l_min >= -1e-12 * l_max)
             break;
         c->in_w[drop] = 0;
         at_min = 0;
     }
     c->iterations = it + 1;
-    for (size_t r = 0; r < n_rows; ++r)
-        if (!c->in_w[r])
-            c->lambda[r] = 0;
+    if (reserve_warm(c))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
+                            "of the springs model");
     for (size_t e = f0; e <= f1; ++e) {
         w[e] = wc[e];
         pe[e] = 0;
         obstacle[e] = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
     }
+    /* One pass: the rows out of the set get no reaction, every row loads its tips, the
+     * final set is kept for the next solve's warm start. */
+    memset(c->warm_pin, 0, N);
+    size_t n_warm = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &c->rows[r];
+        if (c->in_w[r])
+            keep_warm(c, r, &n_warm);
+        else
+            c->lambda[r] = 0;
         if (R->t > 0) {
             pe[R->i] += R->ga * c->lambda[r];
             pe[R->j] += R->gb * c->lambda[r];
@@ -541,11 +562,9 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
             pe[R->i] += c->lambda[r];
         }
     }
+    c->n_warm = n_warm;
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
-    if (keep_warm(c, N))
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
-                            "of the springs model");
     return TIRENV_OK;
 }
 

@@ -277,6 +277,11 @@ typedef struct {
     size_t chain_lo[TIRENV_SPRINGS__SCHUR_MAX], chain_hi[TIRENV_SPRINGS__SCHUR_MAX];
     double *tri_piv, *tri_mul, *tri_x, *tri_y;
     size_t *chains, n_chains; /* the chains of free elements: first and last of each */
+    /* tri_piv, tri_mul and chains hold K_FF's factor for the span tri_f0..tri_f1 and the
+     * held elements wpos marks (tri_ok): the next layout with the same span and held
+     * elements (the confirming evaluation, the next position) reuses it */
+    int tri_ok, tri_same;
+    size_t tri_f0, tri_f1;
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
@@ -324,19 +329,9 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
                              double x, double z, double w[], double pe[], double obstacle[],
                              tirenv_diag *diag);
 
-/* Whether element i's own ray row is in the last solution's working set (inline: called per
- * element of every full-QP evaluation). */
-static inline int tirenv_springs__cc_ray_active(const tirenv_springs__cc *c, size_t i)
-{
-    if (!(c->f0 <= i && i <= c->f1))
-        return 0;
-    const size_t r = c->pin_row[i];
-    return r != SIZE_MAX && c->in_w[r] && c->rows[r].id < 0;
-}
-
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
- * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose ray row is active (those with
- * ray_active(c, i)). */
+ * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose own ray row (id < 0, its
+ * pin_row) is in the working set. */
 void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const double w[], const double dd[], double dw[]);
 

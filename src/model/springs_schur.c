@@ -28,16 +28,24 @@ static int coupled(const tirenv_springs__cc *c, size_t e)
     return e > c->f0 && c->wpos[e - 1] != SIZE_MAX;
 }
 
-/* x := K_FF^-1 x on one chain [lo, hi] of free elements (held or outside the span at both
- * ends): K_FF does not couple across a held element. */
-static void chain_solve(const tirenv_springs__cc *c, double x[], size_t lo, size_t hi)
+/* x := K_FF^-1 x on one chain [lo, hi] of free elements, x zero on [lo, from): the forward
+ * elimination leaves those zeros as they are (x - mul 0 = +0), so it starts at from. */
+static void chain_solve_from(const tirenv_springs__cc *c, double x[], size_t lo, size_t from,
+                             size_t hi)
 {
     const double *piv = c->tri_piv, *mul = c->tri_mul;
-    for (size_t e = lo + 1; e <= hi; ++e)
+    for (size_t e = from + 1; e <= hi; ++e)
         x[e] -= mul[e] * x[e - 1];
     x[hi] = x[hi] / piv[hi];
     for (size_t e = hi; e-- > lo;)
         x[e] = x[e] / piv[e] - mul[e + 1] * x[e + 1];
+}
+
+/* x := K_FF^-1 x on one chain [lo, hi] of free elements (held or outside the span at both
+ * ends): K_FF does not couple across a held element. */
+static void chain_solve(const tirenv_springs__cc *c, double x[], size_t lo, size_t hi)
+{
+    chain_solve_from(c, x, lo, lo, hi);
 }
 
 /* x := K_FF^-1 x on every free element of [f0, f1], chain by chain (the chains the factor
@@ -66,7 +74,10 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
     const double k_ir = T->k_ir, k_max = T->k_r + 2 * T->k_ir;
     double *piv = c->tri_piv, *mul = c->tri_mul;
     size_t n_chains = 0;
-    for (size_t e = f0; e <= f1; ++e) {
+    /* K_FF depends on the span and the held elements only: its factor is kept while they
+     * stay (kkt_factor compares them), bit for bit what factorising again gives. */
+    c->tri_ok = 0;
+    for (size_t e = f0; !c->tri_same && e <= f1; ++e) {
         if (c->wpos[e] == SIZE_MAX)
             continue;
         double d = k_diag(c, T, e);
@@ -82,7 +93,11 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
             return 1;
         piv[e] = d;
     }
-    c->n_chains = n_chains;
+    if (!c->tri_same)
+        c->n_chains = n_chains;
+    c->tri_ok = 1;
+    c->tri_f0 = f0;
+    c->tri_f1 = f1;
     /* The working rows' columns of K_FF^-1 G^T, then S = G K_FF^-1 G^T by LDL^T. */
     for (size_t q = 0; q < k; ++q) {
         const tirenv_springs__cc_row *r = &c->rows[c->order[c->schur_pos[q]] - N];
@@ -102,11 +117,16 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
         c->chain_hi[q] = hi;
         for (size_t e = lo; e <= hi; ++e)
             y[e] = 0;
-        if (c->wpos[r->i] != SIZE_MAX)
+        size_t from = hi;
+        if (c->wpos[r->i] != SIZE_MAX) {
             y[r->i] = r->ga;
-        if (r->t > 0 && c->wpos[r->j] != SIZE_MAX)
+            from = r->i;
+        }
+        if (r->t > 0 && c->wpos[r->j] != SIZE_MAX) {
             y[r->j] = r->gb;
-        chain_solve(c, y, lo, hi);
+            from = r->j < from ? r->j : from;
+        }
+        chain_solve_from(c, y, lo, from, hi);
     }
     double *S = c->schur;
     for (size_t p = 0; p < k; ++p) {
