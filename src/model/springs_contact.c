@@ -18,8 +18,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
-    double **dbl[] = {&c->pin_h, &c->w_try, &c->step, &c->raise, &c->tri_piv, &c->tri_mul,
-                      &c->tri_x};
+    double **dbl[] = {&c->pin_h, &c->w_try, &c->step, &c->raise, &c->tri_piv, &c->tri_mul};
     for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; ++k)
         if (!(*dbl[k] = calloc(N + 2, sizeof **dbl[k])))
             return TIRENV_ENOMEM;
@@ -32,6 +31,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
     c->f0 = 1;
     c->f1 = 0;
     c->tri_ok = 0;
+    c->tri_n = N;
     return TIRENV_OK;
 }
 
@@ -56,7 +56,6 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->raise);
     free(c->tri_piv);
     free(c->tri_mul);
-    free(c->tri_x);
     free(c->tri_y);
     free(c->chains);
     free(c->warm_ids);
@@ -218,14 +217,10 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     return 0;
 }
 
-/* Solves the factored system for b (length n_kkt) in place. */
-static void kkt_solve(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                      double b[])
+/* Solves the banded factored system for b (length n_kkt) in place (the Schur path solves
+ * by element, tirenv_springs__cc_schur_solve_at). */
+static void kkt_solve(const tirenv_springs__cc *c, double b[])
 {
-    if (c->use_schur) {
-        tirenv_springs__cc_schur_solve(c, T, b);
-        return;
-    }
     const size_t n = c->n_kkt, bw = c->bw, W = bw + 1;
     const double *L = c->band;
     const size_t *first = c->env_first, *last = c->env_last;
@@ -249,31 +244,13 @@ static void kkt_solve(const tirenv_springs__cc *c, const tirenv_springs__cc_tire
 #undef AT
 }
 
-/* The right-hand side of the reduced system for held values v (v[e] on held elements) and
- * w-part and row-part sources: w-part k_ir v of held neighbours, row-part less the held
- * elements' share. */
+/* The right-hand side of the reduced banded system for held values v (v[e] on held
+ * elements) and w-part and row-part sources: w-part k_ir v of held neighbours, row-part
+ * less the held elements' share (schur_rhs on the Schur path). */
 static void reduced_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                         const double v[], double b[])
 {
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
-    if (c->use_schur) { /* a free element next to a held one ends a chain */
-        for (size_t q = 0; q < c->n_chains; ++q) {
-            const size_t lo = c->chains[2 * q], hi = c->chains[2 * q + 1];
-            if (lo > f0)
-                b[c->wpos[lo]] += T->k_ir * v[lo - 1];
-            if (hi < f1)
-                b[c->wpos[hi]] += T->k_ir * v[hi + 1];
-        }
-        for (size_t q = 0; q < c->n_schur; ++q) {
-            const size_t p = c->schur_pos[q];
-            const tirenv_springs__cc_row *r = &c->rows[c->order[p] - N];
-            if (c->wpos[r->i] == SIZE_MAX)
-                b[p] -= r->ga * v[r->i];
-            if (r->t > 0 && c->wpos[r->j] == SIZE_MAX)
-                b[p] -= r->gb * v[r->j];
-        }
-        return;
-    }
     for (size_t p = 0; p < c->n_kkt; ++p) {
         const size_t u = c->order[p];
         if (u < N) {
@@ -291,6 +268,29 @@ static void reduced_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
     }
 }
 
+/* The right-hand side on the Schur path, by element: x[e] (free elements) plus k_ir v of
+ * held neighbours (a free element next to a held one ends a chain), lam[q] (the q-th
+ * working row between elements) less the held elements' share. */
+static void schur_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                      const double v[], double x[], double lam[])
+{
+    const size_t N = T->N, f0 = c->f0, f1 = c->f1;
+    for (size_t q = 0; q < c->n_chains; ++q) {
+        const size_t lo = c->chains[2 * q], hi = c->chains[2 * q + 1];
+        if (lo > f0)
+            x[lo] += T->k_ir * v[lo - 1];
+        if (hi < f1)
+            x[hi] += T->k_ir * v[hi + 1];
+    }
+    for (size_t q = 0; q < c->n_schur; ++q) {
+        const tirenv_springs__cc_row *r = &c->rows[c->order[c->schur_pos[q]] - N];
+        if (c->wpos[r->i] == SIZE_MAX)
+            lam[q] -= r->ga * v[r->i];
+        if (r->t > 0 && c->wpos[r->j] == SIZE_MAX)
+            lam[q] -= r->gb * v[r->j];
+    }
+}
+
 /* The minimiser of 1/2 w^T K w on the working set's rows as equalities: w into wq[f0..f1],
  * the rows' reactions into lambda (a held element's own row's from its equation of K w =
  * G^T lambda). 1 if the rows are dependent, -1 out of memory. */
@@ -304,15 +304,30 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
     for (size_t e = f0; e <= f1; ++e)
         if (c->wpos[e] == SIZE_MAX)
             wq[e] = c->rows[c->pin_row[e]].h;
-    for (size_t p = 0; p < c->n_kkt; ++p)
-        b[p] = c->order[p] < N ? 0 : c->rows[c->order[p] - N].h;
-    reduced_rhs(c, T, wq, b);
-    kkt_solve(c, T, b);
-    for (size_t p = 0; p < c->n_kkt; ++p) {
-        if (c->order[p] < N)
-            wq[c->order[p]] = b[p];
-        else
-            c->lambda[c->order[p] - N] = -b[p];
+    if (c->use_schur) {
+        /* By element, not in the KKT order (the free elements' entries of wq, the rows'
+         * in lam). */
+        double lam[TIRENV_SPRINGS__SCHUR_MAX];
+        for (size_t q = 0; q < c->n_chains; ++q)
+            for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
+                wq[e] = 0;
+        for (size_t q = 0; q < c->n_schur; ++q)
+            lam[q] = c->rows[c->order[c->schur_pos[q]] - N].h;
+        schur_rhs(c, T, wq, wq, lam);
+        tirenv_springs__cc_schur_solve_at(c, wq, lam);
+        for (size_t q = 0; q < c->n_schur; ++q)
+            c->lambda[c->order[c->schur_pos[q]] - N] = lam[q];
+    } else {
+        for (size_t p = 0; p < c->n_kkt; ++p)
+            b[p] = c->order[p] < N ? 0 : c->rows[c->order[p] - N].h;
+        reduced_rhs(c, T, wq, b);
+        kkt_solve(c, b);
+        for (size_t p = 0; p < c->n_kkt; ++p) {
+            if (c->order[p] < N)
+                wq[c->order[p]] = b[p];
+            else
+                c->lambda[c->order[p] - N] = -b[p];
+        }
     }
     /* The held elements' reactions: (K w)_e less what the working rows between elements
      * put on e. */
@@ -545,16 +560,19 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         pe[e] = 0;
         obstacle[e] = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
     }
-    /* One pass: the rows out of the set get no reaction, every row loads its tips, the
-     * final set is kept for the next solve's warm start. */
+    /* One pass: the rows out of the set get no reaction, the others load their tips (a
+     * row with no reaction would add 0, which leaves pe as it is: pe starts at +0 and no
+     * sum of nonzero terms gives -0), and the final set is kept for the next solve's warm
+     * start. */
     memset(c->warm_pin, 0, N);
     size_t n_warm = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &c->rows[r];
-        if (c->in_w[r])
-            keep_warm(c, r, &n_warm);
-        else
+        if (!c->in_w[r]) {
             c->lambda[r] = 0;
+            continue;
+        }
+        keep_warm(c, r, &n_warm);
         if (R->t > 0) {
             pe[R->i] += R->ga * c->lambda[r];
             pe[R->j] += R->gb * c->lambda[r];
@@ -583,6 +601,28 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             const tirenv_springs__cc_row *R = &c->rows[c->pin_row[e]];
             dw[e] = R->id < 0 ? dd[e] : R->dh_dz;
         }
+    if (c->use_schur) { /* by element: the same sums as the banded path's below */
+        double lam[TIRENV_SPRINGS__SCHUR_MAX];
+        for (size_t q = 0; q < c->n_chains; ++q)
+            for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
+                dw[e] = 0;
+        for (size_t q = 0; q < c->n_schur; ++q) {
+            const size_t r = c->order[c->schur_pos[q]] - N;
+            const tirenv_springs__cc_row *R = &c->rows[r];
+            double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
+            if (R->t > 0) {
+                rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j];
+                if (c->wpos[R->i] != SIZE_MAX)
+                    dw[R->i] += R->dga_dz * c->lambda[r];
+                if (c->wpos[R->j] != SIZE_MAX)
+                    dw[R->j] += R->dgb_dz * c->lambda[r];
+            }
+            lam[q] = rhs;
+        }
+        schur_rhs(c, T, dw, dw, lam);
+        tirenv_springs__cc_schur_solve_at(c, dw, lam);
+        return;
+    }
     double *b = c->rhs;
     for (size_t p = 0; p < c->n_kkt; ++p)
         b[p] = 0;
@@ -602,7 +642,7 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         b[p] = rhs;
     }
     reduced_rhs(c, T, dw, b);
-    kkt_solve(c, T, b);
+    kkt_solve(c, b);
     for (size_t e = f0; e <= f1; ++e)
         if (c->wpos[e] != SIZE_MAX)
             dw[e] = b[c->wpos[e]];

@@ -270,18 +270,18 @@ typedef struct {
     size_t n_kkt, bw;
     /* with at most TIRENV_SPRINGS__SCHUR_MAX working rows between elements, the system is
      * solved by the tridiagonal K_FF and the rows' Schur complement (springs_schur.c):
-     * per element the Thomas pivots and multipliers, scratch, the rows' columns of
-     * K_FF^-1 G^T (N + 2 each); S's LDL^T factors; the rows' KKT positions */
+     * per element the Thomas pivots and multipliers, the rows' columns of K_FF^-1 G^T
+     * (N + 2 each); S's LDL^T factors; the rows' KKT positions */
     int use_schur;
     size_t n_schur, schur_pos[TIRENV_SPRINGS__SCHUR_MAX];
     size_t chain_lo[TIRENV_SPRINGS__SCHUR_MAX], chain_hi[TIRENV_SPRINGS__SCHUR_MAX];
-    double *tri_piv, *tri_mul, *tri_x, *tri_y;
+    double *tri_piv, *tri_mul, *tri_y;
     size_t *chains, n_chains; /* the chains of free elements: first and last of each */
     /* tri_piv, tri_mul and chains hold K_FF's factor for the span tri_f0..tri_f1 and the
      * held elements wpos marks (tri_ok): the next layout with the same span and held
      * elements (the confirming evaluation, the next position) reuses it */
     int tri_ok, tri_same;
-    size_t tri_f0, tri_f1;
+    size_t tri_f0, tri_f1, tri_n; /* tri_n: N, the rows' KKT unknowns are N + row */
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
@@ -303,10 +303,11 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c);
 void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start */
 /* springs_schur.c: factor the KKT system laid out by the banded path (wpos, order, the
  * n_schur working rows between elements at schur_pos); 1 if the rows are dependent. Then
- * solve it for b in the KKT order, in place, as the banded solve does. */
+ * solve it by element: x[e] on the free elements (the chains) holds the right-hand side of
+ * K's rows and returns w_e; lam[q] holds that of the q-th working row between elements and
+ * returns its reaction lambda (N). */
 int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T);
-void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
-                                    const tirenv_springs__cc_tire *T, double b[]);
+void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c, double x[], double lam[]);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach

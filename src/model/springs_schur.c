@@ -155,22 +155,16 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
     return 0;
 }
 
-void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
-                                    const tirenv_springs__cc_tire *T, double b[])
+void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c, double x[], double lam[])
 {
-    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const size_t f0 = c->f0, f1 = c->f1, N = c->tri_n, k = c->n_schur;
     const double *S = c->schur;
-    double *x = c->tri_x, lam[TIRENV_SPRINGS__SCHUR_MAX];
     /* K w = b_w + G^T lambda, G w = b_r: w = w0 + K^-1 G^T lambda with w0 = K^-1 b_w, and
      * S lambda = b_r - G w0. */
-    for (size_t q = 0; q < c->n_chains; ++q)
-        for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
-            x[e] = b[c->wpos[e]];
     tri_solve(c, x);
-    for (size_t p = 0; p < k; ++p) {
-        const size_t pos = c->schur_pos[p];
-        lam[p] = b[pos] - row_dot(c, &c->rows[c->order[pos] - N], x, f0, f1);
-    }
+    for (size_t p = 0; p < k; ++p)
+        lam[p] -= row_dot(c, &c->rows[c->order[c->schur_pos[p]] - N], x, f0, f1);
+#define S_AT(p, q) S[(p) * TIRENV_SPRINGS__SCHUR_MAX + (q)]
     for (size_t p = 0; p < k; ++p)
         for (size_t m = 0; m < p; ++m)
             lam[p] -= S_AT(p, m) * lam[m];
@@ -185,9 +179,4 @@ void tirenv_springs__cc_schur_solve(const tirenv_springs__cc *c,
         for (size_t e = c->chain_lo[q]; e <= c->chain_hi[q]; ++e)
             x[e] += lam[q] * y[e];
     }
-    for (size_t q = 0; q < c->n_chains; ++q)
-        for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
-            b[c->wpos[e]] = x[e];
-    for (size_t p = 0; p < k; ++p)
-        b[c->schur_pos[p]] = -lam[p]; /* the symmetric form's unknown, -lambda */
 }
