@@ -60,6 +60,8 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->chains);
     free(c->warm_ids);
     free(c->warm_pin);
+    free(c->last_id);
+    free(c->last_key);
     memset(c, 0, sizeof *c);
 }
 
@@ -70,6 +72,7 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c)
     c->f0 = 1;
     c->f1 = 0;
     c->between = 0;
+    c->last_ok = 0;
 }
 
 /* (1 - t) w_i + t w_j - h: the row's slack at w, m. */
@@ -100,6 +103,12 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     /* wpos still marks the held elements of the last layout: the same span and held
      * elements give the same K_FF, whose factor the Schur path then keeps */
     int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
+    if (c->layout_same && c->use_schur && same) {
+        /* The rows and the working set of the last layout (cc_solve found them so):
+         * wpos, order, schur_pos and the chains stand; only the values are new. */
+        c->tri_same = 1;
+        return tirenv_springs__cc_schur_factor(c, T);
+    }
     for (size_t e = f0; e <= f1; ++e) {
         const int held = fixed(c, e);
         same = same && held == (c->wpos[e] == SIZE_MAX);
@@ -112,7 +121,6 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
         if (e > f0)
             for (size_t r = c->sec_first[e - 1], k = 0; k < c->sec_count[e - 1]; ++k, ++r)
                 if (c->in_w[r]) {
-                    c->pos[r] = n;
                     if (n_schur < TIRENV_SPRINGS__SCHUR_MAX)
                         c->schur_pos[n_schur] = n;
                     ++n_schur;
@@ -410,6 +418,52 @@ static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
     }
 }
 
+/* A row's element and whether it lies between elements, as one key. */
+static size_t row_key(const tirenv_springs__cc_row *r)
+{
+    return 2 * r->i + (r->t > 0);
+}
+
+/* Whether the rows are the last solve's, laid out the same (and over the same span). */
+static int same_as_last(const tirenv_springs__cc *c)
+{
+    if (c->n_rows != c->n_last || c->f0 != c->last_f0 || c->f1 != c->last_f1)
+        return 0;
+    for (size_t r = 0; r < c->n_rows; ++r)
+        if (c->rows[r].id != c->last_id[r] || row_key(&c->rows[r]) != c->last_key[r])
+            return 0;
+    return 1;
+}
+
+static int reserve_last(tirenv_springs__cc *c)
+{
+    if (c->n_rows <= c->cap_last)
+        return TIRENV_OK;
+    long *id = realloc(c->last_id, c->n_rows * sizeof *id);
+    if (!id)
+        return TIRENV_ENOMEM;
+    c->last_id = id;
+    size_t *key = realloc(c->last_key, c->n_rows * sizeof *key);
+    if (!key)
+        return TIRENV_ENOMEM;
+    c->last_key = key;
+    c->cap_last = c->n_rows;
+    return TIRENV_OK;
+}
+
+/* Records the rows of the solve just finished (reserve_last made room). */
+static void keep_last(tirenv_springs__cc *c)
+{
+    for (size_t r = 0; r < c->n_rows; ++r) {
+        c->last_id[r] = c->rows[r].id;
+        c->last_key[r] = row_key(&c->rows[r]);
+    }
+    c->n_last = c->n_rows;
+    c->last_f0 = c->f0;
+    c->last_f1 = c->f1;
+    c->last_ok = 1;
+}
+
 int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], double tol)
 {
     for (size_t r = 0; r < c->n_rows; ++r)
@@ -425,6 +479,8 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
     const size_t N = T->N;
     c->iterations = 0;
     const size_t f0 = c->f0, f1 = c->f1, n_rows = c->n_rows;
+    const int same_rows = c->last_ok && same_as_last(c);
+    c->last_ok = 0;
     if (f0 > f1) {
         c->n_warm = 0;
         memset(c->warm_pin, 0, N);
@@ -436,8 +492,11 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
      * where rows are violated (rows have weights >= 0, so raising w satisfies them), which
      * keeps the working set's rows that are still tight. Else a cold start from w_e = the
      * largest h of a row on e, which satisfies every row, with no row working. */
-    warm_set(c);
+    if (!same_rows) /* else in_w holds the last final set, which warm_set would give */
+        warm_set(c);
+    c->layout_same = same_rows;
     int at_min = 0, st = eqp(c, T, wq);
+    c->layout_same = 0;
     if (st < 0)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
@@ -552,7 +611,7 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         at_min = 0;
     }
     c->iterations = it + 1;
-    if (reserve_warm(c))
+    if (reserve_warm(c) || reserve_last(c))
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
     for (size_t e = f0; e <= f1; ++e) {
@@ -581,6 +640,7 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         }
     }
     c->n_warm = n_warm;
+    keep_last(c);
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
     return TIRENV_OK;

@@ -2,7 +2,8 @@
 /* The springs model's continuous contact (docs/models.md section 4.3): h continuous in x at
  * every vertex of seeded random obstacles, the QP's optimality conditions to round-off,
  * every ground vertex outside the tread, narrow features carried, dF_z/dz against finite
- * differences over roads, and results that do not depend on the warm start. */
+ * differences over roads, and results that do not depend on the warm start nor on the
+ * factors the solver keeps between solves. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -448,6 +449,93 @@ static void test_warm_start_invisible(void **state)
     tirenv_profile_free(p);
 }
 
+/* The solver keeps K_FF's factor and the KKT layout from one solve to the next while the rows
+ * and the working set stay (the confirming evaluation a hair above, the next millimetre):
+ * what it then computes must be the bits a fresh workspace computes, the same final active
+ * set solved by the same arithmetic. Sweeps over seeded random obstacles, two heights a
+ * position, one workspace kept against a fresh one at every state: w, the reactions and
+ * dw/dz compared exactly (==: a zero's sign aside). */
+static void test_kept_factor_invisible(void **state)
+{
+    (void)state;
+    rng_state = 4242;
+    size_t states = 0, between = 0, kept = 0;
+    const tirenv_springs_params par = continuous_tire().springs;
+    tire_setup S;
+    setup_tire(&S, &par);
+    const size_t N = S.N;
+    double *w_cold = calloc(N + 2, sizeof *w_cold), *dd = calloc(N, sizeof *dd);
+    double *dw_hot = calloc(N, sizeof *dw_hot), *dw_cold = calloc(N, sizeof *dw_cold);
+    double *pe_cold = calloc(N, sizeof *pe_cold), *ob_cold = calloc(N, sizeof *ob_cold);
+    assert_non_null(w_cold);
+    assert_non_null(dd);
+    assert_non_null(dw_hot);
+    assert_non_null(dw_cold);
+    assert_non_null(pe_cold);
+    assert_non_null(ob_cold);
+    for (int trial = 0; trial < 30; ++trial) {
+        tirenv_profile *p = random_obstacle(trial % 2 ? 0 : trial / 2);
+        tirenv_springs__cc hot;
+        assert_int_equal(tirenv_springs__cc_init(&hot, N), TIRENV_OK);
+        const double x0 = -0.45 + 0.4 * uniform(), dz = 0.02 + 0.06 * uniform();
+        for (int k = 0; k < 120; ++k) {
+            const double x = x0 + 0.004 * k;
+            const double g = tirenv_profile_max_height(p, x - 0.3, x + 0.3);
+            for (int confirm = 0; confirm < 2; ++confirm) {
+                const double z = g + par.R0 - dz + (confirm ? 1e-9 : 0);
+                for (size_t i = 0; i < N; ++i) {
+                    double dr;
+                    const double rho = tirenv_springs__ray(p, x, z, S.sin_t[i], S.cos_t[i],
+                                                           par.R0, &dr);
+                    S.d[i] = rho < par.R0 ? par.R0 - rho : 0;
+                    dd[i] = rho < par.R0 ? -dr : 0;
+                }
+                tirenv_springs__cc cold;
+                assert_int_equal(tirenv_springs__cc_init(&cold, N), TIRENV_OK);
+                tirenv_diag diag;
+                assert_int_equal(tirenv_springs__cc_rows(&hot, &S.T, p, x, z, 0, N - 1, S.d,
+                                                         &diag), TIRENV_OK);
+                assert_int_equal(tirenv_springs__cc_rows(&cold, &S.T, p, x, z, 0, N - 1, S.d,
+                                                         &diag), TIRENV_OK);
+                const int st_hot = tirenv_springs__cc_solve(&hot, &S.T, x, z, S.w + 1, S.pe,
+                                                            S.ob, &diag);
+                const int st_cold = tirenv_springs__cc_solve(&cold, &S.T, x, z, w_cold + 1,
+                                                             pe_cold, ob_cold, &diag);
+                assert_int_equal(st_hot, st_cold);
+                if (st_hot == TIRENV_OK && hot.f0 <= hot.f1) {
+                    ++states;
+                    between += hot.n_warm > 0;
+                    kept += hot.tri_same && hot.use_schur;
+                    tirenv_springs__cc_slope(&hot, &S.T, S.w + 1, dd, dw_hot);
+                    tirenv_springs__cc_slope(&cold, &S.T, w_cold + 1, dd, dw_cold);
+                    for (size_t e = hot.f0; e <= hot.f1; ++e) {
+                        assert_true(S.w[e + 1] == w_cold[e + 1]);
+                        assert_true(S.pe[e] == pe_cold[e]);
+                        assert_true(dw_hot[e] == dw_cold[e]);
+                    }
+                    for (size_t r = 0; r < hot.n_rows; ++r)
+                        assert_true(hot.lambda[r] == cold.lambda[r]);
+                }
+                tirenv_springs__cc_free(&cold);
+            }
+        }
+        tirenv_springs__cc_free(&hot);
+        tirenv_profile_free(p);
+    }
+    print_message("%zu states, %zu with a row between elements working, %zu on a kept "
+                  "factor\n", states, between, kept);
+    /* The path under test taken: rows between elements working, factors kept. */
+    assert_true(between > 200);
+    assert_true(kept > 200);
+    free(w_cold);
+    free(dd);
+    free(dw_hot);
+    free(dw_cold);
+    free(pe_cold);
+    free(ob_cold);
+    free_tire(&S);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -457,6 +545,7 @@ int main(void)
         cmocka_unit_test(test_narrow_features_carried),
         cmocka_unit_test(test_derivative_on_roads),
         cmocka_unit_test(test_warm_start_invisible),
+        cmocka_unit_test(test_kept_factor_invisible),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
