@@ -418,10 +418,11 @@ static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
     }
 }
 
-/* A row's element and whether it lies between elements, as one key. */
+/* A row's element and whether it lies between elements, as one key: i + j is 2 i on
+ * element i alone (j = i), 2 i + 1 between i and i + 1. */
 static size_t row_key(const tirenv_springs__cc_row *r)
 {
-    return 2 * r->i + (r->t > 0);
+    return r->i + r->j;
 }
 
 /* Whether the rows are the last solve's, laid out the same (and over the same span). */
@@ -451,13 +452,10 @@ static int reserve_last(tirenv_springs__cc *c)
     return TIRENV_OK;
 }
 
-/* Records the rows of the solve just finished (reserve_last made room). */
+/* Records the span of the solve just finished, whose rows' keys its last pass stored
+ * (reserve_last made room). */
 static void keep_last(tirenv_springs__cc *c)
 {
-    for (size_t r = 0; r < c->n_rows; ++r) {
-        c->last_id[r] = c->rows[r].id;
-        c->last_key[r] = row_key(&c->rows[r]);
-    }
     c->n_last = c->n_rows;
     c->last_f0 = c->f0;
     c->last_f1 = c->f1;
@@ -627,6 +625,8 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
     size_t n_warm = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &c->rows[r];
+        c->last_id[r] = R->id; /* for same_as_last */
+        c->last_key[r] = row_key(R);
         if (!c->in_w[r]) {
             c->lambda[r] = 0;
             continue;

@@ -292,8 +292,8 @@ typedef struct {
     size_t n_warm, cap_warm;
     unsigned char *warm_pin;
     size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
-    /* The rows of the last solve (id, and i with t > 0 as 2 i + 1, t = 0 as 2 i) and its
-     * span, while last_ok: rows laid out the same again (the confirming evaluation) find
+    /* The rows of the last solve (id, and i + j: 2 i on element i alone, 2 i + 1 between
+     * i and i + 1) and its span, while last_ok: rows laid out the same again (the confirming evaluation) find
      * in_w already holding the warm start and the KKT layout of its first eqp unchanged. */
     long *last_id;
     size_t *last_key, n_last, cap_last, last_f0, last_f1;
