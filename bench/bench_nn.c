@@ -69,7 +69,8 @@ static void add_sample(data_set *d, size_t *cap, int sp, const double u[4], doub
 }
 
 /* The springs model over each designed cleat at the load giving the case's contact length
- * (its chord), at the x_N grid mapped to positions by docs/models.md section 1. */
+ * (the length its tread touches), at the x_N grid mapped to positions by docs/models.md
+ * section 1. */
 static void synthetic_data(data_set *d)
 {
     size_t n_cases, cap[3] = {0, 0, 0};

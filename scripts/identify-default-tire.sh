@@ -3,7 +3,8 @@
 # One tire, every model, for the default tire in one command (docs/models.md section 14.1):
 # re-identifies the springs model's RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS and the cam's
 # VERTICAL_STIFFNESS, Q_FZ2 (at the file's FNOMIN), Q_RA1 and Q_RA2 on the ring reference tire's
-# flat ground
+# flat ground at 0.5 to 1.5 times the file's FNOMIN, the springs model on its deflection and its
+# contact length
 # (`tirenv identify --write` on data/tires/default.tir, which records how in its '!' note),
 # then copies the six values into tirenv_tire_default() (src/core/tire.c), which must equal
 # the file (tests/formats/test_tir.c). Run it after any change to the ring or to its parameters:

@@ -149,6 +149,13 @@ void tirenv_model_set_extrapolate(tirenv_model *m, int allow);
  * TIRENV_ERANGE beyond the model's valid load range (docs/models.md section 1.3). */
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 
+/* The flat-ground state with the centre at height z (m) above the ground, from one force
+ * evaluation there: its load (N), deflection, contact length and stiffness, the inverse of
+ * tirenv_model_flat. For the deformable models (springs, ring); TIRENV_EINVAL for the others
+ * and for z outside (0, R0), TIRENV_ERANGE for z below the model's valid range. */
+int tirenv_model_flat_at_height(tirenv_model *m, double z, tirenv_flat *out,
+                                tirenv_diag *diag);
+
 /* Load (N) at which the model's flat-ground contact length is l_c (m); TIRENV_EINVAL if
  * l_c is not in (0, 2*R0), TIRENV_ERANGE if it is beyond the contact lengths of the model's
  * valid load range. A model whose input is the contact length (the network) remembers

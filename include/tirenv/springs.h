@@ -51,6 +51,16 @@ void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag);
  * contact reaction p_i (N). */
 void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double p[]);
 
+/* The stiffnesses c_r and c_b of par (the rest as given) identified on a reference model's
+ * flat ground at n loads (2 to 64): load[i] (N), its deflection[i] (m) and contact_length[i]
+ * (m). The springs model then deflects as the reference does and touches as much ground
+ * (least squares in log load at the reference's deflections and in log contact length there,
+ * docs/models.md section 14.1). TIRENV_EINVAL for targets that are no flat-ground states;
+ * the model's errors otherwise. */
+int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double load[],
+                            const double deflection[], const double contact_length[],
+                            tirenv_diag *diag);
+
 /* The tip LCP on its own: K w = p, w >= d, p >= 0, p.(w - d) = 0, with K the tridiagonal
  * stiffness of n elements (k_r N/m on the diagonal, k_ir N/m between neighbours, ends free).
  * work holds 4*n doubles. Returns TIRENV_ENOCONV if the active set does not settle in

@@ -182,9 +182,9 @@ int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src,
 /* The origin of the tire the last cli_tire read (what was derived, its FNOMIN). */
 extern tirenv_tir_origin cli_tire_origin;
 
-/* The nominal load (N) that flat and identify tabulate around (0.5 to 1.5 times it) when given
- * no loads: the tire file's FNOMIN, or 0 for the paper's working regimes (contact lengths 0.28
- * to 0.38 m) where the file has none or its FNOMIN lies within the ring's loads at those
+/* The nominal load (N) that flat tabulates around (0.5 to 1.5 times it) when given no loads
+ * (identify takes the file's FNOMIN itself): the tire file's FNOMIN, or 0 for the paper's
+ * working regimes (contact lengths 0.28 to 0.38 m) where the file has none or its FNOMIN lies within the ring's loads at those
  * regimes (a tire of the paper's class, whose nominal load is one of its regimes: the default
  * tractor tire, whose FNOMIN is its 0.33 m load for the cam's vertical law). */
 double cli_nominal_load(const tirenv_tire *tire);

@@ -49,8 +49,8 @@ static void usage(FILE *fp)
 }
 
 /* The working regime: --contact-length as given, or the tire's flat-ground contact length at
- * --load, the ring reference tire's patch (docs/models.md section 14: the springs model's
- * chord is longer than a tire's patch). */
+ * --load, the ring reference tire's patch (docs/models.md section 14: the tire the rig
+ * simulates; the springs model's is identified to follow it within 5 %). */
 static int contact_length(const cli_options *o, const tirenv_tire *tire, double *l_c)
 {
     if (o->have_contact_length) {

@@ -27,8 +27,8 @@ tirenv_tire tirenv_tire_default(void)
     return (tirenv_tire){
         .springs = {
             .R0 = 0.68,
-            .c_r = 369000,
-            .c_b = 39700,
+            .c_r = 421000,
+            .c_b = 22000,
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
@@ -57,11 +57,11 @@ tirenv_tire tirenv_tire_default(void)
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
          * identified on the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
-            .c_z = 364000,
+            .c_z = 365000,
             .fnomin = 17900,
-            .q_fz2 = 28.8,
-            .q_ra1 = 0.621,
-            .q_ra2 = 0.649,
+            .q_fz2 = 29.4,
+            .q_ra1 = 0.619,
+            .q_ra2 = 0.653,
             .shift = 0.8328,
             .length = 1.4634,
             .height = 0.9551,

@@ -7,6 +7,7 @@
 #include "formats/propfile.h"
 #include "tirenv/tir.h"
 #include "tirenv/model.h"
+#include "tirenv/springs.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -180,15 +181,39 @@ static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const
                         tirenv_model_type_name(type), fnomin, rho_n);
 }
 
-/* docs/models.md section 14.2: the default tire's springs, c_b/c_r kept (a length ratio of
- * the deflected shape, rad^2), scaled to the file's deflection at FNOMIN. */
+/* docs/models.md section 14.2: the springs model identified on the tire's ring (its own or the
+ * derived one) as the default tire is on its own (tirenv_springs_identify): at 0.5 to 1.5
+ * times FNOMIN it deflects as the ring does and touches as much ground; then c_r and c_b,
+ * their ratio kept, are scaled to the file's deflection at FNOMIN (the load is proportional to
+ * them together: one step). The segment and the elements are the default tire's. */
 static int derive_springs(tirenv_tire *t, const mf_keys *k, double rho_n, tirenv_diag *diag)
 {
+    static const double fractions[] = {0.5, 0.75, 1.0, 1.25, 1.5};
+    enum { N = sizeof fractions / sizeof fractions[0] };
     const tirenv_tire d = tirenv_tire_default();
     t->springs.c_r = d.springs.c_r;
     t->springs.c_b = d.springs.c_b;
     t->springs.phi = d.springs.phi;
     t->springs.dphi = d.springs.dphi;
+    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, t);
+    if (!ring)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
+                            "the ring model of the tire is not valid, so the springs model "
+                            "cannot be identified on it");
+    double G[N], defl[N], l[N];
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < N && !status; i++) {
+        tirenv_flat f;
+        G[i] = fractions[i] * k->fnomin;
+        status = tirenv_model_flat(ring, G[i], &f, diag);
+        defl[i] = f.deflection;
+        l[i] = f.contact_length;
+    }
+    tirenv_model_free(ring);
+    if (!status)
+        status = tirenv_springs_identify(&t->springs, N, G, defl, l, diag);
+    if (status)
+        return status;
     double *const stiff[] = {&t->springs.c_r, &t->springs.c_b};
     return scale_to(tirenv_model_springs, t, stiff, 2, k->fnomin, rho_n, diag);
 }
@@ -263,9 +288,10 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
     const double rho_n = nominal_deflection(&k, &factor, &missing);
     origin->rho_nominal = rho_n;
     tirenv_tire t = *tire;
+    /* The ring first: the springs model is identified on it. */
     static const struct { unsigned bit; const char *section, *model; } models[] = {
-        {TIRENV_TIR_SPRINGS, "ENVELOPING_SPRINGS", "springs"},
         {TIRENV_TIR_RING, "ENVELOPING_RING", "ring"},
+        {TIRENV_TIR_SPRINGS, "ENVELOPING_SPRINGS", "springs"},
     };
     for (size_t i = 0; i < 2; i++) {
         if (!(lack & models[i].bit))

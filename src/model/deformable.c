@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/brent.h"
 #include "core/equilibrium.h"
 #include "profile/profile_impl.h"
 #include "model/rigid_impl.h"
@@ -196,6 +197,66 @@ static int deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
     return TIRENV_OK;
 }
 
+/* The flat-ground contact length minus the one sought, at a centre height z (m). */
+typedef struct {
+    const deformable_state *st;
+    double l_c;                  /* m */
+    int status;                  /* the first failure of the model's contact length */
+    tirenv_diag *diag;
+} patch_ctx;
+
+static double patch_minus_target(double z, void *p)
+{
+    patch_ctx *c = p;
+    double l = 0;
+    const int s = c->st->def->contact_length(c->st->flat_elem, c->st->flat, z, &l, c->diag);
+    if (s && !c->status)
+        c->status = s;
+    return l - c->l_c;
+}
+
+/* The flat-ground centre height at which the model's contact length is l_c (m), for every
+ * deformable model (docs/models.md section 1.3): each model's contact length is the length of
+ * ground its tread touches, which grows continuously (its edges are interpolated) as the
+ * centre comes down to the lowest height of the valid range, z_lo, where it is longest; so
+ * Brent finds the height: on [R0/2, R0] when the contact length at R0/2 is long enough
+ * (every contact length up to 0.69 m for the default tire's ring: the bracket of old, so the
+ * data set's loads keep their bits), else on [z_lo, R0/2]. 1e-12 m is far below any contact
+ * length's meaning and Brent needs about 40 iterations for it from a 0.34 m bracket, so 200 is
+ * only a guard. */
+enum { PATCH_MAX_ITER = 200 };
+static const double patch_z_tol = 1e-12; /* m */
+static int z_for_contact_length(const deformable_state *st, double l_c, double z_lo,
+                                double *z, tirenv_diag *diag)
+{
+    patch_ctx ctx = {st, l_c, 0, diag};
+    double hi = st->tire.springs.R0, lo = fmax(z_lo, 0.5 * hi);
+    if (lo > z_lo && patch_minus_target(lo, &ctx) < 0 && !ctx.status) {
+        hi = lo;
+        lo = z_lo;
+    }
+    if (patch_minus_target(lo, &ctx) < 0 || ctx.status)
+        return ctx.status ? ctx.status
+                          : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                                         "%g m is beyond the %s tire's reach", l_c,
+                                         st->type->name);
+    tirenv_core__brent br;
+    int status = tirenv_core__brent_set(&br, patch_minus_target, &ctx, lo, hi);
+    for (int it = 0; !status && it < PATCH_MAX_ITER; ++it) {
+        status = tirenv_core__brent_iterate(&br);
+        if (!status && tirenv_core__brent_converged(&br, patch_z_tol))
+            break;
+    }
+    *z = br.root;
+    if (ctx.status)  /* the forces' own message says what failed */
+        return ctx.status;
+    if (status)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "contact length",
+                            "no %s height found for %g m: %s", st->type->name, l_c,
+                            tirenv_core__brent_strerror(status));
+    return 0;
+}
+
 /* The model's own contact-length definition gives z_flat; the load is one force there. */
 static int deformable_load_for_contact_length(void *state, double l_c, double *load,
                                               tirenv_diag *diag)
@@ -213,14 +274,46 @@ static int deformable_load_for_contact_length(void *state, double l_c, double *l
                             "%g m is beyond the %s model's valid range, up to %.4g m (load "
                             "%.6g N, centre height %.4g m), %s", l_c, st->type->name, st->l_max, st->G_max,
                             st->z_min, st->range_why);
-    double z;
-    status = st->def->z_for_contact_length(st->flat_elem, st->flat, l_c, st->z_min, &z, diag);
+    double z = 0;
+    status = z_for_contact_length(st, l_c, st->z_min, &z, diag);
     tirenv_eq_point p;
     if (!status)
         status = st->def->forces(st->flat_elem, st->flat, 0, z, &p, diag);
     if (!status)
         *load = p.F;
     return status;
+}
+
+/* One force evaluation at the height and the model's contact length there. */
+static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
+                                     tirenv_diag *diag)
+{
+    deformable_state *st = state;
+    const double R0 = st->tire.springs.R0;
+    if (!(z > 0 && z < R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "centre height",
+                            "must be in (0, R0) = (0, %g) m, got %g", R0, z);
+    int status = valid_range(st, diag);
+    if (status)
+        return status;
+    if (z < st->z_min)
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "centre height",
+                            "%g m is beyond the %s model's valid range, down to %.4g m (load "
+                            "%.6g N, contact length %.4g m), %s", z, st->type->name, st->z_min,
+                            st->G_max, st->l_max, st->range_why);
+    tirenv_eq_point p;
+    double l_c;
+    if ((status = st->def->forces(st->flat_elem, st->flat, 0, z, &p, diag)) ||
+        (status = st->def->contact_length(st->flat_elem, st->flat, z, &l_c, diag)))
+        return status;
+    *out = (tirenv_flat){
+        .load = p.F,
+        .z_flat = z,
+        .deflection = R0 - z,
+        .contact_length = l_c,
+        .stiffness = -p.dF_dz,
+    };
+    return TIRENV_OK;
 }
 
 static int deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
@@ -411,6 +504,7 @@ const tirenv_model_ops tirenv_deformable_ops = {
     .free = deformable_free,
     .flat = deformable_flat,
     .load_for_contact_length = deformable_load_for_contact_length,
+    .flat_at_height = deformable_flat_at_height,
     .set = deformable_set,
     .set_profile = deformable_set_profile,
     .set_load = deformable_set_load,

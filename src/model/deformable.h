@@ -20,14 +20,12 @@ struct tirenv_deformable {
      * contacts, all of one evaluation, in *out; a failure says what failed in diag. */
     int (*forces)(void *elem, const tirenv_profile *p, double x, double z,
                   tirenv_eq_point *out, tirenv_diag *diag);
-    /* Flat-ground contact length (m) with the centre at height z (m). */
+    /* Flat-ground contact length (m) with the centre at height z (m): the length of ground
+     * the tread touches, which grows continuously as the centre comes down to the lowest
+     * height of the valid range (lowest_z), so that deformable.c finds the height of a
+     * contact length by one search for every model (docs/models.md section 1.3). */
     int (*contact_length)(void *elem, const tirenv_profile *flat, double z, double *l_c,
                           tirenv_diag *diag);
-    /* Flat-ground centre height z (m) at which the contact length is l_c (m), searched in
-     * [z_lo, R0]: z_lo is the lowest height of the valid range (lowest_z), where the contact
-     * length is the longest. */
-    int (*z_for_contact_length)(void *elem, const tirenv_profile *flat, double l_c, double z_lo,
-                                double *z, tirenv_diag *diag);
     /* The lowest flat-ground centre height z (m) of the model's valid range and why the range
      * ends there (a phrase for messages, into why[n]); z = 0 and "" when it ends only where
      * the centre meets the ground. docs/models.md section 1.3. */

@@ -194,6 +194,33 @@ int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_dia
     return status ? status : m->type->ops->flat(m->state, load, out, diag);
 }
 
+int tirenv_model__load_at_chord(tirenv_model **springs, const tirenv_tire *tire, double l_c,
+                                double *load, tirenv_diag *diag)
+{
+    const double R0 = tire->springs.R0;
+    if (!(l_c > 0 && l_c < 2 * R0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
+                            "must be in (0, 2*R0) = (0, %g) m, got %g", 2 * R0, l_c);
+    if (!*springs && !(*springs = tirenv_model_alloc(tirenv_model_springs, tire)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    tirenv_flat f;
+    const int status =
+        tirenv_model_flat_at_height(*springs, sqrt(R0 * R0 - 0.25 * l_c * l_c), &f, diag);
+    if (!status)
+        *load = f.load;
+    return status;
+}
+
+int tirenv_model_flat_at_height(tirenv_model *m, double z, tirenv_flat *out,
+                                tirenv_diag *diag)
+{
+    if (!m->type->ops->flat_at_height)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model",
+                            "the %s model does not deflect: it has no load at a centre height",
+                            m->type->name);
+    return m->type->ops->flat_at_height(m->state, z, out, diag);
+}
+
 /* The network remembers the contact length it was given (model.h): a further track's state is
  * told the same (tirenv_model__track_state), and so are those that exist. */
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,

@@ -22,6 +22,9 @@ typedef struct {
     void (*free)(void *state);
     int (*flat)(void *state, double load, tirenv_flat *out, tirenv_diag *diag);
     int (*load_for_contact_length)(void *state, double l_c, double *load, tirenv_diag *diag);
+    /* The flat-ground state with the centre at height z (m); NULL for a model that does not
+     * deflect (tirenv_model_flat_at_height then refuses). */
+    int (*flat_at_height)(void *state, double z, tirenv_flat *out, tirenv_diag *diag);
     /* New profile and load; z_flat is the model's flat-ground centre height at that load. */
     int (*set)(void *state, const tirenv_profile *p, double load, double z_flat,
                tirenv_diag *diag);
@@ -184,5 +187,14 @@ static inline void tirenv_model__eq_point(const tirenv_eq_point *p, double z_fla
     out->contacts = p->contacts;
     out->slope = tirenv_model__slope(out);
 }
+
+/* The load (N) at which the springs model of a tire (*springs, allocated on first need from
+ * tire) has its centre at the height whose chord of the free circle is l_c (m),
+ * 2*sqrt(R0^2 - z^2) = l_c: the contact length of the models that do not deflect (rigid,
+ * point), which stands for the load at which the springs model has that chord, as before the
+ * springs model's own contact length became the length its tread touches (docs/models.md
+ * section 1.3). */
+int tirenv_model__load_at_chord(tirenv_model **springs, const tirenv_tire *tire, double l_c,
+                                double *load, tirenv_diag *diag);
 
 #endif

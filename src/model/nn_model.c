@@ -6,8 +6,8 @@
  * height and length, and the normalised position x_N; its output is h. So the model
  *   - turns a load into l_c through the contact law of the tire its data came from (the
  *     network file's record, a monotone cubic exact at its knots: model.h), else, for an
- *     older file, through the springs model of the same tire (its flat-ground chord), and
- *     remembers the pair tirenv_model_load_for_contact_length made, so that a
+ *     older file, through the springs model of the same tire (its flat-ground contact
+ *     length), and remembers the pair tirenv_model_load_for_contact_length made, so that a
  *     regime given as a contact length reaches the network exactly;
  *   - over a single rectangular cleat centred at x = 0 on level ground (a profile of exactly
  *     the four corners) evaluates the paper's curve (tirenv_nn_envelope); over any other

@@ -42,14 +42,13 @@ static int point_flat(void *state, double load, tirenv_flat *out, tirenv_diag *d
     return TIRENV_OK;
 }
 
-/* No contact length of its own: as for the rigid disc, the springs model's load. */
+/* No contact length of its own: as for the rigid disc, the springs model's load at that
+ * chord. */
 static int point_load_for_contact_length(void *state, double l_c, double *load,
                                          tirenv_diag *diag)
 {
     point_state *st = state;
-    if (!st->springs && !(st->springs = tirenv_model_alloc(tirenv_model_springs, &st->tire)))
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    return tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
+    return tirenv_model__load_at_chord(&st->springs, &st->tire, l_c, load, diag);
 }
 
 static int point_set(void *state, const tirenv_profile *p, double load, double z_flat,

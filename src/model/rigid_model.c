@@ -41,15 +41,14 @@ static int rigid_flat(void *state, double load, tirenv_flat *out, tirenv_diag *d
 }
 
 /* A rigid disc has no contact length; its curve does not depend on the load, which only
- * scales its hub forces. So a contact length stands for the load at which the springs model of
- * the same tire has it, and curves of both models can be compared at one load. */
+ * scales its hub forces. So a contact length stands for a load: the one at which the springs
+ * model of the same tire sinks until the disc's chord at its centre height is that long (the
+ * disc does not deflect, so its contact length is geometric: docs/models.md section 1.3). */
 static int rigid_load_for_contact_length(void *state, double l_c, double *load,
                                          tirenv_diag *diag)
 {
     rigid_state *st = state;
-    if (!st->springs && !(st->springs = tirenv_model_alloc(tirenv_model_springs, &st->tire)))
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    return tirenv_model_load_for_contact_length(st->springs, l_c, load, diag);
+    return tirenv_model__load_at_chord(&st->springs, &st->tire, l_c, load, diag);
 }
 
 static int rigid_set(void *state, const tirenv_profile *p, double load, double z_flat,

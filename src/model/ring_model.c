@@ -3,7 +3,6 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
-#include "core/brent.h"
 #include "model/deformable.h"
 #include "model/ring_impl.h"
 #include "tirenv/ring.h"
@@ -23,7 +22,9 @@ static int ring_forces(void *elem, const tirenv_profile *p, double x, double z,
 }
 
 /* The ring's contact length is its real patch, where the tread pressure is positive: shorter
- * than the chord of the free circle, as real tires' are (docs/models.md section 1). */
+ * than the chord of the free circle, as real tires' are (docs/models.md section 1). It grows
+ * continuously as the centre comes down (its edges are interpolated), and deformable.c's
+ * search finds the height of a contact length. */
 static int ring_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c,
                                tirenv_diag *diag)
 {
@@ -31,62 +32,6 @@ static int ring_contact_length(void *elem, const tirenv_profile *flat, double z,
     const int status = tirenv_ring_forces(elem, flat, 0, z, &fx, &fz, NULL, NULL, diag);
     *l_c = tirenv_ring_patch_length(elem);
     return status;
-}
-
-typedef struct {
-    void *elem;
-    const tirenv_profile *flat;
-    double l_c;
-    int status;
-    tirenv_diag *diag;
-} patch_ctx;
-
-static double patch_minus_target(double z, void *p)
-{
-    patch_ctx *c = p;
-    double l;
-    const int s = ring_contact_length(c->elem, c->flat, z, &l, c->diag);
-    if (s && !c->status)
-        c->status = s;
-    return l - c->l_c;
-}
-
-/* The patch grows continuously as the centre comes down (its edges are interpolated) down to
- * the lowest height of the valid range, z_lo, where it is longest (ring_lowest_z), so Brent
- * finds the height: on [R0/2, R0] when the patch at R0/2 is long enough (every contact length
- * up to 0.69 m for the default tire: the bracket of old, so the data set's loads keep their
- * bits), else on [z_lo, R0/2]. 1e-12 m is far below any patch length's meaning and Brent
- * needs about 40 iterations for it from a 0.34 m bracket, so 200 is only a guard. */
-enum { PATCH_MAX_ITER = 200 };
-static const double patch_z_tol = 1e-12; /* m */
-static int ring_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
-                                     double z_lo, double *z, tirenv_diag *diag)
-{
-    patch_ctx ctx = {elem, flat, l_c, 0, diag};
-    double hi = tirenv_ring_free_radius(elem), lo = fmax(z_lo, 0.5 * hi);
-    if (lo > z_lo && patch_minus_target(lo, &ctx) < 0 && !ctx.status) {
-        hi = lo;
-        lo = z_lo;
-    }
-    if (patch_minus_target(lo, &ctx) < 0 || ctx.status)
-        return ctx.status ? ctx.status
-                          : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
-                                         "%g m is beyond the ring tire's reach", l_c);
-    tirenv_core__brent br;
-    int status = tirenv_core__brent_set(&br, patch_minus_target, &ctx, lo, hi);
-    for (int it = 0; !status && it < PATCH_MAX_ITER; ++it) {
-        status = tirenv_core__brent_iterate(&br);
-        if (!status && tirenv_core__brent_converged(&br, patch_z_tol))
-            break;
-    }
-    *z = br.root;
-    if (ctx.status)  /* the forces' own message says what failed */
-        return ctx.status;
-    if (status)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "contact length",
-                            "no ring height found for %g m: %s", l_c,
-                            tirenv_core__brent_strerror(status));
-    return 0;
 }
 
 /* The ring is a linear model of small belt displacements; pressed far enough, its rays fan
@@ -181,7 +126,6 @@ static const tirenv_deformable ring_deformable = {
     .free = ring_free,
     .forces = ring_forces,
     .contact_length = ring_contact_length,
-    .z_for_contact_length = ring_z_for_contact_length,
     .lowest_z = ring_lowest_z,
     .bracket = tirenv_deformable_no_bracket,
     .shift_invariant = ring_shift_invariant,

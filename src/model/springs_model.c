@@ -3,64 +3,132 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include "model/deformable.h"
 #include "model/springs_impl.h"
 #include "tirenv/springs.h"
 
-static void *springs_alloc(const tirenv_tire *tire)
+/* The model's workspace: the element-level one and, for the contact length, the tips of an
+ * evaluation (tirenv_springs_tips) over the N elements. */
+typedef struct {
+    tirenv_springs *s;
+    double *d, *w, *p;  /* N each: penetration (m), deflection (m), reaction (N) */
+} springs_elem;
+
+static void springs_free(void *elem)
 {
-    return tirenv_springs_alloc(&tire->springs);
+    springs_elem *e = elem;
+    if (!e)
+        return;
+    tirenv_springs_free(e->s);
+    free(e->d);
+    free(e);
 }
 
-static void springs_free(void *elem) { tirenv_springs_free(elem); }
+static void *springs_alloc(const tirenv_tire *tire)
+{
+    springs_elem *e = calloc(1, sizeof *e);
+    if (!e)
+        return NULL;
+    e->s = tirenv_springs_alloc(&tire->springs);
+    const size_t N = e->s ? tirenv_springs_size(e->s) : 0;
+    e->d = N ? malloc(3 * N * sizeof *e->d) : NULL;
+    if (!e->d) {
+        springs_free(e);
+        return NULL;
+    }
+    e->w = e->d + N;
+    e->p = e->w + N;
+    return e;
+}
 
 static int springs_forces(void *elem, const tirenv_profile *p, double x, double z,
                           tirenv_eq_point *out, tirenv_diag *diag)
 {
-    return tirenv_springs_forces(elem, p, x, z, &out->fx, &out->F, &out->dF_dz, &out->contacts,
+    springs_elem *e = elem;
+    return tirenv_springs_forces(e->s, p, x, z, &out->fx, &out->F, &out->dF_dz, &out->contacts,
                                  diag);
 }
 
-/* docs/models.md section 1: the springs model's contact length is the chord of the free circle at
- * the centre height, so z_flat follows from l_c in closed form. */
-static double springs_R0(void *elem) { return tirenv_springs_params_of(elem)->R0; }
-
+/* docs/models.md section 1.3: the springs model's contact length is the length of ground its
+ * tread touches, as the ring's: from the first to the last element with a positive contact
+ * reaction, each end extended towards its free neighbour to where the "compression"
+ * e_i = p_i/K_ii + delta_i - w_i, interpolated linearly between them, crosses zero. delta_i =
+ * R0 - z/cos(theta_i) is the element's signed penetration of the flat ground (negative where
+ * its ray meets the ground beyond its free length), K_ii = k_r + 2 k_ir (k_r + k_ir at the
+ * ends) the diagonal of the tips' stiffness (section 4.4): on a touching element
+ * (w_i = delta_i) e_i is its reaction over its own stiffness, the tread compression of the
+ * ring's Winkler layer; on a free one it is minus its gap. The interradial springs lift the
+ * elements at the chord's ends off the ground (their neighbours pull them up), so the length
+ * is shorter than the chord of the free circle and depends on c_b/c_r. With the elements'
+ * contact along their rays (CONTACT 'rays', the paper's) and continuous contact alike: on
+ * flat ground both are the same LCP. */
 static int springs_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c,
                                   tirenv_diag *diag)
 {
-    (void)flat;
-    (void)diag;
-    const double R0 = springs_R0(elem);
-    *l_c = z < R0 ? 2 * sqrt(R0 * R0 - z * z) : 0;
-    return 0;
-}
-
-static int springs_z_for_contact_length(void *elem, const tirenv_profile *flat, double l_c,
-                                        double z_lo, double *z, tirenv_diag *diag)
-{
-    (void)flat;
-    (void)z_lo;
-    (void)diag;
-    const double R0 = springs_R0(elem);
-    *z = sqrt(R0 * R0 - 0.25 * l_c * l_c);
+    springs_elem *e = elem;
+    const tirenv_springs_params *par = tirenv_springs_params_of(e->s);
+    double fx, fz;
+    *l_c = 0;
+    if (!(z < par->R0))
+        return 0;
+    const int status = tirenv_springs_forces(e->s, flat, 0, z, &fx, &fz, NULL, NULL, diag);
+    if (status)
+        return status;
+    const size_t N = tirenv_springs_size(e->s);
+    const double *theta = tirenv_springs_theta(e->s);
+    tirenv_springs_tips(e->s, e->d, e->w, e->p);
+    size_t k1 = N, k2 = 0;
+    for (size_t i = 0; i < N; ++i)
+        if (e->p[i] > 0) {
+            k1 = i < k1 ? i : k1;
+            k2 = i;
+        }
+    if (k1 > k2)
+        return 0;
+    const double k_r = par->c_r * par->dphi, k_ir = par->c_b / par->dphi;
+    /* e_i as above, with its ray's crossing of the ground X_i (m from under the centre); 0
+     * when the ray does not point below the horizon. */
+    double len = z * (tan(theta[k2]) - tan(theta[k1]));
+    const size_t ends[2][2] = {{k1, k1 - 1}, {k2, k2 + 1}};
+    for (int s = 0; s < 2; ++s) {
+        const size_t i = ends[s][0], j = ends[s][1];
+        if ((s == 0 && k1 == 0) || (s == 1 && k2 + 1 >= N) || !(cos(theta[j]) > 0))
+            continue;
+        const double K_i = k_r + (i == 0 || i + 1 == N ? 1 : 2) * k_ir;
+        const double K_j = k_r + (j == 0 || j + 1 == N ? 1 : 2) * k_ir;
+        const double e_i = e->p[i] / K_i + (par->R0 - z / cos(theta[i])) - e->w[i];
+        const double e_j = (e->p[j] > 0 ? e->p[j] / K_j : 0) +
+                           (par->R0 - z / cos(theta[j])) - e->w[j];
+        if (e_i > 0 && e_j <= 0)
+            len += e_i / (e_i - e_j) * z * fabs(tan(theta[j]) - tan(theta[i]));
+    }
+    *l_c = len;
     return 0;
 }
 
 static int springs_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
                            double *z_hi)
 {
-    tirenv_springs__bracket(elem, p, x, z_lo, z_hi);
+    springs_elem *e = elem;
+    tirenv_springs__bracket(e->s, p, x, z_lo, z_hi);
     return 1;
 }
 
-static size_t springs_state_size(const void *elem) { return tirenv_springs__state_size(elem); }
+static size_t springs_state_size(const void *elem)
+{
+    const springs_elem *e = elem;
+    return tirenv_springs__state_size(e->s);
+}
 static void springs_state_save(const void *elem, unsigned char *buf)
 {
-    tirenv_springs__state_save(elem, buf);
+    const springs_elem *e = elem;
+    tirenv_springs__state_save(e->s, buf);
 }
 static void springs_state_restore(void *elem, const unsigned char *buf)
 {
-    tirenv_springs__state_restore(elem, buf);
+    springs_elem *e = elem;
+    tirenv_springs__state_restore(e->s, buf);
 }
 
 /* docs/models.md section 4.1: the elements span the tread segment |theta| <= phi/2. With the
@@ -72,7 +140,8 @@ static int springs_lowest_z(void *elem, const tirenv_profile *flat, double *z, c
 {
     (void)flat;
     (void)diag;
-    const tirenv_springs_params *par = tirenv_springs_params_of(elem);
+    const springs_elem *e = elem;
+    const tirenv_springs_params *par = tirenv_springs_params_of(e->s);
     *z = 0;
     why[0] = '\0';
     if (par->phi < M_PI) {
@@ -89,7 +158,6 @@ static const tirenv_deformable springs_deformable = {
     .free = springs_free,
     .forces = springs_forces,
     .contact_length = springs_contact_length,
-    .z_for_contact_length = springs_z_for_contact_length,
     .lowest_z = springs_lowest_z,
     .bracket = springs_bracket,
     .shift_invariant = tirenv_deformable_invariant,

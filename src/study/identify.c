@@ -3,6 +3,7 @@
  * cam's vertical and contact-length keys identified on a reference model's flat ground, so
  * that at one load the models of a tire file deflect alike. */
 #include "tirenv/study.h"
+#include "tirenv/springs.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -11,88 +12,18 @@
 
 enum { MAX_LOADS = 64 };
 
-/* The springs model's load at deflection d (m) per unit c_r, with c_b = beta*c_r: its contact
- * length is the chord of the free circle (section 1.3), so the load is one flat solve at that
- * chord. The load is proportional to (c_r, c_b) together; the solve runs at c_r = 1e6 N/m per
- * rad, inside the plausible range (docs/formats.md section 2), and divides by it. */
-static int springs_unit_load(const tirenv_tire *tire, double beta, size_t n, const double d[],
-                             double f[], tirenv_diag *diag)
-{
-    tirenv_tire t = *tire;
-    const double c_unit = 1e6;
-    t.springs.c_r = c_unit;
-    t.springs.c_b = beta * c_unit;
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &t);
-    if (!m)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "INTERRADIAL_STIFFNESS",
-                            "no springs model with c_r %g N/m per rad and c_b %g N*rad/m",
-                            c_unit, beta * c_unit);
-    const double R0 = t.springs.R0;
-    int status = TIRENV_OK;
-    for (size_t i = 0; i < n && !status; i++) {
-        const double z = R0 - d[i];
-        status = tirenv_model_load_for_contact_length(m, 2 * sqrt(R0 * R0 - z * z), &f[i], diag);
-        f[i] /= c_unit;
-    }
-    tirenv_model_free(m);
-    return status;
-}
-
-/* For a ratio beta, the least-squares c_r of log(load) and the sum of squared residuals. */
-static int springs_residual(const tirenv_tire *tire, double log_beta, size_t n,
-                            const tirenv_flat_target tg[], double *c_r, double *ss,
-                            tirenv_diag *diag)
-{
-    double d[MAX_LOADS], f[MAX_LOADS], r[MAX_LOADS];
-    for (size_t i = 0; i < n; i++)
-        d[i] = tg[i].deflection;
-    const int status = springs_unit_load(tire, exp(log_beta), n, d, f, diag);
-    if (status)
-        return status;
-    double mean = 0;
-    for (size_t i = 0; i < n; i++)
-        mean += (r[i] = log(tg[i].load / f[i])) / (double)n;
-    *ss = 0;
-    for (size_t i = 0; i < n; i++)
-        *ss += (r[i] - mean) * (r[i] - mean);
-    *c_r = exp(mean);
-    return TIRENV_OK;
-}
-
-/* Golden section on log(c_b/c_r) over [1e-6, 10] rad^2: the fit is smooth and one-dimensional
- * once c_r is eliminated; 60 steps narrow the bracket to 1e-12 of its width. */
+/* The springs model on the reference's deflections and contact lengths
+ * (tirenv_springs_identify, src/model/springs_identify.c). */
 static int identify_springs(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
                             tirenv_diag *diag)
 {
-    const double g = 0.5 * (sqrt(5.0) - 1);
-    double a = log(1e-6), b = log(10.0);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a), c1, c2, s1, s2;
-    int status = springs_residual(t, x1, n, tg, &c1, &s1, diag);
-    if (!status)
-        status = springs_residual(t, x2, n, tg, &c2, &s2, diag);
-    for (int k = 0; k < 60 && !status; k++) {
-        if (s1 <= s2) {
-            b = x2;
-            x2 = x1;
-            s2 = s1;
-            x1 = b - g * (b - a);
-            status = springs_residual(t, x1, n, tg, &c1, &s1, diag);
-        } else {
-            a = x1;
-            x1 = x2;
-            s1 = s2;
-            x2 = a + g * (b - a);
-            status = springs_residual(t, x2, n, tg, &c2, &s2, diag);
-        }
+    double G[MAX_LOADS], d[MAX_LOADS], l[MAX_LOADS];
+    for (size_t i = 0; i < n; i++) {
+        G[i] = tg[i].load;
+        d[i] = tg[i].deflection;
+        l[i] = tg[i].contact_length;
     }
-    double c_r, ss;
-    if (!status)
-        status = springs_residual(t, 0.5 * (a + b), n, tg, &c_r, &ss, diag);
-    if (status)
-        return status;
-    t->springs.c_b = c_r * exp(0.5 * (a + b));
-    t->springs.c_r = c_r;
-    return TIRENV_OK;
+    return tirenv_springs_identify(&t->springs, n, G, d, l, diag);
 }
 
 /* The cam (section 7.3). Without FNOMIN its vertical law is linear, rho = G/VERTICAL_STIFFNESS,

@@ -82,16 +82,18 @@ check "--method secant (the paper's eq. 2) over a cleat: exit 0, full curve" \
 run "$bin" envelope --model springs $cleat_F $fitted -o n.csv
 check "secant and newton curves agree to 1e-7 m" 'same_h s.csv n.csv 1e-7'
 
-# The independent reference curves of docs/models.md section 4, through --set and the CLI's sweep.
+# The independent reference curves of docs/models.md section 4, through --set and the CLI's sweep,
+# at the file's load: its regime is the chord of the free circle, not the springs model's
+# contact length (the length its tread touches, section 1.3).
 ref=$data/springs-reference.csv
 for c in 1 2 3 4; do
     # shellcheck disable=SC2046 # one line of numbers, split on purpose
-    set -- $(awk -F, -v c="$c" '$1 == c { print $2, $3, $4, $5, $6, $7, $8, $9; exit }' "$ref")
+    set -- $(awk -F, -v c="$c" '$1 == c { print $2, $3, $4, $5, $6, $12, $8, $9; exit }' "$ref")
     [ $# -eq 8 ] || set -- missing-reference-case x x x x x x x
     run "$bin" envelope --model springs --set UNLOADED_RADIUS="$1" --set RADIAL_STIFFNESS="$2" \
         --set INTERRADIAL_STIFFNESS="$3" --set SEGMENT_ANGLE="$5" --set ELEMENT_ANGLE="$4" \
         --set ENVELOPING_SPRINGS.CONTACT=rays \
-        --cleat "$7,$8" --contact-length "$6" --x-from -0.5 --x-to 0.1 --dx 0.05 -o ref$c.csv
+        --cleat "$7,$8" --load "$6" --x-from -0.5 --x-to 0.1 --dx 0.05 -o ref$c.csv
     check "reference case $c through --set: h within 1e-8 m, load within 1e-3 N" \
         '[ $rc -eq 0 ] && matches_reference ref$c.csv $c "$ref"'
 done

@@ -13,11 +13,11 @@ repo=$(cd "$data/../.." && pwd)
 cp "$repo/data/tires/default.tir" t.tir
 run "$bin" identify --tire t.tir
 check "identify: the default tire's values are those it writes (unchanged file)" \
-    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *369000 " out && grep -q "Q_RA1 *0.621 " out &&
+    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *421000 " out && grep -q "Q_RA1 *0.619 " out &&
      cmp -s t.tir "$repo/data/tires/default.tir"'
 run "$bin" identify --tire t.tir --set RADIAL_STIFFNESS=1e6 --write
 check "identify --write: the file re-read has the identified values, comments and note kept" \
-    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 369000 *\$ c_r" t.tir &&
+    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 421000 *\$ c_r" t.tir &&
      [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
      [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
 run "$bin" identify --loads 12000
@@ -65,7 +65,9 @@ check "... 0.01 N below it: accepted as the trained range's edge, the same curve
 run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12000 -o b.csv
 check "... 12 kN, below the data set's loads: refused, naming the contact length" \
     '[ $rc -ne 0 ] && grep -q "contact length" err && no_file b.csv'
-run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 6000 -o o.csv
+# 15 kN: the springs model of the tire file, which stands in for the missing relation, touches
+# 0.30 m there, inside the network's trained 0.28 to 0.43 m.
+run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 15000 -o o.csv
 check "an older network file: read, with a warning naming training.data.contact_law" \
     '[ $rc -eq 0 ] && grep -q "warning: .*training.data.contact_law" err'
 # In the ride (inputs at each axle's static load), the network's input to the rear axle over

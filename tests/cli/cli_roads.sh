@@ -120,11 +120,14 @@ check "rigid: the highest of the three tracks, to the digit" \
     'awk -F, "NR > 1 { m = \$3; if (\$11 > m) m = \$11; if (\$19 > m) m = \$19;
         if (m != \$27) bad = 1 } END { exit bad || NR < 100 }" rigid.all'
 paste -d, v-0.026666666666666672-springs.csv v0.1-springs.csv v0.22666666666666668-springs.csv w3-springs.csv >springs.all
+# Strictly inside wherever the tracks differ by more than 5 mm: 260 positions at the springs
+# model's load for 0.33 m, 17.6 kN (14 differ by more than 1 cm: it envelopes the cleat more
+# than at the 6 kN its chord of 0.33 m gave before docs/models.md section 1.3's touched length).
 check "springs: one equilibrium between the lowest and the highest track, strictly over the cleat" \
     'awk -F, "NR > 1 { lo = \$3; hi = \$3; if (\$11 < lo) lo = \$11; if (\$19 < lo) lo = \$19;
         if (\$11 > hi) hi = \$11; if (\$19 > hi) hi = \$19;
         if (\$27 < lo - 1e-9 || \$27 > hi + 1e-9) bad = 1;
-        if (hi - lo > 0.01 && \$27 > lo + 1e-4 && \$27 < hi - 1e-4) inside++ }
+        if (hi - lo > 0.005 && \$27 > lo + 1e-4 && \$27 < hi - 1e-4) inside++ }
         END { exit bad || inside < 50 }" springs.all'
 run "$bin" envelope --model springs --profile measured.crg --track 0.1 --tracks 3 $lc $sweep -o w3d.csv
 check "--tracks without --width spreads over the tire file's WIDTH (0.38 m)" \

@@ -673,7 +673,7 @@ static void test_tire_check(void **state)
 static void test_vertical_law_quadratic(void **state)
 {
     (void)state;
-    const double q_fz2[] = {28.8, 13.71, -7.93};
+    const double q_fz2[] = {29.4, 13.71, -7.93};
     for (size_t i = 0; i < sizeof q_fz2 / sizeof q_fz2[0]; i++) {
         tirenv_tire t = tirenv_tire_default();
         t.cam.q_fz2 = q_fz2[i];

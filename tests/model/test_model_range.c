@@ -80,8 +80,9 @@ static void test_ring(void **state)
 
 /* The springs model over a tread segment narrower than the lower half: the range ends where
  * the flat contact reaches the segment's ends, z = R0 cos(phi/2), whose chord is
- * 2 R0 sin(phi/2). With the default segment (pi) the centre at the ground is the limit, as
- * before (TIRENV_ENOBRACKET). */
+ * 2 R0 sin(phi/2); the contact length there is the length the tread touches (docs/models.md
+ * section 1.3), shorter than that chord. With the default segment (pi) the centre at the
+ * ground is the limit, as before (TIRENV_ENOBRACKET). */
 static void test_springs_segment(void **state)
 {
     (void)state;
@@ -91,9 +92,11 @@ static void test_springs_segment(void **state)
     assert_non_null(m);
     double G_max, l_max;
     check_refused(m, 3e5, 1.2, &G_max, &l_max);
-    assert_near(l_max, 2 * t.springs.R0 * sin(0.75), 1e-4, 0);  /* printed to 4 digits */
     tirenv_flat f;
     tirenv_diag diag;
+    assert_int_equal(tirenv_model_flat_at_height(m, t.springs.R0 * cos(0.75), &f, &diag), 0);
+    assert_near(l_max, f.contact_length, 1e-4, 0);  /* printed to 4 digits */
+    assert_true(l_max < 2 * t.springs.R0 * sin(0.75));
     assert_int_equal(tirenv_model_flat(m, 0.999 * G_max, &f, &diag), 0);
     assert_near(f.z_flat, t.springs.R0 * cos(0.75), 2e-3, 0);
     tirenv_model_free(m);

@@ -17,18 +17,13 @@
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
-/* The ring's loads at contact lengths spanning the paper's regimes, 0.28 to 0.38 m: the
- * range the default tire is identified on (tirenv identify). */
+/* The loads tirenv identify takes for a tire file with FNOMIN (the default tire's 17.9 kN):
+ * 0.5 to 1.5 times it. */
 enum { N_LOADS = 5 };
-static void ring_loads(const tirenv_tire *t, double loads[N_LOADS])
+static void nominal_loads(const tirenv_tire *t, double loads[N_LOADS])
 {
-    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, t);
-    assert_non_null(ring);
-    tirenv_diag d;
     for (size_t i = 0; i < N_LOADS; i++)
-        assert_int_equal(tirenv_model_load_for_contact_length(ring, 0.28 + 0.025 * (double)i,
-                                                              &loads[i], &d), TIRENV_OK);
-    tirenv_model_free(ring);
+        loads[i] = (0.5 + 0.25 * (double)i) * t->cam.fnomin;
 }
 
 static void flat_states(const tirenv_model_type *type, const tirenv_tire *t, size_t n,
@@ -38,7 +33,9 @@ static void flat_states(const tirenv_model_type *type, const tirenv_tire *t, siz
     assert_non_null(m);
     tirenv_diag d;
     for (size_t i = 0; i < n; i++)
-        assert_int_equal(tirenv_model_flat(m, loads[i], &f[i], &d), TIRENV_OK);
+        if (tirenv_model_flat(m, loads[i], &f[i], &d))
+            fail_msg("%s at %g N: %s: %s", tirenv_model_type_name(type), loads[i], d.field,
+                     d.message);
     tirenv_model_free(m);
 }
 
@@ -50,58 +47,116 @@ static void test_default_is_identified(void **state)
     (void)state;
     const tirenv_tire t = tirenv_test_default_tire();
     double loads[N_LOADS];
-    ring_loads(&t, loads);
+    nominal_loads(&t, loads);
     tirenv_tire id;
     tirenv_flat_target tg[N_LOADS];
     tirenv_diag d;
     assert_int_equal(tirenv_identify_flat(&t, tirenv_model_ring, N_LOADS, loads, &id, tg, &d),
                      TIRENV_OK);
-    print_message("identified: c_r %.6g c_b %.6g c_z %.6g Q_RA1 %.6g Q_RA2 %.6g\n",
-                  id.springs.c_r, id.springs.c_b, id.cam.c_z, id.cam.q_ra1, id.cam.q_ra2);
+    print_message("identified: c_r %.6g c_b %.6g c_z %.6g Q_FZ2 %.6g Q_RA1 %.6g Q_RA2 %.6g\n",
+                  id.springs.c_r, id.springs.c_b, id.cam.c_z, id.cam.q_fz2, id.cam.q_ra1,
+                  id.cam.q_ra2);
     assert_near(t.springs.c_r, id.springs.c_r, 0, 5e-3);
     assert_near(t.springs.c_b, id.springs.c_b, 0, 5e-3);
     assert_near(t.cam.c_z, id.cam.c_z, 0, 5e-3);
+    assert_near(t.cam.q_fz2, id.cam.q_fz2, 0, 5e-3);
     assert_near(t.cam.q_ra1, id.cam.q_ra1, 0, 5e-3);
-    assert_near(t.cam.q_ra2, id.cam.q_ra2, 2e-4, 0);  /* small: its third digit is 1e-4 */
+    assert_near(t.cam.q_ra2, id.cam.q_ra2, 0, 5e-3);
     /* The targets are the ring's own states at those loads. */
-    for (size_t i = 0; i < N_LOADS; i++)
-        assert_near(tg[i].contact_length, 0.28 + 0.025 * (double)i, 1e-6, 0);
+    tirenv_flat r[N_LOADS];
+    flat_states(tirenv_model_ring, &t, N_LOADS, loads, r);
+    for (size_t i = 0; i < N_LOADS; i++) {
+        assert_true(tg[i].load == loads[i]);
+        assert_true(tg[i].deflection == r[i].deflection);
+        assert_true(tg[i].contact_length == r[i].contact_length);
+    }
 }
 
-/* Model pairs at the same loads over the range the default tire is identified on and the
- * tractor's two tire loads (8.74 and 13.34 kN). Tolerances: springs against ring, deflection
- * 1 % (identified to 0.1 %); cam against ring, contact length 1 % (0.1 %); cam against ring
- * and springs, deflection 1 % within the range (MF-Tyre's quadratic vertical law with Q_FZ2
- * stiffens with load as the ring does: 0.2 % at most; the linear law it replaced missed by
- * 5.8 % at the range's ends) and 2 % at the front tire's 8.74 kN below it, outside the loads
- * it is identified on (0.8 %; the linear law: 10.9 %). The springs model's contact length, the chord of its
- * free circle, is 1.7 to 1.8 times the ring's patch: asserted as such, so that a change of that
- * convention is seen here: by construction it cannot be the ring's (docs/models.md 14.1). */
+/* Relative difference of a from b. */
+static double rel(double a, double b) { return fabs(a - b) / b; }
+
+/* Model pairs at the same loads: springs - ring, cam - ring and springs - cam, deflection and
+ * contact length within tol (relative) at each load; the largest differences printed. */
+static void pairs_within(const char *what, const tirenv_tire *t, size_t n, const double loads[],
+                         int with_cam, double tol_springs, double tol_cam)
+{
+    tirenv_flat r[16], s[16], c[16];
+    assert_true(n <= 16);
+    flat_states(tirenv_model_ring, t, n, loads, r);
+    flat_states(tirenv_model_springs, t, n, loads, s);
+    if (with_cam)
+        flat_states(tirenv_model_cam, t, n, loads, c);
+    double e[6] = {0};  /* springs-ring, cam-ring, springs-cam: deflection, contact length */
+    for (size_t i = 0; i < n; i++) {
+        print_message("%s %8.0f N: deflection ring %.2f springs %.2f cam %.2f mm; contact "
+                      "length ring %.4f springs %.4f cam %.4f m\n", what, loads[i],
+                      1e3 * r[i].deflection, 1e3 * s[i].deflection,
+                      with_cam ? 1e3 * c[i].deflection : NAN, r[i].contact_length,
+                      s[i].contact_length, with_cam ? c[i].contact_length : NAN);
+        e[0] = fmax(e[0], rel(s[i].deflection, r[i].deflection));
+        e[1] = fmax(e[1], rel(s[i].contact_length, r[i].contact_length));
+        if (with_cam) {
+            e[2] = fmax(e[2], rel(c[i].deflection, r[i].deflection));
+            e[3] = fmax(e[3], rel(c[i].contact_length, r[i].contact_length));
+            e[4] = fmax(e[4], rel(s[i].deflection, c[i].deflection));
+            e[5] = fmax(e[5], rel(s[i].contact_length, c[i].contact_length));
+        }
+    }
+    print_message("%s: largest differences, deflection / contact length: springs-ring %.2f / "
+                  "%.2f %%, cam-ring %.2f / %.2f %%, springs-cam %.2f / %.2f %%\n", what,
+                  100 * e[0], 100 * e[1], 100 * e[2], 100 * e[3], 100 * e[4], 100 * e[5]);
+    assert_true(e[0] <= tol_springs && e[1] <= tol_springs);
+    assert_true(e[2] <= tol_cam && e[3] <= tol_cam);
+    assert_true(e[4] <= tol_springs && e[5] <= tol_springs);
+}
+
+/* The default tire's models at the same loads: the file's load range (0.5 to 1.5 FNOMIN, on
+ * which they are identified), the embedded data set's loads (the ring's at contact lengths
+ * 0.28 to 0.43 m, up to 30.8 kN, beyond the identification's 26.85 kN) and the tractor's two
+ * tire loads (8.74 and 13.34 kN). Tolerance 5 % (issue 24) for every pair with the springs
+ * model (measured: deflection 3.4 %, contact length 2.6 % against the ring); the cam, whose
+ * MF-Tyre laws are fitted to the ring directly, 1 % (measured 0.5 %). */
 static void test_model_pairs(void **state)
 {
     (void)state;
     const tirenv_tire t = tirenv_test_default_tire();
-    double loads[N_LOADS + 2];
-    ring_loads(&t, loads);
-    loads[N_LOADS] = 8737.03;
-    loads[N_LOADS + 1] = 13335.47;
-    const size_t n = N_LOADS + 2;
-    tirenv_flat r[N_LOADS + 2], s[N_LOADS + 2], c[N_LOADS + 2];
-    flat_states(tirenv_model_ring, &t, n, loads, r);
-    flat_states(tirenv_model_springs, &t, n, loads, s);
-    flat_states(tirenv_model_cam, &t, n, loads, c);
-    for (size_t i = 0; i < n; i++) {
-        const double cam_tol = loads[i] < 0.99 * loads[0] ? 0.02 : 0.01;
-        print_message("%8.0f N: deflection ring %.2f springs %.2f cam %.2f mm; contact length "
-                      "ring %.4f springs %.4f cam %.4f m\n", loads[i], 1e3 * r[i].deflection,
-                      1e3 * s[i].deflection, 1e3 * c[i].deflection, r[i].contact_length,
-                      s[i].contact_length, c[i].contact_length);
-        assert_near(s[i].deflection, r[i].deflection, 0, 0.01);
-        assert_near(c[i].deflection, r[i].deflection, 0, cam_tol);
-        assert_near(c[i].deflection, s[i].deflection, 0, cam_tol);
-        assert_near(c[i].contact_length, r[i].contact_length, 0, 0.01);
-        const double chord_ratio = s[i].contact_length / r[i].contact_length;
-        assert_true(chord_ratio > 1.6 && chord_ratio < 1.9);
+    double loads[N_LOADS + 6];
+    nominal_loads(&t, loads);
+    tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, &t);
+    assert_non_null(ring);
+    tirenv_diag d;
+    for (size_t i = 0; i < 4; i++)
+        assert_int_equal(tirenv_model_load_for_contact_length(ring, 0.28 + 0.05 * (double)i,
+                                                              &loads[N_LOADS + i], &d),
+                         TIRENV_OK);
+    tirenv_model_free(ring);
+    loads[N_LOADS + 4] = 8737.03;
+    loads[N_LOADS + 5] = 13335.47;
+    pairs_within("default", &t, N_LOADS + 6, loads, 1, 0.05, 0.01);
+}
+
+/* The models derived from MF-Tyre files (section 14.2) agree as the default tire's do, at 0.5
+ * to 1.5 times each file's FNOMIN: springs - ring within 5 % in deflection and contact length,
+ * on the three files where it holds; the springs model is identified on the derived ring. */
+static void test_derived_pairs(void **state)
+{
+    (void)state;
+    static const char *const files[] = {
+        TIRENV_TEST_DATA "/samples/tir/tractor_430_50R38.tir",
+        TIRENV_TEST_DATA "/samples/tir/mf_185_80R14.tir",
+        TIRENV_TEST_DATA "/tir_mftyre.tir",
+    };
+    for (size_t f = 0; f < sizeof files / sizeof files[0]; f++) {
+        tirenv_tire t = tirenv_tire_default();
+        tirenv_diag d;
+        tirenv_tir_origin o;
+        assert_int_equal(tirenv_tir_read(files[f], &t, &d), TIRENV_OK);
+        assert_int_equal(tirenv_tir_derive(files[f], &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING,
+                                           &o, &d), TIRENV_OK);
+        double loads[N_LOADS];
+        for (size_t i = 0; i < N_LOADS; i++)
+            loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
+        pairs_within(strrchr(files[f], '/') + 1, &t, N_LOADS, loads, 0, 0.05, 0);
     }
 }
 
@@ -289,6 +344,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_default_is_identified),
         cmocka_unit_test(test_model_pairs),
+        cmocka_unit_test(test_derived_pairs),
         cmocka_unit_test(test_derived_from_mftyre),
         cmocka_unit_test(test_pressure_dependence),
         cmocka_unit_test(test_refuses_naming_the_key),
