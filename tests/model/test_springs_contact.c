@@ -290,8 +290,10 @@ static void test_kkt_conditions(void **state)
             memset(S.Kw, 0, N * sizeof *S.Kw);
             for (size_t r = 0; r < c.n_rows; ++r) {
                 const tirenv_springs__cc_row *R = &c.rows[r];
-                const double s = R->ga * w[R->i] + (R->t > 0 ? R->gb * w[R->j] : 0) - R->h;
                 const double lam = c.lambda[r];
+                /* a row between elements with its own compliance (section 4.8) */
+                const double s = R->ga * w[R->i] + (R->t > 0 ? R->gb * w[R->j] : 0) +
+                                 R->cmp * lam - R->h;
                 l_max = fmax(l_max, lam);
                 assert_true(s >= -1e-12 * par.R0);           /* primal feasibility */
                 assert_true(lam >= 0);                        /* dual feasibility */
@@ -315,8 +317,15 @@ static void test_kkt_conditions(void **state)
                 w[i] = 0;
         }
         /* Every vertex below the centre within R0 and inside the segment: outside the tread,
-         * R0 - (a w_i + b w_(i+1)) at its angle (a, b the weights at its chord parameter). */
+         * R0 - (a w_i + b w_(i+1) + c lambda) at its angle (a, b the weights at its chord
+         * parameter, c lambda the row's own compliance times its reaction where the vertex
+         * is a row between elements, else 0). */
         const double *X = tirenv_profile_x(p), *Z = tirenv_profile_z(p);
+        double *own = calloc(tirenv_profile_size(p), sizeof *own);
+        assert_non_null(own);
+        for (size_t r = 0; r < c.n_rows; ++r)
+            if (c.rows[r].id >= 0 && c.rows[r].t > 0)
+                own[c.rows[r].id] = c.rows[r].cmp * c.lambda[r];
         for (size_t k = 0; k < tirenv_profile_size(p); ++k) {
             const double dx = X[k] - x, dz = z - Z[k], rho = hypot(dx, dz);
             if (!(dz > 0) || !(rho < par.R0))
@@ -332,10 +341,11 @@ static void test_kkt_conditions(void **state)
             const double t = s_i / (s_i + s_n);
             double a, b, da, db;
             tirenv_springs__cc_weights(&S.T, t, &a, &b, &da, &db);
-            const double tread = a * w[i] + b * w[i + 1];
+            const double tread = a * w[i] + b * w[i + 1] + own[k];
             /* 1e-8 m: the snap of t near an element (t_snap |w_(i+1) - w_i|). */
             assert_true(tread >= par.R0 - rho - 1e-8);
         }
+        free(own);
         /* The model's forces, which solve the elements' own rows first and the QP only if a
          * row between elements fails there: the QP's, to round-off. */
         double Fz = 0, Fx = 0, fx, fz;
