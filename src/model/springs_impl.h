@@ -204,9 +204,10 @@ void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, si
  * neighbouring elements i and i + 1 is the curve at distance R0 - (a(t) w_i + b(t) w_(i+1))
  * from the centre, t the parameter along the chord joining the two elements' unit directions
  * (tirenv_springs__cc_weights). Every ground vertex under the tread and every element's ray
- * crossing gives a row a w_i + b w_(i+1) >= h; the tip problem
- * min 1/2 w^T K w over those rows is a strictly convex QP, solved exactly by a primal active
- * set method on banded KKT systems. */
+ * crossing gives a row a w_i + b w_(i+1) + c lambda >= h (c the tread's own compliance at a
+ * vertex between elements, 0 on an element; lambda the row's reaction); the tip problem
+ * min 1/2 w^T K w + sum u^2 / (2 c) over the rows G w + u >= h is a strictly convex QP,
+ * solved exactly by a primal active set method on banded KKT systems. */
 
 /* What the contact needs of the tire: its elements and the tridiagonal K (diag, -k_ir off the
  * diagonal) with the free chains beyond the rows' span eliminated by lq and rq. */
