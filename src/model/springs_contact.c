@@ -75,7 +75,8 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c)
     c->last_ok = 0;
 }
 
-/* (1 - t) w_i + t w_j - h: the row's slack at w, m. */
+/* ga w_i + gb w_j - h: the slack at w of a row not working, m (its reaction is 0, so its own
+ * compliance adds nothing). */
 static double slack(const tirenv_springs__cc_row *r, const double w[])
 {
     return r->t > 0 ? r->ga * w[r->i] + r->gb * w[r->j] - r->h : w[r->i] - r->h;
@@ -92,7 +93,8 @@ static int fixed(const tirenv_springs__cc *c, size_t e)
 /* The KKT system of the working set on the unknowns left once the held elements are
  * eliminated: w_e of the free elements in [f0, f1], each followed by the rows of sector e - 1
  * in the working set (whose free elements then precede them), in the symmetric form
- * [K G^T; G 0] [w; mu] = [.; .], mu = -lambda. Every row follows the unknowns it couples, so
+ * [K G^T; G -C] [w; mu] = [.; .], mu = -lambda, C the rows' own compliances (diagonal,
+ * >= 0; 0 on an element's row). Every row follows the unknowns it couples, so
  * with K positive definite and the rows independent every leading block is nonsingular and
  * LDL^T needs no pivoting (w pivots > 0, row pivots < 0). Returns 1 if a pivot shows the rows
  * dependent (a row on held elements only, among others), -1 out of memory. */
@@ -185,6 +187,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
             continue;
         const tirenv_springs__cc_row *r = &c->rows[c->order[p] - N];
         first[p] = p;
+        AT(p, p) = -r->cmp; /* G w - C mu = h, mu = -lambda: the row's own compliance */
         if (c->wpos[r->i] != SIZE_MAX) {
             AT(p, c->wpos[r->i]) = r->ga;
             first[p] = c->wpos[r->i];
@@ -693,7 +696,7 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         const tirenv_springs__cc_row *R = &c->rows[r];
         double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
         if (R->t > 0) {
-            rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j];
+            rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j] + R->dcmp_dz * c->lambda[r];
             if (c->wpos[R->i] != SIZE_MAX)
                 b[c->wpos[R->i]] += R->dga_dz * c->lambda[r];
             if (c->wpos[R->j] != SIZE_MAX)

@@ -204,9 +204,10 @@ void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, si
  * neighbouring elements i and i + 1 is the curve at distance R0 - (a(t) w_i + b(t) w_(i+1))
  * from the centre, t the parameter along the chord joining the two elements' unit directions
  * (tirenv_springs__cc_weights). Every ground vertex under the tread and every element's ray
- * crossing gives a row a w_i + b w_(i+1) >= h; the tip problem
- * min 1/2 w^T K w over those rows is a strictly convex QP, solved exactly by a primal active
- * set method on banded KKT systems. */
+ * crossing gives a row a w_i + b w_(i+1) + c lambda >= h (c the tread's own compliance at a
+ * vertex between elements, 0 on an element; lambda the row's reaction); the tip problem
+ * min 1/2 w^T K w + sum u^2 / (2 c) over the rows G w + u >= h is a strictly convex QP,
+ * solved exactly by a primal active set method on banded KKT systems. */
 
 /* What the contact needs of the tire: its elements and the tridiagonal K (diag, -k_ir off the
  * diagonal) with the free chains beyond the rows' span eliminated by lq and rq. */
@@ -216,12 +217,15 @@ typedef struct {
     const double *sin_t, *cos_t, *diag, *lq, *rq;
     /* Filled by tirenv_springs__cc_tire_shape from k_r and k_ir: the tread's interpolation
      * (tirenv_springs__cc_weights), and bounds that let most ground vertices be dropped
-     * before their weights: a(t) + b(t) >= 1 + ab_lo t (1 - t), |tau(t) - t| <= tau_dev. */
-    double gamma, sin_gamma, cot_gamma, ab_lo, tau_dev;
+     * before their weights: a(t) + b(t) >= 1 + ab_lo t (1 - t), |tau(t) - t| <= tau_dev;
+     * c0 the compliance of an element of an endless free chain, 1/sqrt(k_r^2 + 4 k_r k_ir)
+     * (m/N), which a row between elements adds (a + b - 1) times of its own
+     * (tirenv_springs__cc_weights). */
+    double gamma, sin_gamma, cot_gamma, ab_lo, tau_dev, c0;
 } tirenv_springs__cc_tire;
 
-/* Fills the shape fields of T (gamma, sin_gamma, cot_gamma, ab_lo, tau_dev) from its k_r,
- * k_ir. */
+/* Fills the shape fields of T (gamma, sin_gamma, cot_gamma, ab_lo, tau_dev, c0) from its
+ * k_r, k_ir. */
 void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T);
 
 /* gamma for a tire of element stiffnesses k_r and k_ir: acos(exp(-mu)), cosh(mu) =
@@ -232,9 +236,12 @@ double tirenv_springs__cc_gamma(double k_r, double k_ir);
 /* The tread's weights at t in [0, 1] between two elements: a = sin((1 - t) gamma) /
  * sin(gamma), b = sin(t gamma) / sin(gamma) (and their derivatives in t). With a neighbour's
  * deflection exp(-mu) = cos(gamma) times the loaded element's, a^2 + b^2 + 2 a b cos(gamma) =
- * 1: a point load anywhere between the elements meets the same compliance as on an element
- * (linear weights would make the tread 2 t (1 - t) (1 - cos(gamma)) stiffer between them, a
- * ripple of h at the element spacing). */
+ * 1: a point load anywhere between the elements deflects the tread there as much as on an
+ * element (linear weights would make the tread 2 t (1 - t) (1 - cos(gamma)) stiffer between
+ * them, a ripple of h at the element spacing). The tips then carry (a + b) times the load to
+ * the hub; the row's own compliance (a + b - 1) c0 (tirenv_springs__cc_tire) makes the
+ * hub's stiffness to a lone point load the same anywhere along the tread (docs/models.md
+ * section 4.8). */
 void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
                                 double *b, double *da_dt, double *db_dt);
 
@@ -247,6 +254,9 @@ typedef struct {
     double ga, gb, h; /* h: m */
     double dga_dz, dgb_dz; /* with the ground point fixed, 1/m */
     double dh_dz;     /* dh/dz, m/m; unused for a ray's row (the ray's memo gives it) */
+    /* the tread's own compliance at the row's point, m/N (0 on an element), and its
+     * derivative in z, m/N per m: the row reads ga w_i + gb w_j + cmp lambda >= h */
+    double cmp, dcmp_dz;
     long id;          /* the ground vertex, or -1 - i for element i's ray */
 } tirenv_springs__cc_row;
 

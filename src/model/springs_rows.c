@@ -57,6 +57,9 @@ void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T)
     }
     T->ab_lo = lo > 0 ? 0.99 * lo : 0;
     T->tau_dev = 1.01 * dev + 1e-9;
+    /* the diagonal of the inverse of the endless chain's K (k_r + 2 k_ir on the diagonal,
+     * -k_ir beside it): 1 / sqrt((k_r + 2 k_ir)^2 - 4 k_ir^2) */
+    T->c0 = 1 / sqrt(T->k_r * (T->k_r + 4 * T->k_ir));
 }
 
 /* Room for n rows (and their KKT unknowns alongside N elements). */
@@ -219,6 +222,12 @@ static void row_weights(const tirenv_springs__cc_tire *T, tirenv_springs__cc_row
     r->tau = r->gb / (r->ga + r->gb);
     r->dga_dz = da * dt_dz;
     r->dgb_dz = db * dt_dz;
+    /* The tips carry (a + b) lambda to the hub, which deflects them by lambda c0 (a^2 + b^2 +
+     * 2 a b cos(gamma)) = lambda c0 on an endless free chain: in series with them the row's
+     * own (a + b - 1) c0 (>= 0: a + b >= 1) makes the hub's stiffness to a lone point load
+     * 1 / c0 at every t, as on an element (section 4.8). */
+    r->cmp = T->c0 * fmax(r->ga + r->gb - 1, 0);
+    r->dcmp_dz = r->cmp > 0 ? T->c0 * (da + db) * dt_dz : 0;
 }
 
 /* Rows ordered by sector, then t, then h: insertion sort (the walk gives nearly that order). */

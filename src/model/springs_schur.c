@@ -135,6 +135,8 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
             S[p * TIRENV_SPRINGS__SCHUR_MAX + q] =
                 row_dot(c, r, c->tri_y + q * (N + 2), c->chain_lo[q], c->chain_hi[q]);
     }
+    for (size_t p = 0; p < k; ++p) /* G w + C lambda = h: S + C, C the rows' compliances */
+        S[p * TIRENV_SPRINGS__SCHUR_MAX + p] += c->rows[c->order[c->schur_pos[p]] - N].cmp;
     /* S = L D L^T in place (unit L below the diagonal, D on it); S is positive definite when
      * the rows are independent: a pivot at round-off level shows them dependent, as the
      * banded factorisation's row pivot does. */
