@@ -113,9 +113,10 @@ foreach(file ${core_files})
 endforeach()
 
 # --- auxiliary sources: public headers and their own private ones ---------------------------
-# An auxiliary module includes its own private headers and the public ones, never another
-# module's private header (Lua's lauxlib.c is written against lua.h alone), save the io
-# readers listed in TIRENV_AUX_SHARED_HEADERS, and those only from a module after io.
+# An auxiliary module includes its own private headers and the public ones (Lua's lauxlib.c is
+# written against lua.h alone), and of another auxiliary module only its interface header,
+# <module>/<module>.h (io/io.h), and only of a module before it; never another module's
+# private header.
 set(aux_files "")
 foreach(d ${TIRENV_AUX_DIRS})
   file(GLOB_RECURSE f ${SOURCE_DIR}/src/${d}/*.c ${SOURCE_DIR}/src/${d}/*.h)
@@ -140,8 +141,8 @@ foreach(file ${aux_files})
         list(FIND TIRENV_AUX_DIRS ${m} theirs)
         if(theirs GREATER own)
           violation("${rel}:${line}: the ${module} module includes ${name}, a private header of ${m}, which comes after it (TIRENV_AUX_DIRS)")
-        elseif(NOT name IN_LIST TIRENV_AUX_SHARED_HEADERS)
-          violation("${rel}:${line}: the ${module} module includes ${name}, a private header of ${m}; an auxiliary module includes only its own private headers and public ones (tirenv/*.h)")
+        elseif(NOT name STREQUAL "${m}/${m}.h")
+          violation("${rel}:${line}: the ${module} module includes ${name}, a private header of ${m}: an auxiliary module includes only its own private headers, public ones (tirenv/*.h) and an earlier module's interface header (${m}/${m}.h)")
         endif()
       endif()
     endif()
@@ -244,8 +245,10 @@ if(CORE_OBJECTS AND AUX_OBJECTS)
       list(FIND TIRENV_AUX_DIRS ${aux_defined.${sym}} theirs)
       if(theirs GREATER own)
         violation("${src}: the ${module} module calls ${sym}, defined in ${aux_defined.${sym}}, which comes after it (TIRENV_AUX_DIRS)")
-      elseif(sym MATCHES "__" AND NOT theirs EQUAL own AND NOT aux_defined.${sym} STREQUAL "io")
-        violation("${src}: the ${module} module calls ${sym}, internal to ${aux_defined.${sym}}")
+      elseif(sym MATCHES "__" AND NOT theirs EQUAL own
+             AND NOT EXISTS ${SOURCE_DIR}/src/${aux_defined.${sym}}/${aux_defined.${sym}}.h)
+        # Internal (tirenv_<object>__) names cross modules only through an interface header.
+        violation("${src}: the ${module} module calls ${sym}, internal to ${aux_defined.${sym}}, which has no interface header (${aux_defined.${sym}}/${aux_defined.${sym}}.h)")
       endif()
     endif()
   endforeach()

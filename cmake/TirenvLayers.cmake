@@ -8,7 +8,8 @@
 # AUX (the convenience layer): file formats (.tir, .veh, CSV, JSON), rig simulation and import,
 #   data sets, study, compare, plots. It is written against the core's public headers alone.
 #   Its modules are listed from the bottom up, and each uses only those before it (checked by
-#   the includes and by the symbols):
+#   the includes and by the symbols), through their public headers or their interface header
+#   (below):
 #     io       bytes in and out: CSV lines, number text, sources, atomic output files and
 #              directories, temporary files;
 #     formats  the file formats: property files and units, .tir, .veh, CSV profiles and
@@ -23,13 +24,10 @@
 set(TIRENV_CORE_DIRS core profile model nn train ride)
 set(TIRENV_AUX_DIRS io formats rig dataset sweep study)
 
-# The one exception to "an auxiliary module includes only its own private headers and public
-# ones": io's byte-level readers (a CSV line with its numbers, a file read at any offset, a
-# bounded text line), which formats, rig and dataset read their files with. They are io's
-# interface to the modules above it, not the user's (tirenv_csv__ and tirenv_source__ names,
-# not exported); giving them a public header is issue 22's remaining step. A new entry here
-# needs that reason too.
-set(TIRENV_AUX_SHARED_HEADERS io/csv_line.h io/source.h io/text_line.h)
+# A module's interface to the auxiliary modules after it, if it has one, is the header named
+# after the module, src/<module>/<module>.h (as SQLite's btree.h beside btreeInt.h): io's
+# byte-level readers, src/io/io.h, which formats, rig and dataset read their files with. Its
+# other headers are its own. Not the user's interface: internal tirenv_<object>__ names.
 
 # Every public header under include/tirenv/ belongs to exactly one layer; the check fails on a
 # header listed in neither, so a new header must be placed here. (tirenv.h, the umbrella, and

@@ -210,6 +210,14 @@ typedef struct {
     double F_front, F_rear;
 } tirenv_ride_sample;
 tirenv_ride_settings tirenv_ride_default(void);
+int tirenv_ride_method_parse(const char *name, tirenv_ride_method *m, tirenv_diag *diag);
+typedef enum {
+    TIRENV_RIDE_STATIC = 0, TIRENV_RIDE_DYNAMIC, TIRENV_RIDE_DIRECT, TIRENV_RIDE_N_ENVELOPING
+} tirenv_ride_enveloping;
+#define TIRENV_RIDE_ENVELOPING_DEFAULT ...
+const char *tirenv_ride_enveloping_name(tirenv_ride_enveloping e);
+int tirenv_ride_enveloping_parse(const char *name, tirenv_ride_enveloping *e,
+                                 tirenv_diag *diag);
 typedef struct {
     double run_in; double settle_min; double settle_time; double grid_margin; double dx;
 } tirenv_ride_span;
@@ -219,6 +227,19 @@ double tirenv_ride_span_end(const tirenv_ride_span *s, const tirenv_vehicle *v, 
                             double V);
 double tirenv_ride_span_grid(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_from,
                              double x_to, double *x0);
+typedef struct {
+    tirenv_ride_span span; double x_from; double x_to; double dt; tirenv_ride_method method;
+    double tol; double max_points;
+} tirenv_ride_plan_params;
+tirenv_ride_plan_params tirenv_ride_plan_params_default(void);
+#define TIRENV_RIDE_PLAN_RUNS ...
+typedef struct {
+    double x_from; double x0; double dx; size_t n; size_t n_runs;
+    tirenv_ride_settings run[...];
+} tirenv_ride_plan;
+int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicle *v,
+                          const tirenv_profile *p, const double speeds[], size_t n_speeds,
+                          tirenv_ride_plan *plan, tirenv_diag *diag);
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);

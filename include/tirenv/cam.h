@@ -33,5 +33,16 @@ double tirenv_cam_lift(const tirenv_profile *p, const tirenv_cam_shape *cam, dou
 int tirenv_cam_tandem(const tirenv_profile *p, const tirenv_cam_shape *cam, double l_s,
                       double x, double *w, double *tan_beta);
 
+/* MF-Tyre's vertical law at standstill (docs/models.md section 7.3),
+ * F_z/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 with s = rho/R0, shared by the cam and the .tir reader:
+ * _q_fz1 gives Q_FZ1 = sqrt((c_z*R0/FNOMIN)^2 - 4*Q_FZ2) for VERTICAL_STIFFNESS c_z (N/m),
+ * R0 (m) and FNOMIN (N), which makes c_z the tangent stiffness at FNOMIN (NAN where Q_FZ2
+ * leaves none); _root gives scale*s at the load g = F_z/FNOMIN, the root that grows from 0
+ * with the load, as scale*2*g/(q1 + sqrt(q1^2 + 4*q2*g)) (the form without cancellation;
+ * scale*g/q1 when q2 = 0), NAN beyond the largest load a q2 < 0 carries. scale is R0 for the
+ * deflection in m, 1 for s itself. */
+double tirenv_cam_q_fz1(double c_z, double R0, double fnomin, double q_fz2);
+double tirenv_cam_vertical_root(double scale, double q1, double q2, double g);
+
 TIRENV_END_DECLS
 #endif

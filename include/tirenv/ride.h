@@ -44,6 +44,36 @@ typedef struct {
 /* Defaults: 1 m/s, from x = 0, 10 s, dt 1 ms, RK4, tol 1e-10. */
 tirenv_ride_settings tirenv_ride_default(void);
 
+/* The integrators' names, as tirenv ride --solver and the Python module take them: "rk4",
+ * "rk8pd". _name gives "unknown" for a value out of range; _parse puts the method named into
+ * *m, or returns TIRENV_EINVAL (field "method") listing the names. */
+const char *tirenv_ride_method_name(tirenv_ride_method m);
+int tirenv_ride_method_parse(const char *name, tirenv_ride_method *m, tirenv_diag *diag);
+
+/* How each axle's input follows the load its tires carry (docs/models.md section 9.5). */
+typedef enum {
+    TIRENV_RIDE_STATIC = 0, /* the effective road at the axle's static tire load
+                             * (tirenv_ride_effective, tirenv_ride_run) */
+    TIRENV_RIDE_DYNAMIC,    /* tables over loads, at the load the tires carry
+                             * (tirenv_ride_table_build, tirenv_ride_run_dynamic) */
+    TIRENV_RIDE_DIRECT,     /* the model evaluated during the integration at that load
+                             * (tirenv_ride_direct_input, tirenv_ride_run_input): slow, the
+                             * reference the tables are checked against */
+    TIRENV_RIDE_N_ENVELOPING
+} tirenv_ride_enveloping;
+
+/* The way of enveloping when none is asked: dynamic, since the load of a tire swings by tens
+ * of per cent over a cleat and to nothing when it lifts off; static is the paper's
+ * constant-load curve. */
+#define TIRENV_RIDE_ENVELOPING_DEFAULT TIRENV_RIDE_DYNAMIC
+
+/* "static", "dynamic", "direct": the names tirenv ride --enveloping and the Python module
+ * take, and the ones its tables, labels and file names print. _name gives "unknown" out of
+ * range; _parse puts the way named into *e, or returns TIRENV_EINVAL (field "enveloping"). */
+const char *tirenv_ride_enveloping_name(tirenv_ride_enveloping e);
+int tirenv_ride_enveloping_parse(const char *name, tirenv_ride_enveloping *e,
+                                 tirenv_diag *diag);
+
 /* A forward speed from text into *v (m/s): "2.5" or "2.5m/s" in m/s, "10km/h" in km/h (times
  * 1/3.6), as tirenv ride --speed takes it. TIRENV_EINVAL (field "speed") unless the number is
  * all of the text before the suffix, finite and > 0. */
@@ -77,6 +107,48 @@ double tirenv_ride_span_end(const tirenv_ride_span *s, const tirenv_vehicle *v, 
  * against what it can hold before converting (not finite unless dx > 0 and all is finite). */
 double tirenv_ride_span_grid(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_from,
                              double x_to, double *x0);
+
+/* What a set of runs over one profile asks for, before tirenv_ride_plan_make checks it and
+ * works out where each run starts and ends (docs/models.md section 9.4). */
+typedef struct {
+    tirenv_ride_span span; /* run-in, settling, grid margin and the grid spacing dx */
+    double x_from;         /* the front axle's start, m; NAN: tirenv_ride_span_start's */
+    double x_to;           /* its end, m; NAN: tirenv_ride_span_end's at each speed */
+    double dt;             /* output interval, s (a sampling rate of TIRENV_COMFORT_FS_MIN at
+                            * least, for the comfort weightings) */
+    tirenv_ride_method method;
+    double tol;            /* RK8PD's tolerance per step */
+    double max_points;     /* the most samples one run and points the grid may have: more is
+                            * taken for a typo in a speed, dt or dx, not run out of memory on */
+} tirenv_ride_plan_params;
+
+/* tirenv ride's: tirenv_ride_span_default, x_from and x_to NAN, dt, method and tol of
+ * tirenv_ride_default, max_points 1e7. */
+tirenv_ride_plan_params tirenv_ride_plan_params_default(void);
+
+/* The most speeds one plan holds. */
+#define TIRENV_RIDE_PLAN_RUNS 16
+
+/* What tirenv ride (and the Python module's ride) drive: one run per speed, all from the same
+ * start, and the one grid of the axles' inputs that covers them all. */
+typedef struct {
+    double x_from;         /* the front axle's start of every run, m */
+    double x0;             /* the inputs' grid x_k = x0 + k*dx (k < n), from the rear axle's */
+    double dx;             /* start to the furthest end of the front axle, grid_margin */
+    size_t n;              /* beyond both (tirenv_ride_span_grid): m, m, points */
+    size_t n_runs;         /* runs, one per speed */
+    tirenv_ride_settings run[TIRENV_RIDE_PLAN_RUNS]; /* speed, x_front0 = x_from, duration
+                            * (to x_to, or the span's end at the speed), dt, method, tol */
+} tirenv_ride_plan;
+
+/* The plan of runs of vehicle v over profile p at speeds[] (m/s, n_speeds of them, 1 to
+ * TIRENV_RIDE_PLAN_RUNS) into *plan. TIRENV_EINVAL, naming the field: dt not positive or too
+ * coarse for the weightings (dt, "80 Hz"); dx not positive or not finite (dx); a speed not
+ * positive and finite (speed); a run that ends before it starts (x_to); a run of more than
+ * max_points samples (speed: its duration, at dt) or a grid of more (dx). */
+int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicle *v,
+                          const tirenv_profile *p, const double speeds[], size_t n_speeds,
+                          tirenv_ride_plan *plan, tirenv_diag *diag);
 
 /* The state and what the driver feels at one output time. Displacements are from the static
  * equilibrium on flat ground at height 0 (so z = w on a flat road of height w). */

@@ -1,7 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """The tractor ride (docs/models.md section 9) and ISO 2631-1 comfort (section 10)."""
 import collections
-import math
 
 import numpy as np
 
@@ -10,8 +9,8 @@ from ._c import (ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_b
 from .model import Model
 from .tire import Tire
 
-SAMPLE_FIELDS = ("t", "x_front", "z", "vz", "az", "theta", "vtheta", "atheta", "z_a", "vz_a",
-                 "w_front", "w_rear", "seat_az", "seat_ax", "F_front", "F_rear")
+# The names of the library's tirenv_ride_sample, in its order.
+SAMPLE_FIELDS = tuple(name for name, _ in ffi.typeof("tirenv_ride_sample").fields)
 # One output sample of the ride, laid out as the library's tirenv_ride_sample.
 SAMPLE_DTYPE = struct_dtype("tirenv_ride_sample", [(f, f, "f8") for f in SAMPLE_FIELDS])
 
@@ -131,70 +130,65 @@ def _table(name, tire, load, profile, network, x0, dx, n, extrapolate=False):
 
 def speed_of(v):
     """A speed in m/s from a number (m/s) or text as 'tirenv ride --speed' takes it, by the
-    same library call (tirenv_ride_speed_parse): "10km/h", "2.5m/s" or "2.5"."""
+    same library call (tirenv_ride_speed_parse): "10km/h", "2.5m/s" or "2.5". A number is
+    checked where the run is planned (tirenv_ride_plan_make)."""
     if isinstance(v, str):
         out, diag = ffi.new("double *"), new_diag()
         check(lib.tirenv_ride_speed_parse(v.strip().encode(), out, diag), diag)
         return out[0]
-    if not (v > 0 and math.isfinite(v)):
-        raise invalid(f"expected a speed > 0, got {v!r}", "speed")
-    return float(v)
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise invalid(f"expected a speed > 0, got {v!r}", "speed") from None
+
+
+def _nan_if_none(v):
+    return float("nan") if v is None else v
 
 
 def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None, dt=None,
-         method="rk4", tol=None, x_from=None, x_to=None, enveloping="dynamic",
-         extrapolate=False):
+         method=None, tol=None, x_from=None, x_to=None, enveloping=None, extrapolate=False):
     """Drives the tractor at speed (m/s) over profile, each axle's tires following what model
     makes of it ("point" for single-point contact, a model name, or "nn" with network), as
-    'tirenv ride' does: the same grid of the inputs (every dx m), the same start x_from and
-    end x_to of the front axle (m; from a run-in before the obstacle to once the rear axle
-    has passed it and the body settled), all by default the library's, as the CLI's
-    (tirenv_ride_span_default; dt s and tol from tirenv_ride_default), and the same way of
-    enveloping: "dynamic" (default), the effective road at the load the tires carry, from
-    tables over loads, or "static", at the axle's static tire load (docs/models.md section
-    9.5). The integration is one library call with the GIL released. extrapolate=True lets
-    the network run outside its trained ranges, as 'tirenv ride --extrapolate'. Returns a
-    Ride (w_front, w_rear: the static load's rows)."""
+    'tirenv ride' does, by the same library call planning the run (tirenv_ride_plan_make):
+    the same grid of the inputs (every dx m), the same start x_from and end x_to of the front
+    axle (m; from a run-in before the obstacle to once the rear axle has passed it and the
+    body settled), the output interval dt (s), the integrator method ("rk4", "rk8pd") and
+    its tol, all by default the library's, as the CLI's (tirenv_ride_plan_params_default),
+    and the same way of enveloping (the library's default, TIRENV_RIDE_ENVELOPING_DEFAULT,
+    "dynamic": the effective road at the load the tires carry, from tables over loads; or
+    "static", at the axle's static tire load; docs/models.md section 9.5; "direct" is the
+    CLI's alone). The integration is one library call with the GIL released. extrapolate=True
+    lets the network run outside its trained ranges, as 'tirenv ride --extrapolate'. Returns
+    a Ride (w_front, w_rear: the static load's rows)."""
     v = vehicle if vehicle is not None else Vehicle()
-    speed = speed_of(speed)
-    s = ffi.new("tirenv_ride_settings *")
-    s[0] = lib.tirenv_ride_default()
-    dt = s.dt if dt is None else dt
-    tol = s.tol if tol is None else tol
-    span = ffi.new("tirenv_ride_span *")
-    span[0] = lib.tirenv_ride_span_default()
+    speeds = ffi.new("double[1]", [speed_of(speed)])
+    pp, diag = ffi.new("tirenv_ride_plan_params *"), new_diag()
+    pp[0] = lib.tirenv_ride_plan_params_default()
     if dx is not None:
-        span.dx = dx
-    if not (span.dx > 0 and math.isfinite(span.dx)):
-        raise invalid(f"expected a grid spacing dx > 0 in m, got {dx!r}", "dx")
-    if not (dt > 0 and math.isfinite(dt)):
-        raise invalid(f"expected an output interval dt > 0 in s, got {dt!r}", "dt")
-    if not (1 / dt >= lib.TIRENV_COMFORT_FS_MIN):
-        raise invalid(f"dt {dt} s is too coarse for ISO 2631-1's weightings: at most "
-                      f"{1 / lib.TIRENV_COMFORT_FS_MIN} s", "dt")
-    methods = {"rk4": lib.TIRENV_RIDE_RK4, "rk8pd": lib.TIRENV_RIDE_RK8PD}
-    if method not in methods:
-        raise invalid(f"expected rk4 or rk8pd, got {method!r}", "method")
-    if enveloping not in ("static", "dynamic"):
-        raise invalid(f"expected static or dynamic, got {enveloping!r}", "enveloping")
-    first, last = profile.extent
-    if x_from is None:
-        x_from = lib.tirenv_ride_span_start(span, first)
-    if x_to is None:
-        x_to = lib.tirenv_ride_span_end(span, v._v, last, speed)
-    if not (x_to > x_from):
-        raise invalid(f"the run must end after it starts: x_from {x_from}, x_to {x_to}")
-    x0_c = ffi.new("double *")
-    n_grid = lib.tirenv_ride_span_grid(span, v._v, x_from, x_to, x0_c)
-    if not math.isfinite(n_grid):
-        raise invalid(f"no grid from {x_from} m to {x_to} m every {span.dx} m", "dx")
-    x0, dx, n = x0_c[0], span.dx, int(n_grid)
-    s.speed, s.x_front0, s.dt, s.method, s.tol = speed, x_from, dt, methods[method], tol
-    s.duration = (x_to - x_from) / speed
+        pp.span.dx = dx
+    if dt is not None:
+        pp.dt = dt
+    if tol is not None:
+        pp.tol = tol
+    if method is not None:
+        m = ffi.new("tirenv_ride_method *")
+        check(lib.tirenv_ride_method_parse(str(method).encode(), m, diag), diag)
+        pp.method = m[0]
+    way = ffi.new("tirenv_ride_enveloping *", lib.TIRENV_RIDE_ENVELOPING_DEFAULT)
+    if enveloping is not None:
+        check(lib.tirenv_ride_enveloping_parse(str(enveloping).encode(), way, diag), diag)
+    if way[0] == lib.TIRENV_RIDE_DIRECT:
+        raise invalid("direct is tirenv ride's alone here: expected static or dynamic",
+                      "enveloping")
+    pp.x_from, pp.x_to = _nan_if_none(x_from), _nan_if_none(x_to)
+    plan = ffi.new("tirenv_ride_plan *")
+    check(lib.tirenv_ride_plan_make(pp, v._v, profile._p, speeds, 1, plan, diag), diag)
+    s = ffi.new("tirenv_ride_settings *", plan.run[0])
+    x0, dx, n = plan.x0, plan.dx, plan.n
     series = np.zeros(lib.tirenv_ride_n_samples(s), dtype=SAMPLE_DTYPE)
     out = ffi.cast("tirenv_ride_sample *", ffi.from_buffer(series))
-    diag = new_diag()
-    if enveloping == "static":
+    if way[0] == lib.TIRENV_RIDE_STATIC:
         w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
                      extrapolate) for axle in (0, 1)]
         tracks = [ffi.new("tirenv_ride_track *",
@@ -209,4 +203,5 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None,
         check(lib.tirenv_ride_run_dynamic(v._v, c[0], c[1], s, out, diag), diag)
         w = [rows[int(np.argmin(np.abs(loads - v.tire_load(axle))))]
              for axle, (loads, rows) in enumerate(tables)]
-    return Ride(model, speed, dt, series, x0 + np.arange(n, dtype=np.float64) * dx, w[0], w[1])
+    return Ride(model, s.speed, s.dt, series, x0 + np.arange(n, dtype=np.float64) * dx, w[0],
+                w[1])

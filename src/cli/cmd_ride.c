@@ -157,20 +157,23 @@ static int parse_enveloping(void *dst, const char *arg)
     const char *p = arg;
     for (;;) {
         const size_t len = strcspn(p, ",");
-        size_t e = 0;
-        while (e < RIDE_N_ENVELOPING &&
-               !(strlen(ride_enveloping_name((ride_enveloping)e)) == len &&
-                 strncmp(p, ride_enveloping_name((ride_enveloping)e), len) == 0))
-            ++e;
+        char name[16];
+        tirenv_ride_enveloping e = TIRENV_RIDE_N_ENVELOPING;
+        if (len < sizeof name) {
+            memcpy(name, p, len);
+            name[len] = '\0';
+            if (tirenv_ride_enveloping_parse(name, &e, NULL))
+                e = TIRENV_RIDE_N_ENVELOPING;
+        }
         int twice = 0;
         for (size_t k = 0; k < r->n_envelopings; ++k)
-            twice |= r->envelopings[k] == (ride_enveloping)e;
-        if (e == RIDE_N_ENVELOPING || twice) {
+            twice |= r->envelopings[k] == e;
+        if (e == TIRENV_RIDE_N_ENVELOPING || twice) {
             cli_error("ride: --enveloping expects static, dynamic or direct, each at most "
                       "once, comma-separated; got '%s'", arg);
             return CLI_EXIT_USAGE;
         }
-        r->envelopings[r->n_envelopings++] = (ride_enveloping)e;
+        r->envelopings[r->n_envelopings++] = e;
         if (!p[len])
             return CLI_EXIT_OK;
         p += len + 1;
@@ -179,12 +182,7 @@ static int parse_enveloping(void *dst, const char *arg)
 
 static int parse_solver(void *dst, const char *arg)
 {
-    tirenv_ride_method *method = dst;
-    if (strcmp(arg, "rk4") == 0) {
-        *method = TIRENV_RIDE_RK4;
-    } else if (strcmp(arg, "rk8pd") == 0) {
-        *method = TIRENV_RIDE_RK8PD;
-    } else {
+    if (tirenv_ride_method_parse(arg, dst, NULL)) {
         cli_error("ride: --solver expects rk4 or rk8pd, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
@@ -193,15 +191,15 @@ static int parse_solver(void *dst, const char *arg)
 
 int cli_ride_main(int argc, char *argv[])
 {
-    ride_options r = {.dt = tirenv_ride_default().dt, .method = TIRENV_RIDE_RK4,
+    ride_options r = {.pp = tirenv_ride_plan_params_default(),
                       .models = {tirenv_model_point, tirenv_model_springs}, .n_models = 2};
     const cli_opt own[] = {
         {.name = "speed", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_speeds},
         {.name = "model", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_models},
         {.name = "vehicle", .kind = CLI_STRING, .dst = &r.vehicle_path},
         {.name = "set", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_set, .repeatable = 1},
-        {.name = "dt", .kind = CLI_POSITIVE, .dst = &r.dt, .what = "a positive number in s"},
-        {.name = "solver", .kind = CLI_CUSTOM, .dst = &r.method, .parse = parse_solver},
+        {.name = "dt", .kind = CLI_POSITIVE, .dst = &r.pp.dt, .what = "a positive number in s"},
+        {.name = "solver", .kind = CLI_CUSTOM, .dst = &r.pp.method, .parse = parse_solver},
         {.name = "enveloping", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_enveloping},
         {.name = "out-dir", .kind = CLI_STRING, .dst = &r.out_dir},
         {.name = "series", .kind = CLI_FLAG, .dst = &r.series},
@@ -218,19 +216,16 @@ int cli_ride_main(int argc, char *argv[])
     r.nn_path = o.nn_path;
     r.extrapolate = o.extrapolate;
     r.out_path = o.output;
-    r.span = tirenv_ride_span_default();
     if (!isnan(o.dx))
-        r.span.dx = o.dx;
-    r.have_from = !isnan(o.x_from);
-    r.have_to = !isnan(o.x_to);
-    r.x_from = o.x_from;
-    r.x_to = o.x_to;
+        r.pp.span.dx = o.dx;
+    r.pp.x_from = o.x_from;  /* NAN unless given: the span's */
+    r.pp.x_to = o.x_to;
     if (!r.n_speeds) {
         cli_error("ride: expected --speed V; 'tirenv ride --help' shows the options");
         return CLI_EXIT_USAGE;
     }
     if (!r.n_envelopings) {
-        r.envelopings[0] = RIDE_DEFAULT_ENVELOPING;
+        r.envelopings[0] = TIRENV_RIDE_ENVELOPING_DEFAULT;
         r.n_envelopings = 1;
     }
     if (r.out_path && (r.n_models > 1 || r.n_speeds > 1 || r.n_envelopings > 1)) {
@@ -256,7 +251,7 @@ int cli_ride_main(int argc, char *argv[])
                 snprintf(c->label, sizeof c->label, "%s", name);
             else
                 snprintf(c->label, sizeof c->label, "%s-%s", name,
-                         ride_enveloping_name(c->enveloping));
+                         tirenv_ride_enveloping_name(c->enveloping));
         }
     for (size_t i = 0; i < r.n_models; ++i)
         if ((tirenv_model_type_flags(r.models[i]) & TIRENV_MODEL_NEEDS_NETWORK) && !r.nn_path) {

@@ -8,29 +8,12 @@
 #include "tirenv/nn.h"
 #include "tirenv/ride.h"
 
-enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = 16 };
-
-/* How each axle's input follows the load (--enveloping, docs/models.md section 9.5). */
-typedef enum {
-    RIDE_STATIC = 0,  /* the effective road at the axle's static tire load */
-    RIDE_DYNAMIC,     /* tables over loads, at the load the tires carry */
-    RIDE_DIRECT,      /* the model evaluated during the integration at that load (slow: the
-                       * reference the tables are checked against) */
-    RIDE_N_ENVELOPING
-} ride_enveloping;
-
-/* "static", "dynamic", "direct". */
-const char *ride_enveloping_name(ride_enveloping e);
-
-/* --enveloping when not given: dynamic, the effective road of the load the tires carry, which
- * swings by tens of per cent over a cleat and to nothing when they lift off; static is the
- * paper's constant-load curve (docs/models.md section 9.5). */
-#define RIDE_DEFAULT_ENVELOPING RIDE_DYNAMIC
+enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = TIRENV_RIDE_PLAN_RUNS };
 
 /* One column of the tables and plots: a model with one way of enveloping. */
 typedef struct {
     size_t model;                    /* index into models */
-    ride_enveloping enveloping;
+    tirenv_ride_enveloping enveloping;
     char label[48];                  /* "cam", or "cam-dynamic" when several are asked */
 } ride_column;
 
@@ -48,16 +31,12 @@ typedef struct {
     size_t n_models;
     double speeds[RIDE_MAX_SPEEDS];  /* m/s */
     size_t n_speeds;
-    ride_enveloping envelopings[RIDE_N_ENVELOPING];  /* --enveloping, in order */
+    tirenv_ride_enveloping envelopings[TIRENV_RIDE_N_ENVELOPING];  /* --enveloping, in order */
     size_t n_envelopings;
-    ride_column cols[RIDE_MAX_MODELS * RIDE_N_ENVELOPING];  /* models x envelopings */
+    ride_column cols[RIDE_MAX_MODELS * TIRENV_RIDE_N_ENVELOPING];  /* models x envelopings */
     size_t n_cols;
-    int have_from, have_to;
-    double x_from, x_to;             /* front-axle positions, m */
-    tirenv_ride_span span;           /* run-in, settling and the input grid: the
-                                      * library's, dx from --dx */
-    double dt;                       /* output interval, s */
-    tirenv_ride_method method;
+    tirenv_ride_plan_params pp;      /* --x-from, --x-to, --dx, --dt, --solver over the
+                                      * library's span and defaults */
     size_t jobs;                     /* --jobs: model inputs and runs at once */
 } ride_options;
 
@@ -65,7 +44,7 @@ typedef struct {
 typedef struct {
     const char *model;
     const char *label;             /* its column's label */
-    ride_enveloping enveloping;
+    tirenv_ride_enveloping enveloping;
     double speed;                  /* m/s */
     double duration;               /* simulated time, s */
     double seconds;                /* CPU time of the model's inputs and the integration, s */

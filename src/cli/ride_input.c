@@ -59,12 +59,6 @@ int ride_cli_axle_input(const tirenv_model_type *type, const tirenv_tire *tire, 
     return status;
 }
 
-const char *ride_enveloping_name(ride_enveloping e)
-{
-    static const char *const names[RIDE_N_ENVELOPING] = {"static", "dynamic", "direct"};
-    return (size_t)e < RIDE_N_ENVELOPING ? names[e] : "unknown";
-}
-
 int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, double G0,
                         const tirenv_profile *p, const tirenv_nn *nn, double R0_nn,
                         int extrapolate, double x0, double dx, size_t n,

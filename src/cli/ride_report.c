@@ -30,7 +30,7 @@ static int write_csv(const char *path, const ride_options *r, const ride_result 
                 "%.6g,%.6g,%s\n", q->model, q->speed, q->speed * 3.6, q->duration, q->c.seat.rms,
                 q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv, q->c.seat.peak, q->c.pitch.rms,
                 q->c.pitch.vdv, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
-                q->duration / fmax(q->seconds, 1e-9), ride_enveloping_name(q->enveloping));
+                q->duration / fmax(q->seconds, 1e-9), tirenv_ride_enveloping_name(q->enveloping));
     }
     return tirenv_outfile_commit(f, diag);
 }
@@ -43,12 +43,12 @@ static void write_differences(FILE *fp, const ride_options *r, const ride_result
     for (size_t j = 0; j < r->n_speeds; ++j)
         for (size_t c = 0; c < r->n_cols; ++c) {
             const ride_result *q = &res[j * r->n_cols + c];
-            if (q->enveloping == RIDE_STATIC)
+            if (q->enveloping == TIRENV_RIDE_STATIC)
                 continue;
             const ride_result *base = NULL;
             for (size_t b = 0; b < r->n_cols; ++b)
                 if (r->cols[b].model == r->cols[c].model &&
-                    r->cols[b].enveloping == RIDE_STATIC)
+                    r->cols[b].enveloping == TIRENV_RIDE_STATIC)
                     base = &res[j * r->n_cols + b];
             if (!base)
                 continue;
@@ -63,7 +63,7 @@ static void write_differences(FILE *fp, const ride_options *r, const ride_result
                       "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", fp);
             fprintf(fp, "| %s | %.1f | %s | %.3f | %.3f | %+.1f %% | %.3f | %.3f | %+.1f %% | "
                     "%.3f | %.3f | %.3f |\n", q->model, q->speed * 3.6,
-                    ride_enveloping_name(q->enveloping), base->c.seat.rms, q->c.seat.rms,
+                    tirenv_ride_enveloping_name(q->enveloping), base->c.seat.rms, q->c.seat.rms,
                     100 * (q->c.seat.rms / base->c.seat.rms - 1), base->c.seat.vdv, q->c.seat.vdv,
                     100 * (q->c.seat.vdv / base->c.seat.vdv - 1), base->c.lift_off, q->c.lift_off,
                     q->seconds);
@@ -90,7 +90,7 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
     for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
         fprintf(fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
-                "%.3f | %.3f | %.0f |\n", q->model, ride_enveloping_name(q->enveloping),
+                "%.3f | %.3f | %.0f |\n", q->model, tirenv_ride_enveloping_name(q->enveloping),
                 q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv,
                 q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
@@ -126,7 +126,7 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
         const ride_column *c = &r->cols[i];
         const char *name = tirenv_model_type_name(r->models[c->model]);
         const tirenv_plot_style st = tirenv_plot_style_of(name, c->model);
-        const int dash = c->enveloping == RIDE_STATIC ? st.dash : 1 + (int)c->enveloping;
+        const int dash = c->enveloping == TIRENV_RIDE_STATIC ? st.dash : 1 + (int)c->enveloping;
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
                 st.width, dash, c->label);
     }
@@ -232,7 +232,7 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
     if (status)
         return status;
     FILE *fp = tirenv_outfile_stream(f);
-    const double fs = 1 / r->dt;
+    const double fs = 1 / r->pp.dt;
     for (size_t j = 0; j < r->n_speeds && !status; ++j) {
         const ride_series *row = &series[j * r->n_cols];
         const size_t seg = welch_segment(row[0].n);

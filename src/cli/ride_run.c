@@ -29,7 +29,8 @@ typedef struct {
     tirenv_tire tire[2];   /* front, rear */
     double load[2];        /* static load of one tire, N */
     const tirenv_profile *p;
-    double x0, dx;         /* the grid */
+    tirenv_ride_plan plan; /* each speed's run and the inputs' grid */
+    double x0, dx;         /* the grid, the plan's */
     size_t n;
 } ride_setup;
 
@@ -76,7 +77,7 @@ static void axle_warnings(const char *model, int axle, const char *w)
 }
 
 /* Whether the options ask for a way of enveloping. */
-static int asks(const ride_options *r, ride_enveloping e)
+static int asks(const ride_options *r, tirenv_ride_enveloping e)
 {
     for (size_t k = 0; k < r->n_envelopings; ++k)
         if (r->envelopings[k] == e)
@@ -119,25 +120,25 @@ static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     (void)worker;
     int status = TIRENV_OK;
     double t0 = cli_thread_seconds();
-    if (asks(r, RIDE_STATIC))
+    if (asks(r, TIRENV_RIDE_STATIC))
         status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, in->nn,
                                      in->R0_nn, r->extrapolate, s->x0, s->dx, s->n,
                                      in->w[axle], p->warnings[k], sizeof p->warnings[k], diag);
     p->seconds[k][0] = cli_thread_seconds() - t0;
     t0 = cli_thread_seconds();
-    if (!status && asks(r, RIDE_DYNAMIC)) {
+    if (!status && asks(r, TIRENV_RIDE_DYNAMIC)) {
         char table_warnings[1024];
         status = ride_cli_axle_table(in->type, &s->tire[axle], s->load[axle], s->p, in->nn,
                                      in->R0_nn, r->extrapolate, s->x0, s->dx, s->n,
                                      &in->table[axle], table_warnings, sizeof table_warnings,
                                      diag);
-        if (!asks(r, RIDE_STATIC))
+        if (!asks(r, TIRENV_RIDE_STATIC))
             snprintf(p->warnings[k], sizeof p->warnings[k], "%s", table_warnings);
     }
     p->seconds[k][1] = cli_thread_seconds() - t0;
     /* Direct runs make their models as they go; set this axle's here so that a profile or
      * load the model refuses is named, with its axle, before any run. */
-    if (!status && asks(r, RIDE_DIRECT)) {
+    if (!status && asks(r, TIRENV_RIDE_DIRECT)) {
         tirenv_model *m = NULL;
         status = direct_model(s, in, axle, r->extrapolate, &m, diag);
         tirenv_model_free(m);
@@ -156,7 +157,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     inputs_pass pass = {r, s, in, seconds, warnings, item_status};
     int code = CLI_EXIT_OK, status = TIRENV_OK;
     for (size_t i = 0; i < r->n_models && !code; ++i) {
-        for (int axle = 0; axle < 2 && asks(r, RIDE_STATIC); ++axle)
+        for (int axle = 0; axle < 2 && asks(r, TIRENV_RIDE_STATIC); ++axle)
             if (!(in[i].w[axle] = malloc(s->n * sizeof *in[i].w[axle])))
                 code = cli_fail(TIRENV_ENOMEM, NULL);
         /* x_N refers to the radius of the network's data, when the file records it. */
@@ -218,11 +219,16 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
     return tirenv_outfile_commit(out, diag);  /* it checks ferror and removes the file */
 }
 
-/* Where the front axle stops at speed V: --x-to, or once the rear axle has passed the
- * obstacle and the response has had time to settle. */
-static double run_end(const ride_options *r, const ride_setup *s, double V, double x_last)
+/* The options a field of tirenv_ride_plan_make's errors comes from. */
+static const char *plan_option(const char *field)
 {
-    return r->have_to ? r->x_to : tirenv_ride_span_end(&r->span, &s->v, x_last, V);
+    static const char *const options[][2] = {
+        {"dt", "--dt"}, {"dx", "--dx"}, {"speed", "--speed"}, {"x_to", "--x-from, --x-to"},
+        {"method", "--solver"}};
+    for (size_t i = 0; i < sizeof options / sizeof *options; ++i)
+        if (strcmp(field, options[i][0]) == 0)
+            return options[i][1];
+    return field;
 }
 
 static void print_table(FILE *fp, const ride_result res[], size_t n)
@@ -243,15 +249,15 @@ static void print_table(FILE *fp, const ride_result res[], size_t n)
 
 /* One run of one model's inputs, the way of enveloping chosen. */
 static int integrate(const ride_options *r, const ride_setup *s, const ride_inputs *in,
-                     ride_enveloping env, const tirenv_ride_settings *set,
+                     tirenv_ride_enveloping env, const tirenv_ride_settings *set,
                      tirenv_ride_sample out[], tirenv_diag *diag)
 {
-    if (env == RIDE_STATIC) {
+    if (env == TIRENV_RIDE_STATIC) {
         const tirenv_ride_track front = {s->x0, s->dx, s->n, in->w[0]};
         const tirenv_ride_track rear = {s->x0, s->dx, s->n, in->w[1]};
         return tirenv_ride_run(&s->v, &front, &rear, set, out, diag);
     }
-    if (env == RIDE_DYNAMIC)
+    if (env == TIRENV_RIDE_DYNAMIC)
         return tirenv_ride_run_dynamic(&s->v, &in->table[0], &in->table[1], set, out, diag);
     /* Direct: the models between the loads the tables span, their positions every half grid
      * spacing apart for dw/dx, as the tables' Steffen slope sees the grid. */
@@ -279,7 +285,6 @@ typedef struct {
     const ride_inputs *in;
     ride_result *res;
     ride_series *series;
-    double x_from, x_last;     /* m */
     int *status;               /* per run */
 } ride_runs;
 
@@ -288,15 +293,10 @@ static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
     const ride_options *r = p->r;
     const size_t j = k / r->n_cols, c = k % r->n_cols;
     const ride_inputs *in = &p->in[r->cols[c].model];
-    const ride_enveloping env = r->cols[c].enveloping;
+    const tirenv_ride_enveloping env = r->cols[c].enveloping;
     ride_result *q = &p->res[k];
     ride_series *rs = &p->series[k];
-    tirenv_ride_settings set = tirenv_ride_default();
-    set.speed = r->speeds[j];
-    set.x_front0 = p->x_from;
-    set.duration = (run_end(r, p->s, set.speed, p->x_last) - p->x_from) / set.speed;
-    set.dt = r->dt;
-    set.method = r->method;
+    const tirenv_ride_settings set = p->s->plan.run[j];
     *q = (ride_result){.model = in->name, .label = r->cols[c].label, .enveloping = env,
                        .speed = set.speed, .duration = set.duration};
     rs->n = tirenv_ride_n_samples(&set);
@@ -306,12 +306,13 @@ static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     const double t0 = cli_thread_seconds();
     int status = integrate(r, p->s, in, env, &set, rs->samples, diag);
-    const double inputs = env == RIDE_STATIC    ? in->seconds
-                          : env == RIDE_DYNAMIC ? in->table_seconds
+    const double inputs = env == TIRENV_RIDE_STATIC    ? in->seconds
+                          : env == TIRENV_RIDE_DYNAMIC ? in->table_seconds
                                                 : 0;
     q->seconds = inputs + cli_thread_seconds() - t0;
     if (!status)
-        status = tirenv_ride_comfort_measure(rs->samples, rs->n, r->dt, rs->a_w, &q->c, diag);
+        status = tirenv_ride_comfort_measure(rs->samples, rs->n, set.dt, rs->a_w, &q->c,
+                                             diag);
     if (!status && r->out_path)
         status = write_series(r->out_path, rs, q, diag);
     if (!status && r->out_dir && r->series) {
@@ -332,11 +333,6 @@ static int run_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
 
 int ride_cli_run(const cli_options *o, const ride_options *r)
 {
-    if (!(1 / r->dt >= TIRENV_COMFORT_FS_MIN)) {
-        cli_error("ride: --dt %g s is too coarse for ISO 2631-1's weightings, which reach "
-                  "80 Hz: at most %g s", r->dt, 1 / TIRENV_COMFORT_FS_MIN);
-        return CLI_EXIT_USAGE;
-    }
     ride_setup s;
     memset(&s, 0, sizeof s);
     int code = load_vehicle(r, &s);
@@ -355,44 +351,18 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         code = cli_fail(TIRENV_ENOMEM, NULL);
         goto done;
     }
-    double x_first, x_last;
-    tirenv_profile_extent(p, &x_first, &x_last);
-    const double x_from = r->have_from ? r->x_from : tirenv_ride_span_start(&r->span, x_first);
-    /* Checked before allocating, so a typo in --speed or --dt is named, not "out of
-     * memory": a 10 km/h km of road is 0.36 M samples. */
-    double x_to_max = x_from;
-    for (size_t j = 0; j < r->n_speeds; ++j) {
-        const double speed = r->speeds[j];
-        const double x_to = run_end(r, &s, speed, x_last);
-        const double duration = (x_to - x_from) / speed;
-        if (!(x_to > x_from)) {
-            cli_error("ride: the run must end after it starts: --x-from %g m, --x-to %g m",
-                      x_from, x_to);
-            code = CLI_EXIT_USAGE;
-            goto done;
-        }
-        if (!(duration / r->dt < CLI_MAX_POSITIONS)) {
-            cli_error("ride: %.3g s of run at --dt %g s would be %.3g samples (%.3g GB); at "
-                      "most %.0f: check --speed (%g m/s) and --dt", duration, r->dt,
-                      duration / r->dt,
-                      duration / r->dt * (double)(sizeof *series->samples +
-                                                  sizeof *series->a_w) / 1e9,
-                      CLI_MAX_POSITIONS, speed);
-            code = CLI_EXIT_USAGE;
-            goto done;
-        }
-        x_to_max = fmax(x_to_max, x_to);
-    }
-    s.dx = r->span.dx;
-    const double n_grid = tirenv_ride_span_grid(&r->span, &s.v, x_from, x_to_max, &s.x0);
-    if (n_grid > CLI_MAX_POSITIONS) {
-        cli_error("ride: %.3g input positions (from %g m to %g m every %g m); at most %.0f: "
-                  "check --dx", n_grid, s.x0, x_to_max + r->span.grid_margin, s.dx,
-                  CLI_MAX_POSITIONS);
+    /* Checked before allocating, so a typo in --speed, --dt or --dx is named, not "out of
+     * memory": a 10 km/h km of road is 0.36 M samples. These are the options' errors. */
+    const int planned = tirenv_ride_plan_make(&r->pp, &s.v, p, r->speeds, r->n_speeds, &s.plan,
+                                              &diag);
+    if (planned) {
+        cli_error("ride: %s: %s", plan_option(diag.field), diag.message);
         code = CLI_EXIT_USAGE;
         goto done;
     }
-    s.n = (size_t)n_grid;
+    s.x0 = s.plan.x0;
+    s.dx = s.plan.dx;
+    s.n = s.plan.n;
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = tirenv_model_type_name(r->models[i]);
@@ -413,7 +383,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         staged_r.out_dir = tirenv_outdir_path(staged);
         r = &staged_r;
     }
-    ride_runs runs = {r, &s, in, res, series, x_from, x_last, NULL};
+    ride_runs runs = {r, &s, in, res, series, NULL};
     if (!(runs.status = calloc(n_runs, sizeof *runs.status))) {
         code = cli_fail(TIRENV_ENOMEM, NULL);
         goto done;
@@ -423,7 +393,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         if (runs.status[k]) {  /* the first failing run: the one diag is about */
             char msg[1200];
             cli_error("ride: %s model (%s) at %g m/s: %s", res[k].model,
-                      ride_enveloping_name(res[k].enveloping), res[k].speed,
+                      tirenv_ride_enveloping_name(res[k].enveloping), res[k].speed,
                       tirenv_diag_format(&diag, msg, sizeof msg));
             code = cli_exit_code(status);
             break;

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/csv_line.h"
+#include "io/io.h"
 
 enum {
     COL_CASE,

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "io/csv_line.h"
+#include "io/io.h"
 #include "tirenv/model.h"
 
 #define FORMAT "tirenv-dataset 1"

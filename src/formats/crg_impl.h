@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "io/source.h"
+#include "io/io.h"
 #include "tirenv/crg.h"
 
 /* No such channel. */

@@ -45,20 +45,16 @@ typedef struct {
     size_t base;
 } rows_view;
 
-/* The row index i at or before u of OpenCRG's evaluation, clamped to 0 .. rows - 2, and the
- * fraction of a row beyond it (may be < 0 or > 1 beyond the ends). */
+/* The row index i at or before u of OpenCRG's evaluation (tirenv_crg_row_at) clamped to
+ * 0 .. rows - 2, so that rows i and i + 1 exist, and the fraction of a row beyond it (may be
+ * < 0 or > 1 beyond the ends). */
 static size_t row_of(const tirenv_crg *c, double u, double *frac)
 {
-    const size_t n = c->nu;
-    double f = (u - c->u0) / c->du;
-    size_t i = 0;
-    if (f >= 0) {
-        i = (size_t)f;
-        if (i >= n - 1)
-            i = n - 2;
-    }
+    size_t i = tirenv_crg_row_at(c, u);
+    if (i >= c->nu - 1)
+        i = c->nu - 2;
     if (frac)
-        *frac = f - (double)i;
+        *frac = (u - c->u0) / c->du - (double)i;
     return i;
 }
 
@@ -150,9 +146,7 @@ static int height_at(const tirenv_crg *c, double u, double v, double *z, tirenv_
         spec.border_mode_v = 2;
     double f = (u - c->u0) / c->du;
     f = f < 0 ? 0 : f > (double)(c->nu - 1) ? (double)(c->nu - 1) : f;
-    size_t i = (size_t)f;
-    if (i >= c->nu - 1)
-        i = c->nu - 2;
+    const size_t i = row_of(c, u, NULL);
     f -= (double)i;
     double uu[2], zz[2];
     const int status = tirenv_crg_track_rows(c, &spec, i, 2, uu, zz, diag);

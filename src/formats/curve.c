@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/csv_line.h"
+#include "io/io.h"
 
 enum { CURVE_FIELDS = 3 };
 static const char *const curve_names[CURVE_FIELDS] = {"x_N", "x_m", "h_m"};

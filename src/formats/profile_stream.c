@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/csv_line.h"
+#include "io/io.h"
 
 enum { FIELDS = 2 };
 static const char *const names[FIELDS] = {"x_m", "z_m"};

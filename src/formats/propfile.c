@@ -4,7 +4,7 @@
  * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/propfile.h"
 #include "formats/propfile_impl.h"
-#include "io/text_line.h"
+#include "io/io.h"
 
 #include <ctype.h>
 #include <errno.h>

@@ -11,7 +11,7 @@
 
 #include "formats/propfile.h"
 #include "formats/units.h"
-#include "io/source.h"
+#include "io/io.h"
 
 static const char *const side_names[] = {"mean", "left", "right"};
 

@@ -5,6 +5,7 @@
  * to the file's deflection at its nominal load. */
 #include "formats/flat_inverse.h"
 #include "formats/propfile.h"
+#include "tirenv/cam.h"
 #include "tirenv/tir.h"
 #include "tirenv/model.h"
 #include "tirenv/springs.h"
@@ -116,14 +117,11 @@ static double nominal_deflection(const mf_keys *k, double *factor, const char **
         k->nompres > 0)
         *factor = 1 + k->pfz1 * (k->inflpres - k->nompres) / k->nompres;
     const double q2 = k->given & MF_QFZ2 ? k->q_fz2 : 0;
-    double q1 = k->q_fz1;
-    if (!(k->given & MF_QFZ1) || q1 == 0) {
-        const double c = k->c_z * k->R0 / k->fnomin;
-        q1 = sqrt(c * c - 4 * q2);
-    }
+    const double q1 = (k->given & MF_QFZ1) && k->q_fz1 != 0
+                          ? k->q_fz1
+                          : tirenv_cam_q_fz1(k->c_z, k->R0, k->fnomin, q2);
     /* q2 x^2 + q1 x = 1/factor, the root that grows from 0 with the load. */
-    const double rhs = 1 / *factor;
-    const double x = q2 != 0 ? 2 * rhs / (q1 + sqrt(q1 * q1 + 4 * q2 * rhs)) : rhs / q1;
+    const double x = tirenv_cam_vertical_root(1, q1, q2, 1 / *factor);
     if (!(x > 0 && x < 1 && isfinite(x))) {
         *missing = "VERTICAL_STIFFNESS";
         return 0;

@@ -1,7 +1,6 @@
 /* Line-by-line reading of the small CSV files of the auxiliary layer (curves, rig logs, manifests).
  * SPDX-License-Identifier: Apache-2.0 */
-#include "io/csv_line.h"
-#include "io/text_line.h"
+#include "io/io.h"
 
 #include <ctype.h>
 #include <errno.h>

@@ -238,10 +238,6 @@ static void release(tirenv_outfile *f)
     f->buf = NULL;
 }
 
-/* fsync before rename: otherwise a crash soon after could leave the new name pointing at an
- * empty file on some file systems, which is the half-written file this module exists to
- * prevent. The rename comes before the unregistration: a signal in between removes a name
- * that no longer exists, where the other order could leave the temporary file. */
 int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag)
 {
     if (!f)
@@ -252,6 +248,10 @@ int tirenv_outfile_commit(tirenv_outfile *f, tirenv_diag *diag)
     return status;
 }
 
+/* fsync before rename: otherwise a crash soon after could leave the new name pointing at an
+ * empty file on some file systems, which is the half-written file this module exists to
+ * prevent. The rename comes before the unregistration (release): a signal in between removes
+ * a name that no longer exists, where the other order could leave the temporary file. */
 static int commit(tirenv_outfile *f, tirenv_diag *diag)
 {
     const int to_stdout = outfile_is_stdout(f);  /* asked before fp is taken from f */

@@ -1,6 +1,6 @@
 /* Bytes and lines of a road file, from a file read where asked (pread) or from memory.
  * SPDX-License-Identifier: Apache-2.0 */
-#include "io/source.h"
+#include "io/io.h"
 
 #include <errno.h>
 #include <fcntl.h>

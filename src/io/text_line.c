@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* One capped line of a text file (text_line.h). */
-#include "io/text_line.h"
+/* One capped line of a text file (io.h, tirenv_text__getline). */
+#include "io/io.h"
 
 #include <errno.h>
 #include <stdlib.h>

@@ -35,10 +35,26 @@
  * so that VERTICAL_STIFFNESS is the tangent stiffness at FNOMIN (MF-Tyre 6.1's Q_FZ1 when a file
  * gives none; tirenv always derives it so). With Q_FZ2 = 0 it is the linear spring
  * rho = F_z/VERTICAL_STIFFNESS, computed as such, bit for bit as before Q_FZ2 was read. */
+double tirenv_cam_q_fz1(double c_z, double R0, double fnomin, double q_fz2)
+{
+    const double k = c_z * R0 / fnomin;
+    return sqrt(k * k - 4 * q_fz2);
+}
+
+/* scale*2*g evaluated as (scale*2)*g: the deflection R0*2*g/(...) the cam always computed. */
+double tirenv_cam_vertical_root(double scale, double q1, double q2, double g)
+{
+    if (q2 == 0)
+        return scale * g / q1;
+    const double disc = q1 * q1 + 4 * q2 * g;
+    if (!(disc >= 0))
+        return NAN;
+    return scale * 2 * g / (q1 + sqrt(disc));
+}
+
 static double cam_q_fz1(const tirenv_tire *t)
 {
-    const double k = t->cam.c_z * t->springs.R0 / t->cam.fnomin;
-    return sqrt(k * k - 4 * t->cam.q_fz2);
+    return tirenv_cam_q_fz1(t->cam.c_z, t->springs.R0, t->cam.fnomin, t->cam.q_fz2);
 }
 
 /* Whether the law has a Q_FZ1 (Q_FZ2 < (VERTICAL_STIFFNESS*R0/FNOMIN)^2/4): a property of the
@@ -72,11 +88,8 @@ static double cam_deflection_at(const tirenv_tire *t, double load)
 {
     if (t->cam.q_fz2 == 0)
         return load / t->cam.c_z;
-    const double g = load / t->cam.fnomin, q1 = cam_q_fz1(t);
-    const double disc = q1 * q1 + 4 * t->cam.q_fz2 * g;
-    if (!(disc >= 0))
-        return NAN;
-    return t->springs.R0 * 2 * g / (q1 + sqrt(disc));
+    return tirenv_cam_vertical_root(t->springs.R0, cam_q_fz1(t), t->cam.q_fz2,
+                                    load / t->cam.fnomin);
 }
 
 /* The tangent stiffness dF_z/drho (N/m) at deflection rho (m). */

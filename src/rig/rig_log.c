@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
-#include "io/csv_line.h"
+#include "io/io.h"
 #include "rig/rig_impl.h"
 
 enum { LOG_FIELDS = 3 };

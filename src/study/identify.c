@@ -26,6 +26,31 @@ static int identify_springs(tirenv_tire *t, size_t n, const tirenv_flat_target t
     return tirenv_springs_identify(&t->springs, n, G, d, l, diag);
 }
 
+/* The least-squares fit of 1 ~ p*u_i + q*v_i over rows (u_i, v_i) (the laws below, in
+ * relative error), by its 2x2 normal equations [A11 A12; A12 A22] (p, q) = (b1, b2). */
+typedef struct {
+    double A11, A12, A22, b1, b2;
+} normal2;
+
+static void normal2_add(normal2 *e, double u, double v)
+{
+    e->A11 += u * u;
+    e->A12 += u * v;
+    e->A22 += v * v;
+    e->b1 += u;
+    e->b2 += v;
+}
+
+/* (p, q) by Cramer's rule; 0 where the determinant is within 1e-12 of A11*A22 of zero (the
+ * rows do not separate the two terms: p and q are then not finite or meaningless). */
+static int normal2_solve(const normal2 *e, double *p, double *q)
+{
+    const double det = e->A11 * e->A22 - e->A12 * e->A12;
+    *p = (e->A22 * e->b1 - e->A12 * e->b2) / det;
+    *q = (e->A11 * e->b2 - e->A12 * e->b1) / det;
+    return fabs(det) > 1e-12 * e->A11 * e->A22;
+}
+
 /* The cam (section 7.3). Without FNOMIN its vertical law is linear, rho = G/VERTICAL_STIFFNESS,
  * and VERTICAL_STIFFNESS is the geometric mean of the reference's load over deflection (least
  * squares in log deflection). With FNOMIN it is MF-Tyre's quadratic
@@ -46,19 +71,13 @@ static int identify_vertical(tirenv_tire *t, size_t n, const tirenv_flat_target 
         t->cam.q_fz2 = 0;
         return TIRENV_OK;
     }
-    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    normal2 e = {0};
     for (size_t i = 0; i < n; i++) {
         const double s = tg[i].deflection / R0, g = tg[i].load / F0;
-        const double u = s / g, v = s * s / g;  /* the rows for Q_FZ1 and Q_FZ2 */
-        A11 += u * u;
-        A12 += u * v;
-        A22 += v * v;
-        b1 += u;
-        b2 += v;
+        normal2_add(&e, s / g, s * s / g);  /* the rows for Q_FZ1 and Q_FZ2 */
     }
-    const double det = A11 * A22 - A12 * A12;
-    const double q1 = (A22 * b1 - A12 * b2) / det, q2 = (A11 * b2 - A12 * b1) / det;
-    if (!(fabs(det) > 1e-12 * A11 * A22) || !(q1 * q1 + 4 * q2 > 0))
+    double q1, q2;
+    if (!normal2_solve(&e, &q1, &q2) || !(q1 * q1 + 4 * q2 > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
                             "the loads do not separate the vertical law's two terms (give "
                             "loads further apart)");
@@ -88,23 +107,18 @@ static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
     tirenv_model_free(cam);
     if (status)
         return status;
-    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    normal2 e = {0};
     for (size_t i = 0; i < n; i++) {
         const double s = sqrt(rho[i] / R0), w = 2 * R0 / tg[i].contact_length;
-        const double u = w * s * s, v = w * s;  /* the rows for Q_RA2 and Q_RA1 */
-        A11 += u * u;
-        A12 += u * v;
-        A22 += v * v;
-        b1 += u;
-        b2 += v;
+        normal2_add(&e, w * s * s, w * s);  /* the rows for Q_RA2 and Q_RA1 */
     }
-    const double det = A11 * A22 - A12 * A12;
-    if (!(fabs(det) > 1e-12 * A11 * A22))
+    double q_ra2, q_ra1;
+    if (!normal2_solve(&e, &q_ra2, &q_ra1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
                             "the loads do not separate the contact law's two terms (give "
                             "loads further apart)");
-    t->cam.q_ra2 = (b1 * A22 - b2 * A12) / det;
-    t->cam.q_ra1 = (A11 * b2 - A12 * b1) / det;
+    t->cam.q_ra2 = q_ra2;
+    t->cam.q_ra1 = q_ra1;
     t->cam.given |= TIRENV_CAM_C_Z | TIRENV_CAM_Q_RA1 | TIRENV_CAM_Q_RA2;
     return TIRENV_OK;
 }
@@ -182,6 +196,18 @@ static int case_knots(const tirenv_dataset *ds, double G[], double l[], size_t c
     return TIRENV_OK;
 }
 
+/* The geometric grid of a law's loads from lo to hi (N) in n points: load k is
+ * lo*exp(k*step), step = log(hi/lo)/(n - 1). */
+static double load_grid_step(double lo, double hi, size_t n)
+{
+    return log(hi / lo) / (double)(n - 1);
+}
+
+static double load_grid(double lo, double step, size_t k)
+{
+    return lo * exp(step * (double)k);
+}
+
 /* With a source model, the law's knots are the data set's cases themselves (their loads give
  * back their contact lengths exactly, docs/models.md section 14.3) and, around them, the
  * source model's flat ground on a geometric grid from half the smallest to 1.5 times the
@@ -225,14 +251,14 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
         if (n_case > half)
             n_case = 0;
         const size_t n_grid = N - n_case;
-        const double step = log(hi / lo) / (double)(n_grid - 1);
+        const double step = load_grid_step(lo, hi, n_grid);
         tirenv_model *model = tirenv_model_alloc(source, tire);
         if (!model)
             return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for "
                                 "the %s model", tirenv_model_type_name(source));
         size_t j = 0;
         for (size_t k = 0; k < n_grid && !status; k++) {
-            const double G = lo * exp(step * (double)k);
+            const double G = load_grid(lo, step, k);
             while (j < n_case && G_case[j] < G) {
                 out.load[out.n] = G_case[j];
                 out.l_c[out.n++] = l_case[j++];
@@ -257,9 +283,10 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
                  n_case ? " through the cases" : "");
     } else {
         const double b = (m * sxy - sx * sy) / (m * sxx - sx * sx), a = (sy - b * sx) / m;
+        const double step = load_grid_step(lo, hi, N);
         out.n = N;
         for (size_t k = 0; k < N; k++) {
-            out.load[k] = lo * pow(hi / lo, (double)k / (double)(N - 1));
+            out.load[k] = load_grid(lo, step, k);
             out.l_c[k] = exp(a + b * log(out.load[k]));
         }
         snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);

@@ -25,17 +25,8 @@
 
 #include "crgBaseLib.h"
 
+#include "../lib/opencrg_open.h"
 #include "../lib/tap.h"
-
-/* A data set loaded, checked and with its modifiers applied; its contact point, or -1. */
-static int open_opencrg(const char *path)
-{
-    const int id = crgLoaderReadFile(path);
-    if (id <= 0 || !crgCheck(id))
-        return -1;
-    crgDataSetModifiersApply(id);
-    return crgContactPointCreate(id);
-}
 
 int main(int argc, char *argv[])
 {
@@ -45,7 +36,7 @@ int main(int argc, char *argv[])
     }
     const double v = atof(argv[4]), reach = argc > 5 ? atof(argv[5]) : 1.0;
     crgMsgSetLevel(dCrgMsgLevelNone);
-    const int road = open_opencrg(argv[1]), eff = open_opencrg(argv[2]);
+    const int road = opencrg_open(argv[1], NULL), eff = opencrg_open(argv[2], NULL);
     check(road >= 0, "OpenCRG loads and checks the road %s", argv[1]);
     check(eff >= 0, "OpenCRG loads and checks tirenv's effective road %s", argv[2]);
     if (road < 0 || eff < 0)

@@ -35,6 +35,7 @@
 #include "crgBaseLib.h"
 #include "tirenv/crg.h"
 
+#include "../lib/opencrg_open.h"
 #include "../lib/tap.h"
 
 static const char *base(const char *path)
@@ -60,17 +61,20 @@ static void compare(const char *path)
     tirenv_diag diag = {0};
     tirenv_crg *crg = NULL;
     const int status = tirenv_crg_open(path, &crg, &diag);
-    const int id = crgLoaderReadFile(path);
-    const int opencrg_ok = id > 0 && crgCheck(id);
+    int id;
+    const int cp = opencrg_open(path, &id);
+    const int opencrg_ok = cp >= 0;
     if (status || !opencrg_ok) {
         check(status && !opencrg_ok, "%s: tirenv %s it, OpenCRG %s it%s%s", name,
               status ? "refuses" : "reads", opencrg_ok ? "reads" : "refuses",
               status ? ": " : "", status ? diag.message : "");
+        if (opencrg_ok)
+            crgContactPointDelete(cp);
+        if (id > 0)
+            crgDataSetRelease(id);
         tirenv_crg_free(crg);
         return;
     }
-    crgDataSetModifiersApply(id);
-    const int cp = crgContactPointCreate(id);
     const size_t nu = tirenv_crg_rows(crg), nv = tirenv_crg_long_sections(crg);
     const double v_r = tirenv_crg_v(crg, 0), v_l = tirenv_crg_v(crg, nv - 1);
     const double du = tirenv_crg_u_increment(crg), len = tirenv_crg_u_end(crg) -
@@ -191,19 +195,10 @@ done:
     tirenv_crg_free(crg);
 }
 
-static int open_opencrg(const char *path, int *data_set)
-{
-    const int id = *data_set = crgLoaderReadFile(path);
-    if (id <= 0 || !crgCheck(id))
-        return -1;
-    crgDataSetModifiersApply(id);
-    return crgContactPointCreate(id);
-}
-
 static void same(const char *road, const char *copy)
 {
     int ida, idb;
-    const int a = open_opencrg(road, &ida), b = open_opencrg(copy, &idb);
+    const int a = opencrg_open(road, &ida), b = opencrg_open(copy, &idb);
     check(a >= 0 && b >= 0, "OpenCRG reads %s and tirenv's copy %s", base(road), base(copy));
     if (a < 0 || b < 0)
         return;

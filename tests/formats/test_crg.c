@@ -814,7 +814,13 @@ static void test_refpoint(void **state)
         double x[4], y[4], phi[4];
         assert_int_equal(tirenv_crg_refline(c, x, y, phi, NULL), TIRENV_OK);
         const double a = cases[k].phi_ref, vr = cases[k].v_ref;
-        /* The point (u_ref, v_ref) is at (x_ref, y_ref): the line runs through it at a. */
+        /* The point (u_ref, v_ref) is at (x_ref, y_ref): the line runs through it at a.
+         * Tolerances: positions within 15 m of the origin, each a rotation (cos, sin within
+         * 1 ulp) and a translation, a handful of roundings of 2e-15 m, so about 1e-14 m;
+         * 1e-12 m leaves a factor 100. The heading is REFPOINT_PHI plus the file's heading
+         * less its own, two roundings of angles below 1 rad: 2.2e-16, within 1e-15. Heights
+         * below 2 m, the file's plus one shift: a few roundings of 4.4e-16 m, within
+         * 1e-12 m. */
         for (size_t i = 0; i < 4; i++) {
             const double s_u = (double)i - cases[k].u_ref;
             assert_near(x[i], cases[k].x_ref + s_u * cos(a) + vr * sin(a), 1e-12, 0);

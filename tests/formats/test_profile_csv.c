@@ -9,18 +9,6 @@
 #include <string.h>
 #include <unistd.h>
 
-/* A temporary file per case, removed afterwards. */
-static void write_temp(char path[64], const char *text)
-{
-    snprintf(path, 64, "/tmp/tirenv_test_csv_XXXXXX");
-    const int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *fp = fdopen(fd, "w");
-    assert_non_null(fp);
-    assert_true(fputs(text, fp) >= 0);
-    assert_int_equal(fclose(fp), 0);
-}
-
 static void assert_vertices(const tirenv_profile *p, size_t n, const double x[],
                             const double z[])
 {
@@ -63,7 +51,8 @@ static void test_bom_and_blanks(void **state)
 {
     (void)state;
     char path[64];
-    write_temp(path, "\xEF\xBB\xBF x_m ,\tz_m \r\n\r\n 0.125 ,\t-0.0625\t\r\n   \r\n2.5,0.75");
+    tirenv_test_write_temp(path, "csv",
+                           "\xEF\xBB\xBF x_m ,\tz_m \r\n\r\n 0.125 ,\t-0.0625\t\r\n   \r\n2.5,0.75");
     tirenv_profile *p = NULL;
     tirenv_diag d;
     const int status = tirenv_profile_read_csv(path, &p, &d);
@@ -81,7 +70,7 @@ static void test_large_file(void **state)
 {
     (void)state;
     char path[64];
-    write_temp(path, "x_m,z_m\n0,0\n");
+    tirenv_test_write_temp(path, "csv", "x_m,z_m\n0,0\n");
     FILE *fp = fopen(path, "a");
     assert_non_null(fp);
     fputc('#', fp);
@@ -151,7 +140,7 @@ static void test_errors(void **state)
     for (size_t i = 0; i < sizeof csv_errors / sizeof csv_errors[0]; i++) {
         const csv_error_case *k = &csv_errors[i];
         char path[64];
-        write_temp(path, k->text);
+        tirenv_test_write_temp(path, "csv", k->text);
         tirenv_profile *p = (tirenv_profile *)&p; /* must come back NULL */
         tirenv_diag d;
         tirenv_diag_clear(&d);

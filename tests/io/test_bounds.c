@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Counts and lines from input, bounded (issue 27): tirenv_positions_count in constant time
- * for any doubles, 0 for what is no sweep; the capped line reader of src/io (text_line.h)
+ * for any doubles, 0 for what is no sweep; the capped line reader of src/io (io.h)
  * at, just past and far past its cap. */
 #include "testutil.h"
 
@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/text_line.h"
+#include "io/io.h"
 #include "tirenv/stream.h"
 
 /* The count as it was (loops unbounded), for inputs where it terminated: the new one must

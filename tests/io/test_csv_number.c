@@ -2,7 +2,7 @@
  * write (%.9g, %.17g, %.6f, fixed decimals), long digit strings, exponents beyond the fast
  * path, signed zeros, and text strtod refuses. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
-#include "io/csv_line.h"
+#include "io/io.h"
 
 #include <math.h>
 #include <stdio.h>

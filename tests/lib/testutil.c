@@ -8,6 +8,8 @@
 #include <string.h>
 #include <unistd.h>
 #include "tirenv/rng.h"
+#include "tirenv/study.h"
+#include "tirenv/xn.h"
 
 #include "tirenv/tir.h"
 
@@ -163,4 +165,65 @@ void tirenv_test_expect_diag(size_t i, int status, const tirenv_diag *d, int wan
     assert_int_equal(d->column, column);
     assert_string_equal(d->field, field);
     assert_non_null(strstr(d->message, says));
+}
+
+void tirenv_test_write_temp(char path[64], const char *what, const char *text)
+{
+    snprintf(path, 64, "/tmp/tirenv_test_%s_XXXXXX", what);
+    const int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *fp = fdopen(fd, "w");
+    assert_non_null(fp);
+    assert_true(fputs(text, fp) >= 0);
+    assert_int_equal(fclose(fp), 0);
+}
+
+tirenv_profile *tirenv_test_flat_ground(void)
+{
+    const double zero = 0;
+    tirenv_profile *p = tirenv_profile_alloc(1, &zero, &zero);
+    assert_non_null(p);
+    return p;
+}
+
+int tirenv_test_ring_dfdz(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                          double dz, int *belt)
+{
+    double fx, F, dF, Fp, Fm, F0;
+    assert_int_equal(tirenv_ring_forces(r, p, x, z, &fx, &F, &dF, NULL, NULL), 0);
+    *belt = tirenv_ring_belt_contacts(r) > 0;
+    if (F < 10)
+        return 0;
+    tirenv_ring_forces(r, p, x, z + dz, &fx, &Fp, NULL, NULL, NULL);
+    tirenv_ring_forces(r, p, x, z - dz, &fx, &Fm, NULL, NULL, NULL);
+    tirenv_ring_forces(r, p, x, z, &fx, &F0, NULL, NULL, NULL);
+    if (fabs((Fp - F0) - (F0 - Fm)) > 1e-6 * fabs(dF) * dz)
+        return 0; /* a kink or jump within dz: one-sided differences disagree */
+    assert_near(dF, (Fp - Fm) / (2 * dz), 0, 1e-6);
+    return 1;
+}
+
+const double tirenv_test_fit_design[6][3] = {{0.28, 0.10, 0.05},  {0.33, 0.30, 0.075},
+                                             {0.38, 0.15, 0.10},  {0.43, 0.05, 0.025},
+                                             {0.33, 0.20, 0.05},  {0.38, 0.30, 0.025}};
+
+void tirenv_test_model_case(tirenv_model *m, double R0, const double design[3],
+                            const char *name, size_t n, tirenv_case *c)
+{
+    memset(c, 0, sizeof *c);
+    snprintf(c->name, sizeof c->name, "%s", name);
+    c->split = TIRENV_SPLIT_TRAIN;
+    c->contact_length = design[0];
+    c->L = design[1];
+    c->H = design[2];
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_load_for_contact_length(m, c->contact_length, &c->load,
+                                                          &diag), TIRENV_OK);
+    assert_int_equal(tirenv_curve_alloc(&c->curve, n), TIRENV_OK);
+    const double x_0 = tirenv_xN_origin(R0, c->contact_length, c->L, c->H);
+    for (size_t j = 0; j < n; ++j) {
+        c->curve.x_N[j] = -0.2 + 1.2 * (double)j / (double)(n - 1);
+        c->curve.x[j] = x_0 * (1 - c->curve.x_N[j]);
+    }
+    assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
 }

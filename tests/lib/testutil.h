@@ -9,8 +9,10 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include "tirenv/dataset.h"
 #include "tirenv/model.h"
 #include "tirenv/nn.h"
+#include "tirenv/ring.h"
 #include "tirenv/tire.h"
 
 /* Fails unless |actual - expected| <= abs_tol + rel_tol*|expected|; prints both values. */
@@ -81,5 +83,30 @@ const char *tirenv_test_path(const tirenv_test_dir *d, const char *name, char bu
 void tirenv_test_write_text(const char *path, const char *text);
 /* Entries of the directory whose name contains the string. */
 size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containing);
+
+/* Writes text to a new file /tmp/tirenv_test_<what>_XXXXXX (mkstemp) whose name goes into
+ * path, asserting success; the caller removes it. */
+void tirenv_test_write_temp(char path[64], const char *what, const char *text);
+
+/* Level ground at height 0 (one vertex at x = 0); free it with tirenv_profile_free. */
+tirenv_profile *tirenv_test_flat_ground(void);
+
+/* Ring r's dF_z/dz over p at (x, z) (m) against central differences of step dz (m). Skipped
+ * (returns 0) where F_z < 10 N or where the one-sided differences disagree by more than
+ * 1e-6 |dF_z/dz| dz (a kink or jump within dz: a contact state changes); else asserts
+ * agreement to 1e-6 of the difference quotient and returns 1, with *belt set to whether the
+ * belt layer carried at z. */
+int tirenv_test_ring_dfdz(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                          double dz, int *belt);
+
+/* The cleats of the fit tests' synthetic data sets: {contact length, L, H}, m. */
+extern const double tirenv_test_fit_design[6][3];
+
+/* Case c of a synthetic data set, named name, in the train split: the cleat design[] =
+ * {contact length, L, H} (m) at the load m gives that contact length, and m's curve over it
+ * on n x_N points from -0.2 to 1 (as the data sets' grid; x from tirenv_xN_origin for a tire
+ * of radius R0, m). c->curve is allocated: tirenv_curve_free it. */
+void tirenv_test_model_case(tirenv_model *m, double R0, const double design[3],
+                            const char *name, size_t n, tirenv_case *c);
 
 #endif

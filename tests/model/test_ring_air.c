@@ -109,8 +109,7 @@ static double stiffness_at(const tirenv_tire *t, double load)
 {
     tirenv_ring *r = tirenv_ring_alloc(t->springs.R0, &t->ring);
     assert_non_null(r);
-    const double zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    tirenv_profile *flat = tirenv_test_flat_ground();
     double lo = 0.5 * t->springs.R0, hi = t->springs.R0, fx, fz, k = 0;
     for (int it = 0; it < 200 && hi - lo > 1e-13; ++it) {
         const double z = 0.5 * (lo + hi);

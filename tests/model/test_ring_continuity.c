@@ -109,8 +109,7 @@ static void test_flat_is_the_rays(void **state)
     tirenv_ring *smooth = tirenv_ring_alloc(t.springs.R0, &t.ring);
     t.ring.contact = TIRENV_RING_RAYS;
     tirenv_ring *rays = tirenv_ring_alloc(t.springs.R0, &t.ring);
-    const double zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    tirenv_profile *flat = tirenv_test_flat_ground();
     for (double z = 0.60; z < 0.68; z += 0.00731) {
         double fx1, fz1, k1, fx2, fz2, k2;
         assert_int_equal(tirenv_ring_forces(smooth, flat, 0, z, &fx1, &fz1, &k1, NULL,

@@ -53,8 +53,8 @@ static void sweep(const tirenv_tire *t, const tirenv_profile *p, double l_c, dou
 static void test_flat_closed_form(void **state)
 {
     (void)state;
-    const double R0 = 0.6837, c_r = 1.583e6, zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    const double R0 = 0.6837, c_r = 1.583e6;
+    tirenv_profile *flat = tirenv_test_flat_ground();
     const double zs[] = {0.6711, 0.6502, 0.6234};
     for (size_t iz = 0; iz < 3; ++iz) {
         const double z = zs[iz], a = acos(z / R0);

@@ -373,8 +373,7 @@ static void test_needle_refused(void **state)
     tirenv_springs_refusal(s, &diag);
     assert_non_null(strstr(diag.message, "1e-09 m wide"));
     /* Cleared by the next evaluation that succeeds. */
-    const double zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    tirenv_profile *flat = tirenv_test_flat_ground();
     assert_non_null(flat);
     assert_int_equal(tirenv_springs_forces(s, flat, 0.0, 0.66, &fx, &fz, &dfz, &c, NULL), 0);
     tirenv_springs_refusal(s, &diag);

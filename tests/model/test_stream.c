@@ -34,17 +34,6 @@ static void write_road(char path[64], double length, size_t *n_out)
     *n_out = n;
 }
 
-static void write_text(char path[64], const char *text)
-{
-    snprintf(path, 64, "/tmp/tirenv_test_stream_XXXXXX");
-    const int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *fp = fdopen(fd, "w");
-    assert_non_null(fp);
-    assert_true(fputs(text, fp) >= 0);
-    assert_int_equal(fclose(fp), 0);
-}
-
 typedef tirenv_test_points collect;  /* the sink of the streamed points */
 
 static int stream_file(tirenv_model *m, const char *path, double x_from, double x_to,
@@ -216,7 +205,7 @@ static void test_malformed(void **state)
     tirenv_model *m = tirenv_model_alloc(tirenv_model_rigid, &tire);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char path[64];
-        write_text(path, cases[i].text);
+        tirenv_test_write_temp(path, "stream", cases[i].text);
         collect c = {0};
         tirenv_stream_stats st;
         tirenv_diag d;

@@ -16,9 +16,6 @@ static void make_dataset_of(const tirenv_model_type *type, tirenv_dataset *ds,
                             tirenv_case cases[], const tirenv_tire *truth, double sigma,
                             unsigned long seed)
 {
-    static const double design[N_CASES][3] = {{0.28, 0.10, 0.05}, {0.33, 0.30, 0.075},
-                                              {0.38, 0.15, 0.10}, {0.43, 0.05, 0.025},
-                                              {0.33, 0.20, 0.05}, {0.38, 0.30, 0.025}};
     tirenv_rng *rng = tirenv_rng_alloc(0);
     tirenv_rng_seed(rng, seed);
     tirenv_model *m = tirenv_model_alloc(type, truth);
@@ -27,22 +24,10 @@ static void make_dataset_of(const tirenv_model_type *type, tirenv_dataset *ds,
     ds->cases = cases;
     for (size_t i = 0; i < N_CASES; ++i) {
         tirenv_case *c = &cases[i];
-        memset(c, 0, sizeof *c);
-        snprintf(c->name, sizeof c->name, "T%zu", i);
-        c->split = TIRENV_SPLIT_TRAIN;
-        c->contact_length = design[i][0];
-        c->L = design[i][1];
-        c->H = design[i][2];
-        tirenv_diag diag;
-        assert_int_equal(tirenv_model_load_for_contact_length(m, c->contact_length, &c->load,
-                                                              &diag), TIRENV_OK);
-        assert_int_equal(tirenv_curve_alloc(&c->curve, N_POINTS), TIRENV_OK);
-        const double x_0 = tirenv_xN_origin(truth->springs.R0, c->contact_length, c->L, c->H);
-        for (size_t j = 0; j < N_POINTS; ++j) {
-            c->curve.x_N[j] = -0.2 + 1.2 * (double)j / (N_POINTS - 1);
-            c->curve.x[j] = x_0 * (1 - c->curve.x_N[j]);
-        }
-        assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
+        char name[16];
+        snprintf(name, sizeof name, "T%zu", i);
+        tirenv_test_model_case(m, truth->springs.R0, tirenv_test_fit_design[i], name, N_POINTS,
+                               c);
         for (size_t j = 0; j < N_POINTS; ++j)
             c->curve.h[j] += tirenv_rng_gaussian(rng, sigma);
     }

@@ -16,31 +16,16 @@ enum { N_CASES = 3, N_POINTS = 31 };
 static void make_ring_dataset(tirenv_dataset *ds, tirenv_case cases[],
                               const tirenv_tire *truth)
 {
-    static const double design[N_CASES][3] = {{0.28, 0.10, 0.05}, {0.33, 0.30, 0.075},
-                                              {0.38, 0.15, 0.10}};
     tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, truth);
     assert_non_null(m);
     memset(ds, 0, sizeof *ds);
     ds->n = N_CASES;
     ds->cases = cases;
     for (size_t i = 0; i < N_CASES; ++i) {
-        tirenv_case *c = &cases[i];
-        memset(c, 0, sizeof *c);
-        snprintf(c->name, sizeof c->name, "K%zu", i);
-        c->split = TIRENV_SPLIT_TRAIN;
-        c->contact_length = design[i][0];
-        c->L = design[i][1];
-        c->H = design[i][2];
-        tirenv_diag diag;
-        assert_int_equal(tirenv_model_load_for_contact_length(m, c->contact_length, &c->load,
-                                                              &diag), TIRENV_OK);
-        assert_int_equal(tirenv_curve_alloc(&c->curve, N_POINTS), TIRENV_OK);
-        const double x_0 = tirenv_xN_origin(truth->springs.R0, c->contact_length, c->L, c->H);
-        for (size_t j = 0; j < N_POINTS; ++j) {
-            c->curve.x_N[j] = -0.2 + 1.2 * (double)j / (N_POINTS - 1);
-            c->curve.x[j] = x_0 * (1 - c->curve.x_N[j]);
-        }
-        assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
+        char name[16];
+        snprintf(name, sizeof name, "K%zu", i);
+        tirenv_test_model_case(m, truth->springs.R0, tirenv_test_fit_design[i], name, N_POINTS,
+                               &cases[i]);
     }
     tirenv_model_free(m);
 }
@@ -49,6 +34,22 @@ static void free_dataset(tirenv_case cases[])
 {
     for (size_t i = 0; i < N_CASES; ++i)
         tirenv_curve_free(&cases[i].curve);
+}
+
+/* tirenv fit --model ring from the start tire (the result written into it) over the truth's
+ * noise-free curves: fit's status, its report and diag. */
+static int fit_ring(const tirenv_tire *truth, tirenv_tire *tire, tirenv_fit_report *rep,
+                    tirenv_diag *diag)
+{
+    static tirenv_case cases[N_CASES];
+    tirenv_dataset ds;
+    make_ring_dataset(&ds, cases, truth);
+    tirenv_fit_settings s = tirenv_fit_default();
+    s.type = tirenv_model_ring;
+    tirenv_diag_clear(diag);
+    const int status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, tire, rep, diag);
+    free_dataset(cases);
+    return status;
 }
 
 static tirenv_tire coarse_truth(void)
@@ -66,18 +67,12 @@ static void test_ring_recovers_foundation_and_tread(void **state)
 {
     (void)state;
     const tirenv_tire truth = coarse_truth();
-    static tirenv_case cases[N_CASES];
-    tirenv_dataset ds;
-    make_ring_dataset(&ds, cases, &truth);
     tirenv_tire tire = truth;
     tire.ring.k_f = 1.3 * truth.ring.k_f;
     tire.ring.k_t = 0.7 * truth.ring.k_t;
-    tirenv_fit_settings s = tirenv_fit_default();
-    s.type = tirenv_model_ring;
     tirenv_fit_report rep;
     tirenv_diag diag;
-    tirenv_diag_clear(&diag);
-    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag), TIRENV_OK);
+    assert_int_equal(fit_ring(&truth, &tire, &rep, &diag), TIRENV_OK);
     print_message("ring: k_f %.12g (true %.6g), k_t %.12g (true %.6g), rms %.3g mm, %zu "
                   "iterations, stopped by %s\n", rep.value[0], truth.ring.k_f, rep.value[1],
                   truth.ring.k_t, 1e3 * rep.rms, rep.iterations, rep.stop);
@@ -89,7 +84,6 @@ static void test_ring_recovers_foundation_and_tread(void **state)
     assert_true(rep.rms < 1e-9);
     assert_near(tire.ring.k_f, rep.value[0], 0, 0);  /* written into the tire */
     assert_true(tire.ring.EI == truth.ring.EI && tire.ring.T == truth.ring.T);
-    free_dataset(cases);
 }
 
 /* A start the model refuses (a belt whose pretension buckles it on its foundation) is an
@@ -98,22 +92,14 @@ static void test_refuses_unphysical_start(void **state)
 {
     (void)state;
     const tirenv_tire truth = coarse_truth();
-    static tirenv_case cases[N_CASES];
-    tirenv_dataset ds;
-    make_ring_dataset(&ds, cases, &truth);
     tirenv_tire tire = truth;
     tire.ring.T = 1e7;
     const tirenv_tire before = tire;
-    tirenv_fit_settings s = tirenv_fit_default();
-    s.type = tirenv_model_ring;
     tirenv_fit_report rep;
     tirenv_diag diag;
-    tirenv_diag_clear(&diag);
-    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag),
-                     TIRENV_EINVAL);
+    assert_int_equal(fit_ring(&truth, &tire, &rep, &diag), TIRENV_EINVAL);
     assert_true(diag.field[0] != '\0');
     assert_memory_equal(&tire.ring, &before.ring, sizeof tire.ring);
-    free_dataset(cases);
 }
 
 int main(void)
