@@ -61,8 +61,14 @@ static double energy(const tirenv_ring *r, const double (*q4)[4], const double w
     const size_t n = r->n;
     const double t_r = r->par.t_r, R = r->R;
     double E = 0;
+    const double *s = tirenv_ring__belt_stencil(r->belt);
     for (size_t i = 0; i < n; ++i) {
-        const double Sw = tirenv_ring__belt_force(r, q4, w, i);
+        /* Away from the window's ends S is the stencil: tirenv_ring__belt_force's sum, in
+         * its order, without its look-ups. */
+        const double Sw = i >= 2 && i + 2 < n ? s[0] * w[i] + s[2] * w[i - 2] +
+                                                    s[1] * w[i - 1] + s[1] * w[i + 1] +
+                                                    s[2] * w[i + 2]
+                                              : tirenv_ring__belt_force(r, q4, w, i);
         E += 0.5 * w[i] * Sw;
         if (grad)
             grad[i] = Sw;
@@ -155,6 +161,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         r->pts[k].st = 255; /* none yet */
     set_states(r, w);
     size_t it = 0;
+    int factored = 0; /* the factor in r->A is that of the final states */
     for (; it < SMOOTH_MAX_ITER; ++it) {
         assemble(r, q4, wn);
         if (tirenv_ring__band_factor(&r->A))
@@ -166,8 +173,10 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         for (size_t i = 0; i < n; ++i)
             step = fmax(step, fabs(wn[i] - w[i]));
         /* The states at the solution: unchanged, it is the minimum. */
-        if (set_states(r, wn) == 0 || step <= smooth_step_tol) {
+        const size_t changed = set_states(r, wn);
+        if (changed == 0 || step <= smooth_step_tol) {
             memcpy(w, wn, n * sizeof *w);
+            factored = changed == 0;
             break;
         }
         /* Else a step towards it that lowers E enough. */
@@ -198,12 +207,15 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the continuous tread contact of %zu points on %zu nodes did not "
                             "settle in %d Newton steps", r->n_pts, n, SMOOTH_MAX_ITER);
-    /* The factor of the final states, for dF_z/dz. */
-    assemble(r, q4, wt);
-    if (tirenv_ring__band_factor(&r->A))
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the Cholesky factorisation of the %zu-node banded contact system "
-                            "broke down (not numerically positive definite)", n);
+    /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
+     * change with it: the same matrix). */
+    if (dfz_dz && !factored) {
+        assemble(r, q4, wt);
+        if (tirenv_ring__band_factor(&r->A))
+            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                                "the Cholesky factorisation of the %zu-node banded contact "
+                                "system broke down (not numerically positive definite)", n);
+    }
     double sum_c = 0, sum_s = 0;
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->w[j] = 0;
