@@ -527,24 +527,53 @@ void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[
     }
 }
 
-/* The node states the next contact solve starts from. */
+/* What the next contact solve starts from: the node states of the rays' contact, and the
+ * continuous contact's w (and the shear-coupled tread's u) over the last window, zero
+ * elsewhere. Without w a restored ring would start Newton elsewhere; its answer is the same
+ * minimum, but where a line search stalls only to round-off. */
+static size_t warm_fields(const tirenv_ring *r)
+{
+    return r->par.contact != TIRENV_RING_CONTINUOUS ? 0 : r->tread ? 2 : 1;
+}
+
 size_t tirenv_ring__state_size(const tirenv_ring *r)
 {
-    return 2 * sizeof(size_t) + r->M;
+    return 2 * sizeof(size_t) + r->M + warm_fields(r) * r->M * sizeof(double);
 }
 
 void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf)
 {
+    const size_t M = r->M;
     memcpy(buf, &r->warm_lo, sizeof r->warm_lo);
     memcpy(buf + sizeof r->warm_lo, &r->warm_n, sizeof r->warm_n);
-    memcpy(buf + 2 * sizeof(size_t), r->warm, r->M);
+    buf += 2 * sizeof(size_t);
+    memcpy(buf, r->warm, M);
+    buf += M;
+    if (warm_fields(r) >= 1)
+        memcpy(buf, r->w, M * sizeof *r->w);
+    if (warm_fields(r) == 2)
+        memcpy(buf + M * sizeof *r->w, tirenv_ring__tread_u(r->tread), M * sizeof *r->w);
 }
 
 void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
 {
+    const size_t M = r->M;
     memcpy(&r->warm_lo, buf, sizeof r->warm_lo);
     memcpy(&r->warm_n, buf + sizeof r->warm_lo, sizeof r->warm_n);
-    memcpy(r->warm, buf + 2 * sizeof(size_t), r->M);
-    if (!(r->warm_lo <= r->M && r->warm_n <= r->M - r->warm_lo))
+    buf += 2 * sizeof(size_t);
+    memcpy(r->warm, buf, M);
+    buf += M;
+    if (warm_fields(r) >= 1)
+        memcpy(r->w, buf, M * sizeof *r->w);
+    if (warm_fields(r) == 2)
+        memcpy(tirenv_ring__tread_u(r->tread), buf + M * sizeof *r->w, M * sizeof *r->w);
+    if (!(r->warm_lo <= M && r->warm_n <= M - r->warm_lo)) {
         r->warm_lo = r->warm_n = 0;
+        memset(r->warm, FREE, M);
+        for (size_t j = 0; j < M; ++j)
+            r->w[j] = 0;
+        if (r->tread)
+            for (size_t j = 0; j < M; ++j)
+                tirenv_ring__tread_u(r->tread)[j] = 0;
+    }
 }

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 #include "model/ring_impl.h"
@@ -319,6 +320,72 @@ static void test_lugs(void **state)
     tirenv_model_free(lugged);
 }
 
+/* The model's state (tirenv_model_state_save / _restore) holds the ring's warm start, the
+ * belt's w and the tread's u included: evaluations after a restore repeat those after the save
+ * bit for bit, iterations included, with the Winkler and the shear-coupled tread. The positions
+ * are 1.7 mm apart, so that each solve starts from the last one's window; a restore after
+ * further positions used to start from their w and differ by round-off (about 4e-11 m). */
+static void test_state_restores_bits(void **state)
+{
+    (void)state;
+    tirenv_profile *p = tirenv_profile_cleat(0.1, 0.1);
+    for (int c = 0; c < 8; ++c) {
+        const int shear = c & 1;
+        const double x0 = case_x[c / 2];
+        tirenv_tire t = tirenv_tire_default();
+        t.ring.G_t = shear ? G_ON : 0;
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+        assert_non_null(m);
+        tirenv_diag diag;
+        assert_int_equal(tirenv_model_set(m, p, case_load[0], &diag), TIRENV_OK);
+        enum { BEFORE = 5, AFTER = 4 };
+        tirenv_point pt, first[AFTER], again[AFTER];
+        for (size_t k = 0; k < BEFORE; ++k)
+            assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)k, &pt, &diag),
+                             TIRENV_OK);
+        const size_t size = tirenv_model_state_size(m);
+        unsigned char *buf = malloc(size);
+        assert_non_null(buf);
+        assert_int_equal(tirenv_model_state_save(m, buf, size, &diag), TIRENV_OK);
+        for (size_t k = 0; k < AFTER; ++k)
+            assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)(BEFORE + k),
+                                               &first[k], &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_state_restore(m, buf, size, &diag), TIRENV_OK);
+        for (size_t k = 0; k < AFTER; ++k) {
+            assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)(BEFORE + k),
+                                               &again[k], &diag), TIRENV_OK);
+            if (memcmp(&first[k].z, &again[k].z, sizeof first[k].z) != 0 ||
+                memcmp(&first[k].fx, &again[k].fx, sizeof first[k].fx) != 0 ||
+                memcmp(&first[k].fz, &again[k].fz, sizeof first[k].fz) != 0 ||
+                first[k].iterations != again[k].iterations)
+                fail_msg("TREAD_SHEAR %g: position %zu after the restore: z %.17g against "
+                         "%.17g, fx %.17g against %.17g, iterations %zu against %zu",
+                         t.ring.G_t, BEFORE + k, again[k].z, first[k].z, again[k].fx,
+                         first[k].fx, again[k].iterations, first[k].iterations);
+        }
+        /* A twin that has evaluated nothing, given the state, goes on the same way. */
+        tirenv_model *twin = tirenv_model_alloc(tirenv_model_ring, &t);
+        assert_non_null(twin);
+        assert_int_equal(tirenv_model_set(twin, p, case_load[0], &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_state_restore(twin, buf, size, &diag), TIRENV_OK);
+        for (size_t k = 0; k < AFTER; ++k) {
+            assert_int_equal(tirenv_model_eval(twin, x0 + 0.0017 * (double)(BEFORE + k),
+                                               &again[k], &diag), TIRENV_OK);
+            if (memcmp(&first[k].z, &again[k].z, sizeof first[k].z) != 0 ||
+                memcmp(&first[k].fx, &again[k].fx, sizeof first[k].fx) != 0 ||
+                first[k].iterations != again[k].iterations)
+                fail_msg("TREAD_SHEAR %g: position %zu in the twin: z %.17g against %.17g, "
+                         "fx %.17g against %.17g, iterations %zu against %zu", t.ring.G_t,
+                         BEFORE + k, again[k].z, first[k].z, again[k].fx, first[k].fx,
+                         again[k].iterations, first[k].iterations);
+        }
+        tirenv_model_free(twin);
+        free(buf);
+        tirenv_model_free(m);
+    }
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -328,6 +395,7 @@ int main(void)
         cmocka_unit_test(test_warm_starts_agree),
         cmocka_unit_test(test_derivative),
         cmocka_unit_test(test_lugs),
+        cmocka_unit_test(test_state_restores_bits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
