@@ -49,7 +49,9 @@ struct tirenv_ring_tread {
     double k_sh;        /* shear between neighbouring nodes, k_s / (R dtheta), N/m */
     double k_g;         /* contact layer per unit belt length, N/m^2 */
     double kap0;        /* the tread's compression k_c R dtheta of a node without lugs, N/m */
-    int lugs;           /* kap differs between nodes: no cached ends */
+    int lugs;           /* kap differs between nodes: the ends cached for one x, lo, n */
+    double lug_x;       /* the centre's abscissa of the cached lugged ends (m) */
+    size_t lug_lo, lug_n; /* their window; lug_n = 0: none cached */
     double *kap;        /* per node (global): compression stiffness k_c R dtheta, N/m */
     double *u;          /* per node (global): the tread surface's displacement, m */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
@@ -330,12 +332,19 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
             Q[v][u] = Q[u][v] = 0.5 * (Q[v][u] + Q[u][v]);
 }
 
-static const double (*window_end(tirenv_ring *r))[NB]
+static const double (*window_end(tirenv_ring *r, double x_c))[NB]
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n;
     if (T->lugs) {
-        compute_end(T, r->lo, n, T->end[0]);
+        /* The lugs' stiffness turns with x: the exterior's, so its ends, depend on x, lo
+         * and n, which stay the same over a position's evaluations. */
+        if (!(T->lug_n == n && T->lug_lo == r->lo && T->lug_x == x_c)) {
+            compute_end(T, r->lo, n, T->end[0]);
+            T->lug_x = x_c;
+            T->lug_lo = r->lo;
+            T->lug_n = n;
+        }
         return (const double(*)[NB])T->end[0];
     }
     if (!T->have[n]) {
@@ -520,7 +529,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                             "the contact window of %zu nodes leaves too few of the %zu outside "
                             "it", n, r->M);
     set_kappa(r, x_c);
-    const double(*Q)[NB] = window_end(r);
+    const double(*Q)[NB] = window_end(r, x_c);
     double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
     /* From the last evaluation's belt and tread where this window overlaps its window. */
     for (size_t i = 0; i < n; ++i) {
