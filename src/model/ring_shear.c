@@ -18,19 +18,15 @@
  * interleaved (w_0, u_0, w_1, u_1, ...), so K is banded with bandwidth 4; the nodes outside the
  * window (no ground) condense out exactly into a 6 x 6 correction on the window's ends (their
  * belt's two end nodes and tread's one), computed once per window length from six banded solves
- * of the exterior. The solve is Newton's method with a line search, as ring_smooth.c. */
+ * of the exterior. The solve is Newton's method with a line search, the driver ring_smooth.c
+ * shares (ring_newton.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/cholesky.h"
 #include "model/ring_impl.h"
 
-/* k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
-static const double RING_BELT_LAYER = 1e3;
-enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, SHEAR_POLISH = 8, BAND_P = 4, TAIL = 4,
-       NB = 6 };
-static const double shear_sigma = 1e-4;    /* Armijo's sufficient decrease */
-static const double shear_step_tol = 1e-12; /* m: as ring_smooth.c */
-static const double shear_stall_tol = 1e-6; /* m: as ring_smooth.c */
+enum { BAND_P = 4, TAIL = 4, NB = 6 };
 
 /* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t rows are dense
  * (the window's ends coupled through the exterior), and its Cholesky factor in place: L[5 i + k]
@@ -132,21 +128,8 @@ static int band_factor(tband *A)
             for (size_t b = 0; b <= a; ++b)
                 A->T[a][b] -= A->B[a][i] * A->B[b][i];
     }
-    for (size_t a = 0; a < t; ++a) {
-        for (size_t b = 0; b < a; ++b) {
-            double v = A->T[a][b];
-            for (size_t c = 0; c < b; ++c)
-                v -= A->T[a][c] * A->T[b][c];
-            A->T[a][b] = v / A->T[b][b];
-        }
-        double d = A->T[a][a];
-        for (size_t c = 0; c < a; ++c)
-            d -= A->T[a][c] * A->T[a][c];
-        if (!(d > 0))
-            return 1;
-        A->T[a][a] = sqrt(d);
-    }
-    return 0;
+    /* The dense tail, Schur complement of the band: src/core's Cholesky. */
+    return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). */
@@ -173,17 +156,10 @@ static void band_solve(const tband *A, double x[])
         for (size_t a = 0; a < t; ++a)
             y[a] -= A->B[a][i] * x[i];
     }
-    for (size_t a = 0; a < t; ++a) {
-        for (size_t b = 0; b < a; ++b)
-            y[a] -= A->T[a][b] * y[b];
-        y[a] /= A->T[a][a];
-    }
-    for (size_t a = t; a-- > 0;) {
-        for (size_t b = a + 1; b < t; ++b)
-            y[a] -= A->T[b][a] * y[b];
-        y[a] /= A->T[a][a];
+    if (t > 0)
+        tirenv_core__cholesky_solve(&A->T[0][0], t, TAIL, y, y);
+    for (size_t a = 0; a < t; ++a)
         x[m + a] = y[a];
-    }
     for (size_t i = m; i-- > 0;) {
         double v = x[i];
         if (i + BAND_P < m) {
@@ -438,7 +414,7 @@ static double energy(tirenv_ring *r, const double (*Q)[NB], const double x[], do
             continue;
         const size_t i = q->j - r->lo;
         const double eg = q->d - at_u(r, q, x), eb = q->d - at_w(r, q, x) - t_r;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         if (eg > 0) {
             E += q->omega * R * 0.5 * T->k_g * eg * eg;
             if (grad) {
@@ -501,7 +477,7 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             rhs[2 * i + 3] += c * q->d * n1;
         }
         if (q->st & 2) {
-            const double c = q->omega * R * RING_BELT_LAYER * q->k_t;
+            const double c = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
             band_add(A, 2 * i, 2 * i, c * n0 * n0);
             band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
             band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
@@ -509,6 +485,20 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             rhs[2 * i + 2] += c * (q->d - t_r) * n1;
         }
     }
+}
+
+/* The driver's callbacks (ring_newton.c). */
+static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
+{
+    assemble(r, (const double(*)[NB])K, rhs);
+    return band_factor(&r->tread->win);
+}
+
+static void solve_cb(tirenv_ring *r, double x[]) { band_solve(&r->tread->win, x); }
+
+static double energy_cb(tirenv_ring *r, const void *K, const double x[], double grad[])
+{
+    return energy(r, (const double(*)[NB])K, x, grad);
 }
 
 static int broke_down(size_t n, tirenv_diag *diag)
@@ -538,62 +528,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         x[2 * i] = warm ? r->w[j] : 0;
         x[2 * i + 1] = warm ? T->u[j] : 0;
     }
-    for (size_t k = 0; k < r->n_pts; ++k)
-        r->pts[k].st = 255;
-    set_states(r, x);
-    size_t it = 0, polish = 0; /* full Newton steps taken after the line search stalled */
-    int factored = 0; /* the factor in T->win is that of the final states */
-    for (; it < SHEAR_MAX_ITER; ++it) {
-        assemble(r, Q, xn);
-        if (band_factor(&T->win))
-            return broke_down(n, diag);
-        band_solve(&T->win, xn);
-        double step = 0;
-        for (size_t i = 0; i < N; ++i)
-            step = fmax(step, fabs(xn[i] - x[i]));
-        const size_t changed = set_states(r, xn);
-        if (changed == 0 || step <= shear_step_tol) {
-            memcpy(x, xn, N * sizeof *x);
-            factored = changed == 0;
-            break;
-        }
-        /* After a stall, full Newton steps: E's round-off hides their decrease, but the states
-         * settle within a few (a consistent set of states is the unique minimiser, whatever
-         * the start: tracks of equal copies agree to round-off); if a point keeps flipping,
-         * accept the Newton point as the stall did. */
-        if (polish > 0) {
-            memcpy(x, xn, N * sizeof *x);
-            if (++polish > SHEAR_POLISH)
-                break;
-            continue;
-        }
-        const double E0 = energy(r, Q, x, g);
-        double slope = 0;
-        for (size_t i = 0; i < N; ++i)
-            slope += g[i] * (xn[i] - x[i]);
-        double alpha = 1;
-        size_t b = 0;
-        for (; b < SHEAR_BACKTRACK; ++b, alpha *= 0.5) {
-            for (size_t i = 0; i < N; ++i)
-                xt[i] = x[i] + alpha * (xn[i] - x[i]);
-            if (energy(r, Q, xt, NULL) <= E0 + shear_sigma * alpha * slope)
-                break;
-        }
-        if (b == SHEAR_BACKTRACK && step <= shear_stall_tol) {
-            /* No step of at least 2^-20 of the way lowers E: x is the minimum to E's round-off,
-             * the Newton point differs from it by a few points at zero compression flipping.
-             * Take it, with its states, and polish (above). */
-            memcpy(x, xn, N * sizeof *x);
-            polish = 1;
-            continue;
-        }
-        memcpy(x, xt, N * sizeof *x);
-        set_states(r, x);
-    }
-    if (it == SHEAR_MAX_ITER)
+    const tirenv_ring_newton nw = {N, Q, factor_cb, solve_cb, set_states, energy_cb};
+    int factored;
+    const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
+    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
+        return broke_down(n, diag);
+    if (st == TIRENV_RING_NEWTON_NOCONV)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the shear-coupled tread contact of %zu points on %zu nodes did not "
-                            "settle in %d Newton steps", r->n_pts, n, SHEAR_MAX_ITER);
+                            "settle in %d Newton steps", r->n_pts, n,
+                            TIRENV_RING_NEWTON_MAX_ITER);
     /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
@@ -625,7 +569,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         if (q->st == 0)
             continue;
         const size_t i = q->j - lo;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double fg = 0, fb = 0, cu = 0, cw = 0;
         if (q->st & 1) {
             fg = q->omega * R * T->k_g * q->e;
@@ -660,7 +604,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
             if (q->st & 1)
                 df += q->omega * R * T->k_g * (q->dd - at_u(r, q, xt));
             if (q->st & 2)
-                df += q->omega * R * RING_BELT_LAYER * q->k_t * (q->dd - at_w(r, q, xt));
+                df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->dd - at_w(r, q, xt));
             dF += df * q->cs;
         }
         *dfz_dz = dF;

@@ -7,28 +7,15 @@
  *     psi(e) = 1/2 k_t max(0, e)^2 + 1/2 k_b max(0, e - t_r)^2,
  * the trapezoid rule of the tread's energy over the pieces of ring_ground.c. The second term of
  * psi is the belt and carcass beneath the tread: where the ground has compressed the tread
- * through its thickness t_r it meets them, k_b = RING_BELT_LAYER times stiffer than the tread,
+ * through its thickness t_r it meets them, k_b = TIRENV_RING_BELT_LAYER times stiffer than the tread,
  * so nothing cuts through the belt (a compression beyond t_r costs a thousand times more).
  * E is convex and piecewise quadratic, so Newton's method on it, with the pieces (the points'
  * states: free, tread, tread and belt) taken from the current w, ends exactly, when a step
- * does not change them; a backtracking line search on E makes it converge from anywhere. The
- * hub force is the sum of the points' radial forces f_q = omega_q R psi'(e_q). */
+ * does not change them; a backtracking line search on E makes it converge from anywhere
+ * (ring_newton.c, the driver both treads share). The hub force is the sum of the points' radial forces f_q = omega_q R psi'(e_q). */
 #include <math.h>
 #include <string.h>
 #include "model/ring_impl.h"
-
-/* k_b / k_t: the belt and carcass under the tread, in compression (docs/models.md 5.3). */
-static const double RING_BELT_LAYER = 1e3;
-enum { SMOOTH_MAX_ITER = 200, SMOOTH_BACKTRACK = 20 };
-static const double smooth_sigma = 1e-4; /* Armijo's sufficient decrease */
-/* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
- * point whose compression is zero to round-off carries no force either way. */
-static const double smooth_step_tol = 1e-12;
-/* Where no step lowers E beyond round-off (the states of a few points at zero compression
- * flip back and forth), a Newton step up to this long (m) is taken as the answer: its w then
- * differs from the exact minimum by less, and h by far less. Seen at NODE_ANGLE 1/16 degree,
- * 5.7e-7 m. */
-static const double smooth_stall_tol = 1e-6;
 
 static double compression(const tirenv_ring *r, const tirenv_ring_point *q, const double w[])
 {
@@ -77,7 +64,7 @@ static double energy(const tirenv_ring *r, const double (*q4)[4], const double w
         const tirenv_ring_point *q = &r->pts[k];
         if (q->d == -INFINITY)
             continue;
-        const double k_b = RING_BELT_LAYER * q->k_t, e = compression(r, q, w);
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t, e = compression(r, q, w);
         double dpsi;
         E += q->omega * R * psi(q, k_b, t_r, e, &dpsi);
         if (grad && dpsi != 0) {
@@ -117,7 +104,7 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
         const tirenv_ring_point *q = &r->pts[k];
         if (q->st == 0)
             continue;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         const double c = q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0));
         const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
         const size_t i = q->j - r->lo;
@@ -128,6 +115,20 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
         rhs[i] += b * n0;
         rhs[i + 1] += b * n1;
     }
+}
+
+/* The driver's callbacks (ring_newton.c). */
+static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
+{
+    assemble(r, (const double(*)[4])K, rhs);
+    return tirenv_ring__band_factor(&r->A);
+}
+
+static void solve_cb(tirenv_ring *r, double x[]) { tirenv_ring__band_solve(&r->A, x); }
+
+static double energy_cb(tirenv_ring *r, const void *K, const double x[], double grad[])
+{
+    return energy(r, (const double(*)[4])K, x, grad);
 }
 
 /* Sets every point's state from w; the number that changed. */
@@ -157,56 +158,18 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         const size_t j = lo + i;
         w[i] = j >= r->warm_lo && j < r->warm_lo + r->warm_n ? r->w[j] : 0;
     }
-    for (size_t k = 0; k < r->n_pts; ++k)
-        r->pts[k].st = 255; /* none yet */
-    set_states(r, w);
-    size_t it = 0;
-    int factored = 0; /* the factor in r->A is that of the final states */
-    for (; it < SMOOTH_MAX_ITER; ++it) {
-        assemble(r, q4, wn);
-        if (tirenv_ring__band_factor(&r->A))
-            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                                "the Cholesky factorisation of the %zu-node banded contact "
-                                "system broke down (not numerically positive definite)", n);
-        tirenv_ring__band_solve(&r->A, wn);
-        double step = 0;
-        for (size_t i = 0; i < n; ++i)
-            step = fmax(step, fabs(wn[i] - w[i]));
-        /* The states at the solution: unchanged, it is the minimum. */
-        const size_t changed = set_states(r, wn);
-        if (changed == 0 || step <= smooth_step_tol) {
-            memcpy(w, wn, n * sizeof *w);
-            factored = changed == 0;
-            break;
-        }
-        /* Else a step towards it that lowers E enough. */
-        const double E0 = energy(r, q4, w, g);
-        double slope = 0;
-        for (size_t i = 0; i < n; ++i)
-            slope += g[i] * (wn[i] - w[i]);
-        double alpha = 1;
-        size_t b = 0;
-        for (; b < SMOOTH_BACKTRACK; ++b, alpha *= 0.5) {
-            for (size_t i = 0; i < n; ++i)
-                wt[i] = w[i] + alpha * (wn[i] - w[i]);
-            if (energy(r, q4, wt, NULL) <= E0 + smooth_sigma * alpha * slope)
-                break;
-        }
-        if (b == SMOOTH_BACKTRACK && step <= smooth_stall_tol) {
-            /* No step of at least 2^-20 of the way lowers E: w is the minimum to round-off,
-             * and the Newton point differs from it by a few points at zero compression
-             * flipping. (Shorter steps would "lower" E by its round-off alone.) */
-            memcpy(w, wn, n * sizeof *w);
-            set_states(r, w);
-            break;
-        }
-        memcpy(w, wt, n * sizeof *w);
-        set_states(r, w);
-    }
-    if (it == SMOOTH_MAX_ITER)
+    const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, energy_cb};
+    int factored;
+    const int st = tirenv_ring__newton(r, &nw, w, wn, wt, g, &factored);
+    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the Cholesky factorisation of the %zu-node banded contact system "
+                            "broke down (not numerically positive definite)", n);
+    if (st == TIRENV_RING_NEWTON_NOCONV)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the continuous tread contact of %zu points on %zu nodes did not "
-                            "settle in %d Newton steps", r->n_pts, n, SMOOTH_MAX_ITER);
+                            "settle in %d Newton steps", r->n_pts, n,
+                            TIRENV_RING_NEWTON_MAX_ITER);
     /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
@@ -233,7 +196,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         q->f = 0;
         if (q->st == 0)
             continue;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double dpsi;
         psi(q, k_b, t_r, q->e, &dpsi);
         q->f = q->omega * R * dpsi;
@@ -260,7 +223,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
             const tirenv_ring_point *q = &r->pts[k];
             if (q->st == 0)
                 continue;
-            const double k_b = RING_BELT_LAYER * q->k_t;
+            const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
             const double de = q->dd - ((1 - q->s) * wt[q->j - lo] + q->s * wt[q->j - lo + 1]);
             dF += q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0)) * de * q->cs;
         }
