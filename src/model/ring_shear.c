@@ -255,6 +255,27 @@ static void set_kappa(tirenv_ring *r, double x)
     }
 }
 
+/* The belt's and the tread's stiffness of the open arc of count nodes from node j0 (mod M),
+ * (w, u) interleaved, into A: the belt's stencil, the tread's compression kap between w and u,
+ * its shear k_sh between neighbouring u. The window (assemble) and its exterior (compute_end)
+ * are such arcs; apply_K is the window's product with it. */
+static void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t count)
+{
+    const double *s = T->s, k_sh = T->k_sh;
+    for (size_t e = 0; e < count; ++e) {
+        const double kap = T->kap[(j0 + e) % T->M];
+        band_add(A, 2 * e, 2 * e, s[0] + kap);
+        band_add(A, 2 * e, 2 * e + 1, -kap);
+        band_add(A, 2 * e + 1, 2 * e + 1, kap + 2 * k_sh);
+        if (e + 1 < count) {
+            band_add(A, 2 * e, 2 * e + 2, s[1]);
+            band_add(A, 2 * e + 1, 2 * e + 3, -k_sh);
+        }
+        if (e + 2 < count)
+            band_add(A, 2 * e, 2 * e + 4, s[2]);
+    }
+}
+
 /* The exterior of a window of n nodes starting at lo: the open arc of the other M - n nodes,
  * (w, u) interleaved, unloaded. Only its first and last nodes couple to the window: the
  * belt's pentadiagonal stencil reaches two nodes, the shear one. So K_WE K_EE^-1 K_EW needs
@@ -265,18 +286,7 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
     const double *s = T->s, k_sh = T->k_sh;
     tband *E = &T->ext;
     band_reset(E, Ne, 0);
-    for (size_t e = 0; e < ne; ++e) {
-        const double kap = T->kap[(lo + n + e) % M];
-        band_add(E, 2 * e, 2 * e, s[0] + kap);
-        band_add(E, 2 * e, 2 * e + 1, -kap);
-        band_add(E, 2 * e + 1, 2 * e + 1, kap + 2 * k_sh);
-        if (e + 1 < ne) {
-            band_add(E, 2 * e, 2 * e + 2, s[1]);
-            band_add(E, 2 * e + 1, 2 * e + 3, -k_sh);
-        }
-        if (e + 2 < ne)
-            band_add(E, 2 * e, 2 * e + 4, s[2]);
-    }
+    add_arc(E, T, (lo + n) % M, ne);
     band_factor(E); /* a principal block of the positive definite whole */
     const size_t eidx[NB] = {0, 1, 2, Ne - 4, Ne - 2, Ne - 1};
     /* X[e][b]: the whole's entry between exterior unknown eidx[e] and window end b. */
@@ -441,21 +451,10 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, N = 2 * n;
-    const double *s = T->s, k_sh = T->k_sh, t_r = r->par.t_r, R = r->R;
+    const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->win;
     band_reset(A, N, TAIL);
-    for (size_t i = 0; i < n; ++i) {
-        const double kap = T->kap[lo + i];
-        band_add(A, 2 * i, 2 * i, s[0] + kap);
-        band_add(A, 2 * i, 2 * i + 1, -kap);
-        band_add(A, 2 * i + 1, 2 * i + 1, kap + 2 * k_sh);
-        if (i + 1 < n) {
-            band_add(A, 2 * i, 2 * i + 2, s[1]);
-            band_add(A, 2 * i + 1, 2 * i + 3, -k_sh);
-        }
-        if (i + 2 < n)
-            band_add(A, 2 * i, 2 * i + 4, s[2]);
-    }
+    add_arc(A, T, lo, n);
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
