@@ -142,6 +142,7 @@ void tirenv_ring_free(tirenv_ring *r)
     free(r->pts);
     free(r->cuts);
     free(r->lines);
+    free(r->key);
     tirenv_ring__belt_free(r->belt);
     tirenv_ring__tread_free(r->tread);
     free(r);
@@ -254,6 +255,18 @@ static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             r->kappa[j] = tirenv_ring__tread_kappa(r, r->theta[j], x);
 }
 
+/* The nodes from the vertical to the last whose ray may meet ground gap (m) below the centre
+ * within reach (m): at least one, at most a quarter circle. */
+static size_t side_reach(const tirenv_ring *r, double gap, double reach)
+{
+    size_t m = r->M / 4;
+    if (gap >= reach)
+        return 1;
+    if (gap > 0)
+        m = (size_t)fmin((double)m, acos(gap / reach) / r->dth + 1);
+    return m;
+}
+
 /* The continuous contact's window: the nodes whose interval holds a point of ground within
  * reach (d > -t_r, as the rays' window), widened to the band solver's smallest size. */
 static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x, double z)
@@ -263,13 +276,15 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
     r->n = 0;
     r->n_pts = 0;
     const double reach = r->R0 + r->par.t_r;
-    const double gap = z - tirenv_profile_max_height(p, x - reach, x + reach);
-    if (gap >= reach)
+    /* Each side's rays meet the ground of its side only: a side whose ground lies gap below
+     * the centre is out of reach beyond acos(gap / reach) from the vertical, and its pieces
+     * there would only carry points without ground. */
+    const double gap_b = z - tirenv_profile_max_height(p, x - reach, x);
+    const double gap_f = z - tirenv_profile_max_height(p, x, x + reach);
+    if (fmin(gap_b, gap_f) >= reach)
         return 0;
-    size_t m = r->M / 4;
-    if (gap > 0)
-        m = (size_t)fmin((double)m, acos(gap / reach) / r->dth + 1);
-    const int status = tirenv_ring__sample(r, p, x, z, r->i0 - m, r->i0 + m);
+    const size_t m_b = side_reach(r, gap_b, reach), m_f = side_reach(r, gap_f, reach);
+    const int status = tirenv_ring__sample(r, p, x, z, r->i0 - m_b, r->i0 + m_f);
     if (status)
         return status;
     size_t first = r->M, last = 0;

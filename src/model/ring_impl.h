@@ -138,6 +138,12 @@ struct tirenv_ring {
     tirenv_ring_piece *lines;
     size_t cap_lines;
     double *g;             /* per node: the belt layer's share of F, N */
+    /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
+     * the window and, of each point in contact, its interval, place, weight, stiffness and
+     * state. The next system with the same has the same factor. */
+    void *key;
+    size_t n_key, cap_key, key_lo, key_n;
+    int key_valid;
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
 };
 

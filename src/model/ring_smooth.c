@@ -14,6 +14,7 @@
  * does not change them; a backtracking line search on E makes it converge from anywhere
  * (ring_newton.c, the driver both treads share). The hub force is the sum of the points' radial forces f_q = omega_q R psi'(e_q). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "model/ring_impl.h"
 
@@ -117,11 +118,89 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
     }
 }
 
-/* The driver's callbacks (ring_newton.c). */
+/* Only the right-hand side of assemble, the same operations. */
+static void assemble_rhs(const tirenv_ring *r, double rhs[])
+{
+    const double t_r = r->par.t_r, R = r->R;
+    for (size_t i = 0; i < r->n; ++i)
+        rhs[i] = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
+        const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
+        const size_t i = q->j - r->lo;
+        rhs[i] += b * (1 - q->s);
+        rhs[i + 1] += b * q->s;
+    }
+}
+
+/* What makes the matrix of a point in contact (assemble). */
+typedef struct {
+    size_t j;
+    double s, omega, k_t;
+    unsigned char st;
+} matrix_key;
+
+/* Whether the matrix of the points' current states is the one last factorised. */
+static int matrix_is_factored(const tirenv_ring *r)
+{
+    if (!(r->key_valid && r->key_lo == r->lo && r->key_n == r->n))
+        return 0;
+    const matrix_key *e = r->key, *const end = e + r->n_key;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        if (e == end || !(e->j == q->j && e->s == q->s && e->omega == q->omega &&
+                          e->k_t == q->k_t && e->st == q->st))
+            return 0;
+        ++e;
+    }
+    return e == end;
+}
+
+/* Keeps what makes the matrix of the points' current states; 0 if the key cannot grow. */
+static int remember_matrix(tirenv_ring *r)
+{
+    size_t n_on = 0;
+    for (size_t k = 0; k < r->n_pts; ++k)
+        n_on += r->pts[k].st != 0;
+    if (n_on > r->cap_key) {
+        void *nk = realloc(r->key, 2 * n_on * sizeof(matrix_key));
+        if (!nk)
+            return 0;
+        r->key = nk;
+        r->cap_key = 2 * n_on;
+    }
+    matrix_key *e = r->key;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st != 0)
+            *e++ = (matrix_key){q->j, q->s, q->omega, q->k_t, q->st};
+    }
+    r->n_key = n_on;
+    r->key_lo = r->lo;
+    r->key_n = r->n;
+    return 1;
+}
+
+/* The driver's callbacks (ring_newton.c). The factor is kept when the matrix is the last
+ * one's: between the evaluations of a position over level ground (no ground vertex between
+ * nodes) the points' weights stay, and the states mostly. */
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
+    if (matrix_is_factored(r)) {
+        assemble_rhs(r, rhs);
+        return 0;
+    }
+    r->key_valid = 0;
+    const int keyed = remember_matrix(r);
     assemble(r, (const double(*)[4])K, rhs);
-    return tirenv_ring__band_factor(&r->A);
+    const int bad = tirenv_ring__band_factor(&r->A);
+    r->key_valid = keyed && !bad;
+    return bad;
 }
 
 static void solve_cb(tirenv_ring *r, double x[]) { tirenv_ring__band_solve(&r->A, x); }
@@ -173,8 +252,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
     /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
-        assemble(r, q4, wt);
-        if (tirenv_ring__band_factor(&r->A))
+        if (factor_cb(r, q4, wt))
             return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                                 "the Cholesky factorisation of the %zu-node banded contact "
                                 "system broke down (not numerically positive definite)", n);
