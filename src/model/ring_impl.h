@@ -160,15 +160,19 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
 /* The continuous contact's Newton driver (ring_newton.c) on N unknowns, the callbacks a
  * tread's: factor assembles the system of the points' current states and factorises it, its
  * right-hand side into rhs (nonzero: the factorisation broke down); solve applies the factor
- * in place; set_states sets every point's state from x and returns how many changed; energy
- * returns E(x) and, if grad is not NULL, its gradient. K: the window's end correction. */
+ * in place; set_states sets every point's state from x and returns how many changed. The
+ * energy E(x) = 1/2 x.K x + P(x): apply writes y = K x; points returns P(x) and, if grad is
+ * not NULL, subtracts the points' forces from it (K x there: the gradient of E). K: the
+ * window's end correction; kp: N entries of workspace. */
 typedef struct {
     size_t N;
     const void *K;
     int (*factor)(tirenv_ring *r, const void *K, double rhs[]);
     void (*solve)(tirenv_ring *r, double x[]);
     size_t (*set_states)(tirenv_ring *r, const double x[]);
-    double (*energy)(tirenv_ring *r, const void *K, const double x[], double grad[]);
+    void (*apply)(tirenv_ring *r, const void *K, const double x[], double y[]);
+    double (*points)(tirenv_ring *r, const double x[], double grad[]);
+    double *kp;
 } tirenv_ring_newton;
 
 enum { TIRENV_RING_NEWTON_OK = 0, TIRENV_RING_NEWTON_BREAKDOWN, TIRENV_RING_NEWTON_NOCONV };

@@ -51,8 +51,20 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
                 return TIRENV_RING_NEWTON_OK;
             continue;
         }
-        /* Else a step towards it that lowers E enough. */
-        const double E0 = nw->energy(r, nw->K, x, g);
+        /* Else a step towards it that lowers E enough. Along x + alpha p (p = xn - x) the
+         * quadratic 1/2 x.K x is E_K + alpha Kx.p + 1/2 alpha^2 p.K p: one product with K
+         * for the whole line search, the points' share at each trial. */
+        nw->apply(r, nw->K, x, g);
+        for (size_t i = 0; i < N; ++i)
+            xt[i] = xn[i] - x[i];
+        nw->apply(r, nw->K, xt, nw->kp);
+        double E_K = 0, Kxp = 0, pKp = 0;
+        for (size_t i = 0; i < N; ++i) {
+            E_K += 0.5 * x[i] * g[i];
+            Kxp += g[i] * xt[i];
+            pKp += xt[i] * nw->kp[i];
+        }
+        const double E0 = E_K + nw->points(r, x, g);
         double slope = 0;
         for (size_t i = 0; i < N; ++i)
             slope += g[i] * (xn[i] - x[i]);
@@ -61,7 +73,9 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
         for (; b < NEWTON_BACKTRACK; ++b, alpha *= 0.5) {
             for (size_t i = 0; i < N; ++i)
                 xt[i] = x[i] + alpha * (xn[i] - x[i]);
-            if (nw->energy(r, nw->K, xt, NULL) <= E0 + newton_sigma * alpha * slope)
+            const double E = E_K + alpha * Kxp + 0.5 * alpha * alpha * pKp +
+                             nw->points(r, xt, NULL);
+            if (E <= E0 + newton_sigma * alpha * slope)
                 break;
         }
         if (b == NEWTON_BACKTRACK && step <= newton_stall_tol) {

@@ -407,17 +407,13 @@ static size_t set_states(tirenv_ring *r, const double x[])
     return changed;
 }
 
-/* E(x) and, if grad is not NULL, its gradient. */
-static double energy(tirenv_ring *r, const double (*Q)[NB], const double x[], double grad[])
+/* The points' share of E at x (the layers' energy), their forces taken from grad if it is
+ * not NULL (grad holding K x: the gradient of E). */
+static double points_energy(tirenv_ring *r, const double x[], double grad[])
 {
-    tirenv_ring_tread *T = r->tread;
-    const size_t N = 2 * r->n;
+    const tirenv_ring_tread *T = r->tread;
     const double t_r = r->par.t_r, R = r->R;
-    double *y = grad ? grad : T->col;
-    apply_K(r, Q, x, y);
     double E = 0;
-    for (size_t i = 0; i < N; ++i)
-        E += 0.5 * x[i] * y[i];
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         if (q->d == -INFINITY)
@@ -495,9 +491,9 @@ static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 
 static void solve_cb(tirenv_ring *r, double x[]) { band_solve(&r->tread->win, x); }
 
-static double energy_cb(tirenv_ring *r, const void *K, const double x[], double grad[])
+static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
 {
-    return energy(r, (const double(*)[NB])K, x, grad);
+    apply_K(r, (const double(*)[NB])K, x, y);
 }
 
 static int broke_down(size_t n, tirenv_diag *diag)
@@ -527,7 +523,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         x[2 * i] = warm ? r->w[j] : 0;
         x[2 * i + 1] = warm ? T->u[j] : 0;
     }
-    const tirenv_ring_newton nw = {N, Q, factor_cb, solve_cb, set_states, energy_cb};
+    const tirenv_ring_newton nw = {N, Q, factor_cb, solve_cb, set_states, apply_cb,
+                                   points_energy, T->col};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
     if (st == TIRENV_RING_NEWTON_BREAKDOWN)

@@ -42,25 +42,24 @@ static double psi(const tirenv_ring_point *q, double k_b, double t_r, double e, 
     return f;
 }
 
-/* E(w) and, if grad is not NULL, its gradient S w - sum_q omega R psi'(e_q) N_q. */
-static double energy(const tirenv_ring *r, const double (*q4)[4], const double w[],
-                     double grad[])
+/* y = S w, the window's condensed belt stiffness. Away from the window's ends S is the
+ * stencil: tirenv_ring__belt_force's sum, in its order, without its look-ups. */
+static void apply_S(const tirenv_ring *r, const double (*q4)[4], const double w[], double y[])
 {
     const size_t n = r->n;
+    const double *s = tirenv_ring__belt_stencil(r->belt);
+    for (size_t i = 0; i < n; ++i)
+        y[i] = i >= 2 && i + 2 < n ? s[0] * w[i] + s[2] * w[i - 2] + s[1] * w[i - 1] +
+                                         s[1] * w[i + 1] + s[2] * w[i + 2]
+                                   : tirenv_ring__belt_force(r, q4, w, i);
+}
+
+/* The points' share of E at w, sum_q omega_q R psi(e_q), their forces taken from grad if it
+ * is not NULL (grad holding S w: the gradient of E). */
+static double points_energy(tirenv_ring *r, const double w[], double grad[])
+{
     const double t_r = r->par.t_r, R = r->R;
     double E = 0;
-    const double *s = tirenv_ring__belt_stencil(r->belt);
-    for (size_t i = 0; i < n; ++i) {
-        /* Away from the window's ends S is the stencil: tirenv_ring__belt_force's sum, in
-         * its order, without its look-ups. */
-        const double Sw = i >= 2 && i + 2 < n ? s[0] * w[i] + s[2] * w[i - 2] +
-                                                    s[1] * w[i - 1] + s[1] * w[i + 1] +
-                                                    s[2] * w[i + 2]
-                                              : tirenv_ring__belt_force(r, q4, w, i);
-        E += 0.5 * w[i] * Sw;
-        if (grad)
-            grad[i] = Sw;
-    }
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         if (q->d == -INFINITY)
@@ -205,9 +204,9 @@ static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 
 static void solve_cb(tirenv_ring *r, double x[]) { tirenv_ring__band_solve(&r->A, x); }
 
-static double energy_cb(tirenv_ring *r, const void *K, const double x[], double grad[])
+static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
 {
-    return energy(r, (const double(*)[4])K, x, grad);
+    apply_S(r, (const double(*)[4])K, x, y);
 }
 
 /* Sets every point's state from w; the number that changed. */
@@ -237,7 +236,8 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         const size_t j = lo + i;
         w[i] = j >= r->warm_lo && j < r->warm_lo + r->warm_n ? r->w[j] : 0;
     }
-    const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, energy_cb};
+    const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, apply_cb,
+                                   points_energy, r->rhs};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, w, wn, wt, g, &factored);
     if (st == TIRENV_RING_NEWTON_BREAKDOWN)
