@@ -649,7 +649,11 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
         memcpy(r->w, buf, M * sizeof *r->w);
     if (warm_fields(r) == 2)
         memcpy(tirenv_ring__tread_u(r->tread), buf + M * sizeof *r->w, M * sizeof *r->w);
-    if (!(r->warm_lo <= M && r->warm_n <= M - r->warm_lo)) {
+    int finite = 1; /* damaged bytes: no warm start rather than a NaN one */
+    const double *u = r->tread ? tirenv_ring__tread_u(r->tread) : NULL;
+    for (size_t j = 0; j < M && warm_fields(r) >= 1; ++j)
+        finite &= isfinite(r->w[j]) && (!u || isfinite(u[j]));
+    if (!finite || !(r->warm_lo <= M && r->warm_n <= M - r->warm_lo)) {
         r->warm_lo = r->warm_n = 0;
         memset(r->warm, FREE, M);
         for (size_t j = 0; j < M; ++j)

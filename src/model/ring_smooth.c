@@ -7,12 +7,13 @@
  *     psi(e) = 1/2 k_t max(0, e)^2 + 1/2 k_b max(0, e - t_r)^2,
  * the trapezoid rule of the tread's energy over the pieces of ring_ground.c. The second term of
  * psi is the belt and carcass beneath the tread: where the ground has compressed the tread
- * through its thickness t_r it meets them, k_b = TIRENV_RING_BELT_LAYER times stiffer than the tread,
- * so nothing cuts through the belt (a compression beyond t_r costs a thousand times more).
- * E is convex and piecewise quadratic, so Newton's method on it, with the pieces (the points'
- * states: free, tread, tread and belt) taken from the current w, ends exactly, when a step
- * does not change them; a backtracking line search on E makes it converge from anywhere
- * (ring_newton.c, the driver both treads share). The hub force is the sum of the points' radial forces f_q = omega_q R psi'(e_q). */
+ * through its thickness t_r it meets them, k_b = TIRENV_RING_BELT_LAYER times stiffer than the
+ * tread, so nothing cuts through the belt (a compression beyond t_r costs a thousand times
+ * more). E is convex and piecewise quadratic, so Newton's method on it, with the pieces (the
+ * points' states: free, tread, tread and belt) taken from the current w, ends exactly, when a
+ * step does not change them; a backtracking line search on E makes it converge from anywhere
+ * (ring_newton.c, the driver both treads share). The hub force is the sum of the points'
+ * radial forces f_q = omega_q R psi'(e_q). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
