@@ -25,6 +25,10 @@ typedef struct tirenv_ring_belt tirenv_ring_belt;
  * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */
 #define TIRENV_RING_GROUND_LAYER 1e4
 
+/* k_b / k_t: the belt and carcass under the tread, in compression (ring_smooth.c,
+ * ring_shear.c, docs/models.md 5.3). */
+#define TIRENV_RING_BELT_LAYER 1e3
+
 /* The tread coupled in shear along the arc (ring_shear.c, docs/models.md section 5.3): its
  * constants, the exterior's condensation per window length, the banded system of the window's
  * belt and tread surface, and the tread surface's displacement per node. */
@@ -134,6 +138,12 @@ struct tirenv_ring {
     tirenv_ring_piece *lines;
     size_t cap_lines;
     double *g;             /* per node: the belt layer's share of F, N */
+    /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
+     * the window and, of each point in contact, its interval, place, weight, stiffness and
+     * state. The next system with the same has the same factor. */
+    void *key;
+    size_t n_key, cap_key, key_lo, key_n;
+    int key_valid;
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
 };
 
@@ -146,6 +156,34 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
  * per point; TIRENV_ENOCONV with diag if Newton does not settle. dfz_dz (may be NULL). */
 int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *dfz_dz,
                               tirenv_diag *diag);
+
+/* The continuous contact's Newton driver (ring_newton.c) on N unknowns, the callbacks a
+ * tread's: factor assembles the system of the points' current states and factorises it, its
+ * right-hand side into rhs (nonzero: the factorisation broke down); solve applies the factor
+ * in place; set_states sets every point's state from x and returns how many changed. The
+ * energy E(x) = 1/2 x.K x + P(x): apply writes y = K x; points returns P(x) and, if grad is
+ * not NULL, subtracts the points' forces from it (K x there: the gradient of E). K: the
+ * window's end correction; kp: N entries of workspace. */
+typedef struct {
+    size_t N;
+    const void *K;
+    int (*factor)(tirenv_ring *r, const void *K, double rhs[]);
+    void (*solve)(tirenv_ring *r, double x[]);
+    size_t (*set_states)(tirenv_ring *r, const double x[]);
+    void (*apply)(tirenv_ring *r, const void *K, const double x[], double y[]);
+    double (*points)(tirenv_ring *r, const double x[], double grad[]);
+    double *kp;
+} tirenv_ring_newton;
+
+enum { TIRENV_RING_NEWTON_OK = 0, TIRENV_RING_NEWTON_BREAKDOWN, TIRENV_RING_NEWTON_NOCONV };
+enum { TIRENV_RING_NEWTON_MAX_ITER = 200 }; /* Newton steps before _NOCONV */
+
+/* Minimises the contact energy from x (N entries, overwritten with the minimum; the points'
+ * states are its). xn, xt, g: N entries of workspace. *factored: the factor left by the last
+ * Newton step is that of the final states. TIRENV_RING_NEWTON_OK, _BREAKDOWN or _NOCONV (after
+ * TIRENV_RING_NEWTON_MAX_ITER steps). */
+int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[], double xn[],
+                        double xt[], double g[], int *factored);
 
 /* The tread's shear stiffness k_s = G_t t_r b per unit belt length (N): TREAD_SHEAR times the
  * tread depth and BELT_WIDTH. Zero: a Winkler tread (ring_smooth.c). */

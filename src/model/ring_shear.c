@@ -18,19 +18,15 @@
  * interleaved (w_0, u_0, w_1, u_1, ...), so K is banded with bandwidth 4; the nodes outside the
  * window (no ground) condense out exactly into a 6 x 6 correction on the window's ends (their
  * belt's two end nodes and tread's one), computed once per window length from six banded solves
- * of the exterior. The solve is Newton's method with a line search, as ring_smooth.c. */
+ * of the exterior. The solve is Newton's method with a line search, the driver ring_smooth.c
+ * shares (ring_newton.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/cholesky.h"
 #include "model/ring_impl.h"
 
-/* k_b / k_t: the belt and carcass under the tread, as ring_smooth.c. */
-static const double RING_BELT_LAYER = 1e3;
-enum { SHEAR_MAX_ITER = 200, SHEAR_BACKTRACK = 20, SHEAR_POLISH = 8, BAND_P = 4, TAIL = 4,
-       NB = 6 };
-static const double shear_sigma = 1e-4;    /* Armijo's sufficient decrease */
-static const double shear_step_tol = 1e-12; /* m: as ring_smooth.c */
-static const double shear_stall_tol = 1e-6; /* m: as ring_smooth.c */
+enum { BAND_P = 4, TAIL = 4, NB = 6 };
 
 /* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t rows are dense
  * (the window's ends coupled through the exterior), and its Cholesky factor in place: L[5 i + k]
@@ -49,7 +45,9 @@ struct tirenv_ring_tread {
     double k_sh;        /* shear between neighbouring nodes, k_s / (R dtheta), N/m */
     double k_g;         /* contact layer per unit belt length, N/m^2 */
     double kap0;        /* the tread's compression k_c R dtheta of a node without lugs, N/m */
-    int lugs;           /* kap differs between nodes: no cached ends */
+    int lugs;           /* kap differs between nodes: the ends cached for one x, lo, n */
+    double lug_x;       /* the centre's abscissa of the cached lugged ends (m) */
+    size_t lug_lo, lug_n; /* their window; lug_n = 0: none cached */
     double *kap;        /* per node (global): compression stiffness k_c R dtheta, N/m */
     double *u;          /* per node (global): the tread surface's displacement, m */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
@@ -130,21 +128,8 @@ static int band_factor(tband *A)
             for (size_t b = 0; b <= a; ++b)
                 A->T[a][b] -= A->B[a][i] * A->B[b][i];
     }
-    for (size_t a = 0; a < t; ++a) {
-        for (size_t b = 0; b < a; ++b) {
-            double v = A->T[a][b];
-            for (size_t c = 0; c < b; ++c)
-                v -= A->T[a][c] * A->T[b][c];
-            A->T[a][b] = v / A->T[b][b];
-        }
-        double d = A->T[a][a];
-        for (size_t c = 0; c < a; ++c)
-            d -= A->T[a][c] * A->T[a][c];
-        if (!(d > 0))
-            return 1;
-        A->T[a][a] = sqrt(d);
-    }
-    return 0;
+    /* The dense tail, Schur complement of the band: src/core's Cholesky. */
+    return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). */
@@ -171,17 +156,10 @@ static void band_solve(const tband *A, double x[])
         for (size_t a = 0; a < t; ++a)
             y[a] -= A->B[a][i] * x[i];
     }
-    for (size_t a = 0; a < t; ++a) {
-        for (size_t b = 0; b < a; ++b)
-            y[a] -= A->T[a][b] * y[b];
-        y[a] /= A->T[a][a];
-    }
-    for (size_t a = t; a-- > 0;) {
-        for (size_t b = a + 1; b < t; ++b)
-            y[a] -= A->T[b][a] * y[b];
-        y[a] /= A->T[a][a];
+    if (t > 0)
+        tirenv_core__cholesky_solve(&A->T[0][0], t, TAIL, y, y);
+    for (size_t a = 0; a < t; ++a)
         x[m + a] = y[a];
-    }
     for (size_t i = m; i-- > 0;) {
         double v = x[i];
         if (i + BAND_P < m) {
@@ -277,6 +255,27 @@ static void set_kappa(tirenv_ring *r, double x)
     }
 }
 
+/* The belt's and the tread's stiffness of the open arc of count nodes from node j0 (mod M),
+ * (w, u) interleaved, into A: the belt's stencil, the tread's compression kap between w and u,
+ * its shear k_sh between neighbouring u. The window (assemble) and its exterior (compute_end)
+ * are such arcs; apply_K is the window's product with it. */
+static void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t count)
+{
+    const double *s = T->s, k_sh = T->k_sh;
+    for (size_t e = 0; e < count; ++e) {
+        const double kap = T->kap[(j0 + e) % T->M];
+        band_add(A, 2 * e, 2 * e, s[0] + kap);
+        band_add(A, 2 * e, 2 * e + 1, -kap);
+        band_add(A, 2 * e + 1, 2 * e + 1, kap + 2 * k_sh);
+        if (e + 1 < count) {
+            band_add(A, 2 * e, 2 * e + 2, s[1]);
+            band_add(A, 2 * e + 1, 2 * e + 3, -k_sh);
+        }
+        if (e + 2 < count)
+            band_add(A, 2 * e, 2 * e + 4, s[2]);
+    }
+}
+
 /* The exterior of a window of n nodes starting at lo: the open arc of the other M - n nodes,
  * (w, u) interleaved, unloaded. Only its first and last nodes couple to the window: the
  * belt's pentadiagonal stencil reaches two nodes, the shear one. So K_WE K_EE^-1 K_EW needs
@@ -287,18 +286,7 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
     const double *s = T->s, k_sh = T->k_sh;
     tband *E = &T->ext;
     band_reset(E, Ne, 0);
-    for (size_t e = 0; e < ne; ++e) {
-        const double kap = T->kap[(lo + n + e) % M];
-        band_add(E, 2 * e, 2 * e, s[0] + kap);
-        band_add(E, 2 * e, 2 * e + 1, -kap);
-        band_add(E, 2 * e + 1, 2 * e + 1, kap + 2 * k_sh);
-        if (e + 1 < ne) {
-            band_add(E, 2 * e, 2 * e + 2, s[1]);
-            band_add(E, 2 * e + 1, 2 * e + 3, -k_sh);
-        }
-        if (e + 2 < ne)
-            band_add(E, 2 * e, 2 * e + 4, s[2]);
-    }
+    add_arc(E, T, (lo + n) % M, ne);
     band_factor(E); /* a principal block of the positive definite whole */
     const size_t eidx[NB] = {0, 1, 2, Ne - 4, Ne - 2, Ne - 1};
     /* X[e][b]: the whole's entry between exterior unknown eidx[e] and window end b. */
@@ -330,12 +318,19 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
             Q[v][u] = Q[u][v] = 0.5 * (Q[v][u] + Q[u][v]);
 }
 
-static const double (*window_end(tirenv_ring *r))[NB]
+static const double (*window_end(tirenv_ring *r, double x_c))[NB]
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n;
     if (T->lugs) {
-        compute_end(T, r->lo, n, T->end[0]);
+        /* The lugs' stiffness turns with x: the exterior's, so its ends, depend on x, lo
+         * and n, which stay the same over a position's evaluations. */
+        if (!(T->lug_n == n && T->lug_lo == r->lo && T->lug_x == x_c)) {
+            compute_end(T, r->lo, n, T->end[0]);
+            T->lug_x = x_c;
+            T->lug_lo = r->lo;
+            T->lug_n = n;
+        }
         return (const double(*)[NB])T->end[0];
     }
     if (!T->have[n]) {
@@ -412,24 +407,20 @@ static size_t set_states(tirenv_ring *r, const double x[])
     return changed;
 }
 
-/* E(x) and, if grad is not NULL, its gradient. */
-static double energy(tirenv_ring *r, const double (*Q)[NB], const double x[], double grad[])
+/* The points' share of E at x (the layers' energy), their forces taken from grad if it is
+ * not NULL (grad holding K x: the gradient of E). */
+static double points_energy(tirenv_ring *r, const double x[], double grad[])
 {
-    tirenv_ring_tread *T = r->tread;
-    const size_t N = 2 * r->n;
+    const tirenv_ring_tread *T = r->tread;
     const double t_r = r->par.t_r, R = r->R;
-    double *y = grad ? grad : T->col;
-    apply_K(r, Q, x, y);
     double E = 0;
-    for (size_t i = 0; i < N; ++i)
-        E += 0.5 * x[i] * y[i];
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         if (q->d == -INFINITY)
             continue;
         const size_t i = q->j - r->lo;
         const double eg = q->d - at_u(r, q, x), eb = q->d - at_w(r, q, x) - t_r;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         if (eg > 0) {
             E += q->omega * R * 0.5 * T->k_g * eg * eg;
             if (grad) {
@@ -456,21 +447,10 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, N = 2 * n;
-    const double *s = T->s, k_sh = T->k_sh, t_r = r->par.t_r, R = r->R;
+    const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->win;
     band_reset(A, N, TAIL);
-    for (size_t i = 0; i < n; ++i) {
-        const double kap = T->kap[lo + i];
-        band_add(A, 2 * i, 2 * i, s[0] + kap);
-        band_add(A, 2 * i, 2 * i + 1, -kap);
-        band_add(A, 2 * i + 1, 2 * i + 1, kap + 2 * k_sh);
-        if (i + 1 < n) {
-            band_add(A, 2 * i, 2 * i + 2, s[1]);
-            band_add(A, 2 * i + 1, 2 * i + 3, -k_sh);
-        }
-        if (i + 2 < n)
-            band_add(A, 2 * i, 2 * i + 4, s[2]);
-    }
+    add_arc(A, T, lo, n);
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
@@ -492,7 +472,7 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             rhs[2 * i + 3] += c * q->d * n1;
         }
         if (q->st & 2) {
-            const double c = q->omega * R * RING_BELT_LAYER * q->k_t;
+            const double c = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
             band_add(A, 2 * i, 2 * i, c * n0 * n0);
             band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
             band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
@@ -500,6 +480,20 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             rhs[2 * i + 2] += c * (q->d - t_r) * n1;
         }
     }
+}
+
+/* The driver's callbacks (ring_newton.c). */
+static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
+{
+    assemble(r, (const double(*)[NB])K, rhs);
+    return band_factor(&r->tread->win);
+}
+
+static void solve_cb(tirenv_ring *r, double x[]) { band_solve(&r->tread->win, x); }
+
+static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
+{
+    apply_K(r, (const double(*)[NB])K, x, y);
 }
 
 static int broke_down(size_t n, tirenv_diag *diag)
@@ -520,7 +514,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                             "the contact window of %zu nodes leaves too few of the %zu outside "
                             "it", n, r->M);
     set_kappa(r, x_c);
-    const double(*Q)[NB] = window_end(r);
+    const double(*Q)[NB] = window_end(r, x_c);
     double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
     /* From the last evaluation's belt and tread where this window overlaps its window. */
     for (size_t i = 0; i < n; ++i) {
@@ -529,62 +523,17 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         x[2 * i] = warm ? r->w[j] : 0;
         x[2 * i + 1] = warm ? T->u[j] : 0;
     }
-    for (size_t k = 0; k < r->n_pts; ++k)
-        r->pts[k].st = 255;
-    set_states(r, x);
-    size_t it = 0, polish = 0; /* full Newton steps taken after the line search stalled */
-    int factored = 0; /* the factor in T->win is that of the final states */
-    for (; it < SHEAR_MAX_ITER; ++it) {
-        assemble(r, Q, xn);
-        if (band_factor(&T->win))
-            return broke_down(n, diag);
-        band_solve(&T->win, xn);
-        double step = 0;
-        for (size_t i = 0; i < N; ++i)
-            step = fmax(step, fabs(xn[i] - x[i]));
-        const size_t changed = set_states(r, xn);
-        if (changed == 0 || step <= shear_step_tol) {
-            memcpy(x, xn, N * sizeof *x);
-            factored = changed == 0;
-            break;
-        }
-        /* After a stall, full Newton steps: E's round-off hides their decrease, but the states
-         * settle within a few (a consistent set of states is the unique minimiser, whatever
-         * the start: tracks of equal copies agree to round-off); if a point keeps flipping,
-         * accept the Newton point as the stall did. */
-        if (polish > 0) {
-            memcpy(x, xn, N * sizeof *x);
-            if (++polish > SHEAR_POLISH)
-                break;
-            continue;
-        }
-        const double E0 = energy(r, Q, x, g);
-        double slope = 0;
-        for (size_t i = 0; i < N; ++i)
-            slope += g[i] * (xn[i] - x[i]);
-        double alpha = 1;
-        size_t b = 0;
-        for (; b < SHEAR_BACKTRACK; ++b, alpha *= 0.5) {
-            for (size_t i = 0; i < N; ++i)
-                xt[i] = x[i] + alpha * (xn[i] - x[i]);
-            if (energy(r, Q, xt, NULL) <= E0 + shear_sigma * alpha * slope)
-                break;
-        }
-        if (b == SHEAR_BACKTRACK && step <= shear_stall_tol) {
-            /* No step of at least 2^-20 of the way lowers E: x is the minimum to E's round-off,
-             * the Newton point differs from it by a few points at zero compression flipping.
-             * Take it, with its states, and polish (above). */
-            memcpy(x, xn, N * sizeof *x);
-            polish = 1;
-            continue;
-        }
-        memcpy(x, xt, N * sizeof *x);
-        set_states(r, x);
-    }
-    if (it == SHEAR_MAX_ITER)
+    const tirenv_ring_newton nw = {N, Q, factor_cb, solve_cb, set_states, apply_cb,
+                                   points_energy, T->col};
+    int factored;
+    const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
+    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
+        return broke_down(n, diag);
+    if (st == TIRENV_RING_NEWTON_NOCONV)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the shear-coupled tread contact of %zu points on %zu nodes did not "
-                            "settle in %d Newton steps", r->n_pts, n, SHEAR_MAX_ITER);
+                            "settle in %d Newton steps", r->n_pts, n,
+                            TIRENV_RING_NEWTON_MAX_ITER);
     /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
@@ -616,7 +565,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         if (q->st == 0)
             continue;
         const size_t i = q->j - lo;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double fg = 0, fb = 0, cu = 0, cw = 0;
         if (q->st & 1) {
             fg = q->omega * R * T->k_g * q->e;
@@ -651,7 +600,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
             if (q->st & 1)
                 df += q->omega * R * T->k_g * (q->dd - at_u(r, q, xt));
             if (q->st & 2)
-                df += q->omega * R * RING_BELT_LAYER * q->k_t * (q->dd - at_w(r, q, xt));
+                df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->dd - at_w(r, q, xt));
             dF += df * q->cs;
         }
         *dfz_dz = dF;

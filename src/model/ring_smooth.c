@@ -7,28 +7,17 @@
  *     psi(e) = 1/2 k_t max(0, e)^2 + 1/2 k_b max(0, e - t_r)^2,
  * the trapezoid rule of the tread's energy over the pieces of ring_ground.c. The second term of
  * psi is the belt and carcass beneath the tread: where the ground has compressed the tread
- * through its thickness t_r it meets them, k_b = RING_BELT_LAYER times stiffer than the tread,
- * so nothing cuts through the belt (a compression beyond t_r costs a thousand times more).
- * E is convex and piecewise quadratic, so Newton's method on it, with the pieces (the points'
- * states: free, tread, tread and belt) taken from the current w, ends exactly, when a step
- * does not change them; a backtracking line search on E makes it converge from anywhere. The
- * hub force is the sum of the points' radial forces f_q = omega_q R psi'(e_q). */
+ * through its thickness t_r it meets them, k_b = TIRENV_RING_BELT_LAYER times stiffer than the
+ * tread, so nothing cuts through the belt (a compression beyond t_r costs a thousand times
+ * more). E is convex and piecewise quadratic, so Newton's method on it, with the pieces (the
+ * points' states: free, tread, tread and belt) taken from the current w, ends exactly, when a
+ * step does not change them; a backtracking line search on E makes it converge from anywhere
+ * (ring_newton.c, the driver both treads share). The hub force is the sum of the points'
+ * radial forces f_q = omega_q R psi'(e_q). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "model/ring_impl.h"
-
-/* k_b / k_t: the belt and carcass under the tread, in compression (docs/models.md 5.3). */
-static const double RING_BELT_LAYER = 1e3;
-enum { SMOOTH_MAX_ITER = 200, SMOOTH_BACKTRACK = 20 };
-static const double smooth_sigma = 1e-4; /* Armijo's sufficient decrease */
-/* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
- * point whose compression is zero to round-off carries no force either way. */
-static const double smooth_step_tol = 1e-12;
-/* Where no step lowers E beyond round-off (the states of a few points at zero compression
- * flip back and forth), a Newton step up to this long (m) is taken as the answer: its w then
- * differs from the exact minimum by less, and h by far less. Seen at NODE_ANGLE 1/16 degree,
- * 5.7e-7 m. */
-static const double smooth_stall_tol = 1e-6;
 
 static double compression(const tirenv_ring *r, const tirenv_ring_point *q, const double w[])
 {
@@ -54,24 +43,29 @@ static double psi(const tirenv_ring_point *q, double k_b, double t_r, double e, 
     return f;
 }
 
-/* E(w) and, if grad is not NULL, its gradient S w - sum_q omega R psi'(e_q) N_q. */
-static double energy(const tirenv_ring *r, const double (*q4)[4], const double w[],
-                     double grad[])
+/* y = S w, the window's condensed belt stiffness. Away from the window's ends S is the
+ * stencil: tirenv_ring__belt_force's sum, in its order, without its look-ups. */
+static void apply_S(const tirenv_ring *r, const double (*q4)[4], const double w[], double y[])
 {
     const size_t n = r->n;
+    const double *s = tirenv_ring__belt_stencil(r->belt);
+    for (size_t i = 0; i < n; ++i)
+        y[i] = i >= 2 && i + 2 < n ? s[0] * w[i] + s[2] * w[i - 2] + s[1] * w[i - 1] +
+                                         s[1] * w[i + 1] + s[2] * w[i + 2]
+                                   : tirenv_ring__belt_force(r, q4, w, i);
+}
+
+/* The points' share of E at w, sum_q omega_q R psi(e_q), their forces taken from grad if it
+ * is not NULL (grad holding S w: the gradient of E). */
+static double points_energy(tirenv_ring *r, const double w[], double grad[])
+{
     const double t_r = r->par.t_r, R = r->R;
     double E = 0;
-    for (size_t i = 0; i < n; ++i) {
-        const double Sw = tirenv_ring__belt_force(r, q4, w, i);
-        E += 0.5 * w[i] * Sw;
-        if (grad)
-            grad[i] = Sw;
-    }
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         if (q->d == -INFINITY)
             continue;
-        const double k_b = RING_BELT_LAYER * q->k_t, e = compression(r, q, w);
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t, e = compression(r, q, w);
         double dpsi;
         E += q->omega * R * psi(q, k_b, t_r, e, &dpsi);
         if (grad && dpsi != 0) {
@@ -111,7 +105,7 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
         const tirenv_ring_point *q = &r->pts[k];
         if (q->st == 0)
             continue;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         const double c = q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0));
         const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
         const size_t i = q->j - r->lo;
@@ -122,6 +116,98 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
         rhs[i] += b * n0;
         rhs[i + 1] += b * n1;
     }
+}
+
+/* Only the right-hand side of assemble, the same operations. */
+static void assemble_rhs(const tirenv_ring *r, double rhs[])
+{
+    const double t_r = r->par.t_r, R = r->R;
+    for (size_t i = 0; i < r->n; ++i)
+        rhs[i] = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
+        const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
+        const size_t i = q->j - r->lo;
+        rhs[i] += b * (1 - q->s);
+        rhs[i + 1] += b * q->s;
+    }
+}
+
+/* What makes the matrix of a point in contact (assemble). */
+typedef struct {
+    size_t j;
+    double s, omega, k_t;
+    unsigned char st;
+} matrix_key;
+
+/* Whether the matrix of the points' current states is the one last factorised. */
+static int matrix_is_factored(const tirenv_ring *r)
+{
+    if (!(r->key_valid && r->key_lo == r->lo && r->key_n == r->n))
+        return 0;
+    const matrix_key *e = r->key, *const end = e + r->n_key;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        if (e == end || !(e->j == q->j && e->s == q->s && e->omega == q->omega &&
+                          e->k_t == q->k_t && e->st == q->st))
+            return 0;
+        ++e;
+    }
+    return e == end;
+}
+
+/* Keeps what makes the matrix of the points' current states; 0 if the key cannot grow. */
+static int remember_matrix(tirenv_ring *r)
+{
+    size_t n_on = 0;
+    for (size_t k = 0; k < r->n_pts; ++k)
+        n_on += r->pts[k].st != 0;
+    if (n_on > r->cap_key) {
+        void *nk = realloc(r->key, 2 * n_on * sizeof(matrix_key));
+        if (!nk)
+            return 0;
+        r->key = nk;
+        r->cap_key = 2 * n_on;
+    }
+    matrix_key *e = r->key;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st != 0)
+            *e++ = (matrix_key){q->j, q->s, q->omega, q->k_t, q->st};
+    }
+    r->n_key = n_on;
+    r->key_lo = r->lo;
+    r->key_n = r->n;
+    return 1;
+}
+
+/* The driver's callbacks (ring_newton.c). The factor is kept when the matrix is the last
+ * one's: between the evaluations of a position over level ground (no ground vertex between
+ * nodes) the points' weights stay, and the states mostly. */
+static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
+{
+    if (matrix_is_factored(r)) {
+        assemble_rhs(r, rhs);
+        return 0;
+    }
+    r->key_valid = 0;
+    const int keyed = remember_matrix(r);
+    assemble(r, (const double(*)[4])K, rhs);
+    const int bad = tirenv_ring__band_factor(&r->A);
+    r->key_valid = keyed && !bad;
+    return bad;
+}
+
+static void solve_cb(tirenv_ring *r, double x[]) { tirenv_ring__band_solve(&r->A, x); }
+
+static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
+{
+    apply_S(r, (const double(*)[4])K, x, y);
 }
 
 /* Sets every point's state from w; the number that changed. */
@@ -151,59 +237,27 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         const size_t j = lo + i;
         w[i] = j >= r->warm_lo && j < r->warm_lo + r->warm_n ? r->w[j] : 0;
     }
-    for (size_t k = 0; k < r->n_pts; ++k)
-        r->pts[k].st = 255; /* none yet */
-    set_states(r, w);
-    size_t it = 0;
-    for (; it < SMOOTH_MAX_ITER; ++it) {
-        assemble(r, q4, wn);
-        if (tirenv_ring__band_factor(&r->A))
-            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                                "the Cholesky factorisation of the %zu-node banded contact "
-                                "system broke down (not numerically positive definite)", n);
-        tirenv_ring__band_solve(&r->A, wn);
-        double step = 0;
-        for (size_t i = 0; i < n; ++i)
-            step = fmax(step, fabs(wn[i] - w[i]));
-        /* The states at the solution: unchanged, it is the minimum. */
-        if (set_states(r, wn) == 0 || step <= smooth_step_tol) {
-            memcpy(w, wn, n * sizeof *w);
-            break;
-        }
-        /* Else a step towards it that lowers E enough. */
-        const double E0 = energy(r, q4, w, g);
-        double slope = 0;
-        for (size_t i = 0; i < n; ++i)
-            slope += g[i] * (wn[i] - w[i]);
-        double alpha = 1;
-        size_t b = 0;
-        for (; b < SMOOTH_BACKTRACK; ++b, alpha *= 0.5) {
-            for (size_t i = 0; i < n; ++i)
-                wt[i] = w[i] + alpha * (wn[i] - w[i]);
-            if (energy(r, q4, wt, NULL) <= E0 + smooth_sigma * alpha * slope)
-                break;
-        }
-        if (b == SMOOTH_BACKTRACK && step <= smooth_stall_tol) {
-            /* No step of at least 2^-20 of the way lowers E: w is the minimum to round-off,
-             * and the Newton point differs from it by a few points at zero compression
-             * flipping. (Shorter steps would "lower" E by its round-off alone.) */
-            memcpy(w, wn, n * sizeof *w);
-            set_states(r, w);
-            break;
-        }
-        memcpy(w, wt, n * sizeof *w);
-        set_states(r, w);
-    }
-    if (it == SMOOTH_MAX_ITER)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the continuous tread contact of %zu points on %zu nodes did not "
-                            "settle in %d Newton steps", r->n_pts, n, SMOOTH_MAX_ITER);
-    /* The factor of the final states, for dF_z/dz. */
-    assemble(r, q4, wt);
-    if (tirenv_ring__band_factor(&r->A))
+    const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, apply_cb,
+                                   points_energy, r->rhs};
+    int factored;
+    const int st = tirenv_ring__newton(r, &nw, w, wn, wt, g, &factored);
+    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the Cholesky factorisation of the %zu-node banded contact system "
                             "broke down (not numerically positive definite)", n);
+    if (st == TIRENV_RING_NEWTON_NOCONV)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the continuous tread contact of %zu points on %zu nodes did not "
+                            "settle in %d Newton steps", r->n_pts, n,
+                            TIRENV_RING_NEWTON_MAX_ITER);
+    /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
+     * change with it: the same matrix). */
+    if (dfz_dz && !factored) {
+        if (factor_cb(r, q4, wt))
+            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                                "the Cholesky factorisation of the %zu-node banded contact "
+                                "system broke down (not numerically positive definite)", n);
+    }
     double sum_c = 0, sum_s = 0;
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->w[j] = 0;
@@ -221,7 +275,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         q->f = 0;
         if (q->st == 0)
             continue;
-        const double k_b = RING_BELT_LAYER * q->k_t;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double dpsi;
         psi(q, k_b, t_r, q->e, &dpsi);
         q->f = q->omega * R * dpsi;
@@ -248,7 +302,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
             const tirenv_ring_point *q = &r->pts[k];
             if (q->st == 0)
                 continue;
-            const double k_b = RING_BELT_LAYER * q->k_t;
+            const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
             const double de = q->dd - ((1 - q->s) * wt[q->j - lo] + q->s * wt[q->j - lo + 1]);
             dF += q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0)) * de * q->cs;
         }

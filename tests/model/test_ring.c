@@ -510,6 +510,38 @@ static void test_buckling_refused(void **state)
     assert_null(tirenv_ring_alloc(t.springs.R0, &t.ring));
 }
 
+/* The continuous Winkler tread keeps its factor when the next system's matrix is the same
+ * (level ground, the same points in contact: src/model/ring_smooth.c): evaluations of one
+ * ring at heights a few tenths of a micrometre apart, each reusing the last one's factor, give
+ * the bits of a fresh ring evaluated at that height alone (the same final system, factorised
+ * afresh), and so does a height where more points touch (a new factor). A stale factor would
+ * be off by far more than a bit. */
+static void test_factor_reuse_is_exact(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_profile *p = flat_ground();
+    tirenv_ring *warm = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(warm);
+    const double zs[] = {0.6413, 0.6413 + 3.1e-7, 0.6413 - 2.3e-7, 0.6321, 0.6321 + 1.7e-7};
+    for (size_t k = 0; k < sizeof zs / sizeof zs[0]; ++k) {
+        tirenv_ring *cold = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(cold);
+        double fx1, fz1, d1, fx2, fz2, d2;
+        assert_int_equal(tirenv_ring_forces(warm, p, 0.0173, zs[k], &fx1, &fz1, &d1, NULL, NULL),
+                         0);
+        assert_int_equal(tirenv_ring_forces(cold, p, 0.0173, zs[k], &fx2, &fz2, &d2, NULL, NULL),
+                         0);
+        assert_true(fz1 > 1000);
+        assert_bits_equal(fz1, fz2);
+        assert_bits_equal(d1, d2);
+        assert_bits_equal(fx1, fx2);
+        tirenv_ring_free(cold);
+    }
+    tirenv_ring_free(warm);
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -523,6 +555,7 @@ int main(void)
         cmocka_unit_test(test_symmetry_and_derivative),
         cmocka_unit_test(test_lugs_roll_with_the_tread),
         cmocka_unit_test(test_buckling_refused),
+        cmocka_unit_test(test_factor_reuse_is_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 #include "model/ring_impl.h"
@@ -309,6 +310,176 @@ static void test_lugs(void **state)
     tirenv_model_free(lugged);
 }
 
+/* The model's state (tirenv_model_state_save / _restore) holds the ring's warm start, the
+ * belt's w and the tread's u included: evaluations after a restore repeat those after the save
+ * bit for bit, iterations included, with the Winkler and the shear-coupled tread. The positions
+ * are 1.7 mm apart, so that each solve starts from the last one's window; a restore after
+ * further positions used to start from their w and differ by round-off (about 4e-11 m). */
+static void test_state_restores_bits(void **state)
+{
+    (void)state;
+    tirenv_profile *p = tirenv_profile_cleat(0.1, 0.1);
+    for (int c = 0; c < 8; ++c) {
+        const int shear = c & 1;
+        const double x0 = case_x[c / 2];
+        tirenv_tire t = tirenv_tire_default();
+        t.ring.G_t = shear ? G_ON : 0;
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+        assert_non_null(m);
+        tirenv_diag diag;
+        assert_int_equal(tirenv_model_set(m, p, case_load[0], &diag), TIRENV_OK);
+        enum { BEFORE = 5, AFTER = 4 };
+        tirenv_point pt, first[AFTER], again[AFTER];
+        for (size_t k = 0; k < BEFORE; ++k)
+            assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)k, &pt, &diag),
+                             TIRENV_OK);
+        const size_t size = tirenv_model_state_size(m);
+        unsigned char *buf = malloc(size);
+        assert_non_null(buf);
+        assert_int_equal(tirenv_model_state_save(m, buf, size, &diag), TIRENV_OK);
+        for (size_t k = 0; k < AFTER; ++k)
+            assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)(BEFORE + k),
+                                               &first[k], &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_state_restore(m, buf, size, &diag), TIRENV_OK);
+        for (size_t k = 0; k < AFTER; ++k) {
+            assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)(BEFORE + k),
+                                               &again[k], &diag), TIRENV_OK);
+            if (memcmp(&first[k].z, &again[k].z, sizeof first[k].z) != 0 ||
+                memcmp(&first[k].fx, &again[k].fx, sizeof first[k].fx) != 0 ||
+                memcmp(&first[k].fz, &again[k].fz, sizeof first[k].fz) != 0 ||
+                first[k].iterations != again[k].iterations)
+                fail_msg("TREAD_SHEAR %g: position %zu after the restore: z %.17g against "
+                         "%.17g, fx %.17g against %.17g, iterations %zu against %zu",
+                         t.ring.G_t, BEFORE + k, again[k].z, first[k].z, again[k].fx,
+                         first[k].fx, again[k].iterations, first[k].iterations);
+        }
+        /* A twin that has evaluated nothing, given the state, goes on the same way. */
+        tirenv_model *twin = tirenv_model_alloc(tirenv_model_ring, &t);
+        assert_non_null(twin);
+        assert_int_equal(tirenv_model_set(twin, p, case_load[0], &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_state_restore(twin, buf, size, &diag), TIRENV_OK);
+        for (size_t k = 0; k < AFTER; ++k) {
+            assert_int_equal(tirenv_model_eval(twin, x0 + 0.0017 * (double)(BEFORE + k),
+                                               &again[k], &diag), TIRENV_OK);
+            if (memcmp(&first[k].z, &again[k].z, sizeof first[k].z) != 0 ||
+                memcmp(&first[k].fx, &again[k].fx, sizeof first[k].fx) != 0 ||
+                first[k].iterations != again[k].iterations)
+                fail_msg("TREAD_SHEAR %g: position %zu in the twin: z %.17g against %.17g, "
+                         "fx %.17g against %.17g, iterations %zu against %zu", t.ring.G_t,
+                         BEFORE + k, again[k].z, first[k].z, again[k].fx, first[k].fx,
+                         again[k].iterations, first[k].iterations);
+        }
+        tirenv_model_free(twin);
+        free(buf);
+        tirenv_model_free(m);
+    }
+    tirenv_profile_free(p);
+}
+
+/* tirenv_ring__tread_exterior, the belt outside the window (tirenv_ring_state's w there),
+ * against an independent solve: the whole ring's belt-and-tread stiffness written out node by
+ * node around the circle (the belt's stencil, the tread's compression k_c R dtheta between w
+ * and u, its shear k_s / (R dtheta) between neighbouring u), the window's w and u given, the
+ * exterior's unloaded equations solved densely by Gaussian elimination with partial pivoting.
+ * On a coarse ring (2 degrees, 180 nodes) so that the dense solve is small. Agreement to 1e-9
+ * of the largest |w|: both solve the same well-conditioned system, in different orders. */
+typedef struct {
+    long dj; /* node offset */
+    int f;   /* 0: w, 1: u */
+    double v; /* N/m */
+} coef;
+
+static void test_tread_exterior(void **state)
+{
+    (void)state;
+    tirenv_tire t = shear_tire();
+    t.ring.dtheta = 2 * M_PI / 180;
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *p = tirenv_profile_cleat(0.1, 0.05);
+    double fx, fz;
+    assert_int_equal(tirenv_ring_forces(r, p, -0.0613, 0.571, &fx, &fz, NULL, NULL, NULL), 0);
+    assert_true(fz > 1000);
+    const size_t M = r->M, lo = r->lo, n = r->n, ne = M - n, N = 2 * ne;
+    assert_true(n >= 6 && ne > 10);
+    double *w_out = malloc(M * sizeof *w_out), *A = calloc(N * (N + 1), sizeof *A);
+    assert_non_null(w_out);
+    assert_non_null(A);
+    assert_int_equal(tirenv_ring__tread_exterior(r, w_out), 0);
+    const double *s = tirenv_ring__belt_stencil(r->belt), *u = tirenv_ring__tread_u(r->tread);
+    const double R = r->R, dth = r->dth, k_t = t.ring.k_t;
+    const double k_g = TIRENV_RING_GROUND_LAYER * k_t;
+    const double kap = k_t * k_g / (k_g - k_t) * R * dth;
+    const double k_sh = tirenv_ring__tread_shear(&t.ring) / (R * dth);
+    /* Exterior unknown 2 e + f (f = 0: w, 1: u) of node (lo + n + e) mod M. */
+    for (size_t e = 0; e < ne; ++e) {
+        const size_t j = (lo + n + e) % M;
+        for (int f = 0; f < 2; ++f) {
+            double *row = A + (2 * e + f) * (N + 1);
+            /* The coefficients of the row's equation: (node offset, field, value). */
+            coef c[8];
+            size_t nc = 0;
+            if (f == 0) {
+                c[nc++] = (coef){0, 0, s[0] + kap};
+                c[nc++] = (coef){0, 1, -kap};
+                c[nc++] = (coef){-1, 0, s[1]};
+                c[nc++] = (coef){1, 0, s[1]};
+                c[nc++] = (coef){-2, 0, s[2]};
+                c[nc++] = (coef){2, 0, s[2]};
+            } else {
+                c[nc++] = (coef){0, 1, kap + 2 * k_sh};
+                c[nc++] = (coef){0, 0, -kap};
+                c[nc++] = (coef){-1, 1, -k_sh};
+                c[nc++] = (coef){1, 1, -k_sh};
+            }
+            for (size_t k = 0; k < nc; ++k) {
+                const size_t jk = (j + M + (size_t)(c[k].dj + 2) - 2) % M;
+                const size_t ek = (jk + M - lo - n) % M; /* its exterior index, if any */
+                if (ek < ne)
+                    row[2 * ek + (size_t)c[k].f] += c[k].v;
+                else /* a window node: known */
+                    row[N] -= c[k].v * (c[k].f == 0 ? r->w[jk] : u[jk]);
+            }
+        }
+    }
+    for (size_t k = 0; k < N; ++k) {
+        size_t piv = k;
+        for (size_t i = k + 1; i < N; ++i)
+            if (fabs(A[i * (N + 1) + k]) > fabs(A[piv * (N + 1) + k]))
+                piv = i;
+        for (size_t c = 0; c <= N; ++c) {
+            const double tmp = A[k * (N + 1) + c];
+            A[k * (N + 1) + c] = A[piv * (N + 1) + c];
+            A[piv * (N + 1) + c] = tmp;
+        }
+        for (size_t i = k + 1; i < N; ++i) {
+            const double f = A[i * (N + 1) + k] / A[k * (N + 1) + k];
+            for (size_t c = k; c <= N; ++c)
+                A[i * (N + 1) + c] -= f * A[k * (N + 1) + c];
+        }
+    }
+    for (size_t k = N; k-- > 0;) {
+        double v = A[k * (N + 1) + N];
+        for (size_t c = k + 1; c < N; ++c)
+            v -= A[k * (N + 1) + c] * A[c * (N + 1) + N];
+        A[k * (N + 1) + N] = v / A[k * (N + 1) + k];
+    }
+    double w_max = 0, w_ext = 0;
+    for (size_t j = lo; j < lo + n; ++j)
+        w_max = fmax(w_max, fabs(r->w[j]));
+    for (size_t e = 0; e < ne; ++e) {
+        const size_t j = (lo + n + e) % M;
+        assert_near(w_out[j], A[2 * e * (N + 1) + N], 1e-9 * w_max, 0);
+        w_ext = fmax(w_ext, fabs(w_out[j]));
+    }
+    /* Not trivially zero: the window's ends pull the exterior's belt. */
+    assert_true(w_ext > 1e-3 * w_max);
+    free(A);
+    free(w_out);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -318,6 +489,8 @@ int main(void)
         cmocka_unit_test(test_warm_starts_agree),
         cmocka_unit_test(test_derivative),
         cmocka_unit_test(test_lugs),
+        cmocka_unit_test(test_state_restores_bits),
+        cmocka_unit_test(test_tread_exterior),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

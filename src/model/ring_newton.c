@@ -1,0 +1,94 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The continuous contact's Newton driver (docs/models.md section 5.3), one for both treads:
+ * the Winkler tread (ring_smooth.c, unknowns w) and the shear-coupled one (ring_shear.c, w and u
+ * interleaved). Each minimises a convex, piecewise quadratic energy whose pieces are the
+ * quadrature points' states, so Newton's method with the states taken from the current iterate
+ * ends exactly, when a step does not change them; a backtracking line search on the energy
+ * makes it converge from anywhere. Where no step lowers the energy beyond its round-off (the
+ * states of a few points at zero compression flip back and forth), full Newton steps follow,
+ * a few at most: a consistent set of states is the unique minimiser whatever the start, and if
+ * a point keeps flipping the Newton point, closer to the minimum than the stall tolerance, is
+ * the answer. */
+#include <math.h>
+#include <string.h>
+#include "model/ring_impl.h"
+
+enum { NEWTON_BACKTRACK = 20, NEWTON_POLISH = 8 };
+static const double newton_sigma = 1e-4; /* Armijo's sufficient decrease */
+/* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
+ * point whose compression is zero to round-off carries no force either way. */
+static const double newton_step_tol = 1e-12;
+/* Where no step lowers E beyond round-off, a Newton step up to this long (m) is taken as
+ * settled, then polished by full steps. Seen at NODE_ANGLE 1/16 degree, 5.7e-7 m. */
+static const double newton_stall_tol = 1e-6;
+
+int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[], double xn[],
+                        double xt[], double g[], int *factored)
+{
+    const size_t N = nw->N;
+    for (size_t k = 0; k < r->n_pts; ++k)
+        r->pts[k].st = 255; /* none yet */
+    nw->set_states(r, x);
+    *factored = 0;
+    size_t polish = 0; /* full Newton steps taken after the line search stalled */
+    for (size_t it = 0; it < TIRENV_RING_NEWTON_MAX_ITER; ++it) {
+        if (nw->factor(r, nw->K, xn))
+            return TIRENV_RING_NEWTON_BREAKDOWN;
+        nw->solve(r, xn);
+        double step = 0;
+        for (size_t i = 0; i < N; ++i)
+            step = fmax(step, fabs(xn[i] - x[i]));
+        /* The states at the Newton point: unchanged, it is the minimum. */
+        const size_t changed = nw->set_states(r, xn);
+        if (changed == 0 || step <= newton_step_tol) {
+            memcpy(x, xn, N * sizeof *x);
+            *factored = changed == 0;
+            return TIRENV_RING_NEWTON_OK;
+        }
+        if (polish > 0) {
+            memcpy(x, xn, N * sizeof *x);
+            if (++polish > NEWTON_POLISH)
+                return TIRENV_RING_NEWTON_OK;
+            continue;
+        }
+        /* Else a step towards it that lowers E enough. Along x + alpha p (p = xn - x) the
+         * quadratic 1/2 x.K x is E_K + alpha Kx.p + 1/2 alpha^2 p.K p: one product with K
+         * for the whole line search, the points' share at each trial. */
+        nw->apply(r, nw->K, x, g);
+        for (size_t i = 0; i < N; ++i)
+            xt[i] = xn[i] - x[i];
+        nw->apply(r, nw->K, xt, nw->kp);
+        double E_K = 0, Kxp = 0, pKp = 0;
+        for (size_t i = 0; i < N; ++i) {
+            E_K += 0.5 * x[i] * g[i];
+            Kxp += g[i] * xt[i];
+            pKp += xt[i] * nw->kp[i];
+        }
+        const double E0 = E_K + nw->points(r, x, g);
+        double slope = 0;
+        for (size_t i = 0; i < N; ++i)
+            slope += g[i] * (xn[i] - x[i]);
+        double alpha = 1;
+        size_t b = 0;
+        for (; b < NEWTON_BACKTRACK; ++b, alpha *= 0.5) {
+            for (size_t i = 0; i < N; ++i)
+                xt[i] = x[i] + alpha * (xn[i] - x[i]);
+            const double E = E_K + alpha * Kxp + 0.5 * alpha * alpha * pKp +
+                             nw->points(r, xt, NULL);
+            if (E <= E0 + newton_sigma * alpha * slope)
+                break;
+        }
+        if (b == NEWTON_BACKTRACK && step <= newton_stall_tol) {
+            /* No step of at least 2^-20 of the way lowers E: x is the minimum to E's
+             * round-off, the Newton point differs from it by a few points at zero compression
+             * flipping. Take it, with its states, and polish. (Shorter steps would "lower" E
+             * by its round-off alone.) */
+            memcpy(x, xn, N * sizeof *x);
+            polish = 1;
+            continue;
+        }
+        memcpy(x, xt, N * sizeof *x);
+        nw->set_states(r, x);
+    }
+    return TIRENV_RING_NEWTON_NOCONV;
+}
