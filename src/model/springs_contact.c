@@ -520,17 +520,32 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
                 }
             }
         }
-        for (size_t e = f0; e <= f1; ++e) /* + 0 when nothing is raised: as wq + raise */
-            wc[e] = violated ? wq[e] + raise[e] : wq[e] + 0.0;
-        if (violated) {
+        /* A working row whose tip is raised leaves the set. With its own compliance it
+         * stood below its h (G w = h - c*lambda), so it is raised onto its row as well, which
+         * may release further rows: until every released row holds (raising only lifts the
+         * tread, so no row that holds stops holding; each pass releases a row or ends). */
+        for (int more = violated; more;) {
+            more = 0;
             for (size_t r = 0; r < n_rows; ++r) {
                 const tirenv_springs__cc_row *R = &c->rows[r];
-                if (c->in_w[r] && (raise[R->i] > 0 || (R->t > 0 && raise[R->j] > 0)))
-                    c->in_w[r] = 0;
+                if (!c->in_w[r] || !(raise[R->i] > 0 || (R->t > 0 && raise[R->j] > 0)))
+                    continue;
+                c->in_w[r] = 0;
+                const double s = R->t > 0 ? R->ga * (wq[R->i] + raise[R->i]) +
+                                                R->gb * (wq[R->j] + raise[R->j]) - R->h
+                                          : wq[R->i] + raise[R->i] - R->h;
+                if (s < -tol) { /* the weights sum to >= 1: -s on both tips lifts it by >= -s */
+                    raise[R->i] -= s;
+                    if (R->t > 0)
+                        raise[R->j] -= s;
+                    more = 1;
+                }
             }
-        } else {
-            at_min = 1;
         }
+        for (size_t e = f0; e <= f1; ++e) /* + 0 when nothing is raised: as wq + raise */
+            wc[e] = violated ? wq[e] + raise[e] : wq[e] + 0.0;
+        if (!violated)
+            at_min = 1;
     } else {
         for (size_t e = f0; e <= f1; ++e)
             wc[e] = 0;
@@ -674,7 +689,7 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             const tirenv_springs__cc_row *R = &c->rows[r];
             double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
             if (R->t > 0) {
-                rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j];
+                rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j] + R->dcmp_dz * c->lambda[r];
                 if (c->wpos[R->i] != SIZE_MAX)
                     dw[R->i] += R->dga_dz * c->lambda[r];
                 if (c->wpos[R->j] != SIZE_MAX)

@@ -520,7 +520,7 @@ static void test_factor_reuse_is_exact(void **state)
 {
     (void)state;
     const tirenv_tire t = tirenv_tire_default();
-    tirenv_profile *p = flat_ground();
+    tirenv_profile *p = tirenv_test_flat_ground();
     tirenv_ring *warm = tirenv_ring_alloc(t.springs.R0, &t.ring);
     assert_non_null(warm);
     const double zs[] = {0.6413, 0.6413 + 3.1e-7, 0.6413 - 2.3e-7, 0.6321, 0.6321 + 1.7e-7};
