@@ -30,6 +30,10 @@ typedef struct {
 /* Opens path; TIRENV_EIO with the reason if it cannot. */
 int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag);
 
+/* Reads fp (an open stream, closed by tirenv_csv__close) as the file name; never fails. */
+void tirenv_csv__open_stream(tirenv_csv__reader *r, FILE *fp, const char *name,
+                             tirenv_diag *diag);
+
 /* Advances to the next line with content, skipping blank lines and '#' comment lines;
  * accepts a UTF-8 byte-order mark and CRLF ends. Returns 1 for a line, 0 at the end of the
  * file, or a status negated (so < 0) with diag set: TIRENV_EIO on a read error, TIRENV_ENOMEM
