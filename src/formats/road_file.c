@@ -66,7 +66,8 @@ static ssize_t read_at(tirenv_road_file *f, size_t offset, void *buf, size_t n)
                 return got;
         }
     }
-    const int e = fill(f, offset + n < offset ? SIZE_MAX : offset + n);
+    /* At least one byte past offset (as read(2) returns what has come), or the end. */
+    const int e = n ? fill(f, offset == SIZE_MAX ? SIZE_MAX : offset + 1) : 0;
     if (e) {
         errno = e;
         return -1;
