@@ -1,8 +1,8 @@
-/* Roads from files for the commands that take --profile, opened once (tirenv_road_file): which track of a road that varies
- * across (--track, an OpenCRG file's lateral position), which side of an RDF road (--side), and
- * the tracks spread across the tire's width (--width, --tracks; docs/models.md section 13),
- * read whole or a row at a time. SPDX-License-Identifier: Apache-2.0 */
-#include <math.h>
+/* Roads from files for the commands that take --profile, each opened once (tirenv_road_file):
+ * which track of a road that varies across (--track, an OpenCRG file's lateral position), which
+ * side of an RDF road (--side), and the tracks spread across the tire's width (--width,
+ * --tracks; docs/models.md section 13), read whole or a row at a time.
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <string.h>
 

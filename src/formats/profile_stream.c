@@ -47,10 +47,9 @@ int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
     memcpy(r->path, name, len);
     tirenv_csv__open_stream(&r->rd, fp, r->path, diag);
     int status;
-    const char *path = name;
     const int got = tirenv_csv__next(&r->rd);
     if (got == 0)
-        status = tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
+        status = tirenv_error(diag, TIRENV_EPARSE, name, 0, "",
                               "no header line (only blank or comment lines); expected the "
                               "header 'x_m,z_m', then data rows");
     else if (got < 0)
