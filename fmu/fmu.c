@@ -152,17 +152,21 @@ fmi2Status fmu__setup(fmu_instance *f)
      * road's track is the long section at v = track. Several tracks across a width are the
      * CLI's (tirenv envelope --tracks, which can write the effective road for this FMU as a
      * road file): the FMU evaluates one. */
-    tirenv_profile_format format;
-    if (tirenv_profile_detect(path, &format, &diag))
+    tirenv_road_file *road;
+    if (tirenv_road_file_open(path, &road, &diag))
         return fmu__fail_diag(f, "road_file", &diag);
-    if (format == TIRENV_PROFILE_CRG && v->width > 0)
+    if (tirenv_road_file_format(road) == TIRENV_PROFILE_CRG && v->width > 0) {
+        tirenv_road_file_free(road);
         return fmu__fail(f, "width: %g m over the OpenCRG road %s: the FMU evaluates one "
                          "track (width 0); for the tire's width run 'tirenv envelope --tracks N' "
                          "and give its effective road (-o ROAD.crg) as road_file", v->width,
                          v->road_file);
+    }
     tirenv_profile_source src = tirenv_profile_source_default();
     src.crg.v = v->track;
-    if (tirenv_profile_read_file(path, &src, &f->road, &diag))
+    const int status = tirenv_road_file_read(road, &src, 1, NULL, &f->road, &diag);
+    tirenv_road_file_free(road);
+    if (status)
         return fmu__fail_diag(f, "road_file", &diag);
 
     if (!(f->m = tirenv_model_alloc(type, &f->tire)))

@@ -86,15 +86,19 @@ typedef struct { size_t cylinder_segments; size_t sine_points_per_period; }
 tirenv_profile_resolution tirenv_profile_resolution_default(void);
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);
 
-/* crg.h, rdf.h, profile_file.h: a road file of any format, one track of it */
+/* crg.h, rdf.h, profile_file.h: a road file of any format, opened once (the library's one
+ * road reader), one track of it */
 typedef struct { double v; int border_mode_v; int grid_nan_mode; ...; } tirenv_crg_track_spec;
 typedef enum { TIRENV_RDF_MEAN = 0, TIRENV_RDF_LEFT, TIRENV_RDF_RIGHT } tirenv_rdf_side;
 int tirenv_rdf_side_find(const char *name, tirenv_rdf_side *side);
 typedef struct { tirenv_crg_track_spec crg; tirenv_rdf_side rdf_side; ...; }
     tirenv_profile_source;
 tirenv_profile_source tirenv_profile_source_default(void);
-int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
-                             tirenv_profile **out, tirenv_diag *diag);
+typedef struct tirenv_road_file tirenv_road_file;
+int tirenv_road_file_open(const char *path, tirenv_road_file **out, tirenv_diag *diag);
+int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                          const double v[], tirenv_profile *out[], tirenv_diag *diag);
+void tirenv_road_file_free(tirenv_road_file *f);
 
 /* road.h */
 typedef struct {

@@ -38,23 +38,52 @@ tirenv_profile_source tirenv_profile_source_default(void);
  * else CSV. */
 tirenv_profile_format tirenv_profile_detect_memory(const void *data, size_t size);
 
-/* The same for a file (its first 64 KB); TIRENV_EIO if it cannot be read. */
-int tirenv_profile_detect(const char *path, tirenv_profile_format *f, tirenv_diag *diag);
-
 /* The format a file name's extension names (.csv, .crg, .rdf, any case); TIRENV_EINVAL for
  * another name. */
 int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f);
 
-/* Reads path, of whatever format its content shows, as one profile: a CSV whole, a CRG's
- * track (src->crg), an RDF road (src->rdf_side). src NULL means the defaults. Errors name
- * file, line and field. *out is NULL on failure. */
+/* ---- the one road reader -------------------------------------------------------------- */
+
+/* Bytes of a pipe or a device (not a regular file) that an open road file keeps in memory:
+ * it can be read only once, so what is read of it is kept for every reader (256 MiB). */
+#define TIRENV_ROAD_FILE_PIPE_MAX 268435456
+
+/* A road file opened once, its format told once by its first 64 KB
+ * (tirenv_profile_detect_memory), from which any number of profiles and row readers are then
+ * taken: the commands that take --profile, the FMU and the Python module read roads through
+ * it. A regular file is read where asked, each reader at its own position; a pipe or a
+ * device (a FIFO, /dev/stdin) is read as far as a reader asks and kept (at most
+ * TIRENV_ROAD_FILE_PIPE_MAX bytes; an OpenCRG or RDF road is read to its end at once). */
+typedef struct tirenv_road_file tirenv_road_file;
+
+/* Opens path and tells its format; TIRENV_EIO if it cannot be opened or read or is a
+ * directory. *out is NULL on failure. */
+int tirenv_road_file_open(const char *path, tirenv_road_file **out, tirenv_diag *diag);
+/* The format its content shows. */
+tirenv_profile_format tirenv_road_file_format(const tirenv_road_file *f);
+/* The path it was opened by (owned by f). */
+const char *tirenv_road_file_name(const tirenv_road_file *f);
+void tirenv_road_file_free(tirenv_road_file *f);  /* NULL is a no-op */
+
+/* The format of the file at path, by content (its first 64 KB): tirenv_road_file_open's. */
+int tirenv_profile_detect(const char *path, tirenv_profile_format *f, tirenv_diag *diag);
+
+/* Reads n >= 1 tracks of f at the lateral positions v[n] (m) into out[n] (each the caller's
+ * to free): a CRG's tracks as tirenv_crg_track with src->crg but v[i]; a CSV or an RDF road
+ * (src->rdf_side) is 2-D, the same on every track, so out[i] are copies of one profile. v
+ * NULL: every track at src->crg.v; src NULL means the defaults. Errors name file, line and
+ * field; on failure every out[i] is NULL. */
+int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                          const double v[], tirenv_profile *out[], tirenv_diag *diag);
+
+/* The OpenCRG road in f (a .crg by content), as tirenv_crg_open reads it; the caller frees it
+ * (tirenv_crg_free) before f. */
+int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *diag);
+
+/* tirenv_road_file_read of a file opened for this one read: one track (src NULL: the
+ * defaults), or n. */
 int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
                              tirenv_profile **out, tirenv_diag *diag);
-
-/* Reads n >= 1 tracks of path at the lateral positions v[n] (m) into out[n] (each the
- * caller's to free): a CRG's tracks as tirenv_crg_track with src->crg but v[i] (the file
- * opened once); a CSV or an RDF road is 2-D, the same on every track, so out[i] are copies of
- * one profile. v NULL: every track at src->crg.v. On failure every out[i] is NULL. */
 int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *src, size_t n,
                                const double v[], tirenv_profile *out[], tirenv_diag *diag);
 
@@ -66,8 +95,12 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
  * 2-D: every track gets its height. */
 typedef struct tirenv_profile_file_reader tirenv_profile_file_reader;
 
-/* Opens path (format by content) for n >= 1 tracks at v[n] (m; v NULL: every track at
- * src->crg.v); src NULL means the defaults. */
+/* A reader of f from its start for n >= 1 tracks at v[n] (m; v NULL: every track at
+ * src->crg.v); src NULL means the defaults. f must outlive it; several may be open at once. */
+int tirenv_road_file_reader(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                            const double v[], tirenv_profile_file_reader **out,
+                            tirenv_diag *diag);
+/* The same on path, opened for this reader alone (freed with it). */
 int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_source *src,
                                     size_t n, const double v[],
                                     tirenv_profile_file_reader **out, tirenv_diag *diag);
@@ -115,12 +148,13 @@ typedef struct {
     double x_start, y_start;       /* .crg: the reference line at x_from in the x/y plane, m */
     double phi_start;              /* .crg: its heading, rad */
     double z_start;                /* .crg: the road's height at x_from on the track, m */
-    const char *on_crg;            /* .crg: the OpenCRG road file the positions run along, or
-                                    * NULL; open then takes x_start, y_start, phi_start and
-                                    * z_start from it (its straight reference line at u =
-                                    * x_from, its heading, its height on the track v_track
-                                    * there). A curved road (a heading channel) is refused: its
-                                    * effective road on a straight line would lie beside it. */
+    tirenv_road_file *on_crg;      /* .crg: the open OpenCRG road (tirenv_road_file_open) the
+                                    * positions run along, or NULL; open then takes x_start,
+                                    * y_start, phi_start and z_start from it (its straight
+                                    * reference line at u = x_from, its heading, its height on
+                                    * the track v_track there). A curved road (a heading
+                                    * channel) is refused: its effective road on a straight
+                                    * line would lie beside it. */
     tirenv_crg_encoding encoding;  /* .crg */
     const char *comment;           /* what it is, lines of at most 72 characters (copied) */
 } tirenv_road_writer_layout;

@@ -231,9 +231,9 @@ void cli_model_warnings(const char *cmd, const tirenv_model *m);
 int cli_positions_check(double x_from, double x_to, double dx, double max, size_t *n_out);
 int cli_positions(double x_from, double x_to, double dx, double **x_out, size_t *n_out);
 
-/* The obstacle the options ask for (one required): a generated one, or the --profile file's
- * track (--track, --side); returns an exit code. */
-int cli_profile(const cli_options *o, tirenv_profile **out);
+/* The generated obstacle the options ask for (parse.c; one required, not --profile); returns
+ * an exit code. */
+int cli_obstacle(const cli_options *o, tirenv_profile **out);
 
 /* ---- roads from files, and tracks across the width (road.c) --------------------------- */
 
@@ -242,6 +242,7 @@ int cli_profile(const cli_options *o, tirenv_profile **out);
 /* The tracks the obstacle options ask for. */
 typedef struct {
     int from_file;                 /* --profile */
+    tirenv_road_file *file;        /* it, open (cli_road_free closes it); NULL if not a file */
     tirenv_profile_format format;  /* its format (by content); CSV for a generated obstacle */
     tirenv_profile_source src;     /* --track, --side */
     size_t n;                      /* tracks evaluated: --tracks over a road that varies across
@@ -250,14 +251,22 @@ typedef struct {
     double v[CLI_MAX_TRACKS];      /* their lateral positions, m */
 } cli_road;
 
-/* Checks --track, --side, --width and --tracks against the obstacle and the file's format and
- * places the tracks (tire: the default width, [DIMENSION] WIDTH; NULL where --tracks is not
- * taken). Prints and returns an exit code. */
+/* Opens the --profile file (once: every read below takes r->file), checks --track, --side,
+ * --width and --tracks against the obstacle and the file's format and places the tracks
+ * (tire: the default width, [DIMENSION] WIDTH; NULL where --tracks is not taken). Prints and
+ * returns an exit code; cli_road_free(r) after it, whatever it returned. */
 int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r);
-/* The tracks' profiles, whole: r->n of them into out (each to free). Returns an exit code. */
+/* The tracks' profiles, whole: r->n of them into out (each to free), from the open file or
+ * the generated obstacle. Returns an exit code. */
 int cli_road_read(const cli_options *o, const cli_road *r, tirenv_profile *out[]);
-/* The --profile file read a row of r->n heights at a time, for --stream. */
-int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_reader **out);
+/* The open --profile file read a row of r->n heights at a time, from its start, for
+ * --stream; several readers may be open at once. */
+int cli_road_open(const cli_road *r, tirenv_profile_file_reader **out);
+/* Closes the file; safe after a failed cli_road_plan, and twice. */
+void cli_road_free(cli_road *r);
+/* The obstacle the options ask for (one required): a generated one, or the --profile file's
+ * track (--track, --side), the file opened for this one read; returns an exit code. */
+int cli_profile(const cli_options *o, tirenv_profile **out);
 /* "FILE", "FILE, track v = 0.9 m", "FILE, 5 tracks over 0.38 m around v = 0.9 m", or the
  * generated obstacle as asked for. */
 void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n);

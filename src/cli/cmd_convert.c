@@ -54,6 +54,7 @@ static void usage(FILE *fp)
 
 typedef struct {
     const char *in, *out;
+    tirenv_road_file *file;    /* --profile, open: read once, its format told once */
     int have_track;
     double pad;                /* --pad: flat ground before and after a wall at an end, m */
     tirenv_profile_source src;
@@ -229,7 +230,7 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
                     tirenv_diag *diag)
 {
     tirenv_crg *crg;
-    int status = tirenv_crg_open(cv->in, &crg, diag);
+    int status = tirenv_road_file_crg(cv->file, &crg, diag);
     if (status)
         return status;
     *n = tirenv_crg_rows(crg);
@@ -321,12 +322,14 @@ int cli_convert_main(int argc, char *argv[])
                   "device, a FIFO or '-' (written as CSV)", cv.out);
         return CLI_EXIT_USAGE;
     }
-    int status = tirenv_profile_detect(cv.in, &from, &diag);
+    int status = tirenv_road_file_open(cv.in, &cv.file, &diag);
     if (status)
         return cli_fail(status, &diag);
+    from = tirenv_road_file_format(cv.file);
     if (cv.have_track && from != TIRENV_PROFILE_CRG) {
         cli_error("convert: --track applies to a .crg input; %s is %s", cv.in,
                   from == TIRENV_PROFILE_RDF ? "an RDF road (use --side)" : "a CSV profile");
+        tirenv_road_file_free(cv.file);
         return CLI_EXIT_USAGE;
     }
     size_t n = 0;
@@ -335,7 +338,7 @@ int cli_convert_main(int argc, char *argv[])
         status = from_crg(&cv, to, &n, range, &diag);
     } else {
         tirenv_profile *p;
-        if (!(status = tirenv_profile_read_file(cv.in, &cv.src, &p, &diag))) {
+        if (!(status = tirenv_road_file_read(cv.file, &cv.src, 1, NULL, &p, &diag))) {
             if (to == TIRENV_PROFILE_CSV)
                 status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
             else if (to != TIRENV_PROFILE_CRG || !(status = pad_walls(&cv, &p, &diag)))
@@ -351,6 +354,7 @@ int cli_convert_main(int argc, char *argv[])
             tirenv_profile_free(p);
         }
     }
+    tirenv_road_file_free(cv.file);
     if (status)
         return cli_fail(status, &diag);
     fprintf(stderr, "tirenv convert: %s (%s) -> %s (%s): %zu %s, x %g to %g m", cv.in,

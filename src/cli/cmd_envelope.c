@@ -253,7 +253,7 @@ static int road_out_open(const run *r, const tirenv_model *m, double load, doubl
     const tirenv_road_writer_layout l = {
         .x_from = x_from, .dx = dx, .n = n, .half_width = 0.5 * width,
         .v_track = on_crg ? r->road.src.crg.v : 0, .encoding = r->e->encoding,
-        .comment = comment, .on_crg = on_crg ? r->o->obstacle_arg : NULL};
+        .comment = comment, .on_crg = on_crg ? r->road.file : NULL};
     return tirenv_road_writer_open(r->o->output, r->out_format, &l, w, diag);
 }
 
@@ -293,8 +293,8 @@ static int stream_row(void *ctx, const tirenv_point *pt)
 static int stream_extent(const run *r, double *first, double *last, tirenv_diag *diag)
 {
     tirenv_profile_file_reader *in;
-    int status = tirenv_profile_file_reader_open(r->o->obstacle_arg, &r->road.src, r->road.n,
-                                                 r->road.v, &in, diag);
+    int status = tirenv_road_file_reader(r->road.file, &r->road.src, r->road.n, r->road.v, &in,
+                                         diag);
     int got = 1;
     double z[CLI_MAX_TRACKS];
     for (size_t k = 0; !status && got; ++k) {
@@ -325,8 +325,8 @@ static tirenv_positions sweep(const cli_options *o, const tirenv_model *m, doubl
     return s;
 }
 
-/* --relative-to ground, streamed: the level under the centre, from the file read a second
- * time at --track alone (*in and *level NULL otherwise). */
+/* --relative-to ground, streamed: the level under the centre, from a second reader of the
+ * open file at --track alone (*in and *level NULL otherwise). */
 static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_reader **in,
                       tirenv_level_stream **level, tirenv_diag *diag)
 {
@@ -335,8 +335,7 @@ static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_r
     if (r->e->relative != CLI_RELATIVE_GROUND)
         return TIRENV_OK;
     const double v = r->road.src.crg.v;
-    int status = tirenv_profile_file_reader_open(r->o->obstacle_arg, &r->road.src, 1, &v, in,
-                                                 diag);
+    int status = tirenv_road_file_reader(r->road.file, &r->road.src, 1, &v, in, diag);
     const double width = tirenv_level_width(tirenv_model_tire(m));
     if (!status && !(*level = tirenv_level_stream_alloc(tirenv_profile_file_reader_source, *in,
                                                         width)))
@@ -367,7 +366,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     tirenv_diag_clear(&so.diag);
     const char *path = o->output ? o->output : "-";
     const size_t n = tirenv_positions_count(x_from, x_to, dx);
-    int code = cli_road_open(o, &r->road, &in);
+    int code = cli_road_open(&r->road, &in);
     if (code)
         return code;
     tirenv_profile_file_reader *in_level = NULL;
@@ -625,6 +624,7 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
     tirenv_model_free(m);
     for (size_t k = 0; k < r.road.n; ++k)
         tirenv_profile_free(prof[k]);
+    cli_road_free(&r.road);
     return code;
 }
 

@@ -396,6 +396,29 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
     return code ? code : CLI_GO_ON;
 }
 
+int cli_parse_crg_nan_mode(void *dst, const char *arg)
+{
+    tirenv_crg_track_spec *spec = dst;
+    double value;
+    if (strcmp(arg, "keep") == 0) {
+        spec->grid_nan_mode = 0;
+    } else if (strcmp(arg, "nearest") == 0) {
+        spec->grid_nan_mode = 2;
+        spec->grid_nan_offset = 0;
+    } else if (strcmp(arg, "file") == 0) {
+        spec->grid_nan_mode = -1;
+        spec->grid_nan_offset = NAN;
+    } else if (cli_parse_double(arg, &value) == 0) {
+        spec->grid_nan_mode = 1;  /* zero, plus the offset: the value */
+        spec->grid_nan_offset = value;
+    } else {
+        cli_error("--crg-nan-mode: expected keep, nearest, file or a height in m, got '%s'",
+                  arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 /* ---- help ------------------------------------------------------------------------------- */
 
 void cli_help_tire(FILE *fp, int with_method)
@@ -458,17 +481,12 @@ void cli_help_obstacle(FILE *fp)
 
 /* ---- the obstacle ----------------------------------------------------------------------- */
 
-int cli_profile(const cli_options *o, tirenv_profile **out)
+int cli_obstacle(const cli_options *o, tirenv_profile **out)
 {
     const double *s = o->shape;
     const tirenv_profile_resolution res = tirenv_profile_resolution_default();
     *out = NULL;
     switch (o->obstacle) {
-    case CLI_PROFILE: {
-        cli_road r;
-        const int code = cli_road_plan(o, NULL, &r);
-        return code ? code : cli_road_read(o, &r, out);
-    }
     case CLI_CLEAT: *out = tirenv_profile_cleat(s[0], s[1]); break;
     case CLI_STEP: *out = tirenv_profile_step(s[0], s[1]); break;
     case CLI_TRAPEZOID: *out = tirenv_profile_trapezoid(s[0], s[1], s[2]); break;
@@ -477,6 +495,7 @@ int cli_profile(const cli_options *o, tirenv_profile **out)
     case CLI_SINE:
         *out = tirenv_profile_sine(s[0], s[1], s[2], res.sine_points_per_period);
         break;
+    case CLI_PROFILE:  /* a file: cli_road_read's (road.c) */
     default:
         cli_error("an obstacle option is required (--cleat, --step, --trapezoid, --triangle, "
                   "--cylinder, --sine or --profile)");

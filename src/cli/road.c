@@ -1,8 +1,8 @@
-/* Roads from files for the commands that take --profile: which track of a road that varies
- * across (--track, an OpenCRG file's lateral position), which side of an RDF road (--side), and
- * the tracks spread across the tire's width (--width, --tracks; docs/models.md section 13),
- * read whole or a row at a time. SPDX-License-Identifier: Apache-2.0 */
-#include <math.h>
+/* Roads from files for the commands that take --profile, each opened once (tirenv_road_file):
+ * which track of a road that varies across (--track, an OpenCRG file's lateral position), which
+ * side of an RDF road (--side), and the tracks spread across the tire's width (--width,
+ * --tracks; docs/models.md section 13), read whole or a row at a time.
+ * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <string.h>
 
@@ -34,29 +34,6 @@ void cli_help_road(FILE *fp, int with_tracks)
               fp);
 }
 
-int cli_parse_crg_nan_mode(void *dst, const char *arg)
-{
-    tirenv_crg_track_spec *spec = dst;
-    double value;
-    if (strcmp(arg, "keep") == 0) {
-        spec->grid_nan_mode = 0;
-    } else if (strcmp(arg, "nearest") == 0) {
-        spec->grid_nan_mode = 2;
-        spec->grid_nan_offset = 0;
-    } else if (strcmp(arg, "file") == 0) {
-        spec->grid_nan_mode = -1;
-        spec->grid_nan_offset = NAN;
-    } else if (cli_parse_double(arg, &value) == 0) {
-        spec->grid_nan_mode = 1;  /* zero, plus the offset: the value */
-        spec->grid_nan_offset = value;
-    } else {
-        cli_error("--crg-nan-mode: expected keep, nearest, file or a height in m, got '%s'",
-                  arg);
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
-}
-
 int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
 {
     memset(r, 0, sizeof *r);
@@ -73,12 +50,13 @@ int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
         cli_error("--width W spreads the tracks of --tracks N: give --tracks too");
         return CLI_EXIT_USAGE;
     }
-    if (r->from_file) {
+    if (r->from_file) {  /* opened once, its format told once: every read takes r->file */
         tirenv_diag diag;
         tirenv_diag_clear(&diag);
-        const int status = tirenv_profile_detect(o->obstacle_arg, &r->format, &diag);
+        const int status = tirenv_road_file_open(o->obstacle_arg, &r->file, &diag);
         if (status)
             return cli_fail(status, &diag);
+        r->format = tirenv_road_file_format(r->file);
     }
     if (o->have_track && r->format != TIRENV_PROFILE_CRG) {
         cli_error("--track applies to an OpenCRG road; %s is %s, the same on every track",
@@ -128,26 +106,41 @@ int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
 
 int cli_road_read(const cli_options *o, const cli_road *r, tirenv_profile *out[])
 {
+    for (size_t k = 1; k < r->n; ++k)
+        out[k] = NULL;
+    if (!r->from_file)
+        return cli_obstacle(o, &out[0]);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    if (!r->from_file) {
-        const int code = cli_profile(o, &out[0]);
-        for (size_t k = 1; k < r->n; ++k)
-            out[k] = NULL;
-        return code;
-    }
-    const int status = tirenv_profile_read_tracks(o->obstacle_arg, &r->src, r->n, r->v, out,
-                                                  &diag);
+    const int status = tirenv_road_file_read(r->file, &r->src, r->n, r->v, out, &diag);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
 
-int cli_road_open(const cli_options *o, const cli_road *r, tirenv_profile_file_reader **out)
+int cli_road_open(const cli_road *r, tirenv_profile_file_reader **out)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_profile_file_reader_open(o->obstacle_arg, &r->src, r->n, r->v,
-                                                       out, &diag);
+    const int status = tirenv_road_file_reader(r->file, &r->src, r->n, r->v, out, &diag);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
+void cli_road_free(cli_road *r)
+{
+    tirenv_road_file_free(r->file);
+    r->file = NULL;
+}
+
+int cli_profile(const cli_options *o, tirenv_profile **out)
+{
+    *out = NULL;
+    if (o->obstacle != CLI_PROFILE)
+        return cli_obstacle(o, out);
+    cli_road r;
+    int code = cli_road_plan(o, NULL, &r);
+    if (!code)
+        code = cli_road_read(o, &r, out);
+    cli_road_free(&r);
+    return code;
 }
 
 void cli_road_label(const cli_options *o, const cli_road *r, char *buf, size_t n)

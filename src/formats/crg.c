@@ -74,6 +74,20 @@ int tirenv_crg_open(const char *path, tirenv_crg **out, tirenv_diag *diag)
     return open_source(c, out, diag);
 }
 
+int tirenv_crg__open_source(const tirenv_source *from, tirenv_crg **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_crg *c = calloc(1, sizeof *c);
+    if (!c)
+        return tirenv_error(diag, TIRENV_ENOMEM, from->name, 0, "", "out of memory");
+    const int status = tirenv_source__share(&c->src, from, diag);
+    if (status) {
+        free(c);
+        return status;
+    }
+    return open_source(c, out, diag);
+}
+
 int tirenv_crg_open_memory(const void *data, size_t size, const char *name, tirenv_crg **out,
                            tirenv_diag *diag)
 {

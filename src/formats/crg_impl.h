@@ -109,6 +109,10 @@ struct tirenv_crg {
  * fills everything above the rows. */
 int tirenv_crg__parse_header(tirenv_crg *c, tirenv_diag *diag);
 
+/* tirenv_crg_open on a source another owns (an open road file's, tirenv_road_file), which
+ * must outlive the handle. */
+int tirenv_crg__open_source(const tirenv_source *from, tirenv_crg **out, tirenv_diag *diag);
+
 /* Works out the row count from the data block, checks every row once and fills the rows part
  * (count, checkpoints, rz). Needs the header. */
 int tirenv_crg__scan(tirenv_crg *c, tirenv_diag *diag);

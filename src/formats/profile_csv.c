@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "formats/profile_csv_impl.h"
 #include "io/io.h"
 
 enum { FIELDS = 2 };
@@ -60,13 +61,12 @@ static int read_row(tirenv_csv__reader *rd, rows *r, char prev_x[32])
     return TIRENV_OK;
 }
 
-static int read_rows(const char *path, rows *r, tirenv_diag *diag)
+/* The rows of an open reader (closed here), named rd->file in messages. */
+static int read_rows(tirenv_csv__reader *rd, rows *r, tirenv_diag *diag)
 {
-    tirenv_csv__reader rd;
-    int status = tirenv_csv__open(&rd, path, diag);
-    if (status)
-        return status;
-    int got = tirenv_csv__next(&rd);
+    const char *path = rd->file;
+    int status = TIRENV_OK;
+    int got = tirenv_csv__next(rd);
     if (got == 0)
         status = tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
                               "no header line (only blank or comment lines); expected the "
@@ -74,27 +74,29 @@ static int read_rows(const char *path, rows *r, tirenv_diag *diag)
     else if (got < 0)
         status = -got;  /* a line that cannot be read (a NUL byte): never skipped */
     else
-        status = tirenv_csv__header(&rd, names, FIELDS);
+        status = tirenv_csv__header(rd, names, FIELDS);
     char prev_x[32] = "";
-    while (status == TIRENV_OK && (got = tirenv_csv__next(&rd)) > 0)
-        status = read_row(&rd, r, prev_x);
+    while (status == TIRENV_OK && (got = tirenv_csv__next(rd)) > 0)
+        status = read_row(rd, r, prev_x);
     if (status == TIRENV_OK && got < 0)
         status = -got;
     if (status == TIRENV_OK && r->n == 0)
         status = tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
                               "no data rows after the header; expected at least one 'x,z' "
                               "row");
-    tirenv_csv__close(&rd);
+    tirenv_csv__close(rd);
     return status;
 }
 
-/* The file line of data row k (1-based), read again: only an error needs it, and a table of
- * every row's line would cost more memory than the vertices (8 MB a million rows). */
-static size_t line_of_row(const char *path, size_t k)
+/* The file line of data row k (1-based), read again from the stream again() opens (NULL:
+ * no line): only an error needs it, and a table of every row's line would cost more memory
+ * than the vertices (8 MB a million rows). */
+static size_t line_of_row(FILE *fp, size_t k)
 {
-    tirenv_csv__reader rd;
-    if (tirenv_csv__open(&rd, path, NULL))
+    if (!fp)
         return 0;
+    tirenv_csv__reader rd;
+    tirenv_csv__open_stream(&rd, fp, "", NULL);
     size_t line = 0;
     for (size_t row = 0; row <= k && tirenv_csv__next(&rd) > 0; ++row)  /* row 0: header */
         line = rd.line;
@@ -105,16 +107,18 @@ static size_t line_of_row(const char *path, size_t k)
 /* After the rows parse, tirenv_profile_validate has the last word (e.g. three vertices at
  * one x); its vertex index is turned back into the file line. tirenv_profile_alloc
  * validates too: it is asked first, and only a refusal runs the check that says why. */
-int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag)
+static int read_csv(tirenv_csv__reader *rd, FILE *(*again)(void *ctx), void *ctx,
+                    tirenv_profile **out, tirenv_diag *diag)
 {
-    *out = NULL;
+    const char *path = rd->file;
     rows r = {0};
-    int status = read_rows(path, &r, diag);
+    int status = read_rows(rd, &r, diag);
     if (status == TIRENV_OK && !(*out = tirenv_profile_alloc(r.n, r.x, r.z))) {
         tirenv_diag d;
         tirenv_diag_clear(&d);
         if (tirenv_profile_validate(r.n, r.x, r.z, &d) != TIRENV_OK) {
-            const size_t line = d.line >= 1 && d.line <= r.n ? line_of_row(path, d.line) : 0;
+            const size_t line = d.line >= 1 && d.line <= r.n ? line_of_row(again(ctx), d.line)
+                                                             : 0;
             const char *field = strcmp(d.field, "x") == 0   ? "x_m"
                                 : strcmp(d.field, "z") == 0 ? "z_m"
                                                             : d.field;
@@ -126,4 +130,23 @@ int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag 
     free(r.x);
     free(r.z);
     return status;
+}
+
+static FILE *open_path(void *path) { return fopen(path, "r"); }
+
+int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_csv__reader rd;
+    const int status = tirenv_csv__open(&rd, path, diag);
+    return status ? status : read_csv(&rd, open_path, (void *)path, out, diag);
+}
+
+int tirenv_profile_csv__read(FILE *fp, const char *name, FILE *(*again)(void *ctx), void *ctx,
+                             tirenv_profile **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_csv__reader rd;
+    tirenv_csv__open_stream(&rd, fp, name, diag);
+    return read_csv(&rd, again, ctx, out, diag);
 }

@@ -1,17 +1,28 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* Private to src/formats: a profile CSV ("x_m,z_m", as tirenv_profile_read_csv) read one
- * vertex at a time, the CSV case of the one public streaming reader,
- * tirenv_profile_file_reader (profile_reader.c). */
+/* Private to src/formats: a profile CSV ("x_m,z_m", as tirenv_profile_read_csv) read from a
+ * stream the open road file gives (tirenv_road_file, road_file.c), whole or one vertex at a
+ * time, the CSV case of the one public streaming reader, tirenv_profile_file_reader
+ * (profile_reader.c). */
 #ifndef TIRENV_FORMATS_PROFILE_CSV_IMPL_H
 #define TIRENV_FORMATS_PROFILE_CSV_IMPL_H
 
+#include <stdio.h>
+
 #include "tirenv/error.h"
+#include "tirenv/profile.h"
+
+/* Reads fp (closed here) whole, named name in messages, as tirenv_profile_read_csv; again(ctx)
+ * opens the same text from its start (or returns NULL) for the line of an error that only the
+ * whole profile shows. *out is NULL on failure. */
+int tirenv_profile_csv__read(FILE *fp, const char *name, FILE *(*again)(void *ctx), void *ctx,
+                             tirenv_profile **out, tirenv_diag *diag);
 
 typedef struct tirenv_profile_csv__reader tirenv_profile_csv__reader;
 
-/* Opens path and checks its header; *out is NULL on failure (diag names file and line). */
-int tirenv_profile_csv__reader_open(const char *path, tirenv_profile_csv__reader **out,
-                                    tirenv_diag *diag);
+/* Reads fp (closed by the reader, or here on failure), named name in messages, and checks
+ * its header; *out is NULL on failure (diag names file and line). */
+int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
+                                    tirenv_profile_csv__reader **out, tirenv_diag *diag);
 
 /* The next vertex (m) in *x, *z with *got = 1, or *got = 0 at the end of the file. Applies
  * the checks of tirenv_profile_read_csv (numbers, x non-decreasing, at most two vertices at

@@ -1,14 +1,13 @@
-/* One entry point for profiles in any road file: the format told by content when reading,
- * by extension when writing. SPDX-License-Identifier: Apache-2.0 */
+/* The rules of road-file formats, each written once: told by content when reading (the open
+ * road file, road_file.c, applies them), by extension when writing; and the writers.
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/profile_file.h"
 
 #include <ctype.h>
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/stat.h>
 
 #include "tirenv/numtext.h"
 #include "tirenv/outfile.h"
@@ -68,42 +67,6 @@ tirenv_profile_format tirenv_profile_detect_memory(const void *data, size_t size
     return TIRENV_PROFILE_CSV;
 }
 
-int tirenv_profile_detect(const char *path, tirenv_profile_format *f, tirenv_diag *diag)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", strerror(errno));
-    /* fopen takes a directory; only the first read fails, with a bare "Is a directory". */
-    struct stat st;
-    if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
-        fclose(fp);
-        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "is a directory; expected a CSV, "
-                            "OpenCRG or RDF road file");
-    }
-    enum { HEAD = 65536 };
-    char *buf = malloc(HEAD);
-    if (!buf) {
-        fclose(fp);
-        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
-    }
-    const size_t n = fread(buf, 1, HEAD, fp);
-    const int failed = ferror(fp);
-    const int e = errno;
-    fclose(fp);
-    if (failed) {
-        free(buf);
-        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot read: %s", strerror(e));
-    }
-    /* A line cut at the end of the window may look like CSV; trim to the last whole line. */
-    size_t m = n;
-    if (n == HEAD)
-        while (m > 0 && buf[m - 1] != '\n')
-            m--;
-    *f = tirenv_profile_detect_memory(buf, m ? m : n);
-    free(buf);
-    return TIRENV_OK;
-}
-
 int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f)
 {
     const char *slash = strrchr(path, '/');
@@ -115,35 +78,6 @@ int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f)
         }
     return TIRENV_EINVAL;
 }
-
-int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
-                             tirenv_profile **out, tirenv_diag *diag)
-{
-    *out = NULL;
-    const tirenv_profile_source def = tirenv_profile_source_default();
-    if (!src)
-        src = &def;
-    tirenv_profile_format f;
-    int status = tirenv_profile_detect(path, &f, diag);
-    if (status)
-        return status;
-    switch (f) {
-    case TIRENV_PROFILE_CSV:
-        return tirenv_profile_read_csv(path, out, diag);
-    case TIRENV_PROFILE_RDF:
-        return tirenv_rdf_read(path, src->rdf_side, out, diag);
-    case TIRENV_PROFILE_CRG: {
-        tirenv_crg *crg;
-        if ((status = tirenv_crg_open(path, &crg, diag)))
-            return status;
-        status = tirenv_crg_track(crg, &src->crg, out, diag);
-        tirenv_crg_free(crg);
-        return status;
-    }
-    }
-    return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "unknown format");
-}
-
 
 int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const char *comment,
                              tirenv_diag *diag)

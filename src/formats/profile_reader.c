@@ -1,7 +1,8 @@
-/* The tracks of a road file of any format, whole (tirenv_profile_read_tracks) or a row at a
- * time (tirenv_profile_file_reader), for the commands that take --profile and the streamed
- * sweeps. A CRG's tracks are read together, each block of rows once for all of them; a CSV
- * or RDF road is 2-D and gives every track the same heights.
+/* The tracks of an open road file (tirenv_road_file) of any format, whole
+ * (tirenv_road_file_read) or a row at a time (tirenv_road_file_reader), for the commands that
+ * take --profile, the streamed sweeps, the FMU and the Python module; and the path-taking
+ * forms, which open the file for one read. A CRG's tracks are read together, each block of
+ * rows once for all of them; a CSV or RDF road is 2-D and gives every track the same heights.
  * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/profile_file.h"
 
@@ -9,7 +10,7 @@
 
 #include "formats/crg_impl.h"
 #include "formats/profile_csv_impl.h"
-#include "tirenv/profile_csv.h"
+#include "formats/road_file_impl.h"
 
 static tirenv_profile_source source_or_default(const tirenv_profile_source *src)
 {
@@ -24,22 +25,45 @@ static void free_all(tirenv_profile *out[], size_t n)
     }
 }
 
-int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *src, size_t n,
-                               const double v[], tirenv_profile *out[], tirenv_diag *diag)
+int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *diag)
 {
+    *out = NULL;
+    const tirenv_source *s;
+    const int status = tirenv_road_file__source(f, &s, diag);
+    return status ? status : tirenv_crg__open_source(s, out, diag);
+}
+
+/* The stream again() of tirenv_profile_csv__read: the file from its start, once more. */
+static FILE *again(void *f) { return tirenv_road_file__stream(f, NULL); }
+
+/* One profile of a 2-D road (CSV or RDF). */
+static int read_2d(tirenv_road_file *f, tirenv_rdf_side side, tirenv_profile **out,
+                   tirenv_diag *diag)
+{
+    if (tirenv_road_file_format(f) == TIRENV_PROFILE_RDF) {
+        const tirenv_source *s;
+        const int status = tirenv_road_file__source(f, &s, diag);
+        return status ? status : tirenv_rdf__read_source(s, side, out, diag);
+    }
+    FILE *fp = tirenv_road_file__stream(f, diag);
+    return fp ? tirenv_profile_csv__read(fp, tirenv_road_file_name(f), again, f, out, diag)
+              : TIRENV_ENOMEM;
+}
+
+int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                          const double v[], tirenv_profile *out[], tirenv_diag *diag)
+{
+    const char *path = tirenv_road_file_name(f);
     for (size_t k = 0; k < n; ++k)
         out[k] = NULL;
     if (n == 0)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "tracks",
                             "expected at least one track");
     tirenv_profile_source s = source_or_default(src);
-    tirenv_profile_format f;
-    int status = tirenv_profile_detect(path, &f, diag);
-    if (status)
-        return status;
-    if (f == TIRENV_PROFILE_CRG) {
+    int status;
+    if (tirenv_road_file_format(f) == TIRENV_PROFILE_CRG) {
         tirenv_crg *crg;
-        if ((status = tirenv_crg_open(path, &crg, diag)))
+        if ((status = tirenv_road_file_crg(f, &crg, diag)))
             return status;
         for (size_t k = 0; k < n && !status; ++k) {
             if (v)
@@ -48,8 +72,7 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
         }
         tirenv_crg_free(crg);
     } else {
-        status = f == TIRENV_PROFILE_RDF ? tirenv_rdf_read(path, s.rdf_side, &out[0], diag)
-                                         : tirenv_profile_read_csv(path, &out[0], diag);
+        status = read_2d(f, s.rdf_side, &out[0], diag);
         for (size_t k = 1; k < n && !status; ++k)
             if (!(out[k] = tirenv_profile_alloc(tirenv_profile_size(out[0]),
                                                 tirenv_profile_x(out[0]),
@@ -61,9 +84,31 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
     return status;
 }
 
+int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *src, size_t n,
+                               const double v[], tirenv_profile *out[], tirenv_diag *diag)
+{
+    for (size_t k = 0; k < n; ++k)
+        out[k] = NULL;
+    tirenv_road_file *f;
+    int status = tirenv_road_file_open(path, &f, diag);
+    if (!status)
+        status = tirenv_road_file_read(f, src, n, v, out, diag);
+    tirenv_road_file_free(f);
+    return status;
+}
+
+int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
+                             tirenv_profile **out, tirenv_diag *diag)
+{
+    return tirenv_profile_read_tracks(path, src, 1, NULL, out, diag);
+}
+
+/* ---- a row at a time ------------------------------------------------------------------- */
+
 struct tirenv_profile_file_reader {
     tirenv_profile_format format;
     size_t n;                         /* tracks */
+    tirenv_road_file *owned;          /* the file, when the reader opened it itself */
     tirenv_profile_csv__reader *csv;  /* CSV: row by row */
     tirenv_crg *crg;                  /* CRG: the open file and its tracks */
     tirenv_crg__tracks_reader *tracks;
@@ -79,14 +124,16 @@ void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r)
     tirenv_crg__tracks_reader_free(r->tracks);
     tirenv_crg_free(r->crg);
     tirenv_profile_free(r->rdf);
+    tirenv_road_file_free(r->owned);
     free(r);
 }
 
-int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_source *src,
-                                    size_t n, const double v[],
-                                    tirenv_profile_file_reader **out, tirenv_diag *diag)
+int tirenv_road_file_reader(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                            const double v[], tirenv_profile_file_reader **out,
+                            tirenv_diag *diag)
 {
     *out = NULL;
+    const char *path = tirenv_road_file_name(f);
     if (n == 0)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "tracks",
                             "expected at least one track");
@@ -95,20 +142,21 @@ int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_sourc
     if (!r)
         return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
     r->n = n;
-    int status = tirenv_profile_detect(path, &r->format, diag);
-    if (!status) {
-        switch (r->format) {
-        case TIRENV_PROFILE_CSV:
-            status = tirenv_profile_csv__reader_open(path, &r->csv, diag);
-            break;
-        case TIRENV_PROFILE_RDF:
-            status = tirenv_rdf_read(path, s.rdf_side, &r->rdf, diag);
-            break;
-        case TIRENV_PROFILE_CRG:
-            if (!(status = tirenv_crg_open(path, &r->crg, diag)))
-                status = tirenv_crg__tracks_reader_open(r->crg, &s.crg, n, v, &r->tracks, diag);
-            break;
-        }
+    r->format = tirenv_road_file_format(f);
+    int status = TIRENV_OK;
+    switch (r->format) {
+    case TIRENV_PROFILE_CSV: {
+        FILE *fp = tirenv_road_file__stream(f, diag);
+        status = fp ? tirenv_profile_csv__reader_open(fp, path, &r->csv, diag) : TIRENV_ENOMEM;
+        break;
+    }
+    case TIRENV_PROFILE_RDF:
+        status = read_2d(f, s.rdf_side, &r->rdf, diag);
+        break;
+    case TIRENV_PROFILE_CRG:
+        if (!(status = tirenv_road_file_crg(f, &r->crg, diag)))
+            status = tirenv_crg__tracks_reader_open(r->crg, &s.crg, n, v, &r->tracks, diag);
+        break;
     }
     if (status) {
         tirenv_profile_file_reader_free(r);
@@ -116,6 +164,20 @@ int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_sourc
     }
     *out = r;
     return TIRENV_OK;
+}
+
+int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_source *src,
+                                    size_t n, const double v[],
+                                    tirenv_profile_file_reader **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    tirenv_road_file *f;
+    int status = tirenv_road_file_open(path, &f, diag);
+    if (!status && !(status = tirenv_road_file_reader(f, src, n, v, out, diag)))
+        (*out)->owned = f;
+    else
+        tirenv_road_file_free(f);
+    return status;
 }
 
 int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, double z[],

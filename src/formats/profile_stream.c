@@ -33,26 +33,23 @@ void tirenv_profile_csv__reader_free(tirenv_profile_csv__reader *r)
     free(r);
 }
 
-int tirenv_profile_csv__reader_open(const char *path, tirenv_profile_csv__reader **out,
-                               tirenv_diag *diag)
+int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
+                                    tirenv_profile_csv__reader **out, tirenv_diag *diag)
 {
     *out = NULL;
     tirenv_profile_csv__reader *r = calloc(1, sizeof *r);
-    const size_t len = strlen(path) + 1;
+    const size_t len = strlen(name) + 1;
     if (!r || !(r->path = malloc(len))) {
         free(r);
-        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+        fclose(fp);
+        return tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
     }
-    memcpy(r->path, path, len);
-    int status = tirenv_csv__open(&r->rd, r->path, diag);
-    if (status) {
-        free(r->path);
-        free(r);
-        return status;
-    }
+    memcpy(r->path, name, len);
+    tirenv_csv__open_stream(&r->rd, fp, r->path, diag);
+    int status;
     const int got = tirenv_csv__next(&r->rd);
     if (got == 0)
-        status = tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
+        status = tirenv_error(diag, TIRENV_EPARSE, name, 0, "",
                               "no header line (only blank or comment lines); expected the "
                               "header 'x_m,z_m', then data rows");
     else if (got < 0)

@@ -10,6 +10,7 @@
 #include <strings.h>
 
 #include "formats/propfile.h"
+#include "formats/road_file_impl.h"
 #include "formats/units.h"
 #include "io/io.h"
 
@@ -442,9 +443,10 @@ static int road(rdf *r, tirenv_rdf_side side, tirenv_profile **out)
                 "or 'flat'", r->road_type);
 }
 
-static int read_source(const tirenv_source *src, tirenv_rdf_side side, tirenv_profile **out,
-                       tirenv_diag *diag)
+int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
+                            tirenv_profile **out, tirenv_diag *diag)
 {
+    *out = NULL;
     if (!tirenv_rdf_side_name(side))
         return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
                             (int)side);
@@ -482,7 +484,7 @@ int tirenv_rdf_read(const char *path, tirenv_rdf_side side, tirenv_profile **out
     int status = tirenv_source__open_file(&src, path, diag);
     if (status)
         return status;
-    status = read_source(&src, side, out, diag);
+    status = tirenv_rdf__read_source(&src, side, out, diag);
     tirenv_source__close(&src);
     return status;
 }
@@ -495,7 +497,7 @@ int tirenv_rdf_read_memory(const void *data, size_t size, const char *name,
     int status = tirenv_source__open_memory(&src, data, size, name, diag);
     if (status)
         return status;
-    status = read_source(&src, side, out, diag);
+    status = tirenv_rdf__read_source(&src, side, out, diag);
     tirenv_source__close(&src);
     return status;
 }

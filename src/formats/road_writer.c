@@ -35,14 +35,16 @@ void tirenv_road_writer_abort(tirenv_road_writer *w)
     free(w);
 }
 
-/* Where the effective road of the OpenCRG road path, read at lateral position v, goes: its
- * straight reference line at u = l->x_from, its heading, its height on the track there and
- * v, into the layout. */
-static int place(const char *path, double v, tirenv_road_writer_layout *l, tirenv_diag *diag)
+/* Where the effective road of the open OpenCRG road on, read at lateral position v, goes:
+ * its straight reference line at u = l->x_from, its heading, its height on the track there
+ * and v, into the layout. */
+static int place(tirenv_road_file *on, double v, tirenv_road_writer_layout *l,
+                 tirenv_diag *diag)
 {
     l->v_track = l->x_start = l->y_start = l->phi_start = l->z_start = 0;
+    const char *path = tirenv_road_file_name(on);
     tirenv_crg *crg = NULL;
-    int status = tirenv_crg_open(path, &crg, diag);
+    int status = tirenv_road_file_crg(on, &crg, diag);
     if (status)
         return status;
     if (tirenv_crg_is_curved(crg)) {

@@ -31,6 +31,15 @@ int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
+void tirenv_csv__open_stream(tirenv_csv__reader *r, FILE *fp, const char *name,
+                             tirenv_diag *diag)
+{
+    memset(r, 0, sizeof *r);
+    r->file = name;
+    r->diag = diag;
+    r->fp = fp;
+}
+
 void tirenv_csv__close(tirenv_csv__reader *r)
 {
     if (r->fp)

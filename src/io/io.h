@@ -54,6 +54,8 @@ typedef struct {
     int fd;                   /* the open file when mem is NULL, else -1 */
     size_t size;              /* bytes in the file or buffer */
     char *name;               /* file name (or the caller's label) for messages; owned */
+    int shared;               /* fd (or mem) belongs to another source or to an open road
+                               * file (tirenv_road_file): close leaves it open */
 } tirenv_source;
 
 /* Opens path for reading; TIRENV_EIO naming the reason (a directory included). */
@@ -62,6 +64,15 @@ int tirenv_source__open_file(tirenv_source *s, const char *path, tirenv_diag *di
 /* Wraps a buffer that must outlive the source; name labels messages. */
 int tirenv_source__open_memory(tirenv_source *s, const void *data, size_t size,
                                const char *name, tirenv_diag *diag);
+
+/* A source over an open regular file of size bytes that the caller keeps open (fd) and
+ * closes after the source; name labels messages (copied). */
+int tirenv_source__open_fd(tirenv_source *s, int fd, size_t size, const char *name,
+                           tirenv_diag *diag);
+
+/* s reads what from reads (the same file or buffer, which must outlive s), with its own
+ * copy of the name. */
+int tirenv_source__share(tirenv_source *s, const tirenv_source *from, tirenv_diag *diag);
 
 /* Copies exactly n bytes from offset into buf; TIRENV_EIO if the file cannot be read or is
  * shorter (it changed under us). */
@@ -121,6 +132,10 @@ typedef struct {
 
 /* Opens path; TIRENV_EIO with the reason if it cannot. */
 int tirenv_csv__open(tirenv_csv__reader *r, const char *path, tirenv_diag *diag);
+
+/* Reads fp (an open stream, closed by tirenv_csv__close) as the file name; never fails. */
+void tirenv_csv__open_stream(tirenv_csv__reader *r, FILE *fp, const char *name,
+                             tirenv_diag *diag);
 
 /* Advances to the next line with content, skipping blank lines and '#' comment lines;
  * accepts a UTF-8 byte-order mark and CRLF ends. Returns 1 for a line, 0 at the end of the

@@ -51,6 +51,32 @@ int tirenv_source__open_file(tirenv_source *s, const char *path, tirenv_diag *di
     return TIRENV_OK;
 }
 
+int tirenv_source__open_fd(tirenv_source *s, int fd, size_t size, const char *name,
+                           tirenv_diag *diag)
+{
+    memset(s, 0, sizeof *s);
+    s->fd = -1;
+    if (!(s->name = dup_name(name)))
+        return tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    s->fd = fd;
+    s->size = size;
+    s->shared = 1;
+    return TIRENV_OK;
+}
+
+int tirenv_source__share(tirenv_source *s, const tirenv_source *from, tirenv_diag *diag)
+{
+    memset(s, 0, sizeof *s);
+    s->fd = -1;
+    if (!(s->name = dup_name(from->name)))
+        return tirenv_error(diag, TIRENV_ENOMEM, from->name, 0, "", "out of memory");
+    s->mem = from->mem;
+    s->fd = from->fd;
+    s->size = from->size;
+    s->shared = 1;
+    return TIRENV_OK;
+}
+
 int tirenv_source__open_memory(tirenv_source *s, const void *data, size_t size,
                                const char *name, tirenv_diag *diag)
 {
@@ -96,7 +122,7 @@ int tirenv_source__read(const tirenv_source *s, size_t offset, void *buf, size_t
 
 void tirenv_source__close(tirenv_source *s)
 {
-    if (s->fd >= 0)
+    if (s->fd >= 0 && !s->shared)
         close(s->fd);
     s->fd = -1;
     free(s->name);

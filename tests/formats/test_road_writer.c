@@ -117,13 +117,16 @@ static void test_on_crg(void **state)
 
     enum { K0 = 37, M = 11 };  /* the effective road starts at the base road's row K0 */
     const double u0 = x_from + dx * K0;
+    tirenv_road_file *on = NULL;
+    assert_int_equal(tirenv_road_file_open(base, &on, &d), TIRENV_OK);
     const tirenv_road_writer_layout l = {.x_from = u0, .dx = dx, .n = M, .half_width = 0.2,
-                                         .encoding = TIRENV_CRG_KDBI, .on_crg = base};
+                                         .encoding = TIRENV_CRG_KDBI, .on_crg = on};
     tirenv_test_path(t, "on.crg", path);
     assert_int_equal(tirenv_road_writer_open(path, TIRENV_PROFILE_CRG, &l, &w, &d), 0);
     for (size_t k = 0; k < M; ++k)
         assert_int_equal(tirenv_road_writer_add(w, u0 + dx * (double)k, height(K0 + k), &d), 0);
     assert_int_equal(tirenv_road_writer_commit(w, &d), TIRENV_OK);
+    tirenv_road_file_free(on);
     tirenv_crg *crg = NULL;
     assert_int_equal(tirenv_crg_open(path, &crg, &d), TIRENV_OK);
     double x[M], y[M], h[M];
@@ -142,12 +145,14 @@ static void test_on_crg(void **state)
 
     char curved[600];
     snprintf(curved, sizeof curved, "%s/crg/handmade_curved.crg", TIRENV_SAMPLES);
-    const tirenv_road_writer_layout lc = {.x_from = 0, .dx = dx, .n = M, .on_crg = curved};
+    assert_int_equal(tirenv_road_file_open(curved, &on, &d), TIRENV_OK);
+    const tirenv_road_writer_layout lc = {.x_from = 0, .dx = dx, .n = M, .on_crg = on};
     tirenv_test_path(t, "curved.crg", path);
     w = (tirenv_road_writer *)&d;  /* set to NULL on failure */
     assert_int_equal(tirenv_road_writer_open(path, TIRENV_PROFILE_CRG, &lc, &w, &d),
                      TIRENV_EINVAL);
     assert_null(w);
+    tirenv_road_file_free(on);
     assert_string_equal(d.file, curved);
     assert_non_null(strstr(d.message, "curved reference line"));
     assert_int_equal(access(path, F_OK), -1);

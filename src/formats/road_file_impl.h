@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Private to src/formats: what the readers of the formats take from an open road file
+ * (tirenv_road_file, road_file.c) instead of a path, so that the file is opened once and its
+ * format told once: a stream of its text from the start (the CSV readers) or its bytes at any
+ * position (the OpenCRG and RDF readers). */
+#ifndef TIRENV_FORMATS_ROAD_FILE_IMPL_H
+#define TIRENV_FORMATS_ROAD_FILE_IMPL_H
+
+#include <stdio.h>
+
+#include "io/io.h"
+#include "tirenv/profile_file.h"
+
+/* A new stream of the file's bytes from its start, with a position of its own (several may
+ * be open at once; each is the caller's to fclose); NULL with diag set on failure. */
+FILE *tirenv_road_file__stream(tirenv_road_file *f, tirenv_diag *diag);
+
+/* The file's bytes at any position, owned by f. A pipe or a device is read to its end first
+ * (kept in memory, at most TIRENV_ROAD_FILE_PIPE_MAX bytes). */
+int tirenv_road_file__source(tirenv_road_file *f, const tirenv_source **out, tirenv_diag *diag);
+
+/* tirenv_rdf_read from a source (rdf.c). */
+int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
+                            tirenv_profile **out, tirenv_diag *diag);
+
+#endif
