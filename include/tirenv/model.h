@@ -65,8 +65,10 @@ enum {
                                             * without, tirenv_model_load_for_contact_length
                                             * goes through the springs model of the tire */
     TIRENV_MODEL_STREAMS = 1u << 3,        /* it reads the ground only within
-                                            * tirenv_model_reach of x, so tirenv_model_stream
-                                            * takes it */
+                                            * tirenv_model_reach of x (the network: with its
+                                            * grid anchored at the road's first vertex, which
+                                            * tirenv_model_stream tells it), so
+                                            * tirenv_model_stream takes it */
     TIRENV_MODEL_EQUILIBRIUM = 1u << 4     /* it solves the constant-load equilibrium at every
                                             * position, by the tire's equilibrium method */
 };

@@ -12,6 +12,10 @@
  * callback (tirenv_vertex_source), so the core knows no file format: the CSV reader is one
  * source, in the auxiliary layer. Several tracks across the tire's width (tracks.h) come as
  * rows, one x and a height per track (tirenv_row_source), and make one window per track.
+ * A model whose results depend on where a window sits in the road as well (the network: its
+ * decomposition's grid is anchored at the road's first vertex, docs/models.md section 12.1)
+ * is told before each set (tirenv_model__stream_window), and evaluates through its batch
+ * path in blocks (stream_block).
  * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/stream.h"
 #include "tirenv/tracks.h"
