@@ -65,8 +65,10 @@ enum {
                                             * without, tirenv_model_load_for_contact_length
                                             * goes through the springs model of the tire */
     TIRENV_MODEL_STREAMS = 1u << 3,        /* it reads the ground only within
-                                            * tirenv_model_reach of x, so tirenv_model_stream
-                                            * takes it */
+                                            * tirenv_model_reach of x (the network: with its
+                                            * grid anchored at the road's first vertex, which
+                                            * tirenv_model_stream tells it), so
+                                            * tirenv_model_stream takes it */
     TIRENV_MODEL_EQUILIBRIUM = 1u << 4     /* it solves the constant-load equilibrium at every
                                             * position, by the tire's equilibrium method */
 };
@@ -204,7 +206,9 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
 /* What a user should hear about the last tirenv_model_set, one warning per line without a
  * final newline (the network: an input outside its training range, obstacles clamped to it),
  * or "" if nothing; and one line on what the model made of the ground (the network: the
- * equivalent cleats it saw), or "". Owned by the model, valid until the next set. */
+ * equivalent cleats it saw), or "". Owned by the model, valid until the next set. After
+ * tirenv_model_stream, which leaves the model unset, those of its windows: the obstacles of
+ * every window so far, each counted once. */
 const char *tirenv_model_warnings(const tirenv_model *m);
 const char *tirenv_model_note(const tirenv_model *m);
 

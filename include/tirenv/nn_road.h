@@ -96,6 +96,33 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
                          tirenv_diag *diag);
 void tirenv_nn_road_free(tirenv_nn_road *r);  /* NULL is a no-op */
 
+/* Where a window of a longer road sits in it, for a road taken a window at a time
+ * (streaming, docs/models.md section 12). */
+typedef struct {
+    double x_first;        /* the road's first vertex, m: anchors the resampling points */
+    int bof;               /* the window's first vertex is the road's first */
+    int eof;               /* the window's last vertex is the road's last */
+} tirenv_nn_road_window;
+
+/* tirenv_nn_road_alloc over p, a window of a road holding the road's vertices from its first
+ * to its last (as tirenv_model_stream's windows): the baseline is the whole road's, bit for
+ * bit, farther than tirenv_nn_road_window_margin from a cut end (one that is not bof or eof),
+ * the obstacles are those of the whole road whose run lies there, and so h and slope
+ * (tirenv_nn_road_eval) at positions at least that margin from a cut end are the whole
+ * road's, bit for bit. TIRENV_EINVAL as tirenv_nn_road_alloc, or for a window (NULL, x_first
+ * not finite or after p's first vertex). */
+int tirenv_nn_road_alloc_window(const tirenv_nn *nn, double R0, double l_c,
+                                const tirenv_profile *p, const tirenv_nn_road_settings *s,
+                                const tirenv_nn_road_window *w, tirenv_nn_road **out,
+                                tirenv_diag *diag);
+
+/* The margin D (m) of tirenv_nn_road_alloc_window for network nn, free radius R0 (m) and
+ * settings s (NULL: defaults): 3(a + ds) + 2(a + ds) + 1.01 (L/2 + R0)(1 - x_N_min) + 3 ds
+ * with a = W/2 and L the longest network length an obstacle can have (nn_road.c says why).
+ * NaN for arguments tirenv_nn_road_alloc would refuse. */
+double tirenv_nn_road_window_margin(const tirenv_nn *nn, double R0,
+                                    const tirenv_nn_road_settings *s);
+
 /* Changes the contact length (m) of a decomposition, in O(1): the baseline and the obstacles
  * depend on the profile alone; each obstacle's cleat origin x_0 and reach follow when it is
  * next evaluated. The results then equal those of a decomposition built at l_c, bit for bit.
@@ -117,6 +144,9 @@ double tirenv_nn_road_baseline(const tirenv_nn_road *r, double x);
  * reach at the current contact length (both getters bring every obstacle to it: O(obstacles)). */
 const tirenv_nn_obstacle *tirenv_nn_road_obstacles(const tirenv_nn_road *r);
 tirenv_nn_road_info tirenv_nn_road_info_of(const tirenv_nn_road *r);
+/* tirenv_nn_road_info_of with the counts (obstacles, outside the trained range) of the
+ * obstacles whose centre c is beyond x (m) alone: a streamed road's windows counted once. */
+tirenv_nn_road_info tirenv_nn_road_info_after(const tirenv_nn_road *r, double x);
 
 TIRENV_END_DECLS
 #endif

@@ -76,8 +76,11 @@ tirenv_positions tirenv_positions_default(double x_first, double x_last, double 
  * ahead needs, and passing each point to sink (called with ctx). Equals tirenv_model_set +
  * tirenv_model_envelope over the whole profile bit for bit, iterations included (the warm
  * start carries over as the window moves), the check that the hub clears the ground within
- * reach included (tirenv_model_eval), so any elevation and grade stream. Vertices out of
- * order, or not finite, stop it with TIRENV_EINVAL naming the vertex. stats may be NULL. Takes the vertices from where the source stands. */
+ * reach included (tirenv_model_eval), so any elevation and grade stream. A network's
+ * positions go through tirenv_model_envelope in blocks of 8192 counted from x_from (as tirenv
+ * envelope's whole-mode chunks: a single cleat's slopes are one-sided at a block's ends).
+ * Vertices out of order, or not finite, stop it with TIRENV_EINVAL naming the vertex. stats
+ * may be NULL. Takes the vertices from where the source stands. */
 int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,
                         double x_from, double x_to, double dx, double load,
                         tirenv_point_sink sink, void *ctx, tirenv_stream_stats *stats,

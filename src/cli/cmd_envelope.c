@@ -55,7 +55,7 @@ static void usage(FILE *fp)
           "                       bounded by the tire's reach whatever the road's length (the\n"
           "                       file is read twice: first to check it and find its ends; an\n"
           "                       OpenCRG road a block of rows at a time, an RDF road whole);\n"
-          "                       not for the network, which reads the whole profile\n",
+          "                       the network's warnings come after the rows\n",
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
@@ -401,6 +401,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     tirenv_level_stream_free(so.level);
     if (status)
         return cli_fail(status, &diag);
+    cli_model_warnings(r->cmd, m);  /* the network's, over the windows: after the rows */
     summary(r->cmd, m, o, load, &so.t);
     return CLI_EXIT_OK;
 }

@@ -149,6 +149,8 @@ void *tirenv_model__track_state(const tirenv_model *m)
     }
     if (state && net)
         net->set_extrapolate(state, m->extrapolate);
+    if (state && net)
+        net->stream_window(state, m->windowed ? &m->window : NULL);
     return state;
 }
 
@@ -170,12 +172,14 @@ const tirenv_profile *tirenv_model_profile(const tirenv_model *m)
 
 const char *tirenv_model_warnings(const tirenv_model *m)
 {
-    return m->ready && m->type->network ? m->type->network->warnings(m->state) : "";
+    return (m->ready || m->streamed) && m->type->network ? m->type->network->warnings(m->state)
+                                                          : "";
 }
 
 const char *tirenv_model_note(const tirenv_model *m)
 {
-    return m->ready && m->type->network ? m->type->network->note(m->state) : "";
+    return (m->ready || m->streamed) && m->type->network ? m->type->network->note(m->state)
+                                                          : "";
 }
 
 /* The loads a model takes, wherever a load comes in (flat, set, set_load). */
@@ -250,6 +254,7 @@ void tirenv_model__took(tirenv_model *m, const tirenv_profile *profile, double l
     m->load = load;
     m->z_flat = z_flat;
     m->ready = 1;
+    m->streamed = 0;
     m->reach = tirenv_model_reach(m);
 }
 

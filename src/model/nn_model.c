@@ -18,7 +18,10 @@
  *     dh/dx of its curve: over a cleat, central differences of the sweep's own curve (one-sided
  *     at its ends), or of a step of 1e-5 in x_N at a single position; over a road, the
  *     decomposition's own derivative.
- * It reads the whole profile at set (the decomposition needs it), so it does not stream. */
+ * Over a road it reads the ground within tirenv_nn_road_window_margin of x, with the
+ * decomposition's grid anchored at the road's first vertex, so it streams: stream.c tells it
+ * where each window sits (nn_model_stream_window), and a window's decomposition is the whole
+ * road's where it is evaluated. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -51,6 +54,13 @@ typedef struct {
     int cleat;                 /* the profile is a single cleat L x H */
     double L, H, x_0;          /* m; x_0 the x_N origin */
     tirenv_nn_road *road;      /* otherwise its decomposition */
+    /* Streaming (stream.c): the profiles set are windows of one road, win says where; the
+     * obstacles of the windows so far, each counted once (those centred beyond counted_to
+     * are new), for the warnings and the note. */
+    int windowed;
+    tirenv_nn_road_window win;
+    double counted_to;         /* m */
+    tirenv_nn_road_info seen;
     char clamped[512];         /* the decomposition's obstacles outside the training range */
     char warnings[1024];
     char note[256];
@@ -282,9 +292,11 @@ static int obstacles_in_range(const nn_state *st, tirenv_diag *diag)
                         "as a cleat) is outside the range the network was trained on, heights "
                         "%g to %g m, lengths %g to %g m (%zu of %zu obstacles are): the network "
                         "would extrapolate (scale or clamp its curves), which is refused unless "
-                        "allowed (--extrapolate; tirenv_model_set_extrapolate)", o->c, o->x_lo,
-                        o->x_hi, o->H, o->L, in.H_min, in.H_max, in.L_min, in.L_max, out,
-                        in.obstacles);
+                        "allowed (--extrapolate; tirenv_model_set_extrapolate)%s", o->c,
+                        o->x_lo, o->x_hi, o->H, o->L, in.H_min, in.H_max, in.L_min, in.L_max,
+                        out, in.obstacles,
+                        st->windowed ? "; counts of the streamed window of the road around it"
+                                     : "");
 }
 
 /* The decomposition's obstacles outside the training range, in one warning into
@@ -348,6 +360,26 @@ static void note_forms(nn_state *st)
              K == 1 ? "" : "s");
 }
 
+/* A streamed window's obstacles not counted yet added to the road's so far (st->seen), which
+ * the warnings and the note then report: the whole road's once the last window is set. */
+static tirenv_nn_road_info seen_add(nn_state *st)
+{
+    const tirenv_nn_road_info add = tirenv_nn_road_info_after(st->road, st->counted_to);
+    tirenv_nn_road_info *in = &st->seen;
+    const size_t n = in->obstacles;
+    *in = (tirenv_nn_road_info){
+        .obstacles = n + add.obstacles, .height_below = in->height_below + add.height_below,
+        .height_above = in->height_above + add.height_above,
+        .length_below = in->length_below + add.length_below,
+        .length_above = in->length_above + add.length_above, .H_min = add.H_min,
+        .H_max = add.H_max, .L_min = add.L_min, .L_max = add.L_max, .width = add.width,
+        .spacing = add.spacing, .reach = add.reach};
+    const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
+    if (add.obstacles)
+        st->counted_to = ob[tirenv_nn_road_info_of(st->road).obstacles - 1].c;
+    return *in;
+}
+
 static int nn_model_set(void *state, const tirenv_profile *p, double load, double z_flat,
                         tirenv_diag *diag)
 {
@@ -364,7 +396,8 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
     st->prof = p;
     st->load = load;
     st->z_flat = z_flat;
-    st->cleat = single_cleat(p, &st->L, &st->H);
+    /* A window is the cleat only if it is the whole road. */
+    st->cleat = (!st->windowed || (st->win.bof && st->win.eof)) && single_cleat(p, &st->L, &st->H);
     if (st->cleat) {
         const int s = warnings_build(st, diag);
         if (s)
@@ -376,10 +409,14 @@ static int nn_model_set(void *state, const tirenv_profile *p, double load, doubl
         return tirenv_nn_envelope(st->nn, st->R0, st->l_c, st->L, st->H, 0, NULL, NULL, diag);
     }
     int s = check_range(st, TIRENV_NN_CONTACT_LENGTH + 1, diag);
-    if (s || (s = tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road, diag)) ||
+    if (s ||
+        (s = st->windowed ? tirenv_nn_road_alloc_window(st->nn, st->R0, st->l_c, p, NULL,
+                                                        &st->win, &st->road, diag)
+                          : tirenv_nn_road_alloc(st->nn, st->R0, st->l_c, p, NULL, &st->road,
+                                                 diag)) ||
         (s = obstacles_in_range(st, diag)))
         return s;
-    const tirenv_nn_road_info in = tirenv_nn_road_info_of(st->road);
+    const tirenv_nn_road_info in = st->windowed ? seen_add(st) : tirenv_nn_road_info_of(st->road);
     warn_clamped(st, &in);
     if ((s = warnings_build(st, diag)))
         return s;
@@ -546,6 +583,31 @@ static int nn_model_envelope(void *state, size_t n, const double x[], tirenv_poi
     return TIRENV_OK;
 }
 
+static void nn_model_stream_window(void *state, const struct tirenv_model__window *w)
+{
+    nn_state *st = state;
+    if (w && !st->windowed) {  /* a new road */
+        st->counted_to = -INFINITY;
+        st->seen = (tirenv_nn_road_info){0};
+    }
+    st->windowed = w != NULL;
+    if (w)
+        st->win = (tirenv_nn_road_window){.x_first = w->x_first, .bof = w->bof, .eof = w->eof};
+}
+
+/* Over a road the decomposition reads the ground farther than the tire reaches: the
+ * opening's element, the runs, the reach of their cleats (tirenv_nn_road_window_margin), with
+ * the resampling grid anchored at the road's first vertex (stream.c tells the windows). */
+static double nn_model_reach(const void *state, const tirenv_tire *tire)
+{
+    const nn_state *st = state;
+    const double r = tirenv_model__default_reach(state, tire);
+    if (!st->nn)
+        return r;
+    const double D = tirenv_nn_road_window_margin(st->nn, st->R0, NULL);
+    return D > r ? D : r;
+}
+
 static void nn_model_set_extrapolate(void *state, int allow)
 {
     ((nn_state *)state)->extrapolate = allow;
@@ -570,7 +632,7 @@ static const tirenv_model_ops nn_ops = {
     .set_profile = nn_model_set,
     .set_load = nn_model_set_load,
     .eval = nn_model_eval,
-    .reach = tirenv_model__default_reach,
+    .reach = nn_model_reach,
     .state_size = nn_model_state_size,
     .state_save = nn_model_state_save,
     .state_restore = nn_model_state_restore,
@@ -583,12 +645,13 @@ static const tirenv_model_network nn_network = {
     .warnings = nn_model_warnings,
     .note = nn_model_note,
     .envelope = nn_model_envelope,
+    .stream_window = nn_model_stream_window,
 };
 
 static const tirenv_model_type nn_type = {
     .name = "nn",
     .summary = "the paper's trained network (--nn FILE)",
-    .flags = 0,
+    .flags = TIRENV_MODEL_STREAMS,
     .tracks = TIRENV_TRACKS_MEAN,
     .ops = &nn_ops,
     .network = &nn_network,

@@ -12,9 +12,15 @@
  * callback (tirenv_vertex_source), so the core knows no file format: the CSV reader is one
  * source, in the auxiliary layer. Several tracks across the tire's width (tracks.h) come as
  * rows, one x and a height per track (tirenv_row_source), and make one window per track.
+ * A model whose results depend on where a window sits in the road as well (the network: its
+ * decomposition's grid is anchored at the road's first vertex, docs/models.md section 12.1)
+ * is told before each set (tirenv_model__stream_window), and evaluates through its batch
+ * path in blocks (stream_block).
  * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/stream.h"
 #include "tirenv/tracks.h"
+
+#include "model/model_impl.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -31,6 +37,7 @@ typedef struct {
     size_t read;           /* vertices read from the file */
     size_t max;            /* largest n so far */
     double x_last;         /* the last vertex taken, m */
+    double x_first;        /* the file's first vertex, m */
     size_t same_x;         /* vertices taken at x_last */
 } window;
 
@@ -83,6 +90,8 @@ static int vertex_check(window *w, double x, const double z[], tirenv_diag *diag
         return tirenv_error(diag, TIRENV_EINVAL, "", k, "x",
                             "vertex %zu of the source goes back: x %.9g m after %.9g m", k, x,
                             w->x_last);
+    if (w->read == 0)
+        w->x_first = x;
     w->same_x = w->read > 0 && x == w->x_last ? w->same_x + 1 : 1;
     w->x_last = x;
     if (w->same_x > 2)
@@ -152,12 +161,41 @@ static int window_profile(const window *w, tirenv_profile *p[], tirenv_diag *dia
     return TIRENV_OK;
 }
 
+/* Tells the model where the window it is about to be set with sits in the file. */
+static void window_tell(tirenv_model *m, const window *w)
+{
+    if (!m)
+        return;
+    const struct tirenv_model__window where = {.x_first = w->x_first, .bof = w->bof,
+                                                .eof = w->eof};
+    tirenv_model__stream_window(m, &where);
+}
+
 static void profiles_free(tirenv_profile *p[], size_t n)
 {
     for (size_t k = 0; k < n; ++k) {
         tirenv_profile_free(p[k]);
         p[k] = NULL;
     }
+}
+
+/* The positions of a batched sweep's block: as many as tirenv envelope's whole-mode chunk
+ * (CLI_CHUNK, src/cli/envelope_chunks.h), which the test of a streamed cleat checks. */
+enum { stream_block = 8192 };
+
+typedef struct {
+    int on;
+    double *x;             /* [stream_block], m */
+    tirenv_point *pt;      /* [stream_block] */
+} batch;
+
+static int batch_alloc(batch *b, tirenv_diag *diag)
+{
+    b->x = malloc(stream_block * sizeof *b->x);
+    b->pt = malloc(stream_block * sizeof *b->pt);
+    if (!b->x || !b->pt)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    return TIRENV_OK;
 }
 
 int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double weights[],
@@ -201,12 +239,19 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
     if (!status && !(status = window_profile(&w, p, diag))) {
         for (size_t k = 0; k < n_tracks; ++k)
             use[k] = p[k];
+        window_tell(m, &w);
         status = tirenv_model_set_tracks(m, n_tracks, use, weights, load, diag);
     }
     const double r = tirenv_model_reach(m), ahead = 2 * r;
     const size_t n = status ? 0 : tirenv_positions_count(x_from, x_to, dx);
+    /* A network's positions go through its batch path (tirenv_model_envelope), in blocks
+     * that start where the CLI's whole-mode chunks start (stream_block), so that a single
+     * cleat's one-sided slopes at a block's ends fall where they fall there. */
+    batch b = {0};
+    if (!status && m->type->network && !(status = batch_alloc(&b, diag)))
+        b.on = 1;
     int have_window = 0;
-    for (size_t k = 0; k < n && !status; ++k) {
+    for (size_t k = 0; k < n && !status;) {
         const double x = x_from + (double)k * dx;
         if (!have_window || !(w.eof || w.x[w.n - 1] > x + r)) {
             if ((status = window_fill(&w, in, x - r, x + r + ahead, diag)) ||
@@ -214,6 +259,7 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
                 break;
             for (size_t j = 0; j < n_tracks; ++j)
                 use[j] = next[j];
+            window_tell(m, &w);
             if ((status = tirenv_model_set_track_profiles(m, n_tracks, use, diag)))
                 break;
             profiles_free(p, n_tracks);
@@ -224,19 +270,46 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
             have_window = 1;
             ++rebuilds;
         }
+        if (b.on) {
+            /* The block's positions this window serves: the first always. */
+            const size_t end = n - k < stream_block - k % stream_block
+                                   ? n
+                                   : k + (stream_block - k % stream_block);
+            size_t nb = 1, failed = 0;
+            b.x[0] = x;
+            for (; k + nb < end; ++nb) {
+                const double x_k = x_from + (double)(k + nb) * dx;
+                if (!(w.eof || w.x[w.n - 1] > x_k + r))
+                    break;
+                b.x[nb] = x_k;
+            }
+            if ((status = tirenv_model_envelope(m, nb, b.x, b.pt, &failed, diag)))
+                break;
+            for (size_t j = 0; j < nb && !status; ++j)
+                if (!(status = sink(ctx, &b.pt[j])))
+                    ++done;
+            k += nb;
+            continue;
+        }
         tirenv_point pt;
         if ((status = tirenv_model_eval(m, x, &pt, diag)))
             break;
         if ((status = sink(ctx, &pt)))
             break;
         ++done;
+        ++k;
     }
+    free(b.x);
+    free(b.pt);
     if (stats)
         *stats = (tirenv_stream_stats){.positions = done, .vertices_read = w.read,
                                        .window_max = w.max, .rebuilds = rebuilds};
-    /* The model must not keep pointing at a freed window: it is left unset. */
+    /* The model must not keep pointing at a freed window: it is left unset, and takes whole
+     * profiles again. */
     if (p[0] && m)
         tirenv_model_set_profile(m, NULL, NULL);
+    if (m)
+        tirenv_model__stream_window(m, NULL);
     profiles_free(next, n_tracks);
     profiles_free(p, n_tracks);
     free(p);

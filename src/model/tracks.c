@@ -103,6 +103,21 @@ void tirenv_model__tracks_extrapolate(tirenv_model *m)
         m->type->network->set_extrapolate(t->state[k], m->extrapolate);
 }
 
+void tirenv_model__stream_window(tirenv_model *m, const struct tirenv_model__window *w)
+{
+    m->streamed = !w && (m->windowed || m->streamed);
+    m->windowed = w != NULL;
+    if (w)
+        m->window = *w;
+    const tirenv_model_network *net = m->type->network;
+    if (!net)
+        return;
+    net->stream_window(m->state, w);
+    struct tirenv_model__tracks *t = m->tracks;
+    for (size_t k = 1; t && k < t->cap; ++k)
+        net->stream_window(t->state[k], w);
+}
+
 /* The driver's record of tracks just set at load (z_flat in m): the first track stands for
  * the profile, the highest vertex is over them all (the hub's check, model.c). */
 static void tracks_took(tirenv_model *m, double load, double z_flat)

@@ -102,6 +102,28 @@ tirenv_nn_road_info tirenv_nn_road_info_of(const tirenv_nn_road *r)
     return r->info;
 }
 
+/* Whether obstacle P lies outside the trained range by more than range_tol, each way (the
+ * counts of tirenv_nn_road_info). */
+static void count_outside(tirenv_nn_road_info *in, const tirenv_nn_obstacle *P)
+{
+    in->height_below += P->H < in->H_min * (1 - range_tol);
+    in->height_above += P->H > in->H_max * (1 + range_tol);
+    in->length_below += P->L < in->L_min * (1 - range_tol);
+    in->length_above += P->L > in->L_max * (1 + range_tol);
+}
+
+tirenv_nn_road_info tirenv_nn_road_info_after(const tirenv_nn_road *r, double x)
+{
+    tirenv_nn_road_info in = tirenv_nn_road_info_of(r);
+    in.obstacles = in.height_below = in.height_above = in.length_below = in.length_above = 0;
+    for (size_t k = 0; k < r->n_ob; ++k)
+        if (r->pub[k].c > x) {
+            in.obstacles++;
+            count_outside(&in, &r->pub[k]);
+        }
+    return in;
+}
+
 /* ---- building --------------------------------------------------------------------------- */
 
 /* A point of the merged polyline (profile vertices and resampling points): ground q,
@@ -211,13 +233,13 @@ typedef struct {
  * of a vertex give way to it, and of each other to the first. Between vertices the ground is
  * tirenv_profile_height's interpolation, found by walking rather than bisecting. */
 static void merge_samples(tirenv_nn_road *r, const tirenv_profile *p, double x_first, double m,
-                          double ds, double a, double tol, road_build *w)
+                          double i_lo, double ds, double a, double tol, road_build *w)
 {
     const size_t n_v = tirenv_profile_size(p), n_g = r->n_grid;
     const double *xv = tirenv_profile_x(p), *zv = tirenv_profile_z(p);
     size_t i = 0, j = 0, left = 0, right = 0, n = 0;  /* next grid point, vertex, anchors */
     for (;;) {
-        const double x_g = i < n_g ? x_first + ((double)i - m) * ds : INFINITY;
+        const double x_g = i < n_g ? x_first + ((double)i + i_lo - m) * ds : INFINITY;
         const double x_v = j < n_v ? xv[j] : INFINITY;
         const double x_l = left < n_v ? xv[left] - a : INFINITY;
         const double x_r = right < n_v ? xv[right] + a : INFINITY;
@@ -238,7 +260,7 @@ static void merge_samples(tirenv_nn_road *r, const tirenv_profile *p, double x_f
                                                    ((x - xv[j - 1]) / (xv[j] - xv[j - 1]));
         }
         r->xs[n] = x;
-        for (; i < n_g && x_first + ((double)i - m) * ds <= x + tol; ++i)
+        for (; i < n_g && x_first + ((double)i + i_lo - m) * ds <= x + tol; ++i)
             r->cell[i] = n;
         while (left < n_v && xv[left] - a <= x + tol)
             ++left;
@@ -279,6 +301,8 @@ static int sweep(const tirenv_nn_road *r, const tirenv_profile *p, const road_bu
             P[k].r = P[k].q - P[k].b;
             if (j > 0 || k > 0)
                 status = sweep_segment(&run, &prev, &P[k], eps, f);
+            else if (P[k].r > eps)  /* a window cut inside a run (never the whole road's) */
+                run = (road_run){.open = 1, .x_s = P[k].x, .H = P[k].r, .top = P[k].q};
             prev = P[k];
         }
     }
@@ -290,23 +314,31 @@ static int sweep(const tirenv_nn_road *r, const tirenv_profile *p, const road_bu
 /* The baseline: samples from before the profile's first vertex to after its last, by a
  * margin of m >= 2a/ds + 1 spacings on each side, where the profile is flat: there the
  * truncated windows of the opening see only the end height, as the infinite flat extension
- * would. Then the opening, the segment slopes, and the obstacles. */
-static int build(tirenv_nn_road *r, const tirenv_profile *p, double a, double ds, double eps,
-                 road_found *f, tirenv_diag *diag)
+ * would. Then the opening, the segment slopes, and the obstacles. A window of a longer road
+ * (win not NULL) takes the road's resampling points over its own extent: their index counts
+ * from the road's first vertex, so that each has the abscissa it has over the whole road. */
+static int build(tirenv_nn_road *r, const tirenv_profile *p, const tirenv_nn_road_window *win,
+                 double a, double ds, double eps, road_found *f, tirenv_diag *diag)
 {
     double x_first, x_last;
     tirenv_profile_extent(p, &x_first, &x_last);
+    const double x_anchor = win ? win->x_first : x_first;  /* the grid's anchor */
     const double m = ceil(2 * a / ds) + 2;
-    const double steps = ceil((x_last - x_first) / ds);
-    if (!(steps + 2 * m + 1 <= max_samples))
+    const double i_lo = win ? floor((x_first - x_anchor) / ds) : 0;
+    const double steps = ceil((x_last - x_anchor) / ds) - i_lo;
+    if (!(x_first >= x_anchor) || !(steps + 2 * m + 1 <= max_samples))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "spacing",
-                            "a profile %g m long at a spacing of %g m needs %.0f baseline "
-                            "points; expected at most %.0f (raise the spacing)",
+                            x_first >= x_anchor ? "a profile %g m long at a spacing of %g m needs "
+                                             "%.0f baseline points; expected at most %.0f "
+                                             "(raise the spacing)"
+                                           : "a window %g m long starts before the road's "
+                                             "first vertex (spacing %g m, %.0f points, at "
+                                             "most %.0f)",
                             x_last - x_first, ds, steps + 2 * m + 1, max_samples);
     const size_t n_g = (size_t)(steps + 2 * m) + 1, n_max = n_g + 3 * tirenv_profile_size(p);
     const double tol = 1e-9 * ds;  /* round-off in the resampling points' abscissae */
     r->n_grid = n_g;
-    r->g0 = x_first - m * ds;
+    r->g0 = win ? x_anchor + (i_lo - m) * ds : x_first - m * ds;
     r->inv_ds = 1 / ds;
     road_build w = {.q = malloc(n_max * sizeof(double)),
                     .deque = malloc(n_max * sizeof(size_t))};
@@ -319,7 +351,7 @@ static int build(tirenv_nn_road *r, const tirenv_profile *p, double a, double ds
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "",
                               "out of memory for %zu baseline points", n_max);
     } else {
-        merge_samples(r, p, x_first, m, ds, a, tol, &w);
+        merge_samples(r, p, x_anchor, m, i_lo, ds, a, tol, &w);
         tirenv_nn__opening(r->n_s, r->xs, w.q, a + tol, r->bs, r->ms, w.deque);
         for (size_t j = 0; j + 1 < r->n_s; ++j)
             r->ms[j] = (r->bs[j + 1] - r->bs[j]) / (r->xs[j + 1] - r->xs[j]);
@@ -332,33 +364,60 @@ static int build(tirenv_nn_road *r, const tirenv_profile *p, double a, double ds
     return status;
 }
 
+/* A window's exact part: what lies within these of a cut end (one that is not the road's)
+ * may differ from the whole road's (the proof is at tirenv_nn_road_window_margin). */
+static double exact_margin(double a, double ds)
+{
+    return 3 * (a + ds);  /* a sample's anchors (a), then the erosion and the dilation (2a) */
+}
+static double run_bound(double a, double ds)
+{
+    return 2 * (a + ds);  /* every window of the opening holds a sample on the baseline */
+}
+
+/* Keeps the obstacles of a window whose whole run, and the sample before and after it, lie
+ * in its exact part: those are the whole road's, bit for bit (a run's integrals start at its
+ * first crossing); the others are cut by the window's end, and a neighbouring window has
+ * them whole. A run longer than run_bound cannot be (tirenv_nn_road_window_margin); it is
+ * refused rather than trusted. */
+static int window_keep(const tirenv_profile *p, const tirenv_nn_road_window *win, double a,
+                       double ds, road_found *f, tirenv_diag *diag)
+{
+    double x_first, x_last;
+    tirenv_profile_extent(p, &x_first, &x_last);
+    const double lo = win->bof ? -INFINITY : x_first + exact_margin(a, ds);
+    const double hi = win->eof ? INFINITY : x_last - exact_margin(a, ds);
+    size_t n = 0;
+    for (size_t k = 0; k < f->n; ++k) {
+        const tirenv_nn_obstacle *P = &f->pub[k];
+        if (!(P->x_lo - ds >= lo && P->x_hi + ds <= hi))
+            continue;
+        if (!(P->x_hi - P->x_lo <= run_bound(a, ds)))
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle",
+                                "the obstacle from x = %.9g to %.9g m is %g m long; a window "
+                                "of the road holds runs of at most %g m (the opening's width "
+                                "plus two spacings), which no decomposition should exceed",
+                                P->x_lo, P->x_hi, P->x_hi - P->x_lo, run_bound(a, ds));
+        f->pub[n++] = *P;
+    }
+    f->n = n;
+    return TIRENV_OK;
+}
+
 /* Network inputs of each obstacle, clamped to the trained range (and counted): what does not
  * depend on the contact length. */
 static void prepare_obstacles(tirenv_nn_road *r, const double lo[], const double hi[])
 {
     const double H_min = lo[TIRENV_NN_HEIGHT], H_max = hi[TIRENV_NN_HEIGHT];
     const double L_min = lo[TIRENV_NN_LENGTH], L_max = hi[TIRENV_NN_LENGTH];
-    tirenv_nn_road_info *in = &r->info;
     r->k_H_max = 0;
     r->L_net_max = 0;
     for (size_t k = 0; k < r->n_ob; ++k) {
         tirenv_nn_obstacle *P = &r->pub[k];
-        double scale = 1, H_net = P->H, L_net = P->L;
-        if (P->H < H_min) {
-            H_net = H_min;
-            scale = P->H / H_min;
-            in->height_below += P->H < H_min * (1 - range_tol);
-        } else if (P->H > H_max) {
-            H_net = H_max;
-            in->height_above += P->H > H_max * (1 + range_tol);
-        }
-        if (P->L < L_min) {
-            L_net = L_min;
-            in->length_below += P->L < L_min * (1 - range_tol);
-        } else if (P->L > L_max) {
-            L_net = L_max;
-            in->length_above += P->L > L_max * (1 + range_tol);
-        }
+        const double scale = P->H < H_min ? P->H / H_min : 1;
+        const double H_net = P->H < H_min ? H_min : P->H > H_max ? H_max : P->H;
+        const double L_net = P->L < L_min ? L_min : P->L > L_max ? L_max : P->L;
+        count_outside(&r->info, P);
         P->H_net = H_net;
         P->L_net = L_net;
         r->ob[k] = (road_obstacle){.c = P->c, .scale = scale, .H = P->H, .top = P->top,
@@ -422,9 +481,19 @@ static int check_settings(const tirenv_nn_road_settings *s, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
-int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tirenv_profile *p,
-                         const tirenv_nn_road_settings *settings, tirenv_nn_road **out,
-                         tirenv_diag *diag)
+/* The opening's width W of the settings for network nn (NaN if it has none). */
+static double opening_width(const tirenv_nn *nn, const tirenv_nn_road_settings *s)
+{
+    double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
+    tirenv_nn_input_range(nn, lo, hi);
+    const double W = s->width > 0 ? s->width : s->width_factor * hi[TIRENV_NN_LENGTH];
+    return isfinite(W) && W > 0 ? W : NAN;
+}
+
+static int alloc_road(const tirenv_nn *nn, double R0, double l_c, const tirenv_profile *p,
+                      const tirenv_nn_road_settings *settings,
+                      const tirenv_nn_road_window *win, tirenv_nn_road **out,
+                      tirenv_diag *diag)
 {
     if (!out)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no place for the result (NULL)");
@@ -451,8 +520,8 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_N",
                             "the network's trained range of x_N starts at %g; expected a "
                             "finite value below 1 (where its curve begins)", x_N_min);
-    const double W = s.width > 0 ? s.width : s.width_factor * hi[TIRENV_NN_LENGTH];
-    if (!isfinite(W) || !(W > 0))
+    const double W = opening_width(nn, &s);
+    if (!(W > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "width",
                             "the network records no trained range of obstacle length (its "
                             "longest is %g m); set the opening width", hi[TIRENV_NN_LENGTH]);
@@ -470,7 +539,9 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
         .L_min = lo[TIRENV_NN_LENGTH], .L_max = hi[TIRENV_NN_LENGTH],
         .width = W, .spacing = s.spacing};
     road_found f = {0};
-    status = build(r, p, 0.5 * W, s.spacing, s.eps, &f, diag);
+    status = build(r, p, win, 0.5 * W, s.spacing, s.eps, &f, diag);
+    if (!status && win)
+        status = window_keep(p, win, 0.5 * W, s.spacing, &f, diag);
     r->pub = f.pub;
     r->n_ob = f.n;
     r->info.obstacles = f.n;
@@ -487,4 +558,62 @@ int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tiren
     }
     *out = r;
     return TIRENV_OK;
+}
+
+int tirenv_nn_road_alloc(const tirenv_nn *nn, double R0, double l_c, const tirenv_profile *p,
+                         const tirenv_nn_road_settings *settings, tirenv_nn_road **out,
+                         tirenv_diag *diag)
+{
+    return alloc_road(nn, R0, l_c, p, settings, NULL, out, diag);
+}
+
+int tirenv_nn_road_alloc_window(const tirenv_nn *nn, double R0, double l_c,
+                                const tirenv_profile *p, const tirenv_nn_road_settings *s,
+                                const tirenv_nn_road_window *win, tirenv_nn_road **out,
+                                tirenv_diag *diag)
+{
+    if (!win || !isfinite(win->x_first)) {
+        if (out)
+            *out = NULL;
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "window",
+                            "expected a window with the road's first vertex (finite)");
+    }
+    return alloc_road(nn, R0, l_c, p, s, win, out, diag);
+}
+
+/* Why a window's results are the whole road's farther than D from a cut end (a = W/2, ds the
+ * spacing, samples and obstacles as in build):
+ * - A resampling point has the road's abscissa (its index counts from the road's first
+ *   vertex). A sample's value depends on the vertices within a of it (its anchors) and the two
+ *   around it: exact beyond a + ds of a cut end. The opening at a sample takes the samples
+ *   within 2a: exact beyond 3(a + ds) (exact_margin). The opening is a minimum and a maximum,
+ *   so exact means the same bits.
+ * - A run of q - b > eps is no longer than 2(a + ds) (run_bound): the samples within a of any
+ *   sample i hold one with b = q (the lowest of them: the erosion at i is its height, the
+ *   dilation there is at least that, and b <= q), and a run wider than 2a + ds would hold such
+ *   a window around its middle sample, whereas inside a run q - b > eps >= 0.
+ * - An obstacle acts on x only within its own reach, -x_0*(1 - x_N_min) with
+ *   -x_0 = L/2 + sqrt(R0^2 - (z_c - H)^2) <= L/2 + R0 (tirenv_xN_origin), and its network
+ *   length L is at most run_bound, or the trained range's clamp.
+ * So a position farther than exact_margin + run_bound + that reach + ds from a cut end sees
+ * the whole road's baseline and every obstacle that acts on it whole (window_keep keeps
+ * them), and no other: h and slope are the whole road's, bit for bit. 1 % and 2 ds on top
+ * cover rounding in the reach. */
+double tirenv_nn_road_window_margin(const tirenv_nn *nn, double R0,
+                                    const tirenv_nn_road_settings *settings)
+{
+    const tirenv_nn_road_settings s = settings ? *settings : tirenv_nn_road_default();
+    if (!nn || check_settings(&s, NULL) || tirenv_nn_n_inputs(nn) != TIRENV_NN_INPUTS ||
+        !(R0 > 0) || !isfinite(R0))
+        return NAN;
+    double lo[TIRENV_NN_INPUTS], hi[TIRENV_NN_INPUTS];
+    tirenv_nn_input_range(nn, lo, hi);
+    const double W = opening_width(nn, &s), a = 0.5 * W, ds = s.spacing;
+    const double x_N_min = lo[TIRENV_NN_X_N];
+    if (!(W > 0) || !isfinite(x_N_min) || !(x_N_min < 1))
+        return NAN;
+    const double L_min = isfinite(lo[TIRENV_NN_LENGTH]) ? lo[TIRENV_NN_LENGTH] : 0;
+    const double L_net = fmax(L_min, fmin(run_bound(a, ds), hi[TIRENV_NN_LENGTH]));
+    const double reach = 1.01 * (0.5 * L_net + R0) * (1 - x_N_min);
+    return exact_margin(a, ds) + run_bound(a, ds) + reach + 3 * ds;
 }

@@ -93,9 +93,13 @@ run "$bin" envelope --model springs --nn net.json --cleat 0.30,0.05 --contact-le
 check "envelope --nn with a model that takes no network: exit 1" \
     '[ $rc -eq 1 ] && grep -q -- "--nn is for a model" err'
 run "$bin" road --class C --length 20 --dx 0.01 --seed 5 -o road.csv
-run "$bin" envelope --model nn --nn net.json --profile road.csv --load 12000 --stream
-check "envelope --stream with the network, which reads the whole profile: exit 1" \
-    '[ $rc -eq 1 ] && grep -q -- "--stream" err && grep -q "nn model" err'
+run "$bin" envelope --model nn --nn net.json --profile road.csv --load 12000 --dx 0.01 \
+    --extrapolate -o whole_nn.csv
+run "$bin" envelope --model nn --nn net.json --profile road.csv --load 12000 --dx 0.01 \
+    --extrapolate --stream -o stream_nn.csv
+check "the network streams, byte for byte the whole-profile CSV, its warnings after the rows" \
+    '[ $rc -eq 0 ] && [ -s stream_nn.csv ] && cmp -s whole_nn.csv stream_nn.csv &&
+     grep -q "warning: .* lower than the lowest trained cleat" err'
 run "$bin" envelope --model point --profile road.csv --load 12000 --dx 0.01 -o whole_point.csv
 run "$bin" envelope --model point --profile road.csv --load 12000 --dx 0.01 --stream \
     -o stream_point.csv

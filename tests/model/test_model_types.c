@@ -101,7 +101,7 @@ static void test_record_flags(void **state)
         {"springs", FIT | LC | STREAM | EQ, TIRENV_TRACKS_EQUILIBRIUM},
         {"ring", FIT | LC | STREAM | EQ, TIRENV_TRACKS_EQUILIBRIUM},
         {"cam", FIT | LC | STREAM, TIRENV_TRACKS_MEAN},
-        {"nn", NET, TIRENV_TRACKS_MEAN},
+        {"nn", NET | STREAM, TIRENV_TRACKS_MEAN},
         {"point", STREAM, TIRENV_TRACKS_MEAN},
     };
     const size_t n = sizeof want / sizeof want[0];
