@@ -179,8 +179,8 @@ static void profiles_free(tirenv_profile *p[], size_t n)
     }
 }
 
-/* The positions of a batched sweep's block: as many as tirenv envelope's whole-mode chunk
- * (CLI_CHUNK, src/cli/envelope_chunks.h), which the test of a streamed cleat checks. */
+/* The positions of a block: as many as tirenv envelope's whole-mode chunk (CLI_CHUNK,
+ * src/cli/envelope_chunks.h), which the tests of streamed roads and cleats check. */
 enum { stream_block = 8192 };
 
 typedef struct {
@@ -250,6 +250,15 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
     batch b = {0};
     if (!status && m->type->network && !(status = batch_alloc(&b, diag)))
         b.on = 1;
+    /* Any other model starts each block as tirenv envelope's whole mode starts a chunk: from
+     * the state it had right after it was set (one track), or set again (several), so that
+     * its warm starts, and with them the iterations, are the same at every position. */
+    const size_t cold_size = !status && !b.on && n_tracks == 1 ? tirenv_model_state_size(m) : 0;
+    void *cold = cold_size ? malloc(cold_size) : NULL;
+    if (cold_size && !cold)
+        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    else if (cold)
+        status = tirenv_model_state_save(m, cold, cold_size, diag);
     int have_window = 0;
     for (size_t k = 0; k < n && !status;) {
         const double x = x_from + (double)k * dx;
@@ -291,6 +300,11 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
             k += nb;
             continue;
         }
+        if (k > 0 && k % stream_block == 0 &&
+            (status = n_tracks == 1 ? tirenv_model_state_restore(m, cold, cold_size, diag)
+                                    : tirenv_model_set_tracks(m, n_tracks, use, weights, load,
+                                                              diag)))
+            break;
         tirenv_point pt;
         if ((status = tirenv_model_eval(m, x, &pt, diag)))
             break;
@@ -301,6 +315,7 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
     }
     free(b.x);
     free(b.pt);
+    free(cold);
     if (stats)
         *stats = (tirenv_stream_stats){.positions = done, .vertices_read = w.read,
                                        .window_max = w.max, .rebuilds = rebuilds};
