@@ -116,6 +116,7 @@ tirenv_ring *tirenv_ring_alloc(double R0, const tirenv_ring_params *par)
         r->sin_t[j] = sin(r->theta[j]);
         r->cos_t[j] = cos(r->theta[j]);
         r->d[j] = r->b[j] = -INFINITY;
+        r->w[j] = 0; /* the state saves w whole (the warm start), also where no window was */
     }
     if (!compute_compliance(r)) {
         tirenv_ring_free(r);
