@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include "tirenv/rng.h"
 #include "tirenv/study.h"
+#include "tirenv/train.h"
 #include "tirenv/xn.h"
 
 #include "tirenv/tir.h"
@@ -226,4 +227,45 @@ void tirenv_test_model_case(tirenv_model *m, double R0, const double design[3],
         c->curve.x[j] = x_0 * (1 - c->curve.x_N[j]);
     }
     assert_int_equal(tirenv_case_predict_model(m, c, c->curve.h, &diag), TIRENV_OK);
+}
+
+/* The data set's network, one Levenberg-Marquardt restart on its train and control cases
+ * (data/dataset, R0 0.68 m): a cmocka group setup, *state the network. */
+int tirenv_test_nn_setup(void **state)
+{
+    tirenv_dataset ds;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    if (tirenv_dataset_read(TIRENV_DATA_DIR "/dataset", 0.68, &ds, &diag)) {
+        print_error("data set: %s\n", diag.message);
+        return -1;
+    }
+    tirenv_samples s[3];
+    double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
+    int status = TIRENV_OK;
+    for (int sp = 0; sp < 3 && !status; ++sp)
+        status = tirenv_samples_from_dataset(&ds, (tirenv_split)sp, &s[sp], &x[sp], &y[sp],
+                                             &diag);
+    tirenv_nn *nn = NULL;
+    tirenv_train_settings set = tirenv_train_default(tirenv_trainer_lm);
+    set.restarts = 1;
+    if (!status)
+        status = tirenv_train(tirenv_trainer_lm, &set, &s[0], &s[1], &s[2], &nn, NULL, &diag);
+    for (int sp = 0; sp < 3; ++sp) {
+        free(x[sp]);
+        free(y[sp]);
+    }
+    tirenv_dataset_free(&ds);
+    if (status) {
+        print_error("training: %s\n", diag.message);
+        return -1;
+    }
+    *state = nn;
+    return 0;
+}
+
+int tirenv_test_nn_teardown(void **state)
+{
+    tirenv_nn_free(*state);
+    return 0;
 }

@@ -109,4 +109,9 @@ extern const double tirenv_test_fit_design[6][3];
 void tirenv_test_model_case(tirenv_model *m, double R0, const double design[3],
                             const char *name, size_t n, tirenv_case *c);
 
+/* A cmocka group setup: *state the network trained on the data set's train and control
+ * cases (data/dataset, one Levenberg-Marquardt restart); the teardown frees it. */
+int tirenv_test_nn_setup(void **state);
+int tirenv_test_nn_teardown(void **state);
+
 #endif

@@ -40,46 +40,7 @@
 
 static const double R0 = 0.68;  /* m: the data set's tire */
 
-/* ---- fixtures ------------------------------------------------------------------------- */
-
-static int setup(void **state)
-{
-    tirenv_dataset ds;
-    tirenv_diag diag;
-    tirenv_diag_clear(&diag);
-    if (tirenv_dataset_read(TIRENV_DATA_DIR "/dataset", R0, &ds, &diag)) {
-        print_error("data set: %s\n", diag.message);
-        return -1;
-    }
-    tirenv_samples s[3];
-    double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
-    int status = TIRENV_OK;
-    for (int sp = 0; sp < 3 && !status; ++sp)
-        status = tirenv_samples_from_dataset(&ds, (tirenv_split)sp, &s[sp], &x[sp], &y[sp],
-                                             &diag);
-    tirenv_nn *nn = NULL;
-    tirenv_train_settings set = tirenv_train_default(tirenv_trainer_lm);
-    set.restarts = 1;
-    if (!status)
-        status = tirenv_train(tirenv_trainer_lm, &set, &s[0], &s[1], &s[2], &nn, NULL, &diag);
-    for (int sp = 0; sp < 3; ++sp) {
-        free(x[sp]);
-        free(y[sp]);
-    }
-    tirenv_dataset_free(&ds);
-    if (status) {
-        print_error("training: %s\n", diag.message);
-        return -1;
-    }
-    *state = nn;
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    tirenv_nn_free(*state);
-    return 0;
-}
+/* ---- fixtures (the network: tirenv_test_nn_setup) ------------------------------------ */
 
 static tirenv_nn_road *build(const tirenv_nn *nn, double l_c, const tirenv_profile *p,
                              const tirenv_nn_road_settings *s)
@@ -687,5 +648,5 @@ int main(void)
         cmocka_unit_test(test_width),
         cmocka_unit_test(test_errors),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, tirenv_test_nn_setup, tirenv_test_nn_teardown);
 }

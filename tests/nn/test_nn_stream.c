@@ -23,44 +23,6 @@ static const double R0 = 0.68;    /* m: the data set's tire */
 static const double l_c = 0.33;   /* m */
 enum { CHUNK = 8192 };            /* the CLI's whole-mode chunk (envelope_chunks.h) */
 
-static int setup(void **state)
-{
-    tirenv_dataset ds;
-    tirenv_diag diag;
-    tirenv_diag_clear(&diag);
-    if (tirenv_dataset_read(TIRENV_DATA_DIR "/dataset", R0, &ds, &diag)) {
-        print_error("data set: %s\n", diag.message);
-        return -1;
-    }
-    tirenv_samples s[3];
-    double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
-    int status = TIRENV_OK;
-    for (int sp = 0; sp < 3 && !status; ++sp)
-        status = tirenv_samples_from_dataset(&ds, (tirenv_split)sp, &s[sp], &x[sp], &y[sp],
-                                             &diag);
-    tirenv_nn *nn = NULL;
-    tirenv_train_settings set = tirenv_train_default(tirenv_trainer_lm);
-    set.restarts = 1;
-    if (!status)
-        status = tirenv_train(tirenv_trainer_lm, &set, &s[0], &s[1], &s[2], &nn, NULL, &diag);
-    for (int sp = 0; sp < 3; ++sp) {
-        free(x[sp]);
-        free(y[sp]);
-    }
-    tirenv_dataset_free(&ds);
-    if (status) {
-        print_error("training: %s\n", diag.message);
-        return -1;
-    }
-    *state = nn;
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    tirenv_nn_free(*state);
-    return 0;
-}
 
 /* ---- roads ----------------------------------------------------------------------------- */
 
@@ -477,5 +439,5 @@ int main(void)
         cmocka_unit_test(test_stream_tracks),
         cmocka_unit_test(test_stream_refuses),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, tirenv_test_nn_setup, tirenv_test_nn_teardown);
 }
