@@ -94,11 +94,8 @@ int tirenv_rdf_side_find(const char *name, tirenv_rdf_side *side);
 typedef struct { tirenv_crg_track_spec crg; tirenv_rdf_side rdf_side; ...; }
     tirenv_profile_source;
 tirenv_profile_source tirenv_profile_source_default(void);
-typedef struct tirenv_road_file tirenv_road_file;
-int tirenv_road_file_open(const char *path, tirenv_road_file **out, tirenv_diag *diag);
-int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
-                          const double v[], tirenv_profile *out[], tirenv_diag *diag);
-void tirenv_road_file_free(tirenv_road_file *f);
+int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
+                             tirenv_profile **out, tirenv_diag *diag);
 
 /* road.h */
 typedef struct {

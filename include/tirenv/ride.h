@@ -130,12 +130,14 @@ tirenv_ride_plan_params tirenv_ride_plan_params_default(void);
 #define TIRENV_RIDE_PLAN_RUNS 16
 
 /* What tirenv ride (and the Python module's ride) drive: one run per speed, all from the same
- * start, and the one grid of the axles' inputs that covers them all. */
+ * start, and the one grid of the axles' inputs that covers them all: x_k = x0 + k*dx (k < n),
+ * from the rear axle's start to the furthest end of the front axle, grid_margin beyond both
+ * (tirenv_ride_span_grid). */
 typedef struct {
-    double x_from;         /* the front axle's start of every run, m */
-    double x0;             /* the inputs' grid x_k = x0 + k*dx (k < n), from the rear axle's */
-    double dx;             /* start to the furthest end of the front axle, grid_margin */
-    size_t n;              /* beyond both (tirenv_ride_span_grid): m, m, points */
+    double x_from;         /* the front axle's start of every run, m (run[j].x_front0) */
+    double x0;             /* the grid's first position, m */
+    double dx;             /* the grid's spacing, m */
+    size_t n;              /* the grid's points */
     size_t n_runs;         /* runs, one per speed */
     tirenv_ride_settings run[TIRENV_RIDE_PLAN_RUNS]; /* speed, x_front0 = x_from, duration
                             * (to x_to, or the span's end at the speed), dt, method, tol */

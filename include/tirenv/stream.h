@@ -71,14 +71,21 @@ typedef struct {
  * x_first to R0 + 2 cm after x_last. Edit the fields to sweep otherwise. */
 tirenv_positions tirenv_positions_default(double x_first, double x_last, double R0);
 
+/* Positions a warm-start chain runs before it starts again from the model's state right
+ * after it was set: tirenv envelope's whole-mode chunks and the stream's blocks, so that the
+ * two give the same bytes. */
+enum { TIRENV_ENVELOPE_BLOCK = 8192 };
+
 /* Evaluates the positions x_k = x_from + k*dx (m) up to x_to (m; as the CLI's sweep) at load
  * (N), taking vertices from source (called with source_ctx) only as far as the tire's reach
- * ahead needs, and passing each point to sink (called with ctx). Equals tirenv_model_set +
- * tirenv_model_envelope over the whole profile bit for bit, iterations included (the warm
- * start carries over as the window moves), the check that the hub clears the ground within
- * reach included (tirenv_model_eval), so any elevation and grade stream. A network's
- * positions go through tirenv_model_envelope in blocks of 8192 counted from x_from (as tirenv
- * envelope's whole-mode chunks: a single cleat's slopes are one-sided at a block's ends).
+ * ahead needs, and passing each point to sink (called with ctx). Equals tirenv envelope's
+ * whole mode over the whole profile bit for bit, iterations included: tirenv_model_set, then
+ * the positions in blocks of TIRENV_ENVELOPE_BLOCK counted from x_from, each starting from the
+ * model's state right after the set (several tracks: set again), the warm start carrying over
+ * within a block as the window moves; the check that the hub clears the ground within reach
+ * included (tirenv_model_eval), so any elevation and grade stream. A network's positions go
+ * through tirenv_model_envelope a block at a time (a single cleat's slopes are one-sided at a
+ * block's ends).
  * Vertices out of order, or not finite, stop it with TIRENV_EINVAL naming the vertex. stats
  * may be NULL. Takes the vertices from where the source stands. */
 int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *source_ctx,

@@ -115,14 +115,10 @@ class Profile:
         if not isinstance(side, str) or lib.tirenv_rdf_side_find(side.encode(), side_c):
             raise invalid(f"expected left, right or mean, got {side!r}", "side")
         src.rdf_side = side_c[0]
-        opened = ffi.new("tirenv_road_file **")
+        out = ffi.new("tirenv_profile **")
         diag = new_diag()
-        check(lib.tirenv_road_file_open(path_bytes(path), opened, diag), diag)
-        out = ffi.new("tirenv_profile *[1]")
-        try:  # the file opened once, its format told once: the library's one road reader
-            check(lib.tirenv_road_file_read(opened[0], src, 1, ffi.NULL, out, diag), diag)
-        finally:
-            lib.tirenv_road_file_free(opened[0])
+        # the library's one road reader: the file opened once, its format told once
+        check(lib.tirenv_profile_read_file(path_bytes(path), src, out, diag), diag)
         return cls._from(out[0], "no profile")
 
     # --- what it holds ---------------------------------------------------------------------

@@ -54,7 +54,8 @@ static void usage(FILE *fp)
     fputs("  --stream             with --profile: read the file as the tire rolls, in memory\n"
           "                       bounded by the tire's reach whatever the road's length (the\n"
           "                       file is read twice: first to check it and find its ends; an\n"
-          "                       OpenCRG road a block of rows at a time, an RDF road whole);\n"
+          "                       OpenCRG road a block of rows at a time, an RDF road whole;\n"
+          "                       a pipe or /dev/stdin is kept in memory, at most 256 MiB);\n"
           "                       the network's warnings come after the rows\n",
           fp);
     cli_help_envelope_output(fp);
@@ -289,7 +290,8 @@ static int stream_row(void *ctx, const tirenv_point *pt)
 }
 
 /* The first pass of --stream: checks the whole file, every track (so that a bad row late in
- * it fails before any output), and finds its first and last x, in constant memory. */
+ * it fails before any output), and finds its first and last x, in constant memory (a regular
+ * file; a pipe's bytes are kept by the road file). */
 static int stream_extent(const run *r, double *first, double *last, tirenv_diag *diag)
 {
     tirenv_profile_file_reader *in;

@@ -6,10 +6,12 @@
 #define TIRENV_CLI_ENVELOPE_CHUNKS_H
 
 #include "cli/cli.h"
+#include "tirenv/stream.h"
 
 /* Positions a chunk: the warm-start chain restarts from the model's cold state every
- * CLI_CHUNK positions (position k = x_from + k*dx starts a chain when k % CLI_CHUNK == 0). */
-enum { CLI_CHUNK = 8192 };
+ * CLI_CHUNK positions (position k = x_from + k*dx starts a chain when k % CLI_CHUNK == 0), as
+ * the stream's blocks do (tirenv/stream.h). */
+enum { CLI_CHUNK = TIRENV_ENVELOPE_BLOCK };
 
 typedef struct cli_chunks cli_chunks;
 

@@ -30,8 +30,6 @@ typedef struct {
     double load[2];        /* static load of one tire, N */
     const tirenv_profile *p;
     tirenv_ride_plan plan; /* each speed's run and the inputs' grid */
-    double x0, dx;         /* the grid, the plan's */
-    size_t n;
 } ride_setup;
 
 static int load_vehicle(const ride_options *r, ride_setup *s)
@@ -122,14 +120,14 @@ static int input_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     double t0 = cli_thread_seconds();
     if (asks(r, TIRENV_RIDE_STATIC))
         status = ride_cli_axle_input(in->type, &s->tire[axle], s->load[axle], s->p, in->nn,
-                                     in->R0_nn, r->extrapolate, s->x0, s->dx, s->n,
+                                     in->R0_nn, r->extrapolate, s->plan.x0, s->plan.dx, s->plan.n,
                                      in->w[axle], p->warnings[k], sizeof p->warnings[k], diag);
     p->seconds[k][0] = cli_thread_seconds() - t0;
     t0 = cli_thread_seconds();
     if (!status && asks(r, TIRENV_RIDE_DYNAMIC)) {
         char table_warnings[1024];
         status = ride_cli_axle_table(in->type, &s->tire[axle], s->load[axle], s->p, in->nn,
-                                     in->R0_nn, r->extrapolate, s->x0, s->dx, s->n,
+                                     in->R0_nn, r->extrapolate, s->plan.x0, s->plan.dx, s->plan.n,
                                      &in->table[axle], table_warnings, sizeof table_warnings,
                                      diag);
         if (!asks(r, TIRENV_RIDE_STATIC))
@@ -158,7 +156,7 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     int code = CLI_EXIT_OK, status = TIRENV_OK;
     for (size_t i = 0; i < r->n_models && !code; ++i) {
         for (int axle = 0; axle < 2 && asks(r, TIRENV_RIDE_STATIC); ++axle)
-            if (!(in[i].w[axle] = malloc(s->n * sizeof *in[i].w[axle])))
+            if (!(in[i].w[axle] = malloc(s->plan.n * sizeof *in[i].w[axle])))
                 code = cli_fail(TIRENV_ENOMEM, NULL);
         /* x_N refers to the radius of the network's data, when the file records it. */
         tirenv_train_record rec = {.R0 = 0};
@@ -253,8 +251,8 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
                      tirenv_ride_sample out[], tirenv_diag *diag)
 {
     if (env == TIRENV_RIDE_STATIC) {
-        const tirenv_ride_track front = {s->x0, s->dx, s->n, in->w[0]};
-        const tirenv_ride_track rear = {s->x0, s->dx, s->n, in->w[1]};
+        const tirenv_ride_track front = {s->plan.x0, s->plan.dx, s->plan.n, in->w[0]};
+        const tirenv_ride_track rear = {s->plan.x0, s->plan.dx, s->plan.n, in->w[1]};
         return tirenv_ride_run(&s->v, &front, &rear, set, out, diag);
     }
     if (env == TIRENV_RIDE_DYNAMIC)
@@ -268,7 +266,7 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
     for (int axle = 0; axle < 2 && !status; ++axle)
         status = direct_model(s, in, axle, r->extrapolate, &m[axle], diag);
     for (int axle = 0; axle < 2 && !status; ++axle)
-        status = tirenv_ride_direct_input(m[axle], s->load[axle], s->dx, &d[axle], &fn[axle],
+        status = tirenv_ride_direct_input(m[axle], s->load[axle], s->plan.dx, &d[axle], &fn[axle],
                                           diag);
     if (!status)
         status = tirenv_ride_run_input(&s->v, &fn[0], &fn[1], set, out, diag);
@@ -360,9 +358,6 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         code = CLI_EXIT_USAGE;
         goto done;
     }
-    s.x0 = s.plan.x0;
-    s.dx = s.plan.dx;
-    s.n = s.plan.n;
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = tirenv_model_type_name(r->models[i]);

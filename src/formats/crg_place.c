@@ -144,10 +144,9 @@ static int height_at(const tirenv_crg *c, double u, double v, double *z, tirenv_
     spec.v = v;
     if (!set(&c->opts[CRG_OPT_BORDER_MODE_V]))
         spec.border_mode_v = 2;
-    double f = (u - c->u0) / c->du;
-    f = f < 0 ? 0 : f > (double)(c->nu - 1) ? (double)(c->nu - 1) : f;
-    const size_t i = row_of(c, u, NULL);
-    f -= (double)i;
+    double f;
+    const size_t i = row_of(c, u, &f);
+    f = f < 0 ? 0 : f > 1 ? 1 : f;
     double uu[2], zz[2];
     const int status = tirenv_crg_track_rows(c, &spec, i, 2, uu, zz, diag);
     if (status)

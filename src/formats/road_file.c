@@ -22,8 +22,8 @@ struct tirenv_road_file {
     tirenv_profile_format format; /* told by the first bytes */
     int fd;
     int regular;                  /* a regular file: read where asked */
-    tirenv_source src;            /* its bytes at any position; a pipe's once read whole */
-    int have_src;
+    tirenv_source src;            /* its bytes at any position; a pipe's once read whole
+                                   * (src.name set: opened) */
     unsigned char *buf;           /* a pipe or device: what has been read of it */
     size_t len, cap;
     int eof;                      /* ... and whether that is all of it */
@@ -118,7 +118,7 @@ FILE *tirenv_road_file__stream(tirenv_road_file *f, tirenv_diag *diag)
 int tirenv_road_file__source(tirenv_road_file *f, const tirenv_source **out, tirenv_diag *diag)
 {
     *out = NULL;
-    if (!f->have_src) {
+    if (!f->src.name) {
         const int e = fill(f, SIZE_MAX);
         if (e == EFBIG)
             return tirenv_error(diag, TIRENV_EIO, f->name, 0, "",
@@ -130,7 +130,6 @@ int tirenv_road_file__source(tirenv_road_file *f, const tirenv_source **out, tir
         const int status = tirenv_source__open_memory(&f->src, f->buf, f->len, f->name, diag);
         if (status)
             return status;
-        f->have_src = 1;
     }
     *out = &f->src;
     return TIRENV_OK;
@@ -202,10 +201,10 @@ int tirenv_road_file_open(const char *path, tirenv_road_file **out, tirenv_diag 
     else if (S_ISDIR(st.st_mode))
         status = tirenv_error(diag, TIRENV_EIO, path, 0, "", "is a directory; expected a CSV, "
                               "OpenCRG or RDF road file");
-    else if ((f->regular = S_ISREG(st.st_mode)) &&
-             !(status = tirenv_source__open_fd(&f->src, f->fd, (size_t)st.st_size, path,
-                                               diag)))
-        f->have_src = 1;
+    else if ((f->regular = S_ISREG(st.st_mode)))
+        status = tirenv_source__share(
+            &f->src, &(tirenv_source){.fd = f->fd, .size = (size_t)st.st_size, .name = f->name},
+            diag);
     if (!status)
         status = detect(f, diag);
     if (status) {

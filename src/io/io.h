@@ -65,11 +65,6 @@ int tirenv_source__open_file(tirenv_source *s, const char *path, tirenv_diag *di
 int tirenv_source__open_memory(tirenv_source *s, const void *data, size_t size,
                                const char *name, tirenv_diag *diag);
 
-/* A source over an open regular file of size bytes that the caller keeps open (fd) and
- * closes after the source; name labels messages (copied). */
-int tirenv_source__open_fd(tirenv_source *s, int fd, size_t size, const char *name,
-                           tirenv_diag *diag);
-
 /* s reads what from reads (the same file or buffer, which must outlive s), with its own
  * copy of the name. */
 int tirenv_source__share(tirenv_source *s, const tirenv_source *from, tirenv_diag *diag);

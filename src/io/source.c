@@ -51,19 +51,6 @@ int tirenv_source__open_file(tirenv_source *s, const char *path, tirenv_diag *di
     return TIRENV_OK;
 }
 
-int tirenv_source__open_fd(tirenv_source *s, int fd, size_t size, const char *name,
-                           tirenv_diag *diag)
-{
-    memset(s, 0, sizeof *s);
-    s->fd = -1;
-    if (!(s->name = dup_name(name)))
-        return tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
-    s->fd = fd;
-    s->size = size;
-    s->shared = 1;
-    return TIRENV_OK;
-}
-
 int tirenv_source__share(tirenv_source *s, const tirenv_source *from, tirenv_diag *diag)
 {
     memset(s, 0, sizeof *s);

@@ -33,8 +33,7 @@
  *   F_z = FNOMIN*(Q_FZ1*s + Q_FZ2*s^2),   s = rho/R0,
  *   Q_FZ1 = sqrt((VERTICAL_STIFFNESS*R0/FNOMIN)^2 - 4*Q_FZ2),
  * so that VERTICAL_STIFFNESS is the tangent stiffness at FNOMIN (MF-Tyre 6.1's Q_FZ1 when a file
- * gives none; tirenv always derives it so). With Q_FZ2 = 0 it is the linear spring
- * rho = F_z/VERTICAL_STIFFNESS, computed as such, bit for bit as before Q_FZ2 was read. */
+ * gives none; tirenv always derives it so). */
 double tirenv_cam_q_fz1(double c_z, double R0, double fnomin, double q_fz2)
 {
     const double k = c_z * R0 / fnomin;

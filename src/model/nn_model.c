@@ -45,7 +45,7 @@ typedef struct {
     double R0;                 /* the free radius x_N refers to, m */
     char r0_warning[256];      /* the network's R0 is not the tire's, or "" */
     int extrapolate;           /* evaluate outside the trained ranges (with warnings) */
-    tirenv_contact_law law;    /* the network's tire: load -> l_c; n = 0: the springs' chord */
+    tirenv_contact_law law;    /* the network's tire: load -> l_c; n = 0: the springs model's flat-ground contact length */
     int pinned;                /* the last load_for_contact_length's pair: */
     double pin_load, pin_l_c;  /* N, m */
     /* The set: */

@@ -77,20 +77,38 @@ static double points_energy(tirenv_ring *r, const double w[], double grad[])
     return E;
 }
 
+/* The right-hand side of the window's system: the points' omega R (k_t d + k_b (d - t_r)) N
+ * (assemble's; alone where the matrix is kept). */
+static void assemble_rhs(const tirenv_ring *r, double rhs[])
+{
+    const double t_r = r->par.t_r, R = r->R;
+    for (size_t i = 0; i < r->n; ++i)
+        rhs[i] = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
+        const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
+        const size_t i = q->j - r->lo;
+        rhs[i] += b * (1 - q->s);
+        rhs[i + 1] += b * q->s;
+    }
+}
+
 /* The window's belt stiffness S (band, corner) plus, on every point in tread (or belt)
  * contact, omega R psi'' N N^T; the right-hand side the points' omega R (k_t d + k_b (d -
  * t_r)) N, so that the solution is the minimum of E with the points' states fixed. */
 static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
 {
     const size_t n = r->n;
-    const double *s = tirenv_ring__belt_stencil(r->belt), t_r = r->par.t_r, R = r->R;
+    const double *s = tirenv_ring__belt_stencil(r->belt), R = r->R;
     tirenv_ring_band *A = &r->A;
     A->n = n;
     for (size_t i = 0; i < n; ++i) {
         A->a0[i] = s[0];
         A->a1[i] = i + 1 < n ? s[1] : 0;
         A->a2[i] = i + 2 < n ? s[2] : 0;
-        rhs[i] = 0;
     }
     A->a0[0] -= q4[0][0];
     A->a1[0] -= q4[0][1];
@@ -107,33 +125,13 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
             continue;
         const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         const double c = q->omega * R * (q->k_t + (q->st == 2 ? k_b : 0));
-        const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
         const size_t i = q->j - r->lo;
         const double n0 = 1 - q->s, n1 = q->s;
         A->a0[i] += c * n0 * n0;
         A->a0[i + 1] += c * n1 * n1;
         A->a1[i] += c * n0 * n1;
-        rhs[i] += b * n0;
-        rhs[i + 1] += b * n1;
     }
-}
-
-/* Only the right-hand side of assemble, the same operations. */
-static void assemble_rhs(const tirenv_ring *r, double rhs[])
-{
-    const double t_r = r->par.t_r, R = r->R;
-    for (size_t i = 0; i < r->n; ++i)
-        rhs[i] = 0;
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        const tirenv_ring_point *q = &r->pts[k];
-        if (q->st == 0)
-            continue;
-        const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
-        const double b = q->omega * R * (q->k_t * q->d + (q->st == 2 ? k_b * (q->d - t_r) : 0));
-        const size_t i = q->j - r->lo;
-        rhs[i] += b * (1 - q->s);
-        rhs[i + 1] += b * q->s;
-    }
+    assemble_rhs(r, rhs);
 }
 
 /* What makes the matrix of a point in contact (assemble). */

@@ -33,9 +33,10 @@ static int unit_load(const tirenv_springs_params *par, double beta, size_t n, co
     int status = TIRENV_OK;
     for (size_t i = 0; i < n && !status; i++) {
         tirenv_flat fl;
-        status = tirenv_model_flat_at_height(m, R0 - d[i], &fl, diag);
-        f[i] = fl.load / c_unit;
-        l[i] = fl.contact_length;
+        if (!(status = tirenv_model_flat_at_height(m, R0 - d[i], &fl, diag))) {
+            f[i] = fl.load / c_unit;
+            l[i] = fl.contact_length;
+        }
     }
     tirenv_model_free(m);
     return status;

@@ -272,7 +272,7 @@ typedef struct {
     unsigned char *in_w;   /* per row: in the working set */
     double *lambda;        /* per row: reaction, N */
     size_t *order;         /* KKT unknowns: element (< N) or N + row */
-    size_t *pos;           /* per row: its KKT position (rows in the working set) */
+    size_t *pos;           /* scratch of tirenv_springs__cc_rows' layout, cap rows */
     double *band, *rhs;
     /* per KKT unknown: the first column of its row's envelope (the first nonzero of the
      * system's row), and the last row whose envelope reaches its column */

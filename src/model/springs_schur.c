@@ -166,7 +166,6 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c, double x[], 
     tri_solve(c, x);
     for (size_t p = 0; p < k; ++p)
         lam[p] -= row_dot(c, &c->rows[c->order[c->schur_pos[p]] - N], x, f0, f1);
-#define S_AT(p, q) S[(p) * TIRENV_SPRINGS__SCHUR_MAX + (q)]
     for (size_t p = 0; p < k; ++p)
         for (size_t m = 0; m < p; ++m)
             lam[p] -= S_AT(p, m) * lam[m];

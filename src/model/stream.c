@@ -179,9 +179,7 @@ static void profiles_free(tirenv_profile *p[], size_t n)
     }
 }
 
-/* The positions of a block: as many as tirenv envelope's whole-mode chunk (CLI_CHUNK,
- * src/cli/envelope_chunks.h), which the tests of streamed roads and cleats check. */
-enum { stream_block = 8192 };
+enum { stream_block = TIRENV_ENVELOPE_BLOCK };
 
 typedef struct {
     int on;
@@ -281,9 +279,8 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
         }
         if (b.on) {
             /* The block's positions this window serves: the first always. */
-            const size_t end = n - k < stream_block - k % stream_block
-                                   ? n
-                                   : k + (stream_block - k % stream_block);
+            const size_t block_end = (k / stream_block + 1) * stream_block;
+            const size_t end = n < block_end ? n : block_end;
             size_t nb = 1, failed = 0;
             b.x[0] = x;
             for (; k + nb < end; ++nb) {

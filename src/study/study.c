@@ -94,12 +94,13 @@ static int write_model(const tirenv_study_settings *s, const tirenv_train_settin
         /* The load-contact-length relation of the tire the data came from, as tirenv train
          * records it, so that the network takes a load (the ride, envelope --load) as that
          * tire would. */
-        char law_what[80];
+        char law_what[80] = "";
         status = tirenv_contact_law_of_data(fit, s->simulated_by, &s->tire, &rec.law, law_what,
                                             sizeof law_what, diag);
-        snprintf(rec.law_source, sizeof rec.law_source, "%s", law_what);
-        if (!status)
+        if (!status) {
+            snprintf(rec.law_source, sizeof rec.law_source, "%s", law_what);
             status = tirenv_nn_write_json(path, nn, &rec, diag);
+        }
     }
     sample_sets_free(&ss);
     return status;

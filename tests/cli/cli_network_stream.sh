@@ -43,7 +43,7 @@ whole_stream iso --profile road.csv --contact-length 0.33 --extrapolate -o iso.c
 check "ISO 8608 road, 60 m at 1 mm: --stream writes the whole run's CSV byte for byte" \
     '[ $rc -eq 0 ] && [ $rc_w -eq 0 ] && [ $(rows iso.s.csv) -eq 61401 ] &&
      cmp -s iso.w.csv iso.s.csv'
-check "ISO 8608 road: the same warnings and summary, after the rows" \
+check "ISO 8608 road: the same warnings and summary" \
     'cmp -s iso.w.err iso.s.err && grep -q "obstacles above a baseline" iso.s.err'
 whole_stream isoout --profile road.csv --load 15000 --extrapolate --dx 0.0031 --x-from 7.77
 check "ISO 8608 road to standard output at another load and sweep: the same bytes" \

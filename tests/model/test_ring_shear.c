@@ -310,6 +310,17 @@ static void test_lugs(void **state)
     tirenv_model_free(lugged);
 }
 
+/* b repeats a bit for bit (z, fx, fz, iterations), or the test fails naming where. */
+static void same_bits(const tirenv_point *a, const tirenv_point *b, double G_t, size_t k,
+                      const char *where)
+{
+    if (memcmp(&a->z, &b->z, sizeof a->z) != 0 || memcmp(&a->fx, &b->fx, sizeof a->fx) != 0 ||
+        memcmp(&a->fz, &b->fz, sizeof a->fz) != 0 || a->iterations != b->iterations)
+        fail_msg("TREAD_SHEAR %g: position %zu %s: z %.17g against %.17g, fx %.17g against "
+                 "%.17g, fz %.17g against %.17g, iterations %zu against %zu", G_t, k, where,
+                 b->z, a->z, b->fx, a->fx, b->fz, a->fz, b->iterations, a->iterations);
+}
+
 /* The model's state (tirenv_model_state_save / _restore) holds the ring's warm start, the
  * belt's w and the tread's u included: evaluations after a restore repeat those after the save
  * bit for bit, iterations included, with the Winkler and the shear-coupled tread. The positions
@@ -344,14 +355,7 @@ static void test_state_restores_bits(void **state)
         for (size_t k = 0; k < AFTER; ++k) {
             assert_int_equal(tirenv_model_eval(m, x0 + 0.0017 * (double)(BEFORE + k),
                                                &again[k], &diag), TIRENV_OK);
-            if (memcmp(&first[k].z, &again[k].z, sizeof first[k].z) != 0 ||
-                memcmp(&first[k].fx, &again[k].fx, sizeof first[k].fx) != 0 ||
-                memcmp(&first[k].fz, &again[k].fz, sizeof first[k].fz) != 0 ||
-                first[k].iterations != again[k].iterations)
-                fail_msg("TREAD_SHEAR %g: position %zu after the restore: z %.17g against "
-                         "%.17g, fx %.17g against %.17g, iterations %zu against %zu",
-                         t.ring.G_t, BEFORE + k, again[k].z, first[k].z, again[k].fx,
-                         first[k].fx, again[k].iterations, first[k].iterations);
+            same_bits(&first[k], &again[k], t.ring.G_t, BEFORE + k, "after the restore");
         }
         /* A twin that has evaluated nothing, given the state, goes on the same way. */
         tirenv_model *twin = tirenv_model_alloc(tirenv_model_ring, &t);
@@ -361,13 +365,7 @@ static void test_state_restores_bits(void **state)
         for (size_t k = 0; k < AFTER; ++k) {
             assert_int_equal(tirenv_model_eval(twin, x0 + 0.0017 * (double)(BEFORE + k),
                                                &again[k], &diag), TIRENV_OK);
-            if (memcmp(&first[k].z, &again[k].z, sizeof first[k].z) != 0 ||
-                memcmp(&first[k].fx, &again[k].fx, sizeof first[k].fx) != 0 ||
-                first[k].iterations != again[k].iterations)
-                fail_msg("TREAD_SHEAR %g: position %zu in the twin: z %.17g against %.17g, "
-                         "fx %.17g against %.17g, iterations %zu against %zu", t.ring.G_t,
-                         BEFORE + k, again[k].z, first[k].z, again[k].fx, first[k].fx,
-                         again[k].iterations, first[k].iterations);
+            same_bits(&first[k], &again[k], t.ring.G_t, BEFORE + k, "in the twin");
         }
         tirenv_model_free(twin);
         free(buf);

@@ -561,6 +561,7 @@ static void test_lone_vertex_stiffness(void **state)
     const tirenv_tire t = continuous_tire();
     tirenv_profile *p = tirenv_profile_triangle(0.2, 0.08);
     tirenv_springs *s = tirenv_springs_alloc(&t.springs);
+    assert_non_null(s);
     const double rho = t.springs.R0 - 0.05, dphi = t.springs.dphi;
     double F0 = 0;
     for (int q = 0; q <= 3; ++q) {

@@ -16,12 +16,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tirenv/stream.h"
 #include "tirenv/tirenv.h"
 #include "tirenv/train.h"
 
 static const double R0 = 0.68;    /* m: the data set's tire */
 static const double l_c = 0.33;   /* m */
-enum { CHUNK = 8192 };            /* the CLI's whole-mode chunk (envelope_chunks.h) */
+enum { CHUNK = TIRENV_ENVELOPE_BLOCK }; /* the CLI's whole-mode chunk (tirenv/stream.h) */
 
 
 /* ---- roads ----------------------------------------------------------------------------- */
