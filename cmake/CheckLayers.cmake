@@ -245,10 +245,19 @@ if(CORE_OBJECTS AND AUX_OBJECTS)
       list(FIND TIRENV_AUX_DIRS ${aux_defined.${sym}} theirs)
       if(theirs GREATER own)
         violation("${src}: the ${module} module calls ${sym}, defined in ${aux_defined.${sym}}, which comes after it (TIRENV_AUX_DIRS)")
-      elseif(sym MATCHES "__" AND NOT theirs EQUAL own
-             AND NOT EXISTS ${SOURCE_DIR}/src/${aux_defined.${sym}}/${aux_defined.${sym}}.h)
-        # Internal (tirenv_<object>__) names cross modules only through an interface header.
-        violation("${src}: the ${module} module calls ${sym}, internal to ${aux_defined.${sym}}, which has no interface header (${aux_defined.${sym}}/${aux_defined.${sym}}.h)")
+      elseif(sym MATCHES "__" AND NOT theirs EQUAL own)
+        # Internal (tirenv_<object>__) names cross modules only through an interface header,
+        # declared there (not by a local extern of another private header's function).
+        set(iface ${SOURCE_DIR}/src/${aux_defined.${sym}}/${aux_defined.${sym}}.h)
+        if(NOT EXISTS ${iface})
+          violation("${src}: the ${module} module calls ${sym}, internal to ${aux_defined.${sym}}, which has no interface header (${aux_defined.${sym}}/${aux_defined.${sym}}.h)")
+        else()
+          file(READ ${iface} iface_text)
+          string(FIND "${iface_text}" "${sym}(" at)
+          if(at EQUAL -1)
+            violation("${src}: the ${module} module calls ${sym}, internal to ${aux_defined.${sym}} and not declared in its interface header (${aux_defined.${sym}}/${aux_defined.${sym}}.h)")
+          endif()
+        endif()
       endif()
     endif()
   endforeach()
