@@ -144,6 +144,7 @@ struct tirenv_ring {
     void *key;
     size_t n_key, cap_key, key_lo, key_n;
     int key_valid;
+    size_t n_factor;       /* the Winkler tread's factorisations so far (the tests count them) */
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
 };
 

@@ -197,6 +197,7 @@ static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
     const int keyed = remember_matrix(r);
     assemble(r, (const double(*)[4])K, rhs);
     const int bad = tirenv_ring__band_factor(&r->A);
+    ++r->n_factor;
     r->key_valid = keyed && !bad;
     return bad;
 }
