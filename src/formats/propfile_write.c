@@ -27,6 +27,25 @@ static void pf_format_real(char *buf, size_t n, double v)
     snprintf(buf, n, "%.17g", v);
 }
 
+/* The text of a REAL or COUNT key's value at field (the shortest that reads back the same;
+ * the count in decimal); 0 for any other kind, whose text its caller writes. */
+static int pf_number_text(const pf_key *e, const unsigned char *field, char *value, size_t n)
+{
+    if (e->kind == TIRENV_PROPFILE_REAL) {
+        double v;
+        memcpy(&v, field, sizeof v);
+        pf_format_real(value, n, v);
+        return 1;
+    }
+    if (e->kind == TIRENV_PROPFILE_COUNT) {
+        size_t v;
+        memcpy(&v, field, sizeof v);
+        snprintf(value, n, "%zu", v);
+        return 1;
+    }
+    return 0;
+}
+
 int tirenv_propfile__get(const pf_schema *s, const void *obj, const char *field, char *buf,
                          size_t n, tirenv_propfile__kind *kind, tirenv_diag *diag)
 {
@@ -50,31 +69,16 @@ int tirenv_propfile__get(const pf_schema *s, const void *obj, const char *field,
     const pf_key *e = &s->keys[i];
     const unsigned char *at = (const unsigned char *)obj + e->offset;
     char value[1100];
-    switch (e->kind) {
-    case TIRENV_PROPFILE_REAL: {
-        double v;
-        memcpy(&v, at, sizeof v);
-        pf_format_real(value, sizeof value, v);
-        break;
-    }
-    case TIRENV_PROPFILE_COUNT: {
-        size_t v;
-        memcpy(&v, at, sizeof v);
-        snprintf(value, sizeof value, "%zu", v);
-        break;
-    }
-    case TIRENV_PROPFILE_NAME: {
+    if (pf_number_text(e, at, value, sizeof value)) {
+    } else if (e->kind == TIRENV_PROPFILE_NAME) {
         int v;
         memcpy(&v, at, sizeof v);
         const int known = v >= 0 && v < (int)(sizeof e->names / sizeof e->names[0]) &&
                           e->names[v];
         snprintf(value, sizeof value, "%s", known ? e->names[v] : "");
-        break;
-    }
-    default: /* PATH (UNIT keys are not found as settable) */
+    } else { /* PATH (UNIT keys are not found as settable) */
         snprintf(value, sizeof value, "%.*s", (int)(e->size ? e->size - 1 : 0),
                  (const char *)at);
-        break;
     }
     if (!buf || strlen(value) >= n)
         return tirenv_error(diag, TIRENV_EINVAL, "get", 0, name, "the value takes %zu bytes; "
@@ -146,40 +150,30 @@ static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *
                 continue;
             const unsigned char *field = (const unsigned char *)obj + e->offset;
             char value[40];
-            switch (e->kind) {
-            case TIRENV_PROPFILE_REAL: {
-                double v;
-                memcpy(&v, field, sizeof v);
-                pf_format_real(value, sizeof value, v);
-                break;
-            }
-            case TIRENV_PROPFILE_COUNT: {
-                size_t v;
-                memcpy(&v, field, sizeof v);
-                snprintf(value, sizeof value, "%zu", v);
-                break;
-            }
-            case TIRENV_PROPFILE_NAME: {
-                int v;
-                memcpy(&v, field, sizeof v);
-                if (v >= 0 && v < (int)(sizeof e->names / sizeof e->names[0]) && e->names[v])
-                    snprintf(value, sizeof value, "'%s'", e->names[v]);
-                else
-                    snprintf(value, sizeof value, "%d", v); /* unreadable, as it should be */
-                break;
-            }
-            case TIRENV_PROPFILE_UNIT:
-                snprintf(value, sizeof value, "'%s'", e->names[0]);
-                break;
-            case TIRENV_PROPFILE_PATH: {
-                /* Too long for value[]: printed here, padded as %-22s would. */
-                const char *p = (const char *)field;
-                const char *prefix = p[0] && p[0] != '/' ? cwd : "";
-                fprintf(fp, "%-24s = ", e->key);
-                const int w = fprintf(fp, "'%s%s'", prefix, p);
-                fprintf(fp, "%*s $ %s\n", w < 22 ? 22 - w : 0, "", e->comment);
-                continue;
-            }
+            if (!pf_number_text(e, field, value, sizeof value)) {
+                switch ((int)e->kind) {
+                case TIRENV_PROPFILE_NAME: {
+                    int v;
+                    memcpy(&v, field, sizeof v);
+                    if (v >= 0 && v < (int)(sizeof e->names / sizeof e->names[0]) && e->names[v])
+                        snprintf(value, sizeof value, "'%s'", e->names[v]);
+                    else
+                        snprintf(value, sizeof value, "%d", v); /* unreadable, as it should be */
+                    break;
+                }
+                case TIRENV_PROPFILE_UNIT:
+                    snprintf(value, sizeof value, "'%s'", e->names[0]);
+                    break;
+                case TIRENV_PROPFILE_PATH: {
+                    /* Too long for value[]: printed here, padded as %-22s would. */
+                    const char *p = (const char *)field;
+                    const char *prefix = p[0] && p[0] != '/' ? cwd : "";
+                    fprintf(fp, "%-24s = ", e->key);
+                    const int w = fprintf(fp, "'%s%s'", prefix, p);
+                    fprintf(fp, "%*s $ %s\n", w < 22 ? 22 - w : 0, "", e->comment);
+                    continue;
+                }
+                }
             }
             fprintf(fp, "%-24s = %-22s $ %s\n", e->key, value, e->comment);
         }
