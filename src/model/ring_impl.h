@@ -186,6 +186,11 @@ enum { TIRENV_RING_NEWTON_MAX_ITER = 200 }; /* Newton steps before _NOCONV */
 int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[], double xn[],
                         double xt[], double g[], int *factored);
 
+/* The error of a failed solve on n nodes: st a _BREAKDOWN (of the factorisation of the
+ * "<system> system") or _NOCONV (the "<contact> contact" of r's points not settled). */
+int tirenv_ring__newton_error(const tirenv_ring *r, int st, size_t n, const char *system,
+                              const char *contact, tirenv_diag *diag);
+
 /* The tread's shear stiffness k_s = G_t t_r b per unit belt length (N): TREAD_SHEAR times the
  * tread depth and BELT_WIDTH. Zero: a Winkler tread (ring_smooth.c). */
 double tirenv_ring__tread_shear(const tirenv_ring_params *par);

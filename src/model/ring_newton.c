@@ -92,3 +92,15 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
     }
     return TIRENV_RING_NEWTON_NOCONV;
 }
+
+int tirenv_ring__newton_error(const tirenv_ring *r, int st, size_t n, const char *system,
+                              const char *contact, tirenv_diag *diag)
+{
+    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the Cholesky factorisation of the %zu-node banded %s system broke "
+                            "down (not numerically positive definite)", n, system);
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                        "the %s contact of %zu points on %zu nodes did not settle in %d Newton "
+                        "steps", contact, r->n_pts, n, TIRENV_RING_NEWTON_MAX_ITER);
+}

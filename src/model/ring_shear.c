@@ -496,13 +496,6 @@ static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[]
     apply_K(r, (const double(*)[NB])K, x, y);
 }
 
-static int broke_down(size_t n, tirenv_diag *diag)
-{
-    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                        "the Cholesky factorisation of the %zu-node banded belt-and-tread "
-                        "system broke down (not numerically positive definite)", n);
-}
-
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag)
 {
@@ -527,19 +520,15 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                                    points_energy, T->col};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
-    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
-        return broke_down(n, diag);
-    if (st == TIRENV_RING_NEWTON_NOCONV)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the shear-coupled tread contact of %zu points on %zu nodes did not "
-                            "settle in %d Newton steps", r->n_pts, n,
-                            TIRENV_RING_NEWTON_MAX_ITER);
+    if (st != TIRENV_RING_NEWTON_OK)
+        return tirenv_ring__newton_error(r, st, n, "belt-and-tread", "shear-coupled tread", diag);
     /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
         assemble(r, Q, xt);
         if (band_factor(&T->win))
-            return broke_down(n, diag);
+            return tirenv_ring__newton_error(r, TIRENV_RING_NEWTON_BREAKDOWN, n,
+                                             "belt-and-tread", "shear-coupled tread", diag);
     }
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->w[j] = T->u[j] = 0;

@@ -240,22 +240,14 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
                                    points_energy, r->rhs};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, w, wn, wt, g, &factored);
-    if (st == TIRENV_RING_NEWTON_BREAKDOWN)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the Cholesky factorisation of the %zu-node banded contact system "
-                            "broke down (not numerically positive definite)", n);
-    if (st == TIRENV_RING_NEWTON_NOCONV)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the continuous tread contact of %zu points on %zu nodes did not "
-                            "settle in %d Newton steps", r->n_pts, n,
-                            TIRENV_RING_NEWTON_MAX_ITER);
+    if (st != TIRENV_RING_NEWTON_OK)
+        return tirenv_ring__newton_error(r, st, n, "contact", "continuous tread", diag);
     /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
         if (factor_cb(r, q4, wt))
-            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                                "the Cholesky factorisation of the %zu-node banded contact "
-                                "system broke down (not numerically positive definite)", n);
+            return tirenv_ring__newton_error(r, TIRENV_RING_NEWTON_BREAKDOWN, n, "contact",
+                                             "continuous tread", diag);
     }
     double sum_c = 0, sum_s = 0;
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
