@@ -8,14 +8,14 @@
 
 #include <stdio.h>
 
+#include "io/io.h"
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
 
-/* Reads fp (closed here) whole, named name in messages, as tirenv_profile_read_csv; again(ctx)
- * opens the same text from its start (or returns NULL) for the line of an error that only the
- * whole profile shows. *out is NULL on failure. */
-int tirenv_profile_csv__read(FILE *fp, const char *name, FILE *(*again)(void *ctx), void *ctx,
-                             tirenv_profile **out, tirenv_diag *diag);
+/* Reads fp (closed here) whole, named name in messages, as tirenv_profile_read_csv: the rows
+ * of the reader below, gathered. *out is NULL on failure. */
+int tirenv_profile_csv__read(FILE *fp, const char *name, tirenv_profile **out,
+                             tirenv_diag *diag);
 
 typedef struct tirenv_profile_csv__reader tirenv_profile_csv__reader;
 
@@ -30,7 +30,16 @@ int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
 int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
                                     int *got, tirenv_diag *diag);
 
+/* The file line of the row last read (0 before the header). */
+size_t tirenv_profile_csv__reader_line(const tirenv_profile_csv__reader *r);
+
 /* Closes the file; NULL is a no-op. */
 void tirenv_profile_csv__reader_free(tirenv_profile_csv__reader *r);
+
+/* The x (m) of the last data row of the CSV text in s, found from its end without reading
+ * the rows before it: 1 with *x set, or 0 where it cannot be told so (that row does not
+ * parse, a NUL byte, more than two of the longest lines of comments after it, a read error),
+ * and a reader from the start must find it, or the first bad row. */
+int tirenv_profile_csv__last_x(const tirenv_source *s, double *x);
 
 #endif

@@ -33,9 +33,6 @@ int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *dia
     return status ? status : tirenv_crg__open_source(s, out, diag);
 }
 
-/* The stream again() of tirenv_profile_csv__read: the file from its start, once more. */
-static FILE *again(void *f) { return tirenv_road_file__stream(f, NULL); }
-
 /* One profile of a 2-D road (CSV or RDF). */
 static int read_2d(tirenv_road_file *f, tirenv_rdf_side side, tirenv_profile **out,
                    tirenv_diag *diag)
@@ -46,7 +43,7 @@ static int read_2d(tirenv_road_file *f, tirenv_rdf_side side, tirenv_profile **o
         return status ? status : tirenv_rdf__read_source(s, side, out, diag);
     }
     FILE *fp = tirenv_road_file__stream(f, diag);
-    return fp ? tirenv_profile_csv__read(fp, tirenv_road_file_name(f), again, f, out, diag)
+    return fp ? tirenv_profile_csv__read(fp, tirenv_road_file_name(f), out, diag)
               : TIRENV_ENOMEM;
 }
 
@@ -178,6 +175,61 @@ int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_sourc
     else
         tirenv_road_file_free(f);
     return status;
+}
+
+/* Every row of a reader of f: its first and last x, each row checked. */
+static int extent_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                       const double v[], double *first, double *last, tirenv_diag *diag)
+{
+    tirenv_profile_file_reader *r;
+    int status = tirenv_road_file_reader(f, src, n, v, &r, diag);
+    double *z = status ? NULL : malloc(n * sizeof *z);
+    if (!status && !z)
+        status = tirenv_error(diag, TIRENV_ENOMEM, tirenv_road_file_name(f), 0, "",
+                              "out of memory");
+    for (int got = 1, k = 0; !status && got; k = 1) {
+        double x;
+        status = tirenv_profile_file_reader_next(r, &x, z, &got, diag);
+        if (!status && got) {
+            if (!k)
+                *first = x;
+            *last = x;
+        }
+    }
+    free(z);
+    tirenv_profile_file_reader_free(r);
+    return status;
+}
+
+/* A CSV's first row comes from a reader (which checks the header and the row), its last from
+ * the file's end (tirenv_profile_csv__last_x); where the last cannot be told so, or lies
+ * before the first (an x decreases somewhere), every row is read, and the first bad one
+ * named. */
+int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                            const double v[], double *first, double *last, tirenv_diag *diag)
+{
+    if (n == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, tirenv_road_file_name(f), 0, "tracks",
+                            "expected at least one track");
+    if (tirenv_road_file_format(f) != TIRENV_PROFILE_CSV)
+        return extent_read(f, src, n, v, first, last, diag);
+    FILE *fp = tirenv_road_file__stream(f, diag);
+    tirenv_profile_csv__reader *r = NULL;
+    int status = fp ? tirenv_profile_csv__reader_open(fp, tirenv_road_file_name(f), &r, diag)
+                    : TIRENV_ENOMEM;
+    int got = 0;
+    double z;
+    if (!status)
+        status = tirenv_profile_csv__reader_next(r, first, &z, &got, diag);
+    tirenv_profile_csv__reader_free(r);
+    if (status)
+        return status;
+    const tirenv_source *s;
+    if ((status = tirenv_road_file__source(f, &s, diag)))
+        return status;
+    if (tirenv_profile_csv__last_x(s, last) && *last >= *first)
+        return TIRENV_OK;
+    return extent_read(f, src, n, v, first, last, diag);
 }
 
 int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, double z[],

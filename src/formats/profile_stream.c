@@ -1,10 +1,12 @@
-/* Profile CSV read one vertex at a time, the vertex source of tirenv_model_stream: the format
- * and the checks of profile_csv.c, with the whole-profile check of tirenv_profile_validate (x
- * non-decreasing, at most two vertices at one x) done row by row so that it needs no memory
- * of the past rows.
+/* The one parser of profile CSV ("x_m,z_m", docs/formats.md section 4): a vertex at a time,
+ * the vertex source of tirenv_model_stream and what tirenv_profile_read_csv (profile_csv.c)
+ * gathers into a whole profile. The whole-profile check of tirenv_profile_validate (x
+ * non-decreasing, at most two vertices at one x) is done row by row, so that it needs no
+ * memory of the past rows.
  * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/profile_csv_impl.h"
 
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -65,8 +67,7 @@ int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
 }
 
 int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
-                                    int *got,
-                               tirenv_diag *diag)
+                                    int *got, tirenv_diag *diag)
 {
     *got = 0;
     if (r->done)
@@ -98,10 +99,77 @@ int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, do
         return tirenv_csv__fail(&r->rd, f[0].column, "x_m", "a third vertex at x_m = %.31s; "
                                 "expected at most two (a wall)", f[0].text);
     r->x_prev = v[0];
-    snprintf(r->prev_x, sizeof r->prev_x, "%s", f[0].text);
+    const size_t len = strnlen(f[0].text, sizeof r->prev_x - 1);  /* snprintf's bytes, faster */
+    memcpy(r->prev_x, f[0].text, len);
+    r->prev_x[len] = '\0';
     r->rows++;
     *x = v[0];
     *z = v[1];
     *got = 1;
     return TIRENV_OK;
+}
+
+size_t tirenv_profile_csv__reader_line(const tirenv_profile_csv__reader *r)
+{
+    return r->rd.line;
+}
+
+/* The x of the row in line[0, n) (its end-of-line characters included), if it is a whole
+ * data row by the reader's rules: 1 with *x set, else 0. */
+static int row_x(const char *line, size_t n, double *x)
+{
+    char *text = malloc(n + 1);
+    if (!text)
+        return 0;
+    memcpy(text, line, n);
+    while (n > 0 && (text[n - 1] == '\n' || text[n - 1] == '\r'))
+        n--;
+    text[n] = '\0';
+    tirenv_csv__reader rd = {.file = "", .line = 0, .text = text, .length = n, .diag = NULL};
+    tirenv_csv__field f[FIELDS + 1];
+    double v[FIELDS];
+    const int ok = tirenv_csv__fields(&rd, names, FIELDS, f) == TIRENV_OK &&
+                   tirenv_csv__number(&rd, &f[0], names[0], &v[0]) == TIRENV_OK &&
+                   tirenv_csv__number(&rd, &f[1], names[1], &v[1]) == TIRENV_OK;
+    free(text);
+    if (ok)
+        *x = v[0];
+    return ok;
+}
+
+/* The reader's lines, taken from the end: the last line with content (not blank, not a '#'
+ * comment: tirenv_csv__next's rule) within the last TAIL bytes, which hold at least two
+ * lines of the longest length the reader takes. */
+int tirenv_profile_csv__last_x(const tirenv_source *s, double *x)
+{
+    enum { TAIL = 2 * (TIRENV_TEXT__MAX_LINE + 2) };
+    const size_t n = s->size < TAIL ? s->size : TAIL, offset = s->size - n;
+    char *buf = malloc(n ? n : 1);
+    if (!buf || tirenv_source__read(s, offset, buf, n, NULL) != TIRENV_OK) {
+        free(buf);
+        return 0;
+    }
+    int found = 0;
+    size_t end = n;  /* the end of the line looked at, its '\n' excluded */
+    if (end > 0 && buf[end - 1] == '\n')
+        end--;
+    for (;;) {
+        size_t begin = end;
+        while (begin > 0 && buf[begin - 1] != '\n')
+            begin--;
+        /* A line that may start before the window, or the file's first (the header, its
+         * byte-order mark): not told from here. So is a NUL byte, an error at its line. */
+        if (begin == 0 || memchr(buf + begin, '\0', end - begin))
+            break;
+        const char *p = buf + begin;
+        while (p < buf + end && isspace((unsigned char)*p))
+            p++;
+        if (p < buf + end && *p != '#') {
+            found = row_x(buf + begin, end - begin, x);
+            break;
+        }
+        end = begin - 1;
+    }
+    free(buf);
+    return found;
 }

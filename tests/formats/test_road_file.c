@@ -4,12 +4,13 @@
  * writer fills once, read whole and by two row readers at once, each format giving the
  * regular file's profile bit for bit; and a regular file removed after the open and replaced
  * by another road, still read as it was. The open's errors keep the texts of
- * tirenv_profile_detect's. */
+ * tirenv_profile_detect's. A road's ends (tirenv_road_file_extent) as its readers find them. */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -195,12 +196,117 @@ static void test_open_errors(void **state)
     tirenv_road_file_free(NULL);
 }
 
+/* The extent of f: its first and last x, which must be want's ends, bit for bit. */
+static void assert_extent(tirenv_road_file *f, const tirenv_profile *want)
+{
+    double first = NAN, last = NAN, a, b;
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_file_extent(f, NULL, 2, NULL, &first, &last, &d), TIRENV_OK);
+    tirenv_profile_extent(want, &a, &b);
+    assert_bits_equal(first, a);
+    assert_bits_equal(last, b);
+}
+
+/* tirenv_road_file_extent: each format's ends, from a regular file and from a FIFO; a CSV's
+ * without its middle rows (one that does not parse there is a reader's to find, and is not
+ * read), its last row found behind blank lines, comments, CRLF ends and more than the reader's
+ * longest line of comments (then read from the start); where the last row cannot be told from
+ * the end (it does not parse, lies before the first, or a NUL byte follows it) the first bad
+ * row is named at its line, as a reader names it. */
+static void test_extent(void **state)
+{
+    const tirenv_test_dir *fx = *state;
+    write_roads(fx);
+    for (size_t k = 0; k < 3; ++k) {
+        char path[600], fifo[600];
+        tirenv_test_path(fx, names[k], path);
+        tirenv_test_path(fx, "fifo", fifo);
+        tirenv_diag d;
+        tirenv_profile *want = NULL;
+        assert_int_equal(tirenv_profile_read_file(path, NULL, &want, &d), TIRENV_OK);
+        tirenv_road_file *f = NULL;
+        assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
+        assert_extent(f, want);
+        tirenv_road_file_free(f);
+        unlink(fifo);
+        assert_int_equal(mkfifo(fifo, 0600), 0);
+        const pid_t writer = feed(fifo, path);
+        assert_int_equal(tirenv_road_file_open(fifo, &f, &d), TIRENV_OK);
+        assert_extent(f, want);
+        read_all_ways(f, want);  /* the FIFO's bytes still all there for the readers */
+        tirenv_road_file_free(f);
+        int st = -1;
+        assert_int_equal(waitpid(writer, &st, 0), writer);
+        tirenv_profile_free(want);
+    }
+    /* Long comment tails: 3 lines of 65,000 characters after the last row. */
+    static char tail[3 * 65002 + 1];
+    for (size_t i = 0; i < 3; ++i) {
+        char *line = tail + i * 65002;
+        line[0] = '#';
+        memset(line + 1, '-', 65000);
+        line[65001] = '\n';
+    }
+    static char text[sizeof tail + 256];
+    const struct {
+        const char *head, *tail;
+        double first, last;       /* NAN: an error */
+        size_t line;
+        const char *says;
+    } cases[] = {
+        {"x_m,z_m\n-0.125,0\n0.2385,abc\n7.125,0.5\n", "", -0.125, 7.125, 0, NULL},
+        {"x_m,z_m\r\n-0.125,0\r\n0.5,0\r\n 7.125 , 0.5 \r\n", "\r\n  \r\n# end\r\n\n", -0.125,
+         7.125, 0, NULL},
+        {"x_m,z_m\n-0.125,0\n0.5,0\n7.125,0.5", "", -0.125, 7.125, 0, NULL},
+        {"x_m,z_m\n-0.125,0\n0.5,0\n7.125,0.5\n", tail, -0.125, 7.125, 0, NULL},
+        {"x_m,z_m\n-0.125,0\n0.2385,abc\n7.125,0.5\n", tail, NAN, NAN, 3,
+         "expected a number, got 'abc'"},
+        {"x_m,z_m\n-0.125,0\n0.5,0\n7.125,0.5x\n", "", NAN, NAN, 4,
+         "expected a number, got '0.5x'"},
+        {"x_m,z_m\n3.5,0\n4,0\n2.25,0.5\n", "# back\n", NAN, NAN, 4, "x_m decreases"},
+        {"x_m,z_m\n3.5,0\n4,0\n", "# a NUL\0\n", NAN, NAN, 4, "a NUL byte"},
+        {"x_m,z_m\n3.5,0\n", "", 3.5, 3.5, 0, NULL},
+        {"x_m,z_m\n# nothing\n", "", NAN, NAN, 0, "no data rows"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; ++i) {
+        char path[600];
+        tirenv_test_path(fx, "extent.csv", path);
+        const size_t nh = strlen(cases[i].head);
+        const size_t nt = cases[i].tail == tail ? sizeof tail - 1
+                          : i == 7              ? 9
+                                                : strlen(cases[i].tail);
+        memcpy(text, cases[i].head, nh);
+        memcpy(text + nh, cases[i].tail, nt);
+        FILE *fp = fopen(path, "wb");
+        assert_non_null(fp);
+        assert_int_equal(fwrite(text, 1, nh + nt, fp), nh + nt);
+        assert_int_equal(fclose(fp), 0);
+        tirenv_road_file *f = NULL;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
+        double first = NAN, last = NAN;
+        const int status = tirenv_road_file_extent(f, NULL, 1, NULL, &first, &last, &d);
+        tirenv_road_file_free(f);
+        if (cases[i].says) {
+            tirenv_test_expect_diag(i, status, &d, TIRENV_EPARSE, path, cases[i].line,
+                                    d.column, d.field, cases[i].says);
+        } else {
+            assert_int_equal(status, TIRENV_OK);
+            assert_bits_equal(first, cases[i].first);
+            assert_bits_equal(last, cases[i].last);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_fifo_read_once, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_regular_file_not_reopened, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_extent, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_open_errors, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
