@@ -52,11 +52,13 @@ static void usage(FILE *fp)
     cli_help_sweep(fp);
     cli_help_road(fp, 1);
     fputs("  --stream             with --profile: read the file as the tire rolls, in memory\n"
-          "                       bounded by the tire's reach whatever the road's length (the\n"
-          "                       file is read twice: first to check it and find its ends; an\n"
-          "                       OpenCRG road a block of rows at a time, an RDF road whole;\n"
-          "                       a pipe or /dev/stdin is kept in memory, at most 256 MiB);\n"
-          "                       the network's warnings come after the rows\n",
+          "                       bounded by the tire's reach whatever the road's length (a\n"
+          "                       CSV road into a file once; to standard output or a FIFO,\n"
+          "                       or an OpenCRG or RDF road, twice: first to check it and\n"
+          "                       find its ends; an OpenCRG road a block of rows at a time,\n"
+          "                       an RDF road whole; a pipe or /dev/stdin is kept in memory,\n"
+          "                       at most 256 MiB); the network's warnings come after the\n"
+          "                       rows\n",
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
@@ -289,11 +291,21 @@ static int stream_row(void *ctx, const tirenv_point *pt)
     return s->fp && ferror(s->fp) ? TIRENV_EIO : TIRENV_OK;
 }
 
-/* The first pass of --stream: checks the whole file, every track (so that a bad row late in
- * it fails before any output), and finds its first and last x, in constant memory (a regular
- * file; a pipe's bytes are kept by the road file). */
-static int stream_extent(const run *r, double *first, double *last, tirenv_diag *diag)
+/* The ends of the road for --stream's default sweep. Into a file, which reaches its place
+ * only whole, the road is read once: its ends as the format allows (a CSV's first and last
+ * rows, tirenv_road_file_extent), its rows as the tire rolls, and those past the sweep's reach
+ * after it (stream_rest), so that a bad row anywhere fails as in whole mode. Written through
+ * (standard output, a FIFO), where rows cannot be taken back, every row of every track is
+ * checked first (*checked), so that a bad row late in the file fails before any output: the
+ * file is read twice. Memory is constant either way (a pipe's bytes are kept by the road
+ * file). */
+static int stream_extent(const run *r, const char *path, int *checked, double *first,
+                         double *last, tirenv_diag *diag)
 {
+    *checked = tirenv_outfile_path_is_through(path);
+    if (!*checked)
+        return tirenv_road_file_extent(r->road.file, &r->road.src, r->road.n, r->road.v,
+                                       first, last, diag);
     tirenv_profile_file_reader *in;
     int status = tirenv_road_file_reader(r->road.file, &r->road.src, r->road.n, r->road.v, &in,
                                          diag);
@@ -309,6 +321,16 @@ static int stream_extent(const run *r, double *first, double *last, tirenv_diag 
         }
     }
     tirenv_profile_file_reader_free(in);
+    return status;
+}
+
+/* The rows of the road the sweep left unread, each checked (stream_extent). */
+static int stream_rest(tirenv_profile_file_reader *in, tirenv_diag *diag)
+{
+    double x, z[CLI_MAX_TRACKS];
+    int got = 1, status = TIRENV_OK;
+    while (!status && got)
+        status = tirenv_profile_file_reader_next(in, &x, z, &got, diag);
     return status;
 }
 
@@ -351,8 +373,10 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     const cli_options *o = r->o;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
+    const char *path = o->output ? o->output : "-";
     double first = 0, last = 0;
-    int status = stream_extent(r, &first, &last, &diag);
+    int checked;
+    int status = stream_extent(r, path, &checked, &first, &last, &diag);
     if (status)
         return cli_fail(status, &diag);
     const tirenv_positions s = sweep(o, m, first, last);
@@ -366,7 +390,6 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     tirenv_outfile *out = NULL;
     stream_out so = {0};
     tirenv_diag_clear(&so.diag);
-    const char *path = o->output ? o->output : "-";
     const size_t n = tirenv_positions_count(x_from, x_to, dx);
     int code = cli_road_open(&r->road, &in);
     if (code)
@@ -387,6 +410,8 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
             status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
         else if (status && so.diag.message[0])  /* the road writer's or the level's */
             diag = so.diag;
+        if (!status && !checked)
+            status = stream_rest(in, &diag);
         if (!status && so.road) {
             tirenv_road_writer *w = so.road;
             so.road = NULL;

@@ -1,0 +1,61 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# envelope --stream reads a CSV road once into a file (issue 25): its ends from its first and
+# last rows, its rows as the tire rolls, those past the sweep after it. Whole mode's bytes, and
+# whole mode's error for a bad row anywhere, at its line, with no file: in the middle of the
+# sweep, past the sweep's end (read after it), as the last row (its ends then read from the
+# start). Written through (standard output), every row is checked first, so a bad row leaves
+# standard output empty.
+. "$(dirname "$0")/../lib/clilib.sh"
+
+cam="--model cam --load 13000"
+run "$bin" road --class C --length 30 --dx 0.001 -o road.csv
+check "setup: a 30 m class C road at 1 mm" '[ $rc -eq 0 ] && [ "$(rows road.csv)" -gt 30000 ]'
+
+run "$bin" envelope $cam --profile road.csv -o whole.csv
+check "whole run" '[ $rc -eq 0 ]'
+run "$bin" envelope $cam --profile road.csv --stream -o stream.csv
+check "--stream into a file: whole mode's bytes" '[ $rc -eq 0 ] && cmp -s whole.csv stream.csv'
+run "$bin" envelope $cam --profile road.csv --stream
+check "--stream to standard output: the same bytes" '[ $rc -eq 0 ] && cmp -s whole.csv out'
+run "$bin" envelope $cam --profile road.csv --stream --x-from 3 --x-to 4.5 -o part.csv
+run "$bin" envelope $cam --profile road.csv --x-from 3 --x-to 4.5 -o part_whole.csv
+check "--stream over part of the road: whole mode's bytes" \
+    '[ $rc -eq 0 ] && cmp -s part.csv part_whole.csv'
+
+# bad NAME LINE TEXT: road.csv with line LINE replaced by TEXT, as NAME.
+bad() {
+    awk -v n="$2" -v t="$3" 'NR == n { print t; next } { print }' road.csv >"$1"
+}
+# Whole mode's error line for the road in $1 (the expected one), in ./want.
+want_error() {
+    run "$bin" envelope $cam --profile "$1" -o w.csv
+    [ $rc -eq 2 ] && no_file w.csv && cp err want
+}
+bad mid.csv 12000 '11.9,abc'
+want_error mid.csv
+check "setup: whole mode refuses the bad middle row at its line" \
+    'grep -q "^tirenv: mid.csv:12000:6: z_m: expected a number" want'
+run "$bin" envelope $cam --profile mid.csv --stream -o s.csv
+check "--stream into a file, a bad row mid-sweep: whole mode's error, no file" \
+    '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
+run "$bin" envelope $cam --profile mid.csv --stream --x-from 1 --x-to 2 -o s.csv
+check "a bad row past the sweep's end: still read, the same error, no file" \
+    '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
+run "$bin" envelope $cam --profile mid.csv --stream
+check "to standard output: the same error before any row" \
+    '[ $rc -eq 2 ] && cmp -s err want && [ ! -s out ]'
+bad back.csv 25000 '5,0'
+want_error back.csv
+run "$bin" envelope $cam --profile back.csv --stream -o s.csv
+check "an x that goes back: whole mode's error, no file" \
+    '[ $rc -eq 2 ] && grep -q "back.csv:25000:1: x_m: x_m decreases" err && cmp -s err want &&
+     no_file s.csv'
+last=$(($(wc -l <road.csv)))
+bad end.csv "$last" '29.999,0.1q'
+want_error end.csv
+run "$bin" envelope $cam --profile end.csv --stream -o s.csv
+check "a bad last row (the road's end): whole mode's error at its line, no file" \
+    '[ $rc -eq 2 ] && grep -q "end.csv:$last:" err && cmp -s err want && no_file s.csv'
+
+clilib_done
