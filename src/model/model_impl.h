@@ -9,6 +9,7 @@
 
 #include "core/equilibrium.h"
 #include "tirenv/model.h"
+#include "tirenv/nn_road.h"
 #include "tirenv/tracks.h"
 
 /* What every model does, as functions of its state: all set. A type with nothing of its own
@@ -60,15 +61,6 @@ typedef struct {
     size_t n, n_max;
 } tirenv_model_fit;
 
-/* Where a streamed window of a road sits in it (stream.c): what a model whose results depend
- * on more than the ground within its reach must know (the nn's resampling grid is anchored
- * at the road's first vertex, docs/models.md section 12). */
-struct tirenv_model__window {
-    double x_first;        /* the road's first vertex, m */
-    int bof;               /* the window's first vertex is the road's first */
-    int eof;               /* its last vertex is the road's last */
-};
-
 /* What only a model that evaluates a trained network has (the nn): every member set. */
 typedef struct {
     /* The network (to be copied) and the R0 (m) of its x_N. */
@@ -83,9 +75,11 @@ typedef struct {
     /* A whole sweep at once, through the network's batch path. */
     int (*envelope)(void *state, size_t n, const double x[], tirenv_point out[],
                     size_t *failed, tirenv_diag *diag);
-    /* The profiles set from now on are windows of one road (stream.c), w says where; NULL:
-     * whole profiles again. */
-    void (*stream_window)(void *state, const struct tirenv_model__window *w);
+    /* The profiles set from now on are windows of one road (stream.c), w says where (what a
+     * model whose results depend on more than the ground within its reach must know: the
+     * nn's resampling grid is anchored at the road's first vertex, docs/models.md section
+     * 12); NULL: whole profiles again. */
+    void (*stream_window)(void *state, const tirenv_nn_road_window *w);
 } tirenv_model_network;
 
 typedef struct tirenv_deformable tirenv_deformable;  /* deformable.h */
@@ -136,14 +130,14 @@ struct tirenv_model {
     double l_c;                    /* m */
     int extrapolate;               /* tirenv_model_set_extrapolate's, given to every track */
     int windowed;                  /* profiles are windows of one road (stream.c): */
-    struct tirenv_model__window window; /* where the current one sits, given to every track */
+    tirenv_nn_road_window window;  /* where the current one sits, given to every track */
     int streamed;                  /* a streamed sweep ended: the model is unset, but its
                                     * warnings and note (the windows') stay until a set */
 };
 
 /* stream.c: tells every track's state that the profiles set from now on are windows of one
  * road (w), or whole again (NULL); a no-op for a type without a network. */
-void tirenv_model__stream_window(tirenv_model *m, const struct tirenv_model__window *w);
+void tirenv_model__stream_window(tirenv_model *m, const tirenv_nn_road_window *w);
 
 /* Private to model.c and tracks.c: a new type state for a further track, told what the first
  * was told (network, contact length, extrapolation); NULL if out of memory or the network

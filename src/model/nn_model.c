@@ -360,24 +360,22 @@ static void note_forms(nn_state *st)
              K == 1 ? "" : "s");
 }
 
-/* A streamed window's obstacles not counted yet added to the road's so far (st->seen), which
- * the warnings and the note then report: the whole road's once the last window is set. */
+/* A streamed window's obstacles not counted yet appended to the road's so far (st->seen),
+ * which the warnings and the note then report: the whole road's once the last window is set.
+ * The counts add up; the geometry (trained ranges, W, ds, reach) is the window's. */
 static tirenv_nn_road_info seen_add(nn_state *st)
 {
-    const tirenv_nn_road_info add = tirenv_nn_road_info_after(st->road, st->counted_to);
-    tirenv_nn_road_info *in = &st->seen;
-    const size_t n = in->obstacles;
-    *in = (tirenv_nn_road_info){
-        .obstacles = n + add.obstacles, .height_below = in->height_below + add.height_below,
-        .height_above = in->height_above + add.height_above,
-        .length_below = in->length_below + add.length_below,
-        .length_above = in->length_above + add.length_above, .H_min = add.H_min,
-        .H_max = add.H_max, .L_min = add.L_min, .L_max = add.L_max, .width = add.width,
-        .spacing = add.spacing, .reach = add.reach};
-    const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
-    if (add.obstacles)
+    tirenv_nn_road_info add = tirenv_nn_road_info_after(st->road, st->counted_to);
+    if (add.obstacles) {
+        const tirenv_nn_obstacle *ob = tirenv_nn_road_obstacles(st->road);
         st->counted_to = ob[tirenv_nn_road_info_of(st->road).obstacles - 1].c;
-    return *in;
+    }
+    add.obstacles += st->seen.obstacles;
+    add.height_below += st->seen.height_below;
+    add.height_above += st->seen.height_above;
+    add.length_below += st->seen.length_below;
+    add.length_above += st->seen.length_above;
+    return st->seen = add;
 }
 
 static int nn_model_set(void *state, const tirenv_profile *p, double load, double z_flat,
@@ -583,7 +581,7 @@ static int nn_model_envelope(void *state, size_t n, const double x[], tirenv_poi
     return TIRENV_OK;
 }
 
-static void nn_model_stream_window(void *state, const struct tirenv_model__window *w)
+static void nn_model_stream_window(void *state, const tirenv_nn_road_window *w)
 {
     nn_state *st = state;
     if (w && !st->windowed) {  /* a new road */
@@ -592,7 +590,7 @@ static void nn_model_stream_window(void *state, const struct tirenv_model__windo
     }
     st->windowed = w != NULL;
     if (w)
-        st->win = (tirenv_nn_road_window){.x_first = w->x_first, .bof = w->bof, .eof = w->eof};
+        st->win = *w;
 }
 
 /* Over a road the decomposition reads the ground farther than the tire reaches: the

@@ -166,8 +166,7 @@ static void window_tell(tirenv_model *m, const window *w)
 {
     if (!m)
         return;
-    const struct tirenv_model__window where = {.x_first = w->x_first, .bof = w->bof,
-                                                .eof = w->eof};
+    const tirenv_nn_road_window where = {.x_first = w->x_first, .bof = w->bof, .eof = w->eof};
     tirenv_model__stream_window(m, &where);
 }
 

@@ -103,7 +103,7 @@ void tirenv_model__tracks_extrapolate(tirenv_model *m)
         m->type->network->set_extrapolate(t->state[k], m->extrapolate);
 }
 
-void tirenv_model__stream_window(tirenv_model *m, const struct tirenv_model__window *w)
+void tirenv_model__stream_window(tirenv_model *m, const tirenv_nn_road_window *w)
 {
     m->streamed = !w && (m->windowed || m->streamed);
     m->windowed = w != NULL;
