@@ -86,7 +86,8 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-/* --speed V[,V...]: 1 to RIDE_MAX_SPEEDS speeds. */
+/* --speed V[,V...]: 1 to RIDE_MAX_SPEEDS speeds, each as the library reads one (its error
+ * names what a speed must be). */
 static int parse_speeds(void *dst, const char *arg)
 {
     ride_options *r = dst;
@@ -101,9 +102,9 @@ static int parse_speeds(void *dst, const char *arg)
                       RIDE_MAX_SPEEDS, arg);
             return CLI_EXIT_USAGE;
         }
-        if (tirenv_ride_speed_parse(p, &r->speeds[r->n_speeds++], NULL)) {
-            cli_error("ride: --speed expects speeds > 0 in m/s or with the suffix km/h, got "
-                      "'%s'", p);
+        tirenv_diag d;
+        if (tirenv_ride_speed_parse(p, &r->speeds[r->n_speeds++], &d)) {
+            cli_error("ride: --speed: %s", d.message);
             return CLI_EXIT_USAGE;
         }
         if (!comma)
@@ -149,7 +150,8 @@ static int parse_set(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
-/* --enveloping E[,E...]: static, dynamic, direct, each at most once. */
+/* --enveloping E[,E...]: static, dynamic, direct, each at most once, each name as the
+ * library reads it (its error names the ways). */
 static int parse_enveloping(void *dst, const char *arg)
 {
     ride_options *r = dst;
@@ -157,22 +159,21 @@ static int parse_enveloping(void *dst, const char *arg)
     const char *p = arg;
     for (;;) {
         const size_t len = strcspn(p, ",");
-        char name[16];
-        tirenv_ride_enveloping e = TIRENV_RIDE_N_ENVELOPING;
-        if (len < sizeof name) {
-            memcpy(name, p, len);
-            name[len] = '\0';
-            if (tirenv_ride_enveloping_parse(name, &e, NULL))
-                e = TIRENV_RIDE_N_ENVELOPING;
-        }
-        int twice = 0;
-        for (size_t k = 0; k < r->n_envelopings; ++k)
-            twice |= r->envelopings[k] == e;
-        if (e == TIRENV_RIDE_N_ENVELOPING || twice) {
-            cli_error("ride: --enveloping expects static, dynamic or direct, each at most "
-                      "once, comma-separated; got '%s'", arg);
+        char name[64];
+        snprintf(name, sizeof name, "%.*s", (int)(len < sizeof name ? len : sizeof name - 1),
+                 p);
+        tirenv_ride_enveloping e;
+        tirenv_diag d;
+        if (tirenv_ride_enveloping_parse(name, &e, &d)) {
+            cli_error("ride: --enveloping: %s", d.message);
             return CLI_EXIT_USAGE;
         }
+        for (size_t k = 0; k < r->n_envelopings; ++k)
+            if (r->envelopings[k] == e) {
+                cli_error("ride: --enveloping: '%s' given twice in '%s'; expected each way at "
+                          "most once", name, arg);
+                return CLI_EXIT_USAGE;
+            }
         r->envelopings[r->n_envelopings++] = e;
         if (!p[len])
             return CLI_EXIT_OK;
@@ -182,8 +183,9 @@ static int parse_enveloping(void *dst, const char *arg)
 
 static int parse_solver(void *dst, const char *arg)
 {
-    if (tirenv_ride_method_parse(arg, dst, NULL)) {
-        cli_error("ride: --solver expects rk4 or rk8pd, got '%s'", arg);
+    tirenv_diag d;
+    if (tirenv_ride_method_parse(arg, dst, &d)) {
+        cli_error("ride: --solver: %s", d.message);
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;

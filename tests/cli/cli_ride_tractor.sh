@@ -27,7 +27,17 @@ check "ride over a cleat: point contact's seat acceleration peaks higher than th
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h,20km/h --model point -o two.csv
 check "ride -o with two speeds: exit 1, no file" '[ $rc -eq 1 ] && no_file two.csv'
 run "$bin" ride --cleat 0.30,0.05 --speed 10mph
-check "ride --speed 10mph: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--speed" err'
+check "ride --speed 10mph: exit 1 naming the option and the library's reading of a speed" \
+    '[ $rc -eq 1 ] && grep -q -- "--speed: expected a speed > 0 in m/s or with the suffix km/h, got .10mph." err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --solver rk5
+check "ride --solver rk5: exit 1, the option and the library's message" \
+    '[ $rc -eq 1 ] && grep -q -- "--solver: expected rk4 or rk8pd, got .rk5." err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --enveloping static,flat
+check "ride --enveloping static,flat: exit 1, the option and the library's message" \
+    '[ $rc -eq 1 ] && grep -q -- "--enveloping: expected static, dynamic or direct, got .flat." err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --enveloping direct,direct
+check "ride --enveloping direct,direct: exit 1, given twice" \
+    '[ $rc -eq 1 ] && grep -q -- "--enveloping: .direct. given twice" err'
 run "$bin" ride --cleat 0.30,0.05 --speed 3 --dt 0.01
 check "ride --dt too coarse for ISO 2631-1: exit 1" '[ $rc -eq 1 ] && grep -q "80 Hz" err'
 run "$bin" ride --cleat 0.30,0.05 --speed 3 --model nn
