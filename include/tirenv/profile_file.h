@@ -111,12 +111,14 @@ int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, do
 int tirenv_profile_file_reader_source(void *reader, double *x, double z[], int *got,
                                       tirenv_diag *diag);
 /* The first and last x (m) of the road in f as a reader of n tracks at v reads it (the same
- * arguments as tirenv_road_file_reader), the ends of a sweep over it, read where the format
- * allows without the rows between: a CSV's header, first row and last row (found from the
- * file's end), which are checked; an OpenCRG or RDF road's every row. The rows between are
- * a reader's to check, row by row. Errors name file, line and field. */
+ * arguments as tirenv_road_file_reader), the ends of a sweep over it. every_row nonzero: every
+ * row of every track read and checked, so that a bad row anywhere fails here. Zero: read where
+ * the format allows without the rows between, which are then a reader's to check: a CSV's
+ * header, first row and last row (found from the file's end; where it cannot be told so, every
+ * row); an OpenCRG or RDF road's every row. Errors name file, line and field. */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
-                            const double v[], double *first, double *last, tirenv_diag *diag);
+                            const double v[], int every_row, double *first, double *last,
+                            tirenv_diag *diag);
 /* The format the reader found. */
 tirenv_profile_format tirenv_profile_file_reader_format(const tirenv_profile_file_reader *r);
 void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r);  /* NULL is a no-op */

@@ -303,25 +303,8 @@ static int stream_extent(const run *r, const char *path, int *checked, double *f
                          double *last, tirenv_diag *diag)
 {
     *checked = tirenv_outfile_path_is_through(path);
-    if (!*checked)
-        return tirenv_road_file_extent(r->road.file, &r->road.src, r->road.n, r->road.v,
-                                       first, last, diag);
-    tirenv_profile_file_reader *in;
-    int status = tirenv_road_file_reader(r->road.file, &r->road.src, r->road.n, r->road.v, &in,
-                                         diag);
-    int got = 1;
-    double z[CLI_MAX_TRACKS];
-    for (size_t k = 0; !status && got; ++k) {
-        double x;
-        status = tirenv_profile_file_reader_next(in, &x, z, &got, diag);
-        if (!status && got) {
-            if (k == 0)
-                *first = x;
-            *last = x;
-        }
-    }
-    tirenv_profile_file_reader_free(in);
-    return status;
+    return tirenv_road_file_extent(r->road.file, &r->road.src, r->road.n, r->road.v, *checked,
+                                   first, last, diag);
 }
 
 /* The rows of the road the sweep left unread, each checked (stream_extent). */

@@ -206,12 +206,13 @@ static int extent_read(tirenv_road_file *f, const tirenv_profile_source *src, si
  * before the first (an x decreases somewhere), every row is read, and the first bad one
  * named. */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
-                            const double v[], double *first, double *last, tirenv_diag *diag)
+                            const double v[], int every_row, double *first, double *last,
+                            tirenv_diag *diag)
 {
     if (n == 0)
         return tirenv_error(diag, TIRENV_EINVAL, tirenv_road_file_name(f), 0, "tracks",
                             "expected at least one track");
-    if (tirenv_road_file_format(f) != TIRENV_PROFILE_CSV)
+    if (every_row || tirenv_road_file_format(f) != TIRENV_PROFILE_CSV)
         return extent_read(f, src, n, v, first, last, diag);
     FILE *fp = tirenv_road_file__stream(f, diag);
     tirenv_profile_csv__reader *r = NULL;

@@ -201,10 +201,13 @@ static void assert_extent(tirenv_road_file *f, const tirenv_profile *want)
 {
     double first = NAN, last = NAN, a, b;
     tirenv_diag d;
-    assert_int_equal(tirenv_road_file_extent(f, NULL, 2, NULL, &first, &last, &d), TIRENV_OK);
     tirenv_profile_extent(want, &a, &b);
-    assert_bits_equal(first, a);
-    assert_bits_equal(last, b);
+    for (int every_row = 0; every_row < 2; ++every_row) {
+        assert_int_equal(tirenv_road_file_extent(f, NULL, 2, NULL, every_row, &first, &last, &d),
+                         TIRENV_OK);
+        assert_bits_equal(first, a);
+        assert_bits_equal(last, b);
+    }
 }
 
 /* tirenv_road_file_extent: each format's ends, from a regular file and from a FIFO; a CSV's
@@ -286,15 +289,29 @@ static void test_extent(void **state)
         tirenv_diag_clear(&d);
         assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
         double first = NAN, last = NAN;
-        const int status = tirenv_road_file_extent(f, NULL, 1, NULL, &first, &last, &d);
+        const int status = tirenv_road_file_extent(f, NULL, 1, NULL, 0, &first, &last, &d);
+        /* Every row read: the same, but case 0's middle row is found. */
+        tirenv_diag e;
+        double first_all = NAN, last_all = NAN;
+        const int all = tirenv_road_file_extent(f, NULL, 1, NULL, 1, &first_all, &last_all, &e);
         tirenv_road_file_free(f);
         if (cases[i].says) {
             tirenv_test_expect_diag(i, status, &d, TIRENV_EPARSE, path, cases[i].line,
                                     d.column, d.field, cases[i].says);
+            tirenv_test_expect_diag(i, all, &e, TIRENV_EPARSE, path, cases[i].line, d.column,
+                                    d.field, cases[i].says);
         } else {
             assert_int_equal(status, TIRENV_OK);
             assert_bits_equal(first, cases[i].first);
             assert_bits_equal(last, cases[i].last);
+            if (i == 0) {
+                tirenv_test_expect_diag(i, all, &e, TIRENV_EPARSE, path, 3, 8, "z_m",
+                                        "expected a number, got 'abc'");
+            } else {
+                assert_int_equal(all, TIRENV_OK);
+                assert_bits_equal(first_all, first);
+                assert_bits_equal(last_all, last);
+            }
         }
     }
 }
