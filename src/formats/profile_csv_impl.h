@@ -30,8 +30,11 @@ int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
 int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
                                     int *got, tirenv_diag *diag);
 
-/* The file line of the row last read (0 before the header). */
-size_t tirenv_profile_csv__reader_line(const tirenv_profile_csv__reader *r);
+/* Every row after the last one read, as tirenv_profile_csv__reader_next reads them, appended
+ * to x[*n..] and z[*n..] (m), which are grown with realloc (*cap: their room); on failure they
+ * hold the rows before the bad one, the caller's to free either way. */
+int tirenv_profile_csv__reader_rest(tirenv_profile_csv__reader *r, double **x, double **z,
+                                    size_t *n, size_t *cap, tirenv_diag *diag);
 
 /* Closes the file; NULL is a no-op. */
 void tirenv_profile_csv__reader_free(tirenv_profile_csv__reader *r);

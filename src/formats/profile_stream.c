@@ -7,6 +7,7 @@
 #include "formats/profile_csv_impl.h"
 
 #include <ctype.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -66,8 +67,10 @@ int tirenv_profile_csv__reader_open(FILE *fp, const char *name,
     return TIRENV_OK;
 }
 
-int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
-                                    int *got, tirenv_diag *diag)
+/* The next row (tirenv_profile_csv__reader_next), inlined into the loop of
+ * tirenv_profile_csv__reader_rest. */
+static inline int next_row(tirenv_profile_csv__reader *r, double *x, double *z, int *got,
+                           tirenv_diag *diag)
 {
     *got = 0;
     if (r->done)
@@ -107,6 +110,47 @@ int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, do
     *z = v[1];
     *got = 1;
     return TIRENV_OK;
+}
+
+int tirenv_profile_csv__reader_next(tirenv_profile_csv__reader *r, double *x, double *z,
+                                    int *got, tirenv_diag *diag)
+{
+    return next_row(r, x, z, got, diag);
+}
+
+/* Doubles the room of x[] and z[]; each keeps its old block if a later realloc fails. */
+static int rows_grow(double **x, double **z, size_t *cap)
+{
+    const size_t c = *cap ? 2 * *cap : 64;
+    if (c > SIZE_MAX / sizeof(double))
+        return TIRENV_ENOMEM;
+    double *a = realloc(*x, c * sizeof *a);
+    if (!a)
+        return TIRENV_ENOMEM;
+    *x = a;
+    double *b = realloc(*z, c * sizeof *b);
+    if (!b)
+        return TIRENV_ENOMEM;
+    *z = b;
+    *cap = c;
+    return TIRENV_OK;
+}
+
+int tirenv_profile_csv__reader_rest(tirenv_profile_csv__reader *r, double **x, double **z,
+                                    size_t *n, size_t *cap, tirenv_diag *diag)
+{
+    for (;;) {
+        double xk, zk;
+        int got;
+        const int status = next_row(r, &xk, &zk, &got, diag);
+        if (status || !got)
+            return status;
+        if (*n == *cap && rows_grow(x, z, cap) != TIRENV_OK)
+            return tirenv_error(diag, TIRENV_ENOMEM, r->path, r->rd.line, "", "out of memory");
+        (*x)[*n] = xk;
+        (*z)[*n] = zk;
+        ++*n;
+    }
 }
 
 size_t tirenv_profile_csv__reader_line(const tirenv_profile_csv__reader *r)
