@@ -153,11 +153,6 @@ int tirenv_profile_csv__reader_rest(tirenv_profile_csv__reader *r, double **x, d
     }
 }
 
-size_t tirenv_profile_csv__reader_line(const tirenv_profile_csv__reader *r)
-{
-    return r->rd.line;
-}
-
 /* The x of the row in line[0, n) (its end-of-line characters included), if it is a whole
  * data row by the reader's rules: 1 with *x set, else 0. */
 static int row_x(const char *line, size_t n, double *x)
