@@ -1,6 +1,11 @@
 /* libFuzzer harness: the streaming road reader (tirenv_profile_file_reader_*) over a CSV
  * file, to the end of the input or its first error; CRG and RDF content is detected and read
- * by the same reader. SPDX-License-Identifier: Apache-2.0 */
+ * by the same reader. Then the road's ends (tirenv_road_file_extent): where every row reads,
+ * the ends found from the file's end must be the same bits as those of every row read.
+ * SPDX-License-Identifier: Apache-2.0 */
+#include <stdlib.h>
+#include <string.h>
+
 #include "fuzz_input.h"
 #include "tirenv/profile_file.h"
 
@@ -17,5 +22,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             ;
     }
     tirenv_profile_file_reader_free(r);
+    tirenv_road_file *f = NULL;
+    if (tirenv_road_file_open(path, &f, &diag) == TIRENV_OK) {
+        double ends[2][2];
+        const int all = tirenv_road_file_extent(f, NULL, 1, NULL, 1, &ends[0][0], &ends[0][1],
+                                                &diag);
+        const int fast = tirenv_road_file_extent(f, NULL, 1, NULL, 0, &ends[1][0], &ends[1][1],
+                                                 &diag);
+        if (all == TIRENV_OK && (fast != TIRENV_OK || memcmp(ends[0], ends[1], sizeof ends[0])))
+            abort();
+    }
+    tirenv_road_file_free(f);
     return 0;
 }
