@@ -342,6 +342,49 @@ static void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t coun
     }
 }
 
+/* The window's arc of n nodes from lo as add_arc gives it on a zeroed matrix, the band rows'
+ * entries written rather than added (the same values: each is one term), so that only the
+ * tail's rows need zeroing first. */
+static void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n)
+{
+    const size_t N = 2 * n, m = N - TAIL;
+    const double *s = T->s, k_sh = T->k_sh;
+    A->N = N;
+    A->t = TAIL;
+    for (size_t a = 0; a < TAIL; ++a)
+        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    memset(A->T, 0, sizeof A->T);
+    double *L = A->L;
+    for (size_t e = 0; e < n; ++e) {
+        const double kap = T->kap[lo + e];
+        const size_t iw = 2 * e, iu = iw + 1;
+        /* Rows w_e, u_e: A[i + k][i] for k = 0 .. BAND_P, those of a tail row in B. */
+        const double cw[BAND_P + 1] = {s[0] + kap, -kap, e + 1 < n ? s[1] : 0, 0,
+                                       e + 2 < n ? s[2] : 0};
+        const double cu[BAND_P + 1] = {kap + 2 * k_sh, 0, e + 1 < n ? -k_sh : 0, 0, 0};
+        for (int h = 0; h < 2; ++h) {
+            const size_t i = h ? iu : iw;
+            const double *c = h ? cu : cw;
+            if (i >= m) {
+                for (size_t k = 0; i + k < N && k <= BAND_P; ++k)
+                    if (c[k] != 0)
+                        band_add(A, i, i + k, c[k]);
+                continue;
+            }
+            double *l = L + (BAND_P + 1) * i;
+            for (size_t k = 0; k <= BAND_P; ++k) {
+                if (i + k < m)
+                    l[k] = c[k];
+                else {
+                    l[k] = 0;
+                    if (i + k < N && c[k] != 0)
+                        band_add(A, i, i + k, c[k]);
+                }
+            }
+        }
+    }
+}
+
 /* The exterior of a window of n nodes starting at lo: the open arc of the other M - n nodes,
  * (w, u) interleaved, unloaded. Only its first and last nodes couple to the window: the
  * belt's pentadiagonal stencil reaches two nodes, the shear one. So K_WE K_EE^-1 K_EW needs
@@ -583,8 +626,7 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     const size_t n = r->n, lo = r->lo, N = 2 * n;
     const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->win;
-    band_reset(A, N, TAIL);
-    add_arc(A, T, lo, n);
+    fill_window(A, T, lo, n);
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
