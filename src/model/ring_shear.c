@@ -498,12 +498,15 @@ static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[
 static int find_knots(tirenv_ring *r)
 {
     tirenv_ring_tread *T = r->tread;
-    if (r->n_pts > T->cap_pk) {
-        long *pk = realloc(T->pknot, r->n_pts * sizeof *pk);
+    if (r->n_pts > T->cap_pk) { /* geometric: settles at the largest window's */
+        size_t cap = T->cap_pk ? T->cap_pk : 256;
+        while (cap < r->n_pts)
+            cap *= 2;
+        long *pk = realloc(T->pknot, cap * sizeof *pk);
         if (!pk)
             return 1;
         T->pknot = pk;
-        T->cap_pk = r->n_pts;
+        T->cap_pk = cap;
     }
     size_t m = 0;
     for (size_t k = 0; k < r->n_pts; ++k) {
