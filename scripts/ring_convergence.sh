@@ -2,9 +2,12 @@
 # SPDX-License-Identifier: Apache-2.0
 # The ring reference tire's convergence in NODE_ANGLE (docs/models.md section 5.6): for every
 # case of a data set (its cleat and load), the enveloping curve on a 1 mm grid at NODE_ANGLE
-# 0.5, 0.25, 0.125 and 0.0625 degrees, and per case the largest |h| change of each halving
-# (mm), with the time each resolution took over all cases.
-#   scripts/ring_convergence.sh TIRENV [DATASET_DIR] [TIRE.tir]
+# 0.5, 0.25, 0.125 and 0.0625 degrees (or the degrees in $ANGLES, coarsest first), and per case
+# the largest |h| change of each halving (mm), with the time each resolution took over all
+# cases.
+#   [ANGLES="0.125 0.0625 0.03125"] [CASES="S C R"] scripts/ring_convergence.sh TIRENV
+#       [DATASET_DIR] [TIRE.tir]
+# CASES: only these cases of the data set (all by default).
 # DATASET_DIR defaults to data/dataset, TIRE to data/tires/default.tir.
 set -eu
 bin=$1
@@ -12,11 +15,18 @@ data=${2:-data/dataset}
 tire=${3:-data/tires/default.tir}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-angles="0.5 0.25 0.125 0.0625"
+angles=${ANGLES:-0.5 0.25 0.125 0.0625}
 rad() { awk -v d="$1" 'BEGIN { printf "%.17g", d * atan2(0, -1) / 180 }'; }
 for a in $angles; do echo 0 >"$tmp/time-$a"; done
-printf 'case  load_N    cleat_m        0.5->0.25  0.25->0.125  0.125->0.0625   (max |dh|, mm)\n'
+printf 'case  load_N    cleat_m       '
+prev=""
+for a in $angles; do [ -n "$prev" ] && printf '  %11s' "$prev->$a"; prev=$a; done
+printf '   (max |dh|, mm)\n'
+cases=${CASES:-}
 grep -v '^#' "$data/cases.csv" | tail -n +2 | while IFS=, read -r case split lc load L H rest; do
+    if [ -n "$cases" ]; then
+        case " $cases " in *" $case "*) ;; *) continue ;; esac
+    fi
     for a in $angles; do
         t0=$(date +%s.%N)
         "$bin" envelope --model ring --cleat "$L,$H" --load "$load" --dx 0.001 \

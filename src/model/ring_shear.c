@@ -19,7 +19,23 @@
  * window (no ground) condense out exactly into a 6 x 6 correction on the window's ends (their
  * belt's two end nodes and tread's one), computed once per window length from six banded solves
  * of the exterior. The solve is Newton's method with a line search, the driver ring_smooth.c
- * shares (ring_newton.c). */
+ * shares (ring_newton.c).
+ *
+ * A ground vertex between two nodes (a cleat's corner) presses on the tread surface at one point,
+ * where u has a kink that a field linear between nodes cannot follow (its error is of first
+ * order in dtheta). So every vertex cut inside a node interval is a knot of u: u is linear
+ * between nodes plus, per interval, the hierarchical hats of its knots, zero at the nodes and
+ * a_k at knot k, piecewise linear between the knots (u = (1 - s) u_j + s u_j+1 + sum_k a_k
+ * hat_k). The hats' shear energy is orthogonal to that of the linear part (the integral of their
+ * slope over the interval is zero), so it is the knots' own tridiagonal 1/2 k_s / (R h) (a_k+1
+ * - a_k)^2 over the sub-intervals h (a_0 = a_m+1 = 0 at the nodes); their compression is lumped
+ * on them alone, 1/2 k_c R (h_k-1 + h_k) / 2 a_k^2. A knot couples to the rest only through
+ * the ground's points at it: unloaded, a = 0 and the solution is the nodal one exactly; as a
+ * knot nears a node (or another knot) its sub-interval's shear stiffness grows without bound
+ * and a tends to the nodal (merged) value, so everything stays continuous in x. The unknowns
+ * are the 2 n interleaved ones and then the m knots; the knots are condensed out of each
+ * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
+ * the banded system keeps its bandwidth. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,7 +70,18 @@ struct tirenv_ring_tread {
     unsigned char *have;
     tband ext, win;
     double *col;        /* 2 M: a right-hand side of the exterior */
-    double *x, *xn, *xt, *g; /* 2 M each: iterate, Newton point, trial, gradient */
+    double *x, *xn, *xt, *g; /* 2 M + cap_k each: iterate, Newton point, trial, gradient */
+    double *kp;         /* 2 M + cap_k: the driver's workspace */
+    /* The knots of the last solve (vertex cuts inside node intervals), m of them, in angle
+     * order; per point of r->pts its knot (-1: at a node). */
+    size_t m, cap_k, cap_pk;
+    long *pknot;        /* cap_pk */
+    size_t *kj;         /* the knot's interval, as its first node's window index */
+    double *kd, *ko;    /* the knots' own stiffness: diagonal, and to the next knot (0 if the
+                         * next is in another interval), N/m */
+    double *dd, *doff;  /* with the points in contact: the knots' block and its Cholesky factor */
+    double *c0, *c1;    /* with the points in contact: the coupling of knot to u_j, u_j+1 */
+    double *z0, *z1;    /* workspace: D^-1 c0, D^-1 c1 */
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -188,6 +215,47 @@ static int band_alloc(tband *A, size_t N, size_t t)
     return 0;
 }
 
+/* Room for m knots: the driver's vectors (2 M + m each) and the knots' arrays. Nonzero if
+ * out of memory (T keeps what it had). */
+static int reserve_knots(tirenv_ring_tread *T, size_t m)
+{
+    if (T->col && m <= T->cap_k)
+        return 0;
+    size_t cap = T->cap_k ? T->cap_k : 16;
+    while (cap < m)
+        cap *= 2;
+    const size_t V = 2 * T->M + cap;
+    double *col = malloc((2 * T->M + 5 * V) * sizeof *col);
+    size_t *kj = malloc(cap * sizeof *kj);
+    double *kd = malloc(8 * cap * sizeof *kd);
+    if (!col || !kj || !kd) {
+        free(col);
+        free(kj);
+        free(kd);
+        return 1;
+    }
+    free(T->col);
+    free(T->kj);
+    free(T->kd);
+    T->col = col;
+    T->x = col + 2 * T->M;
+    T->xn = T->x + V;
+    T->xt = T->xn + V;
+    T->g = T->xt + V;
+    T->kp = T->g + V;
+    T->kj = kj;
+    T->kd = kd;
+    T->ko = kd + cap;
+    T->dd = kd + 2 * cap;
+    T->doff = kd + 3 * cap;
+    T->c0 = kd + 4 * cap;
+    T->c1 = kd + 5 * cap;
+    T->z0 = kd + 6 * cap;
+    T->z1 = kd + 7 * cap;
+    T->cap_k = cap;
+    return 0;
+}
+
 double tirenv_ring__tread_shear(const tirenv_ring_params *par)
 {
     return par->G_t * par->t_r * par->b_p;
@@ -209,17 +277,12 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->kap = malloc(2 * M * sizeof *T->kap);
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
-    T->col = malloc(10 * M * sizeof *T->col);
-    if (!T->kap || !T->end || !T->have || !T->col || band_alloc(&T->ext, 2 * M, 0) ||
-        band_alloc(&T->win, 2 * M, TAIL)) {
+    if (!T->kap || !T->end || !T->have || reserve_knots(T, 16) ||
+        band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL)) {
         tirenv_ring__tread_free(T);
         return NULL;
     }
     T->u = T->kap + M;
-    T->x = T->col + 2 * M;
-    T->xn = T->col + 4 * M;
-    T->xt = T->col + 6 * M;
-    T->g = T->col + 8 * M;
     for (size_t j = 0; j < M; ++j) {
         T->kap[j] = T->kap0;
         T->u[j] = 0;
@@ -235,6 +298,9 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->end);
     free(T->have);
     free(T->col);
+    free(T->pknot);
+    free(T->kj);
+    free(T->kd);
     free(T->ext.L);
     free(T->win.L);
     free(T);
@@ -273,6 +339,49 @@ static void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t coun
         }
         if (e + 2 < count)
             band_add(A, 2 * e, 2 * e + 4, s[2]);
+    }
+}
+
+/* The window's arc of n nodes from lo as add_arc gives it on a zeroed matrix, the band rows'
+ * entries written rather than added (the same values: each is one term), so that only the
+ * tail's rows need zeroing first. */
+static void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n)
+{
+    const size_t N = 2 * n, m = N - TAIL;
+    const double *s = T->s, k_sh = T->k_sh;
+    A->N = N;
+    A->t = TAIL;
+    for (size_t a = 0; a < TAIL; ++a)
+        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    memset(A->T, 0, sizeof A->T);
+    double *L = A->L;
+    for (size_t e = 0; e < n; ++e) {
+        const double kap = T->kap[lo + e];
+        const size_t iw = 2 * e, iu = iw + 1;
+        /* Rows w_e, u_e: A[i + k][i] for k = 0 .. BAND_P, those of a tail row in B. */
+        const double cw[BAND_P + 1] = {s[0] + kap, -kap, e + 1 < n ? s[1] : 0, 0,
+                                       e + 2 < n ? s[2] : 0};
+        const double cu[BAND_P + 1] = {kap + 2 * k_sh, 0, e + 1 < n ? -k_sh : 0, 0, 0};
+        for (int h = 0; h < 2; ++h) {
+            const size_t i = h ? iu : iw;
+            const double *c = h ? cu : cw;
+            if (i >= m) {
+                for (size_t k = 0; i + k < N && k <= BAND_P; ++k)
+                    if (c[k] != 0)
+                        band_add(A, i, i + k, c[k]);
+                continue;
+            }
+            double *l = L + (BAND_P + 1) * i;
+            for (size_t k = 0; k <= BAND_P; ++k) {
+                if (i + k < m)
+                    l[k] = c[k];
+                else {
+                    l[k] = 0;
+                    if (i + k < N && c[k] != 0)
+                        band_add(A, i, i + k, c[k]);
+                }
+            }
+        }
     }
 }
 
@@ -371,13 +480,81 @@ static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u)
             y[b[v]] -= Q[v][u] * x[b[u]];
+    /* The knots' own tridiagonal stiffness. */
+    const double *a = x + 2 * n;
+    double *ya = y + 2 * n;
+    for (size_t k = 0; k < T->m; ++k) {
+        double v = T->kd[k] * a[k];
+        if (k + 1 < T->m)
+            v += T->ko[k] * a[k + 1];
+        if (k > 0)
+            v += T->ko[k - 1] * a[k - 1];
+        ya[k] = v;
+    }
 }
 
-/* A point's tread surface and belt, interpolated. */
+/* The knots of the window's points (see the top): T->m, T->pknot, T->kj and the knots' own
+ * stiffness T->kd, T->ko. Nonzero if out of memory. */
+static int find_knots(tirenv_ring *r)
+{
+    tirenv_ring_tread *T = r->tread;
+    if (r->n_pts > T->cap_pk) { /* geometric: settles at the largest window's */
+        size_t cap = T->cap_pk ? T->cap_pk : 256;
+        while (cap < r->n_pts)
+            cap *= 2;
+        long *pk = realloc(T->pknot, cap * sizeof *pk);
+        if (!pk)
+            return 1;
+        T->pknot = pk;
+        T->cap_pk = cap;
+    }
+    size_t m = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        const int inner = q->s > 0 && q->s < 1;
+        const int same = inner && k > 0 && T->pknot[k - 1] >= 0 && r->pts[k - 1].j == q->j &&
+                         r->pts[k - 1].phi == q->phi;
+        if (inner && !same)
+            ++m;
+        T->pknot[k] = inner ? (long)m - 1 : -1;
+    }
+    if (reserve_knots(T, m))
+        return 1;
+    T->m = m;
+    /* Each knot's interval and angle; then the sub-intervals and the stiffness. */
+    double *phi = T->dd; /* workspace until the first assembly */
+    for (size_t k = 0; k < r->n_pts; ++k)
+        if (T->pknot[k] >= 0) {
+            T->kj[T->pknot[k]] = r->pts[k].j - r->lo;
+            phi[T->pknot[k]] = r->pts[k].phi;
+        }
+    const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
+    for (size_t k = 0; k < m; ++k) {
+        const size_t i = T->kj[k], j = r->lo + i;
+        const int first = k == 0 || T->kj[k - 1] != i, last = k + 1 == m || T->kj[k + 1] != i;
+        const double hl = phi[k] - (first ? r->theta[j] : phi[k - 1]);
+        const double hr = (last ? r->theta[j + 1] : phi[k + 1]) - phi[k];
+        const double s = (phi[k] - r->theta[j]) / r->dth;
+        const double k_c = ((1 - s) * T->kap[j] + s * T->kap[j + 1]) / (R * r->dth);
+        T->kd[k] = k_s / (R * hl) + k_s / (R * hr) + k_c * R * 0.5 * (hl + hr);
+        T->ko[k] = last ? 0 : -k_s / (R * hr);
+    }
+    return 0;
+}
+
+/* A point's knot (-1: none, a point at a node). */
+static long knot_of(const tirenv_ring *r, const tirenv_ring_point *q)
+{
+    return r->tread->pknot[q - r->pts];
+}
+
+/* A point's tread surface and belt, interpolated (the surface with its knot's hat). */
 static double at_u(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
 {
     const size_t i = q->j - r->lo;
-    return (1 - q->s) * x[2 * i + 1] + q->s * x[2 * i + 3];
+    const long k = knot_of(r, q);
+    const double u = (1 - q->s) * x[2 * i + 1] + q->s * x[2 * i + 3];
+    return k < 0 ? u : u + x[2 * r->n + (size_t)k];
 }
 
 static double at_w(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
@@ -425,8 +602,11 @@ static double points_energy(tirenv_ring *r, const double x[], double grad[])
             E += q->omega * R * 0.5 * T->k_g * eg * eg;
             if (grad) {
                 const double f = q->omega * R * T->k_g * eg;
+                const long kn = knot_of(r, q);
                 grad[2 * i + 1] -= f * (1 - q->s);
                 grad[2 * i + 3] -= f * q->s;
+                if (kn >= 0)
+                    grad[2 * r->n + (size_t)kn] -= f;
             }
         }
         if (eb > 0) {
@@ -449,14 +629,17 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     const size_t n = r->n, lo = r->lo, N = 2 * n;
     const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->win;
-    band_reset(A, N, TAIL);
-    add_arc(A, T, lo, n);
+    fill_window(A, T, lo, n);
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = v; u < NB; ++u)
             band_add(A, b[v], b[u], -Q[v][u]);
-    memset(rhs, 0, N * sizeof *rhs);
+    memset(rhs, 0, (N + T->m) * sizeof *rhs);
+    for (size_t k = 0; k < T->m; ++k) {
+        T->dd[k] = T->kd[k];
+        T->c0[k] = T->c1[k] = 0;
+    }
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         if (q->st == 0)
@@ -470,6 +653,13 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             band_add(A, 2 * i + 3, 2 * i + 3, c * n1 * n1);
             rhs[2 * i + 1] += c * q->d * n0;
             rhs[2 * i + 3] += c * q->d * n1;
+            const long kn = knot_of(r, q);
+            if (kn >= 0) { /* the knot's hat is 1 there */
+                T->dd[kn] += c;
+                T->c0[kn] += c * n0;
+                T->c1[kn] += c * n1;
+                rhs[N + (size_t)kn] += c * q->d;
+            }
         }
         if (q->st & 2) {
             const double c = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
@@ -482,14 +672,98 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     }
 }
 
+/* The knots' block D (tridiagonal, T->dd and T->ko) factorised in place, D = L L^T: T->dd its
+ * diagonal, T->doff its subdiagonal. Nonzero if not positive definite. */
+static int knots_factor(tirenv_ring_tread *T)
+{
+    for (size_t k = 0; k < T->m; ++k) {
+        double d = T->dd[k];
+        if (k > 0)
+            d -= T->doff[k - 1] * T->doff[k - 1];
+        if (!(d > 0))
+            return 1;
+        T->dd[k] = sqrt(d);
+        T->doff[k] = k + 1 < T->m ? T->ko[k] / T->dd[k] : 0;
+    }
+    return 0;
+}
+
+/* y = D^-1 y with the knots' factor. */
+static void knots_solve(const tirenv_ring_tread *T, double y[])
+{
+    const size_t m = T->m;
+    for (size_t k = 0; k < m; ++k)
+        y[k] = (y[k] - (k > 0 ? T->doff[k - 1] * y[k - 1] : 0)) / T->dd[k];
+    for (size_t k = m; k-- > 0;)
+        y[k] = (y[k] - (k + 1 < m ? T->doff[k] * y[k + 1] : 0)) / T->dd[k];
+}
+
+/* The system with the knots condensed out: the band gets - C^T D^-1 C, C the knots' coupling
+ * to u_j, u_j+1 of their intervals (D is block diagonal by interval, so each interval's knots
+ * add to its own 2 x 2 block of u). */
+static int condense_knots(tirenv_ring_tread *T)
+{
+    const size_t m = T->m;
+    if (m == 0)
+        return 0;
+    if (knots_factor(T))
+        return 1;
+    for (size_t k = 0; k < m; ++k)
+        T->z0[k] = T->c0[k], T->z1[k] = T->c1[k];
+    knots_solve(T, T->z0);
+    knots_solve(T, T->z1);
+    for (size_t k = 0; k < m;) {
+        const size_t i = T->kj[k];
+        double s00 = 0, s01 = 0, s11 = 0;
+        for (; k < m && T->kj[k] == i; ++k) {
+            s00 += T->c0[k] * T->z0[k];
+            s01 += T->c0[k] * T->z1[k];
+            s11 += T->c1[k] * T->z1[k];
+        }
+        if (s00 != 0 || s01 != 0 || s11 != 0) {
+            band_add(&T->win, 2 * i + 1, 2 * i + 1, -s00);
+            band_add(&T->win, 2 * i + 1, 2 * i + 3, -s01);
+            band_add(&T->win, 2 * i + 3, 2 * i + 3, -s11);
+        }
+    }
+    return 0;
+}
+
+/* The full system's solve (x: 2 n + m entries) with the band's factor and the knots': the
+ * knots' right-hand side eliminated, the band solved, the knots back-substituted. */
+static void solve_full(tirenv_ring *r, double x[])
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t m = T->m, N = 2 * r->n;
+    if (m == 0) {
+        band_solve(&T->win, x);
+        return;
+    }
+    double *xa = x + N, *y = T->z0; /* free after the factorisation */
+    for (size_t k = 0; k < m; ++k)
+        y[k] = xa[k];
+    knots_solve(T, y);
+    for (size_t k = 0; k < m; ++k) {
+        const size_t i = T->kj[k];
+        x[2 * i + 1] -= T->c0[k] * y[k];
+        x[2 * i + 3] -= T->c1[k] * y[k];
+    }
+    band_solve(&T->win, x);
+    for (size_t k = 0; k < m; ++k) {
+        const size_t i = T->kj[k];
+        xa[k] -= T->c0[k] * x[2 * i + 1] + T->c1[k] * x[2 * i + 3];
+    }
+    knots_solve(T, xa);
+}
+
 /* The driver's callbacks (ring_newton.c). */
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
     assemble(r, (const double(*)[NB])K, rhs);
-    return band_factor(&r->tread->win);
+    return condense_knots(r->tread) || band_factor(&r->tread->win);
 }
 
-static void solve_cb(tirenv_ring *r, double x[]) { band_solve(&r->tread->win, x); }
+static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
 
 static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
 {
@@ -507,6 +781,10 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                             "the contact window of %zu nodes leaves too few of the %zu outside "
                             "it", n, r->M);
     set_kappa(r, x_c);
+    if (find_knots(r))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
+                            "out of memory for the tread surface's knots");
+    const size_t m = T->m;
     const double(*Q)[NB] = window_end(r, x_c);
     double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
     /* From the last evaluation's belt and tread where this window overlaps its window. */
@@ -516,8 +794,10 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         x[2 * i] = warm ? r->w[j] : 0;
         x[2 * i + 1] = warm ? T->u[j] : 0;
     }
-    const tirenv_ring_newton nw = {N, Q, factor_cb, solve_cb, set_states, apply_cb,
-                                   points_energy, T->col};
+    for (size_t k = 0; k < m; ++k)
+        x[N + k] = 0;
+    const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
+                                   points_energy, T->kp};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
     if (st != TIRENV_RING_NEWTON_OK)
@@ -525,8 +805,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
     /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
      * change with it: the same matrix). */
     if (dfz_dz && !factored) {
-        assemble(r, Q, xt);
-        if (band_factor(&T->win))
+        if (factor_cb(r, Q, xt))
             return tirenv_ring__newton_error(r, TIRENV_RING_NEWTON_BREAKDOWN, n,
                                              "belt-and-tread", "shear-coupled tread", diag);
     }
@@ -534,7 +813,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         r->w[j] = T->u[j] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
-    for (size_t i = 0; i < N; ++i)
+    for (size_t i = 0; i < N + m; ++i)
         xt[i] = 0;
     for (size_t i = 0; i < n; ++i) {
         r->w[lo + i] = x[2 * i];
@@ -573,13 +852,15 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         sum_s += q->f * q->sn;
         xt[2 * i + 1] += cu * (1 - q->s);
         xt[2 * i + 3] += cu * q->s;
+        if (knot_of(r, q) >= 0)
+            xt[N + (size_t)knot_of(r, q)] += cu;
         xt[2 * i] += cw * (1 - q->s);
         xt[2 * i + 2] += cw * q->s;
     }
     *fz = sum_c;
     *fx = -sum_s;
     if (dfz_dz) {
-        band_solve(&T->win, xt);
+        solve_full(r, xt);
         double dF = 0;
         for (size_t k = 0; k < r->n_pts; ++k) {
             const tirenv_ring_point *q = &r->pts[k];
