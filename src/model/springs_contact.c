@@ -38,6 +38,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
 void tirenv_springs__cc_free(tirenv_springs__cc *c)
 {
     free(c->rows);
+    free(c->vrows);
     free(c->in_w);
     free(c->lambda);
     free(c->order);

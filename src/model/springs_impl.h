@@ -268,7 +268,11 @@ typedef struct {
 typedef struct {
     size_t cap_rows, cap_band;
     tirenv_springs__cc_row *rows;
-    size_t n_rows, n_vertex_rows;
+    size_t n_rows;
+    /* the ground vertices' rows before the layout (each sector's hull is taken from them),
+     * n_vrows of room for cap_vrows */
+    tirenv_springs__cc_row *vrows;
+    size_t n_vrows, cap_vrows;
     unsigned char *in_w;   /* per row: in the working set */
     double *lambda;        /* per row: reaction, N */
     size_t *order;         /* KKT unknowns: element (< N) or N + row */
