@@ -266,9 +266,9 @@ static void sort_rows(tirenv_springs__cc_row *r, size_t n)
  * rows [first, first + m) and (1, P_r): a row reads (1 - tau) w_i + tau w_j >= h / (ga + gb), so
  * only rows on the hull can bind (a line over [0, 1] above the hull's vertices is above every
  * point), and keeping only them keeps the KKT systems nonsingular. The kept rows
- * are appended at c->rows[*out]; stack has room for m + 2. */
-static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
-                      size_t *stack, size_t *out)
+ * are appended at c->rows[out]; returns the new end. stack has room for m + 2. */
+static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+                        size_t *stack, size_t out)
 {
     const tirenv_springs__cc_row *r = c->vrows + first;
     size_t top = 0;
@@ -295,19 +295,20 @@ static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l,
         const double y = PT_H(k);
         if (kept > 0 && PT_T(k) - tau_prev < t_snap) {
             if (y > y_prev) {
-                c->rows[*out - 1] = r[k - 1];
+                c->rows[out - 1] = r[k - 1];
                 tau_prev = PT_T(k);
                 y_prev = y;
             }
             continue;
         }
-        c->rows[(*out)++] = r[k - 1];
+        c->rows[out++] = r[k - 1];
         ++kept;
         tau_prev = PT_T(k);
         y_prev = y;
     }
 #undef PT_T
 #undef PT_H
+    return out;
 }
 
 /* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
@@ -350,38 +351,46 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         return TIRENV_OK;
     }
     /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_row holds
-     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. */
+     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. The workspace's arrays
+     * and the span are kept in locals: the rows written below could alias them. */
+    double *pin_h = c->pin_h;
+    size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
     for (size_t e = lo; e <= hi; ++e) {
-        c->pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
-        c->pin_row[e] = SIZE_MAX;
-        c->sec_count[e] = 0;
+        pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
+        pin_row[e] = SIZE_MAX;
     }
     for (size_t k = 0; k < nv; ++k)
-        if (V[k].t == 0 && V[k].h > c->pin_h[V[k].i]) {
-            c->pin_h[V[k].i] = V[k].h;
-            c->pin_row[V[k].i] = k;
+        if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
+            pin_h[V[k].i] = V[k].h;
+            pin_row[V[k].i] = k;
         }
-    /* Lay out the kept rows. */
-    size_t out = 0, k = 0;
+    /* Lay out the kept rows. A ray's row: ray_pin with its element, h and id. */
+    const tirenv_springs__cc_row ray_pin = {.t = 0, .tau = 0, .ga = 1, .gb = 0, .dga_dz = 0,
+                                            .dgb_dz = 0, .dh_dz = NAN, .cmp = 0,
+                                            .dcmp_dz = 0};
+    size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0;
     size_t *stack = c->pos;
-    c->f0 = SIZE_MAX;
-    c->f1 = 0;
     for (size_t e = lo; e <= hi; ++e) {
-        if (c->pin_h[e] > 0) {
-            const size_t src = c->pin_row[e];
-            c->pin_row[e] = out;
-            if (src != SIZE_MAX)
+        if (pin_h[e] > 0) {
+            const size_t src = pin_row[e];
+            pin_row[e] = out;
+            if (src != SIZE_MAX) {
                 R[out] = V[src];
-            else
-                R[out] = (tirenv_springs__cc_row){.i = e, .j = e, .t = 0, .tau = 0, .ga = 1,
-                                                  .gb = 0, .h = c->pin_h[e], .dga_dz = 0,
-                                                  .dgb_dz = 0, .dh_dz = NAN,
-                                                  .id = -1 - (long)e};
+            } else {
+                tirenv_springs__cc_row *r = &R[out];
+                *r = ray_pin;
+                r->i = r->j = e;
+                r->h = pin_h[e];
+                r->id = -1 - (long)e;
+            }
             ++out;
-            c->f0 = e < c->f0 ? e : c->f0;
-            c->f1 = e;
-        } else {
-            c->pin_row[e] = SIZE_MAX;
+            f0 = e < f0 ? e : f0;
+            f1 = e;
+        }
+        sec_first[e] = out;
+        if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
+            sec_count[e] = 0;
+            continue;
         }
         while (k < nv && V[k].i < e)
             ++k;
@@ -394,10 +403,9 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             }
             ++k;
         }
-        c->sec_first[e] = out;
         if (m > 0 && e + 1 <= hi) {
-            const double P_r = c->pin_h[e + 1] > 0 ? c->pin_h[e + 1] : 0;
-            const double P_l = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
+            const double P_r = pin_h[e + 1] > 0 ? pin_h[e + 1] : 0;
+            const double P_l = pin_h[e] > 0 ? pin_h[e] : 0;
             /* A row lies below the hull if h / (ga + gb) is at most the chord between the
              * ends at its tau: with ga + gb >= 1 + ab_lo t (1 - t) and |tau - t| <=
              * tau_dev, if h / (1 + ab_lo t (1 - t)) <= (1 - t) P_l + t P_r - |P_r - P_l|
@@ -415,16 +423,18 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                 }
             }
             if (kept > 0)
-                hull_rows(c, first, kept, P_l, P_r, stack, &out);
+                out = hull_rows(c, first, kept, P_l, P_r, stack, out);
         }
-        c->sec_count[e] = out - c->sec_first[e];
-        if (c->sec_count[e] > 0) {
-            c->f0 = e < c->f0 ? e : c->f0;
-            c->f1 = e + 1;
+        sec_count[e] = out - sec_first[e];
+        if (sec_count[e] > 0) {
+            f0 = e < f0 ? e : f0;
+            f1 = e + 1;
         }
     }
     c->n_rows = out;
-    if (c->f0 == SIZE_MAX) {
+    c->f0 = f0;
+    c->f1 = f1;
+    if (f0 == SIZE_MAX) {
         c->f0 = 1;
         c->f1 = 0;
     }
