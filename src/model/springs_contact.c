@@ -344,29 +344,36 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
         }
     }
     /* The held elements' reactions: (K w)_e less what the working rows between elements
-     * put on e. */
+     * put on e (sectors e - 1 and e). The workspace's arrays in locals: the stores to lambda
+     * would make them be read again at every element. */
+    const size_t *wpos = c->wpos, *sec_first = c->sec_first, *sec_count = c->sec_count;
+    const size_t *pin_row = c->pin_row;
+    const unsigned char *in_w = c->in_w;
+    const tirenv_springs__cc_row *rows = c->rows;
+    const double *diag = T->diag, k_ir = T->k_ir;
+    double *lambda = c->lambda;
     for (size_t e = f0; e <= f1; ++e) {
-        if (c->wpos[e] != SIZE_MAX)
+        if (wpos[e] != SIZE_MAX)
             continue;
-        double k_ee = T->diag[e];
+        double k_ee = diag[e];
         if (e == f0 && f0 > 0)
-            k_ee -= T->k_ir * T->lq[f0 - 1];
+            k_ee -= k_ir * T->lq[f0 - 1];
         if (e == f1 && f1 + 1 < N)
-            k_ee -= T->k_ir * T->rq[f1 + 1];
+            k_ee -= k_ir * T->rq[f1 + 1];
         double Kw = k_ee * wq[e];
         if (e > f0)
-            Kw -= T->k_ir * wq[e - 1];
+            Kw -= k_ir * wq[e - 1];
         if (e < f1)
-            Kw -= T->k_ir * wq[e + 1];
-        for (int side = 0; side < 2; ++side) { /* sectors e - 1 and e */
-            if ((side == 0 && e == f0) || (side == 1 && e == f1))
-                continue;
-            const size_t sec = side == 0 ? e - 1 : e;
-            for (size_t r = c->sec_first[sec], k = 0; k < c->sec_count[sec]; ++k, ++r)
-                if (c->in_w[r])
-                    Kw -= (side == 0 ? c->rows[r].gb : c->rows[r].ga) * c->lambda[r];
-        }
-        c->lambda[c->pin_row[e]] = Kw;
+            Kw -= k_ir * wq[e + 1];
+        if (e > f0)
+            for (size_t r = sec_first[e - 1], k = 0; k < sec_count[e - 1]; ++k, ++r)
+                if (in_w[r])
+                    Kw -= rows[r].gb * lambda[r];
+        if (e < f1)
+            for (size_t r = sec_first[e], k = 0; k < sec_count[e]; ++k, ++r)
+                if (in_w[r])
+                    Kw -= rows[r].ga * lambda[r];
+        lambda[pin_row[e]] = Kw;
     }
     return 0;
 }
