@@ -120,8 +120,8 @@ static int valid_range(deformable_state *st, tirenv_diag *diag)
     st->l_max = 2 * R0;
     if (z > 0) {
         tirenv_eq_point p;
-        if ((status = st->def->forces(st->flat_elem, st->flat, 0, z, &p, diag)) ||
-            (status = st->def->contact_length(st->flat_elem, st->flat, z, &st->l_max, diag)))
+        if ((status = st->def->contact_length(st->flat_elem, st->flat, z, &st->l_max, &p,
+                                              diag)))
             return status;
         st->G_max = p.F;
     }
@@ -182,7 +182,7 @@ static int deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
     if ((status = solve_flat(st, load, R0, &p, diag)))
         return status;
     double l_c;
-    if ((status = st->def->contact_length(st->flat_elem, st->flat, p.z, &l_c, diag)))
+    if ((status = st->def->contact_length(st->flat_elem, st->flat, p.z, &l_c, NULL, diag)))
         return on_flat_ground(load, status, diag);
     st->have_flat_point = 1;
     st->flat_load = load;
@@ -209,7 +209,8 @@ static double patch_minus_target(double z, void *p)
 {
     patch_ctx *c = p;
     double l = 0;
-    const int s = c->st->def->contact_length(c->st->flat_elem, c->st->flat, z, &l, c->diag);
+    const int s =
+        c->st->def->contact_length(c->st->flat_elem, c->st->flat, z, &l, NULL, c->diag);
     if (s && !c->status)
         c->status = s;
     return l - c->l_c;
@@ -284,7 +285,8 @@ static int deformable_load_for_contact_length(void *state, double l_c, double *l
     return status;
 }
 
-/* One force evaluation at the height and the model's contact length there. */
+/* One force evaluation at the height: its load and stiffness, and the model's contact length
+ * there. */
 static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
                                      tirenv_diag *diag)
 {
@@ -303,8 +305,7 @@ static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
                             st->G_max, st->l_max, st->range_why);
     tirenv_eq_point p;
     double l_c;
-    if ((status = st->def->forces(st->flat_elem, st->flat, 0, z, &p, diag)) ||
-        (status = st->def->contact_length(st->flat_elem, st->flat, z, &l_c, diag)))
+    if ((status = st->def->contact_length(st->flat_elem, st->flat, z, &l_c, &p, diag)))
         return status;
     *out = (tirenv_flat){
         .load = p.F,

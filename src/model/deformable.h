@@ -23,9 +23,11 @@ struct tirenv_deformable {
     /* Flat-ground contact length (m) with the centre at height z (m): the length of ground
      * the tread touches, which grows continuously as the centre comes down to the lowest
      * height of the valid range (lowest_z), so that deformable.c finds the height of a
-     * contact length by one search for every model (docs/models.md section 1.3). */
+     * contact length by one search for every model (docs/models.md section 1.3). It is one
+     * force evaluation: with at not NULL, its hub forces as forces() gives them (at->z = z),
+     * so that a caller needing both evaluates once. */
     int (*contact_length)(void *elem, const tirenv_profile *flat, double z, double *l_c,
-                          tirenv_diag *diag);
+                          tirenv_eq_point *at, tirenv_diag *diag);
     /* The lowest flat-ground centre height z (m) of the model's valid range and why the range
      * ends there (a phrase for messages, into why[n]); z = 0 and "" when it ends only where
      * the centre meets the ground. docs/models.md section 1.3. */

@@ -26,10 +26,13 @@ static int ring_forces(void *elem, const tirenv_profile *p, double x, double z,
  * continuously as the centre comes down (its edges are interpolated), and deformable.c's
  * search finds the height of a contact length. */
 static int ring_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c,
-                               tirenv_diag *diag)
+                               tirenv_eq_point *at, tirenv_diag *diag)
 {
-    double fx, fz;
-    const int status = tirenv_ring_forces(elem, flat, 0, z, &fx, &fz, NULL, NULL, diag);
+    tirenv_eq_point p = {.z = z};
+    const int status = tirenv_ring_forces(elem, flat, 0, z, &p.fx, &p.F, at ? &p.dF_dz : NULL,
+                                          at ? &p.contacts : NULL, diag);
+    if (at)
+        *at = p;
     *l_c = tirenv_ring_patch_length(elem);
     return status;
 }
@@ -48,7 +51,7 @@ static const double RANGE_TOL = 1e-6;
 static int patch_at(void *elem, const tirenv_profile *flat, double z, double *l,
                     tirenv_diag *diag)
 {
-    return ring_contact_length(elem, flat, z, l, diag);
+    return ring_contact_length(elem, flat, z, l, NULL, diag);
 }
 
 static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char *why,

@@ -31,13 +31,13 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
     c->f0 = 1;
     c->f1 = 0;
     c->tri_ok = 0;
-    c->tri_n = N;
     return TIRENV_OK;
 }
 
 void tirenv_springs__cc_free(tirenv_springs__cc *c)
 {
     free(c->rows);
+    free(c->vrows);
     free(c->in_w);
     free(c->lambda);
     free(c->order);
@@ -96,18 +96,19 @@ static int fixed(const tirenv_springs__cc *c, size_t e)
  * [K G^T; G -C] [w; mu] = [.; .], mu = -lambda, C the rows' own compliances (diagonal,
  * >= 0; 0 on an element's row). Every row follows the unknowns it couples, so
  * with K positive definite and the rows independent every leading block is nonsingular and
- * LDL^T needs no pivoting (w pivots > 0, row pivots < 0). Returns 1 if a pivot shows the rows
- * dependent (a row on held elements only, among others), -1 out of memory. */
-static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
+ * LDL^T needs no pivoting (w pivots > 0, row pivots < 0). same_layout: the rows and the
+ * working set are the last layout's (cc_solve found them so), so that only the values are
+ * new where the Schur path's factor is kept. Returns 1 if a pivot shows the rows dependent
+ * (a row on held elements only, among others), -1 out of memory. */
+static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int same_layout)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     size_t n = 0, n_schur = 0;
     /* wpos still marks the held elements of the last layout: the same span and held
      * elements give the same K_FF, whose factor the Schur path then keeps */
     int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
-    if (c->layout_same && c->use_schur && same) {
-        /* The rows and the working set of the last layout (cc_solve found them so):
-         * wpos, order, schur_pos and the chains stand; only the values are new. */
+    if (same_layout && c->use_schur && same) {
+        /* wpos, order, schur_pos and the chains stand; only the values are new. */
         c->tri_same = 1;
         return tirenv_springs__cc_schur_factor(c, T);
     }
@@ -304,10 +305,12 @@ static void schur_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_tire
 
 /* The minimiser of 1/2 w^T K w on the working set's rows as equalities: w into wq[f0..f1],
  * the rows' reactions into lambda (a held element's own row's from its equation of K w =
- * G^T lambda). 1 if the rows are dependent, -1 out of memory. */
-static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double wq[])
+ * G^T lambda); same_layout as for kkt_factor. 1 if the rows are dependent, -1 out of
+ * memory. */
+static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double wq[],
+               int same_layout)
 {
-    const int st = kkt_factor(c, T);
+    const int st = kkt_factor(c, T, same_layout);
     if (st)
         return st;
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
@@ -325,7 +328,7 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
         for (size_t q = 0; q < c->n_schur; ++q)
             lam[q] = c->rows[c->order[c->schur_pos[q]] - N].h;
         schur_rhs(c, T, wq, wq, lam);
-        tirenv_springs__cc_schur_solve_at(c, wq, lam);
+        tirenv_springs__cc_schur_solve_at(c, T, wq, lam);
         for (size_t q = 0; q < c->n_schur; ++q)
             c->lambda[c->order[c->schur_pos[q]] - N] = lam[q];
     } else {
@@ -341,29 +344,36 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
         }
     }
     /* The held elements' reactions: (K w)_e less what the working rows between elements
-     * put on e. */
+     * put on e (sectors e - 1 and e). The workspace's arrays in locals: the stores to lambda
+     * would make them be read again at every element. */
+    const size_t *wpos = c->wpos, *sec_first = c->sec_first, *sec_count = c->sec_count;
+    const size_t *pin_row = c->pin_row;
+    const unsigned char *in_w = c->in_w;
+    const tirenv_springs__cc_row *rows = c->rows;
+    const double *diag = T->diag, k_ir = T->k_ir;
+    double *lambda = c->lambda;
     for (size_t e = f0; e <= f1; ++e) {
-        if (c->wpos[e] != SIZE_MAX)
+        if (wpos[e] != SIZE_MAX)
             continue;
-        double k_ee = T->diag[e];
+        double k_ee = diag[e];
         if (e == f0 && f0 > 0)
-            k_ee -= T->k_ir * T->lq[f0 - 1];
+            k_ee -= k_ir * T->lq[f0 - 1];
         if (e == f1 && f1 + 1 < N)
-            k_ee -= T->k_ir * T->rq[f1 + 1];
+            k_ee -= k_ir * T->rq[f1 + 1];
         double Kw = k_ee * wq[e];
         if (e > f0)
-            Kw -= T->k_ir * wq[e - 1];
+            Kw -= k_ir * wq[e - 1];
         if (e < f1)
-            Kw -= T->k_ir * wq[e + 1];
-        for (int side = 0; side < 2; ++side) { /* sectors e - 1 and e */
-            if ((side == 0 && e == f0) || (side == 1 && e == f1))
-                continue;
-            const size_t sec = side == 0 ? e - 1 : e;
-            for (size_t r = c->sec_first[sec], k = 0; k < c->sec_count[sec]; ++k, ++r)
-                if (c->in_w[r])
-                    Kw -= (side == 0 ? c->rows[r].gb : c->rows[r].ga) * c->lambda[r];
-        }
-        c->lambda[c->pin_row[e]] = Kw;
+            Kw -= k_ir * wq[e + 1];
+        if (e > f0)
+            for (size_t r = sec_first[e - 1], k = 0; k < sec_count[e - 1]; ++k, ++r)
+                if (in_w[r])
+                    Kw -= rows[r].gb * lambda[r];
+        if (e < f1)
+            for (size_t r = sec_first[e], k = 0; k < sec_count[e]; ++k, ++r)
+                if (in_w[r])
+                    Kw -= rows[r].ga * lambda[r];
+        lambda[pin_row[e]] = Kw;
     }
     return 0;
 }
@@ -495,9 +505,7 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
      * largest h of a row on e, which satisfies every row, with no row working. */
     if (!same_rows) /* else in_w holds the last final set, which warm_set would give */
         warm_set(c);
-    c->layout_same = same_rows;
-    int at_min = 0, st = eqp(c, T, wq);
-    c->layout_same = 0;
+    int at_min = 0, st = eqp(c, T, wq, same_rows);
     if (st < 0)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
@@ -571,7 +579,7 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
                                 "%zu) did not settle in %zu active-set steps at x = %.9g m, "
                                 "z = %.9g m", n_rows, f0, f1, max_iter, x, z);
         if (!at_min) {
-            st = eqp(c, T, wq);
+            st = eqp(c, T, wq, 0);
             if (st)
                 return tirenv_error(diag, st < 0 ? TIRENV_ENOMEM : TIRENV_ENOCONV, "", 0,
                                     "ELEMENT_ANGLE",
@@ -698,7 +706,7 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             lam[q] = rhs;
         }
         schur_rhs(c, T, dw, dw, lam);
-        tirenv_springs__cc_schur_solve_at(c, dw, lam);
+        tirenv_springs__cc_schur_solve_at(c, T, dw, lam);
         return;
     }
     double *b = c->rhs;

@@ -268,7 +268,11 @@ typedef struct {
 typedef struct {
     size_t cap_rows, cap_band;
     tirenv_springs__cc_row *rows;
-    size_t n_rows, n_vertex_rows;
+    size_t n_rows;
+    /* the ground vertices' rows before the layout (each sector's hull is taken from them),
+     * n_vrows of room for cap_vrows */
+    tirenv_springs__cc_row *vrows;
+    size_t n_vrows, cap_vrows;
     unsigned char *in_w;   /* per row: in the working set */
     double *lambda;        /* per row: reaction, N */
     size_t *order;         /* KKT unknowns: element (< N) or N + row */
@@ -291,7 +295,7 @@ typedef struct {
      * held elements wpos marks (tri_ok): the next layout with the same span and held
      * elements (the confirming evaluation, the next position) reuses it */
     int tri_ok, tri_same;
-    size_t tri_f0, tri_f1, tri_n; /* tri_n: N, the rows' KKT unknowns are N + row */
+    size_t tri_f0, tri_f1;
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
@@ -307,7 +311,7 @@ typedef struct {
      * in_w already holding the warm start and the KKT layout of its first eqp unchanged. */
     long *last_id;
     size_t *last_key, n_last, cap_last, last_f0, last_f1;
-    int last_ok, layout_same;
+    int last_ok;
     size_t iterations;     /* of the last solve */
     /* the last evaluation's solution had a row between elements working: the next one goes
      * to the QP without trying the elements' own rows first (section 4.8, Cost) */
@@ -323,7 +327,9 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start *
  * K's rows and returns w_e; lam[q] holds that of the q-th working row between elements and
  * returns its reaction lambda (N). */
 int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T);
-void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c, double x[], double lam[]);
+void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
+                                       const tirenv_springs__cc_tire *T, double x[],
+                                       double lam[]);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach

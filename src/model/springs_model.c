@@ -64,16 +64,20 @@ static int springs_forces(void *elem, const tirenv_profile *p, double x, double 
  * contact along their rays (CONTACT 'rays', the paper's) and continuous contact alike: on
  * flat ground both are the same LCP. */
 static int springs_contact_length(void *elem, const tirenv_profile *flat, double z, double *l_c,
-                                  tirenv_diag *diag)
+                                  tirenv_eq_point *at, tirenv_diag *diag)
 {
     springs_elem *e = elem;
     const tirenv_springs_params *par = tirenv_springs_params_of(e->s);
-    double fx, fz;
     *l_c = 0;
-    if (!(z < par->R0))
+    if (!(z < par->R0) && !at) /* nothing touches: no evaluation needed */
         return 0;
-    const int status = tirenv_springs_forces(e->s, flat, 0, z, &fx, &fz, NULL, NULL, diag);
-    if (status)
+    tirenv_eq_point p = {.z = z};
+    const int status = tirenv_springs_forces(e->s, flat, 0, z, &p.fx, &p.F,
+                                             at ? &p.dF_dz : NULL, at ? &p.contacts : NULL,
+                                             diag);
+    if (at)
+        *at = p;
+    if (status || !(z < par->R0))
         return status;
     const size_t N = tirenv_springs_size(e->s);
     const double *theta = tirenv_springs_theta(e->s);

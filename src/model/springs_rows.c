@@ -106,9 +106,26 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     return TIRENV_OK;
 }
 
+/* Room for n vertex rows in c->vrows. */
+static int reserve_vrows(tirenv_springs__cc *c, size_t n)
+{
+    if (n <= c->cap_vrows)
+        return TIRENV_OK;
+    size_t cap = c->cap_vrows ? c->cap_vrows : 64;
+    while (cap < n)
+        cap *= 2;
+    void *r = realloc(c->vrows, cap * sizeof *c->vrows);
+    if (!r)
+        return TIRENV_ENOMEM;
+    c->vrows = r;
+    c->cap_vrows = cap;
+    return TIRENV_OK;
+}
+
 /* The vertex rows: every ground vertex below the centre's height, within
  * R0 of the centre and inside the tread segment's angle, as a row on the sector of elements it
- * lies in (or on one element, if it lies on its ray). Appended after the n_rows present. */
+ * lies in (or on one element, if it lies on its ray), into c->vrows; their number in
+ * c->n_vrows. */
 static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                        const tirenv_profile *p, double x, double z, size_t a, size_t b,
                        const double d[])
@@ -133,15 +150,14 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         while (j_end < n && X[j_end] <= hi)
             ++j_end;
     }
-    if (reserve_rows(c, c->n_rows + (j_end - j), N))
+    if (reserve_vrows(c, j_end - j))
         return TIRENV_ENOMEM;
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
     /* the rays' penetrations at the ends of sector ci and the chord's slack there */
     size_t ci = SIZE_MAX;
     double P_l = 0, P_r = 0, slack_tau = 0;
-    /* rows is NULL while nothing was reserved (no vertex in reach): no offset on it then */
-    tirenv_springs__cc_row *out = c->rows ? c->rows + c->n_rows : NULL;
+    tirenv_springs__cc_row *out = c->vrows; /* NULL while nothing was reserved */
     for (; j < j_end; ++j) {
         const double dx = X[j] - x, dz = z - Z[j];
         if (!(dz > 0))
@@ -209,7 +225,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                           .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
                                           .dh_dz = -dz / rho, .id = (long)j};
     }
-    c->n_rows = (size_t)(out - c->rows);
+    c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     return TIRENV_OK;
 }
 
@@ -246,15 +262,15 @@ static void sort_rows(tirenv_springs__cc_row *r, size_t n)
     }
 }
 
-/* Upper hull of the sector's points (0, P_l), the rows' (tau, h / (ga + gb)) for rows
- * [first, first + m) and (1, P_r): a row reads (1 - tau) w_i + tau w_j >= h / (ga + gb), so
+/* Upper hull of the sector's points (0, P_l), the rows' (tau, h / (ga + gb)) for the vertex
+ * rows [first, first + m) and (1, P_r): a row reads (1 - tau) w_i + tau w_j >= h / (ga + gb), so
  * only rows on the hull can bind (a line over [0, 1] above the hull's vertices is above every
  * point), and keeping only them keeps the KKT systems nonsingular. The kept rows
- * are appended at c->rows[*out]; stack has room for m + 2. */
-static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
-                      size_t *stack, size_t *out)
+ * are appended at c->rows[out]; returns the new end. stack has room for m + 2. */
+static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+                        size_t *stack, size_t out)
 {
-    const tirenv_springs__cc_row *r = c->rows + first;
+    const tirenv_springs__cc_row *r = c->vrows + first;
     size_t top = 0;
     /* point k: 0 the left end, 1..m the rows, m + 1 the right end */
 #define PT_T(k) ((k) == 0 ? 0.0 : (k) == m + 1 ? 1.0 : r[(k) - 1].tau)
@@ -279,19 +295,20 @@ static void hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l,
         const double y = PT_H(k);
         if (kept > 0 && PT_T(k) - tau_prev < t_snap) {
             if (y > y_prev) {
-                c->rows[*out - 1] = r[k - 1];
+                c->rows[out - 1] = r[k - 1];
                 tau_prev = PT_T(k);
                 y_prev = y;
             }
             continue;
         }
-        c->rows[(*out)++] = r[k - 1];
+        c->rows[out++] = r[k - 1];
         ++kept;
         tau_prev = PT_T(k);
         y_prev = y;
     }
 #undef PT_T
 #undef PT_H
+    return out;
 }
 
 /* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
@@ -304,11 +321,13 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     c->n_rows = 0;
     if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
         return TIRENV_ENOMEM;
-    const size_t nv = c->n_rows;
-    if (reserve_rows(c, 2 * nv + N + 2, N))
+    /* the laid-out rows: at most a pin per element and the vertex rows kept; pos, the
+     * hulls' stack, needs nv + 2 */
+    const size_t nv = c->n_vrows;
+    if (reserve_rows(c, nv + N + 2, N))
         return TIRENV_ENOMEM;
-    tirenv_springs__cc_row *R = c->rows;
-    sort_rows(R, nv);
+    tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
+    sort_rows(V, nv);
     /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
     size_t lo = N, hi = 0;
     for (size_t e = a; a <= b && e <= b; ++e)
@@ -322,8 +341,8 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             break;
         }
     if (nv > 0) {
-        lo = R[0].i < lo ? R[0].i : lo;
-        const size_t top = R[nv - 1].t > 0 ? R[nv - 1].i + 1 : R[nv - 1].i;
+        lo = V[0].i < lo ? V[0].i : lo;
+        const size_t top = V[nv - 1].t > 0 ? V[nv - 1].i + 1 : V[nv - 1].i;
         hi = top > hi ? top : hi;
     }
     if (lo > hi) {
@@ -332,54 +351,61 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         return TIRENV_OK;
     }
     /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_row holds
-     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. */
+     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. The workspace's arrays
+     * and the span are kept in locals: the rows written below could alias them. */
+    double *pin_h = c->pin_h;
+    size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
     for (size_t e = lo; e <= hi; ++e) {
-        c->pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
-        c->pin_row[e] = SIZE_MAX;
-        c->sec_count[e] = 0;
+        pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
+        pin_row[e] = SIZE_MAX;
     }
     for (size_t k = 0; k < nv; ++k)
-        if (R[k].t == 0 && R[k].h > c->pin_h[R[k].i]) {
-            c->pin_h[R[k].i] = R[k].h;
-            c->pin_row[R[k].i] = k;
+        if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
+            pin_h[V[k].i] = V[k].h;
+            pin_row[V[k].i] = k;
         }
-    /* Lay out the kept rows after the vertex rows, then move them to the front. */
-    size_t out = nv, k = 0;
+    /* Lay out the kept rows. A ray's row: ray_pin with its element, h and id. */
+    const tirenv_springs__cc_row ray_pin = {.t = 0, .tau = 0, .ga = 1, .gb = 0, .dga_dz = 0,
+                                            .dgb_dz = 0, .dh_dz = NAN, .cmp = 0,
+                                            .dcmp_dz = 0};
+    size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0;
     size_t *stack = c->pos;
-    c->f0 = SIZE_MAX;
-    c->f1 = 0;
     for (size_t e = lo; e <= hi; ++e) {
-        if (c->pin_h[e] > 0) {
-            const size_t src = c->pin_row[e];
-            c->pin_row[e] = out - nv;
-            if (src != SIZE_MAX)
-                R[out] = R[src];
-            else
-                R[out] = (tirenv_springs__cc_row){.i = e, .j = e, .t = 0, .tau = 0, .ga = 1,
-                                                  .gb = 0, .h = c->pin_h[e], .dga_dz = 0,
-                                                  .dgb_dz = 0, .dh_dz = NAN,
-                                                  .id = -1 - (long)e};
+        if (pin_h[e] > 0) {
+            const size_t src = pin_row[e];
+            pin_row[e] = out;
+            if (src != SIZE_MAX) {
+                R[out] = V[src];
+            } else {
+                tirenv_springs__cc_row *r = &R[out];
+                *r = ray_pin;
+                r->i = r->j = e;
+                r->h = pin_h[e];
+                r->id = -1 - (long)e;
+            }
             ++out;
-            c->f0 = e < c->f0 ? e : c->f0;
-            c->f1 = e;
-        } else {
-            c->pin_row[e] = SIZE_MAX;
+            f0 = e < f0 ? e : f0;
+            f1 = e;
         }
-        while (k < nv && R[k].i < e)
+        sec_first[e] = out;
+        if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
+            sec_count[e] = 0;
+            continue;
+        }
+        while (k < nv && V[k].i < e)
             ++k;
         size_t first = k, m = 0;
-        while (k < nv && R[k].i == e) {
-            if (R[k].t > 0) {
+        while (k < nv && V[k].i == e) {
+            if (V[k].t > 0) {
                 if (m == 0)
                     first = k;
                 ++m;
             }
             ++k;
         }
-        c->sec_first[e] = out - nv;
         if (m > 0 && e + 1 <= hi) {
-            const double P_r = c->pin_h[e + 1] > 0 ? c->pin_h[e + 1] : 0;
-            const double P_l = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
+            const double P_r = pin_h[e + 1] > 0 ? pin_h[e + 1] : 0;
+            const double P_l = pin_h[e] > 0 ? pin_h[e] : 0;
             /* A row lies below the hull if h / (ga + gb) is at most the chord between the
              * ends at its tau: with ga + gb >= 1 + ab_lo t (1 - t) and |tau - t| <=
              * tau_dev, if h / (1 + ab_lo t (1 - t)) <= (1 - t) P_l + t P_r - |P_r - P_l|
@@ -388,26 +414,27 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             const double slack_tau = fabs(P_r - P_l) * T->tau_dev;
             size_t kept = 0;
             for (size_t q = first; q < first + m; ++q) {
-                const double t = R[q].t;
+                const double t = V[q].t;
                 const double chord = (1 - t) * P_l + t * P_r - slack_tau;
-                if (R[q].h > chord * (1 + T->ab_lo * t * (1 - t))) {
-                    R[first + kept] = R[q];
-                    row_weights(T, &R[first + kept]);
+                if (V[q].h > chord * (1 + T->ab_lo * t * (1 - t))) {
+                    V[first + kept] = V[q];
+                    row_weights(T, &V[first + kept]);
                     ++kept;
                 }
             }
             if (kept > 0)
-                hull_rows(c, first, kept, P_l, P_r, stack, &out);
+                out = hull_rows(c, first, kept, P_l, P_r, stack, out);
         }
-        c->sec_count[e] = out - nv - c->sec_first[e];
-        if (c->sec_count[e] > 0) {
-            c->f0 = e < c->f0 ? e : c->f0;
-            c->f1 = e + 1;
+        sec_count[e] = out - sec_first[e];
+        if (sec_count[e] > 0) {
+            f0 = e < f0 ? e : f0;
+            f1 = e + 1;
         }
     }
-    c->n_rows = out - nv;
-    memmove(R, R + nv, c->n_rows * sizeof *R);
-    if (c->f0 == SIZE_MAX) {
+    c->n_rows = out;
+    c->f0 = f0;
+    c->f1 = f1;
+    if (f0 == SIZE_MAX) {
         c->f0 = 1;
         c->f1 = 0;
     }

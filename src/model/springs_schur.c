@@ -157,9 +157,12 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
     return 0;
 }
 
-void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c, double x[], double lam[])
+void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
+                                       const tirenv_springs__cc_tire *T, double x[],
+                                       double lam[])
 {
-    const size_t f0 = c->f0, f1 = c->f1, N = c->tri_n, k = c->n_schur;
+    /* the rows' KKT unknowns are N + row */
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
     const double *S = c->schur;
     /* K w = b_w + G^T lambda, G w = b_r: w = w0 + K^-1 G^T lambda with w0 = K^-1 b_w, and
      * S lambda = b_r - G w0. */
