@@ -126,6 +126,8 @@ struct tirenv_ring {
     size_t lo, n;          /* the window: nodes lo .. lo + n - 1 (n = 0: no ground in reach) */
     size_t warm_lo, warm_n;
     tirenv_ring_band A;    /* the window's contact system and its factor */
+    tirenv_ring_band B;    /* the continuous contact's free ends of the window (ring_smooth.c):
+                            * the belt there given the nodes that can touch */
     double *rhs;           /* right-hand side, then solution, of the window system */
     double patch;          /* contact length of the last evaluation, m */
     double tread_max;      /* largest tread compression of the last evaluation, m */
