@@ -339,6 +339,10 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
     if (status)
         return status;
     size_t first = r->M, last = 0;
+    /* Without lugs every point's tread stiffness is the same: computed once, as each
+     * point's would be. */
+    const int lugs = r->par.lug_count > 0;
+    const double k_t = lugs ? 0 : tirenv_ring__tread_kappa(r, 0, x) / (r->R * r->dth);
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         if (!(q->d > -r->par.t_r)) {
@@ -347,7 +351,7 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
         }
         first = q->j < first ? q->j : first;
         last = q->j + 1 > last ? q->j + 1 : last;
-        q->k_t = tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth);
+        q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
     }
     if (first > last) {
         r->n_pts = 0; /* no ground within reach */
