@@ -147,6 +147,8 @@ struct tirenv_ring {
     size_t n_key, cap_key, key_lo, key_n;
     int key_valid;
     size_t n_factor;       /* the Winkler tread's factorisations so far (the tests count them) */
+    size_t n_sub;          /* its evaluations answered on the sub-window of their contact
+                            * (ring_smooth.c; the tests count them) */
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
 };
 

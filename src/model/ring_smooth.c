@@ -436,6 +436,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         }
     }
     const size_t off = reduced ? a - lo : 0;
+    r->n_sub += reduced != 0;
     for (size_t k = 0; k < r->n_pts; ++k)
         if (k < k0 || k >= k1)
             r->pts[k].st = 0; /* the free ends' points, not compressed (ends_free) */
