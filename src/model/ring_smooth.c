@@ -297,8 +297,8 @@ static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double
 }
 
 /* Newton on the nodes lo .. lo + n - 1 with the points pts[k0 .. k1), from w (its n entries,
- * overwritten with the answer); with want_factor, the factor of the final states left in r->A. The ring's
- * window and points are restored after. */
+ * overwritten with the answer); with want_factor, the factor of the final states left in r->A.
+ * The ring's window and points are restored after. */
 static int newton_window(tirenv_ring *r, size_t lo, size_t n, size_t k0, size_t k1, double w[],
                          int want_factor)
 {
@@ -400,7 +400,9 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
                       TIRENV_RING_NEWTON_OK &&
                   contact_span(r, k0, k1, w, 0, &kf, &kl) &&
                   sub_window(r, kf, kl, &a2, &b2, &k02, &k12);
-        if (reduced && a2 == a && b2 == b) {
+        if (!reduced)
+            break;
+        if (a2 == a && b2 == b) {
             reduced = ends_free(r, a, b, k0, k1, w);
             break;
         }

@@ -555,8 +555,9 @@ static void test_factor_reuse_is_exact(void **state)
  * window's condensed stiffness equals the points' force F_j at every window node, the free
  * ends included (where F_j = 0), to 1e-6 of the largest node force (measured: at most
  * 1.1e-7 of it, 6.7e-5 N; round-off of S's stencil entries near 1e11 N/m against w of
- * centimetres, where a wrong coupling would leave newtons). And its bits must not depend on what the ring evaluated before: a ring that
- * swept the cleat against a fresh one at each position. Over the bench's 0.30 x 0.10 m cleat,
+ * centimetres, where a wrong coupling would leave newtons). And its bits must not depend on
+ * what the ring evaluated before: a ring that swept the cleat against a fresh one at each
+ * position. Over the bench's 0.30 x 0.10 m cleat,
  * at positions and heights of its enveloping curve at 23.75 kN; most of them answered on a
  * sub-window (counted), so the test exercises it. */
 static void test_sub_window_is_whole_window(void **state)
