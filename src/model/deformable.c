@@ -29,6 +29,8 @@ typedef struct {
     double z_flat;               /* flat-ground centre height at G, m */
     double z_prev;               /* warm start: last equilibrium, m */
     int have_prev;
+    double x_prev, x_prev2, z_prev2; /* the last two positions (m) and the one before's z */
+    int have_prev2;
     size_t rigid_hint;           /* profile segment of the last position, for the bracket */
     /* The last flat-ground equilibrium: its load (N) and point, so that tirenv_model_set,
      * which solves it first, does not evaluate it again. */
@@ -324,7 +326,7 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
     st->prof = p;
     st->G = load;
     st->z_flat = z_flat;
-    st->have_prev = 0;
+    st->have_prev = st->have_prev2 = 0;
     /* tirenv_model_set has just solved the flat ground at this load: its point is z_flat. */
     tirenv_eq_point flat = st->flat_point;
     int status = TIRENV_OK;
@@ -357,6 +359,8 @@ static int deformable_set_load(void *state, double load, double *z_flat, tirenv_
         return status;
     if (st->have_prev)
         st->z_prev += p.z - st->z_flat;
+    if (st->have_prev2)
+        st->z_prev2 += p.z - st->z_flat;
     st->G = load;
     st->z_flat = *z_flat = p.z;
     st->flat_at = p;
@@ -368,9 +372,9 @@ static int deformable_set_load(void *state, double load, double *z_flat, tirenv_
  * deformable record's state_*). The rays' caches and the bracket's search hint change no bit
  * of a result. */
 typedef struct {
-    double G, z_flat, z_prev;
+    double G, z_flat, z_prev, x_prev, x_prev2, z_prev2;
     tirenv_eq_point flat_at;
-    int have_prev;
+    int have_prev, have_prev2;
 } deformable_saved;
 
 static size_t deformable_state_size(const void *state)
@@ -390,6 +394,10 @@ static void deformable_state_save(const void *state, unsigned char *buf)
     sv.z_prev = st->z_prev;
     sv.flat_at = st->flat_at;
     sv.have_prev = st->have_prev;
+    sv.x_prev = st->x_prev;
+    sv.x_prev2 = st->x_prev2;
+    sv.z_prev2 = st->z_prev2;
+    sv.have_prev2 = st->have_prev2;
     buf = tirenv_model__put(buf, &sv, sizeof sv);
     st->def->state_save(st->elem, buf);
     st->def->state_save(st->flat_elem, buf + st->def->state_size(st->elem));
@@ -400,7 +408,8 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
     deformable_state *st = state;
     deformable_saved sv;
     buf = tirenv_model__get(buf, &sv, sizeof sv);
-    if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1))
+    if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1) ||
+        (sv.have_prev2 != 0 && sv.have_prev2 != 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
                             st->type->name, sv.G, sv.z_flat);
@@ -409,6 +418,10 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
     st->z_prev = sv.z_prev;
     st->flat_at = sv.flat_at;
     st->have_prev = sv.have_prev;
+    st->x_prev = sv.x_prev;
+    st->x_prev2 = sv.x_prev2;
+    st->z_prev2 = sv.z_prev2;
+    st->have_prev2 = sv.have_prev2;
     st->def->state_restore(st->elem, buf);
     st->def->state_restore(st->flat_elem, buf + st->def->state_size(st->elem));
     return TIRENV_OK;
@@ -434,6 +447,21 @@ int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *o
     return st->def->forces(st->elem, st->prof, x, z, out, diag);
 }
 
+/* The warm start: for a model whose Newton converges slowly (the ring, whose dF_z/dz leaves
+ * out that the cuts at ground vertices move with z, so that every millimetre the start is off
+ * costs evaluations) the line through the last two equilibria; the solver clamps it to the
+ * bracket. */
+double tirenv_deformable_predict(int extrapolate, int have2, double x, double x1, double z1,
+                                 double x2, double z2)
+{
+    if (!(extrapolate && have2))
+        return z1;
+    const double t = (x - x1) / (x1 - x2);
+    if (!(t > 0 && t <= 2))
+        return z1;
+    return z1 + (z1 - z2) * t;
+}
+
 static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
 {
     deformable_state *st = state;
@@ -449,6 +477,8 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
                               .fz = st->flat_at.F, .contacts = st->flat_at.contacts};
         out->slope = tirenv_model__slope(out);
+        st->have_prev2 = 0; /* the next start: this height (the level may end there) */
+        st->x_prev = x;
         st->z_prev = out->z;
         st->have_prev = 1;
         return TIRENV_OK;
@@ -466,7 +496,10 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
-        .z0 = st->have_prev ? st->z_prev : z_hi - deflection,
+        .z0 = st->have_prev ? tirenv_deformable_predict(st->def->extrapolate, st->have_prev2, x,
+                                                       st->x_prev, st->z_prev, st->x_prev2,
+                                                       st->z_prev2)
+                            : z_hi - deflection,
         .dz_hint = deflection,
     };
     force_ctx fc = {st, st->prof, x};
@@ -477,6 +510,9 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     out->iterations = res.evals;
     if (status)
         return status;
+    st->have_prev2 = st->have_prev;
+    st->x_prev2 = st->x_prev, st->z_prev2 = st->z_prev;
+    st->x_prev = x;
     st->z_prev = res.point.z;
     st->have_prev = 1;
     tirenv_model__eq_point(&res.point, st->z_flat, out);

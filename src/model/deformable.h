@@ -47,6 +47,9 @@ struct tirenv_deformable {
     size_t (*state_size)(const void *elem);
     void (*state_save)(const void *elem, unsigned char *buf);
     void (*state_restore)(void *elem, const unsigned char *buf);
+    /* Nonzero: the warm start of a position is the line through the last two equilibria
+     * (deformable.c's predict), for a model whose Newton converges slowly; else the last. */
+    int extrapolate;
 };
 
 /* The functions of every deformable model's type record (deformable.c): the constant-load
@@ -57,6 +60,12 @@ extern const tirenv_model_ops tirenv_deformable_ops;
 int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
                                    double *z_hi);
 int tirenv_deformable_invariant(const tirenv_tire *tire);
+
+/* The warm start at x (m) from the last two equilibria (x1, z1) and (x2, z2) (m), the last
+ * first: z1, or with extrapolate (the model's record's) and have2 the line through both, where
+ * x continues their step in its direction at most twice as far. */
+double tirenv_deformable_predict(int extrapolate, int have2, double x, double x1, double z1,
+                                 double x2, double z2);
 
 /* The hub forces at (x, z) on the profile set of a state of tirenv_deformable_ops, for the
  * equilibrium over several tracks (tracks.c). */

@@ -98,7 +98,8 @@ tirenv_ring *tirenv_ring_alloc(double R0, const tirenv_ring_params *par)
                                &r->b,     &r->db,    &r->X,       &r->kappa,   &r->w,
                                &r->F,     &r->rhs,   &r->A.a0,    &r->A.a1,    &r->A.a2,
                                &r->A.bm[0], &r->A.bm[1], &r->pn_w, &r->pn_p,   &r->pn_t,
-                               &r->pn_g,  &r->g};
+                               &r->pn_g,  &r->g,     &r->B.a0,    &r->B.a1,    &r->B.a2,
+                               &r->B.bm[0], &r->B.bm[1]};
     const size_t n_arrays = sizeof arrays / sizeof arrays[0];
     r->theta = malloc((n_arrays + 1) * M * sizeof(double));
     r->state = calloc(3 * M, 1);
@@ -256,18 +257,6 @@ static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             r->kappa[j] = tirenv_ring__tread_kappa(r, r->theta[j], x);
 }
 
-/* The nodes from the vertical to the last whose ray may meet ground gap (m) below the centre
- * within reach (m): at least one, at most a quarter circle. */
-static size_t side_reach(const tirenv_ring *r, double gap, double reach)
-{
-    size_t m = r->M / 4;
-    if (gap >= reach)
-        return 1;
-    if (gap > 0)
-        m = (size_t)fmin((double)m, acos(gap / reach) / r->dth + 1);
-    return m;
-}
-
 /* The ground point (X, Z) within reach: the angle of its ray raises that side's bound. */
 static void raise_bound(double x, double z, double X, double Z, double ang[2])
 {
@@ -335,27 +324,25 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
     r->n = 0;
     r->n_pts = 0;
     const double reach = r->R0 + r->par.t_r;
-    /* Each side's rays meet the ground of its side only: a side whose ground lies gap below
-     * the centre is out of reach beyond acos(gap / reach) from the vertical, and its pieces
-     * there would only carry points without ground. */
-    const double gap_b = z - tirenv_profile_max_height(p, x - reach, x);
-    const double gap_f = z - tirenv_profile_max_height(p, x, x + reach);
-    if (fmin(gap_b, gap_f) >= reach)
-        return 0;
-    size_t m_b = side_reach(r, gap_b, reach), m_f = side_reach(r, gap_f, reach);
-    /* Tighter: the angles of the ground inside reach itself, two nodes beyond. Beyond them a
-     * piece could still carry a point within reach, on its line's extension past a vertex
-     * out of reach (not a cut): never touching (d < -t_r + R dtheta), it only widened the
-     * window by free nodes, so dropping it moves h by round-off (up to 3.4e-11 m over the
-     * data set's cases). */
+    /* The angles of the ground inside reach, two nodes beyond, at most a quarter circle each
+     * side: one walk over the ground. Beyond them a piece could still carry a point within
+     * reach, on its line's extension past a vertex out of reach (not a cut): never touching
+     * (d < -t_r + R dtheta), it only widened the window by free nodes, so dropping it moves h
+     * by round-off (up to 3.4e-11 m over the data set's cases). (The highest ground of each
+     * side, in two more walks, bounded them as well before; these bounds are never wider, up
+     * to the one node added here, whose pieces lie out of reach: the same window.) */
     double ang[2];
     ground_angles(p, x, z, reach, ang);
-    m_b = (size_t)fmin((double)m_b, ang[0] / r->dth + 2);
-    m_f = (size_t)fmin((double)m_f, ang[1] / r->dth + 2);
+    const size_t m_b = (size_t)fmin((double)(r->M / 4), ang[0] / r->dth + 2);
+    const size_t m_f = (size_t)fmin((double)(r->M / 4), ang[1] / r->dth + 2);
     const int status = tirenv_ring__sample(r, p, x, z, r->i0 - m_b, r->i0 + m_f);
     if (status)
         return status;
     size_t first = r->M, last = 0;
+    /* Without lugs every point's tread stiffness is the same: computed once, as each
+     * point's would be. */
+    const int lugs = r->par.lug_count > 0;
+    const double k_t = lugs ? 0 : tirenv_ring__tread_kappa(r, 0, x) / (r->R * r->dth);
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         if (!(q->d > -r->par.t_r)) {
@@ -364,10 +351,12 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
         }
         first = q->j < first ? q->j : first;
         last = q->j + 1 > last ? q->j + 1 : last;
-        q->k_t = tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth);
+        q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
     }
-    if (first > last)
+    if (first > last) {
+        r->n_pts = 0; /* no ground within reach */
         return 0;
+    }
     while (last - first + 1 < RING_MIN_WINDOW) {
         --first;
         if (last - first + 1 < RING_MIN_WINDOW)

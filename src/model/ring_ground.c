@@ -129,7 +129,8 @@ static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, c
         q->phi = k->phi;
         q->omega = omega;
         q->j = j;
-        q->s = fmin(1, fmax(0, (k->phi - th) / r->dth));
+        const double s = (k->phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
+        q->s = s > 0 ? (s < 1 ? s : 1) : 0;
         if (k == ends[1] && b->phi == r->theta[j + 1])
             q->s = 1;
         if (k == ends[0] && a->phi == th)

@@ -126,6 +126,8 @@ struct tirenv_ring {
     size_t lo, n;          /* the window: nodes lo .. lo + n - 1 (n = 0: no ground in reach) */
     size_t warm_lo, warm_n;
     tirenv_ring_band A;    /* the window's contact system and its factor */
+    tirenv_ring_band B;    /* the continuous contact's free ends of the window (ring_smooth.c):
+                            * the belt there given the nodes that can touch */
     double *rhs;           /* right-hand side, then solution, of the window system */
     double patch;          /* contact length of the last evaluation, m */
     double tread_max;      /* largest tread compression of the last evaluation, m */
@@ -145,6 +147,8 @@ struct tirenv_ring {
     size_t n_key, cap_key, key_lo, key_n;
     int key_valid;
     size_t n_factor;       /* the Winkler tread's factorisations so far (the tests count them) */
+    size_t n_sub;          /* its evaluations answered on the sub-window of their contact
+                            * (ring_smooth.c; the tests count them) */
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
 };
 

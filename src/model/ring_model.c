@@ -135,6 +135,7 @@ static const tirenv_deformable ring_deformable = {
     .state_size = ring_state_size,
     .state_save = ring_state_save,
     .state_restore = ring_state_restore,
+    .extrapolate = 1,
 };
 
 /* What tirenv fit identifies on rig data (docs/models.md section 8.4): the carcass's

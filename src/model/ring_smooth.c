@@ -222,33 +222,226 @@ static size_t set_states(tirenv_ring *r, const double w[])
     return changed;
 }
 
+/* The nodes that can touch. Of the window (every node whose interval holds ground within
+ * R0 + t_r), often half never touches: where the ground lies within reach but the belt, pressed
+ * in by the patch beside it, stays clear of it (the ring's patch is shorter than the chord of
+ * its free circle). The contact is solved on the sub-window of the nodes in contact, REDUCE_PAD
+ * more on each side, its ends moved out to multiples of REDUCE_QUANT node indices (so that it
+ * stays the same while the patch moves a little, and few window lengths, whose end
+ * corrections ring_belt.c keeps, occur); the free nodes outside condense out exactly. The
+ * belt on the window's free ends is then solved given the sub-window's, and if no point there
+ * is compressed, that is the minimum of E over the whole window (its gradient vanishes at
+ * every node: the free ends' points carry no force). The sub-window is first that of the
+ * points the last evaluation's belt (zero outside its window) leaves compressed; when the
+ * contact found on it asks for another, it is solved again there (Newton from the answer: one
+ * step if the states stay), and if a point of the free ends is compressed, on the whole window
+ * first. So the answer is always the sub-window's of its own contact, solved with its final
+ * states: the same bits whatever the evaluations before (as the whole window's were). The
+ * constants choose only which systems are solved, not the answer: the sub-window's and the
+ * whole window's minimum agree to round-off. */
+enum { REDUCE_PAD = 2, REDUCE_QUANT = 8, REDUCE_MIN_FREE = 16, REDUCE_TRIES = 3 };
+
+/* The warm start of node j: the last evaluation's belt over its window, zero elsewhere. */
+static double warm_w(const tirenv_ring *r, size_t j)
+{
+    return j >= r->warm_lo && j < r->warm_lo + r->warm_n ? r->w[j] : 0;
+}
+
+/* The sub-window a .. b of the window r->lo, r->n for the points pts[kf .. kl] (the first and
+ * the last in contact), and the points pts[k0 .. k1) of its intervals; 0 where it would not
+ * leave at least two free nodes at each end and REDUCE_MIN_FREE in all. */
+static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, size_t *a, size_t *b,
+                      size_t *k0, size_t *k1)
+{
+    const size_t lo = r->lo, hi = r->lo + r->n - 1, Q = REDUCE_QUANT;
+    const tirenv_ring_point *const pts = r->pts;
+    const size_t j1 = pts[kf].j, j2 = pts[kl].j + 1;
+    if (j1 < lo + 2 + REDUCE_PAD || j2 + 2 + REDUCE_PAD > hi)
+        return 0;
+    size_t first = (j1 - REDUCE_PAD) / Q * Q, last = (j2 + REDUCE_PAD) / Q * Q + Q - 1;
+    first = first >= lo + 2 ? first : lo + 2;
+    last = last + 2 <= hi ? last : hi - 2;
+    if ((first - lo) + (hi - last) < REDUCE_MIN_FREE)
+        return 0;
+    *a = first;
+    *b = last;
+    size_t k = kf;
+    while (k > 0 && pts[k - 1].j >= first)
+        --k;
+    *k0 = k;
+    k = kl + 1;
+    while (k < r->n_pts && pts[k].j < last)
+        ++k;
+    *k1 = k;
+    return 1;
+}
+
+/* The first and the last point of pts[k0 .. k1) in contact, by their states (warm: by the
+ * compression the window's w of n entries leaves them); 0 if none. */
+static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double w[], int warm,
+                        size_t *kf, size_t *kl)
+{
+    const tirenv_ring_point *const pts = r->pts;
+    size_t k = k0;
+    for (; k < k1; ++k)
+        if (warm ? pts[k].d != -INFINITY && compression(r, &pts[k], w) > 0 : pts[k].st != 0)
+            break;
+    if (k == k1)
+        return 0;
+    *kf = k;
+    for (k = k1; k-- > *kf;)
+        if (warm ? pts[k].d != -INFINITY && compression(r, &pts[k], w) > 0 : pts[k].st != 0)
+            break;
+    *kl = k;
+    return 1;
+}
+
+/* Newton on the nodes lo .. lo + n - 1 with the points pts[k0 .. k1), from w (its n entries,
+ * overwritten with the answer); with want_factor, the factor of the final states left in r->A.
+ * The ring's window and points are restored after. */
+static int newton_window(tirenv_ring *r, size_t lo, size_t n, size_t k0, size_t k1, double w[],
+                         int want_factor)
+{
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, lo0 = r->lo, n0 = r->n;
+    r->lo = lo;
+    r->n = n;
+    r->pts = pts + k0;
+    r->n_pts = k1 - k0;
+    const double(*q4)[4] = tirenv_ring__belt_end(r->belt, n);
+    const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, apply_cb,
+                                   points_energy, r->rhs};
+    int factored;
+    int st = tirenv_ring__newton(r, &nw, w, r->pn_p, r->pn_t, r->pn_g, &factored);
+    /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
+     * change with it: the same matrix). */
+    if (st == TIRENV_RING_NEWTON_OK && want_factor && !factored && factor_cb(r, q4, r->pn_t))
+        st = TIRENV_RING_NEWTON_BREAKDOWN;
+    r->pts = pts;
+    r->n_pts = n_pts;
+    r->lo = lo0;
+    r->n = n0;
+    return st;
+}
+
+/* The belt on the window's free ends, w[0 .. a - lo) and w[b - lo + 1 .. n), given it on a ..
+ * b: the window's condensed stiffness S on the ends' nodes (two runs, coupled only through S's
+ * end correction: the band system's corner) against S's coupling to a .. b. 1 if no point of
+ * the ends' intervals (pts[0 .. k0), pts[k1 ..)) is then compressed. */
+static int ends_free(tirenv_ring *r, size_t a, size_t b, size_t k0, size_t k1, double w[])
+{
+    const size_t lo = r->lo, n = r->n, nl = a - lo, nr = lo + n - 1 - b, nf = nl + nr;
+    const double *s = tirenv_ring__belt_stencil(r->belt);
+    const double(*q4)[4] = tirenv_ring__belt_end(r->belt, n);
+    tirenv_ring_band *B = &r->B;
+    double *x = r->rhs;
+    B->n = nf;
+    for (size_t f = 0; f < nf; ++f) {
+        B->a0[f] = s[0];
+        B->a1[f] = s[1];
+        B->a2[f] = s[2];
+        x[f] = 0;
+    }
+    /* No band entry across the two runs or past the end. */
+    B->a1[nl - 1] = B->a2[nl - 2] = B->a2[nl - 1] = 0;
+    B->a1[nf - 1] = B->a2[nf - 2] = B->a2[nf - 1] = 0;
+    /* The coupling to the nodes a .. b, known: the two nodes on each side of them. */
+    const size_t ia = a - lo, ib = b - lo;
+    x[nl - 2] = -s[2] * w[ia];
+    x[nl - 1] = -s[1] * w[ia] - s[2] * w[ia + 1];
+    x[nl] = -s[1] * w[ib] - s[2] * w[ib - 1];
+    x[nl + 1] = -s[2] * w[ib];
+    B->a0[0] -= q4[0][0];
+    B->a1[0] -= q4[0][1];
+    B->a0[1] -= q4[1][1];
+    B->a0[nf - 2] -= q4[2][2];
+    B->a1[nf - 2] -= q4[2][3];
+    B->a0[nf - 1] -= q4[3][3];
+    for (size_t i = 0; i < 2; ++i)
+        for (size_t k = 0; k < 2; ++k)
+            B->c[i][k] = -q4[i][2 + k];
+    if (tirenv_ring__band_factor(B))
+        return 0;
+    tirenv_ring__band_solve(B, x);
+    for (size_t f = 0; f < nf; ++f)
+        w[f < nl ? f : f - nl + (b - lo) + 1] = x[f];
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        if (k == k0)
+            k = k1;
+        if (k >= r->n_pts)
+            break;
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->d != -INFINITY && compression(r, q, w) > 0)
+            return 0;
+    }
+    return 1;
+}
+
 int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *dfz_dz,
                               tirenv_diag *diag)
 {
     const size_t n = r->n, lo = r->lo;
-    const double(*q4)[4] = tirenv_ring__belt_end(r->belt, n);
     const double t_r = r->par.t_r, R = r->R;
-    double *w = r->pn_w, *wn = r->pn_p, *wt = r->pn_t, *g = r->pn_g;
+    double *w = r->pn_w, *wt = r->pn_t;
     /* From the last evaluation's belt where this window overlaps its window (zero
      * elsewhere): the states there are usually this one's, and the solution does not depend
-     * on the start (the minimum of a strictly convex E). */
-    for (size_t i = 0; i < n; ++i) {
-        const size_t j = lo + i;
-        w[i] = j >= r->warm_lo && j < r->warm_lo + r->warm_n ? r->w[j] : 0;
+     * on the start (the minimum of a strictly convex E). On the sub-window of the contact
+     * (sub_window) where there is one; else, or where the free ends would be compressed, on
+     * the whole window, and then on the sub-window of its contact. */
+    const int want = dfz_dz != NULL;
+    for (size_t i = 0; i < n; ++i)
+        w[i] = warm_w(r, lo + i);
+    size_t a = 0, b = 0, k0 = 0, k1 = r->n_pts, kf, kl, a2, b2, k02, k12;
+    int reduced = contact_span(r, 0, r->n_pts, w, 1, &kf, &kl) &&
+                  sub_window(r, kf, kl, &a, &b, &k0, &k1);
+    for (size_t t = 0; reduced; ++t) {
+        reduced = t < REDUCE_TRIES &&
+                  newton_window(r, a, b - a + 1, k0, k1, w + (a - lo), want) ==
+                      TIRENV_RING_NEWTON_OK &&
+                  contact_span(r, k0, k1, w, 0, &kf, &kl) &&
+                  sub_window(r, kf, kl, &a2, &b2, &k02, &k12);
+        if (!reduced)
+            break;
+        if (a2 == a && b2 == b) {
+            reduced = ends_free(r, a, b, k0, k1, w);
+            break;
+        }
+        a = a2, b = b2, k0 = k02, k1 = k12;
     }
-    const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, apply_cb,
-                                   points_energy, r->rhs};
-    int factored;
-    const int st = tirenv_ring__newton(r, &nw, w, wn, wt, g, &factored);
-    if (st != TIRENV_RING_NEWTON_OK)
-        return tirenv_ring__newton_error(r, st, n, "contact", "continuous tread", diag);
-    /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not
-     * change with it: the same matrix). */
-    if (dfz_dz && !factored) {
-        if (factor_cb(r, q4, wt))
-            return tirenv_ring__newton_error(r, TIRENV_RING_NEWTON_BREAKDOWN, n, "contact",
-                                             "continuous tread", diag);
+    if (!reduced) {
+        const int st = newton_window(r, lo, n, 0, r->n_pts, w, want);
+        if (st != TIRENV_RING_NEWTON_OK)
+            return tirenv_ring__newton_error(r, st, n, "contact", "continuous tread", diag);
+        /* The same answer as the sub-window's of this contact, if it has one: solved there
+         * (one Newton step, the states kept), else the whole window's. */
+        k0 = 0;
+        k1 = r->n_pts;
+        reduced = contact_span(r, 0, r->n_pts, w, 0, &kf, &kl) &&
+                  sub_window(r, kf, kl, &a, &b, &k0, &k1);
+        if (reduced) {
+            for (size_t k = 0; k < r->n_pts; ++k)
+                if (k < k0 || k >= k1)
+                    r->pts[k].st = 0; /* outside: free, as the whole window's answer has them */
+            const int st2 = newton_window(r, a, b - a + 1, k0, k1, w + (a - lo), want);
+            if (st2 != TIRENV_RING_NEWTON_OK)
+                return tirenv_ring__newton_error(r, st2, b - a + 1, "contact",
+                                                 "continuous tread", diag);
+            reduced = ends_free(r, a, b, k0, k1, w);
+        }
+        if (!reduced) { /* round-off at the sub-window's ends: the whole window's, again */
+            k0 = 0;
+            k1 = r->n_pts;
+            const int st3 = newton_window(r, lo, n, 0, r->n_pts, w, want);
+            if (st3 != TIRENV_RING_NEWTON_OK)
+                return tirenv_ring__newton_error(r, st3, n, "contact", "continuous tread",
+                                                 diag);
+        }
     }
+    const size_t off = reduced ? a - lo : 0;
+    r->n_sub += reduced != 0;
+    for (size_t k = 0; k < r->n_pts; ++k)
+        if (k < k0 || k >= k1)
+            r->pts[k].st = 0; /* the free ends' points, not compressed (ends_free) */
     double sum_c = 0, sum_s = 0;
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->w[j] = 0;
@@ -287,7 +480,7 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
     *fz = sum_c;
     *fx = -sum_s;
     if (dfz_dz) {
-        tirenv_ring__band_solve(&r->A, wt);
+        tirenv_ring__band_solve(&r->A, wt + off);
         double dF = 0;
         for (size_t k = 0; k < r->n_pts; ++k) {
             const tirenv_ring_point *q = &r->pts[k];

@@ -36,6 +36,8 @@ struct tirenv_model__tracks {
     tirenv_eq_solver *solver;     /* the equilibrium's, of the tire's method */
     double z_prev;                /* warm start: last equilibrium, m */
     int have_prev;
+    double x_prev, x_prev2, z_prev2; /* the last two positions (m) and the one before's z */
+    int have_prev2;
 };
 
 static const char *const rule_names[] = {"mean", "highest", "equilibrium"};
@@ -242,7 +244,7 @@ int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *con
     struct tirenv_model__tracks *t = m->tracks;
     t->n_given = n;
     t->n = distinct(n, profiles, weights, t->map, t->prof, t->w);
-    t->have_prev = 0;
+    t->have_prev = t->have_prev2 = 0;
     if (t->n == 1)  /* one track: the ordinary path, bit for bit */
         return tirenv_model_set(m, t->prof[0], load, diag);
     for (size_t k = 0; k < t->n; ++k)
@@ -326,7 +328,7 @@ int tirenv_model__tracks_set_load(tirenv_model *m, double load, tirenv_diag *dia
         m->profile = NULL;
         return status;
     }
-    t->have_prev = 0;
+    t->have_prev = t->have_prev2 = 0;
     tracks_took(m, load, flat.z_flat);
     return TIRENV_OK;
 }
@@ -383,7 +385,10 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
-        .z0 = t->have_prev ? t->z_prev : z_hi - deflection,
+        .z0 = t->have_prev ? tirenv_deformable_predict(m->type->deformable->extrapolate,
+                                                       t->have_prev2, x, t->x_prev, t->z_prev,
+                                                       t->x_prev2, t->z_prev2)
+                           : z_hi - deflection,
         .dz_hint = deflection,
     };
     sum_ctx c = {m, x};
@@ -394,6 +399,9 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     out->iterations = res.evals;
     if (status)
         return status;
+    t->have_prev2 = t->have_prev;
+    t->x_prev2 = t->x_prev, t->z_prev2 = t->z_prev;
+    t->x_prev = x;
     t->z_prev = res.point.z;
     t->have_prev = 1;
     tirenv_model__eq_point(&res.point, m->z_flat, out);

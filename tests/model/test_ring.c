@@ -549,6 +549,59 @@ static void test_factor_reuse_is_exact(void **state)
     tirenv_profile_free(p);
 }
 
+/* The continuous Winkler tread is solved on the sub-window of the nodes in contact
+ * (src/model/ring_smooth.c, docs/models.md section 5.2), its free ends condensed out. Its
+ * answer must be the minimum over the whole window: the belt force (S w)_j of the whole
+ * window's condensed stiffness equals the points' force F_j at every window node, the free
+ * ends included (where F_j = 0), to 1e-6 of the largest node force (measured: at most
+ * 1.1e-7 of it, 6.7e-5 N; round-off of S's stencil entries near 1e11 N/m against w of
+ * centimetres, where a wrong coupling would leave newtons). And its bits must not depend on
+ * what the ring evaluated before: a ring that swept the cleat against a fresh one at each
+ * position. Over the bench's 0.30 x 0.10 m cleat,
+ * at positions and heights of its enveloping curve at 23.75 kN; most of them answered on a
+ * sub-window (counted), so the test exercises it. */
+static void test_sub_window_is_whole_window(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    tirenv_ring *warm = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(warm);
+    static const double xz[][2] = {{-0.55, 0.606993869}, {-0.45, 0.620697607},
+                                   {-0.3, 0.644308509},  {-0.2, 0.677465111},
+                                   {-0.1, 0.696149734},  {0.0, 0.703005945},
+                                   {0.1, 0.696149734},   {0.25, 0.662826672}};
+    const size_t n_xz = sizeof xz / sizeof xz[0];
+    for (size_t k = 0; k < n_xz; ++k) {
+        tirenv_ring *cold = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(cold);
+        double fx1, fz1, d1, fx2, fz2, d2;
+        assert_int_equal(tirenv_ring_forces(warm, p, xz[k][0], xz[k][1], &fx1, &fz1, &d1, NULL,
+                                            NULL), 0);
+        assert_int_equal(tirenv_ring_forces(cold, p, xz[k][0], xz[k][1], &fx2, &fz2, &d2, NULL,
+                                            NULL), 0);
+        assert_true(fz1 > 1000);
+        assert_bits_equal(fz1, fz2);
+        assert_bits_equal(fx1, fx2);
+        assert_bits_equal(d1, d2);
+        const double(*q4)[4] = tirenv_ring__belt_end(warm->belt, warm->n);
+        double res = 0, f_max = 0;
+        for (size_t i = 0; i < warm->n; ++i) {
+            const double F = warm->F[warm->lo + i];
+            res = fmax(res, fabs(tirenv_ring__belt_force(warm, q4, warm->w + warm->lo, i) - F));
+            f_max = fmax(f_max, fabs(F));
+        }
+        print_message("x = %+.2f m: %zu window nodes, largest |S w - F| %.3g N of %.3g N\n",
+                      xz[k][0], warm->n, res, f_max);
+        assert_true(res <= 1e-6 * f_max);
+        tirenv_ring_free(cold);
+    }
+    print_message("answered on a sub-window: %zu of %zu\n", warm->n_sub, n_xz);
+    assert_true(warm->n_sub >= n_xz - 2);
+    tirenv_ring_free(warm);
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -558,6 +611,7 @@ int main(void)
         cmocka_unit_test(test_reduces_to_springs),
         cmocka_unit_test(test_contact_law),
         cmocka_unit_test(test_window_matches_compliance),
+        cmocka_unit_test(test_sub_window_is_whole_window),
         cmocka_unit_test(test_blade_lifts_the_hub),
         cmocka_unit_test(test_symmetry_and_derivative),
         cmocka_unit_test(test_lugs_roll_with_the_tread),

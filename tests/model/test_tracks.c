@@ -110,10 +110,14 @@ static double eq_F_tol(const tirenv_tire *t) { return fmax(t->eq.eps_F, 4e5 * t-
 
 /* Separate profiles with the same vertices are separate tracks: the combination agrees with
  * one track to round-off. Measured over this cleat at 0.75 mm steps with 2 to 5 copies: h
- * within 1.7e-15 m (the ring; springs 1.1e-16, cam 1.4e-17, rigid and point exact), the
- * slope within 8.6e-14 (7.0e-12 for the ring at its converged 2880 nodes, whose F_x sums
- * forces of a belt with stencil entries near 1e11 N/m); two and four copies give h bit for
- * bit (weights that are powers of two sum exactly). Checked here with margins: 1e-13 m,
+ * within 1.7e-15 m (springs 1.1e-16, cam 1.4e-17, rigid and point exact), the slope within
+ * 8.6e-14 (7.0e-12 for the ring at its converged 2880 nodes, whose F_x sums forces of a belt
+ * with stencil entries near 1e11 N/m); two and four copies give h bit for bit (weights that
+ * are powers of two sum exactly). The ring starts each position's Newton from the line
+ * through the last two equilibria (src/model/deformable.c), and one track has skipped the
+ * level ground before the cleat where three tracks solved it: their starts differ by the
+ * solver's tolerance, and so, by a little, do their answers (h within 1.04e-13 m of three
+ * copies; both stop within eps_z = 1e-10 m of the root). Checked here with margins: 1e-12 m,
  * 3e-11. */
 static void test_equal_copies(void **state)
 {
@@ -136,7 +140,7 @@ static void test_equal_copies(void **state)
         const int eq = tirenv_model_type_tracks(*t) == TIRENV_TRACKS_EQUILIBRIUM;
         for (size_t k = 0; k < N_POS; ++k) {
             assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
-            assert_near(got[k].h, ref[k].h, 1e-13, 0);
+            assert_near(got[k].h, ref[k].h, 1e-12, 0);
             assert_near(got[k].slope, ref[k].slope, 3e-11, 0);
             assert_near(got[k].fz, ref[k].fz, eq ? eq_F_tol(&tire) : 1e-9, 0);
         }
