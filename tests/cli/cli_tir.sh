@@ -41,7 +41,11 @@ done
 run "$bin" flat --csv --model cam --load 30000 --tire "$samples/tir/tractor_430_50R38.tir"
 check "cam at FNOMIN 30 kN: the file's VERTICAL_STIFFNESS 1e6 N/m, deflection 0.03 m" \
     '[ $rc -eq 0 ] && awk -F, "NR == 2 { exit !(\$3 == 0.03 && \$5 == 1000000) }" out'
-for name in 335_65R22_5_G275MSA_60psi HMMWV_Pac02Tire mf_185_80R14; do
+# The refusal is one code path for every file without the cam's shape keys, and each command
+# derives the file's ring and springs model first (2.7 and 1.8 s of CPU for the 335/65R22.5
+# and the HMMWV, 0.5 s for the 185/80R14): shown on the cheapest. The other two files' cam
+# contact laws are derived and compared above (flat) and in tests/study/test_onetire.c.
+for name in mf_185_80R14; do
     run "$bin" flat --model cam --tire "$samples/tir/$name.tir"
     check "$name.tir has no cam shape keys (its Q_RA1, Q_RA2 derived): --model cam exits 2 naming them" \
         '[ $rc -eq 2 ] && grep -q "cam keys ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER " err'
