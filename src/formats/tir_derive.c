@@ -302,7 +302,7 @@ static int growth_miss(const tirenv_tire *t, double fnomin, const flat_set *ring
  * raised until the two grow alike: the root of growth_miss in tau, bracketed by doubling from
  * TAU_FIRST up to TAU_MAX and narrowed by the Illinois method to E_TOL (half a per cent at
  * each end), at most MAX_EVALS trials, each a ring derivation and a springs identification
- * (about a second of CPU). TAU_MAX keeps the belt far from buckling on its foundation (the
+ * (about 0.4 s of CPU). TAU_MAX keeps the belt far from buckling on its foundation (the
  * check of section 5.1 refuses tau near 1); where even it leaves the springs model slower,
  * it is taken. A file whose springs model already grows as fast keeps tau = 0: the default's
  * shape and the values derived before. */
