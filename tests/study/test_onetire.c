@@ -183,8 +183,9 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
  * within 5 % in contact length. The cam's deflection is the file's own vertical law
  * (VERTICAL_STIFFNESS without Q_FZ2: linear), which the derived ring, stiffening with the
  * load, does not follow to 5 % at both ends of the range: the difference is the one
- * tirenv_tir_derive measures and says (origin), bounded here at 8.5 % (the largest measured
- * is 8.1 %, mf_185_80R14.tir). A file's own Q_RA1, Q_RA2 are kept and their difference from
+ * tirenv_tir_derive measures and says (origin), bounded here per file at half a per cent
+ * above what was measured (6.7, 6.0, 8.1, 5.1 and 7.5 %; docs/models.md 14.2 has why neither
+ * fitting the ring over the range nor a stiffer belt brings it within 5 %). A file's own Q_RA1, Q_RA2 are kept and their difference from
  * the ring said (over 25 % on both files that have them). Figures: docs/models.md 14.2. */
 static void test_derived_pairs(void **state)
 {
@@ -203,7 +204,8 @@ static void test_derived_pairs(void **state)
         /* What the derivation said is what the models do. */
         assert_near(o.cam_ring_deflection, e[1].defl, 1e-12, 0);
         assert_near(o.cam_ring_contact_length, e[1].l, 1e-12, 0);
-        assert_true(e[1].defl <= 0.085);
+        static const double cam_defl_max[N_MF] = {0.072, 0.065, 0.086, 0.056, 0.080};
+        assert_true(e[1].defl <= cam_defl_max[f]);
         if (f < N_MF - N_OWN_CAM) {
             assert_int_equal(o.derived & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
             assert_non_null(strstr(o.note, "derived on the ring Q_RA1"));
