@@ -58,6 +58,14 @@ typedef enum { TIRENV_TIR_REAL, TIRENV_TIR_COUNT, TIRENV_TIR_NAME } tirenv_tir_k
 const char *tirenv_tir_key(size_t i, const char **section);
 int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
                    tirenv_tir_kind *kind, tirenv_diag *diag);
+static const unsigned int TIRENV_TIR_SPRINGS;
+static const unsigned int TIRENV_TIR_RING;
+static const unsigned int TIRENV_TIR_CAM;
+typedef struct { double fnomin; double rho_nominal; unsigned own; unsigned derived;
+                 double pretension_ratio; double cam_ring_deflection;
+                 double cam_ring_contact_length; char note[1024]; ...; } tirenv_tir_origin;
+int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
+                      tirenv_tir_origin *origin, tirenv_diag *diag);
 
 /* version.h: the headers' version, the project's */
 #define TIRENV_VERSION_MAJOR ...

@@ -47,7 +47,8 @@ int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n
 /* The models of a tire file that tirenv_tir_derive may derive (docs/models.md section 14). */
 enum {
     TIRENV_TIR_SPRINGS = 1u << 0, /* [ENVELOPING_SPRINGS]: c_r and c_b */
-    TIRENV_TIR_RING = 1u << 1     /* [ENVELOPING_RING]: t_r, EI, T, k_f, k_t */
+    TIRENV_TIR_RING = 1u << 1,    /* [ENVELOPING_RING]: t_r, EI, T, k_f, k_t */
+    TIRENV_TIR_CAM = 1u << 2      /* [CONTACT_PATCH] Q_RA1 and Q_RA2: the cam's patch */
 };
 
 /* What a tire file says of its own tire besides tirenv's keys, and what tirenv_tir_derive
@@ -57,6 +58,9 @@ typedef struct {
     double rho_nominal;    /* the file's deflection at FNOMIN and INFLPRES, m; 0 if unknown */
     unsigned own;          /* TIRENV_TIR_* of the enveloping sections the file has */
     unsigned derived;      /* TIRENV_TIR_* of the models derived from its MF-Tyre keys */
+    double pretension_ratio; /* the derived ring's added BELT_PRETENSION over k_f*R^2, - */
+    double cam_ring_deflection;     /* largest |cam - ring|/ring at 0.5 to 1.5 FNOMIN, */
+    double cam_ring_contact_length; /* deflection and contact length; NAN if not compared */
     char note[1024];       /* which values were derived from which keys, or why a model
                             * could not be; "" when the file has every section */
 } tirenv_tir_origin;

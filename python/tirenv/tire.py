@@ -3,6 +3,7 @@
 read back as a mapping."""
 import collections
 import collections.abc
+import warnings
 
 from ._c import ffi, lib, check, new_diag, path_bytes
 
@@ -38,12 +39,46 @@ class Tire(collections.abc.Mapping):
         self._t = ffi.new("tirenv_tire *")
         self._t[0] = lib.tirenv_tire_default()
         diag = new_diag()
+        self._origin = ffi.new("tirenv_tir_origin *")
         if path is not None:
             check(lib.tirenv_tir_read(path_bytes(path), self._t, diag), diag)
+            # The models the file has no section for, derived from its MF-Tyre keys as every
+            # CLI command does (tirenv_tir_derive, docs/models.md section 14.2): the same C
+            # function, so the same tire; what it derived is said as the CLI says it on
+            # standard error, as a warning.
+            check(lib.tirenv_tir_derive(path_bytes(path), self._t, 0, self._origin, diag),
+                  diag)
+            if self._origin.note[0] != b"\0":
+                warnings.warn(f"{path}: {self.derived_note}", stacklevel=2)
         for key, value in (set or {}).items():
             check(lib.tirenv_tir_set(self._t, _assignment(key, value), diag), diag)
         check(lib.tirenv_tire_check(self._t, diag), diag)
         self.path = path
+
+    @property
+    def derived_note(self):
+        """Which values were derived from the file's MF-Tyre keys (the CLI's standard-error
+        note), or "" when the file has every section or the tire is the default."""
+        return ffi.string(self._origin.note).decode()
+
+    @property
+    def derived(self):
+        """The models derived from the file's MF-Tyre keys: a subset of {"springs", "ring",
+        "cam"} (the cam's contact-length law Q_RA1, Q_RA2)."""
+        bits = self._origin.derived
+        return frozenset(name for name, bit in (("springs", lib.TIRENV_TIR_SPRINGS),
+                                                ("ring", lib.TIRENV_TIR_RING),
+                                                ("cam", lib.TIRENV_TIR_CAM)) if bits & bit)
+
+    def _require(self, bits):
+        """Refuses, naming the missing key, a model that neither the file nor its MF-Tyre
+        keys describe (as the CLI refuses it for a command that uses the model)."""
+        if self.path is None or not bits & ~(self._origin.own | self._origin.derived):
+            return
+        t, origin, diag = ffi.new("tirenv_tire *"), ffi.new("tirenv_tir_origin *"), new_diag()
+        t[0] = lib.tirenv_tire_default()
+        check(lib.tirenv_tir_read(path_bytes(self.path), t, diag), diag)
+        check(lib.tirenv_tir_derive(path_bytes(self.path), t, bits, origin, diag), diag)
 
     @property
     def R0(self):

@@ -26,16 +26,24 @@ static void set_bracket(tirenv_core__brent *s, const double c)
 int tirenv_core__brent_set(tirenv_core__brent *s, const tirenv_core__brent_fn f, void *params,
                            const double lo, const double hi)
 {
+    const double f_lo = f(lo, params);
+    if (!isfinite(f_lo)) {
+        s->f = f, s->params = params, s->root = 0.5 * (lo + hi), s->lo = lo, s->hi = hi;
+        return TIRENV_CORE__BRENT_NOT_FINITE;
+    }
+    return tirenv_core__brent_set_values(s, f, params, lo, f_lo, hi, f(hi, params));
+}
+
+int tirenv_core__brent_set_values(tirenv_core__brent *s, const tirenv_core__brent_fn f,
+                                  void *params, const double lo, const double f_lo,
+                                  const double hi, const double f_hi)
+{
     s->f = f;
     s->params = params;
     s->root = 0.5 * (lo + hi);
     s->lo = lo;
     s->hi = hi;
-    const double f_lo = f(lo, params);
-    if (!isfinite(f_lo))
-        return TIRENV_CORE__BRENT_NOT_FINITE;
-    const double f_hi = f(hi, params);
-    if (!isfinite(f_hi))
+    if (!isfinite(f_lo) || !isfinite(f_hi))
         return TIRENV_CORE__BRENT_NOT_FINITE;
     s->a = lo;
     s->fa = f_lo;

@@ -26,6 +26,10 @@ enum {
 /* Evaluates f at lo and at hi (lo < hi) and starts from them; root = hi's side per Brent. */
 int tirenv_core__brent_set(tirenv_core__brent *s, tirenv_core__brent_fn f, void *params,
                            double lo, double hi);
+/* As _set, from values f_lo = f(lo) and f_hi = f(hi) the caller has already evaluated (no
+ * evaluation here): the same start, bit for bit. */
+int tirenv_core__brent_set_values(tirenv_core__brent *s, tirenv_core__brent_fn f, void *params,
+                                  double lo, double f_lo, double hi, double f_hi);
 /* One step: one evaluation of f (none when the root is already exact or within round-off of
  * b). Updates root, lo and hi. */
 int tirenv_core__brent_iterate(tirenv_core__brent *s);

@@ -51,6 +51,31 @@ double tirenv_cam_vertical_root(double scale, double q1, double q2, double g)
     return scale * 2 * g / (q1 + sqrt(disc));
 }
 
+/* The rows (w*s^2, w*s) with w = 2*R0/l_i make both terms relative to the contact length; the
+ * normal equations [A11 A12; A12 A22] (Q_RA2, Q_RA1) = (b1, b2) are solved by Cramer's rule,
+ * refused where the determinant is within 1e-12 of A11*A22 of zero. */
+int tirenv_cam_fit_contact_law(double R0, size_t n, const double rho[], const double l[],
+                               double *q_ra1, double *q_ra2)
+{
+    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double s = sqrt(rho[i] / R0), w = 2 * R0 / l[i];
+        const double u = w * s * s, v = w * s;  /* the rows for Q_RA2 and Q_RA1 */
+        A11 += u * u;
+        A12 += u * v;
+        A22 += v * v;
+        b1 += u;
+        b2 += v;
+    }
+    const double det = A11 * A22 - A12 * A12;
+    const double p = (A22 * b1 - A12 * b2) / det, q = (A11 * b2 - A12 * b1) / det;
+    if (n < 2 || !(fabs(det) > 1e-12 * A11 * A22) || !isfinite(p) || !isfinite(q))
+        return TIRENV_EINVAL;
+    *q_ra2 = p;
+    *q_ra1 = q;
+    return TIRENV_OK;
+}
+
 static double cam_q_fz1(const tirenv_tire *t)
 {
     return tirenv_cam_q_fz1(t->cam.c_z, t->springs.R0, t->cam.fnomin, t->cam.q_fz2);

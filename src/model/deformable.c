@@ -233,18 +233,27 @@ static int z_for_contact_length(const deformable_state *st, double l_c, double z
                                 double *z, tirenv_diag *diag)
 {
     patch_ctx ctx = {st, l_c, 0, diag};
+    /* Each end of the bracket evaluated once: f(lo) decides the bracket and starts Brent. */
     double hi = st->tire.springs.R0, lo = fmax(z_lo, 0.5 * hi);
-    if (lo > z_lo && patch_minus_target(lo, &ctx) < 0 && !ctx.status) {
+    double f_lo = patch_minus_target(lo, &ctx), f_hi = 0;
+    int have_hi = 0;
+    if (lo > z_lo && f_lo < 0 && !ctx.status) {
         hi = lo;
+        f_hi = f_lo;
+        have_hi = 1;
         lo = z_lo;
+        f_lo = patch_minus_target(lo, &ctx);
     }
-    if (patch_minus_target(lo, &ctx) < 0 || ctx.status)
+    if (f_lo < 0 || ctx.status)
         return ctx.status ? ctx.status
                           : tirenv_error(diag, TIRENV_EINVAL, "", 0, "contact length",
                                          "%g m is beyond the %s tire's reach", l_c,
                                          st->type->name);
+    if (!have_hi)
+        f_hi = patch_minus_target(hi, &ctx);
     tirenv_core__brent br;
-    int status = tirenv_core__brent_set(&br, patch_minus_target, &ctx, lo, hi);
+    int status = tirenv_core__brent_set_values(&br, patch_minus_target, &ctx, lo, f_lo, hi,
+                                               f_hi);
     for (int it = 0; !status && it < PATCH_MAX_ITER; ++it) {
         status = tirenv_core__brent_iterate(&br);
         if (!status && tirenv_core__brent_converged(&br, patch_z_tol))

@@ -3,6 +3,7 @@
  * cam's vertical and contact-length keys identified on a reference model's flat ground, so
  * that at one load the models of a tire file deflect alike. */
 #include "tirenv/study.h"
+#include "tirenv/cam.h"
 #include "tirenv/springs.h"
 
 #include <math.h>
@@ -107,13 +108,11 @@ static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
     tirenv_model_free(cam);
     if (status)
         return status;
-    normal2 e = {0};
-    for (size_t i = 0; i < n; i++) {
-        const double s = sqrt(rho[i] / R0), w = 2 * R0 / tg[i].contact_length;
-        normal2_add(&e, w * s * s, w * s);  /* the rows for Q_RA2 and Q_RA1 */
-    }
+    double l[MAX_LOADS];
+    for (size_t i = 0; i < n; i++)
+        l[i] = tg[i].contact_length;
     double q_ra2, q_ra1;
-    if (!normal2_solve(&e, &q_ra2, &q_ra1))
+    if (tirenv_cam_fit_contact_law(R0, n, rho, l, &q_ra1, &q_ra2))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
                             "the loads do not separate the contact law's two terms (give "
                             "loads further apart)");

@@ -149,6 +149,19 @@ static void test_brent_table(void **state)
                       br.root, it, calls);
         assert_true(it < 100);
         assert_near(br.root, cases[k].root, 1e-12, 0);
+        /* Started from the ends' values the caller has (as the deformable models' contact
+         * length search does): two evaluations fewer, the same iterates to the bit. */
+        const size_t calls_set = calls;
+        const double f_lo = cases[k].f(cases[k].lo, NULL), f_hi = cases[k].f(cases[k].hi, NULL);
+        tirenv_core__brent bv;
+        calls = 0;
+        assert_int_equal(tirenv_core__brent_set_values(&bv, cases[k].f, NULL, cases[k].lo, f_lo,
+                                                       cases[k].hi, f_hi), 0);
+        assert_int_equal(calls, 0);
+        for (int j = 0; j < it; ++j)
+            assert_int_equal(tirenv_core__brent_iterate(&bv), 0);
+        assert_int_equal(calls + 2, calls_set);
+        assert_true(bv.root == br.root && bv.lo == br.lo && bv.hi == br.hi);
     }
 }
 
@@ -161,6 +174,10 @@ static void test_brent_errors(void **state)
     assert_int_equal(tirenv_core__brent_set(&br, f_none, NULL, -1, 1),
                      TIRENV_CORE__BRENT_NO_BRACKET);
     assert_int_equal(tirenv_core__brent_set(&br, f_nan, NULL, 0, 1),
+                     TIRENV_CORE__BRENT_NOT_FINITE);
+    assert_int_equal(tirenv_core__brent_set_values(&br, f_none, NULL, -1, 2, 1, 2),
+                     TIRENV_CORE__BRENT_NO_BRACKET);
+    assert_int_equal(tirenv_core__brent_set_values(&br, f_nan, NULL, 0, -2, 1, NAN),
                      TIRENV_CORE__BRENT_NOT_FINITE);
     assert_non_null(strstr(tirenv_core__brent_strerror(TIRENV_CORE__BRENT_NO_BRACKET),
                            "bracket"));

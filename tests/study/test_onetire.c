@@ -75,39 +75,48 @@ static void test_default_is_identified(void **state)
 /* Relative difference of a from b. */
 static double rel(double a, double b) { return fabs(a - b) / b; }
 
+/* The largest relative differences of a pair over the loads: deflection, contact length. */
+typedef struct {
+    double defl, l;
+} pair_miss;
+
 /* Model pairs at the same loads: springs - ring, cam - ring and springs - cam, deflection and
- * contact length within tol (relative) at each load; the largest differences printed. */
-static void pairs_within(const char *what, const tirenv_tire *t, size_t n, const double loads[],
-                         int with_cam, double tol_springs, double tol_cam)
+ * contact length at each load, the largest differences printed and returned (e[0] springs -
+ * ring, e[1] cam - ring, e[2] springs - cam). */
+static void pairs(const char *what, const tirenv_tire *t, size_t n, const double loads[],
+                  pair_miss e[3])
 {
     tirenv_flat r[16], s[16], c[16];
     assert_true(n <= 16);
     flat_states(tirenv_model_ring, t, n, loads, r);
     flat_states(tirenv_model_springs, t, n, loads, s);
-    if (with_cam)
-        flat_states(tirenv_model_cam, t, n, loads, c);
-    double e[6] = {0};  /* springs-ring, cam-ring, springs-cam: deflection, contact length */
+    flat_states(tirenv_model_cam, t, n, loads, c);
+    memset(e, 0, 3 * sizeof e[0]);
     for (size_t i = 0; i < n; i++) {
         print_message("%s %8.0f N: deflection ring %.2f springs %.2f cam %.2f mm; contact "
                       "length ring %.4f springs %.4f cam %.4f m\n", what, loads[i],
-                      1e3 * r[i].deflection, 1e3 * s[i].deflection,
-                      with_cam ? 1e3 * c[i].deflection : NAN, r[i].contact_length,
-                      s[i].contact_length, with_cam ? c[i].contact_length : NAN);
-        e[0] = fmax(e[0], rel(s[i].deflection, r[i].deflection));
-        e[1] = fmax(e[1], rel(s[i].contact_length, r[i].contact_length));
-        if (with_cam) {
-            e[2] = fmax(e[2], rel(c[i].deflection, r[i].deflection));
-            e[3] = fmax(e[3], rel(c[i].contact_length, r[i].contact_length));
-            e[4] = fmax(e[4], rel(s[i].deflection, c[i].deflection));
-            e[5] = fmax(e[5], rel(s[i].contact_length, c[i].contact_length));
+                      1e3 * r[i].deflection, 1e3 * s[i].deflection, 1e3 * c[i].deflection,
+                      r[i].contact_length, s[i].contact_length, c[i].contact_length);
+        const tirenv_flat *a[3] = {&s[i], &c[i], &s[i]}, *b[3] = {&r[i], &r[i], &c[i]};
+        for (size_t k = 0; k < 3; k++) {
+            e[k].defl = fmax(e[k].defl, rel(a[k]->deflection, b[k]->deflection));
+            e[k].l = fmax(e[k].l, rel(a[k]->contact_length, b[k]->contact_length));
         }
     }
     print_message("%s: largest differences, deflection / contact length: springs-ring %.2f / "
                   "%.2f %%, cam-ring %.2f / %.2f %%, springs-cam %.2f / %.2f %%\n", what,
-                  100 * e[0], 100 * e[1], 100 * e[2], 100 * e[3], 100 * e[4], 100 * e[5]);
-    assert_true(e[0] <= tol_springs && e[1] <= tol_springs);
-    assert_true(e[2] <= tol_cam && e[3] <= tol_cam);
-    assert_true(e[4] <= tol_springs && e[5] <= tol_springs);
+                  100 * e[0].defl, 100 * e[0].l, 100 * e[1].defl, 100 * e[1].l,
+                  100 * e[2].defl, 100 * e[2].l);
+}
+
+static void pairs_within(const char *what, const tirenv_tire *t, size_t n, const double loads[],
+                         double tol_springs, double tol_cam)
+{
+    pair_miss e[3];
+    pairs(what, t, n, loads, e);
+    assert_true(e[0].defl <= tol_springs && e[0].l <= tol_springs);
+    assert_true(e[1].defl <= tol_cam && e[1].l <= tol_cam);
+    assert_true(e[2].defl <= tol_springs && e[2].l <= tol_springs);
 }
 
 /* The default tire's models at the same loads: the file's load range (0.5 to 1.5 FNOMIN, on
@@ -132,42 +141,84 @@ static void test_model_pairs(void **state)
     tirenv_model_free(ring);
     loads[N_LOADS + 4] = 8737.03;
     loads[N_LOADS + 5] = 13335.47;
-    pairs_within("default", &t, N_LOADS + 6, loads, 1, 0.05, 0.01);
+    pairs_within("default", &t, N_LOADS + 6, loads, 0.05, 0.01);
 }
 
-/* The models derived from MF-Tyre files (section 14.2) agree as the default tire's do, at 0.5
- * to 1.5 times each file's FNOMIN: springs - ring within 5 % in deflection and contact length,
- * on the three files where it holds; the springs model is identified on the derived ring. */
-static void test_derived_pairs(void **state)
-{
-    (void)state;
-    static const char *const files[] = {
-        TIRENV_TEST_DATA "/samples/tir/tractor_430_50R38.tir",
-        TIRENV_TEST_DATA "/samples/tir/mf_185_80R14.tir",
-        TIRENV_TEST_DATA "/tir_mftyre.tir",
-    };
-    for (size_t f = 0; f < sizeof files / sizeof files[0]; f++) {
-        tirenv_tire t = tirenv_tire_default();
-        tirenv_diag d;
-        tirenv_tir_origin o;
-        assert_int_equal(tirenv_tir_read(files[f], &t, &d), TIRENV_OK);
-        assert_int_equal(tirenv_tir_derive(files[f], &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING,
-                                           &o, &d), TIRENV_OK);
-        double loads[N_LOADS];
-        for (size_t i = 0; i < N_LOADS; i++)
-            loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
-        pairs_within(strrchr(files[f], '/') + 1, &t, N_LOADS, loads, 0, 0.05, 0);
-    }
-}
-
-/* The MF-Tyre files the tests have, none with a tirenv section but 205-60R15-mfswift.tir. */
+/* The MF-Tyre files the tests have, none with a tirenv section but 205-60R15-mfswift.tir;
+ * the last two have the cam's contact law (Q_RA1, Q_RA2) of their own. */
 static const char *const mf_files[] = {
     TIRENV_TEST_DATA "/samples/tir/335_65R22_5_G275MSA_60psi.tir",
     TIRENV_TEST_DATA "/samples/tir/HMMWV_Pac02Tire.tir",
-    TIRENV_TEST_DATA "/samples/tir/tractor_430_50R38.tir",
     TIRENV_TEST_DATA "/samples/tir/mf_185_80R14.tir",
+    TIRENV_TEST_DATA "/samples/tir/tractor_430_50R38.tir",
     TIRENV_TEST_DATA "/tir_mftyre.tir",
 };
+enum { N_MF = sizeof mf_files / sizeof mf_files[0], N_OWN_CAM = 2 };
+
+/* File f read and its models derived (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING needed), once for
+ * the tests that look at them: a derivation costs up to 2.7 s of CPU (the 335/65R22.5's). */
+static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
+{
+    static tirenv_tire tires[N_MF];
+    static tirenv_tir_origin origins[N_MF];
+    static int done[N_MF];
+    assert_true(f < N_MF);
+    if (!done[f]) {
+        tirenv_diag d;
+        tires[f] = tirenv_tire_default();
+        if (tirenv_tir_read(mf_files[f], &tires[f], &d) ||
+            tirenv_tir_derive(mf_files[f], &tires[f], TIRENV_TIR_SPRINGS | TIRENV_TIR_RING,
+                              &origins[f], &d))
+            fail_msg("%s: %s: %s", mf_files[f], d.field, d.message);
+        done[f] = 1;
+    }
+    *t = tires[f];
+    *o = origins[f];
+}
+
+/* The models derived from MF-Tyre files (section 14.2) at 0.5 to 1.5 times each file's
+ * FNOMIN, on every file: springs - ring within 5 % in deflection and contact length (issue
+ * 24; the ring's pretension is raised until the springs model's contact length grows with the
+ * load as the ring's does). Where the cam's contact law was derived on the ring, cam - ring
+ * within 5 % in contact length. The cam's deflection is the file's own vertical law
+ * (VERTICAL_STIFFNESS without Q_FZ2: linear), which the derived ring, stiffening with the
+ * load, does not follow to 5 % at both ends of the range: the difference is the one
+ * tirenv_tir_derive measures and says (origin), bounded here per file at half a per cent
+ * above what was measured (6.7, 6.0, 8.1, 5.1 and 7.5 %; docs/models.md 14.2 has why neither
+ * fitting the ring over the range nor a stiffer belt brings it within 5 %). A file's own Q_RA1, Q_RA2 are kept and their difference from
+ * the ring said (over 25 % on both files that have them). Figures: docs/models.md 14.2. */
+static void test_derived_pairs(void **state)
+{
+    (void)state;
+    for (size_t f = 0; f < N_MF; f++) {
+        tirenv_tire t;
+        tirenv_tir_origin o;
+        derived(f, &t, &o);
+        print_message("%s: %s\n", mf_files[f], o.note);
+        double loads[N_LOADS];
+        for (size_t i = 0; i < N_LOADS; i++)
+            loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
+        pair_miss e[3];
+        pairs(strrchr(mf_files[f], '/') + 1, &t, N_LOADS, loads, e);
+        assert_true(e[0].defl <= 0.05 && e[0].l <= 0.05);
+        /* What the derivation said is what the models do. */
+        assert_near(o.cam_ring_deflection, e[1].defl, 1e-12, 0);
+        assert_near(o.cam_ring_contact_length, e[1].l, 1e-12, 0);
+        static const double cam_defl_max[N_MF] = {0.072, 0.065, 0.086, 0.056, 0.080};
+        assert_true(e[1].defl <= cam_defl_max[f]);
+        if (f < N_MF - N_OWN_CAM) {
+            assert_int_equal(o.derived & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
+            assert_non_null(strstr(o.note, "derived on the ring Q_RA1"));
+            assert_true(e[1].l <= 0.05);
+        } else {
+            assert_int_equal(o.own & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
+            assert_int_equal(o.derived & TIRENV_TIR_CAM, 0);
+            assert_non_null(strstr(o.note, "the file's own cam contact law kept"));
+            assert_true(e[1].l > 0.25);  /* the file's cam is another tire: said, not mixed */
+        }
+        assert_non_null(strstr(o.note, "cam against ring"));
+    }
+}
 
 /* Derived springs and ring: each carries FNOMIN at the file's deflection (to the 1e-9 of the
  * inversion), so its secant stiffness there is the file's VERTICAL_STIFFNESS within 10 %
@@ -177,15 +228,13 @@ static void test_derived_from_mftyre(void **state)
 {
     (void)state;
     const tirenv_tire def = tirenv_tire_default();
-    for (size_t f = 0; f < sizeof mf_files / sizeof mf_files[0]; f++) {
-        tirenv_tire t = tirenv_tire_default();
-        tirenv_diag d;
-        assert_int_equal(tirenv_tir_read(mf_files[f], &t, &d), TIRENV_OK);
+    for (size_t f = 0; f < N_MF; f++) {
+        tirenv_tire t;
         tirenv_tir_origin o;
-        if (tirenv_tir_derive(mf_files[f], &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING, &o, &d))
-            fail_msg("%s: %s: %s", mf_files[f], d.field, d.message);
-        assert_int_equal(o.own, 0);
-        assert_int_equal(o.derived, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING);
+        derived(f, &t, &o);
+        assert_int_equal(o.own & (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING), 0);
+        assert_int_equal(o.derived & (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING),
+                         TIRENV_TIR_SPRINGS | TIRENV_TIR_RING);
         assert_true(o.fnomin > 0);
         assert_non_null(strstr(o.note, "derived RADIAL_STIFFNESS"));
         assert_true(t.springs.c_r != def.springs.c_r && t.ring.k_f != def.ring.k_f);
@@ -212,7 +261,7 @@ static void test_derived_from_mftyre(void **state)
     tirenv_tir_origin o;
     assert_int_equal(tirenv_tir_derive(own, &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING, &o, &d),
                      TIRENV_OK);
-    assert_int_equal(o.own, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING);
+    assert_int_equal(o.own, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING | TIRENV_TIR_CAM);
     assert_int_equal(o.derived, 0);
     assert_string_equal(o.note, "");
     assert_memory_equal(&t, &before, sizeof t);

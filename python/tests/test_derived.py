@@ -1,0 +1,49 @@
+# SPDX-License-Identifier: Apache-2.0
+"""An MF-Tyre file without tirenv's sections gives Python's Tire the models the CLI derives
+(tirenv_tir_derive, docs/models.md section 14.2): the same C function, so the same doubles."""
+import os
+
+import pytest
+
+import tirenv
+from conftest import run_cli
+
+
+def _sample(source_dir, name):
+    return os.path.join(source_dir, "tests", "data", "samples", "tir", name)
+
+
+@pytest.mark.parametrize("model", ["springs", "ring"])
+def test_foreign_tir_gives_the_cli_models(cli, source_dir, model):
+    path = _sample(source_dir, "mf_185_80R14.tir")
+    with pytest.warns(UserWarning, match="derived RADIAL_STIFFNESS") as w:
+        tire = tirenv.Tire(path)
+    assert tire.derived == {"springs", "ring", "cam"}
+    rc, out, err = run_cli(cli, "flat", "--csv", "--model", model, "--tire", path)
+    assert rc == 0, err
+    # The same note on the CLI's standard error as in the warning.
+    assert f"tirenv: {path}: {tire.derived_note}" in err
+    assert str(w[0].message) == f"{path}: {tire.derived_note}"
+    rows = [line.split(",") for line in out.splitlines()[1:]]
+    assert [float(r[0]) for r in rows] == [1900, 2850, 3800, 4750, 5700]  # 0.5-1.5 FNOMIN
+    m = tirenv.Model(model, tire)
+    for r in rows:
+        f = m.flat(float(r[0]))
+        # The CLI prints 9 significant digits: the same doubles print the same text.
+        assert [f"{v:.9g}" for v in (f.z_flat, f.deflection, f.contact_length)] == r[1:4]
+    # The derived keys read back as the CLI's: the cam's contact law identified on the ring.
+    assert tire["Q_RA1"] != tirenv.Tire()["Q_RA1"]
+    assert f"Q_RA1 = {tire['Q_RA1']:.4g}" in err
+
+
+def test_foreign_tir_without_fnomin_refuses_the_springs_model(tmp_path):
+    path = tmp_path / "nofnomin.tir"
+    path.write_text("[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\n"
+                    "VERTICAL_STIFFNESS = 1.75e5\n")
+    with pytest.warns(UserWarning, match="no FNOMIN"):
+        tire = tirenv.Tire(path)
+    assert tire.derived == frozenset()
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Model("springs", tire)
+    assert e.value.field == "FNOMIN"
+    tirenv.Model("point", tire)  # needs no enveloping section
