@@ -52,10 +52,14 @@ test-slurm: build deps-test
 
 # Debug build under AddressSanitizer + UBSan in ASAN_BUILD, and its tests: all but the labels
 # slow, install, slurm and interop (and no fuzz harnesses: TIRENV_FUZZ=OFF; make test ran them).
-# At -O1: the sanitizers find the same errors, and the tests take about half the time of -O0.
+# At -O1: the sanitizers find the same errors, and the tests take about half the time of -O0;
+# -O2, measured too, saved 5 to 19 % of the longest tests' CPU and cost 42 % more to compile.
+# Debug information -g1, line tables only: the sanitizers' reports still name file and line
+# (UBSan's carry their own), and the compiler takes 11 % less time than with -g; configure
+# ASAN_BUILD with -g to look at variables in a debugger.
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
-	    -DTIRENV_FUZZ=OFF '-DCMAKE_C_FLAGS_DEBUG=-g -O1' >/dev/null
+	    -DTIRENV_FUZZ=OFF '-DCMAKE_C_FLAGS_DEBUG=-g1 -O1' >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm|interop$(if $(SKIP_LABELS),|$(SKIP_LABELS))'
 

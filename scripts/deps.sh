@@ -23,13 +23,15 @@ if [ "${1:-}" = "--slurm" ]; then
     optional=1
 fi
 
+# One dpkg-query for all of them (make test runs this script twice; a query per package took
+# seconds on a loaded machine): a line "NAME STATUS" per known package, none for an unknown one.
+# shellcheck disable=SC2086 # $need is a list of names
+installed=$(dpkg-query -W -f='${Package} ${Status}\n' $need 2>/dev/null || true)
 missing=""
 for pkg in $need; do
-    status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
-    case "$status" in
-        *"ok installed"*) ;;
-        *) missing="$missing $pkg" ;;
-    esac
+    if ! printf '%s\n' "$installed" | grep -q -x "$pkg install ok installed"; then
+        missing="$missing $pkg"
+    fi
 done
 [ -z "$missing" ] && exit 0
 

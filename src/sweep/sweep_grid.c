@@ -388,14 +388,30 @@ int tirenv_sweep__read_text(const char *path, size_t max, char **out, size_t *n,
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", strerror(errno));
-    char *buf = malloc(max + 1);
-    if (!buf) {
-        fclose(fp);
-        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    /* The buffer grows with what is read, up to max + 1 bytes: the limit is a refusal, not an
+     * allocation (sweep merge's 1 GiB limit per table, allocated whole, cost seconds per part
+     * under AddressSanitizer, which poisons the shadow of a large block whole, and reserved
+     * that much address space in every build). */
+    size_t cap = max + 1 < 65536 ? max + 1 : 65536, got = 0;
+    char *buf = malloc(cap);
+    int failed = 0;
+    while (buf) {
+        got += fread(buf + got, 1, cap - got, fp);
+        if ((failed = ferror(fp)) || got < cap || cap == max + 1)
+            break;
+        const size_t grown = cap > (max + 1) / 2 ? max + 1 : 2 * cap;
+        char *more = realloc(buf, grown);
+        if (!more) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = more;
+        cap = grown;
     }
-    const size_t got = fread(buf, 1, max + 1, fp);
-    const int failed = ferror(fp);
     fclose(fp);
+    if (!buf)
+        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
     if (failed || got > max) {
         free(buf);
         return tirenv_error(diag, TIRENV_EIO, path, 0, "",

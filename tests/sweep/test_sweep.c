@@ -365,6 +365,55 @@ static void test_rig(void **state)
     assert_int_equal(access(path, R_OK), 0);
 }
 
+/* A whole file read up to a limit (tirenv_sweep__read_text, what sweep merge and resume read
+ * their tables with): the buffer grows with the file, past its first 64 KiB, so the bytes of a
+ * file of 200,000 come back whole; a file of exactly the limit is read, one byte more is
+ * refused naming the limit; an empty file is an empty text. */
+static void test_read_text(void **state)
+{
+    const tirenv_test_dir *t = *state;
+    char path[600];
+    tirenv_test_path(t, "text", path);
+    enum { N = 200000 };
+    char *want = malloc(N);
+    assert_non_null(want);
+    for (size_t i = 0; i < N; ++i)
+        want[i] = (char)('a' + (i * 7 + i / 613) % 26);
+    tirenv_diag d;
+    char *got;
+    size_t n;
+    const size_t sizes[] = {0, 1, 65535, 65536, 65537, 131072, N};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
+        FILE *fp = fopen(path, "wb");
+        assert_non_null(fp);
+        assert_int_equal(fwrite(want, 1, sizes[k], fp), sizes[k]);
+        assert_int_equal(fclose(fp), 0);
+        /* Limits below, at and above the size. */
+        const size_t limits[] = {sizes[k], sizes[k] + 1, 4 * (size_t)N, sizes[k] - 1};
+        for (size_t j = 0; j < 4; ++j) {
+            if (j == 3 && sizes[k] == 0)
+                break;
+            tirenv_diag_clear(&d);
+            const int status = tirenv_sweep__read_text(path, limits[j], &got, &n, &d);
+            if (j < 3) {
+                assert_int_equal(status, TIRENV_OK);
+                assert_int_equal(n, sizes[k]);
+                assert_int_equal(got[n], '\0');
+                if (n)
+                    assert_memory_equal(got, want, n);
+                free(got);
+            } else {
+                assert_int_equal(status, TIRENV_EIO);
+                assert_null(got);
+                char msg[64];
+                snprintf(msg, sizeof msg, "longer than %zu bytes", limits[j]);
+                assert_non_null(strstr(d.message, msg));
+            }
+        }
+    }
+    free(want);
+}
+
 static int rm_setup(void **state) { return tirenv_test_dir_setup(state); }
 static int rm_teardown(void **state)
 {
@@ -386,6 +435,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_runs, rm_setup, rm_teardown),
         cmocka_unit_test_setup_teardown(test_resume, rm_setup, rm_teardown),
         cmocka_unit_test_setup_teardown(test_rig, rm_setup, rm_teardown),
+        cmocka_unit_test_setup_teardown(test_read_text, rm_setup, rm_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
