@@ -44,8 +44,8 @@ double tirenv_ring_patch_length(const tirenv_ring *r);
 
 /* Belt inward displacement w_j (m, negative where it bulges out) and ground force per node
  * f_j (N: the tread's plus the belt's reaction) of the last evaluation, into arrays of
- * tirenv_ring_size() entries (may be NULL). With the shear-coupled tread (an option,
- * TREAD_SHEAR > 0, off by default; docs/models.md section 5.3) w outside the contact window
+ * tirenv_ring_size() entries (may be NULL). With the shear-coupled tread (TREAD_SHEAR > 0,
+ * the default; docs/models.md section 5.3) w outside the contact window
  * comes from a solve of the unloaded belt and tread there, which allocates (NAN outside the
  * window if memory runs out). */
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);

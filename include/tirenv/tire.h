@@ -70,7 +70,7 @@ typedef struct {
     double k_t;            /* TREAD_STIFFNESS, per unit belt length, N/m^2 */
     double G_t;            /* TREAD_SHEAR: the tread rubber's shear modulus, Pa, coupling the
                             * tread's neighbouring elements along the arc (section 5.3);
-                            * 0 = a Winkler tread, the default */
+                            * 0 = a Winkler tread; the default 0.25 MPa (5.6) */
     double dtheta;         /* NODE_ANGLE: node spacing around the full circle, rad */
     double lug_count;      /* LUG_COUNT: lugs around the circumference; 0 = smooth tread */
     double lug_fraction;   /* LUG_FRACTION: share of the circumference under lugs, (0, 1) */

@@ -27,8 +27,8 @@ tirenv_tire tirenv_tire_default(void)
     return (tirenv_tire){
         .springs = {
             .R0 = 0.68,
-            .c_r = 421000,
-            .c_b = 22000,
+            .c_r = 407000,
+            .c_b = 32800,
             .phi = M_PI,
             .dphi = M_PI / 360.0,
         },
@@ -42,8 +42,8 @@ tirenv_tire tirenv_tire_default(void)
             .T = 0,
             .k_f = 1.1e5,
             .k_t = 1.5e7,
-            .G_t = 0, /* the Winkler tread; TREAD_SHEAR > 0 couples it in shear (5.3) */
-            .dtheta = M_PI / 1440.0, /* converged: docs/models.md section 5.6 */
+            .G_t = 2.5e5, /* the lugs' effective shear modulus along the arc (5.3, 5.6) */
+            .dtheta = M_PI / 720.0, /* 0.25 degrees, converged: docs/models.md section 5.6 */
             .lug_count = 0,
             .lug_fraction = 0.5,
             .lug_ratio = 1,
@@ -57,11 +57,11 @@ tirenv_tire tirenv_tire_default(void)
          * (MF-Swift 6.2), which already scales with R0; the deflection and contact-length law
          * identified on the ring reference tire's flat ground (data/tires/default.tir says how). */
         .cam = {
-            .c_z = 365000,
+            .c_z = 371000,
             .fnomin = 17900,
-            .q_fz2 = 29.4,
-            .q_ra1 = 0.619,
-            .q_ra2 = 0.653,
+            .q_fz2 = 28.7,
+            .q_ra1 = 0.461,
+            .q_ra2 = 0.892,
             .shift = 0.8328,
             .length = 1.4634,
             .height = 0.9551,

@@ -271,6 +271,12 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
                                                         : d.ring.b_p * s;
     t->ring.EI = d.ring.EI * s * s * s * s;
     t->ring.T = d.ring.T * s * s;
+    /* The Winkler tread (TREAD_SHEAR 0) at 0.125 degree nodes, the default's before it coupled
+     * the tread in shear at 0.25 degrees: derived rings keep what they were derived with
+     * (docs/models.md section 14.2); the shear layer's G_t is the default tractor tire's lugs
+     * (data/tires/default.tir), not a property to scale to another tire. */
+    t->ring.G_t = 0;
+    t->ring.dtheta = M_PI / 1440.0;
     if (tau > 0) {
         const double R = k->R0 - t->ring.t_r;
         t->ring.T += tau * d.ring.k_f * R * R;

@@ -13,11 +13,11 @@ repo=$(cd "$data/../.." && pwd)
 cp "$repo/data/tires/default.tir" t.tir
 run "$bin" identify --tire t.tir
 check "identify: the default tire's values are those it writes (unchanged file)" \
-    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *421000 " out && grep -q "Q_RA1 *0.619 " out &&
+    '[ $rc -eq 0 ] && grep -q "RADIAL_STIFFNESS *407000 " out && grep -q "Q_RA1 *0.461 " out &&
      cmp -s t.tir "$repo/data/tires/default.tir"'
 run "$bin" identify --tire t.tir --set RADIAL_STIFFNESS=1e6 --write
 check "identify --write: the file re-read has the identified values, comments and note kept" \
-    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 421000 *\$ c_r" t.tir &&
+    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 407000 *\$ c_r" t.tir &&
      [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
      [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
 run "$bin" identify --loads 12000
@@ -68,18 +68,24 @@ check "... 0.01 N below it: accepted as the trained range's edge, the same curve
 run "$bin" envelope --model nn --nn nn.json --cleat 0.10,0.10 --load 12000 -o b.csv
 check "... 12 kN, below the data set's loads: refused, naming the contact length" \
     '[ $rc -ne 0 ] && grep -q "contact length" err && no_file b.csv'
-# 15 kN: the springs model of the tire file, which stands in for the missing relation, touches
-# 0.30 m there, inside the network's trained 0.28 to 0.43 m.
-run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 15000 -o o.csv
+# 18 kN: the springs model of the tire file, which stands in for the missing relation, touches
+# 0.29 m there, inside the network's trained 0.28 to 0.43 m (the default tire's shear-coupled
+# ring, on which it is identified, has a shorter patch than the data set's Winkler tread: at
+# 15 kN 0.26 m).
+run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 18000 -o o.csv
 check "an older network file: read, with a warning naming training.data.contact_law" \
     '[ $rc -eq 0 ] && grep -q "warning: .*training.data.contact_law" err'
 # In the ride (inputs at each axle's static load), the network's input to the rear axle over
 # the cleat against the ring's, the tire it was trained on: the RMS over the samples where
 # either is above 0.1 mm within the network's own validation RMS (0.76 against 0.89 mm when
 # written; the springs model's chord gave 4.9 mm). The front tire's 8.74 kN is a 0.23 m
-# patch, below the data's 0.28 m: --extrapolate.
+# patch, below the data's 0.28 m: --extrapolate. The ring is the data set's own tire
+# (data/dataset/tire.tir), which differs from the default until the data set is made again
+# with it (the default's shear-coupled ring: 2.75 mm against 1.04).
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model ring,nn --nn nn.json --extrapolate \
-    --enveloping static --out-dir rd --series
+    --enveloping static --out-dir rd --series \
+    --set FRONT_AXLE.TIRE_FILE="$repo/data/dataset/tire.tir" \
+    --set REAR_AXLE.TIRE_FILE="$repo/data/dataset/tire.tir"
 rms=$(paste -d, rd/series-ring-10kmh.csv rd/series-nn-10kmh.csv | awk -F, '
     /^#/ || /t_s/ { next }
     { r = $4; q = $17; if (r > 1e-4 || q > 1e-4) { s += (q - r) ^ 2; n++ } }

@@ -39,11 +39,11 @@ rm -f part2/cases.csv
 run "$bin" sweep merge part0 part1 part2 part3 -o merged3
 check "merge refuses an incomplete shard" '[ $rc -eq 2 ] && grep -q "not complete" err'
 
-run "$bin" sweep --lengths 0.1 --heights 0.05 --loads 6000,9000 --model springs -o loads
+run "$bin" sweep --lengths 0.1 --heights 0.05 --loads 9000,13000 --model springs -o loads
 check "--loads: each case's contact length is the model's at its load, longer at more load" \
-    '[ $rc -eq 0 ] && grep -q "^loads_N = 6000,9000$" loads/sweep.txt &&
+    '[ $rc -eq 0 ] && grep -q "^loads_N = 9000,13000$" loads/sweep.txt &&
      awk -F, '"'"'/^c0/ { l[NR] = $3; g[NR] = $4; n++ }
-         END { exit !(n == 2 && l[5] > 0.15 && l[6] > l[5] && g[5] == 6000 && g[6] == 9000) }'"'"' \
+         END { exit !(n == 2 && l[5] > 0.15 && l[6] > l[5] && g[5] == 9000 && g[6] == 13000) }'"'"' \
          loads/cases.csv'
 
 run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --model springs -o one

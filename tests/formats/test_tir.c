@@ -411,6 +411,18 @@ static void test_write_read_round_trip(void **state)
     assert_non_null(strstr(text, "\nUNLOADED_RADIUS          = 0.68 "));
     assert_non_null(strstr(text, "\nMETHOD                   = 'newton' "));
     assert_non_null(strstr(text, "\nLENGTH                   = 'meter' "));
+    const char *line = strstr(text, "\nTREAD_SHEAR              = ");
+    assert_non_null(line);
+    assert_true(def.ring.G_t > 0); /* the default's 0.25 MPa */
+    assert_true(strtod(line + 28, NULL) == def.ring.G_t);
+    /* The Winkler tread's 0 is written as such. */
+    tirenv_tire winkler = def;
+    winkler.ring.G_t = 0;
+    assert_int_equal(tirenv_tir_write(path, &winkler, &d), TIRENV_OK);
+    fp = fopen(path, "r");
+    assert_non_null(fp);
+    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
+    fclose(fp);
     assert_non_null(strstr(text, "\nTREAD_SHEAR              = 0 "));
     const tirenv_tire sheared = entropic_tire();
     assert_int_equal(tirenv_tir_write(path, &sheared, &d), TIRENV_OK);
@@ -418,7 +430,7 @@ static void test_write_read_round_trip(void **state)
     assert_non_null(fp);
     text[fread(text, 1, sizeof text - 1, fp)] = '\0';
     fclose(fp);
-    const char *line = strstr(text, "\nTREAD_SHEAR              = ");
+    line = strstr(text, "\nTREAD_SHEAR              = ");
     assert_non_null(line);
     assert_true(strtod(line + 28, NULL) == sheared.ring.G_t);
 }

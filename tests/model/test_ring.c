@@ -520,7 +520,9 @@ static void test_buckling_refused(void **state)
 static void test_factor_reuse_is_exact(void **state)
 {
     (void)state;
-    const tirenv_tire t = tirenv_tire_default();
+    tirenv_tire t = tirenv_tire_default();
+    t.ring.G_t = 0;                 /* the Winkler tread (the default's layer counts no factors) */
+    t.ring.dtheta = M_PI / 1440.0;  /* 0.125 degrees, the Winkler tread's converged spacing */
     tirenv_profile *p = tirenv_test_flat_ground();
     tirenv_ring *warm = tirenv_ring_alloc(t.springs.R0, &t.ring);
     assert_non_null(warm);

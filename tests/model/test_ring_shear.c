@@ -3,10 +3,12 @@
  * the layer's closed form on a stiff belt (the decay length sqrt(k_s / k_c) and the force of
  * a blade), TREAD_SHEAR = 0 reproducing the Winkler tread bit for bit, a small shear close to
  * it, one minimiser whatever the warm start, dF_z/dz against central differences, lugs, and
- * the rays unaffected. The layer is an option, off by default (TREAD_SHEAR = 0): every test
- * here sets it explicitly, to G_ON, the low end of a tread cap's published shear modulus
- * (data/tires/default.tir). Continuity in x and the convergence in NODE_ANGLE of the default
- * (Winkler) tread are in test_ring_continuity.c. */
+ * the rays unaffected. The default tire has the layer on (TREAD_SHEAR 0.25 MPa, the lugs'
+ * share, at NODE_ANGLE 0.25 degrees); every test here sets the shear explicitly, to G_ON
+ * (1 MPa, the low end of a tread cap's published shear modulus, over the full section) or to
+ * 0 for the Winkler tread, and the node spacing to DTHETA, the 0.125 degrees the tests were
+ * written at (their figures below are at it). Continuity in x and the convergence in
+ * NODE_ANGLE of the default are in test_ring_continuity.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,12 +37,15 @@ static const double winkler_bits[3][5][2] = {
 };
 /* TREAD_SHEAR for the tests of the layer, Pa: 1 MPa, the low end of the published range. */
 #define G_ON 1.0e6
+/* NODE_ANGLE of these tests, rad: 0.125 degrees (2880 nodes), the default before 0.25. */
+#define DTHETA (M_PI / 1440.0)
 
-/* The default tire with the shear-coupled tread switched on at G_ON. */
+/* The default tire with the shear-coupled tread at G_ON, its nodes DTHETA apart. */
 static tirenv_tire shear_tire(void)
 {
     tirenv_tire t = tirenv_tire_default();
     t.ring.G_t = G_ON;
+    t.ring.dtheta = DTHETA;
     return t;
 }
 
@@ -53,16 +58,15 @@ static tirenv_profile *case_profile(size_t k)
                   : k == 1 ? tirenv_profile_cleat(0.05, 0.025) : tirenv_profile_step(0, 0.1);
 }
 
-/* The curves of the three cases at TREAD_SHEAR G (Pa) and NODE_ANGLE dtheta (0: the
- * default) into h[3][5], fx[3][5]. */
+/* The curves of the three cases at TREAD_SHEAR G (Pa) and NODE_ANGLE dtheta (0: DTHETA)
+ * into h[3][5], fx[3][5]. */
 static void curves(double G, double dtheta, tirenv_ring_contact_kind contact, double h[3][5],
                    double fx[3][5])
 {
     tirenv_tire t = tirenv_tire_default();
     t.ring.G_t = G;
     t.ring.contact = contact;
-    if (dtheta > 0)
-        t.ring.dtheta = dtheta;
+    t.ring.dtheta = dtheta > 0 ? dtheta : DTHETA;
     tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
     assert_non_null(m);
     tirenv_diag diag;
@@ -89,7 +93,7 @@ static double max_dh(double a[3][5], double b[3][5])
     return d;
 }
 
-/* TREAD_SHEAR = 0, the default, is the Winkler tread, bit for bit, and G_ON moves h by more
+/* TREAD_SHEAR = 0 is the Winkler tread, bit for bit (at DTHETA, the default it was recorded at), and G_ON moves h by more
  * than a millimetre somewhere (so the comparison can fail). As the shear vanishes (1 Pa: k_s =
  * 0.0136 N) the shear-coupled tread tends to the Winkler one up to their discretisations: the
  * former's compression is lumped on its nodes (and the knots at ground vertices between them),
@@ -101,7 +105,7 @@ static void test_zero_shear_is_winkler(void **state)
 {
     (void)state;
     double h0[3][5], fx0[3][5], h1[3][5], fx1[3][5], hd[3][5], fxd[3][5];
-    assert_true(tirenv_tire_default().ring.G_t == 0);
+    assert_true(tirenv_tire_default().ring.G_t > 0); /* the default is the layer (5.6) */
     curves(0, 0, TIRENV_RING_CONTINUOUS, h0, fx0);
     for (size_t k = 0; k < 3; ++k)
         for (size_t i = 0; i < 5; ++i) {
@@ -111,7 +115,7 @@ static void test_zero_shear_is_winkler(void **state)
     curves(G_ON, 0, TIRENV_RING_CONTINUOUS, hd, fxd);
     curves(1, 0, TIRENV_RING_CONTINUOUS, h1, fx1);
     const double d_default = max_dh(hd, h0), d_small = max_dh(h1, h0);
-    const double dth = 0.5 * tirenv_tire_default().ring.dtheta;
+    const double dth = 0.5 * DTHETA;
     curves(0, dth, TIRENV_RING_CONTINUOUS, h0, fx0);
     curves(1, dth, TIRENV_RING_CONTINUOUS, h1, fx1);
     const double d_half = max_dh(h1, h0);
@@ -199,7 +203,7 @@ static double blade_on_stiff_belt(double dtheta)
 }
 
 /* The force: the tails are exact to (h / l)^2, the blade's width is resolved to a node
- * spacing (1.4 mm at the default's 0.125 degrees), and the contact layer k_g = 1e4 k_t spreads
+ * spacing (1.4 mm at DTHETA's 0.125 degrees), and the contact layer k_g = 1e4 k_t spreads
  * the layer's edge reaction, concentrated at the blade's edges for a hard contact, over
  * sqrt(k_s / k_g), 0.3 mm: the model tends to the closed form within about sqrt(k_t / k_g) =
  * 1 % (measured 1.3 % at 0.125 degrees, 1.4 % at 0.0625, the blade's corners resolved by the
@@ -208,8 +212,7 @@ static double blade_on_stiff_belt(double dtheta)
 static void test_decay_length(void **state)
 {
     (void)state;
-    const double dth = tirenv_tire_default().ring.dtheta;
-    const double e1 = blade_on_stiff_belt(dth), e2 = blade_on_stiff_belt(0.5 * dth);
+    const double e1 = blade_on_stiff_belt(DTHETA), e2 = blade_on_stiff_belt(0.5 * DTHETA);
     assert_true(e1 <= 0.02);
     assert_true(e2 <= 0.02);
 }
