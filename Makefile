@@ -102,8 +102,8 @@ demo-study-205:
 	@$(BUILD)/tirenv study --jobs $(JOBS) --data data/dataset-205-60R15 -o $(DEMO_205)
 
 # The tractor's rides, after demo-study: over the cleat (out/ride-cleat/) and the road
-# (out/ride-road/). The front tire's 8.7 kN is a 0.23 m patch, below the network's trained
-# 0.28 m (docs/models.md section 14.3): its front input is an extrapolation, hence --extrapolate.
+# (out/ride-road/). The tires' 8.7 and 13.3 kN are 0.19 and 0.24 m patches, below the network's
+# trained 0.28 m (docs/models.md section 14.3): its inputs are extrapolations, hence --extrapolate.
 demo-ride: demo-study
 	@$(BUILD)/tirenv ride --cleat 0.30,0.05 --speed 5km/h,10km/h,15km/h \
 	    --model point,springs,cam,nn --nn $(DEMO_OUT)/nn.json --extrapolate \

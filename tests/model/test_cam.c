@@ -751,6 +751,8 @@ static void test_mfswift_file(void **state)
     expected.ring.alpha_s = 1.2;
     expected.ring.p = 220000;
     expected.ring.p_nom = 220000;
+    expected.ring.G_t = 0;               /* the file's Winkler tread at 0.125 degrees */
+    expected.ring.dtheta = M_PI / 1440.0;
     expected.cam = (tirenv_cam_params){.c_z = 209651.5, .fnomin = 4000, .q_fz2 = 0,
                                        .q_ra1 = 0.6715, .q_ra2 = 0.7308,
                                        .shift = 0.8328, .length = 1.4634, .height = 0.9551,
