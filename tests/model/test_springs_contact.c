@@ -255,9 +255,12 @@ static void test_kkt_conditions(void **state)
     for (int trial = 0; trial < 400; ++trial) {
         tirenv_springs_params par = continuous_tire().springs;
         /* The springs values the draws were made around (identified on the Winkler-tread
-         * ring): with those identified on the shear-coupled default (4.07e5, 3.28e4) one of
-         * the 400 draws ends with the tread below the ground by more than the 1e-8 m snap
-         * asserted below: recorded, not investigated yet. */
+         * ring). Around those identified on the shear-coupled default (4.07e5, 3.28e4) draw
+         * 147 (c_b 2.34e6, c_b/c_r 5.7; elements 1.86 degrees apart) ends with two vertices
+         * 0.78 and 3.4 um inside the tread, at t = 0.56 and 0.77: the sector's hull keeps rows
+         * by h/(ga + gb), but a binding row's tread stands its compliance times lambda below
+         * h, so a row dropped just under the hull can bind. Not fixed yet (a pass adding the
+         * dropped rows the final w violates would). */
         par.c_r = 4.21e5;
         par.c_b = 2.2e4;
         par.c_b *= pow(10, -2 + 4 * uniform());
