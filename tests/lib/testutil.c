@@ -114,6 +114,18 @@ tirenv_tire tirenv_test_default_tire(void)
     return t;
 }
 
+tirenv_model *tirenv_test_nn_model(const tirenv_nn *nn, int extrapolate)
+{
+    const tirenv_tire t = tirenv_test_default_tire();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &t);
+    assert_non_null(m);
+    tirenv_diag d;
+    assert_int_equal(tirenv_model_set_network(m, nn, 0, &d), TIRENV_OK);
+    if (extrapolate >= 0)
+        tirenv_model_set_extrapolate(m, extrapolate);
+    return m;
+}
+
 tirenv_nn *tirenv_test_made_up_network(unsigned long seed, size_t n_samples)
 {
     enum { MAX = 128 };

@@ -30,18 +30,6 @@ static tirenv_nn *net(void)
     return nn;
 }
 
-static tirenv_model *nn_model(const tirenv_nn *nn, int extrapolate)
-{
-    const tirenv_tire t = tirenv_tire_default();
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &t);
-    assert_non_null(m);
-    tirenv_diag diag;
-    assert_int_equal(tirenv_model_set_network(m, nn, 0, &diag), 0);
-    if (extrapolate >= 0)
-        tirenv_model_set_extrapolate(m, extrapolate);
-    return m;
-}
-
 /* Sets the model on p at contact length l_c; returns the status. */
 static int set_at(tirenv_model *m, const tirenv_profile *p, double l_c, tirenv_diag *diag)
 {
@@ -61,7 +49,7 @@ static void test_cleat(void **state)
     tirenv_diag diag;
     tirenv_profile *ok = tirenv_profile_cleat(0.2, 0.05), *tall = tirenv_profile_cleat(0.2, 0.2);
     for (int allow = -1; allow <= 1; ++allow) {  /* -1: the default, never set */
-        tirenv_model *m = nn_model(nn, allow);
+        tirenv_model *m = tirenv_test_nn_model(nn, allow);
         assert_int_equal(set_at(m, ok, 0.33, &diag), 0);
         assert_string_equal(tirenv_model_warnings(m), "");
         const int status = set_at(m, tall, 0.33, &diag);
@@ -108,7 +96,7 @@ static void test_profile(void **state)
     z[6] = z[7] = 0.3;
     tirenv_profile *wall = tirenv_profile_alloc(10, x, z);
     assert_true(two && low && wall);
-    tirenv_model *m = nn_model(nn, 0);
+    tirenv_model *m = tirenv_test_nn_model(nn, 0);
     assert_int_equal(set_at(m, two, 0.33, &diag), 0);
     assert_string_equal(tirenv_model_warnings(m), "");
     assert_int_equal(set_at(m, low, 0.33, &diag), TIRENV_ERANGE);

@@ -273,17 +273,6 @@ static int next_row(void *ctx, double *x, double z[], int *got, tirenv_diag *dia
     return TIRENV_OK;
 }
 
-static tirenv_model *nn_model(const tirenv_nn *nn, int extrapolate)
-{
-    const tirenv_tire tire = tirenv_test_default_tire();
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_nn, &tire);
-    assert_non_null(m);
-    tirenv_diag d;
-    assert_int_equal(tirenv_model_set_network(m, nn, R0, &d), TIRENV_OK);
-    tirenv_model_set_extrapolate(m, extrapolate);
-    return m;
-}
-
 /* The whole-profile sweep as tirenv envelope runs it: set, then chunks of CHUNK positions. */
 static tirenv_point *sweep_whole(tirenv_model *m, size_t n_tracks, const tirenv_profile *p[],
                                  double load, double x_from, double dx, size_t n)
@@ -310,7 +299,7 @@ static tirenv_stream_stats check_stream(const tirenv_nn *nn, size_t n_tracks,
                                         const tirenv_profile *p[], double x_from, double x_to,
                                         double dx)
 {
-    tirenv_model *m = nn_model(nn, 1);
+    tirenv_model *m = tirenv_test_nn_model(nn, 1);
     double load;
     tirenv_diag d;
     assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
@@ -406,7 +395,7 @@ static void test_stream_refuses(void **state)
 {
     const tirenv_nn *nn = *state;
     tirenv_profile *p = cleat_road(30.0, 0.002);
-    tirenv_model *m = nn_model(nn, 0);
+    tirenv_model *m = tirenv_test_nn_model(nn, 0);
     double load;
     tirenv_diag d, dw;
     assert_int_equal(tirenv_model_load_for_contact_length(m, l_c, &load, &d), TIRENV_OK);
