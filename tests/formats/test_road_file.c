@@ -62,6 +62,39 @@ static pid_t feed(const char *fifo, const char *file)
     return pid;
 }
 
+/* The FIFO "fifo" in fx made afresh and fed file once by a child (*writer); opened. */
+static tirenv_road_file *open_fed_fifo(const tirenv_test_dir *fx, const char *file,
+                                       pid_t *writer)
+{
+    char fifo[600];
+    tirenv_test_path(fx, "fifo", fifo);
+    unlink(fifo);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    *writer = feed(fifo, file);
+    tirenv_road_file *f = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_file_open(fifo, &f, &d), TIRENV_OK);
+    return f;
+}
+
+/* The feeding child gone, having written everything once. */
+static void assert_fed(pid_t writer)
+{
+    int st = -1;
+    assert_int_equal(waitpid(writer, &st, 0), writer);
+    assert_true(WIFEXITED(st) && WEXITSTATUS(st) == 0);
+}
+
+/* Road k of write_roads read whole from its regular file; its path in path. */
+static tirenv_profile *read_road(const tirenv_test_dir *fx, size_t k, char path[600])
+{
+    tirenv_test_path(fx, names[k], path);
+    tirenv_profile *p = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_profile_read_file(path, NULL, &p, &d), TIRENV_OK);
+    return p;
+}
+
 static void assert_same_profile(const tirenv_profile *a, const tirenv_profile *b)
 {
     const size_t n = tirenv_profile_size(a);
@@ -125,18 +158,12 @@ static void test_fifo_read_once(void **state)
                                               TIRENV_PROFILE_RDF};
     for (size_t k = 0; k < 3; ++k) {
         char path[600], fifo[600];
-        tirenv_test_path(fx, names[k], path);
-        tirenv_test_path(fx, "fifo", fifo);
+        tirenv_profile *want = read_road(fx, k, path);
+        pid_t writer;
+        tirenv_road_file *f = open_fed_fifo(fx, path, &writer);
         tirenv_diag d;
-        tirenv_profile *want = NULL;
-        assert_int_equal(tirenv_profile_read_file(path, NULL, &want, &d), TIRENV_OK);
-        unlink(fifo);
-        assert_int_equal(mkfifo(fifo, 0600), 0);
-        const pid_t writer = feed(fifo, path);
-        tirenv_road_file *f = NULL;
-        assert_int_equal(tirenv_road_file_open(fifo, &f, &d), TIRENV_OK);
         assert_int_equal(tirenv_road_file_format(f), formats[k]);
-        assert_string_equal(tirenv_road_file_name(f), fifo);
+        assert_string_equal(tirenv_road_file_name(f), tirenv_test_path(fx, "fifo", fifo));
         read_all_ways(f, want);
         if (formats[k] == TIRENV_PROFILE_CRG) {  /* the CRG handle, from the same copy */
             tirenv_crg *crg = NULL;
@@ -145,9 +172,7 @@ static void test_fifo_read_once(void **state)
             tirenv_crg_free(crg);
         }
         tirenv_road_file_free(f);
-        int st = -1;
-        assert_int_equal(waitpid(writer, &st, 0), writer);
-        assert_true(WIFEXITED(st) && WEXITSTATUS(st) == 0);  /* it wrote everything, once */
+        assert_fed(writer);
         tirenv_profile_free(want);
     }
 }
@@ -160,10 +185,8 @@ static void test_regular_file_not_reopened(void **state)
     write_roads(fx);
     for (size_t k = 0; k < 3; ++k) {
         char path[600], other[600];
-        tirenv_test_path(fx, names[k], path);
+        tirenv_profile *want = read_road(fx, k, path);
         tirenv_diag d;
-        tirenv_profile *want = NULL;
-        assert_int_equal(tirenv_profile_read_file(path, NULL, &want, &d), TIRENV_OK);
         tirenv_road_file *f = NULL;
         assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
         assert_int_equal(unlink(path), 0);
@@ -221,25 +244,19 @@ static void test_extent(void **state)
     const tirenv_test_dir *fx = *state;
     write_roads(fx);
     for (size_t k = 0; k < 3; ++k) {
-        char path[600], fifo[600];
-        tirenv_test_path(fx, names[k], path);
-        tirenv_test_path(fx, "fifo", fifo);
+        char path[600];
+        tirenv_profile *want = read_road(fx, k, path);
         tirenv_diag d;
-        tirenv_profile *want = NULL;
-        assert_int_equal(tirenv_profile_read_file(path, NULL, &want, &d), TIRENV_OK);
         tirenv_road_file *f = NULL;
         assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
         assert_extent(f, want);
         tirenv_road_file_free(f);
-        unlink(fifo);
-        assert_int_equal(mkfifo(fifo, 0600), 0);
-        const pid_t writer = feed(fifo, path);
-        assert_int_equal(tirenv_road_file_open(fifo, &f, &d), TIRENV_OK);
+        pid_t writer;
+        f = open_fed_fifo(fx, path, &writer);
         assert_extent(f, want);
         read_all_ways(f, want);  /* the FIFO's bytes still all there for the readers */
         tirenv_road_file_free(f);
-        int st = -1;
-        assert_int_equal(waitpid(writer, &st, 0), writer);
+        assert_fed(writer);
         tirenv_profile_free(want);
     }
     /* Long comment tails: 3 lines of 65,000 characters after the last row. */
