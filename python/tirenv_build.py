@@ -243,7 +243,7 @@ typedef struct {
 tirenv_ride_plan_params tirenv_ride_plan_params_default(void);
 #define TIRENV_RIDE_PLAN_RUNS ...
 typedef struct {
-    double x_from; double x0; double dx; size_t n; size_t n_runs;
+    double x0; double dx; size_t n;
     tirenv_ride_settings run[...];
 } tirenv_ride_plan;
 int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicle *v,

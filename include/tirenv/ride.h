@@ -134,12 +134,10 @@ tirenv_ride_plan_params tirenv_ride_plan_params_default(void);
  * from the rear axle's start to the furthest end of the front axle, grid_margin beyond both
  * (tirenv_ride_span_grid). */
 typedef struct {
-    double x_from;         /* the front axle's start of every run, m (run[j].x_front0) */
     double x0;             /* the grid's first position, m */
     double dx;             /* the grid's spacing, m */
     size_t n;              /* the grid's points */
-    size_t n_runs;         /* runs, one per speed */
-    tirenv_ride_settings run[TIRENV_RIDE_PLAN_RUNS]; /* speed, x_front0 = x_from, duration
+    tirenv_ride_settings run[TIRENV_RIDE_PLAN_RUNS]; /* one per speed: speed, x_front0, duration
                             * (to x_to, or the span's end at the speed), dt, method, tol */
 } tirenv_ride_plan;
 

@@ -86,7 +86,7 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-/* --speed V[,V...]: 1 to RIDE_MAX_SPEEDS speeds, each as the library reads one (its error
+/* --speed V[,V...]: 1 to TIRENV_RIDE_PLAN_RUNS speeds, each as the library reads one (its error
  * names what a speed must be). */
 static int parse_speeds(void *dst, const char *arg)
 {
@@ -97,9 +97,9 @@ static int parse_speeds(void *dst, const char *arg)
         char *comma = strchr(p, ',');
         if (comma)
             *comma = '\0';
-        if (!*p || r->n_speeds == RIDE_MAX_SPEEDS) {
+        if (!*p || r->n_speeds == TIRENV_RIDE_PLAN_RUNS) {
             cli_error("ride: --speed expects 1 to %d comma-separated speeds, got '%s'",
-                      RIDE_MAX_SPEEDS, arg);
+                      TIRENV_RIDE_PLAN_RUNS, arg);
             return CLI_EXIT_USAGE;
         }
         tirenv_diag d;

@@ -8,7 +8,7 @@
 #include "tirenv/nn.h"
 #include "tirenv/ride.h"
 
-enum { RIDE_MAX_MODELS = 8, RIDE_MAX_SPEEDS = TIRENV_RIDE_PLAN_RUNS };
+enum { RIDE_MAX_MODELS = 8 };
 
 /* One column of the tables and plots: a model with one way of enveloping. */
 typedef struct {
@@ -29,7 +29,7 @@ typedef struct {
     char speed_buf[256];
     const tirenv_model_type *models[RIDE_MAX_MODELS];
     size_t n_models;
-    double speeds[RIDE_MAX_SPEEDS];  /* m/s */
+    double speeds[TIRENV_RIDE_PLAN_RUNS];  /* m/s */
     size_t n_speeds;
     tirenv_ride_enveloping envelopings[TIRENV_RIDE_N_ENVELOPING];  /* --enveloping, in order */
     size_t n_envelopings;

@@ -27,10 +27,8 @@ int tirenv_core__brent_set(tirenv_core__brent *s, const tirenv_core__brent_fn f,
                            const double lo, const double hi)
 {
     const double f_lo = f(lo, params);
-    if (!isfinite(f_lo)) {
-        s->f = f, s->params = params, s->root = 0.5 * (lo + hi), s->lo = lo, s->hi = hi;
-        return TIRENV_CORE__BRENT_NOT_FINITE;
-    }
+    if (!isfinite(f_lo)) /* f(hi) is not asked for then */
+        return tirenv_core__brent_set_values(s, f, params, lo, f_lo, hi, NAN);
     return tirenv_core__brent_set_values(s, f, params, lo, f_lo, hi, f(hi, params));
 }
 

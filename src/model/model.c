@@ -147,10 +147,10 @@ void *tirenv_model__track_state(const tirenv_model *m)
         ops->free(state);
         return NULL;
     }
-    if (state && net)
+    if (state && net) {
         net->set_extrapolate(state, m->extrapolate);
-    if (state && net)
         net->stream_window(state, m->windowed ? &m->window : NULL);
+    }
     return state;
 }
 

@@ -400,8 +400,8 @@ static void warm_set(tirenv_springs__cc *c)
     }
 }
 
-/* Room in warm_ids for every row between elements (keep_warm fills it in the solve's last
- * pass over the rows, with no count before). */
+/* Room in warm_ids for every row (keep_warm fills it in the solve's last pass over the rows,
+ * with no count before). */
 static int reserve_warm(tirenv_springs__cc *c)
 {
     if (c->n_rows <= c->cap_warm)

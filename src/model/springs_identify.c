@@ -42,7 +42,8 @@ static int unit_load(const tirenv_springs_params *par, double beta, size_t n, co
     return status;
 }
 
-/* For a ratio beta, the least-squares c_r of log(load) at the reference's deflections and the
+/* For a ratio beta, the least-squares c_r of log(load) at the reference's deflections (into *c_r
+ * unless NULL) and the
  * sum of squared residuals: those of log(load), and those of log(contact length) at the same
  * deflections, which c_r does not change. Both relative, so a per cent of either weighs the
  * same. */
@@ -62,7 +63,8 @@ static int residual(const tirenv_springs_params *par, double log_beta, size_t n,
         const double r_l = l[i] > 0 ? log(l[i] / l_ref[i]) : INFINITY;
         *ss += (r[i] - mean) * (r[i] - mean) + r_l * r_l;
     }
-    *c_r = exp(mean);
+    if (c_r)
+        *c_r = exp(mean);
     return TIRENV_OK;
 }
 
@@ -86,23 +88,23 @@ int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double l
                                 load[i], deflection[i], contact_length[i], par->R0);
     const double g = 0.5 * (sqrt(5.0) - 1);
     double a = log(1e-6), b = log(10.0);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a), c1, c2, s1, s2;
-    int status = residual(par, x1, n, load, deflection, contact_length, &c1, &s1, diag);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a), s1, s2;
+    int status = residual(par, x1, n, load, deflection, contact_length, NULL, &s1, diag);
     if (!status)
-        status = residual(par, x2, n, load, deflection, contact_length, &c2, &s2, diag);
+        status = residual(par, x2, n, load, deflection, contact_length, NULL, &s2, diag);
     for (int k = 0; k < 60 && !status; k++) {
         if (s1 <= s2) {
             b = x2;
             x2 = x1;
             s2 = s1;
             x1 = b - g * (b - a);
-            status = residual(par, x1, n, load, deflection, contact_length, &c1, &s1, diag);
+            status = residual(par, x1, n, load, deflection, contact_length, NULL, &s1, diag);
         } else {
             a = x1;
             x1 = x2;
             s1 = s2;
             x2 = a + g * (b - a);
-            status = residual(par, x2, n, load, deflection, contact_length, &c2, &s2, diag);
+            status = residual(par, x2, n, load, deflection, contact_length, NULL, &s2, diag);
         }
     }
     double c_r, ss;

@@ -161,7 +161,6 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
                                        const tirenv_springs__cc_tire *T, double x[],
                                        double lam[])
 {
-    /* the rows' KKT unknowns are N + row */
     const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
     const double *S = c->schur;
     /* K w = b_w + G^T lambda, G w = b_r: w = w0 + K^-1 G^T lambda with w0 = K^-1 b_w, and

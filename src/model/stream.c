@@ -280,7 +280,7 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
             /* The block's positions this window serves: the first always. */
             const size_t block_end = (k / stream_block + 1) * stream_block;
             const size_t end = n < block_end ? n : block_end;
-            size_t nb = 1, failed = 0;
+            size_t nb = 1;
             b.x[0] = x;
             for (; k + nb < end; ++nb) {
                 const double x_k = x_from + (double)(k + nb) * dx;
@@ -288,7 +288,7 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
                     break;
                 b.x[nb] = x_k;
             }
-            if ((status = tirenv_model_envelope(m, nb, b.x, b.pt, &failed, diag)))
+            if ((status = tirenv_model_envelope(m, nb, b.x, b.pt, NULL, diag)))
                 break;
             for (size_t j = 0; j < nb && !status; ++j)
                 if (!(status = sink(ctx, &b.pt[j])))

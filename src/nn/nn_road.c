@@ -326,14 +326,14 @@ static int build(tirenv_nn_road *r, const tirenv_profile *p, const tirenv_nn_roa
     const double m = ceil(2 * a / ds) + 2;
     const double i_lo = win ? floor((x_first - x_anchor) / ds) : 0;
     const double steps = ceil((x_last - x_anchor) / ds) - i_lo;
-    if (!(x_first >= x_anchor) || !(steps + 2 * m + 1 <= max_samples))
+    if (!(x_first >= x_anchor))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "window",
+                            "a window starting at x = %g m, before the road's first vertex at "
+                            "%g m", x_first, x_anchor);
+    if (!(steps + 2 * m + 1 <= max_samples))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "spacing",
-                            x_first >= x_anchor ? "a profile %g m long at a spacing of %g m needs "
-                                             "%.0f baseline points; expected at most %.0f "
-                                             "(raise the spacing)"
-                                           : "a window %g m long starts before the road's "
-                                             "first vertex (spacing %g m, %.0f points, at "
-                                             "most %.0f)",
+                            "a profile %g m long at a spacing of %g m needs %.0f baseline "
+                            "points; expected at most %.0f (raise the spacing)",
                             x_last - x_first, ds, steps + 2 * m + 1, max_samples);
     const size_t n_g = (size_t)(steps + 2 * m) + 1, n_max = n_g + 3 * tirenv_profile_size(p);
     const double tol = 1e-9 * ds;  /* round-off in the resampling points' abscissae */

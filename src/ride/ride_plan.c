@@ -124,10 +124,8 @@ int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicl
                             "%.3g input positions (from %g m to %g m every %g m); at most "
                             "%.0f", n, x0, x_to_max + pp->span.grid_margin, dx,
                             pp->max_points);
-    plan->x_from = x_from;
     plan->x0 = x0;
     plan->dx = dx;
     plan->n = (size_t)n;
-    plan->n_runs = n_speeds;
     return TIRENV_OK;
 }
