@@ -29,7 +29,7 @@ fi
 installed=$(dpkg-query -W -f='${Package} ${Status}\n' $need 2>/dev/null || true)
 missing=""
 for pkg in $need; do
-    if ! printf '%s\n' "$installed" | grep -q -x "$pkg install ok installed"; then
+    if ! printf '%s\n' "$installed" | grep -q -x "$pkg [a-z]* ok installed"; then
         missing="$missing $pkg"
     fi
 done

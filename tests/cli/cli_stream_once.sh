@@ -29,6 +29,7 @@ bad() {
 }
 # Whole mode's error line for the road in $1 (the expected one), in ./want.
 want_error() {
+    rm -f want
     run "$bin" envelope $cam --profile "$1" -o w.csv
     [ $rc -eq 2 ] && no_file w.csv && cp err want
 }

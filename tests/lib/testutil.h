@@ -109,11 +109,12 @@ extern const double tirenv_test_fit_design[6][3];
 void tirenv_test_model_case(tirenv_model *m, double R0, const double design[3],
                             const char *name, size_t n, tirenv_case *c);
 
-/* A cmocka group setup: *state the network trained on the data set's train and control
- * cases (data/dataset, one Levenberg-Marquardt restart); the teardown frees it. */
 /* An nn model of the default tire (tirenv_test_default_tire) evaluating nn at the tire's R0;
  * extrapolation allowed (1), refused (0) or left as the model has it (-1). */
 tirenv_model *tirenv_test_nn_model(const tirenv_nn *nn, int extrapolate);
+
+/* A cmocka group setup: *state the network trained on the data set's train and control
+ * cases (data/dataset, one Levenberg-Marquardt restart); the teardown frees it. */
 int tirenv_test_nn_setup(void **state);
 int tirenv_test_nn_teardown(void **state);
 

@@ -189,8 +189,9 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
  * load, does not follow to 5 % at both ends of the range: the difference is the one
  * tirenv_tir_derive measures and says (origin), bounded here per file at half a per cent
  * above what was measured (6.7, 6.0, 8.1, 5.1 and 7.5 %; docs/models.md 14.2 has why neither
- * fitting the ring over the range nor a stiffer belt brings it within 5 %). A file's own Q_RA1, Q_RA2 are kept and their difference from
- * the ring said (over 25 % on both files that have them). Figures: docs/models.md 14.2. */
+ * fitting the ring over the range nor a stiffer belt brings it within 5 %). A file's own
+ * Q_RA1, Q_RA2 are kept and their difference from the ring said (over 25 % on both files that
+ * have them). Figures: docs/models.md 14.2. */
 static void test_derived_pairs(void **state)
 {
     (void)state;
@@ -271,14 +272,6 @@ static void test_derived_from_mftyre(void **state)
     assert_memory_equal(&t, &before, sizeof t);
 }
 
-static void write_file(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
 /* The derived models follow the file's pressure dependence: with PFZ1 the stiffness at FNOMIN
  * is VERTICAL_STIFFNESS*(1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES) (MF-Tyre 6.1), so two
  * pressures give the ratio of those factors (here 1.2625/0.895) to the inversion's 1e-7. */
@@ -298,7 +291,7 @@ static void test_pressure_dependence(void **state)
                  "[OPERATING_CONDITIONS]\nINFLPRES = %g\nNOMPRES = %g\n"
                  "[VERTICAL]\nFNOMIN = 4000\nVERTICAL_STIFFNESS = 209651.5\nPFZ1 = %g\n",
                  p[i], p0, pfz1);
-        write_file(path, text);
+        tirenv_test_write_text(path, text);
         tirenv_tire t = tirenv_tire_default();
         tirenv_diag d;
         tirenv_tir_origin o;
@@ -329,8 +322,8 @@ static void test_refuses_naming_the_key(void **state)
     assert_non_null(mkdtemp(dir));
     char path[128];
     snprintf(path, sizeof path, "%s/nofnomin.tir", dir);
-    write_file(path, "[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\n"
-                     "VERTICAL_STIFFNESS = 1.75e5\n");
+    tirenv_test_write_text(path, "[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\n"
+                                "VERTICAL_STIFFNESS = 1.75e5\n");
     tirenv_tire t = tirenv_tire_default();
     tirenv_diag d;
     tirenv_tir_origin o;
@@ -360,9 +353,10 @@ static void test_update_in_place(void **state)
     assert_non_null(mkdtemp(dir));
     char path[128];
     snprintf(path, sizeof path, "%s/t.tir", dir);
-    write_file(path, "[MDI_HEADER]\nFILE_TYPE = 'tir'\n! a header comment\n$---rule\n"
-                     "[DIMENSION]\nUNLOADED_RADIUS = 0.68   $ R0, m\n"
-                     "[ENVELOPING_SPRINGS]\n$ keep me\nRADIAL_STIFFNESS = 7.83e5   $ c_r\n");
+    tirenv_test_write_text(path,
+                           "[MDI_HEADER]\nFILE_TYPE = 'tir'\n! a header comment\n$---rule\n"
+                           "[DIMENSION]\nUNLOADED_RADIUS = 0.68   $ R0, m\n"
+                           "[ENVELOPING_SPRINGS]\n$ keep me\nRADIAL_STIFFNESS = 7.83e5   $ c_r\n");
     const tirenv_tir_value v[] = {
         {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", 3.6912e5},
         {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", 3.9518e4},
