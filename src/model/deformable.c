@@ -27,10 +27,7 @@ typedef struct {
     const tirenv_profile *prof;  /* current profile (borrowed) */
     double G;                    /* load, N */
     double z_flat;               /* flat-ground centre height at G, m */
-    double z_prev;               /* warm start: last equilibrium, m */
-    int have_prev;
-    double x_prev, x_prev2, z_prev2; /* the last two positions (m) and the one before's z */
-    int have_prev2;
+    tirenv_deformable_history prev; /* warm start: the last two equilibria */
     size_t rigid_hint;           /* profile segment of the last position, for the bracket */
     /* The last flat-ground equilibrium: its load (N) and point, so that tirenv_model_set,
      * which solves it first, does not evaluate it again. */
@@ -335,7 +332,7 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
     st->prof = p;
     st->G = load;
     st->z_flat = z_flat;
-    st->have_prev = st->have_prev2 = 0;
+    tirenv_deformable_history_clear(&st->prev);
     /* tirenv_model_set has just solved the flat ground at this load: its point is z_flat. */
     tirenv_eq_point flat = st->flat_point;
     int status = TIRENV_OK;
@@ -366,10 +363,7 @@ static int deformable_set_load(void *state, double load, double *z_flat, tirenv_
     tirenv_eq_point p;
     if ((status = solve_flat(st, load, z0, &p, diag)))
         return status;
-    if (st->have_prev)
-        st->z_prev += p.z - st->z_flat;
-    if (st->have_prev2)
-        st->z_prev2 += p.z - st->z_flat;
+    tirenv_deformable_history_shift(&st->prev, p.z - st->z_flat);
     st->G = load;
     st->z_flat = *z_flat = p.z;
     st->flat_at = p;
@@ -400,13 +394,13 @@ static void deformable_state_save(const void *state, unsigned char *buf)
     memset(&sv, 0, sizeof sv);  /* the padding too: the same state, the same bytes */
     sv.G = st->G;
     sv.z_flat = st->z_flat;
-    sv.z_prev = st->z_prev;
+    sv.z_prev = st->prev.z1;
     sv.flat_at = st->flat_at;
-    sv.have_prev = st->have_prev;
-    sv.x_prev = st->x_prev;
-    sv.x_prev2 = st->x_prev2;
-    sv.z_prev2 = st->z_prev2;
-    sv.have_prev2 = st->have_prev2;
+    sv.have_prev = st->prev.have1;
+    sv.x_prev = st->prev.x1;
+    sv.x_prev2 = st->prev.x2;
+    sv.z_prev2 = st->prev.z2;
+    sv.have_prev2 = st->prev.have2;
     buf = tirenv_model__put(buf, &sv, sizeof sv);
     st->def->state_save(st->elem, buf);
     st->def->state_save(st->flat_elem, buf + st->def->state_size(st->elem));
@@ -424,13 +418,13 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
                             st->type->name, sv.G, sv.z_flat);
     st->G = sv.G;
     st->z_flat = sv.z_flat;
-    st->z_prev = sv.z_prev;
+    st->prev.z1 = sv.z_prev;
     st->flat_at = sv.flat_at;
-    st->have_prev = sv.have_prev;
-    st->x_prev = sv.x_prev;
-    st->x_prev2 = sv.x_prev2;
-    st->z_prev2 = sv.z_prev2;
-    st->have_prev2 = sv.have_prev2;
+    st->prev.have1 = sv.have_prev;
+    st->prev.x1 = sv.x_prev;
+    st->prev.x2 = sv.x_prev2;
+    st->prev.z2 = sv.z_prev2;
+    st->prev.have2 = sv.have_prev2;
     st->def->state_restore(st->elem, buf);
     st->def->state_restore(st->flat_elem, buf + st->def->state_size(st->elem));
     return TIRENV_OK;
@@ -486,10 +480,8 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
                               .fz = st->flat_at.F, .contacts = st->flat_at.contacts};
         out->slope = tirenv_model__slope(out);
-        st->have_prev2 = 0; /* the next start: this height (the level may end there) */
-        st->x_prev = x;
-        st->z_prev = out->z;
-        st->have_prev = 1;
+        /* The next start: this height (the level may end there). */
+        tirenv_deformable_history_restart(&st->prev, x, out->z);
         return TIRENV_OK;
     }
     const double deflection = R0 - st->z_flat;
@@ -498,17 +490,15 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
      * deflection), the plain secant of eq. 2 (no safeguard: two starts above contact break it
      * down) and Brent (its iterations grow with the bracket) keep the disc's, the tightest. */
     double z_lo, z_hi;
-    const int cheap = st->have_prev && st->tire.eq.method == TIRENV_EQ_NEWTON &&
+    const int cheap = st->prev.have1 && st->tire.eq.method == TIRENV_EQ_NEWTON &&
                       st->def->bracket(st->elem, st->prof, x, &z_lo, &z_hi);
     if (!cheap)
         tirenv_rigid__bracket(1, &st->prof, R0, x, &st->rigid_hint, &z_lo, &z_hi);
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
-        .z0 = st->have_prev ? tirenv_deformable_predict(st->def->extrapolate, st->have_prev2, x,
-                                                       st->x_prev, st->z_prev, st->x_prev2,
-                                                       st->z_prev2)
-                            : z_hi - deflection,
+        .z0 = tirenv_deformable_history_start(&st->prev, st->def->extrapolate, x,
+                                              z_hi - deflection),
         .dz_hint = deflection,
     };
     force_ctx fc = {st, st->prof, x};
@@ -519,11 +509,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     out->iterations = res.evals;
     if (status)
         return status;
-    st->have_prev2 = st->have_prev;
-    st->x_prev2 = st->x_prev, st->z_prev2 = st->z_prev;
-    st->x_prev = x;
-    st->z_prev = res.point.z;
-    st->have_prev = 1;
+    tirenv_deformable_history_push(&st->prev, x, res.point.z);
     tirenv_model__eq_point(&res.point, st->z_flat, out);
     return TIRENV_OK;
 }

@@ -67,6 +67,63 @@ int tirenv_deformable_invariant(const tirenv_tire *tire);
 double tirenv_deformable_predict(int extrapolate, int have2, double x, double x1, double z1,
                                  double x2, double z2);
 
+/* The warm start's history: the last two equilibria of a sweep, the last first, for
+ * tirenv_deformable_predict; deformable.c keeps one per model, tracks.c one per set of tracks.
+ * Clearing or restarting it leaves the older entries' values (only the flags say what holds),
+ * so a saved state's bytes are what they were. */
+typedef struct {
+    double x1, z1;               /* the last equilibrium: position and centre height, m */
+    double x2, z2;               /* the one before, m */
+    int have1, have2;
+} tirenv_deformable_history;
+
+/* No equilibrium yet: the next start is cold. */
+static inline void tirenv_deformable_history_clear(tirenv_deformable_history *h)
+{
+    h->have1 = h->have2 = 0;
+}
+
+/* The equilibrium at (x, z) (m), after the last. */
+static inline void tirenv_deformable_history_push(tirenv_deformable_history *h, double x,
+                                                  double z)
+{
+    h->have2 = h->have1;
+    h->x2 = h->x1, h->z2 = h->z1;
+    h->x1 = x;
+    h->z1 = z;
+    h->have1 = 1;
+}
+
+/* The equilibrium at (x, z) (m) as the only one: the line through the last two is not
+ * continued over it (a level stretch, whose height may end there). */
+static inline void tirenv_deformable_history_restart(tirenv_deformable_history *h, double x,
+                                                     double z)
+{
+    h->have2 = 0;
+    h->x1 = x;
+    h->z1 = z;
+    h->have1 = 1;
+}
+
+/* Every height held moved by dz (m): a new load's flat-ground height moved so. */
+static inline void tirenv_deformable_history_shift(tirenv_deformable_history *h, double dz)
+{
+    if (h->have1)
+        h->z1 += dz;
+    if (h->have2)
+        h->z2 += dz;
+}
+
+/* The start of the equilibrium at x (m): tirenv_deformable_predict of the history (with the
+ * model record's extrapolate), z_cold (m) while it is empty. */
+static inline double tirenv_deformable_history_start(const tirenv_deformable_history *h,
+                                                     int extrapolate, double x, double z_cold)
+{
+    return h->have1 ? tirenv_deformable_predict(extrapolate, h->have2, x, h->x1, h->z1, h->x2,
+                                                h->z2)
+                    : z_cold;
+}
+
 /* The hub forces at (x, z) on the profile set of a state of tirenv_deformable_ops, for the
  * equilibrium over several tracks (tracks.c). */
 int tirenv_deformable_forces(void *state, double x, double z, tirenv_eq_point *out,

@@ -34,10 +34,7 @@ struct tirenv_model__tracks {
     tirenv_point *pt;             /* [n] one position's points */
     tirenv_point *block;          /* [TRACKS_BLOCK], a batched sweep's points of one track */
     tirenv_eq_solver *solver;     /* the equilibrium's, of the tire's method */
-    double z_prev;                /* warm start: last equilibrium, m */
-    int have_prev;
-    double x_prev, x_prev2, z_prev2; /* the last two positions (m) and the one before's z */
-    int have_prev2;
+    tirenv_deformable_history prev; /* warm start: the last two equilibria */
 };
 
 static const char *const rule_names[] = {"mean", "highest", "equilibrium"};
@@ -244,7 +241,7 @@ int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *con
     struct tirenv_model__tracks *t = m->tracks;
     t->n_given = n;
     t->n = distinct(n, profiles, weights, t->map, t->prof, t->w);
-    t->have_prev = t->have_prev2 = 0;
+    tirenv_deformable_history_clear(&t->prev);
     if (t->n == 1)  /* one track: the ordinary path, bit for bit */
         return tirenv_model_set(m, t->prof[0], load, diag);
     for (size_t k = 0; k < t->n; ++k)
@@ -328,7 +325,7 @@ int tirenv_model__tracks_set_load(tirenv_model *m, double load, tirenv_diag *dia
         m->profile = NULL;
         return status;
     }
-    t->have_prev = t->have_prev2 = 0;
+    tirenv_deformable_history_clear(&t->prev);
     tracks_took(m, load, flat.z_flat);
     return TIRENV_OK;
 }
@@ -385,10 +382,8 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
-        .z0 = t->have_prev ? tirenv_deformable_predict(m->type->deformable->extrapolate,
-                                                       t->have_prev2, x, t->x_prev, t->z_prev,
-                                                       t->x_prev2, t->z_prev2)
-                           : z_hi - deflection,
+        .z0 = tirenv_deformable_history_start(&t->prev, m->type->deformable->extrapolate, x,
+                                              z_hi - deflection),
         .dz_hint = deflection,
     };
     sum_ctx c = {m, x};
@@ -399,11 +394,7 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     out->iterations = res.evals;
     if (status)
         return status;
-    t->have_prev2 = t->have_prev;
-    t->x_prev2 = t->x_prev, t->z_prev2 = t->z_prev;
-    t->x_prev = x;
-    t->z_prev = res.point.z;
-    t->have_prev = 1;
+    tirenv_deformable_history_push(&t->prev, x, res.point.z);
     tirenv_model__eq_point(&res.point, m->z_flat, out);
     return TIRENV_OK;
 }
