@@ -162,10 +162,10 @@ check "flat --load: load in N and kN, stiffness in N/m and kN/m" \
     '[ $rc -eq 0 ] && grep -q "15000 N (15 kN)" out && grep -q "N/m (.* kN/m)" out'
 # --quick: every part of the bench on a 100 m road (the full 1 km one took most of this
 # test's time under AddressSanitizer); cli_bench.sh checks the JSON figures themselves. This
-# is the one run of the tables (--quick is --repeat 1: cli_bench.sh's own run of the same
-# tables was a second bench of the same work).
-run "$bin" bench --repeat 1 --quick
-check "bench --repeat 1 --quick: four methods, the machine, the single-thread note" \
+# is the one run of the tables (--quick runs each method once: cli_bench.sh's own run of the
+# same tables was a second bench of the same work).
+run "$bin" bench --quick
+check "bench --quick: four methods, the machine, the single-thread note" \
     '[ $rc -eq 0 ] && [ $(grep -Ec "^(rigid|springs newton|springs secant|springs brent) +[0-9]" out) -eq 4 ] &&
      grep -q "^machine:" out && grep -q "single-threaded" out'
 check "bench without --json: the tables with the ring's row, no JSON" \

@@ -1,10 +1,9 @@
 #!/bin/sh
 # tirenv bench --json: every figure of one run as one JSON object of name: number pairs, the
 # figures the speed goals are stated in among them, all positive. That the tables stay the
-# default is checked by cli.sh, on its run of bench --repeat 1 --quick (the same work as
-# --quick), in both builds. --quick keeps it to seconds (one run each, a 100 m road); the
-# numbers are not checked against targets here (timings are no test), only that each was
-# measured.
+# default is checked by cli.sh, on its run of bench --quick, in both builds. --quick keeps it
+# to seconds (one run each, a 100 m road); the numbers are not checked against targets here
+# (timings are no test), only that each was measured.
 # Usage: tests/cli/cli_bench.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
 . "$(dirname "$0")/../lib/clilib.sh"

@@ -69,10 +69,12 @@ printf 'x_m,z_m\n0,0\n3.1,0\n3.1,0.05\n3.25,0.05\n3.25,0\n6.4,0\n6.4,0.08\n6.46,
 printf '6.52,0\n6.52,0.03\n6.8,0.03\n6.8,0\n10,0\n10,0.06\n22,0.06\n22,0\n30,0\n' >>cleats.csv
 run "$bin" envelope --model nn --nn net.json --profile cleats.csv --contact-length 0.38 \
     --extrapolate -o cleats_w.csv
+rc_w=$rc
 run "$bin" envelope --model nn --nn net.json --profile cleats.csv --contact-length 0.38 \
     --extrapolate --stream -o cleats_s.csv
 check "cleats and a plateau longer than the window: the same bytes, the curve lifted" \
-    '[ $rc -eq 0 ] && [ $(rows cleats_s.csv) -gt 30000 ] && cmp -s cleats_w.csv cleats_s.csv &&
+    '[ $rc -eq 0 ] && [ $rc_w -eq 0 ] && [ $(rows cleats_s.csv) -gt 30000 ] &&
+     cmp -s cleats_w.csv cleats_s.csv &&
      awk -F, "NR > 1 && \$3 > 0.05 { n++ } END { exit !(n > 1000) }" cleats_s.csv'
 printf 'x_m,z_m\n-0.05,0\n-0.05,0.075\n0.05,0.075\n0.05,0\n' >cleat.csv
 whole_stream one --profile cleat.csv --contact-length 0.38 --dx 0.0001 -o one.csv
