@@ -155,6 +155,27 @@ static int solve_flat(deformable_state *st, double load, double z0, tirenv_eq_po
     return TIRENV_OK;
 }
 
+/* TIRENV_ERANGE for a value of one of the valid range's three quantities beyond the range's
+ * end (docs/models.md section 1.3): the value, the end, and the other two quantities there. */
+enum { RANGE_LOAD, RANGE_HEIGHT, RANGE_LENGTH };
+static int beyond_range(const deformable_state *st, int which, double value,
+                        tirenv_diag *diag)
+{
+    static const char *const field[] = {"load", "centre height", "contact length"};
+    char end[3][32], others[128];
+    snprintf(end[RANGE_LOAD], sizeof end[0], "%.6g N", st->G_max);
+    snprintf(end[RANGE_HEIGHT], sizeof end[0], "%.4g m", st->z_min);
+    snprintf(end[RANGE_LENGTH], sizeof end[0], "%.4g m", st->l_max);
+    const int a = which == RANGE_LOAD ? RANGE_HEIGHT : RANGE_LOAD;
+    const int b = which == RANGE_LENGTH ? RANGE_HEIGHT : RANGE_LENGTH;
+    snprintf(others, sizeof others, "%s %s, %s %s", field[a], end[a], field[b], end[b]);
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0, field[which],
+                        "%g %s is beyond the %s model's valid range, %s %s (%s), %s", value,
+                        which == RANGE_LOAD ? "N" : "m", st->type->name,
+                        which == RANGE_HEIGHT ? "down to" : "up to", end[which], others,
+                        st->range_why);
+}
+
 /* TIRENV_ERANGE if the load is beyond the valid range (docs/models.md section 1.3): for a
  * first load (deformable_flat) and a new one (deformable_set_load) alike. */
 static int load_in_range(deformable_state *st, double load, tirenv_diag *diag)
@@ -163,10 +184,7 @@ static int load_in_range(deformable_state *st, double load, tirenv_diag *diag)
     if (status)
         return on_flat_ground(load, status, diag);
     if (load > st->G_max)
-        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
-                            "%g N is beyond the %s model's valid range, up to %.6g N (centre "
-                            "height %.4g m, contact length %.4g m), %s", load, st->type->name,
-                            st->G_max, st->z_min, st->l_max, st->range_why);
+        return beyond_range(st, RANGE_LOAD, load, diag);
     return TIRENV_OK;
 }
 
@@ -279,10 +297,7 @@ static int deformable_load_for_contact_length(void *state, double l_c, double *l
     if (status)
         return status;
     if (l_c > st->l_max)
-        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "contact length",
-                            "%g m is beyond the %s model's valid range, up to %.4g m (load "
-                            "%.6g N, centre height %.4g m), %s", l_c, st->type->name, st->l_max, st->G_max,
-                            st->z_min, st->range_why);
+        return beyond_range(st, RANGE_LENGTH, l_c, diag);
     double z = 0;
     status = z_for_contact_length(st, l_c, st->z_min, &z, diag);
     tirenv_eq_point p;
@@ -307,10 +322,7 @@ static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
     if (status)
         return status;
     if (z < st->z_min)
-        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "centre height",
-                            "%g m is beyond the %s model's valid range, down to %.4g m (load "
-                            "%.6g N, contact length %.4g m), %s", z, st->type->name, st->z_min,
-                            st->G_max, st->l_max, st->range_why);
+        return beyond_range(st, RANGE_HEIGHT, z, diag);
     tirenv_eq_point p;
     double l_c;
     if ((status = st->def->contact_length(st->flat_elem, st->flat, z, &l_c, &p, diag)))
