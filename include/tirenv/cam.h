@@ -44,6 +44,14 @@ int tirenv_cam_tandem(const tirenv_profile *p, const tirenv_cam_shape *cam, doub
 double tirenv_cam_q_fz1(double c_z, double R0, double fnomin, double q_fz2);
 double tirenv_cam_vertical_root(double scale, double q1, double q2, double g);
 
+/* MF-Tyre's vertical law above, F_z/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 with s = rho/R0, fitted to
+ * n >= 2 flat-ground states: rho[i] (m) a reference's deflection at the load G[i] (N), R0 (m),
+ * FNOMIN (N), in relative error of the load by the 2x2 normal equations (docs/models.md
+ * section 14.1). 0 with Q_FZ1, Q_FZ2 in *q_fz1, *q_fz2; TIRENV_EINVAL, outputs untouched, where
+ * the states do not separate the two terms (n < 2, or deflections too alike). */
+int tirenv_cam_fit_vertical_law(double R0, double fnomin, size_t n, const double rho[],
+                                const double G[], double *q_fz1, double *q_fz2);
+
 /* MF-Tyre's contact-length law a/R0 = Q_RA2*s^2 + Q_RA1*s, s = sqrt(rho/R0) (section 7.3),
  * fitted to n >= 2 flat-ground states of the same tire: rho[i] the cam's own static
  * deflection (m) at a load and l[i] (m) a reference's contact length 2a at that load, in

@@ -51,29 +51,59 @@ double tirenv_cam_vertical_root(double scale, double q1, double q2, double g)
     return scale * 2 * g / (q1 + sqrt(disc));
 }
 
-/* The rows (w*s^2, w*s) with w = 2*R0/l_i make both terms relative to the contact length; the
- * normal equations [A11 A12; A12 A22] (Q_RA2, Q_RA1) = (b1, b2) are solved by Cramer's rule,
- * refused where the determinant is within 1e-12 of A11*A22 of zero. */
+/* The least-squares fit of 1 ~ p*u_i + q*v_i over rows (u_i, v_i), by its 2x2 normal
+ * equations [A11 A12; A12 A22] (p, q) = (b1, b2): MF-Tyre's vertical and contact-length laws
+ * are each linear in their two keys. */
+typedef struct {
+    double A11, A12, A22, b1, b2;
+} normal2;
+
+static void normal2_add(normal2 *e, double u, double v)
+{
+    e->A11 += u * u;
+    e->A12 += u * v;
+    e->A22 += v * v;
+    e->b1 += u;
+    e->b2 += v;
+}
+
+/* (p, q) of n rows by Cramer's rule; TIRENV_EINVAL, outputs untouched, where the rows do not
+ * separate the two terms: n < 2, the determinant within 1e-12 of A11*A22 of zero, or p, q not
+ * finite. */
+static int normal2_solve(const normal2 *e, size_t n, double *p, double *q)
+{
+    const double det = e->A11 * e->A22 - e->A12 * e->A12;
+    const double p_ = (e->A22 * e->b1 - e->A12 * e->b2) / det,
+                 q_ = (e->A11 * e->b2 - e->A12 * e->b1) / det;
+    if (n < 2 || !(fabs(det) > 1e-12 * e->A11 * e->A22) || !isfinite(p_) || !isfinite(q_))
+        return TIRENV_EINVAL;
+    *p = p_;
+    *q = q_;
+    return TIRENV_OK;
+}
+
+/* The rows (s/g, s^2/g) with g = G_i/FNOMIN make both terms relative to the load. */
+int tirenv_cam_fit_vertical_law(double R0, double fnomin, size_t n, const double rho[],
+                                const double G[], double *q_fz1, double *q_fz2)
+{
+    normal2 e = {0};
+    for (size_t i = 0; i < n; i++) {
+        const double s = rho[i] / R0, g = G[i] / fnomin;
+        normal2_add(&e, s / g, s * s / g); /* the rows for Q_FZ1 and Q_FZ2 */
+    }
+    return normal2_solve(&e, n, q_fz1, q_fz2);
+}
+
+/* The rows (w*s^2, w*s) with w = 2*R0/l_i make both terms relative to the contact length. */
 int tirenv_cam_fit_contact_law(double R0, size_t n, const double rho[], const double l[],
                                double *q_ra1, double *q_ra2)
 {
-    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    normal2 e = {0};
     for (size_t i = 0; i < n; i++) {
         const double s = sqrt(rho[i] / R0), w = 2 * R0 / l[i];
-        const double u = w * s * s, v = w * s;  /* the rows for Q_RA2 and Q_RA1 */
-        A11 += u * u;
-        A12 += u * v;
-        A22 += v * v;
-        b1 += u;
-        b2 += v;
+        normal2_add(&e, w * s * s, w * s); /* the rows for Q_RA2 and Q_RA1 */
     }
-    const double det = A11 * A22 - A12 * A12;
-    const double p = (A22 * b1 - A12 * b2) / det, q = (A11 * b2 - A12 * b1) / det;
-    if (n < 2 || !(fabs(det) > 1e-12 * A11 * A22) || !isfinite(p) || !isfinite(q))
-        return TIRENV_EINVAL;
-    *q_ra2 = p;
-    *q_ra1 = q;
-    return TIRENV_OK;
+    return normal2_solve(&e, n, q_ra2, q_ra1);
 }
 
 static double cam_q_fz1(const tirenv_tire *t)

@@ -27,39 +27,14 @@ static int identify_springs(tirenv_tire *t, size_t n, const tirenv_flat_target t
     return tirenv_springs_identify(&t->springs, n, G, d, l, diag);
 }
 
-/* The least-squares fit of 1 ~ p*u_i + q*v_i over rows (u_i, v_i) (the laws below, in
- * relative error), by its 2x2 normal equations [A11 A12; A12 A22] (p, q) = (b1, b2). */
-typedef struct {
-    double A11, A12, A22, b1, b2;
-} normal2;
-
-static void normal2_add(normal2 *e, double u, double v)
-{
-    e->A11 += u * u;
-    e->A12 += u * v;
-    e->A22 += v * v;
-    e->b1 += u;
-    e->b2 += v;
-}
-
-/* (p, q) by Cramer's rule; 0 where the determinant is within 1e-12 of A11*A22 of zero (the
- * rows do not separate the two terms: p and q are then not finite or meaningless). */
-static int normal2_solve(const normal2 *e, double *p, double *q)
-{
-    const double det = e->A11 * e->A22 - e->A12 * e->A12;
-    *p = (e->A22 * e->b1 - e->A12 * e->b2) / det;
-    *q = (e->A11 * e->b2 - e->A12 * e->b1) / det;
-    return fabs(det) > 1e-12 * e->A11 * e->A22;
-}
-
 /* The cam (section 7.3). Without FNOMIN its vertical law is linear, rho = G/VERTICAL_STIFFNESS,
  * and VERTICAL_STIFFNESS is the geometric mean of the reference's load over deflection (least
  * squares in log deflection). With FNOMIN it is MF-Tyre's quadratic
  * G/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 (s = rho/R0), linear in Q_FZ1 and Q_FZ2, fitted in relative
- * load error by the 2x2 normal equations; VERTICAL_STIFFNESS is then its tangent at FNOMIN,
+ * load error by the 2x2 normal equations (tirenv_cam_fit_vertical_law); VERTICAL_STIFFNESS is then its tangent at FNOMIN,
  * (FNOMIN/R0)*sqrt(Q_FZ1^2 + 4*Q_FZ2). Then a/R0 = Q_RA2*s^2 + Q_RA1*s with s = sqrt(rho/R0),
  * rho the law's deflection at each load, is linear in the two keys, fitted in relative error
- * of the contact length by the 2x2 normal equations. */
+ * of the contact length by the 2x2 normal equations (tirenv_cam_fit_contact_law). */
 static int identify_vertical(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
                              tirenv_diag *diag)
 {
@@ -72,13 +47,13 @@ static int identify_vertical(tirenv_tire *t, size_t n, const tirenv_flat_target 
         t->cam.q_fz2 = 0;
         return TIRENV_OK;
     }
-    normal2 e = {0};
+    double rho[MAX_LOADS], G[MAX_LOADS];
     for (size_t i = 0; i < n; i++) {
-        const double s = tg[i].deflection / R0, g = tg[i].load / F0;
-        normal2_add(&e, s / g, s * s / g);  /* the rows for Q_FZ1 and Q_FZ2 */
+        rho[i] = tg[i].deflection;
+        G[i] = tg[i].load;
     }
     double q1, q2;
-    if (!normal2_solve(&e, &q1, &q2) || !(q1 * q1 + 4 * q2 > 0))
+    if (tirenv_cam_fit_vertical_law(R0, F0, n, rho, G, &q1, &q2) || !(q1 * q1 + 4 * q2 > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
                             "the loads do not separate the vertical law's two terms (give "
                             "loads further apart)");

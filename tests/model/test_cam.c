@@ -726,6 +726,45 @@ static void test_vertical_law_quadratic(void **state)
     assert_string_equal(diag.field, "Q_FZ2");
 }
 
+/* The two least-squares fits of MF-Tyre's laws (tirenv_cam_fit_vertical_law and
+ * tirenv_cam_fit_contact_law, one 2x2 normal-equation solve): on states made by each law from
+ * known keys, both keys come back. The states are exact to a few ulp, so the keys' error is
+ * that round-off times the normal matrices' condition numbers, 1.1e3 and 3.4e2 here (s = rho/R0
+ * from 0.03 to 0.12): at most about 1e-12 relative, measured 1.2e-15; 1e-9 leaves a wide margin
+ * and still catches a wrong row or a swapped key. One state, or states all alike, do not
+ * separate the two terms: TIRENV_EINVAL with the outputs untouched. */
+static void test_law_fits(void **state)
+{
+    (void)state;
+    const double R0 = 0.5137, F0 = 4123.7, q_fz1 = 9.873, q_fz2 = 17.31, q_ra1 = 0.4613,
+                 q_ra2 = 0.8912;
+    const double rho[] = {0.0163, 0.0291, 0.03574, 0.0469, 0.0617};
+    enum { N = sizeof rho / sizeof rho[0] };
+    double G[N], l[N];
+    for (size_t i = 0; i < N; i++) {
+        const double s = rho[i] / R0, r = sqrt(s);
+        G[i] = F0 * (q_fz1 * s + q_fz2 * s * s);
+        l[i] = 2 * R0 * (q_ra2 * r * r + q_ra1 * r);
+    }
+    double p = 0, q = 0;
+    assert_int_equal(tirenv_cam_fit_vertical_law(R0, F0, N, rho, G, &p, &q), TIRENV_OK);
+    assert_near(p, q_fz1, 0, 1e-9);
+    assert_near(q, q_fz2, 0, 1e-9);
+    assert_int_equal(tirenv_cam_fit_contact_law(R0, N, rho, l, &p, &q), TIRENV_OK);
+    assert_near(p, q_ra1, 0, 1e-9);
+    assert_near(q, q_ra2, 0, 1e-9);
+    const double same_rho[] = {rho[2], rho[2], rho[2]}, same_G[] = {G[2], G[2], G[2]},
+                 same_l[] = {l[2], l[2], l[2]};
+    for (size_t n = 1; n <= 3; n += 2) {
+        p = q = 2.385;
+        assert_int_equal(tirenv_cam_fit_vertical_law(R0, F0, n, same_rho, same_G, &p, &q),
+                         TIRENV_EINVAL);
+        assert_int_equal(tirenv_cam_fit_contact_law(R0, n, same_rho, same_l, &p, &q),
+                         TIRENV_EINVAL);
+        assert_true(p == 2.385 && q == 2.385);
+    }
+}
+
 /* The shipped MF-Swift example loads unchanged over the default tire: its radius, vertical
  * stiffness and cam, and tirenv's own sections for this tire (the springs' start values, a
  * car-sized ring); the discretisation and the ring's lugs stay the default's. At 4 kN its patch
@@ -784,6 +823,7 @@ int main(void)
         cmocka_unit_test(test_double_hump),
         cmocka_unit_test(test_flat_and_contact_length),
         cmocka_unit_test(test_vertical_law_quadratic),
+        cmocka_unit_test(test_law_fits),
         cmocka_unit_test(test_model_point),
         cmocka_unit_test(test_model_sweep_exact),
         cmocka_unit_test(test_tire_check),
