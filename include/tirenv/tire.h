@@ -116,6 +116,12 @@ enum {
     TIRENV_CAM_ALL = (1u << 7) - 1
 };
 
+/* The loads a tire with a nominal load FNOMIN is tabled, identified and compared at (tirenv
+ * flat, tirenv identify, tirenv_tir_derive; docs/models.md sections 14.1 and 14.2): these
+ * fractions of FNOMIN, 0.5 to 1.5. */
+enum { TIRENV_NOMINAL_LOADS = 5 };
+extern const double tirenv_nominal_load_fractions[TIRENV_NOMINAL_LOADS];
+
 /* Everything a model needs to know about the tire and how to solve it. */
 typedef struct {
     tirenv_springs_params springs;

@@ -5,10 +5,9 @@
 #include "cli/cli.h"
 
 /* The contact lengths of the paper's working regimes (Table 1 and Table 3), m: the table of
- * a tire file without a nominal load (the default tire's). */
+ * a tire file without a nominal load (the default tire's). A file with FNOMIN is tabled over
+ * its own load range, tirenv_nominal_load_fractions of FNOMIN. */
 static const double regimes[] = {0.28, 0.33, 0.38};
-/* The table of a tire file with FNOMIN: its own load range, these fractions of FNOMIN. */
-static const double nominal_fractions[] = {0.5, 0.75, 1.0, 1.25, 1.5};
 
 static void usage(FILE *fp)
 {
@@ -148,8 +147,7 @@ int cli_flat_main(int argc, char *argv[])
     char what[96] = "at the paper's working regimes";
     if (fnomin > 0)
         snprintf(what, sizeof what, "at 0.5 to 1.5 times its nominal load %.6g N", fnomin);
-    const size_t n = fnomin > 0 ? sizeof nominal_fractions / sizeof nominal_fractions[0]
-                                : sizeof regimes / sizeof regimes[0];
+    const size_t n = fnomin > 0 ? TIRENV_NOMINAL_LOADS : sizeof regimes / sizeof regimes[0];
     if (csv)
         printf("%s%s\n", csv_header, ring ? ",tread_max_m" : "");
     else
@@ -160,7 +158,7 @@ int cli_flat_main(int argc, char *argv[])
     for (size_t i = 0; i < n && !code; ++i) {
         if (fnomin > 0) {
             o.have_load = 1;
-            o.load = nominal_fractions[i] * fnomin;
+            o.load = tirenv_nominal_load_fractions[i] * fnomin;
         } else {
             o.have_contact_length = 1;
             o.contact_length = regimes[i];

@@ -14,10 +14,9 @@
 enum { MAX_LOADS = 32 };
 
 /* Contact lengths (m) at which the reference gives the loads of a tire file without FNOMIN:
- * the span of the paper's working regimes, 0.28 to 0.38 m. */
+ * the span of the paper's working regimes, 0.28 to 0.38 m. A file with FNOMIN gives its own,
+ * tirenv_nominal_load_fractions of it (the range `tirenv flat` shows). */
 static const double regime_lc[] = {0.28, 0.305, 0.33, 0.355, 0.38};
-/* The loads of a tire file with FNOMIN, as fractions of it (the range `tirenv flat` shows). */
-static const double nominal_fractions[] = {0.5, 0.75, 1.0, 1.25, 1.5};
 
 typedef struct {
     double v[MAX_LOADS];
@@ -131,13 +130,14 @@ int cli_identify_main(int argc, char *argv[])
         tirenv_model *m = tirenv_model_alloc(ref, &tire);
         if (!m)
             return cli_fail(TIRENV_ENOMEM, NULL);
-        const size_t n = fnomin > 0 ? sizeof nominal_fractions / sizeof nominal_fractions[0]
-                                    : sizeof regime_lc / sizeof regime_lc[0];
+        const size_t n =
+            fnomin > 0 ? TIRENV_NOMINAL_LOADS : sizeof regime_lc / sizeof regime_lc[0];
         int status = TIRENV_OK;
         for (size_t i = 0; i < n && !status; i++)
-            status = fnomin > 0 ? (loads.v[i] = nominal_fractions[i] * fnomin, TIRENV_OK)
-                                : tirenv_model_load_for_contact_length(m, regime_lc[i],
-                                                                       &loads.v[i], &diag);
+            status = fnomin > 0
+                         ? (loads.v[i] = tirenv_nominal_load_fractions[i] * fnomin, TIRENV_OK)
+                         : tirenv_model_load_for_contact_length(m, regime_lc[i], &loads.v[i],
+                                                                &diag);
         tirenv_model_free(m);
         if (status)
             return cli_fail(status, &diag);

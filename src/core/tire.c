@@ -17,6 +17,8 @@ tirenv_eq_settings tirenv_eq_default(void)
     };
 }
 
+const double tirenv_nominal_load_fractions[TIRENV_NOMINAL_LOADS] = {0.5, 0.75, 1.0, 1.25, 1.5};
+
 /* The default tractor tire: a 14.9R28 (380/85R28) class drive tire at 1.2 bar.
  * R0 = 0.68 m is half its nominal 1.36 m overall diameter. The ring reference tire's values
  * come from the tire's construction and published data; c_r and c_b, VERTICAL_STIFFNESS and

@@ -188,10 +188,10 @@ static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const
                         tirenv_model_type_name(type), fnomin, rho_n);
 }
 
-/* The loads the derived models are identified and compared at: 0.5 to 1.5 times FNOMIN, as
- * tirenv identify takes them (docs/models.md section 14.1). */
-static const double fractions[] = {0.5, 0.75, 1.0, 1.25, 1.5};
-enum { N_LOADS = sizeof fractions / sizeof fractions[0] };
+/* The loads the derived models are identified and compared at: 0.5 to 1.5 times FNOMIN
+ * (tirenv_nominal_load_fractions), as tirenv identify takes them (docs/models.md section
+ * 14.1). */
+enum { N_LOADS = TIRENV_NOMINAL_LOADS };
 
 /* A model's flat-ground states at those loads. */
 typedef struct {
@@ -209,7 +209,7 @@ static int flats(const tirenv_model_type *type, const tirenv_tire *t, double fno
     int status = TIRENV_OK;
     for (size_t i = 0; i < N_LOADS && !status; i++) {
         tirenv_flat f;
-        out->G[i] = fractions[i] * fnomin;
+        out->G[i] = tirenv_nominal_load_fractions[i] * fnomin;
         status = tirenv_model_flat(m, out->G[i], &f, diag);
         out->defl[i] = f.deflection;
         out->l[i] = f.contact_length;
