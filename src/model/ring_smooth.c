@@ -419,9 +419,9 @@ int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *df
         reduced = contact_span(r, 0, r->n_pts, w, 0, &kf, &kl) &&
                   sub_window(r, kf, kl, &a, &b, &k0, &k1);
         if (reduced) {
-            for (size_t k = 0; k < r->n_pts; ++k)
-                if (k < k0 || k >= k1)
-                    r->pts[k].st = 0; /* outside: free, as the whole window's answer has them */
+            /* The points outside pts[k0 .. k1) keep the whole window's states: this Newton
+             * reads and sets only its own, ends_free none, and they are set free below where
+             * the sub-window's answer stands, else set anew by the whole window's Newton. */
             const int st2 = newton_window(r, a, b - a + 1, k0, k1, w + (a - lo), want);
             if (st2 != TIRENV_RING_NEWTON_OK)
                 return tirenv_ring__newton_error(r, st2, b - a + 1, "contact",
