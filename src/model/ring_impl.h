@@ -217,6 +217,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
  * diagnostics only). Nonzero if out of memory. */
 int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[]);
 
+/* The last window's belt-and-tread stiffness, dense ((2 n)^2 entries, lower triangle), as
+ * ring_shear.c's assembly writes it (by_arc 0) or as its exterior's arc does (by_arc 1), for
+ * the test that they agree (allocates); nonzero if out of memory or n < 2. */
+int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
+
 /* A node's tread stiffness k_t R dtheta (N/m) at angle theta (rad) with the centre at x (m):
  * LUG_GROOVE_RATIO between lugs, which turn with the tire (ring.c). */
 double tirenv_ring__tread_kappa(const tirenv_ring *r, double theta, double x);

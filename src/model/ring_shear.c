@@ -929,3 +929,31 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[])
     free(rhs);
     return 0;
 }
+
+/* The window's stiffness of the last evaluation (nodes r->lo .. r->lo + r->n - 1), dense, as
+ * assemble starts it (fill_window, by_arc 0) or as add_arc writes it on a zeroed matrix (by_arc
+ * 1): the two ways this file writes an arc, which must agree bit for bit. K[i N + k] = K_ik for
+ * k <= i, zero above the diagonal (N = 2 n). For tests (it allocates); nonzero if out of memory
+ * or the window is too short for the tail (n < 2). */
+int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n, N = 2 * n, m = N - TAIL;
+    tband A;
+    if (n < 2 || band_alloc(&A, N, TAIL))
+        return 1;
+    if (by_arc) {
+        band_reset(&A, N, TAIL);
+        add_arc(&A, T, r->lo, n);
+    } else {
+        fill_window(&A, T, r->lo, n);
+    }
+    for (size_t i = 0; i < N; ++i)
+        for (size_t k = 0; k < N; ++k)
+            K[i * N + k] = k > i ? 0
+                           : i < m ? (i - k <= BAND_P ? A.L[(BAND_P + 1) * k + (i - k)] : 0)
+                           : k < m ? A.B[i - m][k]
+                                   : A.T[i - m][k - m];
+    free(A.L);
+    return 0;
+}

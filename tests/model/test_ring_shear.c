@@ -534,6 +534,56 @@ static void test_tread_exterior(void **state)
     tirenv_ring_free(r);
 }
 
+/* The window's stiffness as the assembly writes it (ring_shear.c's fill_window, entries set)
+ * and as the exterior's arc does (add_arc, entries added to zeros), bit for bit, on the default
+ * tire (the layer at its default TREAD_SHEAR and NODE_ANGLE) and on a lugged one (kap differs
+ * from node to node), at positions and heights over a cleat whose windows differ in length. A
+ * guard that the comparison sees the whole stencil: each node has its (w, w), (u, w) and
+ * (u, u) entries, its w the belt's to the next two nodes' and its u the shear's to the next's,
+ * 6 n - 4 nonzero entries in all, the tail rows' among them. */
+static void test_window_fill_matches_arc(void **state)
+{
+    (void)state;
+    for (int lugged = 0; lugged < 2; ++lugged) {
+        tirenv_tire t = tirenv_tire_default();
+        if (lugged) {
+            t.ring.lug_count = 23;
+            t.ring.lug_ratio = 0.3;
+        }
+        tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(r);
+        tirenv_profile *p = tirenv_profile_cleat(0.1, 0.05);
+        size_t n_last = 0, lengths = 0;
+        for (size_t k = 0; k < 5; ++k) {
+            double fx, fz;
+            const double z = t.springs.R0 - 0.0371 + 0.0113 * (double)k; /* m */
+            assert_int_equal(tirenv_ring_forces(r, p, case_x[k], z, &fx, &fz, NULL, NULL, NULL),
+                             0);
+            const size_t n = r->n, N = 2 * n;
+            assert_true(n >= 2 && r->lo + n <= r->M);
+            lengths += n != n_last;
+            n_last = n;
+            double *K0 = malloc(N * N * sizeof *K0), *K1 = malloc(N * N * sizeof *K1);
+            assert_non_null(K0);
+            assert_non_null(K1);
+            assert_int_equal(tirenv_ring__tread_window(r, 0, K0), 0);
+            assert_int_equal(tirenv_ring__tread_window(r, 1, K1), 0);
+            assert_memory_equal(K0, K1, N * N * sizeof *K0);
+            size_t nonzero = 0;
+            for (size_t i = 0; i < N * N; ++i)
+                nonzero += K0[i] != 0;
+            assert_int_equal(nonzero, 6 * n - 4);
+            assert_true(K0[(N - 1) * N + N - 1] > 0 && K0[(N - 1) * N + N - 3] < 0 &&
+                        K0[(N - 2) * N + N - 4] != 0);
+            free(K0);
+            free(K1);
+        }
+        assert_true(lengths >= 2);
+        tirenv_profile_free(p);
+        tirenv_ring_free(r);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -546,6 +596,7 @@ int main(void)
         cmocka_unit_test(test_lugs),
         cmocka_unit_test(test_state_restores_bits),
         cmocka_unit_test(test_tread_exterior),
+        cmocka_unit_test(test_window_fill_matches_arc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
