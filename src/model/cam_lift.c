@@ -442,19 +442,10 @@ double tirenv_cam__lift(const tirenv_cam__geom *g, const tirenv_profile *p, doub
                         double *px, double *pz)
 {
     const size_t n = p->n;
-    const double *xs = p->x, *zs = p->z;
     /* The ground under x (at a wall the higher vertex; off the ends the flat extensions). */
     const size_t k_x = track ? tirenv_profile__segment_near(p, track->k_x < n ? track->k_x : 0, x)
                              : tirenv_profile__segment_at(p, x);
-    double q_x;
-    if (x < xs[0])
-        q_x = zs[0];
-    else if (x == xs[k_x] && k_x >= 1 && xs[k_x - 1] == x)
-        q_x = fmax(zs[k_x - 1], zs[k_x]);
-    else if (k_x == n - 1)
-        q_x = zs[n - 1];
-    else
-        q_x = zs[k_x] + (zs[k_x + 1] - zs[k_x]) * ((x - xs[k_x]) / (xs[k_x + 1] - xs[k_x]));
+    const double q_x = tirenv_profile__height_in(p, x, k_x);
     cam_scan sc = {.g = g, .sweep = sweep, .p = p, .x = x, .k_x = k_x,
                    .slack = slack_of(g, p),
                    .best = {q_x, x, q_x, 0}};

@@ -86,15 +86,7 @@ static void rigid_scan(const struct tirenv_profile *p, double R0, double x, size
                             : tirenv_profile__segment_at(p, x);
     if (hint)
         *hint = k_x;
-    double q_x;
-    if (x < xs[0])
-        q_x = zs[0];
-    else if (x == xs[k_x] && k_x >= 1 && xs[k_x - 1] == x)
-        q_x = fmax(zs[k_x - 1], zs[k_x]);
-    else if (k_x == n - 1)
-        q_x = zs[n - 1];
-    else
-        q_x = zs[k_x] + (zs[k_x + 1] - zs[k_x]) * ((x - xs[k_x]) / (xs[k_x + 1] - xs[k_x]));
+    const double q_x = tirenv_profile__height_in(p, x, k_x);
     const double margin = 0x1p-40 * (fabs(q_x) + R0);
     double bar_0 = q_x + R0 - margin;
     /* A few vertices around x raise the bar close to its final height before the ordered

@@ -121,21 +121,10 @@ const double *tirenv_profile_z(const tirenv_profile *p)
 }
 
 /* Flat extensions outside the polyline; at a wall the higher vertex, because a tire resting
- * on the wall's top edge is held up by it. Interpolation is z_k + (z_{k+1} - z_k) t with
- * t = (x - x_k) / (x_{k+1} - x_k), whose denominator is positive since walls are handled
- * before it is formed. */
+ * on the wall's top edge is held up by it (tirenv_profile__height_in). */
 double tirenv_profile_height(const tirenv_profile *p, double x)
 {
-    const double *xs = p->x, *zs = p->z;
-    if (x < xs[0])
-        return zs[0];
-    const size_t k = tirenv_profile__segment_at(p, x);
-    if (x == xs[k] && k >= 1 && xs[k - 1] == xs[k])
-        return fmax(zs[k - 1], zs[k]);
-    if (k == p->n - 1)
-        return zs[k];
-    const double t = (x - xs[k]) / (xs[k + 1] - xs[k]);
-    return zs[k] + (zs[k + 1] - zs[k]) * t;
+    return tirenv_profile__height_in(p, x, tirenv_profile__segment_at(p, x));
 }
 
 /* The ground is piecewise linear, so its maximum over [x_lo, x_hi] is attained at a vertex

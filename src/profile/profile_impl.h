@@ -6,6 +6,7 @@
 #ifndef TIRENV_PROFILE_IMPL_H
 #define TIRENV_PROFILE_IMPL_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "tirenv/profile.h"
@@ -100,6 +101,25 @@ static inline size_t tirenv_profile__segment_near(const struct tirenv_profile *p
             hi = mid;
     }
     return lo == 0 ? 0 : lo - 1;
+}
+
+/* tirenv_profile_height(p, x) given k = tirenv_profile__segment_at(p, x) (or _near's, the same
+ * index): the flat extensions outside the polyline, at a wall the higher vertex, else
+ * z_k + (z_{k+1} - z_k) t with t = (x - x_k) / (x_{k+1} - x_k), whose denominator is positive
+ * since walls are handled before it is formed. The one formula of the ground's height, for a
+ * caller that has the segment already (no second search). */
+static inline double tirenv_profile__height_in(const struct tirenv_profile *p, double x,
+                                               size_t k)
+{
+    const double *xs = p->x, *zs = p->z;
+    if (x < xs[0])
+        return zs[0];
+    if (x == xs[k] && k >= 1 && xs[k - 1] == xs[k])
+        return fmax(zs[k - 1], zs[k]);
+    if (k == p->n - 1)
+        return zs[k];
+    const double t = (x - xs[k]) / (xs[k + 1] - xs[k]);
+    return zs[k] + (zs[k + 1] - zs[k]) * t;
 }
 
 /* Whether the ground is one level over [lo, hi] (every vertex there, and the segments
