@@ -156,6 +156,21 @@ static int jacobian_at(fit_ctx *c, double x[], const double f[], size_t n, doubl
     return residuals(x, c, f_step, n);  /* leave the working tire at x */
 }
 
+/* The arrays of tirenv_fit, freed on both of its ways out once they are allocated (any of
+ * them may be NULL: a failed allocation). */
+static void fit_free(fit_ctx *c, double *x, double *f, double *J, double *work, int *ipvt)
+{
+    free(c->h);
+    free(c->cases);
+    free(c->offset);
+    free(c->models);
+    free(x);
+    free(f);
+    free(J);
+    free(work);
+    free(ipvt);
+}
+
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
 {
@@ -212,15 +227,7 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
     int *ipvt = malloc(p * sizeof *ipvt);
     if (!c.h || !c.cases || !c.offset || !c.models || !x || !f || !J || !work || !ipvt ||
         n > (size_t)INT_MAX / (p + 1)) {
-        free(c.h);
-        free(c.cases);
-        free(c.offset);
-        free(c.models);
-        free(x);
-        free(f);
-        free(J);
-        free(work);
-        free(ipvt);
+        fit_free(&c, x, f, J, work, ipvt);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "fit", "out of memory");
     }
     double *diag_scale = work, *qtf = work + p, *wa1 = work + 2 * p, *wa2 = work + 3 * p,
@@ -288,14 +295,6 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
         *tire = c.tire;
     }
     report->seconds = tirenv_study__wall_seconds() - t0;
-    free(c.h);
-    free(c.cases);
-    free(c.offset);
-    free(c.models);
-    free(x);
-    free(f);
-    free(J);
-    free(work);
-    free(ipvt);
+    fit_free(&c, x, f, J, work, ipvt);
     return result;
 }
