@@ -179,6 +179,12 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
                     size_t n);
 
+/* The data set in dir and its tire: cli_data_source (src, buf, n as there), then the tire as
+ * cli_tire reads it into *tire, then the data set read with that tire's R0 into *ds (free it
+ * with tirenv_dataset_free). Prints and returns an exit code on failure, with nothing to free. */
+int cli_data_and_tire(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
+                      size_t n, tirenv_tire *tire, tirenv_dataset *ds);
+
 /* The origin of the tire the last cli_tire read (what was derived, its FNOMIN). */
 extern tirenv_tir_origin cli_tire_origin;
 

@@ -160,20 +160,15 @@ int cli_fit_main(int argc, char *argv[])
     /* The tire that simulated the data, if the data set says (its source.txt). */
     tirenv_dataset_source src;
     char tire_buf[1024];
-    int code = cli_data_source(data, &o, &src, tire_buf, sizeof tire_buf);
+    tirenv_tire tire;
+    tirenv_dataset ds;
+    int code = cli_data_and_tire(data, &o, &src, tire_buf, sizeof tire_buf, &tire, &ds);
     if (code)
         return code;
-    tirenv_tire tire;
-    if ((code = cli_tire(&o, &tire)))
-        return code;
-    tirenv_dataset ds;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    int status = tirenv_dataset_read(data, tire.springs.R0, &ds, &diag);
-    if (status)
-        return cli_fail(status, &diag);
     tirenv_fit_report rep;
-    status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &rep, &diag);
+    int status = tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &fs, &tire, &rep, &diag);
     if (isatty(STDERR_FILENO))
         fputc('\n', stderr);
     if (status) {

@@ -358,17 +358,13 @@ int cli_train_main(int argc, char *argv[])
     /* The radius x_N refers to: the tire that simulated the data, if the data set says. */
     tirenv_dataset_source src;
     char tire_buf[1024];
-    if ((code = cli_data_source(t.data, &o, &src, tire_buf, sizeof tire_buf)))
-        return code;
     tirenv_tire tire;
-    if ((code = cli_tire(&o, &tire)))
-        return code;
     tirenv_dataset ds;
+    if ((code = cli_data_and_tire(t.data, &o, &src, tire_buf, sizeof tire_buf, &tire, &ds)))
+        return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    int status = tirenv_dataset_read(t.data, tire.springs.R0, &ds, &diag);
-    if (status)
-        return cli_fail(status, &diag);
+    int status = TIRENV_OK;
     tirenv_samples s[3];
     double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
     tirenv_nn *nn = NULL;

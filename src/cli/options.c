@@ -128,6 +128,18 @@ int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src,
     return CLI_EXIT_OK;
 }
 
+int cli_data_and_tire(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
+                      size_t n, tirenv_tire *tire, tirenv_dataset *ds)
+{
+    int code = cli_data_source(dir, o, src, buf, n);
+    if (code || (code = cli_tire(o, tire)))
+        return code;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    const int status = tirenv_dataset_read(dir, tire->springs.R0, ds, &diag);
+    return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+}
+
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n)
 {
     return o->tire_path ? o->tire_path : cli_data_path("tires/default.tir", buf, n);
