@@ -49,14 +49,11 @@ void tirenv_profile__seal(struct tirenv_profile *p);
  * and seals it. On failure the caller still owns and frees p. */
 int tirenv_profile__finish(struct tirenv_profile *p, tirenv_diag *diag);
 
-/* Index k of the last vertex with x_k <= x, found by binary search in O(log n); 0 when
- * x < x_0 (callers tell the left flat extension apart by x < p->x[0]). At a wall
- * (x_k == x_{k+1} == x) this is the wall's second vertex k+1. Segment k is [x_k, x_{k+1}]
- * for k < n-1; k = n-1 means x lies on or beyond the last vertex (right extension). */
-static inline size_t tirenv_profile__segment_at(const struct tirenv_profile *p, double x)
+/* The binary search of both lookups below: the count of x_k <= x known to lie in [lo, hi],
+ * the index of the last such vertex (0 when there is none). */
+static inline size_t tirenv_profile__segment_in(const double xs[], size_t lo, size_t hi,
+                                                double x)
 {
-    const double *xs = p->x;
-    size_t lo = 0, hi = p->n; /* answer (count of x_k <= x) lies in [lo, hi] */
     while (lo < hi) {
         const size_t mid = lo + (hi - lo) / 2;
         if (xs[mid] <= x)
@@ -65,6 +62,15 @@ static inline size_t tirenv_profile__segment_at(const struct tirenv_profile *p, 
             hi = mid;
     }
     return lo == 0 ? 0 : lo - 1;
+}
+
+/* Index k of the last vertex with x_k <= x, found by binary search in O(log n); 0 when
+ * x < x_0 (callers tell the left flat extension apart by x < p->x[0]). At a wall
+ * (x_k == x_{k+1} == x) this is the wall's second vertex k+1. Segment k is [x_k, x_{k+1}]
+ * for k < n-1; k = n-1 means x lies on or beyond the last vertex (right extension). */
+static inline size_t tirenv_profile__segment_at(const struct tirenv_profile *p, double x)
+{
+    return tirenv_profile__segment_in(p->x, 0, p->n, x);
 }
 
 /* The same index as tirenv_profile__segment_at(p, x), found from a nearby index k_hint < n
@@ -93,14 +99,7 @@ static inline size_t tirenv_profile__segment_near(const struct tirenv_profile *p
         }
         lo = step <= hi ? hi - step + 1 : 0;
     }
-    while (lo < hi) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (xs[mid] <= x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo == 0 ? 0 : lo - 1;
+    return tirenv_profile__segment_in(xs, lo, hi, x);
 }
 
 /* tirenv_profile_height(p, x) given k = tirenv_profile__segment_at(p, x) (or _near's, the same
