@@ -325,7 +325,7 @@ static void set_kappa(tirenv_ring *r, double x)
  * (w, u) interleaved, into A: the belt's stencil, the tread's compression kap between w and u,
  * its shear k_sh between neighbouring u. The window (assemble) and its exterior (compute_end)
  * are such arcs; apply_K is the window's product with it. */
-static void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t count)
+static inline void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t count)
 {
     const double *s = T->s, k_sh = T->k_sh;
     for (size_t e = 0; e < count; ++e) {
@@ -345,7 +345,7 @@ static void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size_t coun
 /* The window's arc of n nodes from lo as add_arc gives it on a zeroed matrix, the band rows'
  * entries written rather than added (the same values: each is one term), so that only the
  * tail's rows need zeroing first. */
-static void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n)
+static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n)
 {
     const size_t N = 2 * n, m = N - TAIL;
     const double *s = T->s, k_sh = T->k_sh;
