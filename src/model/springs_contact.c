@@ -14,7 +14,8 @@
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
 {
     memset(c, 0, sizeof *c);
-    size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos};
+    size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos, &c->pin_src,
+                     &c->cand_first, &c->cand_count};
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
@@ -50,6 +51,10 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->sec_first);
     free(c->sec_count);
     free(c->wpos);
+    free(c->pin_src);
+    free(c->cand_first);
+    free(c->cand_count);
+    free(c->vforce);
     free(c->pin_h);
     free(c->w_try);
     free(c->step);
@@ -483,9 +488,10 @@ int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], 
     return 1;
 }
 
-int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                             double x, double z, double w[], double pe[], double obstacle[],
-                             tirenv_diag *diag)
+/* The QP on the rows laid out (tirenv_springs__cc_solve without the check of the rows the
+ * hulls dropped). */
+static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double x,
+                    double z, double w[], double pe[], double obstacle[], tirenv_diag *diag)
 {
     const size_t N = T->N;
     c->iterations = 0;
@@ -670,6 +676,21 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
     return TIRENV_OK;
+}
+
+/* The QP on the rows laid out, then on those and every row the hulls dropped that its
+ * solution violates, until none does (an outer active-set pass: each round adds a row, so
+ * it ends; nearly always none is violated and one solve does). The rows dropped and never
+ * added hold at the final w with reaction 0, so it solves the QP of every row. */
+int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             double x, double z, double w[], double pe[], double obstacle[],
+                             tirenv_diag *diag)
+{
+    for (;;) {
+        const int st = qp_solve(c, T, x, z, w, pe, obstacle, diag);
+        if (st || c->f0 > c->f1 || !tirenv_springs__cc_add_dropped(c, T, w, 1e-12 * T->R0))
+            return st;
+    }
 }
 
 void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,

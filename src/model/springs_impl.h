@@ -300,6 +300,14 @@ typedef struct {
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
+    /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
+     * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
+     * cand_first, where sec_count > 0); the span laid out */
+    size_t *pin_src, *cand_first, *cand_count, lay_lo, lay_hi;
+    /* per vertex row (cap_vrows): kept whether on the hull or not, because the last solve
+     * found it violated (tirenv_springs__cc_add_dropped); n_forced of them */
+    unsigned char *vforce;
+    size_t n_forced;
     double *pin_h, *w_try, *step, *raise;
     /* warm start: the vertices of the last solution's active rows, ascending; pinned elements */
     long *warm_ids;
@@ -338,6 +346,14 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
 int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
                             const double d[], tirenv_diag *diag);
+
+/* After a solve at w: the vertex rows the sectors' hulls dropped (below the hull, but a
+ * working row's own compliance lets the tread in under it) that w violates (slack < -tol,
+ * m) are kept as rows from now on and the rows laid out again (c->rows, the span as before).
+ * Returns 1 if it added some (solve again), 0 if w violates none. Only sectors with a row
+ * working are looked at: elsewhere the hull's rows provably hold the tread above them. */
+int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                  const double w[], double tol);
 
 /* Whether every row between two elements holds (slack >= -tol, m) at w (over c->f0..c->f1):
  * then the solution of the elements' own rows alone (section 4.4's LCP with obstacle pin_h)

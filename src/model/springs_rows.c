@@ -118,6 +118,11 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
     if (!r)
         return TIRENV_ENOMEM;
     c->vrows = r;
+    unsigned char *force = realloc(c->vforce, cap);
+    if (!force)
+        return TIRENV_ENOMEM;
+    memset(force, 0, cap); /* n_forced = 0 keeps it all 0 from here on */
+    c->vforce = force;
     c->cap_vrows = cap;
     return TIRENV_OK;
 }
@@ -264,9 +269,13 @@ static void sort_rows(tirenv_springs__cc_row *r, size_t n)
 
 /* Upper hull of the sector's points (0, P_l), the rows' (tau, h / (ga + gb)) for the vertex
  * rows [first, first + m) and (1, P_r): a row reads (1 - tau) w_i + tau w_j >= h / (ga + gb), so
- * only rows on the hull can bind (a line over [0, 1] above the hull's vertices is above every
- * point), and keeping only them keeps the KKT systems nonsingular. The kept rows
- * are appended at c->rows[out]; returns the new end. stack has room for m + 2. */
+ * where no row of the sector works (reaction 0) only rows on the hull can bind (a line over
+ * [0, 1] above the hull's vertices is above every point), and keeping only them keeps the KKT
+ * systems nonsingular. A working row's tread stands its own compliance times its reaction
+ * below its h, so a row under the hull may still bind there: the solve checks the rows
+ * dropped here against its w and has them kept (c->vforce, tirenv_springs__cc_add_dropped).
+ * The kept rows, and the forced ones in their order of tau, are appended at c->rows[out];
+ * returns the new end. stack has room for m + 2. */
 static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
                         size_t *stack, size_t out)
 {
@@ -308,63 +317,45 @@ static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_
     }
 #undef PT_T
 #undef PT_H
-    return out;
+    if (c->n_forced == 0)
+        return out;
+    /* The rows the last solve found violated, merged into the hull's rows by tau (the rows
+     * are in order of t, hence of tau): each is a row of its own, whatever its neighbours. */
+    const unsigned char *force = c->vforce + first;
+    size_t n_force = 0;
+    for (size_t q = 0; q < m; ++q)
+        n_force += force[q] != 0;
+    if (n_force == 0)
+        return out;
+    const size_t start = out - kept;
+    tirenv_springs__cc_row *hull = c->rows + start;
+    /* the hull's rows move up by n_force from the end, the forced ones fill in */
+    size_t src = kept, dst = kept + n_force;
+    for (size_t q = m; q-- > 0;) {
+        if (!force[q])
+            continue;
+        while (src > 0 && hull[src - 1].tau > r[q].tau)
+            hull[--dst] = hull[--src];
+        hull[--dst] = r[q];
+    }
+    return out + n_force;
 }
 
-/* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
- * upper hull, laid out element by element; sets f0, f1. */
-static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                      const tirenv_profile *p, double x, double z, size_t a, size_t b,
-                      const double d[])
+/* Lays the rows out element by element over [lay_lo, lay_hi]: each element's own row (its
+ * pin, pin_h from pin_src), then its sector's rows kept. The first layout of an evaluation
+ * (weigh) drops the vertex rows that provably cannot bind, computes the others' weights and
+ * records them per sector (cand_first, cand_count); a later one (rows forced by
+ * tirenv_springs__cc_add_dropped) takes the hulls again from those. Sets the span f0, f1. */
+static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int weigh)
 {
-    const size_t N = T->N;
-    c->n_rows = 0;
-    if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
-        return TIRENV_ENOMEM;
-    /* the laid-out rows: at most a pin per element and the vertex rows kept; pos, the
-     * hulls' stack, needs nv + 2 */
-    const size_t nv = c->n_vrows;
-    if (reserve_rows(c, nv + N + 2, N))
-        return TIRENV_ENOMEM;
+    const size_t lo = c->lay_lo, hi = c->lay_hi, nv = c->n_vrows;
     tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
-    sort_rows(V, nv);
-    /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
-    size_t lo = N, hi = 0;
-    for (size_t e = a; a <= b && e <= b; ++e)
-        if (d[e] > 0) {
-            lo = e;
-            break;
-        }
-    for (size_t e = b + 1; a <= b && e-- > lo;)
-        if (d[e] > 0) {
-            hi = e;
-            break;
-        }
-    if (nv > 0) {
-        lo = V[0].i < lo ? V[0].i : lo;
-        const size_t top = V[nv - 1].t > 0 ? V[nv - 1].i + 1 : V[nv - 1].i;
-        hi = top > hi ? top : hi;
-    }
-    if (lo > hi) {
-        c->f0 = 1;
-        c->f1 = 0;
-        return TIRENV_OK;
-    }
-    /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_row holds
-     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. The workspace's arrays
-     * and the span are kept in locals: the rows written below could alias them. */
-    double *pin_h = c->pin_h;
+    /* The workspace's arrays in locals: the rows written below could alias them. */
+    const double *pin_h = c->pin_h;
+    const size_t *pin_src = c->pin_src;
     size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
-    for (size_t e = lo; e <= hi; ++e) {
-        pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
-        pin_row[e] = SIZE_MAX;
-    }
-    for (size_t k = 0; k < nv; ++k)
-        if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
-            pin_h[V[k].i] = V[k].h;
-            pin_row[V[k].i] = k;
-        }
-    /* Lay out the kept rows. A ray's row: ray_pin with its element, h and id. */
+    size_t *cand_first = c->cand_first, *cand_count = c->cand_count;
+    /* A ray's row: ray_pin with its element, h and id. */
     const tirenv_springs__cc_row ray_pin = {.t = 0, .tau = 0, .ga = 1, .gb = 0, .dga_dz = 0,
                                             .dgb_dz = 0, .dh_dz = NAN, .cmp = 0,
                                             .dcmp_dz = 0};
@@ -372,7 +363,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     size_t *stack = c->pos;
     for (size_t e = lo; e <= hi; ++e) {
         if (pin_h[e] > 0) {
-            const size_t src = pin_row[e];
+            const size_t src = pin_src[e];
             pin_row[e] = out;
             if (src != SIZE_MAX) {
                 R[out] = V[src];
@@ -386,6 +377,21 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             ++out;
             f0 = e < f0 ? e : f0;
             f1 = e;
+        } else {
+            pin_row[e] = SIZE_MAX;
+        }
+        if (!weigh) { /* the sectors that had rows had candidates */
+            const size_t had = sec_count[e];
+            sec_first[e] = out;
+            if (had > 0)
+                out = hull_rows(c, cand_first[e], cand_count[e], pin_h[e] > 0 ? pin_h[e] : 0,
+                                pin_h[e + 1] > 0 ? pin_h[e + 1] : 0, stack, out);
+            sec_count[e] = out - sec_first[e];
+            if (sec_count[e] > 0) {
+                f0 = e < f0 ? e : f0;
+                f1 = e + 1;
+            }
+            continue;
         }
         sec_first[e] = out;
         if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
@@ -410,7 +416,8 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
              * ends at its tau: with ga + gb >= 1 + ab_lo t (1 - t) and |tau - t| <=
              * tau_dev, if h / (1 + ab_lo t (1 - t)) <= (1 - t) P_l + t P_r - |P_r - P_l|
              * tau_dev. Such rows (nearly every vertex of a smooth road: the tread bows out
-             * between its tips) are dropped before their weights are computed. */
+             * between its tips) are dropped before their weights are computed: the
+             * elements' own rows (no compliance) hold the tread above them. */
             const double slack_tau = fabs(P_r - P_l) * T->tau_dev;
             size_t kept = 0;
             for (size_t q = first; q < first + m; ++q) {
@@ -422,8 +429,11 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                     ++kept;
                 }
             }
-            if (kept > 0)
+            if (kept > 0) {
+                cand_first[e] = first;
+                cand_count[e] = kept;
                 out = hull_rows(c, first, kept, P_l, P_r, stack, out);
+            }
         }
         sec_count[e] = out - sec_first[e];
         if (sec_count[e] > 0) {
@@ -438,6 +448,67 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->f0 = 1;
         c->f1 = 0;
     }
+}
+
+/* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
+ * upper hull, laid out element by element; sets f0, f1. */
+static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                      const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                      const double d[])
+{
+    const size_t N = T->N;
+    c->n_rows = 0;
+    if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
+        return TIRENV_ENOMEM;
+    /* the laid-out rows: at most a pin per element and the vertex rows kept; pos, the
+     * hulls' stack, needs nv + 2 */
+    const size_t nv = c->n_vrows;
+    if (reserve_rows(c, nv + N + 2, N))
+        return TIRENV_ENOMEM;
+    tirenv_springs__cc_row *V = c->vrows;
+    sort_rows(V, nv);
+    /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
+    size_t lo = N, hi = 0;
+    for (size_t e = a; a <= b && e <= b; ++e)
+        if (d[e] > 0) {
+            lo = e;
+            break;
+        }
+    for (size_t e = b + 1; a <= b && e-- > lo;)
+        if (d[e] > 0) {
+            hi = e;
+            break;
+        }
+    if (nv > 0) {
+        lo = V[0].i < lo ? V[0].i : lo;
+        const size_t top = V[nv - 1].t > 0 ? V[nv - 1].i + 1 : V[nv - 1].i;
+        hi = top > hi ? top : hi;
+    }
+    if (lo > hi) {
+        c->f0 = 1;
+        c->f1 = 0;
+        return TIRENV_OK;
+    }
+    /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_src holds
+     * the vertex row (SIZE_MAX: the ray) for the layout. */
+    double *pin_h = c->pin_h;
+    size_t *pin_src = c->pin_src;
+    for (size_t e = lo; e <= hi; ++e) {
+        pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
+        pin_src[e] = SIZE_MAX;
+    }
+    for (size_t k = 0; k < nv; ++k)
+        if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
+            pin_h[V[k].i] = V[k].h;
+            pin_src[V[k].i] = k;
+        }
+    if (c->n_forced > 0) { /* the last evaluation's forced rows: none of this one's */
+        memset(c->vforce, 0, nv);
+        c->n_forced = 0;
+    }
+    c->lay_lo = lo;
+    c->lay_hi = hi;
+    lay_out(c, T, 1);
     return TIRENV_OK;
 }
 
@@ -449,4 +520,39 @@ int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "rows of the springs model");
     return TIRENV_OK;
+}
+
+int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                  const double w[], double tol)
+{
+    const tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
+    size_t added = 0;
+    for (size_t e = c->f0; c->f0 <= c->f1 && e < c->f1; ++e) {
+        const size_t r0 = c->sec_first[e], nr = c->sec_count[e];
+        if (nr == 0)
+            continue;
+        /* Only a row with a reaction lets the tread under the hull (its own compliance):
+         * where none works, the hull's rows hold the tread above every row dropped. */
+        int works = 0;
+        for (size_t r = r0; r < r0 + nr && !works; ++r)
+            works = c->in_w[r] && c->lambda[r] > 0;
+        if (!works)
+            continue;
+        for (size_t q = c->cand_first[e], n = q + c->cand_count[e]; q < n; ++q) {
+            if (c->vforce[q])
+                continue; /* a row already */
+            int kept = 0;
+            for (size_t r = r0; r < r0 + nr && !kept; ++r)
+                kept = R[r].id == V[q].id;
+            if (kept || !(V[q].ga * w[V[q].i] + V[q].gb * w[V[q].j] - V[q].h < -tol))
+                continue;
+            c->vforce[q] = 1;
+            ++added;
+        }
+    }
+    if (added == 0)
+        return 0;
+    c->n_forced += added;
+    lay_out(c, T, 0);
+    return 1;
 }
