@@ -15,7 +15,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
 {
     memset(c, 0, sizeof *c);
     size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos, &c->pin_src,
-                     &c->cand_first, &c->cand_count};
+                     &c->cand_first, &c->cand_count, &c->hull_sec};
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
@@ -54,6 +54,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->pin_src);
     free(c->cand_first);
     free(c->cand_count);
+    free(c->hull_sec);
     free(c->vforce);
     free(c->pin_h);
     free(c->w_try);
@@ -688,7 +689,7 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 {
     for (;;) {
         const int st = qp_solve(c, T, x, z, w, pe, obstacle, diag);
-        if (st || c->f0 > c->f1 || !tirenv_springs__cc_add_dropped(c, T, w, 1e-12 * T->R0))
+        if (st || c->f0 > c->f1 || !tirenv_springs__cc_add_dropped(c, w, 1e-12 * T->R0))
             return st;
     }
 }

@@ -302,8 +302,8 @@ typedef struct {
     size_t *pin_row, *sec_first, *sec_count, *wpos;
     /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
      * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
-     * cand_first, where sec_count > 0); the span laid out */
-    size_t *pin_src, *cand_first, *cand_count, lay_lo, lay_hi;
+     * cand_first, for the n_hull_sec sectors in hull_sec, ascending); the span laid out */
+    size_t *pin_src, *cand_first, *cand_count, *hull_sec, n_hull_sec, lay_lo, lay_hi;
     /* per vertex row (cap_vrows): kept whether on the hull or not, because the last solve
      * found it violated (tirenv_springs__cc_add_dropped); n_forced of them */
     unsigned char *vforce;
@@ -352,8 +352,7 @@ int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire
  * m) are kept as rows from now on and the rows laid out again (c->rows, the span as before).
  * Returns 1 if it added some (solve again), 0 if w violates none. Only sectors with a row
  * working are looked at: elsewhere the hull's rows provably hold the tread above them. */
-int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                                  const double w[], double tol);
+int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const double w[], double tol);
 
 /* Whether every row between two elements holds (slack >= -tol, m) at w (over c->f0..c->f1):
  * then the solution of the elements' own rows alone (section 4.4's LCP with obstacle pin_h)

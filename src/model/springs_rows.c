@@ -341,12 +341,36 @@ static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_
     return out + n_force;
 }
 
+/* Element e's own row at R[out] (its pin: the vertex row pin_src[e] of V, or its ray's row)
+ * if it has one (pin_h[e] > 0), and pin_row[e] (SIZE_MAX: none); returns the new end. */
+static inline size_t put_pin(const double pin_h[], const size_t pin_src[], size_t pin_row[],
+                             const tirenv_springs__cc_row V[], tirenv_springs__cc_row R[],
+                             size_t e, size_t out)
+{
+    if (!(pin_h[e] > 0)) {
+        pin_row[e] = SIZE_MAX;
+        return out;
+    }
+    const size_t src = pin_src[e];
+    pin_row[e] = out;
+    if (src != SIZE_MAX) {
+        R[out] = V[src];
+    } else {
+        /* A ray's row. */
+        R[out] = (tirenv_springs__cc_row){.i = e, .j = e, .t = 0, .tau = 0, .ga = 1, .gb = 0,
+                                          .h = pin_h[e], .dga_dz = 0, .dgb_dz = 0,
+                                          .dh_dz = NAN, .cmp = 0, .dcmp_dz = 0,
+                                          .id = -1 - (long)e};
+    }
+    return out + 1;
+}
+
 /* Lays the rows out element by element over [lay_lo, lay_hi]: each element's own row (its
- * pin, pin_h from pin_src), then its sector's rows kept. The first layout of an evaluation
- * (weigh) drops the vertex rows that provably cannot bind, computes the others' weights and
- * records them per sector (cand_first, cand_count); a later one (rows forced by
- * tirenv_springs__cc_add_dropped) takes the hulls again from those. Sets the span f0, f1. */
-static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int weigh)
+ * pin), then its sector's rows kept. The vertex rows that provably cannot bind are dropped,
+ * the others' weights computed and recorded per sector (cand_first, cand_count; the
+ * sectors that have some in hull_sec) for tirenv_springs__cc_add_dropped. Sets the span f0,
+ * f1. */
+static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 {
     const size_t lo = c->lay_lo, hi = c->lay_hi, nv = c->n_vrows;
     tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
@@ -354,44 +378,16 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int
     const double *pin_h = c->pin_h;
     const size_t *pin_src = c->pin_src;
     size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
-    size_t *cand_first = c->cand_first, *cand_count = c->cand_count;
-    /* A ray's row: ray_pin with its element, h and id. */
-    const tirenv_springs__cc_row ray_pin = {.t = 0, .tau = 0, .ga = 1, .gb = 0, .dga_dz = 0,
-                                            .dgb_dz = 0, .dh_dz = NAN, .cmp = 0,
-                                            .dcmp_dz = 0};
-    size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0;
+    size_t *cand_first = c->cand_first, *cand_count = c->cand_count, *hull_sec = c->hull_sec;
+    size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0, n_hull = 0;
     size_t *stack = c->pos;
     for (size_t e = lo; e <= hi; ++e) {
         if (pin_h[e] > 0) {
-            const size_t src = pin_src[e];
-            pin_row[e] = out;
-            if (src != SIZE_MAX) {
-                R[out] = V[src];
-            } else {
-                tirenv_springs__cc_row *r = &R[out];
-                *r = ray_pin;
-                r->i = r->j = e;
-                r->h = pin_h[e];
-                r->id = -1 - (long)e;
-            }
-            ++out;
+            out = put_pin(pin_h, pin_src, pin_row, V, R, e, out);
             f0 = e < f0 ? e : f0;
             f1 = e;
         } else {
             pin_row[e] = SIZE_MAX;
-        }
-        if (!weigh) { /* the sectors that had rows had candidates */
-            const size_t had = sec_count[e];
-            sec_first[e] = out;
-            if (had > 0)
-                out = hull_rows(c, cand_first[e], cand_count[e], pin_h[e] > 0 ? pin_h[e] : 0,
-                                pin_h[e + 1] > 0 ? pin_h[e + 1] : 0, stack, out);
-            sec_count[e] = out - sec_first[e];
-            if (sec_count[e] > 0) {
-                f0 = e < f0 ? e : f0;
-                f1 = e + 1;
-            }
-            continue;
         }
         sec_first[e] = out;
         if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
@@ -432,6 +428,7 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int
             if (kept > 0) {
                 cand_first[e] = first;
                 cand_count[e] = kept;
+                hull_sec[n_hull++] = e;
                 out = hull_rows(c, first, kept, P_l, P_r, stack, out);
             }
         }
@@ -441,6 +438,7 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int
             f1 = e + 1;
         }
     }
+    c->n_hull_sec = n_hull;
     c->n_rows = out;
     c->f0 = f0;
     c->f1 = f1;
@@ -448,6 +446,30 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int
         c->f0 = 1;
         c->f1 = 0;
     }
+}
+
+/* Lays the rows out again as lay_out did, the hulls taken from the candidates it recorded
+ * and the rows forced since kept with them (tirenv_springs__cc_add_dropped). The span stays:
+ * a forced row lies in a sector that had rows. */
+static void lay_out_again(tirenv_springs__cc *c)
+{
+    const size_t lo = c->lay_lo, hi = c->lay_hi;
+    tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
+    const double *pin_h = c->pin_h;
+    const size_t *pin_src = c->pin_src;
+    size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
+    size_t out = 0, q = 0;
+    for (size_t e = lo; e <= hi; ++e) {
+        out = put_pin(pin_h, pin_src, pin_row, V, R, e, out);
+        sec_first[e] = out;
+        if (q < c->n_hull_sec && c->hull_sec[q] == e) {
+            ++q;
+            out = hull_rows(c, c->cand_first[e], c->cand_count[e], pin_h[e] > 0 ? pin_h[e] : 0,
+                            pin_h[e + 1] > 0 ? pin_h[e + 1] : 0, c->pos, out);
+        }
+        sec_count[e] = out - sec_first[e];
+    }
+    c->n_rows = out;
 }
 
 /* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
@@ -458,6 +480,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
 {
     const size_t N = T->N;
     c->n_rows = 0;
+    c->n_hull_sec = 0;
     if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
         return TIRENV_ENOMEM;
     /* the laid-out rows: at most a pin per element and the vertex rows kept; pos, the
@@ -508,7 +531,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     }
     c->lay_lo = lo;
     c->lay_hi = hi;
-    lay_out(c, T, 1);
+    lay_out(c, T);
     return TIRENV_OK;
 }
 
@@ -522,15 +545,12 @@ int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire
     return TIRENV_OK;
 }
 
-int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                                  const double w[], double tol)
+int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const double w[], double tol)
 {
     const tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
     size_t added = 0;
-    for (size_t e = c->f0; c->f0 <= c->f1 && e < c->f1; ++e) {
-        const size_t r0 = c->sec_first[e], nr = c->sec_count[e];
-        if (nr == 0)
-            continue;
+    for (size_t s = 0; s < c->n_hull_sec; ++s) {
+        const size_t e = c->hull_sec[s], r0 = c->sec_first[e], nr = c->sec_count[e];
         /* Only a row with a reaction lets the tread under the hull (its own compliance):
          * where none works, the hull's rows hold the tread above every row dropped. */
         int works = 0;
@@ -553,6 +573,6 @@ int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const tirenv_springs__
     if (added == 0)
         return 0;
     c->n_forced += added;
-    lay_out(c, T, 0);
+    lay_out_again(c);
     return 1;
 }
