@@ -188,6 +188,12 @@ const tirenv_springs_params *tirenv_springs_params_of(const tirenv_springs *s)
 }
 
 size_t tirenv_springs_size(const tirenv_springs *s) { return s->N; }
+
+void tirenv_springs__elements_of(const tirenv_springs *s, tirenv_springs__elements *el)
+{
+    *el = (tirenv_springs__elements){.k_r = s->k_r, .k_ir = s->k_ir, .diag = s->diag,
+                                     .cos_t = s->cos_t};
+}
 const double *tirenv_springs_theta(const tirenv_springs *s) { return s->theta; }
 
 /* Elements that can touch the ground: a ray reaches no lower than its tip z - R0 cos(theta),

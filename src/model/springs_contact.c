@@ -66,8 +66,8 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->chains);
     free(c->warm_ids);
     free(c->warm_pin);
-    free(c->last_id);
-    free(c->last_key);
+    free(c->keys);
+    free(c->last_keys);
     memset(c, 0, sizeof *c);
 }
 
@@ -115,8 +115,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
     if (same_layout && c->use_schur && same) {
         /* wpos, order, schur_pos and the chains stand; only the values are new. */
-        c->tri_same = 1;
-        return tirenv_springs__cc_schur_factor(c, T);
+        return tirenv_springs__cc_schur_factor(c, T, 1);
     }
     for (size_t e = f0; e <= f1; ++e) {
         const int held = fixed(c, e);
@@ -139,9 +138,8 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     c->n_kkt = n;
     c->n_schur = n_schur;
     c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
-    c->tri_same = same;
     if (c->use_schur)
-        return tirenv_springs__cc_schur_factor(c, T);
+        return tirenv_springs__cc_schur_factor(c, T, same);
     c->tri_ok = 0; /* wpos no longer describes the factor kept */
     /* The band's half-width, for the banded path only: how far each unknown's row reaches
      * back, an element to its free left neighbour, a row (of sector i, laid out after
@@ -437,44 +435,20 @@ static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
     }
 }
 
-/* A row's element and whether it lies between elements, as one key: i + j is 2 i on
- * element i alone (j = i), 2 i + 1 between i and i + 1. */
-static size_t row_key(const tirenv_springs__cc_row *r)
-{
-    return r->i + r->j;
-}
-
 /* Whether the rows are the last solve's, laid out the same (and over the same span). */
 static int same_as_last(const tirenv_springs__cc *c)
 {
-    if (c->n_rows != c->n_last || c->f0 != c->last_f0 || c->f1 != c->last_f1)
-        return 0;
-    for (size_t r = 0; r < c->n_rows; ++r)
-        if (c->rows[r].id != c->last_id[r] || row_key(&c->rows[r]) != c->last_key[r])
-            return 0;
-    return 1;
+    return c->n_rows == c->n_last && c->f0 == c->last_f0 && c->f1 == c->last_f1 &&
+           !memcmp(c->keys, c->last_keys, c->n_rows * sizeof *c->keys);
 }
 
-static int reserve_last(tirenv_springs__cc *c)
-{
-    if (c->n_rows <= c->cap_last)
-        return TIRENV_OK;
-    long *id = realloc(c->last_id, c->n_rows * sizeof *id);
-    if (!id)
-        return TIRENV_ENOMEM;
-    c->last_id = id;
-    size_t *key = realloc(c->last_key, c->n_rows * sizeof *key);
-    if (!key)
-        return TIRENV_ENOMEM;
-    c->last_key = key;
-    c->cap_last = c->n_rows;
-    return TIRENV_OK;
-}
-
-/* Records the span of the solve just finished, whose rows' keys its last pass stored
- * (reserve_last made room). */
+/* Records the rows and span of the solve just finished: its keys become the last (the
+ * buffers swap; the next layout writes the other). */
 static void keep_last(tirenv_springs__cc *c)
 {
+    tirenv_springs__cc_key *k = c->last_keys;
+    c->last_keys = c->keys;
+    c->keys = k;
     c->n_last = c->n_rows;
     c->last_f0 = c->f0;
     c->last_f1 = c->f1;
@@ -642,7 +616,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         at_min = 0;
     }
     c->iterations = it + 1;
-    if (reserve_warm(c) || reserve_last(c))
+    if (reserve_warm(c))
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
     for (size_t e = f0; e <= f1; ++e) {
@@ -658,8 +632,6 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
     size_t n_warm = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &c->rows[r];
-        c->last_id[r] = R->id; /* for same_as_last */
-        c->last_key[r] = row_key(R);
         if (!c->in_w[r]) {
             c->lambda[r] = 0;
             continue;

@@ -82,6 +82,14 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     if (!lambda)
         return TIRENV_ENOMEM;
     c->lambda = lambda;
+    tirenv_springs__cc_key *keys = realloc(c->keys, cap * sizeof *keys);
+    if (!keys)
+        return TIRENV_ENOMEM;
+    c->keys = keys;
+    keys = realloc(c->last_keys, cap * sizeof *keys); /* keeps the last solve's */
+    if (!keys)
+        return TIRENV_ENOMEM;
+    c->last_keys = keys;
     size_t *pos = realloc(c->pos, cap * sizeof *pos);
     if (!pos)
         return TIRENV_ENOMEM;
@@ -276,7 +284,7 @@ static void sort_rows(tirenv_springs__cc_row *r, size_t n)
  * dropped here against its w and has them kept (c->vforce, tirenv_springs__cc_add_dropped).
  * The kept rows, and the forced ones in their order of tau, are appended at c->rows[out];
  * returns the new end. stack has room for m + 2. */
-static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+static size_t hull_only(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
                         size_t *stack, size_t out)
 {
     const tirenv_springs__cc_row *r = c->vrows + first;
@@ -327,8 +335,7 @@ static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_
         n_force += force[q] != 0;
     if (n_force == 0)
         return out;
-    const size_t start = out - kept;
-    tirenv_springs__cc_row *hull = c->rows + start;
+    tirenv_springs__cc_row *hull = c->rows + (out - kept);
     /* the hull's rows move up by n_force from the end, the forced ones fill in */
     size_t src = kept, dst = kept + n_force;
     for (size_t q = m; q-- > 0;) {
@@ -341,11 +348,23 @@ static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_
     return out + n_force;
 }
 
+/* hull_only, and the keys of the rows it appended. */
+static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+                        size_t *stack, size_t out)
+{
+    const size_t start = out;
+    out = hull_only(c, first, m, P_l, P_r, stack, out);
+    for (size_t q = start; q < out; ++q)
+        c->keys[q] = (tirenv_springs__cc_key){c->rows[q].id, c->rows[q].i + c->rows[q].j};
+    return out;
+}
+
 /* Element e's own row at R[out] (its pin: the vertex row pin_src[e] of V, or its ray's row)
- * if it has one (pin_h[e] > 0), and pin_row[e] (SIZE_MAX: none); returns the new end. */
+ * and its key if it has one (pin_h[e] > 0), and pin_row[e] (SIZE_MAX: none); returns the new
+ * end. */
 static inline size_t put_pin(const double pin_h[], const size_t pin_src[], size_t pin_row[],
                              const tirenv_springs__cc_row V[], tirenv_springs__cc_row R[],
-                             size_t e, size_t out)
+                             tirenv_springs__cc_key keys[], size_t e, size_t out)
 {
     if (!(pin_h[e] > 0)) {
         pin_row[e] = SIZE_MAX;
@@ -353,6 +372,7 @@ static inline size_t put_pin(const double pin_h[], const size_t pin_src[], size_
     }
     const size_t src = pin_src[e];
     pin_row[e] = out;
+    keys[out] = (tirenv_springs__cc_key){src != SIZE_MAX ? V[src].id : -1 - (long)e, 2 * e};
     if (src != SIZE_MAX) {
         R[out] = V[src];
     } else {
@@ -379,11 +399,12 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     const size_t *pin_src = c->pin_src;
     size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
     size_t *cand_first = c->cand_first, *cand_count = c->cand_count, *hull_sec = c->hull_sec;
+    tirenv_springs__cc_key *keys = c->keys;
     size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0, n_hull = 0;
     size_t *stack = c->pos;
     for (size_t e = lo; e <= hi; ++e) {
         if (pin_h[e] > 0) {
-            out = put_pin(pin_h, pin_src, pin_row, V, R, e, out);
+            out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
             f0 = e < f0 ? e : f0;
             f1 = e;
         } else {
@@ -458,9 +479,10 @@ static void lay_out_again(tirenv_springs__cc *c)
     const double *pin_h = c->pin_h;
     const size_t *pin_src = c->pin_src;
     size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
+    tirenv_springs__cc_key *keys = c->keys;
     size_t out = 0, q = 0;
     for (size_t e = lo; e <= hi; ++e) {
-        out = put_pin(pin_h, pin_src, pin_row, V, R, e, out);
+        out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
         sec_first[e] = out;
         if (q < c->n_hull_sec && c->hull_sec[q] == e) {
             ++q;
@@ -516,10 +538,15 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * the vertex row (SIZE_MAX: the ray) for the layout. */
     double *pin_h = c->pin_h;
     size_t *pin_src = c->pin_src;
+    /* the rays' penetrations on [a, b] (within [lo, hi]: lo <= the first ray with d > 0 and
+     * hi >= the last), 0 beyond */
+    const size_t ra = a > lo ? a : lo, rb = b < hi ? b : hi;
     for (size_t e = lo; e <= hi; ++e) {
-        pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
+        pin_h[e] = 0;
         pin_src[e] = SIZE_MAX;
     }
+    for (size_t e = ra; a <= b && e <= rb; ++e)
+        pin_h[e] = d[e] > 0 ? d[e] : 0;
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
             pin_h[V[k].i] = V[k].h;

@@ -526,7 +526,7 @@ static void test_kept_factor_invisible(void **state)
                 if (st_hot == TIRENV_OK && hot.f0 <= hot.f1) {
                     ++states;
                     between += hot.n_warm > 0;
-                    kept += hot.tri_same && hot.use_schur;
+                    kept += hot.factor_kept && hot.use_schur;
                     tirenv_springs__cc_slope(&hot, &S.T, S.w + 1, dd, dw_hot);
                     tirenv_springs__cc_slope(&cold, &S.T, w_cold + 1, dd, dw_cold);
                     for (size_t e = hot.f0; e <= hot.f1; ++e) {
