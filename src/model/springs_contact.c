@@ -630,18 +630,23 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
      * start. */
     memset(c->warm_pin, 0, N);
     size_t n_warm = 0;
+    /* The workspace's arrays in locals: the stores to pe and lambda would make them be
+     * read again at every row. */
+    const tirenv_springs__cc_row *rows = c->rows;
+    const unsigned char *in_w = c->in_w;
+    double *lambda = c->lambda;
     for (size_t r = 0; r < n_rows; ++r) {
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        if (!c->in_w[r]) {
-            c->lambda[r] = 0;
+        const tirenv_springs__cc_row *R = &rows[r];
+        if (!in_w[r]) {
+            lambda[r] = 0;
             continue;
         }
         keep_warm(c, r, &n_warm);
         if (R->t > 0) {
-            pe[R->i] += R->ga * c->lambda[r];
-            pe[R->j] += R->gb * c->lambda[r];
+            pe[R->i] += R->ga * lambda[r];
+            pe[R->j] += R->gb * lambda[r];
         } else {
-            pe[R->i] += c->lambda[r];
+            pe[R->i] += lambda[r];
         }
     }
     c->n_warm = n_warm;

@@ -70,9 +70,11 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     size_t cap = c->cap_rows ? c->cap_rows : 64;
     while (cap < n)
         cap *= 2;
-    void *r = realloc(c->rows, cap * sizeof *c->rows);
+    tirenv_springs__cc_row *r = realloc(c->rows, cap * sizeof *c->rows);
     if (!r)
         return TIRENV_ENOMEM;
+    for (size_t k = c->cap_rows; k < cap; ++k)
+        r[k].id = 0; /* no ray's (put_pin reads it) */
     c->rows = r;
     unsigned char *in_w = realloc(c->in_w, cap);
     if (!in_w)
@@ -372,16 +374,21 @@ static inline size_t put_pin(const double pin_h[], const size_t pin_src[], size_
     }
     const size_t src = pin_src[e];
     pin_row[e] = out;
-    keys[out] = (tirenv_springs__cc_key){src != SIZE_MAX ? V[src].id : -1 - (long)e, 2 * e};
     if (src != SIZE_MAX) {
         R[out] = V[src];
-    } else {
-        /* A ray's row. */
+        keys[out] = (tirenv_springs__cc_key){V[src].id, 2 * e};
+        return out + 1;
+    }
+    /* A ray's row. A row laid out here before with its id is that row already, all but its
+     * h (nothing writes the rows but the layout; reserve_rows gives new ones id 0). */
+    const long id = -1 - (long)e;
+    if (R[out].id == id)
+        R[out].h = pin_h[e];
+    else
         R[out] = (tirenv_springs__cc_row){.i = e, .j = e, .t = 0, .tau = 0, .ga = 1, .gb = 0,
                                           .h = pin_h[e], .dga_dz = 0, .dgb_dz = 0,
-                                          .dh_dz = NAN, .cmp = 0, .dcmp_dz = 0,
-                                          .id = -1 - (long)e};
-    }
+                                          .dh_dz = NAN, .cmp = 0, .dcmp_dz = 0, .id = id};
+    keys[out] = (tirenv_springs__cc_key){id, 2 * e};
     return out + 1;
 }
 
