@@ -282,6 +282,7 @@ typedef struct {
  * to the largest number of rows met. */
 typedef struct {
     size_t cap_rows, cap_band;
+    /* written by the layout alone (springs_rows.c), which keeps a ray's row it finds in place */
     tirenv_springs__cc_row *rows;
     size_t n_rows;
     /* the ground vertices' rows before the layout (each sector's hull is taken from them),

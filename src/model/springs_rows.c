@@ -559,8 +559,8 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             pin_h[V[k].i] = V[k].h;
             pin_src[V[k].i] = k;
         }
-    if (c->n_forced > 0) { /* the last evaluation's forced rows: none of this one's */
-        memset(c->vforce, 0, nv);
+    if (c->n_forced > 0) { /* the last evaluation's forced rows (of its vrows): none here */
+        memset(c->vforce, 0, c->cap_vrows);
         c->n_forced = 0;
     }
     c->lay_lo = lo;
