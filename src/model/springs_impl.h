@@ -321,8 +321,10 @@ typedef struct {
      * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
      * cand_first, for the n_hull_sec sectors in hull_sec, ascending); the span laid out */
     size_t *pin_src, *cand_first, *cand_count, *hull_sec, n_hull_sec, lay_lo, lay_hi;
-    /* per vertex row (cap_vrows): kept whether on the hull or not, because the last solve
-     * found it violated (tirenv_springs__cc_add_dropped); n_forced of them */
+    /* per vertex row (cap_vrows): kept whether on the hull or not, because a solve of this
+     * evaluation found it violated (tirenv_springs__cc_add_dropped); n_forced of them, and
+     * the flags read only while n_forced > 0 (cleared over the vertex rows when the first is
+     * set) */
     unsigned char *vforce;
     size_t n_forced;
     double *pin_h, *w_try, *step, *raise;

@@ -131,7 +131,6 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
     unsigned char *force = realloc(c->vforce, cap);
     if (!force)
         return TIRENV_ENOMEM;
-    memset(force, 0, cap); /* n_forced = 0 keeps it all 0 from here on */
     c->vforce = force;
     c->cap_vrows = cap;
     return TIRENV_OK;
@@ -559,10 +558,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             pin_h[V[k].i] = V[k].h;
             pin_src[V[k].i] = k;
         }
-    if (c->n_forced > 0) { /* the last evaluation's forced rows (of its vrows): none here */
-        memset(c->vforce, 0, c->cap_vrows);
-        c->n_forced = 0;
-    }
+    c->n_forced = 0; /* vforce is read only while some are (tirenv_springs__cc_add_dropped) */
     c->lay_lo = lo;
     c->lay_hi = hi;
     lay_out(c, T);
@@ -593,13 +589,15 @@ int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const double w[], doub
         if (!works)
             continue;
         for (size_t q = c->cand_first[e], n = q + c->cand_count[e]; q < n; ++q) {
-            if (c->vforce[q])
+            if (c->n_forced > 0 && c->vforce[q])
                 continue; /* a row already */
             int kept = 0;
             for (size_t r = r0; r < r0 + nr && !kept; ++r)
                 kept = R[r].id == V[q].id;
             if (kept || !(V[q].ga * w[V[q].i] + V[q].gb * w[V[q].j] - V[q].h < -tol))
                 continue;
+            if (c->n_forced == 0 && added == 0) /* the first of this evaluation */
+                memset(c->vforce, 0, c->n_vrows);
             c->vforce[q] = 1;
             ++added;
         }
