@@ -188,6 +188,12 @@ const tirenv_springs_params *tirenv_springs_params_of(const tirenv_springs *s)
 }
 
 size_t tirenv_springs_size(const tirenv_springs *s) { return s->N; }
+
+void tirenv_springs__elements_of(const tirenv_springs *s, tirenv_springs__elements *el)
+{
+    *el = (tirenv_springs__elements){.k_r = s->k_r, .k_ir = s->k_ir, .diag = s->diag,
+                                     .cos_t = s->cos_t};
+}
 const double *tirenv_springs_theta(const tirenv_springs *s) { return s->theta; }
 
 /* Elements that can touch the ground: a ray reaches no lower than its tip z - R0 cos(theta),
@@ -473,11 +479,20 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
     } else {
-        const tirenv_springs__cc *cc = &s->cc; /* [f0, f1] is the QP's span */
+        /* [f0, f1] is the QP's span. The workspace's arrays in locals (the stores to dd
+         * would make them be read again at every element), and a ray's kept d(rho)/dz read
+         * in place (tirenv_springs__fan_drho computes it once per memo). */
+        const size_t *pin_row = s->cc.pin_row;
+        const unsigned char *in_w = s->cc.in_w;
+        const tirenv_springs__cc_row *rows = s->cc.rows;
+        tirenv_springs__ray_memo *memo = s->memo;
+        double *dd = s->dd;
         for (size_t i = f0; i <= f1; ++i) { /* the elements held by their own ray's row */
-            const size_t r = cc->pin_row[i];
-            if (r != SIZE_MAX && cc->in_w[r] && cc->rows[r].id < 0)
-                s->dd[i] = -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i]);
+            const size_t r = pin_row[i];
+            if (r != SIZE_MAX && in_w[r] && rows[r].id < 0) {
+                const double dr = memo[i].drho;
+                dd[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
+            }
         }
         tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw);
     }

@@ -14,7 +14,8 @@
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
 {
     memset(c, 0, sizeof *c);
-    size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos};
+    size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos, &c->pin_src,
+                     &c->cand_first, &c->cand_count, &c->hull_sec};
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
@@ -50,6 +51,11 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->sec_first);
     free(c->sec_count);
     free(c->wpos);
+    free(c->pin_src);
+    free(c->cand_first);
+    free(c->cand_count);
+    free(c->hull_sec);
+    free(c->vforce);
     free(c->pin_h);
     free(c->w_try);
     free(c->step);
@@ -60,8 +66,8 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->chains);
     free(c->warm_ids);
     free(c->warm_pin);
-    free(c->last_id);
-    free(c->last_key);
+    free(c->keys);
+    free(c->last_keys);
     memset(c, 0, sizeof *c);
 }
 
@@ -109,8 +115,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
     if (same_layout && c->use_schur && same) {
         /* wpos, order, schur_pos and the chains stand; only the values are new. */
-        c->tri_same = 1;
-        return tirenv_springs__cc_schur_factor(c, T);
+        return tirenv_springs__cc_schur_factor(c, T, 1);
     }
     for (size_t e = f0; e <= f1; ++e) {
         const int held = fixed(c, e);
@@ -133,9 +138,8 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     c->n_kkt = n;
     c->n_schur = n_schur;
     c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
-    c->tri_same = same;
     if (c->use_schur)
-        return tirenv_springs__cc_schur_factor(c, T);
+        return tirenv_springs__cc_schur_factor(c, T, same);
     c->tri_ok = 0; /* wpos no longer describes the factor kept */
     /* The band's half-width, for the banded path only: how far each unknown's row reaches
      * back, an element to its free left neighbour, a row (of sector i, laid out after
@@ -431,44 +435,20 @@ static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
     }
 }
 
-/* A row's element and whether it lies between elements, as one key: i + j is 2 i on
- * element i alone (j = i), 2 i + 1 between i and i + 1. */
-static size_t row_key(const tirenv_springs__cc_row *r)
-{
-    return r->i + r->j;
-}
-
 /* Whether the rows are the last solve's, laid out the same (and over the same span). */
 static int same_as_last(const tirenv_springs__cc *c)
 {
-    if (c->n_rows != c->n_last || c->f0 != c->last_f0 || c->f1 != c->last_f1)
-        return 0;
-    for (size_t r = 0; r < c->n_rows; ++r)
-        if (c->rows[r].id != c->last_id[r] || row_key(&c->rows[r]) != c->last_key[r])
-            return 0;
-    return 1;
+    return c->n_rows == c->n_last && c->f0 == c->last_f0 && c->f1 == c->last_f1 &&
+           !memcmp(c->keys, c->last_keys, c->n_rows * sizeof *c->keys);
 }
 
-static int reserve_last(tirenv_springs__cc *c)
-{
-    if (c->n_rows <= c->cap_last)
-        return TIRENV_OK;
-    long *id = realloc(c->last_id, c->n_rows * sizeof *id);
-    if (!id)
-        return TIRENV_ENOMEM;
-    c->last_id = id;
-    size_t *key = realloc(c->last_key, c->n_rows * sizeof *key);
-    if (!key)
-        return TIRENV_ENOMEM;
-    c->last_key = key;
-    c->cap_last = c->n_rows;
-    return TIRENV_OK;
-}
-
-/* Records the span of the solve just finished, whose rows' keys its last pass stored
- * (reserve_last made room). */
+/* Records the rows and span of the solve just finished: its keys become the last (the
+ * buffers swap; the next layout writes the other). */
 static void keep_last(tirenv_springs__cc *c)
 {
+    tirenv_springs__cc_key *k = c->last_keys;
+    c->last_keys = c->keys;
+    c->keys = k;
     c->n_last = c->n_rows;
     c->last_f0 = c->f0;
     c->last_f1 = c->f1;
@@ -483,9 +463,10 @@ int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], 
     return 1;
 }
 
-int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                             double x, double z, double w[], double pe[], double obstacle[],
-                             tirenv_diag *diag)
+/* The QP on the rows laid out (tirenv_springs__cc_solve without the check of the rows the
+ * hulls dropped). */
+static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double x,
+                    double z, double w[], double pe[], double obstacle[], tirenv_diag *diag)
 {
     const size_t N = T->N;
     c->iterations = 0;
@@ -635,7 +616,7 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         at_min = 0;
     }
     c->iterations = it + 1;
-    if (reserve_warm(c) || reserve_last(c))
+    if (reserve_warm(c))
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
     for (size_t e = f0; e <= f1; ++e) {
@@ -649,20 +630,23 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
      * start. */
     memset(c->warm_pin, 0, N);
     size_t n_warm = 0;
+    /* The workspace's arrays in locals: the stores to pe and lambda would make them be
+     * read again at every row. */
+    const tirenv_springs__cc_row *rows = c->rows;
+    const unsigned char *in_w = c->in_w;
+    double *lambda = c->lambda;
     for (size_t r = 0; r < n_rows; ++r) {
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        c->last_id[r] = R->id; /* for same_as_last */
-        c->last_key[r] = row_key(R);
-        if (!c->in_w[r]) {
-            c->lambda[r] = 0;
+        const tirenv_springs__cc_row *R = &rows[r];
+        if (!in_w[r]) {
+            lambda[r] = 0;
             continue;
         }
         keep_warm(c, r, &n_warm);
         if (R->t > 0) {
-            pe[R->i] += R->ga * c->lambda[r];
-            pe[R->j] += R->gb * c->lambda[r];
+            pe[R->i] += R->ga * lambda[r];
+            pe[R->j] += R->gb * lambda[r];
         } else {
-            pe[R->i] += c->lambda[r];
+            pe[R->i] += lambda[r];
         }
     }
     c->n_warm = n_warm;
@@ -670,6 +654,21 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
     return TIRENV_OK;
+}
+
+/* The QP on the rows laid out, then on those and every row the hulls dropped that its
+ * solution violates, until none does (an outer active-set pass: each round adds a row, so
+ * it ends; nearly always none is violated and one solve does). The rows dropped and never
+ * added hold at the final w with reaction 0, so it solves the QP of every row. */
+int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             double x, double z, double w[], double pe[], double obstacle[],
+                             tirenv_diag *diag)
+{
+    for (;;) {
+        const int st = qp_solve(c, T, x, z, w, pe, obstacle, diag);
+        if (st || c->f0 > c->f1 || !tirenv_springs__cc_add_dropped(c, w, 1e-12 * T->R0))
+            return st;
+    }
 }
 
 void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,

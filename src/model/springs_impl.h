@@ -14,6 +14,15 @@ size_t tirenv_springs__state_size(const tirenv_springs *s);
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
 
+/* What the model's contact length (springs_model.c) needs of the elements: their stiffnesses
+ * k_r and k_ir (N/m), the diagonal of the tips' stiffness K (N/m: k_r + k_ir per neighbour)
+ * and cos(theta_i), N entries each, owned by s. */
+typedef struct {
+    double k_r, k_ir;
+    const double *diag, *cos_t;
+} tirenv_springs__elements;
+void tirenv_springs__elements_of(const tirenv_springs *s, tirenv_springs__elements *el);
+
 /* The equilibrium's bracket at x (m) on p: the ground height under the centre (*z_lo) and R0
  * above the highest ground within R0 either side (*z_hi), where no element can reach the
  * ground; both from the rays' origin, which the force evaluations at x then reuse. */
@@ -260,6 +269,12 @@ typedef struct {
     long id;          /* the ground vertex, or -1 - i for element i's ray */
 } tirenv_springs__cc_row;
 
+/* A row's identity in the layout: its id and i + j (tirenv_springs__cc's keys). */
+typedef struct {
+    long id;
+    size_t ij;
+} tirenv_springs__cc_key;
+
 /* The most working rows between elements solved through their Schur complement. */
 #define TIRENV_SPRINGS__SCHUR_MAX 4
 
@@ -267,6 +282,7 @@ typedef struct {
  * to the largest number of rows met. */
 typedef struct {
     size_t cap_rows, cap_band;
+    /* written by the layout alone (springs_rows.c), which keeps a ray's row it finds in place */
     tirenv_springs__cc_row *rows;
     size_t n_rows;
     /* the ground vertices' rows before the layout (each sector's hull is taken from them),
@@ -294,23 +310,35 @@ typedef struct {
     /* tri_piv, tri_mul and chains hold K_FF's factor for the span tri_f0..tri_f1 and the
      * held elements wpos marks (tri_ok): the next layout with the same span and held
      * elements (the confirming evaluation, the next position) reuses it */
-    int tri_ok, tri_same;
+    int tri_ok;
+    int factor_kept; /* the last factorisation kept K_FF's factor (what the tests count) */
     size_t tri_f0, tri_f1;
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
      * of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
+    /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
+     * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
+     * cand_first, for the n_hull_sec sectors in hull_sec, ascending); the span laid out */
+    size_t *pin_src, *cand_first, *cand_count, *hull_sec, n_hull_sec, lay_lo, lay_hi;
+    /* per vertex row (cap_vrows): kept whether on the hull or not, because a solve of this
+     * evaluation found it violated (tirenv_springs__cc_add_dropped); n_forced of them, and
+     * the flags read only while n_forced > 0 (cleared over the vertex rows when the first is
+     * set) */
+    unsigned char *vforce;
+    size_t n_forced;
     double *pin_h, *w_try, *step, *raise;
     /* warm start: the vertices of the last solution's active rows, ascending; pinned elements */
     long *warm_ids;
     size_t n_warm, cap_warm;
     unsigned char *warm_pin;
     size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
-    /* The rows of the last solve (id, and i + j: 2 i on element i alone, 2 i + 1 between
-     * i and i + 1) and its span, while last_ok: rows laid out the same again (the confirming evaluation) find
+    /* Each row's key as laid out (keys: its id, and i + j: 2 i on element i alone, 2 i + 1
+     * between i and i + 1), and those of the last solve (last_keys, n_last of them) with its
+     * span, while last_ok: rows laid out the same again (the confirming evaluation) find
      * in_w already holding the warm start and the KKT layout of its first eqp unchanged. */
-    long *last_id;
-    size_t *last_key, n_last, cap_last, last_f0, last_f1;
+    tirenv_springs__cc_key *keys, *last_keys;
+    size_t n_last, last_f0, last_f1;
     int last_ok;
     size_t iterations;     /* of the last solve */
     /* the last evaluation's solution had a row between elements working: the next one goes
@@ -322,11 +350,14 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
 void tirenv_springs__cc_free(tirenv_springs__cc *c);
 void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start */
 /* springs_schur.c: factor the KKT system laid out by the banded path (wpos, order, the
- * n_schur working rows between elements at schur_pos); 1 if the rows are dependent. Then
+ * n_schur working rows between elements at schur_pos), K_FF's factor kept as it stands if
+ * same (the span and the held elements those of the factor kept, tri_ok); 1 if the rows are
+ * dependent. Then
  * solve it by element: x[e] on the free elements (the chains) holds the right-hand side of
  * K's rows and returns w_e; lam[q] holds that of the q-th working row between elements and
  * returns its reaction lambda (N). */
-int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T);
+int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   int same);
 void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
                                        const tirenv_springs__cc_tire *T, double x[],
                                        double lam[]);
@@ -338,6 +369,13 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
 int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
                             const double d[], tirenv_diag *diag);
+
+/* After a solve at w: the vertex rows the sectors' hulls dropped (below the hull, but a
+ * working row's own compliance lets the tread in under it) that w violates (slack < -tol,
+ * m) are kept as rows from now on and the rows laid out again (c->rows, the span as before).
+ * Returns 1 if it added some (solve again), 0 if w violates none. Only sectors with a row
+ * working are looked at: elsewhere the hull's rows provably hold the tread above them. */
+int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const double w[], double tol);
 
 /* Whether every row between two elements holds (slack >= -tol, m) at w (over c->f0..c->f1):
  * then the solution of the elements' own rows alone (section 4.4's LCP with obstacle pin_h)

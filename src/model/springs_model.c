@@ -90,20 +90,20 @@ static int springs_contact_length(void *elem, const tirenv_profile *flat, double
         }
     if (k1 > k2)
         return 0;
-    const double k_r = par->c_r * par->dphi, k_ir = par->c_b / par->dphi;
+    tirenv_springs__elements el; /* K_ii is el.diag[i] */
+    tirenv_springs__elements_of(e->s, &el);
+    const double *cos_t = el.cos_t;
     /* e_i as above, with its ray's crossing of the ground X_i (m from under the centre); 0
      * when the ray does not point below the horizon. */
     double len = z * (tan(theta[k2]) - tan(theta[k1]));
     const size_t ends[2][2] = {{k1, k1 - 1}, {k2, k2 + 1}};
     for (int s = 0; s < 2; ++s) {
         const size_t i = ends[s][0], j = ends[s][1];
-        if ((s == 0 && k1 == 0) || (s == 1 && k2 + 1 >= N) || !(cos(theta[j]) > 0))
+        if ((s == 0 && k1 == 0) || (s == 1 && k2 + 1 >= N) || !(cos_t[j] > 0))
             continue;
-        const double K_i = k_r + (i == 0 || i + 1 == N ? 1 : 2) * k_ir;
-        const double K_j = k_r + (j == 0 || j + 1 == N ? 1 : 2) * k_ir;
-        const double e_i = e->p[i] / K_i + (par->R0 - z / cos(theta[i])) - e->w[i];
-        const double e_j = (e->p[j] > 0 ? e->p[j] / K_j : 0) +
-                           (par->R0 - z / cos(theta[j])) - e->w[j];
+        const double e_i = e->p[i] / el.diag[i] + (par->R0 - z / cos_t[i]) - e->w[i];
+        const double e_j = (e->p[j] > 0 ? e->p[j] / el.diag[j] : 0) +
+                           (par->R0 - z / cos_t[j]) - e->w[j];
         if (e_i > 0 && e_j <= 0)
             len += e_i / (e_i - e_j) * z * fabs(tan(theta[j]) - tan(theta[i]));
     }

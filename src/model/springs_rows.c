@@ -70,9 +70,11 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     size_t cap = c->cap_rows ? c->cap_rows : 64;
     while (cap < n)
         cap *= 2;
-    void *r = realloc(c->rows, cap * sizeof *c->rows);
+    tirenv_springs__cc_row *r = realloc(c->rows, cap * sizeof *c->rows);
     if (!r)
         return TIRENV_ENOMEM;
+    for (size_t k = c->cap_rows; k < cap; ++k)
+        r[k].id = 0; /* no ray's (put_pin reads it) */
     c->rows = r;
     unsigned char *in_w = realloc(c->in_w, cap);
     if (!in_w)
@@ -82,6 +84,14 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     if (!lambda)
         return TIRENV_ENOMEM;
     c->lambda = lambda;
+    tirenv_springs__cc_key *keys = realloc(c->keys, cap * sizeof *keys);
+    if (!keys)
+        return TIRENV_ENOMEM;
+    c->keys = keys;
+    keys = realloc(c->last_keys, cap * sizeof *keys); /* keeps the last solve's */
+    if (!keys)
+        return TIRENV_ENOMEM;
+    c->last_keys = keys;
     size_t *pos = realloc(c->pos, cap * sizeof *pos);
     if (!pos)
         return TIRENV_ENOMEM;
@@ -118,6 +128,10 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
     if (!r)
         return TIRENV_ENOMEM;
     c->vrows = r;
+    unsigned char *force = realloc(c->vforce, cap);
+    if (!force)
+        return TIRENV_ENOMEM;
+    c->vforce = force;
     c->cap_vrows = cap;
     return TIRENV_OK;
 }
@@ -264,10 +278,14 @@ static void sort_rows(tirenv_springs__cc_row *r, size_t n)
 
 /* Upper hull of the sector's points (0, P_l), the rows' (tau, h / (ga + gb)) for the vertex
  * rows [first, first + m) and (1, P_r): a row reads (1 - tau) w_i + tau w_j >= h / (ga + gb), so
- * only rows on the hull can bind (a line over [0, 1] above the hull's vertices is above every
- * point), and keeping only them keeps the KKT systems nonsingular. The kept rows
- * are appended at c->rows[out]; returns the new end. stack has room for m + 2. */
-static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+ * where no row of the sector works (reaction 0) only rows on the hull can bind (a line over
+ * [0, 1] above the hull's vertices is above every point), and keeping only them keeps the KKT
+ * systems nonsingular. A working row's tread stands its own compliance times its reaction
+ * below its h, so a row under the hull may still bind there: the solve checks the rows
+ * dropped here against its w and has them kept (c->vforce, tirenv_springs__cc_add_dropped).
+ * The kept rows, and the forced ones in their order of tau, are appended at c->rows[out];
+ * returns the new end. stack has room for m + 2. */
+static size_t hull_only(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
                         size_t *stack, size_t out)
 {
     const tirenv_springs__cc_row *r = c->vrows + first;
@@ -308,84 +326,95 @@ static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_
     }
 #undef PT_T
 #undef PT_H
+    if (c->n_forced == 0)
+        return out;
+    /* The rows the last solve found violated, merged into the hull's rows by tau (the rows
+     * are in order of t, hence of tau): each is a row of its own, whatever its neighbours. */
+    const unsigned char *force = c->vforce + first;
+    size_t n_force = 0;
+    for (size_t q = 0; q < m; ++q)
+        n_force += force[q] != 0;
+    if (n_force == 0)
+        return out;
+    tirenv_springs__cc_row *hull = c->rows + (out - kept);
+    /* the hull's rows move up by n_force from the end, the forced ones fill in */
+    size_t src = kept, dst = kept + n_force;
+    for (size_t q = m; q-- > 0;) {
+        if (!force[q])
+            continue;
+        while (src > 0 && hull[src - 1].tau > r[q].tau)
+            hull[--dst] = hull[--src];
+        hull[--dst] = r[q];
+    }
+    return out + n_force;
+}
+
+/* hull_only, and the keys of the rows it appended. */
+static size_t hull_rows(tirenv_springs__cc *c, size_t first, size_t m, double P_l, double P_r,
+                        size_t *stack, size_t out)
+{
+    const size_t start = out;
+    out = hull_only(c, first, m, P_l, P_r, stack, out);
+    for (size_t q = start; q < out; ++q)
+        c->keys[q] = (tirenv_springs__cc_key){c->rows[q].id, c->rows[q].i + c->rows[q].j};
     return out;
 }
 
-/* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
- * upper hull, laid out element by element; sets f0, f1. */
-static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                      const tirenv_profile *p, double x, double z, size_t a, size_t b,
-                      const double d[])
+/* Element e's own row at R[out] (its pin: the vertex row pin_src[e] of V, or its ray's row)
+ * and its key if it has one (pin_h[e] > 0), and pin_row[e] (SIZE_MAX: none); returns the new
+ * end. */
+static inline size_t put_pin(const double pin_h[], const size_t pin_src[], size_t pin_row[],
+                             const tirenv_springs__cc_row V[], tirenv_springs__cc_row R[],
+                             tirenv_springs__cc_key keys[], size_t e, size_t out)
 {
-    const size_t N = T->N;
-    c->n_rows = 0;
-    if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
-        return TIRENV_ENOMEM;
-    /* the laid-out rows: at most a pin per element and the vertex rows kept; pos, the
-     * hulls' stack, needs nv + 2 */
-    const size_t nv = c->n_vrows;
-    if (reserve_rows(c, nv + N + 2, N))
-        return TIRENV_ENOMEM;
-    tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
-    sort_rows(V, nv);
-    /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
-    size_t lo = N, hi = 0;
-    for (size_t e = a; a <= b && e <= b; ++e)
-        if (d[e] > 0) {
-            lo = e;
-            break;
-        }
-    for (size_t e = b + 1; a <= b && e-- > lo;)
-        if (d[e] > 0) {
-            hi = e;
-            break;
-        }
-    if (nv > 0) {
-        lo = V[0].i < lo ? V[0].i : lo;
-        const size_t top = V[nv - 1].t > 0 ? V[nv - 1].i + 1 : V[nv - 1].i;
-        hi = top > hi ? top : hi;
-    }
-    if (lo > hi) {
-        c->f0 = 1;
-        c->f1 = 0;
-        return TIRENV_OK;
-    }
-    /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_row holds
-     * the vertex row (SIZE_MAX: the ray) until the rows are laid out. The workspace's arrays
-     * and the span are kept in locals: the rows written below could alias them. */
-    double *pin_h = c->pin_h;
-    size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
-    for (size_t e = lo; e <= hi; ++e) {
-        pin_h[e] = a <= e && e <= b && d[e] > 0 ? d[e] : 0;
+    if (!(pin_h[e] > 0)) {
         pin_row[e] = SIZE_MAX;
+        return out;
     }
-    for (size_t k = 0; k < nv; ++k)
-        if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
-            pin_h[V[k].i] = V[k].h;
-            pin_row[V[k].i] = k;
-        }
-    /* Lay out the kept rows. A ray's row: ray_pin with its element, h and id. */
-    const tirenv_springs__cc_row ray_pin = {.t = 0, .tau = 0, .ga = 1, .gb = 0, .dga_dz = 0,
-                                            .dgb_dz = 0, .dh_dz = NAN, .cmp = 0,
-                                            .dcmp_dz = 0};
-    size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0;
+    const size_t src = pin_src[e];
+    pin_row[e] = out;
+    if (src != SIZE_MAX) {
+        R[out] = V[src];
+        keys[out] = (tirenv_springs__cc_key){V[src].id, 2 * e};
+        return out + 1;
+    }
+    /* A ray's row. A row laid out here before with its id is that row already, all but its
+     * h (nothing writes the rows but the layout; reserve_rows gives new ones id 0). */
+    const long id = -1 - (long)e;
+    if (R[out].id == id)
+        R[out].h = pin_h[e];
+    else
+        R[out] = (tirenv_springs__cc_row){.i = e, .j = e, .t = 0, .tau = 0, .ga = 1, .gb = 0,
+                                          .h = pin_h[e], .dga_dz = 0, .dgb_dz = 0,
+                                          .dh_dz = NAN, .cmp = 0, .dcmp_dz = 0, .id = id};
+    keys[out] = (tirenv_springs__cc_key){id, 2 * e};
+    return out + 1;
+}
+
+/* Lays the rows out element by element over [lay_lo, lay_hi]: each element's own row (its
+ * pin), then its sector's rows kept. The vertex rows that provably cannot bind are dropped,
+ * the others' weights computed and recorded per sector (cand_first, cand_count; the
+ * sectors that have some in hull_sec) for tirenv_springs__cc_add_dropped. Sets the span f0,
+ * f1. */
+static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
+{
+    const size_t lo = c->lay_lo, hi = c->lay_hi, nv = c->n_vrows;
+    tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
+    /* The workspace's arrays in locals: the rows written below could alias them. */
+    const double *pin_h = c->pin_h;
+    const size_t *pin_src = c->pin_src;
+    size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
+    size_t *cand_first = c->cand_first, *cand_count = c->cand_count, *hull_sec = c->hull_sec;
+    tirenv_springs__cc_key *keys = c->keys;
+    size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0, n_hull = 0;
     size_t *stack = c->pos;
     for (size_t e = lo; e <= hi; ++e) {
         if (pin_h[e] > 0) {
-            const size_t src = pin_row[e];
-            pin_row[e] = out;
-            if (src != SIZE_MAX) {
-                R[out] = V[src];
-            } else {
-                tirenv_springs__cc_row *r = &R[out];
-                *r = ray_pin;
-                r->i = r->j = e;
-                r->h = pin_h[e];
-                r->id = -1 - (long)e;
-            }
-            ++out;
+            out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
             f0 = e < f0 ? e : f0;
             f1 = e;
+        } else {
+            pin_row[e] = SIZE_MAX;
         }
         sec_first[e] = out;
         if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
@@ -410,7 +439,8 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
              * ends at its tau: with ga + gb >= 1 + ab_lo t (1 - t) and |tau - t| <=
              * tau_dev, if h / (1 + ab_lo t (1 - t)) <= (1 - t) P_l + t P_r - |P_r - P_l|
              * tau_dev. Such rows (nearly every vertex of a smooth road: the tread bows out
-             * between its tips) are dropped before their weights are computed. */
+             * between its tips) are dropped before their weights are computed: the
+             * elements' own rows (no compliance) hold the tread above them. */
             const double slack_tau = fabs(P_r - P_l) * T->tau_dev;
             size_t kept = 0;
             for (size_t q = first; q < first + m; ++q) {
@@ -422,8 +452,12 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                     ++kept;
                 }
             }
-            if (kept > 0)
+            if (kept > 0) {
+                cand_first[e] = first;
+                cand_count[e] = kept;
+                hull_sec[n_hull++] = e;
                 out = hull_rows(c, first, kept, P_l, P_r, stack, out);
+            }
         }
         sec_count[e] = out - sec_first[e];
         if (sec_count[e] > 0) {
@@ -431,6 +465,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             f1 = e + 1;
         }
     }
+    c->n_hull_sec = n_hull;
     c->n_rows = out;
     c->f0 = f0;
     c->f1 = f1;
@@ -438,6 +473,95 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->f0 = 1;
         c->f1 = 0;
     }
+}
+
+/* Lays the rows out again as lay_out did, the hulls taken from the candidates it recorded
+ * and the rows forced since kept with them (tirenv_springs__cc_add_dropped). The span stays:
+ * a forced row lies in a sector that had rows. */
+static void lay_out_again(tirenv_springs__cc *c)
+{
+    const size_t lo = c->lay_lo, hi = c->lay_hi;
+    tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
+    const double *pin_h = c->pin_h;
+    const size_t *pin_src = c->pin_src;
+    size_t *pin_row = c->pin_row, *sec_first = c->sec_first, *sec_count = c->sec_count;
+    tirenv_springs__cc_key *keys = c->keys;
+    size_t out = 0, q = 0;
+    for (size_t e = lo; e <= hi; ++e) {
+        out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
+        sec_first[e] = out;
+        if (q < c->n_hull_sec && c->hull_sec[q] == e) {
+            ++q;
+            out = hull_rows(c, c->cand_first[e], c->cand_count[e], pin_h[e] > 0 ? pin_h[e] : 0,
+                            pin_h[e + 1] > 0 ? pin_h[e + 1] : 0, c->pos, out);
+        }
+        sec_count[e] = out - sec_first[e];
+    }
+    c->n_rows = out;
+}
+
+/* The rows of the problem at (x, z): vertex rows and the rays' pins, reduced to each sector's
+ * upper hull, laid out element by element; sets f0, f1. */
+static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                      const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                      const double d[])
+{
+    const size_t N = T->N;
+    c->n_rows = 0;
+    c->n_hull_sec = 0;
+    if (vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d))
+        return TIRENV_ENOMEM;
+    /* the laid-out rows: at most a pin per element and the vertex rows kept; pos, the
+     * hulls' stack, needs nv + 2 */
+    const size_t nv = c->n_vrows;
+    if (reserve_rows(c, nv + N + 2, N))
+        return TIRENV_ENOMEM;
+    tirenv_springs__cc_row *V = c->vrows;
+    sort_rows(V, nv);
+    /* The elements any row can touch: the rays' that meet the ground, the vertices'. */
+    size_t lo = N, hi = 0;
+    for (size_t e = a; a <= b && e <= b; ++e)
+        if (d[e] > 0) {
+            lo = e;
+            break;
+        }
+    for (size_t e = b + 1; a <= b && e-- > lo;)
+        if (d[e] > 0) {
+            hi = e;
+            break;
+        }
+    if (nv > 0) {
+        lo = V[0].i < lo ? V[0].i : lo;
+        const size_t top = V[nv - 1].t > 0 ? V[nv - 1].i + 1 : V[nv - 1].i;
+        hi = top > hi ? top : hi;
+    }
+    if (lo > hi) {
+        c->f0 = 1;
+        c->f1 = 0;
+        return TIRENV_OK;
+    }
+    /* Pins: the ray's penetration, or a vertex on the ray standing higher. pin_src holds
+     * the vertex row (SIZE_MAX: the ray) for the layout. */
+    double *pin_h = c->pin_h;
+    size_t *pin_src = c->pin_src;
+    /* the rays' penetrations on [a, b] (within [lo, hi]: lo <= the first ray with d > 0 and
+     * hi >= the last), 0 beyond */
+    const size_t ra = a > lo ? a : lo, rb = b < hi ? b : hi;
+    for (size_t e = lo; e <= hi; ++e) {
+        pin_h[e] = 0;
+        pin_src[e] = SIZE_MAX;
+    }
+    for (size_t e = ra; a <= b && e <= rb; ++e)
+        pin_h[e] = d[e] > 0 ? d[e] : 0;
+    for (size_t k = 0; k < nv; ++k)
+        if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
+            pin_h[V[k].i] = V[k].h;
+            pin_src[V[k].i] = k;
+        }
+    c->n_forced = 0; /* vforce is read only while some are (tirenv_springs__cc_add_dropped) */
+    c->lay_lo = lo;
+    c->lay_hi = hi;
+    lay_out(c, T);
     return TIRENV_OK;
 }
 
@@ -449,4 +573,38 @@ int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "rows of the springs model");
     return TIRENV_OK;
+}
+
+int tirenv_springs__cc_add_dropped(tirenv_springs__cc *c, const double w[], double tol)
+{
+    const tirenv_springs__cc_row *R = c->rows, *V = c->vrows;
+    size_t added = 0;
+    for (size_t s = 0; s < c->n_hull_sec; ++s) {
+        const size_t e = c->hull_sec[s], r0 = c->sec_first[e], nr = c->sec_count[e];
+        /* Only a row with a reaction lets the tread under the hull (its own compliance):
+         * where none works, the hull's rows hold the tread above every row dropped. */
+        int works = 0;
+        for (size_t r = r0; r < r0 + nr && !works; ++r)
+            works = c->in_w[r] && c->lambda[r] > 0;
+        if (!works)
+            continue;
+        for (size_t q = c->cand_first[e], n = q + c->cand_count[e]; q < n; ++q) {
+            if (c->n_forced > 0 && c->vforce[q])
+                continue; /* a row already */
+            int kept = 0;
+            for (size_t r = r0; r < r0 + nr && !kept; ++r)
+                kept = R[r].id == V[q].id;
+            if (kept || !(V[q].ga * w[V[q].i] + V[q].gb * w[V[q].j] - V[q].h < -tol))
+                continue;
+            if (c->n_forced == 0 && added == 0) /* the first of this evaluation */
+                memset(c->vforce, 0, c->n_vrows);
+            c->vforce[q] = 1;
+            ++added;
+        }
+    }
+    if (added == 0)
+        return 0;
+    c->n_forced += added;
+    lay_out_again(c);
+    return 1;
 }

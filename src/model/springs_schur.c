@@ -68,7 +68,8 @@ static double row_dot(const tirenv_springs__cc *c, const tirenv_springs__cc_row 
     return s;
 }
 
-int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
+int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   int same)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
     const double k_ir = T->k_ir, k_max = T->k_r + 2 * T->k_ir;
@@ -77,7 +78,8 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
     /* K_FF depends on the span and the held elements only: its factor is kept while they
      * stay (kkt_factor compares them), bit for bit what factorising again gives. */
     c->tri_ok = 0;
-    for (size_t e = f0; !c->tri_same && e <= f1; ++e) {
+    c->factor_kept = same;
+    for (size_t e = f0; !same && e <= f1; ++e) {
         if (c->wpos[e] == SIZE_MAX)
             continue;
         double d = k_diag(c, T, e);
@@ -93,7 +95,7 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
             return 1;
         piv[e] = d;
     }
-    if (!c->tri_same)
+    if (!same)
         c->n_chains = n_chains;
     c->tri_ok = 1;
     c->tri_f0 = f0;

@@ -251,18 +251,10 @@ static void test_kkt_conditions(void **state)
 {
     (void)state;
     rng_state = 777;
-    size_t states = 0, active_rows = 0, coupled = 0;
+    size_t states = 0, active_rows = 0, coupled = 0, forced = 0;
+    double worst = 0; /* the deepest a vertex lies inside the tread, m */
     for (int trial = 0; trial < 400; ++trial) {
         tirenv_springs_params par = continuous_tire().springs;
-        /* The springs values the draws were made around (identified on the Winkler-tread
-         * ring). Around those identified on the shear-coupled default (4.07e5, 3.28e4) draw
-         * 147 (c_b 2.34e6, c_b/c_r 5.7; elements 1.86 degrees apart) ends with two vertices
-         * 0.78 and 3.4 um inside the tread, at t = 0.56 and 0.77: the sector's hull keeps rows
-         * by h/(ga + gb), but a binding row's tread stands its compliance times lambda below
-         * h, so a row dropped just under the hull can bind. Not fixed yet (a pass adding the
-         * dropped rows the final w violates would). */
-        par.c_r = 4.21e5;
-        par.c_b = 2.2e4;
         par.c_b *= pow(10, -2 + 4 * uniform());
         par.dphi = M_PI / (90 + floor(600 * uniform()));
         tire_setup S;
@@ -289,6 +281,7 @@ static void test_kkt_conditions(void **state)
             print_error("%s\n", diag.message);
         assert_int_equal(st, TIRENV_OK);
         ++states;
+        forced += c.n_forced > 0; /* a row the hull dropped was violated and added */
         double *w = S.w + 1;
         if (c.f0 <= c.f1) {
             /* The whole tire: the free chains carried out to both ends. */
@@ -354,8 +347,13 @@ static void test_kkt_conditions(void **state)
             double a, b, da, db;
             tirenv_springs__cc_weights(&S.T, t, &a, &b, &da, &db);
             const double tread = a * w[i] + b * w[i + 1] + own[k];
-            /* 1e-8 m: the snap of t near an element (t_snap |w_(i+1) - w_i|). */
-            assert_true(tread >= par.R0 - rho - 1e-8);
+            /* Round-off (1e-12 R0, the solver's tolerance), and where the vertex lies within
+             * the snap of an element (t_snap = 1e-6 in springs_rows.c; 2e-6 here, for this
+             * t's own rounding) the tread's move over it, t_snap |w_(i+1) - w_i|: its row is
+             * the element's. */
+            const double snap = t < 2e-6 || t > 1 - 2e-6 ? 1e-6 * fabs(w[i + 1] - w[i]) : 0;
+            worst = fmax(worst, par.R0 - rho - tread);
+            assert_true(tread >= par.R0 - rho - 1e-12 * par.R0 - snap);
         }
         free(own);
         /* The model's forces, which solve the elements' own rows first and the QP only if a
@@ -374,9 +372,11 @@ static void test_kkt_conditions(void **state)
         tirenv_profile_free(p);
         free_tire(&S);
     }
-    print_message("%zu states, %zu active rows, %zu of them between two elements\n", states,
-                  active_rows, coupled);
+    print_message("%zu states, %zu active rows, %zu of them between two elements; %zu states "
+                  "with a row under the hull added; deepest vertex %.3g m inside the tread\n",
+                  states, active_rows, coupled, forced, worst);
     assert_true(coupled > 100); /* the guard: coupled rows really were exercised */
+    assert_true(forced > 0);    /* and a row under the hull that binds (draw 147) */
 }
 
 /* A needle and a 4 mm plate, which rays refuse (they slip between them), are carried by the
@@ -526,7 +526,7 @@ static void test_kept_factor_invisible(void **state)
                 if (st_hot == TIRENV_OK && hot.f0 <= hot.f1) {
                     ++states;
                     between += hot.n_warm > 0;
-                    kept += hot.tri_same && hot.use_schur;
+                    kept += hot.factor_kept && hot.use_schur;
                     tirenv_springs__cc_slope(&hot, &S.T, S.w + 1, dd, dw_hot);
                     tirenv_springs__cc_slope(&cold, &S.T, w_cold + 1, dd, dw_cold);
                     for (size_t e = hot.f0; e <= hot.f1; ++e) {
