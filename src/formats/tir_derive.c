@@ -669,7 +669,7 @@ static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const 
         if (!status)
             status = derive_springs(t, k, v->rho_n, &tr->ring, diag);
     }
-    *have_ring = !status;
+    *have_ring = lack != 0 && !status;  /* lack 0: no ring states made here */
     return status;
 }
 

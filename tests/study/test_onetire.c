@@ -215,7 +215,8 @@ static void test_derived_pairs(void **state)
         tirenv_tire t;
         tirenv_tir_origin o;
         derived(f, &t, &o);
-        print_message("%s: %s\n", mf_files[f], o.note);
+        print_message("%s: tau %.3f, Q_FZ2 %.4g: %s\n", mf_files[f], o.pretension_ratio,
+                      t.cam.q_fz2, o.note);
         double loads[N_LOADS];
         for (size_t i = 0; i < N_LOADS; i++)
             loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
