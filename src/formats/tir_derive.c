@@ -303,10 +303,11 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
  * VERTICAL_STIFFNESS the law's tangent at FNOMIN whatever Q_FZ2, which leaves Q_FZ2 the one
  * parameter: it minimises the sum of the squared relative differences of the law's deflection
  * (with PFZ1's factor, as rho_n) from the ring's at 0.5 to 1.5 FNOMIN, by golden section over
- * [-k^2/4, k^2/4) (beyond either end no Q_FZ1, or a law that peaks below 1.5 FNOMIN: a
- * deflection the law does not reach counts as an infinite difference, and such Q_FZ2 lie at
- * the lower end, so the search moves away from them). Q_FZ2_STEPS narrow the bracket by
- * 0.618^100, to the last bits of a double. */
+ * [-k^2/4, k^2/4): above it there is no Q_FZ1, and below it the law softens with the load
+ * as steeply as its tangent at FNOMIN allows, where the ring stiffens. A deflection the law
+ * does not reach (a Q_FZ2 < 0 whose load peaks below 1.5 FNOMIN) counts as an infinite
+ * difference; such Q_FZ2 lie at the lower end, so the search moves away from them.
+ * Q_FZ2_STEPS narrow the bracket by 0.618^100, to the last bits of a double. */
 static double q_fz2_miss(const mf_keys *k, double factor, const flat_set *ring, double q2)
 {
     double sum = 0;
@@ -378,13 +379,17 @@ static int ring_and_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
  * below VERTICAL_STIFFNESS and its deflection there grows. The ring is then scaled (its four
  * stiffnesses by one factor c, as derive_ring scales them) until it deflects at FNOMIN as the
  * law identified on it does: the root of h(c) = log(the law's deflection / the ring's) at
- * FNOMIN, by a secant on log c from the ring that carries FNOMIN at the linear law's
- * deflection; the first step takes the ring's tangent at FNOMIN to VERTICAL_STIFFNESS (the
- * ring's stiffness at a deflection grows about as c), which lands within a few per cent of
- * the root where the fixed-point step (the ring scaled to the law's deflection) crept at a
- * per cent a step. To LAW_TOL: the law deflects within 1e-6 of the ring at FNOMIN, far above
- * the ring's repeatability (a flat inversion to 1e-9 m) and far below the differences the
- * tests bound (0.5 % and more). 3 to 5 evaluations of the ring's states. */
+ * FNOMIN, in log c from the ring that carries FNOMIN at the linear law's deflection (c = 1):
+ * the first step takes the ring's tangent at FNOMIN to VERTICAL_STIFFNESS (the ring's
+ * stiffness at a deflection grows about as c), which lands within a few per cent of the root
+ * where the fixed-point step (the ring scaled to the law's deflection) crept at a per cent a
+ * step; then secant steps, and the Illinois method once h changes sign, each step at most
+ * MAX_LAW_STEP in log c. To LAW_TOL: the law deflects within 1e-6 of the ring at FNOMIN, far
+ * above the ring's repeatability (a flat inversion to 1e-9 m) and far below the differences
+ * the tests bound (0.5 % and more); 4 to 5 evaluations of the ring's states on the tests'
+ * files. Where h keeps its sign (a ring whose air alone is stiffer at FNOMIN than the law),
+ * TIRENV_ENOCONV after MAX_LAW_EVALS, naming Q_FZ2: the caller falls back on the linear
+ * law. */
 static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, double tau,
                        flat_set *ring, double *rho_n, double *q2, tirenv_diag *diag)
 {
@@ -406,7 +411,7 @@ static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, 
     double u = 0, h = log(law_deflection(k, *q2, v->factor, k->fnomin) / ring->defl[I_NOMINAL]);
     double u_a = u, h_a = h, u_b = 0, h_b = 0;  /* the last two, or a bracket */
     int bracket = 0, side = 0;
-    for (int ev = 1; fabs(h) > LAW_TOL; ev++) {
+    for (int ev = 1; !(fabs(h) <= LAW_TOL); ev++) {  /* a NAN h is refused in the loop */
         if (ev >= MAX_LAW_EVALS || !isfinite(h))
             return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "Q_FZ2",
                                 "the derived ring and the Q_FZ2 identified on it found no "
