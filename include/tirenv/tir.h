@@ -56,7 +56,8 @@ enum {
  * made of it. */
 typedef struct {
     double fnomin;         /* [VERTICAL] FNOMIN: nominal load, N; 0 if the file has none */
-    double rho_nominal;    /* the file's deflection at FNOMIN and INFLPRES, m; 0 if unknown */
+    double rho_nominal;    /* the file's deflection at FNOMIN and INFLPRES, m, by its law (with
+                            * Q_FZ2 where derived); 0 if unknown */
     unsigned own;          /* TIRENV_TIR_* of the enveloping sections the file has (and
                             * TIRENV_TIR_VERTICAL: it gives Q_FZ2 or a Q_FZ1 other than 0) */
     unsigned derived;      /* TIRENV_TIR_* of the models derived from its MF-Tyre keys */
