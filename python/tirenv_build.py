@@ -61,6 +61,7 @@ int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n
 static const unsigned int TIRENV_TIR_SPRINGS;
 static const unsigned int TIRENV_TIR_RING;
 static const unsigned int TIRENV_TIR_CAM;
+static const unsigned int TIRENV_TIR_VERTICAL;
 typedef struct { double fnomin; double rho_nominal; unsigned own; unsigned derived;
                  double pretension_ratio; double cam_ring_deflection;
                  double cam_ring_contact_length; char note[1024]; ...; } tirenv_tir_origin;

@@ -48,15 +48,18 @@ int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n
 enum {
     TIRENV_TIR_SPRINGS = 1u << 0, /* [ENVELOPING_SPRINGS]: c_r and c_b */
     TIRENV_TIR_RING = 1u << 1,    /* [ENVELOPING_RING]: t_r, EI, T, k_f, k_t */
-    TIRENV_TIR_CAM = 1u << 2      /* [CONTACT_PATCH] Q_RA1 and Q_RA2: the cam's patch */
+    TIRENV_TIR_CAM = 1u << 2,     /* [CONTACT_PATCH] Q_RA1 and Q_RA2: the cam's patch */
+    TIRENV_TIR_VERTICAL = 1u << 3 /* [VERTICAL] Q_FZ2 (or Q_FZ1): the cam's vertical law */
 };
 
 /* What a tire file says of its own tire besides tirenv's keys, and what tirenv_tir_derive
  * made of it. */
 typedef struct {
     double fnomin;         /* [VERTICAL] FNOMIN: nominal load, N; 0 if the file has none */
-    double rho_nominal;    /* the file's deflection at FNOMIN and INFLPRES, m; 0 if unknown */
-    unsigned own;          /* TIRENV_TIR_* of the enveloping sections the file has */
+    double rho_nominal;    /* the file's deflection at FNOMIN and INFLPRES, m, by its law (with
+                            * Q_FZ2 where derived); 0 if unknown */
+    unsigned own;          /* TIRENV_TIR_* of the enveloping sections the file has (and
+                            * TIRENV_TIR_VERTICAL: it gives Q_FZ2 or a Q_FZ1 other than 0) */
     unsigned derived;      /* TIRENV_TIR_* of the models derived from its MF-Tyre keys */
     double pretension_ratio; /* the derived ring's added BELT_PRETENSION over k_f*R^2, - */
     double cam_ring_deflection;     /* largest |cam - ring|/ring at 0.5 to 1.5 FNOMIN, */
@@ -69,7 +72,9 @@ typedef struct {
  * derives its parameters from the file's MF-Tyre keys (UNLOADED_RADIUS, FNOMIN,
  * VERTICAL_STIFFNESS, PFZ1/INFLPRES/NOMPRES, Q_FZ1/Q_FZ2, RIM_RADIUS or WIDTH and
  * ASPECT_RATIO) so that its flat-ground deflection at FNOMIN is the file's, and says so in
- * origin->note. need (TIRENV_TIR_* bits): the models that must describe this tire; one that
+ * origin->note. Where it derives the ring of a file whose vertical law is VERTICAL_STIFFNESS
+ * alone (no Q_FZ1, Q_FZ2), the cam's Q_FZ2 is identified on that ring with VERTICAL_STIFFNESS
+ * its tangent at FNOMIN, and the file's deflection is that law's (docs/models.md 14.2). need (TIRENV_TIR_* bits): the models that must describe this tire; one that
  * can be neither read nor derived is TIRENV_EINVAL naming the missing key, where the others
  * keep *tire's values with a note. On failure *tire is unchanged. */
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,

@@ -64,11 +64,12 @@ class Tire(collections.abc.Mapping):
     @property
     def derived(self):
         """The models derived from the file's MF-Tyre keys: a subset of {"springs", "ring",
-        "cam"} (the cam's contact-length law Q_RA1, Q_RA2)."""
+        "cam"} (the cam's contact-length law Q_RA1, Q_RA2, or its vertical law's Q_FZ2)."""
         bits = self._origin.derived
+        cam = lib.TIRENV_TIR_CAM | lib.TIRENV_TIR_VERTICAL
         return frozenset(name for name, bit in (("springs", lib.TIRENV_TIR_SPRINGS),
                                                 ("ring", lib.TIRENV_TIR_RING),
-                                                ("cam", lib.TIRENV_TIR_CAM)) if bits & bit)
+                                                ("cam", cam)) if bits & bit)
 
     def _require(self, bits):
         """Refuses, naming the missing key, a model that neither the file nor its MF-Tyre

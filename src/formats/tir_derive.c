@@ -129,6 +129,15 @@ static double nominal_deflection(const mf_keys *k, double *factor, const char **
     return x * k->R0;
 }
 
+/* MF-Tyre's vertical law at standstill with Q_FZ2 q2 and Q_FZ1 from VERTICAL_STIFFNESS (the
+ * tangent at FNOMIN), at the file's pressure factor: the deflection (m) at load G (N); NAN
+ * where the law has no Q_FZ1 or does not reach G. */
+static double law_deflection(const mf_keys *k, double q2, double factor, double G)
+{
+    const double q1 = tirenv_cam_q_fz1(k->c_z, k->R0, k->fnomin, q2);
+    return tirenv_cam_vertical_root(k->R0, q1, q2, G / (factor * k->fnomin));
+}
+
 /* The load (N) of a model of *t at deflection rho_n on flat ground. */
 static int load_at(const tirenv_model_type *type, const tirenv_tire *t, double rho_n,
                    double guess, double *G, tirenv_diag *diag)
@@ -192,10 +201,12 @@ static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const
  * (tirenv_nominal_load_fractions), as tirenv identify takes them (docs/models.md section
  * 14.1). */
 enum { N_LOADS = TIRENV_NOMINAL_LOADS };
+enum { I_NOMINAL = 2 };  /* tirenv_nominal_load_fractions[I_NOMINAL] is 1: FNOMIN itself */
 
 /* A model's flat-ground states at those loads. */
 typedef struct {
     double G[N_LOADS], defl[N_LOADS], l[N_LOADS];  /* N, m, m */
+    double k[N_LOADS];                             /* tangent stiffness, N/m */
 } flat_set;
 
 static int flats(const tirenv_model_type *type, const tirenv_tire *t, double fnomin,
@@ -213,6 +224,7 @@ static int flats(const tirenv_model_type *type, const tirenv_tire *t, double fno
         status = tirenv_model_flat(m, out->G[i], &f, diag);
         out->defl[i] = f.deflection;
         out->l[i] = f.contact_length;
+        out->k[i] = f.stiffness;
     }
     tirenv_model_free(m);
     return status;
@@ -285,6 +297,164 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
     return scale_to(tirenv_model_ring, t, stiff, 4, k->fnomin, rho_n, diag);
 }
 
+/* docs/models.md section 14.2: Q_FZ2 identified on the ring's states, for a file whose
+ * vertical law is VERTICAL_STIFFNESS alone. Q_FZ1 = sqrt(k^2 - 4*Q_FZ2), k =
+ * VERTICAL_STIFFNESS*R0/FNOMIN, as MF-Tyre 6.1 derives it for a file without Q_FZ1, keeps
+ * VERTICAL_STIFFNESS the law's tangent at FNOMIN whatever Q_FZ2, which leaves Q_FZ2 the one
+ * parameter: it minimises the sum of the squared relative differences of the law's deflection
+ * (with PFZ1's factor, as rho_n) from the ring's at 0.5 to 1.5 FNOMIN, by golden section over
+ * [-k^2/4, k^2/4): above it there is no Q_FZ1, and below it the law softens with the load
+ * as steeply as its tangent at FNOMIN allows, where the ring stiffens. A deflection the law
+ * does not reach (a Q_FZ2 < 0 whose load peaks below 1.5 FNOMIN) counts as an infinite
+ * difference; such Q_FZ2 lie at the lower end, so the search moves away from them.
+ * Q_FZ2_STEPS narrow the bracket by 0.618^100, to the last bits of a double. */
+static double q_fz2_miss(const mf_keys *k, double factor, const flat_set *ring, double q2)
+{
+    double sum = 0;
+    for (size_t i = 0; i < N_LOADS; i++) {
+        const double e = law_deflection(k, q2, factor, ring->G[i]) / ring->defl[i] - 1;
+        sum += e * e;
+    }
+    return isfinite(sum) ? sum : HUGE_VAL;
+}
+
+static double q_fz2_on(const mf_keys *k, double factor, const flat_set *ring)
+{
+    enum { Q_FZ2_STEPS = 100 };
+    const double kk = k->c_z * k->R0 / k->fnomin, q_max = kk * kk / 4;
+    const double r = (sqrt(5.0) - 1) / 2;
+    double a = -q_max, b = q_max * (1 - 1e-9);
+    double c = b - r * (b - a), d = a + r * (b - a);
+    double fc = q_fz2_miss(k, factor, ring, c), fd = q_fz2_miss(k, factor, ring, d);
+    for (int i = 0; i < Q_FZ2_STEPS; i++) {
+        if (fc < fd) {
+            b = d, d = c, fd = fc;
+            c = b - r * (b - a);
+            fc = q_fz2_miss(k, factor, ring, c);
+        } else {
+            a = c, c = d, fc = fd;
+            d = a + r * (b - a);
+            fd = q_fz2_miss(k, factor, ring, d);
+        }
+    }
+    return fc < fd ? c : d;
+}
+
+/* The vertical law the derived ring is scaled to (section 14.2). */
+typedef struct {
+    double rho_n;     /* the file's deflection at FNOMIN by its own law, m */
+    double factor;    /* PFZ1's pressure factor, - */
+    int derive_q_fz2; /* the file's law is VERTICAL_STIFFNESS alone: Q_FZ2 identified */
+} vertical_law;
+
+/* The ring of *t with its stiffnesses EI, T, k_f, k_t at base[] times c: its states at 0.5 to
+ * 1.5 FNOMIN, the Q_FZ2 identified on them, and h, the log of the ratio of that law's
+ * deflection at FNOMIN to the ring's. */
+static int ring_and_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
+                        const double base[4], double c, flat_set *ring, double *q2, double *h,
+                        tirenv_diag *diag)
+{
+    t->ring.EI = base[0] * c;
+    t->ring.T = base[1] * c;
+    t->ring.k_f = base[2] * c;
+    t->ring.k_t = base[3] * c;
+    const int status = flats(tirenv_model_ring, t, k->fnomin, ring, diag);
+    if (status)
+        return status;
+    *q2 = q_fz2_on(k, v->factor, ring);
+    const double rho_law = law_deflection(k, *q2, v->factor, k->fnomin);
+    if (!(rho_law > 0 && isfinite(rho_law)))
+        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "Q_FZ2",
+                            "the Q_FZ2 = %g identified on the derived ring gives no deflection "
+                            "at FNOMIN %g N", *q2, k->fnomin);
+    *h = log(rho_law / ring->defl[I_NOMINAL]);
+    return TIRENV_OK;
+}
+
+/* docs/models.md section 14.2: the derived ring and its states, scaled to the file's vertical
+ * law; *rho_n the deflection (m) at which it carries FNOMIN. A file's own law (Q_FZ2 or Q_FZ1
+ * given) fixes that deflection, and the ring is scaled to carry FNOMIN there (derive_ring). A
+ * law of VERTICAL_STIFFNESS alone gets Q_FZ2 identified on the ring, VERTICAL_STIFFNESS kept
+ * its tangent at FNOMIN: the ring stiffens with the load, so the law's secant at FNOMIN falls
+ * below VERTICAL_STIFFNESS and its deflection there grows. The ring is then scaled (its four
+ * stiffnesses by one factor c, as derive_ring scales them) until it deflects at FNOMIN as the
+ * law identified on it does: the root of h(c) = log(the law's deflection / the ring's) at
+ * FNOMIN, in log c from the ring that carries FNOMIN at the linear law's deflection (c = 1):
+ * the first step takes the ring's tangent at FNOMIN to VERTICAL_STIFFNESS (the ring's
+ * stiffness at a deflection grows about as c), which lands within a few per cent of the root
+ * where the fixed-point step (the ring scaled to the law's deflection) crept at a per cent a
+ * step; then secant steps, and the Illinois method once h changes sign, each step at most
+ * MAX_LAW_STEP in log c. To LAW_TOL: the law deflects within 1e-6 of the ring at FNOMIN, far
+ * above the ring's repeatability (a flat inversion to 1e-9 m) and far below the differences
+ * the tests bound (0.5 % and more); 4 to 5 evaluations of the ring's states on the tests'
+ * files. Where h keeps its sign (a ring whose air alone is stiffer at FNOMIN than the law),
+ * TIRENV_ENOCONV after MAX_LAW_EVALS, naming Q_FZ2: the caller falls back on the linear
+ * law. */
+static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, double tau,
+                       flat_set *ring, double *rho_n, double *q2, tirenv_diag *diag)
+{
+    static const double LAW_TOL = 1e-6, MAX_LAW_STEP = 1;
+    enum { MAX_LAW_EVALS = 12 };
+    *rho_n = v->rho_n;
+    *q2 = 0;
+    int status = derive_ring(t, k, v->rho_n, tau, diag);
+    if (!status)
+        status = flats(tirenv_model_ring, t, k->fnomin, ring, diag);
+    if (status || !v->derive_q_fz2)
+        return status;
+    if (ring->G[I_NOMINAL] != k->fnomin)  /* the load fractions lost their 1 */
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FNOMIN",
+                            "the derivation's loads do not include FNOMIN itself");
+    const double base[4] = {t->ring.EI, t->ring.T, t->ring.k_f, t->ring.k_t};
+    /* The states at c = 1 are the ones just computed. */
+    *q2 = q_fz2_on(k, v->factor, ring);
+    double u = 0, h = log(law_deflection(k, *q2, v->factor, k->fnomin) / ring->defl[I_NOMINAL]);
+    double u_a = u, h_a = h, u_b = 0, h_b = 0;  /* the last two, or a bracket */
+    int bracket = 0, side = 0;
+    for (int ev = 1; !(fabs(h) <= LAW_TOL); ev++) {  /* a NAN h is refused in the loop */
+        if (ev >= MAX_LAW_EVALS || !isfinite(h))
+            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "Q_FZ2",
+                                "the derived ring and the Q_FZ2 identified on it found no "
+                                "common deflection at FNOMIN %g N in %d trials (the law's "
+                                "deflection there %g times the ring's at best)", k->fnomin,
+                                (int)MAX_LAW_EVALS, exp(fabs(h_a) < fabs(h) ? h_a : h));
+        double step;
+        if (ev == 1)
+            step = log(k->c_z / ring->k[I_NOMINAL]);
+        else if (bracket)  /* Illinois within [u_a, u_b] */
+            step = (u_a * h_b - u_b * h_a) / (h_b - h_a) - u;
+        else
+            step = h != h_b ? -h * (u - u_b) / (h - h_b) : -h;
+        const double u_new = u + fmax(-MAX_LAW_STEP, fmin(MAX_LAW_STEP, step));
+        const double u_old = u, h_old = h;
+        if ((status = ring_and_law(t, k, v, base, exp(u_new), ring, q2, &h, diag)))
+            return status;
+        u = u_new;
+        if (bracket) {
+            if ((h > 0) == (h_a > 0)) {
+                u_a = u, h_a = h;
+                if (side == 1)
+                    h_b *= 0.5;
+                side = 1;
+            } else {
+                u_b = u, h_b = h;
+                if (side == -1)
+                    h_a *= 0.5;
+                side = -1;
+            }
+        } else if ((h > 0) != (h_old > 0)) {
+            bracket = 1;
+            u_a = u_old, h_a = h_old, u_b = u, h_b = h;
+        } else {
+            u_b = u_old, h_b = h_old;  /* the secant's previous point */
+            if (fabs(h) < fabs(h_a))
+                u_a = u, h_a = h;      /* the best so far, for the message */
+        }
+    }
+    *rho_n = ring->defl[I_NOMINAL];
+    return TIRENV_OK;
+}
+
 /* How the springs model's contact length grows with the load against the ring's: the log of
  * their ratio at 0.5 FNOMIN minus that at 1.5 FNOMIN (0: the same growth; > 0: the springs
  * model's grows slower, long at the lowest load and short at the highest). */
@@ -316,30 +486,30 @@ typedef struct {
     tirenv_tire t;   /* the tire with both models derived at tau */
     flat_set ring;   /* its ring's states */
     double tau, e;   /* -, growth_miss */
+    double rho_n;    /* the deflection at FNOMIN both carry it at, m */
+    double q_fz2;    /* Q_FZ2 identified on the ring (ring_on_law), or 0 */
 } trial;
 
-static int try_tau(const tirenv_tire *t0, const mf_keys *k, double rho_n, double tau, trial *out,
-                   tirenv_diag *diag)
+static int try_tau(const tirenv_tire *t0, const mf_keys *k, const vertical_law *v, double tau,
+                   trial *out, tirenv_diag *diag)
 {
     out->t = *t0;
     out->tau = tau;
-    int status = derive_ring(&out->t, k, rho_n, tau, diag);
+    int status = ring_on_law(&out->t, k, v, tau, &out->ring, &out->rho_n, &out->q_fz2, diag);
     if (!status)
-        status = flats(tirenv_model_ring, &out->t, k->fnomin, &out->ring, diag);
-    if (!status)
-        status = derive_springs(&out->t, k, rho_n, &out->ring, diag);
+        status = derive_springs(&out->t, k, out->rho_n, &out->ring, diag);
     if (!status)
         status = growth_miss(&out->t, k->fnomin, &out->ring, &out->e, diag);
     return status;
 }
 
-static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, double rho_n, trial *best,
-                               tirenv_diag *diag)
+static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
+                               trial *best, tirenv_diag *diag)
 {
     static const double TAU_FIRST = 0.1, TAU_MAX = 0.4, E_TOL = 0.01;
     enum { MAX_EVALS = 12 };
     trial lo, hi, x;
-    int status = try_tau(t, k, rho_n, 0, &lo, diag);
+    int status = try_tau(t, k, v, 0, &lo, diag);
     int evals = 1;
     if (status)
         return status;
@@ -350,7 +520,7 @@ static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, double rho_n, t
     /* Bracket: lo grows slower (e > 0); double tau until hi does not. */
     double tau = TAU_FIRST;
     for (;;) {
-        if ((status = try_tau(t, k, rho_n, tau, &hi, diag)))
+        if ((status = try_tau(t, k, v, tau, &hi, diag)))
             return status;
         evals++;
         if (hi.e <= E_TOL || tau >= TAU_MAX)
@@ -367,7 +537,7 @@ static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, double rho_n, t
     *best = fabs(lo.e) < fabs(hi.e) ? lo : hi;
     while (evals < MAX_EVALS && fabs(best->e) > E_TOL) {
         tau = (lo.tau * fb - hi.tau * fa) / (fb - fa);
-        if ((status = try_tau(t, k, rho_n, tau, &x, diag)))
+        if ((status = try_tau(t, k, v, tau, &x, diag)))
             return status;
         evals++;
         if (fabs(x.e) < fabs(best->e))
@@ -477,7 +647,35 @@ static void cam_part(tirenv_tire *t, const mf_keys *k, const flat_set *ring_or_n
     origin->cam_ring_contact_length = e_l;
     note_add(origin, ": cam against ring at 0.5 to 1.5 FNOMIN, deflection up to %.1f %%%s, "
              "contact length up to %.1f %%", 100 * e_defl,
-             k->given & MF_QFZ2 ? "" : " (the file's linear law)", 100 * e_l);
+             origin->derived & TIRENV_TIR_VERTICAL ? ""
+             : origin->own & TIRENV_TIR_VERTICAL   ? " (the file's own vertical law)"
+                                                   : " (the file's linear law)",
+             100 * e_l);
+}
+
+/* The models the file lacks (lack: TIRENV_TIR_SPRINGS and/or TIRENV_TIR_RING) derived into
+ * *t on the law v, the ring first (the springs model is identified on it); *tr holds the
+ * ring's states (*have_ring set) and the deflection at FNOMIN and Q_FZ2 they were made on. */
+static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const vertical_law *v,
+                         trial *tr, int *have_ring, tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    *have_ring = 0;
+    tr->rho_n = v->rho_n;
+    tr->q_fz2 = 0;
+    if (lack == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING)) {
+        status = derive_ring_springs(t, k, v, tr, diag);
+        if (!status)
+            *t = tr->t;
+    } else if (lack == TIRENV_TIR_RING) {
+        status = ring_on_law(t, k, v, 0, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
+    } else if (lack == TIRENV_TIR_SPRINGS) {
+        status = flats(tirenv_model_ring, t, k->fnomin, &tr->ring, diag);
+        if (!status)
+            status = derive_springs(t, k, v->rho_n, &tr->ring, diag);
+    }
+    *have_ring = lack != 0 && !status;  /* lack 0: no ring states made here */
+    return status;
 }
 
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
@@ -490,8 +688,12 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
     int status = tirenv_propfile__read(&mf_schema, path, &k, diag);
     if (status)
         return status;
+    /* A vertical law of the file's own: Q_FZ2, or a Q_FZ1 other than 0 (0 is MF-Tyre's
+     * "derive it from VERTICAL_STIFFNESS", nominal_deflection). */
+    const int own_law = (k.given & MF_QFZ2) || ((k.given & MF_QFZ1) && k.q_fz1 != 0);
     origin->own = (k.given & MF_SPRINGS ? TIRENV_TIR_SPRINGS : 0u) |
-                  (k.given & MF_RING ? TIRENV_TIR_RING : 0u);
+                  (k.given & MF_RING ? TIRENV_TIR_RING : 0u) |
+                  (own_law ? TIRENV_TIR_VERTICAL : 0u);
     const unsigned q_ra = TIRENV_CAM_Q_RA1 | TIRENV_CAM_Q_RA2;
     if ((tire->cam.given & q_ra) == q_ra)
         origin->own |= TIRENV_TIR_CAM;
@@ -505,8 +707,14 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         return TIRENV_OK;
     double factor;
     const char *missing;
-    const double rho_n = nominal_deflection(&k, &factor, &missing);
+    double rho_n = nominal_deflection(&k, &factor, &missing);
     origin->rho_nominal = rho_n;
+    /* The cam's Q_FZ2 is identified on the ring where the ring is derived (so the two are
+     * scaled together) and the file's law is VERTICAL_STIFFNESS alone (section 14.2). */
+    vertical_law law = {
+        .rho_n = rho_n, .factor = factor,
+        .derive_q_fz2 = (lack & TIRENV_TIR_RING) && cam_possible && !own_law &&
+                        (k.given & MF_CZ)};
     if (!lack && (missing || !cam_possible))
         return TIRENV_OK;
     tirenv_tire t = *tire;
@@ -531,21 +739,18 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         *tire = t;
         return TIRENV_OK;
     }
-    /* The ring first: the springs model is identified on it. */
-    if (lack == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING)) {
-        status = derive_ring_springs(&t, &k, rho_n, &tr, diag);
-        if (!status) {
-            t = tr.t;
-            have_ring = 1;
-            origin->pretension_ratio = tr.tau;
-        }
-    } else if (lack == TIRENV_TIR_RING) {
-        status = derive_ring(&t, &k, rho_n, 0, diag);
-    } else if (lack == TIRENV_TIR_SPRINGS) {
-        status = flats(tirenv_model_ring, &t, k.fnomin, &tr.ring, diag);
-        have_ring = !status;
-        if (!status)
-            status = derive_springs(&t, &k, rho_n, &tr.ring, diag);
+    /* The ring first: the springs model is identified on it. Where no Q_FZ2 identified on the
+     * derived ring deflects with it at FNOMIN (a ring whose air alone is stiffer than the law
+     * at FNOMIN: test_onetire.c's car-sized ring at a PFZ1 factor of 1.26), the
+     * derivation is made again on the file's linear law, as without Q_FZ2, and the note says
+     * why. */
+    char no_law[sizeof diag->message] = "";
+    status = derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
+    if (status && law.derive_q_fz2 && strcmp(diag->field, "Q_FZ2") == 0) {
+        snprintf(no_law, sizeof no_law, "%s", diag->message);
+        law.derive_q_fz2 = 0;
+        t = *tire;
+        status = derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
     }
     if (status) {
         if (!diag->file[0])
@@ -553,6 +758,13 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         return status;
     }
     origin->derived = lack;
+    if (lack == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING))
+        origin->pretension_ratio = tr.tau;
+    if (law.derive_q_fz2) {
+        rho_n = origin->rho_nominal = tr.rho_n;
+        t.cam.q_fz2 = tr.q_fz2;
+        origin->derived |= TIRENV_TIR_VERTICAL;
+    }
     if (lack & TIRENV_TIR_RING)
         note_add(origin, "no [ENVELOPING_RING]: derived TREAD_THICKNESS = %.4g, "
                  "BELT_BENDING_STIFFNESS = %.4g, BELT_PRETENSION = %.4g, "
@@ -562,10 +774,17 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
                  "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t.springs.c_r,
                  t.springs.c_b);
+    if (law.derive_q_fz2)
+        note_add(origin, "; no Q_FZ2 of its own: derived on the ring Q_FZ2 = %.4g, "
+                 "VERTICAL_STIFFNESS %.4g kN/m its tangent at FNOMIN", t.cam.q_fz2,
+                 k.c_z / 1e3);
+    if (no_law[0])
+        note_add(origin, "; no Q_FZ2 of its own and none derived, the file's linear law kept "
+                 "(%s)", no_law);
     if (lack)
-        note_add(origin, " (deflection %.4g mm at FNOMIN %.6g N: stiffness %.4g kN/m%s)",
-                 rho_n * 1e3, k.fnomin, k.fnomin / rho_n / 1e3,
-                 factor != 1 ? ", PFZ1 at INFLPRES" : "");
+        note_add(origin, " (deflection %.4g mm at FNOMIN %.6g N: %sstiffness %.4g kN/m%s)",
+                 rho_n * 1e3, k.fnomin, law.derive_q_fz2 ? "secant " : "",
+                 k.fnomin / rho_n / 1e3, factor != 1 ? ", PFZ1 at INFLPRES" : "");
     if (cam_possible)
         cam_part(&t, &k, have_ring ? &tr.ring : NULL, !(origin->own & TIRENV_TIR_CAM), origin);
     *tire = t;

@@ -149,7 +149,8 @@ static void test_model_pairs(void **state)
 }
 
 /* The MF-Tyre files the tests have, none with a tirenv section but 205-60R15-mfswift.tir;
- * the last two have the cam's contact law (Q_RA1, Q_RA2) of their own. */
+ * the last two have the cam's contact law (Q_RA1, Q_RA2) of their own, and the 430/50R38
+ * (N_OWN_LAW) its vertical law (Q_FZ2 = 0). */
 static const char *const mf_files[] = {
     TIRENV_TEST_DATA "/samples/tir/335_65R22_5_G275MSA_60psi.tir",
     TIRENV_TEST_DATA "/samples/tir/HMMWV_Pac02Tire.tir",
@@ -157,7 +158,7 @@ static const char *const mf_files[] = {
     TIRENV_TEST_DATA "/samples/tir/tractor_430_50R38.tir",
     TIRENV_TEST_DATA "/tir_mftyre.tir",
 };
-enum { N_MF = sizeof mf_files / sizeof mf_files[0], N_OWN_CAM = 2 };
+enum { N_MF = sizeof mf_files / sizeof mf_files[0], N_OWN_CAM = 2, N_OWN_LAW = 3 };
 
 /* File f read and its models derived (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING needed), once for
  * the tests that look at them: a derivation costs up to 2.7 s of CPU (the 335/65R22.5's). */
@@ -181,57 +182,121 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
 }
 
 /* The models derived from MF-Tyre files (section 14.2) at 0.5 to 1.5 times each file's
- * FNOMIN, on every file: springs - ring within 5 % in deflection and contact length (issue
- * 24; the ring's pretension is raised until the springs model's contact length grows with the
- * load as the ring's does). Where the cam's contact law was derived on the ring, cam - ring
- * within 5 % in contact length. The cam's deflection is the file's own vertical law
- * (VERTICAL_STIFFNESS without Q_FZ2: linear), which the derived ring, stiffening with the
- * load, does not follow to 5 % at both ends of the range: the difference is the one
- * tirenv_tir_derive measures and says (origin), bounded here per file at half a per cent
- * above what was measured (6.7, 6.0, 8.1, 5.1 and 7.5 %; docs/models.md 14.2 has why neither
- * fitting the ring over the range nor a stiffer belt brings it within 5 %). A file's own
- * Q_RA1, Q_RA2 are kept and their difference from the ring said (over 25 % on both files that
- * have them). Figures: docs/models.md 14.2. */
+ * FNOMIN: each pair's largest relative difference in deflection and in contact length within
+ * 5 % (issue 24), bounded here per file at half a per cent above what was measured where that
+ * is lower (docs/models.md 14.2 has the figures), so that a change that loses what the
+ * derivation gained fails. The springs model is identified on the ring and the ring's
+ * pretension raised until their contact lengths grow alike; the cam's Q_RA1, Q_RA2 and, for a
+ * file whose vertical law is VERTICAL_STIFFNESS alone, its Q_FZ2 are identified on the ring.
+ * What a file gives of its own is kept and its difference said (origin), and not bounded by
+ * 5 %: the 430/50R38's Q_FZ2 = 0 (a linear law the ring, stiffening with the load, misses by
+ * 5.1 % at the ends) and its own Q_RA1, Q_RA2 (round values: 46.6 % from the ring's patch),
+ * tir_mftyre.tir's Q_RA1, Q_RA2 (the 205/60R15's, 24.1 %): those bounds are the measured
+ * differences plus half a per cent, and the own contact laws are asserted to be another
+ * tire's (over 20 % off: said, not mixed). */
+typedef struct {
+    double springs_ring[2], cam_ring[2], springs_cam[2]; /* deflection, contact length */
+} pair_bounds;
+
 static void test_derived_pairs(void **state)
 {
     (void)state;
+    /* Measured (%): 335/65R22.5 2.52/1.32, 0.25/0.61, 2.60/1.51; HMMWV 2.49/1.52, 0.68/0.46,
+     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 2.69/3.58, 5.08/46.63,
+     * 7.46/34.25; tir_mftyre.tir 3.09/1.33, 0.32/24.05, 2.95/20.46. */
+    static const pair_bounds bound[N_MF] = {
+        {{0.031, 0.019}, {0.008, 0.012}, {0.032, 0.021}},
+        {{0.030, 0.021}, {0.012, 0.010}, {0.033, 0.018}},
+        {{0.050, 0.036}, {0.018, 0.008}, {0.045, 0.033}},
+        {{0.032, 0.041}, {0.056, 0.472}, {0.080, 0.348}},
+        {{0.036, 0.019}, {0.009, 0.246}, {0.035, 0.210}},
+    };
     for (size_t f = 0; f < N_MF; f++) {
         tirenv_tire t;
         tirenv_tir_origin o;
         derived(f, &t, &o);
-        print_message("%s: %s\n", mf_files[f], o.note);
+        print_message("%s: tau %.3f, Q_FZ2 %.4g: %s\n", mf_files[f], o.pretension_ratio,
+                      t.cam.q_fz2, o.note);
         double loads[N_LOADS];
         for (size_t i = 0; i < N_LOADS; i++)
             loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
         pair_miss e[3];
         pairs(strrchr(mf_files[f], '/') + 1, &t, N_LOADS, loads, e);
-        assert_true(e[0].defl <= 0.05 && e[0].l <= 0.05);
+        const double *b[3] = {bound[f].springs_ring, bound[f].cam_ring, bound[f].springs_cam};
+        for (size_t k = 0; k < 3; k++) {
+            assert_true(e[k].defl <= b[k][0]);
+            assert_true(e[k].l <= b[k][1]);
+        }
         /* What the derivation said is what the models do. */
         assert_near(o.cam_ring_deflection, e[1].defl, 1e-12, 0);
         assert_near(o.cam_ring_contact_length, e[1].l, 1e-12, 0);
-        static const double cam_defl_max[N_MF] = {0.072, 0.065, 0.086, 0.056, 0.080};
-        assert_true(e[1].defl <= cam_defl_max[f]);
+        assert_non_null(strstr(o.note, "cam against ring"));
         if (f < N_MF - N_OWN_CAM) {
             assert_int_equal(o.derived & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
             assert_non_null(strstr(o.note, "derived on the ring Q_RA1"));
-            assert_true(e[1].l <= 0.05);
         } else {
             assert_int_equal(o.own & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
             assert_int_equal(o.derived & TIRENV_TIR_CAM, 0);
             assert_non_null(strstr(o.note, "the file's own cam contact law kept"));
-            assert_true(e[1].l > 0.25);  /* the file's cam is another tire: said, not mixed */
+            assert_true(e[1].l > 0.20);  /* the file's cam is another tire: said, not mixed */
         }
-        assert_non_null(strstr(o.note, "cam against ring"));
+        if (f == N_OWN_LAW) {  /* the 430/50R38's Q_FZ2 = 0: its own law, kept and said */
+            assert_int_equal(o.own & TIRENV_TIR_VERTICAL, TIRENV_TIR_VERTICAL);
+            assert_int_equal(o.derived & TIRENV_TIR_VERTICAL, 0);
+            assert_true(t.cam.q_fz2 == 0);
+            assert_non_null(strstr(o.note, "(the file's own vertical law)"));
+        } else {
+            assert_int_equal(o.derived & TIRENV_TIR_VERTICAL, TIRENV_TIR_VERTICAL);
+            assert_true(t.cam.q_fz2 > 0);  /* the ring stiffens with the load */
+            assert_non_null(strstr(o.note, "no Q_FZ2 of its own: derived on the ring Q_FZ2 = "));
+        }
     }
 }
 
-/* Derived springs and ring: each carries FNOMIN at the file's deflection (to the 1e-9 of the
- * inversion), so its secant stiffness there is the file's VERTICAL_STIFFNESS within 10 %
- * (exact for a linear law); none
- * keeps the tractor's values. */
+/* The 205/60R15 (data/tires/205-60R15-mfswift.tir) has every model of its own: TNO's cam
+ * (its linear law, Q_RA1, Q_RA2) and tirenv's start values for the springs model and a
+ * car-sized ring, none identified on another, and its data set is made by its cam, so nothing
+ * is derived and it is not one tire: at 0.5 to 1.5 FNOMIN the cam's patch is 39 to 42 % longer
+ * than the ring's and the springs model's 13 to 26 % shorter, the cam's deflection 6.2 % from
+ * the ring's. Measured, deflection / contact length: springs - ring 0.48 / 26.21 %, cam -
+ * ring 6.21 / 42.11 %, springs - cam 6.37 / 48.08 %; bounded at half a per cent above, so
+ * that a change to the file or the models is seen (making it one tire is `tirenv identify
+ * --write` on it, which changes its data set). */
+static void test_205_pairs(void **state)
+{
+    (void)state;
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    tirenv_tir_origin o;
+    const char *path = TIRENV_DATA_DIR "/tires/205-60R15-mfswift.tir";
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_int_equal(tirenv_tir_derive(path, &t, 0, &o, &d), TIRENV_OK);
+    assert_int_equal(o.derived, 0);
+    double loads[N_LOADS];
+    for (size_t i = 0; i < N_LOADS; i++)
+        loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
+    pair_miss e[3];
+    pairs("205/60R15", &t, N_LOADS, loads, e);
+    static const double bound[3][2] = {{0.010, 0.268}, {0.068, 0.427}, {0.069, 0.486}};
+    for (size_t k = 0; k < 3; k++) {
+        assert_true(e[k].defl <= bound[k][0]);
+        assert_true(e[k].l <= bound[k][1]);
+    }
+}
+
+/* Derived springs and ring: each carries FNOMIN at the file's deflection (to the 1e-9 m of
+ * the inversion), and the cam's law deflects there too (within the derivation's 1e-6); none
+ * keeps the tractor's values. What that deflection is follows MF-Tyre's meaning of
+ * VERTICAL_STIFFNESS (docs/models.md 7.3, 14.2): with a Q_FZ2 it is the law's tangent at
+ * FNOMIN, so where Q_FZ2 was identified on the ring the cam's tangent there is the file's
+ * VERTICAL_STIFFNESS (to round-off) and the ring's and the springs model's tangents are near
+ * it (measured: ring -2.9 to +1.3 %, springs +3.7 to +5.7 %; bounded at 3.5 and 6.5 %, the
+ * issue's bound is 10 %; before Q_FZ2 was derived they were 10 to 25 % above); their secant is the law's, below it. A file's own linear law (the 430/50R38's
+ * Q_FZ2 = 0) is its secant: FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
 static void test_derived_from_mftyre(void **state)
 {
     (void)state;
+    static const double TANGENT_TOL_RING = 0.035, TANGENT_TOL_SPRINGS = 0.065;
     const tirenv_tire def = tirenv_tire_default();
     for (size_t f = 0; f < N_MF; f++) {
         tirenv_tire t;
@@ -244,18 +309,31 @@ static void test_derived_from_mftyre(void **state)
         assert_non_null(strstr(o.note, "derived RADIAL_STIFFNESS"));
         assert_true(t.springs.c_r != def.springs.c_r && t.ring.k_f != def.ring.k_f);
         const double k_file = t.cam.c_z;  /* VERTICAL_STIFFNESS as read */
-        const tirenv_model_type *types[] = {tirenv_model_springs, tirenv_model_ring};
-        for (size_t k = 0; k < 2; k++) {
+        const int law_derived = (o.derived & TIRENV_TIR_VERTICAL) != 0;
+        const tirenv_model_type *types[] = {tirenv_model_springs, tirenv_model_ring,
+                                            tirenv_model_cam};
+        for (size_t k = 0; k < 3; k++) {
             tirenv_flat fl;
             flat_states(types[k], &t, 1, &o.fnomin, &fl);
-            print_message("%s %s: FNOMIN %.0f N, deflection %.2f mm (file %.2f), secant "
-                          "%.0f kN/m, tangent %.0f kN/m, file %.0f kN/m\n", mf_files[f],
-                          tirenv_model_type_name(types[k]), o.fnomin, 1e3 * fl.deflection,
-                          1e3 * o.rho_nominal, o.fnomin / fl.deflection / 1e3,
-                          fl.stiffness / 1e3, k_file / 1e3);
-            assert_near(fl.deflection, o.rho_nominal, 0, 1e-7);
-            assert_near(o.fnomin / fl.deflection, k_file, 0, 0.10);
+            print_message("%s %s: FNOMIN %.0f N, deflection %.3f mm (file %.3f), secant "
+                          "%.1f kN/m, tangent %.1f kN/m (%+.1f %%), file %.1f kN/m%s\n",
+                          mf_files[f], tirenv_model_type_name(types[k]), o.fnomin,
+                          1e3 * fl.deflection, 1e3 * o.rho_nominal,
+                          o.fnomin / fl.deflection / 1e3, fl.stiffness / 1e3,
+                          100 * (fl.stiffness / k_file - 1), k_file / 1e3,
+                          law_derived ? " (Q_FZ2 derived)" : "");
+            assert_near(fl.deflection, o.rho_nominal, 0, types[k] == tirenv_model_cam ? 2e-6
+                                                                                       : 1e-7);
+            if (!law_derived)
+                assert_near(o.fnomin / fl.deflection, k_file, 0, 1e-6);
+            else if (types[k] == tirenv_model_cam)
+                assert_near(fl.stiffness, k_file, 0, 1e-12);
+            else
+                assert_near(fl.stiffness, k_file, 0,
+                            types[k] == tirenv_model_ring ? TANGENT_TOL_RING : TANGENT_TOL_SPRINGS);
         }
+        if (law_derived)  /* the ring stiffens with the load: the secant is below */
+            assert_true(o.fnomin / o.rho_nominal < 0.95 * k_file);
     }
     /* A file with every section: nothing derived, nothing changed. */
     tirenv_tire t = tirenv_tire_default();
@@ -272,44 +350,74 @@ static void test_derived_from_mftyre(void **state)
     assert_memory_equal(&t, &before, sizeof t);
 }
 
-/* The derived models follow the file's pressure dependence: with PFZ1 the stiffness at FNOMIN
- * is VERTICAL_STIFFNESS*(1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES) (MF-Tyre 6.1), so two
- * pressures give the ratio of those factors (here 1.2625/0.895) to the inversion's 1e-7. */
+/* The derived models follow the file's pressure dependence: MF-Tyre 6.1's vertical law at
+ * INFLPRES is the one at NOMPRES times 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES. With a linear law
+ * of the file's own (Q_FZ2 = 0 given) the stiffness at FNOMIN is VERTICAL_STIFFNESS times that
+ * factor, so two pressures give the ratio of the factors (here 1.2625/0.895) to the
+ * inversion's 1e-7. Without Q_FZ2 (identified on the pressure's ring) the deflection at
+ * FNOMIN is that of the law with the factor and the identified Q_FZ2 (to the derivation's
+ * 1e-6), and the models carry FNOMIN there; where none can be identified, the linear law. */
 static void test_pressure_dependence(void **state)
 {
     (void)state;
     char dir[] = "/tmp/tirenv_onetire_XXXXXX";
     assert_non_null(mkdtemp(dir));
-    const double p[2] = {1.6e5, 2.9e5}, pfz1 = 0.7, p0 = 2.0e5;
-    double k[2][2];
-    for (int i = 0; i < 2; i++) {
-        char path[128], text[1024];
-        snprintf(path, sizeof path, "%s/p%d.tir", dir, i);
-        snprintf(text, sizeof text,
-                 "[UNITS]\nLENGTH = 'meter'\nFORCE = 'newton'\nPRESSURE = 'pascal'\n"
-                 "[DIMENSION]\nUNLOADED_RADIUS = 0.3135\nWIDTH = 0.205\nASPECT_RATIO = 0.6\n"
-                 "[OPERATING_CONDITIONS]\nINFLPRES = %g\nNOMPRES = %g\n"
-                 "[VERTICAL]\nFNOMIN = 4000\nVERTICAL_STIFFNESS = 209651.5\nPFZ1 = %g\n",
-                 p[i], p0, pfz1);
-        tirenv_test_write_text(path, text);
-        tirenv_tire t = tirenv_tire_default();
-        tirenv_diag d;
-        tirenv_tir_origin o;
-        assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
-        assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING, &o,
-                                           &d), TIRENV_OK);
-        const tirenv_model_type *types[] = {tirenv_model_springs, tirenv_model_ring};
-        for (int m = 0; m < 2; m++) {
-            tirenv_flat fl;
-            flat_states(types[m], &t, 1, &o.fnomin, &fl);
-            k[m][i] = o.fnomin / fl.deflection;
+    const double p[2] = {1.6e5, 2.9e5}, pfz1 = 0.7, p0 = 2.0e5, R0 = 0.3135, c_z = 209651.5;
+    for (int own = 1; own >= 0; own--) {
+        double k[2][2];
+        for (int i = 0; i < 2; i++) {
+            char path[128], text[1024];
+            const double factor = 1 + pfz1 * (p[i] - p0) / p0;
+            snprintf(path, sizeof path, "%s/p%d.tir", dir, i);
+            snprintf(text, sizeof text,
+                     "[UNITS]\nLENGTH = 'meter'\nFORCE = 'newton'\nPRESSURE = 'pascal'\n"
+                     "[DIMENSION]\nUNLOADED_RADIUS = %g\nWIDTH = 0.205\nASPECT_RATIO = 0.6\n"
+                     "[OPERATING_CONDITIONS]\nINFLPRES = %g\nNOMPRES = %g\n"
+                     "[VERTICAL]\nFNOMIN = 4000\nVERTICAL_STIFFNESS = %.17g\nPFZ1 = %g\n%s",
+                     R0, p[i], p0, c_z, pfz1, own ? "Q_FZ2 = 0\n" : "");
+            tirenv_test_write_text(path, text);
+            tirenv_tire t = tirenv_tire_default();
+            tirenv_diag d;
+            tirenv_tir_origin o;
+            assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+            assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING,
+                                               &o, &d), TIRENV_OK);
+            /* Without Q_FZ2 at 2.9 bar (factor 1.315) the car-sized ring's air alone is
+             * stiffer at FNOMIN than any law with VERTICAL_STIFFNESS its tangent: no Q_FZ2
+             * deflects with it, the linear law is kept and said. */
+            const int linear = own || i == 1;
+            assert_int_equal(o.derived & TIRENV_TIR_VERTICAL, linear ? 0 : TIRENV_TIR_VERTICAL);
+            if (!own && linear)
+                assert_non_null(strstr(o.note, "no Q_FZ2 of its own and none derived, the "
+                                                "file's linear law kept (the derived ring and "
+                                                "the Q_FZ2 identified on it found no common "
+                                                "deflection at FNOMIN"));
+            const tirenv_model_type *types[] = {tirenv_model_springs, tirenv_model_ring};
+            for (int m = 0; m < 2; m++) {
+                tirenv_flat fl;
+                flat_states(types[m], &t, 1, &o.fnomin, &fl);
+                k[m][i] = o.fnomin / fl.deflection;
+                assert_near(fl.deflection, o.rho_nominal, 0, 1e-7);
+            }
+            if (linear) {
+                assert_near(k[0][i], c_z * factor, 0, 1e-6);
+                assert_true(t.cam.q_fz2 == 0);
+            } else {
+                const double q2 = t.cam.q_fz2, q1 = tirenv_cam_q_fz1(c_z, R0, 4000, q2);
+                print_message("p %g Pa: Q_FZ2 %.6g, secant %.1f kN/m\n", p[i], q2,
+                              k[1][i] / 1e3);
+                assert_true(q2 > 0);
+                assert_near(o.rho_nominal, tirenv_cam_vertical_root(R0, q1, q2, 1 / factor), 0,
+                            2e-6);
+            }
+            unlink(path);
         }
-        assert_near(k[0][i], 209651.5 * (1 + pfz1 * (p[i] - p0) / p0), 0, 1e-6);
-        unlink(path);
+        if (own) {
+            const double want = (1 + pfz1 * (p[1] - p0) / p0) / (1 + pfz1 * (p[0] - p0) / p0);
+            assert_near(k[0][1] / k[0][0], want, 0, 1e-6);
+            assert_near(k[1][1] / k[1][0], want, 0, 1e-6);
+        }
     }
-    const double want = (1 + pfz1 * (p[1] - p0) / p0) / (1 + pfz1 * (p[0] - p0) / p0);
-    assert_near(k[0][1] / k[0][0], want, 0, 1e-6);
-    assert_near(k[1][1] / k[1][0], want, 0, 1e-6);
     rmdir(dir);
 }
 
@@ -392,6 +500,7 @@ int main(void)
         cmocka_unit_test(test_default_is_identified),
         cmocka_unit_test(test_model_pairs),
         cmocka_unit_test(test_derived_pairs),
+        cmocka_unit_test(test_205_pairs),
         cmocka_unit_test(test_derived_from_mftyre),
         cmocka_unit_test(test_pressure_dependence),
         cmocka_unit_test(test_refuses_naming_the_key),
