@@ -85,8 +85,11 @@ static void usage(FILE *fp)
           "decomposition's build timed apart, and the network alone on batches of 4096 inputs.\n"
           "Then a load that changes before every position (tirenv_model_set_load, +-20 %\n"
           "over 0.5 m) against a fixed load, per position, for cam, springs and nn.\n"
-          "Last the ride: the default tractor over that road at 10 km/h with point contact,\n"
+          "Then the ride: the default tractor over that road at 10 km/h with point contact,\n"
           "cam, nn and springs, against real time (best of at most 3 runs).\n"
+          "Last the memory: tirenv envelope --model cam in whole mode over a 10 km class C\n"
+          "road at 1 mm (1 km with --quick) into a CSV file, run as a child process (the tire\n"
+          "file, without --set), its peak resident set (target at most 400 MB over 10 km).\n"
           "The ring reference tire runs the cleat sweep too (the solver table's last row).\n"
           "\n"
           "options:\n"
@@ -604,7 +607,7 @@ static int bench_fine_road(const tirenv_tire *tire, long repeat, tirenv_diag *di
     return status;
 }
 
-static int bench_road(const tirenv_tire *tire, long repeat)
+static int bench_road(const char *tire_path, const tirenv_tire *tire, long repeat)
 {
     tirenv_road_settings rs = tirenv_road_default();
     rs.length = road_length;
@@ -665,6 +668,8 @@ static int bench_road(const tirenv_tire *tire, long repeat)
         status = cli_bench_set_load(tire, road, nn, road_l_c, n, x, repeat, &diag);
     if (!status)
         status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
+    if (!status)
+        status = cli_bench_memory(tire_path, tire, 10 * road_length, &diag);
     tirenv_nn_free(nn);
     free(pt);
     free(x);
@@ -732,7 +737,7 @@ int cli_bench_main(int argc, char *argv[])
     }
     tirenv_profile_free(prof);
     if (!code)
-        code = bench_road(&tire, repeat);
+        code = bench_road(cli_tire_path(&o, buf, sizeof buf), &tire, repeat);
     if (!code && as_json) {
         char *text = json_dumps(figures, JSON_INDENT(2)); /* 17 digits: reads back the same */
         if (!text)

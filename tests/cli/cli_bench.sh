@@ -22,7 +22,9 @@ need = [\"rigid_cleat_pos_per_s\", \"springs_cleat_pos_per_s\", \"springs_road_p
         \"ring_over_rigid_cleat\", \"springs_road_evals_per_pos\", \"import_ms\",
         \"ride_springs_x_real\", \"springs_road_10mm_pos_per_s\",
         \"springs_road_1mm_pos_per_s\", \"springs_fine_over_coarse_road\",
-        \"springs_fine_over_coarse_road_best\", \"springs_fine_over_coarse_road_rounds\"]
+        \"springs_fine_over_coarse_road_best\", \"springs_fine_over_coarse_road_rounds\",
+        \"envelope_jobs2_over_jobs1\", \"envelope_jobs_identical\", \"envelope_whole_peak_mb\",
+        \"envelope_whole_s\", \"envelope_whole_positions\"]
 for k in need:
     v = d[k]
     assert isinstance(v, (int, float)) and not isinstance(v, bool), k
@@ -38,6 +40,11 @@ assert abs(d[\"springs_fine_over_coarse_road_best\"] - f) <= 1e-9 * f
 # --quick is one repeat: the fine and coarse sweeps interleaved over 2 * 1 + 1 rounds (the
 # figure their median ratio, _best the ratio of the best sweeps).
 assert d[\"springs_fine_over_coarse_road_rounds\"] == 3
+# The memory of whole mode, a child process over a 1 km road at 1 mm with --quick (10 km
+# without): the default sweep, which reaches beyond the road's ends, and more than the 3.5 MB
+# a run over a generated cleat takes (the road's 1,000,001 vertices alone are 16 MB).
+assert d[\"envelope_whole_road_m\"] == 1000 and d[\"envelope_whole_positions\"] > 1000001
+assert d[\"envelope_whole_peak_mb\"] > 8
 "'
 
 run "$bin" bench --json --frobnicate
