@@ -88,13 +88,13 @@ static void usage(FILE *fp)
           "Then the ride: the default tractor over that road at 10 km/h with point contact,\n"
           "cam, nn and springs, against real time (best of at most 3 runs).\n"
           "Last the memory: tirenv envelope --model cam in whole mode over a 10 km class C\n"
-          "road at 1 mm (1 km with --quick) into a CSV file, run as a child process (the tire\n"
+          "road at 1 mm (100 m with --quick) into a CSV file, run as a child process (the tire\n"
           "file, without --set), its peak resident set (target at most 400 MB over 10 km).\n"
           "The ring reference tire runs the cleat sweep too (the solver table's last row).\n"
           "\n"
           "options:\n"
           "  --repeat N           runs per method, best kept (default 5)\n"
-          "  --quick              one run each and a 100 m road: every figure in seconds,\n"
+          "  --quick              one run each and 100 m roads: every figure in seconds,\n"
           "                       rougher\n"
           "  --json               print every figure as one JSON object of name: number\n"
           "                       pairs (positions/s, seconds, ratios) instead of the tables\n",
@@ -334,6 +334,7 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
  * the centre x = 0 .. 1000 m at 10 mm. The targets are the project's, on one core. */
 static const double road_l_c = 0.33, road_dx = 0.01; /* m */
 static double road_length = 1000.0;                    /* m; 100 with --quick */
+static double memory_length = 10000.0; /* m: the memory's road (cli_bench_memory); 100 quick */
 static const struct {
     const char *model;
     double target; /* positions/s */
@@ -669,7 +670,7 @@ static int bench_road(const char *tire_path, const tirenv_tire *tire, long repea
     if (!status)
         status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
     if (!status)
-        status = cli_bench_memory(tire_path, tire, 10 * road_length, &diag);
+        status = cli_bench_memory(tire_path, tire, memory_length, &diag);
     tirenv_nn_free(nn);
     free(pt);
     free(x);
@@ -694,7 +695,7 @@ int cli_bench_main(int argc, char *argv[])
     if (code != CLI_GO_ON)
         return code;
     if (quick)
-        road_length = 100.0;
+        road_length = memory_length = 100.0;
     if (repeat == 0)
         repeat = quick ? 1 : 5;
     tirenv_tire tire;
