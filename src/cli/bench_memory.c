@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* tirenv bench: the peak memory of tirenv envelope's whole mode over a long measured-like road
- * (issue 25's memory target: the cam over a 10 km class C road sampled at 1 mm, 10 M
- * positions, at most 400 MB resident), measured as a user meets it: this program run as a
- * child on a road file it wrote first, its peak resident set from the kernel (wait4's
- * ru_maxrss), so that the bench's own memory does not count. */
+/* tirenv bench: the peak memory of tirenv envelope's whole mode over a long road sampled as
+ * measured roads are (the project's memory target: the cam over a 10 km class C road sampled
+ * at 1 mm, 10 M positions, at most 400 MB resident; README, Speed), measured as a user meets
+ * it: this program run as a child on a road file it wrote first, its peak resident set from
+ * the kernel (wait4's ru_maxrss), so that the bench's own memory does not count. */
 #define _GNU_SOURCE /* wait4 */
 #include <errno.h>
 #include <fcntl.h>
