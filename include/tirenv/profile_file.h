@@ -53,7 +53,10 @@ int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f);
  * taken: the commands that take --profile, the FMU and the Python module read roads through
  * it. A regular file is read where asked, each reader at its own position; a pipe or a
  * device (a FIFO, /dev/stdin) is read as far as a reader asks and kept (at most
- * TIRENV_ROAD_FILE_PIPE_MAX bytes; an OpenCRG or RDF road is read to its end at once). */
+ * TIRENV_ROAD_FILE_PIPE_MAX bytes; an OpenCRG or RDF road is read to its end at once). An
+ * OpenCRG road's pass at open and an RDF road's poly_line are read once, kept by the file
+ * until it is freed and shared by its readers, tirenv_road_file_extent and the effective
+ * road's placement (tirenv_road_writer_layout.on_crg). */
 typedef struct tirenv_road_file tirenv_road_file;
 
 /* Opens path and tells its format; TIRENV_EIO if it cannot be opened or read or is a
@@ -112,10 +115,12 @@ int tirenv_profile_file_reader_source(void *reader, double *x, double z[], int *
                                       tirenv_diag *diag);
 /* The first and last x (m) of the road in f as a reader of n tracks at v reads it (the same
  * arguments as tirenv_road_file_reader), the ends of a sweep over it. every_row nonzero: every
- * row of every track read and checked, so that a bad row anywhere fails here. Zero: read where
- * the format allows without the rows between, which are then a reader's to check: a CSV's
- * header, first row and last row (found from the file's end; where it cannot be told so, every
- * row); an OpenCRG or RDF road's every row. Errors name file, line and field. */
+ * row of every track read and checked, so that a bad row anywhere fails here. Zero: read
+ * without the rows, which are then a reader's to read and check: a CSV's header, first row and
+ * last row (found from the file's end; where it cannot be told so, every row); an OpenCRG
+ * road's first and last u from its pass at open (which checks its rows, not the tracks'
+ * heights), an RDF road's first and last x from its poly_line, each kept by f and shared with
+ * its readers, so that neither is read again. Errors name file, line and field. */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                             const double v[], int every_row, double *first, double *last,
                             tirenv_diag *diag);

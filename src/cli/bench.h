@@ -40,4 +40,13 @@ int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, cons
 int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l_c,
                    double x_from, double dx, size_t n, long repeat, tirenv_diag *diag);
 
+/* tirenv envelope --model cam in whole mode (contact length 0.33 m, the tire file tire_path,
+ * without --set; tire gives its radius for the count of positions) over a class C road of
+ * length m at 1 mm (seed 1), into a CSV file, run as a child process of this program after
+ * tirenv road has written the road to a temporary directory (removed after): its peak
+ * resident set (envelope_whole_peak_mb, 10^6 bytes), wall time (envelope_whole_s), the road's
+ * length (envelope_whole_road_m) and positions (envelope_whole_positions). */
+int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double length,
+                     tirenv_diag *diag);
+
 #endif

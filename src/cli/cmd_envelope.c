@@ -52,13 +52,14 @@ static void usage(FILE *fp)
     cli_help_sweep(fp);
     cli_help_road(fp, 1);
     fputs("  --stream             with --profile: read the file as the tire rolls, in memory\n"
-          "                       bounded by the tire's reach whatever the road's length (a\n"
-          "                       CSV road into a file once; to standard output or a FIFO,\n"
-          "                       or an OpenCRG or RDF road, twice: first to check it and\n"
-          "                       find its ends; an OpenCRG road a block of rows at a time,\n"
-          "                       an RDF road whole; a pipe or /dev/stdin is kept in memory,\n"
-          "                       at most 256 MiB); the network's warnings come after the\n"
-          "                       rows\n",
+          "                       bounded by the tire's reach whatever the road's length\n"
+          "                       (into a file the road's rows are read once: a CSV's ends\n"
+          "                       from its first and last rows, an OpenCRG road's from its\n"
+          "                       check at open, an RDF road's from its poly_line; to\n"
+          "                       standard output or a FIFO twice, first to check every\n"
+          "                       row; an OpenCRG road a block of rows at a time, an RDF\n"
+          "                       road whole; a pipe or /dev/stdin is kept in memory, at\n"
+          "                       most 256 MiB); the network's warnings come after the rows\n",
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
@@ -292,13 +293,15 @@ static int stream_row(void *ctx, const tirenv_point *pt)
 }
 
 /* The ends of the road for --stream's default sweep. Into a file, which reaches its place
- * only whole, the road is read once: its ends as the format allows (a CSV's first and last
- * rows, tirenv_road_file_extent), its rows as the tire rolls, and those past the sweep's reach
- * after it (stream_rest), so that a bad row anywhere fails as in whole mode. Written through
- * (standard output, a FIFO), where rows cannot be taken back, every row of every track is
- * checked first (*checked), so that a bad row late in the file fails before any output: the
- * file is read twice. Memory is constant either way (a pipe's bytes are kept by the road
- * file). */
+ * only whole, the road's rows are read once: its ends without them (tirenv_road_file_extent:
+ * a CSV's first and last rows, an OpenCRG road's pass at open, which checks its rows and which
+ * the sweep's reader then shares, an RDF road's poly_line, read whole once for every reader),
+ * its rows as the tire rolls, and those past the sweep's reach after it (stream_rest), so that
+ * a bad row anywhere, or a track that needs a missing OpenCRG value, fails as in whole mode.
+ * Written through (standard output, a FIFO), where rows cannot be taken back, every row of
+ * every track is checked first (*checked), so that a bad row late in the file fails before
+ * any output: the rows are read twice. Memory is constant either way (a pipe's bytes are kept
+ * by the road file). */
 static int stream_extent(const run *r, const char *path, int *checked, double *first,
                          double *last, tirenv_diag *diag)
 {

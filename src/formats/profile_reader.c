@@ -59,15 +59,14 @@ int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src,
     tirenv_profile_source s = source_or_default(src);
     int status;
     if (tirenv_road_file_format(f) == TIRENV_PROFILE_CRG) {
-        tirenv_crg *crg;
-        if ((status = tirenv_road_file_crg(f, &crg, diag)))
+        const tirenv_crg *crg;
+        if ((status = tirenv_road_file__crg(f, &crg, diag)))
             return status;
         for (size_t k = 0; k < n && !status; ++k) {
             if (v)
                 s.crg.v = v[k];
             status = tirenv_crg_track(crg, &s.crg, &out[k], diag);
         }
-        tirenv_crg_free(crg);
     } else {
         status = read_2d(f, s.rdf_side, &out[0], diag);
         for (size_t k = 1; k < n && !status; ++k)
@@ -102,14 +101,17 @@ int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
 
 /* ---- a row at a time ------------------------------------------------------------------- */
 
+/* An OpenCRG road's open handle and an RDF road's profile are the file's
+ * (tirenv_road_file__crg, tirenv_road_file__rdf), shared by its readers: read once whatever
+ * the number of readers and tirenv_road_file_extent's calls. */
 struct tirenv_profile_file_reader {
     tirenv_profile_format format;
     size_t n;                         /* tracks */
     tirenv_road_file *owned;          /* the file, when the reader opened it itself */
     tirenv_profile_csv__reader *csv;  /* CSV: row by row */
-    tirenv_crg *crg;                  /* CRG: the open file and its tracks */
+    const tirenv_crg *crg;            /* CRG: the open file (the file's) and its tracks */
     tirenv_crg__tracks_reader *tracks;
-    tirenv_profile *rdf;              /* RDF: the whole road */
+    const tirenv_profile *rdf;        /* RDF: the whole road (the file's) */
     size_t next;                      /* RDF: the vertex next returns */
 };
 
@@ -119,8 +121,6 @@ void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r)
         return;
     tirenv_profile_csv__reader_free(r->csv);
     tirenv_crg__tracks_reader_free(r->tracks);
-    tirenv_crg_free(r->crg);
-    tirenv_profile_free(r->rdf);
     tirenv_road_file_free(r->owned);
     free(r);
 }
@@ -148,10 +148,10 @@ int tirenv_road_file_reader(tirenv_road_file *f, const tirenv_profile_source *sr
         break;
     }
     case TIRENV_PROFILE_RDF:
-        status = read_2d(f, s.rdf_side, &r->rdf, diag);
+        status = tirenv_road_file__rdf(f, s.rdf_side, &r->rdf, diag);
         break;
     case TIRENV_PROFILE_CRG:
-        if (!(status = tirenv_road_file_crg(f, &r->crg, diag)))
+        if (!(status = tirenv_road_file__crg(f, &r->crg, diag)))
             status = tirenv_crg__tracks_reader_open(r->crg, &s.crg, n, v, &r->tracks, diag);
         break;
     }
@@ -201,10 +201,33 @@ static int extent_read(tirenv_road_file *f, const tirenv_profile_source *src, si
     return status;
 }
 
+/* The ends of an OpenCRG or RDF road without its rows: a reader's, opened (which checks the
+ * tracks' positions against the road) and not read. The OpenCRG road's first and last u are
+ * its rows' as the reader gives them (u0 + i du, i = 0 and nu - 1: tirenv_crg_u_end's
+ * product), the RDF road's its poly_line's first and last x, both from what the readers of f
+ * share (tirenv_road_file__crg, __rdf), so that the rows are read once, by the reader that
+ * follows. */
+static int extent_ends(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                       const double v[], double *first, double *last, tirenv_diag *diag)
+{
+    tirenv_profile_file_reader *r;
+    const int status = tirenv_road_file_reader(f, src, n, v, &r, diag);
+    if (status)
+        return status;
+    if (r->format == TIRENV_PROFILE_CRG) {
+        *first = tirenv_crg_u_start(r->crg);
+        *last = tirenv_crg_u_end(r->crg);
+    } else {
+        tirenv_profile_extent(r->rdf, first, last);
+    }
+    tirenv_profile_file_reader_free(r);
+    return TIRENV_OK;
+}
+
 /* A CSV's first row comes from a reader (which checks the header and the row), its last from
  * the file's end (tirenv_profile_csv__last_x); where the last cannot be told so, or lies
  * before the first (an x decreases somewhere), every row is read, and the first bad one
- * named. */
+ * named. An OpenCRG or RDF road's come from what its readers share (extent_ends). */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                             const double v[], int every_row, double *first, double *last,
                             tirenv_diag *diag)
@@ -212,8 +235,10 @@ int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *sr
     if (n == 0)
         return tirenv_error(diag, TIRENV_EINVAL, tirenv_road_file_name(f), 0, "tracks",
                             "expected at least one track");
-    if (every_row || tirenv_road_file_format(f) != TIRENV_PROFILE_CSV)
+    if (every_row)
         return extent_read(f, src, n, v, first, last, diag);
+    if (tirenv_road_file_format(f) != TIRENV_PROFILE_CSV)
+        return extent_ends(f, src, n, v, first, last, diag);
     FILE *fp = tirenv_road_file__stream(f, diag);
     tirenv_profile_csv__reader *r = NULL;
     int status = fp ? tirenv_profile_csv__reader_open(fp, tirenv_road_file_name(f), &r, diag)

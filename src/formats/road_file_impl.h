@@ -19,6 +19,15 @@ FILE *tirenv_road_file__stream(tirenv_road_file *f, tirenv_diag *diag);
  * (kept in memory, at most TIRENV_ROAD_FILE_PIPE_MAX bytes). */
 int tirenv_road_file__source(tirenv_road_file *f, const tirenv_source **out, tirenv_diag *diag);
 
+/* The OpenCRG road in f, opened (its header parsed, its rows checked in one pass) at the first
+ * call and kept by f for every later one: owned by f, shared by its readers. */
+int tirenv_road_file__crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_diag *diag);
+
+/* The RDF road in f on side, read at the first call for that side and kept by f for every
+ * later one: owned by f, shared by its readers. */
+int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
+                          const tirenv_profile **out, tirenv_diag *diag);
+
 /* tirenv_rdf_read from a source (rdf.c). */
 int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
                             tirenv_profile **out, tirenv_diag *diag);

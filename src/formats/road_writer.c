@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "formats/crg_impl.h"
+#include "formats/road_file_impl.h"
 #include "tirenv/crg.h"
 #include "tirenv/profile_file.h"
 #include "tirenv/rdf.h"
@@ -37,50 +39,43 @@ void tirenv_road_writer_abort(tirenv_road_writer *w)
 
 /* Where the effective road of the open OpenCRG road on, read at lateral position v, goes:
  * its straight reference line at u = l->x_from, its heading, its height on the track there
- * and v, into the layout. */
+ * and v, into the layout. The road is the one its readers share (tirenv_road_file__crg), so
+ * that it is not opened, and its rows checked, once more. */
 static int place(tirenv_road_file *on, double v, tirenv_road_writer_layout *l,
                  tirenv_diag *diag)
 {
     l->v_track = l->x_start = l->y_start = l->phi_start = l->z_start = 0;
     const char *path = tirenv_road_file_name(on);
-    tirenv_crg *crg = NULL;
-    int status = tirenv_road_file_crg(on, &crg, diag);
+    const tirenv_crg *crg = NULL;
+    int status = tirenv_road_file__crg(on, &crg, diag);
     if (status)
         return status;
-    if (tirenv_crg_is_curved(crg)) {
-        tirenv_crg_free(crg);
+    if (tirenv_crg_is_curved(crg))
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "reference line phi",
                             "a curved reference line: tirenv writes an effective road on a "
                             "straight one, which would lie beside this road; write it as "
                             ".csv or .rdf (along u) instead");
-    }
-    /* Straight: the reference line at any u from its first row and its one heading. */
-    const size_t rows = tirenv_crg_rows(crg);
-    double *x = malloc(rows * sizeof *x), *y = malloc(rows * sizeof *y);
-    double *phi = malloc(rows * sizeof *phi);
-    status = x && y && phi ? tirenv_crg_refline(crg, x, y, phi, diag)
-                           : tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    /* Straight: the reference line at any u from its first row and its one heading (the
+     * first row as tirenv_crg_refline gives it, without the whole line). */
+    double x0, y0, phi0;
+    if (tirenv_crg__refline_rows(crg, 1, 0, 1, &x0, &y0, &phi0))
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "no reference line");
     /* The road's height on the track at the row at or before x_from: the written file's
      * reference height, so that its grid holds only the relief (OpenCRG keeps the grid in
      * single precision). */
     tirenv_crg_track_spec spec = tirenv_crg_track_default();
     spec.v = v;
     double u0, z0 = 0;
-    if (!status)
-        status = tirenv_crg_track_rows(crg, &spec, tirenv_crg_row_at(crg, l->x_from), 1, &u0,
-                                       &z0, diag);
+    status = tirenv_crg_track_rows(crg, &spec, tirenv_crg_row_at(crg, l->x_from), 1, &u0, &z0,
+                                   diag);
     if (!status) {
         const double du = l->x_from - tirenv_crg_u_start(crg);
         l->z_start = z0;
-        l->phi_start = phi[0];
-        l->x_start = x[0] + cos(phi[0]) * du;
-        l->y_start = y[0] + sin(phi[0]) * du;
+        l->phi_start = phi0;
+        l->x_start = x0 + cos(phi0) * du;
+        l->y_start = y0 + sin(phi0) * du;
         l->v_track = v;
     }
-    free(x);
-    free(y);
-    free(phi);
-    tirenv_crg_free(crg);
     return status;
 }
 

@@ -20,7 +20,10 @@ need = [\"rigid_cleat_pos_per_s\", \"springs_cleat_pos_per_s\", \"springs_road_p
         \"springs_evals_per_pos\", \"springs_over_rigid_cleat\", \"springs_over_rigid_road\",
         \"ring_over_rigid_cleat\", \"springs_road_evals_per_pos\", \"import_ms\",
         \"ride_springs_x_real\", \"springs_road_10mm_pos_per_s\",
-        \"springs_road_1mm_pos_per_s\", \"springs_fine_over_coarse_road\"]
+        \"springs_road_1mm_pos_per_s\", \"springs_fine_over_coarse_road\",
+        \"springs_fine_over_coarse_road_best\", \"springs_fine_over_coarse_road_rounds\",
+        \"envelope_jobs2_over_jobs1\", \"envelope_jobs_identical\", \"envelope_whole_peak_mb\",
+        \"envelope_whole_s\", \"envelope_whole_positions\"]
 for k in need:
     v = d[k]
     assert isinstance(v, (int, float)) and not isinstance(v, bool), k
@@ -32,7 +35,15 @@ r = d[\"rigid_cleat_pos_per_s\"] / d[\"springs_cleat_pos_per_s\"]
 assert abs(d[\"springs_over_rigid_cleat\"] - r) <= 1e-9 * r
 assert d[\"springs_evals_per_pos\"] >= 1 and d[\"quick\"] == 1
 f = d[\"springs_road_10mm_pos_per_s\"] / d[\"springs_road_1mm_pos_per_s\"]
-assert abs(d[\"springs_fine_over_coarse_road\"] - f) <= 1e-9 * f
+assert abs(d[\"springs_fine_over_coarse_road_best\"] - f) <= 1e-9 * f
+# --quick is one repeat: the fine and coarse sweeps interleaved over 2 * 1 + 1 rounds (the
+# figure their median ratio, _best the ratio of the best sweeps).
+assert d[\"springs_fine_over_coarse_road_rounds\"] == 3
+# The memory of whole mode, a child process over a 100 m road at 1 mm with --quick (10 km
+# without): the default sweep, which reaches beyond the ends of the road, and more than the
+# 3.5 MB a run over a generated cleat takes (the 100,001 vertices alone are 1.6 MB).
+assert d[\"envelope_whole_road_m\"] == 100 and d[\"envelope_whole_positions\"] > 100001
+assert d[\"envelope_whole_peak_mb\"] > 3.5
 "'
 
 run "$bin" bench --json --frobnicate

@@ -4,7 +4,8 @@
  * writer fills once, read whole and by two row readers at once, each format giving the
  * regular file's profile bit for bit; and a regular file removed after the open and replaced
  * by another road, still read as it was. The open's errors keep the texts of
- * tirenv_profile_detect's. A road's ends (tirenv_road_file_extent) as its readers find them. */
+ * tirenv_profile_detect's. A road's ends (tirenv_road_file_extent) as its readers find them;
+ * an OpenCRG or RDF road's without its rows, from what its readers then share. */
 #include "testutil.h"
 #include "tirenv/tirenv.h"
 
@@ -333,6 +334,83 @@ static void test_extent(void **state)
     }
 }
 
+/* The left long section misses its value in row 3 (u = 0.5 m): a track at v = -1 needs it. */
+static const char gap_crg[] =
+    "$ROAD_CRG\n"
+    "REFERENCE_LINE_START_U   = -0.5\n"
+    "REFERENCE_LINE_END_U     = 1.5\n"
+    "REFERENCE_LINE_INCREMENT = 0.5\n"
+    "LONG_SECTION_V_RIGHT     = -1\n"
+    "LONG_SECTION_V_LEFT      = 1\n"
+    "$\n"
+    "$ROAD_CRG_MODS\n"
+    "* none\n"
+    "$\n"
+    "$KD_DEFINITION\n"
+    "#:LRFI\n"
+    "D:long section at v = -1,m\n"
+    "D:long section at v = 1,m\n"
+    "$\n"
+    "$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$$\n"
+    "     0.010     0.030\n"
+    "     0.011     0.031\n"
+    "*missing*      0.032\n"
+    "     0.013     0.033\n"
+    "     0.014     0.034\n";
+
+/* tirenv_road_file_extent without every row, for an OpenCRG or RDF road: the ends without the
+ * rows, from what the file's readers share, so that the rows are read once. An OpenCRG track
+ * that needs a missing value: its ends (every row read: the error at the row); the rows of an
+ * RDF road and the OpenCRG road's pass at open are read once for the extent and every reader:
+ * the file emptied after the extent, a reader still opens (a second pass at open would find
+ * no header) and the RDF reader still gives every row; the OpenCRG reader reads its rows from
+ * the file, so finds it emptied. */
+static void test_extent_read_once(void **state)
+{
+    const tirenv_test_dir *fx = *state;
+    char path[600];
+    tirenv_test_write_text(tirenv_test_path(fx, "gap.crg", path), gap_crg);
+    tirenv_road_file *f = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
+    tirenv_profile_source src = tirenv_profile_source_default();
+    src.crg.v = -1;
+    double first = NAN, last = NAN;
+    assert_int_equal(tirenv_road_file_extent(f, &src, 1, NULL, 0, &first, &last, &d),
+                     TIRENV_OK);
+    assert_bits_equal(first, -0.5);
+    assert_bits_equal(last, 1.5);
+    tirenv_test_expect_diag(0, tirenv_road_file_extent(f, &src, 1, NULL, 1, &first, &last, &d),
+                            &d, TIRENV_ERANGE, path, 0, 0, "v",
+                            "the track at v = -1 m needs long section 1 (v = -1 m) at row 3 "
+                            "(u = 0.5 m), where the road data has no value; expected a track "
+                            "over the road's valid part (or GRID_NAN_MODE 1 or 2 in "
+                            "$ROAD_CRG_MODS to fill missing values)");
+    tirenv_road_file_free(f);
+    write_roads(fx);
+    for (size_t k = 1; k < 3; ++k) {
+        tirenv_profile *want = read_road(fx, k, path);
+        assert_int_equal(tirenv_road_file_open(path, &f, &d), TIRENV_OK);
+        assert_extent(f, want);
+        assert_int_equal(truncate(path, 0), 0);
+        tirenv_profile_file_reader *r = NULL;
+        assert_int_equal(tirenv_road_file_reader(f, NULL, 2, NULL, &r, &d), TIRENV_OK);
+        if (k == 2) {
+            for (size_t i = 0; i < tirenv_profile_size(want); ++i)
+                assert_row(r, 2, want, i);
+        } else {
+            double x, z[2];
+            int got = 1;
+            assert_int_not_equal(tirenv_profile_file_reader_next(r, &x, z, &got, &d),
+                                 TIRENV_OK);
+            assert_false(got);
+        }
+        tirenv_profile_file_reader_free(r);
+        tirenv_road_file_free(f);
+        tirenv_profile_free(want);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -341,6 +419,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_regular_file_not_reopened, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_extent, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_extent_read_once, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_open_errors, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
