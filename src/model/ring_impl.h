@@ -87,6 +87,9 @@ typedef struct {
     double s;              /* place in the interval: the tread there is (1 - s) w_j + s w_j+1 */
     size_t j;              /* the interval's first node */
     double d, dd;          /* penetration R0 - rho (m; -INFINITY: none) and its d/dz */
+    double dphi;           /* d(phi)/dz: a ground vertex's cut moves with the centre (rad/m),
+                            * 0 at a node */
+    double ddt;            /* d(d)/dz along the moving cut, dd + (dd/dphi)*dphi */
     double X;              /* ground abscissa, m */
     double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
     double e, f;           /* last evaluation: tread compression (m) and ground force (N) */
@@ -100,6 +103,7 @@ typedef struct {
     size_t j;                      /* its node interval */
     int hit;
     double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
+    double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
 } tirenv_ring_piece;
 
 struct tirenv_ring {
