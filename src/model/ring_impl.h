@@ -182,6 +182,11 @@ typedef struct {
     void (*apply)(tirenv_ring *r, const void *K, const double x[], double y[]);
     double (*points)(tirenv_ring *r, const double x[], double grad[]);
     double *kp;
+    /* Optional (NULL: backtracking alone): the points' share of E along x + alpha p as terms
+     * 1/2 c_i max(0, a_i - alpha b_i)^2, written to arrays of its own (*c, *a, *b); returns
+     * their count, or (size_t)-1 if out of memory. */
+    size_t (*line)(tirenv_ring *r, const double x[], const double p[], const double **c,
+                   const double **a, const double **b);
 } tirenv_ring_newton;
 
 enum { TIRENV_RING_NEWTON_OK = 0, TIRENV_RING_NEWTON_BREAKDOWN, TIRENV_RING_NEWTON_NOCONV };

@@ -84,6 +84,8 @@ struct tirenv_ring_tread {
     double *z0, *z1;    /* workspace: D^-1 c0, D^-1 c1 */
     double *kphi, *kdphi; /* the knots' angles (rad) and their d/dz (rad/m): they move with
                            * the centre, as their vertices do */
+    double *lc, *la, *lb; /* the line search's terms (line_cb), cap_l each */
+    size_t cap_l;
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -305,6 +307,7 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->pknot);
     free(T->kj);
     free(T->kd);
+    free(T->lc);
     free(T->ext.L);
     free(T->win.L);
     free(T);
@@ -830,6 +833,52 @@ static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 
 static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
 
+/* The points' terms of E along x + alpha p: per point in reach, the contact layer on the
+ * tread surface (c = omega R k_g, a = d - u_q(x), b = u_q(p)) and the belt layer beneath
+ * (c = omega R k_b, a = d - w_q(x) - t_r, b = w_q(p)). */
+static size_t line_cb(tirenv_ring *r, const double x[], const double p[], const double **c,
+                      const double **a, const double **b)
+{
+    tirenv_ring_tread *T = r->tread;
+    if (2 * r->n_pts > T->cap_l) { /* geometric: settles at the largest window's */
+        size_t cap = T->cap_l ? T->cap_l : 512;
+        while (cap < 2 * r->n_pts)
+            cap *= 2;
+        double *buf = malloc(3 * cap * sizeof *buf);
+        if (!buf)
+            return (size_t)-1;
+        free(T->lc);
+        T->lc = buf;
+        T->la = buf + cap;
+        T->lb = buf + 2 * cap;
+        T->cap_l = cap;
+    }
+    const double R = r->R, t_r = r->par.t_r;
+    size_t n = 0;
+    /* A term with a <= 0 and a - b <= 0 is zero all along 0 <= alpha <= 1: left out. */
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->d == -INFINITY)
+            continue;
+        const double ag = q->d - at_u(r, q, x), bg = at_u(r, q, p);
+        if (ag > 0 || ag - bg > 0) {
+            T->lc[n] = q->omega * R * T->k_g;
+            T->la[n] = ag;
+            T->lb[n] = bg;
+            ++n;
+        }
+        const double ab = q->d - at_w(r, q, x) - t_r, bb = at_w(r, q, p);
+        if (ab > 0 || ab - bb > 0) {
+            T->lc[n] = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
+            T->la[n] = ab;
+            T->lb[n] = bb;
+            ++n;
+        }
+    }
+    *c = T->lc, *a = T->la, *b = T->lb;
+    return n;
+}
+
 static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
 {
     apply_K(r, (const double(*)[NB])K, x, y);
@@ -862,7 +911,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
     for (size_t k = 0; k < m; ++k)
         x[N + k] = 0;
     const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
-                                   points_energy, T->kp};
+                                   points_energy, T->kp, line_cb};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
     if (st != TIRENV_RING_NEWTON_OK)
