@@ -215,11 +215,14 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T);
 
 /* Per node (global index): the tread surface's inward displacement u over the last window, m. */
 double *tirenv_ring__tread_u(tirenv_ring_tread *T);
+/* The doubles of the warm start from tirenv_ring__tread_u on (u, its and w's slopes in z, the
+ * z they were found at): what a state saves. */
+size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 
 /* The shear-coupled tread's contact on the window r->lo, r->n, the centre at abscissa x_c (m,
  * for the lugs): w, u, F, g per node, e (the ground's overlap with the tread surface) and f
  * per point, r->tread_max; TIRENV_ENOCONV with diag if Newton does not settle. */
-int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag);
 
 /* w (m) of the nodes outside the last window, from the exterior's exact solve (allocates;

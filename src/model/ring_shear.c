@@ -65,7 +65,11 @@ struct tirenv_ring_tread {
     double lug_x;       /* the centre's abscissa of the cached lugged ends (m) */
     size_t lug_lo, lug_n; /* their window; lug_n = 0: none cached */
     double *kap;        /* per node (global): compression stiffness k_c R dtheta, N/m */
-    double *u;          /* per node (global): the tread surface's displacement, m */
+    double *u;          /* per node (global): the tread surface's displacement, m; then,
+                         * contiguous with it (the warm start a state saves), dw and du */
+    double *dw, *du;    /* per node (global): dw/dz, du/dz at the last evaluation's
+                         * equilibrium (0 outside its window or without dF_z/dz) */
+    double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
     tband ext, win;
@@ -280,7 +284,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->k_g = TIRENV_RING_GROUND_LAYER * k_t;
     T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
     T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
-    T->kap = malloc(2 * M * sizeof *T->kap);
+    T->kap = malloc((4 * M + 3) * sizeof *T->kap);
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
     if (!T->kap || !T->end || !T->have || reserve_knots(T, 16) ||
@@ -289,10 +293,12 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
         return NULL;
     }
     T->u = T->kap + M;
-    for (size_t j = 0; j < M; ++j) {
+    T->dw = T->u + M;
+    T->du = T->dw + M;
+    T->pred = T->du + M;
+    for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
-        T->u[j] = 0;
-    }
+    memset(T->u, 0, (3 * M + 3) * sizeof *T->u);
     return T;
 }
 
@@ -314,6 +320,8 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
 }
 
 double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
+
+size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
 
 /* The tread's compression stiffness of every node at the centre's x: lugs turn with the tire
  * (ring.c, tread_kappa); k_c in series with the contact layer k_g is the node's k_t. */
@@ -884,7 +892,7 @@ static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[]
     apply_K(r, (const double(*)[NB])K, x, y);
 }
 
-int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag)
 {
     tirenv_ring_tread *T = r->tread;
@@ -901,12 +909,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
     const size_t m = T->m;
     const double(*Q)[NB] = window_end(r, x_c);
     double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
-    /* From the last evaluation's belt and tread where this window overlaps its window. */
+    /* From the last evaluation's belt and tread where this window overlaps its window,
+     * moved along their slope in z to this z (dx/dz of that equilibrium, found with its
+     * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
+     * minimum does not depend on the start (its states' system is solved last). */
+    const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
     for (size_t i = 0; i < n; ++i) {
         const size_t j = lo + i;
         const int warm = j >= r->warm_lo && j < r->warm_lo + r->warm_n;
-        x[2 * i] = warm ? r->w[j] : 0;
-        x[2 * i + 1] = warm ? T->u[j] : 0;
+        x[2 * i] = warm ? r->w[j] + dz * T->dw[j] : 0;
+        x[2 * i + 1] = warm ? T->u[j] + dz * T->du[j] : 0;
     }
     for (size_t k = 0; k < m; ++k)
         x[N + k] = 0;
@@ -924,7 +936,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                                              "belt-and-tread", "shear-coupled tread", diag);
     }
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
-        r->w[j] = T->u[j] = 0;
+        r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    T->pred[2] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
     for (size_t i = 0; i < N + m; ++i)
@@ -987,7 +1000,12 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
     *fx = -sum_s;
     if (dfz_dz) {
         knots_moving(r, x, xt);
-        solve_full(r, xt);
+        solve_full(r, xt); /* dx/dz */
+        for (size_t i = 0; i < n; ++i) {
+            T->dw[lo + i] = xt[2 * i];
+            T->du[lo + i] = xt[2 * i + 1];
+        }
+        T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
         double dF = 0;
         for (size_t k = 0; k < r->n_pts; ++k) {
             const tirenv_ring_point *q = &r->pts[k];
