@@ -414,7 +414,7 @@ static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, doub
     if (dfz_dz)
         *dfz_dz = 0;
     if (r->n && r->tread)
-        status = tirenv_ring__solve_shear(r, x, fx, fz, dfz_dz, diag);
+        status = tirenv_ring__solve_shear(r, x, z, fx, fz, dfz_dz, diag);
     else if (r->n)
         status = tirenv_ring__solve_smooth(r, fx, fz, dfz_dz, diag);
     if (status) {
@@ -608,9 +608,17 @@ static size_t warm_fields(const tirenv_ring *r)
     return r->par.contact != TIRENV_RING_CONTINUOUS ? 0 : r->tread ? 2 : 1;
 }
 
+/* The shear-coupled tread's doubles after w: u, and the slopes in z that the next start
+ * follows (ring_shear.c). */
+static size_t tread_doubles(const tirenv_ring *r)
+{
+    return warm_fields(r) == 2 ? tirenv_ring__tread_warm_size(r->tread) : 0;
+}
+
 size_t tirenv_ring__state_size(const tirenv_ring *r)
 {
-    return 2 * sizeof(size_t) + r->M + warm_fields(r) * r->M * sizeof(double);
+    return 2 * sizeof(size_t) + r->M + (warm_fields(r) >= 1) * r->M * sizeof(double) +
+           tread_doubles(r) * sizeof(double);
 }
 
 void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf)
@@ -624,7 +632,8 @@ void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf)
     if (warm_fields(r) >= 1)
         memcpy(buf, r->w, M * sizeof *r->w);
     if (warm_fields(r) == 2)
-        memcpy(buf + M * sizeof *r->w, tirenv_ring__tread_u(r->tread), M * sizeof *r->w);
+        memcpy(buf + M * sizeof *r->w, tirenv_ring__tread_u(r->tread),
+               tread_doubles(r) * sizeof *r->w);
 }
 
 void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
@@ -638,18 +647,21 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
     if (warm_fields(r) >= 1)
         memcpy(r->w, buf, M * sizeof *r->w);
     if (warm_fields(r) == 2)
-        memcpy(tirenv_ring__tread_u(r->tread), buf + M * sizeof *r->w, M * sizeof *r->w);
+        memcpy(tirenv_ring__tread_u(r->tread), buf + M * sizeof *r->w,
+               tread_doubles(r) * sizeof *r->w);
     int finite = 1; /* damaged bytes: no warm start rather than a NaN one */
-    const double *u = r->tread ? tirenv_ring__tread_u(r->tread) : NULL;
+    const double *u = warm_fields(r) == 2 ? tirenv_ring__tread_u(r->tread) : NULL;
     for (size_t j = 0; j < M && warm_fields(r) >= 1; ++j)
-        finite &= isfinite(r->w[j]) && (!u || isfinite(u[j]));
+        finite &= isfinite(r->w[j]);
+    for (size_t j = 0; u && j < tread_doubles(r); ++j)
+        finite &= isfinite(u[j]);
     if (!finite || !(r->warm_lo <= M && r->warm_n <= M - r->warm_lo)) {
         r->warm_lo = r->warm_n = 0;
         memset(r->warm, FREE, M);
         for (size_t j = 0; j < M; ++j)
             r->w[j] = 0;
         if (r->tread)
-            for (size_t j = 0; j < M; ++j)
-                tirenv_ring__tread_u(r->tread)[j] = 0;
+            memset(tirenv_ring__tread_u(r->tread), 0,
+                   tirenv_ring__tread_warm_size(r->tread) * sizeof(double));
     }
 }

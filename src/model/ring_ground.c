@@ -15,9 +15,10 @@
 #include "model/ring_impl.h"
 
 /* A cut of the window: a node or a ground vertex, at angle phi (rad, from the downward
- * vertical, positive forward) with its sine and cosine. */
+ * vertical, positive forward) with its sine and cosine, and d(phi)/dz (rad/m): a vertex's
+ * angle seen from the centre moves as the centre does, a node's does not. */
 typedef struct {
-    double phi, s, c;
+    double phi, s, c, dphi;
 } cut;
 
 static int by_angle(const void *a, const void *b)
@@ -98,18 +99,21 @@ static int first_line(const tirenv_profile *p, double x, double z, double sx, do
     return 1;
 }
 
-/* rho along the ray at (s, c) (normalised) to the line L, and d(rho)/dz: from
- * (x + rho s - X1) dZ = (z - rho c - Z1) dX. NAN if the line faces away (never for the line a
- * ray of the piece meets first). */
-static double rho_on(const double L[4], double x, double z, double s, double c, double *drho)
+/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and
+ * d(rho)/dphi at that z: from (x + rho s - X1) dZ = (z - rho c - Z1) dX. NAN if the line faces
+ * away (never for the line a ray of the piece meets first). */
+static double rho_on(const double L[4], double x, double z, double s, double c, double *drho,
+                     double *drho_dphi)
 {
     const double dX = L[2] - L[0], dZ = L[3] - L[1], den = s * dZ + c * dX;
     if (!(den > 0)) {
-        *drho = 0;
+        *drho = *drho_dphi = 0;
         return NAN;
     }
     *drho = dX / den;
-    return ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
+    const double rho = ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
+    *drho_dphi = -rho * (c * dZ - s * dX) / den;
+    return rho;
 }
 
 /* The piece [a, b] of node interval j (nodes j, j + 1): its two points. */
@@ -121,9 +125,9 @@ static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, c
     for (int e = 0; e < 2; ++e) {
         tirenv_ring_point *q = &r->pts[r->n_pts++];
         const cut *k = ends[e];
-        double drho = 0, rho = 0;
+        double drho = 0, drho_dphi = 0, rho = 0;
         if (!inside)
-            rho = rho_on(L, x, z, k->s, k->c, &drho);
+            rho = rho_on(L, x, z, k->s, k->c, &drho, &drho_dphi);
         q->sn = k->s;
         q->cs = k->c;
         q->phi = k->phi;
@@ -137,6 +141,8 @@ static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, c
             q->s = 0;
         q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
         q->dd = -drho;
+        q->dphi = k->dphi;
+        q->ddt = -(drho + drho_dphi * k->dphi);
         q->X = x + (isfinite(rho) ? rho : 0) * k->s;
     }
 }
@@ -164,7 +170,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             continue;
         if (reserve((void **)&r->cuts, &r->cap_cuts, nv + 1, sizeof(cut)))
             return TIRENV_ENOMEM;
-        ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho};
+        ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho, -dx / (rho * rho)};
     }
     cut *v = r->cuts;
     if (nv > 1)
@@ -179,15 +185,16 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     r->n_pts = 0;
     size_t iv = 0, n_lines = 0;
     for (size_t j = ja; j < jb; ++j) {
-        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j]};
+        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j], 0};
         for (;;) {
-            cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1]};
+            cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1], 0};
             const int is_vertex = iv < nv && v[iv].phi < next.phi;
             if (is_vertex)
                 next = v[iv++];
             if (next.phi > prev.phi) {
                 r->lines[n_lines] = (tirenv_ring_piece){prev.phi, prev.s, prev.c, next.phi,
-                                                        next.s, next.c, j, 0, {0, 0, 0, 0}};
+                                                        next.s, next.c, j, 0, {0, 0, 0, 0},
+                                                        prev.dphi, next.dphi};
                 ++n_lines;
             }
             prev = next;
@@ -215,7 +222,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         const tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
-        const cut a = {c->pa, c->sa, c->ca}, b = {c->pb, c->sb, c->cb};
+        const cut a = {c->pa, c->sa, c->ca, c->da}, b = {c->pb, c->sb, c->cb, c->db};
         piece_points(r, &a, &b, c->j, c->L, x, z, inside);
     }
     return 0;

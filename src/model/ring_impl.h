@@ -87,6 +87,9 @@ typedef struct {
     double s;              /* place in the interval: the tread there is (1 - s) w_j + s w_j+1 */
     size_t j;              /* the interval's first node */
     double d, dd;          /* penetration R0 - rho (m; -INFINITY: none) and its d/dz */
+    double dphi;           /* d(phi)/dz: a ground vertex's cut moves with the centre (rad/m),
+                            * 0 at a node */
+    double ddt;            /* d(d)/dz along the moving cut, dd + (dd/dphi)*dphi */
     double X;              /* ground abscissa, m */
     double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
     double e, f;           /* last evaluation: tread compression (m) and ground force (N) */
@@ -100,6 +103,7 @@ typedef struct {
     size_t j;                      /* its node interval */
     int hit;
     double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
+    double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
 } tirenv_ring_piece;
 
 struct tirenv_ring {
@@ -178,6 +182,11 @@ typedef struct {
     void (*apply)(tirenv_ring *r, const void *K, const double x[], double y[]);
     double (*points)(tirenv_ring *r, const double x[], double grad[]);
     double *kp;
+    /* Optional (NULL: backtracking alone): the points' share of E along x + alpha p as terms
+     * 1/2 c_i max(0, a_i - alpha b_i)^2, written to arrays of its own (*c, *a, *b); returns
+     * their count, or (size_t)-1 if out of memory. */
+    size_t (*line)(tirenv_ring *r, const double x[], const double p[], const double **c,
+                   const double **a, const double **b);
 } tirenv_ring_newton;
 
 enum { TIRENV_RING_NEWTON_OK = 0, TIRENV_RING_NEWTON_BREAKDOWN, TIRENV_RING_NEWTON_NOCONV };
@@ -206,11 +215,14 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T);
 
 /* Per node (global index): the tread surface's inward displacement u over the last window, m. */
 double *tirenv_ring__tread_u(tirenv_ring_tread *T);
+/* The doubles of the warm start from tirenv_ring__tread_u on (u, its and w's slopes in z, the
+ * z they were found at): what a state saves. */
+size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 
 /* The shear-coupled tread's contact on the window r->lo, r->n, the centre at abscissa x_c (m,
  * for the lugs): w, u, F, g per node, e (the ground's overlap with the tread surface) and f
  * per point, r->tread_max; TIRENV_ENOCONV with diag if Newton does not settle. */
-int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag);
 
 /* w (m) of the nodes outside the last window, from the exterior's exact solve (allocates;

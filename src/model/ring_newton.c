@@ -22,6 +22,43 @@ static const double newton_step_tol = 1e-12;
  * settled, then polished by full steps. Seen at NODE_ANGLE 1/16 degree, 5.7e-7 m. */
 static const double newton_stall_tol = 1e-6;
 
+/* The minimiser over 0 < alpha <= 1 of the convex piecewise quadratic
+ *     phi(alpha) = alpha Kxp + 1/2 alpha^2 pKp + sum_i 1/2 c_i max(0, a_i - alpha b_i)^2
+ * (E along x + alpha p up to a constant; phi'(0) < 0 along a descent direction): 1 if phi'(1)
+ * <= 0, else Newton's method on phi', piecewise linear and increasing, each step exact on its
+ * piece, kept inside the bracket of its sign change (bisection otherwise), to a relative
+ * 1e-6 of alpha: the next Newton step corrects what is left. */
+static double exact_alpha(double Kxp, double pKp, size_t n, const double c[], const double a[],
+                          const double b[])
+{
+    double lo = 0, hi = 1, alpha = 1;
+    for (int it = 0; it < 60; ++it) {
+        double d1 = Kxp + alpha * pKp, d2 = pKp;
+        for (size_t i = 0; i < n; ++i) {
+            const double e = a[i] - alpha * b[i];
+            if (e > 0) {
+                d1 -= c[i] * b[i] * e;
+                d2 += c[i] * b[i] * b[i];
+            }
+        }
+        if (it == 0 && d1 <= 0)
+            return 1;
+        if (d1 == 0)
+            return alpha;
+        if (d1 < 0)
+            lo = alpha;
+        else
+            hi = alpha;
+        double next = d2 > 0 ? alpha - d1 / d2 : NAN;
+        if (!(next > lo && next < hi))
+            next = 0.5 * (lo + hi);
+        if (fabs(next - alpha) <= 1e-6 * next)
+            return next;
+        alpha = next;
+    }
+    return alpha;
+}
+
 int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[], double xn[],
                         double xt[], double g[], int *factored)
 {
@@ -70,6 +107,28 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
             slope += g[i] * (xn[i] - x[i]);
         double alpha = 1;
         size_t b = 0;
+        if (nw->line) {
+            /* The exact minimiser along the step, checked as a trial of its own: one pass
+             * over the points for the line's terms, then arithmetic on them alone, where
+             * halving tried about six steps, each a pass over the points. */
+            const double *lc, *la, *lb;
+            const size_t nt = nw->line(r, x, xt, &lc, &la, &lb);
+            if (nt != (size_t)-1) {
+                const double a_ex = exact_alpha(Kxp, pKp, nt, lc, la, lb);
+                if (a_ex > 0 && isfinite(a_ex)) {
+                    double *xs = nw->kp; /* K p is no longer needed */
+                    for (size_t i = 0; i < N; ++i)
+                        xs[i] = x[i] + a_ex * xt[i];
+                    const double E = E_K + a_ex * Kxp + 0.5 * a_ex * a_ex * pKp +
+                                     nw->points(r, xs, NULL);
+                    if (E <= E0 + newton_sigma * a_ex * slope) {
+                        memcpy(x, xs, N * sizeof *x);
+                        nw->set_states(r, x);
+                        continue;
+                    }
+                }
+            }
+        }
         for (; b < NEWTON_BACKTRACK; ++b, alpha *= 0.5) {
             for (size_t i = 0; i < N; ++i)
                 xt[i] = x[i] + alpha * (xn[i] - x[i]);

@@ -65,7 +65,11 @@ struct tirenv_ring_tread {
     double lug_x;       /* the centre's abscissa of the cached lugged ends (m) */
     size_t lug_lo, lug_n; /* their window; lug_n = 0: none cached */
     double *kap;        /* per node (global): compression stiffness k_c R dtheta, N/m */
-    double *u;          /* per node (global): the tread surface's displacement, m */
+    double *u;          /* per node (global): the tread surface's displacement, m; then,
+                         * contiguous with it (the warm start a state saves), dw and du */
+    double *dw, *du;    /* per node (global): dw/dz, du/dz at the last evaluation's
+                         * equilibrium (0 outside its window or without dF_z/dz) */
+    double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
     tband ext, win;
@@ -82,6 +86,10 @@ struct tirenv_ring_tread {
     double *dd, *doff;  /* with the points in contact: the knots' block and its Cholesky factor */
     double *c0, *c1;    /* with the points in contact: the coupling of knot to u_j, u_j+1 */
     double *z0, *z1;    /* workspace: D^-1 c0, D^-1 c1 */
+    double *kphi, *kdphi; /* the knots' angles (rad) and their d/dz (rad/m): they move with
+                           * the centre, as their vertices do */
+    double *lc, *la, *lb; /* the line search's terms (line_cb), cap_l each */
+    size_t cap_l;
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -227,7 +235,7 @@ static int reserve_knots(tirenv_ring_tread *T, size_t m)
     const size_t V = 2 * T->M + cap;
     double *col = malloc((2 * T->M + 5 * V) * sizeof *col);
     size_t *kj = malloc(cap * sizeof *kj);
-    double *kd = malloc(8 * cap * sizeof *kd);
+    double *kd = malloc(10 * cap * sizeof *kd);
     if (!col || !kj || !kd) {
         free(col);
         free(kj);
@@ -252,6 +260,8 @@ static int reserve_knots(tirenv_ring_tread *T, size_t m)
     T->c1 = kd + 5 * cap;
     T->z0 = kd + 6 * cap;
     T->z1 = kd + 7 * cap;
+    T->kphi = kd + 8 * cap;
+    T->kdphi = kd + 9 * cap;
     T->cap_k = cap;
     return 0;
 }
@@ -274,7 +284,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->k_g = TIRENV_RING_GROUND_LAYER * k_t;
     T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
     T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
-    T->kap = malloc(2 * M * sizeof *T->kap);
+    T->kap = malloc((4 * M + 3) * sizeof *T->kap);
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
     if (!T->kap || !T->end || !T->have || reserve_knots(T, 16) ||
@@ -283,10 +293,12 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
         return NULL;
     }
     T->u = T->kap + M;
-    for (size_t j = 0; j < M; ++j) {
+    T->dw = T->u + M;
+    T->du = T->dw + M;
+    T->pred = T->du + M;
+    for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
-        T->u[j] = 0;
-    }
+    memset(T->u, 0, (3 * M + 3) * sizeof *T->u);
     return T;
 }
 
@@ -301,12 +313,15 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->pknot);
     free(T->kj);
     free(T->kd);
+    free(T->lc);
     free(T->ext.L);
     free(T->win.L);
     free(T);
 }
 
 double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
+
+size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
 
 /* The tread's compression stiffness of every node at the centre's x: lugs turn with the tire
  * (ring.c, tread_kappa); k_c in series with the contact layer k_g is the node's k_t. */
@@ -522,11 +537,12 @@ static int find_knots(tirenv_ring *r)
         return 1;
     T->m = m;
     /* Each knot's interval and angle; then the sub-intervals and the stiffness. */
-    double *phi = T->dd; /* workspace until the first assembly */
+    double *phi = T->kphi;
     for (size_t k = 0; k < r->n_pts; ++k)
         if (T->pknot[k] >= 0) {
             T->kj[T->pknot[k]] = r->pts[k].j - r->lo;
             phi[T->pknot[k]] = r->pts[k].phi;
+            T->kdphi[T->pknot[k]] = r->pts[k].dphi;
         }
     const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
     for (size_t k = 0; k < m; ++k) {
@@ -756,6 +772,66 @@ static void solve_full(tirenv_ring *r, double x[])
     knots_solve(T, xa);
 }
 
+/* dF_z/dz follows the cuts at ground vertices (docs/models.md section 5.3): as the centre
+ * moves, a vertex's angle phi moves (q->dphi), so its points' place s in their interval, their
+ * pieces' weight omega (half the angle between the piece's ends; a piece's two points are
+ * pts[2 i], pts[2 i + 1]) and the knot at the vertex do. Point k's share: ds = ds/dz, dom =
+ * d(omega)/dz, and the parts of d(f_ground)/dz, d(f_belt)/dz at fixed x that these add to the
+ * ground's own motion along the cut (omega R k q->ddt): R k (dom e - omega ds (v_j+1 - v_j)),
+ * v the field the layer presses on (u, or w for the belt). Zero for a node's points between
+ * nodes' cuts. */
+static void moving_cut(const tirenv_ring *r, size_t k, const double x[], double *ds, double *dom,
+                       double *dfg, double *dfb)
+{
+    const tirenv_ring_point *q = &r->pts[k];
+    *ds = q->dphi / r->dth;
+    *dom = 0.5 * (r->pts[k | 1].dphi - r->pts[k & ~(size_t)1].dphi);
+    *dfg = *dfb = 0;
+    if (*ds == 0 && *dom == 0)
+        return;
+    const size_t i = q->j - r->lo;
+    const double R = r->R;
+    if (q->st & 1)
+        *dfg = R * r->tread->k_g *
+               (*dom * (q->d - at_u(r, q, x)) - q->omega * *ds * (x[2 * i + 3] - x[2 * i + 1]));
+    if (q->st & 2)
+        *dfb = R * TIRENV_RING_BELT_LAYER * q->k_t *
+               (*dom * (q->d - at_w(r, q, x) - r->par.t_r) -
+                q->omega * *ds * (x[2 * i + 2] - x[2 * i]));
+}
+
+/* The knots' own stiffness moves with them (find_knots: their sub-intervals h and, with lugs,
+ * their compression k_c): rhs -= (dK_knots/dz) a at the solution x. */
+static void knots_moving(const tirenv_ring *r, const double x[], double rhs[])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t m = T->m, N = 2 * r->n;
+    const double *phi = T->kphi, *dp = T->kdphi, *a = x + N;
+    const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
+    double dko_prev = 0;
+    for (size_t k = 0; k < m; ++k) {
+        const size_t i = T->kj[k], j = r->lo + i;
+        const int first = k == 0 || T->kj[k - 1] != i, last = k + 1 == m || T->kj[k + 1] != i;
+        const double hl = phi[k] - (first ? r->theta[j] : phi[k - 1]);
+        const double hr = (last ? r->theta[j + 1] : phi[k + 1]) - phi[k];
+        const double dhl = dp[k] - (first ? 0 : dp[k - 1]);
+        const double dhr = (last ? 0 : dp[k + 1]) - dp[k];
+        const double s = (phi[k] - r->theta[j]) / r->dth;
+        const double k_c = ((1 - s) * T->kap[j] + s * T->kap[j + 1]) / (R * r->dth);
+        const double dk_c = (T->kap[j + 1] - T->kap[j]) * dp[k] / (r->dth * R * r->dth);
+        const double dkd = -k_s * dhl / (R * hl * hl) - k_s * dhr / (R * hr * hr) +
+                           k_c * R * 0.5 * (dhl + dhr) + dk_c * R * 0.5 * (hl + hr);
+        const double dko = last ? 0 : k_s * dhr / (R * hr * hr);
+        double v = dkd * a[k];
+        if (k + 1 < m)
+            v += dko * a[k + 1];
+        if (k > 0)
+            v += dko_prev * a[k - 1];
+        rhs[N + k] -= v;
+        dko_prev = dko;
+    }
+}
+
 /* The driver's callbacks (ring_newton.c). */
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
@@ -765,12 +841,58 @@ static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 
 static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
 
+/* The points' terms of E along x + alpha p: per point in reach, the contact layer on the
+ * tread surface (c = omega R k_g, a = d - u_q(x), b = u_q(p)) and the belt layer beneath
+ * (c = omega R k_b, a = d - w_q(x) - t_r, b = w_q(p)). */
+static size_t line_cb(tirenv_ring *r, const double x[], const double p[], const double **c,
+                      const double **a, const double **b)
+{
+    tirenv_ring_tread *T = r->tread;
+    if (2 * r->n_pts > T->cap_l) { /* geometric: settles at the largest window's */
+        size_t cap = T->cap_l ? T->cap_l : 512;
+        while (cap < 2 * r->n_pts)
+            cap *= 2;
+        double *buf = malloc(3 * cap * sizeof *buf);
+        if (!buf)
+            return (size_t)-1;
+        free(T->lc);
+        T->lc = buf;
+        T->la = buf + cap;
+        T->lb = buf + 2 * cap;
+        T->cap_l = cap;
+    }
+    const double R = r->R, t_r = r->par.t_r;
+    size_t n = 0;
+    /* A term with a <= 0 and a - b <= 0 is zero all along 0 <= alpha <= 1: left out. */
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->d == -INFINITY)
+            continue;
+        const double ag = q->d - at_u(r, q, x), bg = at_u(r, q, p);
+        if (ag > 0 || ag - bg > 0) {
+            T->lc[n] = q->omega * R * T->k_g;
+            T->la[n] = ag;
+            T->lb[n] = bg;
+            ++n;
+        }
+        const double ab = q->d - at_w(r, q, x) - t_r, bb = at_w(r, q, p);
+        if (ab > 0 || ab - bb > 0) {
+            T->lc[n] = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
+            T->la[n] = ab;
+            T->lb[n] = bb;
+            ++n;
+        }
+    }
+    *c = T->lc, *a = T->la, *b = T->lb;
+    return n;
+}
+
 static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
 {
     apply_K(r, (const double(*)[NB])K, x, y);
 }
 
-int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag)
 {
     tirenv_ring_tread *T = r->tread;
@@ -787,17 +909,21 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
     const size_t m = T->m;
     const double(*Q)[NB] = window_end(r, x_c);
     double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
-    /* From the last evaluation's belt and tread where this window overlaps its window. */
+    /* From the last evaluation's belt and tread where this window overlaps its window,
+     * moved along their slope in z to this z (dx/dz of that equilibrium, found with its
+     * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
+     * minimum does not depend on the start (its states' system is solved last). */
+    const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
     for (size_t i = 0; i < n; ++i) {
         const size_t j = lo + i;
         const int warm = j >= r->warm_lo && j < r->warm_lo + r->warm_n;
-        x[2 * i] = warm ? r->w[j] : 0;
-        x[2 * i + 1] = warm ? T->u[j] : 0;
+        x[2 * i] = warm ? r->w[j] + dz * T->dw[j] : 0;
+        x[2 * i + 1] = warm ? T->u[j] + dz * T->du[j] : 0;
     }
     for (size_t k = 0; k < m; ++k)
         x[N + k] = 0;
     const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
-                                   points_energy, T->kp};
+                                   points_energy, T->kp, line_cb};
     int factored;
     const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
     if (st != TIRENV_RING_NEWTON_OK)
@@ -810,7 +936,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                                              "belt-and-tread", "shear-coupled tread", diag);
     }
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
-        r->w[j] = T->u[j] = 0;
+        r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    T->pred[2] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
     for (size_t i = 0; i < N + m; ++i)
@@ -837,11 +964,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         double fg = 0, fb = 0, cu = 0, cw = 0;
         if (q->st & 1) {
             fg = q->omega * R * T->k_g * q->e;
-            cu = q->omega * R * T->k_g * q->dd;
+            cu = q->omega * R * T->k_g * q->ddt;
         }
         if (q->st & 2) {
             fb = q->omega * R * k_b * (q->d - at_w(r, q, x) - t_r);
-            cw = q->omega * R * k_b * q->dd;
+            cw = q->omega * R * k_b * q->ddt;
         }
         q->f = fg + fb;
         r->F[q->j] += (1 - q->s) * q->f;
@@ -850,17 +977,35 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
         r->g[q->j + 1] += q->s * fb;
         sum_c += q->f * q->cs;
         sum_s += q->f * q->sn;
+        if (!dfz_dz)
+            continue;
+        /* -d(grad E)/dz at fixed x: the ground moving along the point's cut (q->ddt), and, at
+         * a vertex's cut, the cut itself moving (its place s and its piece's weight). */
+        double ds, dom, dfg, dfb;
+        moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+        cu += dfg;
+        cw += dfb;
         xt[2 * i + 1] += cu * (1 - q->s);
         xt[2 * i + 3] += cu * q->s;
         if (knot_of(r, q) >= 0)
             xt[N + (size_t)knot_of(r, q)] += cu;
         xt[2 * i] += cw * (1 - q->s);
         xt[2 * i + 2] += cw * q->s;
+        if (ds != 0) {
+            xt[2 * i + 1] -= fg * ds, xt[2 * i + 3] += fg * ds;
+            xt[2 * i] -= fb * ds, xt[2 * i + 2] += fb * ds;
+        }
     }
     *fz = sum_c;
     *fx = -sum_s;
     if (dfz_dz) {
-        solve_full(r, xt);
+        knots_moving(r, x, xt);
+        solve_full(r, xt); /* dx/dz */
+        for (size_t i = 0; i < n; ++i) {
+            T->dw[lo + i] = xt[2 * i];
+            T->du[lo + i] = xt[2 * i + 1];
+        }
+        T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
         double dF = 0;
         for (size_t k = 0; k < r->n_pts; ++k) {
             const tirenv_ring_point *q = &r->pts[k];
@@ -868,9 +1013,15 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double *fx, double *fz,
                 continue;
             double df = 0;
             if (q->st & 1)
-                df += q->omega * R * T->k_g * (q->dd - at_u(r, q, xt));
+                df += q->omega * R * T->k_g * (q->ddt - at_u(r, q, xt));
             if (q->st & 2)
-                df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->dd - at_w(r, q, xt));
+                df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->ddt - at_w(r, q, xt));
+            if (q->dphi != 0 || r->pts[k ^ 1].dphi != 0) {
+                double ds, dom, dfg, dfb;
+                moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+                df += ((q->st & 1) ? dfg : 0) + ((q->st & 2) ? dfb : 0);
+                dF -= q->f * q->sn * q->dphi; /* the force's direction turns with the cut */
+            }
             dF += df * q->cs;
         }
         *dfz_dz = dF;

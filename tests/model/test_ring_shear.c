@@ -334,6 +334,51 @@ static void test_derivative(void **state)
     tirenv_ring_free(r);
 }
 
+/* A ground vertex in contact between nodes (its cut moves with z): 1 if some point in
+ * contact at the last evaluation lies on such a cut. */
+static int vertex_in_contact(const tirenv_ring *r)
+{
+    for (size_t k = 0; k < r->n_pts; ++k)
+        if (r->pts[k].st != 0 && r->pts[k].dphi != 0)
+            return 1;
+    return 0;
+}
+
+/* Over obstacles dF_z/dz follows the cuts at ground vertices (docs/models.md section 5.3: the
+ * vertex's angle, so its points' place, their pieces' weights, the knot's sub-intervals and
+ * the force's direction all move with z): against central differences (step 1e-5 m, skipped
+ * where a state changes within it, relative 1e-6) with the default tire (0.25 MPa at 0.25
+ * degrees) over a cleat, a step and a 5 mm blade, at heights where a corner presses on the
+ * tread between nodes. Leaving the cuts' motion out was 9 to 11 % off over a blade. */
+static void test_derivative_over_obstacles(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    assert_true(t.ring.G_t > 0);
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    tirenv_profile *p[3] = {tirenv_profile_cleat(0.1, 0.05), tirenv_profile_step(0.0371, 0.05),
+                            tirenv_profile_cleat(0.005, 0.0237)};
+    size_t checked = 0, at_vertex = 0;
+    for (size_t k = 0; k < 3; ++k)
+        for (double x = -0.1913; x < 0.2; x += 0.0317)
+            for (double z = 0.60; z < 0.68; z += 0.00313) {
+                int belt;
+                if (tirenv_test_ring_dfdz(r, p[k], x, z, 1e-5, &belt)) {
+                    ++checked;
+                    tirenv_ring_forces(r, p[k], x, z, &(double){0}, &(double){0}, NULL, NULL,
+                                       NULL);
+                    at_vertex += vertex_in_contact(r);
+                }
+            }
+    print_message("dF_z/dz over obstacles against central differences at %zu points, %zu with a "
+                  "vertex in contact between nodes\n", checked, at_vertex);
+    assert_true(checked > 60);
+    assert_true(at_vertex > 40);
+    for (size_t k = 0; k < 3; ++k)
+        tirenv_profile_free(p[k]);
+    tirenv_ring_free(r);
+}
+
 /* Lugs on the shear-coupled tread: the grooves' softer compression, the exterior condensed
  * afresh at each position (it turns with the tire); a curve over a cleat is finite, lifts the
  * hub, and differs from the smooth tread's. */
@@ -593,6 +638,7 @@ int main(void)
         cmocka_unit_test(test_corner_between_nodes),
         cmocka_unit_test(test_warm_starts_agree),
         cmocka_unit_test(test_derivative),
+        cmocka_unit_test(test_derivative_over_obstacles),
         cmocka_unit_test(test_lugs),
         cmocka_unit_test(test_state_restores_bits),
         cmocka_unit_test(test_tread_exterior),
