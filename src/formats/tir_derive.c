@@ -113,7 +113,11 @@ static tirenv_cam_vertical file_law(const mf_keys *k, double q2, double f)
 }
 
 /* The file's deflection at FNOMIN (m) by that law, with f the cam's: PFZ1 at the tire's
- * INFLPRES and NOMPRES (tirenv_cam_pressure_factor). 0 with the missing key in *missing. */
+ * INFLPRES and NOMPRES (tirenv_cam_pressure_factor). s = rho/R0 is the law's root at
+ * g = 1/f, times R0, the arithmetic the derivation has always used: the cam's
+ * tirenv_cam_vertical_deflection(FNOMIN) is the same law to a few ulp (and bit for bit on a
+ * law with Q_FZ2 or Q_FZ1), but the derived models' scale, converged to 5e-8, would move
+ * within that tolerance with any bit of rho_n. 0 with the missing key in *missing. */
 static double nominal_deflection(const mf_keys *k, const tirenv_tire *tire, double *factor,
                                  const char **missing)
 {
@@ -125,12 +129,13 @@ static double nominal_deflection(const mf_keys *k, const tirenv_tire *tire, doub
         return 0;
     *factor = tirenv_cam_pressure_factor(tire->cam.pfz1, tire->ring.p, tire->ring.p_nom);
     const tirenv_cam_vertical v = file_law(k, k->q_fz2, *factor);
-    const double rho = tirenv_cam_vertical_deflection(&v, k->fnomin);
-    if (!(rho > 0 && rho < k->R0 && isfinite(rho))) {
+    const double x = tirenv_cam_vertical_root(1, tirenv_cam_vertical_q1(&v), v.q_fz2,
+                                              1 / *factor);
+    if (!(x > 0 && x < 1 && isfinite(x))) {
         *missing = "VERTICAL_STIFFNESS";
         return 0;
     }
-    return rho;
+    return x * k->R0;
 }
 
 /* The deflection (m) at load G (N) of the file's law with Q_FZ2 q2 at the pressure factor;
