@@ -79,8 +79,8 @@ typedef struct {
     double alpha_s;        /* SIDEWALL_ANGLE: half angle of a sidewall's membrane arc, rad,
                             * in (0, pi/2] */
     double p;              /* [OPERATING_CONDITIONS] INFLPRES: inflation pressure, Pa */
-    double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (read and written; the
-                            * ring uses INFLPRES) */
+    double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (the ring uses INFLPRES;
+                            * the cam's vertical law PFZ1 at INFLPRES over NOMPRES) */
     tirenv_ring_contact_kind contact; /* [ENVELOPING_RING] CONTACT */
 } tirenv_ring_params;
 
