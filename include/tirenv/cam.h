@@ -44,6 +44,35 @@ int tirenv_cam_tandem(const tirenv_profile *p, const tirenv_cam_shape *cam, doub
 double tirenv_cam_q_fz1(double c_z, double R0, double fnomin, double q_fz2);
 double tirenv_cam_vertical_root(double scale, double q1, double q2, double g);
 
+/* The whole of that law as the cam and the .tir derivation both use it (docs/models.md
+ * section 7.3), MF-Tyre 6.1's at standstill:
+ *   F_z = f*FNOMIN*(Q_FZ1*s + Q_FZ2*s^2),  s = rho/R0,  f = 1 + PFZ1*(p - p_nom)/p_nom,
+ * with the file's Q_FZ1 where it is not 0 and otherwise tirenv_cam_q_fz1's, which makes f*c_z
+ * the tangent stiffness at FNOMIN; with Q_FZ1 and Q_FZ2 both 0, the linear F_z = f*c_z*rho
+ * (FNOMIN not needed). */
+typedef struct {
+    double R0;       /* UNLOADED_RADIUS, m */
+    double fnomin;   /* FNOMIN, N; 0: none (then q_fz1 and q_fz2 are 0) */
+    double c_z;      /* VERTICAL_STIFFNESS, N/m */
+    double q_fz1;    /* Q_FZ1; 0: from c_z */
+    double q_fz2;    /* Q_FZ2 */
+    double factor;   /* f, tirenv_cam_pressure_factor; > 0 */
+} tirenv_cam_vertical;
+
+/* f = 1 + PFZ1*(p - p_nom)/p_nom for INFLPRES p and NOMPRES p_nom (Pa): exactly 1 where PFZ1
+ * is 0; NAN where PFZ1 is not 0 and p_nom is not positive. */
+double tirenv_cam_pressure_factor(double pfz1, double p, double p_nom);
+
+/* The law's Q_FZ1: q_fz1 where not 0, else tirenv_cam_q_fz1 (NAN where Q_FZ2 leaves none). */
+double tirenv_cam_vertical_q1(const tirenv_cam_vertical *v);
+
+/* The load F_z (N) at deflection rho (m); the deflection (m) at a load (N), the root that grows
+ * from 0 with it (NAN beyond the largest load a Q_FZ2 < 0 carries, or where the law has no
+ * Q_FZ1); the tangent stiffness dF_z/drho (N/m) at rho. */
+double tirenv_cam_vertical_load(const tirenv_cam_vertical *v, double rho);
+double tirenv_cam_vertical_deflection(const tirenv_cam_vertical *v, double load);
+double tirenv_cam_vertical_stiffness(const tirenv_cam_vertical *v, double rho);
+
 /* MF-Tyre's vertical law above, F_z/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 with s = rho/R0, fitted to
  * n >= 2 flat-ground states: rho[i] (m) a reference's deflection at the load G[i] (N), R0 (m),
  * FNOMIN (N), in relative error of the load by the 2x2 normal equations (docs/models.md

@@ -79,8 +79,8 @@ typedef struct {
     double alpha_s;        /* SIDEWALL_ANGLE: half angle of a sidewall's membrane arc, rad,
                             * in (0, pi/2] */
     double p;              /* [OPERATING_CONDITIONS] INFLPRES: inflation pressure, Pa */
-    double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (read and written; the
-                            * ring uses INFLPRES) */
+    double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (the ring uses INFLPRES;
+                            * the cam's vertical law PFZ1 at INFLPRES over NOMPRES) */
     tirenv_ring_contact_kind contact; /* [ENVELOPING_RING] CONTACT */
 } tirenv_ring_params;
 
@@ -94,6 +94,10 @@ typedef struct {
     double fnomin;         /* [VERTICAL] FNOMIN: nominal load, N; 0: none (Q_FZ2 needs it) */
     double q_fz2;          /* [VERTICAL] Q_FZ2: quadratic term of MF-Tyre's vertical law
                             * F_z = FNOMIN*(Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2); 0: linear */
+    double q_fz1;          /* [VERTICAL] Q_FZ1: its linear term; 0 (MF-Tyre's "none"): from
+                            * VERTICAL_STIFFNESS, sqrt((c_z*R0/FNOMIN)^2 - 4*Q_FZ2) */
+    double pfz1;           /* [VERTICAL] PFZ1: the law times 1 + PFZ1*(INFLPRES - NOMPRES)/
+                            * NOMPRES (ring.p, ring.p_nom); 0: no pressure term */
     double q_ra1;          /* [CONTACT_PATCH] Q_RA1: square-root term of the contact length */
     double q_ra2;          /* Q_RA2: linear term of the contact length */
     double shift;          /* ELLIPS_SHIFT: tandem base / contact length 2a */

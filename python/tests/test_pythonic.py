@@ -75,10 +75,11 @@ def test_tire_keys_read_like_a_dict(tmp_path):
     assert t["MAX_ITERATIONS"] == 37 and isinstance(t["MAX_ITERATIONS"], int)
     assert t["METHOD"] == "brent"
     assert t["UNLOADED_RADIUS"] == t.R0
-    assert "RADIAL_STIFFNESS" in t and "Q_FZ1" not in t and 3 not in t
+    assert "RADIAL_STIFFNESS" in t and "Q_FZ3" not in t and 3 not in t
     assert t["FNOMIN"] == 17900 and "Q_FZ2" in t  # the cam's vertical law (models.md 7.3)
+    assert t["Q_FZ1"] == 0 and t["PFZ1"] == 0  # none: Q_FZ1 from VERTICAL_STIFFNESS
     with pytest.raises(KeyError):
-        t["Q_FZ1"]
+        t["Q_FZ3"]
     keys = list(t)
     assert len(keys) == len(t) and len(set(keys)) == len(keys)
     assert "UNLOADED_RADIUS" in keys and "NODE_ANGLE" in keys and "METHOD" in keys
@@ -93,3 +94,16 @@ def test_tire_keys_read_like_a_dict(tmp_path):
     with pytest.raises(TypeError):
         t["RADIAL_STIFFNESS"] = 1.0  # read-only
     assert os.fspath(path)  # the file was written
+
+
+def test_cam_takes_own_q_fz1_and_pfz1():
+    """The cam's vertical law is MF-Tyre's (docs/models.md 7.3) through the same C: with
+    Q_FZ1 12.3 and PFZ1 0.83 at INFLPRES 1.5 bar on NOMPRES 1.2 bar, the deflection at FNOMIN
+    is the closed-form root of f*(Q_FZ1*s + Q_FZ2*s^2) = 1, f = 1.2075, to round-off."""
+    t = tirenv.Tire(set={"Q_FZ1": 12.3, "PFZ1": 0.83, "INFLPRES": 1.5e5, "NOMPRES": 1.2e5})
+    q1, q2, f, r0 = 12.3, t["Q_FZ2"], 1 + 0.83 * 0.25, t.R0
+    s = (-q1 + (q1 * q1 + 4 * q2 / f) ** 0.5) / (2 * q2)
+    rho = tirenv.Model("cam", tire=t).flat(t["FNOMIN"]).deflection
+    assert abs(rho / (r0 * s) - 1) < 1e-12
+    plain = tirenv.Model("cam", tire=tirenv.Tire()).flat(t["FNOMIN"]).deflection
+    assert abs(rho / plain - 1) > 0.1  # neither is ignored

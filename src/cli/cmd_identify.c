@@ -203,15 +203,19 @@ int cli_identify_main(int argc, char *argv[])
              loads.v[n - 1] / 1e3, tg[0].deflection * 1e3, tg[n - 1].deflection * 1e3,
              tg[0].contact_length, tg[n - 1].contact_length, 100 * e_sd, 100 * e_sl,
              100 * e_cd, 100 * e_cl);
-    const tirenv_tir_value values[] = {
+    tirenv_tir_value values[] = {
         {"VERTICAL", "VERTICAL_STIFFNESS", id.cam.c_z},
         {"CONTACT_PATCH", "Q_RA1", id.cam.q_ra1},
         {"CONTACT_PATCH", "Q_RA2", id.cam.q_ra2},
         {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},
         {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", id.springs.c_b},
         {"VERTICAL", "Q_FZ2", id.cam.q_fz2},  /* only with FNOMIN, which it refers to */
+        {"VERTICAL", "Q_FZ1", 0},             /* only over a file's own: the law is now
+                                               * VERTICAL_STIFFNESS's (section 14.1) */
     };
-    const size_t n_values = sizeof values / sizeof values[0] - (id.cam.fnomin > 0 ? 0 : 1);
+    size_t n_values = sizeof values / sizeof values[0] - 2 + (id.cam.fnomin > 0 ? 1 : 0);
+    if (tire.cam.q_fz1 != 0)
+        values[n_values++] = values[sizeof values / sizeof values[0] - 1];
     if ((status = tirenv_tir_update(path, n_values, values, note, &diag)))
         return cli_fail(status, &diag);
     fprintf(stderr, "tirenv identify: wrote the %zu values into %s\n", n_values, path);

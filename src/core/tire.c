@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Default tire, default solver settings, and the physical-parameter check. */
 #include "tirenv/tire.h"
+#include "tirenv/cam.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -90,6 +91,14 @@ static int cam_check(const tirenv_cam_params *c, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
                             "must be finite, and needs FNOMIN (the load it refers to) when not "
                             "0, got %g with FNOMIN %g", c->q_fz2, c->fnomin);
+    if (!(c->q_fz1 >= 0 && isfinite(c->q_fz1)) || (c->q_fz1 != 0 && !(c->fnomin > 0)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ1",
+                            "must be 0 (from VERTICAL_STIFFNESS) or positive, and needs FNOMIN "
+                            "(the load it refers to) when not 0, got %g with FNOMIN %g",
+                            c->q_fz1, c->fnomin);
+    if (!isfinite(c->pfz1))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "PFZ1", "must be finite, got %g",
+                            c->pfz1);
     if (!(c->q_ra1 >= 0 && isfinite(c->q_ra1)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_RA1",
                             "must be zero or positive, got %g", c->q_ra1);
@@ -281,6 +290,18 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
                             "unknown equilibrium method %d", (int)eq->method);
     if ((status = cam_check(&tire->cam, diag)))
         return status;
+    /* The vertical law's pressure factor (docs/models.md section 7.3) must carry a load. */
+    if (tire->cam.pfz1 != 0 && !(tire->ring.p_nom > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "PFZ1",
+                            "%g needs NOMPRES, the pressure it refers to, got NOMPRES %g Pa",
+                            tire->cam.pfz1, tire->ring.p_nom);
+    if (!(tirenv_cam_pressure_factor(tire->cam.pfz1, tire->ring.p, tire->ring.p_nom) > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "PFZ1",
+                            "%g at INFLPRES %g Pa, NOMPRES %g Pa leaves the vertical law no load: "
+                            "1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES = %g, positive expected",
+                            tire->cam.pfz1, tire->ring.p, tire->ring.p_nom,
+                            tirenv_cam_pressure_factor(tire->cam.pfz1, tire->ring.p,
+                                                       tire->ring.p_nom));
     return tire_plausible(tire, diag);
 }
 

@@ -42,6 +42,9 @@ typedef struct {
     signed char dim[TIRENV_UNIT_KINDS];
     unsigned given;          /* a bit set in the schema's given field when the key has a
                               * value from a file or --set; 0: not tracked */
+    int omit_zero;           /* REAL: written only when not 0, for a key whose 0 means "none"
+                              * (MF-Tyre's Q_FZ1, PFZ1), so that files without it stay as
+                              * they were */
 } tirenv_propfile__key;
 
 /* Table entries. The macro parameters avoid the member names: a parameter called key would
@@ -118,7 +121,8 @@ int tirenv_propfile__read(const tirenv_propfile__schema *s, const char *path, vo
 int tirenv_propfile__set(const tirenv_propfile__schema *s, void *obj, const char *assignment,
                          tirenv_diag *diag);
 
-/* Checks *obj and writes it atomically (tirenv_outfile) with every key and its comment. A
+/* Checks *obj and writes it atomically (tirenv_outfile) with every key (but an omit_zero key
+ * at 0) and its comment. A
  * relative path is written as an absolute one when the file goes to another directory than
  * the working one, so that reading the file back names the same file. */
 int tirenv_propfile__write(const tirenv_propfile__schema *s, const char *path,

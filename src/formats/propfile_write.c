@@ -149,6 +149,12 @@ static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *
             if (strcmp(e->section, name) != 0)
                 continue;
             const unsigned char *field = (const unsigned char *)obj + e->offset;
+            if (e->omit_zero && e->kind == TIRENV_PROPFILE_REAL) {
+                double v;
+                memcpy(&v, field, sizeof v);
+                if (v == 0)
+                    continue;
+            }
             char value[40];
             if (!pf_number_text(e, field, value, sizeof value)) {
                 switch ((int)e->kind) {

@@ -53,6 +53,12 @@ static const tirenv_propfile__key tir_keys[] = {
              "nominal load, N: the load Q_FZ2 refers to (0: none)"),
     TIR_REAL("VERTICAL", "Q_FZ2", cam.q_fz2, 0, 0, 0,
              "cam: load = FNOMIN*(Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2), 0: linear"),
+    {.section = "VERTICAL", .key = "Q_FZ1", .kind = TIRENV_PROPFILE_REAL,
+     .offset = offsetof(tirenv_tire, cam.q_fz1), .omit_zero = 1,
+     .comment = "cam: the law's linear term; 0 or absent: from VERTICAL_STIFFNESS"},
+    {.section = "VERTICAL", .key = "PFZ1", .kind = TIRENV_PROPFILE_REAL,
+     .offset = offsetof(tirenv_tire, cam.pfz1), .omit_zero = 1,
+     .comment = "cam: load times 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES"},
     TIR_CAM("CONTACT_PATCH", "Q_RA1", cam.q_ra1, 0, 0, 0, TIRENV_CAM_Q_RA1,
              "cam: contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0))"),
     TIR_CAM("CONTACT_PATCH", "Q_RA2", cam.q_ra2, 0, 0, 0, TIRENV_CAM_Q_RA2,
@@ -169,19 +175,25 @@ static const tirenv_propfile__schema tir_schema = {
 };
 
 /* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
- * file must not inherit the tractor's 0.38 m. Likewise FNOMIN and Q_FZ2: a file without them
- * has a linear vertical law, not the default tire's. */
+ * file must not inherit the tractor's 0.38 m. Likewise FNOMIN, Q_FZ2, Q_FZ1 and PFZ1: a file
+ * without them has a linear vertical law from its VERTICAL_STIFFNESS and no pressure term,
+ * not the law of the tire it was read over. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
-    const double width = tire->width, fnomin = tire->cam.fnomin, q_fz2 = tire->cam.q_fz2;
+    const double width = tire->width;
+    const tirenv_cam_params cam = tire->cam;
     tire->width = 0;
     tire->cam.fnomin = 0;
     tire->cam.q_fz2 = 0;
+    tire->cam.q_fz1 = 0;
+    tire->cam.pfz1 = 0;
     const int status = tirenv_propfile__read(&tir_schema, path, tire, diag);
     if (status) {
         tire->width = width;
-        tire->cam.fnomin = fnomin;
-        tire->cam.q_fz2 = q_fz2;
+        tire->cam.fnomin = cam.fnomin;
+        tire->cam.q_fz2 = cam.q_fz2;
+        tire->cam.q_fz1 = cam.q_fz1;
+        tire->cam.pfz1 = cam.pfz1;
     }
     return status;
 }

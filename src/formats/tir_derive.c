@@ -99,13 +99,27 @@ static const tirenv_propfile__schema mf_schema = {
     .given_mask = MF_ALL,
 };
 
-/* The file's deflection at FNOMIN (m), by MF-Tyre's vertical law at standstill,
- *   F_z = (1 + PFZ1*dp) * (Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2) * FNOMIN,  dp = (p - p0)/p0,
- * with Q_FZ1 = sqrt((VERTICAL_STIFFNESS*R0/FNOMIN)^2 - 4*Q_FZ2) where the file gives none,
- * which makes VERTICAL_STIFFNESS the tangent stiffness at FNOMIN (and, with Q_FZ2 = 0, the
- * law linear: rho = FNOMIN/VERTICAL_STIFFNESS). Q_V1, Q_V2 are speed terms, and the enveloping
- * models are quasi-static. 0 with the missing key in *missing. */
-static double nominal_deflection(const mf_keys *k, double *factor, const char **missing)
+/* The file's vertical law with Q_FZ2 q2 at the pressure factor f: the cam's own
+ * (tirenv_cam_vertical, docs/models.md section 7.3), with the file's keys,
+ *   F_z = f*FNOMIN*(Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2),  f = 1 + PFZ1*(p - p0)/p0,
+ * Q_FZ1 the file's where not 0, else sqrt((VERTICAL_STIFFNESS*R0/FNOMIN)^2 - 4*Q_FZ2), which
+ * makes VERTICAL_STIFFNESS the tangent stiffness at FNOMIN (and, with Q_FZ2 = 0, the law
+ * linear: rho = FNOMIN/(f*VERTICAL_STIFFNESS)). Q_V1, Q_V2 are speed terms, and the enveloping
+ * models are quasi-static. */
+static tirenv_cam_vertical file_law(const mf_keys *k, double q2, double f)
+{
+    return (tirenv_cam_vertical){.R0 = k->R0, .fnomin = k->fnomin, .c_z = k->c_z,
+                                 .q_fz1 = k->q_fz1, .q_fz2 = q2, .factor = f};
+}
+
+/* The file's deflection at FNOMIN (m) by that law, with f the cam's: PFZ1 at the tire's
+ * INFLPRES and NOMPRES (tirenv_cam_pressure_factor). s = rho/R0 is the law's root at
+ * g = 1/f, times R0, the arithmetic the derivation has always used: the cam's
+ * tirenv_cam_vertical_deflection(FNOMIN) is the same law to a few ulp (and bit for bit on a
+ * law with Q_FZ2 or Q_FZ1), but the derived models' scale, converged to 5e-8, would move
+ * within that tolerance with any bit of rho_n. 0 with the missing key in *missing. */
+static double nominal_deflection(const mf_keys *k, const tirenv_tire *tire, double *factor,
+                                 const char **missing)
 {
     *factor = 1;
     *missing = !(k->given & MF_R0) ? "UNLOADED_RADIUS"
@@ -113,15 +127,10 @@ static double nominal_deflection(const mf_keys *k, double *factor, const char **
                : !(k->given & (MF_CZ | MF_QFZ1)) ? "VERTICAL_STIFFNESS" : NULL;
     if (*missing)
         return 0;
-    if ((k->given & MF_PFZ1) && (k->given & MF_INFLPRES) && (k->given & MF_NOMPRES) &&
-        k->nompres > 0)
-        *factor = 1 + k->pfz1 * (k->inflpres - k->nompres) / k->nompres;
-    const double q2 = k->given & MF_QFZ2 ? k->q_fz2 : 0;
-    const double q1 = (k->given & MF_QFZ1) && k->q_fz1 != 0
-                          ? k->q_fz1
-                          : tirenv_cam_q_fz1(k->c_z, k->R0, k->fnomin, q2);
-    /* q2 x^2 + q1 x = 1/factor, the root that grows from 0 with the load. */
-    const double x = tirenv_cam_vertical_root(1, q1, q2, 1 / *factor);
+    *factor = tirenv_cam_pressure_factor(tire->cam.pfz1, tire->ring.p, tire->ring.p_nom);
+    const tirenv_cam_vertical v = file_law(k, k->q_fz2, *factor);
+    const double x = tirenv_cam_vertical_root(1, tirenv_cam_vertical_q1(&v), v.q_fz2,
+                                              1 / *factor);
     if (!(x > 0 && x < 1 && isfinite(x))) {
         *missing = "VERTICAL_STIFFNESS";
         return 0;
@@ -129,13 +138,12 @@ static double nominal_deflection(const mf_keys *k, double *factor, const char **
     return x * k->R0;
 }
 
-/* MF-Tyre's vertical law at standstill with Q_FZ2 q2 and Q_FZ1 from VERTICAL_STIFFNESS (the
- * tangent at FNOMIN), at the file's pressure factor: the deflection (m) at load G (N); NAN
- * where the law has no Q_FZ1 or does not reach G. */
+/* The deflection (m) at load G (N) of the file's law with Q_FZ2 q2 at the pressure factor;
+ * NAN where the law has no Q_FZ1 or does not reach G. */
 static double law_deflection(const mf_keys *k, double q2, double factor, double G)
 {
-    const double q1 = tirenv_cam_q_fz1(k->c_z, k->R0, k->fnomin, q2);
-    return tirenv_cam_vertical_root(k->R0, q1, q2, G / (factor * k->fnomin));
+    const tirenv_cam_vertical v = file_law(k, q2, factor);
+    return tirenv_cam_vertical_deflection(&v, G);
 }
 
 /* The load (N) of a model of *t at deflection rho_n on flat ground. */
@@ -678,6 +686,37 @@ static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const 
     return status;
 }
 
+/* What of the file's vertical law is not VERTICAL_STIFFNESS at NOMPRES (section 7.3): its own
+ * Q_FZ1, and PFZ1's pressure factor at INFLPRES, which the cam and the derivation both take;
+ * "" when neither. */
+static void law_note(const tirenv_tire *t, char *buf, size_t n)
+{
+    const double f = tirenv_cam_pressure_factor(t->cam.pfz1, t->ring.p, t->ring.p_nom);
+    const tirenv_cam_vertical v = {.R0 = t->springs.R0, .fnomin = t->cam.fnomin,
+                                   .c_z = t->cam.c_z, .q_fz1 = t->cam.q_fz1,
+                                   .q_fz2 = t->cam.q_fz2, .factor = f};
+    int k = 0;
+    buf[0] = '\0';
+    if (t->cam.q_fz1 != 0)
+        k = snprintf(buf, n, "the vertical law takes the file's Q_FZ1 = %.6g, not one from "
+                     "VERTICAL_STIFFNESS %.4g kN/m", t->cam.q_fz1, t->cam.c_z / 1e3);
+    if (f != 1 && k >= 0 && (size_t)k < n)
+        k += snprintf(buf + k, n - (size_t)k, "%sthe vertical law times PFZ1's pressure factor "
+                      "1 + %.4g*(INFLPRES %.4g kPa - NOMPRES %.4g kPa)/NOMPRES = %.6g",
+                      k ? "; " : "", t->cam.pfz1, t->ring.p / 1e3, t->ring.p_nom / 1e3, f);
+    if (k > 0 && (size_t)k < n && t->cam.fnomin > 0)
+        snprintf(buf + k, n - (size_t)k, " (deflection %.4g mm at FNOMIN %.6g N)",
+                 tirenv_cam_vertical_deflection(&v, t->cam.fnomin) * 1e3, t->cam.fnomin);
+}
+
+/* Done: the note on the vertical law (law_note) after the rest. */
+static int derived(tirenv_tir_origin *o, const char *law)
+{
+    if (law[0])
+        note_add(o, "%s%s", o->note[0] ? "; " : "", law);
+    return TIRENV_OK;
+}
+
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag)
 {
@@ -688,6 +727,8 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
     int status = tirenv_propfile__read(&mf_schema, path, &k, diag);
     if (status)
         return status;
+    char law_said[sizeof origin->note / 2];
+    law_note(tire, law_said, sizeof law_said);
     /* A vertical law of the file's own: Q_FZ2, or a Q_FZ1 other than 0 (0 is MF-Tyre's
      * "derive it from VERTICAL_STIFFNESS", nominal_deflection). */
     const int own_law = (k.given & MF_QFZ2) || ((k.given & MF_QFZ1) && k.q_fz1 != 0);
@@ -704,10 +745,10 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
      * (the cam then refuses naming Q_RA1). */
     const int cam_possible = (tire->cam.given & TIRENV_CAM_C_Z) != 0;
     if (!lack && (origin->own & TIRENV_TIR_CAM))
-        return TIRENV_OK;
+        return derived(origin, law_said);
     double factor;
     const char *missing;
-    double rho_n = nominal_deflection(&k, &factor, &missing);
+    double rho_n = nominal_deflection(&k, tire, &factor, &missing);
     origin->rho_nominal = rho_n;
     /* The cam's Q_FZ2 is identified on the ring where the ring is derived (so the two are
      * scaled together) and the file's law is VERTICAL_STIFFNESS alone (section 14.2). */
@@ -716,7 +757,7 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         .derive_q_fz2 = (lack & TIRENV_TIR_RING) && cam_possible && !own_law &&
                         (k.given & MF_CZ)};
     if (!lack && (missing || !cam_possible))
-        return TIRENV_OK;
+        return derived(origin, law_said);
     tirenv_tire t = *tire;
     static const struct { unsigned bit; const char *section, *model; } models[] = {
         {TIRENV_TIR_RING, "ENVELOPING_RING", "ring"},
@@ -737,7 +778,7 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                      origin->note[0] ? "; " : "", models[i].section, missing, models[i].model);
         }
         *tire = t;
-        return TIRENV_OK;
+        return derived(origin, law_said);
     }
     /* The ring first: the springs model is identified on it. Where no Q_FZ2 identified on the
      * derived ring deflects with it at FNOMIN (a ring whose air alone is stiffer than the law
@@ -788,5 +829,5 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
     if (cam_possible)
         cam_part(&t, &k, have_ring ? &tr.ring : NULL, !(origin->own & TIRENV_TIR_CAM), origin);
     *tire = t;
-    return TIRENV_OK;
+    return derived(origin, law_said);
 }

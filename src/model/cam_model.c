@@ -5,7 +5,8 @@
  * and the load enters through the MF-Tyre contact-patch law alone. So the model reports
  *   h = w, the effective road height of the tandem (0 on flat ground),
  *   z = z_flat + w, with z_flat = R0 - rho0 and rho0 the static deflection of MF-Tyre's
- *       vertical law (G / VERTICAL_STIFFNESS, or with Q_FZ2 its quadratic: section 7.3), the
+ *       vertical law (G / VERTICAL_STIFFNESS, or with Q_FZ2 or Q_FZ1 its quadratic, times
+ *       PFZ1's pressure factor: section 7.3), the
  *       centre height of the vertical spring on the effective road,
  *   fx = -G*tan(beta): the ground force G, normal to the effective road plane of slope
  *       tan(beta), has the longitudinal part -G*tan(beta) when its vertical part is G, so a
@@ -30,14 +31,60 @@
 
 /* MF-Tyre's vertical law at standstill (docs/models.md section 7.3), the load at a static
  * deflection rho and back:
- *   F_z = FNOMIN*(Q_FZ1*s + Q_FZ2*s^2),   s = rho/R0,
+ *   F_z = f*FNOMIN*(Q_FZ1*s + Q_FZ2*s^2),   s = rho/R0,   f = 1 + PFZ1*dp,
+ * with the file's Q_FZ1 where it gives one other than 0 and otherwise (MF-Tyre 6.1's rule)
  *   Q_FZ1 = sqrt((VERTICAL_STIFFNESS*R0/FNOMIN)^2 - 4*Q_FZ2),
- * so that VERTICAL_STIFFNESS is the tangent stiffness at FNOMIN (MF-Tyre 6.1's Q_FZ1 when a file
- * gives none; tirenv always derives it so). */
+ * which makes VERTICAL_STIFFNESS the tangent stiffness at FNOMIN (f times it at INFLPRES). */
 double tirenv_cam_q_fz1(double c_z, double R0, double fnomin, double q_fz2)
 {
     const double k = c_z * R0 / fnomin;
     return sqrt(k * k - 4 * q_fz2);
+}
+
+double tirenv_cam_pressure_factor(double pfz1, double p, double p_nom)
+{
+    if (pfz1 == 0)
+        return 1;
+    if (!(p_nom > 0))
+        return NAN;
+    return 1 + pfz1 * (p - p_nom) / p_nom;
+}
+
+double tirenv_cam_vertical_q1(const tirenv_cam_vertical *v)
+{
+    return v->q_fz1 != 0 ? v->q_fz1 : tirenv_cam_q_fz1(v->c_z, v->R0, v->fnomin, v->q_fz2);
+}
+
+/* Without Q_FZ1 and Q_FZ2 the law is linear in VERTICAL_STIFFNESS, and FNOMIN may be 0. Each
+ * form with f = 1 is bit for bit what the cam computed before f and Q_FZ1 were read:
+ * (f*c_z)*rho, (f*FNOMIN)*(...) and load/(f*FNOMIN) with f*x = x. */
+static int vertical_linear(const tirenv_cam_vertical *v)
+{
+    return v->q_fz1 == 0 && v->q_fz2 == 0;
+}
+
+double tirenv_cam_vertical_load(const tirenv_cam_vertical *v, double rho)
+{
+    if (vertical_linear(v))
+        return v->factor * v->c_z * rho;
+    const double s = rho / v->R0;
+    return v->factor * v->fnomin * (tirenv_cam_vertical_q1(v) * s + v->q_fz2 * s * s);
+}
+
+double tirenv_cam_vertical_deflection(const tirenv_cam_vertical *v, double load)
+{
+    if (vertical_linear(v))
+        return load / (v->factor * v->c_z);
+    return tirenv_cam_vertical_root(v->R0, tirenv_cam_vertical_q1(v), v->q_fz2,
+                                    load / (v->factor * v->fnomin));
+}
+
+double tirenv_cam_vertical_stiffness(const tirenv_cam_vertical *v, double rho)
+{
+    if (vertical_linear(v))
+        return v->factor * v->c_z;
+    return v->factor * v->fnomin / v->R0 *
+           (tirenv_cam_vertical_q1(v) + 2 * v->q_fz2 * rho / v->R0);
 }
 
 /* scale*2*g evaluated as (scale*2)*g: the deflection R0*2*g/(...) the cam always computed. */
@@ -106,17 +153,48 @@ int tirenv_cam_fit_contact_law(double R0, size_t n, const double rho[], const do
     return normal2_solve(&e, n, q_ra2, q_ra1);
 }
 
-static double cam_q_fz1(const tirenv_tire *t)
+/* The tire's vertical law (tirenv_cam_vertical): its cam keys, R0, and the pressure factor
+ * of PFZ1 at the ring's INFLPRES and NOMPRES. */
+static tirenv_cam_vertical cam_vertical(const tirenv_tire *t)
 {
-    return tirenv_cam_q_fz1(t->cam.c_z, t->springs.R0, t->cam.fnomin, t->cam.q_fz2);
+    return (tirenv_cam_vertical){
+        .R0 = t->springs.R0, .fnomin = t->cam.fnomin, .c_z = t->cam.c_z,
+        .q_fz1 = t->cam.q_fz1, .q_fz2 = t->cam.q_fz2,
+        .factor = tirenv_cam_pressure_factor(t->cam.pfz1, t->ring.p, t->ring.p_nom)};
 }
 
-/* Whether the law has a Q_FZ1 (Q_FZ2 < (VERTICAL_STIFFNESS*R0/FNOMIN)^2/4): a property of the
- * cam with its tire's R0, checked where the cam meets a load (the tire check sees the cam keys
- * alone, and other models combine them with another tire's R0). */
+static double cam_q_fz1(const tirenv_tire *t)
+{
+    const tirenv_cam_vertical v = cam_vertical(t);
+    return tirenv_cam_vertical_q1(&v);
+}
+
+/* The law's keys, for messages: "VERTICAL_STIFFNESS 371000 N/m and Q_FZ2". */
+static const char *cam_law_keys(const tirenv_tire *t, int with_q2, char *buf, size_t n)
+{
+    const double f = tirenv_cam_pressure_factor(t->cam.pfz1, t->ring.p, t->ring.p_nom);
+    int k = t->cam.q_fz1 != 0 ? snprintf(buf, n, "Q_FZ1 %g", t->cam.q_fz1)
+                              : snprintf(buf, n, "VERTICAL_STIFFNESS %g N/m", t->cam.c_z);
+    if (k >= 0 && (size_t)k < n && with_q2 && t->cam.q_fz2 != 0)
+        k += snprintf(buf + k, n - (size_t)k, " and Q_FZ2");
+    if (k >= 0 && (size_t)k < n && f != 1)
+        snprintf(buf + k, n - (size_t)k, " at PFZ1's pressure factor %g", f);
+    return buf;
+}
+
+/* Whether the law has a Q_FZ1 (the file's, or Q_FZ2 < (VERTICAL_STIFFNESS*R0/FNOMIN)^2/4) and a
+ * positive pressure factor: a property of the cam with its tire's R0 and pressures, checked
+ * where the cam meets a load (the tire check sees the cam keys alone, and other models combine
+ * them with another tire's R0). */
 static int cam_law_check(const tirenv_tire *t, tirenv_diag *diag)
 {
-    if (t->cam.q_fz2 == 0)
+    const double f = tirenv_cam_pressure_factor(t->cam.pfz1, t->ring.p, t->ring.p_nom);
+    if (!(f > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "PFZ1",
+                            "%g at INFLPRES %g Pa, NOMPRES %g Pa gives the vertical law a "
+                            "factor 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES = %g: positive "
+                            "expected", t->cam.pfz1, t->ring.p, t->ring.p_nom, f);
+    if (t->cam.q_fz2 == 0 || t->cam.q_fz1 != 0)
         return TIRENV_OK;
     const double k = t->cam.c_z * t->springs.R0 / t->cam.fnomin;
     if (k * k - 4 * t->cam.q_fz2 > 0)
@@ -130,29 +208,23 @@ static int cam_law_check(const tirenv_tire *t, tirenv_diag *diag)
 /* The load (N) at deflection rho (m). */
 static double cam_load_at(const tirenv_tire *t, double rho)
 {
-    if (t->cam.q_fz2 == 0)
-        return t->cam.c_z * rho;
-    const double s = rho / t->springs.R0;
-    return t->cam.fnomin * (cam_q_fz1(t) * s + t->cam.q_fz2 * s * s);
+    const tirenv_cam_vertical v = cam_vertical(t);
+    return tirenv_cam_vertical_load(&v, rho);
 }
 
 /* The deflection (m) at a load (N): the rising root, in the form without cancellation; NAN
  * beyond the largest load a law with Q_FZ2 < 0 carries. */
 static double cam_deflection_at(const tirenv_tire *t, double load)
 {
-    if (t->cam.q_fz2 == 0)
-        return load / t->cam.c_z;
-    return tirenv_cam_vertical_root(t->springs.R0, cam_q_fz1(t), t->cam.q_fz2,
-                                    load / t->cam.fnomin);
+    const tirenv_cam_vertical v = cam_vertical(t);
+    return tirenv_cam_vertical_deflection(&v, load);
 }
 
 /* The tangent stiffness dF_z/drho (N/m) at deflection rho (m). */
 static double cam_stiffness_at(const tirenv_tire *t, double rho)
 {
-    if (t->cam.q_fz2 == 0)
-        return t->cam.c_z;
-    return t->cam.fnomin / t->springs.R0 *
-           (cam_q_fz1(t) + 2 * t->cam.q_fz2 * rho / t->springs.R0);
+    const tirenv_cam_vertical v = cam_vertical(t);
+    return tirenv_cam_vertical_stiffness(&v, rho);
 }
 
 /* The cam's valid range (docs/models.md section 7.3), as the largest relative deflection
@@ -257,17 +329,17 @@ static int out_of_range(const tirenv_tire *t, const cam_range *r, double load, d
                             "%g m is beyond the cam model's valid range, up to %.4g m (load "
                             "%.6g N, deflection %.4g m), %s", l_c, 2 * a, cam_load_at(t, rho),
                             rho, r->why);
+    char keys[128];
     return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
-                        "%g N (deflection %g m by VERTICAL_STIFFNESS %g N/m%s) is beyond the "
-                        "cam model's valid range, up to %.6g N (deflection %.4g m, contact "
-                        "length %.4g m), %s", load, cam_deflection_at(t, load), t->cam.c_z,
-                        t->cam.q_fz2 != 0 ? " and Q_FZ2" : "", cam_load_at(t, rho), rho,
-                        2 * a, r->why);
+                        "%g N (deflection %g m by %s) is beyond the cam model's valid range, "
+                        "up to %.6g N (deflection %.4g m, contact length %.4g m), %s", load,
+                        cam_deflection_at(t, load), cam_law_keys(t, 1, keys, sizeof keys),
+                        cam_load_at(t, rho), rho, 2 * a, r->why);
 }
 
-/* The static deflection rho of the vertical law (G / VERTICAL_STIFFNESS without Q_FZ2) and
- * MF-Tyre's contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)), within the valid
- * range. */
+/* The static deflection rho of the vertical law (section 7.3; G / VERTICAL_STIFFNESS without
+ * Q_FZ1, Q_FZ2 and PFZ1) and MF-Tyre's contact half length
+ * a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0)), within the valid range. */
 static int cam_patch(const tirenv_tire *t, const cam_range *range, double load, double *rho,
                      double *a, tirenv_diag *diag)
 {
@@ -276,18 +348,20 @@ static int cam_patch(const tirenv_tire *t, const cam_range *range, double load, 
     if (status)
         return status;
     *rho = cam_deflection_at(t, load);
+    char keys[128];
     if (isnan(*rho)) {
         const double q1 = cam_q_fz1(t);
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "load",
-                            "%g N is more than the vertical law of VERTICAL_STIFFNESS %g N/m, "
-                            "Q_FZ2 %g carries, at most %.6g N", load, t->cam.c_z, t->cam.q_fz2,
-                            t->cam.fnomin * q1 * q1 / (-4 * t->cam.q_fz2));
+                            "%g N is more than the vertical law of %s, Q_FZ2 %g carries, at "
+                            "most %.6g N", load, cam_law_keys(t, 0, keys, sizeof keys),
+                            t->cam.q_fz2,
+                            tirenv_cam_pressure_factor(t->cam.pfz1, t->ring.p, t->ring.p_nom) *
+                                t->cam.fnomin * q1 * q1 / (-4 * t->cam.q_fz2));
     }
     if (!(*rho < R0))
         return tirenv_error(diag, TIRENV_ENOBRACKET, "", 0, "load",
-                            "%g N deflects the tire by %g m (VERTICAL_STIFFNESS %g N/m%s), "
-                            "beyond its free radius %g m", load, *rho, t->cam.c_z,
-                            t->cam.q_fz2 != 0 ? " and Q_FZ2" : "", R0);
+                            "%g N deflects the tire by %g m (%s), beyond its free radius %g m",
+                            load, *rho, cam_law_keys(t, 1, keys, sizeof keys), R0);
     if (!(*rho <= range->y_max * R0))
         return out_of_range(t, range, load, 0, diag);
     const double r = *rho / R0, y = sqrt(r);
@@ -311,7 +385,7 @@ static int cam_flat(void *state, double load, tirenv_flat *out, tirenv_diag *dia
 /* The contact law inverted in closed form: with y = sqrt(rho/R0) and A = l_c/(2 R0) = a/R0,
  * Q_RA2 y^2 + Q_RA1 y = A, whose root on the rising branch is y = 2A/(Q_RA1 + sqrt(Q_RA1^2 +
  * 4 Q_RA2 A)) (the form without cancellation; it holds for Q_RA2 = 0 and Q_RA2 < 0 too). The
- * load follows as VERTICAL_STIFFNESS*R0*y^2. */
+ * load follows by the vertical law at rho = R0*y^2. */
 static int cam_load_for_contact_length(void *state, double l_c, double *load,
                                        tirenv_diag *diag)
 {

@@ -39,11 +39,18 @@ static int identify_vertical(tirenv_tire *t, size_t n, const tirenv_flat_target 
                              tirenv_diag *diag)
 {
     const double R0 = t->springs.R0, F0 = t->cam.fnomin;
+    /* PFZ1's pressure factor f scales the whole law (section 7.3): the keys are fitted to the
+     * loads over f, and Q_FZ1 is left to VERTICAL_STIFFNESS (0), which the fit sets. */
+    const double f = tirenv_cam_pressure_factor(t->cam.pfz1, t->ring.p, t->ring.p_nom);
+    if (!(f > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "PFZ1",
+                            "the vertical law's pressure factor is %g: positive expected", f);
+    t->cam.q_fz1 = 0;
     if (!(F0 > 0)) {
         double mean = 0;
         for (size_t i = 0; i < n; i++)
             mean += log(tg[i].load / tg[i].deflection) / (double)n;
-        t->cam.c_z = exp(mean);
+        t->cam.c_z = exp(mean) / f;
         t->cam.q_fz2 = 0;
         return TIRENV_OK;
     }
@@ -53,7 +60,8 @@ static int identify_vertical(tirenv_tire *t, size_t n, const tirenv_flat_target 
         G[i] = tg[i].load;
     }
     double q1, q2;
-    if (tirenv_cam_fit_vertical_law(R0, F0, n, rho, G, &q1, &q2) || !(q1 * q1 + 4 * q2 > 0))
+    if (tirenv_cam_fit_vertical_law(R0, f * F0, n, rho, G, &q1, &q2) ||
+        !(q1 * q1 + 4 * q2 > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "Q_FZ2",
                             "the loads do not separate the vertical law's two terms (give "
                             "loads further apart)");

@@ -1,6 +1,8 @@
 /* The .tir reader, --set and writer, and the all-or-nothing output file.
  * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
+#include "tirenv/cam.h"
+#include "tirenv/model.h"
 #include "tirenv/outfile.h"
 #include "tirenv/tir.h"
 
@@ -54,6 +56,8 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->cam.c_z, b->cam.c_z);
     assert_bits_equal(a->cam.fnomin, b->cam.fnomin);
     assert_bits_equal(a->cam.q_fz2, b->cam.q_fz2);
+    assert_bits_equal(a->cam.q_fz1, b->cam.q_fz1);
+    assert_bits_equal(a->cam.pfz1, b->cam.pfz1);
     assert_bits_equal(a->cam.q_ra1, b->cam.q_ra1);
     assert_bits_equal(a->cam.q_ra2, b->cam.q_ra2);
     assert_bits_equal(a->cam.shift, b->cam.shift);
@@ -74,7 +78,8 @@ static tirenv_tire entropic_tire(void)
                  .p_nom = 151374.9},
         .eq = {.method = TIRENV_EQ_BRENT, .eps_F = 3.7e-7, .eps_z = 2.9e-11, .max_iter = 73,
                .secant_dz = 7.31e-4},
-        .cam = {.c_z = 413927.3, .q_ra1 = 0.7131, .q_ra2 = -0.2417, .shift = 0.7913,
+        .cam = {.c_z = 413927.3, .fnomin = 4137.5, .q_fz2 = 13.71, .q_fz1 = 11.37,
+                .pfz1 = 0.613, .q_ra1 = 0.7131, .q_ra2 = -0.2417, .shift = 0.7913,
                 .length = 1.3171, .height = 0.8837, .order = 1.8131},
         .width = 0.3917,
     };
@@ -207,7 +212,7 @@ static const read_error_case read_errors[] = {
     {"", TIRENV_EPARSE, 0, 0, "", "the empty file sets none of the keys tirenv reads"},
     {"$ nothing but comments\n\n! and more\n", TIRENV_EPARSE, 3, 0, "",
      "sets none of the keys"},
-    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[VERTICAL]\nQ_FZ1 = 12.5\n", TIRENV_EPARSE, 4, 0,
+    {"[MDI_HEADER]\nFILE_TYPE = 'tir'\n[VERTICAL]\nQ_V2 = 0.04\n", TIRENV_EPARSE, 4, 0,
      "", "sets none of the keys"},
     /* a key tirenv reads, in another section tirenv reads: it would be ignored there */
     {"[DIMENSION]\nUNLOADED_RADIUS = 0.7\nRADIAL_STIFFNESS = 1.6e6\n", TIRENV_EPARSE, 3, 1,
@@ -351,7 +356,7 @@ static void test_set_errors(void **state)
         {"ELLIPS_ORDER=1", TIRENV_EINVAL, "ELLIPS_ORDER", "greater than 1"},
         {"VERTICAL_STIFFNESS=0", TIRENV_EINVAL, "VERTICAL_STIFFNESS", "must be positive"},
         {"DIMENSION.Q_RA1=0.7", TIRENV_EPARSE, "Q_RA1", "unknown key in section DIMENSION"},
-        {"Q_FZ1=12.5", TIRENV_EPARSE, "Q_FZ1", "ELLIPS_ORDER"}, /* listed among the keys */
+        {"Q_V2=0.04", TIRENV_EPARSE, "Q_V2", "ELLIPS_ORDER"}, /* listed among the keys */
         {"FNOMIN=-4000", TIRENV_EINVAL, "FNOMIN", "zero (none) or positive"},
         {"Q_FZ2=inf", TIRENV_EPARSE, "Q_FZ2", "finite"},
     };
@@ -703,6 +708,74 @@ static void test_cam_keys_given(void **state)
     assert_int_equal(back.cam.given, TIRENV_CAM_ALL);
 }
 
+/* MF-Tyre's Q_FZ1 and PFZ1 (docs/formats.md section 2, models.md 7.3): read from [VERTICAL],
+ * written back only when not 0 (the default's file has neither line, so the files written
+ * before read and write the same), and a file without them has none, whatever the tire it is
+ * read over. Through the file, the cam's deflection at FNOMIN is the closed form's of the
+ * file's Q_FZ1 (VERTICAL_STIFFNESS, which would give Q_FZ1 9.15, left inconsistent) and of
+ * PFZ1's factor at INFLPRES 1.6 bar on NOMPRES 2 bar: f = 1 + 0.7*(-0.2) = 0.86; to 1e-12
+ * relative (the textbook root against the cam's cancellation-free form). */
+static void test_own_q_fz1_and_pfz1(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    char path[600], text[8192];
+    tirenv_diag d;
+    tirenv_test_write_text(tirenv_test_path(fx, "q.tir", path),
+                           "[DIMENSION]\nUNLOADED_RADIUS = 0.68\n"
+                           "[OPERATING_CONDITIONS]\nINFLPRES = 160000\nNOMPRES = 200000\n"
+                           "[VERTICAL]\nFNOMIN = 17900\nVERTICAL_STIFFNESS = 371000\n"
+                           "Q_FZ1 = 12.3\nQ_FZ2 = 28.7\nPFZ1 = 0.7\n");
+    tirenv_tire t = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_true(t.cam.q_fz1 == 12.3 && t.cam.pfz1 == 0.7);
+    const double R0 = 0.68, F0 = 17900, q1 = 12.3, q2 = 28.7, f = 1 + 0.7 * (-0.2);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
+    assert_non_null(m);
+    tirenv_flat fl;
+    assert_int_equal(tirenv_model_flat(m, F0, &fl, &d), TIRENV_OK);
+    tirenv_model_free(m);
+    const double rho = R0 * (-q1 + sqrt(q1 * q1 + 4 * q2 / f)) / (2 * q2);
+    print_message("cam at FNOMIN: %.4f mm (closed form %.4f mm; VERTICAL_STIFFNESS alone at "
+                  "NOMPRES %.4f mm)\n", 1e3 * fl.deflection, 1e3 * rho,
+                  1e3 * tirenv_cam_vertical_root(R0, tirenv_cam_q_fz1(371000, R0, F0, q2), q2,
+                                                 1));
+    assert_near(fl.deflection, rho, 0, 1e-12);
+    /* Written with both, read back the same tire. */
+    tirenv_test_path(fx, "back.tir", path);
+    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_OK);
+    tirenv_tire back = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
+    assert_tire_identical(&back, &t);
+    /* A file without them, read over that tire, has none. */
+    tirenv_test_write_text(tirenv_test_path(fx, "none.tir", path),
+                           "[VERTICAL]\nVERTICAL_STIFFNESS = 2e5\n");
+    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
+    assert_true(back.cam.q_fz1 == 0 && back.cam.pfz1 == 0);
+    /* The default tire's file has no Q_FZ1 or PFZ1 line; --set gives them. */
+    const tirenv_tire def = tirenv_tire_default();
+    tirenv_test_path(fx, "def.tir", path);
+    assert_int_equal(tirenv_tir_write(path, &def, &d), TIRENV_OK);
+    FILE *fp = fopen(path, "r");
+    assert_non_null(fp);
+    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
+    fclose(fp);
+    assert_null(strstr(text, "Q_FZ1 "));
+    assert_null(strstr(text, "PFZ1 "));
+    tirenv_tire set = def;
+    assert_int_equal(tirenv_tir_set(&set, "Q_FZ1=10.5", &d), TIRENV_OK);
+    assert_int_equal(tirenv_tir_set(&set, "VERTICAL.PFZ1=0.4", &d), TIRENV_OK);
+    assert_true(set.cam.q_fz1 == 10.5 && set.cam.pfz1 == 0.4);
+    assert_int_equal(tirenv_tir_set(&set, "Q_FZ1=-1", &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "Q_FZ1");
+    /* A factor that leaves no load: refused with the file named. */
+    tirenv_test_write_text(tirenv_test_path(fx, "bad.tir", path),
+                           "[OPERATING_CONDITIONS]\nINFLPRES = 100000\nNOMPRES = 200000\n"
+                           "[VERTICAL]\nPFZ1 = 2.5\n");
+    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "PFZ1");
+    assert_non_null(strstr(d.file, "bad.tir"));
+}
+
 /* tirenv_tir_get gives each key as the writer writes it: set, got, set again from the text
  * gives the same tire; unknown keys, a small buffer and a section-qualified key. */
 static void test_get_every_key(void **state)
@@ -752,8 +825,8 @@ static void test_get_every_key(void **state)
     }
     assert_true(copy.springs.c_r == t.springs.c_r && copy.ring.k_t == t.ring.k_t &&
                 copy.eq.max_iter == t.eq.max_iter && copy.eq.method == t.eq.method);
-    assert_int_equal(tirenv_tir_get(&t, "Q_FZ1", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
-    assert_string_equal(d.field, "Q_FZ1");
+    assert_int_equal(tirenv_tir_get(&t, "Q_FZ3", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "Q_FZ3");
     assert_non_null(strstr(d.message, "RADIAL_STIFFNESS"));
     assert_int_equal(tirenv_tir_get(&t, "LENGTH", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
     assert_int_equal(tirenv_tir_get(&t, "RADIAL_STIFFNESS", buf, 5, NULL, &d), TIRENV_EINVAL);
@@ -783,6 +856,7 @@ int main(void)
         T(test_sample_tir_files),
         T(test_units_converted),
         T(test_cam_keys_given),
+        T(test_own_q_fz1_and_pfz1),
         T(test_get_every_key),
     };
 #undef T

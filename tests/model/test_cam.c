@@ -726,6 +726,103 @@ static void test_vertical_law_quadratic(void **state)
     assert_string_equal(diag.field, "Q_FZ2");
 }
 
+/* The cam's vertical law is MF-Tyre 6.1's at standstill (docs/models.md section 7.3), with a
+ * tire's own Q_FZ1 and PFZ1's pressure factor f = 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES:
+ * F_z = f*FNOMIN*(Q_FZ1*s + Q_FZ2*s^2). Q_FZ1 12.3 is 34 % above the 9.15 that the default's
+ * VERTICAL_STIFFNESS gives, f = 1.2075 (1.5 bar on 1.2 bar nominal, PFZ1 0.83); each alone,
+ * both, and each on a linear law (Q_FZ2 0). At FNOMIN and two other loads the deflection is the
+ * closed form's, the textbook root (-Q_FZ1 + sqrt(Q_FZ1^2 + 4 Q_FZ2 g))/(2 Q_FZ2) of
+ * g = F_z/(f*FNOMIN) (g/Q_FZ1 without Q_FZ2), another form than the cam's, whose cancellation
+ * costs a few ulp: 1e-12 relative; the stiffness is the law's tangent and the contact length
+ * MF-Tyre's at that deflection (1e-12), and the load comes back from the contact length. A
+ * Q_FZ1 equal to the one VERTICAL_STIFFNESS gives, and a PFZ1 at INFLPRES = NOMPRES, leave
+ * every bit as it was. Bad keys are refused naming them. */
+static void test_vertical_law_own_q_fz1_and_pressure(void **state)
+{
+    (void)state;
+    const tirenv_tire def = tirenv_tire_default();
+    const double R0 = def.springs.R0, F0 = def.cam.fnomin;
+    const struct { double q_fz1, q_fz2, pfz1; } cases[] = {
+        {12.3, 28.7, 0}, {0, 28.7, 0.83}, {12.3, 28.7, 0.83}, {0, 0, 0.83}, {12.3, 0, 0},
+        {12.3, -7.93, 0.83},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        tirenv_tire t = def;
+        t.cam.q_fz1 = cases[i].q_fz1;
+        t.cam.q_fz2 = cases[i].q_fz2;
+        t.cam.pfz1 = cases[i].pfz1;
+        t.ring.p = 1.5e5;
+        t.ring.p_nom = 1.2e5;
+        tirenv_diag diag;
+        assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_OK);
+        const double f = 1 + cases[i].pfz1 * 0.25, q2 = cases[i].q_fz2;
+        const double q1 = cases[i].q_fz1 != 0 ? cases[i].q_fz1
+                                              : tirenv_cam_q_fz1(t.cam.c_z, R0, F0, q2);
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
+        assert_non_null(m);
+        const double loads[] = {F0, 0.5 * F0, 1.5 * F0};
+        for (size_t j = 0; j < 3; j++) {
+            const double g = loads[j] / (f * F0);
+            const double s = q2 == 0 ? g / q1 : (-q1 + sqrt(q1 * q1 + 4 * q2 * g)) / (2 * q2);
+            tirenv_flat fl;
+            assert_int_equal(tirenv_model_flat(m, loads[j], &fl, &diag), TIRENV_OK);
+            print_message("Q_FZ1 %g, Q_FZ2 %g, PFZ1 %g: %.0f N deflects %.4f mm (closed form "
+                          "%.4f mm)\n", cases[i].q_fz1, q2, cases[i].pfz1, loads[j],
+                          1e3 * fl.deflection, 1e3 * R0 * s);
+            assert_near(fl.deflection, R0 * s, 0, 1e-12);
+            assert_near(fl.stiffness, f * F0 / R0 * (q1 + 2 * q2 * s), 0, 1e-12);
+            assert_near(fl.contact_length,
+                        2 * R0 * (t.cam.q_ra2 * s + t.cam.q_ra1 * sqrt(s)), 0, 1e-12);
+            double G;
+            assert_int_equal(tirenv_model_load_for_contact_length(m, fl.contact_length, &G,
+                                                                  &diag), TIRENV_OK);
+            assert_near(G, loads[j], 0, 1e-12);
+        }
+        tirenv_model_free(m);
+    }
+    /* Neutral values change no bit. */
+    tirenv_tire same = def;
+    same.cam.q_fz1 = tirenv_cam_q_fz1(def.cam.c_z, R0, F0, def.cam.q_fz2);
+    same.cam.pfz1 = 0.83;  /* INFLPRES = NOMPRES */
+    tirenv_model *m0 = tirenv_model_alloc(tirenv_model_cam, &def);
+    tirenv_model *m1 = tirenv_model_alloc(tirenv_model_cam, &same);
+    assert_non_null(m0);
+    assert_non_null(m1);
+    tirenv_diag diag;
+    for (double G = 6000; G < 26000; G += 3917.3) {
+        tirenv_flat a, b;
+        assert_int_equal(tirenv_model_flat(m0, G, &a, &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_flat(m1, G, &b, &diag), TIRENV_OK);
+        assert_memory_equal(&a, &b, sizeof a);
+    }
+    tirenv_model_free(m0);
+    tirenv_model_free(m1);
+    /* Refused: a negative Q_FZ1, a Q_FZ1 without FNOMIN, PFZ1 without NOMPRES, and a pressure
+     * factor that leaves no load (PFZ1 -5 at 1.25 times NOMPRES: f = -0.25). */
+    tirenv_tire t = def;
+    t.cam.q_fz1 = -3;
+    assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "Q_FZ1");
+    t = def;
+    t.cam.q_fz1 = 12.3;
+    t.cam.q_fz2 = 0;
+    t.cam.fnomin = 0;
+    assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "Q_FZ1");
+    t = def;
+    t.cam.pfz1 = 0.5;
+    t.ring.p_nom = 0;
+    assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "PFZ1");
+    t = def;
+    t.cam.pfz1 = -5;
+    t.ring.p = 1.5e5;
+    assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "PFZ1");
+    assert_non_null(strstr(diag.message, "-0.25"));
+    assert_null(tirenv_model_alloc(tirenv_model_cam, &t));  /* it checks the tire too */
+}
+
 /* The two least-squares fits of MF-Tyre's laws (tirenv_cam_fit_vertical_law and
  * tirenv_cam_fit_contact_law, one 2x2 normal-equation solve): on states made by each law from
  * known keys, both keys come back. The states are exact to a few ulp, so the keys' error is
@@ -823,6 +920,7 @@ int main(void)
         cmocka_unit_test(test_double_hump),
         cmocka_unit_test(test_flat_and_contact_length),
         cmocka_unit_test(test_vertical_law_quadratic),
+        cmocka_unit_test(test_vertical_law_own_q_fz1_and_pressure),
         cmocka_unit_test(test_law_fits),
         cmocka_unit_test(test_model_point),
         cmocka_unit_test(test_model_sweep_exact),

@@ -399,6 +399,21 @@ static void test_pressure_dependence(void **state)
                 k[m][i] = o.fnomin / fl.deflection;
                 assert_near(fl.deflection, o.rho_nominal, 0, 1e-7);
             }
+            /* The cam takes the same law (section 7.3), PFZ1's factor included: its deflection
+             * at FNOMIN is the closed form's to round-off (1e-12) and, where the law is the
+             * file's own, the derivation's; where Q_FZ2 was identified on the ring, that law
+             * deflects with the ring to the derivation's 1e-6. */
+            tirenv_flat cam;
+            flat_states(tirenv_model_cam, &t, 1, &o.fnomin, &cam);
+            const double q2c = t.cam.q_fz2, q1c = tirenv_cam_q_fz1(c_z, R0, 4000, q2c);
+            const double closed = q2c == 0 ? 4000 / (factor * c_z)
+                                : R0 * (-q1c + sqrt(q1c * q1c + 4 * q2c / factor)) / (2 * q2c);
+            print_message("p %g Pa: cam %.4f mm at FNOMIN, closed form %.4f mm, derived "
+                          "models %.4f mm\n", p[i], 1e3 * cam.deflection, 1e3 * closed,
+                          1e3 * o.rho_nominal);
+            assert_near(cam.deflection, closed, 0, 1e-12);
+            assert_near(cam.deflection, o.rho_nominal, 0, linear ? 1e-12 : 2e-6);
+            assert_non_null(strstr(o.note, "the vertical law times PFZ1's pressure factor"));
             if (linear) {
                 assert_near(k[0][i], c_z * factor, 0, 1e-6);
                 assert_true(t.cam.q_fz2 == 0);
@@ -418,6 +433,47 @@ static void test_pressure_dependence(void **state)
             assert_near(k[1][1] / k[1][0], want, 0, 1e-6);
         }
     }
+    rmdir(dir);
+}
+
+/* A file's own Q_FZ1 (MF-Tyre 6.1 takes it where not 0, docs/models.md 7.3): with its Q_FZ2
+ * 21.7 the car tire's VERTICAL_STIFFNESS would give Q_FZ1 = 12.6; the file says 19.3. The
+ * derived springs and ring models carry FNOMIN at the deflection of the file's law (to the
+ * derivation's 1e-7), and the cam deflects there too: the closed form's root of
+ * Q_FZ1*s + Q_FZ2*s^2 = 1, to round-off (1e-12). The note says the file's Q_FZ1 is taken. */
+static void test_own_q_fz1(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/tirenv_onetire_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char path[128];
+    snprintf(path, sizeof path, "%s/q.tir", dir);
+    const double R0 = 0.3135, F0 = 4000, q1 = 19.3, q2 = 21.7;
+    tirenv_test_write_text(path, "[DIMENSION]\nUNLOADED_RADIUS = 0.3135\nWIDTH = 0.205\n"
+                                 "ASPECT_RATIO = 0.6\n[VERTICAL]\nFNOMIN = 4000\n"
+                                 "VERTICAL_STIFFNESS = 200000\nQ_FZ1 = 19.3\nQ_FZ2 = 21.7\n");
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    tirenv_tir_origin o;
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING, &o, &d),
+                     TIRENV_OK);
+    print_message("note: %s\n", o.note);
+    assert_non_null(strstr(o.note, "the vertical law takes the file's Q_FZ1 = 19.3, not one "
+                                   "from VERTICAL_STIFFNESS 200 kN/m"));
+    assert_int_equal(o.own & TIRENV_TIR_VERTICAL, TIRENV_TIR_VERTICAL);
+    const double closed = R0 * (-q1 + sqrt(q1 * q1 + 4 * q2)) / (2 * q2);
+    const tirenv_model_type *types[] = {tirenv_model_springs, tirenv_model_ring,
+                                        tirenv_model_cam};
+    for (int m = 0; m < 3; m++) {
+        tirenv_flat fl;
+        flat_states(types[m], &t, 1, &F0, &fl);
+        print_message("%s: %.4f mm at FNOMIN (closed form %.4f mm)\n",
+                      tirenv_model_type_name(types[m]), 1e3 * fl.deflection, 1e3 * closed);
+        assert_near(fl.deflection, closed, 0, types[m] == tirenv_model_cam ? 1e-12 : 1e-7);
+    }
+    assert_near(o.rho_nominal, closed, 0, 1e-12);
+    unlink(path);
     rmdir(dir);
 }
 
@@ -503,6 +559,7 @@ int main(void)
         cmocka_unit_test(test_205_pairs),
         cmocka_unit_test(test_derived_from_mftyre),
         cmocka_unit_test(test_pressure_dependence),
+        cmocka_unit_test(test_own_q_fz1),
         cmocka_unit_test(test_refuses_naming_the_key),
         cmocka_unit_test(test_update_in_place),
     };
