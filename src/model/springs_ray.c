@@ -163,21 +163,6 @@ void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double 
     }
 }
 
-/* tirenv_profile_height(p, x) given k = segment_at(p, x): the same operations, so the same
- * bits, without the second search. */
-static double height_in(const tirenv_profile *p, double x, size_t k)
-{
-    const double *xs = p->x, *zs = p->z;
-    if (x < xs[0])
-        return zs[0];
-    if (x == xs[k] && k >= 1 && xs[k - 1] == xs[k])
-        return fmax(zs[k - 1], zs[k]);
-    if (k == p->n - 1)
-        return zs[k];
-    const double t = (x - xs[k]) / (xs[k + 1] - xs[k]);
-    return zs[k] + (zs[k + 1] - zs[k]) * t;
-}
-
 /* fmax for finite heights, inlined (GCC calls libm's for its NaN rules: 2 % of the springs
  * model over a road). */
 static inline double higher(double a, double b) { return b > a ? b : a; }
@@ -226,7 +211,7 @@ void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho
     const size_t k = tirenv_profile__segment_near(p, k_hint, x);
     o->k = k;
     o->x = x;
-    o->g = height_in(p, x, k);
+    o->g = tirenv_profile__height_in(p, x, k);
     o->first[0] = first_vertex(p, x, k, -1);
     o->first[1] = first_vertex(p, x, k, 1);
     o->z_max[0] = side_max(p, x, o->g, o->first[0], -1, rho_max);
