@@ -177,12 +177,15 @@ static const tirenv_propfile__schema tir_schema = {
 /* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
  * file must not inherit the tractor's 0.38 m. Likewise FNOMIN, Q_FZ2, Q_FZ1 and PFZ1: a file
  * without them has a linear vertical law from its VERTICAL_STIFFNESS and no pressure term,
- * not the law of the tire it was read over. */
+ * not the law of the tire it was read over; and NOMPRES, which only PFZ1's factor reads: a
+ * file with PFZ1 and no NOMPRES is refused (tire check), not given the tractor's 1.2 bar. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
     const double width = tire->width;
     const tirenv_cam_params cam = tire->cam;
+    const double p_nom = tire->ring.p_nom;
     tire->width = 0;
+    tire->ring.p_nom = 0;
     tire->cam.fnomin = 0;
     tire->cam.q_fz2 = 0;
     tire->cam.q_fz1 = 0;
@@ -190,6 +193,7 @@ int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
     const int status = tirenv_propfile__read(&tir_schema, path, tire, diag);
     if (status) {
         tire->width = width;
+        tire->ring.p_nom = p_nom;
         tire->cam.fnomin = cam.fnomin;
         tire->cam.q_fz2 = cam.q_fz2;
         tire->cam.q_fz1 = cam.q_fz1;

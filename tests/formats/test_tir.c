@@ -774,6 +774,17 @@ static void test_own_q_fz1_and_pfz1(void **state)
     assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "PFZ1");
     assert_non_null(strstr(d.file, "bad.tir"));
+    /* PFZ1 without the NOMPRES it refers to: refused, not read against the tire's 1.2 bar it
+     * was read over; and that tire's NOMPRES is still there after the refusal. */
+    tirenv_test_write_text(tirenv_test_path(fx, "nonom.tir", path),
+                           "[OPERATING_CONDITIONS]\nINFLPRES = 160000\n[VERTICAL]\nPFZ1 = 0.7\n");
+    tirenv_tire over = tirenv_tire_default();
+    const double p_nom = over.ring.p_nom;
+    assert_true(p_nom > 0);
+    assert_int_equal(tirenv_tir_read(path, &over, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "PFZ1");
+    assert_non_null(strstr(d.message, "NOMPRES"));
+    assert_true(over.ring.p_nom == p_nom);
 }
 
 /* tirenv_tir_get gives each key as the writer writes it: set, got, set again from the text
