@@ -40,6 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
+#include "core/capacity.h"
 #include "model/ring_impl.h"
 
 enum { BAND_P = 4, TAIL = 4, NB = 6 };
@@ -229,9 +230,7 @@ static int reserve_knots(tirenv_ring_tread *T, size_t m)
 {
     if (T->col && m <= T->cap_k)
         return 0;
-    size_t cap = T->cap_k ? T->cap_k : 16;
-    while (cap < m)
-        cap *= 2;
+    const size_t cap = tirenv_core__capacity(T->cap_k, 16, m);
     const size_t V = 2 * T->M + cap;
     double *col = malloc((2 * T->M + 5 * V) * sizeof *col);
     size_t *kj = malloc(cap * sizeof *kj);
@@ -514,9 +513,7 @@ static int find_knots(tirenv_ring *r)
 {
     tirenv_ring_tread *T = r->tread;
     if (r->n_pts > T->cap_pk) { /* geometric: settles at the largest window's */
-        size_t cap = T->cap_pk ? T->cap_pk : 256;
-        while (cap < r->n_pts)
-            cap *= 2;
+        const size_t cap = tirenv_core__capacity(T->cap_pk, 256, r->n_pts);
         long *pk = realloc(T->pknot, cap * sizeof *pk);
         if (!pk)
             return 1;
@@ -849,9 +846,7 @@ static size_t line_cb(tirenv_ring *r, const double x[], const double p[], const 
 {
     tirenv_ring_tread *T = r->tread;
     if (2 * r->n_pts > T->cap_l) { /* geometric: settles at the largest window's */
-        size_t cap = T->cap_l ? T->cap_l : 512;
-        while (cap < 2 * r->n_pts)
-            cap *= 2;
+        const size_t cap = tirenv_core__capacity(T->cap_l, 512, 2 * r->n_pts);
         double *buf = malloc(3 * cap * sizeof *buf);
         if (!buf)
             return (size_t)-1;

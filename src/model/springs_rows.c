@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/capacity.h"
 #include "profile/profile_impl.h"
 
 /* t closer than this to 0 or 1 is taken as the element itself, and of two rows of a sector
@@ -67,9 +68,7 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
 {
     if (n <= c->cap_rows)
         return TIRENV_OK;
-    size_t cap = c->cap_rows ? c->cap_rows : 64;
-    while (cap < n)
-        cap *= 2;
+    const size_t cap = tirenv_core__capacity(c->cap_rows, 64, n);
     tirenv_springs__cc_row *r = realloc(c->rows, cap * sizeof *c->rows);
     if (!r)
         return TIRENV_ENOMEM;
@@ -121,9 +120,7 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
 {
     if (n <= c->cap_vrows)
         return TIRENV_OK;
-    size_t cap = c->cap_vrows ? c->cap_vrows : 64;
-    while (cap < n)
-        cap *= 2;
+    const size_t cap = tirenv_core__capacity(c->cap_vrows, 64, n);
     void *r = realloc(c->vrows, cap * sizeof *c->vrows);
     if (!r)
         return TIRENV_ENOMEM;
