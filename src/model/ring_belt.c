@@ -156,6 +156,20 @@ const double (*tirenv_ring__belt_end(tirenv_ring_belt *b, size_t n))[4]
     return (const double(*)[4])q;
 }
 
+void tirenv_ring__band_less_ends(tirenv_ring_band *A, const double (*q)[4])
+{
+    const size_t n = A->n;
+    A->a0[0] -= q[0][0];
+    A->a1[0] -= q[0][1];
+    A->a0[1] -= q[1][1];
+    A->a0[n - 2] -= q[2][2];
+    A->a1[n - 2] -= q[2][3];
+    A->a0[n - 1] -= q[3][3];
+    for (size_t i = 0; i < 2; ++i)
+        for (size_t k = 0; k < 2; ++k)
+            A->c[i][k] = -q[i][2 + k];
+}
+
 /* Cholesky by columns. A band row i < m = n-2 has L entries only at i-1 and i-2; the last two
  * rows fill in along their whole length (the corner couples them to rows 0 and 1). The band
  * entries of A are read before they are overwritten: A[i+1][i] when column i is done, and the

@@ -89,15 +89,7 @@ static void assemble_matrix(tirenv_ring *r, const double (*q)[4])
         A->a1[i] = i + 1 < n ? s[1] : 0;
         A->a2[i] = i + 2 < n ? s[2] : 0;
     }
-    A->a0[0] -= q[0][0];
-    A->a1[0] -= q[0][1];
-    A->a0[1] -= q[1][1];
-    A->a0[n - 2] -= q[2][2];
-    A->a1[n - 2] -= q[2][3];
-    A->a0[n - 1] -= q[3][3];
-    for (size_t i = 0; i < 2; ++i)
-        for (size_t k = 0; k < 2; ++k)
-            A->c[i][k] = -q[i][2 + k];
+    tirenv_ring__band_less_ends(A, q);
     for (size_t i = 0; i < n; ++i) {
         if (!(r->state[lo + i] & B_BASIC))
             continue;

@@ -68,6 +68,10 @@ typedef struct {
     double t[3];           /* factor: L[n-2][n-2], L[n-1][n-2], L[n-1][n-1] */
 } tirenv_ring_band;
 
+/* Takes the belt's condensed ends q (tirenv_ring__belt_end, over rows 0, 1, n-2, n-1) off A's
+ * band and sets the corner coupling c from them. */
+void tirenv_ring__band_less_ends(tirenv_ring_band *A, const double (*q)[4]);
+
 /* Factorises A in place; nonzero if A is not positive definite. O(n). */
 int tirenv_ring__band_factor(tirenv_ring_band *A);
 

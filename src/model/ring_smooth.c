@@ -110,15 +110,7 @@ static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
         A->a1[i] = i + 1 < n ? s[1] : 0;
         A->a2[i] = i + 2 < n ? s[2] : 0;
     }
-    A->a0[0] -= q4[0][0];
-    A->a1[0] -= q4[0][1];
-    A->a0[1] -= q4[1][1];
-    A->a0[n - 2] -= q4[2][2];
-    A->a1[n - 2] -= q4[2][3];
-    A->a0[n - 1] -= q4[3][3];
-    for (size_t i = 0; i < 2; ++i)
-        for (size_t k = 0; k < 2; ++k)
-            A->c[i][k] = -q4[i][2 + k];
+    tirenv_ring__band_less_ends(A, q4);
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         if (q->st == 0)
@@ -351,15 +343,7 @@ static int ends_free(tirenv_ring *r, size_t a, size_t b, size_t k0, size_t k1, d
     x[nl - 1] = -s[1] * w[ia] - s[2] * w[ia + 1];
     x[nl] = -s[1] * w[ib] - s[2] * w[ib - 1];
     x[nl + 1] = -s[2] * w[ib];
-    B->a0[0] -= q4[0][0];
-    B->a1[0] -= q4[0][1];
-    B->a0[1] -= q4[1][1];
-    B->a0[nf - 2] -= q4[2][2];
-    B->a1[nf - 2] -= q4[2][3];
-    B->a0[nf - 1] -= q4[3][3];
-    for (size_t i = 0; i < 2; ++i)
-        for (size_t k = 0; k < 2; ++k)
-            B->c[i][k] = -q4[i][2 + k];
+    tirenv_ring__band_less_ends(B, q4);
     if (tirenv_ring__band_factor(B))
         return 0;
     tirenv_ring__band_solve(B, x);
