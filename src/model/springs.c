@@ -66,6 +66,10 @@ struct tirenv_springs {
         size_t *gap;       /* N pairs, as in pins */
         double dfz_dz;     /* N/m */
     } slope;
+    /* The base of the continuous contact's update (tirenv_springs__cc_update): its x (m),
+     * profile and dF_z/dz (N/m). */
+    double upd_x, upd_dfz_dz;
+    unsigned long long upd_serial;
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -389,15 +393,41 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         *contacts = 0;
     size_t f0 = 1, f1 = 0;
     if (any) {
-        if (!(s->ray_a <= a && b <= s->ray_b &&
-              tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho,
-                                        s->memo))) {
+        const int reused = s->ray_a <= a && b <= s->ray_b &&
+                           tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b,
+                                                     s->rho, s->memo);
+        if (!reused) {
             tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
             s->ray_a = a;
             s->ray_b = b;
         }
         for (size_t i = a; i <= b; ++i)
             s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
+        /* Newton's confirming evaluation: the last QP solve's state carried along its
+         * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
+         * the same faces: reused). */
+        if (reused && dfz_dz && s->cc.base_ok && s->upd_x == x &&
+            s->upd_serial == prof->serial &&
+            tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
+                                      s->w, s->p, s->d)) {
+            f0 = s->cc.f0;
+            f1 = s->cc.f1;
+            double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
+            double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
+            size_t n = 0;
+            for (size_t i = f0; i <= f1; ++i) {
+                sum_c += k_r * s->w[i] * s->cos_t[i];
+                sum_s += k_r * s->w[i] * s->sin_t[i];
+                n += s->p[i] > 0;
+            }
+            *fz = sum_c;
+            *fx = -sum_s;
+            if (contacts)
+                *contacts = n;
+            *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
+            return TIRENV_OK;
+        }
+        s->cc.base_ok = 0;
         const int status =
             tirenv_springs__cc_rows(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, diag);
         if (status)
@@ -494,12 +524,20 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                 dd[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
             }
         }
-        tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw);
+        if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw) == TIRENV_OK) {
+            /* the base of the next evaluation's update at this x */
+            memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
+            s->cc.base_z = z;
+            s->cc.base_ok = 1;
+            s->upd_x = x;
+            s->upd_serial = prof->serial;
+        }
     }
     double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
     for (size_t i = f0; i <= f1; ++i)
         sum += k_r * s->dw[i] * s->cos_t[i];
     *dfz_dz = sum;
+    s->upd_dfz_dz = sum;
     return TIRENV_OK;
 }
 

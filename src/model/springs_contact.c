@@ -29,6 +29,10 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         return TIRENV_ENOMEM;
     if (!(c->tri_y = calloc(TIRENV_SPRINGS__SCHUR_MAX * (N + 2), sizeof *c->tri_y)))
         return TIRENV_ENOMEM;
+    if (!(c->base_w = calloc(N + 2, sizeof *c->base_w)) ||
+        !(c->upd_w = calloc(N + 2, sizeof *c->upd_w)) ||
+        !(c->upd_pin = calloc(N, sizeof *c->upd_pin)))
+        return TIRENV_ENOMEM;
     c->f0 = 1;
     c->f1 = 0;
     c->tri_ok = 0;
@@ -68,6 +72,10 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->warm_pin);
     free(c->keys);
     free(c->last_keys);
+    free(c->base_w);
+    free(c->upd_w);
+    free(c->upd_pin);
+    free(c->dlambda);
     memset(c, 0, sizeof *c);
 }
 
@@ -79,6 +87,7 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c)
     c->f1 = 0;
     c->between = 0;
     c->last_ok = 0;
+    c->base_ok = 0;
 }
 
 /* ga w_i + gb w_j - h: the slack at w of a row not working, m (its reaction is 0, so its own
@@ -671,12 +680,29 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
     }
 }
 
-void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                              const double w[], const double dd[], double dw[])
+/* Room for a d(lambda)/dz per row. */
+static int reserve_dl(tirenv_springs__cc *c)
+{
+    if (c->n_rows <= c->cap_dl)
+        return TIRENV_OK;
+    double **arr[] = {&c->dlambda};
+    for (size_t k = 0; k < sizeof arr / sizeof arr[0]; ++k) {
+        double *v = realloc(*arr[k], c->n_rows * sizeof *v);
+        if (!v)
+            return TIRENV_ENOMEM;
+        *arr[k] = v;
+    }
+    c->cap_dl = c->n_rows;
+    return TIRENV_OK;
+}
+
+int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             const double w[], const double dd[], double dw[])
 {
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
     if (f0 > f1)
-        return;
+        return TIRENV_OK;
+    const int room = reserve_dl(c) == TIRENV_OK;
     /* The factors are the working set's from the last eqp (the final set: the last solve
      * was at its minimiser). d/dz of K w = G^T lambda and of G w = h with the set fixed:
      * K dw - G^T dlambda = dG^T lambda, G dw = dh - dG w; a held element's dw is its row's
@@ -706,7 +732,10 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         }
         schur_rhs(c, T, dw, dw, lam);
         tirenv_springs__cc_schur_solve_at(c, T, dw, lam);
-        return;
+        if (room)
+            for (size_t q = 0; q < c->n_schur; ++q)
+                c->dlambda[c->order[c->schur_pos[q]] - N] = lam[q];
+        return room ? TIRENV_OK : TIRENV_ENOMEM;
     }
     double *b = c->rhs;
     for (size_t p = 0; p < c->n_kkt; ++p)
@@ -731,4 +760,9 @@ void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     for (size_t e = f0; e <= f1; ++e)
         if (c->wpos[e] != SIZE_MAX)
             dw[e] = b[c->wpos[e]];
+    if (room) /* mu = -lambda */
+        for (size_t p = 0; p < c->n_kkt; ++p)
+            if (c->order[p] >= N)
+                c->dlambda[c->order[p] - N] = -b[p];
+    return room ? TIRENV_OK : TIRENV_ENOMEM;
 }

@@ -344,6 +344,19 @@ typedef struct {
     /* the last evaluation's solution had a row between elements working: the next one goes
      * to the QP without trying the elements' own rows first (section 4.8, Cost) */
     int between;
+    /* The state of the last QP solve as tirenv_springs__cc_update's base, while base_ok: its
+     * rows (rows, in_w, lambda, layout), its w over [f0 - 1, f1 + 1] (base_w[e + 1], m), the
+     * derivative of each working row's reaction in z with the working set fixed (dlambda,
+     * N/m; written by tirenv_springs__cc_slope for every row, cap_dl of room), and its centre
+     * height (base_z, m). The caller sets base_ok once it has the slope and base_w. */
+    int base_ok;
+    double base_z;
+    double *base_w, *upd_w;  /* N + 2 each; upd_w is the update's scratch, indexed the same */
+    double *dlambda;       /* per row, cap_dl of room */
+    long *upd_pin;         /* per element: the id of its own row at the update's height */
+    size_t cap_dl;
+    /* what the updates did (for tests and the cost's figures): tried, accepted */
+    size_t n_upd_tried, n_upd_ok;
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -392,8 +405,32 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
  * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose own ray row (id < 0, its
- * pin_row) is in the working set. */
-void tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                              const double w[], const double dd[], double dw[]);
+ * pin_row) is in the working set. Also each working row's d(lambda)/dz into c->dlambda;
+ * returns TIRENV_ENOMEM if there was no room for them (dw is written all the same). */
+int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                             const double w[], const double dd[], double dw[]);
+
+/* The vertex rows at (x, z) as tirenv_springs__cc_rows finds them before its hulls, into
+ * c->vrows (c->n_vrows of them, in order of vertex): what the update checks against. It
+ * overwrites the candidates the last layout kept (tirenv_springs__cc_add_dropped), so the
+ * next solve must follow new rows. TIRENV_ENOMEM if there was no room. */
+int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   const tirenv_profile *p, double x, double z, size_t a,
+                                   size_t b, const double d[]);
+
+/* The state at centre height z of the last QP solve's working set, had by its tangent from
+ * the solve's height (springs_update.c, docs/models.md section 4.8, Cost): w = w_0 + (z -
+ * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope), w_e = h on
+ * the held ones, the rows between elements' reactions likewise, the held ones' from K w =
+ * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
+ * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
+ * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
+ * (to 1e-12 R0, as the solve's). Returns 1 with w over [f0 - 1, f1 + 1], pe and obstacle
+ * over [f0, f1] as tirenv_springs__cc_solve gives them; 0 if a condition fails (or the base
+ * is not usable: then solve at z), with nothing written. */
+int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                              const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                              const double d[], const double dw[], double w[], double pe[],
+                              double obstacle[]);
 
 #endif

@@ -562,6 +562,14 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     return TIRENV_OK;
 }
 
+int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   const tirenv_profile *p, double x, double z, size_t a,
+                                   size_t b, const double d[])
+{
+    const size_t N = T->N;
+    return vertex_rows(c, T, p, x, z, a <= b ? a : 0, a <= b ? b : N - 1, d);
+}
+
 int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
                             const double d[], tirenv_diag *diag)

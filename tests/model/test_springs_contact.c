@@ -3,8 +3,9 @@
  * every vertex of seeded random obstacles, the QP's optimality conditions to round-off,
  * every ground vertex outside the tread, narrow features carried, dF_z/dz against finite
  * differences over roads, results that do not depend on the warm start nor on the factors
- * the solver keeps between solves, a lone vertex's hub stiffness the same along the tread and
- * the 1 mm second difference of h over it. */
+ * the solver keeps between solves, the confirming evaluation's update the QP's solution, a
+ * lone vertex's hub stiffness the same along the tread and the 1 mm second difference of h
+ * over it. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -557,6 +558,125 @@ static void test_kept_factor_invisible(void **state)
     free_tire(&S);
 }
 
+/* Newton's confirming evaluation by the last solve's tangent (tirenv_springs__cc_update,
+ * docs/models.md section 4.8, Cost): a state it accepts at z0 + dz is the QP's solution there,
+ * the one a fresh workspace finds by building the rows and solving (the QP is strictly
+ * convex: its KKT point is unique, so a wrong acceptance would show as a different w).
+ * Seeded random obstacles and roads, dz from 1e-10 to 1e-6 m either way; w within 1e-13 R0
+ * (a few hundred units of round-off of w: the update's KKT residuals are held to 1e-14 R0)
+ * and each element's reaction within 1e-9 of the largest (round-off of sums over tens of
+ * elements, as test_springs_solve's kept state allows). Most states taken, and a step past
+ * the update's reach refused. */
+static void test_update_is_the_solution(void **state)
+{
+    (void)state;
+    rng_state = 2718;
+    size_t states = 0, accepted = 0, between = 0;
+    double worst_w = 0, worst_pe = 0;
+    const tirenv_springs_params par = continuous_tire().springs;
+    tire_setup S;
+    setup_tire(&S, &par);
+    const size_t N = S.N;
+    double *dd = calloc(N, sizeof *dd), *dw = calloc(N, sizeof *dw);
+    double *d1 = calloc(N, sizeof *d1), *w_up = calloc(N + 2, sizeof *w_up);
+    double *pe_up = calloc(N, sizeof *pe_up), *ob_up = calloc(N, sizeof *ob_up);
+    double *w_cold = calloc(N + 2, sizeof *w_cold), *pe_cold = calloc(N, sizeof *pe_cold);
+    double *ob_cold = calloc(N, sizeof *ob_cold);
+    assert_true(dd && dw && d1 && w_up && pe_up && ob_up && w_cold && pe_cold && ob_cold);
+    for (int trial = 0; trial < 40; ++trial) {
+        tirenv_profile *p = trial % 4 == 3 ? random_road(1500, 0.001, 2)
+                                           : random_obstacle(trial);
+        tirenv_springs__cc hot;
+        assert_int_equal(tirenv_springs__cc_init(&hot, N), TIRENV_OK);
+        const double x0 = -0.45 + 0.4 * uniform(), sink = 0.02 + 0.06 * uniform();
+        for (int k = 0; k < 60; ++k) {
+            const double x = x0 + 0.0137 * k;
+            const double g = tirenv_profile_max_height(p, x - 0.3, x + 0.3);
+            const double z0 = g + par.R0 - sink;
+            for (size_t i = 0; i < N; ++i) {
+                double dr;
+                const double rho = tirenv_springs__ray(p, x, z0, S.sin_t[i], S.cos_t[i],
+                                                       par.R0, &dr);
+                S.d[i] = rho < par.R0 ? par.R0 - rho : 0;
+                dd[i] = rho < par.R0 ? -dr : 0;
+            }
+            tirenv_diag diag;
+            assert_int_equal(tirenv_springs__cc_rows(&hot, &S.T, p, x, z0, 0, N - 1, S.d,
+                                                     &diag), TIRENV_OK);
+            if (tirenv_springs__cc_solve(&hot, &S.T, x, z0, S.w + 1, S.pe, S.ob, &diag) ||
+                hot.f0 > hot.f1)
+                continue;
+            assert_int_equal(tirenv_springs__cc_slope(&hot, &S.T, S.w + 1, dd, dw), TIRENV_OK);
+            /* the base, as springs.c sets it */
+            memcpy(hot.base_w + hot.f0, S.w + hot.f0, (hot.f1 - hot.f0 + 3) * sizeof *S.w);
+            hot.base_z = z0;
+            hot.base_ok = 1;
+            const double dz = (uniform() < 0.5 ? -1 : 1) * pow(10, -10 + 4 * uniform());
+            const double z1 = z0 + dz;
+            for (size_t i = 0; i < N; ++i) {
+                double dr;
+                const double rho = tirenv_springs__ray(p, x, z1, S.sin_t[i], S.cos_t[i],
+                                                       par.R0, &dr);
+                d1[i] = rho < par.R0 ? par.R0 - rho : 0;
+            }
+            const size_t f0 = hot.f0, f1 = hot.f1;
+            const int took = hot.use_schur && hot.n_warm > 0; /* the states the update is for */
+            ++states;
+            /* past its reach the update does not try */
+            hot.base_z = z0 + 2e-6;
+            assert_int_equal(tirenv_springs__cc_update(&hot, &S.T, p, x, z1, 0, N - 1, d1, dw,
+                                                       w_up + 1, pe_up, ob_up), 0);
+            hot.base_z = z0;
+            if (!tirenv_springs__cc_update(&hot, &S.T, p, x, z1, 0, N - 1, d1, dw, w_up + 1,
+                                           pe_up, ob_up))
+                continue;
+            ++accepted;
+            between += took;
+            tirenv_springs__cc cold;
+            assert_int_equal(tirenv_springs__cc_init(&cold, N), TIRENV_OK);
+            assert_int_equal(tirenv_springs__cc_rows(&cold, &S.T, p, x, z1, 0, N - 1, d1,
+                                                     &diag), TIRENV_OK);
+            assert_int_equal(tirenv_springs__cc_solve(&cold, &S.T, x, z1, w_cold + 1, pe_cold,
+                                                      ob_cold, &diag), TIRENV_OK);
+            /* the same span: no row came or went at its ends */
+            assert_true(cold.f0 == f0 && cold.f1 == f1);
+            double pe_max = 0;
+            for (size_t e = f0; e <= f1; ++e)
+                pe_max = fmax(pe_max, fabs(pe_cold[e]));
+            for (size_t e = f0 - (f0 > 0); e <= f1 + 1 && e < N; ++e) {
+                const double dw_e = fabs(w_up[e + 1] - w_cold[e + 1]);
+                worst_w = fmax(worst_w, dw_e);
+                assert_true(dw_e <= 1e-13 * par.R0);
+            }
+            for (size_t e = f0; e <= f1; ++e) {
+                const double dp = fabs(pe_up[e] - pe_cold[e]);
+                worst_pe = fmax(worst_pe, dp / pe_max);
+                assert_true(dp <= 1e-9 * pe_max);
+                assert_true((pe_up[e] > 0) == (pe_cold[e] > 0) || dp <= 1e-9 * pe_max);
+                assert_true(ob_up[e] == ob_cold[e]);
+            }
+            tirenv_springs__cc_free(&cold);
+        }
+        tirenv_springs__cc_free(&hot);
+        tirenv_profile_free(p);
+    }
+    print_message("%zu states: %zu updates accepted (%zu with a row between elements "
+                  "working); w within %.3g m, reactions within %.3g of the largest\n", states,
+                  accepted, between, worst_w, worst_pe);
+    assert_true(accepted > states / 2);
+    assert_true(between > 100);
+    free(dd);
+    free(dw);
+    free(d1);
+    free(w_up);
+    free(pe_up);
+    free(ob_up);
+    free(w_cold);
+    free(pe_cold);
+    free(ob_cold);
+    free_tire(&S);
+}
+
 /* A lone sharp vertex meets the same hub stiffness anywhere along the tread (section 4.8):
  * the apex of a 0.2 x 0.08 m triangle (nothing else within R0), the centre 0.05 m inside
  * the free tread from it, on element i0's ray (t = 0) and a quarter, half and three quarters
@@ -673,6 +793,7 @@ int main(void)
         cmocka_unit_test(test_derivative_on_roads),
         cmocka_unit_test(test_warm_start_invisible),
         cmocka_unit_test(test_kept_factor_invisible),
+        cmocka_unit_test(test_update_is_the_solution),
         cmocka_unit_test(test_lone_vertex_stiffness),
         cmocka_unit_test(test_second_difference_lone_vertex),
     };

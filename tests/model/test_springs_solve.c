@@ -274,7 +274,11 @@ static void test_fan_matches_single_rays(void **state)
  * elements working the QP is solved without trying the closed form first (docs/models.md
  * section 4.8, Cost), and the two solve the same problem by different arithmetic; 1e-9 of the
  * force (7 uN of 7 kN, against 1e-3 N for 1e-9 m of the tire's stiffness) bounds round-off of
- * solves over tens of elements by orders of magnitude. */
+ * solves over tens of elements by orders of magnitude. A height a hair from the last QP
+ * solve's at the same x is had by that solve's tangent (tirenv_springs__cc_update), its F_z
+ * and F_x to round-off as well, but its dF_z/dz is the base's, the piece's at a height up to
+ * 1e-6 m away: off by |d2F/dz2| |dz|, some 5e-9 of it here (1e-9 m, d2F/dz2 about 4.5 per m
+ * of dF_z/dz); 1e-6 of dF_z/dz bounds that for every dz the update takes. */
 static void kept_state(tirenv_springs_contact contact)
 {
     tirenv_rng *rng = tirenv_rng_alloc(0);
@@ -315,7 +319,7 @@ static void kept_state(tirenv_springs_contact contact)
                                       fabs(fx1 - fx2) / (fabs(fz2) + 1),
                                       fabs(df1 - df2) / (fabs(df2) + 1)};
                 for (int q = 0; q < 3; ++q) {
-                    assert_true(rel[q] <= 1e-9);
+                    assert_true(rel[q] <= (q == 2 ? 1e-6 : 1e-9));
                     worst = fmax(worst, rel[q]);
                 }
                 moved += fz1 != fz2 || fx1 != fx2 || df1 != df2;

@@ -1,0 +1,227 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* The state of the springs model's continuous contact at a new centre height from the last
+ * QP solve at the same x, by the tangent of its working set, accepted only where the QP's
+ * KKT conditions hold there (docs/models.md section 4.8, Cost): Newton's confirming
+ * evaluation, a hair from the one before, without building the rows or solving again. */
+#include "model/springs_impl.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stddef.h>
+#include "profile/profile_impl.h"
+
+/* The farthest (m) from the base's height an update is tried. The tangent errs by the
+ * rows' curvature in z times dz^2 / 2 (a vertex row's h = R0 - |V - C| and its weights;
+ * a ray's row on a fixed face is linear), about dz^2 / |V - C|: below the equality
+ * tolerance (eq_tol) only for dz under about 1e-7 m, so farther (Newton's first step from
+ * the warm start, 1e-5 to 1e-4 m) the check would fail after costing its scan. */
+static const double upd_dz_max = 1e-6;
+
+/* Corrections of the tangent's residual before the update is given up. */
+enum { max_corrections = 2 };
+
+/* The working rows must hold as equalities, and K w = G^T lambda, within these (relative to
+ * R0, and to k_max R0 in N): a few hundred units of round-off of h and w (R0 about 0.7 m, an
+ * ulp of it 1.1e-16 m), against the 1e-12 R0 to which the solve's rows hold. A state within
+ * them is the QP's solution to within about 1e-14 R0 in w (K is positive definite and its
+ * working rows independent), so F_z within about the hub's stiffness times 1e-14 R0, some
+ * 1e-8 N at the bench's load, far below the equilibrium's force tolerance (1e-6 N). */
+static const double eq_tol = 1e-14;
+
+static int long_in(const long *v, size_t n, long key)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (v[mid] < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < n && v[lo] == key;
+}
+
+/* The vertex row of vertex id among V[0..n) (ascending by id), or SIZE_MAX. */
+static size_t find_vrow(const tirenv_springs__cc_row V[], size_t n, long id)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (V[mid].id < id)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < n && V[lo].id == id ? lo : SIZE_MAX;
+}
+
+int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                              const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                              const double d[], const double dw[], double w[], double pe[],
+                              double obstacle[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N;
+    const double dz = z - c->base_z;
+    if (!c->base_ok || f0 > f1 || a > b || !(fabs(dz) <= upd_dz_max))
+        return 0;
+    ++c->n_upd_tried;
+    const double R0 = T->R0, tol = 1e-12 * R0, tol_eq = eq_tol * R0;
+    const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
+    /* Every ray that meets the ground, and every vertex row, within the base's span: w
+     * beyond it is the free chains', which no row held at the base. */
+    for (size_t e = a; e < f0 && e <= b; ++e)
+        if (d[e] > 0)
+            return 0;
+    for (size_t e = f1 + 1 > a ? f1 + 1 : a; e <= b; ++e)
+        if (d[e] > 0)
+            return 0;
+    if (tirenv_springs__cc_vertex_rows(c, T, p, x, z, a, b, d))
+        return 0;
+    const tirenv_springs__cc_row *V = c->vrows;
+    const size_t nv = c->n_vrows;
+    if (nv > 0 && (V[0].i < f0 || V[nv - 1].j > f1)) /* in order of vertex, hence of sector */
+        return 0;
+    /* Each element's own row at z: its ray's penetration, or a vertex on its ray standing
+     * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray). */
+    double *ph = c->upd_w + 1, *wn = c->step, *res = c->raise;
+    long *pin = c->upd_pin;
+    const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
+    for (size_t e = f0; e <= f1; ++e) {
+        const int ray = e >= ra && e <= rb && d[e] > 0;
+        ph[e] = ray ? d[e] : 0;
+        pin[e] = -1 - (long)e;
+    }
+    for (size_t k = 0; k < nv; ++k)
+        if (V[k].t == 0 && V[k].h > ph[V[k].i]) {
+            ph[V[k].i] = V[k].h;
+            pin[V[k].i] = V[k].id;
+        }
+    /* w: the held elements on their row (the same row as the base's), the free ones along
+     * the tangent, each above its own row. wpos marks the held elements of the base's last
+     * KKT system, its final working set. */
+    const size_t *wpos = c->wpos, *pin_row = c->pin_row;
+    const double *base_w = c->base_w + 1;
+    for (size_t e = f0; e <= f1; ++e) {
+        if (wpos[e] == SIZE_MAX) {
+            if (!(ph[e] > 0) || pin[e] != c->rows[pin_row[e]].id)
+                return 0;
+            wn[e] = ph[e];
+        } else {
+            wn[e] = base_w[e] + dz * dw[e];
+        }
+    }
+    /* The working rows between elements at z (all of them on the Schur path, which the
+     * corrections below need): the same vertex in the same sector, its weights at its new t,
+     * its reaction along the tangent. */
+    if (!c->use_schur)
+        return 0;
+    const size_t n_s = c->n_schur;
+    size_t row_i[TIRENV_SPRINGS__SCHUR_MAX];
+    double ga[TIRENV_SPRINGS__SCHUR_MAX], gb[TIRENV_SPRINGS__SCHUR_MAX];
+    double cmp[TIRENV_SPRINGS__SCHUR_MAX], h[TIRENV_SPRINGS__SCHUR_MAX];
+    double lam[TIRENV_SPRINGS__SCHUR_MAX], q_res[TIRENV_SPRINGS__SCHUR_MAX];
+    for (size_t q = 0; q < n_s; ++q) {
+        const size_t r = c->order[c->schur_pos[q]] - N;
+        const tirenv_springs__cc_row *R = &c->rows[r];
+        const size_t k = R->t > 0 ? find_vrow(V, nv, R->id) : SIZE_MAX;
+        if (k == SIZE_MAX || V[k].t == 0 || V[k].i != R->i)
+            return 0;
+        double da, db;
+        tirenv_springs__cc_weights(T, V[k].t, &ga[q], &gb[q], &da, &db);
+        cmp[q] = T->c0 * fmax(ga[q] + gb[q] - 1, 0);
+        h[q] = V[k].h;
+        row_i[q] = R->i;
+        lam[q] = c->lambda[r] + dz * c->dlambda[r];
+    }
+    /* The KKT equations of the working set at z, K w = G^T lambda on the free elements and
+     * G w + C lambda = h on the rows between elements, hold along the tangent but for the
+     * rows' curvature in z; their residual is corrected with the base's factors (the
+     * system at z differs from the base's only by the rows' weights, a few per cent of S
+     * for dz of 1e-4 m), each correction dividing it by some 50 or more, until it is at
+     * round-off, or the update is given up. */
+    double *x_c = c->w_try;
+    for (size_t it = 0;; ++it) {
+        /* K w, the free chains beyond the span folded into its ends' diagonal as in the
+         * KKT system, less G^T lambda */
+        for (size_t e = f0; e <= f1; ++e)
+            res[e] = T->diag[e] * wn[e] -
+                     k_ir * ((e > f0 ? wn[e - 1] : 0) + (e < f1 ? wn[e + 1] : 0));
+        if (f0 > 0)
+            res[f0] -= k_ir * T->lq[f0 - 1] * wn[f0];
+        if (f1 + 1 < N)
+            res[f1] -= k_ir * T->rq[f1 + 1] * wn[f1];
+        int ok = 1;
+        for (size_t q = 0; q < n_s; ++q) {
+            const size_t i = row_i[q];
+            res[i] -= ga[q] * lam[q];
+            res[i + 1] -= gb[q] * lam[q];
+            q_res[q] = ga[q] * wn[i] + gb[q] * wn[i + 1] + cmp[q] * lam[q] - h[q];
+            ok = ok && fabs(q_res[q]) <= tol_eq;
+        }
+        for (size_t e = f0; ok && e <= f1; ++e)
+            ok = wpos[e] == SIZE_MAX || fabs(res[e]) <= tol_k;
+        if (ok)
+            break;
+        if (it == max_corrections)
+            return 0;
+        for (size_t e = f0; e <= f1; ++e)
+            x_c[e] = wpos[e] == SIZE_MAX ? 0 : -res[e];
+        for (size_t q = 0; q < n_s; ++q)
+            q_res[q] = -q_res[q];
+        tirenv_springs__cc_schur_solve_at(c, T, x_c, q_res);
+        for (size_t e = f0; e <= f1; ++e)
+            if (wpos[e] != SIZE_MAX)
+                wn[e] += x_c[e];
+        for (size_t q = 0; q < n_s; ++q)
+            lam[q] += q_res[q];
+    }
+    /* Each free element above its own row (its ray's, or a vertex's on it). */
+    for (size_t e = f0; e <= f1; ++e)
+        if (wpos[e] != SIZE_MAX && ph[e] > 0 && wn[e] - ph[e] < -tol)
+            return 0;
+    /* Every other vertex row between elements holds: below the chord of its tips less the
+     * bounds of the weights (as the scan drops vertices, with w for the rays' penetrations),
+     * else by its weights. (Those on an element were checked with the pins.) */
+    for (size_t k = 0; k < nv; ++k) {
+        const tirenv_springs__cc_row *Q = &V[k];
+        if (Q->t == 0 || long_in(c->warm_ids, c->n_warm, Q->id))
+            continue; /* a working row: an equality above */
+        const double t = Q->t, wi = wn[Q->i], wj = wn[Q->j];
+        const double chord = (1 - t) * wi + t * wj - fabs(wj - wi) * T->tau_dev;
+        if (chord > 0 && Q->h <= chord * (1 + T->ab_lo * t * (1 - t)))
+            continue;
+        double a_t, b_t, da, db;
+        tirenv_springs__cc_weights(T, t, &a_t, &b_t, &da, &db);
+        if (a_t * wi + b_t * wj - Q->h < -tol)
+            return 0;
+    }
+    /* Every reaction >= 0, by the solve's own rule: the held elements' are their residuals
+     * of K w = G^T lambda. */
+    double l_max = 0, l_min = 0;
+    for (size_t q = 0; q < n_s; ++q) {
+        l_max = fabs(lam[q]) > l_max ? fabs(lam[q]) : l_max;
+        l_min = lam[q] < l_min ? lam[q] : l_min;
+    }
+    for (size_t e = f0; e <= f1; ++e)
+        if (wpos[e] == SIZE_MAX) {
+            const double r = res[e];
+            l_max = fabs(r) > l_max ? fabs(r) : l_max;
+            l_min = r < l_min ? r : l_min;
+        }
+    if (l_min < -1e-12 * l_max)
+        return 0;
+    /* Accepted: the outputs as the solve gives them (pe: each element's net reaction). */
+    for (size_t e = f0; e <= f1; ++e) {
+        w[e] = wn[e];
+        pe[e] = wpos[e] == SIZE_MAX ? res[e] : 0;
+        obstacle[e] = ph[e] > 0 ? ph[e] : 0;
+    }
+    for (size_t q = 0; q < n_s; ++q) {
+        pe[row_i[q]] += ga[q] * lam[q];
+        pe[row_i[q] + 1] += gb[q] * lam[q];
+    }
+    w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
+    w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
+    ++c->n_upd_ok;
+    return 1;
+}
