@@ -140,6 +140,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * for dz of 1e-4 m), each correction dividing it by some 50 or more, until it is at
      * round-off, or the update is given up. */
     double *x_c = c->w_try;
+    /* with the equations: the reactions' least and largest (the held elements' are their
+     * residuals of K w = G^T lambda), and whether each free element is above its own row
+     * (its ray's, or a vertex's on it) */
+    double l_max = 0, l_min = 0;
+    int above = 1;
     for (size_t it = 0;; ++it) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
          * KKT system, less G^T lambda */
@@ -151,15 +156,27 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         if (f1 + 1 < N)
             res[f1] -= k_ir * T->rq[f1 + 1] * wn[f1];
         int ok = 1;
+        l_max = l_min = 0;
         for (size_t q = 0; q < n_s; ++q) {
             const size_t i = row_i[q];
             res[i] -= ga[q] * lam[q];
             res[i + 1] -= gb[q] * lam[q];
             q_res[q] = ga[q] * wn[i] + gb[q] * wn[i + 1] + cmp[q] * lam[q] - h[q];
             ok = ok && fabs(q_res[q]) <= tol_eq;
+            l_max = fabs(lam[q]) > l_max ? fabs(lam[q]) : l_max;
+            l_min = lam[q] < l_min ? lam[q] : l_min;
         }
-        for (size_t e = f0; ok && e <= f1; ++e)
-            ok = wpos[e] == SIZE_MAX || fabs(res[e]) <= tol_k;
+        above = 1;
+        for (size_t e = f0; e <= f1; ++e) {
+            const double r = res[e];
+            if (wpos[e] == SIZE_MAX) {
+                l_max = fabs(r) > l_max ? fabs(r) : l_max;
+                l_min = r < l_min ? r : l_min;
+            } else {
+                ok = ok && fabs(r) <= tol_k;
+                above = above && !(ph[e] > 0 && wn[e] - ph[e] < -tol);
+            }
+        }
         if (ok)
             break;
         if (it == max_corrections)
@@ -175,10 +192,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         for (size_t q = 0; q < n_s; ++q)
             lam[q] += q_res[q];
     }
-    /* Each free element above its own row (its ray's, or a vertex's on it). */
-    for (size_t e = f0; e <= f1; ++e)
-        if (wpos[e] != SIZE_MAX && ph[e] > 0 && wn[e] - ph[e] < -tol)
-            return 0;
+    /* Every reaction >= 0, by the solve's own rule; every free element above its row. */
+    if (!above || l_min < -1e-12 * l_max)
+        return 0;
     /* Every other vertex row between elements holds: below the chord of its tips less the
      * bounds of the weights (as the scan drops vertices, with w for the rays' penetrations),
      * else by its weights. (Those on an element were checked with the pins.) */
@@ -195,21 +211,6 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         if (a_t * wi + b_t * wj - Q->h < -tol)
             return 0;
     }
-    /* Every reaction >= 0, by the solve's own rule: the held elements' are their residuals
-     * of K w = G^T lambda. */
-    double l_max = 0, l_min = 0;
-    for (size_t q = 0; q < n_s; ++q) {
-        l_max = fabs(lam[q]) > l_max ? fabs(lam[q]) : l_max;
-        l_min = lam[q] < l_min ? lam[q] : l_min;
-    }
-    for (size_t e = f0; e <= f1; ++e)
-        if (wpos[e] == SIZE_MAX) {
-            const double r = res[e];
-            l_max = fabs(r) > l_max ? fabs(r) : l_max;
-            l_min = r < l_min ? r : l_min;
-        }
-    if (l_min < -1e-12 * l_max)
-        return 0;
     /* Accepted: the outputs as the solve gives them (pe: each element's net reaction). */
     for (size_t e = f0; e <= f1; ++e) {
         w[e] = wn[e];
