@@ -389,9 +389,11 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         *contacts = 0;
     size_t f0 = 1, f1 = 0;
     if (any) {
-        if (!(s->ray_a <= a && b <= s->ray_b &&
-              tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b, s->rho,
-                                        s->memo))) {
+        /* Each ray's memo is a proof of its own (springs_ray.c): the rays whose memos fail
+         * at this z are walked again alone. */
+        if (s->ray_a <= a && b <= s->ray_b) {
+            tirenv_springs__fan_update(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+        } else {
             tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
             s->ray_a = a;
             s->ray_b = b;
