@@ -407,10 +407,25 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
         const int dir = side ? 1 : -1;
         const long first_j = o->first[side];
         const size_t count = side ? b - i0 : i0 - a;
-        /* the inner neighbour's end at z, its running minimum's lower bound, its drop, reach */
+        /* the rays whose memos hold, outward to the first that fails */
+        size_t step = 1;
+        while (step <= count && reuse_ray(p, o, r, z, f0, side ? i0 + step : i0 - step, rho,
+                                          &memo[side ? i0 + step : i0 - step]))
+            ++step;
+        if (step > count)
+            continue;
+        /* from there on as the fan, each ray resuming where its inner neighbour ends; the
+         * running minimum from a kept memo is bounded below (above) */
         long j = first_j;
         double f_min = f0, drop_prev = INFINITY, reach_prev = 0;
-        for (size_t step = 1; step <= count; ++step) {
+        if (step > 1) {
+            const size_t in = side ? i0 + step - 1 : i0 - step + 1;
+            j = memo[in].j;
+            f_min = z - memo[in].z_low;
+            drop_prev = r->drop[in];
+            reach_prev = r->reach[in];
+        }
+        for (int walked = 0; step <= count; ++step) {
             const size_t i = side ? i0 + step : i0 - step;
             const double drop = r->drop[i], reach = r->reach[i];
             if (!(drop <= drop_prev && reach >= reach_prev)) {
@@ -420,11 +435,12 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
             drop_prev = drop;
             reach_prev = reach;
             tirenv_springs__ray_memo *const m = &memo[i];
-            if (reuse_ray(p, o, r, z, f0, i, rho, m)) {
+            if (walked && reuse_ray(p, o, r, z, f0, i, rho, m)) {
                 j = m->j;
                 f_min = z - m->z_low; /* f_min(z) >= this (above) */
                 continue;
             }
+            walked = 1;
             long j_end;
             int kind;
             rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach,
