@@ -393,14 +393,18 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         *contacts = 0;
     size_t f0 = 1, f1 = 0;
     if (any) {
-        const int reused = s->ray_a <= a && b <= s->ray_b &&
-                           tirenv_springs__fan_reuse(prof, &s->origin, &s->rays, z, a, b,
-                                                     s->rho, s->memo);
-        if (!reused) {
+        /* Each ray's memo is a proof of its own (springs_ray.c): the rays whose memos fail
+         * at this z are walked again alone. The update below needs every ray on its face. */
+        size_t walked = b - a + 1;
+        if (s->ray_a <= a && b <= s->ray_b) {
+            walked = tirenv_springs__fan_update(prof, &s->origin, &s->rays, z, a, b, s->rho,
+                                                s->memo);
+        } else {
             tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
             s->ray_a = a;
             s->ray_b = b;
         }
+        const int reused = walked == 0;
         for (size_t i = a; i <= b; ++i)
             s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
         /* Newton's confirming evaluation: the last QP solve's state carried along its

@@ -43,6 +43,9 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
 {
     free(c->rows);
     free(c->vrows);
+    free(c->seen);
+    free(c->seen_sec);
+    free(c->seen_todo);
     free(c->in_w);
     free(c->lambda);
     free(c->order);

@@ -113,6 +113,16 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
                               const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
                               double rho[], const tirenv_springs__ray_memo memo[]);
 
+/* rho[a..b] at a new centre height z from the same origin: each ray whose memo provably
+ * still holds as tirenv_springs__fan_reuse would give it, each other one walked again alone
+ * (from where its inner neighbour ends), its memo made anew; a fresh fan where the centre
+ * is on or below the ground or the straight-down ray's memo fails. Bit for bit
+ * tirenv_springs__fan's rho; returns the number of rays walked again (b - a + 1 for a fresh
+ * fan). The memos must cover [a, b] (from a fan or update of at least that span). */
+size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                  const tirenv_springs__fan_rays *r, double z, size_t a,
+                                  size_t b, double rho[], tirenv_springs__ray_memo memo[]);
+
 /* A feature of the ground narrower than the ray spacing (springs_feature.c). */
 typedef struct {
     double X, Z;      /* its highest point, m */
@@ -231,6 +241,9 @@ typedef struct {
      * (m/N), which a row between elements adds (a + b - 1) times of its own
      * (tirenv_springs__cc_weights). */
     double gamma, sin_gamma, cot_gamma, ab_lo, tau_dev, c0;
+    /* The largest 1 / sin(theta_(i+1) - theta_i) over neighbouring elements (with a margin
+     * of 1e-9 of itself): a bound on dt/dpsi within a sector (springs_rows.c). */
+    double inv_sin_step;
 } tirenv_springs__cc_tire;
 
 /* Fills the shape fields of T (gamma, sin_gamma, cot_gamma, ab_lo, tau_dev, c0) from its
@@ -275,6 +288,22 @@ typedef struct {
     size_t ij;
 } tirenv_springs__cc_key;
 
+/* What the vertex scan (springs_rows.c) proved of one ground vertex at the first height z_r
+ * it ran at for an x: that its row between the elements of sector i was dropped (at or below
+ * the chord of the rays' penetrations times the tread's bow), with what it takes to prove
+ * that again at another height of the same x without computing the row (docs/models.md
+ * section 4.8, Cost). */
+typedef struct {
+    double margin;  /* the chord times the bow less h at z_r, less an allowance, m */
+    double chord;   /* the chord at the vertex's t at z_r, m */
+    double c;       /* dz_r / R0 (rounded down): h falls at least this fast as z rises */
+    double dt_dz;   /* a bound on |dt/dz| while |z - z_r| <= dz_max, 1/m */
+    double m_t;     /* how far t may move: min(t, 1 - t) - 2 t_snap at z_r; <= 0: nothing
+                     * proven */
+    double dz_max;  /* how far z may move from z_r while rho stays within 1 %, m */
+    size_t i;       /* the sector */
+} tirenv_springs__cc_seen;
+
 /* The most working rows between elements solved through their Schur complement. */
 #define TIRENV_SPRINGS__SCHUR_MAX 4
 
@@ -289,6 +318,18 @@ typedef struct {
      * n_vrows of room for cap_vrows */
     tirenv_springs__cc_row *vrows;
     size_t n_vrows, cap_vrows;
+    /* The vertex scan's proofs at the last x, seen_x, on the profile of serial seen_serial,
+     * made at the first height seen_z it ran at there, one for each vertex seen_j0 ..
+     * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
+     * per sector (6 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
+     * and room for what a later height needs of them (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
+     * vertices the last scan skipped by the proofs (what the tests count) */
+    tirenv_springs__cc_seen *seen;
+    unsigned long long seen_serial;
+    double seen_x, seen_z;
+    size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped;
+    double *seen_sec;
+    size_t *seen_todo;
     unsigned char *in_w;   /* per row: in the working set */
     double *lambda;        /* per row: reaction, N */
     size_t *order;         /* KKT unknowns: element (< N) or N + row */

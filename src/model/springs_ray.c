@@ -304,71 +304,154 @@ void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs_
  * positive if z - z' < f_min - u (|z - t| + |z' - t|) - 2 u f_min (u the unit roundoff, the
  * last term the rounding of z_low itself); 8 DBL_EPSILON (|z| + |g| + rho_max + max |Z|) =
  * 16 u (...) exceeds that, since f_min <= f0 = z - g. */
+/* Ray i's rho at z from its memo, where the memo provably holds (see above): 1, or 0 with
+ * nothing written. f0 = z - o->g > 0. */
+static inline int reuse_ray(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                            const tirenv_springs__fan_rays *r, double z, double f0, size_t i,
+                            double rho[], const tirenv_springs__ray_memo *m)
+{
+    const double *X = p->x, *Z = p->z;
+    const long n = (long)p->n;
+    const double x = o->x, rho_max = r->rho_max;
+    const size_t i0 = r->i0;
+    if (!(z > m->z_low))
+        return 0;
+    const int dir = i > i0 ? 1 : -1;
+    const double inv_s = r->inv_s[i], drop = r->drop[i], reach = r->reach[i];
+    const long j = m->j;
+    switch (m->kind) {
+    case RAY_DOWN:
+        rho[i] = f0 <= rho_max ? f0 : INFINITY;
+        return 1;
+    case RAY_HIT:
+    case RAY_WALL: {
+        const double a_j = dir * (X[j] - x);
+        const double f = z - a_j * drop - Z[j];
+        if (f > 0)
+            return 0; /* the crossing moved past j */
+        if (m->kind == RAY_WALL) {
+            rho[i] = a_j <= reach ? a_j * inv_s : INFINITY;
+            return 1;
+        }
+        double a_prev, f_prev;
+        if (j == o->first[i > i0]) {
+            a_prev = 0;
+            f_prev = f0;
+        } else {
+            a_prev = dir * (X[j - dir] - x);
+            f_prev = z - a_prev * drop - Z[j - dir];
+        }
+        const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
+        rho[i] = a_hit > reach ? INFINITY : a_hit * inv_s;
+        return 1;
+    }
+    case RAY_REACH: {
+        const double a_j = dir * (X[j] - x);
+        if (!(z - a_j * drop - Z[j] > 0))
+            return 0; /* the ground beyond reach came up to the ray: walk again */
+        rho[i] = INFINITY;
+        return 1;
+    }
+    case RAY_END: {
+        const double cos_t = r->cos_t[i];
+        if (cos_t <= 0) {
+            rho[i] = INFINITY;
+            return 1;
+        }
+        const double rr = (z - Z[dir > 0 ? n - 1 : 0]) / cos_t;
+        rho[i] = rr > rho_max ? INFINITY : rr;
+        return 1;
+    }
+    default:
+        return 0;
+    }
+}
+
 int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
                               double rho[], const tirenv_springs__ray_memo memo[])
 {
-    const double *X = p->x, *Z = p->z;
-    const long n = (long)p->n;
-    const double f0 = z - o->g, x = o->x, rho_max = r->rho_max;
-    const size_t i0 = r->i0;
+    const double f0 = z - o->g;
     if (!(f0 > 0))
         return 0;
-    for (size_t i = a; i <= b; ++i) {
-        const tirenv_springs__ray_memo *m = &memo[i];
-        if (!(z > m->z_low))
+    for (size_t i = a; i <= b; ++i)
+        if (!reuse_ray(p, o, r, z, f0, i, rho, &memo[i]))
             return 0;
-        const int dir = i > i0 ? 1 : -1;
-        const double inv_s = r->inv_s[i], drop = r->drop[i], reach = r->reach[i];
-        const long j = m->j;
-        switch (m->kind) {
-        case RAY_DOWN:
-            rho[i] = f0 <= rho_max ? f0 : INFINITY;
-            break;
-        case RAY_HIT:
-        case RAY_WALL: {
-            const double a_j = dir * (X[j] - x);
-            const double f = z - a_j * drop - Z[j];
-            if (f > 0)
-                return 0; /* the crossing moved past j */
-            if (m->kind == RAY_WALL) {
-                rho[i] = a_j <= reach ? a_j * inv_s : INFINITY;
-                break;
-            }
-            double a_prev, f_prev;
-            if (j == o->first[i > i0]) {
-                a_prev = 0;
-                f_prev = f0;
-            } else {
-                a_prev = dir * (X[j - dir] - x);
-                f_prev = z - a_prev * drop - Z[j - dir];
-            }
-            const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
-            rho[i] = a_hit > reach ? INFINITY : a_hit * inv_s;
-            break;
+    return 1;
+}
+
+/* Why a ray may be cast again alone. Each memo is a proof about its own ray (its z_low
+ * bounds that ray's f over every point before its end: the fan's running minimum is over the
+ * inner rays' points, where this ray lies higher), so the rays whose memos hold keep them,
+ * and a ray whose memo fails is walked again from where its inner neighbour ends at z (a
+ * fresh fan's resumption: every vertex before that end lies below this ray). The running
+ * minimum it starts from is the neighbour's at z: a memo made at z' with z_low gives
+ * f_min(z') = z' - z_low + tol(z'), and f moves with z one for one, so f_min(z) >=
+ * z - z_low up to rounding far below the allowance tol; that lower bound is what the walk
+ * starts from (its memo's z_low is then at most tol above the neighbour's). The rays cast
+ * again end where a fresh fan's would, and their rho is computed by the same walk: bit for
+ * bit tirenv_springs__ray_at's. */
+size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                  const tirenv_springs__fan_rays *r, double z, size_t a,
+                                  size_t b, double rho[], tirenv_springs__ray_memo memo[])
+{
+    const double f0 = z - o->g, rho_max = r->rho_max;
+    const size_t i0 = r->i0;
+    if (!(f0 > 0) || !reuse_ray(p, o, r, z, f0, i0, rho, &memo[i0])) {
+        tirenv_springs__fan(p, o, r, z, a, b, rho, memo);
+        return b - a + 1;
+    }
+    const double tol = fan_tol(o, z);
+    size_t cast = 0;
+    for (int side = 0; side < 2; ++side) {
+        const int dir = side ? 1 : -1;
+        const long first_j = o->first[side];
+        const size_t count = side ? b - i0 : i0 - a;
+        /* the rays whose memos hold, outward to the first that fails */
+        size_t step = 1;
+        while (step <= count && reuse_ray(p, o, r, z, f0, side ? i0 + step : i0 - step, rho,
+                                          &memo[side ? i0 + step : i0 - step]))
+            ++step;
+        if (step > count)
+            continue;
+        /* from there on as the fan, each ray resuming where its inner neighbour ends; the
+         * running minimum from a kept memo is bounded below (above) */
+        long j = first_j;
+        double f_min = f0, drop_prev = INFINITY, reach_prev = 0;
+        if (step > 1) {
+            const size_t in = side ? i0 + step - 1 : i0 - step + 1;
+            j = memo[in].j;
+            f_min = z - memo[in].z_low;
+            drop_prev = r->drop[in];
+            reach_prev = r->reach[in];
         }
-        case RAY_REACH: {
-            const double a_j = dir * (X[j] - x);
-            if (!(z - a_j * drop - Z[j] > 0))
-                return 0; /* the ground beyond reach came up to the ray: walk again */
-            rho[i] = INFINITY;
-            break;
-        }
-        case RAY_END: {
-            const double cos_t = r->cos_t[i];
-            if (cos_t <= 0) {
-                rho[i] = INFINITY;
-                break;
+        for (int walked = 0; step <= count; ++step) {
+            const size_t i = side ? i0 + step : i0 - step;
+            const double drop = r->drop[i], reach = r->reach[i];
+            if (!(drop <= drop_prev && reach >= reach_prev)) {
+                j = first_j;
+                f_min = f0;
             }
-            const double rr = (z - Z[dir > 0 ? n - 1 : 0]) / cos_t;
-            rho[i] = rr > rho_max ? INFINITY : rr;
-            break;
-        }
-        default:
-            return 0;
+            drop_prev = drop;
+            reach_prev = reach;
+            tirenv_springs__ray_memo *const m = &memo[i];
+            if (walked && reuse_ray(p, o, r, z, f0, i, rho, m)) {
+                j = m->j;
+                f_min = z - m->z_low; /* f_min(z) >= this (above) */
+                continue;
+            }
+            walked = 1;
+            long j_end;
+            int kind;
+            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach,
+                          r->cos_t[i], rho_max, &j_end, &kind, &f_min);
+            *m = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
+                                            .z_low = z - (f_min - tol), .drho = NAN};
+            j = j_end;
+            ++cast;
         }
     }
-    return 1;
+    return cast;
 }
 
 size_t tirenv_springs__fan_pairs(const tirenv_springs__fan_origin *o,

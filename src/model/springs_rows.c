@@ -61,6 +61,12 @@ void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T)
     /* the diagonal of the inverse of the endless chain's K (k_r + 2 k_ir on the diagonal,
      * -k_ir beside it): 1 / sqrt((k_r + 2 k_ir)^2 - 4 k_ir^2) */
     T->c0 = 1 / sqrt(T->k_r * (T->k_r + 4 * T->k_ir));
+    /* sin(theta_(i+1) - theta_i) from the unit vectors the scan uses */
+    double inv_sin = 0;
+    for (size_t i = 0; i + 1 < T->N; ++i)
+        inv_sin = fmax(inv_sin, 1 / (T->cos_t[i] * T->sin_t[i + 1] -
+                                     T->sin_t[i] * T->cos_t[i + 1]));
+    T->inv_sin_step = inv_sin * (1 + 1e-9);
 }
 
 /* Room for n rows (and their KKT unknowns alongside N elements). */
@@ -133,10 +139,221 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
     return TIRENV_OK;
 }
 
+/* Room for the scan's proofs of n vertices (c->seen, c->seen_todo) and for the sectors of N
+ * elements. */
+static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
+{
+    if (!c->seen_sec && !(c->seen_sec = malloc(6 * N * sizeof *c->seen_sec)))
+        return TIRENV_ENOMEM;
+    if (n <= c->cap_seen)
+        return TIRENV_OK;
+    const size_t cap = tirenv_core__capacity(c->cap_seen, 64, n);
+    void *e = realloc(c->seen, cap * sizeof *c->seen);
+    if (!e)
+        return TIRENV_ENOMEM;
+    c->seen = e;
+    size_t *todo = realloc(c->seen_todo, cap * sizeof *todo);
+    if (!todo)
+        return TIRENV_ENOMEM;
+    c->seen_todo = todo;
+    c->cap_seen = cap;
+    return TIRENV_OK;
+}
+
+/* How far the centre may move from the height of a vertex's proof, as a fraction of the
+ * vertex's depth dz_r below it: within it rho stays above (1 - seen_reach) rho_r. */
+static const double seen_reach = 0.01;
+
+/* Ray e's penetration as the vertex rows take it: 0 outside [a, b] or without a crossing. */
+static inline double pen(size_t e, size_t a, size_t b, const double d[])
+{
+    return e >= a && e <= b && d[e] > 0 ? d[e] : 0;
+}
+
+/* The allowance of the proofs at centre height z: far above the rounding of any quantity
+ * they bound (each a few operations on numbers below |z| + R0 + max |Z|). */
+static double seen_tol(const tirenv_profile *p, double R0, double z)
+{
+    return 1024 * DBL_EPSILON * (fabs(z) + R0 + p->z_abs_max);
+}
+
+/* At a later height z of the x the proofs were made at (vertex_rows' comment): the vertices
+ * j0 .. j_end - 1 (within those proven) with no proof or one that does not hold at z,
+ * ascending, into todo; returns their number, *skipped the others'. */
+static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                        const tirenv_profile *p, double z, size_t a, size_t b,
+                        const double d[], size_t j0, size_t j_end, size_t todo[],
+                        size_t *skipped)
+{
+    const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
+    const double tol = seen_tol(p, T->R0, z), B = 1 + 0.25 * ab_lo; /* the bow's largest */
+    const size_t N = T->N, s0 = c->seen_j0, lo = c->seen_lo;
+    const double Delta = z - c->seen_z, aD = fabs(Delta) + tol;
+    /* Per sector, from the chords at z_r (sA, sD) and at z: mu, the least change of the
+     * chord over t in [0, 1]; what that takes from the margin (times the bow, 1 to B); what
+     * the margin loses a unit of t's move (the chord's slope |P_r - P_l| times the bow, the
+     * bow's slope ab_lo times the chord); and |P_r - P_l| at z. */
+    const double *const sA = c->seen_sec, *const sD = sA + N;
+    double *const Lam = c->seen_sec + 2 * N, *const Kq = Lam + N, *const Mu = Kq + N;
+    double *const aDz = Mu + N;
+    for (size_t q = lo; q <= c->seen_hi; ++q) {
+        const double Pl = pen(q, a, b, d), Pr = pen(q + 1, a, b, d);
+        const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
+        const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
+        const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
+        Lam[q] = mu < 0 ? -mu * B : -mu;
+        Kq[q] = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
+        Mu[q] = mu - tol;
+        aDz[q] = fabs(D);
+    }
+    size_t n = 0;
+    for (size_t k = j0 - s0; k < j_end - s0; ++k) {
+        const tirenv_springs__cc_seen *const e = c->seen + k;
+        const double dt = aD * e->dt_dz;
+        int ok = 0;
+        if (dt < e->m_t && aD <= e->dz_max) { /* m_t 0: no proof */
+            const size_t q = e->i;
+            const double h_up = (Delta > 0 ? -Delta * e->c : -Delta) + tol;
+            ok = e->chord + Mu[q] - aDz[q] * dt >= 0 &&
+                 e->margin >= h_up + Lam[q] + dt * Kq[q];
+        }
+        if (!ok)
+            todo[n++] = s0 + k;
+    }
+    *skipped = j_end - j0 - n;
+    return n;
+}
+
+/* What the scan of the vertex rows needs at (x, z): the profile, the tire, the rays'
+ * penetrations d over [a, b], the proofs' allowances (vertex_rows). */
+typedef struct {
+    const double *X, *Z, *st, *ct, *d;
+    double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4, inv_R0, dt_dz_of;
+    size_t N, a, b;
+} scan_ctx;
+
+/* Along the scan: the last vertex's sector (where the next one's walk starts), sector ci's
+ * penetrations and slack, the sectors lo .. hi whose chords were taken, the next row. */
+typedef struct {
+    size_t i, ci, lo, hi;
+    double P_l, P_r, slack_tau;
+    tirenv_springs__cc_row *out;
+} scan_state;
+
+/* Vertex j's row at (x, z), if it has one, at sc->out; where it is dropped between two
+ * elements and proof is not NULL, the proof (vertex_rows' comment) in *proof; sc along. */
+static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
+                               tirenv_springs__cc_seen *proof)
+{
+    const double dx = C->X[j] - C->x, dz = C->z - C->Z[j];
+    if (!(dz > 0))
+        return; /* at or above the centre's height: outside the lower half */
+    const double rr = dx * dx + dz * dz;
+    const double *const st = C->st, *const ct = C->ct;
+    size_t i = sc->i;
+    if (!(rr < C->R0sq))
+        return;
+    /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. The walk keeps the
+     * sigmas it computes: sigma_(i+1) < 0 ends the forward walk, and s_n = -sigma_(i+1)
+     * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
+     * products; rounding to nearest is symmetric), never 0. */
+    double s_n = 0; /* 0: not known */
+    while (i + 1 < C->N) {
+        const double u = dx * ct[i + 1] - dz * st[i + 1];
+        if (!(u >= 0)) {
+            s_n = -u;
+            break;
+        }
+        ++i;
+    }
+    double s_i = dx * ct[i] - dz * st[i];
+    while (i > 0 && s_i < 0) {
+        --i;
+        s_i = dx * ct[i] - dz * st[i];
+        s_n = 0;
+    }
+    sc->i = i;
+    if (s_i < 0)
+        return; /* behind the first element */
+    const double rho = sqrt(rr), h = C->R0 - rho;
+    if (!(h > 0))
+        return;
+    /* A row on the element alone (t snapped, or exactly on its ray) keeps t = 0 while
+     * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
+     * weights of a row between elements come later, for the rows that can bind
+     * (build_rows); dga_dz holds dt/dz until then. */
+    size_t r_i = i, r_j = i;
+    double r_t = 0, r_dt = 0;
+    if (s_i > 0) {
+        if (i + 1 >= C->N)
+            return; /* beyond the last element's ray */
+        if (s_n == 0)
+            s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
+        const double S = s_i + s_n, t = s_i / S;
+        if (t >= 1 - t_snap) {
+            r_i = r_j = i + 1;
+        } else if (t > t_snap) {
+            /* Below the hull of the rays' own rows (build_rows' test with the rays'
+             * penetrations, which the elements' rows only raise): never binds. */
+            if (sc->ci != i) {
+                sc->ci = i;
+                if (proof) { /* the sectors the proofs may be in: each passes here */
+                    sc->lo = i < sc->lo ? i : sc->lo;
+                    sc->hi = i > sc->hi ? i : sc->hi;
+                }
+                sc->P_l = pen(i, C->a, C->b, C->d);
+                sc->P_r = pen(i + 1, C->a, C->b, C->d);
+                sc->slack_tau = fabs(sc->P_r - sc->P_l) * C->tau_dev;
+            }
+            const double chord = (1 - t) * sc->P_l + t * sc->P_r - sc->slack_tau;
+            const double thr = chord * (1 + C->ab_lo * t * (1 - t));
+            if (!(h > thr)) {
+                if (proof)
+                    *proof = (tirenv_springs__cc_seen){
+                        .margin = thr - h - C->tol4, .chord = chord - C->tol,
+                        .c = dz * C->inv_R0, .dt_dz = fabs(dx) * C->dt_dz_of / rr,
+                        .m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap,
+                        .dz_max = seen_reach * dz, .i = i};
+                return;
+            }
+            r_j = i + 1;
+            r_t = t;
+            /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
+            r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
+        }
+    }
+    *sc->out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
+                                      .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
+                                      .dh_dz = -dz / rho, .id = (long)j};
+}
+
 /* The vertex rows: every ground vertex below the centre's height, within
  * R0 of the centre and inside the tread segment's angle, as a row on the sector of elements it
  * lies in (or on one element, if it lies on its ray), into c->vrows; their number in
- * c->n_vrows. */
+ * c->n_vrows.
+ *
+ * The first scan at an x (height z_r) proves, for each vertex whose row it drops between
+ * two elements (below the chord of the rays' penetrations times the tread's bow, the test
+ * below), that the test drops it at every height z the later evaluations at that x take
+ * while these bounds hold (docs/models.md section 4.8, Cost): with Delta = z - z_r and
+ * |Delta| <= seen_reach dz_r, h = R0 - rho is concave in z (rho = sqrt(dx^2 + dz^2) is
+ * convex) with dh/dz = -dz / rho in [-1, -dz / R0], so h <= h_r - Delta dz_r / R0 if
+ * Delta > 0 and h <= h_r - Delta if not; the vertex's angle psi = atan2(dx, dz) moves by at
+ * most |Delta| |dx| / rho_min^2 (rho_min >= (1 - seen_reach) rho_r), and within a sector
+ * dt/dpsi = sin(dtheta) / (sin(psi - theta_i) + sin(theta_(i+1) - psi))^2 <= 1 / sin(dtheta),
+ * so t moves by at most dt = |Delta| dt_dz; while [t_r - dt, t_r + dt] stays inside (t_snap,
+ * 1 - t_snap) the vertex stays between the elements of sector i. There the chord at z,
+ * A + t D (A = P_l - slack, D = P_r - P_l, the rays' penetrations at z), is at least the
+ * chord at z_r at t_r plus mu, the least of its change over t in [0, 1], less |D| dt, and
+ * the bow 1 + ab_lo t (1 - t) at least its value at t_r less ab_lo dt; their product, the
+ * test's threshold, is then at least the threshold at z_r less Lambda (mu times the bow,
+ * which lies between 1 and B = 1 + ab_lo / 4) and less dt K (K = |D| B + ab_lo times the
+ * largest chord). Where the margin at z_r (threshold less h) covers h's rise, Lambda and
+ * dt K, the test drops the vertex at z. Every bound carries an allowance (tol) far above the
+ * rounding of what it stands for, so the rows, and their order, are the full scan's bit for
+ * bit; a vertex not proven is computed as before. On a road at 1 mm nearly every vertex
+ * under the patch is dropped by the bow's margin, and the evaluations after the first at an
+ * x move the centre by much less than that margin. */
 static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                        const tirenv_profile *p, double x, double z, size_t a, size_t b,
                        const double d[])
@@ -149,94 +366,84 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const size_t a1 = a > 0 ? a - 1 : 0, b1 = b + 1 < N ? b + 1 : N - 1;
     const double lo = x + fmin(0, R0 * (ct[a1] >= 0 ? st[a1] : -1));
     const double hi = x + fmax(0, R0 * (ct[b1] >= 0 ? st[b1] : 1));
-    size_t j = tirenv_profile__segment_at(p, lo);
-    while (j < n && X[j] < lo)
-        ++j;
+    size_t j0 = tirenv_profile__segment_at(p, lo);
+    while (j0 < n && X[j0] < lo)
+        ++j0;
     /* The end of the run from a search, not a walk over it: a road at 1 mm has hundreds of
      * vertices under the patch. */
-    size_t j_end = j;
-    if (j < n && X[j] <= hi) {
-        j_end = tirenv_profile__segment_near(p, j, hi);
-        j_end = j_end < j ? j : j_end;
+    size_t j_end = j0;
+    if (j0 < n && X[j0] <= hi) {
+        j_end = tirenv_profile__segment_near(p, j0, hi);
+        j_end = j_end < j0 ? j0 : j_end;
         while (j_end < n && X[j_end] <= hi)
             ++j_end;
     }
-    if (reserve_vrows(c, j_end - j))
+    if (reserve_vrows(c, j_end - j0))
         return TIRENV_ENOMEM;
-    const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
-    size_t i = T->i0; /* the sector of the last vertex: a walk from it is O(1) on a road */
-    /* the rays' penetrations at the ends of sector ci and the chord's slack there */
-    size_t ci = SIZE_MAX;
-    double P_l = 0, P_r = 0, slack_tau = 0;
-    tirenv_springs__cc_row *out = c->vrows; /* NULL while nothing was reserved */
-    for (; j < j_end; ++j) {
-        const double dx = X[j] - x, dz = z - Z[j];
-        if (!(dz > 0))
-            continue; /* at or above the centre's height: outside the lower half */
-        const double rr = dx * dx + dz * dz;
-        if (!(rr < R0sq))
-            continue;
-        /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. The walk keeps the
-         * sigmas it computes: sigma_(i+1) < 0 ends the forward walk, and s_n = -sigma_(i+1)
-         * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
-         * products; rounding to nearest is symmetric), never 0. */
-        double s_n = 0; /* 0: not known */
-        while (i + 1 < N) {
-            const double u = dx * ct[i + 1] - dz * st[i + 1];
-            if (!(u >= 0)) {
-                s_n = -u;
-                break;
-            }
-            ++i;
-        }
-        double s_i = dx * ct[i] - dz * st[i];
-        while (i > 0 && s_i < 0) {
-            --i;
-            s_i = dx * ct[i] - dz * st[i];
-            s_n = 0;
-        }
-        if (s_i < 0)
-            continue; /* behind the first element */
-        const double rho = sqrt(rr), h = R0 - rho;
-        if (!(h > 0))
-            continue;
-        /* A row on the element alone (t snapped, or exactly on its ray) keeps t = 0 while
-         * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
-         * weights of a row between elements come later, for the rows that can bind
-         * (build_rows); dga_dz holds dt/dz until then. */
-        size_t r_i = i, r_j = i;
-        double r_t = 0, r_dt = 0;
-        if (s_i > 0) {
-            if (i + 1 >= N)
-                continue; /* beyond the last element's ray */
-            if (s_n == 0)
-                s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
-            const double S = s_i + s_n, t = s_i / S;
-            if (t >= 1 - t_snap) {
-                r_i = r_j = i + 1;
-            } else if (t > t_snap) {
-                /* Below the hull of the rays' own rows (build_rows' test with the rays'
-                 * penetrations, which the elements' rows only raise): never binds. */
-                if (ci != i) {
-                    ci = i;
-                    P_l = i >= a && i <= b && d[i] > 0 ? d[i] : 0;
-                    P_r = i + 1 >= a && i + 1 <= b && d[i + 1] > 0 ? d[i + 1] : 0;
-                    slack_tau = fabs(P_r - P_l) * tau_dev;
-                }
-                const double chord = (1 - t) * P_l + t * P_r - slack_tau;
-                if (!(h > chord * (1 + ab_lo * t * (1 - t))))
-                    continue;
-                r_j = i + 1;
-                r_t = t;
-                /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
-                r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
-            }
-        }
-        *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
-                                          .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
-                                          .dh_dz = -dz / rho, .id = (long)j};
+    /* The proofs: made here at a new x (or profile), used at the same x within the run they
+     * cover, else neither. */
+    const int same_x = c->seen_serial == p->serial && c->seen_x == x;
+    /* Proofs pay where the vertices outnumber the sectors (a road sampled finely): they cost
+     * a few sectors' work an evaluation whatever the vertices, and a vertex's proof a
+     * third of its row's test; elsewhere the scan runs as it did (the same rows either
+     * way). */
+    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1);
+    const int reuse = same_x && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
+    if (!same_x)
+        c->seen_serial = 0; /* no proofs at this x, unless made now */
+    if (prove) {
+        if (reserve_seen(c, j_end - j0, N))
+            return TIRENV_ENOMEM;
+        c->seen_serial = p->serial;
+        c->seen_x = x;
+        c->seen_z = z;
+        c->seen_j0 = j0;
+        c->seen_n = j_end - j0;
+        for (size_t k = 0; k < c->seen_n; ++k)
+            c->seen[k].m_t = 0;
     }
+    tirenv_springs__cc_seen *const seen = c->seen;
+    /* the vertices to compute: todo[0 .. n_todo - 1] when reusing, else j0 .. j_end - 1 */
+    size_t skipped = 0;
+    /* the vertices to compute: j0 .. j_end - 1 in todo but for those proven dropped at z */
+    size_t *const todo = c->seen_todo;
+    size_t n_todo = j_end - j0;
+    if (reuse)
+        n_todo = seen_todo(c, T, p, z, a, b, d, j0, j_end, todo, &skipped);
+
+    const double tol = seen_tol(p, R0, z), tol4 = 4 * tol;
+    const double inv_R0 = (1 - 1e-12) / R0; /* rounded down a little */
+    const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
+    const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
+    const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
+                        .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .tol = tol,
+                        .tol4 = tol4, .inv_R0 = inv_R0, .dt_dz_of = dt_dz_of, .N = N, .a = a,
+                        .b = b};
+    /* i: a walk from the last vertex's sector is O(1) on a road */
+    scan_state S = {.i = T->i0, .ci = SIZE_MAX, .lo = N, .hi = 0, .out = c->vrows};
+    if (prove)
+        for (size_t q = 0; q < n_todo; ++q)
+            scan_vertex(&C, &S, j0 + q, seen + q);
+    else if (reuse)
+        for (size_t q = 0; q < n_todo; ++q)
+            scan_vertex(&C, &S, todo[q], NULL);
+    else
+        for (size_t j = j0; j < j_end; ++j)
+            scan_vertex(&C, &S, j, NULL);
+    tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
+    const size_t seen_lo = S.lo, seen_hi = S.hi;
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
+    c->scan_skipped = skipped;
+    if (prove) { /* the sectors' chords at z_r */
+        c->seen_lo = seen_lo;
+        c->seen_hi = seen_hi;
+        double *const sA = c->seen_sec, *const sD = sA + N;
+        for (size_t q = seen_lo; q <= seen_hi; ++q) {
+            const double Pl = pen(q, a, b, d), Pr = pen(q + 1, a, b, d);
+            sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
+            sD[q] = Pr - Pl;
+        }
+    }
     return TIRENV_OK;
 }
 
