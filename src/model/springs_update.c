@@ -13,11 +13,15 @@
 /* The farthest (m) from the base's height an update is tried. The tangent errs by the
  * rows' curvature in z times dz^2 / 2 (a vertex row's h = R0 - |V - C| and its weights;
  * a ray's row on a fixed face is linear), about dz^2 / |V - C|: below the equality
- * tolerance (eq_tol) only for dz under about 1e-7 m, so farther (Newton's first step from
- * the warm start, 1e-5 to 1e-4 m) the check would fail after costing its scan. */
+ * tolerance (eq_tol) only for dz under about 1e-7 m, and within 1e-6 m after a correction
+ * or two (below). Newton's second evaluation, 1e-5 to 1e-4 m from the first, would need
+ * more corrections and the exact dF_z/dz at the new height (the base's, given with an
+ * update, is off by |d2F/dz2| dz): tried, it cost more than it spared (docs/models.md
+ * section 4.8, Cost); the confirming evaluation, 1e-11 to 1e-7 m away, is what this is for. */
 static const double upd_dz_max = 1e-6;
 
-/* Corrections of the tangent's residual before the update is given up. */
+/* Corrections of the tangent's residual before the update is given up: each divides it by
+ * some 50 or more within upd_dz_max, so two take 1e-6 m's residual to round-off. */
 enum { max_corrections = 2 };
 
 /* The working rows must hold as equalities, and K w = G^T lambda, within these (relative to
@@ -136,9 +140,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* The KKT equations of the working set at z, K w = G^T lambda on the free elements and
      * G w + C lambda = h on the rows between elements, hold along the tangent but for the
      * rows' curvature in z; their residual is corrected with the base's factors (the
-     * system at z differs from the base's only by the rows' weights, a few per cent of S
-     * for dz of 1e-4 m), each correction dividing it by some 50 or more, until it is at
-     * round-off, or the update is given up. */
+     * system at z differs from the base's only by the rows' weights, t moving some 200
+     * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
+     * or the update is given up. */
     double *x_c = c->w_try;
     /* with the equations: the reactions' least and largest (the held elements' are their
      * residuals of K w = G^T lambda), and whether each free element is above its own row
