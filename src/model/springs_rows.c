@@ -209,13 +209,15 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
     size_t n = 0;
     for (size_t k = j0 - s0; k < j_end - s0; ++k) {
         const tirenv_springs__cc_seen *const e = c->seen + k;
-        const double dt = aD * e->dt_dz;
         int ok = 0;
-        if (dt < e->m_t && aD <= e->dz_max) { /* m_t 0: no proof */
-            const size_t q = e->i;
-            const double h_up = (Delta > 0 ? -Delta * e->c : -Delta) + tol;
-            ok = e->chord + Mu[q] - aDz[q] * dt >= 0 &&
-                 e->margin >= h_up + Lam[q] + dt * Kq[q];
+        if (e->m_t > 0) { /* a proof (the other fields are set only then) */
+            const double dt = aD * e->dt_dz;
+            if (dt < e->m_t && aD <= e->dz_max) {
+                const size_t q = e->i;
+                const double h_up = (Delta > 0 ? -Delta * e->c : -Delta) + tol;
+                ok = e->chord + Mu[q] - aDz[q] * dt >= 0 &&
+                     e->margin >= h_up + Lam[q] + dt * Kq[q];
+            }
         }
         if (!ok)
             todo[n++] = s0 + k;
