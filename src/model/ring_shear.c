@@ -98,6 +98,7 @@ struct tirenv_ring_tread {
     double **cols;
     double *xw, *dxw;
     size_t n_sub;       /* evaluations answered on a sub-window (the tests count them) */
+    int whole;          /* nonzero: always the whole window (the tests' reference) */
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -334,6 +335,10 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
 }
 
 double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
+
+size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
+
+void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
 
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
 
@@ -1162,7 +1167,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
      * window, and then on the sub-window of its contact. */
     const int want = dfz_dz != NULL;
     size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12;
-    int sub = !T->lugs && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
+    int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
               sub_window(r, kf, kl, &a, &b, &k0, &k1);
     for (size_t t = 0; sub; ++t) {
         sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
@@ -1184,7 +1189,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
             return solve_error(r, st, n, diag);
         /* The same answer as the sub-window's of this contact, if it has one: solved there
          * (one Newton step, the states kept), else the whole window's. */
-        sub = !T->lugs && contact_span(r, 0, n_pts, xw, 0, &kf, &kl) &&
+        sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 0, &kf, &kl) &&
               sub_window(r, kf, kl, &a, &b, &k0, &k1) && sub_cols(T, a, b - a + 1);
         if (sub) {
             st = solve_on(r, x_c, a, b, k0, k1, want);
