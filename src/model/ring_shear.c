@@ -1197,11 +1197,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                 return solve_error(r, st, b - a + 1, diag);
             fill_free(r, a, b, xw);
             sub = free_clear(r, k0, k1, xw);
-        }
-        if (!sub) { /* round-off at the sub-window's ends: the whole window's, again */
-            st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
-            if (st != TIRENV_RING_NEWTON_OK)
-                return solve_error(r, st, n, diag);
+            if (!sub) { /* round-off at the sub-window's ends: the whole window's, again */
+                st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
+                if (st != TIRENV_RING_NEWTON_OK)
+                    return solve_error(r, st, n, diag);
+            }
         }
     }
     if (!sub)
