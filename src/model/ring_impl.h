@@ -219,6 +219,11 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T);
 
 /* Per node (global index): the tread surface's inward displacement u over the last window, m. */
 double *tirenv_ring__tread_u(tirenv_ring_tread *T);
+/* The evaluations answered on the sub-window of the nodes in contact (ring_shear.c), and, with
+ * whole nonzero, every later one on the whole window instead (the tests' reference). */
+size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T);
+void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole);
+
 /* The doubles of the warm start from tirenv_ring__tread_u on (u, its and w's slopes in z, the
  * z they were found at): what a state saves. */
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);

@@ -91,6 +91,14 @@ struct tirenv_ring_tread {
                            * the centre, as their vertices do */
     double *lc, *la, *lb; /* the line search's terms (line_cb), cap_l each */
     size_t cap_l;
+    /* The sub-window of the nodes in contact (solve_shear): per length n' of it, the six
+     * columns of the exterior's inverse K_EE^-1 at its six coupled unknowns (NB x 2 (M - n')
+     * each, NULL until that length is first a sub-window's), which give the free nodes' (w, u)
+     * from the sub-window's ends; the whole window's (w, u) and their d/dz (2 M each). */
+    double **cols;
+    double *xw, *dxw;
+    size_t n_sub;       /* evaluations answered on a sub-window (the tests count them) */
+    int whole;          /* nonzero: always the whole window (the tests' reference) */
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -286,7 +294,9 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->kap = malloc((4 * M + 3) * sizeof *T->kap);
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
-    if (!T->kap || !T->end || !T->have || reserve_knots(T, 16) ||
+    T->cols = calloc(M, sizeof *T->cols);
+    T->xw = malloc(4 * M * sizeof *T->xw);
+    if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL)) {
         tirenv_ring__tread_free(T);
         return NULL;
@@ -295,6 +305,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->dw = T->u + M;
     T->du = T->dw + M;
     T->pred = T->du + M;
+    T->dxw = T->xw + 2 * M;
     for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
     memset(T->u, 0, (3 * M + 3) * sizeof *T->u);
@@ -308,6 +319,11 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->kap);
     free(T->end);
     free(T->have);
+    if (T->cols)
+        for (size_t n = 0; n < T->M; ++n)
+            free(T->cols[n]);
+    free(T->cols);
+    free(T->xw);
     free(T->col);
     free(T->pknot);
     free(T->kj);
@@ -319,6 +335,10 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
 }
 
 double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
+
+size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
+
+void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
 
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
 
@@ -403,23 +423,32 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
  * (w, u) interleaved, unloaded. Only its first and last nodes couple to the window: the
  * belt's pentadiagonal stencil reaches two nodes, the shear one. So K_WE K_EE^-1 K_EW needs
  * K_EE^-1 on six exterior unknowns only. Window ends: w_0, u_0, w_1, w_n-2, w_n-1, u_n-1. */
-static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB])
+/* X[e][b]: the whole's entry between the exterior's coupled unknown e (its w_0, u_0, w_1,
+ * w_ne-2, w_ne-1, u_ne-1) and window end b (end_index). */
+static void ext_coupling(const tirenv_ring_tread *T, double X[NB][NB])
 {
-    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
     const double *s = T->s, k_sh = T->k_sh;
-    tband *E = &T->ext;
-    band_reset(E, Ne, 0);
-    add_arc(E, T, (lo + n) % M, ne);
-    band_factor(E); /* a principal block of the positive definite whole */
-    const size_t eidx[NB] = {0, 1, 2, Ne - 4, Ne - 2, Ne - 1};
-    /* X[e][b]: the whole's entry between exterior unknown eidx[e] and window end b. */
-    double X[NB][NB] = {{0}};
+    memset(X, 0, NB * sizeof *X);
     X[0][3] = s[2], X[0][4] = s[1]; /* exterior w_0 - window w_n-2, w_n-1 */
     X[1][5] = -k_sh;                /* exterior u_0 - window u_n-1 */
     X[2][4] = s[2];                 /* exterior w_1 - window w_n-1 */
     X[3][0] = s[2];                 /* exterior w_ne-2 - window w_0 */
     X[4][0] = s[1], X[4][2] = s[2]; /* exterior w_ne-1 - window w_0, w_1 */
     X[5][1] = -k_sh;                /* exterior u_ne-1 - window u_0 */
+}
+
+/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. */
+static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
+                        double *cols)
+{
+    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
+    tband *E = &T->ext;
+    band_reset(E, Ne, 0);
+    add_arc(E, T, (lo + n) % M, ne);
+    band_factor(E); /* a principal block of the positive definite whole */
+    const size_t eidx[NB] = {0, 1, 2, Ne - 4, Ne - 2, Ne - 1};
+    double X[NB][NB];
+    ext_coupling(T, X);
     double G[NB][NB];
     for (size_t a = 0; a < NB; ++a) {
         memset(T->col, 0, Ne * sizeof *T->col);
@@ -427,6 +456,8 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
         band_solve(E, T->col);
         for (size_t c = 0; c < NB; ++c)
             G[c][a] = T->col[eidx[c]];
+        if (cols)
+            memcpy(cols + a * Ne, T->col, Ne * sizeof *cols);
     }
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u) {
@@ -449,7 +480,7 @@ static const double (*window_end(tirenv_ring *r, double x_c))[NB]
         /* The lugs' stiffness turns with x: the exterior's, so its ends, depend on x, lo
          * and n, which stay the same over a position's evaluations. */
         if (!(T->lug_n == n && T->lug_lo == r->lo && T->lug_x == x_c)) {
-            compute_end(T, r->lo, n, T->end[0]);
+            compute_end(T, r->lo, n, T->end[0], NULL);
             T->lug_x = x_c;
             T->lug_lo = r->lo;
             T->lug_n = n;
@@ -457,7 +488,7 @@ static const double (*window_end(tirenv_ring *r, double x_c))[NB]
         return (const double(*)[NB])T->end[0];
     }
     if (!T->have[n]) {
-        compute_end(T, r->lo, n, T->end[n]);
+        compute_end(T, r->lo, n, T->end[n], NULL);
         T->have[n] = 1;
     }
     return (const double(*)[NB])T->end[n];
@@ -887,23 +918,239 @@ static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[]
     apply_K(r, (const double(*)[NB])K, x, y);
 }
 
+/* The nodes that can touch (docs/models.md section 5.2, as the Winkler tread's ring_smooth.c
+ * does). Of the window (every node whose interval holds ground within R0 + t_r) often half
+ * never touches: the ground lies within reach there, but the belt and the tread surface,
+ * pressed in by the patch beside it, stay clear of it. The contact is solved on the
+ * sub-window of the nodes in contact, SUB_PAD more on each side, its ends moved out to
+ * multiples of SUB_QUANT node indices (so that it stays while the patch moves a little, and
+ * few lengths, whose exterior corrections are kept, occur); every node outside it condenses
+ * out exactly, as the window's exterior does (compute_end, of the sub-window's length). The
+ * window's free nodes' (w, u) are then the exterior's unloaded response to the sub-window's
+ * ends (fill_free: the six columns of K_EE^-1 that compute_end solves for anyway), and if no
+ * point of theirs touches, the sub-window's answer is the minimum of E over the whole window
+ * (its gradient vanishes at every unknown; the free points' knots carry nothing, a = 0). The
+ * sub-window is first that of the contact the warm start predicts; when the contact found on
+ * it asks for another, it is solved again there (Newton from the answer: one step if the
+ * states stay); if a free point would touch, on the whole window, then on the sub-window of
+ * its contact. So the answer is the sub-window's of its own contact, solved with its final
+ * states, whatever the start. Its agreement with the whole window's minimum is round-off. */
+enum { SUB_PAD = 2, SUB_QUANT = 8, SUB_MIN_FREE = 16, SUB_MIN = 8, SUB_TRIES = 3 };
+
+/* A point's tread surface and belt from the whole window's (w, u), xw interleaved from node
+ * r->lo, without the knots (zero at the warm start and outside the solved sub-window). */
+static double lin_u(const tirenv_ring *r, const tirenv_ring_point *q, const double xw[])
+{
+    const size_t i = q->j - r->lo;
+    return (1 - q->s) * xw[2 * i + 1] + q->s * xw[2 * i + 3];
+}
+
+static double lin_w(const tirenv_ring *r, const tirenv_ring_point *q, const double xw[])
+{
+    const size_t i = q->j - r->lo;
+    return (1 - q->s) * xw[2 * i] + q->s * xw[2 * i + 2];
+}
+
+static int touches(const tirenv_ring *r, const tirenv_ring_point *q, const double xw[])
+{
+    return q->d != -INFINITY &&
+           (q->d > lin_u(r, q, xw) || q->d - lin_w(r, q, xw) > r->par.t_r);
+}
+
+/* The first and the last point of pts[k0 .. k1) in contact, by their states (warm: as the
+ * window's xw leaves them); 0 if none. */
+static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double xw[], int warm,
+                        size_t *kf, size_t *kl)
+{
+    const tirenv_ring_point *const pts = r->pts;
+    size_t k = k0;
+    for (; k < k1; ++k)
+        if (warm ? touches(r, &pts[k], xw) : pts[k].st != 0)
+            break;
+    if (k == k1)
+        return 0;
+    *kf = k;
+    for (k = k1; k-- > *kf;)
+        if (warm ? touches(r, &pts[k], xw) : pts[k].st != 0)
+            break;
+    *kl = k;
+    return 1;
+}
+
+/* The sub-window a .. b of the window for the points pts[kf .. kl] (the first and the last in
+ * contact), and the points pts[k0 .. k1) of its intervals (a piece's two points stay
+ * together: k0 is even); 0 where it would leave fewer than SUB_MIN_FREE free nodes. */
+static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, size_t *a, size_t *b,
+                      size_t *k0, size_t *k1)
+{
+    const size_t lo = r->lo, hi = r->lo + r->n - 1, Q = SUB_QUANT;
+    const tirenv_ring_point *const pts = r->pts;
+    const size_t j1 = pts[kf].j, j2 = pts[kl].j + 1;
+    size_t first = j1 >= SUB_PAD ? (j1 - SUB_PAD) / Q * Q : 0;
+    size_t last = (j2 + SUB_PAD) / Q * Q + Q - 1;
+    first = first > lo ? first : lo;
+    last = last < hi ? last : hi;
+    if ((first - lo) + (hi - last) < SUB_MIN_FREE || last - first + 1 < SUB_MIN)
+        return 0;
+    *a = first;
+    *b = last;
+    size_t k = kf;
+    while (k > 0 && pts[k - 1].j >= first)
+        --k;
+    *k0 = k;
+    k = kl + 1;
+    while (k < r->n_pts && pts[k].j < last)
+        ++k;
+    *k1 = k;
+    return 1;
+}
+
+/* The exterior's columns for a sub-window of n nodes from lo (computing them, and its end
+ * correction, the first time); NULL if out of memory. */
+static const double *sub_cols(tirenv_ring_tread *T, size_t lo, size_t n)
+{
+    if (!T->cols[n]) {
+        double *c = malloc(NB * 2 * (T->M - n) * sizeof *c);
+        if (!c)
+            return NULL;
+        double Q[NB][NB];
+        compute_end(T, lo, n, Q, c);
+        if (!T->have[n]) {
+            memcpy(T->end[n], Q, sizeof Q);
+            T->have[n] = 1;
+        }
+        T->cols[n] = c;
+    }
+    return T->cols[n];
+}
+
+/* The free nodes of the window r->lo, r->n outside the sub-window a .. b (their columns
+ * computed: sub_cols): their (w, u) in v (the window's, interleaved), from the sub-window's
+ * there, as the unloaded exterior's -K_EE^-1 K_EB v_B. */
+static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t lo = r->lo, hi = r->lo + r->n - 1, ns = b - a + 1, ne = T->M - ns,
+                 Ne = 2 * ne;
+    const double *cols = T->cols[ns], *vs = v + 2 * (a - lo);
+    size_t bi[NB];
+    end_index(ns, bi);
+    double X[NB][NB], f[NB];
+    ext_coupling(T, X);
+    for (size_t e = 0; e < NB; ++e) {
+        f[e] = 0;
+        for (size_t c = 0; c < NB; ++c)
+            f[e] += X[e][c] * vs[bi[c]];
+    }
+    for (size_t j = lo; j <= hi; ++j) {
+        if (j == a)
+            j = b + 1;
+        if (j > hi)
+            break;
+        /* The exterior runs from node b + 1 round to node a - 1. */
+        const size_t ee = j > b ? j - b - 1 : ne - (a - j);
+        for (size_t h = 0; h < 2; ++h) {
+            double sum = 0;
+            for (size_t e = 0; e < NB; ++e)
+                sum += cols[e * Ne + 2 * ee + h] * f[e];
+            v[2 * (j - lo) + h] = -sum;
+        }
+    }
+}
+
+/* No point of the window's outside pts[k0 .. k1) touches at xw. */
+static int free_clear(const tirenv_ring *r, size_t k0, size_t k1, const double xw[])
+{
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        if (k == k0)
+            k = k1;
+        if (k >= r->n_pts)
+            break;
+        if (touches(r, &r->pts[k], xw))
+            return 0;
+    }
+    return 1;
+}
+
+typedef struct {
+    tirenv_ring_point *pts;
+    size_t n_pts, lo, n;
+} window_save;
+
+/* r's window and points become the nodes a .. b and the points pts[k0 .. k1); leave restores
+ * them. */
+static void enter(tirenv_ring *r, window_save *sv, size_t a, size_t b, size_t k0, size_t k1)
+{
+    *sv = (window_save){r->pts, r->n_pts, r->lo, r->n};
+    r->pts += k0;
+    r->n_pts = k1 - k0;
+    r->lo = a;
+    r->n = b - a + 1;
+}
+
+static void leave(tirenv_ring *r, const window_save *sv)
+{
+    r->pts = sv->pts;
+    r->n_pts = sv->n_pts;
+    r->lo = sv->lo;
+    r->n = sv->n;
+}
+
+/* Newton on the nodes a .. b with the points pts[k0 .. k1) (a .. b the whole window: every
+ * point), from the window's xw there and the knots at zero: its answer, knots included, in
+ * T->x, and copied into xw; with want, the factor of its final states in T->win. -1 if out of
+ * memory for the knots, else the driver's status. */
+static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, size_t k1,
+                    int want)
+{
+    tirenv_ring_tread *T = r->tread;
+    double *xw = T->xw + 2 * (a - r->lo);
+    window_save sv;
+    enter(r, &sv, a, b, k0, k1);
+    const size_t N = 2 * r->n;
+    int st = -1;
+    if (!find_knots(r)) {
+        const size_t m = T->m;
+        const double(*Q)[NB] = window_end(r, x_c);
+        double *x = T->x;
+        memcpy(x, xw, N * sizeof *x);
+        for (size_t k = 0; k < m; ++k)
+            x[N + k] = 0;
+        const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
+                                       points_energy, T->kp, line_cb};
+        int factored;
+        st = tirenv_ring__newton(r, &nw, x, T->xn, T->xt, T->g, &factored);
+        /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did
+         * not change with it: the same matrix). */
+        if (st == TIRENV_RING_NEWTON_OK && want && !factored && factor_cb(r, Q, T->xt))
+            st = TIRENV_RING_NEWTON_BREAKDOWN;
+        memcpy(xw, x, N * sizeof *x);
+    }
+    leave(r, &sv);
+    return st;
+}
+
+/* The error of solve_on's status st on n nodes. */
+static int solve_error(const tirenv_ring *r, int st, size_t n, tirenv_diag *diag)
+{
+    if (st < 0)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
+                            "out of memory for the tread surface's knots");
+    return tirenv_ring__newton_error(r, st, n, "belt-and-tread", "shear-coupled tread", diag);
+}
+
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag)
 {
     tirenv_ring_tread *T = r->tread;
-    const size_t n = r->n, lo = r->lo, N = 2 * n;
+    const size_t n = r->n, lo = r->lo, hi = lo + n - 1, n_pts = r->n_pts;
     const double t_r = r->par.t_r, R = r->R;
     if (n + 4 > r->M)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "the contact window of %zu nodes leaves too few of the %zu outside "
                             "it", n, r->M);
     set_kappa(r, x_c);
-    if (find_knots(r))
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
-                            "out of memory for the tread surface's knots");
-    const size_t m = T->m;
-    const double(*Q)[NB] = window_end(r, x_c);
-    double *x = T->x, *xn = T->xn, *xt = T->xt, *g = T->g;
+    double *xw = T->xw, *dxw = T->dxw;
     /* From the last evaluation's belt and tread where this window overlaps its window,
      * moved along their slope in z to this z (dx/dz of that equilibrium, found with its
      * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
@@ -912,37 +1159,84 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     for (size_t i = 0; i < n; ++i) {
         const size_t j = lo + i;
         const int warm = j >= r->warm_lo && j < r->warm_lo + r->warm_n;
-        x[2 * i] = warm ? r->w[j] + dz * T->dw[j] : 0;
-        x[2 * i + 1] = warm ? T->u[j] + dz * T->du[j] : 0;
+        xw[2 * i] = warm ? r->w[j] + dz * T->dw[j] : 0;
+        xw[2 * i + 1] = warm ? T->u[j] + dz * T->du[j] : 0;
     }
-    for (size_t k = 0; k < m; ++k)
-        x[N + k] = 0;
-    const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
-                                   points_energy, T->kp, line_cb};
-    int factored;
-    const int st = tirenv_ring__newton(r, &nw, x, xn, xt, g, &factored);
-    if (st != TIRENV_RING_NEWTON_OK)
-        return tirenv_ring__newton_error(r, st, n, "belt-and-tread", "shear-coupled tread", diag);
-    /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did not
-     * change with it: the same matrix). */
-    if (dfz_dz && !factored) {
-        if (factor_cb(r, Q, xt))
-            return tirenv_ring__newton_error(r, TIRENV_RING_NEWTON_BREAKDOWN, n,
-                                             "belt-and-tread", "shear-coupled tread", diag);
+    /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
+     * with the tire) where there is one; else, or where a free point would touch, on the whole
+     * window, and then on the sub-window of its contact. */
+    const int want = dfz_dz != NULL;
+    size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12;
+    int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
+              sub_window(r, kf, kl, &a, &b, &k0, &k1);
+    for (size_t t = 0; sub; ++t) {
+        sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
+              solve_on(r, x_c, a, b, k0, k1, want) == TIRENV_RING_NEWTON_OK &&
+              contact_span(r, k0, k1, xw, 0, &kf, &kl) &&
+              sub_window(r, kf, kl, &a2, &b2, &k02, &k12);
+        if (!sub)
+            break;
+        if (a2 == a && b2 == b) {
+            fill_free(r, a, b, xw);
+            sub = free_clear(r, k0, k1, xw);
+            break;
+        }
+        a = a2, b = b2, k0 = k02, k1 = k12;
+    }
+    if (!sub) {
+        int st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
+        if (st != TIRENV_RING_NEWTON_OK)
+            return solve_error(r, st, n, diag);
+        /* The same answer as the sub-window's of this contact, if it has one: solved there
+         * (one Newton step, the states kept), else the whole window's. */
+        sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 0, &kf, &kl) &&
+              sub_window(r, kf, kl, &a, &b, &k0, &k1) && sub_cols(T, a, b - a + 1);
+        if (sub) {
+            st = solve_on(r, x_c, a, b, k0, k1, want);
+            if (st != TIRENV_RING_NEWTON_OK)
+                return solve_error(r, st, b - a + 1, diag);
+            fill_free(r, a, b, xw);
+            sub = free_clear(r, k0, k1, xw);
+            if (!sub) { /* round-off at the sub-window's ends: the whole window's, again */
+                st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
+                if (st != TIRENV_RING_NEWTON_OK)
+                    return solve_error(r, st, n, diag);
+            }
+        }
+    }
+    if (!sub)
+        a = lo, b = hi, k0 = 0, k1 = n_pts;
+    T->n_sub += sub != 0;
+    /* The window's free points, clear of the ground: no force, their overlap from xw. */
+    for (size_t k = 0; k < n_pts; ++k) {
+        if (k == k0)
+            k = k1;
+        if (k >= n_pts)
+            break;
+        tirenv_ring_point *q = &r->pts[k];
+        q->st = 0;
+        q->f = 0;
+        q->e = q->d == -INFINITY ? -INFINITY : q->d - lin_u(r, q, xw);
     }
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
         r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
     T->pred[2] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
-    for (size_t i = 0; i < N + m; ++i)
-        xt[i] = 0;
     for (size_t i = 0; i < n; ++i) {
-        r->w[lo + i] = x[2 * i];
-        T->u[lo + i] = x[2 * i + 1];
+        r->w[lo + i] = xw[2 * i];
+        T->u[lo + i] = xw[2 * i + 1];
         r->F[lo + i] = 0;
         r->g[lo + i] = 0;
     }
+    /* The forces and dx/dz on the nodes solved, a .. b (the whole window or a sub-window). */
+    window_save sv;
+    enter(r, &sv, a, b, k0, k1);
+    const size_t ns = r->n, N = 2 * ns, m = T->m, ls = r->lo;
+    const double *x = T->x;
+    double *xt = T->xt;
+    for (size_t i = 0; i < N + m; ++i)
+        xt[i] = 0;
     double sum_c = 0, sum_s = 0;
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
@@ -954,7 +1248,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         q->e = q->d - at_u(r, q, x); /* the ground's overlap with the tread surface */
         if (q->st == 0)
             continue;
-        const size_t i = q->j - lo;
+        const size_t i = q->j - ls;
         const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double fg = 0, fb = 0, cu = 0, cw = 0;
         if (q->st & 1) {
@@ -996,11 +1290,6 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     if (dfz_dz) {
         knots_moving(r, x, xt);
         solve_full(r, xt); /* dx/dz */
-        for (size_t i = 0; i < n; ++i) {
-            T->dw[lo + i] = xt[2 * i];
-            T->du[lo + i] = xt[2 * i + 1];
-        }
-        T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
         double dF = 0;
         for (size_t k = 0; k < r->n_pts; ++k) {
             const tirenv_ring_point *q = &r->pts[k];
@@ -1021,14 +1310,26 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         }
         *dfz_dz = dF;
     }
-    /* The diagnostics: the largest tread compression u - w, at the nodes and the points. */
+    /* The diagnostics: the largest tread compression u - w, at the nodes and the points in
+     * contact (the free nodes' from xw). */
     double e_max = 0;
     for (size_t i = 0; i < n; ++i)
-        e_max = fmax(e_max, x[2 * i + 1] - x[2 * i]);
+        e_max = fmax(e_max, xw[2 * i + 1] - xw[2 * i]);
     for (size_t k = 0; k < r->n_pts; ++k)
         if (r->pts[k].st)
             e_max = fmax(e_max, at_u(r, &r->pts[k], x) - at_w(r, &r->pts[k], x));
     r->tread_max = fmin(e_max, t_r);
+    leave(r, &sv);
+    if (dfz_dz) {
+        memcpy(dxw + 2 * (a - lo), xt, N * sizeof *xt);
+        if (sub)
+            fill_free(r, a, b, dxw);
+        for (size_t i = 0; i < n; ++i) {
+            T->dw[lo + i] = dxw[2 * i];
+            T->du[lo + i] = dxw[2 * i + 1];
+        }
+        T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
+    }
     return 0;
 }
 
@@ -1056,7 +1357,7 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[])
         return 1;
     }
     double Q[NB][NB];
-    compute_end(&T, lo, n, Q); /* leaves the exterior's factor in T.ext */
+    compute_end(&T, lo, n, Q, NULL); /* leaves the exterior's factor in T.ext */
     const double *s = T.s, k_sh = T.k_sh;
     const double *w = r->w, *u = T0->u;
     const size_t j0 = lo, j1 = lo + 1, jm2 = lo + n - 2, jm1 = lo + n - 1;
