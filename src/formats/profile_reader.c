@@ -37,11 +37,8 @@ int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *dia
 static int read_2d(tirenv_road_file *f, tirenv_rdf_side side, tirenv_profile **out,
                    tirenv_diag *diag)
 {
-    if (tirenv_road_file_format(f) == TIRENV_PROFILE_RDF) {
-        const tirenv_rdf__road *road;
-        const int status = tirenv_road_file__rdf(f, side, &road, diag);
-        return status ? status : tirenv_rdf__profile(road, side, out, diag);
-    }
+    if (tirenv_road_file_format(f) == TIRENV_PROFILE_RDF)
+        return tirenv_road_file__rdf_whole(f, side, out, diag);
     FILE *fp = tirenv_road_file__stream(f, diag);
     return fp ? tirenv_profile_csv__read(fp, tirenv_road_file_name(f), out, diag)
               : TIRENV_ENOMEM;

@@ -48,6 +48,17 @@ typedef struct {
 
 typedef enum { B_OTHER, B_HEADER, B_UNITS, B_MODEL, B_PARAMETERS } block;
 
+/* A whole read's rows in file units, x and the side's z (before OFFSET), in blocks that are
+ * freed as the profile's arrays take them, so that a road whole takes 32 bytes a row at its
+ * peak (the blocks or the arrays, then the arrays and the profile), not a growing array's up
+ * to 48 and a second reading of the file. */
+enum { BLOCK_ROWS = 32768 };
+struct block {
+    struct block *next;
+    size_t n;
+    double x[BLOCK_ROWS], zs[BLOCK_ROWS];
+};
+
 typedef struct {
     tirenv_propfile__where at; /* the source's name, the line being read */
     block blk;
@@ -61,6 +72,9 @@ typedef struct {
     size_t next_offset;        /* byte offset of the line after the one being read */
     size_t xz_offset;          /* ... after (XZ_DATA)'s: where its rows start */
     tirenv_rdf__check check;   /* the rows as the scan meets them */
+    int gather;                /* keep the rows of gather_side as they pass (a whole read) */
+    tirenv_rdf_side gather_side;
+    struct block *blocks, *last_block;
 } rdf;
 
 #define fail(r, ...) tirenv_propfile__fail(&(r)->at, __VA_ARGS__)
@@ -225,13 +239,16 @@ static int xz_parse(const tirenv_propfile__where *at, char *text, double v[3])
     return TIRENV_OK;
 }
 
-/* The height of a row on side, in m: f (zs + offset), as the whole read always took it. */
+/* The height of a row on side in file units, before OFFSET. */
+static double side_zs(tirenv_rdf_side side, const double v[3])
+{
+    return side == TIRENV_RDF_LEFT ? v[1] : side == TIRENV_RDF_RIGHT ? v[2] : 0.5 * (v[1] + v[2]);
+}
+
+/* ... in m: f (zs + offset), as the whole read always took it. */
 static double side_z(tirenv_rdf_side side, const double v[3], double f, double offset)
 {
-    const double zs = side == TIRENV_RDF_LEFT    ? v[1]
-                      : side == TIRENV_RDF_RIGHT ? v[2]
-                                                 : 0.5 * (v[1] + v[2]);
-    return f * (zs + offset);
+    return f * (side_zs(side, v) + offset);
 }
 
 /* The checks of tirenv_profile_validate (its words, its order: x finite, z finite, x not
@@ -289,7 +306,31 @@ static int xz_row(rdf *r, char *text)
     if (!r->unit[TIRENV_UNIT_LENGTH].line)
         c->deferred = 1;
     check_row(c, v, r->unit[TIRENV_UNIT_LENGTH].value, r->keys[K_OFFSET].value, r->at.line);
+    if (!r->gather)
+        return TIRENV_OK;
+    struct block *b = r->last_block;
+    if (!b || b->n == BLOCK_ROWS) {
+        if (!(b = malloc(sizeof *b)))
+            return tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, r->at.line, "",
+                                "out of memory");
+        b->next = NULL;
+        b->n = 0;
+        *(r->last_block ? &r->last_block->next : &r->blocks) = b;
+        r->last_block = b;
+    }
+    b->x[b->n] = v[0];
+    b->zs[b->n] = side_zs(r->gather_side, v);  /* f (zs + offset) at the end: side_z's */
+    b->n++;
     return TIRENV_OK;
+}
+
+static void free_blocks(struct block *b)
+{
+    while (b) {
+        struct block *next = b->next;
+        free(b);
+        b = next;
+    }
 }
 
 static block block_of(const char *name)
@@ -618,41 +659,43 @@ void tirenv_rdf__free(tirenv_rdf__road *road)
 
 /* One pass over the file: its keys, its blocks, and a poly_line's rows checked as they pass
  * and not kept (their count, their first and last x and each side's first failure are), so
- * that the memory a road takes does not grow with its length. */
-int tirenv_rdf__open(const tirenv_source *src, tirenv_rdf__road **out, tirenv_diag *diag)
+ * that the memory a road takes does not grow with its length; r->gather keeps one side's
+ * rows (r->blocks) for a whole read. */
+static int scan(const tirenv_source *src, rdf *r, tirenv_rdf__road **out)
 {
     *out = NULL;
-    rdf r = {.at = {.file = src->name, .diag = diag}};
     tirenv_lines lines;
-    int status = tirenv_lines__init(&lines, src, 0, 1, diag);
+    int status = tirenv_lines__init(&lines, src, 0, 1, r->at.diag);
     if (status)
         return status;
     int got;
-    while (!status && (got = tirenv_lines__next(&lines, diag)) > 0) {
-        r.at.line = lines.line;
-        r.next_offset = lines.pos;
+    while (!status && (got = tirenv_lines__next(&lines, r->at.diag)) > 0) {
+        r->at.line = lines.line;
+        r->next_offset = lines.pos;
         char *text = lines.text;
-        if (r.at.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
+        if (r->at.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3;
-        r.at.base = text;
-        status = line_of(&r, text);
+        r->at.base = text;
+        status = line_of(r, text);
     }
     if (!status && got < 0)
         status = -got;
     tirenv_lines__free(&lines);
     tirenv_profile *small = NULL;
     if (!status)
-        status = road(&r, &small);
+        status = road(r, &small);
     tirenv_rdf__road *road = NULL;
     if (!status && !(road = malloc(sizeof *road)))
-        status = tirenv_error(diag, TIRENV_ENOMEM, src->name, 0, "", "out of memory");
+        status = tirenv_error(r->at.diag, TIRENV_ENOMEM, src->name, 0, "", "out of memory");
     if (!status) {
-        *road = (tirenv_rdf__road){.src = src, .f = r.unit[TIRENV_UNIT_LENGTH].value,
-                                   .offset = r.keys[K_OFFSET].value, .xz_offset = r.xz_offset,
-                                   .xz_line = r.xz_line, .check = r.check, .small = small};
+        *road = (tirenv_rdf__road){.src = src, .f = r->unit[TIRENV_UNIT_LENGTH].value,
+                                   .offset = r->keys[K_OFFSET].value,
+                                   .xz_offset = r->xz_offset, .xz_line = r->xz_line,
+                                   .check = r->check, .small = small};
         small = NULL;
-        if (!road->small && (r.check.deferred || r.keys[K_OFFSET].line > r.check.first_line))
-            status = recheck(road, diag);
+        if (!road->small &&
+            (r->check.deferred || r->keys[K_OFFSET].line > r->check.first_line))
+            status = recheck(road, r->at.diag);
     }
     tirenv_profile_free(small);
     if (status) {
@@ -661,6 +704,61 @@ int tirenv_rdf__open(const tirenv_source *src, tirenv_rdf__road **out, tirenv_di
     }
     *out = road;
     return TIRENV_OK;
+}
+
+int tirenv_rdf__open(const tirenv_source *src, tirenv_rdf__road **out, tirenv_diag *diag)
+{
+    rdf r = {.at = {.file = src->name, .diag = diag}};
+    return scan(src, &r, out);
+}
+
+/* The gathered rows as the profile on side: the blocks freed as the arrays take them. */
+static int gathered(const tirenv_rdf__road *road, rdf *r, tirenv_profile **out,
+                    tirenv_diag *diag)
+{
+    const char *name = road->src->name;
+    const size_t n = road->check.n;
+    double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
+    int status = TIRENV_OK;
+    if (!x || !z)
+        status = tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    size_t k = 0;
+    while (!status && r->blocks) {
+        struct block *b = r->blocks;
+        for (size_t i = 0; i < b->n && k < n; ++i, ++k) {
+            x[k] = road->f * b->x[i];
+            z[k] = road->f * (b->zs[i] + road->offset);
+        }
+        r->blocks = b->next;
+        free(b);
+    }
+    r->last_block = NULL;
+    if (!status && k != n)  /* a recheck found other rows than the scan: the file changed */
+        status = tirenv_error(diag, TIRENV_EIO, name, 0, "XZ_DATA", "%zu rows of (XZ_DATA) "
+                              "where %zu were read before; did the file change while being "
+                              "read?", n, k);
+    if (!status && !(*out = tirenv_profile_alloc(n, x, z)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    free(x);
+    free(z);
+    return status;
+}
+
+int tirenv_rdf__open_whole(const tirenv_source *src, tirenv_rdf_side side,
+                           tirenv_rdf__road **road, tirenv_profile **out, tirenv_diag *diag)
+{
+    *road = NULL;
+    *out = NULL;
+    if (!tirenv_rdf_side_name(side))
+        return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
+                            (int)side);
+    rdf r = {.at = {.file = src->name, .diag = diag}, .gather = 1, .gather_side = side};
+    int status = scan(src, &r, road);
+    if (!status && !(status = tirenv_rdf__side(*road, side, diag)))
+        status = (*road)->small ? tirenv_rdf__profile(*road, side, out, diag)
+                                : gathered(*road, &r, out, diag);
+    free_blocks(r.blocks);
+    return status;
 }
 
 int tirenv_rdf__side(const tirenv_rdf__road *road, tirenv_rdf_side side, tirenv_diag *diag)
@@ -722,14 +820,8 @@ int tirenv_rdf__profile(const tirenv_rdf__road *road, tirenv_rdf_side side,
 int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
                             tirenv_profile **out, tirenv_diag *diag)
 {
-    *out = NULL;
-    if (!tirenv_rdf_side_name(side))
-        return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
-                            (int)side);
     tirenv_rdf__road *road;
-    int status = tirenv_rdf__open(src, &road, diag);
-    if (!status)
-        status = tirenv_rdf__profile(road, side, out, diag);
+    const int status = tirenv_rdf__open_whole(src, side, &road, out, diag);
     tirenv_rdf__free(road);
     return status;
 }

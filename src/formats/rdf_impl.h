@@ -2,8 +2,9 @@
 /* Private to src/formats: an RDF road read in bounded memory (rdf.c). One pass over the file
  * (tirenv_rdf__open) reads its keys and checks a poly_line's rows as they pass, keeping none
  * of them; its rows are then read again one at a time as they are wanted (tirenv_rdf__rows),
- * by the streamed sweep, the level's reader or the whole read, so that a long road is never
- * in memory whole unless a caller gathers it (tirenv_rdf__profile). */
+ * by the streamed sweep or the level's reader, so that a long road is never in memory whole
+ * unless a caller wants it whole (tirenv_rdf__open_whole, which gathers one side's rows in
+ * the same pass, or tirenv_rdf__profile after a scan). */
 #ifndef TIRENV_FORMATS_RDF_IMPL_H
 #define TIRENV_FORMATS_RDF_IMPL_H
 
@@ -35,6 +36,12 @@ typedef struct tirenv_rdf__rows tirenv_rdf__rows;
  * (a row that fails tirenv_profile_validate on that side, tirenv_rdf__side) is reported
  * here, naming file, line, column and key. */
 int tirenv_rdf__open(const tirenv_source *src, tirenv_rdf__road **out, tirenv_diag *diag);
+
+/* tirenv_rdf__open that also gathers the rows of side as they pass, for a road read whole:
+ * *out the profile (32 bytes a row at the peak, one reading of the file); on side's own error
+ * *road is set and *out NULL. */
+int tirenv_rdf__open_whole(const tirenv_source *src, tirenv_rdf_side side,
+                           tirenv_rdf__road **road, tirenv_profile **out, tirenv_diag *diag);
 
 /* Frees the road; NULL is a no-op. */
 void tirenv_rdf__free(tirenv_rdf__road *road);

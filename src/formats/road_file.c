@@ -180,6 +180,20 @@ int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
     return status;
 }
 
+int tirenv_road_file__rdf_whole(tirenv_road_file *f, tirenv_rdf_side side,
+                                tirenv_profile **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    const tirenv_rdf__road *road;
+    if (f->rdf) {  /* scanned already: the rows read once more */
+        const int status = tirenv_road_file__rdf(f, side, &road, diag);
+        return status ? status : tirenv_rdf__profile(road, side, out, diag);
+    }
+    const tirenv_source *s;
+    const int status = tirenv_road_file__source(f, &s, diag);
+    return status ? status : tirenv_rdf__open_whole(s, side, &f->rdf, out, diag);
+}
+
 /* ---- opening ------------------------------------------------------------------------------ */
 
 void tirenv_road_file_free(tirenv_road_file *f)

@@ -30,6 +30,11 @@ int tirenv_road_file__crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_di
 int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
                           const tirenv_rdf__road **out, tirenv_diag *diag);
 
+/* The RDF road in f on side as a profile: gathered in the scan's one pass where f has not
+ * been scanned yet (tirenv_rdf__open_whole, the scan then kept by f), else from its rows. */
+int tirenv_road_file__rdf_whole(tirenv_road_file *f, tirenv_rdf_side side,
+                                tirenv_profile **out, tirenv_diag *diag);
+
 /* tirenv_rdf_read from a source (rdf.c). */
 int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
                             tirenv_profile **out, tirenv_diag *diag);
