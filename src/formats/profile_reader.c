@@ -25,12 +25,9 @@ static void free_all(tirenv_profile *out[], size_t n)
     }
 }
 
-int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *diag)
+int tirenv_road_file_crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_diag *diag)
 {
-    *out = NULL;
-    const tirenv_source *s;
-    const int status = tirenv_road_file__source(f, &s, diag);
-    return status ? status : tirenv_crg__open_source(s, out, diag);
+    return tirenv_road_file__crg(f, out, diag);
 }
 
 /* One profile of a 2-D road (CSV or RDF). */

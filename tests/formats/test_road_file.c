@@ -167,10 +167,12 @@ static void test_fifo_read_once(void **state)
         assert_string_equal(tirenv_road_file_name(f), tirenv_test_path(fx, "fifo", fifo));
         read_all_ways(f, want);
         if (formats[k] == TIRENV_PROFILE_CRG) {  /* the CRG handle, from the same copy */
-            tirenv_crg *crg = NULL;
+            const tirenv_crg *crg = NULL, *again = NULL;
             assert_int_equal(tirenv_road_file_crg(f, &crg, &d), TIRENV_OK);
             assert_int_equal(tirenv_crg_long_sections(crg), 2);
-            tirenv_crg_free(crg);
+            /* the file's one handle, its readers' too (its pass at open made once) */
+            assert_int_equal(tirenv_road_file_crg(f, &again, &d), TIRENV_OK);
+            assert_ptr_equal(again, crg);
         }
         tirenv_road_file_free(f);
         assert_fed(writer);
