@@ -5,7 +5,9 @@
  * same road as an RDF file (read in bounded memory, docs/formats.md section 5), measured as a
  * user meets them: this program run as a child on road files it wrote first, its peak
  * resident set from the kernel (wait4's ru_maxrss), so that the bench's own memory does not
- * count. The files (some 250 MB of CSV and 360 MB of RDF over 10 km) are written in a scratch
+ * count, except as a floor: the kernel counts the child's copy of the bench at the fork (its
+ * resident set then: 4 MB with --memory alone, some 13 MB after the --quick timings), which a
+ * child that stays smaller (--stream over the RDF road) reports instead of its own. The files (some 250 MB of CSV and 360 MB of RDF over 10 km) are written in a scratch
  * directory made as an output directory's staging one (tirenv_outdir, never committed): a
  * signal that ends the bench ends the child first and removes it (signals.c), and one left by
  * a SIGKILL is removed by the next run. */
