@@ -683,7 +683,7 @@ static int bench_road(const char *tire_path, const tirenv_tire *tire, long repea
     if (!status)
         status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
     if (!status)
-        status = cli_bench_memory(tire_path, tire, memory_length, &diag);
+        status = cli_bench_memory_fresh(tire_path, memory_length < 10000, &diag);
     tirenv_nn_free(nn);
     free(pt);
     free(x);
