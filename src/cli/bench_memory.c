@@ -9,10 +9,10 @@
  * resident set then), which a child that stays smaller (--stream over the RDF road) would
  * report instead of its own. So the full bench takes them from a fresh tirenv bench --memory
  * (cli_bench_memory_fresh), some 4 MB at the fork, not from itself after its timings (13 MB
- * after --quick's). The files (some 250 MB of CSV and 360 MB of RDF over 10 km) are written in a scratch
- * directory made as an output directory's staging one (tirenv_outdir, never committed): a
- * signal that ends the bench ends the child first and removes it (signals.c), and one left by
- * a SIGKILL is removed by the next run. */
+ * after --quick's). The files (some 250 MB of CSV and 360 MB of RDF over 10 km) are written
+ * in a scratch directory made as an output directory's staging one (tirenv_outdir, never
+ * committed): a signal that ends the bench ends the child first and removes it (signals.c),
+ * and one left by a SIGKILL is removed by the next run. */
 #define _GNU_SOURCE /* wait4 */
 #include <errno.h>
 #include <jansson.h>

@@ -2,8 +2,9 @@
 # tirenv bench's memory part (bench --memory --quick: a 100 m road) ended by a signal once
 # the road is written (over 10 km some 250 MB), while a child computes on it: the child ends
 # first, removing its temporary file, and the scratch directory in $TMPDIR goes with the
-# bench (SIGTERM, exit 143), so nothing is left. After a SIGKILL, which cannot be caught, the child dies with the bench
-# (PR_SET_PDEATHSIG) and the next run removes the scratch directory left behind.
+# bench (SIGTERM, exit 143), so nothing is left. After a SIGKILL, which cannot be caught,
+# the child dies with the bench (PR_SET_PDEATHSIG) and the next run removes the scratch
+# directory left behind.
 # Usage: tests/cli/cli_bench_killed.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016
 . "$(dirname "$0")/../lib/clilib.sh"

@@ -59,7 +59,8 @@ run "$bin" envelope $cam --profile mid.rdf --stream --x-from 1 --x-to 2 -o s.csv
 check "a bad row past the sweep's end: the same error, no file" \
     '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
 run "$bin" envelope $cam --profile mid.rdf --stream
-check "to standard output: the same error, no row" '[ $rc -eq 2 ] && cmp -s err want && [ ! -s out ]'
+check "to standard output: the same error, no row" \
+    '[ $rc -eq 2 ] && cmp -s err want && [ ! -s out ]'
 bad back.rdf 17.25 '3 0 0'
 want_error back.rdf
 run "$bin" envelope $cam --profile back.rdf --stream --x-to 2 -o s.csv
