@@ -419,6 +419,60 @@ static void test_checked_in_passing(void **state)
     }
 }
 
+/* A road of 70,001 rows (three of the whole read's blocks of 32,768, the reader's 64 KB window
+ * some forty times over) in mm with an OFFSET: read whole and a row at a time, both give
+ * f (z + OFFSET) of each row, the side's, bit for bit. */
+static void test_long_road(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    enum { N = 70001 };
+    char path[600];
+    FILE *fp = fopen(tirenv_test_path(fx, "long.rdf", path), "w");
+    assert_non_null(fp);
+    fputs("[UNITS]\nLENGTH = 'mm'\n[MODEL]\nMETHOD = '2D'\nROAD_TYPE = 'poly_line'\n"
+          "[PARAMETERS]\nOFFSET = 2.5\n(XZ_DATA)\n", fp);
+    for (int k = 0; k < N; k++) {
+        if (k % 9000 == 0)
+            fputs("$ a comment in the table\n\n", fp);
+        fprintf(fp, "%d %.6f %.6f\n", k, 3.0 * sin(0.0137 * k), 2.0 * cos(0.0071 * k));
+    }
+    fclose(fp);
+    for (int side = 0; side < 3; side++) {
+        tirenv_profile *p = NULL;
+        tirenv_diag d;
+        assert_int_equal(tirenv_rdf_read(path, (tirenv_rdf_side)side, &p, &d), TIRENV_OK);
+        assert_int_equal(tirenv_profile_size(p), N);
+        tirenv_profile_source src = tirenv_profile_source_default();
+        src.rdf_side = (tirenv_rdf_side)side;
+        tirenv_profile_file_reader *r = NULL;
+        assert_int_equal(tirenv_profile_file_reader_open(path, &src, 1, NULL, &r, &d),
+                         TIRENV_OK);
+        for (size_t k = 0; k < N; k++) {
+            double x, z;
+            int got = 0;
+            assert_int_equal(tirenv_profile_file_reader_next(r, &x, &z, &got, &d), TIRENV_OK);
+            assert_true(got);
+            /* the row as the file has it, read back as strtod reads it */
+            char zl[32], zr[32];
+            snprintf(zl, sizeof zl, "%.6f", 3.0 * sin(0.0137 * (double)k));
+            snprintf(zr, sizeof zr, "%.6f", 2.0 * cos(0.0071 * (double)k));
+            const double l = strtod(zl, NULL), rr = strtod(zr, NULL);
+            const double zs = side == TIRENV_RDF_LEFT ? l : side == TIRENV_RDF_RIGHT ? rr
+                                                                                  : 0.5 * (l + rr);
+            assert_bits_equal(x, 0.001 * (double)k);
+            assert_bits_equal(z, 0.001 * (zs + 2.5));
+            assert_bits_equal(tirenv_profile_x(p)[k], x);
+            assert_bits_equal(tirenv_profile_z(p)[k], z);
+        }
+        double x, z;
+        int got = 1;
+        assert_int_equal(tirenv_profile_file_reader_next(r, &x, &z, &got, &d), TIRENV_OK);
+        assert_false(got);
+        tirenv_profile_file_reader_free(r);
+        tirenv_profile_free(p);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -434,6 +488,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_malformed, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_checked_in_passing, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_long_road, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
