@@ -79,9 +79,10 @@ int tirenv_profile_detect(const char *path, tirenv_profile_format *f, tirenv_dia
 int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                           const double v[], tirenv_profile *out[], tirenv_diag *diag);
 
-/* The OpenCRG road in f (a .crg by content), as tirenv_crg_open reads it; the caller frees it
- * (tirenv_crg_free) before f. */
-int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *diag);
+/* The OpenCRG road in f (a .crg by content), as tirenv_crg_open reads it: opened at the first
+ * call (or the first reader's, read or extent) and shared with them, so that its pass at
+ * open is made once; owned by f (never tirenv_crg_free it), valid until tirenv_road_file_free. */
+int tirenv_road_file_crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_diag *diag);
 
 /* tirenv_road_file_read of a file opened for this one read: one track (src NULL: the
  * defaults), or n. */
@@ -92,10 +93,11 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
 
 /* A road file read a row at a time, whatever its format, for a streamed sweep
  * (tirenv_model_stream_tracks, or tirenv_model_stream for one track): each row is an x (m) and
- * the heights (m) of n tracks there. A CSV is read row by row, a CRG
- * a block of rows at a time (a tirenv_crg_track_reader per track: memory of a few blocks,
- * whatever the road's length), an RDF road whole (its poly_line is small). A CSV or RDF road is
- * 2-D: every track gets its height. */
+ * the heights (m) of n tracks there. A CSV is read row by row, a CRG a block of rows at a time
+ * (each block once for every track: memory of a few blocks, whatever the road's length), an
+ * RDF road's poly_line a line at a time (a 64 KB window of the file, after a scan at the first
+ * reader that checks its rows and keeps none). A CSV or RDF road is 2-D: every track gets its
+ * height. */
 typedef struct tirenv_profile_file_reader tirenv_profile_file_reader;
 
 /* A reader of f from its start for n >= 1 tracks at v[n] (m; v NULL: every track at
@@ -119,8 +121,8 @@ int tirenv_profile_file_reader_source(void *reader, double *x, double z[], int *
  * without the rows, which are then a reader's to read and check: a CSV's header, first row and
  * last row (found from the file's end; where it cannot be told so, every row); an OpenCRG
  * road's first and last u from its pass at open (which checks its rows, not the tracks'
- * heights), an RDF road's first and last x from its poly_line, each kept by f and shared with
- * its readers, so that neither is read again. Errors name file, line and field. */
+ * heights), an RDF road's first and last x from its scan (which checks its rows and keeps
+ * none), each kept by f and shared with its readers, so that neither is made again. Errors name file, line and field. */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                             const double v[], int every_row, double *first, double *last,
                             tirenv_diag *diag);

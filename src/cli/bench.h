@@ -43,10 +43,17 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
 /* tirenv envelope --model cam in whole mode (contact length 0.33 m, the tire file tire_path,
  * without --set; tire gives its radius for the count of positions) over a class C road of
  * length m at 1 mm (seed 1), into a CSV file, run as a child process of this program after
- * tirenv road has written the road to a temporary directory (removed after): its peak
- * resident set (envelope_whole_peak_mb, 10^6 bytes), wall time (envelope_whole_s), the road's
- * length (envelope_whole_road_m) and positions (envelope_whole_positions). */
+ * tirenv road has written the road to a scratch directory (removed after, or by a signal):
+ * its peak resident set (envelope_whole_peak_mb, 10^6 bytes), wall time (envelope_whole_s),
+ * the road's length (envelope_whole_road_m) and positions (envelope_whole_positions); then
+ * --stream over the road converted to RDF (envelope_stream_rdf_peak_mb, _s). */
 int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double length,
                      tirenv_diag *diag);
+
+/* The same figures from a fresh process, tirenv bench --memory --json (--quick where quick),
+ * run as a child and its figures taken as this bench's: the kernel counts the resident set
+ * of the process a child is forked from in the child's peak, which a bench that has run its
+ * timings would add. */
+int cli_bench_memory_fresh(const char *tire_path, int quick, tirenv_diag *diag);
 
 #endif

@@ -68,7 +68,7 @@ typedef struct {
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv bench [--repeat N] [--quick] [--json] [--tire FILE] "
+    fputs("usage: tirenv bench [--repeat N] [--quick] [--memory] [--json] [--tire FILE] "
           "[--set KEY=VALUE]...\n"
           "\n"
           "Times tirenv_model_envelope over a fixed sweep: contact length 0.38 m, cleat\n"
@@ -92,13 +92,17 @@ static void usage(FILE *fp)
           "cam, nn and springs, against real time (best of at most 3 runs).\n"
           "Last the memory: tirenv envelope --model cam in whole mode over a 10 km class C\n"
           "road at 1 mm (100 m with --quick) into a CSV file, run as a child process (the tire\n"
-          "file, without --set), its peak resident set (target at most 400 MB over 10 km).\n"
+          "file, without --set), its peak resident set (target at most 400 MB over 10 km),\n"
+          "and --stream over the same road written as an RDF file (its rows read as the tire\n"
+          "rolls). The road files go to a scratch directory in $TMPDIR (else /tmp), removed\n"
+          "at the end or when a signal ends the bench.\n"
           "The ring reference tire runs the cleat sweep too (the solver table's last row).\n"
           "\n"
           "options:\n"
           "  --repeat N           runs per method, best kept (default 5)\n"
           "  --quick              one run each and 100 m roads: every figure in seconds,\n"
           "                       rougher\n"
+          "  --memory             the memory alone (the last part), the timings skipped\n"
           "  --json               print every figure as one JSON object of name: number\n"
           "                       pairs (positions/s, seconds, ratios) instead of the tables\n",
           fp);
@@ -679,7 +683,7 @@ static int bench_road(const char *tire_path, const tirenv_tire *tire, long repea
     if (!status)
         status = cli_bench_ride(tire, road, nn, n, x, repeat < 3 ? repeat : 3, &diag);
     if (!status)
-        status = cli_bench_memory(tire_path, tire, memory_length, &diag);
+        status = cli_bench_memory_fresh(tire_path, memory_length < 10000, &diag);
     tirenv_nn_free(nn);
     free(pt);
     free(x);
@@ -690,11 +694,12 @@ static int bench_road(const char *tire_path, const tirenv_tire *tire, long repea
 int cli_bench_main(int argc, char *argv[])
 {
     long repeat = 0; /* 0: not given */
-    int quick = 0, json = 0;
+    int quick = 0, json = 0, memory = 0;
     const cli_opt own[] = {
         {.name = "repeat", .kind = CLI_COUNT, .dst = &repeat, .min = 1, .max = 1000000,
          .what = "a whole number from 1 to 1000000"},
         {.name = "quick", .kind = CLI_FLAG, .dst = &quick},
+        {.name = "memory", .kind = CLI_FLAG, .dst = &memory},
         {.name = "json", .kind = CLI_FLAG, .dst = &json},
         {.name = NULL},
     };
@@ -729,9 +734,16 @@ int cli_bench_main(int argc, char *argv[])
     char buf[1024];
     bench_result r[N_CASES];
     memset(r, 0, sizeof r);
-    for (size_t i = 0; i < N_CASES && !code; ++i)
+    for (size_t i = 0; i < N_CASES && !code && !memory; ++i)
         code = run_case(&tire, i, prof, x, repeat, &r[i]);
-    if (!code) {
+    if (!code && memory) {  /* the last part alone */
+        cli_bench_figure("quick", quick);
+        tirenv_diag diag;
+        tirenv_diag_clear(&diag);
+        const int status = cli_bench_memory(cli_tire_path(&o, buf, sizeof buf), &tire,
+                                            memory_length, &diag);
+        code = status ? cli_fail(status, &diag) : CLI_EXIT_OK;
+    } else if (!code) {
         cli_bench_figure("repeat", (double)repeat);
         cli_bench_figure("quick", quick);
         cli_bench_figure("cleat_positions", SWEEP_N);
@@ -748,7 +760,7 @@ int cli_bench_main(int argc, char *argv[])
             code = cli_bench_fmt(repeat);
     }
     tirenv_profile_free(prof);
-    if (!code)
+    if (!code && !memory)
         code = bench_road(cli_tire_path(&o, buf, sizeof buf), &tire, repeat);
     if (!code && as_json) {
         char *text = json_dumps(figures, JSON_INDENT(2)); /* 17 digits: reads back the same */

@@ -187,17 +187,18 @@ static int crg_copy(const tirenv_crg *crg, const convert *cv, tirenv_diag *diag)
     return tirenv_crg_writer_commit(w, diag);
 }
 
-/* A .crg track to CSV, a block of rows at a time, so a long road needs little memory. */
+/* A .crg track to CSV, a block of rows at a time, so a long road needs little memory: the
+ * open file's row reader (tirenv_road_file_reader), which envelope --stream reads too. */
 static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
                       tirenv_diag *diag)
 {
-    tirenv_crg_track_reader *r;
-    int status = tirenv_crg_track_reader_open(crg, &cv->src.crg, &r, diag);
+    tirenv_profile_file_reader *r;
+    int status = tirenv_road_file_reader(cv->file, &cv->src, 1, NULL, &r, diag);
     if (status)
         return status;
     tirenv_outfile *f;
     if ((status = tirenv_outfile_open(&f, cv->out, diag))) {
-        tirenv_crg_track_reader_free(r);
+        tirenv_profile_file_reader_free(r);
         return status;
     }
     char comment[160], v[TIRENV_FMT_G_SIZE];
@@ -209,14 +210,14 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     double u, z;
     int got;
     char a[TIRENV_FMT_G_SIZE], b[TIRENV_FMT_G_SIZE];
-    while (!(status = tirenv_crg_track_reader_next(r, &u, &z, &got, diag)) && got) {
+    while (!(status = tirenv_profile_file_reader_next(r, &u, &z, &got, diag)) && got) {
         tirenv_fmt_shortest(u, a);  /* the heights read back exactly, as every writer's */
         tirenv_fmt_shortest(z, b);
         fprintf(fp, "%s,%s\n", a, b);
         range[2] = fmin(range[2], z);
         range[3] = fmax(range[3], z);
     }
-    tirenv_crg_track_reader_free(r);
+    tirenv_profile_file_reader_free(r);
     if (status) {
         tirenv_outfile_abort(f);
         return status;
@@ -226,10 +227,12 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     return tirenv_outfile_commit(f, diag);
 }
 
+/* Every read of the .crg goes through the open file's one handle (tirenv_road_file_crg): its
+ * pass at open made once, for the copy, the row reader or the track read whole. */
 static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, double range[4],
                     tirenv_diag *diag)
 {
-    tirenv_crg *crg;
+    const tirenv_crg *crg;
     int status = tirenv_road_file_crg(cv->file, &crg, diag);
     if (status)
         return status;
@@ -242,7 +245,7 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
         status = crg_copy(crg, cv, diag);
     } else {
         tirenv_profile *p;
-        if (!(status = tirenv_crg_track(crg, &cv->src.crg, &p, diag))) {
+        if (!(status = tirenv_road_file_read(cv->file, &cv->src, 1, NULL, &p, diag))) {
             status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
             const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
             range[0] = x[0];
@@ -254,7 +257,6 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
             tirenv_profile_free(p);
         }
     }
-    tirenv_crg_free(crg);
     return status;
 }
 

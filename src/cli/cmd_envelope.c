@@ -54,12 +54,12 @@ static void usage(FILE *fp)
     fputs("  --stream             with --profile: read the file as the tire rolls, in memory\n"
           "                       bounded by the tire's reach whatever the road's length\n"
           "                       (into a file the road's rows are read once: a CSV's ends\n"
-          "                       from its first and last rows, an OpenCRG road's from its\n"
-          "                       check at open, an RDF road's from its poly_line; to\n"
-          "                       standard output or a FIFO twice, first to check every\n"
-          "                       row; an OpenCRG road a block of rows at a time, an RDF\n"
-          "                       road whole; a pipe or /dev/stdin is kept in memory, at\n"
-          "                       most 256 MiB); the network's warnings come after the rows\n",
+          "                       from its first and last rows, an OpenCRG or RDF road's\n"
+          "                       from its check at open; to standard output or a FIFO\n"
+          "                       twice, first to check every row; an OpenCRG road a block\n"
+          "                       of rows at a time, an RDF road a line at a time; a pipe\n"
+          "                       or /dev/stdin is kept in memory, at most 256 MiB); the\n"
+          "                       network's warnings come after the rows\n",
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
@@ -294,8 +294,8 @@ static int stream_row(void *ctx, const tirenv_point *pt)
 
 /* The ends of the road for --stream's default sweep. Into a file, which reaches its place
  * only whole, the road's rows are read once: its ends without them (tirenv_road_file_extent:
- * a CSV's first and last rows, an OpenCRG road's pass at open, which checks its rows and which
- * the sweep's reader then shares, an RDF road's poly_line, read whole once for every reader),
+ * a CSV's first and last rows, an OpenCRG road's pass at open or an RDF road's scan, which
+ * check its rows and which the sweep's reader then shares),
  * its rows as the tire rolls, and those past the sweep's reach after it (stream_rest), so that
  * a bad row anywhere, or a track that needs a missing OpenCRG value, fails as in whole mode.
  * Written through (standard output, a FIFO), where rows cannot be taken back, every row of

@@ -7,18 +7,31 @@
 #include <errno.h>
 #include <signal.h>
 #include <string.h>
+#include <sys/wait.h>
 
 #include "tirenv/outfile.h"
 
 static const int handled[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 enum { N_HANDLED = sizeof handled / sizeof handled[0] };
 
-/* Only async-signal-safe calls: unlink, getdents64, rmdir, close inside the cleanup, then
- * signal and raise. The signal stays blocked until the handler returns, and is then
- * delivered with the default action: the exit status says what killed the program. */
+static volatile sig_atomic_t child;  /* cli_signals_child's */
+
+void cli_signals_child(pid_t pid)
+{
+    child = (sig_atomic_t)pid;
+}
+
+/* Only async-signal-safe calls: kill and waitpid for the child, unlink, getdents64, rmdir,
+ * close inside the cleanup, then signal and raise. The signal stays blocked until the
+ * handler returns, and is then delivered with the default action: the exit status says what
+ * killed the program. */
 static void on_signal(int sig)
 {
     const int saved = errno;  /* the interrupted code's, should raise return (a blocked sig) */
+    const pid_t pid = (pid_t)child;
+    if (pid > 0 && kill(pid, SIGTERM) == 0)
+        while (waitpid(pid, NULL, 0) < 0 && errno == EINTR)
+            ;
     tirenv_cleanup_on_signal();
     signal(sig, SIG_DFL);
     raise(sig);

@@ -25,23 +25,17 @@ static void free_all(tirenv_profile *out[], size_t n)
     }
 }
 
-int tirenv_road_file_crg(tirenv_road_file *f, tirenv_crg **out, tirenv_diag *diag)
+int tirenv_road_file_crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_diag *diag)
 {
-    *out = NULL;
-    const tirenv_source *s;
-    const int status = tirenv_road_file__source(f, &s, diag);
-    return status ? status : tirenv_crg__open_source(s, out, diag);
+    return tirenv_road_file__crg(f, out, diag);
 }
 
 /* One profile of a 2-D road (CSV or RDF). */
 static int read_2d(tirenv_road_file *f, tirenv_rdf_side side, tirenv_profile **out,
                    tirenv_diag *diag)
 {
-    if (tirenv_road_file_format(f) == TIRENV_PROFILE_RDF) {
-        const tirenv_source *s;
-        const int status = tirenv_road_file__source(f, &s, diag);
-        return status ? status : tirenv_rdf__read_source(s, side, out, diag);
-    }
+    if (tirenv_road_file_format(f) == TIRENV_PROFILE_RDF)
+        return tirenv_road_file__rdf_whole(f, side, out, diag);
     FILE *fp = tirenv_road_file__stream(f, diag);
     return fp ? tirenv_profile_csv__read(fp, tirenv_road_file_name(f), out, diag)
               : TIRENV_ENOMEM;
@@ -101,9 +95,10 @@ int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
 
 /* ---- a row at a time ------------------------------------------------------------------- */
 
-/* An OpenCRG road's open handle and an RDF road's profile are the file's
- * (tirenv_road_file__crg, tirenv_road_file__rdf), shared by its readers: read once whatever
- * the number of readers and tirenv_road_file_extent's calls. */
+/* An OpenCRG road's open handle and an RDF road's scan are the file's
+ * (tirenv_road_file__crg, tirenv_road_file__rdf), shared by its readers: made once whatever
+ * the number of readers and tirenv_road_file_extent's calls. Each reader then reads its rows
+ * from a window of its own: an OpenCRG road a block of rows, an RDF road a line. */
 struct tirenv_profile_file_reader {
     tirenv_profile_format format;
     size_t n;                         /* tracks */
@@ -111,8 +106,8 @@ struct tirenv_profile_file_reader {
     tirenv_profile_csv__reader *csv;  /* CSV: row by row */
     const tirenv_crg *crg;            /* CRG: the open file (the file's) and its tracks */
     tirenv_crg__tracks_reader *tracks;
-    const tirenv_profile *rdf;        /* RDF: the whole road (the file's) */
-    size_t next;                      /* RDF: the vertex next returns */
+    const tirenv_rdf__road *rdf;      /* RDF: the scanned road (the file's) */
+    tirenv_rdf__rows *rows;           /* ... and its rows */
 };
 
 void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r)
@@ -121,6 +116,7 @@ void tirenv_profile_file_reader_free(tirenv_profile_file_reader *r)
         return;
     tirenv_profile_csv__reader_free(r->csv);
     tirenv_crg__tracks_reader_free(r->tracks);
+    tirenv_rdf__rows_free(r->rows);
     tirenv_road_file_free(r->owned);
     free(r);
 }
@@ -148,7 +144,8 @@ int tirenv_road_file_reader(tirenv_road_file *f, const tirenv_profile_source *sr
         break;
     }
     case TIRENV_PROFILE_RDF:
-        status = tirenv_road_file__rdf(f, s.rdf_side, &r->rdf, diag);
+        if (!(status = tirenv_road_file__rdf(f, s.rdf_side, &r->rdf, diag)))
+            status = tirenv_rdf__rows_open(r->rdf, s.rdf_side, &r->rows, diag);
         break;
     case TIRENV_PROFILE_CRG:
         if (!(status = tirenv_road_file__crg(f, &r->crg, diag)))
@@ -204,9 +201,9 @@ static int extent_read(tirenv_road_file *f, const tirenv_profile_source *src, si
 /* The ends of an OpenCRG or RDF road without its rows: a reader's, opened (which checks the
  * tracks' positions against the road) and not read. The OpenCRG road's first and last u are
  * its rows' as the reader gives them (u0 + i du, i = 0 and nu - 1: tirenv_crg_u_end's
- * product), the RDF road's its poly_line's first and last x, both from what the readers of f
- * share (tirenv_road_file__crg, __rdf), so that the rows are read once, by the reader that
- * follows. */
+ * product), the RDF road's its poly_line's first and last x as its scan found them, both from
+ * what the readers of f share (tirenv_road_file__crg, __rdf), so that the rows are read once
+ * more, by the reader that follows. */
 static int extent_ends(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                        const double v[], double *first, double *last, tirenv_diag *diag)
 {
@@ -218,7 +215,7 @@ static int extent_ends(tirenv_road_file *f, const tirenv_profile_source *src, si
         *first = tirenv_crg_u_start(r->crg);
         *last = tirenv_crg_u_end(r->crg);
     } else {
-        tirenv_profile_extent(r->rdf, first, last);
+        tirenv_rdf__extent(r->rdf, first, last);
     }
     tirenv_profile_file_reader_free(r);
     return TIRENV_OK;
@@ -270,12 +267,7 @@ int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, do
         status = tirenv_profile_csv__reader_next(r->csv, x, &z[0], got, diag);
         break;
     case TIRENV_PROFILE_RDF:
-        if (r->next < tirenv_profile_size(r->rdf)) {
-            *x = tirenv_profile_x(r->rdf)[r->next];
-            z[0] = tirenv_profile_z(r->rdf)[r->next];
-            r->next++;
-            *got = 1;
-        }
+        status = tirenv_rdf__rows_next(r->rows, x, &z[0], got, diag);
         break;
     }
     for (size_t k = 1; *got && k < r->n; ++k)

@@ -10,6 +10,7 @@
 #include <strings.h>
 
 #include "formats/propfile.h"
+#include "formats/rdf_impl.h"
 #include "formats/road_file_impl.h"
 #include "formats/units.h"
 #include "io/io.h"
@@ -47,6 +48,17 @@ typedef struct {
 
 typedef enum { B_OTHER, B_HEADER, B_UNITS, B_MODEL, B_PARAMETERS } block;
 
+/* A whole read's rows in file units, x and the side's z (before OFFSET), in blocks that are
+ * freed as the profile's arrays take them, so that a road whole takes 32 bytes a row at its
+ * peak (the blocks or the arrays, then the arrays and the profile), not a growing array's up
+ * to 48 and a second reading of the file. */
+enum { BLOCK_ROWS = 32768 };
+struct block {
+    struct block *next;
+    size_t n;
+    double x[BLOCK_ROWS], zs[BLOCK_ROWS];
+};
+
 typedef struct {
     tirenv_propfile__where at; /* the source's name, the line being read */
     block blk;
@@ -57,9 +69,12 @@ typedef struct {
     setting unit[TIRENV_UNIT_KINDS]; /* value: factor to SI */
     char method[16], road_type[24];
     size_t method_line, road_type_line;
-    double *x, *zl, *zr;       /* (XZ_DATA), file units */
-    size_t *row_line;
-    size_t n, cap;
+    size_t next_offset;        /* byte offset of the line after the one being read */
+    size_t xz_offset;          /* ... after (XZ_DATA)'s: where its rows start */
+    tirenv_rdf__check check;   /* the rows as the scan meets them */
+    int gather;                /* keep the rows of gather_side as they pass (a whole read) */
+    tirenv_rdf_side gather_side;
+    struct block *blocks, *last_block;
 } rdf;
 
 #define fail(r, ...) tirenv_propfile__fail(&(r)->at, __VA_ARGS__)
@@ -196,55 +211,126 @@ static int key_line(rdf *r, char *text)
                 "BEVEL_EDGE_LENGTH, DIRECTION, or the (XZ_DATA) table");
 }
 
-static int xz_row(rdf *r, char *text)
+/* One row of (XZ_DATA): x, z_left and z_right in file units. */
+static int xz_parse(const tirenv_propfile__where *at, char *text, double v[3])
 {
-    double v[3];
     char *p = text;
     for (int k = 0; k < 4; k++) {
         while (*p == ' ' || *p == '\t' || *p == ',')
             p++;
         if (k == 3) {
             if (*p)
-                return fail(r, p, "XZ_DATA", "unexpected '%.40s' after three numbers; expected "
-                            "rows of x, z_left, z_right", p);
+                return tirenv_propfile__fail(at, p, "XZ_DATA", "unexpected '%.40s' after three "
+                                             "numbers; expected rows of x, z_left, z_right", p);
             break;
         }
         static const char *const col[3] = {"x", "z_left", "z_right"};
         if (!*p)
-            return fail(r, p, "XZ_DATA", "missing %s; expected rows of x, z_left, z_right",
-                        col[k]);
+            return tirenv_propfile__fail(at, p, "XZ_DATA", "missing %s; expected rows of x, "
+                                         "z_left, z_right", col[k]);
         char *end;
         v[k] = strtod(p, &end);
         if (end == p || !isfinite(v[k]) || (*end && !strchr(" \t,", *end)))
-            return fail(r, p, "XZ_DATA", "%s: expected a finite number, got '%.*s'", col[k],
-                        (int)(strcspn(p, " \t,") < 30 ? strcspn(p, " \t,") : 30), p);
+            return tirenv_propfile__fail(at, p, "XZ_DATA", "%s: expected a finite number, got "
+                                         "'%.*s'", col[k], (int)(strcspn(p, " \t,") < 30
+                                                                 ? strcspn(p, " \t,") : 30), p);
         p = end;
     }
-    if (r->n == r->cap) {
-        const size_t cap = r->cap ? 2 * r->cap : 64;
-        double *x = realloc(r->x, cap * sizeof *x);
-        if (x)
-            r->x = x;
-        double *zl = x ? realloc(r->zl, cap * sizeof *zl) : NULL;
-        if (zl)
-            r->zl = zl;
-        double *zr = zl ? realloc(r->zr, cap * sizeof *zr) : NULL;
-        if (zr)
-            r->zr = zr;
-        size_t *ln = zr ? realloc(r->row_line, cap * sizeof *ln) : NULL;
-        if (ln)
-            r->row_line = ln;
-        if (!ln)
+    return TIRENV_OK;
+}
+
+/* The height of a row on side in file units, before OFFSET. */
+static double side_zs(tirenv_rdf_side side, const double v[3])
+{
+    return side == TIRENV_RDF_LEFT ? v[1] : side == TIRENV_RDF_RIGHT ? v[2] : 0.5 * (v[1] + v[2]);
+}
+
+/* ... in m: f (zs + offset), as the whole read always took it. */
+static double side_z(tirenv_rdf_side side, const double v[3], double f, double offset)
+{
+    return f * (side_zs(side, v) + offset);
+}
+
+/* The checks of tirenv_profile_validate (its words, its order: x finite, z finite, x not
+ * decreasing, no third vertex at one x) on the row just read, for the three sides at once, so
+ * that a road's rows are checked as they pass, without being kept: the first failure of each
+ * side is kept (its line and words), and reported as the whole read reported it, after the
+ * file's other checks (tirenv_rdf__side). */
+static void check_row(tirenv_rdf__check *c, const double v[3], double f, double offset,
+                      size_t line)
+{
+    const size_t k = c->n++, vertex = k + 1;
+    const double x = f * v[0];
+    for (int s = 0; s < 3; s++) {
+        tirenv_rdf__bad *b = &c->bad[s];
+        if (b->line)
+            continue;
+        const double z = side_z((tirenv_rdf_side)s, v, f, offset);
+        if (!isfinite(x))
+            snprintf(b->message, sizeof b->message,
+                     "vertex %zu: x = %g is not finite; expected a finite number", vertex, x);
+        else if (!isfinite(z))
+            snprintf(b->message, sizeof b->message,
+                     "vertex %zu: z = %g is not finite; expected a finite number", vertex, z);
+        else if (k >= 1 && x < c->x1)
+            snprintf(b->message, sizeof b->message,
+                     "vertex %zu: x = %.17g is less than the previous x = %.17g; expected "
+                     "non-decreasing x", vertex, x, c->x1);
+        else if (k >= 2 && x == c->x2)
+            snprintf(b->message, sizeof b->message,
+                     "vertex %zu: x = %.17g is shared by three vertices; expected at most two "
+                     "(a vertical wall)", vertex, x);
+        else
+            continue;
+        b->line = line;
+    }
+    c->x2 = c->x1;
+    c->x1 = x;
+    if (k == 0)
+        c->x_first = v[0];
+    c->x_last = v[0];
+}
+
+static int xz_row(rdf *r, char *text)
+{
+    double v[3];
+    const int status = xz_parse(&r->at, text, v);
+    if (status)
+        return status;
+    tirenv_rdf__check *c = &r->check;
+    if (c->n == 0)
+        c->first_line = r->at.line;
+    /* Checked now where the length unit is known; where it comes after the rows, the rows
+     * are checked again once it is (tirenv_rdf__open), as is every row read before a late
+     * OFFSET. */
+    if (!r->unit[TIRENV_UNIT_LENGTH].line)
+        c->deferred = 1;
+    check_row(c, v, r->unit[TIRENV_UNIT_LENGTH].value, r->keys[K_OFFSET].value, r->at.line);
+    if (!r->gather)
+        return TIRENV_OK;
+    struct block *b = r->last_block;
+    if (!b || b->n == BLOCK_ROWS) {
+        if (!(b = malloc(sizeof *b)))
             return tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, r->at.line, "",
                                 "out of memory");
-        r->cap = cap;
+        b->next = NULL;
+        b->n = 0;
+        *(r->last_block ? &r->last_block->next : &r->blocks) = b;
+        r->last_block = b;
     }
-    r->x[r->n] = v[0];
-    r->zl[r->n] = v[1];
-    r->zr[r->n] = v[2];
-    r->row_line[r->n] = r->at.line;
-    r->n++;
+    b->x[b->n] = v[0];
+    b->zs[b->n] = side_zs(r->gather_side, v);  /* f (zs + offset) at the end: side_z's */
+    b->n++;
     return TIRENV_OK;
+}
+
+static void free_blocks(struct block *b)
+{
+    while (b) {
+        struct block *next = b->next;
+        free(b);
+        b = next;
+    }
 }
 
 static block block_of(const char *name)
@@ -292,8 +378,10 @@ static int line_of(rdf *r, char *text)
         if (r->in_xz && r->xz_line)
             return fail(r, name, "XZ_DATA", "(XZ_DATA) given twice (first on line %zu)",
                         r->xz_line);
-        if (r->in_xz)
+        if (r->in_xz) {
             r->xz_line = r->at.line;
+            r->xz_offset = r->next_offset;
+        }
         return TIRENV_OK;
     }
     if (text[0] == '{' || r->blk == B_OTHER)
@@ -309,6 +397,15 @@ static int line_of(rdf *r, char *text)
 
 /* ---- the road ------------------------------------------------------------------------- */
 
+struct tirenv_rdf__road {
+    const tirenv_source *src;  /* the file's bytes (the caller's, outliving the road) */
+    double f;                  /* [UNITS] LENGTH: m per file unit */
+    double offset;             /* [PARAMETERS] OFFSET, file units */
+    size_t xz_offset, xz_line; /* where (XZ_DATA)'s rows start: byte offset, line before */
+    tirenv_rdf__check check;   /* the rows: how many, their ends, each side's first failure */
+    tirenv_profile *small;     /* a 'plank' or 'flat' road whole; NULL for a 'poly_line' */
+};
+
 static int need_unit(rdf *r, tirenv_unit_kind kind, const char *why, double *f)
 {
     if (r->unit[kind].line) {
@@ -321,43 +418,30 @@ static int need_unit(rdf *r, tirenv_unit_kind kind, const char *why, double *f)
 }
 
 static int profile_of(rdf *r, size_t n, const double x[], const double z[],
-                      const size_t line[], tirenv_profile **out)
+                      tirenv_profile **out)
 {
     tirenv_diag d;
     tirenv_diag_clear(&d);
     if (tirenv_profile_validate(n, x, z, &d) != TIRENV_OK) {
-        r->at.line = line && d.line >= 1 && d.line <= n ? line[d.line - 1] : 0;
-        return fail(r, NULL, line ? "XZ_DATA" : "", "%s", d.message);
+        r->at.line = 0;
+        return fail(r, NULL, "", "%s", d.message);
     }
     if (!(*out = tirenv_profile_alloc(n, x, z)))
         return tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, 0, "", "out of memory");
     return TIRENV_OK;
 }
 
-static int poly_line(rdf *r, tirenv_rdf_side side, double f, double offset, tirenv_profile **out)
+/* A poly_line road's rows are read as they are wanted (tirenv_rdf__rows); here, only that
+ * there are some. Their checks were made as the scan passed them (check_row). */
+static int poly_line(rdf *r)
 {
-    if (!r->xz_line || r->n == 0) {
+    if (!r->xz_line || r->check.n == 0) {
         r->at.line = r->xz_line ? r->xz_line : r->road_type_line;
         return fail(r, NULL, "XZ_DATA", "ROAD_TYPE 'poly_line' without %s; expected rows of "
                     "x, z_left, z_right in [PARAMETERS] (XZ_DATA)",
                     r->xz_line ? "rows in (XZ_DATA)" : "an (XZ_DATA) table");
     }
-    double *x = malloc(r->n * sizeof *x), *z = malloc(r->n * sizeof *z);
-    int status = TIRENV_OK;
-    if (!x || !z)
-        status = tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, 0, "", "out of memory");
-    for (size_t k = 0; !status && k < r->n; k++) {
-        const double zs = side == TIRENV_RDF_LEFT    ? r->zl[k]
-                          : side == TIRENV_RDF_RIGHT ? r->zr[k]
-                                                     : 0.5 * (r->zl[k] + r->zr[k]);
-        x[k] = f * r->x[k];
-        z[k] = f * (zs + offset);
-    }
-    if (!status)
-        status = profile_of(r, r->n, x, z, r->row_line, out);
-    free(x);
-    free(z);
-    return status;
+    return TIRENV_OK;
 }
 
 /* A plank across the road (DIRECTION 0) from START, LENGTH long along x including its 45-degree
@@ -409,11 +493,14 @@ static int plank(rdf *r, double f, double offset, tirenv_profile **out)
         z[n] = f * (pz[k] + offset);
         n++;
     }
-    return profile_of(r, n, x, z, NULL, out);
+    return profile_of(r, n, x, z, out);
 }
 
-static int road(rdf *r, tirenv_rdf_side side, tirenv_profile **out)
+/* The file's checks after its last line, for every side; *small is a plank's or a flat
+ * road's profile, NULL for a poly_line. */
+static int road(rdf *r, tirenv_profile **small)
 {
+    *small = NULL;
     r->at.base = NULL;
     if (!r->method_line || !r->road_type_line) {
         r->at.line = r->method_line ? r->method_line : r->road_type_line;
@@ -431,48 +518,311 @@ static int road(rdf *r, tirenv_rdf_side side, tirenv_profile **out)
         return status;
     const double offset = r->keys[K_OFFSET].value;
     if (strcasecmp(r->road_type, "poly_line") == 0)
-        return poly_line(r, side, f, offset, out);
+        return poly_line(r);
     if (strcasecmp(r->road_type, "plank") == 0)
-        return plank(r, f, offset, out);
+        return plank(r, f, offset, small);
     if (strcasecmp(r->road_type, "flat") == 0) {
         const double x = 0, z = f * offset;
-        return profile_of(r, 1, &x, &z, NULL, out);
+        return profile_of(r, 1, &x, &z, small);
     }
     r->at.line = r->road_type_line;
     return fail(r, NULL, "ROAD_TYPE", "'%s' is not supported; expected 'poly_line', 'plank' "
                 "or 'flat'", r->road_type);
 }
 
-int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
-                            tirenv_profile **out, tirenv_diag *diag)
+/* ---- a poly_line's rows, one at a time ------------------------------------------------- */
+
+struct tirenv_rdf__rows {
+    const tirenv_rdf__road *road;
+    tirenv_rdf_side side;
+    tirenv_lines lines;        /* poly_line: from the line after (XZ_DATA)'s */
+    tirenv_propfile__where at;
+    size_t k;                  /* rows (vertices of a small road) given */
+};
+
+/* The next row in file units (*got 0 after the last of the scan's rows). The rows were
+ * checked by the scan; a row that does not parse now, or rows that end early, mean that the
+ * file changed under the reader. */
+static int raw_next(tirenv_rdf__rows *w, double v[3], int *got, tirenv_diag *diag)
+{
+    *got = 0;
+    if (w->k >= w->road->check.n)
+        return TIRENV_OK;
+    w->at.diag = diag;
+    for (;;) {
+        const int more = tirenv_lines__next(&w->lines, diag);
+        if (more < 0)
+            return -more;
+        char *text = more ? w->lines.text : NULL;
+        if (text) {
+            strip_comment(text);
+            text = tirenv_propfile__trim(text);
+            if (!*text || text[0] == '{')
+                continue;  /* a blank or comment line, a table's column names */
+        }
+        if (!text || text[0] == '[' || text[0] == '(' || strchr(text, '='))
+            return tirenv_error(diag, TIRENV_EIO, w->at.file, w->lines.line, "XZ_DATA",
+                                "%zu rows of (XZ_DATA) where %zu were read before; did the "
+                                "file change while being read?", w->k, w->road->check.n);
+        w->at.line = w->lines.line;
+        w->at.base = w->lines.text;
+        const int status = xz_parse(&w->at, text, v);
+        if (status)
+            return status;
+        w->k++;
+        *got = 1;
+        return TIRENV_OK;
+    }
+}
+
+int tirenv_rdf__rows_open(const tirenv_rdf__road *road, tirenv_rdf_side side,
+                          tirenv_rdf__rows **out, tirenv_diag *diag)
 {
     *out = NULL;
-    if (!tirenv_rdf_side_name(side))
-        return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
-                            (int)side);
-    rdf r = {.at = {.file = src->name, .diag = diag}};
+    tirenv_rdf__rows *w = calloc(1, sizeof *w);
+    if (!w)
+        return tirenv_error(diag, TIRENV_ENOMEM, road->src->name, 0, "", "out of memory");
+    *w = (tirenv_rdf__rows){.road = road, .side = side, .at = {.file = road->src->name}};
+    if (!road->small) {
+        const int status = tirenv_lines__init(&w->lines, road->src, road->xz_offset,
+                                              road->xz_line + 1, diag);
+        if (status) {
+            free(w);
+            return status;
+        }
+    }
+    *out = w;
+    return TIRENV_OK;
+}
+
+int tirenv_rdf__rows_next(tirenv_rdf__rows *w, double *x, double *z, int *got,
+                          tirenv_diag *diag)
+{
+    *got = 0;
+    const tirenv_rdf__road *road = w->road;
+    if (road->small) {
+        if (w->k < tirenv_profile_size(road->small)) {
+            *x = tirenv_profile_x(road->small)[w->k];
+            *z = tirenv_profile_z(road->small)[w->k];
+            w->k++;
+            *got = 1;
+        }
+        return TIRENV_OK;
+    }
+    double v[3];
+    const int status = raw_next(w, v, got, diag);
+    if (!status && *got) {
+        *x = road->f * v[0];
+        *z = side_z(w->side, v, road->f, road->offset);
+    }
+    return status;
+}
+
+void tirenv_rdf__rows_free(tirenv_rdf__rows *w)
+{
+    if (!w)
+        return;
+    tirenv_lines__free(&w->lines);
+    free(w);
+}
+
+/* ---- the scan ---------------------------------------------------------------------------- */
+
+/* The rows checked again with the final unit and OFFSET, where either was set after the
+ * first row (xz_row): the scan's checks used what was known at each row. */
+static int recheck(tirenv_rdf__road *road, tirenv_diag *diag)
+{
+    tirenv_rdf__check c = {0};
+    tirenv_rdf__rows *w;
+    int status = tirenv_rdf__rows_open(road, TIRENV_RDF_MEAN, &w, diag);
+    for (int got = 1; !status && got;) {
+        double v[3];
+        status = raw_next(w, v, &got, diag);
+        if (!status && got)
+            check_row(&c, v, road->f, road->offset, w->at.line);
+    }
+    tirenv_rdf__rows_free(w);
+    if (!status) {
+        c.first_line = road->check.first_line;
+        road->check = c;
+    }
+    return status;
+}
+
+void tirenv_rdf__free(tirenv_rdf__road *road)
+{
+    if (!road)
+        return;
+    tirenv_profile_free(road->small);
+    free(road);
+}
+
+/* One pass over the file: its keys, its blocks, and a poly_line's rows checked as they pass
+ * and not kept (their count, their first and last x and each side's first failure are), so
+ * that the memory a road takes does not grow with its length; r->gather keeps one side's
+ * rows (r->blocks) for a whole read. */
+static int scan(const tirenv_source *src, rdf *r, tirenv_rdf__road **out)
+{
+    *out = NULL;
     tirenv_lines lines;
-    int status = tirenv_lines__init(&lines, src, 0, 1, diag);
+    int status = tirenv_lines__init(&lines, src, 0, 1, r->at.diag);
     if (status)
         return status;
     int got;
-    while (!status && (got = tirenv_lines__next(&lines, diag)) > 0) {
-        r.at.line = lines.line;
+    while (!status && (got = tirenv_lines__next(&lines, r->at.diag)) > 0) {
+        r->at.line = lines.line;
+        r->next_offset = lines.pos;
         char *text = lines.text;
-        if (r.at.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
+        if (r->at.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3;
-        r.at.base = text;
-        status = line_of(&r, text);
+        r->at.base = text;
+        status = line_of(r, text);
     }
     if (!status && got < 0)
         status = -got;
     tirenv_lines__free(&lines);
+    tirenv_profile *small = NULL;
     if (!status)
-        status = road(&r, side, out);
-    free(r.x);
-    free(r.zl);
-    free(r.zr);
-    free(r.row_line);
+        status = road(r, &small);
+    tirenv_rdf__road *road = NULL;
+    if (!status && !(road = malloc(sizeof *road)))
+        status = tirenv_error(r->at.diag, TIRENV_ENOMEM, src->name, 0, "", "out of memory");
+    if (!status) {
+        *road = (tirenv_rdf__road){.src = src, .f = r->unit[TIRENV_UNIT_LENGTH].value,
+                                   .offset = r->keys[K_OFFSET].value,
+                                   .xz_offset = r->xz_offset, .xz_line = r->xz_line,
+                                   .check = r->check, .small = small};
+        small = NULL;
+        if (!road->small &&
+            (r->check.deferred || r->keys[K_OFFSET].line > r->check.first_line))
+            status = recheck(road, r->at.diag);
+    }
+    tirenv_profile_free(small);
+    if (status) {
+        tirenv_rdf__free(road);
+        return status;
+    }
+    *out = road;
+    return TIRENV_OK;
+}
+
+int tirenv_rdf__open(const tirenv_source *src, tirenv_rdf__road **out, tirenv_diag *diag)
+{
+    rdf r = {.at = {.file = src->name, .diag = diag}};
+    return scan(src, &r, out);
+}
+
+/* The gathered rows as the profile on side: the blocks freed as the arrays take them. */
+static int gathered(const tirenv_rdf__road *road, rdf *r, tirenv_profile **out,
+                    tirenv_diag *diag)
+{
+    const char *name = road->src->name;
+    const size_t n = road->check.n;
+    double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
+    int status = TIRENV_OK;
+    if (!x || !z)
+        status = tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    size_t k = 0;
+    while (!status && r->blocks) {
+        struct block *b = r->blocks;
+        for (size_t i = 0; i < b->n && k < n; ++i, ++k) {
+            x[k] = road->f * b->x[i];
+            z[k] = road->f * (b->zs[i] + road->offset);
+        }
+        r->blocks = b->next;
+        free(b);
+    }
+    r->last_block = NULL;
+    if (!status && k != n)  /* a recheck found other rows than the scan: the file changed */
+        status = tirenv_error(diag, TIRENV_EIO, name, 0, "XZ_DATA", "%zu rows of (XZ_DATA) "
+                              "where %zu were read before; did the file change while being "
+                              "read?", n, k);
+    if (!status && !(*out = tirenv_profile_alloc(n, x, z)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    free(x);
+    free(z);
+    return status;
+}
+
+int tirenv_rdf__open_whole(const tirenv_source *src, tirenv_rdf_side side,
+                           tirenv_rdf__road **road, tirenv_profile **out, tirenv_diag *diag)
+{
+    *road = NULL;
+    *out = NULL;
+    if (!tirenv_rdf_side_name(side))
+        return tirenv_error(diag, TIRENV_EINVAL, src->name, 0, "side", "unknown side %d",
+                            (int)side);
+    rdf r = {.at = {.file = src->name, .diag = diag}, .gather = 1, .gather_side = side};
+    int status = scan(src, &r, road);
+    if (!status && !(status = tirenv_rdf__side(*road, side, diag)))
+        status = (*road)->small ? tirenv_rdf__profile(*road, side, out, diag)
+                                : gathered(*road, &r, out, diag);
+    free_blocks(r.blocks);
+    return status;
+}
+
+int tirenv_rdf__side(const tirenv_rdf__road *road, tirenv_rdf_side side, tirenv_diag *diag)
+{
+    if (!tirenv_rdf_side_name(side))
+        return tirenv_error(diag, TIRENV_EINVAL, road->src->name, 0, "side", "unknown side %d",
+                            (int)side);
+    const tirenv_rdf__bad *b = &road->check.bad[side];
+    if (road->small || !b->line)
+        return TIRENV_OK;
+    const tirenv_propfile__where at = {.file = road->src->name, .line = b->line, .diag = diag};
+    return tirenv_propfile__fail(&at, NULL, "XZ_DATA", "%s", b->message);
+}
+
+void tirenv_rdf__extent(const tirenv_rdf__road *road, double *first, double *last)
+{
+    if (road->small) {
+        tirenv_profile_extent(road->small, first, last);
+        return;
+    }
+    *first = road->f * road->check.x_first;
+    *last = road->f * road->check.x_last;
+}
+
+int tirenv_rdf__profile(const tirenv_rdf__road *road, tirenv_rdf_side side,
+                        tirenv_profile **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    int status = tirenv_rdf__side(road, side, diag);
+    if (status)
+        return status;
+    const char *name = road->src->name;
+    const tirenv_profile *p = road->small;
+    if (p) {
+        if (!(*out = tirenv_profile_alloc(tirenv_profile_size(p), tirenv_profile_x(p),
+                                          tirenv_profile_z(p))))
+            return tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+        return TIRENV_OK;
+    }
+    const size_t n = road->check.n;
+    double *x = malloc(n * sizeof *x), *z = malloc(n * sizeof *z);
+    tirenv_rdf__rows *w = NULL;
+    if (!x || !z)
+        status = tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    else
+        status = tirenv_rdf__rows_open(road, side, &w, diag);
+    for (size_t k = 0; !status && k < n; k++) {
+        int got = 0;
+        status = tirenv_rdf__rows_next(w, &x[k], &z[k], &got, diag);
+    }
+    tirenv_rdf__rows_free(w);
+    if (!status && !(*out = tirenv_profile_alloc(n, x, z)))
+        status = tirenv_error(diag, TIRENV_ENOMEM, name, 0, "", "out of memory");
+    free(x);
+    free(z);
+    return status;
+}
+
+int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
+                            tirenv_profile **out, tirenv_diag *diag)
+{
+    tirenv_rdf__road *road;
+    const int status = tirenv_rdf__open_whole(src, side, &road, out, diag);
+    tirenv_rdf__free(road);
     return status;
 }
 

@@ -5,13 +5,15 @@
  * A regular file is read where asked (pread), so every reader has a position of its own; a
  * pipe or a device can be read only once, so what is read of it is kept, and every reader
  * reads that copy, the pipe read further only as far as the furthest reader asks. What a
- * format reads whole before its first row (an OpenCRG road's pass at open, an RDF road's
- * poly_line) is read once and shared by every reader of the file (tirenv_road_file__crg,
- * tirenv_road_file__rdf), so that a road's ends and its rows come from one reading. */
+ * format reads before its first row (an OpenCRG road's pass at open, an RDF road's scan, which
+ * checks its rows and keeps none) is read once and shared by every reader of the file
+ * (tirenv_road_file__crg, tirenv_road_file__rdf), so that a road's ends come from one
+ * reading and its rows from one more, in bounded memory. */
 #define _GNU_SOURCE /* fopencookie */
 #include "formats/road_file_impl.h"
 
 #include "formats/crg_impl.h"
+#include "formats/rdf_impl.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -33,8 +35,7 @@ struct tirenv_road_file {
     size_t len, cap;
     int eof;                      /* ... and whether that is all of it */
     tirenv_crg *crg;              /* an OpenCRG road, opened once for every reader, or NULL */
-    tirenv_profile *rdf[3];       /* an RDF road's profile of each side (tirenv_rdf_side), read
-                                   * once for every reader, or NULL */
+    tirenv_rdf__road *rdf;        /* an RDF road, scanned once for every reader, or NULL */
 };
 
 /* Reads the pipe on until it holds want bytes or ends: 0, or an errno value (EFBIG beyond
@@ -159,23 +160,38 @@ int tirenv_road_file__crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_di
 }
 
 int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
-                          const tirenv_profile **out, tirenv_diag *diag)
+                          const tirenv_rdf__road **out, tirenv_diag *diag)
 {
     *out = NULL;
-    const size_t k = (size_t)side;
-    if (k >= sizeof f->rdf / sizeof *f->rdf)  /* tirenv_rdf__read_source's words */
+    if (!tirenv_rdf_side_name(side))  /* tirenv_rdf__read_source's words */
         return tirenv_error(diag, TIRENV_EINVAL, f->name, 0, "side", "unknown side %d",
                             (int)side);
-    if (!f->rdf[k]) {
+    if (!f->rdf) {
         const tirenv_source *s;
         int status = tirenv_road_file__source(f, &s, diag);
         if (!status)
-            status = tirenv_rdf__read_source(s, side, &f->rdf[k], diag);
+            status = tirenv_rdf__open(s, &f->rdf, diag);
         if (status)
             return status;
     }
-    *out = f->rdf[k];
-    return TIRENV_OK;
+    const int status = tirenv_rdf__side(f->rdf, side, diag);
+    if (!status)
+        *out = f->rdf;
+    return status;
+}
+
+int tirenv_road_file__rdf_whole(tirenv_road_file *f, tirenv_rdf_side side,
+                                tirenv_profile **out, tirenv_diag *diag)
+{
+    *out = NULL;
+    const tirenv_rdf__road *road;
+    if (f->rdf) {  /* scanned already: the rows read once more */
+        const int status = tirenv_road_file__rdf(f, side, &road, diag);
+        return status ? status : tirenv_rdf__profile(road, side, out, diag);
+    }
+    const tirenv_source *s;
+    const int status = tirenv_road_file__source(f, &s, diag);
+    return status ? status : tirenv_rdf__open_whole(s, side, &f->rdf, out, diag);
 }
 
 /* ---- opening ------------------------------------------------------------------------------ */
@@ -185,8 +201,7 @@ void tirenv_road_file_free(tirenv_road_file *f)
     if (!f)
         return;
     tirenv_crg_free(f->crg);  /* before the source it shares */
-    for (size_t k = 0; k < sizeof f->rdf / sizeof *f->rdf; ++k)
-        tirenv_profile_free(f->rdf[k]);
+    tirenv_rdf__free(f->rdf);  /* before the source it reads */
     tirenv_source__close(&f->src);
     if (f->fd >= 0)
         close(f->fd);

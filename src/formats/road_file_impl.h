@@ -8,6 +8,7 @@
 
 #include <stdio.h>
 
+#include "formats/rdf_impl.h"
 #include "io/io.h"
 #include "tirenv/profile_file.h"
 
@@ -23,10 +24,16 @@ int tirenv_road_file__source(tirenv_road_file *f, const tirenv_source **out, tir
  * call and kept by f for every later one: owned by f, shared by its readers. */
 int tirenv_road_file__crg(tirenv_road_file *f, const tirenv_crg **out, tirenv_diag *diag);
 
-/* The RDF road in f on side, read at the first call for that side and kept by f for every
- * later one: owned by f, shared by its readers. */
+/* The RDF road in f, scanned at the first call (its keys, its rows checked and not kept:
+ * rdf_impl.h) and kept by f for every later one, owned by f, shared by its readers; the
+ * error of side, if its rows do not make a profile. */
 int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
-                          const tirenv_profile **out, tirenv_diag *diag);
+                          const tirenv_rdf__road **out, tirenv_diag *diag);
+
+/* The RDF road in f on side as a profile: gathered in the scan's one pass where f has not
+ * been scanned yet (tirenv_rdf__open_whole, the scan then kept by f), else from its rows. */
+int tirenv_road_file__rdf_whole(tirenv_road_file *f, tirenv_rdf_side side,
+                                tirenv_profile **out, tirenv_diag *diag);
 
 /* tirenv_rdf_read from a source (rdf.c). */
 int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,

@@ -341,6 +341,138 @@ static void test_malformed(void **state)
     assert_string_equal(tirenv_rdf_side_name(TIRENV_RDF_MEAN), "mean");
 }
 
+/* A poly_line's rows are checked as the reader passes them and are not kept (formats.md
+ * section 5): the checks must be those of the rows gathered whole (tirenv_profile_validate),
+ * also where [UNITS] LENGTH or OFFSET comes after the rows (the rows then checked again), and
+ * per side (a mean that overflows where either side alone does not). Each road also read a
+ * row at a time, the same vertices bit for bit. */
+static void test_checked_in_passing(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    /* The unit after the rows: checked with it, x in mm; with no unit yet (f unknown) the
+     * four rows would have been taken at one x. */
+    static const char late[] =
+        "[MODEL]\nMETHOD = '2D'\nROAD_TYPE = 'poly_line'\n[PARAMETERS]\n(XZ_DATA)\n"
+        "0 0 0\n1000 10 10\n1000 20 20\n2000 0 0\n[PARAMETERS]\nOFFSET = 5\n"
+        "[UNITS]\nLENGTH = 'mm'\n";
+    static const double x[] = {0, 1, 1, 2}, z[] = {0.005, 0.015, 0.025, 0.005};
+    tirenv_profile *p = read_text(fx, late, TIRENV_RDF_MEAN);
+    assert_vertices(p, 4, x, z);
+    char path[600];
+    tirenv_test_path(fx, "road.rdf", path);
+    tirenv_profile_file_reader *r = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_profile_file_reader_open(path, NULL, 1, NULL, &r, &d), TIRENV_OK);
+    for (size_t k = 0; k <= 4; k++) {
+        double xk, zk;
+        int got = 0;
+        assert_int_equal(tirenv_profile_file_reader_next(r, &xk, &zk, &got, &d), TIRENV_OK);
+        assert_int_equal(got, k < 4);
+        if (got) {
+            assert_bits_equal(xk, tirenv_profile_x(p)[k]);
+            assert_bits_equal(zk, tirenv_profile_z(p)[k]);
+        }
+    }
+    tirenv_profile_file_reader_free(r);
+    tirenv_profile_free(p);
+    static const char head[] = "[UNITS]\nLENGTH = '%s'\n[MODEL]\nMETHOD = '2D'\n"
+                               "ROAD_TYPE = 'poly_line'\n[PARAMETERS]\n(XZ_DATA)\n%s";
+    static const struct {
+        const char *unit, *rows;
+        size_t line[3];          /* mean, left, right: the failing row's line, 0: read */
+        const char *says[3];
+    } cases[] = {
+        /* OFFSET after the rows makes the first row's height overflow on every side. */
+        {"meter", "0 1e308 1e308\n1 0 0\n[PARAMETERS]\nOFFSET = 1e308\n", {8, 8, 8},
+         {"vertex 1: z = inf is not finite; expected a finite number",
+          "vertex 1: z = inf", "vertex 1: z = inf"}},
+        /* Each side finite, their sum not: the mean alone is refused. */
+        {"meter", "0 0 0\n1 1e308 1e308\n2 0 0\n", {9, 0, 0},
+         {"vertex 2: z = inf is not finite; expected a finite number", NULL, NULL}},
+        /* x finite in km, not in m. */
+        {"km", "0 0 0\n1e306 0 0\n", {9, 9, 9},
+         {"vertex 2: x = inf is not finite; expected a finite number", "x = inf",
+          "x = inf"}},
+        /* The left side's z overflows in m (the mean's does not) before x decreases: the
+         * left names its z, the others the x, each at its row. */
+        {"km", "0 0 0\n1 2.5e305 0\n2 0 0\n0.5 0 0\n", {11, 9, 11},
+         {"vertex 4: x = 500 is less than the previous x = 2000; expected non-decreasing x",
+          "vertex 2: z = inf is not finite", "vertex 4: x = 500 is less than"}},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char text[1024];
+        snprintf(text, sizeof text, head, cases[k].unit, cases[k].rows);
+        tirenv_test_write_text(path, text);
+        for (int side = 0; side < 3; side++) {
+            p = NULL;
+            tirenv_diag_clear(&d);
+            const int status = tirenv_rdf_read(path, (tirenv_rdf_side)side, &p, &d);
+            if (!cases[k].line[side]) {
+                assert_int_equal(status, TIRENV_OK);
+                tirenv_profile_free(p);
+            } else {
+                tirenv_test_expect_diag(k, status, &d, TIRENV_EPARSE, path,
+                                        cases[k].line[side], 0, "XZ_DATA", cases[k].says[side]);
+                assert_null(p);
+            }
+        }
+    }
+}
+
+/* A road of 70,001 rows (three of the whole read's blocks of 32,768, the reader's 64 KB window
+ * some forty times over) in mm with an OFFSET: read whole and a row at a time, both give
+ * f (z + OFFSET) of each row, the side's, bit for bit. */
+static void test_long_road(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    enum { N = 70001 };
+    char path[600];
+    FILE *fp = fopen(tirenv_test_path(fx, "long.rdf", path), "w");
+    assert_non_null(fp);
+    fputs("[UNITS]\nLENGTH = 'mm'\n[MODEL]\nMETHOD = '2D'\nROAD_TYPE = 'poly_line'\n"
+          "[PARAMETERS]\nOFFSET = 2.5\n(XZ_DATA)\n", fp);
+    for (int k = 0; k < N; k++) {
+        if (k % 9000 == 0)
+            fputs("$ a comment in the table\n\n", fp);
+        fprintf(fp, "%d %.6f %.6f\n", k, 3.0 * sin(0.0137 * k), 2.0 * cos(0.0071 * k));
+    }
+    fclose(fp);
+    for (int side = 0; side < 3; side++) {
+        tirenv_profile *p = NULL;
+        tirenv_diag d;
+        assert_int_equal(tirenv_rdf_read(path, (tirenv_rdf_side)side, &p, &d), TIRENV_OK);
+        assert_int_equal(tirenv_profile_size(p), N);
+        tirenv_profile_source src = tirenv_profile_source_default();
+        src.rdf_side = (tirenv_rdf_side)side;
+        tirenv_profile_file_reader *r = NULL;
+        assert_int_equal(tirenv_profile_file_reader_open(path, &src, 1, NULL, &r, &d),
+                         TIRENV_OK);
+        for (size_t k = 0; k < N; k++) {
+            double x, z;
+            int got = 0;
+            assert_int_equal(tirenv_profile_file_reader_next(r, &x, &z, &got, &d), TIRENV_OK);
+            assert_true(got);
+            /* the row as the file has it, read back as strtod reads it */
+            char zl[32], zr[32];
+            snprintf(zl, sizeof zl, "%.6f", 3.0 * sin(0.0137 * (double)k));
+            snprintf(zr, sizeof zr, "%.6f", 2.0 * cos(0.0071 * (double)k));
+            const double l = strtod(zl, NULL), rr = strtod(zr, NULL);
+            const double zs = side == TIRENV_RDF_LEFT ? l : side == TIRENV_RDF_RIGHT ? rr
+                                                                                  : 0.5 * (l + rr);
+            assert_bits_equal(x, 0.001 * (double)k);
+            assert_bits_equal(z, 0.001 * (zs + 2.5));
+            assert_bits_equal(tirenv_profile_x(p)[k], x);
+            assert_bits_equal(tirenv_profile_z(p)[k], z);
+        }
+        double x, z;
+        int got = 1;
+        assert_int_equal(tirenv_profile_file_reader_next(r, &x, &z, &got, &d), TIRENV_OK);
+        assert_false(got);
+        tirenv_profile_file_reader_free(r);
+        tirenv_profile_free(p);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -354,6 +486,10 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_round_trip, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_malformed, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_checked_in_passing, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_long_road, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -2,7 +2,7 @@
  * file, to the end of the input or its first error; CRG and RDF content is detected and read
  * by the same reader. Then the road's ends (tirenv_road_file_extent): where every row reads,
  * the ends found without the rows (a CSV's from the file's end, an OpenCRG road's from its
- * pass at open, an RDF road's from its poly_line) must be the same bits as those of every row
+ * pass at open, an RDF road's from its scan) must be the same bits as those of every row
  * read.
  * SPDX-License-Identifier: Apache-2.0 */
 #include <stdlib.h>
