@@ -130,7 +130,9 @@ def main():
                 v = min(max(v, lo), hi)
             sets[key] = v
         ring = ring_of(sets, x[-1] if soften else 0)
-        if ring is None:
+        # The same loads as the cam's, or no trial: `tirenv flat` tables the paper's contact
+        # lengths instead of 0.5 to 1.5 FNOMIN for a ring whose FNOMIN lies among their loads.
+        if ring is None or [r[2] for r in ring] != [c[2] for c in cam]:
             return math.inf
         e = [r[0] / c[0] - 1 for r, c in zip(ring, cam)]
         e += [r[1] / c[1] - 1 for r, c in zip(ring, cam)]
