@@ -165,6 +165,21 @@ struct tirenv_ring {
 int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
                         size_t ja, size_t jb);
 
+/* The points pts[*k0 .. *k1) of the intervals of nodes first .. last, from pts[kf .. kl] in
+ * them: the sub-windows of the nodes in contact (ring_smooth.c, ring_shear.c). */
+static inline void tirenv_ring__points_of(const tirenv_ring *r, size_t kf, size_t kl,
+                                          size_t first, size_t last, size_t *k0, size_t *k1)
+{
+    size_t k = kf;
+    while (k > 0 && r->pts[k - 1].j >= first)
+        --k;
+    *k0 = k;
+    k = kl + 1;
+    while (k < r->n_pts && r->pts[k].j < last)
+        ++k;
+    *k1 = k;
+}
+
 /* The continuous contact on the window r->lo, r->n (ring_smooth.c): w, F, g per node and e, f
  * per point; TIRENV_ENOCONV with diag if Newton does not settle. dfz_dz (may be NULL). */
 int tirenv_ring__solve_smooth(tirenv_ring *r, double *fx, double *fz, double *dfz_dz,

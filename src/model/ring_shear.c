@@ -994,14 +994,7 @@ static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, size_t *a, siz
         return 0;
     *a = first;
     *b = last;
-    size_t k = kf;
-    while (k > 0 && pts[k - 1].j >= first)
-        --k;
-    *k0 = k;
-    k = kl + 1;
-    while (k < r->n_pts && pts[k].j < last)
-        ++k;
-    *k1 = k;
+    tirenv_ring__points_of(r, kf, kl, first, last, k0, k1);
     return 1;
 }
 

@@ -394,7 +394,7 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
     return 0;
 }
 
-static int long_in(const long *v, size_t n, long key)
+int tirenv_springs__long_in(const long *v, size_t n, long key)
 {
     size_t lo = 0, hi = n;
     while (lo < hi) {
@@ -412,7 +412,8 @@ static void warm_set(tirenv_springs__cc *c)
 {
     for (size_t r = 0; r < c->n_rows; ++r) {
         const tirenv_springs__cc_row *R = &c->rows[r];
-        c->in_w[r] = R->t == 0 ? c->warm_pin[R->i] : long_in(c->warm_ids, c->n_warm, R->id);
+        c->in_w[r] = R->t == 0 ? c->warm_pin[R->i]
+                               : tirenv_springs__long_in(c->warm_ids, c->n_warm, R->id);
     }
 }
 

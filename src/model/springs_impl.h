@@ -8,6 +8,9 @@
 #include "tirenv/profile.h"
 #include "tirenv/springs.h"
 
+/* key is among v[0 .. n) (ascending): a binary search. */
+int tirenv_springs__long_in(const long *v, size_t n, long key);
+
 /* The contact state the next force evaluation starts from (springs.c), as bytes: their
  * number for a model, its bytes, and those bytes back into a model of the same parameters. */
 size_t tirenv_springs__state_size(const tirenv_springs *s);

@@ -32,19 +32,6 @@ enum { max_corrections = 2 };
  * 1e-8 N at the bench's load, far below the equilibrium's force tolerance (1e-6 N). */
 static const double eq_tol = 1e-14;
 
-static int long_in(const long *v, size_t n, long key)
-{
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (v[mid] < key)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo < n && v[lo] == key;
-}
-
 /* The vertex row of vertex id among V[0..n) (ascending by id), or SIZE_MAX. */
 static size_t find_vrow(const tirenv_springs__cc_row V[], size_t n, long id)
 {
@@ -204,7 +191,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * else by its weights. (Those on an element were checked with the pins.) */
     for (size_t k = 0; k < nv; ++k) {
         const tirenv_springs__cc_row *Q = &V[k];
-        if (Q->t == 0 || long_in(c->warm_ids, c->n_warm, Q->id))
+        if (Q->t == 0 || tirenv_springs__long_in(c->warm_ids, c->n_warm, Q->id))
             continue; /* a working row: an equality above */
         const double t = Q->t, wi = wn[Q->i], wj = wn[Q->j];
         const double chord = (1 - t) * wi + t * wj - fabs(wj - wi) * T->tau_dev;
