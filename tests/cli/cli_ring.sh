@@ -53,11 +53,24 @@ check "flat with another model: the CSV as before" \
     '[ $rc -eq 0 ] && [ "$(head -n 1 out)" = load_N,z_flat_m,deflection_m,contact_length_m,stiffness_N_per_m ]'
 
 # Every case of the embedded data set, as the ring runs it (2 mm steps over the approach
-# half): the lugs never compressed beyond t_r.
+# half): the lugs never compressed beyond t_r (measured: at most 32.7 mm, case 19's 0.43 m
+# over the 50 x 100 mm cleat). The sanitizer build (TIRENV_TEST_SANITIZED=1) runs 4 of the 28,
+# every seventh from the fifth (5, 12, 19, 26: case 19 among them); the cases differ in their
+# numbers, not in the code they run, and the 28 are most of this test's time (measured: 8.0
+# of its 8.8 s of CPU in Release; under the sanitizers 31 s of CPU with all 28, 6.4 with
+# these 4). The Release build runs all 28.
 cases=$data/../../data/dataset/cases.csv
+every=1 first=1 want=28
+if [ "${TIRENV_TEST_SANITIZED:-0}" = 1 ]; then
+    every=7 first=5 want=4
+    echo "# sanitizer build: cases 5, 12, 19 and 26 of the 28 (the Release build: all 28)"
+fi
 worst=0
 count=0
+i=0
 for spec in $(awk -F, '!/^#/ && NR > 1 && $1 != "case" { print $3 "," $5 "," $6 }' "$cases"); do
+    i=$((i + 1))
+    [ $i -ge $first ] && [ $(((i - first) % every)) -eq 0 ] || continue
     lc=${spec%%,*} rest=${spec#*,}
     run "$bin" envelope --model ring --cleat "$rest" --contact-length "$lc" --x-to 0 \
         --dx 0.002 --detail -o case.csv
@@ -65,7 +78,8 @@ for spec in $(awk -F, '!/^#/ && NR > 1 && $1 != "case" { print $3 "," $5 "," $6 
     worst=$(awk -v a="$worst" -v b="$(col_max case.csv 9)" 'BEGIN { print (b > a ? b : a) }')
     count=$((count + 1))
 done
-check "all 28 data set cases: largest tread compression $worst m <= t_r" \
-    '[ "$count" -eq 28 ] && awk -v w="$worst" -v t=$t_r "BEGIN { exit !(w <= t) }"'
+check "$count of the 28 data set cases: largest tread compression $worst m <= t_r" \
+    '[ "$i" -eq 28 ] && [ "$count" -eq $want ] &&
+     awk -v w="$worst" -v t=$t_r "BEGIN { exit !(w <= t) }"'
 
 clilib_done
