@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "profile/profile_impl.h"
+#include "core/capacity.h"
 #include "model/ring_impl.h"
 
 /* A cut of the window: a node or a ground vertex, at angle phi (rad, from the downward
@@ -33,9 +34,7 @@ static int reserve(void **buf, size_t *cap, size_t n, size_t sz)
 {
     if (n <= *cap)
         return 0;
-    size_t c = *cap ? *cap : 256;
-    while (c < n)
-        c *= 2;
+    const size_t c = tirenv_core__capacity(*cap, 256, n);
     void *nb = realloc(*buf, c * sz);
     if (!nb)
         return TIRENV_ENOMEM;
