@@ -281,3 +281,11 @@ int tirenv_test_nn_teardown(void **state)
     tirenv_nn_free(*state);
     return 0;
 }
+
+double tirenv_test_uniform(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}

@@ -15,6 +15,10 @@
 #include "tirenv/ring.h"
 #include "tirenv/tire.h"
 
+/* The next number of a seeded splitmix64 sequence in [0, 1): the tests' own generator, apart
+ * from the library's (its state the caller's). */
+double tirenv_test_uniform(uint64_t *state);
+
 /* Fails unless |actual - expected| <= abs_tol + rel_tol*|expected|; prints both values. */
 #define assert_near(actual, expected, abs_tol, rel_tol)                                      \
     tirenv_test_assert_near((actual), (expected), (abs_tol), (rel_tol), #actual, __FILE__,   \

@@ -16,15 +16,8 @@
 #include "model/springs_impl.h"
 #include "tirenv/tirenv.h"
 
-/* splitmix64: a seeded generator of the test's own. */
 static uint64_t rng_state;
-static double uniform(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
+static double uniform(void) { return tirenv_test_uniform(&rng_state); }
 
 /* A road of n vertices dx apart: a random walk of slopes (like an ISO class C-D road at that
  * spacing), a long wave, and a few spikes and steps. */
