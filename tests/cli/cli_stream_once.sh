@@ -30,12 +30,6 @@ check "--stream over part of the road: whole mode's bytes" \
 bad() {
     awk -v n="$2" -v t="$3" 'NR == n { print t; next } { print }' road.csv >"$1"
 }
-# Whole mode's error line for the road in $1 (the expected one), in ./want.
-want_error() {
-    rm -f want
-    run "$bin" envelope $cam --profile "$1" -o w.csv
-    [ $rc -eq 2 ] && no_file w.csv && cp err want
-}
 bad mid.csv 12000 '11.9,abc'
 want_error mid.csv
 check "setup: whole mode refuses the bad middle row at its line" \

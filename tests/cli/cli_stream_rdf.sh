@@ -43,11 +43,6 @@ bad() {
     line=$(grep -n "^$2 " road.rdf | head -1 | cut -d: -f1)
     awk -v n="$line" -v t="$3" 'NR == n { print t; next } { print }' road.rdf >"$1"
 }
-want_error() {
-    rm -f want
-    run "$bin" envelope $cam --profile "$1" -o w.csv
-    [ $rc -eq 2 ] && no_file w.csv && cp err want
-}
 bad mid.rdf 12.5 '12.5 0.001 0.00x'
 want_error mid.rdf
 check "setup: whole mode refuses the bad middle row at its line and column" \

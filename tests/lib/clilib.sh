@@ -56,6 +56,14 @@ no_file() {
     [ ! -e "$1" ] && [ -z "$(find . -name '*tmp.*' -print)" ]
 }
 
+# Whole mode's error for the road in $1 (envelope --profile $1, the cam model's $cam), in
+# ./want: true if it fails with exit 2 and no file.
+want_error() {
+    rm -f want
+    run "$bin" envelope $cam --profile "$1" -o w.csv
+    [ $rc -eq 2 ] && no_file w.csv && cp err want
+}
+
 # Number of CSV data rows (lines after the header).
 rows() {
     echo $(($(wc -l <"$1") - 1))
