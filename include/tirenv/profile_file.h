@@ -122,7 +122,8 @@ int tirenv_profile_file_reader_source(void *reader, double *x, double z[], int *
  * last row (found from the file's end; where it cannot be told so, every row); an OpenCRG
  * road's first and last u from its pass at open (which checks its rows, not the tracks'
  * heights), an RDF road's first and last x from its scan (which checks its rows and keeps
- * none), each kept by f and shared with its readers, so that neither is made again. Errors name file, line and field. */
+ * none), each kept by f and shared with its readers, so that neither is made again. Errors
+ * name file, line and field. */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                             const double v[], int every_row, double *first, double *last,
                             tirenv_diag *diag);

@@ -163,7 +163,7 @@ int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
                           const tirenv_rdf__road **out, tirenv_diag *diag)
 {
     *out = NULL;
-    if (!tirenv_rdf_side_name(side))  /* tirenv_rdf__read_source's words */
+    if (!tirenv_rdf_side_name(side))  /* tirenv_rdf__side's words, before the scan */
         return tirenv_error(diag, TIRENV_EINVAL, f->name, 0, "side", "unknown side %d",
                             (int)side);
     if (!f->rdf) {
