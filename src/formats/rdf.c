@@ -817,8 +817,9 @@ int tirenv_rdf__profile(const tirenv_rdf__road *road, tirenv_rdf_side side,
     return status;
 }
 
-int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
-                            tirenv_profile **out, tirenv_diag *diag)
+/* tirenv_rdf_read from a source: the road scanned once, its rows gathered as they pass. */
+static int read_source(const tirenv_source *src, tirenv_rdf_side side, tirenv_profile **out,
+                       tirenv_diag *diag)
 {
     tirenv_rdf__road *road;
     const int status = tirenv_rdf__open_whole(src, side, &road, out, diag);
@@ -834,7 +835,7 @@ int tirenv_rdf_read(const char *path, tirenv_rdf_side side, tirenv_profile **out
     int status = tirenv_source__open_file(&src, path, diag);
     if (status)
         return status;
-    status = tirenv_rdf__read_source(&src, side, out, diag);
+    status = read_source(&src, side, out, diag);
     tirenv_source__close(&src);
     return status;
 }
@@ -847,7 +848,7 @@ int tirenv_rdf_read_memory(const void *data, size_t size, const char *name,
     int status = tirenv_source__open_memory(&src, data, size, name, diag);
     if (status)
         return status;
-    status = tirenv_rdf__read_source(&src, side, out, diag);
+    status = read_source(&src, side, out, diag);
     tirenv_source__close(&src);
     return status;
 }

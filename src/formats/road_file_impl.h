@@ -35,8 +35,4 @@ int tirenv_road_file__rdf(tirenv_road_file *f, tirenv_rdf_side side,
 int tirenv_road_file__rdf_whole(tirenv_road_file *f, tirenv_rdf_side side,
                                 tirenv_profile **out, tirenv_diag *diag);
 
-/* tirenv_rdf_read from a source (rdf.c). */
-int tirenv_rdf__read_source(const tirenv_source *src, tirenv_rdf_side side,
-                            tirenv_profile **out, tirenv_diag *diag);
-
 #endif
