@@ -478,7 +478,7 @@ static void test_own_q_fz1(void **state)
     unlink(path);
 }
 
-/* A file that lacks what a model needs: refused naming the key when the model is needed,
+/* A file that lacks what a model needs: refused naming the file and key when the model is needed,
  * said in the note (and the tire left as it was) when it is not. */
 static void test_refuses_naming_the_key(void **state)
 {
@@ -493,6 +493,7 @@ static void test_refuses_naming_the_key(void **state)
     const tirenv_tire before = t;
     assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_SPRINGS, &o, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "FNOMIN");
+    assert_string_equal(d.file, path);
     assert_non_null(strstr(d.message, "ENVELOPING_SPRINGS"));
     assert_memory_equal(&t, &before, sizeof t);
     assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_RING, &o, &d), TIRENV_EINVAL);
