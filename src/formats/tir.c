@@ -194,10 +194,7 @@ int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
     if (status) {
         tire->width = width;
         tire->ring.p_nom = p_nom;
-        tire->cam.fnomin = cam.fnomin;
-        tire->cam.q_fz2 = cam.q_fz2;
-        tire->cam.q_fz1 = cam.q_fz1;
-        tire->cam.pfz1 = cam.pfz1;
+        tire->cam = cam; /* a failed read changed only the fields zeroed above */
     }
     return status;
 }

@@ -70,12 +70,8 @@ static void test_network_without_record(void **state)
     assert_string_equal(rec.trainer, "");
     assert_memory_equal(tirenv_nn_weights(read2), tirenv_nn_weights(nn),
                         tirenv_nn_n_weights(nn) * sizeof(double));
-    FILE *fp = fopen(b, "r");
-    assert_non_null(fp);
     char text[16384];
-    const size_t n = fread(text, 1, sizeof text - 1, fp);
-    fclose(fp);
-    text[n] = '\0';
+    tirenv_test_read_text(b, text, sizeof text);
     assert_null(strstr(text, "\"training\""));
     tirenv_nn_free(read1);
     tirenv_nn_free(read2);

@@ -408,10 +408,7 @@ static void test_write_read_round_trip(void **state)
     tirenv_diag d;
     const tirenv_tire def = tirenv_tire_default();
     assert_int_equal(tirenv_tir_write(path, &def, &d), TIRENV_OK);
-    FILE *fp = fopen(path, "r");
-    assert_non_null(fp);
-    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
-    fclose(fp);
+    tirenv_test_read_text(path, text, sizeof text);
     assert_non_null(strstr(text, "[MDI_HEADER]\nFILE_TYPE                = 'tir'\n"));
     assert_non_null(strstr(text, "\nUNLOADED_RADIUS          = 0.68 "));
     assert_non_null(strstr(text, "\nMETHOD                   = 'newton' "));
@@ -424,17 +421,11 @@ static void test_write_read_round_trip(void **state)
     tirenv_tire winkler = def;
     winkler.ring.G_t = 0;
     assert_int_equal(tirenv_tir_write(path, &winkler, &d), TIRENV_OK);
-    fp = fopen(path, "r");
-    assert_non_null(fp);
-    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
-    fclose(fp);
+    tirenv_test_read_text(path, text, sizeof text);
     assert_non_null(strstr(text, "\nTREAD_SHEAR              = 0 "));
     const tirenv_tire sheared = entropic_tire();
     assert_int_equal(tirenv_tir_write(path, &sheared, &d), TIRENV_OK);
-    fp = fopen(path, "r");
-    assert_non_null(fp);
-    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
-    fclose(fp);
+    tirenv_test_read_text(path, text, sizeof text);
     line = strstr(text, "\nTREAD_SHEAR              = ");
     assert_non_null(line);
     assert_true(strtod(line + 28, NULL) == sheared.ring.G_t);
@@ -468,14 +459,6 @@ static void test_write_into_missing_dir(void **state)
 
 /* ---- output files ---------------------------------------------------------------------- */
 
-static void read_back(const char *path, char *buf, size_t n)
-{
-    FILE *fp = fopen(path, "r");
-    assert_non_null(fp);
-    buf[fread(buf, 1, n - 1, fp)] = '\0';
-    fclose(fp);
-}
-
 static void test_outfile_commit(void **state)
 {
     tirenv_test_dir *fx = *state;
@@ -491,7 +474,7 @@ static void test_outfile_commit(void **state)
     assert_int_equal(tirenv_test_count_entries(fx, ".out.csv.tirenv-tmp."), 1);
     assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
     umask(old_mask);
-    read_back(path, text, sizeof text);
+    tirenv_test_read_text(path, text, sizeof text);
     assert_string_equal(text, "x_m,z_m\n");
     assert_int_equal(tirenv_test_count_entries(fx, "tmp."), 0);
     /* mkstemp's 0600 would surprise; a new file gets 0666 minus the umask, like fopen. */
@@ -530,10 +513,10 @@ static void test_outfile_replaces_existing(void **state)
     tirenv_diag d;
     assert_int_equal(tirenv_outfile_open(&f, path, &d), TIRENV_OK);
     fputs("new\n", tirenv_outfile_stream(f));
-    read_back(path, text, sizeof text); /* the old file is intact until commit */
+    tirenv_test_read_text(path, text, sizeof text); /* the old file is intact until commit */
     assert_string_equal(text, "old contents, longer than the new ones\n");
     assert_int_equal(tirenv_outfile_commit(f, &d), TIRENV_OK);
-    read_back(path, text, sizeof text);
+    tirenv_test_read_text(path, text, sizeof text);
     assert_string_equal(text, "new\n");
     struct stat st;
     assert_int_equal(stat(path, &st), 0);
@@ -755,10 +738,7 @@ static void test_own_q_fz1_and_pfz1(void **state)
     const tirenv_tire def = tirenv_tire_default();
     tirenv_test_path(fx, "def.tir", path);
     assert_int_equal(tirenv_tir_write(path, &def, &d), TIRENV_OK);
-    FILE *fp = fopen(path, "r");
-    assert_non_null(fp);
-    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
-    fclose(fp);
+    tirenv_test_read_text(path, text, sizeof text);
     assert_null(strstr(text, "Q_FZ1 "));
     assert_null(strstr(text, "PFZ1 "));
     tirenv_tire set = def;

@@ -81,6 +81,18 @@ void tirenv_test_write_text(const char *path, const char *text)
     assert_int_equal(fclose(fp), 0);
 }
 
+size_t tirenv_test_read_text(const char *path, char *buf, size_t size)
+{
+    FILE *fp = fopen(path, "r");
+    assert_non_null(fp);
+    const size_t n = fread(buf, 1, size - 1, fp);
+    assert_int_equal(ferror(fp), 0);
+    assert_int_equal(fgetc(fp), EOF);
+    assert_int_equal(fclose(fp), 0);
+    buf[n] = '\0';
+    return n;
+}
+
 size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containing)
 {
     DIR *dir = opendir(d->dir);

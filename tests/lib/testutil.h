@@ -85,6 +85,9 @@ int tirenv_test_dir_teardown(void **state);
 const char *tirenv_test_path(const tirenv_test_dir *d, const char *name, char buf[600]);
 /* Writes text to path, asserting success. */
 void tirenv_test_write_text(const char *path, const char *text);
+/* Reads the whole file at path into buf, NUL-terminated, asserting that it opens and fits in
+ * size - 1 bytes (a longer file fails the test rather than being cut); returns its length. */
+size_t tirenv_test_read_text(const char *path, char *buf, size_t size);
 /* Entries of the directory whose name contains the string. */
 size_t tirenv_test_count_entries(const tirenv_test_dir *d, const char *containing);
 

@@ -452,10 +452,7 @@ static void test_write_read_round_trip(void **state)
     tirenv_diag d;
     const tirenv_vehicle def = tirenv_vehicle_default();
     assert_int_equal(tirenv_vehicle_write(path, &def, &d), TIRENV_OK);
-    FILE *fp = fopen(path, "r");
-    assert_non_null(fp);
-    text[fread(text, 1, sizeof text - 1, fp)] = '\0';
-    fclose(fp);
+    tirenv_test_read_text(path, text, sizeof text);
     assert_non_null(strstr(text, "\n[UNITS]\nLENGTH                   = 'meter' "));
     assert_non_null(strstr(text, "\n[BODY]\nMASS                     = "));
     assert_non_null(strstr(text, "\nCG_TO_REAR_AXLE          = 0.95 "));

@@ -448,14 +448,12 @@ static void test_pressure_dependence(void **state)
 static void test_own_q_fz1(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/tirenv_onetire_XXXXXX";
-    assert_non_null(mkdtemp(dir));
-    char path[128];
-    snprintf(path, sizeof path, "%s/q.tir", dir);
+    char path[64];
     const double R0 = 0.3135, F0 = 4000, q1 = 19.3, q2 = 21.7;
-    tirenv_test_write_text(path, "[DIMENSION]\nUNLOADED_RADIUS = 0.3135\nWIDTH = 0.205\n"
-                                 "ASPECT_RATIO = 0.6\n[VERTICAL]\nFNOMIN = 4000\n"
-                                 "VERTICAL_STIFFNESS = 200000\nQ_FZ1 = 19.3\nQ_FZ2 = 21.7\n");
+    tirenv_test_write_temp(path, "onetire_q",
+                           "[DIMENSION]\nUNLOADED_RADIUS = 0.3135\nWIDTH = 0.205\n"
+                           "ASPECT_RATIO = 0.6\n[VERTICAL]\nFNOMIN = 4000\n"
+                           "VERTICAL_STIFFNESS = 200000\nQ_FZ1 = 19.3\nQ_FZ2 = 21.7\n");
     tirenv_tire t = tirenv_tire_default();
     tirenv_diag d;
     tirenv_tir_origin o;
@@ -478,20 +476,16 @@ static void test_own_q_fz1(void **state)
     }
     assert_near(o.rho_nominal, closed, 0, 1e-12);
     unlink(path);
-    rmdir(dir);
 }
 
-/* A file that lacks what a model needs: refused naming the key when the model is needed,
+/* A file that lacks what a model needs: refused naming the file and key when the model is needed,
  * said in the note (and the tire left as it was) when it is not. */
 static void test_refuses_naming_the_key(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/tirenv_onetire_XXXXXX";
-    assert_non_null(mkdtemp(dir));
-    char path[128];
-    snprintf(path, sizeof path, "%s/nofnomin.tir", dir);
-    tirenv_test_write_text(path, "[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\n"
-                                "VERTICAL_STIFFNESS = 1.75e5\n");
+    char path[64];
+    tirenv_test_write_temp(path, "onetire_nofnomin", "[DIMENSION]\nUNLOADED_RADIUS = 0.376\n"
+                                                     "[VERTICAL]\nVERTICAL_STIFFNESS = 1.75e5\n");
     tirenv_tire t = tirenv_tire_default();
     tirenv_diag d;
     tirenv_tir_origin o;
@@ -499,6 +493,7 @@ static void test_refuses_naming_the_key(void **state)
     const tirenv_tire before = t;
     assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_SPRINGS, &o, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "FNOMIN");
+    assert_string_equal(d.file, path);
     assert_non_null(strstr(d.message, "ENVELOPING_SPRINGS"));
     assert_memory_equal(&t, &before, sizeof t);
     assert_int_equal(tirenv_tir_derive(path, &t, TIRENV_TIR_RING, &o, &d), TIRENV_EINVAL);
@@ -508,7 +503,6 @@ static void test_refuses_naming_the_key(void **state)
     assert_non_null(strstr(o.note, "no FNOMIN"));
     assert_memory_equal(&t, &before, sizeof t);
     unlink(path);
-    rmdir(dir);
 }
 
 /* tirenv_tir_update: values replaced in place, comments kept, the note block replaced on a
@@ -535,11 +529,7 @@ static void test_update_in_place(void **state)
         assert_int_equal(tirenv_tir_update(path, 3, v, run ? "second\nnote" : "first", &d),
                          TIRENV_OK);
     char text[2048];
-    FILE *fp = fopen(path, "r");
-    assert_non_null(fp);
-    const size_t len = fread(text, 1, sizeof text - 1, fp);
-    fclose(fp);
-    text[len] = '\0';
+    tirenv_test_read_text(path, text, sizeof text);
     print_message("%s", text);
     assert_non_null(strstr(text, "RADIAL_STIFFNESS = 369120   $ c_r\n"));
     assert_non_null(strstr(text, "$ keep me\n"));
