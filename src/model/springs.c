@@ -378,6 +378,26 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
  * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
  * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
  * else the QP is solved whole. */
+/* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
+ * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays. */
+static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx, double *fz,
+                       size_t *contacts)
+{
+    const double k_r = s->k_r;
+    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
+    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
+    size_t n = 0;
+    for (size_t i = f0; i <= f1; ++i) {
+        sum_c += k_r * s->w[i] * s->cos_t[i];
+        sum_s += k_r * s->w[i] * s->sin_t[i];
+        n += s->p[i] > 0;
+    }
+    *fz = sum_c;
+    *fx = -sum_s;
+    if (contacts)
+        *contacts = n;
+}
+
 static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
@@ -414,20 +434,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->upd_serial == prof->serial &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d)) {
-            f0 = s->cc.f0;
-            f1 = s->cc.f1;
-            double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
-            double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
-            size_t n = 0;
-            for (size_t i = f0; i <= f1; ++i) {
-                sum_c += k_r * s->w[i] * s->cos_t[i];
-                sum_s += k_r * s->w[i] * s->sin_t[i];
-                n += s->p[i] > 0;
-            }
-            *fz = sum_c;
-            *fx = -sum_s;
-            if (contacts)
-                *contacts = n;
+            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, contacts);
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
             return TIRENV_OK;
         }
@@ -487,18 +494,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     s->cc.between = !fast && s->cc.n_warm > 0;
     s->a = f0;
     s->b = f1;
-    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
-    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
-    size_t n = 0; /* the elements the ground presses, as with rays */
-    for (size_t i = f0; i <= f1; ++i) {
-        sum_c += k_r * s->w[i] * s->cos_t[i];
-        sum_s += k_r * s->w[i] * s->sin_t[i];
-        n += s->p[i] > 0;
-    }
-    *fz = sum_c;
-    *fx = -sum_s;
-    if (contacts)
-        *contacts = n;
+    hub_forces(s, f0, f1, fx, fz, contacts);
     if (!dfz_dz)
         return TIRENV_OK;
     if (fast) {
