@@ -345,6 +345,15 @@ static int same_slope(const tirenv_springs *s, size_t f0, size_t f1)
            !memcmp(s->slope.gap, P->gap, 2 * P->n_gaps * sizeof *P->gap);
 }
 
+/* dF_z/dz (N/m) from dw = dw/dz over [f0, f1], the free chains beyond folded into its ends. */
+static double hub_dfz_dz(const tirenv_springs *s, size_t f0, size_t f1)
+{
+    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+    for (size_t i = f0; i <= f1; ++i)
+        sum += s->k_r * s->dw[i] * s->cos_t[i];
+    return sum;
+}
+
 /* dF_z/dz of the state just solved, over the touching span [f0, f1]: d(d_i)/dz =
  * -d(rho_i)/dz on the pinned elements, and the LCP's closed form carries it to dw. */
 static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t f0, size_t f1)
@@ -356,9 +365,7 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
         tirenv_springs__fan_drho_neg(prof, &s->rays, P->first, P->last, s->active, s->memo,
                                      s->dd);
     tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
-    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-    for (size_t i = f0; i <= f1; ++i)
-        sum += s->k_r * s->dw[i] * s->cos_t[i];
+    const double sum = hub_dfz_dz(s, f0, f1);
     s->slope.valid = 1;
     s->slope.fans = s->fans;
     s->slope.f0 = f0;
@@ -402,7 +409,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
 {
-    const double R0 = s->par.R0, k_r = s->k_r;
+    const double R0 = s->par.R0;
     size_t a = 1, b = 0;
     set_origin(s, prof, x);
     const int any = candidate_span(s, z, &a, &b);
@@ -533,9 +540,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->upd_serial = prof->serial;
         }
     }
-    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-    for (size_t i = f0; i <= f1; ++i)
-        sum += k_r * s->dw[i] * s->cos_t[i];
+    const double sum = hub_dfz_dz(s, f0, f1);
     *dfz_dz = sum;
     s->upd_dfz_dz = sum;
     return TIRENV_OK;
