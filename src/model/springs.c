@@ -345,6 +345,15 @@ static int same_slope(const tirenv_springs *s, size_t f0, size_t f1)
            !memcmp(s->slope.gap, P->gap, 2 * P->n_gaps * sizeof *P->gap);
 }
 
+/* dF_z/dz (N/m) from dw = dw/dz over [f0, f1], the free chains beyond folded into its ends. */
+static double hub_dfz_dz(const tirenv_springs *s, size_t f0, size_t f1)
+{
+    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
+    for (size_t i = f0; i <= f1; ++i)
+        sum += s->k_r * s->dw[i] * s->cos_t[i];
+    return sum;
+}
+
 /* dF_z/dz of the state just solved, over the touching span [f0, f1]: d(d_i)/dz =
  * -d(rho_i)/dz on the pinned elements, and the LCP's closed form carries it to dw. */
 static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t f0, size_t f1)
@@ -356,9 +365,7 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
         tirenv_springs__fan_drho_neg(prof, &s->rays, P->first, P->last, s->active, s->memo,
                                      s->dd);
     tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
-    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-    for (size_t i = f0; i <= f1; ++i)
-        sum += s->k_r * s->dw[i] * s->cos_t[i];
+    const double sum = hub_dfz_dz(s, f0, f1);
     s->slope.valid = 1;
     s->slope.fans = s->fans;
     s->slope.f0 = f0;
@@ -378,11 +385,31 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
  * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
  * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
  * else the QP is solved whole. */
+/* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
+ * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays. */
+static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx, double *fz,
+                       size_t *contacts)
+{
+    const double k_r = s->k_r;
+    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
+    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
+    size_t n = 0;
+    for (size_t i = f0; i <= f1; ++i) {
+        sum_c += k_r * s->w[i] * s->cos_t[i];
+        sum_s += k_r * s->w[i] * s->sin_t[i];
+        n += s->p[i] > 0;
+    }
+    *fz = sum_c;
+    *fx = -sum_s;
+    if (contacts)
+        *contacts = n;
+}
+
 static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
 {
-    const double R0 = s->par.R0, k_r = s->k_r;
+    const double R0 = s->par.R0;
     size_t a = 1, b = 0;
     set_origin(s, prof, x);
     const int any = candidate_span(s, z, &a, &b);
@@ -414,20 +441,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->upd_serial == prof->serial &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d)) {
-            f0 = s->cc.f0;
-            f1 = s->cc.f1;
-            double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
-            double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
-            size_t n = 0;
-            for (size_t i = f0; i <= f1; ++i) {
-                sum_c += k_r * s->w[i] * s->cos_t[i];
-                sum_s += k_r * s->w[i] * s->sin_t[i];
-                n += s->p[i] > 0;
-            }
-            *fz = sum_c;
-            *fx = -sum_s;
-            if (contacts)
-                *contacts = n;
+            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, contacts);
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
             return TIRENV_OK;
         }
@@ -487,18 +501,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     s->cc.between = !fast && s->cc.n_warm > 0;
     s->a = f0;
     s->b = f1;
-    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
-    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
-    size_t n = 0; /* the elements the ground presses, as with rays */
-    for (size_t i = f0; i <= f1; ++i) {
-        sum_c += k_r * s->w[i] * s->cos_t[i];
-        sum_s += k_r * s->w[i] * s->sin_t[i];
-        n += s->p[i] > 0;
-    }
-    *fz = sum_c;
-    *fx = -sum_s;
-    if (contacts)
-        *contacts = n;
+    hub_forces(s, f0, f1, fx, fz, contacts);
     if (!dfz_dz)
         return TIRENV_OK;
     if (fast) {
@@ -537,9 +540,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->upd_serial = prof->serial;
         }
     }
-    double sum = s->dw[f0] * s->S_lc[f0] + s->dw[f1] * s->S_rc[f1];
-    for (size_t i = f0; i <= f1; ++i)
-        sum += k_r * s->dw[i] * s->cos_t[i];
+    const double sum = hub_dfz_dz(s, f0, f1);
     *dfz_dz = sum;
     s->upd_dfz_dz = sum;
     return TIRENV_OK;

@@ -229,69 +229,6 @@ static double fan_tol(const tirenv_springs__fan_origin *o, double z)
     return o->tol + 8 * DBL_EPSILON * fabs(z);
 }
 
-void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                         const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
-                         double rho[], tirenv_springs__ray_memo memo[])
-{
-    const double f0 = z - o->g, rho_max = r->rho_max;
-    const size_t i0 = r->i0;
-    if (!(f0 > 0)) { /* centre on or below the ground: every ray has length 0 */
-        for (size_t i = a; i <= b; ++i) {
-            rho[i] = 0;
-            memo[i] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_NONE, .z_low = INFINITY,
-                                                 .drho = 0};
-        }
-        return;
-    }
-    const double tol = fan_tol(o, z);
-    rho[i0] = f0 <= rho_max ? f0 : INFINITY;
-    memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
-    for (int side = 0; side < 2; ++side) {
-        const int dir = side ? 1 : -1;
-        const long first_j = o->first[side];
-        const size_t count = side ? b - i0 : i0 - a; /* rays on this side */
-        long j = first_j;
-        double f_min = f0, drop_prev = INFINITY, reach_prev = 0;
-        for (size_t step = 1; step <= count; ++step) {
-            const size_t i = side ? i0 + step : i0 - step;
-            const double drop = r->drop[i], reach = r->reach[i];
-            /* The resumption is exact only if this ray lies above the last at every vertex
-             * (its computed descent is no steeper) and reaches at least as far; the element
-             * layout gives both, but the computed values decide. */
-            if (!(drop <= drop_prev && reach >= reach_prev)) {
-                j = first_j;
-                f_min = f0;
-            }
-            drop_prev = drop;
-            reach_prev = reach;
-            long j_end;
-            int kind;
-            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach, r->cos_t[i],
-                          rho_max, &j_end, &kind, &f_min);
-            memo[i] = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
-                                                 .z_low = z - (f_min - tol), .drho = NAN};
-            j = j_end;
-        }
-    }
-}
-
-double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
-                                size_t i, tirenv_springs__ray_memo *m)
-{
-    if (isnan(m->drho)) /* the face does not change while the memo holds */
-        m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i], r->cos_t[i]);
-    return m->drho;
-}
-
-void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
-                                  size_t first, size_t last, const unsigned char mask[],
-                                  tirenv_springs__ray_memo memo[], double dd[])
-{
-    for (size_t i = first; i <= last; ++i)
-        if (mask[i])
-            dd[i] = -tirenv_springs__fan_drho(p, r, i, &memo[i]); /* inlined here */
-}
-
 /* Why reuse is exact. Along one ray from one x, f_k(z) = (z - a_k drop) - Z_k at every point
  * k; rounding is monotone, so the computed f_k never decreases when z grows. A walk that
  * ended at vertex j with every earlier point above the ground (f > 0) therefore ends at j
@@ -367,6 +304,90 @@ static inline int reuse_ray(const tirenv_profile *p, const tirenv_springs__fan_o
     }
 }
 
+/* The rays step..count of one side (side 0: i0 - step, 1: i0 + step) as the fan walks them,
+ * each resuming where its inner neighbour ended: at vertex j with the running minimum f_min,
+ * that ray's drop and reach being drop_prev and reach_prev. With reuse, a ray after the
+ * first walked whose memo holds at z is kept (tirenv_springs__fan_update). Returns the rays
+ * walked. */
+static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, double z, int side, size_t step,
+                              size_t count, long j, double f_min, double drop_prev,
+                              double reach_prev, int reuse, double rho[],
+                              tirenv_springs__ray_memo memo[])
+{
+    const double f0 = z - o->g, rho_max = r->rho_max, tol = fan_tol(o, z);
+    const size_t i0 = r->i0;
+    const int dir = side ? 1 : -1;
+    const long first_j = o->first[side];
+    size_t cast = 0;
+    for (; step <= count; ++step) {
+        const size_t i = side ? i0 + step : i0 - step;
+        const double drop = r->drop[i], reach = r->reach[i];
+        /* The resumption is exact only if this ray lies above the last at every vertex
+         * (its computed descent is no steeper) and reaches at least as far; the element
+         * layout gives both, but the computed values decide. */
+        if (!(drop <= drop_prev && reach >= reach_prev)) {
+            j = first_j;
+            f_min = f0;
+        }
+        drop_prev = drop;
+        reach_prev = reach;
+        tirenv_springs__ray_memo *const m = &memo[i];
+        if (reuse && cast && reuse_ray(p, o, r, z, f0, i, rho, m)) {
+            j = m->j;
+            f_min = z - m->z_low; /* f_min(z) >= this (above) */
+            continue;
+        }
+        long j_end;
+        int kind;
+        rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach, r->cos_t[i],
+                      rho_max, &j_end, &kind, &f_min);
+        *m = (tirenv_springs__ray_memo){.j = j_end, .kind = kind, .z_low = z - (f_min - tol),
+                                        .drho = NAN};
+        j = j_end;
+        ++cast;
+    }
+    return cast;
+}
+
+void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                         const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
+                         double rho[], tirenv_springs__ray_memo memo[])
+{
+    const double f0 = z - o->g, rho_max = r->rho_max;
+    const size_t i0 = r->i0;
+    if (!(f0 > 0)) { /* centre on or below the ground: every ray has length 0 */
+        for (size_t i = a; i <= b; ++i) {
+            rho[i] = 0;
+            memo[i] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_NONE, .z_low = INFINITY,
+                                                 .drho = 0};
+        }
+        return;
+    }
+    rho[i0] = f0 <= rho_max ? f0 : INFINITY;
+    memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
+    for (int side = 0; side < 2; ++side)
+        fan_side(p, o, r, z, side, 1, side ? b - i0 : i0 - a, o->first[side], f0, INFINITY, 0,
+                 0, rho, memo);
+}
+
+double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                size_t i, tirenv_springs__ray_memo *m)
+{
+    if (isnan(m->drho)) /* the face does not change while the memo holds */
+        m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i], r->cos_t[i]);
+    return m->drho;
+}
+
+void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
+                                  size_t first, size_t last, const unsigned char mask[],
+                                  tirenv_springs__ray_memo memo[], double dd[])
+{
+    for (size_t i = first; i <= last; ++i)
+        if (mask[i])
+            dd[i] = -tirenv_springs__fan_drho(p, r, i, &memo[i]); /* inlined here */
+}
+
 int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
                               double rho[], const tirenv_springs__ray_memo memo[])
@@ -395,17 +416,14 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
                                   const tirenv_springs__fan_rays *r, double z, size_t a,
                                   size_t b, double rho[], tirenv_springs__ray_memo memo[])
 {
-    const double f0 = z - o->g, rho_max = r->rho_max;
+    const double f0 = z - o->g;
     const size_t i0 = r->i0;
     if (!(f0 > 0) || !reuse_ray(p, o, r, z, f0, i0, rho, &memo[i0])) {
         tirenv_springs__fan(p, o, r, z, a, b, rho, memo);
         return b - a + 1;
     }
-    const double tol = fan_tol(o, z);
     size_t cast = 0;
     for (int side = 0; side < 2; ++side) {
-        const int dir = side ? 1 : -1;
-        const long first_j = o->first[side];
         const size_t count = side ? b - i0 : i0 - a;
         /* the rays whose memos hold, outward to the first that fails */
         size_t step = 1;
@@ -416,7 +434,7 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
             continue;
         /* from there on as the fan, each ray resuming where its inner neighbour ends; the
          * running minimum from a kept memo is bounded below (above) */
-        long j = first_j;
+        long j = o->first[side];
         double f_min = f0, drop_prev = INFINITY, reach_prev = 0;
         if (step > 1) {
             const size_t in = side ? i0 + step - 1 : i0 - step + 1;
@@ -425,31 +443,8 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
             drop_prev = r->drop[in];
             reach_prev = r->reach[in];
         }
-        for (int walked = 0; step <= count; ++step) {
-            const size_t i = side ? i0 + step : i0 - step;
-            const double drop = r->drop[i], reach = r->reach[i];
-            if (!(drop <= drop_prev && reach >= reach_prev)) {
-                j = first_j;
-                f_min = f0;
-            }
-            drop_prev = drop;
-            reach_prev = reach;
-            tirenv_springs__ray_memo *const m = &memo[i];
-            if (walked && reuse_ray(p, o, r, z, f0, i, rho, m)) {
-                j = m->j;
-                f_min = z - m->z_low; /* f_min(z) >= this (above) */
-                continue;
-            }
-            walked = 1;
-            long j_end;
-            int kind;
-            rho[i] = walk(p, o->x, z, f0, first_j, j, dir, r->inv_s[i], drop, reach,
-                          r->cos_t[i], rho_max, &j_end, &kind, &f_min);
-            *m = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
-                                            .z_low = z - (f_min - tol), .drho = NAN};
-            j = j_end;
-            ++cast;
-        }
+        cast += fan_side(p, o, r, z, side, step, count, j, f_min, drop_prev, reach_prev, 1, rho,
+                         memo);
     }
     return cast;
 }

@@ -233,6 +233,20 @@ static void setup_tire(tire_setup *S, const tirenv_springs_params *par)
     tirenv_springs__cc_tire_shape(&S->T);
 }
 
+/* The penetrations d[0..N) at (x, z) from single rays (the reference caster), and, when dd is
+ * not NULL, their slopes dd[i] = d(d_i)/dz (0 where a ray misses the ground). */
+static void cast_rays(const tire_setup *S, const tirenv_profile *p, double x, double z,
+                      double R0, double d[], double dd[])
+{
+    for (size_t i = 0; i < S->N; ++i) {
+        double dr;
+        const double rho = tirenv_springs__ray(p, x, z, S->sin_t[i], S->cos_t[i], R0, &dr);
+        d[i] = rho < R0 ? R0 - rho : 0;
+        if (dd)
+            dd[i] = rho < R0 ? -dr : 0;
+    }
+}
+
 static void free_tire(tire_setup *S)
 {
     double *arrays[] = {S->diag, S->lq, S->rq, S->L_D, S->R_D, S->d, S->pe,
@@ -260,11 +274,7 @@ static void test_kkt_conditions(void **state)
         const double x = -0.3 + 0.6 * uniform();
         const double g = tirenv_profile_max_height(p, x - 0.7, x + 0.7);
         const double z = g + par.R0 - 0.02 - 0.1 * uniform();
-        for (size_t i = 0; i < N; ++i) {
-            double dr;
-            const double rho = tirenv_springs__ray(p, x, z, S.sin_t[i], S.cos_t[i], par.R0, &dr);
-            S.d[i] = rho < par.R0 ? par.R0 - rho : 0;
-        }
+        cast_rays(&S, p, x, z, par.R0, S.d, NULL);
         tirenv_springs__cc c;
         assert_int_equal(tirenv_springs__cc_init(&c, N), TIRENV_OK);
         tirenv_diag diag;
@@ -498,13 +508,7 @@ static void test_kept_factor_invisible(void **state)
             const double g = tirenv_profile_max_height(p, x - 0.3, x + 0.3);
             for (int confirm = 0; confirm < 2; ++confirm) {
                 const double z = g + par.R0 - dz + (confirm ? 1e-9 : 0);
-                for (size_t i = 0; i < N; ++i) {
-                    double dr;
-                    const double rho = tirenv_springs__ray(p, x, z, S.sin_t[i], S.cos_t[i],
-                                                           par.R0, &dr);
-                    S.d[i] = rho < par.R0 ? par.R0 - rho : 0;
-                    dd[i] = rho < par.R0 ? -dr : 0;
-                }
+                cast_rays(&S, p, x, z, par.R0, S.d, dd);
                 tirenv_springs__cc cold;
                 assert_int_equal(tirenv_springs__cc_init(&cold, N), TIRENV_OK);
                 tirenv_diag diag;
@@ -586,13 +590,7 @@ static void test_update_is_the_solution(void **state)
             const double x = x0 + 0.0137 * k;
             const double g = tirenv_profile_max_height(p, x - 0.3, x + 0.3);
             const double z0 = g + par.R0 - sink;
-            for (size_t i = 0; i < N; ++i) {
-                double dr;
-                const double rho = tirenv_springs__ray(p, x, z0, S.sin_t[i], S.cos_t[i],
-                                                       par.R0, &dr);
-                S.d[i] = rho < par.R0 ? par.R0 - rho : 0;
-                dd[i] = rho < par.R0 ? -dr : 0;
-            }
+            cast_rays(&S, p, x, z0, par.R0, S.d, dd);
             tirenv_diag diag;
             assert_int_equal(tirenv_springs__cc_rows(&hot, &S.T, p, x, z0, 0, N - 1, S.d,
                                                      &diag), TIRENV_OK);
@@ -606,12 +604,7 @@ static void test_update_is_the_solution(void **state)
             hot.base_ok = 1;
             const double dz = (uniform() < 0.5 ? -1 : 1) * pow(10, -10 + 4 * uniform());
             const double z1 = z0 + dz;
-            for (size_t i = 0; i < N; ++i) {
-                double dr;
-                const double rho = tirenv_springs__ray(p, x, z1, S.sin_t[i], S.cos_t[i],
-                                                       par.R0, &dr);
-                d1[i] = rho < par.R0 ? par.R0 - rho : 0;
-            }
+            cast_rays(&S, p, x, z1, par.R0, d1, NULL);
             const size_t f0 = hot.f0, f1 = hot.f1;
             const int took = hot.use_schur && hot.n_warm > 0; /* the states the update is for */
             ++states;
