@@ -19,6 +19,13 @@ typedef struct tirenv_profile tirenv_profile;
  * line = 1-based vertex index). */
 int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv_diag *diag);
 
+/* tirenv_profile_validate's check of one vertex, for a reader that meets them one at a time:
+ * vertex k (0-based) at (x, z), m, after vertices at x_prev (k - 1's, read if k >= 1) and
+ * x_prev2 (k - 2's, read if k >= 2). Returns TIRENV_OK or TIRENV_EINVAL with the words
+ * tirenv_profile_validate would use (line = k + 1). */
+int tirenv_profile_check_vertex(size_t k, double x, double z, double x_prev, double x_prev2,
+                                tirenv_diag *diag);
+
 /* Builds a profile from n vertices (copied; x, z in m). NULL if invalid or out of memory. */
 tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[]);
 

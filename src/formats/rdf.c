@@ -251,37 +251,22 @@ static double side_z(tirenv_rdf_side side, const double v[3], double f, double o
     return f * (side_zs(side, v) + offset);
 }
 
-/* The checks of tirenv_profile_validate (its words, its order: x finite, z finite, x not
- * decreasing, no third vertex at one x) on the row just read, for the three sides at once, so
- * that a road's rows are checked as they pass, without being kept: the first failure of each
- * side is kept (its line and words), and reported as the whole read reported it, after the
- * file's other checks (tirenv_rdf__side). */
+/* tirenv_profile_validate's checks (tirenv_profile_check_vertex) on the row just read, for the
+ * three sides at once, so that a road's rows are checked as they pass, without being kept: the
+ * first failure of each side is kept (its line and words), and reported as the whole read
+ * reported it, after the file's other checks (tirenv_rdf__side). */
 static void check_row(tirenv_rdf__check *c, const double v[3], double f, double offset,
                       size_t line)
 {
-    const size_t k = c->n++, vertex = k + 1;
+    const size_t k = c->n++;
     const double x = f * v[0];
     for (int s = 0; s < 3; s++) {
         tirenv_rdf__bad *b = &c->bad[s];
-        if (b->line)
+        tirenv_diag d;
+        if (b->line || tirenv_profile_check_vertex(k, x, side_z((tirenv_rdf_side)s, v, f, offset),
+                                                   c->x1, c->x2, &d) == TIRENV_OK)
             continue;
-        const double z = side_z((tirenv_rdf_side)s, v, f, offset);
-        if (!isfinite(x))
-            snprintf(b->message, sizeof b->message,
-                     "vertex %zu: x = %g is not finite; expected a finite number", vertex, x);
-        else if (!isfinite(z))
-            snprintf(b->message, sizeof b->message,
-                     "vertex %zu: z = %g is not finite; expected a finite number", vertex, z);
-        else if (k >= 1 && x < c->x1)
-            snprintf(b->message, sizeof b->message,
-                     "vertex %zu: x = %.17g is less than the previous x = %.17g; expected "
-                     "non-decreasing x", vertex, x, c->x1);
-        else if (k >= 2 && x == c->x2)
-            snprintf(b->message, sizeof b->message,
-                     "vertex %zu: x = %.17g is shared by three vertices; expected at most two "
-                     "(a vertical wall)", vertex, x);
-        else
-            continue;
+        snprintf(b->message, sizeof b->message, "%s", d.message);
         b->line = line;
     }
     c->x2 = c->x1;

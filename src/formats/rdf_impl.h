@@ -16,7 +16,7 @@
 /* A side's first failing row: its line (0: none) and what tirenv_profile_validate says. */
 typedef struct {
     size_t line;
-    char message[400];
+    char message[sizeof ((tirenv_diag){0}).message];
 } tirenv_rdf__bad;
 
 /* A poly_line's rows as the scan met them. */

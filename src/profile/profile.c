@@ -9,6 +9,32 @@
 #include <stdlib.h>
 #include <string.h>
 
+int tirenv_profile_check_vertex(size_t k, double x, double z, double x_prev, double x_prev2,
+                                tirenv_diag *diag)
+{
+    const size_t line = k + 1;
+    if (!isfinite(x))
+        return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
+                            "vertex %zu: x = %g is not finite; expected a finite number", line,
+                            x);
+    if (!isfinite(z))
+        return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "z",
+                            "vertex %zu: z = %g is not finite; expected a finite number", line,
+                            z);
+    if (k >= 1 && x < x_prev)
+        return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
+                            "vertex %zu: x = %.17g is less than the previous x = %.17g; "
+                            "expected non-decreasing x",
+                            line, x, x_prev);
+    /* A third vertex at one abscissa would make the height there ambiguous. */
+    if (k >= 2 && x == x_prev2)
+        return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
+                            "vertex %zu: x = %.17g is shared by three vertices; expected at "
+                            "most two (a vertical wall)",
+                            line, x);
+    return TIRENV_OK;
+}
+
 /* Vertices are checked one by one in order, so the diagnostic names the first bad vertex,
  * which is what a user editing a CSV file wants to jump to. */
 int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv_diag *diag)
@@ -20,26 +46,10 @@ int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv
         return tirenv_error(diag, TIRENV_EINVAL, NULL, 0, x ? "z" : "x",
                             "the vertex array is NULL; expected %zu values", n);
     for (size_t k = 0; k < n; k++) {
-        const size_t line = k + 1;
-        if (!isfinite(x[k]))
-            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
-                                "vertex %zu: x = %g is not finite; expected a finite number",
-                                line, x[k]);
-        if (!isfinite(z[k]))
-            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "z",
-                                "vertex %zu: z = %g is not finite; expected a finite number",
-                                line, z[k]);
-        if (k >= 1 && x[k] < x[k - 1])
-            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
-                                "vertex %zu: x = %.17g is less than the previous x = %.17g; "
-                                "expected non-decreasing x",
-                                line, x[k], x[k - 1]);
-        /* A third vertex at one abscissa would make the height there ambiguous. */
-        if (k >= 2 && x[k] == x[k - 2])
-            return tirenv_error(diag, TIRENV_EINVAL, NULL, line, "x",
-                                "vertex %zu: x = %.17g is shared by three vertices; expected "
-                                "at most two (a vertical wall)",
-                                line, x[k]);
+        const int status = tirenv_profile_check_vertex(k, x[k], z[k], k >= 1 ? x[k - 1] : 0,
+                                                       k >= 2 ? x[k - 2] : 0, diag);
+        if (status)
+            return status;
     }
     return TIRENV_OK;
 }

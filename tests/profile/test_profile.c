@@ -53,6 +53,18 @@ static void test_validate_errors(void **state)
         assert_string_equal(diag.field, c->field);
         assert_non_null(strstr(diag.message, "expected")); /* says what was expected */
         assert_null(tirenv_profile_alloc(c->n, c->null_x ? NULL : c->x, c->z));
+        if (c->null_x || c->n == 0)
+            continue;
+        /* A reader checking one vertex at a time stops at the same vertex, in the same words. */
+        tirenv_diag one;
+        size_t k = 0;
+        while (k < c->n && tirenv_profile_check_vertex(k, c->x[k], c->z[k], k ? c->x[k - 1] : 0,
+                                                       k > 1 ? c->x[k - 2] : 0, &one) == TIRENV_OK)
+            k++;
+        assert_int_equal(k + 1, c->line);
+        assert_int_equal(one.line, diag.line);
+        assert_string_equal(one.field, diag.field);
+        assert_string_equal(one.message, diag.message);
     }
     /* A NULL diag is allowed. */
     assert_int_equal(tirenv_profile_validate(0, NULL, NULL, NULL), TIRENV_EINVAL);
