@@ -717,8 +717,8 @@ static int derived(tirenv_tir_origin *o, const char *law)
     return TIRENV_OK;
 }
 
-int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
-                      tirenv_tir_origin *origin, tirenv_diag *diag)
+static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir_origin *origin,
+                  tirenv_diag *diag)
 {
     memset(origin, 0, sizeof *origin);
     origin->cam_ring_deflection = origin->cam_ring_contact_length = NAN;
@@ -727,6 +727,12 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
     int status = tirenv_propfile__read(&mf_schema, path, &k, diag);
     if (status)
         return status;
+    /* MF-Tyre's rule: a file without INFLPRES is at its NOMPRES (PFZ1's factor 1), not at the
+     * pressure of the tire it was read over. */
+    if (!(k.given & MF_INFLPRES) && (k.given & MF_NOMPRES)) {
+        tire->ring.p = k.nompres;
+        note_add(origin, "no INFLPRES: NOMPRES's %.4g kPa", k.nompres / 1e3);
+    }
     char law_said[sizeof origin->note / 2];
     law_note(tire, law_said, sizeof law_said);
     /* A vertical law of the file's own: Q_FZ2, or a Q_FZ1 other than 0 (0 is MF-Tyre's
@@ -807,10 +813,14 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         origin->derived |= TIRENV_TIR_VERTICAL;
     }
     if (lack & TIRENV_TIR_RING)
-        note_add(origin, "no [ENVELOPING_RING]: derived TREAD_THICKNESS = %.4g, "
+        note_add(origin, "%sno [ENVELOPING_RING]: derived TREAD_THICKNESS = %.4g, "
                  "BELT_BENDING_STIFFNESS = %.4g, BELT_PRETENSION = %.4g, "
-                 "FOUNDATION_STIFFNESS = %.4g, TREAD_STIFFNESS = %.4g", t.ring.t_r, t.ring.EI,
-                 t.ring.T, t.ring.k_f, t.ring.k_t);
+                 "FOUNDATION_STIFFNESS = %.4g, TREAD_STIFFNESS = %.4g",
+                 origin->note[0] ? "; " : "", t.ring.t_r, t.ring.EI, t.ring.T, t.ring.k_f,
+                 t.ring.k_t);
+    if ((lack & TIRENV_TIR_RING) && !(k.given & (MF_INFLPRES | MF_NOMPRES)))
+        note_add(origin, ", its air at %.4g kPa, the default tire's INFLPRES (the file gives "
+                 "no INFLPRES or NOMPRES)", t.ring.p / 1e3);
     if (lack & TIRENV_TIR_SPRINGS)
         note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
                  "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t.springs.c_r,
@@ -830,4 +840,14 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         cam_part(&t, &k, have_ring ? &tr.ring : NULL, !(origin->own & TIRENV_TIR_CAM), origin);
     *tire = t;
     return derived(origin, law_said);
+}
+
+int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
+                      tirenv_tir_origin *origin, tirenv_diag *diag)
+{
+    const tirenv_tire read = *tire;
+    const int status = derive(path, tire, need, origin, diag);
+    if (status)
+        *tire = read;
+    return status;
 }

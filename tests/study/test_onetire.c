@@ -232,6 +232,8 @@ static void test_derived_pairs(void **state)
         assert_near(o.cam_ring_deflection, e[1].defl, 1e-12, 0);
         assert_near(o.cam_ring_contact_length, e[1].l, 1e-12, 0);
         assert_non_null(strstr(o.note, "cam against ring"));
+        /* The first three files give no pressure: the derived ring's air is said. */
+        assert_true((strstr(o.note, "the file gives no INFLPRES or NOMPRES") == NULL) == (f >= 3));
         if (f < N_MF - N_OWN_CAM) {
             assert_int_equal(o.derived & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
             assert_non_null(strstr(o.note, "derived on the ring Q_RA1"));
@@ -440,6 +442,33 @@ static void test_pressure_dependence(void **state)
     rmdir(dir);
 }
 
+/* MF-Tyre's rule: a file without INFLPRES is at its NOMPRES (PFZ1's factor 1), said, not at the
+ * pressure of the tire it was read over (the default's 120 kPa); with INFLPRES, its own. A file
+ * with every model's section, so nothing is derived. */
+static void test_inflpres_is_nompres(void **state)
+{
+    (void)state;
+    for (int given = 0; given < 2; given++) {
+        char path[64], text[512];
+        snprintf(text, sizeof text,
+                 "[OPERATING_CONDITIONS]\n%sNOMPRES = 250000\n[VERTICAL]\nPFZ1 = 0.7\n"
+                 "[ENVELOPING_SPRINGS]\nRADIAL_STIFFNESS = 407000\n[ENVELOPING_RING]\n"
+                 "FOUNDATION_STIFFNESS = 1.1e5\n[CONTACT_PATCH]\nQ_RA1 = 0.6\nQ_RA2 = 0.7\n",
+                 given ? "INFLPRES = 90000\n" : "");
+        tirenv_test_write_temp(path, "onetire_p", text);
+        tirenv_tire t = tirenv_tire_default();
+        tirenv_diag d;
+        tirenv_tir_origin o;
+        assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+        assert_int_equal(tirenv_tir_derive(path, &t, 0, &o, &d), TIRENV_OK);
+        print_message("INFLPRES %s: %g Pa, note '%s'\n", given ? "given" : "not given", t.ring.p,
+                      o.note);
+        assert_true(t.ring.p == (given ? 90000 : 250000));
+        assert_true((strstr(o.note, "no INFLPRES: NOMPRES's 250 kPa") == NULL) == given);
+        unlink(path);
+    }
+}
+
 /* A file's own Q_FZ1 (MF-Tyre 6.1 takes it where not 0, docs/models.md 7.3): with its Q_FZ2
  * 21.7 the car tire's VERTICAL_STIFFNESS would give Q_FZ1 = 12.6; the file says 19.3. The
  * derived springs and ring models carry FNOMIN at the deflection of the file's law (to the
@@ -554,6 +583,7 @@ int main(void)
         cmocka_unit_test(test_derived_from_mftyre),
         cmocka_unit_test(test_pressure_dependence),
         cmocka_unit_test(test_own_q_fz1),
+        cmocka_unit_test(test_inflpres_is_nompres),
         cmocka_unit_test(test_refuses_naming_the_key),
         cmocka_unit_test(test_update_in_place),
     };
