@@ -19,8 +19,9 @@ carcass pressed beyond w_0 outside the window, a buckling belt) counts as no tri
 
 --carcass-exponent Q0 also searches q, each load G solved on its own with FOUNDATION_STIFFNESS
 times (G/FNOMIN)^q (FNOMIN the table's middle load): a stand-in, load by load, for a carcass
-that softens (q < 0) as the tire is pressed in, which the ring's linear foundation is not
-(docs/models.md section 14.2). It is not a model: each load is a different ring.
+that softens (q < 0) as the tire is pressed in (docs/models.md section 14.2), kept from before
+the ring had one (CARCASS_SOFTENING_DEFLECTION). It is not a model: each load is a different
+ring.
 
     scripts/ring-on-laws.py --tire data/tires/205-60R15-mfswift.tir \\
         --vary BELT_WIDTH=0.16 --vary FOUNDATION_STIFFNESS=1.95e5
