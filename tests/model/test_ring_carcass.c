@@ -334,8 +334,8 @@ static void expect_refused(const tirenv_tire *t, const char *field, const char *
 
 /* Refused by tirenv_tire_check, naming the key and what conflicts: the rays and the Winkler
  * tread (TREAD_SHEAR or BELT_WIDTH 0), whose solves are linear; lugs; too little air to keep
- * the belt's foundation above 1e3 N/m^2 once the carcass has softened; negative values. The
- * soft tire itself passes. */
+ * the belt's foundation above 1e3 N/m^2 once the carcass has softened; negative values; and,
+ * at run time, a node outside the nodes solved beyond w_0. The soft tire itself passes. */
 static void test_refused(void **state)
 {
     (void)state;
@@ -362,6 +362,24 @@ static void test_refused(void **state)
     t = soft_tire();
     t.ring.w_c0 = -0.001;
     expect_refused(&t, "CARCASS_LINEAR_DEFLECTION", NULL);
+    /* At run time: a carcass linear only up to w_0 = 0 has the belt beyond the ring's lower
+     * half (pulled out, but bent a few micrometres in past 90 degrees) outside its linear
+     * range, which the window's condensation needs: the evaluation is refused naming the key,
+     * never answered wrong. */
+    t = soft_tire();
+    t.ring.w_c0 = 0;
+    assert_int_equal(tirenv_tire_check(&t, &diag), TIRENV_OK);
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *flat = tirenv_test_flat_ground();
+    double fx, fz;
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_ring_forces(r, flat, 0, t.springs.R0 - 0.03, &fx, &fz, NULL, NULL,
+                                        &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "CARCASS_LINEAR_DEFLECTION");
+    assert_non_null(strstr(diag.message, "beyond the carcass's linear range"));
+    tirenv_profile_free(flat);
+    tirenv_ring_free(r);
     /* Without softening the other keys are as before: the rays take no CARCASS_ key. */
     t = tirenv_tire_default();
     t.ring.contact = TIRENV_RING_RAYS;
