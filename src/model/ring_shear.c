@@ -1373,6 +1373,15 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         a = lo, b = hi, k0 = 0, k1 = n_pts;
     if (!sub && T->soft) {
         const double w_out = outside_whole(r, xw, &j_out);
+        /* Beyond the lower half (ring.c's window with the law): a tall obstacle pressing the
+         * belt in far from the patch. Solved again on all of the ring but its top nodes,
+         * pulled out (no further: their condensation needs some exterior). */
+        const size_t h = r->M / 2 - 4;
+        if (!(w_out <= T->law.w_0) && (lo > r->i0 - h || hi < r->i0 + h)) {
+            r->lo = r->i0 - h;
+            r->n = 2 * h + 1;
+            return tirenv_ring__solve_shear(r, x_c, z, fx, fz, dfz_dz, diag);
+        }
         if (!(w_out <= T->law.w_0))
             return tirenv_error(diag, TIRENV_ERANGE, "", 0, "CARCASS_LINEAR_DEFLECTION",
                                 "the belt outside the %zu-node contact window is pressed in "
