@@ -1338,7 +1338,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         if (!sub)
             break;
         if (a2 == a && b2 == b) {
-            fill_free(r, a, b, xw);
+            if (!T->soft) /* with the law, filled above */
+                fill_free(r, a, b, xw);
             sub = free_clear(r, k0, k1, xw) &&
                   (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
             break;
