@@ -12,13 +12,22 @@ them). FILE needs an [ENVELOPING_RING] section: --set changes its keys, each tri
 `tirenv flat` run. Prints every improvement and the best ring, with its differences in per cent
 at each load (deflection, then contact length; + the ring's larger).
 
+--fix KEY=VALUE sets a key for every trial without searching it (e.g. TREAD_SHEAR, NODE_ANGLE).
+The softening carcass's keys (CARCASS_SOFTENING_DEFLECTION w_s, CARCASS_LINEAR_DEFLECTION w_0,
+docs/models.md section 5.1) are searched as any other, by --vary; a trial the ring refuses (its
+carcass pressed beyond w_0 outside the window, a buckling belt) counts as no trial.
+
 --carcass-exponent Q0 also searches q, each load G solved on its own with FOUNDATION_STIFFNESS
 times (G/FNOMIN)^q (FNOMIN the table's middle load): a stand-in, load by load, for a carcass
-that softens (q < 0) as the tire is pressed in, which the ring's linear foundation is not
-(docs/models.md section 14.2). It is not a model: each load is a different ring.
+that softens (q < 0) as the tire is pressed in (docs/models.md section 14.2), kept from before
+the ring had one (CARCASS_SOFTENING_DEFLECTION). It is not a model: each load is a different
+ring.
 
     scripts/ring-on-laws.py --tire data/tires/205-60R15-mfswift.tir \\
         --vary BELT_WIDTH=0.16 --vary FOUNDATION_STIFFNESS=1.95e5
+    scripts/ring-on-laws.py --tire data/tires/205-60R15-mfswift.tir --fix TREAD_SHEAR=5e5 \\
+        --vary FOUNDATION_STIFFNESS=1e6 --vary CARCASS_SOFTENING_DEFLECTION=0.005 \\
+        --vary CARCASS_LINEAR_DEFLECTION=0.002 --vary BELT_WIDTH=0.1
 """
 import argparse
 import csv
@@ -91,7 +100,9 @@ def main():
     ap.add_argument("--iters", type=int, default=150)
     ap.add_argument("--width-bounds", default="0.4,1.0")
     ap.add_argument("--carcass-exponent", type=float, metavar="Q0")
+    ap.add_argument("--fix", action="append", default=[], metavar="KEY=VALUE")
     a = ap.parse_args()
+    fixed = {v.split("=")[0]: float(v.split("=")[1]) for v in a.fix}
     keys = [v.split("=")[0] for v in a.vary]
     x0 = [math.log(float(v.split("=")[1])) for v in a.vary]
     soften = a.carcass_exponent is not None
@@ -122,7 +133,7 @@ def main():
         return rows
 
     def objective(x):
-        sets, penalty = {}, 0.0
+        sets, penalty = dict(fixed), 0.0
         for key, u in zip(keys, x[:len(keys)]):
             v = math.exp(u)
             if key == "BELT_WIDTH" and not lo <= v <= hi:
@@ -149,6 +160,8 @@ def main():
         return obj
 
     simplex(objective, x0, 0.3, a.iters)
+    if best[1] is None:
+        sys.exit("ring-on-laws: no trial ran")
     print("best: " + " ".join(f"--set {k}={v:.6g}" for k, v in best[1].items())
           + (" (FOUNDATION_STIFFNESS at FNOMIN; see q above)" if soften else ""))
 

@@ -78,6 +78,11 @@ typedef struct {
     double b_p;            /* BELT_WIDTH: width of the crown the air presses on, m */
     double alpha_s;        /* SIDEWALL_ANGLE: half angle of a sidewall's membrane arc, rad,
                             * in (0, pi/2] */
+    double w_cs;           /* CARCASS_SOFTENING_DEFLECTION: the carcass's own foundation force
+                            * per unit belt length softens beyond w_c0 as k_c (w_c0 + w_cs (1 -
+                            * exp(-(w - w_c0)/w_cs))), m; 0 = linear, k_c w (section 5.1) */
+    double w_c0;           /* CARCASS_LINEAR_DEFLECTION: the belt deflection up to which the
+                            * carcass stays linear, m (with w_cs > 0) */
     double p;              /* [OPERATING_CONDITIONS] INFLPRES: inflation pressure, Pa */
     double p_nom;          /* NOMPRES: MF-Tyre's nominal pressure, Pa (the ring uses INFLPRES;
                             * the cam's vertical law PFZ1 at INFLPRES over NOMPRES) */

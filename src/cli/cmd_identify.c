@@ -47,7 +47,8 @@ static int parse_loads(void *dst, const char *arg)
 
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv identify [--reference MODEL] [--loads G1,G2,...] [--write]\n"
+    fputs("usage: tirenv identify [--reference MODEL] [--loads G1,G2,...] [--write | "
+          "--write-springs]\n"
           "                       [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "One tire, every model: identifies the springs model's RADIAL_STIFFNESS and\n"
@@ -64,7 +65,10 @@ static void usage(FILE *fp)
           "  --reference MODEL    the model the others are identified on (default ring)\n"
           "  --loads G1,G2,...    the loads, N (at least two)\n"
           "  --write              set the identified values in the tire file in place, keeping its\n"
-          "                       comments, with a '!' note on how they were identified\n",
+          "                       comments, with a '!' note on how they were identified\n"
+          "  --write-springs      the same for the springs model's two values alone, the cam's\n"
+          "                       laws kept as the file has them (the table then shows the\n"
+          "                       file's cam)\n",
           fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
@@ -92,11 +96,12 @@ int cli_identify_main(int argc, char *argv[])
 {
     const char *ref_name = "ring";
     load_list loads = {.n = 0};
-    int write = 0;
+    int write = 0, write_springs = 0;
     const cli_opt own[] = {
         {.name = "reference", .kind = CLI_STRING, .dst = &ref_name},
         {.name = "loads", .kind = CLI_CUSTOM, .dst = &loads, .parse = parse_loads},
         {.name = "write", .kind = CLI_FLAG, .dst = &write},
+        {.name = "write-springs", .kind = CLI_FLAG, .dst = &write_springs},
         {.name = NULL},
     };
     const cli_parser p = {.name = "identify", .usage = usage, .opts = own,
@@ -112,6 +117,10 @@ int cli_identify_main(int argc, char *argv[])
         ref == tirenv_model_springs || ref == tirenv_model_cam) {
         cli_error("--reference: expected a model with a contact length of its own other than "
                   "the two identified (ring), got '%s'", ref_name);
+        return CLI_EXIT_USAGE;
+    }
+    if (write && write_springs) {
+        cli_error("--write and --write-springs: expected one of them");
         return CLI_EXIT_USAGE;
     }
     o.type = ref;
@@ -157,6 +166,8 @@ int cli_identify_main(int argc, char *argv[])
         snprintf(t, sizeof t, "%.3g", *ids[k]);
         *ids[k] = strtod(t, NULL);
     }
+    if (write_springs)
+        id.cam = tire.cam; /* the file's own laws, kept and tabled */
     tirenv_flat fs[MAX_LOADS], fc[MAX_LOADS];
     if ((code = states(tirenv_model_springs, &id, n, loads.v, fs)) ||
         (code = states(tirenv_model_cam, &id, n, loads.v, fc)))
@@ -188,6 +199,27 @@ int cli_identify_main(int argc, char *argv[])
     printf("largest difference from the %s: springs deflection %.1f %%, springs contact length "
            "%.1f %%, cam deflection %.1f %%, cam contact length %.1f %%\n", ref_name, 100 * e_sd,
            100 * e_sl, 100 * e_cd, 100 * e_cl);
+    if (write_springs) {
+        char note[1024];
+        snprintf(note, sizeof note,
+                 "RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS below are identified by `tirenv\n"
+                 "identify --write-springs` (docs/models.md section 14.1) on the %s model's flat\n"
+                 "ground at %zu loads %.4g to %.4g kN (deflection %.1f to %.1f mm, contact length\n"
+                 "%.3f to %.3f m); the cam's laws are the file's own. Largest differences from the\n"
+                 "%s over these loads: springs deflection %.1f %%, springs contact length %.1f %%,\n"
+                 "cam deflection %.1f %%, cam contact length %.1f %%.",
+                 ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
+                 tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
+                 ref_name, 100 * e_sd, 100 * e_sl, 100 * e_cd, 100 * e_cl);
+        const tirenv_tir_value springs[] = {
+            {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},
+            {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", id.springs.c_b},
+        };
+        if ((status = tirenv_tir_update(path, 2, springs, note, &diag)))
+            return cli_fail(status, &diag);
+        fprintf(stderr, "tirenv identify: wrote the 2 springs values into %s\n", path);
+        return CLI_EXIT_OK;
+    }
     if (!write)
         return CLI_EXIT_OK;
 

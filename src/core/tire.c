@@ -157,6 +157,8 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
         (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 0, 1e10, "N/m^2", diag)) ||
         (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e13, "N/m^2", diag)) ||
         (status = plausible("TREAD_SHEAR", r->G_t, 0, 1e9, "Pa", diag)) ||
+        (status = plausible("CARCASS_SOFTENING_DEFLECTION", r->w_cs, 0, 0.5, "m", diag)) ||
+        (status = plausible("CARCASS_LINEAR_DEFLECTION", r->w_c0, 0, 0.5, "m", diag)) ||
         (status = plausible("NODE_ANGLE", r->dtheta, 2 * M_PI / TIRE_RING_MAX_NODES,
                             M_PI / 8, "rad", diag)) ||
         (status = plausible("FORCE_TOLERANCE", eq->eps_F, 0, 100, "N", diag)) ||
@@ -261,6 +263,41 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
                             "%g N (with the air's) buckles the belt on its foundation "
                             "(%g N/m^2 too soft)", T_p, k_f);
+    /* The softening carcass (docs/models.md section 5.1): its tangent k_c exp(-(w - w_0)/w_s)
+     * falls towards 0 as the belt is pressed in, so the foundation's tangent is at least the
+     * air's gamma p and the belt's least mode stiffness at least that bound with k_f = gamma
+     * p: the contact energy stays strictly convex, its minimum unique. Only the shear-coupled
+     * tread's continuous contact solves it (ring_shear.c), on a smooth tread. */
+    if (!(r->w_cs >= 0 && isfinite(r->w_cs)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                            "must be zero (a linear carcass) or a positive length in m, got %g",
+                            r->w_cs);
+    if (!(r->w_c0 >= 0 && isfinite(r->w_c0)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_LINEAR_DEFLECTION",
+                            "must be a length >= 0 in m, got %g", r->w_c0);
+    if (r->w_cs > 0) {
+        if (r->contact != TIRENV_RING_CONTINUOUS || !(r->G_t > 0) || !(r->b_p > 0))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                                "needs the shear-coupled tread's continuous contact (CONTACT "
+                                "'continuous', TREAD_SHEAR and BELT_WIDTH > 0); got CONTACT "
+                                "'%s', TREAD_SHEAR %g Pa, BELT_WIDTH %g m",
+                                r->contact == TIRENV_RING_RAYS ? "rays" : "continuous", r->G_t,
+                                r->b_p);
+        if (r->lug_count > 0)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                                "needs a smooth tread (LUG_COUNT 0), got LUG_COUNT %g",
+                                r->lug_count);
+        const double k_a = gamma * r->p;
+        const double e_air = r->EI * s_min * s_min / (R * R * R * R) + T_p * s_min / (R * R) + k_a;
+        if (!(k_a >= 1e3) || !(e_air > 0))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                                "%g m: a carcass that softens leaves the belt's foundation the "
+                                "air's %g N/m^2 (INFLPRES %g Pa) when pressed far in, %s",
+                                r->w_cs, k_a, r->p,
+                                k_a >= 1e3 ? "on which the belt buckles (BELT_PRETENSION and "
+                                             "the air's tension)"
+                                           : "below 1e3 N/m^2");
+    }
     if (!(r->dtheta > 0 && r->dtheta <= M_PI / 8))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NODE_ANGLE",
                             "must be in (0, pi/8] rad, got %g", r->dtheta);

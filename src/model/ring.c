@@ -362,6 +362,15 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
         if (last - first + 1 < RING_MIN_WINDOW)
             ++last;
     }
+    if (r->tread && r->par.w_cs > 0) {
+        /* A carcass that softens beyond w_0 (docs/models.md 5.1): the belt's rigid
+         * translation presses the whole lower half in, so the window is that half, whose
+         * exterior (the upper half, pulled out) stays in the carcass's linear range as its
+         * condensation needs; ring_shear.c solves the nodes in contact and those beyond w_0. */
+        const size_t h = r->M / 4 - 2;
+        first = first < r->i0 - h ? first : r->i0 - h;
+        last = last > r->i0 + h ? last : r->i0 + h;
+    }
     r->lo = first;
     r->n = last - first + 1;
     return 0;
@@ -519,7 +528,7 @@ void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
     const size_t lo = r->lo, hi = r->lo + r->n;
     if (r->tread && w) {
         /* Outside the window the unloaded belt is held by its tread as well as its ends. */
-        if (tirenv_ring__tread_exterior(r, w))
+        if (tirenv_ring__tread_exterior(r, w, NULL))
             for (size_t j = 0; j < r->M; ++j)
                 w[j] = NAN;
         for (size_t j = lo; j < hi; ++j)

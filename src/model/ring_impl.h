@@ -206,6 +206,14 @@ typedef struct {
      * their count, or (size_t)-1 if out of memory. */
     size_t (*line)(tirenv_ring *r, const double x[], const double p[], const double **c,
                    const double **a, const double **b);
+    /* 0: E is piecewise quadratic, settled when a step leaves the states. Else E has a smooth
+     * nonlinear part too (the softening carcass), which factor linearises at the iterate:
+     * settled when the states stay and the step is at most nl_tol (m). */
+    double nl_tol;
+    size_t *steps; /* may be NULL: Newton steps (factorisations) counted into it */
+    /* May be NULL: the smooth part of E's slope and curvature along p at x, added to the
+     * line's quadratic before its exact minimiser is sought. */
+    void (*smooth)(tirenv_ring *r, const double x[], const double p[], double *d1, double *d2);
 } tirenv_ring_newton;
 
 enum { TIRENV_RING_NEWTON_OK = 0, TIRENV_RING_NEWTON_BREAKDOWN, TIRENV_RING_NEWTON_NOCONV };
@@ -226,6 +234,23 @@ int tirenv_ring__newton_error(const tirenv_ring *r, int st, size_t n, const char
 /* The tread's shear stiffness k_s = G_t t_r b per unit belt length (N): TREAD_SHEAR times the
  * tread depth and BELT_WIDTH. Zero: a Winkler tread (ring_smooth.c). */
 double tirenv_ring__tread_shear(const tirenv_ring_params *par);
+
+/* The carcass's own foundation (docs/models.md section 5.1) per node: k w up to w_0, beyond
+ * it k (w_0 + w_s (1 - exp(-(w - w_0)/w_s))), k = k_c R dtheta (N/m), w_0, w_s in m. */
+typedef struct {
+    double k, w_0, w_s;
+} tirenv_ring_carcass;
+
+/* The law of par on nodes of arc length arc = R dtheta (m); nonzero if it softens
+ * (CARCASS_SOFTENING_DEFLECTION > 0 and a carcass k_c > 0). */
+int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_ring_carcass *law);
+
+/* The law's departure from the linear k w at w (m): returns its energy (J), *g1 its force
+ * (N) and *g2 its tangent (N/m), all zero for w <= w_0; g1 <= 0, -k < g2 <= 0. */
+double tirenv_ring__carcass(const tirenv_ring_carcass *law, double w, double *g1, double *g2);
+
+/* Newton steps of the shear-coupled tread's contact solves so far. */
+size_t tirenv_ring__tread_newton_steps(const tirenv_ring_tread *T);
 
 /* NULL if out of memory. stencil: the belt's (tirenv_ring__belt_stencil). */
 tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_ring_params *par,
@@ -249,9 +274,9 @@ size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag);
 
-/* w (m) of the nodes outside the last window, from the exterior's exact solve (allocates;
- * diagnostics only). Nonzero if out of memory. */
-int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[]);
+/* w and u (m) of the nodes outside the last window, from the exterior's exact solve
+ * (allocates; diagnostics only); u_out may be NULL. Nonzero if out of memory. */
+int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_out[]);
 
 /* The last window's belt-and-tread stiffness, dense ((2 n)^2 entries, lower triangle), as
  * ring_shear.c's assembly writes it (by_arc 0) or as its exterior's arc does (by_arc 1), for

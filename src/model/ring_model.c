@@ -60,9 +60,12 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
     const double R0 = tirenv_ring_free_radius(elem), dz = R0 / RANGE_STEPS;
     double best_l = 0;
     size_t best = 0, k;
+    tirenv_diag scan; /* why the scan stopped, said if no patch came before */
+    int scan_status = 0;
+    tirenv_diag_clear(&scan);
     for (k = 1; k <= RANGE_STEPS; ++k) {
         double l;
-        if (patch_at(elem, flat, R0 - (double)k * dz, &l, NULL))
+        if ((scan_status = patch_at(elem, flat, R0 - (double)k * dz, &l, &scan)))
             break;
         if (l > best_l) {
             best_l = l;
@@ -74,6 +77,10 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
     const size_t last = k - 1;  /* the lowest height evaluated */
     *z = 0;
     why[0] = '\0';
+    if (best == 0 && scan_status)
+        return tirenv_error(diag, scan_status, "", 0, scan.field,
+                            "no flat-ground patch found below the free radius %g m: %s", R0,
+                            scan.message);
     if (best == 0)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "no flat-ground patch found below the free radius %g m", R0);

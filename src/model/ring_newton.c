@@ -69,6 +69,8 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
     *factored = 0;
     size_t polish = 0; /* full Newton steps taken after the line search stalled */
     for (size_t it = 0; it < TIRENV_RING_NEWTON_MAX_ITER; ++it) {
+        if (nw->steps)
+            ++*nw->steps;
         if (nw->factor(r, nw->K, xn))
             return TIRENV_RING_NEWTON_BREAKDOWN;
         nw->solve(r, xn);
@@ -77,7 +79,8 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
             step = fmax(step, fabs(xn[i] - x[i]));
         /* The states at the Newton point: unchanged, it is the minimum. */
         const size_t changed = nw->set_states(r, xn);
-        if (changed == 0 || step <= newton_step_tol) {
+        if ((changed == 0 && (nw->nl_tol == 0 || step <= nw->nl_tol)) ||
+            step <= newton_step_tol) {
             memcpy(x, xn, N * sizeof *x);
             *factored = changed == 0;
             return TIRENV_RING_NEWTON_OK;
@@ -114,7 +117,12 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
             const double *lc, *la, *lb;
             const size_t nt = nw->line(r, x, xt, &lc, &la, &lb);
             if (nt != (size_t)-1) {
-                const double a_ex = exact_alpha(Kxp, pKp, nt, lc, la, lb);
+                /* A smooth part of E (the softening carcass) enters the line's model by its
+                 * slope and curvature at x; the check below takes E itself. */
+                double d1 = 0, d2 = 0;
+                if (nw->smooth)
+                    nw->smooth(r, x, xt, &d1, &d2);
+                const double a_ex = exact_alpha(Kxp + d1, pKp + d2, nt, lc, la, lb);
                 if (a_ex > 0 && isfinite(a_ex)) {
                     double *xs = nw->kp; /* K p is no longer needed */
                     for (size_t i = 0; i < N; ++i)

@@ -99,6 +99,13 @@ struct tirenv_ring_tread {
     double *xw, *dxw;
     size_t n_sub;       /* evaluations answered on a sub-window (the tests count them) */
     int whole;          /* nonzero: always the whole window (the tests' reference) */
+    /* The softening carcass (CARCASS_SOFTENING_DEFLECTION > 0, docs/models.md 5.1): its
+     * parameters, and the window's w at the iterate whose states were set last (the Newton
+     * system is linearised there). */
+    int soft;
+    tirenv_ring_carcass law;
+    double *wc;         /* M */
+    size_t n_newton;    /* Newton steps so far (the tests and the report count them) */
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -295,7 +302,8 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
     T->cols = calloc(M, sizeof *T->cols);
-    T->xw = malloc(4 * M * sizeof *T->xw);
+    T->xw = malloc(5 * M * sizeof *T->xw);
+    T->soft = tirenv_ring__carcass_law(par, R * dth, &T->law);
     if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL)) {
         tirenv_ring__tread_free(T);
@@ -306,6 +314,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->du = T->dw + M;
     T->pred = T->du + M;
     T->dxw = T->xw + 2 * M;
+    T->wc = T->xw + 4 * M;
     for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
     memset(T->u, 0, (3 * M + 3) * sizeof *T->u);
@@ -341,6 +350,32 @@ size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
 void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
 
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
+
+int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_ring_carcass *law)
+{
+    law->k = par->k_f * arc;
+    law->w_0 = par->w_c0;
+    law->w_s = par->w_cs;
+    return par->w_cs > 0 && par->k_f > 0;
+}
+
+/* The law beyond w_0, with t = (w - w_0)/w_s: the force k (w_0 + w_s (1 - e^-t)) less the
+ * linear k w is -k w_s (t + expm1(-t)), its energy -k w_s^2 (t^2/2 - t - expm1(-t)), its
+ * tangent k expm1(-t); expm1 keeps them accurate as t -> 0, where all three vanish (the
+ * force's tangent continuous at w_0). Below w_0, zero. */
+double tirenv_ring__carcass(const tirenv_ring_carcass *law, double w, double *g1, double *g2)
+{
+    if (!(w > law->w_0)) {
+        *g1 = *g2 = 0;
+        return 0;
+    }
+    const double t = (w - law->w_0) / law->w_s, em = expm1(-t);
+    *g1 = -law->k * law->w_s * (t + em);
+    *g2 = law->k * em;
+    return -law->k * law->w_s * law->w_s * (0.5 * t * t - t - em);
+}
+
+size_t tirenv_ring__tread_newton_steps(const tirenv_ring_tread *T) { return T->n_newton; }
 
 /* The tread's compression stiffness of every node at the centre's x: lugs turn with the tire
  * (ring.c, tread_kappa); k_c in series with the contact layer k_g is the node's k_t. */
@@ -618,6 +653,10 @@ static unsigned char state_of(const tirenv_ring *r, const tirenv_ring_point *q, 
 
 static size_t set_states(tirenv_ring *r, const double x[])
 {
+    tirenv_ring_tread *T = r->tread;
+    if (T->soft)
+        for (size_t i = 0; i < r->n; ++i)
+            T->wc[i] = x[2 * i];
     size_t changed = 0;
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
@@ -662,6 +701,13 @@ static double points_energy(tirenv_ring *r, const double x[], double grad[])
             }
         }
     }
+    if (T->soft) /* the carcass beyond its linear range: its energy and force less k w */
+        for (size_t i = 0; i < r->n; ++i) {
+            double g1, g2;
+            E += tirenv_ring__carcass(&T->law, x[2 * i], &g1, &g2);
+            if (grad)
+                grad[2 * i] += g1;
+        }
     return E;
 }
 
@@ -714,6 +760,18 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             rhs[2 * i + 2] += c * (q->d - t_r) * n1;
         }
     }
+    /* The carcass linearised at the iterate: its tangent less k on the diagonal, and on the
+     * right-hand side what makes the system's residual the gradient's there (Newton's step on
+     * the nonlinear system; zero in the linear range). */
+    if (T->soft)
+        for (size_t i = 0; i < n; ++i) {
+            double g1, g2;
+            tirenv_ring__carcass(&T->law, T->wc[i], &g1, &g2);
+            if (g2 != 0 || g1 != 0) {
+                band_add(A, 2 * i, 2 * i, g2);
+                rhs[2 * i] += g2 * T->wc[i] - g1;
+            }
+        }
 }
 
 /* The knots' block D (tridiagonal, T->dd and T->ko) factorised in place, D = L L^T: T->dd its
@@ -913,6 +971,22 @@ static size_t line_cb(tirenv_ring *r, const double x[], const double p[], const 
     return n;
 }
 
+/* The softening carcass along x + alpha p: its energy's slope and curvature at alpha = 0. */
+static void carcass_line(tirenv_ring *r, const double x[], const double p[], double *d1,
+                         double *d2)
+{
+    const tirenv_ring_tread *T = r->tread;
+    double s1 = 0, s2 = 0;
+    for (size_t i = 0; i < r->n; ++i) {
+        double g1, g2;
+        tirenv_ring__carcass(&T->law, x[2 * i], &g1, &g2);
+        s1 += g1 * p[2 * i];
+        s2 += g2 * p[2 * i] * p[2 * i];
+    }
+    *d1 = s1;
+    *d2 = s2;
+}
+
 static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[])
 {
     apply_K(r, (const double(*)[NB])K, x, y);
@@ -936,6 +1010,13 @@ static void apply_cb(tirenv_ring *r, const void *K, const double x[], double y[]
  * its contact. So the answer is the sub-window's of its own contact, solved with its final
  * states, whatever the start. Its agreement with the whole window's minimum is round-off. */
 enum { SUB_PAD = 2, SUB_QUANT = 8, SUB_MIN_FREE = 16, SUB_MIN = 8, SUB_TRIES = 3 };
+
+/* With the softening carcass the Newton system is the energy's linearisation: settled when
+ * the states stay and a step moves no unknown by more than this (m; the equilibrium's own
+ * STEP_TOLERANCE default, and Newton's quadratic convergence leaves an error of about
+ * step^2/w_s beyond it). A smaller one met the round-off of the stiff contact layer (the
+ * sub-window and the whole window agree to 4e-12 m). */
+static const double carcass_newton_tol = 1e-10;
 
 /* A point's tread surface and belt from the whole window's (w, u), xw interleaved from node
  * r->lo, without the knots (zero at the warm start and outside the solved sub-window). */
@@ -978,14 +1059,18 @@ static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double
 }
 
 /* The sub-window a .. b of the window for the points pts[kf .. kl] (the first and the last in
- * contact), and the points pts[k0 .. k1) of its intervals (a piece's two points stay
+ * contact) and the nodes soft[0] .. soft[1] (none if soft[0] > soft[1]: soft_span), and the points pts[k0 .. k1) of its intervals (a piece's two points stay
  * together: k0 is even); 0 where it would leave fewer than SUB_MIN_FREE free nodes. */
-static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, size_t *a, size_t *b,
-                      size_t *k0, size_t *k1)
+static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t soft[2],
+                      size_t *a, size_t *b, size_t *k0, size_t *k1)
 {
     const size_t lo = r->lo, hi = r->lo + r->n - 1, Q = SUB_QUANT;
     const tirenv_ring_point *const pts = r->pts;
-    const size_t j1 = pts[kf].j, j2 = pts[kl].j + 1;
+    size_t j1 = pts[kf].j, j2 = pts[kl].j + 1;
+    if (soft[0] <= soft[1]) { /* and the nodes of a softening carcass beyond its linear range */
+        j1 = soft[0] < j1 ? soft[0] : j1;
+        j2 = soft[1] > j2 ? soft[1] : j2;
+    }
     size_t first = j1 >= SUB_PAD ? (j1 - SUB_PAD) / Q * Q : 0;
     size_t last = (j2 + SUB_PAD) / Q * Q + Q - 1;
     first = first > lo ? first : lo;
@@ -996,6 +1081,24 @@ static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, size_t *a, siz
     *b = last;
     tirenv_ring__points_of(r, kf, kl, first, last, k0, k1);
     return 1;
+}
+
+/* With the softening carcass, the first and the last window node whose w in xw is beyond the
+ * carcass's linear range w_0, into soft (soft[0] > soft[1]: none, and always without it): the
+ * sub-window must hold them, its exterior being condensed as linear. Returns soft. */
+static const size_t *soft_span(const tirenv_ring *r, const double xw[], size_t soft[2])
+{
+    const tirenv_ring_tread *T = r->tread;
+    soft[0] = 1, soft[1] = 0;
+    if (!T->soft)
+        return soft;
+    for (size_t i = 0; i < r->n; ++i)
+        if (xw[2 * i] > T->law.w_0) {
+            if (soft[0] > soft[1])
+                soft[0] = r->lo + i;
+            soft[1] = r->lo + i;
+        }
+    return soft;
 }
 
 /* The exterior's columns for a sub-window of n nodes from lo (computing them, and its end
@@ -1049,6 +1152,66 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
             v[2 * (j - lo) + h] = -sum;
         }
     }
+}
+
+/* The softening carcass's exterior (docs/models.md 5.1-5.2): the nodes outside the set solved
+ * are condensed as a linear carcass, exact while none of them is pressed in beyond w_0. The
+ * largest w (m) outside the sub-window a .. b of the window's xw, from its columns (sub_cols)
+ * as fill_free takes them, every node round the ring; *j_out its node. */
+static double outside_sub(const tirenv_ring *r, size_t a, size_t b, const double xw[],
+                          size_t *j_out)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t ns = b - a + 1, ne = T->M - ns, Ne = 2 * ne;
+    const double *cols = T->cols[ns], *vs = xw + 2 * (a - r->lo);
+    size_t bi[NB];
+    end_index(ns, bi);
+    double X[NB][NB], f[NB];
+    ext_coupling(T, X);
+    for (size_t e = 0; e < NB; ++e) {
+        f[e] = 0;
+        for (size_t c = 0; c < NB; ++c)
+            f[e] += X[e][c] * vs[bi[c]];
+    }
+    double w_max = -INFINITY;
+    for (size_t ee = 0; ee < ne; ++ee) {
+        double sum = 0;
+        for (size_t e = 0; e < NB; ++e)
+            sum += cols[e * Ne + 2 * ee] * f[e];
+        if (-sum > w_max) {
+            w_max = -sum;
+            *j_out = (b + 1 + ee) % T->M;
+        }
+    }
+    return w_max;
+}
+
+/* The same outside the whole window r->lo, r->n: the exterior's unloaded response to the
+ * window's ends in xw, solved afresh (its factor, as compute_end leaves it, and one solve:
+ * the whole window is the fallback, not the rule). */
+static double outside_whole(tirenv_ring *r, const double xw[], size_t *j_out)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t M = T->M, n = r->n, lo = r->lo, ne = M - n, Ne = 2 * ne;
+    double Q[NB][NB];
+    compute_end(T, lo, n, Q, NULL);
+    const double *s = T->s, k_sh = T->k_sh;
+    double *rhs = T->col;
+    memset(rhs, 0, Ne * sizeof *rhs);
+    rhs[0] = -(s[2] * xw[2 * (n - 2)] + s[1] * xw[2 * (n - 1)]);
+    rhs[1] = k_sh * xw[2 * (n - 1) + 1];
+    rhs[2] = -s[2] * xw[2 * (n - 1)];
+    rhs[Ne - 4] = -s[2] * xw[0];
+    rhs[Ne - 2] = -(s[1] * xw[0] + s[2] * xw[2]);
+    rhs[Ne - 1] = k_sh * xw[1];
+    band_solve(&T->ext, rhs);
+    double w_max = -INFINITY;
+    for (size_t e = 0; e < ne; ++e)
+        if (rhs[2 * e] > w_max) {
+            w_max = rhs[2 * e];
+            *j_out = (lo + n + e) % M;
+        }
+    return w_max;
 }
 
 /* No point of the window's outside pts[k0 .. k1) touches at xw. */
@@ -1110,7 +1273,9 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
         for (size_t k = 0; k < m; ++k)
             x[N + k] = 0;
         const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
-                                       points_energy, T->kp, line_cb};
+                                       points_energy, T->kp, line_cb,
+                                       T->soft ? carcass_newton_tol : 0, &T->n_newton,
+                                       T->soft ? carcass_line : NULL};
         int factored;
         st = tirenv_ring__newton(r, &nw, x, T->xn, T->xt, T->g, &factored);
         /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did
@@ -1159,19 +1324,24 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
      * with the tire) where there is one; else, or where a free point would touch, on the whole
      * window, and then on the sub-window of its contact. */
     const int want = dfz_dz != NULL;
-    size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12;
+    size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12, j_out = 0;
+    size_t soft[2];
     int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
-              sub_window(r, kf, kl, &a, &b, &k0, &k1);
+              sub_window(r, kf, kl, soft_span(r, xw, soft), &a, &b, &k0, &k1);
     for (size_t t = 0; sub; ++t) {
         sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
               solve_on(r, x_c, a, b, k0, k1, want) == TIRENV_RING_NEWTON_OK &&
-              contact_span(r, k0, k1, xw, 0, &kf, &kl) &&
-              sub_window(r, kf, kl, &a2, &b2, &k02, &k12);
+              contact_span(r, k0, k1, xw, 0, &kf, &kl);
+        if (sub && T->soft) /* the free nodes' w, for those pressed beyond w_0 */
+            fill_free(r, a, b, xw);
+        sub = sub && sub_window(r, kf, kl, soft_span(r, xw, soft), &a2, &b2, &k02, &k12);
         if (!sub)
             break;
         if (a2 == a && b2 == b) {
-            fill_free(r, a, b, xw);
-            sub = free_clear(r, k0, k1, xw);
+            if (!T->soft) /* with the law, filled above */
+                fill_free(r, a, b, xw);
+            sub = free_clear(r, k0, k1, xw) &&
+                  (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
             break;
         }
         a = a2, b = b2, k0 = k02, k1 = k12;
@@ -1183,14 +1353,17 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         /* The same answer as the sub-window's of this contact, if it has one: solved there
          * (one Newton step, the states kept), else the whole window's. */
         sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 0, &kf, &kl) &&
-              sub_window(r, kf, kl, &a, &b, &k0, &k1) && sub_cols(T, a, b - a + 1);
+              sub_window(r, kf, kl, soft_span(r, xw, soft), &a, &b, &k0, &k1) &&
+              sub_cols(T, a, b - a + 1);
         if (sub) {
             st = solve_on(r, x_c, a, b, k0, k1, want);
             if (st != TIRENV_RING_NEWTON_OK)
                 return solve_error(r, st, b - a + 1, diag);
             fill_free(r, a, b, xw);
-            sub = free_clear(r, k0, k1, xw);
-            if (!sub) { /* round-off at the sub-window's ends: the whole window's, again */
+            sub = free_clear(r, k0, k1, xw) &&
+                  (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
+            if (!sub) { /* round-off at the sub-window's ends, or the carcass beyond its
+                         * linear range there: the whole window's, again */
                 st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
                 if (st != TIRENV_RING_NEWTON_OK)
                     return solve_error(r, st, n, diag);
@@ -1199,6 +1372,24 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     }
     if (!sub)
         a = lo, b = hi, k0 = 0, k1 = n_pts;
+    if (!sub && T->soft) {
+        const double w_out = outside_whole(r, xw, &j_out);
+        /* Beyond the lower half (ring.c's window with the law): a tall obstacle pressing the
+         * belt in far from the patch. Solved again on all of the ring but its top nodes,
+         * pulled out (no further: their condensation needs some exterior). */
+        const size_t h = r->M / 2 - 4;
+        if (!(w_out <= T->law.w_0) && (lo > r->i0 - h || hi < r->i0 + h)) {
+            r->lo = r->i0 - h;
+            r->n = 2 * h + 1;
+            return tirenv_ring__solve_shear(r, x_c, z, fx, fz, dfz_dz, diag);
+        }
+        if (!(w_out <= T->law.w_0))
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "CARCASS_LINEAR_DEFLECTION",
+                                "the belt outside the %zu-node contact window is pressed in "
+                                "%.4g m at node %zu (theta %.4g rad), beyond the carcass's "
+                                "linear range %.4g m, which the window's condensation needs",
+                                n, w_out, j_out, r->theta[j_out], T->law.w_0);
+    }
     T->n_sub += sub != 0;
     /* The window's free points, clear of the ground: no force, their overlap from xw. */
     for (size_t k = 0; k < n_pts; ++k) {
@@ -1329,13 +1520,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
 /* The belt's w outside the window of the last evaluation: the exterior's unloaded (w, u) that
  * the window's ends hold, -K_EE^-1 K_EW x_B, solved afresh (diagnostics only: it allocates).
  * Writes w_out for every node outside the window; nonzero if out of memory. */
-int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[])
+int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_out[])
 {
     const tirenv_ring_tread *T0 = r->tread;
     const size_t M = r->M, n = r->n, lo = r->lo, ne = M - n, Ne = 2 * ne;
     if (n == 0) {
-        for (size_t j = 0; j < M; ++j)
+        for (size_t j = 0; j < M; ++j) {
             w_out[j] = 0;
+            if (u_out)
+                u_out[j] = 0;
+        }
         return 0;
     }
     tirenv_ring_tread T = *T0; /* the constants; its own band and column */
@@ -1362,8 +1556,11 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[])
     rhs[Ne - 2] = -(s[1] * w[j0] + s[2] * w[j1]);
     rhs[Ne - 1] = k_sh * u[j0];
     band_solve(&T.ext, rhs);
-    for (size_t e = 0; e < ne; ++e)
+    for (size_t e = 0; e < ne; ++e) {
         w_out[(lo + n + e) % M] = rhs[2 * e];
+        if (u_out)
+            u_out[(lo + n + e) % M] = rhs[2 * e + 1];
+    }
     free(T.ext.L);
     free(T.col);
     free(rhs);

@@ -20,6 +20,16 @@ check "identify --write: the file re-read has the identified values, comments an
     '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 407000 *\$ c_r" t.tir &&
      [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
      [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
+# --write-springs: the springs model's two values alone, the cam's laws the file's (the 205/60R15,
+# whose cam is TNO's): the file stays as shipped, its springs identified so (docs/models.md 14.2).
+cp "$repo/data/tires/205-60R15-mfswift.tir" c.tir
+run "$bin" identify --tire c.tir --set RADIAL_STIFFNESS=1e6 --write-springs
+check "identify --write-springs: springs written, the cam's laws kept, note rewritten" \
+    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 364000 " c.tir &&
+     grep -q "^Q_RA1 *= 0.6715 " c.tir && grep -q "^VERTICAL_STIFFNESS *= 209651.5 " c.tir &&
+     grep -q "identify --write-springs" c.tir && cmp -s c.tir "$repo/data/tires/205-60R15-mfswift.tir"'
+run "$bin" identify --tire c.tir --write --write-springs
+check "identify --write --write-springs: exit 1, one of them" '[ $rc -eq 1 ] && grep -q "one of them" err'
 run "$bin" identify --loads 12000
 check "identify --loads with one load: exit 1 saying two are needed" \
     '[ $rc -eq 1 ] && grep -q "at least two loads" err'

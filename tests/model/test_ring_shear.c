@@ -504,7 +504,7 @@ static void test_tread_exterior(void **state)
     double *w_out = malloc(M * sizeof *w_out), *A = calloc(N * (N + 1), sizeof *A);
     assert_non_null(w_out);
     assert_non_null(A);
-    assert_int_equal(tirenv_ring__tread_exterior(r, w_out), 0);
+    assert_int_equal(tirenv_ring__tread_exterior(r, w_out, NULL), 0);
     const double *s = tirenv_ring__belt_stencil(r->belt), *u = tirenv_ring__tread_u(r->tread);
     const double R = r->R, dth = r->dth, k_t = t.ring.k_t;
     const double k_g = TIRENV_RING_GROUND_LAYER * k_t;

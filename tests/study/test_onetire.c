@@ -257,17 +257,18 @@ static void test_derived_pairs(void **state)
 }
 
 /* The 205/60R15 (data/tires/205-60R15-mfswift.tir) has every model of its own: TNO's cam
- * (its linear law, Q_RA1, Q_RA2) and tirenv's start values for the springs model and a
- * car-sized ring, none identified on another, and its data set is made by its cam, so nothing
- * is derived and it is not one tire: at 0.5 to 1.5 FNOMIN the cam's patch is 39 to 42 % longer
- * than the ring's and the springs model's 13 to 26 % shorter, the cam's deflection 6.2 % from
- * the ring's. Measured, deflection / contact length: springs - ring 0.48 / 26.21 %, cam -
- * ring 6.21 / 42.11 %, springs - cam 6.37 / 48.08 %; bounded at half a per cent above, so
- * that a change to the file or the models is seen (making it one tire is `tirenv identify
- * --write` on it, which changes its data set). Nor can its ring be made TNO's tire: searched
- * over BELT_WIDTH, FOUNDATION_STIFFNESS and the other ring keys (scripts/ring-on-laws.py,
- * docs/models.md 14.2), the best ring misses TNO's laws by 8.5 % in both deflection and contact
- * length, so these bounds are not tightened to 5 %. */
+ * (its linear law, Q_RA1, Q_RA2), kept, and tirenv's ring and springs model identified on it
+ * (docs/models.md 14.2): a ring whose carcass softens as it is pressed in, searched on the
+ * cam's laws (scripts/ring-on-laws.py), and the springs model identified on that ring
+ * (tirenv identify --write-springs); its data set is made by its cam, so nothing is derived.
+ * At 0.5 to 1.5 FNOMIN the ring and the cam are one tire within 5 % (measured, deflection /
+ * contact length: cam - ring 1.02 / 1.68 %), and so is the springs model's contact length
+ * against the ring's (3.68 %); its deflection is not (springs - ring 14.72 %, springs - cam
+ * 14.85 / 5.27 %): the springs model stiffens with the load as its patch grows, and no c_r,
+ * c_b follows a linear law (section 14.2), so its identification on deflection and contact
+ * length alike leaves that. Bounded at 5 % where met, else half a per cent above. (With a
+ * linear carcass the ring missed TNO's laws by 8.5 % at best, and the file's earlier ring by
+ * 42 % in contact length.) */
 static void test_205_pairs(void **state)
 {
     (void)state;
@@ -283,7 +284,7 @@ static void test_205_pairs(void **state)
         loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
     pair_miss e[3];
     pairs("205/60R15", &t, N_LOADS, loads, e);
-    static const double bound[3][2] = {{0.010, 0.268}, {0.068, 0.427}, {0.069, 0.486}};
+    static const double bound[3][2] = {{0.152, 0.050}, {0.050, 0.050}, {0.154, 0.058}};
     for (size_t k = 0; k < 3; k++) {
         assert_true(e[k].defl <= bound[k][0]);
         assert_true(e[k].l <= bound[k][1]);
