@@ -1059,8 +1059,9 @@ static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double
 }
 
 /* The sub-window a .. b of the window for the points pts[kf .. kl] (the first and the last in
- * contact) and the nodes soft[0] .. soft[1] (none if soft[0] > soft[1]: soft_span), and the points pts[k0 .. k1) of its intervals (a piece's two points stay
- * together: k0 is even); 0 where it would leave fewer than SUB_MIN_FREE free nodes. */
+ * contact) and the nodes soft[0] .. soft[1] (none if soft[0] > soft[1]: soft_span), and the
+ * points pts[k0 .. k1) of its intervals (a piece's two points stay together: k0 is even); 0
+ * where it would leave fewer than SUB_MIN_FREE free nodes. */
 static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t soft[2],
                       size_t *a, size_t *b, size_t *k0, size_t *k1)
 {
