@@ -1121,6 +1121,23 @@ static const double *sub_cols(tirenv_ring_tread *T, size_t lo, size_t n)
     return T->cols[n];
 }
 
+/* What a sub-window of ns nodes, its (w, u) vs (interleaved), puts on its exterior's end
+ * unknowns: f = X v_B, which the columns of K_EE^-1 (sub_cols) turn into the exterior's
+ * unloaded response. */
+static void exterior_load(const tirenv_ring_tread *T, size_t ns, const double vs[],
+                          double f[NB])
+{
+    size_t bi[NB];
+    end_index(ns, bi);
+    double X[NB][NB];
+    ext_coupling(T, X);
+    for (size_t e = 0; e < NB; ++e) {
+        f[e] = 0;
+        for (size_t c = 0; c < NB; ++c)
+            f[e] += X[e][c] * vs[bi[c]];
+    }
+}
+
 /* The free nodes of the window r->lo, r->n outside the sub-window a .. b (their columns
  * computed: sub_cols): their (w, u) in v (the window's, interleaved), from the sub-window's
  * there, as the unloaded exterior's -K_EE^-1 K_EB v_B. */
@@ -1130,15 +1147,8 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
     const size_t lo = r->lo, hi = r->lo + r->n - 1, ns = b - a + 1, ne = T->M - ns,
                  Ne = 2 * ne;
     const double *cols = T->cols[ns], *vs = v + 2 * (a - lo);
-    size_t bi[NB];
-    end_index(ns, bi);
-    double X[NB][NB], f[NB];
-    ext_coupling(T, X);
-    for (size_t e = 0; e < NB; ++e) {
-        f[e] = 0;
-        for (size_t c = 0; c < NB; ++c)
-            f[e] += X[e][c] * vs[bi[c]];
-    }
+    double f[NB];
+    exterior_load(T, ns, vs, f);
     for (size_t j = lo; j <= hi; ++j) {
         if (j == a)
             j = b + 1;
@@ -1165,15 +1175,8 @@ static double outside_sub(const tirenv_ring *r, size_t a, size_t b, const double
     const tirenv_ring_tread *T = r->tread;
     const size_t ns = b - a + 1, ne = T->M - ns, Ne = 2 * ne;
     const double *cols = T->cols[ns], *vs = xw + 2 * (a - r->lo);
-    size_t bi[NB];
-    end_index(ns, bi);
-    double X[NB][NB], f[NB];
-    ext_coupling(T, X);
-    for (size_t e = 0; e < NB; ++e) {
-        f[e] = 0;
-        for (size_t c = 0; c < NB; ++c)
-            f[e] += X[e][c] * vs[bi[c]];
-    }
+    double f[NB];
+    exterior_load(T, ns, vs, f);
     double w_max = -INFINITY;
     for (size_t ee = 0; ee < ne; ++ee) {
         double sum = 0;
