@@ -401,8 +401,6 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->seen_z = z;
         c->seen_j0 = j0;
         c->seen_n = j_end - j0;
-        for (size_t k = 0; k < c->seen_n; ++k)
-            c->seen[k].m_t = 0;
     }
     tirenv_springs__cc_seen *const seen = c->seen;
     /* the vertices to compute: todo[0 .. n_todo - 1] when reusing, else j0 .. j_end - 1 */
@@ -424,8 +422,10 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     /* i: a walk from the last vertex's sector is O(1) on a road */
     scan_state S = {.i = T->i0, .ci = SIZE_MAX, .lo = N, .hi = 0, .out = c->vrows};
     if (prove)
-        for (size_t q = 0; q < n_todo; ++q)
+        for (size_t q = 0; q < n_todo; ++q) {
+            seen[q].m_t = 0; /* no proof, unless made now */
             scan_vertex(&C, &S, j0 + q, seen + q);
+        }
     else if (reuse)
         for (size_t q = 0; q < n_todo; ++q)
             scan_vertex(&C, &S, todo[q], NULL);
