@@ -299,11 +299,11 @@ typedef struct {
 typedef struct {
     double margin;  /* the chord times the bow less h at z_r, less an allowance, m */
     double chord;   /* the chord at the vertex's t at z_r, m */
-    double c;       /* dz_r / R0 (rounded down): h falls at least this fast as z rises */
-    double dt_dz;   /* a bound on |dt/dz| while |z - z_r| <= dz_max, 1/m */
+    double dz;      /* the vertex's depth dz_r below the centre at z_r, m: h falls at least
+                     * dz_r / R0 as fast as z rises, and z may move by 1 % of it */
+    double dt_dz;   /* a bound on |dt/dz| while z moves within that, 1/m */
     double m_t;     /* how far t may move: min(t, 1 - t) - 2 t_snap at z_r; <= 0: nothing
                      * proven */
-    double dz_max;  /* how far z may move from z_r while rho stays within 1 %, m */
     size_t i;       /* the sector */
 } tirenv_springs__cc_seen;
 

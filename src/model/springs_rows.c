@@ -190,33 +190,42 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
     const size_t N = T->N, s0 = c->seen_j0, lo = c->seen_lo;
     const double Delta = z - c->seen_z, aD = fabs(Delta) + tol;
     /* Per sector, from the chords at z_r (sA, sD) and at z: mu, the least change of the
-     * chord over t in [0, 1]; what that takes from the margin (times the bow, 1 to B); what
-     * the margin loses a unit of t's move (the chord's slope |P_r - P_l| times the bow, the
-     * bow's slope ab_lo times the chord); and |P_r - P_l| at z. */
+     * chord over t in [0, 1]; what that takes from the margin (times the bow, 1 to B) with
+     * h's rise but for its part proportional to the vertex's depth (Base); what the margin
+     * loses a unit of t's move (the chord's slope |P_r - P_l| times the bow, the bow's slope
+     * ab_lo times the chord); and |P_r - P_l| at z. A sector's P_r is the next one's P_l. */
     const double *const sA = c->seen_sec, *const sD = sA + N;
-    double *const Lam = c->seen_sec + 2 * N, *const Kq = Lam + N, *const Mu = Kq + N;
+    double *const Base = c->seen_sec + 2 * N, *const Kq = Base + N, *const Mu = Kq + N;
     double *const aDz = Mu + N;
+    /* h rises by at most -Delta + tol if z falls, -Delta dz_r / R0 + tol if it rises */
+    const double h_rise = Delta > 0 ? tol : -Delta + tol;
+    const double Dp = Delta > 0 ? Delta * ((1 - 1e-12) / T->R0) : 0;
+    /* |Delta| <= seen_reach dz_r wherever aD / seen_reach (rounded up) <= dz_r */
+    const double aD_reach = aD / seen_reach * (1 + 1e-12);
+    double Pl = pen(lo, a, b, d);
     for (size_t q = lo; q <= c->seen_hi; ++q) {
-        const double Pl = pen(q, a, b, d), Pr = pen(q + 1, a, b, d);
+        const double Pr = pen(q + 1, a, b, d);
         const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
         const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
         const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
-        Lam[q] = mu < 0 ? -mu * B : -mu;
+        Base[q] = h_rise + (mu < 0 ? -mu * B : -mu);
         Kq[q] = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
         Mu[q] = mu - tol;
         aDz[q] = fabs(D);
+        Pl = Pr;
     }
+    /* A proof holds if t moves less than m_t, z within 1 % of dz_r, the chord stays above
+     * zero and the margin covers h's rise, the chord's fall and t's move. */
     size_t n = 0;
     for (size_t k = j0 - s0; k < j_end - s0; ++k) {
         const tirenv_springs__cc_seen *const e = c->seen + k;
         int ok = 0;
         if (e->m_t > 0) { /* a proof (the other fields are set only then) */
             const double dt = aD * e->dt_dz;
-            if (dt < e->m_t && aD <= e->dz_max) {
+            if (dt < e->m_t && aD_reach <= e->dz) {
                 const size_t q = e->i;
-                const double h_up = (Delta > 0 ? -Delta * e->c : -Delta) + tol;
-                ok = e->chord + Mu[q] - aDz[q] * dt >= 0 &&
-                     e->margin >= h_up + Lam[q] + dt * Kq[q];
+                ok = e->chord + Mu[q] >= aDz[q] * dt &&
+                     e->margin + Dp * e->dz >= Base[q] + dt * Kq[q];
             }
         }
         if (!ok)
@@ -230,7 +239,7 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
  * penetrations d over [a, b], the proofs' allowances (vertex_rows). */
 typedef struct {
     const double *X, *Z, *st, *ct, *d;
-    double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4, inv_R0, dt_dz_of;
+    double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4, dt_dz_of;
     size_t N, a, b;
 } scan_ctx;
 
@@ -312,10 +321,9 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
             if (!(h > thr)) {
                 if (proof)
                     *proof = (tirenv_springs__cc_seen){
-                        .margin = thr - h - C->tol4, .chord = chord - C->tol,
-                        .c = dz * C->inv_R0, .dt_dz = fabs(dx) * C->dt_dz_of / rr,
-                        .m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap,
-                        .dz_max = seen_reach * dz, .i = i};
+                        .margin = thr - h - C->tol4, .chord = chord - C->tol, .dz = dz,
+                        .dt_dz = fabs(dx) * C->dt_dz_of / rr,
+                        .m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap, .i = i};
                 return;
             }
             r_j = i + 1;
@@ -401,8 +409,6 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->seen_z = z;
         c->seen_j0 = j0;
         c->seen_n = j_end - j0;
-        for (size_t k = 0; k < c->seen_n; ++k)
-            c->seen[k].m_t = 0;
     }
     tirenv_springs__cc_seen *const seen = c->seen;
     /* the vertices to compute: todo[0 .. n_todo - 1] when reusing, else j0 .. j_end - 1 */
@@ -414,18 +420,19 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         n_todo = seen_todo(c, T, p, z, a, b, d, j0, j_end, todo, &skipped);
 
     const double tol = seen_tol(p, R0, z), tol4 = 4 * tol;
-    const double inv_R0 = (1 - 1e-12) / R0; /* rounded down a little */
     const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
                         .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .tol = tol,
-                        .tol4 = tol4, .inv_R0 = inv_R0, .dt_dz_of = dt_dz_of, .N = N, .a = a,
+                        .tol4 = tol4, .dt_dz_of = dt_dz_of, .N = N, .a = a,
                         .b = b};
     /* i: a walk from the last vertex's sector is O(1) on a road */
     scan_state S = {.i = T->i0, .ci = SIZE_MAX, .lo = N, .hi = 0, .out = c->vrows};
     if (prove)
-        for (size_t q = 0; q < n_todo; ++q)
+        for (size_t q = 0; q < n_todo; ++q) {
+            seen[q].m_t = 0; /* no proof, unless made now */
             scan_vertex(&C, &S, j0 + q, seen + q);
+        }
     else if (reuse)
         for (size_t q = 0; q < n_todo; ++q)
             scan_vertex(&C, &S, todo[q], NULL);
@@ -440,10 +447,12 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;
         double *const sA = c->seen_sec, *const sD = sA + N;
+        double Pl = pen(seen_lo, a, b, d);
         for (size_t q = seen_lo; q <= seen_hi; ++q) {
-            const double Pl = pen(q, a, b, d), Pr = pen(q + 1, a, b, d);
+            const double Pr = pen(q + 1, a, b, d);
             sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
             sD[q] = Pr - Pl;
+            Pl = Pr;
         }
     }
     return TIRENV_OK;
