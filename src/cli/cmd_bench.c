@@ -189,6 +189,10 @@ static int run_case(const tirenv_tire *tire0, size_t i, const tirenv_profile *pr
         if (!(code = run_once(m, prof, x, pt, ok, r, &t)) && (rep == 0 || t < r->best))
             r->best = t;
         spent += t;
+        /* No equilibrium on flat ground (setup_failed): no sweep ran, none will, and the
+         * time spent stays 0, which would run SWEEP_MAX_RUNS failing setups. */
+        if (!code && r->failed == SWEEP_N && isnan(r->first_fail_x))
+            break;
     }
     if (!code) {
         double sum = 0;
