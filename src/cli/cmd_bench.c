@@ -1,6 +1,7 @@
 /* tirenv bench: wall time of the models and of the springs model's equilibrium solvers on one
  * fixed sweep, so that figures from different machines and versions can be compared.
  * SPDX-License-Identifier: Apache-2.0 */
+#include <errno.h>
 #include <jansson.h>
 #include <math.h>
 #include <stdarg.h>
@@ -313,8 +314,11 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     const int fd = status ? -1 : mkstemp(path);
     if (fd >= 0)
         close(fd);
+    if (!status && fd < 0)
+        status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "cannot make the rig log's "
+                              "temporary file: %s", strerror(errno));
     if (!status)
-        status = fd < 0 ? TIRENV_EIO : tirenv_rig_write_log(path, &log, NULL, &diag);
+        status = tirenv_rig_write_log(path, &log, NULL, &diag);
     tirenv_import_settings imp = tirenv_import_default();
     imp.L = cleat_L;
     imp.H = cleat_H;
