@@ -361,8 +361,11 @@ int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_r
 
 /* The law beyond w_0, with t = (w - w_0)/w_s: the force k (w_0 + w_s (1 - e^-t)) less the
  * linear k w is -k w_s (t + expm1(-t)), its energy -k w_s^2 (t^2/2 - t - expm1(-t)), its
- * tangent k expm1(-t); expm1 keeps them accurate as t -> 0, where all three vanish (the
- * force's tangent continuous at w_0). Below w_0, zero. */
+ * tangent k expm1(-t); all three vanish as t -> 0 (the force's tangent continuous at w_0).
+ * expm1 keeps the tangent accurate there; the force and the energy, of order t^2/2 and t^3/6,
+ * are sums of terms of order t and keep absolute errors of a few ulp of k w_s t and k w_s^2 t
+ * (relative ones of eps/t and eps/t^2), far below the linear k w and k w^2/2 they are added
+ * to. Below w_0, zero. */
 double tirenv_ring__carcass(const tirenv_ring_carcass *law, double w, double *g1, double *g2)
 {
     if (!(w > law->w_0)) {
