@@ -200,16 +200,22 @@ int cli_identify_main(int argc, char *argv[])
            "%.1f %%, cam deflection %.1f %%, cam contact length %.1f %%\n", ref_name, 100 * e_sd,
            100 * e_sl, 100 * e_cd, 100 * e_cl);
     if (write_springs) {
+        /* The cam's laws as read: the file's own, or (a part of them) derived from its MF-Tyre
+         * keys as it is read (docs/models.md 14.2), which this does not write. */
+        const int cam_derived =
+            (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
         char note[1024];
         snprintf(note, sizeof note,
                  "RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS below are identified by `tirenv\n"
                  "identify --write-springs` (docs/models.md section 14.1) on the %s model's flat\n"
                  "ground at %zu loads %.4g to %.4g kN (deflection %.1f to %.1f mm, contact length\n"
-                 "%.3f to %.3f m); the cam's laws are the file's own. Largest differences from the\n"
+                 "%.3f to %.3f m); the cam's laws are %s. Largest differences from the\n"
                  "%s over these loads: springs deflection %.1f %%, springs contact length %.1f %%,\n"
                  "cam deflection %.1f %%, cam contact length %.1f %%.",
                  ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
                  tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
+                 cam_derived ? "derived\nfrom its MF-Tyre keys as it is read (section 14.2)"
+                             : "the file's own",
                  ref_name, 100 * e_sd, 100 * e_sl, 100 * e_cd, 100 * e_cl);
         const tirenv_tir_value springs[] = {
             {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},
