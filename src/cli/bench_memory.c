@@ -32,12 +32,15 @@
 #include "cli/signals.h"
 #include "tirenv/outfile.h"
 
-/* This program's path, from /proc/self/exe. */
+/* This program's path, from /proc/self/exe; -1 with errno set if there is none. */
 static int self_path(char *buf, size_t n)
 {
     const ssize_t len = readlink("/proc/self/exe", buf, n - 1);
-    if (len <= 0 || (size_t)len >= n - 1)
+    if (len <= 0 || (size_t)len >= n - 1) {
+        if (len >= 0)  /* readlink succeeded: empty, or (maybe) cut short */
+            errno = len == 0 ? ENOENT : ENAMETOOLONG;
         return -1;
+    }
     buf[len] = '\0';
     return 0;
 }
