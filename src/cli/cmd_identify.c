@@ -177,12 +177,19 @@ int cli_identify_main(int argc, char *argv[])
            loads.v[0], loads.v[n - 1]);
     printf("  RADIAL_STIFFNESS       %.6g N/m/rad (was %.6g)\n", id.springs.c_r, tire.springs.c_r);
     printf("  INTERRADIAL_STIFFNESS  %.6g N*rad/m (was %.6g)\n", id.springs.c_b, tire.springs.c_b);
-    printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g)\n", id.cam.c_z, tire.cam.c_z);
-    if (id.cam.fnomin > 0)
-        printf("  Q_FZ2                  %.6g (was %.6g; FNOMIN %.6g N)\n", id.cam.q_fz2,
-               tire.cam.q_fz2, id.cam.fnomin);
-    printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire.cam.q_ra1);
-    printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire.cam.q_ra2);
+    if (write_springs) { /* the cam's, not identified: the table's */
+        printf("  the cam's laws kept as read: VERTICAL_STIFFNESS %.6g N/m, ", tire.cam.c_z);
+        if (tire.cam.fnomin > 0)
+            printf("Q_FZ2 %.6g (FNOMIN %.6g N), ", tire.cam.q_fz2, tire.cam.fnomin);
+        printf("Q_RA1 %.6g, Q_RA2 %.6g\n", tire.cam.q_ra1, tire.cam.q_ra2);
+    } else {
+        printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g)\n", id.cam.c_z, tire.cam.c_z);
+        if (id.cam.fnomin > 0)
+            printf("  Q_FZ2                  %.6g (was %.6g; FNOMIN %.6g N)\n", id.cam.q_fz2,
+                   tire.cam.q_fz2, id.cam.fnomin);
+        printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire.cam.q_ra1);
+        printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire.cam.q_ra2);
+    }
     printf("%10s  %-26s  %-26s\n", "", "deflection, mm", "contact length, m");
     printf("%10s  %8s %8s %8s  %8s %8s %8s\n", "load_N", ref_name, "springs", "cam", ref_name,
            "springs", "cam");

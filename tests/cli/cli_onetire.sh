@@ -26,6 +26,8 @@ cp "$repo/data/tires/205-60R15-mfswift.tir" c.tir
 run "$bin" identify --tire c.tir --set RADIAL_STIFFNESS=1e6 --write-springs
 check "identify --write-springs: springs written, the cam's laws kept, note rewritten" \
     '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 364000 " c.tir &&
+     grep -q "^  the cam.s laws kept as read: VERTICAL_STIFFNESS 209652 N/m, .*Q_RA1 0.6715, " out &&
+     ! grep -q "^  Q_RA1 " out &&
      grep -q "^Q_RA1 *= 0.6715 " c.tir && grep -q "^VERTICAL_STIFFNESS *= 209651.5 " c.tir &&
      grep -q "identify --write-springs" c.tir && cmp -s c.tir "$repo/data/tires/205-60R15-mfswift.tir"'
 # ... on an MF-Tyre file whose cam laws (Q_FZ2, Q_RA1, Q_RA2) are derived as it is read: the
