@@ -30,7 +30,8 @@ static int parse_loads(void *dst, const char *arg)
     for (const char *p = arg; *p;) {
         char *end;
         const double v = strtod(p, &end);
-        if (end == p || !(v > 0 && isfinite(v)) || (*end && *end != ',') || l->n == MAX_LOADS) {
+        if (end == p || !(v > 0 && isfinite(v)) || (*end && *end != ',') ||
+            (*end == ',' && !end[1]) || l->n == MAX_LOADS) {
             cli_error("--loads: expected up to %d positive loads in N separated by commas, got "
                       "'%s'", MAX_LOADS, arg);
             return CLI_EXIT_USAGE;

@@ -42,6 +42,9 @@ check "identify --write --write-springs: exit 1, one of them" '[ $rc -eq 1 ] && 
 run "$bin" identify --loads 12000
 check "identify --loads with one load: exit 1 saying two are needed" \
     '[ $rc -eq 1 ] && grep -q "at least two loads" err'
+run "$bin" identify --loads 12000,15000,
+check "identify --loads ending in a comma: exit 1 quoting it" \
+    '[ $rc -eq 1 ] && grep -q "got .12000,15000,.\$" err'
 
 # --- an MF-Tyre file without tirenv's sections ---------------------------------------------
 mf=$data/samples/tir/mf_185_80R14.tir
