@@ -32,12 +32,15 @@
 #include "cli/signals.h"
 #include "tirenv/outfile.h"
 
-/* This program's path, from /proc/self/exe. */
+/* This program's path, from /proc/self/exe; -1 with errno set if there is none. */
 static int self_path(char *buf, size_t n)
 {
     const ssize_t len = readlink("/proc/self/exe", buf, n - 1);
-    if (len <= 0 || (size_t)len >= n - 1)
+    if (len <= 0 || (size_t)len >= n - 1) {
+        if (len >= 0)  /* readlink succeeded: empty, or (maybe) cut short */
+            errno = len == 0 ? ENOENT : ENAMETOOLONG;
         return -1;
+    }
     buf[len] = '\0';
     return 0;
 }
@@ -116,6 +119,19 @@ static void report(double length, size_t positions, double mb, double seconds, d
                   seconds, rdf_mb, rdf_s);
 }
 
+/* How a child that failed ended, from its wait status st: its exit status or its signal (the
+ * raw status, 256 for an exit status of 1, reads as neither). */
+static const char *child_end(int st, char *buf, size_t n)
+{
+    if (WIFEXITED(st))
+        snprintf(buf, n, "exit status %d", WEXITSTATUS(st));
+    else if (WIFSIGNALED(st))
+        snprintf(buf, n, "killed by signal %d, %s", WTERMSIG(st), strsignal(WTERMSIG(st)));
+    else
+        snprintf(buf, n, "wait status %d", st);
+    return buf;
+}
+
 /* Runs argv as a child (run_child) that must succeed; what failed in diag, naming file. */
 static int run_ok(char *const argv[], const char *file, const char *what, long *kb,
                   double *seconds, tirenv_diag *diag)
@@ -125,8 +141,10 @@ static int run_ok(char *const argv[], const char *file, const char *what, long *
     if (e)
         return tirenv_error(diag, TIRENV_EIO, file, 0, "", "cannot run %s: %s", argv[0],
                             strerror(e));
+    char end[64];
     if (!(WIFEXITED(st) && WEXITSTATUS(st) == 0))
-        return tirenv_error(diag, TIRENV_EIO, file, 0, "", "%s failed (status %d)", what, st);
+        return tirenv_error(diag, TIRENV_EIO, file, 0, "", "%s failed (%s)", what,
+                            child_end(st, end, sizeof end));
     return TIRENV_OK;
 }
 
@@ -225,14 +243,14 @@ int cli_bench_memory_fresh(const char *tire_path, int quick, tirenv_diag *diag)
     long kb = 0;
     double seconds = 0;
     const int e = run_child(argv, fileno(out), &st, &kb, &seconds);
-    char text[8192];
+    char text[8192], end[64];
     size_t n = 0;
     if (e)
         status = tirenv_error(diag, TIRENV_EIO, self, 0, "", "cannot run %s: %s", self,
                               strerror(e));
     else if (!(WIFEXITED(st) && WEXITSTATUS(st) == 0))
         status = tirenv_error(diag, TIRENV_EIO, self, 0, "", "tirenv bench --memory failed "
-                              "(status %d)", st);
+                              "(%s)", child_end(st, end, sizeof end));
     else if (fseek(out, 0, SEEK_SET) != 0 || (n = fread(text, 1, sizeof text - 1, out)) == 0)
         status = tirenv_error(diag, TIRENV_EIO, "tmpfile", 0, "", "cannot read the figures "
                               "of tirenv bench --memory");

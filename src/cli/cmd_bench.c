@@ -1,6 +1,7 @@
 /* tirenv bench: wall time of the models and of the springs model's equilibrium solvers on one
  * fixed sweep, so that figures from different machines and versions can be compared.
  * SPDX-License-Identifier: Apache-2.0 */
+#include <errno.h>
 #include <jansson.h>
 #include <math.h>
 #include <stdarg.h>
@@ -189,6 +190,10 @@ static int run_case(const tirenv_tire *tire0, size_t i, const tirenv_profile *pr
         if (!(code = run_once(m, prof, x, pt, ok, r, &t)) && (rep == 0 || t < r->best))
             r->best = t;
         spent += t;
+        /* No equilibrium on flat ground (setup_failed): no sweep ran, none will, and the
+         * time spent stays 0, which would run SWEEP_MAX_RUNS failing setups. */
+        if (!code && r->failed == SWEEP_N && isnan(r->first_fail_x))
+            break;
     }
     if (!code) {
         double sum = 0;
@@ -309,8 +314,11 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     const int fd = status ? -1 : mkstemp(path);
     if (fd >= 0)
         close(fd);
+    if (!status && fd < 0)
+        status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "cannot make the rig log's "
+                              "temporary file: %s", strerror(errno));
     if (!status)
-        status = fd < 0 ? TIRENV_EIO : tirenv_rig_write_log(path, &log, NULL, &diag);
+        status = tirenv_rig_write_log(path, &log, NULL, &diag);
     tirenv_import_settings imp = tirenv_import_default();
     imp.L = cleat_L;
     imp.H = cleat_H;

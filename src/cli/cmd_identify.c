@@ -30,7 +30,8 @@ static int parse_loads(void *dst, const char *arg)
     for (const char *p = arg; *p;) {
         char *end;
         const double v = strtod(p, &end);
-        if (end == p || !(v > 0 && isfinite(v)) || (*end && *end != ',') || l->n == MAX_LOADS) {
+        if (end == p || !(v > 0 && isfinite(v)) || (*end && *end != ',') ||
+            (*end == ',' && !end[1]) || l->n == MAX_LOADS) {
             cli_error("--loads: expected up to %d positive loads in N separated by commas, got "
                       "'%s'", MAX_LOADS, arg);
             return CLI_EXIT_USAGE;
@@ -177,12 +178,19 @@ int cli_identify_main(int argc, char *argv[])
            loads.v[0], loads.v[n - 1]);
     printf("  RADIAL_STIFFNESS       %.6g N/m/rad (was %.6g)\n", id.springs.c_r, tire.springs.c_r);
     printf("  INTERRADIAL_STIFFNESS  %.6g N*rad/m (was %.6g)\n", id.springs.c_b, tire.springs.c_b);
-    printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g)\n", id.cam.c_z, tire.cam.c_z);
-    if (id.cam.fnomin > 0)
-        printf("  Q_FZ2                  %.6g (was %.6g; FNOMIN %.6g N)\n", id.cam.q_fz2,
-               tire.cam.q_fz2, id.cam.fnomin);
-    printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire.cam.q_ra1);
-    printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire.cam.q_ra2);
+    if (write_springs) { /* the cam's, not identified: the table's */
+        printf("  the cam's laws kept as read: VERTICAL_STIFFNESS %.6g N/m, ", tire.cam.c_z);
+        if (tire.cam.fnomin > 0)
+            printf("Q_FZ2 %.6g (FNOMIN %.6g N), ", tire.cam.q_fz2, tire.cam.fnomin);
+        printf("Q_RA1 %.6g, Q_RA2 %.6g\n", tire.cam.q_ra1, tire.cam.q_ra2);
+    } else {
+        printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g)\n", id.cam.c_z, tire.cam.c_z);
+        if (id.cam.fnomin > 0)
+            printf("  Q_FZ2                  %.6g (was %.6g; FNOMIN %.6g N)\n", id.cam.q_fz2,
+                   tire.cam.q_fz2, id.cam.fnomin);
+        printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire.cam.q_ra1);
+        printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire.cam.q_ra2);
+    }
     printf("%10s  %-26s  %-26s\n", "", "deflection, mm", "contact length, m");
     printf("%10s  %8s %8s %8s  %8s %8s %8s\n", "load_N", ref_name, "springs", "cam", ref_name,
            "springs", "cam");
@@ -200,16 +208,22 @@ int cli_identify_main(int argc, char *argv[])
            "%.1f %%, cam deflection %.1f %%, cam contact length %.1f %%\n", ref_name, 100 * e_sd,
            100 * e_sl, 100 * e_cd, 100 * e_cl);
     if (write_springs) {
+        /* The cam's laws as read: the file's own, or (a part of them) derived from its MF-Tyre
+         * keys as it is read (docs/models.md 14.2), which this does not write. */
+        const int cam_derived =
+            (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
         char note[1024];
         snprintf(note, sizeof note,
                  "RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS below are identified by `tirenv\n"
                  "identify --write-springs` (docs/models.md section 14.1) on the %s model's flat\n"
                  "ground at %zu loads %.4g to %.4g kN (deflection %.1f to %.1f mm, contact length\n"
-                 "%.3f to %.3f m); the cam's laws are the file's own. Largest differences from the\n"
+                 "%.3f to %.3f m); the cam's laws are %s. Largest differences from the\n"
                  "%s over these loads: springs deflection %.1f %%, springs contact length %.1f %%,\n"
                  "cam deflection %.1f %%, cam contact length %.1f %%.",
                  ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
                  tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
+                 cam_derived ? "derived\nfrom its MF-Tyre keys as it is read (section 14.2)"
+                             : "the file's own",
                  ref_name, 100 * e_sd, 100 * e_sl, 100 * e_cd, 100 * e_cl);
         const tirenv_tir_value springs[] = {
             {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},

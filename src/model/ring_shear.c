@@ -361,8 +361,11 @@ int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_r
 
 /* The law beyond w_0, with t = (w - w_0)/w_s: the force k (w_0 + w_s (1 - e^-t)) less the
  * linear k w is -k w_s (t + expm1(-t)), its energy -k w_s^2 (t^2/2 - t - expm1(-t)), its
- * tangent k expm1(-t); expm1 keeps them accurate as t -> 0, where all three vanish (the
- * force's tangent continuous at w_0). Below w_0, zero. */
+ * tangent k expm1(-t); all three vanish as t -> 0 (the force's tangent continuous at w_0).
+ * expm1 keeps the tangent accurate there; the force and the energy, of order t^2/2 and t^3/6,
+ * are sums of terms of order t and keep absolute errors of a few ulp of k w_s t and k w_s^2 t
+ * (relative ones of eps/t and eps/t^2), far below the linear k w and k w^2/2 they are added
+ * to. Below w_0, zero. */
 double tirenv_ring__carcass(const tirenv_ring_carcass *law, double w, double *g1, double *g2)
 {
     if (!(w > law->w_0)) {
@@ -472,6 +475,12 @@ static void ext_coupling(const tirenv_ring_tread *T, double X[NB][NB])
     X[5][1] = -k_sh;                /* exterior u_ne-1 - window u_0 */
 }
 
+/* The exterior's coupled unknowns (ext_coupling's rows) in its Ne interleaved unknowns. */
+static void ext_index(size_t Ne, size_t e[NB])
+{
+    e[0] = 0, e[1] = 1, e[2] = 2, e[3] = Ne - 4, e[4] = Ne - 2, e[5] = Ne - 1;
+}
+
 /* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. */
 static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
                         double *cols)
@@ -481,7 +490,8 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
     band_reset(E, Ne, 0);
     add_arc(E, T, (lo + n) % M, ne);
     band_factor(E); /* a principal block of the positive definite whole */
-    const size_t eidx[NB] = {0, 1, 2, Ne - 4, Ne - 2, Ne - 1};
+    size_t eidx[NB];
+    ext_index(Ne, eidx);
     double X[NB][NB];
     ext_coupling(T, X);
     double G[NB][NB];
@@ -1191,23 +1201,22 @@ static double outside_sub(const tirenv_ring *r, size_t a, size_t b, const double
 }
 
 /* The same outside the whole window r->lo, r->n: the exterior's unloaded response to the
- * window's ends in xw, solved afresh (its factor, as compute_end leaves it, and one solve:
- * the whole window is the fallback, not the rule). */
+ * window's ends in xw, -K_EE^-1 f (f = X v_B, exterior_load, on its coupled unknowns as
+ * compute_end numbers them), solved afresh (its factor, as compute_end leaves it, and one
+ * solve: the whole window is the fallback, not the rule). */
 static double outside_whole(tirenv_ring *r, const double xw[], size_t *j_out)
 {
     tirenv_ring_tread *T = r->tread;
     const size_t M = T->M, n = r->n, lo = r->lo, ne = M - n, Ne = 2 * ne;
-    double Q[NB][NB];
+    double Q[NB][NB], f[NB];
     compute_end(T, lo, n, Q, NULL);
-    const double *s = T->s, k_sh = T->k_sh;
+    exterior_load(T, n, xw, f);
+    size_t eidx[NB];
+    ext_index(Ne, eidx);
     double *rhs = T->col;
     memset(rhs, 0, Ne * sizeof *rhs);
-    rhs[0] = -(s[2] * xw[2 * (n - 2)] + s[1] * xw[2 * (n - 1)]);
-    rhs[1] = k_sh * xw[2 * (n - 1) + 1];
-    rhs[2] = -s[2] * xw[2 * (n - 1)];
-    rhs[Ne - 4] = -s[2] * xw[0];
-    rhs[Ne - 2] = -(s[1] * xw[0] + s[2] * xw[2]);
-    rhs[Ne - 1] = k_sh * xw[1];
+    for (size_t e = 0; e < NB; ++e)
+        rhs[eidx[e]] = -f[e];
     band_solve(&T->ext, rhs);
     double w_max = -INFINITY;
     for (size_t e = 0; e < ne; ++e)

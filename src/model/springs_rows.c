@@ -411,9 +411,9 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->seen_n = j_end - j0;
     }
     tirenv_springs__cc_seen *const seen = c->seen;
-    /* the vertices to compute: todo[0 .. n_todo - 1] when reusing, else j0 .. j_end - 1 */
+    /* the vertices to compute: todo[0 .. n_todo - 1] when reusing (j0 .. j_end - 1 but for
+     * those proven dropped at z, *skipped), else j0 .. j_end - 1 */
     size_t skipped = 0;
-    /* the vertices to compute: j0 .. j_end - 1 in todo but for those proven dropped at z */
     size_t *const todo = c->seen_todo;
     size_t n_todo = j_end - j0;
     if (reuse)

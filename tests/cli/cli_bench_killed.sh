@@ -44,6 +44,28 @@ check "SIGTERM: the bench dies of it" '[ $rc -eq 143 ]'
 check "the child is gone and nothing is left in TMPDIR" \
     '[ "$(children)" -eq 0 ] && [ -z "$(ls -A t)" ]'
 
+# A child killed (here by SIGKILL, as the kernel's OOM killer would): the bench says which
+# child and by which signal (once "failed (status 9)", a raw wait status, 256 for an exit
+# status of 1), exits non-zero and removes the scratch directory.
+start
+tries=0
+killed=0
+while [ $killed -eq 0 ] && kill -0 "$pid" 2>/dev/null && [ $tries -lt 400 ]; do
+    child=$(ps -eo pid=,args= | grep -v grep | grep "$tmp/" | awk 'NR == 1 { print $1 }')
+    # a child that ended between ps and kill: the next one
+    if [ -n "$child" ] && kill -KILL "$child" 2>/dev/null; then
+        killed=1
+    else
+        sleep 0.01
+    fi
+    tries=$((tries + 1))
+done
+wait "$pid"
+rc=$?
+check "a child killed: the bench exits 2 naming it and its signal, nothing left in TMPDIR" \
+    '[ $killed -eq 1 ] && [ $rc -eq 2 ] && grep -q "failed (killed by signal 9, Killed)" err &&
+     [ -z "$(ls -A t)" ]'
+
 start
 kill -KILL "$pid"
 wait "$pid"

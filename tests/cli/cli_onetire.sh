@@ -26,13 +26,25 @@ cp "$repo/data/tires/205-60R15-mfswift.tir" c.tir
 run "$bin" identify --tire c.tir --set RADIAL_STIFFNESS=1e6 --write-springs
 check "identify --write-springs: springs written, the cam's laws kept, note rewritten" \
     '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 364000 " c.tir &&
+     grep -q "^  the cam.s laws kept as read: VERTICAL_STIFFNESS 209652 N/m, .*Q_RA1 0.6715, " out &&
+     ! grep -q "^  Q_RA1 " out &&
      grep -q "^Q_RA1 *= 0.6715 " c.tir && grep -q "^VERTICAL_STIFFNESS *= 209651.5 " c.tir &&
      grep -q "identify --write-springs" c.tir && cmp -s c.tir "$repo/data/tires/205-60R15-mfswift.tir"'
+# ... on an MF-Tyre file whose cam laws (Q_FZ2, Q_RA1, Q_RA2) are derived as it is read: the
+# note says so (it once said "the file's own"), and they stay unwritten.
+cp "$data/samples/tir/mf_185_80R14.tir" m.tir
+run "$bin" identify --tire m.tir --write-springs
+check "identify --write-springs on an MF-Tyre file: its note says the cam's laws are derived" \
+    '[ $rc -eq 0 ] && grep -q "^! 0.125 to 0.210 m); the cam.s laws are derived\$" m.tir &&
+     ! grep -q "file.s own" m.tir && ! grep -q "^Q_RA1" m.tir && grep -q "^RADIAL_STIFFNESS" m.tir'
 run "$bin" identify --tire c.tir --write --write-springs
 check "identify --write --write-springs: exit 1, one of them" '[ $rc -eq 1 ] && grep -q "one of them" err'
 run "$bin" identify --loads 12000
 check "identify --loads with one load: exit 1 saying two are needed" \
     '[ $rc -eq 1 ] && grep -q "at least two loads" err'
+run "$bin" identify --loads 12000,15000,
+check "identify --loads ending in a comma: exit 1 quoting it" \
+    '[ $rc -eq 1 ] && grep -q "got .12000,15000,.\$" err'
 
 # --- an MF-Tyre file without tirenv's sections ---------------------------------------------
 mf=$data/samples/tir/mf_185_80R14.tir
