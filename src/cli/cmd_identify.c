@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cli/cli.h"
 #include "tirenv/study.h"
@@ -93,6 +94,26 @@ static int states(const tirenv_model_type *type, const tirenv_tire *tire, size_t
 
 static double rel(double a, double b) { return fabs(a - b) / b; }
 
+/* Whether --write (all 1) or --write-springs (all 0) sets the key of a --set assignment
+ * ("KEY=VALUE" or "SECTION.KEY=VALUE") in the file: the keys it identifies. */
+static int written(const char *assignment, int all)
+{
+    static const char *const keys[] = {"RADIAL_STIFFNESS", "INTERRADIAL_STIFFNESS",
+                                       "VERTICAL_STIFFNESS", "Q_FZ2", "Q_FZ1", "Q_RA1",
+                                       "Q_RA2"};
+    const char *eq = strchr(assignment, '='), *key = assignment;
+    if (!eq)
+        return 0;
+    for (const char *c = assignment; c < eq; c++)
+        if (*c == '.')
+            key = c + 1;
+    const size_t len = (size_t)(eq - key);
+    for (size_t k = 0; k < (all ? sizeof keys / sizeof keys[0] : 2); k++)
+        if (strlen(keys[k]) == len && strncasecmp(key, keys[k], len) == 0)
+            return 1;
+    return 0;
+}
+
 int cli_identify_main(int argc, char *argv[])
 {
     const char *ref_name = "ring";
@@ -124,6 +145,18 @@ int cli_identify_main(int argc, char *argv[])
         cli_error("--write and --write-springs: expected one of them");
         return CLI_EXIT_USAGE;
     }
+    /* A --set of a key the file does not get would leave it another tire than the one its
+     * identified values and note describe. */
+    for (size_t i = 0; (write || write_springs) && i < o.n_sets; i++)
+        if (!written(o.sets[i], write)) {
+            cli_error("--set %s with %s: the file would keep its own value of that key, not the "
+                      "one identified on; expected --set only of the keys written (%s), or set "
+                      "it in the file first", o.sets[i], write ? "--write" : "--write-springs",
+                      write ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, VERTICAL_STIFFNESS, "
+                              "Q_FZ1, Q_FZ2, Q_RA1, Q_RA2"
+                            : "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS");
+            return CLI_EXIT_USAGE;
+        }
     o.type = ref;
     tirenv_tire tire;
     if ((code = cli_tire(&o, &tire)))

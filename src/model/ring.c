@@ -362,7 +362,8 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
         if (last - first + 1 < RING_MIN_WINDOW)
             ++last;
     }
-    if (r->tread && r->par.w_cs > 0) {
+    tirenv_ring_carcass law;
+    if (r->tread && tirenv_ring__carcass_law(&r->par, 0, &law)) {
         /* A carcass that softens beyond w_0 (docs/models.md 5.1): the belt's rigid
          * translation presses the whole lower half in, so the window is that half, whose
          * exterior (the upper half, pulled out) stays in the carcass's linear range as its

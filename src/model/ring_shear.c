@@ -1069,18 +1069,18 @@ static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double
 }
 
 /* The sub-window a .. b of the window for the points pts[kf .. kl] (the first and the last in
- * contact) and the nodes soft[0] .. soft[1] (none if soft[0] > soft[1]: soft_span), and the
- * points pts[k0 .. k1) of its intervals (a piece's two points stay together: k0 is even); 0
- * where it would leave fewer than SUB_MIN_FREE free nodes. */
-static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t soft[2],
+ * contact) and the nodes beyond[0] .. beyond[1] (none if beyond[0] > beyond[1]: beyond_span),
+ * and the points pts[k0 .. k1) of its intervals (a piece's two points stay together: k0 is
+ * even); 0 where it would leave fewer than SUB_MIN_FREE free nodes. */
+static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t beyond[2],
                       size_t *a, size_t *b, size_t *k0, size_t *k1)
 {
     const size_t lo = r->lo, hi = r->lo + r->n - 1, Q = SUB_QUANT;
     const tirenv_ring_point *const pts = r->pts;
     size_t j1 = pts[kf].j, j2 = pts[kl].j + 1;
-    if (soft[0] <= soft[1]) { /* and the nodes of a softening carcass beyond its linear range */
-        j1 = soft[0] < j1 ? soft[0] : j1;
-        j2 = soft[1] > j2 ? soft[1] : j2;
+    if (beyond[0] <= beyond[1]) { /* and a softening carcass's nodes beyond its linear range */
+        j1 = beyond[0] < j1 ? beyond[0] : j1;
+        j2 = beyond[1] > j2 ? beyond[1] : j2;
     }
     size_t first = j1 >= SUB_PAD ? (j1 - SUB_PAD) / Q * Q : 0;
     size_t last = (j2 + SUB_PAD) / Q * Q + Q - 1;
@@ -1095,21 +1095,21 @@ static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t s
 }
 
 /* With the softening carcass, the first and the last window node whose w in xw is beyond the
- * carcass's linear range w_0, into soft (soft[0] > soft[1]: none, and always without it): the
- * sub-window must hold them, its exterior being condensed as linear. Returns soft. */
-static const size_t *soft_span(const tirenv_ring *r, const double xw[], size_t soft[2])
+ * carcass's linear range w_0, into beyond (beyond[0] > beyond[1]: none, and always without
+ * it): the sub-window must hold them, its exterior being condensed as linear. Returns beyond. */
+static const size_t *beyond_span(const tirenv_ring *r, const double xw[], size_t beyond[2])
 {
     const tirenv_ring_tread *T = r->tread;
-    soft[0] = 1, soft[1] = 0;
+    beyond[0] = 1, beyond[1] = 0;
     if (!T->soft)
-        return soft;
+        return beyond;
     for (size_t i = 0; i < r->n; ++i)
         if (xw[2 * i] > T->law.w_0) {
-            if (soft[0] > soft[1])
-                soft[0] = r->lo + i;
-            soft[1] = r->lo + i;
+            if (beyond[0] > beyond[1])
+                beyond[0] = r->lo + i;
+            beyond[1] = r->lo + i;
         }
-    return soft;
+    return beyond;
 }
 
 /* The exterior's columns for a sub-window of n nodes from lo (computing them, and its end
@@ -1338,16 +1338,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
      * window, and then on the sub-window of its contact. */
     const int want = dfz_dz != NULL;
     size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12, j_out = 0;
-    size_t soft[2];
+    size_t beyond[2];
     int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
-              sub_window(r, kf, kl, soft_span(r, xw, soft), &a, &b, &k0, &k1);
+              sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a, &b, &k0, &k1);
     for (size_t t = 0; sub; ++t) {
         sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
               solve_on(r, x_c, a, b, k0, k1, want) == TIRENV_RING_NEWTON_OK &&
               contact_span(r, k0, k1, xw, 0, &kf, &kl);
         if (sub && T->soft) /* the free nodes' w, for those pressed beyond w_0 */
             fill_free(r, a, b, xw);
-        sub = sub && sub_window(r, kf, kl, soft_span(r, xw, soft), &a2, &b2, &k02, &k12);
+        sub = sub && sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a2, &b2, &k02, &k12);
         if (!sub)
             break;
         if (a2 == a && b2 == b) {
@@ -1366,7 +1366,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         /* The same answer as the sub-window's of this contact, if it has one: solved there
          * (one Newton step, the states kept), else the whole window's. */
         sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 0, &kf, &kl) &&
-              sub_window(r, kf, kl, soft_span(r, xw, soft), &a, &b, &k0, &k1) &&
+              sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a, &b, &k0, &k1) &&
               sub_cols(T, a, b - a + 1);
         if (sub) {
             st = solve_on(r, x_c, a, b, k0, k1, want);

@@ -20,6 +20,12 @@ check "identify --write: the file re-read has the identified values, comments an
     '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 407000 *\$ c_r" t.tir &&
      [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
      [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
+# --set of a key --write does not write: the file would be another tire than its note says.
+cp t.tir t0.tir
+run "$bin" identify --tire t.tir --set FOUNDATION_STIFFNESS=2e5 --write
+check "identify --write --set of a key not written: exit 1, named, the file unchanged" \
+    '[ $rc -eq 1 ] && grep -q -- "--set FOUNDATION_STIFFNESS=2e5 with --write" err &&
+     cmp -s t.tir t0.tir'
 # --write-springs: the springs model's two values alone, the cam's laws the file's (the 205/60R15,
 # whose cam is TNO's): the file stays as shipped, its springs identified so (docs/models.md 14.2).
 cp "$repo/data/tires/205-60R15-mfswift.tir" c.tir
