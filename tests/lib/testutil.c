@@ -301,3 +301,27 @@ double tirenv_test_uniform(uint64_t *state)
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
     return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
 }
+
+size_t tirenv_test_jumps(tirenv_model *m, const tirenv_profile *p, tirenv_rng *rng,
+                         double *dh_max, double *dfx_max)
+{
+    tirenv_diag diag;
+    const size_t n = tirenv_profile_size(p);
+    const double *X = tirenv_profile_x(p);
+    size_t checked = 0;
+    for (size_t v = 0; v < n; ++v)
+        for (int o = 0; o < 3; ++o) {
+            /* The vertex itself, and places where a node's ray or the vertex's angle may fall
+             * near a node. */
+            const double x = X[v] + (o == 0 ? 0 : (o == 1 ? 1 : -1) *
+                                                      (0.1 + 0.3 * tirenv_rng_uniform(rng)));
+            tirenv_point a, b, c;
+            assert_int_equal(tirenv_model_eval(m, x, &a, &diag), TIRENV_OK);
+            assert_int_equal(tirenv_model_eval(m, x + 1e-12, &b, &diag), TIRENV_OK);
+            assert_int_equal(tirenv_model_eval(m, x - 1e-12, &c, &diag), TIRENV_OK);
+            *dh_max = fmax(*dh_max, fmax(fabs(b.h - a.h), fabs(c.h - a.h)));
+            *dfx_max = fmax(*dfx_max, fmax(fabs(b.fx - a.fx), fabs(c.fx - a.fx)));
+            ++checked;
+        }
+    return checked;
+}

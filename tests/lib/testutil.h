@@ -13,11 +13,19 @@
 #include "tirenv/model.h"
 #include "tirenv/nn.h"
 #include "tirenv/ring.h"
+#include "tirenv/rng.h"
 #include "tirenv/tire.h"
 
 /* The next number of a seeded splitmix64 sequence in [0, 1): the tests' own generator, apart
  * from the library's (its state the caller's). */
 double tirenv_test_uniform(uint64_t *state);
+
+/* A model's continuity in x at an obstacle's edges: m set on p, at each vertex of p and at two
+ * positions 0.1 to 0.4 m either side of it (drawn from rng), the largest |h(x +- 1e-12) - h(x)|
+ * (m) and |F_x(x +- 1e-12) - F_x(x)| (N), raising *dh_max and *dfx_max; returns the positions
+ * checked. Fails on an evaluation that does not succeed. */
+size_t tirenv_test_jumps(tirenv_model *m, const tirenv_profile *p, tirenv_rng *rng,
+                         double *dh_max, double *dfx_max);
 
 /* Fails unless |actual - expected| <= abs_tol + rel_tol*|expected|; prints both values. */
 #define assert_near(actual, expected, abs_tol, rel_tol)                                      \

@@ -42,23 +42,7 @@ static void jumps(tirenv_ring_contact_kind contact, double G_t, unsigned long se
         tirenv_profile *p = random_obstacle(rng, k % 3);
         const double G = 8000 + 16000 * tirenv_rng_uniform(rng);
         assert_int_equal(tirenv_model_set(m, p, G, &diag), TIRENV_OK);
-        const size_t n = tirenv_profile_size(p);
-        const double *X = tirenv_profile_x(p);
-        for (size_t v = 0; v < n; ++v) {
-            /* The vertex itself, and places where a node's ray or the vertex's angle may fall
-             * near a node: offsets of 0.1 to 0.4 m, drawn. */
-            for (int o = 0; o < 3; ++o) {
-                const double x = X[v] + (o == 0 ? 0 : (o == 1 ? 1 : -1) *
-                                                          (0.1 + 0.3 * tirenv_rng_uniform(rng)));
-                tirenv_point a, b, c;
-                assert_int_equal(tirenv_model_eval(m, x, &a, &diag), TIRENV_OK);
-                assert_int_equal(tirenv_model_eval(m, x + 1e-12, &b, &diag), TIRENV_OK);
-                assert_int_equal(tirenv_model_eval(m, x - 1e-12, &c, &diag), TIRENV_OK);
-                *dh_max = fmax(*dh_max, fmax(fabs(b.h - a.h), fabs(c.h - a.h)));
-                *dfx_max = fmax(*dfx_max, fmax(fabs(b.fx - a.fx), fabs(c.fx - a.fx)));
-                ++*checked;
-            }
-        }
+        *checked += tirenv_test_jumps(m, p, rng, dh_max, dfx_max);
         tirenv_profile_free(p);
     }
     tirenv_rng_free(rng);
