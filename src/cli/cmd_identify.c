@@ -163,6 +163,17 @@ int cli_identify_main(int argc, char *argv[])
         return code;
     char buf[1024];
     const char *path = cli_tire_path(&o, buf, sizeof buf);
+    /* A ring derived as the file is read is derived with its springs model where the file has
+     * neither (docs/models.md 14.2): springs values written into it would change the ring the
+     * next read derives, and no longer be identified on it. */
+    if ((write || write_springs) && ref == tirenv_model_ring &&
+        (cli_tire_origin.derived & TIRENV_TIR_RING)) {
+        cli_error("%s %s: its ring is derived from its MF-Tyre keys as it is read (docs/models.md "
+                  "section 14.2), and writing the springs values would change the ring derived "
+                  "next; expected a file with an [ENVELOPING_RING] of its own (the derived "
+                  "values are on standard error)", write ? "--write" : "--write-springs", path);
+        return CLI_EXIT_USAGE;
+    }
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     /* The file's own load range whenever it gives FNOMIN, also for a tire of the paper's class

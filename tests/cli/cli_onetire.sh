@@ -36,13 +36,15 @@ check "identify --write-springs: springs written, the cam's laws kept, note rewr
      ! grep -q "^  Q_RA1 " out &&
      grep -q "^Q_RA1 *= 0.6715 " c.tir && grep -q "^VERTICAL_STIFFNESS *= 209651.5 " c.tir &&
      grep -q "identify --write-springs" c.tir && cmp -s c.tir "$repo/data/tires/205-60R15-mfswift.tir"'
-# ... on an MF-Tyre file whose cam laws (Q_FZ2, Q_RA1, Q_RA2) are derived as it is read: the
-# note says so (it once said "the file's own"), and they stay unwritten.
+# ... on an MF-Tyre file whose ring is derived as it is read (with its springs model): refused,
+# the file unchanged (written springs values would change the ring the next read derives).
 cp "$data/samples/tir/mf_185_80R14.tir" m.tir
-run "$bin" identify --tire m.tir --write-springs
-check "identify --write-springs on an MF-Tyre file: its note says the cam's laws are derived" \
-    '[ $rc -eq 0 ] && grep -q "^! 0.125 to 0.210 m); the cam.s laws are derived\$" m.tir &&
-     ! grep -q "file.s own" m.tir && ! grep -q "^Q_RA1" m.tir && grep -q "^RADIAL_STIFFNESS" m.tir'
+for w in --write --write-springs; do
+    run "$bin" identify --tire m.tir $w
+    check "identify $w on an MF-Tyre file without an [ENVELOPING_RING]: exit 1, said, unchanged" \
+        '[ $rc -eq 1 ] && grep -q "its ring is derived from its MF-Tyre keys" err &&
+         cmp -s m.tir "$data/samples/tir/mf_185_80R14.tir"'
+done
 run "$bin" identify --tire c.tir --write --write-springs
 check "identify --write --write-springs: exit 1, one of them" '[ $rc -eq 1 ] && grep -q "one of them" err'
 run "$bin" identify --loads 12000
