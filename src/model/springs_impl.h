@@ -385,9 +385,11 @@ typedef struct {
     size_t n_last, last_f0, last_f1;
     int last_ok;
     size_t iterations;     /* of the last solve */
-    /* the last evaluation's solution had a row between elements working: the next one goes
-     * to the QP without trying the elements' own rows first (section 4.8, Cost) */
+    /* the last evaluation's solution had a row between elements working: the next one within
+     * a typical deflection of its centre height (between_z, m) goes to the QP without trying
+     * the elements' own rows first (section 4.8, Cost) */
     int between;
+    double between_z;
     /* The state of the last QP solve as tirenv_springs__cc_update's base, while base_ok: its
      * rows (rows, in_w, lambda, layout), its w over [f0 - 1, f1 + 1] (base_w[e + 1], m), the
      * derivative of each working row's reaction in z with the working set fixed (dlambda,
