@@ -414,6 +414,11 @@ static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx
         *contacts = n;
 }
 
+int tirenv_springs__qp_first(const tirenv_springs *s, double z)
+{
+    return s->cc.between && fabs(z - s->cc.between_z) <= between_reach * s->par.R0;
+}
+
 static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
@@ -485,7 +490,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         return TIRENV_OK;
     }
     int fast = 0;
-    if (g0 <= f1 && !(s->cc.between && fabs(z - s->cc.between_z) <= between_reach * R0)) {
+    if (g0 <= f1 && !tirenv_springs__qp_first(s, z)) {
         for (size_t e = g0; e <= g1; ++e)
             s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
         size_t passes;

@@ -17,6 +17,12 @@ size_t tirenv_springs__state_size(const tirenv_springs *s);
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
 
+/* Whether a continuous-contact evaluation at centre height z (m) goes straight to the QP,
+ * without trying the elements' own rows first: the last evaluation's solution had a row
+ * between elements working and z is within 0.05 R0 of its height (docs/models.md section
+ * 11.2). */
+int tirenv_springs__qp_first(const tirenv_springs *s, double z);
+
 /* What the model's contact length (springs_model.c) needs of the elements: their stiffnesses
  * k_r and k_ir (N/m), the diagonal of the tips' stiffness K (N/m: k_r + k_ir per neighbour)
  * and cos(theta_i), N entries each, owned by s. */
