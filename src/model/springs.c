@@ -17,6 +17,15 @@
  * about 530 passes. */
 static size_t lcp_max_passes(size_t f0, size_t f1) { return f1 - f0 + 2; }
 
+/* How far (in R0) from the last evaluation's centre height its working row between elements
+ * still sends an evaluation straight to the QP: a typical deflection (the equilibrium's
+ * dz_hint, 0.05 R0). The flag spares the closed form's pass where the QP's warm start is a
+ * step away and the closed form would fail; farther off (Brent's bracket end at the ground,
+ * the hub pressed in by the radius), the warm start is stale and the QP would rebuild its
+ * working set a row at a time (some 300 steps over the ring) where the closed form holds
+ * (docs/models.md section 11.2). Either path gives the same solution to round-off. */
+static const double between_reach = 0.05;
+
 struct tirenv_springs {
     tirenv_springs_params par;
     size_t N;              /* number of elements */
@@ -405,6 +414,11 @@ static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx
         *contacts = n;
 }
 
+int tirenv_springs__qp_first(const tirenv_springs *s, double z)
+{
+    return s->cc.between && fabs(z - s->cc.between_z) <= between_reach * s->par.R0;
+}
+
 static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
@@ -476,7 +490,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         return TIRENV_OK;
     }
     int fast = 0;
-    if (g0 <= f1 && !s->cc.between) {
+    if (g0 <= f1 && !tirenv_springs__qp_first(s, z)) {
         for (size_t e = g0; e <= g1; ++e)
             s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
         size_t passes;
@@ -499,6 +513,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             return status;
     }
     s->cc.between = !fast && s->cc.n_warm > 0;
+    s->cc.between_z = z;
     s->a = f0;
     s->b = f1;
     hub_forces(s, f0, f1, fx, fz, contacts);
@@ -655,13 +670,13 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
 }
 
 /* The warm state of the tip contact: which elements may touch and which were pinned, and
- * whether the continuous contact's last solution had a row between elements working (it decides
- * whether the closed form is tried first, which moves the last bits). The rays' cache and the
- * QP's warm start are dropped on restore; they change no bit of a result, only how fast it is
- * found. */
+ * whether the continuous contact's last solution had a row between elements working, and at
+ * which centre height (they decide whether the closed form is tried first, which moves the
+ * last bits). The rays' cache and the QP's warm start are dropped on restore; they change no
+ * bit of a result, only how fast it is found. */
 size_t tirenv_springs__state_size(const tirenv_springs *s)
 {
-    return 2 * sizeof(size_t) + s->N + 1;
+    return 2 * sizeof(size_t) + s->N + 1 + sizeof(double);
 }
 
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf)
@@ -670,6 +685,7 @@ void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf)
     memcpy(buf + sizeof s->a, &s->b, sizeof s->b);
     memcpy(buf + 2 * sizeof(size_t), s->active, s->N);
     buf[2 * sizeof(size_t) + s->N] = s->cc.between != 0;
+    memcpy(buf + 2 * sizeof(size_t) + s->N + 1, &s->cc.between_z, sizeof(double));
 }
 
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
@@ -685,5 +701,6 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
     if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
         tirenv_springs__cc_forget(&s->cc);
         s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
+        memcpy(&s->cc.between_z, buf + 2 * sizeof(size_t) + s->N + 1, sizeof(double));
     }
 }

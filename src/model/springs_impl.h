@@ -17,6 +17,12 @@ size_t tirenv_springs__state_size(const tirenv_springs *s);
 void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
 void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
 
+/* Whether a continuous-contact evaluation at centre height z (m) goes straight to the QP,
+ * without trying the elements' own rows first: the last evaluation's solution had a row
+ * between elements working and z is within 0.05 R0 of its height (docs/models.md section
+ * 11.2). */
+int tirenv_springs__qp_first(const tirenv_springs *s, double z);
+
 /* What the model's contact length (springs_model.c) needs of the elements: their stiffnesses
  * k_r and k_ir (N/m), the diagonal of the tips' stiffness K (N/m: k_r + k_ir per neighbour)
  * and cos(theta_i), N entries each, owned by s. */
@@ -385,9 +391,11 @@ typedef struct {
     size_t n_last, last_f0, last_f1;
     int last_ok;
     size_t iterations;     /* of the last solve */
-    /* the last evaluation's solution had a row between elements working: the next one goes
-     * to the QP without trying the elements' own rows first (section 4.8, Cost) */
+    /* the last evaluation's solution had a row between elements working: the next one within
+     * a typical deflection of its centre height (between_z, m) goes to the QP without trying
+     * the elements' own rows first (section 4.8, Cost) */
     int between;
+    double between_z;
     /* The state of the last QP solve as tirenv_springs__cc_update's base, while base_ok: its
      * rows (rows, in_w, lambda, layout), its w over [f0 - 1, f1 + 1] (base_w[e + 1], m), the
      * derivative of each working row's reaction in z with the working set fixed (dlambda,

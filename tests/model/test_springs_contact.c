@@ -3,7 +3,8 @@
  * every vertex of seeded random obstacles, the QP's optimality conditions to round-off,
  * every ground vertex outside the tread, narrow features carried, dF_z/dz against finite
  * differences over roads, results that do not depend on the warm start nor on the factors
- * the solver keeps between solves, the confirming evaluation's update the QP's solution, a
+ * the solver keeps between solves, the confirming evaluation's update the QP's solution, an
+ * evaluation far from the last (Brent's bracket end) trying the closed form first, a
  * lone vertex's hub stiffness the same along the tread and the 1 mm second difference of h
  * over it. */
 #include <math.h>
@@ -663,6 +664,73 @@ static void test_update_is_the_solution(void **state)
     free_tire(&S);
 }
 
+/* A working row between elements sends the next evaluation straight to the QP only near
+ * its height (tirenv_springs__qp_first, docs/models.md section 11.2): Brent's bracket end,
+ * the centre at the ground under it, tries the elements' own rows first, which hold there
+ * (the flag is cleared), and gives the forces a fresh model finds, to round-off (1e-9 of
+ * F_z: sums over some 360 elements, the closed form's against the QP's). Over the bench
+ * cleat at the sinks of its equilibria; the saved state carries the flag's height. */
+static void test_far_evaluation_tries_the_closed_form(void **state)
+{
+    (void)state;
+    const tirenv_tire t = continuous_tire();
+    const double R0 = t.springs.R0;
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    tirenv_springs *hot = tirenv_springs_alloc(&t.springs);
+    assert_non_null(p);
+    assert_non_null(hot);
+    const size_t size = tirenv_springs__state_size(hot);
+    unsigned char *buf = malloc(size);
+    assert_non_null(buf);
+    size_t flagged = 0, far = 0;
+    for (int k = 0; k < 60; ++k) {
+        const double x = -0.35 + 0.0107 * k;
+        const double g = tirenv_profile_max_height(p, x - R0, x + R0);
+        const double z1 = g + R0 - 0.03 - 0.0005 * (k % 7);
+        double fx, fz, dfz;
+        size_t contacts;
+        assert_int_equal(tirenv_springs_forces(hot, p, x, z1, &fx, &fz, &dfz, &contacts, NULL),
+                         TIRENV_OK);
+        if (!tirenv_springs__qp_first(hot, z1))
+            continue;
+        ++flagged;
+        /* near: the flag stands; at the ground: it does not */
+        assert_true(tirenv_springs__qp_first(hot, z1 + 0.04 * R0));
+        const double z_far = tirenv_profile_height(p, x);
+        assert_false(tirenv_springs__qp_first(hot, z_far));
+        /* the state carries it: a model restored from it decides the same */
+        tirenv_springs__state_save(hot, buf);
+        tirenv_springs *back = tirenv_springs_alloc(&t.springs);
+        assert_non_null(back);
+        tirenv_springs__state_restore(back, buf);
+        assert_true(tirenv_springs__qp_first(back, z1 + 0.04 * R0));
+        assert_false(tirenv_springs__qp_first(back, z_far));
+        tirenv_springs_free(back);
+        double fx_h, fz_h, fx_c, fz_c, d_h, d_c;
+        size_t c_h, c_c;
+        assert_int_equal(tirenv_springs_forces(hot, p, x, z_far, &fx_h, &fz_h, &d_h, &c_h,
+                                               NULL), TIRENV_OK);
+        tirenv_springs *cold = tirenv_springs_alloc(&t.springs);
+        assert_non_null(cold);
+        assert_int_equal(tirenv_springs_forces(cold, p, x, z_far, &fx_c, &fz_c, &d_c, &c_c,
+                                               NULL), TIRENV_OK);
+        tirenv_springs_free(cold);
+        assert_true(fz_c > 0);
+        assert_true(fabs(fz_h - fz_c) <= 1e-9 * fz_c);
+        assert_true(fabs(fx_h - fx_c) <= 1e-9 * fz_c);
+        assert_int_equal(c_h, c_c);
+        /* the elements' own rows held: no row between elements is left working */
+        far += !tirenv_springs__qp_first(hot, z_far);
+    }
+    print_message("%zu states with a row between elements working; at the ground under "
+                  "the centre the closed form held in %zu\n", flagged, far);
+    assert_true(flagged >= 10);
+    assert_int_equal(far, flagged);
+    free(buf);
+    tirenv_springs_free(hot);
+    tirenv_profile_free(p);
+}
+
 /* A lone sharp vertex meets the same hub stiffness anywhere along the tread (section 4.8):
  * the apex of a 0.2 x 0.08 m triangle (nothing else within R0), the centre 0.05 m inside
  * the free tread from it, on element i0's ray (t = 0) and a quarter, half and three quarters
@@ -780,6 +848,7 @@ int main(void)
         cmocka_unit_test(test_warm_start_invisible),
         cmocka_unit_test(test_kept_factor_invisible),
         cmocka_unit_test(test_update_is_the_solution),
+        cmocka_unit_test(test_far_evaluation_tries_the_closed_form),
         cmocka_unit_test(test_lone_vertex_stiffness),
         cmocka_unit_test(test_second_difference_lone_vertex),
     };
