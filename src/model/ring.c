@@ -399,14 +399,18 @@ static double patch_length_smooth(const tirenv_ring *r)
     return len;
 }
 
-static void summarise_smooth(tirenv_ring *r)
+/* The contact counts and, for the Winkler tread (with_max), its largest compression; the
+ * shear-coupled tread's is its solve's (ring_shear.c), so its points are not walked. */
+static void summarise_smooth(tirenv_ring *r, int with_max)
 {
     r->n_contact = r->n_belt = 0;
-    r->tread_max = 0;
     for (size_t j = r->lo; j < r->lo + r->n; ++j) {
         r->n_contact += r->F[j] > 0;
         r->n_belt += r->g[j] > 0;
     }
+    if (!with_max)
+        return;
+    r->tread_max = 0;
     for (size_t k = 0; k < r->n_pts; ++k)
         if (r->pts[k].st != 0)
             r->tread_max = fmax(r->tread_max, fmin(r->pts[k].e, r->par.t_r));
@@ -434,11 +438,11 @@ static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, doub
         return status;
     }
     if (r->tread) { /* the contact counts; tread_max is the solve's */
-        const double tread_max = r->n ? r->tread_max : 0;
-        summarise_smooth(r);
-        r->tread_max = tread_max;
+        if (!r->n)
+            r->tread_max = 0;
+        summarise_smooth(r, 0);
     } else {
-        summarise_smooth(r);
+        summarise_smooth(r, 1);
     }
     if (contacts)
         *contacts = r->n_contact;

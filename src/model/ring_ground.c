@@ -10,7 +10,9 @@
  * passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, each
  * with the weight dtheta: the rays model exactly. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 #include "profile/profile_impl.h"
 #include "core/capacity.h"
 #include "model/ring_impl.h"
@@ -115,34 +117,62 @@ static double rho_on(const double L[4], double x, double z, double s, double c, 
     return rho;
 }
 
-/* The piece [a, b] of node interval j (nodes j, j + 1): its two points. */
+/* Equal bits (not ==, which equates 0 and -0): n doubles. */
+static int same_bits(const double *a, const double *b, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        uint64_t ua, ub;
+        memcpy(&ua, &a[i], sizeof ua);
+        memcpy(&ub, &b[i], sizeof ub);
+        if (ua != ub)
+            return 0;
+    }
+    return 1;
+}
+
+/* The piece [a, b] of node interval j (nodes j, j + 1): its two points. prev_L: the line of
+ * the piece whose points were written last, if that piece ends where this one begins (else
+ * NULL): where a's cut and the line are the same bits, a's ray is that point's, whose
+ * values are copied rather than computed again (the same operations on the same operands). */
 static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, const double L[4],
-                         double x, double z, int inside)
+                         const double prev_L[4], double x, double z, int inside)
 {
     const double omega = 0.5 * (b->phi - a->phi), th = r->theta[j];
     const cut *ends[2] = {a, b};
     for (int e = 0; e < 2; ++e) {
         tirenv_ring_point *q = &r->pts[r->n_pts++];
         const cut *k = ends[e];
-        double drho = 0, drho_dphi = 0, rho = 0;
-        if (!inside)
-            rho = rho_on(L, x, z, k->s, k->c, &drho, &drho_dphi);
+        const tirenv_ring_point *qp = q - 1;
+        if (e == 0 && prev_L && same_bits(L, prev_L, 4) && same_bits(&qp->phi, &k->phi, 1) &&
+            same_bits(&qp->sn, &k->s, 1) && same_bits(&qp->cs, &k->c, 1) &&
+            same_bits(&qp->dphi, &k->dphi, 1)) {
+            q->d = qp->d;
+            q->dd = qp->dd;
+            q->ddt = qp->ddt;
+            q->X = qp->X;
+        } else {
+            double drho = 0, drho_dphi = 0, rho = 0;
+            if (!inside)
+                rho = rho_on(L, x, z, k->s, k->c, &drho, &drho_dphi);
+            q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+            q->dd = -drho;
+            q->ddt = -(drho + drho_dphi * k->dphi);
+            q->X = x + (isfinite(rho) ? rho : 0) * k->s;
+        }
         q->sn = k->s;
         q->cs = k->c;
         q->phi = k->phi;
         q->omega = omega;
         q->j = j;
-        const double s = (k->phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
-        q->s = s > 0 ? (s < 1 ? s : 1) : 0;
-        if (k == ends[1] && b->phi == r->theta[j + 1])
+        if (e == 1 && b->phi == r->theta[j + 1]) {
             q->s = 1;
-        if (k == ends[0] && a->phi == th)
+        } else if (e == 0 && a->phi == th) {
             q->s = 0;
-        q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
-        q->dd = -drho;
+        } else {
+            const double s = (k->phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
+            q->s = s > 0 ? (s < 1 ? s : 1) : 0;
+        }
         q->dphi = k->dphi;
-        q->ddt = -(drho + drho_dphi * k->dphi);
-        q->X = x + (isfinite(rho) ? rho : 0) * k->s;
     }
 }
 
@@ -222,7 +252,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         if (!c->hit)
             continue;
         const cut a = {c->pa, c->sa, c->ca, c->da}, b = {c->pb, c->sb, c->cb, c->db};
-        piece_points(r, &a, &b, c->j, c->L, x, z, inside);
+        const int after = i > 0 && c[-1].hit; /* the points written last are c[-1]'s */
+        piece_points(r, &a, &b, c->j, c->L, after ? c[-1].L : NULL, x, z, inside);
     }
     return 0;
 }

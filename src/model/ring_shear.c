@@ -1509,12 +1509,19 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     }
     /* The diagnostics: the largest tread compression u - w, at the nodes and the points in
      * contact (the free nodes' from xw). */
-    double e_max = 0;
-    for (size_t i = 0; i < n; ++i)
-        e_max = fmax(e_max, xw[2 * i + 1] - xw[2 * i]);
+    double e_max = 0; /* "v > e_max": fmax(e_max, v) without its call, the same bits (e_max
+                       * is never NaN; a NaN v is passed over; of two zeros the first kept) */
+    for (size_t i = 0; i < n; ++i) {
+        const double v = xw[2 * i + 1] - xw[2 * i];
+        if (v > e_max)
+            e_max = v;
+    }
     for (size_t k = 0; k < r->n_pts; ++k)
-        if (r->pts[k].st)
-            e_max = fmax(e_max, at_u(r, &r->pts[k], x) - at_w(r, &r->pts[k], x));
+        if (r->pts[k].st) {
+            const double v = at_u(r, &r->pts[k], x) - at_w(r, &r->pts[k], x);
+            if (v > e_max)
+                e_max = v;
+        }
     r->tread_max = fmin(e_max, t_r);
     leave(r, &sv);
     if (dfz_dz) {
