@@ -1,6 +1,7 @@
 #!/bin/sh
-# Sourced by tests/cli/jobs.sh and tests/study/study_runs.sh: two output trees equal apart from the
-# timings they report (--jobs changes how long a command takes, never what it computes).
+# Sourced by tests/cli/jobs.sh and tests/study/study_runs*.sh: two output trees equal apart
+# from the timings they report (--jobs changes how long a command takes, never what it
+# computes).
 # SPDX-License-Identifier: Apache-2.0
 
 # A report's text without what was timed: durations become T, and the lines of the timing
@@ -11,18 +12,21 @@ untimed() {
 }
 
 # Two output trees equal apart from timings: timing.csv and the images skipped, reports and
-# JSON through untimed, everything else byte for byte. Prints the first difference.
+# JSON through untimed, everything else byte for byte. Prints the first difference. The texts
+# compared go to temporary files of their own: tests that run at once share a working
+# directory (two studies once compared each other's reports there).
 same_apart_from_timings() {
     ok=0
+    ta=$(mktemp) tb=$(mktemp)
     for f in $(cd "$1" && find . -type f | sort); do
         case $f in
         */timing.csv | *.png | *.svg) continue ;;
         *.md | *.json | *.txt)
-            untimed "$1/$f" >a.txt
-            untimed "$2/$f" >b.txt
-            if ! cmp -s a.txt b.txt; then
+            untimed "$1/$f" >"$ta"
+            untimed "$2/$f" >"$tb"
+            if ! cmp -s "$ta" "$tb"; then
                 echo "# $f differs beyond timings:"
-                diff a.txt b.txt | head -n 6 | sed 's/^/#   /'
+                diff "$ta" "$tb" | head -n 6 | sed 's/^/#   /'
                 ok=1
             fi
             ;;
@@ -34,6 +38,7 @@ same_apart_from_timings() {
             ;;
         esac
     done
+    rm -f "$ta" "$tb"
     [ "$(cd "$1" && find . -type f ! -name '*.png' ! -name '*.svg' | sort)" = \
       "$(cd "$2" && find . -type f ! -name '*.png' ! -name '*.svg' | sort)" ] || {
         echo "# the two runs wrote different files"
