@@ -407,8 +407,6 @@ typedef struct {
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
-    /* what the updates did (for tests and the cost's figures): tried, accepted */
-    size_t n_upd_tried, n_upd_ok;
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);

@@ -53,9 +53,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     const double dz = z - c->base_z;
-    if (!c->base_ok || f0 > f1 || a > b || !(fabs(dz) <= upd_dz_max))
+    /* The corrections below need the working rows between elements on the Schur path. */
+    if (!c->base_ok || !c->use_schur || f0 > f1 || a > b || !(fabs(dz) <= upd_dz_max))
         return 0;
-    ++c->n_upd_tried;
     const double R0 = T->R0, tol = 1e-12 * R0, tol_eq = eq_tol * R0;
     const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
     /* Every ray that meets the ground, and every vertex row, within the base's span: w
@@ -101,11 +101,8 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             wn[e] = base_w[e] + dz * dw[e];
         }
     }
-    /* The working rows between elements at z (all of them on the Schur path, which the
-     * corrections below need): the same vertex in the same sector, its weights at its new t,
-     * its reaction along the tangent. */
-    if (!c->use_schur)
-        return 0;
+    /* The working rows between elements at z: the same vertex in the same sector, its
+     * weights at its new t, its reaction along the tangent. */
     const size_t n_s = c->n_schur;
     size_t row_i[TIRENV_SPRINGS__SCHUR_MAX];
     double ga[TIRENV_SPRINGS__SCHUR_MAX], gb[TIRENV_SPRINGS__SCHUR_MAX];
@@ -214,6 +211,5 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     }
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
-    ++c->n_upd_ok;
     return 1;
 }
