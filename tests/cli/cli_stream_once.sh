@@ -34,15 +34,7 @@ bad mid.csv 12000 '11.9,abc'
 want_error mid.csv
 check "setup: whole mode refuses the bad middle row at its line" \
     'grep -q "^tirenv: mid.csv:12000:6: z_m: expected a number" want'
-run "$bin" envelope $cam --profile mid.csv --stream -o s.csv
-check "--stream into a file, a bad row mid-sweep: whole mode's error, no file" \
-    '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
-run "$bin" envelope $cam --profile mid.csv --stream --x-from 1 --x-to 2 -o s.csv
-check "a bad row past the sweep's end: still read, the same error, no file" \
-    '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
-run "$bin" envelope $cam --profile mid.csv --stream
-check "to standard output: the same error before any row" \
-    '[ $rc -eq 2 ] && cmp -s err want && [ ! -s out ]'
+stream_refuses_mid mid.csv
 bad back.csv 25000 '5,0'
 want_error back.csv
 run "$bin" envelope $cam --profile back.csv --stream -o s.csv

@@ -47,15 +47,7 @@ bad mid.rdf 12.5 '12.5 0.001 0.00x'
 want_error mid.rdf
 check "setup: whole mode refuses the bad middle row at its line and column" \
     'grep -q "^tirenv: mid.rdf:$line:[0-9]*: XZ_DATA: z_right: expected a finite number" want'
-run "$bin" envelope $cam --profile mid.rdf --stream -o s.csv
-check "--stream into a file, a bad row mid-road: whole mode's error, no file" \
-    '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
-run "$bin" envelope $cam --profile mid.rdf --stream --x-from 1 --x-to 2 -o s.csv
-check "a bad row past the sweep's end: the same error, no file" \
-    '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
-run "$bin" envelope $cam --profile mid.rdf --stream
-check "to standard output: the same error, no row" \
-    '[ $rc -eq 2 ] && cmp -s err want && [ ! -s out ]'
+stream_refuses_mid mid.rdf
 bad back.rdf 17.25 '3 0 0'
 want_error back.rdf
 run "$bin" envelope $cam --profile back.rdf --stream --x-to 2 -o s.csv

@@ -64,6 +64,20 @@ want_error() {
     [ $rc -eq 2 ] && no_file w.csv && cp err want
 }
 
+# --stream over the road in $1, bad in a middle row (want: whole mode's error, want_error):
+# the same error and nothing written into a file, past the sweep's end, and to standard output.
+stream_refuses_mid() {
+    run "$bin" envelope $cam --profile "$1" --stream -o s.csv
+    check "--stream into a file, a bad row mid-road: whole mode's error, no file" \
+        '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
+    run "$bin" envelope $cam --profile "$1" --stream --x-from 1 --x-to 2 -o s.csv
+    check "a bad row past the sweep's end: still read, the same error, no file" \
+        '[ $rc -eq 2 ] && cmp -s err want && no_file s.csv'
+    run "$bin" envelope $cam --profile "$1" --stream
+    check "to standard output: the same error before any row" \
+        '[ $rc -eq 2 ] && cmp -s err want && [ ! -s out ]'
+}
+
 # Number of CSV data rows (lines after the header).
 rows() {
     echo $(($(wc -l <"$1") - 1))
