@@ -54,12 +54,12 @@ static void usage(FILE *fp)
           "                       [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "One tire, every model: identifies the springs model's RADIAL_STIFFNESS and\n"
-          "INTERRADIAL_STIFFNESS, and the cam's VERTICAL_STIFFNESS, Q_RA1 and Q_RA2, on the\n"
-          "reference model's flat-ground load-deflection and load-contact-length curves\n"
-          "(docs/models.md section 14.1), then tabulates the three\n"
-          "models' deflections and contact lengths at each load and their largest relative\n"
-          "differences from the reference, all with the values rounded to three significant\n"
-          "digits, as written. The loads: 0.5 to 1.5 times the file's FNOMIN,\n"
+          "INTERRADIAL_STIFFNESS, and the cam's VERTICAL_STIFFNESS, Q_FZ2 (with FNOMIN),\n"
+          "Q_RA1 and Q_RA2, on the reference model's flat-ground load-deflection and\n"
+          "load-contact-length curves (docs/models.md section 14.1), then tabulates the\n"
+          "three models' deflections and contact lengths at each load and their largest\n"
+          "relative differences from the reference, all with the values rounded to three\n"
+          "significant digits, as written. The loads: 0.5 to 1.5 times the file's FNOMIN,\n"
           "or, for a file without it, the reference's loads at contact lengths 0.28 to\n"
           "0.38 m (the paper's working regimes).\n"
           "\n"
@@ -70,7 +70,9 @@ static void usage(FILE *fp)
           "                       comments, with a '!' note on how they were identified\n"
           "  --write-springs      the same for the springs model's two values alone, the cam's\n"
           "                       laws kept as the file has them (the table then shows the\n"
-          "                       file's cam)\n",
+          "                       file's cam). Both refuse a file whose ring is derived as\n"
+          "                       it is read (no [ENVELOPING_RING]) and a --set of a key\n"
+          "                       they do not write\n",
           fp);
     cli_help_tire(fp, 1);
     fputs("  -h, --help           show this help\n", fp);
