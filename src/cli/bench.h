@@ -15,6 +15,10 @@ void cli_bench_say(const char *fmt, ...)
     ;
 void cli_bench_figure(const char *name, double value);
 
+/* The directory for the bench's scratch files: $TMPDIR where set (its road files can be
+ * hundreds of MB, more than a small /tmp holds), else /tmp. */
+const char *cli_bench_tmpdir(void);
+
 /* The ride over the bench road (profile road, centre positions x[0..n-1] on a uniform grid)
  * with the default tractor, point / cam / nn (skipped if nn is NULL) / springs, printing the
  * real-time factor of each; best of repeat. */

@@ -153,11 +153,8 @@ int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double leng
 {
     char self[PATH_MAX], target[PATH_MAX - 64], road[PATH_MAX], rdf[PATH_MAX], out[PATH_MAX];
     char len_text[32];
-    /* $TMPDIR where set: the 10 km road's files are some 600 MB, more than a small /tmp
-     * holds */
-    const char *tmp = getenv("TMPDIR");
-    if (snprintf(target, sizeof target, "%s/tirenv-bench-memory",
-                 tmp && *tmp ? tmp : "/tmp") >= (int)sizeof target)
+    const char *tmp = cli_bench_tmpdir();  /* the 10 km road's files are some 600 MB */
+    if (snprintf(target, sizeof target, "%s/tirenv-bench-memory", tmp) >= (int)sizeof target)
         return tirenv_error(diag, TIRENV_EINVAL, "TMPDIR", 0, "", "too long a path: %s", tmp);
     if (self_path(self, sizeof self) != 0)
         return tirenv_error(diag, TIRENV_EIO, "/proc/self/exe", 0, "",

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: Apache-2.0 */
 #include <errno.h>
 #include <jansson.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -41,6 +42,12 @@ void cli_bench_figure(const char *name, double value)
 {
     if (figures && isfinite(value))
         json_object_set_new(figures, name, json_real(value));
+}
+
+const char *cli_bench_tmpdir(void)
+{
+    const char *tmp = getenv("TMPDIR");
+    return tmp && *tmp ? tmp : "/tmp";
 }
 
 static const struct {
@@ -310,7 +317,11 @@ static int bench_import(const tirenv_tire *tire, const tirenv_profile *prof, lon
     tirenv_rig_log log = {0};
     if (!status)
         status = tirenv_rig_simulate(m, prof, &rig, &log, &diag);
-    char path[] = "/tmp/tirenv-bench-log-XXXXXX";
+    char path[PATH_MAX];
+    if (!status && snprintf(path, sizeof path, "%s/tirenv-bench-log-XXXXXX", cli_bench_tmpdir())
+                       >= (int)sizeof path)
+        status = tirenv_error(&diag, TIRENV_EINVAL, "TMPDIR", 0, "", "too long a path: %s",
+                              cli_bench_tmpdir());
     const int fd = status ? -1 : mkstemp(path);
     if (fd >= 0)
         close(fd);

@@ -76,4 +76,8 @@ run env TMPDIR="$tmp" "$bin" bench --memory --quick --json
 check "the next run measures (its RDF --stream figure too) and removes what the killed one left" \
     '[ $rc -eq 0 ] && grep -q "\"envelope_stream_rdf_peak_mb\"" out && [ -z "$(ls -A t)" ]'
 
+run env TMPDIR="$PWD/nowhere" "$bin" bench --quick --json
+check "the rig log's temporary file goes to \$TMPDIR too: a TMPDIR that is not there is an error naming it" \
+    '[ $rc -eq 2 ] && grep -q "nowhere/tirenv-bench-log-.*cannot make the rig log" err && [ ! -s out ]'
+
 clilib_done
