@@ -75,7 +75,12 @@ static int brent_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
                             "load %.6g N exceeds what the tire carries with its centre at the "
                             "ground (z = %.6g m)", s->G, lo);
     }
-    return after_brent(st, tirenv_core__brent_set(&st->br, brent_f, st, lo, hi), stop, diag);
+    /* Brent starts from f(lo) as evaluated here (evaluating it again would cost an evaluation
+     * and give the same value) and f(hi) */
+    const double f_hi = brent_f(hi, st);
+    return after_brent(st, tirenv_core__brent_set_values(&st->br, brent_f, st, lo, p.F - s->G,
+                                                         hi, f_hi),
+                       stop, diag);
 }
 
 /* The kept evaluation at z: the latest, or the latest on either side of the root. */

@@ -191,6 +191,8 @@ static void run_case(const eq_case *c, size_t m)
     assert_int_equal(status, e->status);
     assert_int_equal(res.evals, rec.calls);       /* every evaluation counted */
     assert_true(res.evals <= eq.max_iter);        /* and the budget kept */
+    for (size_t k = 1; k < rec.n; ++k)            /* no height evaluated twice in a row: */
+        assert_true(rec.log[k].z != rec.log[k - 1].z);  /* the force gives nothing new */
     if (status) {
         assert_int_equal(res.stop, e->stop);
         assert_true(diag.message[0] != '\0');     /* every failure says why */
