@@ -42,7 +42,7 @@ static void usage(FILE *fp)
           "  --crg-encoding E     .crg output: kdbi (default: binary doubles, exact), krbi\n"
           "                       (binary floats), ldfi or lrfi (text)\n"
           "  --dx M               .crg output: resample every M m (default: the input's own\n"
-          "                       spacing, which must then be even)\n"
+          "                       spacing, which must then be even); at most 1e8 rows\n"
           "  --half-width M       .crg output of one track: the road reaches M m to either\n"
           "                       side, the same heights across (default 0.5)\n"
           "  --pad M              .crg output of a profile that starts or ends with a wall (a\n"
@@ -301,6 +301,25 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     return tirenv_outfile_commit(f, diag);
 }
 
+/* A .crg resampled every --dx holds the profile's length over it in rows: a typo such as
+ * 1e-9 for 1e-3 would write 16 bytes a row per long section, 32 GB over 2 m, before it ended.
+ * At most as many rows as a streamed sweep's positions (CLI_MAX_STREAM_POSITIONS), the
+ * same bound for the same reason. */
+static int check_rows(const convert *cv, const tirenv_profile *p, tirenv_diag *diag)
+{
+    if (!cv->have_dx)
+        return TIRENV_OK;
+    double x0, x1;
+    tirenv_profile_extent(p, &x0, &x1);
+    const double rows = floor((x1 - x0) / cv->w.crg_u_increment) + 1;
+    if (!(rows <= CLI_MAX_STREAM_POSITIONS))
+        return tirenv_error(diag, TIRENV_EINVAL, cv->out, 0, "dx",
+                            "%.3g rows from %g to %g m every %g m is too many (at most %.0f); "
+                            "expected a larger --dx", rows, x0, x1, cv->w.crg_u_increment,
+                            CLI_MAX_STREAM_POSITIONS);
+    return TIRENV_OK;
+}
+
 /* Every read of the .crg goes through the open file's one handle (tirenv_road_file_crg): its
  * pass at open made once, for the copy, the row reader or the track read whole. */
 static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, double range[4],
@@ -320,7 +339,8 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
     } else {
         tirenv_profile *p;
         if (!(status = tirenv_road_file_read(cv->file, &cv->src, 1, NULL, &p, diag))) {
-            status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
+            if (!(status = check_rows(cv, p, diag)))
+                status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
             const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
             range[0] = x[0];
             range[1] = x[*n - 1];
@@ -423,7 +443,8 @@ int cli_convert_main(int argc, char *argv[])
         if (!(status = tirenv_road_file_read(cv.file, &cv.src, 1, NULL, &p, &diag))) {
             if (to == TIRENV_PROFILE_CSV)
                 status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
-            else if (to != TIRENV_PROFILE_CRG || !(status = pad_walls(&cv, &p, &diag)))
+            else if (to != TIRENV_PROFILE_CRG || (!(status = pad_walls(&cv, &p, &diag)) &&
+                                                  !(status = check_rows(&cv, p, &diag))))
                 status = tirenv_profile_write_file(cv.out, p, &cv.w, &diag);
             n = tirenv_profile_size(p);
             const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);

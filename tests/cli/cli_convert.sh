@@ -141,6 +141,12 @@ run "$bin" convert --profile "$crg/handmade_straight.crg" --track 0 --dx 0.25 --
 check "... --dx and --half-width with --track: one track resampled, 89 rows 6 m wide" \
     '[ $rc -eq 0 ] && grep -aq "REFERENCE_LINE_INCREMENT = 0.25" one.crg &&
      grep -aq "LONG_SECTION_V_LEFT      = 3" one.crg'
+run "$bin" convert --profile uneven.csv --dx 1e-9 -o big.crg
+check "--dx 1e-9 over 0.3 m: 3e8 rows refused before any is written (exit 2), no file" \
+    '[ $rc -eq 2 ] && grep -q "too many" err && no_file big.crg'
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track 0 --dx 1e-7 -o big.crg
+check "... and from a .crg track: 2.2e8 rows over 22 m refused, no file" \
+    '[ $rc -eq 2 ] && grep -q "too many" err && no_file big.crg'
 printf 'x_m,z_m\n0,0\n1,x\n' >bad.csv
 run "$bin" convert --profile bad.csv -o b.rdf
 check "a malformed CSV: exit 2 naming file:line, no file" \
