@@ -144,6 +144,16 @@ int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
     for (size_t j = 0; j < n; j++) {
         p->x[j] = (double)j * s->dx;
         p->z[j] = creal(c[j]) - creal(c[0]);
+        /* Only the PSD's exponent reaches overflow: (n/n0)^-w at the band's lowest
+         * component passes 1e308 for w of some 300 and more. */
+        if (!isfinite(p->z[j])) {
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "waviness",
+                                  "%g makes the PSD %g m^3 at %g cycles/m, the band's "
+                                  "lowest component, and the heights overflow; expected a "
+                                  "smaller waviness", s->waviness,
+                                  tirenv_road_psd(s, k_lo * dn), k_lo * dn);
+            goto done;
+        }
     }
     if (!(status = tirenv_profile__finish(p, diag))) {
         *out = p;

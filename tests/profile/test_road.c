@@ -225,9 +225,11 @@ static void test_errors(void **state)
         {road('C', 0.05, 0.01, 1), "length"},    /* dn = 12.5 cycles/m: nothing in the band */
         {road('C', 100, 0.01, 1), "band"},
         {road('C', 100, 0.01, 1), "waviness"},
+        {road('C', 10, 0.01, 1), "waviness"},    /* the PSD overflows: NaN heights */
     };
     cases[7].s.n_min = 3.0;
     cases[8].s.waviness = -1;
+    cases[9].s.waviness = 1e308;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         tirenv_profile *p = (tirenv_profile *)&cases; /* must come back NULL */
         tirenv_diag diag;
