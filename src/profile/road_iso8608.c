@@ -96,7 +96,7 @@ static int check(const tirenv_road_settings *s, size_t *n_out, tirenv_diag *diag
     const double steps = floor(s->length / s->dx + 1e-9);
     if (!(steps < TIRENV_ROAD_MAX_POINTS))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
-                            "%g m over %g m makes %.0f points, more than %d; raise dx",
+                            "%g m over %g m makes %.15g points, more than %d; raise dx",
                             s->dx, s->length, steps + 1, TIRENV_ROAD_MAX_POINTS);
     *n_out = (size_t)steps + 1;
     return TIRENV_OK;

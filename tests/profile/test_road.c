@@ -239,6 +239,13 @@ static void test_errors(void **state)
         assert_null(p);
         assert_string_equal(diag.field, cases[i].field);
     }
+    /* A count of 1e303 points in digits filled the message, its advice cut off. */
+    tirenv_road_settings s = road('C', 1e300, 0.001, 1);
+    tirenv_profile *p = NULL;
+    tirenv_diag diag;
+    assert_int_equal(tirenv_road_iso8608(&s, &p, &diag), TIRENV_EINVAL);
+    assert_non_null(strstr(diag.message, "makes 1e+303 points, more than"));
+    assert_non_null(strstr(diag.message, "raise dx"));
 }
 
 /* A generated road is a profile like any other: the cam and rigid models run over it. The
