@@ -23,8 +23,9 @@ static void usage(FILE *fp)
           "(.csv, .crg, .rdf; '-', a device such as /dev/null or a FIFO without one is written\n"
           "through as CSV). From a .crg one track is taken, the long section at --track (a .crg\n"
           "to a .crg without --track copies every long section); a .crg is written with a\n"
-          "straight reference line. A one-line "
-          "summary goes to standard error.\n"
+          "straight reference line. An option that would change nothing in what is written\n"
+          "(below, each says what it applies to) is refused. A one-line summary goes to\n"
+          "standard error.\n"
           "\n"
           "options:\n"
           "  --profile IN         road file to read: CSV, .crg or .rdf\n"
@@ -41,7 +42,7 @@ static void usage(FILE *fp)
           "  --crg-encoding E     .crg output: kdbi (default: binary doubles, exact), krbi\n"
           "                       (binary floats), ldfi or lrfi (text)\n"
           "  --dx M               .crg output: resample every M m (default: the input's own\n"
-          "                       spacing, which must then be even)\n"
+          "                       spacing, which must then be even); at most 1e8 rows\n"
           "  --half-width M       .crg output of one track: the road reaches M m to either\n"
           "                       side, the same heights across (default 0.5)\n"
           "  --pad M              .crg output of a profile that starts or ends with a wall (a\n"
@@ -56,6 +57,9 @@ typedef struct {
     const char *in, *out;
     tirenv_road_file *file;    /* --profile, open: read once, its format told once */
     int have_track;
+    /* Which of the options that apply to one input or output format were given: one that
+     * would change nothing is refused, as --track is for a CSV or RDF input. */
+    int have_side, have_nan_mode, have_encoding, have_dx, have_half_width, have_pad;
     double pad;                /* --pad: flat ground before and after a wall at an end, m */
     tirenv_profile_source src;
     tirenv_profile_write_options w;
@@ -74,21 +78,95 @@ static int parse_track(void *dst, const char *arg)
 
 static int parse_pad(void *dst, const char *arg)
 {
-    double *pad = dst;
-    if (cli_parse_double(arg, pad) || !(*pad >= 0) || !isfinite(*pad)) {
+    convert *cv = dst;
+    if (cli_parse_double(arg, &cv->pad) || !(cv->pad >= 0) || !isfinite(cv->pad)) {
         cli_error("convert: --pad expects a length >= 0 in m, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    cv->have_pad = 1;
     return CLI_EXIT_OK;
 }
 
 static int parse_side(void *dst, const char *arg)
 {
-    if (tirenv_rdf_side_find(arg, dst)) {
+    convert *cv = dst;
+    if (tirenv_rdf_side_find(arg, &cv->src.rdf_side)) {
         cli_error("convert: --side expects left, right or mean, got '%s'", arg);
         return CLI_EXIT_USAGE;
     }
+    cv->have_side = 1;
     return CLI_EXIT_OK;
+}
+
+static int parse_nan_mode(void *dst, const char *arg)
+{
+    convert *cv = dst;
+    cv->have_nan_mode = 1;
+    return cli_parse_crg_nan_mode(&cv->src.crg, arg);
+}
+
+static int parse_encoding(void *dst, const char *arg)
+{
+    convert *cv = dst;
+    cv->have_encoding = 1;
+    return cli_parse_crg_encoding(&cv->w.crg_encoding, arg);
+}
+
+/* --dx and --half-width: a length > 0, m. */
+static int parse_length(const char *name, const char *arg, double *v, int *given)
+{
+    if (cli_parse_double(arg, v) || !(*v > 0)) {
+        cli_error("--%s: expected a positive length in m, got '%s'", name, arg);
+        return CLI_EXIT_USAGE;
+    }
+    *given = 1;
+    return CLI_EXIT_OK;
+}
+
+static int parse_dx(void *dst, const char *arg)
+{
+    convert *cv = dst;
+    return parse_length("dx", arg, &cv->w.crg_u_increment, &cv->have_dx);
+}
+
+static int parse_half_width(void *dst, const char *arg)
+{
+    convert *cv = dst;
+    return parse_length("half-width", arg, &cv->w.crg_half_width, &cv->have_half_width);
+}
+
+/* An option given for a format it does not apply to changes nothing in what is written: the
+ * first such one, refused, or NULL. A .crg to a .crg without --track is a copy of every long
+ * section as it lies, its rows and lateral positions the input's. */
+static const char *unused_option(const convert *cv, tirenv_profile_format from,
+                                 tirenv_profile_format to, char *buf, size_t n)
+{
+    const char *in = from == TIRENV_PROFILE_CRG ? "a .crg" : from == TIRENV_PROFILE_RDF
+                                                                ? "an RDF road"
+                                                                : "a CSV profile";
+    const int copy = from == TIRENV_PROFILE_CRG && to == TIRENV_PROFILE_CRG && !cv->have_track;
+    if (cv->have_side && from != TIRENV_PROFILE_RDF)
+        snprintf(buf, n, "--side applies to an RDF input; %s is %s", cv->in, in);
+    else if (cv->have_nan_mode && from != TIRENV_PROFILE_CRG)
+        snprintf(buf, n, "--crg-nan-mode applies to a .crg input; %s is %s", cv->in, in);
+    else if ((cv->have_encoding || cv->have_dx || cv->have_half_width || cv->have_pad) &&
+             to != TIRENV_PROFILE_CRG)
+        snprintf(buf, n, "--%s applies to a .crg output; %s is written as %s",
+                 cv->have_encoding ? "crg-encoding" : cv->have_dx ? "dx"
+                                                  : cv->have_half_width ? "half-width"
+                                                                        : "pad",
+                 cv->out, tirenv_profile_format_name(to));
+    else if ((cv->have_dx || cv->have_half_width) && copy)
+        snprintf(buf, n, "--%s with a .crg copied to a .crg: the copy keeps every long "
+                 "section with the input's rows and lateral positions; give --track V to "
+                 "write one track, resampled and as wide as asked",
+                 cv->have_dx ? "dx" : "half-width");
+    else if (cv->have_pad && from == TIRENV_PROFILE_CRG)
+        snprintf(buf, n, "--pad applies to a CSV or RDF profile that starts or ends with a "
+                 "wall; a .crg road has none");
+    else
+        return NULL;
+    return buf;
 }
 
 /* Returns an exit code, or CLI_GO_ON. */
@@ -97,16 +175,12 @@ static int parse(int argc, char *argv[], convert *cv)
     const cli_opt own[] = {
         {.name = "profile", .kind = CLI_STRING, .dst = &cv->in},
         {.name = "track", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_track},
-        {.name = "side", .kind = CLI_CUSTOM, .dst = &cv->src.rdf_side, .parse = parse_side},
-        {.name = "crg-nan-mode", .kind = CLI_CUSTOM, .dst = &cv->src.crg,
-         .parse = cli_parse_crg_nan_mode},
-        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &cv->w.crg_encoding,
-         .parse = cli_parse_crg_encoding},
-        {.name = "dx", .kind = CLI_POSITIVE, .dst = &cv->w.crg_u_increment,
-         .what = "a positive length in m"},
-        {.name = "half-width", .kind = CLI_POSITIVE, .dst = &cv->w.crg_half_width,
-         .what = "a positive length in m"},
-        {.name = "pad", .kind = CLI_CUSTOM, .dst = &cv->pad, .parse = parse_pad},
+        {.name = "side", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_side},
+        {.name = "crg-nan-mode", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_nan_mode},
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_encoding},
+        {.name = "dx", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_dx},
+        {.name = "half-width", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_half_width},
+        {.name = "pad", .kind = CLI_CUSTOM, .dst = cv, .parse = parse_pad},
         {.name = NULL},
     };
     const cli_parser p = {.name = "convert", .usage = usage, .opts = own, .groups = CLI_OUTPUT};
@@ -227,6 +301,25 @@ static int crg_to_csv(const tirenv_crg *crg, const convert *cv, double range[4],
     return tirenv_outfile_commit(f, diag);
 }
 
+/* A .crg resampled every --dx holds the profile's length over it in rows: a typo such as
+ * 1e-9 for 1e-3 would write 16 bytes a row per long section, 32 GB over 2 m, before it ended.
+ * At most as many rows as a streamed sweep's positions (CLI_MAX_STREAM_POSITIONS), the
+ * same bound for the same reason. */
+static int check_rows(const convert *cv, const tirenv_profile *p, tirenv_diag *diag)
+{
+    if (!cv->have_dx)
+        return TIRENV_OK;
+    double x0, x1;
+    tirenv_profile_extent(p, &x0, &x1);
+    const double rows = floor((x1 - x0) / cv->w.crg_u_increment) + 1;
+    if (!(rows <= CLI_MAX_STREAM_POSITIONS))
+        return tirenv_error(diag, TIRENV_EINVAL, cv->out, 0, "dx",
+                            "%.3g rows from %g to %g m every %g m is too many (at most %.0f); "
+                            "expected a larger --dx", rows, x0, x1, cv->w.crg_u_increment,
+                            CLI_MAX_STREAM_POSITIONS);
+    return TIRENV_OK;
+}
+
 /* Every read of the .crg goes through the open file's one handle (tirenv_road_file_crg): its
  * pass at open made once, for the copy, the row reader or the track read whole. */
 static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, double range[4],
@@ -246,7 +339,8 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
     } else {
         tirenv_profile *p;
         if (!(status = tirenv_road_file_read(cv->file, &cv->src, 1, NULL, &p, diag))) {
-            status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
+            if (!(status = check_rows(cv, p, diag)))
+                status = tirenv_profile_write_file(cv->out, p, &cv->w, diag);
             const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);
             range[0] = x[0];
             range[1] = x[*n - 1];
@@ -334,6 +428,12 @@ int cli_convert_main(int argc, char *argv[])
         tirenv_road_file_free(cv.file);
         return CLI_EXIT_USAGE;
     }
+    char why[400];
+    if (unused_option(&cv, from, to, why, sizeof why)) {
+        cli_error("convert: %s", why);
+        tirenv_road_file_free(cv.file);
+        return CLI_EXIT_USAGE;
+    }
     size_t n = 0;
     double range[4] = {0, 0, INFINITY, -INFINITY};
     if (from == TIRENV_PROFILE_CRG) {
@@ -343,7 +443,8 @@ int cli_convert_main(int argc, char *argv[])
         if (!(status = tirenv_road_file_read(cv.file, &cv.src, 1, NULL, &p, &diag))) {
             if (to == TIRENV_PROFILE_CSV)
                 status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
-            else if (to != TIRENV_PROFILE_CRG || !(status = pad_walls(&cv, &p, &diag)))
+            else if (to != TIRENV_PROFILE_CRG || (!(status = pad_walls(&cv, &p, &diag)) &&
+                                                  !(status = check_rows(&cv, p, &diag))))
                 status = tirenv_profile_write_file(cv.out, p, &cv.w, &diag);
             n = tirenv_profile_size(p);
             const double *x = tirenv_profile_x(p), *z = tirenv_profile_z(p);

@@ -185,7 +185,14 @@ void cli_help_envelope_output(FILE *fp)
 static cli_envelope_opts envelope_default(void)
 {
     return (cli_envelope_opts){.stream = 0, .detail = 0, .encoding = TIRENV_CRG_KDBI,
-                               .relative = CLI_RELATIVE_DATUM};
+                               .have_encoding = 0, .relative = CLI_RELATIVE_DATUM};
+}
+
+static int parse_encoding(void *dst, const char *arg)
+{
+    cli_envelope_opts *e = dst;
+    e->have_encoding = 1;
+    return cli_parse_crg_encoding(&e->encoding, arg);
 }
 
 /* What a run needs besides the options: the tracks and how the curve goes out. */
@@ -619,6 +626,16 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
                   cmd, o->output);
         return CLI_EXIT_USAGE;
     }
+    if (e->have_encoding && r.out_format != TIRENV_PROFILE_CRG) {
+        if (o->output)
+            cli_error("%s: --crg-encoding applies to -o FILE.crg; -o %s writes %s", cmd,
+                      o->output,
+                      r.out_format == TIRENV_PROFILE_RDF ? "an RDF road" : "the CSV curve");
+        else
+            cli_error("%s: --crg-encoding applies to -o FILE.crg; without -o the CSV curve "
+                      "goes to standard output", cmd);
+        return CLI_EXIT_USAGE;
+    }
     tirenv_tire tire;
     tirenv_model *m = NULL;
     tirenv_profile *prof[CLI_MAX_TRACKS] = {NULL};
@@ -650,8 +667,7 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
         /* envelope's own two first: predict's table starts after them */
         {.name = "stream", .kind = CLI_FLAG, .dst = &e->stream},
         {.name = "detail", .kind = CLI_FLAG, .dst = &e->detail},
-        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = &e->encoding,
-         .parse = cli_parse_crg_encoding},
+        {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = e, .parse = parse_encoding},
         {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e->relative,
          .parse = cli_parse_relative_to},
         {.name = NULL},

@@ -304,22 +304,34 @@ static void print_report(const char *data, const tirenv_dataset *ds,
         printf(" (width %g)", s->even_width);
     printf(", target %s, loss over %s; ", tirenv_nn_target_form_name(s->target),
            tirenv_train_loss_name(s->loss));
+    /* Without control cases tirenv_train selects on the training error: say which. */
+    const char *on = cases[TIRENV_SPLIT_CONTROL] ? "control" : "the training error";
     if (r->members > 1) {
-        printf("the mean of the %zu restarts best on control (", r->members);
+        printf("the mean of the %zu restarts best on %s (", r->members, on);
         for (size_t k = 0; k < r->members; ++k)
             printf("%s%zu", k ? ", " : "", r->member_restart[k] + 1);
         printf(" of %zu)\n", s->restarts);
     } else {
-        printf("the restart best on control alone\n");
+        printf("the restart best on %s alone\n", on);
     }
-    printf("  best restart %zu of %zu: least control error at epoch %zu of %zu (stopped: %s, "
-           "%.3f s in)\n", r->restart + 1, s->restarts, r->best_epoch, r->epochs,
+    if (!cases[TIRENV_SPLIT_CONTROL])
+        printf("  no control cases: the training error, not a held-out one, chooses the weights "
+               "and stops the training\n");
+    printf("  best restart %zu of %zu: least %s error at epoch %zu of %zu (stopped: %s, "
+           "%.3f s in)\n", r->restart + 1, s->restarts,
+           cases[TIRENV_SPLIT_CONTROL] ? "control" : "training", r->best_epoch, r->epochs,
            tirenv_train_stop_name(r->stop), r->best_time);
     printf("  %zu epochs in all, wall time %.3f s\n", r->total_epochs, r->wall_time);
     printf("  %-12s %8s %10s %10s\n", "split", "points", "RMS mm", "max mm");
-    for (int sp = TIRENV_SPLIT_TRAIN; sp <= TIRENV_SPLIT_VALIDATION; ++sp)
+    for (int sp = TIRENV_SPLIT_TRAIN; sp <= TIRENV_SPLIT_VALIDATION; ++sp) {
+        if (r->error[sp].n == 0) {  /* an error over no points is no number */
+            printf("  %-12s %8zu %10s %10s\n", tirenv_split_name((tirenv_split)sp), (size_t)0,
+                   "-", "-");
+            continue;
+        }
         printf("  %-12s %8zu %10.4f %10.4f\n", tirenv_split_name((tirenv_split)sp),
                r->error[sp].n, r->error[sp].rms * 1e3, r->error[sp].max * 1e3);
+    }
 }
 
 /* --seeds: one line per seed, then the spread. */
@@ -338,8 +350,11 @@ static void print_seeds(const tirenv_dataset *ds, const tirenv_nn_seeds *r)
     printf("  over %zu seeds (%.2f s): median %.4f mm, quartiles %.4f to %.4f mm (IQR %.4f), "
            "range %.4f to %.4f mm\n", r->n_seeds, r->seconds, 1e3 * r->median, 1e3 * r->q1,
            1e3 * r->q3, 1e3 * (r->q3 - r->q1), 1e3 * r->min, 1e3 * r->max);
-    printf("  control cases, the same measure: median %.4f mm, quartiles %.4f to %.4f mm\n",
-           1e3 * r->control_median, 1e3 * r->control_q1, 1e3 * r->control_q3);
+    if (isnan(r->control_median)) /* tirenv_nn_seeds: NaN without control cases */
+        printf("  control cases, the same measure: none in the data set\n");
+    else
+        printf("  control cases, the same measure: median %.4f mm, quartiles %.4f to %.4f mm\n",
+               1e3 * r->control_median, 1e3 * r->control_q1, 1e3 * r->control_q3);
 }
 
 int cli_train_main(int argc, char *argv[])

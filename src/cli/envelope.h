@@ -12,6 +12,7 @@ typedef struct {
     int stream;                    /* read the --profile file as the tire rolls */
     int detail;                    /* the ring's tread_max_m and belt_contacts columns */
     tirenv_crg_encoding encoding;  /* -o X.crg: the effective road's encoding */
+    int have_encoding;             /* --crg-encoding given (refused without -o X.crg) */
     cli_relative_to relative;      /* h relative to the datum or to the road's local level */
 } cli_envelope_opts;
 

@@ -96,6 +96,18 @@ static int help_main(int argc, char *argv[])
     return cmd->main(2, sub_argv);
 }
 
+/* A full disk or a closed pipe on stdout must not pass for success, whatever printed there:
+ * a command, or the usage and version that main prints itself. */
+static int finish(int code)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        cli_error("error writing to standard output");
+        if (code == CLI_EXIT_OK)
+            code = CLI_EXIT_DATA;
+    }
+    return code;
+}
+
 int main(int argc, char *argv[])
 {
     static const struct option longopts[] = {
@@ -110,10 +122,10 @@ int main(int argc, char *argv[])
         switch (c) {
         case 'h':
             usage(stdout);
-            return CLI_EXIT_OK;
+            return finish(CLI_EXIT_OK);
         case 'V':
             printf("tirenv %s\n", TIRENV_VERSION);  /* tirenv/version.h */
-            return CLI_EXIT_OK;
+            return finish(CLI_EXIT_OK);
         default:
             usage(stderr);
             return CLI_EXIT_USAGE;
@@ -129,12 +141,5 @@ int main(int argc, char *argv[])
         cli_error("unknown command '%s'; 'tirenv help' lists them", argv[optind]);
         return CLI_EXIT_USAGE;
     }
-    int code = cmd->main(argc - optind, argv + optind);
-    /* A full disk or a closed pipe on stdout must not pass for success. */
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        cli_error("error writing to standard output");
-        if (code == CLI_EXIT_OK)
-            code = CLI_EXIT_DATA;
-    }
-    return code;
+    return finish(cmd->main(argc - optind, argv + optind));
 }

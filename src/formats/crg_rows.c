@@ -597,7 +597,9 @@ static int check_rows(const tirenv_crg *c, tirenv_diag *diag)
                             c->du, c->u0);
     if (rows != (double)c->nu)
         return tirenv_error(diag, TIRENV_EPARSE, c->src.name, end->line,
-                            "REFERENCE_LINE_END_U", "%.17g means %.0f rows from u = %.17g every "
+                            /* %.15g: a whole number of rows as digits up to 1e15, beyond
+                             * with an exponent (%.0f of 1e308 rows took the whole message) */
+                            "REFERENCE_LINE_END_U", "%.17g means %.15g rows from u = %.17g every "
                             "%.17g m, but the road data has %zu rows (truncated data, or a "
                             "wrong header?)", end->value, rows, c->u0, c->du, c->nu);
     return TIRENV_OK;

@@ -332,7 +332,7 @@ static int build(tirenv_nn_road *r, const tirenv_profile *p, const tirenv_nn_roa
                             "%g m", x_first, x_anchor);
     if (!(steps + 2 * m + 1 <= max_samples))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "spacing",
-                            "a profile %g m long at a spacing of %g m needs %.0f baseline "
+                            "a profile %g m long at a spacing of %g m needs %.15g baseline "
                             "points; expected at most %.0f (raise the spacing)",
                             x_last - x_first, ds, steps + 2 * m + 1, max_samples);
     const size_t n_g = (size_t)(steps + 2 * m) + 1, n_max = n_g + 3 * tirenv_profile_size(p);

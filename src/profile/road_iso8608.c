@@ -96,7 +96,7 @@ static int check(const tirenv_road_settings *s, size_t *n_out, tirenv_diag *diag
     const double steps = floor(s->length / s->dx + 1e-9);
     if (!(steps < TIRENV_ROAD_MAX_POINTS))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
-                            "%g m over %g m makes %.0f points, more than %d; raise dx",
+                            "%g m over %g m makes %.15g points, more than %d; raise dx",
                             s->dx, s->length, steps + 1, TIRENV_ROAD_MAX_POINTS);
     *n_out = (size_t)steps + 1;
     return TIRENV_OK;
@@ -144,6 +144,16 @@ int tirenv_road_iso8608(const tirenv_road_settings *s, tirenv_profile **out,
     for (size_t j = 0; j < n; j++) {
         p->x[j] = (double)j * s->dx;
         p->z[j] = creal(c[j]) - creal(c[0]);
+        /* Only the PSD's exponent reaches overflow: (n/n0)^-w at the band's lowest
+         * component passes 1e308 for w of some 300 and more. */
+        if (!isfinite(p->z[j])) {
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "waviness",
+                                  "%g makes the PSD %g m^3 at %g cycles/m, the band's "
+                                  "lowest component, and the heights overflow; expected a "
+                                  "smaller waviness", s->waviness,
+                                  tirenv_road_psd(s, k_lo * dn), k_lo * dn);
+            goto done;
+        }
     }
     if (!(status = tirenv_profile__finish(p, diag))) {
         *out = p;

@@ -486,23 +486,36 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
     size_t n_train = 0;
     for (size_t i = 0; i < facts->ds->n; ++i)
         n_train += facts->ds->cases[i].split == TIRENV_SPLIT_TRAIN;
+    /* Without control cases tirenv_train selects and stops on the training error, and an
+     * error over the control split's no points is no number: the text says so. */
+    const int held = nn->error[TIRENV_SPLIT_CONTROL].n > 0;
+    char errors[160];
+    if (held)
+        snprintf(errors, sizeof errors, "train, control and validation cases %.2f, %.2f and "
+                 "%.2f mm", 1e3 * nn->error[0].rms, 1e3 * nn->error[1].rms,
+                 1e3 * nn->error[2].rms);
+    else
+        snprintf(errors, sizeof errors, "train and validation cases %.2f and %.2f mm",
+                 1e3 * nn->error[0].rms, 1e3 * nn->error[2].rms);
     fprintf(fp, "**Empirical model (nn)**, 4-8-1 (input %s, target %s, loss over %s), trained "
-                "on the training cases with early stopping on the control cases; each model is "
-                "the mean of the %zu of %zu restarts best on control. With %zu training curves "
+                "on the training cases with %s; each model is "
+                "the mean of the %zu of %zu restarts best on %s. With %zu training curves "
                 "the result depends on the seed, so it was trained with %zu seeds (%lu to "
                 "%lu, %.1f s in all; each seed's errors in `nn-seeds.csv`): validation error "
                 "(the mean over the validation cases of each case's RMS) median %.2f mm, "
                 "quartiles %.2f to %.2f mm, range %.2f to %.2f mm. The network in the tables "
                 "and plots, `nn.json`, is seed %lu, the one nearest the median: %zu epochs "
-                "in %.2f s; RMS error over the points of the train, control and validation "
-                "cases %.2f, %.2f and %.2f mm.\n\n",
+                "in %.2f s; RMS error over the points of the %s.\n\n",
             tirenv_nn_input_form_name(ts.input), tirenv_nn_target_form_name(ts.target),
-            tirenv_train_loss_name(ts.loss), nn->members, ts.restarts,
+            tirenv_train_loss_name(ts.loss),
+            held ? "early stopping on the control cases"
+                 : "the training error choosing the weights and stopping the training (the "
+                   "data set has no control cases)",
+            nn->members, ts.restarts, held ? "control" : "the training error",
             n_train, seeds->n_seeds, seeds->seed[0],
             seeds->seed[seeds->n_seeds - 1], seeds->seconds, 1e3 * seeds->median,
             1e3 * seeds->q1, 1e3 * seeds->q3, 1e3 * seeds->min, 1e3 * seeds->max,
-            seeds->seed[seeds->median_seed], nn->total_epochs, nn->wall_time,
-            1e3 * nn->error[0].rms, 1e3 * nn->error[1].rms, 1e3 * nn->error[2].rms);
+            seeds->seed[seeds->median_seed], nn->total_epochs, nn->wall_time, errors);
     fprintf(fp, "## The paper's proposed workflow: a network trained on the physical model\n\n"
                 "The paper proposes to train the network on curves of the physical model "
                 "instead of rig runs. Here: %zu curves of the identified springs model over a "

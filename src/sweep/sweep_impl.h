@@ -67,6 +67,13 @@ int tirenv_sweep__read_text(const char *path, size_t max, char **out, size_t *n,
 int tirenv_sweep__write_text(const char *path, const char *text, size_t len,
                              tirenv_diag *diag);
 
+/* Whether a case's files are whole, as a run wrote them: the curve a CSV the curve reader
+ * takes with the x_N grid's points, and the log (NULL: none) ending with its line's newline.
+ * what says where the files came from, for the message ("kept from an interrupted run").
+ * A file that is not is TIRENV_EPARSE naming it, the reason and what to do. */
+int tirenv_sweep__check_case(const char *curve, const char *log, const char *what,
+                             const char *remedy, tirenv_diag *diag);
+
 /* The state of a sweep's target directory dir: 0 absent or empty (write it), 1 already this
  * sweep, complete (its cases.csv, and sweep.txt and tire.tir equal to spec and tire), or
  * minus an error status (anything else is there; diag says so). */

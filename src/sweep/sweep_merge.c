@@ -7,6 +7,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -295,6 +296,14 @@ static int merge_into(const char *stage, const part *parts, size_t n, size_t m,
             if (row_files(parts[k].case_rows[j], &log, &log_len, &curve, &curve_len) != 0)
                 status = tirenv_error(diag, TIRENV_EPARSE, parts[k].dir, j + 1, "cases.csv",
                                       "row %zu does not name its files as a sweep does", j + 1);
+            char c_path[1200], l_path[1200];
+            snprintf(c_path, sizeof c_path, "%s/%.*s", parts[k].dir, (int)curve_len, curve);
+            snprintf(l_path, sizeof l_path, "%s/%.*s", parts[k].dir, (int)log_len, log);
+            if (!status)
+                status = tirenv_sweep__check_case(
+                    c_path, log_len ? l_path : NULL, "in a part to merge",
+                    "run that part again (the same command with its --shard), or copy it "
+                    "whole", diag);
             if (!status)
                 status = bring(parts[k].dir, log, log_len, stage, diag);
             if (!status)

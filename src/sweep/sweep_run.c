@@ -9,11 +9,13 @@
 #include <fcntl.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "tirenv/curve.h"
 #include "tirenv/outfile.h"
 #include "tirenv/tir.h"
 #include "tirenv/parallel.h"
@@ -173,6 +175,47 @@ static void case_path(const sweep_run *r, const char *sub, size_t i, char *buf, 
     char name[32];
     tirenv_sweep__case_name(r->s, i, name);
     snprintf(buf, size, "%s/%s/%s.csv", r->dir, sub, name);
+}
+
+/* Case files are written whole or not at all (tirenv_outfile, fsync before rename), so one
+ * that is not came from elsewhere: a part copied from a node in part, a file edited or
+ * damaged. A resume or a merge that took it would call complete a data set holding it. */
+int tirenv_sweep__check_case(const char *curve, const char *log, const char *what,
+                             const char *remedy, tirenv_diag *diag)
+{
+    tirenv_curve c = {0};
+    int status = tirenv_curve_read_csv(curve, &c, diag);
+    const tirenv_import_settings g = tirenv_import_default();
+    const size_t n = (size_t)floor((g.xN_to - g.xN_from) / g.dxN + 1e-9) + 1;
+    if (!status && c.n != n)
+        status = tirenv_error(diag, TIRENV_EPARSE, curve, 0, "x_N",
+                              "%zu points, where a sweep's curve has the %zu of the x_N grid "
+                              "%g to %g every %g", c.n, n, g.xN_from, g.xN_to, g.dxN);
+    tirenv_curve_free(&c);
+    if (!status && log) {
+        FILE *fp = fopen(log, "rb");
+        int last = EOF;
+        if (fp && fseek(fp, -1, SEEK_END) == 0)
+            last = fgetc(fp);
+        if (fp)
+            fclose(fp);
+        if (last != '\n')
+            status = tirenv_error(diag, TIRENV_EPARSE, log, 0, "",
+                                  fp ? "empty, or its last line ends without a newline (cut "
+                                       "short)"
+                                     : "cannot open: %s", strerror(errno));
+    }
+    if (!status)
+        return TIRENV_OK;
+    if (diag) {
+        char why[sizeof diag->message];
+        memcpy(why, diag->message, sizeof why);
+        /* Each part bounded to fit the message; the file is named apart, in diag->file. */
+        snprintf(diag->message, sizeof diag->message,
+                 "%s, %.40s, is not a whole case file: %.250s; %.150s",
+                 diag->file[0] ? "this file" : "a case file", what, why, remedy);
+    }
+    return TIRENV_EPARSE;
 }
 
 /* The model's own curve at the points of the import's x_N grid (what the import of a
@@ -514,18 +557,21 @@ static int find_todo(sweep_run *r, tirenv_diag *diag)
     r->todo = malloc((part ? part : 1) * sizeof *r->todo);
     if (!r->todo)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    char path[1200];
+    char path[1200], log[1200];
     for (size_t i = r->s->shard; i < r->n; i += r->s->shards) {
         case_path(r, "curves", i, path, sizeof path);
-        int done = exists_regular(path);
-        if (done && r->s->rig) {
-            case_path(r, "logs", i, path, sizeof path);
-            done = exists_regular(path);
-        }
-        if (done)
+        case_path(r, "logs", i, log, sizeof log);
+        const int done = exists_regular(path) && (!r->s->rig || exists_regular(log));
+        if (done) {
+            const int status = tirenv_sweep__check_case(
+                path, r->s->rig ? log : NULL, "kept from an interrupted run",
+                "remove it and run the same command again to run that case", diag);
+            if (status)
+                return status;
             ++r->resumed;
-        else
+        } else {
             r->todo[r->n_todo++] = i;
+        }
     }
     return TIRENV_OK;
 }

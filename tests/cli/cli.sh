@@ -20,6 +20,15 @@ check "'tirenv help' documents exit codes 1, 2 and 3" \
     'grep -q "^  1  misuse" out && grep -q "^  2  bad data" out && grep -q "^  3  numerical" out'
 run "$bin" --version
 check "--version prints the version, exit 0" '[ $rc -eq 0 ] && grep -q "^tirenv [0-9]" out'
+# Standard output that cannot be written (a full disk: /dev/full) is an error for what main
+# prints itself as for what a command prints.
+for args in "--help" "--version" "help" "flat --help"; do
+    # shellcheck disable=SC2086 # split on purpose
+    "$bin" $args >/dev/full 2>err
+    rc=$?
+    check "'tirenv $args' into a full disk: exit 2, said on stderr" \
+        '[ $rc -eq 2 ] && grep -q "error writing to standard output" err'
+done
 run "$bin"
 check "no command: usage on stderr, exit 1" '[ $rc -eq 1 ] && [ ! -s out ] && grep -q usage err'
 run "$bin" frobnicate

@@ -119,6 +119,34 @@ run "$bin" convert --profile u.crg --track -1.4 -o u.csv
 check "... with --dx 0.05: resampled on 7 rows, the same heights across 3 m" \
     '[ $ok -eq 0 ] && [ $rc -eq 0 ] && [ $(grep -vc "^#" u.csv) -eq 8 ] &&
      grep -q "^0.2,0.0150*1*$" u.csv && grep -aq "LONG_SECTION_V_LEFT      = 1.5" u.crg'
+# An option that changes nothing in what this conversion writes is refused, not ignored: the
+# copy of every long section keeps the input's rows and widths; CSV and RDF outputs have no
+# encoding, increment, width or padding; --side and --crg-nan-mode read one input format.
+echo keep >kept.crg
+for args in "--profile $crg/handmade_straight.crg --dx 0.25 -o kept.crg" \
+    "--profile $crg/handmade_straight.crg --half-width 3 -o kept.crg" \
+    "--profile $crg/handmade_straight.crg --track 0 --pad 1 -o kept.crg" \
+    "--profile uneven.csv --dx 0.05 -o kept.csv" "--profile uneven.csv --pad 1 -o kept.rdf" \
+    "--profile uneven.csv --crg-encoding lrfi -o kept.rdf" \
+    "--profile uneven.csv --half-width 1 -o kept.csv" \
+    "--profile uneven.csv --side left --dx 0.05 -o kept.crg" \
+    "--profile $rdf/plateau.rdf --crg-nan-mode keep -o kept.csv"; do
+    run "$bin" convert $args
+    check "convert $(echo "$args" | sed "s|$crg/||;s|$rdf/||"): exit 1 naming it, the old file kept" \
+        '[ $rc -eq 1 ] && grep -q "applies to\|copied to a .crg" err && [ "$(cat kept.crg)" = keep ] &&
+         [ ! -e kept.csv ] && [ ! -e kept.rdf ]'
+done
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track 0 --dx 0.25 --half-width 3 \
+    -o one.crg
+check "... --dx and --half-width with --track: one track resampled, 89 rows 6 m wide" \
+    '[ $rc -eq 0 ] && grep -aq "REFERENCE_LINE_INCREMENT = 0.25" one.crg &&
+     grep -aq "LONG_SECTION_V_LEFT      = 3" one.crg'
+run "$bin" convert --profile uneven.csv --dx 1e-9 -o big.crg
+check "--dx 1e-9 over 0.3 m: 3e8 rows refused before any is written (exit 2), no file" \
+    '[ $rc -eq 2 ] && grep -q "too many" err && no_file big.crg'
+run "$bin" convert --profile "$crg/handmade_straight.crg" --track 0 --dx 1e-7 -o big.crg
+check "... and from a .crg track: 2.2e8 rows over 22 m refused, no file" \
+    '[ $rc -eq 2 ] && grep -q "too many" err && no_file big.crg'
 printf 'x_m,z_m\n0,0\n1,x\n' >bad.csv
 run "$bin" convert --profile bad.csv -o b.rdf
 check "a malformed CSV: exit 2 naming file:line, no file" \

@@ -29,6 +29,15 @@ run "$bin" train --data "$set_data" --seeds 3 --restarts 2 --epochs 40 -o med.js
 check "train --seeds 3: a line per seed, the spread, the median seed written" \
     '[ $rc -eq 0 ] && [ $(grep -cE "^ +[123] +[0-9.]+ +[0-9.]+ " out) -eq 3 ] &&
      grep -q "over 3 seeds" out && grep -q "<- nearest the median" out && [ -s med.json ]'
+# A data set without control cases: the training error selects, and the report says so
+# rather than printing an error over no points (0.0000) or the seeds' spread on it (nan).
+cp -r "$set_data" nocontrol
+sed 's/,control,/,train,/' "$set_data/cases.csv" >nocontrol/cases.csv
+run "$bin" train --data nocontrol --seeds 2 --restarts 1 --epochs 5
+check "train without control cases: said, '-' for the empty split, no nan" \
+    '[ $rc -eq 0 ] && grep -q "best on the training error alone" out &&
+     grep -q "no control cases" out && grep -qE "^  control +0 +- +-$" out &&
+     grep -q "control cases, the same measure: none" out && ! grep -qi nan out'
 run "$bin" train --data "$set_data" --input odd -o x.json
 check "train --input odd: exit 1, no file" '[ $rc -eq 1 ] && grep -q "paper or even" err && no_file x.json'
 run "$bin" train --data "$set_data" --ensemble 0 -o x.json

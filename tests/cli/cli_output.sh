@@ -180,4 +180,16 @@ check "ride --out-dir --series: the run's series too" \
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --series
 check "ride --series without --out-dir: exit 1" '[ $rc -eq 1 ] && grep -q -- "--out-dir" err'
 
+# --crg-encoding is how an effective road goes into a .crg: with a CSV curve or an RDF road it
+# would change nothing, and is refused rather than ignored.
+echo keep >enc.csv
+for o in "-o enc.csv" "-o enc.rdf" ""; do
+    run "$bin" $rigid --crg-encoding lrfi $o
+    check "envelope --crg-encoding lrfi ${o:-to standard output}: exit 1, nothing written" \
+        '[ $rc -eq 1 ] && grep -q "crg-encoding applies to -o FILE.crg" err && [ ! -s out ] &&
+         [ "$(cat enc.csv)" = keep ] && [ ! -e enc.rdf ]'
+done
+run "$bin" $rigid --crg-encoding lrfi -o enc.crg
+check "... and with -o FILE.crg: written as LRFI" '[ $rc -eq 0 ] && grep -aq "^#:LRFI" enc.crg'
+
 clilib_done

@@ -35,9 +35,31 @@ run "$bin" sweep merge part3 part1 part0 part2 -o merged
 check "four shards merged equal one run, byte for byte" '[ $rc -eq 0 ] && diff -r one merged >&2'
 run "$bin" sweep merge part0 part1 part2 -o merged2
 check "merge names a missing shard" '[ $rc -eq 2 ] && grep -q "missing: 3" err && [ ! -e merged2 ]'
+# A case file cut short (a part copied in part from a node) is refused, naming it, not merged.
+cp part1/curves/c0001.csv c0001.whole
+head -n 40 c0001.whole >part1/curves/c0001.csv
+run "$bin" sweep merge part0 part1 part2 part3 -o merged4
+check "merge refuses a part's curve cut short, naming it" \
+    '[ $rc -eq 2 ] && grep -q "part1/curves/c0001.csv.*not a whole case file" err &&
+     [ ! -e merged4 ]'
+cp c0001.whole part1/curves/c0001.csv
 rm -f part2/cases.csv
 run "$bin" sweep merge part0 part1 part2 part3 -o merged3
 check "merge refuses an incomplete shard" '[ $rc -eq 2 ] && grep -q "not complete" err'
+
+# A resumed run keeps what an interrupted one wrote, but not a file that is not whole: it is
+# named; removed, the case runs again and the set is the one run's, byte for byte.
+cp -r one again.partial
+rm again.partial/cases.csv
+head -c 200 one/curves/c0005.csv >again.partial/curves/c0005.csv
+run "$bin" sweep $grid -o again
+check "a resume refuses a kept curve cut short, naming it" \
+    '[ $rc -eq 2 ] && grep -q "c0005.csv.*kept from an interrupted run" err &&
+     [ ! -e again ] && [ -d again.partial ]'
+rm again.partial/curves/c0005.csv
+run "$bin" sweep $grid -o again
+check "... removed, its case runs again: the bytes of one run" \
+    '[ $rc -eq 0 ] && grep -q "1 cases run, 23 kept" err && diff -r one again >&2'
 
 run "$bin" sweep --lengths 0.1 --heights 0.05 --loads 9000,13000 --model springs -o loads
 check "--loads: each case's contact length is the model's at its load, longer at more load" \

@@ -921,6 +921,9 @@ static const malformed bad[] = {
      "means 5 rows from u = 0 every 0.5 m, but the road data has 4 rows"},
     {"= 1.5\n", "= 1.7\n", TIRENV_EPARSE, 6, 0, "REFERENCE_LINE_END_U",
      "expected a whole number"},
+    /* a row count of 301 digits took the message, its reason cut off */
+    {"= 1.5\n", "= 1e300\n", TIRENV_EPARSE, 6, 0, "REFERENCE_LINE_END_U",
+     "means 2e+300 rows from u = 0 every 0.5 m, but the road data has 4 rows (truncated"},
     {"LONG_SECTION_V_LEFT = 1\n", "LONG_SECTION_V_LEFT = 2\n", TIRENV_EPARSE, 8, 0,
      "LONG_SECTION_V_LEFT", "long sections end at v = 1, not at 2"},
     {"REFERENCE_LINE_END_U = 1.5\n", "REFERENCE_LINE_END_U = 1.5\nREFERENCE_LINE_END_X = 1.6\n",

@@ -225,9 +225,11 @@ static void test_errors(void **state)
         {road('C', 0.05, 0.01, 1), "length"},    /* dn = 12.5 cycles/m: nothing in the band */
         {road('C', 100, 0.01, 1), "band"},
         {road('C', 100, 0.01, 1), "waviness"},
+        {road('C', 10, 0.01, 1), "waviness"},    /* the PSD overflows: NaN heights */
     };
     cases[7].s.n_min = 3.0;
     cases[8].s.waviness = -1;
+    cases[9].s.waviness = 1e308;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         tirenv_profile *p = (tirenv_profile *)&cases; /* must come back NULL */
         tirenv_diag diag;
@@ -237,6 +239,13 @@ static void test_errors(void **state)
         assert_null(p);
         assert_string_equal(diag.field, cases[i].field);
     }
+    /* A count of 1e303 points in digits filled the message, its advice cut off. */
+    tirenv_road_settings s = road('C', 1e300, 0.001, 1);
+    tirenv_profile *p = NULL;
+    tirenv_diag diag;
+    assert_int_equal(tirenv_road_iso8608(&s, &p, &diag), TIRENV_EINVAL);
+    assert_non_null(strstr(diag.message, "makes 1e+303 points, more than"));
+    assert_non_null(strstr(diag.message, "raise dx"));
 }
 
 /* A generated road is a profile like any other: the cam and rigid models run over it. The
