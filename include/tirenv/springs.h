@@ -51,7 +51,7 @@ void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag);
  * contact reaction p_i (N). */
 void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double p[]);
 
-/* The stiffnesses c_r and c_b of par (the rest as given) identified on a reference model's
+/* The stiffnesses c_r and c_b of par (the rest as given, no sidewall: k_s and F_s0 set to 0) identified on a reference model's
  * flat ground at n loads (2 to 64): load[i] (N), its deflection[i] (m) and contact_length[i]
  * (m). The springs model then deflects as the reference does and touches as much ground
  * (least squares in log load at the reference's deflections and in log contact length there,
@@ -60,6 +60,17 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
 int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double load[],
                             const double deflection[], const double contact_length[],
                             tirenv_diag *diag);
+
+/* The same with the sidewall in series (docs/models.md sections 4.9 and 14.1): c_r, c_b,
+ * SIDEWALL_STIFFNESS k_s and SIDEWALL_PRELOAD F_s0 of par (the rest as given) identified on n
+ * loads (3 to 64, load and deflection ascending) by least squares of the log deflection and
+ * the log contact length at the reference's loads: golden sections nested over c_b/c_r in
+ * [1e-4, 1] rad^2, c_r, F_s0 in [0, the largest load] and 1/k_s, on tables of the elements'
+ * flat ground. TIRENV_EINVAL for bad targets, TIRENV_ERANGE if no sidewall is wanted (the
+ * elements alone deflect at least as much); the model's errors otherwise. */
+int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const double load[],
+                                     const double deflection[],
+                                     const double contact_length[], tirenv_diag *diag);
 
 /* The tip LCP on its own: K w = p, w >= d, p >= 0, p.(w - d) = 0, with K the tridiagonal
  * stiffness of n elements (k_r N/m on the diagonal, k_ir N/m between neighbours, ends free).
