@@ -66,8 +66,8 @@ int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double l
  * loads (3 to 64, load and deflection ascending) by least squares of the log deflection and
  * the log contact length at the reference's loads: golden sections nested over c_b/c_r in
  * [1e-4, 1] rad^2, c_r, F_s0 in [0, the largest load] and 1/k_s, on tables of the elements'
- * flat ground. TIRENV_EINVAL for bad targets, TIRENV_ERANGE if no sidewall is wanted (the
- * elements alone deflect at least as much); the model's errors otherwise. */
+ * flat ground. TIRENV_EINVAL for bad targets; the model's errors otherwise. Targets that
+ * want no sidewall get a stiff one (k_s far above the elements' stiffness). */
 int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const double load[],
                                      const double deflection[],
                                      const double contact_length[], tirenv_diag *diag);

@@ -315,10 +315,6 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
     x.F_s0 = F_s0;
     const double c = golden(ss_compliance, &x, 0, 2 * deflection[n - 1] / (load[n - 1] - F_s0),
                             NULL);
-    if (!(c > 0))
-        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "SIDEWALL_STIFFNESS",
-                            "the elements alone deflect at least as much as the reference "
-                            "(c_b/c_r %g rad^2): no sidewall softens them", exp(log_beta));
     par->c_r = exp(log_c_r);
     par->c_b = par->c_r * exp(log_beta);
     par->k_s = 1 / c;
