@@ -29,7 +29,9 @@ const tirenv_springs_params *tirenv_springs_params_of(const tirenv_springs *s);
 size_t tirenv_springs_size(const tirenv_springs *s);
 const double *tirenv_springs_theta(const tirenv_springs *s);
 
-/* Hub forces (N) with the centre at (x, z) (m) over a profile: casts the rays, solves the tip
+/* Hub forces (N) with the centre at (x, z) (m) over a profile (the elements' centre: with a
+ * sidewall, SIDEWALL_STIFFNESS, tirenv/model.h puts the hub below it, docs/models.md section
+ * 4.9; here it is left out): casts the rays, solves the tip
  * contact exactly (with CONTACT 'continuous', the default, the QP of a tread between the
  * elements that meets every ground vertex; with 'rays' the paper's LCP along the rays), sums
  * eq. 1. dfz_dz (N/m, may be NULL) is the exact derivative of F_z on the current piece (active
