@@ -131,6 +131,45 @@ static void test_curve_unchanged(void **state)
     tirenv_profile_free(step);
 }
 
+/* A load changed on a model already set (tirenv_model_set_load) moves the hub with the
+ * sidewall's deflection: its points are those of a model set at the new load, h to the
+ * equilibrium's tolerance (section 11.3: 1e-9 m bounds it here) and z less the new u; and a
+ * saved state restored gives the same bits again. */
+static void test_load_change_and_state(void **state)
+{
+    (void)state;
+    const tirenv_tire t1 = tire_of(1);
+    tirenv_profile *cleat = tirenv_profile_cleat(0.1234, 0.0567);
+    tirenv_model *a = tirenv_model_alloc(tirenv_model_springs, &t1);
+    tirenv_model *b = tirenv_model_alloc(tirenv_model_springs, &t1);
+    tirenv_diag d;
+    const double G1 = 8765.4, G2 = 15432.1, x = -0.0876;
+    assert_int_equal(tirenv_model_set(a, cleat, G1, &d), TIRENV_OK);
+    tirenv_point p1, pa, pb;
+    assert_int_equal(tirenv_model_eval(a, x, &p1, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_set_load(a, G2, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_set(b, cleat, G2, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_eval(a, x, &pa, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_eval(b, x, &pb, &d), TIRENV_OK);
+    assert_near(pa.h, pb.h, 1e-9, 0);
+    assert_near(pa.z, pb.z, 1e-9, 0);
+    assert_true(p1.z - pa.z > sidewall_u(G2) - sidewall_u(G1)); /* the sidewall gave too */
+    const size_t n = tirenv_model_state_size(a);
+    unsigned char *buf = malloc(n);
+    assert_int_equal(tirenv_model_state_save(a, buf, n, &d), TIRENV_OK);
+    tirenv_point q1, q2;
+    assert_int_equal(tirenv_model_eval(a, x + 0.0123, &q1, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_set(b, cleat, G1, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_state_restore(b, buf, n, &d), TIRENV_OK);
+    assert_int_equal(tirenv_model_eval(b, x + 0.0123, &q2, &d), TIRENV_OK);
+    assert_bits_equal(q2.z, q1.z);
+    assert_bits_equal(q2.h, q1.h);
+    free(buf);
+    tirenv_model_free(a);
+    tirenv_model_free(b);
+    tirenv_profile_free(cleat);
+}
+
 /* The keys: checked (finite, >= 0, a preload only with a stiffness), read and written back,
  * and in the file's units. */
 static void test_keys(void **state)
@@ -270,6 +309,7 @@ int main(void)
         cmocka_unit_test(test_flat_is_elements_shifted),
         cmocka_unit_test(test_height_given),
         cmocka_unit_test(test_curve_unchanged),
+        cmocka_unit_test(test_load_change_and_state),
         cmocka_unit_test(test_keys),
         cmocka_unit_test(test_identify),
     };
