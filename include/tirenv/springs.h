@@ -65,8 +65,9 @@ int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double l
 
 /* The same with the sidewall in series (docs/models.md sections 4.9 and 14.1): c_r, c_b,
  * SIDEWALL_STIFFNESS k_s and SIDEWALL_PRELOAD F_s0 of par (the rest as given) identified on n
- * loads (3 to 64, load and deflection ascending) by least squares of the log deflection and
- * the log contact length at the reference's loads: golden sections nested over c_b/c_r in
+ * loads (3 to 64, load and deflection ascending) minimising the sum of the 8th powers of the
+ * log deflection's and log contact length's residuals at the reference's loads (near the
+ * largest of them): golden sections nested over c_b/c_r in
  * [1e-4, 1] rad^2, c_r, F_s0 in [0, the largest load] and 1/k_s, on tables of the elements'
  * flat ground. TIRENV_EINVAL for bad targets; the model's errors otherwise. Targets that
  * want no sidewall get a stiff one (k_s far above the elements' stiffness). */

@@ -230,11 +230,11 @@ static void test_keys(void **state)
 }
 
 /* Identified on the flat ground of a springs model with a sidewall, from other start values,
- * the identified model deflects as that one does and touches as much ground: within 0.5 %
- * (measured 0.31 %, at the lightest load); on the elements' own flat ground, which wants no
- * sidewall, within 1 % (measured 0.51 %) with a stiff one. Not exact: the search interpolates
- * tables linear in the logs between deflections 5.9 % apart, and nests golden sections, which
- * the preload's kink and a valley flat in it (a stiff sidewall) leave short of the optimum. */
+ * the identified model deflects as that one does and touches as much ground: within 0.75 %
+ * (measured 0.44 %); on the elements' own flat ground, which wants no sidewall, within 1 %
+ * (measured 0.41 %) with a stiff one. Not exact: the search interpolates tables linear in the
+ * logs between deflections 5.9 % apart, and nests golden sections, which the preload's kink
+ * and a valley flat in it (a stiff sidewall) leave short of the optimum. */
 static void test_identify(void **state)
 {
     (void)state;
@@ -266,8 +266,8 @@ static void test_identify(void **state)
         assert_int_equal(tirenv_model_flat(m, G[i], &f, &d), TIRENV_OK);
         print_message("%.0f N: deflection %+.3f %%, contact length %+.3f %%\n", G[i],
                       100 * (f.deflection / defl[i] - 1), 100 * (f.contact_length / l[i] - 1));
-        assert_near(f.deflection, defl[i], 0, 0.005);
-        assert_near(f.contact_length, l[i], 0, 0.005);
+        assert_near(f.deflection, defl[i], 0, 0.0075);
+        assert_near(f.contact_length, l[i], 0, 0.0075);
     }
     tirenv_model_free(m);
     /* Refusals: too few loads; loads not ascending. */

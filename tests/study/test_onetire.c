@@ -269,10 +269,10 @@ static void test_derived_pairs(void **state)
  * cam's laws (scripts/ring-on-laws.py), and the springs model with a sidewall in series
  * (section 4.9) identified on that ring (tirenv identify --write-springs); its data set is
  * made by its cam, so nothing is derived. At 0.5 to 1.5 FNOMIN, measured, deflection /
- * contact length: cam - ring 1.02 / 1.68 %, springs - ring 2.38 / 4.29 %, springs - cam
- * 2.50 / 5.87 %. The sidewall brought the springs model's deflection from 14.72 % (the
- * elements alone stiffen with the load as their patch grows) to 2.38 %; the contact length
- * is the elements' alone, which no sidewall changes, and misses the cam's by 5.87 % at 6 kN
+ * contact length: cam - ring 1.02 / 1.68 %, springs - ring 2.90 / 3.89 %, springs - cam
+ * 3.02 / 5.48 %. The sidewall brought the springs model's deflection from 14.72 % (the
+ * elements alone stiffen with the load as their patch grows) to 2.90 %; the contact length
+ * is the elements' alone, which no sidewall changes, and misses the cam's by 5.48 % at 6 kN
  * (the elements' patch grows more slowly with the load than TNO's contact law). Bounded at
  * the measured figures plus half a per cent. (With a linear carcass the ring missed TNO's
  * laws by 8.5 % at best, and the file's earlier ring by 42 % in contact length.) */
@@ -291,7 +291,7 @@ static void test_205_pairs(void **state)
         loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
     pair_miss e[3];
     pairs("205/60R15", &t, N_LOADS, loads, e);
-    static const double bound[3][2] = {{0.0288, 0.0479}, {0.0152, 0.0218}, {0.0300, 0.0637}};
+    static const double bound[3][2] = {{0.0340, 0.0439}, {0.0152, 0.0218}, {0.0352, 0.0598}};
     for (size_t k = 0; k < 3; k++) {
         assert_true(e[k].defl <= bound[k][0]);
         assert_true(e[k].l <= bound[k][1]);
