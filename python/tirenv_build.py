@@ -45,7 +45,7 @@ char *tirenv_diag_format(const tirenv_diag *diag, char *buf, size_t n);
 typedef enum { TIRENV_EQ_NEWTON = 0, TIRENV_EQ_SECANT, TIRENV_EQ_BRENT } tirenv_eq_method;
 typedef enum { TIRENV_SPRINGS_CONTINUOUS = 0, TIRENV_SPRINGS_RAYS = 1 } tirenv_springs_contact;
 typedef struct { double R0; double c_r; double c_b; double phi; double dphi;
-                 tirenv_springs_contact contact; } tirenv_springs_params;
+                 tirenv_springs_contact contact; double k_s; double F_s0; } tirenv_springs_params;
 typedef struct { tirenv_springs_params springs; ...; } tirenv_tire;
 tirenv_tire tirenv_tire_default(void);
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);

@@ -29,7 +29,9 @@ const tirenv_springs_params *tirenv_springs_params_of(const tirenv_springs *s);
 size_t tirenv_springs_size(const tirenv_springs *s);
 const double *tirenv_springs_theta(const tirenv_springs *s);
 
-/* Hub forces (N) with the centre at (x, z) (m) over a profile: casts the rays, solves the tip
+/* Hub forces (N) with the centre at (x, z) (m) over a profile (the elements' centre: with a
+ * sidewall, SIDEWALL_STIFFNESS, tirenv/model.h puts the hub below it, docs/models.md section
+ * 4.9; here it is left out): casts the rays, solves the tip
  * contact exactly (with CONTACT 'continuous', the default, the QP of a tread between the
  * elements that meets every ground vertex; with 'rays' the paper's LCP along the rays), sums
  * eq. 1. dfz_dz (N/m, may be NULL) is the exact derivative of F_z on the current piece (active
@@ -51,7 +53,7 @@ void tirenv_springs_refusal(const tirenv_springs *s, tirenv_diag *diag);
  * contact reaction p_i (N). */
 void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double p[]);
 
-/* The stiffnesses c_r and c_b of par (the rest as given) identified on a reference model's
+/* The stiffnesses c_r and c_b of par (the rest as given, no sidewall: k_s and F_s0 set to 0) identified on a reference model's
  * flat ground at n loads (2 to 64): load[i] (N), its deflection[i] (m) and contact_length[i]
  * (m). The springs model then deflects as the reference does and touches as much ground
  * (least squares in log load at the reference's deflections and in log contact length there,
@@ -60,6 +62,18 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
 int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double load[],
                             const double deflection[], const double contact_length[],
                             tirenv_diag *diag);
+
+/* The same with the sidewall in series (docs/models.md sections 4.9 and 14.1): c_r, c_b,
+ * SIDEWALL_STIFFNESS k_s and SIDEWALL_PRELOAD F_s0 of par (the rest as given) identified on n
+ * loads (3 to 64, load and deflection ascending) minimising the sum of the 8th powers of the
+ * log deflection's and log contact length's residuals at the reference's loads (near the
+ * largest of them): golden sections nested over c_b/c_r in
+ * [1e-4, 1] rad^2, c_r, F_s0 in [0, the largest load] and 1/k_s, on tables of the elements'
+ * flat ground. TIRENV_EINVAL for bad targets; the model's errors otherwise. Targets that
+ * want no sidewall get a stiff one (k_s far above the elements' stiffness). */
+int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const double load[],
+                                     const double deflection[],
+                                     const double contact_length[], tirenv_diag *diag);
 
 /* The tip LCP on its own: K w = p, w >= d, p >= 0, p.(w - d) = 0, with K the tridiagonal
  * stiffness of n elements (k_r N/m on the diagonal, k_ir N/m between neighbours, ends free).

@@ -45,6 +45,11 @@ typedef struct {
     double phi;            /* SEGMENT_ANGLE: width of the tread segment, rad */
     double dphi;           /* ELEMENT_ANGLE: angle between adjacent radial elements, rad */
     tirenv_springs_contact contact; /* CONTACT: 'continuous' (default, 0) or 'rays' */
+    double k_s;            /* SIDEWALL_STIFFNESS: a sidewall spring in series between the rim
+                            * and the elements' centre, N/m; 0: none, the paper's model
+                            * (docs/models.md section 4.9) */
+    double F_s0;           /* SIDEWALL_PRELOAD: the load the sidewall carries before it gives,
+                            * N: its deflection is max(0, F - F_s0)/k_s; 0: linear */
 } tirenv_springs_params;
 
 /* How the ring's tread meets the ground ([ENVELOPING_RING] CONTACT, docs/models.md section

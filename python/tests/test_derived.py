@@ -47,3 +47,23 @@ def test_foreign_tir_without_fnomin_refuses_the_springs_model(tmp_path):
         tirenv.Model("springs", tire)
     assert e.value.field == "FNOMIN"
     tirenv.Model("point", tire)  # needs no enveloping section
+
+
+def test_sidewall_read_and_used_as_the_cli(cli, source_dir):
+    """The 205/60R15's springs model has a sidewall in series (docs/models.md section 4.9):
+    Python reads its keys with the C reader and its flat ground is the CLI's, hub height,
+    deflection and stiffness included, to the printed digit."""
+    path = os.path.join(source_dir, "data", "tires", "205-60R15-mfswift.tir")
+    tire = tirenv.Tire(path)
+    assert tire["SIDEWALL_STIFFNESS"] == 598000 and tire["SIDEWALL_PRELOAD"] == 2530
+    rc, out, err = run_cli(cli, "flat", "--csv", "--model", "springs", "--tire", path)
+    assert rc == 0, err
+    m = tirenv.Model("springs", tire)
+    for r in [line.split(",") for line in out.splitlines()[1:]]:
+        f = m.flat(float(r[0]))
+        assert [f"{v:.9g}" for v in (f.z_flat, f.deflection, f.contact_length,
+                                     f.stiffness)] == r[1:5]
+    # Without the sidewall: the elements alone, less deflection above the preload.
+    bare = tirenv.Model("springs", tirenv.Tire(path, set={"SIDEWALL_PRELOAD": 0,
+                                                          "SIDEWALL_STIFFNESS": 0}))
+    assert bare.flat(6000).deflection < m.flat(6000).deflection - 0.005

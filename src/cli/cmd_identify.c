@@ -54,7 +54,9 @@ static void usage(FILE *fp)
           "                       [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
           "One tire, every model: identifies the springs model's RADIAL_STIFFNESS and\n"
-          "INTERRADIAL_STIFFNESS, and the cam's VERTICAL_STIFFNESS, Q_FZ2 (with FNOMIN),\n"
+          "INTERRADIAL_STIFFNESS (with SIDEWALL_STIFFNESS and SIDEWALL_PRELOAD when the\n"
+          "tire has a sidewall: --set SIDEWALL_STIFFNESS=5e5 asks for one, at least three\n"
+          "loads), and the cam's VERTICAL_STIFFNESS, Q_FZ2 (with FNOMIN),\n"
           "Q_RA1 and Q_RA2, on the reference model's flat-ground load-deflection and\n"
           "load-contact-length curves (docs/models.md section 14.1), then tabulates the\n"
           "three models' deflections and contact lengths at each load and their largest\n"
@@ -68,7 +70,7 @@ static void usage(FILE *fp)
           "  --loads G1,G2,...    the loads, N (at least two)\n"
           "  --write              set the identified values in the tire file in place, keeping its\n"
           "                       comments, with a '!' note on how they were identified\n"
-          "  --write-springs      the same for the springs model's two values alone, the cam's\n"
+          "  --write-springs      the same for the springs model's values alone, the cam's\n"
           "                       laws kept as the file has them (the table then shows the\n"
           "                       file's cam). Both refuse a file whose ring is derived as\n"
           "                       it is read (no [ENVELOPING_RING]) and a --set of a key\n"
@@ -101,6 +103,7 @@ static double rel(double a, double b) { return fabs(a - b) / b; }
 static int written(const char *assignment, int all)
 {
     static const char *const keys[] = {"RADIAL_STIFFNESS", "INTERRADIAL_STIFFNESS",
+                                       "SIDEWALL_STIFFNESS", "SIDEWALL_PRELOAD",
                                        "VERTICAL_STIFFNESS", "Q_FZ2", "Q_FZ1", "Q_RA1",
                                        "Q_RA2"};
     const char *eq = strchr(assignment, '='), *key = assignment;
@@ -110,7 +113,7 @@ static int written(const char *assignment, int all)
         if (*c == '.')
             key = c + 1;
     const size_t len = (size_t)(eq - key);
-    for (size_t k = 0; k < (all ? sizeof keys / sizeof keys[0] : 2); k++)
+    for (size_t k = 0; k < (all ? sizeof keys / sizeof keys[0] : 4); k++)
         if (strlen(keys[k]) == len && strncasecmp(key, keys[k], len) == 0)
             return 1;
     return 0;
@@ -154,9 +157,10 @@ int cli_identify_main(int argc, char *argv[])
             cli_error("--set %s with %s: the file would keep its own value of that key, not the "
                       "one identified on; expected --set only of the keys written (%s), or set "
                       "it in the file first", o.sets[i], write ? "--write" : "--write-springs",
-                      write ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, VERTICAL_STIFFNESS, "
-                              "Q_FZ1, Q_FZ2, Q_RA1, Q_RA2"
-                            : "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS");
+                      write ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
+                              "SIDEWALL_PRELOAD, VERTICAL_STIFFNESS, Q_FZ1, Q_FZ2, Q_RA1, Q_RA2"
+                            : "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
+                              "SIDEWALL_PRELOAD");
             return CLI_EXIT_USAGE;
         }
     o.type = ref;
@@ -206,8 +210,9 @@ int cli_identify_main(int argc, char *argv[])
     if (status)
         return cli_fail(status, &diag);
     /* Three significant digits, as written: the table and the note describe the file. */
-    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.cam.c_z, &id.cam.q_fz2,
-                           &id.cam.q_ra1, &id.cam.q_ra2};
+    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.springs.k_s,
+                           &id.springs.F_s0, &id.cam.c_z, &id.cam.q_fz2, &id.cam.q_ra1,
+                           &id.cam.q_ra2};
     for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
         char t[32];
         snprintf(t, sizeof t, "%.3g", *ids[k]);
@@ -224,6 +229,12 @@ int cli_identify_main(int argc, char *argv[])
            loads.v[0], loads.v[n - 1]);
     printf("  RADIAL_STIFFNESS       %.6g N/m/rad (was %.6g)\n", id.springs.c_r, tire.springs.c_r);
     printf("  INTERRADIAL_STIFFNESS  %.6g N*rad/m (was %.6g)\n", id.springs.c_b, tire.springs.c_b);
+    const int sidewall = id.springs.k_s > 0;
+    if (sidewall) {
+        printf("  SIDEWALL_STIFFNESS     %.6g N/m (was %.6g)\n", id.springs.k_s, tire.springs.k_s);
+        printf("  SIDEWALL_PRELOAD       %.6g N (was %.6g)\n", id.springs.F_s0,
+               tire.springs.F_s0);
+    }
     if (write_springs) { /* the cam's, not identified: the table's */
         printf("  the cam's laws kept as read: VERTICAL_STIFFNESS %.6g N/m, ", tire.cam.c_z);
         if (tire.cam.fnomin > 0)
@@ -260,12 +271,13 @@ int cli_identify_main(int argc, char *argv[])
             (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
         char note[1024];
         snprintf(note, sizeof note,
-                 "RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS below are identified by `tirenv\n"
+                 "RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS%s below are identified by `tirenv\n"
                  "identify --write-springs` (docs/models.md section 14.1) on the %s model's flat\n"
                  "ground at %zu loads %.4g to %.4g kN (deflection %.1f to %.1f mm, contact length\n"
                  "%.3f to %.3f m); the cam's laws are %s. Largest differences from the\n"
                  "%s over these loads: springs deflection %.1f %%, springs contact length %.1f %%,\n"
                  "cam deflection %.1f %%, cam contact length %.1f %%.",
+                 sidewall ? " (and SIDEWALL_STIFFNESS,\nSIDEWALL_PRELOAD: the sidewall in series, section 4.9)" : "",
                  ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
                  tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
                  cam_derived ? "derived\nfrom its MF-Tyre keys as it is read (section 14.2)"
@@ -274,10 +286,14 @@ int cli_identify_main(int argc, char *argv[])
         const tirenv_tir_value springs[] = {
             {"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", id.springs.c_r},
             {"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", id.springs.c_b},
+            {"ENVELOPING_SPRINGS", "SIDEWALL_STIFFNESS", id.springs.k_s},
+            {"ENVELOPING_SPRINGS", "SIDEWALL_PRELOAD", id.springs.F_s0},
         };
-        if ((status = tirenv_tir_update(path, 2, springs, note, &diag)))
+        const size_t n_springs = sidewall ? 4 : 2;
+        if ((status = tirenv_tir_update(path, n_springs, springs, note, &diag)))
             return cli_fail(status, &diag);
-        fprintf(stderr, "tirenv identify: wrote the 2 springs values into %s\n", path);
+        fprintf(stderr, "tirenv identify: wrote the %zu springs values into %s\n", n_springs,
+                path);
         return CLI_EXIT_OK;
     }
     if (!write)
@@ -306,9 +322,17 @@ int cli_identify_main(int argc, char *argv[])
                                                * VERTICAL_STIFFNESS's (section 14.1) */
     };
     size_t n_values = sizeof values / sizeof values[0] - 2 + (id.cam.fnomin > 0 ? 1 : 0);
+    tirenv_tir_value all[sizeof values / sizeof values[0] + 2];
+    memcpy(all, values, n_values * sizeof values[0]);
     if (tire.cam.q_fz1 != 0)
-        values[n_values++] = values[sizeof values / sizeof values[0] - 1];
-    if ((status = tirenv_tir_update(path, n_values, values, note, &diag)))
+        all[n_values++] = values[sizeof values / sizeof values[0] - 1];
+    if (sidewall) { /* the sidewall identified with the springs model (section 4.9) */
+        all[n_values++] = (tirenv_tir_value){"ENVELOPING_SPRINGS", "SIDEWALL_STIFFNESS",
+                                             id.springs.k_s};
+        all[n_values++] = (tirenv_tir_value){"ENVELOPING_SPRINGS", "SIDEWALL_PRELOAD",
+                                             id.springs.F_s0};
+    }
+    if ((status = tirenv_tir_update(path, n_values, all, note, &diag)))
         return cli_fail(status, &diag);
     fprintf(stderr, "tirenv identify: wrote the %zu values into %s\n", n_values, path);
     return CLI_EXIT_OK;

@@ -152,6 +152,8 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
         (status = plausible("WIDTH", tire->width, 0, 5, "m", diag)) ||
         (status = plausible("RADIAL_STIFFNESS", s->c_r, 1e3, 1e12, "N/m per rad", diag)) ||
         (status = plausible("INTERRADIAL_STIFFNESS", s->c_b, 0, 1e8, "N*rad/m", diag)) ||
+        (status = plausible("SIDEWALL_STIFFNESS", s->k_s, 0, 1e10, "N/m", diag)) ||
+        (status = plausible("SIDEWALL_PRELOAD", s->F_s0, 0, 1e7, "N", diag)) ||
         (status = plausible("BELT_BENDING_STIFFNESS", r->EI, 0, 1e5, "N*m^2", diag)) ||
         (status = plausible("BELT_PRETENSION", r->T, 0, 1e7, "N", diag)) ||
         (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 0, 1e10, "N/m^2", diag)) ||
@@ -206,6 +208,15 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (s->contact != TIRENV_SPRINGS_CONTINUOUS && s->contact != TIRENV_SPRINGS_RAYS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CONTACT",
                             "unknown springs contact %d", (int)s->contact);
+    if (!(s->k_s >= 0 && isfinite(s->k_s)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SIDEWALL_STIFFNESS",
+                            "must be zero (no sidewall) or positive (N/m), got %g", s->k_s);
+    if (!(s->F_s0 >= 0 && isfinite(s->F_s0)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SIDEWALL_PRELOAD",
+                            "must be zero or positive (N), got %g", s->F_s0);
+    if (s->F_s0 > 0 && s->k_s == 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "SIDEWALL_PRELOAD",
+                            "%g N needs a sidewall: SIDEWALL_STIFFNESS is 0 (none)", s->F_s0);
     if (s->phi / s->dphi > 1e6)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "gives more than a million elements (%g rad)", s->dphi);

@@ -26,7 +26,10 @@ typedef struct {
     tirenv_profile *flat;        /* flat ground z = 0, for the flat-ground reference */
     const tirenv_profile *prof;  /* current profile (borrowed) */
     double G;                    /* load, N */
-    double z_flat;               /* flat-ground centre height at G, m */
+    double z_flat;               /* flat-ground centre height at G, m: of the force
+                                  * function's centre, u above the hub (series) */
+    double u;                    /* the series spring's deflection at G, m (0 without) */
+    int has_series;              /* the tire has a series spring (deformable.h's series) */
     tirenv_deformable_history prev; /* warm start: the last two equilibria */
     size_t rigid_hint;           /* profile segment of the last position, for the bracket */
     /* The last flat-ground equilibrium: its load (N) and point, so that tirenv_model_set,
@@ -91,6 +94,8 @@ static void *deformable_alloc(const tirenv_model_type *type, const tirenv_tire *
     st->flat_elem = def->alloc(tire);
     st->solver = tirenv_eq__solver_alloc(tirenv_eq__solver_type_of(tire->eq.method));
     st->shift_invariant = def->shift_invariant(tire);
+    double c;
+    st->has_series = def->series && def->series(tire, INFINITY, &c) > 0;
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
     if (!st->elem || !st->flat_elem || !st->solver || !st->flat) {
         deformable_free(st);
@@ -99,6 +104,27 @@ static void *deformable_alloc(const tirenv_model_type *type, const tirenv_tire *
     return st;
 }
 
+double tirenv_deformable_series(const tirenv_deformable *def, const tirenv_tire *tire,
+                                double F)
+{
+    double c;
+    return def->series ? def->series(tire, F, &c) : 0;
+}
+
+/* The hub's stiffness (N/m) from the force function's, k (N/m), and the series spring's
+ * compliance c (m/N) at the same force: k itself without one, so that a tire without it keeps
+ * its bits. */
+static double in_series(double k, double c)
+{
+    return c > 0 && k > 0 ? 1 / (1 / k + c) : k;
+}
+
+/* The series spring's deflection (m) and compliance (m/N, into *c) at force F (N). */
+static double series_at(const deformable_state *st, double F, double *c)
+{
+    *c = 0;
+    return st->def->series ? st->def->series(&st->tire, F, c) : 0;
+}
 
 /* The valid range, once per model: the load and contact length at the lowest centre height
  * the model's physics allows. Without a limit of the model's own, the centre at the ground
@@ -204,12 +230,14 @@ static int deformable_flat(void *state, double load, tirenv_flat *out, tirenv_di
     st->have_flat_point = 1;
     st->flat_load = load;
     st->flat_point = p;
+    double c;
+    const double z_hub = p.z - series_at(st, load, &c);
     *out = (tirenv_flat){
         .load = load,
-        .z_flat = p.z,
-        .deflection = R0 - p.z,
+        .z_flat = z_hub,
+        .deflection = R0 - z_hub,
         .contact_length = l_c,
-        .stiffness = -p.dF_dz,
+        .stiffness = in_series(-p.dF_dz, c),
     };
     return TIRENV_OK;
 }
@@ -308,8 +336,59 @@ static int deformable_load_for_contact_length(void *state, double l_c, double *l
     return status;
 }
 
+/* With a series spring, the centre height z_c (m) of the force function whose hub is at z
+ * (m): the root of g(z_c) = z_c - u(F(z_c)) - z, which grows with z_c (F never increases with
+ * the height, u never decreases with F) from g(z) = -u(F(z)) <= 0 to g(R0) = R0 - z > 0,
+ * nothing touching at R0; so Brent on [z, R0] finds it, to the contact length's 1e-12 m. */
+typedef struct {
+    const deformable_state *st;
+    double z;                    /* the hub's height, m */
+    int status;                  /* the first failure of the model's forces */
+    tirenv_diag *diag;
+} hub_ctx;
+
+static double hub_minus_target(double z_c, void *p)
+{
+    hub_ctx *c = p;
+    tirenv_eq_point at;
+    const int s = c->st->def->forces(c->st->flat_elem, c->st->flat, 0, z_c, &at, c->diag);
+    if (s && !c->status)
+        c->status = s;
+    double dU_dF;
+    return z_c - series_at(c->st, s ? 0 : at.F, &dU_dF) - c->z;
+}
+
+static int centre_for_hub(const deformable_state *st, double z, double *z_c, tirenv_diag *diag)
+{
+    const double R0 = st->tire.springs.R0;
+    hub_ctx ctx = {st, z, 0, diag};
+    const double f_lo = hub_minus_target(z, &ctx);
+    *z_c = z;
+    if (ctx.status || f_lo == 0)
+        return ctx.status;
+    tirenv_core__brent br;
+    int status = tirenv_core__brent_set_values(&br, hub_minus_target, &ctx, z, f_lo, R0, R0 - z);
+    for (int it = 0; !status && !ctx.status && it < PATCH_MAX_ITER; ++it) {
+        status = tirenv_core__brent_iterate(&br);
+        if (!status && tirenv_core__brent_converged(&br, patch_z_tol))
+            break;
+    }
+    *z_c = br.root;
+    if (ctx.status)
+        return ctx.status;
+    if (status || !tirenv_core__brent_converged(&br, patch_z_tol))
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "centre height",
+                            "the %s model's elements found no height with the hub at %g m and "
+                            "SIDEWALL_STIFFNESS %g N/m, SIDEWALL_PRELOAD %g N (bracket [%g, %g] "
+                            "m): %s", st->type->name, z, st->tire.springs.k_s,
+                            st->tire.springs.F_s0, z, R0,
+                            status ? tirenv_core__brent_strerror(status)
+                                   : "not converged in the iterations allowed");
+    return TIRENV_OK;
+}
+
 /* One force evaluation at the height: its load and stiffness, and the model's contact length
- * there. */
+ * there; with a series spring, the force function's centre found first (centre_for_hub). */
 static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
                                      tirenv_diag *diag)
 {
@@ -323,16 +402,20 @@ static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
         return status;
     if (z < st->z_min)
         return beyond_range(st, RANGE_HEIGHT, z, diag);
-    tirenv_eq_point p;
-    double l_c;
-    if ((status = st->def->contact_length(st->flat_elem, st->flat, z, &l_c, &p, diag)))
+    double z_c = z;
+    if (st->has_series && (status = centre_for_hub(st, z, &z_c, diag)))
         return status;
+    tirenv_eq_point p;
+    double l_c, c;
+    if ((status = st->def->contact_length(st->flat_elem, st->flat, z_c, &l_c, &p, diag)))
+        return status;
+    series_at(st, p.F, &c);
     *out = (tirenv_flat){
         .load = p.F,
         .z_flat = z,
         .deflection = R0 - z,
         .contact_length = l_c,
-        .stiffness = -p.dF_dz,
+        .stiffness = in_series(-p.dF_dz, c),
     };
     return TIRENV_OK;
 }
@@ -343,16 +426,21 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
     deformable_state *st = state;
     st->prof = p;
     st->G = load;
-    st->z_flat = z_flat;
-    tirenv_deformable_history_clear(&st->prev);
-    /* tirenv_model_set has just solved the flat ground at this load: its point is z_flat. */
+    double c;
+    st->u = series_at(st, load, &c);
+    /* tirenv_model_set has just solved the flat ground at this load: its point is z_flat, the
+     * hub's, u below the centre's it was solved for (that centre's own bits kept). */
     tirenv_eq_point flat = st->flat_point;
+    const int same = st->have_flat_point && st->flat_load == load && flat.z - st->u == z_flat;
+    const double z_c = same ? flat.z : z_flat + st->u;
+    st->z_flat = z_c;
+    tirenv_deformable_history_clear(&st->prev);
     int status = TIRENV_OK;
-    if (!(st->have_flat_point && st->flat_load == load && flat.z == z_flat))
-        status = st->def->forces(st->flat_elem, st->flat, 0, z_flat, &flat, diag);
+    if (!(same && flat.z == z_c))
+        status = st->def->forces(st->flat_elem, st->flat, 0, z_c, &flat, diag);
     if (status)
         return status;
-    flat.z = z_flat;
+    flat.z = z_c;
     st->flat_at = flat;
     return TIRENV_OK;
 }
@@ -376,8 +464,11 @@ static int deformable_set_load(void *state, double load, double *z_flat, tirenv_
     if ((status = solve_flat(st, load, z0, &p, diag)))
         return status;
     tirenv_deformable_history_shift(&st->prev, p.z - st->z_flat);
+    double c;
     st->G = load;
-    st->z_flat = *z_flat = p.z;
+    st->u = series_at(st, load, &c);
+    st->z_flat = p.z;
+    *z_flat = p.z - st->u;
     st->flat_at = p;
     return TIRENV_OK;
 }
@@ -428,7 +519,9 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
                             st->type->name, sv.G, sv.z_flat);
+    double c;
     st->G = sv.G;
+    st->u = series_at(st, sv.G, &c);
     st->z_flat = sv.z_flat;
     st->prev.z1 = sv.z_prev;
     st->flat_at = sv.flat_at;
@@ -489,11 +582,12 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
         tirenv_profile__level(st->prof, x - TIRENV_MODEL__REACH * R0,
                               x + TIRENV_MODEL__REACH * R0, &level)) {
         /* fx is 0 by symmetry, which the force sum only meets to round-off. */
-        *out = (tirenv_point){.x = x, .z = st->z_flat + level, .h = level, .fx = 0,
+        const double z_c = st->z_flat + level;
+        *out = (tirenv_point){.x = x, .z = z_c - st->u, .h = level, .fx = 0,
                               .fz = st->flat_at.F, .contacts = st->flat_at.contacts};
         out->slope = tirenv_model__slope(out);
         /* The next start: this height (the level may end there). */
-        tirenv_deformable_history_restart(&st->prev, x, out->z);
+        tirenv_deformable_history_restart(&st->prev, x, z_c);
         return TIRENV_OK;
     }
     const double deflection = R0 - st->z_flat;
@@ -522,7 +616,10 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     if (status)
         return status;
     tirenv_deformable_history_push(&st->prev, x, res.point.z);
+    /* h between the centre's heights (the series spring's u, constant at the load, cancels:
+     * the same bits with or without one); the hub u below the centre. */
     tirenv_model__eq_point(&res.point, st->z_flat, out);
+    out->z = res.point.z - st->u;
     return TIRENV_OK;
 }
 

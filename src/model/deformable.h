@@ -47,6 +47,12 @@ struct tirenv_deformable {
     size_t (*state_size)(const void *elem);
     void (*state_save)(const void *elem, unsigned char *buf);
     void (*state_restore)(void *elem, const unsigned char *buf);
+    /* A spring in series between the hub and the force function's centre, or NULL (none):
+     * its deflection u (m) at a force F (N) and its compliance du/dF (m/N, into *dU_dF),
+     * u = 0 at F = 0 and non-decreasing in F. The forces above are then those of the centre
+     * u above the hub (docs/models.md section 4.9): at a constant load u is a constant, so
+     * the equilibria are solved for the centre and the hub reported u below it. */
+    double (*series)(const tirenv_tire *tire, double F, double *dU_dF);
     /* Nonzero: the warm start of a position is the line through the last two equilibria
      * (deformable.c's predict), for a model whose Newton converges slowly; else the last. */
     int extrapolate;
@@ -123,6 +129,11 @@ static inline double tirenv_deformable_history_start(const tirenv_deformable_his
                                                 h->z2)
                     : z_cold;
 }
+
+/* The series spring's deflection (m) at load F (N) of a deformable record for a tire: 0
+ * without one (its series NULL). */
+double tirenv_deformable_series(const tirenv_deformable *def, const tirenv_tire *tire,
+                                double F);
 
 /* The hub forces at (x, z) on the profile set of a state of tirenv_deformable_ops, for the
  * equilibrium over several tracks (tracks.c). */

@@ -157,6 +157,19 @@ static int springs_lowest_z(void *elem, const tirenv_profile *flat, double *z, c
     return 0;
 }
 
+/* docs/models.md section 4.9: the sidewall spring between the rim and the elements' centre,
+ * rigid up to SIDEWALL_PRELOAD F_s0 and then of stiffness SIDEWALL_STIFFNESS k_s; none with
+ * k_s = 0 (the paper's model). */
+static double springs_sidewall(const tirenv_tire *tire, double F, double *dU_dF)
+{
+    const tirenv_springs_params *par = &tire->springs;
+    *dU_dF = 0;
+    if (!(par->k_s > 0) || !(F > par->F_s0))
+        return 0;
+    *dU_dF = 1 / par->k_s;
+    return (F - par->F_s0) / par->k_s;
+}
+
 static const tirenv_deformable springs_deformable = {
     .alloc = springs_alloc,
     .free = springs_free,
@@ -168,6 +181,7 @@ static const tirenv_deformable springs_deformable = {
     .state_size = springs_state_size,
     .state_save = springs_state_save,
     .state_restore = springs_state_restore,
+    .series = springs_sidewall,
 };
 
 /* The stiffnesses that shape h, which a fit identifies, and the free radius on request

@@ -376,7 +376,10 @@ static int sum_forces(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *di
 static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag)
 {
     struct tirenv_model__tracks *t = m->tracks;
-    const double R0 = m->tire.springs.R0, deflection = R0 - m->z_flat;
+    /* The centre of the force function, u above the hub with a series spring (deformable.h):
+     * its flat-ground height, which the equilibria are solved for. */
+    const double u = tirenv_deformable_series(m->type->deformable, &m->tire, m->load);
+    const double R0 = m->tire.springs.R0, z_flat = m->z_flat + u, deflection = R0 - z_flat;
     double z_lo, z_hi;
     tirenv_rigid__bracket(t->n, t->prof, R0, x, t->hint, &z_lo, &z_hi);
     const tirenv_eq_problem prob = {
@@ -395,7 +398,8 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     if (status)
         return status;
     tirenv_deformable_history_push(&t->prev, x, res.point.z);
-    tirenv_model__eq_point(&res.point, m->z_flat, out);
+    tirenv_model__eq_point(&res.point, z_flat, out);
+    out->z = res.point.z - u;
     return TIRENV_OK;
 }
 

@@ -24,7 +24,10 @@ static int identify_springs(tirenv_tire *t, size_t n, const tirenv_flat_target t
         d[i] = tg[i].deflection;
         l[i] = tg[i].contact_length;
     }
-    return tirenv_springs_identify(&t->springs, n, G, d, l, diag);
+    /* A springs model with a sidewall (SIDEWALL_STIFFNESS > 0, docs/models.md section 4.9)
+     * has it identified too; without, the paper's model is. */
+    return t->springs.k_s > 0 ? tirenv_springs_identify_sidewall(&t->springs, n, G, d, l, diag)
+                              : tirenv_springs_identify(&t->springs, n, G, d, l, diag);
 }
 
 /* The cam (section 7.3). Without FNOMIN its vertical law is linear, rho = G/VERTICAL_STIFFNESS,

@@ -26,12 +26,16 @@ run "$bin" identify --tire t.tir --set FOUNDATION_STIFFNESS=2e5 --write
 check "identify --write --set of a key not written: exit 1, named, the file unchanged" \
     '[ $rc -eq 1 ] && grep -q -- "--set FOUNDATION_STIFFNESS=2e5 with --write" err &&
      cmp -s t.tir t0.tir'
-# --write-springs: the springs model's two values alone, the cam's laws the file's (the 205/60R15,
-# whose cam is TNO's): the file stays as shipped, its springs identified so (docs/models.md 14.2).
+# --write-springs: the springs model's values alone (with its sidewall, docs/models.md 4.9),
+# the cam's laws the file's (the 205/60R15, whose cam is TNO's): the file stays as shipped, its
+# springs identified so (docs/models.md 14.2), whatever the start values.
 cp "$repo/data/tires/205-60R15-mfswift.tir" c.tir
-run "$bin" identify --tire c.tir --set RADIAL_STIFFNESS=1e6 --write-springs
-check "identify --write-springs: springs written, the cam's laws kept, note rewritten" \
-    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 364000 " c.tir &&
+run "$bin" identify --tire c.tir --set RADIAL_STIFFNESS=1e6 --set SIDEWALL_STIFFNESS=2e6 \
+    --set SIDEWALL_PRELOAD=0 --write-springs
+check "identify --write-springs: springs and sidewall written, the cam's laws kept, note rewritten" \
+    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 459000 " c.tir &&
+     grep -q "^SIDEWALL_STIFFNESS *= 598000 " c.tir && grep -q "^SIDEWALL_PRELOAD *= 2530 " c.tir &&
+     grep -q "^  SIDEWALL_STIFFNESS  *598000 N/m (was 2e+06)" out &&
      grep -q "^  the cam.s laws kept as read: VERTICAL_STIFFNESS 209652 N/m, .*Q_RA1 0.6715, " out &&
      ! grep -q "^  Q_RA1 " out &&
      grep -q "^Q_RA1 *= 0.6715 " c.tir && grep -q "^VERTICAL_STIFFNESS *= 209651.5 " c.tir &&
@@ -124,5 +128,14 @@ rms=$(paste -d, rd/series-ring-10kmh.csv rd/series-nn-10kmh.csv | awk -F, '
     END { if (n) printf "%.6f", 1e3 * sqrt(s / n) }')
 check "ride: the network's rear input within its validation RMS of the ring's ($rms vs $val_rms mm)" \
     '[ $rc -eq 0 ] && [ -n "$rms" ] && awk -v a="$rms" -v b="$val_rms" "BEGIN { exit !(a < b) }"'
+
+# The sidewall's keys (docs/models.md 4.9): refused when negative, or a preload without a
+# stiffness, naming the key (test_springs_sidewall reads them in a file's units).
+run "$bin" flat --set SIDEWALL_STIFFNESS=-5
+check "flat --set SIDEWALL_STIFFNESS=-5: exit 2 (a bad --set), the key named" \
+    '[ $rc -eq 2 ] && grep -q "SIDEWALL_STIFFNESS: must be zero" err && [ ! -s out ]'
+run "$bin" flat --set SIDEWALL_PRELOAD=100
+check "flat --set SIDEWALL_PRELOAD=100 without a stiffness: exit 2, the key named" \
+    '[ $rc -eq 2 ] && grep -q "SIDEWALL_PRELOAD.*needs a sidewall" err && [ ! -s out ]'
 
 clilib_done

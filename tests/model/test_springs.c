@@ -22,7 +22,7 @@ static tirenv_tire default_tire(void)
 static tirenv_tire tire_with(double R0, double c_r, double c_b, double dphi)
 {
     tirenv_tire t = tirenv_tire_default();
-    t.springs = (tirenv_springs_params){R0, c_r, c_b, M_PI, dphi, contact_mode};
+    t.springs = (tirenv_springs_params){R0, c_r, c_b, M_PI, dphi, contact_mode, 0, 0};
     return t;
 }
 

@@ -266,16 +266,16 @@ static void test_derived_pairs(void **state)
 /* The 205/60R15 (data/tires/205-60R15-mfswift.tir) has every model of its own: TNO's cam
  * (its linear law, Q_RA1, Q_RA2), kept, and tirenv's ring and springs model identified on it
  * (docs/models.md 14.2): a ring whose carcass softens as it is pressed in, searched on the
- * cam's laws (scripts/ring-on-laws.py), and the springs model identified on that ring
- * (tirenv identify --write-springs); its data set is made by its cam, so nothing is derived.
- * At 0.5 to 1.5 FNOMIN the ring and the cam are one tire within 5 % (measured, deflection /
- * contact length: cam - ring 1.02 / 1.68 %), and so is the springs model's contact length
- * against the ring's (3.68 %); its deflection is not (springs - ring 14.72 %, springs - cam
- * 14.85 / 5.27 %): the springs model stiffens with the load as its patch grows, and no c_r,
- * c_b follows a linear law (section 14.2), so its identification on deflection and contact
- * length alike leaves that. Bounded at 5 % where met, else half a per cent above. (With a
- * linear carcass the ring missed TNO's laws by 8.5 % at best, and the file's earlier ring by
- * 42 % in contact length.) */
+ * cam's laws (scripts/ring-on-laws.py), and the springs model with a sidewall in series
+ * (section 4.9) identified on that ring (tirenv identify --write-springs); its data set is
+ * made by its cam, so nothing is derived. At 0.5 to 1.5 FNOMIN, measured, deflection /
+ * contact length: cam - ring 1.02 / 1.68 %, springs - ring 2.90 / 3.89 %, springs - cam
+ * 3.02 / 5.48 %. The sidewall brought the springs model's deflection from 14.72 % (the
+ * elements alone stiffen with the load as their patch grows) to 2.90 %; the contact length
+ * is the elements' alone, which no sidewall changes, and misses the cam's by 5.48 % at 6 kN
+ * (the elements' patch grows more slowly with the load than TNO's contact law). Bounded at
+ * the measured figures plus half a per cent. (With a linear carcass the ring missed TNO's
+ * laws by 8.5 % at best, and the file's earlier ring by 42 % in contact length.) */
 static void test_205_pairs(void **state)
 {
     (void)state;
@@ -291,7 +291,7 @@ static void test_205_pairs(void **state)
         loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
     pair_miss e[3];
     pairs("205/60R15", &t, N_LOADS, loads, e);
-    static const double bound[3][2] = {{0.152, 0.050}, {0.050, 0.050}, {0.154, 0.058}};
+    static const double bound[3][2] = {{0.0340, 0.0439}, {0.0152, 0.0218}, {0.0352, 0.0598}};
     for (size_t k = 0; k < 3; k++) {
         assert_true(e[k].defl <= bound[k][0]);
         assert_true(e[k].l <= bound[k][1]);
