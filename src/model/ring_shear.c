@@ -183,14 +183,20 @@ static int band_factor(tband *A)
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
-/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). */
-static void band_solve(const tband *A, double x[])
+/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
+ * constant (band_solve): the tail's loops unrolled, its right-hand side y and its rows' pointers
+ * kept in registers; the same operations in the same order for every t. */
+static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
+                                                               const size_t t)
 {
-    const size_t N = A->N, t = A->t, m = N - t;
+    const size_t N = A->N, m = N - t;
     const double *L = A->L;
+    const double *B[TAIL];
     double y[TAIL];
-    for (size_t a = 0; a < t; ++a)
+    for (size_t a = 0; a < t; ++a) {
+        B[a] = A->B[a];
         y[a] = x[m + a];
+    }
     for (size_t i = 0; i < m; ++i) {
         double v = x[i];
         if (i >= BAND_P) { /* unrolled: the same operations in the same order */
@@ -203,9 +209,10 @@ static void band_solve(const tband *A, double x[])
             for (size_t k = 1; k <= i; ++k)
                 v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
         }
-        x[i] = v / L[(BAND_P + 1) * i];
+        const double xi = v / L[(BAND_P + 1) * i];
+        x[i] = xi;
         for (size_t a = 0; a < t; ++a)
-            y[a] -= A->B[a][i] * x[i];
+            y[a] -= B[a][i] * xi;
     }
     if (t > 0)
         tirenv_core__cholesky_solve(&A->T[0][0], t, TAIL, y, y);
@@ -224,9 +231,20 @@ static void band_solve(const tband *A, double x[])
                 v -= L[(BAND_P + 1) * i + k] * x[i + k];
         }
         for (size_t a = 0; a < t; ++a)
-            v -= A->B[a][i] * x[m + a];
+            v -= B[a][i] * y[a];
         x[i] = v / L[(BAND_P + 1) * i];
     }
+}
+
+/* The window's systems have the tail, the exterior's none. */
+static void band_solve(const tband *A, double x[])
+{
+    if (A->t == TAIL)
+        band_solve_t(A, x, TAIL);
+    else if (A->t == 0)
+        band_solve_t(A, x, 0);
+    else
+        band_solve_t(A, x, A->t);
 }
 
 static int band_alloc(tband *A, size_t N, size_t t)
