@@ -98,6 +98,8 @@ typedef struct {
     double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
     double e, f;           /* last evaluation: tread compression (m) and ground force (N) */
     unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+    long knot;             /* the shear-coupled tread's knot at the point in the last solve's
+                            * knots (ring_shear.c), -1: none (a point at a node) */
 } tirenv_ring_point;
 
 /* A piece of the window between two cuts (nodes or ground vertices), and the ground line its

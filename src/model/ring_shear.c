@@ -79,8 +79,7 @@ struct tirenv_ring_tread {
     double *kp;         /* 2 M + cap_k: the driver's workspace */
     /* The knots of the last solve (vertex cuts inside node intervals), m of them, in angle
      * order; per point of r->pts its knot (-1: at a node). */
-    size_t m, cap_k, cap_pk;
-    long *pknot;        /* cap_pk */
+    size_t m, cap_k;
     size_t *kj;         /* the knot's interval, as its first node's window index */
     double *kd, *ko;    /* the knots' own stiffness: diagonal, and to the next knot (0 if the
                          * next is in another interval), N/m */
@@ -352,7 +351,6 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->cols);
     free(T->xw);
     free(T->col);
-    free(T->pknot);
     free(T->kj);
     free(T->kd);
     free(T->lc);
@@ -601,28 +599,20 @@ static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[
     }
 }
 
-/* The knots of the window's points (see the top): T->m, T->pknot, T->kj and the knots' own
- * stiffness T->kd, T->ko. Nonzero if out of memory. */
+/* The knots of the window's points (see the top): T->m, each point's knot, T->kj and the knots'
+ * own stiffness T->kd, T->ko. Nonzero if out of memory. */
 static int find_knots(tirenv_ring *r)
 {
     tirenv_ring_tread *T = r->tread;
-    if (r->n_pts > T->cap_pk) { /* geometric: settles at the largest window's */
-        const size_t cap = tirenv_core__capacity(T->cap_pk, 256, r->n_pts);
-        long *pk = realloc(T->pknot, cap * sizeof *pk);
-        if (!pk)
-            return 1;
-        T->pknot = pk;
-        T->cap_pk = cap;
-    }
     size_t m = 0;
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         const int inner = q->s > 0 && q->s < 1;
-        const int same = inner && k > 0 && T->pknot[k - 1] >= 0 && r->pts[k - 1].j == q->j &&
+        const int same = inner && k > 0 && r->pts[k - 1].knot >= 0 && r->pts[k - 1].j == q->j &&
                          r->pts[k - 1].phi == q->phi;
         if (inner && !same)
             ++m;
-        T->pknot[k] = inner ? (long)m - 1 : -1;
+        r->pts[k].knot = inner ? (long)m - 1 : -1;
     }
     if (reserve_knots(T, m))
         return 1;
@@ -630,10 +620,10 @@ static int find_knots(tirenv_ring *r)
     /* Each knot's interval and angle; then the sub-intervals and the stiffness. */
     double *phi = T->kphi;
     for (size_t k = 0; k < r->n_pts; ++k)
-        if (T->pknot[k] >= 0) {
-            T->kj[T->pknot[k]] = r->pts[k].j - r->lo;
-            phi[T->pknot[k]] = r->pts[k].phi;
-            T->kdphi[T->pknot[k]] = r->pts[k].dphi;
+        if (r->pts[k].knot >= 0) {
+            T->kj[r->pts[k].knot] = r->pts[k].j - r->lo;
+            phi[r->pts[k].knot] = r->pts[k].phi;
+            T->kdphi[r->pts[k].knot] = r->pts[k].dphi;
         }
     const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
     for (size_t k = 0; k < m; ++k) {
@@ -652,7 +642,8 @@ static int find_knots(tirenv_ring *r)
 /* A point's knot (-1: none, a point at a node). */
 static long knot_of(const tirenv_ring *r, const tirenv_ring_point *q)
 {
-    return r->tread->pknot[q - r->pts];
+    (void)r;
+    return q->knot;
 }
 
 /* A point's tread surface and belt, interpolated (the surface with its knot's hat). */
