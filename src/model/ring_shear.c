@@ -45,16 +45,31 @@
 
 enum { BAND_P = 4, TAIL = 4, NB = 6 };
 
-/* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t rows are dense
- * (the window's ends coupled through the exterior), and its Cholesky factor in place: L[5 i + k]
- * = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[a][i] = A[N - t + a][i]
- * for i < N - t; T the dense t x t tail (lower triangle). */
+/* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t <= TAIL rows are
+ * dense (the window's ends coupled through the exterior), and its Cholesky factor in place:
+ * L[5 i + k] = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[TAIL i + a] =
+ * A[N - t + a][i] for i < N - t (the tail rows interleaved, so that a column's four are
+ * adjacent: two pairs of SSE2 lanes); T the dense t x t tail (lower triangle). */
 typedef struct {
     size_t N, t;
     double *L;
-    double *B[TAIL];
+    double *B;
     double T[TAIL][TAIL];
 } tband;
+
+/* Two doubles in SSE2 lanes: each lane's product and difference are the scalar ones, bit for
+ * bit (no fused multiply-add in the baseline x86-64 the library is built for, nor elsewhere
+ * without -ffp-contract). */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+static inline v2d v2_load(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void v2_store(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
 struct tirenv_ring_tread {
     size_t M;
@@ -112,8 +127,8 @@ static void band_reset(tband *A, size_t N, size_t t)
     A->N = N;
     A->t = t;
     memset(A->L, 0, (BAND_P + 1) * N * sizeof *A->L);
-    for (size_t a = 0; a < t; ++a)
-        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    if (t > 0)
+        memset(A->B, 0, TAIL * N * sizeof *A->B);
     memset(A->T, 0, sizeof A->T);
 }
 
@@ -124,7 +139,7 @@ static void band_add(tband *A, size_t i, size_t k, double v)
     if (k < m)
         A->L[(BAND_P + 1) * i + (k - i)] += v;
     else if (i < m)
-        A->B[k - m][i] += v;
+        A->B[TAIL * i + (k - m)] += v;
     else
         A->T[k - m][i - m] += v;
 }
@@ -151,51 +166,62 @@ static int band_factor(tband *A)
             r2[0] -= c2 * c2, r2[1] -= c3 * c2, r2[2] -= c4 * c2;
             r3[0] -= c3 * c3, r3[1] -= c4 * c3;
             r4[0] -= c4 * c4;
-            double bi[TAIL];
-            for (size_t a = 0; a < TAIL; ++a) {
-                double *b = A->B[a] + i;
-                bi[a] = b[0] * inv;
-                b[0] = bi[a];
-                b[1] -= bi[a] * c1, b[2] -= bi[a] * c2, b[3] -= bi[a] * c3, b[4] -= bi[a] * c4;
+            /* The tail rows' entries of columns i .. i + 4, two lanes at a time: B[a][i] *=
+             * inv, then B[a][i + k] -= B[a][i] c_k, each entry's one operation of this
+             * column. */
+            double *b = A->B + TAIL * i;
+            const v2d vinv = {inv, inv};
+            const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
+            v2_store(b, b01);
+            v2_store(b + 2, b23);
+            const double ck[BAND_P] = {c1, c2, c3, c4};
+            for (size_t k = 1; k <= BAND_P; ++k) {
+                const v2d vc = {ck[k - 1], ck[k - 1]};
+                double *bk = b + TAIL * k;
+                v2_store(bk, v2_load(bk) - b01 * vc);
+                v2_store(bk + 2, v2_load(bk + 2) - b23 * vc);
             }
+            const double bi[TAIL] = {b01[0], b01[1], b23[0], b23[1]};
             for (size_t a = 0; a < TAIL; ++a)
-                for (size_t b = 0; b <= a; ++b)
-                    A->T[a][b] -= bi[a] * bi[b];
+                for (size_t bb = 0; bb <= a; ++bb)
+                    A->T[a][bb] -= bi[a] * bi[bb];
             continue;
         }
         for (size_t k = 1; k <= kmax; ++k)
             c[k] *= inv;
+        double *const B = A->B;
         for (size_t a = 0; a < t; ++a)
-            A->B[a][i] *= inv;
+            B[TAIL * i + a] *= inv;
         for (size_t k1 = 1; k1 <= kmax; ++k1) {
             double *c1 = L + (BAND_P + 1) * (i + k1);
             for (size_t k2 = k1; k2 <= kmax; ++k2)
                 c1[k2 - k1] -= c[k2] * c[k1];
             for (size_t a = 0; a < t; ++a)
-                A->B[a][i + k1] -= A->B[a][i] * c[k1];
+                B[TAIL * (i + k1) + a] -= B[TAIL * i + a] * c[k1];
         }
         for (size_t a = 0; a < t; ++a)
             for (size_t b = 0; b <= a; ++b)
-                A->T[a][b] -= A->B[a][i] * A->B[b][i];
+                A->T[a][b] -= B[TAIL * i + a] * B[TAIL * i + b];
     }
     /* The dense tail, Schur complement of the band: src/core's Cholesky. */
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
- * constant (band_solve): the tail's loops unrolled, its right-hand side y and its rows' pointers
- * kept in registers; the same operations in the same order for every t. */
+ * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
+ * full tail two lanes at a time; the same operations in the same order for every t. */
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t)
 {
     const size_t N = A->N, m = N - t;
     const double *L = A->L;
-    const double *B[TAIL];
+    const double *B = A->B;
     double y[TAIL];
-    for (size_t a = 0; a < t; ++a) {
-        B[a] = A->B[a];
+    for (size_t a = 0; a < t; ++a)
         y[a] = x[m + a];
-    }
+    v2d y01 = {0, 0}, y23 = {0, 0};
+    if (t == TAIL)
+        y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
     for (size_t i = 0; i < m; ++i) {
         double v = x[i];
         if (i >= BAND_P) { /* unrolled: the same operations in the same order */
@@ -210,13 +236,23 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         }
         const double xi = v / L[(BAND_P + 1) * i];
         x[i] = xi;
-        for (size_t a = 0; a < t; ++a)
-            y[a] -= B[a][i] * xi;
+        if (t == TAIL) {
+            const v2d vx = {xi, xi};
+            y01 -= v2_load(B + TAIL * i) * vx;
+            y23 -= v2_load(B + TAIL * i + 2) * vx;
+        } else {
+            for (size_t a = 0; a < t; ++a)
+                y[a] -= B[TAIL * i + a] * xi;
+        }
     }
+    if (t == TAIL)
+        y[0] = y01[0], y[1] = y01[1], y[2] = y23[0], y[3] = y23[1];
     if (t > 0)
         tirenv_core__cholesky_solve(&A->T[0][0], t, TAIL, y, y);
     for (size_t a = 0; a < t; ++a)
         x[m + a] = y[a];
+    if (t == TAIL) /* now the tail's solution */
+        y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
     for (size_t i = m; i-- > 0;) {
         double v = x[i];
         if (i + BAND_P < m) {
@@ -229,8 +265,16 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
             for (size_t k = 1; k + i < m; ++k)
                 v -= L[(BAND_P + 1) * i + k] * x[i + k];
         }
-        for (size_t a = 0; a < t; ++a)
-            v -= B[a][i] * y[a];
+        if (t == TAIL) { /* the products two at a time, subtracted in order */
+            const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+            v -= p01[0];
+            v -= p01[1];
+            v -= p23[0];
+            v -= p23[1];
+        } else {
+            for (size_t a = 0; a < t; ++a)
+                v -= B[TAIL * i + a] * y[a];
+        }
         x[i] = v / L[(BAND_P + 1) * i];
     }
 }
@@ -248,11 +292,10 @@ static void band_solve(const tband *A, double x[])
 
 static int band_alloc(tband *A, size_t N, size_t t)
 {
-    A->L = malloc((BAND_P + 1 + t) * N * sizeof *A->L);
+    A->L = malloc((BAND_P + 1 + (t > 0 ? TAIL : 0)) * N * sizeof *A->L);
     if (!A->L)
         return 1;
-    for (size_t a = 0; a < t; ++a)
-        A->B[a] = A->L + (BAND_P + 1 + a) * N;
+    A->B = A->L + (BAND_P + 1) * N;
     return 0;
 }
 
@@ -439,8 +482,7 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     const double *s = T->s, k_sh = T->k_sh;
     A->N = N;
     A->t = TAIL;
-    for (size_t a = 0; a < TAIL; ++a)
-        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    memset(A->B, 0, TAIL * N * sizeof *A->B);
     memset(A->T, 0, sizeof A->T);
     double *L = A->L;
     for (size_t e = 0; e < n; ++e) {
@@ -1618,7 +1660,7 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         for (size_t k = 0; k < N; ++k)
             K[i * N + k] = k > i ? 0
                            : i < m ? (i - k <= BAND_P ? A.L[(BAND_P + 1) * k + (i - k)] : 0)
-                           : k < m ? A.B[i - m][k]
+                           : k < m ? A.B[TAIL * k + (i - m)]
                                    : A.T[i - m][k - m];
     free(A.L);
     return 0;
