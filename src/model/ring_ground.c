@@ -45,6 +45,27 @@ static int reserve(void **buf, size_t *cap, size_t n, size_t sz)
     return 0;
 }
 
+/* The points' array: aligned to a cache line, each point two of them (ring_impl.h), grown as
+ * reserve grows the others (aligned_alloc has no realloc: copied). */
+enum { PTS_ALIGN = 64 };
+_Static_assert(sizeof(tirenv_ring_point) == 2 * PTS_ALIGN, "a point is two cache lines");
+
+static int reserve_pts(tirenv_ring *r, size_t n)
+{
+    if (n <= r->cap_pts)
+        return 0;
+    const size_t c = tirenv_core__capacity(r->cap_pts, 256, n);
+    tirenv_ring_point *nb = aligned_alloc(PTS_ALIGN, c * sizeof *nb);
+    if (!nb)
+        return TIRENV_ENOMEM;
+    if (r->pts)
+        memcpy(nb, r->pts, r->cap_pts * sizeof *nb);
+    free(r->pts);
+    r->pts = nb;
+    r->cap_pts = c;
+    return 0;
+}
+
 /* The line (L[0], L[1]) - (L[2], L[3]) of the first ground met by the ray from (x, z) in the
  * direction (sx, cz) (cz > 0, not normalised), walking the vertices in the ray's direction from
  * *cursor; 0 if no ground within the horizontal distance reach. The ground is a graph with
@@ -205,7 +226,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     if (nv > 1)
         qsort(v, nv, sizeof *v, by_angle);
     const size_t n_pieces = (jb - ja) + nv;
-    if (reserve((void **)&r->pts, &r->cap_pts, 2 * n_pieces, sizeof *r->pts) ||
+    if (reserve_pts(r, 2 * n_pieces) ||
         reserve((void **)&r->lines, &r->cap_lines, n_pieces, sizeof *r->lines))
         return TIRENV_ENOMEM;
     v = r->cuts;

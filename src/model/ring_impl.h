@@ -84,22 +84,27 @@ void tirenv_ring__band_solve(const tirenv_ring_band *A, double b[]);
 enum { TIRENV_RING_FREE = 0, TIRENV_RING_T_BASIC = 1, TIRENV_RING_B_BASIC = 2 };
 
 /* A quadrature point of the continuous contact (ring_ground.c, ring_smooth.c): an end of a
- * piece of the window along which the ground is one segment, in node interval j. */
+ * piece of the window along which the ground is one segment, in node interval j. 128 bytes,
+ * the array aligned to 64 (ring_ground.c): what the contact solve's passes over the points read
+ * at every Newton step (their states, energy, line search and system) lies in its first 64, one
+ * cache line a point; what an evaluation reads once (the forces, dF_z/dz) in the second. */
 typedef struct {
-    double phi, sn, cs;    /* angle (rad) and its sine and cosine */
-    double omega;          /* weight: half its piece's angle, rad */
+    double d;              /* penetration R0 - rho (m; -INFINITY: none) */
     double s;              /* place in the interval: the tread there is (1 - s) w_j + s w_j+1 */
+    double omega;          /* weight: half its piece's angle, rad */
+    double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
     size_t j;              /* the interval's first node */
-    double d, dd;          /* penetration R0 - rho (m; -INFINITY: none) and its d/dz */
+    long knot;             /* the shear-coupled tread's knot at the point in the last solve's
+                            * knots (ring_shear.c), -1: none (a point at a node) */
+    unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+    double e;              /* last evaluation: tread compression, m */
+    double phi, sn, cs;    /* angle (rad) and its sine and cosine */
+    double dd;             /* d(d)/dz, m/m */
     double dphi;           /* d(phi)/dz: a ground vertex's cut moves with the centre (rad/m),
                             * 0 at a node */
     double ddt;            /* d(d)/dz along the moving cut, dd + (dd/dphi)*dphi */
     double X;              /* ground abscissa, m */
-    double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
-    double e, f;           /* last evaluation: tread compression (m) and ground force (N) */
-    unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
-    long knot;             /* the shear-coupled tread's knot at the point in the last solve's
-                            * knots (ring_shear.c), -1: none (a point at a node) */
+    double f;              /* last evaluation: ground force, N */
 } tirenv_ring_point;
 
 /* A piece of the window between two cuts (nodes or ground vertices), and the ground line its
