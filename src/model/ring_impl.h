@@ -165,12 +165,16 @@ struct tirenv_ring {
     size_t n_sub;          /* its evaluations answered on the sub-window of their contact
                             * (ring_smooth.c; the tests count them) */
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
+    size_t k_first, k_last;   /* the shear-coupled tread's last solve: its first and last
+                               * point in contact (k_first > k_last: none) */
 };
 
 /* The quadrature points of the continuous contact over nodes ja .. jb (ring_ground.c):
- * r->pts, r->n_pts. TIRENV_ENOMEM if its workspace cannot grow. */
+ * r->pts, r->n_pts; those out of reach (d <= -t_r) with d = -INFINITY, the others with the
+ * tread stiffness k_t (N/m^2; NAN: each its own, lugs) and within the nodes win[0] ..
+ * win[1] (win[0] > win[1]: none). TIRENV_ENOMEM if its workspace cannot grow. */
 int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                        size_t ja, size_t jb);
+                        size_t ja, size_t jb, double k_t, size_t win[2]);
 
 /* The points pts[*k0 .. *k1) of the intervals of nodes first .. last, from pts[kf .. kl] in
  * them: the sub-windows of the nodes in contact (ring_smooth.c, ring_shear.c). */

@@ -63,9 +63,7 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
                         double xt[], double g[], int *factored)
 {
     const size_t N = nw->N;
-    for (size_t k = 0; k < r->n_pts; ++k)
-        r->pts[k].st = 255; /* none yet */
-    nw->set_states(r, x);
+    nw->set_states(r, x); /* every point's (its count of changes not needed) */
     *factored = 0;
     size_t polish = 0; /* full Newton steps taken after the line search stalled */
     for (size_t it = 0; it < TIRENV_RING_NEWTON_MAX_ITER; ++it) {

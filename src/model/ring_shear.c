@@ -1486,6 +1486,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     for (size_t i = 0; i < N + m; ++i)
         xt[i] = 0;
     double sum_c = 0, sum_s = 0;
+    size_t k_first = 1, k_last = 0; /* the first and the last point in contact */
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         q->f = 0;
@@ -1496,6 +1497,9 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         q->e = q->d - at_u(r, q, x); /* the ground's overlap with the tread surface */
         if (q->st == 0)
             continue;
+        if (k_first > k_last)
+            k_first = k;
+        k_last = k;
         const size_t i = q->j - ls;
         const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double fg = 0, fb = 0, cu = 0, cw = 0;
@@ -1575,6 +1579,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         }
     r->tread_max = fmin(e_max, t_r);
     leave(r, &sv);
+    r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
+    r->k_last = k_last + k0;
     if (dfz_dz) {
         memcpy(dxw + 2 * (a - lo), xt, N * sizeof *xt);
         if (sub)
