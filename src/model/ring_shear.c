@@ -144,31 +144,46 @@ static void band_add(tband *A, size_t i, size_t k, double v)
         A->T[k - m][i - m] += v;
 }
 
-/* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite. */
+/* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
+ * With the full tail, the interior columns (all but the last BAND_P of the band) come first,
+ * unrolled, their updates two SSE2 lanes at a time and the tail block's lower triangle held in
+ * registers until they end: each entry gets the same operations in the same order as in the
+ * general loop below, so the same bits. */
 static int band_factor(tband *A)
 {
     const size_t N = A->N, t = A->t, m = N - t;
     double *L = A->L;
-    for (size_t i = 0; i < m; ++i) {
-        double *c = L + (BAND_P + 1) * i;
-        if (!(c[0] > 0))
-            return 1;
-        const double lii = sqrt(c[0]), inv = 1 / lii;
-        c[0] = lii;
-        const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
-        if (kmax == BAND_P && t == TAIL) {
-            /* The interior column, unrolled: the same operations on each entry as below. */
+    size_t i = 0;
+    if (t == TAIL && m > BAND_P) {
+        double(*T)[TAIL] = A->T;
+        v2d t10 = {T[1][0], T[1][1]}, t20 = {T[2][0], T[2][1]}, t30 = {T[3][0], T[3][1]},
+            t32 = {T[3][2], T[3][3]};
+        double t00 = T[0][0], t22 = T[2][2];
+        int broke = 0;
+        for (; i + BAND_P < m; ++i) {
+            double *c = L + (BAND_P + 1) * i;
+            if (!(c[0] > 0)) {
+                broke = 1;
+                break;
+            }
+            const double lii = sqrt(c[0]), inv = 1 / lii;
+            c[0] = lii;
             const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
             c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
             double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
                    *r4 = r3 + (BAND_P + 1);
-            r1[0] -= c1 * c1, r1[1] -= c2 * c1, r1[2] -= c3 * c1, r1[3] -= c4 * c1;
-            r2[0] -= c2 * c2, r2[1] -= c3 * c2, r2[2] -= c4 * c2;
-            r3[0] -= c3 * c3, r3[1] -= c4 * c3;
+            /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
+             * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
+            const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
+            const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
+            v2_store(r1, v2_load(r1) - c12 * vc1);
+            v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
+            v2_store(r2, v2_load(r2) - c23 * vc2);
+            r2[2] -= c4 * c2;
+            v2_store(r3, v2_load(r3) - c34 * vc3);
             r4[0] -= c4 * c4;
-            /* The tail rows' entries of columns i .. i + 4, two lanes at a time: B[a][i] *=
-             * inv, then B[a][i + k] -= B[a][i] c_k, each entry's one operation of this
-             * column. */
+            /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
+             * -= B[a][i] c_k, each entry's one operation of this column. */
             double *b = A->B + TAIL * i;
             const v2d vinv = {inv, inv};
             const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
@@ -181,12 +196,27 @@ static int band_factor(tband *A)
                 v2_store(bk, v2_load(bk) - b01 * vc);
                 v2_store(bk + 2, v2_load(bk + 2) - b23 * vc);
             }
-            const double bi[TAIL] = {b01[0], b01[1], b23[0], b23[1]};
-            for (size_t a = 0; a < TAIL; ++a)
-                for (size_t bb = 0; bb <= a; ++bb)
-                    A->T[a][bb] -= bi[a] * bi[bb];
-            continue;
+            /* T[a][b] -= B[a][i] B[b][i], b <= a. */
+            const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
+            t00 -= b01[0] * b01[0];
+            t10 -= v1 * b01;
+            t20 -= v2 * b01;
+            t22 -= b23[0] * b23[0];
+            t30 -= v3 * b01;
+            t32 -= v3 * b23;
         }
+        T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
+        T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
+        if (broke)
+            return 1;
+    }
+    for (; i < m; ++i) {
+        double *c = L + (BAND_P + 1) * i;
+        if (!(c[0] > 0))
+            return 1;
+        const double lii = sqrt(c[0]), inv = 1 / lii;
+        c[0] = lii;
+        const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
         for (size_t k = 1; k <= kmax; ++k)
             c[k] *= inv;
         double *const B = A->B;
