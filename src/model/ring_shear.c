@@ -1247,12 +1247,15 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
             break;
         /* The exterior runs from node b + 1 round to node a - 1. */
         const size_t ee = j > b ? j - b - 1 : ne - (a - j);
-        for (size_t h = 0; h < 2; ++h) {
-            double sum = 0;
-            for (size_t e = 0; e < NB; ++e)
-                sum += cols[e * Ne + 2 * ee + h] * f[e];
-            v[2 * (j - lo) + h] = -sum;
+        /* w and u (h = 0, 1) in two lanes: sum_h = sum_e cols[e Ne + 2 ee + h] f[e], from 0
+         * in the order of e, as one lane each would. */
+        v2d sum = {0, 0};
+        for (size_t e = 0; e < NB; ++e) {
+            const v2d fe = {f[e], f[e]};
+            sum += v2_load(cols + e * Ne + 2 * ee) * fe;
         }
+        v[2 * (j - lo)] = -sum[0];
+        v[2 * (j - lo) + 1] = -sum[1];
     }
 }
 
