@@ -1499,8 +1499,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         q->f = 0;
         q->e = q->d == -INFINITY ? -INFINITY : q->d - lin_u(r, q, xw);
     }
-    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
+    /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
+     * and u on this window, dw and du there too with dF_z/dz. */
+    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j) {
+        if (j >= lo && j < lo + n) {
+            if (!dfz_dz)
+                T->dw[j] = T->du[j] = 0;
+            continue;
+        }
         r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    }
     T->pred[2] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
