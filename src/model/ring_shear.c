@@ -515,7 +515,16 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     memset(A->B, 0, TAIL * N * sizeof *A->B);
     memset(A->T, 0, sizeof A->T);
     double *L = A->L;
-    for (size_t e = 0; e < n; ++e) {
+    size_t e = 0;
+    /* The nodes whose two rows lie in the band with all their entries (then e + 2 < n): the
+     * rows below, written straight. */
+    for (; 2 * e + 1 + BAND_P < m; ++e) {
+        const double kap = T->kap[lo + e];
+        double *lw = L + (BAND_P + 1) * 2 * e, *lu = lw + (BAND_P + 1);
+        lw[0] = s[0] + kap, lw[1] = -kap, lw[2] = s[1], lw[3] = 0, lw[4] = s[2];
+        lu[0] = kap + 2 * k_sh, lu[1] = 0, lu[2] = -k_sh, lu[3] = 0, lu[4] = 0;
+    }
+    for (; e < n; ++e) {
         const double kap = T->kap[lo + e];
         const size_t iw = 2 * e, iu = iw + 1;
         /* Rows w_e, u_e: A[i + k][i] for k = 0 .. BAND_P, those of a tail row in B. */
@@ -1563,8 +1572,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
             continue;
         /* -d(grad E)/dz at fixed x: the ground moving along the point's cut (q->ddt), and, at
          * a vertex's cut, the cut itself moving (its place s and its piece's weight). */
-        double ds, dom, dfg, dfb;
-        moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+        double ds = 0, dfg = 0, dfb = 0;
+        if (q->dphi != 0 || r->pts[k ^ 1].dphi != 0) {
+            double dom;
+            moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+        } /* else the cut and its piece stay: moving_cut's ds = +-0, dfg = dfb = 0 */
         cu += dfg;
         cw += dfb;
         xt[2 * i + 1] += cu * (1 - q->s);
