@@ -1320,16 +1320,27 @@ static double outside_whole(tirenv_ring *r, const double xw[], size_t *j_out)
     return w_max;
 }
 
-/* No point of the window's outside pts[k0 .. k1) touches at xw. */
-static int free_clear(const tirenv_ring *r, size_t k0, size_t k1, const double xw[])
+/* No point of the window's outside pts[k0 .. k1) touches at xw. Each one found clear is
+ * written as a free point of the answer (no force, its overlap from xw): if they all are, the
+ * answer is the sub-window's; if not, the window is solved again, which writes them all. */
+static int free_clear(tirenv_ring *r, size_t k0, size_t k1, const double xw[])
 {
     for (size_t k = 0; k < r->n_pts; ++k) {
         if (k == k0)
             k = k1;
         if (k >= r->n_pts)
             break;
-        if (touches(r, &r->pts[k], xw))
-            return 0;
+        tirenv_ring_point *q = &r->pts[k];
+        if (q->d == -INFINITY) {
+            q->e = -INFINITY;
+        } else {
+            const double u = lin_u(r, q, xw);
+            if (q->d > u || q->d - lin_w(r, q, xw) > r->par.t_r) /* touches */
+                return 0;
+            q->e = q->d - u;
+        }
+        q->st = 0;
+        q->f = 0;
     }
     return 1;
 }
@@ -1497,17 +1508,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                                 n, w_out, j_out, r->theta[j_out], T->law.w_0);
     }
     T->n_sub += sub != 0;
-    /* The window's free points, clear of the ground: no force, their overlap from xw. */
-    for (size_t k = 0; k < n_pts; ++k) {
-        if (k == k0)
-            k = k1;
-        if (k >= n_pts)
-            break;
-        tirenv_ring_point *q = &r->pts[k];
-        q->st = 0;
-        q->f = 0;
-        q->e = q->d == -INFINITY ? -INFINITY : q->d - lin_u(r, q, xw);
-    }
+    /* The window's free points, clear of the ground, were written by free_clear. */
     /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
      * and u on this window, dw and du there too with dF_z/dz. */
     for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j) {
@@ -1537,6 +1538,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         xt[i] = 0;
     double sum_c = 0, sum_s = 0;
     size_t k_first = 1, k_last = 0; /* the first and the last point in contact */
+    double e_pts = 0; /* their largest tread compression u - w (see e_max below) */
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         q->f = 0;
@@ -1544,12 +1546,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
             q->e = -INFINITY;
             continue;
         }
-        q->e = q->d - at_u(r, q, x); /* the ground's overlap with the tread surface */
+        const double u = at_u(r, q, x);
+        q->e = q->d - u; /* the ground's overlap with the tread surface */
         if (q->st == 0)
             continue;
         if (k_first > k_last)
             k_first = k;
         k_last = k;
+        const double v = u - at_w(r, q, x);
+        if (v > e_pts)
+            e_pts = v;
         const size_t i = q->j - ls;
         const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double fg = 0, fb = 0, cu = 0, cw = 0;
@@ -1618,18 +1624,15 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     /* The diagnostics: the largest tread compression u - w, at the nodes and the points in
      * contact (the free nodes' from xw). */
     double e_max = 0; /* "v > e_max": fmax(e_max, v) without its call, the same bits (e_max
-                       * is never NaN; a NaN v is passed over; of two zeros the first kept) */
+                       * is never NaN; a NaN v is passed over; of two zeros the first kept:
+                       * so the largest, in any order, the points' taken in the force pass) */
     for (size_t i = 0; i < n; ++i) {
         const double v = xw[2 * i + 1] - xw[2 * i];
         if (v > e_max)
             e_max = v;
     }
-    for (size_t k = 0; k < r->n_pts; ++k)
-        if (r->pts[k].st) {
-            const double v = at_u(r, &r->pts[k], x) - at_w(r, &r->pts[k], x);
-            if (v > e_max)
-                e_max = v;
-        }
+    if (e_pts > e_max)
+        e_max = e_pts;
     r->tread_max = fmin(e_max, t_r);
     leave(r, &sv);
     r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
