@@ -10,6 +10,7 @@
  * passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, each
  * with the weight dtheta: the rays model exactly. */
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,17 +46,17 @@ static int reserve(void **buf, size_t *cap, size_t n, size_t sz)
     return 0;
 }
 
-/* The points' array: aligned to a cache line, each point two of them (ring_impl.h), grown as
- * reserve grows the others (aligned_alloc has no realloc: copied). */
-enum { PTS_ALIGN = 64 };
-_Static_assert(sizeof(tirenv_ring_point) == 2 * PTS_ALIGN, "a point is two cache lines");
+/* The points' array: aligned as a point is, to a cache line (ring_impl.h), grown as reserve
+ * grows the others (aligned_alloc has no realloc: copied). */
+_Static_assert(offsetof(tirenv_ring_point, e) + sizeof(double) <= 64,
+               "the fields the Newton steps read lie in a point's first cache line");
 
 static int reserve_pts(tirenv_ring *r, size_t n)
 {
     if (n <= r->cap_pts)
         return 0;
     const size_t c = tirenv_core__capacity(r->cap_pts, 256, n);
-    tirenv_ring_point *nb = aligned_alloc(PTS_ALIGN, c * sizeof *nb);
+    tirenv_ring_point *nb = aligned_alloc(_Alignof(tirenv_ring_point), c * sizeof *nb);
     if (!nb)
         return TIRENV_ENOMEM;
     if (r->pts)
