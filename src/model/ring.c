@@ -335,24 +335,16 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
     ground_angles(p, x, z, reach, ang);
     const size_t m_b = (size_t)fmin((double)(r->M / 4), ang[0] / r->dth + 2);
     const size_t m_f = (size_t)fmin((double)(r->M / 4), ang[1] / r->dth + 2);
-    const int status = tirenv_ring__sample(r, p, x, z, r->i0 - m_b, r->i0 + m_f);
+    /* Without lugs every point's tread stiffness is the same: computed once, as each
+     * point's would be. The points out of reach are marked, and the nodes of the others
+     * found, as the points are written. */
+    const int lugs = r->par.lug_count > 0;
+    const double k_t = lugs ? NAN : tirenv_ring__tread_kappa(r, 0, x) / (r->R * r->dth);
+    size_t win[2];
+    const int status = tirenv_ring__sample(r, p, x, z, r->i0 - m_b, r->i0 + m_f, k_t, win);
     if (status)
         return status;
-    size_t first = r->M, last = 0;
-    /* Without lugs every point's tread stiffness is the same: computed once, as each
-     * point's would be. */
-    const int lugs = r->par.lug_count > 0;
-    const double k_t = lugs ? 0 : tirenv_ring__tread_kappa(r, 0, x) / (r->R * r->dth);
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        tirenv_ring_point *q = &r->pts[k];
-        if (!(q->d > -r->par.t_r)) {
-            q->d = -INFINITY;
-            continue;
-        }
-        first = q->j < first ? q->j : first;
-        last = q->j + 1 > last ? q->j + 1 : last;
-        q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
-    }
+    size_t first = win[0], last = win[1];
     if (first > last) {
         r->n_pts = 0; /* no ground within reach */
         return 0;
@@ -384,11 +376,16 @@ static double patch_length_smooth(const tirenv_ring *r)
 {
     const tirenv_ring_point *q = r->pts;
     size_t k1 = r->n_pts, k2 = 0;
-    for (size_t k = 0; k < r->n_pts; ++k)
-        if (q[k].st != 0) {
-            k1 = k < k1 ? k : k1;
-            k2 = k;
-        }
+    if (r->tread) { /* the shear-coupled tread's solve found them */
+        k1 = r->k_first;
+        k2 = r->k_last;
+    } else {
+        for (size_t k = 0; k < r->n_pts; ++k)
+            if (q[k].st != 0) {
+                k1 = k < k1 ? k : k1;
+                k2 = k;
+            }
+    }
     if (k1 > k2)
         return 0;
     double len = q[k2].X - q[k1].X;

@@ -10,6 +10,7 @@
  * passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, each
  * with the weight dtheta: the rays model exactly. */
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +43,27 @@ static int reserve(void **buf, size_t *cap, size_t n, size_t sz)
         return TIRENV_ENOMEM;
     *buf = nb;
     *cap = c;
+    return 0;
+}
+
+/* The points' array: aligned as a point is, to a cache line (ring_impl.h), grown as reserve
+ * grows the others (aligned_alloc has no realloc: copied). */
+_Static_assert(offsetof(tirenv_ring_point, e) + sizeof(double) <= 64,
+               "the fields the Newton steps read lie in a point's first cache line");
+
+static int reserve_pts(tirenv_ring *r, size_t n)
+{
+    if (n <= r->cap_pts)
+        return 0;
+    const size_t c = tirenv_core__capacity(r->cap_pts, 256, n);
+    tirenv_ring_point *nb = aligned_alloc(_Alignof(tirenv_ring_point), c * sizeof *nb);
+    if (!nb)
+        return TIRENV_ENOMEM;
+    if (r->pts)
+        memcpy(nb, r->pts, r->cap_pts * sizeof *nb);
+    free(r->pts);
+    r->pts = nb;
+    r->cap_pts = c;
     return 0;
 }
 
@@ -133,7 +155,8 @@ static int same_bits(const double *a, const double *b, size_t n)
 /* The piece [a, b] of node interval j (nodes j, j + 1): its two points. prev_L: the line of
  * the piece whose points were written last, if that piece ends where this one begins (else
  * NULL): where a's cut and the line are the same bits, a's ray is that point's, whose
- * values are copied rather than computed again (the same operations on the same operands). */
+ * values are copied rather than computed again (the same operations on the same operands;
+ * a point out of reach has d = -INFINITY then, as the one it is copied from has). */
 static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, const double L[4],
                          const double prev_L[4], double x, double z, int inside)
 {
@@ -180,8 +203,10 @@ static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, c
  * pieces between them, and each piece's line from a ray along its middle. Rays of one side are
  * cast outward from the vertical, so each walk starts where the last one ended. */
 int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                        size_t ja, size_t jb)
+                        size_t ja, size_t jb, double k_t, size_t win[2])
 {
+    size_t wl[2] = {r->M, 0}; /* win, local while the points are written */
+    win[0] = wl[0], win[1] = wl[1];
     const double *X = p->x, *Z = p->z, reach = r->R0 + r->par.t_r;
     const double phi_a = r->theta[ja], phi_b = r->theta[jb];
     /* The vertices within reach below the centre, by angle. */
@@ -205,7 +230,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     if (nv > 1)
         qsort(v, nv, sizeof *v, by_angle);
     const size_t n_pieces = (jb - ja) + nv;
-    if (reserve((void **)&r->pts, &r->cap_pts, 2 * n_pieces, sizeof *r->pts) ||
+    if (reserve_pts(r, 2 * n_pieces) ||
         reserve((void **)&r->lines, &r->cap_lines, n_pieces, sizeof *r->lines))
         return TIRENV_ENOMEM;
     v = r->cuts;
@@ -254,6 +279,18 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         const cut a = {c->pa, c->sa, c->ca, c->da}, b = {c->pb, c->sb, c->cb, c->db};
         const int after = i > 0 && c[-1].hit; /* the points written last are c[-1]'s */
         piece_points(r, &a, &b, c->j, c->L, after ? c[-1].L : NULL, x, z, inside);
+        /* Its points out of reach, or within it (see the top of tirenv_ring__sample). */
+        for (size_t kq = r->n_pts - 2; kq < r->n_pts; ++kq) {
+            tirenv_ring_point *q = &r->pts[kq];
+            if (!(q->d > -r->par.t_r)) {
+                q->d = -INFINITY;
+                continue;
+            }
+            wl[0] = q->j < wl[0] ? q->j : wl[0];
+            wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
+            q->k_t = isnan(k_t) ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
+        }
     }
+    win[0] = wl[0], win[1] = wl[1];
     return 0;
 }

@@ -84,20 +84,28 @@ void tirenv_ring__band_solve(const tirenv_ring_band *A, double b[]);
 enum { TIRENV_RING_FREE = 0, TIRENV_RING_T_BASIC = 1, TIRENV_RING_B_BASIC = 2 };
 
 /* A quadrature point of the continuous contact (ring_ground.c, ring_smooth.c): an end of a
- * piece of the window along which the ground is one segment, in node interval j. */
+ * piece of the window along which the ground is one segment, in node interval j. Aligned to 64
+ * bytes (128 in all on 64-bit targets; ring_ground.c allocates the array so): what the contact
+ * solve's passes over the points read at every Newton step (their states, energy, line search
+ * and system) lies in its first 64, one cache line a point; what an evaluation reads once (the
+ * forces, dF_z/dz) in the rest. */
 typedef struct {
-    double phi, sn, cs;    /* angle (rad) and its sine and cosine */
-    double omega;          /* weight: half its piece's angle, rad */
+    _Alignas(64) double d; /* penetration R0 - rho (m; -INFINITY: none) */
     double s;              /* place in the interval: the tread there is (1 - s) w_j + s w_j+1 */
+    double omega;          /* weight: half its piece's angle, rad */
+    double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
     size_t j;              /* the interval's first node */
-    double d, dd;          /* penetration R0 - rho (m; -INFINITY: none) and its d/dz */
+    long knot;             /* the shear-coupled tread's knot at the point in the last solve's
+                            * knots (ring_shear.c), -1: none (a point at a node) */
+    unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+    double e;              /* last evaluation: tread compression, m */
+    double phi, sn, cs;    /* angle (rad) and its sine and cosine */
+    double dd;             /* d(d)/dz, m/m */
     double dphi;           /* d(phi)/dz: a ground vertex's cut moves with the centre (rad/m),
                             * 0 at a node */
     double ddt;            /* d(d)/dz along the moving cut, dd + (dd/dphi)*dphi */
     double X;              /* ground abscissa, m */
-    double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
-    double e, f;           /* last evaluation: tread compression (m) and ground force (N) */
-    unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+    double f;              /* last evaluation: ground force, N */
 } tirenv_ring_point;
 
 /* A piece of the window between two cuts (nodes or ground vertices), and the ground line its
@@ -158,12 +166,16 @@ struct tirenv_ring {
     size_t n_sub;          /* its evaluations answered on the sub-window of their contact
                             * (ring_smooth.c; the tests count them) */
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
+    size_t k_first, k_last;   /* the shear-coupled tread's last solve: its first and last
+                               * point in contact (k_first > k_last: none) */
 };
 
 /* The quadrature points of the continuous contact over nodes ja .. jb (ring_ground.c):
- * r->pts, r->n_pts. TIRENV_ENOMEM if its workspace cannot grow. */
+ * r->pts, r->n_pts; those out of reach (d <= -t_r) with d = -INFINITY, the others with the
+ * tread stiffness k_t (N/m^2; NAN: each its own, lugs) and within the nodes win[0] ..
+ * win[1] (win[0] > win[1]: none). TIRENV_ENOMEM if its workspace cannot grow. */
 int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                        size_t ja, size_t jb);
+                        size_t ja, size_t jb, double k_t, size_t win[2]);
 
 /* The points pts[*k0 .. *k1) of the intervals of nodes first .. last, from pts[kf .. kl] in
  * them: the sub-windows of the nodes in contact (ring_smooth.c, ring_shear.c). */

@@ -63,9 +63,7 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
                         double xt[], double g[], int *factored)
 {
     const size_t N = nw->N;
-    for (size_t k = 0; k < r->n_pts; ++k)
-        r->pts[k].st = 255; /* none yet */
-    nw->set_states(r, x);
+    nw->set_states(r, x); /* every point's (its count of changes not needed) */
     *factored = 0;
     size_t polish = 0; /* full Newton steps taken after the line search stalled */
     for (size_t it = 0; it < TIRENV_RING_NEWTON_MAX_ITER; ++it) {
@@ -74,9 +72,13 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
         if (nw->factor(r, nw->K, xn))
             return TIRENV_RING_NEWTON_BREAKDOWN;
         nw->solve(r, xn);
-        double step = 0;
-        for (size_t i = 0; i < N; ++i)
-            step = fmax(step, fabs(xn[i] - x[i]));
+        double step = 0; /* "v > step": fmax(step, v) without its call, the same bits (step
+                          * is never NaN and v = |...| never -0; a NaN v is passed over) */
+        for (size_t i = 0; i < N; ++i) {
+            const double v = fabs(xn[i] - x[i]);
+            if (v > step)
+                step = v;
+        }
         /* The states at the Newton point: unchanged, it is the minimum. */
         const size_t changed = nw->set_states(r, xn);
         if ((changed == 0 && (nw->nl_tol == 0 || step <= nw->nl_tol)) ||

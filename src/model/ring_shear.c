@@ -45,16 +45,31 @@
 
 enum { BAND_P = 4, TAIL = 4, NB = 6 };
 
-/* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t rows are dense
- * (the window's ends coupled through the exterior), and its Cholesky factor in place: L[5 i + k]
- * = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[a][i] = A[N - t + a][i]
- * for i < N - t; T the dense t x t tail (lower triangle). */
+/* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t <= TAIL rows are
+ * dense (the window's ends coupled through the exterior), and its Cholesky factor in place:
+ * L[5 i + k] = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[TAIL i + a] =
+ * A[N - t + a][i] for i < N - t (the tail rows interleaved, so that a column's four are
+ * adjacent: two pairs of SSE2 lanes); T the dense t x t tail (lower triangle). */
 typedef struct {
     size_t N, t;
     double *L;
-    double *B[TAIL];
+    double *B;
     double T[TAIL][TAIL];
 } tband;
+
+/* Two doubles in SSE2 lanes: each lane's product and difference are the scalar ones, bit for
+ * bit (no fused multiply-add in the baseline x86-64 the library is built for, nor elsewhere
+ * without -ffp-contract). */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+static inline v2d v2_load(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void v2_store(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
 struct tirenv_ring_tread {
     size_t M;
@@ -79,8 +94,7 @@ struct tirenv_ring_tread {
     double *kp;         /* 2 M + cap_k: the driver's workspace */
     /* The knots of the last solve (vertex cuts inside node intervals), m of them, in angle
      * order; per point of r->pts its knot (-1: at a node). */
-    size_t m, cap_k, cap_pk;
-    long *pknot;        /* cap_pk */
+    size_t m, cap_k;
     size_t *kj;         /* the knot's interval, as its first node's window index */
     double *kd, *ko;    /* the knots' own stiffness: diagonal, and to the next knot (0 if the
                          * next is in another interval), N/m */
@@ -113,8 +127,8 @@ static void band_reset(tband *A, size_t N, size_t t)
     A->N = N;
     A->t = t;
     memset(A->L, 0, (BAND_P + 1) * N * sizeof *A->L);
-    for (size_t a = 0; a < t; ++a)
-        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    if (t > 0)
+        memset(A->B, 0, TAIL * N * sizeof *A->B);
     memset(A->T, 0, sizeof A->T);
 }
 
@@ -125,72 +139,119 @@ static void band_add(tband *A, size_t i, size_t k, double v)
     if (k < m)
         A->L[(BAND_P + 1) * i + (k - i)] += v;
     else if (i < m)
-        A->B[k - m][i] += v;
+        A->B[TAIL * i + (k - m)] += v;
     else
         A->T[k - m][i - m] += v;
 }
 
-/* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite. */
+/* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
+ * With the full tail, the interior columns (all but the last BAND_P of the band) come first,
+ * unrolled, their updates two SSE2 lanes at a time and the tail block's lower triangle held in
+ * registers until they end: each entry gets the same operations in the same order as in the
+ * general loop below, so the same bits. */
 static int band_factor(tband *A)
 {
     const size_t N = A->N, t = A->t, m = N - t;
     double *L = A->L;
-    for (size_t i = 0; i < m; ++i) {
+    size_t i = 0;
+    if (t == TAIL && m > BAND_P) {
+        double(*T)[TAIL] = A->T;
+        v2d t10 = {T[1][0], T[1][1]}, t20 = {T[2][0], T[2][1]}, t30 = {T[3][0], T[3][1]},
+            t32 = {T[3][2], T[3][3]};
+        double t00 = T[0][0], t22 = T[2][2];
+        int broke = 0;
+        for (; i + BAND_P < m; ++i) {
+            double *c = L + (BAND_P + 1) * i;
+            if (!(c[0] > 0)) {
+                broke = 1;
+                break;
+            }
+            const double lii = sqrt(c[0]), inv = 1 / lii;
+            c[0] = lii;
+            const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
+            c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
+            double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+                   *r4 = r3 + (BAND_P + 1);
+            /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
+             * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
+            const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
+            const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
+            v2_store(r1, v2_load(r1) - c12 * vc1);
+            v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
+            v2_store(r2, v2_load(r2) - c23 * vc2);
+            r2[2] -= c4 * c2;
+            v2_store(r3, v2_load(r3) - c34 * vc3);
+            r4[0] -= c4 * c4;
+            /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
+             * -= B[a][i] c_k, each entry's one operation of this column. */
+            double *b = A->B + TAIL * i;
+            const v2d vinv = {inv, inv};
+            const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
+            v2_store(b, b01);
+            v2_store(b + 2, b23);
+            const double ck[BAND_P] = {c1, c2, c3, c4};
+            for (size_t k = 1; k <= BAND_P; ++k) {
+                const v2d vc = {ck[k - 1], ck[k - 1]};
+                double *bk = b + TAIL * k;
+                v2_store(bk, v2_load(bk) - b01 * vc);
+                v2_store(bk + 2, v2_load(bk + 2) - b23 * vc);
+            }
+            /* T[a][b] -= B[a][i] B[b][i], b <= a. */
+            const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
+            t00 -= b01[0] * b01[0];
+            t10 -= v1 * b01;
+            t20 -= v2 * b01;
+            t22 -= b23[0] * b23[0];
+            t30 -= v3 * b01;
+            t32 -= v3 * b23;
+        }
+        T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
+        T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
+        if (broke)
+            return 1;
+    }
+    for (; i < m; ++i) {
         double *c = L + (BAND_P + 1) * i;
         if (!(c[0] > 0))
             return 1;
         const double lii = sqrt(c[0]), inv = 1 / lii;
         c[0] = lii;
         const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
-        if (kmax == BAND_P && t == TAIL) {
-            /* The interior column, unrolled: the same operations on each entry as below. */
-            const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
-            c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
-            double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
-                   *r4 = r3 + (BAND_P + 1);
-            r1[0] -= c1 * c1, r1[1] -= c2 * c1, r1[2] -= c3 * c1, r1[3] -= c4 * c1;
-            r2[0] -= c2 * c2, r2[1] -= c3 * c2, r2[2] -= c4 * c2;
-            r3[0] -= c3 * c3, r3[1] -= c4 * c3;
-            r4[0] -= c4 * c4;
-            double bi[TAIL];
-            for (size_t a = 0; a < TAIL; ++a) {
-                double *b = A->B[a] + i;
-                bi[a] = b[0] * inv;
-                b[0] = bi[a];
-                b[1] -= bi[a] * c1, b[2] -= bi[a] * c2, b[3] -= bi[a] * c3, b[4] -= bi[a] * c4;
-            }
-            for (size_t a = 0; a < TAIL; ++a)
-                for (size_t b = 0; b <= a; ++b)
-                    A->T[a][b] -= bi[a] * bi[b];
-            continue;
-        }
         for (size_t k = 1; k <= kmax; ++k)
             c[k] *= inv;
+        double *const B = A->B;
         for (size_t a = 0; a < t; ++a)
-            A->B[a][i] *= inv;
+            B[TAIL * i + a] *= inv;
         for (size_t k1 = 1; k1 <= kmax; ++k1) {
             double *c1 = L + (BAND_P + 1) * (i + k1);
             for (size_t k2 = k1; k2 <= kmax; ++k2)
                 c1[k2 - k1] -= c[k2] * c[k1];
             for (size_t a = 0; a < t; ++a)
-                A->B[a][i + k1] -= A->B[a][i] * c[k1];
+                B[TAIL * (i + k1) + a] -= B[TAIL * i + a] * c[k1];
         }
         for (size_t a = 0; a < t; ++a)
             for (size_t b = 0; b <= a; ++b)
-                A->T[a][b] -= A->B[a][i] * A->B[b][i];
+                A->T[a][b] -= B[TAIL * i + a] * B[TAIL * i + b];
     }
     /* The dense tail, Schur complement of the band: src/core's Cholesky. */
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
-/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). */
-static void band_solve(const tband *A, double x[])
+/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
+ * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
+ * full tail two lanes at a time; the same operations in the same order for every t. */
+static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
+                                                               const size_t t)
 {
-    const size_t N = A->N, t = A->t, m = N - t;
+    const size_t N = A->N, m = N - t;
     const double *L = A->L;
+    const double *B = A->B;
     double y[TAIL];
     for (size_t a = 0; a < t; ++a)
         y[a] = x[m + a];
+    v2d y01 = {0, 0}, y23 = {0, 0};
+    if (t == TAIL)
+        y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
     for (size_t i = 0; i < m; ++i) {
         double v = x[i];
         if (i >= BAND_P) { /* unrolled: the same operations in the same order */
@@ -203,14 +264,25 @@ static void band_solve(const tband *A, double x[])
             for (size_t k = 1; k <= i; ++k)
                 v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
         }
-        x[i] = v / L[(BAND_P + 1) * i];
-        for (size_t a = 0; a < t; ++a)
-            y[a] -= A->B[a][i] * x[i];
+        const double xi = v / L[(BAND_P + 1) * i];
+        x[i] = xi;
+        if (t == TAIL) {
+            const v2d vx = {xi, xi};
+            y01 -= v2_load(B + TAIL * i) * vx;
+            y23 -= v2_load(B + TAIL * i + 2) * vx;
+        } else {
+            for (size_t a = 0; a < t; ++a)
+                y[a] -= B[TAIL * i + a] * xi;
+        }
     }
+    if (t == TAIL)
+        y[0] = y01[0], y[1] = y01[1], y[2] = y23[0], y[3] = y23[1];
     if (t > 0)
         tirenv_core__cholesky_solve(&A->T[0][0], t, TAIL, y, y);
     for (size_t a = 0; a < t; ++a)
         x[m + a] = y[a];
+    if (t == TAIL) /* now the tail's solution */
+        y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
     for (size_t i = m; i-- > 0;) {
         double v = x[i];
         if (i + BAND_P < m) {
@@ -223,19 +295,37 @@ static void band_solve(const tband *A, double x[])
             for (size_t k = 1; k + i < m; ++k)
                 v -= L[(BAND_P + 1) * i + k] * x[i + k];
         }
-        for (size_t a = 0; a < t; ++a)
-            v -= A->B[a][i] * x[m + a];
+        if (t == TAIL) { /* the products two at a time, subtracted in order */
+            const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+            v -= p01[0];
+            v -= p01[1];
+            v -= p23[0];
+            v -= p23[1];
+        } else {
+            for (size_t a = 0; a < t; ++a)
+                v -= B[TAIL * i + a] * y[a];
+        }
         x[i] = v / L[(BAND_P + 1) * i];
     }
 }
 
+/* The window's systems have the tail, the exterior's none. */
+static void band_solve(const tband *A, double x[])
+{
+    if (A->t == TAIL)
+        band_solve_t(A, x, TAIL);
+    else if (A->t == 0)
+        band_solve_t(A, x, 0);
+    else
+        band_solve_t(A, x, A->t);
+}
+
 static int band_alloc(tband *A, size_t N, size_t t)
 {
-    A->L = malloc((BAND_P + 1 + t) * N * sizeof *A->L);
+    A->L = malloc((BAND_P + 1 + (t > 0 ? TAIL : 0)) * N * sizeof *A->L);
     if (!A->L)
         return 1;
-    for (size_t a = 0; a < t; ++a)
-        A->B[a] = A->L + (BAND_P + 1 + a) * N;
+    A->B = A->L + (BAND_P + 1) * N;
     return 0;
 }
 
@@ -334,7 +424,6 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->cols);
     free(T->xw);
     free(T->col);
-    free(T->pknot);
     free(T->kj);
     free(T->kd);
     free(T->lc);
@@ -423,11 +512,19 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     const double *s = T->s, k_sh = T->k_sh;
     A->N = N;
     A->t = TAIL;
-    for (size_t a = 0; a < TAIL; ++a)
-        memset(A->B[a], 0, N * sizeof *A->B[a]);
+    memset(A->B, 0, TAIL * N * sizeof *A->B);
     memset(A->T, 0, sizeof A->T);
     double *L = A->L;
-    for (size_t e = 0; e < n; ++e) {
+    size_t e = 0;
+    /* The nodes whose two rows lie in the band with all their entries (then e + 2 < n): the
+     * rows below, written straight. */
+    for (; 2 * e + 1 + BAND_P < m; ++e) {
+        const double kap = T->kap[lo + e];
+        double *lw = L + (BAND_P + 1) * 2 * e, *lu = lw + (BAND_P + 1);
+        lw[0] = s[0] + kap, lw[1] = -kap, lw[2] = s[1], lw[3] = 0, lw[4] = s[2];
+        lu[0] = kap + 2 * k_sh, lu[1] = 0, lu[2] = -k_sh, lu[3] = 0, lu[4] = 0;
+    }
+    for (; e < n; ++e) {
         const double kap = T->kap[lo + e];
         const size_t iw = 2 * e, iu = iw + 1;
         /* Rows w_e, u_e: A[i + k][i] for k = 0 .. BAND_P, those of a tail row in B. */
@@ -583,28 +680,20 @@ static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[
     }
 }
 
-/* The knots of the window's points (see the top): T->m, T->pknot, T->kj and the knots' own
- * stiffness T->kd, T->ko. Nonzero if out of memory. */
+/* The knots of the window's points (see the top): T->m, each point's knot, T->kj and the knots'
+ * own stiffness T->kd, T->ko. Nonzero if out of memory. */
 static int find_knots(tirenv_ring *r)
 {
     tirenv_ring_tread *T = r->tread;
-    if (r->n_pts > T->cap_pk) { /* geometric: settles at the largest window's */
-        const size_t cap = tirenv_core__capacity(T->cap_pk, 256, r->n_pts);
-        long *pk = realloc(T->pknot, cap * sizeof *pk);
-        if (!pk)
-            return 1;
-        T->pknot = pk;
-        T->cap_pk = cap;
-    }
     size_t m = 0;
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
         const int inner = q->s > 0 && q->s < 1;
-        const int same = inner && k > 0 && T->pknot[k - 1] >= 0 && r->pts[k - 1].j == q->j &&
+        const int same = inner && k > 0 && r->pts[k - 1].knot >= 0 && r->pts[k - 1].j == q->j &&
                          r->pts[k - 1].phi == q->phi;
         if (inner && !same)
             ++m;
-        T->pknot[k] = inner ? (long)m - 1 : -1;
+        r->pts[k].knot = inner ? (long)m - 1 : -1;
     }
     if (reserve_knots(T, m))
         return 1;
@@ -612,10 +701,10 @@ static int find_knots(tirenv_ring *r)
     /* Each knot's interval and angle; then the sub-intervals and the stiffness. */
     double *phi = T->kphi;
     for (size_t k = 0; k < r->n_pts; ++k)
-        if (T->pknot[k] >= 0) {
-            T->kj[T->pknot[k]] = r->pts[k].j - r->lo;
-            phi[T->pknot[k]] = r->pts[k].phi;
-            T->kdphi[T->pknot[k]] = r->pts[k].dphi;
+        if (r->pts[k].knot >= 0) {
+            T->kj[r->pts[k].knot] = r->pts[k].j - r->lo;
+            phi[r->pts[k].knot] = r->pts[k].phi;
+            T->kdphi[r->pts[k].knot] = r->pts[k].dphi;
         }
     const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
     for (size_t k = 0; k < m; ++k) {
@@ -634,7 +723,8 @@ static int find_knots(tirenv_ring *r)
 /* A point's knot (-1: none, a point at a node). */
 static long knot_of(const tirenv_ring *r, const tirenv_ring_point *q)
 {
-    return r->tread->pknot[q - r->pts];
+    (void)r;
+    return q->knot;
 }
 
 /* A point's tread surface and belt, interpolated (the surface with its knot's hat). */
@@ -1166,12 +1256,15 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
             break;
         /* The exterior runs from node b + 1 round to node a - 1. */
         const size_t ee = j > b ? j - b - 1 : ne - (a - j);
-        for (size_t h = 0; h < 2; ++h) {
-            double sum = 0;
-            for (size_t e = 0; e < NB; ++e)
-                sum += cols[e * Ne + 2 * ee + h] * f[e];
-            v[2 * (j - lo) + h] = -sum;
+        /* w and u (h = 0, 1) in two lanes: sum_h = sum_e cols[e Ne + 2 ee + h] f[e], from 0
+         * in the order of e, as one lane each would. */
+        v2d sum = {0, 0};
+        for (size_t e = 0; e < NB; ++e) {
+            const v2d fe = {f[e], f[e]};
+            sum += v2_load(cols + e * Ne + 2 * ee) * fe;
         }
+        v[2 * (j - lo)] = -sum[0];
+        v[2 * (j - lo) + 1] = -sum[1];
     }
 }
 
@@ -1227,16 +1320,27 @@ static double outside_whole(tirenv_ring *r, const double xw[], size_t *j_out)
     return w_max;
 }
 
-/* No point of the window's outside pts[k0 .. k1) touches at xw. */
-static int free_clear(const tirenv_ring *r, size_t k0, size_t k1, const double xw[])
+/* No point of the window's outside pts[k0 .. k1) touches at xw. Each one found clear is
+ * written as a free point of the answer (no force, its overlap from xw): if they all are, the
+ * answer is the sub-window's; if not, the window is solved again, which writes them all. */
+static int free_clear(tirenv_ring *r, size_t k0, size_t k1, const double xw[])
 {
     for (size_t k = 0; k < r->n_pts; ++k) {
         if (k == k0)
             k = k1;
         if (k >= r->n_pts)
             break;
-        if (touches(r, &r->pts[k], xw))
-            return 0;
+        tirenv_ring_point *q = &r->pts[k];
+        if (q->d == -INFINITY) {
+            q->e = -INFINITY;
+        } else {
+            const double u = lin_u(r, q, xw);
+            if (q->d > u || q->d - lin_w(r, q, xw) > r->par.t_r) /* touches */
+                return 0;
+            q->e = q->d - u;
+        }
+        q->st = 0;
+        q->f = 0;
     }
     return 1;
 }
@@ -1404,19 +1508,17 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                                 n, w_out, j_out, r->theta[j_out], T->law.w_0);
     }
     T->n_sub += sub != 0;
-    /* The window's free points, clear of the ground: no force, their overlap from xw. */
-    for (size_t k = 0; k < n_pts; ++k) {
-        if (k == k0)
-            k = k1;
-        if (k >= n_pts)
-            break;
-        tirenv_ring_point *q = &r->pts[k];
-        q->st = 0;
-        q->f = 0;
-        q->e = q->d == -INFINITY ? -INFINITY : q->d - lin_u(r, q, xw);
-    }
-    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j)
+    /* The window's free points, clear of the ground, were written by free_clear. */
+    /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
+     * and u on this window, dw and du there too with dF_z/dz. */
+    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j) {
+        if (j >= lo && j < lo + n) {
+            if (!dfz_dz)
+                T->dw[j] = T->du[j] = 0;
+            continue;
+        }
         r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    }
     T->pred[2] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
@@ -1435,6 +1537,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     for (size_t i = 0; i < N + m; ++i)
         xt[i] = 0;
     double sum_c = 0, sum_s = 0;
+    size_t k_first = 1, k_last = 0; /* the first and the last point in contact */
+    double e_pts = 0; /* their largest tread compression u - w (see e_max below) */
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         q->f = 0;
@@ -1442,9 +1546,16 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
             q->e = -INFINITY;
             continue;
         }
-        q->e = q->d - at_u(r, q, x); /* the ground's overlap with the tread surface */
+        const double u = at_u(r, q, x);
+        q->e = q->d - u; /* the ground's overlap with the tread surface */
         if (q->st == 0)
             continue;
+        if (k_first > k_last)
+            k_first = k;
+        k_last = k;
+        const double v = u - at_w(r, q, x);
+        if (v > e_pts)
+            e_pts = v;
         const size_t i = q->j - ls;
         const double k_b = TIRENV_RING_BELT_LAYER * q->k_t;
         double fg = 0, fb = 0, cu = 0, cw = 0;
@@ -1467,8 +1578,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
             continue;
         /* -d(grad E)/dz at fixed x: the ground moving along the point's cut (q->ddt), and, at
          * a vertex's cut, the cut itself moving (its place s and its piece's weight). */
-        double ds, dom, dfg, dfb;
-        moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+        double ds = 0, dfg = 0, dfb = 0;
+        if (q->dphi != 0 || r->pts[k ^ 1].dphi != 0) {
+            double dom;
+            moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+        } /* else the cut and its piece stay: moving_cut's ds = +-0, dfg = dfb = 0 */
         cu += dfg;
         cw += dfb;
         xt[2 * i + 1] += cu * (1 - q->s);
@@ -1510,20 +1624,19 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     /* The diagnostics: the largest tread compression u - w, at the nodes and the points in
      * contact (the free nodes' from xw). */
     double e_max = 0; /* "v > e_max": fmax(e_max, v) without its call, the same bits (e_max
-                       * is never NaN; a NaN v is passed over; of two zeros the first kept) */
+                       * is never NaN; a NaN v is passed over; of two zeros the first kept:
+                       * so the largest, in any order, the points' taken in the force pass) */
     for (size_t i = 0; i < n; ++i) {
         const double v = xw[2 * i + 1] - xw[2 * i];
         if (v > e_max)
             e_max = v;
     }
-    for (size_t k = 0; k < r->n_pts; ++k)
-        if (r->pts[k].st) {
-            const double v = at_u(r, &r->pts[k], x) - at_w(r, &r->pts[k], x);
-            if (v > e_max)
-                e_max = v;
-        }
+    if (e_pts > e_max)
+        e_max = e_pts;
     r->tread_max = fmin(e_max, t_r);
     leave(r, &sv);
+    r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
+    r->k_last = k_last + k0;
     if (dfz_dz) {
         memcpy(dxw + 2 * (a - lo), xt, N * sizeof *xt);
         if (sub)
@@ -1609,7 +1722,7 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         for (size_t k = 0; k < N; ++k)
             K[i * N + k] = k > i ? 0
                            : i < m ? (i - k <= BAND_P ? A.L[(BAND_P + 1) * k + (i - k)] : 0)
-                           : k < m ? A.B[i - m][k]
+                           : k < m ? A.B[TAIL * k + (i - m)]
                                    : A.T[i - m][k - m];
     free(A.L);
     return 0;
