@@ -199,10 +199,10 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
  * 430/50R38's round values, tir_mftyre.tir's the 205/60R15's), the ring is searched on that
  * law and the vertical law together (the 430's own Q_FZ2 = 0, linear; tir_mftyre.tir's Q_FZ2
  * identified on the Winkler ring first) with a carcass that softens on the shear-coupled
- * tread: the cam within 5 % of it (measured 1.5 / 2.3 % and 1.3 / 1.6 %; on the Winkler rings
+ * tread: the cam within 5 % of it (measured 1.6 / 2.3 % and 1.4 / 1.7 %; on the Winkler rings
  * they were 5.1 / 46.6 % and 0.3 / 24.1 %: another tire). Not within 5 %: the springs model
  * identified on those rings, which stiffens with the load where they now follow nearly linear
- * laws (the 205/60R15's springs model misses its ring so, 14.7 %): 11.4 % in deflection on
+ * laws (the 205/60R15's springs model misses its ring so, 14.7 %): 11.3 % in deflection on
  * the 430 (its law linear), 5.4 % on tir_mftyre.tir, bounded at half a per cent above. */
 typedef struct {
     double springs_ring[2], cam_ring[2], springs_cam[2]; /* deflection, contact length */
@@ -212,16 +212,16 @@ static void test_derived_pairs(void **state)
 {
     (void)state;
     /* Measured (%): 335/65R22.5 2.52/1.32, 0.25/0.61, 2.60/1.51; HMMWV 2.49/1.52, 0.68/0.46,
-     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 11.43/4.23, 1.51/2.31,
-     * 13.14/2.52; tir_mftyre.tir 5.37/0.80, 1.32/1.58, 6.56/0.77 (the last two on the rings
+     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 11.35/4.25, 1.57/2.31,
+     * 13.13/2.55; tir_mftyre.tir 5.36/1.88, 1.41/1.72, 6.87/2.22 (the last two on the rings
      * searched on their own laws; before, on the Winkler rings, cam - ring 5.08/46.63 and
      * 0.32/24.05). */
     static const pair_bounds bound[N_MF] = {
         {{0.031, 0.019}, {0.008, 0.012}, {0.032, 0.021}},
         {{0.030, 0.021}, {0.012, 0.010}, {0.033, 0.018}},
         {{0.050, 0.036}, {0.018, 0.008}, {0.045, 0.033}},
-        {{0.120, 0.048}, {0.021, 0.029}, {0.137, 0.031}},
-        {{0.059, 0.013}, {0.019, 0.021}, {0.071, 0.013}},
+        {{0.119, 0.048}, {0.021, 0.029}, {0.137, 0.031}},
+        {{0.059, 0.024}, {0.020, 0.023}, {0.074, 0.028}},
     };
     for (size_t f = MF_FIRST; f < N_MF; f++) {
         tirenv_tire t;
@@ -317,14 +317,14 @@ static void test_205_pairs(void **state)
  * issue's bound is 10 %; before Q_FZ2 was derived they were 10 to 25 % above); their secant
  * is the law's, below it. Not met: tir_mftyre.tir, whose ring is searched on its own contact
  * law (section 14.2): the springs model identified on that ring, its patch the long one of
- * the file's Q_RA1, Q_RA2, stiffens faster with the load, +11.4 % at FNOMIN (ring -1.4 %),
+ * the file's Q_RA1, Q_RA2, stiffens faster with the load, +11.1 % at FNOMIN (ring -1.5 %),
  * bounded at half a per cent above. A file's own linear law (the 430/50R38's Q_FZ2 = 0) is
  * its secant: FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
 static void test_derived_from_mftyre(void **state)
 {
     (void)state;
     static const double TANGENT_TOL_RING = 0.035, TANGENT_TOL_SPRINGS = 0.065,
-                        TANGENT_TOL_SPRINGS_ON_LAWS = 0.119;
+                        TANGENT_TOL_SPRINGS_ON_LAWS = 0.116;
     const tirenv_tire def = tirenv_tire_default();
     for (size_t f = MF_FIRST; f < N_MF; f++) {
         tirenv_tire t;
