@@ -160,9 +160,9 @@ static const char *const mf_files[] = {
 };
 enum { N_MF = sizeof mf_files / sizeof mf_files[0], N_OWN_CAM = 2, N_OWN_LAW = 3 };
 /* The sanitizer build derives the 185/80R14 and the 430/50R38 (the 335/65R22.5 and the
- * HMMWV left out, as cli_tir.sh does there, and tir_mftyre.tir, whose ring searched on its
- * own laws took 20 ring tables there, 33 s of this test's CPU with the 430's 10): the same
- * code over fewer files; the Release build all five. */
+ * HMMWV left out, as cli_tir.sh does there, and tir_mftyre.tir: the rings searched on their
+ * own laws, 20 tables for it and 10 for the 430, added 33 s to this test's CPU there, the
+ * 430's alone about 10 s): the same code over fewer files; the Release build all five. */
 #ifdef __SANITIZE_ADDRESS__
 enum { MF_FIRST = 2, MF_END = N_MF - 1 };
 #else
