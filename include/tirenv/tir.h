@@ -74,7 +74,9 @@ typedef struct {
  * ASPECT_RATIO) so that its flat-ground deflection at FNOMIN is the file's, and says so in
  * origin->note. Where it derives the ring of a file whose vertical law is VERTICAL_STIFFNESS
  * alone (no Q_FZ1, Q_FZ2), the cam's Q_FZ2 is identified on that ring with VERTICAL_STIFFNESS
- * its tangent at FNOMIN, and the file's deflection is that law's (docs/models.md 14.2).
+ * its tangent at FNOMIN, and the file's deflection is that law's (docs/models.md 14.2). A
+ * derived ring of a file with its own Q_RA1, Q_RA2 is searched on that contact law and the
+ * vertical law together (a softening carcass on the shear-coupled tread, said in the note).
  * need (TIRENV_TIR_* bits): the models that must describe this tire; one that can be neither
  * read nor derived is TIRENV_EINVAL naming the missing key, where the others
  * keep *tire's values with a note. On failure *tire is unchanged. */

@@ -2,7 +2,8 @@
 /* A tire file's enveloping models derived from its MF-Tyre keys (docs/models.md section 14):
  * the file is read a second time with a schema of the MF-Tyre keys that describe the tire's
  * vertical behaviour, and the springs and ring models a file has no section for are scaled
- * to the file's deflection at its nominal load. */
+ * to the file's deflection at its nominal load; a derived ring of a file with a contact law
+ * of its own (Q_RA1, Q_RA2) is searched on that law too (derive_on_laws). */
 #include "formats/flat_inverse.h"
 #include "formats/propfile.h"
 #include "tirenv/cam.h"
@@ -569,6 +570,359 @@ static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, const vertical_
     return TIRENV_OK;
 }
 
+/* docs/models.md section 14.2, "A derived ring on a file's own laws": a file that gives the
+ * cam's contact law (Q_RA1, Q_RA2) of its own and no [ENVELOPING_RING] gets a ring that
+ * follows that law as well as the vertical law: the ring of section 5.1 whose carcass
+ * softens (CARCASS_SOFTENING_DEFLECTION w_s, CARCASS_LINEAR_DEFLECTION w_0 = w_s*W0_RATIO) on
+ * the shear-coupled tread (TREAD_SHEAR LAWS_G_T, NODE_ANGLE 0.25 degrees), as the 205/60R15's
+ * ring was searched on TNO's laws. Five keys are searched, their logs: FOUNDATION_STIFFNESS
+ * k_c, w_s, BELT_BENDING_STIFFNESS EI, TREAD_STIFFNESS k_t and BELT_WIDTH b_p (held within
+ * 0.4 to 1.0 times WIDTH, as scripts/ring-on-laws.py holds it), on ten residuals: at each of
+ * the cam's deflections d_i at 0.5 to 1.5 FNOMIN the log of the ring's load over G_i and of
+ * its contact length over the cam's, from one force evaluation each at the centre height
+ * R0 - d_i (tirenv_model_flat_at_height: no inversion). Levenberg and Marquardt's method on
+ * their sum of squares, the Jacobian by forward differences at the start and then Broyden's
+ * rank-one updates, again by differences when a step fails twice; at most LAWS_MAX_TABLES
+ * ring tables. */
+enum { N_LAWS = 5, N_H = N_LOADS, N_RES = 2 * N_H, LAWS_MAX_TABLES = 30 };
+static const double LAWS_G_T = 5e5, W0_RATIO = 0.02, LAWS_SEARCH_DTHETA = M_PI / 360.0,
+                    LAWS_KT_START = 12;
+
+typedef struct {
+    tirenv_tire t;                       /* the ring's template */
+    const mf_keys *k;
+    double G[N_H], d[N_H], l[N_H];       /* the cam's: N, m, m */
+    double b_lo, b_hi;                   /* BELT_WIDTH's bounds, m */
+    int tables;                          /* ring tables evaluated */
+} laws_search;
+
+static void laws_set(const laws_search *s, const double x[N_LAWS], tirenv_tire *t)
+{
+    *t = s->t;
+    t->ring.k_f = exp(x[0]);
+    t->ring.w_cs = exp(x[1]);
+    t->ring.w_c0 = W0_RATIO * t->ring.w_cs;
+    t->ring.EI = exp(x[2]);
+    t->ring.k_t = exp(x[3]);
+    t->ring.b_p = exp(x[4]);
+}
+
+/* The ten residuals of the ring of x; TIRENV_OK or the ring's refusal. */
+static int laws_residuals(laws_search *s, const double x[N_LAWS], double r[N_RES],
+                          tirenv_diag *diag)
+{
+    tirenv_tire t;
+    laws_set(s, x, &t);
+    s->tables++;
+    int status = tirenv_tire_check(&t, diag);
+    if (status)
+        return status;
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+    if (!m)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
+                            "the ring searched on the file's laws is not a valid tire");
+    for (size_t i = 0; i < N_H && !status; i++) {
+        tirenv_flat f;
+        status = tirenv_model_flat_at_height(m, t.springs.R0 - s->d[i], &f, diag);
+        if (!status && !(f.load > 0 && f.contact_length > 0))
+            status = tirenv_error(diag, TIRENV_ERANGE, "", 0, "ring",
+                                  "the ring searched carries no load at %g m", s->d[i]);
+        if (!status) {
+            r[i] = log(f.load / s->G[i]);
+            r[N_H + i] = log(f.contact_length / s->l[i]);
+        }
+    }
+    tirenv_model_free(m);
+    return status;
+}
+
+static double max_abs(const double r[N_RES])
+{
+    double m = 0;
+    for (size_t i = 0; i < N_RES; i++)
+        m = fmax(m, fabs(r[i]));
+    return m;
+}
+
+static double sum_sq(const double r[N_RES])
+{
+    double s = 0;
+    for (size_t i = 0; i < N_RES; i++)
+        s += r[i] * r[i];
+    return s;
+}
+
+/* BELT_WIDTH within its bounds. */
+static void laws_clamp(const laws_search *s, double x[N_LAWS])
+{
+    x[4] = fmax(log(s->b_lo), fmin(log(s->b_hi), x[4]));
+}
+
+/* The Jacobian by forward differences of LAWS_H in each log. */
+static int laws_jacobian(laws_search *s, const double x[N_LAWS], const double r[N_RES],
+                         double J[N_RES][N_LAWS], tirenv_diag *diag)
+{
+    static const double LAWS_H = 0.02;
+    for (size_t j = 0; j < N_LAWS; j++) {
+        double y[N_LAWS], ry[N_RES];
+        memcpy(y, x, sizeof y);
+        const double h = j == 4 && x[4] + LAWS_H > log(s->b_hi) ? -LAWS_H : LAWS_H;
+        y[j] += h;
+        const int status = laws_residuals(s, y, ry, diag);
+        if (status)
+            return status;
+        for (size_t i = 0; i < N_RES; i++)
+            J[i][j] = (ry[i] - r[i]) / h;
+    }
+    return TIRENV_OK;
+}
+
+/* Solves the n x n system A y = b in place (Gaussian elimination, partial pivoting); 0, or -1
+ * for a singular A. */
+static int solve_small(size_t n, double A[N_LAWS][N_LAWS], double b[N_LAWS])
+{
+    for (size_t c = 0; c < n; c++) {
+        size_t p = c;
+        for (size_t i = c + 1; i < n; i++)
+            if (fabs(A[i][c]) > fabs(A[p][c]))
+                p = i;
+        if (!(fabs(A[p][c]) > 0))
+            return -1;
+        for (size_t j = 0; j < n; j++) {
+            const double a = A[c][j];
+            A[c][j] = A[p][j], A[p][j] = a;
+        }
+        const double bb = b[c];
+        b[c] = b[p], b[p] = bb;
+        for (size_t i = c + 1; i < n; i++) {
+            const double f = A[i][c] / A[c][c];
+            for (size_t j = c; j < n; j++)
+                A[i][j] -= f * A[c][j];
+            b[i] -= f * b[c];
+        }
+    }
+    for (size_t c = n; c-- > 0;) {
+        for (size_t j = c + 1; j < n; j++)
+            b[c] -= A[c][j] * b[j];
+        b[c] /= A[c][c];
+    }
+    return 0;
+}
+
+/* The search from x: x and r become the best ring found and its residuals. Levenberg and
+ * Marquardt's damped normal equations (lambda on the diagonal, divided by 3 after a step
+ * that lowers the sum of squares, times 4 after one that does not; a step at most 1 in each
+ * log), the Jacobian updated along each step taken by Broyden's rank-one formula and made
+ * again by differences after two steps in a row that fail (a ring the model refuses fails).
+ * It stops when the largest residual is within LAWS_STOP (2.5 %: within the issue's 5 % with
+ * room for the shipped resolution and the comparison at fixed loads; at 2 % the tests' two
+ * files took 21 and 22 tables for their cam within 2.3 and 1.6 % of the ring, at 2.5 % 10
+ * and 20 for 2.3 and 1.7 %), when a step gains less than 1e-3 of the sum, after five
+ * failures in a row, or at LAWS_MAX_TABLES tables. A failure of the start or of a Jacobian is
+ * returned (the caller keeps the Winkler ring and says why). */
+static int laws_search_run(laws_search *s, double x[N_LAWS], double r[N_RES], tirenv_diag *diag)
+{
+    static const double LAWS_STOP = 0.025, MAX_LOG_STEP = 1;
+    double J[N_RES][N_LAWS];
+    int status = laws_residuals(s, x, r, diag);
+    if (!status)
+        status = laws_jacobian(s, x, r, J, diag);
+    if (status)
+        return status;
+    double f = sum_sq(r), lambda = 1e-2;
+    int fails = 0;
+    while (s->tables < LAWS_MAX_TABLES && max_abs(r) > LAWS_STOP) {
+        double A[N_LAWS][N_LAWS], g[N_LAWS], y[N_LAWS], dx[N_LAWS], ry[N_RES], dd = 0;
+        for (size_t a = 0; a < N_LAWS; a++) {
+            g[a] = 0;
+            for (size_t i = 0; i < N_RES; i++)
+                g[a] -= J[i][a] * r[i];
+            for (size_t b = 0; b < N_LAWS; b++) {
+                A[a][b] = 0;
+                for (size_t i = 0; i < N_RES; i++)
+                    A[a][b] += J[i][a] * J[i][b];
+            }
+            A[a][a] *= 1 + lambda;
+        }
+        if (solve_small(N_LAWS, A, g))
+            break;
+        for (size_t a = 0; a < N_LAWS; a++)
+            y[a] = x[a] + fmax(-MAX_LOG_STEP, fmin(MAX_LOG_STEP, g[a]));
+        laws_clamp(s, y);
+        for (size_t a = 0; a < N_LAWS; a++) {
+            dx[a] = y[a] - x[a];
+            dd += dx[a] * dx[a];
+        }
+        if (!(dd > 1e-16))
+            break;
+        tirenv_diag refused;
+        const int st = laws_residuals(s, y, ry, &refused);
+        const double fy = st ? HUGE_VAL : sum_sq(ry);
+        if (!st) {
+            for (size_t i = 0; i < N_RES; i++) {
+                double Jdx = 0;
+                for (size_t a = 0; a < N_LAWS; a++)
+                    Jdx += J[i][a] * dx[a];
+                const double u = (ry[i] - r[i] - Jdx) / dd;
+                for (size_t a = 0; a < N_LAWS; a++)
+                    J[i][a] += u * dx[a];
+            }
+        }
+        if (fy < f) {
+            const double gain = f - fy;
+            memcpy(x, y, sizeof y);
+            memcpy(r, ry, sizeof ry);
+            f = fy;
+            lambda = fmax(1e-6, lambda / 3);
+            fails = 0;
+            if (gain < 1e-3 * f)
+                break;
+        } else {
+            lambda *= 4;
+            if (++fails == 2 && s->tables + N_LAWS <= LAWS_MAX_TABLES) {
+                if ((status = laws_jacobian(s, x, r, J, diag)))
+                    return status;
+            } else if (fails > 4) {
+                break;
+            }
+        }
+    }
+    return TIRENV_OK;
+}
+
+/* The ring's load (N) with its centre at R0 - rho (m): one force evaluation. */
+static int ring_load_at_height(const tirenv_tire *t, double rho, double *G, tirenv_diag *diag)
+{
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, t);
+    if (!m)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
+                            "the ring searched on the file's laws is not a valid tire");
+    tirenv_flat f;
+    const int status = tirenv_model_flat_at_height(m, t->springs.R0 - rho, &f, diag);
+    tirenv_model_free(m);
+    *G = status ? 0 : f.load;
+    return status;
+}
+
+/* scale_to for the searched ring, by its load at the height R0 - rho_n (one force evaluation
+ * a step, where scale_to inverts a flat inversion): EI, T, k_c, k_t by one factor c until it
+ * carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but for the
+ * air's share), at most MAX_STEPS. */
+static int scale_at_height(tirenv_tire *t, double fnomin, double rho_n, tirenv_diag *diag)
+{
+    enum { MAX_STEPS = 30 };
+    double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
+    double base[4];
+    for (size_t i = 0; i < 4; i++)
+        base[i] = *stiff[i];
+    double c0 = 1, G0 = 0, G1 = 0;
+    int status = ring_load_at_height(t, rho_n, &G0, diag);
+    if (status)
+        return status;
+    double c1 = fnomin / G0;  /* the proportional step */
+    for (int step = 0; step < MAX_STEPS; step++) {
+        for (size_t i = 0; i < 4; i++)
+            *stiff[i] = base[i] * c1;
+        if ((status = ring_load_at_height(t, rho_n, &G1, diag)))
+            return status;
+        if (fabs(G1 / fnomin - 1) <= 5e-8)
+            return TIRENV_OK;
+        double c2 = G1 != G0 ? c1 + (fnomin - G1) * (c1 - c0) / (G1 - G0) : c1 * fnomin / G1;
+        if (!(c2 > 0 && isfinite(c2)))
+            c2 = c1 * fnomin / G1;
+        c0 = c1, G0 = G1;
+        c1 = fmax(c1 / 4, fmin(c1 * 4, c2));
+    }
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "VERTICAL_STIFFNESS",
+                        "the ring searched on the file's laws found no scale carrying FNOMIN "
+                        "%g N at the file's deflection %g m", fnomin, rho_n);
+}
+
+/* The largest relative differences of two sets of flat states at the same loads. */
+static void set_miss(const flat_set *a, const flat_set *b, double *e_defl, double *e_l)
+{
+    *e_defl = *e_l = 0;
+    for (size_t i = 0; i < N_LOADS; i++) {
+        *e_defl = fmax(*e_defl, fabs(a->defl[i] - b->defl[i]) / b->defl[i]);
+        *e_l = fmax(*e_l, fabs(a->l[i] - b->l[i]) / b->l[i]);
+    }
+}
+
+/* What the search on the laws did, for the note. */
+typedef struct {
+    int searched;             /* the ring searched on the laws was kept */
+    int tables;               /* ring tables of the search */
+    double e_defl, e_l;       /* its cam-ring misses (kept or not) */
+    double w_defl, w_l;       /* the Winkler ring's */
+    char why[160];            /* why the search's ring could not be made, or "" */
+} laws_result;
+
+/* The ring of a file with its own contact law (section 14.2): first the ring on the vertical
+ * law as without it (ring_on_law: the Winkler tread; Q_FZ2 identified on it where the file's
+ * law is VERTICAL_STIFFNESS alone, and that law kept as the target), then the search above
+ * from that ring (its k_c and EI; w_s the law's deflection at FNOMIN, k_t LAWS_KT_START times
+ * k_c, as on the 205/60R15's ring and the 430/50R38's best, b_p 0.75 WIDTH) at
+ * LAWS_SEARCH_DTHETA, 0.5 degrees; the ring found, at the shipped 0.25 degrees, scaled to
+ * carry FNOMIN at the law's deflection there (scale_at_height) and tabled; the springs model
+ * identified on the ring kept. The search's ring is kept where
+ * its largest difference from the cam is below the Winkler ring's, else the Winkler ring (the
+ * note says which, and both differences). */
+static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
+                          const vertical_law *v, trial *tr, laws_result *lr, tirenv_diag *diag)
+{
+    memset(lr, 0, sizeof *lr);
+    tr->t = *t;
+    tr->tau = 0;
+    int status = ring_on_law(&tr->t, k, v, 0, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
+    if (status)
+        return status;
+    tirenv_tire c = tr->t;
+    if (v->derive_q_fz2)
+        c.cam.q_fz2 = tr->q_fz2;
+    flat_set cam;
+    if ((status = flats(tirenv_model_cam, &c, k->fnomin, &cam, diag)))
+        return status;
+    set_miss(&cam, &tr->ring, &lr->w_defl, &lr->w_l);
+    laws_search s = {.t = tr->t, .k = k};
+    s.t.ring.G_t = LAWS_G_T;
+    s.t.ring.dtheta = LAWS_SEARCH_DTHETA;
+    s.t.ring.contact = TIRENV_RING_CONTINUOUS;
+    const double width = (k->given & MF_WIDTH) && k->width > 0 ? k->width : tr->t.ring.b_p;
+    s.b_lo = 0.4 * width;
+    s.b_hi = 1.0 * width;
+    for (size_t i = 0; i < N_H; i++) {
+        s.G[i] = cam.G[i];
+        s.d[i] = cam.defl[i];
+        s.l[i] = cam.l[i];
+    }
+    double x[N_LAWS] = {log(tr->t.ring.k_f), log(tr->rho_n), log(tr->t.ring.EI),
+                        log(LAWS_KT_START * tr->t.ring.k_f), log(0.75 * width)};
+    laws_clamp(&s, x);
+    double r[N_RES];
+    tirenv_diag d2;
+    status = laws_search_run(&s, x, r, &d2);
+    lr->tables = s.tables;
+    trial on = *tr;
+    if (!status) {
+        laws_set(&s, x, &on.t);
+        on.t.ring.dtheta = M_PI / 720.0;
+        status = scale_at_height(&on.t, k->fnomin, tr->rho_n, &d2);
+    }
+    if (!status)
+        status = flats(tirenv_model_ring, &on.t, k->fnomin, &on.ring, &d2);
+    if (!status) {
+        set_miss(&cam, &on.ring, &lr->e_defl, &lr->e_l);
+        lr->searched = fmax(lr->e_defl, lr->e_l) < fmax(lr->w_defl, lr->w_l);
+    }
+    if (status)
+        snprintf(lr->why, sizeof lr->why, "%.40s: %.110s", d2.field, d2.message);
+    if (lr->searched)
+        *tr = on;
+    if (lack & TIRENV_TIR_SPRINGS)
+        return derive_springs(&tr->t, k, tr->rho_n, &tr->ring, diag);
+    return TIRENV_OK;
+}
+
 /* The largest relative differences of the cam's flat-ground states from the ring's at the
  * same loads: deflection and contact length. */
 static int cam_ring_miss(const tirenv_tire *t, double fnomin, const flat_set *ring,
@@ -690,6 +1044,19 @@ static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const 
     return status;
 }
 
+/* derive_models for a file with a contact law of its own (derive_on_laws). */
+static int derive_laws_models(tirenv_tire *t, const mf_keys *k, unsigned lack,
+                              const vertical_law *v, trial *tr, laws_result *lr, int *have_ring,
+                              tirenv_diag *diag)
+{
+    tr->t = *t;
+    const int status = derive_on_laws(t, k, lack, v, tr, lr, diag);
+    *have_ring = !status;
+    if (!status)
+        *t = tr->t;
+    return status;
+}
+
 /* What of the file's vertical law is not VERTICAL_STIFFNESS at NOMPRES (section 7.3): its own
  * Q_FZ1, and PFZ1's pressure factor at INFLPRES, which the cam and the derivation both take;
  * "" when neither. */
@@ -796,12 +1163,17 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
      * derivation is made again on the file's linear law, as without Q_FZ2, and the note says
      * why. */
     char no_law[sizeof diag->message] = "";
-    status = derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
+    /* A file with a contact law of its own gets a ring searched on it (derive_on_laws). */
+    const int on_laws = (lack & TIRENV_TIR_RING) && (origin->own & TIRENV_TIR_CAM);
+    laws_result lr;
+    status = on_laws ? derive_laws_models(&t, &k, lack, &law, &tr, &lr, &have_ring, diag)
+                     : derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
     if (status && law.derive_q_fz2 && strcmp(diag->field, "Q_FZ2") == 0) {
         snprintf(no_law, sizeof no_law, "%s", diag->message);
         law.derive_q_fz2 = 0;
         t = *tire;
-        status = derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
+        status = on_laws ? derive_laws_models(&t, &k, lack, &law, &tr, &lr, &have_ring, diag)
+                         : derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
     }
     if (status) {
         if (!diag->file[0])
@@ -822,6 +1194,17 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
                  "FOUNDATION_STIFFNESS = %.4g, TREAD_STIFFNESS = %.4g",
                  origin->note[0] ? "; " : "", t.ring.t_r, t.ring.EI, t.ring.T, t.ring.k_f,
                  t.ring.k_t);
+    if (on_laws && lr.searched)
+        note_add(origin, ", BELT_WIDTH = %.4g, CARCASS_SOFTENING_DEFLECTION = %.4g, "
+                 "CARCASS_LINEAR_DEFLECTION = %.4g, TREAD_SHEAR = %.4g, NODE_ANGLE 0.25 deg: "
+                 "searched on the file's own vertical and contact laws (%d ring tables; the "
+                 "Winkler ring without them: cam against ring %.1f / %.1f %%)", t.ring.b_p,
+                 t.ring.w_cs, t.ring.w_c0, t.ring.G_t, lr.tables, 100 * lr.w_defl,
+                 100 * lr.w_l);
+    else if (on_laws)
+        note_add(origin, ": the Winkler ring, none found nearer the file's own vertical and "
+                 "contact laws (%d ring tables searched: %s)", lr.tables,
+                 lr.why[0] ? lr.why : "its largest difference from the cam no smaller");
     if ((lack & TIRENV_TIR_RING) && !(k.given & (MF_INFLPRES | MF_NOMPRES)))
         note_add(origin, ", its air at %.4g kPa, the default tire's INFLPRES (the file gives "
                  "no INFLPRES or NOMPRES)", t.ring.p / 1e3);

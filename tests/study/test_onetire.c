@@ -159,12 +159,14 @@ static const char *const mf_files[] = {
     TIRENV_TEST_DATA "/tir_mftyre.tir",
 };
 enum { N_MF = sizeof mf_files / sizeof mf_files[0], N_OWN_CAM = 2, N_OWN_LAW = 3 };
-/* The sanitizer build derives the last three (the 335/65R22.5 and the HMMWV left out, as
- * cli_tir.sh does there): the same code over fewer files; the Release build all five. */
+/* The sanitizer build derives the 185/80R14 and the 430/50R38 (the 335/65R22.5 and the
+ * HMMWV left out, as cli_tir.sh does there, and tir_mftyre.tir: the rings searched on their
+ * own laws, 20 tables for it and 10 for the 430, added 33 s to this test's CPU there, the
+ * 430's alone about 10 s): the same code over fewer files; the Release build all five. */
 #ifdef __SANITIZE_ADDRESS__
-enum { MF_FIRST = 2 };
+enum { MF_FIRST = 2, MF_END = N_MF - 1 };
 #else
-enum { MF_FIRST = 0 };
+enum { MF_FIRST = 0, MF_END = N_MF };
 #endif
 
 /* File f read and its models derived (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING needed), once for
@@ -195,13 +197,15 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
  * derivation gained fails. The springs model is identified on the ring and the ring's
  * pretension raised until their contact lengths grow alike; the cam's Q_RA1, Q_RA2 and, for a
  * file whose vertical law is VERTICAL_STIFFNESS alone, its Q_FZ2 are identified on the ring.
- * What a file gives of its own is kept and its difference said (origin), and not bounded by
- * 5 %: the 430/50R38's Q_FZ2 = 0 (a linear law the ring, stiffening with the load, misses by
- * 5.1 % at the ends) and its own Q_RA1, Q_RA2 (round values: 46.6 % from the ring's patch),
- * tir_mftyre.tir's Q_RA1, Q_RA2 (the 205/60R15's, 24.1 %): no ring meets the 430's two laws
- * within 5 % (searched: 6.5 % at best, docs/models.md 14.2); those bounds are the measured
- * differences plus half a per cent, and the own contact laws are asserted to be another
- * tire's (over 20 % off: said, not mixed). */
+ * What a file gives of its own is kept. Where it is its contact law (Q_RA1, Q_RA2: the
+ * 430/50R38's round values, tir_mftyre.tir's the 205/60R15's), the ring is searched on that
+ * law and the vertical law together (the 430's own Q_FZ2 = 0, linear; tir_mftyre.tir's Q_FZ2
+ * identified on the Winkler ring first) with a carcass that softens on the shear-coupled
+ * tread: the cam within 5 % of it (measured 1.6 / 2.3 % and 1.4 / 1.7 %; on the Winkler rings
+ * they were 5.1 / 46.6 % and 0.3 / 24.1 %: another tire). Not within 5 %: the springs model
+ * identified on those rings, which stiffens with the load where they now follow nearly linear
+ * laws (the 205/60R15's springs model misses its ring so, 14.7 %): 11.3 % in deflection on
+ * the 430 (its law linear), 5.4 % on tir_mftyre.tir, bounded at half a per cent above. */
 typedef struct {
     double springs_ring[2], cam_ring[2], springs_cam[2]; /* deflection, contact length */
 } pair_bounds;
@@ -210,16 +214,18 @@ static void test_derived_pairs(void **state)
 {
     (void)state;
     /* Measured (%): 335/65R22.5 2.52/1.32, 0.25/0.61, 2.60/1.51; HMMWV 2.49/1.52, 0.68/0.46,
-     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 2.69/3.58, 5.08/46.63,
-     * 7.46/34.25; tir_mftyre.tir 3.09/1.33, 0.32/24.05, 2.95/20.46. */
+     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 11.35/4.25, 1.57/2.31,
+     * 13.13/2.55; tir_mftyre.tir 5.36/1.88, 1.41/1.72, 6.87/2.22 (the last two on the rings
+     * searched on their own laws; before, on the Winkler rings, cam - ring 5.08/46.63 and
+     * 0.32/24.05). */
     static const pair_bounds bound[N_MF] = {
         {{0.031, 0.019}, {0.008, 0.012}, {0.032, 0.021}},
         {{0.030, 0.021}, {0.012, 0.010}, {0.033, 0.018}},
         {{0.050, 0.036}, {0.018, 0.008}, {0.045, 0.033}},
-        {{0.032, 0.041}, {0.056, 0.472}, {0.080, 0.348}},
-        {{0.036, 0.019}, {0.009, 0.246}, {0.035, 0.210}},
+        {{0.119, 0.048}, {0.021, 0.029}, {0.137, 0.031}},
+        {{0.059, 0.024}, {0.020, 0.023}, {0.074, 0.028}},
     };
-    for (size_t f = MF_FIRST; f < N_MF; f++) {
+    for (size_t f = MF_FIRST; f < MF_END; f++) {
         tirenv_tire t;
         tirenv_tir_origin o;
         derived(f, &t, &o);
@@ -248,7 +254,12 @@ static void test_derived_pairs(void **state)
             assert_int_equal(o.own & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
             assert_int_equal(o.derived & TIRENV_TIR_CAM, 0);
             assert_non_null(strstr(o.note, "the file's own cam contact law kept"));
-            assert_true(e[1].l > 0.20);  /* the file's cam is another tire: said, not mixed */
+            /* Its cam is this tire: the ring is searched on its laws (section 14.2), with the
+             * softening carcass on the shear-coupled tread, and said. */
+            assert_non_null(strstr(o.note, "searched on the file's own vertical and contact laws"));
+            assert_true(e[1].defl <= 0.05 && e[1].l <= 0.05);
+            assert_true(t.ring.w_cs > 0 && t.ring.w_c0 > 0 && t.ring.G_t > 0);
+            assert_true(t.ring.dtheta == M_PI / 720.0);
         }
         if (f == N_OWN_LAW) {  /* the 430/50R38's Q_FZ2 = 0: its own law, kept and said */
             assert_int_equal(o.own & TIRENV_TIR_VERTICAL, TIRENV_TIR_VERTICAL);
@@ -306,14 +317,18 @@ static void test_205_pairs(void **state)
  * VERTICAL_STIFFNESS (to round-off) and the ring's and the springs model's tangents are near
  * it (measured: ring -2.9 to +1.3 %, springs +3.7 to +5.7 %; bounded at 3.5 and 6.5 %, the
  * issue's bound is 10 %; before Q_FZ2 was derived they were 10 to 25 % above); their secant
- * is the law's, below it. A file's own linear law (the 430/50R38's Q_FZ2 = 0) is its secant:
- * FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
+ * is the law's, below it. Not met: tir_mftyre.tir, whose ring is searched on its own contact
+ * law (section 14.2): the springs model identified on that ring, its patch the long one of
+ * the file's Q_RA1, Q_RA2, stiffens faster with the load, +11.1 % at FNOMIN (ring -1.5 %),
+ * bounded at half a per cent above. A file's own linear law (the 430/50R38's Q_FZ2 = 0) is
+ * its secant: FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
 static void test_derived_from_mftyre(void **state)
 {
     (void)state;
-    static const double TANGENT_TOL_RING = 0.035, TANGENT_TOL_SPRINGS = 0.065;
+    static const double TANGENT_TOL_RING = 0.035, TANGENT_TOL_SPRINGS = 0.065,
+                        TANGENT_TOL_SPRINGS_ON_LAWS = 0.116;
     const tirenv_tire def = tirenv_tire_default();
-    for (size_t f = MF_FIRST; f < N_MF; f++) {
+    for (size_t f = MF_FIRST; f < MF_END; f++) {
         tirenv_tire t;
         tirenv_tir_origin o;
         derived(f, &t, &o);
@@ -325,6 +340,7 @@ static void test_derived_from_mftyre(void **state)
         assert_true(t.springs.c_r != def.springs.c_r && t.ring.k_f != def.ring.k_f);
         const double k_file = t.cam.c_z;  /* VERTICAL_STIFFNESS as read */
         const int law_derived = (o.derived & TIRENV_TIR_VERTICAL) != 0;
+        const int own_cam = (o.own & TIRENV_TIR_CAM) != 0;
         const tirenv_model_type *types[] = {tirenv_model_springs, tirenv_model_ring,
                                             tirenv_model_cam};
         for (size_t k = 0; k < 3; k++) {
@@ -345,7 +361,9 @@ static void test_derived_from_mftyre(void **state)
                 assert_near(fl.stiffness, k_file, 0, 1e-12);
             else
                 assert_near(fl.stiffness, k_file, 0,
-                            types[k] == tirenv_model_ring ? TANGENT_TOL_RING : TANGENT_TOL_SPRINGS);
+                            types[k] == tirenv_model_ring ? TANGENT_TOL_RING
+                            : own_cam                     ? TANGENT_TOL_SPRINGS_ON_LAWS
+                                                          : TANGENT_TOL_SPRINGS);
         }
         if (law_derived)  /* the ring stiffens with the load: the secant is below */
             assert_true(o.fnomin / o.rho_nominal < 0.95 * k_file);
