@@ -43,9 +43,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
 {
     free(c->rows);
     free(c->vrows);
-    free(c->seen_tag);
-    free(c->seen_grp);
-    free(c->seen_pass);
+    free(c->seen);
     free(c->seen_sec);
     free(c->seen_todo);
     free(c->in_w);

@@ -297,21 +297,20 @@ typedef struct {
     size_t ij;
 } tirenv_springs__cc_key;
 
-/* What the vertex scan (springs_rows.c) proved of the ground vertices of one sector i at the
- * first height z_r it ran at for an x: that their rows between the elements of sector i were
- * dropped (at or below the chord of the rays' penetrations times the tread's bow), with what
- * it takes to prove that again for all of them at once at another height of the same x
- * without computing their rows (docs/models.md section 4.8, Cost): the least of their
- * margins, chords, depths and moves of t, and the largest bound on |dt/dz|; the check is
- * monotone in each, so what holds for these holds for every vertex of the group. */
+/* What the vertex scan (springs_rows.c) proved of one ground vertex at the first height z_r
+ * it ran at for an x: that its row between the elements of sector i was dropped (at or below
+ * the chord of the rays' penetrations times the tread's bow), with what it takes to prove
+ * that again at another height of the same x without computing the row (docs/models.md
+ * section 4.8, Cost). */
 typedef struct {
-    double margin;  /* the chord times the bow less h at z_r, less an allowance, m: least */
-    double chord;   /* the chord at the vertex's t at z_r, m: least */
-    double dz;      /* the vertex's depth dz_r below the centre at z_r, m: least (h falls at
-                     * least dz_r / R0 as fast as z rises, and z may move by 1 % of it) */
-    double dt_dz;   /* a bound on |dt/dz| while z moves within that, 1/m: largest */
-    double m_t;     /* how far t may move: min(t, 1 - t) - 2 t_snap at z_r: least */
-    unsigned long long epoch; /* the scan that made it (tirenv_springs__cc's seen_epoch) */
+    double margin;  /* the chord times the bow less h at z_r, less an allowance, m */
+    double chord;   /* the chord at the vertex's t at z_r, m */
+    double dz;      /* the vertex's depth dz_r below the centre at z_r, m: h falls at least
+                     * dz_r / R0 as fast as z rises, and z may move by 1 % of it */
+    double dt_dz;   /* a bound on |dt/dz| while z moves within that, 1/m */
+    double m_t;     /* how far t may move: min(t, 1 - t) - 2 t_snap at z_r; <= 0: nothing
+                     * proven */
+    size_t i;       /* the sector */
 } tirenv_springs__cc_seen;
 
 /* The most working rows between elements solved through their Schur complement. */
@@ -329,18 +328,12 @@ typedef struct {
     tirenv_springs__cc_row *vrows;
     size_t n_vrows, cap_vrows;
     /* The vertex scan's proofs at the last x, seen_x, on the profile of serial seen_serial,
-     * made at the first height seen_z it ran at there, for the vertices seen_j0 ..
-     * seen_j0 + seen_n - 1 (room for cap_seen): per vertex seen_tag, 1 + the sector whose
-     * group proof covers it, or 0 (none); per sector (N each, allocated once) its group
-     * proof seen_grp (valid where its epoch is seen_epoch, the last scan that made proofs)
-     * and whether it holds at the current later height, seen_pass; the sectors seen_lo ..
-     * seen_hi hold them; per sector (2 N) the chord's P_l - slack and P_r - P_l at seen_z
-     * (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
+     * made at the first height seen_z it ran at there, one for each vertex seen_j0 ..
+     * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
+     * per sector (6 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
+     * and room for what a later height needs of them (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
      * vertices the last scan skipped by the proofs (what the tests count) */
-    uint16_t *seen_tag;
-    tirenv_springs__cc_seen *seen_grp;
-    unsigned char *seen_pass;
-    unsigned long long seen_epoch;
+    tirenv_springs__cc_seen *seen;
     unsigned long long seen_serial;
     double seen_x, seen_z;
     size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped;

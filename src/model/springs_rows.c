@@ -139,23 +139,19 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
     return TIRENV_OK;
 }
 
-/* Room for the scan's proofs of n vertices (c->seen_tag, c->seen_todo) and for the sectors
- * of N elements (c->seen_sec, c->seen_grp, c->seen_pass). */
+/* Room for the scan's proofs of n vertices (c->seen, c->seen_todo) and for the sectors of N
+ * elements. */
 static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 {
-    if (!c->seen_sec && !(c->seen_sec = malloc(2 * N * sizeof *c->seen_sec)))
-        return TIRENV_ENOMEM;
-    if (!c->seen_grp && !(c->seen_grp = calloc(N, sizeof *c->seen_grp))) /* epoch 0: none */
-        return TIRENV_ENOMEM;
-    if (!c->seen_pass && !(c->seen_pass = malloc(N)))
+    if (!c->seen_sec && !(c->seen_sec = malloc(6 * N * sizeof *c->seen_sec)))
         return TIRENV_ENOMEM;
     if (n <= c->cap_seen)
         return TIRENV_OK;
     const size_t cap = tirenv_core__capacity(c->cap_seen, 64, n);
-    uint16_t *tag = realloc(c->seen_tag, cap * sizeof *tag);
-    if (!tag)
+    void *e = realloc(c->seen, cap * sizeof *c->seen);
+    if (!e)
         return TIRENV_ENOMEM;
-    c->seen_tag = tag;
+    c->seen = e;
     size_t *todo = realloc(c->seen_todo, cap * sizeof *todo);
     if (!todo)
         return TIRENV_ENOMEM;
@@ -167,12 +163,6 @@ static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 /* How far the centre may move from the height of a vertex's proof, as a fraction of the
  * vertex's depth dz_r below it: within it rho stays above (1 - seen_reach) rho_r. */
 static const double seen_reach = 0.01;
-
-/* A dropped vertex joins its sector's group proof only if its t may move by at least this
- * (min(t, 1 - t) - 2 t_snap >= seen_m_t_min): the group's least m_t bounds how far the
- * later heights may move, and the vertices next to a ray, whose bow's margin vanishes too,
- * would make the group fail nearly always; they are computed again instead. */
-static const double seen_m_t_min = 0.05;
 
 /* Ray e's penetration as the vertex rows take it: 0 outside [a, b] or without a crossing. */
 static inline double pen(size_t e, size_t a, size_t b, const double d[])
@@ -188,7 +178,7 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
 }
 
 /* At a later height z of the x the proofs were made at (vertex_rows' comment): the vertices
- * j0 .. j_end - 1 (within those proven) not covered by a group proof that holds at z,
+ * j0 .. j_end - 1 (within those proven) with no proof or one that does not hold at z,
  * ascending, into todo; returns their number, *skipped the others'. */
 static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                         const tirenv_profile *p, double z, size_t a, size_t b,
@@ -203,44 +193,42 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * chord over t in [0, 1]; what that takes from the margin (times the bow, 1 to B) with
      * h's rise but for its part proportional to the vertex's depth (Base); what the margin
      * loses a unit of t's move (the chord's slope |P_r - P_l| times the bow, the bow's slope
-     * ab_lo times the chord: Kq >= 0, top being); and |P_r - P_l| at z. A sector's P_r is
-     * the next one's P_l. */
+     * ab_lo times the chord); and |P_r - P_l| at z. A sector's P_r is the next one's P_l. */
     const double *const sA = c->seen_sec, *const sD = sA + N;
-    const tirenv_springs__cc_seen *const grp = c->seen_grp;
-    unsigned char *const pass = c->seen_pass;
-    const unsigned long long epoch = c->seen_epoch;
+    double *const Base = c->seen_sec + 2 * N, *const Kq = Base + N, *const Mu = Kq + N;
+    double *const aDz = Mu + N;
     /* h rises by at most -Delta + tol if z falls, -Delta dz_r / R0 + tol if it rises */
     const double h_rise = Delta > 0 ? tol : -Delta + tol;
     const double Dp = Delta > 0 ? Delta * ((1 - 1e-12) / T->R0) : 0;
     /* |Delta| <= seen_reach dz_r wherever aD / seen_reach (rounded up) <= dz_r */
     const double aD_reach = aD / seen_reach * (1 + 1e-12);
-    /* A group's proof holds if t moves less than m_t, z within 1 % of dz_r, the chord stays
-     * above zero and the margin covers h's rise, the chord's fall and t's move, each with
-     * the group's least or largest: every operation below is monotone in them (rounding to
-     * nearest is; Dp, |D|, Kq >= 0), so it then holds for every vertex of the group. */
     double Pl = pen(lo, a, b, d);
     for (size_t q = lo; q <= c->seen_hi; ++q) {
         const double Pr = pen(q + 1, a, b, d);
-        const tirenv_springs__cc_seen *const g = grp + q;
-        int ok = 0;
-        if (g->epoch == epoch) {
-            const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
-            const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
-            const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
-            const double Base = h_rise + (mu < 0 ? -mu * B : -mu);
-            const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
-            const double dt = aD * g->dt_dz;
-            ok = dt < g->m_t && aD_reach <= g->dz && g->chord + (mu - tol) >= fabs(D) * dt &&
-                 g->margin + Dp * g->dz >= Base + dt * Kq;
-        }
-        pass[q] = (unsigned char)ok;
+        const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
+        const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
+        const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
+        Base[q] = h_rise + (mu < 0 ? -mu * B : -mu);
+        Kq[q] = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
+        Mu[q] = mu - tol;
+        aDz[q] = fabs(D);
         Pl = Pr;
     }
+    /* A proof holds if t moves less than m_t, z within 1 % of dz_r, the chord stays above
+     * zero and the margin covers h's rise, the chord's fall and t's move. */
     size_t n = 0;
-    const uint16_t *const tag = c->seen_tag;
     for (size_t k = j0 - s0; k < j_end - s0; ++k) {
-        const unsigned t = tag[k];
-        if (!(t && pass[t - 1]))
+        const tirenv_springs__cc_seen *const e = c->seen + k;
+        int ok = 0;
+        if (e->m_t > 0) { /* a proof (the other fields are set only then) */
+            const double dt = aD * e->dt_dz;
+            if (dt < e->m_t && aD_reach <= e->dz) {
+                const size_t q = e->i;
+                ok = e->chord + Mu[q] >= aDz[q] * dt &&
+                     e->margin + Dp * e->dz >= Base[q] + dt * Kq[q];
+            }
+        }
+        if (!ok)
             todo[n++] = s0 + k;
     }
     *skipped = j_end - j0 - n;
@@ -253,8 +241,6 @@ typedef struct {
     const double *X, *Z, *st, *ct, *d;
     double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4, dt_dz_of;
     size_t N, a, b;
-    tirenv_springs__cc_seen *grp; /* the sectors' group proofs, made with epoch */
-    unsigned long long epoch;
 } scan_ctx;
 
 /* Along the scan: the last vertex's sector (where the next one's walk starts), sector ci's
@@ -266,10 +252,9 @@ typedef struct {
 } scan_state;
 
 /* Vertex j's row at (x, z), if it has one, at sc->out; where it is dropped between two
- * elements with t free to move by seen_m_t_min and tag is not NULL, its proof (vertex_rows'
- * comment) joined to its sector's group proof and 1 + the sector in *tag (which the caller
- * set to 0); sc along. */
-static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j, uint16_t *tag)
+ * elements and proof is not NULL, the proof (vertex_rows' comment) in *proof; sc along. */
+static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
+                               tirenv_springs__cc_seen *proof)
 {
     const double dx = C->X[j] - C->x, dz = C->z - C->Z[j];
     if (!(dz > 0))
@@ -323,7 +308,7 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j, uint
              * penetrations, which the elements' rows only raise): never binds. */
             if (sc->ci != i) {
                 sc->ci = i;
-                if (tag) { /* the sectors the proofs may be in: each passes here */
+                if (proof) { /* the sectors the proofs may be in: each passes here */
                     sc->lo = i < sc->lo ? i : sc->lo;
                     sc->hi = i > sc->hi ? i : sc->hi;
                 }
@@ -334,24 +319,11 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j, uint
             const double chord = (1 - t) * sc->P_l + t * sc->P_r - sc->slack_tau;
             const double thr = chord * (1 + C->ab_lo * t * (1 - t));
             if (!(h > thr)) {
-                const double m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap;
-                if (tag && m_t >= seen_m_t_min) {
-                    const double margin = thr - h - C->tol4, ch = chord - C->tol;
-                    const double dt_dz = fabs(dx) * C->dt_dz_of / rr;
-                    tirenv_springs__cc_seen *const g = C->grp + i;
-                    if (g->epoch != C->epoch)
-                        *g = (tirenv_springs__cc_seen){.margin = margin, .chord = ch,
-                                                       .dz = dz, .dt_dz = dt_dz, .m_t = m_t,
-                                                       .epoch = C->epoch};
-                    else {
-                        g->margin = margin < g->margin ? margin : g->margin;
-                        g->chord = ch < g->chord ? ch : g->chord;
-                        g->dz = dz < g->dz ? dz : g->dz;
-                        g->dt_dz = dt_dz > g->dt_dz ? dt_dz : g->dt_dz;
-                        g->m_t = m_t < g->m_t ? m_t : g->m_t;
-                    }
-                    *tag = (uint16_t)(i + 1);
-                }
+                if (proof)
+                    *proof = (tirenv_springs__cc_seen){
+                        .margin = thr - h - C->tol4, .chord = chord - C->tol, .dz = dz,
+                        .dt_dz = fabs(dx) * C->dt_dz_of / rr,
+                        .m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap, .i = i};
                 return;
             }
             r_j = i + 1;
@@ -425,7 +397,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * a few sectors' work an evaluation whatever the vertices, and a vertex's proof a
      * third of its row's test; elsewhere the scan runs as it did (the same rows either
      * way). */
-    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1) && N < UINT16_MAX;
+    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1);
     const int reuse = same_x && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
     if (!same_x)
         c->seen_serial = 0; /* no proofs at this x, unless made now */
@@ -437,9 +409,8 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         c->seen_z = z;
         c->seen_j0 = j0;
         c->seen_n = j_end - j0;
-        ++c->seen_epoch; /* the groups of earlier scans are void */
     }
-    uint16_t *const tag = c->seen_tag;
+    tirenv_springs__cc_seen *const seen = c->seen;
     /* the vertices to compute: todo[0 .. n_todo - 1] when reusing (j0 .. j_end - 1 but for
      * those proven dropped at z, *skipped), else j0 .. j_end - 1 */
     size_t skipped = 0;
@@ -454,13 +425,13 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
                         .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .tol = tol,
                         .tol4 = tol4, .dt_dz_of = dt_dz_of, .N = N, .a = a,
-                        .b = b, .grp = c->seen_grp, .epoch = c->seen_epoch};
+                        .b = b};
     /* i: a walk from the last vertex's sector is O(1) on a road */
     scan_state S = {.i = T->i0, .ci = SIZE_MAX, .lo = N, .hi = 0, .out = c->vrows};
     if (prove)
         for (size_t q = 0; q < n_todo; ++q) {
-            tag[q] = 0; /* no proof, unless made now */
-            scan_vertex(&C, &S, j0 + q, tag + q);
+            seen[q].m_t = 0; /* no proof, unless made now */
+            scan_vertex(&C, &S, j0 + q, seen + q);
         }
     else if (reuse)
         for (size_t q = 0; q < n_todo; ++q)
