@@ -307,9 +307,8 @@ typedef struct {
     double chord;   /* the chord at the vertex's t at z_r, m */
     double dz;      /* the vertex's depth dz_r below the centre at z_r, m: h falls at least
                      * dz_r / R0 as fast as z rises, and z may move by 1 % of it */
-    double dt_dz;   /* a bound on |dt/dz| while z moves within that, 1/m */
     double m_t;     /* how far t may move: min(t, 1 - t) - 2 t_snap at z_r; <= 0: nothing
-                     * proven */
+                     * proven (the bound on |dt/dz| is the sector's, springs_rows.c) */
     size_t i;       /* the sector */
 } tirenv_springs__cc_seen;
 
@@ -330,8 +329,9 @@ typedef struct {
     /* The vertex scan's proofs at the last x, seen_x, on the profile of serial seen_serial,
      * made at the first height seen_z it ran at there, one for each vertex seen_j0 ..
      * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
-     * per sector (6 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
-     * and room for what a later height needs of them (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
+     * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z
+     * and a bound on a proven vertex's |dt/dz|, and room for what a later height needs of
+     * them (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
      * vertices the last scan skipped by the proofs (what the tests count) */
     tirenv_springs__cc_seen *seen;
     unsigned long long seen_serial;

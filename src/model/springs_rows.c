@@ -143,7 +143,7 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
  * elements. */
 static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 {
-    if (!c->seen_sec && !(c->seen_sec = malloc(6 * N * sizeof *c->seen_sec)))
+    if (!c->seen_sec && !(c->seen_sec = malloc(7 * N * sizeof *c->seen_sec)))
         return TIRENV_ENOMEM;
     if (n <= c->cap_seen)
         return TIRENV_OK;
@@ -193,10 +193,13 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * chord over t in [0, 1]; what that takes from the margin (times the bow, 1 to B) with
      * h's rise but for its part proportional to the vertex's depth (Base); what the margin
      * loses a unit of t's move (the chord's slope |P_r - P_l| times the bow, the bow's slope
-     * ab_lo times the chord); and |P_r - P_l| at z. A sector's P_r is the next one's P_l. */
-    const double *const sA = c->seen_sec, *const sD = sA + N;
-    double *const Base = c->seen_sec + 2 * N, *const Kq = Base + N, *const Mu = Kq + N;
-    double *const aDz = Mu + N;
+     * ab_lo times the chord: Kq); and |P_r - P_l| at z. A sector's P_r is the next one's
+     * P_l. The bound on t's move, dt = aD sT (sT the sector's bound on |dt/dz|), is the
+     * same for every vertex of the sector, and so are the chord's fall dt |P_r - P_l| and
+     * what the margin must cover, Base + dt Kq: each is computed once a sector, side by
+     * side at Q + 4 q (dt, mu - tol, dt |P_r - P_l|, Base + dt Kq). */
+    const double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
+    double *const Q = c->seen_sec + 3 * N;
     /* h rises by at most -Delta + tol if z falls, -Delta dz_r / R0 + tol if it rises */
     const double h_rise = Delta > 0 ? tol : -Delta + tol;
     const double Dp = Delta > 0 ? Delta * ((1 - 1e-12) / T->R0) : 0;
@@ -208,10 +211,14 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
         const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
         const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
         const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
-        Base[q] = h_rise + (mu < 0 ? -mu * B : -mu);
-        Kq[q] = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
-        Mu[q] = mu - tol;
-        aDz[q] = fabs(D);
+        const double Base = h_rise + (mu < 0 ? -mu * B : -mu);
+        const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
+        const double dt = aD * sT[q];
+        double *const Qq = Q + 4 * q;
+        Qq[0] = dt;
+        Qq[1] = mu - tol;
+        Qq[2] = fabs(D) * dt;
+        Qq[3] = Base + dt * Kq;
         Pl = Pr;
     }
     /* A proof holds if t moves less than m_t, z within 1 % of dz_r, the chord stays above
@@ -221,12 +228,9 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
         const tirenv_springs__cc_seen *const e = c->seen + k;
         int ok = 0;
         if (e->m_t > 0) { /* a proof (the other fields are set only then) */
-            const double dt = aD * e->dt_dz;
-            if (dt < e->m_t && aD_reach <= e->dz) {
-                const size_t q = e->i;
-                ok = e->chord + Mu[q] >= aDz[q] * dt &&
-                     e->margin + Dp * e->dz >= Base[q] + dt * Kq[q];
-            }
+            const double *const Qq = Q + 4 * e->i;
+            ok = Qq[0] < e->m_t && aD_reach <= e->dz && e->chord + Qq[1] >= Qq[2] &&
+                 e->margin + Dp * e->dz >= Qq[3];
         }
         if (!ok)
             todo[n++] = s0 + k;
@@ -239,7 +243,7 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
  * penetrations d over [a, b], the proofs' allowances (vertex_rows). */
 typedef struct {
     const double *X, *Z, *st, *ct, *d;
-    double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4, dt_dz_of;
+    double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4;
     size_t N, a, b;
 } scan_ctx;
 
@@ -322,7 +326,6 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
                 if (proof)
                     *proof = (tirenv_springs__cc_seen){
                         .margin = thr - h - C->tol4, .chord = chord - C->tol, .dz = dz,
-                        .dt_dz = fabs(dx) * C->dt_dz_of / rr,
                         .m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap, .i = i};
                 return;
             }
@@ -424,7 +427,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
                         .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .tol = tol,
-                        .tol4 = tol4, .dt_dz_of = dt_dz_of, .N = N, .a = a,
+                        .tol4 = tol4, .N = N, .a = a,
                         .b = b};
     /* i: a walk from the last vertex's sector is O(1) on a road */
     scan_state S = {.i = T->i0, .ci = SIZE_MAX, .lo = N, .hi = 0, .out = c->vrows};
@@ -443,15 +446,27 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const size_t seen_lo = S.lo, seen_hi = S.hi;
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
-    if (prove) { /* the sectors' chords at z_r */
+    if (prove) { /* the sectors' chords at z_r, and their bounds on |dt/dz| */
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;
-        double *const sA = c->seen_sec, *const sD = sA + N;
+        double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
+        const double B = 1 + 0.25 * ab_lo; /* the bow's largest */
         double Pl = pen(seen_lo, a, b, d);
         for (size_t q = seen_lo; q <= seen_hi; ++q) {
             const double Pr = pen(q + 1, a, b, d);
             sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
             sD[q] = Pr - Pl;
+            /* A vertex proven in sector q was dropped: h <= thr <= max(P_l, P_r) B, so
+             * rho >= rho_lo = R0 - max(P_l, P_r) B (less an allowance), and its angle psi
+             * lies between the sector's rays and below the centre, in (-pi/2, pi/2), where
+             * |sin(psi)| is at most the larger of the rays' (if both point below the
+             * horizontal; else 1): the vertex's |dx| / rr = |sin(psi)| / rho is at most
+             * s_max / rho_lo, the same for the whole sector and with no division a vertex.
+             * Rounding far inside 1e-12. No bound (infinite: nothing proven) if rho_lo <= 0. */
+            const double rho_lo = (R0 - (Pl > Pr ? Pl : Pr) * B) * (1 - 1e-12) - tol;
+            const double s_max = ct[q] > 0 && ct[q + 1] > 0
+                                     ? fmax(fabs(st[q]), fabs(st[q + 1])) : 1;
+            sT[q] = rho_lo > 0 ? dt_dz_of * s_max / rho_lo * (1 + 1e-12) : INFINITY;
             Pl = Pr;
         }
     }
