@@ -14,8 +14,14 @@ TIRENV_BEGIN_DECLS
  * end heights. Immutable once built; shareable between models and threads. */
 typedef struct tirenv_profile tirenv_profile;
 
-/* Checks vertices for a profile: n >= 1, all finite, x non-decreasing, at most two vertices
- * at the same x. Returns TIRENV_OK or TIRENV_EINVAL with the reason in diag (field "x" or "z",
+/* The largest |x| and |z| of a vertex, and the longest segment between two vertices, m:
+ * beyond them the models lose their precision (docs/models.md section 2.1). */
+#define TIRENV_PROFILE_MAX_COORDINATE 1e9
+#define TIRENV_PROFILE_MAX_SEGMENT 1e7
+
+/* Checks vertices for a profile: n >= 1, all finite and within
+ * TIRENV_PROFILE_MAX_COORDINATE, no segment longer than TIRENV_PROFILE_MAX_SEGMENT, x
+ * non-decreasing, at most two vertices at the same x. Returns TIRENV_OK or TIRENV_EINVAL with the reason in diag (field "x" or "z",
  * line = 1-based vertex index). */
 int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv_diag *diag);
 
@@ -28,6 +34,12 @@ int tirenv_profile_check_vertex(size_t k, double x, double z, double x_prev, dou
 
 /* Builds a profile from n vertices (copied; x, z in m). NULL if invalid or out of memory. */
 tirenv_profile *tirenv_profile_alloc(size_t n, const double x[], const double z[]);
+
+/* As tirenv_profile_alloc, into *out, with the reason in diag: tirenv_profile_validate's
+ * (its file name, NULL or not, and no line: the message names the vertex) or TIRENV_ENOMEM.
+ * For readers whose rows become a profile. */
+int tirenv_profile_make(size_t n, const double x[], const double z[], const char *name,
+                        tirenv_profile **out, tirenv_diag *diag);
 
 /* Frees a profile; NULL is a no-op. */
 void tirenv_profile_free(tirenv_profile *p);

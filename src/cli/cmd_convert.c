@@ -392,11 +392,12 @@ static int pad_walls(const convert *cv, tirenv_profile **p, tirenv_diag *diag)
         px[m] = x[n - 1] + cv->pad;
         pz[m++] = z[n - 1];
     }
-    tirenv_profile *padded = tirenv_profile_alloc(m, px, pz);
+    tirenv_profile *padded;
+    const int status = tirenv_profile_make(m, px, pz, cv->in, &padded, diag);
     free(px);
     free(pz);
-    if (!padded)
-        return tirenv_error(diag, TIRENV_ENOMEM, cv->in, 0, "", "out of memory");
+    if (status)
+        return status;
     tirenv_profile_free(*p);
     *p = padded;
     return TIRENV_OK;

@@ -503,13 +503,15 @@ int cli_obstacle(const cli_options *o, tirenv_profile **out)
     }
     if (*out)
         return CLI_EXIT_OK;
-    /* The generators refuse non-positive sizes (and a zero step) with NULL. */
+    /* The generators refuse non-positive sizes (and a zero step) with NULL, and so does the
+     * profile check sizes beyond its limits (tirenv/profile.h). */
     const size_t i = obstacle_index(o->obstacle);
     const char *why = o->obstacle == CLI_STEP        ? "H nonzero"
                       : o->obstacle == CLI_TRAPEZOID ? "all positive, LBASE >= LTOP"
                                                      : "all positive";
-    cli_error("--%s %s: not a valid obstacle; expected %s, %s", obstacles[i].name,
-              o->obstacle_arg, obstacles[i].expected, why);
+    cli_error("--%s %s: not a valid obstacle; expected %s, %s, sizes up to %g m",
+              obstacles[i].name, o->obstacle_arg, obstacles[i].expected, why,
+              TIRENV_PROFILE_MAX_SEGMENT);
     return CLI_EXIT_DATA;
 }
 

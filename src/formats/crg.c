@@ -353,8 +353,8 @@ int tirenv_crg_track(const tirenv_crg *c, const tirenv_crg_track_spec *spec,
     int status = u && z ? tirenv_crg_track_rows(c, spec, 0, c->nu, u, z, diag)
                         : tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "",
                                        "out of memory");
-    if (!status && !(*out = tirenv_profile_alloc(c->nu, u, z)))
-        status = tirenv_error(diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
+    if (!status)
+        status = tirenv_profile_make(c->nu, u, z, c->src.name, out, diag);
     free(u);
     free(z);
     return status;

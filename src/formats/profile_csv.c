@@ -18,8 +18,8 @@ static int read_csv(tirenv_profile_csv__reader *rd, const char *path, tirenv_pro
     double *x = NULL, *z = NULL;  /* the vertices, m */
     size_t n = 0, cap = 0;
     int status = tirenv_profile_csv__reader_rest(rd, &x, &z, &n, &cap, diag);
-    if (status == TIRENV_OK && !(*out = tirenv_profile_alloc(n, x, z)))
-        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    if (status == TIRENV_OK)
+        status = tirenv_profile_make(n, x, z, path, out, diag);
     tirenv_profile_csv__reader_free(rd);
     free(x);
     free(z);

@@ -7,6 +7,7 @@
 #include "formats/profile_csv_impl.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -94,6 +95,17 @@ static inline int next_row(tirenv_profile_csv__reader *r, double *x, double *z, 
         status = tirenv_csv__number(&r->rd, &f[k], names[k], &v[k]);
     if (status)
         return status;
+    for (size_t k = 0; k < FIELDS; k++)
+        if (!(fabs(v[k]) <= TIRENV_PROFILE_MAX_COORDINATE))
+            return tirenv_csv__fail(&r->rd, f[k].column, names[k], "%s = %.31s is beyond "
+                                    "+-%g m; expected a road's coordinates (in m?)", names[k],
+                                    f[k].text, TIRENV_PROFILE_MAX_COORDINATE);
+    if (r->rows > 0 && v[0] - r->x_prev > TIRENV_PROFILE_MAX_SEGMENT)
+        return tirenv_csv__fail(&r->rd, f[0].column, "x_m", "x_m = %.31s is %g m after the "
+                                "previous vertex (%s); expected at most %g m (flat ground "
+                                "continues by itself before the first vertex and after the "
+                                "last)", f[0].text, v[0] - r->x_prev, r->prev_x,
+                                TIRENV_PROFILE_MAX_SEGMENT);
     if (r->rows > 0 && v[0] < r->x_prev)
         return tirenv_csv__fail(&r->rd, f[0].column, "x_m", "x_m decreases (%.31s after %s); "
                                 "expected non-decreasing x", f[0].text, r->prev_x);

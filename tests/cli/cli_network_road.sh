@@ -24,12 +24,21 @@ check "envelope --model nn --profile over the generated road: header, 5141 finit
      awk -F, "NR > 1 && (\$3 + 0 != \$3 || \$4 + 0 != \$4) { bad = 1 } END { exit bad }" rn.csv'
 # A road too long for the baseline's grid is refused with the count as a number, not 158
 # digits that filled the message and cut off what to do.
-printf 'x_m,z_m\n-1e155,0\n0,0.05\n1e155,0\n' >vast.csv
+# The longest a profile can be: 2e9 m (tirenv/profile.h), vertices 1e7 m apart.
+awk 'BEGIN { print "x_m,z_m"; for (i = -100; i <= 100; i++) print i "e7," (i ? 0 : 0.05) }' \
+    >vast.csv
 run "$bin" envelope --model nn --nn net.json --profile vast.csv --contact-length 0.33 \
     --x-from 0 --x-to 1 -o vast-out.csv
-check "a 2e155 m road: exit 2, the count 4e+157 and the advice in the message, no file" \
-    '[ $rc -eq 2 ] && grep -q "needs 4e+157 baseline points" err &&
+check "a 2e9 m road: exit 2, the count as a number and the advice in the message, no file" \
+    '[ $rc -eq 2 ] && grep -Eq "needs [0-9]+ baseline points" err &&
      grep -q "raise the spacing" err && no_file vast-out.csv'
+# Beyond that the profile is refused as read, naming the row.
+printf 'x_m,z_m\n-1e155,0\n0,0.05\n1e155,0\n' >vaster.csv
+run "$bin" envelope --model nn --nn net.json --profile vaster.csv --contact-length 0.33 \
+    --x-from 0 --x-to 1 -o vast-out.csv
+check "a 2e155 m road: exit 2 naming its first row, no file" \
+    '[ $rc -eq 2 ] && grep -q "vaster.csv:2:1: x_m: x_m = -1e155 is beyond" err &&
+     no_file vast-out.csv'
 printf 'x_m,z_m\n-0.05,0\n-0.05,0.075\n0.05,0.075\n0.05,0\n' >cleat.csv
 run "$bin" envelope --model nn --nn net.json --profile cleat.csv --contact-length 0.38 -o pc.csv
 run "$bin" envelope --model nn --nn net.json --cleat 0.10,0.075 --contact-length 0.38 -o cc.csv

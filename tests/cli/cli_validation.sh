@@ -155,4 +155,14 @@ run "$bin" ride --cleat 0.3,0.05 --speed 3 --model point --vehicle q.veh
 check "a .veh TIRE_FILE holding quotes: exit 2 at its line, as the writer refuses it" \
     '[ $rc -eq 2 ] && grep -q "q.veh:2: FRONT_AXLE.TIRE_FILE" err && grep -q "quote" err'
 
+# --- profiles beyond what the models resolve (tirenv/profile.h, docs/models.md 2.1) -------
+printf 'x_m,z_m\n-1e8,0\n0,0.05\n1e8,0\n' >hump.csv
+run "$bin" envelope --model ring --profile hump.csv --load 10000 --x-from 0 --x-to 0
+check "a 1e8 m segment (the ring gave h 41 mm for 50): exit 2 at its row, nothing printed" \
+    '[ $rc -eq 2 ] && grep -q "hump.csv:3:1: x_m: x_m = 0 is 1e+08 m after the previous" err &&
+     [ ! -s out ]'
+run "$bin" envelope --model ring --cleat 2e7,0.05 --load 10000 --x-from 0 --x-to 0
+check "a cleat 2e7 m long: exit 2 naming the limit" \
+    '[ $rc -eq 2 ] && grep -q "sizes up to 1e+07 m" err && [ ! -s out ]'
+
 clilib_done

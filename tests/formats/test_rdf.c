@@ -386,18 +386,20 @@ static void test_checked_in_passing(void **state)
         {"meter", "0 1e308 1e308\n1 0 0\n[PARAMETERS]\nOFFSET = 1e308\n", {8, 8, 8},
          {"vertex 1: z = inf is not finite; expected a finite number",
           "vertex 1: z = inf", "vertex 1: z = inf"}},
-        /* Each side finite, their sum not: the mean alone is refused. */
-        {"meter", "0 0 0\n1 1e308 1e308\n2 0 0\n", {9, 0, 0},
-         {"vertex 2: z = inf is not finite; expected a finite number", NULL, NULL}},
+        /* Each side finite, their sum not: the mean is refused as not finite, each side as
+         * beyond TIRENV_PROFILE_MAX_COORDINATE. */
+        {"meter", "0 0 0\n1 1e308 1e308\n2 0 0\n", {9, 9, 9},
+         {"vertex 2: z = inf is not finite; expected a finite number",
+          "vertex 2: z = 1e+308 m is beyond", "vertex 2: z = 1e+308 m is beyond"}},
         /* x finite in km, not in m. */
         {"km", "0 0 0\n1e306 0 0\n", {9, 9, 9},
          {"vertex 2: x = inf is not finite; expected a finite number", "x = inf",
           "x = inf"}},
-        /* The left side's z overflows in m (the mean's does not) before x decreases: the
-         * left names its z, the others the x, each at its row. */
-        {"km", "0 0 0\n1 2.5e305 0\n2 0 0\n0.5 0 0\n", {11, 9, 11},
-         {"vertex 4: x = 500 is less than the previous x = 2000; expected non-decreasing x",
-          "vertex 2: z = inf is not finite", "vertex 4: x = 500 is less than"}},
+        /* The left side's z overflows in m (the mean's is only far too large) before x
+         * decreases: the left and the mean name their z, the right the x, each at its row. */
+        {"km", "0 0 0\n1 2.5e305 0\n2 0 0\n0.5 0 0\n", {9, 9, 11},
+         {"vertex 2: z = 1.25e+308 m is beyond", "vertex 2: z = inf is not finite",
+          "vertex 4: x = 500 is less than the previous x = 2000; expected non-decreasing x"}},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         char text[1024];

@@ -40,6 +40,12 @@ static void test_validate_errors(void **state)
         {"x decreasing", 4, {-0.2137, 0.0173, 0.0172, 0.4}, {0, 0.0412, 0.05, 0}, 0, 3, "x"},
         {"three at one x", 5, {-0.2, 0.1, 0.1, 0.1, 0.3}, {0, 0.05, 0.07, 0.02, 0}, 0, 4, "x"},
         {"decrease after wall", 4, {0.1, 0.1, 0.0993, 0.2}, {0, 0.05, 0.05, 0}, 0, 3, "x"},
+        /* Where the models lose their precision (docs/models.md 2.1): a ring over this hump
+         * gave h 41 mm for 50, the springs model's walk overflows near 1e308 m. */
+        {"a segment of 1e8 m", 3, {-1e8, 0, 1e8}, {0, 0.05, 0}, 0, 2, "x"},
+        {"just beyond 1e7 m", 2, {0, 1e7 + 1e-6}, {0, 0}, 0, 2, "x"},
+        {"x at 2e9 m", 3, {1e9 - 1, 1e9, 2e9}, {0, 0, 0}, 0, 3, "x"},
+        {"z at -1.5e9 m", 2, {0, 1}, {0, -1.5e9}, 0, 2, "z"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const invalid_case *c = &cases[i];
@@ -79,6 +85,12 @@ static void test_validate_ok(void **state)
     tirenv_diag_clear(&diag);
     assert_int_equal(tirenv_profile_validate(6, x, z, &diag), TIRENV_OK);
     assert_int_equal(tirenv_profile_validate(1, x, z, &diag), TIRENV_OK);
+    /* At the limits themselves: a 1e7 m segment, and 1e9 m from the origin. */
+    const double xl[] = {-1e9, -1e9 + 1e7, 1e9 - 1e7, 1e9 - 1e7, 1e9};
+    const double zl[] = {1e9, 0, 0, -1e9, 0};
+    assert_int_equal(tirenv_profile_validate(2, xl, zl, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_profile_validate(1, xl + 4, zl + 3, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_profile_validate(2, xl + 3, zl + 3, &diag), TIRENV_OK);
 }
 
 /* --- storage ------------------------------------------------------------------------- */
