@@ -62,9 +62,11 @@ int tirenv_csv__next(tirenv_csv__reader *r)
                                  "line longer than %d characters; expected a text line (is "
                                  "this a text file?)", TIRENV_TEXT__MAX_LINE);
         if (got == TIRENV_TEXT__ERROR)  /* a read error, or no memory: never the end */
+            /* EFBIG: a pipe read whole into memory (road_file.c) passed its limit */
             return -tirenv_error(r->diag, errno == ENOMEM ? TIRENV_ENOMEM : TIRENV_EIO,
-                                 r->file, r->line + 1, "", "cannot read: %s",
-                                 strerror(errno));
+                                 r->file, r->line + 1, "", "cannot read: %s%s",
+                                 strerror(errno), errno == EFBIG ? " (a pipe or device is kept "
+                                 "in memory, up to a limit; expected a regular file)" : "");
         r->line++;
         /* A NUL ends the C string: the rest of the line would be dropped without a word. */
         const char *nul = memchr(r->buf, '\0', len);
