@@ -265,6 +265,28 @@ static int derive_springs(tirenv_tire *t, const mf_keys *k, double rho_n, const 
     return scale_to(tirenv_model_springs, t, stiff, 2, k->fnomin, rho_n, diag);
 }
 
+/* derive_springs with a sidewall in series (docs/models.md sections 4.9 and 14.2), for the
+ * ring searched on a file's own laws, which follows their nearly linear vertical law where
+ * the elements alone stiffen with the load: c_r, c_b, SIDEWALL_STIFFNESS k_s and
+ * SIDEWALL_PRELOAD F_s0 identified on the ring's states (tirenv_springs_identify_sidewall, as
+ * tirenv identify --write-springs does), then all four scaled by one factor so that the model
+ * carries FNOMIN at rho_n: at a hub deflection the elements deflect d_e(G/c) and the sidewall
+ * (G/c - F_s0)/k_s, so the load is proportional to the factor and one step is exact. */
+static int derive_springs_sidewall(tirenv_tire *t, const mf_keys *k, double rho_n,
+                                   const flat_set *ring, tirenv_diag *diag)
+{
+    const tirenv_tire d = tirenv_tire_default();
+    t->springs.phi = d.springs.phi;
+    t->springs.dphi = d.springs.dphi;
+    int status = tirenv_springs_identify_sidewall(&t->springs, N_LOADS, ring->G, ring->defl,
+                                                  ring->l, diag);
+    if (status)
+        return status;
+    double *const stiff[] = {&t->springs.c_r, &t->springs.c_b, &t->springs.k_s,
+                             &t->springs.F_s0};
+    return scale_to(tirenv_model_springs, t, stiff, 4, k->fnomin, rho_n, diag);
+}
+
 /* The section height (m): R0 - RIM_RADIUS, or WIDTH*ASPECT_RATIO, or 0. */
 static double section_height(const mf_keys *k)
 {
@@ -918,9 +940,10 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
         snprintf(lr->why, sizeof lr->why, "%.40s: %.110s", d2.field, d2.message);
     if (lr->searched)
         *tr = on;
-    if (lack & TIRENV_TIR_SPRINGS)
-        return derive_springs(&tr->t, k, tr->rho_n, &tr->ring, diag);
-    return TIRENV_OK;
+    if (!(lack & TIRENV_TIR_SPRINGS))
+        return TIRENV_OK;
+    return lr->searched ? derive_springs_sidewall(&tr->t, k, tr->rho_n, &tr->ring, diag)
+                        : derive_springs(&tr->t, k, tr->rho_n, &tr->ring, diag);
 }
 
 /* The largest relative differences of the cam's flat-ground states from the ring's at the
@@ -1212,6 +1235,9 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
         note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
                  "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t.springs.c_r,
                  t.springs.c_b);
+    if ((lack & TIRENV_TIR_SPRINGS) && t.springs.k_s > 0)
+        note_add(origin, ", SIDEWALL_STIFFNESS = %.4g, SIDEWALL_PRELOAD = %.4g (a sidewall in "
+                 "series, identified with them on the ring)", t.springs.k_s, t.springs.F_s0);
     if (law.derive_q_fz2)
         note_add(origin, "; no Q_FZ2 of its own: derived on the ring Q_FZ2 = %.4g, "
                  "VERTICAL_STIFFNESS %.4g kN/m its tangent at FNOMIN", t.cam.q_fz2,
