@@ -40,7 +40,9 @@ for spec in $files; do
     case $name in
     tractor_430_50R38)
         check "... its own cam contact law kept, not mixed with the ring's" \
-            'grep -q "the file'"'"'s own cam contact law kept (Q_RA1 = 0.6, Q_RA2 = 0.7)" err' ;;
+            'grep -q "the file'"'"'s own cam contact law kept (Q_RA1 = 0.6, Q_RA2 = 0.7)" err'
+        check "... its springs model, on the ring searched on those laws, with a sidewall in series, said" \
+            'grep -q "derived RADIAL_STIFFNESS = [^;]*, SIDEWALL_STIFFNESS = [^;]*, SIDEWALL_PRELOAD = " err' ;;
     *)
         check "... no Q_RA1, Q_RA2 of its own: derived on the ring and said" \
             'grep -q "no Q_RA1, Q_RA2 of its own: derived on the ring Q_RA1 = " err' ;;
