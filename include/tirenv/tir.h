@@ -76,7 +76,9 @@ typedef struct {
  * alone (no Q_FZ1, Q_FZ2), the cam's Q_FZ2 is identified on that ring with VERTICAL_STIFFNESS
  * its tangent at FNOMIN, and the file's deflection is that law's (docs/models.md 14.2). A
  * derived ring of a file with its own Q_RA1, Q_RA2 is searched on that contact law and the
- * vertical law together (a softening carcass on the shear-coupled tread, said in the note).
+ * vertical law together (a softening carcass on the shear-coupled tread, said in the note),
+ * and a springs model derived on that ring has a sidewall in series (SIDEWALL_STIFFNESS,
+ * SIDEWALL_PRELOAD, said in the note).
  * need (TIRENV_TIR_* bits): the models that must describe this tire; one that can be neither
  * read nor derived is TIRENV_EINVAL naming the missing key, where the others
  * keep *tire's values with a note. On failure *tire is unchanged. */

@@ -3,7 +3,8 @@
  * the file is read a second time with a schema of the MF-Tyre keys that describe the tire's
  * vertical behaviour, and the springs and ring models a file has no section for are scaled
  * to the file's deflection at its nominal load; a derived ring of a file with a contact law
- * of its own (Q_RA1, Q_RA2) is searched on that law too (derive_on_laws). */
+ * of its own (Q_RA1, Q_RA2) is searched on that law too (derive_on_laws), and the springs
+ * model derived on that ring has a sidewall in series (derive_springs_sidewall). */
 #include "formats/flat_inverse.h"
 #include "formats/propfile.h"
 #include "tirenv/cam.h"
@@ -886,7 +887,8 @@ typedef struct {
  * k_c, as on the 205/60R15's ring and the 430/50R38's best, b_p 0.75 WIDTH) at
  * LAWS_SEARCH_DTHETA, 0.5 degrees; the ring found, at the shipped 0.25 degrees, scaled to
  * carry FNOMIN at the law's deflection there (scale_at_height) and tabled; the springs model
- * identified on the ring kept. The search's ring is kept where
+ * identified on the ring kept, with a sidewall in series where it is the search's
+ * (derive_springs_sidewall). The search's ring is kept where
  * its largest difference from the cam is below the Winkler ring's, else the Winkler ring (the
  * note says which, and both differences). */
 static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
