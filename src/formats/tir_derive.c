@@ -1160,6 +1160,26 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
                         (k.given & MF_CZ)};
     if (!lack && (missing || !cam_possible))
         return derived(origin, law_said);
+    /* The cam alone used (need TIRENV_TIR_ONLY | TIRENV_TIR_CAM) and every law of it the
+     * file's own: nothing of the cam comes from a derived ring (Q_FZ2 is derived on the ring
+     * only where the file has no law of its own), so the ring and the springs model the file
+     * lacks are not derived (the ring's search on the laws takes seconds), and the note says
+     * they are not this tire's. */
+    if ((need & TIRENV_TIR_ONLY) && (need & TIRENV_TIR_CAM) && !(need & lack) &&
+        (origin->own & TIRENV_TIR_CAM) && !law.derive_q_fz2) {
+        for (size_t i = 0; i < 2; i++) {
+            static const char *const what[][2] = {{"ENVELOPING_RING", "ring"},
+                                                  {"ENVELOPING_SPRINGS", "springs"}};
+            const unsigned bit = i == 0 ? TIRENV_TIR_RING : TIRENV_TIR_SPRINGS;
+            if (lack & bit)
+                note_add(origin, "%sno [%s]: the %s model not derived (the cam alone is used, "
+                         "its laws the file's own) and not this tire's",
+                         origin->note[0] ? "; " : "", what[i][0], what[i][1]);
+        }
+        note_add(origin, "; the file's own cam contact law kept (Q_RA1 = %.4g, Q_RA2 = %.4g)",
+                 tire->cam.q_ra1, tire->cam.q_ra2);
+        return derived(origin, law_said);
+    }
     tirenv_tire t = *tire;
     static const struct { unsigned bit; const char *section, *model; } models[] = {
         {TIRENV_TIR_RING, "ENVELOPING_RING", "ring"},

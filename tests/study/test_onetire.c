@@ -392,6 +392,75 @@ static void test_derived_from_mftyre(void **state)
     assert_memory_equal(&t, &before, sizeof t);
 }
 
+/* need TIRENV_TIR_ONLY | TIRENV_TIR_CAM (the caller uses the cam alone, as tirenv flat and
+ * envelope --model cam do): a file whose cam laws are all its own (the 430/50R38: Q_RA1,
+ * Q_RA2, Q_FZ2 = 0) gets the same cam, bit for bit, with no ring or springs model derived
+ * (they keep the values passed in, said in the note); a file whose Q_FZ2 is derived on the
+ * ring (tir_mftyre.tir) gets the whole derivation, the same tire and note as without the
+ * flag. The files without a contact law of their own derive theirs on the ring, so the flag
+ * changes nothing there either (the 185/80R14, the cheapest). */
+/* The derived keys of two tires bit for bit (whole structs would compare their padding too):
+ * springs (what), ring, cam. */
+static void same_keys(const tirenv_tire *a, const tirenv_tire *b, int what)
+{
+    const double sa[] = {a->springs.c_r, a->springs.c_b, a->springs.phi, a->springs.dphi,
+                         a->springs.k_s, a->springs.F_s0};
+    const double sb[] = {b->springs.c_r, b->springs.c_b, b->springs.phi, b->springs.dphi,
+                         b->springs.k_s, b->springs.F_s0};
+    const double ra[] = {a->ring.t_r, a->ring.EI, a->ring.T, a->ring.k_f, a->ring.k_t,
+                         a->ring.G_t, a->ring.dtheta, a->ring.b_p, a->ring.w_cs, a->ring.w_c0,
+                         a->ring.p, a->ring.p_nom};
+    const double rb[] = {b->ring.t_r, b->ring.EI, b->ring.T, b->ring.k_f, b->ring.k_t,
+                         b->ring.G_t, b->ring.dtheta, b->ring.b_p, b->ring.w_cs, b->ring.w_c0,
+                         b->ring.p, b->ring.p_nom};
+    const double ca[] = {a->cam.c_z, a->cam.fnomin, a->cam.q_fz1, a->cam.q_fz2, a->cam.q_ra1,
+                         a->cam.q_ra2, a->cam.pfz1};
+    const double cb[] = {b->cam.c_z, b->cam.fnomin, b->cam.q_fz1, b->cam.q_fz2, b->cam.q_ra1,
+                         b->cam.q_ra2, b->cam.pfz1};
+    if (what & TIRENV_TIR_SPRINGS)
+        assert_memory_equal(sa, sb, sizeof sa);
+    if (what & TIRENV_TIR_RING)
+        assert_memory_equal(ra, rb, sizeof ra);
+    if (what & TIRENV_TIR_CAM) {
+        assert_memory_equal(ca, cb, sizeof ca);
+        assert_int_equal(a->cam.given, b->cam.given);
+    }
+}
+
+static void test_cam_alone(void **state)
+{
+    (void)state;
+    const size_t files[] = {2, N_OWN_LAW, N_MF - 1};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        const size_t f = files[i];
+        if ((int)f < (int)MF_FIRST || f >= MF_END)
+            continue;  /* the sanitizer build: as test_derived_pairs */
+        tirenv_tire full, t = tirenv_tire_default();
+        tirenv_tir_origin o_full, o;
+        derived(f, &full, &o_full);
+        tirenv_diag d;
+        assert_int_equal(tirenv_tir_read(mf_files[f], &t, &d), TIRENV_OK);
+        const tirenv_tire read = t;
+        assert_int_equal(tirenv_tir_derive(mf_files[f], &t, TIRENV_TIR_ONLY | TIRENV_TIR_CAM,
+                                           &o, &d), TIRENV_OK);
+        print_message("%s, the cam alone: %s\n", mf_files[f], o.note);
+        same_keys(&t, &full, TIRENV_TIR_CAM);
+        if (f == N_OWN_LAW) {
+            assert_int_equal(o.derived, 0);
+            assert_int_equal(o.own & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
+            same_keys(&t, &read, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING);
+            assert_non_null(strstr(o.note, "no [ENVELOPING_RING]: the ring model not derived"));
+            assert_non_null(strstr(o.note, "no [ENVELOPING_SPRINGS]: the springs model not "
+                                           "derived"));
+            assert_true(isnan(o.cam_ring_deflection));
+        } else {
+            same_keys(&t, &full, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING | TIRENV_TIR_CAM);
+            assert_int_equal(o.derived, o_full.derived);
+            assert_string_equal(o.note, o_full.note);
+        }
+    }
+}
+
 /* The derived models follow the file's pressure dependence: MF-Tyre 6.1's vertical law at
  * INFLPRES is the one at NOMPRES times 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES. With a linear law
  * of the file's own (Q_FZ2 = 0 given) the stiffness at FNOMIN is VERTICAL_STIFFNESS times that
@@ -617,6 +686,7 @@ int main(void)
         cmocka_unit_test(test_derived_pairs),
         cmocka_unit_test(test_205_pairs),
         cmocka_unit_test(test_derived_from_mftyre),
+        cmocka_unit_test(test_cam_alone),
         cmocka_unit_test(test_pressure_dependence),
         cmocka_unit_test(test_own_q_fz1),
         cmocka_unit_test(test_inflpres_is_nompres),
