@@ -49,7 +49,9 @@ enum {
     TIRENV_TIR_SPRINGS = 1u << 0, /* [ENVELOPING_SPRINGS]: c_r and c_b */
     TIRENV_TIR_RING = 1u << 1,    /* [ENVELOPING_RING]: t_r, EI, T, k_f, k_t */
     TIRENV_TIR_CAM = 1u << 2,     /* [CONTACT_PATCH] Q_RA1 and Q_RA2: the cam's patch */
-    TIRENV_TIR_VERTICAL = 1u << 3 /* [VERTICAL] Q_FZ2 (or Q_FZ1): the cam's vertical law */
+    TIRENV_TIR_VERTICAL = 1u << 3, /* [VERTICAL] Q_FZ2 (or Q_FZ1): the cam's vertical law */
+    TIRENV_TIR_ONLY = 1u << 4      /* in tirenv_tir_derive's need: the caller uses the models
+                                    * named there and no other */
 };
 
 /* What a tire file says of its own tire besides tirenv's keys, and what tirenv_tir_derive
@@ -76,10 +78,15 @@ typedef struct {
  * alone (no Q_FZ1, Q_FZ2), the cam's Q_FZ2 is identified on that ring with VERTICAL_STIFFNESS
  * its tangent at FNOMIN, and the file's deflection is that law's (docs/models.md 14.2). A
  * derived ring of a file with its own Q_RA1, Q_RA2 is searched on that contact law and the
- * vertical law together (a softening carcass on the shear-coupled tread, said in the note).
+ * vertical law together (a softening carcass on the shear-coupled tread, said in the note),
+ * and a springs model derived on that ring has a sidewall in series (SIDEWALL_STIFFNESS,
+ * SIDEWALL_PRELOAD, said in the note).
  * need (TIRENV_TIR_* bits): the models that must describe this tire; one that can be neither
  * read nor derived is TIRENV_EINVAL naming the missing key, where the others
- * keep *tire's values with a note. On failure *tire is unchanged. */
+ * keep *tire's values with a note. With TIRENV_TIR_ONLY | TIRENV_TIR_CAM (the caller uses the
+ * cam alone), a file whose cam laws are all its own (Q_RA1, Q_RA2 and a vertical law with
+ * Q_FZ2 or Q_FZ1) has no ring or springs model derived: its ring and springs keep *tire's
+ * values, said in the note. On failure *tire is unchanged. */
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
 

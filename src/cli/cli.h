@@ -102,6 +102,8 @@ typedef struct {
     double x_from, x_to, dx;          /* --x-from, --x-to, --dx, m; NaN if not given */
     const char *output;               /* -o, --output, or NULL */
     const tirenv_model_type *type;    /* --model, or NULL */
+    int type_alone;                   /* the command uses that model of the tire and no
+                                       * other (cli_tire: tirenv_tir_derive's TIRENV_TIR_ONLY) */
     const char *nn_path;              /* --nn, or NULL */
     size_t jobs;                      /* --jobs, else cli_jobs_default() (with CLI_JOBS) */
     int extrapolate;                  /* --extrapolate: the network outside its trained

@@ -691,5 +691,6 @@ int cli_envelope_main(int argc, char *argv[])
         cli_error("envelope: expected --model NAME; 'tirenv envelope --help' shows the options");
         return CLI_EXIT_USAGE;
     }
+    o.type_alone = 1;  /* the model named and no other (--detail: the ring's own) */
     return cli_envelope_run("envelope", &o, o.type, &e);
 }

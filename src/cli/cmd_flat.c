@@ -118,6 +118,8 @@ int cli_flat_main(int argc, char *argv[])
     if (parsed != CLI_GO_ON)
         return parsed;
     const tirenv_model_type *type = o.type ? o.type : tirenv_model_springs;
+    o.type_alone = 1;  /* the model named and no other (ring_tread: the ring's own; without
+                        * --load, cli_nominal_load takes FNOMIN where no ring was derived) */
     tirenv_tire tire;
     int code = cli_tire(&o, &tire);
     if (code)

@@ -149,9 +149,14 @@ tirenv_tir_origin cli_tire_origin;
 
 double cli_nominal_load(const tirenv_tire *tire)
 {
-    const double fnomin = cli_tire_origin.fnomin;
+    const tirenv_tir_origin *o = &cli_tire_origin;
+    const double fnomin = o->fnomin;
     if (!(fnomin > 0))
         return 0;
+    /* A ring the file lacks and that was not derived though it could be (the cam alone used,
+     * tirenv_tir_derive's TIRENV_TIR_ONLY) is not this tire's: its load range. */
+    if (!((o->own | o->derived) & TIRENV_TIR_RING) && o->rho_nominal > 0)
+        return fnomin;
     tirenv_model *ring = tirenv_model_alloc(tirenv_model_ring, tire);
     double lo = 0, hi = 0;
     const int inside = ring &&
@@ -163,27 +168,37 @@ double cli_nominal_load(const tirenv_tire *tire)
 }
 
 /* The enveloping models a model type needs to describe the tire: the springs model also
- * stands for the contact length of the network and of the rigid disc. */
-static unsigned tire_needs(const tirenv_model_type *type)
+ * stands for the contact length of the network and of the rigid disc. A command that uses
+ * the cam and no other model of the tire (alone) says so: a file whose cam laws are all its
+ * own then has no ring or springs model derived (TIRENV_TIR_ONLY, docs/models.md 14.2). */
+static unsigned tire_needs(const tirenv_model_type *type, int alone)
 {
     if (type == tirenv_model_ring)
         return TIRENV_TIR_RING;
+    if (type == tirenv_model_cam && alone)
+        return TIRENV_TIR_CAM | TIRENV_TIR_ONLY;
     if (type == tirenv_model_cam || type == tirenv_model_point || type == tirenv_model_rigid)
         return 0;
     return TIRENV_TIR_SPRINGS;
 }
 
-int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
-                    tirenv_tir_origin *origin)
+static int tire_derive(const char *path, const tirenv_model_type *type, int alone,
+                       tirenv_tire *tire, tirenv_tir_origin *origin)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_tir_derive(path, tire, tire_needs(type), origin, &diag);
+    const int status = tirenv_tir_derive(path, tire, tire_needs(type, alone), origin, &diag);
     if (status)
         return cli_fail(status, &diag);
     if (origin->note[0])
         fprintf(stderr, "tirenv: %s: %s\n", path, origin->note);
     return CLI_EXIT_OK;
+}
+
+int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
+                    tirenv_tir_origin *origin)
+{
+    return tire_derive(path, type, 0, tire, origin);
 }
 
 int cli_tire(const cli_options *o, tirenv_tire *tire)
@@ -196,7 +211,7 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     int status = tirenv_tir_read(path, tire, &diag);
     if (status)
         return cli_fail(status, &diag);
-    if ((status = cli_tire_derive(path, o->type, tire, &cli_tire_origin)))
+    if ((status = tire_derive(path, o->type, o->type_alone, tire, &cli_tire_origin)))
         return status;
     for (size_t i = 0; i < o->n_sets; ++i) {
         status = tirenv_tir_set(tire, o->sets[i], &diag);

@@ -3,7 +3,8 @@
  * the file is read a second time with a schema of the MF-Tyre keys that describe the tire's
  * vertical behaviour, and the springs and ring models a file has no section for are scaled
  * to the file's deflection at its nominal load; a derived ring of a file with a contact law
- * of its own (Q_RA1, Q_RA2) is searched on that law too (derive_on_laws). */
+ * of its own (Q_RA1, Q_RA2) is searched on that law too (derive_on_laws), and the springs
+ * model derived on that ring has a sidewall in series (derive_springs_sidewall). */
 #include "formats/flat_inverse.h"
 #include "formats/propfile.h"
 #include "tirenv/cam.h"
@@ -263,6 +264,28 @@ static int derive_springs(tirenv_tire *t, const mf_keys *k, double rho_n, const 
         return status;
     double *const stiff[] = {&t->springs.c_r, &t->springs.c_b};
     return scale_to(tirenv_model_springs, t, stiff, 2, k->fnomin, rho_n, diag);
+}
+
+/* derive_springs with a sidewall in series (docs/models.md sections 4.9 and 14.2), for the
+ * ring searched on a file's own laws, which follows their nearly linear vertical law where
+ * the elements alone stiffen with the load: c_r, c_b, SIDEWALL_STIFFNESS k_s and
+ * SIDEWALL_PRELOAD F_s0 identified on the ring's states (tirenv_springs_identify_sidewall, as
+ * tirenv identify --write-springs does), then all four scaled by one factor so that the model
+ * carries FNOMIN at rho_n: at a hub deflection the elements deflect d_e(G/c) and the sidewall
+ * (G/c - F_s0)/k_s, so the load is proportional to the factor and one step is exact. */
+static int derive_springs_sidewall(tirenv_tire *t, const mf_keys *k, double rho_n,
+                                   const flat_set *ring, tirenv_diag *diag)
+{
+    const tirenv_tire d = tirenv_tire_default();
+    t->springs.phi = d.springs.phi;
+    t->springs.dphi = d.springs.dphi;
+    int status = tirenv_springs_identify_sidewall(&t->springs, N_LOADS, ring->G, ring->defl,
+                                                  ring->l, diag);
+    if (status)
+        return status;
+    double *const stiff[] = {&t->springs.c_r, &t->springs.c_b, &t->springs.k_s,
+                             &t->springs.F_s0};
+    return scale_to(tirenv_model_springs, t, stiff, 4, k->fnomin, rho_n, diag);
 }
 
 /* The section height (m): R0 - RIM_RADIUS, or WIDTH*ASPECT_RATIO, or 0. */
@@ -864,7 +887,8 @@ typedef struct {
  * k_c, as on the 205/60R15's ring and the 430/50R38's best, b_p 0.75 WIDTH) at
  * LAWS_SEARCH_DTHETA, 0.5 degrees; the ring found, at the shipped 0.25 degrees, scaled to
  * carry FNOMIN at the law's deflection there (scale_at_height) and tabled; the springs model
- * identified on the ring kept. The search's ring is kept where
+ * identified on the ring kept, with a sidewall in series where it is the search's
+ * (derive_springs_sidewall). The search's ring is kept where
  * its largest difference from the cam is below the Winkler ring's, else the Winkler ring (the
  * note says which, and both differences). */
 static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
@@ -918,9 +942,10 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
         snprintf(lr->why, sizeof lr->why, "%.40s: %.110s", d2.field, d2.message);
     if (lr->searched)
         *tr = on;
-    if (lack & TIRENV_TIR_SPRINGS)
-        return derive_springs(&tr->t, k, tr->rho_n, &tr->ring, diag);
-    return TIRENV_OK;
+    if (!(lack & TIRENV_TIR_SPRINGS))
+        return TIRENV_OK;
+    return lr->searched ? derive_springs_sidewall(&tr->t, k, tr->rho_n, &tr->ring, diag)
+                        : derive_springs(&tr->t, k, tr->rho_n, &tr->ring, diag);
 }
 
 /* The largest relative differences of the cam's flat-ground states from the ring's at the
@@ -1135,6 +1160,26 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
                         (k.given & MF_CZ)};
     if (!lack && (missing || !cam_possible))
         return derived(origin, law_said);
+    /* The cam alone used (need TIRENV_TIR_ONLY | TIRENV_TIR_CAM) and every law of it the
+     * file's own: nothing of the cam comes from a derived ring (Q_FZ2 is derived on the ring
+     * only where the file has no law of its own), so the ring and the springs model the file
+     * lacks are not derived (the ring's search on the laws takes seconds), and the note says
+     * they are not this tire's. */
+    if ((need & TIRENV_TIR_ONLY) && (need & TIRENV_TIR_CAM) && !(need & lack) &&
+        (origin->own & TIRENV_TIR_CAM) && !law.derive_q_fz2) {
+        for (size_t i = 0; i < 2; i++) {
+            static const char *const what[][2] = {{"ENVELOPING_RING", "ring"},
+                                                  {"ENVELOPING_SPRINGS", "springs"}};
+            const unsigned bit = i == 0 ? TIRENV_TIR_RING : TIRENV_TIR_SPRINGS;
+            if (lack & bit)
+                note_add(origin, "%sno [%s]: the %s model not derived (the cam alone is used, "
+                         "its laws the file's own) and not this tire's",
+                         origin->note[0] ? "; " : "", what[i][0], what[i][1]);
+        }
+        note_add(origin, "; the file's own cam contact law kept (Q_RA1 = %.4g, Q_RA2 = %.4g)",
+                 tire->cam.q_ra1, tire->cam.q_ra2);
+        return derived(origin, law_said);
+    }
     tirenv_tire t = *tire;
     static const struct { unsigned bit; const char *section, *model; } models[] = {
         {TIRENV_TIR_RING, "ENVELOPING_RING", "ring"},
@@ -1212,6 +1257,9 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
         note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
                  "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t.springs.c_r,
                  t.springs.c_b);
+    if ((lack & TIRENV_TIR_SPRINGS) && t.springs.k_s > 0)
+        note_add(origin, ", SIDEWALL_STIFFNESS = %.4g, SIDEWALL_PRELOAD = %.4g (a sidewall in "
+                 "series, identified with them on the ring)", t.springs.k_s, t.springs.F_s0);
     if (law.derive_q_fz2)
         note_add(origin, "; no Q_FZ2 of its own: derived on the ring Q_FZ2 = %.4g, "
                  "VERTICAL_STIFFNESS %.4g kN/m its tangent at FNOMIN", t.cam.q_fz2,

@@ -40,7 +40,9 @@ for spec in $files; do
     case $name in
     tractor_430_50R38)
         check "... its own cam contact law kept, not mixed with the ring's" \
-            'grep -q "the file'"'"'s own cam contact law kept (Q_RA1 = 0.6, Q_RA2 = 0.7)" err' ;;
+            'grep -q "the file'"'"'s own cam contact law kept (Q_RA1 = 0.6, Q_RA2 = 0.7)" err'
+        check "... its springs model, on the ring searched on those laws, with a sidewall in series, said" \
+            'grep -q "derived RADIAL_STIFFNESS = [^;]*, SIDEWALL_STIFFNESS = [^;]*, SIDEWALL_PRELOAD = " err' ;;
     *)
         check "... no Q_RA1, Q_RA2 of its own: derived on the ring and said" \
             'grep -q "no Q_RA1, Q_RA2 of its own: derived on the ring Q_RA1 = " err' ;;
@@ -50,6 +52,13 @@ done
 run "$bin" flat --csv --model cam --load 30000 --tire "$samples/tir/tractor_430_50R38.tir"
 check "cam at FNOMIN 30 kN: the file's VERTICAL_STIFFNESS 1e6 N/m, deflection 0.03 m" \
     '[ $rc -eq 0 ] && awk -F, "NR == 2 { exit !(\$3 == 0.03 && \$5 == 1000000) }" out'
+check "... its cam laws all its own, the cam alone used: the ring and springs model not derived, said" \
+    'grep -q "no \[ENVELOPING_RING\]: the ring model not derived (the cam alone is used" err &&
+     ! grep -q "derived TREAD_THICKNESS" err'
+run "$bin" flat --model cam --tire "$samples/tir/tractor_430_50R38.tir"
+check "... flat --model cam without --load: 0.5 to 1.5 FNOMIN, the file's load range (no ring to compare with)" \
+    '[ $rc -eq 0 ] && grep -q "at 0.5 to 1.5 times its nominal load 30000 N" out &&
+     grep -q "^ *45000.0 .* 0.04500 " out'
 # The refusal is one code path for every file without the cam's shape keys, and each command
 # derives the file's ring and springs model first (2.7 and 1.8 s of CPU for the 335/65R22.5
 # and the HMMWV, 0.5 s for the 185/80R14): shown on the cheapest. The other two files' cam

@@ -202,10 +202,10 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
  * law and the vertical law together (the 430's own Q_FZ2 = 0, linear; tir_mftyre.tir's Q_FZ2
  * identified on the Winkler ring first) with a carcass that softens on the shear-coupled
  * tread: the cam within 5 % of it (measured 1.6 / 2.3 % and 1.4 / 1.7 %; on the Winkler rings
- * they were 5.1 / 46.6 % and 0.3 / 24.1 %: another tire). Not within 5 %: the springs model
- * identified on those rings, which stiffens with the load where they now follow nearly linear
- * laws (the 205/60R15's springs model misses its ring so, 14.7 %): 11.3 % in deflection on
- * the 430 (its law linear), 5.4 % on tir_mftyre.tir, bounded at half a per cent above. */
+ * they were 5.1 / 46.6 % and 0.3 / 24.1 %: another tire). The springs model identified on
+ * those rings has a sidewall in series (section 4.9), as the 205/60R15's: the elements alone
+ * stiffen with the load where these rings follow nearly linear laws, and missed them by
+ * 11.3 % in deflection on the 430 (its law linear) and 5.4 % on tir_mftyre.tir. */
 typedef struct {
     double springs_ring[2], cam_ring[2], springs_cam[2]; /* deflection, contact length */
 } pair_bounds;
@@ -214,16 +214,17 @@ static void test_derived_pairs(void **state)
 {
     (void)state;
     /* Measured (%): 335/65R22.5 2.52/1.32, 0.25/0.61, 2.60/1.51; HMMWV 2.49/1.52, 0.68/0.46,
-     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 11.35/4.25, 1.57/2.31,
-     * 13.13/2.55; tir_mftyre.tir 5.36/1.88, 1.41/1.72, 6.87/2.22 (the last two on the rings
-     * searched on their own laws; before, on the Winkler rings, cam - ring 5.08/46.63 and
-     * 0.32/24.05). */
+     * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 2.29/3.60, 1.57/2.31,
+     * 3.92/1.32; tir_mftyre.tir 1.10/1.91, 1.41/1.72, 2.55/2.26 (the last two on the rings
+     * searched on their own laws, the springs model with a sidewall; without it 11.35/4.25,
+     * 13.13/2.55 and 5.36/1.88, 6.87/2.22; before, on the Winkler rings, cam - ring
+     * 5.08/46.63 and 0.32/24.05). */
     static const pair_bounds bound[N_MF] = {
         {{0.031, 0.019}, {0.008, 0.012}, {0.032, 0.021}},
         {{0.030, 0.021}, {0.012, 0.010}, {0.033, 0.018}},
         {{0.050, 0.036}, {0.018, 0.008}, {0.045, 0.033}},
-        {{0.119, 0.048}, {0.021, 0.029}, {0.137, 0.031}},
-        {{0.059, 0.024}, {0.020, 0.023}, {0.074, 0.028}},
+        {{0.028, 0.041}, {0.021, 0.029}, {0.045, 0.019}},
+        {{0.016, 0.024}, {0.020, 0.023}, {0.031, 0.028}},
     };
     for (size_t f = MF_FIRST; f < MF_END; f++) {
         tirenv_tire t;
@@ -260,6 +261,14 @@ static void test_derived_pairs(void **state)
             assert_true(e[1].defl <= 0.05 && e[1].l <= 0.05);
             assert_true(t.ring.w_cs > 0 && t.ring.w_c0 > 0 && t.ring.G_t > 0);
             assert_true(t.ring.dtheta == M_PI / 720.0);
+            /* Its springs model has a sidewall in series, identified on that ring, and said. */
+            assert_true(t.springs.k_s > 0 && t.springs.F_s0 >= 0);
+            assert_non_null(strstr(o.note, "SIDEWALL_STIFFNESS = "));
+            assert_non_null(strstr(o.note, "SIDEWALL_PRELOAD = "));
+        }
+        if (f < N_MF - N_OWN_CAM) {  /* the paper's springs model, no sidewall */
+            assert_true(t.springs.k_s == 0 && t.springs.F_s0 == 0);
+            assert_null(strstr(o.note, "SIDEWALL"));
         }
         if (f == N_OWN_LAW) {  /* the 430/50R38's Q_FZ2 = 0: its own law, kept and said */
             assert_int_equal(o.own & TIRENV_TIR_VERTICAL, TIRENV_TIR_VERTICAL);
@@ -317,16 +326,16 @@ static void test_205_pairs(void **state)
  * VERTICAL_STIFFNESS (to round-off) and the ring's and the springs model's tangents are near
  * it (measured: ring -2.9 to +1.3 %, springs +3.7 to +5.7 %; bounded at 3.5 and 6.5 %, the
  * issue's bound is 10 %; before Q_FZ2 was derived they were 10 to 25 % above); their secant
- * is the law's, below it. Not met: tir_mftyre.tir, whose ring is searched on its own contact
- * law (section 14.2): the springs model identified on that ring, its patch the long one of
- * the file's Q_RA1, Q_RA2, stiffens faster with the load, +11.1 % at FNOMIN (ring -1.5 %),
- * bounded at half a per cent above. A file's own linear law (the 430/50R38's Q_FZ2 = 0) is
+ * is the law's, below it. On tir_mftyre.tir, whose ring is searched on its own contact law
+ * (section 14.2), the springs model identified on that ring with a sidewall in series is
+ * -1.3 % at FNOMIN (ring -1.5 %), bounded at half a per cent above (without the sidewall,
+ * +11.1 %: the elements stiffen with the load). A file's own linear law (the 430/50R38's Q_FZ2 = 0) is
  * its secant: FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
 static void test_derived_from_mftyre(void **state)
 {
     (void)state;
     static const double TANGENT_TOL_RING = 0.035, TANGENT_TOL_SPRINGS = 0.065,
-                        TANGENT_TOL_SPRINGS_ON_LAWS = 0.116;
+                        TANGENT_TOL_SPRINGS_ON_LAWS = 0.018;
     const tirenv_tire def = tirenv_tire_default();
     for (size_t f = MF_FIRST; f < MF_END; f++) {
         tirenv_tire t;
@@ -381,6 +390,75 @@ static void test_derived_from_mftyre(void **state)
     assert_int_equal(o.derived, 0);
     assert_string_equal(o.note, "");
     assert_memory_equal(&t, &before, sizeof t);
+}
+
+/* need TIRENV_TIR_ONLY | TIRENV_TIR_CAM (the caller uses the cam alone, as tirenv flat and
+ * envelope --model cam do): a file whose cam laws are all its own (the 430/50R38: Q_RA1,
+ * Q_RA2, Q_FZ2 = 0) gets the same cam, bit for bit, with no ring or springs model derived
+ * (they keep the values passed in, said in the note); a file whose Q_FZ2 is derived on the
+ * ring (tir_mftyre.tir) gets the whole derivation, the same tire and note as without the
+ * flag. The files without a contact law of their own derive theirs on the ring, so the flag
+ * changes nothing there either (the 185/80R14, the cheapest). */
+/* The derived keys of two tires bit for bit (whole structs would compare their padding too):
+ * springs (what), ring, cam. */
+static void same_keys(const tirenv_tire *a, const tirenv_tire *b, int what)
+{
+    const double sa[] = {a->springs.c_r, a->springs.c_b, a->springs.phi, a->springs.dphi,
+                         a->springs.k_s, a->springs.F_s0};
+    const double sb[] = {b->springs.c_r, b->springs.c_b, b->springs.phi, b->springs.dphi,
+                         b->springs.k_s, b->springs.F_s0};
+    const double ra[] = {a->ring.t_r, a->ring.EI, a->ring.T, a->ring.k_f, a->ring.k_t,
+                         a->ring.G_t, a->ring.dtheta, a->ring.b_p, a->ring.w_cs, a->ring.w_c0,
+                         a->ring.p, a->ring.p_nom};
+    const double rb[] = {b->ring.t_r, b->ring.EI, b->ring.T, b->ring.k_f, b->ring.k_t,
+                         b->ring.G_t, b->ring.dtheta, b->ring.b_p, b->ring.w_cs, b->ring.w_c0,
+                         b->ring.p, b->ring.p_nom};
+    const double ca[] = {a->cam.c_z, a->cam.fnomin, a->cam.q_fz1, a->cam.q_fz2, a->cam.q_ra1,
+                         a->cam.q_ra2, a->cam.pfz1};
+    const double cb[] = {b->cam.c_z, b->cam.fnomin, b->cam.q_fz1, b->cam.q_fz2, b->cam.q_ra1,
+                         b->cam.q_ra2, b->cam.pfz1};
+    if (what & TIRENV_TIR_SPRINGS)
+        assert_memory_equal(sa, sb, sizeof sa);
+    if (what & TIRENV_TIR_RING)
+        assert_memory_equal(ra, rb, sizeof ra);
+    if (what & TIRENV_TIR_CAM) {
+        assert_memory_equal(ca, cb, sizeof ca);
+        assert_int_equal(a->cam.given, b->cam.given);
+    }
+}
+
+static void test_cam_alone(void **state)
+{
+    (void)state;
+    const size_t files[] = {2, N_OWN_LAW, N_MF - 1};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        const size_t f = files[i];
+        if ((int)f < (int)MF_FIRST || f >= MF_END)
+            continue;  /* the sanitizer build: as test_derived_pairs */
+        tirenv_tire full, t = tirenv_tire_default();
+        tirenv_tir_origin o_full, o;
+        derived(f, &full, &o_full);
+        tirenv_diag d;
+        assert_int_equal(tirenv_tir_read(mf_files[f], &t, &d), TIRENV_OK);
+        const tirenv_tire read = t;
+        assert_int_equal(tirenv_tir_derive(mf_files[f], &t, TIRENV_TIR_ONLY | TIRENV_TIR_CAM,
+                                           &o, &d), TIRENV_OK);
+        print_message("%s, the cam alone: %s\n", mf_files[f], o.note);
+        same_keys(&t, &full, TIRENV_TIR_CAM);
+        if (f == N_OWN_LAW) {
+            assert_int_equal(o.derived, 0);
+            assert_int_equal(o.own & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
+            same_keys(&t, &read, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING);
+            assert_non_null(strstr(o.note, "no [ENVELOPING_RING]: the ring model not derived"));
+            assert_non_null(strstr(o.note, "no [ENVELOPING_SPRINGS]: the springs model not "
+                                           "derived"));
+            assert_true(isnan(o.cam_ring_deflection));
+        } else {
+            same_keys(&t, &full, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING | TIRENV_TIR_CAM);
+            assert_int_equal(o.derived, o_full.derived);
+            assert_string_equal(o.note, o_full.note);
+        }
+    }
 }
 
 /* The derived models follow the file's pressure dependence: MF-Tyre 6.1's vertical law at
@@ -608,6 +686,7 @@ int main(void)
         cmocka_unit_test(test_derived_pairs),
         cmocka_unit_test(test_205_pairs),
         cmocka_unit_test(test_derived_from_mftyre),
+        cmocka_unit_test(test_cam_alone),
         cmocka_unit_test(test_pressure_dependence),
         cmocka_unit_test(test_own_q_fz1),
         cmocka_unit_test(test_inflpres_is_nompres),
