@@ -207,8 +207,15 @@ int cli_identify_main(int argc, char *argv[])
     tirenv_tire id;
     tirenv_flat_target tg[MAX_LOADS];
     int status = tirenv_identify_flat(&tire, ref, n, loads.v, &id, tg, &diag);
-    if (status)
+    if (status) {
+        /* Which loads: an identified value out of its range (a contact law fitted over
+         * loads of a few N) names only the value. */
+        char why[sizeof diag.message];
+        memcpy(why, diag.message, sizeof why);
+        snprintf(diag.message, sizeof diag.message, "identified on the %s model at %zu loads "
+                 "%.6g to %.6g N: %.400s", ref_name, n, loads.v[0], loads.v[n - 1], why);
         return cli_fail(status, &diag);
+    }
     /* Three significant digits, as written: the table and the note describe the file. */
     double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.springs.k_s,
                            &id.springs.F_s0, &id.cam.c_z, &id.cam.q_fz2, &id.cam.q_ra1,

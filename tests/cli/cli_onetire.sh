@@ -138,4 +138,9 @@ run "$bin" flat --set SIDEWALL_PRELOAD=100
 check "flat --set SIDEWALL_PRELOAD=100 without a stiffness: exit 2, the key named" \
     '[ $rc -eq 2 ] && grep -q "SIDEWALL_PRELOAD.*needs a sidewall" err && [ ! -s out ]'
 
+run "$bin" identify --loads 1,2
+check "identify at loads of 1 and 2 N: exit 2, the value out of range and the loads named" \
+    '[ $rc -eq 2 ] && grep -q "Q_RA1: identified on the ring model at 2 loads 1 to 2 N: must be" err &&
+     [ ! -s out ]'
+
 clilib_done
