@@ -103,6 +103,12 @@ def test_envelope_refuses_what_it_cannot_take(bad, exc, words):
         m.envelope(bad)
 
 
+@pytest.mark.parametrize("bad", [None, "cleat.csv", [tirenv.Profile.cleat(0.3, 0.05), None]])
+def test_set_refuses_what_is_not_a_profile(bad):
+    with pytest.raises(TypeError, match="expected a tirenv.Profile"):
+        tirenv.Model("rigid").set(bad, 10000)
+
+
 def test_positions_are_the_clis():
     x = tirenv.positions(-0.75, 0.75, 0.001)
     assert len(x) == 1501 and x[0] == -0.75 and x[-1] == -0.75 + 1500 * 0.001

@@ -7,6 +7,7 @@ import numpy as np
 
 from ._c import (ffi, lib, check, doubles, double_ptr, error_from, invalid, is_scalar,
                  new_diag, one_or_all, struct_dtype)
+from .profile import Profile
 from .tire import Tire
 
 # One row of 'tirenv envelope's CSV, laid out as the library's tirenv_point, so that the
@@ -124,6 +125,10 @@ class Model:
         docs/models.md section 13), with weights (default equal); the model then combines
         them by its type's rule (springs and ring: one equilibrium of the slices)."""
         diag = new_diag()
+        for p in profile if isinstance(profile, (list, tuple)) else (profile,):
+            if not isinstance(p, Profile):
+                raise TypeError(f"profile: expected a tirenv.Profile or a list of them, got "
+                                f"{type(p).__name__}")
         if isinstance(profile, (list, tuple)):
             tracks = list(profile)
             if not tracks:
