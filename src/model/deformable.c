@@ -28,7 +28,6 @@ typedef struct {
     double G;                    /* load, N */
     double z_flat;               /* flat-ground centre height at G, m: of the force
                                   * function's centre, u above the hub (series) */
-    double u;                    /* the series spring's deflection at G, m (0 without) */
     int has_series;              /* the tire has a series spring (deformable.h's series) */
     tirenv_deformable_history prev; /* warm start: the last two equilibria */
     size_t rigid_hint;           /* profile segment of the last position, for the bracket */
@@ -94,8 +93,7 @@ static void *deformable_alloc(const tirenv_model_type *type, const tirenv_tire *
     st->flat_elem = def->alloc(tire);
     st->solver = tirenv_eq__solver_alloc(tirenv_eq__solver_type_of(tire->eq.method));
     st->shift_invariant = def->shift_invariant(tire);
-    double c;
-    st->has_series = def->series && def->series(tire, INFINITY, &c) > 0;
+    st->has_series = tirenv_deformable_series(def, tire, INFINITY) > 0;
     st->flat = tirenv_profile_alloc(1, &zero, &zero);
     if (!st->elem || !st->flat_elem || !st->solver || !st->flat) {
         deformable_free(st);
@@ -119,11 +117,22 @@ static double in_series(double k, double c)
     return c > 0 && k > 0 ? 1 / (1 / k + c) : k;
 }
 
-/* The series spring's deflection (m) and compliance (m/N, into *c) at force F (N). */
+/* The series spring's deflection (m) and compliance (m/N, into *c unless NULL) at force F
+ * (N). */
 static double series_at(const deformable_state *st, double F, double *c)
 {
+    double c_unused;
+    if (!c)
+        c = &c_unused;
     *c = 0;
     return st->def->series ? st->def->series(&st->tire, F, c) : 0;
+}
+
+/* How far the hub lies below the force function's centre at the load G: the series spring's
+ * deflection there, constant while the load is (m; 0 without one). */
+static double hub_offset(const deformable_state *st)
+{
+    return series_at(st, st->G, NULL);
 }
 
 /* The valid range, once per model: the load and contact length at the lowest centre height
@@ -354,8 +363,7 @@ static double hub_minus_target(double z_c, void *p)
     const int s = c->st->def->forces(c->st->flat_elem, c->st->flat, 0, z_c, &at, c->diag);
     if (s && !c->status)
         c->status = s;
-    double dU_dF;
-    return z_c - series_at(c->st, s ? 0 : at.F, &dU_dF) - c->z;
+    return z_c - series_at(c->st, s ? 0 : at.F, NULL) - c->z;
 }
 
 static int centre_for_hub(const deformable_state *st, double z, double *z_c, tirenv_diag *diag)
@@ -426,13 +434,12 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
     deformable_state *st = state;
     st->prof = p;
     st->G = load;
-    double c;
-    st->u = series_at(st, load, &c);
+    const double u = hub_offset(st);
     /* tirenv_model_set has just solved the flat ground at this load: its point is z_flat, the
      * hub's, u below the centre's it was solved for (that centre's own bits kept). */
     tirenv_eq_point flat = st->flat_point;
-    const int same = st->have_flat_point && st->flat_load == load && flat.z - st->u == z_flat;
-    const double z_c = same ? flat.z : z_flat + st->u;
+    const int same = st->have_flat_point && st->flat_load == load && flat.z - u == z_flat;
+    const double z_c = same ? flat.z : z_flat + u;
     st->z_flat = z_c;
     tirenv_deformable_history_clear(&st->prev);
     int status = TIRENV_OK;
@@ -464,11 +471,9 @@ static int deformable_set_load(void *state, double load, double *z_flat, tirenv_
     if ((status = solve_flat(st, load, z0, &p, diag)))
         return status;
     tirenv_deformable_history_shift(&st->prev, p.z - st->z_flat);
-    double c;
     st->G = load;
-    st->u = series_at(st, load, &c);
     st->z_flat = p.z;
-    *z_flat = p.z - st->u;
+    *z_flat = p.z - hub_offset(st);
     st->flat_at = p;
     return TIRENV_OK;
 }
@@ -519,9 +524,7 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
                             st->type->name, sv.G, sv.z_flat);
-    double c;
     st->G = sv.G;
-    st->u = series_at(st, sv.G, &c);
     st->z_flat = sv.z_flat;
     st->prev.z1 = sv.z_prev;
     st->flat_at = sv.flat_at;
@@ -583,7 +586,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
                               x + TIRENV_MODEL__REACH * R0, &level)) {
         /* fx is 0 by symmetry, which the force sum only meets to round-off. */
         const double z_c = st->z_flat + level;
-        *out = (tirenv_point){.x = x, .z = z_c - st->u, .h = level, .fx = 0,
+        *out = (tirenv_point){.x = x, .z = z_c - hub_offset(st), .h = level, .fx = 0,
                               .fz = st->flat_at.F, .contacts = st->flat_at.contacts};
         out->slope = tirenv_model__slope(out);
         /* The next start: this height (the level may end there). */
@@ -619,7 +622,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     /* h between the centre's heights (the series spring's u, constant at the load, cancels:
      * the same bits with or without one); the hub u below the centre. */
     tirenv_model__eq_point(&res.point, st->z_flat, out);
-    out->z = res.point.z - st->u;
+    out->z = res.point.z - hub_offset(st);
     return TIRENV_OK;
 }
 
