@@ -10,6 +10,8 @@
 #include "tirenv/cam.h"
 #include "tirenv/tir.h"
 #include "tirenv/model.h"
+#include "tirenv/profile.h"
+#include "tirenv/ring.h"
 #include "tirenv/springs.h"
 
 #include <math.h>
@@ -616,6 +618,7 @@ typedef struct {
     const mf_keys *k;
     double G[N_H], d[N_H], l[N_H];       /* the cam's: N, m, m */
     double b_lo, b_hi;                   /* BELT_WIDTH's bounds, m */
+    const tirenv_profile *flat;          /* flat ground z = 0 */
     int tables;                          /* ring tables evaluated */
 } laws_search;
 
@@ -630,6 +633,34 @@ static void laws_set(const laws_search *s, const double x[N_LAWS], tirenv_tire *
     t->ring.b_p = exp(x[4]);
 }
 
+/* The ring's load (N) and contact length (m) with its centre at each height R0 - d[i] (m)
+ * over flat ground, in that order on one workspace (each evaluation warm-started from the
+ * last): tirenv_ring_forces and tirenv_ring_patch_length, what the ring model's
+ * tirenv_model_flat_at_height returns, without the model's valid-range scan (about 45 force
+ * evaluations down to where the flat-ground patch peaks, which the model makes once before
+ * its first evaluation: nine tenths of a table's cost). The derivation's heights are the
+ * file's deflections at 0.5 to 1.5 FNOMIN, far above that peak on any ring that carries
+ * them; the ring kept is tabled by tirenv_model_flat (flats), range and all. */
+static int ring_at_heights(const tirenv_tire *t, const tirenv_profile *flat, size_t n,
+                           const double d[], double G[], double l[], tirenv_diag *diag)
+{
+    tirenv_ring *ring = tirenv_ring_alloc(t->springs.R0, &t->ring);
+    if (!ring)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
+                            "the ring searched on the file's laws is not a valid tire");
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < n && !status; i++) {
+        double fx, fz;
+        status = tirenv_ring_forces(ring, flat, 0, t->springs.R0 - d[i], &fx, &fz, NULL, NULL,
+                                    diag);
+        G[i] = fz;
+        if (l)
+            l[i] = tirenv_ring_patch_length(ring);
+    }
+    tirenv_ring_free(ring);
+    return status;
+}
+
 /* The ten residuals of the ring of x; TIRENV_OK or the ring's refusal. */
 static int laws_residuals(laws_search *s, const double x[N_LAWS], double r[N_RES],
                           tirenv_diag *diag)
@@ -640,23 +671,17 @@ static int laws_residuals(laws_search *s, const double x[N_LAWS], double r[N_RES
     int status = tirenv_tire_check(&t, diag);
     if (status)
         return status;
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
-    if (!m)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
-                            "the ring searched on the file's laws is not a valid tire");
-    for (size_t i = 0; i < N_H && !status; i++) {
-        tirenv_flat f;
-        status = tirenv_model_flat_at_height(m, t.springs.R0 - s->d[i], &f, diag);
-        if (!status && !(f.load > 0 && f.contact_length > 0))
-            status = tirenv_error(diag, TIRENV_ERANGE, "", 0, "ring",
-                                  "the ring searched carries no load at %g m", s->d[i]);
-        if (!status) {
-            r[i] = log(f.load / s->G[i]);
-            r[N_H + i] = log(f.contact_length / s->l[i]);
-        }
+    double G[N_H], l[N_H];
+    if ((status = ring_at_heights(&t, s->flat, N_H, s->d, G, l, diag)))
+        return status;
+    for (size_t i = 0; i < N_H; i++) {
+        if (!(G[i] > 0 && l[i] > 0))
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "ring",
+                                "the ring searched carries no load at %g m", s->d[i]);
+        r[i] = log(G[i] / s->G[i]);
+        r[N_H + i] = log(l[i] / s->l[i]);
     }
-    tirenv_model_free(m);
-    return status;
+    return TIRENV_OK;
 }
 
 static double max_abs(const double r[N_RES])
@@ -814,16 +839,12 @@ static int laws_search_run(laws_search *s, double x[N_LAWS], double r[N_RES], ti
 }
 
 /* The ring's load (N) with its centre at R0 - rho (m): one force evaluation. */
-static int ring_load_at_height(const tirenv_tire *t, double rho, double *G, tirenv_diag *diag)
+static int ring_load_at_height(const tirenv_tire *t, const tirenv_profile *flat, double rho,
+                               double *G, tirenv_diag *diag)
 {
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, t);
-    if (!m)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
-                            "the ring searched on the file's laws is not a valid tire");
-    tirenv_flat f;
-    const int status = tirenv_model_flat_at_height(m, t->springs.R0 - rho, &f, diag);
-    tirenv_model_free(m);
-    *G = status ? 0 : f.load;
+    const int status = ring_at_heights(t, flat, 1, &rho, G, NULL, diag);
+    if (status)
+        *G = 0;
     return status;
 }
 
@@ -831,7 +852,8 @@ static int ring_load_at_height(const tirenv_tire *t, double rho, double *G, tire
  * a step, where scale_to inverts a flat inversion): EI, T, k_c, k_t by one factor c until it
  * carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but for the
  * air's share), at most MAX_STEPS. */
-static int scale_at_height(tirenv_tire *t, double fnomin, double rho_n, tirenv_diag *diag)
+static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fnomin,
+                           double rho_n, tirenv_diag *diag)
 {
     enum { MAX_STEPS = 30 };
     double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
@@ -839,14 +861,14 @@ static int scale_at_height(tirenv_tire *t, double fnomin, double rho_n, tirenv_d
     for (size_t i = 0; i < 4; i++)
         base[i] = *stiff[i];
     double c0 = 1, G0 = 0, G1 = 0;
-    int status = ring_load_at_height(t, rho_n, &G0, diag);
+    int status = ring_load_at_height(t, flat, rho_n, &G0, diag);
     if (status)
         return status;
     double c1 = fnomin / G0;  /* the proportional step */
     for (int step = 0; step < MAX_STEPS; step++) {
         for (size_t i = 0; i < 4; i++)
             *stiff[i] = base[i] * c1;
-        if ((status = ring_load_at_height(t, rho_n, &G1, diag)))
+        if ((status = ring_load_at_height(t, flat, rho_n, &G1, diag)))
             return status;
         if (fabs(G1 / fnomin - 1) <= 5e-8)
             return TIRENV_OK;
@@ -907,7 +929,12 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
     if ((status = flats(tirenv_model_cam, &c, k->fnomin, &cam, diag)))
         return status;
     set_miss(&cam, &tr->ring, &lr->w_defl, &lr->w_l);
-    laws_search s = {.t = tr->t, .k = k};
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    if (!flat)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
+                            "no memory for the flat ground the ring is searched on");
+    laws_search s = {.t = tr->t, .k = k, .flat = flat};
     s.t.ring.G_t = LAWS_G_T;
     s.t.ring.dtheta = LAWS_SEARCH_DTHETA;
     s.t.ring.contact = TIRENV_RING_CONTINUOUS;
@@ -930,8 +957,9 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
     if (!status) {
         laws_set(&s, x, &on.t);
         on.t.ring.dtheta = M_PI / 720.0;
-        status = scale_at_height(&on.t, k->fnomin, tr->rho_n, &d2);
+        status = scale_at_height(&on.t, flat, k->fnomin, tr->rho_n, &d2);
     }
+    tirenv_profile_free(flat);
     if (!status)
         status = flats(tirenv_model_ring, &on.t, k->fnomin, &on.ring, &d2);
     if (!status) {

@@ -65,10 +65,17 @@ static int compute_compliance(tirenv_ring *r)
         inv_lambda[n] = 1 / lambda;
         cos_tab[n] = cos(2 * M_PI * (double)n / (double)M);
     }
+    /* cos_tab's index n*m mod M stepped by m, where a division each term made this O(M^2)
+     * sum the dearest part of an allocation (0.1 s at 0.125 degree nodes); the same terms
+     * in the same order, so the same bits. */
     for (size_t m = 0; ok && m < M; ++m) {
         double sum = 0;
-        for (size_t n = 0; n < M; ++n)
-            sum += cos_tab[(n * m) % M] * inv_lambda[n];
+        for (size_t n = 0, nm = 0; n < M; ++n) {
+            sum += cos_tab[nm] * inv_lambda[n];
+            nm += m;
+            if (nm >= M)
+                nm -= M;
+        }
         r->c[m] = sum / (double)M;
     }
     free(inv_lambda);
