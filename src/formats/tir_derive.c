@@ -290,6 +290,143 @@ static int derive_springs_sidewall(tirenv_tire *t, const mf_keys *k, double rho_
     return scale_to(tirenv_model_springs, t, stiff, 4, k->fnomin, rho_n, diag);
 }
 
+/* The ring's load (N) and contact length (m) with its centre at each height R0 - d[i] (m)
+ * over flat ground, in that order on one workspace (each evaluation warm-started from the
+ * last): tirenv_ring_forces and tirenv_ring_patch_length, what the ring model's
+ * tirenv_model_flat_at_height returns, without the model's valid-range scan (about 45 force
+ * evaluations down to where the flat-ground patch peaks, which the model makes once before
+ * its first evaluation: nine tenths of a table's cost). The derivation's heights are the
+ * file's deflections at 0.5 to 1.5 FNOMIN, far above that peak on any ring that carries
+ * them; the ring kept is tabled by tirenv_model_flat (flats), range and all. */
+static int ring_at_heights(const tirenv_tire *t, const tirenv_profile *flat, size_t n,
+                           const double d[], double G[], double l[], tirenv_diag *diag)
+{
+    tirenv_ring *ring = tirenv_ring_alloc(t->springs.R0, &t->ring);
+    if (!ring)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
+                            "the ring searched on the file's laws is not a valid tire");
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < n && !status; i++) {
+        double fx, fz;
+        status = tirenv_ring_forces(ring, flat, 0, t->springs.R0 - d[i], &fx, &fz, NULL, NULL,
+                                    diag);
+        G[i] = fz;
+        if (l)
+            l[i] = tirenv_ring_patch_length(ring);
+    }
+    tirenv_ring_free(ring);
+    return status;
+}
+
+/* The ring's load (N) with its centre at R0 - rho (m): one force evaluation. */
+static int ring_load_at_height(const tirenv_tire *t, const tirenv_profile *flat, double rho,
+                               double *G, tirenv_diag *diag)
+{
+    const int status = ring_at_heights(t, flat, 1, &rho, G, NULL, diag);
+    if (status)
+        *G = 0;
+    return status;
+}
+
+/* scale_to for the searched ring, by its load at the height R0 - rho_n (one force evaluation
+ * a step, where scale_to inverts a flat inversion): EI, T, k_c, k_t by one factor c until it
+ * carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but for the
+ * air's share), at most MAX_STEPS. */
+static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fnomin,
+                           double rho_n, tirenv_diag *diag)
+{
+    enum { MAX_STEPS = 30 };
+    double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
+    double base[4];
+    for (size_t i = 0; i < 4; i++)
+        base[i] = *stiff[i];
+    double c0 = 1, G0 = 0, G1 = 0;
+    int status = ring_load_at_height(t, flat, rho_n, &G0, diag);
+    if (status)
+        return status;
+    double c1 = fnomin / G0;  /* the proportional step */
+    for (int step = 0; step < MAX_STEPS; step++) {
+        for (size_t i = 0; i < 4; i++)
+            *stiff[i] = base[i] * c1;
+        if ((status = ring_load_at_height(t, flat, rho_n, &G1, diag)))
+            return status;
+        if (fabs(G1 / fnomin - 1) <= 5e-8)
+            return TIRENV_OK;
+        double c2 = G1 != G0 ? c1 + (fnomin - G1) * (c1 - c0) / (G1 - G0) : c1 * fnomin / G1;
+        if (!(c2 > 0 && isfinite(c2)))
+            c2 = c1 * fnomin / G1;
+        c0 = c1, G0 = G1;
+        c1 = fmax(c1 / 4, fmin(c1 * 4, c2));
+    }
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "VERTICAL_STIFFNESS",
+                        "the ring searched on the file's laws found no scale carrying FNOMIN "
+                        "%g N at the file's deflection %g m", fnomin, rho_n);
+}
+
+/* The ring's flat-ground states at 0.5 to 1.5 FNOMIN, as flats takes them from the ring
+ * model, for the rings of a file with a contact law of its own (derive_on_laws): each load's
+ * centre height found on one workspace by Newton's method on tirenv_ring_forces (its dF/dz
+ * exact for the active set), from the deflection guess[i] (m) and then each from the last,
+ * safeguarded by the bracket the evaluations make (bisection where a step leaves it), and
+ * converged as the model's equilibrium is (the tire's eq settings: |F - G| <= eps_F and a last
+ * step within eps_z, at most max_iter evaluations a load); without the model's valid-range
+ * scan, which cost more than the states (ring_at_heights). TIRENV_ENOCONV naming the load and
+ * the last bracket where a load does not converge. */
+static int ring_flats(const tirenv_tire *t, const tirenv_profile *flat, double fnomin,
+                      const double guess[], flat_set *out, tirenv_diag *diag)
+{
+    tirenv_ring *ring = tirenv_ring_alloc(t->springs.R0, &t->ring);
+    if (!ring)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
+                            "the ring of the file's laws is not a valid tire");
+    const double R0 = t->springs.R0;
+    const tirenv_eq_settings *eq = &t->eq;
+    int status = TIRENV_OK;
+    double z = R0 - guess[0];
+    for (size_t i = 0; i < N_LOADS && !status; i++) {
+        const double G = tirenv_nominal_load_fractions[i] * fnomin;
+        double z_lo = 0, z_hi = R0;  /* the load's height lies in [z_lo, z_hi] */
+        if (i > 0 && guess[i] > guess[i - 1])
+            z -= guess[i] - guess[i - 1];
+        z = fmin(fmax(z, z_lo + 1e-3 * R0), z_hi - 1e-3 * R0);
+        int done = 0;
+        for (size_t it = 0; !done && !status; it++) {
+            double fx, F, dF;
+            if (it >= eq->max_iter) {
+                status = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                                      "the ring's flat ground at %g N did not converge in %zu "
+                                      "evaluations (centre height within [%.9g, %.9g] m)",
+                                      G, eq->max_iter, z_lo, z_hi);
+                break;
+            }
+            if ((status = tirenv_ring_forces(ring, flat, 0, z, &fx, &F, &dF, NULL, diag)))
+                break;
+            const double e = F - G;
+            if (e < 0)
+                z_hi = z;
+            else
+                z_lo = z;
+            double z_new = dF < 0 ? z - e / dF : NAN;
+            if (!(z_new > z_lo && z_new < z_hi))
+                z_new = 0.5 * (z_lo + z_hi);
+            /* Converged, or the bracket within eps_z: the load's force is not resolved to
+             * eps_F there (its round-off at 45 kN, a few 1e-6 N, on the 430/50R38's ring). */
+            if ((fabs(e) <= eq->eps_F && fabs(z_new - z) <= eq->eps_z) ||
+                z_hi - z_lo <= eq->eps_z) {
+                out->G[i] = G;
+                out->defl[i] = R0 - z;
+                out->l[i] = tirenv_ring_patch_length(ring);
+                out->k[i] = -dF;
+                done = 1;
+            } else {
+                z = z_new;
+            }
+        }
+    }
+    tirenv_ring_free(ring);
+    return status;
+}
+
 /* The section height (m): R0 - RIM_RADIUS, or WIDTH*ASPECT_RATIO, or 0. */
 static double section_height(const mf_keys *k)
 {
@@ -305,7 +442,7 @@ static double section_height(const mf_keys *k)
  * kept, the carcass's pretension raised by tau*k_f*R^2 (tau = 0: the default's shape), then
  * every stiffness scaled to the file's deflection at FNOMIN. */
 static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double tau,
-                       tirenv_diag *diag)
+                       const tirenv_profile *flat, tirenv_diag *diag)
 {
     const tirenv_tire d = tirenv_tire_default();
     const double H_d = d.springs.R0 - 14 * 0.0254;  /* 380/85R28 on a 28 in rim */
@@ -331,6 +468,8 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
         const double R = k->R0 - t->ring.t_r;
         t->ring.T += tau * d.ring.k_f * R * R;
     }
+    if (flat)  /* a file with laws of its own: by the ring's load at the height */
+        return scale_at_height(t, flat, k->fnomin, rho_n, diag);
     double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
     return scale_to(tirenv_model_ring, t, stiff, 4, k->fnomin, rho_n, diag);
 }
@@ -389,14 +528,17 @@ typedef struct {
  * 1.5 FNOMIN, the Q_FZ2 identified on them, and h, the log of the ratio of that law's
  * deflection at FNOMIN to the ring's. */
 static int ring_and_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
-                        const double base[4], double c, flat_set *ring, double *q2, double *h,
-                        tirenv_diag *diag)
+                        const double base[4], double c, const tirenv_profile *flat,
+                        flat_set *ring, double *q2, double *h, tirenv_diag *diag)
 {
     t->ring.EI = base[0] * c;
     t->ring.T = base[1] * c;
     t->ring.k_f = base[2] * c;
     t->ring.k_t = base[3] * c;
-    const int status = flats(tirenv_model_ring, t, k->fnomin, ring, diag);
+    double guess[N_LOADS];  /* the last ring's deflections */
+    memcpy(guess, ring->defl, sizeof guess);
+    const int status = flat ? ring_flats(t, flat, k->fnomin, guess, ring, diag)
+                            : flats(tirenv_model_ring, t, k->fnomin, ring, diag);
     if (status)
         return status;
     *q2 = q_fz2_on(k, v->factor, ring);
@@ -429,15 +571,22 @@ static int ring_and_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
  * TIRENV_ENOCONV after MAX_LAW_EVALS, naming Q_FZ2: the caller falls back on the linear
  * law. */
 static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, double tau,
-                       flat_set *ring, double *rho_n, double *q2, tirenv_diag *diag)
+                       const tirenv_profile *flat, flat_set *ring, double *rho_n, double *q2,
+                       tirenv_diag *diag)
 {
     static const double LAW_TOL = 1e-6, MAX_LAW_STEP = 1;
     enum { MAX_LAW_EVALS = 12 };
     *rho_n = v->rho_n;
     *q2 = 0;
-    int status = derive_ring(t, k, v->rho_n, tau, diag);
-    if (!status)
+    int status = derive_ring(t, k, v->rho_n, tau, flat, diag);
+    if (!status && flat) {
+        double guess[N_LOADS];  /* the linear law's */
+        for (size_t i = 0; i < N_LOADS; i++)
+            guess[i] = tirenv_nominal_load_fractions[i] * v->rho_n;
+        status = ring_flats(t, flat, k->fnomin, guess, ring, diag);
+    } else if (!status) {
         status = flats(tirenv_model_ring, t, k->fnomin, ring, diag);
+    }
     if (status || !v->derive_q_fz2)
         return status;
     if (ring->G[I_NOMINAL] != k->fnomin)  /* the load fractions lost their 1 */
@@ -465,7 +614,7 @@ static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, 
             step = h != h_b ? -h * (u - u_b) / (h - h_b) : -h;
         const double u_new = u + fmax(-MAX_LAW_STEP, fmin(MAX_LAW_STEP, step));
         const double u_old = u, h_old = h;
-        if ((status = ring_and_law(t, k, v, base, exp(u_new), ring, q2, &h, diag)))
+        if ((status = ring_and_law(t, k, v, base, exp(u_new), flat, ring, q2, &h, diag)))
             return status;
         u = u_new;
         if (bracket) {
@@ -533,7 +682,7 @@ static int try_tau(const tirenv_tire *t0, const mf_keys *k, const vertical_law *
 {
     out->t = *t0;
     out->tau = tau;
-    int status = ring_on_law(&out->t, k, v, tau, &out->ring, &out->rho_n, &out->q_fz2, diag);
+    int status = ring_on_law(&out->t, k, v, tau, NULL, &out->ring, &out->rho_n, &out->q_fz2, diag);
     if (!status)
         status = derive_springs(&out->t, k, out->rho_n, &out->ring, diag);
     if (!status)
@@ -631,34 +780,6 @@ static void laws_set(const laws_search *s, const double x[N_LAWS], tirenv_tire *
     t->ring.EI = exp(x[2]);
     t->ring.k_t = exp(x[3]);
     t->ring.b_p = exp(x[4]);
-}
-
-/* The ring's load (N) and contact length (m) with its centre at each height R0 - d[i] (m)
- * over flat ground, in that order on one workspace (each evaluation warm-started from the
- * last): tirenv_ring_forces and tirenv_ring_patch_length, what the ring model's
- * tirenv_model_flat_at_height returns, without the model's valid-range scan (about 45 force
- * evaluations down to where the flat-ground patch peaks, which the model makes once before
- * its first evaluation: nine tenths of a table's cost). The derivation's heights are the
- * file's deflections at 0.5 to 1.5 FNOMIN, far above that peak on any ring that carries
- * them; the ring kept is tabled by tirenv_model_flat (flats), range and all. */
-static int ring_at_heights(const tirenv_tire *t, const tirenv_profile *flat, size_t n,
-                           const double d[], double G[], double l[], tirenv_diag *diag)
-{
-    tirenv_ring *ring = tirenv_ring_alloc(t->springs.R0, &t->ring);
-    if (!ring)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
-                            "the ring searched on the file's laws is not a valid tire");
-    int status = TIRENV_OK;
-    for (size_t i = 0; i < n && !status; i++) {
-        double fx, fz;
-        status = tirenv_ring_forces(ring, flat, 0, t->springs.R0 - d[i], &fx, &fz, NULL, NULL,
-                                    diag);
-        G[i] = fz;
-        if (l)
-            l[i] = tirenv_ring_patch_length(ring);
-    }
-    tirenv_ring_free(ring);
-    return status;
 }
 
 /* The ten residuals of the ring of x; TIRENV_OK or the ring's refusal. */
@@ -838,51 +959,6 @@ static int laws_search_run(laws_search *s, double x[N_LAWS], double r[N_RES], ti
     return TIRENV_OK;
 }
 
-/* The ring's load (N) with its centre at R0 - rho (m): one force evaluation. */
-static int ring_load_at_height(const tirenv_tire *t, const tirenv_profile *flat, double rho,
-                               double *G, tirenv_diag *diag)
-{
-    const int status = ring_at_heights(t, flat, 1, &rho, G, NULL, diag);
-    if (status)
-        *G = 0;
-    return status;
-}
-
-/* scale_to for the searched ring, by its load at the height R0 - rho_n (one force evaluation
- * a step, where scale_to inverts a flat inversion): EI, T, k_c, k_t by one factor c until it
- * carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but for the
- * air's share), at most MAX_STEPS. */
-static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fnomin,
-                           double rho_n, tirenv_diag *diag)
-{
-    enum { MAX_STEPS = 30 };
-    double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
-    double base[4];
-    for (size_t i = 0; i < 4; i++)
-        base[i] = *stiff[i];
-    double c0 = 1, G0 = 0, G1 = 0;
-    int status = ring_load_at_height(t, flat, rho_n, &G0, diag);
-    if (status)
-        return status;
-    double c1 = fnomin / G0;  /* the proportional step */
-    for (int step = 0; step < MAX_STEPS; step++) {
-        for (size_t i = 0; i < 4; i++)
-            *stiff[i] = base[i] * c1;
-        if ((status = ring_load_at_height(t, flat, rho_n, &G1, diag)))
-            return status;
-        if (fabs(G1 / fnomin - 1) <= 5e-8)
-            return TIRENV_OK;
-        double c2 = G1 != G0 ? c1 + (fnomin - G1) * (c1 - c0) / (G1 - G0) : c1 * fnomin / G1;
-        if (!(c2 > 0 && isfinite(c2)))
-            c2 = c1 * fnomin / G1;
-        c0 = c1, G0 = G1;
-        c1 = fmax(c1 / 4, fmin(c1 * 4, c2));
-    }
-    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "VERTICAL_STIFFNESS",
-                        "the ring searched on the file's laws found no scale carrying FNOMIN "
-                        "%g N at the file's deflection %g m", fnomin, rho_n);
-}
-
 /* The largest relative differences of two sets of flat states at the same loads. */
 static void set_miss(const flat_set *a, const flat_set *b, double *e_defl, double *e_l)
 {
@@ -913,13 +989,12 @@ typedef struct {
  * (derive_springs_sidewall). The search's ring is kept where
  * its largest difference from the cam is below the Winkler ring's, else the Winkler ring (the
  * note says which, and both differences). */
-static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
-                          const vertical_law *v, trial *tr, laws_result *lr, tirenv_diag *diag)
+static int laws_ring(const tirenv_tire *t, const mf_keys *k, const vertical_law *v,
+                     const tirenv_profile *flat, trial *tr, laws_result *lr, tirenv_diag *diag)
 {
-    memset(lr, 0, sizeof *lr);
     tr->t = *t;
     tr->tau = 0;
-    int status = ring_on_law(&tr->t, k, v, 0, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
+    int status = ring_on_law(&tr->t, k, v, 0, flat, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
     if (status)
         return status;
     tirenv_tire c = tr->t;
@@ -929,11 +1004,6 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
     if ((status = flats(tirenv_model_cam, &c, k->fnomin, &cam, diag)))
         return status;
     set_miss(&cam, &tr->ring, &lr->w_defl, &lr->w_l);
-    const double zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
-    if (!flat)
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
-                            "no memory for the flat ground the ring is searched on");
     laws_search s = {.t = tr->t, .k = k, .flat = flat};
     s.t.ring.G_t = LAWS_G_T;
     s.t.ring.dtheta = LAWS_SEARCH_DTHETA;
@@ -959,9 +1029,8 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
         on.t.ring.dtheta = M_PI / 720.0;
         status = scale_at_height(&on.t, flat, k->fnomin, tr->rho_n, &d2);
     }
-    tirenv_profile_free(flat);
     if (!status)
-        status = flats(tirenv_model_ring, &on.t, k->fnomin, &on.ring, &d2);
+        status = ring_flats(&on.t, flat, k->fnomin, cam.defl, &on.ring, &d2);
     if (!status) {
         set_miss(&cam, &on.ring, &lr->e_defl, &lr->e_l);
         lr->searched = fmax(lr->e_defl, lr->e_l) < fmax(lr->w_defl, lr->w_l);
@@ -970,8 +1039,22 @@ static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
         snprintf(lr->why, sizeof lr->why, "%.40s: %.110s", d2.field, d2.message);
     if (lr->searched)
         *tr = on;
-    if (!(lack & TIRENV_TIR_SPRINGS))
-        return TIRENV_OK;
+    return TIRENV_OK;
+}
+
+static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
+                          const vertical_law *v, trial *tr, laws_result *lr, tirenv_diag *diag)
+{
+    memset(lr, 0, sizeof *lr);
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
+    if (!flat)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
+                            "no memory for the flat ground the ring is searched on");
+    const int status = laws_ring(t, k, v, flat, tr, lr, diag);
+    tirenv_profile_free(flat);
+    if (status || !(lack & TIRENV_TIR_SPRINGS))
+        return status;
     return lr->searched ? derive_springs_sidewall(&tr->t, k, tr->rho_n, &tr->ring, diag)
                         : derive_springs(&tr->t, k, tr->rho_n, &tr->ring, diag);
 }
@@ -1087,7 +1170,7 @@ static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const 
         if (!status)
             *t = tr->t;
     } else if (lack == TIRENV_TIR_RING) {
-        status = ring_on_law(t, k, v, 0, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
+        status = ring_on_law(t, k, v, 0, NULL, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
     } else if (lack == TIRENV_TIR_SPRINGS) {
         status = flats(tirenv_model_ring, t, k->fnomin, &tr->ring, diag);
         if (!status)
