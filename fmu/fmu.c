@@ -130,10 +130,13 @@ fmi2Status fmu__setup(fmu_instance *f)
         if (tirenv_tir_read(path, &f->tire, &diag))
             return fmu__fail_diag(f, "tire_file", &diag);
         /* A file without tirenv's sections: the springs and ring models of its own tire,
-         * derived from its MF-Tyre keys (docs/models.md section 14.2), logged. */
+         * derived from its MF-Tyre keys (docs/models.md section 14.2), logged. The FMU runs
+         * the one model named, so the cam is used alone, as by tirenv flat --model cam: a
+         * file whose cam laws are all its own has no ring searched for nothing. */
         tirenv_tir_origin origin;
         const unsigned need = type == tirenv_model_ring      ? TIRENV_TIR_RING
                               : type == tirenv_model_springs ? TIRENV_TIR_SPRINGS
+                              : type == tirenv_model_cam     ? TIRENV_TIR_CAM | TIRENV_TIR_ONLY
                                                              : 0u;
         if (tirenv_tir_derive(path, &f->tire, need, &origin, &diag))
             return fmu__fail_diag(f, "tire_file", &diag);

@@ -47,7 +47,8 @@ double tirenv_ring_patch_length(const tirenv_ring *r);
  * tirenv_ring_size() entries (may be NULL). With the shear-coupled tread (TREAD_SHEAR > 0,
  * the default; docs/models.md section 5.3) w outside the contact window
  * comes from a solve of the unloaded belt and tread there, which allocates (NAN outside the
- * window if memory runs out). */
+ * window if memory runs out); with the Winkler tread, from the belt's compliance, computed at
+ * the first call that asks for w (allocates likewise). */
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
 
 /* The contact of the last evaluation per node, into arrays of tirenv_ring_size() entries (may

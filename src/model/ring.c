@@ -51,23 +51,33 @@ static double mode_stiffness(const tirenv_ring *r, size_t n)
     return R * r->dth * e + 8 * c1 * sn * sn + 2 * c0;
 }
 
+/* Whether the belt is stable: every mode's stiffness positive (otherwise the pretension
+ * buckles the belt). */
+static int belt_stable(const tirenv_ring *r)
+{
+    for (size_t n = 0; n < r->M; ++n)
+        if (!(mode_stiffness(r, n) > 0))
+            return 0;
+    return 1;
+}
+
 /* The belt's compliance is circulant (a uniform ring): one column, the inverse discrete cosine
- * transform of 1/lambda_n, once per tire. Only the state outside the window uses it
- * (tirenv_ring_state); the contact itself is solved on the banded stiffness. */
+ * transform of 1/lambda_n. Only the state outside the window uses it (tirenv_ring_state); the
+ * contact itself is solved on the banded stiffness. So it is computed there, at the first
+ * call that needs it, not at every allocation: an O(M^2) sum, 8 million terms at 0.125 degree
+ * nodes, was most of an allocation's cost, and a derivation allocates a ring for each trial
+ * (src/formats/tir_derive.c). 0 if memory runs out. */
 static int compute_compliance(tirenv_ring *r)
 {
     const size_t M = r->M;
     double *inv_lambda = malloc(M * sizeof *inv_lambda), *cos_tab = malloc(M * sizeof *cos_tab);
     int ok = inv_lambda && cos_tab;
     for (size_t n = 0; ok && n < M; ++n) {
-        const double lambda = mode_stiffness(r, n);
-        ok = lambda > 0; /* otherwise the pretension buckles the belt */
-        inv_lambda[n] = 1 / lambda;
+        inv_lambda[n] = 1 / mode_stiffness(r, n);
         cos_tab[n] = cos(2 * M_PI * (double)n / (double)M);
     }
-    /* cos_tab's index n*m mod M stepped by m, where a division each term made this O(M^2)
-     * sum the dearest part of an allocation (0.1 s at 0.125 degree nodes); the same terms
-     * in the same order, so the same bits. */
+    /* cos_tab's index n*m mod M stepped by m, where a division each term cost as much again;
+     * the same terms in the same order, so the same bits. */
     for (size_t m = 0; ok && m < M; ++m) {
         double sum = 0;
         for (size_t n = 0, nm = 0; n < M; ++n) {
@@ -80,6 +90,7 @@ static int compute_compliance(tirenv_ring *r)
     }
     free(inv_lambda);
     free(cos_tab);
+    r->c_ready = ok;
     return ok;
 }
 
@@ -126,7 +137,7 @@ tirenv_ring *tirenv_ring_alloc(double R0, const tirenv_ring_params *par)
         r->d[j] = r->b[j] = -INFINITY;
         r->w[j] = 0; /* the state saves w whole (the warm start), also where no window was */
     }
-    if (!compute_compliance(r)) {
+    if (!belt_stable(r)) {
         tirenv_ring_free(r);
         return NULL;
     }
@@ -535,6 +546,13 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
 {
     const size_t lo = r->lo, hi = r->lo + r->n;
+    /* The compliance at its first use (compute_compliance): r is the caller's workspace,
+     * allocated writable; what is filled in once depends only on the tire. */
+    if (w && !r->tread && !r->c_ready && !compute_compliance((tirenv_ring *)r)) {
+        for (size_t j = 0; j < r->M; ++j)  /* no memory for it: as the tread's exterior */
+            w[j] = j >= lo && j < hi ? r->w[j] : NAN;
+        w = NULL;
+    }
     if (r->tread && w) {
         /* Outside the window the unloaded belt is held by its tread as well as its ends. */
         if (tirenv_ring__tread_exterior(r, w, NULL))

@@ -127,6 +127,7 @@ struct tirenv_ring {
     double dth;            /* node spacing 2*pi/M, rad */
     double *theta, *sin_t, *cos_t;
     double *c;             /* circulant compliance: w_j = sum_k c[|j-k| mod M] F_k, m/N */
+    int c_ready;           /* c computed (at the first tirenv_ring_state that needs it) */
     tirenv_ring_belt *belt;
     /* Per node (global index), over the last window: */
     double *d, *dd;        /* ray penetration R0 - rho (m, -INFINITY: no ground) and d(d)/dz */
