@@ -200,6 +200,7 @@ typedef struct {
     const double *G, *d, *l;      /* targets: N, m, m */
     const unit_table *tb;
     double d_el[MAX_LOADS];       /* the elements' deflection at the trial c_r, m */
+    double r_el[MAX_LOADS];       /* log(d_el/d): the residual where the sidewall is rigid */
     double ss_l;                  /* sum of the log contact-length residuals' 8th powers */
     double F_s0;                  /* trial preload, N */
 } side_ctx;
@@ -221,8 +222,9 @@ static double ss_compliance(double c, void *p)
     const side_ctx *x = p;
     double ss = 0;
     for (size_t i = 0; i < x->n; i++) {
+        /* At or below the preload u = 0, and the residual is r_el's, the same bits. */
         const double u = x->G[i] > x->F_s0 ? (x->G[i] - x->F_s0) * c : 0;
-        const double r = log((x->d_el[i] + u) / x->d[i]);
+        const double r = x->G[i] > x->F_s0 ? log((x->d_el[i] + u) / x->d[i]) : x->r_el[i];
         ss += pow8(r);
     }
     return ss;
@@ -251,6 +253,7 @@ static double ss_log_c_r(double log_c_r, void *p)
         if (!table_at(x->tb, x->G[i] / c_r, &d_e, &l_e))
             return 1e6;
         x->d_el[i] = d_e;
+        x->r_el[i] = log((d_e + 0) / x->d[i]);  /* ss_compliance's at u = 0 */
         const double r = log(l_e / x->l[i]);
         x->ss_l += pow8(r);
     }
