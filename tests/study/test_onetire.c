@@ -215,7 +215,7 @@ static void test_derived_pairs(void **state)
     (void)state;
     /* Measured (%): 335/65R22.5 2.52/1.32, 0.25/0.61, 2.60/1.51; HMMWV 2.49/1.52, 0.68/0.46,
      * 2.76/1.22; 185/80R14 4.47/3.03, 1.26/0.26, 3.96/2.80; 430/50R38 2.29/3.60, 1.57/2.31,
-     * 3.92/1.32; tir_mftyre.tir 1.10/1.91, 1.41/1.72, 2.55/2.26 (the last two on the rings
+     * 3.92/1.32; tir_mftyre.tir 1.10/1.91, 1.42/1.73, 2.56/2.26 (the last two on the rings
      * searched on their own laws, the springs model with a sidewall; without it 11.35/4.25,
      * 13.13/2.55 and 5.36/1.88, 6.87/2.22; before, on the Winkler rings, cam - ring
      * 5.08/46.63 and 0.32/24.05). */
