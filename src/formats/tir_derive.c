@@ -328,10 +328,11 @@ static int ring_load_at_height(const tirenv_tire *t, const tirenv_profile *flat,
     return status;
 }
 
-/* scale_to for the searched ring, by its load at the height R0 - rho_n (one force evaluation
- * a step, where scale_to inverts a flat inversion): EI, T, k_c, k_t by one factor c until it
- * carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but for the
- * air's share), at most MAX_STEPS. */
+/* scale_to for the rings of a file with laws of its own, by the ring's load at the height
+ * R0 - rho_n (one force evaluation a step on a fresh ring workspace, ring_load_at_height,
+ * where scale_to inverts a flat inversion on a new model): EI, T, k_c, k_t by one factor c
+ * until it carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but
+ * for the air's share), at most MAX_STEPS. */
 static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fnomin,
                            double rho_n, tirenv_diag *diag)
 {
@@ -1023,11 +1024,14 @@ typedef struct {
  * from that ring (its k_c and EI; w_s the law's deflection at FNOMIN, k_t LAWS_KT_START times
  * k_c, as on the 205/60R15's ring and the 430/50R38's best, b_p 0.75 WIDTH) at
  * LAWS_SEARCH_DTHETA, 0.5 degrees; the ring found, at the shipped 0.25 degrees, scaled to
- * carry FNOMIN at the law's deflection there (scale_at_height) and tabled; the springs model
- * identified on the ring kept, with a sidewall in series where it is the search's
- * (derive_springs_sidewall). The search's ring is kept where
- * its largest difference from the cam is below the Winkler ring's, else the Winkler ring (the
- * note says which, and both differences). */
+ * carry FNOMIN at the law's deflection there (scale_at_height), tabled (ring_flats) and its
+ * range checked (within_range). Every ring of these files, the Winkler ring's scaling and
+ * tables included (flat given to ring_on_law), is evaluated on ring workspaces at heights,
+ * never through the ring model, whose valid-range scan on each new model cost more than the
+ * rest (docs/models.md 14.2, Cost). The search's ring is kept where its largest difference
+ * from the cam is below the Winkler ring's, else the Winkler ring (the note says which, and
+ * both differences); derive_on_laws then identifies the springs model on the ring kept, with
+ * a sidewall in series where it is the search's (derive_springs_sidewall). */
 static int laws_ring(const tirenv_tire *t, const mf_keys *k, const vertical_law *v,
                      const tirenv_profile *flat, trial *tr, laws_result *lr, tirenv_diag *diag)
 {
