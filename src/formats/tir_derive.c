@@ -297,7 +297,7 @@ static int derive_springs_sidewall(tirenv_tire *t, const mf_keys *k, double rho_
  * evaluations down to where the flat-ground patch peaks, which the model makes once before
  * its first evaluation: nine tenths of a table's cost). The derivation's heights are the
  * file's deflections at 0.5 to 1.5 FNOMIN, far above that peak on any ring that carries
- * them; the ring kept is tabled by tirenv_model_flat (flats), range and all. */
+ * them; the ring kept is checked to be within its range there once (within_range). */
 static int ring_at_heights(const tirenv_tire *t, const tirenv_profile *flat, size_t n,
                            const double d[], double G[], double l[], tirenv_diag *diag)
 {
