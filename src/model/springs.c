@@ -446,8 +446,14 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->ray_b = b;
         }
         const int reused = walked == 0;
-        for (size_t i = a; i <= b; ++i)
-            s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
+        /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
+         * too): a select the compiler vectorises, the bits of the comparison's branch. */
+        double *d = s->d;
+        const double *rho = s->rho;
+        for (size_t i = a; i <= b; ++i) {
+            const double v = R0 - rho[i];
+            d[i] = v > 0 ? v : 0;
+        }
         /* Newton's confirming evaluation: the last QP solve's state carried along its
          * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
          * the same faces: reused). */
