@@ -777,12 +777,18 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     /* the rays' penetrations on [a, b] (within [lo, hi]: lo <= the first ray with d > 0 and
      * hi >= the last), 0 beyond */
     const size_t ra = a > lo ? a : lo, rb = b < hi ? b : hi;
-    for (size_t e = lo; e <= hi; ++e) {
-        pin_h[e] = 0;
+    for (size_t e = lo; e <= hi; ++e)
         pin_src[e] = SIZE_MAX;
+    /* one pass over pin_h, each piece a loop the compiler vectorises */
+    const size_t r0 = a <= b && ra <= rb ? ra : hi + 1, r1 = a <= b && ra <= rb ? rb : hi;
+    for (size_t e = lo; e < r0; ++e)
+        pin_h[e] = 0;
+    for (size_t e = r0; e <= r1; ++e) {
+        const double v = d[e];
+        pin_h[e] = v > 0 ? v : 0;
     }
-    for (size_t e = ra; a <= b && e <= rb; ++e)
-        pin_h[e] = d[e] > 0 ? d[e] : 0;
+    for (size_t e = r1 + 1; e <= hi; ++e)
+        pin_h[e] = 0;
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
             pin_h[V[k].i] = V[k].h;
