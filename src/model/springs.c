@@ -537,22 +537,29 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
     } else {
-        /* [f0, f1] is the QP's span. The workspace's arrays in locals (the stores to dd
-         * would make them be read again at every element), and a ray's kept d(rho)/dz read
-         * in place (tirenv_springs__fan_drho computes it once per memo). */
-        const size_t *pin_row = s->cc.pin_row;
-        const unsigned char *in_w = s->cc.in_w;
+        /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
+         * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
+         * The workspace's arrays in locals (the stores to dw would make them be read again
+         * at every element), and a ray's kept d(rho)/dz read in place
+         * (tirenv_springs__fan_drho computes it once per memo). */
+        const size_t *pin_row = s->cc.pin_row, *wpos = s->cc.wpos;
         const tirenv_springs__cc_row *rows = s->cc.rows;
         tirenv_springs__ray_memo *memo = s->memo;
-        double *dd = s->dd;
-        for (size_t i = f0; i <= f1; ++i) { /* the elements held by their own ray's row */
-            const size_t r = pin_row[i];
-            if (r != SIZE_MAX && in_w[r] && rows[r].id < 0) {
+        double *dw = s->dw;
+        for (size_t i = f0; i <= f1; ++i) {
+            if (wpos[i] != SIZE_MAX) {
+                dw[i] = 0;
+                continue;
+            }
+            const tirenv_springs__cc_row *R = &rows[pin_row[i]];
+            if (R->id < 0) {
                 const double dr = memo[i].drho;
-                dd[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
+                dw[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
+            } else {
+                dw[i] = R->dh_dz;
             }
         }
-        if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw) == TIRENV_OK) {
+        if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, NULL, s->dw) == TIRENV_OK) {
             /* the base of the next evaluation's update at this x */
             memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
             s->cc.base_z = z;

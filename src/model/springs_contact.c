@@ -741,7 +741,7 @@ int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tir
      * was at its minimiser). d/dz of K w = G^T lambda and of G w = h with the set fixed:
      * K dw - G^T dlambda = dG^T lambda, G dw = dh - dG w; a held element's dw is its row's
      * dh. */
-    {   /* 0 on the free elements (as for eqp's wq) */
+    if (dd) { /* 0 on the free elements (as for eqp's wq); else the caller's */
         const size_t *wpos = c->wpos, *pin_row = c->pin_row;
         const tirenv_springs__cc_row *rows = c->rows;
         for (size_t e = f0; e <= f1; ++e) {
@@ -758,7 +758,7 @@ int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tir
         for (size_t q = 0; q < c->n_schur; ++q) {
             const size_t r = c->order[c->schur_pos[q]] - N;
             const tirenv_springs__cc_row *R = &c->rows[r];
-            double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
+            double rhs = R->id < 0 ? (dd ? dd[R->i] : dw[R->i]) : R->dh_dz;
             if (R->t > 0) {
                 rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j] + R->dcmp_dz * c->lambda[r];
                 if (c->wpos[R->i] != SIZE_MAX)
@@ -783,7 +783,7 @@ int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tir
             continue;
         const size_t r = c->order[p] - N;
         const tirenv_springs__cc_row *R = &c->rows[r];
-        double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
+        double rhs = R->id < 0 ? (dd ? dd[R->i] : dw[R->i]) : R->dh_dz;
         if (R->t > 0) {
             rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j] + R->dcmp_dz * c->lambda[r];
             if (c->wpos[R->i] != SIZE_MAX)

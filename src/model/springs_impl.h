@@ -455,7 +455,10 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
  * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose own ray row (id < 0, its
- * pin_row) is in the working set. Also each working row's d(lambda)/dz into c->dlambda;
+ * pin_row) is in the working set. With dd NULL, dw must hold on entry, over [f0, f1], each
+ * held element's row's dh/dz (that d(d_i)/dz for a ray's, dh_dz for a vertex's; the held
+ * elements: c->wpos[e] == SIZE_MAX) and 0 on the others: the caller's pass over the
+ * elements does it (springs.c). Also each working row's d(lambda)/dz into c->dlambda;
  * returns TIRENV_ENOMEM if there was no room for them (dw is written all the same). */
 int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                              const double w[], const double dd[], double dw[]);
