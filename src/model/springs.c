@@ -399,14 +399,22 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
 static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx, double *fz,
                        size_t *contacts)
 {
-    const double k_r = s->k_r;
-    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
-    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
-    size_t n = 0;
-    for (size_t i = f0; i <= f1; ++i) {
-        sum_c += k_r * s->w[i] * s->cos_t[i];
-        sum_s += k_r * s->w[i] * s->sin_t[i];
-        n += s->p[i] > 0;
+    const double k_r = s->k_r, *w = s->w, *cos_t = s->cos_t, *sin_t = s->sin_t, *p = s->p;
+    double sum_c = w[f0] * s->S_lc[f0] + w[f1] * s->S_rc[f1];
+    double sum_s = w[f0] * s->S_ls[f0] + w[f1] * s->S_rs[f1];
+    size_t n = 0, i = f0;
+    for (; i < f1; i += 2) { /* two at a time, in order (the sums' bits) */
+        const double kw0 = k_r * w[i], kw1 = k_r * w[i + 1];
+        sum_c += kw0 * cos_t[i];
+        sum_s += kw0 * sin_t[i];
+        sum_c += kw1 * cos_t[i + 1];
+        sum_s += kw1 * sin_t[i + 1];
+        n += (p[i] > 0) + (p[i + 1] > 0);
+    }
+    if (i == f1) {
+        sum_c += k_r * w[i] * cos_t[i];
+        sum_s += k_r * w[i] * sin_t[i];
+        n += p[i] > 0;
     }
     *fz = sum_c;
     *fx = -sum_s;
