@@ -662,11 +662,12 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
     if (reserve_warm(c))
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
-    for (size_t e = f0; e <= f1; ++e) {
-        w[e] = wc[e];
-        pe[e] = 0;
-        obstacle[e] = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
-    }
+    /* w, pe = +0 and obstacle = pin_h, which is >= 0 and never -0 or NaN (the rays' d > 0,
+     * else +0, or a higher vertex's h): what max(pin_h, 0) gives, copied */
+    const size_t n_span = f1 - f0 + 1;
+    memcpy(w + f0, wc + f0, n_span * sizeof *w);
+    memset(pe + f0, 0, n_span * sizeof *pe);
+    memcpy(obstacle + f0, c->pin_h + f0, n_span * sizeof *obstacle);
     /* One pass: the rows out of the set get no reaction, the others load their tips (a
      * row with no reaction would add 0, which leaves pe as it is: pe starts at +0 and no
      * sum of nonzero terms gives -0), and the final set is kept for the next solve's warm

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stddef.h>
+#include <string.h>
 #include "profile/profile_impl.h"
 
 /* The farthest (m) from the base's height an update is tried. The tangent errs by the
@@ -215,14 +216,12 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             return 0;
     }
     /* Accepted: the outputs as the solve gives them (pe: each element's net reaction). */
-    for (size_t e = f0; e <= f1; ++e) /* one loop an array: each vectorised */
-        w[e] = wn[e];
+    /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
+     * max(ph, 0) gives, copied */
+    memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
     for (size_t e = f0; e <= f1; ++e)
         pe[e] = wpos[e] == SIZE_MAX ? res[e] : 0;
-    for (size_t e = f0; e <= f1; ++e) {
-        const double v = ph[e];
-        obstacle[e] = v > 0 ? v : 0;
-    }
+    memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
     for (size_t q = 0; q < n_s; ++q) {
         pe[row_i[q]] += ga[q] * lam[q];
         pe[row_i[q] + 1] += gb[q] * lam[q];
