@@ -779,16 +779,13 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const size_t ra = a > lo ? a : lo, rb = b < hi ? b : hi;
     for (size_t e = lo; e <= hi; ++e)
         pin_src[e] = SIZE_MAX;
-    /* one pass over pin_h, each piece a loop the compiler vectorises */
+    /* one pass over pin_h in three pieces: 0, the rays' d (> 0 or +0: what max(d, 0)
+     * gives, copied), 0 */
     const size_t r0 = a <= b && ra <= rb ? ra : hi + 1, r1 = a <= b && ra <= rb ? rb : hi;
-    for (size_t e = lo; e < r0; ++e)
-        pin_h[e] = 0;
-    for (size_t e = r0; e <= r1; ++e) {
-        const double v = d[e];
-        pin_h[e] = v > 0 ? v : 0;
-    }
-    for (size_t e = r1 + 1; e <= hi; ++e)
-        pin_h[e] = 0;
+    memset(pin_h + lo, 0, (r0 - lo) * sizeof *pin_h);
+    if (r0 <= r1)
+        memcpy(pin_h + r0, d + r0, (r1 - r0 + 1) * sizeof *pin_h);
+    memset(pin_h + r1 + 1, 0, (hi - r1) * sizeof *pin_h);
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
             pin_h[V[k].i] = V[k].h;
