@@ -639,9 +639,10 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0, n_hull = 0;
     size_t *stack = c->pos;
     for (size_t e = lo; e <= hi; ++e) {
-        if (pin_h[e] > 0) {
+        if (pin_h[e] > 0) { /* e ascends: the first e to set f0 is the least */
             out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
-            f0 = e < f0 ? e : f0;
+            if (f0 == SIZE_MAX)
+                f0 = e;
             f1 = e;
         } else {
             pin_row[e] = SIZE_MAX;
@@ -691,7 +692,8 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
         }
         sec_count[e] = out - sec_first[e];
         if (sec_count[e] > 0) {
-            f0 = e < f0 ? e : f0;
+            if (f0 == SIZE_MAX)
+                f0 = e;
             f1 = e + 1;
         }
     }
