@@ -176,9 +176,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             if (wpos[e] == SIZE_MAX) {
                 l_max = fabs(r) > l_max ? fabs(r) : l_max;
                 l_min = r < l_min ? r : l_min;
-            } else {
-                ok = ok && fabs(r) <= tol_k;
-                above = above && !(ph[e] > 0 && wn[e] - ph[e] < -tol);
+            } else { /* no side effects: & where && would branch */
+                ok &= fabs(r) <= tol_k;
+                above &= !(ph[e] > 0 && wn[e] - ph[e] < -tol);
             }
         }
         if (ok)
