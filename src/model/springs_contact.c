@@ -537,8 +537,15 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         /* Usually no row is violated (the same working set as the last evaluation's, a step
          * away): then wc = wq, and raise is not needed. */
         int violated = 0;
-        for (size_t r = 0; r < n_rows && !violated; ++r)
-            violated = !c->in_w[r] && slack(&c->rows[r], wq) < -tol;
+        {
+            const unsigned char *in_w = c->in_w;
+            const tirenv_springs__cc_row *rows = c->rows;
+            for (size_t r = 0; r < n_rows; ++r)
+                if (!in_w[r] && slack(&rows[r], wq) < -tol) {
+                    violated = 1;
+                    break;
+                }
+        }
         if (violated) {
             for (size_t e = f0; e <= f1; ++e)
                 raise[e] = 0;
@@ -642,10 +649,12 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         /* At the working set's minimiser: the reactions decide. */
         double l_min = 0, l_max = 0;
         size_t drop = SIZE_MAX;
+        const unsigned char *in_w = c->in_w;
+        const double *lambda = c->lambda;
         for (size_t r = 0; r < n_rows; ++r) {
-            if (!c->in_w[r])
+            if (!in_w[r])
                 continue;
-            const double l = c->lambda[r], m = fabs(l);
+            const double l = lambda[r], m = fabs(l);
             if (m > l_max) /* fmax(l_max, |l|) but for a NaN, which fmax skips too */
                 l_max = m;
             if (l < l_min) {
