@@ -447,7 +447,7 @@ static void warm_set(tirenv_springs__cc *c)
     }
 }
 
-/* Room in warm_ids for every row (keep_warm fills it in the solve's last pass over the rows,
+/* Room in warm_ids for every row (the solve's last pass over the rows fills it,
  * with no count before). */
 static int reserve_warm(tirenv_springs__cc *c)
 {
@@ -459,23 +459,6 @@ static int reserve_warm(tirenv_springs__cc *c)
     c->warm_ids = ids;
     c->cap_warm = c->n_rows;
     return TIRENV_OK;
-}
-
-/* Row r of the final working set joins the warm start: its element, or its vertex in
- * warm_ids (kept ascending; *n of them so far). */
-static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
-{
-    if (c->rows[r].t > 0) {
-        const long id = c->rows[r].id;
-        size_t m = (*n)++;
-        while (m > 0 && c->warm_ids[m - 1] > id) {
-            c->warm_ids[m] = c->warm_ids[m - 1];
-            --m;
-        }
-        c->warm_ids[m] = id;
-    } else {
-        c->warm_pin[c->rows[r].i] = 1;
-    }
 }
 
 /* Whether the rows are the last solve's, laid out the same (and over the same span). */
@@ -688,17 +671,28 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
     const tirenv_springs__cc_row *rows = c->rows;
     const unsigned char *in_w = c->in_w;
     double *lambda = c->lambda;
+    /* the final set kept for the warm start here, not in a function reading c (the byte
+     * stores to warm_pin would make c's fields be read again at every row) */
+    unsigned char *warm_pin = c->warm_pin;
+    long *warm_ids = c->warm_ids;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &rows[r];
         if (!in_w[r]) {
             lambda[r] = 0;
             continue;
         }
-        keep_warm(c, r, &n_warm);
         if (R->t > 0) {
+            const long id = R->id; /* into warm_ids, kept ascending */
+            size_t m = n_warm++;
+            while (m > 0 && warm_ids[m - 1] > id) {
+                warm_ids[m] = warm_ids[m - 1];
+                --m;
+            }
+            warm_ids[m] = id;
             pe[R->i] += R->ga * lambda[r];
             pe[R->j] += R->gb * lambda[r];
         } else {
+            warm_pin[R->i] = 1;
             pe[R->i] += lambda[r];
         }
     }
