@@ -440,10 +440,15 @@ int tirenv_springs__long_in(const long *v, size_t n, long key)
 /* The warm start's working set: the last solution's, where it still names rows here. */
 static void warm_set(tirenv_springs__cc *c)
 {
-    for (size_t r = 0; r < c->n_rows; ++r) {
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        c->in_w[r] = R->t == 0 ? c->warm_pin[R->i]
-                               : tirenv_springs__long_in(c->warm_ids, c->n_warm, R->id);
+    /* in locals: the byte stores to in_w would make c's fields be read again at every row */
+    const tirenv_springs__cc_row *rows = c->rows;
+    unsigned char *in_w = c->in_w;
+    const unsigned char *warm_pin = c->warm_pin;
+    const long *warm_ids = c->warm_ids;
+    const size_t n_rows = c->n_rows, n_warm = c->n_warm;
+    for (size_t r = 0; r < n_rows; ++r) {
+        const tirenv_springs__cc_row *R = &rows[r];
+        in_w[r] = R->t == 0 ? warm_pin[R->i] : tirenv_springs__long_in(warm_ids, n_warm, R->id);
     }
 }
 
