@@ -364,8 +364,8 @@ typedef struct {
     int factor_kept; /* the last factorisation kept K_FF's factor (what the tests count) */
     size_t tri_f0, tri_f1;
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
-    /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
-     * of w, scratch */
+    /* per element (N): the pin row (or SIZE_MAX), first sector row and count (written for
+     * the sectors in hull_sec alone: no other sector has rows), KKT position of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
     /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
      * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from

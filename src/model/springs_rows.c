@@ -647,11 +647,8 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
         } else {
             pin_row[e] = SIZE_MAX;
         }
-        sec_first[e] = out;
-        if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
-            sec_count[e] = 0;
+        if (!(k < nv && V[k].i <= e)) /* no vertex row on sector e: nearly every one */
             continue;
-        }
         while (k < nv && V[k].i < e)
             ++k;
         size_t first = k, m = 0;
@@ -683,18 +680,19 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
                     ++kept;
                 }
             }
-            if (kept > 0) {
+            if (kept > 0) { /* a sector with rows (none, if the hull keeps none of them) */
                 cand_first[e] = first;
                 cand_count[e] = kept;
                 hull_sec[n_hull++] = e;
+                sec_first[e] = out;
                 out = hull_rows(c, first, kept, P_l, P_r, stack, out);
+                sec_count[e] = out - sec_first[e];
+                if (sec_count[e] > 0) {
+                    if (f0 == SIZE_MAX)
+                        f0 = e;
+                    f1 = e + 1;
+                }
             }
-        }
-        sec_count[e] = out - sec_first[e];
-        if (sec_count[e] > 0) {
-            if (f0 == SIZE_MAX)
-                f0 = e;
-            f1 = e + 1;
         }
     }
     c->n_hull_sec = n_hull;
@@ -721,13 +719,13 @@ static void lay_out_again(tirenv_springs__cc *c)
     size_t out = 0, q = 0;
     for (size_t e = lo; e <= hi; ++e) {
         out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
-        sec_first[e] = out;
         if (q < c->n_hull_sec && c->hull_sec[q] == e) {
             ++q;
+            sec_first[e] = out;
             out = hull_rows(c, c->cand_first[e], c->cand_count[e], pin_h[e] > 0 ? pin_h[e] : 0,
                             pin_h[e + 1] > 0 ? pin_h[e + 1] : 0, c->pos, out);
+            sec_count[e] = out - sec_first[e];
         }
-        sec_count[e] = out - sec_first[e];
     }
     c->n_rows = out;
 }
