@@ -334,13 +334,15 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
         return st;
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
     double *b = c->rhs;
-    /* the held elements' w, 0 on the free ones (the Schur path's right-hand side there; the
-     * banded path reads wq on the held elements alone, and writes the free ones) */
+    /* the held elements' w, their own row's h (which the layout made pin_h: a ray's row
+     * takes it, a vertex's gave it), 0 on the free ones (the Schur path's right-hand side
+     * there; the banded path reads wq on the held elements alone, and writes the free
+     * ones) */
     {
-        const size_t *wpos = c->wpos, *pin_row = c->pin_row;
-        const tirenv_springs__cc_row *rows = c->rows;
+        const size_t *wpos = c->wpos;
+        const double *pin_h = c->pin_h;
         for (size_t e = f0; e <= f1; ++e)
-            wq[e] = wpos[e] == SIZE_MAX ? rows[pin_row[e]].h : 0;
+            wq[e] = wpos[e] == SIZE_MAX ? pin_h[e] : 0;
     }
     if (c->use_schur) {
         /* By element, not in the KKT order (the free elements' entries of wq, the rows'

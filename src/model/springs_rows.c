@@ -777,8 +777,7 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     /* the rays' penetrations on [a, b] (within [lo, hi]: lo <= the first ray with d > 0 and
      * hi >= the last), 0 beyond */
     const size_t ra = a > lo ? a : lo, rb = b < hi ? b : hi;
-    for (size_t e = lo; e <= hi; ++e)
-        pin_src[e] = SIZE_MAX;
+    memset(pin_src + lo, 0xff, (hi - lo + 1) * sizeof *pin_src); /* SIZE_MAX: all ones */
     /* one pass over pin_h in three pieces: 0, the rays' d (> 0 or +0: what max(d, 0)
      * gives, copied), 0 */
     const size_t r0 = a <= b && ra <= rb ? ra : hi + 1, r1 = a <= b && ra <= rb ? rb : hi;
