@@ -399,14 +399,22 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
 static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx, double *fz,
                        size_t *contacts)
 {
-    const double k_r = s->k_r;
-    double sum_c = s->w[f0] * s->S_lc[f0] + s->w[f1] * s->S_rc[f1];
-    double sum_s = s->w[f0] * s->S_ls[f0] + s->w[f1] * s->S_rs[f1];
-    size_t n = 0;
-    for (size_t i = f0; i <= f1; ++i) {
-        sum_c += k_r * s->w[i] * s->cos_t[i];
-        sum_s += k_r * s->w[i] * s->sin_t[i];
-        n += s->p[i] > 0;
+    const double k_r = s->k_r, *w = s->w, *cos_t = s->cos_t, *sin_t = s->sin_t, *p = s->p;
+    double sum_c = w[f0] * s->S_lc[f0] + w[f1] * s->S_rc[f1];
+    double sum_s = w[f0] * s->S_ls[f0] + w[f1] * s->S_rs[f1];
+    size_t n = 0, i = f0;
+    for (; i < f1; i += 2) { /* two at a time, in order (the sums' bits) */
+        const double kw0 = k_r * w[i], kw1 = k_r * w[i + 1];
+        sum_c += kw0 * cos_t[i];
+        sum_s += kw0 * sin_t[i];
+        sum_c += kw1 * cos_t[i + 1];
+        sum_s += kw1 * sin_t[i + 1];
+        n += (p[i] > 0) + (p[i + 1] > 0);
+    }
+    if (i == f1) {
+        sum_c += k_r * w[i] * cos_t[i];
+        sum_s += k_r * w[i] * sin_t[i];
+        n += p[i] > 0;
     }
     *fz = sum_c;
     *fx = -sum_s;
@@ -446,8 +454,14 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->ray_b = b;
         }
         const int reused = walked == 0;
-        for (size_t i = a; i <= b; ++i)
-            s->d[i] = s->rho[i] < R0 ? R0 - s->rho[i] : 0;
+        /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
+         * too): a select the compiler vectorises, the bits of the comparison's branch. */
+        double *d = s->d;
+        const double *rho = s->rho;
+        for (size_t i = a; i <= b; ++i) {
+            const double v = R0 - rho[i];
+            d[i] = v > 0 ? v : 0;
+        }
         /* Newton's confirming evaluation: the last QP solve's state carried along its
          * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
          * the same faces: reused). */
@@ -531,22 +545,29 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
     } else {
-        /* [f0, f1] is the QP's span. The workspace's arrays in locals (the stores to dd
-         * would make them be read again at every element), and a ray's kept d(rho)/dz read
-         * in place (tirenv_springs__fan_drho computes it once per memo). */
-        const size_t *pin_row = s->cc.pin_row;
-        const unsigned char *in_w = s->cc.in_w;
+        /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
+         * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
+         * The workspace's arrays in locals (the stores to dw would make them be read again
+         * at every element), and a ray's kept d(rho)/dz read in place
+         * (tirenv_springs__fan_drho computes it once per memo). */
+        const size_t *pin_row = s->cc.pin_row, *wpos = s->cc.wpos;
         const tirenv_springs__cc_row *rows = s->cc.rows;
         tirenv_springs__ray_memo *memo = s->memo;
-        double *dd = s->dd;
-        for (size_t i = f0; i <= f1; ++i) { /* the elements held by their own ray's row */
-            const size_t r = pin_row[i];
-            if (r != SIZE_MAX && in_w[r] && rows[r].id < 0) {
+        double *dw = s->dw;
+        for (size_t i = f0; i <= f1; ++i) {
+            if (wpos[i] != SIZE_MAX) {
+                dw[i] = 0;
+                continue;
+            }
+            const tirenv_springs__cc_row *R = &rows[pin_row[i]];
+            if (R->id < 0) {
                 const double dr = memo[i].drho;
-                dd[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
+                dw[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
+            } else {
+                dw[i] = R->dh_dz;
             }
         }
-        if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, s->dd, s->dw) == TIRENV_OK) {
+        if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, NULL, s->dw) == TIRENV_OK) {
             /* the base of the next evaluation's update at this x */
             memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
             s->cc.base_z = z;

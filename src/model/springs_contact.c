@@ -100,14 +100,6 @@ static double slack(const tirenv_springs__cc_row *r, const double w[])
     return r->t > 0 ? r->ga * w[r->i] + r->gb * w[r->j] - r->h : w[r->i] - r->h;
 }
 
-/* Whether element e is held by its own row in the working set: then w_e = h is known and
- * neither w_e nor that row's reaction is an unknown of the KKT system. */
-static int fixed(const tirenv_springs__cc *c, size_t e)
-{
-    const size_t pr = c->pin_row[e];
-    return pr != SIZE_MAX && c->in_w[pr];
-}
-
 /* The KKT system of the working set on the unknowns left once the held elements are
  * eliminated: w_e of the free elements in [f0, f1], each followed by the rows of sector e - 1
  * in the working set (whose free elements then precede them), in the symmetric form
@@ -129,23 +121,34 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
         /* wpos, order, schur_pos and the chains stand; only the values are new. */
         return tirenv_springs__cc_schur_factor(c, T, 1);
     }
+    /* the workspace's arrays in locals (the stores would make them be read again); the
+     * sectors with rows are those in hull_sec (ascending), so the others are not looked at */
+    size_t *wpos = c->wpos, *order = c->order;
+    const size_t *pin_row = c->pin_row, *hull_sec = c->hull_sec, n_hull = c->n_hull_sec;
+    const unsigned char *in_w = c->in_w;
+    size_t hq = 0;
+    while (hq < n_hull && hull_sec[hq] < f0)
+        ++hq;
     for (size_t e = f0; e <= f1; ++e) {
-        const int held = fixed(c, e);
-        same = same && held == (c->wpos[e] == SIZE_MAX);
+        const size_t pr = pin_row[e]; /* held by its own row in the working set: w_e = h */
+        const int held = pr != SIZE_MAX && in_w[pr];
+        same = same && held == (wpos[e] == SIZE_MAX);
         if (held) {
-            c->wpos[e] = SIZE_MAX;
+            wpos[e] = SIZE_MAX;
         } else {
-            c->wpos[e] = n;
-            c->order[n++] = e;
+            wpos[e] = n;
+            order[n++] = e;
         }
-        if (e > f0)
+        if (e > f0 && hq < n_hull && hull_sec[hq] == e - 1) {
+            ++hq;
             for (size_t r = c->sec_first[e - 1], k = 0; k < c->sec_count[e - 1]; ++k, ++r)
-                if (c->in_w[r]) {
+                if (in_w[r]) {
                     if (n_schur < TIRENV_SPRINGS__SCHUR_MAX)
                         c->schur_pos[n_schur] = n;
                     ++n_schur;
-                    c->order[n++] = N + r;
+                    order[n++] = N + r;
                 }
+        }
     }
     c->n_kkt = n;
     c->n_schur = n_schur;
@@ -331,16 +334,20 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
         return st;
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
     double *b = c->rhs;
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] == SIZE_MAX)
-            wq[e] = c->rows[c->pin_row[e]].h;
+    /* the held elements' w, their own row's h (which the layout made pin_h: a ray's row
+     * takes it, a vertex's gave it), 0 on the free ones (the Schur path's right-hand side
+     * there; the banded path reads wq on the held elements alone, and writes the free
+     * ones) */
+    {
+        const size_t *wpos = c->wpos;
+        const double *pin_h = c->pin_h;
+        for (size_t e = f0; e <= f1; ++e)
+            wq[e] = wpos[e] == SIZE_MAX ? pin_h[e] : 0;
+    }
     if (c->use_schur) {
         /* By element, not in the KKT order (the free elements' entries of wq, the rows'
          * in lam). */
         double lam[TIRENV_SPRINGS__SCHUR_MAX];
-        for (size_t q = 0; q < c->n_chains; ++q)
-            for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
-                wq[e] = 0;
         for (size_t q = 0; q < c->n_schur; ++q)
             lam[q] = c->rows[c->order[c->schur_pos[q]] - N].h;
         schur_rhs(c, T, wq, wq, lam);
@@ -360,36 +367,61 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
         }
     }
     /* The held elements' reactions: (K w)_e less what the working rows between elements
-     * put on e (sectors e - 1 and e). The workspace's arrays in locals: the stores to lambda
-     * would make them be read again at every element. */
-    const size_t *wpos = c->wpos, *sec_first = c->sec_first, *sec_count = c->sec_count;
-    const size_t *pin_row = c->pin_row;
+     * put on e (sectors e - 1 and e, in that order). The workspace's arrays in locals: the
+     * stores to lambda would make them be read again at every element. K w first, the ends
+     * of the span apart (the free chains beyond folded into their diagonal), so that the
+     * loop over the others tests nothing but whether e is held; then the rows, sector by
+     * sector (only those in hull_sec have any), each subtracted from what the first pass
+     * stored: the operations, and their order for each element, are the ones a single pass
+     * makes, so the same bits. */
+    const size_t *wpos = c->wpos, *pin_row = c->pin_row;
     const unsigned char *in_w = c->in_w;
     const tirenv_springs__cc_row *rows = c->rows;
     const double *diag = T->diag, k_ir = T->k_ir;
     double *lambda = c->lambda;
-    for (size_t e = f0; e <= f1; ++e) {
+    if (wpos[f0] == SIZE_MAX) {
+        double k_ee = diag[f0];
+        if (f0 > 0)
+            k_ee -= k_ir * T->lq[f0 - 1];
+        if (f0 == f1 && f1 + 1 < N)
+            k_ee -= k_ir * T->rq[f1 + 1];
+        double Kw = k_ee * wq[f0];
+        if (f0 < f1)
+            Kw -= k_ir * wq[f0 + 1];
+        lambda[pin_row[f0]] = Kw;
+    }
+    for (size_t e = f0 + 1; e < f1; ++e) {
         if (wpos[e] != SIZE_MAX)
             continue;
-        double k_ee = diag[e];
-        if (e == f0 && f0 > 0)
-            k_ee -= k_ir * T->lq[f0 - 1];
-        if (e == f1 && f1 + 1 < N)
-            k_ee -= k_ir * T->rq[f1 + 1];
-        double Kw = k_ee * wq[e];
-        if (e > f0)
-            Kw -= k_ir * wq[e - 1];
-        if (e < f1)
-            Kw -= k_ir * wq[e + 1];
-        if (e > f0)
-            for (size_t r = sec_first[e - 1], k = 0; k < sec_count[e - 1]; ++k, ++r)
-                if (in_w[r])
-                    Kw -= rows[r].gb * lambda[r];
-        if (e < f1)
-            for (size_t r = sec_first[e], k = 0; k < sec_count[e]; ++k, ++r)
-                if (in_w[r])
-                    Kw -= rows[r].ga * lambda[r];
+        double Kw = diag[e] * wq[e];
+        Kw -= k_ir * wq[e - 1];
+        Kw -= k_ir * wq[e + 1];
         lambda[pin_row[e]] = Kw;
+    }
+    if (f1 > f0 && wpos[f1] == SIZE_MAX) {
+        double k_ee = diag[f1];
+        if (f1 + 1 < N)
+            k_ee -= k_ir * T->rq[f1 + 1];
+        double Kw = k_ee * wq[f1];
+        Kw -= k_ir * wq[f1 - 1];
+        lambda[pin_row[f1]] = Kw;
+    }
+    const size_t *sec_first = c->sec_first, *sec_count = c->sec_count;
+    for (size_t q = 0; q < c->n_hull_sec; ++q) {
+        const size_t e = c->hull_sec[q]; /* sector e: element e's sector e, e + 1's e - 1 */
+        const size_t r0 = sec_first[e], r1 = r0 + sec_count[e];
+        if (e + 1 > f0 && e + 1 <= f1 && wpos[e + 1] == SIZE_MAX) {
+            double *l = &lambda[pin_row[e + 1]];
+            for (size_t r = r0; r < r1; ++r)
+                if (in_w[r])
+                    *l -= rows[r].gb * lambda[r];
+        }
+        if (e >= f0 && e < f1 && wpos[e] == SIZE_MAX) {
+            double *l = &lambda[pin_row[e]];
+            for (size_t r = r0; r < r1; ++r)
+                if (in_w[r])
+                    *l -= rows[r].ga * lambda[r];
+        }
     }
     return 0;
 }
@@ -410,14 +442,19 @@ int tirenv_springs__long_in(const long *v, size_t n, long key)
 /* The warm start's working set: the last solution's, where it still names rows here. */
 static void warm_set(tirenv_springs__cc *c)
 {
-    for (size_t r = 0; r < c->n_rows; ++r) {
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        c->in_w[r] = R->t == 0 ? c->warm_pin[R->i]
-                               : tirenv_springs__long_in(c->warm_ids, c->n_warm, R->id);
+    /* in locals: the byte stores to in_w would make c's fields be read again at every row */
+    const tirenv_springs__cc_row *rows = c->rows;
+    unsigned char *in_w = c->in_w;
+    const unsigned char *warm_pin = c->warm_pin;
+    const long *warm_ids = c->warm_ids;
+    const size_t n_rows = c->n_rows, n_warm = c->n_warm;
+    for (size_t r = 0; r < n_rows; ++r) {
+        const tirenv_springs__cc_row *R = &rows[r];
+        in_w[r] = R->t == 0 ? warm_pin[R->i] : tirenv_springs__long_in(warm_ids, n_warm, R->id);
     }
 }
 
-/* Room in warm_ids for every row (keep_warm fills it in the solve's last pass over the rows,
+/* Room in warm_ids for every row (the solve's last pass over the rows fills it,
  * with no count before). */
 static int reserve_warm(tirenv_springs__cc *c)
 {
@@ -429,23 +466,6 @@ static int reserve_warm(tirenv_springs__cc *c)
     c->warm_ids = ids;
     c->cap_warm = c->n_rows;
     return TIRENV_OK;
-}
-
-/* Row r of the final working set joins the warm start: its element, or its vertex in
- * warm_ids (kept ascending; *n of them so far). */
-static void keep_warm(tirenv_springs__cc *c, size_t r, size_t *n)
-{
-    if (c->rows[r].t > 0) {
-        const long id = c->rows[r].id;
-        size_t m = (*n)++;
-        while (m > 0 && c->warm_ids[m - 1] > id) {
-            c->warm_ids[m] = c->warm_ids[m - 1];
-            --m;
-        }
-        c->warm_ids[m] = id;
-    } else {
-        c->warm_pin[c->rows[r].i] = 1;
-    }
 }
 
 /* Whether the rows are the last solve's, laid out the same (and over the same span). */
@@ -507,8 +527,15 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         /* Usually no row is violated (the same working set as the last evaluation's, a step
          * away): then wc = wq, and raise is not needed. */
         int violated = 0;
-        for (size_t r = 0; r < n_rows && !violated; ++r)
-            violated = !c->in_w[r] && slack(&c->rows[r], wq) < -tol;
+        {
+            const unsigned char *in_w = c->in_w;
+            const tirenv_springs__cc_row *rows = c->rows;
+            for (size_t r = 0; r < n_rows; ++r)
+                if (!in_w[r] && slack(&rows[r], wq) < -tol) {
+                    violated = 1;
+                    break;
+                }
+        }
         if (violated) {
             for (size_t e = f0; e <= f1; ++e)
                 raise[e] = 0;
@@ -612,10 +639,12 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         /* At the working set's minimiser: the reactions decide. */
         double l_min = 0, l_max = 0;
         size_t drop = SIZE_MAX;
+        const unsigned char *in_w = c->in_w;
+        const double *lambda = c->lambda;
         for (size_t r = 0; r < n_rows; ++r) {
-            if (!c->in_w[r])
+            if (!in_w[r])
                 continue;
-            const double l = c->lambda[r], m = fabs(l);
+            const double l = lambda[r], m = fabs(l);
             if (m > l_max) /* fmax(l_max, |l|) but for a NaN, which fmax skips too */
                 l_max = m;
             if (l < l_min) {
@@ -632,11 +661,12 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
     if (reserve_warm(c))
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
                             "of the springs model");
-    for (size_t e = f0; e <= f1; ++e) {
-        w[e] = wc[e];
-        pe[e] = 0;
-        obstacle[e] = c->pin_h[e] > 0 ? c->pin_h[e] : 0;
-    }
+    /* w, pe = +0 and obstacle = pin_h, which is >= 0 and never -0 or NaN (the rays' d > 0,
+     * else +0, or a higher vertex's h): what max(pin_h, 0) gives, copied */
+    const size_t n_span = f1 - f0 + 1;
+    memcpy(w + f0, wc + f0, n_span * sizeof *w);
+    memset(pe + f0, 0, n_span * sizeof *pe);
+    memcpy(obstacle + f0, c->pin_h + f0, n_span * sizeof *obstacle);
     /* One pass: the rows out of the set get no reaction, the others load their tips (a
      * row with no reaction would add 0, which leaves pe as it is: pe starts at +0 and no
      * sum of nonzero terms gives -0), and the final set is kept for the next solve's warm
@@ -648,17 +678,28 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
     const tirenv_springs__cc_row *rows = c->rows;
     const unsigned char *in_w = c->in_w;
     double *lambda = c->lambda;
+    /* the final set kept for the warm start here, not in a function reading c (the byte
+     * stores to warm_pin would make c's fields be read again at every row) */
+    unsigned char *warm_pin = c->warm_pin;
+    long *warm_ids = c->warm_ids;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &rows[r];
         if (!in_w[r]) {
             lambda[r] = 0;
             continue;
         }
-        keep_warm(c, r, &n_warm);
         if (R->t > 0) {
+            const long id = R->id; /* into warm_ids, kept ascending */
+            size_t m = n_warm++;
+            while (m > 0 && warm_ids[m - 1] > id) {
+                warm_ids[m] = warm_ids[m - 1];
+                --m;
+            }
+            warm_ids[m] = id;
             pe[R->i] += R->ga * lambda[r];
             pe[R->j] += R->gb * lambda[r];
         } else {
+            warm_pin[R->i] = 1;
             pe[R->i] += lambda[r];
         }
     }
@@ -711,20 +752,24 @@ int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tir
      * was at its minimiser). d/dz of K w = G^T lambda and of G w = h with the set fixed:
      * K dw - G^T dlambda = dG^T lambda, G dw = dh - dG w; a held element's dw is its row's
      * dh. */
-    for (size_t e = f0; e <= f1; ++e)
-        if (c->wpos[e] == SIZE_MAX) {
-            const tirenv_springs__cc_row *R = &c->rows[c->pin_row[e]];
-            dw[e] = R->id < 0 ? dd[e] : R->dh_dz;
+    if (dd) { /* 0 on the free elements (as for eqp's wq); else the caller's */
+        const size_t *wpos = c->wpos, *pin_row = c->pin_row;
+        const tirenv_springs__cc_row *rows = c->rows;
+        for (size_t e = f0; e <= f1; ++e) {
+            if (wpos[e] == SIZE_MAX) {
+                const tirenv_springs__cc_row *R = &rows[pin_row[e]];
+                dw[e] = R->id < 0 ? dd[e] : R->dh_dz;
+            } else {
+                dw[e] = 0;
+            }
         }
+    }
     if (c->use_schur) { /* by element: the same sums as the banded path's below */
         double lam[TIRENV_SPRINGS__SCHUR_MAX];
-        for (size_t q = 0; q < c->n_chains; ++q)
-            for (size_t e = c->chains[2 * q]; e <= c->chains[2 * q + 1]; ++e)
-                dw[e] = 0;
         for (size_t q = 0; q < c->n_schur; ++q) {
             const size_t r = c->order[c->schur_pos[q]] - N;
             const tirenv_springs__cc_row *R = &c->rows[r];
-            double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
+            double rhs = R->id < 0 ? (dd ? dd[R->i] : dw[R->i]) : R->dh_dz;
             if (R->t > 0) {
                 rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j] + R->dcmp_dz * c->lambda[r];
                 if (c->wpos[R->i] != SIZE_MAX)
@@ -749,7 +794,7 @@ int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tir
             continue;
         const size_t r = c->order[p] - N;
         const tirenv_springs__cc_row *R = &c->rows[r];
-        double rhs = R->id < 0 ? dd[R->i] : R->dh_dz;
+        double rhs = R->id < 0 ? (dd ? dd[R->i] : dw[R->i]) : R->dh_dz;
         if (R->t > 0) {
             rhs -= R->dga_dz * w[R->i] + R->dgb_dz * w[R->j] + R->dcmp_dz * c->lambda[r];
             if (c->wpos[R->i] != SIZE_MAX)

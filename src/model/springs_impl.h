@@ -364,8 +364,8 @@ typedef struct {
     int factor_kept; /* the last factorisation kept K_FF's factor (what the tests count) */
     size_t tri_f0, tri_f1;
     double schur[TIRENV_SPRINGS__SCHUR_MAX * TIRENV_SPRINGS__SCHUR_MAX];
-    /* per element (N): the pin row (or SIZE_MAX), first sector row and count, KKT position
-     * of w, scratch */
+    /* per element (N): the pin row (or SIZE_MAX), first sector row and count (written for
+     * the sectors in hull_sec alone: no other sector has rows), KKT position of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
     /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
      * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
@@ -426,8 +426,8 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
                                        double lam[]);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
- * d[a..b] (0 where the ray meets no ground within R0; elements outside [a, b] cannot reach
- * the ground): c->rows, their span c->f0..c->f1 (f0 > f1: nothing touches), c->pin_h[e]
+ * d[a..b] (> 0, else +0 where the ray meets no ground within R0: never negative, -0 or NaN;
+ * elements outside [a, b] cannot reach the ground): c->rows, their span c->f0..c->f1 (f0 > f1: nothing touches), c->pin_h[e]
  * (each element's own row's h, 0 if none) and c->pin_row[e]. TIRENV_ENOMEM with diag. */
 int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
@@ -455,7 +455,10 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 
 /* dw/dz over [f0, f1] (written to dw) of the last solution with its active set fixed; dd[i]
  * must hold d(d_i)/dz = -d(rho_i)/dz for every element i whose own ray row (id < 0, its
- * pin_row) is in the working set. Also each working row's d(lambda)/dz into c->dlambda;
+ * pin_row) is in the working set. With dd NULL, dw must hold on entry, over [f0, f1], each
+ * held element's row's dh/dz (that d(d_i)/dz for a ray's, dh_dz for a vertex's; the held
+ * elements: c->wpos[e] == SIZE_MAX) and 0 on the others: the caller's pass over the
+ * elements does it (springs.c). Also each working row's d(lambda)/dz into c->dlambda;
  * returns TIRENV_ENOMEM if there was no room for them (dw is written all the same). */
 int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                              const double w[], const double dd[], double dw[]);

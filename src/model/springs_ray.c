@@ -242,49 +242,50 @@ static double fan_tol(const tirenv_springs__fan_origin *o, double z)
  * last term the rounding of z_low itself); 8 DBL_EPSILON (|z| + |g| + rho_max + max |Z|) =
  * 16 u (...) exceeds that, since f_min <= f0 = z - g. */
 /* Ray i's rho at z from its memo, where the memo provably holds (see above): 1, or 0 with
- * nothing written. f0 = z - o->g > 0. */
+ * nothing written. f0 = z - o->g > 0; side is ray i's (0: i < i0, 1: i > i0; either for
+ * the straight-down ray, whose memo needs neither), a constant where the callers inline it,
+ * so that the direction and the side's first vertex are not found again for every ray. The
+ * commonest kind is tested first. */
 static inline int reuse_ray(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                             const tirenv_springs__fan_rays *r, double z, double f0, size_t i,
-                            double rho[], const tirenv_springs__ray_memo *m)
+                            int side, double rho[], const tirenv_springs__ray_memo *m)
 {
     const double *X = p->x, *Z = p->z;
-    const long n = (long)p->n;
-    const double x = o->x, rho_max = r->rho_max;
-    const size_t i0 = r->i0;
+    const double x = o->x;
     if (!(z > m->z_low))
         return 0;
-    const int dir = i > i0 ? 1 : -1;
-    const double inv_s = r->inv_s[i], drop = r->drop[i], reach = r->reach[i];
+    const int dir = side ? 1 : -1;
     const long j = m->j;
-    switch (m->kind) {
-    case RAY_DOWN:
-        rho[i] = f0 <= rho_max ? f0 : INFINITY;
-        return 1;
-    case RAY_HIT:
-    case RAY_WALL: {
+    const int kind = m->kind;
+    if (kind == RAY_HIT || kind == RAY_WALL) {
         const double a_j = dir * (X[j] - x);
-        const double f = z - a_j * drop - Z[j];
+        const double f = z - a_j * r->drop[i] - Z[j];
         if (f > 0)
             return 0; /* the crossing moved past j */
-        if (m->kind == RAY_WALL) {
-            rho[i] = a_j <= reach ? a_j * inv_s : INFINITY;
+        const double reach = r->reach[i];
+        if (kind == RAY_WALL) {
+            rho[i] = a_j <= reach ? a_j * r->inv_s[i] : INFINITY;
             return 1;
         }
         double a_prev, f_prev;
-        if (j == o->first[i > i0]) {
+        if (j == o->first[side]) {
             a_prev = 0;
             f_prev = f0;
         } else {
             a_prev = dir * (X[j - dir] - x);
-            f_prev = z - a_prev * drop - Z[j - dir];
+            f_prev = z - a_prev * r->drop[i] - Z[j - dir];
         }
         const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
-        rho[i] = a_hit > reach ? INFINITY : a_hit * inv_s;
+        rho[i] = a_hit > reach ? INFINITY : a_hit * r->inv_s[i];
         return 1;
     }
+    switch (kind) {
+    case RAY_DOWN:
+        rho[i] = f0 <= r->rho_max ? f0 : INFINITY;
+        return 1;
     case RAY_REACH: {
         const double a_j = dir * (X[j] - x);
-        if (!(z - a_j * drop - Z[j] > 0))
+        if (!(z - a_j * r->drop[i] - Z[j] > 0))
             return 0; /* the ground beyond reach came up to the ray: walk again */
         rho[i] = INFINITY;
         return 1;
@@ -295,13 +296,28 @@ static inline int reuse_ray(const tirenv_profile *p, const tirenv_springs__fan_o
             rho[i] = INFINITY;
             return 1;
         }
-        const double rr = (z - Z[dir > 0 ? n - 1 : 0]) / cos_t;
-        rho[i] = rr > rho_max ? INFINITY : rr;
+        const double rr = (z - Z[dir > 0 ? (long)p->n - 1 : 0]) / cos_t;
+        rho[i] = rr > r->rho_max ? INFINITY : rr;
         return 1;
     }
     default:
         return 0;
     }
+}
+
+/* The rays of one side (side 0: i0 - step, 1: i0 + step) from step 1 outward whose memos
+ * hold at z, their rho written: the first step whose memo fails (count + 1 if none). */
+static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, double z, double f0,
+                                int side, size_t count, double rho[],
+                                const tirenv_springs__ray_memo memo[])
+{
+    const size_t i0 = r->i0;
+    size_t step = 1;
+    while (step <= count && reuse_ray(p, o, r, z, f0, side ? i0 + step : i0 - step, side, rho,
+                                      &memo[side ? i0 + step : i0 - step]))
+        ++step;
+    return step;
 }
 
 /* The rays step..count of one side (side 0: i0 - step, 1: i0 + step) as the fan walks them,
@@ -333,7 +349,7 @@ static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan
         drop_prev = drop;
         reach_prev = reach;
         tirenv_springs__ray_memo *const m = &memo[i];
-        if (reuse && cast && reuse_ray(p, o, r, z, f0, i, rho, m)) {
+        if (reuse && cast && reuse_ray(p, o, r, z, f0, i, side, rho, m)) {
             j = m->j;
             f_min = z - m->z_low; /* f_min(z) >= this (above) */
             continue;
@@ -366,9 +382,9 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
     }
     rho[i0] = f0 <= rho_max ? f0 : INFINITY;
     memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
-    for (int side = 0; side < 2; ++side)
-        fan_side(p, o, r, z, side, 1, side ? b - i0 : i0 - a, o->first[side], f0, INFINITY, 0,
-                 0, rho, memo);
+    /* each side's walk compiled for its direction */
+    fan_side(p, o, r, z, 0, 1, i0 - a, o->first[0], f0, INFINITY, 0, 0, rho, memo);
+    fan_side(p, o, r, z, 1, 1, b - i0, o->first[1], f0, INFINITY, 0, 0, rho, memo);
 }
 
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
@@ -395,8 +411,9 @@ int tirenv_springs__fan_reuse(const tirenv_profile *p, const tirenv_springs__fan
     const double f0 = z - o->g;
     if (!(f0 > 0))
         return 0;
+    const size_t i0 = r->i0;
     for (size_t i = a; i <= b; ++i)
-        if (!reuse_ray(p, o, r, z, f0, i, rho, &memo[i]))
+        if (!reuse_ray(p, o, r, z, f0, i, i > i0, rho, &memo[i]))
             return 0;
     return 1;
 }
@@ -418,7 +435,7 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
 {
     const double f0 = z - o->g;
     const size_t i0 = r->i0;
-    if (!(f0 > 0) || !reuse_ray(p, o, r, z, f0, i0, rho, &memo[i0])) {
+    if (!(f0 > 0) || !reuse_ray(p, o, r, z, f0, i0, 0, rho, &memo[i0])) {
         tirenv_springs__fan(p, o, r, z, a, b, rho, memo);
         return b - a + 1;
     }
@@ -426,10 +443,9 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
     for (int side = 0; side < 2; ++side) {
         const size_t count = side ? b - i0 : i0 - a;
         /* the rays whose memos hold, outward to the first that fails */
-        size_t step = 1;
-        while (step <= count && reuse_ray(p, o, r, z, f0, side ? i0 + step : i0 - step, rho,
-                                          &memo[side ? i0 + step : i0 - step]))
-            ++step;
+        /* each side's loop compiled for its direction */
+        const size_t step = side ? reuse_side(p, o, r, z, f0, 1, count, rho, memo)
+                                 : reuse_side(p, o, r, z, f0, 0, count, rho, memo);
         if (step > count)
             continue;
         /* from there on as the fan, each ray resuming where its inner neighbour ends; the
@@ -443,8 +459,10 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
             drop_prev = r->drop[in];
             reach_prev = r->reach[in];
         }
-        cast += fan_side(p, o, r, z, side, step, count, j, f_min, drop_prev, reach_prev, 1, rho,
-                         memo);
+        cast += side ? fan_side(p, o, r, z, 1, step, count, j, f_min, drop_prev, reach_prev, 1,
+                                rho, memo)
+                     : fan_side(p, o, r, z, 0, step, count, j, f_min, drop_prev, reach_prev, 1,
+                                rho, memo);
     }
     return cast;
 }

@@ -639,18 +639,16 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
     size_t out = 0, k = 0, f0 = SIZE_MAX, f1 = 0, n_hull = 0;
     size_t *stack = c->pos;
     for (size_t e = lo; e <= hi; ++e) {
-        if (pin_h[e] > 0) {
+        if (pin_h[e] > 0) { /* e ascends: the first e to set f0 is the least */
             out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
-            f0 = e < f0 ? e : f0;
+            if (f0 == SIZE_MAX)
+                f0 = e;
             f1 = e;
         } else {
             pin_row[e] = SIZE_MAX;
         }
-        sec_first[e] = out;
-        if (!(k < nv && V[k].i <= e)) { /* no vertex row on sector e: nearly every one */
-            sec_count[e] = 0;
+        if (!(k < nv && V[k].i <= e)) /* no vertex row on sector e: nearly every one */
             continue;
-        }
         while (k < nv && V[k].i < e)
             ++k;
         size_t first = k, m = 0;
@@ -682,17 +680,19 @@ static void lay_out(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
                     ++kept;
                 }
             }
-            if (kept > 0) {
+            if (kept > 0) { /* a sector with rows (none, if the hull keeps none of them) */
                 cand_first[e] = first;
                 cand_count[e] = kept;
                 hull_sec[n_hull++] = e;
+                sec_first[e] = out;
                 out = hull_rows(c, first, kept, P_l, P_r, stack, out);
+                sec_count[e] = out - sec_first[e];
+                if (sec_count[e] > 0) {
+                    if (f0 == SIZE_MAX)
+                        f0 = e;
+                    f1 = e + 1;
+                }
             }
-        }
-        sec_count[e] = out - sec_first[e];
-        if (sec_count[e] > 0) {
-            f0 = e < f0 ? e : f0;
-            f1 = e + 1;
         }
     }
     c->n_hull_sec = n_hull;
@@ -719,13 +719,13 @@ static void lay_out_again(tirenv_springs__cc *c)
     size_t out = 0, q = 0;
     for (size_t e = lo; e <= hi; ++e) {
         out = put_pin(pin_h, pin_src, pin_row, V, R, keys, e, out);
-        sec_first[e] = out;
         if (q < c->n_hull_sec && c->hull_sec[q] == e) {
             ++q;
+            sec_first[e] = out;
             out = hull_rows(c, c->cand_first[e], c->cand_count[e], pin_h[e] > 0 ? pin_h[e] : 0,
                             pin_h[e + 1] > 0 ? pin_h[e + 1] : 0, c->pos, out);
+            sec_count[e] = out - sec_first[e];
         }
-        sec_count[e] = out - sec_first[e];
     }
     c->n_rows = out;
 }
@@ -777,12 +777,14 @@ static int build_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     /* the rays' penetrations on [a, b] (within [lo, hi]: lo <= the first ray with d > 0 and
      * hi >= the last), 0 beyond */
     const size_t ra = a > lo ? a : lo, rb = b < hi ? b : hi;
-    for (size_t e = lo; e <= hi; ++e) {
-        pin_h[e] = 0;
-        pin_src[e] = SIZE_MAX;
-    }
-    for (size_t e = ra; a <= b && e <= rb; ++e)
-        pin_h[e] = d[e] > 0 ? d[e] : 0;
+    memset(pin_src + lo, 0xff, (hi - lo + 1) * sizeof *pin_src); /* SIZE_MAX: all ones */
+    /* one pass over pin_h in three pieces: 0, the rays' d (> 0 or +0: what max(d, 0)
+     * gives, copied), 0 */
+    const size_t r0 = a <= b && ra <= rb ? ra : hi + 1, r1 = a <= b && ra <= rb ? rb : hi;
+    memset(pin_h + lo, 0, (r0 - lo) * sizeof *pin_h);
+    if (r0 <= r1)
+        memcpy(pin_h + r0, d + r0, (r1 - r0 + 1) * sizeof *pin_h);
+    memset(pin_h + r1 + 1, 0, (hi - r1) * sizeof *pin_h);
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0 && V[k].h > pin_h[V[k].i]) {
             pin_h[V[k].i] = V[k].h;

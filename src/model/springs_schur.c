@@ -10,24 +10,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* The stiffness of free element e on [f0, f1]: K's diagonal with the free chains beyond the
- * span folded in at its ends (the same as the banded system's). */
-static double k_diag(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, size_t e)
-{
-    double k_ee = T->diag[e];
-    if (e == c->f0 && c->f0 > 0)
-        k_ee -= T->k_ir * T->lq[c->f0 - 1];
-    if (e == c->f1 && c->f1 + 1 < T->N)
-        k_ee -= T->k_ir * T->rq[c->f1 + 1];
-    return k_ee;
-}
-
-/* Whether free element e is coupled to free element e - 1 (both free, e - 1 in the span). */
-static int coupled(const tirenv_springs__cc *c, size_t e)
-{
-    return e > c->f0 && c->wpos[e - 1] != SIZE_MAX;
-}
-
 /* x := K_FF^-1 x on one chain [lo, hi] of free elements, x zero on [lo, from): the forward
  * elimination leaves those zeros as they are (x - mul 0 = +0), so it starts at from. */
 static void chain_solve_from(const tirenv_springs__cc *c, double x[], size_t lo, size_t from,
@@ -79,16 +61,26 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
      * stay (kkt_factor compares them), bit for bit what factorising again gives. */
     c->tri_ok = 0;
     c->factor_kept = same;
+    /* Free element e's stiffness: K's diagonal with the free chains beyond the span folded
+     * in at its ends (the same as the banded system's); coupled to e - 1 if that is free and
+     * in the span. On locals: the stores to chains (size_t) would make c's fields be read
+     * again at every element. */
+    const size_t *wpos = c->wpos;
+    size_t *chains = c->chains;
     for (size_t e = f0; !same && e <= f1; ++e) {
-        if (c->wpos[e] == SIZE_MAX)
+        if (wpos[e] == SIZE_MAX)
             continue;
-        double d = k_diag(c, T, e);
-        if (coupled(c, e)) {
+        double d = T->diag[e];
+        if (e == f0 && f0 > 0)
+            d -= k_ir * T->lq[f0 - 1];
+        if (e == f1 && f1 + 1 < N)
+            d -= k_ir * T->rq[f1 + 1];
+        if (e > f0 && wpos[e - 1] != SIZE_MAX) {
             mul[e] = -k_ir / piv[e - 1];
             d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
-            c->chains[2 * n_chains - 1] = e;
+            chains[2 * n_chains - 1] = e;
         } else {
-            c->chains[2 * n_chains] = c->chains[2 * n_chains + 1] = e;
+            chains[2 * n_chains] = chains[2 * n_chains + 1] = e;
             ++n_chains;
         }
         if (!(d > 0))

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stddef.h>
+#include <string.h>
 #include "profile/profile_impl.h"
 
 /* The farthest (m) from the base's height an update is tried. The tangent errs by the
@@ -77,11 +78,19 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     double *ph = c->upd_w + 1, *wn = c->step, *res = c->raise;
     long *pin = c->upd_pin;
     const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
-    for (size_t e = f0; e <= f1; ++e) {
-        const int ray = e >= ra && e <= rb && d[e] > 0;
-        ph[e] = ray ? d[e] : 0;
+    for (size_t e = f0; e <= f1; ++e)
         pin[e] = -1 - (long)e;
+    /* ph over [f0, f1] in three pieces, each a loop the compiler vectorises: 0 outside the
+     * rays [ra, rb], d where it is > 0 inside */
+    const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
+    for (size_t e = f0; e < r0; ++e)
+        ph[e] = 0;
+    for (size_t e = r0; e <= r1; ++e) {
+        const double v = d[e];
+        ph[e] = v > 0 ? v : 0;
     }
+    for (size_t e = r1 + 1; e <= f1; ++e)
+        ph[e] = 0;
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0 && V[k].h > ph[V[k].i]) {
             ph[V[k].i] = V[k].h;
@@ -136,9 +145,16 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     for (size_t it = 0;; ++it) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
          * KKT system, less G^T lambda */
-        for (size_t e = f0; e <= f1; ++e)
-            res[e] = T->diag[e] * wn[e] -
-                     k_ir * ((e > f0 ? wn[e - 1] : 0) + (e < f1 ? wn[e + 1] : 0));
+        const double *diag = T->diag;
+        if (f0 == f1) {
+            res[f0] = diag[f0] * wn[f0] - k_ir * (0.0 + 0.0);
+        } else { /* the ends apart (a 0 for the neighbour beyond, as written), the middle
+                  * a loop the compiler vectorises */
+            res[f0] = diag[f0] * wn[f0] - k_ir * (0.0 + wn[f0 + 1]);
+            for (size_t e = f0 + 1; e < f1; ++e)
+                res[e] = diag[e] * wn[e] - k_ir * (wn[e - 1] + wn[e + 1]);
+            res[f1] = diag[f1] * wn[f1] - k_ir * (wn[f1 - 1] + 0.0);
+        }
         if (f0 > 0)
             res[f0] -= k_ir * T->lq[f0 - 1] * wn[f0];
         if (f1 + 1 < N)
@@ -160,9 +176,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             if (wpos[e] == SIZE_MAX) {
                 l_max = fabs(r) > l_max ? fabs(r) : l_max;
                 l_min = r < l_min ? r : l_min;
-            } else {
-                ok = ok && fabs(r) <= tol_k;
-                above = above && !(ph[e] > 0 && wn[e] - ph[e] < -tol);
+            } else { /* no side effects: & where && would branch */
+                ok &= fabs(r) <= tol_k;
+                above &= !(ph[e] > 0 && wn[e] - ph[e] < -tol);
             }
         }
         if (ok)
@@ -200,11 +216,12 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             return 0;
     }
     /* Accepted: the outputs as the solve gives them (pe: each element's net reaction). */
-    for (size_t e = f0; e <= f1; ++e) {
-        w[e] = wn[e];
+    /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
+     * max(ph, 0) gives, copied */
+    memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
+    for (size_t e = f0; e <= f1; ++e)
         pe[e] = wpos[e] == SIZE_MAX ? res[e] : 0;
-        obstacle[e] = ph[e] > 0 ? ph[e] : 0;
-    }
+    memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
     for (size_t q = 0; q < n_s; ++q) {
         pe[row_i[q]] += ga[q] * lam[q];
         pe[row_i[q] + 1] += gb[q] * lam[q];
