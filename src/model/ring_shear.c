@@ -144,12 +144,77 @@ static void band_add(tband *A, size_t i, size_t k, double v)
         A->T[k - m][i - m] += v;
 }
 
+/* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
+ * tail entries scaled, and its updates of the next BAND_P columns, two SSE2 lanes at a time;
+ * the tail block's lower triangle in the caller's registers. fresh: column i + BAND_P's tail
+ * entries were never written (fill_window leaves them unset: zero), so its update starts from
+ * zero rather than from memory (0 - p, the same operation on the same operands). Nonzero if
+ * the pivot is not positive. */
+static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
+                                                               v2d *t20, v2d *t30, v2d *t32,
+                                                               double *t00, double *t22,
+                                                               const int fresh)
+{
+    double *c = A->L + (BAND_P + 1) * i;
+    if (!(c[0] > 0))
+        return 1;
+    const double lii = sqrt(c[0]), inv = 1 / lii;
+    c[0] = lii;
+    const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
+    c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
+    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+           *r4 = r3 + (BAND_P + 1);
+    /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
+     * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
+    const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
+    const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
+    v2_store(r1, v2_load(r1) - c12 * vc1);
+    v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
+    v2_store(r2, v2_load(r2) - c23 * vc2);
+    r2[2] -= c4 * c2;
+    v2_store(r3, v2_load(r3) - c34 * vc3);
+    r4[0] -= c4 * c4;
+    /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
+     * -= B[a][i] c_k, each entry's one operation of this column. */
+    double *b = A->B + TAIL * i;
+    const v2d vinv = {inv, inv};
+    const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
+    v2_store(b, b01);
+    v2_store(b + 2, b23);
+    const double ck[BAND_P] = {c1, c2, c3, c4};
+    for (size_t k = 1; k <= BAND_P; ++k) {
+        const v2d vc = {ck[k - 1], ck[k - 1]};
+        double *bk = b + TAIL * k;
+        const v2d zero = {0, 0};
+        const int from_zero = fresh && k == BAND_P;
+        v2_store(bk, (from_zero ? zero : v2_load(bk)) - b01 * vc);
+        v2_store(bk + 2, (from_zero ? zero : v2_load(bk + 2)) - b23 * vc);
+    }
+    /* T[a][b] -= B[a][i] B[b][i], b <= a. */
+    const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
+    *t00 -= b01[0] * b01[0];
+    *t10 -= v1 * b01;
+    *t20 -= v2 * b01;
+    *t22 -= b23[0] * b23[0];
+    *t30 -= v3 * b01;
+    *t32 -= v3 * b23;
+    return 0;
+}
+
+/* The tail columns of the window's band that assemble may write before the factorisation
+ * (fill_window zeroes these, and only these): the end correction's coupling of the first
+ * unknowns (columns below FRESH_FROM) and the band's entries in the tail rows (the last
+ * BAND_P columns). The others' tail entries are zero until band_factor's first update of
+ * them (factor_column's fresh). */
+enum { FRESH_FROM = BAND_P + 1 };
+
 /* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
  * With the full tail, the interior columns (all but the last BAND_P of the band) come first,
- * unrolled, their updates two SSE2 lanes at a time and the tail block's lower triangle held in
- * registers until they end: each entry gets the same operations in the same order as in the
- * general loop below, so the same bits. */
-static int band_factor(tband *A)
+ * unrolled (factor_column), the tail block's lower triangle held in registers until they end:
+ * each entry gets the same operations in the same order as in the general loop below, so the
+ * same bits. fresh: the tail's entries of the columns from FRESH_FROM to m - BAND_P - 1 are
+ * unset (fill_window), zero until their first update. */
+static int band_factor_f(tband *A, const int fresh)
 {
     const size_t N = A->N, t = A->t, m = N - t;
     double *L = A->L;
@@ -160,51 +225,16 @@ static int band_factor(tband *A)
             t32 = {T[3][2], T[3][3]};
         double t00 = T[0][0], t22 = T[2][2];
         int broke = 0;
-        for (; i + BAND_P < m; ++i) {
-            double *c = L + (BAND_P + 1) * i;
-            if (!(c[0] > 0)) {
-                broke = 1;
-                break;
-            }
-            const double lii = sqrt(c[0]), inv = 1 / lii;
-            c[0] = lii;
-            const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
-            c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
-            double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
-                   *r4 = r3 + (BAND_P + 1);
-            /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
-             * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
-            const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
-            const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
-            v2_store(r1, v2_load(r1) - c12 * vc1);
-            v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
-            v2_store(r2, v2_load(r2) - c23 * vc2);
-            r2[2] -= c4 * c2;
-            v2_store(r3, v2_load(r3) - c34 * vc3);
-            r4[0] -= c4 * c4;
-            /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
-             * -= B[a][i] c_k, each entry's one operation of this column. */
-            double *b = A->B + TAIL * i;
-            const v2d vinv = {inv, inv};
-            const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
-            v2_store(b, b01);
-            v2_store(b + 2, b23);
-            const double ck[BAND_P] = {c1, c2, c3, c4};
-            for (size_t k = 1; k <= BAND_P; ++k) {
-                const v2d vc = {ck[k - 1], ck[k - 1]};
-                double *bk = b + TAIL * k;
-                v2_store(bk, v2_load(bk) - b01 * vc);
-                v2_store(bk + 2, v2_load(bk + 2) - b23 * vc);
-            }
-            /* T[a][b] -= B[a][i] B[b][i], b <= a. */
-            const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
-            t00 -= b01[0] * b01[0];
-            t10 -= v1 * b01;
-            t20 -= v2 * b01;
-            t22 -= b23[0] * b23[0];
-            t30 -= v3 * b01;
-            t32 -= v3 * b23;
-        }
+        /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
+         * while i + BAND_P < m - BAND_P. */
+        const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
+                     f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
+        for (; i + BAND_P < m && i < f0 && !broke; ++i)
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0);
+        for (; i < f1 && !broke; ++i)
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 1);
+        for (; i + BAND_P < m && !broke; ++i)
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0);
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
         T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
         if (broke)
@@ -236,6 +266,8 @@ static int band_factor(tband *A)
     /* The dense tail, Schur complement of the band: src/core's Cholesky. */
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
+
+static int band_factor(tband *A) { return band_factor_f(A, 0); }
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
@@ -512,7 +544,14 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     const double *s = T->s, k_sh = T->k_sh;
     A->N = N;
     A->t = TAIL;
-    memset(A->B, 0, TAIL * N * sizeof *A->B);
+    /* The tail's columns that assemble writes to (FRESH_FROM); band_factor_f takes the
+     * others as zero. */
+    if (m < FRESH_FROM + BAND_P) {
+        memset(A->B, 0, TAIL * m * sizeof *A->B);
+    } else {
+        memset(A->B, 0, TAIL * FRESH_FROM * sizeof *A->B);
+        memset(A->B + TAIL * (m - BAND_P), 0, TAIL * BAND_P * sizeof *A->B);
+    }
     memset(A->T, 0, sizeof A->T);
     double *L = A->L;
     size_t e = 0;
@@ -1022,7 +1061,7 @@ static void knots_moving(const tirenv_ring *r, const double x[], double rhs[])
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
     assemble(r, (const double(*)[NB])K, rhs);
-    return condense_knots(r->tread) || band_factor(&r->tread->win);
+    return condense_knots(r->tread) || band_factor_f(&r->tread->win, 1);
 }
 
 static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
@@ -1716,6 +1755,7 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         band_reset(&A, N, TAIL);
         add_arc(&A, T, r->lo, n);
     } else {
+        memset(A.B, 0, TAIL * N * sizeof *A.B); /* fill_window leaves the fresh columns */
         fill_window(&A, T, r->lo, n);
     }
     for (size_t i = 0; i < N; ++i)
