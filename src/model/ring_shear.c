@@ -37,6 +37,7 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
@@ -88,7 +89,11 @@ struct tirenv_ring_tread {
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
-    tband ext, win;
+    tband ext, win;     /* the exterior's system; the window's factor (band_refactor) */
+    tband as, ap;       /* the window's system as assemble writes it, and the one before it,
+                         * whose factor win holds if ap_ok (band_refactor) */
+    int ap_ok;
+    double *ck;         /* band_factor_from's accumulators of win, every CKS-th column */
     double *col;        /* 2 M: a right-hand side of the exterior */
     double *x, *xn, *xt, *g; /* 2 M + cap_k each: iterate, Newton point, trial, gradient */
     double *kp;         /* 2 M + cap_k: the driver's workspace */
@@ -153,11 +158,20 @@ static void band_add(tband *A, size_t i, size_t k, double v)
 static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
                                                                v2d *t20, v2d *t30, v2d *t32,
                                                                double *t00, double *t22,
-                                                               const int fresh)
+                                                               const int fresh,
+                                                               const double *src)
 {
     double *c = A->L + (BAND_P + 1) * i;
     if (!(c[0] > 0))
         return 1;
+    { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
+       * the system band_refactor copies from) */
+        const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
+        double *d4 = c + BAND_P * (BAND_P + 1);
+        v2_store(d4, v2_load(s4));
+        v2_store(d4 + 2, v2_load(s4 + 2));
+        d4[4] = s4[4];
+    }
     const double lii = sqrt(c[0]), inv = 1 / lii;
     c[0] = lii;
     const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
@@ -208,33 +222,63 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
  * them (factor_column's fresh). */
 enum { FRESH_FROM = BAND_P + 1 };
 
+/* Every CKS-th column, band_factor_f keeps the tail block's accumulators as they stand before
+ * it (CK_LEN doubles, the lower triangle by rows), from which band_refactor starts again. */
+enum { CKS = 16, CK_LEN = TAIL * (TAIL + 1) / 2 };
+
+static inline void acc_save(double *ck, double t00, v2d t10, v2d t20, double t22, v2d t30,
+                            v2d t32)
+{
+    ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
+    ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
+}
+
 /* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
  * With the full tail, the interior columns (all but the last BAND_P of the band) come first,
  * unrolled (factor_column), the tail block's lower triangle held in registers until they end:
  * each entry gets the same operations in the same order as in the general loop below, so the
  * same bits. fresh: the tail's entries of the columns from FRESH_FROM to m - BAND_P - 1 are
- * unset (fill_window), zero until their first update. */
-static int band_factor_f(tband *A, const int fresh)
+ * unset (fill_window), zero until their first update. From column q0 (0: all; else an
+ * interior column, the columns before it factorised and their updates of the later ones
+ * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
+ * accumulators before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
+static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_LEN],
+                            double *ck, const double *src)
 {
+    if (!src)
+        src = A->L;
     const size_t N = A->N, t = A->t, m = N - t;
     double *L = A->L;
-    size_t i = 0;
+    size_t i = q0;
     if (t == TAIL && m > BAND_P) {
         double(*T)[TAIL] = A->T;
         v2d t10 = {T[1][0], T[1][1]}, t20 = {T[2][0], T[2][1]}, t30 = {T[3][0], T[3][1]},
             t32 = {T[3][2], T[3][3]};
         double t00 = T[0][0], t22 = T[2][2];
+        if (acc0) {
+            t00 = acc0[0], t10 = (v2d){acc0[1], acc0[2]}, t20 = (v2d){acc0[3], acc0[4]};
+            t22 = acc0[5], t30 = (v2d){acc0[6], acc0[7]}, t32 = (v2d){acc0[8], acc0[9]};
+        }
         int broke = 0;
         /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
          * while i + BAND_P < m - BAND_P. */
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
-        for (; i + BAND_P < m && i < f0 && !broke; ++i)
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0);
-        for (; i < f1 && !broke; ++i)
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 1);
-        for (; i + BAND_P < m && !broke; ++i)
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0);
+        for (; i + BAND_P < m && i < f0 && !broke; ++i) {
+            if (ck && i % CKS == 0)
+                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0, src);
+        }
+        for (; i < f1 && !broke; ++i) {
+            if (ck && i % CKS == 0)
+                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 1, src);
+        }
+        for (; i + BAND_P < m && !broke; ++i) {
+            if (ck && i % CKS == 0)
+                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0, src);
+        }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
         T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
         if (broke)
@@ -267,7 +311,7 @@ static int band_factor_f(tband *A, const int fresh)
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
-static int band_factor(tband *A) { return band_factor_f(A, 0); }
+static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
@@ -427,7 +471,9 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->xw = malloc(5 * M * sizeof *T->xw);
     T->soft = tirenv_ring__carcass_law(par, R * dth, &T->law);
     if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
-        band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL)) {
+        band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
+        band_alloc(&T->as, 2 * M, TAIL) || band_alloc(&T->ap, 2 * M, TAIL) ||
+        !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck))) {
         tirenv_ring__tread_free(T);
         return NULL;
     }
@@ -461,6 +507,9 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->lc);
     free(T->ext.L);
     free(T->win.L);
+    free(T->as.L);
+    free(T->ap.L);
+    free(T->ck);
     free(T);
 }
 
@@ -857,7 +906,7 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, N = 2 * n;
     const double t_r = r->par.t_r, R = r->R;
-    tband *A = &T->win;
+    tband *A = &T->as;
     fill_window(A, T, lo, n);
     size_t b[NB];
     end_index(n, b);
@@ -962,9 +1011,9 @@ static int condense_knots(tirenv_ring_tread *T)
             s11 += T->c1[k] * T->z1[k];
         }
         if (s00 != 0 || s01 != 0 || s11 != 0) {
-            band_add(&T->win, 2 * i + 1, 2 * i + 1, -s00);
-            band_add(&T->win, 2 * i + 1, 2 * i + 3, -s01);
-            band_add(&T->win, 2 * i + 3, 2 * i + 3, -s11);
+            band_add(&T->as, 2 * i + 1, 2 * i + 1, -s00);
+            band_add(&T->as, 2 * i + 1, 2 * i + 3, -s01);
+            band_add(&T->as, 2 * i + 3, 2 * i + 3, -s11);
         }
     }
     return 0;
@@ -1057,11 +1106,107 @@ static void knots_moving(const tirenv_ring *r, const double x[], double rhs[])
     }
 }
 
+/* Equal bits (not ==, which equates 0 and -0): n doubles. */
+static int same_bits(const double *a, const double *b, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        uint64_t ua, ub;
+        memcpy(&ua, &a[i], sizeof ua);
+        memcpy(&ub, &b[i], sizeof ub);
+        if (ua != ub)
+            return 0;
+    }
+    return 1;
+}
+
+/* The first column of the window's system S whose entries differ from P's, both as
+ * fill_window and assemble write them (m band rows, the tail's columns that fill_window
+ * zeroes, the tail block): 0 if the tail block or the first tail columns do. */
+static size_t first_change(const tband *S, const tband *P, size_t m)
+{
+    if (!same_bits(&S->T[0][0], &P->T[0][0], TAIL * TAIL) ||
+        !same_bits(S->B, P->B, TAIL * FRESH_FROM))
+        return 0;
+    size_t p = m;
+    if (!same_bits(S->B + TAIL * (m - BAND_P), P->B + TAIL * (m - BAND_P), TAIL * BAND_P))
+        p = m - BAND_P;
+    for (size_t i = 0; i < p; ++i)
+        if (!same_bits(S->L + (BAND_P + 1) * i, P->L + (BAND_P + 1) * i, BAND_P + 1))
+            return i;
+    return p;
+}
+
+/* The window's factor (T->win) of the system that assemble and condense_knots wrote (T->as).
+ * Between Newton steps and evaluations that system mostly changes from some column on: the
+ * points whose states changed, a ground vertex's points in contact (their place and weight
+ * move with z). The factor's columns before the first changed one are those of the last
+ * factorisation (each column of a right-looking Cholesky depends only on the columns before
+ * it and its own entries), so they are kept: the columns from the CKS-th column at or before
+ * it get their pending updates from the BAND_P columns before (the same operations in the
+ * same order as band_factor_from gives them, one entry at a time), the tail block's
+ * accumulators come from that column's checkpoint, and the factorisation goes on from there.
+ * The same bits as factorising the whole. Nonzero if not positive definite. */
+static int band_refactor(tirenv_ring_tread *T)
+{
+    tband *S = &T->as, *P = &T->ap, *F = &T->win;
+    const size_t N = S->N, t = S->t, m = N - t, W = BAND_P + 1;
+    size_t q = 0;
+    if (T->ap_ok && P->N == N && t == TAIL && m > 2 * CKS + BAND_P) {
+        const size_t p = first_change(S, P, m);
+        if (p == m) { /* the same system: win holds its factor */
+            const tband sw = *S;
+            *S = *P, *P = sw;
+            return 0;
+        }
+        q = (p < m - BAND_P ? p : m - BAND_P - 1) / CKS * CKS;
+    }
+    T->ap_ok = 0;
+    F->N = N, F->t = t;
+    /* The band's columns q .. q + BAND_P - 1; the later ones band_factor_from copies as it
+     * reaches them (src), or all here where it has no interior columns. */
+    const int whole = !(t == TAIL && m > BAND_P);
+    memcpy(F->L + W * q, S->L + W * q, W * (whole ? m - q : BAND_P) * sizeof *F->L);
+    int bad;
+    if (q == 0) {
+        if (m < FRESH_FROM + BAND_P) {
+            memcpy(F->B, S->B, TAIL * m * sizeof *F->B);
+        } else {
+            memcpy(F->B, S->B, TAIL * FRESH_FROM * sizeof *F->B);
+            memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
+                   TAIL * BAND_P * sizeof *F->B);
+        }
+        memcpy(F->T, S->T, sizeof F->T);
+        bad = band_factor_from(F, 1, 0, NULL, T->ck, S->L);
+    } else {
+        /* Columns q .. q + BAND_P - 1 as they stand before column q is factorised: their
+         * entries (the tail's zero up to its last BAND_P columns), less the updates of the
+         * BAND_P columns before, kept. */
+        memset(F->B + TAIL * q, 0, TAIL * BAND_P * sizeof *F->B);
+        memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
+               TAIL * BAND_P * sizeof *F->B);
+        for (size_t i = q - BAND_P; i < q; ++i) {
+            const double *c = F->L + W * i, *b = F->B + TAIL * i;
+            for (size_t k1 = q - i; k1 <= BAND_P; ++k1) {
+                double *c1 = F->L + W * (i + k1), *b1 = F->B + TAIL * (i + k1);
+                for (size_t k2 = k1; k2 <= BAND_P; ++k2)
+                    c1[k2 - k1] -= c[k2] * c[k1];
+                for (size_t a = 0; a < TAIL; ++a)
+                    b1[a] -= b[a] * c[k1];
+            }
+        }
+        bad = band_factor_from(F, 1, q, T->ck + CK_LEN * (q / CKS), T->ck, S->L);
+    }
+    const tband sw = *S;
+    *S = *P, *P = sw;
+    T->ap_ok = !bad;
+    return bad;
+}
+
 /* The driver's callbacks (ring_newton.c). */
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
     assemble(r, (const double(*)[NB])K, rhs);
-    return condense_knots(r->tread) || band_factor_f(&r->tread->win, 1);
+    return condense_knots(r->tread) || band_refactor(r->tread);
 }
 
 static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
