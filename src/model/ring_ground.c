@@ -261,9 +261,10 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             if (is_vertex)
                 next = v[iv++];
             if (next.phi > prev.phi) {
-                r->lines[n_lines] = (tirenv_ring_piece){prev.phi, prev.s, prev.c, next.phi,
-                                                        next.s, next.c, j, 0, contig,
-                                                        {0, 0, 0, 0}, prev.dphi, next.dphi};
+                tirenv_ring_piece *c = &r->lines[n_lines]; /* its line and hit: below */
+                c->pa = prev.phi, c->sa = prev.s, c->ca = prev.c, c->pb = next.phi;
+                c->sb = next.s, c->cb = next.c, c->j = j, c->contig = contig;
+                c->da = prev.dphi, c->db = next.dphi;
                 if (prev.s + next.s < 0) {
                     ordered &= n_back == n_lines;
                     ++n_back;

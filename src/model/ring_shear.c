@@ -1754,8 +1754,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         q->f = fg + fb;
         r->F[q->j] += (1 - q->s) * q->f;
         r->F[q->j + 1] += q->s * q->f;
-        r->g[q->j] += (1 - q->s) * fb;
-        r->g[q->j + 1] += q->s * fb;
+        if (q->st & 2) { /* else fb = 0, and adding +0 leaves g (never -0: from +0, sums of
+                          * terms >= 0) the same bits */
+            r->g[q->j] += (1 - q->s) * fb;
+            r->g[q->j + 1] += q->s * fb;
+        }
         sum_c += q->f * q->cs;
         sum_s += q->f * q->sn;
         if (!dfz_dz)
