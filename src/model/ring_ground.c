@@ -154,62 +154,69 @@ static int same_bits(const double *a, const double *b, size_t n)
     return 1;
 }
 
-/* The piece c of node interval c->j (nodes j, j + 1): its two points, each marked out of reach
- * (d = -INFINITY) or, within it, given the tread stiffness k_t (NAN: each its own, lugs) and
- * its interval added to wl. prev_L: the line of the piece whose points were written last, if
+/* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
+ * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
+ * k_t (with lugs each its own) and its interval added to wl. prev_L: the line of the piece whose points were written last, if
  * that piece ends where this one begins (else NULL): where c's first cut and the line are the
  * same bits (c->contig: the cut is that piece's second), its ray is that point's, whose values
  * are copied rather than computed again (the same operations on the same operands; a point out
  * of reach has d = -INFINITY then, as the one it is copied from has). */
-static void piece_points(tirenv_ring *r, const tirenv_ring_piece *c, const double prev_L[4],
-                         double x, double z, int inside, double k_t, size_t wl[2])
+static inline __attribute__((always_inline)) void
+piece_point(tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
+            double x, double z, int inside, double k_t, int lugs, size_t wl[2])
 {
     const size_t j = c->j;
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[j];
-    for (int e = 0; e < 2; ++e) {
-        tirenv_ring_point *q = &r->pts[r->n_pts++];
-        const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
-                     dphi = e ? c->db : c->da;
-        const tirenv_ring_point *qp = q - 1;
-        if (e == 0 && prev_L && same_bits(c->L, prev_L, 4) &&
-            (c->contig || (same_bits(&qp->phi, &phi, 1) && same_bits(&qp->sn, &sn, 1) &&
-                           same_bits(&qp->cs, &cs, 1) && same_bits(&qp->dphi, &dphi, 1)))) {
-            q->d = qp->d;
-            q->dd = qp->dd;
-            q->ddt = qp->ddt;
-            q->X = qp->X;
-        } else {
-            double drho = 0, drho_dphi = 0, rho = 0;
-            if (!inside)
-                rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
-            q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
-            q->dd = -drho;
-            q->ddt = -(drho + drho_dphi * dphi);
-            q->X = x + (isfinite(rho) ? rho : 0) * sn;
-        }
-        q->sn = sn;
-        q->cs = cs;
-        q->phi = phi;
-        q->omega = omega;
-        q->j = j;
-        if (e == 1 && c->pb == r->theta[j + 1]) {
-            q->s = 1;
-        } else if (e == 0 && c->pa == th) {
-            q->s = 0;
-        } else {
-            const double s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
-            q->s = s > 0 ? (s < 1 ? s : 1) : 0;
-        }
-        q->dphi = dphi;
-        /* Out of reach, or within it (see the top of tirenv_ring__sample). */
-        if (!(q->d > -r->par.t_r)) {
-            q->d = -INFINITY;
-            continue;
-        }
-        wl[0] = q->j < wl[0] ? q->j : wl[0];
-        wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
-        q->k_t = isnan(k_t) ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
+    tirenv_ring_point *q = &r->pts[r->n_pts++];
+    const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
+                 dphi = e ? c->db : c->da;
+    const tirenv_ring_point *qp = q - 1;
+    if (e == 0 && prev_L && same_bits(c->L, prev_L, 4) &&
+        (c->contig || (same_bits(&qp->phi, &phi, 1) && same_bits(&qp->sn, &sn, 1) &&
+                       same_bits(&qp->cs, &cs, 1) && same_bits(&qp->dphi, &dphi, 1)))) {
+        q->d = qp->d;
+        q->dd = qp->dd;
+        q->ddt = qp->ddt;
+        q->X = qp->X;
+    } else {
+        double drho = 0, drho_dphi = 0, rho = 0;
+        if (!inside)
+            rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
+        q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+        q->dd = -drho;
+        q->ddt = -(drho + drho_dphi * dphi);
+        q->X = x + (isfinite(rho) ? rho : 0) * sn;
     }
+    q->sn = sn;
+    q->cs = cs;
+    q->phi = phi;
+    q->omega = omega;
+    q->j = j;
+    if (e == 1 && c->pb == r->theta[j + 1]) {
+        q->s = 1;
+    } else if (e == 0 && c->pa == th) {
+        q->s = 0;
+    } else {
+        const double s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
+        q->s = s > 0 ? (s < 1 ? s : 1) : 0;
+    }
+    q->dphi = dphi;
+    /* Out of reach, or within it (see the top of tirenv_ring__sample). */
+    if (!(q->d > -r->par.t_r)) {
+        q->d = -INFINITY;
+        return;
+    }
+    wl[0] = q->j < wl[0] ? q->j : wl[0];
+    wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
+    q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
+}
+
+/* The piece c's two points (piece_point). */
+static void piece_points(tirenv_ring *r, const tirenv_ring_piece *c, const double prev_L[4],
+                         double x, double z, int inside, double k_t, int lugs, size_t wl[2])
+{
+    piece_point(r, c, 0, prev_L, x, z, inside, k_t, lugs, wl);
+    piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl);
 }
 
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
@@ -248,6 +255,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         return TIRENV_ENOMEM;
     v = r->cuts;
     const int inside = !(z > tirenv_profile_height(p, x)); /* centre in the ground: rho = 0 */
+    const int lugs = isnan(k_t);
     /* The pieces in angle order, with their lines still to find; n_back of them first with
      * their rays backward (sx < 0), if ordered. */
     r->n_pts = 0;
@@ -309,7 +317,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         if (!c->hit)
             continue;
         const int after = i > 0 && c[-1].hit; /* the points written last are c[-1]'s */
-        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, wl);
+        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl);
     }
     win[0] = wl[0], win[1] = wl[1];
     return 0;
