@@ -162,12 +162,11 @@ static int same_bits(const double *a, const double *b, size_t n)
  * are copied rather than computed again (the same operations on the same operands; a point out
  * of reach has d = -INFINITY then, as the one it is copied from has). */
 static inline __attribute__((always_inline)) void
-piece_point(tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
-            double x, double z, int inside, double k_t, int lugs, size_t wl[2])
+piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
+            double x, double z, int inside, double k_t, int lugs, size_t wl[2], double omega,
+            double th, tirenv_ring_point *q)
 {
     const size_t j = c->j;
-    const double omega = 0.5 * (c->pb - c->pa), th = r->theta[j];
-    tirenv_ring_point *q = &r->pts[r->n_pts++];
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
                  dphi = e ? c->db : c->da;
     const tirenv_ring_point *qp = q - 1;
@@ -211,12 +210,14 @@ piece_point(tirenv_ring *r, const tirenv_ring_piece *c, const int e, const doubl
     q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
 }
 
-/* The piece c's two points (piece_point). */
-static void piece_points(tirenv_ring *r, const tirenv_ring_piece *c, const double prev_L[4],
-                         double x, double z, int inside, double k_t, int lugs, size_t wl[2])
+/* The piece c's two points (piece_point) into q[0], q[1]. */
+static void piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
+                         const double prev_L[4], double x, double z, int inside, double k_t,
+                         int lugs, size_t wl[2], tirenv_ring_point *q)
 {
-    piece_point(r, c, 0, prev_L, x, z, inside, k_t, lugs, wl);
-    piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl);
+    const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
+    piece_point(r, c, 0, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q);
+    piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
 }
 
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
@@ -312,13 +313,17 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                                               sx < 0 ? &cur_b : &cur_f, c->L);
             }
     }
+    size_t n_pts = 0;
     for (size_t i = 0; i < n_lines; ++i) {
         const tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
         const int after = i > 0 && c[-1].hit; /* the points written last are c[-1]'s */
-        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl);
+        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
+                     r->pts + n_pts);
+        n_pts += 2;
     }
+    r->n_pts = n_pts;
     win[0] = wl[0], win[1] = wl[1];
     return 0;
 }
