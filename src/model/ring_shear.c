@@ -830,25 +830,31 @@ static double at_w(const tirenv_ring *r, const tirenv_ring_point *q, const doubl
     return (1 - q->s) * x[2 * i] + q->s * x[2 * i + 2];
 }
 
-/* A point's state: bit 1 the ground on the tread surface, bit 2 the belt layer. */
-static unsigned char state_of(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
-{
-    if (q->d == -INFINITY)
-        return 0;
-    return (unsigned char)((q->d > at_u(r, q, x) ? 1 : 0) |
-                           (q->d - at_w(r, q, x) > r->par.t_r ? 2 : 0));
-}
-
+/* Every point's state at x, from its tread surface and belt there (at_u, at_w): bit 1 the
+ * ground on the tread surface, bit 2 the belt layer; returns how many changed. */
 static size_t set_states(tirenv_ring *r, const double x[])
 {
     tirenv_ring_tread *T = r->tread;
     if (T->soft)
         for (size_t i = 0; i < r->n; ++i)
             T->wc[i] = x[2 * i];
+    /* r's fields in locals: a state's store (a char) may alias them. */
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, lo = r->lo;
+    const double *const xa = x + 2 * r->n, t_r = r->par.t_r;
     size_t changed = 0;
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        tirenv_ring_point *q = &r->pts[k];
-        const unsigned char st = state_of(r, q, x);
+    for (size_t k = 0; k < n_pts; ++k) {
+        tirenv_ring_point *q = &pts[k];
+        unsigned char st = 0;
+        if (q->d != -INFINITY) {
+            const size_t i = q->j - lo;
+            const double s = q->s;
+            double u = (1 - s) * x[2 * i + 1] + s * x[2 * i + 3];
+            if (q->knot >= 0)
+                u = u + xa[q->knot];
+            const double w = (1 - s) * x[2 * i] + s * x[2 * i + 2];
+            st = (unsigned char)((q->d > u ? 1 : 0) | (q->d - w > t_r ? 2 : 0));
+        }
         changed += st != q->st;
         q->st = st;
     }
