@@ -1136,8 +1136,15 @@ static size_t first_change(const tband *S, const tband *P, size_t m)
     size_t p = m;
     if (!same_bits(S->B + TAIL * (m - BAND_P), P->B + TAIL * (m - BAND_P), TAIL * BAND_P))
         p = m - BAND_P;
-    for (size_t i = 0; i < p; ++i)
-        if (!same_bits(S->L + (BAND_P + 1) * i, P->L + (BAND_P + 1) * i, BAND_P + 1))
+    /* Blocks of rows by memcmp (equal bytes are equal bits), then the rows of the first
+     * block that differs. */
+    enum { ROWS = 8 };
+    const size_t W = BAND_P + 1;
+    size_t i = 0;
+    while (i + ROWS <= p && memcmp(S->L + W * i, P->L + W * i, W * ROWS * sizeof *S->L) == 0)
+        i += ROWS;
+    for (; i < p; ++i)
+        if (!same_bits(S->L + W * i, P->L + W * i, W))
             return i;
     return p;
 }
