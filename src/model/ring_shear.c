@@ -1628,11 +1628,20 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
      * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
      * minimum does not depend on the start (its states' system is solved last). */
     const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
-    for (size_t i = 0; i < n; ++i) {
-        const size_t j = lo + i;
-        const int warm = j >= r->warm_lo && j < r->warm_lo + r->warm_n;
-        xw[2 * i] = warm ? r->w[j] + dz * T->dw[j] : 0;
-        xw[2 * i + 1] = warm ? T->u[j] + dz * T->du[j] : 0;
+    {
+        /* The last window's nodes in this one, lo + ia .. lo + ib - 1; zero elsewhere. */
+        const size_t wa = r->warm_lo > lo ? r->warm_lo : lo, w1 = r->warm_lo + r->warm_n,
+                     wb = w1 < lo + n ? w1 : lo + n;
+        const size_t ia = wa < wb ? wa - lo : 0, ib = wa < wb ? wb - lo : 0;
+        for (size_t i = 0; i < ia; ++i)
+            xw[2 * i] = xw[2 * i + 1] = 0;
+        for (size_t i = ia; i < ib; ++i) {
+            const size_t j = lo + i;
+            xw[2 * i] = r->w[j] + dz * T->dw[j];
+            xw[2 * i + 1] = T->u[j] + dz * T->du[j];
+        }
+        for (size_t i = ib; i < n; ++i)
+            xw[2 * i] = xw[2 * i + 1] = 0;
     }
     /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
      * with the tire) where there is one; else, or where a free point would touch, on the whole
@@ -1708,13 +1717,14 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     /* The window's free points, clear of the ground, were written by free_clear. */
     /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
      * and u on this window, dw and du there too with dF_z/dz. */
-    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j) {
-        if (j >= lo && j < lo + n) {
-            if (!dfz_dz)
-                T->dw[j] = T->du[j] = 0;
-            continue;
-        }
-        r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    {
+        const size_t w0 = r->warm_lo, w1 = w0 + r->warm_n, h1 = lo + n;
+        for (size_t j = w0; j < w1 && j < lo; ++j)
+            r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+        for (size_t j = w0 > lo ? w0 : lo; !dfz_dz && j < w1 && j < h1; ++j)
+            T->dw[j] = T->du[j] = 0;
+        for (size_t j = w0 > h1 ? w0 : h1; j < w1; ++j)
+            r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
     }
     T->pred[2] = 0;
     r->warm_lo = lo;
