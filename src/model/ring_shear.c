@@ -773,27 +773,38 @@ static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[
 static int find_knots(tirenv_ring *r)
 {
     tirenv_ring_tread *T = r->tread;
+    /* Each knot's interval and angle (the last of its points', as they are met), while they
+     * fit in the arrays; then the sub-intervals and the stiffness. */
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, cap = T->cap_k;
+    double *phi = T->kphi;
     size_t m = 0;
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        const tirenv_ring_point *q = &r->pts[k];
+    for (size_t k = 0; k < n_pts; ++k) {
+        tirenv_ring_point *q = &pts[k];
         const int inner = q->s > 0 && q->s < 1;
-        const int same = inner && k > 0 && r->pts[k - 1].knot >= 0 && r->pts[k - 1].j == q->j &&
-                         r->pts[k - 1].phi == q->phi;
+        const int same = inner && k > 0 && pts[k - 1].knot >= 0 && pts[k - 1].j == q->j &&
+                         pts[k - 1].phi == q->phi;
         if (inner && !same)
             ++m;
-        r->pts[k].knot = inner ? (long)m - 1 : -1;
-    }
-    if (reserve_knots(T, m))
-        return 1;
-    T->m = m;
-    /* Each knot's interval and angle; then the sub-intervals and the stiffness. */
-    double *phi = T->kphi;
-    for (size_t k = 0; k < r->n_pts; ++k)
-        if (r->pts[k].knot >= 0) {
-            T->kj[r->pts[k].knot] = r->pts[k].j - r->lo;
-            phi[r->pts[k].knot] = r->pts[k].phi;
-            T->kdphi[r->pts[k].knot] = r->pts[k].dphi;
+        q->knot = inner ? (long)m - 1 : -1;
+        if (inner && m <= cap) {
+            T->kj[m - 1] = q->j - r->lo;
+            phi[m - 1] = q->phi;
+            T->kdphi[m - 1] = q->dphi;
         }
+    }
+    if (m > cap) {
+        if (reserve_knots(T, m))
+            return 1;
+        phi = T->kphi;
+        for (size_t k = 0; k < n_pts; ++k)
+            if (pts[k].knot >= 0) {
+                T->kj[pts[k].knot] = pts[k].j - r->lo;
+                phi[pts[k].knot] = pts[k].phi;
+                T->kdphi[pts[k].knot] = pts[k].dphi;
+            }
+    }
+    T->m = m;
     const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
     for (size_t k = 0; k < m; ++k) {
         const size_t i = T->kj[k], j = r->lo + i;
@@ -1799,8 +1810,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         xt[2 * i + 3] += cu * q->s;
         if (knot_of(r, q) >= 0)
             xt[N + (size_t)knot_of(r, q)] += cu;
-        xt[2 * i] += cw * (1 - q->s);
-        xt[2 * i + 2] += cw * q->s;
+        if (cw != 0) { /* else adding +-0 leaves xt (never -0: from +0, a sum is -0 only
+                        * of two -0) the same bits */
+            xt[2 * i] += cw * (1 - q->s);
+            xt[2 * i + 2] += cw * q->s;
+        }
         if (ds != 0) {
             xt[2 * i + 1] -= fg * ds, xt[2 * i + 3] += fg * ds;
             xt[2 * i] -= fb * ds, xt[2 * i + 2] += fb * ds;
