@@ -925,6 +925,7 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->as;
     fill_window(A, T, lo, n);
+    const size_t m = A->N - A->t; /* the band's rows */
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
@@ -941,11 +942,20 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             continue;
         const size_t i = q->j - r->lo;
         const double n0 = 1 - q->s, n1 = q->s;
+        /* Rows 2 i .. 2 i + 3 in the band (band_add's first case): written there. */
+        const int in_band = 2 * i + 3 < m;
+        double *const L = A->L + (BAND_P + 1) * 2 * i;
         if (q->st & 1) {
             const double c = q->omega * R * T->k_g;
-            band_add(A, 2 * i + 1, 2 * i + 1, c * n0 * n0);
-            band_add(A, 2 * i + 1, 2 * i + 3, c * n0 * n1);
-            band_add(A, 2 * i + 3, 2 * i + 3, c * n1 * n1);
+            if (in_band) {
+                L[BAND_P + 1] += c * n0 * n0;
+                L[BAND_P + 3] += c * n0 * n1;
+                L[3 * (BAND_P + 1)] += c * n1 * n1;
+            } else {
+                band_add(A, 2 * i + 1, 2 * i + 1, c * n0 * n0);
+                band_add(A, 2 * i + 1, 2 * i + 3, c * n0 * n1);
+                band_add(A, 2 * i + 3, 2 * i + 3, c * n1 * n1);
+            }
             rhs[2 * i + 1] += c * q->d * n0;
             rhs[2 * i + 3] += c * q->d * n1;
             const long kn = knot_of(r, q);
@@ -958,9 +968,15 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
         }
         if (q->st & 2) {
             const double c = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
-            band_add(A, 2 * i, 2 * i, c * n0 * n0);
-            band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
-            band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
+            if (in_band) {
+                L[0] += c * n0 * n0;
+                L[2] += c * n0 * n1;
+                L[2 * (BAND_P + 1)] += c * n1 * n1;
+            } else {
+                band_add(A, 2 * i, 2 * i, c * n0 * n0);
+                band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
+                band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
+            }
             rhs[2 * i] += c * (q->d - t_r) * n0;
             rhs[2 * i + 2] += c * (q->d - t_r) * n1;
         }
