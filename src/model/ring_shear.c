@@ -1473,22 +1473,27 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
     const double *cols = T->cols[ns], *vs = v + 2 * (a - lo);
     double f[NB];
     exterior_load(T, ns, vs, f);
-    for (size_t j = lo; j <= hi; ++j) {
-        if (j == a)
-            j = b + 1;
-        if (j > hi)
-            break;
-        /* The exterior runs from node b + 1 round to node a - 1. */
-        const size_t ee = j > b ? j - b - 1 : ne - (a - j);
+    /* The exterior runs from node b + 1 round to node a - 1: the window's nodes lo .. a - 1
+     * are its ne - (a - lo) .. ne - 1, and b + 1 .. hi its 0 .. hi - b - 1. */
+    const v2d f0 = {f[0], f[0]}, f1 = {f[1], f[1]}, f2 = {f[2], f[2]}, f3 = {f[3], f[3]},
+              f4 = {f[4], f[4]}, f5 = {f[5], f[5]};
+    for (int run = 0; run < 2; ++run) {
+        const size_t count = run ? hi - b : a - lo, ee0 = run ? 0 : ne - (a - lo);
+        const double *c = cols + 2 * ee0;
+        double *d = v + (run ? 2 * (b + 1 - lo) : 0);
         /* w and u (h = 0, 1) in two lanes: sum_h = sum_e cols[e Ne + 2 ee + h] f[e], from 0
          * in the order of e, as one lane each would. */
-        v2d sum = {0, 0};
-        for (size_t e = 0; e < NB; ++e) {
-            const v2d fe = {f[e], f[e]};
-            sum += v2_load(cols + e * Ne + 2 * ee) * fe;
+        for (size_t t = 0; t < count; ++t, c += 2, d += 2) {
+            v2d sum = {0, 0};
+            sum += v2_load(c) * f0;
+            sum += v2_load(c + Ne) * f1;
+            sum += v2_load(c + 2 * Ne) * f2;
+            sum += v2_load(c + 3 * Ne) * f3;
+            sum += v2_load(c + 4 * Ne) * f4;
+            sum += v2_load(c + 5 * Ne) * f5;
+            d[0] = -sum[0];
+            d[1] = -sum[1];
         }
-        v[2 * (j - lo)] = -sum[0];
-        v[2 * (j - lo) + 1] = -sum[1];
     }
 }
 
