@@ -1554,23 +1554,25 @@ static double outside_whole(tirenv_ring *r, const double xw[], size_t *j_out)
  * answer is the sub-window's; if not, the window is solved again, which writes them all. */
 static int free_clear(tirenv_ring *r, size_t k0, size_t k1, const double xw[])
 {
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        if (k == k0)
-            k = k1;
-        if (k >= r->n_pts)
-            break;
-        tirenv_ring_point *q = &r->pts[k];
-        if (q->d == -INFINITY) {
-            q->e = -INFINITY;
-        } else {
-            const double u = lin_u(r, q, xw);
-            if (q->d > u || q->d - lin_w(r, q, xw) > r->par.t_r) /* touches */
-                return 0;
-            q->e = q->d - u;
+    /* r's fields in locals: a state's store (a char) may alias them. lin_u, lin_w inline. */
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, lo = r->lo;
+    const double t_r = r->par.t_r;
+    for (int run = 0; run < 2; ++run)
+        for (size_t k = run ? k1 : 0; k < (run ? n_pts : k0); ++k) {
+            tirenv_ring_point *q = &pts[k];
+            if (q->d == -INFINITY) {
+                q->e = -INFINITY;
+            } else {
+                const size_t i = q->j - lo;
+                const double u = (1 - q->s) * xw[2 * i + 1] + q->s * xw[2 * i + 3];
+                if (q->d > u || q->d - ((1 - q->s) * xw[2 * i] + q->s * xw[2 * i + 2]) > t_r)
+                    return 0; /* touches */
+                q->e = q->d - u;
+            }
+            q->st = 0;
+            q->f = 0;
         }
-        q->st = 0;
-        q->f = 0;
-    }
     return 1;
 }
 
