@@ -73,8 +73,10 @@ static int reserve_pts(tirenv_ring *r, size_t n)
  * vertical walls, so the first vertex the ray passes at or above closes the segment that holds
  * the crossing (springs_ray.c argues the same for the springs model's rays). *cursor keeps
  * that vertex: a flatter ray of the same side lies above every vertex before it. */
-static int first_line(const tirenv_profile *p, double x, double z, double sx, double cz,
-                      double reach, long *cursor, double L[4])
+static inline __attribute__((always_inline)) int first_line(const tirenv_profile *p, double x,
+                                                            double z, double sx, double cz,
+                                                            double reach, long *cursor,
+                                                            double L[4])
 {
     const double *X = p->x, *Z = p->z;
     const long n = (long)p->n;
@@ -152,51 +154,70 @@ static int same_bits(const double *a, const double *b, size_t n)
     return 1;
 }
 
-/* The piece [a, b] of node interval j (nodes j, j + 1): its two points. prev_L: the line of
- * the piece whose points were written last, if that piece ends where this one begins (else
- * NULL): where a's cut and the line are the same bits, a's ray is that point's, whose
- * values are copied rather than computed again (the same operations on the same operands;
- * a point out of reach has d = -INFINITY then, as the one it is copied from has). */
-static void piece_points(tirenv_ring *r, const cut *a, const cut *b, size_t j, const double L[4],
-                         const double prev_L[4], double x, double z, int inside)
+/* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
+ * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
+ * k_t (with lugs each its own) and its interval added to wl. prev_L: the line of the piece whose points were written last, if
+ * that piece ends where this one begins (else NULL): where c's first cut and the line are the
+ * same bits (c->contig: the cut is that piece's second), its ray is that point's, whose values
+ * are copied rather than computed again (the same operations on the same operands; a point out
+ * of reach has d = -INFINITY then, as the one it is copied from has). */
+static inline __attribute__((always_inline)) void
+piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
+            double x, double z, int inside, double k_t, int lugs, size_t wl[2], double omega,
+            double th, tirenv_ring_point *q)
 {
-    const double omega = 0.5 * (b->phi - a->phi), th = r->theta[j];
-    const cut *ends[2] = {a, b};
-    for (int e = 0; e < 2; ++e) {
-        tirenv_ring_point *q = &r->pts[r->n_pts++];
-        const cut *k = ends[e];
-        const tirenv_ring_point *qp = q - 1;
-        if (e == 0 && prev_L && same_bits(L, prev_L, 4) && same_bits(&qp->phi, &k->phi, 1) &&
-            same_bits(&qp->sn, &k->s, 1) && same_bits(&qp->cs, &k->c, 1) &&
-            same_bits(&qp->dphi, &k->dphi, 1)) {
-            q->d = qp->d;
-            q->dd = qp->dd;
-            q->ddt = qp->ddt;
-            q->X = qp->X;
-        } else {
-            double drho = 0, drho_dphi = 0, rho = 0;
-            if (!inside)
-                rho = rho_on(L, x, z, k->s, k->c, &drho, &drho_dphi);
-            q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
-            q->dd = -drho;
-            q->ddt = -(drho + drho_dphi * k->dphi);
-            q->X = x + (isfinite(rho) ? rho : 0) * k->s;
-        }
-        q->sn = k->s;
-        q->cs = k->c;
-        q->phi = k->phi;
-        q->omega = omega;
-        q->j = j;
-        if (e == 1 && b->phi == r->theta[j + 1]) {
-            q->s = 1;
-        } else if (e == 0 && a->phi == th) {
-            q->s = 0;
-        } else {
-            const double s = (k->phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
-            q->s = s > 0 ? (s < 1 ? s : 1) : 0;
-        }
-        q->dphi = k->dphi;
+    const size_t j = c->j;
+    const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
+                 dphi = e ? c->db : c->da;
+    const tirenv_ring_point *qp = q - 1;
+    if (e == 0 && prev_L && same_bits(c->L, prev_L, 4) &&
+        (c->contig || (same_bits(&qp->phi, &phi, 1) && same_bits(&qp->sn, &sn, 1) &&
+                       same_bits(&qp->cs, &cs, 1) && same_bits(&qp->dphi, &dphi, 1)))) {
+        q->d = qp->d;
+        q->dd = qp->dd;
+        q->ddt = qp->ddt;
+        q->X = qp->X;
+    } else {
+        double drho = 0, drho_dphi = 0, rho = 0;
+        if (!inside)
+            rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
+        q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+        q->dd = -drho;
+        q->ddt = -(drho + drho_dphi * dphi);
+        q->X = x + (isfinite(rho) ? rho : 0) * sn;
     }
+    q->sn = sn;
+    q->cs = cs;
+    q->phi = phi;
+    q->omega = omega;
+    q->j = j;
+    if (e == 1 && c->pb == r->theta[j + 1]) {
+        q->s = 1;
+    } else if (e == 0 && c->pa == th) {
+        q->s = 0;
+    } else {
+        const double s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
+        q->s = s > 0 ? (s < 1 ? s : 1) : 0;
+    }
+    q->dphi = dphi;
+    /* Out of reach, or within it (see the top of tirenv_ring__sample). */
+    if (!(q->d > -r->par.t_r)) {
+        q->d = -INFINITY;
+        return;
+    }
+    wl[0] = q->j < wl[0] ? q->j : wl[0];
+    wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
+    q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
+}
+
+/* The piece c's two points (piece_point) into q[0], q[1]. */
+static void piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
+                         const double prev_L[4], double x, double z, int inside, double k_t,
+                         int lugs, size_t wl[2], tirenv_ring_point *q)
+{
+    const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
+    piece_point(r, c, 0, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q);
+    piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
 }
 
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
@@ -235,9 +256,12 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         return TIRENV_ENOMEM;
     v = r->cuts;
     const int inside = !(z > tirenv_profile_height(p, x)); /* centre in the ground: rho = 0 */
-    /* The pieces in angle order, with their lines still to find. */
+    const int lugs = isnan(k_t);
+    /* The pieces in angle order, with their lines still to find; n_back of them first with
+     * their rays backward (sx < 0), if ordered. */
     r->n_pts = 0;
-    size_t iv = 0, n_lines = 0;
+    size_t iv = 0, n_lines = 0, n_back = 0;
+    int contig = 0, ordered = 1;
     for (size_t j = ja; j < jb; ++j) {
         cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j], 0};
         for (;;) {
@@ -246,10 +270,18 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             if (is_vertex)
                 next = v[iv++];
             if (next.phi > prev.phi) {
-                r->lines[n_lines] = (tirenv_ring_piece){prev.phi, prev.s, prev.c, next.phi,
-                                                        next.s, next.c, j, 0, {0, 0, 0, 0},
-                                                        prev.dphi, next.dphi};
+                tirenv_ring_piece *c = &r->lines[n_lines]; /* its line and hit: below */
+                c->pa = prev.phi, c->sa = prev.s, c->ca = prev.c, c->pb = next.phi;
+                c->sb = next.s, c->cb = next.c, c->j = j, c->contig = contig;
+                c->da = prev.dphi, c->db = next.dphi;
+                if (prev.s + next.s < 0) {
+                    ordered &= n_back == n_lines;
+                    ++n_back;
+                }
                 ++n_lines;
+                contig = 1;
+            } else {
+                contig = 0;
             }
             prev = next;
             if (!is_vertex)
@@ -263,34 +295,35 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     long cur_b = cur_f - 1;
     while (cur_b >= 0 && X[cur_b] >= x)
         --cur_b;
-    for (size_t side = 0; side < 2; ++side)     /* backward rays first, then forward */
-        for (size_t i = 0; i < n_lines; ++i) {
-            tirenv_ring_piece *c = &r->lines[side ? i : n_lines - 1 - i];
-            const double sx = c->sa + c->sb, cz = c->ca + c->cb;
-            if ((sx < 0) != (side == 0))
-                continue;
-            c->hit = inside || first_line(p, x, z, sx, cz, reach, sx < 0 ? &cur_b : &cur_f,
-                                          c->L);
+    if (ordered) { /* the backward rays' pieces first, outward, then the forward ones' */
+        for (size_t t = 0; t < n_lines; ++t) {
+            const int back = t < n_back;
+            tirenv_ring_piece *c = &r->lines[back ? n_back - 1 - t : t];
+            c->hit = inside || first_line(p, x, z, c->sa + c->sb, c->ca + c->cb, reach,
+                                          back ? &cur_b : &cur_f, c->L);
         }
+    } else {
+        for (size_t side = 0; side < 2; ++side) /* backward rays first, then forward */
+            for (size_t i = 0; i < n_lines; ++i) {
+                tirenv_ring_piece *c = &r->lines[side ? i : n_lines - 1 - i];
+                const double sx = c->sa + c->sb, cz = c->ca + c->cb;
+                if ((sx < 0) != (side == 0))
+                    continue;
+                c->hit = inside || first_line(p, x, z, sx, cz, reach,
+                                              sx < 0 ? &cur_b : &cur_f, c->L);
+            }
+    }
+    size_t n_pts = 0;
     for (size_t i = 0; i < n_lines; ++i) {
         const tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
-        const cut a = {c->pa, c->sa, c->ca, c->da}, b = {c->pb, c->sb, c->cb, c->db};
         const int after = i > 0 && c[-1].hit; /* the points written last are c[-1]'s */
-        piece_points(r, &a, &b, c->j, c->L, after ? c[-1].L : NULL, x, z, inside);
-        /* Its points out of reach, or within it (see the top of tirenv_ring__sample). */
-        for (size_t kq = r->n_pts - 2; kq < r->n_pts; ++kq) {
-            tirenv_ring_point *q = &r->pts[kq];
-            if (!(q->d > -r->par.t_r)) {
-                q->d = -INFINITY;
-                continue;
-            }
-            wl[0] = q->j < wl[0] ? q->j : wl[0];
-            wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
-            q->k_t = isnan(k_t) ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
-        }
+        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
+                     r->pts + n_pts);
+        n_pts += 2;
     }
+    r->n_pts = n_pts;
     win[0] = wl[0], win[1] = wl[1];
     return 0;
 }

@@ -114,6 +114,8 @@ typedef struct {
     double pa, sa, ca, pb, sb, cb; /* its ends' angles (rad), sines and cosines */
     size_t j;                      /* its node interval */
     int hit;
+    int contig;                    /* its first cut is the piece before's second, the same
+                                    * bits (no zero-length piece left out between them) */
     double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
     double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
 } tirenv_ring_piece;

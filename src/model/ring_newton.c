@@ -72,6 +72,14 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
         if (nw->factor(r, nw->K, xn))
             return TIRENV_RING_NEWTON_BREAKDOWN;
         nw->solve(r, xn);
+        /* The states at the Newton point: unchanged, it is the minimum (of a piecewise
+         * quadratic E, whatever the step's length: not measured then). */
+        const size_t changed = nw->set_states(r, xn);
+        if (changed == 0 && nw->nl_tol == 0) {
+            memcpy(x, xn, N * sizeof *x);
+            *factored = 1;
+            return TIRENV_RING_NEWTON_OK;
+        }
         double step = 0; /* "v > step": fmax(step, v) without its call, the same bits (step
                           * is never NaN and v = |...| never -0; a NaN v is passed over) */
         for (size_t i = 0; i < N; ++i) {
@@ -79,8 +87,6 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
             if (v > step)
                 step = v;
         }
-        /* The states at the Newton point: unchanged, it is the minimum. */
-        const size_t changed = nw->set_states(r, xn);
         if ((changed == 0 && (nw->nl_tol == 0 || step <= nw->nl_tol)) ||
             step <= newton_step_tol) {
             memcpy(x, xn, N * sizeof *x);

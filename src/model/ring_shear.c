@@ -37,6 +37,7 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
@@ -88,7 +89,11 @@ struct tirenv_ring_tread {
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
-    tband ext, win;
+    tband ext, win;     /* the exterior's system; the window's factor (band_refactor) */
+    tband as, ap;       /* the window's system as assemble writes it, and the one before it,
+                         * whose factor win holds if ap_ok (band_refactor) */
+    int ap_ok;
+    double *ck;         /* band_factor_from's accumulators of win, every CKS-th column */
     double *col;        /* 2 M: a right-hand side of the exterior */
     double *x, *xn, *xt, *g; /* 2 M + cap_k each: iterate, Newton point, trial, gradient */
     double *kp;         /* 2 M + cap_k: the driver's workspace */
@@ -144,66 +149,135 @@ static void band_add(tband *A, size_t i, size_t k, double v)
         A->T[k - m][i - m] += v;
 }
 
+/* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
+ * tail entries scaled, and its updates of the next BAND_P columns, two SSE2 lanes at a time;
+ * the tail block's lower triangle in the caller's registers. fresh: column i + BAND_P's tail
+ * entries were never written (fill_window leaves them unset: zero), so its update starts from
+ * zero rather than from memory (0 - p, the same operation on the same operands). Nonzero if
+ * the pivot is not positive. */
+static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
+                                                               v2d *t20, v2d *t30, v2d *t32,
+                                                               double *t00, double *t22,
+                                                               const int fresh,
+                                                               const double *src)
+{
+    double *c = A->L + (BAND_P + 1) * i;
+    if (!(c[0] > 0))
+        return 1;
+    { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
+       * the system band_refactor copies from) */
+        const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
+        double *d4 = c + BAND_P * (BAND_P + 1);
+        v2_store(d4, v2_load(s4));
+        v2_store(d4 + 2, v2_load(s4 + 2));
+        d4[4] = s4[4];
+    }
+    const double lii = sqrt(c[0]), inv = 1 / lii;
+    c[0] = lii;
+    const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
+    c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
+    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+           *r4 = r3 + (BAND_P + 1);
+    /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
+     * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
+    const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
+    const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
+    v2_store(r1, v2_load(r1) - c12 * vc1);
+    v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
+    v2_store(r2, v2_load(r2) - c23 * vc2);
+    r2[2] -= c4 * c2;
+    v2_store(r3, v2_load(r3) - c34 * vc3);
+    r4[0] -= c4 * c4;
+    /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
+     * -= B[a][i] c_k, each entry's one operation of this column. */
+    double *b = A->B + TAIL * i;
+    const v2d vinv = {inv, inv};
+    const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
+    v2_store(b, b01);
+    v2_store(b + 2, b23);
+    const double ck[BAND_P] = {c1, c2, c3, c4};
+    for (size_t k = 1; k <= BAND_P; ++k) {
+        const v2d vc = {ck[k - 1], ck[k - 1]};
+        double *bk = b + TAIL * k;
+        const v2d zero = {0, 0};
+        const int from_zero = fresh && k == BAND_P;
+        v2_store(bk, (from_zero ? zero : v2_load(bk)) - b01 * vc);
+        v2_store(bk + 2, (from_zero ? zero : v2_load(bk + 2)) - b23 * vc);
+    }
+    /* T[a][b] -= B[a][i] B[b][i], b <= a. */
+    const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
+    *t00 -= b01[0] * b01[0];
+    *t10 -= v1 * b01;
+    *t20 -= v2 * b01;
+    *t22 -= b23[0] * b23[0];
+    *t30 -= v3 * b01;
+    *t32 -= v3 * b23;
+    return 0;
+}
+
+/* The tail columns of the window's band that assemble may write before the factorisation
+ * (fill_window zeroes these, and only these): the end correction's coupling of the first
+ * unknowns (columns below FRESH_FROM) and the band's entries in the tail rows (the last
+ * BAND_P columns). The others' tail entries are zero until band_factor's first update of
+ * them (factor_column's fresh). */
+enum { FRESH_FROM = BAND_P + 1 };
+
+/* Every CKS-th column, band_factor_f keeps the tail block's accumulators as they stand before
+ * it (CK_LEN doubles, the lower triangle by rows), from which band_refactor starts again. */
+enum { CKS = 16, CK_LEN = TAIL * (TAIL + 1) / 2 };
+
+static inline void acc_save(double *ck, double t00, v2d t10, v2d t20, double t22, v2d t30,
+                            v2d t32)
+{
+    ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
+    ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
+}
+
 /* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
  * With the full tail, the interior columns (all but the last BAND_P of the band) come first,
- * unrolled, their updates two SSE2 lanes at a time and the tail block's lower triangle held in
- * registers until they end: each entry gets the same operations in the same order as in the
- * general loop below, so the same bits. */
-static int band_factor(tband *A)
+ * unrolled (factor_column), the tail block's lower triangle held in registers until they end:
+ * each entry gets the same operations in the same order as in the general loop below, so the
+ * same bits. fresh: the tail's entries of the columns from FRESH_FROM to m - BAND_P - 1 are
+ * unset (fill_window), zero until their first update. From column q0 (0: all; else an
+ * interior column, the columns before it factorised and their updates of the later ones
+ * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
+ * accumulators before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
+static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_LEN],
+                            double *ck, const double *src)
 {
+    if (!src)
+        src = A->L;
     const size_t N = A->N, t = A->t, m = N - t;
     double *L = A->L;
-    size_t i = 0;
+    size_t i = q0;
     if (t == TAIL && m > BAND_P) {
         double(*T)[TAIL] = A->T;
         v2d t10 = {T[1][0], T[1][1]}, t20 = {T[2][0], T[2][1]}, t30 = {T[3][0], T[3][1]},
             t32 = {T[3][2], T[3][3]};
         double t00 = T[0][0], t22 = T[2][2];
+        if (acc0) {
+            t00 = acc0[0], t10 = (v2d){acc0[1], acc0[2]}, t20 = (v2d){acc0[3], acc0[4]};
+            t22 = acc0[5], t30 = (v2d){acc0[6], acc0[7]}, t32 = (v2d){acc0[8], acc0[9]};
+        }
         int broke = 0;
-        for (; i + BAND_P < m; ++i) {
-            double *c = L + (BAND_P + 1) * i;
-            if (!(c[0] > 0)) {
-                broke = 1;
-                break;
-            }
-            const double lii = sqrt(c[0]), inv = 1 / lii;
-            c[0] = lii;
-            const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
-            c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
-            double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
-                   *r4 = r3 + (BAND_P + 1);
-            /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
-             * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
-            const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
-            const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
-            v2_store(r1, v2_load(r1) - c12 * vc1);
-            v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
-            v2_store(r2, v2_load(r2) - c23 * vc2);
-            r2[2] -= c4 * c2;
-            v2_store(r3, v2_load(r3) - c34 * vc3);
-            r4[0] -= c4 * c4;
-            /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
-             * -= B[a][i] c_k, each entry's one operation of this column. */
-            double *b = A->B + TAIL * i;
-            const v2d vinv = {inv, inv};
-            const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
-            v2_store(b, b01);
-            v2_store(b + 2, b23);
-            const double ck[BAND_P] = {c1, c2, c3, c4};
-            for (size_t k = 1; k <= BAND_P; ++k) {
-                const v2d vc = {ck[k - 1], ck[k - 1]};
-                double *bk = b + TAIL * k;
-                v2_store(bk, v2_load(bk) - b01 * vc);
-                v2_store(bk + 2, v2_load(bk + 2) - b23 * vc);
-            }
-            /* T[a][b] -= B[a][i] B[b][i], b <= a. */
-            const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
-            t00 -= b01[0] * b01[0];
-            t10 -= v1 * b01;
-            t20 -= v2 * b01;
-            t22 -= b23[0] * b23[0];
-            t30 -= v3 * b01;
-            t32 -= v3 * b23;
+        /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
+         * while i + BAND_P < m - BAND_P. */
+        const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
+                     f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
+        for (; i + BAND_P < m && i < f0 && !broke; ++i) {
+            if (ck && i % CKS == 0)
+                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0, src);
+        }
+        for (; i < f1 && !broke; ++i) {
+            if (ck && i % CKS == 0)
+                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 1, src);
+        }
+        for (; i + BAND_P < m && !broke; ++i) {
+            if (ck && i % CKS == 0)
+                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0, src);
         }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
         T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
@@ -236,6 +310,8 @@ static int band_factor(tband *A)
     /* The dense tail, Schur complement of the band: src/core's Cholesky. */
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
+
+static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
@@ -395,7 +471,9 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->xw = malloc(5 * M * sizeof *T->xw);
     T->soft = tirenv_ring__carcass_law(par, R * dth, &T->law);
     if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
-        band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL)) {
+        band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
+        band_alloc(&T->as, 2 * M, TAIL) || band_alloc(&T->ap, 2 * M, TAIL) ||
+        !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck))) {
         tirenv_ring__tread_free(T);
         return NULL;
     }
@@ -429,6 +507,9 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->lc);
     free(T->ext.L);
     free(T->win.L);
+    free(T->as.L);
+    free(T->ap.L);
+    free(T->ck);
     free(T);
 }
 
@@ -512,7 +593,14 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     const double *s = T->s, k_sh = T->k_sh;
     A->N = N;
     A->t = TAIL;
-    memset(A->B, 0, TAIL * N * sizeof *A->B);
+    /* The tail's columns that assemble writes to (FRESH_FROM); band_factor_f takes the
+     * others as zero. */
+    if (m < FRESH_FROM + BAND_P) {
+        memset(A->B, 0, TAIL * m * sizeof *A->B);
+    } else {
+        memset(A->B, 0, TAIL * FRESH_FROM * sizeof *A->B);
+        memset(A->B + TAIL * (m - BAND_P), 0, TAIL * BAND_P * sizeof *A->B);
+    }
     memset(A->T, 0, sizeof A->T);
     double *L = A->L;
     size_t e = 0;
@@ -685,27 +773,38 @@ static void apply_K(const tirenv_ring *r, const double (*Q)[NB], const double x[
 static int find_knots(tirenv_ring *r)
 {
     tirenv_ring_tread *T = r->tread;
+    /* Each knot's interval and angle (the last of its points', as they are met), while they
+     * fit in the arrays; then the sub-intervals and the stiffness. */
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, cap = T->cap_k;
+    double *phi = T->kphi;
     size_t m = 0;
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        const tirenv_ring_point *q = &r->pts[k];
+    for (size_t k = 0; k < n_pts; ++k) {
+        tirenv_ring_point *q = &pts[k];
         const int inner = q->s > 0 && q->s < 1;
-        const int same = inner && k > 0 && r->pts[k - 1].knot >= 0 && r->pts[k - 1].j == q->j &&
-                         r->pts[k - 1].phi == q->phi;
+        const int same = inner && k > 0 && pts[k - 1].knot >= 0 && pts[k - 1].j == q->j &&
+                         pts[k - 1].phi == q->phi;
         if (inner && !same)
             ++m;
-        r->pts[k].knot = inner ? (long)m - 1 : -1;
-    }
-    if (reserve_knots(T, m))
-        return 1;
-    T->m = m;
-    /* Each knot's interval and angle; then the sub-intervals and the stiffness. */
-    double *phi = T->kphi;
-    for (size_t k = 0; k < r->n_pts; ++k)
-        if (r->pts[k].knot >= 0) {
-            T->kj[r->pts[k].knot] = r->pts[k].j - r->lo;
-            phi[r->pts[k].knot] = r->pts[k].phi;
-            T->kdphi[r->pts[k].knot] = r->pts[k].dphi;
+        q->knot = inner ? (long)m - 1 : -1;
+        if (inner && m <= cap) {
+            T->kj[m - 1] = q->j - r->lo;
+            phi[m - 1] = q->phi;
+            T->kdphi[m - 1] = q->dphi;
         }
+    }
+    if (m > cap) {
+        if (reserve_knots(T, m))
+            return 1;
+        phi = T->kphi;
+        for (size_t k = 0; k < n_pts; ++k)
+            if (pts[k].knot >= 0) {
+                T->kj[pts[k].knot] = pts[k].j - r->lo;
+                phi[pts[k].knot] = pts[k].phi;
+                T->kdphi[pts[k].knot] = pts[k].dphi;
+            }
+    }
+    T->m = m;
     const double R = r->R, k_s = tirenv_ring__tread_shear(&r->par);
     for (size_t k = 0; k < m; ++k) {
         const size_t i = T->kj[k], j = r->lo + i;
@@ -742,25 +841,31 @@ static double at_w(const tirenv_ring *r, const tirenv_ring_point *q, const doubl
     return (1 - q->s) * x[2 * i] + q->s * x[2 * i + 2];
 }
 
-/* A point's state: bit 1 the ground on the tread surface, bit 2 the belt layer. */
-static unsigned char state_of(const tirenv_ring *r, const tirenv_ring_point *q, const double x[])
-{
-    if (q->d == -INFINITY)
-        return 0;
-    return (unsigned char)((q->d > at_u(r, q, x) ? 1 : 0) |
-                           (q->d - at_w(r, q, x) > r->par.t_r ? 2 : 0));
-}
-
+/* Every point's state at x, from its tread surface and belt there (at_u, at_w): bit 1 the
+ * ground on the tread surface, bit 2 the belt layer; returns how many changed. */
 static size_t set_states(tirenv_ring *r, const double x[])
 {
     tirenv_ring_tread *T = r->tread;
     if (T->soft)
         for (size_t i = 0; i < r->n; ++i)
             T->wc[i] = x[2 * i];
+    /* r's fields in locals: a state's store (a char) may alias them. */
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, lo = r->lo;
+    const double *const xa = x + 2 * r->n, t_r = r->par.t_r;
     size_t changed = 0;
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        tirenv_ring_point *q = &r->pts[k];
-        const unsigned char st = state_of(r, q, x);
+    for (size_t k = 0; k < n_pts; ++k) {
+        tirenv_ring_point *q = &pts[k];
+        unsigned char st = 0;
+        if (q->d != -INFINITY) {
+            const size_t i = q->j - lo;
+            const double s = q->s;
+            double u = (1 - s) * x[2 * i + 1] + s * x[2 * i + 3];
+            if (q->knot >= 0)
+                u = u + xa[q->knot];
+            const double w = (1 - s) * x[2 * i] + s * x[2 * i + 2];
+            st = (unsigned char)((q->d > u ? 1 : 0) | (q->d - w > t_r ? 2 : 0));
+        }
         changed += st != q->st;
         q->st = st;
     }
@@ -818,8 +923,9 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, N = 2 * n;
     const double t_r = r->par.t_r, R = r->R;
-    tband *A = &T->win;
+    tband *A = &T->as;
     fill_window(A, T, lo, n);
+    const size_t m = A->N - A->t; /* the band's rows */
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
@@ -836,11 +942,20 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
             continue;
         const size_t i = q->j - r->lo;
         const double n0 = 1 - q->s, n1 = q->s;
+        /* Rows 2 i .. 2 i + 3 in the band (band_add's first case): written there. */
+        const int in_band = 2 * i + 3 < m;
+        double *const L = A->L + (BAND_P + 1) * 2 * i;
         if (q->st & 1) {
             const double c = q->omega * R * T->k_g;
-            band_add(A, 2 * i + 1, 2 * i + 1, c * n0 * n0);
-            band_add(A, 2 * i + 1, 2 * i + 3, c * n0 * n1);
-            band_add(A, 2 * i + 3, 2 * i + 3, c * n1 * n1);
+            if (in_band) {
+                L[BAND_P + 1] += c * n0 * n0;
+                L[BAND_P + 3] += c * n0 * n1;
+                L[3 * (BAND_P + 1)] += c * n1 * n1;
+            } else {
+                band_add(A, 2 * i + 1, 2 * i + 1, c * n0 * n0);
+                band_add(A, 2 * i + 1, 2 * i + 3, c * n0 * n1);
+                band_add(A, 2 * i + 3, 2 * i + 3, c * n1 * n1);
+            }
             rhs[2 * i + 1] += c * q->d * n0;
             rhs[2 * i + 3] += c * q->d * n1;
             const long kn = knot_of(r, q);
@@ -853,9 +968,15 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
         }
         if (q->st & 2) {
             const double c = q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t;
-            band_add(A, 2 * i, 2 * i, c * n0 * n0);
-            band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
-            band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
+            if (in_band) {
+                L[0] += c * n0 * n0;
+                L[2] += c * n0 * n1;
+                L[2 * (BAND_P + 1)] += c * n1 * n1;
+            } else {
+                band_add(A, 2 * i, 2 * i, c * n0 * n0);
+                band_add(A, 2 * i, 2 * i + 2, c * n0 * n1);
+                band_add(A, 2 * i + 2, 2 * i + 2, c * n1 * n1);
+            }
             rhs[2 * i] += c * (q->d - t_r) * n0;
             rhs[2 * i + 2] += c * (q->d - t_r) * n1;
         }
@@ -923,9 +1044,9 @@ static int condense_knots(tirenv_ring_tread *T)
             s11 += T->c1[k] * T->z1[k];
         }
         if (s00 != 0 || s01 != 0 || s11 != 0) {
-            band_add(&T->win, 2 * i + 1, 2 * i + 1, -s00);
-            band_add(&T->win, 2 * i + 1, 2 * i + 3, -s01);
-            band_add(&T->win, 2 * i + 3, 2 * i + 3, -s11);
+            band_add(&T->as, 2 * i + 1, 2 * i + 1, -s00);
+            band_add(&T->as, 2 * i + 1, 2 * i + 3, -s01);
+            band_add(&T->as, 2 * i + 3, 2 * i + 3, -s11);
         }
     }
     return 0;
@@ -1018,11 +1139,114 @@ static void knots_moving(const tirenv_ring *r, const double x[], double rhs[])
     }
 }
 
+/* Equal bits (not ==, which equates 0 and -0): n doubles. */
+static int same_bits(const double *a, const double *b, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        uint64_t ua, ub;
+        memcpy(&ua, &a[i], sizeof ua);
+        memcpy(&ub, &b[i], sizeof ub);
+        if (ua != ub)
+            return 0;
+    }
+    return 1;
+}
+
+/* The first column of the window's system S whose entries differ from P's, both as
+ * fill_window and assemble write them (m band rows, the tail's columns that fill_window
+ * zeroes, the tail block): 0 if the tail block or the first tail columns do. */
+static size_t first_change(const tband *S, const tband *P, size_t m)
+{
+    if (!same_bits(&S->T[0][0], &P->T[0][0], TAIL * TAIL) ||
+        !same_bits(S->B, P->B, TAIL * FRESH_FROM))
+        return 0;
+    size_t p = m;
+    if (!same_bits(S->B + TAIL * (m - BAND_P), P->B + TAIL * (m - BAND_P), TAIL * BAND_P))
+        p = m - BAND_P;
+    /* Blocks of rows by memcmp (equal bytes are equal bits), then the rows of the first
+     * block that differs. */
+    enum { ROWS = 8 };
+    const size_t W = BAND_P + 1;
+    size_t i = 0;
+    while (i + ROWS <= p && memcmp(S->L + W * i, P->L + W * i, W * ROWS * sizeof *S->L) == 0)
+        i += ROWS;
+    for (; i < p; ++i)
+        if (!same_bits(S->L + W * i, P->L + W * i, W))
+            return i;
+    return p;
+}
+
+/* The window's factor (T->win) of the system that assemble and condense_knots wrote (T->as).
+ * Between Newton steps and evaluations that system mostly changes from some column on: the
+ * points whose states changed, a ground vertex's points in contact (their place and weight
+ * move with z). The factor's columns before the first changed one are those of the last
+ * factorisation (each column of a right-looking Cholesky depends only on the columns before
+ * it and its own entries), so they are kept: the columns from the CKS-th column at or before
+ * it get their pending updates from the BAND_P columns before (the same operations in the
+ * same order as band_factor_from gives them, one entry at a time), the tail block's
+ * accumulators come from that column's checkpoint, and the factorisation goes on from there.
+ * The same bits as factorising the whole. Nonzero if not positive definite. */
+static int band_refactor(tirenv_ring_tread *T)
+{
+    tband *S = &T->as, *P = &T->ap, *F = &T->win;
+    const size_t N = S->N, t = S->t, m = N - t, W = BAND_P + 1;
+    size_t q = 0;
+    if (T->ap_ok && P->N == N && t == TAIL && m > 2 * CKS + BAND_P) {
+        const size_t p = first_change(S, P, m);
+        if (p == m) { /* the same system: win holds its factor */
+            const tband sw = *S;
+            *S = *P, *P = sw;
+            return 0;
+        }
+        q = (p < m - BAND_P ? p : m - BAND_P - 1) / CKS * CKS;
+    }
+    T->ap_ok = 0;
+    F->N = N, F->t = t;
+    /* The band's columns q .. q + BAND_P - 1; the later ones band_factor_from copies as it
+     * reaches them (src), or all here where it has no interior columns. */
+    const int whole = !(t == TAIL && m > BAND_P);
+    memcpy(F->L + W * q, S->L + W * q, W * (whole ? m - q : BAND_P) * sizeof *F->L);
+    int bad;
+    if (q == 0) {
+        if (m < FRESH_FROM + BAND_P) {
+            memcpy(F->B, S->B, TAIL * m * sizeof *F->B);
+        } else {
+            memcpy(F->B, S->B, TAIL * FRESH_FROM * sizeof *F->B);
+            memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
+                   TAIL * BAND_P * sizeof *F->B);
+        }
+        memcpy(F->T, S->T, sizeof F->T);
+        bad = band_factor_from(F, 1, 0, NULL, T->ck, S->L);
+    } else {
+        /* Columns q .. q + BAND_P - 1 as they stand before column q is factorised: their
+         * entries (the tail's zero up to its last BAND_P columns), less the updates of the
+         * BAND_P columns before, kept. */
+        memset(F->B + TAIL * q, 0, TAIL * BAND_P * sizeof *F->B);
+        memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
+               TAIL * BAND_P * sizeof *F->B);
+        for (size_t i = q - BAND_P; i < q; ++i) {
+            const double *c = F->L + W * i, *b = F->B + TAIL * i;
+            for (size_t k1 = q - i; k1 <= BAND_P; ++k1) {
+                double *c1 = F->L + W * (i + k1), *b1 = F->B + TAIL * (i + k1);
+                for (size_t k2 = k1; k2 <= BAND_P; ++k2)
+                    c1[k2 - k1] -= c[k2] * c[k1];
+                for (size_t a = 0; a < TAIL; ++a)
+                    b1[a] -= b[a] * c[k1];
+            }
+        }
+        bad = band_factor_from(F, 1, q, T->ck + CK_LEN * (q / CKS), T->ck, S->L);
+    }
+    const tband sw = *S;
+    *S = *P, *P = sw;
+    T->ap_ok = !bad;
+    return bad;
+}
+
 /* The driver's callbacks (ring_newton.c). */
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
     assemble(r, (const double(*)[NB])K, rhs);
-    return condense_knots(r->tread) || band_factor(&r->tread->win);
+    return condense_knots(r->tread) || band_refactor(r->tread);
 }
 
 static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
@@ -1249,22 +1473,27 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
     const double *cols = T->cols[ns], *vs = v + 2 * (a - lo);
     double f[NB];
     exterior_load(T, ns, vs, f);
-    for (size_t j = lo; j <= hi; ++j) {
-        if (j == a)
-            j = b + 1;
-        if (j > hi)
-            break;
-        /* The exterior runs from node b + 1 round to node a - 1. */
-        const size_t ee = j > b ? j - b - 1 : ne - (a - j);
+    /* The exterior runs from node b + 1 round to node a - 1: the window's nodes lo .. a - 1
+     * are its ne - (a - lo) .. ne - 1, and b + 1 .. hi its 0 .. hi - b - 1. */
+    const v2d f0 = {f[0], f[0]}, f1 = {f[1], f[1]}, f2 = {f[2], f[2]}, f3 = {f[3], f[3]},
+              f4 = {f[4], f[4]}, f5 = {f[5], f[5]};
+    for (int run = 0; run < 2; ++run) {
+        const size_t count = run ? hi - b : a - lo, ee0 = run ? 0 : ne - (a - lo);
+        const double *c = cols + 2 * ee0;
+        double *d = v + (run ? 2 * (b + 1 - lo) : 0);
         /* w and u (h = 0, 1) in two lanes: sum_h = sum_e cols[e Ne + 2 ee + h] f[e], from 0
          * in the order of e, as one lane each would. */
-        v2d sum = {0, 0};
-        for (size_t e = 0; e < NB; ++e) {
-            const v2d fe = {f[e], f[e]};
-            sum += v2_load(cols + e * Ne + 2 * ee) * fe;
+        for (size_t t = 0; t < count; ++t, c += 2, d += 2) {
+            v2d sum = {0, 0};
+            sum += v2_load(c) * f0;
+            sum += v2_load(c + Ne) * f1;
+            sum += v2_load(c + 2 * Ne) * f2;
+            sum += v2_load(c + 3 * Ne) * f3;
+            sum += v2_load(c + 4 * Ne) * f4;
+            sum += v2_load(c + 5 * Ne) * f5;
+            d[0] = -sum[0];
+            d[1] = -sum[1];
         }
-        v[2 * (j - lo)] = -sum[0];
-        v[2 * (j - lo) + 1] = -sum[1];
     }
 }
 
@@ -1325,23 +1554,25 @@ static double outside_whole(tirenv_ring *r, const double xw[], size_t *j_out)
  * answer is the sub-window's; if not, the window is solved again, which writes them all. */
 static int free_clear(tirenv_ring *r, size_t k0, size_t k1, const double xw[])
 {
-    for (size_t k = 0; k < r->n_pts; ++k) {
-        if (k == k0)
-            k = k1;
-        if (k >= r->n_pts)
-            break;
-        tirenv_ring_point *q = &r->pts[k];
-        if (q->d == -INFINITY) {
-            q->e = -INFINITY;
-        } else {
-            const double u = lin_u(r, q, xw);
-            if (q->d > u || q->d - lin_w(r, q, xw) > r->par.t_r) /* touches */
-                return 0;
-            q->e = q->d - u;
+    /* r's fields in locals: a state's store (a char) may alias them. lin_u, lin_w inline. */
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts, lo = r->lo;
+    const double t_r = r->par.t_r;
+    for (int run = 0; run < 2; ++run)
+        for (size_t k = run ? k1 : 0; k < (run ? n_pts : k0); ++k) {
+            tirenv_ring_point *q = &pts[k];
+            if (q->d == -INFINITY) {
+                q->e = -INFINITY;
+            } else {
+                const size_t i = q->j - lo;
+                const double u = (1 - q->s) * xw[2 * i + 1] + q->s * xw[2 * i + 3];
+                if (q->d > u || q->d - ((1 - q->s) * xw[2 * i] + q->s * xw[2 * i + 2]) > t_r)
+                    return 0; /* touches */
+                q->e = q->d - u;
+            }
+            q->st = 0;
+            q->f = 0;
         }
-        q->st = 0;
-        q->f = 0;
-    }
     return 1;
 }
 
@@ -1431,11 +1662,20 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
      * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
      * minimum does not depend on the start (its states' system is solved last). */
     const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
-    for (size_t i = 0; i < n; ++i) {
-        const size_t j = lo + i;
-        const int warm = j >= r->warm_lo && j < r->warm_lo + r->warm_n;
-        xw[2 * i] = warm ? r->w[j] + dz * T->dw[j] : 0;
-        xw[2 * i + 1] = warm ? T->u[j] + dz * T->du[j] : 0;
+    {
+        /* The last window's nodes in this one, lo + ia .. lo + ib - 1; zero elsewhere. */
+        const size_t wa = r->warm_lo > lo ? r->warm_lo : lo, w1 = r->warm_lo + r->warm_n,
+                     wb = w1 < lo + n ? w1 : lo + n;
+        const size_t ia = wa < wb ? wa - lo : 0, ib = wa < wb ? wb - lo : 0;
+        for (size_t i = 0; i < ia; ++i)
+            xw[2 * i] = xw[2 * i + 1] = 0;
+        for (size_t i = ia; i < ib; ++i) {
+            const size_t j = lo + i;
+            xw[2 * i] = r->w[j] + dz * T->dw[j];
+            xw[2 * i + 1] = T->u[j] + dz * T->du[j];
+        }
+        for (size_t i = ib; i < n; ++i)
+            xw[2 * i] = xw[2 * i + 1] = 0;
     }
     /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
      * with the tire) where there is one; else, or where a free point would touch, on the whole
@@ -1511,13 +1751,14 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     /* The window's free points, clear of the ground, were written by free_clear. */
     /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
      * and u on this window, dw and du there too with dF_z/dz. */
-    for (size_t j = r->warm_lo; j < r->warm_lo + r->warm_n; ++j) {
-        if (j >= lo && j < lo + n) {
-            if (!dfz_dz)
-                T->dw[j] = T->du[j] = 0;
-            continue;
-        }
-        r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    {
+        const size_t w0 = r->warm_lo, w1 = w0 + r->warm_n, h1 = lo + n;
+        for (size_t j = w0; j < w1 && j < lo; ++j)
+            r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+        for (size_t j = w0 > lo ? w0 : lo; !dfz_dz && j < w1 && j < h1; ++j)
+            T->dw[j] = T->du[j] = 0;
+        for (size_t j = w0 > h1 ? w0 : h1; j < w1; ++j)
+            r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
     }
     T->pred[2] = 0;
     r->warm_lo = lo;
@@ -1570,8 +1811,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         q->f = fg + fb;
         r->F[q->j] += (1 - q->s) * q->f;
         r->F[q->j + 1] += q->s * q->f;
-        r->g[q->j] += (1 - q->s) * fb;
-        r->g[q->j + 1] += q->s * fb;
+        if (q->st & 2) { /* else fb = 0, and adding +0 leaves g (never -0: from +0, sums of
+                          * terms >= 0) the same bits */
+            r->g[q->j] += (1 - q->s) * fb;
+            r->g[q->j + 1] += q->s * fb;
+        }
         sum_c += q->f * q->cs;
         sum_s += q->f * q->sn;
         if (!dfz_dz)
@@ -1589,8 +1833,11 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         xt[2 * i + 3] += cu * q->s;
         if (knot_of(r, q) >= 0)
             xt[N + (size_t)knot_of(r, q)] += cu;
-        xt[2 * i] += cw * (1 - q->s);
-        xt[2 * i + 2] += cw * q->s;
+        if (cw != 0) { /* else adding +-0 leaves xt (never -0: from +0, a sum is -0 only
+                        * of two -0) the same bits */
+            xt[2 * i] += cw * (1 - q->s);
+            xt[2 * i + 2] += cw * q->s;
+        }
         if (ds != 0) {
             xt[2 * i + 1] -= fg * ds, xt[2 * i + 3] += fg * ds;
             xt[2 * i] -= fb * ds, xt[2 * i + 2] += fb * ds;
@@ -1716,6 +1963,7 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         band_reset(&A, N, TAIL);
         add_arc(&A, T, r->lo, n);
     } else {
+        memset(A.B, 0, TAIL * N * sizeof *A.B); /* fill_window leaves the fresh columns */
         fill_window(&A, T, r->lo, n);
     }
     for (size_t i = 0; i < N; ++i)
