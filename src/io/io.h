@@ -91,6 +91,7 @@ typedef struct {
     char *text;            /* the line, without LF or CRLF, NUL-terminated */
     size_t len;            /* its length */
     size_t cap;
+    int eol;               /* 1: the line ended with LF; 0: the source ended first */
 } tirenv_lines;
 
 /* Starts reading at offset; line is the number the next line gets. */
