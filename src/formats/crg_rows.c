@@ -130,7 +130,7 @@ static int all_blank(const char *s, size_t n)
 
 /* nf numbers of one record (the line r->text) into out; a field whose first non-blank
  * character is '*' is missing (NaN). The last field may end early on a line that ends with a
- * line end (its trailing blanks stripped, as OpenCRG's own reader pads a short line to 80
+ * line end (its trailing blanks stripped, as OpenCRG's MATLAB reader pads a short line to 80
  * characters); nothing may follow it. A last line the file ends inside, without a line end,
  * must hold its fields whole: the file was cut there, maybe mid-number ("0.12" of
  * "0.1234567"), and a cut number would read as another value. */

@@ -1151,9 +1151,9 @@ static void test_text_truncated(void **state)
 
 /* A text file cut inside the last number of its last record, with no line end after it: a
  * truncated file, refused at that line and column in both text encodings, where it read as
- * the cut number ("0.12" of "0.1200000"). The whole file without its last line end reads, and
+ * the cut number ("0.1" of "0.1200000"). The whole file without its last line end reads, and
  * so does a last field that ends early before a line end (trailing blanks stripped: OpenCRG's
- * reader pads a short line to 80 characters), the rule for every record. */
+ * MATLAB reader pads a short line to 80 characters), the rule for every record. */
 static void test_text_cut_mid_number(void **state)
 {
     tirenv_test_dir *fx = *state;
