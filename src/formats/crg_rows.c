@@ -129,13 +129,27 @@ static int all_blank(const char *s, size_t n)
 }
 
 /* nf numbers of one record (the line r->text) into out; a field whose first non-blank
- * character is '*' is missing (NaN). The last field may end early; nothing may follow it. */
+ * character is '*' is missing (NaN). The last field may end early on a line that ends with a
+ * line end (its trailing blanks stripped, as OpenCRG's MATLAB reader pads a short line to 80
+ * characters); nothing may follow it. A last line the file ends inside, without a line end,
+ * must hold its fields whole: the file was cut there, maybe mid-number ("0.12" of
+ * "0.1234567"), and a cut number would read as another value. */
 static int parse_record(const tirenv_crg *c, const tirenv_lines *r, size_t nf, double out[],
                         tirenv_diag *diag)
 {
     const size_t w = field_width(c);
     const char *text = r->text;
     const size_t len = r->len;
+    if (!r->eol && len < nf * w && len > (nf - 1) * w) {
+        const int s = tirenv_error(diag, TIRENV_EPARSE, c->src.name, r->line, "data",
+                                   "truncated data: the file ends %zu characters into the "
+                                   "last %zu-character number of the record, without a line "
+                                   "end; expected %zu whole numbers (%zu characters)",
+                                   len - (nf - 1) * w, w, nf, nf * w);
+        if (diag)
+            diag->column = len + 1;
+        return s;
+    }
     for (size_t f = 0; f < nf; f++) {
         const size_t at = f * w;
         if (at >= len || all_blank(text + at, len - at < w ? len - at : w)) {

@@ -190,7 +190,8 @@ static int row_x(const char *line, size_t n, double *x)
 
 /* The reader's lines, taken from the end: the last line with content (not blank, not a '#'
  * comment: tirenv_csv__next's rule) within the last TAIL bytes, which hold at least two
- * lines of the longest length the reader takes. */
+ * lines of the longest length the reader takes, and ended by a line end (one without is an
+ * error tirenv_csv__next reports at its line). */
 int tirenv_profile_csv__last_x(const tirenv_source *s, double *x)
 {
     enum { TAIL = 2 * (TIRENV_TEXT__MAX_LINE + 2) };
@@ -216,7 +217,8 @@ int tirenv_profile_csv__last_x(const tirenv_source *s, double *x)
         while (p < buf + end && isspace((unsigned char)*p))
             p++;
         if (p < buf + end && *p != '#') {
-            found = row_x(buf + begin, end - begin, x);
+            /* Not a last line without a line end (end == n): an error from the start. */
+            found = end < n && row_x(buf + begin, end - begin, x);
             break;
         }
         end = begin - 1;

@@ -81,6 +81,7 @@ int tirenv_csv__next(tirenv_csv__reader *r)
         char *text = r->buf;
         if (r->line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3; /* the UTF-8 byte-order mark spreadsheet programs write */
+        const int eol = r->buf[len - 1] == '\n';
         size_t n = strlen(text);
         while (n > 0 && (text[n - 1] == '\n' || text[n - 1] == '\r'))
             text[--n] = '\0';
@@ -89,8 +90,11 @@ int tirenv_csv__next(tirenv_csv__reader *r)
         const char *p = text;
         while (isspace((unsigned char)*p))
             p++;
-        if (*p != '\0' && *p != '#')
+        if (*p != '\0' && *p != '#') {
+            if (!eol)
+                return -tirenv_text__unterminated(r->diag, r->file, r->line, n + 1);
             return 1;
+        }
     }
 }
 

@@ -46,6 +46,13 @@ enum {
  * codes above; after TIRENV_TEXT__LONG the rest of the line is unread. */
 int tirenv_text__getline(char **buf, size_t *cap, FILE *fp, size_t *len);
 
+/* The error for a last line that holds data (not blank, not a comment) and has no line end:
+ * the file ends inside the line, and a file cut there (a copy that stopped, a full disk)
+ * reads as a shorter number or word ("0.12" of "0.125") that no check can tell from a whole
+ * one. Every file tirenv writes ends its lines. TIRENV_EPARSE at line and column (the column
+ * after the line's last character), field "". */
+int tirenv_text__unterminated(tirenv_diag *diag, const char *file, size_t line, size_t column);
+
 /* ---- bytes of a file or buffer, and their lines (source.c) ------------------------------ */
 
 /* A readable span of bytes. */
@@ -91,6 +98,7 @@ typedef struct {
     char *text;            /* the line, without LF or CRLF, NUL-terminated */
     size_t len;            /* its length */
     size_t cap;
+    int eol;               /* 1: the line ended with LF; 0: the source ended first */
 } tirenv_lines;
 
 /* Starts reading at offset; line is the number the next line gets. */

@@ -170,14 +170,17 @@ int tirenv_lines__next(tirenv_lines *r, tirenv_diag *diag)
     r->line++;
     r->start = r->pos;
     r->len = 0;
+    r->eol = 0;
     while (r->pos < s->size) {
         unsigned char c;
         const int status = byte_at(r, r->pos, &c, diag);
         if (status)
             return -status;
         r->pos++;
-        if (c == '\n')
+        if (c == '\n') {
+            r->eol = 1;
             break;
+        }
         if (c == '\0')
             return -tirenv_error(diag, TIRENV_EPARSE, s->name, r->line, "",
                                  "NUL byte at column %zu (byte offset %zu); expected text",

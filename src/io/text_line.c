@@ -57,3 +57,14 @@ int tirenv_text__getline(char **buf, size_t *cap, FILE *fp, size_t *len)
     }
     return n > 0 ? TIRENV_TEXT__LINE : TIRENV_TEXT__EOF;
 }
+
+int tirenv_text__unterminated(tirenv_diag *diag, const char *file, size_t line, size_t column)
+{
+    const int status = tirenv_error(diag, TIRENV_EPARSE, file, line, "",
+                                    "the file ends inside this line, which has no line end "
+                                    "(cut short?); expected a line end after its last "
+                                    "character (add one if the file is whole)");
+    if (diag)
+        diag->column = column;
+    return status;
+}

@@ -1149,6 +1149,73 @@ static void test_text_truncated(void **state)
     assert_non_null(strstr(d.message, "truncated data: the last row has 1 of its 2 records"));
 }
 
+/* A text file cut inside the last number of its last record, with no line end after it: a
+ * truncated file, refused at that line and column in both text encodings, where it read as
+ * the cut number ("0.1" of "0.1200000"). The whole file without its last line end reads, and
+ * so does a last field that ends early before a line end (trailing blanks stripped: OpenCRG's
+ * MATLAB reader pads a short line to 80 characters), the rule for every record. */
+static void test_text_cut_mid_number(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    for (int enc = TIRENV_CRG_LRFI; enc <= TIRENV_CRG_LDFI; enc++) {
+        const size_t w = enc == TIRENV_CRG_LRFI ? 10 : 20;
+        char text[4096];
+        const char *data = strstr(base, "$$$$\n") + 5;
+        int n = snprintf(text, sizeof text, "%.*s", (int)(data - base), base);
+        if (enc == TIRENV_CRG_LDFI)
+            memcpy(strstr(text, "#:LRFI"), "#:LDFI", 6);
+        for (size_t i = 0; i < 4; i++) {
+            for (size_t j = 0; j < 3; j++)
+                n += snprintf(text + n, sizeof text - (size_t)n, "%*.7f", (int)w,
+                              0.01 * (double)(3 * i + j + 1));
+            n += snprintf(text + n, sizeof text - (size_t)n, "\n");
+        }
+        const size_t full = (size_t)n, last = full - 1 - 3 * w; /* start of line 21 */
+        char path[600];
+        tirenv_test_path(fx, "cut.crg", path);
+        tirenv_crg *c = NULL;
+        tirenv_diag d;
+        /* Cut 1 to w - 1 characters into the last field: no line end after it. */
+        for (size_t keep = 3 * w - 1; keep > 2 * w; keep--) {
+            FILE *fp = fopen(path, "wb");
+            assert_non_null(fp);
+            fwrite(text, 1, last + keep, fp);
+            fclose(fp);
+            tirenv_diag_clear(&d);
+            assert_int_equal(tirenv_crg_open(path, &c, &d), TIRENV_EPARSE);
+            assert_null(c);
+            assert_string_equal(d.file, path);
+            assert_int_equal(d.line, 21);
+            assert_int_equal(d.column, keep + 1);
+            assert_string_equal(d.field, "data");
+            assert_non_null(strstr(d.message, "truncated data: the file ends"));
+        }
+        print_message("%s:%zu:%zu: %s\n", d.file, d.line, d.column, d.message);
+        /* The whole file without its last line end, and a last field stripped to " 0.12"
+         * before the line end: both read as the whole file does. */
+        tirenv_test_write_text(path, text);
+        c = open_ok(path);
+        const double z1 = z_at(c, 1, 3), z0 = z_at(c, 0, 3);
+        tirenv_crg_free(c);
+        for (int k = 0; k < 2; k++) {
+            FILE *fp = fopen(path, "wb");
+            assert_non_null(fp);
+            if (k == 0) {
+                fwrite(text, 1, full - 1, fp);
+            } else {
+                fwrite(text, 1, last + 2 * w, fp);
+                fputs(" 0.12\n", fp);
+            }
+            fclose(fp);
+            c = open_ok(path);
+            assert_int_equal(tirenv_crg_rows(c), 4);
+            assert_bits_equal(z_at(c, 1, 3), z1);
+            assert_bits_equal(z_at(c, 0, 3), z0);
+            tirenv_crg_free(c);
+        }
+    }
+}
+
 /* The writer refuses what it cannot write. */
 static void test_writer_refuses(void **state)
 {
@@ -1254,6 +1321,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_binary_truncated, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_text_truncated, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_text_cut_mid_number, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test_setup_teardown(test_writer_refuses, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
