@@ -141,26 +141,14 @@ static double rho_on(const double L[4], double x, double z, double s, double c, 
     return rho;
 }
 
-/* Equal bits (not ==, which equates 0 and -0): n doubles. */
-static int same_bits(const double *a, const double *b, size_t n)
-{
-    for (size_t i = 0; i < n; ++i) {
-        uint64_t ua, ub;
-        memcpy(&ua, &a[i], sizeof ua);
-        memcpy(&ub, &b[i], sizeof ub);
-        if (ua != ub)
-            return 0;
-    }
-    return 1;
-}
-
 /* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
  * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
- * k_t (with lugs each its own) and its interval added to wl. prev_L: the line of the piece whose points were written last, if
- * that piece ends where this one begins (else NULL): where c's first cut and the line are the
- * same bits (c->contig: the cut is that piece's second), its ray is that point's, whose values
- * are copied rather than computed again (the same operations on the same operands; a point out
- * of reach has d = -INFINITY then, as the one it is copied from has). */
+ * k_t (with lugs each its own) and its interval added to wl. prev_L: the line of the piece
+ * whose points were written last, if that piece ends where this one begins (else NULL): where
+ * c's first cut and the line are the same bits (c->contig: the cut is that piece's second),
+ * its ray is that point's, whose values are copied rather than computed again (the same
+ * operations on the same operands; a point out of reach has d = -INFINITY then, as the one
+ * it is copied from has). */
 static inline __attribute__((always_inline)) void
 piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
             double x, double z, int inside, double k_t, int lugs, size_t wl[2], double omega,
@@ -170,9 +158,11 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
                  dphi = e ? c->db : c->da;
     const tirenv_ring_point *qp = q - 1;
-    if (e == 0 && prev_L && same_bits(c->L, prev_L, 4) &&
-        (c->contig || (same_bits(&qp->phi, &phi, 1) && same_bits(&qp->sn, &sn, 1) &&
-                       same_bits(&qp->cs, &cs, 1) && same_bits(&qp->dphi, &dphi, 1)))) {
+    if (e == 0 && prev_L && tirenv_ring__same_bits(c->L, prev_L, 4) &&
+        (c->contig ||
+         (tirenv_ring__same_bits(&qp->phi, &phi, 1) && tirenv_ring__same_bits(&qp->sn, &sn, 1) &&
+          tirenv_ring__same_bits(&qp->cs, &cs, 1) &&
+          tirenv_ring__same_bits(&qp->dphi, &dphi, 1)))) {
         q->d = qp->d;
         q->dd = qp->dd;
         q->ddt = qp->ddt;

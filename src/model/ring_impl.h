@@ -7,6 +7,8 @@
 #define TIRENV_RING_IMPL_H
 
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 #include "tirenv/ring.h"
 #include "tirenv/tire.h"
 
@@ -20,6 +22,20 @@
  * alone (the ring is uniform); tirenv_ring__belt_alloc keeps a table of them, filled when a
  * length is first needed. */
 typedef struct tirenv_ring_belt tirenv_ring_belt;
+
+/* Equal bits (not ==, which equates 0 and -0): n doubles. The ring reuses work where its
+ * inputs are the same bits as last time (ring_ground.c's points, ring_shear.c's factor). */
+static inline int tirenv_ring__same_bits(const double *a, const double *b, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        uint64_t ua, ub;
+        memcpy(&ua, &a[i], sizeof ua);
+        memcpy(&ub, &b[i], sizeof ub);
+        if (ua != ub)
+            return 0;
+    }
+    return 1;
+}
 
 /* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface
  * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */

@@ -1139,29 +1139,17 @@ static void knots_moving(const tirenv_ring *r, const double x[], double rhs[])
     }
 }
 
-/* Equal bits (not ==, which equates 0 and -0): n doubles. */
-static int same_bits(const double *a, const double *b, size_t n)
-{
-    for (size_t i = 0; i < n; ++i) {
-        uint64_t ua, ub;
-        memcpy(&ua, &a[i], sizeof ua);
-        memcpy(&ub, &b[i], sizeof ub);
-        if (ua != ub)
-            return 0;
-    }
-    return 1;
-}
-
 /* The first column of the window's system S whose entries differ from P's, both as
  * fill_window and assemble write them (m band rows, the tail's columns that fill_window
  * zeroes, the tail block): 0 if the tail block or the first tail columns do. */
 static size_t first_change(const tband *S, const tband *P, size_t m)
 {
-    if (!same_bits(&S->T[0][0], &P->T[0][0], TAIL * TAIL) ||
-        !same_bits(S->B, P->B, TAIL * FRESH_FROM))
+    if (!tirenv_ring__same_bits(&S->T[0][0], &P->T[0][0], TAIL * TAIL) ||
+        !tirenv_ring__same_bits(S->B, P->B, TAIL * FRESH_FROM))
         return 0;
     size_t p = m;
-    if (!same_bits(S->B + TAIL * (m - BAND_P), P->B + TAIL * (m - BAND_P), TAIL * BAND_P))
+    const size_t end = TAIL * (m - BAND_P);
+    if (!tirenv_ring__same_bits(S->B + end, P->B + end, TAIL * BAND_P))
         p = m - BAND_P;
     /* Blocks of rows by memcmp (equal bytes are equal bits), then the rows of the first
      * block that differs. */
@@ -1171,7 +1159,7 @@ static size_t first_change(const tband *S, const tband *P, size_t m)
     while (i + ROWS <= p && memcmp(S->L + W * i, P->L + W * i, W * ROWS * sizeof *S->L) == 0)
         i += ROWS;
     for (; i < p; ++i)
-        if (!same_bits(S->L + W * i, P->L + W * i, W))
+        if (!tirenv_ring__same_bits(S->L + W * i, P->L + W * i, W))
             return i;
     return p;
 }

@@ -427,8 +427,9 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (> 0, else +0 where the ray meets no ground within R0: never negative, -0 or NaN;
- * elements outside [a, b] cannot reach the ground): c->rows, their span c->f0..c->f1 (f0 > f1: nothing touches), c->pin_h[e]
- * (each element's own row's h, 0 if none) and c->pin_row[e]. TIRENV_ENOMEM with diag. */
+ * elements outside [a, b] cannot reach the ground): c->rows, their span c->f0..c->f1 (f0 >
+ * f1: nothing touches), c->pin_h[e] (each element's own row's h, 0 if none) and
+ * c->pin_row[e]. TIRENV_ENOMEM with diag. */
 int tirenv_springs__cc_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double z, size_t a, size_t b,
                             const double d[], tirenv_diag *diag);
