@@ -46,22 +46,34 @@ check "the child is gone and nothing is left in TMPDIR" \
 
 # A child killed (here by SIGKILL, as the kernel's OOM killer would): the bench says which
 # child and by which signal (once "failed (status 9)", a raw wait status, 256 for an exit
-# status of 1), exits non-zero and removes the scratch directory.
-start
-tries=0
-killed=0
-while [ $killed -eq 0 ] && kill -0 "$pid" 2>/dev/null && [ $tries -lt 400 ]; do
-    child=$(ps -eo pid=,args= | grep -v grep | grep "$tmp/" | awk 'NR == 1 { print $1 }')
-    # a child that ended between ps and kill: the next one
-    if [ -n "$child" ] && kill -KILL "$child" 2>/dev/null; then
-        killed=1
-    else
-        sleep 0.01
+# status of 1), exits non-zero and removes the scratch directory. kill succeeds on a child
+# that has already exited and not yet been reaped (a zombie), whose status is then its own:
+# a run that ends 0 without a word of a signal is that race (seen once in a loaded make
+# test), and is run again, at most three times; a bench that ignored a killed child would
+# end 0 every time.
+attempt=0
+rc=0
+while [ $attempt -lt 3 ] && [ $rc -eq 0 ]; do
+    attempt=$((attempt + 1))
+    start
+    tries=0
+    killed=0
+    while [ $killed -eq 0 ] && kill -0 "$pid" 2>/dev/null && [ $tries -lt 400 ]; do
+        child=$(ps -eo pid=,args= | grep -v grep | grep "$tmp/" | awk 'NR == 1 { print $1 }')
+        # a child that ended between ps and kill: the next one
+        if [ -n "$child" ] && kill -KILL "$child" 2>/dev/null; then
+            killed=1
+        else
+            sleep 0.01
+        fi
+        tries=$((tries + 1))
+    done
+    wait "$pid"
+    rc=$?
+    if [ $rc -eq 0 ] && grep -q "signal" err; then
+        break # a zero status that speaks of a signal is a failure to report, not the race
     fi
-    tries=$((tries + 1))
 done
-wait "$pid"
-rc=$?
 check "a child killed: the bench exits 2 naming it and its signal, nothing left in TMPDIR" \
     '[ $killed -eq 1 ] && [ $rc -eq 2 ] && grep -q "failed (killed by signal 9, Killed)" err &&
      [ -z "$(ls -A t)" ]'
