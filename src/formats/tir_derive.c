@@ -718,11 +718,11 @@ typedef struct {
 } trial;
 
 static int try_tau(const tirenv_tire *t0, const mf_keys *k, const vertical_law *v, double tau,
-                   trial *out, tirenv_diag *diag)
+                   const tirenv_profile *flat, trial *out, tirenv_diag *diag)
 {
     out->t = *t0;
     out->tau = tau;
-    int status = ring_on_law(&out->t, k, v, tau, NULL, &out->ring, &out->rho_n, &out->q_fz2, diag);
+    int status = ring_on_law(&out->t, k, v, tau, flat, &out->ring, &out->rho_n, &out->q_fz2, diag);
     if (!status)
         status = derive_springs(&out->t, k, out->rho_n, &out->ring, diag);
     if (!status)
@@ -731,12 +731,12 @@ static int try_tau(const tirenv_tire *t0, const mf_keys *k, const vertical_law *
 }
 
 static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
-                               trial *best, tirenv_diag *diag)
+                               const tirenv_profile *flat, trial *best, tirenv_diag *diag)
 {
     static const double TAU_FIRST = 0.1, TAU_MAX = 0.4, E_TOL = 0.01;
     enum { MAX_EVALS = 12 };
     trial lo, hi, x;
-    int status = try_tau(t, k, v, 0, &lo, diag);
+    int status = try_tau(t, k, v, 0, flat, &lo, diag);
     int evals = 1;
     if (status)
         return status;
@@ -747,7 +747,7 @@ static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, const vertical_
     /* Bracket: lo grows slower (e > 0); double tau until hi does not. */
     double tau = TAU_FIRST;
     for (;;) {
-        if ((status = try_tau(t, k, v, tau, &hi, diag)))
+        if ((status = try_tau(t, k, v, tau, flat, &hi, diag)))
             return status;
         evals++;
         if (hi.e <= E_TOL || tau >= TAU_MAX)
@@ -764,7 +764,7 @@ static int derive_ring_springs(tirenv_tire *t, const mf_keys *k, const vertical_
     *best = fabs(lo.e) < fabs(hi.e) ? lo : hi;
     while (evals < MAX_EVALS && fabs(best->e) > E_TOL) {
         tau = (lo.tau * fb - hi.tau * fa) / (fb - fa);
-        if ((status = try_tau(t, k, v, tau, &x, diag)))
+        if ((status = try_tau(t, k, v, tau, flat, &x, diag)))
             return status;
         evals++;
         if (fabs(x.e) < fabs(best->e))
@@ -1084,6 +1084,8 @@ static int laws_ring(const tirenv_tire *t, const mf_keys *k, const vertical_law 
         snprintf(lr->why, sizeof lr->why, "%.40s: %.110s", d2.field, d2.message);
     if (lr->searched)
         *tr = on;
+    else  /* the Winkler ring, tabled by ring_flats too */
+        return within_range(&tr->t, flat, tr->ring.defl[N_LOADS - 1], diag);
     return TIRENV_OK;
 }
 
@@ -1202,7 +1204,11 @@ static void cam_part(tirenv_tire *t, const mf_keys *k, const flat_set *ring_or_n
 
 /* The models the file lacks (lack: TIRENV_TIR_SPRINGS and/or TIRENV_TIR_RING) derived into
  * *t on the law v, the ring first (the springs model is identified on it); *tr holds the
- * ring's states (*have_ring set) and the deflection at FNOMIN and Q_FZ2 they were made on. */
+ * ring's states (*have_ring set) and the deflection at FNOMIN and Q_FZ2 they were made on.
+ * A derived ring is evaluated on ring workspaces at heights (ring_on_law given the flat
+ * ground), never through the ring model, whose valid-range scan on each new model was most
+ * of a read (docs/models.md 14.2, Cost), and the ring kept is checked within its range down
+ * to its largest deflection (within_range). */
 static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const vertical_law *v,
                          trial *tr, int *have_ring, tirenv_diag *diag)
 {
@@ -1210,17 +1216,25 @@ static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const 
     *have_ring = 0;
     tr->rho_n = v->rho_n;
     tr->q_fz2 = 0;
+    const double zero = 0;
+    tirenv_profile *flat = NULL;
+    if ((lack & TIRENV_TIR_RING) && !(flat = tirenv_profile_alloc(1, &zero, &zero)))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
+                            "no memory for the flat ground the ring is derived on");
     if (lack == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING)) {
-        status = derive_ring_springs(t, k, v, tr, diag);
+        status = derive_ring_springs(t, k, v, flat, tr, diag);
         if (!status)
             *t = tr->t;
     } else if (lack == TIRENV_TIR_RING) {
-        status = ring_on_law(t, k, v, 0, NULL, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
+        status = ring_on_law(t, k, v, 0, flat, &tr->ring, &tr->rho_n, &tr->q_fz2, diag);
     } else if (lack == TIRENV_TIR_SPRINGS) {
         status = flats(tirenv_model_ring, t, k->fnomin, &tr->ring, diag);
         if (!status)
             status = derive_springs(t, k, v->rho_n, &tr->ring, diag);
     }
+    if (!status && flat)
+        status = within_range(t, flat, tr->ring.defl[N_LOADS - 1], diag);
+    tirenv_profile_free(flat);
     *have_ring = lack != 0 && !status;  /* lack 0: no ring states made here */
     return status;
 }
