@@ -210,21 +210,22 @@ static char guid[128], resources[1200], dir[64], cli[1024];
 static fmi2ValueReference VR_X, VR_LOAD, VR_H, VR_SLOPE, VR_TH, VR_NX, VR_NY, VR_NZ, VR_FX,
     VR_FZ, VR_MODEL, VR_ROAD, VR_TIRE;
 
-/* An instance in step mode over road (NULL: the default) with model at x0 and load. */
-static fmi2Component start(const char *model, const char *road, double x0, double load,
-                           fmi2Status *exit_status)
+/* An instance in step mode over road with model at x0 and load, of the tire in the file tire
+ * (road NULL: the default road; tire NULL: the default tire, and road not set either). */
+static fmi2Component start_tire(const char *model, const char *road, const char *tire,
+                                double x0, double load, fmi2Status *exit_status)
 {
     fmi2Component c = api.instantiate("tire", fmi2CoSimulation, guid, resources, &cb,
                                       fmi2False, fmi2False);
     if (!c)
         return NULL;
-    const fmi2ValueReference s_vr[2] = {VR_MODEL, VR_ROAD};
-    const fmi2String s_val[2] = {model, road};
+    const fmi2ValueReference s_vr[3] = {VR_MODEL, VR_ROAD, VR_TIRE};
+    const fmi2String s_val[3] = {model, road, tire};
     const fmi2ValueReference r_vr[2] = {VR_X, VR_LOAD};
     const fmi2Real r_val[2] = {x0, load};
     fmi2Status st = api.setup(c, fmi2False, 0, 0, fmi2False, 0);
     if (st == fmi2OK)
-        st = api.set_string(c, s_vr, road ? 2 : 1, s_val);
+        st = api.set_string(c, s_vr, tire ? 3 : road ? 2 : 1, s_val);
     if (st == fmi2OK)
         st = api.enter_init(c);
     if (st == fmi2OK)
@@ -233,6 +234,13 @@ static fmi2Component start(const char *model, const char *road, double x0, doubl
         st = api.exit_init(c);
     *exit_status = st;
     return c;
+}
+
+/* start_tire with the default tire. */
+static fmi2Component start(const char *model, const char *road, double x0, double load,
+                           fmi2Status *exit_status)
+{
+    return start_tire(model, road, NULL, x0, load, exit_status);
 }
 
 /* One step to x at load; the outputs h, slope, terrain_height, normal xyz, fx, fz in out. */
@@ -524,22 +532,9 @@ static void test_cam_alone(const char *road, const char *tir)
     static const char *const said[2] = {"the ring model not derived",
                                         "searched on the file's own vertical and contact laws"};
     for (size_t i = 0; i < 2; i++) {
-        fmi2Component c = api.instantiate("tire", fmi2CoSimulation, guid, resources, &cb,
-                                          fmi2False, fmi2False);
-        const fmi2ValueReference s_vr[3] = {VR_MODEL, VR_ROAD, VR_TIRE};
-        const fmi2String s_val[3] = {models[i], road, tir};
-        const fmi2ValueReference r_vr[2] = {VR_X, VR_LOAD};
-        const fmi2Real r_val[2] = {X_FROM, 20000};
         last_log[0] = '\0';
-        fmi2Status st = c ? api.setup(c, fmi2False, 0, 0, fmi2False, 0) : fmi2Error;
-        if (st == fmi2OK)
-            st = api.set_string(c, s_vr, 3, s_val);
-        if (st == fmi2OK)
-            st = api.enter_init(c);
-        if (st == fmi2OK)
-            st = api.set_real(c, r_vr, 2, r_val);
-        if (st == fmi2OK)
-            st = api.exit_init(c);
+        fmi2Status st = fmi2Error;
+        fmi2Component c = start_tire(models[i], road, tir, X_FROM, 20000, &st);
         const int note = logged(said[i]);
         double out[8] = {0};
         if (st == fmi2OK)
