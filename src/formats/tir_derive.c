@@ -168,13 +168,13 @@ static int load_at(const tirenv_model_type *type, const tirenv_tire *t, double r
     return status;
 }
 
-/* Scales the stiffnesses stiff[] by one factor c so that the model carries FNOMIN at rho_n.
- * Where they make all of the load (springs) the load is proportional to c and one step is
- * exact; the ring's air (INFLPRES) carries a share that c does not scale, so c is found by a
- * secant (the load grows monotonically with c), to 5e-8 of FNOMIN: the load at a fixed
- * deflection, itself a flat inversion to 1e-9 m of deflection, repeats only to a few 1e-8 of
- * it (on the 335/65R22.5's ring a secant to 1e-8 wandered there for up to 14 steps); the
- * tests assert the deflection at FNOMIN to 1e-7. */
+/* Scales the stiffnesses stiff[] by one factor c so that the model carries FNOMIN at rho_n
+ * (the springs model's; a derived ring's is scale_at_height). Where they make all of the load
+ * the load is proportional to c and one step is exact; where a share is not scaled (a ring's
+ * air, INFLPRES) c is found by a secant (the load grows monotonically with c), to 5e-8 of
+ * FNOMIN: the load at a fixed deflection, itself a flat inversion to 1e-9 m of deflection,
+ * repeats only to a few 1e-8 of it (on the 335/65R22.5's ring a secant to 1e-8 wandered
+ * there for up to 14 steps); the tests assert the deflection at FNOMIN to 1e-7. */
 static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const stiff[],
                     size_t n, double fnomin, double rho_n, tirenv_diag *diag)
 {
@@ -304,7 +304,7 @@ static int ring_at_heights(const tirenv_tire *t, const tirenv_profile *flat, siz
     tirenv_ring *ring = tirenv_ring_alloc(t->springs.R0, &t->ring);
     if (!ring)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
-                            "the ring searched on the file's laws is not a valid tire");
+                            "the derived ring is not a valid tire");
     int status = TIRENV_OK;
     for (size_t i = 0; i < n && !status; i++) {
         double fx, fz;
@@ -328,9 +328,10 @@ static int ring_load_at_height(const tirenv_tire *t, const tirenv_profile *flat,
     return status;
 }
 
-/* scale_to for the rings of a file with laws of its own, by the ring's load at the height
- * R0 - rho_n (one force evaluation a step on a fresh ring workspace, ring_load_at_height,
- * where scale_to inverts a flat inversion on a new model): EI, T, k_c, k_t by one factor c
+/* scale_to for a derived ring, by the ring's load at the height R0 - rho_n (one force
+ * evaluation a step on a fresh ring workspace, ring_load_at_height, where scale_to inverts a
+ * flat inversion on a new model, whose valid-range scan costs some 45 evaluations): EI, T,
+ * k_c, k_t by one factor c
  * until it carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but
  * for the air's share), at most MAX_STEPS. */
 static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fnomin,
@@ -360,12 +361,12 @@ static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fn
         c1 = fmax(c1 / 4, fmin(c1 * 4, c2));
     }
     return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "VERTICAL_STIFFNESS",
-                        "the ring searched on the file's laws found no scale carrying FNOMIN "
+                        "the derived ring found no scale carrying FNOMIN "
                         "%g N at the file's deflection %g m", fnomin, rho_n);
 }
 
 /* The ring's flat-ground states at 0.5 to 1.5 FNOMIN, as flats takes them from the ring
- * model, for the rings of a file with a contact law of its own (derive_on_laws): each load's
+ * model, for a derived ring: each load's
  * centre height found on one workspace by Newton's method on tirenv_ring_forces (its dF/dz
  * exact for the active set), from the deflection guess[i] (m) and then each from the last,
  * safeguarded by the bracket the evaluations make (bisection where a step leaves it), and
@@ -379,7 +380,7 @@ static int ring_flats(const tirenv_tire *t, const tirenv_profile *flat, double f
     tirenv_ring *ring = tirenv_ring_alloc(t->springs.R0, &t->ring);
     if (!ring)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
-                            "the ring of the file's laws is not a valid tire");
+                            "the derived ring is not a valid tire");
     const double R0 = t->springs.R0;
     const tirenv_eq_settings *eq = &t->eq;
     int status = TIRENV_OK;
@@ -431,8 +432,7 @@ static int ring_flats(const tirenv_tire *t, const tirenv_profile *flat, double f
 /* TIRENV_OK where the ring of *t is within its valid range (docs/models.md section 1.3: its
  * centre no lower than where its flat-ground patch is longest) down to the deflection rho (m),
  * the largest derived on it; else TIRENV_ERANGE. ring_at_heights and ring_flats evaluate the
- * ring without the model's range, so the ring searched on a file's laws is kept only where
- * this holds. The model finds its range's end on a grid of RANGE_DZ*R0 steps from R0 down,
+ * ring without the model's range, so a derived ring is kept only where this holds. The model finds its range's end on a grid of RANGE_DZ*R0 steps from R0 down,
  * stopping two steps past the longest patch, then between that one's neighbours; a patch
  * that grows at every step of that grid down to two steps past rho puts the end below rho.
  * That is checked here on one workspace, down to rho only (the model's scan goes on to the
@@ -448,7 +448,7 @@ static int within_range(const tirenv_tire *t, const tirenv_profile *flat, double
     tirenv_ring *ring = tirenv_ring_alloc(R0, &t->ring);
     if (!ring)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ring",
-                            "the ring searched on the file's laws is not a valid tire");
+                            "the derived ring is not a valid tire");
     int status = TIRENV_OK;
     double l_last = 0;
     for (size_t k = 1; k <= K && !status && (double)k * dz < R0; k++) {
@@ -508,10 +508,7 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
         const double R = k->R0 - t->ring.t_r;
         t->ring.T += tau * d.ring.k_f * R * R;
     }
-    if (flat)  /* a file with laws of its own: by the ring's load at the height */
-        return scale_at_height(t, flat, k->fnomin, rho_n, diag);
-    double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
-    return scale_to(tirenv_model_ring, t, stiff, 4, k->fnomin, rho_n, diag);
+    return scale_at_height(t, flat, k->fnomin, rho_n, diag);
 }
 
 /* docs/models.md section 14.2: Q_FZ2 identified on the ring's states, for a file whose
@@ -577,8 +574,7 @@ static int ring_and_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
     t->ring.k_t = base[3] * c;
     double guess[N_LOADS];  /* the last ring's deflections */
     memcpy(guess, ring->defl, sizeof guess);
-    const int status = flat ? ring_flats(t, flat, k->fnomin, guess, ring, diag)
-                            : flats(tirenv_model_ring, t, k->fnomin, ring, diag);
+    const int status = ring_flats(t, flat, k->fnomin, guess, ring, diag);
     if (status)
         return status;
     *q2 = q_fz2_on(k, v->factor, ring);
@@ -619,13 +615,11 @@ static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, 
     *rho_n = v->rho_n;
     *q2 = 0;
     int status = derive_ring(t, k, v->rho_n, tau, flat, diag);
-    if (!status && flat) {
+    if (!status) {
         double guess[N_LOADS];  /* the linear law's */
         for (size_t i = 0; i < N_LOADS; i++)
             guess[i] = tirenv_nominal_load_fractions[i] * v->rho_n;
         status = ring_flats(t, flat, k->fnomin, guess, ring, diag);
-    } else if (!status) {
-        status = flats(tirenv_model_ring, t, k->fnomin, ring, diag);
     }
     if (status || !v->derive_q_fz2)
         return status;
@@ -1090,16 +1084,11 @@ static int laws_ring(const tirenv_tire *t, const mf_keys *k, const vertical_law 
 }
 
 static int derive_on_laws(tirenv_tire *t, const mf_keys *k, unsigned lack,
-                          const vertical_law *v, trial *tr, laws_result *lr, tirenv_diag *diag)
+                          const vertical_law *v, const tirenv_profile *flat, trial *tr,
+                          laws_result *lr, tirenv_diag *diag)
 {
     memset(lr, 0, sizeof *lr);
-    const double zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);
-    if (!flat)
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
-                            "no memory for the flat ground the ring is searched on");
     const int status = laws_ring(t, k, v, flat, tr, lr, diag);
-    tirenv_profile_free(flat);
     if (status || !(lack & TIRENV_TIR_SPRINGS))
         return status;
     return lr->searched ? derive_springs_sidewall(&tr->t, k, tr->rho_n, &tr->ring, diag)
@@ -1210,17 +1199,13 @@ static void cam_part(tirenv_tire *t, const mf_keys *k, const flat_set *ring_or_n
  * of a read (docs/models.md 14.2, Cost), and the ring kept is checked within its range down
  * to its largest deflection (within_range). */
 static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const vertical_law *v,
-                         trial *tr, int *have_ring, tirenv_diag *diag)
+                         const tirenv_profile *flat, trial *tr, int *have_ring,
+                         tirenv_diag *diag)
 {
     int status = TIRENV_OK;
     *have_ring = 0;
     tr->rho_n = v->rho_n;
     tr->q_fz2 = 0;
-    const double zero = 0;
-    tirenv_profile *flat = NULL;
-    if ((lack & TIRENV_TIR_RING) && !(flat = tirenv_profile_alloc(1, &zero, &zero)))
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring",
-                            "no memory for the flat ground the ring is derived on");
     if (lack == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING)) {
         status = derive_ring_springs(t, k, v, flat, tr, diag);
         if (!status)
@@ -1232,20 +1217,19 @@ static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const 
         if (!status)
             status = derive_springs(t, k, v->rho_n, &tr->ring, diag);
     }
-    if (!status && flat)
+    if (!status && (lack & TIRENV_TIR_RING))
         status = within_range(t, flat, tr->ring.defl[N_LOADS - 1], diag);
-    tirenv_profile_free(flat);
     *have_ring = lack != 0 && !status;  /* lack 0: no ring states made here */
     return status;
 }
 
 /* derive_models for a file with a contact law of its own (derive_on_laws). */
 static int derive_laws_models(tirenv_tire *t, const mf_keys *k, unsigned lack,
-                              const vertical_law *v, trial *tr, laws_result *lr, int *have_ring,
-                              tirenv_diag *diag)
+                              const vertical_law *v, const tirenv_profile *flat, trial *tr,
+                              laws_result *lr, int *have_ring, tirenv_diag *diag)
 {
     tr->t = *t;
-    const int status = derive_on_laws(t, k, lack, v, tr, lr, diag);
+    const int status = derive_on_laws(t, k, lack, v, flat, tr, lr, diag);
     *have_ring = !status;
     if (!status)
         *t = tr->t;
@@ -1381,15 +1365,22 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
     /* A file with a contact law of its own gets a ring searched on it (derive_on_laws). */
     const int on_laws = (lack & TIRENV_TIR_RING) && (origin->own & TIRENV_TIR_CAM);
     laws_result lr;
-    status = on_laws ? derive_laws_models(&t, &k, lack, &law, &tr, &lr, &have_ring, diag)
-                     : derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);  /* the ring's ground */
+    if (!flat)
+        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "ring",
+                            "no memory for the flat ground the ring is derived on");
+    status = on_laws ? derive_laws_models(&t, &k, lack, &law, flat, &tr, &lr, &have_ring, diag)
+                     : derive_models(&t, &k, lack, &law, flat, &tr, &have_ring, diag);
     if (status && law.derive_q_fz2 && strcmp(diag->field, "Q_FZ2") == 0) {
         snprintf(no_law, sizeof no_law, "%s", diag->message);
         law.derive_q_fz2 = 0;
         t = *tire;
-        status = on_laws ? derive_laws_models(&t, &k, lack, &law, &tr, &lr, &have_ring, diag)
-                         : derive_models(&t, &k, lack, &law, &tr, &have_ring, diag);
+        status = on_laws ? derive_laws_models(&t, &k, lack, &law, flat, &tr, &lr, &have_ring,
+                                              diag)
+                         : derive_models(&t, &k, lack, &law, flat, &tr, &have_ring, diag);
     }
+    tirenv_profile_free(flat);
     if (status) {
         if (!diag->file[0])
             snprintf(diag->file, sizeof diag->file, "%s", path);
