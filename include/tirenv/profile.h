@@ -21,8 +21,8 @@ typedef struct tirenv_profile tirenv_profile;
 
 /* Checks vertices for a profile: n >= 1, all finite and within
  * TIRENV_PROFILE_MAX_COORDINATE, no segment longer than TIRENV_PROFILE_MAX_SEGMENT, x
- * non-decreasing, at most two vertices at the same x. Returns TIRENV_OK or TIRENV_EINVAL with the reason in diag (field "x" or "z",
- * line = 1-based vertex index). */
+ * non-decreasing, at most two vertices at the same x. Returns TIRENV_OK or TIRENV_EINVAL
+ * with the reason in diag (field "x" or "z", line = 1-based vertex index). */
 int tirenv_profile_validate(size_t n, const double x[], const double z[], tirenv_diag *diag);
 
 /* tirenv_profile_validate's check of one vertex, for a reader that meets them one at a time:

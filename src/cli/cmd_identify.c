@@ -284,7 +284,9 @@ int cli_identify_main(int argc, char *argv[])
                  "%.3f to %.3f m); the cam's laws are %s. Largest differences from the\n"
                  "%s over these loads: springs deflection %.1f %%, springs contact length %.1f %%,\n"
                  "cam deflection %.1f %%, cam contact length %.1f %%.",
-                 sidewall ? " (and SIDEWALL_STIFFNESS,\nSIDEWALL_PRELOAD: the sidewall in series, section 4.9)" : "",
+                 sidewall ? " (and SIDEWALL_STIFFNESS,\nSIDEWALL_PRELOAD: the sidewall in series, "
+                            "section 4.9)"
+                          : "",
                  ref_name, n, loads.v[0] / 1e3, loads.v[n - 1] / 1e3, tg[0].deflection * 1e3,
                  tg[n - 1].deflection * 1e3, tg[0].contact_length, tg[n - 1].contact_length,
                  cam_derived ? "derived\nfrom its MF-Tyre keys as it is read (section 14.2)"

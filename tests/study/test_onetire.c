@@ -336,8 +336,8 @@ static void test_205_pairs(void **state)
  * is the law's, below it. On tir_mftyre.tir, whose ring is searched on its own contact law
  * (section 14.2), the springs model identified on that ring with a sidewall in series is
  * -1.3 % at FNOMIN (ring -1.5 %), bounded at half a per cent above (without the sidewall,
- * +11.1 %: the elements stiffen with the load). A file's own linear law (the 430/50R38's Q_FZ2 = 0) is
- * its secant: FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
+ * +11.1 %: the elements stiffen with the load). A file's own linear law (the 430/50R38's
+ * Q_FZ2 = 0) is its secant: FNOMIN over the deflection is VERTICAL_STIFFNESS there. */
 static void test_derived_from_mftyre(void **state)
 {
     (void)state;
