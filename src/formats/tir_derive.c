@@ -1319,7 +1319,7 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
     /* The cam alone used (need TIRENV_TIR_ONLY | TIRENV_TIR_CAM) and every law of it the
      * file's own: nothing of the cam comes from a derived ring (Q_FZ2 is derived on the ring
      * only where the file has no law of its own), so the ring and the springs model the file
-     * lacks are not derived (the ring's search on the laws takes seconds), and the note says
+     * lacks are not derived (the ring's search on the laws is most of a read), and the note says
      * they are not this tire's. */
     if ((need & TIRENV_TIR_ONLY) && (need & TIRENV_TIR_CAM) && !(need & lack) &&
         (origin->own & TIRENV_TIR_CAM) && !law.derive_q_fz2) {
