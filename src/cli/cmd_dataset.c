@@ -59,6 +59,8 @@ static int list(const char *dir, double R0)
         printf("SIMULATED by the %s model on the virtual rig%s%s%s; tire %s\n", src.model,
                src.design[0] ? " (design " : "", src.design, src.design[0] ? ")" : "",
                src.tire[0] ? src.tire : "not recorded");
+    if (src.cases)  /* the read checked the manifest against it */
+        printf("%zu cases, as source.txt declares\n", src.cases);
     printf("%-4s %-10s %9s %9s %9s %9s %7s  (data set %s)\n", "case", "split", "l_c_m", "load_N",
            "L_m", "H_m", "points", dir);
     for (size_t i = 0; i < ds.n; ++i) {
