@@ -211,9 +211,10 @@ static int cases_differ(const tirenv_csv__reader *r, const tirenv_dataset *ds,
     const int beyond = ds->n == src->cases;
     const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + !beyond, "",
                                     "%s%zu cases, but %s/source.txt:%zu declares cases = %zu; "
-                                    "expected that many (a manifest cut short, or another "
-                                    "data set's source.txt)", beyond ? "more than " : "",
-                                    ds->n, ds->dir, src->cases_line, src->cases);
+                                    "expected that many (%s, or another data set's "
+                                    "source.txt)", beyond ? "more than " : "", ds->n, ds->dir,
+                                    src->cases_line, src->cases,
+                                    beyond ? "rows added" : "a manifest cut short");
     if (r->diag)
         r->diag->column = 1;
     return status;
