@@ -38,7 +38,9 @@ typedef struct {
 } tirenv_dataset;
 
 /* Reads dir/cases.csv and each case's curve (the curve file if given, else the log imported
- * with R0 (m) as tirenv_rig_import does). Errors name file, line and column. */
+ * with R0 (m) as tirenv_rig_import does). A dir/source.txt that gives `cases` (see
+ * tirenv_dataset_source_read, which reads it here too) makes a manifest with another number
+ * of cases an error. Errors name file, line and column. */
 int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag);
 void tirenv_dataset_free(tirenv_dataset *ds);  /* NULL is a no-op */
 
@@ -108,10 +110,13 @@ typedef struct {
     char design[64];          /* the design it was built from, or "" */
     char model[32];           /* the model that simulated it ("ring", "cam"), or "" */
     char tire[512];           /* the tire it was simulated with, full path, or "" */
+    size_t cases;             /* the number of cases its manifest holds, or 0 if not given */
+    size_t cases_line;        /* the line of source.txt that gives it, or 0 */
 } tirenv_dataset_source;
 
 /* Reads dir/source.txt into *out (present 0 if there is none). Errors name file, line and
- * key: an unknown key, a model that is not a physical model type, a malformed line. */
+ * key: an unknown key, a model that is not a physical model type, a number of cases that is
+ * not a whole number from 1 to 1,000,000, a malformed line. */
 int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tirenv_diag *diag);
 
 /* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,

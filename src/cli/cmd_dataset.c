@@ -25,7 +25,8 @@ static void usage(FILE *fp)
     fputs("DIR, the tire file and the data set to list default to the design's in the data\n"
           "directory ($TIRENV_DATA, else the installed data; in a build tree, the source\n"
           "tree's data/).\n"
-          "list: prints a data set's manifest as a table, and what simulated it.\n"
+          "list: prints a data set's manifest as a table, what simulated it and how many\n"
+          "cases its source.txt declares (a manifest with another count is refused).\n"
           "\n"
           "options:\n"
           "  --design NAME        the data set to build (default 14.9R28)\n"
@@ -59,6 +60,8 @@ static int list(const char *dir, double R0)
         printf("SIMULATED by the %s model on the virtual rig%s%s%s; tire %s\n", src.model,
                src.design[0] ? " (design " : "", src.design, src.design[0] ? ")" : "",
                src.tire[0] ? src.tire : "not recorded");
+    if (src.cases)  /* the read checked the manifest against it */
+        printf("%zu cases, as source.txt declares\n", src.cases);
     printf("%-4s %-10s %9s %9s %9s %9s %7s  (data set %s)\n", "case", "split", "l_c_m", "load_N",
            "L_m", "H_m", "points", dir);
     for (size_t i = 0; i < ds.n; ++i) {

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dataset/dataset_impl.h"
 #include "io/io.h"
 
 enum {
@@ -84,10 +85,6 @@ static int parse_path(const tirenv_csv__reader *r, const tirenv_csv__field *f, s
                                 "the path is longer than 511 characters with the directory");
     return TIRENV_OK;
 }
-
-/* The most cases a manifest holds: a million (the most tirenv sweep makes), about 1 GB of
- * case records before any curve is read. */
-#define MANIFEST_MAX_CASES 1000000u
 
 /* The case names seen so far, for the duplicate check: open addressing on FNV-1a, indices
  * into ds->cases plus one (0 = empty), at most half full. A scan of every earlier name made
@@ -205,7 +202,26 @@ static int add_case(tirenv_dataset *ds, size_t *cap, const tirenv_case *c)
     return TIRENV_OK;
 }
 
-static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds)
+/* The manifest holds other than the cases source.txt declares: one cut at a line end reads as
+ * a shorter manifest (every row it keeps is whole), so without the count it would pass for a
+ * smaller data set. At the first row beyond the count, or after the last line. */
+static int cases_differ(const tirenv_csv__reader *r, const tirenv_dataset *ds,
+                        const tirenv_dataset_source *src)
+{
+    const int beyond = ds->n == src->cases;
+    const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + !beyond, "",
+                                    "%s%zu cases, but %s/source.txt:%zu declares cases = %zu; "
+                                    "expected that many (%s, or another data set's "
+                                    "source.txt)", beyond ? "more than " : "", ds->n, ds->dir,
+                                    src->cases_line, src->cases,
+                                    beyond ? "rows added" : "a manifest cut short");
+    if (r->diag)
+        r->diag->column = 1;
+    return status;
+}
+
+static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
+                          const tirenv_dataset_source *src)
 {
     int more = tirenv_csv__next(r);
     if (more == 0) {
@@ -220,10 +236,14 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds)
     size_t cap = 0;
     name_set names = {NULL, 0};
     while (status == TIRENV_OK && (more = tirenv_csv__next(r)) > 0) {
-        if (ds->n == MANIFEST_MAX_CASES) {
+        if (src->cases && ds->n == src->cases) {
+            status = cases_differ(r, ds, src);
+            break;
+        }
+        if (ds->n == TIRENV_DATASET__MAX_CASES) {
             status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line, "case",
                                   "more than %u cases; expected at most that many (the "
-                                  "most tirenv sweep makes)", MANIFEST_MAX_CASES);
+                                  "most tirenv sweep makes)", TIRENV_DATASET__MAX_CASES);
             break;
         }
         tirenv_case c = {0};
@@ -236,6 +256,8 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds)
     free(names.slot);
     if (status == TIRENV_OK && more < 0)
         status = -more;
+    if (status == TIRENV_OK && src->cases && ds->n != src->cases)
+        status = cases_differ(r, ds, src);
     if (status == TIRENV_OK && ds->n == 0) {
         status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + 1, "",
                               "no cases after the header; expected one line per case");
@@ -269,11 +291,15 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     char path[sizeof out->dir + 16];
     snprintf(path, sizeof path, "%s/cases.csv", dir);
-    tirenv_csv__reader r;
-    int status = tirenv_csv__open(&r, path, diag);
-    if (status == TIRENV_OK)
-        status = parse_manifest(&r, out);
-    tirenv_csv__close(&r);
+    tirenv_dataset_source src;
+    int status = tirenv_dataset_source_read(dir, &src, diag);
+    if (status == TIRENV_OK) {
+        tirenv_csv__reader r;
+        status = tirenv_csv__open(&r, path, diag);
+        if (status == TIRENV_OK)
+            status = parse_manifest(&r, out, &src);
+        tirenv_csv__close(&r);
+    }
     for (size_t i = 0; i < out->n && status == TIRENV_OK; i++) {
         if (!out->cases[i].curve_path[0] && !(R0 > 0 && isfinite(R0)))
             status = tirenv_error(diag, TIRENV_EINVAL, path, 0, "R0",

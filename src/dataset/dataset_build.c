@@ -237,7 +237,8 @@ static void build_done(void *ctx, size_t i, size_t n_done)
         b->s->progress(b->s->progress_ctx, n_done, b->r->d.n_cases);
 }
 
-/* source.txt (docs/formats.md section 9): what a study needs to know about the data. */
+/* source.txt (docs/formats.md section 9): what a study needs to know about the data, and how
+ * many cases the manifest holds, so that a manifest cut at a line end is refused. */
 static int write_source(const char *dir, const tirenv_design *d, const char *note,
                         tirenv_diag *diag)
 {
@@ -249,8 +250,8 @@ static int write_source(const char *dir, const tirenv_design *d, const char *not
         return status;
     tirenv_outfile_comment(f, note);
     fprintf(tirenv_outfile_stream(f),
-            "format = tirenv-dataset 1\ndesign = %s\nmodel = %s\ntire = tire.tir\n", d->name,
-            d->model);
+            "format = tirenv-dataset 1\ndesign = %s\nmodel = %s\ntire = tire.tir\ncases = %zu\n",
+            d->name, d->model, d->n_cases);
     return tirenv_outfile_commit(f, diag);
 }
 

@@ -5,9 +5,11 @@
 
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "dataset/dataset_impl.h"
 #include "io/io.h"
 #include "tirenv/model.h"
 
@@ -37,14 +39,31 @@ static int store(const tirenv_csv__reader *r, size_t column, const char *key, co
     return TIRENV_OK;
 }
 
+/* The manifest's number of cases: digits alone (no sign, no exponent), 1 to the most a
+ * manifest holds, so that a typo cannot declare a count no manifest could meet. */
+static int parse_cases(const tirenv_csv__reader *r, size_t column, const char *value,
+                       size_t *out)
+{
+    const size_t digits = strspn(value, "0123456789");
+    const unsigned long cases = digits && digits <= 7 && !value[digits]
+                                    ? strtoul(value, NULL, 10) : 0;
+    if (cases < 1 || cases > TIRENV_DATASET__MAX_CASES)
+        return tirenv_csv__fail(r, column, "cases", "expected the number of cases of the "
+                                                    "manifest, a whole number from 1 to %u, "
+                                                    "got '%.60s'", TIRENV_DATASET__MAX_CASES,
+                                value);
+    *out = cases;
+    return TIRENV_OK;
+}
+
 static int parse_line(tirenv_csv__reader *r, const char *dir, tirenv_dataset_source *out,
                       unsigned *seen)
 {
-    static const char *const keys[] = {"format", "design", "model", "tire"};
+    static const char *const keys[] = {"format", "design", "model", "tire", "cases"};
     char *eq = strchr(r->text, '=');
     if (!eq)
         return tirenv_csv__fail(r, 1, "", "expected 'key = value' (keys format, design, model, "
-                                          "tire)");
+                                          "tire, cases)");
     *eq = '\0';
     const char *key = trim(r->text);
     char *value = trim(eq + 1);
@@ -53,8 +72,8 @@ static int parse_line(tirenv_csv__reader *r, const char *dir, tirenv_dataset_sou
     while (k < sizeof keys / sizeof keys[0] && strcmp(key, keys[k]) != 0)
         ++k;
     if (k == sizeof keys / sizeof keys[0])
-        return tirenv_csv__fail(r, 1, key, "unknown key; expected format, design, model or "
-                                           "tire");
+        return tirenv_csv__fail(r, 1, key, "unknown key; expected format, design, model, "
+                                           "tire or cases");
     if (*seen & (1u << k))
         return tirenv_csv__fail(r, 1, key, "given twice");
     *seen |= 1u << k;
@@ -74,6 +93,9 @@ static int parse_line(tirenv_csv__reader *r, const char *dir, tirenv_dataset_sou
                                                     "rigid), got '%.60s'", value);
         return store(r, column, key, value, out->model, sizeof out->model);
     }
+    case 4:
+        out->cases_line = r->line;
+        return parse_cases(r, column, value, &out->cases);
     default: {
         char path[sizeof out->tire + 1];
         const int w = value[0] == '/' ? snprintf(path, sizeof path, "%s", value)

@@ -8,8 +8,8 @@
 #include "tirenv/sweep.h"
 
 /* The most cases a sweep takes: a million, a curve file each in one directory (the
- * data-set reader takes as many, dataset.c). 1e8 was accepted, and a run stat-ed every case
- * file (to resume) for minutes before writing the first. */
+ * data-set reader takes as many, src/dataset/dataset_impl.h). 1e8 was accepted, and a run
+ * stat-ed every case file (to resume) for minutes before writing the first. */
 #define TIRENV_SWEEP__MAX_CASES 1000000u
 
 /* Case i's place in the grid. */

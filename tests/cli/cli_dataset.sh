@@ -27,17 +27,17 @@ check "19 train, 5 control, 4 validation cases (F, J, R, AB)" \
      [ "$(grep ",validation," d205/cases.csv | cut -d, -f1 | tr "\n" " ")" = "F J R AB " ]'
 check "no cleat taller than ELLIPS_MAX_STEP, 25 mm" \
     'awk -F, "!/^#/ && NR > 3 && \$6 > 0.025 { bad = 1 } END { exit bad }" d205/cases.csv'
-check "source.txt: design 205-60R15, model cam, tire tire.tir" \
+check "source.txt: design 205-60R15, model cam, tire tire.tir, cases 28" \
     'grep -q "^design = 205-60R15$" d205/source.txt && grep -q "^model = cam$" d205/source.txt &&
-     grep -q "^tire = tire.tir$" d205/source.txt'
+     grep -q "^tire = tire.tir$" d205/source.txt && grep -q "^cases = 28$" d205/source.txt'
 check "tire.tir: the 205/60R15's radius and cam, no tirenv version in it" \
     'grep -q "^UNLOADED_RADIUS *= 0.3135 " d205/tire.tir &&
      grep -q "^ELLIPS_SHIFT *= 0.8328 " d205/tire.tir && ! grep -qi "written by tirenv [0-9]" d205/tire.tir'
 
 run "$bin" dataset list d205
-check "dataset list: SIMULATED by the cam, with its tire, then the 28 cases" \
+check "dataset list: SIMULATED by the cam, with its tire, the count, then the 28 cases" \
     '[ $rc -eq 0 ] && grep -q "^SIMULATED by the cam model" out && grep -q "d205/tire.tir" out &&
-     [ "$(grep -c " 101$" out)" -eq 28 ]'
+     grep -q "^28 cases, as source.txt declares$" out && [ "$(grep -c " 101$" out)" -eq 28 ]'
 run "$bin" dataset list --design 205-60R15 d205
 check "dataset list --design: exit 1 (a data set names its own source)" \
     '[ $rc -eq 1 ] && grep -q "design" err'
@@ -87,6 +87,15 @@ bad_source "model = cam"
 run "$bin" dataset list bad
 check "source.txt without its format line: exit 2" \
     '[ $rc -eq 2 ] && grep -q "format" err'
+bad_source "$(printf 'format = tirenv-dataset 1\nmodel = cam\ncases = 28.0')"
+run "$bin" dataset list bad
+check "source.txt with a count of cases not a whole number: exit 2 at line 3, key cases" \
+    '[ $rc -eq 2 ] && grep -q "bad/source.txt:3:9: cases: " err && grep -q "28.0" err'
+bad_source "$(printf 'format = tirenv-dataset 1\nmodel = cam\ncases = 29')"
+run "$bin" study --data bad -o s
+check "source.txt declaring 29 cases of the 28: exit 2 naming both files, no report" \
+    '[ $rc -eq 2 ] && grep -q "bad/cases.csv:.*28 cases, but bad/source.txt:3 declares" err &&
+     [ ! -e s ]'
 bad_source "$(printf 'format = tirenv-dataset 1\nthe cam made these')"
 run "$bin" dataset list bad
 check "source.txt with a line that is not key = value: exit 2 at line 2" \

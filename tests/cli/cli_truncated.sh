@@ -6,7 +6,8 @@
 # "14.9R28", a manifest row without its curve, which then imports the log instead), which
 # before read as a shorter number or word with exit 0; the rule is docs/formats.md section 1
 # ("Last line"), for OpenCRG text its fixed-width records (section 5.1). The whole file reads
-# (exit 0), and a file cut at a line end is a shorter file of its format (exit 0).
+# (exit 0), and a file cut at a line end is a shorter file of its format (exit 0), except a
+# data set's manifest whose source.txt declares its number of cases (formats.md section 9).
 . "$(dirname "$0")/../lib/clilib.sh"
 
 root=$data/../..
@@ -106,5 +107,24 @@ printf 'format = tirenv-dataset 1\ndesign = 14.9R28\n' >s.txt
 cut_file s.txt 4 ds/source.txt
 refused "source.txt cut inside its last value" ds/source.txt 2 "$ends" - \
     "$bin" dataset list ds
+
+# An embedded data set, whose source.txt declares its 28 cases: its manifest cut at a line end,
+# a whole row short, is refused by every command that reads the data set, with no output.
+cp -R "$root/data/dataset-205-60R15" d205
+run "$bin" dataset list d205
+check "the whole embedded data set lists, with its 28 cases as declared" \
+    '[ $rc -eq 0 ] && grep -q "^28 cases, as source.txt declares" out &&
+     [ "$(grep -c " 101$" out)" -eq 28 ]'
+manifest=$root/data/dataset-205-60R15/cases.csv
+head -n $(($(wc -l <"$manifest") - 1)) "$manifest" >d205/cases.csv
+end=$(($(wc -l <d205/cases.csv) + 1))
+says="27 cases, but d205/source.txt:7 declares cases = 28"
+refused "manifest cut at a line end, one case short: dataset list" d205/cases.csv $end "$says" \
+    - "$bin" dataset list d205
+refused "... fit" d205/cases.csv $end "$says" f.tir "$bin" fit --model cam --data d205 -o f.tir
+refused "... train" d205/cases.csv $end "$says" n.json \
+    "$bin" train --data d205 --seeds 1 -o n.json
+refused "... compare" d205/cases.csv $end "$says" c "$bin" compare --data d205 -o c
+refused "... study" d205/cases.csv $end "$says" s "$bin" study --data d205 -o s
 
 clilib_done

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* The embedded data sets as designed (docs/models.md section 5.8): the paper's design shape in
  * each, the 205/60R15 set within its cam's validated range; a built data set's record of its
- * source (source.txt, tire.tir) and its curves against the simulating model's own. */
+ * source (source.txt, tire.tir, the manifest's count of cases) and its curves against the
+ * simulating model's own. */
 #define _XOPEN_SOURCE 700
 #include <ftw.h>
 #include <math.h>
@@ -185,6 +186,102 @@ static void test_source_read(void **state)
     remove(path);
 }
 
+/* source.txt's `cases` against the manifest. A manifest cut at a line end is whole rows, a
+ * shorter data set that reads: with the count declared it is refused, at the manifest's end,
+ * naming its count and the line of source.txt; the same count, or none, reads. */
+static void test_source_cases(void **state)
+{
+    const tirenv_test_dir *d = *state;
+    char manifest[600], source[600], rows[2000], message[1200];
+    tirenv_test_path(d, "cases.csv", manifest);
+    tirenv_test_path(d, "source.txt", source);
+    /* Three cases on the fixture's curve; the manifest cut after the second row's line end. */
+    const char *curve = TIRENV_TEST_DATA "/dataset_good/curves/J.csv";
+    const int w = snprintf(rows, sizeof rows,
+                           "# three cases\n"
+                           "case,split,contact_length_m,load_N,obstacle_length_m,"
+                           "obstacle_height_m,log,curve\n"
+                           "A,train,0.33,13527.5,0.30,0.05,,%s\n"
+                           "B,control,0.33,13527.5,0.30,0.05,,%s\n"
+                           "C,validation,0.33,13527.5,0.30,0.05,,%s\n",
+                           curve, curve, curve);
+    assert_true(w > 0 && (size_t)w < sizeof rows);
+    const char *third = strstr(rows, "C,validation");
+    assert_non_null(third);
+    char cut[2000];
+    memcpy(cut, rows, (size_t)(third - rows));
+    cut[third - rows] = '\0';
+    tirenv_dataset ds;
+    tirenv_dataset_source src;
+    tirenv_diag diag;
+    /* Read: no source.txt; one without the key; one declaring the manifest's count. */
+    tirenv_test_write_text(manifest, rows);
+    const char *reads[] = {NULL, "format = tirenv-dataset 1\nmodel = ring\n",
+                           "format = tirenv-dataset 1\n# the manifest's rows\ncases = 3\n"};
+    for (size_t k = 0; k < sizeof reads / sizeof reads[0]; ++k) {
+        if (reads[k])
+            tirenv_test_write_text(source, reads[k]);
+        tirenv_diag_clear(&diag);
+        assert_int_equal(tirenv_dataset_read(d->dir, 0.68, &ds, &diag), TIRENV_OK);
+        assert_int_equal(ds.n, 3);
+        assert_string_equal(ds.cases[2].name, "C");
+        tirenv_dataset_free(&ds);
+    }
+    assert_int_equal(tirenv_dataset_source_read(d->dir, &src, &diag), TIRENV_OK);
+    assert_int_equal(src.cases, 3);
+    assert_int_equal(src.cases_line, 3);
+    /* Cut: refused after its last line (4), naming its 2 cases and source.txt:3's 3. */
+    tirenv_test_write_text(manifest, cut);
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_dataset_read(d->dir, 0.68, &ds, &diag), TIRENV_EPARSE);
+    print_message("cut: %s\n", tirenv_diag_format(&diag, message, sizeof message));
+    assert_int_equal(ds.n, 0);
+    assert_null(ds.cases);
+    assert_string_equal(diag.file, manifest);
+    assert_int_equal(diag.line, 5);
+    assert_non_null(strstr(diag.message, "2 cases"));
+    char names[700];
+    snprintf(names, sizeof names, "%s:3 declares cases = 3", source);
+    assert_non_null(strstr(diag.message, names));
+    /* One row more than declared: refused at that row (line 5). */
+    tirenv_test_write_text(manifest, rows);
+    tirenv_test_write_text(source, "format = tirenv-dataset 1\ncases = 2\n");
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_dataset_read(d->dir, 0.68, &ds, &diag), TIRENV_EPARSE);
+    assert_int_equal(ds.n, 0);
+    assert_string_equal(diag.file, manifest);
+    assert_int_equal(diag.line, 5);
+    assert_non_null(strstr(diag.message, "more than 2 cases"));
+    assert_non_null(strstr(diag.message, "source.txt:2 declares cases = 2"));
+    /* Values that are no count of a manifest: refused where source.txt is read, alone or with
+     * the data set, at the key's line and value's column. */
+    const char *bad[] = {"2.5", "-3", "+3", "3 cases", "0x3", "3e0", "0", "1000001",
+                         "99999999999999999999", ""};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        char text[200];
+        snprintf(text, sizeof text, "format = tirenv-dataset 1\ncases = %s\n", bad[k]);
+        tirenv_test_write_text(source, text);
+        tirenv_diag_clear(&diag);
+        assert_int_equal(tirenv_dataset_source_read(d->dir, &src, &diag), TIRENV_EPARSE);
+        assert_int_equal(src.cases, 0);
+        assert_int_equal(diag.line, 2);
+        assert_int_equal(diag.column, 9);
+        assert_string_equal(diag.field, "cases");
+        assert_string_equal(diag.file, source);
+        assert_non_null(strstr(diag.message, "from 1 to 1000000"));
+        tirenv_diag_clear(&diag);
+        assert_int_equal(tirenv_dataset_read(d->dir, 0.68, &ds, &diag), TIRENV_EPARSE);
+        assert_string_equal(diag.file, source);
+        assert_int_equal(ds.n, 0);
+    }
+    /* The largest count a manifest may hold is a count (here not the manifest's). */
+    tirenv_test_write_text(source, "format = tirenv-dataset 1\ncases = 1000000\n");
+    assert_int_equal(tirenv_dataset_source_read(d->dir, &src, &diag), TIRENV_OK);
+    assert_int_equal(src.cases, 1000000);
+    remove(source);
+    remove(manifest);
+}
+
 /* ---- a built data set -------------------------------------------------------------------- */
 
 static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
@@ -214,6 +311,7 @@ static void test_build_205(void **state)
     assert_int_equal(tirenv_dataset_source_read(dir, &src, &diag), TIRENV_OK);
     assert_string_equal(src.design, "205-60R15");
     assert_string_equal(src.model, "cam");
+    assert_int_equal(src.cases, d->n_cases);  /* what the manifest holds, checked on reading */
     tirenv_tire back = tirenv_tire_default();
     assert_int_equal(tirenv_tir_read(src.tire, &back, &diag), TIRENV_OK);
     assert_memory_equal(&back.springs, &t.springs, sizeof t.springs);
@@ -258,6 +356,8 @@ int main(void)
         cmocka_unit_test(test_design_shape),
         cmocka_unit_test(test_design_205_in_range),
         cmocka_unit_test_setup_teardown(test_source_read, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown),
+        cmocka_unit_test_setup_teardown(test_source_cases, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown),
         cmocka_unit_test(test_build_205),
     };

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* libFuzzer harness: a data set's source.txt (tirenv_dataset_source_read) on arbitrary bytes;
- * what it accepts must hold terminated strings within their fields, and a model it names must
- * be a physical model type (the reader's promise). */
+ * what it accepts must hold terminated strings within their fields, a model it names must be
+ * a physical model type, and a count of cases must be one a manifest can hold, given at a line
+ * (the reader's promises). */
 #include "fuzz_input.h"
 #include "tirenv/dataset.h"
 #include "tirenv/model.h"
@@ -21,6 +22,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (!src.present || !memchr(src.design, '\0', sizeof src.design) ||
             !memchr(src.model, '\0', sizeof src.model) ||
             !memchr(src.tire, '\0', sizeof src.tire))
+            abort();
+        if (src.cases > 1000000 || !src.cases != !src.cases_line)
             abort();
         if (src.model[0]) {
             const tirenv_model_type *t = tirenv_model_type_find(src.model);
