@@ -46,7 +46,8 @@ def metadata(version):
         readme = f.read()
     return (f"Metadata-Version: 2.1\nName: tirenv\nVersion: {version}\n"
             "Summary: Quasi-static tire enveloping models, the tractor ride and ISO 2631-1 "
-            "comfort, over libtirenv\nRequires-Python: >=3.9\nRequires-Dist: cffi>=1.15\n"
+            "comfort, over libtirenv\nLicense: Apache-2.0\nLicense-File: LICENSE\n"
+            "License-File: NOTICE\nRequires-Python: >=3.9\nRequires-Dist: cffi>=1.15\n"
             "Requires-Dist: numpy>=1.21\nDescription-Content-Type: text/markdown\n\n"
             + readme)
 
@@ -80,6 +81,11 @@ def build(out, include_dirs, library, version, work):
         with open(os.path.join(pkg, name), "rb") as f:
             files[f"tirenv/{name}"] = f.read()
     files[f"{info}/METADATA"] = metadata(version).encode()
+    # The licence travels with the library it covers, where setuptools puts it (its
+    # License-File lines above); python/LICENSE and NOTICE are the repository's copies.
+    for name in ("LICENSE", "NOTICE"):
+        with open(os.path.join(HERE, name), "rb") as f:
+            files[f"{info}/{name}"] = f.read()
     files[f"{info}/WHEEL"] = (f"Wheel-Version: 1.0\nGenerator: tirenv make_wheel.py\n"
                               f"Root-Is-Purelib: false\nTag: {tag}\n").encode()
     files[f"{info}/top_level.txt"] = b"tirenv\n"

@@ -26,6 +26,9 @@ check "it carries libtirenv under its soname beside the extension" \
     sh -c "ls '$tmp'/x/tirenv/libtirenv.so.* && ls '$tmp'/x/tirenv/_native.cpython-3*-x86_64-linux-gnu.so"
 check "the extension's RUNPATH is \$ORIGIN and nothing else" \
     sh -c "readelf -d '$tmp'/x/tirenv/_native.*.so | grep -E 'RPATH|RUNPATH' | grep -qxF ' 0x000000000000001d (RUNPATH)            Library runpath: [\$ORIGIN]'"
+check "it carries the repository's LICENSE and NOTICE in its .dist-info" \
+    sh -c "cmp '$tmp'/x/tirenv-*.dist-info/LICENSE '$(dirname "$0")/../LICENSE' &&
+           cmp '$tmp'/x/tirenv-*.dist-info/NOTICE '$(dirname "$0")/../NOTICE'"
 venv="$tmp/another place/venv"
 tap_venv "a fresh venv: $python -m venv --system-site-packages" "$python" "$venv"
 check "pip install --no-index the wheel, with an empty environment" \
