@@ -5,8 +5,9 @@
 #include "cli/cli.h"
 
 /* The contact lengths of the paper's working regimes (Table 1 and Table 3), m: the table of
- * a tire file without a nominal load (the default tire's). A file with FNOMIN is tabled over
- * its own load range, tirenv_nominal_load_fractions of FNOMIN. */
+ * a tire file without a nominal load, or whose ring carries it at a contact length within
+ * them (the default tire's; cli_nominal_load). Any other file with FNOMIN is tabled over its
+ * own load range, tirenv_nominal_load_fractions of FNOMIN. */
 static const double regimes[] = {0.28, 0.33, 0.38};
 
 static void usage(FILE *fp)
@@ -17,9 +18,10 @@ static void usage(FILE *fp)
           "The tire on flat ground: load, centre height, deflection, contact length and\n"
           "vertical stiffness. Without --load or --contact-length, a table of the tire's own\n"
           "load range, 0.5 to 1.5 times its nominal load [VERTICAL] FNOMIN, or, for a file\n"
-          "without FNOMIN (the default tire's), the paper's working regimes, contact lengths\n"
-          "0.28, 0.33 and 0.38 m. With --model ring also\n"
-          "the largest tread compression (and a column tread_max_m in the CSV).\n"
+          "without FNOMIN or whose FNOMIN the tire carries at a contact length within the\n"
+          "paper's working regimes (the default tire's), those regimes, contact lengths\n"
+          "0.28, 0.33 and 0.38 m. With --model ring also the largest tread compression\n"
+          "(and a column tread_max_m in the CSV).\n"
           "\n"
           "options:\n",
           fp);
