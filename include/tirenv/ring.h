@@ -42,6 +42,11 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
  * positive tread pressure, edges interpolated between nodes. */
 double tirenv_ring_patch_length(const tirenv_ring *r);
 
+/* The grid the model "ring" scans for the end of its valid range (docs/models.md section
+ * 5.4, where its flat-ground patch is longest): centre heights R0 - k R0 / this from R0
+ * down. Public so that a check on the same grid (tirenv_tir_derive's) cannot drift from it. */
+enum { TIRENV_RING_RANGE_STEPS = 32 };
+
 /* Belt inward displacement w_j (m, negative where it bulges out) and ground force per node
  * f_j (N: the tread's plus the belt's reaction) of the last evaluation, into arrays of
  * tirenv_ring_size() entries (may be NULL). With the shear-coupled tread (TREAD_SHEAR > 0,

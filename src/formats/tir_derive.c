@@ -433,9 +433,8 @@ static int ring_flats(const tirenv_tire *t, const tirenv_profile *flat, double f
  * centre no lower than where its flat-ground patch is longest) down to the deflection rho (m),
  * the largest derived on it; else TIRENV_ERANGE. ring_at_heights and ring_flats evaluate the
  * ring without the model's range, so a derived ring is kept only where this holds. The model
- * finds its range's end on a grid of RANGE_DZ*R0 steps from R0 down (ring_model.c's
- * RANGE_STEPS, private to the model: kept equal by hand), stopping two steps past the longest
- * patch, then between that one's neighbours; a patch
+ * finds its range's end on a grid of R0 / TIRENV_RING_RANGE_STEPS steps from R0 down,
+ * stopping two steps past the longest patch, then between that one's neighbours; a patch
  * that grows at every step of that grid down to two steps past rho puts the end below rho.
  * That is checked here on one workspace, down to rho only (the model's scan goes on to the
  * end, some 45 evaluations as deep as the patch grows: 0.3 s of CPU on the 430/50R38's ring
@@ -444,8 +443,7 @@ static int ring_flats(const tirenv_tire *t, const tirenv_profile *flat, double f
 static int within_range(const tirenv_tire *t, const tirenv_profile *flat, double rho,
                         tirenv_diag *diag)
 {
-    static const double RANGE_DZ = 1.0 / 32;  /* ring_model.c's RANGE_STEPS */
-    const double R0 = t->springs.R0, dz = RANGE_DZ * R0;
+    const double R0 = t->springs.R0, dz = R0 / TIRENV_RING_RANGE_STEPS;
     const size_t K = (size_t)ceil(rho / dz) + 2;
     tirenv_ring *ring = tirenv_ring_alloc(R0, &t->ring);
     if (!ring)

@@ -42,10 +42,9 @@ static int ring_contact_length(void *elem, const tirenv_profile *flat, double z,
  * shrinks (the default tire's from about 0.83 m at 255 kN down to 0.53 m at 448 kN, where the
  * centre meets the ground). A patch that shrinks under more load is no tire: the valid range
  * ends where the flat-ground patch is longest (docs/models.md section 5.4). It is found on a
- * grid of RANGE_STEPS heights from R0 down, stopping two steps past the longest, then by
- * golden sections between that one's neighbours to RANGE_TOL*R0; about 45 force evaluations,
- * once per model. A force that fails on the way ends the scan: the range ends above it. */
-enum { RANGE_STEPS = 32 };
+ * grid of TIRENV_RING_RANGE_STEPS heights from R0 down, stopping two steps past the longest,
+ * then by golden sections between that one's neighbours to RANGE_TOL*R0; about 45 force
+ * evaluations, once per model. A force that fails on the way ends the scan: the range ends above it. */
 static const double RANGE_TOL = 1e-6;
 
 static int patch_at(void *elem, const tirenv_profile *flat, double z, double *l,
@@ -57,13 +56,13 @@ static int patch_at(void *elem, const tirenv_profile *flat, double z, double *l,
 static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char *why,
                          size_t n, tirenv_diag *diag)
 {
-    const double R0 = tirenv_ring_free_radius(elem), dz = R0 / RANGE_STEPS;
+    const double R0 = tirenv_ring_free_radius(elem), dz = R0 / TIRENV_RING_RANGE_STEPS;
     double best_l = 0;
     size_t best = 0, k;
     tirenv_diag scan; /* why the scan stopped, said if no patch came before */
     int scan_status = 0;
     tirenv_diag_clear(&scan);
-    for (k = 1; k <= RANGE_STEPS; ++k) {
+    for (k = 1; k <= TIRENV_RING_RANGE_STEPS; ++k) {
         double l;
         if ((scan_status = patch_at(elem, flat, R0 - (double)k * dz, &l, &scan)))
             break;
@@ -84,7 +83,7 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
     if (best == 0)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                             "no flat-ground patch found below the free radius %g m", R0);
-    if (best == last && last == RANGE_STEPS)
+    if (best == last && last == TIRENV_RING_RANGE_STEPS)
         return 0;  /* longest with the centre at the ground: the bracket is the limit */
     /* Golden sections on [a, b] around the longest patch, a below it. */
     const double g = 0.5 * (sqrt(5.0) - 1);
