@@ -231,7 +231,7 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
         const double dt = aD * sT[q];
         const double c_lo = sD[q] < 0 ? sA[q] + sD[q] : sA[q]; /* the least chord at z_r */
         /* z within 1 % of every proven vertex's depth, the chord above zero */
-        const int holds = aD_reach <= sZ[q] && c_lo - tol_r + mu - tol >= fabs(D) * dt;
+        const int holds = (aD_reach <= sZ[q]) & (c_lo - tol_r + mu - tol >= fabs(D) * dt);
         double *const Qq = Q + 2 * q;
         Qq[0] = holds ? dt + 2 * t_snap : INFINITY;
         Qq[1] = Base + dt * Kq + tol4_r - Dp * sZ[q];
@@ -346,14 +346,20 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
                                       .dh_dz = -dz / rho, .id = (long)j};
 }
 
-/* scan_vertex over the vertices todo[0 .. n - 1], or j0 .. j0 + n - 1 if todo is NULL. */
-SCAN_LOOP void scan_run(const scan_ctx *C, scan_state *sc, const size_t todo[], size_t j0,
-                        size_t n)
+/* scan_vertex over the vertices todo[0 .. n - 1], or j0 .. j0 + n - 1 if todo is NULL.
+ * With todo, each walk starts from the sector the first scan left the vertex in (seen[k].i
+ * of vertex s0 + k): its sector at this height is that one or a neighbour, where the last
+ * vertex listed may lie sectors away. The walk ends in the same sector from either start
+ * (the one between the rays the vertex lies between), with the same numbers. */
+SCAN_LOOP void scan_run(const scan_ctx *C, scan_state *sc, const size_t todo[],
+                        const tirenv_springs__cc_seen seen[], size_t s0, size_t j0, size_t n)
 {
     scan_state S = *sc;
     if (todo)
-        for (size_t q = 0; q < n; ++q)
+        for (size_t q = 0; q < n; ++q) {
+            S.i = seen[todo[q] - s0].i;
             scan_vertex(C, &S, todo[q]);
+        }
     else
         for (size_t q = 0; q < n; ++q)
             scan_vertex(C, &S, j0 + q);
@@ -383,6 +389,7 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, si
     double slack_tau = fabs(P_r - P_l) * C->tau_dev;
     for (size_t q = 0; q < n; ++q) {
         seen[q].m_t = 0; /* no proof, unless made now */
+        seen[q].i = i;    /* where a later scan's walk starts (scan_run) */
         const size_t j = j0 + q;
         const double dx = X[j] - x, dz = z - Z[j];
         if (!(dz > 0))
@@ -415,6 +422,7 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, si
             s_i = dx * ct[i] - dz * st[i];
             u_known = 0;
         }
+        seen[q].i = i;
         if (!(s_i > 0)) { /* behind the first element, or on ray i: its row alone */
             if (s_i < 0)
                 continue;
@@ -554,7 +562,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     if (prove)
         S.out = scan_prove(&C, &S.i, j0, n_todo, seen, S.out, &seen_lo, &seen_hi);
     else
-        scan_run(&C, &S, reuse ? todo : NULL, j0, n_todo);
+        scan_run(&C, &S, reuse ? todo : NULL, seen, c->seen_j0, j0, n_todo);
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
