@@ -346,23 +346,28 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
                                       .dh_dz = -dz / rho, .id = (long)j};
 }
 
-/* scan_vertex over the vertices todo[0 .. n - 1], or j0 .. j0 + n - 1 if todo is NULL.
- * With todo, each walk starts from the sector the first scan left the vertex in (seen[k].i
- * of vertex s0 + k): its sector at this height is that one or a neighbour, where the last
- * vertex listed may lie sectors away. The walk ends in the same sector from either start
- * (the one between the rays the vertex lies between), with the same numbers. */
-SCAN_LOOP void scan_run(const scan_ctx *C, scan_state *sc, const size_t todo[],
-                        const tirenv_springs__cc_seen seen[], size_t s0, size_t j0, size_t n)
+/* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the first scan
+ * left the vertex in (seen[k].i of vertex s0 + k): its sector at this height is that one or
+ * a neighbour, where the last vertex listed may lie sectors away. The walk ends in the same
+ * sector from either start (the one between the rays the vertex lies between), with the
+ * same numbers. */
+SCAN_LOOP void scan_list(const scan_ctx *C, scan_state *sc, const size_t todo[],
+                         const tirenv_springs__cc_seen seen[], size_t s0, size_t n)
 {
     scan_state S = *sc;
-    if (todo)
-        for (size_t q = 0; q < n; ++q) {
-            S.i = seen[todo[q] - s0].i;
-            scan_vertex(C, &S, todo[q]);
-        }
-    else
-        for (size_t q = 0; q < n; ++q)
-            scan_vertex(C, &S, j0 + q);
+    for (size_t q = 0; q < n; ++q) {
+        S.i = seen[todo[q] - s0].i;
+        scan_vertex(C, &S, todo[q]);
+    }
+    *sc = S;
+}
+
+/* scan_vertex over the vertices j0 .. j_end - 1. */
+SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_end)
+{
+    scan_state S = *sc;
+    for (size_t j = j0; j < j_end; ++j)
+        scan_vertex(C, &S, j);
     *sc = S;
 }
 
@@ -561,8 +566,10 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     size_t seen_lo = N, seen_hi = 0;
     if (prove)
         S.out = scan_prove(&C, &S.i, j0, n_todo, seen, S.out, &seen_lo, &seen_hi);
+    else if (reuse)
+        scan_list(&C, &S, todo, seen, c->seen_j0, n_todo);
     else
-        scan_run(&C, &S, reuse ? todo : NULL, seen, c->seen_j0, j0, n_todo);
+        scan_all(&C, &S, j0, j_end);
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
