@@ -330,12 +330,15 @@ typedef struct {
      * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
      * per sector (6 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
      * bounds on a proven vertex's |dt/dz| and on its depth, and room for what a later height
-     * needs of them (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
-     * vertices the last scan skipped by the proofs (what the tests count) */
+     * needs of them (springs_rows.c); per vertex the scan's list of vertices to compute
+     * (cap_seen); the vertices the last scan skipped by the proofs (what the tests count);
+     * scan_plain, set only by the tests: no proofs, every vertex computed by the plain scan
+     * (what the proving loop and the proofs must give bit for bit) */
     tirenv_springs__cc_seen *seen;
     unsigned long long seen_serial;
     double seen_x, seen_z;
     size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped;
+    int scan_plain;
     double *seen_sec;
     size_t *seen_todo;
     unsigned char *in_w;   /* per row: in the working set */

@@ -533,7 +533,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * a few sectors' work an evaluation whatever the vertices, and a vertex's proof a
      * third of its row's test; elsewhere the scan runs as it did (the same rows either
      * way). */
-    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1);
+    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1) && !c->scan_plain;
     const int reuse = same_x && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
     if (!same_x)
         c->seen_serial = 0; /* no proofs at this x, unless made now */
