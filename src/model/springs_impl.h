@@ -328,7 +328,7 @@ typedef struct {
     /* The vertex scan's proofs at the last x, seen_x, on the profile of serial seen_serial,
      * made at the first height seen_z it ran at there, one for each vertex seen_j0 ..
      * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
-     * per sector (6 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
+     * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
      * bounds on a proven vertex's |dt/dz| and on its depth, and room for what a later height
      * needs of them (springs_rows.c); per vertex the scan's list of vertices to compute
      * (cap_seen); the vertices the last scan skipped by the proofs (what the tests count);

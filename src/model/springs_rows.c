@@ -143,7 +143,7 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
  * elements. */
 static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 {
-    if (!c->seen_sec && !(c->seen_sec = malloc(6 * N * sizeof *c->seen_sec)))
+    if (!c->seen_sec && !(c->seen_sec = malloc(7 * N * sizeof *c->seen_sec)))
         return TIRENV_ENOMEM;
     if (n <= c->cap_seen)
         return TIRENV_OK;
@@ -209,10 +209,11 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
      * else a proof needs: the chord is at least the sector's least at z_r, and the depth
      * at least the sector's least, sZ (vertex_rows). What a vertex's margin must cover, less
      * the part of h's fall that the sector's least depth gives, and dt with 2 t_snap, go
-     * side by side at Q + 2 q; dt is infinite where the sector's own tests fail. */
+     * to Qm[q] and Qt[q]; Qt is infinite where the sector's own tests fail. The penetrations
+     * at z are taken first (Pz), so that the sectors' loop has no branch and vectorises. */
     const double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
     const double *const sZ = sT + N;
-    double *const Q = c->seen_sec + 4 * N;
+    double *const Qt = c->seen_sec + 4 * N, *const Qm = Qt + N, *const Pz = Qm + N;
     /* the allowances of the proofs' margin and chord, taken off here (scan_prove) */
     const double tol_r = seen_tol(p, T->R0, c->seen_z), tol4_r = 4 * tol_r;
     /* h rises by at most -Delta + tol if z falls, -Delta dz_r / R0 + tol if it rises */
@@ -220,9 +221,11 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
     const double Dp = Delta > 0 ? Delta * ((1 - 1e-12) / T->R0) : 0;
     /* |Delta| <= seen_reach dz_r wherever aD / seen_reach (rounded up) <= dz_r */
     const double aD_reach = aD / seen_reach * (1 + 1e-12);
-    double Pl = pen(lo, a, b, d);
-    for (size_t q = lo; q <= c->seen_hi; ++q) {
-        const double Pr = pen(q + 1, a, b, d);
+    const size_t hi = c->seen_hi;
+    for (size_t q = lo; q <= hi + 1; ++q)
+        Pz[q] = pen(q, a, b, d);
+    for (size_t q = lo; q <= hi; ++q) {
+        const double Pl = Pz[q], Pr = Pz[q + 1];
         const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
         const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
         const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
@@ -232,10 +235,8 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
         const double c_lo = sD[q] < 0 ? sA[q] + sD[q] : sA[q]; /* the least chord at z_r */
         /* z within 1 % of every proven vertex's depth, the chord above zero */
         const int holds = (aD_reach <= sZ[q]) & (c_lo - tol_r + mu - tol >= fabs(D) * dt);
-        double *const Qq = Q + 2 * q;
-        Qq[0] = holds ? dt + 2 * t_snap : INFINITY;
-        Qq[1] = Base + dt * Kq + tol4_r - Dp * sZ[q];
-        Pl = Pr;
+        Qt[q] = holds ? dt + 2 * t_snap : INFINITY;
+        Qm[q] = Base + dt * Kq + tol4_r - Dp * sZ[q];
     }
     /* A proof holds if its sector's tests hold and t stays more than 2 t_snap inside the
      * sector, and the margin covers h's rise, the chord's fall and t's move: both tested,
@@ -245,10 +246,8 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
     for (size_t k = j0 - s0; k < j_end - s0; ++k) {
         const tirenv_springs__cc_seen *const e = c->seen + k;
         int ok = 0;
-        if (e->m_t > 0) { /* a proof (the other fields are set only then) */
-            const double *const Qq = Q + 2 * e->i;
-            ok = (Qq[0] < e->m_t) & (e->margin >= Qq[1]);
-        }
+        if (e->m_t > 0) /* a proof (the other fields are set only then) */
+            ok = (Qt[e->i] < e->m_t) & (e->margin >= Qm[e->i]);
         todo[n] = s0 + k;
         n += !ok;
     }
