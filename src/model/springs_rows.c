@@ -494,7 +494,11 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, si
  * test's threshold, is then at least the threshold at z_r less Lambda (mu times the bow,
  * which lies between 1 and B = 1 + ab_lo / 4) and less dt K (K = |D| B + ab_lo times the
  * largest chord). Where the margin at z_r (threshold less h) covers h's rise, Lambda and
- * dt K, the test drops the vertex at z. Every bound carries an allowance (tol) far above the
+ * dt K, the test drops the vertex at z. What a proof keeps of its vertex is the margin,
+ * min(t_r, 1 - t_r) and the sector: the chord at t_r is at least the sector's least chord
+ * at z_r, and dz_r at least rho_lo times the smaller cosine of the sector's rays (sZ), so
+ * the tests on the chord and the depth, and the depth's share of h's fall, are the
+ * sector's. Every bound carries an allowance (tol) far above the
  * rounding of what it stands for, so the rows, and their order, are the full scan's bit for
  * bit; a vertex not proven is computed as before. On a road at 1 mm nearly every vertex
  * under the patch is dropped by the bow's margin, and the evaluations after the first at an
