@@ -393,7 +393,7 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, si
     double slack_tau = fabs(P_r - P_l) * C->tau_dev;
     for (size_t q = 0; q < n; ++q) {
         seen[q].m_t = 0; /* no proof, unless made now */
-        seen[q].i = i;    /* where a later scan's walk starts (scan_run) */
+        seen[q].i = i;    /* where a later scan's walk starts (scan_list) */
         const size_t j = j0 + q;
         const double dx = X[j] - x, dz = z - Z[j];
         if (!(dz > 0))
