@@ -190,9 +190,9 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
  * j0 .. j_end - 1 (within those proven) with no proof or one that does not hold at z,
  * ascending, into todo; returns their number, *skipped the others'. */
 SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                        const tirenv_profile *p, double z, size_t a, size_t b,
-                        const double d[], size_t j0, size_t j_end, size_t todo[],
-                        size_t *skipped)
+                           const tirenv_profile *p, double z, size_t a, size_t b,
+                           const double d[], size_t j0, size_t j_end, size_t todo[],
+                           size_t *skipped)
 {
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const double tol = seen_tol(p, T->R0, z), B = 1 + 0.25 * ab_lo; /* the bow's largest */
@@ -210,7 +210,7 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
      * at least the sector's least, sZ (vertex_rows). What a vertex's margin must cover, less
      * the part of h's fall that the sector's least depth gives, and dt with 2 t_snap, go
      * to Qm[q] and Qt[q]; Qt is infinite where the sector's own tests fail. The penetrations
-     * at z are taken first (Pz), so that the sectors' loop has no branch and vectorises. */
+     * at z are taken first (Pz), so that the sectors' loop does not branch on the rays. */
     const double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
     const double *const sZ = sT + N;
     double *const Qt = c->seen_sec + 4 * N, *const Qm = Qt + N, *const Pz = Qm + N;
@@ -375,15 +375,16 @@ SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_e
  * give the same rows and tests, but the sector's penetrations and slack follow the walk
  * step by step (they are the sector's alone), where scan_vertex takes them again behind a
  * branch at each change of sector, and the scan's state stays in locals: on a road at 1 mm
- * this loop is the scan's cost. The proofs keep the raw margin, chord and min(t, 1 - t);
+ * this loop is the scan's cost. The proofs keep the raw margin, min(t, 1 - t) and the sector;
  * seen_todo takes the allowances and t_snap off once a sector (m_t 0: no proof). The
  * vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1]; the walk starts at sector
  * *i_at and leaves it there; the rows go to out, the new end returned; [*lo, *hi]: the
  * sectors the walk visited (one step at a time, so every proof's sector is among them),
  * within [0, N - 2]. */
-SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, size_t j0, size_t n,
-                                          tirenv_springs__cc_seen seen[],
-                                          tirenv_springs__cc_row *out, size_t *lo, size_t *hi)
+SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, size_t j0,
+                                             size_t n, tirenv_springs__cc_seen seen[],
+                                             tirenv_springs__cc_row *out, size_t *lo,
+                                             size_t *hi)
 {
     const double *const X = C->X, *const Z = C->Z, *const st = C->st, *const ct = C->ct;
     const double x = C->x, z = C->z, R0 = C->R0, R0sq = C->R0sq, ab_lo = C->ab_lo;
@@ -393,7 +394,7 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, si
     double slack_tau = fabs(P_r - P_l) * C->tau_dev;
     for (size_t q = 0; q < n; ++q) {
         seen[q].m_t = 0; /* no proof, unless made now */
-        seen[q].i = i;    /* where a later scan's walk starts (scan_list) */
+        seen[q].i = i; /* where a later scan's walk starts (scan_list) */
         const size_t j = j0 + q;
         const double dx = X[j] - x, dz = z - Z[j];
         if (!(dz > 0))

@@ -7,8 +7,9 @@
  * first scan's proofs at an x (a vertex dropped there is skipped at a later height where a
  * bound proves it dropped again), and its first scan there by the proving loop, must give the
  * rows, in their order, and the laid-out rows of a fresh workspace that computes every vertex
- * by the plain scan (scan_plain: no proving loop, no proofs). The rays: a fan updated ray by ray from its
- * memos (the rays whose memos fail walked again alone) must give the rho of a fresh fan. */
+ * by the plain scan (scan_plain: no proving loop, no proofs). The rays: a fan updated ray by
+ * ray from its memos (the rays whose memos fail walked again alone) must give the rho of a
+ * fresh fan. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
