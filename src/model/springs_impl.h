@@ -303,12 +303,11 @@ typedef struct {
  * that again at another height of the same x without computing the row (docs/models.md
  * section 4.8, Cost). */
 typedef struct {
-    double margin;  /* the chord times the bow less h at z_r, less an allowance, m */
-    double chord;   /* the chord at the vertex's t at z_r, m */
-    double dz;      /* the vertex's depth dz_r below the centre at z_r, m: h falls at least
-                     * dz_r / R0 as fast as z rises, and z may move by 1 % of it */
-    double m_t;     /* how far t may move: min(t, 1 - t) - 2 t_snap at z_r; <= 0: nothing
-                     * proven (the bound on |dt/dz| is the sector's, springs_rows.c) */
+    double margin;  /* the chord times the bow less h at z_r, m (its allowance is taken off
+                     * where it is checked) */
+    double m_t;     /* how far t may move: min(t, 1 - t) at z_r; 0: nothing proven (the
+                     * bound on |dt/dz|, the least chord and the least depth are the
+                     * sector's, springs_rows.c) */
     size_t i;       /* the sector */
 } tirenv_springs__cc_seen;
 
@@ -329,14 +328,17 @@ typedef struct {
     /* The vertex scan's proofs at the last x, seen_x, on the profile of serial seen_serial,
      * made at the first height seen_z it ran at there, one for each vertex seen_j0 ..
      * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
-     * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z
-     * and a bound on a proven vertex's |dt/dz|, and room for what a later height needs of
-     * them (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
-     * vertices the last scan skipped by the proofs (what the tests count) */
+     * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
+     * bounds on a proven vertex's |dt/dz| and on its depth, and room for what a later height
+     * needs of them (springs_rows.c); per vertex the scan's list of vertices to compute
+     * (cap_seen); the vertices the last scan skipped by the proofs (what the tests count);
+     * scan_plain, set only by the tests: no proofs, every vertex computed by the plain scan
+     * (what the proving loop and the proofs must give bit for bit) */
     tirenv_springs__cc_seen *seen;
     unsigned long long seen_serial;
     double seen_x, seen_z;
     size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped;
+    int scan_plain;
     double *seen_sec;
     size_t *seen_todo;
     unsigned char *in_w;   /* per row: in the working set */

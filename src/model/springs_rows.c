@@ -160,6 +160,15 @@ static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
     return TIRENV_OK;
 }
 
+/* The scan's loops are each compiled on their own: GCC otherwise inlines them all into
+ * vertex_rows, whose registers then go where it sees fit, and a change to one loop moved the
+ * others' time by a few per cent. */
+#if defined(__GNUC__)
+#define SCAN_LOOP static __attribute__((noinline))
+#else
+#define SCAN_LOOP static
+#endif
+
 /* How far the centre may move from the height of a vertex's proof, as a fraction of the
  * vertex's depth dz_r below it: within it rho stays above (1 - seen_reach) rho_r. */
 static const double seen_reach = 0.01;
@@ -180,10 +189,10 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
 /* At a later height z of the x the proofs were made at (vertex_rows' comment): the vertices
  * j0 .. j_end - 1 (within those proven) with no proof or one that does not hold at z,
  * ascending, into todo; returns their number, *skipped the others'. */
-static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                        const tirenv_profile *p, double z, size_t a, size_t b,
-                        const double d[], size_t j0, size_t j_end, size_t todo[],
-                        size_t *skipped)
+SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                           const tirenv_profile *p, double z, size_t a, size_t b,
+                           const double d[], size_t j0, size_t j_end, size_t todo[],
+                           size_t *skipped)
 {
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const double tol = seen_tol(p, T->R0, z), B = 1 + 0.25 * ab_lo; /* the bow's largest */
@@ -196,44 +205,51 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * ab_lo times the chord: Kq); and |P_r - P_l| at z. A sector's P_r is the next one's
      * P_l. The bound on t's move, dt = aD sT (sT the sector's bound on |dt/dz|), is the
      * same for every vertex of the sector, and so are the chord's fall dt |P_r - P_l| and
-     * what the margin must cover, Base + dt Kq: each is computed once a sector, side by
-     * side at Q + 4 q (dt, mu - tol, dt |P_r - P_l|, Base + dt Kq). */
+     * what the margin must cover, Base + dt Kq: each is computed once a sector. So is all
+     * else a proof needs: the chord is at least the sector's least at z_r, and the depth
+     * at least the sector's least, sZ (vertex_rows). What a vertex's margin must cover, less
+     * the part of h's fall that the sector's least depth gives, and dt with 2 t_snap, go
+     * to Qm[q] and Qt[q]; Qt is infinite where the sector's own tests fail. The penetrations
+     * at z are taken first (Pz), so that the sectors' loop does not branch on the rays. */
     const double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
-    double *const Q = c->seen_sec + 3 * N;
+    const double *const sZ = sT + N;
+    double *const Qt = c->seen_sec + 4 * N, *const Qm = Qt + N, *const Pz = Qm + N;
+    /* the allowances of the proofs' margin and chord, taken off here (scan_prove) */
+    const double tol_r = seen_tol(p, T->R0, c->seen_z), tol4_r = 4 * tol_r;
     /* h rises by at most -Delta + tol if z falls, -Delta dz_r / R0 + tol if it rises */
     const double h_rise = Delta > 0 ? tol : -Delta + tol;
     const double Dp = Delta > 0 ? Delta * ((1 - 1e-12) / T->R0) : 0;
     /* |Delta| <= seen_reach dz_r wherever aD / seen_reach (rounded up) <= dz_r */
     const double aD_reach = aD / seen_reach * (1 + 1e-12);
-    double Pl = pen(lo, a, b, d);
-    for (size_t q = lo; q <= c->seen_hi; ++q) {
-        const double Pr = pen(q + 1, a, b, d);
+    const size_t hi = c->seen_hi;
+    for (size_t q = lo; q <= hi + 1; ++q)
+        Pz[q] = pen(q, a, b, d);
+    for (size_t q = lo; q <= hi; ++q) {
+        const double Pl = Pz[q], Pr = Pz[q + 1];
         const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
         const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
         const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
         const double Base = h_rise + (mu < 0 ? -mu * B : -mu);
         const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
         const double dt = aD * sT[q];
-        double *const Qq = Q + 4 * q;
-        Qq[0] = dt;
-        Qq[1] = mu - tol;
-        Qq[2] = fabs(D) * dt;
-        Qq[3] = Base + dt * Kq;
-        Pl = Pr;
+        const double c_lo = sD[q] < 0 ? sA[q] + sD[q] : sA[q]; /* the least chord at z_r */
+        /* z within 1 % of every proven vertex's depth, the chord above zero */
+        const int holds = (aD_reach <= sZ[q]) & (c_lo - tol_r + mu - tol >= fabs(D) * dt);
+        Qt[q] = holds ? dt + 2 * t_snap : INFINITY;
+        Qm[q] = Base + dt * Kq + tol4_r - Dp * sZ[q];
     }
-    /* A proof holds if t moves less than m_t, z within 1 % of dz_r, the chord stays above
-     * zero and the margin covers h's rise, the chord's fall and t's move. */
+    /* A proof holds if its sector's tests hold and t stays more than 2 t_snap inside the
+     * sector, and the margin covers h's rise, the chord's fall and t's move: both tested,
+     * and the vertex listed, without a branch on the outcome (it follows the road, not a
+     * pattern). */
     size_t n = 0;
     for (size_t k = j0 - s0; k < j_end - s0; ++k) {
         const tirenv_springs__cc_seen *const e = c->seen + k;
         int ok = 0;
-        if (e->m_t > 0) { /* a proof (the other fields are set only then) */
-            const double *const Qq = Q + 4 * e->i;
-            ok = Qq[0] < e->m_t && aD_reach <= e->dz && e->chord + Qq[1] >= Qq[2] &&
-                 e->margin + Dp * e->dz >= Qq[3];
-        }
-        if (!ok)
-            todo[n++] = s0 + k;
+        if (e->m_t > 0) /* a proof (the other fields are set only then) */
+            ok = (Qt[e->i] < e->m_t) & (e->margin >= Qm[e->i]);
+        todo[n] = s0 + k;
+        n += !ok;
     }
     *skipped = j_end - j0 - n;
     return n;
@@ -243,22 +259,20 @@ static size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc_ti
  * penetrations d over [a, b], the proofs' allowances (vertex_rows). */
 typedef struct {
     const double *X, *Z, *st, *ct, *d;
-    double x, z, R0, R0sq, ab_lo, tau_dev, tol, tol4;
+    double x, z, R0, R0sq, ab_lo, tau_dev;
     size_t N, a, b;
 } scan_ctx;
 
 /* Along the scan: the last vertex's sector (where the next one's walk starts), sector ci's
- * penetrations and slack, the sectors lo .. hi whose chords were taken, the next row. */
+ * penetrations and slack, the next row. */
 typedef struct {
-    size_t i, ci, lo, hi;
+    size_t i, ci;
     double P_l, P_r, slack_tau;
     tirenv_springs__cc_row *out;
 } scan_state;
 
-/* Vertex j's row at (x, z), if it has one, at sc->out; where it is dropped between two
- * elements and proof is not NULL, the proof (vertex_rows' comment) in *proof; sc along. */
-static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
-                               tirenv_springs__cc_seen *proof)
+/* Vertex j's row at (x, z), if it has one, at sc->out; sc along. */
+static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
 {
     const double dx = C->X[j] - C->x, dz = C->z - C->Z[j];
     if (!(dz > 0))
@@ -312,23 +326,14 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
              * penetrations, which the elements' rows only raise): never binds. */
             if (sc->ci != i) {
                 sc->ci = i;
-                if (proof) { /* the sectors the proofs may be in: each passes here */
-                    sc->lo = i < sc->lo ? i : sc->lo;
-                    sc->hi = i > sc->hi ? i : sc->hi;
-                }
                 sc->P_l = pen(i, C->a, C->b, C->d);
                 sc->P_r = pen(i + 1, C->a, C->b, C->d);
                 sc->slack_tau = fabs(sc->P_r - sc->P_l) * C->tau_dev;
             }
             const double chord = (1 - t) * sc->P_l + t * sc->P_r - sc->slack_tau;
             const double thr = chord * (1 + C->ab_lo * t * (1 - t));
-            if (!(h > thr)) {
-                if (proof)
-                    *proof = (tirenv_springs__cc_seen){
-                        .margin = thr - h - C->tol4, .chord = chord - C->tol, .dz = dz,
-                        .m_t = (t < 0.5 ? t : 1 - t) - 2 * t_snap, .i = i};
+            if (!(h > thr))
                 return;
-            }
             r_j = i + 1;
             r_t = t;
             /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
@@ -338,6 +343,134 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
     *sc->out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
                                       .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
                                       .dh_dz = -dz / rho, .id = (long)j};
+}
+
+/* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the first scan
+ * left the vertex in (seen[k].i of vertex s0 + k): its sector at this height is that one or
+ * a neighbour, where the last vertex listed may lie sectors away. The walk ends in the same
+ * sector from either start (the one between the rays the vertex lies between), with the
+ * same numbers. */
+SCAN_LOOP void scan_list(const scan_ctx *C, scan_state *sc, const size_t todo[],
+                         const tirenv_springs__cc_seen seen[], size_t s0, size_t n)
+{
+    scan_state S = *sc;
+    for (size_t q = 0; q < n; ++q) {
+        S.i = seen[todo[q] - s0].i;
+        scan_vertex(C, &S, todo[q]);
+    }
+    *sc = S;
+}
+
+/* scan_vertex over the vertices j0 .. j_end - 1. */
+SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_end)
+{
+    scan_state S = *sc;
+    for (size_t j = j0; j < j_end; ++j)
+        scan_vertex(C, &S, j);
+    *sc = S;
+}
+
+/* The first scan at an x: what scan_vertex does, with a proof for every vertex dropped
+ * between elements (vertex_rows' comment), as one loop written for it. The same operations
+ * give the same rows and tests, but the sector's penetrations and slack follow the walk
+ * step by step (they are the sector's alone), where scan_vertex takes them again behind a
+ * branch at each change of sector, and the scan's state stays in locals: on a road at 1 mm
+ * this loop is the scan's cost. The proofs keep the raw margin, min(t, 1 - t) and the sector;
+ * seen_todo takes the allowances and t_snap off once a sector (m_t 0: no proof). The
+ * vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1]; the walk starts at sector
+ * *i_at and leaves it there; the rows go to out, the new end returned; [*lo, *hi]: the
+ * sectors the walk visited (one step at a time, so every proof's sector is among them),
+ * within [0, N - 2]. */
+SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, size_t j0,
+                                             size_t n, tirenv_springs__cc_seen seen[],
+                                             tirenv_springs__cc_row *out, size_t *lo,
+                                             size_t *hi)
+{
+    const double *const X = C->X, *const Z = C->Z, *const st = C->st, *const ct = C->ct;
+    const double x = C->x, z = C->z, R0 = C->R0, R0sq = C->R0sq, ab_lo = C->ab_lo;
+    const size_t N = C->N;
+    size_t i = *i_at, v_lo = i, v_hi = i;
+    double P_l = pen(i, C->a, C->b, C->d), P_r = pen(i + 1, C->a, C->b, C->d);
+    double slack_tau = fabs(P_r - P_l) * C->tau_dev;
+    for (size_t q = 0; q < n; ++q) {
+        seen[q].m_t = 0; /* no proof, unless made now */
+        seen[q].i = i; /* where a later scan's walk starts (scan_list) */
+        const size_t j = j0 + q;
+        const double dx = X[j] - x, dz = z - Z[j];
+        if (!(dz > 0))
+            continue;
+        const double rr = dx * dx + dz * dz;
+        if (!(rr < R0sq))
+            continue;
+        /* u = sigma_(i+1), < 0 once known: -s_n of scan_vertex, the same number */
+        double u = 0;
+        int u_known = 0;
+        while (i + 1 < N) {
+            u = dx * ct[i + 1] - dz * st[i + 1];
+            if (!(u >= 0)) {
+                u_known = 1;
+                break;
+            }
+            ++i;
+            v_hi = i > v_hi ? i : v_hi;
+            P_l = P_r;
+            P_r = pen(i + 1, C->a, C->b, C->d);
+            slack_tau = fabs(P_r - P_l) * C->tau_dev;
+        }
+        double s_i = dx * ct[i] - dz * st[i];
+        while (i > 0 && s_i < 0) {
+            --i;
+            v_lo = i < v_lo ? i : v_lo;
+            P_r = P_l;
+            P_l = pen(i, C->a, C->b, C->d);
+            slack_tau = fabs(P_r - P_l) * C->tau_dev;
+            s_i = dx * ct[i] - dz * st[i];
+            u_known = 0;
+        }
+        seen[q].i = i;
+        if (!(s_i > 0)) { /* behind the first element, or on ray i: its row alone */
+            if (s_i < 0)
+                continue;
+            const double rho = sqrt(rr), h = R0 - rho;
+            if (h > 0)
+                *out++ = (tirenv_springs__cc_row){.i = i, .j = i, .t = 0, .tau = 0, .ga = 1,
+                                                  .gb = 0, .h = h, .dga_dz = 0, .dgb_dz = 0,
+                                                  .dh_dz = -dz / rho, .id = (long)j};
+            continue;
+        }
+        if (i + 1 >= N)
+            continue; /* beyond the last element's ray */
+        if (!u_known)
+            u = dx * ct[i + 1] - dz * st[i + 1];
+        const double S = s_i - u, t = s_i / S;
+        const double rho = sqrt(rr), h = R0 - rho;
+        if (!(h > 0))
+            continue;
+        size_t r_i = i, r_j = i;
+        double r_t = 0, r_dt = 0;
+        if (t >= 1 - t_snap) {
+            r_i = r_j = i + 1;
+        } else if (t > t_snap) {
+            const double omt = 1 - t;
+            const double chord = omt * P_l + t * P_r - slack_tau;
+            const double thr = chord * (1 + ab_lo * t * omt);
+            if (!(h > thr)) {
+                seen[q] = (tirenv_springs__cc_seen){.margin = thr - h,
+                                                    .m_t = t < omt ? t : omt, .i = i};
+                continue;
+            }
+            r_j = i + 1;
+            r_t = t;
+            r_dt = (st[i] * u - s_i * st[i + 1]) / (S * S);
+        }
+        *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
+                                          .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
+                                          .dh_dz = -dz / rho, .id = (long)j};
+    }
+    *i_at = i;
+    *lo = v_lo;
+    *hi = v_hi < N - 2 ? v_hi : N - 2;
+    return out;
 }
 
 /* The vertex rows: every ground vertex below the centre's height, within
@@ -362,7 +495,11 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j,
  * test's threshold, is then at least the threshold at z_r less Lambda (mu times the bow,
  * which lies between 1 and B = 1 + ab_lo / 4) and less dt K (K = |D| B + ab_lo times the
  * largest chord). Where the margin at z_r (threshold less h) covers h's rise, Lambda and
- * dt K, the test drops the vertex at z. Every bound carries an allowance (tol) far above the
+ * dt K, the test drops the vertex at z. What a proof keeps of its vertex is the margin,
+ * min(t_r, 1 - t_r) and the sector: the chord at t_r is at least the sector's least chord
+ * at z_r, and dz_r at least rho_lo times the smaller cosine of the sector's rays (sZ), so
+ * the tests on the chord and the depth, and the depth's share of h's fall, are the
+ * sector's. Every bound carries an allowance (tol) far above the
  * rounding of what it stands for, so the rows, and their order, are the full scan's bit for
  * bit; a vertex not proven is computed as before. On a road at 1 mm nearly every vertex
  * under the patch is dropped by the bow's margin, and the evaluations after the first at an
@@ -400,7 +537,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * a few sectors' work an evaluation whatever the vertices, and a vertex's proof a
      * third of its row's test; elsewhere the scan runs as it did (the same rows either
      * way). */
-    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1);
+    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1) && !c->scan_plain;
     const int reuse = same_x && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
     if (!same_x)
         c->seen_serial = 0; /* no proofs at this x, unless made now */
@@ -422,34 +559,29 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     if (reuse)
         n_todo = seen_todo(c, T, p, z, a, b, d, j0, j_end, todo, &skipped);
 
-    const double tol = seen_tol(p, R0, z), tol4 = 4 * tol;
+    const double tol = seen_tol(p, R0, z);
     const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
-                        .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .tol = tol,
-                        .tol4 = tol4, .N = N, .a = a,
+                        .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .N = N, .a = a,
                         .b = b};
     /* i: a walk from the last vertex's sector is O(1) on a road */
-    scan_state S = {.i = T->i0, .ci = SIZE_MAX, .lo = N, .hi = 0, .out = c->vrows};
+    scan_state S = {.i = T->i0, .ci = SIZE_MAX, .out = c->vrows};
+    size_t seen_lo = N, seen_hi = 0;
     if (prove)
-        for (size_t q = 0; q < n_todo; ++q) {
-            seen[q].m_t = 0; /* no proof, unless made now */
-            scan_vertex(&C, &S, j0 + q, seen + q);
-        }
+        S.out = scan_prove(&C, &S.i, j0, n_todo, seen, S.out, &seen_lo, &seen_hi);
     else if (reuse)
-        for (size_t q = 0; q < n_todo; ++q)
-            scan_vertex(&C, &S, todo[q], NULL);
+        scan_list(&C, &S, todo, seen, c->seen_j0, n_todo);
     else
-        for (size_t j = j0; j < j_end; ++j)
-            scan_vertex(&C, &S, j, NULL);
+        scan_all(&C, &S, j0, j_end);
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
-    const size_t seen_lo = S.lo, seen_hi = S.hi;
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
     if (prove) { /* the sectors' chords at z_r, and their bounds on |dt/dz| */
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;
         double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
+        double *const sZ = sT + N;
         const double B = 1 + 0.25 * ab_lo; /* the bow's largest */
         double Pl = pen(seen_lo, a, b, d);
         for (size_t q = seen_lo; q <= seen_hi; ++q) {
@@ -464,9 +596,14 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
              * s_max / rho_lo, the same for the whole sector and with no division a vertex.
              * Rounding far inside 1e-12. No bound (infinite: nothing proven) if rho_lo <= 0. */
             const double rho_lo = (R0 - (Pl > Pr ? Pl : Pr) * B) * (1 - 1e-12) - tol;
-            const double s_max = ct[q] > 0 && ct[q + 1] > 0
-                                     ? fmax(fabs(st[q]), fabs(st[q + 1])) : 1;
+            const double s_l = fabs(st[q]), s_r = fabs(st[q + 1]); /* fmax's, no call */
+            const double s_max = ct[q] > 0 && ct[q + 1] > 0 ? (s_l > s_r ? s_l : s_r) : 1;
             sT[q] = rho_lo > 0 ? dt_dz_of * s_max / rho_lo * (1 + 1e-12) : INFINITY;
+            /* its depth rho cos(psi) at least rho_lo times the smaller of the rays' cosines
+             * (cos is concave there); 0 (nothing proven) where a ray is not below the
+             * horizontal or rho_lo <= 0 */
+            const double c_min = ct[q] < ct[q + 1] ? ct[q] : ct[q + 1];
+            sZ[q] = rho_lo > 0 && c_min > 0 ? rho_lo * c_min * (1 - 1e-12) : 0;
             Pl = Pr;
         }
     }

@@ -5,9 +5,11 @@
  *
  * Exact equality is the contract, not a tolerance. The vertex rows: a workspace that keeps the
  * first scan's proofs at an x (a vertex dropped there is skipped at a later height where a
- * bound proves it dropped again) must give the rows, in their order, and the laid-out rows of
- * a fresh workspace that scans every vertex. The rays: a fan updated ray by ray from its
- * memos (the rays whose memos fail walked again alone) must give the rho of a fresh fan. */
+ * bound proves it dropped again), and its first scan there by the proving loop, must give the
+ * rows, in their order, and the laid-out rows of a fresh workspace that computes every vertex
+ * by the plain scan (scan_plain: no proving loop, no proofs). The rays: a fan updated ray by
+ * ray from its memos (the rays whose memos fail walked again alone) must give the rho of a
+ * fresh fan. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -166,6 +168,7 @@ static void test_vertex_rows_proven_exact(void **state)
                     continue;
                 tirenv_springs__cc cold;
                 assert_int_equal(tirenv_springs__cc_init(&cold, N), TIRENV_OK);
+                cold.scan_plain = 1; /* every vertex by scan_vertex, no proving loop */
                 tirenv_diag diag;
                 assert_int_equal(tirenv_springs__cc_rows(&hot, &S.T, p, x, z, a, b, S.d, &diag),
                                  TIRENV_OK);
