@@ -123,16 +123,18 @@ check "... with --dx 0.05: resampled on 7 rows, the same heights across 3 m" \
 # copy of every long section keeps the input's rows and widths; CSV and RDF outputs have no
 # encoding, increment, width or padding; --side and --crg-nan-mode read one input format.
 echo keep >kept.crg
-for args in "--profile $crg/handmade_straight.crg --dx 0.25 -o kept.crg" \
-    "--profile $crg/handmade_straight.crg --half-width 3 -o kept.crg" \
-    "--profile $crg/handmade_straight.crg --track 0 --pad 1 -o kept.crg" \
+# The roads by names without blanks: the option lists below are split into words.
+ln -s "$crg/handmade_straight.crg" "$rdf/plateau.rdf" .
+for args in "--profile handmade_straight.crg --dx 0.25 -o kept.crg" \
+    "--profile handmade_straight.crg --half-width 3 -o kept.crg" \
+    "--profile handmade_straight.crg --track 0 --pad 1 -o kept.crg" \
     "--profile uneven.csv --dx 0.05 -o kept.csv" "--profile uneven.csv --pad 1 -o kept.rdf" \
     "--profile uneven.csv --crg-encoding lrfi -o kept.rdf" \
     "--profile uneven.csv --half-width 1 -o kept.csv" \
     "--profile uneven.csv --side left --dx 0.05 -o kept.crg" \
-    "--profile $rdf/plateau.rdf --crg-nan-mode keep -o kept.csv"; do
+    "--profile plateau.rdf --crg-nan-mode keep -o kept.csv"; do
     run "$bin" convert $args
-    check "convert $(echo "$args" | sed "s|$crg/||;s|$rdf/||"): exit 1 naming it, the old file kept" \
+    check "convert $args: exit 1 naming it, the old file kept" \
         '[ $rc -eq 1 ] && grep -q "applies to\|copied to a .crg" err && [ "$(cat kept.crg)" = keep ] &&
          [ ! -e kept.csv ] && [ ! -e kept.rdf ]'
 done

@@ -28,9 +28,9 @@ find "$root/README.md" "$root/include" "$root/src" "$root/bench" "$root/tests" \
     -print | sort >files
 
 # Every citation, with the line breaks of comments and C strings joined, as "FILE: models 7.6".
-# One awk over all files: a shell loop per file costs a fork per tool and file.
-# shellcheck disable=SC2046 # the file list is split on purpose (no blanks in its paths)
-awk -v root="$root/" '
+# One awk over all files: a shell loop per file costs a fork per tool and file. The list goes
+# through xargs -0: the clone's own path may have blanks.
+tr '\n' '\0' <files | xargs -0 awk -v root="$root/" '
 function flush(   t, m, doc, nums, k, parts) {
     if (name == "")
         return
@@ -54,7 +54,7 @@ function flush(   t, m, doc, nums, k, parts) {
 }
 FNR == 1 { flush(); name = substr(FILENAME, length(root) + 1); text = "" }
 { text = text " " $0 }
-END { flush() }' $(cat files) >citations
+END { flush() }' >citations
 check "more than 100 citations found (the scan is not vacuous)" '[ "$(wc -l <citations)" -gt 100 ]'
 
 # "## N. Title" for a section, "### N.M Title" for a subsection.
@@ -68,7 +68,7 @@ cp missing err
 check "every cited section exists in docs/ ($(wc -l <citations) citations)" '[ ! -s missing ]'
 
 # A bare "models.md" in the code is a citation that lost its path.
-grep -v "^$root/tests/" files | xargs grep -n 'models\.md\|formats\.md' |
+grep -v "^$root/tests/" files | tr '\n' '\0' | xargs -0 grep -n 'models\.md\|formats\.md' |
     grep -v 'docs/\(models\|formats\)\.md' >bare
 cp bare err
 check "no citation without its docs/ path" '[ ! -s bare ]'
@@ -100,14 +100,13 @@ cp links err
 check "relative links in README.md and docs/ exist" '[ ! -s links ]'
 
 # The Markdown a user reads: the README, docs/ and the READMEs of python/, fmu/ and the data.
-mds=$(ls "$root/README.md" "$root"/docs/*.md "$root"/python/README.md "$root"/fmu/README.md \
-      "$root"/data/*/README.md)
+ls "$root/README.md" "$root"/docs/*.md "$root"/python/README.md "$root"/fmu/README.md \
+    "$root"/data/*/README.md | tr '\n' '\0' >mds
 
 # Every repository path they name (src/model/springs.c, include/tirenv/ride.h, tests/..., a
 # directory such as src/train/) exists, from the top or from the file's own directory; a
 # pattern (tests/cli_*.sh) is not a path.
-# shellcheck disable=SC2086 # the list is split on purpose (no blanks in its paths)
-awk -v root="$root/" '
+xargs -0 awk -v root="$root/" '
 {
     s = $0
     while (match(s, /(^|[^A-Za-z0-9_.\/-])(src|include|tests|scripts|bench|data|python|fmu|cmake|docs)\/[A-Za-z0-9_.\/-]*/)) {
@@ -119,7 +118,7 @@ awk -v root="$root/" '
         sub(/[.]+$/, "", p)
         print substr(FILENAME, length(root) + 1) " " p
     }
-}' $mds >paths
+}' <mds >paths
 : >stale
 while read -r md path; do
     [ -e "$root/$path" ] || [ -e "$root/$(dirname "$md")/$path" ] || echo "$md: $path" >>stale
@@ -133,8 +132,7 @@ check "every repository path the Markdown names exists ($(wc -l <paths) paths)" 
 # that was renamed or removed is found. CMake's tirenv::NAME targets are not C names.
 find "$root/include" "$root/src" "$root/python" "$root/fmu" -type f \
     \( -name '*.[ch]' -o -name '*.py' \) -print | sort >code_files
-# shellcheck disable=SC2046
-awk '
+tr '\n' '\0' <code_files | xargs -0 awk '
 FNR == 1 { incomment = 0 }
 {
     line = $0
@@ -162,9 +160,8 @@ FNR == 1 { incomment = 0 }
         print substr(out, RSTART, RLENGTH)
         out = substr(out, RSTART + RLENGTH)
     }
-}' $(cat code_files) | sort -u >code_names
-# shellcheck disable=SC2086
-awk -v root="$root/" '
+}' | sort -u >code_names
+xargs -0 awk -v root="$root/" '
 {
     s = $0
     while (match(s, /(^|[^:A-Za-z0-9_])tirenv_[A-Za-z0-9_]*[A-Za-z0-9]/)) {
@@ -175,7 +172,7 @@ awk -v root="$root/" '
         sub(/^[^t]/, "", n)
         print n " " substr(FILENAME, length(root) + 1)
     }
-}' $mds | sort -u >doc_names
+}' <mds | sort -u >doc_names
 awk 'FILENAME == ARGV[1] { have[$1] = 1; next } !($1 in have) { print }' code_names doc_names \
     >unknown
 cp unknown err

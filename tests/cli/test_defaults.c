@@ -184,11 +184,14 @@ static void test_cli_envelope_is_the_library_default(void **state)
     const int fd = mkstemp(path);
     assert_true(fd >= 0);
     close(fd);
+    char cli[1024], tir[1024];
+    tirenv_test_shell_quote(TIRENV_CLI, cli, sizeof cli);
+    tirenv_test_shell_quote(TIRENV_DATA_DIR "/tires/default.tir", tir, sizeof tir);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
-        char cmd[2048];
+        char cmd[2560];
         snprintf(cmd, sizeof cmd,
-                 "%s envelope --model point %s --load 10937 --tire %s/tires/default.tir "
-                 "-o %s 2>/dev/null", TIRENV_CLI, cases[i].option, TIRENV_DATA_DIR, path);
+                 "%s envelope --model point %s --load 10937 --tire %s -o %s 2>/dev/null", cli,
+                 cases[i].option, tir, path);
         assert_int_equal(run(cmd), 0);
         size_t n;
         char **lines = read_lines(path, &n);
@@ -209,14 +212,17 @@ static void test_cli_ride_is_the_library_span(void **state)
 {
     (void)state;
     const double V = 2.3;  /* m/s */
-    char path[] = "/tmp/tirenv_test_defaults_XXXXXX", cmd[2048];
+    char path[] = "/tmp/tirenv_test_defaults_XXXXXX", cmd[2560];
     const int fd = mkstemp(path);
     assert_true(fd >= 0);
     close(fd);
+    char cli[1024], veh_arg[1024];
     snprintf(cmd, sizeof cmd,
              "%s ride --cleat 0.30,0.05 --speed %g --model point --enveloping static "
-             "--vehicle %s/vehicles/tractor.veh -o %s >/dev/null 2>&1", TIRENV_CLI, V,
-             TIRENV_DATA_DIR, path);
+             "--vehicle %s -o %s >/dev/null 2>&1",
+             tirenv_test_shell_quote(TIRENV_CLI, cli, sizeof cli), V,
+             tirenv_test_shell_quote(TIRENV_DATA_DIR "/vehicles/tractor.veh", veh_arg,
+                                     sizeof veh_arg), path);
     assert_int_equal(run(cmd), 0);
     size_t n_lines;
     char **lines = read_lines(path, &n_lines);

@@ -14,11 +14,15 @@ cli=$1 reader=$2 data=$3
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/tirenv-opencrg.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 road=$data/placed_bump.crg
-run="envelope --model springs --profile $road --track 0.9 --load 4000 --x-from 47 --x-to 53.5 --dx 0.005"
-# shellcheck disable=SC2086 # $run is words
-"$cli" $run -o "$tmp/curve.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
-# shellcheck disable=SC2086
-"$cli" $run -o "$tmp/eff.crg" --crg-encoding kdbi 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+# run ROAD ARGS...: the sweep over ROAD's track (a function: a path with blanks stays one word).
+run() {
+    road_=$1
+    shift
+    "$cli" envelope --model springs --profile "$road_" --track 0.9 --load 4000 --x-from 47 \
+        --x-to 53.5 --dx 0.005 "$@"
+}
+run "$road" -o "$tmp/curve.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+run "$road" -o "$tmp/eff.crg" --crg-encoding kdbi 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
 "$reader" "$road" "$tmp/eff.crg" "$tmp/curve.csv" 0.9 1.0
 status=$?
 # The same road without its (empty) $ROAD_CRG_MODS section: OpenCRG's default modifiers place
@@ -26,11 +30,8 @@ status=$?
 # and the effective road lies where OpenCRG puts that road.
 awk '/^\$ROAD_CRG_MODS/ { skip = 1; next } skip && /^\$/ { skip = 0; if ($0 == "$") next } !skip' \
     "$road" >"$tmp/defaults.crg"
-run2=$(echo "$run" | sed "s|$road|$tmp/defaults.crg|")
-# shellcheck disable=SC2086
-"$cli" $run2 -o "$tmp/curve2.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
-# shellcheck disable=SC2086
-"$cli" $run2 -o "$tmp/eff2.crg" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+run "$tmp/defaults.crg" -o "$tmp/curve2.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+run "$tmp/defaults.crg" -o "$tmp/eff2.crg" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
 echo "# the road without a modifiers section (OpenCRG's defaults)"
 "$reader" "$tmp/defaults.crg" "$tmp/eff2.crg" "$tmp/curve2.csv" 0.9 1.0 || status=1
 if grep -q "^REFERENCE_LINE_START_X   = 100$" "$tmp/eff2.crg"; then

@@ -18,9 +18,10 @@ rm -f "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* "$work/log"
 [ -d "$seeds" ] || { echo "# no seed corpus at $seeds: starting from nothing"; seeds=""; }
 echo "# $name for $seconds s, seeds ${seeds:-none}, new inputs in $work/corpus"
 # -max_len: the seeds decide it otherwise, and a rig log seed is 60 kB.
-# shellcheck disable=SC2086 # $seeds is empty or one directory
+# $seeds is empty (no argument) or one directory (one argument, blanks and all).
 "$harness" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-    -print_final_stats=1 -artifact_prefix="$work/" "$work/corpus" $seeds >"$work/log" 2>&1
+    -print_final_stats=1 -artifact_prefix="$work/" "$work/corpus" ${seeds:+"$seeds"} \
+    >"$work/log" 2>&1
 status=$?
 grep -E "stat::number_of_executed_units|stat::peak_rss|ERROR|SUMMARY|Test unit written|runtime error|Done [0-9]+ runs" \
     "$work/log" | sed 's/^/# /'

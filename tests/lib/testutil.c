@@ -67,6 +67,23 @@ int tirenv_test_dir_teardown(void **state)
     return r;
 }
 
+const char *tirenv_test_shell_quote(const char *s, char *buf, size_t size)
+{
+    size_t n = 0;
+    assert_true(size >= 3);
+    buf[n++] = '\'';
+    for (; *s; ++s) {
+        const char *put = *s == '\'' ? "'\\''" : (const char[]){*s, 0};
+        for (; *put; ++put) {
+            assert_true(n + 2 < size);  /* room for the closing quote and the NUL */
+            buf[n++] = *put;
+        }
+    }
+    buf[n++] = '\'';
+    buf[n] = 0;
+    return buf;
+}
+
 const char *tirenv_test_path(const tirenv_test_dir *d, const char *name, char buf[600])
 {
     snprintf(buf, 600, "%s/%s", d->dir, name);

@@ -89,6 +89,10 @@ void tirenv_test_expect_diag(size_t i, int status, const tirenv_diag *d, int wan
 int tirenv_test_dir_setup(void **state);
 int tirenv_test_dir_teardown(void **state);
 
+/* s in single quotes for a system() command line, each ' in it written '\'' (a path with
+ * blanks or quotes stays one word); asserts that it fits in size bytes. Returns buf. */
+const char *tirenv_test_shell_quote(const char *s, char *buf, size_t size);
+
 /* dir/name in buf. */
 const char *tirenv_test_path(const tirenv_test_dir *d, const char *name, char buf[600]);
 /* Writes text to path, asserting success. */

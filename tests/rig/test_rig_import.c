@@ -753,14 +753,15 @@ static void test_command_writes_all_or_nothing(void **state)
     (void)state;
     const rig_case c = {"", 100, 0.2e-3, 1, 0, 0, 0, 0};
     rig_log g = log_make(&c, 21);
-    char log_path[64], out_path[80], cmd[1024];
+    char log_path[64], out_path[80], cli[1024], cmd[1536];
     temp_path(log_path, "cli");
     snprintf(out_path, sizeof out_path, "%s.curve.csv", log_path);
     const char *const fmt = "%s import --log %s --cleat 0.30,0.10 --contact-length 0.38 "
                             "-o %s 2>/dev/null";
 
     write_log(log_path, &g, g.n);
-    snprintf(cmd, sizeof cmd, fmt, TIRENV_CLI, log_path, out_path);
+    snprintf(cmd, sizeof cmd, fmt, tirenv_test_shell_quote(TIRENV_CLI, cli, sizeof cli),
+             log_path, out_path);
     assert_int_equal(run(cmd), 0);
     tirenv_curve out;
     tirenv_diag d;
