@@ -78,11 +78,12 @@ while read -r delay how; do
     i=$((i + 1))
     next=$((3 - state))
     snap rep >before
-    run="study --data $data --no-images --seed $next -o rep"
+    # The study's arguments as the positional parameters: the data set's path stays one word.
+    set -- study --data "$data" --no-images --seed "$next" -o rep
     case $how in
-    I) env --default-signal=INT "$bin" $run >/dev/null 2>&1 & sig=INT ;;
-    K) "$bin" $run >/dev/null 2>&1 & sig=KILL ;;
-    *) "$bin" $run >/dev/null 2>&1 & sig=TERM ;;
+    I) env --default-signal=INT "$bin" "$@" >/dev/null 2>&1 & sig=INT ;;
+    K) "$bin" "$@" >/dev/null 2>&1 & sig=KILL ;;
+    *) "$bin" "$@" >/dev/null 2>&1 & sig=TERM ;;
     esac
     pid=$!
     sleep "$delay"
@@ -103,7 +104,10 @@ while read -r delay how; do
     fi
     staging=$(find . -maxdepth 1 -name '.rep.tirenv-tmp.*' | wc -l)
     what="kill $i: SIG$sig after $delay s (exit $rc): the $verdict report"
-    if [ $verdict = mixture ]; then
+    if [ $rc -eq 1 ]; then
+        # Misuse: the study never ran, so the old report proves nothing.
+        not_ok "$what: the command was refused"
+    elif [ $verdict = mixture ]; then
         not_ok "$what"
         diff before after | head -20 | sed 's/^/#   /'
     elif [ $sig != KILL ] && [ "$staging" -ne 0 ]; then
