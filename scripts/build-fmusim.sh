@@ -14,7 +14,7 @@
 #    own fmi2FreeFMUstate frees *FMUstate too): the address is passed.
 #
 #   sh scripts/build-fmusim.sh REFERENCE_FMUS_DIR OUT_DIR      (about 15 s; OUT_DIR/fmusim)
-#   cmake -S . -B build -DTIRENV_FMUSIM=$PWD/OUT_DIR/fmusim && ctest --test-dir build -L interop
+#   cmake -S . -B build "-DTIRENV_FMUSIM=$PWD/OUT_DIR/fmusim" && ctest --test-dir build -L interop
 #
 # REFERENCE_FMUS_DIR is a work tree at commit c8d4e6d90fa14be49d7622badf30e38eebea5e0a (the
 # parent of 7b3fc08), or a git repository, from which that commit is taken.
