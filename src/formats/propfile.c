@@ -506,19 +506,10 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
         if (c.at.line == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
             line += 3; /* a UTF-8 byte-order mark some Windows editors add */
         c.at.base = line;
-        if (buf[len - 1] != '\n') {
-            /* The last line, cut maybe: refused when it holds more than blanks or a comment. */
-            const char *p = line;
-            while (*p == ' ' || *p == '\t' || *p == '\r')
-                p++;
-            if (*p && *p != '$' && *p != '!') {
-                size_t n = strlen(line);
-                while (n > 0 && line[n - 1] == '\r')
-                    n--;
-                status = tirenv_text__unterminated(diag, path, c.at.line, n + 1);
-                break;
-            }
-        }
+        /* The last line, cut maybe: refused when it holds more than blanks or a comment. */
+        if (buf[len - 1] != '\n' &&
+            (status = tirenv_text__check_unterminated(diag, path, c.at.line, line, "$!")))
+            break;
         status = pf_line(s, &c, line, &sec, &in_section, copy, seen);
     }
     if (status == TIRENV_OK && ferror(fp))

@@ -661,17 +661,10 @@ static int scan(const tirenv_source *src, rdf *r, tirenv_rdf__road **out)
         if (r->at.line == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3;
         r->at.base = text;
-        if (!lines.eol) {
-            /* The last line, cut maybe: refused when it holds more than blanks or a comment. */
-            const char *p = text;
-            while (*p == ' ' || *p == '\t')
-                p++;
-            if (*p && *p != '$' && *p != '!') {
-                status = tirenv_text__unterminated(r->at.diag, src->name, lines.line,
-                                                   strlen(text) + 1);
-                break;
-            }
-        }
+        /* The last line, cut maybe: refused when it holds more than blanks or a comment. */
+        if (!lines.eol && (status = tirenv_text__check_unterminated(r->at.diag, src->name,
+                                                                    lines.line, text, "$!")))
+            break;
         status = line_of(r, text);
     }
     if (!status && got < 0)

@@ -53,6 +53,12 @@ int tirenv_text__getline(char **buf, size_t *cap, FILE *fp, size_t *len);
  * after the line's last character), field "". */
 int tirenv_text__unterminated(tirenv_diag *diag, const char *file, size_t line, size_t column);
 
+/* For a last line text that has no line end: TIRENV_OK where it holds only blanks (spaces,
+ * tabs, CR) or a comment (its first other character one of comments), else
+ * tirenv_text__unterminated's error, its column after the last character but CRs. */
+int tirenv_text__check_unterminated(tirenv_diag *diag, const char *file, size_t line,
+                                    const char *text, const char *comments);
+
 /* ---- bytes of a file or buffer, and their lines (source.c) ------------------------------ */
 
 /* A readable span of bytes. */

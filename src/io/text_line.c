@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <stdlib.h>
+#include <string.h>
 
 int tirenv_text__getline(char **buf, size_t *cap, FILE *fp, size_t *len)
 {
@@ -67,4 +68,16 @@ int tirenv_text__unterminated(tirenv_diag *diag, const char *file, size_t line, 
     if (diag)
         diag->column = column;
     return status;
+}
+
+int tirenv_text__check_unterminated(tirenv_diag *diag, const char *file, size_t line,
+                                    const char *text, const char *comments)
+{
+    const char *p = text + strspn(text, " \t\r");
+    if (!*p || strchr(comments, *p))
+        return TIRENV_OK;
+    size_t n = strlen(text);
+    while (n > 0 && text[n - 1] == '\r')
+        n--;
+    return tirenv_text__unterminated(diag, file, line, n + 1);
 }
