@@ -211,7 +211,8 @@ static fmi2ValueReference VR_X, VR_LOAD, VR_H, VR_SLOPE, VR_TH, VR_NX, VR_NY, VR
     VR_FZ, VR_MODEL, VR_ROAD, VR_TIRE;
 
 /* An instance in step mode over road with model at x0 and load, of the tire in the file tire
- * (road NULL: the default road; tire NULL: the default tire, and road not set either). */
+ * (road NULL: the default road; tire NULL: the default tire; a tire needs a road, since the
+ * strings are set in the order model, road, tire). */
 static fmi2Component start_tire(const char *model, const char *road, const char *tire,
                                 double x0, double load, fmi2Status *exit_status)
 {

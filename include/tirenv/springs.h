@@ -55,9 +55,9 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
 
 /* The stiffnesses c_r and c_b of par (the rest as given, no sidewall: k_s and F_s0 set to
  * 0) identified on a reference model's flat ground at n loads (2 to 64): load[i] (N), its
- * deflection[i] (m) and contact_length[i] (m). The springs model then deflects as the reference does and touches as much ground
- * (least squares in log load at the reference's deflections and in log contact length there,
- * docs/models.md section 14.1). TIRENV_EINVAL for targets that are no flat-ground states;
+ * deflection[i] (m) and contact_length[i] (m). The springs model then deflects as the
+ * reference does and touches as much ground (least squares in log load at the reference's
+ * deflections and in log contact length there, docs/models.md section 14.1). TIRENV_EINVAL for targets that are no flat-ground states;
  * the model's errors otherwise. */
 int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double load[],
                             const double deflection[], const double contact_length[],

@@ -168,16 +168,16 @@ static int load_at(const tirenv_model_type *type, const tirenv_tire *t, double r
     return status;
 }
 
-/* Scales the stiffnesses stiff[] by one factor c so that the model carries FNOMIN at rho_n
- * (the springs model's; a derived ring's is scale_at_height). Where they make all of the load
- * the load is proportional to c and one step is exact; where a share is not scaled (a ring's
- * air, INFLPRES) c is found by a secant (the load grows monotonically with c), to 5e-8 of
- * FNOMIN: the load at a fixed deflection, itself a flat inversion to 1e-9 m of deflection,
- * repeats only to a few 1e-8 of it (on the 335/65R22.5's ring a secant to 1e-8 wandered
- * there for up to 14 steps); the tests assert the deflection at FNOMIN to 1e-7. */
-static int scale_to(const tirenv_model_type *type, tirenv_tire *t, double *const stiff[],
-                    size_t n, double fnomin, double rho_n, tirenv_diag *diag)
+/* Scales the springs model's stiffnesses stiff[] by one factor c so that it carries FNOMIN
+ * at rho_n (a derived ring's: scale_at_height). They make all of its load, so the load is
+ * proportional to c and the first step is exact but for rounding; the secant after it is a
+ * guard, to 5e-8 of FNOMIN: the load at a fixed deflection, itself a flat inversion to 1e-9 m
+ * of deflection, repeats only to a few 1e-8 of it; the tests assert the deflection at FNOMIN
+ * to 1e-7. */
+static int scale_to(tirenv_tire *t, double *const stiff[], size_t n, double fnomin,
+                    double rho_n, tirenv_diag *diag)
 {
+    const tirenv_model_type *const type = tirenv_model_springs;
     enum { MAX_STIFF = 8, MAX_STEPS = 60 };
     double base[MAX_STIFF];
     for (size_t i = 0; i < n; i++)
@@ -265,7 +265,7 @@ static int derive_springs(tirenv_tire *t, const mf_keys *k, double rho_n, const 
     if (status)
         return status;
     double *const stiff[] = {&t->springs.c_r, &t->springs.c_b};
-    return scale_to(tirenv_model_springs, t, stiff, 2, k->fnomin, rho_n, diag);
+    return scale_to(t, stiff, 2, k->fnomin, rho_n, diag);
 }
 
 /* derive_springs with a sidewall in series (docs/models.md sections 4.9 and 14.2), for the
@@ -287,7 +287,7 @@ static int derive_springs_sidewall(tirenv_tire *t, const mf_keys *k, double rho_
         return status;
     double *const stiff[] = {&t->springs.c_r, &t->springs.c_b, &t->springs.k_s,
                              &t->springs.F_s0};
-    return scale_to(tirenv_model_springs, t, stiff, 4, k->fnomin, rho_n, diag);
+    return scale_to(t, stiff, 4, k->fnomin, rho_n, diag);
 }
 
 /* The ring's load (N) and contact length (m) with its centre at each height R0 - d[i] (m)
@@ -318,22 +318,11 @@ static int ring_at_heights(const tirenv_tire *t, const tirenv_profile *flat, siz
     return status;
 }
 
-/* The ring's load (N) with its centre at R0 - rho (m): one force evaluation. */
-static int ring_load_at_height(const tirenv_tire *t, const tirenv_profile *flat, double rho,
-                               double *G, tirenv_diag *diag)
-{
-    const int status = ring_at_heights(t, flat, 1, &rho, G, NULL, diag);
-    if (status)
-        *G = 0;
-    return status;
-}
-
 /* scale_to for a derived ring, by the ring's load at the height R0 - rho_n (one force
- * evaluation a step on a fresh ring workspace, ring_load_at_height, where scale_to inverts a
- * flat inversion on a new model, whose valid-range scan costs some 45 evaluations): EI, T,
- * k_c, k_t by one factor c
- * until it carries FNOMIN there to 5e-8, by the secant on the load against c (affine in c but
- * for the air's share), at most MAX_STEPS. */
+ * evaluation a step on a fresh ring workspace, ring_at_heights, where scale_to inverts a flat
+ * inversion on a new model, whose valid-range scan costs some 45 evaluations): EI, T, k_f,
+ * k_t by one factor c until it carries FNOMIN there to 5e-8, by the secant on the load
+ * against c (affine in c but for the air's share), at most MAX_STEPS. */
 static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fnomin,
                            double rho_n, tirenv_diag *diag)
 {
@@ -343,14 +332,14 @@ static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fn
     for (size_t i = 0; i < 4; i++)
         base[i] = *stiff[i];
     double c0 = 1, G0 = 0, G1 = 0;
-    int status = ring_load_at_height(t, flat, rho_n, &G0, diag);
+    int status = ring_at_heights(t, flat, 1, &rho_n, &G0, NULL, diag);
     if (status)
         return status;
     double c1 = fnomin / G0;  /* the proportional step */
     for (int step = 0; step < MAX_STEPS; step++) {
         for (size_t i = 0; i < 4; i++)
             *stiff[i] = base[i] * c1;
-        if ((status = ring_load_at_height(t, flat, rho_n, &G1, diag)))
+        if ((status = ring_at_heights(t, flat, 1, &rho_n, &G1, NULL, diag)))
             return status;
         if (fabs(G1 / fnomin - 1) <= 5e-8)
             return TIRENV_OK;

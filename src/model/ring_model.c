@@ -44,7 +44,8 @@ static int ring_contact_length(void *elem, const tirenv_profile *flat, double z,
  * ends where the flat-ground patch is longest (docs/models.md section 5.4). It is found on a
  * grid of TIRENV_RING_RANGE_STEPS heights from R0 down, stopping two steps past the longest,
  * then by golden sections between that one's neighbours to RANGE_TOL*R0; about 45 force
- * evaluations, once per model. A force that fails on the way ends the scan: the range ends above it. */
+ * evaluations, once per model. A force that fails on the way ends the scan: the range ends
+ * above it. */
 static const double RANGE_TOL = 1e-6;
 
 static int patch_at(void *elem, const tirenv_profile *flat, double z, double *l,

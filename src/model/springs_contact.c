@@ -189,11 +189,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     for (size_t e = f0; e <= f1; ++e) {
         if (c->wpos[e] == SIZE_MAX)
             continue;
-        double k_ee = T->diag[e];
-        if (e == f0 && f0 > 0)
-            k_ee -= T->k_ir * T->lq[f0 - 1];
-        if (e == f1 && f1 + 1 < N)
-            k_ee -= T->k_ir * T->rq[f1 + 1];
+        const double k_ee = tirenv_springs__cc_k_diag(T, f0, f1, e);
         const size_t p = c->wpos[e];
         AT(p, p) = k_ee;
         first[p] = p;

@@ -222,9 +222,10 @@ static double ss_compliance(double c, void *p)
     const side_ctx *x = p;
     double ss = 0;
     for (size_t i = 0; i < x->n; i++) {
-        /* At or below the preload u = 0, and the residual is r_el's, the same bits. */
-        const double u = x->G[i] > x->F_s0 ? (x->G[i] - x->F_s0) * c : 0;
-        const double r = x->G[i] > x->F_s0 ? log((x->d_el[i] + u) / x->d[i]) : x->r_el[i];
+        /* At or below the preload the sidewall is rigid: the residual is r_el's. */
+        const double r = x->G[i] > x->F_s0
+                             ? log((x->d_el[i] + (x->G[i] - x->F_s0) * c) / x->d[i])
+                             : x->r_el[i];
         ss += pow8(r);
     }
     return ss;
@@ -253,7 +254,7 @@ static double ss_log_c_r(double log_c_r, void *p)
         if (!table_at(x->tb, x->G[i] / c_r, &d_e, &l_e))
             return 1e6;
         x->d_el[i] = d_e;
-        x->r_el[i] = log((d_e + 0) / x->d[i]);  /* ss_compliance's at u = 0 */
+        x->r_el[i] = log(d_e / x->d[i]);  /* ss_compliance's with a rigid sidewall */
         const double r = log(l_e / x->l[i]);
         x->ss_l += pow8(r);
     }

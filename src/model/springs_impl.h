@@ -255,6 +255,19 @@ typedef struct {
     double inv_sin_step;
 } tirenv_springs__cc_tire;
 
+/* Element e's stiffness in the span f0 .. f1: K's diagonal with the free chains beyond the
+ * span folded in at its ends (what the banded KKT system and the Schur factor both take). */
+static inline double tirenv_springs__cc_k_diag(const tirenv_springs__cc_tire *T, size_t f0,
+                                               size_t f1, size_t e)
+{
+    double d = T->diag[e];
+    if (e == f0 && f0 > 0)
+        d -= T->k_ir * T->lq[f0 - 1];
+    if (e == f1 && f1 + 1 < T->N)
+        d -= T->k_ir * T->rq[f1 + 1];
+    return d;
+}
+
 /* Fills the shape fields of T (gamma, sin_gamma, cot_gamma, ab_lo, tau_dev, c0) from its
  * k_r, k_ir. */
 void tirenv_springs__cc_tire_shape(tirenv_springs__cc_tire *T);

@@ -256,7 +256,7 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
 }
 
 /* What the scan of the vertex rows needs at (x, z): the profile, the tire, the rays'
- * penetrations d over [a, b], the proofs' allowances (vertex_rows). */
+ * penetrations d over [a, b]. */
 typedef struct {
     const double *X, *Z, *st, *ct, *d;
     double x, z, R0, R0sq, ab_lo, tau_dev;
@@ -271,7 +271,9 @@ typedef struct {
     tirenv_springs__cc_row *out;
 } scan_state;
 
-/* Vertex j's row at (x, z), if it has one, at sc->out; sc along. */
+/* Vertex j's row at (x, z), if it has one, at sc->out; sc along. scan_prove repeats these
+ * operations in a loop of its own: change both (test_springs_scan compares them bit for
+ * bit). */
 static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
 {
     const double dx = C->X[j] - C->x, dz = C->z - C->Z[j];
@@ -577,7 +579,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
-    if (prove) { /* the sectors' chords at z_r, and their bounds on |dt/dz| */
+    if (prove) { /* the sectors' chords at z_r, their bounds on |dt/dz| and on depth (sZ) */
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;
         double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;

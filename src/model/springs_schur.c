@@ -61,20 +61,15 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
      * stay (kkt_factor compares them), bit for bit what factorising again gives. */
     c->tri_ok = 0;
     c->factor_kept = same;
-    /* Free element e's stiffness: K's diagonal with the free chains beyond the span folded
-     * in at its ends (the same as the banded system's); coupled to e - 1 if that is free and
-     * in the span. On locals: the stores to chains (size_t) would make c's fields be read
+    /* Free element e's stiffness (tirenv_springs__cc_k_diag); coupled to e - 1 if that is
+     * free and in the span. On locals: the stores to chains (size_t) would make c's fields be read
      * again at every element. */
     const size_t *wpos = c->wpos;
     size_t *chains = c->chains;
     for (size_t e = f0; !same && e <= f1; ++e) {
         if (wpos[e] == SIZE_MAX)
             continue;
-        double d = T->diag[e];
-        if (e == f0 && f0 > 0)
-            d -= k_ir * T->lq[f0 - 1];
-        if (e == f1 && f1 + 1 < N)
-            d -= k_ir * T->rq[f1 + 1];
+        double d = tirenv_springs__cc_k_diag(T, f0, f1, e);
         if (e > f0 && wpos[e - 1] != SIZE_MAX) {
             mul[e] = -k_ir / piv[e - 1];
             d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
