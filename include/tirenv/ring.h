@@ -53,7 +53,8 @@ enum { TIRENV_RING_RANGE_STEPS = 32 };
  * the default; docs/models.md section 5.3) w outside the contact window
  * comes from a solve of the unloaded belt and tread there, which allocates (NAN outside the
  * window if memory runs out); with the Winkler tread, from the belt's compliance, computed at
- * the first call that asks for w (allocates likewise). */
+ * the first call that asks for w (allocates likewise, and keeps it in r: const as the state
+ * read, but not safe to call on one r from two threads). */
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
 
 /* The contact of the last evaluation per node, into arrays of tirenv_ring_size() entries (may

@@ -11,7 +11,6 @@
  * with the weight dtheta: the rays model exactly. */
 #include <math.h>
 #include <stddef.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "profile/profile_impl.h"

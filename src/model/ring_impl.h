@@ -7,7 +7,6 @@
 #define TIRENV_RING_IMPL_H
 
 #include <stddef.h>
-#include <stdint.h>
 #include <string.h>
 #include "tirenv/ring.h"
 #include "tirenv/tire.h"
@@ -27,14 +26,7 @@ typedef struct tirenv_ring_belt tirenv_ring_belt;
  * inputs are the same bits as last time (ring_ground.c's points, ring_shear.c's factor). */
 static inline int tirenv_ring__same_bits(const double *a, const double *b, size_t n)
 {
-    for (size_t i = 0; i < n; ++i) {
-        uint64_t ua, ub;
-        memcpy(&ua, &a[i], sizeof ua);
-        memcpy(&ub, &b[i], sizeof ub);
-        if (ua != ub)
-            return 0;
-    }
-    return 1;
+    return memcmp(a, b, n * sizeof *a) == 0;
 }
 
 /* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface

@@ -87,7 +87,7 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
             if (v > step)
                 step = v;
         }
-        if ((changed == 0 && (nw->nl_tol == 0 || step <= nw->nl_tol)) ||
+        if ((changed == 0 && step <= nw->nl_tol) ||  /* nl_tol 0 returned above */
             step <= newton_step_tol) {
             memcpy(x, xn, N * sizeof *x);
             *factored = changed == 0;

@@ -37,7 +37,6 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth. */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
@@ -152,9 +151,9 @@ static void band_add(tband *A, size_t i, size_t k, double v)
 /* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
  * tail entries scaled, and its updates of the next BAND_P columns, two SSE2 lanes at a time;
  * the tail block's lower triangle in the caller's registers. fresh: column i + BAND_P's tail
- * entries were never written (fill_window leaves them unset: zero), so its update starts from
- * zero rather than from memory (0 - p, the same operation on the same operands). Nonzero if
- * the pivot is not positive. */
+ * entries were never written (fill_window leaves them unset, stale from an earlier window,
+ * and they are taken as zero), so its update starts from zero rather than from memory
+ * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive. */
 static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
                                                                v2d *t20, v2d *t30, v2d *t32,
                                                                double *t00, double *t22,
@@ -222,7 +221,7 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
  * them (factor_column's fresh). */
 enum { FRESH_FROM = BAND_P + 1 };
 
-/* Every CKS-th column, band_factor_f keeps the tail block's accumulators as they stand before
+/* Every CKS-th column, band_factor_from keeps the tail block's accumulators as they stand before
  * it (CK_LEN doubles, the lower triangle by rows), from which band_refactor starts again. */
 enum { CKS = 16, CK_LEN = TAIL * (TAIL + 1) / 2 };
 
@@ -593,7 +592,7 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     const double *s = T->s, k_sh = T->k_sh;
     A->N = N;
     A->t = TAIL;
-    /* The tail's columns that assemble writes to (FRESH_FROM); band_factor_f takes the
+    /* The tail's columns that assemble writes to (FRESH_FROM); band_factor_from takes the
      * others as zero. */
     if (m < FRESH_FROM + BAND_P) {
         memset(A->B, 0, TAIL * m * sizeof *A->B);
@@ -1461,6 +1460,7 @@ static void fill_free(const tirenv_ring *r, size_t a, size_t b, double v[])
     const double *cols = T->cols[ns], *vs = v + 2 * (a - lo);
     double f[NB];
     exterior_load(T, ns, vs, f);
+    _Static_assert(NB == 6, "the lanes below are written out for NB = 6");
     /* The exterior runs from node b + 1 round to node a - 1: the window's nodes lo .. a - 1
      * are its ne - (a - lo) .. ne - 1, and b + 1 .. hi its 0 .. hi - b - 1. */
     const v2d f0 = {f[0], f[0]}, f1 = {f[1], f[1]}, f2 = {f[2], f[2]}, f3 = {f[3], f[3]},
