@@ -306,6 +306,11 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
  * the test that they agree (allocates); nonzero if out of memory or n < 2. */
 int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
 
+/* For tests: the last factorisation's system (m band rows), its diagonal changed from column c
+ * on, factorised again by ring_shear.c's restart from a checkpoint and from the start; 0 if the
+ * same bits, 1 if not, -1 if it cannot. *q the restart's column, *moved 1 if column c moved. */
+int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, int *moved);
+
 /* A node's tread stiffness k_t R dtheta (N/m) at angle theta (rad) with the centre at x (m):
  * LUG_GROOVE_RATIO between lugs, which turn with the tire (ring.c). */
 double tirenv_ring__tread_kappa(const tirenv_ring *r, double theta, double x);

@@ -1951,8 +1951,18 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         band_reset(&A, N, TAIL);
         add_arc(&A, T, r->lo, n);
     } else {
-        memset(A.B, 0, TAIL * N * sizeof *A.B); /* fill_window leaves the fresh columns */
+        /* NaN wherever fill_window should write, so that an entry it leaves unset shows; then
+         * the fresh columns, which it leaves unset on purpose, as band_factor_from takes them
+         * (zero). */
+        for (size_t i = 0; i < (BAND_P + 1 + TAIL) * N; ++i)
+            A.L[i] = NAN;
+        for (size_t a = 0; a < TAIL; ++a)
+            for (size_t b = 0; b < TAIL; ++b)
+                A.T[a][b] = NAN;
         fill_window(&A, T, r->lo, n);
+        if (m >= FRESH_FROM + BAND_P)
+            memset(A.B + TAIL * FRESH_FROM, 0,
+                   TAIL * (m - BAND_P - FRESH_FROM) * sizeof *A.B);
     }
     for (size_t i = 0; i < N; ++i)
         for (size_t k = 0; k < N; ++k)
@@ -1962,4 +1972,53 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
                                    : A.T[i - m][k - m];
     free(A.L);
     return 0;
+}
+
+/* For tests: band_refactor's restart from a checkpoint against a full factorisation. The
+ * window's system of the last factorisation (T->ap, whose factor T->win holds), its diagonal
+ * scaled by 1 + 2^-10 from column c on (still positive definite), is factorised by
+ * band_refactor (which keeps the columns before the checkpoint at or before c) and, on a copy,
+ * by band_factor_from from column 0. *q: the column band_refactor restarted at (0: from the
+ * start); *moved: 1 if the new factor's column c differs from the old one's (the comparison
+ * sees changed columns). Returns 0 if the two factors are the same bits, 1 if they differ, -1
+ * if it cannot (no factor held, c beyond the band, out of memory). Leaves the window's factor
+ * marked stale, so that the next Newton step factorises afresh. *m: the band's rows, N - t. */
+int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t *q, int *moved)
+{
+    tirenv_ring_tread *T = r->tread;
+    tband *S = &T->as, *P = &T->ap, *F = &T->win;
+    const size_t N = P->N, t = P->t, W = BAND_P + 1;
+    *m_out = N > t ? N - t : 0;
+    if (!T->ap_ok || t != TAIL || N < t + 1 || c >= N - t)
+        return -1;
+    const size_t m = N - t;
+    tband X;
+    if (band_alloc(&X, N, TAIL))
+        return -1;
+    const double old_c = F->L[W * c];
+    S->N = N, S->t = t;
+    memcpy(S->L, P->L, W * m * sizeof *S->L);
+    memcpy(S->B, P->B, TAIL * m * sizeof *S->B);
+    memcpy(S->T, P->T, sizeof S->T);
+    for (size_t i = c; i < m; ++i)
+        S->L[W * i] *= 1 + 0x1p-10;
+    X.N = N, X.t = t;
+    memcpy(X.L, S->L, W * m * sizeof *X.L);
+    memcpy(X.B, S->B, TAIL * m * sizeof *X.B);
+    memcpy(X.T, S->T, sizeof X.T);
+    *q = 0;
+    if (m > 2 * CKS + BAND_P) {
+        const size_t p = first_change(S, P, m);
+        *q = (p < m - BAND_P ? p : m - BAND_P - 1) / CKS * CKS;
+    }
+    int st = band_refactor(T) != 0 || band_factor_from(&X, 1, 0, NULL, NULL, NULL) != 0 ? -1 : 0;
+    if (st == 0) {
+        *moved = !tirenv_ring__same_bits(&F->L[W * c], &old_c, 1);
+        st = !tirenv_ring__same_bits(F->L, X.L, W * m) ||
+             !tirenv_ring__same_bits(F->B, X.B, TAIL * m) ||
+             !tirenv_ring__same_bits(&F->T[0][0], &X.T[0][0], TAIL * TAIL);
+    }
+    T->ap_ok = 0;
+    free(X.L);
+    return st;
 }

@@ -629,6 +629,47 @@ static void test_window_fill_matches_arc(void **state)
     }
 }
 
+/* The factor's restart from a checkpoint (ring_shear.c's band_refactor: the columns before the
+ * multiple of 16 at or before the first changed one kept, the tail block's accumulators taken
+ * from that column's checkpoint) against a factorisation from column 0, bit for bit: on the
+ * system of the default tire's last Newton step over the bench's 0.30 x 0.10 m cleat, at
+ * positions whose windows differ, its diagonal changed from column c on, c from the first
+ * column to the band's last (whose columns the general loop factorises). A guard that the
+ * restart happens (q the checkpoint at or before c) and that column c's factor moves. */
+static void test_refactor_restart(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    const double frac[] = {0, 0.0037, 0.29, 0.503, 0.77, 0.991, 0.9999};
+    size_t restarts = 0;
+    for (size_t k = 0; k < 5; ++k) {
+        const double z = t.springs.R0 - 0.0371 + 0.0073 * (double)k; /* m */
+        size_t m = 0;
+        for (size_t f = 0; f < sizeof frac / sizeof frac[0]; ++f) {
+            double fx, fz, dfz;
+            assert_int_equal(tirenv_ring_forces(r, p, case_x[k], z, &fx, &fz, &dfz, NULL, NULL),
+                             0);
+            const size_t c = (size_t)(frac[f] * (double)m);
+            size_t m2 = 0, q = 0;
+            int moved = 0;
+            assert_int_equal(tirenv_ring__tread_refactor(r, c, &m2, &q, &moved), 0);
+            assert_true(m2 > 0 && (m == 0 || m2 == m));
+            m = m2;
+            assert_true(moved);
+            if (c >= 16 && c < m - 4) {
+                assert_int_equal(q, c / 16 * 16);
+                ++restarts;
+            }
+        }
+    }
+    assert_true(restarts >= 10);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+}
+
 /* The contact solved on the sub-window of the nodes in contact (ring_shear.c, docs/models.md
  * 5.2-5.3) is the whole window's minimum: over the bench's 0.30 x 0.10 m cleat with the default
  * tire (its layer and NODE_ANGLE), at 25 of the model's own equilibria from first contact to
@@ -708,6 +749,7 @@ int main(void)
         cmocka_unit_test(test_state_restores_bits),
         cmocka_unit_test(test_tread_exterior),
         cmocka_unit_test(test_window_fill_matches_arc),
+        cmocka_unit_test(test_refactor_restart),
         cmocka_unit_test(test_sub_window_is_whole_window),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
