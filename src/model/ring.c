@@ -415,11 +415,19 @@ static double patch_length_smooth(const tirenv_ring *r)
 }
 
 /* The contact counts and, for the Winkler tread (with_max), its largest compression; the
- * shear-coupled tread's is its solve's (ring_shear.c), so its points are not walked. */
+ * shear-coupled tread's is its solve's (ring_shear.c), so its points are not walked. The
+ * shear-coupled tread's solve puts F and g only on the nodes of the points from its first to
+ * its last in contact (r->k_first, r->k_last), zero on the window's others: those alone are
+ * counted. */
 static void summarise_smooth(tirenv_ring *r, int with_max)
 {
     r->n_contact = r->n_belt = 0;
-    for (size_t j = r->lo; j < r->lo + r->n; ++j) {
+    size_t j0 = r->lo, j1 = r->lo + r->n;
+    if (r->tread && r->n) {
+        j0 = r->k_first <= r->k_last ? r->pts[r->k_first].j : j1;
+        j1 = r->k_first <= r->k_last ? r->pts[r->k_last].j + 2 : j1;
+    }
+    for (size_t j = j0; j < j1; ++j) {
         r->n_contact += r->F[j] > 0;
         r->n_belt += r->g[j] > 0;
     }
