@@ -335,9 +335,25 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
 
 /* The continuous contact's window: the nodes whose interval holds a point of ground within
  * reach (d > -t_r, as the rays' window), widened to the band solver's smallest size. */
+/* The nodes j0 .. j1 - 1 outside which the last evaluation of the continuous contact left F
+ * and g zero: its window, or, with the shear-coupled tread, the nodes of the points from its
+ * solve's first to its last in contact (r->k_first, r->k_last), the only ones it puts forces
+ * on. */
+static void force_nodes(const tirenv_ring *r, size_t *j0, size_t *j1)
+{
+    *j0 = r->lo, *j1 = r->lo + r->n;
+    if (r->tread && r->n) {
+        const int none = r->k_first > r->k_last;
+        *j0 = none ? *j1 : r->pts[r->k_first].j;
+        *j1 = none ? *j1 : r->pts[r->k_last].j + 2;
+    }
+}
+
 static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x, double z)
 {
-    for (size_t j = r->lo; j < r->lo + r->n; ++j)
+    size_t j0, j1; /* the last evaluation's forces cleared */
+    force_nodes(r, &j0, &j1);
+    for (size_t j = j0; j < j1; ++j)
         r->F[j] = r->g[j] = 0;
     r->n = 0;
     r->n_pts = 0;
@@ -414,19 +430,14 @@ static double patch_length_smooth(const tirenv_ring *r)
     return len;
 }
 
-/* The contact counts and, for the Winkler tread (with_max), its largest compression; the
- * shear-coupled tread's is its solve's (ring_shear.c), so its points are not walked. The
- * shear-coupled tread's solve puts F and g only on the nodes of the points from its first to
- * its last in contact (r->k_first, r->k_last), zero on the window's others: those alone are
- * counted. */
+/* The contact counts (over force_nodes) and, for the Winkler tread (with_max), its largest
+ * compression; the shear-coupled tread's is its solve's (ring_shear.c), so its points are not
+ * walked. */
 static void summarise_smooth(tirenv_ring *r, int with_max)
 {
     r->n_contact = r->n_belt = 0;
-    size_t j0 = r->lo, j1 = r->lo + r->n;
-    if (r->tread && r->n) {
-        j0 = r->k_first <= r->k_last ? r->pts[r->k_first].j : j1;
-        j1 = r->k_first <= r->k_last ? r->pts[r->k_last].j + 2 : j1;
-    }
+    size_t j0, j1;
+    force_nodes(r, &j0, &j1);
     for (size_t j = j0; j < j1; ++j) {
         r->n_contact += r->F[j] > 0;
         r->n_belt += r->g[j] > 0;
