@@ -88,7 +88,8 @@ struct tirenv_ring_tread {
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
-    tband ext, win;     /* the exterior's system; the window's factor (band_refactor) */
+    tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
+    int ext_all;        /* ext holds the factor of the longest exterior, M - 1 nodes */
     tband as, ap;       /* the window's system as assemble writes it, and the one before it,
                          * whose factor win holds if ap_ok (band_refactor) */
     int ap_ok;
@@ -665,15 +666,35 @@ static void ext_index(size_t Ne, size_t e[NB])
     e[0] = 0, e[1] = 1, e[2] = 2, e[3] = Ne - 4, e[4] = Ne - 2, e[5] = Ne - 1;
 }
 
+/* The factor of the exterior of ne nodes from node j0 into T->ext. Without lugs an open arc's
+ * stiffness depends only on its length (kap is the same at every node), and a shorter arc's is
+ * the leading block of a longer one's; so is its Cholesky factor the leading block of the
+ * longer one's, bit for bit (each column of band_factor depends only on the columns before it,
+ * which get the same operations in the same order whatever the length, and band_solve reads
+ * only the rows of the length it is given). One factorisation of the longest exterior, M - 1
+ * nodes, then serves every window length, where each length factorised its own. */
+static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
+{
+    tband *E = &T->ext;
+    if (!T->lugs && T->ext_all) {
+        E->N = 2 * ne;
+        return;
+    }
+    const size_t nf = T->lugs ? ne : T->M - 1;
+    band_reset(E, 2 * nf, 0);
+    add_arc(E, T, j0, nf);
+    band_factor(E); /* a principal block of the positive definite whole */
+    T->ext_all = !T->lugs;
+    E->N = 2 * ne;
+}
+
 /* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. */
 static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
                         double *cols)
 {
     const size_t M = T->M, ne = M - n, Ne = 2 * ne;
-    tband *E = &T->ext;
-    band_reset(E, Ne, 0);
-    add_arc(E, T, (lo + n) % M, ne);
-    band_factor(E); /* a principal block of the positive definite whole */
+    exterior_factor(T, (lo + n) % M, ne);
+    const tband *E = &T->ext;
     size_t eidx[NB];
     ext_index(Ne, eidx);
     double X[NB][NB];
@@ -1901,8 +1922,9 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
         return 0;
     }
     tirenv_ring_tread T = *T0; /* the constants; its own band and column */
-    if (band_alloc(&T.ext, Ne, 0))
+    if (band_alloc(&T.ext, 2 * M, 0))
         return 1;
+    T.ext_all = 0;
     T.col = malloc(Ne * sizeof *T.col);
     double *rhs = malloc(Ne * sizeof *rhs);
     if (!T.col || !rhs) {
