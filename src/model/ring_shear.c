@@ -89,7 +89,10 @@ struct tirenv_ring_tread {
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
-    int ext_all;        /* ext holds the factor of the longest exterior, M - 1 nodes */
+    int ext_all;        /* ext holds the factor of the longest exterior, M - 1 nodes, and ey
+                         * (3 x 2 M) its forward substitutions L^-1 e_a of the first three unit
+                         * vectors */
+    double *ey;
     tband as, ap;       /* the window's system as assemble writes it, and the one before it,
                          * whose factor win holds if ap_ok (band_refactor) */
     int ap_ok;
@@ -315,9 +318,12 @@ static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, 
 
 /* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
- * full tail two lanes at a time; the same operations in the same order for every t. */
+ * full tail two lanes at a time; the same operations in the same order for every t. Without a
+ * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
+ * before it holding their y already, and stop there (forward_only: x then holds L^-1 b). */
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
-                                                               const size_t t)
+                                                               const size_t t, const size_t i0,
+                                                               const int forward_only)
 {
     const size_t N = A->N, m = N - t;
     const double *L = A->L;
@@ -328,7 +334,7 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     v2d y01 = {0, 0}, y23 = {0, 0};
     if (t == TAIL)
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    for (size_t i = 0; i < m; ++i) {
+    for (size_t i = i0; i < m; ++i) {
         double v = x[i];
         if (i >= BAND_P) { /* unrolled: the same operations in the same order */
             const double *l = L + (BAND_P + 1) * (i - 1);
@@ -351,6 +357,8 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
                 y[a] -= B[TAIL * i + a] * xi;
         }
     }
+    if (forward_only)
+        return;
     if (t == TAIL)
         y[0] = y01[0], y[1] = y01[1], y[2] = y23[0], y[3] = y23[1];
     if (t > 0)
@@ -389,12 +397,16 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
 static void band_solve(const tband *A, double x[])
 {
     if (A->t == TAIL)
-        band_solve_t(A, x, TAIL);
+        band_solve_t(A, x, TAIL, 0, 0);
     else if (A->t == 0)
-        band_solve_t(A, x, 0);
+        band_solve_t(A, x, 0, 0, 0);
     else
-        band_solve_t(A, x, A->t);
+        band_solve_t(A, x, A->t, 0, 0);
 }
+
+/* The exterior's solve (no tail), its forward substitution from row i0 (x's rows before it
+ * hold their y: a right-hand side's leading zeros are their own y, +0 - l (+0) staying +0). */
+static void ext_solve(const tband *A, double x[], size_t i0) { band_solve_t(A, x, 0, i0, 0); }
 
 static int band_alloc(tband *A, size_t N, size_t t)
 {
@@ -473,7 +485,8 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
         band_alloc(&T->as, 2 * M, TAIL) || band_alloc(&T->ap, 2 * M, TAIL) ||
-        !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck))) {
+        !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck)) ||
+        !(T->ey = malloc(3 * 2 * M * sizeof *T->ey))) {
         tirenv_ring__tread_free(T);
         return NULL;
     }
@@ -510,6 +523,7 @@ void tirenv_ring__tread_free(tirenv_ring_tread *T)
     free(T->as.L);
     free(T->ap.L);
     free(T->ck);
+    free(T->ey);
     free(T);
 }
 
@@ -672,7 +686,9 @@ static void ext_index(size_t Ne, size_t e[NB])
  * longer one's, bit for bit (each column of band_factor depends only on the columns before it,
  * which get the same operations in the same order whatever the length, and band_solve reads
  * only the rows of the length it is given). One factorisation of the longest exterior, M - 1
- * nodes, then serves every window length, where each length factorised its own. */
+ * nodes, then serves every window length, where each length factorised its own; and so do the
+ * forward substitutions of the first three unit vectors, which compute_end's columns start
+ * from (row i's y depends only on the rows up to i). */
 static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
 {
     tband *E = &T->ext;
@@ -680,11 +696,17 @@ static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
         E->N = 2 * ne;
         return;
     }
-    const size_t nf = T->lugs ? ne : T->M - 1;
-    band_reset(E, 2 * nf, 0);
+    const size_t nf = T->lugs ? ne : T->M - 1, Nf = 2 * nf;
+    band_reset(E, Nf, 0);
     add_arc(E, T, j0, nf);
     band_factor(E); /* a principal block of the positive definite whole */
     T->ext_all = !T->lugs;
+    for (size_t a = 0; a < 3 && T->ext_all; ++a) {
+        double *y = T->ey + a * 2 * T->M;
+        memset(y, 0, Nf * sizeof *y);
+        y[a] = 1;
+        band_solve_t(E, y, 0, a, 1);
+    }
     E->N = 2 * ne;
 }
 
@@ -701,9 +723,16 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
     ext_coupling(T, X);
     double G[NB][NB];
     for (size_t a = 0; a < NB; ++a) {
-        memset(T->col, 0, Ne * sizeof *T->col);
-        T->col[eidx[a]] = 1;
-        band_solve(E, T->col);
+        /* Unit vectors: their leading zeros are their own y (ext_solve), and the first
+         * three's whole y the longest exterior's (exterior_factor). */
+        const int kept = T->ext_all && eidx[a] < 3;
+        if (kept) {
+            memcpy(T->col, T->ey + eidx[a] * 2 * M, Ne * sizeof *T->col);
+        } else {
+            memset(T->col, 0, Ne * sizeof *T->col);
+            T->col[eidx[a]] = 1;
+        }
+        ext_solve(E, T->col, kept ? Ne : eidx[a]);
         for (size_t c = 0; c < NB; ++c)
             G[c][a] = T->col[eidx[c]];
         if (cols)
@@ -1921,20 +1950,16 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
         }
         return 0;
     }
-    tirenv_ring_tread T = *T0; /* the constants; its own band and column */
-    if (band_alloc(&T.ext, 2 * M, 0))
-        return 1;
+    tirenv_ring_tread T = *T0; /* the constants; its own exterior factor */
     T.ext_all = 0;
-    T.col = malloc(Ne * sizeof *T.col);
+    T.ey = malloc(3 * 2 * M * sizeof *T.ey);
     double *rhs = malloc(Ne * sizeof *rhs);
-    if (!T.col || !rhs) {
-        free(T.ext.L);
-        free(T.col);
+    if (!T.ey || !rhs || band_alloc(&T.ext, 2 * M, 0)) {
+        free(T.ey);
         free(rhs);
         return 1;
     }
-    double Q[NB][NB];
-    compute_end(&T, lo, n, Q, NULL); /* leaves the exterior's factor in T.ext */
+    exterior_factor(&T, (lo + n) % M, ne);
     const double *s = T.s, k_sh = T.k_sh;
     const double *w = r->w, *u = T0->u;
     const size_t j0 = lo, j1 = lo + 1, jm2 = lo + n - 2, jm1 = lo + n - 1;
@@ -1952,7 +1977,7 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
             u_out[(lo + n + e) % M] = rhs[2 * e + 1];
     }
     free(T.ext.L);
-    free(T.col);
+    free(T.ey);
     free(rhs);
     return 0;
 }
