@@ -106,7 +106,8 @@ typedef struct {
     long knot;             /* the shear-coupled tread's knot at the point in the last solve's
                             * knots (ring_shear.c), -1: none (a point at a node) */
     unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
-    double e;              /* last evaluation: tread compression, m */
+    double e;              /* last evaluation: tread compression, m (the shear-coupled
+                            * tread: at the patch and beside it) */
     double phi, sn, cs;    /* angle (rad) and its sine and cosine */
     double dd;             /* d(d)/dz, m/m */
     double dphi;           /* d(phi)/dz: a ground vertex's cut moves with the centre (rad/m),
@@ -292,8 +293,9 @@ void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole);
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 
 /* The shear-coupled tread's contact on the window r->lo, r->n, the centre at abscissa x_c (m,
- * for the lugs): w, u, F, g per node, e (the ground's overlap with the tread surface) and f
- * per point, r->tread_max; TIRENV_ENOCONV with diag if Newton does not settle. */
+ * for the lugs): w, u, F, g per node, f per point, e (the ground's overlap with the tread
+ * surface) at the points in contact and the two beside them (r->k_first, r->k_last: the
+ * patch's), r->tread_max; TIRENV_ENOCONV with diag if Newton does not settle. */
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag);
 

@@ -1821,14 +1821,10 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         q->f = 0;
-        if (q->d == -INFINITY) {
-            q->e = -INFINITY;
+        if (q->st == 0) /* its overlap e below, if it borders the patch */
             continue;
-        }
         const double u = at_u(r, q, x);
         q->e = q->d - u; /* the ground's overlap with the tread surface */
-        if (q->st == 0)
-            continue;
         if (k_first > k_last)
             k_first = k;
         k_last = k;
@@ -1880,6 +1876,15 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
             xt[2 * i + 1] -= fg * ds, xt[2 * i + 3] += fg * ds;
             xt[2 * i] -= fb * ds, xt[2 * i + 2] += fb * ds;
         }
+    }
+    /* A free point's overlap is read only beside the patch (ring.c's patch length): there. */
+    if (k_first <= k_last) {
+        const size_t side[2] = {k_first - 1, k_last + 1}; /* k_first - 1 wraps at 0 */
+        for (int e = 0; e < 2; ++e)
+            if (side[e] < r->n_pts) {
+                tirenv_ring_point *q = &r->pts[side[e]];
+                q->e = q->d == -INFINITY ? -INFINITY : q->d - at_u(r, q, x);
+            }
     }
     *fz = sum_c;
     *fx = -sum_s;
