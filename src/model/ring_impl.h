@@ -313,6 +313,11 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
  * same bits, 1 if not, -1 if it cannot. *q the restart's column, *moved 1 if column c moved. */
 int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, int *moved);
 
+/* For tests: the exterior's six columns for a window of n nodes from ring_shear.c's shared
+ * factor of the longest exterior against that exterior's own factorisation and full solves;
+ * 0 if the same bits, 1 if not, -1 if it cannot (lugs, n out of range, out of memory). */
+int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n);
+
 /* A node's tread stiffness k_t R dtheta (N/m) at angle theta (rad) with the centre at x (m):
  * LUG_GROOVE_RATIO between lugs, which turn with the tire (ring.c). */
 double tirenv_ring__tread_kappa(const tirenv_ring *r, double theta, double x);

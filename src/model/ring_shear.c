@@ -2074,3 +2074,40 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     free(X.L);
     return st;
 }
+
+/* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end
+ * gives them (the longest exterior's shared factor, the forward substitutions it keeps and a
+ * unit vector's leading zeros skipped: exterior_factor, ext_solve) against a factorisation of
+ * that exterior alone and full solves; 0 if the same bits, 1 if not, -1 if it cannot (lugs,
+ * n + 4 > M or n < 2, out of memory). */
+int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
+    if (T->lugs || n < 2 || n + 4 > M)
+        return -1;
+    double *c1 = malloc(2 * NB * Ne * sizeof *c1);
+    tband E;
+    if (!c1 || band_alloc(&E, Ne, 0)) {
+        free(c1);
+        return -1;
+    }
+    double *c2 = c1 + NB * Ne, Q[NB][NB];
+    compute_end(T, 0, n, Q, c1);
+    band_reset(&E, Ne, 0);
+    add_arc(&E, T, n, ne);
+    int st = band_factor(&E) ? -1 : 0;
+    size_t eidx[NB];
+    ext_index(Ne, eidx);
+    for (size_t a = 0; a < NB && st == 0; ++a) {
+        double *c = c2 + a * Ne;
+        memset(c, 0, Ne * sizeof *c);
+        c[eidx[a]] = 1;
+        band_solve(&E, c);
+    }
+    if (st == 0)
+        st = !tirenv_ring__same_bits(c1, c2, NB * Ne);
+    free(E.L);
+    free(c1);
+    return st;
+}

@@ -678,6 +678,38 @@ static void test_refactor_restart(void **state)
     tirenv_ring_free(r);
 }
 
+/* The exterior's six columns of K_EE^-1 (ring_shear.c's compute_end: the end correction and the
+ * free nodes) from one factorisation of the longest exterior, M - 1 nodes, shared by every
+ * window length, with its kept forward substitutions of the first three unit vectors and the
+ * others' leading zeros skipped, against each length's own factorisation and full solves, bit
+ * for bit: lengths from the shortest to the longest window, in an order that makes the first
+ * one a long window's, on the default tire (M = 1440) and at another NODE_ANGLE (M = 982). A
+ * lugged tire keeps its own factorisation (the hook declines it). */
+static void test_exterior_shared_factor(void **state)
+{
+    (void)state;
+    for (int k = 0; k < 2; ++k) {
+        tirenv_tire t = tirenv_tire_default();
+        if (k)
+            t.ring.dtheta = M_PI / 491.2; /* rad */
+        tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(r);
+        assert_int_equal(r->M, k ? 982 : 1440);
+        const size_t M = r->M, n[] = {M / 3, 2, 157, 5, M - 4, 261, 37, M / 2 + 1};
+        for (size_t i = 0; i < sizeof n / sizeof n[0]; ++i)
+            assert_int_equal(tirenv_ring__tread_end_check(r, n[i]), 0);
+        assert_int_equal(tirenv_ring__tread_end_check(r, M - 3), -1);
+        tirenv_ring_free(r);
+    }
+    tirenv_tire t = tirenv_tire_default();
+    t.ring.lug_count = 23;
+    t.ring.lug_ratio = 0.3;
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    assert_int_equal(tirenv_ring__tread_end_check(r, 157), -1);
+    tirenv_ring_free(r);
+}
+
 /* The contact solved on the sub-window of the nodes in contact (ring_shear.c, docs/models.md
  * 5.2-5.3) is the whole window's minimum: over the bench's 0.30 x 0.10 m cleat with the default
  * tire (its layer and NODE_ANGLE), at 25 of the model's own equilibria from first contact to
@@ -758,6 +790,7 @@ int main(void)
         cmocka_unit_test(test_tread_exterior),
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
+        cmocka_unit_test(test_exterior_shared_factor),
         cmocka_unit_test(test_sub_window_is_whole_window),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
