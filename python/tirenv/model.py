@@ -73,10 +73,12 @@ class Model:
         needs_network = bool(lib.tirenv_model_type_flags(t) & lib.TIRENV_MODEL_NEEDS_NETWORK)
         if needs_network and network is None:
             raise invalid(f"the {name} model needs network=Network(path)", "network")
-        # The models that must describe this tire, as the CLI has them: the springs model
-        # also stands for the network's and the rigid disc's contact length.
-        needs = (lib.TIRENV_TIR_RING if name == "ring" else
-                 0 if name in ("cam", "point", "rigid") else lib.TIRENV_TIR_SPRINGS)
+        # The models that must describe this tire, by the library's one rule (tirenv_tir_need;
+        # a Tire serves every model, so none is alone); a network whose file records no
+        # contact law takes the springs model's, as the CLI's does.
+        needs = lib.tirenv_tir_need(t, 0)
+        if needs_network and not network._law.n:
+            needs |= lib.TIRENV_TIR_SPRINGS
         self.tire._require(needs)
         m = lib.tirenv_model_alloc(t, self.tire._t)
         if m == ffi.NULL:
