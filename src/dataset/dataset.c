@@ -202,26 +202,27 @@ static int add_case(tirenv_dataset *ds, size_t *cap, const tirenv_case *c)
     return TIRENV_OK;
 }
 
-/* The manifest holds other than the cases source.txt declares: one cut at a line end reads as
- * a shorter manifest (every row it keeps is whole), so without the count it would pass for a
- * smaller data set. At the first row beyond the count, or after the last line. */
+/* The manifest holds other than the cases source.txt (or a sweep's sweep.txt) declares: one
+ * cut at a line end reads as a shorter manifest (every row it keeps is whole), so without the
+ * count it would pass for a smaller data set. At the first row beyond the count, or after the
+ * last line. */
 static int cases_differ(const tirenv_csv__reader *r, const tirenv_dataset *ds,
-                        const tirenv_dataset_source *src)
+                        const tirenv_dataset__declared *decl)
 {
-    const int beyond = ds->n == src->cases;
+    const int beyond = ds->n == decl->cases;
     const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + !beyond, "",
-                                    "%s%zu cases, but %s/source.txt:%zu declares cases = %zu; "
-                                    "expected that many (%s, or another data set's "
-                                    "source.txt)", beyond ? "more than " : "", ds->n, ds->dir,
-                                    src->cases_line, src->cases,
-                                    beyond ? "rows added" : "a manifest cut short");
+                                    "%s%zu cases, but %s:%zu declares %s; expected that many "
+                                    "(%s, or another data set's %s)", beyond ? "more than " : "",
+                                    ds->n, decl->file, decl->line, decl->what,
+                                    beyond ? "rows added" : "a manifest cut short",
+                                    strrchr(decl->file, '/') + 1);
     if (r->diag)
         r->diag->column = 1;
     return status;
 }
 
 static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
-                          const tirenv_dataset_source *src)
+                          const tirenv_dataset__declared *decl)
 {
     int more = tirenv_csv__next(r);
     if (more == 0) {
@@ -236,8 +237,8 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
     size_t cap = 0;
     name_set names = {NULL, 0};
     while (status == TIRENV_OK && (more = tirenv_csv__next(r)) > 0) {
-        if (src->cases && ds->n == src->cases) {
-            status = cases_differ(r, ds, src);
+        if (decl->cases && ds->n == decl->cases) {
+            status = cases_differ(r, ds, decl);
             break;
         }
         if (ds->n == TIRENV_DATASET__MAX_CASES) {
@@ -256,8 +257,8 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
     free(names.slot);
     if (status == TIRENV_OK && more < 0)
         status = -more;
-    if (status == TIRENV_OK && src->cases && ds->n != src->cases)
-        status = cases_differ(r, ds, src);
+    if (status == TIRENV_OK && decl->cases && ds->n != decl->cases)
+        status = cases_differ(r, ds, decl);
     if (status == TIRENV_OK && ds->n == 0) {
         status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + 1, "",
                               "no cases after the header; expected one line per case");
@@ -291,13 +292,23 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     char path[sizeof out->dir + 16];
     snprintf(path, sizeof path, "%s/cases.csv", dir);
+    /* The count source.txt declares, else a sweep's sweep.txt. */
     tirenv_dataset_source src;
+    tirenv_dataset__declared decl = {0};
     int status = tirenv_dataset_source_read(dir, &src, diag);
+    if (status == TIRENV_OK && src.cases) {
+        decl.cases = src.cases;
+        decl.line = src.cases_line;
+        snprintf(decl.file, sizeof decl.file, "%s/source.txt", dir);
+        snprintf(decl.what, sizeof decl.what, "cases = %zu", src.cases);
+    } else if (status == TIRENV_OK) {
+        status = tirenv_dataset__sweep_declared(dir, &decl, diag);
+    }
     if (status == TIRENV_OK) {
         tirenv_csv__reader r;
         status = tirenv_csv__open(&r, path, diag);
         if (status == TIRENV_OK)
-            status = parse_manifest(&r, out, &src);
+            status = parse_manifest(&r, out, &decl);
         tirenv_csv__close(&r);
     }
     for (size_t i = 0; i < out->n && status == TIRENV_OK; i++) {

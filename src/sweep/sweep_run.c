@@ -470,8 +470,33 @@ static int tire_text(const char *dir, const tirenv_tire *tire, char **text, size
     return status;
 }
 
-int tirenv_sweep__target_state(const char *dir, const char *spec, const char *tire, size_t tire_len,
+/* A complete directory's tables hold every row of the sweep (shard): a copy cut at a line end
+ * holds whole rows only, and would pass for this sweep, complete, with cases missing. */
+static int whole_tables(const char *dir, size_t m, size_t shard, size_t shards,
                         tirenv_diag *diag)
+{
+    static const char *const tables[] = {"cases.csv", "sweep.csv"};
+    int status = TIRENV_OK;
+    for (size_t t = 0; t < 2 && !status; ++t) {
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%s", dir, tables[t]);
+        char *text = NULL, **rows = NULL;
+        size_t len = 0, head = 0, n_rows = 0;
+        status = tirenv_sweep__read_text(path, TIRENV_SWEEP__TABLE_MAX, &text, &len, diag);
+        if (!status)
+            status = tirenv_sweep__split_table(text, len, path, &head, &rows, &n_rows, diag);
+        if (!status)
+            status = tirenv_sweep__check_rows(dir, tables[t], tirenv_sweep__lines(text, head),
+                                              rows, n_rows, m, shard, shards, diag);
+        free(rows);
+        free(text);
+    }
+    return status;
+}
+
+int tirenv_sweep__target_state(const char *dir, const char *spec, const char *tire,
+                               size_t tire_len, size_t m, size_t shard, size_t shards,
+                               tirenv_diag *diag)
 {
     struct stat st;
     if (stat(dir, &st) != 0)
@@ -490,8 +515,10 @@ int tirenv_sweep__target_state(const char *dir, const char *spec, const char *ti
     snprintf(path, sizeof path, "%s/tire.tir", dir);
     if (same == 1 && (same = same_text(path, tire, tire_len, "the tire", diag)) < 0)
         return same;
-    if (same == 1)
-        return 1;
+    if (same == 1) {
+        const int status = whole_tables(dir, m, shard, shards, diag);
+        return status ? -status : 1;
+    }
     DIR *d = opendir(dir);
     if (!d)
         return -tirenv_error(diag, TIRENV_EIO, dir, 0, "", "cannot read: %s", strerror(errno));
@@ -689,7 +716,8 @@ int tirenv_sweep_run(const char *dir, const tirenv_tire *tire, const tirenv_swee
         status = tirenv_mkdir_p(parent, diag);
     if (!status)
         status = tire_text(parent, tire, &tire_s, &tire_len, diag);
-    int state = status ? 0 : tirenv_sweep__target_state(dir, spec, tire_s, tire_len, diag);
+    int state = status ? 0 : tirenv_sweep__target_state(dir, spec, tire_s, tire_len, r.n,
+                                                                s->shard, s->shards, diag);
     if (state < 0)
         status = -state;
     if (!status && state == 1) {
