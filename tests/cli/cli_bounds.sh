@@ -22,6 +22,16 @@ run timeout 20 "$bin" envelope --model springs --load 13000 --profile p.csv --st
     --x-from 1e300 --x-to 1e300 -o out.csv
 check "--stream at x = 1e300: exit 1, the step does not move x" \
     '[ $rc -eq 1 ] && grep -q "does not move x" err && no_file out.csv'
+# A road whose last x is 1e308: refused at its row as the whole read refuses it, where --stream
+# took it from the file's end unchecked for its sweep's end ("inf positions ... is too many",
+# exit 1, naming no file).
+printf 'x_m,z_m\n0,0\n1e308,0\n' >far.csv
+for mode in "" "--stream"; do
+    run timeout 20 "$bin" envelope --model springs --load 13000 --profile far.csv $mode \
+        -o out.csv
+    check "envelope $mode over a road to x = 1e308: exit 2 at far.csv:3, x_m named" \
+        '[ $rc -eq 2 ] && grep -q "far.csv:3:1: x_m: x_m = 1e308 is beyond" err && no_file out.csv'
+done
 # A sweep that holds its points (standard output) stops at 1e7 positions; one whose rows go to
 # a CSV file as they are computed takes up to 1e8, as --stream (not run: counted).
 run timeout 20 "$bin" envelope --model springs --load 13000 --profile p.csv --x-to 2e4
