@@ -64,6 +64,22 @@ for kv in MASS=1e9 SEAT_AHEAD_OF_CG=1e9 GRAVITY=1e-308 FRONT_AXLE.TIRE_STIFFNESS
         '[ $rc -eq 2 ] && grep -q "${kv%%=*}: .*\(plausible range\|unphysical\)" err'
 done
 
+# A rig log's reading beyond 1e9 (s or m), at its line, column and field: one sample of 1e308
+# was taken as a late time (exit 0), or made an error at another line and field, or overflowed
+# into a curve point refused naming the output file.
+log=$data/../../data/dataset/logs/A.csv
+col=1
+for f in t_s x_m z_m; do
+    for v in 1e308 -1e308; do
+        awk -F, -v OFS=, -v c=$col -v v=$v 'NR == 5 { $c = v } { print }' "$log" >far.csv
+        run "$bin" import --log far.csv --cleat 0.05,0.025 --contact-length 0.28 -o imp.csv
+        check "import: a log's $f = $v on line 5: exit 2 there, $f named, no output" \
+            '[ $rc -eq 2 ] && grep -q "far.csv:5:[0-9]*: $f: $f = $v is beyond" err &&
+             no_file imp.csv'
+    done
+    col=$((col + 1))
+done
+
 # Resources: a sweep of more than 1e6 cases is refused before anything is written; a
 # manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
 # name took 66 s there); a model file past 64 MiB is refused without being parsed.
