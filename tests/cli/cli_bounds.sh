@@ -80,6 +80,30 @@ for f in t_s x_m z_m; do
     col=$((col + 1))
 done
 
+# OpenCRG: a height beyond 1e9 m at its line, column and long section (1e308 became -1e308 on
+# every row of a converted track, exit 0, and streamed "out of memory"); an increment beyond a
+# road's longest segment, 1e7 m, at its header line (convert wrote a CSV tirenv refused, and a
+# streamed sweep said "out of memory").
+crg=$data/samples/crg/handmade_straight.crg
+sep=$(grep -n '^\$\$\$\$' "$crg" | cut -d: -f1)
+awk -v l=$((sep + 1)) 'NR == l { $0 = sprintf("%10s", "1e308") substr($0, 11) } { print }' \
+    "$crg" >far.crg
+for mode in "convert --profile far.crg -o out.csv" \
+            "envelope --model rigid --load 20000 --profile far.crg --stream -o out.csv"; do
+    run "$bin" $mode
+    check "${mode%% *} of a .crg with a height of 1e308: exit 2 at its line and long section" \
+        '[ $rc -eq 2 ] && grep -q "far.crg:$((sep + 1)):1: long section 1 .*1e+308 m is beyond" err &&
+         no_file out.csv'
+done
+sed 's/^REFERENCE_LINE_INCREMENT = 1.0/REFERENCE_LINE_INCREMENT = 2e7/' "$crg" >wide.crg
+for mode in "convert --profile wide.crg -o out.csv" \
+            "envelope --model rigid --load 20000 --profile wide.crg --stream --dx 1e5 -o out.csv"; do
+    run "$bin" $mode
+    check "${mode%% *} of a .crg 2e7 m between cross sections: exit 2 at the increment" \
+        '[ $rc -eq 2 ] && grep -q "wide.crg:32: REFERENCE_LINE_INCREMENT: 20000000 m; expected at most" err &&
+         no_file out.csv'
+done
+
 # Resources: a sweep of more than 1e6 cases is refused before anything is written; a
 # manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
 # name took 66 s there); a model file past 64 MiB is refused without being parsed.
