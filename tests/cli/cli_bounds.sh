@@ -104,6 +104,17 @@ for mode in "convert --profile wide.crg -o out.csv" \
          no_file out.csv'
 done
 
+# RDF: the mean of the sides (the default) is refused where a side is, at its line: 1e308 on
+# the left and -1e308 on the right made a mean of 0 (exit 0), 1e308 on both "z = inf".
+rdf=$data/samples/rdf/plateau.rdf
+sed '60s/.*/   190.000   1e308   -1e308/' "$rdf" >far.rdf
+for side in mean left right; do
+    run "$bin" convert --profile far.rdf --side $side -o out.csv
+    check "convert --side $side of an RDF with 1e308 and -1e308 on line 60: exit 2 there" \
+        '[ $rc -eq 2 ] && grep -q "far.rdf:60: XZ_DATA: vertex 35: z = -*1e+308 m is beyond" err &&
+         no_file out.csv'
+done
+
 # Resources: a sweep of more than 1e6 cases is refused before anything is written; a
 # manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
 # name took 66 s there); a model file past 64 MiB is refused without being parsed.
