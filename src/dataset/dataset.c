@@ -60,11 +60,16 @@ static int parse_split(const tirenv_csv__reader *r, const tirenv_csv__field *f,
                             "expected train, control or validation, got '%.60s'", f->text);
 }
 
-/* A positive length or force: what every number of the manifest is. */
+/* A positive length or force: what every number of the manifest is; at most 1e9 (m or N, a
+ * road's bound): a load of 1e308 was listed as 309 digits and trained into a network's
+ * contact law with exit 0. */
 static int parse_positive(const tirenv_csv__reader *r, const tirenv_csv__field *f, size_t col,
                           double *out)
 {
-    const int status = tirenv_csv__number(r, f, manifest_names[col], out);
+    const int status = tirenv_csv__number_within(r, f, manifest_names[col], 1e9,
+                                                 col == COL_LOAD ? "a force in N"
+                                                                 : "a length in m",
+                                                 out);
     if (status == TIRENV_OK && !(*out > 0))
         return tirenv_csv__fail(r, f->column, manifest_names[col],
                                 "expected a positive number, got '%.60s'", f->text);

@@ -55,14 +55,9 @@ static int log_parse_row(tirenv_csv__reader *r, tirenv_rig__log_file *log, size_
     tirenv_csv__field f[LOG_FIELDS + 1];
     int status = tirenv_csv__fields(r, log_names, LOG_FIELDS, f);
     double v[LOG_FIELDS];
-    for (size_t k = 0; k < LOG_FIELDS && status == TIRENV_OK; k++) {
-        status = tirenv_csv__number(r, &f[k], log_names[k], &v[k]);
-        if (status == TIRENV_OK && !(v[k] >= -reading_max && v[k] <= reading_max))
-            status = tirenv_csv__fail(r, f[k].column, log_names[k],
-                                      "%s = %.40s is beyond +-%g; expected a rig's reading "
-                                      "(t in s, x and z in m)", log_names[k], f[k].text,
-                                      reading_max);
-    }
+    for (size_t k = 0; k < LOG_FIELDS && status == TIRENV_OK; k++)
+        status = tirenv_csv__number_within(r, &f[k], log_names[k], reading_max,
+                                           "a rig's reading (t in s, x and z in m)", &v[k]);
     if (status != TIRENV_OK)
         return status;
     if (log->n == *cap && log_grow(log, cap, 2 * *cap) != TIRENV_OK)

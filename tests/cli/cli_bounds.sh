@@ -115,6 +115,22 @@ for side in mean left right; do
          no_file out.csv'
 done
 
+# A data set's numbers within 1e9 (m or N), at their line, column and field: a load of 1e308
+# was listed as 309 digits and trained into a network (exit 0), an imported curve's h of 1e308
+# fitted into a tire file (exit 0) and made training fail naming no file.
+cp -R "$data/dataset_good" dsl
+sed -i 's/^J,train,0.33,13527.5/J,train,0.33,1e308/' dsl/cases.csv
+run "$bin" train --data dsl --seeds 1 -o n.json
+check "train: a manifest's load_N = 1e308: exit 2 at its line and column, no model file" \
+    '[ $rc -eq 2 ] && grep -q "dsl/cases.csv:5:14: load_N: load_N = 1e308 is beyond" err &&
+     no_file n.json'
+cp -R "$data/dataset_good" dsc
+sed -i 's/^0.5,-0.245548,0.0213867/0.5,-0.245548,1e308/' dsc/curves/J.csv
+run "$bin" fit --data dsc -o f.tir
+check "fit: a curve's h_m = 1e308: exit 2 at its line and column, no tire file" \
+    '[ $rc -eq 2 ] && grep -q "dsc/curves/J.csv:5:15: h_m: h_m = 1e308 is beyond" err &&
+     no_file f.tir'
+
 # Resources: a sweep of more than 1e6 cases is refused before anything is written; a
 # manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
 # name took 66 s there); a model file past 64 MiB is refused without being parsed.
