@@ -131,6 +131,13 @@ check "fit: a curve's h_m = 1e308: exit 2 at its line and column, no tire file" 
     '[ $rc -eq 2 ] && grep -q "dsc/curves/J.csv:5:15: h_m: h_m = 1e308 is beyond" err &&
      no_file f.tir'
 
+# A sweep's cleat longer than a road's longest segment (1e7 m), named as envelope --cleat
+# names it: 1e308 ran into "case c0000 (...): out of memory".
+run "$bin" sweep --model cam --lengths 1e308 --heights 0.05 --contact-lengths 0.3 -o sl
+check "sweep --lengths 1e308: exit 2 naming lengths and the 1e7 m bound, nothing written" \
+    '[ $rc -eq 2 ] && grep -q "lengths: value 1 is 1e+308; expected a positive number up to 1e7 m" err &&
+     [ ! -e sl ] && [ ! -e sl.partial ]'
+
 # Resources: a sweep of more than 1e6 cases is refused before anything is written; a
 # manifest's duplicate case is found on its own line among 100,000 (a scan of every earlier
 # name took 66 s there); a model file past 64 MiB is refused without being parsed.
