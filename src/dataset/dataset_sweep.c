@@ -69,6 +69,8 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
     if (status || !cases_line)
         return status;  /* a sweep.txt without the count (none of tirenv's): nothing said */
     out->cases = cases > k ? (cases - k - 1) / n + 1 : 0;
+    if (!out->cases)
+        return TIRENV_OK;  /* a shard beyond the grid: no rows, which the manifest refuses */
     out->line = cases_line;
     snprintf(out->file, sizeof out->file, "%s", path);
     if (n > 1)
