@@ -287,6 +287,21 @@ static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
     return tirenv_rig_import(c->log, &s, &c->curve, diag);
 }
 
+/* A sweep's curve has the points of the data sets' x_N grid (docs/formats.md section 13):
+ * one cut at a line end, points short, is no whole case, where it read as a shorter curve. */
+static int sweep_curve(const tirenv_case *c, tirenv_diag *diag)
+{
+    const tirenv_import_settings g = tirenv_import_default();
+    const size_t n = (size_t)floor((g.xN_to - g.xN_from) / g.dxN + 1e-9) + 1;
+    if (c->curve.n == n)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EPARSE, c->curve_path[0] ? c->curve_path : c->log, 0,
+                        "x_N", "%zu points, where a sweep's curve (sweep.txt beside the "
+                        "manifest) has the %zu of the x_N grid %g to %g every %g; expected a "
+                        "whole case file (cut short?)", c->curve.n, n, g.xN_from, g.xN_to,
+                        g.dxN);
+}
+
 int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag)
 {
     *out = (tirenv_dataset){{0}, 0, NULL};
@@ -309,6 +324,7 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
     } else if (status == TIRENV_OK) {
         status = tirenv_dataset__sweep_declared(dir, &decl, diag);
     }
+    const int from_sweep = decl.cases && strcmp(strrchr(decl.file, '/'), "/sweep.txt") == 0;
     if (status == TIRENV_OK) {
         tirenv_csv__reader r;
         status = tirenv_csv__open(&r, path, diag);
@@ -323,6 +339,8 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
                                   "0, got %g", out->cases[i].name, R0);
         else
             status = load_curve(&out->cases[i], R0, diag);
+        if (!status && from_sweep)
+            status = sweep_curve(&out->cases[i], diag);
     }
     if (status != TIRENV_OK)
         tirenv_dataset_free(out);

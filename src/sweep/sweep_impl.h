@@ -72,6 +72,11 @@ int tirenv_sweep__check_rows(const char *dir, const char *table, size_t head_lin
                              char **rows, size_t n_rows, size_t m, size_t shard, size_t shards,
                              tirenv_diag *diag);
 
+/* The log and curve fields (7 and 8) of a manifest row: 0, or -1 where the row does not name
+ * them as a sweep writes them (logs/<case>.csv, empty without --rig; curves/<case>.csv). */
+int tirenv_sweep__row_files(const char *row, const char **log, size_t *log_len,
+                            const char **curve, size_t *curve_len);
+
 /* The '\n' in the len bytes of text. */
 size_t tirenv_sweep__lines(const char *text, size_t len);
 

@@ -158,35 +158,6 @@ static int bring(const char *part_dir, const char *rel, size_t rel_len, const ch
     return copy_file(from, to, diag);
 }
 
-/* The log and curve fields (7 and 8) of a manifest row. */
-static int row_files(const char *row, const char **log, size_t *log_len, const char **curve,
-                     size_t *curve_len)
-{
-    const char *f = row;
-    for (int k = 0; k < 6; ++k) {
-        f = strchr(f, ',');
-        if (!f)
-            return -1;
-        ++f;
-    }
-    const char *comma = strchr(f, ',');
-    if (!comma || strchr(comma + 1, ','))
-        return -1;
-    *log = f;
-    *log_len = (size_t)(comma - f);
-    *curve = comma + 1;
-    *curve_len = strlen(comma + 1);
-    /* Only files inside the part: a sweep writes logs/<case>.csv and curves/<case>.csv. */
-    if (*log_len && (*log_len <= 5 || strncmp(*log, "logs/", 5) != 0 ||
-                     memchr(*log + 5, '/', *log_len - 5)))
-        return -1;
-    if (*curve_len <= 7 || strncmp(*curve, "curves/", 7) != 0 || strchr(*curve + 7, '/') ||
-        strstr(row, ".."))
-        return -1;
-    return 0;
-}
-
-/* The merged tables: the shards' rows interleaved back into case order. */
 static int write_table(const char *path, const part *parts, size_t n, int keys, size_t m,
                        tirenv_diag *diag)
 {
@@ -241,7 +212,7 @@ static int merge_into(const char *stage, const part *parts, size_t n, size_t m,
         for (size_t j = 0; j < parts[k].n_case_rows && !status; ++j) {
             const char *log = NULL, *curve = NULL;
             size_t log_len = 0, curve_len = 0;
-            if (row_files(parts[k].case_rows[j], &log, &log_len, &curve, &curve_len) != 0)
+            if (tirenv_sweep__row_files(parts[k].case_rows[j], &log, &log_len, &curve, &curve_len) != 0)
                 status = tirenv_error(diag, TIRENV_EPARSE, parts[k].dir, j + 1, "cases.csv",
                                       "row %zu does not name its files as a sweep does", j + 1);
             char c_path[1200], l_path[1200];

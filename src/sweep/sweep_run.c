@@ -470,8 +470,30 @@ static int tire_text(const char *dir, const tirenv_tire *tire, char **text, size
     return status;
 }
 
-/* A complete directory's tables hold every row of the sweep (shard): a copy cut at a line end
- * holds whole rows only, and would pass for this sweep, complete, with cases missing. */
+/* Each case file a manifest's rows name, whole (tirenv_sweep__check_case). */
+static int whole_cases(const char *dir, char **rows, size_t n_rows, tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    for (size_t j = 0; j < n_rows && !status; ++j) {
+        const char *log = NULL, *curve = NULL;
+        size_t log_len = 0, curve_len = 0;
+        if (tirenv_sweep__row_files(rows[j], &log, &log_len, &curve, &curve_len) != 0)
+            return tirenv_error(diag, TIRENV_EPARSE, dir, 0, "cases.csv",
+                                "row %zu does not name its files as a sweep does", j + 1);
+        char c_path[1200], l_path[1200];
+        snprintf(c_path, sizeof c_path, "%s/%.*s", dir, (int)curve_len, curve);
+        snprintf(l_path, sizeof l_path, "%s/%.*s", dir, (int)log_len, log);
+        status = tirenv_sweep__check_case(c_path, log_len ? l_path : NULL,
+                                          "in a sweep taken for complete",
+                                          "remove the directory and run the sweep again, or "
+                                          "copy it whole", diag);
+    }
+    return status;
+}
+
+/* A complete directory's tables hold every row of the sweep (shard), and its case files are
+ * whole: a copy cut at a line end holds whole rows only, and would pass for this sweep,
+ * complete, with cases missing or a curve short of its points. */
 static int whole_tables(const char *dir, size_t m, size_t shard, size_t shards,
                         tirenv_diag *diag)
 {
@@ -488,6 +510,8 @@ static int whole_tables(const char *dir, size_t m, size_t shard, size_t shards,
         if (!status)
             status = tirenv_sweep__check_rows(dir, tables[t], tirenv_sweep__lines(text, head),
                                               rows, n_rows, m, shard, shards, diag);
+        if (!status && t == 0)
+            status = whole_cases(dir, rows, n_rows, diag);
         free(rows);
         free(text);
     }

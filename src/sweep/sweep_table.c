@@ -70,6 +70,35 @@ int tirenv_sweep__check_rows(const char *dir, const char *table, size_t head_lin
     return TIRENV_OK;
 }
 
+int tirenv_sweep__row_files(const char *row, const char **log, size_t *log_len,
+                            const char **curve, size_t *curve_len)
+{
+    const char *f = row;
+    for (int k = 0; k < 6; ++k) {
+        f = strchr(f, ',');
+        if (!f)
+            return -1;
+        ++f;
+    }
+    const char *comma = strchr(f, ',');
+    if (!comma || strchr(comma + 1, ','))
+        return -1;
+    *log = f;
+    *log_len = (size_t)(comma - f);
+    *curve = comma + 1;
+    *curve_len = strlen(comma + 1);
+    /* Only files inside the part: a sweep writes logs/<case>.csv and curves/<case>.csv. */
+    if (*log_len && (*log_len <= 5 || strncmp(*log, "logs/", 5) != 0 ||
+                     memchr(*log + 5, '/', *log_len - 5)))
+        return -1;
+    if (*curve_len <= 7 || strncmp(*curve, "curves/", 7) != 0 || strchr(*curve + 7, '/') ||
+        strstr(row, ".."))
+        return -1;
+    return 0;
+}
+
+/* The merged tables: the shards' rows interleaved back into case order. */
+
 size_t tirenv_sweep__lines(const char *text, size_t len)
 {
     size_t n = 0;

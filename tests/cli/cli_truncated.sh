@@ -148,6 +148,16 @@ run "$bin" sweep $grid -o sw2
 head -n -1 sw2/sweep.csv >k.csv && cp k.csv sw2/sweep.csv
 refused "... its sweep.csv cut so: the same sweep again" sw2/sweep.csv $(($(wc -l <k.csv) + 1)) \
     "11 rows, but the sweep has 12 cases" - "$bin" sweep $grid -o sw2
+# A case's curve cut at a line end, points short: no whole case of the sweep.
+run "$bin" sweep $grid -o sw3
+head -n -3 sw3/curves/c0002.csv >c.csv && cp c.csv sw3/curves/c0002.csv
+run "$bin" dataset list sw3
+check "a sweep's curve cut at a line end: dataset list, exit 2 naming the curve and x_N" \
+    '[ $rc -eq 2 ] && grep -q "sw3/curves/c0002.csv: x_N: 98 points, where a sweep.s curve" err'
+run "$bin" sweep $grid -o sw3
+check "... the same sweep again: exit 2 naming the curve (not 'complete, nothing to do')" \
+    '[ $rc -eq 2 ] &&
+     grep -q "sw3/curves/c0002.csv: x_N: this file, in a sweep taken for complete, .*: 98 points" err'
 for k in 0 1; do
     "$bin" sweep $grid --shard $k/2 -o part$k 2>/dev/null
 done
