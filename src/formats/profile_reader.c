@@ -225,7 +225,8 @@ static int extent_ends(tirenv_road_file *f, const tirenv_profile_source *src, si
  * the file's end (tirenv_profile_csv__last_x); where the last cannot be told so, lies before
  * the first (an x decreases somewhere) or beyond the coordinates a road may have (the rows'
  * check, which the tail's parse does not make: 1e308 became a sweep of too many positions, a
- * misuse naming no file), every row is read, and the first bad one named. An OpenCRG or RDF road's come from what its readers share (extent_ends). */
+ * misuse naming no file), every row is read, and the first bad one named. An OpenCRG or RDF
+ * road's come from what its readers share (extent_ends). */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                             const double v[], int every_row, double *first, double *last,
                             tirenv_diag *diag)

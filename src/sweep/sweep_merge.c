@@ -212,7 +212,8 @@ static int merge_into(const char *stage, const part *parts, size_t n, size_t m,
         for (size_t j = 0; j < parts[k].n_case_rows && !status; ++j) {
             const char *log = NULL, *curve = NULL;
             size_t log_len = 0, curve_len = 0;
-            if (tirenv_sweep__row_files(parts[k].case_rows[j], &log, &log_len, &curve, &curve_len) != 0)
+            if (tirenv_sweep__row_files(parts[k].case_rows[j], &log, &log_len, &curve,
+                                        &curve_len) != 0)
                 status = tirenv_error(diag, TIRENV_EPARSE, parts[k].dir, j + 1, "cases.csv",
                                       "row %zu does not name its files as a sweep does", j + 1);
             char c_path[1200], l_path[1200];
