@@ -240,7 +240,6 @@ int cli_model_type(const char *name, const tirenv_model_type **type)
     return CLI_EXIT_USAGE;
 }
 
-/* The network comes with the radius its x_N refers to, recorded in the model file. */
 /* tirenv_tir_need leaves the springs model to a network whose file records a contact law; an
  * older file's takes the springs model's contact length, which a tire file whose springs model
  * was neither given nor derived does not describe (the default tire's would stand in). */
@@ -256,6 +255,7 @@ int cli_nn_springs_stand_in(const char *nn_path, const char *tire_path,
                         "record it", tire_path);
 }
 
+/* The network comes with the radius its x_N refers to, recorded in the model file. */
 int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_options *o,
               tirenv_model **out)
 {

@@ -221,6 +221,16 @@ int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
         status = check_list("loads", s->loads, s->n_loads, INFINITY, 0, NULL, diag);
     if (status)
         return status;
+    /* A case's contact length is the model's at its load; the rigid disc and the point have
+     * none (the network's is its file's law): refused before anything is written, where each
+     * case failed after DIR.partial was made. */
+    const unsigned flags = tirenv_model_type_flags(s->type);
+    if (s->n_loads &&
+        !(flags & (TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_NEEDS_NETWORK)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
+                            "the %s model has no contact length of its own at a load; expected "
+                            "the regimes as contact lengths (--contact-lengths)",
+                            tirenv_model_type_name(s->type));
     if (s->n_keys > TIRENV_SWEEP_MAX_KEYS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "keys", "%zu tire keys; at most %d",
                             s->n_keys, TIRENV_SWEEP_MAX_KEYS);

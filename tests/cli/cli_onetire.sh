@@ -132,6 +132,10 @@ check "... and in the ride, an axle's tire without one: exit 2, the same words" 
 run "$bin" envelope --model rigid --tire nof.tir --cleat 0.10,0.10 --contact-length 0.3 -o rc.csv
 check "the rigid disc at a --contact-length (the springs model's load) there: exit 2, FNOMIN" \
     '[ $rc -eq 2 ] && grep -q "FNOMIN" err && no_file rc.csv'
+run "$bin" sweep --model rigid --tire nof.tir --lengths 0.1 --heights 0.05 --contact-lengths 0.3 \
+    -o rsw
+check "... and in a sweep over contact lengths (its cases' loads): exit 2, FNOMIN, nothing written" \
+    '[ $rc -eq 2 ] && grep -q "FNOMIN" err && [ ! -e rsw ] && [ ! -e rsw.partial ]'
 # In the ride (inputs at each axle's static load), the network's input to the rear axle over
 # the cleat against the ring's, the tire it was trained on (the data set's tire.tir): the RMS
 # over the samples where either is above 0.1 mm within the network's own validation RMS. The
