@@ -47,7 +47,11 @@ def test_foreign_tir_without_fnomin_refuses_the_springs_model(tmp_path, source_d
     with pytest.raises(tirenv.TirenvError) as e:
         tirenv.Model("springs", tire)
     assert e.value.field == "FNOMIN"
-    tirenv.Model("point", tire)  # needs no enveloping section
+    point = tirenv.Model("point", tire)  # needs no enveloping section
+    # ... but its load at a contact length is the springs model's (as the CLI's).
+    with pytest.raises(tirenv.TirenvError) as e:
+        point.load_for_contact_length(0.2)
+    assert e.value.field == "FNOMIN"
     # The network's contact length is its own file's law (tirenv_tir_need); an older file's
     # without one would take the springs model's, which this tire file cannot describe.
     with warnings.catch_warnings():
