@@ -64,6 +64,14 @@ for kv in MASS=1e9 SEAT_AHEAD_OF_CG=1e9 GRAVITY=1e-308 FRONT_AXLE.TIRE_STIFFNESS
         '[ $rc -eq 2 ] && grep -q "${kv%%=*}: .*\(plausible range\|unphysical\)" err'
 done
 
+# A .veh's MASS of 1e308: its overflowing load is named at MASS's line, not the tire stiffness's.
+sed 's/^MASS  *= 4500 /MASS = 1e308 /' "$data/../../data/vehicles/tractor.veh" >heavy.veh
+ln -s "$data/../../data/tires" tires 2>/dev/null
+mkdir -p veh && mv heavy.veh veh/
+run "$bin" ride --vehicle veh/heavy.veh --cleat 0.1,0.05 --speed 5 --model point
+check "ride: a .veh's MASS = 1e308: exit 2 at MASS's line, MASS named" \
+    '[ $rc -eq 2 ] && grep -q "veh/heavy.veh:36: MASS: " err'
+
 # A rig log's reading beyond 1e9 (s or m), at its line, column and field: one sample of 1e308
 # was taken as a late time (exit 0), or made an error at another line and field, or overflowed
 # into a curve point refused naming the output file.
