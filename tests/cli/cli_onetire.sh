@@ -20,6 +20,12 @@ check "identify --write: the file re-read has the identified values, comments an
     '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 407000 *\$ c_r" t.tir &&
      [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
      [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
+# A file of CRLF line ends keeps them (every line was written back with LF alone).
+sed 's/$/\r/' "$repo/data/tires/default.tir" >crlf.tir
+run "$bin" identify --tire crlf.tir --set RADIAL_STIFFNESS=1e6 --write
+check "identify --write on a CRLF file: every line still ends in CRLF, else the LF file's bytes" \
+    '[ $rc -eq 0 ] && [ "$(grep -c "$(printf "\r")\$" crlf.tir)" -eq "$(wc -l <crlf.tir)" ] &&
+     tr -d "\r" <crlf.tir | cmp -s - t.tir'
 # --set of a key --write does not write: the file would be another tire than its note says.
 cp t.tir t0.tir
 run "$bin" identify --tire t.tir --set FOUNDATION_STIFFNESS=2e5 --write
