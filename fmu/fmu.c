@@ -134,11 +134,7 @@ fmi2Status fmu__setup(fmu_instance *f)
          * the one model named, so the cam is used alone, as by tirenv flat --model cam: a
          * file whose cam laws are all its own has no ring searched for nothing. */
         tirenv_tir_origin origin;
-        const unsigned need = type == tirenv_model_ring      ? TIRENV_TIR_RING
-                              : type == tirenv_model_springs ? TIRENV_TIR_SPRINGS
-                              : type == tirenv_model_cam     ? TIRENV_TIR_CAM | TIRENV_TIR_ONLY
-                                                             : 0u;
-        if (tirenv_tir_derive(path, &f->tire, need, &origin, &diag))
+        if (tirenv_tir_derive(path, &f->tire, tirenv_tir_need(type, 1), &origin, &diag))
             return fmu__fail_diag(f, "tire_file", &diag);
         if (origin.note[0])
             fmu__log(f, fmi2Warning, "logAll", "%s: %s", path, origin.note);

@@ -131,8 +131,10 @@ typedef struct tirenv_model_type tirenv_model_type;
 typedef struct tirenv_model tirenv_model;
 const tirenv_model_type *tirenv_model_type_find(const char *name);
 const char *tirenv_model_type_name(const tirenv_model_type *type);
+unsigned tirenv_tir_need(const tirenv_model_type *type, int alone);
 const tirenv_model_type *const *tirenv_model_types(void);
 #define TIRENV_MODEL_NEEDS_NETWORK ...
+#define TIRENV_MODEL_CONTACT_LENGTH ...
 unsigned tirenv_model_type_flags(const tirenv_model_type *type);
 tirenv_model *tirenv_model_alloc(const tirenv_model_type *type, const tirenv_tire *tire);
 void tirenv_model_free(tirenv_model *m);

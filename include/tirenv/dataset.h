@@ -40,7 +40,9 @@ typedef struct {
 /* Reads dir/cases.csv and each case's curve (the curve file if given, else the log imported
  * with R0 (m) as tirenv_rig_import does). A dir/source.txt that gives `cases` (see
  * tirenv_dataset_source_read, which reads it here too) makes a manifest with another number
- * of cases an error. Errors name file, line and column. */
+ * of cases an error; without it, so does the `cases` (and `shard`) of a dir/sweep.txt that
+ * tirenv sweep wrote, whose curves must then have the x_N grid's points (docs/formats.md
+ * sections 9 and 13). Errors name file, line and column. */
 int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag);
 void tirenv_dataset_free(tirenv_dataset *ds);  /* NULL is a no-op */
 

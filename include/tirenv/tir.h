@@ -5,6 +5,7 @@
 
 #include "tirenv/decls.h"
 #include "tirenv/error.h"
+#include "tirenv/model.h"
 #include "tirenv/tire.h"
 
 #include <stddef.h>
@@ -89,6 +90,16 @@ typedef struct {
  * values, said in the note. On failure *tire is unchanged. */
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
+
+/* tirenv_tir_derive's need for a caller that runs a model of type on a tire file (the one rule
+ * the CLI, the FMU and the Python module follow, docs/models.md 14.2): TIRENV_TIR_RING for the
+ * ring, TIRENV_TIR_SPRINGS for the springs model, TIRENV_TIR_CAM for the cam, with
+ * TIRENV_TIR_ONLY when alone (the caller uses that model of the tire and no other); 0 for the
+ * rigid disc and the point, which do not deflect, for the network, whose load turns into its
+ * contact length by its own file's law (14.3), and for NULL. A contact length given to the
+ * rigid disc or the point, or to a network whose file records no law, takes the springs
+ * model's load: the caller that gives one adds TIRENV_TIR_SPRINGS. */
+unsigned tirenv_tir_need(const tirenv_model_type *type, int alone);
 
 /* One key of a .tir file to set by tirenv_tir_update. */
 typedef struct {

@@ -2,6 +2,7 @@
 """An MF-Tyre file without tirenv's sections gives Python's Tire the models the CLI derives
 (tirenv_tir_derive, docs/models.md section 14.2): the same C function, so the same doubles."""
 import os
+import warnings
 
 import pytest
 
@@ -36,7 +37,7 @@ def test_foreign_tir_gives_the_cli_models(cli, source_dir, model):
     assert f"Q_RA1 = {tire['Q_RA1']:.4g}" in err
 
 
-def test_foreign_tir_without_fnomin_refuses_the_springs_model(tmp_path):
+def test_foreign_tir_without_fnomin_refuses_the_springs_model(tmp_path, source_dir):
     path = tmp_path / "nofnomin.tir"
     path.write_text("[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\n"
                     "VERTICAL_STIFFNESS = 1.75e5\n")
@@ -46,7 +47,19 @@ def test_foreign_tir_without_fnomin_refuses_the_springs_model(tmp_path):
     with pytest.raises(tirenv.TirenvError) as e:
         tirenv.Model("springs", tire)
     assert e.value.field == "FNOMIN"
-    tirenv.Model("point", tire)  # needs no enveloping section
+    point = tirenv.Model("point", tire)  # needs no enveloping section
+    # ... but its load at a contact length is the springs model's (as the CLI's).
+    with pytest.raises(tirenv.TirenvError) as e:
+        point.load_for_contact_length(0.2)
+    assert e.value.field == "FNOMIN"
+    # The network's contact length is its own file's law (tirenv_tir_need); an older file's
+    # without one would take the springs model's, which this tire file cannot describe.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        older = tirenv.Network(os.path.join(source_dir, "tests", "data", "nn-v1.json"))
+    with pytest.raises(tirenv.TirenvError) as e:
+        tirenv.Model("nn", tire, network=older)
+    assert e.value.field == "FNOMIN"
 
 
 def test_sidewall_read_and_used_as_the_cli(cli, source_dir):

@@ -73,11 +73,18 @@ class Model:
         needs_network = bool(lib.tirenv_model_type_flags(t) & lib.TIRENV_MODEL_NEEDS_NETWORK)
         if needs_network and network is None:
             raise invalid(f"the {name} model needs network=Network(path)", "network")
-        # The models that must describe this tire, as the CLI has them: the springs model
-        # also stands for the network's and the rigid disc's contact length.
-        needs = (lib.TIRENV_TIR_RING if name == "ring" else
-                 0 if name in ("cam", "point", "rigid") else lib.TIRENV_TIR_SPRINGS)
+        # The models that must describe this tire, by the library's one rule (tirenv_tir_need;
+        # a Tire serves every model, so none is alone); a network whose file records no
+        # contact law takes the springs model's, as the CLI's does.
+        needs = lib.tirenv_tir_need(t, 0)
+        if needs_network and not network._law.n:
+            needs |= lib.TIRENV_TIR_SPRINGS
         self.tire._require(needs)
+        # The rigid disc's and the point's load at a contact length is the springs model's
+        # (load_for_contact_length requires it, as the CLI's --contact-length does).
+        flags = lib.tirenv_model_type_flags(t)
+        self._at_chord = not flags & (lib.TIRENV_MODEL_CONTACT_LENGTH |
+                                      lib.TIRENV_MODEL_NEEDS_NETWORK)
         m = lib.tirenv_model_alloc(t, self.tire._t)
         if m == ffi.NULL:
             raise invalid("the tire's parameters are not valid for this model")
@@ -107,6 +114,8 @@ class Model:
 
     def load_for_contact_length(self, l_c):
         """The load (N) at which the flat-ground contact length is l_c (m)."""
+        if self._at_chord:
+            self.tire._require(lib.TIRENV_TIR_SPRINGS)
         load, diag = ffi.new("double *"), new_diag()
         with self._lock:
             check(lib.tirenv_model_load_for_contact_length(self._m, l_c, load, diag), diag)

@@ -73,7 +73,9 @@ class Tire(collections.abc.Mapping):
 
     def _require(self, bits):
         """Refuses, naming the missing key, a model that neither the file nor its MF-Tyre
-        keys describe (as the CLI refuses it for a command that uses the model)."""
+        keys describe (as the CLI refuses it for a command that uses the model). Only the
+        springs and ring models are refused so (the cam names its own missing keys)."""
+        bits &= lib.TIRENV_TIR_SPRINGS | lib.TIRENV_TIR_RING
         if self.path is None or not bits & ~(self._origin.own | self._origin.derived):
             return
         t, origin, diag = ffi.new("tirenv_tire *"), ffi.new("tirenv_tir_origin *"), new_diag()

@@ -197,10 +197,16 @@ extern tirenv_tir_origin cli_tire_origin;
  * tractor tire, whose FNOMIN is its 0.33 m load for the cam's vertical law). */
 double cli_nominal_load(const tirenv_tire *tire);
 
-/* tirenv_tir_derive for a tire read from path for a model of this type (NULL: the springs
- * model, every command's default), printing what was derived on standard error. */
-int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
+/* tirenv_tir_derive(path, tire, need) (need: tirenv_tir_need's bits), printing what was
+ * derived on standard error. */
+int cli_tire_derive(const char *path, unsigned need, tirenv_tire *tire,
                     tirenv_tir_origin *origin);
+
+/* TIRENV_EINVAL naming nn_path and training.data.contact_law when a network file without a
+ * contact law would take the springs model of the tire at tire_path, whose file neither has
+ * nor derived one (origin: cli_tire_origin, or a ride axle's); TIRENV_OK otherwise. */
+int cli_nn_springs_stand_in(const char *nn_path, const char *tire_path,
+                            const tirenv_tir_origin *origin, tirenv_diag *diag);
 
 /* Reads the tire file, applies --set in order and --method, and checks the result.
  * Returns an exit code after printing any error. */

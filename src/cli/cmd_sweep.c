@@ -386,6 +386,9 @@ int cli_sweep_main(int argc, char *argv[])
     }
     tirenv_tire tire;
     o.tire_path = tire_path;
+    /* Regimes given as contact lengths: the rigid disc's and the point's loads are the springs
+     * model's there, which the tire must have (cli_tire). */
+    o.have_contact_length = lists[2].n > 0;
     if (!code)
         code = cli_tire(&o, &tire);
     /* A model that evaluates a network gets it with the radius its x_N refers to; sweep.txt

@@ -167,27 +167,12 @@ double cli_nominal_load(const tirenv_tire *tire)
     return inside ? 0 : fnomin;
 }
 
-/* The enveloping models a model type needs to describe the tire: the springs model also
- * stands for the contact length of the network and of the rigid disc. A command that uses
- * the cam and no other model of the tire (alone) says so: a file whose cam laws are all its
- * own then has no ring or springs model derived (TIRENV_TIR_ONLY, docs/models.md 14.2). */
-static unsigned tire_needs(const tirenv_model_type *type, int alone)
-{
-    if (type == tirenv_model_ring)
-        return TIRENV_TIR_RING;
-    if (type == tirenv_model_cam && alone)
-        return TIRENV_TIR_CAM | TIRENV_TIR_ONLY;
-    if (type == tirenv_model_cam || type == tirenv_model_point || type == tirenv_model_rigid)
-        return 0;
-    return TIRENV_TIR_SPRINGS;
-}
-
-static int tire_derive(const char *path, const tirenv_model_type *type, int alone,
-                       tirenv_tire *tire, tirenv_tir_origin *origin)
+static int tire_derive(const char *path, unsigned need, tirenv_tire *tire,
+                       tirenv_tir_origin *origin)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_tir_derive(path, tire, tire_needs(type, alone), origin, &diag);
+    const int status = tirenv_tir_derive(path, tire, need, origin, &diag);
     if (status)
         return cli_fail(status, &diag);
     if (origin->note[0])
@@ -195,10 +180,10 @@ static int tire_derive(const char *path, const tirenv_model_type *type, int alon
     return CLI_EXIT_OK;
 }
 
-int cli_tire_derive(const char *path, const tirenv_model_type *type, tirenv_tire *tire,
+int cli_tire_derive(const char *path, unsigned need, tirenv_tire *tire,
                     tirenv_tir_origin *origin)
 {
-    return tire_derive(path, type, 0, tire, origin);
+    return tire_derive(path, need, tire, origin);
 }
 
 int cli_tire(const cli_options *o, tirenv_tire *tire)
@@ -211,7 +196,14 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     int status = tirenv_tir_read(path, tire, &diag);
     if (status)
         return cli_fail(status, &diag);
-    if ((status = tire_derive(path, o->type, o->type_alone, tire, &cli_tire_origin)))
+    /* A --contact-length is the springs model's load for the models that do not deflect
+     * (tirenv_tir_need). */
+    const int at_chord = o->have_contact_length &&
+                         (o->type == tirenv_model_rigid || o->type == tirenv_model_point);
+    const unsigned need = (o->type ? tirenv_tir_need(o->type, o->type_alone)
+                                   : TIRENV_TIR_SPRINGS) |  /* every command's default model */
+                          (at_chord ? TIRENV_TIR_SPRINGS : 0u);
+    if ((status = tire_derive(path, need, tire, &cli_tire_origin)))
         return status;
     for (size_t i = 0; i < o->n_sets; ++i) {
         status = tirenv_tir_set(tire, o->sets[i], &diag);
@@ -248,10 +240,26 @@ int cli_model_type(const char *name, const tirenv_model_type **type)
     return CLI_EXIT_USAGE;
 }
 
+/* tirenv_tir_need leaves the springs model to a network whose file records a contact law; an
+ * older file's takes the springs model's contact length, which a tire file whose springs model
+ * was neither given nor derived does not describe (the default tire's would stand in). */
+int cli_nn_springs_stand_in(const char *nn_path, const char *tire_path,
+                            const tirenv_tir_origin *origin, tirenv_diag *diag)
+{
+    if ((origin->own | origin->derived) & TIRENV_TIR_SPRINGS)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EINVAL, nn_path, 0, "training.data.contact_law",
+                        "the file records no relation between load and contact length of its "
+                        "tire, and %s has no springs model to stand in for it (no "
+                        "[ENVELOPING_SPRINGS], none derived); train the network again to "
+                        "record it", tire_path);
+}
+
 /* The network comes with the radius its x_N refers to, recorded in the model file. */
 int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_options *o,
               tirenv_model **out)
 {
+    char buf[1024];
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     *out = NULL;
@@ -278,7 +286,9 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
      * record of it, and the springs model of the tire file stands in, as it used to. */
     if (!status && rec.law.n)
         status = tirenv_model_set_contact_law(*out, &rec.law, &diag);
-    else if (!status)
+    else if (!status && !(status = cli_nn_springs_stand_in(o->nn_path,
+                                                             cli_tire_path(o, buf, sizeof buf),
+                                                             &cli_tire_origin, &diag)))
         fprintf(stderr, "tirenv: warning: %s records no relation between load and contact "
                 "length of its tire (training.data.contact_law; a file written before tirenv "
                 "recorded it): loads become contact lengths by the springs model of the tire "

@@ -28,6 +28,8 @@ typedef struct {
     tirenv_vehicle v;
     tirenv_tire tire[2];   /* front, rear */
     double load[2];        /* static load of one tire, N */
+    tirenv_tir_origin origin[2];  /* what tirenv_tir_derive made of each tire file */
+    char tire_path[2][1024];
     const tirenv_profile *p;
     tirenv_ride_plan plan; /* each speed's run and the inputs' grid */
 } ride_setup;
@@ -55,9 +57,12 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         s->tire[axle] = tirenv_tire_default();
         if ((status = tirenv_tir_read(tire_path, &s->tire[axle], &diag)))
             return cli_fail(status, &diag);
-        tirenv_tir_origin origin;
-        if ((status = cli_tire_derive(tire_path, NULL, &s->tire[axle], &origin)))
+        unsigned need = 0;
+        for (size_t i = 0; i < r->n_models; ++i)
+            need |= tirenv_tir_need(r->models[i], 0);
+        if ((status = cli_tire_derive(tire_path, need, &s->tire[axle], &s->origin[axle])))
             return status;
+        snprintf(s->tire_path[axle], sizeof s->tire_path[axle], "%s", tire_path);
         s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
     }
     return CLI_EXIT_OK;
@@ -164,6 +169,10 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
             if ((status = tirenv_nn_read_json(r->nn_path, &in[i].nn, &rec, &diag)))
                 code = cli_fail(status, &diag);
             in[i].R0_nn = rec.R0;
+            for (int axle = 0; axle < 2 && !code && !rec.law.n; ++axle)
+                if ((status = cli_nn_springs_stand_in(r->nn_path, s->tire_path[axle],
+                                                      &s->origin[axle], &diag)))
+                    code = cli_fail(status, &diag);
             if (!code)
                 ride_cli_set_nn_law(r->nn_path, &rec.law);
         }

@@ -60,11 +60,16 @@ static int parse_split(const tirenv_csv__reader *r, const tirenv_csv__field *f,
                             "expected train, control or validation, got '%.60s'", f->text);
 }
 
-/* A positive length or force: what every number of the manifest is. */
+/* A positive length or force: what every number of the manifest is; at most 1e9 (m or N, a
+ * road's bound): a load of 1e308 was listed as 309 digits and trained into a network's
+ * contact law with exit 0. */
 static int parse_positive(const tirenv_csv__reader *r, const tirenv_csv__field *f, size_t col,
                           double *out)
 {
-    const int status = tirenv_csv__number(r, f, manifest_names[col], out);
+    const int status = tirenv_csv__number_within(r, f, manifest_names[col], 1e9,
+                                                 col == COL_LOAD ? "a force in N"
+                                                                 : "a length in m",
+                                                 out);
     if (status == TIRENV_OK && !(*out > 0))
         return tirenv_csv__fail(r, f->column, manifest_names[col],
                                 "expected a positive number, got '%.60s'", f->text);
@@ -202,26 +207,27 @@ static int add_case(tirenv_dataset *ds, size_t *cap, const tirenv_case *c)
     return TIRENV_OK;
 }
 
-/* The manifest holds other than the cases source.txt declares: one cut at a line end reads as
- * a shorter manifest (every row it keeps is whole), so without the count it would pass for a
- * smaller data set. At the first row beyond the count, or after the last line. */
+/* The manifest holds other than the cases source.txt (or a sweep's sweep.txt) declares: one
+ * cut at a line end reads as a shorter manifest (every row it keeps is whole), so without the
+ * count it would pass for a smaller data set. At the first row beyond the count, or after the
+ * last line. */
 static int cases_differ(const tirenv_csv__reader *r, const tirenv_dataset *ds,
-                        const tirenv_dataset_source *src)
+                        const tirenv_dataset__declared *decl)
 {
-    const int beyond = ds->n == src->cases;
+    const int beyond = ds->n == decl->cases;
     const int status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + !beyond, "",
-                                    "%s%zu cases, but %s/source.txt:%zu declares cases = %zu; "
-                                    "expected that many (%s, or another data set's "
-                                    "source.txt)", beyond ? "more than " : "", ds->n, ds->dir,
-                                    src->cases_line, src->cases,
-                                    beyond ? "rows added" : "a manifest cut short");
+                                    "%s%zu cases, but %s:%zu declares %s; expected that many "
+                                    "(%s, or another data set's %s)", beyond ? "more than " : "",
+                                    ds->n, decl->file, decl->line, decl->what,
+                                    beyond ? "rows added" : "a manifest cut short",
+                                    strrchr(decl->file, '/') + 1);
     if (r->diag)
         r->diag->column = 1;
     return status;
 }
 
 static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
-                          const tirenv_dataset_source *src)
+                          const tirenv_dataset__declared *decl)
 {
     int more = tirenv_csv__next(r);
     if (more == 0) {
@@ -236,8 +242,8 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
     size_t cap = 0;
     name_set names = {NULL, 0};
     while (status == TIRENV_OK && (more = tirenv_csv__next(r)) > 0) {
-        if (src->cases && ds->n == src->cases) {
-            status = cases_differ(r, ds, src);
+        if (decl->cases && ds->n == decl->cases) {
+            status = cases_differ(r, ds, decl);
             break;
         }
         if (ds->n == TIRENV_DATASET__MAX_CASES) {
@@ -256,8 +262,8 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
     free(names.slot);
     if (status == TIRENV_OK && more < 0)
         status = -more;
-    if (status == TIRENV_OK && src->cases && ds->n != src->cases)
-        status = cases_differ(r, ds, src);
+    if (status == TIRENV_OK && decl->cases && ds->n != decl->cases)
+        status = cases_differ(r, ds, decl);
     if (status == TIRENV_OK && ds->n == 0) {
         status = tirenv_error(r->diag, TIRENV_EPARSE, r->file, r->line + 1, "",
                               "no cases after the header; expected one line per case");
@@ -281,6 +287,21 @@ static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
     return tirenv_rig_import(c->log, &s, &c->curve, diag);
 }
 
+/* A sweep's curve has the points of the data sets' x_N grid (docs/formats.md section 13):
+ * one cut at a line end, points short, is no whole case, where it read as a shorter curve. */
+static int sweep_curve(const tirenv_case *c, tirenv_diag *diag)
+{
+    const tirenv_import_settings g = tirenv_import_default();
+    const size_t n = (size_t)floor((g.xN_to - g.xN_from) / g.dxN + 1e-9) + 1;
+    if (c->curve.n == n)
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EPARSE, c->curve_path[0] ? c->curve_path : c->log, 0,
+                        "x_N", "%zu points, where a sweep's curve (sweep.txt beside the "
+                        "manifest) has the %zu of the x_N grid %g to %g every %g; expected a "
+                        "whole case file (cut short?)", c->curve.n, n, g.xN_from, g.xN_to,
+                        g.dxN);
+}
+
 int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag)
 {
     *out = (tirenv_dataset){{0}, 0, NULL};
@@ -291,13 +312,24 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     char path[sizeof out->dir + 16];
     snprintf(path, sizeof path, "%s/cases.csv", dir);
+    /* The count source.txt declares, else a sweep's sweep.txt. */
     tirenv_dataset_source src;
+    tirenv_dataset__declared decl = {0};
     int status = tirenv_dataset_source_read(dir, &src, diag);
+    if (status == TIRENV_OK && src.cases) {
+        decl.cases = src.cases;
+        decl.line = src.cases_line;
+        snprintf(decl.file, sizeof decl.file, "%s/source.txt", dir);
+        snprintf(decl.what, sizeof decl.what, "cases = %zu", src.cases);
+    } else if (status == TIRENV_OK) {
+        status = tirenv_dataset__sweep_declared(dir, &decl, diag);
+    }
+    const int from_sweep = decl.cases && strcmp(strrchr(decl.file, '/'), "/sweep.txt") == 0;
     if (status == TIRENV_OK) {
         tirenv_csv__reader r;
         status = tirenv_csv__open(&r, path, diag);
         if (status == TIRENV_OK)
-            status = parse_manifest(&r, out, &src);
+            status = parse_manifest(&r, out, &decl);
         tirenv_csv__close(&r);
     }
     for (size_t i = 0; i < out->n && status == TIRENV_OK; i++) {
@@ -307,6 +339,8 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
                                   "0, got %g", out->cases[i].name, R0);
         else
             status = load_curve(&out->cases[i], R0, diag);
+        if (!status && from_sweep)
+            status = sweep_curve(&out->cases[i], diag);
     }
     if (status != TIRENV_OK)
         tirenv_dataset_free(out);

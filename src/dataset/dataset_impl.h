@@ -8,4 +8,23 @@
  * case records before any curve is read. source.txt's `cases` may declare no more. */
 #define TIRENV_DATASET__MAX_CASES 1000000u
 
+#include <stddef.h>
+
+#include "tirenv/error.h"
+
+/* The number of rows a manifest must hold, and which file declares it. */
+typedef struct {
+    size_t cases;          /* rows of the manifest; 0: nothing declared */
+    size_t line;           /* the declaring line of file */
+    char file[1100];       /* source.txt or sweep.txt, with the directory */
+    char what[96];         /* the declaration as the message quotes it, "cases = 28" */
+} tirenv_dataset__declared;
+
+/* What dir/sweep.txt, when there is one and it gives `cases = M` (and `shard = K/N`),
+ * declares: the shard's rows of the M cases, those i with i mod N = K (dataset_sweep.c).
+ * Nothing (out->cases 0) without the file or the key; TIRENV_EPARSE naming the file, line and
+ * key for a count or shard that is not one. */
+int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *out,
+                                   tirenv_diag *diag);
+
 #endif

@@ -586,6 +586,15 @@ static int finish(parse *p, size_t last_line)
         return fail(p, NULL, road_names[CRG_RL_INCREMENT], "%.17g; expected a positive "
                     "length, m", inc->value);
     }
+    /* A track's vertices are an increment apart: no farther than a road's segment may be
+     * (which convert wrote into a CSV tirenv then refused, and a streamed sweep reported as
+     * "out of memory"). */
+    if (inc->value > TIRENV_PROFILE_MAX_SEGMENT) {
+        p->at.line = inc->line;
+        return fail(p, NULL, road_names[CRG_RL_INCREMENT], "%.17g m; expected at most %g m "
+                    "between cross sections, a road's longest segment (docs/models.md "
+                    "section 2.1)", inc->value, TIRENV_PROFILE_MAX_SEGMENT);
+    }
     const tirenv_crg__value *u0 = &c->road[CRG_RL_START_U], *u1 = &c->road[CRG_RL_END_U];
     if (u0->line && u1->line && !(u1->value > u0->value)) {
         p->at.line = u1->line;

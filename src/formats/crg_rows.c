@@ -283,9 +283,18 @@ static int grow(void **p, size_t *cap, size_t need, size_t size)
     return 0;
 }
 
+/* Heights (and the banking and slope they are made with) beyond a road's coordinates
+ * (TIRENV_PROFILE_MAX_COORDINATE): a typo or a unit slip, refused at its value, where 1e308 in
+ * one long section became -1e308 on every row of a converted track (exit 0, a CSV tirenv then
+ * refuses) and, streamed, "out of memory". */
+static int too_far(double v)
+{
+    return fabs(v) > TIRENV_PROFILE_MAX_COORDINATE;
+}
+
 /* Checks row i and adds it to the pass: NaN only at the ends of the cross section and at
  * least one value; the reference line channels finite where used; the slope integrated into
- * the reference line's height. */
+ * the reference line's height; every value within a road's bound. */
 static int pass_row(tirenv_crg *c, pass *ps, size_t i, const double row[], size_t row_line,
                     tirenv_diag *diag)
 {
@@ -295,6 +304,10 @@ static int pass_row(tirenv_crg *c, pass *ps, size_t i, const double row[], size_
         if (isinf(z))
             return data_fail(c, i, c->ch_z[j], row_line, TIRENV_EPARSE, diag,
                              "infinite value; expected a height in m");
+        if (too_far(z))
+            return data_fail(c, i, c->ch_z[j], row_line, TIRENV_EPARSE, diag,
+                             "%g m is beyond +-%g m; expected a road's height (in m?)", z,
+                             TIRENV_PROFILE_MAX_COORDINATE);
         if (!isnan(z)) {
             if (lo == TIRENV_CRG__NONE)
                 lo = j;
@@ -328,6 +341,10 @@ static int pass_row(tirenv_crg *c, pass *ps, size_t i, const double row[], size_
         if (!isfinite(b))
             return data_fail(c, i, c->ch_bank, row_line, TIRENV_EPARSE, diag,
                              "missing banking; expected the cross slope at every row, m/m");
+        if (too_far(b))
+            return data_fail(c, i, c->ch_bank, row_line, TIRENV_EPARSE, diag,
+                             "%g m/m is beyond +-%g; expected a road's cross slope", b,
+                             TIRENV_PROFILE_MAX_COORDINATE);
         if (i == 0)
             s->b_first = b;
         s->b_last = b;
@@ -347,6 +364,11 @@ static int pass_row(tirenv_crg *c, pass *ps, size_t i, const double row[], size_
                 s->s_first = sl;
             s->s_last = sl;
             c->rz[i] = c->rz[i - 1] + c->du * sl;
+            if (too_far(c->rz[i]))
+                return data_fail(c, i, c->ch_slope, row_line, TIRENV_EPARSE, diag,
+                                 "slope %g takes the reference line to %g m, beyond +-%g m; "
+                                 "expected a road's slope, m/m", sl, c->rz[i],
+                                 TIRENV_PROFILE_MAX_COORDINATE);
         }
     }
     return TIRENV_OK;

@@ -110,8 +110,12 @@ static int curve_parse_row(tirenv_csv__reader *r, tirenv_curve *out, size_t *cap
     tirenv_csv__field f[CURVE_FIELDS + 1];
     int status = tirenv_csv__fields(r, curve_names, CURVE_FIELDS, f);
     double v[CURVE_FIELDS];
+    /* Within a road's bound (TIRENV_PROFILE_MAX_COORDINATE): h = 1e308 made a fit write its
+     * tire (exit 0) and training fail naming no file. */
     for (size_t k = 0; k < CURVE_FIELDS && status == TIRENV_OK; k++)
-        status = tirenv_csv__number(r, &f[k], curve_names[k], &v[k]);
+        status = tirenv_csv__number_within(r, &f[k], curve_names[k], 1e9,
+                                           k == 0 ? "a normalised position" : "a length in m",
+                                           &v[k]);
     if (status != TIRENV_OK)
         return status;
     if (out->n > 0 && !(v[0] > out->x_N[out->n - 1]))

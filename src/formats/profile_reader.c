@@ -222,9 +222,11 @@ static int extent_ends(tirenv_road_file *f, const tirenv_profile_source *src, si
 }
 
 /* A CSV's first row comes from a reader (which checks the header and the row), its last from
- * the file's end (tirenv_profile_csv__last_x); where the last cannot be told so, or lies
- * before the first (an x decreases somewhere), every row is read, and the first bad one
- * named. An OpenCRG or RDF road's come from what its readers share (extent_ends). */
+ * the file's end (tirenv_profile_csv__last_x); where the last cannot be told so, lies before
+ * the first (an x decreases somewhere) or beyond the coordinates a road may have (the rows'
+ * check, which the tail's parse does not make: 1e308 became a sweep of too many positions, a
+ * misuse naming no file), every row is read, and the first bad one named. An OpenCRG or RDF
+ * road's come from what its readers share (extent_ends). */
 int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                             const double v[], int every_row, double *first, double *last,
                             tirenv_diag *diag)
@@ -250,7 +252,8 @@ int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *sr
     const tirenv_source *s;
     if ((status = tirenv_road_file__source(f, &s, diag)))
         return status;
-    if (tirenv_profile_csv__last_x(s, last) && *last >= *first)
+    if (tirenv_profile_csv__last_x(s, last) && *last >= *first &&
+        *last <= TIRENV_PROFILE_MAX_COORDINATE)
         return TIRENV_OK;
     return extent_read(f, src, n, v, first, last, diag);
 }

@@ -260,12 +260,21 @@ static void check_row(tirenv_rdf__check *c, const double v[3], double f, double 
 {
     const size_t k = c->n++;
     const double x = f * v[0];
-    for (int s = 0; s < 3; s++) {
+    /* The sides, then their mean, which is made of both: where the mean passes and a side is
+     * refused at this row, the mean is refused with it, so that 1e308 on one side and -1e308
+     * on the other is no mean of 0. */
+    static const tirenv_rdf_side order[3] = {TIRENV_RDF_LEFT, TIRENV_RDF_RIGHT, TIRENV_RDF_MEAN};
+    for (int i = 0; i < 3; i++) {
+        const tirenv_rdf_side s = order[i];
         tirenv_rdf__bad *b = &c->bad[s];
         tirenv_diag d;
-        if (b->line || tirenv_profile_check_vertex(k, x, side_z((tirenv_rdf_side)s, v, f, offset),
-                                                   c->x1, c->x2, &d) == TIRENV_OK)
+        if (b->line || tirenv_profile_check_vertex(k, x, side_z(s, v, f, offset), c->x1, c->x2,
+                                                   &d) == TIRENV_OK) {
+            const tirenv_rdf__bad *l = &c->bad[TIRENV_RDF_LEFT], *r = &c->bad[TIRENV_RDF_RIGHT];
+            if (s == TIRENV_RDF_MEAN && !b->line && (l->line == line || r->line == line))
+                *b = l->line == line ? *l : *r;
             continue;
+        }
         snprintf(b->message, sizeof b->message, "%s", d.message);
         b->line = line;
     }

@@ -1436,3 +1436,16 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
         *tire = read;
     return status;
 }
+
+/* The springs model stands in only where a regime is a contact length the model cannot turn
+ * into a load itself: the caller knows that, not the type (tir.h). */
+unsigned tirenv_tir_need(const tirenv_model_type *type, int alone)
+{
+    if (type == tirenv_model_ring)
+        return TIRENV_TIR_RING;
+    if (type == tirenv_model_springs)
+        return TIRENV_TIR_SPRINGS;
+    if (type == tirenv_model_cam)
+        return TIRENV_TIR_CAM | (alone ? TIRENV_TIR_ONLY : 0u);
+    return 0;
+}

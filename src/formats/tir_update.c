@@ -84,14 +84,16 @@ static size_t value_of(const char *line, size_t len, const char *sec, size_t n,
     return n;
 }
 
-static void put_key(FILE *fp, const tirenv_tir_value *v)
+/* eol: the line end the file's lines have ("\r\n" or "\n"), for the lines written anew. */
+static void put_key(FILE *fp, const tirenv_tir_value *v, const char *eol)
 {
-    fprintf(fp, "%-24s = %.6g\n", v->key, v->value);
+    fprintf(fp, "%-24s = %.6g%s", v->key, v->value, eol);
 }
 
 /* The line with its value replaced: the comment ('$' on) stays at its column when the new
  * value fits before it. */
-static void put_replaced(FILE *fp, const char *line, size_t len, size_t eq, double value)
+static void put_replaced(FILE *fp, const char *line, size_t len, size_t eq, double value,
+                         const char *eol)
 {
     size_t i = eq + 1;
     while (i < len && (line[i] == ' ' || line[i] == '\t'))
@@ -108,18 +110,18 @@ static void put_replaced(FILE *fp, const char *line, size_t len, size_t eq, doub
             fputc(' ', fp);
         fprintf(fp, "%.*s", (int)(len - col), dollar);
     }
-    fputc('\n', fp);
+    fputs(eol, fp);
 }
 
-static void put_note(FILE *fp, const char *note)
+static void put_note(FILE *fp, const char *note, const char *eol)
 {
-    fprintf(fp, "%s\n", begin_mark);
+    fprintf(fp, "%s%s", begin_mark, eol);
     for (const char *p = note; p && *p;) {
         const size_t l = strcspn(p, "\n");
-        fprintf(fp, "! %.*s\n", (int)l, p);
+        fprintf(fp, "! %.*s%s", (int)l, p, eol);
         p += l + (p[l] == '\n');
     }
-    fprintf(fp, "%s\n", end_mark);
+    fprintf(fp, "%s%s", end_mark, eol);
 }
 
 int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
@@ -140,6 +142,10 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
         return status;
     }
     FILE *fp = tirenv_outfile_stream(out);
+    /* A file of "\r\n" line ends keeps them: its lines each as they were, the new ones as its
+     * first (a CRLF file was written back with "\n" ends throughout). */
+    const size_t end1 = strcspn(text, "\n");
+    const char *eol = end1 && text[end1] == '\n' && text[end1 - 1] == '\r' ? "\r\n" : "\n";
     char sec[64] = "";
     int in_note = 0, noted = 0;
     for (const char *p = text; *p;) {
@@ -149,6 +155,7 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
         size_t l = len;
         if (l && line[l - 1] == '\r')
             l--;
+        const char *own = l < len ? "\r\n" : "\n";  /* this line's end, kept */
         if (!strncmp(line, begin_mark, sizeof begin_mark - 1)) {
             in_note = 1;
             continue;
@@ -156,7 +163,7 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
         if (in_note) {
             if (!strncmp(line, end_mark, sizeof end_mark - 1)) {
                 in_note = 0;
-                put_note(fp, note);
+                put_note(fp, note, eol);
                 noted = 1;
             }
             continue;
@@ -165,18 +172,18 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
          * or section that follows them. */
         if (!noted && !strcmp(sec, "MDI_HEADER") && l >= 2 && line[0] == '$' &&
             line[1] == '-') {
-            put_note(fp, note);
+            put_note(fp, note, eol);
             noted = 1;
         }
         char next[64];
         if (section_of(line, l, next)) {
             /* Before leaving a section: the note after [MDI_HEADER]'s keys, missing keys. */
             if (!noted && !strcmp(sec, "MDI_HEADER")) {
-                put_note(fp, note);
+                put_note(fp, note, eol);
                 noted = 1;
             }
             memcpy(sec, next, sizeof sec);
-            fprintf(fp, "%.*s\n", (int)l, line);
+            fprintf(fp, "%.*s%s", (int)l, line, own);
             for (size_t j = 0; j < n; j++)
                 if (!strcasecmp(values[j].section, sec)) {
                     /* Added right after the header only if the section lacks the key: look
@@ -192,7 +199,7 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
                         q += ql + (q[ql] == '\n');
                     }
                     if (!found) {
-                        put_key(fp, &values[j]);
+                        put_key(fp, &values[j], eol);
                         done[j] = 1;
                     }
                 }
@@ -201,14 +208,14 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
         size_t eq;
         const size_t j = value_of(line, l, sec, n, values, &eq);
         if (j < n && !done[j]) {
-            put_replaced(fp, line, l, eq, values[j].value);
+            put_replaced(fp, line, l, eq, values[j].value, own);
             done[j] = 1;
         } else {
-            fprintf(fp, "%.*s\n", (int)l, line);
+            fprintf(fp, "%.*s%s", (int)l, line, own);
         }
     }
     if (!noted)
-        put_note(fp, note);
+        put_note(fp, note, eol);
     for (size_t j = 0; j < n; j++)
         if (!done[j]) {
             /* Sections absent from the file, each once, with all of its keys. */
@@ -217,10 +224,10 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
                 first &= !(!done[i] && !strcasecmp(values[i].section, values[j].section));
             if (!first)
                 continue;
-            fprintf(fp, "[%s]\n", values[j].section);
+            fprintf(fp, "[%s]%s", values[j].section, eol);
             for (size_t i = j; i < n; i++)
                 if (!done[i] && !strcasecmp(values[i].section, values[j].section))
-                    put_key(fp, &values[i]);
+                    put_key(fp, &values[i], eol);
         }
     free(text);
     if ((status = tirenv_outfile_commit(out, diag)))

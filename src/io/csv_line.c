@@ -272,3 +272,13 @@ int tirenv_csv__number(const tirenv_csv__reader *r, const tirenv_csv__field *f,
     *out = v;
     return TIRENV_OK;
 }
+
+int tirenv_csv__number_within(const tirenv_csv__reader *r, const tirenv_csv__field *f,
+                              const char *name, double max, const char *expected, double *out)
+{
+    const int status = tirenv_csv__number(r, f, name, out);
+    if (status == TIRENV_OK && !(fabs(*out) <= max))
+        return tirenv_csv__fail(r, f->column, name, "%s = %.40s is beyond +-%g; expected %s",
+                                name, f->text, max, expected);
+    return status;
+}

@@ -186,6 +186,11 @@ int tirenv_csv__parse_double(const char *s, double *out);
 int tirenv_csv__number(const tirenv_csv__reader *r, const tirenv_csv__field *f,
                        const char *name, double *out);
 
+/* tirenv_csv__number within +-max: a value beyond is refused at its field, "NAME = TEXT is
+ * beyond +-MAX; expected EXPECTED" (a reading, a length, a force: its unit). */
+int tirenv_csv__number_within(const tirenv_csv__reader *r, const tirenv_csv__field *f,
+                              const char *name, double max, const char *expected, double *out);
+
 /* The header names joined with commas, for messages. */
 void tirenv_csv__join(const char *const names[], size_t n, char *buf, size_t size);
 

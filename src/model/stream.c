@@ -152,12 +152,16 @@ static int window_fill(window *w, const vertex_source *in, double x_keep, double
 }
 
 /* The window as a profile per track, handed to the model; the previous ones are freed once
- * replaced. */
+ * replaced. Rows a source passed unchecked are refused saying why (their vertex within the
+ * window), not as memory run out. */
 static int window_profile(const window *w, tirenv_profile *p[], tirenv_diag *diag)
 {
-    for (size_t k = 0; k < w->tracks; ++k)
-        if (!(p[k] = tirenv_profile_alloc(w->n, w->x, w->z[k])))
-            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    for (size_t k = 0; k < w->tracks; ++k) {
+        if ((p[k] = tirenv_profile_alloc(w->n, w->x, w->z[k])))
+            continue;
+        const int status = tirenv_profile_validate(w->n, w->x, w->z[k], diag);
+        return status ? status : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    }
     return TIRENV_OK;
 }
 

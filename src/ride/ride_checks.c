@@ -94,10 +94,14 @@ int tirenv_ride__static_check(const tirenv_vehicle *v, tirenv_diag *diag)
 {
     for (int axle = 0; axle < 2; ++axle) {
         const tirenv_axle *ax = axle ? &v->rear : &v->front;
-        const double d0 = tirenv_vehicle_tire_load(v, axle) / ax->k_t;  /* m */
+        const double F0 = tirenv_vehicle_tire_load(v, axle);             /* N */
+        const double d0 = F0 / ax->k_t;                                    /* m */
+        /* A load that overflows is MASS's (1e308 kg), not the tire stiffness's. */
+        const char *field = !isfinite(F0) ? "MASS"
+                            : axle        ? "REAR_AXLE.TIRE_STIFFNESS"
+                                          : "FRONT_AXLE.TIRE_STIFFNESS";
         if (!(d0 * DBL_EPSILON <= RESOLUTION_M))
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle ? "REAR_AXLE.TIRE_STIFFNESS"
-                                                                 : "FRONT_AXLE.TIRE_STIFFNESS",
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, field,
                                 "the %s tires' static deflection, their load %g N (from MASS) "
                                 "over TIRE_STIFFNESS %g N/m, is %g m: unphysical, and in double "
                                 "precision it leaves the dynamic tire forces unresolved below "

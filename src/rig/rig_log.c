@@ -44,13 +44,20 @@ static int log_grow(tirenv_rig__log_file *log, size_t *cap, size_t want)
     return TIRENV_OK;
 }
 
+/* The largest reading taken, in s or m: a road's coordinates' bound (TIRENV_PROFILE_MAX_
+ * COORDINATE). A reading beyond it is a typo or a unit slip, and one sample of it (1e308)
+ * passed as a time far after the others, or overflowed the importer's filter into a curve
+ * point refused naming the output file, or made a passage error at another line and field. */
+static const double reading_max = 1e9;
+
 static int log_parse_row(tirenv_csv__reader *r, tirenv_rig__log_file *log, size_t *cap)
 {
     tirenv_csv__field f[LOG_FIELDS + 1];
     int status = tirenv_csv__fields(r, log_names, LOG_FIELDS, f);
     double v[LOG_FIELDS];
     for (size_t k = 0; k < LOG_FIELDS && status == TIRENV_OK; k++)
-        status = tirenv_csv__number(r, &f[k], log_names[k], &v[k]);
+        status = tirenv_csv__number_within(r, &f[k], log_names[k], reading_max,
+                                           "a rig's reading (t in s, x and z in m)", &v[k]);
     if (status != TIRENV_OK)
         return status;
     if (log->n == *cap && log_grow(log, cap, 2 * *cap) != TIRENV_OK)

@@ -173,16 +173,18 @@ int tirenv_sweep__splits(const tirenv_sweep_settings *s, unsigned char **out,
 
 /* ---- the checks ---------------------------------------------------------------------- */
 
-static int check_list(const char *name, const double v[], size_t n, double hi,
+/* Each value positive and below hi (up to hi, if up_to), said as hi_what, each once. */
+static int check_list(const char *name, const double v[], size_t n, double hi, int up_to,
                       const char *hi_what, tirenv_diag *diag)
 {
     if (n == 0 || !v)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, name, "expected at least one value");
     for (size_t k = 0; k < n; ++k) {
-        if (!isfinite(v[k]) || !(v[k] > 0) || !(v[k] < hi))
+        if (!isfinite(v[k]) || !(v[k] > 0) || !(up_to ? v[k] <= hi : v[k] < hi))
             return tirenv_error(diag, TIRENV_EINVAL, "", 0, name,
                                 "value %zu is %g; expected a positive number%s%s", k + 1,
-                                v[k], hi_what ? " below " : "", hi_what ? hi_what : "");
+                                v[k], hi_what ? (up_to ? " up to " : " below ") : "",
+                                hi_what ? hi_what : "");
         for (size_t j = 0; j < k; ++j)
             if (v[j] == v[k])
                 return tirenv_error(diag, TIRENV_EINVAL, "", 0, name,
@@ -201,9 +203,12 @@ int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "network",
                             "the %s model needs a trained network", tirenv_model_type_name(s->type));
     const double R0 = tire->springs.R0;
-    int status = check_list("lengths", s->lengths, s->n_lengths, INFINITY, NULL, diag);
+    /* A cleat no longer than a road's segment (as envelope --cleat's): 1e308 became a profile
+     * refused as "out of memory". */
+    int status = check_list("lengths", s->lengths, s->n_lengths, TIRENV_PROFILE_MAX_SEGMENT, 1,
+                            "1e7 m, a road's longest segment", diag);
     if (!status)
-        status = check_list("heights", s->heights, s->n_heights, R0, "the tire's radius",
+        status = check_list("heights", s->heights, s->n_heights, R0, 0, "the tire's radius",
                             diag);
     if (!status && (s->n_contact_lengths > 0) == (s->n_loads > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "regimes",
@@ -211,11 +216,21 @@ int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
                             s->n_loads ? "both" : "neither");
     if (!status && s->n_contact_lengths)
         status = check_list("contact_lengths", s->contact_lengths, s->n_contact_lengths,
-                            2 * R0, "twice the tire's radius", diag);
+                            2 * R0, 0, "twice the tire's radius", diag);
     if (!status && s->n_loads)
-        status = check_list("loads", s->loads, s->n_loads, INFINITY, NULL, diag);
+        status = check_list("loads", s->loads, s->n_loads, INFINITY, 0, NULL, diag);
     if (status)
         return status;
+    /* A case's contact length is the model's at its load; the rigid disc and the point have
+     * none (the network's is its file's law): refused before anything is written, where each
+     * case failed after DIR.partial was made. */
+    const unsigned flags = tirenv_model_type_flags(s->type);
+    if (s->n_loads &&
+        !(flags & (TIRENV_MODEL_CONTACT_LENGTH | TIRENV_MODEL_NEEDS_NETWORK)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
+                            "the %s model has no contact length of its own at a load; expected "
+                            "the regimes as contact lengths (--contact-lengths)",
+                            tirenv_model_type_name(s->type));
     if (s->n_keys > TIRENV_SWEEP_MAX_KEYS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "keys", "%zu tire keys; at most %d",
                             s->n_keys, TIRENV_SWEEP_MAX_KEYS);

@@ -12,6 +12,10 @@
  * stat-ed every case file (to resume) for minutes before writing the first. */
 #define TIRENV_SWEEP__MAX_CASES 1000000u
 
+/* The largest cases.csv or sweep.csv a merge or a finished run reads: 1 GiB, some thousand
+ * bytes a row of the most cases. */
+#define TIRENV_SWEEP__TABLE_MAX ((size_t)1 << 30)
+
 /* Case i's place in the grid. */
 typedef struct {
     size_t variant;          /* index of the tire-key values (mixed radix over the axes) */
@@ -55,6 +59,27 @@ char *tirenv_sweep__spec(const tirenv_sweep_settings *s);
 int tirenv_sweep__spec_shard(const char *spec, size_t *shard, size_t *shards, size_t *begin,
                              size_t *end);
 
+/* A table's text (len bytes, every line ending in '\n', else TIRENV_EPARSE naming path): the
+ * lines that open it, the header and the comment lines around it, *head bytes; then its data
+ * rows, each cut at its newline (in place), into *rows (allocated, n_rows of them). */
+int tirenv_sweep__split_table(char *text, size_t len, const char *path, size_t *head,
+                              char ***rows, size_t *n_rows, tirenv_diag *diag);
+
+/* Whether the rows of dir/table (the first at line head_lines + 1) are those of shard K of N
+ * (1 part: the whole sweep) of a sweep of m cases, row j case K + j N, named so; TIRENV_EPARSE
+ * naming the file, the line and what is wrong otherwise. */
+int tirenv_sweep__check_rows(const char *dir, const char *table, size_t head_lines,
+                             char **rows, size_t n_rows, size_t m, size_t shard, size_t shards,
+                             tirenv_diag *diag);
+
+/* The log and curve fields (7 and 8) of a manifest row: 0, or -1 where the row does not name
+ * them as a sweep writes them (logs/<case>.csv, empty without --rig; curves/<case>.csv). */
+int tirenv_sweep__row_files(const char *row, const char **log, size_t *log_len,
+                            const char **curve, size_t *curve_len);
+
+/* The '\n' in the len bytes of text. */
+size_t tirenv_sweep__lines(const char *text, size_t len);
+
 /* The manifest's comment (the same in a shard as in the whole sweep). Allocated. */
 char *tirenv_sweep__manifest_comment(const tirenv_sweep_settings *s, size_t cases);
 
@@ -75,9 +100,11 @@ int tirenv_sweep__check_case(const char *curve, const char *log, const char *wha
                              const char *remedy, tirenv_diag *diag);
 
 /* The state of a sweep's target directory dir: 0 absent or empty (write it), 1 already this
- * sweep, complete (its cases.csv, and sweep.txt and tire.tir equal to spec and tire), or
- * minus an error status (anything else is there; diag says so). */
+ * sweep, complete (sweep.txt and tire.tir equal to spec and tire, cases.csv and sweep.csv
+ * with the rows of shard K of N of its m cases), or minus an error status (anything else is
+ * there, or a table cut or edited; diag says so). */
 int tirenv_sweep__target_state(const char *dir, const char *spec, const char *tire,
-                               size_t tire_len, tirenv_diag *diag);
+                               size_t tire_len, size_t m, size_t shard, size_t shards,
+                               tirenv_diag *diag);
 
 #endif

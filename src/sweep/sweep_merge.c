@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include "tirenv/outfile.h"
 
-enum { SPEC_MAX = 1 << 20, TABLE_MAX = 1 << 30 };
+enum { SPEC_MAX = 1 << 20 };
 
 /* One part: its description and tables, split into lines. */
 typedef struct {
@@ -38,40 +38,6 @@ static void part_free(part *p)
     free(p->key_rows);
 }
 
-/* The lines that open a table, *head bytes: the header and the comment lines around it (before
- * it, as earlier versions wrote them, and after it); then its data rows, each cut at its
- * newline. */
-static int split_table(char *text, size_t len, const char *path, size_t *head, char ***rows,
-                       size_t *n_rows, tirenv_diag *diag)
-{
-    size_t lines = 0;
-    for (size_t k = 0; k < len; ++k)
-        lines += text[k] == '\n';
-    *rows = malloc((lines + 1) * sizeof **rows);
-    if (!*rows)
-        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
-    *n_rows = 0;
-    *head = 0;
-    int have_header = 0;
-    for (char *p = text; p < text + len;) {
-        char *eol = memchr(p, '\n', (size_t)(text + len - p));
-        if (!eol)
-            return tirenv_error(diag, TIRENV_EPARSE, path, 0, "",
-                                "the last line has no newline: not a file a sweep wrote");
-        if (!have_header || (*n_rows == 0 && p[0] == '#')) {
-            have_header = have_header || p[0] != '#';
-            *head = (size_t)(eol + 1 - text);
-        } else {
-            *eol = '\0';
-            (*rows)[(*n_rows)++] = p;
-        }
-        p = eol + 1;
-    }
-    if (!have_header)
-        return tirenv_error(diag, TIRENV_EPARSE, path, 0, "", "no header line");
-    return TIRENV_OK;
-}
-
 static int read_part(part *p, tirenv_diag *diag)
 {
     char path[1200];
@@ -92,14 +58,16 @@ static int read_part(part *p, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, p->dir, 0, "",
                             "shard %zu/%zu is not complete (no cases.csv): run it again to "
                             "finish it", p->shard, p->shards);
-    if ((status = tirenv_sweep__read_text(path, TABLE_MAX, &p->cases, &p->cases_len, diag)) ||
-        (status = split_table(p->cases, p->cases_len, path, &p->case_head, &p->case_rows,
-                              &p->n_case_rows, diag)))
+    if ((status = tirenv_sweep__read_text(path, TIRENV_SWEEP__TABLE_MAX, &p->cases,
+                                          &p->cases_len, diag)) ||
+        (status = tirenv_sweep__split_table(p->cases, p->cases_len, path, &p->case_head,
+                                            &p->case_rows, &p->n_case_rows, diag)))
         return status;
     snprintf(path, sizeof path, "%s/sweep.csv", p->dir);
-    if ((status = tirenv_sweep__read_text(path, TABLE_MAX, &p->keys, &p->keys_len, diag)) ||
-        (status = split_table(p->keys, p->keys_len, path, &p->key_head, &p->key_rows,
-                              &p->n_key_rows, diag)))
+    if ((status = tirenv_sweep__read_text(path, TIRENV_SWEEP__TABLE_MAX, &p->keys,
+                                          &p->keys_len, diag)) ||
+        (status = tirenv_sweep__split_table(p->keys, p->keys_len, path, &p->key_head,
+                                            &p->key_rows, &p->n_key_rows, diag)))
         return status;
     snprintf(path, sizeof path, "%s/tire.tir", p->dir);
     return tirenv_sweep__read_text(path, SPEC_MAX, &p->tire, &p->tire_len, diag);
@@ -149,26 +117,6 @@ static int spec_cases(const part *p, size_t *m, tirenv_diag *diag)
                         "no valid 'cases = M' line");
 }
 
-/* Row j of shard K is case K + j N: checked by its first field, the name. */
-static int check_rows(const part *p, char **rows, size_t n_rows, size_t m, const char *table,
-                      tirenv_diag *diag)
-{
-    const size_t want = m > p->shard ? (m - p->shard - 1) / p->shards + 1 : 0;
-    if (n_rows != want)
-        return tirenv_error(diag, TIRENV_EINVAL, p->dir, 0, table,
-                            "%zu rows; shard %zu/%zu of %zu cases has %zu", n_rows, p->shard,
-                            p->shards, m, want);
-    for (size_t j = 0; j < n_rows; ++j) {
-        char name[32];
-        tirenv_sweep__name_of(m, p->shard + j * p->shards, name);
-        const size_t len = strlen(name);
-        if (strncmp(rows[j], name, len) != 0 || rows[j][len] != ',')
-            return tirenv_error(diag, TIRENV_EINVAL, p->dir, j + 1, table,
-                                "row %zu should be case %s", j + 1, name);
-    }
-    return TIRENV_OK;
-}
-
 static int copy_file(const char *from, const char *to, tirenv_diag *diag)
 {
     FILE *in = fopen(from, "rb");
@@ -210,35 +158,6 @@ static int bring(const char *part_dir, const char *rel, size_t rel_len, const ch
     return copy_file(from, to, diag);
 }
 
-/* The log and curve fields (7 and 8) of a manifest row. */
-static int row_files(const char *row, const char **log, size_t *log_len, const char **curve,
-                     size_t *curve_len)
-{
-    const char *f = row;
-    for (int k = 0; k < 6; ++k) {
-        f = strchr(f, ',');
-        if (!f)
-            return -1;
-        ++f;
-    }
-    const char *comma = strchr(f, ',');
-    if (!comma || strchr(comma + 1, ','))
-        return -1;
-    *log = f;
-    *log_len = (size_t)(comma - f);
-    *curve = comma + 1;
-    *curve_len = strlen(comma + 1);
-    /* Only files inside the part: a sweep writes logs/<case>.csv and curves/<case>.csv. */
-    if (*log_len && (*log_len <= 5 || strncmp(*log, "logs/", 5) != 0 ||
-                     memchr(*log + 5, '/', *log_len - 5)))
-        return -1;
-    if (*curve_len <= 7 || strncmp(*curve, "curves/", 7) != 0 || strchr(*curve + 7, '/') ||
-        strstr(row, ".."))
-        return -1;
-    return 0;
-}
-
-/* The merged tables: the shards' rows interleaved back into case order. */
 static int write_table(const char *path, const part *parts, size_t n, int keys, size_t m,
                        tirenv_diag *diag)
 {
@@ -293,7 +212,8 @@ static int merge_into(const char *stage, const part *parts, size_t n, size_t m,
         for (size_t j = 0; j < parts[k].n_case_rows && !status; ++j) {
             const char *log = NULL, *curve = NULL;
             size_t log_len = 0, curve_len = 0;
-            if (row_files(parts[k].case_rows[j], &log, &log_len, &curve, &curve_len) != 0)
+            if (tirenv_sweep__row_files(parts[k].case_rows[j], &log, &log_len, &curve,
+                                        &curve_len) != 0)
                 status = tirenv_error(diag, TIRENV_EPARSE, parts[k].dir, j + 1, "cases.csv",
                                       "row %zu does not name its files as a sweep does", j + 1);
             char c_path[1200], l_path[1200];
@@ -364,10 +284,14 @@ int tirenv_sweep_merge(const char *dir, size_t n, const char *const parts_dir[],
     if (!status)
         status = spec_cases(&parts[0], &m, diag);
     for (size_t k = 0; k < n && !status; ++k)
-        if (!(status = check_rows(&parts[k], parts[k].case_rows, parts[k].n_case_rows, m,
-                                  "cases.csv", diag)))
-            status = check_rows(&parts[k], parts[k].key_rows, parts[k].n_key_rows, m,
-                                "sweep.csv", diag);
+        if (!(status = tirenv_sweep__check_rows(
+                  parts[k].dir, "cases.csv",
+                  tirenv_sweep__lines(parts[k].cases, parts[k].case_head), parts[k].case_rows,
+                  parts[k].n_case_rows, m, parts[k].shard, parts[k].shards, diag)))
+            status = tirenv_sweep__check_rows(
+                parts[k].dir, "sweep.csv", tirenv_sweep__lines(parts[k].keys, parts[k].key_head),
+                parts[k].key_rows, parts[k].n_key_rows, m, parts[k].shard, parts[k].shards,
+                diag);
     /* The target: absent or empty, or this very sweep already merged. */
     char *rest = NULL;
     int state = 0;
@@ -380,7 +304,8 @@ int tirenv_sweep_merge(const char *dir, size_t n, const char *const parts_dir[],
             memcpy(rest, p0->spec, p0->rest_begin);
             memcpy(rest + p0->rest_begin, p0->spec + p0->rest_end,
                    p0->spec_len - p0->rest_end + 1);
-            state = tirenv_sweep__target_state(dir, rest, p0->tire, p0->tire_len, diag);
+            state = tirenv_sweep__target_state(dir, rest, p0->tire, p0->tire_len, m, 0, 1,
+                                               diag);
             if (state < 0)
                 status = -state;
         }

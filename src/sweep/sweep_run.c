@@ -470,8 +470,57 @@ static int tire_text(const char *dir, const tirenv_tire *tire, char **text, size
     return status;
 }
 
-int tirenv_sweep__target_state(const char *dir, const char *spec, const char *tire, size_t tire_len,
+/* Each case file a manifest's rows name, whole (tirenv_sweep__check_case). */
+static int whole_cases(const char *dir, char **rows, size_t n_rows, tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    for (size_t j = 0; j < n_rows && !status; ++j) {
+        const char *log = NULL, *curve = NULL;
+        size_t log_len = 0, curve_len = 0;
+        if (tirenv_sweep__row_files(rows[j], &log, &log_len, &curve, &curve_len) != 0)
+            return tirenv_error(diag, TIRENV_EPARSE, dir, 0, "cases.csv",
+                                "row %zu does not name its files as a sweep does", j + 1);
+        char c_path[1200], l_path[1200];
+        snprintf(c_path, sizeof c_path, "%s/%.*s", dir, (int)curve_len, curve);
+        snprintf(l_path, sizeof l_path, "%s/%.*s", dir, (int)log_len, log);
+        status = tirenv_sweep__check_case(c_path, log_len ? l_path : NULL,
+                                          "in a sweep taken for complete",
+                                          "remove the directory and run the sweep again, or "
+                                          "copy it whole", diag);
+    }
+    return status;
+}
+
+/* A complete directory's tables hold every row of the sweep (shard), and its case files are
+ * whole: a copy cut at a line end holds whole rows only, and would pass for this sweep,
+ * complete, with cases missing or a curve short of its points. */
+static int whole_tables(const char *dir, size_t m, size_t shard, size_t shards,
                         tirenv_diag *diag)
+{
+    static const char *const tables[] = {"cases.csv", "sweep.csv"};
+    int status = TIRENV_OK;
+    for (size_t t = 0; t < 2 && !status; ++t) {
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%s", dir, tables[t]);
+        char *text = NULL, **rows = NULL;
+        size_t len = 0, head = 0, n_rows = 0;
+        status = tirenv_sweep__read_text(path, TIRENV_SWEEP__TABLE_MAX, &text, &len, diag);
+        if (!status)
+            status = tirenv_sweep__split_table(text, len, path, &head, &rows, &n_rows, diag);
+        if (!status)
+            status = tirenv_sweep__check_rows(dir, tables[t], tirenv_sweep__lines(text, head),
+                                              rows, n_rows, m, shard, shards, diag);
+        if (!status && t == 0)
+            status = whole_cases(dir, rows, n_rows, diag);
+        free(rows);
+        free(text);
+    }
+    return status;
+}
+
+int tirenv_sweep__target_state(const char *dir, const char *spec, const char *tire,
+                               size_t tire_len, size_t m, size_t shard, size_t shards,
+                               tirenv_diag *diag)
 {
     struct stat st;
     if (stat(dir, &st) != 0)
@@ -490,8 +539,10 @@ int tirenv_sweep__target_state(const char *dir, const char *spec, const char *ti
     snprintf(path, sizeof path, "%s/tire.tir", dir);
     if (same == 1 && (same = same_text(path, tire, tire_len, "the tire", diag)) < 0)
         return same;
-    if (same == 1)
-        return 1;
+    if (same == 1) {
+        const int status = whole_tables(dir, m, shard, shards, diag);
+        return status ? -status : 1;
+    }
     DIR *d = opendir(dir);
     if (!d)
         return -tirenv_error(diag, TIRENV_EIO, dir, 0, "", "cannot read: %s", strerror(errno));
@@ -689,7 +740,8 @@ int tirenv_sweep_run(const char *dir, const tirenv_tire *tire, const tirenv_swee
         status = tirenv_mkdir_p(parent, diag);
     if (!status)
         status = tire_text(parent, tire, &tire_s, &tire_len, diag);
-    int state = status ? 0 : tirenv_sweep__target_state(dir, spec, tire_s, tire_len, diag);
+    int state = status ? 0 : tirenv_sweep__target_state(dir, spec, tire_s, tire_len, r.n,
+                                                                s->shard, s->shards, diag);
     if (state < 0)
         status = -state;
     if (!status && state == 1) {

@@ -20,6 +20,12 @@ check "identify --write: the file re-read has the identified values, comments an
     '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 407000 *\$ c_r" t.tir &&
      [ $(grep -c "tirenv identify: begin" t.tir) -eq 1 ] &&
      [ $(grep -c "^\\$" t.tir) -eq $(grep -c "^\\$" "$repo/data/tires/default.tir") ]'
+# A file of CRLF line ends keeps them (every line was written back with LF alone).
+sed 's/$/\r/' "$repo/data/tires/default.tir" >crlf.tir
+run "$bin" identify --tire crlf.tir --set RADIAL_STIFFNESS=1e6 --write
+check "identify --write on a CRLF file: every line still ends in CRLF, else the LF file's bytes" \
+    '[ $rc -eq 0 ] && [ "$(grep -c "$(printf "\r")\$" crlf.tir)" -eq "$(wc -l <crlf.tir)" ] &&
+     tr -d "\r" <crlf.tir | cmp -s - t.tir'
 # --set of a key --write does not write: the file would be another tire than its note says.
 cp t.tir t0.tir
 run "$bin" identify --tire t.tir --set FOUNDATION_STIFFNESS=2e5 --write
@@ -112,6 +118,30 @@ check "... 16 kN, below the data set's loads: refused, naming the contact length
 run "$bin" envelope --model nn --nn "$data/nn-v1.json" --cleat 0.10,0.10 --load 18000 -o o.csv
 check "an older network file: read, with a warning naming training.data.contact_law" \
     '[ $rc -eq 0 ] && grep -q "warning: .*training.data.contact_law" err'
+# tirenv_tir_need (docs/models.md 14.2): the network needs no springs model of the tire file
+# (nof.tir above has none), its load's contact length is its own file's law; where an older
+# file's springs stand-in, or a rigid disc's load at a --contact-length, would be another tire's,
+# refused.
+run "$bin" envelope --model nn --nn nn.json --tire nof.tir --cleat 0.10,0.10 --load 17100 -o n.csv
+check "envelope --model nn, a tire file with no springs model: the network's own law, exit 0" \
+    '[ $rc -eq 0 ] && grep -q "contact length 0\.28[0-9]* m" err'
+run "$bin" envelope --model nn --nn "$data/nn-v1.json" --tire nof.tir --cleat 0.10,0.10 \
+    --load 18000 -o n1.csv
+check "... an older network file there: exit 2 naming training.data.contact_law and the tire" \
+    '[ $rc -eq 2 ] && grep -q "nn-v1.json: training.data.contact_law: .* nof.tir has no springs" err &&
+     no_file n1.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point,nn --nn "$data/nn-v1.json" \
+    --extrapolate --enveloping static --out-dir rn --set FRONT_AXLE.TIRE_FILE=nof.tir
+check "... and in the ride, an axle's tire without one: exit 2, the same words" \
+    '[ $rc -eq 2 ] && grep -q "training.data.contact_law: .* nof.tir has no springs" err &&
+     [ ! -e rn ]'
+run "$bin" envelope --model rigid --tire nof.tir --cleat 0.10,0.10 --contact-length 0.3 -o rc.csv
+check "the rigid disc at a --contact-length (the springs model's load) there: exit 2, FNOMIN" \
+    '[ $rc -eq 2 ] && grep -q "FNOMIN" err && no_file rc.csv'
+run "$bin" sweep --model rigid --tire nof.tir --lengths 0.1 --heights 0.05 --contact-lengths 0.3 \
+    -o rsw
+check "... and in a sweep over contact lengths (its cases' loads): exit 2, FNOMIN, nothing written" \
+    '[ $rc -eq 2 ] && grep -q "FNOMIN" err && [ ! -e rsw ] && [ ! -e rsw.partial ]'
 # In the ride (inputs at each axle's static load), the network's input to the rear axle over
 # the cleat against the ring's, the tire it was trained on (the data set's tire.tir): the RMS
 # over the samples where either is above 0.1 mm within the network's own validation RMS. The

@@ -90,4 +90,13 @@ check "sweep --help documents shards, merge and --jobs" \
     '[ $rc -eq 0 ] && grep -q -- "--shard K/N" out && grep -q "sweep merge" out &&
      grep -q -- "--jobs N" out'
 
+# The rigid disc and the point have no contact length at a load: a sweep over loads is refused
+# before anything is written (each case failed after DIR.partial was made, and left it).
+for m in rigid point; do
+    run "$bin" sweep --model $m --lengths 0.1 --heights 0.05 --loads 3000 -o noload
+    check "sweep --model $m --loads: exit 2 naming loads, no DIR nor DIR.partial" \
+        '[ $rc -eq 2 ] && grep -q "loads: the $m model has no contact length of its own" err &&
+         [ ! -e noload ] && [ ! -e noload.partial ]'
+done
+
 clilib_done

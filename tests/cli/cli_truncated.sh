@@ -7,7 +7,8 @@
 # before read as a shorter number or word with exit 0; the rule is docs/formats.md section 1
 # ("Last line"), for OpenCRG text its fixed-width records (section 5.1). The whole file reads
 # (exit 0), and a file cut at a line end is a shorter file of its format (exit 0), except a
-# data set's manifest whose source.txt declares its number of cases (formats.md section 9).
+# data set's manifest whose source.txt declares its number of cases (formats.md section 9), or
+# a sweep's whose sweep.txt does (section 13).
 . "$(dirname "$0")/../lib/clilib.sh"
 
 root=$data/../..
@@ -126,5 +127,47 @@ refused "... train" d205/cases.csv $end "$says" n.json \
     "$bin" train --data d205 --seeds 1 -o n.json
 refused "... compare" d205/cases.csv $end "$says" c "$bin" compare --data d205 -o c
 refused "... study" d205/cases.csv $end "$says" s "$bin" study --data d205 -o s
+
+# A sweep's data set has no source.txt: its sweep.txt declares the grid's cases (and a shard's
+# part of them). Its manifest or sweep.csv cut at a line end, whole rows short, is refused by
+# the data-set readers, by the same sweep run again (which took it for complete, nothing to
+# do) and by sweep merge, naming the file and the line after its last row.
+grid="--model cam --lengths 0.1,0.2,0.3 --heights 0.05,0.1 --contact-lengths 0.3,0.35"
+run "$bin" sweep $grid -o sw
+check "a whole sweep (12 cases) lists as a data set" \
+    '[ $rc -eq 0 ] && "$bin" dataset list sw >out && [ "$(grep -c "^c00" out)" -eq 12 ]'
+head -n $(($(wc -l <sw/cases.csv) - 2)) sw/cases.csv >m.csv && cp m.csv sw/cases.csv
+end=$(($(wc -l <sw/cases.csv) + 1))
+refused "sweep manifest cut at a line end, two cases short: dataset list" sw/cases.csv $end \
+    "10 cases, but sw/sweep.txt:11 declares cases = 12" - "$bin" dataset list sw
+refused "... train" sw/cases.csv $end "declares cases = 12" n.json \
+    "$bin" train --data sw --seeds 1 -o n.json
+refused "... the same sweep again (not 'complete, nothing to do')" sw/cases.csv $end \
+    "10 rows, but the sweep has 12 cases" - "$bin" sweep $grid -o sw
+run "$bin" sweep $grid -o sw2
+head -n -1 sw2/sweep.csv >k.csv && cp k.csv sw2/sweep.csv
+refused "... its sweep.csv cut so: the same sweep again" sw2/sweep.csv $(($(wc -l <k.csv) + 1)) \
+    "11 rows, but the sweep has 12 cases" - "$bin" sweep $grid -o sw2
+# A case's curve cut at a line end, points short: no whole case of the sweep.
+run "$bin" sweep $grid -o sw3
+head -n -3 sw3/curves/c0002.csv >c.csv && cp c.csv sw3/curves/c0002.csv
+run "$bin" dataset list sw3
+check "a sweep's curve cut at a line end: dataset list, exit 2 naming the curve and x_N" \
+    '[ $rc -eq 2 ] && grep -q "sw3/curves/c0002.csv: x_N: 98 points, where a sweep.s curve" err'
+run "$bin" sweep $grid -o sw3
+check "... the same sweep again: exit 2 naming the curve (not 'complete, nothing to do')" \
+    '[ $rc -eq 2 ] &&
+     grep -q "sw3/curves/c0002.csv: x_N: this file, in a sweep taken for complete, .*: 98 points" err'
+for k in 0 1; do
+    "$bin" sweep $grid --shard $k/2 -o part$k 2>/dev/null
+done
+head -n -1 part1/cases.csv >m.csv && cp m.csv part1/cases.csv
+end=$(($(wc -l <m.csv) + 1))
+refused "a shard's manifest cut so: dataset list" part1/cases.csv $end \
+    "5 cases, but part1/sweep.txt:11 declares cases = 12 of shard 1/2 (6 rows)" - \
+    "$bin" dataset list part1
+refused "... sweep merge, nothing written" part1/cases.csv $end \
+    "5 rows, but shard 1/2 of the sweep's 12 cases has 6" merged \
+    "$bin" sweep merge part0 part1 -o merged
 
 clilib_done

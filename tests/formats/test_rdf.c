@@ -391,6 +391,11 @@ static void test_checked_in_passing(void **state)
         {"meter", "0 0 0\n1 1e308 1e308\n2 0 0\n", {9, 9, 9},
          {"vertex 2: z = inf is not finite; expected a finite number",
           "vertex 2: z = 1e+308 m is beyond", "vertex 2: z = 1e+308 m is beyond"}},
+        /* Each side beyond TIRENV_PROFILE_MAX_COORDINATE, their mean 0: the mean is refused
+         * with the left side (it was read as 0). */
+        {"meter", "0 0 0\n1 1e308 -1e308\n2 0 0\n", {9, 9, 9},
+         {"vertex 2: z = 1e+308 m is beyond", "vertex 2: z = 1e+308 m is beyond",
+          "vertex 2: z = -1e+308 m is beyond"}},
         /* x finite in km, not in m. */
         {"km", "0 0 0\n1e306 0 0\n", {9, 9, 9},
          {"vertex 2: x = inf is not finite; expected a finite number", "x = inf",

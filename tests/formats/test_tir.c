@@ -825,6 +825,37 @@ static void test_get_every_key(void **state)
     assert_int_equal(tirenv_tir_get(NULL, "METHOD", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
 }
 
+/* tirenv_tir_need: every model type of the table, alone and not, against what it computes
+ * with (docs/models.md 14.2); a type added to the table without a row here fails. */
+static void test_need_of_every_model(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name;
+        unsigned shared, alone; /* the need among other models, and alone */
+    } rows[] = {
+        {"rigid", 0, 0},
+        {"springs", TIRENV_TIR_SPRINGS, TIRENV_TIR_SPRINGS},
+        {"ring", TIRENV_TIR_RING, TIRENV_TIR_RING},
+        {"cam", TIRENV_TIR_CAM, TIRENV_TIR_CAM | TIRENV_TIR_ONLY},
+        {"nn", 0, 0},  /* its load's contact length is its own file's law (14.3) */
+        {"point", 0, 0},
+    };
+    const size_t n = sizeof rows / sizeof rows[0];
+    size_t types = 0;
+    for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t, ++types) {
+        size_t i = 0;
+        while (i < n && strcmp(rows[i].name, tirenv_model_type_name(*t)) != 0)
+            i++;
+        assert_true(i < n);
+        assert_int_equal(tirenv_tir_need(*t, 0), rows[i].shared);
+        assert_int_equal(tirenv_tir_need(*t, 1), rows[i].alone);
+    }
+    assert_int_equal(types, n);
+    assert_int_equal(tirenv_tir_need(NULL, 0), 0);
+    assert_int_equal(tirenv_tir_need(NULL, 1), 0);
+}
+
 int main(void)
 {
 #define T(fn) cmocka_unit_test_setup_teardown(fn, tirenv_test_dir_setup, tirenv_test_dir_teardown)
@@ -849,6 +880,7 @@ int main(void)
         T(test_cam_keys_given),
         T(test_own_q_fz1_and_pfz1),
         T(test_get_every_key),
+        cmocka_unit_test(test_need_of_every_model),
     };
 #undef T
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,82 @@
+/* What a sweep's sweep.txt declares of the manifest beside it (docs/formats.md section 13):
+ * the grid's `cases = M` and, in a shard, `shard = K/N`, so that a data set written by tirenv
+ * sweep, whose directory has no source.txt, still refuses a manifest cut at a line end.
+ * SPDX-License-Identifier: Apache-2.0 */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dataset/dataset_impl.h"
+#include "io/io.h"
+
+/* A whole number of digits alone at s, up to max, into *v; the characters read, 0 if none or
+ * too large. */
+static size_t digits(const char *s, unsigned long max, unsigned long *v)
+{
+    const size_t n = strspn(s, "0123456789");
+    if (n == 0 || n > 7)
+        return 0;
+    *v = strtoul(s, NULL, 10);
+    return *v <= max ? n : 0;
+}
+
+/* "key = " at the start of the line: the value after it, else NULL. */
+static const char *value_of(const char *line, const char *key)
+{
+    const size_t n = strlen(key);
+    return strncmp(line, key, n) == 0 && strncmp(line + n, " = ", 3) == 0 ? line + n + 3
+                                                                           : NULL;
+}
+
+int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *out,
+                                   tirenv_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    char path[1100];
+    const int w = snprintf(path, sizeof path, "%s/sweep.txt", dir);
+    if (w < 0 || (size_t)w >= sizeof path)
+        return TIRENV_OK;  /* no such file can be there: tirenv_dataset_read names the dir */
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return TIRENV_OK;  /* not a sweep */
+    tirenv_csv__reader r;
+    tirenv_csv__open_stream(&r, fp, path, diag);
+    unsigned long cases = 0, k = 0, n = 1;
+    size_t cases_line = 0;
+    int status = TIRENV_OK, more;
+    while (!status && (more = tirenv_csv__next(&r)) > 0) {
+        const char *v;
+        if ((v = value_of(r.text, "cases"))) {
+            const size_t used = digits(v, TIRENV_DATASET__MAX_CASES, &cases);
+            cases_line = r.line;
+            if (!used || v[used] || cases == 0)
+                status = tirenv_csv__fail(&r, (size_t)(v - r.text) + 1, "cases",
+                                          "expected the sweep's number of cases, a whole "
+                                          "number from 1 to %u, got '%.60s'",
+                                          TIRENV_DATASET__MAX_CASES, v);
+        } else if ((v = value_of(r.text, "shard"))) {
+            const size_t a = digits(v, TIRENV_DATASET__MAX_CASES, &k);
+            const size_t b = a && v[a] == '/' ? digits(v + a + 1, TIRENV_DATASET__MAX_CASES, &n)
+                                              : 0;
+            if (!b || v[a + 1 + b] || k >= n)
+                status = tirenv_csv__fail(&r, (size_t)(v - r.text) + 1, "shard",
+                                          "expected 'K/N' with 0 <= K < N, got '%.60s'", v);
+        }
+    }
+    if (!status && more < 0)
+        status = -more;
+    tirenv_csv__close(&r);
+    if (status || !cases_line)
+        return status;  /* a sweep.txt without the count (none of tirenv's): nothing said */
+    out->cases = cases > k ? (cases - k - 1) / n + 1 : 0;
+    if (!out->cases)
+        return TIRENV_OK;  /* a shard beyond the grid: no rows, which the manifest refuses */
+    out->line = cases_line;
+    snprintf(out->file, sizeof out->file, "%s", path);
+    if (n > 1)
+        snprintf(out->what, sizeof out->what, "cases = %lu of shard %lu/%lu (%zu rows)", cases,
+                 k, n, out->cases);
+    else
+        snprintf(out->what, sizeof out->what, "cases = %lu", cases);
+    return TIRENV_OK;
+}
