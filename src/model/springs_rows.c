@@ -143,7 +143,7 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
  * elements. */
 static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 {
-    if (!c->seen_sec && !(c->seen_sec = malloc(7 * N * sizeof *c->seen_sec)))
+    if (!c->seen_sec && !(c->seen_sec = calloc(7 * N, sizeof *c->seen_sec)))
         return TIRENV_ENOMEM;
     if (n <= c->cap_seen)
         return TIRENV_OK;
@@ -186,6 +186,71 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
     return 1024 * DBL_EPSILON * (fabs(z) + R0 + p->z_abs_max);
 }
 
+/* The scan's vectorised loops (prove_guess, seen_bounds, seen_check) are compiled for
+ * AVX-512, AVX2 and the baseline (SSE2) alike, and the loader picks the best the processor
+ * has (GCC's target_clones through an ELF ifunc, as the network's evaluation,
+ * src/nn/nn_impl.h): with SSE2 alone the guessed sectors cost more time than the walk they
+ * replace, with AVX-512 (real gathers, masks, three-operand instructions) much less
+ * (docs/models.md section 4.8, Cost). The same bits from every clone: the same IEEE
+ * operations, no contraction in ISO C mode. Not under ThreadSanitizer, whose runtime the
+ * ifunc resolver would run before. CMakeLists.txt compiles this file without errno, so that
+ * the square root vectorises. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
+    !defined(__SANITIZE_THREAD__) && !defined(TIRENV_SPRINGS_NO_CLONES)
+#define PROVE_CLONES __attribute__((noinline, target_clones("avx512f", "avx2", "default")))
+#else
+#define PROVE_CLONES
+#endif
+
+/* What seen_todo's sectors' bounds take besides each sector's numbers. */
+typedef struct {
+    double tau_dev, h_rise, B, ab_lo, aD, aD_reach, tol, tol_r, tol4_r, Dp;
+} seen_at_z;
+
+/* seen_todo's bounds Qt[q] and Qm[q] of the sectors q < n (seen_todo's comment), from the
+ * penetrations at z, Pz[0 .. n], and what the first scan kept (sA, sD, sT, sZ): a loop the
+ * compiler vectorises. Each selection is between values computed on both sides, or adds 0
+ * or takes a factor of 1 (the same numbers as the branches they replace: x + 0 and x * 1 are
+ * x, and a zero's sign cannot reach a test), so that no operation is left to one side only,
+ * which would keep the branch. */
+PROVE_CLONES static void seen_bounds(size_t n, const double *restrict Pz,
+                                     const double *restrict sA, const double *restrict sD,
+                                     const double *restrict sT, const double *restrict sZ,
+                                     const seen_at_z *restrict W, double *restrict Qt,
+                                     double *restrict Qm)
+{
+    const double tau_dev = W->tau_dev, h_rise = W->h_rise, B = W->B, ab_lo = W->ab_lo;
+    const double aD = W->aD, aD_reach = W->aD_reach, tol = W->tol, tol_r = W->tol_r;
+    const double tol4_r = W->tol4_r, Dp = W->Dp;
+    for (size_t q = 0; q < n; ++q) {
+        const double Pl = Pz[q], Pr = Pz[q + 1];
+        const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
+        const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
+        /* the largest and the least chord at z_r */
+        const double top = sA[q] + (sD[q] > 0 ? sD[q] : 0);
+        const double c_lo = sA[q] + (sD[q] < 0 ? sD[q] : 0);
+        const double Base = h_rise + -mu * (mu < 0 ? B : 1);
+        const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
+        const double dt = aD * sT[q];
+        /* z within 1 % of every proven vertex's depth, the chord above zero */
+        const double chord_holds = c_lo - tol_r + mu - tol >= fabs(D) * dt ? 0 : INFINITY;
+        Qt[q] = dt + 2 * t_snap + (aD_reach <= sZ[q] ? chord_holds : INFINITY);
+        Qm[q] = Base + dt * Kq + tol4_r - Dp * sZ[q];
+    }
+}
+
+/* Whether each vertex e[0 .. n - 1] has a proof and it holds at the bounds Qt, Qm
+ * (seen_todo), into ok: a loop the compiler vectorises. The bounds of a vertex without a
+ * proof are read too (of a sector seen_todo may not have bounded now: seen_sec is zeroed
+ * when made, so they are numbers) and not used. */
+PROVE_CLONES static void seen_check(size_t n, const tirenv_springs__cc_seen *restrict e,
+                                    const double *restrict Qt, const double *restrict Qm,
+                                    long *restrict ok)
+{
+    for (size_t k = 0; k < n; ++k)
+        ok[k] = (e[k].m_t > 0) & (Qt[e[k].i] < e[k].m_t) & (e[k].margin >= Qm[e[k].i]);
+}
+
 /* At a later height z of the x the proofs were made at (vertex_rows' comment): the vertices
  * j0 .. j_end - 1 (within those proven) with no proof or one that does not hold at z,
  * ascending, into todo; returns their number, *skipped the others'. */
@@ -224,32 +289,23 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
     const size_t hi = c->seen_hi;
     for (size_t q = lo; q <= hi + 1; ++q)
         Pz[q] = pen(q, a, b, d);
-    for (size_t q = lo; q <= hi; ++q) {
-        const double Pl = Pz[q], Pr = Pz[q + 1];
-        const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
-        const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
-        const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
-        const double Base = h_rise + (mu < 0 ? -mu * B : -mu);
-        const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
-        const double dt = aD * sT[q];
-        const double c_lo = sD[q] < 0 ? sA[q] + sD[q] : sA[q]; /* the least chord at z_r */
-        /* z within 1 % of every proven vertex's depth, the chord above zero */
-        const int holds = (aD_reach <= sZ[q]) & (c_lo - tol_r + mu - tol >= fabs(D) * dt);
-        Qt[q] = holds ? dt + 2 * t_snap : INFINITY;
-        Qm[q] = Base + dt * Kq + tol4_r - Dp * sZ[q];
-    }
+    seen_bounds(hi + 1 - lo, Pz + lo, sA + lo, sD + lo, sT + lo, sZ + lo, &(const seen_at_z){
+                    .tau_dev = tau_dev, .h_rise = h_rise, .B = B, .ab_lo = ab_lo, .aD = aD,
+                    .aD_reach = aD_reach, .tol = tol, .tol_r = tol_r, .tol4_r = tol4_r,
+                    .Dp = Dp}, Qt + lo, Qm + lo);
     /* A proof holds if its sector's tests hold and t stays more than 2 t_snap inside the
-     * sector, and the margin covers h's rise, the chord's fall and t's move: both tested,
-     * and the vertex listed, without a branch on the outcome (it follows the road, not a
-     * pattern). */
+     * sector, and the margin covers h's rise, the chord's fall and t's move: both tested for
+     * a block of vertices at once (seen_check), then the vertices listed without a branch on
+     * the outcome (it follows the road, not a pattern). */
     size_t n = 0;
-    for (size_t k = j0 - s0; k < j_end - s0; ++k) {
-        const tirenv_springs__cc_seen *const e = c->seen + k;
-        int ok = 0;
-        if (e->m_t > 0) /* a proof (the other fields are set only then) */
-            ok = (Qt[e->i] < e->m_t) & (e->margin >= Qm[e->i]);
-        todo[n] = s0 + k;
-        n += !ok;
+    long ok[64];
+    for (size_t k0 = j0 - s0; k0 < j_end - s0; k0 += 64) {
+        const size_t m = j_end - s0 - k0 < 64 ? j_end - s0 - k0 : 64;
+        seen_check(m, c->seen + k0, Qt, Qm, ok);
+        for (size_t k = 0; k < m; ++k) {
+            todo[n] = s0 + k0 + k;
+            n += !ok[k];
+        }
     }
     *skipped = j_end - j0 - n;
     return n;
@@ -410,20 +466,6 @@ typedef struct {
     double margin[PROVE_BLOCK], m_t[PROVE_BLOCK];
 } prove_block;
 
-/* prove_guess is compiled for AVX-512, AVX2 and the baseline (SSE2) alike, and the loader
- * picks the best the processor has (GCC's target_clones through an ELF ifunc, as the
- * network's evaluation, src/nn/nn_impl.h): wider vectors, real gathers and three-operand
- * instructions take the 1 mm road's first scans in 10 % less time than SSE2 alone
- * (docs/models.md section 4.8, Cost). The same bits from every clone: the same IEEE
- * operations, no contraction. Not under ThreadSanitizer, whose runtime the ifunc resolver
- * would run before. CMakeLists.txt compiles this file without errno, so that the square
- * root vectorises. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
-    !defined(__SANITIZE_THREAD__) && !defined(TIRENV_SPRINGS_NO_CLONES)
-#define PROVE_CLONES __attribute__((noinline, target_clones("avx512f", "avx2", "default")))
-#else
-#define PROVE_CLONES
-#endif
 
 /* The proving scan of the vertices j0 .. j0 + m - 1 at their guessed sectors, into B. Two
  * loops: the guess's chain of operations (a division, the polynomial, the conversion) and the
