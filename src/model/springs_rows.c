@@ -482,7 +482,7 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
     const double theta_0 = G->theta_0, inv_dphi = G->inv_dphi;
     const double g_lo = G->g_lo, g_hi = G->g_hi;
     for (size_t k = 0; k < m; ++k) {
-        /* atan(r), |r| <= 1, within 1e-5 rad (Abramowitz and Stegun 4.4.49), in Estrin's
+        /* atan(r), |r| <= 1, within 2e-8 rad (Abramowitz and Stegun 4.4.49), in Estrin's
          * order: a guess only, checked below; NaN or far off where dz <= 0, then clamped */
         const double r = (X[k] - x) / (z - Z[k]), r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
         const double p01 = 0.9999993329 - 0.3332985605 * r2;
