@@ -344,14 +344,17 @@ typedef struct {
      * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
      * bounds on a proven vertex's |dt/dz| and on its depth, and room for what a later height
      * needs of them (springs_rows.c); per vertex the scan's list of vertices to compute
-     * (cap_seen); the vertices the last scan skipped by the proofs (what the tests count);
+     * (cap_seen); the vertices the last scan skipped by the proofs and those whose sector
+     * its guess missed (scan_prove; what the tests count);
      * scan_plain, set only by the tests: no proofs, every vertex computed by the plain scan
-     * (what the proving loop and the proofs must give bit for bit) */
+     * (what the proving loop and the proofs must give bit for bit); scan_blind, set only by
+     * the tests: the proving scan guesses every vertex in the first sector in reach, so that
+     * the walk from a missed guess takes nearly every vertex */
     tirenv_springs__cc_seen *seen;
     unsigned long long seen_serial;
     double seen_x, seen_z;
-    size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped;
-    int scan_plain;
+    size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped, scan_missed;
+    int scan_plain, scan_blind;
     double *seen_sec;
     size_t *seen_todo;
     unsigned char *in_w;   /* per row: in the working set */

@@ -143,7 +143,7 @@ static int reserve_vrows(tirenv_springs__cc *c, size_t n)
  * elements. */
 static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 {
-    if (!c->seen_sec && !(c->seen_sec = malloc(7 * N * sizeof *c->seen_sec)))
+    if (!c->seen_sec && !(c->seen_sec = calloc(7 * N, sizeof *c->seen_sec)))
         return TIRENV_ENOMEM;
     if (n <= c->cap_seen)
         return TIRENV_OK;
@@ -162,9 +162,10 @@ static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 
 /* The scan's loops are each compiled on their own: GCC otherwise inlines them all into
  * vertex_rows, whose registers then go where it sees fit, and a change to one loop moved the
- * others' time by a few per cent. */
+ * others' time by a few per cent. Each starts on a 64-byte boundary: where the code before it
+ * ended moved the 10 mm road's time (the plain scan, scan_all) by 2.5 %. */
 #if defined(__GNUC__)
-#define SCAN_LOOP static __attribute__((noinline))
+#define SCAN_LOOP static __attribute__((noinline, aligned(64)))
 #else
 #define SCAN_LOOP static
 #endif
@@ -184,6 +185,71 @@ static inline double pen(size_t e, size_t a, size_t b, const double d[])
 static double seen_tol(const tirenv_profile *p, double R0, double z)
 {
     return 1024 * DBL_EPSILON * (fabs(z) + R0 + p->z_abs_max);
+}
+
+/* The scan's vectorised loops (prove_guess, seen_bounds, seen_check) are compiled for
+ * AVX-512, AVX2 and the baseline (SSE2) alike, and the loader picks the best the processor
+ * has (GCC's target_clones through an ELF ifunc, as the network's evaluation,
+ * src/nn/nn_impl.h): with SSE2 alone the guessed sectors cost more time than the walk they
+ * replace, with AVX-512 (real gathers, masks, three-operand instructions) much less
+ * (docs/models.md section 4.8, Cost). The same bits from every clone: the same IEEE
+ * operations, no contraction in ISO C mode. Not under ThreadSanitizer, whose runtime the
+ * ifunc resolver would run before. CMakeLists.txt compiles this file without errno, so that
+ * the square root vectorises. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
+    !defined(__SANITIZE_THREAD__) && !defined(TIRENV_SPRINGS_NO_CLONES)
+#define PROVE_CLONES __attribute__((noinline, target_clones("avx512f", "avx2", "default")))
+#else
+#define PROVE_CLONES
+#endif
+
+/* What seen_todo's sectors' bounds take besides each sector's numbers. */
+typedef struct {
+    double tau_dev, h_rise, B, ab_lo, aD, aD_reach, tol, tol_r, tol4_r, Dp;
+} seen_at_z;
+
+/* seen_todo's bounds Qt[q] and Qm[q] of the sectors q < n (seen_todo's comment), from the
+ * penetrations at z, Pz[0 .. n], and what the first scan kept (sA, sD, sT, sZ): a loop the
+ * compiler vectorises. Each selection is between values computed on both sides, or adds 0
+ * or takes a factor of 1 (the same numbers as the branches they replace: x + 0 and x * 1 are
+ * x, and a zero's sign cannot reach a test), so that no operation is left to one side only,
+ * which would keep the branch. */
+PROVE_CLONES static void seen_bounds(size_t n, const double *restrict Pz,
+                                     const double *restrict sA, const double *restrict sD,
+                                     const double *restrict sT, const double *restrict sZ,
+                                     const seen_at_z *restrict W, double *restrict Qt,
+                                     double *restrict Qm)
+{
+    const double tau_dev = W->tau_dev, h_rise = W->h_rise, B = W->B, ab_lo = W->ab_lo;
+    const double aD = W->aD, aD_reach = W->aD_reach, tol = W->tol, tol_r = W->tol_r;
+    const double tol4_r = W->tol4_r, Dp = W->Dp;
+    for (size_t q = 0; q < n; ++q) {
+        const double Pl = Pz[q], Pr = Pz[q + 1];
+        const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
+        const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
+        /* the largest and the least chord at z_r */
+        const double top = sA[q] + (sD[q] > 0 ? sD[q] : 0);
+        const double c_lo = sA[q] + (sD[q] < 0 ? sD[q] : 0);
+        const double Base = h_rise + -mu * (mu < 0 ? B : 1);
+        const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
+        const double dt = aD * sT[q];
+        /* z within 1 % of every proven vertex's depth, the chord above zero */
+        const double chord_holds = c_lo - tol_r + mu - tol >= fabs(D) * dt ? 0 : INFINITY;
+        Qt[q] = dt + 2 * t_snap + (aD_reach <= sZ[q] ? chord_holds : INFINITY);
+        Qm[q] = Base + dt * Kq + tol4_r - Dp * sZ[q];
+    }
+}
+
+/* Whether each vertex e[0 .. n - 1] has a proof and it holds at the bounds Qt, Qm
+ * (seen_todo), into ok: a loop the compiler vectorises. The bounds of a vertex without a
+ * proof are read too (of a sector seen_todo may not have bounded now: seen_sec is zeroed
+ * when made, so they are numbers) and not used. */
+PROVE_CLONES static void seen_check(size_t n, const tirenv_springs__cc_seen *restrict e,
+                                    const double *restrict Qt, const double *restrict Qm,
+                                    long *restrict ok)
+{
+    for (size_t k = 0; k < n; ++k)
+        ok[k] = (e[k].m_t > 0) & (Qt[e[k].i] < e[k].m_t) & (e[k].margin >= Qm[e[k].i]);
 }
 
 /* At a later height z of the x the proofs were made at (vertex_rows' comment): the vertices
@@ -224,32 +290,23 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
     const size_t hi = c->seen_hi;
     for (size_t q = lo; q <= hi + 1; ++q)
         Pz[q] = pen(q, a, b, d);
-    for (size_t q = lo; q <= hi; ++q) {
-        const double Pl = Pz[q], Pr = Pz[q + 1];
-        const double A = Pl - fabs(Pr - Pl) * tau_dev, D = Pr - Pl;
-        const double dA = A - sA[q], dB = dA + (D - sD[q]), mu = dB < dA ? dB : dA;
-        const double top = sD[q] > 0 ? sA[q] + sD[q] : sA[q]; /* the largest chord at z_r */
-        const double Base = h_rise + (mu < 0 ? -mu * B : -mu);
-        const double Kq = fabs(D) * B + (top + (mu > 0 ? mu : 0)) * ab_lo;
-        const double dt = aD * sT[q];
-        const double c_lo = sD[q] < 0 ? sA[q] + sD[q] : sA[q]; /* the least chord at z_r */
-        /* z within 1 % of every proven vertex's depth, the chord above zero */
-        const int holds = (aD_reach <= sZ[q]) & (c_lo - tol_r + mu - tol >= fabs(D) * dt);
-        Qt[q] = holds ? dt + 2 * t_snap : INFINITY;
-        Qm[q] = Base + dt * Kq + tol4_r - Dp * sZ[q];
-    }
+    seen_bounds(hi + 1 - lo, Pz + lo, sA + lo, sD + lo, sT + lo, sZ + lo, &(const seen_at_z){
+                    .tau_dev = tau_dev, .h_rise = h_rise, .B = B, .ab_lo = ab_lo, .aD = aD,
+                    .aD_reach = aD_reach, .tol = tol, .tol_r = tol_r, .tol4_r = tol4_r,
+                    .Dp = Dp}, Qt + lo, Qm + lo);
     /* A proof holds if its sector's tests hold and t stays more than 2 t_snap inside the
-     * sector, and the margin covers h's rise, the chord's fall and t's move: both tested,
-     * and the vertex listed, without a branch on the outcome (it follows the road, not a
-     * pattern). */
+     * sector, and the margin covers h's rise, the chord's fall and t's move: both tested for
+     * a block of vertices at once (seen_check), then the vertices listed without a branch on
+     * the outcome (it follows the road, not a pattern). */
     size_t n = 0;
-    for (size_t k = j0 - s0; k < j_end - s0; ++k) {
-        const tirenv_springs__cc_seen *const e = c->seen + k;
-        int ok = 0;
-        if (e->m_t > 0) /* a proof (the other fields are set only then) */
-            ok = (Qt[e->i] < e->m_t) & (e->margin >= Qm[e->i]);
-        todo[n] = s0 + k;
-        n += !ok;
+    long ok[64];
+    for (size_t k0 = j0 - s0; k0 < j_end - s0; k0 += 64) {
+        const size_t m = j_end - s0 - k0 < 64 ? j_end - s0 - k0 : 64;
+        seen_check(m, c->seen + k0, Qt, Qm, ok);
+        for (size_t k = 0; k < m; ++k) {
+            todo[n] = s0 + k0 + k;
+            n += !ok[k];
+        }
     }
     *skipped = j_end - j0 - n;
     return n;
@@ -373,103 +430,212 @@ SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_e
 }
 
 /* The first scan at an x: what scan_vertex does, with a proof for every vertex dropped
- * between elements (vertex_rows' comment), as one loop written for it. The same operations
- * give the same rows and tests, but the sector's penetrations and slack follow the walk
- * step by step (they are the sector's alone), where scan_vertex takes them again behind a
- * branch at each change of sector, and the scan's state stays in locals: on a road at 1 mm
- * this loop is the scan's cost. The proofs keep the raw margin, min(t, 1 - t) and the sector;
- * seen_todo takes the allowances and t_snap off once a sector (m_t 0: no proof). The
- * vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1]; the walk starts at sector
- * *i_at and leaves it there; the rows go to out, the new end returned; [*lo, *hi]: the
- * sectors the walk visited (one step at a time, so every proof's sector is among them),
- * within [0, N - 2]. */
-SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t *i_at, size_t j0,
-                                             size_t n, tirenv_springs__cc_seen seen[],
-                                             tirenv_springs__cc_row *out, size_t *lo,
-                                             size_t *hi)
+ * between elements (vertex_rows' comment), in two passes over blocks of PROVE_BLOCK
+ * vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's, which
+ * carries from vertex to vertex and branches at each step; prove_guess instead guesses each
+ * vertex's sector from its angle (psi = atan(dx / dz) by a polynomial, the rays being dphi
+ * apart), then takes the sigmas of the guessed sector's rays, t, h and the drop test with no
+ * branch and nothing carried from vertex to vertex: loops the compiler vectorises, the rays'
+ * and the sectors' numbers gathered at the guess. Where the sigmas show the guess right
+ * (sigma_g > 0 > sigma_(g+1): the walk would end in sector g, the sigmas' signs along the
+ * rays changing once) its numbers are the walk's own, the same operations on the same
+ * operands (IEEE arithmetic gives a vector's lane what it gives alone, and no FMA is
+ * contracted in ISO C mode). The vertices it does not prove dropped (out of reach, rows,
+ * and the few whose guess missed: within the polynomial's error of a ray, or on one) are
+ * taken again one by one by scan_vertex's walk from the guess (prove_vertex). So the same
+ * rows and tests, bit for bit (test_springs_scan). The proofs keep the raw margin,
+ * min(t, 1 - t) and the sector; seen_todo takes the allowances and t_snap off once a sector
+ * (m_t 0: no proof). */
+
+/* Vertices a block: its scratch (5 doubles a vertex, 2.5 KB) stays in the first-level cache
+ * between the passes. */
+#define PROVE_BLOCK 64
+
+/* What the guess needs besides scan_ctx: theta_0 and 1 / dphi (rad, 1/rad), the sectors a
+ * guess is clamped to [g_lo, g_hi] (g_hi <= N - 2), and each sector q's penetrations and
+ * slack at P_l[q], P_r[q], slack[q] over that range. */
+typedef struct {
+    double theta_0, inv_dphi;
+    int g_lo, g_hi;
+    const double *P_l, *P_r, *slack;
+} prove_guide;
+
+/* One block's results of prove_guess: each vertex's guessed sector, the margin, and m_t (> 0
+ * a proof, else 0: the vertex is taken again by prove_vertex). */
+typedef struct {
+    int g[PROVE_BLOCK];
+    double margin[PROVE_BLOCK], m_t[PROVE_BLOCK];
+} prove_block;
+
+
+/* The proving scan of the vertices j0 .. j0 + m - 1 at their guessed sectors, into B. Two
+ * loops: the guess's chain of operations (a division, the polynomial, the conversion) and the
+ * test's (the gathers, the sigmas, t's division, the chord) are each long, and one loop of
+ * both held too few vertices in flight (26 % slower than the walk with SSE2). */
+PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, size_t j0,
+                                     size_t m, prove_block *restrict B)
 {
-    const double *const X = C->X, *const Z = C->Z, *const st = C->st, *const ct = C->ct;
+    const double *restrict const X = C->X + j0, *restrict const Z = C->Z + j0;
+    const double *restrict const st = C->st, *restrict const ct = C->ct;
+    const double *restrict const Pl = G->P_l, *restrict const Pr = G->P_r;
+    const double *restrict const Sl = G->slack;
     const double x = C->x, z = C->z, R0 = C->R0, R0sq = C->R0sq, ab_lo = C->ab_lo;
-    const size_t N = C->N;
-    size_t i = *i_at, v_lo = i, v_hi = i;
-    double P_l = pen(i, C->a, C->b, C->d), P_r = pen(i + 1, C->a, C->b, C->d);
-    double slack_tau = fabs(P_r - P_l) * C->tau_dev;
-    for (size_t q = 0; q < n; ++q) {
-        seen[q].m_t = 0; /* no proof, unless made now */
-        seen[q].i = i; /* where a later scan's walk starts (scan_list) */
-        const size_t j = j0 + q;
-        const double dx = X[j] - x, dz = z - Z[j];
-        if (!(dz > 0))
-            continue;
-        const double rr = dx * dx + dz * dz;
-        if (!(rr < R0sq))
-            continue;
-        /* u = sigma_(i+1), < 0 once known: -s_n of scan_vertex, the same number */
-        double u = 0;
-        int u_known = 0;
-        while (i + 1 < N) {
-            u = dx * ct[i + 1] - dz * st[i + 1];
-            if (!(u >= 0)) {
-                u_known = 1;
-                break;
-            }
-            ++i;
-            v_hi = i > v_hi ? i : v_hi;
-            P_l = P_r;
-            P_r = pen(i + 1, C->a, C->b, C->d);
-            slack_tau = fabs(P_r - P_l) * C->tau_dev;
-        }
-        double s_i = dx * ct[i] - dz * st[i];
-        while (i > 0 && s_i < 0) {
-            --i;
-            v_lo = i < v_lo ? i : v_lo;
-            P_r = P_l;
-            P_l = pen(i, C->a, C->b, C->d);
-            slack_tau = fabs(P_r - P_l) * C->tau_dev;
-            s_i = dx * ct[i] - dz * st[i];
-            u_known = 0;
-        }
-        seen[q].i = i;
-        if (!(s_i > 0)) { /* behind the first element, or on ray i: its row alone */
-            if (s_i < 0)
-                continue;
-            const double rho = sqrt(rr), h = R0 - rho;
-            if (h > 0)
-                *out++ = (tirenv_springs__cc_row){.i = i, .j = i, .t = 0, .tau = 0, .ga = 1,
-                                                  .gb = 0, .h = h, .dga_dz = 0, .dgb_dz = 0,
-                                                  .dh_dz = -dz / rho, .id = (long)j};
-            continue;
-        }
-        if (i + 1 >= N)
-            continue; /* beyond the last element's ray */
-        if (!u_known)
-            u = dx * ct[i + 1] - dz * st[i + 1];
+    const double theta_0 = G->theta_0, inv_dphi = G->inv_dphi;
+    const double g_lo = G->g_lo, g_hi = G->g_hi;
+    for (size_t k = 0; k < m; ++k) {
+        /* atan(r), |r| <= 1, within 2e-8 rad (Abramowitz and Stegun 4.4.49), in Estrin's
+         * order: a guess only, checked below; NaN or far off where dz <= 0, then clamped */
+        const double r = (X[k] - x) / (z - Z[k]), r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+        const double p01 = 0.9999993329 - 0.3332985605 * r2;
+        const double p23 = 0.1994653599 - 0.1390853351 * r2;
+        const double p45 = 0.0964200441 - 0.0559098861 * r2;
+        const double p67 = 0.0218612288 - 0.0040540580 * r2;
+        const double psi = r * ((p01 + p23 * r4) + (p45 + p67 * r4) * r8);
+        double f = (psi - theta_0) * inv_dphi;
+        f = f >= g_lo ? f : g_lo; /* NaN too */
+        f = f <= g_hi ? f : g_hi;
+        B->g[k] = (int)f;
+    }
+    for (size_t k = 0; k < m; ++k) {
+        const double dx = X[k] - x, dz = z - Z[k], rr = dx * dx + dz * dz;
+        const double in = ((dz > 0) & (rr < R0sq)) ? 1 : 0; /* a double: the lanes' width */
+        /* scan_vertex's numbers in sector g */
+        const int g = B->g[k];
+        const double s_i = dx * ct[g] - dz * st[g], u = dx * ct[g + 1] - dz * st[g + 1];
         const double S = s_i - u, t = s_i / S;
         const double rho = sqrt(rr), h = R0 - rho;
-        if (!(h > 0))
-            continue;
-        size_t r_i = i, r_j = i;
-        double r_t = 0, r_dt = 0;
+        const double omt = 1 - t;
+        const double chord = omt * Pl[g] + t * Pr[g] - Sl[g];
+        const double thr = chord * (1 + ab_lo * t * omt);
+        /* the guess held (sigma_g > 0 > sigma_(g+1): the walk would end in sector g, the
+         * sigmas' signs along the rays changing once) and the test drops the vertex */
+        const int drop = (in > 0) & (s_i > 0) & (u < 0) & (h > 0) & (t < 1 - t_snap) &
+                         (t > t_snap) & !(h > thr);
+        B->m_t[k] = drop ? (t < omt ? t : omt) : 0;
+        B->margin[k] = thr - h;
+    }
+}
+
+/* Vertex j's row at (C->x, C->z), if it has one, at out, its sector i known; returns the new
+ * end. The operations of scan_vertex, for the few vertices a scan that no proof dropped. */
+static tirenv_springs__cc_row *prove_row(const scan_ctx *C, size_t j, size_t i,
+                                         tirenv_springs__cc_row *out)
+{
+    const double *const st = C->st, *const ct = C->ct;
+    const double dx = C->X[j] - C->x, dz = C->z - C->Z[j], rr = dx * dx + dz * dz;
+    if (!(dz > 0 && rr < C->R0sq))
+        return out;
+    const double s_i = dx * ct[i] - dz * st[i];
+    if (s_i < 0 || (s_i > 0 && i + 1 >= C->N))
+        return out; /* behind the first ray, beyond the last */
+    const double rho = sqrt(rr), h = C->R0 - rho;
+    if (!(h > 0))
+        return out;
+    size_t r_i = i, r_j = i;
+    double r_t = 0, r_dt = 0;
+    if (s_i > 0) {
+        const double u = dx * ct[i + 1] - dz * st[i + 1], S = s_i - u, t = s_i / S;
         if (t >= 1 - t_snap) {
             r_i = r_j = i + 1;
         } else if (t > t_snap) {
-            const double omt = 1 - t;
-            const double chord = omt * P_l + t * P_r - slack_tau;
-            const double thr = chord * (1 + ab_lo * t * omt);
-            if (!(h > thr)) {
-                seen[q] = (tirenv_springs__cc_seen){.margin = thr - h,
-                                                    .m_t = t < omt ? t : omt, .i = i};
-                continue;
-            }
             r_j = i + 1;
             r_t = t;
             r_dt = (st[i] * u - s_i * st[i + 1]) / (S * S);
         }
-        *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
-                                          .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
-                                          .dh_dz = -dz / rho, .id = (long)j};
     }
-    *i_at = i;
+    *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
+                                      .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
+                                      .dh_dz = -dz / rho, .id = (long)j};
+    return out;
+}
+
+/* Vertex j, which the guess did not prove dropped (out of reach, a row, or its sector
+ * missed): its row at out as scan_vertex takes it, the new end returned, or its proof into
+ * *e if it is dropped between elements; its walk from sector g (the guess: the walk ends in
+ * the same sector from any start, scan_list). *e's sector: the walk's, or g for a vertex out
+ * of reach (where a later scan's walk starts). [*v_lo, *v_hi] take in the sectors the walk
+ * visits; *missed counts the vertices within reach whose sector is not g. */
+static tirenv_springs__cc_row *prove_vertex(const scan_ctx *C, size_t g, size_t j,
+                                            tirenv_springs__cc_seen *e,
+                                            tirenv_springs__cc_row *out, size_t *v_lo,
+                                            size_t *v_hi, size_t *missed)
+{
+    const double *const st = C->st, *const ct = C->ct;
+    const double dx = C->X[j] - C->x, dz = C->z - C->Z[j];
+    const size_t N = C->N;
+    *e = (tirenv_springs__cc_seen){.margin = 0, .m_t = 0, .i = g};
+    if (!(dz > 0 && dx * dx + dz * dz < C->R0sq))
+        return out;
+    size_t i = g;
+    while (i + 1 < N && dx * ct[i + 1] - dz * st[i + 1] >= 0)
+        ++i;
+    *v_hi = i > *v_hi ? i : *v_hi;
+    while (i > 0 && dx * ct[i] - dz * st[i] < 0)
+        --i;
+    *v_lo = i < *v_lo ? i : *v_lo;
+    *missed += i != g;
+    e->i = i;
+    const double s_i = dx * ct[i] - dz * st[i];
+    if (s_i > 0 && i + 1 < N) {
+        const double u = dx * ct[i + 1] - dz * st[i + 1], S = s_i - u, t = s_i / S;
+        const double rr = dx * dx + dz * dz, rho = sqrt(rr), h = C->R0 - rho;
+        if (h > 0 && t < 1 - t_snap && t > t_snap) {
+            const double P_l = pen(i, C->a, C->b, C->d), P_r = pen(i + 1, C->a, C->b, C->d);
+            const double slack_tau = fabs(P_r - P_l) * C->tau_dev;
+            const double omt = 1 - t;
+            const double chord = omt * P_l + t * P_r - slack_tau;
+            const double thr = chord * (1 + C->ab_lo * t * omt);
+            if (!(h > thr)) {
+                *e = (tirenv_springs__cc_seen){.margin = thr - h, .m_t = t < omt ? t : omt,
+                                               .i = i};
+                return out;
+            }
+        }
+    }
+    return prove_row(C, j, i, out);
+}
+
+/* The vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1], in the sectors' range
+ * [a1, b1] (vertex_rows); sec: room for 3 N doubles; blind: every guess the range's first
+ * sector (the tests' scan_blind). The rows go to out, the new end returned; [*lo, *hi]: the
+ * sectors of every proof among them, within [0, N - 2]; *missed: the vertices within reach
+ * whose sector the guess missed. */
+SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_t b1,
+                                             int blind, double *sec, size_t j0, size_t n,
+                                             tirenv_springs__cc_seen seen[],
+                                             tirenv_springs__cc_row *out, size_t *lo,
+                                             size_t *hi, size_t *missed)
+{
+    const size_t N = C->N;
+    const double *const st = C->st, *const ct = C->ct;
+    const size_t g_lo = a1 < N - 2 ? a1 : N - 2, g_hi = b1 < N - 2 ? b1 : N - 2;
+    /* each sector's penetrations and slack, as the walk takes them (pen) */
+    double *const P_l = sec, *const P_r = sec + N, *const slack = sec + 2 * N;
+    for (size_t q = g_lo; q <= g_hi; ++q) {
+        P_l[q] = pen(q, C->a, C->b, C->d);
+        P_r[q] = pen(q + 1, C->a, C->b, C->d);
+        slack[q] = fabs(P_r[q] - P_l[q]) * C->tau_dev;
+    }
+    /* the rays are dphi apart: theta_0 and dphi from the first two */
+    const double dphi = atan2(ct[0] * st[1] - st[0] * ct[1], ct[0] * ct[1] + st[0] * st[1]);
+    const prove_guide G = {.theta_0 = atan2(st[0], ct[0]), .inv_dphi = blind ? 0 : 1 / dphi,
+                           .g_lo = (int)g_lo, .g_hi = (int)g_hi, .P_l = P_l, .P_r = P_r,
+                           .slack = slack};
+    size_t v_lo = g_lo, v_hi = g_hi;
+    prove_block B;
+    for (size_t q0 = 0; q0 < n; q0 += PROVE_BLOCK) {
+        const size_t m = n - q0 < PROVE_BLOCK ? n - q0 : PROVE_BLOCK;
+        prove_guess(C, &G, j0 + q0, m, &B);
+        /* the proofs, and the few vertices the guess did not prove dropped */
+        tirenv_springs__cc_seen *const e = seen + q0;
+        for (size_t k = 0; k < m; ++k) {
+            e[k] = (tirenv_springs__cc_seen){.margin = B.margin[k], .m_t = B.m_t[k],
+                                             .i = (size_t)B.g[k]};
+            if (!(B.m_t[k] > 0))
+                out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &e[k], out, &v_lo, &v_hi,
+                                   missed);
+        }
+    }
     *lo = v_lo;
     *hi = v_hi < N - 2 ? v_hi : N - 2;
     return out;
@@ -569,9 +735,10 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                         .b = b};
     /* i: a walk from the last vertex's sector is O(1) on a road */
     scan_state S = {.i = T->i0, .ci = SIZE_MAX, .out = c->vrows};
-    size_t seen_lo = N, seen_hi = 0;
+    size_t seen_lo = N, seen_hi = 0, missed = 0;
     if (prove)
-        S.out = scan_prove(&C, &S.i, j0, n_todo, seen, S.out, &seen_lo, &seen_hi);
+        S.out = scan_prove(&C, a1, b1, c->scan_blind, c->seen_sec + 4 * N, j0, n_todo, seen,
+                           S.out, &seen_lo, &seen_hi, &missed);
     else if (reuse)
         scan_list(&C, &S, todo, seen, c->seen_j0, n_todo);
     else
@@ -579,6 +746,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
+    c->scan_missed = missed;
     if (prove) { /* the sectors' chords at z_r, their bounds on |dt/dz| and on depth (sZ) */
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;

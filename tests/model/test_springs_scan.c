@@ -7,7 +7,8 @@
  * first scan's proofs at an x (a vertex dropped there is skipped at a later height where a
  * bound proves it dropped again), and its first scan there by the proving loop, must give the
  * rows, in their order, and the laid-out rows of a fresh workspace that computes every vertex
- * by the plain scan (scan_plain: no proving loop, no proofs). The rays: a fan updated ray by
+ * by the plain scan (scan_plain: no proving loop, no proofs); the proving loop's guessed
+ * sectors and the walk where a guess misses both give the plain scan's. The rays: a fan updated ray by
  * ray from its memos (the rays whose memos fail walked again alone) must give the rho of a
  * fresh fan. */
 #include <math.h>
@@ -136,6 +137,20 @@ static int penetrations(const tire_setup *S, const tirenv_profile *p, double x, 
     return 1;
 }
 
+/* The vertex rows of a (sorted and weighted as the layout left them), the rows the solve gets
+ * and their span, bit for bit those of b. */
+static void same_rows(const tirenv_springs__cc *a, const tirenv_springs__cc *b)
+{
+    assert_int_equal(a->n_vrows, b->n_vrows);
+    for (size_t r = 0; r < a->n_vrows; ++r)
+        assert_memory_equal(&a->vrows[r], &b->vrows[r], sizeof a->vrows[r]);
+    assert_int_equal(a->n_rows, b->n_rows);
+    assert_int_equal(a->f0, b->f0);
+    assert_int_equal(a->f1, b->f1);
+    for (size_t r = 0; r < a->n_rows; ++r)
+        assert_memory_equal(&a->rows[r], &b->rows[r], sizeof a->rows[r]);
+}
+
 static void test_vertex_rows_proven_exact(void **state)
 {
     (void)state;
@@ -145,15 +160,17 @@ static void test_vertex_rows_proven_exact(void **state)
     tire_setup S;
     setup_tire(&S, &par);
     const size_t N = S.N;
-    size_t scans = 0, skipped = 0, rows = 0, on_vertex = 0;
+    size_t scans = 0, skipped = 0, rows = 0, on_vertex = 0, missed = 0, missed_blind = 0;
     size_t skipped_up = 0, skipped_down = 0; /* at heights above and below the proofs' */
     for (int trial = 0; trial < 24; ++trial) {
         const double dx = 0.0003 + 0.0012 * uniform();
         tirenv_profile *p = random_road((size_t)(4.0 / dx), dx, trial % 4);
         const double *X = tirenv_profile_x(p);
         const size_t n = tirenv_profile_size(p);
-        tirenv_springs__cc hot;
+        tirenv_springs__cc hot, blind;
         assert_int_equal(tirenv_springs__cc_init(&hot, N), TIRENV_OK);
+        assert_int_equal(tirenv_springs__cc_init(&blind, N), TIRENV_OK);
+        blind.scan_blind = 1; /* every guessed sector wrong but one: the walk takes them */
         for (int pos = 0; pos < 12; ++pos) {
             /* every other position exactly over a vertex, the others anywhere */
             const size_t v = n / 4 + (size_t)(uniform() * (double)(n / 2));
@@ -174,39 +191,41 @@ static void test_vertex_rows_proven_exact(void **state)
                                  TIRENV_OK);
                 assert_int_equal(tirenv_springs__cc_rows(&cold, &S.T, p, x, z, a, b, S.d,
                                                          &diag), TIRENV_OK);
+                assert_int_equal(tirenv_springs__cc_rows(&blind, &S.T, p, x, z, a, b, S.d,
+                                                         &diag), TIRENV_OK);
                 ++scans;
                 skipped += hot.scan_skipped;
+                missed += hot.scan_missed;
+                missed_blind += blind.scan_missed;
                 if (z > z1)
                     skipped_up += hot.scan_skipped;
                 else if (z < z1)
                     skipped_down += hot.scan_skipped;
-                /* the vertex rows, sorted and weighted as the layout left them */
-                assert_int_equal(hot.n_vrows, cold.n_vrows);
-                for (size_t r = 0; r < hot.n_vrows; ++r)
-                    assert_memory_equal(&hot.vrows[r], &cold.vrows[r], sizeof hot.vrows[r]);
-                /* the rows the solve gets, and their span */
-                assert_int_equal(hot.n_rows, cold.n_rows);
-                assert_int_equal(hot.f0, cold.f0);
-                assert_int_equal(hot.f1, cold.f1);
-                for (size_t r = 0; r < hot.n_rows; ++r)
-                    assert_memory_equal(&hot.rows[r], &cold.rows[r], sizeof hot.rows[r]);
+                same_rows(&hot, &cold);
+                same_rows(&blind, &cold);
                 rows += hot.n_rows;
                 tirenv_springs__cc_free(&cold);
             }
         }
         tirenv_springs__cc_free(&hot);
+        tirenv_springs__cc_free(&blind);
         tirenv_profile_free(p);
     }
     print_message("%zu scans (%zu positions on a vertex), %zu vertices skipped by proofs "
-                  "(%zu with the centre higher than at the proofs, %zu lower), %zu rows\n",
-                  scans, on_vertex, skipped, skipped_up, skipped_down, rows);
+                  "(%zu with the centre higher than at the proofs, %zu lower), %zu whose "
+                  "sector the proving scan's guess missed (%zu blind), %zu rows\n",
+                  scans, on_vertex, skipped, skipped_up, skipped_down, missed, missed_blind,
+                  rows);
     /* The shortcut taken (most vertices of the later heights skipped), rows compared; the
-     * proofs' check both where h may rise (the centre lower) and where it falls. */
+     * proofs' check both where h may rise (the centre lower) and where it falls; the proving
+     * scan's walk for a vertex whose guessed sector is wrong (on a ray or within the guess's
+     * error of one) taken too. */
     assert_true(scans > 1000);
     assert_true(skipped > 100 * scans);
     assert_true(skipped_up > 10 * scans);
     assert_true(skipped_down > 10 * scans);
     assert_true(rows > 10 * scans);
+    assert_true(missed_blind > 10 * scans); /* a first scan in 8 */
     free_tire(&S);
 }
 
