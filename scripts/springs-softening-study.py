@@ -1,0 +1,365 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Could softening radial springs make the springs model's patch grow as a tire file's?
+
+A feasibility study for docs/models.md section 14.2 (the 205/60R15's "Not within 5 %"), not
+part of tirenv: the springs model on flat ground (sections 4.1, 4.2, 4.4) is solved here in
+numpy, with each element's radial spring given a bilinear law
+
+    f(w) = k_r*w                        for w <= w_1
+         = k_r*w_1 + beta*k_r*(w - w_1) beyond,      k_r = c_r*dphi, 0 < beta <= 1,
+
+(convex energy: the tip problem stays a unique minimum), the interradial springs k_ir =
+c_b/dphi as in tirenv, and the sidewall of section 4.9 in series (rigid up to F_s0, then k_s).
+beta = 1 is tirenv's linear law, which --check compares with `tirenv flat --model springs`.
+
+The tips minimise sum_i E(w_i) + 1/2 k_ir sum_i (w_(i+1) - w_i)^2 subject to w_i >= d_i,
+d_i = max(0, R0 - z/cos(theta_i)). It is solved by the primal-dual active set of section 4.4
+together with each free element's branch of f (a semismooth Newton method: both sets updated
+from the last solve until neither changes), half the chain by symmetry, one tridiagonal
+(Thomas) solve per pass, vectorised over a table of centre heights. The contact length is
+tirenv's (src/model/springs_model.c springs_contact_length), with K_ii from the element's
+current tangent (k_r or beta*k_r) where the law is bilinear.
+
+The elements' flat ground depends on c_r only through a factor on the force (w_1 is a
+deflection), so each shape (c_b/c_r, w_1, beta) is tabled once over the deflection and c_r,
+F_s0, k_s are searched on the table. The objective is the largest relative difference of the
+hub deflection and the contact length from the cam's and the ring's (`tirenv flat --model cam`,
+`--model ring`) at 9 loads from 0.5 to 1.5 FNOMIN: min-max by Nelder and Mead's simplex
+(restarted) on the L^p norm, then on the largest itself.
+
+    TIRENV_DATA=data scripts/springs-softening-study.py --tirenv build/tirenv \\
+        --tire data/tires/205-60R15-mfswift.tir
+"""
+import argparse
+import csv
+import io
+import math
+import subprocess
+import sys
+
+import numpy as np
+
+
+def tirenv_flat(tirenv, tire, model, load, sets=()):
+    """(deflection m, contact length m) of `tirenv flat` at one load."""
+    cmd = [tirenv, "flat", "--tire", tire, "--model", model, "--csv", "--load", f"{load:.17g}"]
+    for s in sets:
+        cmd += ["--set", s]
+    r = subprocess.run(cmd, capture_output=True, text=True, check=True)
+    row = list(csv.DictReader(io.StringIO(r.stdout)))[-1]
+    return float(row["deflection_m"]), float(row["contact_length_m"])
+
+
+def tir_keys(tire):
+    """The .tir's numeric keys (name -> value), comments dropped."""
+    keys = {}
+    with open(tire, encoding="utf-8") as f:
+        for line in f:
+            line = line.split("$")[0]
+            if "=" in line and not line.lstrip().startswith(("!", "[")):
+                name, value = line.split("=", 1)
+                try:
+                    keys[name.strip()] = float(value.split()[0].strip("'"))
+                except (ValueError, IndexError):
+                    pass
+    return keys
+
+
+class Elements:
+    """The elements' flat ground, per unit c_r, for one shape (rho = c_b/c_r, w_1, beta)."""
+
+    def __init__(self, R0, dphi, segment=math.pi):
+        self.R0 = R0
+        n = int(math.floor(segment / (2 * dphi))) + 1  # elements 0..i0 of the half chain
+        self.dphi = dphi
+        self.theta = np.arange(n) * dphi
+        self.cos = np.cos(self.theta)
+        self.tan = np.where(self.cos > 0, np.tan(self.theta), np.inf)
+        self.weight = np.where(np.arange(n) == 0, 1.0, 2.0)  # the centre element once
+
+    def solve(self, z, rho, w1, beta, max_pass=200):
+        """Tips w, reactions p, tangents a (per c_r) at centre heights z (array)."""
+        kr, kir = self.dphi, rho / self.dphi
+        n, m = self.theta.size, z.size
+        with np.errstate(divide="ignore"):
+            delta = np.where(self.cos > 0, self.R0 - z[:, None] / self.cos, -np.inf)
+        d = np.maximum(delta, 0.0)
+        pinned = delta > 0
+        soft = d > w1
+        for _ in range(max_pass):
+            a = np.where(soft, beta * kr, kr)
+            b = np.where(soft, (1 - beta) * kr * w1, 0.0)
+            lo = np.full((m, n), -kir)
+            up = np.full((m, n), -kir)
+            diag = a + 2 * kir
+            up[:, 0] = -2 * kir  # w_(-1) = w_1: symmetry
+            diag[:, -1] = a[:, -1] + kir  # end element: one neighbour
+            up[:, -1] = 0.0
+            lo[:, 0] = 0.0
+            rhs = -b
+            lo = np.where(pinned, 0.0, lo)
+            up = np.where(pinned, 0.0, up)
+            kdiag = diag.copy()
+            diag = np.where(pinned, 1.0, diag)
+            rhs = np.where(pinned, d, rhs)
+            w = thomas(lo, diag, up, rhs)
+            p = a * w + b + kir * (2 * w - np.roll(w, 1, axis=1) - np.roll(w, -1, axis=1))
+            p[:, 0] = a[:, 0] * w[:, 0] + b[:, 0] + 2 * kir * (w[:, 0] - w[:, 1])
+            p[:, -1] = a[:, -1] * w[:, -1] + b[:, -1] + kir * (w[:, -1] - w[:, -2])
+            p = np.where(pinned, p, 0.0)
+            new_pinned = p + kdiag * (d - w) > 0
+            new_soft = w > w1
+            if np.array_equal(new_pinned, pinned) and np.array_equal(new_soft, soft):
+                return w, p, a, kdiag, delta
+            pinned, soft = new_pinned, new_soft
+        raise RuntimeError(f"no convergence in {max_pass} passes (rho {rho}, w1 {w1}, beta {beta})")
+
+    def table(self, z, rho, w1, beta):
+        """Hub force per c_r and contact length (m) at centre heights z."""
+        w, p, a, kdiag, delta = self.solve(z, rho, w1, beta)
+        f = np.where(w > w1, w1 + beta * (w - w1), w) * self.dphi
+        F = (self.weight * f * self.cos).sum(axis=1)
+        L = np.zeros_like(z)
+        for r in range(z.size):
+            touch = np.nonzero(p[r] > 0)[0]
+            if touch.size == 0:
+                continue
+            i = touch[-1]
+            j = i + 1
+            length = 2 * z[r] * self.tan[i]
+            if j < self.theta.size and self.cos[j] > 0:
+                e_i = p[r, i] / kdiag[r, i] + delta[r, i] - w[r, i]
+                e_j = delta[r, j] - w[r, j]
+                if e_i > 0 and e_j <= 0:
+                    length += 2 * e_i / (e_i - e_j) * z[r] * (self.tan[j] - self.tan[i])
+            L[r] = length
+        return F, L
+
+
+def thomas(lo, diag, up, rhs):
+    """Tridiagonal solve along axis 1, vectorised over axis 0 (no pivoting: M-matrix rows)."""
+    m, n = diag.shape
+    c = np.empty((m, n))
+    g = np.empty((m, n))
+    c[:, 0] = up[:, 0] / diag[:, 0]
+    g[:, 0] = rhs[:, 0] / diag[:, 0]
+    for i in range(1, n):
+        den = diag[:, i] - lo[:, i] * c[:, i - 1]
+        c[:, i] = up[:, i] / den
+        g[:, i] = (rhs[:, i] - lo[:, i] * g[:, i - 1]) / den
+    x = np.empty((m, n))
+    x[:, -1] = g[:, -1]
+    for i in range(n - 2, -1, -1):
+        x[:, i] = g[:, i] - c[:, i] * x[:, i + 1]
+    return x
+
+
+def at_loads(tab, loads, c_r, F_s0, k_s):
+    """Hub deflection and contact length at the loads from a shape's table, or None."""
+    defl, Fhat, L = tab
+    need = loads / c_r
+    if need[-1] > Fhat[-1] or need[0] < Fhat[0]:
+        return None
+    de = np.interp(need, Fhat, defl)
+    u = np.maximum(0.0, loads - F_s0) / k_s if k_s > 0 else 0.0
+    return de + u, np.interp(de, defl, L)
+
+
+def nelder_mead(f, x0, step, iters=400, tol=1e-10):
+    """Minimise f from x0 (plain simplex: reflection, expansion, contraction, shrink)."""
+    x0 = np.asarray(x0, float)
+    pts = [x0] + [x0 + s * e for s, e in zip(step, np.eye(x0.size))]
+    vals = [f(x) for x in pts]
+    for _ in range(iters):
+        order = np.argsort(vals)
+        pts = [pts[k] for k in order]
+        vals = [vals[k] for k in order]
+        if vals[-1] - vals[0] <= tol * (abs(vals[0]) + tol):
+            break
+        c = np.mean(pts[:-1], axis=0)
+        xr = c + (c - pts[-1])
+        fr = f(xr)
+        if fr < vals[0]:
+            xe = c + 2 * (c - pts[-1])
+            fe = f(xe)
+            pts[-1], vals[-1] = (xe, fe) if fe < fr else (xr, fr)
+        elif fr < vals[-2]:
+            pts[-1], vals[-1] = xr, fr
+        else:
+            xc = c + 0.5 * (pts[-1] - c) if fr >= vals[-1] else c + 0.5 * (xr - c)
+            fc = f(xc)
+            if fc < min(fr, vals[-1]):
+                pts[-1], vals[-1] = xc, fc
+            else:
+                pts = [pts[0] + 0.5 * (x - pts[0]) for x in pts]
+                vals = [vals[0]] + [f(x) for x in pts[1:]]
+    k = int(np.argmin(vals))
+    return pts[k], vals[k]
+
+
+class Study:
+    def __init__(self, elements, loads, targets, defl_max, step):
+        self.el = elements
+        self.loads = loads
+        self.targets = targets  # list of (deflections, contact lengths)
+        self.defl = np.arange(step, defl_max + step / 2, step)
+        self.z = elements.R0 - self.defl
+
+    def tabulate(self, rho, w1, beta):
+        F, L = self.el.table(self.z, rho, w1, beta)
+        return self.defl, F, L
+
+    def diffs(self, tab, c_r, F_s0, k_s):
+        got = at_loads(tab, self.loads, c_r, F_s0, k_s)
+        if got is None:
+            return None
+        return np.concatenate([np.concatenate([got[0] / t[0] - 1, got[1] / t[1] - 1])
+                               for t in self.targets])
+
+    def fit_hub(self, tab, start, p=16, sidewall=True):
+        """c_r, F_s0, k_s minimising the largest difference for one shape's table."""
+        def unpack(x):
+            return math.exp(x[0]), (1000 * x[1] if sidewall else 0.0), \
+                (math.exp(x[2]) if sidewall else 0.0)
+
+        def obj(x, p):
+            c_r, F_s0, k_s = unpack(x)
+            if F_s0 < 0:
+                return 1e3 + -F_s0
+            r = self.diffs(tab, c_r, F_s0, k_s)
+            if r is None:
+                return 1e3
+            r = np.abs(r)
+            return float(r.max()) if p is None else float((r ** p).mean() ** (1 / p))
+
+        best = None
+        for x0 in start:
+            x, _ = nelder_mead(lambda x: obj(x, p), x0, [0.1, 0.5, 0.3], iters=300)
+            x, v = nelder_mead(lambda x: obj(x, None), x, [0.02, 0.1, 0.05], iters=300)
+            if best is None or v < best[1]:
+                best = (x, v)
+        return unpack(best[0]), best[1]
+
+
+def report(study, tab, hub, label):
+    c_r, F_s0, k_s = hub
+    r = study.diffs(tab, c_r, F_s0, k_s)
+    n = len(study.loads)
+    got = at_loads(tab, study.loads, c_r, F_s0, k_s)
+    print(f"{label}: largest {100 * np.abs(r).max():.2f} %  (cam {100 * np.abs(r[:2 * n]).max():.2f}"
+          f" %, ring {100 * np.abs(r[2 * n:]).max():.2f} %)")
+    print("   load_N  defl_mm  cam_mm  ring_mm   L_m     cam_L   ring_L   dd_cam%  dL_cam%  dd_ring%  dL_ring%")
+    for k, G in enumerate(study.loads):
+        print(f"  {G:7.0f}  {1e3 * got[0][k]:6.2f}  {1e3 * study.targets[0][0][k]:6.2f}  "
+              f"{1e3 * study.targets[1][0][k]:6.2f}  {got[1][k]:.4f}  {study.targets[0][1][k]:.4f}  "
+              f"{study.targets[1][1][k]:.4f}  {100 * r[k]:+6.2f}  {100 * r[n + k]:+6.2f}  "
+              f"{100 * r[2 * n + k]:+6.2f}  {100 * r[3 * n + k]:+6.2f}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--tirenv", default="build/tirenv")
+    ap.add_argument("--tire", default="data/tires/205-60R15-mfswift.tir")
+    ap.add_argument("--loads", type=int, default=9, help="loads from 0.5 to 1.5 FNOMIN")
+    ap.add_argument("--step", type=float, default=1e-4, help="deflection table step, m")
+    ap.add_argument("--check-only", action="store_true", help="only compare beta = 1 with tirenv")
+    args = ap.parse_args()
+
+    keys = tir_keys(args.tire)
+    R0, FNOMIN = keys["UNLOADED_RADIUS"], keys["FNOMIN"]
+    dphi = keys.get("ELEMENT_ANGLE", math.pi / 360)
+    c_r, c_b = keys["RADIAL_STIFFNESS"], keys["INTERRADIAL_STIFFNESS"]
+    F_s0, k_s = keys.get("SIDEWALL_PRELOAD", 0.0), keys.get("SIDEWALL_STIFFNESS", 0.0)
+    loads = np.linspace(0.5, 1.5, args.loads) * FNOMIN
+    targets = []
+    for model in ("cam", "ring"):
+        t = [tirenv_flat(args.tirenv, args.tire, model, G) for G in loads]
+        targets.append((np.array([a for a, _ in t]), np.array([b for _, b in t])))
+    study = Study(Elements(R0, dphi), loads, targets, defl_max=0.06, step=args.step)
+
+    # The linear law (beta = 1) against tirenv's springs model with the file's own keys.
+    tab = study.tabulate(c_b / c_r, 1.0, 1.0)
+    got = at_loads(tab, loads, c_r, F_s0, k_s)
+    worst = 0.0
+    print(f"check: linear law, the file's c_r {c_r:g}, c_b {c_b:g}, F_s0 {F_s0:g}, k_s {k_s:g}")
+    for k, G in enumerate(loads):
+        ref = tirenv_flat(args.tirenv, args.tire, "springs", G)
+        dd, dl = got[0][k] / ref[0] - 1, got[1][k] / ref[1] - 1
+        worst = max(worst, abs(dd), abs(dl))
+        print(f"  {G:6.0f} N  deflection {1e3 * got[0][k]:.4f} / tirenv {1e3 * ref[0]:.4f} mm"
+              f" ({100 * dd:+.3f} %), contact length {got[1][k]:.5f} / {ref[1]:.5f} m"
+              f" ({100 * dl:+.3f} %)")
+    print(f"check: largest difference from tirenv {100 * worst:.3f} %")
+    report(study, tab, (c_r, F_s0, k_s), "the file's springs model")
+    if args.check_only:
+        return
+
+    hub0 = [[math.log(c_r), F_s0 / 1000, math.log(k_s if k_s > 0 else 6e5)],
+            [math.log(c_r), 0.0, math.log(4e5)], [math.log(0.7 * c_r), 4.0, math.log(1e6)]]
+
+    # Linear law: the shape is c_b/c_r alone; a scan then a golden-section polish.
+    best = None
+    for rho in np.geomspace(1e-4, 0.3, 25):
+        hub, v = study.fit_hub(study.tabulate(rho, 1.0, 1.0), hub0)
+        if best is None or v < best[2]:
+            best = (rho, hub, v)
+    lo, hi = best[0] / 1.4, best[0] * 1.4
+    for _ in range(12):
+        m1, m2 = lo * (hi / lo) ** 0.382, lo * (hi / lo) ** 0.618
+        v1 = study.fit_hub(study.tabulate(m1, 1.0, 1.0), [hub0[0], list(np.r_[math.log(best[1][0]), best[1][1] / 1000, math.log(best[1][2])])])
+        v2 = study.fit_hub(study.tabulate(m2, 1.0, 1.0), [hub0[0], list(np.r_[math.log(best[1][0]), best[1][1] / 1000, math.log(best[1][2])])])
+        for rho, (hub, v) in ((m1, v1), (m2, v2)):
+            if v < best[2]:
+                best = (rho, hub, v)
+        if v1[1] < v2[1]:
+            hi = m2
+        else:
+            lo = m1
+    rho, hub, v = best
+    print(f"\nlinear law: c_b/c_r {rho:.4g} rad^2, c_r {hub[0]:.4g}, c_b {rho * hub[0]:.4g},"
+          f" F_s0 {hub[1]:.0f} N, k_s {hub[2]:.4g} N/m")
+    report(study, study.tabulate(rho, 1.0, 1.0), hub, "linear law")
+    sys.stdout.flush()
+
+    # Bilinear law: (log rho, log w_1, logit beta) by the simplex, each trial a table.
+    cache = {}
+
+    def shape_obj(x):
+        rho, w1, beta = math.exp(x[0]), math.exp(x[1]), 1 / (1 + math.exp(-x[2]))
+        key = tuple(np.round(x, 12))
+        if key not in cache:
+            start = [list(np.r_[math.log(h[0]), h[1] / 1000, math.log(h[2])])
+                     for h in (cache_best[0][1],)] + hub0
+            hub, v = study.fit_hub(study.tabulate(rho, w1, beta), start)
+            cache[key] = (hub, v)
+            if v < cache_best[0][2]:
+                cache_best[0] = ((rho, w1, beta), hub, v)
+                print(f"  bilinear: {100 * v:.3f} %  c_b/c_r {rho:.4g}, w_1 {1e3 * w1:.3f} mm,"
+                      f" beta {beta:.4f}, c_r {hub[0]:.4g}, F_s0 {hub[1]:.0f} N, k_s {hub[2]:.4g}",
+                      flush=True)
+        return cache[key][1]
+
+    cache_best = [((rho, 1.0, 1.0), hub, v)]
+    seeds = []
+    for r0 in (rho, 2 * rho, 4 * rho):
+        for w1 in (0.004, 0.008, 0.015):
+            for beta in (0.3, 0.6):
+                seeds.append((shape_obj([math.log(r0), math.log(w1), math.log(beta / (1 - beta))]),
+                              [math.log(r0), math.log(w1), math.log(beta / (1 - beta))]))
+    seeds.sort(key=lambda s: s[0])
+    for _, x0 in seeds[:3]:
+        nelder_mead(shape_obj, x0, [0.4, 0.4, 0.6], iters=80, tol=1e-6)
+    (rho, w1, beta), hub, v = cache_best[0]
+    print(f"\nbilinear law: c_b/c_r {rho:.4g} rad^2, w_1 {1e3 * w1:.3f} mm, beta {beta:.4f},"
+          f" c_r {hub[0]:.4g}, c_b {rho * hub[0]:.4g}, F_s0 {hub[1]:.0f} N, k_s {hub[2]:.4g} N/m")
+    tab = study.tabulate(rho, w1, beta)
+    report(study, tab, hub, "bilinear law")
+    _, F, _ = tab
+    knee = hub[0] * np.interp(w1, tab[0], F)
+    print(f"  knee: tip deflection w_1 = {1e3 * w1:.3f} mm; the centre element reaches it at an"
+          f" elements' load of about {knee:.0f} N (centre deflection = w_1)")
+
+
+if __name__ == "__main__":
+    main()
