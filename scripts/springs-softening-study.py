@@ -69,8 +69,9 @@ def tir_keys(tire):
 class Elements:
     """The elements' flat ground, per unit c_r, for one shape (rho = c_b/c_r, w_1, beta)."""
 
-    def __init__(self, R0, dphi, segment=math.pi):
+    def __init__(self, R0, dphi, segment=math.pi, kii="tangent"):
         self.R0 = R0
+        self.kii = kii
         n = int(math.floor(segment / (2 * dphi))) + 1  # elements 0..i0 of the half chain
         self.dphi = dphi
         self.theta = np.arange(n) * dphi
@@ -119,6 +120,9 @@ class Elements:
         """Hub force per c_r and contact length (m) at centre heights z."""
         w, p, a, kdiag, delta = self.solve(z, rho, w1, beta)
         f = np.where(w > w1, w1 + beta * (w - w1), w) * self.dphi
+        kkt(w, p, f, rho / self.dphi, np.maximum(delta, 0.0))
+        if self.kii == "initial":  # tirenv's K_ii = k_r + 2 k_ir whatever the branch
+            kdiag = kdiag - a + self.dphi
         F = (self.weight * f * self.cos).sum(axis=1)
         L = np.zeros_like(z)
         for r in range(z.size):
@@ -135,6 +139,22 @@ class Elements:
                     length += 2 * e_i / (e_i - e_j) * z[r] * (self.tan[j] - self.tan[i])
             L[r] = length
         return F, L
+
+
+def kkt(w, p, f, kir, d):
+    """The tip problem's optimality conditions, from the law itself (not the solve's branches):
+    gradient = reaction, reaction >= 0, w >= d, complementarity; all per c_r, relative to
+    the largest reaction."""
+    lap = 2 * w - np.roll(w, 1, axis=1) - np.roll(w, -1, axis=1)
+    lap[:, 0] = 2 * (w[:, 0] - w[:, 1])
+    lap[:, -1] = w[:, -1] - w[:, -2]
+    grad = f + kir * lap
+    scale = max(float(np.abs(p).max()), 1e-300)
+    bad = max(float(np.abs(grad - p).max()), float(-p.min()), 0.0) / scale
+    gap = float((d - w).max()) / max(float(d.max()), 1e-300)
+    comp = float(np.abs(p * (w - d)).max()) / (scale * max(float(d.max()), 1e-300))
+    if bad > 1e-9 or gap > 1e-12 or comp > 1e-9:
+        raise RuntimeError(f"KKT violated: residual {bad:.3g}, gap {gap:.3g}, complementarity {comp:.3g}")
 
 
 def thomas(lo, diag, up, rhs):
@@ -205,6 +225,7 @@ class Study:
         self.targets = targets  # list of (deflections, contact lengths)
         self.defl = np.arange(step, defl_max + step / 2, step)
         self.z = elements.R0 - self.defl
+        self.sidewall = "preload"
 
     def tabulate(self, rho, w1, beta):
         F, L = self.el.table(self.z, rho, w1, beta)
@@ -217,11 +238,13 @@ class Study:
         return np.concatenate([np.concatenate([got[0] / t[0] - 1, got[1] / t[1] - 1])
                                for t in self.targets])
 
-    def fit_hub(self, tab, start, p=16, sidewall=True):
+    def fit_hub(self, tab, start, p=16):
         """c_r, F_s0, k_s minimising the largest difference for one shape's table."""
+        sidewall = self.sidewall
+
         def unpack(x):
-            return math.exp(x[0]), (1000 * x[1] if sidewall else 0.0), \
-                (math.exp(x[2]) if sidewall else 0.0)
+            return math.exp(x[0]), (1000 * x[1] if sidewall == "preload" else 0.0), \
+                (math.exp(x[2]) if sidewall != "none" else 0.0)
 
         def obj(x, p):
             c_r, F_s0, k_s = unpack(x)
@@ -242,19 +265,26 @@ class Study:
         return unpack(best[0]), best[1]
 
 
-def report(study, tab, hub, label):
+def report(study, tab, hub, label, names):
+    """The differences at each load (+ where the springs model's is larger), and its tangent."""
     c_r, F_s0, k_s = hub
     r = study.diffs(tab, c_r, F_s0, k_s)
     n = len(study.loads)
     got = at_loads(tab, study.loads, c_r, F_s0, k_s)
-    print(f"{label}: largest {100 * np.abs(r).max():.2f} %  (cam {100 * np.abs(r[:2 * n]).max():.2f}"
-          f" %, ring {100 * np.abs(r[2 * n:]).max():.2f} %)")
-    print("   load_N  defl_mm  cam_mm  ring_mm   L_m     cam_L   ring_L   dd_cam%  dL_cam%  dd_ring%  dL_ring%")
-    for k, G in enumerate(study.loads):
-        print(f"  {G:7.0f}  {1e3 * got[0][k]:6.2f}  {1e3 * study.targets[0][0][k]:6.2f}  "
-              f"{1e3 * study.targets[1][0][k]:6.2f}  {got[1][k]:.4f}  {study.targets[0][1][k]:.4f}  "
-              f"{study.targets[1][1][k]:.4f}  {100 * r[k]:+6.2f}  {100 * r[n + k]:+6.2f}  "
-              f"{100 * r[2 * n + k]:+6.2f}  {100 * r[3 * n + k]:+6.2f}")
+    # Tangent of the hub's law: the elements' (from the table) and the sidewall's in series.
+    defl, Fhat, _ = tab
+    de = np.interp(study.loads / c_r, Fhat, defl)
+    k_e = c_r * np.interp(de, 0.5 * (defl[1:] + defl[:-1]), np.diff(Fhat) / np.diff(defl))
+    k = 1 / (1 / k_e + np.where((k_s > 0) & (study.loads > F_s0), 1 / max(k_s, 1e-300), 0.0))
+    parts = ", ".join(f"{m} {100 * np.abs(r[2 * n * t:2 * n * (t + 1)]).max():.2f} %"
+                      for t, m in enumerate(names))
+    print(f"{label}: largest {100 * np.abs(r).max():.2f} %  ({parts})")
+    print("   load_N  defl_mm  L_m     k_kN/m  " +
+          "  ".join(f"{m}_mm  {m}_L    dd_{m}%  dL_{m}%" for m in names))
+    for j, G in enumerate(study.loads):
+        cols = "  ".join(f"{1e3 * t[0][j]:6.2f}  {t[1][j]:.4f}  {100 * r[2 * n * q + j]:+6.2f}  "
+                         f"{100 * r[2 * n * q + n + j]:+6.2f}" for q, t in enumerate(study.targets))
+        print(f"  {G:7.0f}  {1e3 * got[0][j]:6.2f}  {got[1][j]:.4f}  {1e-3 * k[j]:6.1f}  {cols}")
 
 
 def main():
@@ -264,19 +294,29 @@ def main():
     ap.add_argument("--loads", type=int, default=9, help="loads from 0.5 to 1.5 FNOMIN")
     ap.add_argument("--step", type=float, default=1e-4, help="deflection table step, m")
     ap.add_argument("--check-only", action="store_true", help="only compare beta = 1 with tirenv")
+    ap.add_argument("--sidewall", choices=("preload", "linear", "none"), default="preload",
+                    help="the sidewall searched: section 4.9's (F_s0, k_s), F_s0 = 0, or none")
+    ap.add_argument("--kii", choices=("tangent", "initial"), default="tangent",
+                    help="K_ii of the contact length's ends: the branch's tangent or k_r + 2 k_ir")
+    ap.add_argument("--targets", choices=("cam,ring", "cam"), default="cam,ring",
+                    help="the models whose deflection and contact length are matched")
+    ap.add_argument("--element-angle", type=float, default=None,
+                    help="ELEMENT_ANGLE dphi, rad (default: the file's, else pi/360)")
     args = ap.parse_args()
 
     keys = tir_keys(args.tire)
     R0, FNOMIN = keys["UNLOADED_RADIUS"], keys["FNOMIN"]
-    dphi = keys.get("ELEMENT_ANGLE", math.pi / 360)
+    dphi = args.element_angle or keys.get("ELEMENT_ANGLE", math.pi / 360)
     c_r, c_b = keys["RADIAL_STIFFNESS"], keys["INTERRADIAL_STIFFNESS"]
     F_s0, k_s = keys.get("SIDEWALL_PRELOAD", 0.0), keys.get("SIDEWALL_STIFFNESS", 0.0)
     loads = np.linspace(0.5, 1.5, args.loads) * FNOMIN
     targets = []
-    for model in ("cam", "ring"):
+    names = args.targets.split(",")
+    for model in names:
         t = [tirenv_flat(args.tirenv, args.tire, model, G) for G in loads]
         targets.append((np.array([a for a, _ in t]), np.array([b for _, b in t])))
-    study = Study(Elements(R0, dphi), loads, targets, defl_max=0.06, step=args.step)
+    study = Study(Elements(R0, dphi, kii=args.kii), loads, targets, defl_max=0.06, step=args.step)
+    study.sidewall = args.sidewall
 
     # The linear law (beta = 1) against tirenv's springs model with the file's own keys.
     tab = study.tabulate(c_b / c_r, 1.0, 1.0)
@@ -284,42 +324,57 @@ def main():
     worst = 0.0
     print(f"check: linear law, the file's c_r {c_r:g}, c_b {c_b:g}, F_s0 {F_s0:g}, k_s {k_s:g}")
     for k, G in enumerate(loads):
-        ref = tirenv_flat(args.tirenv, args.tire, "springs", G)
+        ref = tirenv_flat(args.tirenv, args.tire, "springs", G, [f"ELEMENT_ANGLE={dphi:.17g}"])
         dd, dl = got[0][k] / ref[0] - 1, got[1][k] / ref[1] - 1
         worst = max(worst, abs(dd), abs(dl))
         print(f"  {G:6.0f} N  deflection {1e3 * got[0][k]:.4f} / tirenv {1e3 * ref[0]:.4f} mm"
               f" ({100 * dd:+.3f} %), contact length {got[1][k]:.5f} / {ref[1]:.5f} m"
               f" ({100 * dl:+.3f} %)")
     print(f"check: largest difference from tirenv {100 * worst:.3f} %")
-    report(study, tab, (c_r, F_s0, k_s), "the file's springs model")
+    report(study, tab, (c_r, F_s0, k_s), "the file's springs model", names)
     if args.check_only:
         return
 
-    hub0 = [[math.log(c_r), F_s0 / 1000, math.log(k_s if k_s > 0 else 6e5)],
-            [math.log(c_r), 0.0, math.log(4e5)], [math.log(0.7 * c_r), 4.0, math.log(1e6)]]
+    def pack(hub):
+        return [math.log(hub[0]), hub[1] / 1000, math.log(hub[2] if hub[2] > 0 else 6e5)]
 
-    # Linear law: the shape is c_b/c_r alone; a scan then a golden-section polish.
+    hub0 = [pack((c_r, F_s0, k_s)), pack((c_r, 0.0, 4e5)), pack((0.7 * c_r, 4000.0, 1e6))]
+
+    # Linear law: the shape is c_b/c_r alone; a scan, then golden sections on log(c_b/c_r).
+    def linear(rho, start):
+        return study.fit_hub(study.tabulate(rho, 1.0, 1.0), start)
+
     best = None
     for rho in np.geomspace(1e-4, 0.3, 25):
-        hub, v = study.fit_hub(study.tabulate(rho, 1.0, 1.0), hub0)
+        hub, v = linear(rho, hub0)
         if best is None or v < best[2]:
             best = (rho, hub, v)
     lo, hi = best[0] / 1.4, best[0] * 1.4
     for _ in range(12):
         m1, m2 = lo * (hi / lo) ** 0.382, lo * (hi / lo) ** 0.618
-        v1 = study.fit_hub(study.tabulate(m1, 1.0, 1.0), [hub0[0], list(np.r_[math.log(best[1][0]), best[1][1] / 1000, math.log(best[1][2])])])
-        v2 = study.fit_hub(study.tabulate(m2, 1.0, 1.0), [hub0[0], list(np.r_[math.log(best[1][0]), best[1][1] / 1000, math.log(best[1][2])])])
-        for rho, (hub, v) in ((m1, v1), (m2, v2)):
+        start = [hub0[0], pack(best[1])]
+        (h1, v1), (h2, v2) = linear(m1, start), linear(m2, start)
+        for rho, hub, v in ((m1, h1, v1), (m2, h2, v2)):
             if v < best[2]:
                 best = (rho, hub, v)
-        if v1[1] < v2[1]:
+        if v1 < v2:
             hi = m2
         else:
             lo = m1
     rho, hub, v = best
     print(f"\nlinear law: c_b/c_r {rho:.4g} rad^2, c_r {hub[0]:.4g}, c_b {rho * hub[0]:.4g},"
           f" F_s0 {hub[1]:.0f} N, k_s {hub[2]:.4g} N/m")
-    report(study, study.tabulate(rho, 1.0, 1.0), hub, "linear law")
+    report(study, study.tabulate(rho, 1.0, 1.0), hub, "linear law", names)
+    sets = [f"RADIAL_STIFFNESS={hub[0]:.17g}", f"INTERRADIAL_STIFFNESS={rho * hub[0]:.17g}",
+            f"SIDEWALL_PRELOAD={hub[1]:.17g}", f"SIDEWALL_STIFFNESS={hub[2]:.17g}"]
+    if not hub[2] > 0:  # tirenv refuses a preload without a stiffness, even a transient one
+        sets[2:] = ["SIDEWALL_PRELOAD=0", "SIDEWALL_STIFFNESS=0"]
+    worst = 0.0
+    for k, G in enumerate(loads):
+        ref = tirenv_flat(args.tirenv, args.tire, "springs", G,
+                          [f"ELEMENT_ANGLE={dphi:.17g}"] + sets)
+        worst = max([worst] + [abs(ref[q] / t[q][k] - 1) for t in targets for q in (0, 1)])
+    print(f"  the same with tirenv flat --model springs --set ...: largest {100 * worst:.2f} %")
     sys.stdout.flush()
 
     # Bilinear law: (log rho, log w_1, logit beta) by the simplex, each trial a table.
@@ -329,8 +384,7 @@ def main():
         rho, w1, beta = math.exp(x[0]), math.exp(x[1]), 1 / (1 + math.exp(-x[2]))
         key = tuple(np.round(x, 12))
         if key not in cache:
-            start = [list(np.r_[math.log(h[0]), h[1] / 1000, math.log(h[2])])
-                     for h in (cache_best[0][1],)] + hub0
+            start = [pack(cache_best[0][1])] + hub0
             hub, v = study.fit_hub(study.tabulate(rho, w1, beta), start)
             cache[key] = (hub, v)
             if v < cache_best[0][2]:
@@ -354,9 +408,15 @@ def main():
     print(f"\nbilinear law: c_b/c_r {rho:.4g} rad^2, w_1 {1e3 * w1:.3f} mm, beta {beta:.4f},"
           f" c_r {hub[0]:.4g}, c_b {rho * hub[0]:.4g}, F_s0 {hub[1]:.0f} N, k_s {hub[2]:.4g} N/m")
     tab = study.tabulate(rho, w1, beta)
-    report(study, tab, hub, "bilinear law")
+    report(study, tab, hub, "bilinear law", names)
     _, F, _ = tab
     knee = hub[0] * np.interp(w1, tab[0], F)
+    for label, el in ((f"ELEMENT_ANGLE {dphi / 2:.6g} rad", Elements(R0, dphi / 2, kii=args.kii)),
+                      ("K_ii " + ("initial" if args.kii == "tangent" else "tangent"),
+                       Elements(R0, dphi, kii="initial" if args.kii == "tangent" else "tangent"))):
+        other = Study(el, loads, targets, defl_max=0.06, step=args.step)
+        r = other.diffs(other.tabulate(rho, w1, beta), *hub)
+        print(f"  the same parameters with {label}: largest {100 * np.abs(r).max():.2f} %")
     print(f"  knee: tip deflection w_1 = {1e3 * w1:.3f} mm; the centre element reaches it at an"
           f" elements' load of about {knee:.0f} N (centre deflection = w_1)")
 
