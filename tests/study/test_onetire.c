@@ -294,15 +294,16 @@ static void test_derived_pairs(void **state)
  * (its linear law, Q_RA1, Q_RA2), kept, and tirenv's ring and springs model identified on it
  * (docs/models.md 14.2): a ring whose carcass softens as it is pressed in, searched on the
  * cam's laws (scripts/ring-on-laws.py), and the springs model with a sidewall in series
- * (section 4.9) identified on that ring (tirenv identify --write-springs); its data set is
- * made by its cam, so nothing is derived. At 0.5 to 1.5 FNOMIN, measured, deflection /
- * contact length: cam - ring 1.02 / 1.68 %, springs - ring 2.90 / 3.89 %, springs - cam
- * 3.02 / 5.48 %. The sidewall brought the springs model's deflection from 14.72 % (the
- * elements alone stiffen with the load as their patch grows) to 2.90 %; the contact length
- * is the elements' alone, which no sidewall changes, and misses the cam's by 5.48 % at 6 kN
- * (the elements' patch grows more slowly with the load than TNO's contact law). Bounded at
- * the measured figures plus half a per cent. (With a linear carcass the ring missed TNO's
- * laws by 8.5 % at best, and the file's earlier ring by 42 % in contact length.) */
+ * (section 4.9) identified on that ring and the cam together, the largest difference from
+ * both the least (scripts/springs-softening-study.py); its data set is made by its cam, so
+ * nothing is derived. At 0.5 to 1.5 FNOMIN, measured, deflection / contact length: cam -
+ * ring 1.02 / 1.68 %, springs - ring 4.68 / 3.91 %, springs - cam 4.80 / 4.81 %. Identified
+ * on the ring alone the springs model missed the cam's contact length by 5.48 % at 6 kN (its
+ * elements' patch grows as F^0.51, TNO's law as F^0.60); the sidewall took its deflection
+ * from 14.72 % (the elements alone stiffen as their patch grows) into the 5 %. Bounded by
+ * the issue's 5 % for every pair with the springs model, the cam and the ring at their
+ * measured figures plus half a per cent. (With a linear carcass the ring missed TNO's laws
+ * by 8.5 % at best, and the file's earlier ring by 42 % in contact length.) */
 static void test_205_pairs(void **state)
 {
     (void)state;
@@ -318,7 +319,7 @@ static void test_205_pairs(void **state)
         loads[i] = (0.5 + 0.25 * (double)i) * o.fnomin;
     pair_miss e[3];
     pairs("205/60R15", &t, N_LOADS, loads, e);
-    static const double bound[3][2] = {{0.0340, 0.0439}, {0.0152, 0.0218}, {0.0352, 0.0598}};
+    static const double bound[3][2] = {{0.05, 0.05}, {0.0152, 0.0218}, {0.05, 0.05}};
     for (size_t k = 0; k < 3; k++) {
         assert_true(e[k].defl <= bound[k][0]);
         assert_true(e[k].l <= bound[k][1]);
