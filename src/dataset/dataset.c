@@ -60,13 +60,14 @@ static int parse_split(const tirenv_csv__reader *r, const tirenv_csv__field *f,
                             "expected train, control or validation, got '%.60s'", f->text);
 }
 
-/* A positive length or force: what every number of the manifest is; at most 1e9 (m or N, a
- * road's bound): a load of 1e308 was listed as 309 digits and trained into a network's
+/* A positive length or force: what every number of the manifest is; at most a road's
+ * bound, TIRENV_PROFILE_MAX_COORDINATE (m or N): a load of 1e308 was listed as 309 digits and trained into a network's
  * contact law with exit 0. */
 static int parse_positive(const tirenv_csv__reader *r, const tirenv_csv__field *f, size_t col,
                           double *out)
 {
-    const int status = tirenv_csv__number_within(r, f, manifest_names[col], 1e9,
+    const int status = tirenv_csv__number_within(r, f, manifest_names[col],
+                                                 TIRENV_PROFILE_MAX_COORDINATE,
                                                  col == COL_LOAD ? "a force in N"
                                                                  : "a length in m",
                                                  out);

@@ -5,6 +5,7 @@
 #include "tirenv/curve.h"
 #include "tirenv/numtext.h"
 #include "tirenv/outfile.h"
+#include "tirenv/profile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -113,7 +114,8 @@ static int curve_parse_row(tirenv_csv__reader *r, tirenv_curve *out, size_t *cap
     /* Within a road's bound (TIRENV_PROFILE_MAX_COORDINATE): h = 1e308 made a fit write its
      * tire (exit 0) and training fail naming no file. */
     for (size_t k = 0; k < CURVE_FIELDS && status == TIRENV_OK; k++)
-        status = tirenv_csv__number_within(r, &f[k], curve_names[k], 1e9,
+        status = tirenv_csv__number_within(r, &f[k], curve_names[k],
+                                           TIRENV_PROFILE_MAX_COORDINATE,
                                            k == 0 ? "a normalised position" : "a length in m",
                                            &v[k]);
     if (status != TIRENV_OK)

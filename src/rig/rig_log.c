@@ -44,11 +44,11 @@ static int log_grow(tirenv_rig__log_file *log, size_t *cap, size_t want)
     return TIRENV_OK;
 }
 
-/* The largest reading taken, in s or m: a road's coordinates' bound (TIRENV_PROFILE_MAX_
- * COORDINATE). A reading beyond it is a typo or a unit slip, and one sample of it (1e308)
- * passed as a time far after the others, or overflowed the importer's filter into a curve
- * point refused naming the output file, or made a passage error at another line and field. */
-static const double reading_max = 1e9;
+/* The largest reading taken, in s or m, is a road's coordinates' bound: a reading beyond it is
+ * a typo or a unit slip, and one sample of it (1e308) passed as a time far after the others,
+ * or overflowed the importer's filter into a curve point refused naming the output file, or
+ * made a passage error at another line and field. */
+static const double reading_max = TIRENV_PROFILE_MAX_COORDINATE;
 
 static int log_parse_row(tirenv_csv__reader *r, tirenv_rig__log_file *log, size_t *cap)
 {
