@@ -11,9 +11,7 @@
 int tirenv_sweep__split_table(char *text, size_t len, const char *path, size_t *head,
                               char ***rows, size_t *n_rows, tirenv_diag *diag)
 {
-    size_t lines = 0;
-    for (size_t k = 0; k < len; ++k)
-        lines += text[k] == '\n';
+    const size_t lines = tirenv_sweep__lines(text, len);
     *rows = malloc((lines + 1) * sizeof **rows);
     if (!*rows)
         return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
@@ -96,8 +94,6 @@ int tirenv_sweep__row_files(const char *row, const char **log, size_t *log_len,
         return -1;
     return 0;
 }
-
-/* The merged tables: the shards' rows interleaved back into case order. */
 
 size_t tirenv_sweep__lines(const char *text, size_t len)
 {
