@@ -27,6 +27,10 @@ typedef struct {
 /* Defaults for the grid and smoothing; L, H, R0, contact_length are NaN (must be set). */
 tirenv_import_settings tirenv_import_default(void);
 
+/* The points of the output grid, x_N = xN_from + k*dxN up to xN_to (with a 1e-9 step's
+ * allowance for round-off): what an imported curve holds; 0 if more than a million. */
+size_t tirenv_import_grid_points(const tirenv_import_settings *s);
+
 /* Imports a raw log from samples (any order, any rate, either direction, repeated or missing
  * samples, constant offsets, noise): removes the flat baseline, locates the obstacle, maps to
  * obstacle coordinates and x_N, keeps the approach half, filters without shifting, resamples.

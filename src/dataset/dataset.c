@@ -293,7 +293,7 @@ static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
 static int sweep_curve(const tirenv_case *c, tirenv_diag *diag)
 {
     const tirenv_import_settings g = tirenv_import_default();
-    const size_t n = (size_t)floor((g.xN_to - g.xN_from) / g.dxN + 1e-9) + 1;
+    const size_t n = tirenv_import_grid_points(&g);
     if (c->curve.n == n)
         return TIRENV_OK;
     return tirenv_error(diag, TIRENV_EPARSE, c->curve_path[0] ? c->curve_path : c->log, 0,

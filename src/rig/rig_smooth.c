@@ -130,9 +130,8 @@ static void fold(const tirenv_rig__samples *s, const tirenv_rig__passage *p, dou
     }
 }
 
-/* Grid points x_N = from + k*step up to `to` (with a 1e-9 step allowance for round-off), by
- * multiplication so that no error accumulates. 0 if too many. */
-static size_t grid_size(const tirenv_import_settings *set)
+/* By multiplication, so that no error accumulates. */
+size_t tirenv_import_grid_points(const tirenv_import_settings *set)
 {
     const double limit = set->xN_to + set->dxN * 1e-9;
     const double steps = floor((limit - set->xN_from) / set->dxN);
@@ -192,7 +191,7 @@ static int check_reach(const double u[], double u_far, double w, tirenv_diag *di
 static int smooth_grid(const double u[], const double h[], size_t n, double w, double x_0,
                        const tirenv_import_settings *set, tirenv_curve *out, tirenv_diag *diag)
 {
-    const size_t n_grid = grid_size(set);
+    const size_t n_grid = tirenv_import_grid_points(set);
     if (n_grid == 0)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dxN",
                             "the x_N grid from %g to %g in steps of %g has more than %.0f "

@@ -186,7 +186,7 @@ int tirenv_sweep__check_case(const char *curve, const char *log, const char *wha
     tirenv_curve c = {0};
     int status = tirenv_curve_read_csv(curve, &c, diag);
     const tirenv_import_settings g = tirenv_import_default();
-    const size_t n = (size_t)floor((g.xN_to - g.xN_from) / g.dxN + 1e-9) + 1;
+    const size_t n = tirenv_import_grid_points(&g);
     if (!status && c.n != n)
         status = tirenv_error(diag, TIRENV_EPARSE, curve, 0, "x_N",
                               "%zu points, where a sweep's curve has the %zu of the x_N grid "
@@ -230,7 +230,7 @@ static int model_curve(tirenv_model *m, const tirenv_profile *cleat, double load
         return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle",
                             "the cleat's corner is out of the tire's reach at this contact "
                             "length (no x_N origin)");
-    size_t n = (size_t)floor((g.xN_to - g.xN_from) / g.dxN + 1e-9) + 1;
+    const size_t n = tirenv_import_grid_points(&g);
     int status = tirenv_curve_alloc(out, n);
     if (status)
         return tirenv_error(diag, status, "", 0, "", "out of memory");
