@@ -26,7 +26,8 @@ set(TIRENV_AUX_DIRS io formats rig dataset sweep study)
 
 # A module's interface to the auxiliary modules after it, if it has one, is the header named
 # after the module, src/<module>/<module>.h (as SQLite's btree.h beside btreeInt.h): io's
-# byte-level readers, src/io/io.h, which formats, rig and dataset read their files with. Its
+# byte-level readers, src/io/io.h, which formats, rig and dataset read their files with, and
+# src/dataset/dataset.h, the rows of a sweep's shard that sweep writes and dataset checks. Its
 # other headers are its own. Not the user's interface: internal tirenv_<object>__ names.
 
 # Every public header under include/tirenv/ belongs to exactly one layer; the check fails on a

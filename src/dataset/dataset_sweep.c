@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dataset/dataset.h"
 #include "dataset/dataset_impl.h"
 #include "io/io.h"
 
@@ -68,7 +69,7 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
     tirenv_csv__close(&r);
     if (status || !cases_line)
         return status;  /* a sweep.txt without the count (none of tirenv's): nothing said */
-    out->cases = cases > k ? (cases - k - 1) / n + 1 : 0;
+    out->cases = tirenv_dataset__shard_rows(cases, k, n);
     if (!out->cases)
         return TIRENV_OK;  /* a shard beyond the grid: no rows, which the manifest refuses */
     out->line = cases_line;

@@ -2,6 +2,7 @@
  * each case's files atomically, so that a killed run leaves only whole cases, which the next
  * run keeps; the manifest last, from the grid; then the directory renamed into place.
  * SPDX-License-Identifier: Apache-2.0 */
+#include "dataset/dataset.h"
 #include "sweep/sweep_impl.h"
 
 #include <dirent.h>
@@ -604,7 +605,7 @@ static int open_partial(sweep_run *r, const char *spec, const char *tire, size_t
 /* The cases of this shard not yet written. */
 static int find_todo(sweep_run *r, tirenv_diag *diag)
 {
-    const size_t part = r->n > r->s->shard ? (r->n - r->s->shard - 1) / r->s->shards + 1 : 0;
+    const size_t part = tirenv_dataset__shard_rows(r->n, r->s->shard, r->s->shards);
     r->todo = malloc((part ? part : 1) * sizeof *r->todo);
     if (!r->todo)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
@@ -746,7 +747,7 @@ int tirenv_sweep_run(const char *dir, const tirenv_tire *tire, const tirenv_swee
         status = -state;
     if (!status && state == 1) {
         rep.already_complete = 1;
-        rep.part_cases = r.n > s->shard ? (r.n - s->shard - 1) / s->shards + 1 : 0;
+        rep.part_cases = tirenv_dataset__shard_rows(r.n, s->shard, s->shards);
         rep.resumed = rep.part_cases;
     } else if (!status) {
         status = open_partial(&r, spec, tire_s, tire_len, &lock_fd, diag);

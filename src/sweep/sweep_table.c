@@ -3,6 +3,7 @@
  * cut at a line end, whole rows short, is not taken for a smaller sweep (docs/formats.md
  * section 13).
  * SPDX-License-Identifier: Apache-2.0 */
+#include "dataset/dataset.h"
 #include "sweep/sweep_impl.h"
 
 #include <stdlib.h>
@@ -43,7 +44,7 @@ int tirenv_sweep__check_rows(const char *dir, const char *table, size_t head_lin
 {
     char path[1200];
     snprintf(path, sizeof path, "%s/%s", dir, table);
-    const size_t want = m > shard ? (m - shard - 1) / shards + 1 : 0;
+    const size_t want = tirenv_dataset__shard_rows(m, shard, shards);
     char part[96];
     if (shards > 1)
         snprintf(part, sizeof part, "shard %zu/%zu of the sweep's %zu cases has %zu", shard,
