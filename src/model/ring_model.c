@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "core/golden.h"
 #include "model/deformable.h"
 #include "model/ring_impl.h"
 #include "tirenv/ring.h"
@@ -54,6 +55,24 @@ static int patch_at(void *elem, const tirenv_profile *flat, double z, double *l,
     return ring_contact_length(elem, flat, z, l, NULL, diag);
 }
 
+/* -l at height z for the golden section: its first failure kept, after which nothing is
+ * evaluated (and 0 returned). */
+typedef struct {
+    void *elem;
+    const tirenv_profile *flat;
+    int status;
+    tirenv_diag *diag;
+} range_ctx;
+
+static double minus_patch(double z, void *p)
+{
+    range_ctx *x = p;
+    double l = 0;
+    if (!x->status)
+        x->status = patch_at(x->elem, x->flat, z, &l, x->diag);
+    return -l;
+}
+
 static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char *why,
                          size_t n, tirenv_diag *diag)
 {
@@ -86,33 +105,18 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
                             "no flat-ground patch found below the free radius %g m", R0);
     if (best == last && last == TIRENV_RING_RANGE_STEPS)
         return 0;  /* longest with the centre at the ground: the bracket is the limit */
-    /* Golden sections on [a, b] around the longest patch, a below it. */
-    const double g = 0.5 * (sqrt(5.0) - 1);
+    /* Golden sections on [a, b] around the longest patch, a below it: the least of -l. */
     double a = R0 - (double)(best + 1) * dz, b = R0 - (double)(best - 1) * dz;
     if (best == last)
         a = R0 - (double)best * dz;  /* the next one down failed */
-    double c = b - g * (b - a), d = a + g * (b - a), lc, ld;
-    int status = patch_at(elem, flat, c, &lc, diag);
-    if (!status)
-        status = patch_at(elem, flat, d, &ld, diag);
-    while (!status && b - a > RANGE_TOL * R0) {
-        if (lc > ld) {
-            b = d;
-            d = c;
-            ld = lc;
-            c = b - g * (b - a);
-            status = patch_at(elem, flat, c, &lc, diag);
-        } else {
-            a = c;
-            c = d;
-            lc = ld;
-            d = a + g * (b - a);
-            status = patch_at(elem, flat, d, &ld, diag);
-        }
-    }
-    if (status)
-        return status;
-    *z = 0.5 * (a + b);
+    range_ctx ctx = {elem, flat, 0, diag};
+    tirenv_core__golden g;
+    tirenv_core__golden_set(&g, minus_patch, &ctx, a, b, TIRENV_CORE__GOLDEN_TIES_UPPER);
+    while (!ctx.status && g.b - g.a > RANGE_TOL * R0)
+        tirenv_core__golden_iterate(&g);
+    if (ctx.status)
+        return ctx.status;
+    *z = 0.5 * (g.a + g.b);
     snprintf(why, n, "where its flat-ground contact length peaks: under more load its patch "
              "would shrink, which no tire does");
     return 0;

@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include "core/golden.h"
 #include "tirenv/model.h"
 
 enum { MAX_LOADS = 64 };
@@ -70,32 +71,12 @@ static int residual(const tirenv_springs_params *par, double log_beta, size_t n,
     return TIRENV_OK;
 }
 
-/* Golden section of f over [a, b], steps steps (each narrows the bracket by 0.618: 40 to
- * 1e-8 of its width, 60 to 1e-12); the minimiser, the middle of the last bracket (and f
- * there into *f_min unless NULL). */
+/* Steps of the golden sections (tirenv_core__golden_min): 40 narrow the bracket to 1e-8 of
+ * its width, 60 to 1e-12. */
 enum { GOLDEN = 40 };
-typedef double (*golden_fn)(double x, void *ctx);
-static double golden(golden_fn f, void *ctx, double a, double b, int steps, double *f_min)
-{
-    const double g = 0.5 * (sqrt(5.0) - 1);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a), s1 = f(x1, ctx), s2 = f(x2, ctx);
-    for (int k = 0; k < steps; k++)
-        if (s1 <= s2) {
-            b = x2, x2 = x1, s2 = s1;
-            x1 = b - g * (b - a);
-            s1 = f(x1, ctx);
-        } else {
-            a = x1, x1 = x2, s1 = s2;
-            x2 = a + g * (b - a);
-            s2 = f(x2, ctx);
-        }
-    const double x = 0.5 * (a + b);
-    if (f_min)
-        *f_min = f(x, ctx);
-    return x;
-}
 
-/* residual's sum for golden: its first failure kept, after which nothing is evaluated. */
+/* residual's sum for the golden section: its first failure kept, after which nothing is
+ * evaluated. */
 typedef struct {
     const tirenv_springs_params *par;
     size_t n;
@@ -132,7 +113,8 @@ int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double l
                                 "is no flat-ground state of a tire of radius %g m", i + 1,
                                 load[i], deflection[i], contact_length[i], par->R0);
     ratio_ctx ctx = {par, n, load, deflection, contact_length, TIRENV_OK, diag};
-    const double log_beta = golden(ss_of_ratio, &ctx, log(1e-6), log(10.0), 60, NULL);
+    const double log_beta =
+        tirenv_core__golden_min(ss_of_ratio, &ctx, log(1e-6), log(10.0), 60, NULL);
     double c_r, ss;
     int status = ctx.status;
     if (!status)
@@ -239,7 +221,7 @@ static double ss_preload(double F_s0, void *p)
     x->F_s0 = F_s0;
     double ss;
     const double c_hi = 2 * x->d[x->n - 1] / (x->G[x->n - 1] - F_s0);
-    golden(ss_compliance, x, 0, c_hi, GOLDEN, &ss);
+    tirenv_core__golden_min(ss_compliance, x, 0, c_hi, GOLDEN, &ss);
     return ss;
 }
 
@@ -259,7 +241,7 @@ static double ss_log_c_r(double log_c_r, void *p)
         x->ss_l += pow8(r);
     }
     double ss_d;
-    golden(ss_preload, x, 0, x->G[x->n - 1], GOLDEN, &ss_d);
+    tirenv_core__golden_min(ss_preload, x, 0, x->G[x->n - 1], GOLDEN, &ss_d);
     return ss_d + x->ss_l;
 }
 
@@ -290,7 +272,7 @@ static double ss_log_beta(double log_beta, void *p)
     if (!(lo < hi))
         return 1e6;
     double ss;
-    golden(ss_log_c_r, x, lo, hi, GOLDEN, &ss);
+    tirenv_core__golden_min(ss_log_c_r, x, lo, hi, GOLDEN, &ss);
     x->tb = NULL;
     return ss;
 }
@@ -314,7 +296,8 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
                                 deflection[i], contact_length[i], par->R0);
     side_ctx x = {.n = n, .G = load, .d = deflection, .l = contact_length};
     beta_ctx b = {par, &x, 0, diag, 0.3 * deflection[0], 1.5 * deflection[n - 1]};
-    const double log_beta = golden(ss_log_beta, &b, log(1e-4), log(1.0), GOLDEN, NULL);
+    const double log_beta =
+        tirenv_core__golden_min(ss_log_beta, &b, log(1e-4), log(1.0), GOLDEN, NULL);
     if (b.status)
         return b.status;
     /* The minimiser's own values, from its table once more. */
@@ -324,12 +307,12 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
         return status;
     x.tb = &tb;
     const double lo = log(load[n - 1]) - tb.log_f[tb.n - 1], hi = log(load[0]) - tb.log_f[0];
-    const double log_c_r = golden(ss_log_c_r, &x, lo, hi, GOLDEN, NULL);
+    const double log_c_r = tirenv_core__golden_min(ss_log_c_r, &x, lo, hi, GOLDEN, NULL);
     ss_log_c_r(log_c_r, &x); /* the elements' states at that c_r */
-    const double F_s0 = golden(ss_preload, &x, 0, load[n - 1], GOLDEN, NULL);
+    const double F_s0 = tirenv_core__golden_min(ss_preload, &x, 0, load[n - 1], GOLDEN, NULL);
     x.F_s0 = F_s0;
-    const double c = golden(ss_compliance, &x, 0, 2 * deflection[n - 1] / (load[n - 1] - F_s0),
-                            GOLDEN, NULL);
+    const double c = tirenv_core__golden_min(
+        ss_compliance, &x, 0, 2 * deflection[n - 1] / (load[n - 1] - F_s0), GOLDEN, NULL);
     par->c_r = exp(log_c_r);
     par->c_b = par->c_r * exp(log_beta);
     par->k_s = 1 / c;

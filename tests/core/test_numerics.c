@@ -16,6 +16,7 @@
 #include "core/cholesky.h"
 #include "core/eigen.h"
 #include "core/fft.h"
+#include "core/golden.h"
 #include "rig/rig_impl.h"
 #include "ride/ode.h"
 #include "tirenv/rng.h"
@@ -201,6 +202,77 @@ static void test_brent_not_finite_inside(void **state)
     for (int it = 0; it < 100 && !status && !tirenv_core__brent_converged(&br, 1e-12); ++it)
         status = tirenv_core__brent_iterate(&br);
     assert_int_equal(status, TIRENV_CORE__BRENT_NOT_FINITE);
+}
+
+/* Golden sections: known minima within 1e-6 after 60 steps, the bracket holding the minimum
+ * while it is wider than 1e-6 (narrower, f differs by less than its round-off: a search for a
+ * minimum resolves only sqrt(eps) of x), each step one evaluation; and the
+ * tie rule, on a function constant over the bracket: lower keeps [a, d] at every step and
+ * ends at a, upper ends at b. */
+static double g_quad(double x, void *p)
+{
+    (void)p;
+    ++calls;
+    return (x - 0.7391) * (x - 0.7391);
+}
+static double g_cosh(double x, void *p)
+{
+    (void)p;
+    ++calls;
+    return cosh(x + 2.385);
+}
+static double g_cos(double x, void *p)
+{
+    (void)p;
+    ++calls;
+    return cos(x);
+}
+static double g_flat(double x, void *p)
+{
+    (void)p;
+    (void)x;
+    return 1.0;
+}
+
+static void test_golden(void **state)
+{
+    (void)state;
+    static const struct {
+        tirenv_core__golden_fn f;
+        double a, b, x_min;
+    } cases[] = {
+        {g_quad, -1.0, 2.0, 0.7391},
+        {g_cosh, -4.0, 1.0, -2.385},
+        {g_cos, 0.5, 5.0, M_PI},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        tirenv_core__golden g;
+        calls = 0;
+        tirenv_core__golden_set(&g, cases[k].f, NULL, cases[k].a, cases[k].b,
+                                TIRENV_CORE__GOLDEN_TIES_LOWER);
+        assert_int_equal(calls, 2);
+        for (int i = 0; i < 60; ++i) {
+            tirenv_core__golden_iterate(&g);
+            assert_true(g.a < g.c && g.c < g.d && g.d < g.b);
+            assert_true(g.b - g.a < 1e-6 || (g.a <= cases[k].x_min && cases[k].x_min <= g.b));
+        }
+        assert_int_equal(calls, 62);
+        double f_min;
+        const double x = tirenv_core__golden_min(cases[k].f, NULL, cases[k].a, cases[k].b, 60,
+                                                 &f_min);
+        assert_true(x == 0.5 * (g.a + g.b));  /* the driver takes the same steps */
+        assert_true(f_min == cases[k].f(x, NULL));
+        assert_near(x, cases[k].x_min, 1e-6, 0);
+    }
+    tirenv_core__golden lo, hi;
+    tirenv_core__golden_set(&lo, g_flat, NULL, 0.0, 1.0, TIRENV_CORE__GOLDEN_TIES_LOWER);
+    tirenv_core__golden_set(&hi, g_flat, NULL, 0.0, 1.0, TIRENV_CORE__GOLDEN_TIES_UPPER);
+    for (int i = 0; i < 40; ++i) {
+        tirenv_core__golden_iterate(&lo);
+        tirenv_core__golden_iterate(&hi);
+    }
+    assert_true(lo.a == 0.0 && lo.b < 1e-8);
+    assert_true(hi.b == 1.0 && hi.a > 1 - 1e-8);
 }
 
 /* ---- FFT ------------------------------------------------------------------------------ */
@@ -514,6 +586,7 @@ int main(void)
         cmocka_unit_test(test_brent_table),
         cmocka_unit_test(test_brent_errors),
         cmocka_unit_test(test_brent_not_finite_inside),
+        cmocka_unit_test(test_golden),
         cmocka_unit_test(test_fft),
         cmocka_unit_test(test_cholesky),
         cmocka_unit_test(test_eigenvalues),
