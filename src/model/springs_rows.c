@@ -328,6 +328,37 @@ typedef struct {
     tirenv_springs__cc_row *out;
 } scan_state;
 
+/* Vertex j's row in sector i at out, the new end returned: h = R0 - rho, dz the vertex's depth
+ * below the centre, s_i >= 0 its sigma on ray i and, when s_i > 0, s_n = -sigma_(i+1) > 0,
+ * S = s_i + s_n and t = s_i / S. A row on element i (s_i = 0 or t snapped to 0), on element
+ * i + 1 (t snapped to 1), or between them at t; the caller has tested a row between elements
+ * against the chord (scan_vertex's drop). A row on the element alone (t snapped, or exactly on
+ * its ray) keeps t = 0 while z moves within the snap: dt/dz = 0 is the derivative of the rows
+ * as used. The weights of a row between elements come later, for the rows that can bind
+ * (build_rows); dga_dz holds dt/dz until then. */
+static inline tirenv_springs__cc_row *put_row(const double st[], size_t j, size_t i, double s_i,
+                                              double s_n, double S, double t, double h,
+                                              double dz, double rho,
+                                              tirenv_springs__cc_row *out)
+{
+    size_t r_i = i, r_j = i;
+    double r_t = 0, r_dt = 0;
+    if (s_i > 0) {
+        if (t >= 1 - t_snap) {
+            r_i = r_j = i + 1;
+        } else if (t > t_snap) {
+            r_j = i + 1;
+            r_t = t;
+            /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
+            r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
+        }
+    }
+    *out = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1, .gb = 0,
+                                    .h = h, .dga_dz = r_dt, .dgb_dz = 0, .dh_dz = -dz / rho,
+                                    .id = (long)j};
+    return out + 1;
+}
+
 /* Vertex j's row at (x, z), if it has one, at sc->out; sc along. scan_prove repeats these
  * operations in a loop of its own: change both (test_springs_scan compares them bit for
  * bit). */
@@ -366,21 +397,15 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
     const double rho = sqrt(rr), h = C->R0 - rho;
     if (!(h > 0))
         return;
-    /* A row on the element alone (t snapped, or exactly on its ray) keeps t = 0 while
-     * z moves within the snap: dt/dz = 0 is the derivative of the rows as used. The
-     * weights of a row between elements come later, for the rows that can bind
-     * (build_rows); dga_dz holds dt/dz until then. */
-    size_t r_i = i, r_j = i;
-    double r_t = 0, r_dt = 0;
+    double S = 0, t = 0;
     if (s_i > 0) {
         if (i + 1 >= C->N)
             return; /* beyond the last element's ray */
         if (s_n == 0)
             s_n = dz * st[i + 1] - dx * ct[i + 1]; /* > 0: before ray i + 1 */
-        const double S = s_i + s_n, t = s_i / S;
-        if (t >= 1 - t_snap) {
-            r_i = r_j = i + 1;
-        } else if (t > t_snap) {
+        S = s_i + s_n;
+        t = s_i / S;
+        if (t < 1 - t_snap && t > t_snap) {
             /* Below the hull of the rays' own rows (build_rows' test with the rays'
              * penetrations, which the elements' rows only raise): never binds. */
             if (sc->ci != i) {
@@ -393,15 +418,9 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
             const double thr = chord * (1 + C->ab_lo * t * (1 - t));
             if (!(h > thr))
                 return;
-            r_j = i + 1;
-            r_t = t;
-            /* d(s_i)/dz = -sin(theta_i), d(s_n)/dz = sin(theta_(i+1)) */
-            r_dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
         }
     }
-    *sc->out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
-                                      .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
-                                      .dh_dz = -dz / rho, .id = (long)j};
+    sc->out = put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, sc->out);
 }
 
 /* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the first scan
@@ -516,39 +535,6 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
     }
 }
 
-/* Vertex j's row at (C->x, C->z), if it has one, at out, its sector i known; returns the new
- * end. The operations of scan_vertex, for the few vertices a scan that no proof dropped. */
-static tirenv_springs__cc_row *prove_row(const scan_ctx *C, size_t j, size_t i,
-                                         tirenv_springs__cc_row *out)
-{
-    const double *const st = C->st, *const ct = C->ct;
-    const double dx = C->X[j] - C->x, dz = C->z - C->Z[j], rr = dx * dx + dz * dz;
-    if (!(dz > 0 && rr < C->R0sq))
-        return out;
-    const double s_i = dx * ct[i] - dz * st[i];
-    if (s_i < 0 || (s_i > 0 && i + 1 >= C->N))
-        return out; /* behind the first ray, beyond the last */
-    const double rho = sqrt(rr), h = C->R0 - rho;
-    if (!(h > 0))
-        return out;
-    size_t r_i = i, r_j = i;
-    double r_t = 0, r_dt = 0;
-    if (s_i > 0) {
-        const double u = dx * ct[i + 1] - dz * st[i + 1], S = s_i - u, t = s_i / S;
-        if (t >= 1 - t_snap) {
-            r_i = r_j = i + 1;
-        } else if (t > t_snap) {
-            r_j = i + 1;
-            r_t = t;
-            r_dt = (st[i] * u - s_i * st[i + 1]) / (S * S);
-        }
-    }
-    *out++ = (tirenv_springs__cc_row){.i = r_i, .j = r_j, .t = r_t, .tau = 0, .ga = 1,
-                                      .gb = 0, .h = h, .dga_dz = r_dt, .dgb_dz = 0,
-                                      .dh_dz = -dz / rho, .id = (long)j};
-    return out;
-}
-
 /* Vertex j, which the guess did not prove dropped (out of reach, a row, or its sector
  * missed): its row at out as scan_vertex takes it, the new end returned, or its proof into
  * *e if it is dropped between elements; its walk from sector g (the guess: the walk ends in
@@ -576,10 +562,17 @@ static tirenv_springs__cc_row *prove_vertex(const scan_ctx *C, size_t g, size_t 
     *missed += i != g;
     e->i = i;
     const double s_i = dx * ct[i] - dz * st[i];
-    if (s_i > 0 && i + 1 < N) {
-        const double u = dx * ct[i + 1] - dz * st[i + 1], S = s_i - u, t = s_i / S;
-        const double rr = dx * dx + dz * dz, rho = sqrt(rr), h = C->R0 - rho;
-        if (h > 0 && t < 1 - t_snap && t > t_snap) {
+    if (s_i < 0 || (s_i > 0 && i + 1 >= N))
+        return out; /* behind the first ray, beyond the last */
+    const double rho = sqrt(dx * dx + dz * dz), h = C->R0 - rho;
+    if (!(h > 0))
+        return out;
+    double s_n = 0, S = 0, t = 0;
+    if (s_i > 0) {
+        s_n = dz * st[i + 1] - dx * ct[i + 1]; /* -sigma_(i+1), the same number (scan_vertex) */
+        S = s_i + s_n;
+        t = s_i / S;
+        if (t < 1 - t_snap && t > t_snap) {
             const double P_l = pen(i, C->a, C->b, C->d), P_r = pen(i + 1, C->a, C->b, C->d);
             const double slack_tau = fabs(P_r - P_l) * C->tau_dev;
             const double omt = 1 - t;
@@ -592,7 +585,7 @@ static tirenv_springs__cc_row *prove_vertex(const scan_ctx *C, size_t g, size_t 
             }
         }
     }
-    return prove_row(C, j, i, out);
+    return put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, out);
 }
 
 /* The vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1], in the sectors' range
