@@ -115,12 +115,7 @@ const double (*tirenv_ring__belt_end(tirenv_ring_belt *b, size_t n))[4]
     const size_t ne = b->M - n;
     const double *s = b->s;
     tirenv_ring_band *E = &b->ext;
-    E->n = ne;
-    for (size_t i = 0; i < ne; ++i) {
-        E->a0[i] = s[0];
-        E->a1[i] = i + 1 < ne ? s[1] : 0;
-        E->a2[i] = i + 2 < ne ? s[2] : 0;
-    }
+    tirenv_ring__band_belt(E, b, ne);
     memset(E->c, 0, sizeof E->c);
     tirenv_ring__band_factor(E); /* a principal block of the positive definite K */
     const size_t e_idx[4] = {0, 1, ne - 2, ne - 1};
@@ -154,6 +149,17 @@ const double (*tirenv_ring__belt_end(tirenv_ring_belt *b, size_t n))[4]
             q[v][u] = q[u][v] = 0.5 * (q[v][u] + q[u][v]);
     b->have[n] = 1;
     return (const double(*)[4])q;
+}
+
+void tirenv_ring__band_belt(tirenv_ring_band *A, const tirenv_ring_belt *b, const size_t n)
+{
+    const double *s = b->s;
+    A->n = n;
+    for (size_t i = 0; i < n; ++i) {
+        A->a0[i] = s[0];
+        A->a1[i] = i + 1 < n ? s[1] : 0;
+        A->a2[i] = i + 2 < n ? s[2] : 0;
+    }
 }
 
 void tirenv_ring__band_less_ends(tirenv_ring_band *A, const double (*q)[4])

@@ -81,14 +81,11 @@ static void eliminate_belt(const tirenv_ring *r, const double (*q)[4], double rh
 static void assemble_matrix(tirenv_ring *r, const double (*q)[4])
 {
     const size_t n = r->n, lo = r->lo;
-    const double *s = tirenv_ring__belt_stencil(r->belt);
     tirenv_ring_band *A = &r->A;
-    A->n = n;
-    for (size_t i = 0; i < n; ++i) {
-        A->a0[i] = s[0] + (r->state[lo + i] == TREAD ? r->kappa[lo + i] : 0);
-        A->a1[i] = i + 1 < n ? s[1] : 0;
-        A->a2[i] = i + 2 < n ? s[2] : 0;
-    }
+    tirenv_ring__band_belt(A, r->belt, n);
+    for (size_t i = 0; i < n; ++i)
+        if (r->state[lo + i] == TREAD)
+            A->a0[i] += r->kappa[lo + i];
     tirenv_ring__band_less_ends(A, q);
     for (size_t i = 0; i < n; ++i) {
         if (!(r->state[lo + i] & B_BASIC))

@@ -76,6 +76,10 @@ typedef struct {
     double t[3];           /* factor: L[n-2][n-2], L[n-1][n-2], L[n-1][n-1] */
 } tirenv_ring_band;
 
+/* A's band: n nodes of the unloaded belt in a row, its stencil on every row but where it
+ * would pass the last (the corner c untouched). */
+void tirenv_ring__band_belt(tirenv_ring_band *A, const tirenv_ring_belt *b, size_t n);
+
 /* Takes the belt's condensed ends q (tirenv_ring__belt_end, over rows 0, 1, n-2, n-1) off A's
  * band and sets the corner coupling c from them. */
 void tirenv_ring__band_less_ends(tirenv_ring_band *A, const double (*q)[4]);

@@ -101,15 +101,9 @@ static void assemble_rhs(const tirenv_ring *r, double rhs[])
  * t_r)) N, so that the solution is the minimum of E with the points' states fixed. */
 static void assemble(tirenv_ring *r, const double (*q4)[4], double rhs[])
 {
-    const size_t n = r->n;
-    const double *s = tirenv_ring__belt_stencil(r->belt), R = r->R;
+    const double R = r->R;
     tirenv_ring_band *A = &r->A;
-    A->n = n;
-    for (size_t i = 0; i < n; ++i) {
-        A->a0[i] = s[0];
-        A->a1[i] = i + 1 < n ? s[1] : 0;
-        A->a2[i] = i + 2 < n ? s[2] : 0;
-    }
+    tirenv_ring__band_belt(A, r->belt, r->n);
     tirenv_ring__band_less_ends(A, q4);
     for (size_t k = 0; k < r->n_pts; ++k) {
         const tirenv_ring_point *q = &r->pts[k];
