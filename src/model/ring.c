@@ -581,21 +581,9 @@ void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
             w[j] = r->w[j];
         w = NULL;
     }
-    if (r->par.contact == TIRENV_RING_CONTINUOUS) {
-        for (size_t j = 0; j < r->M; ++j) {
-            const int inside = j >= lo && j < hi;
-            if (w && inside) {
-                w[j] = r->w[j];
-            } else if (w) {
-                w[j] = 0;
-                for (size_t k = lo; k < hi; ++k)
-                    w[j] += r->c[j > k ? j - k : k - j] * r->F[k];
-            }
-            if (f)
-                f[j] = inside ? r->F[j] : 0;
-        }
-        return;
-    }
+    /* The window's forces: with continuous contact every node's, with rays those of the nodes
+     * not free. */
+    const int all = r->par.contact == TIRENV_RING_CONTINUOUS;
     for (size_t j = 0; j < r->M; ++j) {
         const int inside = j >= lo && j < hi;
         if (w && inside) {
@@ -603,11 +591,11 @@ void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
         } else if (w) {
             w[j] = 0;
             for (size_t k = lo; k < hi; ++k)
-                if (r->state[k] != FREE)
+                if (all || r->state[k] != FREE)
                     w[j] += r->c[j > k ? j - k : k - j] * r->F[k];
         }
         if (f)
-            f[j] = inside && r->state[j] != FREE ? r->F[j] : 0;
+            f[j] = inside && (all || r->state[j] != FREE) ? r->F[j] : 0;
     }
 }
 
