@@ -216,6 +216,12 @@ int cli_tire(const cli_options *o, tirenv_tire *tire);
  * none. */
 int cli_model_type(const char *name, const tirenv_model_type **type);
 
+/* "rigid,springs,nn": 1 to max model types by their names into types[], their number into
+ * *n; prints an error naming option and returns CLI_EXIT_USAGE for an empty or unknown name
+ * or more than max. */
+int cli_model_list(const char *option, const char *arg, const tirenv_model_type *types[],
+                   size_t max, size_t *n);
+
 /* Allocates a model for a checked tire and, if its type needs one, gives it the network of
  * --nn (read from the model file, with the R0 its x_N refers to); prints and returns an exit
  * code on failure. */

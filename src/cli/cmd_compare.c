@@ -120,31 +120,9 @@ static int parse_split(void *dst, const char *arg)
 static int parse_models(void *dst, const char *arg)
 {
     compare_options *co = dst;
-    co->s.n_models = 0;
     co->s.with_nn = 0;
-    const char *p = arg;
-    for (;;) {
-        const size_t len = strcspn(p, ",");
-        char name[32];
-        if (len == 0 || len >= sizeof name) {
-            cli_error("--models: expected comma-separated model names, got '%s'", arg);
-            return CLI_EXIT_USAGE;
-        }
-        memcpy(name, p, len);
-        name[len] = '\0';
-        const tirenv_model_type *type;
-        if (cli_model_type(name, &type))
-            return CLI_EXIT_USAGE;
-        if (co->s.n_models == sizeof co->s.models / sizeof co->s.models[0]) {
-            cli_error("--models: too many models in '%s'", arg);
-            return CLI_EXIT_USAGE;
-        }
-        co->s.models[co->s.n_models++] = type;
-        if (!p[len])
-            break;
-        p += len + 1;
-    }
-    return CLI_EXIT_OK;
+    return cli_model_list("--models", arg, co->s.models,
+                          sizeof co->s.models / sizeof co->s.models[0], &co->s.n_models);
 }
 
 static int parse_simulated_by(void *dst, const char *arg)

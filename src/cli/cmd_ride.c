@@ -117,26 +117,7 @@ static int parse_speeds(void *dst, const char *arg)
 static int parse_models(void *dst, const char *arg)
 {
     ride_options *r = dst;
-    r->n_models = 0;
-    const char *p = arg;
-    for (;;) {
-        const size_t len = strcspn(p, ",");
-        char name[32];
-        if (len == 0 || len >= sizeof name || r->n_models == RIDE_MAX_MODELS) {
-            cli_error("ride: --model expects 1 to %d comma-separated models, got '%s'",
-                      RIDE_MAX_MODELS, arg);
-            return CLI_EXIT_USAGE;
-        }
-        memcpy(name, p, len);
-        name[len] = '\0';
-        const tirenv_model_type *type;
-        if (cli_model_type(name, &type))
-            return CLI_EXIT_USAGE;
-        r->models[r->n_models++] = type;
-        if (!p[len])
-            return CLI_EXIT_OK;
-        p += len + 1;
-    }
+    return cli_model_list("ride: --model", arg, r->models, RIDE_MAX_MODELS, &r->n_models);
 }
 
 static int parse_set(void *dst, const char *arg)

@@ -240,6 +240,30 @@ int cli_model_type(const char *name, const tirenv_model_type **type)
     return CLI_EXIT_USAGE;
 }
 
+int cli_model_list(const char *option, const char *arg, const tirenv_model_type *types[],
+                   size_t max, size_t *n)
+{
+    *n = 0;
+    const char *p = arg;
+    for (;;) {
+        const size_t len = strcspn(p, ",");
+        char name[32];
+        if (len == 0 || len >= sizeof name || *n == max) {
+            cli_error("%s: expected 1 to %zu comma-separated model names, got '%s'", option,
+                      max, arg);
+            return CLI_EXIT_USAGE;
+        }
+        memcpy(name, p, len);
+        name[len] = '\0';
+        if (cli_model_type(name, &types[*n]))
+            return CLI_EXIT_USAGE;
+        ++*n;
+        if (!p[len])
+            return CLI_EXIT_OK;
+        p += len + 1;
+    }
+}
+
 /* tirenv_tir_need leaves the springs model to a network whose file records a contact law; an
  * older file's takes the springs model's contact length, which a tire file whose springs model
  * was neither given nor derived does not describe (the default tire's would stand in). */

@@ -126,6 +126,21 @@ run "$bin" compare --data "$data/dataset_good" --nn net.json --models rigid,cam,
     --no-images -o cmp
 check "compare --models with nn as a model type: its column last" \
     '[ $rc -eq 0 ] && [ "$(tail -n 1 cmp/timing.csv | cut -d, -f1)" = nn ]'
+# One parser of model lists (cli_model_list): an empty name or one too many (compare takes 7,
+# ride 8) is a usage error naming the option, and nothing is run.
+eight=rigid,rigid,rigid,rigid,rigid,rigid,rigid,rigid
+for bad in "ride --cleat 0.30,0.05 --speed 10km/h --out-dir cmp-bad --model rigid,,cam" \
+    "ride --cleat 0.30,0.05 --speed 10km/h --out-dir cmp-bad --model $eight,cam" \
+    "compare --data $data/dataset_good --no-images -o cmp-bad --models rigid," \
+    "compare --data $data/dataset_good --no-images -o cmp-bad --models $eight"; do
+    run "$bin" $bad
+    check "${bad%% *} with a bad model list: exit 1, the option named, nothing run" \
+        '[ $rc -eq 1 ] && grep -q -- "--model.*: expected 1 to [78] comma-separated model names" err &&
+         no_file cmp-bad'
+done
+run "$bin" compare --data "$data/dataset_good" --no-images -o cmp-bad --models rigid,tank
+check "compare --models with an unknown name: exit 1, the names listed" \
+    '[ $rc -eq 1 ] && grep -q "expected one of rigid" err && no_file cmp-bad'
 colour() {  # colour FILE.gp MODEL: the line colour the script gives the model
     sed -n "s/^set style line [0-9]* lc rgb '\\(#[0-9a-f]*\\)'.*# $2\$/\\1/p" "$1" | head -n 1
 }
