@@ -510,7 +510,9 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
  * as steeply as its tangent at FNOMIN allows, where the ring stiffens. A deflection the law
  * does not reach (a Q_FZ2 < 0 whose load peaks below 1.5 FNOMIN) counts as an infinite
  * difference; such Q_FZ2 lie at the lower end, so the search moves away from them.
- * Q_FZ2_STEPS narrow the bracket by 0.618^100, to the last bits of a double. */
+ * Q_FZ2_STEPS narrow the bracket by 0.618^100, to the last bits of a double. The search is
+ * its own: the core's golden section (src/core/golden.c) is internal to the core layer, which
+ * the formats may not call. */
 static double q_fz2_miss(const mf_keys *k, double factor, const flat_set *ring, double q2)
 {
     double sum = 0;
