@@ -6,19 +6,8 @@
 # SPDX-License-Identifier: Apache-2.0
 set -u
 bin=$1 dir=$2
-n=0 failed=0
-check() {
-    what=$1
-    shift
-    n=$((n + 1))
-    if "$@"; then
-        echo "ok $n - $what"
-    else
-        failed=$((failed + 1))
-        echo "not ok $n - $what"
-        return 1
-    fi
-}
+# shellcheck source=tests/lib/tap.sh
+. "$(dirname "$0")/../lib/tap.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -56,5 +45,4 @@ for c in "" $commands; do
     check "groff -man -ww formats $name.1 without a warning" \
         sh -c "test $? -eq 0 && test ! -s '$tmp/groff'" || sed 's/^/#   /' "$tmp/groff"
 done
-echo "$((n - failed)) passed, $failed failed"
-[ "$failed" -eq 0 ]
+tap_done

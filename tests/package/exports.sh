@@ -8,19 +8,8 @@
 # SPDX-License-Identifier: Apache-2.0
 set -u
 lib=$1 include=$2 major=$3 asan=${4:-}
-n=0 failed=0
-check() {
-    what=$1
-    shift
-    n=$((n + 1))
-    if "$@"; then
-        echo "ok $n - $what"
-    else
-        failed=$((failed + 1))
-        echo "not ok $n - $what"
-        return 1
-    fi
-}
+# shellcheck source=tests/lib/tap.sh
+. "$(dirname "$0")/../lib/tap.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -45,5 +34,4 @@ check "every exported symbol is declared in include/tirenv/ ($(wc -l <"$tmp/symb
     test ! -s "$tmp/undeclared" || sed 's/^/#   /' "$tmp/undeclared"
 readelf -d "$lib" >"$tmp/dynamic"
 check "soname libtirenv.so.$major" grep -q "(SONAME).*\[libtirenv\.so\.$major\]" "$tmp/dynamic"
-echo "$((n - failed)) passed, $failed failed"
-[ "$failed" -eq 0 ]
+tap_done

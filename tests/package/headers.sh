@@ -5,19 +5,8 @@
 # SPDX-License-Identifier: Apache-2.0
 set -u
 cc=$1 include=$2 generated=$3
-n=0 failed=0
-check() {
-    what=$1
-    shift
-    n=$((n + 1))
-    if "$@"; then
-        echo "ok $n - $what"
-    else
-        failed=$((failed + 1))
-        echo "not ok $n - $what"
-        return 1
-    fi
-}
+# shellcheck source=tests/lib/tap.sh
+. "$(dirname "$0")/../lib/tap.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -36,5 +25,4 @@ for h in "$include"/tirenv/*.h "$generated"/tirenv/version.h; do
     check "tirenv/$name compiles on its own, twice (include guard)" test $? -eq 0 ||
         sed 's/^/#   /' "$tmp/log"
 done
-echo "$((n - failed)) passed, $failed failed"
-[ "$failed" -eq 0 ]
+tap_done

@@ -16,20 +16,8 @@ trap 'rm -rf "$tmp"' EXIT
 trap 'exit 2' INT TERM
 unset TIRENV_DATA PKG_CONFIG_PATH CMAKE_PREFIX_PATH LD_LIBRARY_PATH
 
-n=0 failed=0
-# check WHAT CMD...: one TAP line; returns CMD's status (so that "|| cat LOG" shows why).
-check() {
-    what=$1
-    shift
-    n=$((n + 1))
-    if "$@"; then
-        echo "ok $n - $what"
-    else
-        failed=$((failed + 1))
-        echo "not ok $n - $what"
-        return 1
-    fi
-}
+# shellcheck source=tests/lib/tap.sh
+. "$(dirname "$0")/../lib/tap.sh"
 # run CMD...: stdout to $out, stderr to $err, exit status in $rc.
 out=$tmp/out err=$tmp/err
 run() {
@@ -167,5 +155,4 @@ DESTDIR=$tmp/stage "$cmake" --install "$build" --prefix /usr/local >/dev/null 2>
 check "DESTDIR=STAGE cmake --install --prefix /usr/local installs under STAGE/usr/local" \
     test -x "$tmp/stage/usr/local/bin/tirenv"
 
-echo "$((n - failed)) passed, $failed failed"
-[ "$failed" -eq 0 ]
+tap_done
