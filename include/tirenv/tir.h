@@ -91,6 +91,12 @@ typedef struct {
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
 
+/* tirenv_tir_read then tirenv_tir_derive on the bytes of one read of path: what a caller
+ * does that may be given a pipe or /dev/stdin, which cannot be read twice. On failure *tire
+ * is unchanged. */
+int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
+                           tirenv_tir_origin *origin, tirenv_diag *diag);
+
 /* tirenv_tir_derive's need for a caller that runs a model of type on a tire file (the one rule
  * the CLI, the FMU and the Python module follow, docs/models.md 14.2): TIRENV_TIR_RING for the
  * ring, TIRENV_TIR_SPRINGS for the springs model, TIRENV_TIR_CAM for the cam, with

@@ -7,6 +7,7 @@
  * model derived on that ring has a sidewall in series (derive_springs_sidewall). */
 #include "formats/flat_inverse.h"
 #include "formats/propfile.h"
+#include "formats/tir_impl.h"
 #include "tirenv/cam.h"
 #include "tirenv/tir.h"
 #include "tirenv/model.h"
@@ -18,6 +19,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* What the derivation reads. The enveloping keys are there only to learn whether the file
@@ -1256,14 +1258,16 @@ static int derived(tirenv_tir_origin *o, const char *law)
     return TIRENV_OK;
 }
 
-static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir_origin *origin,
-                  tirenv_diag *diag)
+/* text (len bytes) is the file as tirenv_tir_read read it, or NULL: read path again. */
+static int derive(const char *path, const char *text, size_t len, tirenv_tire *tire,
+                  unsigned need, tirenv_tir_origin *origin, tirenv_diag *diag)
 {
     memset(origin, 0, sizeof *origin);
     origin->cam_ring_deflection = origin->cam_ring_contact_length = NAN;
     mf_keys k;
     memset(&k, 0, sizeof k);
-    int status = tirenv_propfile__read(&mf_schema, path, &k, diag);
+    int status = text ? tirenv_propfile__read_text(&mf_schema, path, text, len, &k, diag)
+                      : tirenv_propfile__read(&mf_schema, path, &k, diag);
     if (status)
         return status;
     /* MF-Tyre's rule: a file without INFLPRES is at its NOMPRES (PFZ1's factor 1), not at the
@@ -1431,9 +1435,26 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag)
 {
     const tirenv_tire read = *tire;
-    const int status = derive(path, tire, need, origin, diag);
+    const int status = derive(path, NULL, 0, tire, need, origin, diag);
     if (status)
         *tire = read;
+    return status;
+}
+
+/* Both passes on the bytes of one read: a pipe, /dev/stdin or a process substitution has no
+ * second read to give (the second open of a FIFO waits for a writer that has gone). */
+int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
+                           tirenv_tir_origin *origin, tirenv_diag *diag)
+{
+    tirenv_tire t = *tire;
+    char *text = NULL;
+    size_t len = 0;
+    int status = tirenv_tir__read_kept(path, &t, &text, &len, diag);
+    if (!status)
+        status = derive(path, text, len, &t, need, origin, diag);
+    free(text);
+    if (!status)
+        *tire = t;
     return status;
 }
 
