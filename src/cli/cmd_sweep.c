@@ -401,8 +401,14 @@ int cli_sweep_main(int argc, char *argv[])
     if (!code && (tirenv_model_type_flags(s.type) & TIRENV_MODEL_NEEDS_NETWORK)) {
         tirenv_diag d;
         tirenv_diag_clear(&d);
-        const int st = tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
-        if (st)
+        /* Named in sweep.txt by its bytes, read apart from the network, and checked again by
+         * a resumed run: a pipe would give them once. */
+        const int regular = cli_regular_file(o.nn_path, "sweep reads the network file again "
+                                             "to name it by its bytes in sweep.txt");
+        const int st = regular ? TIRENV_OK : tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
+        if (regular)
+            code = regular;
+        else if (st)
             code = cli_fail(st, &d);
         else if (file_fingerprint(o.nn_path, net_id)) {
             cli_error("sweep: %s: cannot read", o.nn_path);

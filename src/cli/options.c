@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 
@@ -185,6 +186,17 @@ int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
                          tirenv_tir_origin *origin)
 {
     return tire_derive(path, need, tire, origin);
+}
+
+int cli_regular_file(const char *path, const char *why)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || !(S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
+        return CLI_EXIT_OK;  /* a file, a device or nothing: its reader says what is wrong */
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    return cli_fail(tirenv_error(&diag, TIRENV_EIO, path, 0, "", "a pipe, which can be read "
+                                 "only once; %s, expected a regular file", why), &diag);
 }
 
 int cli_tire(const cli_options *o, tirenv_tire *tire)
