@@ -201,7 +201,7 @@ double cli_nominal_load(const tirenv_tire *tire);
  * and why a regular file is needed (why: "bench runs itself in child processes that read it
  * again"); else CLI_EXIT_OK. A command that reads a file twice refuses a pipe before it
  * opens it, where the second open would wait for a writer that has gone. */
-int cli_regular_file(const char *path, const char *why);
+int cli_refuse_pipe(const char *path, const char *why);
 
 /* tirenv_tir_read_derive(path, tire, need) (need: tirenv_tir_need's bits; one read of the
  * file), printing what was derived on standard error. */

@@ -735,7 +735,7 @@ int cli_bench_main(int argc, char *argv[])
         repeat = quick ? 1 : 5;
     tirenv_tire tire;
     char buf[1024];
-    code = cli_regular_file(cli_tire_path(&o, buf, sizeof buf),
+    code = cli_refuse_pipe(cli_tire_path(&o, buf, sizeof buf),
                             "bench runs itself in child processes that read it again");
     if (!code)
         code = cli_tire(&o, &tire);

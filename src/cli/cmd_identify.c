@@ -167,7 +167,7 @@ int cli_identify_main(int argc, char *argv[])
     char buf[1024];
     const char *path = cli_tire_path(&o, buf, sizeof buf);
     if ((write || write_springs) &&
-        (code = cli_regular_file(path, write ? "--write sets its values in place"
+        (code = cli_refuse_pipe(path, write ? "--write sets its values in place"
                                              : "--write-springs sets its values in place")))
         return code;
     tirenv_tire tire;

@@ -404,7 +404,7 @@ int cli_sweep_main(int argc, char *argv[])
         char tire_buf[1024];
         /* Named in sweep.txt by its bytes, read apart from the network, and checked again by
          * a resumed run: a pipe would give them once. */
-        code = cli_regular_file(o.nn_path, "sweep reads the network file again to name it "
+        code = cli_refuse_pipe(o.nn_path, "sweep reads the network file again to name it "
                                 "by its bytes in sweep.txt");
         int st = code ? TIRENV_OK : tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
         /* A file without the law of its tire turns loads and contact lengths into each other

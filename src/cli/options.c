@@ -188,7 +188,7 @@ int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
     return tire_derive(path, need, tire, origin);
 }
 
-int cli_regular_file(const char *path, const char *why)
+int cli_refuse_pipe(const char *path, const char *why)
 {
     struct stat st;
     if (stat(path, &st) != 0 || !(S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))

@@ -277,7 +277,7 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
 
 /* The curve file when there is one (the import is done once, when the data set is built);
  * otherwise the log, imported with the case's own regime and obstacle. */
-int tirenv_dataset__regular(const char *path, tirenv_diag *diag)
+int tirenv_dataset__refuse_pipe(const char *path, tirenv_diag *diag)
 {
     struct stat st;
     if (stat(path, &st) != 0 || !(S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
@@ -289,7 +289,8 @@ int tirenv_dataset__regular(const char *path, tirenv_diag *diag)
 
 static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
 {
-    const int status = tirenv_dataset__regular(c->curve_path[0] ? c->curve_path : c->log, diag);
+    const int status = tirenv_dataset__refuse_pipe(c->curve_path[0] ? c->curve_path : c->log,
+                                                   diag);
     if (status)
         return status;
     if (c->curve_path[0])
@@ -343,7 +344,7 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
     if (status == TIRENV_OK) {
         tirenv_csv__reader r;
         memset(&r, 0, sizeof r);  /* closed whether opened or not */
-        status = tirenv_dataset__regular(path, diag);
+        status = tirenv_dataset__refuse_pipe(path, diag);
         if (status == TIRENV_OK && (status = tirenv_csv__open(&r, path, diag)) == TIRENV_OK)
             status = parse_manifest(&r, out, &decl);
         tirenv_csv__close(&r);

@@ -33,6 +33,6 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
  * read more than once (source.txt by the command and by tirenv_dataset_read, every file by
  * each stage of a study), and a pipe has no second read: refused before it is opened, where
  * the second open would wait for a writer that has gone. */
-int tirenv_dataset__regular(const char *path, tirenv_diag *diag);
+int tirenv_dataset__refuse_pipe(const char *path, tirenv_diag *diag);
 
 #endif
