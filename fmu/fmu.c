@@ -127,14 +127,13 @@ fmi2Status fmu__setup(fmu_instance *f)
     if (v->tire_file[0]) {
         if (resolve(f, v->tire_file, path, sizeof path))
             return fmu__fail(f, "tire_file: path too long: %s", v->tire_file);
-        if (tirenv_tir_read(path, &f->tire, &diag))
-            return fmu__fail_diag(f, "tire_file", &diag);
         /* A file without tirenv's sections: the springs and ring models of its own tire,
          * derived from its MF-Tyre keys (docs/models.md section 14.2), logged. The FMU runs
          * the one model named, so the cam is used alone, as by tirenv flat --model cam: a
-         * file whose cam laws are all its own has no ring searched for nothing. */
+         * file whose cam laws are all its own has no ring searched for nothing. One read of
+         * the file for both passes (a pipe has no second). */
         tirenv_tir_origin origin;
-        if (tirenv_tir_derive(path, &f->tire, tirenv_tir_need(type, 1), &origin, &diag))
+        if (tirenv_tir_read_derive(path, &f->tire, tirenv_tir_need(type, 1), &origin, &diag))
             return fmu__fail_diag(f, "tire_file", &diag);
         if (origin.note[0])
             fmu__log(f, fmi2Warning, "logAll", "%s: %s", path, origin.note);

@@ -15,7 +15,8 @@
 TIRENV_BEGIN_DECLS
 
 #define TIRENV_NN_FORMAT "tirenv-nn"
-#define TIRENV_NN_FORMAT_VERSION 2  /* 2: ensembles and forms; version 1 files still read */
+#define TIRENV_NN_FORMAT_VERSION 3  /* 3: the checksum covers the contact law; 2: ensembles
+                                     * and forms; versions 1 and 2 still read */
 
 /* What a model file records besides the network. */
 typedef struct {

@@ -87,14 +87,24 @@ typedef struct {
  * keep *tire's values with a note. With TIRENV_TIR_ONLY | TIRENV_TIR_CAM (the caller uses the
  * cam alone), a file whose cam laws are all its own (Q_RA1, Q_RA2 and a vertical law with
  * Q_FZ2 or Q_FZ1) has no ring or springs model derived: its ring and springs keep *tire's
+ * values, said in the note. With TIRENV_TIR_ONLY and without TIRENV_TIR_SPRINGS (the ring or
+ * the cam alone), a file with a contact law of its own (Q_RA1, Q_RA2), whose ring is searched
+ * on its laws alone, has no springs model derived on that ring: its springs keep *tire's
  * values, said in the note. On failure *tire is unchanged. */
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
 
+/* tirenv_tir_read then tirenv_tir_derive on the bytes of one read of path: what a caller
+ * does that may be given a pipe or /dev/stdin, which cannot be read twice. On failure *tire
+ * is unchanged. */
+int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
+                           tirenv_tir_origin *origin, tirenv_diag *diag);
+
 /* tirenv_tir_derive's need for a caller that runs a model of type on a tire file (the one rule
  * the CLI, the FMU and the Python module follow, docs/models.md 14.2): TIRENV_TIR_RING for the
  * ring, TIRENV_TIR_SPRINGS for the springs model, TIRENV_TIR_CAM for the cam, with
- * TIRENV_TIR_ONLY when alone (the caller uses that model of the tire and no other); 0 for the
+ * TIRENV_TIR_ONLY for the ring or the cam alone (the caller uses that model of the tire and no
+ * other); 0 for the
  * rigid disc and the point, which do not deflect, for the network, whose load turns into its
  * contact length by its own file's law (14.3), and for NULL. A contact length given to the
  * rigid disc or the point, or to a network whose file records no law, takes the springs

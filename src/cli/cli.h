@@ -197,10 +197,16 @@ extern tirenv_tir_origin cli_tire_origin;
  * tractor tire, whose FNOMIN is its 0.33 m load for the cam's vertical law). */
 double cli_nominal_load(const tirenv_tire *tire);
 
-/* tirenv_tir_derive(path, tire, need) (need: tirenv_tir_need's bits), printing what was
- * derived on standard error. */
-int cli_tire_derive(const char *path, unsigned need, tirenv_tire *tire,
-                    tirenv_tir_origin *origin);
+/* CLI_EXIT_DATA, printing that path is a pipe (a FIFO, /dev/stdin from a pipe, a socket)
+ * and why a regular file is needed (why: "bench runs itself in child processes that read it
+ * again"); else CLI_EXIT_OK. A command that reads a file twice refuses a pipe before it
+ * opens it, where the second open would wait for a writer that has gone. */
+int cli_refuse_pipe(const char *path, const char *why);
+
+/* tirenv_tir_read_derive(path, tire, need) (need: tirenv_tir_need's bits; one read of the
+ * file), printing what was derived on standard error. */
+int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
+                         tirenv_tir_origin *origin);
 
 /* TIRENV_EINVAL naming nn_path and training.data.contact_law when a network file without a
  * contact law would take the springs model of the tire at tire_path, whose file neither has

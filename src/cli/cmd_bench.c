@@ -734,7 +734,11 @@ int cli_bench_main(int argc, char *argv[])
     if (repeat == 0)
         repeat = quick ? 1 : 5;
     tirenv_tire tire;
-    code = cli_tire(&o, &tire);
+    char buf[1024];
+    code = cli_refuse_pipe(cli_tire_path(&o, buf, sizeof buf),
+                            "bench runs itself in child processes that read it again");
+    if (!code)
+        code = cli_tire(&o, &tire);
     if (code)
         return code;
     tirenv_profile *prof = tirenv_profile_cleat(cleat_L, cleat_H);
@@ -750,7 +754,6 @@ int cli_bench_main(int argc, char *argv[])
     for (size_t k = 0; k < SWEEP_N; ++k)
         x[k] = sweep_from + (double)k * sweep_dx;
 
-    char buf[1024];
     bench_result r[N_CASES];
     memset(r, 0, sizeof r);
     for (size_t i = 0; i < N_CASES && !code && !memory; ++i)

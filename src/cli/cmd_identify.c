@@ -164,11 +164,15 @@ int cli_identify_main(int argc, char *argv[])
             return CLI_EXIT_USAGE;
         }
     o.type = ref;
+    char buf[1024];
+    const char *path = cli_tire_path(&o, buf, sizeof buf);
+    if ((write || write_springs) &&
+        (code = cli_refuse_pipe(path, write ? "--write sets its values in place"
+                                             : "--write-springs sets its values in place")))
+        return code;
     tirenv_tire tire;
     if ((code = cli_tire(&o, &tire)))
         return code;
-    char buf[1024];
-    const char *path = cli_tire_path(&o, buf, sizeof buf);
     /* A ring derived as the file is read is derived with its springs model where the file has
      * neither (docs/models.md 14.2): springs values written into it would change the ring the
      * next read derives, and no longer be identified on it. */

@@ -401,10 +401,28 @@ int cli_sweep_main(int argc, char *argv[])
     if (!code && (tirenv_model_type_flags(s.type) & TIRENV_MODEL_NEEDS_NETWORK)) {
         tirenv_diag d;
         tirenv_diag_clear(&d);
-        const int st = tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
-        if (st)
+        char tire_buf[1024];
+        /* Named in sweep.txt by its bytes, read apart from the network, and checked again by
+         * a resumed run: a pipe would give them once. */
+        code = cli_refuse_pipe(o.nn_path, "sweep reads the network file again to name it "
+                                "by its bytes in sweep.txt");
+        int st = code ? TIRENV_OK : tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
+        /* A file without the law of its tire turns loads and contact lengths into each other
+         * by the tire file's springs model, as envelope's and predict's network does: refused
+         * when the file has none of its own (the default tire's would stand in unsaid). */
+        if (!code && !st && !rec.law.n)
+            st = cli_nn_springs_stand_in(o.nn_path, cli_tire_path(&o, tire_buf,
+                                                                  sizeof tire_buf),
+                                         &cli_tire_origin, &d);
+        if (!code && st)
             code = cli_fail(st, &d);
-        else if (file_fingerprint(o.nn_path, net_id)) {
+        if (!code && !rec.law.n)
+            fprintf(stderr, "tirenv: warning: %s records no relation between load and contact "
+                    "length of its tire (training.data.contact_law; a file written before "
+                    "tirenv recorded it): loads become contact lengths by the springs model of "
+                    "the tire file, not by the tire the network was trained on; train it again "
+                    "to record it\n", o.nn_path);
+        if (!code && file_fingerprint(o.nn_path, net_id)) {
             cli_error("sweep: %s: cannot read", o.nn_path);
             code = CLI_EXIT_DATA;
         }

@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 
@@ -167,12 +168,13 @@ double cli_nominal_load(const tirenv_tire *tire)
     return inside ? 0 : fnomin;
 }
 
+/* One read of the file for both passes: a tire file may be a pipe or /dev/stdin. */
 static int tire_derive(const char *path, unsigned need, tirenv_tire *tire,
                        tirenv_tir_origin *origin)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    const int status = tirenv_tir_derive(path, tire, need, origin, &diag);
+    const int status = tirenv_tir_read_derive(path, tire, need, origin, &diag);
     if (status)
         return cli_fail(status, &diag);
     if (origin->note[0])
@@ -180,10 +182,21 @@ static int tire_derive(const char *path, unsigned need, tirenv_tire *tire,
     return CLI_EXIT_OK;
 }
 
-int cli_tire_derive(const char *path, unsigned need, tirenv_tire *tire,
-                    tirenv_tir_origin *origin)
+int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
+                         tirenv_tir_origin *origin)
 {
     return tire_derive(path, need, tire, origin);
+}
+
+int cli_refuse_pipe(const char *path, const char *why)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || !(S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
+        return CLI_EXIT_OK;  /* a file, a device or nothing: its reader says what is wrong */
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    return cli_fail(tirenv_error(&diag, TIRENV_EIO, path, 0, "", "a pipe, which can be read "
+                                 "only once; %s, expected a regular file", why), &diag);
 }
 
 int cli_tire(const cli_options *o, tirenv_tire *tire)
@@ -193,9 +206,7 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     *tire = tirenv_tire_default();
-    int status = tirenv_tir_read(path, tire, &diag);
-    if (status)
-        return cli_fail(status, &diag);
+    int status;
     /* A --contact-length is the springs model's load for the models that do not deflect
      * (tirenv_tir_need). */
     const int at_chord = o->have_contact_length &&

@@ -55,13 +55,19 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
                                     ? ax->tire_file
                                     : cli_data_path("tires/default.tir", buf, sizeof buf);
         s->tire[axle] = tirenv_tire_default();
-        if ((status = tirenv_tir_read(tire_path, &s->tire[axle], &diag)))
-            return cli_fail(status, &diag);
         unsigned need = 0;
         for (size_t i = 0; i < r->n_models; ++i)
             need |= tirenv_tir_need(r->models[i], 0);
-        if ((status = cli_tire_derive(tire_path, need, &s->tire[axle], &s->origin[axle])))
+        /* Both axles on one tire file: read once, which a pipe needs; said for each axle. */
+        if (axle && strcmp(tire_path, s->tire_path[0]) == 0) {
+            s->tire[1] = s->tire[0];
+            s->origin[1] = s->origin[0];
+            if (s->origin[1].note[0])
+                fprintf(stderr, "tirenv: %s: %s\n", tire_path, s->origin[1].note);
+        } else if ((status = cli_tire_read_derive(tire_path, need, &s->tire[axle],
+                                                  &s->origin[axle]))) {
             return status;
+        }
         snprintf(s->tire_path[axle], sizeof s->tire_path[axle], "%s", tire_path);
         s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
     }

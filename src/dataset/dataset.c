@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "dataset/dataset_impl.h"
 #include "io/io.h"
@@ -276,8 +277,22 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
 
 /* The curve file when there is one (the import is done once, when the data set is built);
  * otherwise the log, imported with the case's own regime and obstacle. */
+int tirenv_dataset__refuse_pipe(const char *path, tirenv_diag *diag)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || !(S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_EIO, path, 0, "", "a pipe, which can be read only once; "
+                        "a data set's files are read more than once (by the command, the "
+                        "data-set reader and each stage of a study), expected a regular file");
+}
+
 static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
 {
+    const int status = tirenv_dataset__refuse_pipe(c->curve_path[0] ? c->curve_path : c->log,
+                                                   diag);
+    if (status)
+        return status;
     if (c->curve_path[0])
         return tirenv_curve_read_csv(c->curve_path, &c->curve, diag);
     tirenv_import_settings s = tirenv_import_default();
@@ -328,8 +343,9 @@ int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_
     const int from_sweep = decl.cases && strcmp(strrchr(decl.file, '/'), "/sweep.txt") == 0;
     if (status == TIRENV_OK) {
         tirenv_csv__reader r;
-        status = tirenv_csv__open(&r, path, diag);
-        if (status == TIRENV_OK)
+        memset(&r, 0, sizeof r);  /* closed whether opened or not */
+        status = tirenv_dataset__refuse_pipe(path, diag);
+        if (status == TIRENV_OK && (status = tirenv_csv__open(&r, path, diag)) == TIRENV_OK)
             status = parse_manifest(&r, out, &decl);
         tirenv_csv__close(&r);
     }

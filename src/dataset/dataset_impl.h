@@ -27,4 +27,12 @@ typedef struct {
 int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *out,
                                    tirenv_diag *diag);
 
+/* TIRENV_EIO naming path when it is a pipe (a FIFO or a socket), else TIRENV_OK (a file, a
+ * device such as /dev/zero, whose reader stops at its cap, or nothing, which the reader
+ * names). A data set's files are
+ * read more than once (source.txt by the command and by tirenv_dataset_read, every file by
+ * each stage of a study), and a pipe has no second read: refused before it is opened, where
+ * the second open would wait for a writer that has gone. */
+int tirenv_dataset__refuse_pipe(const char *path, tirenv_diag *diag);
+
 #endif

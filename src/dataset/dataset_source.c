@@ -119,8 +119,11 @@ int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tire
                             sizeof path - 12);
     if (access(path, F_OK) != 0 && errno == ENOENT)
         return TIRENV_OK;  /* says nothing: measured, or not known */
+    int status = tirenv_dataset__refuse_pipe(path, diag);
+    if (status)
+        return status;
     tirenv_csv__reader r;
-    int status = tirenv_csv__open(&r, path, diag);
+    status = tirenv_csv__open(&r, path, diag);
     unsigned seen = 0;
     int more = 0;
     while (!status && (more = tirenv_csv__next(&r)) > 0)

@@ -37,6 +37,9 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
     const int w = snprintf(path, sizeof path, "%s/sweep.txt", dir);
     if (w < 0 || (size_t)w >= sizeof path)
         return TIRENV_OK;  /* no such file can be there: tirenv_dataset_read names the dir */
+    const int piped = tirenv_dataset__refuse_pipe(path, diag);
+    if (piped)
+        return piped;
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return TIRENV_OK;  /* not a sweep */

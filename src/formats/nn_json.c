@@ -4,8 +4,8 @@
  * numbers against a checksum, and a failure names the file and the field. This file reads and
  * holds the checksum; nn_json_write.c writes. SPDX-License-Identifier: Apache-2.0
  *
- * Layout (version 2):
- *   format "tirenv-nn", version 2, inputs [names], output "h_m", topology [4, 8, 1],
+ * Layout (version 3):
+ *   format "tirenv-nn", version 3, inputs [names], output "h_m", topology [4, 8, 1],
  *   activation {hidden "logistic", output "identity"},
  *   input_form "paper" | "even", even_width a, target "h" | "h/H"            (nn.h),
  *   scaling {input_mean [], input_std [], output_mean, output_std},
@@ -13,11 +13,13 @@
  *   members [{layers [{bias [n_out], weights [[n_out] per input neuron]}]}]  (one per network
  *     of the ensemble, each in tirenv_nn_weights order),
  *   checksum "fnv1a64:<16 hex>" over topology, weights, scaling and ranges, then the member
- *     count, the two forms and the even width,
+ *     count, the two forms and the even width, then the contact law's knots (training.data.
+ *     contact_law: their count, loads and lengths; a count of 0 without one),
  *   training (optional) {trainer, seed, restarts, ensemble, loss, max_epochs, patience,
  *     settings {backprop {}, rprop {}, lm {}}, data {dir, fingerprint, tire_R0_m},
  *     result {restart, members [restarts], epochs, best_epoch, best_time_s, total_epochs,
  *     wall_time_s, stop}, errors_m {train {n, rms, max}, control {}, validation {}}}
+ * Version 2 (still read) is version 3 with a checksum that stops before the contact law.
  * Version 1 (still read) had one network: its "layers" at the top level, no forms, no
  * members (the paper's x_N and h), its checksum without the last three, and no ensemble,
  * loss or result.members in the training record. */
@@ -55,7 +57,8 @@ static uint64_t fnv_doubles(uint64_t h, size_t n, const double v[])
     return h;
 }
 
-uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, int version)
+uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, const tirenv_contact_law *law,
+                                  int version)
 {
     const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
     const size_t n_in = tirenv_nn_n_inputs(nn);
@@ -81,7 +84,15 @@ uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, int version)
     h = fnv_u64(h, tirenv_nn_n_members(nn));
     h = fnv_u64(h, (uint64_t)input);
     h = fnv_u64(h, (uint64_t)target);
-    return fnv_doubles(h, 1, &a);
+    h = fnv_doubles(h, 1, &a);
+    if (version < 3)
+        return h;
+    /* The law turns the load a model is driven at into the network's contact length: a knot
+     * edited by hand would move every curve the network gives, so it is covered too. */
+    const size_t n = law ? law->n : 0;
+    h = fnv_u64(h, n);
+    h = fnv_doubles(h, n, law ? law->load : NULL);
+    return fnv_doubles(h, n, law ? law->l_c : NULL);
 }
 
 void tirenv_nn_json__hash_text(char *buf, size_t n, uint64_t h)
@@ -386,6 +397,61 @@ static int read_layers(const rctx *c, const json_t *layers, const char *prefix,
     return TIRENV_OK;
 }
 
+/* training.data.contact_law of data into *law (law->n = 0 without one) and its source into
+ * source (n bytes). */
+static int read_law(const rctx *c, const json_t *data, tirenv_contact_law *law, char *source,
+                    size_t n_source)
+{
+    law->n = 0;
+    source[0] = '\0';
+    json_t *o = json_object_get(data, "contact_law"), *G;
+    if (!o)
+        return TIRENV_OK;
+    int status;
+    if ((status = member(c, data, "contact_law", "training.data.contact_law", JSON_OBJECT,
+                         &o)) ||
+        (status = get_string(c, o, "source", "training.data.contact_law.source", source,
+                             n_source)) ||
+        (status = member(c, o, "load_N", "training.data.contact_law.load_N", JSON_ARRAY, &G)))
+        return status;
+    const size_t n = json_array_size(G);
+    if (n < 2 || n > TIRENV_CONTACT_LAW_MAX)
+        return bad(c, "training.data.contact_law.load_N", "%zu points; expected 2 to %d", n,
+                   TIRENV_CONTACT_LAW_MAX);
+    if ((status = number_array(c, G, "training.data.contact_law.load_N", n, law->load)) ||
+        (status = get_number_array(c, o, "contact_length_m",
+                                   "training.data.contact_law.contact_length_m", n, law->l_c)))
+        return status;
+    law->n = n;
+    tirenv_diag why;
+    tirenv_diag_clear(&why);
+    if (tirenv_contact_law_check(law, &why))
+        return bad(c, "training.data.contact_law", "%s", why.message);
+    return TIRENV_OK;
+}
+
+/* The file's checksum against the network's numbers (and, from version 3 on, law's knots). */
+static int check_sum(const rctx *c, const json_t *root, int version, const tirenv_nn *nn,
+                     const tirenv_contact_law *law)
+{
+    char sum[64];
+    uint64_t h;
+    int status;
+    if ((status = get_string(c, root, "checksum", "checksum", sum, sizeof sum)))
+        return status;
+    if (hash_parse(sum, &h))
+        return bad(c, "checksum", "'%s'; expected 'fnv1a64:' and 16 lower-case hex digits", sum);
+    const uint64_t got = tirenv_nn_json__checksum(nn, law, version);
+    if (h != got) {
+        char want[32];
+        tirenv_nn_json__hash_text(want, sizeof want, got);
+        return bad(c, "checksum", "the network's numbers%s give %s, the file says %s: the file "
+                   "was altered or corrupted", version < 3 ? "" : " and its contact law "
+                   "(training.data.contact_law)", want, sum);
+    }
+    return TIRENV_OK;
+}
+
 static int read_network(const rctx *c, const json_t *root, int version, tirenv_nn *nn)
 {
     const size_t n_in = tirenv_nn_n_inputs(nn);
@@ -436,19 +502,18 @@ static int read_network(const rctx *c, const json_t *root, int version, tirenv_n
                 return status;
         }
     }
-    char sum[64];
-    uint64_t h;
-    if ((status = get_string(c, root, "checksum", "checksum", sum, sizeof sum)))
+    if (version < 3)
+        return check_sum(c, root, version, nn, NULL);
+    /* From version 3 on the checksum covers the contact law of the training record: read
+     * here so that the checksum is checked before the record, as in older versions (a file
+     * without the record, or whose record is no object, has none: read_training says so). */
+    const json_t *t = json_object_get(root, "training");
+    const json_t *data = json_is_object(t) ? json_object_get(t, "data") : NULL;
+    tirenv_contact_law law = {.n = 0};
+    char source[sizeof ((tirenv_train_record *)0)->law_source];
+    if (json_is_object(data) && (status = read_law(c, data, &law, source, sizeof source)))
         return status;
-    if (hash_parse(sum, &h))
-        return bad(c, "checksum", "'%s'; expected 'fnv1a64:' and 16 lower-case hex digits", sum);
-    if (h != tirenv_nn_json__checksum(nn, version)) {
-        char want[32];
-        tirenv_nn_json__hash_text(want, sizeof want, tirenv_nn_json__checksum(nn, version));
-        return bad(c, "checksum", "the network's numbers give %s, the file says %s: the file "
-                   "was altered or corrupted", want, sum);
-    }
-    return TIRENV_OK;
+    return check_sum(c, root, version, nn, &law);
 }
 
 static int read_error(const rctx *c, const json_t *errs, const char *key,
@@ -569,33 +634,8 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     if (rec->R0 < 0)
         return bad(c, "training.data.tire_R0_m", "%g; expected >= 0 (0: unknown)", rec->R0);
     /* Optional: files written before it have none (the model's user is warned). */
-    rec->law.n = 0;
-    rec->law_source[0] = '\0';
-    json_t *law = json_object_get(data, "contact_law"), *G;
-    if (law) {
-        if ((status = member(c, data, "contact_law", "training.data.contact_law", JSON_OBJECT,
-                             &law)) ||
-            (status = get_string(c, law, "source", "training.data.contact_law.source",
-                                 rec->law_source, sizeof rec->law_source)) ||
-            (status = member(c, law, "load_N", "training.data.contact_law.load_N", JSON_ARRAY,
-                             &G)))
-            return status;
-        const size_t n = json_array_size(G);
-        if (n < 2 || n > TIRENV_CONTACT_LAW_MAX)
-            return bad(c, "training.data.contact_law.load_N", "%zu points; expected 2 to %d",
-                       n, TIRENV_CONTACT_LAW_MAX);
-        if ((status = number_array(c, G, "training.data.contact_law.load_N", n,
-                                   rec->law.load)) ||
-            (status = get_number_array(c, law, "contact_length_m",
-                                       "training.data.contact_law.contact_length_m", n,
-                                       rec->law.l_c)))
-            return status;
-        rec->law.n = n;
-        tirenv_diag law_why;
-        tirenv_diag_clear(&law_why);
-        if (tirenv_contact_law_check(&rec->law, &law_why))
-            return bad(c, "training.data.contact_law", "%s", law_why.message);
-    }
+    if ((status = read_law(c, data, &rec->law, rec->law_source, sizeof rec->law_source)))
+        return status;
 
     if ((status = member(c, t, "result", "training.result", JSON_OBJECT, &res)) ||
         (status = get_count(c, res, "restart", "training.result.restart", big, &r->restart)) ||

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <jansson.h>
 
+#include "tirenv/model.h"
 #include "tirenv/nn.h"
 
 #if JSON_INTEGER_IS_LONG_LONG
@@ -17,9 +18,11 @@
 #define NN_JSON_INT_MAX LONG_MAX
 #endif
 
-/* FNV-1a 64 over the topology, weights, scaling and ranges, and from version 2 on the member
- * count, the two forms and the even width (docs/formats.md section 10). */
-uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, int version);
+/* FNV-1a 64 over the topology, weights, scaling and ranges, from version 2 on the member
+ * count, the two forms and the even width, and from version 3 on law's knot count, loads and
+ * lengths (law NULL: no law, a count of 0) (docs/formats.md section 10). */
+uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, const tirenv_contact_law *law,
+                                  int version);
 
 /* "fnv1a64:<16 hex>" into buf (n bytes). */
 void tirenv_nn_json__hash_text(char *buf, size_t n, uint64_t h);

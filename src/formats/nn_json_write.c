@@ -135,7 +135,7 @@ static json_t *training_json(wctx *c, const tirenv_train_record *rec)
     return t;
 }
 
-static json_t *nn_json(wctx *c, const tirenv_nn *nn)
+static json_t *nn_json(wctx *c, const tirenv_nn *nn, const tirenv_contact_law *law)
 {
     const tirenv_nn_topology *t = tirenv_nn_topology_of(nn);
     const size_t n_in = tirenv_nn_n_inputs(nn);
@@ -213,7 +213,8 @@ static json_t *nn_json(wctx *c, const tirenv_nn *nn)
         }
     }
     char sum[32];
-    tirenv_nn_json__hash_text(sum, sizeof sum, tirenv_nn_json__checksum(nn, TIRENV_NN_FORMAT_VERSION));
+    tirenv_nn_json__hash_text(sum, sizeof sum,
+                              tirenv_nn_json__checksum(nn, law, TIRENV_NN_FORMAT_VERSION));
     put(c, root, "checksum", json_string(sum));
     return root;
 }
@@ -271,7 +272,8 @@ int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_tra
     if (status)
         return status;
     wctx c = {0};
-    json_t *root = nn_json(&c, nn);
+    /* The checksum covers the law the training record writes, and none without a record. */
+    json_t *root = nn_json(&c, nn, rec ? &rec->law : NULL);
     if (root && rec)
         put(&c, root, "training", training_json(&c, rec));
     if (c.failed) {

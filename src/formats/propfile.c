@@ -454,17 +454,16 @@ static int pf_check_any(const pf_schema *s, const char *path, size_t lines, cons
                         "the empty file", first ? first->section : "", first ? first->key : "");
 }
 
-int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tirenv_diag *diag)
+/* The lines of fp (named path) over *obj; each line read is written to kept too, if not NULL,
+ * so that a second pass needs no second read of a file that may be a pipe. */
+static int pf_read_stream(const pf_schema *s, const char *path, FILE *fp, void *obj,
+                          FILE *kept, tirenv_diag *diag)
 {
-    FILE *fp = fopen(path, "r");
-    if (!fp)
-        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", strerror(errno));
     void *copy = malloc(s->size);            /* *obj changes only once everything has passed */
     size_t *seen = calloc(s->n_keys, sizeof *seen); /* line where each key was set */
     if (!copy || !seen) {
         free(copy);
         free(seen);
-        fclose(fp);
         return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
     }
     memcpy(copy, obj, s->size);
@@ -494,6 +493,10 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
             break;
         }
         c.at.line++;
+        if (kept && fwrite(buf, 1, len, kept) != len) {
+            status = tirenv_error(diag, TIRENV_ENOMEM, path, c.at.line, "", "out of memory");
+            break;
+        }
         char *line = buf;
         /* A NUL ends the C string: the rest of the line would be dropped without a word. */
         const char *nul = memchr(buf, '\0', len);
@@ -516,7 +519,6 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
         status = tirenv_error(diag, TIRENV_EIO, path, c.at.line + 1, "", "cannot read: %s",
                               strerror(errno));
     free(buf);
-    fclose(fp);
     if (status == TIRENV_OK)
         status = pf_check_any(s, path, c.at.line, seen, diag);
     if (status == TIRENV_OK) {
@@ -528,6 +530,51 @@ int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tiren
         memcpy(obj, copy, s->size);
     free(copy);
     free(seen);
+    return status;
+}
+
+int tirenv_propfile__read(const pf_schema *s, const char *path, void *obj, tirenv_diag *diag)
+{
+    return tirenv_propfile__read_kept(s, path, obj, NULL, NULL, diag);
+}
+
+int tirenv_propfile__read_kept(const pf_schema *s, const char *path, void *obj, char **text,
+                               size_t *len, tirenv_diag *diag)
+{
+    FILE *fp = fopen(path, "r");
+    if (!fp)
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open: %s", strerror(errno));
+    FILE *kept = NULL;
+    if (text) {
+        *text = NULL;
+        *len = 0;
+        if (!(kept = open_memstream(text, len))) {
+            fclose(fp);
+            return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+        }
+    }
+    int status = pf_read_stream(s, path, fp, obj, kept, diag);
+    fclose(fp);
+    if (kept && fclose(kept) != 0 && status == TIRENV_OK)
+        status = tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "out of memory");
+    if (status && text) {
+        free(*text);
+        *text = NULL;
+        *len = 0;
+    }
+    return status;
+}
+
+/* fmemopen refuses a buffer of no bytes, and a file read before may have been empty. */
+int tirenv_propfile__read_text(const pf_schema *s, const char *path, const char *text,
+                               size_t len, void *obj, tirenv_diag *diag)
+{
+    FILE *fp = len ? fmemopen((void *)text, len, "r") : fopen("/dev/null", "r");
+    if (!fp)
+        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "", "cannot read the text kept in "
+                            "memory: %s", strerror(errno));
+    const int status = pf_read_stream(s, path, fp, obj, NULL, diag);
+    fclose(fp);
     return status;
 }
 

@@ -114,6 +114,14 @@ typedef struct {
  * name file, line, column (when it helps) and key. */
 int tirenv_propfile__read(const tirenv_propfile__schema *s, const char *path, void *obj,
                           tirenv_diag *diag);
+/* tirenv_propfile__read that also returns, on success, the bytes read (*text, *len bytes,
+ * malloc'd, the caller frees; NULL on failure): the file is read once, and a second schema
+ * reads the same bytes by tirenv_propfile__read_text, which a pipe or /dev/stdin needs. */
+int tirenv_propfile__read_kept(const tirenv_propfile__schema *s, const char *path, void *obj,
+                               char **text, size_t *len, tirenv_diag *diag);
+/* tirenv_propfile__read on len bytes of text read from path before (errors name path). */
+int tirenv_propfile__read_text(const tirenv_propfile__schema *s, const char *path,
+                               const char *text, size_t len, void *obj, tirenv_diag *diag);
 
 /* Applies "KEY=VALUE" or "SECTION.KEY=VALUE" (not [UNITS] keys), parsed as in a file, then
  * checks; *obj changes only if both pass. A key in several sections needs its section.

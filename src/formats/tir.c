@@ -3,6 +3,7 @@
  * file says which keys a tire has and where they go.
  * SPDX-License-Identifier: Apache-2.0 */
 #include "formats/propfile.h"
+#include "formats/tir_impl.h"
 #include "tirenv/tir.h"
 #include "tirenv/tirenv.h"
 
@@ -196,6 +197,12 @@ static const tirenv_propfile__schema tir_schema = {
  * file with PFZ1 and no NOMPRES is refused (tire check), not given the tractor's 1.2 bar. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
+    return tirenv_tir__read_kept(path, tire, NULL, NULL, diag);
+}
+
+int tirenv_tir__read_kept(const char *path, tirenv_tire *tire, char **text, size_t *len,
+                          tirenv_diag *diag)
+{
     const double width = tire->width;
     const tirenv_cam_params cam = tire->cam;
     const double p_nom = tire->ring.p_nom;
@@ -205,7 +212,7 @@ int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
     tire->cam.q_fz2 = 0;
     tire->cam.q_fz1 = 0;
     tire->cam.pfz1 = 0;
-    const int status = tirenv_propfile__read(&tir_schema, path, tire, diag);
+    const int status = tirenv_propfile__read_kept(&tir_schema, path, tire, text, len, diag);
     if (status) {
         tire->width = width;
         tire->ring.p_nom = p_nom;

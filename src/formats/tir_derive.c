@@ -7,6 +7,7 @@
  * model derived on that ring has a sidewall in series (derive_springs_sidewall). */
 #include "formats/flat_inverse.h"
 #include "formats/propfile.h"
+#include "formats/tir_impl.h"
 #include "tirenv/cam.h"
 #include "tirenv/tir.h"
 #include "tirenv/model.h"
@@ -18,6 +19,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* What the derivation reads. The enveloping keys are there only to learn whether the file
@@ -1258,14 +1260,16 @@ static int derived(tirenv_tir_origin *o, const char *law)
     return TIRENV_OK;
 }
 
-static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir_origin *origin,
-                  tirenv_diag *diag)
+/* text (len bytes) is the file as tirenv_tir_read read it, or NULL: read path again. */
+static int derive(const char *path, const char *text, size_t len, tirenv_tire *tire,
+                  unsigned need, tirenv_tir_origin *origin, tirenv_diag *diag)
 {
     memset(origin, 0, sizeof *origin);
     origin->cam_ring_deflection = origin->cam_ring_contact_length = NAN;
     mf_keys k;
     memset(&k, 0, sizeof k);
-    int status = tirenv_propfile__read(&mf_schema, path, &k, diag);
+    int status = text ? tirenv_propfile__read_text(&mf_schema, path, text, len, &k, diag)
+                      : tirenv_propfile__read(&mf_schema, path, &k, diag);
     if (status)
         return status;
     /* MF-Tyre's rule: a file without INFLPRES is at its NOMPRES (PFZ1's factor 1), not at the
@@ -1355,21 +1359,31 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
     char no_law[sizeof diag->message] = "";
     /* A file with a contact law of its own gets a ring searched on it (derive_on_laws). */
     const int on_laws = (lack & TIRENV_TIR_RING) && (origin->own & TIRENV_TIR_CAM);
+    /* There the ring is searched on the laws alone, and the springs model then identified on
+     * it: a caller that uses neither the springs model nor anything of it (need with
+     * TIRENV_TIR_ONLY and without TIRENV_TIR_SPRINGS: the ring or the cam alone) has it not
+     * derived, the same ring without the springs model's sidewall identification, which can
+     * neither cost that command its time nor fail it. Elsewhere the ring's pretension is
+     * chosen with the springs model (derive_ring_springs): both are derived as before. */
+    const unsigned unused = on_laws && (need & TIRENV_TIR_ONLY) &&
+                                    !(need & TIRENV_TIR_SPRINGS) ? lack & TIRENV_TIR_SPRINGS
+                                                                 : 0u;
+    const unsigned make = lack & ~unused;
     laws_result lr;
     const double zero = 0;
     tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);  /* the ring's ground */
     if (!flat)
         return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "ring",
                             "no memory for the flat ground the ring is derived on");
-    status = on_laws ? derive_laws_models(&t, &k, lack, &law, flat, &tr, &lr, &have_ring, diag)
-                     : derive_models(&t, &k, lack, &law, flat, &tr, &have_ring, diag);
+    status = on_laws ? derive_laws_models(&t, &k, make, &law, flat, &tr, &lr, &have_ring, diag)
+                     : derive_models(&t, &k, make, &law, flat, &tr, &have_ring, diag);
     if (status && law.derive_q_fz2 && strcmp(diag->field, "Q_FZ2") == 0) {
         snprintf(no_law, sizeof no_law, "%s", diag->message);
         law.derive_q_fz2 = 0;
         t = *tire;
-        status = on_laws ? derive_laws_models(&t, &k, lack, &law, flat, &tr, &lr, &have_ring,
+        status = on_laws ? derive_laws_models(&t, &k, make, &law, flat, &tr, &lr, &have_ring,
                                               diag)
-                         : derive_models(&t, &k, lack, &law, flat, &tr, &have_ring, diag);
+                         : derive_models(&t, &k, make, &law, flat, &tr, &have_ring, diag);
     }
     tirenv_profile_free(flat);
     if (status) {
@@ -1377,8 +1391,8 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
             snprintf(diag->file, sizeof diag->file, "%s", path);
         return status;
     }
-    origin->derived = lack;
-    if (lack == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING))
+    origin->derived = make;
+    if (make == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING))
         origin->pretension_ratio = tr.tau;
     if (law.derive_q_fz2) {
         rho_n = origin->rho_nominal = tr.rho_n;
@@ -1405,11 +1419,14 @@ static int derive(const char *path, tirenv_tire *tire, unsigned need, tirenv_tir
     if ((lack & TIRENV_TIR_RING) && !(k.given & (MF_INFLPRES | MF_NOMPRES)))
         note_add(origin, ", its air at %.4g kPa, the default tire's INFLPRES (the file gives "
                  "no INFLPRES or NOMPRES)", t.ring.p / 1e3);
-    if (lack & TIRENV_TIR_SPRINGS)
+    if (make & TIRENV_TIR_SPRINGS)
         note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
                  "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t.springs.c_r,
                  t.springs.c_b);
-    if ((lack & TIRENV_TIR_SPRINGS) && t.springs.k_s > 0)
+    else if (unused)
+        note_add(origin, "%sno [ENVELOPING_SPRINGS]: the springs model not derived (not used "
+                 "here) and not this tire's", origin->note[0] ? "; " : "");
+    if ((make & TIRENV_TIR_SPRINGS) && t.springs.k_s > 0)
         note_add(origin, ", SIDEWALL_STIFFNESS = %.4g, SIDEWALL_PRELOAD = %.4g (a sidewall in "
                  "series, identified with them on the ring)", t.springs.k_s, t.springs.F_s0);
     if (law.derive_q_fz2)
@@ -1433,9 +1450,26 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag)
 {
     const tirenv_tire read = *tire;
-    const int status = derive(path, tire, need, origin, diag);
+    const int status = derive(path, NULL, 0, tire, need, origin, diag);
     if (status)
         *tire = read;
+    return status;
+}
+
+/* Both passes on the bytes of one read: a pipe, /dev/stdin or a process substitution has no
+ * second read to give (the second open of a FIFO waits for a writer that has gone). */
+int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
+                           tirenv_tir_origin *origin, tirenv_diag *diag)
+{
+    tirenv_tire t = *tire;
+    char *text = NULL;
+    size_t len = 0;
+    int status = tirenv_tir__read_kept(path, &t, &text, &len, diag);
+    if (!status)
+        status = derive(path, text, len, &t, need, origin, diag);
+    free(text);
+    if (!status)
+        *tire = t;
     return status;
 }
 
@@ -1444,7 +1478,7 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
 unsigned tirenv_tir_need(const tirenv_model_type *type, int alone)
 {
     if (type == tirenv_model_ring)
-        return TIRENV_TIR_RING;
+        return TIRENV_TIR_RING | (alone ? TIRENV_TIR_ONLY : 0u);
     if (type == tirenv_model_springs)
         return TIRENV_TIR_SPRINGS;
     if (type == tirenv_model_cam)

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 static const char begin_mark[] = "! tirenv identify: begin";
 static const char end_mark[] = "! tirenv identify: end";
@@ -130,6 +131,11 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
     enum { MAX = 64 };
     if (n > MAX)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "more than %d values", MAX);
+    /* Replaced in place, so a file: a pipe would be read once and not be written back. */
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "not a regular file (a pipe or "
+                            "device); its values are set in place, expected a regular file");
     int status;
     char *text = slurp(path, &status, diag);
     if (!text)

@@ -150,6 +150,13 @@ run "$bin" sweep --model rigid --tire nof.tir --lengths 0.1 --heights 0.05 --con
     -o rsw
 check "... and in a sweep over contact lengths (its cases' loads): exit 2, FNOMIN, nothing written" \
     '[ $rc -eq 2 ] && grep -q "FNOMIN" err && [ ! -e rsw ] && [ ! -e rsw.partial ]'
+for regimes in "--loads 18000" "--contact-lengths 0.3"; do
+    run "$bin" sweep --model nn --nn "$data/nn-v1.json" --extrapolate --tire nof.tir \
+        --lengths 0.1 --heights 0.05 $regimes -o nsw
+    check "... a sweep of an older network file at $regimes (the springs model's law): exit 2, nothing written" \
+        '[ $rc -eq 2 ] && grep -q "nn-v1.json: training.data.contact_law: .* nof.tir has no springs" err &&
+         [ ! -e nsw ] && [ ! -e nsw.partial ]'
+done
 # In the ride (inputs at each axle's static load), the network's input to the rear axle over
 # the cleat against the ring's, the tire it was trained on (the data set's tire.tir): the RMS
 # over the samples where either is above 0.1 mm within the network's own validation RMS. The

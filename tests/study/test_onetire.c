@@ -404,9 +404,10 @@ static void test_derived_from_mftyre(void **state)
  * envelope --model cam do): a file whose cam laws are all its own (the 430/50R38: Q_RA1,
  * Q_RA2, Q_FZ2 = 0) gets the same cam, bit for bit, with no ring or springs model derived
  * (they keep the values passed in, said in the note); a file whose Q_FZ2 is derived on the
- * ring (tir_mftyre.tir) gets the whole derivation, the same tire and note as without the
- * flag. The files without a contact law of their own derive theirs on the ring, so the flag
- * changes nothing there either (the 185/80R14, the cheapest). */
+ * ring (tir_mftyre.tir) gets the same ring and cam as without the flag, its ring searched on
+ * its own contact law, and no springs model identified on that ring (alone_keys). The files
+ * without a contact law of their own derive theirs on the ring, so the flag changes nothing
+ * there either (the 185/80R14, the cheapest). */
 /* The derived keys of two tires bit for bit (whole structs would compare their padding too):
  * springs (what), ring, cam. */
 static void same_keys(const tirenv_tire *a, const tirenv_tire *b, int what)
@@ -432,6 +433,28 @@ static void same_keys(const tirenv_tire *a, const tirenv_tire *b, int what)
     if (what & TIRENV_TIR_CAM) {
         assert_memory_equal(ca, cb, sizeof ca);
         assert_int_equal(a->cam.given, b->cam.given);
+    }
+}
+
+/* A derivation for the ring or the cam alone (t, o) against the whole one (full, o_full):
+ * the same ring and cam; on tir_mftyre.tir (a contact law of its own) the springs model as
+ * read, not derived, and said; on the others everything the same. */
+static void alone_keys(size_t f, const tirenv_tire *t, const tirenv_tir_origin *o,
+                       const tirenv_tire *read, const tirenv_tire *full,
+                       const tirenv_tir_origin *o_full)
+{
+    same_keys(t, full, TIRENV_TIR_RING | TIRENV_TIR_CAM);
+    if (f == N_MF - 1) {
+        assert_int_equal(o->own & TIRENV_TIR_CAM, TIRENV_TIR_CAM);
+        assert_int_equal(o->derived, o_full->derived & ~TIRENV_TIR_SPRINGS);
+        assert_int_equal(o_full->derived & TIRENV_TIR_SPRINGS, TIRENV_TIR_SPRINGS);
+        same_keys(t, read, TIRENV_TIR_SPRINGS);
+        assert_non_null(strstr(o->note, "no [ENVELOPING_SPRINGS]: the springs model not "
+                                        "derived (not used here)"));
+    } else {
+        same_keys(t, full, TIRENV_TIR_SPRINGS);
+        assert_int_equal(o->derived, o_full->derived);
+        assert_string_equal(o->note, o_full->note);
     }
 }
 
@@ -462,10 +485,35 @@ static void test_cam_alone(void **state)
                                            "derived"));
             assert_true(isnan(o.cam_ring_deflection));
         } else {
-            same_keys(&t, &full, TIRENV_TIR_SPRINGS | TIRENV_TIR_RING | TIRENV_TIR_CAM);
-            assert_int_equal(o.derived, o_full.derived);
-            assert_string_equal(o.note, o_full.note);
+            alone_keys(f, &t, &o, &read, &full, &o_full);
         }
+    }
+}
+
+/* need TIRENV_TIR_ONLY | TIRENV_TIR_RING (the ring alone, as tirenv flat and envelope
+ * --model ring and the FMU use it): the same ring and cam as the whole derivation, bit for
+ * bit; on a file with a contact law of its own (tir_mftyre.tir), whose ring is searched on its
+ * laws alone, no springs model derived on it (kept as passed in, said in the note), elsewhere
+ * (the 185/80R14, whose ring's pretension is chosen with its springs model) the whole
+ * derivation. */
+static void test_ring_alone(void **state)
+{
+    (void)state;
+    const size_t files[] = {2, N_MF - 1};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        const size_t f = files[i];
+        if ((int)f < (int)MF_FIRST || f >= MF_END)
+            continue;  /* the sanitizer build: as test_derived_pairs */
+        tirenv_tire full, t = tirenv_tire_default();
+        tirenv_tir_origin o_full, o;
+        derived(f, &full, &o_full);
+        tirenv_diag d;
+        assert_int_equal(tirenv_tir_read(mf_files[f], &t, &d), TIRENV_OK);
+        const tirenv_tire read = t;
+        assert_int_equal(tirenv_tir_derive(mf_files[f], &t, TIRENV_TIR_ONLY | TIRENV_TIR_RING,
+                                           &o, &d), TIRENV_OK);
+        print_message("%s, the ring alone: %s\n", mf_files[f], o.note);
+        alone_keys(f, &t, &o, &read, &full, &o_full);
     }
 }
 
@@ -695,6 +743,7 @@ int main(void)
         cmocka_unit_test(test_205_pairs),
         cmocka_unit_test(test_derived_from_mftyre),
         cmocka_unit_test(test_cam_alone),
+        cmocka_unit_test(test_ring_alone),
         cmocka_unit_test(test_pressure_dependence),
         cmocka_unit_test(test_own_q_fz1),
         cmocka_unit_test(test_inflpres_is_nompres),

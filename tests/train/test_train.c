@@ -573,7 +573,7 @@ static json_t *at(json_t *root, const char *a, const char *b)
     return b ? json_object_get(v, b) : v;
 }
 
-static void m_version(json_t *r) { json_object_set_new(r, "version", json_integer(3)); }
+static void m_version(json_t *r) { json_object_set_new(r, "version", json_integer(4)); }
 static void m_format(json_t *r) { json_object_set_new(r, "format", json_string("fann")); }
 static void m_topology(json_t *r) { json_array_set_new(at(r, "topology", NULL), 1, json_integer(9)); }
 static void m_std(json_t *r) { json_array_set_new(at(r, "scaling", "input_std"), 2, json_real(0)); }
@@ -632,7 +632,7 @@ static void test_file_refusals(void **state)
         const char *field;
         const char *message;   /* a piece of it */
     } cases[] = {
-        {m_version, "version", "this build reads versions 1 to 2"},
+        {m_version, "version", "this build reads versions 1 to 3"},
         {m_format, "format", "not a tirenv network model file"},
         {m_topology, "members[0].layers[0].bias", "8 numbers; expected 9"},
         {m_std, "scaling.input_std", "element 2 is 0; expected > 0"},
@@ -882,7 +882,7 @@ static void test_target_h_over_H(void **state)
 
 /* A model file of version 1 (one network, the paper's forms), written by tirenv before
  * ensembles: it still reads, as what it was, and gives the outputs the version that wrote it
- * gave (printed there with %a, so exact); written again it becomes version 2 and reads back
+ * gave (printed there with %a, so exact); written again it becomes version 3 and reads back
  * to the same bits. */
 static void test_file_version1(void **state)
 {
@@ -917,7 +917,7 @@ static void test_file_version1(void **state)
     assert_int_equal(tirenv_nn_read_json(path, &again, &rec2, &diag), TIRENV_OK);
     size_t n;
     char *text = slurp(path, &n);
-    assert_non_null(strstr(text, "\"version\": 2"));
+    assert_non_null(strstr(text, "\"version\": 3"));
     free(text);
     assert_memory_equal(tirenv_nn_weights(again), tirenv_nn_weights(nn),
                         tirenv_nn_n_weights(nn) * sizeof(double));
@@ -926,6 +926,69 @@ static void test_file_version1(void **state)
     remove(path);
     tirenv_nn_free(nn);
     tirenv_nn_free(again);
+}
+
+/* The first decimal of the first contact-law load in text (after "load_N") changed in place,
+ * by 0.1 N or less: the knots stay ascending, a law that reads. */
+static void edit_knot(char *text)
+{
+    char *p = strstr(text, "\"load_N\"");
+    assert_non_null(p);
+    p = strchr(p, '.');
+    assert_non_null(p);
+    ++p;
+    *p = *p == '9' ? '8' : (char)(*p + 1);
+}
+
+/* A version 2 file (written by tirenv before version 3) with a contact law: it still reads,
+ * its checksum as before, so a knot edited in it goes unseen, as it always did. Written again
+ * it is version 3, whose checksum covers the knots: the same edit is refused, naming the file
+ * and the checksum, and the law reads back the same bits. */
+static void test_file_version2_law(void **state)
+{
+    (void)state;
+    tirenv_nn *nn = NULL, *again = NULL;
+    tirenv_train_record rec, rec2;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    size_t n;
+    char *text = slurp(TIRENV_TEST_DATA "/nn-v2-law.json", &n);
+    assert_non_null(strstr(text, "\"version\": 2"));
+    char v2[64], v3[64];
+    snprintf(v2, sizeof v2, "test_train_v2_%ld.json", (long)getpid());
+    snprintf(v3, sizeof v3, "test_train_v3_%ld.json", (long)getpid());
+    edit_knot(text);
+    spit(v2, text, n);
+    free(text);
+    assert_int_equal(tirenv_nn_read_json(TIRENV_TEST_DATA "/nn-v2-law.json", &nn, &rec, &diag),
+                     TIRENV_OK);
+    assert_true(rec.law.n >= 2);
+    assert_int_equal(tirenv_nn_read_json(v2, &again, &rec2, &diag), TIRENV_OK);
+    assert_true(rec2.law.load[0] != rec.law.load[0]);
+    tirenv_nn_free(again);
+    again = NULL;
+
+    assert_int_equal(tirenv_nn_write_json(v3, nn, &rec, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_nn_read_json(v3, &again, &rec2, &diag), TIRENV_OK);
+    assert_int_equal(rec2.law.n, rec.law.n);
+    assert_memory_equal(rec2.law.load, rec.law.load, rec.law.n * sizeof(double));
+    assert_memory_equal(rec2.law.l_c, rec.law.l_c, rec.law.n * sizeof(double));
+    tirenv_nn_free(again);
+    again = NULL;
+    text = slurp(v3, &n);
+    assert_non_null(strstr(text, "\"version\": 3"));
+    edit_knot(text);
+    spit(v3, text, n);
+    free(text);
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_nn_read_json(v3, &again, &rec2, &diag), TIRENV_EPARSE);
+    assert_null(again);
+    assert_string_equal(diag.file, v3);
+    assert_string_equal(diag.field, "checksum");
+    assert_non_null(strstr(diag.message, "training.data.contact_law"));
+    remove(v2);
+    remove(v3);
+    tirenv_nn_free(nn);
 }
 
 int main(void)
@@ -944,6 +1007,7 @@ int main(void)
         cmocka_unit_test(test_loss_curves),
         cmocka_unit_test(test_target_h_over_H),
         cmocka_unit_test(test_file_version1),
+        cmocka_unit_test(test_file_version2_law),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
