@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include "model/springs_impl.h"
 #include "tirenv/model.h"
 
 enum { MAX_LOADS = 64 };
@@ -17,8 +18,8 @@ enum { MAX_LOADS = 64 };
  * contact length, the length of ground the tread touches (section 1.3), depends on their
  * ratio alone; the solve runs at c_r = 1e6 N/m per rad, inside the plausible range
  * (docs/formats.md section 2), and divides the load by it. */
-static int unit_load(const tirenv_springs_params *par, double beta, size_t n, const double d[],
-                     double f[], double l[], tirenv_diag *diag)
+int tirenv_springs__unit_load(const tirenv_springs_params *par, double beta, size_t n,
+                              const double d[], double f[], double l[], tirenv_diag *diag)
 {
     tirenv_tire t = tirenv_tire_default();
     const double c_unit = 1e6;
@@ -54,7 +55,7 @@ static int residual(const tirenv_springs_params *par, double log_beta, size_t n,
                     double *ss, tirenv_diag *diag)
 {
     double f[MAX_LOADS], l[MAX_LOADS], r[MAX_LOADS];
-    const int status = unit_load(par, exp(log_beta), n, d, f, l, diag);
+    const int status = tirenv_springs__unit_load(par, exp(log_beta), n, d, f, l, diag);
     if (status)
         return status;
     double mean = 0;
@@ -74,8 +75,8 @@ static int residual(const tirenv_springs_params *par, double log_beta, size_t n,
  * 1e-8 of its width, 60 to 1e-12); the minimiser, the middle of the last bracket (and f
  * there into *f_min unless NULL). */
 enum { GOLDEN = 40 };
-typedef double (*golden_fn)(double x, void *ctx);
-static double golden(golden_fn f, void *ctx, double a, double b, int steps, double *f_min)
+double tirenv_springs__golden(tirenv_springs__golden_fn f, void *ctx, double a, double b,
+                              int steps, double *f_min)
 {
     const double g = 0.5 * (sqrt(5.0) - 1);
     double x1 = b - g * (b - a), x2 = a + g * (b - a), s1 = f(x1, ctx), s2 = f(x2, ctx);
@@ -132,7 +133,8 @@ int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double l
                                 "is no flat-ground state of a tire of radius %g m", i + 1,
                                 load[i], deflection[i], contact_length[i], par->R0);
     ratio_ctx ctx = {par, n, load, deflection, contact_length, TIRENV_OK, diag};
-    const double log_beta = golden(ss_of_ratio, &ctx, log(1e-6), log(10.0), 60, NULL);
+    const double log_beta =
+        tirenv_springs__golden(ss_of_ratio, &ctx, log(1e-6), log(10.0), 60, NULL);
     double c_r, ss;
     int status = ctx.status;
     if (!status)
@@ -164,7 +166,7 @@ static int table_of(const tirenv_springs_params *par, double beta, double d_lo, 
     d_hi = fmin(d_hi, 0.9 * par->R0);
     for (size_t k = 0; k < TABLE; k++)
         d[k] = d_lo * pow(d_hi / d_lo, (double)k / (TABLE - 1));
-    const int status = unit_load(par, beta, TABLE, d, f, l, diag);
+    const int status = tirenv_springs__unit_load(par, beta, TABLE, d, f, l, diag);
     if (status)
         return status;
     tb->n = 0;
@@ -239,7 +241,7 @@ static double ss_preload(double F_s0, void *p)
     x->F_s0 = F_s0;
     double ss;
     const double c_hi = 2 * x->d[x->n - 1] / (x->G[x->n - 1] - F_s0);
-    golden(ss_compliance, x, 0, c_hi, GOLDEN, &ss);
+    tirenv_springs__golden(ss_compliance, x, 0, c_hi, GOLDEN, &ss);
     return ss;
 }
 
@@ -259,7 +261,7 @@ static double ss_log_c_r(double log_c_r, void *p)
         x->ss_l += pow8(r);
     }
     double ss_d;
-    golden(ss_preload, x, 0, x->G[x->n - 1], GOLDEN, &ss_d);
+    tirenv_springs__golden(ss_preload, x, 0, x->G[x->n - 1], GOLDEN, &ss_d);
     return ss_d + x->ss_l;
 }
 
@@ -290,7 +292,7 @@ static double ss_log_beta(double log_beta, void *p)
     if (!(lo < hi))
         return 1e6;
     double ss;
-    golden(ss_log_c_r, x, lo, hi, GOLDEN, &ss);
+    tirenv_springs__golden(ss_log_c_r, x, lo, hi, GOLDEN, &ss);
     x->tb = NULL;
     return ss;
 }
@@ -314,7 +316,8 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
                                 deflection[i], contact_length[i], par->R0);
     side_ctx x = {.n = n, .G = load, .d = deflection, .l = contact_length};
     beta_ctx b = {par, &x, 0, diag, 0.3 * deflection[0], 1.5 * deflection[n - 1]};
-    const double log_beta = golden(ss_log_beta, &b, log(1e-4), log(1.0), GOLDEN, NULL);
+    const double log_beta =
+        tirenv_springs__golden(ss_log_beta, &b, log(1e-4), log(1.0), GOLDEN, NULL);
     if (b.status)
         return b.status;
     /* The minimiser's own values, from its table once more. */
@@ -324,12 +327,12 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
         return status;
     x.tb = &tb;
     const double lo = log(load[n - 1]) - tb.log_f[tb.n - 1], hi = log(load[0]) - tb.log_f[0];
-    const double log_c_r = golden(ss_log_c_r, &x, lo, hi, GOLDEN, NULL);
+    const double log_c_r = tirenv_springs__golden(ss_log_c_r, &x, lo, hi, GOLDEN, NULL);
     ss_log_c_r(log_c_r, &x); /* the elements' states at that c_r */
-    const double F_s0 = golden(ss_preload, &x, 0, load[n - 1], GOLDEN, NULL);
+    const double F_s0 = tirenv_springs__golden(ss_preload, &x, 0, load[n - 1], GOLDEN, NULL);
     x.F_s0 = F_s0;
-    const double c = golden(ss_compliance, &x, 0, 2 * deflection[n - 1] / (load[n - 1] - F_s0),
-                            GOLDEN, NULL);
+    const double c = tirenv_springs__golden(
+        ss_compliance, &x, 0, 2 * deflection[n - 1] / (load[n - 1] - F_s0), GOLDEN, NULL);
     par->c_r = exp(log_c_r);
     par->c_b = par->c_r * exp(log_beta);
     par->k_s = 1 / c;

@@ -505,4 +505,18 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                               const double d[], const double dw[], double w[], double pe[],
                               double obstacle[]);
 
+/* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
+
+/* The springs model par with c_b = beta*c_r and no sidewall at the n deflections d[] (m):
+ * its load per unit c_r f[] (N per N/m/rad) and contact length l[] (m), one force
+ * evaluation each. The model's errors. */
+int tirenv_springs__unit_load(const tirenv_springs_params *par, double beta, size_t n,
+                              const double d[], double f[], double l[], tirenv_diag *diag);
+
+/* Golden section of f over [a, b] in steps steps: the minimiser (f there into *f_min unless
+ * NULL). f must be unimodal on [a, b] for the minimum to be found. */
+typedef double (*tirenv_springs__golden_fn)(double x, void *ctx);
+double tirenv_springs__golden(tirenv_springs__golden_fn f, void *ctx, double a, double b,
+                              int steps, double *f_min);
+
 #endif
