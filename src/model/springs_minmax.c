@@ -17,8 +17,9 @@ enum {
     MAX_LOADS = 64,
     MAX_REFS = 4,
     TABLE = 1024, /* the elements' flat ground per beta: deflections 0.26 % apart (205/60R15) */
-    SCAN = 25,    /* log beta scanned before its golden section: the objective has kinks */
-    GOLDEN = 40   /* steps of each golden section: its bracket to 1e-8 of its width */
+    SCAN = 97,    /* log beta scanned before its golden section, points 10 % apart */
+    SCAN_GOLDEN = 20, /* steps of the scan's inner golden sections: to 7e-5 of the bracket */
+    GOLDEN = 40   /* steps of each golden section after it: its bracket to 1e-8 of its width */
 };
 
 /* The elements' flat ground at one beta per unit c_r at TABLE deflections spaced
@@ -79,6 +80,7 @@ typedef struct {
     const double *d, *l;          /* reference j's deflection and contact length (m) at [j*n + i] */
     int sidewall;                 /* whether k_s and F_s0 are identified */
     double d_max;                 /* the largest reference deflection, m */
+    int steps;                    /* of the golden sections over c_r, F_s0 and 1/k_s */
     const unit_table *tb;
     double d_el[MAX_LOADS];       /* the elements' deflection at the trial c_r, m */
     double F_s0;                  /* trial preload, N */
@@ -133,7 +135,7 @@ static double ss16_preload(double F_s0, void *p)
     minmax_ctx *x = p;
     x->F_s0 = F_s0;
     double ss;
-    tirenv_springs__golden(ss16_compliance, x, 0, c_max(x), GOLDEN, &ss);
+    tirenv_springs__golden(ss16_compliance, x, 0, c_max(x), x->steps, &ss);
     return ss;
 }
 
@@ -145,8 +147,8 @@ static double best_sidewall(minmax_ctx *x)
         x->F_s0 = 0;
         return 0;
     }
-    x->F_s0 = tirenv_springs__golden(ss16_preload, x, 0, x->G[x->n - 1], GOLDEN, NULL);
-    return tirenv_springs__golden(ss16_compliance, x, 0, c_max(x), GOLDEN, NULL);
+    x->F_s0 = tirenv_springs__golden(ss16_preload, x, 0, x->G[x->n - 1], x->steps, NULL);
+    return tirenv_springs__golden(ss16_compliance, x, 0, c_max(x), x->steps, NULL);
 }
 
 /* For log c_r: the elements' states at the loads, their contact lengths' largest difference
@@ -201,7 +203,7 @@ static double worst_log_beta(double log_beta, void *p)
         return INFINITY;
     b->x->tb = b->tb;
     double worst;
-    tirenv_springs__golden(worst_log_c_r, b->x, lo, hi, GOLDEN, &worst);
+    tirenv_springs__golden(worst_log_c_r, b->x, lo, hi, b->x->steps, &worst);
     b->x->tb = NULL;
     return worst;
 }
@@ -216,6 +218,7 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
     const double a = log(1e-4), step = (log(1.0) - a) / (SCAN - 1);
     size_t k_best = 0;
     double best = INFINITY;
+    x->steps = SCAN_GOLDEN;
     for (size_t k = 0; k < SCAN; k++) {
         const double worst = worst_log_beta(a + step * (double)k, b);
         if (b->status)
@@ -227,6 +230,7 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
                             "no springs model carries the loads %g to %g N within the "
                             "deflections %g to %g m", load[0], load[n - 1], b->d_lo, b->d_hi);
+    x->steps = GOLDEN;
     const double log_beta = tirenv_springs__golden(
         worst_log_beta, b, a + step * ((double)k_best - 1), a + step * ((double)k_best + 1),
         GOLDEN, NULL);
