@@ -219,13 +219,13 @@ static int identify_several(const tirenv_tire *tire, const char *path, const ref
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_tire id;
-    static tirenv_flat_target tg[MAX_REFS * MAX_LOADS];
+    tirenv_flat_target tg[MAX_REFS * MAX_LOADS];
     int status = tirenv_identify_flat_on(tire, m, refs->t, n, loads->v, &id, tg, &diag);
     if (status) {
         char why[sizeof diag.message];
         memcpy(why, diag.message, sizeof why);
-        snprintf(diag.message, sizeof diag.message, "identified on the %s model%s at %zu loads "
-                 "%.6g to %.6g N: %.400s", on, m > 1 ? "s" : "", n, loads->v[0],
+        snprintf(diag.message, sizeof diag.message, "identified on the %.40s model%s at %zu "
+                 "loads %.6g to %.6g N: %.360s", on, m > 1 ? "s" : "", n, loads->v[0],
                  loads->v[n - 1], why);
         return cli_fail(status, &diag);
     }
@@ -244,7 +244,7 @@ static int identify_several(const tirenv_tire *tire, const char *path, const ref
         id.cam = tire->cam; /* the file's own laws, kept and tabled */
     /* The models' states: the references' (tg), then the springs model's and the cam's. */
     enum { SPRINGS = MAX_REFS, CAM };
-    static tirenv_flat f[MAX_REFS + 2][MAX_LOADS];
+    tirenv_flat f[MAX_REFS + 2][MAX_LOADS];
     const char *name[MAX_REFS + 2];
     size_t cols[MAX_REFS + 2], n_cols = 0;
     for (size_t j = 0; j < m; j++) {
