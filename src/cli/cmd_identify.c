@@ -407,12 +407,17 @@ int cli_identify_main(int argc, char *argv[])
     }
     /* A --set of a key the file does not get would leave it another tire than the one its
      * identified values and note describe. */
+    /* --write with the cam a reference writes the springs values alone, as --write-springs. */
+    int cam_ref = 0;
+    for (size_t j = 0; j < refs.m; j++)
+        cam_ref |= refs.t[j] == tirenv_model_cam;
+    const int writes_cam = write && !cam_ref;
     for (size_t i = 0; (write || write_springs) && i < o.n_sets; i++)
-        if (!written(o.sets[i], write)) {
+        if (!written(o.sets[i], writes_cam)) {
             cli_error("--set %s with %s: the file would keep its own value of that key, not the "
                       "one identified on; expected --set only of the keys written (%s), or set "
                       "it in the file first", o.sets[i], write ? "--write" : "--write-springs",
-                      write ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
+                      writes_cam ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
                               "SIDEWALL_PRELOAD, VERTICAL_STIFFNESS, Q_FZ1, Q_FZ2, Q_RA1, Q_RA2"
                             : "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
                               "SIDEWALL_PRELOAD");
@@ -426,9 +431,9 @@ int cli_identify_main(int argc, char *argv[])
     const char *path = cli_tire_path(&o, buf, sizeof buf);
     /* A ring derived as the file is read is derived with its springs model where the file has
      * neither (docs/models.md 14.2): springs values written into it would change the ring the
-     * next read derives, and no longer be identified on it. */
-    if ((write || write_springs) && ref == tirenv_model_ring &&
-        (cli_tire_origin.derived & TIRENV_TIR_RING)) {
+     * next read derives, and no longer be identified on it (nor on a cam whose laws are derived
+     * on that ring: --reference cam). */
+    if ((write || write_springs) && (cli_tire_origin.derived & TIRENV_TIR_RING)) {
         cli_error("%s %s: its ring is derived from its MF-Tyre keys as it is read (docs/models.md "
                   "section 14.2), and writing the springs values would change the ring derived "
                   "next; expected a file with an [ENVELOPING_RING] of its own (the derived "

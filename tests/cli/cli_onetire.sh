@@ -77,6 +77,10 @@ for ref in ring,springs ring,ring; do
     check "identify --reference $ref: exit 1, quoted, the file unchanged" \
         '[ $rc -eq 1 ] && grep -q "got .$ref.\$" err && cmp -s r.tir "$repo/data/tires/205-60R15-mfswift.tir"'
 done
+run "$bin" identify --tire r.tir --reference ring,cam --set Q_RA1=0.7 --write
+check "identify --reference ring,cam --write --set Q_RA1: exit 1 (the cam, a reference, is not written), unchanged" \
+    '[ $rc -eq 1 ] && grep -q -- "--set Q_RA1=0.7 with --write" err &&
+     cmp -s r.tir "$repo/data/tires/205-60R15-mfswift.tir"'
 run "$bin" identify --tire r.tir --reference ring,cam --loads 2000,6000 --write
 check "identify --reference ring,cam with two loads and a sidewall: exit 2, three needed, unchanged" \
     '[ $rc -eq 2 ] && grep -q "needs 3 to 64 loads, got 2" err &&
@@ -84,7 +88,7 @@ check "identify --reference ring,cam with two loads and a sidewall: exit 2, thre
 # ... on an MF-Tyre file whose ring is derived as it is read (with its springs model): refused,
 # the file unchanged (written springs values would change the ring the next read derives).
 cp "$data/samples/tir/mf_185_80R14.tir" m.tir
-for w in --write --write-springs; do
+for w in --write --write-springs "--reference cam --write-springs" "--reference cam,ring --write"; do
     run "$bin" identify --tire m.tir $w
     check "identify $w on an MF-Tyre file without an [ENVELOPING_RING]: exit 1, said, unchanged" \
         '[ $rc -eq 1 ] && grep -q "its ring is derived from its MF-Tyre keys" err &&
