@@ -31,9 +31,12 @@ deflection), so each shape (c_b/c_r, w_1, beta) is tabled once over the deflecti
 F_s0, k_s are searched on the table. The objective is the largest relative difference of the
 hub deflection and the contact length from the cam's and the ring's (`tirenv flat --model cam`,
 `--model ring`) at 9 loads from 0.5 to 1.5 FNOMIN: min-max by Nelder and Mead's simplex
-(restarted) on the L^16 norm, then on the largest itself. The linear law (c_b/c_r scanned,
-then golden sections) is searched first and its optimum re-run by `tirenv flat --set`; the
-bilinear law's simplex (log c_b/c_r, log w_1, logit beta) starts from the best 3 of 18 seeds.
+(restarted) on the L^16 norm, then on the largest itself. The linear law's optimum comes first,
+from `tirenv identify --reference cam,ring --loads ...` (the same min-max in C, docs/models.md
+section 14.1, to the four digits it writes; --linear numpy: this script's own search, c_b/c_r
+scanned, then golden sections, the search the 205/60R15's shipped values came from), and is
+re-run by `tirenv flat --set`; the bilinear law's simplex (log c_b/c_r, log w_1, logit beta)
+starts from the best 3 of 18 seeds.
 
 Printed: the check (beta = 1 with the file's keys against tirenv), each optimum with its
 differences at every load (+ where the springs model's is larger) and its hub tangent, the
@@ -62,6 +65,26 @@ def tirenv_flat(tirenv, tire, model, load, sets=()):
     r = subprocess.run(cmd, capture_output=True, text=True, check=True)
     row = list(csv.DictReader(io.StringIO(r.stdout)))[-1]
     return float(row["deflection_m"]), float(row["contact_length_m"])
+
+
+def tirenv_identify(tirenv, tire, names, loads, sidewall):
+    """c_r, c_b, F_s0, k_s of `tirenv identify --reference NAMES --loads ...`: the springs model
+    identified on those models together, min-max, to the four digits it writes."""
+    cmd = [tirenv, "identify", "--tire", tire, "--reference", ",".join(names),
+           "--loads", ",".join(f"{G:.10g}" for G in loads)]
+    if sidewall == "none":
+        cmd += ["--set", "SIDEWALL_STIFFNESS=0", "--set", "SIDEWALL_PRELOAD=0"]
+    elif not tir_keys(tire).get("SIDEWALL_STIFFNESS", 0.0) > 0:
+        cmd += ["--set", "SIDEWALL_STIFFNESS=5e5"]  # a start value: asks for a sidewall
+    r = subprocess.run(cmd, capture_output=True, text=True, check=True)
+    got = {}
+    for line in r.stdout.splitlines():
+        words = line.split()
+        if len(words) > 1 and words[0] in ("RADIAL_STIFFNESS", "INTERRADIAL_STIFFNESS",
+                                           "SIDEWALL_PRELOAD", "SIDEWALL_STIFFNESS"):
+            got[words[0]] = float(words[1])
+    return (got["RADIAL_STIFFNESS"], got["INTERRADIAL_STIFFNESS"],
+            got.get("SIDEWALL_PRELOAD", 0.0), got.get("SIDEWALL_STIFFNESS", 0.0))
 
 
 def tir_keys(tire):
@@ -314,11 +337,16 @@ def main():
                     help="K_ii of the contact length's ends: the branch's tangent or k_r + 2 k_ir")
     ap.add_argument("--targets", choices=("cam,ring", "cam"), default="cam,ring",
                     help="the models whose deflection and contact length are matched")
+    ap.add_argument("--linear", choices=("tirenv", "numpy"), default="tirenv",
+                    help="the linear law's min-max: tirenv identify --reference (its four "
+                         "digits; not with --sidewall linear) or this script's own search")
     ap.add_argument("--check-loads", type=int, default=41,
                     help="loads from 0.5 to 1.5 FNOMIN at which the optima are checked")
     ap.add_argument("--element-angle", type=float, default=None,
                     help="ELEMENT_ANGLE dphi, rad (default: the file's, else pi/360)")
     args = ap.parse_args()
+    if args.sidewall == "linear":
+        args.linear = "numpy"  # tirenv identify's sidewall has its preload
 
     keys = tir_keys(args.tire)
     R0, FNOMIN = keys["UNLOADED_RADIUS"], keys["FNOMIN"]
@@ -356,27 +384,35 @@ def main():
 
     hub0 = [pack((c_r, F_s0, k_s)), pack((c_r, 0.0, 4e5)), pack((0.7 * c_r, 4000.0, 1e6))]
 
-    # Linear law: the shape is c_b/c_r alone; a scan, then golden sections on log(c_b/c_r).
-    def linear(rho, start):
-        return study.fit_hub(study.tabulate(rho, 1.0, 1.0), start)
+    if args.linear == "tirenv":
+        # The linear law's min-max is `tirenv identify --reference` (docs/models.md 14.1), in
+        # C, to the four digits it writes: this script's own search, below, is --linear numpy.
+        c_r1, c_b1, F1, k1 = tirenv_identify(args.tirenv, args.tire, names, loads, args.sidewall)
+        hub = (c_r1, F1, k1)
+        best = (c_b1 / c_r1, hub,
+                float(np.abs(study.diffs(study.tabulate(c_b1 / c_r1, 1.0, 1.0), *hub)).max()))
+    else:
+        # Linear law: the shape is c_b/c_r alone; a scan, then golden sections on log(c_b/c_r).
+        def linear(rho, start):
+            return study.fit_hub(study.tabulate(rho, 1.0, 1.0), start)
 
-    best = None
-    for rho in np.geomspace(1e-4, 0.3, 25):
-        hub, v = linear(rho, hub0)
-        if best is None or v < best[2]:
-            best = (rho, hub, v)
-    lo, hi = best[0] / 1.4, best[0] * 1.4
-    for _ in range(12):
-        m1, m2 = lo * (hi / lo) ** 0.382, lo * (hi / lo) ** 0.618
-        start = [hub0[0], pack(best[1])]
-        (h1, v1), (h2, v2) = linear(m1, start), linear(m2, start)
-        for rho, hub, v in ((m1, h1, v1), (m2, h2, v2)):
-            if v < best[2]:
+        best = None
+        for rho in np.geomspace(1e-4, 0.3, 25):
+            hub, v = linear(rho, hub0)
+            if best is None or v < best[2]:
                 best = (rho, hub, v)
-        if v1 < v2:
-            hi = m2
-        else:
-            lo = m1
+        lo, hi = best[0] / 1.4, best[0] * 1.4
+        for _ in range(12):
+            m1, m2 = lo * (hi / lo) ** 0.382, lo * (hi / lo) ** 0.618
+            start = [hub0[0], pack(best[1])]
+            (h1, v1), (h2, v2) = linear(m1, start), linear(m2, start)
+            for rho, hub, v in ((m1, h1, v1), (m2, h2, v2)):
+                if v < best[2]:
+                    best = (rho, hub, v)
+            if v1 < v2:
+                hi = m2
+            else:
+                lo = m1
     rho, hub, v = best
     print(f"\nlinear law: c_b/c_r {rho:.4g} rad^2, c_r {hub[0]:.4g}, c_b {rho * hub[0]:.4g},"
           f" F_s0 {hub[1]:.0f} N, k_s {hub[2]:.4g} N/m")

@@ -75,6 +75,19 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
                                      const double deflection[],
                                      const double contact_length[], tirenv_diag *diag);
 
+/* The same on m references together (1 to 4; a tire's ring and cam, docs/models.md section
+ * 14.1), min-max: c_r, c_b and, where par has a sidewall (k_s > 0; else none, k_s and F_s0
+ * set to 0), k_s and F_s0 that make the largest relative difference |x/x_ref - 1| of the
+ * deflection and of the contact length from every reference at every load the least (the
+ * sidewall, which the largest need not fix, the one with the least L^16 norm of the
+ * deflection's). deflection[] and contact_length[] (m) hold m*n values, reference j's at
+ * [j*n, j*n + n); the n loads (2, with a sidewall 3, to 64; N) and each reference's
+ * deflections ascending.
+ * TIRENV_EINVAL for bad targets; the model's errors otherwise. */
+int tirenv_springs_identify_minmax(tirenv_springs_params *par, size_t n, const double load[],
+                                   size_t m, const double deflection[],
+                                   const double contact_length[], tirenv_diag *diag);
+
 /* The tip LCP on its own: K w = p, w >= d, p >= 0, p.(w - d) = 0, with K the tridiagonal
  * stiffness of n elements (k_r N/m on the diagonal, k_ir N/m between neighbours, ends free).
  * work holds 4*n doubles. Returns TIRENV_ENOCONV if the active set does not settle in

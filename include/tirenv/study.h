@@ -284,6 +284,17 @@ int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *refer
                          const double loads[], tirenv_tire *out, tirenv_flat_target target[],
                          tirenv_diag *diag);
 
+/* The same on m reference models refs[] (1 to 4, none the springs model) together: with one,
+ * tirenv_identify_flat; with more, the springs model (and its sidewall where *tire has one)
+ * by min-max, the largest relative difference of deflection and contact length from every
+ * reference at every load the least (tirenv_springs_identify_minmax). A cam among refs is
+ * *tire's as given, not identified; otherwise the cam is identified on refs[0]. target[]
+ * (m*n entries, may be NULL) receives reference j's states at [j*n, j*n + n). */
+int tirenv_identify_flat_on(const tirenv_tire *tire, size_t m,
+                            const tirenv_model_type *const refs[], size_t n,
+                            const double loads[], tirenv_tire *out,
+                            tirenv_flat_target target[], tirenv_diag *diag);
+
 /* The load-to-contact-length relation of the tire a data set's curves came from, for the
  * network trained on them (docs/models.md section 14.3), as TIRENV_CONTACT_LAW_MAX knots: the
  * cases' own (load, contact length) pairs and, around them, loads spaced geometrically from

@@ -12,7 +12,7 @@
 #include "cli/cli.h"
 #include "tirenv/study.h"
 
-enum { MAX_LOADS = 32 };
+enum { MAX_LOADS = 64, MAX_REFS = 2 };
 
 /* Contact lengths (m) at which the reference gives the loads of a tire file without FNOMIN:
  * the span of the paper's working regimes, 0.28 to 0.38 m. A file with FNOMIN gives its own,
@@ -47,9 +47,47 @@ static int parse_loads(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
+/* --reference: one model, or several separated by commas, each with a contact length of its
+ * own and not the springs model (the ring and the cam), none twice. */
+typedef struct {
+    const tirenv_model_type *t[MAX_REFS];
+    const char *name[MAX_REFS];
+    size_t m;
+} ref_list;
+
+static int parse_references(ref_list *r, const char *arg)
+{
+    char buf[64];
+    r->m = 0;
+    if (strlen(arg) >= sizeof buf)
+        goto bad;
+    memcpy(buf, arg, strlen(arg) + 1);
+    for (char *p = buf, *next; p; p = next) {
+        if ((next = strchr(p, ',')))
+            *next++ = '\0';
+        const tirenv_model_type *t;
+        if (cli_model_type(p, &t))
+            return CLI_EXIT_USAGE; /* said, with the models' names */
+        if (!(tirenv_model_type_flags(t) & TIRENV_MODEL_CONTACT_LENGTH) ||
+            t == tirenv_model_springs || r->m == MAX_REFS)
+            goto bad;
+        for (size_t j = 0; j < r->m; j++)
+            if (r->t[j] == t)
+                goto bad;
+        r->t[r->m] = t;
+        r->name[r->m++] = tirenv_model_type_name(t);
+    }
+    return CLI_EXIT_OK;
+bad:
+    cli_error("--reference: expected one or more of the models with a contact length of their "
+              "own other than the springs model, identified (ring, cam), separated by commas "
+              "and none twice, got '%s'", arg);
+    return CLI_EXIT_USAGE;
+}
+
 static void usage(FILE *fp)
 {
-    fputs("usage: tirenv identify [--reference MODEL] [--loads G1,G2,...] [--write | "
+    fputs("usage: tirenv identify [--reference MODEL[,MODEL]] [--loads G1,G2,...] [--write | "
           "--write-springs]\n"
           "                       [--tire FILE] [--set KEY=VALUE]...\n"
           "\n"
@@ -67,6 +105,13 @@ static void usage(FILE *fp)
           "\n"
           "options:\n"
           "  --reference MODEL    the model the others are identified on (default ring)\n"
+          "  --reference ring,cam the springs model identified on both together: the\n"
+          "                       largest relative difference of its deflection and contact\n"
+          "                       length from either at any load the least (min-max), the\n"
+          "                       values rounded to four significant digits; the cam, a\n"
+          "                       reference, is the file's as read, not identified (so too\n"
+          "                       with --reference cam). The table then shows each model\n"
+          "                       against each reference\n"
           "  --loads G1,G2,...    the loads, N (at least two)\n"
           "  --write              set the identified values in the tire file in place, keeping its\n"
           "                       comments, with a '!' note on how they were identified\n"
@@ -119,6 +164,215 @@ static int written(const char *assignment, int all)
     return 0;
 }
 
+/* s with its spaces and newlines turned into line breaks so that no line is longer than
+ * width bytes where a word allows. */
+static void wrap(char *s, size_t width)
+{
+    for (char *p = s; *p; p++)
+        if (*p == '\n')
+            *p = ' ';
+    char *line = s, *space = NULL;
+    for (char *p = s; *p; p++) {
+        if (*p == ' ' && p[1] != '%') /* "4.7 %" kept on one line */
+            space = p;
+        if ((size_t)(p - line) >= width && space) {
+            *space = '\n';
+            line = space + 1;
+            space = NULL;
+        }
+    }
+}
+
+/* The largest relative differences of a's deflection and contact length from b's over n
+ * states. */
+static void largest(size_t n, const tirenv_flat a[], const tirenv_flat b[], double *e_d,
+                    double *e_l)
+{
+    *e_d = *e_l = 0;
+    for (size_t i = 0; i < n; i++) {
+        *e_d = fmax(*e_d, rel(a[i].deflection, b[i].deflection));
+        *e_l = fmax(*e_l, rel(a[i].contact_length, b[i].contact_length));
+    }
+}
+
+/* --reference with several models, or the cam: the springs model identified on them together
+ * (min-max, tirenv_identify_flat_on), the cam as read where it is a reference; every model
+ * tabled, each against each reference (the models: the references in their order, then the
+ * springs model, then the cam where it is not a reference). */
+static int identify_several(const tirenv_tire *tire, const char *path, const ref_list *refs,
+                            const load_list *loads, int write, int write_springs)
+{
+    const size_t n = loads->n, m = refs->m;
+    int cam_ref = 0;
+    for (size_t j = 0; j < m; j++)
+        cam_ref |= refs->t[j] == tirenv_model_cam;
+    /* "ring and cam", "the ring's and the cam's", "ring,cam" */
+    char on[128] = "", whose[128] = "", list[128] = "";
+    for (size_t j = 0; j < m; j++) {
+        const char *sep = j == 0 ? "" : j + 1 == m ? " and " : ", ";
+        snprintf(on + strlen(on), sizeof on - strlen(on), "%s%s", sep, refs->name[j]);
+        snprintf(whose + strlen(whose), sizeof whose - strlen(whose), "%sthe %s's", sep,
+                 refs->name[j]);
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", j ? "," : "",
+                 refs->name[j]);
+    }
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_tire id;
+    tirenv_flat_target tg[MAX_REFS * MAX_LOADS];
+    int status = tirenv_identify_flat_on(tire, m, refs->t, n, loads->v, &id, tg, &diag);
+    if (status) {
+        char why[sizeof diag.message];
+        memcpy(why, diag.message, sizeof why);
+        snprintf(diag.message, sizeof diag.message, "identified on the %.40s model%s at %zu "
+                 "loads %.6g to %.6g N: %.360s", on, m > 1 ? "s" : "", n, loads->v[0],
+                 loads->v[n - 1], why);
+        return cli_fail(status, &diag);
+    }
+    /* Four significant digits, as written: a min-max optimum sits where several differences
+     * are equal, and three digits would move it (docs/models.md section 14.1). */
+    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.springs.k_s,
+                           &id.springs.F_s0, &id.cam.c_z, &id.cam.q_fz2, &id.cam.q_ra1,
+                           &id.cam.q_ra2};
+    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+        char t[32];
+        snprintf(t, sizeof t, "%.4g", *ids[k]);
+        *ids[k] = strtod(t, NULL);
+    }
+    const int cam_kept = cam_ref || write_springs;
+    if (cam_kept)
+        id.cam = tire->cam; /* the file's own laws, kept and tabled */
+    /* The models' states: the references' (tg), then the springs model's and the cam's. */
+    enum { SPRINGS = MAX_REFS, CAM };
+    tirenv_flat f[MAX_REFS + 2][MAX_LOADS];
+    const char *name[MAX_REFS + 2];
+    size_t cols[MAX_REFS + 2], n_cols = 0;
+    for (size_t j = 0; j < m; j++) {
+        for (size_t i = 0; i < n; i++)
+            f[j][i] = (tirenv_flat){.load = tg[j * n + i].load,
+                                    .deflection = tg[j * n + i].deflection,
+                                    .contact_length = tg[j * n + i].contact_length};
+        name[j] = refs->name[j];
+        cols[n_cols++] = j;
+    }
+    int code = states(tirenv_model_springs, &id, n, loads->v, f[SPRINGS]);
+    name[SPRINGS] = "springs";
+    cols[n_cols++] = SPRINGS;
+    if (!code && !cam_ref) {
+        code = states(tirenv_model_cam, &id, n, loads->v, f[CAM]);
+        name[CAM] = "cam";
+        cols[n_cols++] = CAM;
+    }
+    if (code)
+        return code;
+
+    printf("identified on the %s model%s of %s at %zu loads %.6g to %.6g N\n", on,
+           m > 1 ? "s together (min-max)" : "", path, n, loads->v[0], loads->v[n - 1]);
+    printf("  RADIAL_STIFFNESS       %.6g N/m/rad (was %.6g)\n", id.springs.c_r,
+           tire->springs.c_r);
+    printf("  INTERRADIAL_STIFFNESS  %.6g N*rad/m (was %.6g)\n", id.springs.c_b,
+           tire->springs.c_b);
+    const int sidewall = id.springs.k_s > 0;
+    if (sidewall) {
+        printf("  SIDEWALL_STIFFNESS     %.6g N/m (was %.6g)\n", id.springs.k_s,
+               tire->springs.k_s);
+        printf("  SIDEWALL_PRELOAD       %.6g N (was %.6g)\n", id.springs.F_s0,
+               tire->springs.F_s0);
+    }
+    if (cam_kept) {
+        printf("  the cam's laws kept as read: VERTICAL_STIFFNESS %.6g N/m, ", tire->cam.c_z);
+        if (tire->cam.fnomin > 0)
+            printf("Q_FZ2 %.6g (FNOMIN %.6g N), ", tire->cam.q_fz2, tire->cam.fnomin);
+        printf("Q_RA1 %.6g, Q_RA2 %.6g\n", tire->cam.q_ra1, tire->cam.q_ra2);
+    } else {
+        printf("  VERTICAL_STIFFNESS     %.6g N/m (was %.6g), identified on the %s\n",
+               id.cam.c_z, tire->cam.c_z, refs->name[0]);
+        if (id.cam.fnomin > 0)
+            printf("  Q_FZ2                  %.6g (was %.6g; FNOMIN %.6g N)\n", id.cam.q_fz2,
+                   tire->cam.q_fz2, id.cam.fnomin);
+        printf("  Q_RA1                  %.6g (was %.6g)\n", id.cam.q_ra1, tire->cam.q_ra1);
+        printf("  Q_RA2                  %.6g (was %.6g)\n", id.cam.q_ra2, tire->cam.q_ra2);
+    }
+    printf("%10s  %-*s  %s\n", "", (int)(9 * n_cols - 1), "deflection, mm",
+           "contact length, m");
+    printf("%10s ", "load_N");
+    for (size_t k = 0; k < 2 * n_cols; k++)
+        printf("%s%8s", k == n_cols ? "  " : " ", name[cols[k % n_cols]]);
+    printf("\n");
+    for (size_t i = 0; i < n; i++) {
+        printf("%10.1f ", loads->v[i]);
+        for (size_t k = 0; k < n_cols; k++)
+            printf(" %8.2f", f[cols[k]][i].deflection * 1e3);
+        printf(" ");
+        for (size_t k = 0; k < n_cols; k++)
+            printf(" %8.4f", f[cols[k]][i].contact_length);
+        printf("\n");
+    }
+    /* The identified models against each reference, then each reference against those before
+     * it: "springs against ring deflection 4.7 %, contact length 3.9 %; ...", a line each. */
+    char pairs[1024] = "";
+    for (size_t c = 0; c < n_cols; c++) {
+        const size_t k = cols[(c + m) % n_cols];
+        for (size_t j = 0; j < m && j < k; j++) {
+            double e_d, e_l;
+            largest(n, f[k], f[j], &e_d, &e_l);
+            const size_t used = strlen(pairs);
+            snprintf(pairs + used, sizeof pairs - used, "%s%s against %s deflection %.1f %%, "
+                     "contact length %.1f %%", used ? ";\n" : "", name[k], name[j], 100 * e_d,
+                     100 * e_l);
+        }
+    }
+    printf("largest differences:\n%s\n", pairs);
+    if (!write && !write_springs)
+        return CLI_EXIT_OK;
+
+    /* The note: the file's '!' block (tirenv_tir_update), one paragraph wrapped. */
+    const int cam_derived =
+        (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
+    char note[2048];
+    snprintf(note, sizeof note,
+             "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS%s%s below are identified by `tirenv "
+             "identify --reference %s %s` (docs/models.md section 14.1) on %s flat ground%s at "
+             "%zu loads %.4g to %.4g kN; %s%s. Largest differences over these loads: %s.",
+             sidewall ? ", SIDEWALL_STIFFNESS and SIDEWALL_PRELOAD (the sidewall in series, "
+                        "section 4.9)" : "",
+             cam_kept ? "" : (id.cam.fnomin > 0 ? ", VERTICAL_STIFFNESS, Q_FZ2, Q_RA1, Q_RA2"
+                                                : ", VERTICAL_STIFFNESS, Q_RA1, Q_RA2"),
+             list, write ? "--write" : "--write-springs", whose,
+             m > 1 ? " together (min-max)" : "", n, loads->v[0] / 1e3, loads->v[n - 1] / 1e3,
+             !cam_kept ? "the cam's laws are identified on the "
+             : cam_derived ? "the cam's laws are derived from its MF-Tyre keys as it is read "
+                             "(section 14.2)"
+                           : "the cam's laws are the file's own",
+             !cam_kept ? refs->name[0] : "", pairs);
+    wrap(note, 92);
+    tirenv_tir_value values[9];
+    size_t n_values = 0;
+    values[n_values++] = (tirenv_tir_value){"ENVELOPING_SPRINGS", "RADIAL_STIFFNESS",
+                                            id.springs.c_r};
+    values[n_values++] = (tirenv_tir_value){"ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS",
+                                            id.springs.c_b};
+    if (sidewall) {
+        values[n_values++] = (tirenv_tir_value){"ENVELOPING_SPRINGS", "SIDEWALL_STIFFNESS",
+                                                id.springs.k_s};
+        values[n_values++] = (tirenv_tir_value){"ENVELOPING_SPRINGS", "SIDEWALL_PRELOAD",
+                                                id.springs.F_s0};
+    }
+    if (!cam_kept) {
+        values[n_values++] = (tirenv_tir_value){"VERTICAL", "VERTICAL_STIFFNESS", id.cam.c_z};
+        values[n_values++] = (tirenv_tir_value){"CONTACT_PATCH", "Q_RA1", id.cam.q_ra1};
+        values[n_values++] = (tirenv_tir_value){"CONTACT_PATCH", "Q_RA2", id.cam.q_ra2};
+        if (id.cam.fnomin > 0)
+            values[n_values++] = (tirenv_tir_value){"VERTICAL", "Q_FZ2", id.cam.q_fz2};
+        if (tire->cam.q_fz1 != 0)
+            values[n_values++] = (tirenv_tir_value){"VERTICAL", "Q_FZ1", 0};
+    }
+    if ((status = tirenv_tir_update(path, n_values, values, note, &diag)))
+        return cli_fail(status, &diag);
+    fprintf(stderr, "tirenv identify: wrote the %zu values into %s\n", n_values, path);
+    return CLI_EXIT_OK;
+}
+
 int cli_identify_main(int argc, char *argv[])
 {
     const char *ref_name = "ring";
@@ -137,27 +391,33 @@ int cli_identify_main(int argc, char *argv[])
     int code = cli_parse(&p, argc, argv, &o);
     if (code != CLI_GO_ON)
         return code;
-    const tirenv_model_type *ref;
-    if ((code = cli_model_type(ref_name, &ref)))
+    ref_list refs;
+    if ((code = parse_references(&refs, ref_name)))
         return code;
-    if (!(tirenv_model_type_flags(ref) & TIRENV_MODEL_CONTACT_LENGTH) ||
-        ref == tirenv_model_springs || ref == tirenv_model_cam) {
-        cli_error("--reference: expected a model with a contact length of its own other than "
-                  "the two identified (ring), got '%s'", ref_name);
-        return CLI_EXIT_USAGE;
-    }
+    const tirenv_model_type *ref = refs.t[0];
+    ref_name = refs.name[0];
+    /* One reference other than the cam: the cam identified on it and tabled beside it. */
+    const int several = refs.m > 1 || ref == tirenv_model_cam;
+    for (size_t j = 1; j < refs.m; j++)
+        if (refs.t[j] == tirenv_model_ring)
+            ref = refs.t[j]; /* the file's ring: derived with the springs model, and checked */
     if (write && write_springs) {
         cli_error("--write and --write-springs: expected one of them");
         return CLI_EXIT_USAGE;
     }
     /* A --set of a key the file does not get would leave it another tire than the one its
      * identified values and note describe. */
+    /* --write with the cam a reference writes the springs values alone, as --write-springs. */
+    int cam_ref = 0;
+    for (size_t j = 0; j < refs.m; j++)
+        cam_ref |= refs.t[j] == tirenv_model_cam;
+    const int writes_cam = write && !cam_ref;
     for (size_t i = 0; (write || write_springs) && i < o.n_sets; i++)
-        if (!written(o.sets[i], write)) {
+        if (!written(o.sets[i], writes_cam)) {
             cli_error("--set %s with %s: the file would keep its own value of that key, not the "
                       "one identified on; expected --set only of the keys written (%s), or set "
                       "it in the file first", o.sets[i], write ? "--write" : "--write-springs",
-                      write ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
+                      writes_cam ? "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
                               "SIDEWALL_PRELOAD, VERTICAL_STIFFNESS, Q_FZ1, Q_FZ2, Q_RA1, Q_RA2"
                             : "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS, SIDEWALL_STIFFNESS, "
                               "SIDEWALL_PRELOAD");
@@ -175,9 +435,9 @@ int cli_identify_main(int argc, char *argv[])
         return code;
     /* A ring derived as the file is read is derived with its springs model where the file has
      * neither (docs/models.md 14.2): springs values written into it would change the ring the
-     * next read derives, and no longer be identified on it. */
-    if ((write || write_springs) && ref == tirenv_model_ring &&
-        (cli_tire_origin.derived & TIRENV_TIR_RING)) {
+     * next read derives, and no longer be identified on it (nor on a cam whose laws are derived
+     * on that ring: --reference cam). */
+    if ((write || write_springs) && (cli_tire_origin.derived & TIRENV_TIR_RING)) {
         cli_error("%s %s: its ring is derived from its MF-Tyre keys as it is read (docs/models.md "
                   "section 14.2), and writing the springs values would change the ring derived "
                   "next; expected a file with an [ENVELOPING_RING] of its own (the derived "
@@ -208,6 +468,8 @@ int cli_identify_main(int argc, char *argv[])
         loads.n = n;
     }
     const size_t n = loads.n;
+    if (several)
+        return identify_several(&tire, path, &refs, &loads, write, write_springs);
     tirenv_tire id;
     tirenv_flat_target tg[MAX_LOADS];
     int status = tirenv_identify_flat(&tire, ref, n, loads.v, &id, tg, &diag);

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stddef.h>
 #include "core/golden.h"
+#include "model/springs_impl.h"
 #include "tirenv/model.h"
 
 enum { MAX_LOADS = 64 };
@@ -18,8 +19,8 @@ enum { MAX_LOADS = 64 };
  * contact length, the length of ground the tread touches (section 1.3), depends on their
  * ratio alone; the solve runs at c_r = 1e6 N/m per rad, inside the plausible range
  * (docs/formats.md section 2), and divides the load by it. */
-static int unit_load(const tirenv_springs_params *par, double beta, size_t n, const double d[],
-                     double f[], double l[], tirenv_diag *diag)
+int tirenv_springs__unit_load(const tirenv_springs_params *par, double beta, size_t n,
+                              const double d[], double f[], double l[], tirenv_diag *diag)
 {
     tirenv_tire t = tirenv_tire_default();
     const double c_unit = 1e6;
@@ -55,7 +56,7 @@ static int residual(const tirenv_springs_params *par, double log_beta, size_t n,
                     double *ss, tirenv_diag *diag)
 {
     double f[MAX_LOADS], l[MAX_LOADS], r[MAX_LOADS];
-    const int status = unit_load(par, exp(log_beta), n, d, f, l, diag);
+    const int status = tirenv_springs__unit_load(par, exp(log_beta), n, d, f, l, diag);
     if (status)
         return status;
     double mean = 0;
@@ -146,7 +147,7 @@ static int table_of(const tirenv_springs_params *par, double beta, double d_lo, 
     d_hi = fmin(d_hi, 0.9 * par->R0);
     for (size_t k = 0; k < TABLE; k++)
         d[k] = d_lo * pow(d_hi / d_lo, (double)k / (TABLE - 1));
-    const int status = unit_load(par, beta, TABLE, d, f, l, diag);
+    const int status = tirenv_springs__unit_load(par, beta, TABLE, d, f, l, diag);
     if (status)
         return status;
     tb->n = 0;

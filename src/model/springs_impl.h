@@ -505,4 +505,12 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                               const double d[], const double dw[], double w[], double pe[],
                               double obstacle[]);
 
+/* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
+
+/* The springs model par with c_b = beta*c_r and no sidewall at the n deflections d[] (m):
+ * its load per unit c_r f[] (N per N/m/rad) and contact length l[] (m), one force
+ * evaluation each. The model's errors. */
+int tirenv_springs__unit_load(const tirenv_springs_params *par, double beta, size_t n,
+                              const double d[], double f[], double l[], tirenv_diag *diag);
+
 #endif

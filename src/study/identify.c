@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { MAX_LOADS = 64 };
+enum { MAX_LOADS = 64, MAX_REFS = 4 };
 
 /* The springs model on the reference's deflections and contact lengths
  * (tirenv_springs_identify, src/model/springs_identify.c). */
@@ -108,41 +108,91 @@ static int identify_cam(tirenv_tire *t, size_t n, const tirenv_flat_target tg[],
     return TIRENV_OK;
 }
 
-int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *reference, size_t n,
-                         const double loads[], tirenv_tire *out, tirenv_flat_target target[],
-                         tirenv_diag *diag)
+/* Each reference's flat ground at the loads: reference j's at tg[j*n + i]. */
+static int reference_states(const tirenv_tire *tire, size_t m,
+                            const tirenv_model_type *const refs[], size_t n,
+                            const double loads[], tirenv_flat_target tg[], tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    for (size_t j = 0; j < m && !status; j++) {
+        tirenv_model *model = tirenv_model_alloc(refs[j], tire);
+        if (!model)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for "
+                                "the %s model", tirenv_model_type_name(refs[j]));
+        for (size_t i = 0; i < n && !status; i++) {
+            tirenv_flat f;
+            if (!(loads[i] > 0 && isfinite(loads[i])))
+                status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
+                                      "load %zu must be a positive force in N, got %g", i + 1,
+                                      loads[i]);
+            else if (!(status = tirenv_model_flat(model, loads[i], &f, diag)))
+                tg[j * n + i] = (tirenv_flat_target){.load = loads[i],
+                                                     .deflection = f.deflection,
+                                                     .contact_length = f.contact_length};
+        }
+        tirenv_model_free(model);
+    }
+    return status;
+}
+
+/* The springs model on several references together: min-max (tirenv_springs_identify_minmax,
+ * src/model/springs_minmax.c). */
+static int identify_springs_minmax(tirenv_tire *t, size_t m, size_t n,
+                                   const tirenv_flat_target tg[], tirenv_diag *diag)
+{
+    double G[MAX_LOADS], d[MAX_REFS * MAX_LOADS], l[MAX_REFS * MAX_LOADS];
+    for (size_t i = 0; i < n; i++)
+        G[i] = tg[i].load;
+    for (size_t k = 0; k < m * n; k++) {
+        d[k] = tg[k].deflection;
+        l[k] = tg[k].contact_length;
+    }
+    return tirenv_springs_identify_minmax(&t->springs, n, G, m, d, l, diag);
+}
+
+int tirenv_identify_flat_on(const tirenv_tire *tire, size_t m,
+                            const tirenv_model_type *const refs[], size_t n,
+                            const double loads[], tirenv_tire *out,
+                            tirenv_flat_target target[], tirenv_diag *diag)
 {
     if (n < 2 || n > MAX_LOADS)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
                             "identification needs 2 to %d loads, got %zu", MAX_LOADS, n);
-    tirenv_flat_target tg[MAX_LOADS];
-    tirenv_model *m = tirenv_model_alloc(reference, tire);
-    if (!m)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "the tire is not valid for the "
-                            "%s model", tirenv_model_type_name(reference));
-    int status = TIRENV_OK;
-    for (size_t i = 0; i < n && !status; i++) {
-        tirenv_flat f;
-        if (!(loads[i] > 0 && isfinite(loads[i])))
-            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
-                                  "load %zu must be a positive force in N, got %g", i + 1,
-                                  loads[i]);
-        else if (!(status = tirenv_model_flat(m, loads[i], &f, diag)))
-            tg[i] = (tirenv_flat_target){.load = loads[i], .deflection = f.deflection,
-                                         .contact_length = f.contact_length};
+    if (m < 1 || m > MAX_REFS)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "references",
+                            "identification needs 1 to %d reference models, got %zu",
+                            MAX_REFS, m);
+    int cam_ref = 0;
+    for (size_t j = 0; j < m; j++) {
+        if (refs[j] == tirenv_model_springs)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "references",
+                                "the springs model is identified, not a reference");
+        cam_ref |= refs[j] == tirenv_model_cam;
     }
-    tirenv_model_free(m);
+    tirenv_flat_target tg[MAX_REFS * MAX_LOADS];
+    int status = reference_states(tire, m, refs, n, loads, tg, diag);
     tirenv_tire t = *tire;
     if (!status)
-        status = identify_springs(&t, n, tg, diag);
-    if (!status)
+        status = m == 1 ? identify_springs(&t, n, tg, diag)
+                        : identify_springs_minmax(&t, m, n, tg, diag);
+    /* A cam that is a reference is the tire's as given; otherwise it is identified on the
+     * first reference. */
+    if (!status && !cam_ref)
         status = identify_cam(&t, n, tg, diag);
     if (!status && (status = tirenv_tire_check(&t, diag)) == TIRENV_OK) {
         *out = t;
         if (target)
-            memcpy(target, tg, n * sizeof tg[0]);
+            memcpy(target, tg, m * n * sizeof tg[0]);
     }
     return status;
+}
+
+int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *reference, size_t n,
+                         const double loads[], tirenv_tire *out, tirenv_flat_target target[],
+                         tirenv_diag *diag)
+{
+    const tirenv_model_type *const refs[] = {reference};
+    return tirenv_identify_flat_on(tire, 1, refs, n, loads, out, target, diag);
 }
 
 /* The data set's distinct case loads with their contact lengths, ascending by load, into

@@ -54,10 +54,41 @@ check "identify --write-springs: springs and sidewall written, the cam's laws ke
      grep -q "^Q_RA1 *= 0.6715 " c.tir && grep -q "^VERTICAL_STIFFNESS *= 209651.5 " c.tir &&
      grep -q "identify --write-springs" c.tir && [ "$(grep -c "^! tirenv identify: begin" c.tir)" = 1 ] &&
      strip c.tir >c.rest && strip "$repo/data/tires/205-60R15-mfswift.tir" >s.rest && cmp -s c.rest s.rest'
+# --reference ring,cam: the springs model identified on the ring and the cam together (min-max,
+# docs/models.md 14.1), at five loads (the shipped values are the 41 loads' of
+# scripts/springs-softening-study.py); the cam, a reference, is the file's and not written
+# even by --write; each model against each reference.
+cp "$repo/data/tires/205-60R15-mfswift.tir" r.tir
+run "$bin" identify --tire r.tir --reference ring,cam --loads 2000,3000,4000,5000,6000 --write
+check "identify --reference ring,cam --write: the springs values written, the cam's kept, each pair tabled" \
+    '[ $rc -eq 0 ] && grep -q "^RADIAL_STIFFNESS *= 445900 " r.tir &&
+     grep -q "^INTERRADIAL_STIFFNESS *= 9847 " r.tir && grep -q "^SIDEWALL_STIFFNESS *= 595800 " r.tir &&
+     grep -q "^SIDEWALL_PRELOAD *= 2662 " r.tir && grep -q "^  the cam.s laws kept as read: " out &&
+     grep -q "^ *load_N *ring *cam *springs *ring *cam *springs\$" out &&
+     [ "$(grep -c "^ *[2-6]000.0 " out)" = 5 ] &&
+     grep -q "^springs against ring deflection 4.6 %, contact length 3.8 %;\$" out &&
+     grep -q "^springs against cam deflection 4.7 %, contact length 4.7 %;\$" out &&
+     grep -q "^cam against ring deflection 1.0 %, contact length 1.7 %\$" out &&
+     grep -q "^! ring,cam --write. (docs/models.md section 14.1) on the ring.s and the cam.s flat ground" r.tir &&
+     strip r.tir >r.rest && strip "$repo/data/tires/205-60R15-mfswift.tir" >s.rest && cmp -s r.rest s.rest'
+cp "$repo/data/tires/205-60R15-mfswift.tir" r.tir
+for ref in ring,springs ring,ring; do
+    run "$bin" identify --tire r.tir --reference $ref --write
+    check "identify --reference $ref: exit 1, quoted, the file unchanged" \
+        '[ $rc -eq 1 ] && grep -q "got .$ref.\$" err && cmp -s r.tir "$repo/data/tires/205-60R15-mfswift.tir"'
+done
+run "$bin" identify --tire r.tir --reference ring,cam --set Q_RA1=0.7 --write
+check "identify --reference ring,cam --write --set Q_RA1: exit 1 (the cam, a reference, is not written), unchanged" \
+    '[ $rc -eq 1 ] && grep -q -- "--set Q_RA1=0.7 with --write" err &&
+     cmp -s r.tir "$repo/data/tires/205-60R15-mfswift.tir"'
+run "$bin" identify --tire r.tir --reference ring,cam --loads 2000,6000 --write
+check "identify --reference ring,cam with two loads and a sidewall: exit 2, three needed, unchanged" \
+    '[ $rc -eq 2 ] && grep -q "needs 3 to 64 loads, got 2" err &&
+     cmp -s r.tir "$repo/data/tires/205-60R15-mfswift.tir"'
 # ... on an MF-Tyre file whose ring is derived as it is read (with its springs model): refused,
 # the file unchanged (written springs values would change the ring the next read derives).
 cp "$data/samples/tir/mf_185_80R14.tir" m.tir
-for w in --write --write-springs; do
+for w in --write --write-springs "--reference cam --write-springs" "--reference cam,ring --write"; do
     run "$bin" identify --tire m.tir $w
     check "identify $w on an MF-Tyre file without an [ENVELOPING_RING]: exit 1, said, unchanged" \
         '[ $rc -eq 1 ] && grep -q "its ring is derived from its MF-Tyre keys" err &&
