@@ -263,8 +263,12 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     *out = NULL;
-    if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(tire, &diag))
-        return cli_fail(TIRENV_EINVAL, &diag);  /* the tire file lacks MF-Swift's cam data */
+    if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(tire, &diag)) {
+        /* The tire file lacks MF-Swift's cam data: named, as every other tire error is. */
+        if (o)
+            snprintf(diag.file, sizeof diag.file, "%s", cli_tire_path(o, buf, sizeof buf));
+        return cli_fail(TIRENV_EINVAL, &diag);
+    }
     *out = tirenv_model_alloc(type, tire);
     if (!*out)  /* the tire was checked: only memory is left */
         return cli_fail(TIRENV_ENOMEM, NULL);

@@ -65,8 +65,9 @@ check "... flat --model cam without --load: 0.5 to 1.5 FNOMIN, the file's load r
 # contact laws are derived and compared above (flat) and in tests/study/test_onetire.c.
 for name in mf_185_80R14; do
     run "$bin" flat --model cam --tire "$samples/tir/$name.tir"
-    check "$name.tir has no cam shape keys (its Q_RA1, Q_RA2 derived): --model cam exits 2 naming them" \
-        '[ $rc -eq 2 ] && grep -q "cam keys ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER " err'
+    check "$name.tir has no cam shape keys (its Q_RA1, Q_RA2 derived): --model cam exits 2 naming them and the file" \
+        '[ $rc -eq 2 ] && grep -q "cam keys ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER " err &&
+         grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: the tire has no value" err'
     run "$bin" envelope --model cam --cleat 0.1,0.05 --load 5000 --tire "$samples/tir/$name.tir" \
         -o e.csv
     check "... and envelope --model cam too, without an output file" \
