@@ -72,6 +72,10 @@ for name in mf_185_80R14; do
         -o e.csv
     check "... and envelope --model cam too, without an output file" \
         '[ $rc -eq 2 ] && grep -q "cam keys" err && no_file e.csv'
+    run "$bin" compare --models rigid,cam --cases R --no-images --tire "$samples/tir/$name.tir" \
+        -o cmp
+    check "... and compare --models rigid,cam, naming the file, without a report (it compared the default tire's cam)" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -e cmp ]'
 done
 run "$bin" flat --model cam --tire "$samples/tir/mf_185_80R14.tir" --set Q_RA1=0.6 \
     --set Q_RA2=0.7 --set ELLIPS_SHIFT=0.8 --set ELLIPS_LENGTH=1.4 --set ELLIPS_HEIGHT=0.9 \
