@@ -67,6 +67,10 @@ check "springs peak h is below the 0.10 m cleat and above 90 mm" \
 check "summary on stderr names model, peak and first rise" \
     'grep -q "springs model" err && grep -q "peak h" err && grep -q "first rise" err'
 check "no temporary file left after success" '[ $rc -eq 0 ] && no_file none.csv'
+# The cam peaks over the cleat's centre, at a sweep x some 1e-17 m below 0: shown as 0.
+run "$bin" envelope --model cam --cleat 0.10,0.10 --contact-length 0.28 -o cam.csv
+check "summary: a peak at x = -1e-17 m reads x = 0.0000 m, not -0.0000" \
+    '[ $rc -eq 0 ] && grep -q "peak h 93.106 mm at x = 0.0000 m," err'
 run "$bin" envelope --model springs $cleat_F --x-from -0.9 --x-to 0.9 --dx 0.01
 check "without -o the same CSV goes to stdout" '[ $rc -eq 0 ] && cmp -s out c.csv'
 run "$bin" envelope --model springs $cleat_F -o - --x-from -0.9 --x-to 0.9 --dx 0.01
