@@ -16,7 +16,9 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv compare [--data DIR] [--tire FITTED.tir] [--nn MODEL.json]\n"
           "                      [--cases F,J,R | --split NAME] [--simulated-by MODEL]\n"
-          "                      [-o REPORT_DIR] [--models LIST] [--no-images] [--jobs N]\n"
+          "                      [--simulated] [-o REPORT_DIR] [--models LIST]\n"
+          "                      [--title TEXT] [--no-images] [--jobs N] [--set KEY=VALUE]...\n"
+          "                      [--method M]\n"
           "\n"
           "Evaluates every model on the chosen cases of a data set and writes to\nREPORT_DIR:\n"
           "  <case>.png, <case>.svg  h (mm) over x_N: measured points, one line per model\n"

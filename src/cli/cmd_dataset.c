@@ -9,7 +9,7 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv dataset build [--design NAME] [-o DIR] [--jobs N] [--tire FILE]\n"
-          "                           [--set KEY=VALUE]...\n"
+          "                           [--set KEY=VALUE]... [--method M]\n"
           "       tirenv dataset list [DIR]\n"
           "\n"
           "build: regenerates an embedded data set bit for bit: 28 cleat runs on the virtual\n"

@@ -19,12 +19,12 @@ static const double rise_threshold = 1e-4;  /* first rise: h above 0.1 mm, m */
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
-          "                       [--track V] [--side S] [--tracks N] [--width W]\n"
-          "                       [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
+          "                       [--track V] [--side S] [--crg-nan-mode M] [--tracks N]\n"
+          "                       [--width W] [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
           "                       [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                       [--relative-to ground|datum] [--nn FILE [--extrapolate]]\n"
-          "                       [--tire FILE] [--set KEY=VALUE]...\n"
-          "                       [--method M]\n"
+          "                       [--detail] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                       [--method M] [--jobs N]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"

@@ -12,7 +12,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv fit --data DIR [--model springs|cam|ring] [--fit-radius | --all]\n"
           "                  [--check-refinement] [-o FITTED.tir] [--jobs N] [--tire FILE]\n"
-          "                  [--set K=V]...\n"
+          "                  [--set K=V]... [--method M]\n"
           "\n"
           "Identifies RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS (and UNLOADED_RADIUS with\n"
           "--fit-radius) of the springs model, ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"

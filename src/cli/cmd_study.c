@@ -14,7 +14,7 @@ static void usage(FILE *fp)
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
           "                    [--seed S] [--seeds N] [--input even|paper]\n"
           "                    [--measured | --simulated-by MODEL] [--no-images] [--jobs N]\n"
-          "                    [--tire FILE] [--set KEY=VALUE]...\n"
+          "                    [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
           "on the data set's training cases (tirenv fit), trains the 4-8-1 network with\n"
