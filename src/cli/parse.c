@@ -333,7 +333,7 @@ static int help_complete(const cli_parser *p, const struct option longopts[], si
     return code;
 }
 
-int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
+static int parse_argv(const cli_parser *p, int argc, char *argv[], cli_options *o)
 {
     memset(o, 0, sizeof *o);
     o->x_from = o->x_to = o->dx = NAN;
@@ -394,6 +394,20 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
     }
     const int code = check_network(p, o);
     return code ? code : CLI_GO_ON;
+}
+
+/* getopt names the program in what it says of an unknown option or a missing value by
+ * argv[0], which for a command is its bare name ("envelope: unrecognized option"): the whole
+ * name instead, as the command's other messages have it. */
+int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
+{
+    char prog[80];
+    snprintf(prog, sizeof prog, "tirenv %s", p->name);
+    char *const argv0 = argv[0];
+    argv[0] = prog;
+    const int code = parse_argv(p, argc, argv, o);
+    argv[0] = argv0;
+    return code;
 }
 
 int cli_parse_crg_nan_mode(void *dst, const char *arg)

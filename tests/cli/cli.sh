@@ -35,8 +35,12 @@ run "$bin" frobnicate
 check "unknown command: named on stderr, exit 1" \
     '[ $rc -eq 1 ] && [ ! -s out ] && grep -q frobnicate err'
 run "$bin" envelope --model springs $cleat_F --frobnicate
-check "unknown option: usage on stderr, exit 1" \
-    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q "usage: tirenv envelope" err'
+check "unknown option: named by the whole command, usage on stderr, exit 1" \
+    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q "usage: tirenv envelope" err &&
+     grep -q "^tirenv envelope: unrecognized option .--frobnicate.$" err'
+run "$bin" fit --data
+check "an option without its value: named by the whole command, exit 1" \
+    '[ $rc -eq 1 ] && grep -q "^tirenv fit: option .--data. requires an argument$" err'
 run "$bin" envelope --model springs --cleat 0.30,0.10 --load 12kN
 check "malformed --load: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--load" err'
 run "$bin" envelope --model springs --cleat 0.30 --load 1e4
