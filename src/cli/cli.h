@@ -216,6 +216,11 @@ int cli_tire(const cli_options *o, tirenv_tire *tire);
  * none. */
 int cli_model_type(const char *name, const tirenv_model_type **type);
 
+/* For the cam (type): whether the tire from path has MF-Swift's cam keys of its own
+ * (tirenv_tire_check_cam_keys); prints the refusal naming them and path and returns an exit
+ * code if not. CLI_EXIT_OK for the other models. */
+int cli_cam_keys(const tirenv_model_type *type, const tirenv_tire *tire, const char *path);
+
 /* Allocates a model for a checked tire and, if its type needs one, gives it the network of
  * --nn (read from the model file, with the R0 its x_N refers to); prints and returns an exit
  * code on failure. */

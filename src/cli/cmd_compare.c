@@ -261,16 +261,13 @@ int cli_compare_main(int argc, char *argv[])
     tirenv_diag_clear(&diag);
     if ((code = cli_tire(&o, &tire)))
         goto done;
-    /* The cam of a tire file without MF-Swift's shape keys would be the default tire's: refused
-     * naming them and the file, as every command's --model cam. */
-    int status = TIRENV_OK;
-    for (size_t k = 0; k <= co.s.n_models && !status; ++k) {
-        const tirenv_model_type *type = k < co.s.n_models ? co.s.models[k] : co.s.simulated_by;
-        if (type == tirenv_model_cam && (status = tirenv_tire_check_cam_keys(&tire, &diag)))
-            snprintf(diag.file, sizeof diag.file, "%s", co.s.tire_label);
-    }
-    if (!status)
-        status = tirenv_dataset_read(co.data, tire.springs.R0, &ds, &diag);
+    /* The cam of a tire file without MF-Swift's shape keys would be the default tire's. */
+    for (size_t k = 0; k <= co.s.n_models && !code; ++k)
+        code = cli_cam_keys(k < co.s.n_models ? co.s.models[k] : co.s.simulated_by, &tire,
+                            co.s.tire_label);
+    if (code)
+        goto done;
+    int status = tirenv_dataset_read(co.data, tire.springs.R0, &ds, &diag);
     have_ds = status == TIRENV_OK;
     if (!status && o.nn_path) {
         tirenv_train_record rec;

@@ -137,6 +137,8 @@ int cli_dataset_main(int argc, char *argv[])
         return code;
     if (listing)
         return list(dir, tire.springs.R0);
+    if ((code = cli_cam_keys(tirenv_model_type_find(design->model), &tire, o.tire_path)))
+        return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_dataset_build_settings bs = tirenv_dataset_build_default();

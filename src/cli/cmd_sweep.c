@@ -436,6 +436,26 @@ int cli_sweep_main(int argc, char *argv[])
     for (size_t k = 0; k < keys.n; ++k)
         s.keys[k] = (tirenv_sweep_axis){keys.keys[k], keys.counts[k], keys.values[k]};
     s.n_keys = keys.n;
+    /* The cam of a tire file without MF-Swift's shape keys, named with the file here (the
+     * library refuses it too, without the file); a swept key counts as the tire's own. */
+    if (s.type == tirenv_model_cam) {
+        tirenv_tire first = tire;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        for (size_t k = 0; k < keys.n; ++k) {
+            char assignment[200];
+            snprintf(assignment, sizeof assignment, "%.120s=%.17g", keys.keys[k],
+                     keys.counts[k] ? keys.values[k][0] : 0.0);
+            (void)tirenv_tir_set(&first, assignment, &d);  /* a bad key: the library says */
+        }
+        char path_buf[1024];
+        const int refused = cli_cam_keys(s.type, &first,
+                                         cli_tire_path(&o, path_buf, sizeof path_buf));
+        if (refused) {
+            free_axes(lists, &keys, with_net);
+            return refused;
+        }
+    }
     const int tty = isatty(STDERR_FILENO);
     progress_state ps = {.on = want_progress || tty, .tty = tty, .t0 = cli_wall_seconds(),
                          .first = (size_t)-1, .last_tenth = (size_t)-1};

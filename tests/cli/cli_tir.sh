@@ -76,11 +76,23 @@ for name in mf_185_80R14; do
         -o cmp
     check "... and compare --models rigid,cam, naming the file, without a report (it compared the default tire's cam)" \
         '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -e cmp ]'
+    run "$bin" sweep --model cam --lengths 0.05 --heights 0.02 --loads 3800 \
+        --tire "$samples/tir/$name.tir" -o swp
+    check "... and sweep --model cam, naming the file, writing nothing (it swept the default tire's cam)" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err &&
+         [ ! -e swp ] && [ ! -e swp.partial ]'
+    run "$bin" dataset build --design 205-60R15 --tire "$samples/tir/$name.tir" -o ds
+    check "... and dataset build of the cam's design, naming the file, writing nothing" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -e ds ]'
 done
 run "$bin" flat --model cam --tire "$samples/tir/mf_185_80R14.tir" --set Q_RA1=0.6 \
     --set Q_RA2=0.7 --set ELLIPS_SHIFT=0.8 --set ELLIPS_LENGTH=1.4 --set ELLIPS_HEIGHT=0.9 \
     --set ELLIPS_ORDER=1.6
 check "--set of the missing cam keys makes the cam run" '[ $rc -eq 0 ]'
+run "$bin" sweep --model cam --lengths 0.05 --heights 0.02 --loads 3800 \
+    --tire "$samples/tir/mf_185_80R14.tir" --set ELLIPS_SHIFT=0.8,0.9 --set ELLIPS_LENGTH=1.4 \
+    --set ELLIPS_HEIGHT=0.9 --set ELLIPS_ORDER=1.6 -o swp2
+check "... and so do swept ones, in a sweep" '[ $rc -eq 0 ] && [ -f swp2/cases.csv ]'
 
 : >empty.tir
 run "$bin" flat --tire empty.tir
