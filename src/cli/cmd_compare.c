@@ -59,7 +59,7 @@ static void usage(FILE *fp)
           "                       (default out/compare)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1, cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 

@@ -33,7 +33,10 @@ static void usage(FILE *fp)
           "  -o, --output DIR     where to build (created if missing)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1,
+                     "  --tire FILE          tire property file (.tir); default: the design's, in\n"
+                     "                       the data directory ($TIRENV_DATA, else the installed\n"
+                     "                       data); for list, the data set's own\n");
     fputs("  -h, --help           show this help\n", fp);
 }
 

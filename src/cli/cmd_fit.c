@@ -36,7 +36,7 @@ static void usage(FILE *fp)
           fp);
     cli_help_model(fp, TIRENV_MODEL_FITTABLE, 0, " (default springs)");
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1, cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 

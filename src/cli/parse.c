@@ -435,11 +435,24 @@ int cli_parse_crg_nan_mode(void *dst, const char *arg)
 
 /* ---- help ------------------------------------------------------------------------------- */
 
+const char cli_help_data_tire[] =
+    "  --tire FILE          tire property file (.tir); default: the tire the data set's\n"
+    "                       source.txt names, else tires/default.tir in the data\n"
+    "                       directory ($TIRENV_DATA, else the installed data)\n";
+
 void cli_help_tire(FILE *fp, int with_method)
 {
-    fputs("  --tire FILE          tire property file (.tir); default: tires/default.tir in\n"
-          "                       the data directory ($TIRENV_DATA, else the installed data)\n"
-          "  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
+    cli_help_tire_as(fp, with_method,
+                     "  --tire FILE          tire property file (.tir); default: tires/default.tir "
+                     "in\n"
+                     "                       the data directory ($TIRENV_DATA, else the installed "
+                     "data)\n");
+}
+
+void cli_help_tire_as(FILE *fp, int with_method, const char *tire_help)
+{
+    fputs(tire_help, fp);
+    fputs("  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
           "                       applied in order), e.g. --set RADIAL_STIFFNESS=1.8e6\n",
           fp);
     if (with_method)

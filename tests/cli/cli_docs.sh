@@ -214,6 +214,16 @@ done
 cp unsummarised err
 check "every command's usage synopsis names all its options but the obstacles, -o and --help" \
     '[ ! -s unsummarised ]'
+# The commands that read a data set take its own tire by default, and their --tire says so
+# (it said tires/default.tir, as for the others).
+for c in compare study fit; do
+    run "$bin" "$c" --help
+    check "tirenv $c --help: --tire defaults to the tire the data set's source.txt names" \
+        '[ $rc -eq 0 ] && grep -A1 "^  --tire FILE" out | grep -q "source.txt names"'
+done
+run "$bin" dataset --help
+check "tirenv dataset --help: --tire defaults to the design's" \
+    '[ $rc -eq 0 ] && grep -q "^  --tire FILE  .*default: the design.s" out'
 run "$bin" predict --help
 check "tirenv predict --help lists --model, which it takes" \
     '[ $rc -eq 0 ] && grep -q "^  --model NAME  " out'
