@@ -735,6 +735,11 @@ int cli_bench_main(int argc, char *argv[])
         repeat = quick ? 1 : 5;
     tirenv_tire tire;
     code = cli_tire(&o, &tire);
+    /* Every part runs the cam (the road, the load changes, the ride, the memory's envelope):
+     * a tire without its shape keys is refused before any timing, not midway. */
+    char path_buf[1024];
+    if (!code)
+        code = cli_cam_keys(tirenv_model_cam, &tire, cli_tire_path(&o, path_buf, sizeof path_buf));
     if (code)
         return code;
     tirenv_profile *prof = tirenv_profile_cleat(cleat_L, cleat_H);

@@ -81,6 +81,9 @@ for name in mf_185_80R14; do
     check "... and sweep --model cam, naming the file, writing nothing (it swept the default tire's cam)" \
         '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err &&
          [ ! -e swp ] && [ ! -e swp.partial ]'
+    run "$bin" bench --quick --tire "$samples/tir/$name.tir"
+    check "... and bench, naming the file, before any timing (it timed the default tire's cam, then stopped in the ride)" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -s out ]'
     run "$bin" dataset build --design 205-60R15 --tire "$samples/tir/$name.tir" -o ds
     check "... and dataset build of the cam's design, naming the file, writing nothing" \
         '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -e ds ]'
