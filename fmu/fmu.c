@@ -137,6 +137,13 @@ fmi2Status fmu__setup(fmu_instance *f)
             return fmu__fail_diag(f, "tire_file", &diag);
         if (origin.note[0])
             fmu__log(f, fmi2Warning, "logAll", "%s: %s", path, origin.note);
+        /* A file without MF-Swift's cam shape (which, unlike its laws, is never derived) would
+         * give the cam the default tire's: refused, as the CLI refuses it. */
+        if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(&f->tire, &diag)) {
+            char buf[1600];
+            return fmu__fail(f, "tire_file: %s: %s", path,
+                             tirenv_diag_format(&diag, buf, sizeof buf));
+        }
     }
     if (tirenv_tire_check(&f->tire, &diag))
         return fmu__fail_diag(f, "tire_file", &diag);

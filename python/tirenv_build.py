@@ -49,6 +49,7 @@ typedef struct { double R0; double c_r; double c_b; double phi; double dphi;
 typedef struct { tirenv_springs_params springs; ...; } tirenv_tire;
 tirenv_tire tirenv_tire_default(void);
 int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
+int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag);
 
 /* tir.h */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag);

@@ -12,6 +12,7 @@
  *     times and steps give fmi2Error and leave the instance usable;
  *   - wrong value references, a parameter set too late, an unknown model, a missing road
  *     file and a wrong GUID give fmi2Error (or NULL) and a log message saying why;
+ *   - the cam on a tire file without its shape keys is refused, naming them;
  *   - with TIR (a tire file whose cam laws are its own), the cam alone derives no ring.
  * Prints TAP lines; exits 1 if a check fails.
  * usage: fmu_importer FMU CLI [TIR]  SPDX-License-Identifier: Apache-2.0 */
@@ -548,6 +549,34 @@ static void test_cam_alone(const char *road, const char *tir)
     }
 }
 
+/* The cam on a tire file without MF-Swift's cam shape keys: refused at initialization,
+ * naming them and the file (it ran with the default tire's shape), as the CLI refuses it; the
+ * springs model, which does not need them, runs on the same file. */
+static void test_cam_keys(const char *road)
+{
+    char tir[256];
+    snprintf(tir, sizeof tir, "%s/nocam.tir", dir);
+    FILE *fp = fopen(tir, "w");
+    if (fp) {
+        fputs("[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\nFNOMIN = 3800\n"
+              "VERTICAL_STIFFNESS = 175000\n", fp);
+        fclose(fp);
+    }
+    fmi2Status st = fmi2OK;
+    n_logs = 0;
+    fmi2Component c = start_tire("cam", road, tir, 0, 3800, &st);
+    check(fp && c && st == fmi2Error && logged("nocam.tir: ELLIPS_SHIFT") &&
+          logged("ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER"),
+          "the cam on a tire file without its shape keys: fmi2Error at initialization, "
+          "naming them and the file (%s)", last_log);
+    if (c)
+        api.free_instance(c);
+    c = start_tire("springs", road, tir, 0, 3800, &st);
+    check(c && st == fmi2OK, "... the springs model on the same file runs");
+    if (c)
+        api.free_instance(c);
+}
+
 static void test_errors(const char *road)
 {
     fmi2Status st;
@@ -662,6 +691,7 @@ int main(int argc, char *argv[])
     test_load_changes(road);
     test_state_with_load_changes(road);
     test_errors(road);
+    test_cam_keys(road);
     if (argc > 3)
         test_cam_alone(road, argv[3]);
 

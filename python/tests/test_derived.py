@@ -80,3 +80,39 @@ def test_sidewall_read_and_used_as_the_cli(cli, source_dir):
     bare = tirenv.Model("springs", tirenv.Tire(path, set={"SIDEWALL_PRELOAD": 0,
                                                           "SIDEWALL_STIFFNESS": 0}))
     assert bare.flat(6000).deflection < m.flat(6000).deflection - 0.005
+
+
+def test_cam_refused_without_its_shape_keys(cli, tmp_path):
+    """The cam's shape (ELLIPS_*) is never derived: a file without it is refused naming the
+    keys and the file, as the CLI refuses it, where Python ran the cam with the default tire's
+    shape; the ride's cam too; --set's keys make it run, as the CLI's."""
+    path = tmp_path / "nocam.tir"
+    path.write_text("[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\nFNOMIN = 3800\n"
+                    "VERTICAL_STIFFNESS = 175000\nQ_FZ2 = 0\n[CONTACT_PATCH]\nQ_RA1 = 0.7\n"
+                    "Q_RA2 = 0.6\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tire = tirenv.Tire(path)
+    with pytest.raises(tirenv.TirenvValueError) as e:
+        tirenv.Model("cam", tire)
+    assert e.value.field == "ELLIPS_SHIFT" and e.value.file == str(path)
+    assert "ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER" in str(e.value)
+    assert str(e.value).startswith(f"{path}: ELLIPS_SHIFT: ")
+    rc, _, err = run_cli(cli, "flat", "--model", "cam", "--tire", path)
+    assert rc == 2 and f"tirenv: {path}: ELLIPS_SHIFT: " in err
+    tirenv.Model("springs", tire)  # needs none of them
+    vehicle = tirenv.Vehicle(set={"REAR_AXLE.TIRE_FILE": str(path)})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(tirenv.TirenvValueError) as e:
+            tirenv.ride(tirenv.Profile.cleat(0.2, 0.05), model="cam", speed="3km/h",
+                        vehicle=vehicle)
+    assert e.value.field == "ELLIPS_SHIFT" and e.value.file == str(path)
+    shape = {"ELLIPS_SHIFT": 0.8328, "ELLIPS_LENGTH": 1.4634, "ELLIPS_HEIGHT": 0.9551,
+             "ELLIPS_ORDER": 1.5257}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        given = tirenv.Tire(path, set=shape)
+    m = tirenv.Model("cam", given)
+    m.set(tirenv.Profile.cleat(0.05, 0.02), 3800)
+    assert m.sweep()["h_m"].max() > 0.01

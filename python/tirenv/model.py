@@ -80,6 +80,8 @@ class Model:
         if needs_network and not network._law.n:
             needs |= lib.TIRENV_TIR_SPRINGS
         self.tire._require(needs)
+        if needs & lib.TIRENV_TIR_CAM:
+            self.tire._require_cam_shape()
         # The rigid disc's and the point's load at a contact length is the springs model's
         # (load_for_contact_length requires it, as the CLI's --contact-length does).
         flags = lib.tirenv_model_type_flags(t)

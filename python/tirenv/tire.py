@@ -83,6 +83,17 @@ class Tire(collections.abc.Mapping):
         check(lib.tirenv_tir_read(path_bytes(self.path), t, diag), diag)
         check(lib.tirenv_tir_derive(path_bytes(self.path), t, bits, origin, diag), diag)
 
+    def _require_cam_shape(self):
+        """Refuses the cam for a tire without a value of its own for every cam key, naming the
+        keys and the file: its shape (ELLIPS_*) is never derived, and the default tire's would
+        stand in (tirenv_tire_check_cam_keys, as the CLI and the FMU refuse it)."""
+        diag = new_diag()
+        status = lib.tirenv_tire_check_cam_keys(self._t, diag)
+        if status and self.path is not None:
+            name = path_bytes(self.path)
+            diag.file = name[:ffi.sizeof(diag.file) - 1]
+        check(status, diag)
+
     @property
     def R0(self):
         """Free radius, m."""

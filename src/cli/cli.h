@@ -155,6 +155,11 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o);
 
 /* Option help text for the groups above, indented for a usage message. */
 void cli_help_tire(FILE *fp, int with_method);
+/* The same for a command whose tire defaults to another than tires/default.tir: tire_help is
+ * its whole --tire entry, as it prints. */
+void cli_help_tire_as(FILE *fp, int with_method, const char *tire_help);
+/* The --tire entry of the commands that read a data set: the tire its source.txt names. */
+extern const char cli_help_data_tire[];
 void cli_help_load(FILE *fp);
 void cli_help_obstacle(FILE *fp);
 void cli_help_sweep(FILE *fp);
@@ -227,6 +232,11 @@ int cli_model_type(const char *name, const tirenv_model_type **type);
  * or more than max. */
 int cli_model_list(const char *option, const char *arg, const tirenv_model_type *types[],
                    size_t max, size_t *n);
+
+/* For the cam (type): whether the tire from path has MF-Swift's cam keys of its own
+ * (tirenv_tire_check_cam_keys); prints the refusal naming them and path and returns an exit
+ * code if not. CLI_EXIT_OK for the other models. */
+int cli_cam_keys(const tirenv_model_type *type, const tirenv_tire *tire, const char *path);
 
 /* Allocates a model for a checked tire and, if its type needs one, gives it the network of
  * --nn (read from the model file, with the R0 its x_N refers to); prints and returns an exit

@@ -735,10 +735,14 @@ int cli_bench_main(int argc, char *argv[])
         repeat = quick ? 1 : 5;
     tirenv_tire tire;
     char buf[1024];
-    code = cli_refuse_pipe(cli_tire_path(&o, buf, sizeof buf),
-                            "bench runs itself in child processes that read it again");
+    const char *path = cli_tire_path(&o, buf, sizeof buf);
+    code = cli_refuse_pipe(path, "bench runs itself in child processes that read it again");
     if (!code)
         code = cli_tire(&o, &tire);
+    /* Every part runs the cam (the road, the load changes, the ride, the memory's envelope):
+     * a tire without its shape keys is refused before any timing, not midway. */
+    if (!code)
+        code = cli_cam_keys(tirenv_model_cam, &tire, path);
     if (code)
         return code;
     tirenv_profile *prof = tirenv_profile_cleat(cleat_L, cleat_H);

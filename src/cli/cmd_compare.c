@@ -16,7 +16,9 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv compare [--data DIR] [--tire FITTED.tir] [--nn MODEL.json]\n"
           "                      [--cases F,J,R | --split NAME] [--simulated-by MODEL]\n"
-          "                      [-o REPORT_DIR] [--models LIST] [--no-images] [--jobs N]\n"
+          "                      [--simulated] [-o REPORT_DIR] [--models LIST]\n"
+          "                      [--title TEXT] [--no-images] [--jobs N] [--set KEY=VALUE]...\n"
+          "                      [--method M]\n"
           "\n"
           "Evaluates every model on the chosen cases of a data set and writes to\nREPORT_DIR:\n"
           "  <case>.png, <case>.svg  h (mm) over x_N: measured points, one line per model\n"
@@ -57,7 +59,7 @@ static void usage(FILE *fp)
           "                       (default out/compare)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1, cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -236,6 +238,12 @@ int cli_compare_main(int argc, char *argv[])
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     if ((code = cli_tire(&o, &tire)))
+        goto done;
+    /* The cam of a tire file without MF-Swift's shape keys would be the default tire's. */
+    for (size_t k = 0; k <= co.s.n_models && !code; ++k)
+        code = cli_cam_keys(k < co.s.n_models ? co.s.models[k] : co.s.simulated_by, &tire,
+                            co.s.tire_label);
+    if (code)
         goto done;
     int status = tirenv_dataset_read(co.data, tire.springs.R0, &ds, &diag);
     have_ds = status == TIRENV_OK;

@@ -9,7 +9,7 @@
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv dataset build [--design NAME] [-o DIR] [--jobs N] [--tire FILE]\n"
-          "                           [--set KEY=VALUE]...\n"
+          "                           [--set KEY=VALUE]... [--method M]\n"
           "       tirenv dataset list [DIR]\n"
           "\n"
           "build: regenerates an embedded data set bit for bit: 28 cleat runs on the virtual\n"
@@ -33,7 +33,10 @@ static void usage(FILE *fp)
           "  -o, --output DIR     where to build (created if missing)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1,
+                     "  --tire FILE          tire property file (.tir); default: the design's, in\n"
+                     "                       the data directory ($TIRENV_DATA, else the installed\n"
+                     "                       data); for list, the data set's own\n");
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -137,6 +140,8 @@ int cli_dataset_main(int argc, char *argv[])
         return code;
     if (listing)
         return list(dir, tire.springs.R0);
+    if ((code = cli_cam_keys(tirenv_model_type_find(design->model), &tire, o.tire_path)))
+        return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_dataset_build_settings bs = tirenv_dataset_build_default();

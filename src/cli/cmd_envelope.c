@@ -19,12 +19,12 @@ static const double rise_threshold = 1e-4;  /* first rise: h above 0.1 mm, m */
 static void usage(FILE *fp)
 {
     fputs("usage: tirenv envelope --model NAME OBSTACLE (--load N | --contact-length M)\n"
-          "                       [--track V] [--side S] [--tracks N] [--width W]\n"
-          "                       [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
+          "                       [--track V] [--side S] [--crg-nan-mode M] [--tracks N]\n"
+          "                       [--width W] [--x-from X] [--x-to X] [--dx DX] [--stream]\n"
           "                       [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                       [--relative-to ground|datum] [--nn FILE [--extrapolate]]\n"
-          "                       [--tire FILE] [--set KEY=VALUE]...\n"
-          "                       [--method M]\n"
+          "                       [--detail] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                       [--method M] [--jobs N]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
@@ -143,6 +143,13 @@ static void tally_add(tally *t, const tirenv_point *pt)
     t->n++;
 }
 
+/* A position as the summary prints it: a sweep's x near 0 is some 1e-17 m off it (x_from +
+ * k*dx), which %.4f showed as "-0.0000". */
+static double shown_x(double x)
+{
+    return fabs(x) < 5e-5 ? 0.0 : x;
+}
+
 /* The rigid disc has no contact length of its own, so it shows the one asked for, if any;
  * the model's note (the network's view of the ground) ends the line. */
 static void summary(const char *cmd, tirenv_model *m, const cli_options *o, double load,
@@ -159,12 +166,12 @@ static void summary(const char *cmd, tirenv_model *m, const cli_options *o, doub
         snprintf(lc_text, sizeof lc_text, "contact length %.4g m", l_c);
     char rise_text[64] = "no rise above 0.1 mm";
     if (t->have_rise)
-        snprintf(rise_text, sizeof rise_text, "first rise at x = %.4f m", t->rise_x);
+        snprintf(rise_text, sizeof rise_text, "first rise at x = %.4f m", shown_x(t->rise_x));
     const char *note = tirenv_model_note(m);
     fprintf(stderr,
             "tirenv %s: %s model, load %.6g N (%s), %zu positions: peak h %.3f mm at "
             "x = %.4f m, %s, iterations per position mean %.2f max %zu%s%s\n",
-            cmd, tirenv_model_name(m), load, lc_text, t->n, t->peak.h * 1e3, t->peak.x,
+            cmd, tirenv_model_name(m), load, lc_text, t->n, t->peak.h * 1e3, shown_x(t->peak.x),
             rise_text, t->n ? t->it_sum / (double)t->n : 0.0, t->it_max, note[0] ? "; " : "",
             note);
 }

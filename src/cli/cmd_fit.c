@@ -12,7 +12,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv fit --data DIR [--model springs|cam|ring] [--fit-radius | --all]\n"
           "                  [--check-refinement] [-o FITTED.tir] [--jobs N] [--tire FILE]\n"
-          "                  [--set K=V]...\n"
+          "                  [--set K=V]... [--method M]\n"
           "\n"
           "Identifies RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS (and UNLOADED_RADIUS with\n"
           "--fit-radius) of the springs model, ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT\n"
@@ -36,7 +36,7 @@ static void usage(FILE *fp)
           fp);
     cli_help_model(fp, TIRENV_MODEL_FITTABLE, 0, " (default springs)");
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1, cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 

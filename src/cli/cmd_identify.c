@@ -89,7 +89,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv identify [--reference MODEL[,MODEL]] [--loads G1,G2,...] [--write | "
           "--write-springs]\n"
-          "                       [--tire FILE] [--set KEY=VALUE]...\n"
+          "                       [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "One tire, every model: identifies the springs model's RADIAL_STIFFNESS and\n"
           "INTERRADIAL_STIFFNESS (with SIDEWALL_STIFFNESS and SIDEWALL_PRELOAD when the\n"

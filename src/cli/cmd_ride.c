@@ -13,6 +13,7 @@ static void usage(FILE *fp)
     fputs("usage: tirenv ride OBSTACLE --speed V[,V...] [--model M[,M...]]\n"
           "                   [--nn FILE [--extrapolate]]\n"
           "                   [--vehicle FILE] [--set KEY=VALUE]... [--x-from X] [--x-to X]\n"
+          "                   [--track V] [--side S] [--crg-nan-mode M]\n"
           "                   [--dx DX] [--dt S] [--solver rk4|rk8pd] [-o FILE]\n"
           "                   [--out-dir DIR [--series]] [--jobs N]\n"
           "                   [--enveloping static|dynamic|direct[,...]]\n"

@@ -8,7 +8,9 @@ static void usage(FILE *fp)
 {
     fputs("usage: tirenv rig OBSTACLE (--load N | --contact-length M) -o LOG.csv\n"
           "                  [--model NAME] [--speed M_S] [--rate HZ] [--noise SX,SZ]\n"
-          "                  [--offset X,Z] [--seed S] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                  [--offset X,Z] [--seed S] [--track V] [--side S]\n"
+          "                  [--crg-nan-mode M] [--tire FILE] [--set KEY=VALUE]...\n"
+          "                  [--method M]\n"
           "\n"
           "Simulates the paper's test rig (its Figure 2): a cart rolls the tire over the\n"
           "obstacle at constant speed and vertical load; x(t), z(t) of the tire centre are\n"

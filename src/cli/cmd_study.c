@@ -14,7 +14,7 @@ static void usage(FILE *fp)
     fputs("usage: tirenv study [--data DIR] [-o REPORT_DIR] [--trainer lm|rprop|backprop]\n"
           "                    [--seed S] [--seeds N] [--input even|paper]\n"
           "                    [--measured | --simulated-by MODEL] [--no-images] [--jobs N]\n"
-          "                    [--tire FILE] [--set KEY=VALUE]...\n"
+          "                    [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "\n"
           "The paper's study in one command: identifies the springs model and the tandem cam\n"
           "on the data set's training cases (tirenv fit), trains the 4-8-1 network with\n"
@@ -47,7 +47,7 @@ static void usage(FILE *fp)
           "  --no-images          write the gnuplot scripts but do not run gnuplot\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire_as(fp, 1, cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 

@@ -182,6 +182,56 @@ static int parse_axis(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
+/* The model's curve over the grid's first cleat at its first regime, at 21 positions from R0
+ * before the cleat to R0 after it, for the tire with key set to value; 0 if it could not be
+ * computed (the sweep itself then says why). */
+static int probe_curve(const tirenv_sweep_settings *s, const tirenv_tire *tire, const char *key,
+                       double value, tirenv_point out[21])
+{
+    tirenv_tire t = *tire;
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    char assignment[200];
+    snprintf(assignment, sizeof assignment, "%.120s=%.17g", key, value);
+    if (tirenv_tir_set(&t, assignment, &d) || tirenv_tire_check(&t, &d))
+        return 0;
+    tirenv_model *m = tirenv_model_alloc(s->type, &t);
+    tirenv_profile *cleat = tirenv_profile_cleat(s->lengths[0], s->heights[0]);
+    double load = s->n_loads ? s->loads[0] : 0;
+    int ok = m && cleat &&
+             (s->n_loads ||
+              !tirenv_model_load_for_contact_length(m, s->contact_lengths[0], &load, &d)) &&
+             !tirenv_model_set(m, cleat, load, &d);
+    const double R0 = t.springs.R0, half = 0.5 * s->lengths[0] + R0;
+    for (size_t i = 0; i < 21 && ok; ++i)
+        ok = !tirenv_model_eval(m, -half + (double)i * half / 10, &out[i], &d);
+    tirenv_profile_free(cleat);
+    tirenv_model_free(m);
+    return ok;
+}
+
+/* A swept key the model does not read (the springs model's RADIAL_STIFFNESS swept for the
+ * ring, as the README's example once did) gives every value the same cases: said when the
+ * model's curve over the first cleat is the same, bit for bit, at the key's first two values.
+ * A warning, not a refusal: a key may matter only on other cleats or regimes. */
+static void warn_unread_keys(const tirenv_sweep_settings *s, const tirenv_tire *tire)
+{
+    if (tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK)
+        return;
+    for (size_t k = 0; k < s->n_keys; ++k) {
+        tirenv_point a[21], b[21];
+        if (s->keys[k].n >= 2 &&
+            probe_curve(s, tire, s->keys[k].key, s->keys[k].values[0], a) &&
+            probe_curve(s, tire, s->keys[k].key, s->keys[k].values[1], b) &&
+            memcmp(a, b, sizeof a) == 0)
+            fprintf(stderr, "tirenv: sweep: warning: --set %s: the %s model's curve over the "
+                    "first cleat is the same, bit for bit, at %s = %g and %g: the model may "
+                    "not read %s, and then every value gives the same cases\n",
+                    s->keys[k].key, tirenv_model_type_name(s->type), s->keys[k].key,
+                    s->keys[k].values[0], s->keys[k].values[1], s->keys[k].key);
+    }
+}
+
 /* FNV-1a (64 bit) of a file's bytes: how sweep.txt names the network a sweep evaluated. */
 static int file_fingerprint(const char *path, char out[32])
 {
@@ -454,6 +504,27 @@ int cli_sweep_main(int argc, char *argv[])
     for (size_t k = 0; k < keys.n; ++k)
         s.keys[k] = (tirenv_sweep_axis){keys.keys[k], keys.counts[k], keys.values[k]};
     s.n_keys = keys.n;
+    /* The cam of a tire file without MF-Swift's shape keys, named with the file here (the
+     * library refuses it too, without the file); a swept key counts as the tire's own. */
+    if (s.type == tirenv_model_cam) {
+        tirenv_tire first = tire;
+        tirenv_diag d;
+        tirenv_diag_clear(&d);
+        for (size_t k = 0; k < keys.n; ++k) {
+            char assignment[200];
+            snprintf(assignment, sizeof assignment, "%.120s=%.17g", keys.keys[k],
+                     keys.counts[k] ? keys.values[k][0] : 0.0);
+            (void)tirenv_tir_set(&first, assignment, &d);  /* a bad key: the library says */
+        }
+        char path_buf[1024];
+        const int refused = cli_cam_keys(s.type, &first,
+                                         cli_tire_path(&o, path_buf, sizeof path_buf));
+        if (refused) {
+            free_axes(lists, &keys, with_net);
+            return refused;
+        }
+    }
+    warn_unread_keys(&s, &tire);
     const int tty = isatty(STDERR_FILENO);
     progress_state ps = {.on = want_progress || tty, .tty = tty, .t0 = cli_wall_seconds(),
                          .first = (size_t)-1, .last_tenth = (size_t)-1};

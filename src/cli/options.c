@@ -290,6 +290,18 @@ int cli_nn_springs_stand_in(const char *nn_path, const char *tire_path,
                         "record it", tire_path);
 }
 
+/* A tire file without MF-Swift's cam data would give the cam another tire's shape: refused,
+ * the file named as every other tire error names it. */
+int cli_cam_keys(const tirenv_model_type *type, const tirenv_tire *tire, const char *path)
+{
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    if (type != tirenv_model_cam || !tirenv_tire_check_cam_keys(tire, &diag))
+        return CLI_EXIT_OK;
+    snprintf(diag.file, sizeof diag.file, "%s", path);
+    return cli_fail(TIRENV_EINVAL, &diag);
+}
+
 /* The network comes with the radius its x_N refers to, recorded in the model file. */
 int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_options *o,
               tirenv_model **out)
@@ -298,8 +310,9 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     *out = NULL;
-    if (type == tirenv_model_cam && tirenv_tire_check_cam_keys(tire, &diag))
-        return cli_fail(TIRENV_EINVAL, &diag);  /* the tire file lacks MF-Swift's cam data */
+    int code = cli_cam_keys(type, tire, o ? cli_tire_path(o, buf, sizeof buf) : "");
+    if (code)
+        return code;
     *out = tirenv_model_alloc(type, tire);
     if (!*out)  /* the tire was checked: only memory is left */
         return cli_fail(TIRENV_ENOMEM, NULL);

@@ -333,7 +333,7 @@ static int help_complete(const cli_parser *p, const struct option longopts[], si
     return code;
 }
 
-int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
+static int parse_argv(const cli_parser *p, int argc, char *argv[], cli_options *o)
 {
     memset(o, 0, sizeof *o);
     o->x_from = o->x_to = o->dx = NAN;
@@ -396,6 +396,20 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
     return code ? code : CLI_GO_ON;
 }
 
+/* getopt names the program in what it says of an unknown option or a missing value by
+ * argv[0], which for a command is its bare name ("envelope: unrecognized option"): the whole
+ * name instead, as the command's other messages have it. */
+int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o)
+{
+    char prog[80];
+    snprintf(prog, sizeof prog, "tirenv %s", p->name);
+    char *const argv0 = argv[0];
+    argv[0] = prog;
+    const int code = parse_argv(p, argc, argv, o);
+    argv[0] = argv0;
+    return code;
+}
+
 int cli_parse_crg_nan_mode(void *dst, const char *arg)
 {
     tirenv_crg_track_spec *spec = dst;
@@ -421,11 +435,24 @@ int cli_parse_crg_nan_mode(void *dst, const char *arg)
 
 /* ---- help ------------------------------------------------------------------------------- */
 
+const char cli_help_data_tire[] =
+    "  --tire FILE          tire property file (.tir); default: the tire the data set's\n"
+    "                       source.txt names, else tires/default.tir in the data\n"
+    "                       directory ($TIRENV_DATA, else the installed data)\n";
+
 void cli_help_tire(FILE *fp, int with_method)
 {
-    fputs("  --tire FILE          tire property file (.tir); default: tires/default.tir in\n"
-          "                       the data directory ($TIRENV_DATA, else the installed data)\n"
-          "  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
+    cli_help_tire_as(fp, with_method,
+                     "  --tire FILE          tire property file (.tir); default: tires/default.tir "
+                     "in\n"
+                     "                       the data directory ($TIRENV_DATA, else the installed "
+                     "data)\n");
+}
+
+void cli_help_tire_as(FILE *fp, int with_method, const char *tire_help)
+{
+    fputs(tire_help, fp);
+    fputs("  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
           "                       applied in order), e.g. --set RADIAL_STIFFNESS=1.8e6\n",
           fp);
     if (with_method)

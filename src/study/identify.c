@@ -326,8 +326,16 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
         }
         snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
     }
-    if (!status)
-        status = tirenv_contact_law_check(&out, diag);
+    if (!status && (status = tirenv_contact_law_check(&out, diag)) && source) {
+        /* The cases and the source model's flat ground are one tire's only if the tire is the
+         * one that simulated the data: another tire's (a --tire of the study) interleaves its
+         * contact lengths with the cases', and the law descends. */
+        char msg[sizeof diag->message];
+        snprintf(msg, sizeof msg, "the %s model of this tire and the data set's cases give no "
+                 "one relation between load and contact length (%.300s); expected the tire "
+                 "that simulated the data", tirenv_model_type_name(source), diag->message);
+        memcpy(diag->message, msg, sizeof msg);
+    }
     if (!status)
         *law = out;
     return status;

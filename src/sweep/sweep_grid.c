@@ -265,6 +265,15 @@ int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
                                              "value %zu is not finite", m + 1);
         }
     }
+    /* The cam's shape is never derived: a tire without its own would give every case another
+     * tire's cam, as tirenv_dataset_build_design refuses it. A swept key counts as given,
+     * since every case sets it: the first case's tire is checked. */
+    if (s->type == tirenv_model_cam) {
+        tirenv_tire first;
+        if ((status = tirenv_sweep__variant_tire(s, tire, 0, &first, diag)) ||
+            (status = tirenv_tire_check_cam_keys(&first, diag)))
+            return status;
+    }
     if (tirenv_sweep_count(s) == 0)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "grid",
                             "the grid has more than %u cases", TIRENV_SWEEP__MAX_CASES);

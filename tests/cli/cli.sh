@@ -35,8 +35,12 @@ run "$bin" frobnicate
 check "unknown command: named on stderr, exit 1" \
     '[ $rc -eq 1 ] && [ ! -s out ] && grep -q frobnicate err'
 run "$bin" envelope --model springs $cleat_F --frobnicate
-check "unknown option: usage on stderr, exit 1" \
-    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q "usage: tirenv envelope" err'
+check "unknown option: named by the whole command, usage on stderr, exit 1" \
+    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q "usage: tirenv envelope" err &&
+     grep -q "^tirenv envelope: unrecognized option .--frobnicate.$" err'
+run "$bin" fit --data
+check "an option without its value: named by the whole command, exit 1" \
+    '[ $rc -eq 1 ] && grep -q "^tirenv fit: option .--data. requires an argument$" err'
 run "$bin" envelope --model springs --cleat 0.30,0.10 --load 12kN
 check "malformed --load: exit 1 naming the option" '[ $rc -eq 1 ] && grep -q -- "--load" err'
 run "$bin" envelope --model springs --cleat 0.30 --load 1e4
@@ -67,6 +71,10 @@ check "springs peak h is below the 0.10 m cleat and above 90 mm" \
 check "summary on stderr names model, peak and first rise" \
     'grep -q "springs model" err && grep -q "peak h" err && grep -q "first rise" err'
 check "no temporary file left after success" '[ $rc -eq 0 ] && no_file none.csv'
+# The cam peaks over the cleat's centre, at a sweep x some 1e-17 m below 0: shown as 0.
+run "$bin" envelope --model cam --cleat 0.10,0.10 --contact-length 0.28 -o cam.csv
+check "summary: a peak at x = -1e-17 m reads x = 0.0000 m, not -0.0000" \
+    '[ $rc -eq 0 ] && grep -q "peak h 93.106 mm at x = 0.0000 m," err'
 run "$bin" envelope --model springs $cleat_F --x-from -0.9 --x-to 0.9 --dx 0.01
 check "without -o the same CSV goes to stdout" '[ $rc -eq 0 ] && cmp -s out c.csv'
 run "$bin" envelope --model springs $cleat_F -o - --x-from -0.9 --x-to 0.9 --dx 0.01

@@ -190,6 +190,40 @@ done
 cp unlisted err
 check "every command's --help lists all its long options ($(echo "$commands" | wc -w) commands)" \
     '[ -n "$commands" ] && [ ! -s unlisted ]'
+# ... and its usage synopsis (the lines before the first blank one) names every long option the
+# options list describes, but the obstacles (OBSTACLE there), --output (-o) and --help: a user
+# reads the synopsis first (envelope's lacked --jobs, --detail and --crg-nan-mode).
+: >unsummarised
+for c in $commands; do
+    "$bin" "$c" --help 2>/dev/null | awk -v c="$c" '
+        !body && /^$/ { body = 1; next }
+        !body { syn = syn " " $0; next }
+        !/^[ ][ ][ ]?[ ]?(-[a-z], )?--[a-z]/ { next }
+        {
+            line = $0
+            sub(/^ *(-[a-z], )?/, ", ", line)
+            while (match(line, /, --[a-z0-9-]+/)) {
+                name = substr(line, RSTART + 4, RLENGTH - 4)
+                line = substr(line, RSTART + RLENGTH)
+                if (name !~ /^(help|output|cleat|step|trapezoid|triangle|cylinder|sine|profile)$/ &&
+                    syn !~ ("--" name "([^a-z0-9-]|$)"))
+                    print c ": the synopsis lacks --" name
+            }
+        }' >>unsummarised
+done
+cp unsummarised err
+check "every command's usage synopsis names all its options but the obstacles, -o and --help" \
+    '[ ! -s unsummarised ]'
+# The commands that read a data set take its own tire by default, and their --tire says so
+# (it said tires/default.tir, as for the others).
+for c in compare study fit; do
+    run "$bin" "$c" --help
+    check "tirenv $c --help: --tire defaults to the tire the data set's source.txt names" \
+        '[ $rc -eq 0 ] && grep -A1 "^  --tire FILE" out | grep -q "source.txt names"'
+done
+run "$bin" dataset --help
+check "tirenv dataset --help: --tire defaults to the design's" \
+    '[ $rc -eq 0 ] && grep -q "^  --tire FILE  .*default: the design.s" out'
 run "$bin" predict --help
 check "tirenv predict --help lists --model, which it takes" \
     '[ $rc -eq 0 ] && grep -q "^  --model NAME  " out'

@@ -19,6 +19,16 @@ check "a quarter of the cases are validation ones" \
     '[ "$(grep -c ",validation," one/cases.csv)" -eq 6 ]'
 check "no progress bar when stderr is not a terminal" '! grep -q "cases (" err'
 
+check "no warning that a swept key is unread: the springs model reads INTERRADIAL_STIFFNESS" \
+    '! grep -q "may not read" err'
+# A key the model does not read gives every value the same cases: said (the README's example
+# once swept the springs model's RADIAL_STIFFNESS for the ring); the ring's air is read.
+run "$bin" sweep --model ring --lengths 0.1 --heights 0.05 --contact-lengths 0.33 \
+    --set RADIAL_STIFFNESS=1.4e6,1.8e6 --set INFLPRES=0.8e5,1.6e5 -o unread
+check "sweep warns of a swept key the model's curve does not depend on, and only of it" \
+    '[ $rc -eq 0 ] && grep -q "warning: --set RADIAL_STIFFNESS: the ring model.s curve over the first cleat is the same, bit for bit" err &&
+     ! grep -q "warning: --set INFLPRES" err && [ -s unread/cases.csv ]'
+
 run "$bin" dataset list one
 check "dataset list reads it" '[ $rc -eq 0 ] && grep -q c0023 out'
 run "$bin" train --data one --restarts 1 --epochs 20 -o nn.json

@@ -65,17 +65,37 @@ check "... flat --model cam without --load: 0.5 to 1.5 FNOMIN, the file's load r
 # contact laws are derived and compared above (flat) and in tests/study/test_onetire.c.
 for name in mf_185_80R14; do
     run "$bin" flat --model cam --tire "$samples/tir/$name.tir"
-    check "$name.tir has no cam shape keys (its Q_RA1, Q_RA2 derived): --model cam exits 2 naming them" \
-        '[ $rc -eq 2 ] && grep -q "cam keys ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER " err'
+    check "$name.tir has no cam shape keys (its Q_RA1, Q_RA2 derived): --model cam exits 2 naming them and the file" \
+        '[ $rc -eq 2 ] && grep -q "cam keys ELLIPS_SHIFT, ELLIPS_LENGTH, ELLIPS_HEIGHT, ELLIPS_ORDER " err &&
+         grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: the tire has no value" err'
     run "$bin" envelope --model cam --cleat 0.1,0.05 --load 5000 --tire "$samples/tir/$name.tir" \
         -o e.csv
     check "... and envelope --model cam too, without an output file" \
         '[ $rc -eq 2 ] && grep -q "cam keys" err && no_file e.csv'
+    run "$bin" compare --models rigid,cam --cases R --no-images --tire "$samples/tir/$name.tir" \
+        -o cmp
+    check "... and compare --models rigid,cam, naming the file, without a report (it compared the default tire's cam)" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -e cmp ]'
+    run "$bin" sweep --model cam --lengths 0.05 --heights 0.02 --loads 3800 \
+        --tire "$samples/tir/$name.tir" -o swp
+    check "... and sweep --model cam, naming the file, writing nothing (it swept the default tire's cam)" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err &&
+         [ ! -e swp ] && [ ! -e swp.partial ]'
+    run "$bin" bench --quick --tire "$samples/tir/$name.tir"
+    check "... and bench, naming the file, before any timing (it timed the default tire's cam, then stopped in the ride)" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -s out ]'
+    run "$bin" dataset build --design 205-60R15 --tire "$samples/tir/$name.tir" -o ds
+    check "... and dataset build of the cam's design, naming the file, writing nothing" \
+        '[ $rc -eq 2 ] && grep -q "^tirenv: $samples/tir/$name.tir: ELLIPS_SHIFT: " err && [ ! -e ds ]'
 done
 run "$bin" flat --model cam --tire "$samples/tir/mf_185_80R14.tir" --set Q_RA1=0.6 \
     --set Q_RA2=0.7 --set ELLIPS_SHIFT=0.8 --set ELLIPS_LENGTH=1.4 --set ELLIPS_HEIGHT=0.9 \
     --set ELLIPS_ORDER=1.6
 check "--set of the missing cam keys makes the cam run" '[ $rc -eq 0 ]'
+run "$bin" sweep --model cam --lengths 0.05 --heights 0.02 --loads 3800 \
+    --tire "$samples/tir/mf_185_80R14.tir" --set ELLIPS_SHIFT=0.8,0.9 --set ELLIPS_LENGTH=1.4 \
+    --set ELLIPS_HEIGHT=0.9 --set ELLIPS_ORDER=1.6 -o swp2
+check "... and so do swept ones, in a sweep" '[ $rc -eq 0 ] && [ -f swp2/cases.csv ]'
 
 : >empty.tir
 run "$bin" flat --tire empty.tir

@@ -113,6 +113,17 @@ static void test_law_of_embedded_data(void **state)
         assert_int_equal(tirenv_contact_law_eval(&law, ds.cases[i].load, &l_c, &d), TIRENV_OK);
         assert_true(l_c == ds.cases[i].contact_length);
     }
+    /* Another tire's ring (the 185/80R14 car tire's, derived from its MF-Tyre keys) with the
+     * same cases: no ascending law, and the message says the tire is not the data's. */
+    tirenv_tire car = tirenv_tire_default();
+    tirenv_tir_origin origin;
+    const char *car_path = TIRENV_SAMPLES "/tir/mf_185_80R14.tir";
+    assert_int_equal(tirenv_tir_read(car_path, &car, &d), TIRENV_OK);
+    assert_int_equal(tirenv_tir_derive(car_path, &car, TIRENV_TIR_RING, &origin, &d), TIRENV_OK);
+    assert_int_equal(tirenv_contact_law_of_data(&ds, source, &car, &law, what, sizeof what, &d),
+                     TIRENV_EINVAL);
+    assert_non_null(strstr(d.message, "the ring model of this tire and the data set's cases"));
+    assert_non_null(strstr(d.message, "expected the tire that simulated the data"));
     tirenv_dataset_free(&ds);
 }
 

@@ -179,6 +179,21 @@ static void test_checks(void **state)
     s.shard = 3;
     s.shards = 3;
     assert_int_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_EINVAL);
+    /* The cam on a tire without its own shape keys: refused, naming the first missing; the
+     * springs model does not need them; a swept key counts as the tire's own. */
+    tirenv_tire no_shift = tirenv_tire_default();
+    no_shift.cam.given = TIRENV_CAM_ALL & ~TIRENV_CAM_SHIFT;
+    s = grid();
+    assert_int_equal(tirenv_sweep_check(&s, &no_shift, &d), TIRENV_OK);
+    s.type = tirenv_model_cam;
+    assert_int_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_OK);
+    assert_int_equal(tirenv_sweep_check(&s, &no_shift, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "ELLIPS_SHIFT");
+    assert_non_null(strstr(d.message, "cam keys ELLIPS_SHIFT ("));
+    const double shifts[] = {0.8328, 0.7};
+    s.keys[1] = (tirenv_sweep_axis){"ELLIPS_SHIFT", 2, shifts};
+    s.n_keys = 2;
+    assert_int_equal(tirenv_sweep_check(&s, &no_shift, &d), TIRENV_OK);
 }
 
 /* ---- runs -------------------------------------------------------------------------------- */
