@@ -14,17 +14,33 @@ tir=$repo/data/tires/default.tir
 car=$repo/data/tires/205-60R15-mfswift.tir
 set_data=$repo/data/dataset
 
+# feed SRC FIFO: SRC's bytes written into FIFO in the background, the writer's id in $writer.
+# Its open of FIFO runs under timeout, so that a writer nobody reads ends by itself.
+feed() {
+    timeout 60 sh -c 'exec cat "$0" >"$1" 2>/dev/null' "$1" "$2" &
+    writer=$!
+}
+
+# release_writer FIFO: ends the writer of feed. A TERM can reach the shell between its fork
+# and its open of the FIFO and be lost there (seen once: the test then waited for ever), so the
+# FIFO is also opened read-write, which never blocks and lets a waiting open through (its
+# writes then end on a closed pipe).
+release_writer() {
+    kill "$writer" 2>/dev/null
+    : <>"$1"
+    wait "$writer" 2>/dev/null
+}
+
 # fifo SRC CMD...: CMD with each argument @F@ replaced by ./ff, a FIFO that a background cat
 # fills with SRC's bytes, under timeout (exit status 124 on a hang); stdout to ./out, stderr
 # to ./err, exit status in $rc. A writer still waiting to open the FIFO (the command refused
-# it before opening it) is ended by its own id.
+# it before opening it) is ended by release_writer.
 fifo() {
     src=$1
     shift
     rm -f ff
     mkfifo ff
-    cat "$src" >ff 2>/dev/null &
-    writer=$!
+    feed "$src" ff
     nargs=$#
     for a; do
         [ "$a" = @F@ ] && a=$PWD/ff
@@ -33,8 +49,7 @@ fifo() {
     shift "$nargs"
     timeout 120 "$@" >out 2>err
     rc=$?
-    kill "$writer" 2>/dev/null
-    wait "$writer" 2>/dev/null
+    release_writer ff
     rm -f ff
 }
 
@@ -182,11 +197,9 @@ for f in sweep.txt cases.csv tire.tir; do
     cp -r part0 fpart
     rm "fpart/$f"
     mkfifo "fpart/$f"
-    cat "part0/$f" >"fpart/$f" 2>/dev/null &
-    writer=$!
+    feed "part0/$f" "fpart/$f"
     run timeout 120 "$bin" sweep merge fpart part1 -o merged
-    kill "$writer" 2>/dev/null
-    wait "$writer" 2>/dev/null
+    release_writer "fpart/$f"
     check "sweep merge, a part's $f a FIFO: exit 0, the same data set" \
         '[ $rc -eq 0 ] && diff -r merged merged-want >/dev/null'
     rm -rf fpart merged
