@@ -34,7 +34,7 @@ hub deflection and the contact length from the cam's and the ring's (`tirenv fla
 (restarted) on the L^16 norm, then on the largest itself. The linear law's optimum comes first,
 from `tirenv identify --reference cam,ring --loads ...` (the same min-max in C, docs/models.md
 section 14.1, to the four digits it writes; --linear numpy: this script's own search, c_b/c_r
-scanned, then golden sections, the search the 205/60R15's shipped values came from), and is
+scanned, then golden sections, which the 205/60R15's values came from until the CLI wrote them), and is
 re-run by `tirenv flat --set`; the bilinear law's simplex (log c_b/c_r, log w_1, logit beta)
 starts from the best 3 of 18 seeds.
 
