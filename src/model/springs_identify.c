@@ -130,58 +130,15 @@ int tirenv_springs_identify(tirenv_springs_params *par, size_t n, const double l
 
 /* ---- With the sidewall in series (docs/models.md sections 4.9 and 14.1) ---- */
 
-/* The elements' flat ground at one beta per unit c_r, tabulated at TABLE deflections spaced
- * geometrically from 0.3 times the smallest target deflection to 1.5 times the largest: their
- * logs, ascending, for interpolation at any load and c_r (the elements' load at a deflection
- * is proportional to c_r, their contact length does not depend on it). */
+/* The elements' flat ground a beta (tirenv_springs__table) at TABLE deflections from 0.3 times
+ * the smallest target deflection to 1.5 times the largest. */
 enum { TABLE = 48 };
-typedef struct {
-    double log_f[TABLE], log_d[TABLE], log_l[TABLE];
-    size_t n;
-} unit_table;
-
-static int table_of(const tirenv_springs_params *par, double beta, double d_lo, double d_hi,
-                    unit_table *tb, tirenv_diag *diag)
-{
-    double d[TABLE], f[TABLE], l[TABLE];
-    d_hi = fmin(d_hi, 0.9 * par->R0);
-    for (size_t k = 0; k < TABLE; k++)
-        d[k] = d_lo * pow(d_hi / d_lo, (double)k / (TABLE - 1));
-    const int status = tirenv_springs__unit_load(par, beta, TABLE, d, f, l, diag);
-    if (status)
-        return status;
-    tb->n = 0;
-    for (size_t k = 0; k < TABLE; k++)
-        if (f[k] > 0 && l[k] > 0 && (tb->n == 0 || log(f[k]) > tb->log_f[tb->n - 1])) {
-            tb->log_f[tb->n] = log(f[k]);
-            tb->log_d[tb->n] = log(d[k]);
-            tb->log_l[tb->n] = log(l[k]);
-            tb->n++;
-        }
-    return TIRENV_OK;
-}
-
-/* The elements' deflection and contact length (m) at unit load f (N per unit c_r), linear in
- * the logs between the table's points; 0 outside it. */
-static int table_at(const unit_table *tb, double f, double *d, double *l)
-{
-    const double x = log(f);
-    if (tb->n < 2 || !(x >= tb->log_f[0] && x <= tb->log_f[tb->n - 1]))
-        return 0;
-    size_t k = 1;
-    while (k < tb->n - 1 && tb->log_f[k] < x)
-        k++;
-    const double t = (x - tb->log_f[k - 1]) / (tb->log_f[k] - tb->log_f[k - 1]);
-    *d = exp(tb->log_d[k - 1] + t * (tb->log_d[k] - tb->log_d[k - 1]));
-    *l = exp(tb->log_l[k - 1] + t * (tb->log_l[k] - tb->log_l[k - 1]));
-    return 1;
-}
 
 /* One identification's targets and the trial values the nested searches share. */
 typedef struct {
     size_t n;
     const double *G, *d, *l;      /* targets: N, m, m */
-    const unit_table *tb;
+    const tirenv_springs__table *tb;
     double d_el[MAX_LOADS];       /* the elements' deflection at the trial c_r, m */
     double r_el[MAX_LOADS];       /* log(d_el/d): the residual where the sidewall is rigid */
     double ss_l;                  /* sum of the log contact-length residuals' 8th powers */
@@ -234,7 +191,7 @@ static double ss_log_c_r(double log_c_r, void *p)
     x->ss_l = 0;
     for (size_t i = 0; i < x->n; i++) {
         double d_e, l_e;
-        if (!table_at(x->tb, x->G[i] / c_r, &d_e, &l_e))
+        if (!tirenv_springs__table_at(x->tb, x->G[i] / c_r, &d_e, &l_e))
             return 1e6;
         x->d_el[i] = d_e;
         x->r_el[i] = log(d_e / x->d[i]);  /* ss_compliance's with a rigid sidewall */
@@ -259,10 +216,13 @@ typedef struct {
 static double ss_log_beta(double log_beta, void *p)
 {
     beta_ctx *b = p;
-    unit_table tb;
+    double store[6 * TABLE];
+    tirenv_springs__table tb;
+    tirenv_springs__table_init(&tb, store, TABLE);
     if (b->status)
         return 1e6;
-    if ((b->status = table_of(b->par, exp(log_beta), b->d_lo, b->d_hi, &tb, b->diag)))
+    if ((b->status = tirenv_springs__table_of(b->par, exp(log_beta), b->d_lo, b->d_hi, &tb,
+                                              b->diag)))
         return 1e6;
     if (tb.n < 2)
         return 1e6;
@@ -302,8 +262,10 @@ int tirenv_springs_identify_sidewall(tirenv_springs_params *par, size_t n, const
     if (b.status)
         return b.status;
     /* The minimiser's own values, from its table once more. */
-    unit_table tb;
-    int status = table_of(par, exp(log_beta), b.d_lo, b.d_hi, &tb, diag);
+    double store[6 * TABLE];
+    tirenv_springs__table tb;
+    tirenv_springs__table_init(&tb, store, TABLE);
+    int status = tirenv_springs__table_of(par, exp(log_beta), b.d_lo, b.d_hi, &tb, diag);
     if (status)
         return status;
     x.tb = &tb;

@@ -513,4 +513,22 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
 int tirenv_springs__unit_load(const tirenv_springs_params *par, double beta, size_t n,
                               const double d[], double f[], double l[], tirenv_diag *diag);
 
+/* The elements' flat ground at one beta per unit c_r (springs_table.c), at `points`
+ * deflections spaced geometrically from d_lo to d_hi (at most 0.9 R0): the logs of the load,
+ * deflection and contact length where the load rises, n of them, ascending. Read at any load
+ * and c_r: the elements' load at a deflection is proportional to c_r, their contact length
+ * does not depend on it. d, f, l are the force evaluations' own arrays. */
+typedef struct {
+    size_t points, n;
+    double *log_f, *log_d, *log_l, *d, *f, *l;
+} tirenv_springs__table;
+/* A table of points points in store, 6 * points doubles the caller keeps. */
+void tirenv_springs__table_init(tirenv_springs__table *tb, double *store, size_t points);
+/* Tabulates tb (points >= 2) for par with c_b = beta*c_r; the model's errors. */
+int tirenv_springs__table_of(const tirenv_springs_params *par, double beta, double d_lo,
+                             double d_hi, tirenv_springs__table *tb, tirenv_diag *diag);
+/* The elements' deflection *d and contact length *l (m) at unit load f, linear in the logs
+ * between the table's points: 1, or 0 outside the table. */
+int tirenv_springs__table_at(const tirenv_springs__table *tb, double f, double *d, double *l);
+
 #endif

@@ -23,57 +23,6 @@ enum {
     GOLDEN = 40   /* steps of each golden section after it: its bracket to 1e-8 of its width */
 };
 
-/* The elements' flat ground at one beta per unit c_r at TABLE deflections spaced
- * geometrically: their logs, ascending in the load, for interpolation at any load and c_r
- * (with the force evaluations' own arrays: one allocation, 48 kB, for the identification). */
-typedef struct {
-    double log_f[TABLE], log_d[TABLE], log_l[TABLE];
-    size_t n;
-    double d[TABLE], f[TABLE], l[TABLE];
-} unit_table;
-
-static int table_of(const tirenv_springs_params *par, double beta, double d_lo, double d_hi,
-                    unit_table *tb, tirenv_diag *diag)
-{
-    double *const d = tb->d, *const f = tb->f, *const l = tb->l;
-    d_hi = fmin(d_hi, 0.9 * par->R0);
-    for (size_t k = 0; k < TABLE; k++)
-        d[k] = d_lo * pow(d_hi / d_lo, (double)k / (TABLE - 1));
-    const int status = tirenv_springs__unit_load(par, beta, TABLE, d, f, l, diag);
-    if (status)
-        return status;
-    tb->n = 0;
-    for (size_t k = 0; k < TABLE; k++)
-        if (f[k] > 0 && l[k] > 0 && (tb->n == 0 || log(f[k]) > tb->log_f[tb->n - 1])) {
-            tb->log_f[tb->n] = log(f[k]);
-            tb->log_d[tb->n] = log(d[k]);
-            tb->log_l[tb->n] = log(l[k]);
-            tb->n++;
-        }
-    return TIRENV_OK;
-}
-
-/* The elements' deflection and contact length (m) at unit load f, linear in the logs between
- * the table's points (a bisection for the interval); 0 outside the table. */
-static int table_at(const unit_table *tb, double f, double *d, double *l)
-{
-    const double x = log(f);
-    if (tb->n < 2 || !(x >= tb->log_f[0] && x <= tb->log_f[tb->n - 1]))
-        return 0;
-    size_t lo = 0, hi = tb->n - 1;
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (tb->log_f[mid] < x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    const double t = (x - tb->log_f[lo]) / (tb->log_f[hi] - tb->log_f[lo]);
-    *d = exp(tb->log_d[lo] + t * (tb->log_d[hi] - tb->log_d[lo]));
-    *l = exp(tb->log_l[lo] + t * (tb->log_l[hi] - tb->log_l[lo]));
-    return 1;
-}
-
 /* One identification's targets and the trial values the nested searches share. */
 typedef struct {
     size_t n, m;                  /* loads, references */
@@ -82,7 +31,7 @@ typedef struct {
     int sidewall;                 /* whether k_s and F_s0 are identified */
     double d_max;                 /* the largest reference deflection, m */
     int steps;                    /* of the golden sections over c_r, F_s0 and 1/k_s */
-    const unit_table *tb;
+    const tirenv_springs__table *tb;
     double d_el[MAX_LOADS];       /* the elements' deflection at the trial c_r, m */
     double F_s0;                  /* trial preload, N */
 } minmax_ctx;
@@ -162,7 +111,7 @@ static double worst_log_c_r(double log_c_r, void *p)
     double worst_l = 0;
     for (size_t i = 0; i < x->n; i++) {
         double d_e, l_e;
-        if (!table_at(x->tb, x->G[i] / c_r, &d_e, &l_e))
+        if (!tirenv_springs__table_at(x->tb, x->G[i] / c_r, &d_e, &l_e))
             return INFINITY;
         x->d_el[i] = d_e;
         for (size_t j = 0; j < x->m; j++)
@@ -173,7 +122,7 @@ static double worst_log_c_r(double log_c_r, void *p)
 }
 
 /* The c_r that keep every load within the table: [*lo, *hi] in log c_r; 0 if none. */
-static int c_r_range(const minmax_ctx *x, const unit_table *tb, double *lo, double *hi)
+static int c_r_range(const minmax_ctx *x, const tirenv_springs__table *tb, double *lo, double *hi)
 {
     if (tb->n < 2)
         return 0;
@@ -186,7 +135,7 @@ static int c_r_range(const minmax_ctx *x, const unit_table *tb, double *lo, doub
 typedef struct {
     const tirenv_springs_params *par;
     minmax_ctx *x;
-    unit_table *tb;
+    tirenv_springs__table *tb;
     double d_lo, d_hi;            /* the table's deflections, m */
     int status;
     tirenv_diag *diag;
@@ -198,7 +147,8 @@ static double worst_log_beta(double log_beta, void *p)
     double lo, hi;
     if (b->status)
         return INFINITY;
-    if ((b->status = table_of(b->par, exp(log_beta), b->d_lo, b->d_hi, b->tb, b->diag)))
+    if ((b->status = tirenv_springs__table_of(b->par, exp(log_beta), b->d_lo, b->d_hi, b->tb,
+                                              b->diag)))
         return INFINITY;
     if (!c_r_range(b->x, b->tb, &lo, &hi))
         return INFINITY;
@@ -239,7 +189,8 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
         return b->status;
     /* The minimiser's own values, from its table once more. */
     double lo, hi;
-    const int status = table_of(par, exp(log_beta), b->d_lo, b->d_hi, b->tb, diag);
+    const int status =
+        tirenv_springs__table_of(par, exp(log_beta), b->d_lo, b->d_hi, b->tb, diag);
     if (status)
         return status;
     if (!c_r_range(x, b->tb, &lo, &hi))
@@ -294,13 +245,15 @@ int tirenv_springs_identify_minmax(tirenv_springs_params *par, size_t n, const d
             d_min = fmin(d_min, d);
             d_max = fmax(d_max, d);
         }
-    unit_table *tb = malloc(sizeof *tb);
-    if (!tb)
+    double *store = malloc(6 * TABLE * sizeof *store);
+    if (!store)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    tirenv_springs__table table;
+    tirenv_springs__table_init(&table, store, TABLE);
     minmax_ctx x = {.n = n, .m = m, .G = load, .d = deflection, .l = contact_length,
                     .sidewall = sidewall, .d_max = d_max};
-    beta_ctx b = {par, &x, tb, 0.3 * d_min, 1.5 * d_max, TIRENV_OK, diag};
+    beta_ctx b = {par, &x, &table, 0.3 * d_min, 1.5 * d_max, TIRENV_OK, diag};
     const int status = search(par, &b);
-    free(tb);
+    free(store);
     return status;
 }
