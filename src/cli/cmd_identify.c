@@ -195,6 +195,20 @@ static void largest(size_t n, const tirenv_flat a[], const tirenv_flat b[], doub
     }
 }
 
+/* The identified values (the springs model's four, the cam's four) rounded to digits
+ * significant digits, as the file gets them and the table shows them. */
+static void round_identified(tirenv_tire *id, int digits)
+{
+    double *const ids[] = {&id->springs.c_r, &id->springs.c_b, &id->springs.k_s,
+                           &id->springs.F_s0, &id->cam.c_z, &id->cam.q_fz2, &id->cam.q_ra1,
+                           &id->cam.q_ra2};
+    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+        char t[32];
+        snprintf(t, sizeof t, "%.*g", digits, *ids[k]);
+        *ids[k] = strtod(t, NULL);
+    }
+}
+
 /* --reference with several models, or the cam: the springs model identified on them together
  * (min-max, tirenv_identify_flat_on), the cam as read where it is a reference; every model
  * tabled, each against each reference (the models: the references in their order, then the
@@ -231,14 +245,7 @@ static int identify_several(const tirenv_tire *tire, const char *path, const ref
     }
     /* Four significant digits, as written: a min-max optimum sits where several differences
      * are equal, and three digits would move it (docs/models.md section 14.1). */
-    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.springs.k_s,
-                           &id.springs.F_s0, &id.cam.c_z, &id.cam.q_fz2, &id.cam.q_ra1,
-                           &id.cam.q_ra2};
-    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
-        char t[32];
-        snprintf(t, sizeof t, "%.4g", *ids[k]);
-        *ids[k] = strtod(t, NULL);
-    }
+    round_identified(&id, 4);
     const int cam_kept = cam_ref || write_springs;
     if (cam_kept)
         id.cam = tire->cam; /* the file's own laws, kept and tabled */
@@ -483,14 +490,7 @@ int cli_identify_main(int argc, char *argv[])
         return cli_fail(status, &diag);
     }
     /* Three significant digits, as written: the table and the note describe the file. */
-    double *const ids[] = {&id.springs.c_r, &id.springs.c_b, &id.springs.k_s,
-                           &id.springs.F_s0, &id.cam.c_z, &id.cam.q_fz2, &id.cam.q_ra1,
-                           &id.cam.q_ra2};
-    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
-        char t[32];
-        snprintf(t, sizeof t, "%.3g", *ids[k]);
-        *ids[k] = strtod(t, NULL);
-    }
+    round_identified(&id, 3);
     if (write_springs)
         id.cam = tire.cam; /* the file's own laws, kept and tabled */
     tirenv_flat fs[MAX_LOADS], fc[MAX_LOADS];
