@@ -59,7 +59,8 @@ static void usage(FILE *fp)
           "                       (default out/compare)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire_as(fp, 1, cli_help_data_tire);
+    cli_help_tire_as(fp, 1, "RADIAL_STIFFNESS=4.5e5 (the springs model's)",
+                     cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 

@@ -68,7 +68,7 @@ static void usage(FILE *fp)
     cli_help_road(fp, 1);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire(fp, 1, NULL);
     cli_help_jobs(fp);
     fputs("  -h, --help           show this help\n", fp);
 }
