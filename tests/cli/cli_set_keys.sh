@@ -5,6 +5,7 @@
 # without the --set, byte for byte (the key is indeed not read: no false warning).
 # Usage: tests/cli/cli_set_keys.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
 # shellcheck disable=SC2016,SC2034,SC2086
+repo=$(cd "$(dirname "$0")/../.." && pwd)
 . "$(dirname "$0")/../lib/clilib.sh"
 
 # One key of each section, at a value other than the default tire's that passes its check.
@@ -48,6 +49,17 @@ EOF
 run "$bin" envelope --model ring --set RADIAL_STIFFNESS=1e6 $obstacle --load 20000 -o r.csv
 check "envelope --model ring --set RADIAL_STIFFNESS: the springs model's, the ring does not read it" \
     '[ $rc -eq 0 ] && grep -qx "tirenv: --set RADIAL_STIFFNESS: \[ENVELOPING_SPRINGS\] is the springs model.s; the ring does not read it" err'
+# compare: the models compared and the one that simulated the data (the embedded data set's
+# ring), each at the case's load: the rigid disc does not read the springs model's keys here.
+run "$bin" compare --data "$repo/data/dataset" --models rigid --no-images -o c0
+run "$bin" compare --data "$repo/data/dataset" --models rigid --no-images -o c1 \
+    --set RADIAL_STIFFNESS=9e5 --set Q_FZ2=30 --set FORCE_TOLERANCE=1e-3
+check "compare --models rigid: springs and cam keys named with both models, the solver's not" \
+    '[ $rc -eq 0 ] && [ "$(grep -c "^tirenv: --set" err)" -eq 2 ] &&
+     grep -qx "tirenv: --set RADIAL_STIFFNESS: \[ENVELOPING_SPRINGS\] is the springs model.s; neither the rigid disc nor the ring reads it" err &&
+     grep -q "^tirenv: --set Q_FZ2: \[VERTICAL\] is the cam.s; neither" err'
+check "compare: the warned keys leave every error and curve the same bytes" \
+    'cmp -s c0/errors.csv c1/errors.csv && cmp -s c0/AB.dat c1/AB.dat && cmp -s c0/F.dat c1/F.dat'
 run "$bin" identify --reference ring --set Q_FZ2=30
 check "identify: the reference, the springs model and the cam read every section" \
     '[ $rc -eq 0 ] && ! grep -q -- "--set" err'
