@@ -91,5 +91,6 @@ int cli_predict_main(int argc, char *argv[])
                   "options");
         return CLI_EXIT_USAGE;
     }
+    o.runs[o.n_runs++] = o.type ? o.type : tirenv_model_nn;  /* --set's warnings */
     return cli_envelope_run("predict", &o, o.type ? o.type : tirenv_model_nn, &e);
 }

@@ -60,6 +60,12 @@ check "compare --models rigid: springs and cam keys named with both models, the 
      grep -q "^tirenv: --set Q_FZ2: \[VERTICAL\] is the cam.s; neither" err'
 check "compare: the warned keys leave every error and curve the same bytes" \
     'cmp -s c0/errors.csv c1/errors.csv && cmp -s c0/AB.dat c1/AB.dat && cmp -s c0/F.dat c1/F.dat'
+run "$bin" predict --nn "$data/nn-v1.json" $obstacle --contact-length 0.28 -o p0.csv
+run "$bin" predict --nn "$data/nn-v1.json" $obstacle --contact-length 0.28 -o p1.csv \
+    --set FOUNDATION_STIFFNESS=1.2e5 --set RADIAL_STIFFNESS=4.5e5
+check "predict runs the network: the ring's key named, the springs model's (its stand-in) not" \
+    '[ $rc -eq 0 ] && [ "$(grep -c "^tirenv: --set" err)" -eq 1 ] &&
+     grep -qx "tirenv: --set FOUNDATION_STIFFNESS: \[ENVELOPING_RING\] is the ring.s; the network does not read it" err'
 run "$bin" identify --reference ring --set Q_FZ2=30
 check "identify: the reference, the springs model and the cam read every section" \
     '[ $rc -eq 0 ] && ! grep -q -- "--set" err'
