@@ -163,7 +163,8 @@ int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o);
 void cli_help_tire(FILE *fp, int with_method, const char *example);
 /* The same for a command whose tire defaults to another than tires/default.tir: tire_help is
  * its whole --tire entry, as it prints. */
-void cli_help_tire_as(FILE *fp, int with_method, const char *example, const char *tire_help);
+void cli_help_tire_as(FILE *fp, int with_method, const char *example,
+                      const char *tire_help);
 /* The --tire entry of the commands that read a data set: the tire its source.txt names. */
 extern const char cli_help_data_tire[];
 void cli_help_load(FILE *fp);

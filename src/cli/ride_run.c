@@ -90,8 +90,8 @@ static int cam_keys(const ride_options *r, const ride_setup *s, const char *vehi
         tire_named_by(r, vehicle, axle, ax->tire_file[0] != '\0', named, sizeof named);
         snprintf(diag.file, sizeof diag.file, "%s", s->tire_path[axle]);
         char msg[1200];
-        cli_error("%s (the %s axle's tire, named by %s)", tirenv_diag_format(&diag, msg, sizeof msg),
-                  axle ? "rear" : "front", named);
+        cli_error("%s (the %s axle's tire, named by %s)",
+                  tirenv_diag_format(&diag, msg, sizeof msg), axle ? "rear" : "front", named);
         return cli_exit_code(TIRENV_EINVAL);
     }
     return CLI_EXIT_OK;

@@ -114,11 +114,12 @@ void cli_set_warnings(const char *const sets[], size_t n_sets,
             fprintf(stderr, "%s does not read it\n", noun(runs[0]));
             continue;
         }
+        /* "neither A nor B reads it", "none of A, B and C reads it" */
         fputs(n_runs == 2 ? "neither " : "none of ", stderr);
-        for (size_t k = 0; k < n_runs; ++k)
-            fprintf(stderr, "%s%s", k == 0 ? "" : n_runs == 2 ? " nor " : k + 1 < n_runs ? ", "
-                                                                                      : " and ",
-                    noun(runs[k]));
+        for (size_t k = 0; k < n_runs; ++k) {
+            const char *sep = k == 0 ? "" : n_runs == 2 ? " nor " : k + 1 < n_runs ? ", " : " and ";
+            fprintf(stderr, "%s%s", sep, noun(runs[k]));
+        }
         fputs(" reads it\n", stderr);
     }
 }
