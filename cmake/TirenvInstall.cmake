@@ -55,4 +55,8 @@ endif()
 # Every data directory (tires, vehicles, dataset, ...), where the CLI looks for them.
 install(DIRECTORY data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tirenv)
 install(FILES README.md LICENSE NOTICE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# README.md links to these: beside it in the same relative places, so that the links work in
+# the installed tree (tests/package/install.sh follows every one).
+install(FILES python/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR}/python)
+install(FILES fmu/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR}/fmu)
 install(DIRECTORY docs DESTINATION ${CMAKE_INSTALL_DOCDIR})

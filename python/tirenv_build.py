@@ -68,6 +68,8 @@ typedef struct { double fnomin; double rho_nominal; unsigned own; unsigned deriv
                  double cam_ring_contact_length; char note[1024]; ...; } tirenv_tir_origin;
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
+int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
+                           tirenv_tir_origin *origin, tirenv_diag *diag);
 
 /* version.h: the headers' version, the project's */
 #define TIRENV_VERSION_MAJOR ...

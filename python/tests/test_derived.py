@@ -2,6 +2,7 @@
 """An MF-Tyre file without tirenv's sections gives Python's Tire the models the CLI derives
 (tirenv_tir_derive, docs/models.md section 14.2): the same C function, so the same doubles."""
 import os
+import threading
 import warnings
 
 import pytest
@@ -116,3 +117,60 @@ def test_cam_refused_without_its_shape_keys(cli, tmp_path):
     m = tirenv.Model("cam", given)
     m.set(tirenv.Profile.cleat(0.05, 0.02), 3800)
     assert m.sweep()["h_m"].max() > 0.01
+
+
+def _from_fifo(tmp_path, text, make):
+    """make(path) on a FIFO that a thread fills once with text, behind a timeout: a second
+    read would wait for ever for another writer. Returns make's result or raises its error."""
+    fifo = tmp_path / "tire.fifo"
+    os.mkfifo(fifo)
+
+    def feed():
+        with open(fifo, "w") as f:
+            f.write(text)
+
+    writer = threading.Thread(target=feed, daemon=True)
+    writer.start()
+    box = {}
+
+    def call():
+        try:
+            box["value"] = make(str(fifo))
+        except Exception as e:  # handed to the test's thread
+            box["error"] = e
+
+    caller = threading.Thread(target=call, daemon=True)
+    caller.start()
+    caller.join(timeout=60)
+    hung = caller.is_alive()
+    if hung:  # release the reader waiting to open: a writer that writes nothing
+        os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK))
+        caller.join(timeout=10)
+    writer.join(timeout=10)
+    assert not hung, "the FIFO was read twice: the second read waited for a writer"
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
+
+
+def test_tire_from_a_fifo_reads_it_once(tmp_path, source_dir):
+    path = os.path.join(source_dir, "data", "tires", "default.tir")
+    with open(path) as f:
+        text = f.read()
+    tire = _from_fifo(tmp_path, text, tirenv.Tire)
+    assert tire == tirenv.Tire(path)  # every key the same value
+
+
+def test_fifo_without_a_model_is_refused_not_read_again(tmp_path):
+    text = "[DIMENSION]\nUNLOADED_RADIUS = 0.376\n[VERTICAL]\nVERTICAL_STIFFNESS = 1.75e5\n"
+
+    def springs(path):
+        with pytest.warns(UserWarning, match="no FNOMIN"):
+            tire = tirenv.Tire(path)
+        return tirenv.Model("springs", tire)
+
+    with pytest.raises(tirenv.TirenvError) as e:
+        _from_fifo(tmp_path, text, springs)
+    assert isinstance(e.value, OSError)
+    assert e.value.file == str(tmp_path / "tire.fifo")
+    assert "not a regular file" in str(e.value) and "springs model" in str(e.value)

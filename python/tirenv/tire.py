@@ -3,6 +3,8 @@
 read back as a mapping."""
 import collections
 import collections.abc
+import os
+import stat
 import warnings
 
 from ._c import ffi, lib, check, new_diag, path_bytes
@@ -41,13 +43,12 @@ class Tire(collections.abc.Mapping):
         diag = new_diag()
         self._origin = ffi.new("tirenv_tir_origin *")
         if path is not None:
-            check(lib.tirenv_tir_read(path_bytes(path), self._t, diag), diag)
             # The models the file has no section for, derived from its MF-Tyre keys as every
             # CLI command does (tirenv_tir_derive, docs/models.md section 14.2): the same C
-            # function, so the same tire; what it derived is said as the CLI says it on
-            # standard error, as a warning.
-            check(lib.tirenv_tir_derive(path_bytes(path), self._t, 0, self._origin, diag),
-                  diag)
+            # function, so the same tire, on one read of the file, which may be a pipe; what
+            # it derived is said as the CLI says it on standard error, as a warning.
+            check(lib.tirenv_tir_read_derive(path_bytes(path), self._t, 0, self._origin,
+                                             diag), diag)
             if self._origin.note[0] != b"\0":
                 warnings.warn(f"{path}: {self.derived_note}", stacklevel=2)
         for key, value in (set or {}).items():
@@ -79,9 +80,24 @@ class Tire(collections.abc.Mapping):
         if self.path is None or not bits & ~(self._origin.own | self._origin.derived):
             return
         t, origin, diag = ffi.new("tirenv_tire *"), ffi.new("tirenv_tir_origin *"), new_diag()
+        # The missing key is named by reading the file again, which a pipe (or any file but a
+        # regular one) cannot give: refused naming the file, as the CLI refuses a pipe it
+        # would read twice, rather than waiting for ever on a second writer.
+        try:
+            regular = stat.S_ISREG(os.stat(self.path).st_mode)
+        except OSError:
+            regular = True  # gone: the read below says so
+        if not regular:
+            name = path_bytes(self.path)
+            diag.file = name[:ffi.sizeof(diag.file) - 1]
+            models = " and ".join(m for m, b in (("springs", lib.TIRENV_TIR_SPRINGS),
+                                                 ("ring", lib.TIRENV_TIR_RING)) if bits & b)
+            diag.message = (f"not a regular file (a pipe can be read only once): the {models} "
+                            f"model needs a section the file neither has nor derives, named "
+                            f"by reading the file again; expected a regular file").encode()
+            check(lib.TIRENV_EIO, diag)
         t[0] = lib.tirenv_tire_default()
-        check(lib.tirenv_tir_read(path_bytes(self.path), t, diag), diag)
-        check(lib.tirenv_tir_derive(path_bytes(self.path), t, bits, origin, diag), diag)
+        check(lib.tirenv_tir_read_derive(path_bytes(self.path), t, bits, origin, diag), diag)
 
     def _require_cam_shape(self):
         """Refuses the cam for a tire without a value of its own for every cam key, naming the

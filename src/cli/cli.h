@@ -76,6 +76,7 @@ enum {
 
 #define CLI_MAX_SETS 64
 #define CLI_MAX_ARGS 4
+#define CLI_MAX_RUNS 8
 
 /* What the shared options said: filled by cli_parse, turned into objects by cli_tire,
  * cli_load, cli_profile and cli_network. */
@@ -104,6 +105,11 @@ typedef struct {
     const tirenv_model_type *type;    /* --model, or NULL */
     int type_alone;                   /* the command uses that model of the tire and no
                                        * other (cli_tire: tirenv_tir_derive's TIRENV_TIR_ONLY) */
+    const tirenv_model_type *runs[CLI_MAX_RUNS]; /* the models the command runs on the
+                                       * tire, for --set's warnings (cli_set_warnings); none:
+                                       * --model's, else nothing is said */
+    size_t n_runs;
+    unsigned reads_also;              /* cli_model_reads bits the command reads besides */
     const char *nn_path;              /* --nn, or NULL */
     size_t jobs;                      /* --jobs, else cli_jobs_default() (with CLI_JOBS) */
     int extrapolate;                  /* --extrapolate: the network outside its trained
@@ -154,10 +160,11 @@ typedef struct {
 int cli_parse(const cli_parser *p, int argc, char *argv[], cli_options *o);
 
 /* Option help text for the groups above, indented for a usage message. */
-void cli_help_tire(FILE *fp, int with_method);
+void cli_help_tire(FILE *fp, int with_method, const char *example);
 /* The same for a command whose tire defaults to another than tires/default.tir: tire_help is
  * its whole --tire entry, as it prints. */
-void cli_help_tire_as(FILE *fp, int with_method, const char *tire_help);
+void cli_help_tire_as(FILE *fp, int with_method, const char *example,
+                      const char *tire_help);
 /* The --tire entry of the commands that read a data set: the tire its source.txt names. */
 extern const char cli_help_data_tire[];
 void cli_help_load(FILE *fp);
@@ -219,9 +226,19 @@ int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
 int cli_nn_springs_stand_in(const char *nn_path, const char *tire_path,
                             const tirenv_tir_origin *origin, tirenv_diag *diag);
 
-/* Reads the tire file, applies --set in order and --method, and checks the result.
+/* Reads the tire file, applies --set in order and --method, and checks the result; says on
+ * standard error which --set keys no model of o->runs (else --model) reads.
  * Returns an exit code after printing any error. */
 int cli_tire(const cli_options *o, tirenv_tire *tire);
+
+/* The sections of a tire file a model of type reads (bits private to set_keys.c), with the
+ * springs model's for the rigid disc and the point when a contact length is their load. */
+unsigned cli_model_reads(const tirenv_model_type *type, int at_contact_length);
+/* One line on standard error for each of the n_sets KEY=VALUE whose key's section is not in
+ * reads (cli_model_reads bits), naming the key, its section and the n_runs models; nothing if
+ * n_runs is 0. */
+void cli_set_warnings(const char *const sets[], size_t n_sets,
+                      const tirenv_model_type *const runs[], size_t n_runs, unsigned reads);
 
 /* The model type named name; prints the valid names and returns CLI_EXIT_USAGE if there is
  * none. */

@@ -114,7 +114,7 @@ static void usage(FILE *fp)
           "  --json               print every figure as one JSON object of name: number\n"
           "                       pairs (positions/s, seconds, ratios) instead of the tables\n",
           fp);
-    cli_help_tire(fp, 0);
+    cli_help_tire(fp, 0, "RADIAL_STIFFNESS=4.5e5 (the springs model's)");
     fputs("  -h, --help           show this help\n", fp);
 }
 

@@ -59,7 +59,8 @@ static void usage(FILE *fp)
           "                       (default out/compare)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire_as(fp, 1, cli_help_data_tire);
+    cli_help_tire_as(fp, 1, "RADIAL_STIFFNESS=4.5e5 (the springs model's)",
+                     cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -237,6 +238,19 @@ int cli_compare_main(int argc, char *argv[])
     tirenv_compare_result r = {0};
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
+    /* --set's warnings: each model compared and the one that simulated the data (the
+     * reference, evaluated beside them), each at the case's load (the network at its contact
+     * length: the springs model is counted for it all the same). */
+    for (size_t k = 0; k <= co.s.n_models && o.n_runs < CLI_MAX_RUNS; ++k) {
+        const tirenv_model_type *t = k < co.s.n_models ? co.s.models[k] : co.s.simulated_by;
+        size_t j = 0;
+        while (j < o.n_runs && o.runs[j] != t)
+            ++j;
+        if (t && j == o.n_runs) {
+            o.runs[o.n_runs++] = t;
+            o.reads_also |= cli_model_reads(t, 0);
+        }
+    }
     if ((code = cli_tire(&o, &tire)))
         goto done;
     /* The cam of a tire file without MF-Swift's shape keys would be the default tire's. */

@@ -33,7 +33,7 @@ static void usage(FILE *fp)
           "  -o, --output DIR     where to build (created if missing)\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire_as(fp, 1,
+    cli_help_tire_as(fp, 1, "FOUNDATION_STIFFNESS=1.2e5 (the ring's)",
                      "  --tire FILE          tire property file (.tir); default: the design's, in\n"
                      "                       the data directory ($TIRENV_DATA, else the installed\n"
                      "                       data); for list, the data set's own\n");

@@ -68,7 +68,7 @@ static void usage(FILE *fp)
           "                       the belt itself touches the ground), from one more ring\n"
           "                       evaluation at each row's (x, z); one track, no --stream\n",
           fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire(fp, 1, "UNLOADED_RADIUS=0.69 (every model's)");
     cli_help_jobs(fp);
     fputs("                       (without --stream: the positions in chunks of 8192, each\n"
           "                       solved from a cold start at its first position)\n"

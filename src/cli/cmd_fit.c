@@ -36,7 +36,8 @@ static void usage(FILE *fp)
           fp);
     cli_help_model(fp, TIRENV_MODEL_FITTABLE, 0, " (default springs)");
     cli_help_jobs(fp);
-    cli_help_tire_as(fp, 1, cli_help_data_tire);
+    cli_help_tire_as(fp, 1, "RADIAL_STIFFNESS=4.5e5 (the springs model's)",
+                     cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -162,6 +163,7 @@ int cli_fit_main(int argc, char *argv[])
     char tire_buf[1024];
     tirenv_tire tire;
     tirenv_dataset ds;
+    o.runs[o.n_runs++] = fs.type;
     int code = cli_data_and_tire(data, &o, &src, tire_buf, sizeof tire_buf, &tire, &ds);
     if (code)
         return code;

@@ -30,7 +30,7 @@ static void usage(FILE *fp)
     fputs("  --csv                CSV: load_N,z_flat_m,deflection_m,contact_length_m,\n"
           "                       stiffness_N_per_m\n",
           fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire(fp, 1, "RADIAL_STIFFNESS=4.5e5 (the springs model's)");
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -122,6 +122,10 @@ int cli_flat_main(int argc, char *argv[])
     const tirenv_model_type *type = o.type ? o.type : tirenv_model_springs;
     o.type_alone = 1;  /* the model named and no other (ring_tread: the ring's own; without
                         * --load, cli_nominal_load takes FNOMIN where no ring was derived) */
+    o.runs[o.n_runs++] = type;
+    /* Without --load, FNOMIN is tabled if inside the ring's regime (cli_nominal_load). */
+    if (!o.have_load)
+        o.reads_also = cli_model_reads(tirenv_model_ring, 0);
     tirenv_tire tire;
     int code = cli_tire(&o, &tire);
     if (code)

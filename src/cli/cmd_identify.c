@@ -121,7 +121,7 @@ static void usage(FILE *fp)
           "                       it is read (no [ENVELOPING_RING]) and a --set of a key\n"
           "                       they do not write\n",
           fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire(fp, 1, "FOUNDATION_STIFFNESS=1.2e5 (the ring's)");
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -431,6 +431,12 @@ int cli_identify_main(int argc, char *argv[])
             return CLI_EXIT_USAGE;
         }
     o.type = ref;
+    /* Each reference, the springs model identified on them and the cam (--set's warnings). */
+    for (size_t j = 0; j < refs.m && o.n_runs < CLI_MAX_RUNS; j++)
+        o.runs[o.n_runs++] = refs.t[j];
+    o.runs[o.n_runs++] = tirenv_model_springs;
+    if (!cam_ref)
+        o.runs[o.n_runs++] = tirenv_model_cam;
     char buf[1024];
     const char *path = cli_tire_path(&o, buf, sizeof buf);
     if ((write || write_springs) &&

@@ -44,7 +44,7 @@ static void usage(FILE *fp)
             "  -o, --output FILE    write the CSV to FILE, complete or not at all (default or\n"
             "                       '-': standard output)\n",
             d.xN_from, d.xN_to, d.dxN);
-    cli_help_tire(fp, 0);
+    cli_help_tire(fp, 0, "FOUNDATION_STIFFNESS=1.2e5 (the ring's)");
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -134,6 +134,7 @@ int cli_import_main(int argc, char *argv[])
     tirenv_tire tire;
     if (o.have_load)
         o.type = tirenv_model_ring;  /* its patch is the regime: derived if the file has none */
+    /* Else the tire gives R0 alone, and --set is not warned of: no model runs. */
     if ((code = cli_tire(&o, &tire)))
         return code;
     set.R0 = tire.springs.R0;

@@ -68,7 +68,7 @@ static void usage(FILE *fp)
     cli_help_road(fp, 1);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire(fp, 1, NULL);
     cli_help_jobs(fp);
     fputs("  -h, --help           show this help\n", fp);
 }
@@ -91,5 +91,6 @@ int cli_predict_main(int argc, char *argv[])
                   "options");
         return CLI_EXIT_USAGE;
     }
+    o.runs[o.n_runs++] = o.type ? o.type : tirenv_model_nn;  /* --set's warnings */
     return cli_envelope_run("predict", &o, o.type ? o.type : tirenv_model_nn, &e);
 }

@@ -34,7 +34,7 @@ static void usage(FILE *fp)
           "  --seed S             noise seed (default 1)\n"
           "  -o, --output FILE    the log to write (required; '-' for stdout)\n",
           fp);
-    cli_help_tire(fp, 1);
+    cli_help_tire(fp, 1, "FOUNDATION_STIFFNESS=1.2e5 (the ring's)");
     fputs("  -h, --help           show this help\n", fp);
 }
 
@@ -91,6 +91,7 @@ int cli_rig_main(int argc, char *argv[])
     }
     rig.seed = (unsigned long)seed;
     const tirenv_model_type *type = o.type ? o.type : tirenv_model_ring;
+    o.runs[o.n_runs++] = type;
     const char *out_path = o.output;
     tirenv_tire tire;
     tirenv_model *m = NULL;

@@ -47,7 +47,7 @@ static void usage(FILE *fp)
           "  --no-images          write the gnuplot scripts but do not run gnuplot\n",
           fp);
     cli_help_jobs(fp);
-    cli_help_tire_as(fp, 1, cli_help_data_tire);
+    cli_help_tire_as(fp, 1, "UNLOADED_RADIUS=0.69 (every model's)", cli_help_data_tire);
     fputs("  -h, --help           show this help\n", fp);
 }
 

@@ -236,6 +236,13 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
                   tirenv_diag_format(&diag, msg, sizeof msg));
         return cli_exit_code(status);
     }
+    /* The models the command runs, to say which --set keys none of them reads. */
+    const tirenv_model_type *const *runs = o->n_runs ? o->runs : &o->type;
+    const size_t n_runs = o->n_runs ? o->n_runs : o->type != NULL;
+    unsigned reads = o->reads_also;
+    for (size_t k = 0; k < n_runs; ++k)
+        reads |= cli_model_reads(runs[k], o->have_contact_length);
+    cli_set_warnings(o->sets, o->n_sets, runs, n_runs, reads);
     return CLI_EXIT_OK;
 }
 

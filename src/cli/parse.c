@@ -440,21 +440,24 @@ const char cli_help_data_tire[] =
     "                       source.txt names, else tires/default.tir in the data\n"
     "                       directory ($TIRENV_DATA, else the installed data)\n";
 
-void cli_help_tire(FILE *fp, int with_method)
+void cli_help_tire(FILE *fp, int with_method, const char *example)
 {
-    cli_help_tire_as(fp, with_method,
+    cli_help_tire_as(fp, with_method, example,
                      "  --tire FILE          tire property file (.tir); default: tires/default.tir "
                      "in\n"
                      "                       the data directory ($TIRENV_DATA, else the installed "
                      "data)\n");
 }
 
-void cli_help_tire_as(FILE *fp, int with_method, const char *tire_help)
+void cli_help_tire_as(FILE *fp, int with_method, const char *example, const char *tire_help)
 {
     fputs(tire_help, fp);
     fputs("  --set KEY=VALUE      override one .tir key after reading the file (repeatable,\n"
-          "                       applied in order), e.g. --set RADIAL_STIFFNESS=1.8e6\n",
-          fp);
+          "                       applied in order; a key no model of the command reads is\n"
+          "                       said on standard error)", fp);
+    if (example)
+        fprintf(fp, ", e.g.\n                       --set %s", example);
+    fputs("\n", fp);
     if (with_method)
         fputs("  --method M           equilibrium solver: newton (default), secant (the\n"
               "                       paper's eq. 2) or brent\n",

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
 
 #include "cli/csv_row.h"
 #include "cli/ride_cli.h"
@@ -34,6 +36,67 @@ typedef struct {
     tirenv_ride_plan plan; /* each speed's run and the inputs' grid */
 } ride_setup;
 
+/* Where the axle's TIRE_FILE was named, for a tire error: the last --set of it, else its line
+ * in the vehicle file (a regular file only: a pipe was read once), else nowhere (the default
+ * tire file). */
+static void tire_named_by(const ride_options *r, const char *vehicle, int axle, int named,
+                          char *buf, size_t n)
+{
+    const char *section = axle ? "REAR_AXLE" : "FRONT_AXLE";
+    char field[32];
+    snprintf(field, sizeof field, "%s.TIRE_FILE", section);
+    if (named)
+        snprintf(buf, n, "%s: [%s] TIRE_FILE", vehicle, section);
+    else
+        snprintf(buf, n, "%s: no [%s] TIRE_FILE: the default tire file", vehicle, section);
+    for (size_t i = r->n_sets; i-- > 0;)
+        if (strncasecmp(r->sets[i], field, strlen(field)) == 0 &&
+            strchr(" \t=", r->sets[i][strlen(field)])) {
+            snprintf(buf, n, "--set %s", field);
+            return;
+        }
+    struct stat st;
+    FILE *fp = stat(vehicle, &st) == 0 && S_ISREG(st.st_mode) ? fopen(vehicle, "r") : NULL;
+    char line[1024];
+    int inside = 0;
+    for (size_t k = 1; named && fp && fgets(line, sizeof line, fp); ++k) {
+        const char *p = line + strspn(line, " \t");
+        if (*p == '[')
+            inside = strncasecmp(p + 1, section, strlen(section)) == 0 &&
+                     p[1 + strlen(section)] == ']';
+        else if (inside && strncasecmp(p, "TIRE_FILE", 9) == 0 && strchr(" \t=", p[9])) {
+            snprintf(buf, n, "%s:%zu: [%s] TIRE_FILE", vehicle, k, section);
+            break;
+        }
+    }
+    if (fp)
+        fclose(fp);
+}
+
+/* The cam needs MF-Swift's shape keys (ELLIPS_*) of each axle's tire: refused before any run,
+ * naming the tire file and where the vehicle names it, as every other tire error does. */
+static int cam_keys(const ride_options *r, const ride_setup *s, const char *vehicle)
+{
+    int cam = 0;
+    for (size_t i = 0; i < r->n_models; ++i)
+        cam |= r->models[i] == tirenv_model_cam;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    for (int axle = 0; cam && axle < 2; ++axle) {
+        if (!tirenv_tire_check_cam_keys(&s->tire[axle], &diag))
+            continue;
+        char named[700];
+        const tirenv_axle *ax = axle ? &s->v.rear : &s->v.front;
+        tire_named_by(r, vehicle, axle, ax->tire_file[0] != '\0', named, sizeof named);
+        snprintf(diag.file, sizeof diag.file, "%s", s->tire_path[axle]);
+        char msg[1200];
+        cli_error("%s (the %s axle's tire, named by %s)",
+                  tirenv_diag_format(&diag, msg, sizeof msg), axle ? "rear" : "front", named);
+        return cli_exit_code(TIRENV_EINVAL);
+    }
+    return CLI_EXIT_OK;
+}
+
 static int load_vehicle(const ride_options *r, ride_setup *s)
 {
     char buf[1024];
@@ -51,9 +114,11 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         return cli_fail(status, &diag);
     for (int axle = 0; axle < 2; ++axle) {
         const tirenv_axle *ax = axle ? &s->v.rear : &s->v.front;
+        char tire_buf[1024];
         const char *tire_path = ax->tire_file[0]
                                     ? ax->tire_file
-                                    : cli_data_path("tires/default.tir", buf, sizeof buf);
+                                    : cli_data_path("tires/default.tir", tire_buf,
+                                                    sizeof tire_buf);
         s->tire[axle] = tirenv_tire_default();
         unsigned need = 0;
         for (size_t i = 0; i < r->n_models; ++i)
@@ -71,7 +136,7 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         snprintf(s->tire_path[axle], sizeof s->tire_path[axle], "%s", tire_path);
         s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
     }
-    return CLI_EXIT_OK;
+    return cam_keys(r, s, path);
 }
 
 /* The model's warnings of one axle, one line each. */

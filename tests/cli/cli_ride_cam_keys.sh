@@ -9,6 +9,7 @@ repo=$(cd "$(dirname "$0")/../.." && pwd)
 
 grep -v -e '^Q_RA' -e '^ELLIPS_' "$repo/data/tires/default.tir" > nocam.tir
 sed "s#'../tires/default.tir'#'$PWD/nocam.tir'#" "$repo/data/vehicles/tractor.veh" > nocam.veh
+front_line=$(grep -n "^TIRE_FILE" nocam.veh | head -1 | cut -d: -f1)
 check "the vehicle's tires are the tire file without the cam keys" \
     '[ $(grep -c nocam.tir nocam.veh) -eq 2 ] && ! grep -q ^ELLIPS_ nocam.tir'
 for e in static dynamic direct; do
@@ -16,18 +17,30 @@ for e in static dynamic direct; do
         --vehicle nocam.veh
     # Q_RA1, Q_RA2 are derived on the file's own ring (docs/models.md section 14.2) and said;
     # the cam's shape cannot be, and is named.
-    check "--enveloping $e: exit 2 naming the cam shape keys, no table" \
+    check "--enveloping $e: exit 2 naming the cam shape keys, the tire file and the vehicle's line, no table" \
         '[ $rc -eq 2 ] && grep -q "cam keys ELLIPS_SHIFT, ELLIPS_LENGTH" err &&
+         grep -q "^tirenv: $PWD/nocam.tir: ELLIPS_SHIFT: .*(the front axle.s tire, named by nocam.veh:$front_line: \[FRONT_AXLE\] TIRE_FILE)$" err &&
          grep -q "nocam.tir: no Q_RA1, Q_RA2 of its own: derived on the ring" err && [ ! -s out ]'
 done
 # Only the rear tire without them: every way names the rear axle (direct named the front, whose
-# check set both axles' models).
+# check set both axles' models), the file and the --set that named it.
 for e in static dynamic direct; do
     run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model cam --enveloping $e \
         --set "REAR_AXLE.TIRE_FILE=$PWD/nocam.tir"
     check "only the rear tire without the cam keys, --enveloping $e: exit 2 naming the rear axle" \
-        '[ $rc -eq 2 ] && grep -q "cam model, rear axle" err && [ ! -s out ]'
+        '[ $rc -eq 2 ] && [ ! -s out ] && grep -q "^tirenv: $PWD/nocam.tir: ELLIPS_SHIFT: .*(the rear axle.s tire, named by --set REAR_AXLE.TIRE_FILE)$" err'
 done
+# A vehicle file through a pipe is read once: named without its line. The writer is under
+# timeout and released as in cli_fifo.sh (a FIFO opened read-write lets a waiting open through).
+mkfifo veh.fifo
+timeout 60 sh -c 'exec cat nocam.veh >veh.fifo 2>/dev/null' &
+writer=$!
+run timeout 60 "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model cam --vehicle veh.fifo
+kill "$writer" 2>/dev/null
+: <>veh.fifo
+wait "$writer" 2>/dev/null
+check "a piped vehicle file: the tire file and the vehicle's field, exit 2" \
+    '[ $rc -eq 2 ] && grep -q "(the front axle.s tire, named by veh.fifo: \[FRONT_AXLE\] TIRE_FILE)$" err'
 run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model springs --enveloping dynamic \
     --vehicle nocam.veh
 check "the springs model does not need them: exit 0" '[ $rc -eq 0 ]'

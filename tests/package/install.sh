@@ -38,6 +38,15 @@ for f in bin/tirenv lib/libtirenv.so.$version lib/libtirenv.a include/tirenv/tir
          share/tirenv/fmu/tirenv_effective_road.fmu; do
     check "installs $f" test -f "$P/$f"
 done
+# Every relative link of the installed README (docs/, python/README.md, fmu/README.md) names
+# an installed file; the #anchor is not checked.
+doc=$P/share/doc/tirenv
+links=$(grep -o '](\([^)]*\))' "$doc/README.md" | sed 's/^](//; s/)$//; s/#.*//' |
+        grep -v -e '^[a-z][a-z]*:' -e '^$' | sort -u)
+check "the installed README has relative links to follow" test -n "$links"
+for l in $links; do
+    check "the installed README's link $l resolves" test -e "$doc/$l"
+done
 check "libtirenv.so.$major links to the versioned library" \
     test "$(readlink "$P/lib/libtirenv.so.$major")" = "libtirenv.so.$version"
 check "installs no build-tree data link" test ! -e "$P/bin/tirenv-data"
