@@ -877,10 +877,10 @@ static void test_mfswift_file(void **state)
                      TIRENV_OK);
     tirenv_tire expected = tirenv_tire_default();
     expected.springs.R0 = 0.3135;
-    expected.springs.c_r = 4.457e5;
-    expected.springs.c_b = 9820;
-    expected.springs.k_s = 5.643e5;
-    expected.springs.F_s0 = 2703;
+    expected.springs.c_r = 4.456e5;
+    expected.springs.c_b = 9821;
+    expected.springs.k_s = 6.223e5;
+    expected.springs.F_s0 = 2584;
     expected.ring.t_r = 0.010;
     expected.ring.EI = 3.27;
     expected.ring.T = 0;
