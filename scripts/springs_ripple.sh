@@ -1,18 +1,20 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
-# The springs model's smoothness over obstacles (docs/models.md section 4.8): the second
+# The springs (or ring) model's smoothness over obstacles (docs/models.md section 4.8): the second
 # difference of h on 1 mm sweeps of `tirenv envelope --model springs --load 13000`, positions
 # within 3 mm of an obstacle vertex's x left out. Per obstacle: the largest |h(x-dx) - 2 h(x) +
 # h(x+dx)|, how many positions exceed 0.2 mm, and where the largest sit (x, the number of
 # elements the ground presses there, and whether that number changes at the neighbours: a
 # contact starting or ending, a kink of the exact curve, not a ripple).
 #
-# usage: scripts/springs_ripple.sh TIRENV [--set KEY=VALUE]...
+# usage: [MODEL=ring] scripts/springs_ripple.sh TIRENV [--set KEY=VALUE]...
 #   e.g. scripts/springs_ripple.sh build/tirenv --set ELEMENT_ANGLE=0.0043633231299858239
+# MODEL: the model swept (default springs; ring for docs/models.md section 5.3's figures).
 set -eu
 [ $# -ge 1 ] || { echo "usage: $0 TIRENV [--set KEY=VALUE]..." >&2; exit 1; }
 tirenv=$1
 shift
+model=${MODEL:-springs}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$tirenv" road --class C --length 16 --dx 0.001 --seed 1 -o "$tmp/road.csv" 2>/dev/null
@@ -30,7 +32,7 @@ echo "| obstacle | largest | > 0.2 mm | where (x m, pressed elements, state chan
 echo "|---|---|---|---|"
 echo "$cases" | while IFS='|' read -r name opts verts; do
     out="$tmp/h.csv"
-    if ! eval "\"\$tirenv\" envelope --model springs --load 13000 $opts \"\$@\" -o \"\$out\"" \
+    if ! eval "\"\$tirenv\" envelope --model \"\$model\" --load 13000 $opts \"\$@\" -o \"\$out\"" \
         2>"$tmp/err"; then
         echo "| $name | refused: $(tail -n 1 "$tmp/err") | | |"
         continue

@@ -30,6 +30,15 @@ static int by_angle(const void *a, const void *b)
     return (pa > pb) - (pa < pb);
 }
 
+/* A point this close to its node's start, in parts of the interval, is at the node (no knot
+ * of the shear-coupled tread): a vertex a hair from straight below the centre (x = -1e-200 m
+ * before a step at 0) put a knot 1e-200 rad from the node at theta = 0, whose coupling
+ * k_s / (R h) and its rate k_s dh / (R h^2) overflowed (Newton did not settle, dF_z/dz was a
+ * NaN). Only that node can be met so: elsewhere phi - theta is at least theta's round-off, a
+ * part 1e-19 or more. The piece still counts, with its weight, so nothing moves by more than
+ * the 1e-100 part of a node's interval. */
+static const double s_node = 1e-100;
+
 /* Room for n entries of size sz in *buf (capacity *cap), growing geometrically: the workspace
  * settles at the largest window a profile needs, after which evaluation does not allocate. */
 static int reserve(void **buf, size_t *cap, size_t n, size_t sz)
@@ -186,7 +195,7 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const
         q->s = 0;
     } else {
         const double s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
-        q->s = s > 0 ? (s < 1 ? s : 1) : 0;
+        q->s = s > s_node ? (s < 1 ? s : 1) : 0;
     }
     q->dphi = dphi;
     /* Out of reach, or within it (see the top of tirenv_ring__sample). */

@@ -21,13 +21,21 @@ feed() {
     writer=$!
 }
 
-# release_writer FIFO: ends the writer of feed. A TERM can reach the shell between its fork
-# and its open of the FIFO and be lost there (seen once: the test then waited for ever), so the
-# FIFO is also opened read-write, which never blocks and lets a waiting open through (its
-# writes then end on a closed pipe).
+# release_writer FIFO: ends the writer of feed by opening the FIFO read-write, which never
+# blocks and lets a waiting open through (its writes then end on a closed pipe), again until
+# the writer (timeout, which lives as long as its shell does) has ended: a shell that had not
+# reached its open yet opens later. It is not killed: killing timeout could leave its shell
+# behind, orphaned, blocked in the open of a FIFO in a deleted directory and holding CTest's
+# output pipe, so that the test never ended (seen twice; a TERM can also be lost between the
+# shell's fork and its open). At most timeout's 60 s.
 release_writer() {
-    kill "$writer" 2>/dev/null
-    : <>"$1"
+    n=0
+    while [ $n -lt 1200 ] && [ -r "/proc/$writer/stat" ] &&
+        ! grep -q ') Z ' "/proc/$writer/stat" 2>/dev/null; do
+        : <>"$1"
+        sleep 0.05
+        n=$((n + 1))
+    done
     wait "$writer" 2>/dev/null
 }
 

@@ -161,9 +161,9 @@ static void test_contact_state(void **state)
 
 /* Halving NODE_ANGLE from the shipped default (0.25 degrees, the tread coupled in shear)
  * moves the curve over a tall short cleat by at most 0.2 mm: the data set's case S (0.05 x
- * 0.10 m at 30.77 kN), the case that moved most in docs/models.md section 5.6's study over
- * all 28 from 0.5 degrees (0.149 mm; 0.029 mm from 0.25), on a 5 mm grid over the cleat and
- * the tire's climb onto it. */
+ * 0.10 m at 38.47 kN), the case that moved most in docs/models.md section 5.6's study over
+ * all 28 from 0.5 degrees (0.168 mm; 0.034 mm from 0.25, on its 1 mm grid), on a 5 mm grid
+ * over the cleat and the tire's climb onto it. */
 static void test_converged_at_default(void **state)
 {
     (void)state;
@@ -174,8 +174,8 @@ static void test_converged_at_default(void **state)
     tirenv_model *b = tirenv_model_alloc(tirenv_model_ring, &t);
     tirenv_profile *p = tirenv_profile_cleat(0.05, 0.1);
     tirenv_diag diag;
-    assert_int_equal(tirenv_model_set(a, p, 30767.52, &diag), TIRENV_OK);
-    assert_int_equal(tirenv_model_set(b, p, 30767.52, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_model_set(a, p, 38467.09, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_model_set(b, p, 38467.09, &diag), TIRENV_OK);
     double worst = 0;
     for (double x = -0.3; x <= 0.3; x += 0.005) {
         tirenv_point pa, pb;
@@ -190,6 +190,40 @@ static void test_converged_at_default(void **state)
     tirenv_model_free(b);
 }
 
+/* A centre a hair from a ground vertex straight below it (x = -1e-200 m before a step or a
+ * triangle's apex at 0) puts the vertex 1e-200 rad from the node at theta = 0: the default
+ * tread, coupled in shear, made a knot there whose coupling overflowed, and the equilibrium
+ * failed ("did not settle in 200 Newton steps") from x = -1e-170 m down. Each position is
+ * solved cold (tirenv_model_set), as a single-position envelope is; h agrees with h(0). */
+static void test_vertex_a_hair_below(void **state)
+{
+    (void)state;
+    tirenv_tire t = tirenv_tire_default();
+    assert_true(t.ring.G_t > 0);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+    assert_non_null(m);
+    tirenv_profile *obstacles[2] = {tirenv_profile_step(0, 0.1),
+                                    tirenv_profile_triangle(0.2, 0.08)};
+    const double xs[] = {-1e-170, -1e-200, -1e-300, -1e-305, -nextafter(0, 1), 1e-200};
+    tirenv_diag diag;
+    for (size_t o = 0; o < 2; ++o) {
+        tirenv_point p0;
+        assert_int_equal(tirenv_model_set(m, obstacles[o], 13000, &diag), TIRENV_OK);
+        assert_int_equal(tirenv_model_eval(m, 0, &p0, &diag), TIRENV_OK);
+        for (size_t k = 0; k < sizeof xs / sizeof xs[0]; ++k) {
+            tirenv_point pk;
+            assert_int_equal(tirenv_model_set(m, obstacles[o], 13000, &diag), TIRENV_OK);
+            const int st = tirenv_model_eval(m, xs[k], &pk, &diag);
+            if (st)
+                print_message("x = %g m: %s\n", xs[k], diag.message);
+            assert_int_equal(st, TIRENV_OK);
+            assert_true(fabs(pk.h - p0.h) <= 1e-6);
+        }
+        tirenv_profile_free(obstacles[o]);
+    }
+    tirenv_model_free(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -198,6 +232,7 @@ int main(void)
         cmocka_unit_test(test_flat_is_the_rays),
         cmocka_unit_test(test_contact_state),
         cmocka_unit_test(test_converged_at_default),
+        cmocka_unit_test(test_vertex_a_hair_below),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
