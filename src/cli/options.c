@@ -76,12 +76,13 @@ int cli_mkdir(const char *dir)
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
 }
 
+/* strtod's ERANGE is not checked: an overflow is infinite, refused as such, and an underflow
+ * is the number rounded to a subnormal or 0, as the file readers take it. */
 int cli_parse_double(const char *s, double *v)
 {
     char *end;
-    errno = 0;
     const double d = strtod(s, &end);
-    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(d))
+    if (end == s || *end != '\0' || !isfinite(d))
         return -1;
     *v = d;
     return 0;
@@ -92,9 +93,8 @@ int cli_parse_doubles(const char *s, double v[], size_t n)
 {
     for (size_t i = 0; i < n; ++i) {
         char *end;
-        errno = 0;
         v[i] = strtod(s, &end);
-        if (end == s || errno == ERANGE || !isfinite(v[i]))
+        if (end == s || !isfinite(v[i]))
             return -1;
         if (i + 1 < n ? *end != ',' : *end != '\0')
             return -1;
