@@ -305,6 +305,9 @@ int cli_cam_keys(const tirenv_model_type *type, const tirenv_tire *tire, const c
     tirenv_diag_clear(&diag);
     if (type != tirenv_model_cam || !tirenv_tire_check_cam_keys(tire, &diag))
         return CLI_EXIT_OK;
+    /* The library's refusal serves the FMU and Python too; here the keys can also be set. */
+    const size_t n = strlen(diag.message);
+    snprintf(diag.message + n, sizeof diag.message - n, " or give them with --set");
     snprintf(diag.file, sizeof diag.file, "%s", path);
     return cli_fail(TIRENV_EINVAL, &diag);
 }

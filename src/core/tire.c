@@ -373,6 +373,6 @@ int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag)
         return TIRENV_OK;
     return tirenv_error(diag, TIRENV_EINVAL, "", 0, first, "the tire has no value of its own "
                         "for the cam keys %s ([VERTICAL], [CONTACT_PATCH] of an MF-Swift "
-                        ".tir file); the cam model needs them: add them to the tire file or "
-                        "give them with --set", missing);
+                        ".tir file); the cam model needs them: add them to the tire file",
+                        missing);
 }
