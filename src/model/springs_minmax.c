@@ -34,6 +34,7 @@ typedef struct {
     const tirenv_springs__table *tb;
     double d_el[MAX_LOADS];       /* the elements' deflection at the trial c_r, m */
     double F_s0;                  /* trial preload, N */
+    double c;                     /* trial compliance, m/N (0: no sidewall) */
 } minmax_ctx;
 
 /* The hub's deflection (m) at load i: the elements' plus the sidewall's, compliance c m/N
@@ -102,8 +103,8 @@ static double best_sidewall(minmax_ctx *x)
 }
 
 /* For log c_r: the elements' states at the loads, their contact lengths' largest difference
- * (which no sidewall changes), and the deflection's with the sidewall that fits it best: the
- * larger of the two. */
+ * (which no sidewall changes), and the deflection's with the sidewall that fits it best (into
+ * x->F_s0 and x->c): the larger of the two. */
 static double worst_log_c_r(double log_c_r, void *p)
 {
     minmax_ctx *x = p;
@@ -117,8 +118,8 @@ static double worst_log_c_r(double log_c_r, void *p)
         for (size_t j = 0; j < x->m; j++)
             worst_l = fmax(worst_l, fabs(l_e / x->l[j * x->n + i] - 1));
     }
-    const double c = best_sidewall(x);
-    return fmax(worst_deflection(x, c), worst_l);
+    x->c = best_sidewall(x);
+    return fmax(worst_deflection(x, x->c), worst_l);
 }
 
 /* The c_r that keep every load within the table: [*lo, *hi] in log c_r; 0 if none. */
@@ -200,10 +201,9 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
     x->tb = b->tb;
     const double log_c_r = tirenv_core__golden_min(worst_log_c_r, x, lo, hi, GOLDEN, NULL);
     worst_log_c_r(log_c_r, x); /* the elements' states and the sidewall at that c_r */
-    const double c = best_sidewall(x);
     par->c_r = exp(log_c_r);
     par->c_b = par->c_r * exp(log_beta);
-    par->k_s = x->sidewall ? 1 / c : 0;
+    par->k_s = x->sidewall ? 1 / x->c : 0;
     par->F_s0 = x->F_s0;
     return TIRENV_OK;
 }
