@@ -160,13 +160,19 @@ static double worst_log_beta(double log_beta, void *p)
     return worst;
 }
 
+/* The error where no c_b/c_r and c_r keep every load within the table. */
+static int no_model(const beta_ctx *b)
+{
+    const double *const load = b->x->G;
+    return tirenv_error(b->diag, TIRENV_EINVAL, "", 0, "loads",
+                        "no springs model carries the loads %g to %g N within the "
+                        "deflections %g to %g m", load[0], load[b->x->n - 1], b->d_lo, b->d_hi);
+}
+
 /* The search itself (tirenv_springs_identify_minmax's, below), on b's table. */
 static int search(tirenv_springs_params *par, beta_ctx *b)
 {
     minmax_ctx *const x = b->x;
-    const size_t n = x->n;
-    const double *const load = x->G;
-    tirenv_diag *const diag = b->diag;
     const double a = log(1e-4), step = (log(1.0) - a) / (SCAN - 1);
     size_t k_best = 0;
     double best = INFINITY;
@@ -179,9 +185,7 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
             best = worst, k_best = k;
     }
     if (!isfinite(best))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
-                            "no springs model carries the loads %g to %g N within the "
-                            "deflections %g to %g m", load[0], load[n - 1], b->d_lo, b->d_hi);
+        return no_model(b);
     x->steps = GOLDEN;
     const double log_beta = tirenv_core__golden_min(
         worst_log_beta, b, a + step * ((double)k_best - 1), a + step * ((double)k_best + 1),
@@ -191,13 +195,11 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
     /* The minimiser's own values, from its table once more. */
     double lo, hi;
     const int status =
-        tirenv_springs__table_of(par, exp(log_beta), b->d_lo, b->d_hi, b->tb, diag);
+        tirenv_springs__table_of(par, exp(log_beta), b->d_lo, b->d_hi, b->tb, b->diag);
     if (status)
         return status;
     if (!c_r_range(x, b->tb, &lo, &hi))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loads",
-                            "no springs model carries the loads %g to %g N within the "
-                            "deflections %g to %g m", load[0], load[n - 1], b->d_lo, b->d_hi);
+        return no_model(b);
     x->tb = b->tb;
     const double log_c_r = tirenv_core__golden_min(worst_log_c_r, x, lo, hi, GOLDEN, NULL);
     worst_log_c_r(log_c_r, x); /* the elements' states and the sidewall at that c_r */
