@@ -240,6 +240,10 @@ PROVE_CLONES static void seen_bounds(size_t n, const double *restrict Pz,
     }
 }
 
+/* Vertices a seen_check call (seen_todo): their results, a long each, 512 bytes on the
+ * stack. */
+#define CHECK_BLOCK 64
+
 /* Whether each vertex e[0 .. n - 1] has a proof and it holds at the bounds Qt, Qm
  * (seen_todo), into ok: a loop the compiler vectorises. The bounds of a vertex without a
  * proof are read too (of a sector seen_todo may not have bounded now: seen_sec is zeroed
@@ -299,9 +303,9 @@ SCAN_LOOP size_t seen_todo(const tirenv_springs__cc *c, const tirenv_springs__cc
      * a block of vertices at once (seen_check), then the vertices listed without a branch on
      * the outcome (it follows the road, not a pattern). */
     size_t n = 0;
-    long ok[64];
-    for (size_t k0 = j0 - s0; k0 < j_end - s0; k0 += 64) {
-        const size_t m = j_end - s0 - k0 < 64 ? j_end - s0 - k0 : 64;
+    long ok[CHECK_BLOCK];
+    for (size_t k0 = j0 - s0; k0 < j_end - s0; k0 += CHECK_BLOCK) {
+        const size_t m = j_end - s0 - k0 < CHECK_BLOCK ? j_end - s0 - k0 : CHECK_BLOCK;
         seen_check(m, c->seen + k0, Qt, Qm, ok);
         for (size_t k = 0; k < m; ++k) {
             todo[n] = s0 + k0 + k;
