@@ -343,7 +343,8 @@ typedef struct {
      * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
      * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
      * bounds on a proven vertex's |dt/dz| and on its depth, and room for what a later height
-     * needs of them (springs_rows.c); per vertex the scan's list of vertices to compute
+     * needs of them, which the proving scan uses for its sectors' penetrations and slack
+     * (springs_rows.c); per vertex the scan's list of vertices to compute
      * (cap_seen); the vertices the last scan skipped by the proofs and those whose sector
      * its guess missed (scan_prove; what the tests count);
      * scan_plain, set only by the tests: no proofs, every vertex computed by the plain scan
