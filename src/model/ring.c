@@ -333,8 +333,6 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
     }
 }
 
-/* The continuous contact's window: the nodes whose interval holds a point of ground within
- * reach (d > -t_r, as the rays' window), widened to the band solver's smallest size. */
 /* The nodes j0 .. j1 - 1 outside which the last evaluation of the continuous contact left F
  * and g zero: its window, or, with the shear-coupled tread, the nodes of the points from its
  * solve's first to its last in contact (r->k_first, r->k_last), the only ones it puts forces
@@ -349,6 +347,8 @@ static void force_nodes(const tirenv_ring *r, size_t *j0, size_t *j1)
     }
 }
 
+/* The continuous contact's window: the nodes whose interval holds a point of ground within
+ * reach (d > -t_r, as the rays' window), widened to the band solver's smallest size. */
 static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x, double z)
 {
     size_t j0, j1; /* the last evaluation's forces cleared */
