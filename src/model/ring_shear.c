@@ -1955,16 +1955,17 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
         }
         return 0;
     }
-    tirenv_ring_tread T = *T0; /* the constants; its own exterior factor */
-    T.ext_all = 0;
-    T.ey = malloc(3 * 2 * M * sizeof *T.ey);
+    /* The constants; its own factor of this exterior alone (the same bits as exterior_factor's
+     * leading block, without its unit vectors' substitutions, which only compute_end reads). */
+    tirenv_ring_tread T = *T0;
     double *rhs = malloc(Ne * sizeof *rhs);
-    if (!T.ey || !rhs || band_alloc(&T.ext, 2 * M, 0)) {
-        free(T.ey);
+    if (!rhs || band_alloc(&T.ext, Ne, 0)) {
         free(rhs);
         return 1;
     }
-    exterior_factor(&T, (lo + n) % M, ne);
+    band_reset(&T.ext, Ne, 0);
+    add_arc(&T.ext, &T, (lo + n) % M, ne);
+    band_factor(&T.ext); /* a principal block of the positive definite whole */
     const double *s = T.s, k_sh = T.k_sh;
     const double *w = r->w, *u = T0->u;
     const size_t j0 = lo, j1 = lo + 1, jm2 = lo + n - 2, jm1 = lo + n - 1;
@@ -1982,7 +1983,6 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
             u_out[(lo + n + e) % M] = rhs[2 * e + 1];
     }
     free(T.ext.L);
-    free(T.ey);
     free(rhs);
     return 0;
 }
