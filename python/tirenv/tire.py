@@ -44,7 +44,7 @@ class Tire(collections.abc.Mapping):
         self._origin = ffi.new("tirenv_tir_origin *")
         if path is not None:
             # The models the file has no section for, derived from its MF-Tyre keys as every
-            # CLI command does (tirenv_tir_derive, docs/models.md section 14.2): the same C
+            # CLI command does (tirenv_tir_read_derive, docs/models.md section 14.2): the same C
             # function, so the same tire, on one read of the file, which may be a pipe; what
             # it derived is said as the CLI says it on standard error, as a warning.
             check(lib.tirenv_tir_read_derive(path_bytes(path), self._t, 0, self._origin,

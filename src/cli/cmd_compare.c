@@ -240,16 +240,15 @@ int cli_compare_main(int argc, char *argv[])
     tirenv_diag_clear(&diag);
     /* --set's warnings: each model compared and the one that simulated the data (the
      * reference, evaluated beside them), each at the case's load (the network at its contact
-     * length: the springs model is counted for it all the same). */
+     * length: the springs model is counted for it all the same), which is what cli_tire
+     * counts for each of o.runs, compare having no --contact-length. */
     for (size_t k = 0; k <= co.s.n_models && o.n_runs < CLI_MAX_RUNS; ++k) {
         const tirenv_model_type *t = k < co.s.n_models ? co.s.models[k] : co.s.simulated_by;
         size_t j = 0;
         while (j < o.n_runs && o.runs[j] != t)
             ++j;
-        if (t && j == o.n_runs) {
+        if (t && j == o.n_runs)
             o.runs[o.n_runs++] = t;
-            o.reads_also |= cli_model_reads(t, 0);
-        }
     }
     if ((code = cli_tire(&o, &tire)))
         goto done;

@@ -212,14 +212,11 @@ static void round_identified(tirenv_tire *id, int digits)
 /* --reference with several models, or the cam: the springs model identified on them together
  * (min-max, tirenv_identify_flat_on), the cam as read where it is a reference; every model
  * tabled, each against each reference (the models: the references in their order, then the
- * springs model, then the cam where it is not a reference). */
+ * springs model, then the cam where it is not a reference; cam_ref: the cam is one). */
 static int identify_several(const tirenv_tire *tire, const char *path, const ref_list *refs,
-                            const load_list *loads, int write, int write_springs)
+                            int cam_ref, const load_list *loads, int write, int write_springs)
 {
     const size_t n = loads->n, m = refs->m;
-    int cam_ref = 0;
-    for (size_t j = 0; j < m; j++)
-        cam_ref |= refs->t[j] == tirenv_model_cam;
     /* "ring and cam", "the ring's and the cam's", "ring,cam" */
     char on[128] = "", whose[128] = "", list[128] = "";
     for (size_t j = 0; j < m; j++) {
@@ -482,7 +479,7 @@ int cli_identify_main(int argc, char *argv[])
     }
     const size_t n = loads.n;
     if (several)
-        return identify_several(&tire, path, &refs, &loads, write, write_springs);
+        return identify_several(&tire, path, &refs, cam_ref, &loads, write, write_springs);
     tirenv_tire id;
     tirenv_flat_target tg[MAX_LOADS];
     int status = tirenv_identify_flat(&tire, ref, n, loads.v, &id, tg, &diag);

@@ -182,6 +182,14 @@ static int parse_axis(void *dst, const char *arg)
     return CLI_EXIT_OK;
 }
 
+/* tirenv_tir_set of key=value, the value in full (%.17g). */
+static int set_key(tirenv_tire *t, const char *key, double value, tirenv_diag *d)
+{
+    char assignment[200];
+    snprintf(assignment, sizeof assignment, "%.120s=%.17g", key, value);
+    return tirenv_tir_set(t, assignment, d);
+}
+
 /* The model's curve over the grid's first cleat at its first regime, at 21 positions from R0
  * before the cleat to R0 after it, for the tire with key set to value; 0 if it could not be
  * computed (the sweep itself then says why). */
@@ -191,9 +199,7 @@ static int probe_curve(const tirenv_sweep_settings *s, const tirenv_tire *tire, 
     tirenv_tire t = *tire;
     tirenv_diag d;
     tirenv_diag_clear(&d);
-    char assignment[200];
-    snprintf(assignment, sizeof assignment, "%.120s=%.17g", key, value);
-    if (tirenv_tir_set(&t, assignment, &d) || tirenv_tire_check(&t, &d))
+    if (set_key(&t, key, value, &d) || tirenv_tire_check(&t, &d))
         return 0;
     tirenv_model *m = tirenv_model_alloc(s->type, &t);
     tirenv_profile *cleat = tirenv_profile_cleat(s->lengths[0], s->heights[0]);
@@ -510,12 +516,8 @@ int cli_sweep_main(int argc, char *argv[])
         tirenv_tire first = tire;
         tirenv_diag d;
         tirenv_diag_clear(&d);
-        for (size_t k = 0; k < keys.n; ++k) {
-            char assignment[200];
-            snprintf(assignment, sizeof assignment, "%.120s=%.17g", keys.keys[k],
-                     keys.counts[k] ? keys.values[k][0] : 0.0);
-            (void)tirenv_tir_set(&first, assignment, &d);  /* a bad key: the library says */
-        }
+        for (size_t k = 0; k < keys.n; ++k)  /* a bad key: the library says */
+            (void)set_key(&first, keys.keys[k], keys.counts[k] ? keys.values[k][0] : 0.0, &d);
         char path_buf[1024];
         const int refused = cli_cam_keys(s.type, &first,
                                          cli_tire_path(&o, path_buf, sizeof path_buf));

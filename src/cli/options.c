@@ -169,8 +169,8 @@ double cli_nominal_load(const tirenv_tire *tire)
 }
 
 /* One read of the file for both passes: a tire file may be a pipe or /dev/stdin. */
-static int tire_derive(const char *path, unsigned need, tirenv_tire *tire,
-                       tirenv_tir_origin *origin)
+int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
+                         tirenv_tir_origin *origin)
 {
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
@@ -180,12 +180,6 @@ static int tire_derive(const char *path, unsigned need, tirenv_tire *tire,
     if (origin->note[0])
         fprintf(stderr, "tirenv: %s: %s\n", path, origin->note);
     return CLI_EXIT_OK;
-}
-
-int cli_tire_read_derive(const char *path, unsigned need, tirenv_tire *tire,
-                         tirenv_tir_origin *origin)
-{
-    return tire_derive(path, need, tire, origin);
 }
 
 int cli_refuse_pipe(const char *path, const char *why)
@@ -214,7 +208,7 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     const unsigned need = (o->type ? tirenv_tir_need(o->type, o->type_alone)
                                    : TIRENV_TIR_SPRINGS) |  /* every command's default model */
                           (at_chord ? TIRENV_TIR_SPRINGS : 0u);
-    if ((status = tire_derive(path, need, tire, &cli_tire_origin)))
+    if ((status = cli_tire_read_derive(path, need, tire, &cli_tire_origin)))
         return status;
     for (size_t i = 0; i < o->n_sets; ++i) {
         status = tirenv_tir_set(tire, o->sets[i], &diag);

@@ -62,8 +62,8 @@ static int parse_split(const tirenv_csv__reader *r, const tirenv_csv__field *f,
 }
 
 /* A positive length or force: what every number of the manifest is; at most a road's
- * bound, TIRENV_PROFILE_MAX_COORDINATE (m or N): a load of 1e308 was listed as 309 digits and trained into a network's
- * contact law with exit 0. */
+ * bound, TIRENV_PROFILE_MAX_COORDINATE (m or N): a load of 1e308 was listed as 309 digits
+ * and trained into a network's contact law with exit 0. */
 static int parse_positive(const tirenv_csv__reader *r, const tirenv_csv__field *f, size_t col,
                           double *out)
 {
@@ -275,8 +275,6 @@ static int parse_manifest(tirenv_csv__reader *r, tirenv_dataset *ds,
     return status;
 }
 
-/* The curve file when there is one (the import is done once, when the data set is built);
- * otherwise the log, imported with the case's own regime and obstacle. */
 int tirenv_dataset__refuse_pipe(const char *path, tirenv_diag *diag)
 {
     struct stat st;
@@ -287,6 +285,8 @@ int tirenv_dataset__refuse_pipe(const char *path, tirenv_diag *diag)
                         "data-set reader and each stage of a study), expected a regular file");
 }
 
+/* The curve file when there is one (the import is done once, when the data set is built);
+ * otherwise the log, imported with the case's own regime and obstacle. */
 static int load_curve(tirenv_case *c, double R0, tirenv_diag *diag)
 {
     const int status = tirenv_dataset__refuse_pipe(c->curve_path[0] ? c->curve_path : c->log,
