@@ -66,12 +66,12 @@ feed() {
 # output pipe, so that the test never ended (seen twice; a TERM can also be lost between the
 # shell's fork and its open). At most timeout's 60 s.
 release_writer() {
-    n=0
-    while [ $n -lt 1200 ] && [ -r "/proc/$writer/stat" ] &&
+    release_tries=0 # not n, the checks' count
+    while [ $release_tries -lt 1200 ] && [ -r "/proc/$writer/stat" ] &&
         ! grep -q ') Z ' "/proc/$writer/stat" 2>/dev/null; do
         : <>"$1"
         sleep 0.05
-        n=$((n + 1))
+        release_tries=$((release_tries + 1))
     done
     wait "$writer" 2>/dev/null
 }
