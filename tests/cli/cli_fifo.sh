@@ -106,6 +106,7 @@ for road in road.csv road.crg road.rdf; do
     check "envelope --stream --profile FIFO of $road: exit 0, the same curve" \
         '[ $rc -eq 0 ] && cmp -s got.csv want.csv'
 done
+"$bin" envelope --model rigid --profile road.rdf --load 20000 -o want.csv 2>/dev/null
 stdin road.rdf "$bin" envelope --model rigid --profile @F@ --load 20000 -o got.csv
 check "envelope --profile /dev/stdin (RDF): exit 0, the same curve" \
     '[ $rc -eq 0 ] && cmp -s got.csv want.csv'
