@@ -14,31 +14,6 @@ tir=$repo/data/tires/default.tir
 car=$repo/data/tires/205-60R15-mfswift.tir
 set_data=$repo/data/dataset
 
-# feed SRC FIFO: SRC's bytes written into FIFO in the background, the writer's id in $writer.
-# Its open of FIFO runs under timeout, so that a writer nobody reads ends by itself.
-feed() {
-    timeout 60 sh -c 'exec cat "$0" >"$1" 2>/dev/null' "$1" "$2" &
-    writer=$!
-}
-
-# release_writer FIFO: ends the writer of feed by opening the FIFO read-write, which never
-# blocks and lets a waiting open through (its writes then end on a closed pipe), again until
-# the writer (timeout, which lives as long as its shell does) has ended: a shell that had not
-# reached its open yet opens later. It is not killed: killing timeout could leave its shell
-# behind, orphaned, blocked in the open of a FIFO in a deleted directory and holding CTest's
-# output pipe, so that the test never ended (seen twice; a TERM can also be lost between the
-# shell's fork and its open). At most timeout's 60 s.
-release_writer() {
-    n=0
-    while [ $n -lt 1200 ] && [ -r "/proc/$writer/stat" ] &&
-        ! grep -q ') Z ' "/proc/$writer/stat" 2>/dev/null; do
-        : <>"$1"
-        sleep 0.05
-        n=$((n + 1))
-    done
-    wait "$writer" 2>/dev/null
-}
-
 # fifo SRC CMD...: CMD with each argument @F@ replaced by ./ff, a FIFO that a background cat
 # fills with SRC's bytes, under timeout (exit status 124 on a hang); stdout to ./out, stderr
 # to ./err, exit status in $rc. A writer still waiting to open the FIFO (the command refused
@@ -131,6 +106,7 @@ for road in road.csv road.crg road.rdf; do
     check "envelope --stream --profile FIFO of $road: exit 0, the same curve" \
         '[ $rc -eq 0 ] && cmp -s got.csv want.csv'
 done
+"$bin" envelope --model rigid --profile road.rdf --load 20000 -o want.csv 2>/dev/null
 stdin road.rdf "$bin" envelope --model rigid --profile @F@ --load 20000 -o got.csv
 check "envelope --profile /dev/stdin (RDF): exit 0, the same curve" \
     '[ $rc -eq 0 ] && cmp -s got.csv want.csv'

@@ -30,15 +30,12 @@ for e in static dynamic direct; do
     check "only the rear tire without the cam keys, --enveloping $e: exit 2 naming the rear axle" \
         '[ $rc -eq 2 ] && [ ! -s out ] && grep -q "^tirenv: $PWD/nocam.tir: ELLIPS_SHIFT: .*(the rear axle.s tire, named by --set REAR_AXLE.TIRE_FILE)$" err'
 done
-# A vehicle file through a pipe is read once: named without its line. The writer is under
-# timeout and released as in cli_fifo.sh (a FIFO opened read-write lets a waiting open through).
+# A vehicle file through a pipe is read once: named without its line. The writer is fed and
+# released as in cli_fifo.sh (clilib.sh's feed and release_writer).
 mkfifo veh.fifo
-timeout 60 sh -c 'exec cat nocam.veh >veh.fifo 2>/dev/null' &
-writer=$!
+feed nocam.veh veh.fifo
 run timeout 60 "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model cam --vehicle veh.fifo
-kill "$writer" 2>/dev/null
-: <>veh.fifo
-wait "$writer" 2>/dev/null
+release_writer veh.fifo
 check "a piped vehicle file: the tire file and the vehicle's field, exit 2" \
     '[ $rc -eq 2 ] && grep -q "(the front axle.s tire, named by veh.fifo: \[FRONT_AXLE\] TIRE_FILE)$" err'
 run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model springs --enveloping dynamic \

@@ -50,6 +50,32 @@ check() {
     fi
 }
 
+# feed SRC FIFO: SRC's bytes written into FIFO (made by the caller) in the background, the
+# writer's id in $writer. Its open of FIFO runs under timeout, so that a writer nobody reads
+# ends by itself.
+feed() {
+    timeout 60 sh -c 'exec cat "$0" >"$1" 2>/dev/null' "$1" "$2" &
+    writer=$!
+}
+
+# release_writer FIFO: ends the writer of feed by opening the FIFO read-write, which never
+# blocks and lets a waiting open through (its writes then end on a closed pipe), again until
+# the writer (timeout, which lives as long as its shell does) has ended: a shell that had not
+# reached its open yet opens later. It is not killed: killing timeout could leave its shell
+# behind, orphaned, blocked in the open of a FIFO in a deleted directory and holding CTest's
+# output pipe, so that the test never ended (seen twice; a TERM can also be lost between the
+# shell's fork and its open). At most timeout's 60 s.
+release_writer() {
+    release_tries=0 # not n, the checks' count
+    while [ $release_tries -lt 1200 ] && [ -r "/proc/$writer/stat" ] &&
+        ! grep -q ') Z ' "/proc/$writer/stat" 2>/dev/null; do
+        : <>"$1"
+        sleep 0.05
+        release_tries=$((release_tries + 1))
+    done
+    wait "$writer" 2>/dev/null
+}
+
 # No output file and no temporary file beside it (.NAME.tirenv-tmp.* of an output, NAME.tmp.*
 # of a plot being drawn).
 no_file() {

@@ -194,7 +194,10 @@ static void test_converged_at_default(void **state)
  * triangle's apex at 0) puts the vertex 1e-200 rad from the node at theta = 0: the default
  * tread, coupled in shear, made a knot there whose coupling overflowed, and the equilibrium
  * failed ("did not settle in 200 Newton steps") from x = -1e-170 m down. Each position is
- * solved cold (tirenv_model_set), as a single-position envelope is; h agrees with h(0). */
+ * solved cold (tirenv_model_set), as a single-position envelope is; h agrees with h(0) within
+ * 1e-6 m, a bound on purpose loose (what failed was the status, asserted; measured with
+ * `tirenv envelope --model ring --step 0,0.1 / --triangle 0.2,0.08 --load 13000` at each x:
+ * h the same as at 0 to the CSV's 9 digits). */
 static void test_vertex_a_hair_below(void **state)
 {
     (void)state;

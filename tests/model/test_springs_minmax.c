@@ -164,9 +164,12 @@ static void test_refusals(void **state)
         G_down[i] = G[N - 1 - i];
     assert_int_equal(tirenv_springs_identify_minmax(&t.springs, N, G_down, M, d, l, &diag),
                      TIRENV_EINVAL);
+    assert_string_equal(diag.field, "loads");
+    assert_non_null(strstr(diag.message, "reference 1, target 2"));  /* not the search's */
     d[N + 3] = d[N + 1];
     assert_int_equal(tirenv_springs_identify_minmax(&t.springs, N, G, M, d, l, &diag),
                      TIRENV_EINVAL);
+    assert_string_equal(diag.field, "loads");
     assert_non_null(strstr(diag.message, "reference 2, target 4"));
     assert_memory_equal(&t.springs, &a.springs, sizeof a.springs); /* unchanged */
 }
