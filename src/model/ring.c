@@ -359,12 +359,11 @@ static int cast_window_smooth(tirenv_ring *r, const tirenv_profile *p, double x,
     r->n_pts = 0;
     const double reach = r->R0 + r->par.t_r;
     /* The angles of the ground inside reach, two nodes beyond, at most a quarter circle each
-     * side: one walk over the ground. Beyond them a piece could still carry a point within
-     * reach, on its line's extension past a vertex out of reach (not a cut): never touching
-     * (d < -t_r + R dtheta), it only widened the window by free nodes, so dropping it moves h
-     * by round-off (up to 3.4e-11 m over the data set's cases). (The highest ground of each
-     * side, in two more walks, bounded them as well before; these bounds are never wider, up
-     * to the one node added here, whose pieces lie out of reach: the same window.) */
+     * side: one walk over the ground. Beyond them no ground lies within reach, and no piece
+     * takes a point on a line's extension (tirenv_ring__sample cuts at every vertex a ray can
+     * pass). (The highest ground of each side, in two more walks, bounded them as well
+     * before; these bounds are never wider, up to the one node added here, whose pieces lie
+     * out of reach: the same window.) */
     double ang[2];
     ground_angles(p, x, z, reach, ang);
     const size_t m_b = (size_t)fmin((double)(r->M / 4), ang[0] / r->dth + 2);

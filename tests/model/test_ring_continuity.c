@@ -227,6 +227,71 @@ static void test_vertex_a_hair_below(void **state)
     tirenv_model_free(m);
 }
 
+/* A half-round of radius 0.1524 m (6 in) sampled every 10 mm, as Project Chrono's
+ * halfround_6in.crg has it: its far flank steepens to a slope of -3.8 before it meets the
+ * ground. Each piece of the window took its end values on the line its middle ray met; a piece
+ * holding a vertex beyond reach (not a cut then) took them on that line's extension past the
+ * vertex, which the steep flank's brought back within reach: a node 45 mm into ground its ray
+ * never meets, there at one centre height and gone 3e-8 m above it, so F_z jumped by 80 N
+ * (0.45 % of the load) and the equilibrium sat on the jump (h 0.74 mm off, the secant
+ * diverged). Now F_z is continuous in z: over +-0.5 mm around the equilibrium of each position,
+ * in 5 um steps, each step's change of F_z is its slopes' mean times the step up to half
+ * their difference (a kink where a contact begins or ends) and 1 mN; a jump of 1 N fails. */
+static tirenv_profile *sampled_half_round(void)
+{
+    enum { n = 231 }; /* x from -1 m to 1.3 m every 10 mm */
+    double x[n], z[n];
+    const double R = 0.1524;
+    for (int k = 0; k < n; ++k) {
+        x[k] = -1 + 0.01 * k;
+        const double u = x[k] - R;
+        z[k] = x[k] > 0 && x[k] < 2 * R ? sqrt(R * R - u * u) : 0;
+    }
+    return tirenv_profile_alloc(n, x, z);
+}
+
+static void test_continuous_in_z_sampled_half_round(void **state)
+{
+    (void)state;
+    tirenv_tire t = tirenv_tire_default();
+    const double G = 17848;
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    tirenv_profile *p = sampled_half_round();
+    assert_non_null(m);
+    assert_non_null(r);
+    assert_non_null(p);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(m, p, G, &diag), TIRENV_OK);
+    double worst = 0;
+    size_t steps = 0;
+    for (double x = -0.16; x <= 0.03; x += 0.01) {
+        tirenv_point eq;
+        assert_int_equal(tirenv_model_eval(m, x, &eq, &diag), TIRENV_OK);
+        double F0 = NAN, k0 = NAN;
+        for (int i = -100; i <= 100; ++i) {
+            const double z = eq.z + 5e-6 * i;
+            double fx, fz, k;
+            assert_int_equal(tirenv_ring_forces(r, p, x, z, &fx, &fz, &k, NULL, &diag),
+                             TIRENV_OK);
+            if (i > -100) {
+                const double excess = fabs(fz - F0 - 0.5 * (k + k0) * 5e-6) -
+                                      0.5 * fabs(k - k0) * 5e-6;
+                worst = fmax(worst, excess);
+                ++steps;
+            }
+            F0 = fz;
+            k0 = k;
+        }
+    }
+    print_message("%zu steps in z: largest change of F_z beyond its slopes' %.3g N\n", steps,
+                  worst);
+    assert_true(worst <= 1e-3);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+    tirenv_model_free(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -236,6 +301,7 @@ int main(void)
         cmocka_unit_test(test_contact_state),
         cmocka_unit_test(test_converged_at_default),
         cmocka_unit_test(test_vertex_a_hair_below),
+        cmocka_unit_test(test_continuous_in_z_sampled_half_round),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
