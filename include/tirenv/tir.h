@@ -90,7 +90,8 @@ typedef struct {
  * values, said in the note. With TIRENV_TIR_ONLY and without TIRENV_TIR_SPRINGS (the ring or
  * the cam alone), a file with a contact law of its own (Q_RA1, Q_RA2), whose ring is searched
  * on its laws alone, has no springs model derived on that ring: its springs keep *tire's
- * values, said in the note. On failure *tire is unchanged. */
+ * values, said in the note. origin (may be NULL): where each model's values came from. On
+ * failure *tire is unchanged. */
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag);
 

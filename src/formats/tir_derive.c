@@ -1264,6 +1264,9 @@ static int derived(tirenv_tir_origin *o, const char *law)
 static int derive(const char *path, const char *text, size_t len, tirenv_tire *tire,
                   unsigned need, tirenv_tir_origin *origin, tirenv_diag *diag)
 {
+    tirenv_tir_origin unread; /* a caller that does not ask where the values came from */
+    if (!origin)
+        origin = &unread;
     memset(origin, 0, sizeof *origin);
     origin->cam_ring_deflection = origin->cam_ring_contact_length = NAN;
     mf_keys k;

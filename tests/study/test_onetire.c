@@ -569,6 +569,11 @@ static void test_ring_alone(void **state)
                                            &o, &d), TIRENV_OK);
         print_message("%s, the ring alone: %s\n", mf_files[f], o.note);
         alone_keys(f, &t, &o, &read, &full, &o_full);
+        tirenv_tire t_null = read; /* origin and diag may be NULL: the same tire */
+        assert_int_equal(tirenv_tir_derive(mf_files[f], &t_null,
+                                           TIRENV_TIR_ONLY | TIRENV_TIR_RING, NULL, NULL),
+                         TIRENV_OK);
+        assert_memory_equal(&t_null, &t, sizeof t);
     }
 }
 
