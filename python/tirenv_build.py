@@ -52,7 +52,6 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag);
 int tirenv_tire_check_cam_keys(const tirenv_tire *tire, tirenv_diag *diag);
 
 /* tir.h */
-int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag);
 int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag);
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag);
 typedef enum { TIRENV_TIR_REAL, TIRENV_TIR_COUNT, TIRENV_TIR_NAME } tirenv_tir_kind;
@@ -66,8 +65,6 @@ static const unsigned int TIRENV_TIR_VERTICAL;
 typedef struct { double fnomin; double rho_nominal; unsigned own; unsigned derived;
                  double pretension_ratio; double cam_ring_deflection;
                  double cam_ring_contact_length; char note[1024]; ...; } tirenv_tir_origin;
-int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
-                      tirenv_tir_origin *origin, tirenv_diag *diag);
 int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
                            tirenv_tir_origin *origin, tirenv_diag *diag);
 
@@ -96,7 +93,6 @@ tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double 
 typedef struct { size_t cylinder_segments; size_t sine_points_per_period; }
     tirenv_profile_resolution;
 tirenv_profile_resolution tirenv_profile_resolution_default(void);
-int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag);
 
 /* crg.h, rdf.h, profile_file.h: a road file of any format, opened once (the library's one
  * road reader), one track of it */
@@ -145,7 +141,6 @@ const char *tirenv_model_name(const tirenv_model *m);
 struct tirenv_nn;
 int tirenv_model_set_network(tirenv_model *m, const struct tirenv_nn *nn, double R0,
                              tirenv_diag *diag);
-const char *tirenv_model_warnings(const tirenv_model *m);
 void tirenv_model_set_extrapolate(tirenv_model *m, int allow);
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *load,
@@ -158,7 +153,6 @@ int tirenv_tracks_spread(size_t n, double v, double width, double v_out[], tiren
 int tirenv_model_set_tracks(tirenv_model *m, size_t n, const tirenv_profile *const profiles[],
                             const double weights[], double load, tirenv_diag *diag);
 double tirenv_model_reach(const tirenv_model *m);
-int tirenv_model_eval(tirenv_model *m, double x, tirenv_point *out, tirenv_diag *diag);
 int tirenv_model_envelope(tirenv_model *m, size_t n, const double x[], tirenv_point out[],
                           size_t *failed, tirenv_diag *diag);
 
@@ -224,13 +218,11 @@ typedef struct {
     double z_a, vz_a; double w_front, w_rear; double seat_az; double seat_ax;
     double F_front, F_rear;
 } tirenv_ride_sample;
-tirenv_ride_settings tirenv_ride_default(void);
 int tirenv_ride_method_parse(const char *name, tirenv_ride_method *m, tirenv_diag *diag);
 typedef enum {
     TIRENV_RIDE_STATIC = 0, TIRENV_RIDE_DYNAMIC, TIRENV_RIDE_DIRECT, TIRENV_RIDE_N_ENVELOPING
 } tirenv_ride_enveloping;
 #define TIRENV_RIDE_ENVELOPING_DEFAULT ...
-const char *tirenv_ride_enveloping_name(tirenv_ride_enveloping e);
 int tirenv_ride_enveloping_parse(const char *name, tirenv_ride_enveloping *e,
                                  tirenv_diag *diag);
 typedef struct {
@@ -238,10 +230,6 @@ typedef struct {
 } tirenv_ride_span;
 tirenv_ride_span tirenv_ride_span_default(void);
 double tirenv_ride_span_start(const tirenv_ride_span *s, double x_first);
-double tirenv_ride_span_end(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_last,
-                            double V);
-double tirenv_ride_span_grid(const tirenv_ride_span *s, const tirenv_vehicle *v, double x_from,
-                             double x_to, double *x0);
 typedef struct {
     tirenv_ride_span span; double x_from; double x_to; double dt; tirenv_ride_method method;
     double tol; double max_points;

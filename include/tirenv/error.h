@@ -28,7 +28,8 @@ typedef enum {
 const char *tirenv_strerror(int status);
 
 /* Where and why a parser or solver failed, for the caller to print (the library never prints).
- * line and column are 1-based; 0 means "not applicable". */
+ * line and column are 1-based; 0 means "not applicable". Every function's tirenv_diag *diag
+ * may be NULL: the status alone then says what failed. */
 typedef struct {
     char file[512];      /* file name, or "" */
     size_t line;         /* 1-based line, or 0 */

@@ -57,25 +57,16 @@ typedef struct {
 
 static int parse_references(ref_list *r, const char *arg)
 {
-    char buf[64];
-    r->m = 0;
-    if (strlen(arg) >= sizeof buf)
-        goto bad;
-    memcpy(buf, arg, strlen(arg) + 1);
-    for (char *p = buf, *next; p; p = next) {
-        if ((next = strchr(p, ',')))
-            *next++ = '\0';
-        const tirenv_model_type *t;
-        if (cli_model_type(p, &t))
-            return CLI_EXIT_USAGE; /* said, with the models' names */
-        if (!(tirenv_model_type_flags(t) & TIRENV_MODEL_CONTACT_LENGTH) ||
-            t == tirenv_model_springs || r->m == MAX_REFS)
+    if (cli_model_list("--reference", arg, r->t, MAX_REFS, &r->m))
+        return CLI_EXIT_USAGE; /* said, with the models' names */
+    for (size_t k = 0; k < r->m; k++) {
+        if (!(tirenv_model_type_flags(r->t[k]) & TIRENV_MODEL_CONTACT_LENGTH) ||
+            r->t[k] == tirenv_model_springs)
             goto bad;
-        for (size_t j = 0; j < r->m; j++)
-            if (r->t[j] == t)
+        for (size_t j = 0; j < k; j++)
+            if (r->t[j] == r->t[k])
                 goto bad;
-        r->t[r->m] = t;
-        r->name[r->m++] = tirenv_model_type_name(t);
+        r->name[k] = tirenv_model_type_name(r->t[k]);
     }
     return CLI_EXIT_OK;
 bad:

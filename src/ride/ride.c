@@ -195,7 +195,8 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
     size_t dim = 4;
     int status = steady_start(r, y, &dim);
     if (status) {
-        *diag = r->diag;
+        if (diag)
+            *diag = r->diag;
         return status;
     }
     const tirenv_ride__ode sys = {rhs, r, dim};
@@ -249,8 +250,8 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
     }
     goto done;
 failed:  /* an input failed: its own message, with where the run was */
-    *diag = r->diag;
-    {
+    if (diag) {
+        *diag = r->diag;
         char msg[sizeof diag->message];
         snprintf(msg, sizeof msg, "at t = %.6g s (x_front = %.6g m): %.400s", t,
                  r->x_front0 + r->V * t, r->diag.message);

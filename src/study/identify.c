@@ -326,7 +326,7 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
         }
         snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
     }
-    if (!status && (status = tirenv_contact_law_check(&out, diag)) && source) {
+    if (!status && (status = tirenv_contact_law_check(&out, diag)) && source && diag) {
         /* The cases and the source model's flat ground are one tire's only if the tire is the
          * one that simulated the data: another tire's (a --tire of the study) interleaves its
          * contact lengths with the cases', and the law descends. */

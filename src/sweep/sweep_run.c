@@ -73,6 +73,8 @@ static void describe_case(const sweep_run *r, size_t i, char *buf, size_t size)
 /* Prefixes a failure's message with the case it happened in. */
 static int case_failed(const sweep_run *r, size_t i, int status, tirenv_diag *diag)
 {
+    if (!diag)
+        return status;
     char what[400], msg[sizeof diag->message];
     describe_case(r, i, what, sizeof what);
     snprintf(msg, sizeof msg, "%.200s: %.300s", what, diag->message);

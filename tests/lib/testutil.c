@@ -67,6 +67,16 @@ int tirenv_test_dir_teardown(void **state)
     return r;
 }
 
+int tirenv_test_dir_teardown_tree(void **state)
+{
+    const tirenv_test_dir *d = *state;
+    char cmd[200];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'/*", d->dir);
+    if (system(cmd) != 0)
+        return -1;
+    return tirenv_test_dir_teardown(state);
+}
+
 const char *tirenv_test_shell_quote(const char *s, char *buf, size_t size)
 {
     size_t n = 0;

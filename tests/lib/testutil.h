@@ -88,6 +88,9 @@ void tirenv_test_expect_diag(size_t i, int status, const tirenv_diag *d, int wan
 
 int tirenv_test_dir_setup(void **state);
 int tirenv_test_dir_teardown(void **state);
+/* The same teardown after removing everything in the directory, subdirectories too (a sweep's
+ * trees). */
+int tirenv_test_dir_teardown_tree(void **state);
 
 /* s in single quotes for a system() command line, each ' in it written '\'' (a path with
  * blanks or quotes stays one word); asserts that it fits in size bytes. Returns buf. */

@@ -3,7 +3,7 @@
  * (tirenv_springs_identify_minmax, docs/models.md section 14.1): on a springs model's own
  * flat ground it comes back; on two that differ it lands between them, its largest difference
  * from either less than theirs from each other and less than a one-reference identification
- * leaves; without a sidewall none is made; and the refusals. */
+ * leaves; without a sidewall none is made; and the refusals, the search's own among them. */
 #include <math.h>
 #include <string.h>
 #include "testutil.h"
@@ -174,6 +174,24 @@ static void test_refusals(void **state)
     assert_memory_equal(&t.springs, &a.springs, sizeof a.springs); /* unchanged */
 }
 
+/* Targets whose loads span a thousandfold while their deflections barely differ: no ratio
+ * c_b/c_r gives a flat ground whose force grows that much over the searched deflections (0.3
+ * to 1.5 times the targets'), so no c_r keeps every load within them, and the search says so
+ * rather than returning a model. */
+static void test_no_model_carries(void **state)
+{
+    (void)state;
+    const tirenv_tire a = tire_of(1, 1, 0);
+    const double G[2] = {23.85, 23850}, d[2] = {0.0412, 0.0413}, l[2] = {0.291, 0.292};
+    tirenv_tire t = a;
+    tirenv_diag diag;
+    assert_int_equal(tirenv_springs_identify_minmax(&t.springs, 2, G, 1, d, l, &diag),
+                     TIRENV_EINVAL);
+    assert_string_equal(diag.field, "loads");
+    assert_non_null(strstr(diag.message, "no springs model carries the loads 23.85 to 23850 N"));
+    assert_memory_equal(&t.springs, &a.springs, sizeof a.springs); /* unchanged */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -181,6 +199,7 @@ int main(void)
         cmocka_unit_test(test_two_references),
         cmocka_unit_test(test_no_sidewall),
         cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_no_model_carries),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

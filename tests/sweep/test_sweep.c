@@ -429,17 +429,6 @@ static void test_read_text(void **state)
     free(want);
 }
 
-static int rm_setup(void **state) { return tirenv_test_dir_setup(state); }
-static int rm_teardown(void **state)
-{
-    const tirenv_test_dir *t = *state;
-    char cmd[200];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'/*", t->dir);
-    if (system(cmd) != 0)
-        return -1;
-    return tirenv_test_dir_teardown(state);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -447,10 +436,14 @@ int main(void)
         cmocka_unit_test(test_split),
         cmocka_unit_test(test_numbers_and_spec),
         cmocka_unit_test(test_checks),
-        cmocka_unit_test_setup_teardown(test_runs, rm_setup, rm_teardown),
-        cmocka_unit_test_setup_teardown(test_resume, rm_setup, rm_teardown),
-        cmocka_unit_test_setup_teardown(test_rig, rm_setup, rm_teardown),
-        cmocka_unit_test_setup_teardown(test_read_text, rm_setup, rm_teardown),
+        cmocka_unit_test_setup_teardown(test_runs, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown_tree),
+        cmocka_unit_test_setup_teardown(test_resume, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown_tree),
+        cmocka_unit_test_setup_teardown(test_rig, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown_tree),
+        cmocka_unit_test_setup_teardown(test_read_text, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown_tree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
