@@ -140,6 +140,7 @@ typedef struct {
     double d_lo, d_hi;            /* the table's deflections, m */
     int status;
     tirenv_diag *diag;
+    double log_c_r;               /* the best c_r at the last beta tried */
 } beta_ctx;
 
 static double worst_log_beta(double log_beta, void *p)
@@ -155,7 +156,7 @@ static double worst_log_beta(double log_beta, void *p)
         return INFINITY;
     b->x->tb = b->tb;
     double worst;
-    tirenv_core__golden_min(worst_log_c_r, b->x, lo, hi, b->x->steps, &worst);
+    b->log_c_r = tirenv_core__golden_min(worst_log_c_r, b->x, lo, hi, b->x->steps, &worst);
     b->x->tb = NULL;
     return worst;
 }
@@ -192,17 +193,16 @@ static int search(tirenv_springs_params *par, beta_ctx *b)
         GOLDEN, NULL);
     if (b->status)
         return b->status;
-    /* The minimiser's own values, from its table once more. */
-    double lo, hi;
-    const int status =
-        tirenv_springs__table_of(par, exp(log_beta), b->d_lo, b->d_hi, b->tb, b->diag);
-    if (status)
-        return status;
-    if (!c_r_range(x, b->tb, &lo, &hi))
+    /* The minimiser's own values: its table and best c_r once more, then the elements' states
+     * and the sidewall at that c_r. */
+    const double worst = worst_log_beta(log_beta, b);
+    if (b->status)
+        return b->status;
+    if (!isfinite(worst))
         return no_model(b);
     x->tb = b->tb;
-    const double log_c_r = tirenv_core__golden_min(worst_log_c_r, x, lo, hi, GOLDEN, NULL);
-    worst_log_c_r(log_c_r, x); /* the elements' states and the sidewall at that c_r */
+    const double log_c_r = b->log_c_r;
+    worst_log_c_r(log_c_r, x);
     par->c_r = exp(log_c_r);
     par->c_b = par->c_r * exp(log_beta);
     par->k_s = x->sidewall ? 1 / x->c : 0;
@@ -254,7 +254,7 @@ int tirenv_springs_identify_minmax(tirenv_springs_params *par, size_t n, const d
     tirenv_springs__table_init(&table, store, TABLE);
     minmax_ctx x = {.n = n, .m = m, .G = load, .d = deflection, .l = contact_length,
                     .sidewall = sidewall, .d_max = d_max};
-    beta_ctx b = {par, &x, &table, 0.3 * d_min, 1.5 * d_max, TIRENV_OK, diag};
+    beta_ctx b = {par, &x, &table, 0.3 * d_min, 1.5 * d_max, TIRENV_OK, diag, 0};
     const int status = search(par, &b);
     free(store);
     return status;
