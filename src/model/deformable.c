@@ -631,7 +631,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
 int tirenv_deformable_check_jump(const tirenv_deformable *def, const tirenv_tire *tire,
                                  const tirenv_eq_result *res, double G, tirenv_diag *diag)
 {
-    if (!(res->jump > tire->eq.eps_F + 1e-9 * G) || !def->continuous || !def->continuous(tire))
+    if (!(res->jump > tire->eq.eps_F + 1e-6 * G) || !def->continuous || !def->continuous(tire))
         return TIRENV_OK;
     return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
                         "F_z jumps by %.3g N across z = %.9g m, where the continuous contact "

@@ -73,7 +73,7 @@ int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, 
 int tirenv_deformable_invariant(const tirenv_tire *tire);
 
 /* TIRENV_ENOCONV, saying so, where res located the equilibrium at load G (N) on a jump of F_z
- * that def's continuous contact for tire should not have (more than eps_F and 1e-9 G beyond
+ * that def's continuous contact for tire should not have (more than eps_F and 1e-6 G beyond
  * the slopes); else TIRENV_OK. */
 int tirenv_deformable_check_jump(const tirenv_deformable *def, const tirenv_tire *tire,
                                  const tirenv_eq_result *res, double G, tirenv_diag *diag);
