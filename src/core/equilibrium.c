@@ -139,6 +139,7 @@ int tirenv_eq__solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
         .point = {.z = NAN, .F = NAN, .dF_dz = NAN, .fx = NAN, .contacts = 0},
         .evals = 0,
         .stop = TIRENV_EQ_RUNNING,
+        .jump = 0,
     };
     tirenv_eq_stop stop = TIRENV_EQ_RUNNING;
     const tirenv_eq_point *accepted = NULL;
@@ -164,6 +165,13 @@ int tirenv_eq__solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
     }
     res->evals = s->evals;
     res->stop = stop;
+    /* The bracket's ends are the latest evaluations either side of the load, but where one
+     * met it exactly (F = G, Brent's bracket shrinks onto it): no jump then. */
+    const double w = fabs(s->above.z - s->below.z);
+    if (stop == TIRENV_EQ_BRACKET && s->have_below && s->have_above && w <= eq->eps_z) {
+        const double k = fmax(fabs(s->below.dF_dz), fabs(s->above.dF_dz));
+        res->jump = fmax(0, s->below.F - s->above.F - k * w);
+    }
     if (status)
         return stop == TIRENV_EQ_MAX_EVALS ? evals_spent(s, diag) : status;
     res->point = *accepted;

@@ -131,6 +131,10 @@ typedef struct {
     tirenv_eq_point point; /* the accepted evaluation (all NaN / 0 on failure) */
     size_t evals;          /* force evaluations spent */
     tirenv_eq_stop stop;   /* why it stopped */
+    double jump;           /* with stop TIRENV_EQ_BRACKET, how far F_z falls across the final
+                            * bracket beyond what its ends' slopes account for (N): a jump of
+                            * F_z at the root, located to eps_z; 0 otherwise, and where an
+                            * evaluation met the load exactly */
 } tirenv_eq_result;
 
 /* The driver: set, then test and iterate until the solver converges, fails or spends

@@ -612,10 +612,12 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     };
     force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;
-    const int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
+    int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
                                        &res, diag);
     out->x = x;
     out->iterations = res.evals;
+    if (!status)
+        status = tirenv_deformable_check_jump(st->def, &st->tire, &res, st->G, diag);
     if (status)
         return status;
     tirenv_deformable_history_push(&st->prev, x, res.point.z);
@@ -624,6 +626,17 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     tirenv_model__eq_point(&res.point, st->z_flat, out);
     out->z = res.point.z - hub_offset(st);
     return TIRENV_OK;
+}
+
+int tirenv_deformable_check_jump(const tirenv_deformable *def, const tirenv_tire *tire,
+                                 const tirenv_eq_result *res, double G, tirenv_diag *diag)
+{
+    if (!(res->jump > tire->eq.eps_F + 1e-6 * G) || !def->continuous || !def->continuous(tire))
+        return TIRENV_OK;
+    return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
+                        "F_z jumps by %.3g N across z = %.9g m, where the continuous contact "
+                        "has no jump: no equilibrium at this load there (a defect of the "
+                        "model's contact, not of the input)", res->jump, res->point.z);
 }
 
 int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,

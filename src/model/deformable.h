@@ -53,6 +53,11 @@ struct tirenv_deformable {
      * u above the hub (docs/models.md section 4.9): at a constant load u is a constant, so
      * the equilibria are solved for the centre and the hub reported u below it. */
     double (*series)(const tirenv_tire *tire, double F, double *dU_dF);
+    /* Nonzero where the tire's contact makes F_z continuous in z and x (the continuous
+     * contacts of docs/models.md 4.8 and 5.3): an equilibrium that the solver locates on a
+     * jump of F_z is then a defect, refused (tirenv_deformable_check_jump); NULL: F_z may
+     * jump (the paper's rays), and the jump is the equilibrium (section 11.3). */
+    int (*continuous)(const tirenv_tire *tire);
     /* Nonzero: the warm start of a position is the line through the last two equilibria
      * (deformable.c's predict), for a model whose Newton converges slowly; else the last. */
     int extrapolate;
@@ -66,6 +71,12 @@ extern const tirenv_model_ops tirenv_deformable_ops;
 int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,
                                    double *z_hi);
 int tirenv_deformable_invariant(const tirenv_tire *tire);
+
+/* TIRENV_ENOCONV, saying so, where res located the equilibrium at load G (N) on a jump of F_z
+ * that def's continuous contact for tire should not have (more than eps_F and 1e-6 G beyond
+ * the slopes); else TIRENV_OK. */
+int tirenv_deformable_check_jump(const tirenv_deformable *def, const tirenv_tire *tire,
+                                 const tirenv_eq_result *res, double G, tirenv_diag *diag);
 
 /* The warm start at x (m) from the last two equilibria (x1, z1) and (x2, z2) (m), the last
  * first: z1, or with extrapolate (the model's record's) and have2 the line through both, where

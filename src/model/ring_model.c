@@ -135,6 +135,11 @@ static void ring_state_restore(void *elem, const unsigned char *buf)
     tirenv_ring__state_restore(elem, buf);
 }
 
+static int ring_continuous(const tirenv_tire *tire)
+{
+    return tire->ring.contact == TIRENV_RING_CONTINUOUS;
+}
+
 static const tirenv_deformable ring_deformable = {
     .alloc = ring_alloc,
     .free = ring_free,
@@ -146,6 +151,7 @@ static const tirenv_deformable ring_deformable = {
     .state_size = ring_state_size,
     .state_save = ring_state_save,
     .state_restore = ring_state_restore,
+    .continuous = ring_continuous,
     .extrapolate = 1,
 };
 

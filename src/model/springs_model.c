@@ -170,6 +170,11 @@ static double springs_sidewall(const tirenv_tire *tire, double F, double *dU_dF)
     return (F - par->F_s0) / par->k_s;
 }
 
+static int springs_continuous(const tirenv_tire *tire)
+{
+    return tire->springs.contact == TIRENV_SPRINGS_CONTINUOUS;
+}
+
 static const tirenv_deformable springs_deformable = {
     .alloc = springs_alloc,
     .free = springs_free,
@@ -182,6 +187,7 @@ static const tirenv_deformable springs_deformable = {
     .state_save = springs_state_save,
     .state_restore = springs_state_restore,
     .series = springs_sidewall,
+    .continuous = springs_continuous,
 };
 
 /* The stiffnesses that shape h, which a fit identifies, and the free radius on request

@@ -391,10 +391,13 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     };
     sum_ctx c = {m, x};
     tirenv_eq_result res;
-    const int status = tirenv_eq__solve(t->solver, &m->tire.eq, sum_forces, &c, m->load, &prob,
+    int status = tirenv_eq__solve(t->solver, &m->tire.eq, sum_forces, &c, m->load, &prob,
                                         &res, diag);
     out->x = x;
     out->iterations = res.evals;
+    if (!status)
+        status = tirenv_deformable_check_jump(m->type->deformable, &m->tire, &res, m->load,
+                                              diag);
     if (status)
         return status;
     tirenv_deformable_history_push(&t->prev, x, res.point.z);

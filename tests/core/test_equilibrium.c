@@ -1,7 +1,8 @@
 /* The equilibrium solvers (src/core/equilibrium.c, docs/models.md section 4) on their own, in
  * the manner of GSL's roots/test.c: a table of force laws with known answers (smooth, kinked,
  * a jump in F_z, a plateau, no bracket) and cases that must fail with the right status and
- * stop reason, looped over every method. Each solve also checks that the reported point is one
+ * stop reason, looped over every method, with the jump each measures across its final
+ * bracket. Each solve also checks that the reported point is one
  * of the force function's own evaluations, bit for bit, and that the budget of evaluations
  * holds, whatever the force function does. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
@@ -216,6 +217,13 @@ static void run_case(const eq_case *c, size_t m)
     double root = c->root;
     if (isnan(root) && c->L.kind == SMOOTH)
         root = smooth_a - pow(c->G / smooth_k, 2.0 / 3.0);
+    /* The jump across the final bracket (what the continuous models refuse): the law's own
+     * where it has one, to its slope times eps_z; else none beyond the force tolerance (a
+     * kink's two slopes account for its bend). */
+    if (c->L.kind == JUMP)
+        assert_near(res.jump, c->L.J, c->L.k1 * eq.eps_z + 1e-6, 0);
+    else
+        assert_true(res.jump <= eq.eps_F);
     if (res.stop == TIRENV_EQ_RESIDUAL) {
         assert_true(fabs(res.point.F - c->G) <= eq.eps_F);
         assert_near(res.point.z, root, eq.eps_z + eq.eps_F / fabs(res.point.dF_dz), 0);
