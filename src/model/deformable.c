@@ -613,7 +613,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
     force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;
     int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
-                                       &res, diag);
+                                  &res, diag);
     out->x = x;
     out->iterations = res.evals;
     if (!status)

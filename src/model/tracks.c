@@ -392,7 +392,7 @@ static int equilibrium(tirenv_model *m, double x, tirenv_point *out, tirenv_diag
     sum_ctx c = {m, x};
     tirenv_eq_result res;
     int status = tirenv_eq__solve(t->solver, &m->tire.eq, sum_forces, &c, m->load, &prob,
-                                        &res, diag);
+                                  &res, diag);
     out->x = x;
     out->iterations = res.evals;
     if (!status)
