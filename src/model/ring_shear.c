@@ -1674,6 +1674,22 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
     return st;
 }
 
+/* solve_on over the whole window, and if its Newton does not settle, once more from rest (w
+ * and u zero, a first evaluation's start). The warm start is the last equilibrium's belt and
+ * tread moved along their slope in z; where z jumps by centimetres (Brent's bisection after a
+ * root: 0.148 m over Horstwalde.crg) that extrapolation can leave Newton more than its 200
+ * steps from the minimum, which does not depend on the start. Only a solve that failed is
+ * repeated: every answer that settled is as it was. */
+static int solve_whole(tirenv_ring *r, double x_c, int want)
+{
+    int st = solve_on(r, x_c, r->lo, r->lo + r->n - 1, 0, r->n_pts, want);
+    if (st == TIRENV_RING_NEWTON_NOCONV) {
+        memset(r->tread->xw, 0, 2 * r->n * sizeof *r->tread->xw);
+        st = solve_on(r, x_c, r->lo, r->lo + r->n - 1, 0, r->n_pts, want);
+    }
+    return st;
+}
+
 /* The error of solve_on's status st on n nodes. */
 static int solve_error(const tirenv_ring *r, int st, size_t n, tirenv_diag *diag)
 {
@@ -1742,7 +1758,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         a = a2, b = b2, k0 = k02, k1 = k12;
     }
     if (!sub) {
-        int st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
+        int st = solve_whole(r, x_c, want);
         if (st != TIRENV_RING_NEWTON_OK)
             return solve_error(r, st, n, diag);
         /* The same answer as the sub-window's of this contact, if it has one: solved there
@@ -1759,7 +1775,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                   (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
             if (!sub) { /* round-off at the sub-window's ends, or the carcass beyond its
                          * linear range there: the whole window's, again */
-                st = solve_on(r, x_c, lo, hi, 0, n_pts, want);
+                st = solve_whole(r, x_c, want);
                 if (st != TIRENV_RING_NEWTON_OK)
                     return solve_error(r, st, n, diag);
             }

@@ -58,6 +58,16 @@ for enc in kdbi krbi ldfi lrfi; do
     check "CRG -> CSV -> CRG ($enc) -> CSV: the same heights within $tol m" \
         '[ $ok -eq 0 ] && [ $rc -eq 0 ] && same_rows h.csv h-$enc.csv $tol'
 done
+# LRFI's 10-character numbers hold 7 decimals below 10 m in magnitude, a decimal fewer for
+# each further digit before the point (Barber.crg reaches -12.192 m; its round trip came back
+# 7.9e-8 m off): 12 m down within 5e-7 m, not 5e-8.
+printf 'x_m,z_m\n0,-12.19199992085961\n0.1,-12.1234567891\n0.2,3.12345678912\n' >deep.csv
+run "$bin" convert --profile deep.csv --crg-encoding lrfi -o deep.crg
+ok=$rc
+run "$bin" convert --profile deep.crg -o deep.back.csv
+check "LRFI from 10 m in magnitude: 6 decimals (within 5e-7 m, not 5e-8)" \
+    '[ $ok -eq 0 ] && [ $rc -eq 0 ] && same_rows deep.csv deep.back.csv 5e-7 &&
+     ! same_rows deep.csv deep.back.csv 5e-8'
 check "KDBI keeps the CSV's numbers exactly, text and all" \
     '[ "$(grep -v "^#" h.csv)" = "$(grep -v "^#" h-kdbi.csv)" ]'
 run "$bin" convert --profile "$crg/Horstwalde.crg" --track 1.6 -o h16.csv

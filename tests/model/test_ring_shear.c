@@ -779,6 +779,46 @@ static void test_sub_window_is_whole_window(void **state)
     tirenv_model_free(m);
 }
 
+/* A warm start far from the equilibrium settles: over 1.1 m of Horstwalde.crg (Project
+ * Chrono's twist track as tirenv convert reads it, its vertices as they are) at x = 137.818 m,
+ * the 205/60R15 tire at 4000 N, Brent's bisection evaluated F_z at z = 0.975 m right after the
+ * root at 1.1228 m: the belt and tread extrapolated 0.148 m along the root's slope in z made a
+ * start from which the shear-coupled contact (1,032 points on 717 nodes) did not settle in 200
+ * Newton steps, and the position failed, where a cold start settles (found by running every
+ * method over the sample roads). Brent's h equals Newton's within the equilibrium's tolerance. */
+static void test_far_warm_start_settles(void **state)
+{
+    (void)state;
+    const double x[] = {137.3, 137.4, 137.5, 137.6, 137.70000000000002, 137.8, 137.9, 138,
+                        138.1, 138.20000000000002, 138.3, 138.4};
+    const double z[] = {0.8168960213661194, 0.8158640265464783, 0.8152213096618652,
+                        0.8149999976158142, 0.818120002746582,  0.8255599737167358,
+                        0.8344399929046631, 0.8418800234794617, 0.8450000286102295,
+                        0.8434399962425232, 0.8397200107574463, 0.8352800011634827};
+    tirenv_profile *p = tirenv_profile_alloc(12, x, z);
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_read(TIRENV_DATA_DIR "/tires/205-60R15-mfswift.tir", &t, &d),
+                     TIRENV_OK);
+    assert_true(p && t.ring.G_t > 0);
+    double h[2];
+    for (int k = 0; k < 2; ++k) {
+        t.eq.method = k ? TIRENV_EQ_BRENT : TIRENV_EQ_NEWTON;
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+        assert_non_null(m);
+        tirenv_point pt;
+        assert_int_equal(tirenv_model_set(m, p, 4000, &d), TIRENV_OK);
+        const int st = tirenv_model_eval(m, 137.818, &pt, &d);
+        if (st)
+            print_message("%s\n", d.message);
+        assert_int_equal(st, TIRENV_OK);
+        h[k] = pt.h;
+        tirenv_model_free(m);
+    }
+    assert_near(h[1], h[0], 1e-8, 0);
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -796,6 +836,7 @@ int main(void)
         cmocka_unit_test(test_refactor_restart),
         cmocka_unit_test(test_exterior_shared_factor),
         cmocka_unit_test(test_sub_window_is_whole_window),
+        cmocka_unit_test(test_far_warm_start_settles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
