@@ -167,10 +167,10 @@ int tirenv_eq__solve(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
     res->stop = stop;
     /* The bracket's ends are the latest evaluations either side of the load, but where one
      * met it exactly (F = G, Brent's bracket shrinks onto it): no jump then. */
-    const double w = fabs(s->above.z - s->below.z);
-    if (stop == TIRENV_EQ_BRACKET && s->have_below && s->have_above && w <= eq->eps_z) {
+    if (stop == TIRENV_EQ_BRACKET && s->have_below && s->have_above) {
+        const double w = fabs(s->above.z - s->below.z);
         const double k = fmax(fabs(s->below.dF_dz), fabs(s->above.dF_dz));
-        res->jump = fmax(0, s->below.F - s->above.F - k * w);
+        res->jump = w <= eq->eps_z ? fmax(0, s->below.F - s->above.F - k * w) : 0;
     }
     if (status)
         return stop == TIRENV_EQ_MAX_EVALS ? evals_spent(s, diag) : status;
