@@ -229,20 +229,44 @@ static void test_vertex_a_hair_below(void **state)
     tirenv_model_free(m);
 }
 
-/* A half-round of radius R (m) from x = 0 sampled every dx (m) from x = -1 m (the grid's
- * phase, m, shifts the samples), flat elsewhere: Project Chrono's halfround_6in.crg is R =
- * 0.1524 m at 10 mm, phase 0. Its far flank steepens to a slope of -3.8 before it meets the
- * ground. */
-static tirenv_profile *sampled_half_round(double R, double dx, double phase)
+/* Curved obstacles as a profile samples them: a half-round of radius a, a 1 - cos bump, a
+ * triangle and a half-round pothole (half width a, height or depth H) and four periods of a
+ * sine of wavelength 2 a and amplitude H / 2, from x = -a (-4 a for the sines). */
+typedef enum { HALF_ROUND, BUMP, TRIANGLE, POTHOLE, SINES, N_CURVES } curve_kind;
+
+static double curve_height(curve_kind kind, double a, double H, double u)
 {
-    enum { n_max = 1000 };
-    double x[n_max], z[n_max];
-    size_t n = 0;
-    for (double xk = -1 + phase; xk < 2 * R + 1 && n < n_max; xk = -1 + phase + dx * (double)n) {
-        const double u = xk - R;
-        x[n] = xk;
-        z[n++] = xk > 0 && xk < 2 * R ? sqrt(R * R - u * u) : 0;
+    const double r = fabs(u) / a;
+    switch (kind) {
+    case HALF_ROUND: return r < 1 ? a * sqrt(1 - r * r) : 0;
+    case BUMP: return r < 1 ? 0.5 * H * (1 + cos(M_PI * r)) : 0;
+    case TRIANGLE: return r < 1 ? H * (1 - r) : 0;
+    case POTHOLE: return r < 1 ? -H * sqrt(1 - r * r) : 0;
+    default: return r < 4 ? 0.5 * H * sin(M_PI * u / a) : 0;
     }
+}
+
+/* The obstacle sampled every dx (m) from a point phase (m) past one dx before its start to
+ * one dx past its end, level ground 3 m either side. mirror: the samples at k dx, k = -n..n,
+ * exactly symmetric about x = 0 for the even shapes (phase unused). */
+static tirenv_profile *sampled_curve(curve_kind kind, double a, double H, double dx,
+                                     double phase, int mirror)
+{
+    enum { n_max = 1200 };
+    double x[n_max], z[n_max];
+    const double e = kind == SINES ? 4 * a : a;
+    size_t n = 0;
+    x[n] = -3, z[n++] = 0;
+    if (mirror) {
+        const int k_end = (int)ceil(e / dx) + 1;
+        for (int k = -k_end; k <= k_end && n < n_max - 1; ++k)
+            x[n] = k * dx, z[n] = curve_height(kind, a, H, x[n]), ++n;
+    } else {
+        const double x_0 = -e - dx + phase;
+        for (size_t i = 0; x_0 + dx * (double)i <= e + dx && n < n_max - 1; ++i)
+            x[n] = x_0 + dx * (double)i, z[n] = curve_height(kind, a, H, x[n]), ++n;
+    }
+    x[n] = 3, z[n++] = 0;
     return tirenv_profile_alloc(n, x, z);
 }
 
@@ -287,12 +311,16 @@ static double jump_in_z(tirenv_model *m, tirenv_ring *ring, tirenv_springs *spri
  * vertex, which a steep flank's brought back within reach: over Chrono's 6 in half-round, a
  * node 45 mm into ground its ray never meets, there at one centre height and gone 3e-8 m
  * above it, so F_z jumped by 80 N (0.45 % of the load) and the equilibrium sat on the jump
- * (h 0.74 mm off; the secant diverged). Over that bump (20 positions, +-0.5 mm) and 4 seeded
+ * (h 0.74 mm off; the secant diverged). Over that bump (a = 0.1524 m every 10 mm, phase 0,
+ * as Chrono's file samples it; 20 positions, +-0.5 mm) and 4 seeded
  * random ones (radius 0.05 to 0.2 m, samples 5 to 15 mm apart at a random phase, loads 8 to
  * 24 kN, 12 positions over the approach, +-0.1 mm): no step's change beyond its slopes' more
- * than 1 mN (a jump of 1 N fails; before the fix the ring's largest was 3,940 N). 1 mN, some
- * 1e-7 of the loads, lies far above what a smooth F_z leaves over a 5 um step beyond its two
- * slopes (its curvature: measured 1.6e-6 N for the ring, 7e-11 N for springs). */
+ * than 10 mN (a jump of 1 N fails; on the window before the fix the test fails, the
+ * equilibrium itself refused on a jump, and its scan found up to 3,940 N). What a continuous
+ * F_z leaves beyond the slopes over a 5 um step is its curvature and a tread point that starts
+ * to touch inside the step: measured 4.8e-4 N for the ring (on one of the random bumps),
+ * 7e-11 N for springs; 10 mN is 20 times that and a hundredth of the smallest jump worth
+ * catching. */
 static void test_continuous_in_z_sampled_half_round(void **state)
 {
     (void)state;
@@ -311,8 +339,8 @@ static void test_continuous_in_z_sampled_half_round(void **state)
         const double dx = b ? 0.005 + 0.01 * tirenv_rng_uniform(rng) : 0.01;
         const double phase = b ? dx * tirenv_rng_uniform(rng) : 0;
         const double G = b ? 8000 + 16000 * tirenv_rng_uniform(rng) : 17848;
-        const double x_0 = b ? -0.35 + 0.2 * tirenv_rng_uniform(rng) : -0.23;
-        tirenv_profile *p = sampled_half_round(R, dx, phase);
+        const double x_0 = (b ? -0.35 + 0.2 * tirenv_rng_uniform(rng) : -0.23) - R;
+        tirenv_profile *p = sampled_curve(HALF_ROUND, R, R, dx, phase, 0);
         assert_non_null(p);
         for (int k = 0; k < 2; ++k) {
             assert_int_equal(tirenv_model_set(m[k], p, G, &diag), TIRENV_OK);
@@ -324,54 +352,13 @@ static void test_continuous_in_z_sampled_half_round(void **state)
     }
     print_message("largest change of F_z beyond its slopes': ring %.3g N (%zu steps), springs "
                   "%.3g N (%zu steps)\n", worst[0], steps[0], worst[1], steps[1]);
-    assert_true(worst[0] <= 1e-3);
-    assert_true(worst[1] <= 1e-3);
+    assert_true(worst[0] <= 1e-2);
+    assert_true(worst[1] <= 1e-2);
     tirenv_rng_free(rng);
     tirenv_springs_free(s);
     tirenv_ring_free(r);
     tirenv_model_free(m[1]);
     tirenv_model_free(m[0]);
-}
-
-/* Curved obstacles as a profile samples them: a half-round of radius a, a 1 - cos bump, a
- * triangle and a half-round pothole (half width a, height or depth H) and four periods of a
- * sine of wavelength 2 a and amplitude H / 2, from x = -a (-4 a for the sines). */
-typedef enum { HALF_ROUND, BUMP, TRIANGLE, POTHOLE, SINES, N_CURVES } curve_kind;
-
-static double curve_height(curve_kind kind, double a, double H, double u)
-{
-    const double r = fabs(u) / a;
-    switch (kind) {
-    case HALF_ROUND: return r < 1 ? a * sqrt(1 - r * r) : 0;
-    case BUMP: return r < 1 ? 0.5 * H * (1 + cos(M_PI * r)) : 0;
-    case TRIANGLE: return r < 1 ? H * (1 - r) : 0;
-    case POTHOLE: return r < 1 ? -H * sqrt(1 - r * r) : 0;
-    default: return r < 4 ? 0.5 * H * sin(M_PI * u / a) : 0;
-    }
-}
-
-/* The obstacle sampled every dx (m) from a point phase (m) past one dx before its start to
- * one dx past its end, level ground 3 m either side. mirror: the samples at k dx, k = -n..n,
- * exactly symmetric about x = 0 for the even shapes (phase unused). */
-static tirenv_profile *sampled_curve(curve_kind kind, double a, double H, double dx,
-                                     double phase, int mirror)
-{
-    enum { n_max = 1200 };
-    double x[n_max], z[n_max];
-    const double e = kind == SINES ? 4 * a : a;
-    size_t n = 0;
-    x[n] = -3, z[n++] = 0;
-    if (mirror) {
-        const int k_end = (int)ceil(e / dx) + 1;
-        for (int k = -k_end; k <= k_end && n < n_max - 1; ++k)
-            x[n] = k * dx, z[n] = curve_height(kind, a, H, x[n]), ++n;
-    } else {
-        const double x_0 = -e - dx + phase;
-        for (size_t i = 0; x_0 + dx * (double)i <= e + dx && n < n_max - 1; ++i)
-            x[n] = x_0 + dx * (double)i, z[n] = curve_height(kind, a, H, x[n]), ++n;
-    }
-    x[n] = 3, z[n++] = 0;
-    return tirenv_profile_alloc(n, x, z);
 }
 
 /* The same continuity in x over sampled curved obstacles (the cleats, blades and steps above
