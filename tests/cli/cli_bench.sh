@@ -40,6 +40,9 @@ assert abs(d[\"springs_fine_over_coarse_road_best\"] - f) <= 1e-9 * f
 # --quick is one repeat: the fine and coarse sweeps interleaved over 2 * 1 + 1 rounds (the
 # figure their median ratio, _best the ratio of the best sweeps).
 assert d[\"springs_fine_over_coarse_road_rounds\"] == 3
+# The 100 m road of --quick at 10 mm is 10,001 positions: a chunk of 8192 and one of 1809, so two
+# threads take at least 8192 / 10001 of the time of one.
+assert abs(d[\"envelope_jobs2_floor\"] - 8192 / 10001) <= 1e-12
 # The memory of whole mode, a child process over a 100 m road at 1 mm with --quick (10 km
 # without): the default sweep, which reaches beyond the ends of the road, and more than the
 # 3.5 MB a run over a generated cleat takes (the 100,001 vertices alone are 1.6 MB).
