@@ -374,6 +374,18 @@ static int pad_walls(const convert *cv, tirenv_profile **p, tirenv_diag *diag)
                             "lost; give --pad M for M m of flat ground at each end",
                             wall_first ? "starts" : "ends", wall_first ? x[0] : x[n - 1],
                             wall_first ? "before" : "after");
+    /* The pad's vertex must be a profile's (tirenv_profile_validate): one segment, within
+     * the coordinates' bound. Checked here, as --pad's: the profile's own check named a
+     * vertex of IN that IN does not have ("wall.csv: vertex 4: x = 1e+300 m"). */
+    const double end = wall_first ? x[0] : x[n - 1];
+    const double most = fmin(TIRENV_PROFILE_MAX_SEGMENT,
+                             TIRENV_PROFILE_MAX_COORDINATE - (wall_first ? -end : end));
+    if (cv->pad > most)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "--pad",
+                            "%g m of flat ground beyond the wall at x = %g m; expected at most "
+                            "%g m (a profile's segments reach %g m, its vertices +-%g m)",
+                            cv->pad, end, most, TIRENV_PROFILE_MAX_SEGMENT,
+                            TIRENV_PROFILE_MAX_COORDINATE);
     double *px = malloc((n + 2) * sizeof *px), *pz = malloc((n + 2) * sizeof *pz);
     if (!px || !pz) {
         free(px);
