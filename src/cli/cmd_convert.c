@@ -129,10 +129,18 @@ static int parse_dx(void *dst, const char *arg)
     return parse_length("dx", arg, &cv->w.crg_u_increment, &cv->have_dx);
 }
 
+/* The long sections at -M and +M must lie within a road's coordinates (the writer and the
+ * reader refuse a road beyond them). */
 static int parse_half_width(void *dst, const char *arg)
 {
     convert *cv = dst;
-    return parse_length("half-width", arg, &cv->w.crg_half_width, &cv->have_half_width);
+    const int code = parse_length("half-width", arg, &cv->w.crg_half_width,
+                                  &cv->have_half_width);
+    if (code || cv->w.crg_half_width <= TIRENV_PROFILE_MAX_COORDINATE)
+        return code;
+    cli_error("--half-width: expected a positive length in m up to %g, a road's lateral "
+              "reach, got '%s'", TIRENV_PROFILE_MAX_COORDINATE, arg);
+    return CLI_EXIT_USAGE;
 }
 
 /* An option given for a format it does not apply to changes nothing in what is written: the
