@@ -138,6 +138,8 @@ typedef struct cli_opt {
     long min, max;         /* CLI_COUNT's range */
     int (*parse)(void *dst, const char *arg);  /* CLI_CUSTOM: an exit code, after printing */
     int repeatable;        /* may be given more than once (else that is misuse) */
+    int input;             /* CLI_STRING: a file the command reads, which -o may not name
+                            * (cli_refuse_clobber) */
 } cli_opt;
 
 /* A command's parser. */
@@ -358,6 +360,12 @@ double cli_cpu_seconds(void);
 double cli_thread_seconds(void);
 /* Wall time since an arbitrary start (CLOCK_MONOTONIC), s. */
 double cli_wall_seconds(void);
+
+/* CLI_EXIT_USAGE, after saying so, when output (-o) names the regular file input, which
+ * option gives and cmd reads: writing the output would replace it. Paths name the same file
+ * when they resolve to the same name, symbolic links followed (clobber.c). */
+int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
+                       const char *input);
 
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);

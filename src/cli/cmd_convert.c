@@ -129,10 +129,18 @@ static int parse_dx(void *dst, const char *arg)
     return parse_length("dx", arg, &cv->w.crg_u_increment, &cv->have_dx);
 }
 
+/* The long sections at -M and +M must lie within a road's coordinates (the writer and the
+ * reader refuse a road beyond them). */
 static int parse_half_width(void *dst, const char *arg)
 {
     convert *cv = dst;
-    return parse_length("half-width", arg, &cv->w.crg_half_width, &cv->have_half_width);
+    const int code = parse_length("half-width", arg, &cv->w.crg_half_width,
+                                  &cv->have_half_width);
+    if (code || cv->w.crg_half_width <= TIRENV_PROFILE_MAX_COORDINATE)
+        return code;
+    cli_error("--half-width: expected a positive length in m up to %g, a road's lateral "
+              "reach, got '%s'", TIRENV_PROFILE_MAX_COORDINATE, arg);
+    return CLI_EXIT_USAGE;
 }
 
 /* An option given for a format it does not apply to changes nothing in what is written: the
@@ -374,6 +382,18 @@ static int pad_walls(const convert *cv, tirenv_profile **p, tirenv_diag *diag)
                             "lost; give --pad M for M m of flat ground at each end",
                             wall_first ? "starts" : "ends", wall_first ? x[0] : x[n - 1],
                             wall_first ? "before" : "after");
+    /* The pad's vertex must be a profile's (tirenv_profile_validate): one segment, within
+     * the coordinates' bound. Checked here, as --pad's: the profile's own check named a
+     * vertex of IN that IN does not have ("wall.csv: vertex 4: x = 1e+300 m"). */
+    const double end = wall_first ? x[0] : x[n - 1];
+    const double most = fmin(TIRENV_PROFILE_MAX_SEGMENT,
+                             TIRENV_PROFILE_MAX_COORDINATE - (wall_first ? -end : end));
+    if (cv->pad > most)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "--pad",
+                            "%g m of flat ground beyond the wall at x = %g m; expected at most "
+                            "%g m (a profile's segments reach %g m, its vertices +-%g m)",
+                            cv->pad, end, most, TIRENV_PROFILE_MAX_SEGMENT,
+                            TIRENV_PROFILE_MAX_COORDINATE);
     double *px = malloc((n + 2) * sizeof *px), *pz = malloc((n + 2) * sizeof *pz);
     if (!px || !pz) {
         free(px);

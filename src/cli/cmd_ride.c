@@ -87,8 +87,15 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
+/* A speed's name in the series files and the plots' panels (series-MODEL-18kmh.csv). */
+static void speed_name(double V, char *buf, size_t n)
+{
+    snprintf(buf, n, "%g", V * 3.6);
+}
+
 /* --speed V[,V...]: 1 to TIRENV_RIDE_PLAN_RUNS speeds, each as the library reads one (its error
- * names what a speed must be). */
+ * names what a speed must be), no two of one name: 5 and 5.00001 m/s were both 18 km/h, and
+ * the second run's series file replaced the first's. */
 static int parse_speeds(void *dst, const char *arg)
 {
     ride_options *r = dst;
@@ -108,17 +115,38 @@ static int parse_speeds(void *dst, const char *arg)
             cli_error("ride: --speed: %s", d.message);
             return CLI_EXIT_USAGE;
         }
+        char name[32], other[32];
+        speed_name(r->speeds[r->n_speeds - 1], name, sizeof name);
+        for (size_t k = 0; k + 1 < r->n_speeds; ++k) {
+            speed_name(r->speeds[k], other, sizeof other);
+            if (strcmp(name, other) == 0) {
+                cli_error("ride: --speed: '%s' is %s km/h, as speed %zu is, in '%s': the two "
+                          "runs would share the series file and the plots' panel named %s "
+                          "km/h; expected distinct speeds", p, name, k + 1, arg, name);
+                return CLI_EXIT_USAGE;
+            }
+        }
         if (!comma)
             return CLI_EXIT_OK;
         p = comma;
     }
 }
 
-/* --model M[,M...]: 1 to RIDE_MAX_MODELS names from the library's table of model types. */
+/* --model M[,M...]: 1 to RIDE_MAX_MODELS names from the library's table of model types, each
+ * at most once (a model twice ran twice into one series file and one plot column name). */
 static int parse_models(void *dst, const char *arg)
 {
     ride_options *r = dst;
-    return cli_model_list("ride: --model", arg, r->models, RIDE_MAX_MODELS, &r->n_models);
+    const int code = cli_model_list("ride: --model", arg, r->models, RIDE_MAX_MODELS,
+                                    &r->n_models);
+    for (size_t i = 0; !code && i < r->n_models; ++i)
+        for (size_t k = 0; k < i; ++k)
+            if (r->models[k] == r->models[i]) {
+                cli_error("ride: --model: '%s' given twice in '%s'; expected each model at "
+                          "most once", tirenv_model_type_name(r->models[i]), arg);
+                return CLI_EXIT_USAGE;
+            }
+    return code;
 }
 
 static int parse_set(void *dst, const char *arg)
@@ -180,7 +208,7 @@ int cli_ride_main(int argc, char *argv[])
     const cli_opt own[] = {
         {.name = "speed", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_speeds},
         {.name = "model", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_models},
-        {.name = "vehicle", .kind = CLI_STRING, .dst = &r.vehicle_path},
+        {.name = "vehicle", .kind = CLI_STRING, .dst = &r.vehicle_path, .input = 1},
         {.name = "set", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_set, .repeatable = 1},
         {.name = "dt", .kind = CLI_POSITIVE, .dst = &r.pp.dt, .what = "a positive number in s"},
         {.name = "solver", .kind = CLI_CUSTOM, .dst = &r.pp.method, .parse = parse_solver},

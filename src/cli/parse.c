@@ -272,6 +272,24 @@ static int check_network(const cli_parser *p, const cli_options *o)
     return CLI_EXIT_OK;
 }
 
+/* -o may name none of the files the command reads: --tire, --profile, --nn and its own
+ * options marked input. */
+static int check_clobber(const cli_parser *p, const cli_options *o)
+{
+    int code = cli_refuse_clobber(p->name, o->output, "--tire", o->tire_path);
+    if (!code && o->obstacle == CLI_PROFILE)
+        code = cli_refuse_clobber(p->name, o->output, "--profile", o->obstacle_arg);
+    if (!code)
+        code = cli_refuse_clobber(p->name, o->output, "--nn", o->nn_path);
+    for (const cli_opt *opt = p->opts; !code && opt && opt->name; ++opt)
+        if (opt->input) {
+            char name[64];
+            snprintf(name, sizeof name, "--%s", opt->name);
+            code = cli_refuse_clobber(p->name, o->output, name, *(const char **)opt->dst);
+        }
+    return code;
+}
+
 /* The column where a help text's option descriptions start. */
 enum { HELP_TEXT_COLUMN = 23 };
 
@@ -392,7 +410,9 @@ static int parse_argv(const cli_parser *p, int argc, char *argv[], cli_options *
         }
         o->args[o->n_args++] = argv[optind];
     }
-    const int code = check_network(p, o);
+    int code = check_network(p, o);
+    if (!code)
+        code = check_clobber(p, o);
     return code ? code : CLI_GO_ON;
 }
 

@@ -13,6 +13,9 @@
  * the longest Welch segment, 4096 samples: 0.24 Hz bins at 1 kHz. */
 enum { SEAT_MAX_POINTS = 20000, WELCH_MAX_SEGMENT = 4096 };
 
+/* The spectrum plot's band, Hz: ISO 2631-1's for comfort (Wk). */
+static const double SPECTRUM_F_LO = 0.5, SPECTRUM_F_HI = 100;
+
 static int write_csv(const char *path, const ride_options *r, const ride_result res[],
                      tirenv_diag *diag)
 {
@@ -233,6 +236,8 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
         return status;
     FILE *fp = tirenv_outfile_stream(f);
     const double fs = 1 / r->pp.dt;
+    double lo = INFINITY, hi = 0;  /* the positive PSD values in the band, over all panels */
+    int flat_panel = 0;            /* a panel without one */
     for (size_t j = 0; j < r->n_speeds && !status; ++j) {
         const ride_series *row = &series[j * r->n_cols];
         const size_t seg = welch_segment(row[0].n);
@@ -254,12 +259,22 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
             for (size_t i = 0; i < r->n_cols; ++i)
                 fprintf(fp, " psd_%s_m2_s4_Hz", r->cols[i].label);
             fputc('\n', fp);
+            double panel_hi = 0;
             for (size_t k = 1; k < bins; ++k) {  /* bin 0 (the mean) has no place on log axes */
-                fprintf(fp, "%.6g", (double)k * fs / (double)seg);
-                for (size_t i = 0; i < r->n_cols; ++i)
-                    fprintf(fp, " %.6g", psd[i * bins + k]);
+                const double freq = (double)k * fs / (double)seg;
+                fprintf(fp, "%.6g", freq);
+                for (size_t i = 0; i < r->n_cols; ++i) {
+                    const double v = psd[i * bins + k];
+                    fprintf(fp, " %.6g", v);
+                    if (v > 0 && freq >= SPECTRUM_F_LO && freq <= SPECTRUM_F_HI) {
+                        lo = fmin(lo, v);
+                        panel_hi = fmax(panel_hi, v);
+                    }
+                }
                 fputc('\n', fp);
             }
+            hi = fmax(hi, panel_hi);
+            flat_panel |= !(panel_hi > 0);
         }
         tirenv_welch_free(w);
         free(psd);
@@ -271,15 +286,30 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
     }
     if ((status = tirenv_outfile_commit(f, diag)))
         return status;
+    /* Log axes cannot show a PSD of 0, and a level road leaves the seat still: gnuplot
+     * refuses a panel without a positive point ("all points y value undefined"), which failed
+     * the whole run after every figure was computed. Such a panel gets the range of the
+     * others' values, or a nominal one and a note when no panel has any. */
+    char range[200] = "";
+    if (flat_panel && hi > 0)
+        snprintf(range, sizeof range, "    set yrange [%.6g:%.6g]   # a panel's PSD is 0\n",
+                 lo, hi);
+    else if (flat_panel)
+        snprintf(range, sizeof range, "    set yrange [1e-12:1]\n"
+                 "    set label 1 \"the PSD is 0: no vibration at the seat\" at graph 0.5, "
+                 "0.5 center\n");
+    char axes[800];
+    snprintf(axes, sizeof axes,
+             "    set logscale xy\n"
+             "    set format y '%%.0e'\n"
+             "    set xrange [%g:%g]   # ISO 2631-1's band for comfort (Wk)\n"
+             "%s"
+             "    set xlabel \"frequency (Hz)\"\n"
+             "    set ylabel \"PSD of seat a_z ((m/s²)²/Hz)\"\n",
+             SPECTRUM_F_LO, SPECTRUM_F_HI, range);
     return draw(dir, "spectrum", "power spectral density of the vertical acceleration at "
                 "the seat (Welch, Hann, 50 % overlap), point contact against enveloping",
-                "Seat vertical acceleration spectrum",
-                "    set logscale xy\n"
-                "    set format y '%.0e'\n"
-                "    set xrange [0.5:100]   # ISO 2631-1's band for comfort (Wk)\n"
-                "    set xlabel \"frequency (Hz)\"\n"
-                "    set ylabel \"PSD of seat a_z ((m/s²)²/Hz)\"\n",
-                r, diag);
+                "Seat vertical acceleration spectrum", axes, r, diag);
 }
 
 int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],

@@ -82,9 +82,12 @@ static int newton_iterate(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop
      * (it oscillates across a jump of F_z), gives way to bisection. */
     const int stalled = fabs(2 * st->step) > st->dz_old;
     if (!(z_next > st->lo && z_next < st->hi) || (stalled && st->lo_checked)) {
-        if (dF >= 0 && f < 0) {
+        if (dF >= 0 && f < 0 && z > st->lo) {
             /* No contact yet: the discrete elements can miss a corner that the rigid disc
-             * (z_hi) touches, so the first contact may lie well below. */
+             * (z_hi) touches, so the first contact may lie well below. Not at the bracket's
+             * lower end, where there is no below: a start at z = 0 (a new load's warm start
+             * clamped there) met a force flat in z and stepped to 0 again until the
+             * evaluations ran out; the end's check below names the load it carries. */
             z_next = fmax(z - st->down, 0.5 * (st->lo + st->hi));
             st->down *= 4;
         } else if (st->lo_checked) {

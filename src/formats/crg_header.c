@@ -563,6 +563,26 @@ static int explicit_positions(parse *p)
     return TIRENV_OK;
 }
 
+/* Lateral positions within a road's coordinates (TIRENV_PROFILE_MAX_COORDINATE), as its
+ * heights and reference line are (crg_rows.c): LONG_SECTION_V_RIGHT = -1e308 and _LEFT =
+ * 1e308 spanned an infinite width, and the first section came out at NaN, refused as the
+ * reference point's ("REFPOINT: (u, v) = (0, -nan)"), a key the file did not have. The keys
+ * themselves are checked with the header (finish); this is the sections' positions, from an
+ * increment or the channels' names. */
+static int lateral_within(parse *p)
+{
+    const tirenv_crg *c = p->c;
+    for (size_t j = 0; j < c->nv; j++)
+        if (!(fabs(c->v[j]) <= TIRENV_PROFILE_MAX_COORDINATE)) {
+            p->at.line = c->kd_line_z[j];
+            return fail(p, NULL, "D", "long section %zu lies at v = %.17g m%s, beyond +-%g m; "
+                        "expected a road's lateral position (in m?)", j + 1, c->v[j],
+                        c->v_numbered ? " (from LONG_SECTION_V_RIGHT, _LEFT, _INCREMENT)" : "",
+                        TIRENV_PROFILE_MAX_COORDINATE);
+        }
+    return TIRENV_OK;
+}
+
 /* What the whole header must say, checked once it is read. */
 static int finish(parse *p, size_t last_line)
 {
@@ -608,6 +628,16 @@ static int finish(parse *p, size_t last_line)
                     "length, m", vinc->value);
     }
     const tirenv_crg__value *vr = &c->road[CRG_LS_V_RIGHT], *vl = &c->road[CRG_LS_V_LEFT];
+    const int v_keys[2] = {CRG_LS_V_RIGHT, CRG_LS_V_LEFT};
+    for (size_t k = 0; k < 2; k++) {
+        const tirenv_crg__value *h = &c->road[v_keys[k]];
+        if (h->line && !(fabs(h->value) <= TIRENV_PROFILE_MAX_COORDINATE)) {
+            p->at.line = h->line;
+            return fail(p, NULL, road_names[v_keys[k]], "%.17g m is beyond +-%g m; expected "
+                        "a road's lateral position (in m?)", h->value,
+                        TIRENV_PROFILE_MAX_COORDINATE);
+        }
+    }
     if (vr->line && vl->line && !(vl->value > vr->value)) {
         p->at.line = vl->line;
         return fail(p, NULL, road_names[CRG_LS_V_LEFT], "%.17g is not left of "
@@ -628,7 +658,8 @@ static int finish(parse *p, size_t last_line)
     if (!(c->v = malloc(c->nv * sizeof *c->v)))
         return tirenv_error(p->at.diag, TIRENV_ENOMEM, c->src.name, 0, "", "out of memory");
     p->c->v_numbered = p->names[0].numbered;
-    return p->names[0].numbered ? numbered_positions(p) : explicit_positions(p);
+    const int status = p->names[0].numbered ? numbered_positions(p) : explicit_positions(p);
+    return status ? status : lateral_within(p);
 }
 
 int tirenv_crg__parse_header(tirenv_crg *c, tirenv_diag *diag)

@@ -78,11 +78,14 @@ static int check_layout(const char *path, const tirenv_crg_layout *l, tirenv_dia
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "long_sections",
                             "%zu long sections; expected 2 to 100000 with their positions",
                             l->long_sections);
+    /* Within a road's coordinates, as the reader asks (crg_header.c): convert --half-width
+     * 1e300 wrote a road whose width overflows. */
     for (size_t j = 0; j < l->long_sections; j++)
-        if (!isfinite(l->v[j]) || (j > 0 && !(l->v[j] > l->v[j - 1])))
+        if (!(fabs(l->v[j]) <= TIRENV_PROFILE_MAX_COORDINATE) ||
+            (j > 0 && !(l->v[j] > l->v[j - 1])))
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "v",
-                                "long section %zu at v = %g; expected finite, ascending "
-                                "positions", j + 1, l->v[j]);
+                                "long section %zu at v = %g; expected ascending positions "
+                                "within +-%g m", j + 1, l->v[j], TIRENV_PROFILE_MAX_COORDINATE);
     for (const char *line = l->comment; line && *line;) {
         const size_t n = strcspn(line, "\n");
         if (n > HEADER_RECORD || line[0] == '$' || line[0] == '*')

@@ -417,8 +417,9 @@ static int profile_of(rdf *r, size_t n, const double x[], const double z[],
     tirenv_diag d;
     tirenv_diag_clear(&d);
     if (tirenv_profile_validate(n, x, z, &d) != TIRENV_OK) {
-        r->at.line = 0;
-        return fail(r, NULL, "", "%s", d.message);
+        r->at.line = r->road_type_line;  /* its vertices are the road type's keys' */
+        return fail(r, NULL, "ROAD_TYPE", "the '%s' road its keys describe is no profile: %s",
+                    r->road_type, d.message);
     }
     if (!(*out = tirenv_profile_alloc(n, x, z)))
         return tirenv_error(r->at.diag, TIRENV_ENOMEM, r->at.file, 0, "", "out of memory");
@@ -463,11 +464,29 @@ static int plank(rdf *r, double f, double offset, tirenv_profile **out)
         return fail(r, NULL, "EDGE_ROUNDED", "rounded plank edges are not supported; expected "
                     "0 (45-degree bevel edges)");
     }
+    /* The corners in m must make a profile (tirenv_profile_validate), checked here at the
+     * key that breaks it: a START of 1e300 or a LENGTH of 1e-300 at x = 1 was refused as
+     * "vertex 1: x = 1e+300 m" or "vertex 3: x = 1 is shared by three vertices", vertices the
+     * file does not have. What these miss (a bevel too short to tell from a corner where its
+     * heights differ) profile_of says at ROAD_TYPE. */
+    const double x0 = f * S, x1 = f * (S + L), top = f * (fabs(H) + fabs(offset));
     const struct { int key; int bad; const char *want; } checks[] = {
         {K_LENGTH, !(L > 0), "a positive length"},
         {K_BEVEL, !(b >= 0), "a length >= 0"},
         {K_BEVEL, !(2 * b <= L), "at most half of LENGTH (a bevel at each edge)"},
         {K_BEVEL, !(b <= fabs(H)), "at most |HEIGHT| (a 45-degree bevel cannot rise higher)"},
+        {K_START, !(fabs(x0) <= TIRENV_PROFILE_MAX_COORDINATE),
+         "a position within +-1e9 m, a road's coordinates"},
+        {K_LENGTH, !(fabs(x1) <= TIRENV_PROFILE_MAX_COORDINATE),
+         "a plank ending within +-1e9 m of x = 0, a road's coordinates"},
+        {K_LENGTH, !(x1 - x0 <= TIRENV_PROFILE_MAX_SEGMENT),
+         "at most 1e7 m, a road's longest segment"},
+        {K_OFFSET, !(fabs(f * offset) <= TIRENV_PROFILE_MAX_COORDINATE),
+         "a height within +-1e9 m, a road's coordinates"},
+        {K_HEIGHT, !(top <= TIRENV_PROFILE_MAX_COORDINATE),
+         "a height (with OFFSET) within +-1e9 m, a road's coordinates"},
+        {K_LENGTH, !(x1 > x0), "a plank long enough that its ends differ at START in double "
+         "precision"},
     };
     for (size_t k = 0; k < sizeof checks / sizeof checks[0]; k++)
         if (checks[k].bad) {

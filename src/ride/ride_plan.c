@@ -102,6 +102,15 @@ int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicl
                                 "the run must end after it starts: from %g m to %g m",
                                 x_from, x_to);
         const double duration = (x_to - x_from) / V;
+        /* A run shorter than dt is one sample, the start, where the vehicle rests in its
+         * static state: every comfort figure came out 0 (the crest factor 0/0), exit 0, from
+         * no motion at all. */
+        if (!(duration >= dt))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_to",
+                                "the run from %g m to %g m lasts %.3g s at %g m/s, less than "
+                                "one output interval dt = %g s: a single sample, the vehicle "
+                                "at rest; expected a run of at least V*dt = %.3g m", x_from,
+                                x_to, duration, V, dt, V * dt);
         if (!(duration / dt < pp->max_points))
             return tirenv_error(diag, TIRENV_EINVAL, "", 0, "speed",
                                 "%.3g s of run at dt %g s would be %.3g samples; at most "

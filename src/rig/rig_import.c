@@ -194,8 +194,17 @@ static int prepare_samples(size_t n, const double t[], const double x[], const d
  * wrong obstacle or tire: refused with the reason rather than imported. */
 static const double REACH_FACTOR = 1.05;
 
+/* Under its constant load the centre rises over the cleat at most by H: ground nowhere above
+ * the cleat's top lifts it no higher than level ground raised by H would, to z_flat + H (h
+ * = H where the tire stands on a cleat longer than its patch). The imported peak exceeds H
+ * only by the smoothing's noise, a few noise_se, and the bias at the curve's kinks (under 0.5
+ * mm, docs/models.md section 5.7): the embedded data sets' 56 curves by at most 0.09 mm. A
+ * peak beyond HEIGHT_FACTOR*H + NOISE_SES*noise_se is a log over a higher obstacle than
+ * --cleat says (a 0.10 m cleat's log imported as 0.05 m gave a 90 mm peak over it). */
+static const double HEIGHT_FACTOR = 1.1, NOISE_SES = 6;
+
 static int plausible(const tirenv_import_settings *set, const tirenv_rig__passage *p,
-                     const tirenv_curve *c, tirenv_diag *diag)
+                     const tirenv_curve *c, const tirenv_import_info *found, tirenv_diag *diag)
 {
     const double reach = 0.5 * set->L + REACH_FACTOR * set->R0 + p->delta;
     const double before = p->centre - p->x_a, after = p->x_b - p->centre;
@@ -220,6 +229,14 @@ static int plausible(const tirenv_import_settings *set, const tirenv_rig__passag
                             "(H plus its deflection): z is not in metres, or the obstacle or the "
                             "tire is not the one logged", peak, c->x_N[at], set->H, set->R0,
                             set->H + set->R0);
+    const double top = HEIGHT_FACTOR * set->H + NOISE_SES * found->noise_se;
+    if (peak > top)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "z",
+                            "the curve peaks at h = %.4g m (x_N = %.4g), above the %g m high "
+                            "obstacle, which lifts a tire at constant load by at most H (%.4g m "
+                            "allowed for %.0f %% and the smoothing's noise): the obstacle logged "
+                            "is higher than the one given", peak, c->x_N[at], set->H, top,
+                            100 * (HEIGHT_FACTOR - 1));
     return TIRENV_OK;
 }
 
@@ -252,7 +269,7 @@ int tirenv_rig__import(size_t n, const double t[], const double x[], const doubl
         status = tirenv_rig__find_passage(&s, x_0, &p, diag);
     if (status == TIRENV_OK)
         status = tirenv_rig__smooth(&s, &p, set, x_0, out, &found, diag);
-    if (status == TIRENV_OK && (status = plausible(set, &p, out, diag)))
+    if (status == TIRENV_OK && (status = plausible(set, &p, out, &found, diag)))
         tirenv_curve_free(out);
     if (status == TIRENV_OK) {
         found.sigma = p.sigma;

@@ -25,6 +25,13 @@ check "--pad 0: refused (exit 2) naming the wall and --pad, nothing written" \
     '[ $rc -eq 2 ] && grep -q "starts with a wall at x = -0.05 m" err && grep -q -- "--pad M" err && [ ! -e c0.crg ]'
 run "$bin" convert --profile cleat.csv --dx 0.01 --pad -1 -o c0.crg
 check "--pad -1: usage error" '[ $rc -eq 1 ] && [ ! -e c0.crg ]'
+# A pad beyond a profile's longest segment (1e7 m) or its coordinates (1e9 m) is --pad's error;
+# it was refused as the profile's, "cleat.csv: x: vertex 1: x = -1e+300 m", a vertex the file
+# does not have.
+run "$bin" convert --profile cleat.csv --dx 0.01 --pad 1e300 -o big.crg
+check "--pad 1e300: refused (exit 2) naming --pad and its bound, not a vertex of the file" \
+    '[ $rc -eq 2 ] && grep -q "^tirenv: --pad: 1e+300 m .*expected at most 1e+07 m" err &&
+     ! grep -q "vertex" err && [ ! -e big.crg ]'
 printf 'x_m,z_m\n-1,0\n-0.05,0\n-0.05,0.1\n0.05,0.1\n0.05,0\n1,0\n' >ground.csv
 run "$bin" convert --profile ground.csv --dx 0.01 -o ground.crg
 check "a profile with ground at its ends: not padded (rows from -1 m)" \

@@ -24,6 +24,23 @@ check "ride --out-dir: comfort table of 2 models x 2 speeds, both plots as PNG a
      [ -z "$(find rd -name "*tmp.*")" ]'
 check "ride over a cleat: point contact's seat acceleration peaks higher than the cam's" \
     'awk -F, "NR > 1 && \$3 == 5 { p[\$1] = \$13 } END { exit !(p[\"point\"] > 2 * p[\"cam\"]) }" rd/comfort.csv'
+# Level ground leaves the seat still: a PSD of 0, which log axes cannot show. gnuplot refused
+# the spectrum's panel ("all points y value undefined") and the run failed, exit 2, after
+# every figure was computed.
+printf 'x_m,z_m\n0,0\n10,0\n' >level.csv
+run "$bin" ride --profile level.csv --speed 5 --model point,springs --out-dir lv
+check "ride --out-dir over level ground: exit 0, both plots drawn, the spectrum's note says why it is empty" \
+    '[ $rc -eq 0 ] && [ $(rows lv/comfort.csv) -eq 2 ] && [ -s lv/spectrum.png ] &&
+     [ -s lv/spectrum.svg ] && grep -q "the PSD is 0: no vibration at the seat" lv/spectrum.gp &&
+     awk -F, "NR > 1 && \$5 != 0 { exit 1 }" lv/comfort.csv'
+# Two runs of one name: 5 and 5.00001 m/s are both 18 km/h, and the second run's
+# series-point-18kmh.csv replaced the first's; a model given twice ran twice into one file.
+run "$bin" ride --cleat 0.30,0.05 --speed 5,5.00001 --model point --out-dir same --series
+check "ride --speed 5,5.00001: exit 1 naming the shared 18 km/h, nothing written" \
+    '[ $rc -eq 1 ] && grep -q "is 18 km/h, as speed 1 is" err && [ ! -e same ]'
+run "$bin" ride --cleat 0.30,0.05 --speed 5 --model point,cam,point --out-dir same
+check "ride --model point,cam,point: exit 1 naming point, nothing written" \
+    '[ $rc -eq 1 ] && grep -q "'"'"'point'"'"' given twice" err && [ ! -e same ]'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h,20km/h --model point -o two.csv
 check "ride -o with two speeds: exit 1, no file" '[ $rc -eq 1 ] && no_file two.csv'
 run "$bin" ride --cleat 0.30,0.05 --speed 10mph

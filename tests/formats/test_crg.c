@@ -926,6 +926,21 @@ static const malformed bad[] = {
      "means 2e+300 rows from u = 0 every 0.5 m, but the road data has 4 rows (truncated"},
     {"LONG_SECTION_V_LEFT = 1\n", "LONG_SECTION_V_LEFT = 2\n", TIRENV_EPARSE, 8, 0,
      "LONG_SECTION_V_LEFT", "long sections end at v = 1, not at 2"},
+    /* lateral positions beyond a road's 1e9 m: +-1e308 spanned an infinite width and was
+     * refused as the reference point's, "REFPOINT: (u, v) = (0, -nan)" */
+    {"LONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\nLONG_SECTION_V_INCREMENT = 1\n",
+     "LONG_SECTION_V_RIGHT = -1e308\nLONG_SECTION_V_LEFT = 1e308\n", TIRENV_EPARSE, 7, 0,
+     "LONG_SECTION_V_RIGHT", "-1e+308 m is beyond +-1e+09 m"},
+    {"LONG_SECTION_V_INCREMENT = 1\n", "LONG_SECTION_V_INCREMENT = 1e300\n", TIRENV_EPARSE, 8,
+     0, "LONG_SECTION_V_LEFT", "long sections end at v"},
+    {"LONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\nLONG_SECTION_V_INCREMENT = 1\n",
+     "LONG_SECTION_V_INCREMENT = 1e300\n", TIRENV_EPARSE, 12, 0, "D",
+     "long section 2 lies at v = 1.0000000000000001e+300 m (from LONG_SECTION_V_RIGHT"},
+    {"LONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\nLONG_SECTION_V_INCREMENT = 1\n$\n"
+     "$KD_DEFINITION\n#:LRFI\nD:long section 1,m\nD:long section 2,m\nD:long section 3,m",
+     "$\n$KD_DEFINITION\n#:LRFI\nD:long section at v = -1,m\nD:long section at v = 0,m\n"
+     "D:long section at v = 2e9,m", TIRENV_EPARSE, 12, 0, "D",
+     "long section 3 lies at v = 2000000000 m, beyond +-1e+09 m"},
     {"REFERENCE_LINE_END_U = 1.5\n", "REFERENCE_LINE_END_U = 1.5\nREFERENCE_LINE_END_X = 1.6\n",
      TIRENV_EPARSE, 7, 0, "REFERENCE_LINE_END_X", "integrated from its start gives 1.5"},
     {"REFERENCE_LINE_END_U = 1.5\n", "REFERENCE_LINE_END_U = 1.5\nREFERENCE_LINE_END_PHI = 1\n",
@@ -1232,6 +1247,11 @@ static void test_writer_refuses(void **state)
     l.long_sections = 2;
     l.v = down;
     assert_int_equal(tirenv_crg_writer_open(path, &l, &w, &d), TIRENV_EINVAL);
+    /* beyond a road's 1e9 m, which the reader refuses: convert --half-width 1e300 wrote it */
+    const double wide[2] = {-1e300, 1e300};
+    l.v = wide;
+    assert_int_equal(tirenv_crg_writer_open(path, &l, &w, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "v");
     l.v = v;
     l.long_sections = 3;
     l.u_increment = 0;

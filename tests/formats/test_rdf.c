@@ -278,6 +278,16 @@ static const struct {
     {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 0.5\nEDGE_ROUNDED = 1\n", "EDGE_ROUNDED",
      "rounded plank edges are not supported"},
     {"HEIGHT = 0.1\nLENGTH = 0.5\n", "START", "needs START"},
+    /* keys that make no profile, named: these were "vertex 1: x = 1e+300 m" and "vertex 3: x
+     * = 1 is shared by three vertices", vertices the file does not have, at no line */
+    {"HEIGHT = 0.1\nSTART = 1e300\nLENGTH = 0.5\n", "START", "within +-1e9 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 1e300\n", "LENGTH", "ending within +-1e9 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 2e7\n", "LENGTH", "at most 1e7 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 1e-300\n", "LENGTH", "ends differ at START"},
+    {"HEIGHT = 1e300\nSTART = 1\nLENGTH = 0.5\n", "HEIGHT", "within +-1e9 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 0.5\nOFFSET = -1e300\n", "OFFSET", "within +-1e9 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 0.5\nBEVEL_EDGE_LENGTH = 1e-17\n", "ROAD_TYPE",
+     "the 'plank' road its keys describe is no profile: vertex 3"},
 };
 
 static void test_malformed(void **state)
@@ -312,6 +322,7 @@ static void test_malformed(void **state)
         print_message("plank %zu: %s: %s\n", k, d.field, d.message);
         assert_string_equal(d.field, bad_planks[k].field);
         assert_non_null(strstr(d.message, bad_planks[k].says));
+        assert_true(d.line > 0);  /* the key's line, or ROAD_TYPE's */
     }
     /* A NUL byte, a missing file, a directory, a bad side. */
     char path[600];

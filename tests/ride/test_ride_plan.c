@@ -116,6 +116,9 @@ static void test_plan_e(void **state)
         {"17 speeds", 0.001, 0.005, NAN, NAN, 3, 17, "speed", "1 to 16"},
         {"end before start", 0.001, 0.005, 3, 1, 3, 1, "x_to", "end after it starts"},
         {"end at start", 0.001, 0.005, 1, 1, 3, 1, "x_to", "end after it starts"},
+        /* 1e-6 m at 3 m/s: one sample at rest, every comfort figure 0 before */
+        {"a run shorter than dt", 0.001, 0.005, 0.2391, 0.2391 + 1e-6, 3, 1, "x_to",
+         "less than one output interval"},
         {"1e9 samples", 1e-9, 0.005, NAN, NAN, 3, 1, "speed", "samples"},
         {"a crawl of 1e7 s", 0.001, 0.005, NAN, NAN, 1e-6, 1, "speed", "samples"},
         {"a grid of 1.4e10 points", 0.001, 1e-9, NAN, NAN, 3, 1, "dx", "input positions"},

@@ -139,6 +139,29 @@ static void test_implausible(void **state)
     tirenv_rig_log_free(&log);
 }
 
+/* Case R's log (a 0.10 m cleat) imported as over a 0.05 m cleat peaked at 90 mm, above the
+ * obstacle, which lifts a tire at constant load by at most H: refused, field z. Given as
+ * 0.095 m (its peak, 92.5 mm, within 10 % of H) it imports. */
+static void test_higher_than_obstacle(void **state)
+{
+    rig_case *c = *state;
+    tirenv_rig_log log;
+    tirenv_diag diag;
+    tirenv_curve curve;
+    tirenv_import_info info;
+    assert_int_equal(simulate(c, 0.1, 100, 0, 0, &log, &diag), 0);
+    rig_case low = *c;
+    low.imp.H = 0.05;
+    assert_int_equal(import(&low, &log, 0, &curve, &info, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "z");
+    assert_non_null(strstr(diag.message, "the obstacle logged is higher than the one given"));
+    assert_null(curve.h);
+    low.imp.H = 0.095;
+    assert_int_equal(import(&low, &log, 0, &curve, &info, &diag), 0);
+    tirenv_curve_free(&curve);
+    tirenv_rig_log_free(&log);
+}
+
 /* A log sampled every 6 mm was refused (8 samples a half-width asked for 24 mm, over the cap
  * of 5 % of |x_0|, 21 mm); its windows at the cap hold 14 samples, and its curve follows the
  * same run sampled every mm: imported at the cap, flagged, the standard error above the
@@ -184,6 +207,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rig_refusals),
         cmocka_unit_test(test_implausible),
+        cmocka_unit_test(test_higher_than_obstacle),
         cmocka_unit_test(test_sparse_at_cap),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

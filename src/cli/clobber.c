@@ -1,0 +1,34 @@
+/* An output that would replace an input (cli_refuse_clobber). Every output file is written
+ * beside its target and renamed over it (tirenv/outfile.h), so `-o` naming the road, tire,
+ * network or log the command reads leaves a result computed from the whole input, but the
+ * input gone: `envelope --profile road.csv -o road.csv` turned the road into its curve.
+ * SPDX-License-Identifier: Apache-2.0 */
+#define _DEFAULT_SOURCE  /* realpath */
+#include "cli/cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+/* What the rename replaces is the name the path leads to once every symbolic link is
+ * followed, so two paths clash when they resolve to the same name: a symbolic link to the
+ * input clashes, a hard link (another name of the same file) does not, its name survives. A
+ * FIFO or a device is written through and a directory's files are carried over
+ * (tirenv/outfile.h), so only a regular file is refused. */
+int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
+                       const char *input)
+{
+    if (!output || !input || strcmp(output, "-") == 0)
+        return CLI_EXIT_OK;
+    char *const out = realpath(output, NULL);
+    char *const in = out ? realpath(input, NULL) : NULL;
+    struct stat st;
+    const int clash = in && strcmp(out, in) == 0 && stat(out, &st) == 0 && S_ISREG(st.st_mode);
+    free(out);
+    free(in);
+    if (!clash)
+        return CLI_EXIT_OK;
+    cli_error("%s: -o %s is the file %s %s reads: the output would replace it; expected "
+              "another file", cmd, output, option, input);
+    return CLI_EXIT_USAGE;
+}

@@ -1,0 +1,60 @@
+#!/bin/sh
+# -o naming a file the command reads is refused before anything runs, and the input is left
+# as it was: every output is renamed over its target, so `envelope --profile road.csv -o
+# road.csv` wrote the curve and the road was gone. A symbolic link to the input is the input;
+# a hard link is another name, which the rename replaces while the input keeps its own.
+# Usage: tests/cli/cli_clobber.sh BIN TESTDATA_DIR. SPDX-License-Identifier: Apache-2.0
+# shellcheck disable=SC2016,SC2034,SC2086
+repo=$(cd "$(dirname "$0")/../.." && pwd)
+. "$(dirname "$0")/../lib/clilib.sh"
+
+printf 'x_m,z_m\n-0.1,0\n0,0.05\n0.1,0\n' >road.csv
+cp road.csv road0.csv
+cp "$repo/data/tires/default.tir" t.tir
+cp "$repo/data/vehicles/tractor.veh" v.veh
+cp "$data/nn-v1.json" n.json
+"$bin" rig --cleat 0.1,0.05 --load 20000 -o log.csv 2>/dev/null
+for f in t.tir v.veh n.json log.csv; do cp $f $f.0; done
+
+# refused WHAT FILE OPTION: exit 1, the message names -o, the option and the file, FILE as
+# it was.
+refused() {
+    file=$2 option=$3
+    check "$1" '[ $rc -eq 1 ] &&
+        grep -q "^tirenv: .*: -o .* is the file $option .* reads: the output would replace it" err &&
+        cmp -s $file $file.0'
+}
+cp road0.csv road.csv.0
+run "$bin" envelope --model rigid --profile road.csv --load 20000 -o road.csv
+refused "envelope --profile road.csv -o road.csv" road.csv --profile
+run "$bin" envelope --model rigid --cleat 0.1,0.05 --load 20000 --tire t.tir -o t.tir
+refused "envelope --tire t.tir -o t.tir" t.tir --tire
+run "$bin" envelope --model rigid --profile road.csv --load 20000 --stream -o road.csv
+refused "envelope --stream: the same" road.csv --profile
+run "$bin" predict --nn n.json --cleat 0.1,0.05 --contact-length 0.28 -o n.json
+refused "predict --nn n.json -o n.json" n.json --nn
+run "$bin" rig --profile road.csv --load 20000 -o road.csv
+refused "rig --profile road.csv -o road.csv" road.csv --profile
+run "$bin" import --log log.csv --cleat 0.1,0.05 --load 20000 -o log.csv
+refused "import --log log.csv -o log.csv" log.csv --log
+run "$bin" ride --cleat 0.1,0.05 --model point --speed 5 --vehicle v.veh -o v.veh
+refused "ride --vehicle v.veh -o v.veh" v.veh --vehicle
+run "$bin" ride --profile road.csv --model point --speed 5 -o road.csv
+refused "ride --profile road.csv -o road.csv" road.csv --profile
+
+ln -s road.csv link.csv
+run "$bin" envelope --model rigid --profile road.csv --load 20000 -o link.csv
+refused "-o a symbolic link to the input" road.csv --profile
+run "$bin" envelope --model rigid --profile link.csv --load 20000 -o ./road.csv
+refused "the input through a symbolic link, -o its target by another path" road.csv --profile
+
+ln road.csv hard.csv
+run "$bin" envelope --model rigid --profile road.csv --load 20000 -o hard.csv
+check "-o a hard link of the input: written, the input's own name keeps the road" \
+    '[ $rc -eq 0 ] && cmp -s road.csv road0.csv && head -n 1 hard.csv | grep -q "^x_m,z_m,h_m"'
+run "$bin" envelope --model rigid --profile road.csv --load 20000 -o /dev/null
+check "-o /dev/null is written through: no refusal" '[ $rc -eq 0 ]'
+run "$bin" envelope --model rigid --profile road.csv --load 20000 -o curve.csv
+check "-o another file: written" '[ $rc -eq 0 ] && [ "$(rows curve.csv)" -gt 100 ]'
+
+clilib_done
