@@ -298,10 +298,9 @@ int tirenv_identify_flat_on(const tirenv_tire *tire, size_t m,
 
 /* The load-to-contact-length relation of the tire a data set's curves came from, for the
  * network trained on them (docs/models.md section 14.3), as at most TIRENV_CONTACT_LAW_MAX
- * knots: the
- * cases' own (load, contact length) pairs and, around them, loads spaced geometrically from
- * half the smallest to 1.5 times the largest case load, each with the flat-ground contact
- * length of the source model (the one that simulated the data, with its tire); or, with
+ * knots: the cases' own (load, contact length) pairs and, around them, loads spaced
+ * geometrically from half the smallest to 1.5 times the largest case load, each with the
+ * flat-ground contact length of the source model (the one that simulated the data, with its tire); or, with
  * source NULL (measured data), loads so spaced with the power law l_c = a*G^b fitted to the
  * cases' (load, contact length) pairs in log-log least squares. what (n bytes) says which.
  * TIRENV_EINVAL where two cases give one load two contact lengths. */
