@@ -214,7 +214,9 @@ const char *tirenv_model_note(const tirenv_model *m);
 
 /* Replaces the profile (borrowed) of a model already set, keeping its load and z_flat;
  * for tirenv_model_stream's moving window. TIRENV_EINVAL if tirenv_model_set has not
- * succeeded. NULL unsets the model (tirenv_model_eval then fails until tirenv_model_set). */
+ * succeeded, or (the model then unset) if it is set on several tracks
+ * (tirenv_model_set_track_profiles). NULL unsets the model (tirenv_model_eval then fails until
+ * tirenv_model_set). */
 int tirenv_model_set_profile(tirenv_model *m, const tirenv_profile *profile, tirenv_diag *diag);
 
 /* A bound (m) on how far from a position x the model reads the profile at the load set

@@ -32,7 +32,8 @@ typedef struct {
     /* The load-to-contact-length relation of the tire the data came from (training.data.
      * contact_law, docs/formats.md): law.n = 0 in a file without one (older files). */
     tirenv_contact_law law;
-    char law_source[96];             /* what made it: "ring model of tire.tir", "cases" */
+    char law_source[96];             /* what made it: "the ring model's flat ground through the
+                                        cases", "the cases: l_c = a*G^b" */
 } tirenv_train_record;
 
 /* Writes nn and rec (rec may be NULL) atomically (tirenv_outfile). Non-finite numbers are

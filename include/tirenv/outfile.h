@@ -18,7 +18,8 @@ TIRENV_BEGIN_DECLS
  * that descriptor; a character device (/dev/null, a terminal) or a FIFO is opened and
  * written (a FIFO waits for its reader); there a failure midway may leave part of the data.
  * A block device, a socket or a directory is refused. The temporary file is removed on
- * failure, by tirenv_cleanup_on_signal on SIGINT/SIGTERM, and, after a SIGKILL, by the next
+ * failure, by tirenv_cleanup_on_signal on a signal (the tirenv command's SIGINT, SIGTERM,
+ * SIGHUP and SIGPIPE), and, after a SIGKILL, by the next
  * output opened in the same directory once the killed process is gone. */
 typedef struct tirenv_outfile tirenv_outfile;
 
@@ -54,12 +55,13 @@ int tirenv_mkdir_p(const char *path, tirenv_diag *diag);
  * open (tirenv_outfile, tirenv_outdir), after waiting (at most 0.2 s) for other threads
  * creating one; from then on the process creates none (opening an output fails with
  * TIRENV_EIO), so a thread still running cannot leave one behind. Async-signal-safe: for a
- * SIGINT or SIGTERM handler, which then re-raises the signal (the tirenv command installs
- * one); a process that carries on afterwards writes no more outputs. */
+ * signal handler, which then re-raises the signal (the tirenv command installs one for
+ * SIGINT, SIGTERM, SIGHUP and SIGPIPE); a process that carries on afterwards writes no more
+ * outputs. */
 void tirenv_cleanup_on_signal(void);
 
 /* An output directory written as a whole (tirenv study -o, compare -o, ride --out-dir,
- * dataset build -o): the run writes into a staging directory beside the target, which
+ * dataset build -o, sweep merge -o): the run writes into a staging directory beside the target, which
  * commit moves into place at once (on Linux an atomic exchange, renameat2 RENAME_EXCHANGE),
  * then removes the old one. A killed or failed run leaves the old directory as it was; a
  * completed one leaves the new one whole, never a mixture. Files of the old directory that

@@ -16,7 +16,9 @@ TIRENV_BEGIN_DECLS
 /* Where a streamed sweep gets its ground, one vertex at a time: the next vertex (m) in *x, *z
  * with *got = 1, or *got = 0 at the end of the profile. Vertices come in profile order (x
  * non-decreasing, at most two at one x: a wall); a nonzero return (a TIRENV_ code, with diag
- * filled) stops the sweep. A file format provides one (the profile CSV reader of io.h). */
+ * filled) stops the sweep. A file format provides one (an OpenCRG track's,
+ * tirenv_crg_track_reader_source in crg.h; every road format's rows of tracks come as a
+ * tirenv_row_source, below, from tirenv_profile_file_reader_source in profile_file.h). */
 typedef int (*tirenv_vertex_source)(void *ctx, double *x, double *z, int *got,
                                     tirenv_diag *diag);
 

@@ -106,7 +106,7 @@ int tirenv_sweep_run(const char *dir, const tirenv_tire *tire, const tirenv_swee
  * every shard 0 .. N-1 exactly once) into dir, which then holds the bytes the whole sweep run
  * as one part would have written. Case files are hard-linked where the file system allows
  * (else copied). dir (absent, empty, or this sweep already merged: then nothing is done) is
- * written as a whole, like every output directory (tirenv_outdir in tirenv/io.h): a failed
+ * written as a whole, like every output directory (tirenv_outdir, tirenv/outfile.h): a failed
  * or killed merge leaves it as it was. */
 int tirenv_sweep_merge(const char *dir, size_t n, const char *const parts[],
                        tirenv_diag *diag);

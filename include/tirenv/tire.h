@@ -28,8 +28,8 @@ typedef struct {
     double secant_dz;      /* secant only: offset of the second starting point, m */
 } tirenv_eq_settings;
 
-/* How the springs model's tread meets the ground (docs/models.md section 4.3): [ENVELOPING_SPRINGS]
- * CONTACT. */
+/* How the springs model's tread meets the ground (docs/models.md sections 4.3 and 4.8):
+ * [ENVELOPING_SPRINGS] CONTACT. */
 typedef enum {
     TIRENV_SPRINGS_CONTINUOUS = 0, /* 'continuous': the tread between neighbouring elements is a
                                     * curve, every ground vertex under it is a constraint */
@@ -82,7 +82,7 @@ typedef struct {
     double lug_ratio;      /* LUG_GROOVE_RATIO: tread stiffness between lugs / on lugs, (0, 1] */
     double b_p;            /* BELT_WIDTH: width of the crown the air presses on, m */
     double alpha_s;        /* SIDEWALL_ANGLE: half angle of a sidewall's membrane arc, rad,
-                            * in (0, pi/2] */
+                            * in [0.1, pi/2] */
     double w_cs;           /* CARCASS_SOFTENING_DEFLECTION: the carcass's own foundation force
                             * per unit belt length softens beyond w_c0 as k_c (w_c0 + w_cs (1 -
                             * exp(-(w - w_c0)/w_cs))), m; 0 = linear, k_c w (section 5.1) */

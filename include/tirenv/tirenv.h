@@ -2,9 +2,10 @@
  * Umbrella header. SPDX-License-Identifier: Apache-2.0
  *
  * Two layers, as Lua's lua.h and lauxlib.h. The core computes and knows no file format:
- * decls, error, profile, xn, road, tire, model, tracks, rigid, cam, springs, ring, stream, nn,
- * nn_road, train, vehicle, ride, comfort (src/core, src/profile, src/model, src/nn,
- * src/train, src/ride include no other header). The auxiliary layer reads and writes files
+ * decls, error, parallel, rng, version, profile, xn, road, tire, model, tracks, rigid, cam,
+ * springs, ring, stream, nn, nn_road, train, vehicle, ride, comfort (src/core, src/profile,
+ * src/model, src/nn, src/train, src/ride include no other header; cmake/TirenvLayers.cmake
+ * lists them). The auxiliary layer reads and writes files
  * and runs the study on top of the core's public headers alone: io (numtext, outfile,
  * profile_csv, tir), crg, rdf, profile_file, curve, rig, dataset, nn_file, vehicle_file,
  * sweep, study, plot (src/io, src/formats, src/rig, src/dataset, src/sweep, src/study). */
