@@ -93,10 +93,11 @@ static int newton_iterate(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop
         } else if (st->lo_checked) {
             z_next = 0.5 * (st->lo + st->hi);
         } else {
-            /* Verify the bracket's lower end before relying on it. */
+            /* Verify the bracket's lower end before relying on it: the iterate itself when it
+             * is there, else one more evaluation. */
             st->lo_checked = 1;
-            tirenv_eq_point p;
-            const int status = tirenv_eq__eval(s, st->lo, &p, stop, diag);
+            tirenv_eq_point p = st->cur;
+            const int status = z == st->lo ? 0 : tirenv_eq__eval(s, st->lo, &p, stop, diag);
             if (status)
                 return status;
             if (p.F < G) {

@@ -36,7 +36,16 @@ static int secant_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
         return status;
     st->z_prev = p.z;
     st->F_prev = p.F;
-    if ((status = tirenv_eq__eval(s, s->prob.z0 - s->eq.secant_dz, &st->cur, stop, diag)))
+    /* The second point is a step like any other: below the admissible range it is not taken
+     * (a new load's warm start clamped to z = 0 evaluated the tire 1 mm under the ground). */
+    const double z1 = s->prob.z0 - s->eq.secant_dz;
+    if (!(z1 >= s->prob.z_lo)) {
+        *stop = TIRENV_EQ_BREAKDOWN;
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
+                            "secant: step left the admissible range (z = %.9g m, the second "
+                            "starting point z0 - SECANT_STEP)", z1);
+    }
+    if ((status = tirenv_eq__eval(s, z1, &st->cur, stop, diag)))
         return status;
     return secant_step(st, s, stop, diag);
 }

@@ -161,6 +161,15 @@ static const eq_case cases[] = {
      {0.0, 0.6817, 0.62, 0.03}, NAN, 2,
      {{TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS}, {TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS},
       {TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS}}},
+    /* A start at z_lo inside a plateau below the load (a new load's warm start clamped to the
+     * ground, where the springs model's force is flat): Newton took dF/dz = 0 for "no contact
+     * yet" and stepped down to z_lo again until its evaluations ran out; the secant took its
+     * second point below z_lo. */
+    {"a start at z_lo on a plateau below the load",
+     {PLATEAU, 0.70, 0.66, 0, 2.3e6, 9876.5, NEVER, NEVER}, 15234.5,
+     {0.67, 0.70, 0.67, 0.02}, NAN, 0,
+     {{TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}, {TIRENV_ENOCONV, TIRENV_EQ_BREAKDOWN},
+      {TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}}},
 };
 
 static const tirenv_eq_solver_type *const *methods(void)
@@ -194,6 +203,8 @@ static void run_case(const eq_case *c, size_t m)
     assert_true(res.evals <= eq.max_iter);        /* and the budget kept */
     for (size_t k = 1; k < rec.n; ++k)            /* no height evaluated twice in a row: */
         assert_true(rec.log[k].z != rec.log[k - 1].z);  /* the force gives nothing new */
+    for (size_t k = 0; k < rec.n; ++k)            /* none below the admissible range */
+        assert_true(rec.log[k].z >= c->prob.z_lo);
     if (status) {
         assert_int_equal(res.stop, e->stop);
         assert_true(diag.message[0] != '\0');     /* every failure says why */
