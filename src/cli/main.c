@@ -120,10 +120,13 @@ int main(int argc, char *argv[])
     /* '+' stops at the command name, so its options are left for it to parse. */
     while ((c = getopt_long(argc, argv, "+hV", longopts, NULL)) != -1) {
         switch (c) {
-        case 'h':
-            usage(stdout);
-            return finish(CLI_EXIT_OK);
+        case 'h': /* "tirenv --help CMD" is "tirenv help CMD" */
+            return finish(help_main(argc - optind + 1, argv + optind - 1));
         case 'V':
+            if (optind < argc) { /* "tirenv --version envelope" asked for something else */
+                cli_error("--version takes no operand, got '%s'", argv[optind]);
+                return CLI_EXIT_USAGE;
+            }
             printf("tirenv %s\n", TIRENV_VERSION);  /* tirenv/version.h */
             return finish(CLI_EXIT_OK);
         default:

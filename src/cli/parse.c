@@ -149,6 +149,10 @@ static int shared_option(cli_options *o, int code, const char *arg)
         return CLI_EXIT_OK;
     }
     case 'o':
+        if (!*arg) { /* a misuse, caught before any work (the writer would refuse it last) */
+            cli_error("-o: empty path; expected a file name or '-'");
+            return CLI_EXIT_USAGE;
+        }
         o->output = arg;
         return CLI_EXIT_OK;
     case OPT_MODEL:

@@ -20,6 +20,14 @@ check "'tirenv help' documents exit codes 1, 2 and 3" \
     'grep -q "^  1  misuse" out && grep -q "^  2  bad data" out && grep -q "^  3  numerical" out'
 run "$bin" --version
 check "--version prints the version, exit 0" '[ $rc -eq 0 ] && grep -q "^tirenv [0-9]" out'
+run "$bin" --version envelope
+check "--version with an operand is misuse, exit 1, nothing on stdout" \
+    '[ $rc -eq 1 ] && [ ! -s out ] && grep -q "no operand" err'
+run "$bin" --help envelope
+check "--help CMD is help CMD: the command's usage, exit 0" \
+    '[ $rc -eq 0 ] && grep -q "^usage: tirenv envelope" out'
+run "$bin" envelope --model rigid --cleat 0.3,0.1 --load 20000 -o ""
+check "-o with an empty path is misuse, exit 1" '[ $rc -eq 1 ] && grep -q "^tirenv: -o: empty" err'
 # Standard output that cannot be written (a full disk: /dev/full) is an error for what main
 # prints itself as for what a command prints.
 for args in "--help" "--version" "help" "flat --help"; do
