@@ -296,6 +296,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             c[t + 1].da = v[i].dphi;
         }
         n_lines = n_pieces;
+        ++r->n_kept;
         for (size_t t = 0; t < n_lines; ++t)
             if (c[t].sa + c[t].sb < 0) {
                 ordered &= n_back == t;
