@@ -162,6 +162,7 @@ void tirenv_ring_free(tirenv_ring *r)
     free(r->pts);
     free(r->cuts);
     free(r->lines);
+    free(r->pc_vk);
     free(r->key);
     tirenv_ring__belt_free(r->belt);
     tirenv_ring__tread_free(r->tread);

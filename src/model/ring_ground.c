@@ -22,6 +22,7 @@
  * angle seen from the centre moves as the centre does, a node's does not. */
 typedef struct {
     double phi, s, c, dphi;
+    size_t k; /* a vertex's index in the profile */
 } cut;
 
 static int by_angle(const void *a, const void *b)
@@ -218,6 +219,25 @@ static void piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
     piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
 }
 
+/* Whether the last sampling's pieces are this one's (r->pc_*): the same x and nodes, and the
+ * same vertex cuts, each still strictly inside the node interval it cut and in the same order
+ * (a vertex's angle moves with z): then a build would make the same pieces, none of zero
+ * length, with the vertices' new angles at their ends. */
+static int same_pieces(const tirenv_ring *r, double x, size_t ja, size_t jb, const cut v[],
+                       size_t nv)
+{
+    if (!r->pc_valid || !tirenv_ring__same_bits(&x, &r->pc_x, 1) || ja != r->pc_ja ||
+        jb != r->pc_jb || nv != r->pc_nv)
+        return 0;
+    for (size_t i = 0; i < nv; ++i) {
+        const size_t j = r->pc_vj[i];
+        if (v[i].k != r->pc_vk[i] || !(v[i].phi > r->theta[j] && v[i].phi < r->theta[j + 1]) ||
+            (i > 0 && !(v[i - 1].phi < v[i].phi)))
+            return 0;
+    }
+    return 1;
+}
+
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
  * pieces between them, and each piece's line from a ray along its middle. Rays of one side are
  * cast outward from the vertical, so each walk starts where the last one ended. */
@@ -247,7 +267,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             continue;
         if (reserve((void **)&r->cuts, &r->cap_cuts, nv + 1, sizeof(cut)))
             return TIRENV_ENOMEM;
-        ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho, -dx / (rho * rho)};
+        ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho, -dx / (rho * rho), kk};
     }
     cut *v = r->cuts;
     if (nv > 1)
@@ -264,13 +284,40 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     r->n_pts = 0;
     size_t iv = 0, n_lines = 0, n_back = 0;
     int contig = 0, ordered = 1;
-    for (size_t j = ja; j < jb; ++j) {
-        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j], 0};
+    const int fresh = !same_pieces(r, x, ja, jb, v, nv);
+    if (!fresh) {
+        /* The last sampling's pieces: only their vertex ends moved (with z). Vertex i ends
+         * piece (j_i - ja) + i and begins the next, no piece having zero length. */
+        tirenv_ring_piece *const c = r->lines;
+        for (size_t i = 0; i < nv; ++i) {
+            const size_t t = (r->pc_vj[i] - ja) + i;
+            c[t].pb = v[i].phi, c[t].sb = v[i].s, c[t].cb = v[i].c, c[t].db = v[i].dphi;
+            c[t + 1].pa = v[i].phi, c[t + 1].sa = v[i].s, c[t + 1].ca = v[i].c;
+            c[t + 1].da = v[i].dphi;
+        }
+        n_lines = n_pieces;
+        ++r->n_kept;
+        for (size_t t = 0; t < n_lines; ++t)
+            if (c[t].sa + c[t].sb < 0) {
+                ordered &= n_back == t;
+                ++n_back;
+            }
+    }
+    /* Else built afresh, and kept for the next (pieces: their vertices and intervals). */
+    const int keep =
+        fresh && !reserve((void **)&r->pc_vk, &r->cap_pc, 2 * nv, sizeof *r->pc_vk);
+    if (fresh)
+        r->pc_vj = r->pc_vk ? r->pc_vk + nv : NULL;
+    for (size_t j = ja; fresh && j < jb; ++j) {
+        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j], 0, 0};
         for (;;) {
-            cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1], 0};
+            cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1], 0, 0};
             const int is_vertex = iv < nv && v[iv].phi < next.phi;
-            if (is_vertex)
+            if (is_vertex) {
+                if (keep)
+                    r->pc_vk[iv] = v[iv].k, r->pc_vj[iv] = j;
                 next = v[iv++];
+            }
             if (next.phi > prev.phi) {
                 tirenv_ring_piece *c = &r->lines[n_lines]; /* its line and hit: below */
                 c->pa = prev.phi, c->sa = prev.s, c->ca = prev.c, c->pb = next.phi;
@@ -289,6 +336,10 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             if (!is_vertex)
                 break;
         }
+    }
+    if (fresh) {
+        r->pc_valid = keep && n_lines == n_pieces;
+        r->pc_x = x, r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
     /* Their lines: rays along the middle of each piece, each side walked outward. */
     long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));

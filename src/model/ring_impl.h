@@ -171,6 +171,14 @@ struct tirenv_ring {
     size_t cap_cuts;
     tirenv_ring_piece *lines;
     size_t cap_lines;
+    /* The last sampling's pieces, kept for the next at the same x (ring_ground.c): its x, its
+     * nodes ja .. jb, and its vertex cuts in angle order (the profile's vertex and the node
+     * interval it cuts); valid only if no piece had zero length. */
+    int pc_valid;
+    double pc_x;
+    size_t pc_ja, pc_jb, pc_nv, cap_pc;
+    size_t *pc_vk, *pc_vj;
+    size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
     double *g;             /* per node: the belt layer's share of F, N */
     /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
      * the window and, of each point in contact, its interval, place, weight, stiffness and

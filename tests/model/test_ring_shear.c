@@ -479,6 +479,66 @@ static void test_state_restores_bits(void **state)
     tirenv_profile_free(p);
 }
 
+/* The ground's points of a sampling at the same x as the last (ring_ground.c keeps its
+ * pieces where the vertex cuts stay in their node intervals, their ends at the vertices taking
+ * the new angles) are those of a fresh ring's sampling there, bit for bit: over a cleat and a
+ * 5 mm blade, whose corners lie between nodes, at heights 1e-6 m apart (the pieces kept) and
+ * 5 mm apart (a corner's cut may move to another interval: built afresh). The forces agree to
+ * the round-off of a solve from another start (test_warm_starts_agree), and the pieces were
+ * kept at least once a profile (so the comparison tests the kept pieces). */
+static void test_same_x_points(void **state)
+{
+    (void)state;
+    const tirenv_tire t = shear_tire();
+    tirenv_profile *ps[2] = {tirenv_profile_cleat(0.1, 0.1), tirenv_profile_cleat(0.005, 0.05)};
+    const double xs[] = {-0.2137, -0.0311, 0.0457}, z0[2] = {0.611, 0.625};
+    const double dzs[] = {1e-6, 5e-3, -2.3e-6};
+    for (size_t c = 0; c < 2; ++c) {
+        size_t kept = 0, compared = 0;
+        for (size_t i = 0; i < 3; ++i) {
+            tirenv_ring *kept_r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+            assert_non_null(kept_r);
+            double z = z0[c], fx1, fz1, d1, fx2, fz2, d2;
+            assert_int_equal(tirenv_ring_forces(kept_r, ps[c], xs[i], z, &fx1, &fz1, &d1, NULL,
+                                                NULL), 0);
+            for (size_t k = 0; k < 3; ++k) {
+                z += dzs[k];
+                const size_t before = kept_r->n_kept;
+                assert_int_equal(tirenv_ring_forces(kept_r, ps[c], xs[i], z, &fx1, &fz1, &d1,
+                                                    NULL, NULL), 0);
+                kept += kept_r->n_kept - before;
+                tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
+                assert_non_null(fresh);
+                assert_int_equal(tirenv_ring_forces(fresh, ps[c], xs[i], z, &fx2, &fz2, &d2,
+                                                    NULL, NULL), 0);
+                assert_int_equal(fresh->n_pts, kept_r->n_pts);
+                assert_int_equal(fresh->lo, kept_r->lo);
+                assert_int_equal(fresh->n, kept_r->n);
+                assert_true(kept_r->n_pts > 0);
+                for (size_t q = 0; q < fresh->n_pts; ++q) {
+                    const tirenv_ring_point *a = &kept_r->pts[q], *b = &fresh->pts[q];
+                    const double va[] = {a->d, a->s, a->omega, a->phi, a->sn, a->cs, a->dd,
+                                         a->dphi, a->ddt, a->X, a->d > -INFINITY ? a->k_t : 0};
+                    const double vb[] = {b->d, b->s, b->omega, b->phi, b->sn, b->cs, b->dd,
+                                         b->dphi, b->ddt, b->X, b->d > -INFINITY ? b->k_t : 0};
+                    assert_int_equal(a->j, b->j);
+                    if (memcmp(va, vb, sizeof va) != 0)
+                        fail_msg("profile %zu x %g z %.9g: point %zu differs", c, xs[i], z, q);
+                }
+                assert_near(fz1, fz2, 1e-6, 1e-10);
+                assert_near(fx1, fx2, 1e-6 + 1e-10 * fabs(fz2), 0);
+                ++compared;
+                tirenv_ring_free(fresh);
+            }
+            tirenv_ring_free(kept_r);
+        }
+        assert_int_equal(compared, 9);
+        assert_true(kept >= 1);
+    }
+    tirenv_profile_free(ps[0]);
+    tirenv_profile_free(ps[1]);
+}
+
 /* tirenv_ring__tread_exterior, the belt outside the window (tirenv_ring_state's w there),
  * against an independent solve: the whole ring's belt-and-tread stiffness written out node by
  * node around the circle (the belt's stencil, the tread's compression k_c R dtheta between w
@@ -831,6 +891,7 @@ int main(void)
         cmocka_unit_test(test_derivative_over_obstacles),
         cmocka_unit_test(test_lugs),
         cmocka_unit_test(test_state_restores_bits),
+        cmocka_unit_test(test_same_x_points),
         cmocka_unit_test(test_tread_exterior),
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
