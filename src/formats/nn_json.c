@@ -699,16 +699,36 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
  * some 43 MB; jansson holds about ten times the text, so a 100 MB file took 980 MB. */
 #define NN_JSON_MAX_BYTES (64u << 20)
 
-/* jansson reads through here, so that a file (or a pipe, or /dev/zero) stops at the cap. */
+/* jansson reads through here, so that a file (or a pipe, or /dev/zero) stops at the cap,
+ * after the file's first bytes (head) that are not a UTF-8 byte order mark. */
 typedef struct {
     FILE *fp;
     size_t total;
     int too_big, failed;
+    unsigned char head[3];
+    size_t n_head;
 } json_in;
+
+/* A UTF-8 byte order mark is dropped, as every other reader of tirenv drops it (io.h), and as
+ * RFC 8259 section 8.1 allows a parser to; other first bytes go to jansson as read. */
+static void json_skip_bom(json_in *in)
+{
+    in->n_head = fread(in->head, 1, sizeof in->head, in->fp);
+    in->total = in->n_head;
+    if (in->n_head == 3 && in->head[0] == 0xEF && in->head[1] == 0xBB && in->head[2] == 0xBF)
+        in->n_head = 0;
+}
 
 static size_t json_read(void *buf, size_t n, void *arg)
 {
     json_in *in = arg;
+    if (in->n_head && n) { /* the first bytes, read to look for a byte order mark */
+        const size_t k = n < in->n_head ? n : in->n_head;
+        memcpy(buf, in->head, k);
+        memmove(in->head, in->head + k, in->n_head - k);
+        in->n_head -= k;
+        return k;
+    }
     if (in->total >= NN_JSON_MAX_BYTES) {
         in->too_big = 1;
         return (size_t)-1;
@@ -738,6 +758,7 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
         return tirenv_error(diag, TIRENV_EIO, path, 0, "", "cannot open the model file: %s",
                             strerror(errno));
     errno = 0;
+    json_skip_bom(&in);
     json_t *root = json_load_callback(json_read, &in, JSON_REJECT_DUPLICATES, &err);
     fclose(in.fp);
     if (in.too_big) {
