@@ -138,9 +138,12 @@ typedef struct cli_opt {
     long min, max;         /* CLI_COUNT's range */
     int (*parse)(void *dst, const char *arg);  /* CLI_CUSTOM: an exit code, after printing */
     int repeatable;        /* may be given more than once (else that is misuse) */
-    int input;             /* CLI_STRING: a file the command reads, which -o may not name
-                            * (cli_refuse_clobber) */
+    int input;             /* CLI_STRING: CLI_INPUT_FILE, a file the command reads, which -o
+                            * may not name (cli_refuse_clobber); CLI_INPUT_DIR, a directory
+                            * whose files it reads, none of which -o may name */
 } cli_opt;
+
+enum { CLI_INPUT_FILE = 1, CLI_INPUT_DIR = 2 }; /* cli_opt's input */
 
 /* A command's parser. */
 typedef struct {
@@ -366,6 +369,11 @@ double cli_wall_seconds(void);
  * when they resolve to the same name, symbolic links followed (clobber.c). */
 int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
                        const char *input);
+
+/* The same for a directory dir whose files the command reads: -o may not name a regular file
+ * inside it (at any depth), since the command may read any of them. */
+int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *option,
+                           const char *dir);
 
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);

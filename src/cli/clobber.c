@@ -32,3 +32,24 @@ int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
               "another file", cmd, output, option, input);
     return CLI_EXIT_USAGE;
 }
+
+int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *option,
+                           const char *dir)
+{
+    if (!output || !dir || strcmp(output, "-") == 0)
+        return CLI_EXIT_OK;
+    char *const out = realpath(output, NULL);
+    char *const in = out ? realpath(dir, NULL) : NULL;
+    const size_t n = in ? strlen(in) : 0;
+    struct stat st;
+    const int clash = in && strncmp(out, in, n) == 0 && (out[n] == '/' || in[n - 1] == '/') &&
+                      stat(out, &st) == 0 && S_ISREG(st.st_mode);
+    free(out);
+    free(in);
+    if (!clash)
+        return CLI_EXIT_OK;
+    cli_error("%s: -o %s is a file of the directory %s %s, whose files it reads: the output "
+              "would replace it; expected a file elsewhere or a new name", cmd, output, option,
+              dir);
+    return CLI_EXIT_USAGE;
+}

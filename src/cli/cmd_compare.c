@@ -140,7 +140,7 @@ static int parse(int argc, char *argv[], cli_options *o, compare_options *co)
 {
     int simulated = 0, no_images = 0;
     const cli_opt own[] = {
-        {.name = "data", .kind = CLI_STRING, .dst = &co->data},
+        {.name = "data", .kind = CLI_STRING, .dst = &co->data, .input = CLI_INPUT_DIR},
         {.name = "cases", .kind = CLI_CUSTOM, .dst = co, .parse = parse_cases},
         {.name = "split", .kind = CLI_CUSTOM, .dst = co, .parse = parse_split},
         {.name = "simulated-by", .kind = CLI_CUSTOM, .dst = co, .parse = parse_simulated_by},

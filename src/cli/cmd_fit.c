@@ -115,7 +115,7 @@ int cli_fit_main(int argc, char *argv[])
     const char *data = NULL;
     int fit_radius = 0, fit_all = 0, refine = 0;
     const cli_opt own[] = {
-        {.name = "data", .kind = CLI_STRING, .dst = &data},
+        {.name = "data", .kind = CLI_STRING, .dst = &data, .input = CLI_INPUT_DIR},
         {.name = "fit-radius", .kind = CLI_FLAG, .dst = &fit_radius},
         {.name = "all", .kind = CLI_FLAG, .dst = &fit_all},
         {.name = "check-refinement", .kind = CLI_FLAG, .dst = &refine},

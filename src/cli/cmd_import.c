@@ -107,7 +107,7 @@ int cli_import_main(int argc, char *argv[])
     const char *log = NULL;
     double cleat[2] = {NAN, NAN};  /* L, H, m */
     const cli_opt own[] = {
-        {.name = "log", .kind = CLI_STRING, .dst = &log, .input = 1},
+        {.name = "log", .kind = CLI_STRING, .dst = &log, .input = CLI_INPUT_FILE},
         {.name = "cleat", .kind = CLI_CUSTOM, .dst = cleat, .parse = parse_cleat},
         {.name = "x-n-from", .kind = CLI_NUMBER, .dst = &set.xN_from},
         {.name = "x-n-to", .kind = CLI_NUMBER, .dst = &set.xN_to},

@@ -208,7 +208,7 @@ int cli_ride_main(int argc, char *argv[])
     const cli_opt own[] = {
         {.name = "speed", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_speeds},
         {.name = "model", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_models},
-        {.name = "vehicle", .kind = CLI_STRING, .dst = &r.vehicle_path, .input = 1},
+        {.name = "vehicle", .kind = CLI_STRING, .dst = &r.vehicle_path, .input = CLI_INPUT_FILE},
         {.name = "set", .kind = CLI_CUSTOM, .dst = &r, .parse = parse_set, .repeatable = 1},
         {.name = "dt", .kind = CLI_POSITIVE, .dst = &r.pp.dt, .what = "a positive number in s"},
         {.name = "solver", .kind = CLI_CUSTOM, .dst = &r.pp.method, .parse = parse_solver},

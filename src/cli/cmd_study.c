@@ -97,7 +97,7 @@ int cli_study_main(int argc, char *argv[])
     const tirenv_model_type *simulated_by = NULL;
     int measured = 0, no_images = 0;
     const cli_opt own[] = {
-        {.name = "data", .kind = CLI_STRING, .dst = &data},
+        {.name = "data", .kind = CLI_STRING, .dst = &data, .input = CLI_INPUT_DIR},
         {.name = "trainer", .kind = CLI_STRING, .dst = &s.trainer},
         {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L,
          .what = "a whole number >= 0"},

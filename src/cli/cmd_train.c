@@ -212,7 +212,7 @@ static int parse_loss(void *dst, const char *arg)
 static int parse(int argc, char *argv[], cli_options *o, train_options *t)
 {
     const cli_opt own[] = {
-        {.name = "data", .kind = CLI_STRING, .dst = &t->data},
+        {.name = "data", .kind = CLI_STRING, .dst = &t->data, .input = CLI_INPUT_DIR},
         {.name = "trainer", .kind = CLI_CUSTOM, .dst = &t->type, .parse = parse_trainer},
         {.name = "seed", .kind = CLI_COUNT, .dst = &t->seed, .min = 0, .max = LONG_MAX,
          .what = "an integer >= 0"},

@@ -5,6 +5,7 @@
 #include "cli/cli.h"
 
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -276,11 +277,14 @@ static int check_network(const cli_parser *p, const cli_options *o)
     return CLI_EXIT_OK;
 }
 
-/* -o may name none of the files the command reads: --tire, --profile, --nn and its own
- * options marked input. */
+/* -o may name none of the files the command reads: --tire (or the default tire file),
+ * --profile, --nn and its own options marked input (a file, or a directory such as --data
+ * whose files it reads). */
 static int check_clobber(const cli_parser *p, const cli_options *o)
 {
-    int code = cli_refuse_clobber(p->name, o->output, "--tire", o->tire_path);
+    char buf[PATH_MAX];
+    const char *tire = p->groups & CLI_TIRE ? cli_tire_path(o, buf, sizeof buf) : NULL;
+    int code = cli_refuse_clobber(p->name, o->output, "--tire", tire);
     if (!code && o->obstacle == CLI_PROFILE)
         code = cli_refuse_clobber(p->name, o->output, "--profile", o->obstacle_arg);
     if (!code)
@@ -289,7 +293,10 @@ static int check_clobber(const cli_parser *p, const cli_options *o)
         if (opt->input) {
             char name[64];
             snprintf(name, sizeof name, "--%s", opt->name);
-            code = cli_refuse_clobber(p->name, o->output, name, *(const char **)opt->dst);
+            const char *in = *(const char **)opt->dst;
+            code = opt->input == CLI_INPUT_DIR
+                       ? cli_refuse_clobber_dir(p->name, o->output, name, in)
+                       : cli_refuse_clobber(p->name, o->output, name, in);
         }
     return code;
 }

@@ -42,6 +42,23 @@ refused "ride --vehicle v.veh -o v.veh" v.veh --vehicle
 run "$bin" ride --profile road.csv --model point --speed 5 -o road.csv
 refused "ride --profile road.csv -o road.csv" road.csv --profile
 
+mkdir -p dd/tires
+cp t.tir dd/tires/default.tir
+cp t.tir dd/tires/default.tir.0
+run env TIRENV_DATA="$PWD/dd" "$bin" envelope --model rigid --cleat 0.1,0.05 --load 20000 \
+    -o dd/tires/default.tir
+refused "envelope -o the default tire file, no --tire" dd/tires/default.tir --tire
+run env TIRENV_DATA="$PWD/dd" "$bin" road --class C --length 1 -o dd/tires/default.tir
+check "road -o the default tire file: written (road reads no tire)" \
+    '[ $rc -eq 0 ] && head -n 1 dd/tires/default.tir | grep -q "^x_m,z_m"'
+
+cp -r "$repo/data/dataset" D
+cp D/cases.csv D/cases.csv.0
+run "$bin" train --data D -o D/cases.csv
+check "train --data D -o D/cases.csv: refused, exit 1, the manifest as it was" \
+    '[ $rc -eq 1 ] && grep -q "is a file of the directory --data D, whose files it reads" err &&
+     cmp -s D/cases.csv D/cases.csv.0'
+
 ln -s road.csv link.csv
 run "$bin" envelope --model rigid --profile road.csv --load 20000 -o link.csv
 refused "-o a symbolic link to the input" road.csv --profile
