@@ -243,6 +243,7 @@ typedef struct {
 int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicle *v,
                           const tirenv_profile *p, const double speeds[], size_t n_speeds,
                           tirenv_ride_plan *plan, tirenv_diag *diag);
+double tirenv_ride_dx_max(double R0_front, double R0_rear);
 int tirenv_ride_effective(tirenv_model *m, const tirenv_profile *p, double load, double x0,
                           double dx, size_t n, double w[], tirenv_diag *diag);
 size_t tirenv_ride_n_samples(const tirenv_ride_settings *s);

@@ -150,6 +150,13 @@ int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicl
                           const tirenv_profile *p, const double speeds[], size_t n_speeds,
                           tirenv_ride_plan *plan, tirenv_diag *diag);
 
+/* The coarsest grid of the axles' inputs (m) that follows tires of free radii R0_front and
+ * R0_rear (m): an effective road varies on the scale of a tire's patch, some 0.2 R0 or more,
+ * which a tenth of the smaller R0 samples at least twice. tirenv ride and the Python module
+ * refuse a coarser dx: a 10 m grid over a 0.3 m cleat never sampled it and the ride printed a
+ * still seat (docs/models.md section 9.6). */
+double tirenv_ride_dx_max(double R0_front, double R0_rear);
+
 /* The state and what the driver feels at one output time. Displacements are from the static
  * equilibrium on flat ground at height 0 (so z = w on a flat road of height w). */
 typedef struct {

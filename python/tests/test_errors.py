@@ -103,6 +103,10 @@ def test_bad_vehicle_and_ride_arguments(tmp_path):
     with pytest.raises(tirenv.TirenvError, match="too coarse") as e:  # 100 Hz < 320 Hz
         tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), dt=0.01)
     assert e.value.field == "dt"
+    # A 10 m grid never sampled the 0.3 m cleat: a still seat, as if the road were flat.
+    with pytest.raises(tirenv.TirenvError, match="coarser than a tenth") as e:
+        tirenv.ride(tirenv.Profile.cleat(0.3, 0.05), dx=10)
+    assert e.value.field == "dx"
     with pytest.raises(tirenv.TirenvError, match="Wk"):
         tirenv.comfort([0.0] * 1000, 1000.0, "Wz")
 

@@ -184,6 +184,10 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None,
     pp.x_from, pp.x_to = _nan_if_none(x_from), _nan_if_none(x_to)
     plan = ffi.new("tirenv_ride_plan *")
     check(lib.tirenv_ride_plan_make(pp, v._v, profile._p, speeds, 1, plan, diag), diag)
+    dx_max = lib.tirenv_ride_dx_max(v.tire(0).R0, v.tire(1).R0)
+    if not plan.dx <= dx_max:
+        raise invalid(f"a grid of {plan.dx:g} m is coarser than a tenth of the tires' free "
+                      f"radius: expected at most {dx_max:g} m", "dx")
     s = ffi.new("tirenv_ride_settings *", plan.run[0])
     x0, dx, n = plan.x0, plan.dx, plan.n
     series = np.zeros(lib.tirenv_ride_n_samples(s), dtype=SAMPLE_DTYPE)

@@ -438,6 +438,15 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
         code = CLI_EXIT_USAGE;
         goto done;
     }
+    const double dx_max = tirenv_ride_dx_max(s.tire[0].springs.R0, s.tire[1].springs.R0);
+    if (!(s.plan.dx <= dx_max)) {
+        cli_error("ride: --dx: a grid of %g m is coarser than a tenth of the tires' free radius "
+                  "(%g m), the least that samples an effective road's features (the tire's "
+                  "patch) twice; expected at most %g m (default 0.005)",
+                  s.plan.dx, 10 * dx_max, dx_max);
+        code = CLI_EXIT_USAGE;
+        goto done;
+    }
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = tirenv_model_type_name(r->models[i]);

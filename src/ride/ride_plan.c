@@ -138,3 +138,8 @@ int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicl
     plan->n = (size_t)n;
     return TIRENV_OK;
 }
+
+double tirenv_ride_dx_max(double R0_front, double R0_rear)
+{
+    return 0.1 * fmin(R0_front, R0_rear);
+}

@@ -33,6 +33,15 @@ check "ride --out-dir over level ground: exit 0, both plots drawn, the spectrum'
     '[ $rc -eq 0 ] && [ $(rows lv/comfort.csv) -eq 2 ] && [ -s lv/spectrum.png ] &&
      [ -s lv/spectrum.svg ] && grep -q "the PSD is 0: no vibration at the seat" lv/spectrum.gp &&
      awk -F, "NR > 1 && \$5 != 0 { exit 1 }" lv/comfort.csv'
+# A grid coarser than a tenth of R0 steps over what it should follow: --dx 10 never sampled
+# the cleat and printed a still seat, exit 0; a tenth of R0 (0.068 m) is still taken.
+run "$bin" ride --cleat 0.30,0.05 --speed 5 --model point --dx 10 -o coarse.csv
+check "ride --dx 10: exit 1 naming --dx and the bound, no file" \
+    '[ $rc -eq 1 ] && grep -q -- "--dx: a grid of 10 m is coarser than a tenth of the tires. free radius" err &&
+     no_file coarse.csv'
+run "$bin" ride --cleat 0.30,0.05 --speed 5 --model point --dx 0.068 -o coarse.csv
+check "ride --dx 0.068 (R0/10): exit 0, the cleat felt" \
+    '[ $rc -eq 0 ] && awk -F, "NR > 1 && !/^#/ && (\$8 > 1 || \$8 < -1) { ok = 1 } END { exit !ok }" coarse.csv'
 # Two runs of one name: 5 and 5.00001 m/s are both 18 km/h, and the second run's
 # series-point-18kmh.csv replaced the first's; a model given twice ran twice into one file.
 run "$bin" ride --cleat 0.30,0.05 --speed 5,5.00001 --model point --out-dir same --series
