@@ -14,19 +14,29 @@
  * followed, so two paths clash when they resolve to the same name: a symbolic link to the
  * input clashes, a hard link (another name of the same file) does not, its name survives. A
  * FIFO or a device is written through and a directory's files are carried over
- * (tirenv/outfile.h), so only a regular file is refused. */
+ * (tirenv/outfile.h), so only a regular file clashes. With inside, output clashes with any
+ * regular file below the directory input instead. */
+static int clashes(const char *output, const char *input, int inside)
+{
+    if (!output || !input || strcmp(output, "-") == 0)
+        return 0;
+    char *const out = realpath(output, NULL);
+    char *const in = out ? realpath(input, NULL) : NULL;
+    const size_t n = in ? strlen(in) : 0;
+    struct stat st;
+    const int same = in && (inside ? strncmp(out, in, n) == 0 &&
+                                         (out[n] == '/' || in[n - 1] == '/')
+                                   : strcmp(out, in) == 0);
+    const int clash = same && stat(out, &st) == 0 && S_ISREG(st.st_mode);
+    free(out);
+    free(in);
+    return clash;
+}
+
 int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
                        const char *input)
 {
-    if (!output || !input || strcmp(output, "-") == 0)
-        return CLI_EXIT_OK;
-    char *const out = realpath(output, NULL);
-    char *const in = out ? realpath(input, NULL) : NULL;
-    struct stat st;
-    const int clash = in && strcmp(out, in) == 0 && stat(out, &st) == 0 && S_ISREG(st.st_mode);
-    free(out);
-    free(in);
-    if (!clash)
+    if (!clashes(output, input, 0))
         return CLI_EXIT_OK;
     cli_error("%s: -o %s is the file %s %s reads: the output would replace it; expected "
               "another file", cmd, output, option, input);
@@ -36,17 +46,7 @@ int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
 int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *option,
                            const char *dir)
 {
-    if (!output || !dir || strcmp(output, "-") == 0)
-        return CLI_EXIT_OK;
-    char *const out = realpath(output, NULL);
-    char *const in = out ? realpath(dir, NULL) : NULL;
-    const size_t n = in ? strlen(in) : 0;
-    struct stat st;
-    const int clash = in && strncmp(out, in, n) == 0 && (out[n] == '/' || in[n - 1] == '/') &&
-                      stat(out, &st) == 0 && S_ISREG(st.st_mode);
-    free(out);
-    free(in);
-    if (!clash)
+    if (!clashes(output, dir, 1))
         return CLI_EXIT_OK;
     cli_error("%s: -o %s is a file of the directory %s %s, whose files it reads: the output "
               "would replace it; expected a file elsewhere or a new name", cmd, output, option,
