@@ -37,13 +37,17 @@ static int secant_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
     st->z_prev = p.z;
     st->F_prev = p.F;
     /* The second point is a step like any other: below the admissible range it is not taken
-     * (a new load's warm start clamped to z = 0 evaluated the tire 1 mm under the ground). */
-    const double z1 = s->prob.z0 - s->eq.secant_dz;
-    if (!(z1 >= s->prob.z_lo)) {
+     * (a new load's warm start clamped to z = 0 evaluated the tire 1 mm under the ground), and
+     * the step goes up instead, where the eq. 2 line is as good a start. */
+    double z1 = s->prob.z0 - s->eq.secant_dz;
+    if (!(z1 >= s->prob.z_lo))
+        z1 = s->prob.z0 + s->eq.secant_dz;
+    if (!(z1 >= s->prob.z_lo && z1 <= s->prob.z_hi)) {
         *stop = TIRENV_EQ_BREAKDOWN;
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
-                            "secant: step left the admissible range (z = %.9g m, the second "
-                            "starting point z0 - SECANT_STEP)", z1);
+                            "secant: no second starting point within the admissible range "
+                            "[%.9g, %.9g] m at z0 -+ SECANT_STEP (z0 = %.9g m)",
+                            s->prob.z_lo, s->prob.z_hi, s->prob.z0);
     }
     if ((status = tirenv_eq__eval(s, z1, &st->cur, stop, diag)))
         return status;

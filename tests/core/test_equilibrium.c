@@ -170,6 +170,10 @@ static const eq_case cases[] = {
      {0.67, 0.70, 0.67, 0.02}, NAN, 0,
      {{TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}, {TIRENV_ENOCONV, TIRENV_EQ_BREAKDOWN},
       {TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}}},
+    /* z0 - SECANT_STEP lies below z_lo: the secant's second point is taken above (it
+     * refused before, though the root lies in range). */
+    {"smooth, a start within SECANT_STEP above z_lo", SMOOTH_LAW, 12345.6,
+     {0.6, 0.6817, 0.6005, 0.03}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
 };
 
 static const tirenv_eq_solver_type *const *methods(void)
