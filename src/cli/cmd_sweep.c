@@ -320,8 +320,9 @@ static int merge_main(int argc, char *argv[])
             strncmp(a, "--output=", 9) == 0 || (a[0] == '-' && a[1] == 'o' && a[2])) {
             const char *v = a[1] == 'o' && a[2] ? a + 2 : strchr(a, '=') ? strchr(a, '=') + 1
                                                                         : argv[++i];
-            if (!v) {
-                cli_error("sweep merge: -o needs a directory");
+            if (!v || !*v) {
+                cli_error("sweep merge: -o needs a directory, got %s",
+                          v ? "an empty path" : "none");
                 code = CLI_EXIT_USAGE;
             } else if (out) {
                 cli_error("sweep merge: -o given twice; give it once");

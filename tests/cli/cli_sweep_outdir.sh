@@ -40,6 +40,10 @@ check "merge refuses a directory holding something else, and leaves it as it was
     '[ $rc -ne 0 ] && [ "$(ls -A other)" = mine.txt ] && grep -q -x keep other/mine.txt &&
      only -e part0 -e part1 -e one -e merged -e empty -e other'
 
+run "$bin" sweep merge part0 part1 -o ""
+check "merge -o with an empty path is misuse, exit 1, as every command's -o" \
+    '[ $rc -eq 1 ] && grep -q "needs a directory, got an empty path" err'
+
 run "$bin" sweep merge part0 -o lonely
 check "a failed merge leaves neither the target nor a staging directory" \
     '[ $rc -eq 2 ] && [ ! -e lonely ] &&
