@@ -71,7 +71,8 @@ static void usage(FILE *fp)
     cli_help_tire(fp, 1, "UNLOADED_RADIUS=0.69 (every model's)");
     cli_help_jobs(fp);
     fputs("                       (without --stream: the positions in chunks of 8192, each\n"
-          "                       solved from a cold start at its first position)\n"
+          "                       solved from a cold start at its first position; a\n"
+          "                       streamed sweep runs on one thread)\n"
           "  -h, --help           show this help\n",
           fp);
     cli_help_obstacle(fp);
