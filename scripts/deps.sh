@@ -8,6 +8,9 @@ set -eu
 # here) build the fuzz harnesses of tests/fuzz.
 need="cmake make gcc pkg-config libcminpack-dev libcmocka-dev libjansson-dev gnuplot-nox groff-base man-db"
 need="$need clang libclang-rt-14-dev"
+# valgrind: the memcheck test (tests/model/memcheck.sh) finds reads of memory never written,
+# which the sanitizers do not.
+need="$need valgrind"
 # The Python module (python/) and its tests; the FMU's packaging and checks (fmu/).
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
 need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
