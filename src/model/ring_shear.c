@@ -425,12 +425,13 @@ static int reserve_knots(tirenv_ring_tread *T, size_t m)
         return 0;
     const size_t cap = tirenv_core__capacity(T->cap_k, 16, m);
     const size_t V = 2 * T->M + cap;
-    /* Zeroed: a point exactly at the window's last node (s = 0) reads the next node's
-     * entries, one past the window's unknowns, with weight 0 (at_u, at_w). Weighted so, any
-     * finite value gives 0, but the entries were never written: a fresh mapping (the CLI's:
-     * 139 kB is above malloc's first mmap threshold) holds zeros, reused heap (Python's,
-     * once NumPy's freed arrays raised the threshold) garbage, and a NaN there failed the
-     * ring's sweep the CLI had computed (valgrind: "depends on uninitialised value(s)"). */
+    /* Zeroed: an entry of the Newton iterate past the N + m unknowns solve_on writes is read
+     * (with NaN there case R's sweep fails; with NaN in any other of these vectors, or
+     * finite garbage, it does not, so the read is weighted by 0; which read it is, is not
+     * yet pinned down). A fresh mapping (the CLI's: 139 kB is above malloc's first mmap
+     * threshold) holds zeros there, reused heap (Python's, once NumPy's freed arrays raised
+     * the threshold) garbage, and NaN garbage failed the ring's sweep the CLI had computed
+     * (valgrind: "depends on uninitialised value(s)"). */
     double *col = calloc(2 * T->M + 5 * V, sizeof *col);
     size_t *kj = malloc(cap * sizeof *kj);
     double *kd = malloc(10 * cap * sizeof *kd);
