@@ -88,8 +88,7 @@ static void usage(FILE *fp)
     fputs("  -h, --help           show this help\n", fp);
 }
 
-/* A speed's name in the series files and the plots' panels (series-MODEL-18kmh.csv). */
-static void speed_name(double V, char *buf, size_t n)
+void ride_cli_speed_name(double V, char *buf, size_t n)
 {
     snprintf(buf, n, "%g", V * 3.6);
 }
@@ -117,9 +116,9 @@ static int parse_speeds(void *dst, const char *arg)
             return CLI_EXIT_USAGE;
         }
         char name[32], other[32];
-        speed_name(r->speeds[r->n_speeds - 1], name, sizeof name);
+        ride_cli_speed_name(r->speeds[r->n_speeds - 1], name, sizeof name);
         for (size_t k = 0; k + 1 < r->n_speeds; ++k) {
-            speed_name(r->speeds[k], other, sizeof other);
+            ride_cli_speed_name(r->speeds[k], other, sizeof other);
             if (strcmp(name, other) == 0) {
                 cli_error("ride: --speed: '%s' is %s km/h, as speed %zu is, in '%s': the two "
                           "runs would share the series file and the plots' panel named %s "

@@ -92,6 +92,10 @@ int ride_cli_axle_table(const tirenv_model_type *type, const tirenv_tire *tire, 
                         tirenv_ride_table *table, char *warnings, size_t warnings_size,
                         tirenv_diag *diag);
 
+/* A speed V (m/s) as the ride names it in km/h (%g), in its series files
+ * (series-MODEL-18kmh.csv) and its plots' panels: two speeds of one name are refused. */
+void ride_cli_speed_name(double V, char *buf, size_t n);
+
 /* Loads the vehicle, its tires and the obstacle, runs every model at every speed and writes
  * what the options ask for; returns an exit code after printing any error. */
 int ride_cli_run(const cli_options *o, const ride_options *r);

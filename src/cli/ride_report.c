@@ -120,8 +120,11 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
     for (size_t i = 0; i < r->n_cols; ++i)
         fprintf(fp, "%s%s", i ? " " : "", r->cols[i].label);
     fputs("\"\nspeeds = \"", fp);
-    for (size_t j = 0; j < r->n_speeds; ++j)
-        fprintf(fp, "%s%g", j ? " " : "", r->speeds[j] * 3.6);
+    for (size_t j = 0; j < r->n_speeds; ++j) {
+        char speed[32];
+        ride_cli_speed_name(r->speeds[j], speed, sizeof speed);
+        fprintf(fp, "%s%s", j ? " " : "", speed);
+    }
     fputs("\"   # km/h\n", fp);
     for (size_t i = 0; i < r->n_cols; ++i) {
         /* The colours of every tirenv plot: a model looks the same here as in the study; a
@@ -192,7 +195,9 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
         /* The runs at one speed share their length, so one x column serves every model. */
         const ride_series *row = &series[j * r->n_cols];
         const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
-        fprintf(fp, "%s# %g km/h: x_front_m", j ? "\n\n" : "", r->speeds[j] * 3.6);
+        char speed[32];
+        ride_cli_speed_name(r->speeds[j], speed, sizeof speed);
+        fprintf(fp, "%s# %s km/h: x_front_m", j ? "\n\n" : "", speed);
         for (size_t i = 0; i < r->n_cols; ++i)
             fprintf(fp, " seat_az_%s_m_s2", r->cols[i].label);
         fputc('\n', fp);

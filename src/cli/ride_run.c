@@ -394,9 +394,9 @@ static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
     if (!status && r->out_path)
         status = write_series(r->out_path, rs, q, diag);
     if (!status && r->out_dir && r->series) {
-        char path[4200];
-        snprintf(path, sizeof path, "%s/series-%s-%gkmh.csv", r->out_dir, q->label,
-                 q->speed * 3.6);
+        char path[4200], speed[32];
+        ride_cli_speed_name(q->speed, speed, sizeof speed);
+        snprintf(path, sizeof path, "%s/series-%s-%skmh.csv", r->out_dir, q->label, speed);
         status = write_series(path, rs, q, diag);
     }
     return status;
