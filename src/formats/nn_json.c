@@ -715,7 +715,7 @@ static void json_skip_bom(json_in *in)
 {
     in->n_head = fread(in->head, 1, sizeof in->head, in->fp);
     in->total = in->n_head;
-    if (in->n_head == 3 && in->head[0] == 0xEF && in->head[1] == 0xBB && in->head[2] == 0xBF)
+    if (in->n_head == 3 && memcmp(in->head, "\xEF\xBB\xBF", 3) == 0)
         in->n_head = 0;
 }
 

@@ -845,7 +845,7 @@ static void test_sub_window_is_whole_window(void **state)
  * root at 1.1228 m: the belt and tread extrapolated 0.148 m along the root's slope in z made a
  * start from which the shear-coupled contact (1,032 points on 717 nodes) did not settle in 200
  * Newton steps, and the position failed, where a cold start settles (found by running every
- * method over the sample roads). Brent's h equals Newton's within the equilibrium's tolerance. */
+ * method over the sample roads). Brent's h equals Newton's within twice the step tolerance. */
 static void test_far_warm_start_settles(void **state)
 {
     (void)state;
@@ -875,7 +875,9 @@ static void test_far_warm_start_settles(void **state)
         h[k] = pt.h;
         tirenv_model_free(m);
     }
-    assert_near(h[1], h[0], 1e-8, 0);
+    /* Each located within eps_z of the root (Brent's bracket, Newton's last step): 1.3e-12 m
+     * apart when measured. */
+    assert_near(h[1], h[0], 2 * t.eq.eps_z, 0);
     tirenv_profile_free(p);
 }
 
