@@ -184,7 +184,8 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None,
     pp.x_from, pp.x_to = _nan_if_none(x_from), _nan_if_none(x_to)
     plan = ffi.new("tirenv_ride_plan *")
     check(lib.tirenv_ride_plan_make(pp, v._v, profile._p, speeds, 1, plan, diag), diag)
-    dx_max = lib.tirenv_ride_dx_max(v.tire(0).R0, v.tire(1).R0)
+    tires = [v.tire(axle) for axle in (0, 1)]  # each read once, for the grid and the inputs
+    dx_max = lib.tirenv_ride_dx_max(tires[0].R0, tires[1].R0)
     if not plan.dx <= dx_max:
         raise invalid(f"a grid of {plan.dx:g} m is coarser than a tenth of the tires' free "
                       f"radius: expected at most {dx_max:g} m", "dx")
@@ -193,13 +194,13 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None,
     series = np.zeros(lib.tirenv_ride_n_samples(s), dtype=SAMPLE_DTYPE)
     out = ffi.cast("tirenv_ride_sample *", ffi.from_buffer(series))
     if way[0] == lib.TIRENV_RIDE_STATIC:
-        w = [_inputs(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+        w = [_inputs(model, tires[axle], v.tire_load(axle), profile, network, x0, dx, n,
                      extrapolate) for axle in (0, 1)]
         tracks = [ffi.new("tirenv_ride_track *",
                           {"x0": x0, "dx": dx, "n": n, "w": double_ptr(a)}) for a in w]
         check(lib.tirenv_ride_run(v._v, tracks[0], tracks[1], s, out, diag), diag)
     else:
-        tables = [_table(model, v.tire(axle), v.tire_load(axle), profile, network, x0, dx, n,
+        tables = [_table(model, tires[axle], v.tire_load(axle), profile, network, x0, dx, n,
                          extrapolate) for axle in (0, 1)]
         c = [ffi.new("tirenv_ride_table *", {"x0": x0, "dx": dx, "n": n, "m": len(loads),
                                              "load": double_ptr(loads), "w": double_ptr(rows)})

@@ -53,14 +53,14 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
         /* Two threads cannot beat the larger of half the positions and the largest chunk:
          * --quick's 100 m road is a chunk of CLI_CHUNK and a short one, where 0.62 is out of
          * reach by construction and "missed" would say nothing about the code. */
-        const double floor = fmax(0.5 * (double)n, (double)(n < CLI_CHUNK ? n : CLI_CHUNK)) /
+        const double best = fmax(0.5 * (double)n, (double)(n < CLI_CHUNK ? n : CLI_CHUNK)) /
                              (double)n;
-        cli_bench_figure("envelope_jobs2_floor", floor);
+        cli_bench_figure("envelope_jobs2_floor", best);
         cli_bench_say("  springs, tirenv envelope's chunked sweep (%d positions a chunk, each "
                       "from a cold start),\n  --jobs 2 / --jobs 1 wall time: %.3f (target "
                       "0.62: %s), points %s\n",
                       CLI_CHUNK, t2 / t1,
-                      floor > 0.62   ? "not reachable on a road this short: 2 threads' best is "
+                      best > 0.62    ? "not reachable on a road this short: 2 threads' best is "
                                        "the largest chunk's share"
                       : t2 / t1 <= 0.62 ? "met"
                                         : "missed",

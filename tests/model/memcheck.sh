@@ -4,7 +4,8 @@
 # mapping gave zeros (the CLI), reused heap garbage (Python, once NumPy's freed arrays had
 # raised malloc's mmap threshold), and NaN garbage failed a sweep the CLI had computed. The
 # sanitizer build does not see such reads (MemorySanitizer would; it is clang's and needs
-# every library rebuilt), so valgrind runs the Release binary. Labelled slow: some 10 s.
+# every library rebuilt), so valgrind runs the Release binary (3.9 s). Labelled slow so that
+# the sanitizer build, whose binary valgrind cannot run, leaves it out.
 # Usage: tests/model/memcheck.sh BIN. SPDX-License-Identifier: Apache-2.0
 bin=$1
 if ! command -v valgrind >/dev/null 2>&1; then
