@@ -470,29 +470,34 @@ static int plank(rdf *r, double f, double offset, tirenv_profile **out)
      * file does not have. What these miss (a bevel too short to tell from a corner where its
      * heights differ) profile_of says at ROAD_TYPE. */
     const double x0 = f * S, x1 = f * (S + L), top = f * (fabs(H) + fabs(offset));
-    const struct { int key; int bad; const char *want; } checks[] = {
-        {K_LENGTH, !(L > 0), "a positive length"},
-        {K_BEVEL, !(b >= 0), "a length >= 0"},
-        {K_BEVEL, !(2 * b <= L), "at most half of LENGTH (a bevel at each edge)"},
-        {K_BEVEL, !(b <= fabs(H)), "at most |HEIGHT| (a 45-degree bevel cannot rise higher)"},
-        {K_START, !(fabs(x0) <= TIRENV_PROFILE_MAX_COORDINATE),
-         "a position within +-1e9 m, a road's coordinates"},
-        {K_LENGTH, !(fabs(x1) <= TIRENV_PROFILE_MAX_COORDINATE),
-         "a plank ending within +-1e9 m of x = 0, a road's coordinates"},
-        {K_LENGTH, !(x1 - x0 <= TIRENV_PROFILE_MAX_SEGMENT),
-         "at most 1e7 m, a road's longest segment"},
-        {K_OFFSET, !(fabs(f * offset) <= TIRENV_PROFILE_MAX_COORDINATE),
-         "a height within +-1e9 m, a road's coordinates"},
-        {K_HEIGHT, !(top <= TIRENV_PROFILE_MAX_COORDINATE),
-         "a height (with OFFSET) within +-1e9 m, a road's coordinates"},
+    /* A bound, where a check has one, is printed from its constant (bound 0: none). */
+    const double c_max = TIRENV_PROFILE_MAX_COORDINATE, seg_max = TIRENV_PROFILE_MAX_SEGMENT;
+    const struct { int key; int bad; const char *want; double bound; const char *why; } checks[] = {
+        {K_LENGTH, !(L > 0), "a positive length", 0, ""},
+        {K_BEVEL, !(b >= 0), "a length >= 0", 0, ""},
+        {K_BEVEL, !(2 * b <= L), "at most half of LENGTH (a bevel at each edge)", 0, ""},
+        {K_BEVEL, !(b <= fabs(H)), "at most |HEIGHT| (a 45-degree bevel cannot rise higher)", 0,
+         ""},
+        {K_START, !(fabs(x0) <= c_max), "a position within +-", c_max, ", a road's coordinates"},
+        {K_LENGTH, !(fabs(x1) <= c_max), "a plank ending within +-", c_max,
+         " of x = 0, a road's coordinates"},
+        {K_LENGTH, !(x1 - x0 <= seg_max), "at most ", seg_max, ", a road's longest segment"},
+        {K_OFFSET, !(fabs(f * offset) <= c_max), "a height within +-", c_max,
+         ", a road's coordinates"},
+        {K_HEIGHT, !(top <= c_max), "a height (with OFFSET) within +-", c_max,
+         ", a road's coordinates"},
         {K_LENGTH, !(x1 > x0), "a plank long enough that its ends differ at START in double "
-         "precision"},
+         "precision", 0, ""},
     };
     for (size_t k = 0; k < sizeof checks / sizeof checks[0]; k++)
         if (checks[k].bad) {
             r->at.line = r->keys[checks[k].key].line;
-            return fail(r, NULL, key_names[checks[k].key], "%.17g; expected %s",
-                        r->keys[checks[k].key].value, checks[k].want);
+            const double v = r->keys[checks[k].key].value;
+            const char *name = key_names[checks[k].key];
+            if (checks[k].bound > 0)
+                return fail(r, NULL, name, "%.17g; expected %s%g m%s", v, checks[k].want,
+                            checks[k].bound, checks[k].why);
+            return fail(r, NULL, name, "%.17g; expected %s", v, checks[k].want);
         }
     const double s = H < 0 ? -1 : 1, shoulder = s * (fabs(H) - b);
     const double px[] = {S, S, S + b, S + L - b, S + L, S + L};

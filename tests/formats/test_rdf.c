@@ -280,12 +280,12 @@ static const struct {
     {"HEIGHT = 0.1\nLENGTH = 0.5\n", "START", "needs START"},
     /* keys that make no profile, named: these were "vertex 1: x = 1e+300 m" and "vertex 3: x
      * = 1 is shared by three vertices", vertices the file does not have, at no line */
-    {"HEIGHT = 0.1\nSTART = 1e300\nLENGTH = 0.5\n", "START", "within +-1e9 m"},
-    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 1e300\n", "LENGTH", "ending within +-1e9 m"},
-    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 2e7\n", "LENGTH", "at most 1e7 m"},
+    {"HEIGHT = 0.1\nSTART = 1e300\nLENGTH = 0.5\n", "START", "within +-1e+09 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 1e300\n", "LENGTH", "ending within +-1e+09 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 2e7\n", "LENGTH", "at most 1e+07 m"},
     {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 1e-300\n", "LENGTH", "ends differ at START"},
-    {"HEIGHT = 1e300\nSTART = 1\nLENGTH = 0.5\n", "HEIGHT", "within +-1e9 m"},
-    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 0.5\nOFFSET = -1e300\n", "OFFSET", "within +-1e9 m"},
+    {"HEIGHT = 1e300\nSTART = 1\nLENGTH = 0.5\n", "HEIGHT", "within +-1e+09 m"},
+    {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 0.5\nOFFSET = -1e300\n", "OFFSET", "within +-1e+09 m"},
     {"HEIGHT = 0.1\nSTART = 1\nLENGTH = 0.5\nBEVEL_EDGE_LENGTH = 1e-17\n", "ROAD_TYPE",
      "the 'plank' road its keys describe is no profile: vertex 3"},
 };
