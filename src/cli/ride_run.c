@@ -442,8 +442,8 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     if (!(s.plan.dx <= dx_max)) {
         cli_error("ride: --dx: a grid of %g m is coarser than a tenth of the tires' free radius "
                   "(%g m), the least that samples an effective road's features (the tire's "
-                  "patch) twice; expected at most %g m (default 0.005)",
-                  s.plan.dx, 10 * dx_max, dx_max);
+                  "patch) twice; expected at most %g m (default %g)",
+                  s.plan.dx, 10 * dx_max, dx_max, tirenv_ride_span_default().dx);
         code = CLI_EXIT_USAGE;
         goto done;
     }
