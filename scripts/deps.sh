@@ -14,9 +14,10 @@ need="$need valgrind"
 # The Python module (python/) and its tests; the FMU's packaging and checks (fmu/).
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
 need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
+# The FMU's interop test: fmusim (tests/third_party/fmusim) reads FMUs with minizip and
+# validates their descriptions with libxml2.
+need="$need libxml2-dev zlib1g-dev libminizip-dev"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
-# --interop: the libraries fmusim needs (scripts/build-fmusim.sh, the interop test fmu_fmusim).
-[ "${1:-}" = "--interop" ] && need="$need libxml2-dev zlib1g-dev libminizip-dev libsundials-dev"
 # --slurm: Slurm and munge, for tests/sweep/slurm.sh (scripts/slurm/ on a private single-node
 # cluster). Optional: without them that test reports itself skipped, so a user who cannot
 # install them is told how and goes on.

@@ -1,0 +1,6 @@
+#pragma once
+
+#include "FMISimulation.h"
+
+
+FMIStatus FMI1CSSimulate(const FMISimulationSettings* s);

@@ -1,0 +1,6 @@
+#pragma once
+
+#include "FMISimulation.h"
+
+
+FMIStatus FMI1MESimulate(const FMISimulationSettings* s);

@@ -1,0 +1,6 @@
+#pragma once
+
+#include "FMISimulation.h"
+
+
+FMIStatus FMI2CSSimulate(const FMISimulationSettings* s);

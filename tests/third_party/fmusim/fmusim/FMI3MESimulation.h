@@ -1,0 +1,6 @@
+#pragma once
+
+#include "FMISimulation.h"
+
+
+FMIStatus FMI3MESimulate(const FMISimulationSettings* s);

@@ -1,0 +1,3 @@
+#pragma once
+
+int miniunz_main(int argc, const char *argv[]);
