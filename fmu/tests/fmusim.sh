@@ -5,8 +5,8 @@
 # tests/data/placed_bump.crg (track v = 0.9 m, 4000 N, x = 47 + t m, 1301 steps of 5 mm)
 # against 'tirenv envelope' over the same positions; then the same run stopped halfway with its
 # state saved (--final-fmu-state-file) and resumed in a fresh instance from it
-# (--initial-fmu-state-file, which fmusim restores before initialising, with no parameter set again), which
-# must continue the whole run's outputs bit for bit. Labelled interop (ctest -L interop).
+# (--initial-fmu-state-file, which fmusim restores before initialising, with no parameter set
+# again), which must continue the whole run's outputs bit for bit. Labelled interop (ctest -L interop).
 #   sh fmu/tests/fmusim.sh FMUSIM TIRENV FMU DATA_DIR
 set -u
 fmusim=$1 cli=$2 fmu=$3 data=$4
