@@ -6,7 +6,8 @@
 # against 'tirenv envelope' over the same positions; then the same run stopped halfway with its
 # state saved (--final-fmu-state-file) and resumed in a fresh instance from it
 # (--initial-fmu-state-file, which fmusim restores before initialising, with no parameter set
-# again), which must continue the whole run's outputs bit for bit. Labelled interop (ctest -L interop).
+# again), which must continue the whole run's outputs bit for bit.
+# Labelled interop (ctest -L interop).
 #   sh fmu/tests/fmusim.sh FMUSIM TIRENV FMU DATA_DIR
 set -u
 fmusim=$1 cli=$2 fmu=$3 data=$4
