@@ -170,7 +170,8 @@ check "... an older network file there: exit 2 naming training.data.contact_law 
     '[ $rc -eq 2 ] && grep -q "nn-v1.json: training.data.contact_law: .* nof.tir has no springs" err &&
      no_file n1.csv'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point,nn --nn "$data/nn-v1.json" \
-    --extrapolate --enveloping static --out-dir rn --set FRONT_AXLE.TIRE_FILE=nof.tir
+    --extrapolate --enveloping static --out-dir rn --set FRONT_AXLE.TIRE_FILE=nof.tir \
+    --set FRONT_AXLE.TIRE_DAMPING=3000
 check "... and in the ride, an axle's tire without one: exit 2, the same words" \
     '[ $rc -eq 2 ] && grep -q "training.data.contact_law: .* nof.tir has no springs" err &&
      [ ! -e rn ]'
