@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The tractor ride (docs/models.md section 9) and ISO 2631-1 comfort (section 10)."""
 import collections
+import math
 
 import numpy as np
 
@@ -74,8 +75,8 @@ class Vehicle:
         i = _axle(axle)
         ax, given = (self._v.rear, self._given.rear) if i else (self._v.front, self._given.front)
         return {"k_t": ax.k_t, "c_t": ax.c_t,
-                "k_t_from": "tire file" if given.k_t != given.k_t else "vehicle file",
-                "c_t_from": "tire file" if given.c_t != given.c_t else "vehicle file"}
+                "k_t_from": "tire file" if math.isnan(given.k_t) else "vehicle file",
+                "c_t_from": "tire file" if math.isnan(given.c_t) else "vehicle file"}
 
 
 def comfort(a, fs, weighting="Wk"):

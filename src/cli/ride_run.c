@@ -139,9 +139,8 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
     }
     /* The tires' springs and dampers from their tire files where the vehicle gives none. */
     s->given = s->v;
-    if ((status = tirenv_vehicle_tires(&s->v, &s->tire[0], &s->tire[1], &diag)) ||
-        (status = tirenv_vehicle_check(&s->v, &diag))) {
-        const int axle = strncmp(diag.field, "REAR", 4) == 0;
+    if ((status = tirenv_vehicle_tires(&s->v, &s->tire[0], &s->tire[1], &diag))) {
+        const int axle = strncmp(diag.field, "REAR", 4) == 0;  /* the axle's key is named */
         char named[700], msg[1200];
         tire_named_by(r, path, axle, (axle ? s->v.rear : s->v.front).tire_file[0] != '\0',
                       named, sizeof named);
@@ -150,6 +149,9 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
                   s->tire_path[axle], named);
         return cli_exit_code(status);
     }
+    /* Checked again with the tire file's k_t and c_t (the static deflection, the ranges). */
+    if ((status = tirenv_vehicle_check(&s->v, &diag)))
+        return cli_fail(status, &diag);
     return cam_keys(r, s, path);
 }
 
