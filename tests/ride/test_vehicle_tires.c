@@ -178,6 +178,11 @@ static void test_ride_needs_the_tires(void **state)
     assert_int_equal(tirenv_ride_run(&v, &track, &track, &s, out, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "FRONT_AXLE.TIRE_STIFFNESS");
     assert_non_null(strstr(d.message, "tirenv_vehicle_tires"));
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_vehicle u = v;
+    assert_int_equal(tirenv_vehicle_tires(NULL, &t, &t, NULL), TIRENV_EINVAL);
+    assert_int_equal(tirenv_vehicle_tires(&u, NULL, &t, NULL), TIRENV_EINVAL);
+    assert_true(isnan(u.front.k_t));
 }
 
 /* The vehicle file: without TIRE_STIFFNESS and TIRE_DAMPING (tractor.veh) both are NAN, even
@@ -194,6 +199,11 @@ static void test_vehicle_file_keys(void **state)
                 isnan(v.rear.c_t));
     assert_int_equal(tirenv_vehicle_read(TIRENV_DATA_DIR "/../tests/fuzz/corpus/veh/tractor.veh",
                                          &v, &d), 0);
+    assert_bits_equal(v.front.k_t, 342000);
+    assert_bits_equal(v.rear.c_t, 3000);
+    /* A read that fails leaves them as they were. */
+    assert_int_equal(tirenv_vehicle_read(TIRENV_DATA_DIR "/vehicles/no-such.veh", &v, &d),
+                     TIRENV_EIO);
     assert_bits_equal(v.front.k_t, 342000);
     assert_bits_equal(v.rear.c_t, 3000);
 }
