@@ -203,6 +203,8 @@ typedef struct {
 tirenv_vehicle tirenv_vehicle_default(void);
 int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag);
 double tirenv_vehicle_tire_load(const tirenv_vehicle *v, int axle);
+int tirenv_vehicle_tires(tirenv_vehicle *v, const tirenv_tire *front, const tirenv_tire *rear,
+                         tirenv_diag *diag);
 int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag);
 int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *diag);
 

@@ -7,6 +7,7 @@
 #include "tirenv/decls.h"
 #include "tirenv/error.h"
 #include "tirenv/profile.h"
+#include "tirenv/tire.h"
 
 TIRENV_BEGIN_DECLS
 
@@ -72,6 +73,13 @@ double tirenv_cam_vertical_q1(const tirenv_cam_vertical *v);
 double tirenv_cam_vertical_load(const tirenv_cam_vertical *v, double rho);
 double tirenv_cam_vertical_deflection(const tirenv_cam_vertical *v, double load);
 double tirenv_cam_vertical_stiffness(const tirenv_cam_vertical *v, double rho);
+
+/* The tangent stiffness dF_z/drho (N/m) of the tire's own vertical law above (its cam keys,
+ * R0, and PFZ1's factor at its INFLPRES and NOMPRES) at the static deflection under load (N):
+ * VERTICAL_STIFFNESS at FNOMIN with INFLPRES = NOMPRES, VERTICAL_STIFFNESS at every load for
+ * the linear law. The ride's k_t where the vehicle gives no TIRE_STIFFNESS (docs/models.md
+ * section 9.1). NAN where the law carries no such load or has no Q_FZ1 (Q_FZ2 too large). */
+double tirenv_tire_vertical_stiffness(const tirenv_tire *t, double load);
 
 /* MF-Tyre's vertical law above, F_z/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 with s = rho/R0, fitted to
  * n >= 2 flat-ground states: rho[i] (m) a reference's deflection at the load G[i] (N), R0 (m),

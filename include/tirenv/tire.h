@@ -146,6 +146,10 @@ typedef struct {
                             * gives none (the default tire: 0.38). Where several tracks
                             * across the width are evaluated, their default spread
                             * (docs/models.md section 13) */
+    double k_z;            /* [VERTICAL] VERTICAL_DAMPING: the tire's vertical damping, N*s/m,
+                            * MF-Tyre's (Pacejka's k_z): the ride's c_t where the vehicle
+                            * gives no TIRE_DAMPING (docs/models.md section 9.1); NAN when
+                            * a tire file read gives none (the default tire: 3000) */
 } tirenv_tire;
 
 /* The equilibrium defaults: Newton, eps_F = 1e-6 N, eps_z = 1e-10 m, 100 evaluations,

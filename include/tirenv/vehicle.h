@@ -7,6 +7,7 @@
 #include "tirenv/decls.h"
 #include <stddef.h>
 #include "tirenv/error.h"
+#include "tirenv/tire.h"
 
 TIRENV_BEGIN_DECLS
 
@@ -19,8 +20,11 @@ typedef struct {
                             * to that file; the reader puts the file's directory before it);
                             * "" = the built-in default tire */
     double tires;          /* tires on the axle (usually 2; 4 for duals) */
-    double k_t;            /* vertical stiffness of one tire, N/m */
-    double c_t;            /* vertical damping of one tire, N*s/m */
+    double k_t;            /* vertical stiffness of one tire, N/m; NAN: its tire file's, the
+                            * tangent of its vertical law at the static load (tirenv_vehicle_
+                            * tires sets it) */
+    double c_t;            /* vertical damping of one tire, N*s/m; NAN: its tire file's
+                            * VERTICAL_DAMPING (tirenv_vehicle_tires sets it) */
     double k_s;            /* suspension stiffness of the axle, N/m; 0 = rigid axle (the axle
                             * moves with the body and its mass is part of the body's) */
     double c_s;            /* suspension damping of the axle, N*s/m */
@@ -42,12 +46,23 @@ typedef struct {
     double g;              /* gravitational acceleration, m/s^2 */
 } tirenv_vehicle;
 
-/* The documented default: a mid-size 4.5 t tractor, data/vehicles/tractor.veh. */
+/* The documented default: a mid-size 4.5 t tractor, data/vehicles/tractor.veh, whose tires'
+ * k_t and c_t are their tire file's (NAN until tirenv_vehicle_tires). */
 tirenv_vehicle tirenv_vehicle_default(void);
 
+/* Sets each axle's k_t and c_t that are NAN from the axle's tire (front, rear: the tires of
+ * its TIRE_FILE, read by the caller): k_t = tirenv_tire_vertical_stiffness at the axle's
+ * static tire load (tirenv_vehicle_tire_load), c_t = the tire's VERTICAL_DAMPING (k_z). A
+ * value the vehicle gives is kept. TIRENV_EINVAL naming the axle's key ("FRONT_AXLE.
+ * TIRE_DAMPING") where the tire has no VERTICAL_DAMPING either, or its vertical law no
+ * positive stiffness at that load; that axle is then left as it was. The ride refuses a
+ * vehicle with a NAN left (tirenv_ride_run). */
+int tirenv_vehicle_tires(tirenv_vehicle *v, const tirenv_tire *front, const tirenv_tire *rear,
+                         tirenv_diag *diag);
+
 /* Physical sanity: positive masses, inertia, lengths, tire stiffnesses and g; a whole
- * number of tires; non-negative damping and suspension stiffness; no suspension damping on
- * a rigid axle; m_a > 0 on a suspended axle; rear k_s = 0. TIRENV_EINVAL naming the field
+ * number of tires; non-negative damping and suspension stiffness (a NAN k_t or c_t passes:
+ * the tire file's, not yet set); no suspension damping on a rigid axle; m_a > 0 on a suspended axle; rear k_s = 0. TIRENV_EINVAL naming the field
  * otherwise by its file key ("MASS"; "FRONT_AXLE.TIRES" for the axles' keys, as --set
  * takes them). */
 int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag);

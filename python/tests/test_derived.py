@@ -102,9 +102,11 @@ def test_cam_refused_without_its_shape_keys(cli, tmp_path):
     rc, _, err = run_cli(cli, "flat", "--model", "cam", "--tire", path)
     assert rc == 2 and f"tirenv: {path}: ELLIPS_SHIFT: " in err
     tirenv.Model("springs", tire)  # needs none of them
-    vehicle = tirenv.Vehicle(set={"REAR_AXLE.TIRE_FILE": str(path)})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
+        # The file has no VERTICAL_DAMPING: the vehicle gives the rear tires' damper.
+        vehicle = tirenv.Vehicle(set={"REAR_AXLE.TIRE_FILE": str(path),
+                                      "REAR_AXLE.TIRE_DAMPING": 3000})
         with pytest.raises(tirenv.TirenvValueError) as e:
             tirenv.ride(tirenv.Profile.cleat(0.2, 0.05), model="cam", speed="3km/h",
                         vehicle=vehicle)

@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 """The ride and its comfort figures are 'tirenv ride's."""
+import os
+
 import numpy as np
+import pytest
 
 import tirenv
 from conftest import run_cli
@@ -59,6 +62,30 @@ def test_vehicle_and_comfort():
     assert a_w.shape == a.shape
     assert 0.6 < m.rms < 0.8 and m.duration == 20.0
     assert abs(tirenv.total_value([1, 1], [3, 4]) - 5) < 1e-12
+
+
+def test_vehicle_tires_are_the_tire_files(source_dir):
+    """Each axle's k_t is its tire file's vertical law at its static load, c_t its
+    VERTICAL_DAMPING, unless the vehicle gives them (docs/models.md section 9.1): the
+    default tire's stiffer rear (13.3 kN) than front (8.7 kN), the 205/60R15 file's linear
+    law 209651.5 N/m, and a file without VERTICAL_DAMPING refused without TIRE_DAMPING."""
+    d = tirenv.Vehicle()
+    front, rear = d.tire_spring("front"), d.tire_spring("rear")
+    assert abs(front["k_t"] - 311320.5) < 0.1 and abs(rear["k_t"] - 342572.7) < 0.1
+    assert front["c_t"] == rear["c_t"] == 3000.0
+    assert front["k_t_from"] == rear["c_t_from"] == "tire file"
+    v = tirenv.Vehicle(set={"FRONT_AXLE.TIRE_STIFFNESS": 283117.3})
+    assert v.tire_spring("front")["k_t"] == 283117.3
+    assert v.tire_spring("front")["k_t_from"] == "vehicle file"
+    assert v.tire_spring("front")["c_t_from"] == "tire file"
+    car = os.path.join(source_dir, "data", "tires", "205-60R15-mfswift.tir")
+    with pytest.raises(tirenv.TirenvValueError) as e:
+        tirenv.Vehicle(set={"REAR_AXLE.TIRE_FILE": car})
+    assert e.value.field == "REAR_AXLE.TIRE_DAMPING"
+    assert "VERTICAL_DAMPING" in e.value.message
+    v = tirenv.Vehicle(set={"REAR_AXLE.TIRE_FILE": car, "REAR_AXLE.TIRE_DAMPING": 500.0})
+    assert v.tire_spring("rear") == {"k_t": 209651.5, "c_t": 500.0, "k_t_from": "tire file",
+                                     "c_t_from": "vehicle file"}
 
 
 def test_network_ride_equals_cli(cli, network_file, tmp_path):

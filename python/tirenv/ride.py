@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The tractor ride (docs/models.md section 9) and ISO 2631-1 comfort (section 10)."""
 import collections
+import math
 
 import numpy as np
 
@@ -28,7 +29,12 @@ def _axle(axle):
 
 class Vehicle:
     """The pitch-plane tractor: Vehicle() the built-in default (data/vehicles/tractor.veh),
-    Vehicle(path) a vehicle file, set={"MASS": 5200, "FRONT_AXLE.TIRES": 4} overrides."""
+    Vehicle(path) a vehicle file, set={"MASS": 5200, "FRONT_AXLE.TIRES": 4} overrides.
+    Each axle's tires are its TIRE_FILE's, read once here: their spring k_t the tangent of
+    the file's vertical law at the axle's static load and their damper c_t its
+    VERTICAL_DAMPING, unless the vehicle gives TIRE_STIFFNESS or TIRE_DAMPING (the same
+    library call as 'tirenv ride', tirenv_vehicle_tires; docs/models.md section 9.1);
+    tire_spring(axle) says which."""
 
     def __init__(self, path=None, set=None):
         self._v = ffi.new("tirenv_vehicle *")
@@ -40,6 +46,15 @@ class Vehicle:
             value = repr(value) if isinstance(value, float) else value
             check(lib.tirenv_vehicle_set(self._v, f"{key}={value}".encode(), diag), diag)
         check(lib.tirenv_vehicle_check(self._v, diag), diag)
+        # The vehicle as given (NAN: the tire file's), then its tires' springs and dampers.
+        self._given = ffi.new("tirenv_vehicle *", self._v[0])
+        paths = [ffi.string(ax.tire_file).decode() for ax in (self._v.front, self._v.rear)]
+        front = Tire(paths[0]) if paths[0] else Tire()
+        self._tires = (front, front if paths[1] == paths[0] else
+                       Tire(paths[1]) if paths[1] else Tire())
+        check(lib.tirenv_vehicle_tires(self._v, self._tires[0]._t, self._tires[1]._t, diag),
+              diag)
+        check(lib.tirenv_vehicle_check(self._v, diag), diag)
 
     @property
     def wheelbase(self):
@@ -50,10 +65,18 @@ class Vehicle:
         return lib.tirenv_vehicle_tire_load(self._v, _axle(axle))
 
     def tire(self, axle):
-        """The axle's tire: its TIRE_FILE, or the default tire."""
-        ax = self._v.rear if _axle(axle) else self._v.front
-        path = ffi.string(ax.tire_file).decode()
-        return Tire(path) if path else Tire()
+        """The axle's tire: its TIRE_FILE, or the default tire (read when the vehicle was)."""
+        return self._tires[_axle(axle)]
+
+    def tire_spring(self, axle):
+        """One tire of the axle as the ride has it: a dict of k_t (N/m) and c_t (N*s/m), and
+        k_t_from, c_t_from: "tire file" (its vertical law at the static load, its
+        VERTICAL_DAMPING) or "vehicle file" (TIRE_STIFFNESS, TIRE_DAMPING, or set=)."""
+        i = _axle(axle)
+        ax, given = (self._v.rear, self._given.rear) if i else (self._v.front, self._given.front)
+        return {"k_t": ax.k_t, "c_t": ax.c_t,
+                "k_t_from": "tire file" if math.isnan(given.k_t) else "vehicle file",
+                "c_t_from": "tire file" if math.isnan(given.c_t) else "vehicle file"}
 
 
 def comfort(a, fs, weighting="Wk"):

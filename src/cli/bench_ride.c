@@ -58,7 +58,9 @@ int cli_bench_ride(const tirenv_tire *tire, const tirenv_profile *road, const ti
                   {tirenv_model_nn, 1, 0},      {tirenv_model_springs, 0, 0},
                   {tirenv_model_cam, 1, 1},     {tirenv_model_nn, 1, 1},
                   {tirenv_model_springs, 0, 1}};
-    const tirenv_vehicle v = tirenv_vehicle_default();
+    tirenv_vehicle v = tirenv_vehicle_default();
+    if (tirenv_vehicle_tires(&v, tire, tire, diag))  /* its springs and dampers this tire's */
+        return TIRENV_EINVAL;
     tirenv_ride_settings s = tirenv_ride_default();
     const double l = v.a + v.b, margin = 1.0;  /* m: the interpolation never runs out */
     s.speed = ride_speed;

@@ -101,9 +101,12 @@ void ride_cli_speed_name(double V, char *buf, size_t n);
 int ride_cli_run(const cli_options *o, const ride_options *r);
 
 /* Writes comfort.csv, comfort.md and the seat and spectrum plots into r->out_dir, for the
- * runs res[j*n_cols + c] (speed j, column c of r->cols) of a vehicle of this wheelbase (m);
- * returns an exit code after printing any error. */
+ * runs res[j*n_cols + c] (speed j, column c of r->cols) of the vehicle v (its k_t and c_t
+ * set), given as the vehicle file and --set gave it (NAN: the tire file's), its axles' tire
+ * files tire_path and static tire loads load (N); returns an exit code after printing any
+ * error. */
 int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],
-                    double wheelbase);
+                    const tirenv_vehicle *v, const tirenv_vehicle *given,
+                    const char tire_path[2][1024], const double load[2]);
 
 #endif

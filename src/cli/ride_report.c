@@ -73,8 +73,32 @@ static void write_differences(FILE *fp, const ride_options *r, const ride_result
         }
 }
 
+/* Each axle's tires as the runs had them, and where k_t and c_t came from: one tire file is
+ * one tire, its enveloping and its spring (docs/models.md section 9.1). */
+static void write_tires(FILE *fp, const tirenv_vehicle *v, const tirenv_vehicle *given,
+                        const char tire_path[2][1024], const double load[2])
+{
+    fputs("\n## The vehicle's tires\n\n"
+          "Each tire a spring k_t and a damper c_t (docs/models.md section 9.1): the tire "
+          "file's\nown (the tangent of its vertical law at the static load; its "
+          "VERTICAL_DAMPING) unless\nthe vehicle file gives TIRE_STIFFNESS or TIRE_DAMPING.\n\n"
+          "| axle | tire file | tires | static load N | k_t N/m | k_t from | c_t N*s/m | "
+          "c_t from |\n|---|---|---:|---:|---:|---|---:|---|\n", fp);
+    for (int axle = 0; axle < 2; ++axle) {
+        const tirenv_axle *ax = axle ? &v->rear : &v->front;
+        const tirenv_axle *g = axle ? &given->rear : &given->front;
+        const char *slash = strrchr(tire_path[axle], '/');  /* the file's name: no local path */
+        fprintf(fp, "| %s | %s | %g | %.0f | %.0f | %s%.0f%s | %.0f | %s |\n",
+                axle ? "rear" : "front", slash ? slash + 1 : tire_path[axle], ax->tires, load[axle], ax->k_t,
+                isnan(g->k_t) ? "tire file's vertical law at " : "vehicle file (",
+                isnan(g->k_t) ? load[axle] : g->k_t, isnan(g->k_t) ? " N" : " N/m)", ax->c_t,
+                isnan(g->c_t) ? "tire file's VERTICAL_DAMPING" : "vehicle file's TIRE_DAMPING");
+    }
+}
+
 static int write_md(const char *path, const ride_options *r, const ride_result res[],
-                    tirenv_diag *diag)
+                    const tirenv_vehicle *v, const tirenv_vehicle *given,
+                    const char tire_path[2][1024], const double load[2], tirenv_diag *diag)
 {
     tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
@@ -99,6 +123,7 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
                 q->duration / fmax(q->seconds, 1e-9));
     }
     write_differences(fp, r, res);
+    write_tires(fp, v, given, tire_path, load);
     return tirenv_outfile_commit(f, diag);
 }
 
@@ -318,8 +343,10 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
 }
 
 int ride_cli_report(const ride_options *r, const ride_result res[], const ride_series series[],
-                    double wheelbase)
+                    const tirenv_vehicle *v, const tirenv_vehicle *given,
+                    const char tire_path[2][1024], const double load[2])
 {
+    const double wheelbase = v->a + v->b;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     char path[1024];
@@ -327,7 +354,7 @@ int ride_cli_report(const ride_options *r, const ride_result res[], const ride_s
     int status = write_csv(path, r, res, &diag);
     if (!status) {
         snprintf(path, sizeof path, "%s/comfort.md", r->out_dir);
-        status = write_md(path, r, res, &diag);
+        status = write_md(path, r, res, v, given, tire_path, load, &diag);
     }
     if (!status)
         status = seat_plot(r->out_dir, r, series, wheelbase, &diag);

@@ -27,7 +27,8 @@ typedef struct {
 } ride_inputs;
 
 typedef struct {
-    tirenv_vehicle v;
+    tirenv_vehicle v;      /* with each axle's k_t and c_t set (tirenv_vehicle_tires) */
+    tirenv_vehicle given;  /* as the vehicle file and --set give it: NAN k_t, c_t the tire's */
     tirenv_tire tire[2];   /* front, rear */
     double load[2];        /* static load of one tire, N */
     tirenv_tir_origin origin[2];  /* what tirenv_tir_derive made of each tire file */
@@ -136,6 +137,21 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
         snprintf(s->tire_path[axle], sizeof s->tire_path[axle], "%s", tire_path);
         s->load[axle] = tirenv_vehicle_tire_load(&s->v, axle);
     }
+    /* The tires' springs and dampers from their tire files where the vehicle gives none. */
+    s->given = s->v;
+    if ((status = tirenv_vehicle_tires(&s->v, &s->tire[0], &s->tire[1], &diag))) {
+        const int axle = strncmp(diag.field, "REAR", 4) == 0;  /* the axle's key is named */
+        char named[700], msg[1200];
+        tire_named_by(r, path, axle, (axle ? s->v.rear : s->v.front).tire_file[0] != '\0',
+                      named, sizeof named);
+        cli_error("%s (the %s axle's tire file %s, named by %s)",
+                  tirenv_diag_format(&diag, msg, sizeof msg), axle ? "rear" : "front",
+                  s->tire_path[axle], named);
+        return cli_exit_code(status);
+    }
+    /* Checked again with the tire file's k_t and c_t (the static deflection, the ranges). */
+    if ((status = tirenv_vehicle_check(&s->v, &diag)))
+        return cli_fail(status, &diag);
     return cam_keys(r, s, path);
 }
 
@@ -486,7 +502,9 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     if (code)
         goto done;
     print_table(stdout, res, n_runs);
-    if (r->out_dir && !(code = ride_cli_report(r, res, series, s.v.a + s.v.b))) {
+    if (r->out_dir && !(code = ride_cli_report(r, res, series, &s.v, &s.given,
+                                                (const char(*)[1024])s.tire_path,
+                                                s.load))) {
         const int committed = tirenv_outdir_commit(staged, &diag);
         staged = NULL;
         if (committed)

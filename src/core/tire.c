@@ -36,6 +36,7 @@ tirenv_tire tirenv_tire_default(void)
             .dphi = M_PI / 360.0,
         },
         .width = 0.38,  /* 14.9 in section width, the 380 of 380/85R28 */
+        .k_z = 3000,    /* a heave damping ratio of 0.08 on the default tractor (default.tir) */
         /* A radial 14.9R28 at 1.2 bar (data/tires/default.tir gives each value's reasoning):
          * 40 mm lugs of rubber, stiff against the foundation (sidewalls + air), which takes
          * the deflection; T = p*b*R = 120 kPa * 0.34 m * 0.64 m. */
@@ -169,6 +170,9 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
                             diag)) ||
         (status = plausible("SECANT_STEP", eq->secant_dz, 0, 0.1, "m", diag)) ||
         (status = plausible("VERTICAL_STIFFNESS", c->c_z, 1e4, 1e8, "N/m", diag)) ||
+        (status = isnan(tire->k_z) ? TIRENV_OK
+                                   : plausible("VERTICAL_DAMPING", tire->k_z, 0, 1e6, "N*s/m",
+                                               diag)) ||
         (status = plausible("Q_RA1", c->q_ra1, 0, 10, "(dimensionless)", diag)) ||
         (status = plausible("Q_RA2", c->q_ra2, -10, 10, "(dimensionless)", diag)) ||
         (status = plausible("ELLIPS_SHIFT", c->shift, 0, 5, "(dimensionless)", diag)) ||
@@ -193,6 +197,10 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(tire->width >= 0 && isfinite(tire->width)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "WIDTH",
                             "must be a length >= 0 in m, got %g", tire->width);
+    /* NAN is "none given" (the ride then needs the vehicle's TIRE_DAMPING). */
+    if (!isnan(tire->k_z) && !(tire->k_z >= 0 && isfinite(tire->k_z)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "VERTICAL_DAMPING",
+                            "must be zero or positive (N*s/m), got %g", tire->k_z);
     if (!(s->c_r > 0 && isfinite(s->c_r)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "RADIAL_STIFFNESS",
                             "must be positive (N/m per rad), got %g", s->c_r);

@@ -45,6 +45,8 @@ typedef struct {
     int omit_zero;           /* REAL: written only when not 0, for a key whose 0 means "none"
                               * (MF-Tyre's Q_FZ1, PFZ1), so that files without it stay as
                               * they were */
+    int omit_nan;            /* REAL: written only when not NAN, for a key whose absence
+                              * means "none given" (VERTICAL_DAMPING, TIRE_STIFFNESS) */
 } tirenv_propfile__key;
 
 /* Table entries. The macro parameters avoid the member names: a parameter called key would

@@ -7,6 +7,7 @@
 #include "tirenv/outfile.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -149,10 +150,10 @@ static void pf_print(const pf_schema *s, FILE *fp, const void *obj, const char *
             if (strcmp(e->section, name) != 0)
                 continue;
             const unsigned char *field = (const unsigned char *)obj + e->offset;
-            if (e->omit_zero && e->kind == TIRENV_PROPFILE_REAL) {
+            if ((e->omit_zero || e->omit_nan) && e->kind == TIRENV_PROPFILE_REAL) {
                 double v;
                 memcpy(&v, field, sizeof v);
-                if (v == 0)
+                if ((e->omit_zero && v == 0) || (e->omit_nan && isnan(v)))
                     continue;
             }
             char value[40];

@@ -7,6 +7,7 @@
 #include "tirenv/tir.h"
 #include "tirenv/tirenv.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -57,6 +58,9 @@ static const tirenv_propfile__key tir_keys[] = {
     {.section = "VERTICAL", .key = "Q_FZ1", .kind = TIRENV_PROPFILE_REAL,
      .offset = offsetof(tirenv_tire, cam.q_fz1), .omit_zero = 1,
      .comment = "cam: the law's linear term; 0 or absent: from VERTICAL_STIFFNESS"},
+    {.section = "VERTICAL", .key = "VERTICAL_DAMPING", .kind = TIRENV_PROPFILE_REAL,
+     .offset = offsetof(tirenv_tire, k_z), .omit_nan = 1, .dim = {-1, 1, 0},
+     .comment = "k_z: vertical damping, N*s/m: the ride's c_t without the vehicle's"},
     {.section = "VERTICAL", .key = "PFZ1", .kind = TIRENV_PROPFILE_REAL,
      .offset = offsetof(tirenv_tire, cam.pfz1), .omit_zero = 1,
      .comment = "cam: load times 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES"},
@@ -191,7 +195,8 @@ static const tirenv_propfile__schema tir_schema = {
 };
 
 /* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
- * file must not inherit the tractor's 0.38 m. Likewise FNOMIN, Q_FZ2, Q_FZ1 and PFZ1: a file
+ * file must not inherit the tractor's 0.38 m. A file without VERTICAL_DAMPING leaves it NAN
+ * (none), not the tractor's 3000 N*s/m: the ride then asks the vehicle for TIRE_DAMPING. Likewise FNOMIN, Q_FZ2, Q_FZ1 and PFZ1: a file
  * without them has a linear vertical law from its VERTICAL_STIFFNESS and no pressure term,
  * not the law of the tire it was read over; and NOMPRES, which only PFZ1's factor reads: a
  * file with PFZ1 and no NOMPRES is refused (tire check), not given the tractor's 1.2 bar. */
@@ -205,8 +210,9 @@ int tirenv_tir__read_kept(const char *path, tirenv_tire *tire, char **text, size
 {
     const double width = tire->width;
     const tirenv_cam_params cam = tire->cam;
-    const double p_nom = tire->ring.p_nom;
+    const double p_nom = tire->ring.p_nom, k_z = tire->k_z;
     tire->width = 0;
+    tire->k_z = NAN;
     tire->ring.p_nom = 0;
     tire->cam.fnomin = 0;
     tire->cam.q_fz2 = 0;
@@ -216,6 +222,7 @@ int tirenv_tir__read_kept(const char *path, tirenv_tire *tire, char **text, size
     if (status) {
         tire->width = width;
         tire->ring.p_nom = p_nom;
+        tire->k_z = k_z;
         tire->cam = cam; /* a failed read changed only the fields zeroed above */
     }
     return status;

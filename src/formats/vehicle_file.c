@@ -6,11 +6,18 @@
 #include "formats/propfile.h"
 #include "tirenv/version.h"  /* TIRENV_VERSION, written into the file */
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 
 #define VEH_REAL(sec, name, member, text)                                                      \
     TIRENV_PROPFILE_KEY(tirenv_vehicle, sec, name, TIRENV_PROPFILE_REAL, member, text)
+
+/* A tire key the file may leave out: then NAN, the tire file's (tirenv_vehicle_tires), and
+ * not written back. */
+#define VEH_TIRE(sec, name, member, text)                                                      \
+    {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
+     .offset = offsetof(tirenv_vehicle, member), .comment = (text), .omit_nan = 1}
 
 /* The same seven keys in each axle's section. */
 #define VEH_AXLE(sec, axle)                                                                    \
@@ -19,8 +26,10 @@
      .size = sizeof(((tirenv_vehicle *)NULL)->axle.tire_file),                                 \
      .comment = ".tir file of the tires, relative to this file; '' = built-in default"},       \
     VEH_REAL(sec, "TIRES", axle.tires, "tires on the axle (4 with duals)"),                    \
-    VEH_REAL(sec, "TIRE_STIFFNESS", axle.k_t, "k_t: vertical stiffness of one tire, N/m"),     \
-    VEH_REAL(sec, "TIRE_DAMPING", axle.c_t, "c_t: vertical damping of one tire, N*s/m"),       \
+    VEH_TIRE(sec, "TIRE_STIFFNESS", axle.k_t,                                                  \
+             "k_t: vertical stiffness of one tire, N/m; absent: the tire file's at its load"), \
+    VEH_TIRE(sec, "TIRE_DAMPING", axle.c_t,                                                    \
+             "c_t: vertical damping of one tire, N*s/m; absent: its VERTICAL_DAMPING"),        \
     VEH_REAL(sec, "SUSPENSION_STIFFNESS", axle.k_s, "k_s: suspension, N/m; 0 = rigid axle"),   \
     VEH_REAL(sec, "SUSPENSION_DAMPING", axle.c_s, "c_s: suspension damping, N*s/m"),           \
     VEH_REAL(sec, "AXLE_MASS", axle.m_a, "m_a: unsprung axle mass if suspended, kg")
@@ -70,9 +79,20 @@ static const tirenv_propfile__schema veh_schema = {
     .preamble = veh_preamble,
 };
 
+/* A file without TIRE_STIFFNESS or TIRE_DAMPING leaves them NAN (the tire file's), not the
+ * values of the vehicle it was read over: another TIRE_FILE must not keep the old tire's. */
 int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag)
 {
-    return tirenv_propfile__read(&veh_schema, path, v, diag);
+    if (!v)
+        return tirenv_propfile__read(&veh_schema, path, v, diag);
+    const tirenv_axle front = v->front, rear = v->rear;
+    v->front.k_t = v->front.c_t = v->rear.k_t = v->rear.c_t = NAN;
+    const int status = tirenv_propfile__read(&veh_schema, path, v, diag);
+    if (status) {
+        v->front = front;
+        v->rear = rear;
+    }
+    return status;
 }
 
 int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *diag)

@@ -227,6 +227,13 @@ static double cam_stiffness_at(const tirenv_tire *t, double rho)
     return tirenv_cam_vertical_stiffness(&v, rho);
 }
 
+/* The law's own stiffness at its own deflection under the load: one law for the cam's static
+ * deflection and the ride's tire spring, so that one tire file is one tire for both. */
+double tirenv_tire_vertical_stiffness(const tirenv_tire *t, double load)
+{
+    return cam_stiffness_at(t, cam_deflection_at(t, load));
+}
+
 /* The cam's valid range (docs/models.md section 7.3), as the largest relative deflection
  * y_max = rho/R0 and what ends it there, the first of:
  *   - the patch reaching the chord of the free circle at that deflection: a patch longer than

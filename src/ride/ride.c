@@ -101,6 +101,17 @@ static int check_settings(const tirenv_vehicle *v, const tirenv_ride_settings *s
     int status = tirenv_vehicle_check(v, diag);
     if (status)
         return status;
+    for (int axle = 0; axle < 2; ++axle) {
+        const tirenv_axle *ax = axle ? &v->rear : &v->front;
+        if (isnan(ax->k_t) || isnan(ax->c_t))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0,
+                                axle ? (isnan(ax->k_t) ? "REAR_AXLE.TIRE_STIFFNESS"
+                                                       : "REAR_AXLE.TIRE_DAMPING")
+                                     : (isnan(ax->k_t) ? "FRONT_AXLE.TIRE_STIFFNESS"
+                                                       : "FRONT_AXLE.TIRE_DAMPING"),
+                                "is the tire file's and not yet set: expected the vehicle "
+                                "through tirenv_vehicle_tires with its axles' tires first");
+    }
     if (!(s->speed > 0) || !isfinite(s->speed))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "speed", "expected a speed > 0 m/s, "
                             "got %g", s->speed);

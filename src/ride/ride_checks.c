@@ -96,6 +96,12 @@ int tirenv_ride__static_check(const tirenv_vehicle *v, tirenv_diag *diag)
         const tirenv_axle *ax = axle ? &v->rear : &v->front;
         const double F0 = tirenv_vehicle_tire_load(v, axle);             /* N */
         const double d0 = F0 / ax->k_t;                                    /* m */
+        if (isnan(ax->k_t) && isfinite(F0))
+            continue;  /* the tire file's, checked once tirenv_vehicle_tires has set it */
+        if (isnan(ax->k_t))
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "MASS",
+                                "the %s tires' static load (from MASS) is %g N: expected a "
+                                "finite load", axle ? "rear" : "front", F0);
         /* A load that overflows is MASS's (1e308 kg), not the tire stiffness's. */
         const char *field = !isfinite(F0) ? "MASS"
                             : axle        ? "REAR_AXLE.TIRE_STIFFNESS"

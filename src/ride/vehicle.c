@@ -3,15 +3,17 @@
  * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/vehicle.h"
 #include "ride/ride_impl.h"
+#include "tirenv/cam.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-/* The values of data/vehicles/tractor.veh, where each is explained; a test keeps them equal. */
+/* The values of data/vehicles/tractor.veh, where each is explained; a test keeps them equal.
+ * Its tires are springs and dampers of their own tire file (tirenv_vehicle_tires). */
 tirenv_vehicle tirenv_vehicle_default(void)
 {
-    const tirenv_axle axle = {.tire_file = "", .tires = 2, .k_t = 296000, .c_t = 3000,
+    const tirenv_axle axle = {.tire_file = "", .tires = 2, .k_t = NAN, .c_t = NAN,
                               .k_s = 0, .c_s = 0, .m_a = 400};
     return (tirenv_vehicle){.m = 4500, .I_y = 5000, .a = 1.45, .b = 0.95, .seat_x = -0.75,
                             .seat_h = 1.2, .front = axle, .rear = axle, .g = 9.81};
@@ -67,8 +69,11 @@ static int vehicle_check_axle(const tirenv_axle *ax, const char *section, int re
     if (!(ax->tires >= 1 && ax->tires == floor(ax->tires) && isfinite(ax->tires)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, FIELD("TIRES"),
                             "must be a whole number of tires, at least 1, got %g", ax->tires);
-    if ((status = vehicle_require(FIELD("TIRE_STIFFNESS"), ax->k_t, 0, "N/m", diag)) ||
-        (status = vehicle_require(FIELD("TIRE_DAMPING"), ax->c_t, 1, "N*s/m", diag)))
+    /* NAN: the tire file's, which tirenv_vehicle_tires sets. */
+    if ((!isnan(ax->k_t) &&
+         (status = vehicle_require(FIELD("TIRE_STIFFNESS"), ax->k_t, 0, "N/m", diag))) ||
+        (!isnan(ax->c_t) &&
+         (status = vehicle_require(FIELD("TIRE_DAMPING"), ax->c_t, 1, "N*s/m", diag))))
         return status;
     /* The ride model has no rear suspension: a value here would be silently ignored. */
     if (rear && ax->k_s != 0)
@@ -95,9 +100,10 @@ static int axle_plausible(const tirenv_axle *ax, const char *section, tirenv_dia
 #define FIELD(key) axle_field(f, section, key)
     int status;
     if ((status = vehicle_plausible(FIELD("TIRES"), ax->tires, 1, 16, "tires", diag)) ||
-        (status = vehicle_plausible(FIELD("TIRE_STIFFNESS"), ax->k_t, 1e4, 1e10, "N/m",
-                                    diag)) ||
-        (status = vehicle_plausible(FIELD("TIRE_DAMPING"), ax->c_t, 0, 1e6, "N*s/m", diag)) ||
+        (!isnan(ax->k_t) && (status = vehicle_plausible(FIELD("TIRE_STIFFNESS"), ax->k_t, 1e4,
+                                                        1e10, "N/m", diag))) ||
+        (!isnan(ax->c_t) &&
+         (status = vehicle_plausible(FIELD("TIRE_DAMPING"), ax->c_t, 0, 1e6, "N*s/m", diag))) ||
         (status = vehicle_plausible(FIELD("SUSPENSION_STIFFNESS"), ax->k_s, 0, 1e9, "N/m",
                                     diag)) ||
         (status = vehicle_plausible(FIELD("SUSPENSION_DAMPING"), ax->c_s, 0, 1e7, "N*s/m",
@@ -159,4 +165,44 @@ double tirenv_vehicle_tire_load(const tirenv_vehicle *v, int axle)
     if (axle == 1)
         return v->m * v->g * v->a / l / v->rear.tires;
     return NAN;
+}
+
+/* One axle's k_t and c_t from its tire where the vehicle gives none (NAN). The stiffness is
+ * the tangent of the tire's vertical law at the static load, the spring the ride linearises
+ * about it (docs/models.md section 9.1); the damping MF-Tyre's VERTICAL_DAMPING. */
+static int axle_tires(tirenv_axle *ax, const char *section, const tirenv_tire *t, double G0,
+                      tirenv_diag *diag)
+{
+    char f[64];
+    const double k_t = isnan(ax->k_t) ? tirenv_tire_vertical_stiffness(t, G0) : ax->k_t;
+    const double c_t = isnan(ax->c_t) ? t->k_z : ax->c_t;
+    if (isnan(c_t))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle_field(f, section, "TIRE_DAMPING"),
+                            "not given, and its tire file has no [VERTICAL] VERTICAL_DAMPING "
+                            "either: the %s axle's tires need a vertical damping (N*s/m); "
+                            "expected TIRE_DAMPING in [%s] or VERTICAL_DAMPING in the tire file",
+                            section[0] == 'R' ? "rear" : "front", section);
+    if (!(k_t > 0 && isfinite(k_t)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0,
+                            axle_field(f, section, "TIRE_STIFFNESS"),
+                            "not given, and its tire file's vertical law (VERTICAL_STIFFNESS "
+                            "%g N/m, FNOMIN %g N, Q_FZ2 %g, docs/models.md section 7.3) has no "
+                            "positive stiffness at the static tire load %g N (got %g N/m); "
+                            "expected TIRE_STIFFNESS in [%s], or a law that carries the load",
+                            t->cam.c_z, t->cam.fnomin, t->cam.q_fz2, G0, k_t, section);
+    ax->k_t = k_t;
+    ax->c_t = c_t;
+    return TIRENV_OK;
+}
+
+int tirenv_vehicle_tires(tirenv_vehicle *v, const tirenv_tire *front, const tirenv_tire *rear,
+                         tirenv_diag *diag)
+{
+    if (!v || !front || !rear)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no vehicle or tire (NULL)");
+    int status = axle_tires(&v->front, "FRONT_AXLE", front, tirenv_vehicle_tire_load(v, 0),
+                            diag);
+    if (!status)
+        status = axle_tires(&v->rear, "REAR_AXLE", rear, tirenv_vehicle_tire_load(v, 1), diag);
+    return status;
 }

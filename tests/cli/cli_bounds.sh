@@ -70,7 +70,7 @@ ln -s "$data/../../data/tires" tires 2>/dev/null
 mkdir -p veh && mv heavy.veh veh/
 run "$bin" ride --vehicle veh/heavy.veh --cleat 0.1,0.05 --speed 5 --model point
 check "ride: a .veh's MASS = 1e308: exit 2 at MASS's line, MASS named" \
-    '[ $rc -eq 2 ] && grep -q "veh/heavy.veh:36: MASS: " err'
+    '[ $rc -eq 2 ] && grep -q "veh/heavy.veh:40: MASS: " err'
 
 # A rig log's reading beyond 1e9 (s or m), at its line, column and field: one sample of 1e308
 # was taken as a late time (exit 0), or made an error at another line and field, or overflowed

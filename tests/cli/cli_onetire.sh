@@ -170,7 +170,8 @@ check "... an older network file there: exit 2 naming training.data.contact_law 
     '[ $rc -eq 2 ] && grep -q "nn-v1.json: training.data.contact_law: .* nof.tir has no springs" err &&
      no_file n1.csv'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point,nn --nn "$data/nn-v1.json" \
-    --extrapolate --enveloping static --out-dir rn --set FRONT_AXLE.TIRE_FILE=nof.tir
+    --extrapolate --enveloping static --out-dir rn --set FRONT_AXLE.TIRE_FILE=nof.tir \
+    --set FRONT_AXLE.TIRE_DAMPING=3000
 check "... and in the ride, an axle's tire without one: exit 2, the same words" \
     '[ $rc -eq 2 ] && grep -q "training.data.contact_law: .* nof.tir has no springs" err &&
      [ ! -e rn ]'
@@ -204,6 +205,26 @@ rms=$(paste -d, rd/series-ring-10kmh.csv rd/series-nn-10kmh.csv | awk -F, '
     END { if (n) printf "%.6f", 1e3 * sqrt(s / n) }')
 check "ride: the network's rear input within its validation RMS of the ring's ($rms vs $val_rms mm)" \
     '[ $rc -eq 0 ] && [ -n "$rms" ] && awk -v a="$rms" -v b="$val_rms" "BEGIN { exit !(a < b) }"'
+
+# The ride's tire springs and dampers (docs/models.md 9.1): the tire file's own where the
+# vehicle gives none. The default tractor: each axle the default tire's vertical law at its own
+# static load; the user's MF-Tyre file on the rear axle: that file's linear law, 209651.5 N/m
+# at any load, and no VERTICAL_DAMPING in it: refused without the vehicle's TIRE_DAMPING.
+car="$repo/data/tires/205-60R15-mfswift.tir"
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rt
+check "ride: comfort.md gives each axle's k_t and c_t from the tire file (311320, 342573 N/m)" \
+    '[ $rc -eq 0 ] && grep -q "^| front | default.tir | 2 | 8737 | 311321 | tire file.s vertical law at 8737 N | 3000 | tire file.s VERTICAL_DAMPING |" rt/comfort.md &&
+     grep -q "^| rear | default.tir | 2 | 13335 | 342573 | tire file.s vertical law at 13335 N |" rt/comfort.md'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rc \
+    --set REAR_AXLE.TIRE_FILE="$car"
+check "ride: a tire file without VERTICAL_DAMPING and no TIRE_DAMPING: exit 2 naming the axle, both keys, the file" \
+    '[ $rc -eq 2 ] && grep -q "REAR_AXLE.TIRE_DAMPING: not given, and its tire file has no \[VERTICAL\] VERTICAL_DAMPING" err &&
+     grep -q "the rear axle.s tire file .*205-60R15-mfswift.tir, named by --set REAR_AXLE.TIRE_FILE" err &&
+     [ ! -e rc ]'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rc \
+    --set REAR_AXLE.TIRE_FILE="$car" --set REAR_AXLE.TIRE_DAMPING=500
+check "... with the vehicle's TIRE_DAMPING: exit 0, k_t the file's 209652 N/m, c_t the vehicle's" \
+    '[ $rc -eq 0 ] && grep -q "^| rear | 205-60R15-mfswift.tir | 2 | 13335 | 209652 | tire file.s vertical law at 13335 N | 500 | vehicle file.s TIRE_DAMPING |" rc/comfort.md'
 
 # The sidewall's keys (docs/models.md 4.9): refused when negative, or a preload without a
 # stiffness, naming the key (test_springs_sidewall reads them in a file's units).

@@ -52,7 +52,7 @@ check "a profile cut at a line end is a shorter profile" '[ $rc -eq 0 ] && [ -s 
 
 # .tir and .veh: the last line a key's, cut inside its comment.
 cut_file "$root/data/tires/default.tir" 2 t.tir
-refused ".tir cut inside its last line" t.tir 193 "$ends" - \
+refused ".tir cut inside its last line" t.tir 199 "$ends" - \
     "$bin" flat --csv --load 20000 --tire t.tir
 mkdir vehicles
 cp "$root/data/vehicles/tractor.veh" vehicles/v.veh
@@ -60,7 +60,7 @@ ln -s "$root/data/tires" tires
 run "$bin" ride --vehicle vehicles/v.veh --cleat 0.1,0.05 --speed 5 --model point
 check "a whole .veh reads" '[ $rc -eq 0 ]'
 cut_file "$root/data/vehicles/tractor.veh" 2 vehicles/v.veh
-refused ".veh cut inside its last line" vehicles/v.veh 75 "$ends" - \
+refused ".veh cut inside its last line" vehicles/v.veh 78 "$ends" - \
     "$bin" ride --vehicle vehicles/v.veh --cleat 0.1,0.05 --speed 5 --model point
 
 # RDF and OpenCRG text (LRFI, LDFI) roads.

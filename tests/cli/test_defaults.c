@@ -232,6 +232,8 @@ static void test_cli_ride_is_the_library_span(void **state)
     char veh[600];
     snprintf(veh, sizeof veh, "%s/vehicles/tractor.veh", TIRENV_DATA_DIR);
     assert_int_equal(tirenv_vehicle_read(veh, &v, &diag), TIRENV_OK);
+    const tirenv_tire tire = tirenv_tire_default();  /* data/tires/default.tir's values */
+    assert_int_equal(tirenv_vehicle_tires(&v, &tire, &tire, &diag), TIRENV_OK);
     tirenv_profile *p = tirenv_profile_cleat(0.30, 0.05);
     double first, last, x0;
     tirenv_profile_extent(p, &first, &last);

@@ -130,7 +130,9 @@ static int failing_input(void *ctx, double x, double load, double *w, double *dw
 static void test_ride_input_fails(void **state)
 {
     (void)state;
-    const tirenv_vehicle v = tirenv_vehicle_default();
+    tirenv_vehicle v = tirenv_vehicle_default();
+    const tirenv_tire tire = tirenv_tire_default();
+    assert_int_equal(tirenv_vehicle_tires(&v, &tire, &tire, NULL), TIRENV_OK);
     tirenv_ride_settings s = tirenv_ride_default();
     s.duration = 1.0;
     const size_t n = tirenv_ride_n_samples(&s);

@@ -33,6 +33,7 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->springs.phi, b->springs.phi);
     assert_bits_equal(a->springs.dphi, b->springs.dphi);
     assert_bits_equal(a->width, b->width);
+    assert_bits_equal(a->k_z, b->k_z);
     assert_bits_equal(a->ring.t_r, b->ring.t_r);
     assert_bits_equal(a->ring.EI, b->ring.EI);
     assert_bits_equal(a->ring.T, b->ring.T);
@@ -101,8 +102,8 @@ static void test_default_file_matches_builtin(void **state)
 
 /* An MF-Tyre file: extra sections, a [SHAPE] table, [DIMENSION], [VERTICAL] and
  * [CONTACT_PATCH] keys of other models, 'Newton' capitalised. Only UNLOADED_RADIUS,
- * VERTICAL_STIFFNESS, FNOMIN, the cam keys present (Q_RA1, Q_RA2, ELLIPS_SHIFT) and
- * [OPERATING_CONDITIONS] INFLPRES and NOMPRES (the ring's air) are taken. */
+ * VERTICAL_STIFFNESS, FNOMIN, VERTICAL_DAMPING, the cam keys present (Q_RA1, Q_RA2,
+ * ELLIPS_SHIFT) and [OPERATING_CONDITIONS] INFLPRES and NOMPRES (the ring's air) are taken. */
 static void test_mftyre_excerpt_loads(void **state)
 {
     (void)state;
@@ -117,6 +118,7 @@ static void test_mftyre_excerpt_loads(void **state)
     expected.cam.c_z = 520000;
     expected.cam.fnomin = 24000;
     expected.cam.q_fz2 = 0;  /* none in the file: a linear law, not the default tire's */
+    expected.k_z = 2500;     /* its VERTICAL_DAMPING, the ride's c_t */
     expected.cam.q_ra1 = 0.6715;
     expected.cam.q_ra2 = 0.7308;
     expected.cam.shift = 0.8328;
@@ -767,6 +769,43 @@ static void test_own_q_fz1_and_pfz1(void **state)
     assert_true(over.ring.p_nom == p_nom);
 }
 
+/* [VERTICAL] VERTICAL_DAMPING, MF-Tyre's tire damping (the ride's c_t): read in the file's
+ * units; a file without it has none (NAN), not the damping of the tire it is read over, and is
+ * written without it; negative refused. */
+static void test_vertical_damping(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    char path[600], text[8192];
+    tirenv_diag d;
+    tirenv_test_write_text(tirenv_test_path(fx, "k.tir", path),
+                           "[UNITS]\nLENGTH = 'mm'\n[VERTICAL]\nVERTICAL_STIFFNESS = 371\n"
+                           "VERTICAL_DAMPING = 2.3719\n");
+    tirenv_tire t = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
+    assert_near(t.k_z, 2371.9, 0, 1e-15);  /* N*s/mm to N*s/m */
+    tirenv_test_path(fx, "back.tir", path);
+    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_OK);
+    tirenv_tire back = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
+    assert_tire_identical(&back, &t);
+
+    tirenv_test_write_text(tirenv_test_path(fx, "none.tir", path),
+                           "[VERTICAL]\nVERTICAL_STIFFNESS = 2e5\n");
+    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
+    assert_true(isnan(back.k_z));
+    tirenv_test_path(fx, "none-back.tir", path);
+    assert_int_equal(tirenv_tir_write(path, &back, &d), TIRENV_OK);
+    tirenv_test_read_text(path, text, sizeof text);
+    assert_null(strstr(text, "VERTICAL_DAMPING"));
+
+    tirenv_test_write_text(tirenv_test_path(fx, "neg.tir", path),
+                           "[VERTICAL]\nVERTICAL_DAMPING = -50\n");
+    t = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "VERTICAL_DAMPING");
+    assert_bits_equal(t.k_z, 3000);  /* a failed read leaves it */
+}
+
 /* tirenv_tir_get gives each key as the writer writes it: set, got, set again from the text
  * gives the same tire; unknown keys, a small buffer and a section-qualified key. */
 static void test_get_every_key(void **state)
@@ -879,6 +918,7 @@ int main(void)
         T(test_units_converted),
         T(test_cam_keys_given),
         T(test_own_q_fz1_and_pfz1),
+        T(test_vertical_damping),
         T(test_get_every_key),
         cmocka_unit_test(test_need_of_every_model),
     };

@@ -1,4 +1,5 @@
-/* libFuzzer harness: the vehicle file reader (tirenv_vehicle_read) and its check.
+/* libFuzzer harness: the vehicle file reader (tirenv_vehicle_read), its check, and its tires'
+ * springs and dampers set from a tire (tirenv_vehicle_tires).
  * SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "tirenv/vehicle.h"
@@ -10,7 +11,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     tirenv_vehicle v = tirenv_vehicle_default();
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    if (tirenv_vehicle_read(path, &v, &diag) == TIRENV_OK)
-        (void)tirenv_vehicle_check(&v, &diag);
+    if (tirenv_vehicle_read(path, &v, &diag) == TIRENV_OK &&
+        tirenv_vehicle_check(&v, &diag) == TIRENV_OK) {
+        /* Its tires' springs and dampers from the default tire where it gives none. */
+        const tirenv_tire tire = tirenv_tire_default();
+        if (tirenv_vehicle_tires(&v, &tire, &tire, &diag) == TIRENV_OK)
+            (void)tirenv_vehicle_check(&v, &diag);
+    }
     return 0;
 }
