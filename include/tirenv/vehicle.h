@@ -63,8 +63,8 @@ int tirenv_vehicle_tires(tirenv_vehicle *v, const tirenv_tire *front, const tire
 /* Physical sanity: positive masses, inertia, lengths, tire stiffnesses and g; a whole
  * number of tires; non-negative damping and suspension stiffness (a NAN k_t or c_t passes:
  * the tire file's, not yet set); no suspension damping on a rigid axle; m_a > 0 on a
- * suspended axle; rear k_s = 0. TIRENV_EINVAL naming the field otherwise by its file key ("MASS"; "FRONT_AXLE.TIRES" for the axles' keys, as --set
- * takes them). */
+ * suspended axle; rear k_s = 0. TIRENV_EINVAL naming the field otherwise by its file key
+ * ("MASS"; "FRONT_AXLE.TIRES" for the axles' keys, as --set takes them). */
 int tirenv_vehicle_check(const tirenv_vehicle *v, tirenv_diag *diag);
 
 /* Static load of one tire of the front (axle 0) or rear (axle 1) axle on flat ground, N:
