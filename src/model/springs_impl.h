@@ -62,7 +62,9 @@ typedef struct {
 /* Everything a fan of rays needs of its centre's x, found once per x. */
 typedef struct {
     double x;       /* m */
-    double g;       /* ground height at x, m */
+    double g;       /* ground height at x, m (at a wall its top) */
+    double g_side[2]; /* where a walk behind [0] and ahead [1] starts: g, or at a wall
+                       * under x the wall's end on that side, m */
     long first[2];  /* first vertex strictly ahead of x backward [0] and forward [1] */
     double tol;     /* rounding allowance of the reuse test (without the |z| part), m */
     double z_max[2];  /* bounds of the ground within rho_max behind [0] and ahead [1], m */
