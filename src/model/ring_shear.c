@@ -425,13 +425,8 @@ static int reserve_knots(tirenv_ring_tread *T, size_t m)
         return 0;
     const size_t cap = tirenv_core__capacity(T->cap_k, 16, m);
     const size_t V = 2 * T->M + cap;
-    /* Zeroed: an entry of the Newton iterate past the N + m unknowns solve_on writes is read
-     * (with NaN there case R's sweep fails; with NaN in any other of these vectors, or
-     * finite garbage, it does not, so the read is weighted by 0; which read it is, is not
-     * yet pinned down). A fresh mapping (the CLI's: 139 kB is above malloc's first mmap
-     * threshold) holds zeros there, reused heap (Python's, once NumPy's freed arrays raised
-     * the threshold) garbage, and NaN garbage failed the ring's sweep the CLI had computed
-     * (valgrind: "depends on uninitialised value(s)"). */
+    /* Zeroed: kept from when find_knots made knots outside the window, which read an entry
+     * never written here (with NaN there case R's sweep failed). */
     double *col = calloc(2 * T->M + 5 * V, sizeof *col);
     size_t *kj = malloc(cap * sizeof *kj);
     double *kd = malloc(10 * cap * sizeof *kd);
@@ -832,12 +827,21 @@ static int find_knots(tirenv_ring *r)
     /* Each knot's interval and angle (the last of its points', as they are met), while they
      * fit in the arrays; then the sub-intervals and the stiffness. */
     tirenv_ring_point *const pts = r->pts;
-    const size_t n_pts = r->n_pts, cap = T->cap_k;
+    const size_t n_pts = r->n_pts, cap = T->cap_k, lo = r->lo, n = r->n;
     double *phi = T->kphi;
     size_t m = 0;
     for (size_t k = 0; k < n_pts; ++k) {
         tirenv_ring_point *q = &pts[k];
-        const int inner = q->s > 0 && q->s < 1;
+        /* Only in the window's own intervals. The whole window's points are all that
+         * tirenv_ring__sample cast, up to two nodes past the ground within reach; those
+         * outside the window are out of reach (it holds the intervals of every point within
+         * reach). A knot there is an unknown coupled to nothing whose interval index q->j - lo
+         * lies outside the window: solve_full's x[2 i + 1], x[2 i + 3] (weighted by c0 = c1
+         * = 0) read and wrote outside the window's unknowns, before them (i = (size_t)-1:
+         * x[-1], the last entry of the vector before, never written) or past them (another
+         * knot's entry, or one past the N + m); NaN there made the knot NaN, and Newton did
+         * not settle. */
+        const int inner = q->s > 0 && q->s < 1 && q->j >= lo && q->j + 1 < lo + n;
         const int same = inner && k > 0 && pts[k - 1].knot >= 0 && pts[k - 1].j == q->j &&
                          pts[k - 1].phi == q->phi;
         if (inner && !same)
