@@ -436,9 +436,9 @@ static void poison_past(tirenv_ring_tread *T, size_t N, size_t m)
 
 /* Room for m knots: the driver's vectors (2 M + m each) and the knots' arrays. Nonzero if
  * out of memory (T keeps what it had). Not zeroed: a solve reads only what it wrote (its N + m
- * unknowns, its m knots). Zeros hid the read find_knots' knots outside the window made from
- * valgrind's memcheck (tests/model/memcheck.sh), which sees uninitialised memory; the tests
- * put NaN there (tirenv_ring__tread_poison). */
+ * unknowns, its m knots), and zeros hid from valgrind's memcheck (tests/model/memcheck.sh)
+ * the read that find_knots' knots outside the window made; the tests put NaN there
+ * (tirenv_ring__tread_poison). */
 static int reserve_knots(tirenv_ring_tread *T, size_t m)
 {
     if (T->col && m <= T->cap_k)
