@@ -371,7 +371,10 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         const tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
-        const int after = i > 0 && c[-1].hit; /* the points written last are c[-1]'s */
+        /* The points written last are c[-1]'s. With the centre inside the ground no piece
+         * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
+         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives). */
+        const int after = !inside && i > 0 && c[-1].hit;
         piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
                      r->pts + n_pts);
         n_pts += 2;

@@ -299,6 +299,11 @@ double *tirenv_ring__tread_u(tirenv_ring_tread *T);
  * whole nonzero, every later one on the whole window instead (the tests' reference). */
 size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T);
 void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole);
+/* For tests: from now on NaN in the Newton driver's vectors and the knots' arrays wherever no
+ * solve has written yet, and, before each solve, past the unknowns and knots it writes; a
+ * read of an entry it did not write then shows (a NaN answer, a Newton that does not settle),
+ * as garbage in reused heap memory would. */
+void tirenv_ring__tread_poison(tirenv_ring_tread *T);
 
 /* The doubles of the warm start from tirenv_ring__tread_u on (u, its and w's slopes in z, the
  * z they were found at): what a state saves. */

@@ -121,6 +121,7 @@ struct tirenv_ring_tread {
     double *xw, *dxw;
     size_t n_sub;       /* evaluations answered on a sub-window (the tests count them) */
     int whole;          /* nonzero: always the whole window (the tests' reference) */
+    int poison;         /* nonzero: NaN in what no solve wrote yet (tirenv_ring__tread_poison) */
     /* The softening carcass (CARCASS_SOFTENING_DEFLECTION > 0, docs/models.md 5.1): its
      * parameters, and the window's w at the iterate whose states were set last (the Newton
      * system is linearised there). */
@@ -417,22 +418,34 @@ static int band_alloc(tband *A, size_t N, size_t t)
     return 0;
 }
 
+/* The driver's vectors (2 M + cap_k each) and the knots' arrays (cap_k each) from the N + m
+ * unknowns and m knots of the solve about to start on: NaN (T->poison). */
+static void poison_past(tirenv_ring_tread *T, size_t N, size_t m)
+{
+    const size_t V = 2 * T->M + T->cap_k, cap = T->cap_k;
+    double *const vec[] = {T->x, T->xn, T->xt, T->g, T->kp};
+    double *const knot[] = {T->kd, T->ko, T->dd, T->doff, T->c0,
+                            T->c1, T->z0, T->z1, T->kphi, T->kdphi};
+    for (size_t v = 0; v < sizeof vec / sizeof *vec; ++v)
+        for (size_t i = N + m; i < V; ++i)
+            vec[v][i] = NAN;
+    for (size_t v = 0; v < sizeof knot / sizeof *knot; ++v)
+        for (size_t k = m; k < cap; ++k)
+            knot[v][k] = NAN;
+}
+
 /* Room for m knots: the driver's vectors (2 M + m each) and the knots' arrays. Nonzero if
- * out of memory (T keeps what it had). */
+ * out of memory (T keeps what it had). Not zeroed: a solve reads only what it wrote (its N + m
+ * unknowns, its m knots), and zeros hid from valgrind's memcheck (tests/model/memcheck.sh)
+ * the read that find_knots' knots outside the window made; the tests put NaN there
+ * (tirenv_ring__tread_poison). */
 static int reserve_knots(tirenv_ring_tread *T, size_t m)
 {
     if (T->col && m <= T->cap_k)
         return 0;
     const size_t cap = tirenv_core__capacity(T->cap_k, 16, m);
     const size_t V = 2 * T->M + cap;
-    /* Zeroed: an entry of the Newton iterate past the N + m unknowns solve_on writes is read
-     * (with NaN there case R's sweep fails; with NaN in any other of these vectors, or
-     * finite garbage, it does not, so the read is weighted by 0; which read it is, is not
-     * yet pinned down). A fresh mapping (the CLI's: 139 kB is above malloc's first mmap
-     * threshold) holds zeros there, reused heap (Python's, once NumPy's freed arrays raised
-     * the threshold) garbage, and NaN garbage failed the ring's sweep the CLI had computed
-     * (valgrind: "depends on uninitialised value(s)"). */
-    double *col = calloc(2 * T->M + 5 * V, sizeof *col);
+    double *col = malloc((2 * T->M + 5 * V) * sizeof *col);
     size_t *kj = malloc(cap * sizeof *kj);
     double *kd = malloc(10 * cap * sizeof *kd);
     if (!col || !kj || !kd) {
@@ -462,7 +475,20 @@ static int reserve_knots(tirenv_ring_tread *T, size_t m)
     T->kphi = kd + 8 * cap;
     T->kdphi = kd + 9 * cap;
     T->cap_k = cap;
+    if (T->poison) {
+        for (size_t i = 0; i < 2 * T->M; ++i)
+            col[i] = NAN;
+        poison_past(T, 0, 0);
+    }
     return 0;
+}
+
+void tirenv_ring__tread_poison(tirenv_ring_tread *T)
+{
+    T->poison = 1;
+    for (size_t i = 0; i < 2 * T->M; ++i)
+        T->col[i] = NAN;
+    poison_past(T, 0, 0);
 }
 
 double tirenv_ring__tread_shear(const tirenv_ring_params *par)
@@ -832,12 +858,21 @@ static int find_knots(tirenv_ring *r)
     /* Each knot's interval and angle (the last of its points', as they are met), while they
      * fit in the arrays; then the sub-intervals and the stiffness. */
     tirenv_ring_point *const pts = r->pts;
-    const size_t n_pts = r->n_pts, cap = T->cap_k;
+    const size_t n_pts = r->n_pts, cap = T->cap_k, lo = r->lo, n = r->n;
     double *phi = T->kphi;
     size_t m = 0;
     for (size_t k = 0; k < n_pts; ++k) {
         tirenv_ring_point *q = &pts[k];
-        const int inner = q->s > 0 && q->s < 1;
+        /* Only in the window's own intervals. The whole window's points are all that
+         * tirenv_ring__sample cast, up to two nodes past the ground within reach; those
+         * outside the window are out of reach (it holds the intervals of every point within
+         * reach). A knot there is an unknown coupled to nothing whose interval index q->j - lo
+         * lies outside the window: solve_full's x[2 i + 1], x[2 i + 3] (weighted by c0 = c1
+         * = 0) read and wrote outside the window's unknowns, before them (i = (size_t)-1:
+         * x[-1], the last entry of the vector before, never written) or past them (another
+         * knot's entry, or one past the N + m); NaN there made the knot NaN, and Newton did
+         * not settle. */
+        const int inner = q->s > 0 && q->s < 1 && q->j >= lo && q->j + 1 < lo + n;
         const int same = inner && k > 0 && pts[k - 1].knot >= 0 && pts[k - 1].j == q->j &&
                          pts[k - 1].phi == q->phi;
         if (inner && !same)
@@ -1660,6 +1695,8 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
     int st = -1;
     if (!find_knots(r)) {
         const size_t m = T->m;
+        if (T->poison)
+            poison_past(T, N, m);
         const double(*Q)[NB] = window_end(r, x_c);
         double *x = T->x;
         memcpy(x, xw, N * sizeof *x);

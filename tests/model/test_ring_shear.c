@@ -881,6 +881,81 @@ static void test_far_warm_start_settles(void **state)
     tirenv_profile_free(p);
 }
 
+/* The contact solves read only what they wrote: rings whose Newton vectors and knot arrays hold
+ * NaN wherever no solve wrote yet (tirenv_ring__tread_poison, as garbage in reused heap memory
+ * would) give the same bits as fresh ones. Over case R's cleat at its load (the sweep that
+ * failed, "did not settle in 200 Newton steps" at x = 0.442 m, with NaN in freed heap memory),
+ * every 12.5 mm as the tire comes onto the cleat and leaves it (0.4 <= |x| <= 0.5 m), at 21
+ * heights 1 mm apart about the model's equilibrium, a ring choosing its window and one held
+ * to the whole window: F_x, F_z and dF_z/dz the same bits, poisoned or not. The whole
+ * window's points are all those cast, up to two nodes past the ground within reach; a cleat
+ * corner there (out of reach, outside the window) had a knot whose interval index lay outside
+ * the window, and solve_full read x[-1] for one before it. The scan meets such corners on
+ * both sides (7 heights each; asserted, so that the comparison sees them); with those knots
+ * 9 of its 756 poisoned evaluations differed, 3 of them not settling. */
+static void test_poisoned_vectors_same_bits(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+    assert_non_null(m);
+    tirenv_profile *p = tirenv_profile_cleat(0.1, 0.1);
+    tirenv_diag diag;
+    assert_int_equal(tirenv_model_set(m, p, 17044.68, &diag), TIRENV_OK);
+    tirenv_ring *r[4]; /* fresh, poisoned; choosing, whole */
+    for (int k = 0; k < 4; ++k) {
+        r[k] = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(r[k]);
+        assert_non_null(r[k]->tread);
+        if (k & 1)
+            tirenv_ring__tread_poison(r[k]->tread);
+        tirenv_ring__tread_whole(r[k]->tread, k >= 2);
+    }
+    enum { SCAN_X = 18, SCAN_Z = 10 }; /* every 12.5 mm over 0.4 <= |x| <= 0.5; 1 mm */
+    size_t loaded = 0, beyond[2] = {0, 0};
+    for (size_t i = 0; i < SCAN_X; ++i) {
+        const double x = (i < SCAN_X / 2 ? -1 : 1) * (0.4 + 0.0125 * (double)(i % (SCAN_X / 2)));
+        tirenv_point pt;
+        assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
+        for (int dz = -SCAN_Z; dz <= SCAN_Z; ++dz) {
+            const double z = pt.z + 0.001 * dz;
+            double f[4][3];
+            for (int k = 0; k < 4; ++k) {
+                const int st =
+                    tirenv_ring_forces(r[k], p, x, z, &f[k][0], &f[k][1], &f[k][2], NULL, &diag);
+                if (st)
+                    fail_msg("ring %d at x = %g m, z = %.17g m: %s", k, x, z, diag.message);
+            }
+            for (int k = 0; k < 4; k += 2)
+                if (!tirenv_ring__same_bits(f[k], f[k + 1], 3))
+                    fail_msg("%s window at x = %g m, z = %.17g m: poisoned F_x %.17g, F_z "
+                             "%.17g, dF_z/dz %.17g against %.17g, %.17g, %.17g",
+                             k ? "whole" : "chosen", x, z, f[k + 1][0], f[k + 1][1],
+                             f[k + 1][2], f[k][0], f[k][1], f[k][2]);
+            loaded += f[0][1] > 1000;
+            /* Points between nodes (at a corner's cut) outside the whole window's intervals. */
+            const tirenv_ring *w = r[2];
+            int side[2] = {0, 0};
+            for (size_t k = 0; k < w->n_pts; ++k) {
+                const tirenv_ring_point *q = &w->pts[k];
+                if (q->s > 0 && q->s < 1 && (q->j < w->lo || q->j + 1 >= w->lo + w->n))
+                    side[q->j >= w->lo] = 1;
+            }
+            beyond[0] += side[0];
+            beyond[1] += side[1];
+        }
+    }
+    print_message("evaluations with the contact: %zu of %d; with a corner's cut beyond the "
+                  "whole window: %zu before it, %zu after it\n", loaded,
+                  SCAN_X * (2 * SCAN_Z + 1), beyond[0], beyond[1]);
+    assert_true(loaded > SCAN_X * SCAN_Z);
+    assert_true(beyond[0] >= 1 && beyond[1] >= 1);
+    for (int k = 0; k < 4; ++k)
+        tirenv_ring_free(r[k]);
+    tirenv_profile_free(p);
+    tirenv_model_free(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -900,6 +975,7 @@ int main(void)
         cmocka_unit_test(test_exterior_shared_factor),
         cmocka_unit_test(test_sub_window_is_whole_window),
         cmocka_unit_test(test_far_warm_start_settles),
+        cmocka_unit_test(test_poisoned_vectors_same_bits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
