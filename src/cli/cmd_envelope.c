@@ -71,9 +71,11 @@ static void usage(FILE *fp)
           fp);
     cli_help_tire(fp, 1, "UNLOADED_RADIUS=0.69 (every model's)");
     cli_help_jobs(fp);
-    fputs("                       (without --stream: the positions in chunks of 8192, each\n"
-          "                       solved from a cold start at its first position; a\n"
-          "                       streamed sweep runs on one thread)\n"
+    fputs("                       (the positions in chunks of 8192, each solved from a\n"
+          "                       cold start at its first position; with --stream the road\n"
+          "                       is read once, in order, each chunk computed on the rows\n"
+          "                       within the tire's reach of it, two rounds of 4 N chunks'\n"
+          "                       rows and points held; --model nn streams on one thread)\n"
           "  -h, --help           show this help\n",
           fp);
     cli_help_obstacle(fp);
