@@ -173,6 +173,7 @@ static int read_round(sweep *s, size_t c0, int b, tirenv_diag *diag)
 static int beside(void *ctx, tirenv_diag *diag)
 {
     sweep *s = ctx;
+    (void)diag;  /* the sink fills none (its caller knows why), the reader read_diag */
     for (size_t k = 0; k < s->pending; ++k) {
         const int status = s->sink(s->sink_ctx, &s->pt[k]);
         if (status)
@@ -181,7 +182,6 @@ static int beside(void *ctx, tirenv_diag *diag)
     s->pending = 0;
     if (s->read_c0 < s->n_chunks)
         s->read_status = read_round(s, s->read_c0, s->read_b, &s->read_diag);
-    (void)diag;
     return TIRENV_OK;
 }
 
