@@ -4,7 +4,9 @@
  * the caller's model right after it was set is restored before every chunk, so that no chunk
  * depends on which thread ran it, nor on what that thread ran before. A model set on several
  * tracks has no state to save (tirenv_model_state_save is for one track): each chunk sets its
- * model on the tracks again, which leaves it as cold as the first set did. */
+ * model on the tracks again, which leaves it as cold as the first set did. A streamed sweep
+ * (envelope_stream.c) gives each chunk tracks of its own, windows of the road: its model is
+ * set on them, then (one track) restored to the cold state. */
 #include <stdlib.h>
 #include <string.h>
 

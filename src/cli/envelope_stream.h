@@ -9,7 +9,7 @@
 #include "tirenv/stream.h"
 
 /* tirenv_model_stream_tracks (tirenv/stream.h) over n_tracks tracks (equal weights) for the
- * model m of the given type (o: its network, as cli_chunks_open), on up to jobs threads: the
+ * model m of the given type (o as cli_chunks_open's), on up to jobs threads: the
  * positions x_from + k*dx up to x_to in the chunks of CLI_CHUNK positions of whole mode, each
  * from the cold state, so that the points, and the order they reach sink in, are
  * tirenv_model_stream_tracks's, bit for bit, for every jobs. Rows are taken from source only

@@ -3,7 +3,7 @@
 # envelope --stream --jobs N: the road read once, in order, whole mode's chunks of 8192
 # positions computed on N threads, each on the piece of road within the tire's reach of its
 # positions, the points written in order: the same bytes for every N, and whole mode's, over a
-# CSV road and an OpenCRG road (one track and three). 100,001 positions are 13 chunks, so
+# CSV road (a file and standard input), an OpenCRG road (one track and three) and an RDF road. 100,001 positions are 13 chunks, so
 # that --jobs 2 and 3 run two rounds (4 N chunks a round), the second round's road read while
 # the first is computed. An error mid-road (a bad row, ground the hub cannot clear), in the
 # second round: --jobs 2 and 3 fail as --jobs 1 does, the same message, nothing written.
@@ -38,6 +38,14 @@ same road.csv "CSV road"
 run "$bin" envelope --model springs --profile road.csv $sweep --stream --jobs 2
 check "--stream --jobs 2 to standard output: whole mode's bytes" \
     '[ $rc -eq 0 ] && cmp -s out whole.csv'
+run sh -c '"$0" envelope --model springs --profile /dev/stdin $1 --stream --jobs 3 <road.csv' \
+    "$bin" "$sweep"
+check "--stream --jobs 3 from standard input: whole mode's bytes" \
+    '[ $rc -eq 0 ] && cmp -s out whole.csv'
+run "$bin" convert --profile road.csv -o road.rdf
+run "$bin" envelope --model springs --profile road.rdf $sweep --stream --jobs 2 -o rdf.csv
+check "an RDF road, --stream --jobs 2: the CSV road's bytes" \
+    '[ $rc -eq 0 ] && cmp -s rdf.csv whole.csv'
 same road.crg "OpenCRG road"
 same road.crg "OpenCRG road, three tracks" --tracks 3
 
