@@ -40,7 +40,10 @@ int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, cons
  * contact length l_c (m), n positions from x_from every dx (m), on 1 and on 2 threads,
  * interleaved, best of repeat: the wall times (envelope_jobs1_s, envelope_jobs2_s), their
  * ratio (envelope_jobs2_over_jobs1) and whether the points are the same bits
- * (envelope_jobs_identical; fails if not). */
+ * (envelope_jobs_identical; fails if not); then the same sweep streamed from the road's
+ * vertices (tirenv envelope --stream), --jobs 1 and 2 interleaved: envelope_stream_jobs1_s,
+ * envelope_stream_jobs2_s, envelope_stream_jobs2_over_jobs1 and envelope_stream_identical
+ * (both whole mode's points; fails if not). */
 int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l_c,
                    double x_from, double dx, size_t n, long repeat, tirenv_diag *diag);
 
@@ -50,7 +53,8 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
  * tirenv road has written the road to a scratch directory (removed after, or by a signal):
  * its peak resident set (envelope_whole_peak_mb, 10^6 bytes), wall time (envelope_whole_s),
  * the road's length (envelope_whole_road_m) and positions (envelope_whole_positions); then
- * --stream over the road converted to RDF (envelope_stream_rdf_peak_mb, _s). */
+ * --stream --jobs 1 over the road converted to RDF (envelope_stream_rdf_peak_mb, _s), and
+ * --stream --jobs 2 (envelope_stream_rdf_jobs2_peak_mb, _s). */
 int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double length,
                      tirenv_diag *diag);
 

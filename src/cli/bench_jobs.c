@@ -1,13 +1,16 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv bench: one road's sweep on one thread and on two (tirenv envelope --jobs), in chunks
  * of CLI_CHUNK positions each from a cold start (envelope_chunks.h), the runs interleaved so
- * that the load of the machine falls on both alike. */
+ * that the load of the machine falls on both alike; then the same sweep streamed (--stream),
+ * the road's vertices taken one at a time as from a file, on one thread
+ * (tirenv_model_stream, which --stream --jobs 1 runs) and on two (envelope_stream.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/bench.h"
 #include "cli/envelope_chunks.h"
+#include "cli/envelope_stream.h"
 
 /* The whole sweep through c, into pt; *seconds is its wall time if less. */
 static int timed_sweep(cli_chunks *c, size_t n, tirenv_point pt[], double *seconds,
@@ -18,6 +21,61 @@ static int timed_sweep(cli_chunks *c, size_t n, tirenv_point pt[], double *secon
     const double t0 = cli_wall_seconds();
     const int status = cli_chunks_run(c, 0, n_chunks, pt, &done, NULL, NULL, diag);
     *seconds = fmin(*seconds, cli_wall_seconds() - t0);
+    return status;
+}
+
+/* The road's vertices one at a time (tirenv_row_source), as a file reader hands them. */
+typedef struct {
+    const tirenv_profile *road;
+    size_t k;
+} vertices;
+
+static int next_vertex(void *ctx, double *x, double z[], int *got, tirenv_diag *diag)
+{
+    vertices *v = ctx;
+    (void)diag;
+    *got = v->k < tirenv_profile_size(v->road);
+    if (*got) {
+        *x = tirenv_profile_x(v->road)[v->k];
+        z[0] = tirenv_profile_z(v->road)[v->k];
+        ++v->k;
+    }
+    return TIRENV_OK;
+}
+
+/* The points a streamed sweep passes on, in order, and whether they are whole mode's. */
+typedef struct {
+    const tirenv_point *whole;
+    size_t k;
+    int same;
+} compared;
+
+static int compare_point(void *ctx, const tirenv_point *pt)
+{
+    compared *c = ctx;
+    c->same = c->same && memcmp(pt, &c->whole[c->k], sizeof *pt) == 0;
+    ++c->k;
+    return TIRENV_OK;
+}
+
+/* The streamed sweep of m over the road on jobs threads (1: tirenv_model_stream, as
+ * --stream --jobs 1), the points compared with whole's as they come; *seconds is its wall
+ * time if less, *same 0 if a point differs. */
+static int timed_stream(tirenv_model *m, const tirenv_model_type *type,
+                        const tirenv_profile *road, double load, double x_from, double dx,
+                        size_t n, size_t jobs, const tirenv_point whole[], double *seconds,
+                        int *same, tirenv_diag *diag)
+{
+    vertices v = {road, 0};
+    compared c = {whole, 0, 1};
+    const double x_to = x_from + (double)(n - 1) * dx, t0 = cli_wall_seconds();
+    const int status =
+        jobs > 1 ? cli_stream_chunks(m, type, NULL, 1, next_vertex, &v, x_from, x_to, dx, load,
+                                     jobs, compare_point, &c, diag)
+                 : tirenv_model_stream_tracks(m, 1, NULL, next_vertex, &v, x_from, x_to, dx,
+                                              load, compare_point, &c, NULL, diag);
+    *seconds = fmin(*seconds, cli_wall_seconds() - t0);
+    *same = *same && c.same && c.k == n;
     return status;
 }
 
@@ -68,6 +126,28 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
         if (!same)
             status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
                                   "the sweep on 2 threads differs from the sweep on 1");
+    }
+    /* Streamed, after the chunked runs, which leave m set on the whole road: each stream
+     * sets it on its own windows. */
+    double s1 = INFINITY, s2 = INFINITY;
+    int same = 1;
+    for (long rep = 0; rep < repeat && !status; ++rep) {
+        status = timed_stream(m, type, road, load, x_from, dx, n, 1, pt1, &s1, &same, diag);
+        if (!status)
+            status = timed_stream(m, type, road, load, x_from, dx, n, 2, pt1, &s2, &same,
+                                  diag);
+    }
+    if (!status) {
+        cli_bench_figure("envelope_stream_jobs1_s", s1);
+        cli_bench_figure("envelope_stream_jobs2_s", s2);
+        cli_bench_figure("envelope_stream_jobs2_over_jobs1", s2 / s1);
+        cli_bench_figure("envelope_stream_identical", same);
+        cli_bench_say("  the same sweep streamed (--stream, the vertices one at a time),\n"
+                      "  --jobs 2 / --jobs 1 wall time: %.3f, points %s\n",
+                      s2 / s1, same ? "whole mode's" : "DIFFERENT from whole mode's");
+        if (!same)
+            status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
+                                  "the streamed sweep differs from the whole one");
     }
     cli_chunks_free(c1);
     cli_chunks_free(c2);

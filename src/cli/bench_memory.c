@@ -2,7 +2,8 @@
 /* tirenv bench: the peak memory of tirenv envelope's whole mode over a long road sampled as
  * measured roads are (the project's memory target: the cam over a 10 km class C road sampled
  * at 1 mm, 10 M positions, at most 400 MB resident; README, Speed), and of --stream over the
- * same road as an RDF file (read in bounded memory, docs/formats.md section 5), measured as a
+ * same road as an RDF file (read in bounded memory, docs/formats.md section 5; on one thread
+ * and on two, whose chunks hold a window of rows each: envelope_stream.h), measured as a
  * user meets them: this program run as a child on road files it wrote first, its peak
  * resident set from the kernel (wait4's ru_maxrss), so that the bench's own memory does not
  * count, except as a floor: the kernel counts the child's copy of the bench at the fork (its
@@ -101,7 +102,7 @@ static int run_child(char *const argv[], int out_fd, int *status, long *kb, doub
 
 /* The memory's figures and its lines of the tables. */
 static void report(double length, size_t positions, double mb, double seconds, double rdf_mb,
-                   double rdf_s)
+                   double rdf_s, double rdf2_mb, double rdf2_s)
 {
     cli_bench_figure("envelope_whole_road_m", length);
     cli_bench_figure("envelope_whole_positions", (double)positions);
@@ -109,14 +110,16 @@ static void report(double length, size_t positions, double mb, double seconds, d
     cli_bench_figure("envelope_whole_s", seconds);
     cli_bench_figure("envelope_stream_rdf_peak_mb", rdf_mb);
     cli_bench_figure("envelope_stream_rdf_s", rdf_s);
+    cli_bench_figure("envelope_stream_rdf_jobs2_peak_mb", rdf2_mb);
+    cli_bench_figure("envelope_stream_rdf_jobs2_s", rdf2_s);
     cli_bench_say("\nmemory: tirenv envelope --model cam (whole mode, --jobs the cores) over a "
                   "%.0f m class C road\nat 1 mm into a CSV file (%zu positions), as a "
                   "child process: %.0f MB peak resident\n(target at most 400 MB over 10 km: "
                   "%s), %.1f s;\n--stream over the same road as an RDF file: %.1f MB peak "
-                  "resident, %.1f s\n",
+                  "resident, %.1f s (--jobs 1),\n%.1f MB, %.1f s (--jobs 2)\n",
                   length, positions, mb, length >= 10000 ? (mb <= 400 ? "met" : "missed")
                                                          : "not this road",
-                  seconds, rdf_mb, rdf_s);
+                  seconds, rdf_mb, rdf_s, rdf2_mb, rdf2_s);
 }
 
 /* How a child that failed ended, from its wait status st: its exit status or its signal (the
@@ -174,10 +177,13 @@ int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double leng
                         "--tire", (char *)tire_path, "--profile", road, "-o", out, NULL};
     char *convert[] = {self, "convert", "--profile", road, "-o", rdf, NULL};
     char *stream[] = {self, "envelope", "--model", "cam", "--contact-length", "0.33",
-                      "--tire", (char *)tire_path, "--profile", rdf, "--stream", "-o", out,
-                      NULL};
-    long kb = 0, rdf_kb = 0, setup_kb = 0;
-    double seconds = 0, rdf_s = 0, setup_s = 0;
+                      "--tire", (char *)tire_path, "--profile", rdf, "--stream", "--jobs", "1",
+                      "-o", out, NULL};
+    char *stream2[] = {self, "envelope", "--model", "cam", "--contact-length", "0.33",
+                       "--tire", (char *)tire_path, "--profile", rdf, "--stream", "--jobs",
+                       "2", "-o", out, NULL};
+    long kb = 0, rdf_kb = 0, rdf2_kb = 0, setup_kb = 0;
+    double seconds = 0, rdf_s = 0, rdf2_s = 0, setup_s = 0;
     status = run_ok(make_road, road, "tirenv road", &setup_kb, &setup_s, diag);
     if (!status)
         status = run_ok(envelope, out, "tirenv envelope --model cam over the CSV road", &kb,
@@ -187,29 +193,35 @@ int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double leng
     if (!status)
         status = run_ok(stream, out, "tirenv envelope --model cam --stream over the RDF road",
                         &rdf_kb, &rdf_s, diag);
+    if (!status)
+        status = run_ok(stream2, out, "tirenv envelope --model cam --stream --jobs 2 over the "
+                        "RDF road", &rdf2_kb, &rdf2_s, diag);
     tirenv_outdir_abort(scratch);
     if (status)
         return status;
     const tirenv_positions s = tirenv_positions_default(0, length, tire->springs.R0);
     /* ru_maxrss's kilobytes are 1024 bytes */
     report(length, tirenv_positions_count(s.x_from, s.x_to, s.dx), 1024.0 * (double)kb / 1e6,
-           seconds, 1024.0 * (double)rdf_kb / 1e6, rdf_s);
+           seconds, 1024.0 * (double)rdf_kb / 1e6, rdf_s, 1024.0 * (double)rdf2_kb / 1e6,
+           rdf2_s);
     return TIRENV_OK;
 }
 
 /* The figures of a fresh bench --memory --json, in its output text. */
 static int fresh_figures(const char *text, tirenv_diag *diag)
 {
-    static const char *const names[6] = {"envelope_whole_road_m", "envelope_whole_peak_mb",
-                                         "envelope_whole_s", "envelope_stream_rdf_peak_mb",
-                                         "envelope_stream_rdf_s", "envelope_whole_positions"};
-    double v[6];
+    static const char *const names[8] = {
+        "envelope_whole_road_m",       "envelope_whole_peak_mb",
+        "envelope_whole_s",            "envelope_stream_rdf_peak_mb",
+        "envelope_stream_rdf_s",       "envelope_whole_positions",
+        "envelope_stream_rdf_jobs2_peak_mb", "envelope_stream_rdf_jobs2_s"};
+    double v[8];
     json_error_t e;
     json_t *root = json_loads(text, 0, &e);
     int status = root ? TIRENV_OK
                       : tirenv_error(diag, TIRENV_EPARSE, "tirenv bench --memory --json", 0,
                                      "", "its output does not read as JSON: %s", e.text);
-    for (size_t k = 0; !status && k < 6; ++k) {
+    for (size_t k = 0; !status && k < 8; ++k) {
         const json_t *j = json_object_get(root, names[k]);
         if (!json_is_number(j))
             status = tirenv_error(diag, TIRENV_EPARSE, "tirenv bench --memory --json", 0,
@@ -219,7 +231,7 @@ static int fresh_figures(const char *text, tirenv_diag *diag)
     }
     json_decref(root);
     if (!status)
-        report(v[0], (size_t)v[5], v[1], v[2], v[3], v[4]);
+        report(v[0], (size_t)v[5], v[1], v[2], v[3], v[4], v[6], v[7]);
     return status;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/csv_row.h"
 #include "cli/envelope.h"
 #include "cli/envelope_chunks.h"
+#include "cli/envelope_stream.h"
 #include "cli/level.h"
 #include "cli/road_out.h"
 
@@ -70,9 +71,11 @@ static void usage(FILE *fp)
           fp);
     cli_help_tire(fp, 1, "UNLOADED_RADIUS=0.69 (every model's)");
     cli_help_jobs(fp);
-    fputs("                       (without --stream: the positions in chunks of 8192, each\n"
-          "                       solved from a cold start at its first position; a\n"
-          "                       streamed sweep runs on one thread)\n"
+    fputs("                       (the positions in chunks of 8192, each solved from a\n"
+          "                       cold start at its first position; with --stream the road\n"
+          "                       is read once, in order, each chunk computed on the rows\n"
+          "                       within the tire's reach of it, two rounds of 4 N chunks'\n"
+          "                       rows and points held; --model nn streams on one thread)\n"
           "  -h, --help           show this help\n",
           fp);
     cli_help_obstacle(fp);
@@ -404,9 +407,17 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
         fputs(header, so.fp);
     }
     if (!status) {
-        status = tirenv_model_stream_tracks(m, r->road.n, NULL,
-                                            tirenv_profile_file_reader_source, in, x_from,
-                                            x_to, dx, load, stream_row, &so, NULL, &diag);
+        /* A network's windows are told where they sit in the road (tirenv_model_stream):
+         * it streams on one thread. */
+        const int chunked =
+            o->jobs > 1 && !(tirenv_model_type_flags(r->type) & TIRENV_MODEL_NEEDS_NETWORK);
+        status = chunked ? cli_stream_chunks(m, r->type, o, r->road.n,
+                                             tirenv_profile_file_reader_source, in, x_from,
+                                             x_to, dx, load, o->jobs, stream_row, &so, &diag)
+                         : tirenv_model_stream_tracks(m, r->road.n, NULL,
+                                                      tirenv_profile_file_reader_source, in,
+                                                      x_from, x_to, dx, load, stream_row, &so,
+                                                      NULL, &diag);
         if (status == TIRENV_EIO && so.fp && ferror(so.fp))
             status = tirenv_error(&diag, TIRENV_EIO, path, 0, "", "write failed");
         else if (status && so.diag.message[0])  /* the road writer's or the level's */

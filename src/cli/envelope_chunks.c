@@ -4,7 +4,9 @@
  * the caller's model right after it was set is restored before every chunk, so that no chunk
  * depends on which thread ran it, nor on what that thread ran before. A model set on several
  * tracks has no state to save (tirenv_model_state_save is for one track): each chunk sets its
- * model on the tracks again, which leaves it as cold as the first set did. */
+ * model on the tracks again, which leaves it as cold as the first set did. A streamed sweep
+ * (envelope_stream.c) gives each chunk tracks of its own, windows of the road: its model is
+ * set on them, then (one track) restored to the cold state. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,6 +24,7 @@ struct cli_chunks {
     const tirenv_profile *const *tracks;
     double load;            /* N */
     /* the call under way */
+    const tirenv_profile *const *windows;  /* NULL, or item i's tracks at [i * n_tracks] */
     size_t c0;
     tirenv_point *pt;
     int (*side)(void *side_ctx, tirenv_diag *diag);  /* item 0 if not NULL */
@@ -111,11 +114,18 @@ static int chunk(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
     for (size_t k = 0; k < n; ++k)
         x[k] = c->x_from + (double)(k0 + k) * c->dx;
     tirenv_model *m = c->models[worker];
-    int status = c->n_tracks > 1
-                     ? tirenv_model_set_tracks(m, c->n_tracks, c->tracks, NULL, c->load, diag)
-                     : tirenv_model_state_restore(m, c->cold, c->cold_size, diag);
+    const tirenv_profile *const *tracks = c->windows ? c->windows + item * c->n_tracks
+                                                     : c->tracks;
+    int status = TIRENV_OK;
+    if (c->windows || c->n_tracks > 1)
+        status = tirenv_model_set_tracks(m, c->n_tracks, tracks, NULL, c->load, diag);
+    if (!status && c->n_tracks == 1)
+        status = tirenv_model_state_restore(m, c->cold, c->cold_size, diag);
     if (!status)
         status = tirenv_model_envelope(m, n, x, c->pt + item * CLI_CHUNK, NULL, diag);
+    /* A window is freed after its round: the model must not point at it then. */
+    if (c->windows)
+        tirenv_model_set_profile(m, NULL, NULL);
     return status;
 }
 
@@ -123,6 +133,15 @@ int cli_chunks_run(cli_chunks *c, size_t c0, size_t n_c, tirenv_point pt[], size
                    int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
                    tirenv_diag *diag)
 {
+    return cli_chunks_run_on(c, c0, n_c, NULL, pt, n_out, side, side_ctx, diag);
+}
+
+int cli_chunks_run_on(cli_chunks *c, size_t c0, size_t n_c,
+                      const tirenv_profile *const windows[], tirenv_point pt[], size_t *n_out,
+                      int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
+                      tirenv_diag *diag)
+{
+    c->windows = windows;
     c->side = side;
     c->side_ctx = side_ctx;
     const size_t n_chunks = c->n / CLI_CHUNK + (c->n % CLI_CHUNK != 0);

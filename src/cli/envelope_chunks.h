@@ -36,6 +36,16 @@ int cli_chunks_run(cli_chunks *c, size_t c0, size_t n_c, tirenv_point pt[], size
                    int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
                    tirenv_diag *diag);
 
+/* cli_chunks_run with each chunk's own tracks: chunk c0 + i on windows[i * n_tracks ..] (the
+ * n_tracks of cli_chunks_open), pieces of the tracks holding the ground within the model's
+ * reach of the chunk's positions (a streamed road's: envelope_stream.h), on which a chunk's
+ * model is set before it is restored to the cold state, and unset after. windows NULL is
+ * cli_chunks_run. */
+int cli_chunks_run_on(cli_chunks *c, size_t c0, size_t n_c,
+                      const tirenv_profile *const windows[], tirenv_point pt[], size_t *n_out,
+                      int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
+                      tirenv_diag *diag);
+
 /* Frees the models it made (not m). NULL does nothing. */
 void cli_chunks_free(cli_chunks *c);
 

@@ -24,7 +24,9 @@ need = [\"rigid_cleat_pos_per_s\", \"springs_cleat_pos_per_s\", \"springs_road_p
         \"springs_fine_over_coarse_road_best\", \"springs_fine_over_coarse_road_rounds\",
         \"envelope_jobs2_over_jobs1\", \"envelope_jobs_identical\", \"envelope_whole_peak_mb\",
         \"envelope_whole_s\", \"envelope_whole_positions\", \"envelope_stream_rdf_peak_mb\",
-        \"envelope_stream_rdf_s\"]
+        \"envelope_stream_rdf_s\", \"envelope_stream_rdf_jobs2_peak_mb\",
+        \"envelope_stream_rdf_jobs2_s\", \"envelope_stream_jobs2_over_jobs1\",
+        \"envelope_stream_identical\"]
 for k in need:
     v = d[k]
     assert isinstance(v, (int, float)) and not isinstance(v, bool), k
@@ -53,6 +55,9 @@ assert d[\"envelope_whole_peak_mb\"] > 3.5
 # --memory, whose resident set at the fork, which the kernel counts in the peak of a child,
 # is some 4 MB, where the bench after its timings is at 13).
 assert d[\"envelope_stream_rdf_peak_mb\"] < d[\"envelope_whole_peak_mb\"]
+# --stream --jobs 2 holds two rounds of 8 chunks, each 8192 points of 64 bytes and the rows
+# within reach of them, whatever the length of the road: some 20 MB (docs/models.md 2.4).
+assert d[\"envelope_stream_rdf_jobs2_peak_mb\"] < 64
 "'
 
 # A method without an equilibrium on flat ground (MAX_ITERATIONS 2: every deformable model's)

@@ -1,0 +1,71 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# envelope --stream --jobs N: the road read once, in order, whole mode's chunks of 8192
+# positions computed on N threads, each on the piece of road within the tire's reach of its
+# positions, the points written in order: the same bytes for every N, and whole mode's, over a
+# CSV road (a file and standard input), an OpenCRG road (one track and three) and an RDF road. 100,001 positions are 13 chunks, so
+# that --jobs 2 and 3 run two rounds (4 N chunks a round), the second round's road read while
+# the first is computed. An error mid-road (a bad row, ground the hub cannot clear), in the
+# second round: --jobs 2 and 3 fail as --jobs 1 does, the same message, nothing written.
+# Usage: tests/cli/cli_stream_jobs.sh BIN TESTDATA_DIR.
+# Conditions are single-quoted for eval; bin, data and rc are clilib's.
+# shellcheck disable=SC2016,SC2034,SC2086,SC2154
+# shellcheck source=tests/lib/clilib.sh
+. "$(dirname "$0")/../lib/clilib.sh"
+
+run "$bin" road --class C --length 100 --dx 0.01 --seed 3 -o road.csv
+check "setup: a 100 m class C road at 1 cm" '[ $rc -eq 0 ]'
+run "$bin" convert --profile road.csv -o road.crg
+check "setup: the road as OpenCRG" '[ $rc -eq 0 ]'
+sweep='--x-from 0 --x-to 100 --dx 0.001 --load 4000'
+
+# same ROAD WHAT OPTIONS...: whole mode, then --stream with --jobs 1, 2 and 3, all one bytes.
+same() {
+    road=$1
+    what=$2
+    shift 2
+    run "$bin" envelope --model springs --profile $road $sweep "$@" --jobs 2 -o whole.csv
+    check "$what: whole mode, 100,001 rows" \
+        '[ $rc -eq 0 ] && [ "$(wc -l <whole.csv)" -eq 100002 ]'
+    for j in 1 2 3; do
+        run "$bin" envelope --model springs --profile $road $sweep "$@" --stream --jobs $j \
+            -o stream-$j.csv
+        check "$what: --stream --jobs $j writes whole mode's bytes" \
+            '[ $rc -eq 0 ] && cmp -s whole.csv stream-$j.csv'
+    done
+}
+same road.csv "CSV road"
+run "$bin" envelope --model springs --profile road.csv $sweep --stream --jobs 2
+check "--stream --jobs 2 to standard output: whole mode's bytes" \
+    '[ $rc -eq 0 ] && cmp -s out whole.csv'
+run sh -c '"$0" envelope --model springs --profile /dev/stdin $1 --stream --jobs 3 <road.csv' \
+    "$bin" "$sweep"
+check "--stream --jobs 3 from standard input: whole mode's bytes" \
+    '[ $rc -eq 0 ] && cmp -s out whole.csv'
+run "$bin" convert --profile road.csv -o road.rdf
+run "$bin" envelope --model springs --profile road.rdf $sweep --stream --jobs 2 -o rdf.csv
+check "an RDF road, --stream --jobs 2: the CSV road's bytes" \
+    '[ $rc -eq 0 ] && cmp -s rdf.csv whole.csv'
+same road.crg "OpenCRG road"
+same road.crg "OpenCRG road, three tracks" --tracks 3
+
+# fails NAME WHAT: road NAME streamed with --jobs 1, 2 and 3 fails alike, nothing written.
+fails() {
+    for j in 1 2 3; do
+        run "$bin" envelope --model springs --profile $1 $sweep --stream --jobs $j -o e-$j.csv
+        cp err err-$j
+        rc_j=$rc
+        check "$2, --jobs $j: exit 2, no file" '[ $rc_j -eq 2 ] && [ ! -e e-$j.csv ]'
+    done
+    check "$2: --jobs 2 and 3 say what --jobs 1 says" \
+        '[ -s err-1 ] && cmp -s err-1 err-2 && cmp -s err-1 err-3'
+}
+# Line 8003 is x = 80 m: position 80,000, chunk 9, the second round for --jobs 2 and 3.
+awk 'NR == 8003 { print "80,abc"; next } { print }' road.csv >bad.csv
+fails bad.csv "a bad row at x = 80 m"
+check "the bad row named at its line" 'grep -q "bad.csv:8003:.*z_m" err-2'
+awk -F, 'NR == 8003 { print $1 ",2.5"; next } { print }' road.csv >spike.csv
+fails spike.csv "ground 2.5 m high at x = 80 m"
+check "the hub that cannot clear it named" 'grep -q "hub clears the ground" err-2'
+
+clilib_done
