@@ -102,6 +102,40 @@ int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *sour
 typedef int (*tirenv_row_source)(void *ctx, double *x, double z[], int *got,
                                  tirenv_diag *diag);
 
+/* A road window: the rows of a row source read in order, holding only those a moving stretch
+ * [x_keep, x_need] (m) needs, from the last row before x_keep to the first after x_need, so
+ * that each segment meeting the stretch lies whole in it; memory is bounded by the stretch,
+ * not by the road. tirenv_model_stream_tracks keeps one around the tire's reach; a caller
+ * sweeping stretches of its own (several threads, each on its stretch) keeps one too. */
+typedef struct tirenv_road_window tirenv_road_window;
+
+/* An empty window on source (called with ctx), n_tracks >= 1 heights a row; reads nothing yet,
+ * then from where the source stands. NULL when out of memory, source is NULL or n_tracks 0.
+ * _free(NULL) is a no-op. */
+tirenv_road_window *tirenv_road_window_alloc(tirenv_row_source source, void *ctx,
+                                             size_t n_tracks);
+void tirenv_road_window_free(tirenv_road_window *w);
+
+/* Makes w cover [x_keep, x_need] (m; x_keep not below the last call's: rows dropped are not
+ * read again): drops the rows before the last one left of x_keep, and reads until a row lies
+ * beyond x_need or the source ends, dropping as it goes, so a far x_keep costs no memory.
+ * Each row is checked as it comes: x or a height not finite, x going back, or a third row at
+ * one x stop it with TIRENV_EINVAL naming the vertex (its 1-based index in the source, as
+ * diag's line); the source's errors pass through; TIRENV_ENOMEM. */
+int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
+                            tirenv_diag *diag);
+
+/* 1 if w holds a row beyond x (m) or the source has ended (so nothing more up to x will
+ * come), else 0. */
+int tirenv_road_window_covers(const tirenv_road_window *w, double x);
+
+/* The rows held as one profile per track into p[n_tracks], each the caller's to
+ * tirenv_profile_free. On failure (TIRENV_EINVAL with the offending vertex of the window, as
+ * tirenv_profile_validate, e.g. no row; TIRENV_ENOMEM) the tracks made before stay in p for
+ * the caller to free, the failing one's is NULL and those after it are left as they were. */
+int tirenv_road_window_profiles(const tirenv_road_window *w, tirenv_profile *p[],
+                                tirenv_diag *diag);
+
 /* tirenv_model_stream over n >= 1 tracks with weights[n] (NULL: equal), as
  * tirenv_model_set_tracks: a window per track, combined by the type's rule. Equals
  * tirenv_model_set_tracks with the whole tracks (separate profiles) + tirenv_model_envelope

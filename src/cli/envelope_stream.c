@@ -15,118 +15,25 @@
  * round's points to the sink (the writer of whole mode's rounds). So at most two rounds of
  * windows and of points are held, and the reading and writing take a worker's time, not a
  * pause between rounds. Consecutive windows overlap by some 2r: the rows a window shares with
- * the next stay in the reader's buffer (rows_fill drops only what falls behind the next
- * chunk's reach). */
+ * the next stay in the reader's window (tirenv_road_window_fill drops only what falls behind
+ * the next chunk's reach). The window checks each row as it comes (x and heights finite, x
+ * not going back, at most two rows at one x), as the serial stream's does, so both refuse an
+ * unchecked source's rows with the same messages. */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "cli/envelope_chunks.h"
 #include "cli/envelope_stream.h"
 #include "tirenv/tracks.h"
-
-/* The rows read and not yet behind every chunk to come. */
-typedef struct {
-    tirenv_row_source next;
-    void *ctx;
-    size_t tracks;
-    double *x;             /* [cap], m */
-    double **z;            /* z[t][i]: track t's height at x[i], m */
-    size_t n, cap;
-    int eof;
-    double *row;           /* [tracks]: one row as the source gives it */
-} rows;
 
 static int no_memory(tirenv_diag *diag)
 {
     return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
 }
 
-static void rows_free(rows *r)
-{
-    free(r->x);
-    for (size_t t = 0; r->z && t < r->tracks; ++t)
-        free(r->z[t]);
-    free(r->z);
-    free(r->row);
-}
-
-static int rows_grow(rows *r)
-{
-    const size_t cap = r->cap ? 2 * r->cap : 4096;
-    double *x = realloc(r->x, cap * sizeof *x);
-    if (!x)
-        return TIRENV_ENOMEM;
-    r->x = x;
-    for (size_t t = 0; t < r->tracks; ++t) {
-        double *z = realloc(r->z[t], cap * sizeof *z);
-        if (!z)
-            return TIRENV_ENOMEM;
-        r->z[t] = z;
-    }
-    r->cap = cap;
-    return TIRENV_OK;
-}
-
-/* Drops the rows before the last one left of x_keep (as stream.c's window_drop). */
-static void rows_drop(rows *r, double x_keep)
-{
-    size_t lo = 0;
-    while (lo + 1 < r->n && r->x[lo + 1] < x_keep)
-        ++lo;
-    if (lo == 0)
-        return;
-    memmove(r->x, r->x + lo, (r->n - lo) * sizeof *r->x);
-    for (size_t t = 0; t < r->tracks; ++t)
-        memmove(r->z[t], r->z[t] + lo, (r->n - lo) * sizeof *r->z[t]);
-    r->n -= lo;
-}
-
-/* Makes the rows cover [x_keep, x_need] (as stream.c's window_fill): reads until a row lies
- * beyond x_need or the road ends, dropping what falls behind x_keep as it goes, so that a
- * far x_from costs no memory either. */
-static int rows_fill(rows *r, double x_keep, double x_need, tirenv_diag *diag)
-{
-    rows_drop(r, x_keep);
-    while (!r->eof && !(r->n > 0 && r->x[r->n - 1] > x_need)) {
-        double x;
-        int got = 0;
-        const int status = r->next(r->ctx, &x, r->row, &got, diag);
-        if (status)
-            return status;
-        if (!got) {
-            r->eof = 1;
-            break;
-        }
-        if (r->n == r->cap) {
-            rows_drop(r, x_keep);
-            if (r->n == r->cap && rows_grow(r) != TIRENV_OK)
-                return no_memory(diag);
-        }
-        r->x[r->n] = x;
-        for (size_t t = 0; t < r->tracks; ++t)
-            r->z[t][r->n] = r->row[t];
-        r->n++;
-    }
-    return TIRENV_OK;
-}
-
-/* The rows held as one profile per track into p[tracks]; rows a source passed unchecked are
- * refused saying why (their vertex within the window), not as memory run out. */
-static int rows_profiles(const rows *r, tirenv_profile *p[], tirenv_diag *diag)
-{
-    for (size_t t = 0; t < r->tracks; ++t) {
-        if ((p[t] = tirenv_profile_alloc(r->n, r->x, r->z[t])))
-            continue;
-        const int status = tirenv_profile_validate(r->n, r->x, r->z[t], diag);
-        return status ? status : no_memory(diag);
-    }
-    return TIRENV_OK;
-}
-
 /* The sweep under way. */
 typedef struct {
-    rows in;
+    tirenv_road_window *in;  /* the rows read and not yet behind every chunk to come */
     size_t tracks;
     double x_from, dx, r;  /* m; r the model's reach */
     size_t n, n_chunks;    /* positions, chunks */
@@ -161,8 +68,8 @@ static int read_round(sweep *s, size_t c0, int b, tirenv_diag *diag)
         const size_t k0 = (c0 + i) * CLI_CHUNK;
         const size_t k1 = (k0 + CLI_CHUNK < s->n ? k0 + CLI_CHUNK : s->n) - 1;
         const double x0 = s->x_from + (double)k0 * s->dx, x1 = s->x_from + (double)k1 * s->dx;
-        if (!(status = rows_fill(&s->in, x0 - s->r, x1 + s->r, diag)))
-            status = rows_profiles(&s->in, s->win[b] + i * s->tracks, diag);
+        if (!(status = tirenv_road_window_fill(s->in, x0 - s->r, x1 + s->r, diag)))
+            status = tirenv_road_window_profiles(s->in, s->win[b] + i * s->tracks, diag);
     }
     return status;
 }
@@ -195,22 +102,20 @@ int cli_stream_chunks(tirenv_model *m, const tirenv_model_type *type, const cli_
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
                             "expected at least one track and one position, got %zu and %zu",
                             n_tracks, n);
-    sweep s = {.in = {.next = source, .ctx = source_ctx, .tracks = n_tracks},
+    sweep s = {.in = tirenv_road_window_alloc(source, source_ctx, n_tracks),
                .tracks = n_tracks, .x_from = x_from, .dx = dx, .n = n,
                .n_chunks = n / CLI_CHUNK + (n % CLI_CHUNK != 0), .sink = sink,
                .sink_ctx = sink_ctx};
     tirenv_diag_clear(&s.read_diag);
-    s.in.z = calloc(n_tracks, sizeof *s.in.z);
-    s.in.row = malloc(n_tracks * sizeof *s.in.row);
     tirenv_profile **first = calloc(n_tracks, sizeof *first);
     cli_chunks *c = NULL;
     tirenv_point *pt[2] = {NULL, NULL};
-    int status = s.in.z && s.in.row && first ? TIRENV_OK : no_memory(diag);
+    int status = s.in && first ? TIRENV_OK : no_memory(diag);
     /* One row is enough to set the load and find z_flat; only then is the reach at that load
      * known (the cam's tandem base depends on it), as in tirenv_model_stream_tracks, whose
      * cold state this is too. */
-    if (!status && !(status = rows_fill(&s.in, -INFINITY, -INFINITY, diag)) &&
-        !(status = rows_profiles(&s.in, first, diag)))
+    if (!status && !(status = tirenv_road_window_fill(s.in, -INFINITY, -INFINITY, diag)) &&
+        !(status = tirenv_road_window_profiles(s.in, first, diag)))
         status = tirenv_model_set_tracks(m, n_tracks, (const tirenv_profile *const *)first,
                                          NULL, load, diag);
     if (!status) {
@@ -257,6 +162,6 @@ int cli_stream_chunks(tirenv_model *m, const tirenv_model_type *type, const cli_
     }
     windows_free(first, n_tracks);
     free(first);
-    rows_free(&s.in);
+    tirenv_road_window_free(s.in);
     return status;
 }

@@ -8,10 +8,12 @@
  * first vertex or ends at its last, its flat extension is the whole profile's. With
  * ahead = 2r a window serves about 2r of travel before it is rebuilt, so the rebuilding
  * (an allocation of the window's few hundred vertices) costs O(1) per position amortised, and
- * the memory is O(r / vertex spacing), whatever the road's length. The vertices come from a
- * callback (tirenv_vertex_source), so the core knows no file format: the CSV reader is one
- * source, in the auxiliary layer. Several tracks across the tire's width (tracks.h) come as
- * rows, one x and a height per track (tirenv_row_source), and make one window per track.
+ * the memory is O(r / vertex spacing), whatever the road's length. The window is a
+ * tirenv_road_window (road_window.c), which checks each vertex as it comes; the CLI's parallel
+ * stream keeps one too. The vertices come from a callback (tirenv_vertex_source), so the core
+ * knows no file format: the CSV reader is one source, in the auxiliary layer. Several tracks
+ * across the tire's width (tracks.h) come as rows, one x and a height per track
+ * (tirenv_row_source), and the window makes a profile per track.
  * A model whose results depend on where a window sits in the road as well (the network: its
  * decomposition's grid is anchored at the road's first vertex, docs/models.md section 12.1)
  * is told before each set (tirenv_model__stream_window), and evaluates through its batch
@@ -21,152 +23,13 @@
 #include "tirenv/tracks.h"
 
 #include "model/model_impl.h"
+#include "model/road_window_impl.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
-#include <string.h>
-
-typedef struct {
-    size_t tracks;         /* heights per vertex */
-    double *x;             /* vertices, m */
-    double **z;            /* z[k][i]: track k's height at x[i], m */
-    size_t n, cap;
-    int bof;               /* x[0] is the file's first vertex */
-    int eof;               /* the file's last vertex has been read */
-    size_t read;           /* vertices read from the file */
-    size_t max;            /* largest n so far */
-    double x_last;         /* the last vertex taken, m */
-    double x_first;        /* the file's first vertex, m */
-    size_t same_x;         /* vertices taken at x_last */
-} window;
-
-static int window_grow(window *w)
-{
-    const size_t cap = w->cap ? 2 * w->cap : 256;
-    if (cap > SIZE_MAX / sizeof(double))
-        return TIRENV_ENOMEM;
-    double *x = realloc(w->x, cap * sizeof *x);
-    if (!x)
-        return TIRENV_ENOMEM;
-    w->x = x;
-    for (size_t k = 0; k < w->tracks; ++k) {
-        double *z = realloc(w->z[k], cap * sizeof *z);
-        if (!z)
-            return TIRENV_ENOMEM;
-        w->z[k] = z;
-    }
-    w->cap = cap;
-    return TIRENV_OK;
-}
-
-static void window_free(window *w)
-{
-    free(w->x);
-    for (size_t k = 0; w->z && k < w->tracks; ++k)
-        free(w->z[k]);
-    free(w->z);
-}
-
-/* The source and what the sweep checks of it. */
-typedef struct {
-    tirenv_row_source next;
-    void *ctx;
-    double *row;           /* the heights of one row, [tracks] */
-} vertex_source;
-
-/* The order a profile needs (x non-decreasing, at most two vertices at one x) is checked as
- * each vertex comes, against the last one taken: a source other than the checked CSV reader
- * may hand anything. */
-static int vertex_check(window *w, double x, const double z[], tirenv_diag *diag)
-{
-    const size_t k = w->read + 1;  /* 1-based index of this vertex in the source */
-    for (size_t j = 0; j < w->tracks; ++j)
-        if (!isfinite(x) || !isfinite(z[j]))
-            return tirenv_error(diag, TIRENV_EINVAL, "", k, isfinite(x) ? "z" : "x",
-                                "vertex %zu of the source is not finite (x %g m, z %g m%s)", k,
-                                x, z[j], w->tracks > 1 ? " on one of its tracks" : "");
-    if (w->read > 0 && x < w->x_last)
-        return tirenv_error(diag, TIRENV_EINVAL, "", k, "x",
-                            "vertex %zu of the source goes back: x %.9g m after %.9g m", k, x,
-                            w->x_last);
-    if (w->read == 0)
-        w->x_first = x;
-    w->same_x = w->read > 0 && x == w->x_last ? w->same_x + 1 : 1;
-    w->x_last = x;
-    if (w->same_x > 2)
-        return tirenv_error(diag, TIRENV_EINVAL, "", k, "x",
-                            "vertex %zu of the source is the third at x = %.9g m (a wall has "
-                            "two)", k, x);
-    return TIRENV_OK;
-}
-
-/* Drops the vertices before the last one left of x_keep (they cannot touch the tire again). */
-static void window_drop(window *w, double x_keep)
-{
-    size_t lo = 0;
-    while (lo + 1 < w->n && w->x[lo + 1] < x_keep)
-        ++lo;
-    if (lo == 0)
-        return;
-    memmove(w->x, w->x + lo, (w->n - lo) * sizeof *w->x);
-    for (size_t k = 0; k < w->tracks; ++k)
-        memmove(w->z[k], w->z[k] + lo, (w->n - lo) * sizeof *w->z[k]);
-    w->n -= lo;
-    w->bof = 0;
-}
-
-/* Makes the window cover [x_keep, x_need]: reads until a vertex lies beyond x_need or the
- * file ends, dropping what falls behind x_keep as it goes so that a far x_from costs no
- * memory either. */
-static int window_fill(window *w, const vertex_source *in, double x_keep, double x_need,
-                       tirenv_diag *diag)
-{
-    window_drop(w, x_keep);
-    while (!w->eof && !(w->n > 0 && w->x[w->n - 1] > x_need)) {
-        double x;
-        int got = 0;
-        int status = in->next(in->ctx, &x, in->row, &got, diag);
-        if (!status && got)
-            status = vertex_check(w, x, in->row, diag);
-        if (status)
-            return status;
-        if (!got) {
-            w->eof = 1;
-            break;
-        }
-        if (w->n == w->cap) {
-            window_drop(w, x_keep);
-            if (w->n == w->cap && window_grow(w) != TIRENV_OK)
-                return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-        }
-        w->x[w->n] = x;
-        for (size_t k = 0; k < w->tracks; ++k)
-            w->z[k][w->n] = in->row[k];
-        w->n++;
-        w->read++;
-        if (w->n > w->max)
-            w->max = w->n;
-    }
-    return TIRENV_OK;
-}
-
-/* The window as a profile per track, handed to the model; the previous ones are freed once
- * replaced. Rows a source passed unchecked are refused saying why (their vertex within the
- * window), not as memory run out. */
-static int window_profile(const window *w, tirenv_profile *p[], tirenv_diag *diag)
-{
-    for (size_t k = 0; k < w->tracks; ++k) {
-        if ((p[k] = tirenv_profile_alloc(w->n, w->x, w->z[k])))
-            continue;
-        const int status = tirenv_profile_validate(w->n, w->x, w->z[k], diag);
-        return status ? status : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    }
-    return TIRENV_OK;
-}
 
 /* Tells the model where the window it is about to be set with sits in the file. */
-static void window_tell(tirenv_model *m, const window *w)
+static void window_tell(tirenv_model *m, const tirenv_road_window *w)
 {
     if (!m)
         return;
@@ -218,29 +81,24 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
                             "and a step that moves x (x + dx != x)",
                             floor((x_to - x_from) / dx) + 1, x_from, x_to, dx,
                             TIRENV_POSITIONS_MAX);
-    window w = {.bof = 1, .tracks = n_tracks};
-    vertex_source src = {source, source_ctx, NULL};
-    const vertex_source *in = &src;
+    tirenv_road_window *w = tirenv_road_window_alloc(source, source_ctx, n_tracks);
     /* The window's profiles, the next ones being built, and the same as const for the model. */
     tirenv_profile **p = calloc(3 * n_tracks, sizeof *p);
     tirenv_profile **next = p ? p + n_tracks : NULL;
     const tirenv_profile **use = p ? (const tirenv_profile **)(p + 2 * n_tracks) : NULL;
-    w.z = calloc(n_tracks, sizeof *w.z);
-    src.row = malloc(n_tracks * sizeof *src.row);
-    if (!p || !w.z || !src.row) {
+    if (!p || !w) {
         free(p);
-        window_free(&w);
-        free(src.row);
+        tirenv_road_window_free(w);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     }
     size_t rebuilds = 0, done = 0;
     /* One vertex is enough to set the load and find z_flat; only then is the reach at that
      * load known (the cam's tandem base depends on it), and the window is read to fit it. */
-    int status = window_fill(&w, in, -INFINITY, -INFINITY, diag);
-    if (!status && !(status = window_profile(&w, p, diag))) {
+    int status = tirenv_road_window_fill(w, -INFINITY, -INFINITY, diag);
+    if (!status && !(status = tirenv_road_window_profiles(w, p, diag))) {
         for (size_t k = 0; k < n_tracks; ++k)
             use[k] = p[k];
-        window_tell(m, &w);
+        window_tell(m, w);
         status = tirenv_model_set_tracks(m, n_tracks, use, weights, load, diag);
     }
     const double r = tirenv_model_reach(m), ahead = 2 * r;
@@ -263,13 +121,13 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
     int have_window = 0;
     for (size_t k = 0; k < n && !status;) {
         const double x = x_from + (double)k * dx;
-        if (!have_window || !(w.eof || w.x[w.n - 1] > x + r)) {
-            if ((status = window_fill(&w, in, x - r, x + r + ahead, diag)) ||
-                (status = window_profile(&w, next, diag)))
+        if (!have_window || !tirenv_road_window_covers(w, x + r)) {
+            if ((status = tirenv_road_window_fill(w, x - r, x + r + ahead, diag)) ||
+                (status = tirenv_road_window_profiles(w, next, diag)))
                 break;
             for (size_t j = 0; j < n_tracks; ++j)
                 use[j] = next[j];
-            window_tell(m, &w);
+            window_tell(m, w);
             if ((status = tirenv_model_set_track_profiles(m, n_tracks, use, diag)))
                 break;
             profiles_free(p, n_tracks);
@@ -288,7 +146,7 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
             b.x[0] = x;
             for (; k + nb < end; ++nb) {
                 const double x_k = x_from + (double)(k + nb) * dx;
-                if (!(w.eof || w.x[w.n - 1] > x_k + r))
+                if (!tirenv_road_window_covers(w, x_k + r))
                     break;
                 b.x[nb] = x_k;
             }
@@ -317,8 +175,8 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
     free(b.pt);
     free(cold);
     if (stats)
-        *stats = (tirenv_stream_stats){.positions = done, .vertices_read = w.read,
-                                       .window_max = w.max, .rebuilds = rebuilds};
+        *stats = (tirenv_stream_stats){.positions = done, .vertices_read = w->read,
+                                       .window_max = w->max, .rebuilds = rebuilds};
     /* The model must not keep pointing at a freed window: it is left unset, and takes whole
      * profiles again. */
     if (p[0] && m)
@@ -328,8 +186,7 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
     profiles_free(next, n_tracks);
     profiles_free(p, n_tracks);
     free(p);
-    window_free(&w);
-    free(src.row);
+    tirenv_road_window_free(w);
     return status;
 }
 
