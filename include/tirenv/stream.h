@@ -102,11 +102,12 @@ int tirenv_model_stream(tirenv_model *m, tirenv_vertex_source source, void *sour
 typedef int (*tirenv_row_source)(void *ctx, double *x, double z[], int *got,
                                  tirenv_diag *diag);
 
-/* A road window: the rows of a row source read in order, holding only those a moving stretch
+/* A road window: the rows of a row source read in order, holding those a moving stretch
  * [x_keep, x_need] (m) needs, from the last row before x_keep to the first after x_need, so
- * that each segment meeting the stretch lies whole in it; memory is bounded by the stretch,
- * not by the road. tirenv_model_stream_tracks keeps one around the tire's reach; a caller
- * sweeping stretches of its own (several threads, each on its stretch) keeps one too. */
+ * that each segment meeting the stretch lies whole in it; the rows behind go when its arrays
+ * fill (a few hundred may stay), so memory is bounded by the stretch, not by the road.
+ * tirenv_model_stream_tracks keeps one around the tire's reach; a caller sweeping stretches
+ * of its own (several threads, each on its stretch) keeps one too. */
 typedef struct tirenv_road_window tirenv_road_window;
 
 /* An empty window on source (called with ctx), n_tracks >= 1 heights a row; reads nothing yet,
@@ -118,7 +119,8 @@ void tirenv_road_window_free(tirenv_road_window *w);
 
 /* Makes w cover [x_keep, x_need] (m; x_keep not below the last call's: rows dropped are not
  * read again): drops the rows before the last one left of x_keep, and reads until a row lies
- * beyond x_need or the source ends, dropping as it goes, so a far x_keep costs no memory.
+ * beyond x_need or the source ends, dropping again whenever the arrays are full, so a far
+ * x_keep costs no memory.
  * Each row is checked as it comes: x or a height not finite, x going back, or a third row at
  * one x stop it with TIRENV_EINVAL naming the vertex (its 1-based index in the source, as
  * diag's line); the source's errors pass through; TIRENV_ENOMEM. */
