@@ -123,18 +123,19 @@ void tirenv_road_window_free(tirenv_road_window *w);
  * x_keep costs no memory.
  * Each row is checked as it comes: x or a height not finite, x going back, or a third row at
  * one x stop it with TIRENV_EINVAL naming the vertex (its 1-based index in the source, as
- * diag's line); the source's errors pass through; TIRENV_ENOMEM. */
+ * diag's line); the source's errors pass through; TIRENV_ENOMEM; TIRENV_EINVAL for w NULL. */
 int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
                             tirenv_diag *diag);
 
 /* 1 if w holds a row beyond x (m) or the source has ended (so nothing more up to x will
- * come), else 0. */
+ * come), else 0 (also for w NULL). */
 int tirenv_road_window_covers(const tirenv_road_window *w, double x);
 
 /* The rows held as one profile per track into p[n_tracks], each the caller's to
  * tirenv_profile_free. On failure (TIRENV_EINVAL with the offending vertex of the window, as
  * tirenv_profile_validate, e.g. no row; TIRENV_ENOMEM) the tracks made before stay in p for
- * the caller to free, the failing one's is NULL and those after it are left as they were. */
+ * the caller to free, the failing one's is NULL and those after it are left as they were;
+ * TIRENV_EINVAL for w or p NULL. */
 int tirenv_road_window_profiles(const tirenv_road_window *w, tirenv_profile *p[],
                                 tirenv_diag *diag);
 

@@ -108,6 +108,8 @@ static void window_drop(tirenv_road_window *w, double x_keep)
 int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
                             tirenv_diag *diag)
 {
+    if (!w)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no road window (NULL)");
     window_drop(w, x_keep);
     while (!tirenv_road_window_covers(w, x_need)) {
         double x;
@@ -139,7 +141,7 @@ int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
 
 int tirenv_road_window_covers(const tirenv_road_window *w, double x)
 {
-    return w->eof || (w->n > 0 && w->x[w->n - 1] > x);
+    return w && (w->eof || (w->n > 0 && w->x[w->n - 1] > x));
 }
 
 /* Rows a source passed unchecked are refused saying why (their vertex within the window),
@@ -147,6 +149,8 @@ int tirenv_road_window_covers(const tirenv_road_window *w, double x)
 int tirenv_road_window_profiles(const tirenv_road_window *w, tirenv_profile *p[],
                                 tirenv_diag *diag)
 {
+    if (!w || !p)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no road window or profiles (NULL)");
     for (size_t k = 0; k < w->tracks; ++k) {
         if ((p[k] = tirenv_profile_alloc(w->n, w->x, w->z[k])))
             continue;

@@ -106,6 +106,21 @@ static void test_far_jump_drops_as_it_reads(void **state)
 
 /* Rows out of a profile's order, or not finite, stop a fill with TIRENV_EINVAL, the row's
  * 1-based index in diag's line, the field at fault and the serial stream's message. */
+/* NULL for the window or the profiles: refused, not dereferenced (diag NULL too). */
+static void test_null_arguments(void **state)
+{
+    (void)state;
+    tirenv_diag diag;
+    tirenv_profile *p[1] = {NULL};
+    assert_int_equal(tirenv_road_window_fill(NULL, 0, 1, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_road_window_fill(NULL, 0, 1, NULL), TIRENV_EINVAL);
+    assert_int_equal(tirenv_road_window_covers(NULL, 0), 0);
+    assert_int_equal(tirenv_road_window_profiles(NULL, p, NULL), TIRENV_EINVAL);
+    assert_null(p[0]);
+    assert_null(tirenv_road_window_alloc(NULL, NULL, 1));
+    tirenv_road_window_free(NULL);
+}
+
 static void test_bad_rows(void **state)
 {
     (void)state;
@@ -143,6 +158,7 @@ int main(void)
         cmocka_unit_test(test_fill_holds_the_stretch),
         cmocka_unit_test(test_far_jump_drops_as_it_reads),
         cmocka_unit_test(test_bad_rows),
+        cmocka_unit_test(test_null_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
