@@ -67,6 +67,19 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->cam.order, b->cam.order);
 }
 
+/* t written to name in the fixture's directory and read back over the default tire into
+ * *back: the same tire, bit for bit. */
+static void assert_round_trip(void *fx, const char *name, const tirenv_tire *t,
+                              tirenv_tire *back)
+{
+    char path[600];
+    tirenv_diag d;
+    assert_int_equal(tirenv_tir_write(tirenv_test_path(fx, name, path), t, &d), TIRENV_OK);
+    *back = tirenv_tire_default();
+    assert_int_equal(tirenv_tir_read(path, back, &d), TIRENV_OK);
+    assert_tire_identical(back, t);
+}
+
 /* Physical, but unlike the default in every field: a file read over it must set them all. */
 static tirenv_tire entropic_tire(void)
 {
@@ -726,11 +739,8 @@ static void test_own_q_fz1_and_pfz1(void **state)
                                                  1));
     assert_near(fl.deflection, rho, 0, 1e-12);
     /* Written with both, read back the same tire. */
-    tirenv_test_path(fx, "back.tir", path);
-    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_OK);
-    tirenv_tire back = tirenv_tire_default();
-    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
-    assert_tire_identical(&back, &t);
+    tirenv_tire back;
+    assert_round_trip(fx, "back.tir", &t, &back);
     /* A file without them, read over that tire, has none. */
     tirenv_test_write_text(tirenv_test_path(fx, "none.tir", path),
                            "[VERTICAL]\nVERTICAL_STIFFNESS = 2e5\n");
@@ -783,11 +793,8 @@ static void test_vertical_damping(void **state)
     tirenv_tire t = tirenv_tire_default();
     assert_int_equal(tirenv_tir_read(path, &t, &d), TIRENV_OK);
     assert_near(t.k_z, 2371.9, 0, 1e-15);  /* N*s/mm to N*s/m */
-    tirenv_test_path(fx, "back.tir", path);
-    assert_int_equal(tirenv_tir_write(path, &t, &d), TIRENV_OK);
-    tirenv_tire back = tirenv_tire_default();
-    assert_int_equal(tirenv_tir_read(path, &back, &d), TIRENV_OK);
-    assert_tire_identical(&back, &t);
+    tirenv_tire back;
+    assert_round_trip(fx, "back.tir", &t, &back);
 
     tirenv_test_write_text(tirenv_test_path(fx, "none.tir", path),
                            "[VERTICAL]\nVERTICAL_STIFFNESS = 2e5\n");
