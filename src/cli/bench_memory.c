@@ -176,12 +176,10 @@ int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double leng
     char *envelope[] = {self, "envelope", "--model", "cam", "--contact-length", "0.33",
                         "--tire", (char *)tire_path, "--profile", road, "-o", out, NULL};
     char *convert[] = {self, "convert", "--profile", road, "-o", rdf, NULL};
+    char jobs[] = "1";  /* then "2" */
     char *stream[] = {self, "envelope", "--model", "cam", "--contact-length", "0.33",
-                      "--tire", (char *)tire_path, "--profile", rdf, "--stream", "--jobs", "1",
+                      "--tire", (char *)tire_path, "--profile", rdf, "--stream", "--jobs", jobs,
                       "-o", out, NULL};
-    char *stream2[] = {self, "envelope", "--model", "cam", "--contact-length", "0.33",
-                       "--tire", (char *)tire_path, "--profile", rdf, "--stream", "--jobs",
-                       "2", "-o", out, NULL};
     long kb = 0, rdf_kb = 0, rdf2_kb = 0, setup_kb = 0;
     double seconds = 0, rdf_s = 0, rdf2_s = 0, setup_s = 0;
     status = run_ok(make_road, road, "tirenv road", &setup_kb, &setup_s, diag);
@@ -193,8 +191,9 @@ int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double leng
     if (!status)
         status = run_ok(stream, out, "tirenv envelope --model cam --stream over the RDF road",
                         &rdf_kb, &rdf_s, diag);
+    jobs[0] = '2';
     if (!status)
-        status = run_ok(stream2, out, "tirenv envelope --model cam --stream --jobs 2 over the "
+        status = run_ok(stream, out, "tirenv envelope --model cam --stream --jobs 2 over the "
                         "RDF road", &rdf2_kb, &rdf2_s, diag);
     tirenv_outdir_abort(scratch);
     if (status)
