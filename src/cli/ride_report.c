@@ -89,7 +89,8 @@ static void write_tires(FILE *fp, const tirenv_vehicle *v, const tirenv_vehicle 
         const tirenv_axle *g = axle ? &given->rear : &given->front;
         const char *slash = strrchr(tire_path[axle], '/');  /* the file's name: no local path */
         fprintf(fp, "| %s | %s | %g | %.0f | %.0f | %s%.0f%s | %.0f | %s |\n",
-                axle ? "rear" : "front", slash ? slash + 1 : tire_path[axle], ax->tires, load[axle], ax->k_t,
+                axle ? "rear" : "front", slash ? slash + 1 : tire_path[axle], ax->tires,
+                load[axle], ax->k_t,
                 isnan(g->k_t) ? "tire file's vertical law at " : "vehicle file (",
                 isnan(g->k_t) ? load[axle] : g->k_t, isnan(g->k_t) ? " N" : " N/m)", ax->c_t,
                 isnan(g->c_t) ? "tire file's VERTICAL_DAMPING" : "vehicle file's TIRE_DAMPING");

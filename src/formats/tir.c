@@ -196,10 +196,11 @@ static const tirenv_propfile__schema tir_schema = {
 
 /* A file without WIDTH leaves it 0, not the width of the tire it was read over: a car tire's
  * file must not inherit the tractor's 0.38 m. A file without VERTICAL_DAMPING leaves it NAN
- * (none), not the tractor's 3000 N*s/m: the ride then asks the vehicle for TIRE_DAMPING. Likewise FNOMIN, Q_FZ2, Q_FZ1 and PFZ1: a file
- * without them has a linear vertical law from its VERTICAL_STIFFNESS and no pressure term,
- * not the law of the tire it was read over; and NOMPRES, which only PFZ1's factor reads: a
- * file with PFZ1 and no NOMPRES is refused (tire check), not given the tractor's 1.2 bar. */
+ * (none), not the tractor's 3000 N*s/m: the ride then asks the vehicle for TIRE_DAMPING.
+ * Likewise FNOMIN, Q_FZ2, Q_FZ1 and PFZ1: a file without them has a linear vertical law from
+ * its VERTICAL_STIFFNESS and no pressure term, not the law of the tire it was read over; and
+ * NOMPRES, which only PFZ1's factor reads: a file with PFZ1 and no NOMPRES is refused (tire
+ * check), not given the tractor's 1.2 bar. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
     return tirenv_tir__read_kept(path, tire, NULL, NULL, diag);

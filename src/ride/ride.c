@@ -103,14 +103,14 @@ static int check_settings(const tirenv_vehicle *v, const tirenv_ride_settings *s
         return status;
     for (int axle = 0; axle < 2; ++axle) {
         const tirenv_axle *ax = axle ? &v->rear : &v->front;
-        if (isnan(ax->k_t) || isnan(ax->c_t))
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0,
-                                axle ? (isnan(ax->k_t) ? "REAR_AXLE.TIRE_STIFFNESS"
-                                                       : "REAR_AXLE.TIRE_DAMPING")
-                                     : (isnan(ax->k_t) ? "FRONT_AXLE.TIRE_STIFFNESS"
-                                                       : "FRONT_AXLE.TIRE_DAMPING"),
-                                "is the tire file's and not yet set: expected the vehicle "
-                                "through tirenv_vehicle_tires with its axles' tires first");
+        if (!isnan(ax->k_t) && !isnan(ax->c_t))
+            continue;
+        char field[64];
+        snprintf(field, sizeof field, "%s_AXLE.%s", axle ? "REAR" : "FRONT",
+                 isnan(ax->k_t) ? "TIRE_STIFFNESS" : "TIRE_DAMPING");
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, field,
+                            "is the tire file's and not yet set: expected the vehicle through "
+                            "tirenv_vehicle_tires with its axles' tires first");
     }
     if (!(s->speed > 0) || !isfinite(s->speed))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "speed", "expected a speed > 0 m/s, "

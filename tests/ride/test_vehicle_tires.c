@@ -178,6 +178,12 @@ static void test_ride_needs_the_tires(void **state)
     assert_int_equal(tirenv_ride_run(&v, &track, &track, &s, out, &d), TIRENV_EINVAL);
     assert_string_equal(d.field, "FRONT_AXLE.TIRE_STIFFNESS");
     assert_non_null(strstr(d.message, "tirenv_vehicle_tires"));
+    tirenv_vehicle w_only_rear_damping = v;  /* the rest given: the one left NAN is named */
+    w_only_rear_damping.front.k_t = w_only_rear_damping.rear.k_t = 3e5;
+    w_only_rear_damping.front.c_t = 3000;
+    assert_int_equal(tirenv_ride_run(&w_only_rear_damping, &track, &track, &s, out, &d),
+                     TIRENV_EINVAL);
+    assert_string_equal(d.field, "REAR_AXLE.TIRE_DAMPING");
     const tirenv_tire t = tirenv_tire_default();
     tirenv_vehicle u = v;
     assert_int_equal(tirenv_vehicle_tires(NULL, &t, &t, NULL), TIRENV_EINVAL);
