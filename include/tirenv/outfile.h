@@ -60,8 +60,8 @@ int tirenv_mkdir_p(const char *path, tirenv_diag *diag);
  * outputs. */
 void tirenv_cleanup_on_signal(void);
 
-/* An output directory written as a whole (tirenv study -o, compare -o, ride --out-dir,
- * dataset build -o, sweep merge -o): the run writes into a staging directory beside the target, which
+/* An output directory written as a whole (tirenv study -o, compare -o, ride --out-dir, dataset
+ * build -o, sweep merge -o): the run writes into a staging directory beside the target, which
  * commit moves into place at once (on Linux an atomic exchange, renameat2 RENAME_EXCHANGE),
  * then removes the old one. A killed or failed run leaves the old directory as it was; a
  * completed one leaves the new one whole, never a mixture. Files of the old directory that

@@ -276,9 +276,10 @@ typedef struct {
  * tires) at the n >= 2 loads[] (N), the springs model's RADIAL_STIFFNESS and
  * INTERRADIAL_STIFFNESS (its deflection and contact length at each load: the ratio c_b/c_r by
  * golden section on its logarithm, c_r in closed form for each ratio; tirenv_springs_identify,
- * or with a sidewall in *tire tirenv_springs_identify_sidewall) and the cam's VERTICAL_STIFFNESS (with the
- * tire's FNOMIN also Q_FZ2, MF-Tyre's quadratic vertical law), Q_RA1 and Q_RA2 (its
- * deflection, then its contact length: linear least squares in relative error).
+ * or with a sidewall in *tire tirenv_springs_identify_sidewall) and the cam's
+ * VERTICAL_STIFFNESS (with the tire's FNOMIN also Q_FZ2, MF-Tyre's quadratic vertical law),
+ * Q_RA1 and Q_RA2 (its deflection, then its contact length: linear least squares in relative
+ * error).
  * *out is *tire with those values replaced; target[] (n entries, may be NULL) receives the
  * reference's states. On failure *out is unchanged. */
 int tirenv_identify_flat(const tirenv_tire *tire, const tirenv_model_type *reference, size_t n,
@@ -300,9 +301,10 @@ int tirenv_identify_flat_on(const tirenv_tire *tire, size_t m,
  * network trained on them (docs/models.md section 14.3), as at most TIRENV_CONTACT_LAW_MAX
  * knots: the cases' own (load, contact length) pairs and, around them, loads spaced
  * geometrically from half the smallest to 1.5 times the largest case load, each with the
- * flat-ground contact length of the source model (the one that simulated the data, with its tire); or, with
- * source NULL (measured data), loads so spaced with the power law l_c = a*G^b fitted to the
- * cases' (load, contact length) pairs in log-log least squares. what (n bytes) says which.
+ * flat-ground contact length of the source model (the one that simulated the data, with its
+ * tire); or, with source NULL (measured data), loads so spaced with the power law l_c = a*G^b
+ * fitted to the cases' (load, contact length) pairs in log-log least squares. what (n bytes)
+ * says which.
  * TIRENV_EINVAL where two cases give one load two contact lengths. */
 int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type *source,
                                const tirenv_tire *tire, tirenv_contact_law *law, char *what,

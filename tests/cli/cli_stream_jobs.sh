@@ -3,10 +3,11 @@
 # envelope --stream --jobs N: the road read once, in order, whole mode's chunks of 8192
 # positions computed on N threads, each on the piece of road within the tire's reach of its
 # positions, the points written in order: the same bytes for every N, and whole mode's, over a
-# CSV road (a file and standard input), an OpenCRG road (one track and three) and an RDF road. 100,001 positions are 13 chunks, so
-# that --jobs 2 and 3 run two rounds (4 N chunks a round), the second round's road read while
-# the first is computed. An error mid-road (a bad row, ground the hub cannot clear), in the
-# second round: --jobs 2 and 3 fail as --jobs 1 does, the same message, nothing written.
+# CSV road (a file and standard input), an OpenCRG road (one track and three) and an RDF road.
+# 100,001 positions are 13 chunks, so that --jobs 2 and 3 run two rounds (4 N chunks a round),
+# the second round's road read while the first is computed. An error mid-road (a bad row, ground
+# the hub cannot clear), in the second round: --jobs 2 and 3 fail as --jobs 1 does, the same
+# message, nothing written.
 # Usage: tests/cli/cli_stream_jobs.sh BIN TESTDATA_DIR.
 # Conditions are single-quoted for eval; bin, data and rc are clilib's.
 # shellcheck disable=SC2016,SC2034,SC2086,SC2154

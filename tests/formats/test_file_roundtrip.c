@@ -1,7 +1,8 @@
 /* What a reader takes, the writer writes back, and the reader takes again (docs/formats.md
  * sections 3 and 10): a .veh TIRE_FILE with quotes was read, then refused by the writer; a
  * network file without its training record was read, written with an empty trainer, and
- * refused on the next read; one with a byte order mark was refused. SPDX-License-Identifier: Apache-2.0 */
+ * refused on the next read; one with a byte order mark was refused.
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 
 #include "tirenv/rng.h"
