@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* tirenv_road_window: the rows of a road read in order, holding only those a moving stretch
  * [x_keep, x_need] needs (stream.h). The serial stream (stream.c) keeps one on the tire's
- * reach around its position; the CLI's parallel stream one on its chunks' reach, so both read
- * and check a row source the same way.
+ * reach around its position, the CLI's parallel stream one on its chunks' reach, and the road's
+ * level along a stream (level_stream.c) one of a track on a few level widths, so all read and
+ * check a source the same way.
  *
  * A stretch is covered from the last row before x_keep to the first row after x_need, so
  * each segment that meets it lies whole in the window; rows behind x_keep are dropped as
