@@ -29,9 +29,10 @@ double tirenv_level_width(const tirenv_tire *tire);
 
 /* The road's local level (tirenv_profile_level) along a sweep in x order, its vertices taken
  * from a source as the sweep needs them, the whole profile never held: a window of the
- * vertices within width (m) of x, rebuilt every few widths of travel, as tirenv_model_stream's.
- * NULL when out of memory; _free(NULL) is a no-op. _at gives the level (m) at x (m), x not
- * below the last call's; the source's errors pass through. */
+ * vertices within width (m) of x, rebuilt every few widths of travel, as tirenv_model_stream's
+ * (a tirenv_road_window of one track). NULL when out of memory or source is NULL; _free(NULL)
+ * is a no-op. _at gives the level (m) at x (m), x not below the last call's; the source's
+ * errors pass through, and its vertices are checked as tirenv_road_window_fill checks them. */
 typedef struct tirenv_level_stream tirenv_level_stream;
 tirenv_level_stream *tirenv_level_stream_alloc(tirenv_vertex_source source, void *ctx,
                                                double width);
