@@ -18,30 +18,27 @@ fi
 dir=$(mktemp -d) || exit 1
 trap 'rm -rf "$dir"' EXIT
 fail=0
-for model in ring springs; do
-    # Case R's cleat and contact length, as the Python module's test sweeps it.
-    valgrind --error-exitcode=9 -q "$bin" envelope --model $model --cleat 0.1,0.1 \
-        --contact-length 0.28 --x-from -0.75 --x-to 0.75 --dx 0.005 --jobs 1 \
-        -o "$dir/$model.csv" 2>"$dir/err"
+# memcheck WHAT ENVELOPE-OPTIONS...: tirenv envelope under valgrind, one line of TAP.
+memcheck() {
+    what=$1
+    shift
+    valgrind --error-exitcode=9 -q "$bin" envelope "$@" --jobs 1 -o "$dir/out.csv" 2>"$dir/err"
     rc=$?
     if [ $rc -ne 0 ] || grep -q "uninitialised\|Invalid read\|Invalid write" "$dir/err"; then
-        echo "not ok - $model over case R's cleat under memcheck: exit $rc" >&2
+        echo "not ok - $what under memcheck: exit $rc" >&2
         head -n 30 "$dir/err" >&2
         fail=1
     else
-        echo "ok - $model over case R's cleat under memcheck: no error"
+        echo "ok - $what under memcheck: no error"
     fi
+}
+# Case R's cleat and contact length, as the Python module's test sweeps it.
+for model in ring springs; do
+    memcheck "$model over case R's cleat" --model $model --cleat 0.1,0.1 --contact-length 0.28 \
+        --x-from -0.75 --x-to 0.75 --dx 0.005
 done
 # The ring by Brent's method at one position: its bracket of the flat ground's load takes the
 # centre inside the ground, where ring_ground.c compared the pieces' lines it had not cast.
-valgrind --error-exitcode=9 -q "$bin" envelope --model ring --method brent --cleat 0.1,0.1 \
-    --contact-length 0.28 --x-from 0 --x-to 0 --dx 0.1 --jobs 1 -o "$dir/brent.csv" 2>"$dir/err"
-rc=$?
-if [ $rc -ne 0 ] || grep -q "uninitialised\|Invalid read\|Invalid write" "$dir/err"; then
-    echo "not ok - ring by Brent's method (the centre inside the ground) under memcheck: exit $rc" >&2
-    head -n 30 "$dir/err" >&2
-    fail=1
-else
-    echo "ok - ring by Brent's method (the centre inside the ground) under memcheck: no error"
-fi
+memcheck "ring by Brent's method (the centre inside the ground)" --model ring --method brent \
+    --cleat 0.1,0.1 --contact-length 0.28 --x-from 0 --x-to 0 --dx 0.1
 exit $fail
