@@ -72,35 +72,34 @@ compare_csv halfround-ring ring "$crg/halfround_6in.crg" "" "--x-from 49.3 --x-t
 # on the jump (h 0.76 mm apart at x = 49.773 m), Newton spent 24 evaluations at 49.93 m and
 # the secant did not converge there (this check fails with that code). Within 1e-8 m (eps_z
 # is 1e-10 m), Newton within 10 evaluations (4 now).
-hr='--model ring --load 17848 --x-from 49.75 --x-to 49.95 --dx 0.001'
-for meth in newton brent secant; do
-    run "$bin" envelope $hr --profile "$crg/halfround_6in.crg" --method $meth -o hr-$meth.csv
-    check "ring over the 6 in half-round, --method $meth: exit 0, 201 rows" \
-        '[ $rc -eq 0 ] && [ $(grep -vc "^#" hr-$meth.csv) -eq 202 ]'
-done
-paste -d, hr-newton.csv hr-brent.csv hr-secant.csv >hr.all
-check "... Newton, Brent and the secant give the same h within 1e-8 m, Newton in 10 or fewer" \
-    'awk -F, "function a(x) { return x < 0 ? -x : x }
-        NR > 1 { if (a(\$3 - \$11) > 1e-8 || a(\$3 - \$19) > 1e-8 || \$8 > 10) bad = 1 }
-        END { exit bad || NR != 202 }" hr.all'
+# three_methods WHAT NAME ROWS EVALS OPTIONS...: envelope with OPTIONS by Newton, Brent and the
+# secant into NAME-METHOD.csv, each ROWS rows; the same h within 1e-8 m, Newton within EVALS
+# evaluations a position.
+three_methods() {
+    what=$1 name=$2 rows=$3 evals=$4
+    shift 4
+    for meth in newton brent secant; do
+        run "$bin" envelope "$@" --method $meth -o $name-$meth.csv
+        check "$what, --method $meth: exit 0, $rows rows" \
+            '[ $rc -eq 0 ] && [ $(grep -vc "^#" $name-$meth.csv) -eq $((rows + 1)) ]'
+    done
+    paste -d, $name-newton.csv $name-brent.csv $name-secant.csv >$name.all
+    check "... Newton, Brent and the secant give the same h within 1e-8 m, Newton in $evals or fewer" \
+        'awk -F, "function a(x) { return x < 0 ? -x : x }
+            NR > 1 { if (a(\$3 - \$11) > 1e-8 || a(\$3 - \$19) > 1e-8 || \$8 > $evals) bad = 1 }
+            END { exit bad || NR != $rows + 1 }" $name.all'
+}
+three_methods "ring over the 6 in half-round" hr 201 10 --model ring --load 17848 \
+    --x-from 49.75 --x-to 49.95 --dx 0.001 --profile "$crg/halfround_6in.crg"
 # Brent's bracket starts at the hub on the ground (docs/models.md section 11.1): over
 # Horstwalde.crg the ring with the 205/60R15 tire at 4000 N did not settle there at
 # x = 140.27650000000003 m (the sweep from the road's start every 10 mm, -0.3335 + 14061 *
 # 0.01 m, with the bits of x that make it fail from rest), and Brent failed where Newton and
 # the secant converge. Its lower end moves halfway up while the force does not settle.
 repo=$(cd "$(dirname "$0")/../.." && pwd)
-hw="--model ring --tire $repo/data/tires/205-60R15-mfswift.tir --load 4000
-    --profile $crg/Horstwalde.crg --x-from 140.27650000000003 --x-to 140.27650000000003"
-for meth in newton brent secant; do
-    run "$bin" envelope $hw --method $meth -o hw-$meth.csv
-    check "ring over Horstwalde at x = 140.2765 m, --method $meth: exit 0, one row" \
-        '[ $rc -eq 0 ] && [ $(grep -vc "^#" hw-$meth.csv) -eq 2 ]'
-done
-paste -d, hw-newton.csv hw-brent.csv hw-secant.csv >hw.all
-check "... Newton, Brent and the secant give the same h within 1e-8 m" \
-    'awk -F, "function a(x) { return x < 0 ? -x : x }
-        NR > 1 { if (a(\$3 - \$11) > 1e-8 || a(\$3 - \$19) > 1e-8) bad = 1 }
-        END { exit bad || NR != 2 }" hw.all'
+three_methods "ring over Horstwalde at x = 140.2765 m" hw 1 100 --model ring \
+    --tire "$repo/data/tires/205-60R15-mfswift.tir" --load 4000 --profile "$crg/Horstwalde.crg" \
+    --x-from 140.27650000000003 --x-to 140.27650000000003
 # A measured-like road on level ground (the same road 2 m up: tests/cli/cli_roads_grade.sh).
 make_measured 0 measured.crg
 compare_csv measured springs measured.crg "--track 0.9" "--dx 0.002"
