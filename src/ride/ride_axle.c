@@ -151,8 +151,7 @@ typedef int (*input_at)(const void *ctx, double x, double G, double *w, double *
  * over the demo's cleat on a function (the cam and the springs under the default tire's law,
  * 434 of 1.1 million over 8), 4 on a table's segment; a jump whose two sides differ by
  * orders of magnitude can take more than the budget, and that is an error: the estimate it
- * reached is not a balance. [bottom, top] is the input's range of loads, for
- * the message. */
+ * reached is not a balance. [bottom, top] is the input's range of loads, for the message. */
 enum { FN_MAX_ITER = 100 };
 
 static int illinois(const char *name, const balance *b, input_at at, const void *ctx, double x,
@@ -206,7 +205,8 @@ typedef struct {
     double G_j, G_k, w_j, wx_j, w_k, wx_k;
 } segment;
 
-static int segment_at(const void *ctx, double x, double G, double *w, double *w_x, tirenv_diag *diag)
+static int segment_at(const void *ctx, double x, double G, double *w, double *w_x,
+                      tirenv_diag *diag)
 {
     (void)x;
     (void)diag;
