@@ -193,7 +193,7 @@ tirenv_nn_road_info tirenv_nn_road_info_of(const tirenv_nn_road *r);
 /* vehicle.h */
 typedef struct {
     char tire_file[...];
-    double tires; double k_t; double c_t; double k_s; double c_s; double m_a;
+    double tires; double k_t; double c_t; double k_s; double c_s; double m_a; ...;
 } tirenv_axle;
 typedef struct {
     double m; double I_y; double a; double b; double seat_x; double seat_h;

@@ -74,11 +74,22 @@ double tirenv_cam_vertical_load(const tirenv_cam_vertical *v, double rho);
 double tirenv_cam_vertical_deflection(const tirenv_cam_vertical *v, double load);
 double tirenv_cam_vertical_stiffness(const tirenv_cam_vertical *v, double rho);
 
+/* The law as a contact (the ride's tire force, docs/models.md section 9.3): the load (N) at
+ * deflection rho (m), 0 at rho <= 0 (a tire never pulls), and past the peak of a law with
+ * Q_FZ2 < 0 the peak load; _work its integral from 0 to rho (J), the tire's stored energy. */
+double tirenv_cam_vertical_contact(const tirenv_cam_vertical *v, double rho);
+double tirenv_cam_vertical_work(const tirenv_cam_vertical *v, double rho);
+
+/* The tire's own vertical law: its cam keys, its R0 (UNLOADED_RADIUS) and PFZ1's factor at its
+ * INFLPRES and NOMPRES; the law the cam's static deflection and the ride's tire force use. */
+tirenv_cam_vertical tirenv_tire_vertical_law(const tirenv_tire *t);
+
 /* The tangent stiffness dF_z/drho (N/m) of the tire's own vertical law above (its cam keys,
  * R0, and PFZ1's factor at its INFLPRES and NOMPRES) at the static deflection under load (N):
  * VERTICAL_STIFFNESS at FNOMIN with INFLPRES = NOMPRES, VERTICAL_STIFFNESS at every load for
- * the linear law. The ride's k_t where the vehicle gives no TIRE_STIFFNESS (docs/models.md
- * section 9.1). NAN where the law carries no such load or has no Q_FZ1 (Q_FZ2 too large). */
+ * the linear law. The ride's k_t where the vehicle gives no TIRE_STIFFNESS, for its linear
+ * checks (its tire force follows the law itself, docs/models.md section 9.1). NAN where the
+ * law carries no such load or has no Q_FZ1 (Q_FZ2 too large). */
 double tirenv_tire_vertical_stiffness(const tirenv_tire *t, double load);
 
 /* MF-Tyre's vertical law above, F_z/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 with s = rho/R0, fitted to

@@ -274,9 +274,12 @@ int tirenv_ride_direct_input(tirenv_model *m, double G0, double dx, tirenv_ride_
 
 /* The simulation with load-dependent inputs (docs/models.md section 9.5): at every evaluation
  * each axle's input is taken at the load its tires then carry, the load G of one tire that
- * balances G = max(0, G0 + k_t*(w(x, G) - z_axle) + c_t*(V*dw/dx(x, G) - dz_axle/dt)) (G0
- * its static load), solved exactly on a table (linear in G between rows) and by a bracketing
- * iteration on a function input; a tire off the ground (G = 0) follows the input at its
+ * balances G = max(0, g(G)), g the tire's load (section 9.3) at the deflection
+ * w(x, G) - z_axle from the static one and its rate V*dw/dx(x, G) - dz_axle/dt: with the
+ * vehicle's TIRE_STIFFNESS k_t, g = G0 + k_t*(w - z_axle) + c_t*(...) (G0 its static load),
+ * solved exactly on a table (linear in G between rows); with the tire file's vertical law by
+ * regula falsi on the table's segment; by the same bracketing iteration on a function input.
+ * A tire off the ground (G = 0) follows the input at its
  * lightest load (load[0], load_min), which decides where it touches down. A table of one row
  * (or rows all alike) gives tirenv_ride_run's result to round-off. Errors as tirenv_ride_run;
  * an input function's error stops the run, naming the time, and so does a function input's
@@ -290,9 +293,10 @@ int tirenv_ride_run_input(const tirenv_vehicle *v, const tirenv_ride_input *fron
                           tirenv_ride_sample out[], tirenv_diag *diag);
 
 /* The vehicle's vertical energy at a sample, J: kinetic + the tire and suspension springs'
- * energy about the static equilibrium (the preloads' work cancels gravity's). Exact for the
- * linear model, i.e. while no tire has lifted off; conserved when all damping is 0 and the
- * inputs are constant. For tests and diagnostics. */
+ * energy about the static equilibrium (the preloads' work cancels gravity's; a tire file's
+ * vertical law by its own integral, a linear k_t as k_t*d^2/2). Exact while no tire has
+ * lifted off; conserved when all damping is 0 and the inputs are constant. NAN where an
+ * axle's law carries no static load. For tests and diagnostics. */
 double tirenv_ride_energy(const tirenv_vehicle *v, const tirenv_ride_sample *s);
 
 TIRENV_END_DECLS

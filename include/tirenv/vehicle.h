@@ -6,25 +6,32 @@
 
 #include "tirenv/decls.h"
 #include <stddef.h>
+#include "tirenv/cam.h"
 #include "tirenv/error.h"
 #include "tirenv/tire.h"
 
 TIRENV_BEGIN_DECLS
 
-/* One axle: its tires as vertical spring-dampers in parallel (Kelvin-Voigt) acting on the
- * axle's effective profile, and, for the front axle, an optional suspension between the body
- * and an unsprung axle mass. Tires may lift off: a tire never pulls. */
+/* One axle: its tires as vertical springs and dampers in parallel (Kelvin-Voigt) acting on
+ * the axle's effective profile, each spring its tire file's vertical law or a linear k_t, and,
+ * for the front axle, an optional suspension between the body and an unsprung axle mass.
+ * Tires may lift off: a tire never pulls. */
 typedef struct {
     char tire_file[512];   /* the .tir file of the axle's tires (for the enveloping models),
                             * as fopen takes it (in a vehicle file a relative path is relative
                             * to that file; the reader puts the file's directory before it);
                             * "" = the built-in default tire */
     double tires;          /* tires on the axle (usually 2; 4 for duals) */
-    double k_t;            /* vertical stiffness of one tire, N/m; NAN: its tire file's, the
-                            * tangent of its vertical law at the static load (tirenv_vehicle_
-                            * tires sets it) */
+    double k_t;            /* vertical stiffness of one tire, N/m, its linear spring; NAN:
+                            * its tire file's vertical law (tirenv_vehicle_tires sets law, and
+                            * k_t the law's tangent at the static load, which the ride's linear
+                            * checks use) */
     double c_t;            /* vertical damping of one tire, N*s/m; NAN: its tire file's
                             * VERTICAL_DAMPING (tirenv_vehicle_tires sets it) */
+    tirenv_cam_vertical law; /* the tire's vertical law F_z(rho) the ride's tire force
+                            * follows (docs/models.md section 9.3) where law.factor > 0, set by
+                            * tirenv_vehicle_tires; law.factor = 0 (as the default and a
+                            * vehicle file leave it): none, the linear spring k_t */
     double k_s;            /* suspension stiffness of the axle, N/m; 0 = rigid axle (the axle
                             * moves with the body and its mass is part of the body's) */
     double c_s;            /* suspension damping of the axle, N*s/m */
@@ -50,13 +57,14 @@ typedef struct {
  * k_t and c_t are their tire file's (NAN until tirenv_vehicle_tires). */
 tirenv_vehicle tirenv_vehicle_default(void);
 
-/* Sets each axle's k_t and c_t that are NAN from the axle's tire (front, rear: the tires of
- * its TIRE_FILE, read by the caller): k_t = tirenv_tire_vertical_stiffness at the axle's
- * static tire load (tirenv_vehicle_tire_load), c_t = the tire's VERTICAL_DAMPING (k_z). A
- * value the vehicle gives is kept. TIRENV_EINVAL naming the axle's key ("FRONT_AXLE.
- * TIRE_DAMPING") where the tire has no VERTICAL_DAMPING either, or its vertical law no
- * positive stiffness at that load; that axle is then left as it was. The ride refuses a
- * vehicle with a NAN left (tirenv_ride_run). */
+/* Gives each axle whose k_t is NAN, or that already follows a law, its tire's vertical law
+ * (front, rear: the tires of its TIRE_FILE, read by the caller): law =
+ * tirenv_tire_vertical_law, k_t = tirenv_tire_vertical_stiffness at the axle's static tire
+ * load (tirenv_vehicle_tire_load), its tangent there; and each c_t that is NAN the tire's
+ * VERTICAL_DAMPING (k_z). A k_t or c_t the vehicle gives is kept (and its axle's law stays
+ * none). TIRENV_EINVAL naming the axle's key ("FRONT_AXLE.TIRE_DAMPING") where the tire has no
+ * VERTICAL_DAMPING either, or its vertical law no positive stiffness at that load; that axle
+ * is then left as it was. The ride refuses a vehicle with a NAN left (tirenv_ride_run). */
 int tirenv_vehicle_tires(tirenv_vehicle *v, const tirenv_tire *front, const tirenv_tire *rear,
                          tirenv_diag *diag);
 

@@ -30,11 +30,11 @@ def _axle(axle):
 class Vehicle:
     """The pitch-plane tractor: Vehicle() the built-in default (data/vehicles/tractor.veh),
     Vehicle(path) a vehicle file, set={"MASS": 5200, "FRONT_AXLE.TIRES": 4} overrides.
-    Each axle's tires are its TIRE_FILE's, read once here: their spring k_t the tangent of
-    the file's vertical law at the axle's static load and their damper c_t its
-    VERTICAL_DAMPING, unless the vehicle gives TIRE_STIFFNESS or TIRE_DAMPING (the same
-    library call as 'tirenv ride', tirenv_vehicle_tires; docs/models.md section 9.1);
-    tire_spring(axle) says which."""
+    Each axle's tires are its TIRE_FILE's, read once here: their spring the file's vertical
+    law F_z(rho) (k_t its tangent at the static load, for the linear checks), their damper
+    c_t its VERTICAL_DAMPING, unless the vehicle gives TIRE_STIFFNESS (a linear spring) or
+    TIRE_DAMPING (the same library call as 'tirenv ride', tirenv_vehicle_tires;
+    docs/models.md section 9.1); tire_spring(axle) says which."""
 
     def __init__(self, path=None, set=None):
         self._v = ffi.new("tirenv_vehicle *")
@@ -70,8 +70,9 @@ class Vehicle:
 
     def tire_spring(self, axle):
         """One tire of the axle as the ride has it: a dict of k_t (N/m) and c_t (N*s/m), and
-        k_t_from, c_t_from: "tire file" (its vertical law at the static load, its
-        VERTICAL_DAMPING) or "vehicle file" (TIRE_STIFFNESS, TIRE_DAMPING, or set=)."""
+        k_t_from, c_t_from: "tire file" (its vertical law, which the force follows, k_t its
+        tangent at the static load; its VERTICAL_DAMPING) or "vehicle file" (TIRE_STIFFNESS,
+        a linear spring; TIRE_DAMPING; or set=)."""
         i = _axle(axle)
         ax, given = (self._v.rear, self._given.rear) if i else (self._v.front, self._given.front)
         return {"k_t": ax.k_t, "c_t": ax.c_t,

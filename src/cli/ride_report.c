@@ -73,26 +73,28 @@ static void write_differences(FILE *fp, const ride_options *r, const ride_result
         }
 }
 
-/* Each axle's tires as the runs had them, and where k_t and c_t came from: one tire file is
- * one tire, its enveloping and its spring (docs/models.md section 9.1). */
+/* Each axle's tires as the runs had them, and where their spring and c_t came from: one tire
+ * file is one tire, its enveloping and its spring (docs/models.md section 9.1). */
 static void write_tires(FILE *fp, const tirenv_vehicle *v, const tirenv_vehicle *given,
                         const char tire_path[2][1024], const double load[2])
 {
     fputs("\n## The vehicle's tires\n\n"
-          "Each tire a spring k_t and a damper c_t (docs/models.md section 9.1): the tire "
-          "file's\nown (the tangent of its vertical law at the static load; its "
-          "VERTICAL_DAMPING) unless\nthe vehicle file gives TIRE_STIFFNESS or TIRE_DAMPING.\n\n"
-          "| axle | tire file | tires | static load N | k_t N/m | k_t from | c_t N*s/m | "
-          "c_t from |\n|---|---|---:|---:|---:|---|---:|---|\n", fp);
+          "Each tire a spring and a damper c_t (docs/models.md section 9.1): the tire file's\n"
+          "own (its vertical law F_z(rho), whose tangent at the static load is k_t, which\n"
+          "the linear checks use; its VERTICAL_DAMPING) unless the vehicle file gives\n"
+          "TIRE_STIFFNESS (a linear spring k_t) or TIRE_DAMPING.\n\n"
+          "| axle | tire file | tires | static load N | spring | k_t N/m | c_t N*s/m | "
+          "c_t from |\n|---|---|---:|---:|---|---:|---:|---|\n", fp);
     for (int axle = 0; axle < 2; ++axle) {
         const tirenv_axle *ax = axle ? &v->rear : &v->front;
         const tirenv_axle *g = axle ? &given->rear : &given->front;
         const char *slash = strrchr(tire_path[axle], '/');  /* the file's name: no local path */
-        fprintf(fp, "| %s | %s | %g | %.0f | %.0f | %s%.0f%s | %.0f | %s |\n",
+        fprintf(fp, "| %s | %s | %g | %.0f | %s | %.0f | %.0f | %s |\n",
                 axle ? "rear" : "front", slash ? slash + 1 : tire_path[axle], ax->tires,
-                load[axle], ax->k_t,
-                isnan(g->k_t) ? "tire file's vertical law at " : "vehicle file (",
-                isnan(g->k_t) ? load[axle] : g->k_t, isnan(g->k_t) ? " N" : " N/m)", ax->c_t,
+                load[axle],
+                ax->law.factor > 0 ? "tire file's vertical law (k_t its tangent at the load)"
+                                   : "vehicle file's TIRE_STIFFNESS (linear)",
+                ax->k_t, ax->c_t,
                 isnan(g->c_t) ? "tire file's VERTICAL_DAMPING" : "vehicle file's TIRE_DAMPING");
     }
 }

@@ -79,14 +79,16 @@ static const tirenv_propfile__schema veh_schema = {
     .preamble = veh_preamble,
 };
 
-/* A file without TIRE_STIFFNESS or TIRE_DAMPING leaves them NAN (the tire file's), not the
- * values of the vehicle it was read over: another TIRE_FILE must not keep the old tire's. */
+/* A file without TIRE_STIFFNESS or TIRE_DAMPING leaves them NAN (the tire file's) and no
+ * law, not the values of the vehicle it was read over: another TIRE_FILE must not keep the
+ * old tire's. */
 int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag)
 {
     if (!v)
         return tirenv_propfile__read(&veh_schema, path, v, diag);
     const tirenv_axle front = v->front, rear = v->rear;
     v->front.k_t = v->front.c_t = v->rear.k_t = v->rear.c_t = NAN;
+    v->front.law = v->rear.law = (tirenv_cam_vertical){0};
     const int status = tirenv_propfile__read(&veh_schema, path, v, diag);
     if (status) {
         v->front = front;

@@ -87,6 +87,37 @@ double tirenv_cam_vertical_stiffness(const tirenv_cam_vertical *v, double rho)
            (tirenv_cam_vertical_q1(v) + 2 * v->q_fz2 * rho / v->R0);
 }
 
+/* Where a law with Q_FZ2 < 0 peaks, s = -Q_FZ1/(2*Q_FZ2) (m); infinite for the others. */
+static double vertical_peak(const tirenv_cam_vertical *v)
+{
+    if (vertical_linear(v) || !(v->q_fz2 < 0))
+        return INFINITY;
+    return -v->R0 * tirenv_cam_vertical_q1(v) / (2 * v->q_fz2);
+}
+
+/* A tire off the ground carries nothing, and one pressed past a Q_FZ2 < 0 law's peak holds
+ * the peak: a load falling with the deflection would let it sink without end. */
+double tirenv_cam_vertical_contact(const tirenv_cam_vertical *v, double rho)
+{
+    if (!(rho > 0))
+        return 0;
+    return tirenv_cam_vertical_load(v, fmin(rho, vertical_peak(v)));
+}
+
+/* The law's integral in closed form: f*c_z*rho^2/2, or f*FNOMIN*R0*(Q_FZ1*s^2/2 +
+ * Q_FZ2*s^3/3); past a peak, the peak load times the deflection beyond it. */
+double tirenv_cam_vertical_work(const tirenv_cam_vertical *v, double rho)
+{
+    if (!(rho > 0))
+        return 0;
+    if (vertical_linear(v))
+        return 0.5 * v->factor * v->c_z * rho * rho;
+    const double rho_p = fmin(rho, vertical_peak(v)), s = rho_p / v->R0;
+    const double W = v->factor * v->fnomin * v->R0 *
+                     (0.5 * tirenv_cam_vertical_q1(v) * s * s + v->q_fz2 * s * s * s / 3);
+    return W + tirenv_cam_vertical_load(v, rho_p) * (rho - rho_p);
+}
+
 /* scale*2*g evaluated as (scale*2)*g: the deflection R0*2*g/(...) the cam always computed. */
 double tirenv_cam_vertical_root(double scale, double q1, double q2, double g)
 {
@@ -227,8 +258,13 @@ static double cam_stiffness_at(const tirenv_tire *t, double rho)
     return tirenv_cam_vertical_stiffness(&v, rho);
 }
 
+tirenv_cam_vertical tirenv_tire_vertical_law(const tirenv_tire *t)
+{
+    return cam_vertical(t);
+}
+
 /* The law's own stiffness at its own deflection under the load: one law for the cam's static
- * deflection and the ride's tire spring, so that one tire file is one tire for both. */
+ * deflection and the ride's linear checks, so that one tire file is one tire for both. */
 double tirenv_tire_vertical_stiffness(const tirenv_tire *t, double load)
 {
     return cam_stiffness_at(t, cam_deflection_at(t, load));

@@ -5,8 +5,11 @@
  * States, displacements from the static equilibrium on flat ground (small pitch angles):
  *   y = (z, vz, theta, vtheta[, z_a, vz_a])      (the last two with a suspended front axle)
  * Body points above the axles: z_fb = z + a*theta, z_rb = z - b*theta.
- * Tires (n per axle, Kelvin-Voigt, never pulling), with the static axle loads F0:
- *   F_tire = max(0, F0 + n*(k_t*(w - z_axle) + c_t*(dw/dt - dz_axle/dt)))
+ * Tires (n per axle, Kelvin-Voigt, never pulling; ride_tire.c), with the static tire load G0:
+ *   F_tire = n*(F_z(rho0 + w - z_axle) + c_t*(dw/dt - dz_axle/dt)) while rho0 + w - z_axle > 0,
+ *            else 0, and never below 0,
+ * F_z the tire file's vertical law and rho0 its deflection under G0; or, where the vehicle
+ * gives TIRE_STIFFNESS k_t, F_tire = max(0, n*G0 + n*(k_t*(w - z_axle) + c_t*(...))).
  * A suspended front axle carries the body through F_s = F_s0 + k_s*(z_a - z_fb) + c_s*(...):
  *   m z'' = F_front_on_body + F_rear - m g,   I theta'' = a F_front_on_body - b F_rear,
  *   m_a z_a'' = F_tire_front - F_s - m_a g.
@@ -24,6 +27,7 @@ typedef struct {
     const tirenv_vehicle *v;
     double V, x_front0, l;
     double G0_front, G0_rear;  /* static load of one tire of each axle, N */
+    tirenv_ride__tire tire_front, tire_rear;
     double F0_susp;            /* static load of the suspension, N */
     int suspended;
     tirenv_ride__input front, rear;
@@ -41,11 +45,11 @@ static int evaluate(ride *r, double t, const double y[], double dydt[], tirenv_r
     const double z_rb = z - v->b * th, vz_rb = vz - v->b * vth;
     const double z_a = r->suspended ? y[4] : z_fb, vz_a = r->suspended ? y[5] : vz_fb;
     double w_f, wd_f, w_r, wd_r, F_f, F_r;
-    int status = tirenv_ride__axle(&r->front, &v->front, r->G0_front, r->V, x_f, z_a, vz_a,
-                                   &w_f, &wd_f, &F_f, &r->diag);
+    int status = tirenv_ride__axle(&r->front, &r->tire_front, r->V, x_f, z_a, vz_a, &w_f,
+                                   &wd_f, &F_f, &r->diag);
     if (!status)
-        status = tirenv_ride__axle(&r->rear, &v->rear, r->G0_rear, r->V, x_f - r->l, z_rb,
-                                   vz_rb, &w_r, &wd_r, &F_r, &r->diag);
+        status = tirenv_ride__axle(&r->rear, &r->tire_rear, r->V, x_f - r->l, z_rb, vz_rb,
+                                   &w_r, &wd_r, &F_r, &r->diag);
     if (status)
         return r->status = status;
     double F_body = F_f, az_a = 0;
@@ -204,7 +208,13 @@ static int run(const tirenv_vehicle *v, ride *r, const tirenv_ride_settings *s,
     tirenv_diag_clear(&r->diag);
     double y[TIRENV_RIDE__ODE_DIM];
     size_t dim = 4;
-    int status = steady_start(r, y, &dim);
+    int status = tirenv_ride__tire_set(&r->tire_front, &v->front, r->G0_front,
+                                       "FRONT_AXLE.TIRE_FILE", &r->diag);
+    if (!status)
+        status = tirenv_ride__tire_set(&r->tire_rear, &v->rear, r->G0_rear,
+                                       "REAR_AXLE.TIRE_FILE", &r->diag);
+    if (!status)
+        status = steady_start(r, y, &dim);
     if (status) {
         if (diag)
             *diag = r->diag;
@@ -333,14 +343,19 @@ int tirenv_ride_run_input(const tirenv_vehicle *v, const tirenv_ride_input *fron
     return status ? status : run_with(v, NULL, NULL, NULL, NULL, front, rear, s, out, diag);
 }
 
+/* The springs' energy by tirenv_ride__tire_energy: a law whose deflection under the static
+ * load is not found makes it NAN. */
 double tirenv_ride_energy(const tirenv_vehicle *v, const tirenv_ride_sample *s)
 {
     const double z_fb = s->z + v->a * s->theta, z_rb = s->z - v->b * s->theta;
     const int suspended = v->front.k_s > 0;
     const double d_f = s->w_front - (suspended ? s->z_a : z_fb), d_r = s->w_rear - z_rb;
+    tirenv_ride__tire t_f, t_r;
+    if (tirenv_ride__tire_set(&t_f, &v->front, tirenv_vehicle_tire_load(v, 0), "", NULL) ||
+        tirenv_ride__tire_set(&t_r, &v->rear, tirenv_vehicle_tire_load(v, 1), "", NULL))
+        return NAN;
     double E = 0.5 * v->m * s->vz * s->vz + 0.5 * v->I_y * s->vtheta * s->vtheta +
-               0.5 * v->front.tires * v->front.k_t * d_f * d_f +
-               0.5 * v->rear.tires * v->rear.k_t * d_r * d_r;
+               tirenv_ride__tire_energy(&t_f, d_f) + tirenv_ride__tire_energy(&t_r, d_r);
     if (suspended) {
         const double d_s = s->z_a - z_fb;
         E += 0.5 * v->front.m_a * s->vz_a * s->vz_a + 0.5 * v->front.k_s * d_s * d_s;

@@ -3,18 +3,24 @@
  * the tires then carry. SPDX-License-Identifier: Apache-2.0
  *
  * The load a tire carries depends on the input, and the input on the load: per tire
- *     G = max(0, g(G)),   g(G) = G0 + k_t*(w(x, G) - z_a) + c_t*(V*dw/dx(x, G) - dz_a/dt).
- * On a table, w is linear in G between two rows, so g is too, and the balancing load on a
- * segment of rows is where the line g(G) - G crosses zero: exact, two rows per segment. The
- * search starts from the segment of the last evaluation and walks towards the sign change,
- * so it usually reads two rows. With phi(G) = g(G) - G decreasing (the tire's effective height
- * changing with its load by less than 1/k_t per N: on the default tractor it is about 0.1 of
- * that) the balance is unique and the start changes no result; otherwise the walk ends at the
- * balance nearest its start. Below the lightest row the input is the lightest row's; a tire
- * whose g there is not positive has lifted off (G = 0) and touches down where that row lets
- * it. Above the heaviest row the heaviest row's. The damper acts on the rolling rate
- * V*dw/dx at the load found; the rate at which the load itself moves the effective road is
- * left out (it would make the tire force depend on its own rate of change). */
+ *     G = max(0, g(G)),   g(G) = the tire's load (ride_tire.c) at the deflection
+ *     w(x, G) - z_a from the static one and its rate V*dw/dx(x, G) - dz_a/dt.
+ * On a table, w is linear in G between two rows. With the vehicle's linear spring k_t,
+ * g(G) = G0 + k_t*(w - z_a) + c_t*(...) is then linear too, and the balancing load on a
+ * segment of rows is where the line g(G) - G crosses zero: exact, two rows per segment. With
+ * the tire file's vertical law g curves on the segment (convex for Q_FZ2 > 0, so one zero
+ * between a positive and a negative end), and regula falsi, whose first estimate is that
+ * line's zero, finds it to 1e-9 of G0. The search starts from the segment of the last
+ * evaluation and walks towards the sign change, so it usually reads two rows. With
+ * phi(G) = g(G) - G decreasing (the tire's effective height changing with its load by less
+ * than 1/k per N, k the spring's stiffness there: on the default tractor it is about 0.1 of
+ * that at the static load) the balance is unique and the start changes no result; otherwise
+ * the walk ends at the balance nearest its start. Below the lightest row the input is the
+ * lightest row's; a tire whose g there is not positive has lifted off (G = 0) and touches
+ * down where that row lets it. Above the heaviest row the heaviest row's. The damper acts on
+ * the rolling rate V*dw/dx at the load found; the rate at which the load itself moves the
+ * effective road is left out (it would make the tire force depend on its own rate of
+ * change). */
 #include "ride/ride_impl.h"
 
 #include <math.h>
@@ -123,27 +129,97 @@ static void track_at(const tirenv_ride__input *in, double x, double *w, double *
     row_at(in, 0, &p, w, w_x);
 }
 
-/* The tire force of a track, as the ride has always computed it. */
-static double tire_force(const tirenv_axle *ax, double F0, double w, double w_dot, double z,
-                         double z_dot)
-{
-    const double F = F0 + ax->tires * (ax->k_t * (w - z) + ax->c_t * (w_dot - z_dot));
-    return F > 0 ? F : 0;
-}
-
 /* What a tire's load would be with the input w, w_x: g of the file's comment. */
 typedef struct {
-    double G0, k, c, V, z, zd;
+    const tirenv_ride__tire *t;
+    double V, z, zd;
 } balance;
 
 static double g_of(const balance *b, double w, double w_x)
 {
-    return b->G0 + b->k * (w - b->z) + b->c * (b->V * w_x - b->zd);
+    return tirenv_ride__tire_load(b->t, w - b->z, b->V * w_x - b->zd);
+}
+
+/* The input at a load G (N) of one tire: a function's, or a table's on one segment of rows. */
+typedef int (*input_at)(const void *ctx, double x, double G, double *w, double *w_x,
+                        tirenv_diag *diag);
+
+/* The balance phi(G) = g(G) - G = 0 bracketed by phi(lo) = f_lo > 0 > phi(hi) = f_hi, by the
+ * Illinois variant of regula falsi, to 1e-9 of the static load: far below anything a load
+ * changes in a ride; or until the bracket is 1e-12 of top (the heaviest load) wide (a balance
+ * on a jump of phi, which the bracket closes in on). The models take at most 13 iterations
+ * over the demo's cleat on a function (the cam and the springs under the default tire's law,
+ * 434 of 1.1 million over 8), 4 on a table's segment; a jump whose two sides differ by
+ * orders of magnitude can take more than the budget, and that is an error: the estimate it
+ * reached is not a balance. [bottom, top] is the input's range of loads, for the message. */
+enum { FN_MAX_ITER = 100 };
+
+static int illinois(const char *name, const balance *b, input_at at, const void *ctx, double x,
+                    double lo, double hi, double f_lo, double f_hi, double bottom, double top,
+                    double *w, double *w_x, double *G, tirenv_diag *diag)
+{
+    const double tol = 1e-9 * b->t->G0, width = 1e-12 * top;
+    int side = 0, status;
+    double c = lo, fc = f_lo, wc, wxc;
+    for (int it = 0; it < FN_MAX_ITER; ++it) {
+        c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if (!(c > lo && c < hi))
+            c = 0.5 * (lo + hi);
+        if ((status = at(ctx, x, c, &wc, &wxc, diag)))
+            return status;
+        fc = g_of(b, wc, wxc) - c;
+        if (fabs(fc) <= tol || hi - lo <= width) {
+            *w = wc;
+            *w_x = wxc;
+            *G = c;
+            return TIRENV_OK;
+        }
+        if (fc > 0) {
+            lo = c;
+            f_lo = fc;
+            if (side == 1)
+                f_hi *= 0.5;
+            side = 1;
+        } else {
+            hi = c;
+            f_hi = fc;
+            if (side == -1)
+                f_lo *= 0.5;
+            side = -1;
+        }
+    }
+    tirenv_error(diag, TIRENV_ENOCONV, "", 0, name,
+                 "the load G of one tire that balances its input at x = %.6g m, "
+                 "G = max(0, g(G)), not found in %d iterations of regula falsi: G in "
+                 "[%.10g, %.10g] N (%.3g N wide; load range [%g, %g] N), g(G) - G = %.3g N at "
+                 "G = %.10g N; expected |g(G) - G| <= %.3g N or a bracket <= %.3g N (does "
+                 "the input jump with the load?)",
+                 x, FN_MAX_ITER, lo, hi, hi - lo, bottom, top, fc, c, tol, width);
+    /* The code itself, not tirenv_error's value: GCC cannot see that one is non-zero, and
+     * would take the caller's unset w_x and G as maybe used. */
+    return TIRENV_ENOCONV;
+}
+
+/* A table's segment of rows j, j + 1 at one spot: w linear in the load between them. */
+typedef struct {
+    double G_j, G_k, w_j, wx_j, w_k, wx_k;
+} segment;
+
+static int segment_at(const void *ctx, double x, double G, double *w, double *w_x,
+                      tirenv_diag *diag)
+{
+    (void)x;
+    (void)diag;
+    const segment *sg = ctx;
+    const double s = (G - sg->G_j) / (sg->G_k - sg->G_j);
+    *w = sg->w_j + s * (sg->w_k - sg->w_j);
+    *w_x = sg->wx_j + s * (sg->wx_k - sg->wx_j);
+    return TIRENV_OK;
 }
 
 /* The balance on a table: see the file's comment. */
-static void table_axle(tirenv_ride__input *in, const balance *b, double x, double *w,
-                       double *w_x, double *G)
+static int table_axle(tirenv_ride__input *in, const balance *b, double x, double *w,
+                      double *w_x, double *G, tirenv_diag *diag)
 {
     const tirenv_ride_table *t = in->table;
     const size_t m = t->m;
@@ -152,7 +228,7 @@ static void table_axle(tirenv_ride__input *in, const balance *b, double x, doubl
         row_at(in, 0, &p, w, w_x);
         const double g = g_of(b, *w, *w_x);
         *G = g > 0 ? g : 0;
-        return;
+        return TIRENV_OK;
     }
     size_t j = in->hint < m - 1 ? in->hint : m - 2;
     double wj, wxj, wk, wxk;  /* rows j and k = j + 1 */
@@ -188,25 +264,31 @@ static void table_axle(tirenv_ride__input *in, const balance *b, double x, doubl
             row_at(in, j + 1, &p, &wk, &wxk);
             continue;
         }
-        /* phi_j >= 0 >= phi_k: g - G is a line on the segment, its zero the balance. */
+        /* phi_j >= 0 >= phi_k: with the linear spring g - G is a line on the segment, its
+         * zero the balance; the law's g curves, and regula falsi follows it from there. */
+        in->hint = j;
+        if (b->t->has_law && phi_j > 0 && phi_k < 0) {
+            const segment sg = {t->load[j], t->load[j + 1], wj, wxj, wk, wxk};
+            return illinois(in->name, b, segment_at, &sg, x, t->load[j], t->load[j + 1],
+                            phi_j, phi_k, t->load[0], t->load[m - 1], w, w_x, G, diag);
+        }
         const double s = phi_j > phi_k ? phi_j / (phi_j - phi_k) : 0;
         *G = t->load[j] + s * (t->load[j + 1] - t->load[j]);
         *w = wj + s * (wk - wj);
         *w_x = wxj + s * (wxk - wxj);
-        break;
+        return TIRENV_OK;
     }
     in->hint = j;
+    return TIRENV_OK;
 }
 
-/* The balance on a function, by the Illinois variant of regula falsi on phi(G) = g(G) - G
- * over [load_min, load_max], to 1e-9 of the static load: far below anything a load changes
- * in a ride; or until the bracket is 1e-12 of load_max wide (a balance on a jump of phi,
- * which the bracket closes in on). The models take at most 26 iterations over the demo's
- * cleat (the cam and the springs, most under 8); a jump whose two sides differ by orders of
- * magnitude can take more than the budget, and that is an error: the estimate it reached
- * is not a balance. */
-enum { FN_MAX_ITER = 100 };
+static int fn_at(const void *ctx, double x, double G, double *w, double *w_x, tirenv_diag *diag)
+{
+    const tirenv_ride_input *f = ctx;
+    return f->fn(f->ctx, x, G, w, w_x, diag);
+}
 
+/* The balance on a function over [load_min, load_max], by illinois. */
 static int fn_axle(tirenv_ride__input *in, const balance *b, double x, double *w, double *w_x,
                    double *G, tirenv_diag *diag)
 {
@@ -231,69 +313,28 @@ static int fn_axle(tirenv_ride__input *in, const balance *b, double x, double *w
         *G = f_hi + hi;
         return TIRENV_OK;
     }
-    const double tol = 1e-9 * b->G0, width = 1e-12 * f->load_max;
-    int side = 0;
-    double c = lo, fc = f_lo, wc = w_lo, wxc = wx_lo;
-    for (int it = 0; it < FN_MAX_ITER; ++it) {
-        c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if (!(c > lo && c < hi))
-            c = 0.5 * (lo + hi);
-        if ((status = f->fn(f->ctx, x, c, &wc, &wxc, diag)))
-            return status;
-        fc = g_of(b, wc, wxc) - c;
-        if (fabs(fc) <= tol || hi - lo <= width) {
-            *w = wc;
-            *w_x = wxc;
-            *G = c;
-            return TIRENV_OK;
-        }
-        if (fc > 0) {
-            lo = c;
-            f_lo = fc;
-            if (side == 1)
-                f_hi *= 0.5;
-            side = 1;
-        } else {
-            hi = c;
-            f_hi = fc;
-            if (side == -1)
-                f_lo *= 0.5;
-            side = -1;
-        }
-    }
-    tirenv_error(diag, TIRENV_ENOCONV, "", 0, in->name,
-                 "the load G of one tire that balances its input at x = %.6g m, "
-                 "G = max(0, g(G)), not found in %d iterations of regula falsi: G in "
-                 "[%.10g, %.10g] N (%.3g N wide; load range [%g, %g] N), g(G) - G = %.3g N at "
-                 "G = %.10g N; expected |g(G) - G| <= %.3g N or a bracket <= %.3g N (does "
-                 "the input jump with the load?)",
-                 x, FN_MAX_ITER, lo, hi, hi - lo, f->load_min, f->load_max, fc, c, tol, width);
-    /* The code itself, not tirenv_error's value: GCC cannot see that one is non-zero, and
-     * would take the caller's unset w_x and G as maybe used. */
-    return TIRENV_ENOCONV;
+    return illinois(in->name, b, fn_at, f, x, lo, hi, f_lo, f_hi, f->load_min,
+                    f->load_max, w, w_x, G, diag);
 }
 
-int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, double V,
-                      double x, double z_a, double zd_a, double *w, double *w_dot, double *F,
+int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_ride__tire *t, double V, double x,
+                      double z_a, double zd_a, double *w, double *w_dot, double *F,
                       tirenv_diag *diag)
 {
     double w_x, G;
     if (in->kind == TIRENV_RIDE__TRACK) {
         track_at(in, x, w, &w_x);
         *w_dot = V * w_x;
-        *F = tire_force(ax, ax->tires * G0, *w, *w_dot, z_a, zd_a);
+        *F = tirenv_ride__tire_force(t, *w - z_a, *w_dot - zd_a);
         return TIRENV_OK;
     }
-    const balance b = {.G0 = G0, .k = ax->k_t, .c = ax->c_t, .V = V, .z = z_a, .zd = zd_a};
-    if (in->kind == TIRENV_RIDE__TABLE) {
-        table_axle(in, &b, x, w, &w_x, &G);
-    } else {
-        const int status = fn_axle(in, &b, x, w, &w_x, &G, diag);
-        if (status)
-            return status;
-    }
+    const balance b = {.t = t, .V = V, .z = z_a, .zd = zd_a};
+    const int status = in->kind == TIRENV_RIDE__TABLE ? table_axle(in, &b, x, w, &w_x, &G, diag)
+                                                      : fn_axle(in, &b, x, w, &w_x, &G, diag);
+    if (status)
+        return status;
     *w_dot = V * w_x;
-    *F = ax->tires * G;
+    *F = t->n * G;
     return TIRENV_OK;
 }
 

@@ -9,7 +9,8 @@
 #include "core/eigen.h"
 
 /* The largest |lambda| of the linear system with every tire on the ground (lift-off only
- * removes stiffness and damping). Generalised coordinates q = (z, theta[, z_a]), mass
+ * removes stiffness and damping), linearised at the static loads: a tire file's spring, whose
+ * force follows its vertical law (ride_tire.c), enters as that law's tangent k_t there. Generalised coordinates q = (z, theta[, z_a]), mass
  * matrix M, and each spring-damper adds k*e*e^T to K and c*e*e^T to C, with e the change of
  * its length per unit q: a rigid front axle's tires e = (1, a), the rear's (1, -b); a
  * suspended front axle's tires e = (0, 0, 1) and its suspension (1, a, -1). The state matrix
@@ -76,15 +77,17 @@ int tirenv_ride__rk4_check(const tirenv_vehicle *v, double h, double dt, size_t 
         return status;
     return tirenv_error(diag, TIRENV_ERANGE, "", 0, "dt",
                         "RK4's step %g s (dt %g s in %zu substeps) is too long for the "
-                        "vehicle's fastest mode, |lambda| = %.4g 1/s (%.4g Hz): h*|lambda| = "
+                        "vehicle's fastest mode (linear, each tire's spring its tangent at the "
+                        "static load), |lambda| = %.4g 1/s (%.4g Hz): h*|lambda| = "
                         "%.3g exceeds %g, where RK4 stays within about 1 %% (it is unstable "
                         "past 2.8); use the adaptive rk8pd solver, or dt of at most %.3g s",
                         h, dt, n_sub, lambda, lambda / (2 * M_PI), h * lambda,
                         RK4_MAX_H_LAMBDA, RK4_MAX_H_LAMBDA / lambda);
 }
 
-/* The tire forces are F0 + n*k_t*(w - z): a static load F0 is rounded to F0*DBL_EPSILON, the
- * force of a deflection of d0*DBL_EPSILON with d0 = F0/(n*k_t) the static deflection. Beyond
+/* The tire forces are F0 + n*k_t*(w - z), to first order under a tire file's law (k_t its
+ * tangent at the static load): a static load F0 is rounded to F0*DBL_EPSILON, the force of a
+ * deflection of d0*DBL_EPSILON with d0 = F0/(n*k_t) the static deflection. Beyond
  * RESOLUTION_M (1 um, finer than any road input) the dynamic forces drown in the rounding of
  * the static ones: MASS = 1e30 left every seat acceleration exactly 0 (a crest factor of
  * 0/0). Such a vehicle, whose tires would sink d0 > 4.5e9 m, is refused. */

@@ -30,6 +30,35 @@ typedef struct {
     size_t hint;           /* a table's segment of rows where the last load was found */
 } tirenv_ride__input;
 
+/* One tire of an axle as the ride's force has it (ride_tire.c, docs/models.md section 9.3):
+ * the vehicle's linear spring k_t, or its tire file's vertical law about that law's
+ * deflection rho0 under the static load G0. */
+typedef struct {
+    double n;              /* tires on the axle */
+    double G0;             /* static load of one tire, N */
+    double k_t, c_t;       /* N/m (the linear spring's), N*s/m */
+    tirenv_cam_vertical law;
+    int has_law;           /* the law's force, not k_t's */
+    double rho0;           /* the law's deflection under G0, m */
+    double F_rho0;         /* the law's load there, G0 to round-off, N */
+} tirenv_ride__tire;
+
+/* Sets t for the axle ax with static tire load G0 (N); TIRENV_EINVAL, naming the field name,
+ * where the axle's law has no positive deflection under G0. */
+int tirenv_ride__tire_set(tirenv_ride__tire *t, const tirenv_axle *ax, double G0,
+                          const char *name, tirenv_diag *diag);
+
+/* The load of one tire (N, not clamped: <= 0 is off the ground) at the deflection d (m) from
+ * the static one, w - z_axle, and its rate d_dot (m/s). */
+double tirenv_ride__tire_load(const tirenv_ride__tire *t, double d, double d_dot);
+
+/* The force of all n tires, max(0, ...) of the load (N). */
+double tirenv_ride__tire_force(const tirenv_ride__tire *t, double d, double d_dot);
+
+/* The energy all n tires' springs store at deflection d beyond their static state, less the
+ * static loads' work (J): 0 at d = 0. */
+double tirenv_ride__tire_energy(const tirenv_ride__tire *t, double d);
+
 /* Sets up the input of the axle name (static storage) of one kind from exactly one of track,
  * table, fn (the others NULL);
  * TIRENV_ENOMEM, or TIRENV_EINVAL if the grid has fewer than 2 points. in->slope is
@@ -43,13 +72,13 @@ void tirenv_ride__input_free(tirenv_ride__input *in);
 double tirenv_ride__input_dx(const tirenv_ride__input *in);
 
 /* The axle's input at position x for the axle's height z_a and its rate zd_a (m, m/s) at
- * speed V, with its n tires of static load G0 each: the height w (m), its rate *w_dot
- * (m/s) and the force of all n tires *F (N, >= 0). A track: F = max(0, n*G0 + n*(k_t*(w - z)
- * + c_t*(w_dot - zd))) as it always was; a table or a function: the input at the load the
- * tires carry (tirenv_ride_run_dynamic). A function's failure is returned with diag, and
- * TIRENV_ENOCONV (field: the axle) if its balance is not found within the iteration budget. */
-int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_axle *ax, double G0, double V,
-                      double x, double z_a, double zd_a, double *w, double *w_dot, double *F,
+ * speed V, with its tires t: the height w (m), its rate *w_dot (m/s) and the force of all n
+ * tires *F (N, >= 0). A track: F = tirenv_ride__tire_force at d = w - z_a; a table or a
+ * function: the input at the load the tires carry (tirenv_ride_run_dynamic). A function's
+ * failure is returned with diag, and TIRENV_ENOCONV (field: the axle) if a balance is not
+ * found within the iteration budget. */
+int tirenv_ride__axle(tirenv_ride__input *in, const tirenv_ride__tire *t, double V, double x,
+                      double z_a, double zd_a, double *w, double *w_dot, double *F,
                       tirenv_diag *diag);
 
 /* The input's height at x at the static load G0 (N, per tire): the steady start's. */

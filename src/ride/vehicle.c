@@ -167,14 +167,16 @@ double tirenv_vehicle_tire_load(const tirenv_vehicle *v, int axle)
     return NAN;
 }
 
-/* One axle's k_t and c_t from its tire where the vehicle gives none (NAN). The stiffness is
- * the tangent of the tire's vertical law at the static load, the spring the ride linearises
- * about it (docs/models.md section 9.1); the damping MF-Tyre's VERTICAL_DAMPING. */
+/* One axle's spring and damper from its tire where the vehicle gives none (NAN): the tire's
+ * vertical law, which the ride's force follows, with k_t its tangent at the static load for
+ * the ride's linear checks (docs/models.md section 9.1); the damping MF-Tyre's
+ * VERTICAL_DAMPING. An axle that follows a law takes the new tire's, at the load it now has. */
 static int axle_tires(tirenv_axle *ax, const char *section, const tirenv_tire *t, double G0,
                       tirenv_diag *diag)
 {
     char f[64];
-    const double k_t = isnan(ax->k_t) ? tirenv_tire_vertical_stiffness(t, G0) : ax->k_t;
+    const int own = isnan(ax->k_t) || ax->law.factor > 0;
+    const double k_t = own ? tirenv_tire_vertical_stiffness(t, G0) : ax->k_t;
     const double c_t = isnan(ax->c_t) ? t->k_z : ax->c_t;
     if (isnan(c_t))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, axle_field(f, section, "TIRE_DAMPING"),
@@ -192,6 +194,8 @@ static int axle_tires(tirenv_axle *ax, const char *section, const tirenv_tire *t
                             t->cam.c_z, t->cam.fnomin, t->cam.q_fz2, G0, k_t, section);
     ax->k_t = k_t;
     ax->c_t = c_t;
+    if (own)
+        ax->law = tirenv_tire_vertical_law(t);
     return TIRENV_OK;
 }
 

@@ -207,14 +207,21 @@ check "ride: the network's rear input within its validation RMS of the ring's ($
     '[ $rc -eq 0 ] && [ -n "$rms" ] && awk -v a="$rms" -v b="$val_rms" "BEGIN { exit !(a < b) }"'
 
 # The ride's tire springs and dampers (docs/models.md 9.1): the tire file's own where the
-# vehicle gives none. The default tractor: each axle the default tire's vertical law at its own
-# static load; the user's MF-Tyre file on the rear axle: that file's linear law, 209651.5 N/m
-# at any load, and no VERTICAL_DAMPING in it: refused without the vehicle's TIRE_DAMPING.
+# vehicle gives none. The default tractor: each axle the default tire's vertical law, k_t its
+# tangent at the axle's own static load; the user's MF-Tyre file on the rear axle: that file's
+# linear law, 209651.5 N/m at any load, and no VERTICAL_DAMPING in it: refused without the
+# vehicle's TIRE_DAMPING. A vehicle's TIRE_STIFFNESS: a linear spring.
 car="$repo/data/tires/205-60R15-mfswift.tir"
+law="tire file.s vertical law (k_t its tangent at the load)"
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rt
-check "ride: comfort.md gives each axle's k_t and c_t from the tire file (311320, 342573 N/m)" \
-    '[ $rc -eq 0 ] && grep -q "^| front | default.tir | 2 | 8737 | 311321 | tire file.s vertical law at 8737 N | 3000 | tire file.s VERTICAL_DAMPING |" rt/comfort.md &&
-     grep -q "^| rear | default.tir | 2 | 13335 | 342573 | tire file.s vertical law at 13335 N |" rt/comfort.md'
+check "ride: comfort.md gives each axle's law, k_t and c_t from the tire file (311320, 342573 N/m)" \
+    '[ $rc -eq 0 ] && grep -q "^| front | default.tir | 2 | 8737 | $law | 311321 | 3000 | tire file.s VERTICAL_DAMPING |" rt/comfort.md &&
+     grep -q "^| rear | default.tir | 2 | 13335 | $law | 342573 |" rt/comfort.md'
+run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rs \
+    --set FRONT_AXLE.TIRE_STIFFNESS=300000
+check "ride --set FRONT_AXLE.TIRE_STIFFNESS: comfort.md gives that axle a linear spring, the other the law" \
+    '[ $rc -eq 0 ] && grep -q "^| front | default.tir | 2 | 8737 | vehicle file.s TIRE_STIFFNESS (linear) | 300000 | 3000 |" rs/comfort.md &&
+     grep -q "^| rear | default.tir | 2 | 13335 | $law | 342573 |" rs/comfort.md'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rc \
     --set REAR_AXLE.TIRE_FILE="$car"
 check "ride: a tire file without VERTICAL_DAMPING and no TIRE_DAMPING: exit 2 naming the axle, both keys, the file" \
@@ -224,7 +231,7 @@ check "ride: a tire file without VERTICAL_DAMPING and no TIRE_DAMPING: exit 2 na
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rc \
     --set REAR_AXLE.TIRE_FILE="$car" --set REAR_AXLE.TIRE_DAMPING=500
 check "... with the vehicle's TIRE_DAMPING: exit 0, k_t the file's 209652 N/m, c_t the vehicle's" \
-    '[ $rc -eq 0 ] && grep -q "^| rear | 205-60R15-mfswift.tir | 2 | 13335 | 209652 | tire file.s vertical law at 13335 N | 500 | vehicle file.s TIRE_DAMPING |" rc/comfort.md'
+    '[ $rc -eq 0 ] && grep -q "^| rear | 205-60R15-mfswift.tir | 2 | 13335 | $law | 209652 | 500 | vehicle file.s TIRE_DAMPING |" rc/comfort.md'
 
 # The sidewall's keys (docs/models.md 4.9): refused when negative, or a preload without a
 # stiffness, naming the key (test_springs_sidewall reads them in a file's units).
