@@ -104,9 +104,10 @@ typedef int (*tirenv_row_source)(void *ctx, double *x, double z[], int *got,
                                  tirenv_diag *diag);
 
 /* A road window: the rows of a row source read in order, holding those a moving stretch
- * [x_keep, x_need] (m) needs, from the last row before x_keep to the first after x_need, so
- * that each segment meeting the stretch lies whole in it; the rows behind go when its arrays
- * fill (a few hundred may stay), so memory is bounded by the stretch, not by the road.
+ * [x_keep, x_need] (m) needs, from the last row before x_keep (both rows of a wall there) to
+ * the first after x_need, so that each segment meeting the stretch lies whole in it, and the
+ * models see what they see over the whole road; the rows behind go when its arrays fill (a
+ * few hundred may stay), so memory is bounded by the stretch, not by the road.
  * tirenv_model_stream_tracks keeps one around the tire's reach; a caller sweeping stretches
  * of its own (several threads, each on its stretch) keeps one too. */
 typedef struct tirenv_road_window tirenv_road_window;
