@@ -25,7 +25,8 @@ tirenv_road_window *tirenv_road_window_alloc(tirenv_row_source source, void *ctx
     tirenv_road_window *w = calloc(1, sizeof *w);
     if (!w)
         return NULL;
-    *w = (tirenv_road_window){.next = source, .ctx = ctx, .tracks = n_tracks, .bof = 1};
+    *w = (tirenv_road_window){.next = source, .ctx = ctx, .tracks = n_tracks, .bof = 1,
+                              .keep = -INFINITY};
     w->z = calloc(n_tracks, sizeof *w->z);
     w->row = malloc(n_tracks * sizeof *w->row);
     if (!w->z || !w->row) {
@@ -117,6 +118,16 @@ int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
 {
     if (!w)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no road window (NULL)");
+    /* The rows behind the last stretch are gone: a stretch behind it would be covered by the
+     * flat extension of the window's first row, silently. */
+    if (!(x_keep >= w->keep))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_keep",
+                            "x_keep %g m is behind the last fill's %g m, whose rows behind it "
+                            "are dropped and not read again; expected x_keep not below it",
+                            x_keep, w->keep);
+    if (isnan(x_need))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_need", "x_need is not a number");
+    w->keep = x_keep;
     window_drop(w, x_keep);
     while (!tirenv_road_window_covers(w, x_need)) {
         double x;
