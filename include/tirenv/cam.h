@@ -89,7 +89,8 @@ tirenv_cam_vertical tirenv_tire_vertical_law(const tirenv_tire *t);
  * VERTICAL_STIFFNESS at FNOMIN with INFLPRES = NOMPRES, VERTICAL_STIFFNESS at every load for
  * the linear law. The ride's k_t where the vehicle gives no TIRE_STIFFNESS, for its linear
  * checks (its tire force follows the law itself, docs/models.md section 9.1). NAN where the
- * law carries no such load or has no Q_FZ1 (Q_FZ2 too large). */
+ * law carries no such load, has no Q_FZ1 (Q_FZ2 too large), or deflects the tire by its free
+ * radius R0 or more under it (the cam refuses that load too). */
 double tirenv_tire_vertical_stiffness(const tirenv_tire *t, double load);
 
 /* MF-Tyre's vertical law above, F_z/FNOMIN = Q_FZ1*s + Q_FZ2*s^2 with s = rho/R0, fitted to

@@ -73,9 +73,11 @@ tirenv_profile *tirenv_profile_cleat(double L, double H);          /* rectangle 
 tirenv_profile *tirenv_profile_step(double x0, double H);          /* step of H at x0 (H < 0 down) */
 tirenv_profile *tirenv_profile_trapezoid(double L_top, double L_base, double H);
 tirenv_profile *tirenv_profile_triangle(double L_base, double H);
-tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments); /* inscribed, >= 2 */
+/* Inscribed, 2 to 1e9 segments. */
+tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments);
+/* A(1-cos(2pi x/wl)), x >= 0; at least 2 points a period, at most 1e9 points in all. */
 tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double periods,
-                                    size_t points_per_period);    /* A(1-cos(2pi x/wl)), x>=0 */
+                                    size_t points_per_period);
 
 /* How finely the curved generators follow their curves. */
 typedef struct {

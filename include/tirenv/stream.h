@@ -31,7 +31,8 @@ double tirenv_level_width(const tirenv_tire *tire);
  * from a source as the sweep needs them, the whole profile never held: a window of the
  * vertices within width (m) of x, rebuilt every few widths of travel, as tirenv_model_stream's
  * (a tirenv_road_window of one track). NULL when out of memory or source is NULL; _free(NULL)
- * is a no-op. _at gives the level (m) at x (m), x not below the last call's; the source's
+ * is a no-op. _at gives the level (m) at x (m), x not below the last call's (TIRENV_EINVAL,
+ * field "x", for one below it or not a number: the ground there is dropped); the source's
  * errors pass through, and its vertices are checked as tirenv_road_window_fill checks them. */
 typedef struct tirenv_level_stream tirenv_level_stream;
 tirenv_level_stream *tirenv_level_stream_alloc(tirenv_vertex_source source, void *ctx,
@@ -104,9 +105,10 @@ typedef int (*tirenv_row_source)(void *ctx, double *x, double z[], int *got,
                                  tirenv_diag *diag);
 
 /* A road window: the rows of a row source read in order, holding those a moving stretch
- * [x_keep, x_need] (m) needs, from the last row before x_keep to the first after x_need, so
- * that each segment meeting the stretch lies whole in it; the rows behind go when its arrays
- * fill (a few hundred may stay), so memory is bounded by the stretch, not by the road.
+ * [x_keep, x_need] (m) needs, from the last row before x_keep (both rows of a wall there) to
+ * the first after x_need, so that each segment meeting the stretch lies whole in it, and the
+ * models see what they see over the whole road; the rows behind go when its arrays fill (a
+ * few hundred may stay), so memory is bounded by the stretch, not by the road.
  * tirenv_model_stream_tracks keeps one around the tire's reach; a caller sweeping stretches
  * of its own (several threads, each on its stretch) keeps one too. */
 typedef struct tirenv_road_window tirenv_road_window;
@@ -124,7 +126,9 @@ void tirenv_road_window_free(tirenv_road_window *w);
  * x_keep costs no memory.
  * Each row is checked as it comes: x or a height not finite, x going back, or a third row at
  * one x stop it with TIRENV_EINVAL naming the vertex (its 1-based index in the source, as
- * diag's line); the source's errors pass through; TIRENV_ENOMEM; TIRENV_EINVAL for w NULL. */
+ * diag's line); the source's errors pass through; TIRENV_ENOMEM; TIRENV_EINVAL for w NULL,
+ * for x_keep below the last call's or not a number (field "x_keep"), and for x_need not a
+ * number, the window left as it was. */
 int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
                             tirenv_diag *diag);
 

@@ -41,3 +41,15 @@ def test_ride_refusals():
     assert tirenv.ride(cleat, speed="10km/h", vehicle=stiff, method="rk8pd") is not None
     with pytest.raises(tirenv.TirenvError, match="outside the plausible range"):
         tirenv.Vehicle(set={"MASS": 1e30})
+
+
+def test_generator_refusals_say_why():
+    # Too many points is a reason of its own (each said 'expected all positive' or 'at least
+    # 2 segments' of sizes that were both; 10**12 chords of a cylinder asked for 16 TB).
+    with pytest.raises(tirenv.TirenvError, match="at most 1e9 points in all"):
+        tirenv.Profile.sine(0.01, 1, 1e12)
+    with pytest.raises(tirenv.TirenvError, match="at least 2 points a period"):
+        tirenv.Profile.sine(0.01, 1, 2, points_per_period=1)
+    with pytest.raises(tirenv.TirenvError, match="2 to 1e9 segments"):
+        tirenv.Profile.cylinder(0.1, segments=10**12)
+    assert len(tirenv.Profile.cylinder(0.1, segments=7)) == 8

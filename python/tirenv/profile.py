@@ -65,7 +65,7 @@ class Profile:
             segments = lib.tirenv_profile_resolution_default().cylinder_segments
         return cls._from(lib.tirenv_profile_half_cylinder(radius, segments),
                          f"cylinder of radius {radius} in {segments} segments: expected a "
-                         "positive radius and at least 2 segments")
+                         "positive radius and 2 to 1e9 segments")
 
     @classmethod
     def sine(cls, amplitude, wavelength, periods, points_per_period=None):
@@ -76,7 +76,9 @@ class Profile:
             points_per_period = lib.tirenv_profile_resolution_default().sine_points_per_period
         return cls._from(lib.tirenv_profile_sine(amplitude, wavelength, periods,
                                                  points_per_period),
-                         f"sine {amplitude}, {wavelength}, {periods}: expected all positive")
+                         f"sine {amplitude}, {wavelength}, {periods} in {points_per_period} "
+                         "points a period: expected a positive amplitude, wavelength and "
+                         "periods, at least 2 points a period and at most 1e9 points in all")
 
     @classmethod
     def road(cls, road_class="C", length=100.0, dx=0.01, seed=1, band=None, waviness=None):

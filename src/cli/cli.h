@@ -245,9 +245,9 @@ unsigned cli_model_reads(const tirenv_model_type *type, int at_contact_length);
 void cli_set_warnings(const char *const sets[], size_t n_sets,
                       const tirenv_model_type *const runs[], size_t n_runs, unsigned reads);
 
-/* The model type named name; prints the valid names and returns CLI_EXIT_USAGE if there is
- * none. */
-int cli_model_type(const char *name, const tirenv_model_type **type);
+/* The model type named name; prints the valid names after option (the option as the user
+ * gave it, e.g. "--simulated-by") and returns CLI_EXIT_USAGE if there is none. */
+int cli_model_type(const char *option, const char *name, const tirenv_model_type **type);
 
 /* "rigid,springs,nn": 1 to max model types by their names into types[], their number into
  * *n; prints an error naming option and returns CLI_EXIT_USAGE for an empty or unknown name

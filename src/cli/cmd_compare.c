@@ -132,7 +132,7 @@ static int parse_simulated_by(void *dst, const char *arg)
 {
     compare_options *co = dst;
     co->s.simulated = 1;
-    return cli_model_type(arg, &co->s.simulated_by);
+    return cli_model_type("--simulated-by", arg, &co->s.simulated_by);
 }
 
 /* Parses the options; returns an exit code, or CLI_GO_ON. */

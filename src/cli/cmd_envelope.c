@@ -285,7 +285,8 @@ typedef struct {
     FILE *fp;
     tirenv_road_writer *road;
     tally t;
-    tirenv_level_stream *level; /* NULL: h relative to the datum */
+    size_t n_level;             /* 0: h relative to the datum; else the tracks' count */
+    tirenv_level_stream *level[CLI_MAX_TRACKS];  /* each track's level */
     tirenv_diag diag;           /* the road writer's or the level's failure */
 } stream_out;
 
@@ -294,11 +295,15 @@ static int stream_row(void *ctx, const tirenv_point *pt)
     stream_out *s = ctx;
     tirenv_point row = *pt;
     int status = TIRENV_OK;
-    if (s->level) {
-        double level;
-        if ((status = tirenv_level_stream_at(s->level, pt->x, &level, &s->diag)))
-            return status;
-        row.h -= level;
+    if (s->n_level) {  /* to_ground's mean, in its order: the same bits */
+        double level = 0;
+        for (size_t i = 0; i < s->n_level; ++i) {
+            double level_i;
+            if ((status = tirenv_level_stream_at(s->level[i], pt->x, &level_i, &s->diag)))
+                return status;
+            level += level_i;
+        }
+        row.h -= level / (double)s->n_level;
     }
     if (s->road) {
         if ((status = tirenv_road_writer_add(s->road, row.x, row.h, &s->diag)))
@@ -353,21 +358,25 @@ static tirenv_positions sweep(const cli_options *o, const tirenv_model *m, doubl
     return s;
 }
 
-/* --relative-to ground, streamed: the level under the centre, from a second reader of the
- * open file at --track alone (*in and *level NULL otherwise). */
-static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_reader **in,
-                      tirenv_level_stream **level, tirenv_diag *diag)
+/* --relative-to ground, streamed: the level under the centre, the mean of the tracks' levels
+ * as in whole mode (to_ground), each from a reader of its own of the open file at that track
+ * (in[] and s->level[] NULL otherwise; the level of --track alone gave other bytes than whole
+ * mode's over several tracks). */
+static int level_open(const run *r, const tirenv_model *m, tirenv_profile_file_reader *in[],
+                      stream_out *s, tirenv_diag *diag)
 {
-    *in = NULL;
-    *level = NULL;
     if (r->e->relative != CLI_RELATIVE_GROUND)
         return TIRENV_OK;
-    const double v = r->road.src.crg.v;
-    int status = tirenv_road_file_reader(r->road.file, &r->road.src, 1, &v, in, diag);
     const double width = tirenv_level_width(tirenv_model_tire(m));
-    if (!status && !(*level = tirenv_level_stream_alloc(tirenv_profile_file_reader_source, *in,
-                                                        width)))
-        status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    int status = TIRENV_OK;
+    for (size_t i = 0; i < r->road.n && !status; ++i) {
+        status = tirenv_road_file_reader(r->road.file, &r->road.src, 1, &r->road.v[i], &in[i],
+                                         diag);
+        if (!status && !(s->level[i] = tirenv_level_stream_alloc(
+                             tirenv_profile_file_reader_source, in[i], width)))
+            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        s->n_level = i + 1;
+    }
     return status;
 }
 
@@ -398,8 +407,8 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     int code = cli_road_open(&r->road, &in);
     if (code)
         return code;
-    tirenv_profile_file_reader *in_level = NULL;
-    status = level_open(r, m, &in_level, &so.level, &diag);
+    tirenv_profile_file_reader *in_level[CLI_MAX_TRACKS] = {NULL};
+    status = level_open(r, m, in_level, &so, &diag);
     if (!status && r->out_format != TIRENV_PROFILE_CSV) {
         status = road_out_open(r, m, load, x_from, dx, n, &so.road, &diag);
     } else if (!status && !(status = tirenv_outfile_open(&out, path, &diag))) {
@@ -436,8 +445,10 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     tirenv_outfile_abort(out);
     tirenv_road_writer_abort(so.road);
     tirenv_profile_file_reader_free(in);
-    tirenv_profile_file_reader_free(in_level);
-    tirenv_level_stream_free(so.level);
+    for (size_t i = 0; i < so.n_level; ++i) {
+        tirenv_level_stream_free(so.level[i]);
+        tirenv_profile_file_reader_free(in_level[i]);
+    }
     if (status)
         return cli_fail(status, &diag);
     cli_model_warnings(r->cmd, m);  /* the network's, over the windows: after the rows */

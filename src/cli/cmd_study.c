@@ -65,7 +65,7 @@ static void progress(void *ctx, const char *stage, size_t step, size_t steps)
 static int parse_simulated_by(void *dst, const char *arg)
 {
     const tirenv_model_type *type;
-    if (cli_model_type(arg, &type))
+    if (cli_model_type("study: --simulated-by", arg, &type))
         return CLI_EXIT_USAGE;
     if (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK) {
         cli_error("study: --simulated-by expects a physical model (e.g. ring, cam), got '%s'",

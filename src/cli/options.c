@@ -240,12 +240,12 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     return CLI_EXIT_OK;
 }
 
-int cli_model_type(const char *name, const tirenv_model_type **type)
+int cli_model_type(const char *option, const char *name, const tirenv_model_type **type)
 {
     *type = tirenv_model_type_find(name);
     if (*type)
         return CLI_EXIT_OK;
-    fputs("tirenv: --model: expected one of", stderr);
+    fprintf(stderr, "tirenv: %s: expected one of", option);
     for (const tirenv_model_type *const *t = tirenv_model_types(); *t; ++t)
         fprintf(stderr, " %s", tirenv_model_type_name(*t));
     fprintf(stderr, ", got '%s'\n", name);
@@ -267,7 +267,7 @@ int cli_model_list(const char *option, const char *arg, const tirenv_model_type 
         }
         memcpy(name, p, len);
         name[len] = '\0';
-        if (cli_model_type(name, &types[*n]))
+        if (cli_model_type(option, name, &types[*n]))
             return CLI_EXIT_USAGE;
         ++*n;
         if (!p[len])

@@ -157,7 +157,7 @@ static int shared_option(cli_options *o, int code, const char *arg)
         o->output = arg;
         return CLI_EXIT_OK;
     case OPT_MODEL:
-        return cli_model_type(arg, &o->type);
+        return cli_model_type("--model", arg, &o->type);
     case OPT_NN:
         o->nn_path = arg;
         return CLI_EXIT_OK;

@@ -264,10 +264,14 @@ tirenv_cam_vertical tirenv_tire_vertical_law(const tirenv_tire *t)
 }
 
 /* The law's own stiffness at its own deflection under the load: one law for the cam's static
- * deflection and the ride's linear checks, so that one tire file is one tire for both. */
+ * deflection and the ride's linear checks, so that one tire file is one tire for both. A load
+ * the law would carry only with the centre at or below the ground (a deflection of R0 or
+ * more) is beyond the tire, as the cam refuses it (cam_patch): no stiffness there, and the
+ * ride refuses the vehicle (the stiffening law has a tangent at any load). */
 double tirenv_tire_vertical_stiffness(const tirenv_tire *t, double load)
 {
-    return cam_stiffness_at(t, cam_deflection_at(t, load));
+    const double rho = cam_deflection_at(t, load);
+    return rho < t->springs.R0 ? cam_stiffness_at(t, rho) : NAN;
 }
 
 /* The cam's valid range (docs/models.md section 7.3), as the largest relative deflection

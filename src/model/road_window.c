@@ -5,9 +5,10 @@
  * level along a stream (level_stream.c) one of a track on a few level widths, so all read and
  * check a source the same way.
  *
- * A stretch is covered from the last row before x_keep to the first row after x_need, so
- * each segment that meets it lies whole in the window; rows behind x_keep are dropped as
- * the reading goes, so memory is bounded by the stretch, not by the road or a far x_keep.
+ * A stretch is covered from the last row before x_keep (with its wall's other row) to the
+ * first row after x_need, so each segment that meets it lies whole in the window; rows behind
+ * x_keep are dropped as the reading goes, so memory is bounded by the stretch, not by the
+ * road or a far x_keep.
  * The arrays double when full (after a drop), so the copying costs O(1) a row amortised. */
 #include <math.h>
 #include <stdint.h>
@@ -24,7 +25,8 @@ tirenv_road_window *tirenv_road_window_alloc(tirenv_row_source source, void *ctx
     tirenv_road_window *w = calloc(1, sizeof *w);
     if (!w)
         return NULL;
-    *w = (tirenv_road_window){.next = source, .ctx = ctx, .tracks = n_tracks, .bof = 1};
+    *w = (tirenv_road_window){.next = source, .ctx = ctx, .tracks = n_tracks, .bof = 1,
+                              .keep = -INFINITY};
     w->z = calloc(n_tracks, sizeof *w->z);
     w->row = malloc(n_tracks * sizeof *w->row);
     if (!w->z || !w->row) {
@@ -91,12 +93,17 @@ static int vertex_check(tirenv_road_window *w, double x, const double z[], tiren
     return TIRENV_OK;
 }
 
-/* Drops the rows before the last one left of x_keep (they cannot touch the tire again). */
+/* Drops the rows before the last one left of x_keep (they cannot touch the tire again). If
+ * that row is a wall's second, its first stays too: the deformable models' test for level
+ * ground within reach (tirenv_profile__level) reads it over the whole profile, and a window
+ * without it took that shortcut where the whole profile does not (another last bit). */
 static void window_drop(tirenv_road_window *w, double x_keep)
 {
     size_t lo = 0;
     while (lo + 1 < w->n && w->x[lo + 1] < x_keep)
         ++lo;
+    if (lo > 0 && w->x[lo - 1] == w->x[lo])
+        --lo;
     if (lo == 0)
         return;
     memmove(w->x, w->x + lo, (w->n - lo) * sizeof *w->x);
@@ -111,6 +118,16 @@ int tirenv_road_window_fill(tirenv_road_window *w, double x_keep, double x_need,
 {
     if (!w)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no road window (NULL)");
+    /* The rows behind the last stretch are gone: a stretch behind it would be covered by the
+     * flat extension of the window's first row, silently. */
+    if (!(x_keep >= w->keep))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_keep",
+                            "x_keep %g m is behind the last fill's %g m, whose rows behind it "
+                            "are dropped and not read again; expected x_keep not below it",
+                            x_keep, w->keep);
+    if (isnan(x_need))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x_need", "x_need is not a number");
+    w->keep = x_keep;
     window_drop(w, x_keep);
     while (!tirenv_road_window_covers(w, x_need)) {
         double x;

@@ -24,6 +24,7 @@ struct tirenv_road_window {
     double x_last;         /* the last row taken, m */
     double x_first;        /* the source's first row, m */
     size_t same_x;         /* rows taken at x_last */
+    double keep;           /* the last fill's x_keep, m (-INFINITY before any) */
 };
 
 #endif

@@ -69,7 +69,7 @@ tirenv_profile *tirenv_profile_triangle(double L_base, double H)
  * point is 1.2e-16, not 0). */
 tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments)
 {
-    if (!is_size(r) || segments < 2 || segments == SIZE_MAX)
+    if (!is_size(r) || segments < 2 || segments > 1000000000) /* the sine's bound on points */
         return NULL;
     const size_t n = segments;
     struct tirenv_profile *p = tirenv_profile__new(n + 1);

@@ -24,6 +24,7 @@ struct tirenv_level_stream {
     tirenv_road_window *w;
     double width;          /* m */
     tirenv_profile *p;     /* the window as a profile, NULL until built */
+    double x_last;         /* the last position asked for, m (-INFINITY before any) */
 };
 
 tirenv_level_stream *tirenv_level_stream_alloc(tirenv_vertex_source source, void *ctx,
@@ -32,7 +33,8 @@ tirenv_level_stream *tirenv_level_stream_alloc(tirenv_vertex_source source, void
     tirenv_level_stream *s = calloc(1, sizeof *s);
     if (!s)
         return NULL;
-    *s = (tirenv_level_stream){.w = tirenv_road_window_alloc(source, ctx, 1), .width = width};
+    *s = (tirenv_level_stream){.w = tirenv_road_window_alloc(source, ctx, 1), .width = width,
+                               .x_last = -INFINITY};
     if (!s->w) {
         free(s);
         return NULL;
@@ -74,6 +76,12 @@ static int refill(tirenv_level_stream *s, double x, tirenv_diag *diag)
 
 int tirenv_level_stream_at(tirenv_level_stream *s, double x, double *level, tirenv_diag *diag)
 {
+    /* Behind the last position the window has dropped the ground. */
+    if (!(x >= s->x_last))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x",
+                            "the level at x = %g m after one at %g m: expected positions in "
+                            "x order", x, s->x_last);
+    s->x_last = x;
     if (!covers(s, x)) {
         const int status = refill(s, x, diag);
         if (status)

@@ -189,9 +189,11 @@ static int axle_tires(tirenv_axle *ax, const char *section, const tirenv_tire *t
                             axle_field(f, section, "TIRE_STIFFNESS"),
                             "not given, and its tire file's vertical law (VERTICAL_STIFFNESS "
                             "%g N/m, FNOMIN %g N, Q_FZ2 %g, docs/models.md section 7.3) has no "
-                            "positive stiffness at the static tire load %g N (got %g N/m); "
-                            "expected TIRE_STIFFNESS in [%s], or a law that carries the load",
-                            t->cam.c_z, t->cam.fnomin, t->cam.q_fz2, G0, k_t, section);
+                            "positive stiffness at the static tire load %g N (got %g N/m: a "
+                            "law that carries no such load, or only deflected by the tire's "
+                            "free radius %g m or more); expected TIRE_STIFFNESS in [%s], or a "
+                            "law that carries the load", t->cam.c_z, t->cam.fnomin,
+                            t->cam.q_fz2, G0, k_t, t->springs.R0, section);
     ax->k_t = k_t;
     ax->c_t = c_t;
     if (own)

@@ -141,6 +141,17 @@ done
 run "$bin" compare --data "$data/dataset_good" --no-images -o cmp-bad --models rigid,tank
 check "compare --models with an unknown name: exit 1, the names listed" \
     '[ $rc -eq 1 ] && grep -q "expected one of rigid" err && no_file cmp-bad'
+# An unknown model name is said with the option that gave it (each of these said --model).
+for bad in "study --simulated-by tank --no-images -o cmp-bad:study: --simulated-by" \
+    "compare --data $data/dataset_good --no-images -o cmp-bad --simulated-by tank:--simulated-by" \
+    "compare --data $data/dataset_good --no-images -o cmp-bad --models rigid,tank:--models" \
+    "identify --reference ring,tank:--reference" \
+    "ride --cleat 0.30,0.05 --speed 10km/h --out-dir cmp-bad --model point,tank:ride: --model"; do
+    run "$bin" ${bad%%:*}
+    opt=${bad#*:}
+    check "${bad%% *} ${opt##* } tank: exit 1, '$opt' named, nothing run" \
+        '[ $rc -eq 1 ] && grep -q -- "^tirenv: $opt: expected one of rigid" err && no_file cmp-bad'
+done
 colour() {  # colour FILE.gp MODEL: the line colour the script gives the model
     sed -n "s/^set style line [0-9]* lc rgb '\\(#[0-9a-f]*\\)'.*# $2\$/\\1/p" "$1" | head -n 1
 }

@@ -5,9 +5,10 @@
 # positions, the points written in order: the same bytes for every N, and whole mode's, over a
 # CSV road (a file and standard input), an OpenCRG road (one track and three) and an RDF road.
 # 100,001 positions are 13 chunks, so that --jobs 2 and 3 run two rounds (4 N chunks a round),
-# the second round's road read while the first is computed. An error mid-road (a bad row, ground
-# the hub cannot clear), in the second round: --jobs 2 and 3 fail as --jobs 1 does, the same
-# message, nothing written.
+# the second round's road read while the first is computed. A wall before metres of level
+# ground, a chunk starting on them, streams whole mode's bytes too. An error mid-road (a bad
+# row, ground the hub cannot clear), in the second round: --jobs 2 and 3 fail as --jobs 1
+# does, the same message, nothing written.
 # Usage: tests/cli/cli_stream_jobs.sh BIN TESTDATA_DIR.
 # Conditions are single-quoted for eval; bin, data and rc are clilib's.
 # shellcheck disable=SC2016,SC2034,SC2086,SC2154
@@ -49,6 +50,19 @@ check "an RDF road, --stream --jobs 2: the CSV road's bytes" \
     '[ $rc -eq 0 ] && cmp -s rdf.csv whole.csv'
 same road.crg "OpenCRG road"
 same road.crg "OpenCRG road, three tracks" --tracks 3
+
+# A wall at x = 5 m, then level ground to 80 m: whole mode solves every position there (its test
+# for level ground within reach sees the wall's first row behind the reach); chunks 1 and 2
+# (from x = 40.96 m) of --stream --jobs 2 were given windows that began at the wall's second
+# row, took the level shortcut, and wrote other iterations and fx from position 8192 on.
+printf 'x_m,z_m\n0,0.031\n5,0.031\n5,0.012\n80,0.012\n81,0.02\n' >wall.csv
+wall='--profile wall.csv --x-from 0 --x-to 82 --dx 0.005 --load 4000'
+run "$bin" envelope --model springs $wall --jobs 2 -o wall-whole.csv
+for j in 1 2; do
+    run "$bin" envelope --model springs $wall --stream --jobs $j -o wall-$j.csv
+    check "a wall, then level ground: --stream --jobs $j writes whole mode's bytes" \
+        '[ $rc -eq 0 ] && cmp -s wall-whole.csv wall-$j.csv'
+done
 
 # fails NAME WHAT: road NAME streamed with --jobs 1, 2 and 3 fails alike, nothing written.
 fails() {

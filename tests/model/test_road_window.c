@@ -104,6 +104,35 @@ static void test_far_jump_drops_as_it_reads(void **state)
     tirenv_road_window_free(w);
 }
 
+/* A stretch that starts behind the last one (or at no number) is refused: the rows behind it
+ * were dropped and are not read again, so the window would flat-extend its first row over
+ * ground it no longer holds (a fill at 1.0 m after one at 5.0 m said it covered, with
+ * profiles from 4.98 m on). The window is left as it was. */
+static void test_stretch_going_back(void **state)
+{
+    (void)state;
+    rows src = {.n = 97};
+    tirenv_road_window *w = tirenv_road_window_alloc(rows_next, &src, 2);
+    assert_non_null(w);
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_window_fill(w, 5.0, 6.0, &d), TIRENV_OK);
+    const size_t read = src.k;
+    assert_int_equal(tirenv_road_window_fill(w, 1.0, 6.0, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "x_keep");
+    assert_int_equal(tirenv_road_window_fill(w, NAN, 6.0, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_road_window_fill(w, 5.0, NAN, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "x_need");
+    assert_int_equal(src.k, read);
+    assert_int_equal(tirenv_road_window_fill(w, 5.0, 6.0, &d), TIRENV_OK);  /* again: fine */
+    assert_int_equal(tirenv_road_window_fill(w, 5.5, 9.0, &d), TIRENV_OK);
+    tirenv_profile *p[2] = {NULL, NULL};
+    assert_int_equal(tirenv_road_window_profiles(w, p, &d), TIRENV_OK);
+    assert_true(tirenv_profile_x(p[0])[0] < 5.5 && tirenv_profile_x(p[0])[0] > 5.0);
+    tirenv_profile_free(p[0]);
+    tirenv_profile_free(p[1]);
+    tirenv_road_window_free(w);
+}
+
 /* Rows out of a profile's order, or not finite, stop a fill with TIRENV_EINVAL, the row's
  * 1-based index in diag's line, the field at fault and the serial stream's message. */
 /* NULL for the window or the profiles: refused, not dereferenced (diag NULL too). */
@@ -158,6 +187,7 @@ int main(void)
         cmocka_unit_test(test_fill_holds_the_stretch),
         cmocka_unit_test(test_far_jump_drops_as_it_reads),
         cmocka_unit_test(test_bad_rows),
+        cmocka_unit_test(test_stretch_going_back),
         cmocka_unit_test(test_null_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -104,6 +104,31 @@ static void test_errors(void **state)
     tirenv_level_stream_free(NULL);
 }
 
+/* A position behind the last one (or not a number) is refused: the window has dropped the
+ * ground there (the level at 2 m after one at 15 m was the flat extension of the window's
+ * first vertex, 13.6 m on, with status OK). */
+static void test_going_back(void **state)
+{
+    (void)state;
+    double x[2311], z[2311];
+    road(2311, 0.0, x, z);
+    array_source src = {x, z, 2311, 0, 0};
+    tirenv_level_stream *s = tirenv_level_stream_alloc(array_next, &src, 1.36);
+    assert_non_null(s);
+    tirenv_diag d;
+    double level = 0;
+    assert_int_equal(tirenv_level_stream_at(s, 15.0, &level, &d), TIRENV_OK);
+    assert_int_equal(tirenv_level_stream_at(s, 2.0, &level, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "x");
+    assert_int_equal(tirenv_level_stream_at(s, NAN, &level, &d), TIRENV_EINVAL);
+    assert_int_equal(tirenv_level_stream_at(s, 15.0, &level, &d), TIRENV_OK);  /* again */
+    tirenv_profile *whole = tirenv_profile_alloc(2311, x, z);
+    assert_non_null(whole);
+    assert_bits_equal(level, tirenv_profile_level(whole, 1.36, 15.0));
+    tirenv_profile_free(whole);
+    tirenv_level_stream_free(s);
+}
+
 /* The width is the tire's free diameter. */
 static void test_width(void **state)
 {
@@ -118,6 +143,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_equals_whole),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_going_back),
         cmocka_unit_test(test_width),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

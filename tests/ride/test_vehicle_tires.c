@@ -164,6 +164,33 @@ static void test_law_without_the_load(void **state)
     assert_int_equal(tirenv_vehicle_tires(&v, &t, &t, &d), TIRENV_OK);
 }
 
+/* A load that the law would carry only with the tire crushed by its whole free radius or more
+ * (the centre at or below the ground, which the cam refuses: cam_patch) gives no stiffness:
+ * the ride of a 300 t tractor took its rear tires' k_t from the default law at 889 kN, a
+ * deflection of 1.17 R0, and ran (exit 0). The default law reaches R0 at 677.6 kN; the front
+ * tires' 582.5 kN it carries. The linear law of 209651.5 N/m reaches R0 = 0.68 m at
+ * 142563 N. */
+static void test_load_past_the_free_radius(void **state)
+{
+    (void)state;
+    tirenv_tire t = tirenv_tire_default();
+    tirenv_vehicle v = tirenv_vehicle_default();
+    v.m = 3e5;
+    tirenv_diag d;
+    assert_int_equal(tirenv_vehicle_tires(&v, &t, &t, &d), TIRENV_EINVAL);
+    assert_string_equal(d.field, "REAR_AXLE.TIRE_STIFFNESS");
+    assert_non_null(strstr(d.message, "at the static tire load 889031 N"));
+    assert_non_null(strstr(d.message, "free radius"));
+    assert_true(v.front.k_t > 0 && isnan(v.rear.k_t));
+    assert_true(isnan(tirenv_tire_vertical_stiffness(&t, 677.7e3)));
+    assert_true(tirenv_tire_vertical_stiffness(&t, 677.5e3) > 0);
+    t.cam.c_z = 209651.5;
+    t.cam.fnomin = 0;
+    t.cam.q_fz2 = 0;
+    assert_true(isnan(tirenv_tire_vertical_stiffness(&t, 0.6801 * 209651.5)));
+    assert_bits_equal(tirenv_tire_vertical_stiffness(&t, 0.6799 * 209651.5), 209651.5);
+}
+
 /* The ride refuses a vehicle whose tires were never set, naming the key. */
 static void test_ride_needs_the_tires(void **state)
 {
@@ -224,6 +251,7 @@ int main(void)
         cmocka_unit_test(test_vehicle_overrides),
         cmocka_unit_test(test_users_mf_tyre_file),
         cmocka_unit_test(test_law_without_the_load),
+        cmocka_unit_test(test_load_past_the_free_radius),
         cmocka_unit_test(test_ride_needs_the_tires),
         cmocka_unit_test(test_vehicle_file_keys),
     };
