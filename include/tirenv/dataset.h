@@ -105,8 +105,9 @@ int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                          const tirenv_dataset_build_settings *s, tirenv_diag *diag);
 
 /* What a data set says about where its curves came from: dir/source.txt (docs/formats.md
- * section 9), written by tirenv dataset build. A data set without it says nothing (measured,
- * or unknown). */
+ * section 9), written by tirenv dataset build, or, in a directory tirenv sweep wrote (no
+ * source.txt, a sweep.txt: section 13), its sweep.txt. A data set with neither says nothing
+ * (measured, or unknown). */
 typedef struct {
     int present;              /* 1 if dir/source.txt exists */
     char design[64];          /* the design it was built from, or "" */
@@ -114,11 +115,20 @@ typedef struct {
     char tire[512];           /* the tire it was simulated with, full path, or "" */
     size_t cases;             /* the number of cases its manifest holds, or 0 if not given */
     size_t cases_line;        /* the line of source.txt that gives it, or 0 */
+    /* From a sweep's sweep.txt: the model that simulated every case, whatever its type ("nn"
+     * too), and the first tire key it set (`set KEY = ...`, with its line), or "" and 0.
+     * With a physical model and no key set, model and tire above (the sweep's tire.tir) are
+     * the data's source as a source.txt would give them; else they stay "": no one physical
+     * model of one tire file simulated the cases (each case's key values: sweep.csv). */
+    char sweep_model[32];
+    char sweep_key[64];
+    size_t sweep_key_line;
 } tirenv_dataset_source;
 
-/* Reads dir/source.txt into *out (present 0 if there is none). Errors name file, line and
- * key: an unknown key, a model that is not a physical model type, a number of cases that is
- * not a whole number from 1 to 1,000,000, a malformed line. */
+/* Reads dir/source.txt into *out (present 0 if there is none), or without it dir/sweep.txt
+ * (sweep_model "" if there is none either). Errors name file, line and key: an unknown key, a
+ * model that is not a physical model type, a number of cases that is not a whole number from
+ * 1 to 1,000,000, a malformed line. */
 int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tirenv_diag *diag);
 
 /* The enveloping model's samples from a data set: one per curve point, inputs (x_N, l_c, H,

@@ -198,6 +198,13 @@ const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
                     size_t n);
 
+/* A sweep's data set (src from cli_data_source of dir) whose source is not one physical model
+ * of one tire file (it set tire keys, or its model needs a network) has no reference to
+ * compare against: prints why, naming sweep.txt's line, and the options that say what to do
+ * (`instead`), and returns CLI_EXIT_DATA; else CLI_EXIT_OK. `cmd` names the command. */
+int cli_sweep_reference(const char *cmd, const char *dir, const tirenv_dataset_source *src,
+                        const char *instead);
+
 /* The data set in dir and its tire: cli_data_source (src, buf, n as there), then the tire as
  * cli_tire reads it into *tire, then the data set read with that tire's R0 into *ds (free it
  * with tirenv_dataset_free). Prints and returns an exit code on failure, with nothing to free. */

@@ -219,7 +219,10 @@ int cli_compare_main(int argc, char *argv[])
     /* What simulated the data, with which tire, if the data set says (its source.txt, as
      * tirenv dataset build writes it for the embedded sets). */
     tirenv_dataset_source src;
-    if ((code = cli_data_source(co.data, &o, &src, src_tire, sizeof src_tire))) {
+    if ((code = cli_data_source(co.data, &o, &src, src_tire, sizeof src_tire)) ||
+        (!co.s.simulated &&
+         (code = cli_sweep_reference("compare", co.data, &src,
+                                     "--simulated-by MODEL with --tire FILE, or --simulated")))) {
         free(co.case_list);
         return code;
     }

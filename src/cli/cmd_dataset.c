@@ -59,7 +59,11 @@ static int list(const char *dir, double R0)
         status = tirenv_dataset_read(dir, R0, &ds, &diag);
     if (status)
         return cli_fail(status, &diag);
-    if (src.model[0])
+    if (src.sweep_model[0])
+        printf("SIMULATED by the %s model (tirenv sweep: %s/sweep.txt); tire %s%s\n",
+               src.sweep_model, dir, src.tire[0] ? src.tire : "",
+               src.tire[0] ? "" : "tire.tir with each case's keys of sweep.csv");
+    else if (src.model[0])
         printf("SIMULATED by the %s model on the virtual rig%s%s%s; tire %s\n", src.model,
                src.design[0] ? " (design " : "", src.design, src.design[0] ? ")" : "",
                src.tire[0] ? src.tire : "not recorded");

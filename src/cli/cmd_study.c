@@ -25,8 +25,11 @@ static void usage(FILE *fp)
           "network trained on the identified physical model's curves) and obstacles outside\n"
           "the training range. A data set's source.txt (as tirenv dataset build writes it)\n"
           "says which model simulated it and with which tire: that model is the reference,\n"
-          "not fitted, and that tire is the tire unless --tire is given. A data set without\n"
-          "it is taken as measured.\n"
+          "not fitted, and that tire is the tire unless --tire is given; so does a tirenv\n"
+          "sweep's sweep.txt (its model, and its tire.tir when it set no tire key; one\n"
+          "that did, or whose model is the network, is refused unless --simulated-by or\n"
+          "--measured says what to compare against). A data set with neither is taken as\n"
+          "measured.\n"
           "\n"
           "options:\n"
           "  --data DIR           data set with cases.csv (default: the embedded, SIMULATED\n"
@@ -136,6 +139,9 @@ int cli_study_main(int argc, char *argv[])
     tirenv_dataset_source src;
     char tire_buf[1024];
     int code = cli_data_source(s.data_dir, &o, &src, tire_buf, sizeof tire_buf);
+    if (!code && !simulated_by && !measured)
+        code = cli_sweep_reference("study", s.data_dir, &src,
+                                   "--simulated-by MODEL with --tire FILE, or --measured");
     if (code)
         return code;
     s.simulated_by = simulated_by                ? simulated_by

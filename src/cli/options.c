@@ -129,6 +129,23 @@ int cli_data_source(const char *dir, cli_options *o, tirenv_dataset_source *src,
     return CLI_EXIT_OK;
 }
 
+int cli_sweep_reference(const char *cmd, const char *dir, const tirenv_dataset_source *src,
+                        const char *instead)
+{
+    if (!src->sweep_model[0] || src->model[0])
+        return CLI_EXIT_OK;
+    if (src->sweep_key[0])
+        cli_error("%s: %s/sweep.txt:%zu: the sweep set %s (each case's value: sweep.csv), so "
+                  "its cases are the %s model's with more than its tire.tir, and no one tire "
+                  "file is their reference; give %s", cmd, dir, src->sweep_key_line,
+                  src->sweep_key, src->sweep_model, instead);
+    else
+        cli_error("%s: %s/sweep.txt: its cases are the %s model's, which is not a physical "
+                  "model to take as their reference; give %s", cmd, dir, src->sweep_model,
+                  instead);
+    return CLI_EXIT_DATA;
+}
+
 int cli_data_and_tire(const char *dir, cli_options *o, tirenv_dataset_source *src, char *buf,
                       size_t n, tirenv_tire *tire, tirenv_dataset *ds)
 {

@@ -18,12 +18,15 @@ typedef struct {
     size_t line;           /* the declaring line of file */
     char file[1100];       /* source.txt or sweep.txt, with the directory */
     char what[96];         /* the declaration as the message quotes it, "cases = 28" */
+    /* sweep.txt's: its `model`, its first `set KEY` and that line (or "", "", 0) */
+    char model[32], key[64];
+    size_t key_line;
 } tirenv_dataset__declared;
 
 /* What dir/sweep.txt, when there is one and it gives `cases = M` (and `shard = K/N`),
- * declares: the shard's rows of the M cases, those i with i mod N = K (dataset_sweep.c).
- * Nothing (out->cases 0) without the file or the key; TIRENV_EPARSE naming the file, line and
- * key for a count or shard that is not one. */
+ * declares: the shard's rows of the M cases, those i with i mod N = K (dataset_sweep.c), and
+ * its model and first tire key set. Nothing (out->cases 0) without the file or the key;
+ * TIRENV_EPARSE naming the file, line and key for a count or shard that is not one. */
 int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *out,
                                    tirenv_diag *diag);
 

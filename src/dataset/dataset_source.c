@@ -108,6 +108,28 @@ static int parse_line(tirenv_csv__reader *r, const char *dir, tirenv_dataset_sou
     }
 }
 
+/* A sweep's directory has no source.txt: its sweep.txt says what simulated every case, and
+ * with no tire key set, with the tire it wrote beside it. */
+static int sweep_source(const char *dir, tirenv_dataset_source *out, tirenv_diag *diag)
+{
+    tirenv_dataset__declared d;
+    const int status = tirenv_dataset__sweep_declared(dir, &d, diag);
+    if (status || !d.model[0])
+        return status;
+    snprintf(out->sweep_model, sizeof out->sweep_model, "%s", d.model);
+    snprintf(out->sweep_key, sizeof out->sweep_key, "%s", d.key);
+    out->sweep_key_line = d.key_line;
+    const tirenv_model_type *type = tirenv_model_type_find(d.model);
+    if (d.key[0] || !type || (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
+        return TIRENV_OK;  /* simulated, but not by one physical model of one tire */
+    snprintf(out->model, sizeof out->model, "%s", d.model);
+    char tire[sizeof out->tire + 1];
+    const int w = snprintf(tire, sizeof tire, "%s/tire.tir", dir);
+    if (w > 0 && (size_t)w < sizeof out->tire && access(tire, F_OK) == 0)
+        memcpy(out->tire, tire, (size_t)w + 1);
+    return TIRENV_OK;
+}
+
 int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
@@ -118,7 +140,7 @@ int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tire
                             "expected a data-set directory name of 1 to %zu characters",
                             sizeof path - 12);
     if (access(path, F_OK) != 0 && errno == ENOENT)
-        return TIRENV_OK;  /* says nothing: measured, or not known */
+        return sweep_source(dir, out, diag);  /* a sweep's, or nothing: measured, or unknown */
     int status = tirenv_dataset__refuse_pipe(path, diag);
     if (status)
         return status;

@@ -1,6 +1,7 @@
 /* What a sweep's sweep.txt declares of the manifest beside it (docs/formats.md section 13):
  * the grid's `cases = M` and, in a shard, `shard = K/N`, so that a data set written by tirenv
- * sweep, whose directory has no source.txt, still refuses a manifest cut at a line end.
+ * sweep, whose directory has no source.txt, still refuses a manifest cut at a line end; and
+ * what simulated it (its model, and whether it set tire keys), its source.
  * SPDX-License-Identifier: Apache-2.0 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -58,6 +59,12 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
                                           "expected the sweep's number of cases, a whole "
                                           "number from 1 to %u, got '%.60s'",
                                           TIRENV_DATASET__MAX_CASES, v);
+        } else if ((v = value_of(r.text, "model"))) {
+            snprintf(out->model, sizeof out->model, "%s", v);
+        } else if (strncmp(r.text, "set ", 4) == 0 && !out->key_line) {
+            const size_t len = strcspn(r.text + 4, " =");
+            snprintf(out->key, sizeof out->key, "%.*s", (int)len, r.text + 4);
+            out->key_line = r.line;
         } else if ((v = value_of(r.text, "shard"))) {
             const size_t a = digits(v, TIRENV_DATASET__MAX_CASES, &k);
             const size_t b = a && v[a] == '/' ? digits(v + a + 1, TIRENV_DATASET__MAX_CASES, &n)

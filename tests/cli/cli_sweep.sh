@@ -31,6 +31,27 @@ check "sweep warns of a swept key the model's curve does not depend on, and only
 
 run "$bin" dataset list one
 check "dataset list reads it" '[ $rc -eq 0 ] && grep -q c0023 out'
+check "dataset list says the sweep simulated it, the tire per case" \
+    'grep -q "SIMULATED by the springs model (tirenv sweep: one/sweep.txt); tire tire.tir with each case.s keys of sweep.csv" out'
+# A sweep's data are SIMULATED (its sweep.txt), never measurements; a sweep that set a tire key
+# has no one tire file as its reference: study and compare say so rather than fit its model.
+run "$bin" study --data one --seeds 1 --no-images -o st_one
+check "study refuses a sweep over a tire key without --simulated-by or --measured, naming it" \
+    '[ $rc -eq 2 ] && grep -q "one/sweep.txt:[0-9]*: the sweep set INTERRADIAL_STIFFNESS" err &&
+     grep -q -- "--measured" err && [ ! -e st_one ]'
+run "$bin" compare --data one --models rigid --no-images -o cmp_one
+check "compare refuses it too, offering --simulated" \
+    '[ $rc -eq 2 ] && grep -q "the sweep set INTERRADIAL_STIFFNESS" err &&
+     grep -q -- "--simulated" err && [ ! -e cmp_one ]'
+run "$bin" compare --data one --models rigid --no-images --simulated -o cmp_one
+check "compare --simulated takes it as simulated by a model it does not compare" \
+    '[ $rc -eq 0 ] && grep -q "SIMULATED" out'
+run "$bin" sweep --lengths 0.05,0.15 --heights 0.03 --contact-lengths 0.3,0.38 --model springs \
+    --validation-fraction 0.5 -o plain
+run "$bin" compare --data plain --models rigid --no-images -o cmp_plain
+check "a sweep of one tire is SIMULATED by its model with its tire.tir, the reference" \
+    '[ $rc -eq 0 ] && grep -q "These data are SIMULATED.*springs reference model" cmp_plain/report.md &&
+     grep -q "(.plain/tire.tir.); it simulated the data" cmp_plain/report.md'
 run "$bin" train --data one --restarts 1 --epochs 20 -o nn.json
 check "train reads it" '[ $rc -eq 0 ] && [ -s nn.json ]'
 
