@@ -53,3 +53,12 @@ def test_generator_refusals_say_why():
     with pytest.raises(tirenv.TirenvError, match="2 to 1e9 segments"):
         tirenv.Profile.cylinder(0.1, segments=10**12)
     assert len(tirenv.Profile.cylinder(0.1, segments=7)) == 8
+
+
+def test_track_positions_bounded():
+    # 10**9 tracks built a list of a billion floats and the process was killed for memory.
+    for n in (0, 65, 10**9, 2.5, "3"):
+        with pytest.raises(tirenv.TirenvError, match="from 1 to 64"):
+            tirenv.track_positions(n)
+    v = tirenv.track_positions(64, 0.1, 0.64)
+    assert v.shape == (64,) and v[0] == 0.1 - 0.32 + 0.005 and v[-1] == 0.1 + 0.32 - 0.005

@@ -32,13 +32,19 @@ def model_names():
     return names
 
 
+TRACKS_MAX = 64  # as 'tirenv envelope --tracks' takes them
+
+
 def track_positions(n, track=0.0, width=0.38):
     """The lateral positions (m) of n tracks spread over a tire of width (m) around track
     (m): the centres of n equal slices, as 'tirenv envelope --tracks N --width W --track V'
-    places them (docs/models.md section 13)."""
-    out, diag = ffi.new("double[]", max(int(n), 1)), new_diag()
+    places them (docs/models.md section 13); n from 1 to TRACKS_MAX (64), as there."""
+    if not (isinstance(n, (int, np.integer)) and 1 <= n <= TRACKS_MAX):
+        raise invalid(f"expected a whole number of tracks from 1 to {TRACKS_MAX} (as 'tirenv "
+                      f"envelope --tracks'), got {n!r}", "n")
+    out, diag = ffi.new("double[]", int(n)), new_diag()
     check(lib.tirenv_tracks_spread(int(n), track, width, out, diag), diag)
-    return np.array([out[i] for i in range(int(n))])
+    return np.frombuffer(ffi.buffer(out), dtype=np.float64).copy()
 
 
 def positions(x_from, x_to, dx=None):
