@@ -286,13 +286,10 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     return code;
 }
 
-static int write_series(const char *path, const ride_series *rs, const ride_result *res,
-                        tirenv_diag *diag)
+/* Writes a run's series into out and commits it (or, failing, removes what it wrote). */
+static int write_series_to(tirenv_outfile *out, const ride_series *rs, const ride_result *res,
+                           tirenv_diag *diag)
 {
-    tirenv_outfile *out;
-    int status = tirenv_outfile_open(&out, path, diag);
-    if (status)
-        return status;
     char comment[256];
     snprintf(comment, sizeof comment, "tirenv ride: %s model at %.6g m/s (%.6g km/h), %zu "
              "samples", res->model, res->speed, res->speed * 3.6, rs->n);
@@ -311,6 +308,14 @@ static int write_series(const char *path, const ride_series *rs, const ride_resu
         fwrite(row, 1, (size_t)(p - row), fp);
     }
     return tirenv_outfile_commit(out, diag);  /* it checks ferror and removes the file */
+}
+
+static int write_series(const char *path, const ride_series *rs, const ride_result *res,
+                        tirenv_diag *diag)
+{
+    tirenv_outfile *out;
+    const int status = tirenv_outfile_open(&out, path, diag);
+    return status ? status : write_series_to(out, rs, res, diag);
 }
 
 /* The options a field of tirenv_ride_plan_make's errors comes from. */
@@ -372,7 +377,8 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
 }
 
 /* Every (speed, column) run: independent items on --jobs threads, each integrating,
- * measuring and writing its own series; the CPU time of a run is its thread's. */
+ * measuring and writing its own series into --out-dir (-o's, of the one run, is written after
+ * them); the CPU time of a run is its thread's. */
 typedef struct {
     const ride_options *r;
     const ride_setup *s;
@@ -407,8 +413,6 @@ static int run_one(const ride_runs *p, size_t k, tirenv_diag *diag)
     if (!status)
         status = tirenv_ride_comfort_measure(rs->samples, rs->n, set.dt, rs->a_w, &q->c,
                                              diag);
-    if (!status && r->out_path)
-        status = write_series(r->out_path, rs, q, diag);
     if (!status && r->out_dir && r->series) {
         char path[4200], speed[32];
         ride_cli_speed_name(q->speed, speed, sizeof speed);
@@ -437,6 +441,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     const size_t n_runs = r->n_cols * r->n_speeds;
     ride_inputs in[RIDE_MAX_MODELS] = {{0}};
     tirenv_outdir *staged = NULL;
+    tirenv_outfile *out = NULL;
     ride_result *res = calloc(n_runs, sizeof *res);
     ride_series *series = calloc(n_runs, sizeof *series);
     tirenv_diag diag;
@@ -462,6 +467,15 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
                   s.plan.dx, 10 * dx_max, dx_max, tirenv_ride_span_default().dx);
         code = CLI_EXIT_USAGE;
         goto done;
+    }
+    /* -o opened before the inputs and runs, so that a path it cannot write (a directory, a
+     * missing directory) is said before the work, not after it. */
+    if (r->out_path) {
+        const int status = tirenv_outfile_open(&out, r->out_path, &diag);
+        if (status) {
+            code = cli_fail(status, &diag);
+            goto done;
+        }
     }
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
@@ -499,6 +513,12 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
             break;
         }
     free(runs.status);
+    if (!code && out) {  /* one run (cmd_ride refuses -o with more) */
+        const int written = write_series_to(out, &series[0], &res[0], &diag);
+        out = NULL;
+        if (written)
+            code = cli_fail(written, &diag);
+    }
     if (code)
         goto done;
     print_table(stdout, res, n_runs);
@@ -511,6 +531,7 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
             code = cli_fail(committed, &diag);
     }
 done:
+    tirenv_outfile_abort(out);
     tirenv_outdir_abort(staged);
     for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
         for (int axle = 0; axle < 2; ++axle) {

@@ -74,4 +74,17 @@ check "-o /dev/null is written through: no refusal" '[ $rc -eq 0 ]'
 run "$bin" envelope --model rigid --profile road.csv --load 20000 -o curve.csv
 check "-o another file: written" '[ $rc -eq 0 ] && [ "$(rows curve.csv)" -gt 100 ]'
 
+# ride -o a path it cannot write is said before the inputs and runs (the message names no run:
+# it named the run, after computing it).
+mkdir -p outdir
+run "$bin" ride --cleat 0.1,0.05 --model springs --speed 5 -o outdir
+check "ride -o DIR: exit 2 before any run, naming the directory" \
+    '[ $rc -eq 2 ] && grep -q "^tirenv: outdir: is a directory" err && ! grep -q "model (" err'
+run "$bin" ride --cleat 0.1,0.05 --model springs --speed 5 -o nodir/series.csv
+check "ride -o into a missing directory: exit 2 before any run" \
+    '[ $rc -eq 2 ] && grep -q "^tirenv: nodir/series.csv: cannot create" err && ! grep -q "model (" err'
+run "$bin" ride --cleat 0.1,0.05 --model point --speed 5 -o series.csv
+check "ride -o a file: written, one row a sample after the header and comment" \
+    '[ $rc -eq 0 ] && head -n 1 series.csv | grep -q "^t_s,x_front_m" && [ "$(rows series.csv)" -gt 1000 ]'
+
 clilib_done
