@@ -41,6 +41,52 @@ static void bumpy(double x[], double z[])
     }
 }
 
+/* The springs model streamed from the n vertices x, z at the positions x_from:dx:x_to and the
+ * load (N) against the whole profile's evaluations: the number of positions whose h, fx or
+ * iterations differ (reported), and in *raised those with |h| > 1 mm; with check_reads, that
+ * the source was read once. The stream must have rebuilt its window more than once, or
+ * nothing was tested. */
+static size_t stream_against_whole(const double x[], const double z[], size_t n, double x_from,
+                                   double x_to, double dx, double load, int check_reads,
+                                   size_t *raised)
+{
+    const tirenv_tire tire = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
+    tirenv_profile *whole = tirenv_profile_alloc(n, x, z);
+    assert_non_null(m);
+    assert_non_null(whole);
+    array_source src = {x, z, n, 0, 0};
+    collect c = {0};
+    tirenv_stream_stats st;
+    tirenv_diag d;
+    assert_int_equal(tirenv_model_stream(m, array_next, &src, x_from, x_to, dx, load,
+                                         tirenv_test_keep_point, &c, &st, &d),
+                     TIRENV_OK);
+    if (check_reads) {  /* asked only for what it had plus the one "end" answer */
+        assert_int_equal(st.vertices_read, n);
+        assert_int_equal(src.calls, n + 1);
+    }
+    assert_true(st.rebuilds > 1);
+    assert_int_equal(c.n, tirenv_positions_count(x_from, x_to, dx));
+    assert_int_equal(tirenv_model_set(m, whole, load, &d), TIRENV_OK);
+    size_t differ = 0;
+    *raised = 0;
+    for (size_t k = 0; k < c.n; ++k) {
+        tirenv_point w;
+        assert_int_equal(tirenv_model_eval(m, c.pt[k].x, &w, &d), TIRENV_OK);
+        differ += !(c.pt[k].h == w.h && c.pt[k].fx == w.fx &&
+                    c.pt[k].iterations == w.iterations);
+        *raised += fabs(w.h) > 1e-3;
+    }
+    if (differ)
+        print_message("%zu of %zu positions differ from the whole profile's\n", differ, c.n);
+    assert_true(c.n > 0);
+    free(c.pt);
+    tirenv_profile_free(whole);
+    tirenv_model_free(m);
+    return differ;
+}
+
 /* The springs model streamed from memory equals the whole profile bit for bit, iterations
  * included, and the source was asked only for what it had plus the one "end" answer. */
 static void test_memory_source_equals_whole(void **state)
@@ -48,37 +94,12 @@ static void test_memory_source_equals_whole(void **state)
     (void)state;
     static double x[N_ROAD], z[N_ROAD];
     bumpy(x, z);
-    const tirenv_tire tire = tirenv_tire_default();
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
-    tirenv_profile *whole = tirenv_profile_alloc(N_ROAD, x, z);
-    assert_non_null(m);
-    assert_non_null(whole);
-    array_source src = {x, z, N_ROAD, 0, 0};
-    collect c = {0};
-    tirenv_stream_stats st;
-    tirenv_diag d;
-    const double x_from = -0.4173, x_to = 8.2917, dx = 0.0113, load = 11234.5;
-    assert_int_equal(tirenv_model_stream(m, array_next, &src, x_from, x_to, dx, load,
-                                         tirenv_test_keep_point, &c, &st, &d),
-                     TIRENV_OK);
-    assert_int_equal(st.vertices_read, N_ROAD);
-    assert_int_equal(src.calls, N_ROAD + 1);
-    assert_true(st.rebuilds > 1);
-    assert_int_equal(c.n, tirenv_positions_count(x_from, x_to, dx));
-    assert_int_equal(tirenv_model_set(m, whole, load, &d), TIRENV_OK);
-    size_t raised = 0;
-    for (size_t k = 0; k < c.n; ++k) {
-        tirenv_point w;
-        assert_int_equal(tirenv_model_eval(m, c.pt[k].x, &w, &d), TIRENV_OK);
-        assert_true(c.pt[k].h == w.h);
-        assert_true(c.pt[k].fx == w.fx);
-        assert_int_equal(c.pt[k].iterations, w.iterations);
-        raised += fabs(w.h) > 1e-3;
-    }
-    assert_true(raised > c.n / 4);  /* the comparison is over ground that matters */
-    free(c.pt);
-    tirenv_profile_free(whole);
-    tirenv_model_free(m);
+    size_t raised;
+    assert_int_equal(stream_against_whole(x, z, N_ROAD, -0.4173, 8.2917, 0.0113, 11234.5, 1,
+                                          &raised),
+                     0);
+    const size_t n = tirenv_positions_count(-0.4173, 8.2917, 0.0113);
+    assert_true(raised > n / 4);  /* the comparison is over ground that matters */
 }
 
 /* A wall (two vertices at one x), then 14.7 m of level ground: over the whole profile the
@@ -92,35 +113,10 @@ static void test_wall_behind_level_ground(void **state)
     (void)state;
     static const double x[] = {-1.0, 1.37, 1.37, 13.91, 16.03, 16.3, 16.3, 17.5};
     static const double z[] = {0.0431, 0.0431, 0.0127, 0.0127, 0.0127, 0.0219, 0.0058, 0.0058};
-    enum { n = sizeof x / sizeof x[0] };
-    const tirenv_tire tire = tirenv_tire_default();
-    tirenv_model *m = tirenv_model_alloc(tirenv_model_springs, &tire);
-    tirenv_profile *whole = tirenv_profile_alloc(n, x, z);
-    assert_non_null(m);
-    assert_non_null(whole);
-    array_source src = {x, z, n, 0, 0};
-    collect c = {0};
-    tirenv_stream_stats st;
-    tirenv_diag d;
-    const double x_from = -0.5173, x_to = 17.4, dx = 0.00442, load = 6123.5;
-    assert_int_equal(tirenv_model_stream(m, array_next, &src, x_from, x_to, dx, load,
-                                         tirenv_test_keep_point, &c, &st, &d),
-                     TIRENV_OK);
-    assert_true(st.rebuilds > 1);
-    assert_int_equal(c.n, tirenv_positions_count(x_from, x_to, dx));
-    assert_int_equal(tirenv_model_set(m, whole, load, &d), TIRENV_OK);
-    size_t differ = 0;
-    for (size_t k = 0; k < c.n; ++k) {
-        tirenv_point w;
-        assert_int_equal(tirenv_model_eval(m, c.pt[k].x, &w, &d), TIRENV_OK);
-        differ += !(c.pt[k].h == w.h && c.pt[k].fx == w.fx &&
-                    c.pt[k].iterations == w.iterations);
-    }
-    if (differ)
-        fail_msg("%zu of %zu positions differ from the whole profile's", differ, c.n);
-    free(c.pt);
-    tirenv_profile_free(whole);
-    tirenv_model_free(m);
+    size_t raised;
+    assert_int_equal(stream_against_whole(x, z, sizeof x / sizeof x[0], -0.5173, 17.4, 0.00442,
+                                          6123.5, 0, &raised),
+                     0);
 }
 
 /* Sources that break a profile's order are stopped with TIRENV_EINVAL, the vertex's 1-based
