@@ -75,7 +75,9 @@ static void usage(FILE *fp)
           "                       cold start at its first position; with --stream the road\n"
           "                       is read once, in order, each chunk computed on the rows\n"
           "                       within the tire's reach of it, two rounds of 4 N chunks'\n"
-          "                       rows and points held; --model nn streams on one thread)\n"
+          "                       rows and points held; --model nn, and a sweep whose\n"
+          "                       chunks would span more than 256 m of road (--dx above\n"
+          "                       31.25 mm), stream on one thread, in the tire's reach)\n"
           "  -h, --help           show this help\n",
           fp);
     cli_help_obstacle(fp);
@@ -417,9 +419,11 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     }
     if (!status) {
         /* A network's windows are told where they sit in the road (tirenv_model_stream):
-         * it streams on one thread. */
+         * it streams on one thread; so does a sweep whose chunks would each hold more than
+         * CLI_STREAM_CHUNK_SPAN_M of road. */
         const int chunked =
-            o->jobs > 1 && !(tirenv_model_type_flags(r->type) & TIRENV_MODEL_NEEDS_NETWORK);
+            o->jobs > 1 && !(tirenv_model_type_flags(r->type) & TIRENV_MODEL_NEEDS_NETWORK) &&
+            CLI_CHUNK * dx <= CLI_STREAM_CHUNK_SPAN_M;
         status = chunked ? cli_stream_chunks(m, r->type, o, r->road.n,
                                              tirenv_profile_file_reader_source, in, x_from,
                                              x_to, dx, load, o->jobs, stream_row, &so, &diag)

@@ -44,6 +44,13 @@ run sh -c '"$0" envelope --model springs --profile /dev/stdin $1 --stream --jobs
     "$bin" "$sweep"
 check "--stream --jobs 3 from standard input: whole mode's bytes" \
     '[ $rc -eq 0 ] && cmp -s out whole.csv'
+# A sweep whose chunks would each span more than 256 m of road (--dx 0.05: 410 m) streams on
+# one thread, in the tire's reach: still whole mode's bytes, here 2,001 positions in one chunk.
+run "$bin" envelope --model springs --profile road.csv --dx 0.05 --load 4000 --jobs 2 -o sparse-whole.csv
+run "$bin" envelope --model springs --profile road.csv --dx 0.05 --load 4000 --stream --jobs 2 \
+    -o sparse-stream.csv
+check "--dx 0.05 (chunks of 410 m: one thread) --stream --jobs 2: whole mode's bytes" \
+    '[ $rc -eq 0 ] && cmp -s sparse-whole.csv sparse-stream.csv && [ "$(wc -l <sparse-stream.csv)" -gt 2000 ]'
 run "$bin" convert --profile road.csv -o road.rdf
 run "$bin" envelope --model springs --profile road.rdf $sweep --stream --jobs 2 -o rdf.csv
 check "an RDF road, --stream --jobs 2: the CSV road's bytes" \
