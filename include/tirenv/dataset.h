@@ -123,6 +123,8 @@ typedef struct {
     char sweep_model[32];
     char sweep_key[64];
     size_t sweep_key_line;
+    int sweep_raw;            /* 1: the sweep's curves are its model's own (`curves = model`),
+                               * not through the virtual rig: no noise, no import */
 } tirenv_dataset_source;
 
 /* Reads dir/source.txt into *out (present 0 if there is none), or without it dir/sweep.txt

@@ -142,6 +142,9 @@ typedef struct {
     const tirenv_model_type *simulated_by; /* the reference model that simulated them, or
                                  * NULL; it is evaluated too (with the tire's parameters)
                                  * and implies simulated */
+    int simulated_raw;          /* 1: they are simulated_by's own curves, not through the
+                                 * virtual rig (a tirenv sweep without --rig): no noise, no
+                                 * import (default 0) */
     double nn_R0;               /* free radius the network's x_N refers to (the model file's
                                  * record), m; 0: the tire's R0 (default 0) */
     double rise_threshold;      /* h defining the first rise, m (default 1e-3) */
@@ -248,6 +251,9 @@ typedef struct {
                                     * fitted; NULL: measured data, the outside references
                                     * then from the ring (default: the ring, the embedded
                                     * tractor set) */
+    int simulated_raw;             /* 1: the data are simulated_by's own curves, not through
+                                    * the virtual rig (a tirenv sweep without --rig) (default
+                                    * 0) */
     int images;                    /* draw PNG and SVG with gnuplot (default 1) */
     size_t jobs;                   /* threads running at once (default 1: none started;
                                     * tirenv/parallel.h): the fit's cases, the seeds and the

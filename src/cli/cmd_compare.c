@@ -229,6 +229,7 @@ int cli_compare_main(int argc, char *argv[])
     if (src.model[0] && !co.s.simulated_by && !co.s.simulated) {
         co.s.simulated_by = tirenv_model_type_find(src.model);
         co.s.simulated = 1;
+        co.s.simulated_raw = src.sweep_raw;
     }
     co.s.data_label = co.data;
     co.s.tire_label = cli_tire_path(&o, tire_buf, sizeof tire_buf);

@@ -147,6 +147,7 @@ int cli_study_main(int argc, char *argv[])
     s.simulated_by = simulated_by                ? simulated_by
                      : measured || !src.model[0] ? NULL
                                                  : tirenv_model_type_find(src.model);
+    s.simulated_raw = !simulated_by && !measured && src.sweep_raw;
     if (!tirenv_trainer_type_find(s.trainer)) {
         cli_error("study: unknown trainer '%s'; expected lm, rprop or backprop", s.trainer);
         return CLI_EXIT_USAGE;

@@ -21,6 +21,7 @@ typedef struct {
     /* sweep.txt's: its `model`, its first `set KEY` and that line (or "", "", 0) */
     char model[32], key[64];
     size_t key_line;
+    int raw;               /* `curves = model`: the model's own curves, no rig */
 } tirenv_dataset__declared;
 
 /* What dir/sweep.txt, when there is one and it gives `cases = M` (and `shard = K/N`),

@@ -119,6 +119,7 @@ static int sweep_source(const char *dir, tirenv_dataset_source *out, tirenv_diag
     snprintf(out->sweep_model, sizeof out->sweep_model, "%s", d.model);
     snprintf(out->sweep_key, sizeof out->sweep_key, "%s", d.key);
     out->sweep_key_line = d.key_line;
+    out->sweep_raw = d.raw;
     const tirenv_model_type *type = tirenv_model_type_find(d.model);
     if (d.key[0] || !type || (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK))
         return TIRENV_OK;  /* simulated, but not by one physical model of one tire */

@@ -59,6 +59,8 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
                                           "expected the sweep's number of cases, a whole "
                                           "number from 1 to %u, got '%.60s'",
                                           TIRENV_DATASET__MAX_CASES, v);
+        } else if ((v = value_of(r.text, "curves"))) {
+            out->raw = strcmp(v, "model") == 0;
         } else if ((v = value_of(r.text, "model"))) {
             snprintf(out->model, sizeof out->model, "%s", v);
         } else if (strncmp(r.text, "set ", 4) == 0 && !out->key_line) {

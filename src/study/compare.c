@@ -32,6 +32,7 @@ tirenv_compare_settings tirenv_compare_default(void)
         .with_nn = 1,
         .simulated = 0,
         .simulated_by = NULL,
+        .simulated_raw = 0,
         .nn_R0 = 0,
         .rise_threshold = 1e-3,
         .min_time = 0.02,
@@ -611,7 +612,8 @@ void tirenv_compare__data_note(FILE *fp, const tirenv_dataset *ds,
     }
     fprintf(fp, "Data: `%s`. **These data are SIMULATED**", label);
     if (s->simulated_by)
-        fprintf(fp, " by the virtual rig on the %s reference model",
+        fprintf(fp, s->simulated_raw ? " as the %s reference model's own curves (no rig)"
+                                     : " by the virtual rig on the %s reference model",
                 tirenv_model_type_name(s->simulated_by));
     fputs(", not measured on a real tire.\n", fp);
 }
@@ -752,7 +754,7 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
     const tirenv_plot__settings ps = {s->out_dir, s->simulated || s->simulated_by != NULL,
                                       s->simulated_by ? tirenv_model_type_name(s->simulated_by)
                                                       : NULL,
-                                      s->gnuplot};
+                                      s->gnuplot, s->simulated_raw};
     if (!status)
         status = write_errors_csv(ds, s, out, diag);
     if (!status)

@@ -243,10 +243,12 @@ void tirenv_study__findings(FILE *fp, const tirenv_study__facts *f)
     for (size_t k = 0; k < n; ++k)
         model_line(fp, f, order[k]);
     if (r->reference_model >= 0)
-        fprintf(fp, "\nThe reference %s, which simulated these data, is at %.2f mm: what the "
-                    "rig's noise and the import leave, the floor no model can beat here.\n",
+        fprintf(fp, "\nThe reference %s, which simulated these data, is at %.2f mm: %s, the "
+                    "floor no model can beat here.\n",
                 r->model[r->reference_model],
-                1e3 * tirenv_compare__mean_rms(r, (size_t)r->reference_model, NULL));
+                1e3 * tirenv_compare__mean_rms(r, (size_t)r->reference_model, NULL),
+                f->main_settings->simulated_raw ? "its own curves, no rig"
+                                                : "what the rig's noise and the import leave");
     case_R(fp, f);
     fputc('\n', fp);
 }

@@ -100,8 +100,10 @@ static void case_caption(const tirenv_case *c, char *buf, size_t size)
 static void simulated_note(const tirenv_plot__settings *ps, char *buf, size_t size)
 {
     if (ps->simulated_by)
-        snprintf(buf, size, "SIMULATED data: virtual rig on the %s reference tire, not "
-                 "measurements of a real tire", ps->simulated_by);
+        snprintf(buf, size, ps->raw ? "SIMULATED data: the %s model's own curves, not "
+                                      "measurements of a real tire"
+                                    : "SIMULATED data: virtual rig on the %s reference tire, "
+                                      "not measurements of a real tire", ps->simulated_by);
     else
         snprintf(buf, size, "SIMULATED data, not measurements of a real tire");
 }

@@ -24,6 +24,7 @@ typedef struct {
     int simulated;         /* 1: the measured curve is simulated: said in title and files */
     const char *simulated_by; /* the reference model's name, or NULL */
     const char *gnuplot;   /* program to run; NULL: "gnuplot" on PATH */
+    int raw;               /* 1: simulated_by's own curves, not through the virtual rig */
 } tirenv_plot__settings;
 
 /* The file base of a case's plot files: its name with every character outside

@@ -56,8 +56,11 @@ static void describe_models(FILE *fp, const tirenv_compare_settings *s,
             fputs("a physical model with the tire file's parameters", fp);
         }
         if ((int)j == r->reference_model)
-            fputs("; it simulated the data, so its errors show the rig's noise and the "
-                  "import rather than a model error", fp);
+            fputs(s->simulated_raw ? "; it simulated the data, its own curves, so it meets "
+                                     "them to round-off"
+                                   : "; it simulated the data, so its errors show the rig's "
+                                     "noise and the import rather than a model error",
+                  fp);
         fputs(".\n", fp);
     }
 }
@@ -87,11 +90,22 @@ static void introduction(FILE *fp, const tirenv_dataset *ds, const tirenv_compar
           "the obstacle centre (x_N = 1).\n\n",
           fp);
     tirenv_compare__data_note(fp, ds, s);
-    if (s->simulated || s->simulated_by)
+    if (s->simulated_by && s->simulated_raw)
+        fprintf(fp, "\n> **SIMULATED DATA.** The \"measured\" curves in this report are the %s "
+                "model's own curves (a tirenv sweep without --rig: no sensor noise, no import), "
+                "not a tire on a real rig. The errors below say how well each model reproduces "
+                "that model, not a real tire.\n",
+                tirenv_model_type_name(s->simulated_by));
+    else if (s->simulated_by)
         fputs("\n> **SIMULATED DATA.** The \"measured\" curves in this report were produced by "
               "tirenv's virtual rig (docs/models.md section 5), a model with sensor noise added, not "
               "by a tire on a real rig. The errors below say how well each model reproduces "
               "that reference, not a real tire.\n",
+              fp);
+    else if (s->simulated)
+        fputs("\n> **SIMULATED DATA.** The \"measured\" curves in this report were simulated, "
+              "by a model the comparison does not name, not measured on a real tire. The errors "
+              "below say how well each model reproduces that model, not a real tire.\n",
               fp);
     fputs("\nModels:\n\n", fp);
     describe_models(fp, s, r);

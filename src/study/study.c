@@ -21,7 +21,7 @@ tirenv_study_settings tirenv_study_default(void)
                                    .tire = tirenv_tire_default(), .tire_label = NULL,
                                    .trainer = "lm", .seed = 1, .seeds = 20,
                                    .input = TIRENV_NN_INPUT_EVEN,
-                                   .simulated_by = tirenv_model_ring,
+                                   .simulated_by = tirenv_model_ring, .simulated_raw = 0,
                                    .images = 1, .jobs = 1, .progress = NULL,
                                    .progress_ctx = NULL};
 }
@@ -534,8 +534,9 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
     append_model_means(fp, phys);
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
     fprintf(fp, "## Outside the training range\n\n"
-                "Obstacles no training case resembles, with reference curves from the same "
+                "Obstacles no training case resembles, with reference curves from %s "
                 "virtual rig (%s model, SIMULATED): ",
+            s->simulated_by && s->simulated_raw ? "the" : "the same",
             tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring));
     for (size_t i = 0; i < outside_ds->n; ++i) {
         const tirenv_case *c = &outside_ds->cases[i];
@@ -595,6 +596,7 @@ static tirenv_compare_settings compare_settings(const tirenv_study_settings *s, 
     if (s->simulated_by) {
         cs.simulated = 1;
         cs.simulated_by = s->simulated_by;
+        cs.simulated_raw = s->simulated_raw;
     }
     return cs;
 }

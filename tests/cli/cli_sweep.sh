@@ -52,6 +52,16 @@ run "$bin" compare --data plain --models rigid --no-images -o cmp_plain
 check "a sweep of one tire is SIMULATED by its model with its tire.tir, the reference" \
     '[ $rc -eq 0 ] && grep -q "These data are SIMULATED.*springs reference model" cmp_plain/report.md &&
      grep -q "(.plain/tire.tir.); it simulated the data" cmp_plain/report.md'
+check "... its own curves, no rig: said so, not the rig's noise" \
+    'grep -q "are the springs model.s own curves (a tirenv sweep without --rig: no sensor noise" cmp_plain/report.md &&
+     ! grep -q "noise and the import" cmp_plain/report.md &&
+     grep -q "SIMULATED data: the springs model.s own curves" cmp_plain/c0000.gp'
+run "$bin" sweep --lengths 0.05,0.15 --heights 0.03 --contact-lengths 0.3,0.38 --model springs \
+    --rig --validation-fraction 0.5 -o plain_rig
+run "$bin" compare --data plain_rig --models rigid --no-images -o cmp_rig
+check "a sweep --rig: the virtual rig on its model, its noise and import" \
+    '[ $rc -eq 0 ] && grep -q "SIMULATED.* by the virtual rig on the springs reference model" cmp_rig/report.md &&
+     grep -q "noise and the import" cmp_rig/report.md'
 run "$bin" train --data one --restarts 1 --epochs 20 -o nn.json
 check "train reads it" '[ $rc -eq 0 ] && [ -s nn.json ]'
 
