@@ -14,16 +14,21 @@
 #include "model/ring_impl.h"
 
 enum { NEWTON_BACKTRACK = 20, NEWTON_POLISH = 8 };
-/* The first NEWTON_FULL steps of a piecewise quadratic E are full Newton steps, without the
- * line search (a semismooth Newton step): from the warm start the states are mostly the
- * answer's, and the line search's product with K, its passes for the energy and its terms and
- * the states' pass again cost more than the few steps it saves (over the bench cleat's sweep
- * 5,166 steps against 5,026, 6.9 % fewer instructions; docs/models.md 5.6). Full steps can
- * cycle between two sets of states, which the line search after them breaks. The answer is
- * the system of its final states solved, as before: the same bits. Not with a smooth part (the
- * softening carcass), whose answer is where Newton stops within nl_tol, so depends on the
- * path: there the line search from the first step, as before. */
-enum { NEWTON_FULL = 10 };
+/* A step that changed the states of at most NEWTON_FULL_CHANGES points, among the first
+ * NEWTON_FULL steps of a piecewise quadratic E, is followed by a full Newton step, without the
+ * line search (a semismooth Newton step): from the warm start a step mostly moves the contact's
+ * edges by a piece or two, and there the line search's two products with K, its passes for the
+ * energy and its terms and the states' pass again cost more than the few steps it saves. Where
+ * many states changed (a start far from the answer, a rough road's many vertices) full steps
+ * overshoot and take more steps than the line search does; and they can cycle between two sets
+ * of states, which the line search after NEWTON_FULL steps breaks. Measured with callgrind
+ * (docs/models.md 5.6, Counted a sixth time): over the bench cleat's sweep 7.2 % fewer
+ * instructions, over 3 m of a class C road 19 % (vertices 10 mm apart) and 23 % (1 mm) fewer;
+ * full steps whatever the changes took 6 % and 20 % more there. The answer is the system of its
+ * final states solved, as before: the same bits. Not with a smooth part (the softening
+ * carcass), whose answer is where Newton stops within nl_tol, so depends on the path: there
+ * the line search as before. */
+enum { NEWTON_FULL = 10, NEWTON_FULL_CHANGES = 32 };
 static const double newton_sigma = 1e-4; /* Armijo's sufficient decrease */
 /* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
  * point whose compression is zero to round-off carries no force either way. */
@@ -109,7 +114,7 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
                 return TIRENV_RING_NEWTON_OK;
             continue;
         }
-        if (it < NEWTON_FULL && nw->nl_tol == 0) {
+        if (it < NEWTON_FULL && changed <= NEWTON_FULL_CHANGES && nw->nl_tol == 0) {
             /* The full step, its states already set: see NEWTON_FULL. */
             memcpy(x, xn, N * sizeof *x);
             continue;
