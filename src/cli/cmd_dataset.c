@@ -60,9 +60,9 @@ static int list(const char *dir, double R0)
     if (status)
         return cli_fail(status, &diag);
     if (src.sweep_model[0])
-        printf("SIMULATED by the %s model (tirenv sweep: %s/sweep.txt); tire %s%s\n",
-               src.sweep_model, dir, src.tire[0] ? src.tire : "",
-               src.tire[0] ? "" : "tire.tir with each case's keys of sweep.csv");
+        printf("SIMULATED by the %s model (tirenv sweep: %s/sweep.txt); tire %s/tire.tir%s\n",
+               src.sweep_model, dir, dir,
+               src.sweep_key[0] ? " with each case's keys of sweep.csv" : "");
     else if (src.model[0])
         printf("SIMULATED by the %s model on the virtual rig%s%s%s; tire %s\n", src.model,
                src.design[0] ? " (design " : "", src.design, src.design[0] ? ")" : "",

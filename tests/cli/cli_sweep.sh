@@ -32,7 +32,7 @@ check "sweep warns of a swept key the model's curve does not depend on, and only
 run "$bin" dataset list one
 check "dataset list reads it" '[ $rc -eq 0 ] && grep -q c0023 out'
 check "dataset list says the sweep simulated it, the tire per case" \
-    'grep -q "SIMULATED by the springs model (tirenv sweep: one/sweep.txt); tire tire.tir with each case.s keys of sweep.csv" out'
+    'grep -q "SIMULATED by the springs model (tirenv sweep: one/sweep.txt); tire one/tire.tir with each case.s keys of sweep.csv" out'
 # A sweep's data are SIMULATED (its sweep.txt), never measurements; a sweep that set a tire key
 # has no one tire file as its reference: study and compare say so rather than fit its model.
 run "$bin" study --data one --seeds 1 --no-images -o st_one
