@@ -63,7 +63,8 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
             out->raw = strcmp(v, "model") == 0;
         } else if ((v = value_of(r.text, "model"))) {
             snprintf(out->model, sizeof out->model, "%s", v);
-        } else if (strncmp(r.text, "set ", 4) == 0 && !out->key_line) {
+        } else if (strncmp(r.text, "set ", 4) == 0 && !out->key_line &&
+                   strcspn(r.text + 4, " =") > 0) {
             const size_t len = strcspn(r.text + 4, " =");
             snprintf(out->key, sizeof out->key, "%.*s", (int)len, r.text + 4);
             out->key_line = r.line;

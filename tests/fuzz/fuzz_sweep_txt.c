@@ -1,7 +1,8 @@
 /* libFuzzer harness: what a sweep's sweep.txt declares of the manifest beside it
- * (tirenv_dataset__sweep_declared, src/dataset/dataset_sweep.c) on arbitrary bytes; what it
- * accepts must be a count a manifest can hold, given at a line, with terminated strings, and
- * every failure must say why (the reader's promises).
+ * (tirenv_dataset__sweep_declared, src/dataset/dataset_sweep.c) and what simulated it, on
+ * arbitrary bytes; what it accepts must be a count a manifest can hold, given at a line, with
+ * terminated strings, a key set only with its line, and every failure must say why (the
+ * reader's promises).
  * SPDX-License-Identifier: Apache-2.0 */
 #include "fuzz_input.h"
 #include "dataset/dataset_impl.h"
@@ -22,6 +23,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             !memchr(d.file, '\0', sizeof d.file) || !memchr(d.what, '\0', sizeof d.what))
             abort();
         if (d.cases && (strcmp(d.file, path) != 0 || strncmp(d.what, "cases = ", 8) != 0))
+            abort();
+        /* the source it gives: terminated, a key only with its line, no blank or '=' in it */
+        if (!memchr(d.model, '\0', sizeof d.model) || !memchr(d.key, '\0', sizeof d.key) ||
+            !d.key[0] != !d.key_line || strpbrk(d.key, " =") || (d.raw != 0 && d.raw != 1))
             abort();
     } else if (!diag.message[0] || !diag.line) {
         abort();  /* every failure says why, at its line */
