@@ -198,8 +198,10 @@ int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tiren
  * (and the same network): the evaluations that follow are bit for bit those that followed the
  * save, given the same calls. The model's profile must be set (tirenv_model_set, with any
  * load) and be the same ground as when the state was saved, which is the caller's to keep.
- * TIRENV_EINVAL (the model then unset) for a buffer that is not such a state (its size, type
- * or tire differ), or a state of a set model restored into one without a profile. */
+ * TIRENV_EINVAL, the model left as it was, for a buffer that is not such a state (its size,
+ * type or tire differ, or a byte changed since the save: the state ends in a checksum of its
+ * bytes), or a state of a set model restored into one without a profile; a type's own restore
+ * that fails leaves the model unset. */
 int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
                                tirenv_diag *diag);
 

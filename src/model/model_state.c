@@ -12,7 +12,11 @@
 #include "model/model_state.h"
 
 /* The layout: magic, total size, type name, tire fingerprint, load, z_flat, ready, then the
- * type's bytes. Native byte order and doubles: a state is for this build and machine. */
+ * type's bytes, last a checksum of all before it (FNV-1a, 64 bits): a byte changed since the
+ * save (a host's storage, a co-simulation master's copy) is refused, not restored as another
+ * model's state; the fields' own checks caught only values out of range (a flat-ground height
+ * moved within them shifted every h). Native byte order and doubles: a state is for this
+ * build and machine. */
 static const char magic[8] = {'t', 'i', 'r', 'e', 'n', 'v', 'S', '1'};
 enum { NAME_BYTES = 16 };
 #define HEAD_BYTES                                                                            \
@@ -56,7 +60,12 @@ static size_t type_bytes(const tirenv_model *m)
 
 size_t tirenv_model_state_size(const tirenv_model *m)
 {
-    return HEAD_BYTES + type_bytes(m);
+    return HEAD_BYTES + type_bytes(m) + sizeof(uint64_t);
+}
+
+static uint64_t checksum(const void *buf, size_t size)
+{
+    return fnv(0xcbf29ce484222325ull, buf, size - sizeof(uint64_t));
 }
 
 /* Several tracks hold several type states; the bytes are those of one. */
@@ -92,6 +101,8 @@ int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tiren
     p = tirenv_model__put(p, &m->z_flat, sizeof m->z_flat);
     p = tirenv_model__put(p, &ready, 1);
     m->type->ops->state_save(m->state, p);
+    const uint64_t sum = checksum(buf, need);
+    memcpy((unsigned char *)buf + need - sizeof sum, &sum, sizeof sum);
     return TIRENV_OK;
 }
 
@@ -123,6 +134,12 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
     if (memcmp(head, magic, sizeof magic) != 0 || total != need)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a saved model state (tirenv_model_state_save)");
+    uint64_t sum;
+    memcpy(&sum, (const unsigned char *)buf + need - sizeof sum, sizeof sum);
+    if (sum != checksum(buf, need))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "the state's bytes have changed since it was saved (its checksum "
+                            "does not match them)");
     if (strcmp(name, m->type->name) != 0)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "a state of the %s model cannot be restored into a %s model", name,

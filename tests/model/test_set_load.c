@@ -339,6 +339,20 @@ static void test_state_errors(void **state)
     assert_non_null(strstr(d.message, "another tire"));
     assert_int_equal(tirenv_model_state_restore(unset, buf, size, &d), TIRENV_EINVAL);
     assert_non_null(strstr(d.message, "no profile"));
+    /* One bit changed anywhere past the header's checks (the flat-ground height, the type's
+     * own bytes, the checksum itself) is refused by the checksum: the flat-ground height moved
+     * within its range was restored, and shifted every h. */
+    const size_t at[] = {8 + 8 + 16 + 8 + 8 + 3, 8 + 8 + 16 + 8 + 8 + 8 + 1 + 5, size - 1};
+    assert_int_equal(tirenv_model_eval(cam, -0.1, &before, &d), TIRENV_OK);
+    for (size_t k = 0; k < sizeof at / sizeof at[0]; ++k) {
+        buf[at[k]] ^= 0x04;
+        assert_int_equal(tirenv_model_state_restore(cam, buf, size, &d), TIRENV_EINVAL);
+        assert_non_null(strstr(d.message, "changed since it was saved"));
+        assert_int_equal(tirenv_model_eval(cam, -0.1, &after, &d), TIRENV_OK);
+        assert_true(point_bits_equal(&before, &after));
+        buf[at[k]] ^= 0x04;
+    }
+    assert_int_equal(tirenv_model_state_restore(cam, buf, size, &d), TIRENV_OK);
     buf[0] ^= 0x5a;
     assert_int_equal(tirenv_model_state_restore(cam, buf, size, &d), TIRENV_EINVAL);
     assert_int_equal(tirenv_model_eval(cam, -0.1, &after, &d), TIRENV_OK);
