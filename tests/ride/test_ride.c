@@ -205,7 +205,7 @@ static void test_energy(void **state)
         const double E0 = tirenv_ride_energy(&v, &out[k0]);
         assert_true(E0 > 1.0);
         for (size_t k = k0; k < n; ++k) {
-            assert_true(out[k].F_front > 0 && out[k].F_rear > 0); /* linear throughout */
+            assert_true(out[k].F_front > 0 && out[k].F_rear > 0); /* never lifted off */
             assert_near(tirenv_ride_energy(&v, &out[k]), E0, 0, 1e-5);
         }
         free((double *)t.w);
