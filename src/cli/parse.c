@@ -468,8 +468,9 @@ int cli_parse_crg_nan_mode(void *dst, const char *arg)
 
 const char cli_help_data_tire[] =
     "  --tire FILE          tire property file (.tir); default: the tire the data set's\n"
-    "                       source.txt names, else tires/default.tir in the data\n"
-    "                       directory ($TIRENV_DATA, else the installed data)\n";
+    "                       source.txt names (a sweep's tire.tir when it set no tire\n"
+    "                       key), else tires/default.tir in the data directory\n"
+    "                       ($TIRENV_DATA, else the installed data)\n";
 
 void cli_help_tire(FILE *fp, int with_method, const char *example)
 {
