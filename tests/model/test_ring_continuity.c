@@ -52,7 +52,7 @@ static void jumps(tirenv_ring_contact_kind contact, double G_t, unsigned long se
 }
 
 /* |dh| <= 1e-6 m (issue 23's target) and |dF_x| <= 1 N (of F_x up to about 1e4 N, the
- * equilibrium's F_z tolerance 1e-6 N times a slope of order 1, with room) for the continuous
+ * equilibrium's F_z tolerance 1e-4 N times a slope of order 1, with room) for the continuous
  * contact; the rays jump by more than 1e-4 m somewhere in the same positions. */
 static void test_continuous_in_x(void **state)
 {
@@ -405,9 +405,10 @@ static void test_continuous_in_x_sampled_curves(void **state)
 /* Mirror symmetry: over a half-round, a bump and a triangle sampled symmetrically about x = 0,
  * h(-x) = h(x) and F_x(-x) = -F_x(x), for the ring and the springs model, in one sweep from
  * behind the obstacle to past it (each side reached from its own warm start). Bounds: 1e-8 m
- * (the solver's eps_z is 1e-10 m) and 1e-3 N (F_z's tolerance 1e-6 N times slopes of order 1,
- * with room); measured 1e-11 m and 1.4e-6 N. A sign or mirror error in either model's ground
- * geometry or forces is off by millimetres and hundreds of newtons. */
+ * (the solver's eps_z is 1e-10 m) and 1e-3 N (F_z's tolerance 1e-4 N times slopes of order 1,
+ * with room); measured 9.8e-11 m and 7.3e-6 N (1e-11 m and 1.4e-6 N with eps_F 1e-6 N). A
+ * sign or mirror error in either model's ground geometry or forces is off by millimetres and
+ * hundreds of newtons. */
 static void test_mirror_symmetric_sampled(void **state)
 {
     (void)state;

@@ -68,6 +68,7 @@ static void curves(double G, double dtheta, tirenv_ring_contact_kind contact, do
                    double fx[3][5])
 {
     tirenv_tire t = tirenv_tire_default();
+    t.eq.eps_F = 1e-6; /* the force tolerance winkler_bits were recorded at */
     t.ring.G_t = G;
     t.ring.contact = contact;
     t.ring.dtheta = dtheta > 0 ? dtheta : DTHETA;

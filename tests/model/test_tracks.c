@@ -135,12 +135,12 @@ static double ring_k_min(const tirenv_tire *tire, const tirenv_profile *p,
  * The ring (the default tire: its tread coupled in shear, 0.25 MPa at 0.25 degrees) starts each
  * position's Newton from the line through the last two equilibria (src/model/deformable.c),
  * and one track has skipped the level ground before the cleat where three tracks solved it:
- * their z iterates differ, and both stop where |F_z - G| <= eps_F (1e-6 N) and the next step
+ * their z iterates differ, and both stop where |F_z - G| <= eps_F (1e-4 N) and the next step
  * is within eps_z (docs/models.md section 11). With dF_z/dz exact (section 5.3) the next step
  * -(F_z - G)/(dF_z/dz) is each answer's distance from the root to second order, so two
  * answers lie within 2 eps_F / k_min of each other, k_min the smallest vertical stiffness
- * over the curve (2.1e5 N/m here, computed below: 9.6e-12 m). Measured 2.08e-12 m (the Winkler tread at
- * 0.125 degrees, the default before, 8.3e-13 m); the slope within 1.2e-11 (2.8e-11 with the
+ * over the curve (2.1e5 N/m here, computed below: 9.6e-10 m). Measured 5.5e-12 m (2.08e-12 m with
+ * eps_F 1e-6 N, the default before; the Winkler tread at 0.125 degrees 8.3e-13 m); the slope within 1.2e-11 (2.8e-11 with the
  * Winkler tread, whose F_x sums forces of a belt with stencil entries near 1e11 N/m). The
  * cleat and the load are the same for the two, so no summation order is involved: the one
  * track's F_z and the three tracks' sum of three equal slices differ only in the iterate at
