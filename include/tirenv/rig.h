@@ -92,6 +92,16 @@ void tirenv_rig_log_free(tirenv_rig_log *log);  /* frees the arrays, zeroes log 
 int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_rig_settings *s,
                         tirenv_rig_log *out, tirenv_diag *diag);
 
+/* The model's own curve on the x_N grid of s (L, H, R0, contact_length set; xN_from, xN_to,
+ * dxN as tirenv_import_default gives them or as wanted), the obstacle centred at x = 0: h at
+ * x = x_0 (1 - x_N), x_0 the x_N origin (tirenv_xN_origin). It is what the import of a
+ * noiseless, densely sampled log of the model approaches, for a model whose profile and load
+ * the caller has set with tirenv_model_set. TIRENV_ERANGE where the cleat's corner is out of
+ * reach (no origin), TIRENV_EINVAL for a grid of no point or more than a million; a model's
+ * failure as the model reports it. */
+int tirenv_rig_model_curve(tirenv_model *m, const tirenv_import_settings *s, tirenv_curve *out,
+                           tirenv_diag *diag);
+
 /* Writes a log as CSV "t_s,x_m,z_m" (the header, then '#' comment lines if comment is not NULL;
  * comment may hold several lines separated by '\n'), atomically. */
 int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char *comment,

@@ -370,11 +370,12 @@ static const outside_design outside[] = {
 enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
 /* The reference curves: the model that simulated the data set (the ring for measured data)
- * on the virtual rig, imported like the data set's; each obstacle with its own instance of
- * it, so that its curve depends on it alone. */
+ * on the virtual rig, imported like the data set's, or its own curves where the data set is
+ * (raw); each obstacle with its own instance of it, so that its curve depends on it alone. */
 typedef struct {
     const tirenv_tire *tire;
     const tirenv_model_type *reference;
+    int raw;               /* the reference's own curves, no rig (a sweep without --rig) */
     const grid_design *g;
     tirenv_dataset *out;
     tirenv_profile **profiles;
@@ -403,35 +404,40 @@ static int outside_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
     int status = tirenv_model_load_for_contact_length(ref, cs->contact_length, &cs->load, diag);
     if (!status)
         status = tirenv_model_set(ref, p->profiles[i], cs->load, diag);
-    tirenv_rig_settings rig = tirenv_rig_default();
-    rig.seed = 777 + i;
-    tirenv_rig_log log = {0};
-    if (!status)
-        status = tirenv_rig_simulate(ref, p->profiles[i], &rig, &log, diag);
     tirenv_import_settings imp = tirenv_import_default();
     imp.L = cs->L;
     imp.H = cs->H;
     imp.R0 = p->tire->springs.R0;
     imp.contact_length = cs->contact_length;
-    if (!status)
-        status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve, diag);
-    tirenv_rig_log_free(&log);
+    if (!status && p->raw) {
+        status = tirenv_rig_model_curve(ref, &imp, &cs->curve, diag);
+    } else if (!status) {
+        tirenv_rig_settings rig = tirenv_rig_default();
+        rig.seed = 777 + i;
+        tirenv_rig_log log = {0};
+        status = tirenv_rig_simulate(ref, p->profiles[i], &rig, &log, diag);
+        if (!status)
+            status = tirenv_rig_import_samples(log.n, log.t, log.x, log.z, &imp, &cs->curve,
+                                               diag);
+        tirenv_rig_log_free(&log);
+    }
     tirenv_model_free(ref);
     return status;
 }
 
-static int outside_dataset(const tirenv_tire *tire, const tirenv_model_type *reference,
+static int outside_dataset(const tirenv_tire *tire, const tirenv_model_type *reference, int raw,
                            const grid_design *g, size_t jobs, tirenv_dataset *out,
                            tirenv_profile *profiles[N_OUTSIDE], tirenv_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    snprintf(out->dir, sizeof out->dir, "(virtual rig, %s model)",
+    snprintf(out->dir, sizeof out->dir, raw ? "(the %s model's own curves)"
+                                            : "(virtual rig, %s model)",
              tirenv_model_type_name(reference));
     out->cases = calloc(N_OUTSIDE, sizeof *out->cases);
     if (!out->cases)
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "study", "out of memory");
     out->n = N_OUTSIDE;
-    outside_pass p = {tire, reference, g, out, profiles};
+    outside_pass p = {tire, reference, raw, g, out, profiles};
     return tirenv_parallel_for(N_OUTSIDE, jobs, outside_case, NULL, &p, diag);
 }
 
@@ -533,11 +539,16 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
             1e3 * seeds->median);
     append_model_means(fp, phys);
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
-    fprintf(fp, "## Outside the training range\n\n"
-                "Obstacles no training case resembles, with reference curves from %s "
-                "virtual rig (%s model, SIMULATED): ",
-            s->simulated_by && s->simulated_raw ? "the" : "the same",
-            tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring));
+    const char *ref_name =
+        tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring);
+    if (s->simulated_by && s->simulated_raw)
+        fprintf(fp, "## Outside the training range\n\n"
+                    "Obstacles no training case resembles, with reference curves that are the "
+                    "%s model's own, as the data set's (no rig, SIMULATED): ", ref_name);
+    else
+        fprintf(fp, "## Outside the training range\n\n"
+                    "Obstacles no training case resembles, with reference curves from the "
+                    "same virtual rig (%s model, SIMULATED): ", ref_name);
     for (size_t i = 0; i < outside_ds->n; ++i) {
         const tirenv_case *c = &outside_ds->cases[i];
         fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
@@ -564,7 +575,13 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
     for (size_t m = 0; m < out_r->n_models; ++m)
         if (strcmp(out_r->model[m], "springs") == 0)
             springs_m = m;
-    if (nn_m >= 0) {
+    if (s->simulated_by == tirenv_model_springs) {
+        /* The physical model is the reference here: a ratio to its error says nothing. */
+        fprintf(fp, ". The springs model simulated these curves%s, so its error is %s, not how "
+                    "it generalises. Plots: [outside/](outside/report.md).\n\n",
+                s->simulated_raw ? "" : " on the virtual rig",
+                s->simulated_raw ? "zero by construction" : "the rig's noise and the import");
+    } else if (nn_m >= 0) {
         const double ratio = tirenv_compare__mean_rms(out_r, (size_t)nn_m, NULL) /
                              tirenv_compare__mean_rms(out_r, springs_m, NULL);
         fprintf(fp, ". Outside its training range the network's mean error is %.1f times the "
@@ -573,6 +590,8 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
                        : ratio > 1 ? ": both degrade, the network more"
                                    : ": here the network held up as well as the physical "
                                      "model");
+    } else {
+        fprintf(fp, ". Plots: [outside/](outside/report.md).\n\n");
     }
     fclose(fp);
     return buf;
@@ -653,14 +672,17 @@ static int part_outside(study_parts *p, tirenv_diag *diag)
 {
     const tirenv_study_settings *s = p->s;
     char sub[1024];
-    int status = outside_dataset(&s->tire, p->reference, p->grid, s->jobs ? s->jobs : 1,
+    const int raw = s->simulated_by && s->simulated_raw;
+    int status = outside_dataset(&s->tire, p->reference, raw, p->grid, s->jobs ? s->jobs : 1,
                                  p->out_ds, p->profiles, diag);
     snprintf(sub, sizeof sub, "%s/outside", s->out_dir);
     tirenv_compare_settings os = compare_settings(s, sub, "Obstacles outside the training "
                                                   "range");
     os.simulated = 1;
     os.simulated_by = p->reference;
-    os.data_label = "taller, shorter and other shapes on the virtual rig";
+    os.simulated_raw = raw;
+    os.data_label = raw ? "taller, shorter and other shapes, the reference model's own curves"
+                        : "taller, shorter and other shapes on the virtual rig";
     if (!status)
         status = tirenv_compare(p->out_ds, p->tire, p->nn, &os, p->out_r, diag);
     if (!status)

@@ -221,33 +221,17 @@ int tirenv_sweep__check_case(const char *curve, const char *log, const char *wha
     return TIRENV_EPARSE;
 }
 
-/* The model's own curve at the points of the import's x_N grid (what the import of a
- * noiseless log would approach), swept in x order so that each equilibrium starts from the
- * previous one. */
+/* The model's own curve on the import's x_N grid (tirenv_rig_model_curve). */
 static int model_curve(tirenv_model *m, const tirenv_profile *cleat, double load, double R0,
                        double l_c, double L, double H, tirenv_curve *out, tirenv_diag *diag)
 {
-    const tirenv_import_settings g = tirenv_import_default();
-    const double x_0 = tirenv_xN_origin(R0, l_c, L, H);
-    if (!isfinite(x_0))
-        return tirenv_error(diag, TIRENV_ERANGE, "", 0, "obstacle",
-                            "the cleat's corner is out of the tire's reach at this contact "
-                            "length (no x_N origin)");
-    const size_t n = tirenv_import_grid_points(&g);
-    int status = tirenv_curve_alloc(out, n);
-    if (status)
-        return tirenv_error(diag, status, "", 0, "", "out of memory");
-    status = tirenv_model_set(m, cleat, load, diag);
-    for (size_t k = 0; k < n && !status; ++k) {
-        tirenv_point pt;
-        out->x_N[k] = g.xN_from + (double)k * g.dxN;
-        out->x[k] = x_0 * (1 - out->x_N[k]) + 0.0; /* + 0.0: the centre is 0, not -0 */
-        if (!(status = tirenv_model_eval(m, out->x[k], &pt, diag)))
-            out->h[k] = pt.h;
-    }
-    if (status)
-        tirenv_curve_free(out);
-    return status;
+    tirenv_import_settings g = tirenv_import_default();
+    g.L = L;
+    g.H = H;
+    g.R0 = R0;
+    g.contact_length = l_c;
+    int status = tirenv_model_set(m, cleat, load, diag);
+    return status ? status : tirenv_rig_model_curve(m, &g, out, diag);
 }
 
 /* The rig as tirenv_dataset_build runs it: each run its own noise and its own rig zero. */
