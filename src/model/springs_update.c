@@ -11,14 +11,14 @@
 #include <string.h>
 #include "profile/profile_impl.h"
 
-/* The farthest (m) from the base's height an update is tried. The tangent errs by the
- * rows' curvature in z times dz^2 / 2 (a vertex row's h = R0 - |V - C| and its weights;
- * a ray's row on a fixed face is linear), about dz^2 / |V - C|: below the equality
+/* The farthest (m) from the base's height an update is tried from the tangent. The tangent
+ * errs by the rows' curvature in z times dz^2 / 2 (a vertex row's h = R0 - |V - C| and its
+ * weights; a ray's row on a fixed face is linear), about dz^2 / |V - C|: below the equality
  * tolerance (eq_tol) only for dz under about 1e-7 m, and within 1e-6 m after a correction
- * or two (below). Newton's second evaluation, 1e-5 to 1e-4 m from the first, would need
- * more corrections and the exact dF_z/dz at the new height (the base's, given with an
- * update, is off by |d2F/dz2| dz): tried, it cost more than it spared (docs/models.md
- * section 4.8, Cost); the confirming evaluation, 1e-11 to 1e-7 m away, is what this is for. */
+ * or two (below). Newton's second evaluation, 1e-5 to 1e-4 m from the first, starts instead
+ * from the state tirenv_springs__cc_root solved for at that height (springs_root.c), exact
+ * but for round-off where the working set holds; from the tangent it would need more
+ * corrections (tried: it cost more than it spared, docs/models.md section 4.8, Cost). */
 static const double upd_dz_max = 1e-6;
 
 /* Corrections of the tangent's residual before the update is given up: each divides it by
