@@ -3,7 +3,8 @@
  * every vertex of seeded random obstacles, the QP's optimality conditions to round-off,
  * every ground vertex outside the tread, narrow features carried, dF_z/dz against finite
  * differences over roads, results that do not depend on the warm start nor on the factors
- * the solver keeps between solves, the confirming evaluation's update the QP's solution, an
+ * the solver keeps between solves, the confirming evaluation's update the QP's solution,
+ * Newton's step on the working set the equilibrium where the update takes it, an
  * evaluation far from the last (Brent's bracket end) trying the closed form first, a
  * lone vertex's hub stiffness the same along the tread and the 1 mm second difference of h
  * over it. */
