@@ -23,7 +23,8 @@ typedef struct {
     double step;           /* Newton's correction from it, m (INFINITY if dF/dz >= 0) */
 } newton_state;
 
-/* A new iterate: the bracket, and the correction Newton proposes from it. */
+/* A new iterate: the bracket, and the correction Newton proposes from it (the model's own
+ * where it gives one). */
 static void take(newton_state *st, const tirenv_eq_point *p, double G)
 {
     const double f = p->F - G;
@@ -36,7 +37,7 @@ static void take(newton_state *st, const tirenv_eq_point *p, double G)
         st->f_hi = f;
     }
     st->cur = *p;
-    st->step = p->dF_dz < 0 ? -f / p->dF_dz : INFINITY;
+    st->step = p->has_root ? p->z_root - p->z : p->dF_dz < 0 ? -f / p->dF_dz : INFINITY;
 }
 
 static int newton_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,

@@ -23,6 +23,12 @@ typedef struct {
     double dF_dz;          /* dF_z/dz, N/m (<= 0 where the model is monotone) */
     double fx;             /* longitudinal hub force F_x, N */
     size_t contacts;       /* elements (or nodes) touching the ground */
+    /* The model's own step, where it knows F_z better than its slope does (the springs
+     * model's continuous contact: F_z = G on the working set of the evaluation's QP, solved
+     * with it, docs/models.md section 4.8, Cost): Newton steps to z_root instead of its
+     * linear step. has_root 0 (as every evaluation starts): none. */
+    int has_root;
+    double z_root;         /* m */
 } tirenv_eq_point;
 
 /* Fills *out (out->z = z) or returns a status with diag saying what failed. */

@@ -57,7 +57,14 @@ typedef struct {
 static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
 {
     const force_ctx *c = ctx;
-    return c->st->def->forces(c->st->elem, c->prof, c->x, z, out, diag);
+    const deformable_state *st = c->st;
+    const int status = st->def->forces(st->elem, c->prof, c->x, z, out, diag);
+    /* The model's own step only where Newton takes a step (the other methods take none):
+     * within eps_F of the load the linear one decides convergence as before. */
+    if (!status && st->def->root && st->tire.eq.method == TIRENV_EQ_NEWTON &&
+        fabs(out->F - st->G) > st->tire.eq.eps_F)
+        out->has_root = st->def->root(st->elem, c->prof, c->x, z, st->G, out, &out->z_root);
+    return status;
 }
 
 /* The same on flat ground, with the flat-ground workspace. */

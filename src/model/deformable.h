@@ -20,6 +20,12 @@ struct tirenv_deformable {
      * contacts, all of one evaluation, in *out; a failure says what failed in diag. */
     int (*forces)(void *elem, const tirenv_profile *p, double x, double z,
                   tirenv_eq_point *out, tirenv_diag *diag);
+    /* Right after forces() at (x, z) on p: the centre height *z_root (m) where F_z = G (N)
+     * with the evaluation's contact state carried along (Newton's step on the model's own
+     * piece, more exact than the linear one), returning 1; 0 where it has none. at is what
+     * forces() gave. NULL: no model step (Newton's own). */
+    int (*root)(void *elem, const tirenv_profile *p, double x, double z, double G,
+                const tirenv_eq_point *at, double *z_root);
     /* Flat-ground contact length (m) with the centre at height z (m): the length of ground
      * the tread touches, which grows continuously as the centre comes down to the lowest
      * height of the valid range (lowest_z), so that deformable.c finds the height of a

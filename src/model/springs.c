@@ -79,6 +79,7 @@ struct tirenv_springs {
      * profile and dF_z/dz (N/m). */
     double upd_x, upd_dfz_dz;
     unsigned long long upd_serial;
+    size_t updates;        /* evaluations the update gave (what the tests count) */
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -471,9 +472,11 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                                       s->w, s->p, s->d)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, contacts);
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
+            ++s->updates;
             return TIRENV_OK;
         }
         s->cc.base_ok = 0;
+        s->cc.pred_ok = 0;
         const int status =
             tirenv_springs__cc_rows(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, diag);
         if (status)
@@ -580,6 +583,23 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     *dfz_dz = sum;
     s->upd_dfz_dz = sum;
     return TIRENV_OK;
+}
+
+size_t tirenv_springs__updates(const tirenv_springs *s)
+{
+    return s->updates;
+}
+
+int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                         double G, double F, double dfz_dz, double *z_root)
+{
+    const tirenv_springs__cc *c = &s->cc;
+    /* Only right after a full evaluation at (x, z) that left the update's base there. */
+    if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || !c->base_ok || c->base_z != z ||
+        s->upd_x != x || s->upd_serial != prof->serial || c->f0 > c->f1)
+        return 0;
+    return tirenv_springs__cc_root(&s->cc, &s->cc_tire, prof, x, G, F, dfz_dz,
+                                   s->S_lc[c->f0], s->S_rc[c->f1], s->dw, z_root);
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,

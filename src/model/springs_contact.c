@@ -31,7 +31,9 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         return TIRENV_ENOMEM;
     if (!(c->base_w = calloc(N + 2, sizeof *c->base_w)) ||
         !(c->upd_w = calloc(N + 2, sizeof *c->upd_w)) ||
-        !(c->upd_pin = calloc(N, sizeof *c->upd_pin)))
+        !(c->upd_pin = calloc(N, sizeof *c->upd_pin)) ||
+        !(c->pred_w = calloc(N + 2, sizeof *c->pred_w)) ||
+        !(c->root_y = calloc(N + 2, sizeof *c->root_y)))
         return TIRENV_ENOMEM;
     c->f0 = 1;
     c->f1 = 0;
@@ -79,6 +81,8 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->upd_w);
     free(c->upd_pin);
     free(c->dlambda);
+    free(c->pred_w);
+    free(c->root_y);
     memset(c, 0, sizeof *c);
 }
 
@@ -91,6 +95,7 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c)
     c->between = 0;
     c->last_ok = 0;
     c->base_ok = 0;
+    c->pred_ok = 0;
 }
 
 /* ga w_i + gb w_j - h: the slack at w of a row not working, m (its reaction is 0, so its own

@@ -23,6 +23,15 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
  * 11.2). */
 int tirenv_springs__qp_first(const tirenv_springs *s, double z);
 
+/* Right after tirenv_springs_forces at (x, z) on prof gave F (N) and dF_z/dz (N/m): the
+ * height *z_root (m) where F_z = G (N) on its QP's working set (tirenv_springs__cc_root),
+ * where the next evaluation is the update's; 1, or 0 where there is none (rays, the closed
+ * form, an update). */
+int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                         double G, double F, double dfz_dz, double *z_root);
+/* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
+size_t tirenv_springs__updates(const tirenv_springs *s);
+
 /* What the model's contact length (springs_model.c) needs of the elements: their stiffnesses
  * k_r and k_ir (N/m), the diagonal of the tips' stiffness K (N/m: k_r + k_ir per neighbour)
  * and cos(theta_i), N entries each, owned by s. */
@@ -428,6 +437,14 @@ typedef struct {
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
+    /* The base's working set carried to where F_z meets the load (tirenv_springs__cc_root),
+     * while pred_ok: its height (pred_z, m), w on the free elements of [f0, f1] (pred_w[e],
+     * m) and the working rows between elements' reactions (pred_lam, N, in schur_pos'
+     * order), the update's start at pred_z; root_y its scratch (N + 2 each). */
+    int pred_ok;
+    double pred_z;
+    double *pred_w, *root_y;
+    double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -445,6 +462,10 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
 void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
                                        const tirenv_springs__cc_tire *T, double x[],
                                        double lam[]);
+/* x := K_FF^-1 x on one chain [lo, hi] of free elements of the factor kept, x zero on
+ * [lo, from). */
+void tirenv_springs__cc_chain_solve(const tirenv_springs__cc *c, double x[], size_t lo,
+                                    size_t from, size_t hi);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (> 0, else +0 where the ray meets no ground within R0: never negative, -0 or NaN;
@@ -495,7 +516,8 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
 
 /* The state at centre height z of the last QP solve's working set, had by its tangent from
  * the solve's height (springs_update.c, docs/models.md section 4.8, Cost): w = w_0 + (z -
- * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope), w_e = h on
+ * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope; at
+ * c->pred_z, while c->pred_ok, the state tirenv_springs__cc_root solved for), w_e = h on
  * the held ones, the rows between elements' reactions likewise, the held ones' from K w =
  * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
  * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
@@ -507,6 +529,19 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
                               const double d[], const double dw[], double w[], double pe[],
                               double obstacle[]);
+
+/* springs_root.c: after a QP solve at (x, c->base_z) whose slope made it the update's base,
+ * with hub force F0 (N) and dF_z/dz dF0 (N/m) there: the height *z_root (m) where F_z = G (N)
+ * with its working set fixed (the rows' weights and heights at each height, the held rays'
+ * rows linear in z), F_z = k_r sum cos(theta_e) w_e + S_l w_f0 + S_r w_f1 (the hub's sum,
+ * S_l and S_r the free chains' beyond the span); its state kept as the update's start there
+ * (c->pred_ok). Returns 1, or 0 where the working set does not allow it (a held element on a
+ * vertex, a row leaving its sector, a negative reaction) or the base is not usable. dw is
+ * the base's dw/dz over [f0, f1] (tirenv_springs__cc_slope's). docs/models.md section 4.8,
+ * Cost. */
+int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            const tirenv_profile *p, double x, double G, double F0, double dF0,
+                            double S_l, double S_r, const double dw[], double *z_root);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

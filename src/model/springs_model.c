@@ -50,6 +50,13 @@ static int springs_forces(void *elem, const tirenv_profile *p, double x, double 
                                  diag);
 }
 
+static int springs_root(void *elem, const tirenv_profile *p, double x, double z, double G,
+                        const tirenv_eq_point *at, double *z_root)
+{
+    springs_elem *e = elem;
+    return tirenv_springs__root(e->s, p, x, z, G, at->F, at->dF_dz, z_root);
+}
+
 /* docs/models.md section 1.3: the springs model's contact length is the length of ground its
  * tread touches, as the ring's: from the first to the last element with a positive contact
  * reaction, each end extended towards its free neighbour to where the "compression"
@@ -179,6 +186,7 @@ static const tirenv_deformable springs_deformable = {
     .alloc = springs_alloc,
     .free = springs_free,
     .forces = springs_forces,
+    .root = springs_root,
     .contact_length = springs_contact_length,
     .lowest_z = springs_lowest_z,
     .bracket = springs_bracket,

@@ -23,6 +23,12 @@ static void chain_solve_from(const tirenv_springs__cc *c, double x[], size_t lo,
         x[e] = x[e] / piv[e] - mul[e + 1] * x[e + 1];
 }
 
+void tirenv_springs__cc_chain_solve(const tirenv_springs__cc *c, double x[], size_t lo,
+                                    size_t from, size_t hi)
+{
+    chain_solve_from(c, x, lo, from, hi);
+}
+
 /* x := K_FF^-1 x on one chain [lo, hi] of free elements (held or outside the span at both
  * ends): K_FF does not couple across a held element. */
 static void chain_solve(const tirenv_springs__cc *c, double x[], size_t lo, size_t hi)

@@ -11,14 +11,14 @@
 #include <string.h>
 #include "profile/profile_impl.h"
 
-/* The farthest (m) from the base's height an update is tried. The tangent errs by the
- * rows' curvature in z times dz^2 / 2 (a vertex row's h = R0 - |V - C| and its weights;
- * a ray's row on a fixed face is linear), about dz^2 / |V - C|: below the equality
+/* The farthest (m) from the base's height an update is tried from the tangent. The tangent
+ * errs by the rows' curvature in z times dz^2 / 2 (a vertex row's h = R0 - |V - C| and its
+ * weights; a ray's row on a fixed face is linear), about dz^2 / |V - C|: below the equality
  * tolerance (eq_tol) only for dz under about 1e-7 m, and within 1e-6 m after a correction
- * or two (below). Newton's second evaluation, 1e-5 to 1e-4 m from the first, would need
- * more corrections and the exact dF_z/dz at the new height (the base's, given with an
- * update, is off by |d2F/dz2| dz): tried, it cost more than it spared (docs/models.md
- * section 4.8, Cost); the confirming evaluation, 1e-11 to 1e-7 m away, is what this is for. */
+ * or two (below). Newton's second evaluation, 1e-5 to 1e-4 m from the first, starts instead
+ * from the state tirenv_springs__cc_root solved for at that height (springs_root.c), exact
+ * but for round-off where the working set holds; from the tangent it would need more
+ * corrections (tried: it cost more than it spared, docs/models.md section 4.8, Cost). */
 static const double upd_dz_max = 1e-6;
 
 /* Corrections of the tangent's residual before the update is given up: each divides it by
@@ -54,8 +54,12 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     const double dz = z - c->base_z;
-    /* The corrections below need the working rows between elements on the Schur path. */
-    if (!c->base_ok || !c->use_schur || f0 > f1 || a > b || !(fabs(dz) <= upd_dz_max))
+    /* From the tangent a hair from the base, or from the state tirenv_springs__cc_root
+     * solved for at its height (Newton's step, which it chose). The corrections below need
+     * the working rows between elements on the Schur path. */
+    const int pred = c->pred_ok && z == c->pred_z;
+    if (!c->base_ok || !c->use_schur || f0 > f1 || a > b ||
+        !(pred || fabs(dz) <= upd_dz_max))
         return 0;
     const double R0 = T->R0, tol = 1e-12 * R0, tol_eq = eq_tol * R0;
     const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
@@ -107,7 +111,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                 return 0;
             wn[e] = ph[e];
         } else {
-            wn[e] = base_w[e] + dz * dw[e];
+            wn[e] = pred ? c->pred_w[e] : base_w[e] + dz * dw[e];
         }
     }
     /* The working rows between elements at z: the same vertex in the same sector, its
@@ -128,7 +132,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         cmp[q] = T->c0 * fmax(ga[q] + gb[q] - 1, 0);
         h[q] = V[k].h;
         row_i[q] = R->i;
-        lam[q] = c->lambda[r] + dz * c->dlambda[r];
+        lam[q] = pred ? c->pred_lam[q] : c->lambda[r] + dz * c->dlambda[r];
     }
     /* The KKT equations of the working set at z, K w = G^T lambda on the free elements and
      * G w + C lambda = h on the rows between elements, hold along the tangent but for the

@@ -3,7 +3,8 @@
  * every vertex of seeded random obstacles, the QP's optimality conditions to round-off,
  * every ground vertex outside the tread, narrow features carried, dF_z/dz against finite
  * differences over roads, results that do not depend on the warm start nor on the factors
- * the solver keeps between solves, the confirming evaluation's update the QP's solution, an
+ * the solver keeps between solves, the confirming evaluation's update the QP's solution,
+ * Newton's step on the working set the equilibrium where the update takes it, an
  * evaluation far from the last (Brent's bracket end) trying the closed form first, a
  * lone vertex's hub stiffness the same along the tread and the 1 mm second difference of h
  * over it. */
@@ -664,6 +665,88 @@ static void test_update_is_the_solution(void **state)
     free_tire(&S);
 }
 
+/* Newton's step on the last QP solve's working set (tirenv_springs__root, springs_root.c;
+ * docs/models.md section 4.8, Cost): after a full evaluation at z0, a load G = F0 + dF0 dz,
+ * dz from 1e-6 to 1e-3 m either way. The workspace's own evaluation at the height the root
+ * gives (the update from the root's state where its checks hold, else a full one) gives a
+ * fresh model's forces (to 1e-9 of F_z, sums over some 360 elements) and tips (1e-13 R0, as
+ * test_update_is_the_solution); where it was the update (the working set held), a fresh
+ * model's F_z there is G to within the equilibrium's force tolerance (1e-6 N, against some
+ * 3e4 N). Where the working set changes on the way (a ray onto another face, a row coming or
+ * going) the root is off, the update refuses it, and Newton goes on from the full
+ * evaluation. Seeded random obstacles and roads; most roots taken. */
+static void test_root_is_the_equilibrium(void **state)
+{
+    (void)state;
+    rng_state = 31415;
+    const tirenv_tire t = continuous_tire();
+    const double R0 = t.springs.R0;
+    tirenv_springs *probe = tirenv_springs_alloc(&t.springs);
+    assert_non_null(probe);
+    const size_t N = tirenv_springs_size(probe);
+    tirenv_springs_free(probe);
+    double *w_h = malloc(N * sizeof *w_h), *w_c = malloc(N * sizeof *w_c);
+    assert_true(w_h && w_c);
+    size_t tried = 0, found = 0, accepted = 0;
+    double worst_F = 0, worst_w = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        tirenv_profile *p = trial % 4 == 3 ? random_road(1500, 0.001, 2)
+                                           : random_obstacle(trial);
+        tirenv_springs *hot = tirenv_springs_alloc(&t.springs);
+        assert_non_null(hot);
+        const double x0 = -0.45 + 0.4 * uniform(), sink = 0.02 + 0.06 * uniform();
+        for (int k = 0; k < 40; ++k) {
+            const double x = x0 + 0.0137 * k;
+            const double g = tirenv_profile_max_height(p, x - 0.3, x + 0.3);
+            const double z0 = g + R0 - sink;
+            double fx, F0, dF0, z_r;
+            size_t contacts;
+            assert_int_equal(tirenv_springs_forces(hot, p, x, z0, &fx, &F0, &dF0, &contacts,
+                                                   NULL), TIRENV_OK);
+            const double dz = (uniform() < 0.5 ? -1 : 1) * pow(10, -6 + 3 * uniform());
+            const double G = F0 + dF0 * dz;
+            ++tried;
+            if (!tirenv_springs__root(hot, p, x, z0, G, F0, dF0, &z_r))
+                continue;
+            ++found;
+            double fx_h, fz_h, fx_c, fz_c, d_h, d_c;
+            size_t c_h, c_c;
+            const size_t updates = tirenv_springs__updates(hot);
+            assert_int_equal(tirenv_springs_forces(hot, p, x, z_r, &fx_h, &fz_h, &d_h, &c_h,
+                                                   NULL), TIRENV_OK);
+            const int upd = tirenv_springs__updates(hot) > updates;
+            tirenv_springs *cold = tirenv_springs_alloc(&t.springs);
+            assert_non_null(cold);
+            assert_int_equal(tirenv_springs_forces(cold, p, x, z_r, &fx_c, &fz_c, &d_c, &c_c,
+                                                   NULL), TIRENV_OK);
+            if (upd) { /* the root's state held: it was the QP's solution there */
+                ++accepted;
+                worst_F = fmax(worst_F, fabs(fz_c - G));
+                assert_true(fabs(fz_c - G) <= 1e-6);
+            }
+            assert_true(fabs(fz_h - fz_c) <= 1e-9 * fz_c);
+            assert_true(fabs(fx_h - fx_c) <= 1e-9 * fz_c);
+            assert_int_equal(c_h, c_c);
+            tirenv_springs_tips(hot, NULL, w_h, NULL);
+            tirenv_springs_tips(cold, NULL, w_c, NULL);
+            for (size_t e = 0; e < N; ++e) {
+                worst_w = fmax(worst_w, fabs(w_h[e] - w_c[e]));
+                assert_true(fabs(w_h[e] - w_c[e]) <= 1e-13 * R0);
+            }
+            tirenv_springs_free(cold);
+        }
+        tirenv_springs_free(hot);
+        tirenv_profile_free(p);
+    }
+    print_message("%zu full evaluations: a root on the working set from %zu, the update "
+                  "taken there %zu times, a fresh model's F_z within %.3g N of the load; the "
+                  "tips within %.3g m\n", tried, found, accepted, worst_F, worst_w);
+    assert_true(found > tried / 4);
+    assert_true(accepted > found / 4);
+    free(w_h);
+    free(w_c);
+}
+
 /* A working row between elements sends the next evaluation straight to the QP only near
  * its height (tirenv_springs__qp_first, docs/models.md section 11.2): Brent's bracket end,
  * the centre at the ground under it, tries the elements' own rows first, which hold there
@@ -848,6 +931,7 @@ int main(void)
         cmocka_unit_test(test_warm_start_invisible),
         cmocka_unit_test(test_kept_factor_invisible),
         cmocka_unit_test(test_update_is_the_solution),
+        cmocka_unit_test(test_root_is_the_equilibrium),
         cmocka_unit_test(test_far_evaluation_tries_the_closed_form),
         cmocka_unit_test(test_lone_vertex_stiffness),
         cmocka_unit_test(test_second_difference_lone_vertex),
