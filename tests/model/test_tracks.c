@@ -154,7 +154,8 @@ static double springs_k_min(const tirenv_tire *tire, const tirenv_profile *p,
  * with margins: 1e-12 m, 3e-11. The springs model (1.1e-16 m once) now differs as the ring
  * does, below: one track takes the model's own Newton step (F_z = G on its QP's working set,
  * docs/models.md section 4.8), the sum of tracks the linear one, so their iterates differ;
- * measured 3.8e-12 m against the bound 2 eps_F / k_min, 1.0e-11 m.
+ * measured 9.9e-11 m against the bound 2 eps_F / k_min, 1.0e-9 m (3.8e-12 m against 1.0e-11 m
+ * with eps_F 1e-6 N).
  * The ring (the default tire: its tread coupled in shear, 0.25 MPa at 0.25 degrees) starts each
  * position's Newton from the line through the last two equilibria (src/model/deformable.c),
  * and one track has skipped the level ground before the cleat where three tracks solved it:
@@ -163,8 +164,10 @@ static double springs_k_min(const tirenv_tire *tire, const tirenv_profile *p,
  * -(F_z - G)/(dF_z/dz) is each answer's distance from the root to second order, so two
  * answers lie within 2 eps_F / k_min of each other, k_min the smallest vertical stiffness
  * over the curve (2.1e5 N/m here, computed below: 9.6e-10 m). Measured 5.5e-12 m (2.08e-12 m with
- * eps_F 1e-6 N, the default before; the Winkler tread at 0.125 degrees 8.3e-13 m); the slope within 1.2e-11 (2.8e-11 with the
- * Winkler tread, whose F_x sums forces of a belt with stencil entries near 1e11 N/m). The
+ * eps_F 1e-6 N, the default before; the Winkler tread at 0.125 degrees 8.3e-13 m); the slope
+ * within 1.2e-11 (2.8e-11 with the Winkler tread, whose F_x sums forces of a belt with stencil
+ * entries near 1e11 N/m), the springs model's within 9.2e-11 (its stops, eps_F 1e-4 N): checked
+ * within 1e-9 for both, 3e-11 for the others. The
  * cleat and the load are the same for the two, so no summation order is involved: the one
  * track's F_z and the three tracks' sum of three equal slices differ only in the iterate at
  * which each stopped. */
@@ -198,7 +201,7 @@ static void test_equal_copies(void **state)
             assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
             assert_near(got[k].h, ref[k].h, h_tol, 0);
             dh = fmax(dh, fabs(got[k].h - ref[k].h));
-            assert_near(got[k].slope, ref[k].slope, 3e-11, 0);
+            assert_near(got[k].slope, ref[k].slope, ring || springs ? 1e-9 : 3e-11, 0);
             assert_near(got[k].fz, ref[k].fz, eq ? eq_F_tol(&tire) : 1e-9, 0);
         }
         if (ring || springs)
