@@ -47,7 +47,8 @@ enum { BAND_P = 4, TAIL = 4, NB = 6 };
 
 /* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t <= TAIL rows are
  * dense (the window's ends coupled through the exterior), and its Cholesky factor in place:
- * L[5 i + k] = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[TAIL i + a] =
+ * L[5 i + k] = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t), the factor's
+ * diagonal kept as its reciprocal 1 / L[i][i] (band_solve multiplies by it); B[TAIL i + a] =
  * A[N - t + a][i] for i < N - t (the tail rows interleaved, so that a column's four are
  * adjacent: two pairs of SSE2 lanes); T the dense t x t tail (lower triangle). */
 typedef struct {
@@ -177,7 +178,7 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
         d4[4] = s4[4];
     }
     const double lii = sqrt(c[0]), inv = 1 / lii;
-    c[0] = lii;
+    c[0] = inv;
     const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
     c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
     double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
@@ -293,7 +294,7 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         if (!(c[0] > 0))
             return 1;
         const double lii = sqrt(c[0]), inv = 1 / lii;
-        c[0] = lii;
+        c[0] = inv;
         const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
         for (size_t k = 1; k <= kmax; ++k)
             c[k] *= inv;
@@ -317,7 +318,11 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
 
 static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
 
-/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
+/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Each row's unknown waits
+ * on the one before it (after it, going back), so a solve's time is that chain's: a row takes
+ * the farther rows' products first and multiplies by its pivot's reciprocal, so that from row
+ * to row the chain is a product, a difference and a product, where a chain of four differences
+ * and a division was (docs/models.md 5.6, Counted a seventh time). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
  * full tail two lanes at a time; the same operations in the same order for every t. Without a
  * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
@@ -337,17 +342,17 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
     for (size_t i = i0; i < m; ++i) {
         double v = x[i];
-        if (i >= BAND_P) { /* unrolled: the same operations in the same order */
+        if (i >= BAND_P) { /* unrolled; the farthest row first (see above) */
             const double *l = L + (BAND_P + 1) * (i - 1);
-            v -= l[1] * x[i - 1];
-            v -= l[-(BAND_P + 1) + 2] * x[i - 2];
-            v -= l[-2 * (BAND_P + 1) + 3] * x[i - 3];
             v -= l[-3 * (BAND_P + 1) + 4] * x[i - 4];
+            v -= l[-2 * (BAND_P + 1) + 3] * x[i - 3];
+            v -= l[-(BAND_P + 1) + 2] * x[i - 2];
+            v -= l[1] * x[i - 1];
         } else {
-            for (size_t k = 1; k <= i; ++k)
+            for (size_t k = i; k >= 1; --k)
                 v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
         }
-        const double xi = v / L[(BAND_P + 1) * i];
+        const double xi = v * L[(BAND_P + 1) * i];
         x[i] = xi;
         if (t == TAIL) {
             const v2d vx = {xi, xi};
@@ -370,16 +375,8 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
     for (size_t i = m; i-- > 0;) {
         double v = x[i];
-        if (i + BAND_P < m) {
-            const double *l = L + (BAND_P + 1) * i;
-            v -= l[1] * x[i + 1];
-            v -= l[2] * x[i + 2];
-            v -= l[3] * x[i + 3];
-            v -= l[4] * x[i + 4];
-        } else {
-            for (size_t k = 1; k + i < m; ++k)
-                v -= L[(BAND_P + 1) * i + k] * x[i + k];
-        }
+        /* The tail's products first (they wait on no row), then the band's, the nearest
+         * row's last. */
         if (t == TAIL) { /* the products two at a time, subtracted in order */
             const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
             v -= p01[0];
@@ -390,7 +387,17 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
             for (size_t a = 0; a < t; ++a)
                 v -= B[TAIL * i + a] * y[a];
         }
-        x[i] = v / L[(BAND_P + 1) * i];
+        if (i + BAND_P < m) {
+            const double *l = L + (BAND_P + 1) * i;
+            v -= l[4] * x[i + 4];
+            v -= l[3] * x[i + 3];
+            v -= l[2] * x[i + 2];
+            v -= l[1] * x[i + 1];
+        } else {
+            for (size_t k = m - 1 - i; k >= 1; --k)
+                v -= L[(BAND_P + 1) * i + k] * x[i + k];
+        }
+        x[i] = v * L[(BAND_P + 1) * i];
     }
 }
 
