@@ -354,6 +354,59 @@ static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, 
  * full tail two lanes at a time; the same operations in the same order for every t. Without a
  * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
  * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
+/* One interior row i of the forward substitution (i >= BAND_P), the rows before it a .. d
+ * (d the nearest) from registers: z_i into x[i], its tail products taken off y. */
+static inline __attribute__((always_inline)) double fwd_row(const tband *A, double x[],
+                                                            const size_t t, size_t i, double a,
+                                                            double b, double c, double d,
+                                                            v2d *y01, v2d *y23, double y[])
+{
+    const double *l = A->L + (BAND_P + 1) * (i - 1), *B = A->B;
+    double v = x[i];
+    v -= l[-3 * (BAND_P + 1) + 4] * a;
+    v -= l[-2 * (BAND_P + 1) + 3] * b;
+    v -= l[-(BAND_P + 1) + 2] * c;
+    v -= l[1] * d;
+    x[i] = v;
+    if (t == TAIL) {
+        const v2d vx = {v, v};
+        *y01 -= v2_load(B + TAIL * i) * vx;
+        *y23 -= v2_load(B + TAIL * i + 2) * vx;
+    } else {
+        for (size_t k = 0; k < t; ++k)
+            y[k] -= B[TAIL * i + k] * v;
+    }
+    return v;
+}
+
+/* One interior row i of the back substitution (i + BAND_P < m), the rows after it a .. d (a
+ * the nearest) from registers: the tail's products first (they wait on no row), then the
+ * band's, the nearest row's last. */
+static inline __attribute__((always_inline)) double bwd_row(const tband *A, double x[],
+                                                            const size_t t, size_t i, double a,
+                                                            double b, double c, double d,
+                                                            v2d y01, v2d y23, const double y[])
+{
+    const double *l = A->L + (BAND_P + 1) * i, *B = A->B;
+    double v = x[i] * l[0];
+    if (t == TAIL) { /* the products two at a time, subtracted in order */
+        const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+        v -= p01[0];
+        v -= p01[1];
+        v -= p23[0];
+        v -= p23[1];
+    } else {
+        for (size_t k = 0; k < t; ++k)
+            v -= B[TAIL * i + k] * y[k];
+    }
+    v -= l[4] * d;
+    v -= l[3] * c;
+    v -= l[2] * b;
+    v -= l[1] * a;
+    x[i] = v;
+    return v;
+}
+
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t, const size_t i0,
                                                                const int forward_only)
@@ -367,33 +420,36 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     v2d y01 = {0, 0}, y23 = {0, 0};
     if (t == TAIL)
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    /* The last BAND_P rows' unknowns in registers (x1 the nearest), not read back from x:
-     * a store and its load would lengthen the chain. */
-    double x1 = 0, x2 = 0, x3 = 0, x4 = 0;
-    for (size_t i = i0; i < m; ++i) {
+    size_t i = i0;
+    for (; i < m && i < BAND_P; ++i) {
         double v = x[i];
-        if (i >= BAND_P) { /* unrolled; the farthest row first (see above) */
-            if (i == i0 || i == BAND_P)
-                x1 = x[i - 1], x2 = x[i - 2], x3 = x[i - 3], x4 = x[i - 4];
-            const double *l = L + (BAND_P + 1) * (i - 1);
-            v -= l[-3 * (BAND_P + 1) + 4] * x4;
-            v -= l[-2 * (BAND_P + 1) + 3] * x3;
-            v -= l[-(BAND_P + 1) + 2] * x2;
-            v -= l[1] * x1;
-            x4 = x3, x3 = x2, x2 = x1, x1 = v;
-        } else {
-            for (size_t k = i; k >= 1; --k)
-                v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
-        }
-        const double xi = v;
-        x[i] = xi;
+        for (size_t k = i; k >= 1; --k)
+            v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
+        x[i] = v;
         if (t == TAIL) {
-            const v2d vx = {xi, xi};
+            const v2d vx = {v, v};
             y01 -= v2_load(B + TAIL * i) * vx;
             y23 -= v2_load(B + TAIL * i + 2) * vx;
         } else {
             for (size_t a = 0; a < t; ++a)
-                y[a] -= B[TAIL * i + a] * xi;
+                y[a] -= B[TAIL * i + a] * v;
+        }
+    }
+    if (i < m) {
+        /* The last BAND_P rows' unknowns in registers, not read back from x: a store and its
+         * load would lengthen the chain. Four rows an iteration, so that they need no
+         * moves. */
+        double x4 = x[i - 4], x3 = x[i - 3], x2 = x[i - 2], x1 = x[i - 1];
+        for (; i + 4 <= m; i += 4) {
+            const double v0 = fwd_row(A, x, t, i, x4, x3, x2, x1, &y01, &y23, y);
+            const double v1 = fwd_row(A, x, t, i + 1, x3, x2, x1, v0, &y01, &y23, y);
+            const double v2 = fwd_row(A, x, t, i + 2, x2, x1, v0, v1, &y01, &y23, y);
+            const double v3 = fwd_row(A, x, t, i + 3, x1, v0, v1, v2, &y01, &y23, y);
+            x4 = v0, x3 = v1, x2 = v2, x1 = v3;
+        }
+        for (; i < m; ++i) {
+            const double v = fwd_row(A, x, t, i, x4, x3, x2, x1, &y01, &y23, y);
+            x4 = x3, x3 = x2, x2 = x1, x1 = v;
         }
     }
     if (forward_only)
@@ -406,34 +462,37 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         x[m + a] = y[a];
     if (t == TAIL) /* now the tail's solution */
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    for (size_t i = m; i-- > 0;) {
-        double v = x[i] * L[(BAND_P + 1) * i];
-        /* The tail's products first (they wait on no row), then the band's, the nearest
-         * row's last. */
-        if (t == TAIL) { /* the products two at a time, subtracted in order */
-            const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+    i = m;
+    for (; i > 0 && i - 1 + BAND_P >= m; --i) { /* the last BAND_P rows */
+        const size_t r = i - 1;
+        double v = x[r] * L[(BAND_P + 1) * r];
+        if (t == TAIL) {
+            const v2d p01 = v2_load(B + TAIL * r) * y01, p23 = v2_load(B + TAIL * r + 2) * y23;
             v -= p01[0];
             v -= p01[1];
             v -= p23[0];
             v -= p23[1];
         } else {
             for (size_t a = 0; a < t; ++a)
-                v -= B[TAIL * i + a] * y[a];
+                v -= B[TAIL * r + a] * y[a];
         }
-        if (i + BAND_P < m) { /* x1 .. x4 as going forward */
-            if (i + BAND_P + 1 == m)
-                x1 = x[i + 1], x2 = x[i + 2], x3 = x[i + 3], x4 = x[i + 4];
-            const double *l = L + (BAND_P + 1) * i;
-            v -= l[4] * x4;
-            v -= l[3] * x3;
-            v -= l[2] * x2;
-            v -= l[1] * x1;
+        for (size_t k = m - 1 - r; k >= 1; --k)
+            v -= L[(BAND_P + 1) * r + k] * x[r + k];
+        x[r] = v;
+    }
+    if (i > 0) {
+        double x1 = x[i], x2 = x[i + 1], x3 = x[i + 2], x4 = x[i + 3];
+        for (; i >= 4; i -= 4) {
+            const double v0 = bwd_row(A, x, t, i - 1, x1, x2, x3, x4, y01, y23, y);
+            const double v1 = bwd_row(A, x, t, i - 2, v0, x1, x2, x3, y01, y23, y);
+            const double v2 = bwd_row(A, x, t, i - 3, v1, v0, x1, x2, y01, y23, y);
+            const double v3 = bwd_row(A, x, t, i - 4, v2, v1, v0, x1, y01, y23, y);
+            x1 = v3, x2 = v2, x3 = v1, x4 = v0;
+        }
+        for (; i > 0; --i) {
+            const double v = bwd_row(A, x, t, i - 1, x1, x2, x3, x4, y01, y23, y);
             x4 = x3, x3 = x2, x2 = x1, x1 = v;
-        } else {
-            for (size_t k = m - 1 - i; k >= 1; --k)
-                v -= L[(BAND_P + 1) * i + k] * x[i + k];
         }
-        x[i] = v;
     }
 }
 
