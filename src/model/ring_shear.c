@@ -159,8 +159,9 @@ static void band_add(tband *A, size_t i, size_t k, double v)
 }
 
 /* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
- * tail entries scaled, and its updates of the next BAND_P columns, two SSE2 lanes at a time;
- * the tail block's lower triangle in the caller's registers. fresh: column i + BAND_P's tail
+ * tail entries scaled by 1 / d into U's column, and its updates of the next BAND_P columns,
+ * two SSE2 lanes at a time; the tail block's lower triangle, and the next column's d and a1
+ * (d_a1), in the caller's registers. fresh: column i + BAND_P's tail
  * entries were never written (fill_window leaves them unset, stale from an earlier window,
  * and they are taken as zero), so its update starts from zero rather than from memory
  * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive. */
@@ -2236,6 +2237,70 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     T->ap_ok = 0;
     free(X.L);
     return st;
+}
+
+/* For tests: the window's last factorised system (T->ap, its fresh tail entries taken as zero)
+ * solved with its factor (T->win) for a right-hand side of pseudo-random entries in [-1, 1)
+ * drawn from seed: max |b - A x| / (max row sum of |A| * max |x|), a few machine epsilons for a
+ * backward-stable solve. -1 if no factor is held or out of memory. */
+double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const tband *P = &T->ap;
+    const size_t N = P->N, t = P->t, W = BAND_P + 1;
+    if (!T->ap_ok || t != TAIL || N < t + 1)
+        return -1;
+    const size_t m = N - t;
+    double *b = malloc(4 * N * sizeof *b);
+    if (!b)
+        return -1;
+    double *x = b + N, *y = x + N, *rs = y + N;
+    unsigned long v = seed;
+    for (size_t i = 0; i < N; ++i) { /* a linear congruential draw: no state of the library's */
+        v = v * 6364136223846793005UL + 1442695040888963407UL;
+        b[i] = x[i] = (double)(v >> 11) * 0x1p-52 - 1;
+    }
+    band_solve(&T->win, x);
+    for (size_t i = 0; i < N; ++i)
+        y[i] = rs[i] = 0;
+    /* A x and the row sums of |A|, from the lower triangle: the band, the tail rows, T. */
+    for (size_t i = 0; i < m; ++i) {
+        for (size_t k = 0; k <= BAND_P && i + k < m; ++k) {
+            const double a = P->L[W * i + k];
+            y[i + k] += a * x[i];
+            rs[i + k] += fabs(a);
+            if (k > 0) {
+                y[i] += a * x[i + k];
+                rs[i] += fabs(a);
+            }
+        }
+        const int fresh = i >= FRESH_FROM && i + BAND_P < m;
+        for (size_t a = 0; a < t && !fresh; ++a) {
+            const double e = P->B[TAIL * i + a];
+            y[m + a] += e * x[i];
+            y[i] += e * x[m + a];
+            rs[m + a] += fabs(e);
+            rs[i] += fabs(e);
+        }
+    }
+    for (size_t a = 0; a < t; ++a)
+        for (size_t c = 0; c <= a; ++c) {
+            const double e = P->T[a][c];
+            y[m + a] += e * x[m + c];
+            rs[m + a] += fabs(e);
+            if (c < a) {
+                y[m + c] += e * x[m + a];
+                rs[m + c] += fabs(e);
+            }
+        }
+    double res = 0, na = 0, nx = 0;
+    for (size_t i = 0; i < N; ++i) {
+        res = fmax(res, fabs(b[i] - y[i]));
+        na = fmax(na, rs[i]);
+        nx = fmax(nx, fabs(x[i]));
+    }
+    free(b);
+    return res / (na * nx);
 }
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end
