@@ -330,6 +330,10 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
  * same bits, 1 if not, -1 if it cannot. *q the restart's column, *moved 1 if column c moved. */
 int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, int *moved);
 
+/* For tests: the last factorised system solved with its factor for a pseudo-random right-hand
+ * side from seed: the residual max |b - A x| / (max row sum of |A| * max |x|); -1 if it cannot. */
+double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed);
+
 /* For tests: the exterior's six columns for a window of n nodes from ring_shear.c's shared
  * factor of the longest exterior against that exterior's own factorisation and full solves;
  * 0 if the same bits, 1 if not, -1 if it cannot (lugs, n out of range, out of memory). */

@@ -46,10 +46,15 @@
 enum { BAND_P = 4, TAIL = 4, NB = 6 };
 
 /* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t <= TAIL rows are
- * dense (the window's ends coupled through the exterior), and its Cholesky factor in place:
- * L[5 i + k] = A[i + k][i] for the band rows i, k <= BAND_P (i + k < N - t); B[TAIL i + a] =
- * A[N - t + a][i] for i < N - t (the tail rows interleaved, so that a column's four are
- * adjacent: two pairs of SSE2 lanes); T the dense t x t tail (lower triangle). */
+ * dense (the window's ends coupled through the exterior): L[5 i + k] = A[i + k][i] for the band
+ * rows i, k <= BAND_P (i + k < N - t); B[TAIL i + a] = A[N - t + a][i] for i < N - t (the tail
+ * rows interleaved, so that a column's four are adjacent: two pairs of SSE2 lanes); T the dense
+ * t x t tail (lower triangle). Factorised in place, A = U D U^T with U unit lower triangular
+ * and D diagonal on the band's rows: L[5 i] = 1 / D[i], L[5 i + k] = U[i + k][i], B[TAIL i +
+ * a] = U[N - t + a][i]; T then the Cholesky factor of the tail's Schur complement. Without
+ * square roots, the chain from one pivot to the next is a division, two products and a
+ * difference, and a solve's from one row to the next a product and a difference (docs/models.md
+ * 5.6, Counted a seventh time). */
 typedef struct {
     size_t N, t;
     double *L;
@@ -90,7 +95,7 @@ struct tirenv_ring_tread {
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
     int ext_all;        /* ext holds the factor of the longest exterior, M - 1 nodes, and ey
-                         * (3 x 2 M) its forward substitutions L^-1 e_a of the first three unit
+                         * (3 x 2 M) its forward substitutions U^-1 e_a of the first three unit
                          * vectors */
     double *ey;
     tband as, ap;       /* the window's system as assemble writes it, and the one before it,
@@ -154,19 +159,23 @@ static void band_add(tband *A, size_t i, size_t k, double v)
 }
 
 /* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
- * tail entries scaled, and its updates of the next BAND_P columns, two SSE2 lanes at a time;
- * the tail block's lower triangle in the caller's registers. fresh: column i + BAND_P's tail
+ * tail entries scaled by 1 / d into U's column, and its updates of the next BAND_P columns,
+ * two SSE2 lanes at a time; the tail block's lower triangle, and the next column's d and a1
+ * (d_a1), in the caller's registers. fresh: column i + BAND_P's tail
  * entries were never written (fill_window leaves them unset, stale from an earlier window,
  * and they are taken as zero), so its update starts from zero rather than from memory
  * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive. */
 static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
                                                                v2d *t20, v2d *t30, v2d *t32,
                                                                double *t00, double *t22,
-                                                               const int fresh,
+                                                               v2d *d_a1, const int fresh,
                                                                const double *src)
 {
     double *c = A->L + (BAND_P + 1) * i;
-    if (!(c[0] > 0))
+    /* d and a1 (c[0], c[1]) as the column before left them, from registers: read back from
+     * memory, its store and their load would lengthen the chain from pivot to pivot. */
+    const double d = (*d_a1)[0];
+    if (!(d > 0))
         return 1;
     { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
        * the system band_refactor copies from) */
@@ -176,46 +185,49 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
         v2_store(d4 + 2, v2_load(s4 + 2));
         d4[4] = s4[4];
     }
-    const double lii = sqrt(c[0]), inv = 1 / lii;
-    c[0] = lii;
-    const double c1 = c[1] * inv, c2 = c[2] * inv, c3 = c[3] * inv, c4 = c[4] * inv;
-    c[1] = c1, c[2] = c2, c[3] = c3, c[4] = c4;
+    const double dinv = 1 / d;
+    const double a1 = (*d_a1)[1], a2 = c[2], a3 = c[3], a4 = c[4];
+    const double g1 = a1 * dinv, g2 = a2 * dinv, g3 = a3 * dinv, g4 = a4 * dinv;
+    c[0] = dinv;
+    c[1] = g1, c[2] = g2, c[3] = g3, c[4] = g4;
     double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
            *r4 = r3 + (BAND_P + 1);
-    /* r1[0] -= c1 c1, r1[1] -= c2 c1, r1[2] -= c3 c1, r1[3] -= c4 c1; r2[0] -= c2 c2,
-     * r2[1] -= c3 c2, r2[2] -= c4 c2; r3[0] -= c3 c3, r3[1] -= c4 c3; r4[0] -= c4 c4. */
-    const v2d c12 = {c1, c2}, c23 = {c2, c3}, c34 = {c3, c4};
-    const v2d vc1 = {c1, c1}, vc2 = {c2, c2}, vc3 = {c3, c3};
-    v2_store(r1, v2_load(r1) - c12 * vc1);
-    v2_store(r1 + 2, v2_load(r1 + 2) - c34 * vc1);
-    v2_store(r2, v2_load(r2) - c23 * vc2);
-    r2[2] -= c4 * c2;
-    v2_store(r3, v2_load(r3) - c34 * vc3);
-    r4[0] -= c4 * c4;
-    /* The tail rows' entries of columns i .. i + 4: B[a][i] *= inv, then B[a][i + k]
-     * -= B[a][i] c_k, each entry's one operation of this column. */
+    /* r1[0] -= a1 g1, r1[1] -= a2 g1, r1[2] -= a3 g1, r1[3] -= a4 g1; r2[0] -= a2 g2,
+     * r2[1] -= a3 g2, r2[2] -= a4 g2; r3[0] -= a3 g3, r3[1] -= a4 g3; r4[0] -= a4 g4. */
+    const v2d a12 = {a1, a2}, a23 = {a2, a3}, a34 = {a3, a4};
+    const v2d vg1 = {g1, g1}, vg2 = {g2, g2}, vg3 = {g3, g3};
+    *d_a1 = v2_load(r1) - a12 * vg1;
+    v2_store(r1, *d_a1);
+    v2_store(r1 + 2, v2_load(r1 + 2) - a34 * vg1);
+    v2_store(r2, v2_load(r2) - a23 * vg2);
+    r2[2] -= a4 * g2;
+    v2_store(r3, v2_load(r3) - a34 * vg3);
+    r4[0] -= a4 * g4;
+    /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
+     * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
     double *b = A->B + TAIL * i;
-    const v2d vinv = {inv, inv};
-    const v2d b01 = v2_load(b) * vinv, b23 = v2_load(b + 2) * vinv;
-    v2_store(b, b01);
-    v2_store(b + 2, b23);
-    const double ck[BAND_P] = {c1, c2, c3, c4};
+    const v2d vdinv = {dinv, dinv};
+    const v2d h01 = v2_load(b), h23 = v2_load(b + 2);
+    const v2d u01 = h01 * vdinv, u23 = h23 * vdinv;
+    v2_store(b, u01);
+    v2_store(b + 2, u23);
+    const double ak[BAND_P] = {a1, a2, a3, a4};
     for (size_t k = 1; k <= BAND_P; ++k) {
-        const v2d vc = {ck[k - 1], ck[k - 1]};
+        const v2d va = {ak[k - 1], ak[k - 1]};
         double *bk = b + TAIL * k;
         const v2d zero = {0, 0};
         const int from_zero = fresh && k == BAND_P;
-        v2_store(bk, (from_zero ? zero : v2_load(bk)) - b01 * vc);
-        v2_store(bk + 2, (from_zero ? zero : v2_load(bk + 2)) - b23 * vc);
+        v2_store(bk, (from_zero ? zero : v2_load(bk)) - u01 * va);
+        v2_store(bk + 2, (from_zero ? zero : v2_load(bk + 2)) - u23 * va);
     }
-    /* T[a][b] -= B[a][i] B[b][i], b <= a. */
-    const v2d v1 = {b01[1], b01[1]}, v2 = {b23[0], b23[0]}, v3 = {b23[1], b23[1]};
-    *t00 -= b01[0] * b01[0];
-    *t10 -= v1 * b01;
-    *t20 -= v2 * b01;
-    *t22 -= b23[0] * b23[0];
-    *t30 -= v3 * b01;
-    *t32 -= v3 * b23;
+    /* T[a][b] -= U[a][i] h_b, b <= a. */
+    const v2d v1 = {u01[1], u01[1]}, v2 = {u23[0], u23[0]}, v3 = {u23[1], u23[1]};
+    *t00 -= u01[0] * h01[0];
+    *t10 -= v1 * h01;
+    *t20 -= v2 * h01;
+    *t22 -= u23[0] * h23[0];
+    *t30 -= v3 * h01;
+    *t32 -= v3 * h23;
     return 0;
 }
 
@@ -226,18 +238,27 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
  * them (factor_column's fresh). */
 enum { FRESH_FROM = BAND_P + 1 };
 
-/* Every CKS-th column, band_factor_from keeps the tail block's accumulators as they stand before
- * it (CK_LEN doubles, the lower triangle by rows), from which band_refactor starts again. */
-enum { CKS = 16, CK_LEN = TAIL * (TAIL + 1) / 2 };
+/* Every CKS-th column i, band_factor_from keeps the factorisation's state as it stands before
+ * it (CK_LEN doubles), from which band_refactor starts again: the tail block's accumulators
+ * (CK_ACC, the lower triangle by rows), then the band's and the tail rows' entries of columns
+ * i .. i + BAND_P - 1, the only ones that the columns before i have updated and i has not
+ * factorised. */
+enum {
+    CKS = 16,
+    CK_ACC = TAIL * (TAIL + 1) / 2,
+    CK_LEN = CK_ACC + (BAND_P + 1 + TAIL) * BAND_P
+};
 
-static inline void acc_save(double *ck, double t00, v2d t10, v2d t20, double t22, v2d t30,
-                            v2d t32)
+static inline void ck_save(double *ck, const tband *A, size_t i, double t00, v2d t10, v2d t20,
+                           double t22, v2d t30, v2d t32)
 {
     ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
     ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
+    memcpy(ck + CK_ACC, A->L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
+    memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, A->B + TAIL * i, TAIL * BAND_P * sizeof *ck);
 }
 
-/* Cholesky by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
+/* U D U^T by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
  * With the full tail, the interior columns (all but the last BAND_P of the band) come first,
  * unrolled (factor_column), the tail block's lower triangle held in registers until they end:
  * each entry gets the same operations in the same order as in the general loop below, so the
@@ -245,8 +266,8 @@ static inline void acc_save(double *ck, double t00, v2d t10, v2d t20, double t22
  * unset (fill_window), zero until their first update. From column q0 (0: all; else an
  * interior column, the columns before it factorised and their updates of the later ones
  * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
- * accumulators before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
-static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_LEN],
+ * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
+static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
                             double *ck, const double *src)
 {
     if (!src)
@@ -264,24 +285,25 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
             t22 = acc0[5], t30 = (v2d){acc0[6], acc0[7]}, t32 = (v2d){acc0[8], acc0[9]};
         }
         int broke = 0;
+        v2d d_a1 = v2_load(L + (BAND_P + 1) * i); /* column i's d and a1 */
         /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
          * while i + BAND_P < m - BAND_P. */
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
             if (ck && i % CKS == 0)
-                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0, src);
+                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
             if (ck && i % CKS == 0)
-                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 1, src);
+                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
             if (ck && i % CKS == 0)
-                acc_save(ck + CK_LEN * (i / CKS), t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, 0, src);
+                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
         T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
@@ -292,24 +314,30 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         double *c = L + (BAND_P + 1) * i;
         if (!(c[0] > 0))
             return 1;
-        const double lii = sqrt(c[0]), inv = 1 / lii;
-        c[0] = lii;
+        /* As factor_column: a_k (the column's entries) and h_a (its tail rows') before
+         * they are scaled by 1 / d. */
+        const double dinv = 1 / c[0];
+        c[0] = dinv;
         const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
-        for (size_t k = 1; k <= kmax; ++k)
-            c[k] *= inv;
         double *const B = A->B;
+        double u[TAIL];
         for (size_t a = 0; a < t; ++a)
-            B[TAIL * i + a] *= inv;
+            u[a] = B[TAIL * i + a] * dinv;
         for (size_t k1 = 1; k1 <= kmax; ++k1) {
             double *c1 = L + (BAND_P + 1) * (i + k1);
+            const double g = c[k1] * dinv;
             for (size_t k2 = k1; k2 <= kmax; ++k2)
-                c1[k2 - k1] -= c[k2] * c[k1];
+                c1[k2 - k1] -= c[k2] * g;
             for (size_t a = 0; a < t; ++a)
-                B[TAIL * (i + k1) + a] -= B[TAIL * i + a] * c[k1];
+                B[TAIL * (i + k1) + a] -= u[a] * c[k1];
         }
         for (size_t a = 0; a < t; ++a)
             for (size_t b = 0; b <= a; ++b)
-                A->T[a][b] -= B[TAIL * i + a] * B[TAIL * i + b];
+                A->T[a][b] -= u[a] * B[TAIL * i + b];
+        for (size_t k = 1; k <= kmax; ++k)
+            c[k] *= dinv;
+        for (size_t a = 0; a < t; ++a)
+            B[TAIL * i + a] = u[a];
     }
     /* The dense tail, Schur complement of the band: src/core's Cholesky. */
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
@@ -317,11 +345,69 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
 
 static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
 
-/* Solves A x = b with the factor, x overwriting b. O(N (BAND_P + t)). Inlined with t a
+/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
+ * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
+ * the one before it (after it, going back), so a solve's time is that chain's: a row takes
+ * the farther rows' products first, and U's unit diagonal leaves a product and a difference
+ * from row to row, where a chain of four differences and a division was (docs/models.md 5.6,
+ * Counted a seventh time). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
  * full tail two lanes at a time; the same operations in the same order for every t. Without a
  * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
- * before it holding their y already, and stop there (forward_only: x then holds L^-1 b). */
+ * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
+/* One interior row i of the forward substitution (i >= BAND_P), the rows before it a .. d
+ * (d the nearest) from registers: z_i into x[i], its tail products taken off y. */
+static inline __attribute__((always_inline)) double fwd_row(const tband *A, double x[],
+                                                            const size_t t, size_t i, double a,
+                                                            double b, double c, double d,
+                                                            v2d *y01, v2d *y23, double y[])
+{
+    const double *l = A->L + (BAND_P + 1) * (i - 1), *B = A->B;
+    double v = x[i];
+    v -= l[-3 * (BAND_P + 1) + 4] * a;
+    v -= l[-2 * (BAND_P + 1) + 3] * b;
+    v -= l[-(BAND_P + 1) + 2] * c;
+    v -= l[1] * d;
+    x[i] = v;
+    if (t == TAIL) {
+        const v2d vx = {v, v};
+        *y01 -= v2_load(B + TAIL * i) * vx;
+        *y23 -= v2_load(B + TAIL * i + 2) * vx;
+    } else {
+        for (size_t k = 0; k < t; ++k)
+            y[k] -= B[TAIL * i + k] * v;
+    }
+    return v;
+}
+
+/* One interior row i of the back substitution (i + BAND_P < m), the rows after it a .. d (a
+ * the nearest) from registers: the tail's products first (they wait on no row), then the
+ * band's, the nearest row's last. */
+static inline __attribute__((always_inline)) double bwd_row(const tband *A, double x[],
+                                                            const size_t t, size_t i, double a,
+                                                            double b, double c, double d,
+                                                            v2d y01, v2d y23, const double y[])
+{
+    const double *l = A->L + (BAND_P + 1) * i, *B = A->B;
+    double v = x[i] * l[0];
+    if (t == TAIL) { /* the products two at a time, subtracted in order */
+        const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+        v -= p01[0];
+        v -= p01[1];
+        v -= p23[0];
+        v -= p23[1];
+    } else {
+        for (size_t k = 0; k < t; ++k)
+            v -= B[TAIL * i + k] * y[k];
+    }
+    v -= l[4] * d;
+    v -= l[3] * c;
+    v -= l[2] * b;
+    v -= l[1] * a;
+    x[i] = v;
+    return v;
+}
+
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t, const size_t i0,
                                                                const int forward_only)
@@ -335,27 +421,36 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     v2d y01 = {0, 0}, y23 = {0, 0};
     if (t == TAIL)
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    for (size_t i = i0; i < m; ++i) {
+    size_t i = i0;
+    for (; i < m && i < BAND_P; ++i) {
         double v = x[i];
-        if (i >= BAND_P) { /* unrolled: the same operations in the same order */
-            const double *l = L + (BAND_P + 1) * (i - 1);
-            v -= l[1] * x[i - 1];
-            v -= l[-(BAND_P + 1) + 2] * x[i - 2];
-            v -= l[-2 * (BAND_P + 1) + 3] * x[i - 3];
-            v -= l[-3 * (BAND_P + 1) + 4] * x[i - 4];
-        } else {
-            for (size_t k = 1; k <= i; ++k)
-                v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
-        }
-        const double xi = v / L[(BAND_P + 1) * i];
-        x[i] = xi;
+        for (size_t k = i; k >= 1; --k)
+            v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
+        x[i] = v;
         if (t == TAIL) {
-            const v2d vx = {xi, xi};
+            const v2d vx = {v, v};
             y01 -= v2_load(B + TAIL * i) * vx;
             y23 -= v2_load(B + TAIL * i + 2) * vx;
         } else {
             for (size_t a = 0; a < t; ++a)
-                y[a] -= B[TAIL * i + a] * xi;
+                y[a] -= B[TAIL * i + a] * v;
+        }
+    }
+    if (i < m) {
+        /* The last BAND_P rows' unknowns in registers, not read back from x: a store and its
+         * load would lengthen the chain. Four rows an iteration, so that they need no
+         * moves. */
+        double x4 = x[i - 4], x3 = x[i - 3], x2 = x[i - 2], x1 = x[i - 1];
+        for (; i + 4 <= m; i += 4) {
+            const double v0 = fwd_row(A, x, t, i, x4, x3, x2, x1, &y01, &y23, y);
+            const double v1 = fwd_row(A, x, t, i + 1, x3, x2, x1, v0, &y01, &y23, y);
+            const double v2 = fwd_row(A, x, t, i + 2, x2, x1, v0, v1, &y01, &y23, y);
+            const double v3 = fwd_row(A, x, t, i + 3, x1, v0, v1, v2, &y01, &y23, y);
+            x4 = v0, x3 = v1, x2 = v2, x1 = v3;
+        }
+        for (; i < m; ++i) {
+            const double v = fwd_row(A, x, t, i, x4, x3, x2, x1, &y01, &y23, y);
+            x4 = x3, x3 = x2, x2 = x1, x1 = v;
         }
     }
     if (forward_only)
@@ -368,29 +463,37 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         x[m + a] = y[a];
     if (t == TAIL) /* now the tail's solution */
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    for (size_t i = m; i-- > 0;) {
-        double v = x[i];
-        if (i + BAND_P < m) {
-            const double *l = L + (BAND_P + 1) * i;
-            v -= l[1] * x[i + 1];
-            v -= l[2] * x[i + 2];
-            v -= l[3] * x[i + 3];
-            v -= l[4] * x[i + 4];
-        } else {
-            for (size_t k = 1; k + i < m; ++k)
-                v -= L[(BAND_P + 1) * i + k] * x[i + k];
-        }
-        if (t == TAIL) { /* the products two at a time, subtracted in order */
-            const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+    i = m;
+    for (; i > 0 && i - 1 + BAND_P >= m; --i) { /* the last BAND_P rows */
+        const size_t r = i - 1;
+        double v = x[r] * L[(BAND_P + 1) * r];
+        if (t == TAIL) {
+            const v2d p01 = v2_load(B + TAIL * r) * y01, p23 = v2_load(B + TAIL * r + 2) * y23;
             v -= p01[0];
             v -= p01[1];
             v -= p23[0];
             v -= p23[1];
         } else {
             for (size_t a = 0; a < t; ++a)
-                v -= B[TAIL * i + a] * y[a];
+                v -= B[TAIL * r + a] * y[a];
         }
-        x[i] = v / L[(BAND_P + 1) * i];
+        for (size_t k = m - 1 - r; k >= 1; --k)
+            v -= L[(BAND_P + 1) * r + k] * x[r + k];
+        x[r] = v;
+    }
+    if (i > 0) {
+        double x1 = x[i], x2 = x[i + 1], x3 = x[i + 2], x4 = x[i + 3];
+        for (; i >= 4; i -= 4) {
+            const double v0 = bwd_row(A, x, t, i - 1, x1, x2, x3, x4, y01, y23, y);
+            const double v1 = bwd_row(A, x, t, i - 2, v0, x1, x2, x3, y01, y23, y);
+            const double v2 = bwd_row(A, x, t, i - 3, v1, v0, x1, x2, y01, y23, y);
+            const double v3 = bwd_row(A, x, t, i - 4, v2, v1, v0, x1, y01, y23, y);
+            x1 = v3, x2 = v2, x3 = v1, x4 = v0;
+        }
+        for (; i > 0; --i) {
+            const double v = bwd_row(A, x, t, i - 1, x1, x2, x3, x4, y01, y23, y);
+            x4 = x3, x3 = x2, x2 = x1, x1 = v;
+        }
     }
 }
 
@@ -406,7 +509,7 @@ static void band_solve(const tband *A, double x[])
 }
 
 /* The exterior's solve (no tail), its forward substitution from row i0 (x's rows before it
- * hold their y: a right-hand side's leading zeros are their own y, +0 - l (+0) staying +0). */
+ * hold their z: a right-hand side's leading zeros are their own z, +0 - u (+0) staying +0). */
 static void ext_solve(const tband *A, double x[], size_t i0) { band_solve_t(A, x, 0, i0, 0); }
 
 static int band_alloc(tband *A, size_t N, size_t t)
@@ -715,7 +818,7 @@ static void ext_index(size_t Ne, size_t e[NB])
 
 /* The factor of the exterior of ne nodes from node j0 into T->ext. Without lugs an open arc's
  * stiffness depends only on its length (kap is the same at every node), and a shorter arc's is
- * the leading block of a longer one's; so is its Cholesky factor the leading block of the
+ * the leading block of a longer one's; so is its factor the leading block of the
  * longer one's, bit for bit (each column of band_factor depends only on the columns before it,
  * which get the same operations in the same order whatever the length, and band_solve reads
  * only the rows of the length it is given). One factorisation of the longest exterior, M - 1
@@ -1255,16 +1358,25 @@ static size_t first_change(const tband *S, const tband *P, size_t m)
     return p;
 }
 
+/* The column band_refactor restarts at for a system whose first change is at column p (of m
+ * band rows, p < m): the last checkpoint whose pending columns all lie before p, 0 if none. */
+static size_t restart_column(size_t p, size_t m)
+{
+    if (p > m - BAND_P)
+        p = m - BAND_P;
+    return p < BAND_P ? 0 : (p - BAND_P) / CKS * CKS;
+}
+
 /* The window's factor (T->win) of the system that assemble and condense_knots wrote (T->as).
  * Between Newton steps and evaluations that system mostly changes from some column on: the
  * points whose states changed, a ground vertex's points in contact (their place and weight
  * move with z). The factor's columns before the first changed one are those of the last
- * factorisation (each column of a right-looking Cholesky depends only on the columns before
- * it and its own entries), so they are kept: the columns from the CKS-th column at or before
- * it get their pending updates from the BAND_P columns before (the same operations in the
- * same order as band_factor_from gives them, one entry at a time), the tail block's
- * accumulators come from that column's checkpoint, and the factorisation goes on from there.
- * The same bits as factorising the whole. Nonzero if not positive definite. */
+ * factorisation (each column of a right-looking factorisation depends only on the columns
+ * before it and its own entries), so they are kept: the factorisation goes on from the last
+ * checkpoint (every CKS-th column) whose BAND_P pending columns lie before the first change,
+ * its state (the pending columns' entries as the columns before left them, the tail block's
+ * accumulators) taken from the checkpoint. The same bits as factorising the whole. Nonzero if
+ * not positive definite. */
 static int band_refactor(tirenv_ring_tread *T)
 {
     tband *S = &T->as, *P = &T->ap, *F = &T->win;
@@ -1277,16 +1389,16 @@ static int band_refactor(tirenv_ring_tread *T)
             *S = *P, *P = sw;
             return 0;
         }
-        q = (p < m - BAND_P ? p : m - BAND_P - 1) / CKS * CKS;
+        q = restart_column(p, m);
     }
     T->ap_ok = 0;
     F->N = N, F->t = t;
-    /* The band's columns q .. q + BAND_P - 1; the later ones band_factor_from copies as it
-     * reaches them (src), or all here where it has no interior columns. */
-    const int whole = !(t == TAIL && m > BAND_P);
-    memcpy(F->L + W * q, S->L + W * q, W * (whole ? m - q : BAND_P) * sizeof *F->L);
     int bad;
     if (q == 0) {
+        /* The band's first BAND_P columns; the later ones band_factor_from copies as it
+         * reaches them (src), or all here where it has no interior columns. */
+        const int whole = !(t == TAIL && m > BAND_P);
+        memcpy(F->L, S->L, W * (whole ? m : BAND_P) * sizeof *F->L);
         if (m < FRESH_FROM + BAND_P) {
             memcpy(F->B, S->B, TAIL * m * sizeof *F->B);
         } else {
@@ -1297,23 +1409,15 @@ static int band_refactor(tirenv_ring_tread *T)
         memcpy(F->T, S->T, sizeof F->T);
         bad = band_factor_from(F, 1, 0, NULL, T->ck, S->L);
     } else {
-        /* Columns q .. q + BAND_P - 1 as they stand before column q is factorised: their
-         * entries (the tail's zero up to its last BAND_P columns), less the updates of the
-         * BAND_P columns before, kept. */
-        memset(F->B + TAIL * q, 0, TAIL * BAND_P * sizeof *F->B);
+        /* Columns q .. q + BAND_P - 1 as they stood before column q was factorised (their
+         * entries the same: the first change is past them), the tail's last BAND_P columns
+         * from the system. */
+        const double *ck = T->ck + CK_LEN * (q / CKS);
+        memcpy(F->L + W * q, ck + CK_ACC, W * BAND_P * sizeof *F->L);
+        memcpy(F->B + TAIL * q, ck + CK_ACC + W * BAND_P, TAIL * BAND_P * sizeof *F->B);
         memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
                TAIL * BAND_P * sizeof *F->B);
-        for (size_t i = q - BAND_P; i < q; ++i) {
-            const double *c = F->L + W * i, *b = F->B + TAIL * i;
-            for (size_t k1 = q - i; k1 <= BAND_P; ++k1) {
-                double *c1 = F->L + W * (i + k1), *b1 = F->B + TAIL * (i + k1);
-                for (size_t k2 = k1; k2 <= BAND_P; ++k2)
-                    c1[k2 - k1] -= c[k2] * c[k1];
-                for (size_t a = 0; a < TAIL; ++a)
-                    b1[a] -= b[a] * c[k1];
-            }
-        }
-        bad = band_factor_from(F, 1, q, T->ck + CK_LEN * (q / CKS), T->ck, S->L);
+        bad = band_factor_from(F, 1, q, ck, T->ck, S->L);
     }
     const tband sw = *S;
     *S = *P, *P = sw;
@@ -2121,7 +2225,7 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     *q = 0;
     if (m > 2 * CKS + BAND_P) {
         const size_t p = first_change(S, P, m);
-        *q = (p < m - BAND_P ? p : m - BAND_P - 1) / CKS * CKS;
+        *q = restart_column(p, m);
     }
     int st = band_refactor(T) != 0 || band_factor_from(&X, 1, 0, NULL, NULL, NULL) != 0 ? -1 : 0;
     if (st == 0) {
@@ -2133,6 +2237,70 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     T->ap_ok = 0;
     free(X.L);
     return st;
+}
+
+/* For tests: the window's last factorised system (T->ap, its fresh tail entries taken as zero)
+ * solved with its factor (T->win) for a right-hand side of pseudo-random entries in [-1, 1)
+ * drawn from seed: max |b - A x| / (max row sum of |A| * max |x|), a few machine epsilons for a
+ * backward-stable solve. -1 if no factor is held or out of memory. */
+double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const tband *P = &T->ap;
+    const size_t N = P->N, t = P->t, W = BAND_P + 1;
+    if (!T->ap_ok || t != TAIL || N < t + 1)
+        return -1;
+    const size_t m = N - t;
+    double *b = malloc(4 * N * sizeof *b);
+    if (!b)
+        return -1;
+    double *x = b + N, *y = x + N, *rs = y + N;
+    unsigned long v = seed;
+    for (size_t i = 0; i < N; ++i) { /* a linear congruential draw: no state of the library's */
+        v = v * 6364136223846793005UL + 1442695040888963407UL;
+        b[i] = x[i] = (double)(v >> 11) * 0x1p-52 - 1;
+    }
+    band_solve(&T->win, x);
+    for (size_t i = 0; i < N; ++i)
+        y[i] = rs[i] = 0;
+    /* A x and the row sums of |A|, from the lower triangle: the band, the tail rows, T. */
+    for (size_t i = 0; i < m; ++i) {
+        for (size_t k = 0; k <= BAND_P && i + k < m; ++k) {
+            const double a = P->L[W * i + k];
+            y[i + k] += a * x[i];
+            rs[i + k] += fabs(a);
+            if (k > 0) {
+                y[i] += a * x[i + k];
+                rs[i] += fabs(a);
+            }
+        }
+        const int fresh = i >= FRESH_FROM && i + BAND_P < m;
+        for (size_t a = 0; a < t && !fresh; ++a) {
+            const double e = P->B[TAIL * i + a];
+            y[m + a] += e * x[i];
+            y[i] += e * x[m + a];
+            rs[m + a] += fabs(e);
+            rs[i] += fabs(e);
+        }
+    }
+    for (size_t a = 0; a < t; ++a)
+        for (size_t c = 0; c <= a; ++c) {
+            const double e = P->T[a][c];
+            y[m + a] += e * x[m + c];
+            rs[m + a] += fabs(e);
+            if (c < a) {
+                y[m + c] += e * x[m + a];
+                rs[m + c] += fabs(e);
+            }
+        }
+    double res = 0, na = 0, nx = 0;
+    for (size_t i = 0; i < N; ++i) {
+        res = fmax(res, fabs(b[i] - y[i]));
+        na = fmax(na, rs[i]);
+        nx = fmax(nx, fabs(x[i]));
+    }
+    free(b);
+    return res / (na * nx);
 }
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end

@@ -56,26 +56,30 @@ static void cleat_curve(const tirenv_tire *t, double out[4][3])
     tirenv_model_free(m);
 }
 
-/* Without CARCASS_SOFTENING_DEFLECTION (0) the ring is today's bit for bit, a
- * CARCASS_LINEAR_DEFLECTION alone changing nothing; with a law whose w_0 (0.4 m) no node
- * reaches, the widened window and the nonlinear driver find the same minimum to the
- * equilibrium's tolerance (eps_z = 1e-10 m; h within 1e-9 m asked), and the soft tire moves
- * the centre by more than a millimetre (so the comparisons can fail). */
+/* Without CARCASS_SOFTENING_DEFLECTION (0) the ring is the code's before the law (to the
+ * round-off the banded solver's order of operations has moved since: h and z within 1e-9 m,
+ * F_x within 1e-3 N, docs/models.md 5.6, Counted a seventh time), a CARCASS_LINEAR_DEFLECTION
+ * alone changing nothing, bit for bit; with a law whose w_0 (0.4 m) no node reaches, the
+ * widened window and the nonlinear driver find the same minimum to the equilibrium's
+ * tolerance (eps_z = 1e-10 m; h within 1e-9 m asked), and the soft tire moves the centre by
+ * more than a millimetre (so the comparisons can fail). */
 static void test_absent_is_today(void **state)
 {
     (void)state;
-    double got[4][3];
+    double got[4][3], linear[4][3];
     tirenv_tire t = tirenv_tire_default();
-    t.eq.eps_F = 1e-6; /* the force tolerance the bits were recorded at */
-    cleat_curve(&t, got);
-    for (size_t i = 0; i < 4; ++i)
-        for (size_t k = 0; k < 3; ++k)
-            assert_bits_equal(got[i][k], before[i][k]);
+    t.eq.eps_F = 1e-6; /* the force tolerance the values were recorded at */
+    cleat_curve(&t, linear);
+    for (size_t i = 0; i < 4; ++i) {
+        assert_near(linear[i][0], before[i][0], 1e-9, 0);
+        assert_near(linear[i][1], before[i][1], 1e-3, 0);
+        assert_near(linear[i][2], before[i][2], 1e-9, 0);
+    }
     t.ring.w_c0 = 0.0123;
     cleat_curve(&t, got);
     for (size_t i = 0; i < 4; ++i)
         for (size_t k = 0; k < 3; ++k)
-            assert_bits_equal(got[i][k], before[i][k]);
+            assert_bits_equal(got[i][k], linear[i][k]);
     t.ring.w_cs = 0.01;
     t.ring.w_c0 = 0.4;
     cleat_curve(&t, got);
