@@ -617,8 +617,11 @@ void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[
             const tirenv_ring_point *q = &r->pts[k];
             if (q->d == -INFINITY)
                 continue;
-            const size_t jn[2] = {q->j, q->j + 1};
-            for (int e = 0; e < 2; ++e) {
+            /* A point at node j + 1 joining two pieces (tirenv_ring__sample) lies in interval
+             * j + 1 too. */
+            const size_t jn[3] = {q->j, q->j + 1, q->j + 2};
+            const int ne = q->ends == 3 && q->s == 1 ? 3 : 2;
+            for (int e = 0; e < ne; ++e) {
                 if (b)
                     b[jn[e]] = fmax(b[jn[e]], q->d);
                 if (d && q->s == (double)e)

@@ -152,44 +152,28 @@ static double rho_on(const double L[4], double x, double z, double s, double c, 
 
 /* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
  * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
- * k_t (with lugs each its own) and its interval added to wl. prev_L: the line of the piece
- * whose points were written last, if that piece ends where this one begins (else NULL): where
- * c's first cut and the line are the same bits (c->contig: the cut is that piece's second),
- * its ray is that point's, whose values are copied rather than computed again (the same
- * operations on the same operands; a point out of reach has d = -INFINITY then, as the one
- * it is copied from has). */
+ * k_t (with lugs each its own) and its interval added to wl. */
 static inline __attribute__((always_inline)) void
-piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
-            double x, double z, int inside, double k_t, int lugs, size_t wl[2], double omega,
-            double th, tirenv_ring_point *q)
+piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x, double z,
+            int inside, double k_t, int lugs, size_t wl[2], double omega, double th,
+            tirenv_ring_point *q)
 {
     const size_t j = c->j;
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
                  dphi = e ? c->db : c->da;
-    const tirenv_ring_point *qp = q - 1;
-    if (e == 0 && prev_L && tirenv_ring__same_bits(c->L, prev_L, 4) &&
-        (c->contig ||
-         (tirenv_ring__same_bits(&qp->phi, &phi, 1) && tirenv_ring__same_bits(&qp->sn, &sn, 1) &&
-          tirenv_ring__same_bits(&qp->cs, &cs, 1) &&
-          tirenv_ring__same_bits(&qp->dphi, &dphi, 1)))) {
-        q->d = qp->d;
-        q->dd = qp->dd;
-        q->ddt = qp->ddt;
-        q->X = qp->X;
-    } else {
-        double drho = 0, drho_dphi = 0, rho = 0;
-        if (!inside)
-            rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
-        q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
-        q->dd = -drho;
-        q->ddt = -(drho + drho_dphi * dphi);
-        q->X = x + (isfinite(rho) ? rho : 0) * sn;
-    }
+    double drho = 0, drho_dphi = 0, rho = 0;
+    if (!inside)
+        rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
+    q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+    q->dd = -drho;
+    q->ddt = -(drho + drho_dphi * dphi);
+    q->X = x + (isfinite(rho) ? rho : 0) * sn;
     q->sn = sn;
     q->cs = cs;
     q->phi = phi;
     q->omega = omega;
     q->j = j;
+    q->ends = e ? 2 : 1;
     if (e == 1 && c->pb == r->theta[j + 1]) {
         q->s = 1;
     } else if (e == 0 && c->pa == th) {
@@ -209,14 +193,37 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const
     q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
 }
 
-/* The piece c's two points (piece_point) into q[0], q[1]. */
-static void piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
-                         const double prev_L[4], double x, double z, int inside, double k_t,
-                         int lugs, size_t wl[2], tirenv_ring_point *q)
+/* The piece c's points into q[0], q[1]; returns how many it wrote. prev_L: the line of the
+ * piece whose points were written last, q[-1] its second, if that piece ends where this one
+ * begins (else NULL). Where c's first cut and the line are that piece's (c->contig: the cut
+ * is its second; else the same cut's bits), c's first point would be the same ray as q[-1],
+ * the same operations on the same operands (out of reach both, or within it both): the two
+ * are one point, q[-1], weighted by both pieces' halves (the trapezoid rule's two terms of
+ * one node on a flat stretch, summed before they are used), which ends the one piece and
+ * begins the next; c's interval still counts in the window as its point's did. Only c's
+ * second point is written then. */
+static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
+                           const double prev_L[4], double x, double z, int inside, double k_t,
+                           int lugs, size_t wl[2], tirenv_ring_point *q)
 {
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
-    piece_point(r, c, 0, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q);
-    piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
+    tirenv_ring_point *const qp = q - 1;
+    if (prev_L && tirenv_ring__same_bits(c->L, prev_L, 4) &&
+        (c->contig ||
+         (tirenv_ring__same_bits(&qp->phi, &c->pa, 1) &&
+          tirenv_ring__same_bits(&qp->sn, &c->sa, 1) &&
+          tirenv_ring__same_bits(&qp->cs, &c->ca, 1) &&
+          tirenv_ring__same_bits(&qp->dphi, &c->da, 1)))) {
+        qp->omega += omega;
+        qp->ends = 3;
+        if (qp->d != -INFINITY)
+            wl[1] = c->j + 1 > wl[1] ? c->j + 1 : wl[1];
+        piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q);
+        return 1;
+    }
+    piece_point(r, c, 0, x, z, inside, k_t, lugs, wl, omega, th, q);
+    piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
+    return 2;
 }
 
 /* Whether the last sampling's pieces are this one's (r->pc_*): the same x and nodes, and the
@@ -375,9 +382,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
          * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
          * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives). */
         const int after = !inside && i > 0 && c[-1].hit;
-        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
-                     r->pts + n_pts);
-        n_pts += 2;
+        n_pts += piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
+                              r->pts + n_pts);
     }
     r->n_pts = n_pts;
     win[0] = wl[0], win[1] = wl[1];

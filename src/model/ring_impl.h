@@ -110,6 +110,9 @@ typedef struct {
     long knot;             /* the shear-coupled tread's knot at the point in the last solve's
                             * knots (ring_shear.c), -1: none (a point at a node) */
     unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+    unsigned char ends;    /* the pieces it ends: 1 it begins the piece to pts[k + 1], 2 it
+                            * ends the one from pts[k - 1], 3 both (two pieces' ends on one
+                            * ray, joined: tirenv_ring__sample) */
     double e;              /* last evaluation: tread compression, m (the shear-coupled
                             * tread: at the patch and beside it) */
     double phi, sn, cs;    /* angle (rad) and its sine and cosine */
