@@ -276,18 +276,19 @@ static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             r->kappa[j] = tirenv_ring__tread_kappa(r, r->theta[j], x);
 }
 
-/* The ground point (X, Z) within reach: the angle of its ray raises that side's bound. */
-static void raise_bound(double x, double z, double X, double Z, double ang[2])
+/* The ground point (X, Z) within reach: the angle of its ray raises that side's bound, kept
+ * as its tangent |dx|/dz (the angle's atan2 once at the end, not a point at a time). */
+static void raise_bound(double x, double z, double X, double Z, double tan_ang[2])
 {
     const double dx = X - x, dz = z - Z;
     const int side = dx > 0;
     if (!(dz > 0)) { /* level with the centre or above it: the quarter circle */
-        ang[side] = INFINITY;
+        tan_ang[side] = INFINITY;
         if (dx == 0)
-            ang[!side] = INFINITY;
+            tan_ang[!side] = INFINITY;
         return;
     }
-    ang[side] = fmax(ang[side], atan2(fabs(dx), dz));
+    tan_ang[side] = fmax(tan_ang[side], fabs(dx) / dz);
 }
 
 /* The angles from the vertical, backward and forward (rad), beyond which no ray meets ground
@@ -332,6 +333,8 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
         raise_bound(x, z, x1 + t1 * ex, z1 + t1 * ez, ang);
         raise_bound(x, z, x1 + t2 * ex, z1 + t2 * ez, ang);
     }
+    ang[0] = atan(ang[0]); /* pi/2 from INFINITY */
+    ang[1] = atan(ang[1]);
 }
 
 /* The nodes j0 .. j1 - 1 outside which the last evaluation of the continuous contact left F

@@ -25,10 +25,53 @@ typedef struct {
     size_t k; /* a vertex's index in the profile */
 } cut;
 
-static int by_angle(const void *a, const void *b)
+/* The cuts v[0 .. n) in angle order, equal angles in their order (as a stable sort): by
+ * insertion, the vertices coming in x order and so mostly in angle order already (O(n) then,
+ * where a general sort took some 150 instructions a vertex on a 1 mm road). */
+static void sort_by_angle(cut v[], size_t n)
 {
-    const double pa = ((const cut *)a)->phi, pb = ((const cut *)b)->phi;
-    return (pa > pb) - (pa < pb);
+    for (size_t i = 1; i < n; ++i) {
+        if (!(v[i].phi < v[i - 1].phi))
+            continue;
+        const cut c = v[i];
+        size_t k = i;
+        do {
+            v[k] = v[k - 1];
+            --k;
+        } while (k > 0 && c.phi < v[k - 1].phi);
+        v[k] = c;
+    }
+}
+
+/* The angle atan2(dx, dz) (dz > 0, rad) of a vertex seen from the centre, without atan2 where
+ * a node j lies close: theta_j + atan(t), t = tan(phi - theta_j) from the node's sine and
+ * cosine, by atan's series up to t^13 (|t| <= 0.02: the terms left out are below 3e-27 rad,
+ * far below theta's round-off; atan2 itself rounds as much). *jr: the node the last vertex's
+ * angle was taken from (M: none), moved to this one's; the vertices come in x order, their
+ * angles mostly a node or less apart, so a step or two of *jr finds it, else atan2 does. */
+static double cut_angle(const tirenv_ring *r, double dx, double dz, size_t *jr)
+{
+    const double t_max = r->dth < 0.02 ? r->dth : 0.02;
+    size_t j = *jr;
+    for (int step = 0; j < r->M && step < 4; ++step) {
+        const double sn = r->sin_t[j], cs = r->cos_t[j];
+        const double den = dz * cs + dx * sn;
+        if (!(den > 0))
+            break;
+        const double t = (dx * cs - dz * sn) / den;
+        if (fabs(t) <= t_max) {
+            *jr = j;
+            const double t2 = t * t;
+            return r->theta[j] +
+                   t * (1 - t2 * (1.0 / 3 - t2 * (1.0 / 5 - t2 * (1.0 / 7 - t2 * (1.0 / 9 -
+                        t2 * (1.0 / 11 - t2 * (1.0 / 13)))))));
+        }
+        j = t > 0 ? j + 1 : j - 1; /* j - 1 wraps past 0 to above M: stops */
+    }
+    const double phi = atan2(dx, dz);
+    const double jn = (double)r->i0 + round(phi / r->dth);
+    *jr = jn >= 0 && jn < (double)r->M ? (size_t)jn : r->M;
+    return phi;
 }
 
 /* A point this close to its node's start, in parts of the interval, is at the node (no knot
@@ -208,7 +251,7 @@ static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
 {
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
     tirenv_ring_point *const qp = q - 1;
-    if (prev_L && tirenv_ring__same_bits(c->L, prev_L, 4) &&
+    if (prev_L && !r->apart && tirenv_ring__same_bits(c->L, prev_L, 4) &&
         (c->contig ||
          (tirenv_ring__same_bits(&qp->phi, &c->pa, 1) &&
           tirenv_ring__same_bits(&qp->sn, &c->sa, 1) &&
@@ -262,14 +305,14 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
      * vertex, which a steep flank's brings back within reach (a 45 mm tread compression
      * where the ray meets nothing, there at one z and gone a hair above it: F_z jumped by
      * 80 N over 3e-8 m at x = 49.93 m on the 6 in half-round road). */
-    size_t nv = 0;
+    size_t nv = 0, jr = r->M;
     size_t k = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
     for (size_t kk = k; kk < p->n && X[kk] <= x + reach; ++kk) {
         const double dx = X[kk] - x, dz = z - Z[kk];
         if (!(dz > 0))
             continue;
         const double rho = sqrt(dx * dx + dz * dz);
-        const double phi = atan2(dx, dz);
+        const double phi = cut_angle(r, dx, dz, &jr);
         if (!(phi > phi_a && phi < phi_b))
             continue;
         if (reserve((void **)&r->cuts, &r->cap_cuts, nv + 1, sizeof(cut)))
@@ -277,8 +320,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho, -dx / (rho * rho), kk};
     }
     cut *v = r->cuts;
-    if (nv > 1)
-        qsort(v, nv, sizeof *v, by_angle);
+    sort_by_angle(v, nv);
     const size_t n_pieces = (jb - ja) + nv;
     if (reserve_pts(r, 2 * n_pieces) ||
         reserve((void **)&r->lines, &r->cap_lines, n_pieces, sizeof *r->lines))

@@ -182,6 +182,8 @@ struct tirenv_ring {
     size_t pc_ja, pc_jb, pc_nv, cap_pc;
     size_t *pc_vk, *pc_vj;
     size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
+    int apart;             /* for tests: a node's two points on one ray kept apart, not joined
+                            * (ring_ground.c), as the sampling did before */
     double *g;             /* per node: the belt layer's share of F, N */
     /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
      * the window and, of each point in contact, its interval, place, weight, stiffness and
