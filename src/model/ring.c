@@ -291,10 +291,21 @@ static void raise_bound(double x, double z, double X, double Z, double tan_ang[2
     tan_ang[side] = fmax(tan_ang[side], fabs(dx) / dz);
 }
 
+/* Whether the ground point (X, Z) is below the centre at an angle from the vertical whose
+ * tangent is at most its side's in tan_ang (up to the product's round-off). */
+static int within_bound(double x, double z, double X, double Z, const double tan_ang[2])
+{
+    const double dx = X - x, dz = z - Z;
+    return dz > 0 && fabs(dx) <= tan_ang[dx > 0] * dz;
+}
+
 /* The angles from the vertical, backward and forward (rad), beyond which no ray meets ground
  * within reach of the centre: along a straight segment the angle of its point is monotonic, so
  * the extremes of the ground inside the disc are vertices inside it or the crossings of
- * segments with its circle. The flat extensions beyond the profile's ends count as segments. */
+ * segments with its circle. The flat extensions beyond the profile's ends count as segments.
+ * Each side is walked from its outer end inward, and a segment whose two ends lie within the
+ * bounds found so far (each on its side) is passed over: by the same monotony no point of it
+ * raises them. On a road that is nearly every segment after the outermost few. */
 static void ground_angles(const tirenv_profile *p, double x, double z, double reach,
                           double ang[2])
 {
@@ -302,8 +313,17 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
     const size_t n = p->n;
     ang[0] = ang[1] = 0;
     const size_t k0 = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
-    /* Segments k = -1 (the extension before X[0]) .. n - 1 (the one after X[n-1]). */
-    for (long k = x - reach < X[0] ? -1 : (long)k0; k < (long)n; ++k) {
+    /* Segments k = -1 (the extension before X[0]) .. n - 1 (the one after X[n-1]): k_a to k_b
+     * the ones that reach from x - reach to x + reach, k_m the first that ends beyond x. */
+    const long k_a = x - reach < X[0] ? -1 : (long)k0;
+    long k_b = k_a, k_m = k_a;
+    while (k_b + 1 < (long)n && X[k_b + 1] <= x + reach)
+        ++k_b;
+    while (k_m < k_b && k_m + 1 < (long)n && X[k_m + 1] <= x)
+        ++k_m;
+    /* Backward, k_a up to k_m - 1; then forward, k_b down to k_m. */
+    for (long i = 0, k; i <= k_b - k_a; ++i) {
+        k = k_a + i < k_m ? k_a + i : k_b - (i - (k_m - k_a));
         double x1, z1, x2, z2;
         if (k < 0) {
             x1 = x - reach - 1, z1 = Z[0], x2 = X[0], z2 = Z[0];
@@ -312,9 +332,9 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
         } else {
             x1 = X[k], z1 = Z[k], x2 = X[k + 1], z2 = Z[k + 1];
         }
-        if (x1 > x + reach)
-            break;
-        if (x2 < x - reach)
+        if (x1 > x + reach || x2 < x - reach)
+            continue;
+        if (within_bound(x, z, x1, z1, ang) && within_bound(x, z, x2, z2, ang))
             continue;
         /* |P1 + t (P2 - P1) - C|^2 = reach^2 for t in [0, 1]. */
         const double ex = x2 - x1, ez = z2 - z1, fx = x1 - x, fz = z1 - z;
