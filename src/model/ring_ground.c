@@ -4,11 +4,12 @@
  * each of which the first ground a ray from the centre meets lies on one segment of the
  * profile, so that the penetration d(phi) = R0 - rho(phi) is smooth there. Each piece gives
  * two quadrature points, its ends, with its one-sided values of d: the trapezoid rule of the
- * tread's energy over the piece (ring_smooth.c). As the centre moves, the pieces' ends move
- * continuously and a piece appears or vanishes only with zero length, so the sum is
- * continuous in x and z even where d(phi) jumps (a vertical face, a corner that a ray
- * passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, each
- * with the weight dtheta: the rays model exactly. */
+ * tread's energy over the piece (ring_smooth.c); where two pieces meet on one ray (a node on
+ * one segment of the ground) their two points are one, weighted by both halves. As the
+ * centre moves, the pieces' ends move continuously and a piece appears or vanishes only with
+ * zero length, so the sum is continuous in x and z even where d(phi) jumps (a vertical face,
+ * a corner that a ray passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, one
+ * a node with the weight dtheta: the rays model exactly. */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>

@@ -96,7 +96,8 @@ void tirenv_ring__band_solve(const tirenv_ring_band *A, double b[]);
 enum { TIRENV_RING_FREE = 0, TIRENV_RING_T_BASIC = 1, TIRENV_RING_B_BASIC = 2 };
 
 /* A quadrature point of the continuous contact (ring_ground.c, ring_smooth.c): an end of a
- * piece of the window along which the ground is one segment, in node interval j. Aligned to 64
+ * piece of the window along which the ground is one segment (or the ends of two pieces on one
+ * ray, joined), in node interval j. Aligned to 64
  * bytes (128 in all on 64-bit targets; ring_ground.c allocates the array so): what the contact
  * solve's passes over the points read at every Newton step (their states, energy, line search
  * and system) lies in its first 64, one cache line a point; what an evaluation reads once (the
