@@ -8,8 +8,8 @@
  * one segment of the ground) their two points are one, weighted by both halves. As the
  * centre moves, the pieces' ends move continuously and a piece appears or vanishes only with
  * zero length, so the sum is continuous in x and z even where d(phi) jumps (a vertical face,
- * a corner that a ray passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, one
- * a node with the weight dtheta: the rays model exactly. */
+ * a corner that a ray passes). Without vertices off the nodes (flat ground) the points are
+ * the nodes' rays, one a node with the weight dtheta: the rays model exactly. */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>

@@ -4,10 +4,11 @@
  * weighted by both halves. Against the sampling that keeps them apart (r->apart, as it was
  * before), over seeded cleats, blades, steps and class C roads with vertices 10 mm and 1 mm
  * apart, with the default tire's shear-coupled tread and with the Winkler tread: the same
- * ground (the diagnostics' d and b per node, the same bits; the weights' sum), the same
- * equilibrium to round-off (h within 1e-9 m and F_x within 1e-3 N, the limits the join was
- * allowed; measured 6.2e-11 m, the equilibria's own tolerance here, and 2.7e-6 N), and fewer
- * points. And the vertices' angles, taken without atan2, against atan2. */
+ * ground (the diagnostics' d and b per node, the same bits; the weights' sum) and contact
+ * (--detail's counts, tread compression, the patch), the same equilibrium to round-off (h
+ * within 1e-9 m and F_x within 1e-3 N, the limits the join was allowed; measured 6.3e-11 m,
+ * the equilibria's own tolerance here, and 2.6e-6 N), and fewer points. And the vertices'
+ * angles, taken without atan2, against atan2. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -99,16 +100,24 @@ static void test_joined_points_as_apart(void **state)
                 dfx_max = fmax(dfx_max, fabs(fx[0] - fx[1]));
                 assert_near(h[0], h[1], 1e-9, 0);
                 assert_near(fx[0], fx[1], 1e-3, 0);
-                /* The same ground at the same centre: d, b per node, the weights' sum. */
+                /* The same ground at the same centre: d, b per node, the weights' sum; and
+                 * the same diagnostics (--detail's contacts, belt contacts, tread compression,
+                 * the patch). */
                 double fz, om[2] = {0, 0};
+                size_t contacts[2];
                 for (int k = 0; k < 2; ++k) {
                     assert_int_equal(tirenv_ring_forces(r[k], p, x, h[0], &fx[k], &fz, NULL,
-                                                        NULL, NULL), 0);
+                                                        &contacts[k], NULL), 0);
                     tirenv_ring_contact(r[k], d[k], b[k], NULL);
                     for (size_t q = 0; q < r[k]->n_pts; ++q)
                         if (r[k]->pts[q].d > -INFINITY)
                             om[k] += r[k]->pts[q].omega;
                 }
+                assert_int_equal(contacts[0], contacts[1]);
+                assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
+                assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
+                assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9,
+                            0);
                 assert_int_equal(r[0]->lo, r[1]->lo);
                 assert_int_equal(r[0]->n, r[1]->n);
                 assert_true(tirenv_ring__same_bits(d[0], d[1], (size_t)(M + 0.5)));
