@@ -177,11 +177,12 @@ static inline __attribute__((always_inline)) int first_line(const tirenv_profile
     return 1;
 }
 
-/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and
- * d(rho)/dphi at that z: from (x + rho s - X1) dZ = (z - rho c - Z1) dX. NAN if the line faces
- * away (never for the line a ray of the piece meets first). */
-static double rho_on(const double L[4], double x, double z, double s, double c, double *drho,
-                     double *drho_dphi)
+/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and, where
+ * the ray's angle moves with z (moves: a vertex's cut), d(rho)/dphi at that z (else 0: a node's
+ * ray, whose d(d)/dz along the cut adds drho_dphi * 0): from (x + rho s - X1) dZ = (z - rho c -
+ * Z1) dX. NAN if the line faces away (never for the line a ray of the piece meets first). */
+static double rho_on(const double L[4], double x, double z, double s, double c, int moves,
+                     double *drho, double *drho_dphi)
 {
     const double dX = L[2] - L[0], dZ = L[3] - L[1], den = s * dZ + c * dX;
     if (!(den > 0)) {
@@ -190,7 +191,7 @@ static double rho_on(const double L[4], double x, double z, double s, double c, 
     }
     *drho = dX / den;
     const double rho = ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
-    *drho_dphi = -rho * (c * dZ - s * dX) / den;
+    *drho_dphi = moves ? -rho * (c * dZ - s * dX) / den : 0;
     return rho;
 }
 
@@ -207,7 +208,7 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, doubl
                  dphi = e ? c->db : c->da;
     double drho = 0, drho_dphi = 0, rho = 0;
     if (!inside)
-        rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
+        rho = rho_on(c->L, x, z, sn, cs, dphi != 0, &drho, &drho_dphi);
     q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
     q->dd = -drho;
     q->ddt = -(drho + drho_dphi * dphi);
