@@ -249,12 +249,13 @@ static void road_comment(const run *r, const tirenv_model *m, double load, char 
                          size_t n)
 {
     char tire[1024], road[700];
-    cli_tire_path(r->o, tire, sizeof tire);
+    /* --tire's own path, or the default's written into tire (which is unset with --tire). */
+    const char *tire_path = cli_tire_path(r->o, tire, sizeof tire);
     cli_road_label(r->o, &r->road, road, sizeof road);
     buf[0] = '\0';
     comment_line(buf, n, "Effective road: h(x) = z - z_flat, the hub's effective height");
     comment_line(buf, n, "of the %s model at load %.6g N, tire %s%s,", tirenv_model_name(m),
-                 load, base_name(tire), r->o->n_sets ? " with --set" : "");
+                 load, base_name(tire_path), r->o->n_sets ? " with --set" : "");
     comment_line(buf, n, "over %s", r->road.from_file ? base_name(road) : road);
     comment_line(buf, n, "h is relative to %s; %s",
                  r->e->relative == CLI_RELATIVE_GROUND ? "the road's local level (section 2.6)"

@@ -276,24 +276,36 @@ static void cast_window(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             r->kappa[j] = tirenv_ring__tread_kappa(r, r->theta[j], x);
 }
 
-/* The ground point (X, Z) within reach: the angle of its ray raises that side's bound. */
-static void raise_bound(double x, double z, double X, double Z, double ang[2])
+/* The ground point (X, Z) within reach: the angle of its ray raises that side's bound, kept
+ * as its tangent |dx|/dz (the angle's atan2 once at the end, not a point at a time). */
+static void raise_bound(double x, double z, double X, double Z, double tan_ang[2])
 {
     const double dx = X - x, dz = z - Z;
     const int side = dx > 0;
     if (!(dz > 0)) { /* level with the centre or above it: the quarter circle */
-        ang[side] = INFINITY;
+        tan_ang[side] = INFINITY;
         if (dx == 0)
-            ang[!side] = INFINITY;
+            tan_ang[!side] = INFINITY;
         return;
     }
-    ang[side] = fmax(ang[side], atan2(fabs(dx), dz));
+    tan_ang[side] = fmax(tan_ang[side], fabs(dx) / dz);
+}
+
+/* Whether the ground point (X, Z) is below the centre at an angle from the vertical whose
+ * tangent is at most its side's in tan_ang (up to the product's round-off). */
+static int within_bound(double x, double z, double X, double Z, const double tan_ang[2])
+{
+    const double dx = X - x, dz = z - Z;
+    return dz > 0 && fabs(dx) <= tan_ang[dx > 0] * dz;
 }
 
 /* The angles from the vertical, backward and forward (rad), beyond which no ray meets ground
  * within reach of the centre: along a straight segment the angle of its point is monotonic, so
  * the extremes of the ground inside the disc are vertices inside it or the crossings of
- * segments with its circle. The flat extensions beyond the profile's ends count as segments. */
+ * segments with its circle. The flat extensions beyond the profile's ends count as segments.
+ * Each side is walked from its outer end inward, and a segment whose two ends lie within the
+ * bounds found so far (each on its side) is passed over: by the same monotony no point of it
+ * raises them. On a road that is nearly every segment after the outermost few. */
 static void ground_angles(const tirenv_profile *p, double x, double z, double reach,
                           double ang[2])
 {
@@ -301,8 +313,17 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
     const size_t n = p->n;
     ang[0] = ang[1] = 0;
     const size_t k0 = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
-    /* Segments k = -1 (the extension before X[0]) .. n - 1 (the one after X[n-1]). */
-    for (long k = x - reach < X[0] ? -1 : (long)k0; k < (long)n; ++k) {
+    /* Segments k = -1 (the extension before X[0]) .. n - 1 (the one after X[n-1]): k_a to k_b
+     * the ones that reach from x - reach to x + reach, k_m the first that ends beyond x. */
+    const long k_a = x - reach < X[0] ? -1 : (long)k0;
+    long k_b = k_a, k_m = k_a;
+    while (k_b + 1 < (long)n && X[k_b + 1] <= x + reach)
+        ++k_b;
+    while (k_m < k_b && k_m + 1 < (long)n && X[k_m + 1] <= x)
+        ++k_m;
+    /* Backward, k_a up to k_m - 1; then forward, k_b down to k_m. */
+    for (long i = 0, k; i <= k_b - k_a; ++i) {
+        k = k_a + i < k_m ? k_a + i : k_b - (i - (k_m - k_a));
         double x1, z1, x2, z2;
         if (k < 0) {
             x1 = x - reach - 1, z1 = Z[0], x2 = X[0], z2 = Z[0];
@@ -311,9 +332,9 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
         } else {
             x1 = X[k], z1 = Z[k], x2 = X[k + 1], z2 = Z[k + 1];
         }
-        if (x1 > x + reach)
-            break;
-        if (x2 < x - reach)
+        if (x1 > x + reach || x2 < x - reach)
+            continue;
+        if (within_bound(x, z, x1, z1, ang) && within_bound(x, z, x2, z2, ang))
             continue;
         /* |P1 + t (P2 - P1) - C|^2 = reach^2 for t in [0, 1]. */
         const double ex = x2 - x1, ez = z2 - z1, fx = x1 - x, fz = z1 - z;
@@ -332,6 +353,8 @@ static void ground_angles(const tirenv_profile *p, double x, double z, double re
         raise_bound(x, z, x1 + t1 * ex, z1 + t1 * ez, ang);
         raise_bound(x, z, x1 + t2 * ex, z1 + t2 * ez, ang);
     }
+    ang[0] = atan(ang[0]); /* pi/2 from INFINITY */
+    ang[1] = atan(ang[1]);
 }
 
 /* The nodes j0 .. j1 - 1 outside which the last evaluation of the continuous contact left F
@@ -617,8 +640,11 @@ void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[
             const tirenv_ring_point *q = &r->pts[k];
             if (q->d == -INFINITY)
                 continue;
-            const size_t jn[2] = {q->j, q->j + 1};
-            for (int e = 0; e < 2; ++e) {
+            /* A point at node j + 1 joining two pieces (tirenv_ring__sample) lies in interval
+             * j + 1 too. */
+            const size_t jn[3] = {q->j, q->j + 1, q->j + 2};
+            const int ne = q->ends == 3 && q->s == 1 ? 3 : 2;
+            for (int e = 0; e < ne; ++e) {
                 if (b)
                     b[jn[e]] = fmax(b[jn[e]], q->d);
                 if (d && q->s == (double)e)

@@ -4,11 +4,12 @@
  * each of which the first ground a ray from the centre meets lies on one segment of the
  * profile, so that the penetration d(phi) = R0 - rho(phi) is smooth there. Each piece gives
  * two quadrature points, its ends, with its one-sided values of d: the trapezoid rule of the
- * tread's energy over the piece (ring_smooth.c). As the centre moves, the pieces' ends move
- * continuously and a piece appears or vanishes only with zero length, so the sum is
- * continuous in x and z even where d(phi) jumps (a vertical face, a corner that a ray
- * passes). Without vertices off the nodes (flat ground) the points are the nodes' rays, each
- * with the weight dtheta: the rays model exactly. */
+ * tread's energy over the piece (ring_smooth.c); where two pieces meet on one ray (a node on
+ * one segment of the ground) their two points are one, weighted by both halves. As the
+ * centre moves, the pieces' ends move continuously and a piece appears or vanishes only with
+ * zero length, so the sum is continuous in x and z even where d(phi) jumps (a vertical face,
+ * a corner that a ray passes). Without vertices off the nodes (flat ground) the points are
+ * the nodes' rays, one a node with the weight dtheta: the rays model exactly. */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -25,10 +26,53 @@ typedef struct {
     size_t k; /* a vertex's index in the profile */
 } cut;
 
-static int by_angle(const void *a, const void *b)
+/* The cuts v[0 .. n) in angle order, equal angles in their order (as a stable sort): by
+ * insertion, the vertices coming in x order and so mostly in angle order already (O(n) then,
+ * where a general sort took some 150 instructions a vertex on a 1 mm road). */
+static void sort_by_angle(cut v[], size_t n)
 {
-    const double pa = ((const cut *)a)->phi, pb = ((const cut *)b)->phi;
-    return (pa > pb) - (pa < pb);
+    for (size_t i = 1; i < n; ++i) {
+        if (!(v[i].phi < v[i - 1].phi))
+            continue;
+        const cut c = v[i];
+        size_t k = i;
+        do {
+            v[k] = v[k - 1];
+            --k;
+        } while (k > 0 && c.phi < v[k - 1].phi);
+        v[k] = c;
+    }
+}
+
+/* The angle atan2(dx, dz) (dz > 0, rad) of a vertex seen from the centre, without atan2 where
+ * a node j lies close: theta_j + atan(t), t = tan(phi - theta_j) from the node's sine and
+ * cosine, by atan's series up to t^13 (|t| <= 0.02: the terms left out are below 3e-27 rad,
+ * far below theta's round-off; atan2 itself rounds as much). *jr: the node the last vertex's
+ * angle was taken from (M: none), moved to this one's; the vertices come in x order, their
+ * angles mostly a node or less apart, so a step or two of *jr finds it, else atan2 does. */
+static double cut_angle(const tirenv_ring *r, double dx, double dz, size_t *jr)
+{
+    const double t_max = r->dth < 0.02 ? r->dth : 0.02;
+    size_t j = *jr;
+    for (int step = 0; j < r->M && step < 4; ++step) {
+        const double sn = r->sin_t[j], cs = r->cos_t[j];
+        const double den = dz * cs + dx * sn;
+        if (!(den > 0))
+            break;
+        const double t = (dx * cs - dz * sn) / den;
+        if (fabs(t) <= t_max) {
+            *jr = j;
+            const double t2 = t * t;
+            return r->theta[j] +
+                   t * (1 - t2 * (1.0 / 3 - t2 * (1.0 / 5 - t2 * (1.0 / 7 - t2 * (1.0 / 9 -
+                        t2 * (1.0 / 11 - t2 * (1.0 / 13)))))));
+        }
+        j = t > 0 ? j + 1 : j - 1; /* j - 1 wraps past 0 to above M: stops */
+    }
+    const double phi = atan2(dx, dz);
+    const double jn = (double)r->i0 + round(phi / r->dth);
+    *jr = jn >= 0 && jn < (double)r->M ? (size_t)jn : r->M;
+    return phi;
 }
 
 /* A point this close to its node's start, in parts of the interval, is at the node (no knot
@@ -133,11 +177,12 @@ static inline __attribute__((always_inline)) int first_line(const tirenv_profile
     return 1;
 }
 
-/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and
- * d(rho)/dphi at that z: from (x + rho s - X1) dZ = (z - rho c - Z1) dX. NAN if the line faces
- * away (never for the line a ray of the piece meets first). */
-static double rho_on(const double L[4], double x, double z, double s, double c, double *drho,
-                     double *drho_dphi)
+/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and, where
+ * the ray's angle moves with z (moves: a vertex's cut), d(rho)/dphi at that z (else 0: a node's
+ * ray, whose d(d)/dz along the cut adds drho_dphi * 0): from (x + rho s - X1) dZ = (z - rho c -
+ * Z1) dX. NAN if the line faces away (never for the line a ray of the piece meets first). */
+static double rho_on(const double L[4], double x, double z, double s, double c, int moves,
+                     double *drho, double *drho_dphi)
 {
     const double dX = L[2] - L[0], dZ = L[3] - L[1], den = s * dZ + c * dX;
     if (!(den > 0)) {
@@ -146,50 +191,34 @@ static double rho_on(const double L[4], double x, double z, double s, double c, 
     }
     *drho = dX / den;
     const double rho = ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
-    *drho_dphi = -rho * (c * dZ - s * dX) / den;
+    *drho_dphi = moves ? -rho * (c * dZ - s * dX) / den : 0;
     return rho;
 }
 
 /* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
  * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
- * k_t (with lugs each its own) and its interval added to wl. prev_L: the line of the piece
- * whose points were written last, if that piece ends where this one begins (else NULL): where
- * c's first cut and the line are the same bits (c->contig: the cut is that piece's second),
- * its ray is that point's, whose values are copied rather than computed again (the same
- * operations on the same operands; a point out of reach has d = -INFINITY then, as the one
- * it is copied from has). */
+ * k_t (with lugs each its own) and its interval added to wl. */
 static inline __attribute__((always_inline)) void
-piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const double prev_L[4],
-            double x, double z, int inside, double k_t, int lugs, size_t wl[2], double omega,
-            double th, tirenv_ring_point *q)
+piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x, double z,
+            int inside, double k_t, int lugs, size_t wl[2], double omega, double th,
+            tirenv_ring_point *q)
 {
     const size_t j = c->j;
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
                  dphi = e ? c->db : c->da;
-    const tirenv_ring_point *qp = q - 1;
-    if (e == 0 && prev_L && tirenv_ring__same_bits(c->L, prev_L, 4) &&
-        (c->contig ||
-         (tirenv_ring__same_bits(&qp->phi, &phi, 1) && tirenv_ring__same_bits(&qp->sn, &sn, 1) &&
-          tirenv_ring__same_bits(&qp->cs, &cs, 1) &&
-          tirenv_ring__same_bits(&qp->dphi, &dphi, 1)))) {
-        q->d = qp->d;
-        q->dd = qp->dd;
-        q->ddt = qp->ddt;
-        q->X = qp->X;
-    } else {
-        double drho = 0, drho_dphi = 0, rho = 0;
-        if (!inside)
-            rho = rho_on(c->L, x, z, sn, cs, &drho, &drho_dphi);
-        q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
-        q->dd = -drho;
-        q->ddt = -(drho + drho_dphi * dphi);
-        q->X = x + (isfinite(rho) ? rho : 0) * sn;
-    }
+    double drho = 0, drho_dphi = 0, rho = 0;
+    if (!inside)
+        rho = rho_on(c->L, x, z, sn, cs, dphi != 0, &drho, &drho_dphi);
+    q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+    q->dd = -drho;
+    q->ddt = -(drho + drho_dphi * dphi);
+    q->X = x + (isfinite(rho) ? rho : 0) * sn;
     q->sn = sn;
     q->cs = cs;
     q->phi = phi;
     q->omega = omega;
     q->j = j;
+    q->ends = e ? 2 : 1;
     if (e == 1 && c->pb == r->theta[j + 1]) {
         q->s = 1;
     } else if (e == 0 && c->pa == th) {
@@ -209,14 +238,37 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, const
     q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
 }
 
-/* The piece c's two points (piece_point) into q[0], q[1]. */
-static void piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
-                         const double prev_L[4], double x, double z, int inside, double k_t,
-                         int lugs, size_t wl[2], tirenv_ring_point *q)
+/* The piece c's points into q[0], q[1]; returns how many it wrote. prev_L: the line of the
+ * piece whose points were written last, q[-1] its second, if that piece ends where this one
+ * begins (else NULL). Where c's first cut and the line are that piece's (c->contig: the cut
+ * is its second; else the same cut's bits), c's first point would be the same ray as q[-1],
+ * the same operations on the same operands (out of reach both, or within it both): the two
+ * are one point, q[-1], weighted by both pieces' halves (the trapezoid rule's two terms of
+ * one node on a flat stretch, summed before they are used), which ends the one piece and
+ * begins the next; c's interval still counts in the window as its point's did. Only c's
+ * second point is written then. */
+static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
+                           const double prev_L[4], double x, double z, int inside, double k_t,
+                           int lugs, size_t wl[2], tirenv_ring_point *q)
 {
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
-    piece_point(r, c, 0, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q);
-    piece_point(r, c, 1, prev_L, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
+    tirenv_ring_point *const qp = q - 1;
+    if (prev_L && !r->apart && tirenv_ring__same_bits(c->L, prev_L, 4) &&
+        (c->contig ||
+         (tirenv_ring__same_bits(&qp->phi, &c->pa, 1) &&
+          tirenv_ring__same_bits(&qp->sn, &c->sa, 1) &&
+          tirenv_ring__same_bits(&qp->cs, &c->ca, 1) &&
+          tirenv_ring__same_bits(&qp->dphi, &c->da, 1)))) {
+        qp->omega += omega;
+        qp->ends = 3;
+        if (qp->d != -INFINITY)
+            wl[1] = c->j + 1 > wl[1] ? c->j + 1 : wl[1];
+        piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q);
+        return 1;
+    }
+    piece_point(r, c, 0, x, z, inside, k_t, lugs, wl, omega, th, q);
+    piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
+    return 2;
 }
 
 /* Whether the last sampling's pieces are this one's (r->pc_*): the same x and nodes, and the
@@ -255,14 +307,14 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
      * vertex, which a steep flank's brings back within reach (a 45 mm tread compression
      * where the ray meets nothing, there at one z and gone a hair above it: F_z jumped by
      * 80 N over 3e-8 m at x = 49.93 m on the 6 in half-round road). */
-    size_t nv = 0;
+    size_t nv = 0, jr = r->M;
     size_t k = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
     for (size_t kk = k; kk < p->n && X[kk] <= x + reach; ++kk) {
         const double dx = X[kk] - x, dz = z - Z[kk];
         if (!(dz > 0))
             continue;
         const double rho = sqrt(dx * dx + dz * dz);
-        const double phi = atan2(dx, dz);
+        const double phi = cut_angle(r, dx, dz, &jr);
         if (!(phi > phi_a && phi < phi_b))
             continue;
         if (reserve((void **)&r->cuts, &r->cap_cuts, nv + 1, sizeof(cut)))
@@ -270,8 +322,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         ((cut *)r->cuts)[nv++] = (cut){phi, dx / rho, dz / rho, -dx / (rho * rho), kk};
     }
     cut *v = r->cuts;
-    if (nv > 1)
-        qsort(v, nv, sizeof *v, by_angle);
+    sort_by_angle(v, nv);
     const size_t n_pieces = (jb - ja) + nv;
     if (reserve_pts(r, 2 * n_pieces) ||
         reserve((void **)&r->lines, &r->cap_lines, n_pieces, sizeof *r->lines))
@@ -375,9 +426,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
          * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
          * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives). */
         const int after = !inside && i > 0 && c[-1].hit;
-        piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
-                     r->pts + n_pts);
-        n_pts += 2;
+        n_pts += piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
+                              r->pts + n_pts);
     }
     r->n_pts = n_pts;
     win[0] = wl[0], win[1] = wl[1];

@@ -96,7 +96,8 @@ void tirenv_ring__band_solve(const tirenv_ring_band *A, double b[]);
 enum { TIRENV_RING_FREE = 0, TIRENV_RING_T_BASIC = 1, TIRENV_RING_B_BASIC = 2 };
 
 /* A quadrature point of the continuous contact (ring_ground.c, ring_smooth.c): an end of a
- * piece of the window along which the ground is one segment, in node interval j. Aligned to 64
+ * piece of the window along which the ground is one segment (or the ends of two pieces on one
+ * ray, joined), in node interval j. Aligned to 64
  * bytes (128 in all on 64-bit targets; ring_ground.c allocates the array so): what the contact
  * solve's passes over the points read at every Newton step (their states, energy, line search
  * and system) lies in its first 64, one cache line a point; what an evaluation reads once (the
@@ -110,6 +111,9 @@ typedef struct {
     long knot;             /* the shear-coupled tread's knot at the point in the last solve's
                             * knots (ring_shear.c), -1: none (a point at a node) */
     unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
+    unsigned char ends;    /* the pieces it ends: 1 it begins the piece to pts[k + 1], 2 it
+                            * ends the one from pts[k - 1], 3 both (two pieces' ends on one
+                            * ray, joined: tirenv_ring__sample) */
     double e;              /* last evaluation: tread compression, m (the shear-coupled
                             * tread: at the patch and beside it) */
     double phi, sn, cs;    /* angle (rad) and its sine and cosine */
@@ -179,6 +183,8 @@ struct tirenv_ring {
     size_t pc_ja, pc_jb, pc_nv, cap_pc;
     size_t *pc_vk, *pc_vj;
     size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
+    int apart;             /* for tests: a node's two points on one ray kept apart, not joined
+                            * (ring_ground.c), as the sampling did before */
     double *g;             /* per node: the belt layer's share of F, N */
     /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
      * the window and, of each point in contact, its interval, place, weight, stiffness and

@@ -1273,20 +1273,36 @@ static void solve_full(tirenv_ring *r, double x[])
     knots_solve(T, xa);
 }
 
+/* d(omega)/dz of point q: half the motion of the angles between its pieces' ends, its
+ * neighbours in pts as q->ends says (one piece, or two joined at q: tirenv_ring__sample). */
+static double piece_dom(const tirenv_ring_point *q)
+{
+    if (q->ends == 1)
+        return 0.5 * (q[1].dphi - q->dphi);
+    const double before = 0.5 * (q->dphi - q[-1].dphi);
+    return q->ends == 2 ? before : before + 0.5 * (q[1].dphi - q->dphi);
+}
+
+/* Whether point q's cut, or the other cut of a piece it ends, moves with z. */
+static int cut_moves(const tirenv_ring_point *q)
+{
+    return q->dphi != 0 || ((q->ends & 1) && q[1].dphi != 0) ||
+           ((q->ends & 2) && q[-1].dphi != 0);
+}
+
 /* dF_z/dz follows the cuts at ground vertices (docs/models.md section 5.3): as the centre
  * moves, a vertex's angle phi moves (q->dphi), so its points' place s in their interval, their
- * pieces' weight omega (half the angle between the piece's ends; a piece's two points are
- * pts[2 i], pts[2 i + 1]) and the knot at the vertex do. Point k's share: ds = ds/dz, dom =
- * d(omega)/dz, and the parts of d(f_ground)/dz, d(f_belt)/dz at fixed x that these add to the
- * ground's own motion along the cut (omega R k q->ddt): R k (dom e - omega ds (v_j+1 - v_j)),
- * v the field the layer presses on (u, or w for the belt). Zero for a node's points between
- * nodes' cuts. */
+ * pieces' weight omega (half the angle between the pieces' ends: piece_dom) and the knot at
+ * the vertex do. Point k's share: ds = ds/dz, dom = d(omega)/dz, and the parts of
+ * d(f_ground)/dz, d(f_belt)/dz at fixed x that these add to the ground's own motion along the
+ * cut (omega R k q->ddt): R k (dom e - omega ds (v_j+1 - v_j)), v the field the layer presses
+ * on (u, or w for the belt). Zero for a node's points between nodes' cuts. */
 static void moving_cut(const tirenv_ring *r, size_t k, const double x[], double *ds, double *dom,
                        double *dfg, double *dfb)
 {
     const tirenv_ring_point *q = &r->pts[k];
     *ds = q->dphi / r->dth;
-    *dom = 0.5 * (r->pts[k | 1].dphi - r->pts[k & ~(size_t)1].dphi);
+    *dom = piece_dom(q);
     *dfg = *dfb = 0;
     if (*ds == 0 && *dom == 0)
         return;
@@ -1567,8 +1583,8 @@ static int contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double
 
 /* The sub-window a .. b of the window for the points pts[kf .. kl] (the first and the last in
  * contact) and the nodes beyond[0] .. beyond[1] (none if beyond[0] > beyond[1]: beyond_span),
- * and the points pts[k0 .. k1) of its intervals (a piece's two points stay together: k0 is
- * even); 0 where it would leave fewer than SUB_MIN_FREE free nodes. */
+ * and the points pts[k0 .. k1) of its intervals; 0 where it would leave fewer than
+ * SUB_MIN_FREE free nodes. */
 static int sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t beyond[2],
                       size_t *a, size_t *b, size_t *k0, size_t *k1)
 {
@@ -2021,7 +2037,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         /* -d(grad E)/dz at fixed x: the ground moving along the point's cut (q->ddt), and, at
          * a vertex's cut, the cut itself moving (its place s and its piece's weight). */
         double ds = 0, dfg = 0, dfb = 0;
-        if (q->dphi != 0 || r->pts[k ^ 1].dphi != 0) {
+        if (cut_moves(q)) {
             double dom;
             moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
         } /* else the cut and its piece stay: moving_cut's ds = +-0, dfg = dfb = 0 */
@@ -2065,7 +2081,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                 df += q->omega * R * T->k_g * (q->ddt - at_u(r, q, xt));
             if (q->st & 2)
                 df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->ddt - at_w(r, q, xt));
-            if (q->dphi != 0 || r->pts[k ^ 1].dphi != 0) {
+            if (cut_moves(q)) {
                 double ds, dom, dfg, dfb;
                 moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
                 df += ((q->st & 1) ? dfg : 0) + ((q->st & 2) ? dfb : 0);

@@ -189,6 +189,11 @@ for m in springs cam; do
         '[ $ok2 -eq 0 ] && [ "$(road_xh eff-$m.rdf)" = "$(xh eff-$m.csv)" ] &&
          grep -q "^\$ of the $m model at load" eff-$m.rdf'
 done
+# The header names the tire's file with --tire too (it printed an unset buffer there).
+run "$bin" envelope --model springs --tire "$repo/data/tires/205-60R15-mfswift.tir" --load 4000 \
+    --cleat 0.1,0.025 --x-from 0 --x-to 0.002 -o eff-tire.crg
+check "--tire: the effective road's header names the tire's file" \
+    '[ $rc -eq 0 ] && grep -aq "tire 205-60R15-mfswift.tir," eff-tire.crg'
 run "$bin" envelope --model springs --profile straight.crg --track 0.9 $lc $sweep --crg-encoding krbi -o eff-f.crg
 ok=$rc
 road_xh eff-f.crg --track 0.9 >f.rows
