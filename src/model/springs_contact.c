@@ -683,6 +683,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
      * stores to warm_pin would make c's fields be read again at every row) */
     unsigned char *warm_pin = c->warm_pin;
     long *warm_ids = c->warm_ids;
+    int held_vertex = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &rows[r];
         if (!in_w[r]) {
@@ -701,10 +702,12 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
             pe[R->j] += R->gb * lambda[r];
         } else {
             warm_pin[R->i] = 1;
+            held_vertex |= R->id >= 0;
             pe[R->i] += lambda[r];
         }
     }
     c->n_warm = n_warm;
+    c->held_vertex = held_vertex;
     keep_last(c);
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
