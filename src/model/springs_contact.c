@@ -683,7 +683,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
      * stores to warm_pin would make c's fields be read again at every row) */
     unsigned char *warm_pin = c->warm_pin;
     long *warm_ids = c->warm_ids;
-    int held_vertex = 0;
+    size_t held_vertex = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &rows[r];
         if (!in_w[r]) {
@@ -702,7 +702,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
             pe[R->j] += R->gb * lambda[r];
         } else {
             warm_pin[R->i] = 1;
-            held_vertex |= R->id >= 0;
+            held_vertex += R->id >= 0;
             pe[R->i] += lambda[r];
         }
     }

@@ -412,7 +412,7 @@ typedef struct {
     long *warm_ids;
     size_t n_warm, cap_warm;
     unsigned char *warm_pin;
-    int held_vertex;       /* the last solve's final set holds an element on a ground vertex */
+    size_t held_vertex;    /* the last solve's final set's elements held on ground vertices */
     size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
     /* Each row's key as laid out (keys: its id, and i + j: 2 i on element i alone, 2 i + 1
      * between i and i + 1), and those of the last solve (last_keys, n_last of them) with its

@@ -78,12 +78,15 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     if (nv > 0 && (V[0].i < f0 || V[nv - 1].j > f1)) /* in order of vertex, hence of sector */
         return 0;
     /* Each element's own row at z: its ray's penetration, or a vertex on its ray standing
-     * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray). */
+     * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray),
+     * pin written only on the elements a vertex row sits on (a pass over the span cost
+     * some 400 instructions an update; the others are their rays'). */
     double *ph = c->upd_w + 1, *wn = c->step, *res = c->raise;
     long *pin = c->upd_pin;
     const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
-    for (size_t e = f0; e <= f1; ++e)
-        pin[e] = -1 - (long)e;
+    for (size_t k = 0; k < nv; ++k)
+        if (V[k].t == 0)
+            pin[V[k].i] = -1 - (long)V[k].i;
     /* ph over [f0, f1] in three pieces, each a loop the compiler vectorises: 0 outside the
      * rays [ra, rb], d where it is > 0 inside */
     const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
@@ -102,18 +105,33 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         }
     /* w: the held elements on their row (the same row as the base's), the free ones along
      * the tangent, each above its own row. wpos marks the held elements of the base's last
-     * KKT system, its final working set. */
+     * KKT system, its final working set. A held element on its ray's row must have no
+     * vertex standing higher on it now; one on a vertex's (held_vertex of them, counted by
+     * the solve), that vertex, which the pass over the vertex rows after this one counts
+     * (n_same): so this pass reads no row. */
     const size_t *wpos = c->wpos, *pin_row = c->pin_row;
+    const tirenv_springs__cc_row *rows = c->rows;
     const double *base_w = c->base_w + 1;
+    size_t n_same = 0;
     for (size_t e = f0; e <= f1; ++e) {
         if (wpos[e] == SIZE_MAX) {
-            if (!(ph[e] > 0) || pin[e] != c->rows[pin_row[e]].id)
+            if (!(ph[e] > 0))
                 return 0;
             wn[e] = ph[e];
         } else {
             wn[e] = pred ? c->pred_w[e] : base_w[e] + dz * dw[e];
         }
     }
+    for (size_t k = 0; k < nv; ++k) {
+        const size_t e = V[k].i;
+        if (V[k].t != 0 || pin[e] != V[k].id || wpos[e] != SIZE_MAX)
+            continue; /* not the row e stands on now, or e free */
+        if (rows[pin_row[e]].id != V[k].id)
+            return 0; /* e held on its ray's row, or another vertex's, at the base */
+        ++n_same;
+    }
+    if (n_same != c->held_vertex)
+        return 0; /* an element held on a vertex at the base stands on its ray now */
     /* The working rows between elements at z: the same vertex in the same sector, its
      * weights at its new t, its reaction along the tangent. */
     const size_t n_s = c->n_schur;
