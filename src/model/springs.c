@@ -396,9 +396,10 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
  * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
  * else the QP is solved whole. */
 /* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
- * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays. */
-static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx, double *fz,
-                       size_t *contacts)
+ * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays
+ * (counted only where contacts is not NULL: the update counts its own). */
+static inline void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx,
+                              double *fz, size_t *contacts)
 {
     const double k_r = s->k_r, *w = s->w, *cos_t = s->cos_t, *sin_t = s->sin_t, *p = s->p;
     double sum_c = w[f0] * s->S_lc[f0] + w[f1] * s->S_rc[f1];
@@ -410,7 +411,8 @@ static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx
         sum_s += kw0 * sin_t[i];
         sum_c += kw1 * cos_t[i + 1];
         sum_s += kw1 * sin_t[i + 1];
-        n += (p[i] > 0) + (p[i + 1] > 0);
+        if (contacts) /* the loop unswitched */
+            n += (p[i] > 0) + (p[i + 1] > 0);
     }
     if (i == f1) {
         sum_c += k_r * w[i] * cos_t[i];
@@ -455,6 +457,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->ray_b = b;
         }
         const int reused = walked == 0;
+        size_t n_contacts;
         /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
          * too): a select the compiler vectorises, the bits of the comparison's branch. */
         double *d = s->d;
@@ -469,8 +472,10 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         if (reused && dfz_dz && s->cc.base_ok && s->upd_x == x &&
             s->upd_serial == prof->serial &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
-                                      s->w, s->p, s->d)) {
-            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, contacts);
+                                      s->w, s->p, s->d, &n_contacts)) {
+            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+            if (contacts)
+                *contacts = n_contacts;
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
             ++s->updates;
             return TIRENV_OK;

@@ -524,12 +524,13 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
  * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
  * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
  * (to 1e-12 R0, as the solve's). Returns 1 with w over [f0 - 1, f1 + 1], pe and obstacle
- * over [f0, f1] as tirenv_springs__cc_solve gives them; 0 if a condition fails (or the base
- * is not usable: then solve at z), with nothing written. */
+ * over [f0, f1] as tirenv_springs__cc_solve gives them and *contacts the elements of [f0, f1]
+ * with pe > 0; 0 if a condition fails (or the base is not usable: then solve at z), with
+ * nothing written. */
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
                               const double d[], const double dw[], double w[], double pe[],
-                              double obstacle[]);
+                              double obstacle[], size_t *contacts);
 
 /* springs_root.c: after a QP solve at (x, c->base_z) whose slope made it the update's base,
  * with hub force F0 (N) and dF_z/dz dF0 (N/m) there: the height *z_root (m) where F_z = G (N)

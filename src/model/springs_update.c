@@ -50,7 +50,7 @@ static size_t find_vrow(const tirenv_springs__cc_row V[], size_t n, long id)
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
                               const double d[], const double dw[], double w[], double pe[],
-                              double obstacle[])
+                              double obstacle[], size_t *contacts)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     const double dz = z - c->base_z;
@@ -164,6 +164,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * (its ray's, or a vertex's on it) */
     double l_max = 0, l_min = 0;
     int above = 1;
+    size_t n_c = 0; /* the held elements with a reaction > 0 */
     for (size_t it = 0;; ++it) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
          * KKT system, less G^T lambda */
@@ -193,11 +194,13 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             l_min = lam[q] < l_min ? lam[q] : l_min;
         }
         above = 1;
+        n_c = 0;
         for (size_t e = f0; e <= f1; ++e) {
             const double r = res[e];
             if (wpos[e] == SIZE_MAX) {
                 l_max = fabs(r) > l_max ? fabs(r) : l_max;
                 l_min = r < l_min ? r : l_min;
+                n_c += r > 0;
             } else { /* no side effects: & where && would branch */
                 ok &= fabs(r) <= tol_k;
                 above &= !(ph[e] > 0 && wn[e] - ph[e] < -tol);
@@ -244,10 +247,26 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     for (size_t e = f0; e <= f1; ++e)
         pe[e] = wpos[e] == SIZE_MAX ? res[e] : 0;
     memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
+    /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
+     * most two a row, some shared) counted again by pe as it ends */
+    size_t el[2 * TIRENV_SPRINGS__SCHUR_MAX], n_el = 0;
+    for (size_t q = 0; q < n_s; ++q)
+        for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e) {
+            size_t m = 0;
+            while (m < n_el && el[m] != e)
+                ++m;
+            if (m == n_el) {
+                el[n_el++] = e;
+                n_c -= pe[e] > 0;
+            }
+        }
     for (size_t q = 0; q < n_s; ++q) {
         pe[row_i[q]] += ga[q] * lam[q];
         pe[row_i[q] + 1] += gb[q] * lam[q];
     }
+    for (size_t m = 0; m < n_el; ++m)
+        n_c += pe[el[m]] > 0;
+    *contacts = n_c;
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
     return 1;

@@ -564,8 +564,8 @@ static void test_kept_factor_invisible(void **state)
  * Seeded random obstacles and roads, dz from 1e-10 to 1e-6 m either way; w within 1e-13 R0
  * (a few hundred units of round-off of w: the update's KKT residuals are held to 1e-14 R0)
  * and each element's reaction within 1e-9 of the largest (round-off of sums over tens of
- * elements, as test_springs_solve's kept state allows). Most states taken, and a step past
- * the update's reach refused. */
+ * elements, as test_springs_solve's kept state allows), and its count of the elements pressed
+ * that of its pe > 0. Most states taken, and a step past the update's reach refused. */
 static void test_update_is_the_solution(void **state)
 {
     (void)state;
@@ -612,12 +612,19 @@ static void test_update_is_the_solution(void **state)
             ++states;
             /* past its reach the update does not try */
             hot.base_z = z0 + 2e-6;
+            size_t contacts = SIZE_MAX;
             assert_int_equal(tirenv_springs__cc_update(&hot, &S.T, p, x, z1, 0, N - 1, d1, dw,
-                                                       w_up + 1, pe_up, ob_up), 0);
+                                                       w_up + 1, pe_up, ob_up, &contacts), 0);
             hot.base_z = z0;
             if (!tirenv_springs__cc_update(&hot, &S.T, p, x, z1, 0, N - 1, d1, dw, w_up + 1,
-                                           pe_up, ob_up))
+                                           pe_up, ob_up, &contacts))
                 continue;
+            /* its count of the elements pressed: those of its pe > 0, as the hub's pass
+             * counts them */
+            size_t pressed = 0;
+            for (size_t e = f0; e <= f1; ++e)
+                pressed += pe_up[e] > 0;
+            assert_int_equal(contacts, pressed);
             ++accepted;
             between += took;
             tirenv_springs__cc cold;
