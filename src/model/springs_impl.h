@@ -435,6 +435,7 @@ typedef struct {
     int base_ok;
     double base_z;
     double *base_w, *upd_w;  /* N + 2 each; upd_w is the update's scratch, indexed the same */
+    double *upd_pe;        /* N: the update's net reactions (N) until it accepts them */
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;

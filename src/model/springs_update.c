@@ -158,10 +158,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * system at z differs from the base's only by the rows' weights, t moving some 200
      * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
      * or the update is given up. */
-    double *x_c = c->w_try;
+    double *x_c = c->w_try, *pq = c->upd_pe;
     /* with the equations: the reactions' least and largest (the held elements' are their
      * residuals of K w = G^T lambda), and whether each free element is above its own row
-     * (its ray's, or a vertex's on it) */
+     * (its ray's, or a vertex's on it); each element's own reaction into pq (0 on the free
+     * ones), copied to pe if accepted (a pass of its own cost some 700 instructions) */
     double l_max = 0, l_min = 0;
     int above = 1;
     size_t n_c = 0; /* the held elements with a reaction > 0 */
@@ -201,9 +202,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                 l_max = fabs(r) > l_max ? fabs(r) : l_max;
                 l_min = r < l_min ? r : l_min;
                 n_c += r > 0;
+                pq[e] = r;
             } else { /* no side effects: & where && would branch */
                 ok &= fabs(r) <= tol_k;
                 above &= !(ph[e] > 0 && wn[e] - ph[e] < -tol);
+                pq[e] = 0;
             }
         }
         if (ok)
@@ -244,8 +247,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
      * max(ph, 0) gives, copied */
     memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
-    for (size_t e = f0; e <= f1; ++e)
-        pe[e] = wpos[e] == SIZE_MAX ? res[e] : 0;
+    memcpy(pe + f0, pq + f0, (f1 - f0 + 1) * sizeof *pe);
     memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
     /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
      * most two a row, some shared) counted again by pe as it ends */
