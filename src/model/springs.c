@@ -61,8 +61,10 @@ struct tirenv_springs {
     tirenv_springs__ray_memo *memo;
     /* Each ray's last d(rho)/dz computed, with the vertex and kind its walk ended on (face,
      * on the profile ray_serial; kind -1: none). It depends on nothing else, so a fresh fan at
-     * the next x whose ray ends on the same face takes it from here (most held rays over a
-     * sweep: the division and the face's lookup were some 1.7 % of the instructions). */
+     * the next x whose ray ends on the same face takes it from here: for the QP's slope (most
+     * held rays over a cleat, where the division and the face's lookup were some 2 % of the
+     * instructions), not the closed form's (a road's rays end on another face at each x: the
+     * check and the copy cost more than the hits spared, +1.5 % over the class C road). */
     tirenv_springs__ray_memo *face;
     /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
      * pins: the last one solved for is kept with them and given again, bit for bit, when they
@@ -425,8 +427,8 @@ static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, siz
 /* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
  * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays
  * (counted only where contacts is not NULL: the update counts its own). */
-static inline void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx,
-                              double *fz, size_t *contacts)
+static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx,
+                       double *fz, size_t *contacts)
 {
     const double k_r = s->k_r, *w = s->w, *cos_t = s->cos_t, *sin_t = s->sin_t, *p = s->p;
     double sum_c = w[f0] * s->S_lc[f0] + w[f1] * s->S_rc[f1];
@@ -575,7 +577,8 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             if (!s->active[i])
                 continue;
             const tirenv_springs__cc_row *R = &s->cc.rows[s->cc.pin_row[i]];
-            s->dd[i] = R->id < 0 ? -ray_drho(s, prof, i) : R->dh_dz;
+            s->dd[i] = R->id < 0 ? -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i])
+                                 : R->dh_dz;
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
     } else {
