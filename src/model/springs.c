@@ -66,6 +66,7 @@ struct tirenv_springs {
      * instructions), not the closed form's (a road's rays end on another face at each x: the
      * check and the copy cost more than the hits spared, +1.5 % over the class C road). */
     tirenv_springs__ray_memo *face;
+    size_t face_hits;
     /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
      * pins: the last one solved for is kept with them and given again, bit for bit, when they
      * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
@@ -263,8 +264,7 @@ static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
         return;
     tirenv_springs__fan_origin_at(prof, x, R0, same_ground ? s->origin.k : 0, &s->origin);
     if (!same_ground)
-        for (size_t i = 0; i < s->N; ++i)
-            s->face[i].kind = -1;
+        tirenv_springs__faces_forget(s);
     s->ray_serial = prof->serial;
     s->ray_a = 1;
     s->ray_b = 0;
@@ -416,6 +416,7 @@ static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, siz
     if (isnan(m->drho)) {
         if (f->j == m->j && f->kind == m->kind) {
             m->drho = f->drho;
+            ++s->face_hits;
         } else {
             tirenv_springs__fan_drho(prof, &s->rays, i, m);
             *f = *m;
@@ -622,6 +623,17 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
 size_t tirenv_springs__updates(const tirenv_springs *s)
 {
     return s->updates;
+}
+
+size_t tirenv_springs__face_hits(const tirenv_springs *s)
+{
+    return s->face_hits;
+}
+
+void tirenv_springs__faces_forget(tirenv_springs *s)
+{
+    for (size_t i = 0; i < s->N; ++i)
+        s->face[i].kind = -1;
 }
 
 int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x, double z,

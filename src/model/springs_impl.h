@@ -31,6 +31,10 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
                          double G, double F, double dfz_dz, double *z_root);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
+/* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
+ * forgotten (for the tests: the same bits either way). */
+size_t tirenv_springs__face_hits(const tirenv_springs *s);
+void tirenv_springs__faces_forget(tirenv_springs *s);
 
 /* What the model's contact length (springs_model.c) needs of the elements: their stiffnesses
  * k_r and k_ir (N/m), the diagonal of the tips' stiffness K (N/m: k_r + k_ir per neighbour)
