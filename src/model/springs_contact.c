@@ -117,7 +117,8 @@ static double slack(const tirenv_springs__cc_row *r, const double w[])
  * working set are the last layout's (cc_solve found them so), so that only the values are
  * new where the Schur path's factor is kept. Returns 1 if a pivot shows the rows dependent
  * (a row on held elements only, among others), -1 out of memory. */
-static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int same_layout)
+static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int same_layout,
+                      double wq[])
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     size_t n = 0, n_schur = 0;
@@ -126,6 +127,10 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
     if (same_layout && c->use_schur && same) {
         /* wpos, order, schur_pos and the chains stand; only the values are new. */
+        const size_t *wpos = c->wpos;
+        const double *pin_h = c->pin_h;
+        for (size_t e = f0; e <= f1; ++e)
+            wq[e] = wpos[e] == SIZE_MAX ? pin_h[e] : 0;
         return tirenv_springs__cc_schur_factor(c, T, 1);
     }
     /* the workspace's arrays in locals (the stores would make them be read again); the
@@ -133,6 +138,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     size_t *wpos = c->wpos, *order = c->order;
     const size_t *pin_row = c->pin_row, *hull_sec = c->hull_sec, n_hull = c->n_hull_sec;
     const unsigned char *in_w = c->in_w;
+    const double *pin_h = c->pin_h;
     size_t hq = 0;
     while (hq < n_hull && hull_sec[hq] < f0)
         ++hq;
@@ -142,9 +148,11 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
         same = same && held == (wpos[e] == SIZE_MAX);
         if (held) {
             wpos[e] = SIZE_MAX;
+            wq[e] = pin_h[e];
         } else {
             wpos[e] = n;
             order[n++] = e;
+            wq[e] = 0;
         }
         if (e > f0 && hq < n_hull && hull_sec[hq] == e - 1) {
             ++hq;
@@ -332,21 +340,16 @@ static void schur_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_tire
 static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double wq[],
                int same_layout)
 {
-    const int st = kkt_factor(c, T, same_layout);
+    /* kkt_factor writes wq: the held elements' w, their own row's h (which the layout made
+     * pin_h: a ray's row takes it, a vertex's gave it), 0 on the free ones (the Schur path's
+     * right-hand side there; the banded path reads wq on the held elements alone, and writes
+     * the free ones), in its pass deciding which are held where it makes one (a pass of its
+     * own cost some 650 instructions an equality problem) */
+    const int st = kkt_factor(c, T, same_layout, wq);
     if (st)
         return st;
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
     double *b = c->rhs;
-    /* the held elements' w, their own row's h (which the layout made pin_h: a ray's row
-     * takes it, a vertex's gave it), 0 on the free ones (the Schur path's right-hand side
-     * there; the banded path reads wq on the held elements alone, and writes the free
-     * ones) */
-    {
-        const size_t *wpos = c->wpos;
-        const double *pin_h = c->pin_h;
-        for (size_t e = f0; e <= f1; ++e)
-            wq[e] = wpos[e] == SIZE_MAX ? pin_h[e] : 0;
-    }
     if (c->use_schur) {
         /* By element, not in the KKT order (the free elements' entries of wq, the rows'
          * in lam). */
