@@ -15,7 +15,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
 {
     memset(c, 0, sizeof *c);
     size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos, &c->pin_src,
-                     &c->cand_first, &c->cand_count, &c->hull_sec};
+                     &c->cand_first, &c->cand_count, &c->hull_sec, &c->held};
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
@@ -65,6 +65,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->cand_first);
     free(c->cand_count);
     free(c->hull_sec);
+    free(c->held);
     free(c->vforce);
     free(c->pin_h);
     free(c->w_try);
@@ -139,6 +140,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     const size_t *pin_row = c->pin_row, *hull_sec = c->hull_sec, n_hull = c->n_hull_sec;
     const unsigned char *in_w = c->in_w;
     const double *pin_h = c->pin_h;
+    size_t *held_e = c->held, n_held = 0;
     size_t hq = 0;
     while (hq < n_hull && hull_sec[hq] < f0)
         ++hq;
@@ -149,6 +151,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
         if (held) {
             wpos[e] = SIZE_MAX;
             wq[e] = pin_h[e];
+            held_e[n_held++] = e;
         } else {
             wpos[e] = n;
             order[n++] = e;
@@ -166,6 +169,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
         }
     }
     c->n_kkt = n;
+    c->n_held = n_held;
     c->n_schur = n_schur;
     c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
     if (c->use_schur)
@@ -396,9 +400,15 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
             Kw -= k_ir * wq[f0 + 1];
         lambda[pin_row[f0]] = Kw;
     }
-    for (size_t e = f0 + 1; e < f1; ++e) {
-        if (wpos[e] != SIZE_MAX)
-            continue;
+    /* the held elements inside the span, from kkt_factor's list (no look at the free ones) */
+    const size_t *held_e = c->held;
+    size_t h0 = 0, h1 = c->n_held;
+    if (h0 < h1 && held_e[h0] == f0)
+        ++h0;
+    if (h1 > h0 && held_e[h1 - 1] == f1)
+        --h1;
+    for (size_t k = h0; k < h1; ++k) {
+        const size_t e = held_e[k];
         double Kw = diag[e] * wq[e];
         Kw -= k_ir * wq[e - 1];
         Kw -= k_ir * wq[e + 1];

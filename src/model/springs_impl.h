@@ -401,6 +401,7 @@ typedef struct {
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count (written for
      * the sectors in hull_sec alone: no other sector has rows), KKT position of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
+    size_t *held, n_held;  /* the held elements of wpos' layout, ascending (N of room) */
     /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
      * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
      * cand_first, for the n_hull_sec sectors in hull_sec, ascending); the span laid out */
