@@ -588,15 +588,14 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
          * The workspace's arrays in locals (the stores to dw would make them be read again
          * at every element), and a ray's kept d(rho)/dz read in place
          * (tirenv_springs__fan_drho computes it once per memo). */
-        const size_t *pin_row = s->cc.pin_row, *wpos = s->cc.wpos;
+        const size_t *pin_row = s->cc.pin_row, *held = s->cc.held;
         const tirenv_springs__cc_row *rows = s->cc.rows;
         const tirenv_springs__ray_memo *memo = s->memo;
         double *dw = s->dw;
-        for (size_t i = f0; i <= f1; ++i) {
-            if (wpos[i] != SIZE_MAX) {
-                dw[i] = 0;
-                continue;
-            }
+        /* 0 on the span, then the held elements from the QP's list of them */
+        memset(dw + f0, 0, (f1 - f0 + 1) * sizeof *dw);
+        for (size_t k = 0, n_held = s->cc.n_held; k < n_held; ++k) {
+            const size_t i = held[k];
             const tirenv_springs__cc_row *R = &rows[pin_row[i]];
             if (R->id < 0) {
                 const double dr = memo[i].drho;
