@@ -113,14 +113,19 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     const tirenv_springs__cc_row *rows = c->rows;
     const double *base_w = c->base_w + 1;
     size_t n_same = 0;
-    for (size_t e = f0; e <= f1; ++e) {
-        if (wpos[e] == SIZE_MAX) {
-            if (!(ph[e] > 0))
-                return 0;
-            wn[e] = ph[e];
-        } else {
-            wn[e] = pred ? c->pred_w[e] : base_w[e] + dz * dw[e];
-        }
+    /* every element as a free one (a copy, or a loop the compiler vectorises), then the held
+     * ones from the base's list of them (kkt_factor's) */
+    if (pred) {
+        memcpy(wn + f0, c->pred_w + f0, (f1 - f0 + 1) * sizeof *wn);
+    } else {
+        for (size_t e = f0; e <= f1; ++e)
+            wn[e] = base_w[e] + dz * dw[e];
+    }
+    for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
+        const size_t e = c->held[k];
+        if (!(ph[e] > 0))
+            return 0;
+        wn[e] = ph[e];
     }
     for (size_t k = 0; k < nv; ++k) {
         const size_t e = V[k].i;
