@@ -59,6 +59,14 @@ struct tirenv_springs {
     double *rho, *ray_inv_s, *ray_drop, *ray_reach, *tread;
     tirenv_springs__fan_rays rays;
     tirenv_springs__ray_memo *memo;
+    /* Each ray's last d(rho)/dz computed, with the vertex and kind its walk ended on (face,
+     * on the profile ray_serial; kind -1: none). It depends on nothing else, so a fresh fan at
+     * the next x whose ray ends on the same face takes it from here: for the QP's slope (most
+     * held rays over a cleat, where the division and the face's lookup were some 2 % of the
+     * instructions), not the closed form's (a road's rays end on another face at each x: the
+     * check and the copy cost more than the hits spared, +1.5 % over the class C road). */
+    tirenv_springs__ray_memo *face;
+    size_t face_hits;
     /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
      * pins: the last one solved for is kept with them and given again, bit for bit, when they
      * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
@@ -134,8 +142,10 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->pins.gap = calloc(2 * N, sizeof *s->pins.gap);
     s->slope.gap = calloc(2 * N, sizeof *s->slope.gap);
     s->memo = calloc(N, sizeof *s->memo);
+    s->face = calloc(N, sizeof *s->face);
     s->pairs = calloc(4 * N, sizeof *s->pairs);
-    if (!buf || !s->active || !s->pins.gap || !s->slope.gap || !s->memo || !s->pairs) {
+    if (!buf || !s->active || !s->pins.gap || !s->slope.gap || !s->memo || !s->face ||
+        !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
@@ -191,6 +201,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->pins.gap);
     free(s->slope.gap);
     free(s->memo);
+    free(s->face);
     free(s->pairs);
     tirenv_springs__cc_free(&s->cc);
     free(s);
@@ -252,6 +263,8 @@ static void set_origin(tirenv_springs *s, const tirenv_profile *prof, double x)
     if (same_ground && s->origin.x == x)
         return;
     tirenv_springs__fan_origin_at(prof, x, R0, same_ground ? s->origin.k : 0, &s->origin);
+    if (!same_ground)
+        tirenv_springs__faces_forget(s);
     s->ray_serial = prof->serial;
     s->ray_a = 1;
     s->ray_b = 0;
@@ -395,10 +408,28 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
  * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
  * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
  * else the QP is solved whole. */
+/* d(rho)/dz of ray i (a finite rho) as tirenv_springs__fan_drho gives it: kept in its memo,
+ * else the face's (s->face) where the walk ended on the same one, else computed. */
+static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, size_t i)
+{
+    tirenv_springs__ray_memo *m = &s->memo[i], *f = &s->face[i];
+    if (isnan(m->drho)) {
+        if (f->j == m->j && f->kind == m->kind) {
+            m->drho = f->drho;
+            ++s->face_hits;
+        } else {
+            tirenv_springs__fan_drho(prof, &s->rays, i, m);
+            *f = *m;
+        }
+    }
+    return m->drho;
+}
+
 /* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
- * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays. */
-static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx, double *fz,
-                       size_t *contacts)
+ * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays
+ * (counted only where contacts is not NULL: the update counts its own). */
+static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx,
+                       double *fz, size_t *contacts)
 {
     const double k_r = s->k_r, *w = s->w, *cos_t = s->cos_t, *sin_t = s->sin_t, *p = s->p;
     double sum_c = w[f0] * s->S_lc[f0] + w[f1] * s->S_rc[f1];
@@ -410,7 +441,8 @@ static void hub_forces(const tirenv_springs *s, size_t f0, size_t f1, double *fx
         sum_s += kw0 * sin_t[i];
         sum_c += kw1 * cos_t[i + 1];
         sum_s += kw1 * sin_t[i + 1];
-        n += (p[i] > 0) + (p[i + 1] > 0);
+        if (contacts) /* the loop unswitched */
+            n += (p[i] > 0) + (p[i + 1] > 0);
     }
     if (i == f1) {
         sum_c += k_r * w[i] * cos_t[i];
@@ -455,6 +487,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->ray_b = b;
         }
         const int reused = walked == 0;
+        size_t n_contacts;
         /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
          * too): a select the compiler vectorises, the bits of the comparison's branch. */
         double *d = s->d;
@@ -469,8 +502,10 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         if (reused && dfz_dz && s->cc.base_ok && s->upd_x == x &&
             s->upd_serial == prof->serial &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
-                                      s->w, s->p, s->d)) {
-            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, contacts);
+                                      s->w, s->p, s->d, &n_contacts)) {
+            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+            if (contacts)
+                *contacts = n_contacts;
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
             ++s->updates;
             return TIRENV_OK;
@@ -553,19 +588,18 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
          * The workspace's arrays in locals (the stores to dw would make them be read again
          * at every element), and a ray's kept d(rho)/dz read in place
          * (tirenv_springs__fan_drho computes it once per memo). */
-        const size_t *pin_row = s->cc.pin_row, *wpos = s->cc.wpos;
+        const size_t *pin_row = s->cc.pin_row, *held = s->cc.held;
         const tirenv_springs__cc_row *rows = s->cc.rows;
-        tirenv_springs__ray_memo *memo = s->memo;
+        const tirenv_springs__ray_memo *memo = s->memo;
         double *dw = s->dw;
-        for (size_t i = f0; i <= f1; ++i) {
-            if (wpos[i] != SIZE_MAX) {
-                dw[i] = 0;
-                continue;
-            }
+        /* 0 on the span, then the held elements from the QP's list of them */
+        memset(dw + f0, 0, (f1 - f0 + 1) * sizeof *dw);
+        for (size_t k = 0, n_held = s->cc.n_held; k < n_held; ++k) {
+            const size_t i = held[k];
             const tirenv_springs__cc_row *R = &rows[pin_row[i]];
             if (R->id < 0) {
                 const double dr = memo[i].drho;
-                dw[i] = -(isnan(dr) ? tirenv_springs__fan_drho(prof, &s->rays, i, &memo[i]) : dr);
+                dw[i] = -(isnan(dr) ? ray_drho(s, prof, i) : dr);
             } else {
                 dw[i] = R->dh_dz;
             }
@@ -588,6 +622,17 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
 size_t tirenv_springs__updates(const tirenv_springs *s)
 {
     return s->updates;
+}
+
+size_t tirenv_springs__face_hits(const tirenv_springs *s)
+{
+    return s->face_hits;
+}
+
+void tirenv_springs__faces_forget(tirenv_springs *s)
+{
+    for (size_t i = 0; i < s->N; ++i)
+        s->face[i].kind = -1;
 }
 
 int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x, double z,

@@ -15,7 +15,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
 {
     memset(c, 0, sizeof *c);
     size_t **sz[] = {&c->pin_row, &c->sec_first, &c->sec_count, &c->wpos, &c->pin_src,
-                     &c->cand_first, &c->cand_count, &c->hull_sec};
+                     &c->cand_first, &c->cand_count, &c->hull_sec, &c->held};
     for (size_t k = 0; k < sizeof sz / sizeof sz[0]; ++k)
         if (!(*sz[k] = calloc(N + 1, sizeof **sz[k])))
             return TIRENV_ENOMEM;
@@ -31,6 +31,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         return TIRENV_ENOMEM;
     if (!(c->base_w = calloc(N + 2, sizeof *c->base_w)) ||
         !(c->upd_w = calloc(N + 2, sizeof *c->upd_w)) ||
+        !(c->upd_pe = calloc(N, sizeof *c->upd_pe)) ||
         !(c->upd_pin = calloc(N, sizeof *c->upd_pin)) ||
         !(c->pred_w = calloc(N + 2, sizeof *c->pred_w)) ||
         !(c->root_y = calloc(N + 2, sizeof *c->root_y)))
@@ -64,6 +65,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->cand_first);
     free(c->cand_count);
     free(c->hull_sec);
+    free(c->held);
     free(c->vforce);
     free(c->pin_h);
     free(c->w_try);
@@ -79,6 +81,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->last_keys);
     free(c->base_w);
     free(c->upd_w);
+    free(c->upd_pe);
     free(c->upd_pin);
     free(c->dlambda);
     free(c->pred_w);
@@ -115,7 +118,8 @@ static double slack(const tirenv_springs__cc_row *r, const double w[])
  * working set are the last layout's (cc_solve found them so), so that only the values are
  * new where the Schur path's factor is kept. Returns 1 if a pivot shows the rows dependent
  * (a row on held elements only, among others), -1 out of memory. */
-static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int same_layout)
+static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int same_layout,
+                      double wq[])
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     size_t n = 0, n_schur = 0;
@@ -124,6 +128,10 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     int same = c->tri_ok && c->tri_f0 == f0 && c->tri_f1 == f1;
     if (same_layout && c->use_schur && same) {
         /* wpos, order, schur_pos and the chains stand; only the values are new. */
+        const size_t *wpos = c->wpos;
+        const double *pin_h = c->pin_h;
+        for (size_t e = f0; e <= f1; ++e)
+            wq[e] = wpos[e] == SIZE_MAX ? pin_h[e] : 0;
         return tirenv_springs__cc_schur_factor(c, T, 1);
     }
     /* the workspace's arrays in locals (the stores would make them be read again); the
@@ -131,6 +139,8 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     size_t *wpos = c->wpos, *order = c->order;
     const size_t *pin_row = c->pin_row, *hull_sec = c->hull_sec, n_hull = c->n_hull_sec;
     const unsigned char *in_w = c->in_w;
+    const double *pin_h = c->pin_h;
+    size_t *held_e = c->held, n_held = 0;
     size_t hq = 0;
     while (hq < n_hull && hull_sec[hq] < f0)
         ++hq;
@@ -140,9 +150,12 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
         same = same && held == (wpos[e] == SIZE_MAX);
         if (held) {
             wpos[e] = SIZE_MAX;
+            wq[e] = pin_h[e];
+            held_e[n_held++] = e;
         } else {
             wpos[e] = n;
             order[n++] = e;
+            wq[e] = 0;
         }
         if (e > f0 && hq < n_hull && hull_sec[hq] == e - 1) {
             ++hq;
@@ -156,6 +169,7 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
         }
     }
     c->n_kkt = n;
+    c->n_held = n_held;
     c->n_schur = n_schur;
     c->use_schur = n_schur <= TIRENV_SPRINGS__SCHUR_MAX;
     if (c->use_schur)
@@ -330,21 +344,16 @@ static void schur_rhs(const tirenv_springs__cc *c, const tirenv_springs__cc_tire
 static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double wq[],
                int same_layout)
 {
-    const int st = kkt_factor(c, T, same_layout);
+    /* kkt_factor writes wq: the held elements' w, their own row's h (which the layout made
+     * pin_h: a ray's row takes it, a vertex's gave it), 0 on the free ones (the Schur path's
+     * right-hand side there; the banded path reads wq on the held elements alone, and writes
+     * the free ones), in its pass deciding which are held where it makes one (a pass of its
+     * own cost some 650 instructions an equality problem) */
+    const int st = kkt_factor(c, T, same_layout, wq);
     if (st)
         return st;
     const size_t N = T->N, f0 = c->f0, f1 = c->f1;
     double *b = c->rhs;
-    /* the held elements' w, their own row's h (which the layout made pin_h: a ray's row
-     * takes it, a vertex's gave it), 0 on the free ones (the Schur path's right-hand side
-     * there; the banded path reads wq on the held elements alone, and writes the free
-     * ones) */
-    {
-        const size_t *wpos = c->wpos;
-        const double *pin_h = c->pin_h;
-        for (size_t e = f0; e <= f1; ++e)
-            wq[e] = wpos[e] == SIZE_MAX ? pin_h[e] : 0;
-    }
     if (c->use_schur) {
         /* By element, not in the KKT order (the free elements' entries of wq, the rows'
          * in lam). */
@@ -391,9 +400,15 @@ static int eqp(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w
             Kw -= k_ir * wq[f0 + 1];
         lambda[pin_row[f0]] = Kw;
     }
-    for (size_t e = f0 + 1; e < f1; ++e) {
-        if (wpos[e] != SIZE_MAX)
-            continue;
+    /* the held elements inside the span, from kkt_factor's list (no look at the free ones) */
+    const size_t *held_e = c->held;
+    size_t h0 = 0, h1 = c->n_held;
+    if (h0 < h1 && held_e[h0] == f0)
+        ++h0;
+    if (h1 > h0 && held_e[h1 - 1] == f1)
+        --h1;
+    for (size_t k = h0; k < h1; ++k) {
+        const size_t e = held_e[k];
         double Kw = diag[e] * wq[e];
         Kw -= k_ir * wq[e - 1];
         Kw -= k_ir * wq[e + 1];
@@ -683,6 +698,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
      * stores to warm_pin would make c's fields be read again at every row) */
     unsigned char *warm_pin = c->warm_pin;
     long *warm_ids = c->warm_ids;
+    size_t held_vertex = 0;
     for (size_t r = 0; r < n_rows; ++r) {
         const tirenv_springs__cc_row *R = &rows[r];
         if (!in_w[r]) {
@@ -701,10 +717,12 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
             pe[R->j] += R->gb * lambda[r];
         } else {
             warm_pin[R->i] = 1;
+            held_vertex += R->id >= 0;
             pe[R->i] += lambda[r];
         }
     }
     c->n_warm = n_warm;
+    c->held_vertex = held_vertex;
     keep_last(c);
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;

@@ -31,6 +31,10 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
                          double G, double F, double dfz_dz, double *z_root);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
+/* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
+ * forgotten (for the tests: the same bits either way). */
+size_t tirenv_springs__face_hits(const tirenv_springs *s);
+void tirenv_springs__faces_forget(tirenv_springs *s);
 
 /* What the model's contact length (springs_model.c) needs of the elements: their stiffnesses
  * k_r and k_ir (N/m), the diagonal of the tips' stiffness K (N/m: k_r + k_ir per neighbour)
@@ -397,6 +401,7 @@ typedef struct {
     /* per element (N): the pin row (or SIZE_MAX), first sector row and count (written for
      * the sectors in hull_sec alone: no other sector has rows), KKT position of w, scratch */
     size_t *pin_row, *sec_first, *sec_count, *wpos;
+    size_t *held, n_held;  /* the held elements of wpos' layout, ascending (N of room) */
     /* per element: the vertex row in vrows that is its pin (SIZE_MAX: its ray), and its
      * sector's weighted vertex rows in vrows, the hull's candidates (cand_count of them from
      * cand_first, for the n_hull_sec sectors in hull_sec, ascending); the span laid out */
@@ -412,6 +417,7 @@ typedef struct {
     long *warm_ids;
     size_t n_warm, cap_warm;
     unsigned char *warm_pin;
+    size_t held_vertex;    /* the last solve's final set's elements held on ground vertices */
     size_t f0, f1;         /* the rows' element span (f0 > f1: no rows) */
     /* Each row's key as laid out (keys: its id, and i + j: 2 i on element i alone, 2 i + 1
      * between i and i + 1), and those of the last solve (last_keys, n_last of them) with its
@@ -434,6 +440,7 @@ typedef struct {
     int base_ok;
     double base_z;
     double *base_w, *upd_w;  /* N + 2 each; upd_w is the update's scratch, indexed the same */
+    double *upd_pe;        /* N: the update's net reactions (N) until it accepts them */
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
@@ -523,12 +530,13 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
  * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
  * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
  * (to 1e-12 R0, as the solve's). Returns 1 with w over [f0 - 1, f1 + 1], pe and obstacle
- * over [f0, f1] as tirenv_springs__cc_solve gives them; 0 if a condition fails (or the base
- * is not usable: then solve at z), with nothing written. */
+ * over [f0, f1] as tirenv_springs__cc_solve gives them and *contacts the elements of [f0, f1]
+ * with pe > 0; 0 if a condition fails (or the base is not usable: then solve at z), with
+ * nothing written. */
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
                               const double d[], const double dw[], double w[], double pe[],
-                              double obstacle[]);
+                              double obstacle[], size_t *contacts);
 
 /* springs_root.c: after a QP solve at (x, c->base_z) whose slope made it the update's base,
  * with hub force F0 (N) and dF_z/dz dF0 (N/m) there: the height *z_root (m) where F_z = G (N)

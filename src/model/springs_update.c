@@ -50,7 +50,7 @@ static size_t find_vrow(const tirenv_springs__cc_row V[], size_t n, long id)
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
                               const double d[], const double dw[], double w[], double pe[],
-                              double obstacle[])
+                              double obstacle[], size_t *contacts)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N;
     const double dz = z - c->base_z;
@@ -78,12 +78,15 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     if (nv > 0 && (V[0].i < f0 || V[nv - 1].j > f1)) /* in order of vertex, hence of sector */
         return 0;
     /* Each element's own row at z: its ray's penetration, or a vertex on its ray standing
-     * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray). */
+     * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray),
+     * pin written only on the elements a vertex row sits on (a pass over the span cost
+     * some 400 instructions an update; the others are their rays'). */
     double *ph = c->upd_w + 1, *wn = c->step, *res = c->raise;
     long *pin = c->upd_pin;
     const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
-    for (size_t e = f0; e <= f1; ++e)
-        pin[e] = -1 - (long)e;
+    for (size_t k = 0; k < nv; ++k)
+        if (V[k].t == 0)
+            pin[V[k].i] = -1 - (long)V[k].i;
     /* ph over [f0, f1] in three pieces, each a loop the compiler vectorises: 0 outside the
      * rays [ra, rb], d where it is > 0 inside */
     const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
@@ -102,18 +105,38 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         }
     /* w: the held elements on their row (the same row as the base's), the free ones along
      * the tangent, each above its own row. wpos marks the held elements of the base's last
-     * KKT system, its final working set. */
+     * KKT system, its final working set. A held element on its ray's row must have no
+     * vertex standing higher on it now; one on a vertex's (held_vertex of them, counted by
+     * the solve), that vertex, which the pass over the vertex rows after this one counts
+     * (n_same): so this pass reads no row. */
     const size_t *wpos = c->wpos, *pin_row = c->pin_row;
+    const tirenv_springs__cc_row *rows = c->rows;
     const double *base_w = c->base_w + 1;
-    for (size_t e = f0; e <= f1; ++e) {
-        if (wpos[e] == SIZE_MAX) {
-            if (!(ph[e] > 0) || pin[e] != c->rows[pin_row[e]].id)
-                return 0;
-            wn[e] = ph[e];
-        } else {
-            wn[e] = pred ? c->pred_w[e] : base_w[e] + dz * dw[e];
-        }
+    size_t n_same = 0;
+    /* every element as a free one (a copy, or a loop the compiler vectorises), then the held
+     * ones from the base's list of them (kkt_factor's) */
+    if (pred) {
+        memcpy(wn + f0, c->pred_w + f0, (f1 - f0 + 1) * sizeof *wn);
+    } else {
+        for (size_t e = f0; e <= f1; ++e)
+            wn[e] = base_w[e] + dz * dw[e];
     }
+    for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
+        const size_t e = c->held[k];
+        if (!(ph[e] > 0))
+            return 0;
+        wn[e] = ph[e];
+    }
+    for (size_t k = 0; k < nv; ++k) {
+        const size_t e = V[k].i;
+        if (V[k].t != 0 || pin[e] != V[k].id || wpos[e] != SIZE_MAX)
+            continue; /* not the row e stands on now, or e free */
+        if (rows[pin_row[e]].id != V[k].id)
+            return 0; /* e held on its ray's row, or another vertex's, at the base */
+        ++n_same;
+    }
+    if (n_same != c->held_vertex)
+        return 0; /* an element held on a vertex at the base stands on its ray now */
     /* The working rows between elements at z: the same vertex in the same sector, its
      * weights at its new t, its reaction along the tangent. */
     const size_t n_s = c->n_schur;
@@ -140,12 +163,14 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * system at z differs from the base's only by the rows' weights, t moving some 200
      * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
      * or the update is given up. */
-    double *x_c = c->w_try;
+    double *x_c = c->w_try, *pq = c->upd_pe;
     /* with the equations: the reactions' least and largest (the held elements' are their
      * residuals of K w = G^T lambda), and whether each free element is above its own row
-     * (its ray's, or a vertex's on it) */
+     * (its ray's, or a vertex's on it); each element's own reaction into pq (0 on the free
+     * ones), copied to pe if accepted (a pass of its own cost some 700 instructions) */
     double l_max = 0, l_min = 0;
     int above = 1;
+    size_t n_c = 0; /* the held elements with a reaction > 0 */
     for (size_t it = 0;; ++it) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
          * KKT system, less G^T lambda */
@@ -175,14 +200,18 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             l_min = lam[q] < l_min ? lam[q] : l_min;
         }
         above = 1;
+        n_c = 0;
         for (size_t e = f0; e <= f1; ++e) {
             const double r = res[e];
             if (wpos[e] == SIZE_MAX) {
                 l_max = fabs(r) > l_max ? fabs(r) : l_max;
                 l_min = r < l_min ? r : l_min;
+                n_c += r > 0;
+                pq[e] = r;
             } else { /* no side effects: & where && would branch */
                 ok &= fabs(r) <= tol_k;
                 above &= !(ph[e] > 0 && wn[e] - ph[e] < -tol);
+                pq[e] = 0;
             }
         }
         if (ok)
@@ -223,13 +252,28 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
      * max(ph, 0) gives, copied */
     memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
-    for (size_t e = f0; e <= f1; ++e)
-        pe[e] = wpos[e] == SIZE_MAX ? res[e] : 0;
+    memcpy(pe + f0, pq + f0, (f1 - f0 + 1) * sizeof *pe);
     memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
+    /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
+     * most two a row, some shared) counted again by pe as it ends */
+    size_t el[2 * TIRENV_SPRINGS__SCHUR_MAX], n_el = 0;
+    for (size_t q = 0; q < n_s; ++q)
+        for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e) {
+            size_t m = 0;
+            while (m < n_el && el[m] != e)
+                ++m;
+            if (m == n_el) {
+                el[n_el++] = e;
+                n_c -= pe[e] > 0;
+            }
+        }
     for (size_t q = 0; q < n_s; ++q) {
         pe[row_i[q]] += ga[q] * lam[q];
         pe[row_i[q] + 1] += gb[q] * lam[q];
     }
+    for (size_t m = 0; m < n_el; ++m)
+        n_c += pe[el[m]] > 0;
+    *contacts = n_c;
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
     return 1;

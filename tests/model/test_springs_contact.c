@@ -476,6 +476,58 @@ static void test_warm_start_invisible(void **state)
     tirenv_profile_free(p);
 }
 
+/* A ray's d(rho)/dz kept with the face its walk ended on and taken again at the next x
+ * (springs.c, ray_drho; docs/models.md section 4.8, Cost) is the one computed afresh: two
+ * models evaluated at the same states, one of which forgets its faces before each, give the
+ * same bits (F_z, F_x, dF_z/dz, the contacts). Sweeps every 1 mm over seeded random obstacles
+ * and a road, each interrupted by a few positions on another profile (the faces kept belong
+ * to the profile, and must be forgotten with it), at two heights a position. */
+static void test_faces_kept_invisible(void **state)
+{
+    (void)state;
+    rng_state = 4711;
+    const tirenv_tire t = continuous_tire();
+    tirenv_springs *kept = tirenv_springs_alloc(&t.springs);
+    tirenv_springs *fresh = tirenv_springs_alloc(&t.springs);
+    assert_non_null(kept);
+    assert_non_null(fresh);
+    size_t states = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        tirenv_profile *p = trial == 11 ? random_road(1500, 0.001, 2) : random_obstacle(trial);
+        tirenv_profile *other = random_obstacle(trial + 1);
+        const double x0 = -0.5 + 0.3 * uniform(), sink = 0.02 + 0.05 * uniform();
+        for (int k = 0; k < 300; ++k) {
+            const int away = k % 100 >= 95;
+            const tirenv_profile *q = away ? other : p;
+            const double x = x0 + 0.001 * k;
+            const double g = tirenv_profile_max_height(q, x - 0.3, x + 0.3);
+            for (int h = 0; h < 2; ++h) {
+                const double z = g + t.springs.R0 - sink + 1.37e-5 * h;
+                double fx[2], fz[2], dfz[2];
+                size_t n[2];
+                tirenv_springs__faces_forget(fresh);
+                assert_int_equal(tirenv_springs_forces(kept, q, x, z, &fx[0], &fz[0], &dfz[0],
+                                                       &n[0], NULL), TIRENV_OK);
+                assert_int_equal(tirenv_springs_forces(fresh, q, x, z, &fx[1], &fz[1],
+                                                       &dfz[1], &n[1], NULL), TIRENV_OK);
+                assert_memory_equal(&fz[0], &fz[1], sizeof fz[0]);
+                assert_memory_equal(&fx[0], &fx[1], sizeof fx[0]);
+                assert_memory_equal(&dfz[0], &dfz[1], sizeof dfz[0]);
+                assert_int_equal(n[0], n[1]);
+                ++states;
+            }
+        }
+        tirenv_profile_free(other);
+        tirenv_profile_free(p);
+    }
+    print_message("%zu states, %zu d(rho)/dz from the faces kept\n", states,
+                  tirenv_springs__face_hits(kept));
+    assert_int_equal(tirenv_springs__face_hits(fresh), 0);
+    assert_true(tirenv_springs__face_hits(kept) > states);
+    tirenv_springs_free(kept);
+    tirenv_springs_free(fresh);
+}
+
 /* The solver keeps K_FF's factor and the KKT layout from one solve to the next while the rows
  * and the working set stay (the confirming evaluation a hair above, the next millimetre):
  * what it then computes must be the bits a fresh workspace computes, the same final active
@@ -564,8 +616,8 @@ static void test_kept_factor_invisible(void **state)
  * Seeded random obstacles and roads, dz from 1e-10 to 1e-6 m either way; w within 1e-13 R0
  * (a few hundred units of round-off of w: the update's KKT residuals are held to 1e-14 R0)
  * and each element's reaction within 1e-9 of the largest (round-off of sums over tens of
- * elements, as test_springs_solve's kept state allows). Most states taken, and a step past
- * the update's reach refused. */
+ * elements, as test_springs_solve's kept state allows), and its count of the elements pressed
+ * that of its pe > 0. Most states taken, and a step past the update's reach refused. */
 static void test_update_is_the_solution(void **state)
 {
     (void)state;
@@ -612,12 +664,19 @@ static void test_update_is_the_solution(void **state)
             ++states;
             /* past its reach the update does not try */
             hot.base_z = z0 + 2e-6;
+            size_t contacts = SIZE_MAX;
             assert_int_equal(tirenv_springs__cc_update(&hot, &S.T, p, x, z1, 0, N - 1, d1, dw,
-                                                       w_up + 1, pe_up, ob_up), 0);
+                                                       w_up + 1, pe_up, ob_up, &contacts), 0);
             hot.base_z = z0;
             if (!tirenv_springs__cc_update(&hot, &S.T, p, x, z1, 0, N - 1, d1, dw, w_up + 1,
-                                           pe_up, ob_up))
+                                           pe_up, ob_up, &contacts))
                 continue;
+            /* its count of the elements pressed: those of its pe > 0, as the hub's pass
+             * counts them */
+            size_t pressed = 0;
+            for (size_t e = f0; e <= f1; ++e)
+                pressed += pe_up[e] > 0;
+            assert_int_equal(contacts, pressed);
             ++accepted;
             between += took;
             tirenv_springs__cc cold;
@@ -929,6 +988,7 @@ int main(void)
         cmocka_unit_test(test_narrow_features_carried),
         cmocka_unit_test(test_derivative_on_roads),
         cmocka_unit_test(test_warm_start_invisible),
+        cmocka_unit_test(test_faces_kept_invisible),
         cmocka_unit_test(test_kept_factor_invisible),
         cmocka_unit_test(test_update_is_the_solution),
         cmocka_unit_test(test_root_is_the_equilibrium),
