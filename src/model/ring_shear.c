@@ -2160,7 +2160,9 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
 
 int tirenv_ring__defer_slope(tirenv_ring *r, int on)
 {
-    if (!r->tread)
+    /* Not with the softening carcass: its minimum, found to the carcass's Newton tolerance,
+     * depends on the start, which an unasked slope changes (more evaluations, not fewer). */
+    if (!r->tread || r->tread->soft)
         return 0;
     r->tread->defer = on;
     r->tread->deferred = 0;
