@@ -313,6 +313,66 @@ static void test_steps_by_hand(void **state)
     }
 }
 
+/* dF/dz on request (tirenv_eq_problem.slope): a force function that leaves it out and gives
+ * it when asked leads Newton through the same evaluations to the same point as one that gives
+ * it at once, on the smooth and the kinked laws from the table's starts, and is asked fewer
+ * times than it is evaluated: not at the accepted iterate, whose correction the slope before
+ * bounds. */
+typedef struct {
+    recorder rec;
+    double z_last;         /* the latest evaluation's height, m */
+    size_t asked;
+} lazy_recorder;
+
+static int lazy_force(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
+{
+    lazy_recorder *l = ctx;
+    const int status = force(&l->rec, z, out, diag);
+    out->dF_dz = NAN;
+    l->z_last = z;
+    return status;
+}
+
+static int lazy_slope(void *ctx, double *dF_dz)
+{
+    lazy_recorder *l = ctx;
+    double F;
+    ++l->asked;
+    law_eval(l->rec.L, l->z_last, &F, dF_dz);
+    return 0;
+}
+
+static void test_slope_on_request(void **state)
+{
+    (void)state;
+    size_t spared = 0;
+    for (size_t i = 0; i < 4; ++i) {
+        const eq_case *c = &cases[i < 2 ? i : i == 2 ? 2 : 4]; /* smooth twice, kinked, plateau */
+        const tirenv_eq_settings eq = tirenv_eq_default();
+        tirenv_eq_solver *s = tirenv_eq__solver_alloc(tirenv_eq__newton);
+        assert_non_null(s);
+        recorder eager = {.L = &c->L};
+        lazy_recorder lazy = {.rec = {.L = &c->L}};
+        tirenv_eq_problem prob = c->prob;
+        tirenv_eq_result a, b;
+        assert_int_equal(tirenv_eq__solve(s, &eq, force, &eager, c->G, &prob, &a, NULL),
+                         TIRENV_OK);
+        prob.slope = lazy_slope;
+        assert_int_equal(tirenv_eq__solve(s, &eq, lazy_force, &lazy, c->G, &prob, &b, NULL),
+                         TIRENV_OK);
+        assert_int_equal(a.evals, b.evals);
+        assert_int_equal(a.stop, b.stop);
+        for (size_t k = 0; k < a.evals; ++k)
+            assert_int_equal(memcmp(&eager.log[k].z, &lazy.rec.log[k].z, sizeof(double)), 0);
+        assert_int_equal(memcmp(&a.point.z, &b.point.z, sizeof(double)), 0);
+        assert_int_equal(memcmp(&a.point.F, &b.point.F, sizeof(double)), 0);
+        assert_true(lazy.asked <= b.evals);
+        spared += b.evals - lazy.asked;
+        tirenv_eq__solver_free(s);
+    }
+    assert_true(spared >= 2);
+}
+
 /* A solver is reused position after position: a solve after a failure starts clean. */
 static void test_reuse_after_failure(void **state)
 {
@@ -362,6 +422,7 @@ int main(void)
         cmocka_unit_test(test_table_every_method),
         cmocka_unit_test(test_steps_by_hand),
         cmocka_unit_test(test_reuse_after_failure),
+        cmocka_unit_test(test_slope_on_request),
         cmocka_unit_test(test_names),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
