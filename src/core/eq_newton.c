@@ -21,13 +21,29 @@ typedef struct {
     double dz_old, last_dz;/* the steps before, m, to see Newton stall */
     tirenv_eq_point cur;   /* the latest iterate */
     double step;           /* Newton's correction from it, m (INFINITY if dF/dz >= 0) */
+    double k;              /* the latest dF/dz of this solve, N/m (NaN: none yet) */
 } newton_state;
 
 /* A new iterate: the bracket, and the correction Newton proposes from it (the model's own
- * where it gives one). */
-static void take(newton_state *st, const tirenv_eq_point *p, double G)
+ * where it gives one). Where the force function left dF/dz out (prob.slope) it is asked for,
+ * but not at an iterate within eps_F of the load whose correction by the solve's latest slope
+ * is within half of eps_z: the test accepts it (its own correction is within eps_z unless
+ * dF/dz halved since, over a fraction of a micrometre at one x), and the equilibrium is
+ * reached without the slope of its last evaluation, which nothing after reads. */
+static int take(newton_state *st, tirenv_eq_solver *s, tirenv_eq_point *p,
+                tirenv_eq_stop *stop, tirenv_diag *diag)
 {
-    const double f = p->F - G;
+    const double G = s->G, f = p->F - G;
+    double est = NAN;
+    if (isnan(p->dF_dz) && s->prob.slope) {
+        if (fabs(f) <= s->eq.eps_F && st->k < 0 && fabs(f) <= 0.5 * s->eq.eps_z * -st->k)
+            est = -f / st->k;
+        else {
+            const int status = tirenv_eq__slope(s, p, stop, diag);
+            if (status)
+                return status;
+        }
+    }
     if (f >= 0) {
         st->lo = p->z;
         st->f_lo = f;
@@ -37,7 +53,13 @@ static void take(newton_state *st, const tirenv_eq_point *p, double G)
         st->f_hi = f;
     }
     st->cur = *p;
-    st->step = p->has_root ? p->z_root - p->z : p->dF_dz < 0 ? -f / p->dF_dz : INFINITY;
+    if (!isnan(p->dF_dz))
+        st->k = p->dF_dz;
+    st->step = !isnan(est)      ? est
+               : p->has_root    ? p->z_root - p->z
+               : p->dF_dz < 0   ? -f / p->dF_dz
+                                : INFINITY;
+    return TIRENV_OK;
 }
 
 static int newton_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
@@ -47,11 +69,11 @@ static int newton_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
     const tirenv_eq_problem *prob = &s->prob;
     *st = (newton_state){.lo = prob->z_lo, .hi = prob->z_hi, .f_lo = NAN, .f_hi = -s->G,
                          .lo_checked = 0, .down = prob->dz_hint, .dz_old = INFINITY,
-                         .last_dz = INFINITY};
+                         .last_dz = INFINITY, .k = NAN};
     tirenv_eq_point p;
-    const int status = tirenv_eq__eval(s, fmin(fmax(prob->z0, st->lo), st->hi), &p, stop, diag);
+    int status = tirenv_eq__eval(s, fmin(fmax(prob->z0, st->lo), st->hi), &p, stop, diag);
     if (!status)
-        take(st, &p, s->G);
+        status = take(st, s, &p, stop, diag);
     return status;
 }
 
@@ -98,7 +120,11 @@ static int newton_iterate(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop
              * is there, else one more evaluation. */
             st->lo_checked = 1;
             tirenv_eq_point p = st->cur;
-            const int status = z == st->lo ? 0 : tirenv_eq__eval(s, st->lo, &p, stop, diag);
+            /* (Its slope, not read, asked for as every evaluation's but the last: the model's
+             * next start is made from it.) */
+            int status = z == st->lo ? 0 : tirenv_eq__eval(s, st->lo, &p, stop, diag);
+            if (!status && z != st->lo)
+                status = tirenv_eq__slope(s, &p, stop, diag);
             if (status)
                 return status;
             if (p.F < G) {
@@ -116,9 +142,9 @@ static int newton_iterate(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop
     st->dz_old = st->last_dz;
     st->last_dz = fabs(z_next - z);
     tirenv_eq_point p;
-    const int status = tirenv_eq__eval(s, z_next, &p, stop, diag);
+    int status = tirenv_eq__eval(s, z_next, &p, stop, diag);
     if (!status)
-        take(st, &p, G);
+        status = take(st, s, &p, stop, diag);
     return status;
 }
 

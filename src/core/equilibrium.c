@@ -92,6 +92,21 @@ int tirenv_eq__eval(tirenv_eq_solver *s, double z, tirenv_eq_point *out, tirenv_
     return TIRENV_OK;
 }
 
+int tirenv_eq__slope(tirenv_eq_solver *s, tirenv_eq_point *p, tirenv_eq_stop *stop,
+                     tirenv_diag *diag)
+{
+    if (!isnan(p->dF_dz) || !s->prob.slope)
+        return TIRENV_OK;
+    if (s->prob.slope(s->ctx, &p->dF_dz) || !isfinite(p->dF_dz)) {
+        *stop = TIRENV_EQ_FORCE_FAILED;
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
+                            "the force function gave no dF_z/dz at z = %.9g m", p->z);
+    }
+    s->last.dF_dz = p->dF_dz;
+    (p->F - s->G >= 0 ? &s->below : &s->above)->dF_dz = p->dF_dz;
+    return TIRENV_OK;
+}
+
 int tirenv_eq__solver_set(tirenv_eq_solver *s, const tirenv_eq_settings *eq,
                          tirenv_eq_force_fn force, void *ctx, double G,
                          const tirenv_eq_problem *prob, tirenv_eq_stop *stop,

@@ -43,6 +43,10 @@ typedef struct {
     double z_hi;           /* centre height with no contact, m */
     double z0;             /* first guess, m */
     double dz_hint;        /* typical deflection, m */
+    /* dF/dz of the latest evaluation on request, for a force function that leaves it out (NaN)
+     * where Newton does not need it (eq_newton.c); NULL: every evaluation gives it. Nonzero
+     * if it cannot. */
+    int (*slope)(void *ctx, double *dF_dz);
 } tirenv_eq_problem;
 
 /* Why a solve stopped. */
@@ -131,6 +135,11 @@ tirenv_eq_stop tirenv_eq__solver_test(const tirenv_eq_solver *s,
  * TIRENV_EQ_MAX_EVALS once it is spent). *out (may be NULL) receives the evaluation. */
 int tirenv_eq__eval(tirenv_eq_solver *s, double z, tirenv_eq_point *out, tirenv_eq_stop *stop,
                     tirenv_diag *diag);
+
+/* For the methods: dF/dz of the latest evaluation *p where it was left out (prob.slope), into
+ * *p and the solver's copies of it; nothing where p has one. */
+int tirenv_eq__slope(tirenv_eq_solver *s, tirenv_eq_point *p, tirenv_eq_stop *stop,
+                     tirenv_diag *diag);
 
 /* What a solve found. */
 typedef struct {

@@ -67,6 +67,13 @@ static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag
     return status;
 }
 
+/* The slope of force_at's last evaluation, which left it out (defer_slope). */
+static int slope_at(void *ctx, double *dF_dz)
+{
+    const force_ctx *c = ctx;
+    return c->st->def->slope(c->st->elem, dF_dz);
+}
+
 /* The same on flat ground, with the flat-ground workspace. */
 static int flat_force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag)
 {
@@ -610,17 +617,24 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
                       st->def->bracket(st->elem, st->prof, x, &z_lo, &z_hi);
     if (!cheap)
         tirenv_rigid__bracket(1, &st->prof, R0, x, &st->rigid_hint, &z_lo, &z_hi);
+    /* Newton asks for the slope of an evaluation only where it needs it (eq_newton.c):
+     * where the model defers it, the position's last evaluation mostly goes without. */
+    const int defer = st->def->defer_slope && st->tire.eq.method == TIRENV_EQ_NEWTON &&
+                      st->def->defer_slope(st->elem, 1);
     const tirenv_eq_problem prob = {
         .z_lo = z_lo,
         .z_hi = z_hi,
         .z0 = tirenv_deformable_history_start(&st->prev, st->def->extrapolate, x,
                                               z_hi - deflection),
         .dz_hint = deflection,
+        .slope = defer ? slope_at : NULL,
     };
     force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;
     int status = tirenv_eq__solve(st->solver, &st->tire.eq, force_at, &fc, st->G, &prob,
                                   &res, diag);
+    if (defer)
+        st->def->defer_slope(st->elem, 0);
     out->x = x;
     out->iterations = res.evals;
     if (!status)

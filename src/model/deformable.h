@@ -67,6 +67,12 @@ struct tirenv_deformable {
     /* Nonzero: the warm start of a position is the line through the last two equilibria
      * (deformable.c's predict), for a model whose Newton converges slowly; else the last. */
     int extrapolate;
+    /* dF_z/dz on request, for Newton's equilibrium at a position (NULL: forces() always gives
+     * it): defer_slope(elem, 1) has the evaluations that follow leave it out (NaN) where the
+     * model can, and returns whether it does; slope() then gives the last evaluation's, the
+     * same bits as forces() would have given; defer_slope(elem, 0) ends it. */
+    int (*defer_slope)(void *elem, int on);
+    int (*slope)(void *elem, double *dF_dz);
 };
 
 /* The functions of every deformable model's type record (deformable.c): the constant-load

@@ -585,6 +585,15 @@ int tirenv_ring_forces(tirenv_ring *r, const tirenv_profile *p, double x, double
     return 0;
 }
 
+int tirenv_ring__slope(tirenv_ring *r, double *dfz_dz)
+{
+    if (!r->n) { /* no ground within reach: solved with none, the slope 0 */
+        *dfz_dz = 0;
+        return 0;
+    }
+    return tirenv_ring__shear_slope(r, dfz_dz);
+}
+
 void tirenv_ring_state(const tirenv_ring *r, double w[], double f[])
 {
     const size_t lo = r->lo, hi = r->lo + r->n;

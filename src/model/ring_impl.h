@@ -367,4 +367,14 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf);
 /* dF_z/dz (N/m) with the states of the last tirenv_ring__solve_contact fixed. */
 double tirenv_ring__dfz_dz(tirenv_ring *r);
 
+/* dF_z/dz on request, for the equilibrium's Newton (the shear-coupled tread only): with on,
+ * the evaluations that follow leave it out (their dfz_dz NULL), each keeping what it needs
+ * until the next, and tirenv_ring__slope gives the last one's, the same bits as computed
+ * with it. Returns whether it defers (0 without the tread, with the softening carcass, or
+ * off). */
+int tirenv_ring__defer_slope(tirenv_ring *r, int on);
+int tirenv_ring__deferring(const tirenv_ring *r);
+int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz);
+int tirenv_ring__slope(tirenv_ring *r, double *dfz_dz);
+
 #endif

@@ -18,9 +18,14 @@ static void ring_free(void *elem) { tirenv_ring_free(elem); }
 static int ring_forces(void *elem, const tirenv_profile *p, double x, double z,
                        tirenv_eq_point *out, tirenv_diag *diag)
 {
-    return tirenv_ring_forces(elem, p, x, z, &out->fx, &out->F, &out->dF_dz, &out->contacts,
-                              diag);
+    return tirenv_ring_forces(elem, p, x, z, &out->fx, &out->F,
+                              tirenv_ring__deferring(elem) ? NULL : &out->dF_dz,
+                              &out->contacts, diag);
 }
+
+static int ring_defer_slope(void *elem, int on) { return tirenv_ring__defer_slope(elem, on); }
+
+static int ring_slope(void *elem, double *dF_dz) { return tirenv_ring__slope(elem, dF_dz); }
 
 /* The ring's contact length is its real patch, where the tread pressure is positive: shorter
  * than the chord of the free circle, as real tires' are (docs/models.md section 1). It grows
@@ -153,6 +158,8 @@ static const tirenv_deformable ring_deformable = {
     .state_restore = ring_state_restore,
     .continuous = ring_continuous,
     .extrapolate = 1,
+    .defer_slope = ring_defer_slope,
+    .slope = ring_slope,
 };
 
 /* What tirenv fit identifies on rig data (docs/models.md section 8.4): the carcass's

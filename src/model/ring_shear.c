@@ -134,6 +134,14 @@ struct tirenv_ring_tread {
     tirenv_ring_carcass law;
     double *wc;         /* M */
     size_t n_newton;    /* Newton steps so far (the tests and the report count them) */
+    /* dF_z/dz on request (tirenv_ring__shear_slope): an evaluation asked to defer it keeps
+     * what its slope needs, the last solve_on's window and whether its Newton factorised
+     * the final states, until the next evaluation. */
+    int defer, deferred, fin_factored;
+    const double (*fin_Q)[NB];
+    size_t dfr_a, dfr_b, dfr_k0, dfr_k1;
+    int dfr_sub;
+    double dfr_z, dfr_xc;
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -1832,6 +1840,7 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
          * not change with it: the same matrix). */
         if (st == TIRENV_RING_NEWTON_OK && want && !factored && factor_cb(r, Q, T->xt))
             st = TIRENV_RING_NEWTON_BREAKDOWN;
+        T->fin_factored = want || factored, T->fin_Q = Q;
         memcpy(xw, x, N * sizeof *x);
     }
     leave(r, &sv);
@@ -1863,6 +1872,54 @@ static int solve_error(const tirenv_ring *r, int st, size_t n, tirenv_diag *diag
     return tirenv_ring__newton_error(r, st, n, "belt-and-tread", "shear-coupled tread", diag);
 }
 
+/* dF_z/dz of the equilibrium just solved on the window entered (its nodes and points): dx/dz
+ * from xt, the force pass's part of its right-hand side, then the sum over the points in
+ * contact. */
+static double slope_in(tirenv_ring *r, const double x[], double xt[])
+{
+    tirenv_ring_tread *T = r->tread;
+    const double R = r->R;
+    knots_moving(r, x, xt);
+    solve_full(r, xt); /* dx/dz */
+    double dF = 0;
+    for (size_t k = 0; k < r->n_pts; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (q->st == 0)
+            continue;
+        double df = 0;
+        if (q->st & 1)
+            df += q->omega * R * T->k_g * (q->ddt - at_u(r, q, xt));
+        if (q->st & 2)
+            df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->ddt - at_w(r, q, xt));
+        if (cut_moves(q)) {
+            double ds, dom, dfg, dfb;
+            moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
+            df += ((q->st & 1) ? dfg : 0) + ((q->st & 2) ? dfb : 0);
+            dF -= q->f * q->sn * q->dphi; /* the force's direction turns with the cut */
+        }
+        dF += df * q->cs;
+    }
+    return dF;
+}
+
+/* dx/dz of that equilibrium (xt, on the nodes a .. b solved) kept over the window as the
+ * next evaluation's warm start: its slope in z from z. */
+static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, double x_c)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t lo = r->lo, n = r->n, N = 2 * (b - a + 1);
+    double *dxw = T->dxw;
+    const double *xt = T->xt;
+    memcpy(dxw + 2 * (a - lo), xt, N * sizeof *xt);
+    if (sub)
+        fill_free(r, a, b, dxw);
+    for (size_t i = 0; i < n; ++i) {
+        T->dw[lo + i] = dxw[2 * i];
+        T->du[lo + i] = dxw[2 * i + 1];
+    }
+    T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
+}
+
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag)
 {
@@ -1874,7 +1931,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                             "the contact window of %zu nodes leaves too few of the %zu outside "
                             "it", n, r->M);
     set_kappa(r, x_c);
-    double *xw = T->xw, *dxw = T->dxw;
+    T->deferred = 0;
+    double *xw = T->xw;
     /* From the last evaluation's belt and tread where this window overlaps its window,
      * moved along their slope in z to this z (dx/dz of that equilibrium, found with its
      * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
@@ -1973,12 +2031,17 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         const size_t w0 = r->warm_lo, w1 = w0 + r->warm_n, h1 = lo + n;
         for (size_t j = w0; j < w1 && j < lo; ++j)
             r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
-        for (size_t j = w0 > lo ? w0 : lo; !dfz_dz && j < w1 && j < h1; ++j)
+        for (size_t j = w0 > lo ? w0 : lo; !dfz_dz && !T->defer && j < w1 && j < h1; ++j)
             T->dw[j] = T->du[j] = 0;
         for (size_t j = w0 > h1 ? w0 : h1; j < w1; ++j)
             r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
     }
-    T->pred[2] = 0;
+    /* Deferred, the last slope (of the evaluation before, or none) predicts from here until
+     * one is asked for (tirenv_ring__shear_slope writes this one's, as with dfz_dz). */
+    if (T->defer)
+        T->pred[0] = z;
+    else
+        T->pred[2] = 0;
     r->warm_lo = lo;
     r->warm_n = n;
     for (size_t i = 0; i < n; ++i) {
@@ -2032,7 +2095,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         }
         sum_c += q->f * q->cs;
         sum_s += q->f * q->sn;
-        if (!dfz_dz)
+        if (!dfz_dz && !T->defer) /* deferred: the right-hand side kept for the request */
             continue;
         /* -d(grad E)/dz at fixed x: the ground moving along the point's cut (q->ddt), and, at
          * a vertex's cut, the cut itself moving (its place s and its piece's weight). */
@@ -2068,29 +2131,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     }
     *fz = sum_c;
     *fx = -sum_s;
-    if (dfz_dz) {
-        knots_moving(r, x, xt);
-        solve_full(r, xt); /* dx/dz */
-        double dF = 0;
-        for (size_t k = 0; k < r->n_pts; ++k) {
-            const tirenv_ring_point *q = &r->pts[k];
-            if (q->st == 0)
-                continue;
-            double df = 0;
-            if (q->st & 1)
-                df += q->omega * R * T->k_g * (q->ddt - at_u(r, q, xt));
-            if (q->st & 2)
-                df += q->omega * R * TIRENV_RING_BELT_LAYER * q->k_t * (q->ddt - at_w(r, q, xt));
-            if (cut_moves(q)) {
-                double ds, dom, dfg, dfb;
-                moving_cut(r, k, x, &ds, &dom, &dfg, &dfb);
-                df += ((q->st & 1) ? dfg : 0) + ((q->st & 2) ? dfb : 0);
-                dF -= q->f * q->sn * q->dphi; /* the force's direction turns with the cut */
-            }
-            dF += df * q->cs;
-        }
-        *dfz_dz = dF;
-    }
+    if (dfz_dz)
+        *dfz_dz = slope_in(r, x, xt);
     /* The diagnostics: the largest tread compression u - w, at the nodes and the points in
      * contact (the free nodes' from xw). */
     double e_max = 0; /* "v > e_max": fmax(e_max, v) without its call, the same bits (e_max
@@ -2107,17 +2149,50 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     leave(r, &sv);
     r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
     r->k_last = k_last + k0;
-    if (dfz_dz) {
-        memcpy(dxw + 2 * (a - lo), xt, N * sizeof *xt);
-        if (sub)
-            fill_free(r, a, b, dxw);
-        for (size_t i = 0; i < n; ++i) {
-            T->dw[lo + i] = dxw[2 * i];
-            T->du[lo + i] = dxw[2 * i + 1];
-        }
-        T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
-    }
+    if (dfz_dz)
+        slope_out(r, a, b, sub, z, x_c);
+    T->deferred = !dfz_dz && T->defer;
+    if (T->deferred)
+        T->dfr_a = a, T->dfr_b = b, T->dfr_k0 = k0, T->dfr_k1 = k1, T->dfr_sub = sub,
+        T->dfr_z = z, T->dfr_xc = x_c;
     return 0;
+}
+
+int tirenv_ring__defer_slope(tirenv_ring *r, int on)
+{
+    /* Not with the softening carcass: its minimum, found to the carcass's Newton tolerance,
+     * depends on the start, which an unasked slope changes (more evaluations, not fewer). */
+    if (!r->tread || r->tread->soft)
+        return 0;
+    r->tread->defer = on;
+    r->tread->deferred = 0;
+    return on;
+}
+
+int tirenv_ring__deferring(const tirenv_ring *r) { return r->tread && r->tread->defer; }
+
+/* dF_z/dz of the last evaluation, which deferred it (T->defer): as tirenv_ring__solve_shear
+ * would have computed it, the same operations on the same state (the window's solve, its
+ * points and the force pass's part of dx/dz's right-hand side in T->xt are as the evaluation
+ * left them). Nonzero if there is none to give or the final states' factorisation breaks
+ * down. */
+int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz)
+{
+    tirenv_ring_tread *T = r->tread;
+    if (!T || !T->deferred)
+        return -1;
+    T->deferred = 0;
+    window_save sv;
+    enter(r, &sv, T->dfr_a, T->dfr_b, T->dfr_k0, T->dfr_k1);
+    /* The final states' factor where the last Newton step's was not (its right-hand side,
+     * not wanted, into the Newton's spare vector: T->xt holds dx/dz's). */
+    int bad = !T->fin_factored && factor_cb(r, T->fin_Q, T->xn);
+    if (!bad)
+        *dfz_dz = slope_in(r, T->x, T->xt);
+    leave(r, &sv);
+    if (!bad)
+        slope_out(r, T->dfr_a, T->dfr_b, T->dfr_sub, T->dfr_z, T->dfr_xc);
+    return bad;
 }
 
 /* The belt's w outside the window of the last evaluation: the exterior's unloaded (w, u) that
