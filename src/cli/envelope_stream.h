@@ -8,6 +8,12 @@
 #include "cli/cli.h"
 #include "tirenv/stream.h"
 
+/* The most road (m) a chunk of positions, CLI_CHUNK*dx, may span for --stream to run its
+ * chunks on several threads: each round holds its chunks' road, so a sparser sweep (dx above
+ * 256 m / 8192 = 31.25 mm) streams on one thread, whose window is the tire's reach (the same
+ * points): memory bounded whatever dx, not the whole road in one chunk at --dx 10. */
+#define CLI_STREAM_CHUNK_SPAN_M 256.0
+
 /* tirenv_model_stream_tracks (tirenv/stream.h) over n_tracks tracks (equal weights) for the
  * model m of the given type (o as cli_chunks_open's), on up to jobs threads: the
  * positions x_from + k*dx up to x_to in the chunks of CLI_CHUNK positions of whole mode, each
@@ -19,12 +25,6 @@
  * reach) and of points, whatever the road's length. Not for a network (its windows are told
  * where they sit in the road: run it through tirenv_model_stream_tracks). On failure the
  * first in position order: a row the source refuses counts before the chunk it was read for. */
-/* The most road (m) a chunk of positions, CLI_CHUNK*dx, may span for --stream to run its
- * chunks on several threads: each round holds its chunks' road, so a sparser sweep (dx above
- * 256 m / 8192 = 31.25 mm) streams on one thread, whose window is the tire's reach (the same
- * points): memory bounded whatever dx, not the whole road in one chunk at --dx 10. */
-#define CLI_STREAM_CHUNK_SPAN_M 256.0
-
 int cli_stream_chunks(tirenv_model *m, const tirenv_model_type *type, const cli_options *o,
                       size_t n_tracks, tirenv_row_source source, void *source_ctx,
                       double x_from, double x_to, double dx, double load, size_t jobs,

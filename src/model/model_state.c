@@ -22,6 +22,9 @@ enum { NAME_BYTES = 16 };
 #define HEAD_BYTES                                                                            \
     (sizeof magic + sizeof(uint64_t) + NAME_BYTES + sizeof(uint64_t) + 2 * sizeof(double) + 1)
 
+/* FNV-1a, 64 bits: fnv(FNV_BASIS, ...) hashes a run of bytes, fnv(h, ...) goes on from h. */
+static const uint64_t FNV_BASIS = 0xcbf29ce484222325ull;
+
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *b = p;
@@ -39,7 +42,7 @@ static uint64_t fnv(uint64_t h, const void *p, size_t n)
  * their struct may have padding. */
 unsigned long long tirenv_model__tire_print(const tirenv_tire *t)
 {
-    uint64_t h = 0xcbf29ce484222325ull;
+    uint64_t h = FNV_BASIS;
     h = fnv(h, &t->springs, sizeof t->springs);
     h = fnv(h, &t->ring, sizeof t->ring);
     h = fnv(h, &t->cam, offsetof(tirenv_cam_params, given));
@@ -65,7 +68,7 @@ size_t tirenv_model_state_size(const tirenv_model *m)
 
 static uint64_t checksum(const void *buf, size_t size)
 {
-    return fnv(0xcbf29ce484222325ull, buf, size - sizeof(uint64_t));
+    return fnv(FNV_BASIS, buf, size - sizeof(uint64_t));
 }
 
 /* Several tracks hold several type states; the bytes are those of one. */

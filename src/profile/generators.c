@@ -6,6 +6,10 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+/* The most segments the curved generators make (half-cylinder, sine: include/tirenv/profile.h),
+ * 16 GB of vertices: a larger request is a mistake, refused before the allocation. */
+enum { MAX_CURVE_SEGMENTS = 1000000000 };
+
 /* A size must be a positive, finite length; NaN fails the comparison too. */
 static int is_size(double v)
 {
@@ -69,7 +73,7 @@ tirenv_profile *tirenv_profile_triangle(double L_base, double H)
  * point is 1.2e-16, not 0). */
 tirenv_profile *tirenv_profile_half_cylinder(double r, size_t segments)
 {
-    if (!is_size(r) || segments < 2 || segments > 1000000000) /* the sine's bound on points */
+    if (!is_size(r) || segments < 2 || segments > MAX_CURVE_SEGMENTS)
         return NULL;
     const size_t n = segments;
     struct tirenv_profile *p = tirenv_profile__new(n + 1);
@@ -110,7 +114,7 @@ tirenv_profile *tirenv_profile_sine(double amplitude, double wavelength, double 
         points_per_period < 2)
         return NULL;
     const double m_real = ceil(periods * (double)points_per_period);
-    if (!(m_real <= 1e9)) /* refuses sizes a cast to size_t could not hold */
+    if (!(m_real <= (double)MAX_CURVE_SEGMENTS)) /* and NaN: a cast to size_t could not */
         return NULL;
     const size_t m = (size_t)m_real;
     const double length = periods * wavelength;
