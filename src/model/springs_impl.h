@@ -313,6 +313,10 @@ static inline double tirenv_springs__cc_compliance(const tirenv_springs__cc_tire
     return T->c0 * fmax(a + b - 1, 0);
 }
 
+/* A row's t closer than this to 0 or 1 is taken as the element itself (springs_rows.c's snap);
+ * a row between elements that springs_root.c carries in z must stay inside it. */
+#define TIRENV_SPRINGS__T_SNAP 1e-6
+
 /* One constraint row: ga w_i + gb w_j >= h, j = i + 1 for a row between two elements (t in
  * (0, 1): ga, gb the weights at t), t = 0 (ga = 1, gb = 0, j = i) for a row on element i
  * alone (its ray, or a vertex on it). */

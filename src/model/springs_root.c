@@ -33,7 +33,7 @@ enum { max_steps = 12 };
 
 /* A vertex row inside its sector: its t more than this from either element (springs_rows.c's
  * snap), else its row would change kind on the way. */
-static const double t_snap = 1e-6;
+static const double t_snap = TIRENV_SPRINGS__T_SNAP;
 
 /* The working rows as the base left them, and what the root needs of K_FF^-1. */
 typedef struct {

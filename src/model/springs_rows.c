@@ -17,7 +17,7 @@
  * closer than this in tau only the higher is kept: two rows on nearly the same point would
  * make the KKT system nearly singular. The tread there moves by at most this fraction of
  * w_(i+1) - w_i (under 1e-8 m). */
-static const double t_snap = 1e-6;
+static const double t_snap = TIRENV_SPRINGS__T_SNAP;
 
 double tirenv_springs__cc_gamma(double k_r, double k_ir)
 {
