@@ -402,12 +402,6 @@ static double slope_dfz_dz(tirenv_springs *s, const tirenv_profile *prof, size_t
     return sum;
 }
 
-/* CONTACT = 'continuous': the rays give each element's own row, the ground's vertices the
- * rows between elements (springs_contact.c); the hub forces as with rays. Most states have no
- * row between elements active (the tread bows out between its tips, section 4.8): the
- * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
- * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
- * else the QP is solved whole. */
 /* d(rho)/dz of ray i (a finite rho) as tirenv_springs__fan_drho gives it: kept in its memo,
  * else the face's (s->face) where the walk ended on the same one, else computed. */
 static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, size_t i)
@@ -460,6 +454,12 @@ int tirenv_springs__qp_first(const tirenv_springs *s, double z)
     return s->cc.between && fabs(z - s->cc.between_z) <= between_reach * s->par.R0;
 }
 
+/* CONTACT = 'continuous': the rays give each element's own row, the ground's vertices the
+ * rows between elements (springs_contact.c); the hub forces as with rays. Most states have no
+ * row between elements active (the tread bows out between its tips, section 4.8): the
+ * elements' own rows are solved first by section 4.4's LCP, and if every other row holds
+ * there, that is the QP's solution (its KKT conditions hold with those rows' reactions 0);
+ * else the QP is solved whole. */
 static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)

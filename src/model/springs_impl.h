@@ -3,6 +3,7 @@
 #ifndef TIRENV_SPRINGS_IMPL_H
 #define TIRENV_SPRINGS_IMPL_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "tirenv/profile.h"
@@ -303,6 +304,18 @@ double tirenv_springs__cc_gamma(double k_r, double k_ir);
  * section 4.8). */
 void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, double *a,
                                 double *b, double *da_dt, double *db_dt);
+/* A row between elements' own compliance (a + b - 1) c0 (m/N; >= 0, a + b >= 1 but for
+ * round-off) at its weights a and b, above; inline, the same bits wherever the rows are made
+ * or moved in z (springs_rows.c, springs_update.c, springs_root.c). */
+static inline double tirenv_springs__cc_compliance(const tirenv_springs__cc_tire *T, double a,
+                                                   double b)
+{
+    return T->c0 * fmax(a + b - 1, 0);
+}
+
+/* A row's t closer than this to 0 or 1 is taken as the element itself (springs_rows.c's snap);
+ * a row between elements that springs_root.c carries in z must stay inside it. */
+#define TIRENV_SPRINGS__T_SNAP 1e-6
 
 /* One constraint row: ga w_i + gb w_j >= h, j = i + 1 for a row between two elements (t in
  * (0, 1): ga, gb the weights at t), t = 0 (ga = 1, gb = 0, j = i) for a row on element i

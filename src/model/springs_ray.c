@@ -118,11 +118,12 @@ static long first_vertex(const tirenv_profile *p, double x, size_t k, int dir)
 
 /* The ground's height at x as a ray leaving x toward dir meets it: at a wall under x (two
  * vertices at x, k = segment_at(x) its last, first_back = first_vertex(x, -1) the vertex
- * before its first, read only for dir < 0) the wall's end on that side, its first vertex behind and its last ahead;
- * else g, the height under x. A walk anchors its first segment there: with g, the higher end
- * of the wall, a ray leaving a step's foot crossed the line from the wall's top to the next
- * vertex, ground that is not there (over tests/data/profile_good.csv's wall, the rays behind
- * the centre up to 43 mm deeper than at x +- 1e-12 m, F_z 167 N higher). */
+ * before its first, read only for dir < 0) the wall's end on that side, its first vertex
+ * behind and its last ahead; else g, the height under x. A walk anchors its first segment
+ * there: with g, the higher end of the wall, a ray leaving a step's foot crossed the line from
+ * the wall's top to the next vertex, ground that is not there (over
+ * tests/data/profile_good.csv's wall, the rays behind the centre up to 43 mm deeper than at
+ * x +- 1e-12 m, F_z 167 N higher). */
 static double side_height(const tirenv_profile *p, double x, size_t k, long first_back,
                           double g, int dir)
 {

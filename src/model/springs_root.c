@@ -33,7 +33,7 @@ enum { max_steps = 12 };
 
 /* A vertex row inside its sector: its t more than this from either element (springs_rows.c's
  * snap), else its row would change kind on the way. */
-static const double t_snap = 1e-6;
+static const double t_snap = TIRENV_SPRINGS__T_SNAP;
 
 /* The working rows as the base left them, and what the root needs of K_FF^-1. */
 typedef struct {
@@ -65,7 +65,7 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
             return 0;
         double da, db;
         tirenv_springs__cc_weights(T, t, &g[2 * q], &g[2 * q + 1], &da, &db);
-        cmp[q] = T->c0 * fmax(g[2 * q] + g[2 * q + 1] - 1, 0);
+        cmp[q] = tirenv_springs__cc_compliance(T, g[2 * q], g[2 * q + 1]);
         h[q] = T->R0 - sqrt(dx * dx + dzv * dzv);
     }
     for (size_t s = 0; s < ns; ++s) {

@@ -17,7 +17,7 @@
  * closer than this in tau only the higher is kept: two rows on nearly the same point would
  * make the KKT system nearly singular. The tread there moves by at most this fraction of
  * w_(i+1) - w_i (under 1e-8 m). */
-static const double t_snap = 1e-6;
+static const double t_snap = TIRENV_SPRINGS__T_SNAP;
 
 double tirenv_springs__cc_gamma(double k_r, double k_ir)
 {
@@ -790,7 +790,7 @@ static void row_weights(const tirenv_springs__cc_tire *T, tirenv_springs__cc_row
      * 2 a b cos(gamma)) = lambda c0 on an endless free chain: in series with them the row's
      * own (a + b - 1) c0 (>= 0: a + b >= 1) makes the hub's stiffness to a lone point load
      * 1 / c0 at every t, as on an element (section 4.8). */
-    r->cmp = T->c0 * fmax(r->ga + r->gb - 1, 0);
+    r->cmp = tirenv_springs__cc_compliance(T, r->ga, r->gb);
     r->dcmp_dz = r->cmp > 0 ? T->c0 * (da + db) * dt_dz : 0;
 }
 

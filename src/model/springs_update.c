@@ -152,7 +152,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             return 0;
         double da, db;
         tirenv_springs__cc_weights(T, V[k].t, &ga[q], &gb[q], &da, &db);
-        cmp[q] = T->c0 * fmax(ga[q] + gb[q] - 1, 0);
+        cmp[q] = tirenv_springs__cc_compliance(T, ga[q], gb[q]);
         h[q] = V[k].h;
         row_i[q] = R->i;
         lam[q] = pred ? c->pred_lam[q] : c->lambda[r] + dz * c->dlambda[r];

@@ -730,8 +730,9 @@ static void test_update_is_the_solution(void **state)
  * gives (the update from the root's state where its checks hold, else a full one) gives a
  * fresh model's forces (to 1e-9 of F_z, sums over some 360 elements) and tips (1e-13 R0, as
  * test_update_is_the_solution); where it was the update (the working set held), a fresh
- * model's F_z there is G to within the equilibrium's force tolerance (1e-6 N, against some
- * 3e4 N). Where the working set changes on the way (a ray onto another face, a row coming or
+ * model's F_z there is G to within 1e-6 N (against some 3e4 N: the root is taken to 1e-15 R0
+ * in z, and F_z's round-off is some 1e-9 N; the equilibrium's force tolerance, 1e-4 N by
+ * default, is a hundred times looser). Where the working set changes on the way (a ray onto another face, a row coming or
  * going) the root is off, the update refuses it, and Newton goes on from the full
  * evaluation. Seeded random obstacles and roads; most roots taken. */
 static void test_root_is_the_equilibrium(void **state)
