@@ -30,7 +30,7 @@ enum { max_corrections = 2 };
  * ulp of it 1.1e-16 m), against the 1e-12 R0 to which the solve's rows hold. A state within
  * them is the QP's solution to within about 1e-14 R0 in w (K is positive definite and its
  * working rows independent), so F_z within about the hub's stiffness times 1e-14 R0, some
- * 1e-8 N at the bench's load, far below the equilibrium's force tolerance (1e-6 N). */
+ * 1e-8 N at the bench's load, far below the equilibrium's force tolerance (1e-4 N). */
 static const double eq_tol = 1e-14;
 
 /* The vertex row of vertex id among V[0..n) (ascending by id), or SIZE_MAX. */
