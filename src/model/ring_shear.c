@@ -353,30 +353,11 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
 
 static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
 
-/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
- * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
- * the one before it (after it, going back), so a solve's time is that chain's: a row takes
- * the farther rows' products first, and U's unit diagonal leaves a product and a difference
- * from row to row, where a chain of four differences and a division was (docs/models.md 5.6,
- * Counted a seventh time). Inlined with t a
- * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
- * full tail two lanes at a time; the same operations in the same order for every t. Without a
- * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
- * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
-/* One interior row i of the forward substitution (i >= BAND_P), the rows before it a .. d
- * (d the nearest) from registers: z_i into x[i], its tail products taken off y. */
-static inline __attribute__((always_inline)) double fwd_row(const tband *A, double x[],
-                                                            const size_t t, size_t i, double a,
-                                                            double b, double c, double d,
-                                                            v2d *y01, v2d *y23, double y[])
+/* Row i's z_i = v taken off the tail's right-hand side: y01, y23 with the full tail, else y. */
+static inline __attribute__((always_inline)) void tail_fwd(const double *B, const size_t t,
+                                                           size_t i, double v, v2d *y01,
+                                                           v2d *y23, double y[])
 {
-    const double *l = A->L + (BAND_P + 1) * (i - 1), *B = A->B;
-    double v = x[i];
-    v -= l[-3 * (BAND_P + 1) + 4] * a;
-    v -= l[-2 * (BAND_P + 1) + 3] * b;
-    v -= l[-(BAND_P + 1) + 2] * c;
-    v -= l[1] * d;
-    x[i] = v;
     if (t == TAIL) {
         const v2d vx = {v, v};
         *y01 -= v2_load(B + TAIL * i) * vx;
@@ -385,6 +366,42 @@ static inline __attribute__((always_inline)) double fwd_row(const tband *A, doub
         for (size_t k = 0; k < t; ++k)
             y[k] -= B[TAIL * i + k] * v;
     }
+}
+
+/* v less row i's products with the tail's solution (y01, y23 with the full tail, else y), in
+ * order. */
+static inline __attribute__((always_inline)) double tail_bwd(const double *B, const size_t t,
+                                                             size_t i, double v, v2d y01,
+                                                             v2d y23, const double y[])
+{
+    if (t == TAIL) { /* the products two at a time, subtracted in order */
+        const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+        v -= p01[0];
+        v -= p01[1];
+        v -= p23[0];
+        v -= p23[1];
+    } else {
+        for (size_t k = 0; k < t; ++k)
+            v -= B[TAIL * i + k] * y[k];
+    }
+    return v;
+}
+
+/* One interior row i of the forward substitution (i >= BAND_P), the rows before it a .. d
+ * (d the nearest) from registers: z_i into x[i], its tail products taken off y. */
+static inline __attribute__((always_inline)) double fwd_row(const tband *A, double x[],
+                                                            const size_t t, size_t i, double a,
+                                                            double b, double c, double d,
+                                                            v2d *y01, v2d *y23, double y[])
+{
+    const double *l = A->L + (BAND_P + 1) * (i - 1);
+    double v = x[i];
+    v -= l[-3 * (BAND_P + 1) + 4] * a;
+    v -= l[-2 * (BAND_P + 1) + 3] * b;
+    v -= l[-(BAND_P + 1) + 2] * c;
+    v -= l[1] * d;
+    x[i] = v;
+    tail_fwd(A->B, t, i, v, y01, y23, y);
     return v;
 }
 
@@ -396,18 +413,8 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
                                                             double b, double c, double d,
                                                             v2d y01, v2d y23, const double y[])
 {
-    const double *l = A->L + (BAND_P + 1) * i, *B = A->B;
-    double v = x[i] * l[0];
-    if (t == TAIL) { /* the products two at a time, subtracted in order */
-        const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
-        v -= p01[0];
-        v -= p01[1];
-        v -= p23[0];
-        v -= p23[1];
-    } else {
-        for (size_t k = 0; k < t; ++k)
-            v -= B[TAIL * i + k] * y[k];
-    }
+    const double *l = A->L + (BAND_P + 1) * i;
+    double v = tail_bwd(A->B, t, i, x[i] * l[0], y01, y23, y);
     v -= l[4] * d;
     v -= l[3] * c;
     v -= l[2] * b;
@@ -416,6 +423,16 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
     return v;
 }
 
+/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
+ * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
+ * the one before it (after it, going back), so a solve's time is that chain's: a row takes
+ * the farther rows' products first, and U's unit diagonal leaves a product and a difference
+ * from row to row, where a chain of four differences and a division was (docs/models.md 5.6,
+ * Counted a seventh time). Inlined with t a
+ * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
+ * full tail two lanes at a time; the same operations in the same order for every t. Without a
+ * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
+ * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t, const size_t i0,
                                                                const int forward_only)
@@ -435,14 +452,7 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         for (size_t k = i; k >= 1; --k)
             v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
         x[i] = v;
-        if (t == TAIL) {
-            const v2d vx = {v, v};
-            y01 -= v2_load(B + TAIL * i) * vx;
-            y23 -= v2_load(B + TAIL * i + 2) * vx;
-        } else {
-            for (size_t a = 0; a < t; ++a)
-                y[a] -= B[TAIL * i + a] * v;
-        }
+        tail_fwd(B, t, i, v, &y01, &y23, y);
     }
     if (i < m) {
         /* The last BAND_P rows' unknowns in registers, not read back from x: a store and its
@@ -474,17 +484,7 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     i = m;
     for (; i > 0 && i - 1 + BAND_P >= m; --i) { /* the last BAND_P rows */
         const size_t r = i - 1;
-        double v = x[r] * L[(BAND_P + 1) * r];
-        if (t == TAIL) {
-            const v2d p01 = v2_load(B + TAIL * r) * y01, p23 = v2_load(B + TAIL * r + 2) * y23;
-            v -= p01[0];
-            v -= p01[1];
-            v -= p23[0];
-            v -= p23[1];
-        } else {
-            for (size_t a = 0; a < t; ++a)
-                v -= B[TAIL * r + a] * y[a];
-        }
+        double v = tail_bwd(B, t, r, x[r] * L[(BAND_P + 1) * r], y01, y23, y);
         for (size_t k = m - 1 - r; k >= 1; --k)
             v -= L[(BAND_P + 1) * r + k] * x[r + k];
         x[r] = v;
