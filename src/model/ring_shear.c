@@ -257,13 +257,28 @@ enum {
     CK_LEN = CK_ACC + (BAND_P + 1 + TAIL) * BAND_P
 };
 
+/* Before interior column i of A: its checkpoint's state into ck's slot for it, where i is a
+ * multiple of CKS (ck NULL: none kept). */
 static inline void ck_save(double *ck, const tband *A, size_t i, double t00, v2d t10, v2d t20,
                            double t22, v2d t30, v2d t32)
 {
+    if (!ck || i % CKS != 0)
+        return;
+    ck += CK_LEN * (i / CKS);
     ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
     ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
     memcpy(ck + CK_ACC, A->L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
     memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, A->B + TAIL * i, TAIL * BAND_P * sizeof *ck);
+}
+
+/* The checkpoint of column q (a multiple of CKS) back into A's columns q .. q + BAND_P - 1;
+ * returns its tail block's accumulators (band_factor_from's acc0). */
+static const double *ck_restore(const double *ck, tband *A, size_t q)
+{
+    ck += CK_LEN * (q / CKS);
+    memcpy(A->L + (BAND_P + 1) * q, ck + CK_ACC, (BAND_P + 1) * BAND_P * sizeof *ck);
+    memcpy(A->B + TAIL * q, ck + CK_ACC + (BAND_P + 1) * BAND_P, TAIL * BAND_P * sizeof *ck);
+    return ck;
 }
 
 /* U D U^T by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
@@ -299,18 +314,15 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
-            if (ck && i % CKS == 0)
-                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
             broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
-            if (ck && i % CKS == 0)
-                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
             broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
-            if (ck && i % CKS == 0)
-                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
             broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
@@ -1436,12 +1448,10 @@ static int band_refactor(tirenv_ring_tread *T)
         /* Columns q .. q + BAND_P - 1 as they stood before column q was factorised (their
          * entries the same: the first change is past them), the tail's last BAND_P columns
          * from the system. */
-        const double *ck = T->ck + CK_LEN * (q / CKS);
-        memcpy(F->L + W * q, ck + CK_ACC, W * BAND_P * sizeof *F->L);
-        memcpy(F->B + TAIL * q, ck + CK_ACC + W * BAND_P, TAIL * BAND_P * sizeof *F->B);
+        const double *acc = ck_restore(T->ck, F, q);
         memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
                TAIL * BAND_P * sizeof *F->B);
-        bad = band_factor_from(F, 1, q, ck, T->ck, S->L);
+        bad = band_factor_from(F, 1, q, acc, T->ck, S->L);
     }
     const tband sw = *S;
     *S = *P, *P = sw;
