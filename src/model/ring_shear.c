@@ -76,6 +76,14 @@ static inline v2d v2_load(const double *p)
 
 static inline void v2_store(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
+/* What a deferred dF_z/dz needs of its evaluation (tirenv_ring__shear_slope): the nodes a .. b
+ * and points k0 .. k1 solved, whether a sub-window (sub), and the centre (m). */
+typedef struct {
+    size_t a, b, k0, k1;
+    int sub;
+    double z, x_c;
+} deferred_window;
+
 struct tirenv_ring_tread {
     size_t M;
     double s[3];        /* the belt's stencil, N/m */
@@ -139,9 +147,7 @@ struct tirenv_ring_tread {
      * the final states, until the next evaluation. */
     int defer, deferred, fin_factored;
     const double (*fin_Q)[NB];
-    size_t dfr_a, dfr_b, dfr_k0, dfr_k1;
-    int dfr_sub;
-    double dfr_z, dfr_xc;
+    deferred_window dfr;
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -2163,8 +2169,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         slope_out(r, a, b, sub, z, x_c);
     T->deferred = !dfz_dz && T->defer;
     if (T->deferred)
-        T->dfr_a = a, T->dfr_b = b, T->dfr_k0 = k0, T->dfr_k1 = k1, T->dfr_sub = sub,
-        T->dfr_z = z, T->dfr_xc = x_c;
+        T->dfr = (deferred_window){a, b, k0, k1, sub, z, x_c};
     return 0;
 }
 
@@ -2193,7 +2198,8 @@ int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz)
         return -1;
     T->deferred = 0;
     window_save sv;
-    enter(r, &sv, T->dfr_a, T->dfr_b, T->dfr_k0, T->dfr_k1);
+    const deferred_window *w = &T->dfr;
+    enter(r, &sv, w->a, w->b, w->k0, w->k1);
     /* The final states' factor where the last Newton step's was not (its right-hand side,
      * not wanted, into the Newton's spare vector: T->xt holds dx/dz's). */
     int bad = !T->fin_factored && factor_cb(r, T->fin_Q, T->xn);
@@ -2201,7 +2207,7 @@ int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz)
         *dfz_dz = slope_in(r, T->x, T->xt);
     leave(r, &sv);
     if (!bad)
-        slope_out(r, T->dfr_a, T->dfr_b, T->dfr_sub, T->dfr_z, T->dfr_xc);
+        slope_out(r, w->a, w->b, w->sub, w->z, w->x_c);
     return bad;
 }
 
