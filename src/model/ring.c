@@ -299,6 +299,44 @@ static int within_bound(double x, double z, double X, double Z, const double tan
     return dz > 0 && fabs(dx) <= tan_ang[dx > 0] * dz;
 }
 
+/* Segment k of ground_angles (-1: the extension before X[0]; n - 1: the one after X[n-1]):
+ * raises ang (tangents) by its points within reach, unless both its ends lie within them. */
+static inline void segment_bound(const tirenv_profile *p, double x, double z, double reach,
+                                 long k, double ang[2])
+{
+    const double *X = p->x, *Z = p->z;
+    const size_t n = p->n;
+    double x1, z1, x2, z2;
+    if (k < 0) {
+        x1 = x - reach - 1, z1 = Z[0], x2 = X[0], z2 = Z[0];
+    } else if (k + 1 == (long)n) {
+        x1 = X[n - 1], z1 = Z[n - 1], x2 = fmax(x + reach + 1, X[n - 1]), z2 = Z[n - 1];
+    } else {
+        x1 = X[k], z1 = Z[k], x2 = X[k + 1], z2 = Z[k + 1];
+    }
+    if (x1 > x + reach || x2 < x - reach)
+        return;
+    if (within_bound(x, z, x1, z1, ang) && within_bound(x, z, x2, z2, ang))
+        return;
+    /* |P1 + t (P2 - P1) - C|^2 = reach^2 for t in [0, 1]. */
+    const double ex = x2 - x1, ez = z2 - z1, fx = x1 - x, fz = z1 - z;
+    const double a = ex * ex + ez * ez, b = fx * ex + fz * ez,
+                 c = fx * fx + fz * fz - reach * reach;
+    if (!(a > 0)) {
+        if (c < 0)
+            raise_bound(x, z, x1, z1, ang);
+        return;
+    }
+    const double disc = b * b - a * c;
+    if (!(disc >= 0))
+        return;
+    const double sq = sqrt(disc), t1 = fmax(0, (-b - sq) / a), t2 = fmin(1, (-b + sq) / a);
+    if (!(t1 <= t2))
+        return;
+    raise_bound(x, z, x1 + t1 * ex, z1 + t1 * ez, ang);
+    raise_bound(x, z, x1 + t2 * ex, z1 + t2 * ez, ang);
+}
+
 /* The angles from the vertical, backward and forward (rad), beyond which no ray meets ground
  * within reach of the centre: along a straight segment the angle of its point is monotonic, so
  * the extremes of the ground inside the disc are vertices inside it or the crossings of
@@ -309,50 +347,21 @@ static int within_bound(double x, double z, double X, double Z, const double tan
 static void ground_angles(const tirenv_profile *p, double x, double z, double reach,
                           double ang[2])
 {
-    const double *X = p->x, *Z = p->z, r2 = reach * reach;
+    const double *X = p->x;
     const size_t n = p->n;
     ang[0] = ang[1] = 0;
-    const size_t k0 = x - reach < X[0] ? 0 : tirenv_profile__segment_at(p, x - reach);
-    /* Segments k = -1 (the extension before X[0]) .. n - 1 (the one after X[n-1]): k_a to k_b
-     * the ones that reach from x - reach to x + reach, k_m the first that ends beyond x. */
-    const long k_a = x - reach < X[0] ? -1 : (long)k0;
+    /* Segments k = -1 .. n - 1 (segment_bound): k_a to k_b the ones that reach from x - reach
+     * to x + reach, k_m the first that ends beyond x. */
+    const long k_a = x - reach < X[0] ? -1 : (long)tirenv_profile__segment_at(p, x - reach);
     long k_b = k_a, k_m = k_a;
     while (k_b + 1 < (long)n && X[k_b + 1] <= x + reach)
         ++k_b;
     while (k_m < k_b && k_m + 1 < (long)n && X[k_m + 1] <= x)
         ++k_m;
-    /* Backward, k_a up to k_m - 1; then forward, k_b down to k_m. */
-    for (long i = 0, k; i <= k_b - k_a; ++i) {
-        k = k_a + i < k_m ? k_a + i : k_b - (i - (k_m - k_a));
-        double x1, z1, x2, z2;
-        if (k < 0) {
-            x1 = x - reach - 1, z1 = Z[0], x2 = X[0], z2 = Z[0];
-        } else if (k + 1 == (long)n) {
-            x1 = X[n - 1], z1 = Z[n - 1], x2 = fmax(x + reach + 1, X[n - 1]), z2 = Z[n - 1];
-        } else {
-            x1 = X[k], z1 = Z[k], x2 = X[k + 1], z2 = Z[k + 1];
-        }
-        if (x1 > x + reach || x2 < x - reach)
-            continue;
-        if (within_bound(x, z, x1, z1, ang) && within_bound(x, z, x2, z2, ang))
-            continue;
-        /* |P1 + t (P2 - P1) - C|^2 = reach^2 for t in [0, 1]. */
-        const double ex = x2 - x1, ez = z2 - z1, fx = x1 - x, fz = z1 - z;
-        const double a = ex * ex + ez * ez, b = fx * ex + fz * ez, c = fx * fx + fz * fz - r2;
-        if (!(a > 0)) {
-            if (c < 0)
-                raise_bound(x, z, x1, z1, ang);
-            continue;
-        }
-        const double disc = b * b - a * c;
-        if (!(disc >= 0))
-            continue;
-        const double sq = sqrt(disc), t1 = fmax(0, (-b - sq) / a), t2 = fmin(1, (-b + sq) / a);
-        if (!(t1 <= t2))
-            continue;
-        raise_bound(x, z, x1 + t1 * ex, z1 + t1 * ez, ang);
-        raise_bound(x, z, x1 + t2 * ex, z1 + t2 * ez, ang);
-    }
+    for (long k = k_a; k < k_m; ++k) /* backward side, from its outer end */
+        segment_bound(p, x, z, reach, k, ang);
+    for (long k = k_b; k >= k_m; --k) /* forward side, from its outer end */
+        segment_bound(p, x, z, reach, k, ang);
     ang[0] = atan(ang[0]); /* pi/2 from INFINITY */
     ang[1] = atan(ang[1]);
 }

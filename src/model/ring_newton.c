@@ -193,7 +193,7 @@ int tirenv_ring__newton_error(const tirenv_ring *r, int st, size_t n, const char
 {
     if (st == TIRENV_RING_NEWTON_BREAKDOWN)
         return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the Cholesky factorisation of the %zu-node banded %s system broke "
+                            "the factorisation of the %zu-node banded %s system broke "
                             "down (not numerically positive definite)", n, system);
     return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
                         "the %s contact of %zu points on %zu nodes did not settle in %d Newton "

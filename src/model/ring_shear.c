@@ -76,6 +76,14 @@ static inline v2d v2_load(const double *p)
 
 static inline void v2_store(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
+/* What a deferred dF_z/dz needs of its evaluation (tirenv_ring__shear_slope): the nodes a .. b
+ * and points k0 .. k1 solved, whether a sub-window (sub), and the centre (m). */
+typedef struct {
+    size_t a, b, k0, k1;
+    int sub;
+    double z, x_c;
+} deferred_window;
+
 struct tirenv_ring_tread {
     size_t M;
     double s[3];        /* the belt's stencil, N/m */
@@ -139,9 +147,7 @@ struct tirenv_ring_tread {
      * the final states, until the next evaluation. */
     int defer, deferred, fin_factored;
     const double (*fin_Q)[NB];
-    size_t dfr_a, dfr_b, dfr_k0, dfr_k1;
-    int dfr_sub;
-    double dfr_z, dfr_xc;
+    deferred_window dfr;
 };
 
 static void band_reset(tband *A, size_t N, size_t t)
@@ -257,13 +263,28 @@ enum {
     CK_LEN = CK_ACC + (BAND_P + 1 + TAIL) * BAND_P
 };
 
+/* Before interior column i of A: its checkpoint's state into ck's slot for it, where i is a
+ * multiple of CKS (ck NULL: none kept). */
 static inline void ck_save(double *ck, const tband *A, size_t i, double t00, v2d t10, v2d t20,
                            double t22, v2d t30, v2d t32)
 {
+    if (!ck || i % CKS != 0)
+        return;
+    ck += CK_LEN * (i / CKS);
     ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
     ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
     memcpy(ck + CK_ACC, A->L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
     memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, A->B + TAIL * i, TAIL * BAND_P * sizeof *ck);
+}
+
+/* The checkpoint of column q (a multiple of CKS) back into A's columns q .. q + BAND_P - 1;
+ * returns its tail block's accumulators (band_factor_from's acc0). */
+static const double *ck_restore(const double *ck, tband *A, size_t q)
+{
+    ck += CK_LEN * (q / CKS);
+    memcpy(A->L + (BAND_P + 1) * q, ck + CK_ACC, (BAND_P + 1) * BAND_P * sizeof *ck);
+    memcpy(A->B + TAIL * q, ck + CK_ACC + (BAND_P + 1) * BAND_P, TAIL * BAND_P * sizeof *ck);
+    return ck;
 }
 
 /* U D U^T by columns, right-looking: O(N (BAND_P + t)^2). Nonzero if not positive definite.
@@ -299,18 +320,15 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
-            if (ck && i % CKS == 0)
-                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
             broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
-            if (ck && i % CKS == 0)
-                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
             broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
-            if (ck && i % CKS == 0)
-                ck_save(ck + CK_LEN * (i / CKS), A, i, t00, t10, t20, t22, t30, t32);
+            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
             broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
@@ -353,30 +371,11 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
 
 static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
 
-/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
- * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
- * the one before it (after it, going back), so a solve's time is that chain's: a row takes
- * the farther rows' products first, and U's unit diagonal leaves a product and a difference
- * from row to row, where a chain of four differences and a division was (docs/models.md 5.6,
- * Counted a seventh time). Inlined with t a
- * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
- * full tail two lanes at a time; the same operations in the same order for every t. Without a
- * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
- * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
-/* One interior row i of the forward substitution (i >= BAND_P), the rows before it a .. d
- * (d the nearest) from registers: z_i into x[i], its tail products taken off y. */
-static inline __attribute__((always_inline)) double fwd_row(const tband *A, double x[],
-                                                            const size_t t, size_t i, double a,
-                                                            double b, double c, double d,
-                                                            v2d *y01, v2d *y23, double y[])
+/* Row i's z_i = v taken off the tail's right-hand side: y01, y23 with the full tail, else y. */
+static inline __attribute__((always_inline)) void tail_fwd(const double *B, const size_t t,
+                                                           size_t i, double v, v2d *y01,
+                                                           v2d *y23, double y[])
 {
-    const double *l = A->L + (BAND_P + 1) * (i - 1), *B = A->B;
-    double v = x[i];
-    v -= l[-3 * (BAND_P + 1) + 4] * a;
-    v -= l[-2 * (BAND_P + 1) + 3] * b;
-    v -= l[-(BAND_P + 1) + 2] * c;
-    v -= l[1] * d;
-    x[i] = v;
     if (t == TAIL) {
         const v2d vx = {v, v};
         *y01 -= v2_load(B + TAIL * i) * vx;
@@ -385,6 +384,42 @@ static inline __attribute__((always_inline)) double fwd_row(const tband *A, doub
         for (size_t k = 0; k < t; ++k)
             y[k] -= B[TAIL * i + k] * v;
     }
+}
+
+/* v less row i's products with the tail's solution (y01, y23 with the full tail, else y), in
+ * order. */
+static inline __attribute__((always_inline)) double tail_bwd(const double *B, const size_t t,
+                                                             size_t i, double v, v2d y01,
+                                                             v2d y23, const double y[])
+{
+    if (t == TAIL) { /* the products two at a time, subtracted in order */
+        const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
+        v -= p01[0];
+        v -= p01[1];
+        v -= p23[0];
+        v -= p23[1];
+    } else {
+        for (size_t k = 0; k < t; ++k)
+            v -= B[TAIL * i + k] * y[k];
+    }
+    return v;
+}
+
+/* One interior row i of the forward substitution (i >= BAND_P), the rows before it a .. d
+ * (d the nearest) from registers: z_i into x[i], its tail products taken off y. */
+static inline __attribute__((always_inline)) double fwd_row(const tband *A, double x[],
+                                                            const size_t t, size_t i, double a,
+                                                            double b, double c, double d,
+                                                            v2d *y01, v2d *y23, double y[])
+{
+    const double *l = A->L + (BAND_P + 1) * (i - 1);
+    double v = x[i];
+    v -= l[-3 * (BAND_P + 1) + 4] * a;
+    v -= l[-2 * (BAND_P + 1) + 3] * b;
+    v -= l[-(BAND_P + 1) + 2] * c;
+    v -= l[1] * d;
+    x[i] = v;
+    tail_fwd(A->B, t, i, v, y01, y23, y);
     return v;
 }
 
@@ -396,18 +431,8 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
                                                             double b, double c, double d,
                                                             v2d y01, v2d y23, const double y[])
 {
-    const double *l = A->L + (BAND_P + 1) * i, *B = A->B;
-    double v = x[i] * l[0];
-    if (t == TAIL) { /* the products two at a time, subtracted in order */
-        const v2d p01 = v2_load(B + TAIL * i) * y01, p23 = v2_load(B + TAIL * i + 2) * y23;
-        v -= p01[0];
-        v -= p01[1];
-        v -= p23[0];
-        v -= p23[1];
-    } else {
-        for (size_t k = 0; k < t; ++k)
-            v -= B[TAIL * i + k] * y[k];
-    }
+    const double *l = A->L + (BAND_P + 1) * i;
+    double v = tail_bwd(A->B, t, i, x[i] * l[0], y01, y23, y);
     v -= l[4] * d;
     v -= l[3] * c;
     v -= l[2] * b;
@@ -416,6 +441,16 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
     return v;
 }
 
+/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
+ * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
+ * the one before it (after it, going back), so a solve's time is that chain's: a row takes
+ * the farther rows' products first, and U's unit diagonal leaves a product and a difference
+ * from row to row, where a chain of four differences and a division was (docs/models.md 5.6,
+ * Counted a seventh time). Inlined with t a
+ * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
+ * full tail two lanes at a time; the same operations in the same order for every t. Without a
+ * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
+ * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t, const size_t i0,
                                                                const int forward_only)
@@ -435,14 +470,7 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
         for (size_t k = i; k >= 1; --k)
             v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
         x[i] = v;
-        if (t == TAIL) {
-            const v2d vx = {v, v};
-            y01 -= v2_load(B + TAIL * i) * vx;
-            y23 -= v2_load(B + TAIL * i + 2) * vx;
-        } else {
-            for (size_t a = 0; a < t; ++a)
-                y[a] -= B[TAIL * i + a] * v;
-        }
+        tail_fwd(B, t, i, v, &y01, &y23, y);
     }
     if (i < m) {
         /* The last BAND_P rows' unknowns in registers, not read back from x: a store and its
@@ -474,17 +502,7 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     i = m;
     for (; i > 0 && i - 1 + BAND_P >= m; --i) { /* the last BAND_P rows */
         const size_t r = i - 1;
-        double v = x[r] * L[(BAND_P + 1) * r];
-        if (t == TAIL) {
-            const v2d p01 = v2_load(B + TAIL * r) * y01, p23 = v2_load(B + TAIL * r + 2) * y23;
-            v -= p01[0];
-            v -= p01[1];
-            v -= p23[0];
-            v -= p23[1];
-        } else {
-            for (size_t a = 0; a < t; ++a)
-                v -= B[TAIL * r + a] * y[a];
-        }
+        double v = tail_bwd(B, t, r, x[r] * L[(BAND_P + 1) * r], y01, y23, y);
         for (size_t k = m - 1 - r; k >= 1; --k)
             v -= L[(BAND_P + 1) * r + k] * x[r + k];
         x[r] = v;
@@ -1436,12 +1454,10 @@ static int band_refactor(tirenv_ring_tread *T)
         /* Columns q .. q + BAND_P - 1 as they stood before column q was factorised (their
          * entries the same: the first change is past them), the tail's last BAND_P columns
          * from the system. */
-        const double *ck = T->ck + CK_LEN * (q / CKS);
-        memcpy(F->L + W * q, ck + CK_ACC, W * BAND_P * sizeof *F->L);
-        memcpy(F->B + TAIL * q, ck + CK_ACC + W * BAND_P, TAIL * BAND_P * sizeof *F->B);
+        const double *acc = ck_restore(T->ck, F, q);
         memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
                TAIL * BAND_P * sizeof *F->B);
-        bad = band_factor_from(F, 1, q, ck, T->ck, S->L);
+        bad = band_factor_from(F, 1, q, acc, T->ck, S->L);
     }
     const tband sw = *S;
     *S = *P, *P = sw;
@@ -2153,8 +2169,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         slope_out(r, a, b, sub, z, x_c);
     T->deferred = !dfz_dz && T->defer;
     if (T->deferred)
-        T->dfr_a = a, T->dfr_b = b, T->dfr_k0 = k0, T->dfr_k1 = k1, T->dfr_sub = sub,
-        T->dfr_z = z, T->dfr_xc = x_c;
+        T->dfr = (deferred_window){a, b, k0, k1, sub, z, x_c};
     return 0;
 }
 
@@ -2183,7 +2198,8 @@ int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz)
         return -1;
     T->deferred = 0;
     window_save sv;
-    enter(r, &sv, T->dfr_a, T->dfr_b, T->dfr_k0, T->dfr_k1);
+    const deferred_window *w = &T->dfr;
+    enter(r, &sv, w->a, w->b, w->k0, w->k1);
     /* The final states' factor where the last Newton step's was not (its right-hand side,
      * not wanted, into the Newton's spare vector: T->xt holds dx/dz's). */
     int bad = !T->fin_factored && factor_cb(r, T->fin_Q, T->xn);
@@ -2191,7 +2207,7 @@ int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz)
         *dfz_dz = slope_in(r, T->x, T->xt);
     leave(r, &sv);
     if (!bad)
-        slope_out(r, T->dfr_a, T->dfr_b, T->dfr_sub, T->dfr_z, T->dfr_xc);
+        slope_out(r, w->a, w->b, w->sub, w->z, w->x_c);
     return bad;
 }
 
