@@ -177,83 +177,106 @@ static inline __attribute__((always_inline)) int first_line(const tirenv_profile
     return 1;
 }
 
-/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and, where
+/* What rho along a ray to the line L takes that does not depend on the ray (L's run, from the
+ * centre (x, z)): computed once for the pieces of a run on one line, the same operations on
+ * the same operands as for each ray, so the same bits. */
+typedef struct {
+    double dX, dZ; /* L[2] - L[0], L[3] - L[1], m */
+    double num;    /* (z - L[1]) dX - (x - L[0]) dZ, m^2 */
+} line_k;
+
+static inline void line_of(const double L[4], double x, double z, line_k *k)
+{
+    const double dX = L[2] - L[0], dZ = L[3] - L[1];
+    k->dX = dX;
+    k->dZ = dZ;
+    k->num = (z - L[1]) * dX - (x - L[0]) * dZ;
+}
+
+/* rho along the ray at (s, c) (normalised) to the line k, d(rho)/dz along that ray and, where
  * the ray's angle moves with z (moves: a vertex's cut), d(rho)/dphi at that z (else 0: a node's
  * ray, whose d(d)/dz along the cut adds drho_dphi * 0): from (x + rho s - X1) dZ = (z - rho c -
  * Z1) dX. NAN if the line faces away (never for the line a ray of the piece meets first). */
-static double rho_on(const double L[4], double x, double z, double s, double c, int moves,
-                     double *drho, double *drho_dphi)
+static inline double rho_on(const line_k *k, double s, double c, int moves, double *drho,
+                            double *drho_dphi)
 {
-    const double dX = L[2] - L[0], dZ = L[3] - L[1], den = s * dZ + c * dX;
+    const double dX = k->dX, dZ = k->dZ, den = s * dZ + c * dX;
     if (!(den > 0)) {
         *drho = *drho_dphi = 0;
         return NAN;
     }
     *drho = dX / den;
-    const double rho = ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
+    const double rho = k->num / den;
     *drho_dphi = moves ? -rho * (c * dZ - s * dX) / den : 0;
     return rho;
 }
 
 /* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
- * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
- * k_t (with lugs each its own) and its interval added to wl. */
+ * its second) on the line lk (NULL: the centre inside the ground, rho = 0), marked out of
+ * reach (d = -INFINITY) or, within it, given the tread stiffness k_t (with lugs each its own)
+ * and its interval added to wl. Every operand is read before the first store: a point's
+ * doubles may alias the piece's and the ring's, which the stores would make reloads. */
 static inline __attribute__((always_inline)) void
-piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x, double z,
-            int inside, double k_t, int lugs, size_t wl[2], double omega, double th,
+piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x,
+            const line_k *lk, double k_t, int lugs, size_t wl[2], double omega, double th,
             tirenv_ring_point *q)
 {
     const size_t j = c->j;
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
                  dphi = e ? c->db : c->da;
+    const double R0 = r->R0, t_r = r->par.t_r;
+    double s;
+    if (e == 1 && phi == r->theta[j + 1]) {
+        s = 1;
+    } else if (e == 0 && phi == th) {
+        s = 0;
+    } else {
+        s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
+        s = s > s_node ? (s < 1 ? s : 1) : 0;
+    }
     double drho = 0, drho_dphi = 0, rho = 0;
-    if (!inside)
-        rho = rho_on(c->L, x, z, sn, cs, dphi != 0, &drho, &drho_dphi);
-    q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+    if (lk)
+        rho = rho_on(lk, sn, cs, dphi != 0, &drho, &drho_dphi);
+    const int fin = isfinite(rho);
+    const double d = fin ? R0 - rho : -INFINITY;
     q->dd = -drho;
     q->ddt = -(drho + drho_dphi * dphi);
-    q->X = x + (isfinite(rho) ? rho : 0) * sn;
+    q->X = x + (fin ? rho : 0) * sn;
     q->sn = sn;
     q->cs = cs;
     q->phi = phi;
     q->omega = omega;
     q->j = j;
     q->ends = e ? 2 : 1;
-    if (e == 1 && c->pb == r->theta[j + 1]) {
-        q->s = 1;
-    } else if (e == 0 && c->pa == th) {
-        q->s = 0;
-    } else {
-        const double s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
-        q->s = s > s_node ? (s < 1 ? s : 1) : 0;
-    }
+    q->s = s;
     q->dphi = dphi;
     /* Out of reach, or within it (see the top of tirenv_ring__sample). */
-    if (!(q->d > -r->par.t_r)) {
+    if (!(d > -t_r)) {
         q->d = -INFINITY;
         return;
     }
-    wl[0] = q->j < wl[0] ? q->j : wl[0];
-    wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
-    q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
+    q->d = d;
+    wl[0] = j < wl[0] ? j : wl[0];
+    wl[1] = j + 1 > wl[1] ? j + 1 : wl[1];
+    q->k_t = lugs ? tirenv_ring__tread_kappa(r, phi, x) / (r->R * r->dth) : k_t;
 }
 
-/* The piece c's points into q[0], q[1]; returns how many it wrote. prev_L: the line of the
- * piece whose points were written last, q[-1] its second, if that piece ends where this one
- * begins (else NULL). Where c's first cut and the line are that piece's (c->contig: the cut
- * is its second; else the same cut's bits), c's first point would be the same ray as q[-1],
- * the same operations on the same operands (out of reach both, or within it both): the two
- * are one point, q[-1], weighted by both pieces' halves (the trapezoid rule's two terms of
- * one node on a flat stretch, summed before they are used), which ends the one piece and
- * begins the next; c's interval still counts in the window as its point's did. Only c's
- * second point is written then. */
-static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
-                           const double prev_L[4], double x, double z, int inside, double k_t,
-                           int lugs, size_t wl[2], tirenv_ring_point *q)
+/* The piece c's points into q[0], q[1]; returns how many it wrote. same: the piece whose
+ * points were written last, q[-1] its second, ends where this one begins, on the same line
+ * (its bits). Where c's first cut is that piece's too (c->contig: the cut is its second; else
+ * the same cut's bits), c's first point would be the same ray as q[-1], the same operations on
+ * the same operands (out of reach both, or within it both): the two are one point, q[-1],
+ * weighted by both pieces' halves (the trapezoid rule's two terms of one node on a flat
+ * stretch, summed before they are used), which ends the one piece and begins the next; c's
+ * interval still counts in the window as its point's did. Only c's second point is written
+ * then. */
+static inline __attribute__((always_inline)) size_t
+piece_points(const tirenv_ring *r, const tirenv_ring_piece *c, int same, double x,
+             const line_k *lk, double k_t, int lugs, size_t wl[2], tirenv_ring_point *q)
 {
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
     tirenv_ring_point *const qp = q - 1;
-    if (prev_L && !r->apart && tirenv_ring__same_bits(c->L, prev_L, 4) &&
+    if (same && !r->apart &&
         (c->contig ||
          (tirenv_ring__same_bits(&qp->phi, &c->pa, 1) &&
           tirenv_ring__same_bits(&qp->sn, &c->sa, 1) &&
@@ -263,11 +286,11 @@ static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
         qp->ends = 3;
         if (qp->d != -INFINITY)
             wl[1] = c->j + 1 > wl[1] ? c->j + 1 : wl[1];
-        piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q);
+        piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q);
         return 1;
     }
-    piece_point(r, c, 0, x, z, inside, k_t, lugs, wl, omega, th, q);
-    piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
+    piece_point(r, c, 0, x, lk, k_t, lugs, wl, omega, th, q);
+    piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q + 1);
     return 2;
 }
 
@@ -359,8 +382,25 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         fresh && !reserve((void **)&r->pc_vk, &r->cap_pc, 2 * nv, sizeof *r->pc_vk);
     if (fresh)
         r->pc_vj = r->pc_vk ? r->pc_vk + nv : NULL;
+    const double *const th = r->theta, *const sn = r->sin_t, *const cs = r->cos_t;
     for (size_t j = ja; fresh && j < jb; ++j) {
-        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j], 0, 0};
+        const double pa = th[j], sa = sn[j], ca = cs[j], pb = th[j + 1], sb = sn[j + 1],
+                     cb = cs[j + 1];
+        if (!(iv < nv && v[iv].phi < pb) && pb > pa) {
+            /* No vertex in the interval: its one piece, node to node (as below, written out:
+             * the loop's cut records cost more than the piece's stores). */
+            tirenv_ring_piece *c = &r->lines[n_lines];
+            c->pa = pa, c->sa = sa, c->ca = ca, c->pb = pb, c->sb = sb, c->cb = cb;
+            c->j = j, c->contig = contig, c->da = 0, c->db = 0;
+            if (sa + sb < 0) {
+                ordered &= n_back == n_lines;
+                ++n_back;
+            }
+            ++n_lines;
+            contig = 1;
+            continue;
+        }
+        cut prev = {pa, sa, ca, 0, 0};
         for (;;) {
             cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1], 0, 0};
             const int is_vertex = iv < nv && v[iv].phi < next.phi;
@@ -399,13 +439,18 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     long cur_b = cur_f - 1;
     while (cur_b >= 0 && X[cur_b] >= x)
         --cur_b;
-    if (ordered) { /* the backward rays' pieces first, outward, then the forward ones' */
-        for (size_t t = 0; t < n_lines; ++t) {
-            const int back = t < n_back;
-            tirenv_ring_piece *c = &r->lines[back ? n_back - 1 - t : t];
-            c->hit = inside || first_line(p, x, z, c->sa + c->sb, c->ca + c->cb, reach,
-                                          back ? &cur_b : &cur_f, c->L);
-        }
+    if (ordered && inside) {
+        for (size_t t = 0; t < n_lines; ++t)
+            r->lines[t].hit = 1;
+    } else if (ordered) { /* the backward rays' pieces first, outward, then the forward ones' */
+        tirenv_ring_piece *const c = r->lines;
+        long cb = cur_b, cf = cur_f; /* in registers: the stores to L do not reach them */
+        for (size_t t = n_back; t-- > 0;)
+            c[t].hit = first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cb,
+                                  c[t].L);
+        for (size_t t = n_back; t < n_lines; ++t)
+            c[t].hit = first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cf,
+                                  c[t].L);
     } else {
         for (size_t side = 0; side < 2; ++side) /* backward rays first, then forward */
             for (size_t i = 0; i < n_lines; ++i) {
@@ -418,15 +463,20 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             }
     }
     size_t n_pts = 0;
+    line_k lk = {0, 0, 0};
     for (size_t i = 0; i < n_lines; ++i) {
         const tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
         /* The points written last are c[-1]'s. With the centre inside the ground no piece
          * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
-         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives). */
-        const int after = !inside && i > 0 && c[-1].hit;
-        n_pts += piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
+         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives).
+         * A run of pieces on one line shares its constants. */
+        const int same =
+            !inside && i > 0 && c[-1].hit && tirenv_ring__same_bits(c->L, c[-1].L, 4);
+        if (!inside && !same)
+            line_of(c->L, x, z, &lk);
+        n_pts += piece_points(r, c, same, x, inside ? NULL : &lk, k_t, lugs, wl,
                               r->pts + n_pts);
     }
     r->n_pts = n_pts;
