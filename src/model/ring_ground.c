@@ -313,6 +313,210 @@ static int same_pieces(const tirenv_ring *r, double x, size_t ja, size_t jb, con
     return 1;
 }
 
+/* The window's far stretches (docs/models.md 5.3, Counted a ninth time). Of the window's node
+ * intervals, those more than SKIP_NEAR nodes beyond the last solve's sub-window and SKIP_EDGE
+ * inside the sampled range's ends, whose ground lies, by a bound, below the last evaluation's
+ * tread surface by SKIP_MARGIN, are not sampled: their points are free at the answer as the
+ * shear-coupled tread's solve checks (free_clear), which checks them by the bound instead
+ * (tirenv_ring__gaps_clear), and samples them after all where the bound does not certify them
+ * (tirenv_ring__sample_whole). The edges stay sampled so that the window (the nodes whose
+ * intervals hold ground within reach) is the whole sampling's. SKIP_EPS: the bound's slack for
+ * its own round-off and the points' (m). */
+enum { SKIP_NEAR = 2, SKIP_EDGE = 4, SKIP_STRETCH = 8 };
+static const double SKIP_MARGIN = 5e-4, SKIP_EPS = 1e-9;
+
+/* The highest ground over the abscissae xa .. xb (xa <= xb): of the vertices from the one at
+ * or before xa to the first at or after xb, and the flat extensions past the profile's ends
+ * where the span reaches them; the polyline there lies below it. */
+static double ground_max(const tirenv_profile *p, double xa, double xb)
+{
+    const double *X = p->x, *Z = p->z;
+    const size_t n = p->n;
+    double z_max = xb > X[n - 1] ? Z[n - 1] : -INFINITY;
+    for (size_t k = xa < X[0] ? 0 : tirenv_profile__segment_at(p, xa); k < n; ++k) {
+        z_max = Z[k] > z_max ? Z[k] : z_max;
+        if (X[k] >= xb)
+            break;
+    }
+    return z_max;
+}
+
+/* The highest ground a point of the nodes j0 .. j1's sector (one side of the vertical) can lie
+ * on within reach (m; +INFINITY if the sector holds the vertical): a ground point P there at
+ * angle phi lies below the centre by z - Z_P = rho cos(phi), rho >= (z - Z_P) / cos(phi_in)
+ * (phi_in the sector's edge nearer the vertical), and horizontally between rho_lo sin(phi_in)
+ * and reach sin(phi_out) from it, rho_lo a lower bound of rho: the highest ground in that span,
+ * twice refined. Every ground within reach horizontally lies below the centre (the caller
+ * checks), so a point's d is that of ground its ray meets, never of a line's extension; in an
+ * interval j of the sector, d <= R0 - (z - z_max) / cos(phi_in of j). */
+static double sector_max(const tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                         size_t j0, size_t j1, double reach)
+{
+    const double sa = r->sin_t[j0], sb = r->sin_t[j1];
+    if (sa < 0 && sb > 0)
+        return INFINITY;
+    const int fwd = sb > 0;
+    const double s_in = fwd ? sa : -sb, s_out = fwd ? sb : -sa,
+                 c_in = fwd ? r->cos_t[j0] : r->cos_t[j1];
+    double rho_lo = 0, z_max = INFINITY;
+    for (int it = 0; it < 2; ++it) {
+        const double h0 = rho_lo * s_in, h1 = reach * s_out;
+        const double zm = fwd ? ground_max(p, x + h0, x + h1) : ground_max(p, x - h1, x - h0);
+        z_max = zm < z_max ? zm : z_max;
+        const double lo = (z - z_max) / c_in;
+        if (!(lo > rho_lo))
+            break;
+        rho_lo = lo;
+    }
+    return z_max;
+}
+
+/* Room for the gaps' arrays (per node, and the runs). */
+static int reserve_gaps(tirenv_ring *r)
+{
+    if (r->gap_d)
+        return 0;
+    r->gap_d = malloc(r->M * sizeof *r->gap_d);
+    r->gaps = malloc(3 * r->M * sizeof *r->gaps);
+    r->gap_on = calloc(r->M, 1);
+    if (!r->gap_d || !r->gaps || !r->gap_on) {
+        free(r->gap_d);
+        free(r->gaps);
+        free(r->gap_on);
+        r->gap_d = NULL;
+        r->gaps = NULL;
+        r->gap_on = NULL;
+        return TIRENV_ENOMEM;
+    }
+    return 0;
+}
+
+/* The far intervals of the sampling of nodes ja .. jb at (x, z): each one's bound in gap_d and
+ * the runs of them in r->gaps; returns their count (0: sample all). */
+/* Gap entry g: intervals gaps[3 g] .. gaps[3 g + 1] with the bound gap_d[gaps[3 g]], m. */
+static void add_gap(size_t *gaps, size_t *n_gaps, size_t j0, size_t j1)
+{
+    size_t *const e = gaps + 3 * (*n_gaps)++;
+    e[0] = j0, e[1] = j1;
+}
+
+static size_t far_intervals(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                            size_t ja, size_t jb, double reach)
+{
+    if (!r->near_ok || r->whole_ground || !r->tread || jb - ja < 2 * SKIP_EDGE + 1 ||
+        reserve_gaps(r) || !(ground_max(p, x - reach, x + reach) < z))
+        return 0;
+    /* r's fields in locals: the flags' stores (chars) may alias them. */
+    const double *const u = tirenv_ring__tread_u(r->tread), *const w = r->w,
+                        *const cs = r->cos_t, *const sn = r->sin_t;
+    const double t_r = r->par.t_r, R0 = r->R0;
+    double *const gap_d = r->gap_d;
+    unsigned char *const gap_on = r->gap_on;
+    size_t *const gaps = r->gaps;
+    size_t n_gaps = 0, count = 0;
+    const size_t w0 = r->warm_lo, w1 = r->warm_lo + r->warm_n; /* where u and w hold */
+    const size_t f0 = ja + SKIP_EDGE, f1 = jb - SKIP_EDGE;
+    const size_t a = r->near_a > SKIP_NEAR ? r->near_a - SKIP_NEAR : 0, b = r->near_b + SKIP_NEAR;
+    /* Stretches of up to SKIP_STRETCH intervals, their ground's height bounded once: the
+     * whole stretch one gap where its bound at its inner end clears its lowest u and w, else
+     * interval by interval, each bounded at its own inner end. */
+    for (size_t j = f0 > w0 ? f0 : w0; j < f1;) {
+        size_t e = j + SKIP_STRETCH < f1 ? j + SKIP_STRETCH : f1; /* intervals j .. e - 1 */
+        if (j < a && e > a)
+            e = a;
+        if (j + 1 >= a && j <= b) {
+            j = b + 1;
+            continue;
+        }
+        if (e >= w1)
+            break;
+        const double z_max = sector_max(r, p, x, z, j, e, reach), h = z - z_max;
+        const double dm = R0 - h / (sn[e] > 0 ? cs[j] : cs[e]);
+        double um = u[j], wm = w[j];
+        for (size_t i = j + 1; i <= e; ++i) {
+            um = u[i] < um ? u[i] : um;
+            wm = w[i] < wm ? w[i] : wm;
+        }
+        if (dm + SKIP_MARGIN <= um && dm - wm <= t_r - SKIP_MARGIN) {
+            gap_d[j] = dm;
+            memset(gap_on + j, 1, e - j);
+            add_gap(gaps, &n_gaps, j, e - 1);
+            count += e - j;
+            j = e;
+            continue;
+        }
+        for (; j < e; ++j) {
+            const double dj = R0 - h / (sn[j + 1] > 0 ? cs[j] : cs[j + 1]);
+            const double uj = u[j] < u[j + 1] ? u[j] : u[j + 1],
+                         wj = w[j] < w[j + 1] ? w[j] : w[j + 1];
+            if (!(dj + SKIP_MARGIN <= uj && dj - wj <= t_r - SKIP_MARGIN))
+                continue;
+            gap_d[j] = dj;
+            gap_on[j] = 1;
+            add_gap(gaps, &n_gaps, j, j);
+            ++count;
+        }
+    }
+    r->n_gaps = n_gaps;
+    return count;
+}
+
+/* Whether interval j is one of the gaps. */
+static inline int in_gap(const tirenv_ring *r, size_t j) { return r->gap_on[j]; }
+
+/* The last sampling's gaps undone (their flags cleared). */
+static void clear_gaps(tirenv_ring *r)
+{
+    for (size_t g = 0; g < r->n_gaps; ++g)
+        memset(r->gap_on + r->gaps[3 * g], 0, r->gaps[3 * g + 1] + 1 - r->gaps[3 * g]);
+    r->n_gaps = 0;
+}
+
+int tirenv_ring__gaps_clear(const tirenv_ring *r, const double xw[])
+{
+    const double t_r = r->par.t_r;
+    const size_t lo = r->lo;
+    for (size_t g = 0; g < r->n_gaps; ++g) {
+        const size_t j0 = r->gaps[3 * g], j1 = r->gaps[3 * g + 1];
+        const double dm = r->gap_d[j0];
+        double um = xw[2 * (j0 - lo) + 1], wm = xw[2 * (j0 - lo)];
+        for (size_t j = j0 + 1; j <= j1 + 1; ++j) {
+            const size_t i = j - lo;
+            um = xw[2 * i + 1] < um ? xw[2 * i + 1] : um;
+            wm = xw[2 * i] < wm ? xw[2 * i] : wm;
+        }
+        if (!(dm + SKIP_EPS <= um && dm - wm <= t_r - SKIP_EPS))
+            return 0;
+    }
+    return 1;
+}
+
+int tirenv_ring__sampled_over(const tirenv_ring *r, size_t a, size_t b)
+{
+    for (size_t g = 0; g < r->n_gaps; ++g)
+        if (r->gaps[3 * g] <= b && r->gaps[3 * g + 1] + 1 >= a)
+            return 0;
+    return 1;
+}
+
+/* The last sampling again, whole (win as tirenv_ring__sample's). */
+static int sample_again(tirenv_ring *r, size_t win[2])
+{
+    const int whole = r->whole_ground;
+    r->whole_ground = 1;
+    const int st = tirenv_ring__sample(r, r->smp_p, r->smp_x, r->smp_z, r->smp_ja, r->smp_jb,
+                                       r->smp_kt, win);
+    r->whole_ground = whole;
+    ++r->n_regap;
+    return st;
+}
+
+int tirenv_ring__sample_whole(tirenv_ring *r)
+{
+    size_t win[2];
+    return sample_again(r, win);
+}
+
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
  * pieces between them, and each piece's line from a ray along its middle. Rays of one side are
  * cast outward from the vertical, so each walk starts where the last one ended. */
@@ -321,6 +525,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
 {
     size_t wl[2] = {r->M, 0}; /* win, local while the points are written */
     win[0] = wl[0], win[1] = wl[1];
+    r->smp_p = p, r->smp_x = x, r->smp_z = z, r->smp_ja = ja, r->smp_jb = jb, r->smp_kt = k_t;
+    clear_gaps(r);
     const double *X = p->x, *Z = p->z, reach = r->R0 + r->par.t_r;
     const double phi_a = r->theta[ja], phi_b = r->theta[jb];
     /* The vertices below the centre within reach horizontally, by angle: those a piece's ray
@@ -432,6 +638,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         r->pc_valid = keep && n_lines == n_pieces;
         r->pc_x = x, r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
+    /* The far intervals (see far_intervals) are left out: no ray, no point. */
+    const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, reach);
     /* Their lines: rays along the middle of each piece, each side walked outward. */
     long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
     if (!(X[cur_f] > x))
@@ -446,10 +654,12 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         tirenv_ring_piece *const c = r->lines;
         long cb = cur_b, cf = cur_f; /* in registers: the stores to L do not reach them */
         for (size_t t = n_back; t-- > 0;)
-            c[t].hit = first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cb,
+            c[t].hit = !(n_far && in_gap(r, c[t].j)) &&
+                       first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cb,
                                   c[t].L);
         for (size_t t = n_back; t < n_lines; ++t)
-            c[t].hit = first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cf,
+            c[t].hit = !(n_far && in_gap(r, c[t].j)) &&
+                       first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cf,
                                   c[t].L);
     } else {
         for (size_t side = 0; side < 2; ++side) /* backward rays first, then forward */
@@ -458,8 +668,9 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                 const double sx = c->sa + c->sb, cz = c->ca + c->cb;
                 if ((sx < 0) != (side == 0))
                     continue;
-                c->hit = inside || first_line(p, x, z, sx, cz, reach,
-                                              sx < 0 ? &cur_b : &cur_f, c->L);
+                c->hit = inside || (!(n_far && in_gap(r, c->j)) &&
+                                    first_line(p, x, z, sx, cz, reach,
+                                               sx < 0 ? &cur_b : &cur_f, c->L));
             }
     }
     size_t n_pts = 0;
@@ -480,6 +691,12 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                               r->pts + n_pts);
     }
     r->n_pts = n_pts;
+    if (n_far && !(wl[0] < ja + SKIP_EDGE && wl[1] > jb - SKIP_EDGE)) {
+        /* The ground within reach ends inside a gap, or none is sampled at an edge: the window
+         * is the whole sampling's only when both edges hold some. */
+        return sample_again(r, win);
+    }
+    r->n_gapped += n_far > 0;
     win[0] = wl[0], win[1] = wl[1];
     return 0;
 }

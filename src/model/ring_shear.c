@@ -1936,8 +1936,13 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
     T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
 }
 
-int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
-                             double *dfz_dz, tirenv_diag *diag)
+/* solve_shear's status where the window's ground has gaps (ring_ground.c) that it needs
+ * sampled: a whole window to solve, a sub-window reaching a gap, or a gap its bound does not
+ * certify clear of the answer. */
+enum { NEED_GROUND = -2 };
+
+static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
+                       double *dfz_dz, tirenv_diag *diag)
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, hi = lo + n - 1, n_pts = r->n_pts;
@@ -1977,6 +1982,8 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     size_t beyond[2];
     int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
               sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a, &b, &k0, &k1);
+    if (r->n_gaps && !(sub && tirenv_ring__sampled_over(r, a, b)))
+        return NEED_GROUND;
     for (size_t t = 0; sub; ++t) {
         sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
               solve_on(r, x_c, a, b, k0, k1, want) == TIRENV_RING_NEWTON_OK &&
@@ -1986,15 +1993,19 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         sub = sub && sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a2, &b2, &k02, &k12);
         if (!sub)
             break;
+        if (r->n_gaps && !tirenv_ring__sampled_over(r, a2, b2))
+            return NEED_GROUND;
         if (a2 == a && b2 == b) {
             if (!T->soft) /* with the law, filled above */
                 fill_free(r, a, b, xw);
-            sub = free_clear(r, k0, k1, xw) &&
+            sub = free_clear(r, k0, k1, xw) && tirenv_ring__gaps_clear(r, xw) &&
                   (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
             break;
         }
         a = a2, b = b2, k0 = k02, k1 = k12;
     }
+    if (!sub && r->n_gaps)
+        return NEED_GROUND;
     if (!sub) {
         int st = solve_whole(r, x_c, want);
         if (st != TIRENV_RING_NEWTON_OK)
@@ -2040,6 +2051,9 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                                 n, w_out, j_out, r->theta[j_out], T->law.w_0);
     }
     T->n_sub += sub != 0;
+    /* The next sampling's far stretches are those of this sub-window (ring_ground.c). */
+    r->near_ok = sub && !T->lugs && !T->whole && !T->soft;
+    r->near_a = a, r->near_b = b;
     /* The window's free points, clear of the ground, were written by free_clear. */
     /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
      * and u on this window, dw and du there too with dF_z/dz. */
@@ -2171,6 +2185,20 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     if (T->deferred)
         T->dfr = (deferred_window){a, b, k0, k1, sub, z, x_c};
     return 0;
+}
+
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
+                             double *dfz_dz, tirenv_diag *diag)
+{
+    int st = solve_shear(r, x_c, z, fx, fz, dfz_dz, diag);
+    if (st == NEED_GROUND) { /* the window's gaps sampled, and solved again from its start */
+        r->near_ok = 0;
+        if (tirenv_ring__sample_whole(r))
+            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring", "out of memory for the "
+                                "contact of %zu ground points", r->n_pts);
+        st = solve_shear(r, x_c, z, fx, fz, dfz_dz, diag);
+    }
+    return st;
 }
 
 int tirenv_ring__defer_slope(tirenv_ring *r, int on)
