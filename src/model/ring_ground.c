@@ -320,9 +320,12 @@ static int same_pieces(const tirenv_ring *r, double x, size_t ja, size_t jb, con
  * shear-coupled tread's solve checks (free_clear), which checks them by the bound instead
  * (tirenv_ring__gaps_clear), and samples them after all where the bound does not certify them
  * (tirenv_ring__sample_whole). The edges stay sampled so that the window (the nodes whose
- * intervals hold ground within reach) is the whole sampling's. SKIP_EPS: the bound's slack for
- * its own round-off and the points' (m). */
-enum { SKIP_NEAR = 2, SKIP_EDGE = 4, SKIP_STRETCH = 8 };
+ * intervals hold ground within reach) is the whole sampling's. Not where the window holds more
+ * than one vertex cut per SKIP_CUTS node intervals (a road): its cost is then the cuts', which
+ * a gap does not save, and its contact often needs the whole window (a bump beside the patch),
+ * for which the gaps would be sampled again. SKIP_EPS: the bound's slack for its own round-off
+ * and the points' (m). */
+enum { SKIP_NEAR = 2, SKIP_EDGE = 4, SKIP_STRETCH = 8, SKIP_CUTS = 8 };
 static const double SKIP_MARGIN = 5e-4, SKIP_EPS = 1e-9;
 
 /* The highest ground over the abscissae xa .. xb (xa <= xb): of the vertices from the one at
@@ -401,9 +404,10 @@ static void add_gap(size_t *gaps, size_t *n_gaps, size_t j0, size_t j1)
 }
 
 static size_t far_intervals(tirenv_ring *r, const tirenv_profile *p, double x, double z,
-                            size_t ja, size_t jb, double reach)
+                            size_t ja, size_t jb, size_t nv, double reach)
 {
     if (!r->near_ok || r->whole_ground || !r->tread || jb - ja < 2 * SKIP_EDGE + 1 ||
+        nv * SKIP_CUTS > jb - ja ||
         reserve_gaps(r) || !(ground_max(p, x - reach, x + reach) < z))
         return 0;
     /* r's fields in locals: the flags' stores (chars) may alias them. */
@@ -639,7 +643,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         r->pc_x = x, r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
     /* The far intervals (see far_intervals) are left out: no ray, no point. */
-    const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, reach);
+    const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
     /* Their lines: rays along the middle of each piece, each side walked outward. */
     long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
     if (!(X[cur_f] > x))

@@ -149,7 +149,8 @@ static void test_joined_points_as_apart(void **state)
  * over seeded cleats, blades, steps and class C roads, sweeps of 1 mm steps (the last
  * sub-window guides the next sampling), at each x the equilibrium and then one evaluation at
  * it; the same equilibrium (h within 1e-9 m, F_x within 1e-3 N; measured: the same bits), the
- * same window, diagnostics and patch; gaps left at most evaluations, and the points of the
+ * same window, diagnostics and patch; gaps left at most evaluations over the obstacles (none
+ * over the roads, whose vertices are too many: ring_ground.c SKIP_CUTS), and the points of the
  * sampled intervals those of the whole sampling. */
 static void test_gaps_as_whole(void **state)
 {
@@ -188,8 +189,10 @@ static void test_gaps_as_whole(void **state)
                 for (int k = 0; k < 2; ++k)
                     assert_int_equal(tirenv_ring_forces(r[k], p, x, h[0], &fx[k], &fz[k], NULL,
                                                         &contacts[k], NULL), 0);
-                gapped += r[0]->n_gapped > e0;
-                ++evals;
+                if (kind < 3) {
+                    gapped += r[0]->n_gapped > e0;
+                    ++evals;
+                }
                 assert_near(fz[0], fz[1], 1e-6, 0);
                 assert_int_equal(contacts[0], contacts[1]);
                 assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
@@ -218,10 +221,11 @@ static void test_gaps_as_whole(void **state)
         }
     }
     print_message("gaps against whole at %zu equilibria (%zu the same bits): |dh| <= %.3g m, "
-                  "|dF_x| <= %.3g N; %zu of %zu evaluations left gaps, %zu sampled whole again\n",
-                  compared, same, dh_max, dfx_max, gapped, evals, regap);
+                  "|dF_x| <= %.3g N; over the obstacles %zu of %zu evaluations left gaps, %zu "
+                  "sampled whole again\n", compared, same, dh_max, dfx_max, gapped, evals, regap);
     assert_int_equal(compared, 400);
-    assert_true(gapped > evals / 2);
+    assert_int_equal(evals, 240);
+    assert_true(gapped > evals * 3 / 4);
     tirenv_rng_free(rng);
 }
 
