@@ -394,8 +394,6 @@ static int reserve_gaps(tirenv_ring *r)
     return 0;
 }
 
-/* The far intervals of the sampling of nodes ja .. jb at (x, z): each one's bound in gap_d and
- * the runs of them in r->gaps; returns their count (0: sample all). */
 /* Gap entry g: intervals gaps[3 g] .. gaps[3 g + 1] with the bound gap_d[gaps[3 g]], m. */
 static void add_gap(size_t *gaps, size_t *n_gaps, size_t j0, size_t j1)
 {
@@ -403,6 +401,9 @@ static void add_gap(size_t *gaps, size_t *n_gaps, size_t j0, size_t j1)
     e[0] = j0, e[1] = j1;
 }
 
+/* The far intervals of the sampling of nodes ja .. jb at (x, z), nv vertex cuts among them:
+ * flagged in r->gap_on, as entries of r->gaps with their bounds in gap_d; returns their count
+ * (0: sample all). */
 static size_t far_intervals(tirenv_ring *r, const tirenv_profile *p, double x, double z,
                             size_t ja, size_t jb, size_t nv, double reach)
 {

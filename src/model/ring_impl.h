@@ -187,15 +187,15 @@ struct tirenv_ring {
                             * (ring_ground.c), as the sampling did before */
     /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last
      * sub-window, their ground bounded instead. near_ok: near_a .. near_b is the last solve's
-     * sub-window (set by ring_shear.c, where its solve may skip). gap_d: per node (global),
-     * an upper bound of d over interval j where it was skipped; gaps: the skipped runs of
-     * intervals, pairs first .. last, n_gaps of them. The last sampling's arguments, to sample
-     * it whole when a solve needs every point. */
+     * sub-window (set by ring_shear.c, where its solve may skip). gaps: n_gaps entries of
+     * skipped intervals, each its first and last interval (and a spare), gap_d at its first
+     * an upper bound of d over them (m); gap_on: per node, interval j skipped. The last
+     * sampling's arguments, to sample it whole when a solve needs every point. */
     int near_ok, whole_ground; /* whole_ground: for tests, never skip */
     size_t near_a, near_b;
     double *gap_d;
     unsigned char *gap_on; /* per node: interval j is in a gap */
-    size_t *gaps, n_gaps;  /* runs: first, last interval and a spare, 3 a run */
+    size_t *gaps, n_gaps;
     size_t n_gapped, n_regap; /* samplings that left gaps, and those sampled whole again after
                                * (the tests count them) */
     const tirenv_profile *smp_p;
