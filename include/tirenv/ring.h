@@ -64,7 +64,9 @@ void tirenv_ring_state(const tirenv_ring *r, double w[], double f[]);
  * w_j >= b_j - t_r; g_j >= 0, the belt's own ground reaction (N), zero unless w_j = b_j - t_r.
  * The tread compression is e_j = d_j - w_j <= t_r and the tread force f_j - g_j =
  * kappa_j max(0, e_j) with kappa_j = k_t (R0 - t_r) dtheta (times LUG_GROOVE_RATIO between
- * lugs). */
+ * lugs). With the continuous contact and the shear-coupled tread, d_j = b_j = -INFINITY also
+ * at the nodes of the window's far stretches whose ground a bound found clear of the belt, and
+ * which were not sampled (docs/models.md 5.3). */
 void tirenv_ring_contact(const tirenv_ring *r, double d[], double b[], double g[]);
 
 /* Largest tread compression max_j min(max(0, e_j), t_r) (m; with the shear-coupled tread the

@@ -163,6 +163,9 @@ void tirenv_ring_free(tirenv_ring *r)
     free(r->cuts);
     free(r->lines);
     free(r->pc_vk);
+    free(r->gap_d);
+    free(r->gaps);
+    free(r->gap_on);
     free(r->key);
     tirenv_ring__belt_free(r->belt);
     tirenv_ring__tread_free(r->tread);

@@ -177,83 +177,106 @@ static inline __attribute__((always_inline)) int first_line(const tirenv_profile
     return 1;
 }
 
-/* rho along the ray at (s, c) (normalised) to the line L, d(rho)/dz along that ray and, where
+/* What rho along a ray to the line L takes that does not depend on the ray (L's run, from the
+ * centre (x, z)): computed once for the pieces of a run on one line, the same operations on
+ * the same operands as for each ray, so the same bits. */
+typedef struct {
+    double dX, dZ; /* L[2] - L[0], L[3] - L[1], m */
+    double num;    /* (z - L[1]) dX - (x - L[0]) dZ, m^2 */
+} line_k;
+
+static inline void line_of(const double L[4], double x, double z, line_k *k)
+{
+    const double dX = L[2] - L[0], dZ = L[3] - L[1];
+    k->dX = dX;
+    k->dZ = dZ;
+    k->num = (z - L[1]) * dX - (x - L[0]) * dZ;
+}
+
+/* rho along the ray at (s, c) (normalised) to the line k, d(rho)/dz along that ray and, where
  * the ray's angle moves with z (moves: a vertex's cut), d(rho)/dphi at that z (else 0: a node's
  * ray, whose d(d)/dz along the cut adds drho_dphi * 0): from (x + rho s - X1) dZ = (z - rho c -
  * Z1) dX. NAN if the line faces away (never for the line a ray of the piece meets first). */
-static double rho_on(const double L[4], double x, double z, double s, double c, int moves,
-                     double *drho, double *drho_dphi)
+static inline double rho_on(const line_k *k, double s, double c, int moves, double *drho,
+                            double *drho_dphi)
 {
-    const double dX = L[2] - L[0], dZ = L[3] - L[1], den = s * dZ + c * dX;
+    const double dX = k->dX, dZ = k->dZ, den = s * dZ + c * dX;
     if (!(den > 0)) {
         *drho = *drho_dphi = 0;
         return NAN;
     }
     *drho = dX / den;
-    const double rho = ((z - L[1]) * dX - (x - L[0]) * dZ) / den;
+    const double rho = k->num / den;
     *drho_dphi = moves ? -rho * (c * dZ - s * dX) / den : 0;
     return rho;
 }
 
 /* Point e of the piece c of node interval c->j (nodes j, j + 1; e = 0 at its first cut, 1 at
- * its second), marked out of reach (d = -INFINITY) or, within it, given the tread stiffness
- * k_t (with lugs each its own) and its interval added to wl. */
+ * its second) on the line lk (NULL: the centre inside the ground, rho = 0), marked out of
+ * reach (d = -INFINITY) or, within it, given the tread stiffness k_t (with lugs each its own)
+ * and its interval added to wl. Every operand is read before the first store: a point's
+ * doubles may alias the piece's and the ring's, which the stores would make reloads. */
 static inline __attribute__((always_inline)) void
-piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x, double z,
-            int inside, double k_t, int lugs, size_t wl[2], double omega, double th,
+piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x,
+            const line_k *lk, double k_t, int lugs, size_t wl[2], double omega, double th,
             tirenv_ring_point *q)
 {
     const size_t j = c->j;
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
                  dphi = e ? c->db : c->da;
+    const double R0 = r->R0, t_r = r->par.t_r;
+    double s;
+    if (e == 1 && phi == r->theta[j + 1]) {
+        s = 1;
+    } else if (e == 0 && phi == th) {
+        s = 0;
+    } else {
+        s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
+        s = s > s_node ? (s < 1 ? s : 1) : 0;
+    }
     double drho = 0, drho_dphi = 0, rho = 0;
-    if (!inside)
-        rho = rho_on(c->L, x, z, sn, cs, dphi != 0, &drho, &drho_dphi);
-    q->d = isfinite(rho) ? r->R0 - rho : -INFINITY;
+    if (lk)
+        rho = rho_on(lk, sn, cs, dphi != 0, &drho, &drho_dphi);
+    const int fin = isfinite(rho);
+    const double d = fin ? R0 - rho : -INFINITY;
     q->dd = -drho;
     q->ddt = -(drho + drho_dphi * dphi);
-    q->X = x + (isfinite(rho) ? rho : 0) * sn;
+    q->X = x + (fin ? rho : 0) * sn;
     q->sn = sn;
     q->cs = cs;
     q->phi = phi;
     q->omega = omega;
     q->j = j;
     q->ends = e ? 2 : 1;
-    if (e == 1 && c->pb == r->theta[j + 1]) {
-        q->s = 1;
-    } else if (e == 0 && c->pa == th) {
-        q->s = 0;
-    } else {
-        const double s = (phi - th) / r->dth; /* fmin(1, fmax(0, s)), inline */
-        q->s = s > s_node ? (s < 1 ? s : 1) : 0;
-    }
+    q->s = s;
     q->dphi = dphi;
     /* Out of reach, or within it (see the top of tirenv_ring__sample). */
-    if (!(q->d > -r->par.t_r)) {
+    if (!(d > -t_r)) {
         q->d = -INFINITY;
         return;
     }
-    wl[0] = q->j < wl[0] ? q->j : wl[0];
-    wl[1] = q->j + 1 > wl[1] ? q->j + 1 : wl[1];
-    q->k_t = lugs ? tirenv_ring__tread_kappa(r, q->phi, x) / (r->R * r->dth) : k_t;
+    q->d = d;
+    wl[0] = j < wl[0] ? j : wl[0];
+    wl[1] = j + 1 > wl[1] ? j + 1 : wl[1];
+    q->k_t = lugs ? tirenv_ring__tread_kappa(r, phi, x) / (r->R * r->dth) : k_t;
 }
 
-/* The piece c's points into q[0], q[1]; returns how many it wrote. prev_L: the line of the
- * piece whose points were written last, q[-1] its second, if that piece ends where this one
- * begins (else NULL). Where c's first cut and the line are that piece's (c->contig: the cut
- * is its second; else the same cut's bits), c's first point would be the same ray as q[-1],
- * the same operations on the same operands (out of reach both, or within it both): the two
- * are one point, q[-1], weighted by both pieces' halves (the trapezoid rule's two terms of
- * one node on a flat stretch, summed before they are used), which ends the one piece and
- * begins the next; c's interval still counts in the window as its point's did. Only c's
- * second point is written then. */
-static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
-                           const double prev_L[4], double x, double z, int inside, double k_t,
-                           int lugs, size_t wl[2], tirenv_ring_point *q)
+/* The piece c's points into q[0], q[1]; returns how many it wrote. same: the piece whose
+ * points were written last, q[-1] its second, ends where this one begins, on the same line
+ * (its bits). Where c's first cut is that piece's too (c->contig: the cut is its second; else
+ * the same cut's bits), c's first point would be the same ray as q[-1], the same operations on
+ * the same operands (out of reach both, or within it both): the two are one point, q[-1],
+ * weighted by both pieces' halves (the trapezoid rule's two terms of one node on a flat
+ * stretch, summed before they are used), which ends the one piece and begins the next; c's
+ * interval still counts in the window as its point's did. Only c's second point is written
+ * then. */
+static inline __attribute__((always_inline)) size_t
+piece_points(const tirenv_ring *r, const tirenv_ring_piece *c, int same, double x,
+             const line_k *lk, double k_t, int lugs, size_t wl[2], tirenv_ring_point *q)
 {
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
     tirenv_ring_point *const qp = q - 1;
-    if (prev_L && !r->apart && tirenv_ring__same_bits(c->L, prev_L, 4) &&
+    if (same && !r->apart &&
         (c->contig ||
          (tirenv_ring__same_bits(&qp->phi, &c->pa, 1) &&
           tirenv_ring__same_bits(&qp->sn, &c->sa, 1) &&
@@ -263,11 +286,11 @@ static size_t piece_points(const tirenv_ring *r, const tirenv_ring_piece *c,
         qp->ends = 3;
         if (qp->d != -INFINITY)
             wl[1] = c->j + 1 > wl[1] ? c->j + 1 : wl[1];
-        piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q);
+        piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q);
         return 1;
     }
-    piece_point(r, c, 0, x, z, inside, k_t, lugs, wl, omega, th, q);
-    piece_point(r, c, 1, x, z, inside, k_t, lugs, wl, omega, th, q + 1);
+    piece_point(r, c, 0, x, lk, k_t, lugs, wl, omega, th, q);
+    piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q + 1);
     return 2;
 }
 
@@ -290,6 +313,215 @@ static int same_pieces(const tirenv_ring *r, double x, size_t ja, size_t jb, con
     return 1;
 }
 
+/* The window's far stretches (docs/models.md 5.3, Counted a ninth time). Of the window's node
+ * intervals, those more than SKIP_NEAR nodes beyond the last solve's sub-window and SKIP_EDGE
+ * inside the sampled range's ends, whose ground lies, by a bound, below the last evaluation's
+ * tread surface by SKIP_MARGIN, are not sampled: their points are free at the answer as the
+ * shear-coupled tread's solve checks (free_clear), which checks them by the bound instead
+ * (tirenv_ring__gaps_clear), and samples them after all where the bound does not certify them
+ * (tirenv_ring__sample_whole). The edges stay sampled so that the window (the nodes whose
+ * intervals hold ground within reach) is the whole sampling's. Not where the window holds more
+ * than one vertex cut per SKIP_CUTS node intervals (a road): its cost is then the cuts', which
+ * a gap does not save, and its contact often needs the whole window (a bump beside the patch),
+ * for which the gaps would be sampled again. SKIP_EPS: the bound's slack for its own round-off
+ * and the points' (m). */
+enum { SKIP_NEAR = 2, SKIP_EDGE = 4, SKIP_STRETCH = 8, SKIP_CUTS = 8 };
+static const double SKIP_MARGIN = 5e-4, SKIP_EPS = 1e-9;
+
+/* The highest ground over the abscissae xa .. xb (xa <= xb): of the vertices from the one at
+ * or before xa to the first at or after xb, and the flat extensions past the profile's ends
+ * where the span reaches them; the polyline there lies below it. */
+static double ground_max(const tirenv_profile *p, double xa, double xb)
+{
+    const double *X = p->x, *Z = p->z;
+    const size_t n = p->n;
+    double z_max = xb > X[n - 1] ? Z[n - 1] : -INFINITY;
+    for (size_t k = xa < X[0] ? 0 : tirenv_profile__segment_at(p, xa); k < n; ++k) {
+        z_max = Z[k] > z_max ? Z[k] : z_max;
+        if (X[k] >= xb)
+            break;
+    }
+    return z_max;
+}
+
+/* The highest ground a point of the nodes j0 .. j1's sector (one side of the vertical) can lie
+ * on within reach (m; +INFINITY if the sector holds the vertical): a ground point P there at
+ * angle phi lies below the centre by z - Z_P = rho cos(phi), rho >= (z - Z_P) / cos(phi_in)
+ * (phi_in the sector's edge nearer the vertical), and horizontally between rho_lo sin(phi_in)
+ * and reach sin(phi_out) from it, rho_lo a lower bound of rho: the highest ground in that span,
+ * twice refined. Every ground within reach horizontally lies below the centre (the caller
+ * checks), so a point's d is that of ground its ray meets, never of a line's extension; in an
+ * interval j of the sector, d <= R0 - (z - z_max) / cos(phi_in of j). */
+static double sector_max(const tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                         size_t j0, size_t j1, double reach)
+{
+    const double sa = r->sin_t[j0], sb = r->sin_t[j1];
+    if (sa < 0 && sb > 0)
+        return INFINITY;
+    const int fwd = sb > 0;
+    const double s_in = fwd ? sa : -sb, s_out = fwd ? sb : -sa,
+                 c_in = fwd ? r->cos_t[j0] : r->cos_t[j1];
+    double rho_lo = 0, z_max = INFINITY;
+    for (int it = 0; it < 2; ++it) {
+        const double h0 = rho_lo * s_in, h1 = reach * s_out;
+        const double zm = fwd ? ground_max(p, x + h0, x + h1) : ground_max(p, x - h1, x - h0);
+        z_max = zm < z_max ? zm : z_max;
+        const double lo = (z - z_max) / c_in;
+        if (!(lo > rho_lo))
+            break;
+        rho_lo = lo;
+    }
+    return z_max;
+}
+
+/* Room for the gaps' arrays (per node, and the runs). */
+static int reserve_gaps(tirenv_ring *r)
+{
+    if (r->gap_d)
+        return 0;
+    r->gap_d = malloc(r->M * sizeof *r->gap_d);
+    r->gaps = malloc(3 * r->M * sizeof *r->gaps);
+    r->gap_on = calloc(r->M, 1);
+    if (!r->gap_d || !r->gaps || !r->gap_on) {
+        free(r->gap_d);
+        free(r->gaps);
+        free(r->gap_on);
+        r->gap_d = NULL;
+        r->gaps = NULL;
+        r->gap_on = NULL;
+        return TIRENV_ENOMEM;
+    }
+    return 0;
+}
+
+/* Gap entry g: intervals gaps[3 g] .. gaps[3 g + 1] with the bound gap_d[gaps[3 g]], m. */
+static void add_gap(size_t *gaps, size_t *n_gaps, size_t j0, size_t j1)
+{
+    size_t *const e = gaps + 3 * (*n_gaps)++;
+    e[0] = j0, e[1] = j1;
+}
+
+/* The far intervals of the sampling of nodes ja .. jb at (x, z), nv vertex cuts among them:
+ * flagged in r->gap_on, as entries of r->gaps with their bounds in gap_d; returns their count
+ * (0: sample all). */
+static size_t far_intervals(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                            size_t ja, size_t jb, size_t nv, double reach)
+{
+    if (!r->near_ok || r->whole_ground || !r->tread || jb - ja < 2 * SKIP_EDGE + 1 ||
+        nv * SKIP_CUTS > jb - ja ||
+        reserve_gaps(r) || !(ground_max(p, x - reach, x + reach) < z))
+        return 0;
+    /* r's fields in locals: the flags' stores (chars) may alias them. */
+    const double *const u = tirenv_ring__tread_u(r->tread), *const w = r->w,
+                        *const cs = r->cos_t, *const sn = r->sin_t;
+    const double t_r = r->par.t_r, R0 = r->R0;
+    double *const gap_d = r->gap_d;
+    unsigned char *const gap_on = r->gap_on;
+    size_t *const gaps = r->gaps;
+    size_t n_gaps = 0, count = 0;
+    const size_t w0 = r->warm_lo, w1 = r->warm_lo + r->warm_n; /* where u and w hold */
+    const size_t f0 = ja + SKIP_EDGE, f1 = jb - SKIP_EDGE;
+    const size_t a = r->near_a > SKIP_NEAR ? r->near_a - SKIP_NEAR : 0, b = r->near_b + SKIP_NEAR;
+    /* Stretches of up to SKIP_STRETCH intervals, their ground's height bounded once: the
+     * whole stretch one gap where its bound at its inner end clears its lowest u and w, else
+     * interval by interval, each bounded at its own inner end. */
+    for (size_t j = f0 > w0 ? f0 : w0; j < f1;) {
+        size_t e = j + SKIP_STRETCH < f1 ? j + SKIP_STRETCH : f1; /* intervals j .. e - 1 */
+        if (j < a && e > a)
+            e = a;
+        if (j + 1 >= a && j <= b) {
+            j = b + 1;
+            continue;
+        }
+        if (e >= w1)
+            break;
+        const double z_max = sector_max(r, p, x, z, j, e, reach), h = z - z_max;
+        const double dm = R0 - h / (sn[e] > 0 ? cs[j] : cs[e]);
+        double um = u[j], wm = w[j];
+        for (size_t i = j + 1; i <= e; ++i) {
+            um = u[i] < um ? u[i] : um;
+            wm = w[i] < wm ? w[i] : wm;
+        }
+        if (dm + SKIP_MARGIN <= um && dm - wm <= t_r - SKIP_MARGIN) {
+            gap_d[j] = dm;
+            memset(gap_on + j, 1, e - j);
+            add_gap(gaps, &n_gaps, j, e - 1);
+            count += e - j;
+            j = e;
+            continue;
+        }
+        for (; j < e; ++j) {
+            const double dj = R0 - h / (sn[j + 1] > 0 ? cs[j] : cs[j + 1]);
+            const double uj = u[j] < u[j + 1] ? u[j] : u[j + 1],
+                         wj = w[j] < w[j + 1] ? w[j] : w[j + 1];
+            if (!(dj + SKIP_MARGIN <= uj && dj - wj <= t_r - SKIP_MARGIN))
+                continue;
+            gap_d[j] = dj;
+            gap_on[j] = 1;
+            add_gap(gaps, &n_gaps, j, j);
+            ++count;
+        }
+    }
+    r->n_gaps = n_gaps;
+    return count;
+}
+
+/* Whether interval j is one of the gaps. */
+static inline int in_gap(const tirenv_ring *r, size_t j) { return r->gap_on[j]; }
+
+/* The last sampling's gaps undone (their flags cleared). */
+static void clear_gaps(tirenv_ring *r)
+{
+    for (size_t g = 0; g < r->n_gaps; ++g)
+        memset(r->gap_on + r->gaps[3 * g], 0, r->gaps[3 * g + 1] + 1 - r->gaps[3 * g]);
+    r->n_gaps = 0;
+}
+
+int tirenv_ring__gaps_clear(const tirenv_ring *r, const double xw[])
+{
+    const double t_r = r->par.t_r;
+    const size_t lo = r->lo;
+    for (size_t g = 0; g < r->n_gaps; ++g) {
+        const size_t j0 = r->gaps[3 * g], j1 = r->gaps[3 * g + 1];
+        const double dm = r->gap_d[j0];
+        double um = xw[2 * (j0 - lo) + 1], wm = xw[2 * (j0 - lo)];
+        for (size_t j = j0 + 1; j <= j1 + 1; ++j) {
+            const size_t i = j - lo;
+            um = xw[2 * i + 1] < um ? xw[2 * i + 1] : um;
+            wm = xw[2 * i] < wm ? xw[2 * i] : wm;
+        }
+        if (!(dm + SKIP_EPS <= um && dm - wm <= t_r - SKIP_EPS))
+            return 0;
+    }
+    return 1;
+}
+
+int tirenv_ring__sampled_over(const tirenv_ring *r, size_t a, size_t b)
+{
+    for (size_t g = 0; g < r->n_gaps; ++g)
+        if (r->gaps[3 * g] <= b && r->gaps[3 * g + 1] + 1 >= a)
+            return 0;
+    return 1;
+}
+
+/* The last sampling again, whole (win as tirenv_ring__sample's). */
+static int sample_again(tirenv_ring *r, size_t win[2])
+{
+    const int whole = r->whole_ground;
+    r->whole_ground = 1;
+    const int st = tirenv_ring__sample(r, r->smp_p, r->smp_x, r->smp_z, r->smp_ja, r->smp_jb,
+                                       r->smp_kt, win);
+    r->whole_ground = whole;
+    ++r->n_regap;
+    return st;
+}
+
+int tirenv_ring__sample_whole(tirenv_ring *r)
+{
+    size_t win[2];
+    return sample_again(r, win);
+}
+
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
  * pieces between them, and each piece's line from a ray along its middle. Rays of one side are
  * cast outward from the vertical, so each walk starts where the last one ended. */
@@ -298,6 +530,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
 {
     size_t wl[2] = {r->M, 0}; /* win, local while the points are written */
     win[0] = wl[0], win[1] = wl[1];
+    r->smp_p = p, r->smp_x = x, r->smp_z = z, r->smp_ja = ja, r->smp_jb = jb, r->smp_kt = k_t;
+    clear_gaps(r);
     const double *X = p->x, *Z = p->z, reach = r->R0 + r->par.t_r;
     const double phi_a = r->theta[ja], phi_b = r->theta[jb];
     /* The vertices below the centre within reach horizontally, by angle: those a piece's ray
@@ -359,8 +593,25 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         fresh && !reserve((void **)&r->pc_vk, &r->cap_pc, 2 * nv, sizeof *r->pc_vk);
     if (fresh)
         r->pc_vj = r->pc_vk ? r->pc_vk + nv : NULL;
+    const double *const th = r->theta, *const sn = r->sin_t, *const cs = r->cos_t;
     for (size_t j = ja; fresh && j < jb; ++j) {
-        cut prev = {r->theta[j], r->sin_t[j], r->cos_t[j], 0, 0};
+        const double pa = th[j], sa = sn[j], ca = cs[j], pb = th[j + 1], sb = sn[j + 1],
+                     cb = cs[j + 1];
+        if (!(iv < nv && v[iv].phi < pb) && pb > pa) {
+            /* No vertex in the interval: its one piece, node to node (as below, written out:
+             * the loop's cut records cost more than the piece's stores). */
+            tirenv_ring_piece *c = &r->lines[n_lines];
+            c->pa = pa, c->sa = sa, c->ca = ca, c->pb = pb, c->sb = sb, c->cb = cb;
+            c->j = j, c->contig = contig, c->da = 0, c->db = 0;
+            if (sa + sb < 0) {
+                ordered &= n_back == n_lines;
+                ++n_back;
+            }
+            ++n_lines;
+            contig = 1;
+            continue;
+        }
+        cut prev = {pa, sa, ca, 0, 0};
         for (;;) {
             cut next = {r->theta[j + 1], r->sin_t[j + 1], r->cos_t[j + 1], 0, 0};
             const int is_vertex = iv < nv && v[iv].phi < next.phi;
@@ -392,6 +643,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         r->pc_valid = keep && n_lines == n_pieces;
         r->pc_x = x, r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
+    /* The far intervals (see far_intervals) are left out: no ray, no point. */
+    const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
     /* Their lines: rays along the middle of each piece, each side walked outward. */
     long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
     if (!(X[cur_f] > x))
@@ -399,13 +652,20 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     long cur_b = cur_f - 1;
     while (cur_b >= 0 && X[cur_b] >= x)
         --cur_b;
-    if (ordered) { /* the backward rays' pieces first, outward, then the forward ones' */
-        for (size_t t = 0; t < n_lines; ++t) {
-            const int back = t < n_back;
-            tirenv_ring_piece *c = &r->lines[back ? n_back - 1 - t : t];
-            c->hit = inside || first_line(p, x, z, c->sa + c->sb, c->ca + c->cb, reach,
-                                          back ? &cur_b : &cur_f, c->L);
-        }
+    if (ordered && inside) {
+        for (size_t t = 0; t < n_lines; ++t)
+            r->lines[t].hit = 1;
+    } else if (ordered) { /* the backward rays' pieces first, outward, then the forward ones' */
+        tirenv_ring_piece *const c = r->lines;
+        long cb = cur_b, cf = cur_f; /* in registers: the stores to L do not reach them */
+        for (size_t t = n_back; t-- > 0;)
+            c[t].hit = !(n_far && in_gap(r, c[t].j)) &&
+                       first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cb,
+                                  c[t].L);
+        for (size_t t = n_back; t < n_lines; ++t)
+            c[t].hit = !(n_far && in_gap(r, c[t].j)) &&
+                       first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cf,
+                                  c[t].L);
     } else {
         for (size_t side = 0; side < 2; ++side) /* backward rays first, then forward */
             for (size_t i = 0; i < n_lines; ++i) {
@@ -413,23 +673,35 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                 const double sx = c->sa + c->sb, cz = c->ca + c->cb;
                 if ((sx < 0) != (side == 0))
                     continue;
-                c->hit = inside || first_line(p, x, z, sx, cz, reach,
-                                              sx < 0 ? &cur_b : &cur_f, c->L);
+                c->hit = inside || (!(n_far && in_gap(r, c->j)) &&
+                                    first_line(p, x, z, sx, cz, reach,
+                                               sx < 0 ? &cur_b : &cur_f, c->L));
             }
     }
     size_t n_pts = 0;
+    line_k lk = {0, 0, 0};
     for (size_t i = 0; i < n_lines; ++i) {
         const tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
         /* The points written last are c[-1]'s. With the centre inside the ground no piece
          * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
-         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives). */
-        const int after = !inside && i > 0 && c[-1].hit;
-        n_pts += piece_points(r, c, after ? c[-1].L : NULL, x, z, inside, k_t, lugs, wl,
+         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives).
+         * A run of pieces on one line shares its constants. */
+        const int same =
+            !inside && i > 0 && c[-1].hit && tirenv_ring__same_bits(c->L, c[-1].L, 4);
+        if (!inside && !same)
+            line_of(c->L, x, z, &lk);
+        n_pts += piece_points(r, c, same, x, inside ? NULL : &lk, k_t, lugs, wl,
                               r->pts + n_pts);
     }
     r->n_pts = n_pts;
+    if (n_far && !(wl[0] < ja + SKIP_EDGE && wl[1] > jb - SKIP_EDGE)) {
+        /* The ground within reach ends inside a gap, or none is sampled at an edge: the window
+         * is the whole sampling's only when both edges hold some. */
+        return sample_again(r, win);
+    }
+    r->n_gapped += n_far > 0;
     win[0] = wl[0], win[1] = wl[1];
     return 0;
 }

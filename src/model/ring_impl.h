@@ -185,6 +185,22 @@ struct tirenv_ring {
     size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
     int apart;             /* for tests: a node's two points on one ray kept apart, not joined
                             * (ring_ground.c), as the sampling did before */
+    /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last
+     * sub-window, their ground bounded instead. near_ok: near_a .. near_b is the last solve's
+     * sub-window (set by ring_shear.c, where its solve may skip). gaps: n_gaps entries of
+     * skipped intervals, each its first and last interval (and a spare), gap_d at its first
+     * an upper bound of d over them (m); gap_on: per node, interval j skipped. The last
+     * sampling's arguments, to sample it whole when a solve needs every point. */
+    int near_ok, whole_ground; /* whole_ground: for tests, never skip */
+    size_t near_a, near_b;
+    double *gap_d;
+    unsigned char *gap_on; /* per node: interval j is in a gap */
+    size_t *gaps, n_gaps;
+    size_t n_gapped, n_regap; /* samplings that left gaps, and those sampled whole again after
+                               * (the tests count them) */
+    const tirenv_profile *smp_p;
+    double smp_x, smp_z, smp_kt;
+    size_t smp_ja, smp_jb;
     double *g;             /* per node: the belt layer's share of F, N */
     /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
      * the window and, of each point in contact, its interval, place, weight, stiffness and
@@ -206,6 +222,19 @@ struct tirenv_ring {
  * win[1] (win[0] > win[1]: none). TIRENV_ENOMEM if its workspace cannot grow. */
 int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, double z,
                         size_t ja, size_t jb, double k_t, size_t win[2]);
+
+/* The last sampling again, every interval sampled (its gaps filled): r->pts, r->n_pts, and
+ * the same window. TIRENV_ENOMEM if its workspace cannot grow. */
+int tirenv_ring__sample_whole(tirenv_ring *r);
+
+/* Whether the last sampling's gaps (r->gaps) are clear of the belt and tread surface xw (the
+ * window's (w, u) interleaved from node r->lo, without knots): every point they would hold
+ * free, certified by their bounds. 1 if there are none. */
+int tirenv_ring__gaps_clear(const tirenv_ring *r, const double xw[]);
+
+/* Whether the intervals a - 1 .. b of the last sampling were all sampled (its points there
+ * those of a whole sampling: a sub-window a .. b may be solved on them). */
+int tirenv_ring__sampled_over(const tirenv_ring *r, size_t a, size_t b);
 
 /* The points pts[*k0 .. *k1) of the intervals of nodes first .. last, from pts[kf .. kl] in
  * them: the sub-windows of the nodes in contact (ring_smooth.c, ring_shear.c). */

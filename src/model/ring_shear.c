@@ -1936,8 +1936,16 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
     T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
 }
 
-int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
-                             double *dfz_dz, tirenv_diag *diag)
+/* solve_shear's statuses where the window's ground has gaps (ring_ground.c) that it needs
+ * sampled: NEED_GROUND, a sub-window reaching a gap or a gap its bound does not certify clear
+ * of the answer (then solved again from where it had come); NEED_WHOLE, the whole window to
+ * solve (then solved so at once, as it would have been). And the starts: predicted along the
+ * slope, where the last solve had come (T->xw), and that on the whole window. */
+enum { NEED_GROUND = -2, NEED_WHOLE = -3 };
+enum { START_PREDICTED, START_KEPT, START_WHOLE };
+
+static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
+                       double *dfz_dz, int start, tirenv_diag *diag)
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, hi = lo + n - 1, n_pts = r->n_pts;
@@ -1954,7 +1962,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
      * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
      * minimum does not depend on the start (its states' system is solved last). */
     const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
-    {
+    if (start == START_PREDICTED) {
         /* The last window's nodes in this one, lo + ia .. lo + ib - 1; zero elsewhere. */
         const size_t wa = r->warm_lo > lo ? r->warm_lo : lo, w1 = r->warm_lo + r->warm_n,
                      wb = w1 < lo + n ? w1 : lo + n;
@@ -1975,8 +1983,13 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     const int want = dfz_dz != NULL;
     size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12, j_out = 0;
     size_t beyond[2];
-    int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
+    int sub = start != START_WHOLE && !T->lugs && !T->whole &&
+              contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
               sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a, &b, &k0, &k1);
+    if (r->n_gaps && !sub)
+        return NEED_WHOLE;
+    if (r->n_gaps && !tirenv_ring__sampled_over(r, a, b))
+        return NEED_GROUND;
     for (size_t t = 0; sub; ++t) {
         sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
               solve_on(r, x_c, a, b, k0, k1, want) == TIRENV_RING_NEWTON_OK &&
@@ -1986,15 +1999,21 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         sub = sub && sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a2, &b2, &k02, &k12);
         if (!sub)
             break;
+        if (r->n_gaps && !tirenv_ring__sampled_over(r, a2, b2))
+            return NEED_GROUND;
         if (a2 == a && b2 == b) {
             if (!T->soft) /* with the law, filled above */
                 fill_free(r, a, b, xw);
-            sub = free_clear(r, k0, k1, xw) &&
-                  (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
+            sub = free_clear(r, k0, k1, xw);
+            if (sub && !tirenv_ring__gaps_clear(r, xw))
+                return NEED_GROUND; /* the free points sampled may be clear after all */
+            sub = sub && (!T->soft || outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
             break;
         }
         a = a2, b = b2, k0 = k02, k1 = k12;
     }
+    if (!sub && r->n_gaps)
+        return NEED_WHOLE;
     if (!sub) {
         int st = solve_whole(r, x_c, want);
         if (st != TIRENV_RING_NEWTON_OK)
@@ -2040,6 +2059,9 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
                                 n, w_out, j_out, r->theta[j_out], T->law.w_0);
     }
     T->n_sub += sub != 0;
+    /* The next sampling's far stretches are those of this sub-window (ring_ground.c). */
+    r->near_ok = sub && !T->lugs && !T->whole && !T->soft;
+    r->near_a = a, r->near_b = b;
     /* The window's free points, clear of the ground, were written by free_clear. */
     /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
      * and u on this window, dw and du there too with dF_z/dz. */
@@ -2171,6 +2193,23 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     if (T->deferred)
         T->dfr = (deferred_window){a, b, k0, k1, sub, z, x_c};
     return 0;
+}
+
+int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
+                             double *dfz_dz, tirenv_diag *diag)
+{
+    int st = solve_shear(r, x_c, z, fx, fz, dfz_dz, START_PREDICTED, diag);
+    if (st == NEED_GROUND || st == NEED_WHOLE) {
+        /* The window's gaps sampled, and solved again from where that solve had come (its
+         * window's (w, u) in T->xw: the minimum does not depend on the start). */
+        r->near_ok = 0;
+        if (tirenv_ring__sample_whole(r))
+            return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "ring", "out of memory for the "
+                                "contact of %zu ground points", r->n_pts);
+        st = solve_shear(r, x_c, z, fx, fz, dfz_dz,
+                         st == NEED_WHOLE ? START_WHOLE : START_KEPT, diag);
+    }
+    return st;
 }
 
 int tirenv_ring__defer_slope(tirenv_ring *r, int on)

@@ -88,6 +88,7 @@ static void test_joined_points_as_apart(void **state)
                 assert_non_null(r[k]);
             }
             r[1]->apart = 1;
+            r[0]->whole_ground = r[1]->whole_ground = 1; /* every point (test_gaps_as_whole) */
             const double G = 8000 + 16000 * tirenv_rng_uniform(rng);
             const double x0 = kind >= 3 ? 0.5 : -0.45;
             for (int i = 0; i < 12; ++i) {
@@ -143,6 +144,91 @@ static void test_joined_points_as_apart(void **state)
     tirenv_rng_free(rng);
 }
 
+/* The window's far stretches left unsampled (ring_ground.c far_intervals), their ground
+ * bounded instead, against every point sampled (whole_ground), with the shear-coupled tread:
+ * over seeded cleats, blades, steps and class C roads, sweeps of 1 mm steps (the last
+ * sub-window guides the next sampling), at each x the equilibrium and then one evaluation at
+ * it; the same equilibrium (h within 1e-9 m, F_x within 1e-3 N; measured: the same bits), the
+ * same window, diagnostics and patch; gaps left at most evaluations over the obstacles (none
+ * over the roads, whose vertices are too many: ring_ground.c SKIP_CUTS), and the points of the
+ * sampled intervals those of the whole sampling. */
+static void test_gaps_as_whole(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(31);
+    assert_non_null(rng);
+    const tirenv_tire t = tirenv_tire_default();
+    double dh_max = 0, dfx_max = 0;
+    size_t compared = 0, same = 0, gapped = 0, evals = 0, regap = 0;
+    for (int kind = 0; kind < 5; ++kind) {
+        for (int rep = 0; rep < 2; ++rep) {
+            tirenv_profile *p = random_ground(rng, kind);
+            tirenv_ring *r[2];
+            for (int k = 0; k < 2; ++k) {
+                r[k] = tirenv_ring_alloc(t.springs.R0, &t.ring);
+                assert_non_null(r[k]);
+            }
+            r[1]->whole_ground = 1;
+            const double G = 12000 + 18000 * tirenv_rng_uniform(rng);
+            const double x0 = (kind >= 3 ? 0.6 : -0.5) + 0.6 * tirenv_rng_uniform(rng);
+            double z = tirenv_profile_max_height(p, x0 - 0.3, x0 + 0.3) + 0.62;
+            for (int i = 0; i < 40; ++i) {
+                const double x = x0 + 0.001 * i;
+                double fx[2], h[2];
+                const size_t e0 = r[0]->n_gapped;
+                for (int k = 0; k < 2; ++k)
+                    h[k] = equilibrium(r[k], p, x, z, G, &fx[k]);
+                z = h[0];
+                dh_max = fmax(dh_max, fabs(h[0] - h[1]));
+                dfx_max = fmax(dfx_max, fabs(fx[0] - fx[1]));
+                assert_near(h[0], h[1], 1e-9, 0);
+                assert_near(fx[0], fx[1], 1e-3, 0);
+                same += h[0] == h[1] && fx[0] == fx[1];
+                double fz[2];
+                size_t contacts[2];
+                for (int k = 0; k < 2; ++k)
+                    assert_int_equal(tirenv_ring_forces(r[k], p, x, h[0], &fx[k], &fz[k], NULL,
+                                                        &contacts[k], NULL), 0);
+                if (kind < 3) {
+                    gapped += r[0]->n_gapped > e0;
+                    ++evals;
+                }
+                assert_near(fz[0], fz[1], 1e-6, 0);
+                assert_int_equal(contacts[0], contacts[1]);
+                assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
+                assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
+                assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9,
+                            0);
+                assert_int_equal(r[0]->lo, r[1]->lo);
+                assert_int_equal(r[0]->n, r[1]->n);
+                /* Each point of the gapped sampling is the whole one's, but at a gap's edge
+                 * (a node's point there not joined with the gap's); none lies in a gap. */
+                size_t q1 = 0;
+                for (size_t q = 0; q < r[0]->n_pts; ++q) {
+                    const tirenv_ring_point *a = &r[0]->pts[q];
+                    assert_false(r[0]->n_gaps && r[0]->gap_on[a->j]);
+                    while (q1 < r[1]->n_pts && !(r[1]->pts[q1].phi == a->phi &&
+                                                 r[1]->pts[q1].d == a->d))
+                        ++q1;
+                    assert_true(q1 < r[1]->n_pts);
+                }
+                ++compared;
+            }
+            regap += r[0]->n_regap;
+            for (int k = 0; k < 2; ++k)
+                tirenv_ring_free(r[k]);
+            tirenv_profile_free(p);
+        }
+    }
+    print_message("gaps against whole at %zu equilibria (%zu the same bits): |dh| <= %.3g m, "
+                  "|dF_x| <= %.3g N; over the obstacles %zu of %zu evaluations left gaps, %zu "
+                  "sampled whole again\n", compared, same, dh_max, dfx_max, gapped, evals, regap);
+    assert_int_equal(compared, 400);
+    assert_int_equal(evals, 240);
+    assert_true(gapped > evals * 3 / 4);
+    tirenv_rng_free(rng);
+}
+
 /* A ground vertex's angle seen from the centre (a cut's) is taken from the nearest node's by
  * atan's series, not by atan2 (ring_ground.c cut_angle): against atan2 of the cut's own sine
  * and cosine (themselves rounded), within 4.5e-16 rad (measured 2.2e-16, two ulps at 0.5
@@ -191,6 +277,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_joined_points_as_apart),
+        cmocka_unit_test(test_gaps_as_whole),
         cmocka_unit_test(test_cut_angles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
