@@ -67,6 +67,13 @@ static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag
     return status;
 }
 
+/* The model's first iterate at the position, for Newton (tirenv_eq_problem's start). */
+static int start_at(void *ctx, double z0, double *z)
+{
+    const force_ctx *c = ctx;
+    return c->st->def->start(c->st->elem, c->prof, c->x, z0, c->st->G, z);
+}
+
 /* The slope of force_at's last evaluation, which left it out (defer_slope). */
 static int slope_at(void *ctx, double *dF_dz)
 {
@@ -628,6 +635,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
                                               z_hi - deflection),
         .dz_hint = deflection,
         .slope = defer ? slope_at : NULL,
+        .start = st->def->start && st->tire.eq.method == TIRENV_EQ_NEWTON ? start_at : NULL,
     };
     force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;

@@ -88,6 +88,8 @@ struct tirenv_springs {
     double upd_x, upd_dfz_dz;
     unsigned long long upd_serial;
     size_t updates;        /* evaluations the update gave (what the tests count) */
+    /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there */
+    size_t starts, start_updates;
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -498,9 +500,11 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         /* Newton's confirming evaluation: the last QP solve's state carried along its
          * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
-         * the same faces: reused). */
-        if (reused && dfz_dz && s->cc.base_ok && s->upd_x == x &&
-            s->upd_serial == prof->serial &&
+         * the same faces: reused); or at a new x, the state tirenv_springs__start proposed
+         * there on the last position's working set. */
+        const tirenv_springs__cc *c = &s->cc;
+        if (reused && dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
+            (s->upd_x == x || (c->pred_ok && c->pred_x == x && c->pred_z == z)) &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
@@ -508,6 +512,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                 *contacts = n_contacts;
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
             ++s->updates;
+            s->start_updates += s->upd_x != x;
             return TIRENV_OK;
         }
         s->cc.base_ok = 0;
@@ -624,6 +629,12 @@ size_t tirenv_springs__updates(const tirenv_springs *s)
     return s->updates;
 }
 
+void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates)
+{
+    *starts = s->starts;
+    *updates = s->start_updates;
+}
+
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
 {
     return s->face_hits;
@@ -645,6 +656,43 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
         return 0;
     return tirenv_springs__cc_root(&s->cc, &s->cc_tire, prof, x, G, F, dfz_dz,
                                    s->S_lc[c->f0], s->S_rc[c->f1], s->dw, z_root);
+}
+
+int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                          double G, double *z)
+{
+    const tirenv_springs__cc *c = &s->cc;
+    /* At a new x, after a QP solve at another on this ground whose held elements sit on
+     * their rays' rows. */
+    if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || !c->base_ok || s->upd_x == x ||
+        s->upd_serial != prof->serial || c->f0 > c->f1 || c->held_vertex > 0 ||
+        !c->use_schur)
+        return 0;
+    size_t a = 1, b = 0;
+    set_origin(s, prof, x);
+    if (!candidate_span(s, z0, &a, &b))
+        return 0;
+    /* The fan at (x, z0), as the evaluation there would cast it; the one at the root reuses
+     * it. */
+    if (s->ray_a <= a && b <= s->ray_b) {
+        tirenv_springs__fan_update(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
+    } else {
+        tirenv_springs__fan(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
+        s->ray_a = a;
+        s->ray_b = b;
+    }
+    /* Each held element's ray's d(rho)/dz (its face's, where kept) into dd. */
+    for (size_t m = 0, n_held = c->n_held; m < n_held; ++m) {
+        const size_t e = c->held[m];
+        if (e < a || e > b || !isfinite(s->rho[e]))
+            return 0;
+        s->dd[e] = ray_drho(s, prof, e);
+    }
+    const int found =
+        tirenv_springs__cc_root_at(&s->cc, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
+                                   s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z);
+    s->starts += (size_t)found;
+    return found;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,

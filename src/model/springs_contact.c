@@ -34,7 +34,8 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         !(c->upd_pe = calloc(N, sizeof *c->upd_pe)) ||
         !(c->upd_pin = calloc(N, sizeof *c->upd_pin)) ||
         !(c->pred_w = calloc(N + 2, sizeof *c->pred_w)) ||
-        !(c->root_y = calloc(N + 2, sizeof *c->root_y)))
+        !(c->root_y = calloc(N + 2, sizeof *c->root_y)) ||
+        !(c->root_du = calloc(N + 2, sizeof *c->root_du)))
         return TIRENV_ENOMEM;
     c->f0 = 1;
     c->f1 = 0;
@@ -86,6 +87,7 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->dlambda);
     free(c->pred_w);
     free(c->root_y);
+    free(c->root_du);
     memset(c, 0, sizeof *c);
 }
 

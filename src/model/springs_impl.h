@@ -30,6 +30,16 @@ int tirenv_springs__qp_first(const tirenv_springs *s, double z);
  * form, an update). */
 int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                          double G, double F, double dfz_dz, double *z_root);
+/* Before the first evaluation at a new x on prof, from z0 (m, the last position's height):
+ * the height *z (m) where F_z = G (N) at x on the last QP solve's working set
+ * (tirenv_springs__cc_root_at, with the fan at (x, z0)), where the evaluation is the
+ * update's check of that working set; 1, or 0 where there is none (rays, no QP solve kept,
+ * an element held on a ground vertex, the same x). */
+int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                          double G, double *z);
+/* The roots tirenv_springs__start found so far, and the updates accepted at them (for the
+ * tests). */
+void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
@@ -458,12 +468,13 @@ typedef struct {
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
     /* The base's working set carried to where F_z meets the load (tirenv_springs__cc_root),
-     * while pred_ok: its height (pred_z, m), w on the free elements of [f0, f1] (pred_w[e],
+     * while pred_ok: its position and height (pred_x, pred_z, m), w on the free elements of [f0, f1] (pred_w[e],
      * m) and the working rows between elements' reactions (pred_lam, N, in schur_pos'
      * order), the update's start at pred_z; root_y its scratch (N + 2 each). */
     int pred_ok;
-    double pred_z;
+    double pred_x, pred_z;
     double *pred_w, *root_y;
+    double *root_du;       /* N + 2: tirenv_springs__cc_root_at's dw/dz with no reaction */
     double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 
@@ -563,6 +574,18 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
 int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double G, double F0, double dF0,
                             double S_l, double S_r, const double dw[], double *z_root);
+
+/* springs_root.c: the same at another x, from the base's working set alone (its rows between
+ * elements by ground vertex, its held elements on their rays' rows, K_FF's factor): given
+ * each held element's ray at (x, z_a), rho[e] (m) and d(rho)/dz drho[e], the height *z_root
+ * where F_z = G with that working set at x, the secant's first step by slope (N/m, < 0: the
+ * last dF_z/dz known); its state kept as the update's start at (x, *z_root) (c->pred_ok).
+ * The update there (which checks every row at x) decides whether it is the QP's solution.
+ * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, Cost. */
+int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                               const tirenv_profile *p, double x, double z_a,
+                               const double rho[], const double drho[], double G,
+                               double slope, double S_l, double S_r, double *z_root);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

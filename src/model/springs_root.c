@@ -23,6 +23,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include "profile/profile_impl.h"
 
 enum { K_MAX = TIRENV_SPRINGS__SCHUR_MAX, S_MAX = 2 * TIRENV_SPRINGS__SCHUR_MAX };
@@ -128,15 +129,134 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
     return 1;
 }
 
+/* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
+ * each free slot's column of K_FF^-1 on its row's chain (K_FF couples no other) and f . that
+ * column (S_l, S_r: the free chains' beyond the span); w_T and dw at the slots, l0 and dl as
+ * given (NULL: 0). 0 where a row is not a ground vertex's between elements. */
+static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                     const tirenv_profile *p, double S_l, double S_r, const double w_T[],
+                     const double dw[], int with_lambda, root_rows *W)
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const size_t *wpos = c->wpos;
+    W->k = k;
+    const size_t ns = 2 * k;
+    for (size_t q = 0; q < k; ++q) {
+        const size_t r = c->order[c->schur_pos[q]] - N;
+        const tirenv_springs__cc_row *R = &c->rows[r];
+        if (R->id < 0 || !(R->t > 0) || c->chain_lo[q] > c->chain_hi[q])
+            return 0;
+        W->el[2 * q] = R->i;
+        W->el[2 * q + 1] = R->j;
+        W->g0[2 * q] = R->ga;
+        W->g0[2 * q + 1] = R->gb;
+        W->g1[2 * q] = R->dga_dz;
+        W->g1[2 * q + 1] = R->dgb_dz;
+        W->l0[q] = with_lambda ? c->lambda[r] : 0;
+        W->dl[q] = with_lambda ? c->dlambda[r] : 0;
+        W->X[q] = p->x[R->id];
+        W->Z[q] = p->z[R->id];
+    }
+    double *y = c->root_y;
+    const double k_r = T->k_r, *ct = T->cos_t;
+    for (size_t s = 0; s < ns; ++s) {
+        const size_t e_s = W->el[s];
+        W->fr[s] = wpos[e_s] != SIZE_MAX;
+        W->w_T[s] = w_T[e_s];
+        W->dw[s] = dw[e_s];
+    }
+    for (size_t s = 0; s < ns; ++s) {
+        for (size_t r = 0; r < ns; ++r)
+            W->Y[s][r] = 0;
+        W->phi[s] = 0;
+        if (!W->fr[s])
+            continue;
+        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
+        for (size_t e = lo; e <= hi; ++e)
+            y[e] = 0;
+        y[W->el[s]] = 1;
+        tirenv_springs__cc_chain_solve(c, y, lo, W->el[s], hi);
+        double f = 0;
+        for (size_t e = lo; e <= hi; ++e)
+            f += k_r * ct[e] * y[e];
+        f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
+        W->phi[s] = f;
+        for (size_t r = 0; r < ns; ++r)
+            if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
+                W->Y[s][r] = y[W->el[r]];
+    }
+    return 1;
+}
+
+/* The secant on R(z) = F0 + (z - z0) dF0 + (the rows' share at z) - G from (za, Ra), its
+ * first step by slope (N/m, < 0), to 1e-15 R0 in z: *zb with the reactions lam and the
+ * slots' B there; 0 if it does not settle or a row leaves its sector. */
+static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z0,
+                  double F0, double dF0, double G, double za, double Ra, double slope0,
+                  double lam[], double B[], double *z_out)
+{
+    double zb = za - Ra / slope0;
+    for (size_t it = 0; it < max_steps; ++it) {
+        double dF;
+        if (!at_height(T, W, x, zb, zb - z0, lam, B, &dF))
+            return 0;
+        const double Rb = F0 + (zb - z0) * dF0 + dF - G;
+        double slope = (Rb - Ra) / (zb - za);
+        if (!(slope < 0))
+            slope = slope0;
+        const double step = -Rb / slope;
+        if (fabs(step) <= 1e-15 * T->R0) {
+            for (size_t q = 0; q < W->k; ++q)
+                if (!(lam[q] >= 0))
+                    return 0;
+            *z_out = zb;
+            return 1;
+        }
+        za = zb;
+        Ra = Rb;
+        zb += step;
+    }
+    return 0;
+}
+
+/* The state at zb (dz from the height of wa) kept as the update's start: wa + dz dwa over the
+ * span, then each row's B by one solve on its chain; c->pred_*. wa may be c->pred_w. */
+static void keep_state(tirenv_springs__cc *c, const root_rows *W, const double wa[],
+                       const double dwa[], double x, double zb, double dz, const double lam[],
+                       const double B[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, k = W->k;
+    double *pw = c->pred_w, *y = c->root_y;
+    for (size_t e = f0; e <= f1; ++e)
+        pw[e] = wa[e] + dz * dwa[e];
+    for (size_t q = 0; q < k; ++q) {
+        const size_t lo = c->chain_lo[q], hi = c->chain_hi[q];
+        size_t from = hi + 1;
+        for (size_t e = lo; e <= hi; ++e)
+            y[e] = 0;
+        for (size_t s = 2 * q; s < 2 * q + 2; ++s)
+            if (W->fr[s]) {
+                y[W->el[s]] += B[s];
+                from = W->el[s] < from ? W->el[s] : from;
+            }
+        tirenv_springs__cc_chain_solve(c, y, lo, from, hi);
+        for (size_t e = lo; e <= hi; ++e)
+            pw[e] += y[e];
+        c->pred_lam[q] = lam[q];
+    }
+    c->pred_x = x;
+    c->pred_z = zb;
+    c->pred_ok = 1;
+}
+
 int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double G, double F0, double dF0,
                             double S_l, double S_r, const double dw[], double *z_root)
 {
     c->pred_ok = 0;
-    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const size_t f0 = c->f0, f1 = c->f1, k = c->n_schur;
     if (!c->base_ok || !c->use_schur || f0 > f1 || k > K_MAX || !(dF0 < 0))
         return 0;
-    const size_t *wpos = c->wpos;
     const double z0 = c->base_z, *base_w = c->base_w + 1;
     /* The held elements on their rays' rows (linear in z), not on ground vertices: the
      * solve's last pass over the rows counted them (a pass over the span here cost some
@@ -144,101 +264,74 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
     if (c->held_vertex > 0)
         return 0;
     root_rows W;
-    W.k = k;
-    const size_t ns = 2 * k;
-    for (size_t q = 0; q < k; ++q) {
-        const size_t r = c->order[c->schur_pos[q]] - N;
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        if (R->id < 0 || !(R->t > 0) || c->chain_lo[q] > c->chain_hi[q])
-            return 0;
-        W.el[2 * q] = R->i;
-        W.el[2 * q + 1] = R->j;
-        W.g0[2 * q] = R->ga;
-        W.g0[2 * q + 1] = R->gb;
-        W.g1[2 * q] = R->dga_dz;
-        W.g1[2 * q + 1] = R->dgb_dz;
-        W.l0[q] = c->lambda[r];
-        W.dl[q] = c->dlambda[r];
-        W.X[q] = p->x[R->id];
-        W.Z[q] = p->z[R->id];
-    }
-    /* Each free slot's column of K_FF^-1, on its row's chain (K_FF couples no other). */
-    double *y = c->root_y;
-    const double k_r = T->k_r, *ct = T->cos_t;
-    for (size_t s = 0; s < ns; ++s) {
-        const size_t e_s = W.el[s];
-        W.fr[s] = wpos[e_s] != SIZE_MAX;
-        W.w_T[s] = base_w[e_s];
-        W.dw[s] = dw[e_s];
-    }
-    for (size_t s = 0; s < ns; ++s) {
-        for (size_t r = 0; r < ns; ++r)
-            W.Y[s][r] = 0;
-        W.phi[s] = 0;
-        if (!W.fr[s])
-            continue;
-        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
-        for (size_t e = lo; e <= hi; ++e)
-            y[e] = 0;
-        y[W.el[s]] = 1;
-        tirenv_springs__cc_chain_solve(c, y, lo, W.el[s], hi);
-        double f = 0;
-        for (size_t e = lo; e <= hi; ++e)
-            f += k_r * ct[e] * y[e];
-        f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
-        W.phi[s] = f;
-        for (size_t r = 0; r < ns; ++r)
-            if (W.fr[r] && lo <= W.el[r] && W.el[r] <= hi)
-                W.Y[s][r] = y[W.el[r]];
-    }
-    /* The secant on F(z) - G from the base and Newton's step. */
-    double lam[K_MAX], B[S_MAX];
-    double za = z0, Ra = F0 - G, zb = z0 - Ra / dF0;
-    int done = 0;
-    for (size_t it = 0; it < max_steps && !done; ++it) {
-        double dF;
-        if (!at_height(T, &W, x, zb, zb - z0, lam, B, &dF))
-            return 0;
-        const double Rb = F0 + (zb - z0) * dF0 + dF - G;
-        double slope = (Rb - Ra) / (zb - za);
-        if (!(slope < 0))
-            slope = dF0;
-        const double step = -Rb / slope;
-        if (fabs(step) <= 1e-15 * T->R0) {
-            done = 1;
-        } else {
-            za = zb;
-            Ra = Rb;
-            zb += step;
-        }
-    }
-    if (!done)
+    if (!base_rows(c, T, p, S_l, S_r, base_w, dw, 1, &W))
         return 0;
-    for (size_t q = 0; q < k; ++q)
-        if (!(lam[q] >= 0))
+    /* The secant on F(z) - G from the base and Newton's step. */
+    double lam[K_MAX], B[S_MAX], zb;
+    if (!secant(T, &W, x, z0, F0, dF0, G, z0, F0 - G, dF0, lam, B, &zb))
+        return 0;
+    keep_state(c, &W, base_w, dw, x, zb, zb - z0, lam, B);
+    *z_root = zb;
+    return 1;
+}
+
+/* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
+ * z while each ray ends on the same face (the fan at (x, z_a) gives rho_e and d(rho_e)/dz);
+ * the free ones solve K_FF w_F = b_F(z) + G_W(z)^T lambda with the base's K_FF (it depends
+ * on the span and the held elements alone, not on x). With no reaction on the rows, w at z is
+ * u_a + (z - z_a) u_s, u_a and u_s the solves of the held elements' coupling at z_a and of
+ * its slope; the rows enter as at_height has them with l0 = dl = 0 (B_s = lambda g_s(z)). */
+int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                               const tirenv_profile *p, double x, double z_a,
+                               const double rho[], const double drho[], double G,
+                               double slope, double S_l, double S_r, double *z_root)
+{
+    c->pred_ok = 0;
+    const size_t f0 = c->f0, f1 = c->f1, k = c->n_schur;
+    if (!c->base_ok || !c->use_schur || !c->tri_ok || f0 > f1 || k > K_MAX ||
+        c->held_vertex > 0 || !(slope < 0))
+        return 0;
+    const double R0 = T->R0, k_ir = T->k_ir, k_r = T->k_r, *ct = T->cos_t;
+    double *u = c->pred_w, *du = c->root_du;
+    memset(u + f0, 0, (f1 - f0 + 1) * sizeof *u);
+    memset(du + f0, 0, (f1 - f0 + 1) * sizeof *du);
+    for (size_t m = 0, n_held = c->n_held; m < n_held; ++m) {
+        const size_t e = c->held[m];
+        if (!isfinite(rho[e]) || !isfinite(drho[e]))
             return 0;
-    /* The state at zb: the tangent, then each row's columns by one solve on its chain. */
-    const double dz = zb - z0;
-    double *pw = c->pred_w;
-    for (size_t e = f0; e <= f1; ++e)
-        pw[e] = base_w[e] + dz * dw[e];
-    for (size_t q = 0; q < k; ++q) {
-        const size_t lo = c->chain_lo[q], hi = c->chain_hi[q];
-        size_t from = hi + 1;
-        for (size_t e = lo; e <= hi; ++e)
-            y[e] = 0;
-        for (size_t s = 2 * q; s < 2 * q + 2; ++s)
-            if (W.fr[s]) {
-                y[W.el[s]] += B[s];
-                from = W.el[s] < from ? W.el[s] : from;
-            }
-        tirenv_springs__cc_chain_solve(c, y, lo, from, hi);
-        for (size_t e = lo; e <= hi; ++e)
-            pw[e] += y[e];
-        c->pred_lam[q] = lam[q];
+        u[e] = R0 - rho[e];
+        du[e] = -drho[e];
     }
-    c->pred_z = zb;
-    c->pred_ok = 1;
+    /* Each chain of free elements [lo, hi] is coupled to the held elements at its ends (a
+     * chain at the span's end has the free chain beyond folded into K_FF's diagonal). */
+    const size_t *ch = c->chains;
+    for (size_t q = 0; q < c->n_chains; ++q) {
+        const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+        if (lo > f0) {
+            u[lo] = k_ir * u[lo - 1];
+            du[lo] = k_ir * du[lo - 1];
+        }
+        if (hi < f1) {
+            u[hi] += k_ir * u[hi + 1];
+            du[hi] += k_ir * du[hi + 1];
+        }
+        tirenv_springs__cc_chain_solve(c, u, lo, lo, hi);
+        tirenv_springs__cc_chain_solve(c, du, lo, lo, hi);
+    }
+    double Fa = S_l * u[f0] + S_r * u[f1], dFa = S_l * du[f0] + S_r * du[f1];
+    for (size_t e = f0; e <= f1; ++e) {
+        Fa += k_r * ct[e] * u[e];
+        dFa += k_r * ct[e] * du[e];
+    }
+    root_rows W;
+    if (!base_rows(c, T, p, S_l, S_r, u, du, 0, &W))
+        return 0;
+    double lam[K_MAX], B[S_MAX], zb, dF;
+    if (!at_height(T, &W, x, z_a, 0, lam, B, &dF))
+        return 0;
+    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, &zb))
+        return 0;
+    keep_state(c, &W, u, du, x, zb, zb - z_a, lam, B);
     *z_root = zb;
     return 1;
 }

@@ -57,7 +57,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* From the tangent a hair from the base, or from the state tirenv_springs__cc_root
      * solved for at its height (Newton's step, which it chose). The corrections below need
      * the working rows between elements on the Schur path. */
-    const int pred = c->pred_ok && z == c->pred_z;
+    const int pred = c->pred_ok && z == c->pred_z && x == c->pred_x;
     if (!c->base_ok || !c->use_schur || f0 > f1 || a > b ||
         !(pred || fabs(dz) <= upd_dz_max))
         return 0;
