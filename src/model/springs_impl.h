@@ -474,7 +474,11 @@ typedef struct {
     int pred_ok;
     double pred_x, pred_z;
     double *pred_w, *root_y;
-    double *root_du;       /* N + 2: tirenv_springs__cc_root_at's dw/dz with no reaction */
+    double *root_du;       /* N + 2: tirenv_springs__cc_root_at's held rows' dh/dz */
+    /* K_FF^-1 f (f the hub's weights, root_v: N + 2) for the factor n_factors counts, while
+     * root_v_at is that count (tirenv_springs__cc_schur_factor counts each new factor) */
+    double *root_v;
+    unsigned long long n_factors, root_v_at;
     double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 

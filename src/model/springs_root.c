@@ -47,6 +47,7 @@ typedef struct {
     double phi[S_MAX];                 /* f . K_FF^-1 e_s, N/N */
     double Y[S_MAX][S_MAX];            /* Y[s][r]: (K_FF^-1 e_s) at slot r's element, m/N */
     double w_T[S_MAX], dw[S_MAX];      /* the base's w and dw/dz at the slots */
+    double ylo[S_MAX], yhi[S_MAX];     /* K_FF^-1 e_s at its chain's ends, m/N */
 } root_rows;
 
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
@@ -181,6 +182,8 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             f += k_r * ct[e] * y[e];
         f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
         W->phi[s] = f;
+        W->ylo[s] = y[lo];
+        W->yhi[s] = y[hi];
         for (size_t r = 0; r < ns; ++r)
             if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
                 W->Y[s][r] = y[W->el[r]];
@@ -278,9 +281,13 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
 /* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
  * z while each ray ends on the same face (the fan at (x, z_a) gives rho_e and d(rho_e)/dz);
  * the free ones solve K_FF w_F = b_F(z) + G_W(z)^T lambda with the base's K_FF (it depends
- * on the span and the held elements alone, not on x). With no reaction on the rows, w at z is
- * u_a + (z - z_a) u_s, u_a and u_s the solves of the held elements' coupling at z_a and of
- * its slope; the rows enter as at_height has them with l0 = dl = 0 (B_s = lambda g_s(z)). */
+ * on the span and the held elements alone, not on x), b_F the held neighbours' k_ir h_e(z) at
+ * the ends of each chain of free elements. With no reaction on the rows, w at z is u_a +
+ * (z - z_a) u_s; the rows enter as at_height has them with l0 = dl = 0 (B_s = lambda g_s(z)).
+ * u_a and u_s are not solved for: the root needs them at the rows' elements only, from the
+ * rows' columns of K_FF^-1 at their chain's ends, and F_z of them is v . b_F (v = K_FF^-1 f,
+ * f the hub's weights on the free elements, kept while the factor is) plus the held
+ * elements' share; the state at the root is then one solve a chain. */
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,
                                const double rho[], const double drho[], double G,
@@ -292,46 +299,97 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         c->held_vertex > 0 || !(slope < 0))
         return 0;
     const double R0 = T->R0, k_ir = T->k_ir, k_r = T->k_r, *ct = T->cos_t;
-    double *u = c->pred_w, *du = c->root_du;
-    memset(u + f0, 0, (f1 - f0 + 1) * sizeof *u);
-    memset(du + f0, 0, (f1 - f0 + 1) * sizeof *du);
-    for (size_t m = 0, n_held = c->n_held; m < n_held; ++m) {
-        const size_t e = c->held[m];
+    const size_t *held = c->held, n_held = c->n_held, *ch = c->chains, n_ch = c->n_chains;
+    /* the held elements' rows at z_a and their slopes, and their share of F_z */
+    double *H = c->pred_w, *dH = c->root_du;
+    double Fa = 0, dFa = 0;
+    for (size_t m = 0; m < n_held; ++m) {
+        const size_t e = held[m];
         if (!isfinite(rho[e]) || !isfinite(drho[e]))
             return 0;
-        u[e] = R0 - rho[e];
-        du[e] = -drho[e];
+        H[e] = R0 - rho[e];
+        dH[e] = -drho[e];
+        const double f = k_r * ct[e] + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
+        Fa += f * H[e];
+        dFa += f * dH[e];
     }
-    /* Each chain of free elements [lo, hi] is coupled to the held elements at its ends (a
-     * chain at the span's end has the free chain beyond folded into K_FF's diagonal). */
-    const size_t *ch = c->chains;
-    for (size_t q = 0; q < c->n_chains; ++q) {
+    /* v = K_FF^-1 f on the free elements, for this factor */
+    double *v = c->root_v;
+    if (c->root_v_at != c->n_factors) {
+        for (size_t q = 0; q < n_ch; ++q) {
+            const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+            for (size_t e = lo; e <= hi; ++e)
+                v[e] = k_r * ct[e];
+            v[f0] += lo == f0 ? S_l : 0;
+            v[f1] += hi == f1 ? S_r : 0;
+            tirenv_springs__cc_chain_solve(c, v, lo, lo, hi);
+        }
+        c->root_v_at = c->n_factors;
+    }
+    /* the free elements' share: v . b_F over the chains' ends */
+    for (size_t q = 0; q < n_ch; ++q) {
         const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
         if (lo > f0) {
-            u[lo] = k_ir * u[lo - 1];
-            du[lo] = k_ir * du[lo - 1];
+            Fa += v[lo] * k_ir * H[lo - 1];
+            dFa += v[lo] * k_ir * dH[lo - 1];
         }
         if (hi < f1) {
-            u[hi] += k_ir * u[hi + 1];
-            du[hi] += k_ir * du[hi + 1];
+            Fa += v[hi] * k_ir * H[hi + 1];
+            dFa += v[hi] * k_ir * dH[hi + 1];
         }
-        tirenv_springs__cc_chain_solve(c, u, lo, lo, hi);
-        tirenv_springs__cc_chain_solve(c, du, lo, lo, hi);
-    }
-    double Fa = S_l * u[f0] + S_r * u[f1], dFa = S_l * du[f0] + S_r * du[f1];
-    for (size_t e = f0; e <= f1; ++e) {
-        Fa += k_r * ct[e] * u[e];
-        dFa += k_r * ct[e] * du[e];
     }
     root_rows W;
-    if (!base_rows(c, T, p, S_l, S_r, u, du, 0, &W))
+    if (!base_rows(c, T, p, S_l, S_r, H, dH, 0, &W))
         return 0;
+    /* u_a and u_s at the rows' free elements, from their columns at the chain's ends */
+    for (size_t s = 0; s < 2 * k; ++s) {
+        if (!W.fr[s])
+            continue;
+        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
+        double ua = 0, us = 0;
+        if (lo > f0) {
+            ua += W.ylo[s] * k_ir * H[lo - 1];
+            us += W.ylo[s] * k_ir * dH[lo - 1];
+        }
+        if (hi < f1) {
+            ua += W.yhi[s] * k_ir * H[hi + 1];
+            us += W.yhi[s] * k_ir * dH[hi + 1];
+        }
+        W.w_T[s] = ua;
+        W.dw[s] = us;
+    }
     double lam[K_MAX], B[S_MAX], zb, dF;
     if (!at_height(T, &W, x, z_a, 0, lam, B, &dF))
         return 0;
     if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, &zb))
         return 0;
-    keep_state(c, &W, u, du, x, zb, zb - z_a, lam, B);
+    /* The state at zb: the held elements' rows there, then each chain's solve with its
+     * ends' coupling and the rows' B. */
+    const double dz = zb - z_a;
+    double *pw = c->pred_w;
+    for (size_t m = 0; m < n_held; ++m) {
+        const size_t e = held[m];
+        pw[e] = H[e] + dz * dH[e];
+    }
+    for (size_t q = 0; q < n_ch; ++q) {
+        const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+        for (size_t e = lo; e <= hi; ++e)
+            pw[e] = 0;
+        if (lo > f0)
+            pw[lo] = k_ir * pw[lo - 1];
+        if (hi < f1)
+            pw[hi] += k_ir * pw[hi + 1];
+    }
+    for (size_t s = 0; s < 2 * k; ++s)
+        if (W.fr[s])
+            pw[W.el[s]] += B[s];
+    for (size_t q = 0; q < n_ch; ++q)
+        tirenv_springs__cc_chain_solve(c, pw, ch[2 * q], ch[2 * q], ch[2 * q + 1]);
+    for (size_t q = 0; q < k; ++q)
+        c->pred_lam[q] = lam[q];
+    c->pred_x = x;
+    c->pred_z = zb;
+    c->pred_ok = 1;
     *z_root = zb;
     return 1;
 }
