@@ -67,6 +67,12 @@ struct tirenv_springs {
      * check and the copy cost more than the hits spared, +1.5 % over the class C road). */
     tirenv_springs__ray_memo *face;
     size_t face_hits;
+    /* The rays memo[memo_a..memo_b] were last walked on the profile of serial memo_serial
+     * (from any x: set_origin forgets them for reuse, not their faces); pred_face[e], the
+     * face tirenv_springs__start took held element e's ray to end on at the new x. */
+    size_t memo_a, memo_b;
+    unsigned long long memo_serial;
+    tirenv_springs__ray_memo *pred_face;
     /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
      * pins: the last one solved for is kept with them and given again, bit for bit, when they
      * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
@@ -145,9 +151,10 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->slope.gap = calloc(2 * N, sizeof *s->slope.gap);
     s->memo = calloc(N, sizeof *s->memo);
     s->face = calloc(N, sizeof *s->face);
+    s->pred_face = calloc(N, sizeof *s->pred_face);
     s->pairs = calloc(4 * N, sizeof *s->pairs);
     if (!buf || !s->active || !s->pins.gap || !s->slope.gap || !s->memo || !s->face ||
-        !s->pairs) {
+        !s->pred_face || !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
@@ -204,6 +211,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->slope.gap);
     free(s->memo);
     free(s->face);
+    free(s->pred_face);
     free(s->pairs);
     tirenv_springs__cc_free(&s->cc);
     free(s);
@@ -421,6 +429,20 @@ static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, siz
     return m->drho;
 }
 
+/* Whether every held element's ray ends where tirenv_springs__start took it to (its walk
+ * ended at the same vertex in the same way: the same face), so that the root's rows were
+ * the rays' own. */
+static int same_faces(const tirenv_springs *s)
+{
+    const size_t *held = s->cc.held;
+    for (size_t m = 0, n_held = s->cc.n_held; m < n_held; ++m) {
+        const size_t e = held[m];
+        if (s->memo[e].j != s->pred_face[e].j || s->memo[e].kind != s->pred_face[e].kind)
+            return 0;
+    }
+    return 1;
+}
+
 /* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
  * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays
  * (counted only where contacts is not NULL: the update counts its own). */
@@ -488,6 +510,9 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->ray_a = a;
             s->ray_b = b;
         }
+        s->memo_a = s->ray_a;
+        s->memo_b = s->ray_b;
+        s->memo_serial = prof->serial;
         const int reused = walked == 0;
         size_t n_contacts;
         /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
@@ -503,8 +528,10 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
          * the same faces: reused); or at a new x, the state tirenv_springs__start proposed
          * there on the last position's working set. */
         const tirenv_springs__cc *c = &s->cc;
-        if (reused && dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
-            (s->upd_x == x || (c->pred_ok && c->pred_x == x && c->pred_z == z)) &&
+        if (dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
+            (s->upd_x == x ? reused
+                           : c->pred_ok && c->pred_x == x && c->pred_z == z &&
+                                 same_faces(s)) &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
@@ -668,25 +695,23 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         s->upd_serial != prof->serial || c->f0 > c->f1 || c->held_vertex > 0 ||
         !c->use_schur)
         return 0;
-    size_t a = 1, b = 0;
-    set_origin(s, prof, x);
-    if (!candidate_span(s, z0, &a, &b))
+    if (s->memo_serial != prof->serial)
         return 0;
-    /* The fan at (x, z0), as the evaluation there would cast it; the one at the root reuses
-     * it. */
-    if (s->ray_a <= a && b <= s->ray_b) {
-        tirenv_springs__fan_update(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
-    } else {
-        tirenv_springs__fan(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
-        s->ray_a = a;
-        s->ray_b = b;
-    }
-    /* Each held element's ray's d(rho)/dz (its face's, where kept) into dd. */
+    set_origin(s, prof, x);
+    /* Each held element's ray at (x, z0) on the face its last walk ended on, and its d(rho)/dz
+     * there (the face's), into rho and dd: no fan is cast (the evaluation at the root casts
+     * it, and checks the faces). */
     for (size_t m = 0, n_held = c->n_held; m < n_held; ++m) {
         const size_t e = c->held[m];
-        if (e < a || e > b || !isfinite(s->rho[e]))
+        if (e < s->memo_a || e > s->memo_b)
             return 0;
-        s->dd[e] = ray_drho(s, prof, e);
+        tirenv_springs__ray_memo *f = &s->memo[e];
+        const double rho = tirenv_springs__face_rho(prof, &s->origin, &s->rays, e, f, z0);
+        if (!isfinite(rho))
+            return 0;
+        s->rho[e] = rho;
+        s->dd[e] = tirenv_springs__fan_drho(prof, &s->rays, e, f);
+        s->pred_face[e] = *f;
     }
     const int found =
         tirenv_springs__cc_root_at(&s->cc, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,

@@ -132,6 +132,14 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                 size_t i, tirenv_springs__ray_memo *m);
 
+/* Ray i's rho (m) from the origin o's centre at height z to the face that memo m's walk
+ * ended on (from any origin on the same profile), extended as a line: what the ray finds
+ * where it still crosses that face first (not checked); NAN where the memo has no face.
+ * O(1): the held rays at a new x before any fan is cast there (springs.c). */
+double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i,
+                                const tirenv_springs__ray_memo *m, double z);
+
 /* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
  * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an
  * evaluation. */

@@ -417,6 +417,37 @@ double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__f
     return m->drho;
 }
 
+double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i,
+                                const tirenv_springs__ray_memo *m, double z)
+{
+    const double *X = p->x, *Z = p->z, x = o->x;
+    const long n = (long)p->n, j = m->j;
+    const int dir = i > r->i0 ? 1 : -1;
+    switch (m->kind) {
+    case RAY_DOWN:
+        return i == r->i0 ? z - o->g : NAN;
+    case RAY_WALL: {
+        const double a_j = dir * (X[j] - x);
+        return a_j > 0 ? a_j * r->inv_s[i] : NAN;
+    }
+    case RAY_HIT: { /* the line through the segment [j - dir, j], as walk() crosses it */
+        const long jp = j - dir;
+        if (!(jp >= 0 && jp < n)) /* the flat ground beyond the profile's end, at Z[j] */
+            return r->cos_t[i] > 0 ? (z - Z[j]) / r->cos_t[i] : NAN;
+        const double drop = r->drop[i], a_j = dir * (X[j] - x), a_p = dir * (X[jp] - x);
+        const double f_j = z - a_j * drop - Z[j], f_p = z - a_p * drop - Z[jp];
+        return f_p != f_j ? (a_p + f_p * (a_j - a_p) / (f_p - f_j)) * r->inv_s[i] : NAN;
+    }
+    case RAY_END: {
+        const double cos_t = r->cos_t[i];
+        return cos_t > 0 ? (z - Z[dir > 0 ? n - 1 : 0]) / cos_t : NAN;
+    }
+    default:
+        return NAN;
+    }
+}
+
 void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                   size_t first, size_t last, const unsigned char mask[],
                                   tirenv_springs__ray_memo memo[], double dd[])
