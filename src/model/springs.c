@@ -701,18 +701,11 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     /* Each held element's ray at (x, z0) on the face its last walk ended on, and its d(rho)/dz
      * there (the face's), into rho and dd: no fan is cast (the evaluation at the root casts
      * it, and checks the faces). */
-    for (size_t m = 0, n_held = c->n_held; m < n_held; ++m) {
-        const size_t e = c->held[m];
-        if (e < s->memo_a || e > s->memo_b)
-            return 0;
-        tirenv_springs__ray_memo *f = &s->memo[e];
-        const double rho = tirenv_springs__face_rho(prof, &s->origin, &s->rays, e, f, z0);
-        if (!isfinite(rho))
-            return 0;
-        s->rho[e] = rho;
-        s->dd[e] = tirenv_springs__fan_drho(prof, &s->rays, e, f);
-        s->pred_face[e] = *f;
-    }
+    const size_t n_held = c->n_held;
+    if ((n_held > 0 && (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
+        !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held, s->memo, z0,
+                                   s->rho, s->dd, s->pred_face))
+        return 0;
     const int found =
         tirenv_springs__cc_root_at(&s->cc, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
                                    s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z);

@@ -132,13 +132,16 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                 size_t i, tirenv_springs__ray_memo *m);
 
-/* Ray i's rho (m) from the origin o's centre at height z to the face that memo m's walk
- * ended on (from any origin on the same profile), extended as a line: what the ray finds
- * where it still crosses that face first (not checked); NAN where the memo has no face.
- * O(1): the held rays at a new x before any fan is cast there (springs.c). */
-double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                                const tirenv_springs__fan_rays *r, size_t i,
-                                const tirenv_springs__ray_memo *m, double z);
+/* For each ray i = rays[0..n): its rho (m) from the origin o's centre at height z to the
+ * face that memo[i]'s walk ended on (from any origin on the same profile), extended as a
+ * line, into rho[i]: what the ray finds where it still crosses that face first (not
+ * checked); its d(rho)/dz there into drho[i] (as tirenv_springs__fan_drho gives it, kept in
+ * the memo), and the memo into faces[i]. Returns 0 at a memo with no face. O(1) a ray: the
+ * held rays at a new x before any fan is cast there (springs.c). */
+int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
+                              tirenv_springs__ray_memo memo[], double z, double rho[],
+                              double drho[], tirenv_springs__ray_memo faces[]);
 
 /* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
  * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an

@@ -417,20 +417,15 @@ double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__f
     return m->drho;
 }
 
-double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                                const tirenv_springs__fan_rays *r, size_t i,
-                                const tirenv_springs__ray_memo *m, double z)
+/* Ray i's rho from (o->x, z) on the face memo m's walk ended on, as a line; NAN if none. */
+static inline double face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, size_t i,
+                              const tirenv_springs__ray_memo *m, double z)
 {
     const double *X = p->x, *Z = p->z, x = o->x;
     const long n = (long)p->n, j = m->j;
     const int dir = i > r->i0 ? 1 : -1;
     switch (m->kind) {
-    case RAY_DOWN:
-        return i == r->i0 ? z - o->g : NAN;
-    case RAY_WALL: {
-        const double a_j = dir * (X[j] - x);
-        return a_j > 0 ? a_j * r->inv_s[i] : NAN;
-    }
     case RAY_HIT: { /* the line through the segment [j - dir, j], as walk() crosses it */
         const long jp = j - dir;
         if (!(jp >= 0 && jp < n)) /* the flat ground beyond the profile's end, at Z[j] */
@@ -439,6 +434,12 @@ double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__f
         const double f_j = z - a_j * drop - Z[j], f_p = z - a_p * drop - Z[jp];
         return f_p != f_j ? (a_p + f_p * (a_j - a_p) / (f_p - f_j)) * r->inv_s[i] : NAN;
     }
+    case RAY_DOWN:
+        return i == r->i0 ? z - o->g : NAN;
+    case RAY_WALL: {
+        const double a_j = dir * (X[j] - x);
+        return a_j > 0 ? a_j * r->inv_s[i] : NAN;
+    }
     case RAY_END: {
         const double cos_t = r->cos_t[i];
         return cos_t > 0 ? (z - Z[dir > 0 ? n - 1 : 0]) / cos_t : NAN;
@@ -446,6 +447,27 @@ double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__f
     default:
         return NAN;
     }
+}
+
+int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
+                              tirenv_springs__ray_memo memo[], double z, double rho[],
+                              double drho[], tirenv_springs__ray_memo faces[])
+{
+    for (size_t k = 0; k < n; ++k) {
+        const size_t i = rays[k];
+        tirenv_springs__ray_memo *m = &memo[i];
+        const double v = face_rho(p, o, r, i, m, z);
+        if (!isfinite(v))
+            return 0;
+        rho[i] = v;
+        if (isnan(m->drho))
+            m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i],
+                                 r->cos_t[i]);
+        drho[i] = m->drho;
+        faces[i] = *m;
+    }
+    return 1;
 }
 
 void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
