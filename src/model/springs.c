@@ -685,10 +685,14 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
                                    s->S_lc[c->f0], s->S_rc[c->f1], s->dw, z_root);
 }
 
+/* The working set's changes tirenv_springs__start makes at a new x before it gives up: an
+ * element's own row entering or leaving it at the patch's edges, one at a time. */
+enum { start_rounds = 3 };
+
 int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
                           double G, double *z)
 {
-    const tirenv_springs__cc *c = &s->cc;
+    tirenv_springs__cc *c = &s->cc;
     /* At a new x, after a QP solve at another on this ground whose held elements sit on
      * their rays' rows. */
     if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || !c->base_ok || s->upd_x == x ||
@@ -698,19 +702,46 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     if (s->memo_serial != prof->serial)
         return 0;
     set_origin(s, prof, x);
-    /* Each held element's ray at (x, z0) on the face its last walk ended on, and its d(rho)/dz
-     * there (the face's), into rho and dd: no fan is cast (the evaluation at the root casts
-     * it, and checks the faces). */
-    const size_t n_held = c->n_held;
-    if ((n_held > 0 && (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
-        !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held, s->memo, z0,
-                                   s->rho, s->dd, s->pred_face))
-        return 0;
-    const int found =
-        tirenv_springs__cc_root_at(&s->cc, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
-                                   s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z);
-    s->starts += (size_t)found;
-    return found;
+    const double R0 = s->par.R0;
+    for (int round = 0;; ++round) {
+        /* Each held element's ray at (x, z0) on the face its last walk ended on, and its
+         * d(rho)/dz there (the face's), into rho and dd: no fan is cast (the evaluation at
+         * the root casts it, and checks the faces). */
+        const size_t n_held = c->n_held;
+        if ((n_held > 0 && (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
+            !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held, s->memo,
+                                       z0, s->rho, s->dd, s->pred_face))
+            return 0;
+        if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
+                                        s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
+            return 0;
+        /* The free elements' own rays at the root, on their last faces too (h: NAN where
+         * none), and the held ones' reactions: where one is violated, the element's row
+         * enters or leaves the working set (K_FF factorised again) and the root is found
+         * again; the update at the root checks every row as before. */
+        double *h = s->tread;
+        for (size_t q = 0; q < c->n_chains; ++q)
+            for (size_t m = 0; m < 2; ++m) {
+                const size_t e = c->chains[2 * q + m];
+                h[e] = e >= s->memo_a && e <= s->memo_b
+                           ? R0 - tirenv_springs__face_rho(prof, &s->origin, &s->rays, e,
+                                                           &s->memo[e], *z)
+                           : NAN;
+            }
+        size_t e;
+        int hold;
+        if (!tirenv_springs__cc_pred_worst(c, &s->cc_tire, h, 1e-12 * R0, 1e-9 * G, &e,
+                                           &hold))
+            break;
+        if (round == start_rounds || tirenv_springs__cc_pred_flip(c, &s->cc_tire, e, hold)) {
+            c->pred_ok = 0;
+            return 0;
+        }
+        /* the base's tangent at its x holds its own working set, no longer this one */
+        s->upd_x = NAN;
+    }
+    ++s->starts;
+    return 1;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,

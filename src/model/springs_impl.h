@@ -143,6 +143,11 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
                               tirenv_springs__ray_memo memo[], double z, double rho[],
                               double drho[], tirenv_springs__ray_memo faces[]);
 
+/* The same for one ray i: its rho, or NAN where memo m has no face. */
+double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i,
+                                const tirenv_springs__ray_memo *m, double z);
+
 /* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
  * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an
  * evaluation. */
@@ -491,6 +496,10 @@ typedef struct {
     double *root_v;
     unsigned long long n_factors, root_v_at;
     double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
+    /* (tirenv_springs__cc_root_at) each working row's two elements and its load on each,
+     * lambda g (N), for the check of the held elements' reactions */
+    size_t pred_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double pred_gl[2 * TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -601,6 +610,21 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
                                const tirenv_profile *p, double x, double z_a,
                                const double rho[], const double drho[], double G,
                                double slope, double S_l, double S_r, double *z_root);
+
+/* springs_root.c: the element whose own row the state tirenv_springs__cc_root_at kept
+ * (pred_w at pred_z, its reactions pred_lam) violates most, looked for where the working set
+ * changes with x (the ends of the chains of free elements and the held elements beside them,
+ * the working rows' elements): a free element below its ray's row h[e] (m, read at the
+ * chains' ends; NAN: none) by more than tol (m), else a held one whose reaction (K w - G^T
+ * lambda, N) is below -tol_f (N); *e and 1 (*hold: 1 to hold it, 0 to release), or 0 where
+ * none does. */
+int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
+                                  const tirenv_springs__cc_tire *T, const double h[],
+                                  double tol, double tol_f, size_t *e, int *hold);
+/* The base's working set with element e held on its ray's row (hold) or released, K_FF
+ * factorised again: 0, or 1 (the base is then dropped: base_ok 0) where it cannot be. */
+int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t e, int hold);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

@@ -449,6 +449,13 @@ static inline double face_rho(const tirenv_profile *p, const tirenv_springs__fan
     }
 }
 
+double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i,
+                                const tirenv_springs__ray_memo *m, double z)
+{
+    return face_rho(p, o, r, i, m, z);
+}
+
 int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
                               tirenv_springs__ray_memo memo[], double z, double rho[],

@@ -53,7 +53,7 @@ typedef struct {
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
  * dF_0 (N) into *dF; 0 if a row leaves its sector's inside. */
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
-                     double dz, double lam[], double B[], double *dF)
+                     double dz, double lam[], double B[], double g_out[], double *dF)
 {
     const size_t k = W->k, ns = 2 * k;
     const double *st = T->sin_t, *ct = T->cos_t;
@@ -123,6 +123,7 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
     }
     double f = 0;
     for (size_t s = 0; s < ns; ++s) {
+        g_out[s] = g[s];
         B[s] = W->fr[s] ? lam[s / 2] * g[s] - kap[s] : 0;
         f += B[s] * W->phi[s];
     }
@@ -196,12 +197,12 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
  * slots' B there; 0 if it does not settle or a row leaves its sector. */
 static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z0,
                   double F0, double dF0, double G, double za, double Ra, double slope0,
-                  double lam[], double B[], double *z_out)
+                  double lam[], double B[], double g[], double *z_out)
 {
     double zb = za - Ra / slope0;
     for (size_t it = 0; it < max_steps; ++it) {
         double dF;
-        if (!at_height(T, W, x, zb, zb - z0, lam, B, &dF))
+        if (!at_height(T, W, x, zb, zb - z0, lam, B, g, &dF))
             return 0;
         const double Rb = F0 + (zb - z0) * dF0 + dF - G;
         double slope = (Rb - Ra) / (zb - za);
@@ -270,8 +271,8 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
     if (!base_rows(c, T, p, S_l, S_r, base_w, dw, 1, &W))
         return 0;
     /* The secant on F(z) - G from the base and Newton's step. */
-    double lam[K_MAX], B[S_MAX], zb;
-    if (!secant(T, &W, x, z0, F0, dF0, G, z0, F0 - G, dF0, lam, B, &zb))
+    double lam[K_MAX], B[S_MAX], g[S_MAX], zb;
+    if (!secant(T, &W, x, z0, F0, dF0, G, z0, F0 - G, dF0, lam, B, g, &zb))
         return 0;
     keep_state(c, &W, base_w, dw, x, zb, zb - z0, lam, B);
     *z_root = zb;
@@ -358,11 +359,15 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         W.w_T[s] = ua;
         W.dw[s] = us;
     }
-    double lam[K_MAX], B[S_MAX], zb, dF;
-    if (!at_height(T, &W, x, z_a, 0, lam, B, &dF))
+    double lam[K_MAX], B[S_MAX], g[S_MAX], zb, dF;
+    if (!at_height(T, &W, x, z_a, 0, lam, B, g, &dF))
         return 0;
-    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, &zb))
+    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, g, &zb))
         return 0;
+    for (size_t s = 0; s < 2 * k; ++s) { /* each row's load on its elements, for the check */
+        c->pred_el[s] = W.el[s];
+        c->pred_gl[s] = lam[s / 2] * g[s];
+    }
     /* The state at zb: the held elements' rows there, then each chain's solve with its
      * ends' coupling and the rows' B. */
     const double dz = zb - z_a;
@@ -392,4 +397,101 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
     c->pred_ok = 1;
     *z_root = zb;
     return 1;
+}
+
+/* A held element's reaction at the kept state: K w there (w beyond the span folded into K's
+ * diagonal at its ends) less the working rows' g lambda on it, N. */
+static double held_reaction(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            size_t e)
+{
+    const size_t f0 = c->f0, f1 = c->f1;
+    const double *w = c->pred_w;
+    double r = tirenv_springs__cc_k_diag(T, f0, f1, e) * w[e] -
+               T->k_ir * ((e > f0 ? w[e - 1] : 0) + (e < f1 ? w[e + 1] : 0));
+    for (size_t s = 0; s < 2 * c->n_schur; ++s)
+        r -= c->pred_el[s] == e ? c->pred_gl[s] : 0;
+    return r;
+}
+
+/* Where the working set changes with x: at the ends of the runs of held elements (a free
+ * chain's end element coming down onto its ray's row, or the held one beside it lifting
+ * off), and on the working rows' elements. Inside a run on one face the reactions stay
+ * positive; elsewhere the update's check at the root still decides. */
+int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
+                                  const tirenv_springs__cc_tire *T, const double h[],
+                                  double tol, double tol_f, size_t *e_out, int *hold)
+{
+    const size_t f0 = c->f0, f1 = c->f1, *ch = c->chains, n_ch = c->n_chains;
+    const size_t *wpos = c->wpos;
+    const double *w = c->pred_w;
+    double worst = tol;
+    size_t e_w = SIZE_MAX;
+    for (size_t q = 0; q < n_ch; ++q)
+        for (size_t m = 0; m < 2; ++m) {
+            const size_t e = ch[2 * q + m];
+            if (h[e] - w[e] > worst) {
+                worst = h[e] - w[e];
+                e_w = e;
+            }
+        }
+    if (e_w != SIZE_MAX) {
+        *e_out = e_w;
+        *hold = 1;
+        return 1;
+    }
+    double r_w = -tol_f;
+    for (size_t q = 0; q <= n_ch; ++q) { /* the held elements beside each chain, the span's */
+        const size_t ends[2] = {q < n_ch ? ch[2 * q] - 1 : f0, q < n_ch ? ch[2 * q + 1] + 1 : f1};
+        for (size_t m = 0; m < 2; ++m) {
+            const size_t e = ends[m];
+            if (e < f0 || e > f1 || wpos[e] != SIZE_MAX)
+                continue;
+            const double r = held_reaction(c, T, e);
+            if (r < r_w) {
+                r_w = r;
+                e_w = e;
+            }
+        }
+    }
+    for (size_t s = 0; s < 2 * c->n_schur; ++s) {
+        const size_t e = c->pred_el[s];
+        if (wpos[e] != SIZE_MAX)
+            continue;
+        const double r = held_reaction(c, T, e);
+        if (r < r_w) {
+            r_w = r;
+            e_w = e;
+        }
+    }
+    if (e_w == SIZE_MAX)
+        return 0;
+    *e_out = e_w;
+    *hold = 0;
+    return 1;
+}
+
+int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t e, int hold)
+{
+    size_t *held = c->held, n = c->n_held, m = 0;
+    while (m < n && held[m] < e)
+        ++m;
+    if (hold) { /* into the ascending list */
+        memmove(held + m + 1, held + m, (n - m) * sizeof *held);
+        held[m] = e;
+        c->wpos[e] = SIZE_MAX;
+        ++c->n_held;
+    } else {
+        memmove(held + m, held + m + 1, (n - m - 1) * sizeof *held);
+        c->wpos[e] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
+        --c->n_held;
+    }
+    /* the next layout lays out its own KKT system (wpos no longer the last one's) */
+    c->last_ok = 0;
+    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        return 1;
+    }
+    return 0;
 }

@@ -131,8 +131,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         const size_t e = V[k].i;
         if (V[k].t != 0 || pin[e] != V[k].id || wpos[e] != SIZE_MAX)
             continue; /* not the row e stands on now, or e free */
-        if (rows[pin_row[e]].id != V[k].id)
-            return 0; /* e held on its ray's row, or another vertex's, at the base */
+        if (pin_row[e] == SIZE_MAX || rows[pin_row[e]].id != V[k].id)
+            return 0; /* e held on its ray's row, or another vertex's, at the base (or held
+                       * by the start at a new x, with no row at the base) */
         ++n_same;
     }
     if (n_same != c->held_vertex)
