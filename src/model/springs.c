@@ -710,7 +710,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         const size_t n_held = c->n_held;
         if ((n_held > 0 && (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
             !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held, s->memo,
-                                       z0, s->rho, s->dd, s->pred_face))
+                                       s->face, z0, s->rho, s->dd, s->pred_face))
             return 0;
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
                                         s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))

@@ -136,12 +136,15 @@ double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__f
  * face that memo[i]'s walk ended on (from any origin on the same profile), extended as a
  * line, into rho[i]: what the ray finds where it still crosses that face first (not
  * checked); its d(rho)/dz there into drho[i] (as tirenv_springs__fan_drho gives it, kept in
- * the memo), and the memo into faces[i]. Returns 0 at a memo with no face. O(1) a ray: the
+ * the memo; from kept[i], the face ray i last had one computed on, where it is that face,
+ * else into it), and the memo into faces[i]. On a segment rho is the face's height below the
+ * centre times d(rho)/dz, the height once for the rays on one face. Returns 0 at a memo with no face. O(1) a ray: the
  * held rays at a new x before any fan is cast there (springs.c). */
 int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
-                              tirenv_springs__ray_memo memo[], double z, double rho[],
-                              double drho[], tirenv_springs__ray_memo faces[]);
+                              tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
+                              double z, double rho[], double drho[],
+                              tirenv_springs__ray_memo faces[]);
 
 /* The same for one ray i: its rho, or NAN where memo m has no face. */
 double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,

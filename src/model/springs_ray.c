@@ -458,19 +458,45 @@ double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__f
 
 int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
-                              tirenv_springs__ray_memo memo[], double z, double rho[],
-                              double drho[], tirenv_springs__ray_memo faces[])
+                              tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
+                              double z, double rho[], double drho[],
+                              tirenv_springs__ray_memo faces[])
 {
+    const double *X = p->x, *Z = p->z;
+    long j_run = -2; /* the segment face of the rays before, and z less its height at x */
+    int dir_run = 0;
+    double zf = 0;
     for (size_t k = 0; k < n; ++k) {
         const size_t i = rays[k];
         tirenv_springs__ray_memo *m = &memo[i];
-        const double v = face_rho(p, o, r, i, m, z);
+        const int dir = i > r->i0 ? 1 : -1;
+        if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
+            const tirenv_springs__ray_memo *f = &kept[i];
+            if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
+                m->drho = f->drho;
+            } else {
+                m->drho = slope_drho(p, m->j, dir, m->kind, r->sin_t[i], r->cos_t[i]);
+                kept[i] = *m;
+            }
+        }
+        const long jp = m->j - dir;
+        double v;
+        if (m->kind == RAY_HIT && jp >= 0 && jp < (long)p->n) {
+            /* rho (cos + sin dZ/dX) = z - (the face's height under the centre): once a
+             * face, then its d(rho)/dz */
+            if (m->j != j_run || dir != dir_run) {
+                j_run = m->j;
+                dir_run = dir;
+                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
+                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            }
+            v = zf * m->drho;
+        } else {
+            v = face_rho(p, o, r, i, m, z);
+        }
         if (!isfinite(v))
             return 0;
         rho[i] = v;
-        if (isnan(m->drho))
-            m->drho = slope_drho(p, m->j, i > r->i0 ? 1 : -1, m->kind, r->sin_t[i],
-                                 r->cos_t[i]);
         drho[i] = m->drho;
         faces[i] = *m;
     }
