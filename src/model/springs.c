@@ -96,6 +96,14 @@ struct tirenv_springs {
     size_t updates;        /* evaluations the update gave (what the tests count) */
     /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there */
     size_t starts, start_updates;
+    /* the continuous contact's evaluations since the last start was asked for, and whether
+     * one accepted its root: what the start from the closed form's pins goes by */
+    size_t evals;
+    int start_taken;
+    /* the last evaluation was the closed form's, at height pins_z (m), its pins in active
+     * over [a, b], its x and slope upd_x and upd_dfz_dz */
+    int pins_ok;
+    double pins_z;
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -497,6 +505,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         *dfz_dz = 0;
     if (contacts)
         *contacts = 0;
+    ++s->evals;
     size_t f0 = 1, f1 = 0;
     if (any) {
         /* Each ray's memo is a proof of its own (springs_ray.c): the rays whose memos fail
@@ -544,6 +553,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         s->cc.base_ok = 0;
         s->cc.pred_ok = 0;
+        s->pins_ok = 0;
         const int status =
             tirenv_springs__cc_rows(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, diag);
         if (status)
@@ -614,6 +624,12 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                                  : R->dh_dz;
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+        /* the pins, the base of the next x's start where it asks for one (the base is
+         * made from them then: s->active holds them until the next evaluation) */
+        s->pins_ok = 1;
+        s->pins_z = z;
+        s->upd_x = x;
+        s->upd_serial = prof->serial;
     } else {
         /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
          * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
@@ -641,6 +657,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
             s->cc.base_z = z;
             s->cc.base_ok = 1;
+            s->cc.base_pins = 0;
             s->upd_x = x;
             s->upd_serial = prof->serial;
         }
@@ -693,6 +710,23 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                           double G, double *z)
 {
     tirenv_springs__cc *c = &s->cc;
+    /* The last position's evaluations, and whether its start held. */
+    const size_t last_evals = s->evals;
+    const int last_taken = s->start_taken;
+    s->evals = 0;
+    s->start_taken = 0;
+    /* From the closed form's pins only where the last position needed Newton's steps or
+     * a start: where it met the load at its warm start (level ground beside an obstacle)
+     * the warm start is as good, and the fan the start casts is spent. The base is made
+     * from them here, once (the next position's start takes it as it stands). */
+    if (s->pins_ok && !c->base_ok) {
+        if (last_evals < 2 && !last_taken)
+            return 0;
+        s->pins_ok = 0;
+        if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || s->a > s->b ||
+            !tirenv_springs__cc_base_pins(c, &s->cc_tire, s->a, s->b, s->active, s->pins_z))
+            return 0;
+    }
     /* At a new x, after a QP solve at another on this ground whose held elements sit on
      * their rays' rows. */
     if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || !c->base_ok || s->upd_x == x ||
@@ -708,13 +742,35 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
          * d(rho)/dz there (the face's), into rho and dd: no fan is cast (the evaluation at
          * the root casts it, and checks the faces). */
         const size_t n_held = c->n_held;
-        if ((n_held > 0 && (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
-            !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held, s->memo,
-                                       s->face, z0, s->rho, s->dd, s->pred_face))
+        if (c->base_pins) {
+            /* a road's rays end on other faces at each x: the fan at (x, z0) */
+            size_t a = 1, b = 0;
+            if (round == 0) {
+                if (!candidate_span(s, z0, &a, &b))
+                    return 0;
+                tirenv_springs__fan(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
+                s->ray_a = s->memo_a = a;
+                s->ray_b = s->memo_b = b;
+            }
+            if (n_held > 0 && (c->held[0] < s->ray_a || c->held[n_held - 1] > s->ray_b))
+                return 0;
+            for (size_t m = 0; m < n_held; ++m) {
+                const size_t e = c->held[m];
+                if (!isfinite(s->rho[e]))
+                    return 0;
+                s->dd[e] = ray_drho(s, prof, e);
+                s->pred_face[e] = s->memo[e];
+            }
+        } else if ((n_held > 0 &&
+                    (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
+                   !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held,
+                                              s->memo, s->face, z0, s->rho, s->dd,
+                                              s->pred_face))
             return 0;
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
                                         s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
             return 0;
+        s->start_taken = 1; /* (a root proposed: the next position asks for one too) */
         /* The free elements' own rays at the root, on their last faces too (h: NAN where
          * none), and the held ones' reactions: where one is violated, the element's row
          * enters or leaves the working set (K_FF factorised again) and the root is found
@@ -881,6 +937,9 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
+    s->evals = 0;
+    s->start_taken = 0;
+    s->pins_ok = 0;
     if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
         tirenv_springs__cc_forget(&s->cc);
         s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;

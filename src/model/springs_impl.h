@@ -480,6 +480,7 @@ typedef struct {
      * N/m; written by tirenv_springs__cc_slope for every row, cap_dl of room), and its centre
      * height (base_z, m). The caller sets base_ok once it has the slope and base_w. */
     int base_ok;
+    int base_pins;         /* the base is the closed form's (tirenv_springs__cc_base_pins) */
     double base_z;
     double *base_w, *upd_w;  /* N + 2 each; upd_w is the update's scratch, indexed the same */
     double *upd_pe;        /* N: the update's net reactions (N) until it accepts them */
@@ -628,6 +629,15 @@ int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
  * factorised again: 0, or 1 (the base is then dropped: base_ok 0) where it cannot be. */
 int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                  size_t e, int hold);
+
+/* After the closed form's evaluation at centre height z (m) held the elements pinned[e] of
+ * [f0, f1] on their own rows with no row between elements working: that state as the base of
+ * tirenv_springs__start at the next x (c->f0, f1, wpos, held, K_FF's factor; base_pins, so
+ * that neither the update's tangent nor tirenv_springs__cc_root takes it). 1, or 0 where an
+ * element is pinned on a ground vertex (or the factor fails): no base. */
+int tirenv_springs__cc_base_pins(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t f0, size_t f1, const unsigned char pinned[],
+                                 double z);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

@@ -259,7 +259,7 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
 {
     c->pred_ok = 0;
     const size_t f0 = c->f0, f1 = c->f1, k = c->n_schur;
-    if (!c->base_ok || !c->use_schur || f0 > f1 || k > K_MAX || !(dF0 < 0))
+    if (!c->base_ok || c->base_pins || !c->use_schur || f0 > f1 || k > K_MAX || !(dF0 < 0))
         return 0;
     const double z0 = c->base_z, *base_w = c->base_w + 1;
     /* The held elements on their rays' rows (linear in z), not on ground vertices: the
@@ -494,4 +494,35 @@ int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc
         return 1;
     }
     return 0;
+}
+
+int tirenv_springs__cc_base_pins(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t f0, size_t f1, const unsigned char pinned[],
+                                 double z)
+{
+    size_t n_held = 0, on_vertex = 0;
+    for (size_t e = f0; e <= f1; ++e) {
+        if (pinned[e]) {
+            c->wpos[e] = SIZE_MAX;
+            c->held[n_held++] = e;
+            on_vertex += c->rows[c->pin_row[e]].id >= 0;
+        } else {
+            c->wpos[e] = 0;
+        }
+    }
+    c->f0 = f0;
+    c->f1 = f1;
+    c->n_held = n_held;
+    c->held_vertex = on_vertex;
+    c->n_schur = 0;
+    c->use_schur = 1;
+    c->last_ok = 0; /* wpos is no longer the last KKT layout's */
+    c->base_ok = 0;
+    c->pred_ok = 0;
+    if (on_vertex > 0 || tirenv_springs__cc_schur_factor(c, T, 0))
+        return 0;
+    c->base_pins = 1;
+    c->base_z = z;
+    c->base_ok = 1;
+    return 1;
 }

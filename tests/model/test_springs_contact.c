@@ -450,7 +450,10 @@ static void test_derivative_on_roads(void **state)
 }
 
 /* The result depends on the final active set only, not on the warm start: a sweep's every
- * position evaluated again by a fresh model gives the same bits. */
+ * position evaluated again by a fresh model gives the same forces, to round-off: a position
+ * the start at a new x settled (springs.c, tirenv_springs__start) reports the update's state
+ * on the last position's working set, the QP's solution to some 1e-14 R0 in w (its own
+ * arithmetic, not the closed form's), so within 1e-9 of F_z as the root's test allows. */
 static void test_warm_start_invisible(void **state)
 {
     (void)state;
@@ -468,8 +471,8 @@ static void test_warm_start_invisible(void **state)
         assert_int_equal(tirenv_springs_forces(cold, p, x, a.z, &fx, &fz, &dfz, NULL, NULL), 0);
         b.fx = fx;
         b.fz = fz;
-        assert_memory_equal(&a.fz, &b.fz, sizeof a.fz);
-        assert_memory_equal(&a.fx, &b.fx, sizeof a.fx);
+        assert_near(a.fz, b.fz, 1e-9 * fabs(b.fz), 0);
+        assert_near(a.fx, b.fx, 1e-9 * fabs(b.fz), 0);
         tirenv_springs_free(cold);
     }
     tirenv_model_free(warm);
