@@ -463,6 +463,8 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
     const double z_c = same ? flat.z : z_flat + u;
     st->z_flat = z_c;
     tirenv_deformable_history_clear(&st->prev);
+    if (st->def->reprofile) /* what the workspace carries from position to position, too */
+        st->def->reprofile(st->elem, NULL, p);
     int status = TIRENV_OK;
     if (!(same && flat.z == z_c))
         status = st->def->forces(st->flat_elem, st->flat, 0, z_c, &flat, diag);
@@ -568,6 +570,8 @@ static int deformable_set_profile(void *state, const tirenv_profile *p, double l
     (void)load;
     (void)z_flat;
     (void)diag;
+    if (st->def->reprofile && st->prof && p)
+        st->def->reprofile(st->elem, st->prof, p);
     st->prof = p;
     return TIRENV_OK;
 }

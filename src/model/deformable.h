@@ -33,6 +33,11 @@ struct tirenv_deformable {
      * NULL: none. */
     int (*start)(void *elem, const tirenv_profile *p, double x, double z0, double G,
                  double *z);
+    /* The profile the workspace evaluates on changes from old to p (a streamed road's next
+     * window: the same ground), so that what it carries from one position to the next
+     * follows; old NULL: a new sweep on p (tirenv_model_set), nothing carried. NULL: the
+     * workspace carries nothing. */
+    void (*reprofile)(void *elem, const tirenv_profile *old, const tirenv_profile *p);
     /* Flat-ground contact length (m) with the centre at height z (m): the length of ground
      * the tread touches, which grows continuously as the centre comes down to the lowest
      * height of the valid range (lowest_z), so that deformable.c finds the height of a

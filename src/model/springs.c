@@ -3,10 +3,12 @@
  * layout, stiffness, and the hub forces for a given centre position. */
 #include "tirenv/springs.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "model/model_impl.h"
 #include "model/springs_impl.h"
 #include "profile/profile_impl.h"
 
@@ -104,6 +106,7 @@ struct tirenv_springs {
      * over [a, b], its x and slope upd_x and upd_dfz_dz */
     int pins_ok;
     double pins_z;
+    double eval_x;         /* the x of the last evaluation, m */
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -506,6 +509,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     if (contacts)
         *contacts = 0;
     ++s->evals;
+    s->eval_x = x;
     size_t f0 = 1, f1 = 0;
     if (any) {
         /* Each ray's memo is a proof of its own (springs_ray.c): the rays whose memos fail
@@ -544,6 +548,10 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+            /* the base's working rows (its solve's, none from the closed form's pins), as
+             * the solve had them: the next evaluation's path, whichever x it is at */
+            s->cc.between = !s->cc.base_pins && s->cc.n_warm > 0;
+            s->cc.between_z = z;
             if (contacts)
                 *contacts = n_contacts;
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
@@ -735,8 +743,20 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         return 0;
     if (s->memo_serial != prof->serial)
         return 0;
+    /* Only what lies within the model's reach of x (the deformable models', whose window a
+     * streamed road keeps) is read of the ground the last position left (its rows'
+     * vertices, its rays' faces), and only from a position at most half of it back: a
+     * streamed road's window holds all of that (the carry moved into it,
+     * tirenv_springs__reprofile), so that whole and streamed sweeps start alike. */
+    const double R0 = s->par.R0, reach = TIRENV_MODEL__REACH * R0;
+    if (!(fabs(x - s->eval_x) <= 0.5 * reach))
+        return 0;
+    tirenv_springs__face_window fw;
+    tirenv_springs__face_window_at(prof, x - reach, x + reach, &fw);
+    for (size_t q = 0; q < c->n_schur; ++q)
+        if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
+            return 0;
     set_origin(s, prof, x);
-    const double R0 = s->par.R0;
     for (int round = 0;; ++round) {
         /* Each held element's ray at (x, z0) on the face its last walk ended on, and its
          * d(rho)/dz there (the face's), into rho and dd: no fan is cast (the evaluation at
@@ -764,7 +784,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         } else if ((n_held > 0 &&
                     (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
                    !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held,
-                                              s->memo, s->face, z0, s->rho, s->dd,
+                                              s->memo, s->face, z0, &fw, s->rho, s->dd,
                                               s->pred_face))
             return 0;
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
@@ -781,7 +801,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                 const size_t e = c->chains[2 * q + m];
                 h[e] = e >= s->memo_a && e <= s->memo_b
                            ? R0 - tirenv_springs__face_rho(prof, &s->origin, &s->rays, e,
-                                                           &s->memo[e], *z)
+                                                           &s->memo[e], *z, &fw)
                            : NAN;
             }
         size_t e;
@@ -798,6 +818,65 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     }
     ++s->starts;
     return 1;
+}
+
+void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
+                               const tirenv_profile *p)
+{
+    tirenv_springs__cc *c = &s->cc;
+    if (!old) { /* a new sweep: nothing carried from the last one's positions (nor which
+                 * path its first evaluation takes) */
+        c->between = 0;
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        s->pins_ok = 0;
+        s->memo_serial = 0;
+        s->evals = 0;
+        s->start_taken = 0;
+        return;
+    }
+    const int carry = s->upd_serial == old->serial || s->memo_serial == old->serial;
+    if (!carry || old == p || old->n == 0 || p->n == 0)
+        return;
+    /* The offset of the vertices: the last vertex at or before the last evaluation's x in
+     * old, which the next window keeps (the row left of x - reach stays), found in p. */
+    const size_t k = tirenv_profile__segment_at(old, s->eval_x);
+    const double X = old->x[k];
+    size_t k_new = tirenv_profile__segment_at(p, X);
+    if (k + 1 < old->n && old->x[k + 1] == X && k_new > 0) /* the first of a wall's two */
+        --k_new;
+    const long off = (long)k_new - (long)k;
+    if (!(p->x[k_new] == X && p->z[k_new] == old->z[k])) { /* other ground: carry nothing */
+        tirenv_springs__reprofile(s, NULL, p);
+        return;
+    }
+    /* Each vertex the carry names moved by off where p has it (else no longer named: the
+     * start, which reads only what lies within reach, refuses it as it would the whole
+     * road's there). */
+    for (size_t r = 0; r < c->n_rows; ++r) {
+        const long id = c->rows[r].id, m = id + off;
+        if (id >= 0)
+            c->rows[r].id = m >= 0 && (size_t)m < p->n && id < (long)old->n &&
+                                    p->x[m] == old->x[id] && p->z[m] == old->z[id]
+                                ? m
+                                : LONG_MAX;
+    }
+    int warm = 1;
+    for (size_t q = 0; q < c->n_warm; ++q) {
+        const long id = c->warm_ids[q], m = id + off;
+        warm = warm && m >= 0 && (size_t)m < p->n && id < (long)old->n &&
+               p->x[m] == old->x[id] && p->z[m] == old->z[id];
+        c->warm_ids[q] = m;
+    }
+    if (!warm)
+        c->n_warm = 0; /* (the QP's warm start: how fast, not what it finds) */
+    for (size_t i = s->memo_a; i <= s->memo_b && i < s->N; ++i)
+        tirenv_springs__memo_reprofile(old, p, off, &s->memo[i]);
+    c->last_ok = 0;
+    if (s->upd_serial == old->serial)
+        s->upd_serial = p->serial;
+    if (s->memo_serial == old->serial)
+        s->memo_serial = p->serial;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,

@@ -37,6 +37,13 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
  * an element held on a ground vertex, the same x). */
 int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
                           double G, double *z);
+/* The profile the model evaluates on is now p, not old (a streamed road's next window, the
+ * same ground): what tirenv_springs__start carries from the last position is moved onto p's
+ * vertices, where p has them (nothing is carried where p is other ground). old NULL: a new
+ * sweep on p, nothing carried. */
+void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
+                               const tirenv_profile *p);
+
 /* The roots tirenv_springs__start found so far, and the updates accepted at them (for the
  * tests). */
 void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates);
@@ -132,24 +139,43 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                 size_t i, tirenv_springs__ray_memo *m);
 
+/* The ground a streamed road's window holds around x in any case, its vertices k_lo .. k_hi
+ * (from the last at or before x_lo = x - reach to the first after x_hi = x + reach): what
+ * the start at a new x may read of the faces the last position's rays found (springs.c), so
+ * that a whole sweep and a streamed one read the same. */
+typedef struct {
+    long k_lo, k_hi;
+    double x_lo, x_hi;  /* m */
+} tirenv_springs__face_window;
+void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double x_hi,
+                                    tirenv_springs__face_window *w);
+/* Whether vertex id lies within w. */
+int tirenv_springs__face_window_has(const tirenv_springs__face_window *w, long id);
+
 /* For each ray i = rays[0..n): its rho (m) from the origin o's centre at height z to the
  * face that memo[i]'s walk ended on (from any origin on the same profile), extended as a
  * line, into rho[i]: what the ray finds where it still crosses that face first (not
  * checked); its d(rho)/dz there into drho[i] (as tirenv_springs__fan_drho gives it, kept in
  * the memo; from kept[i], the face ray i last had one computed on, where it is that face,
  * else into it), and the memo into faces[i]. On a segment rho is the face's height below the
- * centre times d(rho)/dz, the height once for the rays on one face. Returns 0 at a memo with no face. O(1) a ray: the
+ * centre times d(rho)/dz, the height once for the rays on one face. Returns 0 at a memo with
+ * no face, or one whose face is not within w (tirenv_springs__face_window_at). O(1) a ray: the
  * held rays at a new x before any fan is cast there (springs.c). */
 int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
                               tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
-                              double z, double rho[], double drho[],
-                              tirenv_springs__ray_memo faces[]);
+                              double z, const tirenv_springs__face_window *w, double rho[],
+                              double drho[], tirenv_springs__ray_memo faces[]);
 
 /* The same for one ray i: its rho, or NAN where memo m has no face. */
 double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                                 const tirenv_springs__fan_rays *r, size_t i,
-                                const tirenv_springs__ray_memo *m, double z);
+                                const tirenv_springs__ray_memo *m, double z,
+                                const tirenv_springs__face_window *w);
+/* Memo m of a walk on profile old as one on p, whose vertex k + off is old's k (a streamed
+ * road's next window): its vertex moved by off where p has it, else no face (j = -2). */
+void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_profile *p,
+                                    long off, tirenv_springs__ray_memo *m);
 
 /* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
  * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an

@@ -64,6 +64,12 @@ static int springs_start(void *elem, const tirenv_profile *p, double x, double z
     return tirenv_springs__start(e->s, p, x, z0, G, z);
 }
 
+static void springs_reprofile(void *elem, const tirenv_profile *old, const tirenv_profile *p)
+{
+    springs_elem *e = elem;
+    tirenv_springs__reprofile(e->s, old, p);
+}
+
 /* docs/models.md section 1.3: the springs model's contact length is the length of ground its
  * tread touches, as the ring's: from the first to the last element with a positive contact
  * reaction, each end extended towards its free neighbour to where the "compression"
@@ -195,6 +201,7 @@ static const tirenv_deformable springs_deformable = {
     .forces = springs_forces,
     .root = springs_root,
     .start = springs_start,
+    .reprofile = springs_reprofile,
     .contact_length = springs_contact_length,
     .lowest_z = springs_lowest_z,
     .bracket = springs_bracket,
