@@ -394,6 +394,65 @@ static void test_reuse_after_failure(void **state)
     }
 }
 
+/* The model's first iterate (tirenv_eq_problem's start): Newton evaluates there instead of
+ * at z0 where it lies inside the bracket, so that a start at the root is the whole solve (one
+ * evaluation, the residual's stop); one outside the bracket, or a model proposing none, leaves
+ * the solve as it was, evaluation for evaluation. The smooth law of the table, its root
+ * known. */
+typedef struct {
+    double z;              /* the start proposed, m */
+    int has;               /* whether one is proposed */
+    double z0_seen;        /* the z0 it was asked from, m */
+} proposal;
+
+static proposal the_proposal;
+
+static int propose(void *ctx, double z0, double *z)
+{
+    (void)ctx;
+    the_proposal.z0_seen = z0;
+    *z = the_proposal.z;
+    return the_proposal.has;
+}
+
+static void test_model_start(void **state)
+{
+    (void)state;
+    const eq_case *c = &cases[0]; /* smooth, warm start below the root */
+    const double G = c->G, root = smooth_a - pow(G / smooth_k, 2.0 / 3.0);
+    const tirenv_eq_settings eq = tirenv_eq_default();
+    tirenv_eq_solver *s = tirenv_eq__solver_alloc(tirenv_eq__newton);
+    assert_non_null(s);
+    tirenv_eq_result plain, res;
+    recorder r0 = {.L = &c->L, .n = 0};
+    assert_int_equal(tirenv_eq__solve(s, &eq, force, &r0, G, &c->prob, &plain, NULL), 0);
+    assert_true(plain.evals > 1);
+    const struct {
+        double z;
+        int has;
+        int taken;
+    } starts[] = {{root, 1, 1}, {c->prob.z_hi + 0.0137, 1, 0}, {c->prob.z_lo - 0.21, 1, 0},
+                  {root, 0, 0}};
+    for (size_t k = 0; k < sizeof starts / sizeof starts[0]; ++k) {
+        the_proposal = (proposal){.z = starts[k].z, .has = starts[k].has, .z0_seen = NAN};
+        tirenv_eq_problem prob = c->prob;
+        prob.start = propose;
+        recorder r = {.L = &c->L, .n = 0};
+        assert_int_equal(tirenv_eq__solve(s, &eq, force, &r, G, &prob, &res, NULL), 0);
+        assert_true(the_proposal.z0_seen == c->prob.z0); /* asked from the warm start */
+        if (starts[k].taken) {
+            assert_int_equal(res.evals, 1);
+            assert_true(r.log[0].z == root);
+            assert_int_equal(res.stop, TIRENV_EQ_RESIDUAL);
+        } else {
+            assert_int_equal(res.evals, plain.evals);
+            assert_true(r.log[0].z == c->prob.z0);
+            assert_memory_equal(&res.point.z, &plain.point.z, sizeof res.point.z);
+        }
+    }
+    tirenv_eq__solver_free(s);
+}
+
 static void test_names(void **state)
 {
     (void)state;
@@ -424,6 +483,7 @@ int main(void)
         cmocka_unit_test(test_steps_by_hand),
         cmocka_unit_test(test_reuse_after_failure),
         cmocka_unit_test(test_slope_on_request),
+        cmocka_unit_test(test_model_start),
         cmocka_unit_test(test_names),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
