@@ -539,12 +539,16 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         /* Newton's confirming evaluation: the last QP solve's state carried along its
          * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
          * the same faces: reused); or at a new x, the state tirenv_springs__start proposed
-         * there on the last position's working set. */
+         * there on the last position's working set, its held rays on the faces it took
+         * (from the closed form's pins, whatever faces: on a road sampled at 1 mm a held
+         * ray often passes a vertex between the warm start and the root, and the update's
+         * corrections, K_FF's own solves there, find the state at z all the same; F_z is
+         * then off the load by what that ray's kink moved, and Newton goes on). */
         const tirenv_springs__cc *c = &s->cc;
         if (dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
             (s->upd_x == x ? reused
                            : c->pred_ok && c->pred_x == x && c->pred_z == z &&
-                                 same_faces(s)) &&
+                                 (c->base_pins || same_faces(s))) &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
