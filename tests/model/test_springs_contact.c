@@ -814,7 +814,9 @@ static void test_root_is_the_equilibrium(void **state)
  * (tirenv_springs__start, springs_root.c's tirenv_springs__cc_root_at): its evaluation
  * there is the update's check at that x, and where the update accepts it the state must be
  * the QP's solution, so a fresh model's F_z there within 1e-6 N of the load (as the root at
- * the same x above); where it refuses (a contact that begins or ends, a vertex entering a
+ * the same x above; from the closed form's pins the update is also tried where a held ray
+ * passed a vertex on the way, which would leave F_z off the load by that ray's kink: not met
+ * on these seeds, and the forces are a fresh model's either way); where it refuses (a contact that begins or ends, a vertex entering a
  * sector, a ray onto another face) the evaluation is the full one, so the forces and tips
  * are a fresh model's either way (1e-9 of F_z, 1e-13 R0 as above). Seeded random obstacles
  * and roads, steps of 0.5 to 3 mm, loads 1e-6 to 1e-3 m off the last evaluation; then a
