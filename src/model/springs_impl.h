@@ -513,10 +513,11 @@ typedef struct {
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
-    /* The base's working set carried to where F_z meets the load (tirenv_springs__cc_root),
-     * while pred_ok: its position and height (pred_x, pred_z, m), w on the free elements of [f0, f1] (pred_w[e],
-     * m) and the working rows between elements' reactions (pred_lam, N, in schur_pos'
-     * order), the update's start at pred_z; root_y its scratch (N + 2 each). */
+    /* The base's working set carried to where F_z meets the load (tirenv_springs__cc_root,
+     * or at another x tirenv_springs__cc_root_at), while pred_ok: its position and height
+     * (pred_x, pred_z, m), w on [f0, f1] (pred_w[e], m) and the working rows between
+     * elements' reactions (pred_lam, N, in schur_pos' order), the update's start there;
+     * root_y its scratch (N + 2 each). */
     int pred_ok;
     double pred_x, pred_z;
     double *pred_w, *root_y;
