@@ -602,8 +602,10 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
 
 /* The state at centre height z of the last QP solve's working set, had by its tangent from
  * the solve's height (springs_update.c, docs/models.md section 4.8, Cost): w = w_0 + (z -
- * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope; at
- * c->pred_z, while c->pred_ok, the state tirenv_springs__cc_root solved for), w_e = h on
+ * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope; the tangent
+ * only at the base's x, which the caller checks, and never from the closed form's pins; at
+ * (c->pred_x, c->pred_z), while c->pred_ok, the state tirenv_springs__cc_root or _root_at
+ * solved for, on the working set as the start left it), w_e = h on
  * the held ones, the rows between elements' reactions likewise, the held ones' from K w =
  * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
  * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
