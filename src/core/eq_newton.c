@@ -10,7 +10,9 @@
  * that next correction are within eps_F and eps_z (section 11.3), or when the bracket is
  * narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes the face it
  * hits, so its length jumps), and then the equilibrium is the jump, located to eps_z, and the
- * end of the bracket with the smaller residual is reported as it was evaluated. */
+ * end of the bracket with the smaller residual is reported as it was evaluated. The first
+ * iterate is the model's proposal where it makes one inside the bracket (prob.start: the
+ * springs model's root at a new x on the last position's working set), else z0. */
 #include "core/equilibrium.h"
 
 #include <math.h>
@@ -72,8 +74,12 @@ static int newton_set(void *state, tirenv_eq_solver *s, tirenv_eq_stop *stop,
     *st = (newton_state){.lo = prob->z_lo, .hi = prob->z_hi, .f_lo = NAN, .f_hi = -s->G,
                          .lo_checked = 0, .down = prob->dz_hint, .dz_old = INFINITY,
                          .last_dz = INFINITY, .k = NAN};
+    double z = fmin(fmax(prob->z0, st->lo), st->hi), z_start;
+    if (prob->start && prob->start(s->ctx, z, &z_start) && z_start > st->lo &&
+        z_start < st->hi)
+        z = z_start;
     tirenv_eq_point p;
-    int status = tirenv_eq__eval(s, fmin(fmax(prob->z0, st->lo), st->hi), &p, stop, diag);
+    int status = tirenv_eq__eval(s, z, &p, stop, diag);
     if (!status)
         status = take(st, s, &p, stop, diag);
     return status;

@@ -47,6 +47,13 @@ typedef struct {
      * where Newton does not need it (eq_newton.c); NULL: every evaluation gives it. Nonzero
      * if it cannot. */
     int (*slope)(void *ctx, double *dF_dz);
+    /* A first iterate the model proposes instead of z0 (the springs model's root at this x
+     * on the last position's QP working set, docs/models.md section 4.8, Cost), for Newton
+     * (eq_newton.c; the other methods ignore it): returns 1 with *z (m), which Newton takes
+     * if it lies inside (z_lo, z_hi), or 0 (z0 is taken). The model's evaluation there
+     * decides as any evaluation: the solver's own test accepts it or goes on from it. NULL:
+     * none. */
+    int (*start)(void *ctx, double z0, double *z);
 } tirenv_eq_problem;
 
 /* Why a solve stopped. */

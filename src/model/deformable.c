@@ -67,6 +67,13 @@ static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag
     return status;
 }
 
+/* The model's first iterate at the position, for Newton (tirenv_eq_problem's start). */
+static int start_at(void *ctx, double z0, double *z)
+{
+    const force_ctx *c = ctx;
+    return c->st->def->start(c->st->elem, c->prof, c->x, z0, c->st->G, z);
+}
+
 /* The slope of force_at's last evaluation, which left it out (defer_slope). */
 static int slope_at(void *ctx, double *dF_dz)
 {
@@ -456,6 +463,8 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
     const double z_c = same ? flat.z : z_flat + u;
     st->z_flat = z_c;
     tirenv_deformable_history_clear(&st->prev);
+    if (st->def->reprofile) /* what the workspace carries from position to position, too */
+        st->def->reprofile(st->elem, NULL, p);
     int status = TIRENV_OK;
     if (!(same && flat.z == z_c))
         status = st->def->forces(st->flat_elem, st->flat, 0, z_c, &flat, diag);
@@ -561,6 +570,8 @@ static int deformable_set_profile(void *state, const tirenv_profile *p, double l
     (void)load;
     (void)z_flat;
     (void)diag;
+    if (st->def->reprofile && st->prof && p)
+        st->def->reprofile(st->elem, st->prof, p);
     st->prof = p;
     return TIRENV_OK;
 }
@@ -628,6 +639,7 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
                                               z_hi - deflection),
         .dz_hint = deflection,
         .slope = defer ? slope_at : NULL,
+        .start = st->def->start && st->tire.eq.method == TIRENV_EQ_NEWTON ? start_at : NULL,
     };
     force_ctx fc = {st, st->prof, x};
     tirenv_eq_result res;

@@ -26,6 +26,18 @@ struct tirenv_deformable {
      * forces() gave. NULL: no model step (Newton's own). */
     int (*root)(void *elem, const tirenv_profile *p, double x, double z, double G,
                 const tirenv_eq_point *at, double *z_root);
+    /* Before the first evaluation of the equilibrium at x (m) on p, whose start is z0 (m):
+     * a first iterate *z (m) of the model's own where it knows one better (the springs
+     * model's root at x on the last position's working set, docs/models.md section 4.8,
+     * Cost), returning 1; 0 where it has none. Newton's alone (tirenv_eq_problem's start).
+     * NULL: none. */
+    int (*start)(void *elem, const tirenv_profile *p, double x, double z0, double G,
+                 double *z);
+    /* The profile the workspace evaluates on changes from old to p (a streamed road's next
+     * window: the same ground), so that what it carries from one position to the next
+     * follows; old NULL: a new sweep on p (tirenv_model_set), nothing carried. NULL: the
+     * workspace carries nothing. */
+    void (*reprofile)(void *elem, const tirenv_profile *old, const tirenv_profile *p);
     /* Flat-ground contact length (m) with the centre at height z (m): the length of ground
      * the tread touches, which grows continuously as the centre comes down to the lowest
      * height of the valid range (lowest_z), so that deformable.c finds the height of a

@@ -3,10 +3,12 @@
  * layout, stiffness, and the hub forces for a given centre position. */
 #include "tirenv/springs.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "model/model_impl.h"
 #include "model/springs_impl.h"
 #include "profile/profile_impl.h"
 
@@ -67,6 +69,12 @@ struct tirenv_springs {
      * check and the copy cost more than the hits spared, +1.5 % over the class C road). */
     tirenv_springs__ray_memo *face;
     size_t face_hits;
+    /* The rays memo[memo_a..memo_b] were last walked on the profile of serial memo_serial
+     * (from any x: set_origin forgets them for reuse, not their faces); pred_face[e], the
+     * face tirenv_springs__start took held element e's ray to end on at the new x. */
+    size_t memo_a, memo_b;
+    unsigned long long memo_serial;
+    tirenv_springs__ray_memo *pred_face;
     /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
      * pins: the last one solved for is kept with them and given again, bit for bit, when they
      * recur (the second evaluation at an x, after Newton's step, nearly always). fans counts
@@ -88,6 +96,17 @@ struct tirenv_springs {
     double upd_x, upd_dfz_dz;
     unsigned long long upd_serial;
     size_t updates;        /* evaluations the update gave (what the tests count) */
+    /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there */
+    size_t starts, start_updates;
+    /* the continuous contact's evaluations since the last start was asked for, and whether
+     * one accepted its root: what the start from the closed form's pins goes by */
+    size_t evals;
+    int start_taken;
+    /* the last evaluation was the closed form's, at height pins_z (m), its pins in active
+     * over [a, b], its x and slope upd_x and upd_dfz_dz */
+    int pins_ok;
+    double pins_z;
+    double eval_x;         /* the x of the last evaluation, m */
     int refused;           /* the last evaluation found ground the rays cannot see */
     tirenv_diag refusal;   /* where, and what (when refused) */
 };
@@ -143,9 +162,10 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->slope.gap = calloc(2 * N, sizeof *s->slope.gap);
     s->memo = calloc(N, sizeof *s->memo);
     s->face = calloc(N, sizeof *s->face);
+    s->pred_face = calloc(N, sizeof *s->pred_face);
     s->pairs = calloc(4 * N, sizeof *s->pairs);
     if (!buf || !s->active || !s->pins.gap || !s->slope.gap || !s->memo || !s->face ||
-        !s->pairs) {
+        !s->pred_face || !s->pairs) {
         free(buf);
         tirenv_springs_free(s);
         return NULL;
@@ -202,6 +222,7 @@ void tirenv_springs_free(tirenv_springs *s)
     free(s->slope.gap);
     free(s->memo);
     free(s->face);
+    free(s->pred_face);
     free(s->pairs);
     tirenv_springs__cc_free(&s->cc);
     free(s);
@@ -419,6 +440,20 @@ static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, siz
     return m->drho;
 }
 
+/* Whether every held element's ray ends where tirenv_springs__start took it to (its walk
+ * ended at the same vertex in the same way: the same face), so that the root's rows were
+ * the rays' own. */
+static int same_faces(const tirenv_springs *s)
+{
+    const size_t *held = s->cc.held;
+    for (size_t m = 0, n_held = s->cc.n_held; m < n_held; ++m) {
+        const size_t e = held[m];
+        if (s->memo[e].j != s->pred_face[e].j || s->memo[e].kind != s->pred_face[e].kind)
+            return 0;
+    }
+    return 1;
+}
+
 /* The hub's forces (N) from the continuous contact's w over [f0, f1], the free chains beyond
  * folded into its ends (S_l*, S_r*), and the elements the ground presses, as with rays
  * (counted only where contacts is not NULL: the update counts its own). */
@@ -473,6 +508,8 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         *dfz_dz = 0;
     if (contacts)
         *contacts = 0;
+    ++s->evals;
+    s->eval_x = x;
     size_t f0 = 1, f1 = 0;
     if (any) {
         /* Each ray's memo is a proof of its own (springs_ray.c): the rays whose memos fail
@@ -486,6 +523,9 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             s->ray_a = a;
             s->ray_b = b;
         }
+        s->memo_a = s->ray_a;
+        s->memo_b = s->ray_b;
+        s->memo_serial = prof->serial;
         const int reused = walked == 0;
         size_t n_contacts;
         /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
@@ -498,20 +538,34 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         }
         /* Newton's confirming evaluation: the last QP solve's state carried along its
          * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
-         * the same faces: reused). */
-        if (reused && dfz_dz && s->cc.base_ok && s->upd_x == x &&
-            s->upd_serial == prof->serial &&
+         * the same faces: reused); or at a new x, the state tirenv_springs__start proposed
+         * there on the last position's working set, its held rays on the faces it took
+         * (from the closed form's pins, whatever faces: on a road sampled at 1 mm a held
+         * ray often passes a vertex between the warm start and the root, and the update's
+         * corrections, K_FF's own solves there, find the state at z all the same; F_z is
+         * then off the load by what that ray's kink moved, and Newton goes on). */
+        const tirenv_springs__cc *c = &s->cc;
+        if (dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
+            (s->upd_x == x ? reused
+                           : c->pred_ok && c->pred_x == x && c->pred_z == z &&
+                                 (c->base_pins || same_faces(s))) &&
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+            /* the base's working rows (its solve's, none from the closed form's pins), as
+             * the solve had them: the next evaluation's path, whichever x it is at */
+            s->cc.between = !s->cc.base_pins && s->cc.n_warm > 0;
+            s->cc.between_z = z;
             if (contacts)
                 *contacts = n_contacts;
             *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
             ++s->updates;
+            s->start_updates += s->upd_x != x;
             return TIRENV_OK;
         }
         s->cc.base_ok = 0;
         s->cc.pred_ok = 0;
+        s->pins_ok = 0;
         const int status =
             tirenv_springs__cc_rows(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, diag);
         if (status)
@@ -582,6 +636,12 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                                  : R->dh_dz;
         }
         tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+        /* the pins, the base of the next x's start where it asks for one (the base is
+         * made from them then: s->active holds them until the next evaluation) */
+        s->pins_ok = 1;
+        s->pins_z = z;
+        s->upd_x = x;
+        s->upd_serial = prof->serial;
     } else {
         /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
          * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
@@ -609,6 +669,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
             s->cc.base_z = z;
             s->cc.base_ok = 1;
+            s->cc.base_pins = 0;
             s->upd_x = x;
             s->upd_serial = prof->serial;
         }
@@ -622,6 +683,12 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
 size_t tirenv_springs__updates(const tirenv_springs *s)
 {
     return s->updates;
+}
+
+void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates)
+{
+    *starts = s->starts;
+    *updates = s->start_updates;
 }
 
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
@@ -645,6 +712,175 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
         return 0;
     return tirenv_springs__cc_root(&s->cc, &s->cc_tire, prof, x, G, F, dfz_dz,
                                    s->S_lc[c->f0], s->S_rc[c->f1], s->dw, z_root);
+}
+
+/* The working set's changes tirenv_springs__start makes at a new x before it gives up: an
+ * element's own row entering or leaving it at the patch's edges, one at a time. */
+enum { start_rounds = 3 };
+
+int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                          double G, double *z)
+{
+    tirenv_springs__cc *c = &s->cc;
+    /* The last position's evaluations, and whether its start held. */
+    const size_t last_evals = s->evals;
+    const int last_taken = s->start_taken;
+    s->evals = 0;
+    s->start_taken = 0;
+    /* From the closed form's pins only where the last position needed Newton's steps or
+     * a start: where it met the load at its warm start (level ground beside an obstacle)
+     * the warm start is as good, and the fan the start casts is spent. The base is made
+     * from them here, once (the next position's start takes it as it stands). */
+    if (s->pins_ok && !c->base_ok) {
+        if (last_evals < 2 && !last_taken)
+            return 0;
+        s->pins_ok = 0;
+        if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || s->a > s->b ||
+            !tirenv_springs__cc_base_pins(c, &s->cc_tire, s->a, s->b, s->active, s->pins_z))
+            return 0;
+    }
+    /* At a new x, after a QP solve at another on this ground whose held elements sit on
+     * their rays' rows. */
+    if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || !c->base_ok || s->upd_x == x ||
+        s->upd_serial != prof->serial || c->f0 > c->f1 || c->held_vertex > 0 ||
+        !c->use_schur)
+        return 0;
+    if (s->memo_serial != prof->serial)
+        return 0;
+    /* Only what lies within the model's reach of x (the deformable models', whose window a
+     * streamed road keeps) is read of the ground the last position left (its rows'
+     * vertices, its rays' faces), and only from a position at most half of it back: a
+     * streamed road's window holds all of that (the carry moved into it,
+     * tirenv_springs__reprofile), so that whole and streamed sweeps start alike. */
+    const double R0 = s->par.R0, reach = TIRENV_MODEL__REACH * R0;
+    if (!(fabs(x - s->eval_x) <= 0.5 * reach))
+        return 0;
+    tirenv_springs__face_window fw;
+    tirenv_springs__face_window_at(prof, x - reach, x + reach, &fw);
+    for (size_t q = 0; q < c->n_schur; ++q)
+        if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
+            return 0;
+    set_origin(s, prof, x);
+    for (int round = 0;; ++round) {
+        /* Each held element's ray at (x, z0) on the face its last walk ended on, and its
+         * d(rho)/dz there (the face's), into rho and dd: no fan is cast (the evaluation at
+         * the root casts it, and checks the faces). */
+        const size_t n_held = c->n_held;
+        if (c->base_pins) {
+            /* a road's rays end on other faces at each x: the fan at (x, z0) */
+            size_t a = 1, b = 0;
+            if (round == 0) {
+                if (!candidate_span(s, z0, &a, &b))
+                    return 0;
+                tirenv_springs__fan(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
+                s->ray_a = s->memo_a = a;
+                s->ray_b = s->memo_b = b;
+            }
+            if (n_held > 0 && (c->held[0] < s->ray_a || c->held[n_held - 1] > s->ray_b))
+                return 0;
+            for (size_t m = 0; m < n_held; ++m) {
+                const size_t e = c->held[m];
+                if (!isfinite(s->rho[e]))
+                    return 0;
+                s->dd[e] = ray_drho(s, prof, e);
+                s->pred_face[e] = s->memo[e];
+            }
+        } else if ((n_held > 0 &&
+                    (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
+                   !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held,
+                                              s->memo, s->face, z0, &fw, s->rho, s->dd,
+                                              s->pred_face))
+            return 0;
+        if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
+                                        s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
+            return 0;
+        s->start_taken = 1; /* (a root proposed: the next position asks for one too) */
+        /* The free elements' own rays at the root, on their last faces too (h: NAN where
+         * none), and the held ones' reactions: where one is violated, the element's row
+         * enters or leaves the working set (K_FF factorised again) and the root is found
+         * again; the update at the root checks every row as before. */
+        double *h = s->tread;
+        for (size_t q = 0; q < c->n_chains; ++q)
+            for (size_t m = 0; m < 2; ++m) {
+                const size_t e = c->chains[2 * q + m];
+                h[e] = e >= s->memo_a && e <= s->memo_b
+                           ? R0 - tirenv_springs__face_rho(prof, &s->origin, &s->rays, e,
+                                                           &s->memo[e], *z, &fw)
+                           : NAN;
+            }
+        size_t e;
+        int hold;
+        if (!tirenv_springs__cc_pred_worst(c, &s->cc_tire, h, 1e-12 * R0, 1e-9 * G, &e,
+                                           &hold))
+            break;
+        if (round == start_rounds || tirenv_springs__cc_pred_flip(c, &s->cc_tire, e, hold)) {
+            c->pred_ok = 0;
+            return 0;
+        }
+        /* the base's tangent at its x holds its own working set, no longer this one */
+        s->upd_x = NAN;
+    }
+    ++s->starts;
+    return 1;
+}
+
+void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
+                               const tirenv_profile *p)
+{
+    tirenv_springs__cc *c = &s->cc;
+    if (!old) { /* a new sweep: nothing carried from the last one's positions (nor which
+                 * path its first evaluation takes) */
+        c->between = 0;
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        s->pins_ok = 0;
+        s->memo_serial = 0;
+        s->evals = 0;
+        s->start_taken = 0;
+        return;
+    }
+    const int carry = s->upd_serial == old->serial || s->memo_serial == old->serial;
+    if (!carry || old == p || old->n == 0 || p->n == 0)
+        return;
+    /* The offset of the vertices: the last vertex at or before the last evaluation's x in
+     * old, which the next window keeps (the row left of x - reach stays), found in p. */
+    const size_t k = tirenv_profile__segment_at(old, s->eval_x);
+    const double X = old->x[k];
+    size_t k_new = tirenv_profile__segment_at(p, X);
+    if (k + 1 < old->n && old->x[k + 1] == X && k_new > 0) /* the first of a wall's two */
+        --k_new;
+    const long off = (long)k_new - (long)k;
+    if (!(p->x[k_new] == X && p->z[k_new] == old->z[k])) { /* other ground: carry nothing */
+        tirenv_springs__reprofile(s, NULL, p);
+        return;
+    }
+    /* Each vertex the carry names moved by off where p has it (else no longer named: the
+     * start, which reads only what lies within reach, refuses it as it would the whole
+     * road's there). */
+    for (size_t r = 0; r < c->n_rows; ++r) {
+        const long id = c->rows[r].id, m = id + off;
+        if (id >= 0)
+            c->rows[r].id = m >= 0 && (size_t)m < p->n && id < (long)old->n &&
+                                    p->x[m] == old->x[id] && p->z[m] == old->z[id]
+                                ? m
+                                : LONG_MAX;
+    }
+    int warm = 1;
+    for (size_t q = 0; q < c->n_warm; ++q) {
+        const long id = c->warm_ids[q], m = id + off;
+        warm = warm && m >= 0 && (size_t)m < p->n && id < (long)old->n &&
+               p->x[m] == old->x[id] && p->z[m] == old->z[id];
+        c->warm_ids[q] = m;
+    }
+    if (!warm)
+        c->n_warm = 0; /* (the QP's warm start: how fast, not what it finds) */
+    for (size_t i = s->memo_a; i <= s->memo_b && i < s->N; ++i)
+        tirenv_springs__memo_reprofile(old, p, off, &s->memo[i]);
+    c->last_ok = 0;
+    if (s->upd_serial == old->serial)
+        s->upd_serial = p->serial;
+    if (s->memo_serial == old->serial)
+        s->memo_serial = p->serial;
 }
 
 int tirenv_springs_forces(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
@@ -784,6 +1020,9 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
+    s->evals = 0;
+    s->start_taken = 0;
+    s->pins_ok = 0;
     if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
         tirenv_springs__cc_forget(&s->cc);
         s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;

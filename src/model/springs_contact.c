@@ -34,11 +34,14 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         !(c->upd_pe = calloc(N, sizeof *c->upd_pe)) ||
         !(c->upd_pin = calloc(N, sizeof *c->upd_pin)) ||
         !(c->pred_w = calloc(N + 2, sizeof *c->pred_w)) ||
-        !(c->root_y = calloc(N + 2, sizeof *c->root_y)))
+        !(c->root_y = calloc(N + 2, sizeof *c->root_y)) ||
+        !(c->root_du = calloc(N + 2, sizeof *c->root_du)) ||
+        !(c->root_v = calloc(N + 2, sizeof *c->root_v)))
         return TIRENV_ENOMEM;
     c->f0 = 1;
     c->f1 = 0;
     c->tri_ok = 0;
+    c->root_v_at = (unsigned long long)-1; /* no K_FF^-1 f yet */
     return TIRENV_OK;
 }
 
@@ -86,6 +89,8 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->dlambda);
     free(c->pred_w);
     free(c->root_y);
+    free(c->root_du);
+    free(c->root_v);
     memset(c, 0, sizeof *c);
 }
 

@@ -30,6 +30,23 @@ int tirenv_springs__qp_first(const tirenv_springs *s, double z);
  * form, an update). */
 int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
                          double G, double F, double dfz_dz, double *z_root);
+/* Before the first evaluation at a new x on prof, from z0 (m, the last position's height):
+ * the height *z (m) where F_z = G (N) at x on the last QP solve's working set
+ * (tirenv_springs__cc_root_at, with the fan at (x, z0)), where the evaluation is the
+ * update's check of that working set; 1, or 0 where there is none (rays, no QP solve kept,
+ * an element held on a ground vertex, the same x). */
+int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                          double G, double *z);
+/* The profile the model evaluates on is now p, not old (a streamed road's next window, the
+ * same ground): what tirenv_springs__start carries from the last position is moved onto p's
+ * vertices, where p has them (nothing is carried where p is other ground). old NULL: a new
+ * sweep on p, nothing carried. */
+void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
+                               const tirenv_profile *p);
+
+/* The roots tirenv_springs__start found so far, and the updates accepted at them (for the
+ * tests). */
+void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
@@ -121,6 +138,44 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
  * (computed once per memo, kept in it). */
 double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                 size_t i, tirenv_springs__ray_memo *m);
+
+/* The ground a streamed road's window holds around x in any case, its vertices k_lo .. k_hi
+ * (from the last at or before x_lo = x - reach to the first after x_hi = x + reach): what
+ * the start at a new x may read of the faces the last position's rays found (springs.c), so
+ * that a whole sweep and a streamed one read the same. */
+typedef struct {
+    long k_lo, k_hi;
+    double x_lo, x_hi;  /* m */
+} tirenv_springs__face_window;
+void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double x_hi,
+                                    tirenv_springs__face_window *w);
+/* Whether vertex id lies within w. */
+int tirenv_springs__face_window_has(const tirenv_springs__face_window *w, long id);
+
+/* For each ray i = rays[0..n): its rho (m) from the origin o's centre at height z to the
+ * face that memo[i]'s walk ended on (from any origin on the same profile), extended as a
+ * line, into rho[i]: what the ray finds where it still crosses that face first (not
+ * checked); its d(rho)/dz there into drho[i] (as tirenv_springs__fan_drho gives it, kept in
+ * the memo; from kept[i], the face ray i last had one computed on, where it is that face,
+ * else into it), and the memo into faces[i]. On a segment rho is the face's height below the
+ * centre times d(rho)/dz, the height once for the rays on one face. Returns 0 at a memo with
+ * no face, or one whose face is not within w (tirenv_springs__face_window_at). O(1) a ray: the
+ * held rays at a new x before any fan is cast there (springs.c). */
+int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
+                              tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
+                              double z, const tirenv_springs__face_window *w, double rho[],
+                              double drho[], tirenv_springs__ray_memo faces[]);
+
+/* The same for one ray i: its rho, or NAN where memo m has no face. */
+double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i,
+                                const tirenv_springs__ray_memo *m, double z,
+                                const tirenv_springs__face_window *w);
+/* Memo m of a walk on profile old as one on p, whose vertex k + off is old's k (a streamed
+ * road's next window): its vertex moved by off where p has it, else no face (j = -2). */
+void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_profile *p,
+                                    long off, tirenv_springs__ray_memo *m);
 
 /* dd[i] = -d(rho)/dz for the rays i in [first, last] with mask[i] set (each with a finite
  * rho), as tirenv_springs__fan_drho gives it: one call for the pinned elements of an
@@ -451,20 +506,31 @@ typedef struct {
      * N/m; written by tirenv_springs__cc_slope for every row, cap_dl of room), and its centre
      * height (base_z, m). The caller sets base_ok once it has the slope and base_w. */
     int base_ok;
+    int base_pins;         /* the base is the closed form's (tirenv_springs__cc_base_pins) */
     double base_z;
     double *base_w, *upd_w;  /* N + 2 each; upd_w is the update's scratch, indexed the same */
     double *upd_pe;        /* N: the update's net reactions (N) until it accepts them */
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
-    /* The base's working set carried to where F_z meets the load (tirenv_springs__cc_root),
-     * while pred_ok: its height (pred_z, m), w on the free elements of [f0, f1] (pred_w[e],
-     * m) and the working rows between elements' reactions (pred_lam, N, in schur_pos'
-     * order), the update's start at pred_z; root_y its scratch (N + 2 each). */
+    /* The base's working set carried to where F_z meets the load (tirenv_springs__cc_root,
+     * or at another x tirenv_springs__cc_root_at), while pred_ok: its position and height
+     * (pred_x, pred_z, m), w on [f0, f1] (pred_w[e], m) and the working rows between
+     * elements' reactions (pred_lam, N, in schur_pos' order), the update's start there;
+     * root_y its scratch (N + 2 each). */
     int pred_ok;
-    double pred_z;
+    double pred_x, pred_z;
     double *pred_w, *root_y;
+    double *root_du;       /* N + 2: tirenv_springs__cc_root_at's held rows' dh/dz */
+    /* K_FF^-1 f (f the hub's weights, root_v: N + 2) for the factor n_factors counts, while
+     * root_v_at is that count (tirenv_springs__cc_schur_factor counts each new factor) */
+    double *root_v;
+    unsigned long long n_factors, root_v_at;
     double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
+    /* (tirenv_springs__cc_root_at) each working row's two elements and its load on each,
+     * lambda g (N), for the check of the held elements' reactions */
+    size_t pred_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double pred_gl[2 * TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -536,8 +602,10 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
 
 /* The state at centre height z of the last QP solve's working set, had by its tangent from
  * the solve's height (springs_update.c, docs/models.md section 4.8, Cost): w = w_0 + (z -
- * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope; at
- * c->pred_z, while c->pred_ok, the state tirenv_springs__cc_root solved for), w_e = h on
+ * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope; the tangent
+ * only at the base's x, which the caller checks, and never from the closed form's pins; at
+ * (c->pred_x, c->pred_z), while c->pred_ok, the state tirenv_springs__cc_root or _root_at
+ * solved for, on the working set as the start left it), w_e = h on
  * the held ones, the rows between elements' reactions likewise, the held ones' from K w =
  * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
  * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
@@ -563,6 +631,42 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
 int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double G, double F0, double dF0,
                             double S_l, double S_r, const double dw[], double *z_root);
+
+/* springs_root.c: the same at another x, from the base's working set alone (its rows between
+ * elements by ground vertex, its held elements on their rays' rows, K_FF's factor): given
+ * each held element's ray at (x, z_a), rho[e] (m) and d(rho)/dz drho[e], the height *z_root
+ * where F_z = G with that working set at x, the secant's first step by slope (N/m, < 0: the
+ * last dF_z/dz known); its state kept as the update's start at (x, *z_root) (c->pred_ok).
+ * The update there (which checks every row at x) decides whether it is the QP's solution.
+ * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, Cost. */
+int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                               const tirenv_profile *p, double x, double z_a,
+                               const double rho[], const double drho[], double G,
+                               double slope, double S_l, double S_r, double *z_root);
+
+/* springs_root.c: the element whose own row the state tirenv_springs__cc_root_at kept
+ * (pred_w at pred_z, its reactions pred_lam) violates most, looked for where the working set
+ * changes with x (the ends of the chains of free elements and the held elements beside them,
+ * the working rows' elements): a free element below its ray's row h[e] (m, read at the
+ * chains' ends; NAN: none) by more than tol (m), else a held one whose reaction (K w - G^T
+ * lambda, N) is below -tol_f (N); *e and 1 (*hold: 1 to hold it, 0 to release), or 0 where
+ * none does. */
+int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
+                                  const tirenv_springs__cc_tire *T, const double h[],
+                                  double tol, double tol_f, size_t *e, int *hold);
+/* The base's working set with element e held on its ray's row (hold) or released, K_FF
+ * factorised again: 0, or 1 (the base is then dropped: base_ok 0) where it cannot be. */
+int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t e, int hold);
+
+/* After the closed form's evaluation at centre height z (m) held the elements pinned[e] of
+ * [f0, f1] on their own rows with no row between elements working: that state as the base of
+ * tirenv_springs__start at the next x (c->f0, f1, wpos, held, K_FF's factor; base_pins, so
+ * that neither the update's tangent nor tirenv_springs__cc_root takes it). 1, or 0 where an
+ * element is pinned on a ground vertex (or the factor fails): no base. */
+int tirenv_springs__cc_base_pins(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t f0, size_t f1, const unsigned char pinned[],
+                                 double z);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

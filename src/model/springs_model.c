@@ -57,6 +57,19 @@ static int springs_root(void *elem, const tirenv_profile *p, double x, double z,
     return tirenv_springs__root(e->s, p, x, z, G, at->F, at->dF_dz, z_root);
 }
 
+static int springs_start(void *elem, const tirenv_profile *p, double x, double z0, double G,
+                         double *z)
+{
+    springs_elem *e = elem;
+    return tirenv_springs__start(e->s, p, x, z0, G, z);
+}
+
+static void springs_reprofile(void *elem, const tirenv_profile *old, const tirenv_profile *p)
+{
+    springs_elem *e = elem;
+    tirenv_springs__reprofile(e->s, old, p);
+}
+
 /* docs/models.md section 1.3: the springs model's contact length is the length of ground its
  * tread touches, as the ring's: from the first to the last element with a positive contact
  * reaction, each end extended towards its free neighbour to where the "compression"
@@ -187,6 +200,8 @@ static const tirenv_deformable springs_deformable = {
     .free = springs_free,
     .forces = springs_forces,
     .root = springs_root,
+    .start = springs_start,
+    .reprofile = springs_reprofile,
     .contact_length = springs_contact_length,
     .lowest_z = springs_lowest_z,
     .bracket = springs_bracket,

@@ -417,6 +417,155 @@ double tirenv_springs__fan_drho(const tirenv_profile *p, const tirenv_springs__f
     return m->drho;
 }
 
+/* Whether memo m's face is within w: a segment's vertices among its; the flat ground past a
+ * profile's first (last) vertex only where that vertex lies after x_lo (before x_hi): a
+ * window's first vertex at or before x_lo (last after x_hi) need not be the road's. */
+static inline int face_within(const tirenv_profile *p, const tirenv_springs__face_window *w,
+                              long j, long jp, int kind)
+{
+    if (kind != RAY_HIT && kind != RAY_WALL)
+        return 1;
+    if (!(j >= w->k_lo && j <= w->k_hi))
+        return 0;
+    if (kind == RAY_WALL || (jp >= w->k_lo && jp <= w->k_hi))
+        return 1;
+    return jp < 0 ? p->x[j] > w->x_lo : jp >= (long)p->n && p->x[j] < w->x_hi;
+}
+
+/* Ray i's rho from (o->x, z) on the face memo m's walk ended on, as a line; NAN if none, or
+ * if the face is not within w. */
+static inline double face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, size_t i,
+                              const tirenv_springs__ray_memo *m, double z,
+                              const tirenv_springs__face_window *w)
+{
+    const double *X = p->x, *Z = p->z, x = o->x;
+    const long n = (long)p->n, j = m->j;
+    const int dir = i > r->i0 ? 1 : -1;
+    if (!face_within(p, w, j, j - dir, m->kind))
+        return NAN;
+    switch (m->kind) {
+    case RAY_HIT: { /* the line through the segment [j - dir, j], as walk() crosses it */
+        const long jp = j - dir;
+        if (!(jp >= 0 && jp < n)) /* the flat ground beyond the profile's end, at Z[j] */
+            return r->cos_t[i] > 0 ? (z - Z[j]) / r->cos_t[i] : NAN;
+        const double drop = r->drop[i], a_j = dir * (X[j] - x), a_p = dir * (X[jp] - x);
+        const double f_j = z - a_j * drop - Z[j], f_p = z - a_p * drop - Z[jp];
+        return f_p != f_j ? (a_p + f_p * (a_j - a_p) / (f_p - f_j)) * r->inv_s[i] : NAN;
+    }
+    case RAY_DOWN:
+        return i == r->i0 ? z - o->g : NAN;
+    case RAY_WALL: {
+        const double a_j = dir * (X[j] - x);
+        return a_j > 0 ? a_j * r->inv_s[i] : NAN;
+    }
+    case RAY_END: { /* the flat ground past the profile's end vertex, which must be the
+                     * road's: after x_lo (before x_hi) */
+        const double cos_t = r->cos_t[i];
+        const long e = dir > 0 ? n - 1 : 0;
+        const int end = dir > 0 ? X[e] < w->x_hi : X[e] > w->x_lo;
+        return cos_t > 0 && end ? (z - Z[e]) / cos_t : NAN;
+    }
+    default:
+        return NAN;
+    }
+}
+
+void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double x_hi,
+                                    tirenv_springs__face_window *w)
+{
+    const size_t k_hi = tirenv_profile__segment_at(p, x_hi);
+    *w = (tirenv_springs__face_window){
+        .k_lo = (long)tirenv_profile__segment_at(p, x_lo),
+        .k_hi = (long)(k_hi + 1 < p->n ? k_hi + 1 : k_hi),
+        .x_lo = x_lo,
+        .x_hi = x_hi};
+}
+
+int tirenv_springs__face_window_has(const tirenv_springs__face_window *w, long id)
+{
+    return id >= w->k_lo && id <= w->k_hi;
+}
+
+double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i,
+                                const tirenv_springs__ray_memo *m, double z,
+                                const tirenv_springs__face_window *w)
+{
+    return face_rho(p, o, r, i, m, z, w);
+}
+
+void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_profile *p,
+                                    long off, tirenv_springs__ray_memo *m)
+{
+    const long n_old = (long)old->n, n = (long)p->n, j = m->j, k = j + off;
+    switch (m->kind) {
+    case RAY_HIT:
+    case RAY_WALL:
+    case RAY_REACH:
+        m->j = j >= 0 && j < n_old && k >= 0 && k < n && p->x[k] == old->x[j] &&
+                       p->z[k] == old->z[j]
+                   ? k
+                   : -2; /* no face here: face_rho refuses it */
+        break;
+    case RAY_END:
+        m->j = j < 0 ? -1 : n;
+        break;
+    default:
+        break;
+    }
+}
+
+int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
+                              tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
+                              double z, const tirenv_springs__face_window *w, double rho[],
+                              double drho[], tirenv_springs__ray_memo faces[])
+{
+    const double *X = p->x, *Z = p->z;
+    long j_run = -2; /* the segment face of the rays before, and z less its height at x */
+    int dir_run = 0;
+    double zf = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const size_t i = rays[k];
+        tirenv_springs__ray_memo *m = &memo[i];
+        const int dir = i > r->i0 ? 1 : -1;
+        const long jp = m->j - dir;
+        const int seg = jp >= 0 && jp < (long)p->n; /* else the flat ground past an end */
+        if (!face_within(p, w, m->j, jp, m->kind))
+            return 0; /* (a window's rows hold it) */
+        if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
+            const tirenv_springs__ray_memo *f = &kept[i];
+            if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
+                m->drho = f->drho;
+            } else {
+                m->drho = slope_drho(p, m->j, dir, m->kind, r->sin_t[i], r->cos_t[i]);
+                kept[i] = *m;
+            }
+        }
+        double v;
+        if (m->kind == RAY_HIT && seg) {
+            /* rho (cos + sin dZ/dX) = z - (the face's height under the centre): once a
+             * face, then its d(rho)/dz */
+            if (m->j != j_run || dir != dir_run) {
+                j_run = m->j;
+                dir_run = dir;
+                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
+                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            }
+            v = zf * m->drho;
+        } else {
+            v = face_rho(p, o, r, i, m, z, w);
+        }
+        if (!isfinite(v))
+            return 0;
+        rho[i] = v;
+        drho[i] = m->drho;
+        faces[i] = *m;
+    }
+    return 1;
+}
+
 void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,
                                   size_t first, size_t last, const unsigned char mask[],
                                   tirenv_springs__ray_memo memo[], double dd[])

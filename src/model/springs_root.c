@@ -23,6 +23,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include "profile/profile_impl.h"
 
 enum { K_MAX = TIRENV_SPRINGS__SCHUR_MAX, S_MAX = 2 * TIRENV_SPRINGS__SCHUR_MAX };
@@ -46,12 +47,13 @@ typedef struct {
     double phi[S_MAX];                 /* f . K_FF^-1 e_s, N/N */
     double Y[S_MAX][S_MAX];            /* Y[s][r]: (K_FF^-1 e_s) at slot r's element, m/N */
     double w_T[S_MAX], dw[S_MAX];      /* the base's w and dw/dz at the slots */
+    double ylo[S_MAX], yhi[S_MAX];     /* K_FF^-1 e_s at its chain's ends, m/N */
 } root_rows;
 
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
  * dF_0 (N) into *dF; 0 if a row leaves its sector's inside. */
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
-                     double dz, double lam[], double B[], double *dF)
+                     double dz, double lam[], double B[], double g_out[], double *dF)
 {
     const size_t k = W->k, ns = 2 * k;
     const double *st = T->sin_t, *ct = T->cos_t;
@@ -121,6 +123,7 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
     }
     double f = 0;
     for (size_t s = 0; s < ns; ++s) {
+        g_out[s] = g[s];
         B[s] = W->fr[s] ? lam[s / 2] * g[s] - kap[s] : 0;
         f += B[s] * W->phi[s];
     }
@@ -128,15 +131,136 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
     return 1;
 }
 
+/* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
+ * each free slot's column of K_FF^-1 on its row's chain (K_FF couples no other) and f . that
+ * column (S_l, S_r: the free chains' beyond the span); w_T and dw at the slots, l0 and dl as
+ * given (NULL: 0). 0 where a row is not a ground vertex's between elements. */
+static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                     const tirenv_profile *p, double S_l, double S_r, const double w_T[],
+                     const double dw[], int with_lambda, root_rows *W)
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const size_t *wpos = c->wpos;
+    W->k = k;
+    const size_t ns = 2 * k;
+    for (size_t q = 0; q < k; ++q) {
+        const size_t r = c->order[c->schur_pos[q]] - N;
+        const tirenv_springs__cc_row *R = &c->rows[r];
+        if (R->id < 0 || !(R->t > 0) || c->chain_lo[q] > c->chain_hi[q])
+            return 0;
+        W->el[2 * q] = R->i;
+        W->el[2 * q + 1] = R->j;
+        W->g0[2 * q] = R->ga;
+        W->g0[2 * q + 1] = R->gb;
+        W->g1[2 * q] = R->dga_dz;
+        W->g1[2 * q + 1] = R->dgb_dz;
+        W->l0[q] = with_lambda ? c->lambda[r] : 0;
+        W->dl[q] = with_lambda ? c->dlambda[r] : 0;
+        W->X[q] = p->x[R->id];
+        W->Z[q] = p->z[R->id];
+    }
+    double *y = c->root_y;
+    const double k_r = T->k_r, *ct = T->cos_t;
+    for (size_t s = 0; s < ns; ++s) {
+        const size_t e_s = W->el[s];
+        W->fr[s] = wpos[e_s] != SIZE_MAX;
+        W->w_T[s] = w_T[e_s];
+        W->dw[s] = dw[e_s];
+    }
+    for (size_t s = 0; s < ns; ++s) {
+        for (size_t r = 0; r < ns; ++r)
+            W->Y[s][r] = 0;
+        W->phi[s] = 0;
+        if (!W->fr[s])
+            continue;
+        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
+        for (size_t e = lo; e <= hi; ++e)
+            y[e] = 0;
+        y[W->el[s]] = 1;
+        tirenv_springs__cc_chain_solve(c, y, lo, W->el[s], hi);
+        double f = 0;
+        for (size_t e = lo; e <= hi; ++e)
+            f += k_r * ct[e] * y[e];
+        f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
+        W->phi[s] = f;
+        W->ylo[s] = y[lo];
+        W->yhi[s] = y[hi];
+        for (size_t r = 0; r < ns; ++r)
+            if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
+                W->Y[s][r] = y[W->el[r]];
+    }
+    return 1;
+}
+
+/* The secant on R(z) = F0 + (z - z0) dF0 + (the rows' share at z) - G from (za, Ra), its
+ * first step by slope (N/m, < 0), to 1e-15 R0 in z: *zb with the reactions lam and the
+ * slots' B there; 0 if it does not settle or a row leaves its sector. */
+static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z0,
+                  double F0, double dF0, double G, double za, double Ra, double slope0,
+                  double lam[], double B[], double g[], double *z_out)
+{
+    double zb = za - Ra / slope0;
+    for (size_t it = 0; it < max_steps; ++it) {
+        double dF;
+        if (!at_height(T, W, x, zb, zb - z0, lam, B, g, &dF))
+            return 0;
+        const double Rb = F0 + (zb - z0) * dF0 + dF - G;
+        double slope = (Rb - Ra) / (zb - za);
+        if (!(slope < 0))
+            slope = slope0;
+        const double step = -Rb / slope;
+        if (fabs(step) <= 1e-15 * T->R0) {
+            for (size_t q = 0; q < W->k; ++q)
+                if (!(lam[q] >= 0))
+                    return 0;
+            *z_out = zb;
+            return 1;
+        }
+        za = zb;
+        Ra = Rb;
+        zb += step;
+    }
+    return 0;
+}
+
+/* The state at zb (dz from the height of wa) kept as the update's start: wa + dz dwa over the
+ * span, then each row's B by one solve on its chain; c->pred_*. wa may be c->pred_w. */
+static void keep_state(tirenv_springs__cc *c, const root_rows *W, const double wa[],
+                       const double dwa[], double x, double zb, double dz, const double lam[],
+                       const double B[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, k = W->k;
+    double *pw = c->pred_w, *y = c->root_y;
+    for (size_t e = f0; e <= f1; ++e)
+        pw[e] = wa[e] + dz * dwa[e];
+    for (size_t q = 0; q < k; ++q) {
+        const size_t lo = c->chain_lo[q], hi = c->chain_hi[q];
+        size_t from = hi + 1;
+        for (size_t e = lo; e <= hi; ++e)
+            y[e] = 0;
+        for (size_t s = 2 * q; s < 2 * q + 2; ++s)
+            if (W->fr[s]) {
+                y[W->el[s]] += B[s];
+                from = W->el[s] < from ? W->el[s] : from;
+            }
+        tirenv_springs__cc_chain_solve(c, y, lo, from, hi);
+        for (size_t e = lo; e <= hi; ++e)
+            pw[e] += y[e];
+        c->pred_lam[q] = lam[q];
+    }
+    c->pred_x = x;
+    c->pred_z = zb;
+    c->pred_ok = 1;
+}
+
 int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double G, double F0, double dF0,
                             double S_l, double S_r, const double dw[], double *z_root)
 {
     c->pred_ok = 0;
-    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
-    if (!c->base_ok || !c->use_schur || f0 > f1 || k > K_MAX || !(dF0 < 0))
+    const size_t f0 = c->f0, f1 = c->f1, k = c->n_schur;
+    if (!c->base_ok || c->base_pins || !c->use_schur || f0 > f1 || k > K_MAX || !(dF0 < 0))
         return 0;
-    const size_t *wpos = c->wpos;
     const double z0 = c->base_z, *base_w = c->base_w + 1;
     /* The held elements on their rays' rows (linear in z), not on ground vertices: the
      * solve's last pass over the rows counted them (a pass over the span here cost some
@@ -144,101 +268,261 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
     if (c->held_vertex > 0)
         return 0;
     root_rows W;
-    W.k = k;
-    const size_t ns = 2 * k;
-    for (size_t q = 0; q < k; ++q) {
-        const size_t r = c->order[c->schur_pos[q]] - N;
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        if (R->id < 0 || !(R->t > 0) || c->chain_lo[q] > c->chain_hi[q])
+    if (!base_rows(c, T, p, S_l, S_r, base_w, dw, 1, &W))
+        return 0;
+    /* The secant on F(z) - G from the base and Newton's step. */
+    double lam[K_MAX], B[S_MAX], g[S_MAX], zb;
+    if (!secant(T, &W, x, z0, F0, dF0, G, z0, F0 - G, dF0, lam, B, g, &zb))
+        return 0;
+    keep_state(c, &W, base_w, dw, x, zb, zb - z0, lam, B);
+    *z_root = zb;
+    return 1;
+}
+
+/* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
+ * z while each ray ends on the same face (the fan at (x, z_a) gives rho_e and d(rho_e)/dz);
+ * the free ones solve K_FF w_F = b_F(z) + G_W(z)^T lambda with the base's K_FF (it depends
+ * on the span and the held elements alone, not on x), b_F the held neighbours' k_ir h_e(z) at
+ * the ends of each chain of free elements. With no reaction on the rows, w at z is u_a +
+ * (z - z_a) u_s; the rows enter as at_height has them with l0 = dl = 0 (B_s = lambda g_s(z)).
+ * u_a and u_s are not solved for: the root needs them at the rows' elements only, from the
+ * rows' columns of K_FF^-1 at their chain's ends, and F_z of them is v . b_F (v = K_FF^-1 f,
+ * f the hub's weights on the free elements, kept while the factor is) plus the held
+ * elements' share; the state at the root is then one solve a chain. */
+int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                               const tirenv_profile *p, double x, double z_a,
+                               const double rho[], const double drho[], double G,
+                               double slope, double S_l, double S_r, double *z_root)
+{
+    c->pred_ok = 0;
+    const size_t f0 = c->f0, f1 = c->f1, k = c->n_schur;
+    if (!c->base_ok || !c->use_schur || !c->tri_ok || f0 > f1 || k > K_MAX ||
+        c->held_vertex > 0 || !(slope < 0))
+        return 0;
+    const double R0 = T->R0, k_ir = T->k_ir, k_r = T->k_r, *ct = T->cos_t;
+    const size_t *held = c->held, n_held = c->n_held, *ch = c->chains, n_ch = c->n_chains;
+    /* the held elements' rows at z_a and their slopes, and their share of F_z */
+    double *H = c->pred_w, *dH = c->root_du;
+    double Fa = 0, dFa = 0;
+    for (size_t m = 0; m < n_held; ++m) {
+        const size_t e = held[m];
+        if (!isfinite(rho[e]) || !isfinite(drho[e]))
             return 0;
-        W.el[2 * q] = R->i;
-        W.el[2 * q + 1] = R->j;
-        W.g0[2 * q] = R->ga;
-        W.g0[2 * q + 1] = R->gb;
-        W.g1[2 * q] = R->dga_dz;
-        W.g1[2 * q + 1] = R->dgb_dz;
-        W.l0[q] = c->lambda[r];
-        W.dl[q] = c->dlambda[r];
-        W.X[q] = p->x[R->id];
-        W.Z[q] = p->z[R->id];
+        H[e] = R0 - rho[e];
+        dH[e] = -drho[e];
+        const double f = k_r * ct[e] + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
+        Fa += f * H[e];
+        dFa += f * dH[e];
     }
-    /* Each free slot's column of K_FF^-1, on its row's chain (K_FF couples no other). */
-    double *y = c->root_y;
-    const double k_r = T->k_r, *ct = T->cos_t;
-    for (size_t s = 0; s < ns; ++s) {
-        const size_t e_s = W.el[s];
-        W.fr[s] = wpos[e_s] != SIZE_MAX;
-        W.w_T[s] = base_w[e_s];
-        W.dw[s] = dw[e_s];
+    /* v = K_FF^-1 f on the free elements, for this factor */
+    double *v = c->root_v;
+    if (c->root_v_at != c->n_factors) {
+        for (size_t q = 0; q < n_ch; ++q) {
+            const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+            for (size_t e = lo; e <= hi; ++e)
+                v[e] = k_r * ct[e];
+            v[f0] += lo == f0 ? S_l : 0;
+            v[f1] += hi == f1 ? S_r : 0;
+            tirenv_springs__cc_chain_solve(c, v, lo, lo, hi);
+        }
+        c->root_v_at = c->n_factors;
     }
-    for (size_t s = 0; s < ns; ++s) {
-        for (size_t r = 0; r < ns; ++r)
-            W.Y[s][r] = 0;
-        W.phi[s] = 0;
+    /* the free elements' share: v . b_F over the chains' ends */
+    for (size_t q = 0; q < n_ch; ++q) {
+        const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+        if (lo > f0) {
+            Fa += v[lo] * k_ir * H[lo - 1];
+            dFa += v[lo] * k_ir * dH[lo - 1];
+        }
+        if (hi < f1) {
+            Fa += v[hi] * k_ir * H[hi + 1];
+            dFa += v[hi] * k_ir * dH[hi + 1];
+        }
+    }
+    root_rows W;
+    if (!base_rows(c, T, p, S_l, S_r, H, dH, 0, &W))
+        return 0;
+    /* u_a and u_s at the rows' free elements, from their columns at the chain's ends */
+    for (size_t s = 0; s < 2 * k; ++s) {
         if (!W.fr[s])
             continue;
         const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
-        for (size_t e = lo; e <= hi; ++e)
-            y[e] = 0;
-        y[W.el[s]] = 1;
-        tirenv_springs__cc_chain_solve(c, y, lo, W.el[s], hi);
-        double f = 0;
-        for (size_t e = lo; e <= hi; ++e)
-            f += k_r * ct[e] * y[e];
-        f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
-        W.phi[s] = f;
-        for (size_t r = 0; r < ns; ++r)
-            if (W.fr[r] && lo <= W.el[r] && W.el[r] <= hi)
-                W.Y[s][r] = y[W.el[r]];
-    }
-    /* The secant on F(z) - G from the base and Newton's step. */
-    double lam[K_MAX], B[S_MAX];
-    double za = z0, Ra = F0 - G, zb = z0 - Ra / dF0;
-    int done = 0;
-    for (size_t it = 0; it < max_steps && !done; ++it) {
-        double dF;
-        if (!at_height(T, &W, x, zb, zb - z0, lam, B, &dF))
-            return 0;
-        const double Rb = F0 + (zb - z0) * dF0 + dF - G;
-        double slope = (Rb - Ra) / (zb - za);
-        if (!(slope < 0))
-            slope = dF0;
-        const double step = -Rb / slope;
-        if (fabs(step) <= 1e-15 * T->R0) {
-            done = 1;
-        } else {
-            za = zb;
-            Ra = Rb;
-            zb += step;
+        double ua = 0, us = 0;
+        if (lo > f0) {
+            ua += W.ylo[s] * k_ir * H[lo - 1];
+            us += W.ylo[s] * k_ir * dH[lo - 1];
         }
+        if (hi < f1) {
+            ua += W.yhi[s] * k_ir * H[hi + 1];
+            us += W.yhi[s] * k_ir * dH[hi + 1];
+        }
+        W.w_T[s] = ua;
+        W.dw[s] = us;
     }
-    if (!done)
+    double lam[K_MAX], B[S_MAX], g[S_MAX], zb, dF;
+    if (!at_height(T, &W, x, z_a, 0, lam, B, g, &dF))
         return 0;
-    for (size_t q = 0; q < k; ++q)
-        if (!(lam[q] >= 0))
-            return 0;
-    /* The state at zb: the tangent, then each row's columns by one solve on its chain. */
-    const double dz = zb - z0;
-    double *pw = c->pred_w;
-    for (size_t e = f0; e <= f1; ++e)
-        pw[e] = base_w[e] + dz * dw[e];
-    for (size_t q = 0; q < k; ++q) {
-        const size_t lo = c->chain_lo[q], hi = c->chain_hi[q];
-        size_t from = hi + 1;
-        for (size_t e = lo; e <= hi; ++e)
-            y[e] = 0;
-        for (size_t s = 2 * q; s < 2 * q + 2; ++s)
-            if (W.fr[s]) {
-                y[W.el[s]] += B[s];
-                from = W.el[s] < from ? W.el[s] : from;
-            }
-        tirenv_springs__cc_chain_solve(c, y, lo, from, hi);
-        for (size_t e = lo; e <= hi; ++e)
-            pw[e] += y[e];
-        c->pred_lam[q] = lam[q];
+    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, g, &zb))
+        return 0;
+    for (size_t s = 0; s < 2 * k; ++s) { /* each row's load on its elements, for the check */
+        c->pred_el[s] = W.el[s];
+        c->pred_gl[s] = lam[s / 2] * g[s];
     }
+    /* The state at zb: the held elements' rows there, then each chain's solve with its
+     * ends' coupling and the rows' B. */
+    const double dz = zb - z_a;
+    double *pw = c->pred_w;
+    for (size_t m = 0; m < n_held; ++m) {
+        const size_t e = held[m];
+        pw[e] = H[e] + dz * dH[e];
+    }
+    for (size_t q = 0; q < n_ch; ++q) {
+        const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+        for (size_t e = lo; e <= hi; ++e)
+            pw[e] = 0;
+        if (lo > f0)
+            pw[lo] = k_ir * pw[lo - 1];
+        if (hi < f1)
+            pw[hi] += k_ir * pw[hi + 1];
+    }
+    for (size_t s = 0; s < 2 * k; ++s)
+        if (W.fr[s])
+            pw[W.el[s]] += B[s];
+    for (size_t q = 0; q < n_ch; ++q)
+        tirenv_springs__cc_chain_solve(c, pw, ch[2 * q], ch[2 * q], ch[2 * q + 1]);
+    for (size_t q = 0; q < k; ++q)
+        c->pred_lam[q] = lam[q];
+    c->pred_x = x;
     c->pred_z = zb;
     c->pred_ok = 1;
     *z_root = zb;
+    return 1;
+}
+
+/* A held element's reaction at the kept state: K w there (w beyond the span folded into K's
+ * diagonal at its ends) less the working rows' g lambda on it, N. */
+static double held_reaction(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                            size_t e)
+{
+    const size_t f0 = c->f0, f1 = c->f1;
+    const double *w = c->pred_w;
+    double r = tirenv_springs__cc_k_diag(T, f0, f1, e) * w[e] -
+               T->k_ir * ((e > f0 ? w[e - 1] : 0) + (e < f1 ? w[e + 1] : 0));
+    for (size_t s = 0; s < 2 * c->n_schur; ++s)
+        r -= c->pred_el[s] == e ? c->pred_gl[s] : 0;
+    return r;
+}
+
+/* Where the working set changes with x: at the ends of the runs of held elements (a free
+ * chain's end element coming down onto its ray's row, or the held one beside it lifting
+ * off), and on the working rows' elements. Inside a run on one face the reactions stay
+ * positive; elsewhere the update's check at the root still decides. */
+int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
+                                  const tirenv_springs__cc_tire *T, const double h[],
+                                  double tol, double tol_f, size_t *e_out, int *hold)
+{
+    const size_t f0 = c->f0, f1 = c->f1, *ch = c->chains, n_ch = c->n_chains;
+    const size_t *wpos = c->wpos;
+    const double *w = c->pred_w;
+    double worst = tol;
+    size_t e_w = SIZE_MAX;
+    for (size_t q = 0; q < n_ch; ++q)
+        for (size_t m = 0; m < 2; ++m) {
+            const size_t e = ch[2 * q + m];
+            if (h[e] - w[e] > worst) {
+                worst = h[e] - w[e];
+                e_w = e;
+            }
+        }
+    if (e_w != SIZE_MAX) {
+        *e_out = e_w;
+        *hold = 1;
+        return 1;
+    }
+    double r_w = -tol_f;
+    for (size_t q = 0; q <= n_ch; ++q) { /* the held elements beside each chain, the span's */
+        const size_t ends[2] = {q < n_ch ? ch[2 * q] - 1 : f0, q < n_ch ? ch[2 * q + 1] + 1 : f1};
+        for (size_t m = 0; m < 2; ++m) {
+            const size_t e = ends[m];
+            if (e < f0 || e > f1 || wpos[e] != SIZE_MAX)
+                continue;
+            const double r = held_reaction(c, T, e);
+            if (r < r_w) {
+                r_w = r;
+                e_w = e;
+            }
+        }
+    }
+    for (size_t s = 0; s < 2 * c->n_schur; ++s) {
+        const size_t e = c->pred_el[s];
+        if (wpos[e] != SIZE_MAX)
+            continue;
+        const double r = held_reaction(c, T, e);
+        if (r < r_w) {
+            r_w = r;
+            e_w = e;
+        }
+    }
+    if (e_w == SIZE_MAX)
+        return 0;
+    *e_out = e_w;
+    *hold = 0;
+    return 1;
+}
+
+int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t e, int hold)
+{
+    size_t *held = c->held, n = c->n_held, m = 0;
+    while (m < n && held[m] < e)
+        ++m;
+    if (hold) { /* into the ascending list */
+        memmove(held + m + 1, held + m, (n - m) * sizeof *held);
+        held[m] = e;
+        c->wpos[e] = SIZE_MAX;
+        ++c->n_held;
+    } else {
+        memmove(held + m, held + m + 1, (n - m - 1) * sizeof *held);
+        c->wpos[e] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
+        --c->n_held;
+    }
+    /* the next layout lays out its own KKT system (wpos no longer the last one's) */
+    c->last_ok = 0;
+    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        return 1;
+    }
+    return 0;
+}
+
+int tirenv_springs__cc_base_pins(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 size_t f0, size_t f1, const unsigned char pinned[],
+                                 double z)
+{
+    size_t n_held = 0, on_vertex = 0;
+    for (size_t e = f0; e <= f1; ++e) {
+        if (pinned[e]) {
+            c->wpos[e] = SIZE_MAX;
+            c->held[n_held++] = e;
+            on_vertex += c->rows[c->pin_row[e]].id >= 0;
+        } else {
+            c->wpos[e] = 0;
+        }
+    }
+    c->f0 = f0;
+    c->f1 = f1;
+    c->n_held = n_held;
+    c->held_vertex = on_vertex;
+    c->n_schur = 0;
+    c->use_schur = 1;
+    c->last_ok = 0; /* wpos is no longer the last KKT layout's */
+    c->base_ok = 0;
+    c->pred_ok = 0;
+    if (on_vertex > 0 || tirenv_springs__cc_schur_factor(c, T, 0))
+        return 0;
+    c->base_pins = 1;
+    c->base_z = z;
+    c->base_ok = 1;
     return 1;
 }

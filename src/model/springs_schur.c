@@ -67,6 +67,7 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
      * stay (kkt_factor compares them), bit for bit what factorising again gives. */
     c->tri_ok = 0;
     c->factor_kept = same;
+    c->n_factors += !same; /* what a K_FF^-1 f kept was solved with (springs_root.c) */
     /* Free element e's stiffness (tirenv_springs__cc_k_diag); coupled to e - 1 if that is
      * free and in the span. On locals: the stores to chains (size_t) would make c's fields be read
      * again at every element. */

@@ -57,9 +57,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* From the tangent a hair from the base, or from the state tirenv_springs__cc_root
      * solved for at its height (Newton's step, which it chose). The corrections below need
      * the working rows between elements on the Schur path. */
-    const int pred = c->pred_ok && z == c->pred_z;
+    const int pred = c->pred_ok && z == c->pred_z && x == c->pred_x;
     if (!c->base_ok || !c->use_schur || f0 > f1 || a > b ||
-        !(pred || fabs(dz) <= upd_dz_max))
+        !(pred || (fabs(dz) <= upd_dz_max && !c->base_pins)))
         return 0;
     const double R0 = T->R0, tol = 1e-12 * R0, tol_eq = eq_tol * R0;
     const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
@@ -131,8 +131,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         const size_t e = V[k].i;
         if (V[k].t != 0 || pin[e] != V[k].id || wpos[e] != SIZE_MAX)
             continue; /* not the row e stands on now, or e free */
-        if (rows[pin_row[e]].id != V[k].id)
-            return 0; /* e held on its ray's row, or another vertex's, at the base */
+        if (pin_row[e] == SIZE_MAX || rows[pin_row[e]].id != V[k].id)
+            return 0; /* e held on its ray's row, or another vertex's, at the base (or held
+                       * by the start at a new x, with no row at the base) */
         ++n_same;
     }
     if (n_same != c->held_vertex)
@@ -237,7 +238,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * else by its weights. (Those on an element were checked with the pins.) */
     for (size_t k = 0; k < nv; ++k) {
         const tirenv_springs__cc_row *Q = &V[k];
-        if (Q->t == 0 || tirenv_springs__long_in(c->warm_ids, c->n_warm, Q->id))
+        if (Q->t == 0 || (n_s > 0 && tirenv_springs__long_in(c->warm_ids, c->n_warm, Q->id)))
             continue; /* a working row: an equality above */
         const double t = Q->t, wi = wn[Q->i], wj = wn[Q->j];
         const double chord = (1 - t) * wi + t * wj - fabs(wj - wi) * T->tau_dev;

@@ -125,45 +125,45 @@ static const double smooth_a = 0.6817, smooth_k = 3.137e7;
 
 static const eq_case cases[] = {
     {"smooth, warm start below the root", SMOOTH_LAW, 12345.6,
-     {0.0, 0.6817, 0.62, 0.03, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
+     {0.0, 0.6817, 0.62, 0.03, NULL, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
     {"smooth, cold start at first contact", SMOOTH_LAW, 12345.6,
-     {0.0, 0.6817, 0.6817 - 0.0413, 0.0413, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
+     {0.0, 0.6817, 0.6817 - 0.0413, 0.0413, NULL, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
     /* k1 (a - b) = 11152 N at the kink; the root is 0.0123 m below it. */
     {"kinked, the root below a stiffening kink",
      {KINKED, 0.6793, 0.6521, 4.1e5, 1.7e6, 0, NEVER, NEVER, 0}, 4.1e5 * (0.6793 - 0.6521) +
-     1.7e6 * 0.0123, {0.0, 0.6793, 0.6701, 0.02, NULL}, 0.6521 - 0.0123, 0,
+     1.7e6 * 0.0123, {0.0, 0.6793, 0.6701, 0.02, NULL, NULL}, 0.6521 - 0.0123, 0,
      {OK_ANY, OK_ANY, OK_ANY}},
     /* k (a - b) = 17264 N just above the jump, 19664 N just below: G = 18000 N has no root,
      * the equilibrium is the jump. The plain secant has no bracket and cannot find it. */
     {"a jump in F_z across the load",
      {JUMP, 0.6911, 0.6703, 8.3e5, 0, 2400, NEVER, NEVER, 0}, 18000,
-     {0.0, 0.6911, 0.6811, 0.02, NULL}, 0.6703, 0,
+     {0.0, 0.6911, 0.6811, 0.02, NULL, NULL}, 0.6703, 0,
      {{TIRENV_OK, TIRENV_EQ_BRACKET}, {TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS},
       {TIRENV_OK, TIRENV_EQ_BRACKET}}},
     /* F = 9876.5 N on [0.66, 0.70): the secant's first two points see equal forces. */
     {"a plateau of F_z above the root",
      {PLATEAU, 0.70, 0.66, 0, 2.3e6, 9876.5, NEVER, NEVER, 0}, 15234.5,
-     {0.0, 0.70, 0.69, 0.02, NULL}, 0.66 - (15234.5 - 9876.5) / 2.3e6, 0,
+     {0.0, 0.70, 0.69, 0.02, NULL, NULL}, 0.66 - (15234.5 - 9876.5) / 2.3e6, 0,
      {OK_ANY, {TIRENV_ENOCONV, TIRENV_EQ_BREAKDOWN}, OK_ANY}},
     /* F(z_lo = 0.5) = 2.43e6 N < G: no equilibrium above z_lo. */
     {"no bracket: the load exceeds what the tire carries", SMOOTH_LAW, 3.0e6,
-     {0.5, 0.6817, 0.62, 0.03, NULL}, NAN, 0,
+     {0.5, 0.6817, 0.62, 0.03, NULL, NULL}, NAN, 0,
      {{TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}, {TIRENV_ENOCONV, TIRENV_EQ_BREAKDOWN},
       {TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}}},
     /* The root is at 0.67633 m: every method has to look in [0.6745, 0.678) m, Brent only
      * after it has taken steps of its own. */
     {"the force function fails near the root",
      {SMOOTH, 0.6817, 0, 3.137e7, 0, 0, 0.678, NEVER, 0}, 12345.6,
-     {0.0, 0.6817, 0.68, 0.03, NULL}, NAN, 0,
+     {0.0, 0.6817, 0.68, 0.03, NULL, NULL}, NAN, 0,
      {{TIRENV_ERANGE, TIRENV_EQ_FORCE_FAILED}, {TIRENV_ERANGE, TIRENV_EQ_FORCE_FAILED},
       {TIRENV_ERANGE, TIRENV_EQ_FORCE_FAILED}}},
     {"the force function returns NaN near the root",
      {SMOOTH, 0.6817, 0, 3.137e7, 0, 0, NEVER, 0.678, 0}, 12345.6,
-     {0.0, 0.6817, 0.68, 0.03, NULL}, NAN, 0,
+     {0.0, 0.6817, 0.68, 0.03, NULL, NULL}, NAN, 0,
      {{TIRENV_ENOCONV, TIRENV_EQ_FORCE_FAILED}, {TIRENV_ENOCONV, TIRENV_EQ_FORCE_FAILED},
       {TIRENV_ENOCONV, TIRENV_EQ_FORCE_FAILED}}},
     {"two evaluations allowed", SMOOTH_LAW, 12345.6,
-     {0.0, 0.6817, 0.62, 0.03, NULL}, NAN, 2,
+     {0.0, 0.6817, 0.62, 0.03, NULL, NULL}, NAN, 2,
      {{TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS}, {TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS},
       {TIRENV_ENOCONV, TIRENV_EQ_MAX_EVALS}}},
     /* A start at z_lo inside a plateau below the load (a new load's warm start clamped to the
@@ -172,29 +172,29 @@ static const eq_case cases[] = {
      * second point below z_lo. */
     {"a start at z_lo on a plateau below the load",
      {PLATEAU, 0.70, 0.66, 0, 2.3e6, 9876.5, NEVER, NEVER, 0}, 15234.5,
-     {0.67, 0.70, 0.67, 0.02, NULL}, NAN, 0,
+     {0.67, 0.70, 0.67, 0.02, NULL, NULL}, NAN, 0,
      {{TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}, {TIRENV_ENOCONV, TIRENV_EQ_BREAKDOWN},
       {TIRENV_ENOBRACKET, TIRENV_EQ_NO_BRACKET}}},
     /* z0 - SECANT_STEP lies below z_lo: the secant's second point is taken above (it
      * refused before, though the root lies in range). */
     {"smooth, a start within SECANT_STEP above z_lo", SMOOTH_LAW, 12345.6,
-     {0.6, 0.6817, 0.6005, 0.03, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
+     {0.6, 0.6817, 0.6005, 0.03, NULL, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
     /* The force does not settle at z_lo, the hub at the ground (the ring crushed by a radius
      * over Horstwalde.crg, docs/models.md section 11.1): Brent failed at its lower end, where
      * Newton and the secant never look; its end moves halfway up, where the force settles. */
     {"the force does not settle near z_lo",
      {SMOOTH, 0.6817, 0, 3.137e7, 0, 0, NEVER, NEVER, 0.45}, 12345.6,
-     {0.0, 0.6817, 0.62, 0.03, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
+     {0.0, 0.6817, 0.62, 0.03, NULL, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
     /* ... up to 4.3 mm below the root (0.67633 m): the halving passes the root (an upper end
      * below z_hi), then finds the lower end between. */
     {"the force does not settle up to just below the root",
      {SMOOTH, 0.6817, 0, 3.137e7, 0, 0, NEVER, NEVER, 0.672}, 12345.6,
-     {0.0, 0.6817, 0.68, 0.03, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
+     {0.0, 0.6817, 0.68, 0.03, NULL, NULL}, NAN, 0, {OK_ANY, OK_ANY, OK_ANY}},
     /* ... and anywhere below 0.678 m, the root too: every method fails with the force's
      * words, Brent once its search has closed to eps_z. */
     {"the force does not settle at the root",
      {SMOOTH, 0.6817, 0, 3.137e7, 0, 0, NEVER, NEVER, 0.678}, 12345.6,
-     {0.0, 0.6817, 0.68, 0.03, NULL}, NAN, 0,
+     {0.0, 0.6817, 0.68, 0.03, NULL, NULL}, NAN, 0,
      {{TIRENV_ENOCONV, TIRENV_EQ_FORCE_FAILED}, {TIRENV_ENOCONV, TIRENV_EQ_FORCE_FAILED},
       {TIRENV_ENOCONV, TIRENV_EQ_FORCE_FAILED}}},
 };
@@ -394,6 +394,65 @@ static void test_reuse_after_failure(void **state)
     }
 }
 
+/* The model's first iterate (tirenv_eq_problem's start): Newton evaluates there instead of
+ * at z0 where it lies inside the bracket, so that a start at the root is the whole solve (one
+ * evaluation, the residual's stop); one outside the bracket, or a model proposing none, leaves
+ * the solve as it was, evaluation for evaluation. The smooth law of the table, its root
+ * known. */
+typedef struct {
+    double z;              /* the start proposed, m */
+    int has;               /* whether one is proposed */
+    double z0_seen;        /* the z0 it was asked from, m */
+} proposal;
+
+static proposal the_proposal;
+
+static int propose(void *ctx, double z0, double *z)
+{
+    (void)ctx;
+    the_proposal.z0_seen = z0;
+    *z = the_proposal.z;
+    return the_proposal.has;
+}
+
+static void test_model_start(void **state)
+{
+    (void)state;
+    const eq_case *c = &cases[0]; /* smooth, warm start below the root */
+    const double G = c->G, root = smooth_a - pow(G / smooth_k, 2.0 / 3.0);
+    const tirenv_eq_settings eq = tirenv_eq_default();
+    tirenv_eq_solver *s = tirenv_eq__solver_alloc(tirenv_eq__newton);
+    assert_non_null(s);
+    tirenv_eq_result plain, res;
+    recorder r0 = {.L = &c->L, .n = 0};
+    assert_int_equal(tirenv_eq__solve(s, &eq, force, &r0, G, &c->prob, &plain, NULL), 0);
+    assert_true(plain.evals > 1);
+    const struct {
+        double z;
+        int has;
+        int taken;
+    } starts[] = {{root, 1, 1}, {c->prob.z_hi + 0.0137, 1, 0}, {c->prob.z_lo - 0.21, 1, 0},
+                  {root, 0, 0}};
+    for (size_t k = 0; k < sizeof starts / sizeof starts[0]; ++k) {
+        the_proposal = (proposal){.z = starts[k].z, .has = starts[k].has, .z0_seen = NAN};
+        tirenv_eq_problem prob = c->prob;
+        prob.start = propose;
+        recorder r = {.L = &c->L, .n = 0};
+        assert_int_equal(tirenv_eq__solve(s, &eq, force, &r, G, &prob, &res, NULL), 0);
+        assert_true(the_proposal.z0_seen == c->prob.z0); /* asked from the warm start */
+        if (starts[k].taken) {
+            assert_int_equal(res.evals, 1);
+            assert_true(r.log[0].z == root);
+            assert_int_equal(res.stop, TIRENV_EQ_RESIDUAL);
+        } else {
+            assert_int_equal(res.evals, plain.evals);
+            assert_true(r.log[0].z == c->prob.z0);
+            assert_memory_equal(&res.point.z, &plain.point.z, sizeof res.point.z);
+        }
+    }
+    tirenv_eq__solver_free(s);
+}
+
 static void test_names(void **state)
 {
     (void)state;
@@ -424,6 +483,7 @@ int main(void)
         cmocka_unit_test(test_steps_by_hand),
         cmocka_unit_test(test_reuse_after_failure),
         cmocka_unit_test(test_slope_on_request),
+        cmocka_unit_test(test_model_start),
         cmocka_unit_test(test_names),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
