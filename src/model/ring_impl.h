@@ -29,6 +29,9 @@ static inline int tirenv_ring__same_bits(const double *a, const double *b, size_
     return memcmp(a, b, n * sizeof *a) == 0;
 }
 
+/* Curvatures the ring's step in z keeps per side (ring_root.c). */
+#define TIRENV_RING_ROOT_KEEP 3
+
 /* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface
  * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */
 #define TIRENV_RING_GROUND_LAYER 1e4
@@ -137,6 +140,16 @@ typedef struct {
     double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
 } tirenv_ring_piece;
 
+/* The ring's own step in z (ring_root.c): F_z's curvature in z, measured at the positions
+ * before, by the sign of the step (0 up, 1 down), newest first; and the evaluation it stepped
+ * from at this x. Saved with the warm start (a chunk's first position starts without it). */
+typedef struct {
+    double c[2][TIRENV_RING_ROOT_KEEP]; /* d^2 F_z/dz^2, N/m^2 */
+    double n[2];           /* how many of c[s] hold one (a double: the state is doubles) */
+    double x, z, F, k;     /* the step's evaluation: m, m, N, N/m */
+    double have;           /* 1: x .. k hold it */
+} tirenv_ring_root;
+
 struct tirenv_ring {
     double R0;             /* free radius at the tread surface, m */
     double R;              /* belt radius R0 - t_r, m */
@@ -198,7 +211,22 @@ struct tirenv_ring {
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
     size_t k_first, k_last;   /* the shear-coupled tread's last solve: its first and last
                                * point in contact (k_first > k_last: none) */
+    tirenv_ring_root root;    /* the shear-coupled tread's step in z (ring_root.c) */
 };
+
+/* After an evaluation at (x, z) (m) with hub force F (N): F_z's curvature in z from it and the
+ * evaluation the last step went from, where that was at the same x. */
+void tirenv_ring__root_seen(tirenv_ring *r, double x, double z, double F);
+
+/* Right after an evaluation at (x, z) (m) with F_z = F (N) and dF_z/dz = k (N/m): the height
+ * *z_root (m) where F_z = G (N) on the parabola of that slope and the curvature measured at
+ * the positions before, returning 1; 0 where there is none (no curvature yet, or a step the
+ * curvature would change by more than a tenth), and Newton takes its linear step. */
+int tirenv_ring__root(tirenv_ring *r, double x, double z, double F, double k, double G,
+                      double *z_root);
+
+/* The root's measurements forgotten (a cold start). */
+void tirenv_ring__root_clear(tirenv_ring *r);
 
 /* The quadrature points of the continuous contact over nodes ja .. jb (ring_ground.c):
  * r->pts, r->n_pts; those out of reach (d <= -t_r) with d = -INFINITY, the others with the
