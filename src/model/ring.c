@@ -695,8 +695,9 @@ static size_t warm_fields(const tirenv_ring *r)
     return r->par.contact != TIRENV_RING_CONTINUOUS ? 0 : r->tread ? 2 : 1;
 }
 
-/* The shear-coupled tread's doubles after w: u, and the slopes in z that the next start
- * follows (ring_shear.c). */
+/* The shear-coupled tread's doubles after w: u, the slopes in z that the next start
+ * follows, and the nodes of the last contact, which its first sub-window holds
+ * (ring_shear.c). */
 static size_t tread_doubles(const tirenv_ring *r)
 {
     return warm_fields(r) == 2 ? tirenv_ring__tread_warm_size(r->tread) : 0;

@@ -340,7 +340,7 @@ void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole);
 void tirenv_ring__tread_poison(tirenv_ring_tread *T);
 
 /* The doubles of the warm start from tirenv_ring__tread_u on (u, its and w's slopes in z, the
- * z they were found at): what a state saves. */
+ * z they were found at, the last contact's nodes): what a state saves. */
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 
 /* The shear-coupled tread's contact on the window r->lo, r->n, the centre at abscissa x_c (m,

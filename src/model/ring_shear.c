@@ -43,7 +43,7 @@
 #include "core/capacity.h"
 #include "model/ring_impl.h"
 
-enum { BAND_P = 4, TAIL = 4, NB = 6 };
+enum { BAND_P = 4, TAIL = 4, NB = 6, SPAN = 4 };
 
 /* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t <= TAIL rows are
  * dense (the window's ends coupled through the exterior): L[5 i + k] = A[i + k][i] for the band
@@ -99,6 +99,9 @@ struct tirenv_ring_tread {
     double *dw, *du;    /* per node (global): dw/dz, du/dz at the last evaluation's
                          * equilibrium (0 outside its window or without dF_z/dz) */
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
+    double *span;       /* 4, after pred (a state saves them): 1 if the last answer had a
+                         * contact, the nodes of its first and last point's intervals, and
+                         * the centre's abscissa (m) (warm_span) */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
@@ -638,7 +641,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->k_g = TIRENV_RING_GROUND_LAYER * k_t;
     T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
     T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
-    T->kap = malloc((4 * M + 3) * sizeof *T->kap);
+    T->kap = malloc((4 * M + 3 + SPAN) * sizeof *T->kap);
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
     T->cols = calloc(M, sizeof *T->cols);
@@ -660,7 +663,8 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->wc = T->xw + 4 * M;
     for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
-    memset(T->u, 0, (3 * M + 3) * sizeof *T->u);
+    T->span = T->pred + 3;
+    memset(T->u, 0, (3 * M + 3 + SPAN) * sizeof *T->u);
     return T;
 }
 
@@ -695,7 +699,7 @@ size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
 
 void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
 
-size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
+size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3 + SPAN; }
 
 int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_ring_carcass *law)
 {
@@ -1649,6 +1653,35 @@ static const size_t *beyond_span(const tirenv_ring *r, const double xw[], size_t
     return beyond;
 }
 
+/* The nodes the first sub-window must hold besides the warm start's contact: beyond_span's,
+ * and, where the last answer was within WARM_SPAN_DX of x_c (m), the nodes of its contact.
+ * Inside the patch the tread surface lies within the contact layer's compression, some 1e-7
+ * m, of the ground, so wherever the ground moved away from it with x (a road's slope over the
+ * step: 1e-5 m and more) the warm start's points read as free, and the contact it predicts
+ * stopped short by tens of nodes: the sub-window then grew by SUB_QUANT a try, and after
+ * SUB_TRIES the whole window was solved, then the sub-window of its contact (five solves at
+ * a position's first evaluation over a class C road, where one or two do now). The nodes in
+ * contact move by a node spacing over some 3 mm of travel, so the last contact's nodes are
+ * nearly this one's. */
+static const double WARM_SPAN_DX = 2e-3;
+
+static const size_t *warm_span(const tirenv_ring *r, double x_c, const double xw[],
+                               size_t beyond[2])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const double *sp = T->span;
+    beyond_span(r, xw, beyond);
+    if (T->soft || sp[0] != 1 || !(fabs(x_c - sp[3]) <= WARM_SPAN_DX))
+        return beyond;
+    /* (Node indices as doubles, exact: what a state saves is doubles. A damaged state's
+     * are checked: within the window, or none.) */
+    const double lo = (double)r->lo, hi = (double)(r->lo + r->n - 1);
+    const double j1 = sp[1] > lo ? sp[1] : lo, j2 = sp[2] < hi ? sp[2] : hi;
+    if (j1 <= j2 && j1 == floor(j1) && j2 == floor(j2))
+        beyond[0] = (size_t)j1, beyond[1] = (size_t)j2;
+    return beyond;
+}
+
 /* The exterior's columns for a sub-window of n nodes from lo (computing them, and its end
  * correction, the first time); NULL if out of memory. */
 static const double *sub_cols(tirenv_ring_tread *T, size_t lo, size_t n)
@@ -1976,7 +2009,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12, j_out = 0;
     size_t beyond[2];
     int sub = !T->lugs && !T->whole && contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
-              sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a, &b, &k0, &k1);
+              sub_window(r, kf, kl, warm_span(r, x_c, xw, beyond), &a, &b, &k0, &k1);
     for (size_t t = 0; sub; ++t) {
         sub = t < SUB_TRIES && sub_cols(T, a, b - a + 1) &&
               solve_on(r, x_c, a, b, k0, k1, want) == TIRENV_RING_NEWTON_OK &&
@@ -2165,6 +2198,12 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     leave(r, &sv);
     r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
     r->k_last = k_last + k0;
+    T->span[0] = k_first <= k_last;
+    if (k_first <= k_last) {
+        T->span[1] = (double)r->pts[r->k_first].j;
+        T->span[2] = (double)(r->pts[r->k_last].j + 1);
+        T->span[3] = x_c;
+    }
     if (dfz_dz)
         slope_out(r, a, b, sub, z, x_c);
     T->deferred = !dfz_dz && T->defer;
