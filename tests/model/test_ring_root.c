@@ -2,7 +2,8 @@
 /* The ring's own step in z (src/model/ring_root.c, docs/models.md 5.6, Counted a ninth time):
  * the curvature it measures and the parabola's root it steps to, on parabolas with known
  * roots, its guards, and the model's equilibria with it against Brent's (which takes no model
- * step) over seeded cleats, steps, blades and a class C road. */
+ * step) over seeded cleats, steps, blades and a class C road; and the first sub-window that
+ * holds the last answer's contact (ring_shear.c's warm_span) against one that does not. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -240,12 +241,65 @@ static void test_equilibria_as_brent(void **state)
     assert_true(compared > 40);
 }
 
+/* The first sub-window of an evaluation holds the nodes of the last answer's contact
+ * (ring_shear.c, warm_span): over a class C road at 1 mm steps, where the warm start alone
+ * predicts a contact tens of nodes short, a ring that keeps them against one whose record of
+ * them is cleared before each evaluation (the last of the tread's warm doubles, what a state
+ * saves: tirenv_ring__tread_warm_size): the same forces within 1e-9 of the load (both are the
+ * minimum, on sub-windows that differ) and fewer Newton steps (factorisations). */
+static void test_first_sub_window(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_road_settings s = tirenv_road_default();
+    s.road_class = 'C';
+    s.length = 4;
+    s.dx = 0.01;
+    s.seed = 3;
+    tirenv_profile *p = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_iso8608(&s, &p, &d), TIRENV_OK);
+    tirenv_ring *r[2] = {default_ring(), default_ring()};
+    const size_t M = tirenv_ring_size(r[1]);
+    double *span = tirenv_ring__tread_u(r[1]->tread) + 3 * M + 3; /* 1 if it holds one */
+    assert_int_equal(tirenv_ring__tread_warm_size(r[1]->tread), 3 * M + 3 + 4);
+    const double G = 21000;
+    double z = 0.64, worst = 0;
+    (void)newton_at(r[0], p, 1.5, G, &t, 0, &z); /* a height near the equilibria */
+    size_t kept = 0;
+    for (int i = 0; i < 80; ++i) {
+        const double x = 1.5 + 0.001 * i, dz[3] = {1.3e-5, -1.1e-5, 2e-7};
+        for (int k = 0; k < 3; ++k) {
+            double fx[2], fz[2], slope[2];
+            kept += span[0] == 1;
+            span[0] = 0;
+            for (int m = 0; m < 2; ++m)
+                assert_int_equal(tirenv_ring_forces(r[m], p, x, z + dz[k], &fx[m], &fz[m],
+                                                    &slope[m], NULL, NULL), 0);
+            assert_near(fz[0], fz[1], 1e-9 * G, 0);
+            assert_near(fx[0], fx[1], 1e-9 * G, 0);
+            worst = fmax(worst, fabs(fz[0] - fz[1]));
+        }
+        z += 1e-5 * sin(0.1 * i);
+    }
+    const size_t steps[2] = {tirenv_ring__tread_newton_steps(r[0]->tread),
+                             tirenv_ring__tread_newton_steps(r[1]->tread)};
+    print_message("first sub-window: %zu Newton steps with the last contact's nodes, %zu "
+                  "without; F_z within %.3g N\n", steps[0], steps[1], worst);
+    assert_true(kept > 200); /* the record was there to clear */
+    assert_true(steps[0] < steps[1]);
+    tirenv_ring_free(r[0]);
+    tirenv_ring_free(r[1]);
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_parabola),
         cmocka_unit_test(test_fewer_evaluations),
         cmocka_unit_test(test_equilibria_as_brent),
+        cmocka_unit_test(test_first_sub_window),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
