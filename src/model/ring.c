@@ -486,6 +486,8 @@ static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, doub
                          double *fx, double *fz, double *dfz_dz, size_t *contacts,
                          tirenv_diag *diag)
 {
+    if (r->tread && r->n) /* the last answer's points, before the sampling replaces them */
+        tirenv_ring__tread_new_x(r, x);
     int status = cast_window_smooth(r, p, x, z);
     if (status)
         return tirenv_error(diag, status, "", 0, "ring", "out of memory for the contact of "

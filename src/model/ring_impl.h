@@ -350,6 +350,15 @@ size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag);
 
+/* Before the ground is sampled for an evaluation at abscissa x (m): where it is not the last
+ * answer's, the ground's penetration at the nodes of that answer's contact, kept from its
+ * points for the warm start's shift (ring_shear.c, warm_shift). */
+void tirenv_ring__tread_new_x(tirenv_ring *r, double x);
+
+/* For tests: the next evaluation's warm start without the last answer's contact (its nodes
+ * for the first sub-window, its ground for the shift), as before either was kept. */
+void tirenv_ring__tread_forget(tirenv_ring_tread *T);
+
 /* w and u (m) of the nodes outside the last window, from the exterior's exact solve
  * (allocates; diagnostics only); u_out may be NULL. Nonzero if out of memory. */
 int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_out[]);

@@ -99,6 +99,18 @@ struct tirenv_ring_tread {
     double *dw, *du;    /* per node (global): dw/dz, du/dz at the last evaluation's
                          * equilibrium (0 outside its window or without dF_z/dz) */
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
+    double *dn;         /* M: per node of the last answer's sub-window dn_a .. dn_b, the
+                         * ground's penetration d at the node's ray where the ground touched
+                         * the tread surface there (-INFINITY elsewhere), at abscissa dn_x and
+                         * height dn_z (dn_ok 0: none) */
+    double *dn2, *ddn;  /* M each: this sampling's d and d(d)/dz at the nodes dn_a .. dn_b
+                         * (warm_shift) */
+    double dn_x, dn_z;
+    size_t dn_a, dn_b;
+    int dn_ok;
+    double last_x, last_z; /* the last answer's centre (last_ok), m */
+    int last_ok;
+    unsigned skip;      /* positions warm_shift leaves out: its last pass moved nothing */
     double *span;       /* 4, after pred (a state saves them): 1 if the last answer had a
                          * contact, the nodes of its first and last point's intervals, and
                          * the centre's abscissa (m) (warm_span) */
@@ -645,7 +657,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
     T->cols = calloc(M, sizeof *T->cols);
-    T->xw = malloc(5 * M * sizeof *T->xw);
+    T->xw = malloc(8 * M * sizeof *T->xw);
     T->soft = tirenv_ring__carcass_law(par, R * dth, &T->law);
     if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
@@ -661,6 +673,9 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->pred = T->du + M;
     T->dxw = T->xw + 2 * M;
     T->wc = T->xw + 4 * M;
+    T->dn = T->xw + 5 * M;
+    T->dn2 = T->xw + 6 * M;
+    T->ddn = T->xw + 7 * M;
     for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
     T->span = T->pred + 3;
@@ -1969,6 +1984,102 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
     T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
 }
 
+/* The warm start at a new abscissa moves the tread surface with the ground (WARM_SHIFT_DX,
+ * WARM_SHIFT_MAX, m): inside the patch it lies within the contact layer's compression (some
+ * 1e-7 m) of the ground, so where the ground under a node moved with x (a road's slope over
+ * the step) the last answer's u read its points as free or deep in, and Newton's first steps
+ * changed tens of states (with the line search over a road). A node whose ray's ground touched
+ * the tread surface in the last answer, within WARM_SHIFT_DX of the last x, starts from u + (d
+ * - d_last - dz d(d)/dz) of its ray's ground (dz u/dz already follows the part that moves with
+ * z), where that moved by at most WARM_SHIFT_MAX (not a cleat's face passing the ray). One pass
+ * over the points of the last contact's nodes; the minimum does not depend on the start (its
+ * states' system is solved last), so the same bits. */
+static const double WARM_SHIFT_DX = 2e-3, WARM_SHIFT_MAX = 1e-3;
+
+/* The larger d of the points at each node ja .. jb of r's points from k_lo on (a node's own
+ * ray; two one-sided values where a vertex lies at it), of those in contact with the tread
+ * surface only with in_contact, into dn (-INFINITY where none), their d(d)/dz into ddn
+ * (unless NULL). The points are in node order: the first of interval ja - 1 by bisection. */
+static void node_d(const tirenv_ring *r, size_t k_lo, size_t ja, size_t jb, int in_contact,
+                   double dn[], double ddn[])
+{
+    for (size_t j = ja; j <= jb; ++j)
+        dn[j] = -INFINITY;
+    size_t k0 = k_lo, k1 = r->n_pts;
+    while (k0 < k1) {
+        const size_t mid = k0 + (k1 - k0) / 2;
+        if (r->pts[mid].j + 1 < ja)
+            k0 = mid + 1;
+        else
+            k1 = mid;
+    }
+    for (size_t k = k0; k < r->n_pts && r->pts[k].j <= jb; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (!(q->s == 0 || q->s == 1) || (in_contact && !(q->st & 1)))
+            continue;
+        const size_t j = q->j + (q->s == 1);
+        if (j >= ja && j <= jb && q->d > dn[j]) {
+            dn[j] = q->d;
+            if (ddn)
+                ddn[j] = q->dd;
+        }
+    }
+}
+
+void tirenv_ring__tread_forget(tirenv_ring_tread *T)
+{
+    T->span[0] = 0;
+    T->last_ok = T->dn_ok = 0;
+}
+
+void tirenv_ring__tread_new_x(tirenv_ring *r, double x)
+{
+    tirenv_ring_tread *T = r->tread;
+    T->dn_ok = 0;
+    if (T->soft || !T->last_ok || x == T->last_x || !(fabs(x - T->last_x) <= WARM_SHIFT_DX) ||
+        r->k_first > r->k_last || r->k_last >= r->n_pts)
+        return;
+    if (T->skip > 0) {
+        --T->skip;
+        return;
+    }
+    T->dn_a = r->pts[r->k_first].j;
+    T->dn_b = r->pts[r->k_last].j + 1;
+    node_d(r, r->k_first, T->dn_a, T->dn_b, 1, T->dn, NULL);
+    T->dn_x = T->last_x, T->dn_z = T->last_z, T->dn_ok = 1;
+}
+
+/* After tirenv_ring__tread_new_x: the shift of each node of the last contact that lies in this
+ * window, applied to the warm start xw. A pass that moves no node by more than round-off
+ * (level ground and a cleat's flat top move along the rays only with z) has the next
+ * WARM_SHIFT_SKIP positions left out. */
+enum { WARM_SHIFT_SKIP = 16 };
+
+static void warm_shift(tirenv_ring *r, double x_c, double z, double xw[])
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t lo = r->lo, hi = lo + r->n - 1;
+    const size_t ja = T->dn_a > lo ? T->dn_a : lo, jb = T->dn_b < hi ? T->dn_b : hi;
+    if (!T->dn_ok || x_c == T->dn_x || ja > jb)
+        return;
+    T->dn_ok = 0;
+    node_d(r, 0, ja, jb, 0, T->dn2, T->ddn);
+    const double dz = z - T->dn_z;
+    size_t moved = 0;
+    for (size_t j = ja; j <= jb; ++j) {
+        if (T->dn[j] == -INFINITY || T->dn2[j] == -INFINITY)
+            continue;
+        /* The node's point's d(d)/dz: d is linear in z along a ray to one line. */
+        const double dd = T->dn2[j] - T->dn[j] - T->ddn[j] * dz;
+        if (fabs(dd) <= WARM_SHIFT_MAX) {
+            xw[2 * (j - lo) + 1] += dd;
+            moved += fabs(dd) > 1e-12;
+        }
+    }
+    if (moved == 0)
+        T->skip = WARM_SHIFT_SKIP;
+}
+
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag)
 {
@@ -2002,6 +2113,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
         for (size_t i = ib; i < n; ++i)
             xw[2 * i] = xw[2 * i + 1] = 0;
     }
+    warm_shift(r, x_c, z, xw);
     /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
      * with the tire) where there is one; else, or where a free point would touch, on the whole
      * window, and then on the sub-window of its contact. */
@@ -2198,6 +2310,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
     leave(r, &sv);
     r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
     r->k_last = k_last + k0;
+    T->last_x = x_c, T->last_z = z, T->last_ok = 1;
     T->span[0] = k_first <= k_last;
     if (k_first <= k_last) {
         T->span[1] = (double)r->pts[r->k_first].j;
