@@ -99,10 +99,10 @@ struct tirenv_ring_tread {
     double *dw, *du;    /* per node (global): dw/dz, du/dz at the last evaluation's
                          * equilibrium (0 outside its window or without dF_z/dz) */
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
-    double *dn;         /* M: per node of the last answer's sub-window dn_a .. dn_b, the
-                         * ground's penetration d at the node's ray where the ground touched
-                         * the tread surface there (-INFINITY elsewhere), at abscissa dn_x and
-                         * height dn_z (dn_ok 0: none) */
+    double *dn;         /* M: per node dn_a .. dn_b of the last answer's contact, the ground's
+                         * penetration d at the node's ray where it touched the tread surface
+                         * (-INFINITY elsewhere), at abscissa dn_x and height dn_z (dn_ok 0:
+                         * none; tirenv_ring__tread_new_x) */
     double *dn2, *ddn;  /* M each: this sampling's d and d(d)/dz at the nodes dn_a .. dn_b
                          * (warm_shift) */
     double dn_x, dn_z;
