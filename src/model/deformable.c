@@ -60,10 +60,16 @@ static int force_at(void *ctx, double z, tirenv_eq_point *out, tirenv_diag *diag
     const deformable_state *st = c->st;
     const int status = st->def->forces(st->elem, c->prof, c->x, z, out, diag);
     /* The model's own step only where Newton takes a step (the other methods take none):
-     * within eps_F of the load the linear one decides convergence as before. */
+     * within eps_F of the load the linear one decides convergence as before. It starts from
+     * the slope, which Newton asks for there anyway where the model deferred it. */
     if (!status && st->def->root && st->tire.eq.method == TIRENV_EQ_NEWTON &&
-        fabs(out->F - st->G) > st->tire.eq.eps_F)
+        fabs(out->F - st->G) > st->tire.eq.eps_F) {
+        if (isnan(out->dF_dz) && st->def->slope &&
+            (st->def->slope(st->elem, &out->dF_dz) || !isfinite(out->dF_dz)))
+            return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "equilibrium",
+                                "the force function gave no dF_z/dz at z = %.9g m", z);
         out->has_root = st->def->root(st->elem, c->prof, c->x, z, st->G, out, &out->z_root);
+    }
     return status;
 }
 

@@ -489,6 +489,8 @@ static int forces_smooth(tirenv_ring *r, const tirenv_profile *p, double x, doub
                          double *fx, double *fz, double *dfz_dz, size_t *contacts,
                          tirenv_diag *diag)
 {
+    if (r->tread && r->n) /* the last answer's points, before the sampling replaces them */
+        tirenv_ring__tread_new_x(r, x);
     int status = cast_window_smooth(r, p, x, z);
     if (status)
         return tirenv_error(diag, status, "", 0, "ring", "out of memory for the contact of "
@@ -698,17 +700,25 @@ static size_t warm_fields(const tirenv_ring *r)
     return r->par.contact != TIRENV_RING_CONTINUOUS ? 0 : r->tread ? 2 : 1;
 }
 
-/* The shear-coupled tread's doubles after w: u, and the slopes in z that the next start
- * follows (ring_shear.c). */
+/* The shear-coupled tread's doubles after w: u, the slopes in z that the next start
+ * follows, and the nodes of the last contact, which its first sub-window holds
+ * (ring_shear.c). */
 static size_t tread_doubles(const tirenv_ring *r)
 {
     return warm_fields(r) == 2 ? tirenv_ring__tread_warm_size(r->tread) : 0;
 }
 
+/* The shear-coupled tread's step in z (ring_root.c): its curvatures, saved after the tread's
+ * doubles. */
+static size_t root_bytes(const tirenv_ring *r)
+{
+    return warm_fields(r) == 2 ? sizeof r->root : 0;
+}
+
 size_t tirenv_ring__state_size(const tirenv_ring *r)
 {
     return 2 * sizeof(size_t) + r->M + (warm_fields(r) >= 1) * r->M * sizeof(double) +
-           tread_doubles(r) * sizeof(double);
+           tread_doubles(r) * sizeof(double) + root_bytes(r);
 }
 
 void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf)
@@ -724,6 +734,8 @@ void tirenv_ring__state_save(const tirenv_ring *r, unsigned char *buf)
     if (warm_fields(r) == 2)
         memcpy(buf + M * sizeof *r->w, tirenv_ring__tread_u(r->tread),
                tread_doubles(r) * sizeof *r->w);
+    if (root_bytes(r))
+        memcpy(buf + (M + tread_doubles(r)) * sizeof *r->w, &r->root, sizeof r->root);
 }
 
 void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
@@ -739,6 +751,8 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
     if (warm_fields(r) == 2)
         memcpy(tirenv_ring__tread_u(r->tread), buf + M * sizeof *r->w,
                tread_doubles(r) * sizeof *r->w);
+    if (root_bytes(r))
+        memcpy(&r->root, buf + (M + tread_doubles(r)) * sizeof *r->w, sizeof r->root);
     int finite = 1; /* damaged bytes: no warm start rather than a NaN one */
     const double *u = warm_fields(r) == 2 ? tirenv_ring__tread_u(r->tread) : NULL;
     for (size_t j = 0; j < M && warm_fields(r) >= 1; ++j)
@@ -754,4 +768,13 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
             memset(tirenv_ring__tread_u(r->tread), 0,
                    tirenv_ring__tread_warm_size(r->tread) * sizeof(double));
     }
+    /* Damaged curvatures: none, and Newton's linear steps. */
+    const double *rd = (const double *)&r->root;
+    int root_ok = 1;
+    for (size_t i = 0; i < sizeof r->root / sizeof *rd; ++i)
+        root_ok &= isfinite(rd[i]);
+    root_ok &= r->root.n[0] >= 0 && r->root.n[0] <= TIRENV_RING_ROOT_KEEP &&
+               r->root.n[1] >= 0 && r->root.n[1] <= TIRENV_RING_ROOT_KEEP;
+    if (!root_ok)
+        tirenv_ring__root_clear(r);
 }

@@ -29,6 +29,9 @@ static inline int tirenv_ring__same_bits(const double *a, const double *b, size_
     return memcmp(a, b, n * sizeof *a) == 0;
 }
 
+/* Curvatures the ring's step in z keeps per side (ring_root.c). */
+#define TIRENV_RING_ROOT_KEEP 3
+
 /* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface
  * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */
 #define TIRENV_RING_GROUND_LAYER 1e4
@@ -137,6 +140,16 @@ typedef struct {
     double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
 } tirenv_ring_piece;
 
+/* The ring's own step in z (ring_root.c): F_z's curvature in z, measured at the positions
+ * before, by the sign of the step (0 up, 1 down), newest first; and the evaluation it stepped
+ * from at this x. Saved with the warm start (a chunk's first position starts without it). */
+typedef struct {
+    double c[2][TIRENV_RING_ROOT_KEEP]; /* d^2 F_z/dz^2, N/m^2 */
+    double n[2];           /* how many of c[s] hold one (a double: the state is doubles) */
+    double x, z, F, k;     /* the step's evaluation: m, m, N, N/m */
+    double have;           /* 1: x .. k hold it */
+} tirenv_ring_root;
+
 struct tirenv_ring {
     double R0;             /* free radius at the tread surface, m */
     double R;              /* belt radius R0 - t_r, m */
@@ -214,7 +227,22 @@ struct tirenv_ring {
     tirenv_ring_tread *tread; /* TREAD_SHEAR > 0 and the continuous contact; else NULL */
     size_t k_first, k_last;   /* the shear-coupled tread's last solve: its first and last
                                * point in contact (k_first > k_last: none) */
+    tirenv_ring_root root;    /* the shear-coupled tread's step in z (ring_root.c) */
 };
+
+/* After an evaluation at (x, z) (m) with hub force F (N): F_z's curvature in z from it and the
+ * evaluation the last step went from, where that was at the same x. */
+void tirenv_ring__root_seen(tirenv_ring *r, double x, double z, double F);
+
+/* Right after an evaluation at (x, z) (m) with F_z = F (N) and dF_z/dz = k (N/m): the height
+ * *z_root (m) where F_z = G (N) on the parabola of that slope and the curvature measured at
+ * the positions before, returning 1; 0 where there is none (no curvature yet, or a step the
+ * curvature would change by more than a tenth), and Newton takes its linear step. */
+int tirenv_ring__root(tirenv_ring *r, double x, double z, double F, double k, double G,
+                      double *z_root);
+
+/* The root's measurements forgotten (a cold start). */
+void tirenv_ring__root_clear(tirenv_ring *r);
 
 /* The quadrature points of the continuous contact over nodes ja .. jb (ring_ground.c):
  * r->pts, r->n_pts; those out of reach (d <= -t_r) with d = -INFINITY, the others with the
@@ -341,7 +369,7 @@ void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole);
 void tirenv_ring__tread_poison(tirenv_ring_tread *T);
 
 /* The doubles of the warm start from tirenv_ring__tread_u on (u, its and w's slopes in z, the
- * z they were found at): what a state saves. */
+ * z they were found at, the last contact's nodes): what a state saves. */
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
 
 /* The shear-coupled tread's contact on the window r->lo, r->n, the centre at abscissa x_c (m,
@@ -350,6 +378,15 @@ size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T);
  * patch's), r->tread_max; TIRENV_ENOCONV with diag if Newton does not settle. */
 int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
                              double *dfz_dz, tirenv_diag *diag);
+
+/* Before the ground is sampled for an evaluation at abscissa x (m): where it is not the last
+ * answer's, the ground's penetration at the nodes of that answer's contact, kept from its
+ * points for the warm start's shift (ring_shear.c, warm_shift). */
+void tirenv_ring__tread_new_x(tirenv_ring *r, double x);
+
+/* For tests: the next evaluation's warm start without the last answer's contact (its nodes
+ * for the first sub-window, its ground for the shift), as before either was kept. */
+void tirenv_ring__tread_forget(tirenv_ring_tread *T);
 
 /* w and u (m) of the nodes outside the last window, from the exterior's exact solve
  * (allocates; diagnostics only); u_out may be NULL. Nonzero if out of memory. */

@@ -18,9 +18,23 @@ static void ring_free(void *elem) { tirenv_ring_free(elem); }
 static int ring_forces(void *elem, const tirenv_profile *p, double x, double z,
                        tirenv_eq_point *out, tirenv_diag *diag)
 {
-    return tirenv_ring_forces(elem, p, x, z, &out->fx, &out->F,
-                              tirenv_ring__deferring(elem) ? NULL : &out->dF_dz,
-                              &out->contacts, diag);
+    const int defer = tirenv_ring__deferring(elem);
+    const int status = tirenv_ring_forces(elem, p, x, z, &out->fx, &out->F,
+                                          defer ? NULL : &out->dF_dz, &out->contacts, diag);
+    if (!status && defer)
+        tirenv_ring__root_seen(elem, x, z, out->F);
+    return status;
+}
+
+/* The ring's own step in z (ring_root.c), where its slope is deferred: the shear-coupled
+ * tread with the linear carcass under Newton, whose answer does not depend on the path to it
+ * (the softening carcass's does, and the Winkler tread's slope leaves the moving cuts out). */
+static int ring_root(void *elem, const tirenv_profile *p, double x, double z, double G,
+                     const tirenv_eq_point *at, double *z_root)
+{
+    (void)p;
+    return tirenv_ring__deferring(elem) &&
+           tirenv_ring__root(elem, x, z, at->F, at->dF_dz, G, z_root);
 }
 
 static int ring_defer_slope(void *elem, int on) { return tirenv_ring__defer_slope(elem, on); }
@@ -149,6 +163,7 @@ static const tirenv_deformable ring_deformable = {
     .alloc = ring_alloc,
     .free = ring_free,
     .forces = ring_forces,
+    .root = ring_root,
     .contact_length = ring_contact_length,
     .lowest_z = ring_lowest_z,
     .bracket = tirenv_deformable_no_bracket,

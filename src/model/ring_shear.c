@@ -43,7 +43,7 @@
 #include "core/capacity.h"
 #include "model/ring_impl.h"
 
-enum { BAND_P = 4, TAIL = 4, NB = 6 };
+enum { BAND_P = 4, TAIL = 4, NB = 6, SPAN = 4 };
 
 /* A symmetric positive definite N x N matrix of bandwidth BAND_P whose last t <= TAIL rows are
  * dense (the window's ends coupled through the exterior): L[5 i + k] = A[i + k][i] for the band
@@ -99,6 +99,21 @@ struct tirenv_ring_tread {
     double *dw, *du;    /* per node (global): dw/dz, du/dz at the last evaluation's
                          * equilibrium (0 outside its window or without dF_z/dz) */
     double *pred;       /* 3: that evaluation's z (m), x (m), and 1 if dw, du hold */
+    double *dn;         /* M: per node dn_a .. dn_b of the last answer's contact, the ground's
+                         * penetration d at the node's ray where it touched the tread surface
+                         * (-INFINITY elsewhere), at abscissa dn_x and height dn_z (dn_ok 0:
+                         * none; tirenv_ring__tread_new_x) */
+    double *dn2, *ddn;  /* M each: this sampling's d and d(d)/dz at the nodes dn_a .. dn_b
+                         * (warm_shift) */
+    double dn_x, dn_z;
+    size_t dn_a, dn_b;
+    int dn_ok;
+    double last_x, last_z; /* the last answer's centre (last_ok), m */
+    int last_ok;
+    unsigned skip;      /* positions warm_shift leaves out: its last pass moved nothing */
+    double *span;       /* 4, after pred (a state saves them): 1 if the last answer had a
+                         * contact, the nodes of its first and last point's intervals, and
+                         * the centre's abscissa (m) (warm_span) */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
@@ -638,11 +653,11 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->k_g = TIRENV_RING_GROUND_LAYER * k_t;
     T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
     T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
-    T->kap = malloc((4 * M + 3) * sizeof *T->kap);
+    T->kap = malloc((4 * M + 3 + SPAN) * sizeof *T->kap);
     T->end = malloc(M * sizeof *T->end);
     T->have = calloc(M, 1);
     T->cols = calloc(M, sizeof *T->cols);
-    T->xw = malloc(5 * M * sizeof *T->xw);
+    T->xw = malloc(8 * M * sizeof *T->xw);
     T->soft = tirenv_ring__carcass_law(par, R * dth, &T->law);
     if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || reserve_knots(T, 16) ||
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
@@ -658,9 +673,13 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
     T->pred = T->du + M;
     T->dxw = T->xw + 2 * M;
     T->wc = T->xw + 4 * M;
+    T->dn = T->xw + 5 * M;
+    T->dn2 = T->xw + 6 * M;
+    T->ddn = T->xw + 7 * M;
     for (size_t j = 0; j < M; ++j)
         T->kap[j] = T->kap0;
-    memset(T->u, 0, (3 * M + 3) * sizeof *T->u);
+    T->span = T->pred + 3;
+    memset(T->u, 0, (3 * M + 3 + SPAN) * sizeof *T->u);
     return T;
 }
 
@@ -695,7 +714,7 @@ size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
 
 void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
 
-size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3; }
+size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3 + SPAN; }
 
 int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_ring_carcass *law)
 {
@@ -1649,6 +1668,35 @@ static const size_t *beyond_span(const tirenv_ring *r, const double xw[], size_t
     return beyond;
 }
 
+/* The nodes the first sub-window must hold besides the warm start's contact: beyond_span's,
+ * and, where the last answer was within WARM_SPAN_DX of x_c (m), the nodes of its contact.
+ * Inside the patch the tread surface lies within the contact layer's compression, some 1e-7
+ * m, of the ground, so wherever the ground moved away from it with x (a road's slope over the
+ * step: 1e-5 m and more) the warm start's points read as free, and the contact it predicts
+ * stopped short by tens of nodes: the sub-window then grew by SUB_QUANT a try, and after
+ * SUB_TRIES the whole window was solved, then the sub-window of its contact (five solves at
+ * a position's first evaluation over a class C road, where one or two do now). The nodes in
+ * contact move by a node spacing over some 3 mm of travel, so the last contact's nodes are
+ * nearly this one's. */
+static const double WARM_SPAN_DX = 2e-3;
+
+static const size_t *warm_span(const tirenv_ring *r, double x_c, const double xw[],
+                               size_t beyond[2])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const double *sp = T->span;
+    beyond_span(r, xw, beyond);
+    if (T->soft || sp[0] != 1 || !(fabs(x_c - sp[3]) <= WARM_SPAN_DX))
+        return beyond;
+    /* (Node indices as doubles, exact: what a state saves is doubles. A damaged state's
+     * are checked: within the window, or none.) */
+    const double lo = (double)r->lo, hi = (double)(r->lo + r->n - 1);
+    const double j1 = sp[1] > lo ? sp[1] : lo, j2 = sp[2] < hi ? sp[2] : hi;
+    if (j1 <= j2 && j1 == floor(j1) && j2 == floor(j2))
+        beyond[0] = (size_t)j1, beyond[1] = (size_t)j2;
+    return beyond;
+}
+
 /* The exterior's columns for a sub-window of n nodes from lo (computing them, and its end
  * correction, the first time); NULL if out of memory. */
 static const double *sub_cols(tirenv_ring_tread *T, size_t lo, size_t n)
@@ -1936,6 +1984,102 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
     T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
 }
 
+/* The warm start at a new abscissa moves the tread surface with the ground (WARM_SHIFT_DX,
+ * WARM_SHIFT_MAX, m): inside the patch it lies within the contact layer's compression (some
+ * 1e-7 m) of the ground, so where the ground under a node moved with x (a road's slope over
+ * the step) the last answer's u read its points as free or deep in, and Newton's first steps
+ * changed tens of states (with the line search over a road). A node whose ray's ground touched
+ * the tread surface in the last answer, within WARM_SHIFT_DX of the last x, starts from u + (d
+ * - d_last - dz d(d)/dz) of its ray's ground (dz u/dz already follows the part that moves with
+ * z), where that moved by at most WARM_SHIFT_MAX (not a cleat's face passing the ray). One pass
+ * over the points of the last contact's nodes; the minimum does not depend on the start (its
+ * states' system is solved last), so the same bits. */
+static const double WARM_SHIFT_DX = 2e-3, WARM_SHIFT_MAX = 1e-3;
+
+/* The larger d of the points at each node ja .. jb of r's points from k_lo on (a node's own
+ * ray; two one-sided values where a vertex lies at it), of those in contact with the tread
+ * surface only with in_contact, into dn (-INFINITY where none), their d(d)/dz into ddn
+ * (unless NULL). The points are in node order: the first of interval ja - 1 by bisection. */
+static void node_d(const tirenv_ring *r, size_t k_lo, size_t ja, size_t jb, int in_contact,
+                   double dn[], double ddn[])
+{
+    for (size_t j = ja; j <= jb; ++j)
+        dn[j] = -INFINITY;
+    size_t k0 = k_lo, k1 = r->n_pts;
+    while (k0 < k1) {
+        const size_t mid = k0 + (k1 - k0) / 2;
+        if (r->pts[mid].j + 1 < ja)
+            k0 = mid + 1;
+        else
+            k1 = mid;
+    }
+    for (size_t k = k0; k < r->n_pts && r->pts[k].j <= jb; ++k) {
+        const tirenv_ring_point *q = &r->pts[k];
+        if (!(q->s == 0 || q->s == 1) || (in_contact && !(q->st & 1)))
+            continue;
+        const size_t j = q->j + (q->s == 1);
+        if (j >= ja && j <= jb && q->d > dn[j]) {
+            dn[j] = q->d;
+            if (ddn)
+                ddn[j] = q->dd;
+        }
+    }
+}
+
+void tirenv_ring__tread_forget(tirenv_ring_tread *T)
+{
+    T->span[0] = 0;
+    T->last_ok = T->dn_ok = 0;
+}
+
+void tirenv_ring__tread_new_x(tirenv_ring *r, double x)
+{
+    tirenv_ring_tread *T = r->tread;
+    T->dn_ok = 0;
+    if (T->soft || !T->last_ok || x == T->last_x || !(fabs(x - T->last_x) <= WARM_SHIFT_DX) ||
+        r->k_first > r->k_last || r->k_last >= r->n_pts)
+        return;
+    if (T->skip > 0) {
+        --T->skip;
+        return;
+    }
+    T->dn_a = r->pts[r->k_first].j;
+    T->dn_b = r->pts[r->k_last].j + 1;
+    node_d(r, r->k_first, T->dn_a, T->dn_b, 1, T->dn, NULL);
+    T->dn_x = T->last_x, T->dn_z = T->last_z, T->dn_ok = 1;
+}
+
+/* After tirenv_ring__tread_new_x: the shift of each node of the last contact that lies in this
+ * window, applied to the warm start xw. A pass that moves no node by more than round-off
+ * (level ground and a cleat's flat top move along the rays only with z) has the next
+ * WARM_SHIFT_SKIP positions left out. */
+enum { WARM_SHIFT_SKIP = 16 };
+
+static void warm_shift(tirenv_ring *r, double x_c, double z, double xw[])
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t lo = r->lo, hi = lo + r->n - 1;
+    const size_t ja = T->dn_a > lo ? T->dn_a : lo, jb = T->dn_b < hi ? T->dn_b : hi;
+    if (!T->dn_ok || x_c == T->dn_x || ja > jb)
+        return;
+    T->dn_ok = 0;
+    node_d(r, 0, ja, jb, 0, T->dn2, T->ddn);
+    const double dz = z - T->dn_z;
+    size_t moved = 0;
+    for (size_t j = ja; j <= jb; ++j) {
+        if (T->dn[j] == -INFINITY || T->dn2[j] == -INFINITY)
+            continue;
+        /* The node's point's d(d)/dz: d is linear in z along a ray to one line. */
+        const double dd = T->dn2[j] - T->dn[j] - T->ddn[j] * dz;
+        if (fabs(dd) <= WARM_SHIFT_MAX) {
+            xw[2 * (j - lo) + 1] += dd;
+            moved += fabs(dd) > 1e-12;
+        }
+    }
+    if (moved == 0)
+        T->skip = WARM_SHIFT_SKIP;
+}
+
 /* solve_shear's statuses where the window's ground has gaps (ring_ground.c) that it needs
  * sampled: NEED_GROUND, a sub-window reaching a gap or a gap its bound does not certify clear
  * of the answer (then solved again from where it had come); NEED_WHOLE, the whole window to
@@ -1976,6 +2120,7 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
         }
         for (size_t i = ib; i < n; ++i)
             xw[2 * i] = xw[2 * i + 1] = 0;
+        warm_shift(r, x_c, z, xw);
     }
     /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
      * with the tire) where there is one; else, or where a free point would touch, on the whole
@@ -1985,7 +2130,7 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
     size_t beyond[2];
     int sub = start != START_WHOLE && !T->lugs && !T->whole &&
               contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
-              sub_window(r, kf, kl, beyond_span(r, xw, beyond), &a, &b, &k0, &k1);
+              sub_window(r, kf, kl, warm_span(r, x_c, xw, beyond), &a, &b, &k0, &k1);
     if (r->n_gaps && !sub)
         return NEED_WHOLE;
     if (r->n_gaps && !tirenv_ring__sampled_over(r, a, b))
@@ -2187,6 +2332,13 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
     leave(r, &sv);
     r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
     r->k_last = k_last + k0;
+    T->last_x = x_c, T->last_z = z, T->last_ok = 1;
+    T->span[0] = k_first <= k_last;
+    if (k_first <= k_last) {
+        T->span[1] = (double)r->pts[r->k_first].j;
+        T->span[2] = (double)(r->pts[r->k_last].j + 1);
+        T->span[3] = x_c;
+    }
     if (dfz_dz)
         slope_out(r, a, b, sub, z, x_c);
     T->deferred = !dfz_dz && T->defer;

@@ -166,8 +166,11 @@ static double springs_k_min(const tirenv_tire *tire, const tirenv_profile *p,
  * over the curve (2.1e5 N/m here, computed below: 9.6e-10 m). Measured 6.6e-12 m (2.08e-12 m
  * with eps_F 1e-6 N, the default before; the Winkler tread at 0.125 degrees 8.3e-13 m); the
  * slope within 7.5e-12 (2.8e-11 with the Winkler tread, whose F_x sums forces of a belt with
- * stencil entries near 1e11 N/m), checked within 3e-11 as the others'. The springs model's
- * slope, its iterates 15 times farther apart, within 2.7e-10: checked within 1e-9. The cleat
+ * stencil entries near 1e11 N/m). Since one track's ring takes its own step in z too (the
+ * parabola of its measured curvature, src/model/ring_root.c), its iterates differ as the
+ * springs model's do: h within 1.2e-10 m, the slope within 8.9e-11 (measured). The springs
+ * model's slope, its iterates 15 times farther apart, within 2.7e-10: both checked within
+ * 1e-9, the others' within 3e-11. The cleat
  * and the load are the same for the two, so no summation order is involved: the one track's
  * F_z and the three tracks' sum of three equal slices differ only in the iterate at which
  * each stopped. */
@@ -201,7 +204,7 @@ static void test_equal_copies(void **state)
             assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
             assert_near(got[k].h, ref[k].h, h_tol, 0);
             dh = fmax(dh, fabs(got[k].h - ref[k].h));
-            assert_near(got[k].slope, ref[k].slope, springs ? 1e-9 : 3e-11, 0);
+            assert_near(got[k].slope, ref[k].slope, springs || ring ? 1e-9 : 3e-11, 0);
             assert_near(got[k].fz, ref[k].fz, eq ? eq_F_tol(&tire) : 1e-9, 0);
         }
         if (ring || springs)
@@ -223,7 +226,9 @@ static void test_equal_copies(void **state)
  * follows the cuts at ground vertices, so that Newton in z converges quadratically), of the order of the
  * equilibrium's step tolerance eps_z = 1e-10 m and not shrinking with it (1.6e-11 m at
  * eps_z = 1e-12): the round-off of the stiffer belt-and-tread solve, whose contact layer is
- * 1e4 k_t. Checked with margins: 1e-10 m, 5e-10. */
+ * 1e4 k_t. One track takes the ring's own step in z (src/model/ring_root.c), three the
+ * linear one, so they stop at different iterates, each within eps_z of the root: 1.05e-10 m
+ * measured. Checked within 2 eps_z = 2e-10 m and 5e-10. */
 static void test_equal_copies_with_shear(void **state)
 {
     (void)state;
@@ -245,7 +250,7 @@ static void test_equal_copies_with_shear(void **state)
     double dh = 0, lifted = 0;
     for (size_t k = 0; k < N_POS; ++k) {
         assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
-        assert_near(got[k].h, ref[k].h, 1e-10, 0);
+        assert_near(got[k].h, ref[k].h, 2 * tire.eq.eps_z, 0);
         assert_near(got[k].slope, ref[k].slope, 5e-10, 0);
         assert_near(got[k].fz, ref[k].fz, eq_F_tol(&tire), 0);
         dh = fmax(dh, fabs(got[k].h - ref[k].h));
