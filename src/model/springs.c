@@ -74,8 +74,6 @@ struct tirenv_springs {
      * face tirenv_springs__start took held element e's ray to end on at the new x. */
     size_t memo_a, memo_b;
     unsigned long long memo_serial;
-    /* the origin the memos were proved from (x NAN: none to carry to the next x) */
-    tirenv_springs__fan_origin memo_origin;
     tirenv_springs__ray_memo *pred_face;
     /* dF_z/dz depends only on the faces the pinned rays end on, the span [f0, f1] and the
      * pins: the last one solved for is kept with them and given again, bit for bit, when they
@@ -151,7 +149,6 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     if (!s)
         return NULL;
     s->par = *par;
-    s->memo_origin.x = NAN;
     /* Elements at theta_i = i*dphi for every integer i with |theta_i| <= phi/2 (docs/models.md
      * section 4); the relative slack keeps phi/2 itself when it is a multiple of dphi. */
     s->i0 = (size_t)floor(0.5 * par->phi / par->dphi * (1 + 1e-12));
@@ -522,21 +519,13 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             walked = tirenv_springs__fan_update(prof, &s->origin, &s->rays, z, a, b, s->rho,
                                                 s->memo);
         } else {
-            /* at a new x the memos of the last one carried where no vertex lies between
-             * (the same rho, bit for bit: not a reuse at this x) */
-            if (s->memo_serial == prof->serial && s->memo_a <= a && b <= s->memo_b &&
-                !isnan(s->memo_origin.x))
-                tirenv_springs__fan_carry(prof, &s->origin, &s->memo_origin, &s->rays, z, a, b,
-                                          s->rho, s->memo);
-            else
-                tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+            tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
             s->ray_a = a;
             s->ray_b = b;
         }
         s->memo_a = s->ray_a;
         s->memo_b = s->ray_b;
         s->memo_serial = prof->serial;
-        s->memo_origin = s->origin;
         const int reused = walked == 0;
         size_t n_contacts;
         /* d = R0 - rho where that is > 0 (exactly where rho < R0), else 0 (rho = INFINITY
@@ -786,7 +775,6 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                 tirenv_springs__fan(prof, &s->origin, &s->rays, z0, a, b, s->rho, s->memo);
                 s->ray_a = s->memo_a = a;
                 s->ray_b = s->memo_b = b;
-                s->memo_origin = s->origin;
             }
             if (n_held > 0 && (c->held[0] < s->ray_a || c->held[n_held - 1] > s->ray_b))
                 return 0;
@@ -888,7 +876,6 @@ void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
         c->n_warm = 0; /* (the QP's warm start: how fast, not what it finds) */
     for (size_t i = s->memo_a; i <= s->memo_b && i < s->N; ++i)
         tirenv_springs__memo_reprofile(old, p, off, &s->memo[i]);
-    s->memo_origin.x = NAN; /* (its vertices are old's: the next x casts afresh) */
     c->last_ok = 0;
     if (s->upd_serial == old->serial)
         s->upd_serial = p->serial;
@@ -1033,7 +1020,6 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
-    s->memo_origin.x = NAN;
     s->evals = 0;
     s->start_taken = 0;
     s->pins_ok = 0;

@@ -203,16 +203,6 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
                                   const tirenv_springs__fan_rays *r, double z, size_t a,
                                   size_t b, double rho[], tirenv_springs__ray_memo memo[]);
 
-/* The same at a new x: rho[a..b] from origin o at height z, the memos made from o_m (another
- * x on the same profile, with no vertex between the two: else a fresh fan) each carried
- * where it provably holds at (o->x, z), its z_low moved to o's, each other ray walked again.
- * Bit for bit tirenv_springs__fan's rho and ends; returns the rays walked. The memos must
- * cover [a, b]. */
-size_t tirenv_springs__fan_carry(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                                 const tirenv_springs__fan_origin *o_m,
-                                 const tirenv_springs__fan_rays *r, double z, size_t a,
-                                 size_t b, double rho[], tirenv_springs__ray_memo memo[]);
-
 /* A feature of the ground narrower than the ray spacing (springs_feature.c). */
 typedef struct {
     double X, Z;      /* its highest point, m */

@@ -340,92 +340,15 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
     return step;
 }
 
-/* Why a memo made at another x may be carried to this one. With no vertex between the two
- * centres (the same first vertex each way, neither on a wall) a ray's walk passes the same
- * vertices and the ground between the centre and the first vertex is one straight segment, so
- * f at every ground point it passes moves from the memo's x_m by exactly dir (x - x_m) drop
- * (a = dir (X - x) falls by dir (x - x_m)) besides the height's z - z_m: the memo's bound on f
- * over the points before its end holds at z wherever z + dir dx drop exceeds z_low, given a
- * second rounding allowance (the computed f at this x, and the shift's own rounding). The
- * walk also stops at a vertex beyond reach, and a now moves: the vertex before the end must
- * still lie within reach, and a memo beyond reach still beyond it. The end itself is computed
- * at (x, z) as reuse_ray does, the walk's operations: the same bits as a fresh fan, the same
- * end vertex and kind. The memo's z_low is moved to the bound at x, so that it proves its
- * ray at this x from then on. */
-static inline int carry_ray(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                            const tirenv_springs__fan_rays *r, double z, double dx, size_t i,
-                            int side, double rho[], tirenv_springs__ray_memo *m)
-{
-    const double *X = p->x, *Z = p->z;
-    const double x = o->x;
-    const int dir = side ? 1 : -1;
-    const double drop = r->drop[i], sh = dir * dx * drop;
-    const double z_low = m->z_low - sh + (fan_tol(o, z) + 4 * DBL_EPSILON * fabs(sh));
-    if (!(z > z_low))
-        return 0;
-    const long j = m->j, jp = j - dir;
-    const int kind = m->kind;
-    const double reach = r->reach[i];
-    if (kind == RAY_HIT || kind == RAY_WALL || kind == RAY_REACH) {
-        const double a_j = dir * (X[j] - x);
-        const double f = z - a_j * drop - Z[j];
-        double a_prev = 0, f_prev = z - o->g_side[side];
-        if (j != o->first[side]) {
-            a_prev = dir * (X[jp] - x);
-            if (!(a_prev <= reach))
-                return 0; /* the walk would stop beyond reach before j */
-            f_prev = z - a_prev * drop - Z[jp];
-        }
-        if (kind == RAY_REACH) {
-            if (!(f > 0 && a_j > reach))
-                return 0;
-            rho[i] = INFINITY;
-        } else {
-            if (f > 0)
-                return 0; /* the crossing moved past j */
-            if (kind == RAY_WALL) {
-                if (a_j != a_prev)
-                    return 0;
-                rho[i] = a_j <= reach ? a_j * r->inv_s[i] : INFINITY;
-            } else {
-                if (a_j == a_prev)
-                    return 0;
-                const double a_hit = a_prev + f_prev * (a_j - a_prev) / (f_prev - f);
-                rho[i] = a_hit > reach ? INFINITY : a_hit * r->inv_s[i];
-            }
-        }
-    } else if (kind == RAY_END) {
-        if (!(dir * (X[jp] - x) <= reach)) /* the last vertex passed */
-            return 0;
-        const double cos_t = r->cos_t[i];
-        if (cos_t <= 0) {
-            rho[i] = INFINITY;
-        } else {
-            const double rr = (z - Z[dir > 0 ? (long)p->n - 1 : 0]) / cos_t;
-            rho[i] = rr > r->rho_max ? INFINITY : rr;
-        }
-    } else {
-        return 0;
-    }
-    m->z_low = z_low;
-    return 1;
-}
-
-/* Whether origin o stands on a wall (two vertices at its x). */
-static int on_wall(const tirenv_profile *p, const tirenv_springs__fan_origin *o)
-{
-    return o->k >= 1 && p->x[o->k] == o->x && p->x[o->k - 1] == o->x;
-}
-
 /* The rays step..count of one side (side 0: i0 - step, 1: i0 + step) as the fan walks them,
  * each resuming where its inner neighbour ended: at vertex j with the running minimum f_min,
  * that ray's drop and reach being drop_prev and reach_prev. With reuse, a ray after the
- * first walked whose memo holds at z is kept (tirenv_springs__fan_update; reuse 2: carried
- * from the memos' x, dx back, tirenv_springs__fan_carry). Returns the rays walked. */
+ * first walked whose memo holds at z is kept (tirenv_springs__fan_update). Returns the rays
+ * walked. */
 static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, double z, int side, size_t step,
                               size_t count, long j, double f_min, double drop_prev,
-                              double reach_prev, int reuse, double dx, double rho[],
+                              double reach_prev, int reuse, double rho[],
                               tirenv_springs__ray_memo memo[])
 {
     const double f0 = z - o->g_side[side], rho_max = r->rho_max, tol = fan_tol(o, z);
@@ -446,9 +369,7 @@ static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan
         drop_prev = drop;
         reach_prev = reach;
         tirenv_springs__ray_memo *const m = &memo[i];
-        if (reuse && cast &&
-            (reuse == 2 ? carry_ray(p, o, r, z, dx, i, side, rho, m)
-                        : reuse_ray(p, o, r, z, f0, i, side, rho, m))) {
+        if (reuse && cast && reuse_ray(p, o, r, z, f0, i, side, rho, m)) {
             j = m->j;
             f_min = z - m->z_low; /* f_min(z) >= this (above) */
             continue;
@@ -482,9 +403,9 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
     rho[i0] = f0 <= rho_max ? f0 : INFINITY;
     memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
     /* each side's walk compiled for its direction */
-    fan_side(p, o, r, z, 0, 1, i0 - a, o->first[0], z - o->g_side[0], INFINITY, 0, 0, 0, rho,
+    fan_side(p, o, r, z, 0, 1, i0 - a, o->first[0], z - o->g_side[0], INFINITY, 0, 0, rho,
              memo);
-    fan_side(p, o, r, z, 1, 1, b - i0, o->first[1], z - o->g_side[1], INFINITY, 0, 0, 0, rho,
+    fan_side(p, o, r, z, 1, 1, b - i0, o->first[1], z - o->g_side[1], INFINITY, 0, 0, rho,
              memo);
 }
 
@@ -710,54 +631,9 @@ size_t tirenv_springs__fan_update(const tirenv_profile *p, const tirenv_springs_
             reach_prev = r->reach[in];
         }
         cast += side ? fan_side(p, o, r, z, 1, step, count, j, f_min, drop_prev, reach_prev, 1,
-                                0, rho, memo)
+                                rho, memo)
                      : fan_side(p, o, r, z, 0, step, count, j, f_min, drop_prev, reach_prev, 1,
-                                0, rho, memo);
-    }
-    return cast;
-}
-
-size_t tirenv_springs__fan_carry(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                                 const tirenv_springs__fan_origin *o_m,
-                                 const tirenv_springs__fan_rays *r, double z, size_t a,
-                                 size_t b, double rho[], tirenv_springs__ray_memo memo[])
-{
-    const double f0 = z - o->g, dx = o->x - o_m->x;
-    const size_t i0 = r->i0;
-    if (!(f0 > 0) || o->first[0] != o_m->first[0] || o->first[1] != o_m->first[1] ||
-        !(fabs(dx) > 0) || on_wall(p, o) || on_wall(p, o_m)) {
-        tirenv_springs__fan(p, o, r, z, a, b, rho, memo);
-        return b - a + 1;
-    }
-    rho[i0] = f0 <= r->rho_max ? f0 : INFINITY;
-    memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
-    size_t cast = 0;
-    for (int side = 0; side < 2; ++side) {
-        const size_t count = side ? b - i0 : i0 - a;
-        /* the rays whose memos carry, outward to the first that does not; the rest as
-         * the fan, carrying each memo that can be (each side compiled for its direction) */
-        size_t step = 1;
-        if (side)
-            while (step <= count && carry_ray(p, o, r, z, dx, i0 + step, 1, rho, &memo[i0 + step]))
-                ++step;
-        else
-            while (step <= count && carry_ray(p, o, r, z, dx, i0 - step, 0, rho, &memo[i0 - step]))
-                ++step;
-        if (step > count)
-            continue;
-        long j = o->first[side];
-        double f_min = z - o->g_side[side], drop_prev = INFINITY, reach_prev = 0;
-        if (step > 1) {
-            const size_t in = side ? i0 + step - 1 : i0 - step + 1;
-            j = memo[in].j;
-            f_min = z - memo[in].z_low;
-            drop_prev = r->drop[in];
-            reach_prev = r->reach[in];
-        }
-        cast += side ? fan_side(p, o, r, z, 1, step, count, j, f_min, drop_prev, reach_prev, 2,
-                                dx, rho, memo)
-                     : fan_side(p, o, r, z, 0, step, count, j, f_min, drop_prev, reach_prev, 2,
-                                dx, rho, memo);
+                                rho, memo);
     }
     return cast;
 }

@@ -9,8 +9,8 @@
  * rows, in their order, and the laid-out rows of a fresh workspace that computes every vertex
  * by the plain scan (scan_plain: no proving loop, no proofs); the proving loop's guessed
  * sectors and the walk where a guess misses both give the plain scan's. The rays: a fan updated ray by
- * ray from its memos (the rays whose memos fail walked again alone), and one at a new x from
- * the last x's memos (tirenv_springs__fan_carry), must give the rho of a fresh fan. */
+ * ray from its memos (the rays whose memos fail walked again alone) must give the rho of a
+ * fresh fan. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -292,92 +292,11 @@ static void test_fan_update_exact(void **state)
     free_tire(&S);
 }
 
-/* The fan at a new x from the memos of the last: the carried rays, those walked again, and
- * the fresh fan where a vertex lies between the two centres must give a fresh fan's rho and
- * ends, bit for bit; the memos carried must then prove their rays at the new x as a fresh
- * fan's would (fan_update at other heights there against a fresh fan again). Roads from
- * 5 to 55 mm between vertices, the centre moved by 0.1 to 4 mm, now and then across one. */
-static void test_fan_carry_exact(void **state)
-{
-    (void)state;
-    rng_state = 2385;
-    tirenv_springs_params par = tirenv_tire_default().springs;
-    tire_setup S;
-    setup_tire(&S, &par);
-    const size_t N = S.N;
-    tirenv_springs__ray_memo *memo = calloc(N, sizeof *memo), *fresh = calloc(N, sizeof *fresh);
-    double *rho = calloc(N, sizeof *rho), *rho_ref = calloc(N, sizeof *rho_ref);
-    assert_non_null(memo);
-    assert_non_null(fresh);
-    assert_non_null(rho);
-    assert_non_null(rho_ref);
-    size_t carries = 0, cast = 0, rays = 0, fresh_fans = 0;
-    for (int trial = 0; trial < 30; ++trial) {
-        const double dx = 0.005 + 0.05 * uniform();
-        tirenv_profile *p = random_road((size_t)(4.0 / dx), dx, trial % 5);
-        const double *X = tirenv_profile_x(p);
-        const size_t n = tirenv_profile_size(p);
-        const size_t v = n / 4 + (size_t)(uniform() * (double)(n / 2));
-        double x = X[v] + dx * uniform();
-        tirenv_springs__fan_origin o_m, o;
-        tirenv_springs__fan_origin_at(p, x, par.R0, 0, &o_m);
-        double z = o_m.g + par.R0 - 0.01 - 0.07 * uniform();
-        const size_t a = (size_t)(uniform() * (double)(S.i0 / 2));
-        const size_t b = N - 1 - (size_t)(uniform() * (double)(S.i0 / 2));
-        tirenv_springs__fan(p, &o_m, &S.rays, z, a, b, rho, memo);
-        for (int pos = 0; pos < 40; ++pos) {
-            x += (pos % 7 == 3 ? -1 : 1) * (1e-4 + 4e-3 * uniform());
-            tirenv_springs__fan_origin_at(p, x, par.R0, o_m.k, &o);
-            z += 2e-3 * (uniform() - 0.5);
-            /* a narrower span now and then, as the candidate span moves */
-            const size_t a2 = pos % 3 ? a : a + 1, b2 = pos % 3 ? b : b - 1;
-            const size_t c =
-                tirenv_springs__fan_carry(p, &o, &o_m, &S.rays, z, a2, b2, rho, memo);
-            tirenv_springs__fan(p, &o, &S.rays, z, a2, b2, rho_ref, fresh);
-            cast += c;
-            fresh_fans += c == b2 - a2 + 1;
-            ++carries;
-            rays += b2 - a2 + 1;
-            for (size_t i = a2; i <= b2; ++i) {
-                assert_memory_equal(&rho[i], &rho_ref[i], sizeof rho[i]);
-                assert_int_equal(memo[i].j, fresh[i].j);
-                assert_int_equal(memo[i].kind, fresh[i].kind);
-            }
-            /* the carried memos as proofs at the new x: other heights there */
-            static const double walk[] = {1e-4, -1e-3, 5e-3, -5e-3, -2.3e-3, 7e-4};
-            for (int k = 0; k < 3; ++k) {
-                const double z2 = z + walk[(size_t)(6 * uniform())];
-                tirenv_springs__fan_update(p, &o, &S.rays, z2, a2, b2, rho, memo);
-                tirenv_springs__fan(p, &o, &S.rays, z2, a2, b2, rho_ref, fresh);
-                for (size_t i = a2; i <= b2; ++i) {
-                    assert_memory_equal(&rho[i], &rho_ref[i], sizeof rho[i]);
-                    assert_int_equal(memo[i].j, fresh[i].j);
-                }
-            }
-            o_m = o; /* the next x carries from this one's memos, carried or walked */
-        }
-        tirenv_profile_free(p);
-    }
-    print_message("%zu fans at a new x (%zu fresh: a vertex between), %zu of %zu rays walked "
-                  "again\n", carries, fresh_fans, cast, rays);
-    /* Every path taken: fans carried with most rays kept, some walked again, fresh fans. */
-    assert_true(fresh_fans > 10);
-    assert_true(fresh_fans < carries / 2);
-    assert_true(cast > 0);
-    assert_true(cast < rays / 2);
-    free(memo);
-    free(fresh);
-    free(rho);
-    free(rho_ref);
-    free_tire(&S);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_vertex_rows_proven_exact),
         cmocka_unit_test(test_fan_update_exact),
-        cmocka_unit_test(test_fan_carry_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
