@@ -760,6 +760,10 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     for (size_t q = 0; q < c->n_schur; ++q)
         if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
             return 0;
+    /* a working row's vertex that crossed an element's ray (the root's first question,
+     * asked before the held rays' faces are found for it) */
+    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0))
+        return 0;
     set_origin(s, prof, x);
     for (int round = 0;; ++round) {
         /* Each held element's ray at (x, z0) on the face its last walk ended on, and its

@@ -644,6 +644,14 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
                                const double rho[], const double drho[], double G,
                                double slope, double S_l, double S_r, double *z_root);
 
+/* springs_root.c: whether each working row between elements of the base (a ground vertex's)
+ * still lies inside its sector at (x, z) (m), as tirenv_springs__cc_root_at first asks at
+ * z_a: 0 where one does not (it would return 0 there), read before the held rays' faces
+ * are found for it. The rows' vertices must lie in p. */
+int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
+                                   const tirenv_springs__cc_tire *T, const tirenv_profile *p,
+                                   double x, double z);
+
 /* springs_root.c: the element whose own row the state tirenv_springs__cc_root_at kept
  * (pred_w at pred_z, its reactions pred_lam) violates most, looked for where the working set
  * changes with x (the ends of the chains of free elements and the held elements beside them,

@@ -50,20 +50,30 @@ typedef struct {
     double ylo[S_MAX], yhi[S_MAX];     /* K_FF^-1 e_s at its chain's ends, m/N */
 } root_rows;
 
+/* A vertex row of sector (i, i + 1) at dx = V_x - x, dzv = z - V_z: its t into *t, and
+ * whether it lies inside the sector (springs_rows.c's snap apart), where its row keeps its
+ * kind. */
+static inline int row_inside(const tirenv_springs__cc_tire *T, size_t i, double dx, double dzv,
+                             double *t)
+{
+    const double *st = T->sin_t, *ct = T->cos_t;
+    const double s_i = dx * ct[i] - dzv * st[i], s_n = dzv * st[i + 1] - dx * ct[i + 1];
+    *t = s_i / (s_i + s_n);
+    return s_i > 0 && s_n > 0 && *t > t_snap && *t < 1 - t_snap;
+}
+
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
  * dF_0 (N) into *dF; 0 if a row leaves its sector's inside. */
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
                      double dz, double lam[], double B[], double g_out[], double *dF)
 {
     const size_t k = W->k, ns = 2 * k;
-    const double *st = T->sin_t, *ct = T->cos_t;
     double g[S_MAX], cmp[K_MAX], h[K_MAX], kap[S_MAX], u[S_MAX];
     for (size_t q = 0; q < k; ++q) {
         const size_t i = W->el[2 * q];
         const double dx = W->X[q] - x, dzv = z - W->Z[q];
-        const double s_i = dx * ct[i] - dzv * st[i], s_n = dzv * st[i + 1] - dx * ct[i + 1];
-        const double t = s_i / (s_i + s_n);
-        if (!(s_i > 0 && s_n > 0 && t > t_snap && t < 1 - t_snap))
+        double t;
+        if (!row_inside(T, i, dx, dzv, &t))
             return 0;
         double da, db;
         tirenv_springs__cc_weights(T, t, &g[2 * q], &g[2 * q + 1], &da, &db);
@@ -276,6 +286,20 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
         return 0;
     keep_state(c, &W, base_w, dw, x, zb, zb - z0, lam, B);
     *z_root = zb;
+    return 1;
+}
+
+int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
+                                   const tirenv_springs__cc_tire *T, const tirenv_profile *p,
+                                   double x, double z)
+{
+    for (size_t q = 0, k = c->n_schur; q < k; ++q) {
+        const tirenv_springs__cc_row *R = &c->rows[c->order[c->schur_pos[q]] - T->N];
+        double t;
+        if (R->id >= 0 && R->t > 0 &&
+            !row_inside(T, R->i, p->x[R->id] - x, z - p->z[R->id], &t))
+            return 0;
+    }
     return 1;
 }
 
