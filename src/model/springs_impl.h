@@ -531,6 +531,16 @@ typedef struct {
      * lambda g (N), for the check of the held elements' reactions */
     size_t pred_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
     double pred_gl[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    /* (springs_root.c) the working rows' columns of K_FF^-1 at their free elements, for the
+     * factor cols_at counts (-1: none), the rows' k and elements cols_el and the free chains'
+     * shares beyond the span cols_S: Y[s][r] at slot r's element, f . the column, its chain's
+     * ends. They depend on nothing else, so the next x's root takes them while those stay. */
+    unsigned long long cols_at;
+    size_t cols_k, cols_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double cols_S[2];
+    double cols_Y[2 * TIRENV_SPRINGS__SCHUR_MAX][2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double cols_phi[2 * TIRENV_SPRINGS__SCHUR_MAX], cols_ylo[2 * TIRENV_SPRINGS__SCHUR_MAX],
+        cols_yhi[2 * TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);

@@ -171,11 +171,24 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     }
     double *y = c->root_y;
     const double k_r = T->k_r, *ct = T->cos_t;
+    int same = c->cols_at == c->n_factors && c->cols_k == k && c->cols_S[0] == S_l &&
+               c->cols_S[1] == S_r;
     for (size_t s = 0; s < ns; ++s) {
         const size_t e_s = W->el[s];
         W->fr[s] = wpos[e_s] != SIZE_MAX;
         W->w_T[s] = w_T[e_s];
         W->dw[s] = dw[e_s];
+        same = same && c->cols_el[s] == e_s;
+    }
+    if (same) { /* the columns of the last root on this factor, bit for bit */
+        for (size_t s = 0; s < ns; ++s) {
+            for (size_t r = 0; r < ns; ++r)
+                W->Y[s][r] = c->cols_Y[s][r];
+            W->phi[s] = c->cols_phi[s];
+            W->ylo[s] = c->cols_ylo[s];
+            W->yhi[s] = c->cols_yhi[s];
+        }
+        return 1;
     }
     for (size_t s = 0; s < ns; ++s) {
         for (size_t r = 0; r < ns; ++r)
@@ -198,6 +211,18 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         for (size_t r = 0; r < ns; ++r)
             if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
                 W->Y[s][r] = y[W->el[r]];
+    }
+    c->cols_at = c->n_factors;
+    c->cols_k = k;
+    c->cols_S[0] = S_l;
+    c->cols_S[1] = S_r;
+    for (size_t s = 0; s < ns; ++s) {
+        c->cols_el[s] = W->el[s];
+        for (size_t r = 0; r < ns; ++r)
+            c->cols_Y[s][r] = W->Y[s][r];
+        c->cols_phi[s] = W->phi[s];
+        c->cols_ylo[s] = W->ylo[s];
+        c->cols_yhi[s] = W->yhi[s];
     }
     return 1;
 }
