@@ -765,6 +765,9 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0))
         return 0;
     set_origin(s, prof, x);
+    /* after a round's flip: the element whose own row entered the set (the others' rays
+     * were found in the rounds before, at the same x and z0), or none where one left */
+    size_t e_new = SIZE_MAX;
     for (int round = 0;; ++round) {
         /* Each held element's ray at (x, z0) on the face its last walk ended on, and its
          * d(rho)/dz there (the face's), into rho and dd: no fan is cast (the evaluation at
@@ -789,12 +792,13 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                 s->dd[e] = ray_drho(s, prof, e);
                 s->pred_face[e] = s->memo[e];
             }
-        } else if ((n_held > 0 &&
-                    (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
-                   !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held,
-                                              s->memo, s->face, z0, &fw, s->rho, s->dd,
-                                              s->pred_face))
-            return 0;
+        } else if (round == 0 || e_new != SIZE_MAX) {
+            const size_t *rays = round == 0 ? c->held : &e_new, n_rays = round == 0 ? n_held : 1;
+            if ((n_rays > 0 && (rays[0] < s->memo_a || rays[n_rays - 1] > s->memo_b)) ||
+                !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, rays, n_rays, s->memo,
+                                           s->face, z0, &fw, s->rho, s->dd, s->pred_face))
+                return 0;
+        }
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
                                         s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
             return 0;
@@ -821,6 +825,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
             c->pred_ok = 0;
             return 0;
         }
+        e_new = hold ? e : SIZE_MAX;
         /* the base's tangent at its x holds its own working set, no longer this one */
         s->upd_x = NAN;
     }
