@@ -787,9 +787,8 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                 return 0;
             for (size_t m = 0; m < n_held; ++m) {
                 const size_t e = c->held[m];
-                if (!isfinite(s->rho[e]))
+                if (!isfinite(s->rho[e]) || !isfinite(s->dd[e] = ray_drho(s, prof, e)))
                     return 0;
-                s->dd[e] = ray_drho(s, prof, e);
                 s->pred_face[e] = s->memo[e];
             }
         } else if (round == 0 || e_new != SIZE_MAX) {

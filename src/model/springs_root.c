@@ -350,16 +350,19 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         return 0;
     const double R0 = T->R0, k_ir = T->k_ir, k_r = T->k_r, *ct = T->cos_t;
     const size_t *held = c->held, n_held = c->n_held, *ch = c->chains, n_ch = c->n_chains;
-    /* the held elements' rows at z_a and their slopes, and their share of F_z */
+    /* the held elements' rows at z_a and their slopes, and their share of F_z (the hub's
+     * weight k_r cos(theta_e), and the free chains' beyond the span at its ends: held is
+     * ascending, so only its first and last can be f0 and f1; adding the others' zeros
+     * changed no bit) */
     double *H = c->pred_w, *dH = c->root_du;
     double Fa = 0, dFa = 0;
     for (size_t m = 0; m < n_held; ++m) {
         const size_t e = held[m];
-        if (!isfinite(rho[e]) || !isfinite(drho[e]))
-            return 0;
         H[e] = R0 - rho[e];
         dH[e] = -drho[e];
-        const double f = k_r * ct[e] + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
+        double f = k_r * ct[e];
+        if ((m == 0 || m + 1 == n_held) && (e == f0 || e == f1))
+            f = f + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
         Fa += f * H[e];
         dFa += f * dH[e];
     }
