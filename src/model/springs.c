@@ -96,8 +96,9 @@ struct tirenv_springs {
     double upd_x, upd_dfz_dz;
     unsigned long long upd_serial;
     size_t updates;        /* evaluations the update gave (what the tests count) */
-    /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there */
-    size_t starts, start_updates;
+    /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there;
+     * the starts refused because a working row's vertex left its sector (for the tests) */
+    size_t starts, start_updates, start_sector;
     /* the continuous contact's evaluations since the last start was asked for, and whether
      * one accepted its root: what the start from the closed form's pins goes by */
     size_t evals;
@@ -691,6 +692,11 @@ void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_
     *updates = s->start_updates;
 }
 
+size_t tirenv_springs__start_sector(const tirenv_springs *s)
+{
+    return s->start_sector;
+}
+
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
 {
     return s->face_hits;
@@ -762,8 +768,10 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
             return 0;
     /* a working row's vertex that crossed an element's ray (the root's first question,
      * asked before the held rays' faces are found for it) */
-    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0))
+    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
+        ++s->start_sector;
         return 0;
+    }
     set_origin(s, prof, x);
     /* after a round's flip: the element whose own row entered the set (the others' rays
      * were found in the rounds before, at the same x and z0), or none where one left */

@@ -47,6 +47,9 @@ void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
 /* The roots tirenv_springs__start found so far, and the updates accepted at them (for the
  * tests). */
 void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates);
+/* The starts refused because a working row's vertex left its sector at the new x (for the
+ * tests). */
+size_t tirenv_springs__start_sector(const tirenv_springs *s);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
