@@ -96,8 +96,9 @@ struct tirenv_springs {
     double upd_x, upd_dfz_dz;
     unsigned long long upd_serial;
     size_t updates;        /* evaluations the update gave (what the tests count) */
-    /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there */
-    size_t starts, start_updates;
+    /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there;
+     * the starts refused because a working row's vertex left its sector (for the tests) */
+    size_t starts, start_updates, start_sector;
     /* the continuous contact's evaluations since the last start was asked for, and whether
      * one accepted its root: what the start from the closed form's pins goes by */
     size_t evals;
@@ -691,6 +692,11 @@ void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_
     *updates = s->start_updates;
 }
 
+size_t tirenv_springs__start_sector(const tirenv_springs *s)
+{
+    return s->start_sector;
+}
+
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
 {
     return s->face_hits;
@@ -760,7 +766,16 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     for (size_t q = 0; q < c->n_schur; ++q)
         if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
             return 0;
+    /* a working row's vertex that crossed an element's ray (the root's first question,
+     * asked before the held rays' faces are found for it) */
+    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
+        ++s->start_sector;
+        return 0;
+    }
     set_origin(s, prof, x);
+    /* after a round's flip: the element whose own row entered the set (the others' rays
+     * were found in the rounds before, at the same x and z0), or none where one left */
+    size_t e_new = SIZE_MAX;
     for (int round = 0;; ++round) {
         /* Each held element's ray at (x, z0) on the face its last walk ended on, and its
          * d(rho)/dz there (the face's), into rho and dd: no fan is cast (the evaluation at
@@ -780,17 +795,17 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                 return 0;
             for (size_t m = 0; m < n_held; ++m) {
                 const size_t e = c->held[m];
-                if (!isfinite(s->rho[e]))
+                if (!isfinite(s->rho[e]) || !isfinite(s->dd[e] = ray_drho(s, prof, e)))
                     return 0;
-                s->dd[e] = ray_drho(s, prof, e);
                 s->pred_face[e] = s->memo[e];
             }
-        } else if ((n_held > 0 &&
-                    (c->held[0] < s->memo_a || c->held[n_held - 1] > s->memo_b)) ||
-                   !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, c->held, n_held,
-                                              s->memo, s->face, z0, &fw, s->rho, s->dd,
-                                              s->pred_face))
-            return 0;
+        } else if (round == 0 || e_new != SIZE_MAX) {
+            const size_t *rays = round == 0 ? c->held : &e_new, n_rays = round == 0 ? n_held : 1;
+            if ((n_rays > 0 && (rays[0] < s->memo_a || rays[n_rays - 1] > s->memo_b)) ||
+                !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, rays, n_rays, s->memo,
+                                           s->face, z0, &fw, s->rho, s->dd, s->pred_face))
+                return 0;
+        }
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
                                         s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
             return 0;
@@ -817,6 +832,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
             c->pred_ok = 0;
             return 0;
         }
+        e_new = hold ? e : SIZE_MAX;
         /* the base's tangent at its x holds its own working set, no longer this one */
         s->upd_x = NAN;
     }

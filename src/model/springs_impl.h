@@ -47,6 +47,9 @@ void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
 /* The roots tirenv_springs__start found so far, and the updates accepted at them (for the
  * tests). */
 void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates);
+/* The starts refused because a working row's vertex left its sector at the new x (for the
+ * tests). */
+size_t tirenv_springs__start_sector(const tirenv_springs *s);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
@@ -531,6 +534,16 @@ typedef struct {
      * lambda g (N), for the check of the held elements' reactions */
     size_t pred_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
     double pred_gl[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    /* (springs_root.c) the working rows' columns of K_FF^-1 at their free elements, for the
+     * factor cols_at counts (-1: none), the rows' k and elements cols_el and the free chains'
+     * shares beyond the span cols_S: Y[s][r] at slot r's element, f . the column, its chain's
+     * ends. They depend on nothing else, so the next x's root takes them while those stay. */
+    unsigned long long cols_at;
+    size_t cols_k, cols_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double cols_S[2];
+    double cols_Y[2 * TIRENV_SPRINGS__SCHUR_MAX][2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double cols_phi[2 * TIRENV_SPRINGS__SCHUR_MAX], cols_ylo[2 * TIRENV_SPRINGS__SCHUR_MAX],
+        cols_yhi[2 * TIRENV_SPRINGS__SCHUR_MAX];
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -634,15 +647,23 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
 
 /* springs_root.c: the same at another x, from the base's working set alone (its rows between
  * elements by ground vertex, its held elements on their rays' rows, K_FF's factor): given
- * each held element's ray at (x, z_a), rho[e] (m) and d(rho)/dz drho[e], the height *z_root
- * where F_z = G with that working set at x, the secant's first step by slope (N/m, < 0: the
- * last dF_z/dz known); its state kept as the update's start at (x, *z_root) (c->pred_ok).
+ * each held element's ray at (x, z_a), rho[e] (m) and d(rho)/dz drho[e] (both finite), the
+ * height *z_root where F_z = G with that working set at x, the secant's first step by slope
+ * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root) (c->pred_ok).
  * The update there (which checks every row at x) decides whether it is the QP's solution.
  * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, Cost. */
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,
                                const double rho[], const double drho[], double G,
                                double slope, double S_l, double S_r, double *z_root);
+
+/* springs_root.c: whether each working row between elements of the base (a ground vertex's)
+ * still lies inside its sector at (x, z) (m), as tirenv_springs__cc_root_at first asks at
+ * z_a: 0 where one does not (it would return 0 there), read before the held rays' faces
+ * are found for it. The rows' vertices must lie in p. */
+int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
+                                   const tirenv_springs__cc_tire *T, const tirenv_profile *p,
+                                   double x, double z);
 
 /* springs_root.c: the element whose own row the state tirenv_springs__cc_root_at kept
  * (pred_w at pred_z, its reactions pred_lam) violates most, looked for where the working set

@@ -50,20 +50,30 @@ typedef struct {
     double ylo[S_MAX], yhi[S_MAX];     /* K_FF^-1 e_s at its chain's ends, m/N */
 } root_rows;
 
+/* A vertex row of sector (i, i + 1) at dx = V_x - x, dzv = z - V_z: its t into *t, and
+ * whether it lies inside the sector (springs_rows.c's snap apart), where its row keeps its
+ * kind. */
+static inline int row_inside(const tirenv_springs__cc_tire *T, size_t i, double dx, double dzv,
+                             double *t)
+{
+    const double *st = T->sin_t, *ct = T->cos_t;
+    const double s_i = dx * ct[i] - dzv * st[i], s_n = dzv * st[i + 1] - dx * ct[i + 1];
+    *t = s_i / (s_i + s_n);
+    return s_i > 0 && s_n > 0 && *t > t_snap && *t < 1 - t_snap;
+}
+
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
  * dF_0 (N) into *dF; 0 if a row leaves its sector's inside. */
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
                      double dz, double lam[], double B[], double g_out[], double *dF)
 {
     const size_t k = W->k, ns = 2 * k;
-    const double *st = T->sin_t, *ct = T->cos_t;
     double g[S_MAX], cmp[K_MAX], h[K_MAX], kap[S_MAX], u[S_MAX];
     for (size_t q = 0; q < k; ++q) {
         const size_t i = W->el[2 * q];
         const double dx = W->X[q] - x, dzv = z - W->Z[q];
-        const double s_i = dx * ct[i] - dzv * st[i], s_n = dzv * st[i + 1] - dx * ct[i + 1];
-        const double t = s_i / (s_i + s_n);
-        if (!(s_i > 0 && s_n > 0 && t > t_snap && t < 1 - t_snap))
+        double t;
+        if (!row_inside(T, i, dx, dzv, &t))
             return 0;
         double da, db;
         tirenv_springs__cc_weights(T, t, &g[2 * q], &g[2 * q + 1], &da, &db);
@@ -161,11 +171,24 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     }
     double *y = c->root_y;
     const double k_r = T->k_r, *ct = T->cos_t;
+    int same = c->cols_at == c->n_factors && c->cols_k == k && c->cols_S[0] == S_l &&
+               c->cols_S[1] == S_r;
     for (size_t s = 0; s < ns; ++s) {
         const size_t e_s = W->el[s];
         W->fr[s] = wpos[e_s] != SIZE_MAX;
         W->w_T[s] = w_T[e_s];
         W->dw[s] = dw[e_s];
+        same = same && c->cols_el[s] == e_s;
+    }
+    if (same) { /* the columns of the last root on this factor, bit for bit */
+        for (size_t s = 0; s < ns; ++s) {
+            for (size_t r = 0; r < ns; ++r)
+                W->Y[s][r] = c->cols_Y[s][r];
+            W->phi[s] = c->cols_phi[s];
+            W->ylo[s] = c->cols_ylo[s];
+            W->yhi[s] = c->cols_yhi[s];
+        }
+        return 1;
     }
     for (size_t s = 0; s < ns; ++s) {
         for (size_t r = 0; r < ns; ++r)
@@ -188,6 +211,18 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         for (size_t r = 0; r < ns; ++r)
             if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
                 W->Y[s][r] = y[W->el[r]];
+    }
+    c->cols_at = c->n_factors;
+    c->cols_k = k;
+    c->cols_S[0] = S_l;
+    c->cols_S[1] = S_r;
+    for (size_t s = 0; s < ns; ++s) {
+        c->cols_el[s] = W->el[s];
+        for (size_t r = 0; r < ns; ++r)
+            c->cols_Y[s][r] = W->Y[s][r];
+        c->cols_phi[s] = W->phi[s];
+        c->cols_ylo[s] = W->ylo[s];
+        c->cols_yhi[s] = W->yhi[s];
     }
     return 1;
 }
@@ -279,6 +314,20 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
     return 1;
 }
 
+int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
+                                   const tirenv_springs__cc_tire *T, const tirenv_profile *p,
+                                   double x, double z)
+{
+    for (size_t q = 0, k = c->n_schur; q < k; ++q) {
+        const tirenv_springs__cc_row *R = &c->rows[c->order[c->schur_pos[q]] - T->N];
+        double t;
+        if (R->id >= 0 && R->t > 0 &&
+            !row_inside(T, R->i, p->x[R->id] - x, z - p->z[R->id], &t))
+            return 0;
+    }
+    return 1;
+}
+
 /* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
  * z while each ray ends on the same face (the fan at (x, z_a) gives rho_e and d(rho_e)/dz);
  * the free ones solve K_FF w_F = b_F(z) + G_W(z)^T lambda with the base's K_FF (it depends
@@ -301,16 +350,19 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         return 0;
     const double R0 = T->R0, k_ir = T->k_ir, k_r = T->k_r, *ct = T->cos_t;
     const size_t *held = c->held, n_held = c->n_held, *ch = c->chains, n_ch = c->n_chains;
-    /* the held elements' rows at z_a and their slopes, and their share of F_z */
+    /* the held elements' rows at z_a and their slopes, and their share of F_z (the hub's
+     * weight k_r cos(theta_e), and the free chains' beyond the span at its ends: held is
+     * ascending, so only its first and last can be f0 and f1; adding the others' zeros
+     * changed no bit) */
     double *H = c->pred_w, *dH = c->root_du;
     double Fa = 0, dFa = 0;
     for (size_t m = 0; m < n_held; ++m) {
         const size_t e = held[m];
-        if (!isfinite(rho[e]) || !isfinite(drho[e]))
-            return 0;
         H[e] = R0 - rho[e];
         dH[e] = -drho[e];
-        const double f = k_r * ct[e] + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
+        double f = k_r * ct[e];
+        if ((m == 0 || m + 1 == n_held) && (e == f0 || e == f1))
+            f = f + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
         Fa += f * H[e];
         dFa += f * dH[e];
     }
