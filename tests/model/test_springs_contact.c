@@ -727,6 +727,34 @@ static void test_update_is_the_solution(void **state)
     free_tire(&S);
 }
 
+/* A fresh model's forces at (x, z) on p against hot's, just evaluated there (fx_h, fz_h in N,
+ * c_h contacts): F_z and F_x within 1e-9 of F_z (round-off of a state reached another way),
+ * the same contacts, every tip within 1e-13 R0 (w_h, w_c: N doubles of room; *worst_w the
+ * largest tip difference so far, m). Returns the fresh model's F_z (N). */
+static double same_as_fresh(const tirenv_tire *t, tirenv_springs *hot, const tirenv_profile *p,
+                            double x, double z, double fx_h, double fz_h, size_t c_h,
+                            double w_h[], double w_c[], double *worst_w)
+{
+    tirenv_springs *cold = tirenv_springs_alloc(&t->springs);
+    assert_non_null(cold);
+    const size_t N = tirenv_springs_size(cold);
+    double fx_c, fz_c, d_c;
+    size_t c_c;
+    assert_int_equal(tirenv_springs_forces(cold, p, x, z, &fx_c, &fz_c, &d_c, &c_c, NULL),
+                     TIRENV_OK);
+    assert_true(fabs(fz_h - fz_c) <= 1e-9 * fz_c);
+    assert_true(fabs(fx_h - fx_c) <= 1e-9 * fz_c);
+    assert_int_equal(c_h, c_c);
+    tirenv_springs_tips(hot, NULL, w_h, NULL);
+    tirenv_springs_tips(cold, NULL, w_c, NULL);
+    for (size_t e = 0; e < N; ++e) {
+        *worst_w = fmax(*worst_w, fabs(w_h[e] - w_c[e]));
+        assert_true(fabs(w_h[e] - w_c[e]) <= 1e-13 * t->springs.R0);
+    }
+    tirenv_springs_free(cold);
+    return fz_c;
+}
+
 /* Newton's step on the last QP solve's working set (tirenv_springs__root, springs_root.c;
  * docs/models.md section 4.8, Cost): after a full evaluation at z0, a load G = F0 + dF0 dz,
  * dz from 1e-6 to 1e-3 m either way. The workspace's own evaluation at the height the root
@@ -772,31 +800,19 @@ static void test_root_is_the_equilibrium(void **state)
             if (!tirenv_springs__root(hot, p, x, z0, G, F0, dF0, &z_r))
                 continue;
             ++found;
-            double fx_h, fz_h, fx_c, fz_c, d_h, d_c;
-            size_t c_h, c_c;
+            double fx_h, fz_h, d_h;
+            size_t c_h;
             const size_t updates = tirenv_springs__updates(hot);
             assert_int_equal(tirenv_springs_forces(hot, p, x, z_r, &fx_h, &fz_h, &d_h, &c_h,
                                                    NULL), TIRENV_OK);
             const int upd = tirenv_springs__updates(hot) > updates;
-            tirenv_springs *cold = tirenv_springs_alloc(&t.springs);
-            assert_non_null(cold);
-            assert_int_equal(tirenv_springs_forces(cold, p, x, z_r, &fx_c, &fz_c, &d_c, &c_c,
-                                                   NULL), TIRENV_OK);
+            const double fz_c = same_as_fresh(&t, hot, p, x, z_r, fx_h, fz_h, c_h, w_h, w_c,
+                                              &worst_w);
             if (upd) { /* the root's state held: it was the QP's solution there */
                 ++accepted;
                 worst_F = fmax(worst_F, fabs(fz_c - G));
                 assert_true(fabs(fz_c - G) <= 1e-6);
             }
-            assert_true(fabs(fz_h - fz_c) <= 1e-9 * fz_c);
-            assert_true(fabs(fx_h - fx_c) <= 1e-9 * fz_c);
-            assert_int_equal(c_h, c_c);
-            tirenv_springs_tips(hot, NULL, w_h, NULL);
-            tirenv_springs_tips(cold, NULL, w_c, NULL);
-            for (size_t e = 0; e < N; ++e) {
-                worst_w = fmax(worst_w, fabs(w_h[e] - w_c[e]));
-                assert_true(fabs(w_h[e] - w_c[e]) <= 1e-13 * R0);
-            }
-            tirenv_springs_free(cold);
         }
         tirenv_springs_free(hot);
         tirenv_profile_free(p);
@@ -883,17 +899,15 @@ static void test_start_is_the_equilibrium(void **state)
             }
             found += !far;
             far_found += far;
-            double fx_h, fz_h, fx_c, fz_c, d_h, d_c;
-            size_t c_h, c_c;
+            double fx_h, fz_h, d_h;
+            size_t c_h;
             assert_int_equal(tirenv_springs_forces(hot, p, x, z_s, &fx_h, &fz_h, &d_h, &c_h,
                                                    NULL), TIRENV_OK);
             tirenv_springs__start_counts(hot, &s1, &u1);
             assert_int_equal(s1, s0 + 1);
             const int upd = u1 > u0;
-            tirenv_springs *cold = tirenv_springs_alloc(&t.springs);
-            assert_non_null(cold);
-            assert_int_equal(tirenv_springs_forces(cold, p, x, z_s, &fx_c, &fz_c, &d_c, &c_c,
-                                                   NULL), TIRENV_OK);
+            const double fz_c = same_as_fresh(&t, hot, p, x, z_s, fx_h, fz_h, c_h, w_h, w_c,
+                                              &worst_w);
             if (upd) { /* the working set held at the new x: the QP's solution there */
                 accepted += !far;
                 far_taken += far;
@@ -902,16 +916,6 @@ static void test_start_is_the_equilibrium(void **state)
             } else {
                 refused += !far;
             }
-            assert_true(fabs(fz_h - fz_c) <= 1e-9 * fz_c);
-            assert_true(fabs(fx_h - fx_c) <= 1e-9 * fz_c);
-            assert_int_equal(c_h, c_c);
-            tirenv_springs_tips(hot, NULL, w_h, NULL);
-            tirenv_springs_tips(cold, NULL, w_c, NULL);
-            for (size_t e = 0; e < N; ++e) {
-                worst_w = fmax(worst_w, fabs(w_h[e] - w_c[e]));
-                assert_true(fabs(w_h[e] - w_c[e]) <= 1e-13 * R0);
-            }
-            tirenv_springs_free(cold);
         }
         tirenv_springs_free(hot);
         tirenv_profile_free(p);
