@@ -724,6 +724,18 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
  * element's own row entering or leaving it at the patch's edges, one at a time. */
 enum { start_rounds = 3 };
 
+/* Nothing of the last positions for the next one's start (a new sweep, a state restored):
+ * its evaluations and whether its start held, the closed form's pins, the QP's base and the
+ * root's state. */
+static void forget_start(tirenv_springs *s)
+{
+    s->evals = 0;
+    s->start_taken = 0;
+    s->pins_ok = 0;
+    s->cc.base_ok = 0;
+    s->cc.pred_ok = 0;
+}
+
 int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
                           double G, double *z)
 {
@@ -846,13 +858,9 @@ void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
     tirenv_springs__cc *c = &s->cc;
     if (!old) { /* a new sweep: nothing carried from the last one's positions (nor which
                  * path its first evaluation takes) */
+        forget_start(s);
         c->between = 0;
-        c->base_ok = 0;
-        c->pred_ok = 0;
-        s->pins_ok = 0;
         s->memo_serial = 0;
-        s->evals = 0;
-        s->start_taken = 0;
         return;
     }
     const int carry = s->upd_serial == old->serial || s->memo_serial == old->serial;
@@ -1036,9 +1044,7 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
-    s->evals = 0;
-    s->start_taken = 0;
-    s->pins_ok = 0;
+    forget_start(s);
     if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
         tirenv_springs__cc_forget(&s->cc);
         s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
