@@ -647,23 +647,16 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
          * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
          * The workspace's arrays in locals (the stores to dw would make them be read again
-         * at every element), and a ray's kept d(rho)/dz read in place
-         * (tirenv_springs__fan_drho computes it once per memo). */
+         * at every element), and a ray's d(rho)/dz as ray_drho keeps it. */
         const size_t *pin_row = s->cc.pin_row, *held = s->cc.held;
         const tirenv_springs__cc_row *rows = s->cc.rows;
-        const tirenv_springs__ray_memo *memo = s->memo;
         double *dw = s->dw;
         /* 0 on the span, then the held elements from the QP's list of them */
         memset(dw + f0, 0, (f1 - f0 + 1) * sizeof *dw);
         for (size_t k = 0, n_held = s->cc.n_held; k < n_held; ++k) {
             const size_t i = held[k];
             const tirenv_springs__cc_row *R = &rows[pin_row[i]];
-            if (R->id < 0) {
-                const double dr = memo[i].drho;
-                dw[i] = -(isnan(dr) ? ray_drho(s, prof, i) : dr);
-            } else {
-                dw[i] = R->dh_dz;
-            }
+            dw[i] = R->id < 0 ? -ray_drho(s, prof, i) : R->dh_dz;
         }
         if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, NULL, s->dw) == TIRENV_OK) {
             /* the base of the next evaluation's update at this x */
