@@ -655,8 +655,9 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
  * elements by ground vertex, its held elements on their rays' rows, K_FF's factor): given
  * each held element's ray at (x, z_a), rho[e] (m) and d(rho)/dz drho[e] (both finite), the
  * height *z_root where F_z = G with that working set at x, the secant's first step by slope
- * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root) (c->pred_ok).
- * The update there (which checks every row at x) decides whether it is the QP's solution.
+ * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root)
+ * (c->pred_ok). The update there (which checks every row at x) decides whether it is the QP's
+ * solution.
  * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, Cost. */
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,
