@@ -190,6 +190,9 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
         s->diag[i] = s->k_r + neighbours * s->k_ir;
     }
     precompute_chains(s);
+    /* no face kept yet: calloc's zeros would read as a ray that hit vertex 0 with a zero
+     * d(rho)/dz (set_origin forgets them on a new profile too) */
+    tirenv_springs__faces_forget(s);
     tirenv_springs__chain_tables(N, s->k_r, s->k_ir, s->ce, s->cm, s->cmi);
     s->chains = (tirenv_springs__chains){.N = N, .k_ir = s->k_ir, .diag = s->diag,
                                          .lq = s->lq, .rq = s->rq, .ce = s->ce, .cm = s->cm,
