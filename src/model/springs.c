@@ -190,6 +190,9 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
         s->diag[i] = s->k_r + neighbours * s->k_ir;
     }
     precompute_chains(s);
+    /* no face kept yet: calloc's zeros would read as a ray that hit vertex 0 with a zero
+     * d(rho)/dz (set_origin forgets them on a new profile too) */
+    tirenv_springs__faces_forget(s);
     tirenv_springs__chain_tables(N, s->k_r, s->k_ir, s->ce, s->cm, s->cmi);
     s->chains = (tirenv_springs__chains){.N = N, .k_ir = s->k_ir, .diag = s->diag,
                                          .lq = s->lq, .rq = s->rq, .ce = s->ce, .cm = s->cm,
@@ -647,23 +650,16 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
          * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
          * The workspace's arrays in locals (the stores to dw would make them be read again
-         * at every element), and a ray's kept d(rho)/dz read in place
-         * (tirenv_springs__fan_drho computes it once per memo). */
+         * at every element), and a ray's d(rho)/dz as ray_drho keeps it. */
         const size_t *pin_row = s->cc.pin_row, *held = s->cc.held;
         const tirenv_springs__cc_row *rows = s->cc.rows;
-        const tirenv_springs__ray_memo *memo = s->memo;
         double *dw = s->dw;
         /* 0 on the span, then the held elements from the QP's list of them */
         memset(dw + f0, 0, (f1 - f0 + 1) * sizeof *dw);
         for (size_t k = 0, n_held = s->cc.n_held; k < n_held; ++k) {
             const size_t i = held[k];
             const tirenv_springs__cc_row *R = &rows[pin_row[i]];
-            if (R->id < 0) {
-                const double dr = memo[i].drho;
-                dw[i] = -(isnan(dr) ? ray_drho(s, prof, i) : dr);
-            } else {
-                dw[i] = R->dh_dz;
-            }
+            dw[i] = R->id < 0 ? -ray_drho(s, prof, i) : R->dh_dz;
         }
         if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, NULL, s->dw) == TIRENV_OK) {
             /* the base of the next evaluation's update at this x */
@@ -723,6 +719,18 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
 /* The working set's changes tirenv_springs__start makes at a new x before it gives up: an
  * element's own row entering or leaving it at the patch's edges, one at a time. */
 enum { start_rounds = 3 };
+
+/* Nothing of the last positions for the next one's start (a new sweep, a state restored):
+ * its evaluations and whether its start held, the closed form's pins, the QP's base and the
+ * root's state. */
+static void forget_start(tirenv_springs *s)
+{
+    s->evals = 0;
+    s->start_taken = 0;
+    s->pins_ok = 0;
+    s->cc.base_ok = 0;
+    s->cc.pred_ok = 0;
+}
 
 int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
                           double G, double *z)
@@ -846,13 +854,9 @@ void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
     tirenv_springs__cc *c = &s->cc;
     if (!old) { /* a new sweep: nothing carried from the last one's positions (nor which
                  * path its first evaluation takes) */
+        forget_start(s);
         c->between = 0;
-        c->base_ok = 0;
-        c->pred_ok = 0;
-        s->pins_ok = 0;
         s->memo_serial = 0;
-        s->evals = 0;
-        s->start_taken = 0;
         return;
     }
     const int carry = s->upd_serial == old->serial || s->memo_serial == old->serial;
@@ -1036,9 +1040,7 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
         s->b = 0;
     }
     s->ray_serial = 0;
-    s->evals = 0;
-    s->start_taken = 0;
-    s->pins_ok = 0;
+    forget_start(s);
     if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
         tirenv_springs__cc_forget(&s->cc);
         s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;

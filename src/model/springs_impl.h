@@ -413,6 +413,19 @@ typedef struct {
 /* The most working rows between elements solved through their Schur complement. */
 #define TIRENV_SPRINGS__SCHUR_MAX 4
 
+/* The working rows' columns of K_FF^-1 at their free elements (springs_root.c), for the
+ * factor at counts (-1: none), the rows' k and elements el and the free chains' shares beyond
+ * the span S (N/m): Y[s][r] at slot r's element, phi[s] f . the column, ylo and yhi at its
+ * chain's ends. They depend on nothing else. */
+typedef struct {
+    unsigned long long at;
+    size_t k, el[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    double S[2];
+    double Y[2 * TIRENV_SPRINGS__SCHUR_MAX][2 * TIRENV_SPRINGS__SCHUR_MAX]; /* m/N */
+    double phi[2 * TIRENV_SPRINGS__SCHUR_MAX];                              /* N/N */
+    double ylo[2 * TIRENV_SPRINGS__SCHUR_MAX], yhi[2 * TIRENV_SPRINGS__SCHUR_MAX]; /* m/N */
+} tirenv_springs__cc_cols;
+
 /* The workspace: rows, the active set, the banded KKT factors, the warm start. Grows (once)
  * to the largest number of rows met. */
 typedef struct {
@@ -534,16 +547,9 @@ typedef struct {
      * lambda g (N), for the check of the held elements' reactions */
     size_t pred_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
     double pred_gl[2 * TIRENV_SPRINGS__SCHUR_MAX];
-    /* (springs_root.c) the working rows' columns of K_FF^-1 at their free elements, for the
-     * factor cols_at counts (-1: none), the rows' k and elements cols_el and the free chains'
-     * shares beyond the span cols_S: Y[s][r] at slot r's element, f . the column, its chain's
-     * ends. They depend on nothing else, so the next x's root takes them while those stay. */
-    unsigned long long cols_at;
-    size_t cols_k, cols_el[2 * TIRENV_SPRINGS__SCHUR_MAX];
-    double cols_S[2];
-    double cols_Y[2 * TIRENV_SPRINGS__SCHUR_MAX][2 * TIRENV_SPRINGS__SCHUR_MAX];
-    double cols_phi[2 * TIRENV_SPRINGS__SCHUR_MAX], cols_ylo[2 * TIRENV_SPRINGS__SCHUR_MAX],
-        cols_yhi[2 * TIRENV_SPRINGS__SCHUR_MAX];
+    /* (springs_root.c) the working rows' columns of K_FF^-1; the next x's root takes them
+     * while their factor and rows stay, and reads them in place. */
+    tirenv_springs__cc_cols cols;
 } tirenv_springs__cc;
 
 int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N);
@@ -649,8 +655,9 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
  * elements by ground vertex, its held elements on their rays' rows, K_FF's factor): given
  * each held element's ray at (x, z_a), rho[e] (m) and d(rho)/dz drho[e] (both finite), the
  * height *z_root where F_z = G with that working set at x, the secant's first step by slope
- * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root) (c->pred_ok).
- * The update there (which checks every row at x) decides whether it is the QP's solution.
+ * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root)
+ * (c->pred_ok). The update there (which checks every row at x) decides whether it is the QP's
+ * solution.
  * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, Cost. */
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,

@@ -44,10 +44,8 @@ typedef struct {
     double g0[S_MAX], g1[S_MAX];       /* the weights at the base and their d/dz, 1/m */
     double l0[K_MAX], dl[K_MAX];       /* reactions at the base (N) and d/dz (N/m) */
     double X[K_MAX], Z[K_MAX];         /* the rows' ground vertices, m */
-    double phi[S_MAX];                 /* f . K_FF^-1 e_s, N/N */
-    double Y[S_MAX][S_MAX];            /* Y[s][r]: (K_FF^-1 e_s) at slot r's element, m/N */
     double w_T[S_MAX], dw[S_MAX];      /* the base's w and dw/dz at the slots */
-    double ylo[S_MAX], yhi[S_MAX];     /* K_FF^-1 e_s at its chain's ends, m/N */
+    const tirenv_springs__cc_cols *col; /* K_FF^-1 e_s at the slots (the workspace's) */
 } root_rows;
 
 /* A vertex row of sector (i, i + 1) at dx = V_x - x, dzv = z - V_z: its t into *t, and
@@ -89,7 +87,7 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
     for (size_t r = 0; r < ns; ++r) {
         double v = W->w_T[r] + dz * W->dw[r];
         for (size_t s = 0; s < ns; ++s)
-            v -= kap[s] * W->Y[s][r];
+            v -= kap[s] * W->col->Y[s][r];
         u[r] = v;
     }
     /* M lambda = rhs: M = G K_FF^-1 G^T + C at z, symmetric positive definite (the rows
@@ -101,7 +99,7 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
             double m = 0;
             for (size_t a = 2 * q; a < 2 * q + 2; ++a)
                 for (size_t b = 2 * p; b < 2 * p + 2; ++b)
-                    m += g[a] * g[b] * W->Y[b][a];
+                    m += g[a] * g[b] * W->col->Y[b][a];
             M[q][p] = m + (p == q ? cmp[q] : 0);
         }
     }
@@ -135,7 +133,7 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
     for (size_t s = 0; s < ns; ++s) {
         g_out[s] = g[s];
         B[s] = W->fr[s] ? lam[s / 2] * g[s] - kap[s] : 0;
-        f += B[s] * W->phi[s];
+        f += B[s] * W->col->phi[s];
     }
     *dF = f;
     return 1;
@@ -143,8 +141,9 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
 
 /* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
  * each free slot's column of K_FF^-1 on its row's chain (K_FF couples no other) and f . that
- * column (S_l, S_r: the free chains' beyond the span); w_T and dw at the slots, l0 and dl as
- * given (NULL: 0). 0 where a row is not a ground vertex's between elements. */
+ * column (S_l, S_r: the free chains' beyond the span) in c->cols, W->col pointing at them
+ * (solved only where the factor or the rows changed since); w_T and dw at the slots, l0 and
+ * dl the base's (with_lambda 0: 0). 0 where a row is not a ground vertex's between elements. */
 static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                      const tirenv_profile *p, double S_l, double S_r, const double w_T[],
                      const double dw[], int with_lambda, root_rows *W)
@@ -171,29 +170,23 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     }
     double *y = c->root_y;
     const double k_r = T->k_r, *ct = T->cos_t;
-    int same = c->cols_at == c->n_factors && c->cols_k == k && c->cols_S[0] == S_l &&
-               c->cols_S[1] == S_r;
+    tirenv_springs__cc_cols *C = &c->cols;
+    W->col = C;
+    int same = C->at == c->n_factors && C->k == k && C->S[0] == S_l && C->S[1] == S_r;
     for (size_t s = 0; s < ns; ++s) {
         const size_t e_s = W->el[s];
         W->fr[s] = wpos[e_s] != SIZE_MAX;
         W->w_T[s] = w_T[e_s];
         W->dw[s] = dw[e_s];
-        same = same && c->cols_el[s] == e_s;
+        same = same && C->el[s] == e_s;
     }
-    if (same) { /* the columns of the last root on this factor, bit for bit */
-        for (size_t s = 0; s < ns; ++s) {
-            for (size_t r = 0; r < ns; ++r)
-                W->Y[s][r] = c->cols_Y[s][r];
-            W->phi[s] = c->cols_phi[s];
-            W->ylo[s] = c->cols_ylo[s];
-            W->yhi[s] = c->cols_yhi[s];
-        }
+    if (same) /* the columns of the last root on this factor, bit for bit */
         return 1;
-    }
     for (size_t s = 0; s < ns; ++s) {
         for (size_t r = 0; r < ns; ++r)
-            W->Y[s][r] = 0;
-        W->phi[s] = 0;
+            C->Y[s][r] = 0;
+        C->phi[s] = 0;
+        C->el[s] = W->el[s];
         if (!W->fr[s])
             continue;
         const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
@@ -205,25 +198,17 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         for (size_t e = lo; e <= hi; ++e)
             f += k_r * ct[e] * y[e];
         f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
-        W->phi[s] = f;
-        W->ylo[s] = y[lo];
-        W->yhi[s] = y[hi];
+        C->phi[s] = f;
+        C->ylo[s] = y[lo];
+        C->yhi[s] = y[hi];
         for (size_t r = 0; r < ns; ++r)
             if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
-                W->Y[s][r] = y[W->el[r]];
+                C->Y[s][r] = y[W->el[r]];
     }
-    c->cols_at = c->n_factors;
-    c->cols_k = k;
-    c->cols_S[0] = S_l;
-    c->cols_S[1] = S_r;
-    for (size_t s = 0; s < ns; ++s) {
-        c->cols_el[s] = W->el[s];
-        for (size_t r = 0; r < ns; ++r)
-            c->cols_Y[s][r] = W->Y[s][r];
-        c->cols_phi[s] = W->phi[s];
-        c->cols_ylo[s] = W->ylo[s];
-        c->cols_yhi[s] = W->yhi[s];
-    }
+    C->at = c->n_factors;
+    C->k = k;
+    C->S[0] = S_l;
+    C->S[1] = S_r;
     return 1;
 }
 
@@ -401,12 +386,12 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
         double ua = 0, us = 0;
         if (lo > f0) {
-            ua += W.ylo[s] * k_ir * H[lo - 1];
-            us += W.ylo[s] * k_ir * dH[lo - 1];
+            ua += W.col->ylo[s] * k_ir * H[lo - 1];
+            us += W.col->ylo[s] * k_ir * dH[lo - 1];
         }
         if (hi < f1) {
-            ua += W.yhi[s] * k_ir * H[hi + 1];
-            us += W.yhi[s] * k_ir * dH[hi + 1];
+            ua += W.col->yhi[s] * k_ir * H[hi + 1];
+            us += W.col->yhi[s] * k_ir * dH[hi + 1];
         }
         W.w_T[s] = ua;
         W.dw[s] = us;
