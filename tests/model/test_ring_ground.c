@@ -62,6 +62,18 @@ static double equilibrium(tirenv_ring *r, const tirenv_profile *p, double x, dou
     return NAN;
 }
 
+/* Two rings' last evaluations at the same centre give the same diagnostics (--detail's
+ * contacts, belt contacts, tread compression, the patch) and the same window. */
+static void same_diagnostics(tirenv_ring *const r[2], const size_t contacts[2])
+{
+    assert_int_equal(contacts[0], contacts[1]);
+    assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
+    assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
+    assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9, 0);
+    assert_int_equal(r[0]->lo, r[1]->lo);
+    assert_int_equal(r[0]->n, r[1]->n);
+}
+
 static void test_joined_points_as_apart(void **state)
 {
     (void)state;
@@ -114,13 +126,7 @@ static void test_joined_points_as_apart(void **state)
                         if (r[k]->pts[q].d > -INFINITY)
                             om[k] += r[k]->pts[q].omega;
                 }
-                assert_int_equal(contacts[0], contacts[1]);
-                assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
-                assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
-                assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9,
-                            0);
-                assert_int_equal(r[0]->lo, r[1]->lo);
-                assert_int_equal(r[0]->n, r[1]->n);
+                same_diagnostics(r, contacts);
                 assert_true(tirenv_ring__same_bits(d[0], d[1], (size_t)(M + 0.5)));
                 assert_true(tirenv_ring__same_bits(b[0], b[1], (size_t)(M + 0.5)));
                 assert_near(om[0], om[1], 1e-12, 0);
@@ -194,13 +200,7 @@ static void test_gaps_as_whole(void **state)
                     ++evals;
                 }
                 assert_near(fz[0], fz[1], 1e-6, 0);
-                assert_int_equal(contacts[0], contacts[1]);
-                assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
-                assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
-                assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9,
-                            0);
-                assert_int_equal(r[0]->lo, r[1]->lo);
-                assert_int_equal(r[0]->n, r[1]->n);
+                same_diagnostics(r, contacts);
                 /* Each point of the gapped sampling is the whole one's, but at a gap's edge
                  * (a node's point there not joined with the gap's); none lies in a gap. */
                 size_t q1 = 0;
