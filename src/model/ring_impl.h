@@ -201,9 +201,9 @@ struct tirenv_ring {
     /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last
      * sub-window, their ground bounded instead. near_ok: near_a .. near_b is the last solve's
      * sub-window (set by ring_shear.c, where its solve may skip). gaps: n_gaps entries of
-     * skipped intervals, each its first and last interval (and a spare), gap_d at its first
-     * an upper bound of d over them (m); gap_on: per node, interval j skipped. The last
-     * sampling's arguments, to sample it whole when a solve needs every point. */
+     * skipped intervals, each its first and last interval, gap_d at its first an upper bound
+     * of d over them (m); gap_on: per node, interval j skipped. The last sampling's
+     * arguments, to sample it whole when a solve needs every point. */
     int near_ok, whole_ground; /* whole_ground: for tests, never skip */
     size_t near_a, near_b;
     double *gap_d;
