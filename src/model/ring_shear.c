@@ -42,6 +42,7 @@
 #include "core/cholesky.h"
 #include "core/capacity.h"
 #include "model/ring_impl.h"
+#include "tirenv/rng.h"
 
 enum { BAND_P = 4, TAIL = 4, NB = 6, SPAN = 4 };
 
@@ -2546,8 +2547,8 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
 
 /* For tests: the window's last factorised system (T->ap, its fresh tail entries taken as zero)
  * solved with its factor (T->win) for a right-hand side of pseudo-random entries in [-1, 1)
- * drawn from seed: max |b - A x| / (max row sum of |A| * max |x|), a few machine epsilons for a
- * backward-stable solve. -1 if no factor is held or out of memory. */
+ * drawn from seed (tirenv_rng): max |b - A x| / (max row sum of |A| * max |x|), a few machine
+ * epsilons for a backward-stable solve. -1 if no factor is held or out of memory. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed)
 {
     const tirenv_ring_tread *T = r->tread;
@@ -2557,14 +2558,16 @@ double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long see
         return -1;
     const size_t m = N - t;
     double *b = malloc(4 * N * sizeof *b);
-    if (!b)
+    tirenv_rng *rng = tirenv_rng_alloc(seed);
+    if (!b || !rng) {
+        free(b);
+        tirenv_rng_free(rng);
         return -1;
-    double *x = b + N, *y = x + N, *rs = y + N;
-    unsigned long v = seed;
-    for (size_t i = 0; i < N; ++i) { /* a linear congruential draw: no state of the library's */
-        v = v * 6364136223846793005UL + 1442695040888963407UL;
-        b[i] = x[i] = (double)(v >> 11) * 0x1p-52 - 1;
     }
+    double *x = b + N, *y = x + N, *rs = y + N;
+    for (size_t i = 0; i < N; ++i)
+        b[i] = x[i] = 2 * tirenv_rng_uniform(rng) - 1;
+    tirenv_rng_free(rng);
     band_solve(&T->win, x);
     for (size_t i = 0; i < N; ++i)
         y[i] = rs[i] = 0;
