@@ -380,7 +380,7 @@ static int reserve_gaps(tirenv_ring *r)
     if (r->gap_d)
         return 0;
     r->gap_d = malloc(r->M * sizeof *r->gap_d);
-    r->gaps = malloc(3 * r->M * sizeof *r->gaps);
+    r->gaps = malloc(2 * r->M * sizeof *r->gaps);
     r->gap_on = calloc(r->M, 1);
     if (!r->gap_d || !r->gaps || !r->gap_on) {
         free(r->gap_d);
@@ -394,10 +394,10 @@ static int reserve_gaps(tirenv_ring *r)
     return 0;
 }
 
-/* Gap entry g: intervals gaps[3 g] .. gaps[3 g + 1] with the bound gap_d[gaps[3 g]], m. */
+/* Gap entry g: intervals gaps[2 g] .. gaps[2 g + 1] with the bound gap_d[gaps[2 g]], m. */
 static void add_gap(size_t *gaps, size_t *n_gaps, size_t j0, size_t j1)
 {
-    size_t *const e = gaps + 3 * (*n_gaps)++;
+    size_t *const e = gaps + 2 * (*n_gaps)++;
     e[0] = j0, e[1] = j1;
 }
 
@@ -473,7 +473,7 @@ static inline int in_gap(const tirenv_ring *r, size_t j) { return r->gap_on[j]; 
 static void clear_gaps(tirenv_ring *r)
 {
     for (size_t g = 0; g < r->n_gaps; ++g)
-        memset(r->gap_on + r->gaps[3 * g], 0, r->gaps[3 * g + 1] + 1 - r->gaps[3 * g]);
+        memset(r->gap_on + r->gaps[2 * g], 0, r->gaps[2 * g + 1] + 1 - r->gaps[2 * g]);
     r->n_gaps = 0;
 }
 
@@ -482,7 +482,7 @@ int tirenv_ring__gaps_clear(const tirenv_ring *r, const double xw[])
     const double t_r = r->par.t_r;
     const size_t lo = r->lo;
     for (size_t g = 0; g < r->n_gaps; ++g) {
-        const size_t j0 = r->gaps[3 * g], j1 = r->gaps[3 * g + 1];
+        const size_t j0 = r->gaps[2 * g], j1 = r->gaps[2 * g + 1];
         const double dm = r->gap_d[j0];
         double um = xw[2 * (j0 - lo) + 1], wm = xw[2 * (j0 - lo)];
         for (size_t j = j0 + 1; j <= j1 + 1; ++j) {
@@ -499,7 +499,7 @@ int tirenv_ring__gaps_clear(const tirenv_ring *r, const double xw[])
 int tirenv_ring__sampled_over(const tirenv_ring *r, size_t a, size_t b)
 {
     for (size_t g = 0; g < r->n_gaps; ++g)
-        if (r->gaps[3 * g] <= b && r->gaps[3 * g + 1] + 1 >= a)
+        if (r->gaps[2 * g] <= b && r->gaps[2 * g + 1] + 1 >= a)
             return 0;
     return 1;
 }

@@ -142,10 +142,12 @@ typedef struct {
 
 /* The ring's own step in z (ring_root.c): F_z's curvature in z, measured at the positions
  * before, by the sign of the step (0 up, 1 down), newest first; and the evaluation it stepped
- * from at this x. Saved with the warm start (a chunk's first position starts without it). */
+ * from at this x. Saved with the warm start (a chunk's first position starts without it);
+ * every field a double, counts and flag too, so that ring.c's state_restore checks the saved
+ * bytes as one array of doubles (finite, counts in range). */
 typedef struct {
     double c[2][TIRENV_RING_ROOT_KEEP]; /* d^2 F_z/dz^2, N/m^2 */
-    double n[2];           /* how many of c[s] hold one (a double: the state is doubles) */
+    double n[2];           /* how many of c[s] hold one */
     double x, z, F, k;     /* the step's evaluation: m, m, N, N/m */
     double have;           /* 1: x .. k hold it */
 } tirenv_ring_root;
@@ -201,9 +203,9 @@ struct tirenv_ring {
     /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last
      * sub-window, their ground bounded instead. near_ok: near_a .. near_b is the last solve's
      * sub-window (set by ring_shear.c, where its solve may skip). gaps: n_gaps entries of
-     * skipped intervals, each its first and last interval (and a spare), gap_d at its first
-     * an upper bound of d over them (m); gap_on: per node, interval j skipped. The last
-     * sampling's arguments, to sample it whole when a solve needs every point. */
+     * skipped intervals, each its first and last interval, gap_d at its first an upper bound
+     * of d over them (m); gap_on: per node, interval j skipped. The last sampling's
+     * arguments, to sample it whole when a solve needs every point. */
     int near_ok, whole_ground; /* whole_ground: for tests, never skip */
     size_t near_a, near_b;
     double *gap_d;

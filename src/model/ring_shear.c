@@ -42,6 +42,7 @@
 #include "core/cholesky.h"
 #include "core/capacity.h"
 #include "model/ring_impl.h"
+#include "tirenv/rng.h"
 
 enum { BAND_P = 4, TAIL = 4, NB = 6, SPAN = 4 };
 
@@ -108,12 +109,16 @@ struct tirenv_ring_tread {
     double dn_x, dn_z;
     size_t dn_a, dn_b;
     int dn_ok;
-    double last_x, last_z; /* the last answer's centre (last_ok), m */
+    double last_x, last_z; /* the last answer's centre (last_ok), m; with r->pts, r->k_first
+                            * and r->k_last, which a state does not save, its contact's ground
+                            * (tirenv_ring__tread_new_x) */
     int last_ok;
     unsigned skip;      /* positions warm_shift leaves out: its last pass moved nothing */
     double *span;       /* 4, after pred (a state saves them): 1 if the last answer had a
                          * contact, the nodes of its first and last point's intervals, and
-                         * the centre's abscissa (m) (warm_span) */
+                         * the centre's abscissa (m) (warm_span): the nodes dn_a, dn_b and
+                         * last_x that tirenv_ring__tread_new_x takes, kept apart from them
+                         * because a state saves these doubles and not the points */
     double (*end)[NB][NB]; /* per window length: the exterior's correction, N/m */
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
@@ -1668,17 +1673,21 @@ static const size_t *beyond_span(const tirenv_ring *r, const double xw[], size_t
     return beyond;
 }
 
+/* The last answer's contact guides an evaluation's warm start within WARM_DX (m) of its
+ * abscissa: its nodes, which the first sub-window holds (warm_span), and its ground, along
+ * which the tread surface moves (warm_shift). Inside the patch the tread surface lies within
+ * the contact layer's compression, some 1e-7 m, of the ground, so wherever the ground moved
+ * away from it with x (a road's slope over the step: 1e-5 m and more) the warm start's points
+ * read as free or deep in. The nodes in contact move by a node spacing over some 3 mm of
+ * travel, so the last contact's nodes are nearly this one's. */
+static const double WARM_DX = 2e-3;
+
 /* The nodes the first sub-window must hold besides the warm start's contact: beyond_span's,
- * and, where the last answer was within WARM_SPAN_DX of x_c (m), the nodes of its contact.
- * Inside the patch the tread surface lies within the contact layer's compression, some 1e-7
- * m, of the ground, so wherever the ground moved away from it with x (a road's slope over the
- * step: 1e-5 m and more) the warm start's points read as free, and the contact it predicts
- * stopped short by tens of nodes: the sub-window then grew by SUB_QUANT a try, and after
- * SUB_TRIES the whole window was solved, then the sub-window of its contact (five solves at
- * a position's first evaluation over a class C road, where one or two do now). The nodes in
- * contact move by a node spacing over some 3 mm of travel, so the last contact's nodes are
- * nearly this one's. */
-static const double WARM_SPAN_DX = 2e-3;
+ * and, where the last answer was within WARM_DX of x_c (m), the nodes of its contact. Without
+ * them the contact the warm start predicts stopped short by tens of nodes: the sub-window then
+ * grew by SUB_QUANT a try, and after SUB_TRIES the whole window was solved, then the
+ * sub-window of its contact (five solves at a position's first evaluation over a class C
+ * road, where one or two do now). */
 
 static const size_t *warm_span(const tirenv_ring *r, double x_c, const double xw[],
                                size_t beyond[2])
@@ -1686,7 +1695,7 @@ static const size_t *warm_span(const tirenv_ring *r, double x_c, const double xw
     const tirenv_ring_tread *T = r->tread;
     const double *sp = T->span;
     beyond_span(r, xw, beyond);
-    if (T->soft || sp[0] != 1 || !(fabs(x_c - sp[3]) <= WARM_SPAN_DX))
+    if (T->soft || sp[0] != 1 || !(fabs(x_c - sp[3]) <= WARM_DX))
         return beyond;
     /* (Node indices as doubles, exact: what a state saves is doubles. A damaged state's
      * are checked: within the window, or none.) */
@@ -1984,17 +1993,16 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
     T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
 }
 
-/* The warm start at a new abscissa moves the tread surface with the ground (WARM_SHIFT_DX,
- * WARM_SHIFT_MAX, m): inside the patch it lies within the contact layer's compression (some
- * 1e-7 m) of the ground, so where the ground under a node moved with x (a road's slope over
- * the step) the last answer's u read its points as free or deep in, and Newton's first steps
- * changed tens of states (with the line search over a road). A node whose ray's ground touched
- * the tread surface in the last answer, within WARM_SHIFT_DX of the last x, starts from u + (d
- * - d_last - dz d(d)/dz) of its ray's ground (dz u/dz already follows the part that moves with
- * z), where that moved by at most WARM_SHIFT_MAX (not a cleat's face passing the ray). One pass
- * over the points of the last contact's nodes; the minimum does not depend on the start (its
- * states' system is solved last), so the same bits. */
-static const double WARM_SHIFT_DX = 2e-3, WARM_SHIFT_MAX = 1e-3;
+/* The warm start at a new abscissa moves the tread surface with the ground (WARM_DX): where
+ * the ground under a node moved with x, the last answer's u read its points as free or deep
+ * in, and Newton's first steps changed tens of states (with the line search over a road). A
+ * node whose ray's ground touched the tread surface in the last answer, within WARM_DX of the
+ * last x, starts from u + (d - d_last - dz d(d)/dz) of its ray's ground (dz u/dz already
+ * follows the part that moves with z), where that moved by at most WARM_SHIFT_MAX (m; not a
+ * cleat's face passing the ray). One pass over the points of the last contact's nodes; the
+ * minimum does not depend on the start (its states' system is solved last), so the same
+ * bits. */
+static const double WARM_SHIFT_MAX = 1e-3;
 
 /* The larger d of the points at each node ja .. jb of r's points from k_lo on (a node's own
  * ray; two one-sided values where a vertex lies at it), of those in contact with the tread
@@ -2036,7 +2044,7 @@ void tirenv_ring__tread_new_x(tirenv_ring *r, double x)
 {
     tirenv_ring_tread *T = r->tread;
     T->dn_ok = 0;
-    if (T->soft || !T->last_ok || x == T->last_x || !(fabs(x - T->last_x) <= WARM_SHIFT_DX) ||
+    if (T->soft || !T->last_ok || x == T->last_x || !(fabs(x - T->last_x) <= WARM_DX) ||
         r->k_first > r->k_last || r->k_last >= r->n_pts)
         return;
     if (T->skip > 0) {
@@ -2539,8 +2547,8 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
 
 /* For tests: the window's last factorised system (T->ap, its fresh tail entries taken as zero)
  * solved with its factor (T->win) for a right-hand side of pseudo-random entries in [-1, 1)
- * drawn from seed: max |b - A x| / (max row sum of |A| * max |x|), a few machine epsilons for a
- * backward-stable solve. -1 if no factor is held or out of memory. */
+ * drawn from seed (tirenv_rng): max |b - A x| / (max row sum of |A| * max |x|), a few machine
+ * epsilons for a backward-stable solve. -1 if no factor is held or out of memory. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed)
 {
     const tirenv_ring_tread *T = r->tread;
@@ -2550,14 +2558,16 @@ double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long see
         return -1;
     const size_t m = N - t;
     double *b = malloc(4 * N * sizeof *b);
-    if (!b)
+    tirenv_rng *rng = tirenv_rng_alloc(seed);
+    if (!b || !rng) {
+        free(b);
+        tirenv_rng_free(rng);
         return -1;
-    double *x = b + N, *y = x + N, *rs = y + N;
-    unsigned long v = seed;
-    for (size_t i = 0; i < N; ++i) { /* a linear congruential draw: no state of the library's */
-        v = v * 6364136223846793005UL + 1442695040888963407UL;
-        b[i] = x[i] = (double)(v >> 11) * 0x1p-52 - 1;
     }
+    double *x = b + N, *y = x + N, *rs = y + N;
+    for (size_t i = 0; i < N; ++i)
+        b[i] = x[i] = 2 * tirenv_rng_uniform(rng) - 1;
+    tirenv_rng_free(rng);
     band_solve(&T->win, x);
     for (size_t i = 0; i < N; ++i)
         y[i] = rs[i] = 0;

@@ -62,6 +62,20 @@ static double equilibrium(tirenv_ring *r, const tirenv_profile *p, double x, dou
     return NAN;
 }
 
+/* Two rings' last evaluations at the same centre give the same diagnostics (--detail's
+ * contacts, belt contacts, tread compression, the patch) and the same window. The tolerances
+ * are round-off's (the joined points sum their weights first): measured over both tests'
+ * 520 evaluations, the tread compression within 3.9e-13 m, the patch within 4.1e-12 m. */
+static void same_diagnostics(tirenv_ring *const r[2], const size_t contacts[2])
+{
+    assert_int_equal(contacts[0], contacts[1]);
+    assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
+    assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
+    assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9, 0);
+    assert_int_equal(r[0]->lo, r[1]->lo);
+    assert_int_equal(r[0]->n, r[1]->n);
+}
+
 static void test_joined_points_as_apart(void **state)
 {
     (void)state;
@@ -114,16 +128,10 @@ static void test_joined_points_as_apart(void **state)
                         if (r[k]->pts[q].d > -INFINITY)
                             om[k] += r[k]->pts[q].omega;
                 }
-                assert_int_equal(contacts[0], contacts[1]);
-                assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
-                assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
-                assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9,
-                            0);
-                assert_int_equal(r[0]->lo, r[1]->lo);
-                assert_int_equal(r[0]->n, r[1]->n);
+                same_diagnostics(r, contacts);
                 assert_true(tirenv_ring__same_bits(d[0], d[1], (size_t)(M + 0.5)));
                 assert_true(tirenv_ring__same_bits(b[0], b[1], (size_t)(M + 0.5)));
-                assert_near(om[0], om[1], 1e-12, 0);
+                assert_near(om[0], om[1], 1e-12, 0); /* measured 5.2e-15 rad */
                 assert_true(r[0]->n_pts <= r[1]->n_pts);
                 fewer += r[0]->n_pts < r[1]->n_pts;
                 ++compared;
@@ -193,14 +201,8 @@ static void test_gaps_as_whole(void **state)
                     gapped += r[0]->n_gapped > e0;
                     ++evals;
                 }
-                assert_near(fz[0], fz[1], 1e-6, 0);
-                assert_int_equal(contacts[0], contacts[1]);
-                assert_int_equal(tirenv_ring_belt_contacts(r[0]), tirenv_ring_belt_contacts(r[1]));
-                assert_near(tirenv_ring_tread_max(r[0]), tirenv_ring_tread_max(r[1]), 1e-12, 0);
-                assert_near(tirenv_ring_patch_length(r[0]), tirenv_ring_patch_length(r[1]), 1e-9,
-                            0);
-                assert_int_equal(r[0]->lo, r[1]->lo);
-                assert_int_equal(r[0]->n, r[1]->n);
+                assert_near(fz[0], fz[1], 1e-6, 0); /* measured: the same bits */
+                same_diagnostics(r, contacts);
                 /* Each point of the gapped sampling is the whole one's, but at a gap's edge
                  * (a node's point there not joined with the gap's); none lies in a gap. */
                 size_t q1 = 0;

@@ -32,6 +32,20 @@ static tirenv_ring *default_ring(void)
     return r;
 }
 
+/* A class C road of length m with vertices 10 mm apart, from seed. */
+static tirenv_profile *class_c_road(double length, unsigned long seed)
+{
+    tirenv_road_settings s = tirenv_road_default();
+    s.road_class = 'C';
+    s.length = length;
+    s.dx = 0.01;
+    s.seed = seed;
+    tirenv_profile *p = NULL;
+    tirenv_diag d;
+    assert_int_equal(tirenv_road_iso8608(&s, &p, &d), TIRENV_OK);
+    return p;
+}
+
 /* One position on parabola p: the step from z0, then the evaluation at the step (measured).
  * Returns whether the ring gave its own step, *z_next where Newton goes. */
 static int position(tirenv_ring *r, const parabola *p, double x, double z0, double *z_next)
@@ -201,13 +215,7 @@ static void test_equilibria_as_brent(void **state)
         } else if (c == 2) {
             p = tirenv_profile_cleat(0.005, 0.01 + 0.03 * u);
         } else {
-            tirenv_road_settings s = tirenv_road_default();
-            s.road_class = 'C';
-            s.length = 3;
-            s.dx = 0.01;
-            s.seed = 19;
-            tirenv_diag d;
-            assert_int_equal(tirenv_road_iso8608(&s, &p, &d), TIRENV_OK);
+            p = class_c_road(3, 19);
             x0 = 0.8;
         }
         assert_non_null(p);
@@ -254,14 +262,7 @@ static void test_first_sub_window(void **state)
 {
     (void)state;
     const tirenv_tire t = tirenv_tire_default();
-    tirenv_road_settings s = tirenv_road_default();
-    s.road_class = 'C';
-    s.length = 4;
-    s.dx = 0.01;
-    s.seed = 3;
-    tirenv_profile *p = NULL;
-    tirenv_diag d;
-    assert_int_equal(tirenv_road_iso8608(&s, &p, &d), TIRENV_OK);
+    tirenv_profile *p = class_c_road(4, 3);
     tirenv_ring *r[2] = {default_ring(), default_ring()};
     const size_t M = tirenv_ring_size(r[1]);
     const double *span = tirenv_ring__tread_u(r[0]->tread) + 3 * M + 3; /* 1 if it holds one */

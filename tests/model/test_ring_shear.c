@@ -699,6 +699,16 @@ static void test_window_fill_matches_arc(void **state)
     }
 }
 
+/* An evaluation with dF_z/dz at case_x[i] and the k-th of five heights (k < 5) 7.3 mm apart
+ * from 37.1 mm below the free radius R0 (m): the last Newton step's system it leaves is what
+ * test_refactor_restart and test_solve_residual factorise again. */
+static void evaluate_at(tirenv_ring *r, const tirenv_profile *p, double R0, size_t i, size_t k)
+{
+    const double z = R0 - 0.0371 + 0.0073 * (double)k; /* m */
+    double fx, fz, dfz;
+    assert_int_equal(tirenv_ring_forces(r, p, case_x[i], z, &fx, &fz, &dfz, NULL, NULL), 0);
+}
+
 /* The factor's restart from a checkpoint (ring_shear.c's band_refactor: the columns before the
  * last multiple of 16 whose four pending columns lie before the first changed one kept, those
  * columns' entries and the tail block's accumulators taken from that column's checkpoint)
@@ -725,12 +735,9 @@ static void test_refactor_restart(void **state)
     const size_t n_c = sizeof col / sizeof col[0], n_f = sizeof frac / sizeof frac[0];
     size_t restarts = 0;
     for (size_t k = 0; k < 5; ++k) {
-        const double z = t.springs.R0 - 0.0371 + 0.0073 * (double)k; /* m */
         size_t m = 0;
         for (size_t f = 0; f < n_c + n_f; ++f) {
-            double fx, fz, dfz;
-            assert_int_equal(tirenv_ring_forces(r, p, case_x[k], z, &fx, &fz, &dfz, NULL, NULL),
-                             0);
+            evaluate_at(r, p, t.springs.R0, k, k);
             const size_t c = f < n_c ? (size_t)col[f] : (size_t)(frac[f - n_c] * (double)m);
             size_t m2 = 0, q = 0;
             int moved = 0;
@@ -756,9 +763,9 @@ static void test_refactor_restart(void **state)
  * makes A ill-conditioned, so a residual, not an error, is what round-off bounds). The limit:
  * a Cholesky-type solve's backward error is at most gamma_(3w+1), some 3w + 1 = 28 unit
  * round-offs (3.1e-15) for the w = BAND_P + TAIL + 1 = 9 entries of a row, times the growth of
- * |U| |D| |U^T| over |A|; 1e-14 leaves that a factor of three. Measured 1.3e-16 over the 75
- * solves; with every interior column's 1 / D off by a relative 1e-9 (factor_column) 4.8e-13,
- * which fails (by 1e-12, 4.8e-16: an error that small passes). */
+ * |U| |D| |U^T| over |A|; 1e-14 leaves that a factor of three. Measured 1.2e-16 over the 75
+ * solves (right-hand sides from tirenv_rng); with every interior column's 1 / D off by a
+ * relative 1e-9 (factor_column) 7.1e-11, by 1e-12 7.1e-14: both fail. */
 static void test_solve_residual(void **state)
 {
     (void)state;
@@ -770,10 +777,7 @@ static void test_solve_residual(void **state)
     size_t n = 0;
     for (size_t i = 0; i < 5; ++i)
         for (size_t k = 0; k < 5; ++k) {
-            const double z = t.springs.R0 - 0.0371 + 0.0073 * (double)k; /* m */
-            double fx, fz, dfz;
-            assert_int_equal(tirenv_ring_forces(r, p, case_x[i], z, &fx, &fz, &dfz, NULL, NULL),
-                             0);
+            evaluate_at(r, p, t.springs.R0, i, k);
             for (unsigned long seed = 1; seed <= 3; ++seed) {
                 const double res = tirenv_ring__tread_solve_residual(r, 977 * seed + i + 5 * k);
                 if (res < 0)
