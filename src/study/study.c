@@ -371,7 +371,8 @@ enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
 /* The reference curves: the model that simulated the data set (the ring for measured data)
  * on the virtual rig, imported like the data set's; where the data set is that model's own
- * curves (raw: a sweep without --rig), its own curves too; each obstacle with its own instance of it, so that its curve depends on it alone. */
+ * curves (raw: a sweep without --rig), its own curves too; each obstacle with its own
+ * instance of it, so that its curve depends on it alone. */
 typedef struct {
     const tirenv_tire *tire;
     const tirenv_model_type *reference;
