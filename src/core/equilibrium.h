@@ -32,8 +32,9 @@ typedef struct {
     size_t contacts;       /* elements (or nodes) touching the ground */
     /* The model's own step, where it knows F_z better than its slope does (the springs
      * model's continuous contact: F_z = G on the working set of the evaluation's QP, solved
-     * with it, docs/models.md section 4.8, Cost): Newton steps to z_root instead of its
-     * linear step. has_root 0 (as every evaluation starts): none. */
+     * with it, docs/models.md section 4.8, Cost; the ring's parabola through its slope and
+     * the curvature measured at the positions before, section 5.6): Newton steps to z_root
+     * instead of its linear step. has_root 0 (as every evaluation starts): none. */
     int has_root;
     double z_root;         /* m */
 } tirenv_eq_point;
