@@ -188,7 +188,8 @@ const char *cli_data_dir(void);
 /* rel (e.g. "dataset") under the data directory, in buf. */
 const char *cli_data_path(const char *rel, char *buf, size_t n);
 
-/* The tire file in use: --tire, else tires/default.tir in the data directory. */
+/* The tire file in use, returned: --tire's own string, else tires/default.tir in the data
+ * directory written into buf (buf is left unset with --tire: read the return). */
 const char *cli_tire_path(const cli_options *o, char *buf, size_t n);
 
 /* What the data set in dir says about its source (its source.txt, tirenv_dataset_source):

@@ -6,7 +6,13 @@
  * The force function returns everything the caller reports (F_z, dF_z/dz, F_x, contacts) from
  * one evaluation in one struct, and the solver keeps the evaluations it may accept (the last
  * one on each side of the root, and the latest), so the point a solver reports is an evaluated
- * iterate by construction: nothing depends on what the last call left behind. */
+ * iterate by construction: nothing depends on what the last call left behind.
+ *
+ * A model may help Newton three ways, each optional and ignored by the other methods: the
+ * point's has_root / z_root (its own step from an evaluation), the problem's start (its own
+ * first iterate) and the problem's slope (dF_z/dz left out of an evaluation, NaN, and given
+ * on request). slope is the one exception to the rule above: it answers for the latest
+ * evaluation, so the solver asks for it before the next (tirenv_eq__slope). */
 #ifndef TIRENV_EQUILIBRIUM_H
 #define TIRENV_EQUILIBRIUM_H
 
@@ -20,13 +26,15 @@
 typedef struct {
     double z;              /* centre height evaluated, m */
     double F;              /* vertical hub force F_z, N */
-    double dF_dz;          /* dF_z/dz, N/m (<= 0 where the model is monotone) */
+    double dF_dz;          /* dF_z/dz, N/m (<= 0 where the model is monotone; NaN: left out,
+                            * given on request through tirenv_eq_problem's slope) */
     double fx;             /* longitudinal hub force F_x, N */
     size_t contacts;       /* elements (or nodes) touching the ground */
     /* The model's own step, where it knows F_z better than its slope does (the springs
      * model's continuous contact: F_z = G on the working set of the evaluation's QP, solved
-     * with it, docs/models.md section 4.8, Cost): Newton steps to z_root instead of its
-     * linear step. has_root 0 (as every evaluation starts): none. */
+     * with it, docs/models.md section 4.8, Cost; the ring's parabola through its slope and
+     * the curvature measured at the positions before, section 5.6): Newton steps to z_root
+     * instead of its linear step. has_root 0 (as every evaluation starts): none. */
     int has_root;
     double z_root;         /* m */
 } tirenv_eq_point;

@@ -16,14 +16,16 @@
 struct tirenv_deformable {
     void *(*alloc)(const tirenv_tire *tire);
     void (*free)(void *elem);
-    /* Hub forces with the centre at (x, z) (m): F_z (N), dF_z/dz (N/m), F_x (N) and the
-     * contacts, all of one evaluation, in *out; a failure says what failed in diag. */
+    /* Hub forces with the centre at (x, z) (m): F_z (N), dF_z/dz (N/m; NaN where
+     * defer_slope has it left out), F_x (N) and the contacts, all of one evaluation, in *out;
+     * a failure says what failed in diag. */
     int (*forces)(void *elem, const tirenv_profile *p, double x, double z,
                   tirenv_eq_point *out, tirenv_diag *diag);
     /* Right after forces() at (x, z) on p: the centre height *z_root (m) where F_z = G (N)
      * with the evaluation's contact state carried along (Newton's step on the model's own
      * piece, more exact than the linear one), returning 1; 0 where it has none. at is what
-     * forces() gave. NULL: no model step (Newton's own). */
+     * forces() gave, its dF_z/dz filled in (slope()) where it was left out. NULL: no model
+     * step (Newton's own). */
     int (*root)(void *elem, const tirenv_profile *p, double x, double z, double G,
                 const tirenv_eq_point *at, double *z_root);
     /* Before the first evaluation of the equilibrium at x (m) on p, whose start is z0 (m):

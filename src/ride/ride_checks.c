@@ -11,10 +11,10 @@
 /* The largest |lambda| of the linear system with every tire on the ground (lift-off only
  * removes stiffness and damping), linearised at the static loads: a tire file's spring, whose
  * force follows its vertical law (ride_tire.c), enters as that law's tangent k_t there.
- * Generalised coordinates q = (z, theta[, z_a]), mass matrix M, and each spring-damper adds k*e*e^T to K and c*e*e^T to C, with e the change of
- * its length per unit q: a rigid front axle's tires e = (1, a), the rear's (1, -b); a
- * suspended front axle's tires e = (0, 0, 1) and its suspension (1, a, -1). The state matrix
- * is A = [[0, I], [-M^-1 K, -M^-1 C]]. */
+ * Generalised coordinates q = (z, theta[, z_a]), mass matrix M, and each spring-damper adds
+ * k*e*e^T to K and c*e*e^T to C, with e the change of its length per unit q: a rigid front
+ * axle's tires e = (1, a), the rear's (1, -b); a suspended front axle's tires e = (0, 0, 1)
+ * and its suspension (1, a, -1). The state matrix is A = [[0, I], [-M^-1 K, -M^-1 C]]. */
 int tirenv_ride__fastest_mode(const tirenv_vehicle *v, double *lambda_max, tirenv_diag *diag)
 {
     const int suspended = v->front.k_s > 0;

@@ -371,7 +371,8 @@ enum { N_OUTSIDE = sizeof outside / sizeof outside[0] };
 
 /* The reference curves: the model that simulated the data set (the ring for measured data)
  * on the virtual rig, imported like the data set's; where the data set is that model's own
- * curves (raw: a sweep without --rig), its own curves too; each obstacle with its own instance of it, so that its curve depends on it alone. */
+ * curves (raw: a sweep without --rig), its own curves too; each obstacle with its own
+ * instance of it, so that its curve depends on it alone. */
 typedef struct {
     const tirenv_tire *tire;
     const tirenv_model_type *reference;
@@ -423,6 +424,13 @@ static int outside_case(void *ctx, size_t i, size_t worker, tirenv_diag *diag)
     }
     tirenv_model_free(ref);
     return status;
+}
+
+/* Whether the outside cases' reference curves are the model's own (outside_pass's raw): a
+ * data set of a model's own curves says so by simulated_raw. */
+static int outside_raw(const tirenv_study_settings *s)
+{
+    return s->simulated_by && s->simulated_raw;
 }
 
 static int outside_dataset(const tirenv_tire *tire, const tirenv_model_type *reference, int raw,
@@ -541,14 +549,12 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
     const char *ref_name =
         tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring);
-    if (s->simulated_by && s->simulated_raw)
-        fprintf(fp, "## Outside the training range\n\n"
-                    "Obstacles no training case resembles, with reference curves that are the "
-                    "%s model's own, as the data set's (no rig, SIMULATED): ", ref_name);
-    else
-        fprintf(fp, "## Outside the training range\n\n"
-                    "Obstacles no training case resembles, with reference curves from the "
-                    "same virtual rig (%s model, SIMULATED): ", ref_name);
+    fprintf(fp, "## Outside the training range\n\n"
+                "Obstacles no training case resembles, with reference curves ");
+    fprintf(fp, outside_raw(s) ? "that are the %s model's own, as the data set's (no rig, "
+                                 "SIMULATED): "
+                               : "from the same virtual rig (%s model, SIMULATED): ",
+            ref_name);
     for (size_t i = 0; i < outside_ds->n; ++i) {
         const tirenv_case *c = &outside_ds->cases[i];
         fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
@@ -672,7 +678,7 @@ static int part_outside(study_parts *p, tirenv_diag *diag)
 {
     const tirenv_study_settings *s = p->s;
     char sub[1024];
-    const int raw = s->simulated_by && s->simulated_raw;
+    const int raw = outside_raw(s);
     int status = outside_dataset(&s->tire, p->reference, raw, p->grid, s->jobs ? s->jobs : 1,
                                  p->out_ds, p->profiles, diag);
     snprintf(sub, sizeof sub, "%s/outside", s->out_dir);

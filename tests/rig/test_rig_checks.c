@@ -204,9 +204,10 @@ static void test_sparse_at_cap(void **state)
 
 /* The model's own curve (tirenv_rig_model_curve): on the import's grid, each x the x_N
  * origin's map of its x_N, h the model's equilibrium there (to the solver's eps_z of 1e-10 m,
- * with room: evaluated again backwards, Newton starts elsewhere), and what the import of a rig log of
- * the same model approaches: the imported curve within 0.5 mm RMS (issue 23's bound for the
- * import; measured 0.065 mm). Refused: a grid of no point, a corner out of reach. */
+ * with room: evaluated again backwards, Newton starts elsewhere; measured 1.1e-16 m, the
+ * springs model's own root landing on the same height), and what the import of a rig log
+ * of the same model approaches: the imported curve within 0.5 mm RMS (issue 23's bound for
+ * the import; measured 0.065 mm). Refused: a grid of no point, a corner out of reach. */
 static void test_model_curve(void **state)
 {
     rig_case *c = *state;
@@ -214,7 +215,7 @@ static void test_model_curve(void **state)
     tirenv_curve own = {0}, imported = {0};
     assert_int_equal(tirenv_rig_model_curve(c->m, &c->imp, &own, &diag), 0);
     assert_int_equal(own.n, tirenv_import_grid_points(&c->imp));
-    const double x_0 = tirenv_xN_origin(c->imp.R0, 0.28, 0.10, 0.10);
+    const double x_0 = tirenv_xN_origin(c->imp.R0, c->imp.contact_length, c->imp.L, c->imp.H);
     double peak = 0;
     for (size_t k = 0; k < own.n; ++k) {
         assert_bits_equal(own.x_N[k], c->imp.xN_from + (double)k * c->imp.dxN);
