@@ -4,7 +4,7 @@
  * F_z never increases with z and is 0 above first contact, so with f = F - G the bracket
  * [lo, hi] keeps f(lo) >= 0 > f(hi). Newton's step is taken when it stays inside and
  * converges: the model's own where it gives one (has_root: the springs model's root on its
- * QP's working set, docs/models.md section 4.8; the ring's parabola, section 5.6), else
+ * QP's working set, docs/models.md section 4.8; the ring's parabola, section 5.3), else
  * -f / dF/dz, with the solve's latest slope at an iterate near the root whose own the model
  * left out (take); otherwise the step falls back to bisection, as in Numerical Recipes'
  * rtsafe. Converged when the residual and

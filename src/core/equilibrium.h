@@ -32,8 +32,9 @@ typedef struct {
     size_t contacts;       /* elements (or nodes) touching the ground */
     /* The model's own step, where it knows F_z better than its slope does (the springs
      * model's continuous contact: F_z = G on the working set of the evaluation's QP, solved
-     * with it, docs/models.md section 4.8, Cost; the ring's parabola through its slope and
-     * the curvature measured at the positions before, section 5.6): Newton steps to z_root
+     * with it, docs/models.md section 4.8, Newton's step on the working set; the ring's
+     * parabola through its slope and the curvature measured at the positions before,
+     * section 5.3): Newton steps to z_root
      * instead of its linear step. has_root 0 (as every evaluation starts): none. */
     int has_root;
     double z_root;         /* m */
@@ -56,8 +57,8 @@ typedef struct {
      * if it cannot. */
     int (*slope)(void *ctx, double *dF_dz);
     /* A first iterate the model proposes instead of z0 (the springs model's root at this x
-     * on the last position's QP working set, docs/models.md section 4.8, Cost), for Newton
-     * (eq_newton.c; the other methods ignore it): returns 1 with *z (m), which Newton takes
+     * on the last position's QP working set, docs/models.md section 4.8, A start at a new x), for
+     * Newton (eq_newton.c; the other methods ignore it): returns 1 with *z (m), which Newton takes
      * if it lies inside (z_lo, z_hi), or 0 (z0 is taken). The model's evaluation there
      * decides as any evaluation: the solver's own test accepts it or goes on from it. NULL:
      * none. */

@@ -1015,7 +1015,7 @@ typedef struct {
  * range checked (within_range). Every ring of these files, the Winkler ring's scaling and
  * tables included (flat given to ring_on_law), is evaluated on ring workspaces at heights,
  * never through the ring model, whose valid-range scan on each new model cost more than the
- * rest (docs/models.md 14.2, Cost). The search's ring is kept where its largest difference
+ * rest (docs/performance.md 5.3). The search's ring is kept where its largest difference
  * from the cam is below the Winkler ring's, else the Winkler ring (the note says which, and
  * both differences); derive_on_laws then identifies the springs model on the ring kept, with
  * a sidewall in series where it is the search's (derive_springs_sidewall). */
@@ -1189,7 +1189,7 @@ static void cam_part(tirenv_tire *t, const mf_keys *k, const flat_set *ring_or_n
  * ring's states (*have_ring set) and the deflection at FNOMIN and Q_FZ2 they were made on.
  * A derived ring is evaluated on ring workspaces at heights (ring_on_law given the flat
  * ground), never through the ring model, whose valid-range scan on each new model was most
- * of a read (docs/models.md 14.2, Cost), and the ring kept is checked within its range down
+ * of a read (docs/performance.md 5.3), and the ring kept is checked within its range down
  * to its largest deflection (within_range). */
 static int derive_models(tirenv_tire *t, const mf_keys *k, unsigned lack, const vertical_law *v,
                          const tirenv_profile *flat, trial *tr, int *have_ring,

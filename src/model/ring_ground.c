@@ -313,7 +313,7 @@ static int same_pieces(const tirenv_ring *r, double x, size_t ja, size_t jb, con
     return 1;
 }
 
-/* The window's far stretches (docs/models.md 5.3, Counted a ninth time). Of the window's node
+/* The window's far stretches (docs/models.md 5.3, What the solve reuses). Of the window's node
  * intervals, those more than SKIP_NEAR nodes beyond the last solve's sub-window and SKIP_EDGE
  * inside the sampled range's ends, whose ground lies, by a bound, below the last evaluation's
  * tread surface by SKIP_MARGIN, are not sampled: their points are free at the answer as the

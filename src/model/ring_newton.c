@@ -22,7 +22,7 @@ enum { NEWTON_BACKTRACK = 20, NEWTON_POLISH = 8 };
  * many states changed (a start far from the answer, a rough road's many vertices) full steps
  * overshoot and take more steps than the line search does; and they can cycle between two sets
  * of states, which the line search after NEWTON_FULL steps breaks. Measured with callgrind
- * (docs/models.md 5.6, Counted a sixth time): over the bench cleat's sweep 7.2 % fewer
+ * (docs/performance.md 2.12): over the bench cleat's sweep 7.2 % fewer
  * instructions, over 3 m of a class C road 19 % (vertices 10 mm apart) and 23 % (1 mm) fewer;
  * full steps whatever the changes took 6 % and 20 % more there. The answer is the system of its
  * final states solved, as before: the same bits. Not with a smooth part (the softening

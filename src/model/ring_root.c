@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* The ring's own step in z for Newton's equilibrium (docs/models.md section 5.6, Counted a
- * ninth time): the shear-coupled tread's F_z is nearly a parabola in z over the few
- * micrometres Newton's first step crosses, and the linear step lands where the parabola's
- * curvature leaves F_z some 1e-4 N off, outside the test's eps_z, so a third evaluation
- * followed at a third of the positions.
+/* The ring's own step in z for Newton's equilibrium (docs/models.md section 5.3, What
+ * the solve reuses; its counts, docs/performance.md 2.19): the shear-coupled tread's F_z is nearly
+ * a parabola in z over the few micrometres Newton's first step crosses, and the linear step lands
+ * where the parabola's curvature leaves F_z some 1e-4 N off, outside the test's eps_z, so a third
+ * evaluation followed at a third of the positions.
  *
  * Held at the states of an evaluation, the contact's system is linear in z wherever no cut
  * moves (its matrix fixed, the points' penetrations linear along their rays), so F_z is linear

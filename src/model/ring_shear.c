@@ -54,8 +54,8 @@ enum { BAND_P = 4, TAIL = 4, NB = 6, SPAN = 4 };
  * and D diagonal on the band's rows: L[5 i] = 1 / D[i], L[5 i + k] = U[i + k][i], B[TAIL i +
  * a] = U[N - t + a][i]; T then the Cholesky factor of the tail's Schur complement. Without
  * square roots, the chain from one pivot to the next is a division, two products and a
- * difference, and a solve's from one row to the next a product and a difference (docs/models.md
- * 5.6, Counted a seventh time). */
+ * difference, and a solve's from one row to the next a product and a difference
+ * (docs/performance.md 2.15). */
 typedef struct {
     size_t N, t;
     double *L;
@@ -465,8 +465,8 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
  * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
  * the one before it (after it, going back), so a solve's time is that chain's: a row takes
  * the farther rows' products first, and U's unit diagonal leaves a product and a difference
- * from row to row, where a chain of four differences and a division was (docs/models.md 5.6,
- * Counted a seventh time). Inlined with t a
+ * from row to row, where a chain of four differences and a division was (docs/performance.md
+ * 2.15). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
  * full tail two lanes at a time; the same operations in the same order for every t. Without a
  * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows

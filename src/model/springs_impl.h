@@ -400,7 +400,7 @@ typedef struct {
  * it ran at for an x: that its row between the elements of sector i was dropped (at or below
  * the chord of the rays' penetrations times the tread's bow), with what it takes to prove
  * that again at another height of the same x without computing the row (docs/models.md
- * section 4.8, Cost). */
+ * section 4.8, The later heights at one x). */
 typedef struct {
     double margin;  /* the chord times the bow less h at z_r, m (its allowance is taken off
                      * where it is checked) */
@@ -620,12 +620,12 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
                                    size_t b, const double d[]);
 
 /* The state at centre height z of the last QP solve's working set, had by its tangent from
- * the solve's height (springs_update.c, docs/models.md section 4.8, Cost): w = w_0 + (z -
- * z_0) dw/dz on the free elements (dw from the solve's tirenv_springs__cc_slope; the tangent
- * only at the base's x, which the caller checks, and never from the closed form's pins; at
- * (c->pred_x, c->pred_z), while c->pred_ok, the state tirenv_springs__cc_root or _root_at
- * solved for, on the working set as the start left it), w_e = h on
- * the held ones, the rows between elements' reactions likewise, the held ones' from K w =
+ * the solve's height (springs_update.c, docs/models.md section 4.8, The confirming
+ * evaluation): w = w_0 + (z - z_0) dw/dz on the free elements (dw from the solve's
+ * tirenv_springs__cc_slope; the tangent only at the base's x, which the caller checks, and never
+ * from the closed form's pins; at (c->pred_x, c->pred_z), while c->pred_ok, the state
+ * tirenv_springs__cc_root or _root_at solved for, on the working set as the start left it), w_e = h
+ * on the held ones, the rows between elements' reactions likewise, the held ones' from K w =
  * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
  * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
  * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
@@ -646,7 +646,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
  * (c->pred_ok). Returns 1, or 0 where the working set does not allow it (a held element on a
  * vertex, a row leaving its sector, a negative reaction) or the base is not usable. dw is
  * the base's dw/dz over [f0, f1] (tirenv_springs__cc_slope's). docs/models.md section 4.8,
- * Cost. */
+ * Newton's step on the working set. */
 int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                             const tirenv_profile *p, double x, double G, double F0, double dF0,
                             double S_l, double S_r, const double dw[], double *z_root);
@@ -658,7 +658,8 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
  * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root)
  * (c->pred_ok). The update there (which checks every row at x) decides whether it is the QP's
  * solution.
- * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, Cost. */
+ * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, A start at a
+ * new x. */
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,
                                const double rho[], const double drho[], double G,

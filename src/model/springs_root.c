@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Where the springs model's hub force meets the load on the working set of the last QP solve
- * (docs/models.md section 4.8, Cost): Newton's step solved together with the QP's equalities,
+ * (docs/models.md section 4.8, Newton's step on the working set): Newton's step solved
+ * together with the QP's equalities,
  * so that the next evaluation, at that height, is the update's check of the working set there
  * (springs_update.c) instead of a full evaluation and a third one to confirm it.
  *

@@ -192,8 +192,8 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
  * has (GCC's target_clones through an ELF ifunc, as the network's evaluation,
  * src/nn/nn_impl.h): with SSE2 alone the guessed sectors cost more time than the walk they
  * replace, with AVX-512 (real gathers, masks, three-operand instructions) much less
- * (docs/models.md section 4.8, Cost). The same bits from every clone: the same IEEE
- * operations, no contraction in ISO C mode. Not under ThreadSanitizer, whose runtime the
+ * (docs/models.md section 4.8, The first scan at an x). The same bits from every clone: the same
+ * IEEE operations, no contraction in ISO C mode. Not under ThreadSanitizer, whose runtime the
  * ifunc resolver would run before. CMakeLists.txt compiles this file without errno, so that
  * the square root vectorises. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
@@ -646,8 +646,9 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_
  * The first scan at an x (height z_r) proves, for each vertex whose row it drops between
  * two elements (below the chord of the rays' penetrations times the tread's bow, the test
  * below), that the test drops it at every height z the later evaluations at that x take
- * while these bounds hold (docs/models.md section 4.8, Cost): with Delta = z - z_r and
- * |Delta| <= seen_reach dz_r, h = R0 - rho is concave in z (rho = sqrt(dx^2 + dz^2) is
+ * while these bounds hold (docs/models.md section 4.8, The later heights at one x): with
+ * Delta = z - z_r and |Delta| <= seen_reach dz_r, h = R0 - rho is concave in z (rho =
+ * sqrt(dx^2 + dz^2) is
  * convex) with dh/dz = -dz / rho in [-1, -dz / R0], so h <= h_r - Delta dz_r / R0 if
  * Delta > 0 and h <= h_r - Delta if not; the vertex's angle psi = atan2(dx, dz) moves by at
  * most |Delta| |dx| / rho_min^2 (rho_min >= (1 - seen_reach) rho_r), and within a sector

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* The state of the springs model's continuous contact at a new centre height from the last
  * QP solve at the same x, by the tangent of its working set, accepted only where the QP's
- * KKT conditions hold there (docs/models.md section 4.8, Cost): Newton's confirming
- * evaluation, a hair from the one before, without building the rows or solving again. */
+ * KKT conditions hold there (docs/models.md section 4.8, The confirming evaluation):
+ * Newton's confirming evaluation, a hair from the one before, without building the rows or solving
+ * again. */
 #include "model/springs_impl.h"
 
 #include <math.h>
@@ -18,7 +19,7 @@
  * or two (below). Newton's second evaluation, 1e-5 to 1e-4 m from the first, starts instead
  * from the state tirenv_springs__cc_root solved for at that height (springs_root.c), exact
  * but for round-off where the working set holds; from the tangent it would need more
- * corrections (tried: it cost more than it spared, docs/models.md section 4.8, Cost). */
+ * corrections (tried: it cost more than it spared, docs/performance.md 1.4). */
 static const double upd_dz_max = 1e-6;
 
 /* Corrections of the tangent's residual before the update is given up: each divides it by

@@ -60,7 +60,7 @@ static void cleat_curve(const tirenv_tire *t, double out[4][3])
 
 /* Without CARCASS_SOFTENING_DEFLECTION (0) the ring is the code's before the law (to the
  * round-off the banded solver's order of operations has moved since: h and z within 1e-9 m,
- * F_x within 1e-3 N, docs/models.md 5.6, Counted a seventh time; measured at 1c94bdc: h and z
+ * F_x within 1e-3 N, docs/performance.md 2.15; measured at 1c94bdc: h and z
  * within 1.8e-12 m, F_x within 6.5e-8 N of the values recorded), a CARCASS_LINEAR_DEFLECTION
  * alone changing nothing, bit for bit; with a law whose w_0 (0.4 m) no node reaches, the
  * widened window and the nonlinear driver find the same minimum to the equilibrium's

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* The ring's own step in z (src/model/ring_root.c, docs/models.md 5.6, Counted a ninth time):
+/* The ring's own step in z (src/model/ring_root.c, docs/models.md 5.3, What the solve reuses):
  * the curvature it measures and the parabola's root it steps to, on parabolas with known
  * roots, its guards, and the model's equilibria with it against Brent's (which takes no model
  * step) over seeded cleats, steps, blades and a class C road; and the warm start that keeps
@@ -193,7 +193,7 @@ static void test_fewer_evaluations(void **state)
 /* The equilibria with the ring's step (Newton, the default) against Brent's, which takes no
  * model step and brackets the root to eps_z, over seeded cleats, steps and 5 mm blades and
  * a class C road at 1 mm steps: h within 1e-9 m and F_x within 1e-3 N (the comparison rules
- * of docs/models.md 5.6). */
+ * of docs/performance.md 2.19). */
 static void test_equilibria_as_brent(void **state)
 {
     (void)state;

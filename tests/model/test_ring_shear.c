@@ -795,7 +795,7 @@ static void test_solve_residual(void **state)
 
 /* The ring's answers against main's build before the banded factor became U D U^T (commit
  * 9f1bb9d, its h as OpenCRG doubles, printed with %a), which moved them by round-off only
- * (docs/models.md 5.6, Counted a seventh time): h within 1e-9 m over a 0.173 x 0.061 m cleat at
+ * (docs/performance.md 2.15): h within 1e-9 m over a 0.173 x 0.061 m cleat at
  * 18,750.3 N, a 0.2113 x 0.0517 m triangle at 24,113.7 N, a 43.7 mm step up at 13,902.1 N and
  * 3 m of a class C road (seed 7, vertices 10 mm apart, as 'tirenv road' writes them: 9
  * digits) at 21,000 N, the positions of each swept in order as 'tirenv envelope' does. */

@@ -480,7 +480,7 @@ static void test_warm_start_invisible(void **state)
 }
 
 /* A ray's d(rho)/dz kept with the face its walk ended on and taken again at the next x
- * (springs.c, ray_drho; docs/models.md section 4.8, Cost) is the one computed afresh: two
+ * (springs.c, ray_drho; docs/models.md section 4.8, Faces kept) is the one computed afresh: two
  * models evaluated at the same states, one of which forgets its faces before each, give the
  * same bits (F_z, F_x, dF_z/dz, the contacts). Sweeps every 1 mm over seeded random obstacles
  * and a road, each interrupted by a few positions on another profile (the faces kept belong
@@ -613,9 +613,9 @@ static void test_kept_factor_invisible(void **state)
 }
 
 /* Newton's confirming evaluation by the last solve's tangent (tirenv_springs__cc_update,
- * docs/models.md section 4.8, Cost): a state it accepts at z0 + dz is the QP's solution there,
- * the one a fresh workspace finds by building the rows and solving (the QP is strictly
- * convex: its KKT point is unique, so a wrong acceptance would show as a different w).
+ * docs/models.md section 4.8, The confirming evaluation): a state it accepts at z0 + dz is the QP's
+ * solution there, the one a fresh workspace finds by building the rows and solving (the QP is
+ * strictly convex: its KKT point is unique, so a wrong acceptance would show as a different w).
  * Seeded random obstacles and roads, dz from 1e-10 to 1e-6 m either way; w within 1e-13 R0
  * (a few hundred units of round-off of w: the update's KKT residuals are held to 1e-14 R0)
  * and each element's reaction within 1e-9 of the largest (round-off of sums over tens of
@@ -756,10 +756,10 @@ static double same_as_fresh(const tirenv_tire *t, tirenv_springs *hot, const tir
 }
 
 /* Newton's step on the last QP solve's working set (tirenv_springs__root, springs_root.c;
- * docs/models.md section 4.8, Cost): after a full evaluation at z0, a load G = F0 + dF0 dz, dz from
- * 1e-6 to 1e-3 m either way. The workspace's own evaluation at the height the root gives (the
- * update from the root's state where its checks hold, else a full one) gives a fresh model's forces
- * (to 1e-9 of F_z, sums over some 360 elements) and tips (1e-13 R0, as
+ * docs/models.md section 4.8, Newton's step on the working set): after a full evaluation at z0, a
+ * load G = F0 + dF0 dz, dz from 1e-6 to 1e-3 m either way. The workspace's own evaluation at the
+ * height the root gives (the update from the root's state where its checks hold, else a full one)
+ * gives a fresh model's forces (to 1e-9 of F_z, sums over some 360 elements) and tips (1e-13 R0, as
  * test_update_is_the_solution); where it was the update (the working set held), a fresh model's F_z
  * there is G to within 1e-6 N (against some 3e4 N: the root is taken to 1e-15 R0 in z, and F_z's
  * round-off is some 1e-9 N; the equilibrium's force tolerance, 1e-4 N by default, is a hundred

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* The springs model's ground scan with its shortcuts against the plain scan it replaces
- * (docs/models.md section 4.8, Cost): equal bit for bit on seeded random finely sampled roads,
- * the centre exactly over a vertex or anywhere, at the heights an equilibrium visits at one x.
+ * (docs/models.md section 4.8, The later heights at one x): equal bit for bit on seeded random
+ * finely sampled roads, the centre exactly over a vertex or anywhere, at the heights an equilibrium
+ * visits at one x.
  *
  * Exact equality is the contract, not a tolerance. The vertex rows: a workspace that keeps the
  * first scan's proofs at an x (a vertex dropped there is skipped at a later height where a

@@ -272,7 +272,7 @@ static void test_fan_matches_single_rays(void **state)
  * a hair from the last, where they nearly always recur, as after a Newton step). With rays bit
  * for bit. With continuous contact to round-off: after a state whose solution had a row between
  * elements working the QP is solved without trying the closed form first (docs/models.md
- * section 4.8, Cost), and the two solve the same problem by different arithmetic; 1e-9 of the
+ * section 4.8, The solver), and the two solve the same problem by different arithmetic; 1e-9 of the
  * force (7 uN of 7 kN, against 1e-3 N for 1e-9 m of the tire's stiffness) bounds round-off of
  * solves over tens of elements by orders of magnitude. A height a hair from the last QP
  * solve's at the same x is had by that solve's tangent (tirenv_springs__cc_update), its F_z
