@@ -211,7 +211,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                 pq[e] = r;
             } else { /* no side effects: & where && would branch */
                 ok &= fabs(r) <= tol_k;
-                above &= !(ph[e] > 0 && wn[e] - ph[e] < -tol);
+                above &= !((ph[e] > 0) & (wn[e] - ph[e] < -tol));
                 pq[e] = 0;
             }
         }
