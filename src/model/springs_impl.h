@@ -118,6 +118,7 @@ typedef struct {
     size_t i0;
     double rho_max;  /* m */
     const double *sin_t, *cos_t, *inv_s, *drop, *reach;
+    int ordered;     /* tirenv_springs__fan_rays_ordered: 0 (unknown) checks every ray */
 } tirenv_springs__fan_rays;
 
 /* With s = |sin_t|: inv_s = 1 / s (a ray's length per metre of walk along the ground: a
@@ -126,6 +127,11 @@ typedef struct {
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
                                    double rho_max, double inv_s[], double drop[],
                                    double reach[]);
+
+/* Whether the n rays of r have, outward from i0 on each side, drops that never grow and
+ * reaches that never shrink (as computed): what a fan's resumption asks of each ray, then
+ * known once for the tire. */
+int tirenv_springs__fan_rays_ordered(const tirenv_springs__fan_rays *r, size_t n);
 
 /* Casts the rays a..b (a <= i0 <= b) from (o->x, z): rho[i] as tirenv_springs__ray_at gives
  * it, bit for bit. Each ray's walk resumes where the previous ray's stopped (a ray turned

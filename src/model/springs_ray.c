@@ -181,6 +181,24 @@ void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double 
     }
 }
 
+int tirenv_springs__fan_rays_ordered(const tirenv_springs__fan_rays *r, size_t n)
+{
+    const size_t i0 = r->i0;
+    if (!(i0 < n))
+        return 0;
+    for (int side = 0; side < 2; ++side) { /* the first ray's are INFINITY and 0 */
+        double drop_prev = INFINITY, reach_prev = 0;
+        for (size_t step = 1, count = side ? n - 1 - i0 : i0; step <= count; ++step) {
+            const size_t i = side ? i0 + step : i0 - step;
+            if (!(r->drop[i] <= drop_prev && r->reach[i] >= reach_prev))
+                return 0;
+            drop_prev = r->drop[i];
+            reach_prev = r->reach[i];
+        }
+    }
+    return 1;
+}
+
 /* fmax for finite heights, inlined (GCC calls libm's for its NaN rules: 2 % of the springs
  * model over a road). */
 static inline double higher(double a, double b) { return b > a ? b : a; }
@@ -345,7 +363,8 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
  * that ray's drop and reach being drop_prev and reach_prev. With reuse, a ray after the
  * first walked whose memo holds at z is kept (tirenv_springs__fan_update). Returns the rays
  * walked. */
-static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+static inline __attribute__((always_inline)) size_t
+fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                               const tirenv_springs__fan_rays *r, double z, int side, size_t step,
                               size_t count, long j, double f_min, double drop_prev,
                               double reach_prev, int reuse, double rho[],
@@ -362,7 +381,7 @@ static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan
         /* The resumption is exact only if this ray lies above the last at every vertex
          * (its computed descent is no steeper) and reaches at least as far; the element
          * layout gives both, but the computed values decide. */
-        if (!(drop <= drop_prev && reach >= reach_prev)) {
+        if (!r->ordered && !(drop <= drop_prev && reach >= reach_prev)) {
             j = first_j;
             f_min = f0;
         }
