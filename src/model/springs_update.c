@@ -200,20 +200,25 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             l_max = fabs(lam[q]) > l_max ? fabs(lam[q]) : l_max;
             l_min = lam[q] < l_min ? lam[q] : l_min;
         }
-        above = 1;
-        n_c = 0;
-        for (size_t e = f0; e <= f1; ++e) {
-            const double r = res[e];
-            if (wpos[e] == SIZE_MAX) {
-                l_max = fabs(r) > l_max ? fabs(r) : l_max;
-                l_min = r < l_min ? r : l_min;
-                n_c += r > 0;
-                pq[e] = r;
-            } else { /* no side effects: & where && would branch */
-                ok &= fabs(r) <= tol_k;
-                above &= !((ph[e] > 0) & (wn[e] - ph[e] < -tol));
+        /* the free elements chain by chain (the base's factor's chains: wpos' free ones),
+         * each a loop without a branch; then the held ones from its list */
+        int off = 0, below = 0;
+        for (size_t q = 0, n_ch = c->n_chains; q < n_ch; ++q)
+            for (size_t e = c->chains[2 * q], e1 = c->chains[2 * q + 1]; e <= e1; ++e) {
+                off |= fabs(res[e]) > tol_k;
+                below |= (ph[e] > 0) & (wn[e] - ph[e] < -tol);
                 pq[e] = 0;
             }
+        ok &= !off;
+        above = !below;
+        n_c = 0;
+        for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
+            const size_t e = c->held[k];
+            const double r = res[e];
+            l_max = fabs(r) > l_max ? fabs(r) : l_max;
+            l_min = r < l_min ? r : l_min;
+            n_c += r > 0;
+            pq[e] = r;
         }
         if (ok)
             break;
