@@ -202,15 +202,17 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         }
         /* the free elements chain by chain (the base's factor's chains: wpos' free ones),
          * each a loop without a branch; then the held ones from its list */
-        int off = 0, below = 0;
-        for (size_t q = 0, n_ch = c->n_chains; q < n_ch; ++q)
-            for (size_t e = c->chains[2 * q], e1 = c->chains[2 * q + 1]; e <= e1; ++e) {
-                off |= fabs(res[e]) > tol_k;
-                below |= (ph[e] > 0) & (wn[e] - ph[e] < -tol);
-                pq[e] = 0;
+        long long off = 0, below = 0;
+        for (size_t q = 0, n_ch = c->n_chains; q < n_ch; ++q) {
+            const size_t e0 = c->chains[2 * q], e1 = c->chains[2 * q + 1];
+            for (size_t e = e0; e <= e1; ++e) {
+                off += fabs(res[e]) > tol_k;
+                below += (ph[e] > 0) & (wn[e] - ph[e] < -tol);
             }
-        ok &= !off;
-        above = !below;
+            memset(pq + e0, 0, (e1 - e0 + 1) * sizeof *pq);
+        }
+        ok &= off == 0;
+        above = below == 0;
         n_c = 0;
         for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
             const size_t e = c->held[k];
