@@ -461,6 +461,8 @@ typedef struct {
     double seen_x, seen_z;
     size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped, scan_missed;
     int scan_plain, scan_blind;
+    size_t scan_i;  /* the plain scan's sector of its first vertex within reach, where the
+                     * next one's walk starts (any sector gives the same rows) */
     double *seen_sec;
     size_t *seen_todo;
     unsigned char *in_w;   /* per row: in the working set */
