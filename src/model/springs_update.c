@@ -53,8 +53,8 @@ typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
 /* The free elements of one chain, len of them from res, ph and w: *off set where one's
  * residual exceeds tol_k in size, *below where one stands below its own row (ph > 0) by more
  * than tol. Two elements a step in GCC's vector extension: GCC 12 does not vectorise a
- * comparison of doubles counted into an integer (the counts of the commit before were not
- * vectorised), and the pass was a quarter of the update's instructions. */
+ * comparison of doubles counted into an integer, and the pass was a quarter of the update's
+ * instructions. */
 static void chain_check(const double *res, const double *ph, const double *w, size_t len,
                         double tol_k, double tol, int *off, int *below)
 {
