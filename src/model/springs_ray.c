@@ -358,6 +358,76 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
     return step;
 }
 
+/* Runs of rays that end alike, for a fresh fan with its resumption order known
+ * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
+ * same operands (the same bits), without the walk's setup. Each returns the first step it did
+ * not take, with *f_min the running minimum after the last ray it took. */
+
+/* After a walk that passed the profile's last vertex (j = -1 or n): every ray further out
+ * passes it too (it lies higher at every vertex), and ends on the flat ground past the end. */
+static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                             const tirenv_springs__fan_rays *r, double z, int side,
+                             size_t step, size_t count, long j, double *f_min, double tol,
+                             double rho[], tirenv_springs__ray_memo memo[])
+{
+    const long n = (long)p->n, first_j = o->first[side];
+    const int dir = side ? 1 : -1;
+    const size_t i0 = r->i0;
+    const double rho_max = r->rho_max, zZ = z - p->z[dir > 0 ? n - 1 : 0];
+    const int from_centre = j == first_j; /* no vertex passed: the anchor before j */
+    const double a_prev = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
+    const double Z_prev = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
+    double fm = *f_min;
+    for (; step <= count; ++step) {
+        const size_t i = side ? i0 + step : i0 - step;
+        const double f_prev = from_centre ? f_side : z - a_prev * r->drop[i] - Z_prev;
+        fm = f_prev < fm ? f_prev : fm;
+        const double cos_t = r->cos_t[i];
+        double v = INFINITY;
+        if (!(cos_t <= 0)) {
+            const double q = zZ / cos_t;
+            v = q > rho_max ? INFINITY : q;
+        }
+        rho[i] = v;
+        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
+                                             .drho = NAN};
+    }
+    *f_min = fm;
+    return step;
+}
+
+/* After a walk that hit the segment [j - dir, j] (not a wall): the rays further out that
+ * are at or below the ground at j hit it too. */
+static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                             const tirenv_springs__fan_rays *r, double z, int side,
+                             size_t step, size_t count, long j, double *f_min, double tol,
+                             double rho[], tirenv_springs__ray_memo memo[])
+{
+    const long first_j = o->first[side];
+    const int dir = side ? 1 : -1;
+    const size_t i0 = r->i0;
+    const int from_centre = j == first_j;
+    const double a_j = dir * (p->x[j] - o->x), Z_j = p->z[j];
+    const double a_p = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
+    const double Z_p = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
+    double fm = *f_min;
+    for (; step <= count; ++step) {
+        const size_t i = side ? i0 + step : i0 - step;
+        const double drop = r->drop[i];
+        const double f = z - a_j * drop - Z_j;
+        if (!(f <= 0))
+            break;
+        const double f_prev = from_centre ? f_side : z - a_p * drop - Z_p;
+        fm = f_prev < fm ? f_prev : fm;
+        const double a_hit = a_p + f_prev * (a_j - a_p) / (f_prev - f);
+        rho[i] = a_hit > r->reach[i] ? INFINITY : a_hit * r->inv_s[i];
+        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
+                                             .drho = NAN};
+    }
+    *f_min = fm;
+    return step;
+}
+
 /* The rays step..count of one side (side 0: i0 - step, 1: i0 + step) as the fan walks them,
  * each resuming where its inner neighbour ended: at vertex j with the running minimum f_min,
  * that ray's drop and reach being drop_prev and reach_prev. With reuse, a ray after the
@@ -401,6 +471,20 @@ fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                                         .drho = NAN};
         j = j_end;
         ++cast;
+        if (!reuse && r->ordered && step < count) { /* the rays that end alike, in a run */
+            size_t next = step + 1;
+            if (kind == RAY_END)
+                next = end_run(p, o, r, z, side, next, count, j, &f_min, tol, rho, memo);
+            else if (kind == RAY_HIT)
+                next = hit_run(p, o, r, z, side, next, count, j, &f_min, tol, rho, memo);
+            cast += next - (step + 1);
+            if (next > step + 1) {
+                const size_t last = side ? i0 + next - 1 : i0 - (next - 1);
+                drop_prev = r->drop[last];
+                reach_prev = r->reach[last];
+            }
+            step = next - 1;
+        }
     }
     return cast;
 }
