@@ -358,6 +358,9 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
     return step;
 }
 
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
+
 /* Runs of rays that end alike, for a fresh fan with its resumption order known
  * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
  * same operands (the same bits), without the walk's setup. Each returns the first step it did
@@ -378,6 +381,24 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double a_prev = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
     const double Z_prev = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
     double fm = *f_min;
+    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step */
+        fm = f_side < fm ? f_side : fm;
+        const double z_low = z - (fm - tol);
+        const v2d zz = {zZ, zZ}, zero = {0, 0}, big = {rho_max, rho_max};
+        const v2d inf = {INFINITY, INFINITY};
+        for (; step + 1 <= count; step += 2) {
+            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
+            const v2d c = {r->cos_t[i], r->cos_t[k]}, q = zz / c;
+            /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
+            const v2l out = (c <= zero) | (q > big);
+            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)q & ~out));
+            rho[i] = v[0];
+            rho[k] = v[1];
+            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z_low,
+                                                 .drho = NAN};
+            memo[k] = memo[i];
+        }
+    }
     for (; step <= count; ++step) {
         const size_t i = side ? i0 + step : i0 - step;
         const double f_prev = from_centre ? f_side : z - a_prev * r->drop[i] - Z_prev;
