@@ -432,6 +432,30 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double a_p = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
     const double Z_p = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
     double fm = *f_min;
+    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step
+                        * while both rays meet the ground at j */
+        fm = f_side < fm ? f_side : fm;
+        const double z_low = z - (fm - tol);
+        const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
+        const v2d ap = {a_p, a_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
+        const v2d inf = {INFINITY, INFINITY};
+        for (; step + 1 <= count; step += 2) {
+            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
+            const v2d drop = {r->drop[i], r->drop[k]}, f = zv - av * drop - Zv;
+            const v2l in = f <= zero;
+            if (!(in[0] & in[1]))
+                break; /* the rest one by one */
+            const v2d a_hit = ap + fs * da / (fs - f);
+            const v2d reach = {r->reach[i], r->reach[k]}, inv_s = {r->inv_s[i], r->inv_s[k]};
+            const v2l out = a_hit > reach;
+            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)(a_hit * inv_s) & ~out));
+            rho[i] = v[0];
+            rho[k] = v[1];
+            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z_low,
+                                                 .drho = NAN};
+            memo[k] = memo[i];
+        }
+    }
     for (; step <= count; ++step) {
         const size_t i = side ? i0 + step : i0 - step;
         const double drop = r->drop[i];
