@@ -102,6 +102,8 @@ typedef struct {
     long first[2];  /* first vertex strictly ahead of x backward [0] and forward [1] */
     double tol;     /* rounding allowance of the reuse test (without the |z| part), m */
     double z_max[2];  /* bounds of the ground within rho_max behind [0] and ahead [1], m */
+    long n_reach;     /* about the vertices within rho_max of x: how finely the ground is
+                       * sampled there (the first beyond on either side, and blocks, count) */
     size_t k;       /* tirenv_profile__segment_at(p, x) */
 } tirenv_springs__fan_origin;
 
