@@ -120,7 +120,8 @@ typedef struct {
     size_t i0;
     double rho_max;  /* m */
     const double *sin_t, *cos_t, *inv_s, *drop, *reach;
-    int ordered;     /* tirenv_springs__fan_rays_ordered: 0 (unknown) checks every ray */
+    int ordered;     /* tirenv_springs__fan_rays_ordered: 1 lets a fresh fan take the rays
+                      * that end alike as runs; 0 (unknown) walks every ray */
 } tirenv_springs__fan_rays;
 
 /* With s = |sin_t|: inv_s = 1 / s (a ray's length per metre of walk along the ground: a

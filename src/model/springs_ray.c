@@ -482,14 +482,13 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
  * that ray's drop and reach being drop_prev and reach_prev. With reuse, a ray after the
  * first walked whose memo holds at z is kept (tirenv_springs__fan_update). Returns the rays
  * walked. */
-/* (forced inline: each side's walk compiled for its direction, here and in fresh_side's
- * caller alike, which GCC would otherwise not inline both into) */
+/* (Forced inline: each side's walk compiled for its direction in the fan and in its update
+ * alike; with fresh_side beside it GCC inlined neither side into the fan.) */
 static inline __attribute__((always_inline)) size_t
 fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                              const tirenv_springs__fan_rays *r, double z, int side, size_t step,
-                              size_t count, long j, double f_min, double drop_prev,
-                              double reach_prev, int reuse, double rho[],
-                              tirenv_springs__ray_memo memo[])
+         const tirenv_springs__fan_rays *r, double z, int side, size_t step, size_t count,
+         long j, double f_min, double drop_prev, double reach_prev, int reuse, double rho[],
+         tirenv_springs__ray_memo memo[])
 {
     const double f0 = z - o->g_side[side], rho_max = r->rho_max, tol = fan_tol(o, z);
     const size_t i0 = r->i0;
@@ -533,8 +532,8 @@ fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
  * in it the walks over a road sampled at 10 mm cost 20 % more). */
 static inline __attribute__((always_inline)) size_t
 fresh_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                                const tirenv_springs__fan_rays *r, double z, int side,
-                                size_t count, double rho[], tirenv_springs__ray_memo memo[])
+           const tirenv_springs__fan_rays *r, double z, int side, size_t count, double rho[],
+           tirenv_springs__ray_memo memo[])
 {
     const double f0 = z - o->g_side[side], rho_max = r->rho_max, tol = fan_tol(o, z);
     const size_t i0 = r->i0;
@@ -582,10 +581,9 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
     }
     rho[i0] = f0 <= rho_max ? f0 : INFINITY;
     memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
-    /* each side's walk compiled for its direction */
-    /* the runs where the ground within reach has few vertices for the rays (a cleat, a
-     * step): on a road sampled finely each ray ends on its own face, and the walks' loop
-     * without them is the faster */
+    /* each side's walk compiled for its direction; with the runs where the ground within
+     * reach has few vertices for the rays (a cleat, a step): on a road sampled finely each
+     * ray ends on a face of its own, and the walks' loop without them is the faster */
     if (r->ordered && 4 * o->n_reach < (long)(b - a + 1)) {
         fresh_side(p, o, r, z, 0, i0 - a, rho, memo);
         fresh_side(p, o, r, z, 1, b - i0, rho, memo);
