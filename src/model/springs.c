@@ -202,6 +202,7 @@ tirenv_springs *tirenv_springs_alloc(const tirenv_springs_params *par)
     s->rays = (tirenv_springs__fan_rays){.i0 = s->i0, .rho_max = par->R0, .sin_t = s->sin_t,
                                          .cos_t = s->cos_t, .inv_s = s->ray_inv_s,
                                          .drop = s->ray_drop, .reach = s->ray_reach};
+    s->rays.ordered = tirenv_springs__fan_rays_ordered(&s->rays, N);
     s->cc_tire = (tirenv_springs__cc_tire){.N = N, .i0 = s->i0, .R0 = par->R0, .k_r = s->k_r,
                                            .k_ir = s->k_ir, .sin_t = s->sin_t,
                                            .cos_t = s->cos_t, .diag = s->diag, .lq = s->lq,

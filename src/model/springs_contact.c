@@ -150,29 +150,35 @@ static int kkt_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, i
     size_t hq = 0;
     while (hq < n_hull && hull_sec[hq] < f0)
         ++hq;
-    for (size_t e = f0; e <= f1; ++e) {
-        const size_t pr = pin_row[e]; /* held by its own row in the working set: w_e = h */
-        const int held = pr != SIZE_MAX && in_w[pr];
-        same = same && held == (wpos[e] == SIZE_MAX);
-        if (held) {
-            wpos[e] = SIZE_MAX;
-            wq[e] = pin_h[e];
-            held_e[n_held++] = e;
-        } else {
-            wpos[e] = n;
-            order[n++] = e;
-            wq[e] = 0;
+    /* the elements up to the next sector with rows (hull_sec[hq] = s: its working rows
+     * after element s + 1, the last they couple), then those rows, and on */
+    for (size_t e = f0;;) {
+        const int sec = hq < n_hull && hull_sec[hq] + 1 <= f1;
+        const size_t stop = sec ? hull_sec[hq] + 1 : f1;
+        for (; e <= stop; ++e) {
+            const size_t pr = pin_row[e]; /* held by its own row in the working set */
+            const int held = pr != SIZE_MAX && in_w[pr];
+            same &= held == (wpos[e] == SIZE_MAX);
+            if (held) {
+                wpos[e] = SIZE_MAX;
+                wq[e] = pin_h[e];
+                held_e[n_held++] = e;
+            } else {
+                wpos[e] = n;
+                order[n++] = e;
+                wq[e] = 0;
+            }
         }
-        if (e > f0 && hq < n_hull && hull_sec[hq] == e - 1) {
-            ++hq;
-            for (size_t r = c->sec_first[e - 1], k = 0; k < c->sec_count[e - 1]; ++k, ++r)
-                if (in_w[r]) {
-                    if (n_schur < TIRENV_SPRINGS__SCHUR_MAX)
-                        c->schur_pos[n_schur] = n;
-                    ++n_schur;
-                    order[n++] = N + r;
-                }
-        }
+        if (!sec)
+            break;
+        const size_t s = hull_sec[hq++];
+        for (size_t r = c->sec_first[s], k = 0; k < c->sec_count[s]; ++k, ++r)
+            if (in_w[r]) {
+                if (n_schur < TIRENV_SPRINGS__SCHUR_MAX)
+                    c->schur_pos[n_schur] = n;
+                ++n_schur;
+                order[n++] = N + r;
+            }
     }
     c->n_kkt = n;
     c->n_held = n_held;

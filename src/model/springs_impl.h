@@ -102,6 +102,8 @@ typedef struct {
     long first[2];  /* first vertex strictly ahead of x backward [0] and forward [1] */
     double tol;     /* rounding allowance of the reuse test (without the |z| part), m */
     double z_max[2];  /* bounds of the ground within rho_max behind [0] and ahead [1], m */
+    long n_reach;     /* about the vertices within rho_max of x: how finely the ground is
+                       * sampled there (the first beyond on either side, and blocks, count) */
     size_t k;       /* tirenv_profile__segment_at(p, x) */
 } tirenv_springs__fan_origin;
 
@@ -118,6 +120,8 @@ typedef struct {
     size_t i0;
     double rho_max;  /* m */
     const double *sin_t, *cos_t, *inv_s, *drop, *reach;
+    int ordered;     /* tirenv_springs__fan_rays_ordered: 1 lets a fresh fan take the rays
+                      * that end alike as runs; 0 (unknown) walks every ray */
 } tirenv_springs__fan_rays;
 
 /* With s = |sin_t|: inv_s = 1 / s (a ray's length per metre of walk along the ground: a
@@ -126,6 +130,11 @@ typedef struct {
 void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double cos_t[],
                                    double rho_max, double inv_s[], double drop[],
                                    double reach[]);
+
+/* Whether the n rays of r have, outward from i0 on each side, drops that never grow and
+ * reaches that never shrink (as computed): what a fan's resumption asks of each ray, then
+ * known once for the tire. */
+int tirenv_springs__fan_rays_ordered(const tirenv_springs__fan_rays *r, size_t n);
 
 /* Casts the rays a..b (a <= i0 <= b) from (o->x, z): rho[i] as tirenv_springs__ray_at gives
  * it, bit for bit. Each ray's walk resumes where the previous ray's stopped (a ray turned
@@ -455,6 +464,8 @@ typedef struct {
     double seen_x, seen_z;
     size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped, scan_missed;
     int scan_plain, scan_blind;
+    size_t scan_i;  /* the plain scan's sector of its first vertex within reach, where the
+                     * next one's walk starts (any sector gives the same rows) */
     double *seen_sec;
     size_t *seen_todo;
     unsigned char *in_w;   /* per row: in the working set */

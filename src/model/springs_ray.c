@@ -181,6 +181,24 @@ void tirenv_springs__fan_rays_fill(size_t n, const double sin_t[], const double 
     }
 }
 
+int tirenv_springs__fan_rays_ordered(const tirenv_springs__fan_rays *r, size_t n)
+{
+    const size_t i0 = r->i0;
+    if (!(i0 < n))
+        return 0;
+    for (int side = 0; side < 2; ++side) { /* the first ray's are INFINITY and 0 */
+        double drop_prev = INFINITY, reach_prev = 0;
+        for (size_t step = 1, count = side ? n - 1 - i0 : i0; step <= count; ++step) {
+            const size_t i = side ? i0 + step : i0 - step;
+            if (!(r->drop[i] <= drop_prev && r->reach[i] >= reach_prev))
+                return 0;
+            drop_prev = r->drop[i];
+            reach_prev = r->reach[i];
+        }
+    }
+    return 1;
+}
+
 /* fmax for finite heights, inlined (GCC calls libm's for its NaN rules: 2 % of the springs
  * model over a road). */
 static inline double higher(double a, double b) { return b > a ? b : a; }
@@ -188,7 +206,8 @@ static inline double higher(double a, double b) { return b > a ? b : a; }
 /* An upper bound of the ground over [x, x + dir len]: g, every vertex inside, and the first
  * vertex beyond (which bounds the segment that crosses the end), whole blocks at a time from
  * the block maxima where a block lies inside. */
-static double side_max(const tirenv_profile *p, double x, double g, long j, int dir, double len)
+static double side_max(const tirenv_profile *p, double x, double g, long j, int dir, double len,
+                       long *j_end)
 {
     const double *X = p->x, *Z = p->z, *Zb = p->z_block;
     const long n = (long)p->n, B = TIRENV_PROFILE__BLOCK;
@@ -220,6 +239,7 @@ static double side_max(const tirenv_profile *p, double x, double g, long j, int 
             --j;
         }
     }
+    *j_end = j;
     return m;
 }
 
@@ -234,8 +254,10 @@ void tirenv_springs__fan_origin_at(const tirenv_profile *p, double x, double rho
     o->first[1] = first_vertex(p, x, k, 1);
     o->g_side[0] = side_height(p, x, k, o->first[0], o->g, -1);
     o->g_side[1] = side_height(p, x, k, o->first[0], o->g, 1);
-    o->z_max[0] = side_max(p, x, o->g, o->first[0], -1, rho_max);
-    o->z_max[1] = side_max(p, x, o->g, o->first[1], 1, rho_max);
+    long end[2];
+    o->z_max[0] = side_max(p, x, o->g, o->first[0], -1, rho_max, &end[0]);
+    o->z_max[1] = side_max(p, x, o->g, o->first[1], 1, rho_max, &end[1]);
+    o->n_reach = end[1] - end[0];
     /* The reuse test compares computed f = (z - a drop) - Z at two heights; each rounding is
      * at most an ulp of |z| + a drop + |Z| <= |z| + rho_max + max |Z| for every point a walk
      * passes (a <= reach), and the centre can sink at most by f0 <= |z| + |g|: see
@@ -340,16 +362,133 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
     return step;
 }
 
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
+
+/* Runs of rays that end alike, for a fresh fan with its resumption order known
+ * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
+ * same operands (the same bits), without the walk's setup. Each returns the first step it did
+ * not take, with *f_min the running minimum after the last ray it took. */
+
+/* After a walk that passed the profile's last vertex (j = -1 or n): every ray further out
+ * passes it too (it lies higher at every vertex), and ends on the flat ground past the end. */
+static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                             const tirenv_springs__fan_rays *r, double z, int side,
+                             size_t step, size_t count, long j, double *f_min, double tol,
+                             double rho[], tirenv_springs__ray_memo memo[])
+{
+    const long n = (long)p->n, first_j = o->first[side];
+    const int dir = side ? 1 : -1;
+    const size_t i0 = r->i0;
+    const double rho_max = r->rho_max, zZ = z - p->z[dir > 0 ? n - 1 : 0];
+    const int from_centre = j == first_j; /* no vertex passed: the anchor before j */
+    const double a_prev = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
+    const double Z_prev = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
+    double fm = *f_min;
+    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step */
+        fm = f_side < fm ? f_side : fm;
+        const double z_low = z - (fm - tol);
+        const v2d zz = {zZ, zZ}, zero = {0, 0}, big = {rho_max, rho_max};
+        const v2d inf = {INFINITY, INFINITY};
+        for (; step + 1 <= count; step += 2) {
+            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
+            const v2d c = {r->cos_t[i], r->cos_t[k]}, q = zz / c;
+            /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
+            const v2l out = (c <= zero) | (q > big);
+            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)q & ~out));
+            rho[i] = v[0];
+            rho[k] = v[1];
+            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z_low,
+                                                 .drho = NAN};
+            memo[k] = memo[i];
+        }
+    }
+    for (; step <= count; ++step) {
+        const size_t i = side ? i0 + step : i0 - step;
+        const double f_prev = from_centre ? f_side : z - a_prev * r->drop[i] - Z_prev;
+        fm = f_prev < fm ? f_prev : fm;
+        const double cos_t = r->cos_t[i];
+        double v = INFINITY;
+        if (!(cos_t <= 0)) {
+            const double q = zZ / cos_t;
+            v = q > rho_max ? INFINITY : q;
+        }
+        rho[i] = v;
+        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
+                                             .drho = NAN};
+    }
+    *f_min = fm;
+    return step;
+}
+
+/* After a walk that hit the segment [j - dir, j] (not a wall): the rays further out that
+ * are at or below the ground at j hit it too. */
+static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                             const tirenv_springs__fan_rays *r, double z, int side,
+                             size_t step, size_t count, long j, double *f_min, double tol,
+                             double rho[], tirenv_springs__ray_memo memo[])
+{
+    const long first_j = o->first[side];
+    const int dir = side ? 1 : -1;
+    const size_t i0 = r->i0;
+    const int from_centre = j == first_j;
+    const double a_j = dir * (p->x[j] - o->x), Z_j = p->z[j];
+    const double a_p = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
+    const double Z_p = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
+    double fm = *f_min;
+    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step
+                        * while both rays meet the ground at j */
+        fm = f_side < fm ? f_side : fm;
+        const double z_low = z - (fm - tol);
+        const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
+        const v2d ap = {a_p, a_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
+        const v2d inf = {INFINITY, INFINITY};
+        for (; step + 1 <= count; step += 2) {
+            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
+            const v2d drop = {r->drop[i], r->drop[k]}, f = zv - av * drop - Zv;
+            const v2l in = f <= zero;
+            if (!(in[0] & in[1]))
+                break; /* the rest one by one */
+            const v2d a_hit = ap + fs * da / (fs - f);
+            const v2d reach = {r->reach[i], r->reach[k]}, inv_s = {r->inv_s[i], r->inv_s[k]};
+            const v2l out = a_hit > reach;
+            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)(a_hit * inv_s) & ~out));
+            rho[i] = v[0];
+            rho[k] = v[1];
+            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z_low,
+                                                 .drho = NAN};
+            memo[k] = memo[i];
+        }
+    }
+    for (; step <= count; ++step) {
+        const size_t i = side ? i0 + step : i0 - step;
+        const double drop = r->drop[i];
+        const double f = z - a_j * drop - Z_j;
+        if (!(f <= 0))
+            break;
+        const double f_prev = from_centre ? f_side : z - a_p * drop - Z_p;
+        fm = f_prev < fm ? f_prev : fm;
+        const double a_hit = a_p + f_prev * (a_j - a_p) / (f_prev - f);
+        rho[i] = a_hit > r->reach[i] ? INFINITY : a_hit * r->inv_s[i];
+        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
+                                             .drho = NAN};
+    }
+    *f_min = fm;
+    return step;
+}
+
 /* The rays step..count of one side (side 0: i0 - step, 1: i0 + step) as the fan walks them,
  * each resuming where its inner neighbour ended: at vertex j with the running minimum f_min,
  * that ray's drop and reach being drop_prev and reach_prev. With reuse, a ray after the
  * first walked whose memo holds at z is kept (tirenv_springs__fan_update). Returns the rays
  * walked. */
-static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                              const tirenv_springs__fan_rays *r, double z, int side, size_t step,
-                              size_t count, long j, double f_min, double drop_prev,
-                              double reach_prev, int reuse, double rho[],
-                              tirenv_springs__ray_memo memo[])
+/* (Forced inline: each side's walk compiled for its direction in the fan and in its update
+ * alike; with fresh_side beside it GCC inlined neither side into the fan.) */
+static inline __attribute__((always_inline)) size_t
+fan_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+         const tirenv_springs__fan_rays *r, double z, int side, size_t step, size_t count,
+         long j, double f_min, double drop_prev, double reach_prev, int reuse, double rho[],
+         tirenv_springs__ray_memo memo[])
 {
     const double f0 = z - o->g_side[side], rho_max = r->rho_max, tol = fan_tol(o, z);
     const size_t i0 = r->i0;
@@ -386,6 +525,46 @@ static inline size_t fan_side(const tirenv_profile *p, const tirenv_springs__fan
     return cast;
 }
 
+/* A fresh fan's side (fan_side without reuse) where the rays' resumption order is known
+ * (r->ordered): each walk resumes where its inner neighbour ended, and after a walk past the
+ * profile's end, or onto a segment, the rays further out that end alike are taken as a run.
+ * A loop of its own: fan_side's, which the reuse shares, keeps its registers (with the runs
+ * in it the walks over a road sampled at 10 mm cost 20 % more). */
+static inline __attribute__((always_inline)) size_t
+fresh_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+           const tirenv_springs__fan_rays *r, double z, int side, size_t count, double rho[],
+           tirenv_springs__ray_memo memo[])
+{
+    const double f0 = z - o->g_side[side], rho_max = r->rho_max, tol = fan_tol(o, z);
+    const size_t i0 = r->i0;
+    const int dir = side ? 1 : -1;
+    const long first_j = o->first[side];
+    /* the arrays and x in locals: the stores to rho and memo would make them be read again
+     * at every ray */
+    const double *const inv_s = r->inv_s, *const drop = r->drop, *const reach = r->reach;
+    const double *const cos_t = r->cos_t, x = o->x;
+    long j = first_j;
+    double f_min = f0;
+    for (size_t step = 1; step <= count; ++step) {
+        const size_t i = side ? i0 + step : i0 - step;
+        long j_end;
+        int kind;
+        rho[i] = walk(p, x, z, f0, first_j, j, dir, inv_s[i], drop[i], reach[i], cos_t[i],
+                      rho_max, &j_end, &kind, &f_min);
+        memo[i] = (tirenv_springs__ray_memo){.j = j_end, .kind = kind,
+                                             .z_low = z - (f_min - tol), .drho = NAN};
+        j = j_end;
+        if (kind == RAY_END) { /* the rest pass the end too */
+            if (step < count)
+                end_run(p, o, r, z, side, step + 1, count, j, &f_min, tol, rho, memo);
+            return count;
+        }
+        if (step < count && kind == RAY_HIT)
+            step = hit_run(p, o, r, z, side, step + 1, count, j, &f_min, tol, rho, memo) - 1;
+    }
+    return count;
+}
+
 void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                          const tirenv_springs__fan_rays *r, double z, size_t a, size_t b,
                          double rho[], tirenv_springs__ray_memo memo[])
@@ -402,7 +581,14 @@ void tirenv_springs__fan(const tirenv_profile *p, const tirenv_springs__fan_orig
     }
     rho[i0] = f0 <= rho_max ? f0 : INFINITY;
     memo[i0] = (tirenv_springs__ray_memo){.j = 0, .kind = RAY_DOWN, .z_low = o->g, .drho = 1};
-    /* each side's walk compiled for its direction */
+    /* each side's walk compiled for its direction; with the runs where the ground within
+     * reach has few vertices for the rays (a cleat, a step): on a road sampled finely each
+     * ray ends on a face of its own, and the walks' loop without them is the faster */
+    if (r->ordered && 4 * o->n_reach < (long)(b - a + 1)) {
+        fresh_side(p, o, r, z, 0, i0 - a, rho, memo);
+        fresh_side(p, o, r, z, 1, b - i0, rho, memo);
+        return;
+    }
     fan_side(p, o, r, z, 0, 1, i0 - a, o->first[0], z - o->g_side[0], INFINITY, 0, 0, rho,
              memo);
     fan_side(p, o, r, z, 1, 1, b - i0, o->first[1], z - o->g_side[1], INFINITY, 0, 0, rho,

@@ -444,10 +444,21 @@ SCAN_LOOP void scan_list(const scan_ctx *C, scan_state *sc, const size_t todo[],
 }
 
 /* scan_vertex over the vertices j0 .. j_end - 1. */
-SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_end)
+SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_end,
+                        size_t *i_first)
 {
     scan_state S = *sc;
-    for (size_t j = j0; j < j_end; ++j)
+    size_t j = j0;
+    for (; j < j_end; ++j) { /* up to the first vertex within reach: its walk */
+        scan_vertex(C, &S, j);
+        const double dx = C->X[j] - C->x, dz = C->z - C->Z[j];
+        if (dz > 0 && dx * dx + dz * dz < C->R0sq) {
+            *i_first = S.i;
+            ++j;
+            break;
+        }
+    }
+    for (; j < j_end; ++j)
         scan_vertex(C, &S, j);
     *sc = S;
 }
@@ -731,8 +742,10 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
                         .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .N = N, .a = a,
                         .b = b};
-    /* i: a walk from the last vertex's sector is O(1) on a road */
-    scan_state S = {.i = T->i0, .ci = SIZE_MAX, .out = c->vrows};
+    /* i: a walk from the last vertex's sector is O(1) on a road; the first from where the
+     * last plain scan's first walk ended (a few sectors from where this one's ends, where
+     * the walk from i0 crossed half the span over a cleat) */
+    scan_state S = {.i = c->scan_i < N ? c->scan_i : T->i0, .ci = SIZE_MAX, .out = c->vrows};
     size_t seen_lo = N, seen_hi = 0, missed = 0;
     if (prove)
         S.out = scan_prove(&C, a1, b1, c->scan_blind, c->seen_sec + 4 * N, j0, n_todo, seen,
@@ -740,7 +753,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     else if (reuse)
         scan_list(&C, &S, todo, seen, c->seen_j0, n_todo);
     else
-        scan_all(&C, &S, j0, j_end);
+        scan_all(&C, &S, j0, j_end, &c->scan_i);
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;

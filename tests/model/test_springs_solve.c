@@ -263,6 +263,88 @@ static void test_fan_matches_single_rays(void **state)
     tirenv_rng_free(rng);
 }
 
+/* A fresh fan with its rays' resumption order known (fan_rays.ordered) takes the rays that
+ * end alike as runs (after a walk past the profile's end, or onto a segment the next rays
+ * meet too) without the walk's setup: the same rho and the same memos, bit for bit, as the
+ * fan that walks every ray, and the memos so made serve a reuse at another height as well. */
+static void test_fan_runs_match_walks(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 11);
+    const double R0 = 0.6837;
+    enum { N = 361 };
+    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], rho_w[N];
+    static tirenv_springs__ray_memo memo[N], memo_w[N];
+    const size_t i0 = N / 2;
+    for (size_t i = 0; i < N; ++i) {
+        const double th = ((double)i - (double)i0) * M_PI / 360;
+        sin_t[i] = sin(th);
+        cos_t[i] = cos(th);
+    }
+    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
+    tirenv_springs__fan_rays walked = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
+                                       .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
+                                       .reach = reach};
+    tirenv_springs__fan_rays runs = walked;
+    runs.ordered = tirenv_springs__fan_rays_ordered(&runs, N);
+    assert_int_equal(runs.ordered, 1);
+    tirenv_road_settings rs = tirenv_road_default();
+    rs.length = 20;
+    rs.dx = 0.003;
+    tirenv_profile *grounds[5] = {tirenv_profile_cleat(0.3, 0.1), NULL, NULL, NULL,
+                                  tirenv_profile_cleat(0.05, 0.025)};
+    tirenv_diag diag;
+    assert_int_equal(tirenv_road_iso8608(&rs, &grounds[1], &diag), TIRENV_OK);
+    grounds[2] = random_ground(rng, 400);
+    grounds[3] = random_ground(rng, 60);
+    size_t rays_checked = 0, past_end = 0, finite = 0, reused = 0;
+    for (size_t gi = 0; gi < 5; ++gi) {
+        const tirenv_profile *p = grounds[gi];
+        const long n = (long)tirenv_profile_size(p);
+        double x_lo, x_hi;
+        tirenv_profile_extent(p, &x_lo, &x_hi);
+        for (int trial = 0; trial < 300; ++trial) {
+            double x = x_lo - 0.5 + (x_hi - x_lo + 1) * tirenv_rng_uniform(rng);
+            if (trial % 5 == 0) /* on a vertex, a wall's x included */
+                x = tirenv_profile_x(p)[tirenv_rng_uniform_int(rng, tirenv_profile_size(p))];
+            const double g = tirenv_profile_height(p, x);
+            const double z = g + (trial % 2 ? 0.001 : 0.02) + 0.8 * tirenv_rng_uniform(rng);
+            tirenv_springs__fan_origin o;
+            tirenv_springs__fan_origin_at(p, x, R0, 0, &o);
+            const size_t a = tirenv_rng_uniform_int(rng, i0 + 1);
+            const size_t b = i0 + tirenv_rng_uniform_int(rng, N - i0);
+            tirenv_springs__fan(p, &o, &walked, z, a, b, rho_w, memo_w);
+            tirenv_springs__fan(p, &o, &runs, z, a, b, rho, memo);
+            for (size_t i = a; i <= b; ++i) {
+                assert_bits_equal(rho[i], rho_w[i]);
+                assert_int_equal(memo[i].j, memo_w[i].j);
+                assert_int_equal(memo[i].kind, memo_w[i].kind);
+                assert_bits_equal(memo[i].z_low, memo_w[i].z_low);
+                past_end += i != i0 && (memo[i].j < 0 || memo[i].j >= n);
+                finite += isfinite(rho[i]);
+                ++rays_checked;
+            }
+            const double z2 = z + (tirenv_rng_uniform(rng) - 0.5) * 1e-4;
+            if (tirenv_springs__fan_reuse(p, &o, &runs, z2, a, b, rho, memo)) {
+                for (size_t i = a; i <= b; ++i) {
+                    double drho;
+                    const double r =
+                        tirenv_springs__ray(p, x, z2, sin_t[i], cos_t[i], R0, &drho);
+                    assert_bits_equal(rho[i], r);
+                }
+                ++reused;
+            }
+        }
+    }
+    print_message("fan runs: %zu rays (%zu finite, %zu past the profile's end); %zu reuses\n",
+                  rays_checked, finite, past_end, reused);
+    assert_true(finite > 10000 && past_end > 1000 && reused > 100);
+    for (size_t gi = 0; gi < 5; ++gi)
+        tirenv_profile_free(grounds[gi]);
+    tirenv_rng_free(rng);
+}
+
 /* ---- The workspace's kept state ---- */
 
 /* A workspace that has seen other positions, heights and profiles (a new profile may sit at
@@ -470,6 +552,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pinned_matches_thomas),
         cmocka_unit_test(test_fan_matches_single_rays),
+        cmocka_unit_test(test_fan_runs_match_walks),
         cmocka_unit_test(test_kept_state_is_invisible),
         cmocka_unit_test(test_needle_refused),
         cmocka_unit_test(test_pairs_miss_nothing),
