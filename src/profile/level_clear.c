@@ -50,6 +50,10 @@ int tirenv_profile__level_clear(const struct tirenv_profile *p, double x, double
 {
     const double *X = p->x, *Z = p->z, lo = x - reach, hi = x + reach;
     const size_t n = p->n, k = tirenv_profile__segment_at(p, x);
+    /* A sloped segment under x passes through (x, L), dz from C: refused before any
+     * arithmetic, as a road is at nearly every position. */
+    if (x >= X[0] && k + 1 < n && Z[k] != Z[k + 1] && dz < r)
+        return 0;
     const double L = tirenv_profile__height_in(p, x, k);
     const clear_ctx c = {x, L + dz, L, r * r, tan_cut};
     size_t j = k;

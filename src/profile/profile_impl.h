@@ -121,11 +121,6 @@ static inline double tirenv_profile__height_in(const struct tirenv_profile *p, d
     return zs[k] + (zs[k + 1] - zs[k]) * t;
 }
 
-/* Whether the ground is one level over [lo, hi] (every vertex there, and the segments
- * reaching into it from either side, at one height), and that height in *level. O(number of
- * vertices in the interval), and O(1) on ground that is not level near lo. */
-int tirenv_profile__level(const struct tirenv_profile *p, double lo, double hi, double *level);
-
 /* Whether the ground within reach (m) of x is level under the centre, C = (x, level + dz), but
  * for pieces the tire cannot touch: every segment, wall or flat extension meeting
  * [x - reach, x + reach] lies on the line z = level through the ground at x, or all of it
