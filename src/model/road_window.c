@@ -94,9 +94,7 @@ static int vertex_check(tirenv_road_window *w, double x, const double z[], tiren
 }
 
 /* Drops the rows before the last one left of x_keep (they cannot touch the tire again). If
- * that row is a wall's second, its first stays too, so that no wall is cut in half (the
- * deformable models' test for level ground within reach once read it; it no longer reads a
- * segment that ends before the reach). */
+ * that row is a wall's second, its first stays too, so that no wall is cut in half. */
 static void window_drop(tirenv_road_window *w, double x_keep)
 {
     size_t lo = 0;
