@@ -124,9 +124,10 @@ static inline double tirenv_profile__height_in(const struct tirenv_profile *p, d
 /* Whether the ground within reach (m) of x is level under the centre, C = (x, level + dz), but
  * for pieces the tire cannot touch: every segment, wall or flat extension meeting
  * [x - reach, x + reach] lies on the line z = level through the ground at x, or all of it
- * farther than r (m) from C; with tan_cut > 0 its vertices below C also lie outside the cone
- * |X - x| <= tan_cut*(z_C - Z). The line's height in *level. O(1) where the ground at x is not
- * level, O(vertices within reach) else (src/profile/level_clear.c). */
+ * farther than r (m) from C; with tan_cut > 0 and any piece off the line, every vertex of
+ * those segments below C also lies outside the cone |X - x| <= tan_cut*(z_C - Z). The line's
+ * height in *level. O(1) where the ground at x is not level, O(vertices within reach) else
+ * (src/profile/level_clear.c). */
 int tirenv_profile__level_clear(const struct tirenv_profile *p, double x, double reach,
                                 double dz, double r, double tan_cut, double *level);
 
