@@ -85,12 +85,18 @@ static void test_pit_cone_and_ends(void **state)
 /* --- against full solves ---------------------------------------------------------------- */
 
 /* An obstacle of width w and height H (m) on level ground at height L, starting at x = 0:
- * a cleat, a step up or down, a triangle, a plate, or a pit. */
+ * a cleat, a step up or down, a triangle, a plate, a pit, or a cleat on level ground sampled
+ * every 5 mm from x = -1.5 m (vertices on the line under the tire). */
 static tirenv_profile *obstacle(int kind, double L, double w, double H)
 {
-    double x[6], z[6];
+    double x[310], z[310];
     size_t n = 0;
 #define V(a, b) (x[n] = (a), z[n] = (b), ++n)
+    if (kind == 6) {
+        for (int k = 0; k < 300; ++k)
+            V(-1.5 + 0.005 * k, L);
+        kind = 0;
+    }
     switch (kind) {
     case 0: V(0, L); V(0, L + H); V(w, L + H); V(w, L); break;          /* cleat */
     case 1: V(0, L); V(0, L + H); break;                                 /* step up */
@@ -162,10 +168,17 @@ static void compare(const tirenv_model_type *type, const tirenv_tire *tire, doub
             assert_int_equal(tirenv_model_eval(one, xs[k], &p1, &d), TIRENV_OK);
             assert_int_equal(tirenv_model_eval(two, xs[k], &p2, &d), TIRENV_OK);
             assert_true(p2.iterations > 0);
+            /* Ground level over the whole reach is the level test of before, which takes
+             * the flat answer whatever vertices the line has: the ring's solve on a line
+             * sampled every 5 mm lies 1.4e-7 m below it (its quadrature's cuts; models.md
+             * section 11.4). The shortcut of clear ground itself is held to 1e-9 m. */
+            const double reach = tirenv_model_reach(one);
+            const double tol = kind == 6 && type == tirenv_model_ring && xs[k] + reach < 0
+                                   ? 1e-6 : 1e-9;
             if (p1.iterations == 0) {
                 ++*taken;
-                assert_near(p1.h, p2.h, 1e-9, 0);
-                assert_near(p1.z, p2.z, 1e-9, 0);
+                assert_near(p1.h, p2.h, tol, 0);
+                assert_near(p1.z, p2.z, tol, 0);
                 assert_near(p1.fx, p2.fx, 1e-3, 0);
                 assert_bits_equal(p1.h, L2);
                 assert_near(p1.fz, load_k, tire->eq.eps_F, 0);
@@ -196,7 +209,7 @@ static void test_springs_against_full_solves(void **state)
     (void)state;
     const tirenv_tire tire = tirenv_test_default_tire();
     size_t taken = 0, solved = 0;
-    compare(tirenv_model_springs, &tire, 23456.7, 6, 30, &taken, &solved);
+    compare(tirenv_model_springs, &tire, 23456.7, 7, 30, &taken, &solved);
     assert_true(taken > 40 && solved > 40);
 }
 
@@ -208,7 +221,7 @@ static void test_springs_rays_sidewall_against_full_solves(void **state)
     tire.springs.k_s = 2.1e6;
     tire.springs.F_s0 = 3000;
     size_t taken = 0, solved = 0;
-    compare(tirenv_model_springs, &tire, 14321.0, 6, 20, &taken, &solved);
+    compare(tirenv_model_springs, &tire, 14321.0, 7, 20, &taken, &solved);
     assert_true(taken > 30 && solved > 30);
 }
 
@@ -217,7 +230,7 @@ static void test_ring_against_full_solves(void **state)
     (void)state;
     const tirenv_tire tire = tirenv_test_default_tire();
     size_t taken = 0, solved = 0;
-    compare(tirenv_model_ring, &tire, 27000.0, 6, 8, &taken, &solved);
+    compare(tirenv_model_ring, &tire, 27000.0, 7, 8, &taken, &solved);
     assert_true(taken > 12 && solved > 12);
 }
 
