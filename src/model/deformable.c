@@ -40,6 +40,9 @@ typedef struct {
      * ground and as the start of the next load's. */
     int shift_invariant;
     tirenv_eq_point flat_at;
+    /* What the tire can touch in that state (the record's level_reach at z_flat): a radius
+     * (m) about the centre and the tangent of a vertex's cone (deformable_clear.c). */
+    double clear_r, clear_tan;
     /* The valid range (docs/models.md section 1.3), found on first need: flat-ground centre
      * heights from z_min up to R0, loads up to G_max (N), contact lengths up to l_max (m). */
     int have_range;
@@ -455,6 +458,16 @@ static int deformable_flat_at_height(void *state, double z, tirenv_flat *out,
     return TIRENV_OK;
 }
 
+/* The bound of clear ground at the flat state just set (st->z_flat): without the record's
+ * level_reach, none (r infinite), and only level ground is short-cut. */
+static void level_reach(deformable_state *st)
+{
+    st->clear_r = INFINITY;
+    st->clear_tan = 0;
+    if (st->def->level_reach)
+        st->def->level_reach(&st->tire, st->z_flat, &st->clear_r, &st->clear_tan);
+}
+
 static int deformable_set(void *state, const tirenv_profile *p, double load, double z_flat,
                           tirenv_diag *diag)
 {
@@ -478,6 +491,7 @@ static int deformable_set(void *state, const tirenv_profile *p, double load, dou
         return status;
     flat.z = z_c;
     st->flat_at = flat;
+    level_reach(st);
     return TIRENV_OK;
 }
 
@@ -504,6 +518,7 @@ static int deformable_set_load(void *state, double load, double *z_flat, tirenv_
     st->z_flat = p.z;
     *z_flat = p.z - hub_offset(st);
     st->flat_at = p;
+    level_reach(st);
     return TIRENV_OK;
 }
 
@@ -564,6 +579,7 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
     st->prev.have2 = sv.have_prev2;
     st->def->state_restore(st->elem, buf);
     st->def->state_restore(st->flat_elem, buf + st->def->state_size(st->elem));
+    level_reach(st);
     return TIRENV_OK;
 }
 
@@ -608,13 +624,15 @@ static int deformable_eval(void *state, double x, tirenv_point *out, tirenv_diag
 {
     deformable_state *st = state;
     const double R0 = st->tire.springs.R0;
-    /* Level ground within reach (the default reach of model_impl.h): the flat-ground
-     * equilibrium shifted by the level, with no force evaluation. The solver would land
-     * within its tolerance of the same height; a road's run-in and run-out cost nothing. */
+    /* Level ground under the tire and nothing else within reach that it can touch (the
+     * default reach of model_impl.h; docs/models.md section 11.4): the flat-ground
+     * equilibrium shifted by the level meets every contact condition there, and is returned
+     * with no force evaluation. The solver would land within its tolerance of the same
+     * height; a road's run-in and run-out, and an obstacle's approach, cost nothing. */
     double level;
     if (st->shift_invariant &&
-        tirenv_profile__level(st->prof, x - TIRENV_MODEL__REACH * R0,
-                              x + TIRENV_MODEL__REACH * R0, &level)) {
+        tirenv_profile__level_clear(st->prof, x, TIRENV_MODEL__REACH * R0, st->z_flat,
+                                    st->clear_r, st->clear_tan, &level)) {
         /* fx is 0 by symmetry, which the force sum only meets to round-off. */
         const double z_c = st->z_flat + level;
         *out = (tirenv_point){.x = x, .z = z_c - hub_offset(st), .h = level, .fx = 0,

@@ -87,11 +87,26 @@ struct tirenv_deformable {
      * same bits as forces() would have given; defer_slope(elem, 0) ends it. */
     int (*defer_slope)(void *elem, int on);
     int (*slope)(void *elem, double *dF_dz);
+    /* What the tire can touch at its flat-ground equilibrium with its centre dz (m) above
+     * level ground, for the shortcut of clear ground (deformable.c, docs/models.md section
+     * 11.4): *r (m), a radius about the centre beyond which no ground carries force there,
+     * and *tan_cut, the tangent of the angle from the vertical within which a vertex below
+     * the centre would change how the level ground is sampled (0: no vertex does). NULL: only
+     * ground level over the whole reach is short-cut. deformable_clear.c has the models'. */
+    void (*level_reach)(const tirenv_tire *tire, double dz, double *r, double *tan_cut);
 };
 
 /* The functions of every deformable model's type record (deformable.c): the constant-load
  * equilibrium around the type's deformable record. */
 extern const tirenv_model_ops tirenv_deformable_ops;
+
+/* struct tirenv_deformable's level_reach (deformable_clear.c): the free circle R0 of a tire
+ * whose tread never stands out of it (the springs model), and R0 + t_r, the farthest ground a
+ * ring's ray samples, with its nodes' spacing (the ring). */
+void tirenv_deformable_level_reach_r0(const tirenv_tire *tire, double dz, double *r,
+                                      double *tan_cut);
+void tirenv_deformable_level_reach_tread(const tirenv_tire *tire, double dz, double *r,
+                                         double *tan_cut);
 
 /* The defaults of struct tirenv_deformable's bracket and shift_invariant. */
 int tirenv_deformable_no_bracket(void *elem, const tirenv_profile *p, double x, double *z_lo,

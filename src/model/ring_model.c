@@ -175,6 +175,7 @@ static const tirenv_deformable ring_deformable = {
     .extrapolate = 1,
     .defer_slope = ring_defer_slope,
     .slope = ring_slope,
+    .level_reach = tirenv_deformable_level_reach_tread,
 };
 
 /* What tirenv fit identifies on rig data (docs/models.md section 8.4): the carcass's

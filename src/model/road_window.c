@@ -95,8 +95,8 @@ static int vertex_check(tirenv_road_window *w, double x, const double z[], tiren
 
 /* Drops the rows before the last one left of x_keep (they cannot touch the tire again). If
  * that row is a wall's second, its first stays too: the deformable models' test for level
- * ground within reach (tirenv_profile__level) reads it over the whole profile, and a window
- * without it took that shortcut where the whole profile does not (another last bit). */
+ * ground within reach (tirenv_profile__level_clear) reads that wall over the whole profile,
+ * and a window without it took that shortcut where the whole profile does not. */
 static void window_drop(tirenv_road_window *w, double x_keep)
 {
     size_t lo = 0;

@@ -211,6 +211,7 @@ static const tirenv_deformable springs_deformable = {
     .state_restore = springs_state_restore,
     .series = springs_sidewall,
     .continuous = springs_continuous,
+    .level_reach = tirenv_deformable_level_reach_r0,
 };
 
 /* The stiffnesses that shape h, which a fit identifies, and the free radius on request

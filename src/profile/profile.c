@@ -210,22 +210,6 @@ void tirenv_profile_extent(const tirenv_profile *p, double *x_first, double *x_l
         *x_last = p->x[p->n - 1];
 }
 
-int tirenv_profile__level(const struct tirenv_profile *p, double lo, double hi, double *level)
-{
-    size_t k = tirenv_profile__segment_at(p, lo);
-    if (k > 0 && p->x[k - 1] == p->x[k])
-        --k; /* a wall at lo: both of its vertices count */
-    const double z0 = p->z[k];
-    for (; k < p->n; ++k) {
-        if (p->z[k] != z0)
-            return 0;
-        if (p->x[k] > hi)
-            break;
-    }
-    *level = z0;
-    return 1;
-}
-
 int tirenv_profile__finish(struct tirenv_profile *p, tirenv_diag *diag)
 {
     const int status = tirenv_profile_validate(p->n, p->x, p->z, diag);

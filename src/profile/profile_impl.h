@@ -121,9 +121,14 @@ static inline double tirenv_profile__height_in(const struct tirenv_profile *p, d
     return zs[k] + (zs[k + 1] - zs[k]) * t;
 }
 
-/* Whether the ground is one level over [lo, hi] (every vertex there, and the segments
- * reaching into it from either side, at one height), and that height in *level. O(number of
- * vertices in the interval), and O(1) on ground that is not level near lo. */
-int tirenv_profile__level(const struct tirenv_profile *p, double lo, double hi, double *level);
+/* Whether the ground within reach (m) of x is level under the centre, C = (x, level + dz), but
+ * for pieces the tire cannot touch: every segment, wall or flat extension meeting
+ * [x - reach, x + reach] lies on the line z = level through the ground at x, or all of it
+ * farther than r (m) from C; with tan_cut > 0 and any piece off the line, every vertex of
+ * those segments below C also lies outside the cone |X - x| <= tan_cut*(z_C - Z). The line's
+ * height in *level. O(1) where the ground at x is not level, O(vertices within reach) else
+ * (src/profile/level_clear.c). */
+int tirenv_profile__level_clear(const struct tirenv_profile *p, double x, double reach,
+                                double dz, double r, double tan_cut, double *level);
 
 #endif
