@@ -97,8 +97,9 @@ struct tirenv_springs {
     unsigned long long upd_serial;
     size_t updates;        /* evaluations the update gave (what the tests count) */
     /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there;
-     * the starts refused because a working row's vertex left its sector (for the tests) */
-    size_t starts, start_updates, start_sector;
+     * the starts refused because a working row's vertex left its sector; the starts whose
+     * rows moved into the next sector, and the rows let go at the root (for the tests) */
+    size_t starts, start_updates, start_sector, start_across, start_released;
     /* the continuous contact's evaluations since the last start was asked for, and whether
      * one accepted its root: what the start from the closed form's pins goes by */
     size_t evals;
@@ -556,6 +557,9 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+            /* the tips' span: the base's, which the start may have grown by an element */
+            s->a = s->cc.f0;
+            s->b = s->cc.f1;
             /* the base's working rows (its solve's, none from the closed form's pins), as
              * the solve had them: the next evaluation's path, whichever x it is at */
             s->cc.between = !s->cc.base_pins && s->cc.n_warm > 0;
@@ -693,6 +697,12 @@ size_t tirenv_springs__start_sector(const tirenv_springs *s)
     return s->start_sector;
 }
 
+void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released)
+{
+    *across = s->start_across;
+    *released = s->start_released;
+}
+
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
 {
     return s->face_hits;
@@ -774,13 +784,29 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     for (size_t q = 0; q < c->n_schur; ++q)
         if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
             return 0;
-    /* a working row's vertex that crossed an element's ray (the root's first question,
-     * asked before the held rays' faces are found for it) */
-    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
-        ++s->start_sector;
-        return 0;
-    }
     set_origin(s, prof, x);
+    /* A working row's vertex that crossed an element's ray (the root's first question, asked
+     * before the held rays' faces are found for it): the row moved into the sector beyond,
+     * the crossed element's ray onto the vertex's other face (springs_root.c); where a row
+     * cannot move, no start (the base's rows are no longer its own). */
+    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
+        size_t crossed[TIRENV_SPRINGS__SCHUR_MAX], n_crossed;
+        long vertex[TIRENV_SPRINGS__SCHUR_MAX];
+        if (!tirenv_springs__cc_rows_across(c, &s->cc_tire, prof, x, z0, crossed, vertex,
+                                            &n_crossed)) {
+            c->base_ok = 0;
+            ++s->start_sector;
+            return 0;
+        }
+        for (size_t m = 0; m < n_crossed; ++m) {
+            const size_t e = crossed[m];
+            if (e >= s->memo_a && e <= s->memo_b)
+                tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, vertex[m], z0,
+                                            &s->memo[e]);
+        }
+        s->upd_x = NAN; /* the base's tangent holds its own rows, no longer these */
+        ++s->start_across;
+    }
     /* after a round's flip: the element whose own row entered the set (the others' rays
      * were found in the rounds before, at the same x and z0), or none where one left */
     size_t e_new = SIZE_MAX;
@@ -814,9 +840,19 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                                            s->face, z0, &fw, s->rho, s->dd, s->pred_face))
                 return 0;
         }
+        size_t q_neg;
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
-                                        s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
-            return 0;
+                                        s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z,
+                                        &q_neg)) {
+            /* a working row's reaction below 0 there: it leaves the set, as a round */
+            if (q_neg == SIZE_MAX || round == start_rounds ||
+                tirenv_springs__cc_pred_release(c, &s->cc_tire, q_neg))
+                return 0;
+            e_new = SIZE_MAX;
+            s->upd_x = NAN;
+            ++s->start_released;
+            continue;
+        }
         s->start_taken = 1; /* (a root proposed: the next position asks for one too) */
         /* The free elements' own rays at the root, on their last faces too (h: NAN where
          * none), and the held ones' reactions: where one is violated, the element's row

@@ -36,7 +36,9 @@ for k, v in d.items():
 # Ratios as stated: springs time / rigid time from the same run.
 r = d[\"rigid_cleat_pos_per_s\"] / d[\"springs_cleat_pos_per_s\"]
 assert abs(d[\"springs_over_rigid_cleat\"] - r) <= 1e-9 * r
-assert d[\"springs_evals_per_pos\"] >= 1 and d[\"quick\"] == 1
+# (below 1 where the start holds: the positions on level ground take none, nearly all the
+# others one)
+assert d[\"springs_evals_per_pos\"] > 0 and d[\"quick\"] == 1
 f = d[\"springs_road_10mm_pos_per_s\"] / d[\"springs_road_1mm_pos_per_s\"]
 assert abs(d[\"springs_fine_over_coarse_road_best\"] - f) <= 1e-9 * f
 # --quick is one repeat: the fine and coarse sweeps interleaved over 2 * 1 + 1 rounds (the
