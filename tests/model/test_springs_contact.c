@@ -836,7 +836,10 @@ static void test_root_is_the_equilibrium(void **state)
  * sector, a ray onto another face) the evaluation is the full one, so the forces and tips are a
  * fresh model's either way (1e-9 of F_z, 1e-13 R0 as above). Seeded random obstacles and roads,
  * steps of 0.5 to 3 mm, loads 1e-6 to 1e-3 m off the last evaluation; then a start 40 mm on, where
- * the working set cannot hold (each refused or, found, checked). */
+ * the working set cannot hold (each refused or, found, checked). The starts whose working rows
+ * moved into the next sector (tirenv_springs__cc_rows_across: the crossed element let go, the
+ * span grown) and those that let a row go for a reaction below 0 at the root are counted, and
+ * must be taken by the update at some roots: their forces and tips checked as every other. */
 static void test_start_is_the_equilibrium(void **state)
 {
     (void)state;
