@@ -98,8 +98,9 @@ struct tirenv_springs {
     size_t updates;        /* evaluations the update gave (what the tests count) */
     /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there;
      * the starts refused because a working row's vertex left its sector; the starts whose
-     * rows moved into the next sector, and the rows let go at the root (for the tests) */
-    size_t starts, start_updates, start_sector, start_across, start_released;
+     * rows moved into the next sector, the rows let go at the root, and the rows entered
+     * where a vertex crossed a held element's ray (for the tests) */
+    size_t starts, start_updates, start_sector, start_across, start_released, start_entered;
     /* the continuous contact's evaluations since the last start was asked for, and whether
      * one accepted its root: what the start from the closed form's pins goes by */
     size_t evals;
@@ -697,10 +698,12 @@ size_t tirenv_springs__start_sector(const tirenv_springs *s)
     return s->start_sector;
 }
 
-void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released)
+void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released,
+                                 size_t *entered)
 {
     *across = s->start_across;
     *released = s->start_released;
+    *entered = s->start_entered;
 }
 
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
@@ -806,6 +809,35 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         }
         s->upd_x = NAN; /* the base's tangent holds its own rows, no longer these */
         ++s->start_across;
+    }
+    /* A ground vertex that crossed the ray of a held element at a run's end (its ray passed
+     * the far end of its face): the element is let go and the vertex's row between it and its
+     * neighbour enters the set, as for a working row carried across (springs_root.c). Not
+     * from the closed form's pins, whose held rays are cast again at the new x below. */
+    for (size_t q = 0; !c->base_pins && c->n_schur < TIRENV_SPRINGS__SCHUR_MAX &&
+                       q <= c->n_chains;
+         ++q) {
+        const size_t ends[2] = {q < c->n_chains ? c->chains[2 * q] - 1 : c->f0,
+                                q < c->n_chains ? c->chains[2 * q + 1] + 1 : c->f1};
+        for (int m = 0; m < 2; ++m) {
+            const size_t e = ends[m];
+            if (e < c->f0 || e > c->f1 || c->wpos[e] != SIZE_MAX || e < s->memo_a ||
+                e > s->memo_b)
+                continue;
+            const long v = tirenv_springs__memo_passed(prof, &s->origin, &s->rays, e, z0,
+                                                       &s->memo[e]);
+            if (v < 0)
+                continue;
+            if (!tirenv_springs__cc_row_enter(c, &s->cc_tire, prof, x, z0, e, v)) {
+                if (!c->base_ok)
+                    return 0;
+                continue; /* (no row of v's to enter: the update at the root decides) */
+            }
+            tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, v, z0, &s->memo[e]);
+            s->upd_x = NAN;
+            ++s->start_entered;
+            break; /* (the chains changed) */
+        }
     }
     /* after a round's flip: the element whose own row entered the set (the others' rays
      * were found in the rounds before, at the same x and z0), or none where one left */

@@ -50,9 +50,11 @@ void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_
 /* The starts refused because a working row's vertex left its sector at the new x and could
  * not move into the next (for the tests). */
 size_t tirenv_springs__start_sector(const tirenv_springs *s);
-/* The starts whose working rows moved into the next sector, and the working rows they let go
- * for a reaction below 0 at the root (for the tests). */
-void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released);
+/* The starts whose working rows moved into the next sector, the working rows they let go for
+ * a reaction below 0 at the root, and the rows they entered where a ground vertex crossed a
+ * held element's ray (for the tests). */
+void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released,
+                                 size_t *entered);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
@@ -181,6 +183,13 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
 int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                                 const tirenv_springs__fan_rays *r, size_t i, long v, double z,
                                 tirenv_springs__ray_memo *m);
+
+/* The vertex at the far end of the segment memo m of ray i ended on, where the ray from o's
+ * centre at height z (m) now passes above it (the vertex crossed the ray since the walk), else
+ * -1. */
+long tirenv_springs__memo_passed(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t i, double z,
+                                 const tirenv_springs__ray_memo *m);
 
 /* The same for one ray i: its rho, or NAN where memo m has no face. */
 double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
@@ -710,6 +719,13 @@ int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
  * factorised again: 0, or 1 (the base is then dropped: base_ok 0) where it cannot be. */
 int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                  size_t e, int hold);
+
+/* Held element e let go where ground vertex v crossed its ray at (x, z) (m): v's row between e
+ * and its neighbour on v's side, found among the base's rows (not working), enters the working
+ * set (the span grown by the element beyond its end where needed), K_FF factorised again: 1, or
+ * 0 where it cannot (the base is then dropped where it changed: base_ok 0). */
+int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 const tirenv_profile *p, double x, double z, size_t e, long v);
 
 /* The base's working row q (between elements) out of the set, where the root at a new x
  * found its reaction below 0 (tirenv_springs__cc_root_at's q_neg), the rows' Schur complement

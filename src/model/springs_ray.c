@@ -499,6 +499,19 @@ int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__f
     return 1;
 }
 
+long tirenv_springs__memo_passed(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t i, double z,
+                                 const tirenv_springs__ray_memo *m)
+{
+    const long n = (long)p->n, j = m->j;
+    const int dir = i > r->i0 ? 1 : -1;
+    if (m->kind != RAY_HIT || j - dir < 0 || j - dir >= n || j < 0 || j >= n)
+        return -1;
+    /* walk()'s f at the face's far end: the ray above the ground there has passed it */
+    const double f_j = z - dir * (p->x[j] - o->x) * r->drop[i] - p->z[j];
+    return f_j > 0 ? j : -1;
+}
+
 void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double x_hi,
                                     tirenv_springs__face_window *w)
 {

@@ -318,6 +318,29 @@ int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
     return 1;
 }
 
+/* Row R between elements i and i + 1 at t for its vertex at dx = V_x - x, dzv = z - V_z: its
+ * weights, compliance and h and their derivatives in z, as springs_rows.c puts them. */
+static void put_row(const tirenv_springs__cc_tire *T, size_t i, double t, double dx, double dzv,
+                    tirenv_springs__cc_row *R)
+{
+    const double *st = T->sin_t, *ct = T->cos_t;
+    const double s_a = dx * ct[i] - dzv * st[i], s_b = dzv * st[i + 1] - dx * ct[i + 1];
+    const double S = s_a + s_b, rho = sqrt(dx * dx + dzv * dzv);
+    const double dt_dz = (-st[i] * s_b - s_a * st[i + 1]) / (S * S);
+    double da, db;
+    R->i = i;
+    R->j = i + 1;
+    R->t = t;
+    tirenv_springs__cc_weights(T, t, &R->ga, &R->gb, &da, &db);
+    R->tau = R->gb / (R->ga + R->gb);
+    R->dga_dz = da * dt_dz;
+    R->dgb_dz = db * dt_dz;
+    R->cmp = tirenv_springs__cc_compliance(T, R->ga, R->gb);
+    R->dcmp_dz = R->cmp > 0 ? T->c0 * (da + db) * dt_dz : 0;
+    R->h = T->R0 - rho;
+    R->dh_dz = -dzv / rho;
+}
+
 /* Element e (held) out of the ascending list of held elements, free. */
 static void held_remove(tirenv_springs__cc *c, size_t e)
 {
@@ -382,28 +405,70 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
         }
         if (i < c->f0 || i + 1 > c->f1 || !row_inside(T, i, dx, dzv, &t))
             return 0;
-        const double s_a = dx * ct[i] - dzv * st[i], s_b = dzv * st[i + 1] - dx * ct[i + 1];
-        const double S = s_a + s_b, rho = sqrt(dx * dx + dzv * dzv);
-        const double dt_dz = (-st[i] * s_b - s_a * st[i + 1]) / (S * S);
-        double da, db;
         crossed[*n_crossed] = e_c;
         vertex[(*n_crossed)++] = R->id;
-        R->i = i;
-        R->j = i + 1;
-        R->t = t;
-        tirenv_springs__cc_weights(T, t, &R->ga, &R->gb, &da, &db);
-        R->tau = R->gb / (R->ga + R->gb);
-        R->dga_dz = da * dt_dz;
-        R->dgb_dz = db * dt_dz;
-        R->cmp = tirenv_springs__cc_compliance(T, R->ga, R->gb);
-        R->dcmp_dz = R->cmp > 0 ? T->c0 * (da + db) * dt_dz : 0;
-        R->h = T->R0 - rho;
-        R->dh_dz = -dzv / rho;
+        put_row(T, i, t, dx, dzv, R);
         moved = 1;
     }
     /* the layout's keys name the rows by their sector: the next layout makes its own */
     c->last_ok = 0;
     return moved && !tirenv_springs__cc_schur_factor(c, T, !grew);
+}
+
+int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 const tirenv_profile *p, double x, double z, size_t e, long v)
+{
+    const size_t N = T->N, k = c->n_schur;
+    if (k >= K_MAX || c->wpos[e] != SIZE_MAX || v < 0 || (size_t)v >= p->n ||
+        c->n_kkt + 1 >= c->cap_rows + N)
+        return 0;
+    /* the sector beside e that holds v, within the span or one beyond its end */
+    const double dx = p->x[v] - x, dzv = z - p->z[v];
+    double t;
+    size_t i = SIZE_MAX;
+    if (e > 0 && row_inside(T, e - 1, dx, dzv, &t))
+        i = e - 1;
+    else if (e + 1 < N && row_inside(T, e, dx, dzv, &t))
+        i = e;
+    if (i == SIZE_MAX || i + 1 < c->f0 || i > c->f1)
+        return 0;
+    /* v's row in the base's layout, not working (the layout keeps a vertex's rows on the
+     * hulls and those a solve found violated): no row is added to the layout's tables */
+    size_t r = SIZE_MAX;
+    for (size_t q = 0; q < c->n_rows && r == SIZE_MAX; ++q)
+        if (c->rows[q].id == v && c->rows[q].t > 0)
+            r = q;
+    if (r == SIZE_MAX || tirenv_springs__long_in(c->warm_ids, c->n_warm, v) ||
+        c->n_warm >= c->cap_warm)
+        return 0;
+    for (size_t q = 0; q < k; ++q)
+        if (c->order[c->schur_pos[q]] - N == r)
+            return 0;
+    if (i + 1 == c->f0 || i == c->f1) { /* the element beyond the span's end, free */
+        const size_t b = i + 1 == c->f0 ? i : i + 1;
+        c->f0 = b < c->f0 ? b : c->f0;
+        c->f1 = b > c->f1 ? b : c->f1;
+        c->wpos[b] = 0;
+        c->warm_pin[b] = 0;
+    }
+    held_remove(c, e);
+    put_row(T, i, t, dx, dzv, &c->rows[r]);
+    c->order[c->n_kkt] = N + r;
+    c->schur_pos[k] = c->n_kkt++;
+    c->n_schur = k + 1;
+    size_t m = c->n_warm++; /* warm_ids ascending */
+    while (m > 0 && c->warm_ids[m - 1] > v) {
+        c->warm_ids[m] = c->warm_ids[m - 1];
+        --m;
+    }
+    c->warm_ids[m] = v;
+    c->last_ok = 0;
+    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        return 0;
+    }
+    return 1;
 }
 
 /* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
