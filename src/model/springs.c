@@ -729,6 +729,15 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
                                    s->S_lc[c->f0], s->S_rc[c->f1], s->dw, z_root);
 }
 
+/* Whether ground vertex v and its neighbours lie within w: what the start reads of the ground
+ * around a vertex that crossed a ray (the faces on either side), the same in a whole sweep and
+ * a streamed one. */
+static int faces_near(const tirenv_springs__face_window *w, long v)
+{
+    return tirenv_springs__face_window_has(w, v - 1) && tirenv_springs__face_window_has(w, v) &&
+           tirenv_springs__face_window_has(w, v + 1);
+}
+
 /* The working set's changes tirenv_springs__start makes at a new x before it gives up: an
  * element's own row entering or leaving it at the patch's edges, one at a time. */
 enum { start_rounds = 3 };
@@ -803,6 +812,11 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         }
         for (size_t m = 0; m < n_crossed; ++m) {
             const size_t e = crossed[m];
+            if (!faces_near(&fw, vertex[m])) {
+                c->base_ok = 0;
+                ++s->start_sector;
+                return 0;
+            }
             if (e >= s->memo_a && e <= s->memo_b)
                 tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, vertex[m], z0,
                                             &s->memo[e]);
@@ -822,7 +836,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         for (int m = 0; m < 2; ++m) {
             const size_t e = ends[m];
             if (e < c->f0 || e > c->f1 || c->wpos[e] != SIZE_MAX || e < s->memo_a ||
-                e > s->memo_b)
+                e > s->memo_b || !faces_near(&fw, s->memo[e].j))
                 continue;
             const long v = tirenv_springs__memo_passed(prof, &s->origin, &s->rays, e, z0,
                                                        &s->memo[e]);
