@@ -5,7 +5,10 @@
  *     slope, fx, fz as the CSV writes them, every row), and the Chrono-style outputs agree;
  *   - a load that changes every step gives, at each step, 'tirenv envelope' at that load;
  *   - an FMU state taken mid-cleat, set again (directly and through serialization), repeats
- *     the following steps bit for bit; so does one taken while the load changes every step
+ *     the following steps to round-off (the springs model's start at a new x carries the
+ *     last positions' working set, which a state does not hold: a set state starts from a
+ *     full evaluation where the run it came from started on that carry, and h may differ in
+ *     its last bits); so does one taken while the load changes every step
  *     (tirenv_model_set_load), and a state's size does not grow with the steps; a state
  *     set into an instance that was only instantiated brings its mode and time and steps on;
  *   - a serialized state with a corrupted mode is refused; NULL categories, NaN and infinite
@@ -208,6 +211,22 @@ static int run(const char *cmd)
 static fmu_api api;
 static fmi2CallbackFunctions cb = {logger, calloc, free, NULL, NULL};
 static char guid[128], resources[1200], dir[64], cli[1024];
+/* The largest |a[k] - b[k]| over n values (m), NAN where one is NaN and the other not. */
+static double max_diff(const double a[], const double b[], size_t n)
+{
+    double m = 0;
+    for (size_t k = 0; k < n; ++k) {
+        if (isnan(a[k]) != isnan(b[k]))
+            return NAN;
+        m = fmax(m, fabs(a[k] - b[k]));
+    }
+    return m;
+}
+
+/* A set state's steps against the run it came from: h within this (m), round-off of h about
+ * 0.1 m (an ulp 1.4e-17 m; the solver's tolerance on h is 1e-9 m). */
+static const double STATE_H_TOL = 1e-12;
+
 static fmi2ValueReference VR_X, VR_LOAD, VR_H, VR_SLOPE, VR_TH, VR_NX, VR_NY, VR_NZ, VR_FX,
     VR_FZ, VR_MODEL, VR_ROAD, VR_TIRE;
 
@@ -384,8 +403,9 @@ static void test_cleat(const char *road)
         st = step(d, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
         again[k - k0] = out[0];
     }
-    check(st == fmi2OK && memcmp(first_pass, again, sizeof again) == 0,
-          "after fmi2SetFMUstate the next %zu steps repeat bit for bit", n_after);
+    const double d_again = max_diff(first_pass, again, n_after);
+    check(st == fmi2OK && d_again <= STATE_H_TOL,
+          "after fmi2SetFMUstate the next %zu steps repeat, h within %.3g m", n_after, d_again);
     size_t size = 0;
     fmi2FMUstate copy = NULL;
     st = api.state_size(d, saved, &size);
@@ -401,8 +421,9 @@ static void test_cleat(const char *road)
         st = step(e, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
         restored[k - k0] = out[0];
     }
-    check(st == fmi2OK && memcmp(first_pass, restored, sizeof restored) == 0,
-          "and the new instance repeats the steps bit for bit");
+    const double d_new = max_diff(first_pass, restored, n_after);
+    check(st == fmi2OK && d_new <= STATE_H_TOL,
+          "and the new instance repeats the steps, h within %.3g m", d_new);
     /* ... into an instance that was only instantiated (fmusim's way): the state brings the
      * mode (step mode), the parameters and the time with it. */
     fmi2Component g = api.instantiate("bare", fmi2CoSimulation, guid, resources, &cb,
@@ -417,8 +438,10 @@ static void test_cleat(const char *road)
         st = step(g, (double)k * 1e-3, X_FROM + (double)k * DX, LOAD, out);
         restored[k - k0] = out[0];
     }
-    check(st == fmi2OK && memcmp(first_pass, restored, sizeof restored) == 0,
-          "and it steps on from the state's time, repeating the steps bit for bit");
+    const double d_bare = max_diff(first_pass, restored, n_after);
+    check(st == fmi2OK && d_bare <= STATE_H_TOL,
+          "and it steps on from the state's time, repeating the steps, h within %.3g m",
+          d_bare);
     api.free_instance(g);
     test_state_untrusted(d, bytes, size);
     bytes[0] ^= 1;

@@ -97,8 +97,10 @@ struct tirenv_springs {
     unsigned long long upd_serial;
     size_t updates;        /* evaluations the update gave (what the tests count) */
     /* roots proposed at a new x (tirenv_springs__start), and the updates accepted there;
-     * the starts refused because a working row's vertex left its sector (for the tests) */
-    size_t starts, start_updates, start_sector;
+     * the starts refused because a working row's vertex left its sector; the starts whose
+     * rows moved into the next sector, the rows let go at the root, and the rows entered
+     * where a vertex crossed a held element's ray (for the tests) */
+    size_t starts, start_updates, start_sector, start_across, start_released, start_entered;
     /* the continuous contact's evaluations since the last start was asked for, and whether
      * one accepted its root: what the start from the closed form's pins goes by */
     size_t evals;
@@ -557,6 +559,9 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
             tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
                                       s->w, s->p, s->d, &n_contacts)) {
             hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+            /* the tips' span: the base's, which the start may have grown by an element */
+            s->a = s->cc.f0;
+            s->b = s->cc.f1;
             /* the base's working rows (its solve's, none from the closed form's pins), as
              * the solve had them: the next evaluation's path, whichever x it is at */
             s->cc.between = !s->cc.base_pins && s->cc.n_warm > 0;
@@ -694,6 +699,14 @@ size_t tirenv_springs__start_sector(const tirenv_springs *s)
     return s->start_sector;
 }
 
+void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released,
+                                 size_t *entered)
+{
+    *across = s->start_across;
+    *released = s->start_released;
+    *entered = s->start_entered;
+}
+
 size_t tirenv_springs__face_hits(const tirenv_springs *s)
 {
     return s->face_hits;
@@ -715,6 +728,15 @@ int tirenv_springs__root(tirenv_springs *s, const tirenv_profile *prof, double x
         return 0;
     return tirenv_springs__cc_root(&s->cc, &s->cc_tire, prof, x, G, F, dfz_dz,
                                    s->S_lc[c->f0], s->S_rc[c->f1], s->dw, z_root);
+}
+
+/* Whether ground vertex v and its neighbours lie within w: what the start reads of the ground
+ * around a vertex that crossed a ray (the faces on either side), the same in a whole sweep and
+ * a streamed one. */
+static int faces_near(const tirenv_springs__face_window *w, long v)
+{
+    return tirenv_springs__face_window_has(w, v - 1) && tirenv_springs__face_window_has(w, v) &&
+           tirenv_springs__face_window_has(w, v + 1);
 }
 
 /* The working set's changes tirenv_springs__start makes at a new x before it gives up: an
@@ -775,13 +797,63 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
     for (size_t q = 0; q < c->n_schur; ++q)
         if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
             return 0;
-    /* a working row's vertex that crossed an element's ray (the root's first question,
-     * asked before the held rays' faces are found for it) */
-    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
-        ++s->start_sector;
-        return 0;
-    }
     set_origin(s, prof, x);
+    /* A working row's vertex that crossed an element's ray (the root's first question, asked
+     * before the held rays' faces are found for it): the row moved into the sector beyond,
+     * the crossed element's ray onto the vertex's other face (springs_root.c); where a row
+     * cannot move, no start (the base's rows are no longer its own). */
+    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
+        size_t crossed[TIRENV_SPRINGS__SCHUR_MAX], n_crossed;
+        long vertex[TIRENV_SPRINGS__SCHUR_MAX];
+        if (!tirenv_springs__cc_rows_across(c, &s->cc_tire, prof, x, z0, crossed, vertex,
+                                            &n_crossed)) {
+            c->base_ok = 0;
+            ++s->start_sector;
+            return 0;
+        }
+        for (size_t m = 0; m < n_crossed; ++m) {
+            const size_t e = crossed[m];
+            if (!faces_near(&fw, vertex[m])) {
+                c->base_ok = 0;
+                ++s->start_sector;
+                return 0;
+            }
+            if (e >= s->memo_a && e <= s->memo_b)
+                tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, vertex[m], z0,
+                                            &s->memo[e]);
+        }
+        s->upd_x = NAN; /* the base's tangent holds its own rows, no longer these */
+        ++s->start_across;
+    }
+    /* A ground vertex that crossed the ray of a held element at a run's end (its ray passed
+     * the far end of its face): the element is let go and the vertex's row between it and its
+     * neighbour enters the set, as for a working row carried across (springs_root.c). Not
+     * from the closed form's pins, whose held rays are cast again at the new x below. */
+    for (size_t q = 0; !c->base_pins && c->n_schur < TIRENV_SPRINGS__SCHUR_MAX &&
+                       q <= c->n_chains;
+         ++q) {
+        const size_t ends[2] = {q < c->n_chains ? c->chains[2 * q] - 1 : c->f0,
+                                q < c->n_chains ? c->chains[2 * q + 1] + 1 : c->f1};
+        for (int m = 0; m < 2; ++m) {
+            const size_t e = ends[m];
+            if (e < c->f0 || e > c->f1 || c->wpos[e] != SIZE_MAX || e < s->memo_a ||
+                e > s->memo_b || !faces_near(&fw, s->memo[e].j))
+                continue;
+            const long v = tirenv_springs__memo_passed(prof, &s->origin, &s->rays, e, z0,
+                                                       &s->memo[e]);
+            if (v < 0)
+                continue;
+            if (!tirenv_springs__cc_row_enter(c, &s->cc_tire, prof, x, z0, e, v)) {
+                if (!c->base_ok)
+                    return 0;
+                continue; /* (no row of v's to enter: the update at the root decides) */
+            }
+            tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, v, z0, &s->memo[e]);
+            s->upd_x = NAN;
+            ++s->start_entered;
+            break; /* (the chains changed) */
+        }
+    }
     /* after a round's flip: the element whose own row entered the set (the others' rays
      * were found in the rounds before, at the same x and z0), or none where one left */
     size_t e_new = SIZE_MAX;
@@ -815,9 +887,19 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                                            s->face, z0, &fw, s->rho, s->dd, s->pred_face))
                 return 0;
         }
+        size_t q_neg;
         if (!tirenv_springs__cc_root_at(c, &s->cc_tire, prof, x, z0, s->rho, s->dd, G,
-                                        s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z))
-            return 0;
+                                        s->upd_dfz_dz, s->S_lc[c->f0], s->S_rc[c->f1], z,
+                                        &q_neg)) {
+            /* a working row's reaction below 0 there: it leaves the set, as a round */
+            if (q_neg == SIZE_MAX || round == start_rounds ||
+                tirenv_springs__cc_pred_release(c, &s->cc_tire, q_neg))
+                return 0;
+            e_new = SIZE_MAX;
+            s->upd_x = NAN;
+            ++s->start_released;
+            continue;
+        }
         s->start_taken = 1; /* (a root proposed: the next position asks for one too) */
         /* The free elements' own rays at the root, on their last faces too (h: NAN where
          * none), and the held ones' reactions: where one is violated, the element's row

@@ -47,9 +47,14 @@ void tirenv_springs__reprofile(tirenv_springs *s, const tirenv_profile *old,
 /* The roots tirenv_springs__start found so far, and the updates accepted at them (for the
  * tests). */
 void tirenv_springs__start_counts(const tirenv_springs *s, size_t *starts, size_t *updates);
-/* The starts refused because a working row's vertex left its sector at the new x (for the
- * tests). */
+/* The starts refused because a working row's vertex left its sector at the new x and could
+ * not move into the next (for the tests). */
 size_t tirenv_springs__start_sector(const tirenv_springs *s);
+/* The starts whose working rows moved into the next sector, the working rows they let go for
+ * a reaction below 0 at the root, and the rows they entered where a ground vertex crossed a
+ * held element's ray (for the tests). */
+void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released,
+                                 size_t *entered);
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
@@ -178,6 +183,22 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
                               tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
                               double z, const tirenv_springs__face_window *w, double rho[],
                               double drho[], tirenv_springs__ray_memo faces[]);
+
+/* Memo m of ray i from o's centre at height z (m) on the face at ground vertex v that the ray
+ * crosses there (a working row's vertex that crossed the ray since m was walked,
+ * springs_root.c): the face into v or out of it, as the walk would end near v: 1, or 0 where
+ * neither is crossed (m then names no face: tirenv_springs__face_rho gives NAN and
+ * tirenv_springs__faces_rho 0 for it). The evaluation's fan checks it. */
+int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i, long v, double z,
+                                tirenv_springs__ray_memo *m);
+
+/* The vertex at the far end of the segment memo m of ray i ended on, where the ray from o's
+ * centre at height z (m) now passes above it (the vertex crossed the ray since the walk), else
+ * -1. */
+long tirenv_springs__memo_passed(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t i, double z,
+                                 const tirenv_springs__ray_memo *m);
 
 /* The same for one ray i: its rho, or NAN where memo m has no face. */
 double tirenv_springs__face_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
@@ -669,12 +690,14 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
  * (N/m, < 0: the last dF_z/dz known); its state kept as the update's start at (x, *z_root)
  * (c->pred_ok). The update there (which checks every row at x) decides whether it is the QP's
  * solution.
- * Returns 1, or 0 as tirenv_springs__cc_root does. docs/models.md section 4.8, A start at a
+ * Returns 1, or 0 as tirenv_springs__cc_root does, with *q_neg the working row whose reaction
+ * was below 0 at the root found (else SIZE_MAX). docs/models.md section 4.8, A start at a
  * new x. */
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,
                                const double rho[], const double drho[], double G,
-                               double slope, double S_l, double S_r, double *z_root);
+                               double slope, double S_l, double S_r, double *z_root,
+                               size_t *q_neg);
 
 /* springs_root.c: whether each working row between elements of the base (a ground vertex's)
  * still lies inside its sector at (x, z) (m), as tirenv_springs__cc_root_at first asks at
@@ -683,6 +706,16 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
 int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
                                    const tirenv_springs__cc_tire *T, const tirenv_profile *p,
                                    double x, double z);
+
+/* springs_root.c: each working row between elements whose vertex left its sector at (x, z)
+ * (m) across one of its elements' rays moved into the sector beyond, where both its elements
+ * are free in the base's span, the rows' Schur complement formed again on K_FF's kept factor;
+ * each crossed element and its row's vertex into crossed[] and vertex[] (up to
+ * TIRENV_SPRINGS__SCHUR_MAX), their count into *n_crossed: 1, or 0 where a row cannot move (the base's rows are then no longer its own: the caller
+ * drops the base). */
+int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   const tirenv_profile *p, double x, double z,
+                                   size_t crossed[], long vertex[], size_t *n_crossed);
 
 /* springs_root.c: the element whose own row the state tirenv_springs__cc_root_at kept
  * (pred_w at pred_z, its reactions pred_lam) violates most, looked for where the working set
@@ -698,6 +731,19 @@ int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
  * factorised again: 0, or 1 (the base is then dropped: base_ok 0) where it cannot be. */
 int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                  size_t e, int hold);
+
+/* Held element e let go where ground vertex v crossed its ray at (x, z) (m): v's row between e
+ * and its neighbour on v's side, found among the base's rows (not working), enters the working
+ * set (the span grown by the element beyond its end where needed), K_FF factorised again: 1, or
+ * 0 where it cannot (the base is then dropped where it changed: base_ok 0). */
+int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 const tirenv_profile *p, double x, double z, size_t e, long v);
+
+/* The base's working row q (between elements) out of the set, where the root at a new x
+ * found its reaction below 0 (tirenv_springs__cc_root_at's q_neg), the rows' Schur complement
+ * formed again: 0, or 1 (the base dropped) where it cannot be. */
+int tirenv_springs__cc_pred_release(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                    size_t q);
 
 /* After the closed form's evaluation at centre height z (m) held the elements pinned[e] of
  * [f0, f1] on their own rows with no row between elements working: that state as the base of

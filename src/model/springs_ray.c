@@ -657,6 +657,47 @@ static inline double face_rho(const tirenv_profile *p, const tirenv_springs__fan
     }
 }
 
+int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                const tirenv_springs__fan_rays *r, size_t i, long v, double z,
+                                tirenv_springs__ray_memo *m)
+{
+    const double *X = p->x, *Z = p->z;
+    const long n = (long)p->n;
+    const int dir = i > r->i0 ? 1 : -1;
+    m->drho = NAN;
+    m->j = -2; /* no face (face_rho refuses it), unless one of v's is found */
+    m->kind = RAY_HIT;
+    if (!(v - 1 >= 0 && v + 1 < n))
+        return 0;
+    /* walk()'s f at v and its neighbours: the ray below v's height at v's X ends the walk on
+     * the face into v, else on the one out of it */
+    const double drop = r->drop[i];
+    const long jv = v;
+    const double f_v = z - dir * (X[jv] - o->x) * drop - Z[jv];
+    const long j = f_v <= 0 ? jv : jv + dir, jp = j - dir;
+    const double f_p = z - dir * (X[jp] - o->x) * drop - Z[jp];
+    const double f_j = z - dir * (X[j] - o->x) * drop - Z[j];
+    /* (a face under the centre: the walk enters it at the centre, above the ground) */
+    if (!((f_p > 0 || dir * (X[jp] - o->x) < 0) && f_j <= 0))
+        return 0;
+    m->j = j;
+    m->kind = X[j] == X[jp] ? RAY_WALL : RAY_HIT;
+    return 1;
+}
+
+long tirenv_springs__memo_passed(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                                 const tirenv_springs__fan_rays *r, size_t i, double z,
+                                 const tirenv_springs__ray_memo *m)
+{
+    const long n = (long)p->n, j = m->j;
+    const int dir = i > r->i0 ? 1 : -1;
+    if (m->kind != RAY_HIT || j - dir < 0 || j - dir >= n || j < 0 || j >= n)
+        return -1;
+    /* walk()'s f at the face's far end: the ray above the ground there has passed it */
+    const double f_j = z - dir * (p->x[j] - o->x) * r->drop[i] - p->z[j];
+    return f_j > 0 ? j : -1;
+}
+
 void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double x_hi,
                                     tirenv_springs__face_window *w)
 {

@@ -218,8 +218,9 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
  * slots' B there; 0 if it does not settle or a row leaves its sector. */
 static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z0,
                   double F0, double dF0, double G, double za, double Ra, double slope0,
-                  double lam[], double B[], double g[], double *z_out)
+                  double lam[], double B[], double g[], double *z_out, size_t *q_neg)
 {
+    *q_neg = SIZE_MAX;
     double zb = za - Ra / slope0;
     for (size_t it = 0; it < max_steps; ++it) {
         double dF;
@@ -231,9 +232,12 @@ static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x
             slope = slope0;
         const double step = -Rb / slope;
         if (fabs(step) <= 1e-15 * T->R0) {
+            /* a reaction below 0 at the root: the least one's row leaves the set */
             for (size_t q = 0; q < W->k; ++q)
-                if (!(lam[q] >= 0))
-                    return 0;
+                if (!(lam[q] >= 0) && (*q_neg == SIZE_MAX || lam[q] < lam[*q_neg]))
+                    *q_neg = q;
+            if (*q_neg != SIZE_MAX)
+                return 0;
             *z_out = zb;
             return 1;
         }
@@ -293,7 +297,8 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
         return 0;
     /* The secant on F(z) - G from the base and Newton's step. */
     double lam[K_MAX], B[S_MAX], g[S_MAX], zb;
-    if (!secant(T, &W, x, z0, F0, dF0, G, z0, F0 - G, dF0, lam, B, g, &zb))
+    size_t q_neg;
+    if (!secant(T, &W, x, z0, F0, dF0, G, z0, F0 - G, dF0, lam, B, g, &zb, &q_neg))
         return 0;
     keep_state(c, &W, base_w, dw, x, zb, zb - z0, lam, B);
     *z_root = zb;
@@ -314,6 +319,159 @@ int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
     return 1;
 }
 
+/* Row R between elements i and i + 1 at t for its vertex at dx = V_x - x, dzv = z - V_z: its
+ * weights, compliance and h and their derivatives in z, as springs_rows.c puts them. */
+static void put_row(const tirenv_springs__cc_tire *T, size_t i, double t, double dx, double dzv,
+                    tirenv_springs__cc_row *R)
+{
+    const double *st = T->sin_t, *ct = T->cos_t;
+    const double s_a = dx * ct[i] - dzv * st[i], s_b = dzv * st[i + 1] - dx * ct[i + 1];
+    const double S = s_a + s_b, rho = sqrt(dx * dx + dzv * dzv);
+    const double dt_dz = (-st[i] * s_b - s_a * st[i + 1]) / (S * S);
+    double da, db;
+    R->i = i;
+    R->j = i + 1;
+    R->t = t;
+    tirenv_springs__cc_weights(T, t, &R->ga, &R->gb, &da, &db);
+    R->tau = R->gb / (R->ga + R->gb);
+    R->dga_dz = da * dt_dz;
+    R->dgb_dz = db * dt_dz;
+    R->cmp = tirenv_springs__cc_compliance(T, R->ga, R->gb);
+    R->dcmp_dz = R->cmp > 0 ? T->c0 * (da + db) * dt_dz : 0;
+    R->h = T->R0 - rho;
+    R->dh_dz = -dzv / rho;
+}
+
+/* Element e (held) out of the ascending list of held elements, free. */
+static void held_remove(tirenv_springs__cc *c, size_t e)
+{
+    size_t *held = c->held, n = c->n_held, m = 0;
+    while (m < n && held[m] < e)
+        ++m;
+    memmove(held + m, held + m + 1, (n - m - 1) * sizeof *held);
+    c->wpos[e] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
+    c->warm_pin[e] = 0;
+    --c->n_held;
+}
+
+/* A working row whose vertex crossed one of its elements' rays since the base: at the
+ * crossing both sectors' rows read w_e >= h on that element e alone (the weights are (1, 0)
+ * at t = 0 and (0, 1) at t = 1), so the working set changes by the row's other element and
+ * by e's own row: the row moves into the sector beyond e, and e, where it was held on its
+ * ray's row, is let go (its ray now passes onto the vertex's other face, below the row
+ * bearing on e). A row at the span's end takes the element beyond into the span, free.
+ * K_FF is factorised again where the span or the held elements changed, else kept; the rows'
+ * Schur complement is formed again. The row's t, weights, compliance and h at (x, z) as
+ * springs_rows.c puts a row between elements. Whatever the start then finds (an element
+ * held or let go at the runs' ends, a row's reaction below 0) it finds by its rounds. */
+int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   const tirenv_profile *p, double x, double z,
+                                   size_t crossed[], long vertex[], size_t *n_crossed)
+{
+    *n_crossed = 0;
+    const size_t N = T->N, *wpos = c->wpos;
+    const double *st = T->sin_t, *ct = T->cos_t;
+    int moved = 0, grew = 0; /* (grew: K_FF changed, a longer span or an element let go) */
+    for (size_t q = 0, k = c->n_schur; q < k; ++q) {
+        tirenv_springs__cc_row *R = &c->rows[c->order[c->schur_pos[q]] - N];
+        if (R->id < 0 || !(R->t > 0))
+            continue;
+        const double dx = p->x[R->id] - x, dzv = z - p->z[R->id];
+        double t;
+        if (row_inside(T, R->i, dx, dzv, &t))
+            continue;
+        /* past ray i (its sigma on it no longer > 0): the sector before; past ray i + 1,
+         * the one after */
+        const double s_i = dx * ct[R->i] - dzv * st[R->i];
+        if (!(s_i > 0) && R->i == 0)
+            return 0;
+        const size_t i = s_i > 0 ? R->i + 1 : R->i - 1;
+        /* a row at the span's end takes the element beyond into it (free: the QP's span
+         * ends where no row reaches), K_FF factorised again on the longer span */
+        if (i + 1 == c->f0 || i == c->f1) {
+            const size_t e = i + 1 == c->f0 ? i : i + 1;
+            if (e >= N)
+                return 0;
+            c->f0 = e < c->f0 ? e : c->f0;
+            c->f1 = e > c->f1 ? e : c->f1;
+            c->wpos[e] = 0; /* free (the layout makes its positions anew) */
+            grew = 1;
+        }
+        /* the element whose ray the vertex crossed: held on its ray's row, it is let go
+         * (its ray passed onto the vertex's other face, below the row now bearing on it) */
+        const size_t e_c = s_i > 0 ? R->i + 1 : R->i;
+        if (wpos[e_c] == SIZE_MAX) {
+            held_remove(c, e_c);
+            grew = 1;
+        }
+        if (i < c->f0 || i + 1 > c->f1 || !row_inside(T, i, dx, dzv, &t))
+            return 0;
+        crossed[*n_crossed] = e_c;
+        vertex[(*n_crossed)++] = R->id;
+        put_row(T, i, t, dx, dzv, R);
+        moved = 1;
+    }
+    /* the layout's keys name the rows by their sector: the next layout makes its own */
+    c->last_ok = 0;
+    return moved && !tirenv_springs__cc_schur_factor(c, T, !grew);
+}
+
+int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                 const tirenv_profile *p, double x, double z, size_t e, long v)
+{
+    const size_t N = T->N, k = c->n_schur;
+    if (k >= K_MAX || c->wpos[e] != SIZE_MAX || v < 0 || (size_t)v >= p->n ||
+        c->n_kkt + 1 >= c->cap_rows + N)
+        return 0;
+    /* the sector beside e that holds v, within the span or one beyond its end */
+    const double dx = p->x[v] - x, dzv = z - p->z[v];
+    double t;
+    size_t i = SIZE_MAX;
+    if (e > 0 && row_inside(T, e - 1, dx, dzv, &t))
+        i = e - 1;
+    else if (e + 1 < N && row_inside(T, e, dx, dzv, &t))
+        i = e;
+    if (i == SIZE_MAX || i + 1 < c->f0 || i > c->f1)
+        return 0;
+    /* v's row in the base's layout, not working (the layout keeps a vertex's rows on the
+     * hulls and those a solve found violated): no row is added to the layout's tables */
+    size_t r = SIZE_MAX;
+    for (size_t q = 0; q < c->n_rows && r == SIZE_MAX; ++q)
+        if (c->rows[q].id == v && c->rows[q].t > 0)
+            r = q;
+    if (r == SIZE_MAX || tirenv_springs__long_in(c->warm_ids, c->n_warm, v) ||
+        c->n_warm >= c->cap_warm)
+        return 0;
+    for (size_t q = 0; q < k; ++q)
+        if (c->order[c->schur_pos[q]] - N == r)
+            return 0;
+    if (i + 1 == c->f0 || i == c->f1) { /* the element beyond the span's end, free */
+        const size_t b = i + 1 == c->f0 ? i : i + 1;
+        c->f0 = b < c->f0 ? b : c->f0;
+        c->f1 = b > c->f1 ? b : c->f1;
+        c->wpos[b] = 0;
+        c->warm_pin[b] = 0;
+    }
+    held_remove(c, e);
+    put_row(T, i, t, dx, dzv, &c->rows[r]);
+    c->order[c->n_kkt] = N + r;
+    c->schur_pos[k] = c->n_kkt++;
+    c->n_schur = k + 1;
+    size_t m = c->n_warm++; /* warm_ids ascending */
+    while (m > 0 && c->warm_ids[m - 1] > v) {
+        c->warm_ids[m] = c->warm_ids[m - 1];
+        --m;
+    }
+    c->warm_ids[m] = v;
+    c->last_ok = 0;
+    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        return 0;
+    }
+    return 1;
+}
+
 /* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
  * z while each ray ends on the same face (the fan at (x, z_a) gives rho_e and d(rho_e)/dz);
  * the free ones solve K_FF w_F = b_F(z) + G_W(z)^T lambda with the base's K_FF (it depends
@@ -327,9 +485,11 @@ int tirenv_springs__cc_rows_inside(const tirenv_springs__cc *c,
 int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                const tirenv_profile *p, double x, double z_a,
                                const double rho[], const double drho[], double G,
-                               double slope, double S_l, double S_r, double *z_root)
+                               double slope, double S_l, double S_r, double *z_root,
+                               size_t *q_neg)
 {
     c->pred_ok = 0;
+    *q_neg = SIZE_MAX;
     const size_t f0 = c->f0, f1 = c->f1, k = c->n_schur;
     if (!c->base_ok || !c->use_schur || !c->tri_ok || f0 > f1 || k > K_MAX ||
         c->held_vertex > 0 || !(slope < 0))
@@ -400,7 +560,7 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
     double lam[K_MAX], B[S_MAX], g[S_MAX], zb, dF;
     if (!at_height(T, &W, x, z_a, 0, lam, B, g, &dF))
         return 0;
-    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, g, &zb))
+    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, g, &zb, q_neg))
         return 0;
     for (size_t s = 0; s < 2 * k; ++s) { /* each row's load on its elements, for the check */
         c->pred_el[s] = W.el[s];
@@ -524,9 +684,37 @@ int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc
         c->wpos[e] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
         --c->n_held;
     }
+    /* the next QP's warm start: the working set as it now stands (the full evaluations come
+     * seldom where the start holds, and a warm start many positions old costs them several
+     * equality problems more) */
+    c->warm_pin[e] = (unsigned char)hold;
     /* the next layout lays out its own KKT system (wpos no longer the last one's) */
     c->last_ok = 0;
     if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+        c->base_ok = 0;
+        c->pred_ok = 0;
+        return 1;
+    }
+    return 0;
+}
+
+int tirenv_springs__cc_pred_release(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                    size_t q)
+{
+    const long id = c->rows[c->order[c->schur_pos[q]] - T->N].id;
+    memmove(c->schur_pos + q, c->schur_pos + q + 1, (c->n_schur - q - 1) * sizeof *c->schur_pos);
+    --c->n_schur;
+    /* no longer a working row: the update checks it as an inequality (warm_ids names the
+     * working rows between elements, ascending) */
+    size_t m = 0, n = c->n_warm;
+    while (m < n && c->warm_ids[m] != id)
+        ++m;
+    if (m < n) {
+        memmove(c->warm_ids + m, c->warm_ids + m + 1, (n - m - 1) * sizeof *c->warm_ids);
+        --c->n_warm;
+    }
+    c->last_ok = 0;
+    if (tirenv_springs__cc_schur_factor(c, T, 1)) {
         c->base_ok = 0;
         c->pred_ok = 0;
         return 1;

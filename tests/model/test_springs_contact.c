@@ -836,7 +836,12 @@ static void test_root_is_the_equilibrium(void **state)
  * sector, a ray onto another face) the evaluation is the full one, so the forces and tips are a
  * fresh model's either way (1e-9 of F_z, 1e-13 R0 as above). Seeded random obstacles and roads,
  * steps of 0.5 to 3 mm, loads 1e-6 to 1e-3 m off the last evaluation; then a start 40 mm on, where
- * the working set cannot hold (each refused or, found, checked). */
+ * the working set cannot hold (each refused or, found, checked). The starts whose working rows
+ * moved into the next sector (tirenv_springs__cc_rows_across: the crossed element let go, the
+ * span grown), those that let a row go for a reaction below 0 at the root and those that
+ * entered a vertex's row where it crossed a held element's ray (the element let go) are
+ * counted, and must be taken by the update at some roots: their forces and tips checked as
+ * every other. */
 static void test_start_is_the_equilibrium(void **state)
 {
     (void)state;
@@ -851,6 +856,10 @@ static void test_start_is_the_equilibrium(void **state)
     assert_true(w_h && w_c);
     size_t tried = 0, found = 0, accepted = 0, refused = 0, far_found = 0, far_taken = 0;
     size_t sector = 0, sector_checked = 0;
+    /* starts whose working rows moved into the next sector (found, and the update taken
+     * there), and those that let a row go for a reaction below 0 */
+    size_t across_found = 0, across_taken = 0, release_found = 0, release_taken = 0;
+    size_t enter_found = 0, enter_taken = 0; /* a vertex's row entered at a held ray */
     int check_next = 0;
     double worst_F = 0, worst_w = 0;
     for (int trial = 0; trial < 40; ++trial) {
@@ -880,6 +889,8 @@ static void test_start_is_the_equilibrium(void **state)
             size_t s0, u0, s1, u1;
             tirenv_springs__start_counts(hot, &s0, &u0);
             const size_t sec0 = tirenv_springs__start_sector(hot);
+            size_t ac0, re0, en0, ac1, re1, en1;
+            tirenv_springs__start_moves(hot, &ac0, &re0, &en0);
             double z_s;
             ++tried;
             if (!tirenv_springs__start(hot, p, x, z0, G, &z_s)) {
@@ -892,6 +903,11 @@ static void test_start_is_the_equilibrium(void **state)
             }
             found += !far;
             far_found += far;
+            tirenv_springs__start_moves(hot, &ac1, &re1, &en1);
+            const int across = ac1 > ac0, release = re1 > re0, enter = en1 > en0;
+            across_found += across;
+            release_found += release;
+            enter_found += enter;
             double fx_h, fz_h, d_h;
             size_t c_h;
             assert_int_equal(tirenv_springs_forces(hot, p, x, z_s, &fx_h, &fz_h, &d_h, &c_h,
@@ -904,6 +920,9 @@ static void test_start_is_the_equilibrium(void **state)
             if (upd) { /* the working set held at the new x: the QP's solution there */
                 accepted += !far;
                 far_taken += far;
+                across_taken += across;
+                release_taken += release;
+                enter_taken += enter;
                 worst_F = fmax(worst_F, fabs(fz_c - G));
                 assert_true(fabs(fz_c - G) <= 1e-6);
             } else {
@@ -919,10 +938,18 @@ static void test_start_is_the_equilibrium(void **state)
                   tried, found, accepted, refused, far_found, far_taken, worst_F, worst_w);
     print_message("%zu starts refused because a working row's vertex left its sector, the "
                   "evaluation after %zu of them a fresh model's\n", sector, sector_checked);
+    print_message("a working row moved into the next sector at %zu roots (the update taken "
+                  "at %zu), a row let go at %zu (taken at %zu), a vertex's row entered at a "
+                  "held ray at %zu (taken at %zu)\n", across_found, across_taken,
+                  release_found, release_taken, enter_found, enter_taken);
     assert_true(found > tried / 4);
     assert_true(accepted > found / 2);
     assert_true(refused > 0);
-    assert_true(sector_checked > 0); /* the sector change exercised */
+    /* the sector change exercised: rows moved into the next sector, and a row let go, each
+     * at roots the update took (a fresh model's forces and tips above, F_z at the load) */
+    assert_true(across_taken > 0);
+    assert_true(release_taken > 0);
+    assert_true(enter_taken > 0);
     free(w_h);
     free(w_c);
 }
