@@ -774,7 +774,8 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
     for (size_t i = 0; i < sizeof r->root / sizeof *rd; ++i)
         root_ok &= isfinite(rd[i]);
     root_ok &= r->root.n[0] >= 0 && r->root.n[0] <= TIRENV_RING_ROOT_KEEP &&
-               r->root.n[1] >= 0 && r->root.n[1] <= TIRENV_RING_ROOT_KEEP;
+               r->root.n[1] >= 0 && r->root.n[1] <= TIRENV_RING_ROOT_KEEP &&
+               r->root.eq_n >= 0 && r->root.eq_n <= TIRENV_RING_START_KEEP;
     if (!root_ok)
         tirenv_ring__root_clear(r);
 }

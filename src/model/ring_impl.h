@@ -32,6 +32,10 @@ static inline int tirenv_ring__same_bits(const double *a, const double *b, size_
 /* Curvatures the ring's step in z keeps per side (ring_root.c). */
 #define TIRENV_RING_ROOT_KEEP 3
 
+/* Equilibria the ring's start at a new x keeps (ring_root.c): the mean slope over the last
+ * TIRENV_RING_START_KEEP - 1 steps. */
+#define TIRENV_RING_START_KEEP 4
+
 /* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface
  * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */
 #define TIRENV_RING_GROUND_LAYER 1e4
@@ -150,6 +154,11 @@ typedef struct {
     double n[2];           /* how many of c[s] hold one */
     double x, z, F, k;     /* the step's evaluation: m, m, N, N/m */
     double have;           /* 1: x .. k hold it */
+    double ex, ez;         /* the last evaluation: m, m */
+    double eq_x[TIRENV_RING_START_KEEP], eq_z[TIRENV_RING_START_KEEP]; /* the equilibria
+                            * before, newest first: m, m */
+    double eq_n;           /* how many of eq_x, eq_z hold one; ex, ez too if > 0 */
+    double e_have;         /* 1: ex, ez hold an evaluation */
 } tirenv_ring_root;
 
 struct tirenv_ring {
@@ -444,5 +453,12 @@ int tirenv_ring__defer_slope(tirenv_ring *r, int on);
 int tirenv_ring__deferring(const tirenv_ring *r);
 int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz);
 int tirenv_ring__slope(tirenv_ring *r, double *dfz_dz);
+
+/* The ring's start at a new x (ring_root.c): every evaluation at (x, z) (m) is recorded
+ * (tirenv_ring__root_eval); before the first at a new x, the last evaluation at the x before
+ * is taken as its equilibrium, and where the last TIRENV_RING_START_KEEP equilibria lie a
+ * step apart up to x, *z (m) is the last one continued by their mean slope (returns 1). */
+void tirenv_ring__root_eval(tirenv_ring *r, double x, double z);
+int tirenv_ring__root_start(tirenv_ring *r, double x, double *z);
 
 #endif
