@@ -165,6 +165,7 @@ void tirenv_ring_free(tirenv_ring *r)
     free(r->pc_vk);
     free(r->gap_d);
     free(r->gaps);
+    free(r->gaps_prev);
     free(r->gap_on);
     free(r->key);
     tirenv_ring__belt_free(r->belt);

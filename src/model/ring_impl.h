@@ -142,6 +142,12 @@ typedef struct {
                                     * bits (no zero-length piece left out between them) */
     double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
     double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
+    /* Its last sampling, for the next at the same x (ring_ground.c, shift_whole): the cursor
+     * its line's walk ended at, the index of its first point (the point it joined, if it
+     * joined the piece before's last) and whether it joined. */
+    long vk;
+    size_t q0;
+    int joined;
 } tirenv_ring_piece;
 
 /* The ring's own step in z (ring_root.c): F_z's curvature in z, measured at the positions
@@ -225,6 +231,14 @@ struct tirenv_ring {
     const tirenv_profile *smp_p;
     double smp_x, smp_z, smp_kt;
     size_t smp_ja, smp_jb;
+    /* A sampling at the same x from the last one's points (ring_ground.c, shift_whole):
+     * shift_ok, that sampling's points and its pieces' records are whole; its points' count
+     * and window; its gaps (gaps_prev, n_gaps_prev intervals); n_shifted: samplings made so
+     * (the tests count them). */
+    int shift_ok;
+    size_t shift_n_pts, shift_win[2];
+    size_t *gaps_prev, n_gaps_prev;
+    size_t n_shifted;
     double *g;             /* per node: the belt layer's share of F, N */
     /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
      * the window and, of each point in contact, its interval, place, weight, stiffness and

@@ -485,11 +485,13 @@ static void test_state_restores_bits(void **state)
 
 /* The ground's points of a sampling at the same x as the last (ring_ground.c keeps its
  * pieces where the vertex cuts stay in their node intervals, their ends at the vertices taking
- * the new angles) are those of a fresh ring's sampling there, bit for bit: over a cleat and a
- * 5 mm blade, whose corners lie between nodes, at heights 1e-6 m apart (the pieces kept) and
- * 5 mm apart (a corner's cut may move to another interval: built afresh). The forces agree to
- * the round-off of a solve from another start (test_warm_starts_agree), and the pieces were
- * kept at least once a profile (so the comparison tests the kept pieces). */
+ * the new angles, and moves the points of the pieces between two nodes along their rays where
+ * every piece's line is the last one's: shift_whole) are those of a fresh ring's sampling
+ * there, bit for bit: over a cleat and a 5 mm blade, whose corners lie between nodes, at
+ * heights 1e-6 m apart (the pieces kept) and 5 mm apart (a corner's cut may move to another
+ * interval: built afresh). The forces agree to the round-off of a solve from another start
+ * (test_warm_starts_agree), and the pieces were kept, and the points moved, at least once a
+ * profile (so the comparison tests both). */
 static void test_same_x_points(void **state)
 {
     (void)state;
@@ -498,7 +500,7 @@ static void test_same_x_points(void **state)
     const double xs[] = {-0.2137, -0.0311, 0.0457}, z0[2] = {0.611, 0.625};
     const double dzs[] = {1e-6, 5e-3, -2.3e-6};
     for (size_t c = 0; c < 2; ++c) {
-        size_t kept = 0, compared = 0;
+        size_t kept = 0, compared = 0, shifted = 0;
         for (size_t i = 0; i < 3; ++i) {
             tirenv_ring *kept_r = tirenv_ring_alloc(t.springs.R0, &t.ring);
             assert_non_null(kept_r);
@@ -508,10 +510,11 @@ static void test_same_x_points(void **state)
                                                 NULL), 0);
             for (size_t k = 0; k < 3; ++k) {
                 z += dzs[k];
-                const size_t before = kept_r->n_kept;
+                const size_t before = kept_r->n_kept, moved = kept_r->n_shifted;
                 assert_int_equal(tirenv_ring_forces(kept_r, ps[c], xs[i], z, &fx1, &fz1, &d1,
                                                     NULL, NULL), 0);
                 kept += kept_r->n_kept - before;
+                shifted += kept_r->n_shifted - moved;
                 tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
                 assert_non_null(fresh);
                 assert_int_equal(tirenv_ring_forces(fresh, ps[c], xs[i], z, &fx2, &fz2, &d2,
@@ -540,6 +543,7 @@ static void test_same_x_points(void **state)
         }
         assert_int_equal(compared, 9);
         assert_true(kept >= 1);
+        assert_true(shifted >= 1);
     }
     tirenv_profile_free(ps[0]);
     tirenv_profile_free(ps[1]);
