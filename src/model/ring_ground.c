@@ -569,6 +569,8 @@ static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double
     tirenv_ring_point *const pts = r->pts;
     line_k lk = {0, 0, 0};
     int moved_last = 0; /* the last point was written whole (its weight only its piece's) */
+    long k_line = -2;   /* the walk's end whose line lk holds, on side dir_line; -2: none */
+    int dir_line = 0;
     for (size_t t = 0; t < n_lines; ++t) {
         const tirenv_ring_piece *const ct = &c[t];
         if (!ct->hit) { /* in a gap (the same gaps), or no line: then not the same */
@@ -578,23 +580,30 @@ static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double
         }
         const long k = ct->vk;
         const double sx = ct->sa + ct->sb;
+        const int dir = sx > 0 ? 1 : -1;
+        if (sx == 0) /* straight down: no walk */
+            return 0;
         if (k >= 0 && k < n) {
-            if (!(fabs(X[k] - x) <= reach && Z[k] < z) || sx == 0)
+            if ((k != k_line || dir != dir_line) && /* else the piece before's, checked */
+                !(fabs(X[k] - x) <= reach && Z[k] < z))
                 return 0;
         } else {
             /* Past the profile's last vertex that way, every one passed above (each a cut):
              * the flat extension, met within reach by the margin of its test. */
             const long e = sx > 0 ? n - 1 : 0;
             const double cz = ct->ca + ct->cb, lhs = (z - Z[e]) * fabs(sx);
-            if (sx == 0 || k != (sx > 0 ? n : -1) || !(lhs < (1 - LINE_MARGIN) * reach * cz))
+            if (k != (sx > 0 ? n : -1) || !(lhs < (1 - LINE_MARGIN) * reach * cz))
                 return 0;
+        }
+        if (k != k_line || dir != dir_line) { /* a line of its own (its walk's end) */
+            line_of(ct->L, x, z, &lk);
+            k_line = k, dir_line = dir;
         }
         tirenv_ring_point *const q = pts + ct->q0 + ct->joined;
         if (ct->da != 0 || ct->db != 0) { /* a vertex cut at an end: written whole */
             if (!(ct->pb - ct->pa > LINE_MARGIN))
                 return 0;
             const double omega = 0.5 * (ct->pb - ct->pa), th = r->theta[ct->j];
-            line_of(ct->L, x, z, &lk);
             if (ct->joined) { /* the point it joins: the piece before's half, and its own */
                 q[-1].omega = 0.5 * (c[t - 1].pb - c[t - 1].pa);
                 q[-1].omega += omega;
@@ -616,21 +625,17 @@ static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double
             q[-1].ends = 3;
         }
         moved_last = 0;
-        int line = 0;
         for (int e = ct->joined; e < 2; ++e) {
             tirenv_ring_point *const pe = q + (e - ct->joined);
             if (!(pe->d > -t_r)) { /* out of reach: computed again, and must stay so */
                 const double omega = 0.5 * (ct->pb - ct->pa), th = r->theta[ct->j];
                 size_t w[2] = {wl[0], wl[1]};
-                line_of(ct->L, x, z, &lk), line = 1;
                 piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe);
                 if (pe->d > -t_r)
                     return 0;
                 moved_last = e == 1; /* its weight and ends as the moved pieces' */
                 continue;
             }
-            if (!line)
-                line_of(ct->L, x, z, &lk), line = 1;
             /* rho_on's and piece_point's operations on the same operands: the same bits. */
             const double den = pe->sn * lk.dZ + pe->cs * lk.dX, rho = lk.num / den,
                          d = R0 - rho;
