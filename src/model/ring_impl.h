@@ -163,8 +163,10 @@ typedef struct {
     double ex, ez;         /* the last evaluation: m, m */
     double eq_x[TIRENV_RING_START_KEEP], eq_z[TIRENV_RING_START_KEEP]; /* the equilibria
                             * before, newest first: m, m */
-    double eq_n;           /* how many of eq_x, eq_z hold one; ex, ez too if > 0 */
+    double eq_n;           /* how many of eq_x, eq_z hold one */
     double e_have;         /* 1: ex, ez hold an evaluation */
+    double s_mean, s_line; /* the two starts' decayed squared misses, m^2 */
+    double scored;         /* 1: s_mean, s_line hold a score */
 } tirenv_ring_root;
 
 struct tirenv_ring {
@@ -471,7 +473,8 @@ int tirenv_ring__slope(tirenv_ring *r, double *dfz_dz);
 /* The ring's start at a new x (ring_root.c): every evaluation at (x, z) (m) is recorded
  * (tirenv_ring__root_eval); before the first at a new x, the last evaluation at the x before
  * is taken as its equilibrium, and where the last TIRENV_RING_START_KEEP equilibria lie a
- * step apart up to x, *z (m) is the last one continued by their mean slope (returns 1). */
+ * step apart up to x, and their mean slope has predicted the equilibria before better than
+ * the line through the last two, *z (m) is the last one continued by that slope (returns 1). */
 void tirenv_ring__root_eval(tirenv_ring *r, double x, double z);
 int tirenv_ring__root_start(tirenv_ring *r, double x, double *z);
 

@@ -193,42 +193,51 @@ static void test_fewer_evaluations(void **state)
 
 /* The start at a new x (tirenv_ring__root_start): the last evaluation at each x is taken as
  * its equilibrium, and with TIRENV_RING_START_KEEP of them a step apart up to x the start is
- * the last continued by their mean slope; none over a gap in x (a level stretch evaluated
- * nothing), with fewer equilibria, or after a clear. */
+ * the last continued by their mean slope, where that has predicted the equilibria before
+ * better than the line through the last two: over a ripple (h alternating about a slope, as
+ * the node spacing makes it at 1 mm) it has, over a smooth curve (a parabola, as a cleat's
+ * flank at coarse steps) the line has, and there is none. None over a gap in x (a level
+ * stretch evaluated nothing) or after a clear. */
+static double rippled(int i) { return 0.6295 + 2.7e-3 * i + (i % 2 ? 3.1e-6 : -2.3e-6); }
+static double curved(int i) { return 0.6295 + 2.7e-3 * i + 4.1e-4 * i * i; }
+
 static void test_start_record(void **state)
 {
     (void)state;
-    tirenv_ring *r = default_ring();
     enum { K = TIRENV_RING_START_KEEP };
     const double h = 0.001, x0 = -0.4137;
-    double z;
-    double zs[K + 1];
-    for (int i = 0; i <= K; ++i) {
-        const double x = x0 + h * i;
-        zs[i] = 0.6295 + 3.1e-4 * sin(7.3 * i) + 2.7e-3 * i;
-        if (i == K) {
-            assert_true(tirenv_ring__root_start(r, x, &z));
-            const double want = zs[K - 1] + (zs[K - 1] - zs[0]) / (K - 1);
-            assert_near(z, want, 1e-15, 0);
-            break;
+    for (int c = 0; c < 2; ++c) {
+        double (*zf)(int) = c == 0 ? rippled : curved;
+        tirenv_ring *r = default_ring();
+        double z;
+        int given = 0;
+        for (int i = 0; i < 3 * K; ++i) {
+            const double x = x0 + h * i;
+            if (tirenv_ring__root_start(r, x, &z)) {
+                const double want = zf(i - 1) + (zf(i - 1) - zf(i - K)) / (K - 1);
+                assert_near(z, want, 1e-15, 0);
+                ++given;
+            }
+            tirenv_ring__root_eval(r, x, zf(i) + 2.3e-5); /* Newton's iterates at x ... */
+            tirenv_ring__root_eval(r, x, zf(i));          /* ... the last its equilibrium */
         }
-        assert_int_equal(tirenv_ring__root_start(r, x, &z), 0); /* fewer than K before */
-        tirenv_ring__root_eval(r, x, zs[i] + 2.3e-5); /* Newton's iterates at x ... */
-        tirenv_ring__root_eval(r, x, zs[i]);          /* ... the last its equilibrium */
+        if (c == 0)
+            assert_int_equal(given, 3 * K - (K + 1)); /* from the first position scored on */
+        else
+            assert_int_equal(given, 0);
+        /* A gap in x: none; and none after a clear. */
+        assert_int_equal(tirenv_ring__root_start(r, x0 + h * (3 * K + 3), &z), 0);
+        tirenv_ring__root_clear(r);
+        assert_int_equal(tirenv_ring__root_start(r, x0, &z), 0);
+        tirenv_ring_free(r);
     }
-    /* A gap in x: none, and none again until K equilibria lie a step apart. */
-    tirenv_ring__root_eval(r, x0 + h * K, zs[K - 1]);
-    assert_int_equal(tirenv_ring__root_start(r, x0 + h * (K + 3), &z), 0);
-    tirenv_ring__root_clear(r);
-    assert_int_equal(tirenv_ring__root_start(r, x0, &z), 0);
-    tirenv_ring_free(r);
 }
 
 /* Over seeded cleats and a 5 mm blade at 1 mm steps, Newton by hand with the ring's step from
- * the start of tirenv_ring__root_start against from the line through the last two equilibria
- * (each ring its own curvatures): the same equilibria within 2 eps_z, and starts closer to
- * them (the evaluations the parabola's step then saves are the bench sweep's, measured in
- * docs/perf-s20-ring.md; over these few hundred positions they come out even). */
+ * the start of tirenv_ring__root_start where it gives one, against from the line through the
+ * last two equilibria (each ring its own curvatures): the same equilibria within 2 eps_z, and
+ * where the mean slope was taken (233 of 450 positions, measured) starts closer to them (4.9e-6
+ * against 8.9e-6 m on average, measured; the evaluations 1.638 against 1.647 a position). */
 static void test_start_closer(void **state)
 {
     (void)state;
@@ -282,7 +291,7 @@ static void test_start_closer(void **state)
                   "line %.3g m); %.3f evaluations a position (the line %.3f); z within %.3g m\n",
                   n, started, off[0] / (double)started, off[1] / (double)started,
                   (double)ev[0] / (double)n, (double)ev[1] / (double)n, worst);
-    assert_true(started > n / 2);
+    assert_true(started > n / 4);
     assert_true(off[0] < 0.8 * off[1]);
 }
 
