@@ -123,34 +123,39 @@ static double by_mean(const tirenv_ring_root *rt)
 
 static double by_line(const tirenv_ring_root *rt) { return 2 * rt->eq_z[0] - rt->eq_z[1]; }
 
+/* The last evaluation taken as its x's equilibrium, once x has moved on: the two starts
+ * scored on it, where they had the steps for it, and it joins the equilibria held. */
+static void push_last(tirenv_ring_root *rt, double x)
+{
+    if (!(rt->e_have != 0 && !tirenv_ring__same_bits(&x, &rt->ex, 1)))
+        return;
+    if (in_steps(rt, rt->ex)) {
+        const double em = rt->ez - by_mean(rt), el = rt->ez - by_line(rt);
+        rt->s_mean = START_DECAY * rt->s_mean + em * em;
+        rt->s_line = START_DECAY * rt->s_line + el * el;
+        rt->scored = 1;
+    } else {
+        rt->s_mean = rt->s_line = rt->scored = 0;
+    }
+    memmove(rt->eq_x + 1, rt->eq_x, (TIRENV_RING_START_KEEP - 1) * sizeof *rt->eq_x);
+    memmove(rt->eq_z + 1, rt->eq_z, (TIRENV_RING_START_KEEP - 1) * sizeof *rt->eq_z);
+    rt->eq_x[0] = rt->ex, rt->eq_z[0] = rt->ez;
+    if (rt->eq_n < TIRENV_RING_START_KEEP)
+        rt->eq_n += 1;
+    rt->e_have = 0;
+}
+
 void tirenv_ring__root_eval(tirenv_ring *r, double x, double z)
 {
     tirenv_ring_root *rt = &r->root;
-    if (rt->e_have != 0 && !tirenv_ring__same_bits(&x, &rt->ex, 1)) {
-        /* The last evaluation at the x before is its equilibrium (Newton's last iterate):
-         * the two starts scored on it, where they had the steps for it. */
-        if (in_steps(rt, rt->ex)) {
-            const double em = rt->ez - by_mean(rt), el = rt->ez - by_line(rt);
-            rt->s_mean = START_DECAY * rt->s_mean + em * em;
-            rt->s_line = START_DECAY * rt->s_line + el * el;
-            rt->scored = 1;
-        } else {
-            rt->s_mean = rt->s_line = rt->scored = 0;
-        }
-        memmove(rt->eq_x + 1, rt->eq_x, (TIRENV_RING_START_KEEP - 1) * sizeof *rt->eq_x);
-        memmove(rt->eq_z + 1, rt->eq_z, (TIRENV_RING_START_KEEP - 1) * sizeof *rt->eq_z);
-        rt->eq_x[0] = rt->ex, rt->eq_z[0] = rt->ez;
-        if (rt->eq_n < TIRENV_RING_START_KEEP)
-            rt->eq_n += 1;
-    }
+    push_last(rt, x); /* Newton's last iterate at the x before was its equilibrium */
     rt->ex = x, rt->ez = z, rt->e_have = 1;
 }
 
 int tirenv_ring__root_start(tirenv_ring *r, double x, double *z)
 {
     tirenv_ring_root *rt = &r->root;
-    tirenv_ring__root_eval(r, x, NAN); /* the equilibrium at the x before, if evaluated */
-    rt->e_have = 0;                    /* (the first evaluation here records itself) */
+    push_last(rt, x);
     if (!(in_steps(rt, x) && rt->scored != 0 && rt->s_mean < rt->s_line))
         return 0;
     *z = by_mean(rt);
