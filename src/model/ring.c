@@ -165,6 +165,7 @@ void tirenv_ring_free(tirenv_ring *r)
     free(r->pc_vk);
     free(r->gap_d);
     free(r->gaps);
+    free(r->gaps_prev);
     free(r->gap_on);
     free(r->key);
     tirenv_ring__belt_free(r->belt);
@@ -774,7 +775,8 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
     for (size_t i = 0; i < sizeof r->root / sizeof *rd; ++i)
         root_ok &= isfinite(rd[i]);
     root_ok &= r->root.n[0] >= 0 && r->root.n[0] <= TIRENV_RING_ROOT_KEEP &&
-               r->root.n[1] >= 0 && r->root.n[1] <= TIRENV_RING_ROOT_KEEP;
+               r->root.n[1] >= 0 && r->root.n[1] <= TIRENV_RING_ROOT_KEEP &&
+               r->root.eq_n >= 0 && r->root.eq_n <= TIRENV_RING_START_KEEP;
     if (!root_ok)
         tirenv_ring__root_clear(r);
 }

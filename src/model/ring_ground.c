@@ -381,13 +381,16 @@ static int reserve_gaps(tirenv_ring *r)
         return 0;
     r->gap_d = malloc(r->M * sizeof *r->gap_d);
     r->gaps = malloc(2 * r->M * sizeof *r->gaps);
+    r->gaps_prev = malloc(2 * r->M * sizeof *r->gaps_prev);
     r->gap_on = calloc(r->M, 1);
-    if (!r->gap_d || !r->gaps || !r->gap_on) {
+    if (!r->gap_d || !r->gaps || !r->gaps_prev || !r->gap_on) {
         free(r->gap_d);
         free(r->gaps);
+        free(r->gaps_prev);
         free(r->gap_on);
         r->gap_d = NULL;
         r->gaps = NULL;
+        r->gaps_prev = NULL;
         r->gap_on = NULL;
         return TIRENV_ENOMEM;
     }
@@ -474,7 +477,18 @@ static void clear_gaps(tirenv_ring *r)
 {
     for (size_t g = 0; g < r->n_gaps; ++g)
         memset(r->gap_on + r->gaps[2 * g], 0, r->gaps[2 * g + 1] + 1 - r->gaps[2 * g]);
+    if (r->n_gaps) /* kept for shift_whole (gaps_prev exists with gaps) */
+        memcpy(r->gaps_prev, r->gaps, 2 * r->n_gaps * sizeof *r->gaps);
+    r->n_gaps_prev = r->n_gaps;
     r->n_gaps = 0;
+}
+
+/* Whether this sampling's gaps are the last one's intervals. */
+static int same_gaps(const tirenv_ring *r)
+{
+    return r->n_gaps == r->n_gaps_prev &&
+           (r->n_gaps == 0 ||
+            memcmp(r->gaps, r->gaps_prev, 2 * r->n_gaps * sizeof *r->gaps) == 0);
 }
 
 int tirenv_ring__gaps_clear(const tirenv_ring *r, const double xw[])
@@ -522,6 +536,119 @@ int tirenv_ring__sample_whole(tirenv_ring *r)
     return sample_again(r, win);
 }
 
+/* A sampling at the same x again, from the last one's points (docs/models.md 5.3; the same
+ * bits). Where the pieces are the last sampling's (same_pieces: the same vertex cuts in the
+ * same order, each in the same node interval) and so are the gaps, each piece's middle ray
+ * still lies between the same two cuts. Its walk ends at the first vertex (outward) that the
+ * ray passes at or below, every vertex before it passed above; for a vertex within reach
+ * horizontally and below the centre that test is whether the vertex's angle seen from the
+ * centre lies beyond the ray's, and every such vertex is a cut, on the same side of the ray as
+ * before. So where each piece's walk ended at such a vertex (or past the profile's last, with
+ * the flat extension there within reach by a margin), and each piece is wider than
+ * LINE_MARGIN rad (the test's and the angles' round-off, some 1e-15 rad, cannot then order a
+ * vertex differently), every piece meets the last sampling's line, and its points lie where
+ * that sampling wrote them. A node's point keeps its angle, place, weight, d(d)/dz and
+ * stiffness; only its d and ground abscissa move with z, computed again from the line by
+ * rho_on's and piece_point's operations: the bits of a fresh sampling, without the walks, the
+ * pieces' and points' other fields. The pieces with a vertex cut at an end (its angle moves
+ * with z) are written whole, as is a point out of reach (its d is not kept). Returns 0 where a
+ * piece's line may not be the same (a walk that passed no cut, a piece without a line outside
+ * the gaps, a narrow piece) or a point comes into or out of reach (the window would change):
+ * the caller then samples as usual, which writes every point again. wl: the window, the last
+ * sampling's. */
+static const double LINE_MARGIN = 1e-9;
+
+static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double z,
+                       double reach, double k_t, size_t wl[2])
+{
+    const tirenv_ring_piece *const c = r->lines;
+    const size_t n_lines = (r->smp_jb - r->smp_ja) + r->pc_nv;
+    const long n = (long)p->n;
+    const double *X = p->x, *Z = p->z;
+    const double t_r = r->par.t_r, R0 = r->R0;
+    tirenv_ring_point *const pts = r->pts;
+    line_k lk = {0, 0, 0};
+    int moved_last = 0; /* the last point was written whole (its weight only its piece's) */
+    long k_line = -2;   /* the walk's end whose line lk holds, on side dir_line; -2: none */
+    int dir_line = 0;
+    for (size_t t = 0; t < n_lines; ++t) {
+        const tirenv_ring_piece *const ct = &c[t];
+        if (!ct->hit) { /* in a gap (the same gaps), or no line: then not the same */
+            if (!(r->n_gaps && in_gap(r, ct->j)))
+                return 0;
+            continue;
+        }
+        const long k = ct->vk;
+        const double sx = ct->sa + ct->sb;
+        const int dir = sx > 0 ? 1 : -1;
+        if (sx == 0) /* straight down: no walk */
+            return 0;
+        if (k >= 0 && k < n) {
+            if ((k != k_line || dir != dir_line) && /* else the piece before's, checked */
+                !(fabs(X[k] - x) <= reach && Z[k] < z))
+                return 0;
+        } else {
+            /* Past the profile's last vertex that way, every one passed above (each a cut):
+             * the flat extension, met within reach by the margin of its test. */
+            const long e = sx > 0 ? n - 1 : 0;
+            const double cz = ct->ca + ct->cb, lhs = (z - Z[e]) * fabs(sx);
+            if (k != (sx > 0 ? n : -1) || !(lhs < (1 - LINE_MARGIN) * reach * cz))
+                return 0;
+        }
+        if (k != k_line || dir != dir_line) { /* a line of its own (its walk's end) */
+            line_of(ct->L, x, z, &lk);
+            k_line = k, dir_line = dir;
+        }
+        tirenv_ring_point *const q = pts + ct->q0 + ct->joined;
+        if (ct->da != 0 || ct->db != 0) { /* a vertex cut at an end: written whole */
+            if (!(ct->pb - ct->pa > LINE_MARGIN))
+                return 0;
+            const double omega = 0.5 * (ct->pb - ct->pa), th = r->theta[ct->j];
+            if (ct->joined) { /* the point it joins: the piece before's half, and its own */
+                q[-1].omega = 0.5 * (c[t - 1].pb - c[t - 1].pa);
+                q[-1].omega += omega;
+                q[-1].ends = 3;
+            }
+            size_t w[2] = {wl[0], wl[1]};
+            for (int e = ct->joined; e < 2; ++e) {
+                tirenv_ring_point *const pe = q + (e - ct->joined);
+                const int in = pe->d > -t_r;
+                piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe);
+                if ((pe->d > -t_r) != in) /* into or out of reach: the window may change */
+                    return 0;
+            }
+            moved_last = 1;
+            continue;
+        }
+        if (ct->joined && moved_last) { /* written whole with the piece before's half only */
+            q[-1].omega += 0.5 * (ct->pb - ct->pa);
+            q[-1].ends = 3;
+        }
+        moved_last = 0;
+        for (int e = ct->joined; e < 2; ++e) {
+            tirenv_ring_point *const pe = q + (e - ct->joined);
+            if (!(pe->d > -t_r)) { /* out of reach: computed again, and must stay so */
+                const double omega = 0.5 * (ct->pb - ct->pa), th = r->theta[ct->j];
+                size_t w[2] = {wl[0], wl[1]};
+                piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe);
+                if (pe->d > -t_r)
+                    return 0;
+                moved_last = e == 1; /* its weight and ends as the moved pieces' */
+                continue;
+            }
+            /* rho_on's and piece_point's operations on the same operands: the same bits. */
+            const double den = pe->sn * lk.dZ + pe->cs * lk.dX, rho = lk.num / den,
+                         d = R0 - rho;
+            if (!(den > 0) || !isfinite(rho) || !(d > -t_r))
+                return 0;
+            pe->X = x + rho * pe->sn;
+            pe->d = d;
+        }
+    }
+    wl[0] = r->shift_win[0], wl[1] = r->shift_win[1]; /* no point came into or out of reach */
+    return 1;
+}
+
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
  * pieces between them, and each piece's line from a ray along its middle. Rays of one side are
  * cast outward from the vertical, so each walk starts where the last one ended. */
@@ -530,6 +657,12 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
 {
     size_t wl[2] = {r->M, 0}; /* win, local while the points are written */
     win[0] = wl[0], win[1] = wl[1];
+    /* The last sampling's points may be moved (shift_whole) where it was at the same x on the
+     * same profile, nodes and tread stiffness. */
+    const int was = r->shift_ok && p == r->smp_p &&
+                    tirenv_ring__same_bits(&x, &r->smp_x, 1) && ja == r->smp_ja &&
+                    jb == r->smp_jb && tirenv_ring__same_bits(&k_t, &r->smp_kt, 1);
+    r->shift_ok = 0;
     r->smp_p = p, r->smp_x = x, r->smp_z = z, r->smp_ja = ja, r->smp_jb = jb, r->smp_kt = k_t;
     clear_gaps(r);
     const double *X = p->x, *Z = p->z, reach = r->R0 + r->par.t_r;
@@ -602,7 +735,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
              * the loop's cut records cost more than the piece's stores). */
             tirenv_ring_piece *c = &r->lines[n_lines];
             c->pa = pa, c->sa = sa, c->ca = ca, c->pb = pb, c->sb = sb, c->cb = cb;
-            c->j = j, c->contig = contig, c->da = 0, c->db = 0;
+            c->j = j, c->contig = contig, c->da = 0, c->db = 0, c->vk = -1;
             if (sa + sb < 0) {
                 ordered &= n_back == n_lines;
                 ++n_back;
@@ -624,7 +757,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                 tirenv_ring_piece *c = &r->lines[n_lines]; /* its line and hit: below */
                 c->pa = prev.phi, c->sa = prev.s, c->ca = prev.c, c->pb = next.phi;
                 c->sb = next.s, c->cb = next.c, c->j = j, c->contig = contig;
-                c->da = prev.dphi, c->db = next.dphi;
+                c->da = prev.dphi, c->db = next.dphi, c->vk = -1;
                 if (prev.s + next.s < 0) {
                     ordered &= n_back == n_lines;
                     ++n_back;
@@ -645,6 +778,15 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     }
     /* The far intervals (see far_intervals) are left out: no ray, no point. */
     const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
+    if (was && !fresh && !inside && ordered && nv * SKIP_CUTS <= jb - ja && same_gaps(r) &&
+        shift_whole(r, p, x, z, reach, k_t, wl)) {
+        ++r->n_shifted;
+        r->n_pts = r->shift_n_pts;
+        r->n_gapped += n_far > 0;
+        r->shift_ok = 1;
+        win[0] = wl[0], win[1] = wl[1];
+        return 0;
+    }
     /* Their lines: rays along the middle of each piece, each side walked outward. */
     long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
     if (!(X[cur_f] > x))
@@ -658,14 +800,18 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     } else if (ordered) { /* the backward rays' pieces first, outward, then the forward ones' */
         tirenv_ring_piece *const c = r->lines;
         long cb = cur_b, cf = cur_f; /* in registers: the stores to L do not reach them */
-        for (size_t t = n_back; t-- > 0;)
+        for (size_t t = n_back; t-- > 0;) {
             c[t].hit = !(n_far && in_gap(r, c[t].j)) &&
                        first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cb,
                                   c[t].L);
-        for (size_t t = n_back; t < n_lines; ++t)
+            c[t].vk = cb;
+        }
+        for (size_t t = n_back; t < n_lines; ++t) {
             c[t].hit = !(n_far && in_gap(r, c[t].j)) &&
                        first_line(p, x, z, c[t].sa + c[t].sb, c[t].ca + c[t].cb, reach, &cf,
                                   c[t].L);
+            c[t].vk = cf;
+        }
     } else {
         for (size_t side = 0; side < 2; ++side) /* backward rays first, then forward */
             for (size_t i = 0; i < n_lines; ++i) {
@@ -673,6 +819,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                 const double sx = c->sa + c->sb, cz = c->ca + c->cb;
                 if ((sx < 0) != (side == 0))
                     continue;
+                c->vk = -1;
                 c->hit = inside || (!(n_far && in_gap(r, c->j)) &&
                                     first_line(p, x, z, sx, cz, reach,
                                                sx < 0 ? &cur_b : &cur_f, c->L));
@@ -681,7 +828,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     size_t n_pts = 0;
     line_k lk = {0, 0, 0};
     for (size_t i = 0; i < n_lines; ++i) {
-        const tirenv_ring_piece *c = &r->lines[i];
+        tirenv_ring_piece *c = &r->lines[i];
         if (!c->hit)
             continue;
         /* The points written last are c[-1]'s. With the centre inside the ground no piece
@@ -692,10 +839,13 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
             !inside && i > 0 && c[-1].hit && tirenv_ring__same_bits(c->L, c[-1].L, 4);
         if (!inside && !same)
             line_of(c->L, x, z, &lk);
-        n_pts += piece_points(r, c, same, x, inside ? NULL : &lk, k_t, lugs, wl,
-                              r->pts + n_pts);
+        const size_t w = piece_points(r, c, same, x, inside ? NULL : &lk, k_t, lugs, wl,
+                                      r->pts + n_pts);
+        c->joined = w == 1, c->q0 = n_pts + w - 2;
+        n_pts += w;
     }
-    r->n_pts = n_pts;
+    r->n_pts = r->shift_n_pts = n_pts;
+    r->shift_ok = ordered && !inside && !lugs;
     if (n_far && !(wl[0] < ja + SKIP_EDGE && wl[1] > jb - SKIP_EDGE)) {
         /* The ground within reach ends inside a gap, or none is sampled at an edge: the window
          * is the whole sampling's only when both edges hold some. */
@@ -703,5 +853,6 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     }
     r->n_gapped += n_far > 0;
     win[0] = wl[0], win[1] = wl[1];
+    r->shift_win[0] = wl[0], r->shift_win[1] = wl[1];
     return 0;
 }

@@ -32,6 +32,10 @@ static inline int tirenv_ring__same_bits(const double *a, const double *b, size_
 /* Curvatures the ring's step in z keeps per side (ring_root.c). */
 #define TIRENV_RING_ROOT_KEEP 3
 
+/* Equilibria the ring's start at a new x keeps (ring_root.c): the mean slope over the last
+ * TIRENV_RING_START_KEEP - 1 steps. */
+#define TIRENV_RING_START_KEEP 4
+
 /* k_g / k_t: the contact layer between the ground and the shear-coupled tread's surface
  * (ring_shear.c, docs/models.md 5.3); the tests' closed forms use it too. */
 #define TIRENV_RING_GROUND_LAYER 1e4
@@ -138,6 +142,12 @@ typedef struct {
                                     * bits (no zero-length piece left out between them) */
     double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
     double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
+    /* Its last sampling, for the next at the same x (ring_ground.c, shift_whole): the cursor
+     * its line's walk ended at, the index of its first point (the point it joined, if it
+     * joined the piece before's last) and whether it joined. */
+    long vk;
+    size_t q0;
+    int joined;
 } tirenv_ring_piece;
 
 /* The ring's own step in z (ring_root.c): F_z's curvature in z, measured at the positions
@@ -150,6 +160,13 @@ typedef struct {
     double n[2];           /* how many of c[s] hold one */
     double x, z, F, k;     /* the step's evaluation: m, m, N, N/m */
     double have;           /* 1: x .. k hold it */
+    double ex, ez;         /* the last evaluation: m, m */
+    double eq_x[TIRENV_RING_START_KEEP], eq_z[TIRENV_RING_START_KEEP]; /* the equilibria
+                            * before, newest first: m, m */
+    double eq_n;           /* how many of eq_x, eq_z hold one */
+    double e_have;         /* 1: ex, ez hold an evaluation */
+    double s_mean, s_line; /* the two starts' decayed squared misses, m^2 */
+    double scored;         /* 1: s_mean, s_line hold a score */
 } tirenv_ring_root;
 
 struct tirenv_ring {
@@ -216,6 +233,14 @@ struct tirenv_ring {
     const tirenv_profile *smp_p;
     double smp_x, smp_z, smp_kt;
     size_t smp_ja, smp_jb;
+    /* A sampling at the same x from the last one's points (ring_ground.c, shift_whole):
+     * shift_ok, that sampling's points and its pieces' records are whole; its points' count
+     * and window; its gaps (gaps_prev, n_gaps_prev intervals); n_shifted: samplings made so
+     * (the tests count them). */
+    int shift_ok;
+    size_t shift_n_pts, shift_win[2];
+    size_t *gaps_prev, n_gaps_prev;
+    size_t n_shifted;
     double *g;             /* per node: the belt layer's share of F, N */
     /* The Winkler tread's last factorised system (ring_smooth.c), by what makes its matrix:
      * the window and, of each point in contact, its interval, place, weight, stiffness and
@@ -444,5 +469,13 @@ int tirenv_ring__defer_slope(tirenv_ring *r, int on);
 int tirenv_ring__deferring(const tirenv_ring *r);
 int tirenv_ring__shear_slope(tirenv_ring *r, double *dfz_dz);
 int tirenv_ring__slope(tirenv_ring *r, double *dfz_dz);
+
+/* The ring's start at a new x (ring_root.c): every evaluation at (x, z) (m) is recorded
+ * (tirenv_ring__root_eval); before the first at a new x, the last evaluation at the x before
+ * is taken as its equilibrium, and where the last TIRENV_RING_START_KEEP equilibria lie a
+ * step apart up to x, and their mean slope has predicted the equilibria before better than
+ * the line through the last two, *z (m) is the last one continued by that slope (returns 1). */
+void tirenv_ring__root_eval(tirenv_ring *r, double x, double z);
+int tirenv_ring__root_start(tirenv_ring *r, double x, double *z);
 
 #endif

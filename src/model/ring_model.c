@@ -21,9 +21,19 @@ static int ring_forces(void *elem, const tirenv_profile *p, double x, double z,
     const int defer = tirenv_ring__deferring(elem);
     const int status = tirenv_ring_forces(elem, p, x, z, &out->fx, &out->F,
                                           defer ? NULL : &out->dF_dz, &out->contacts, diag);
-    if (!status && defer)
+    if (!status && defer) {
         tirenv_ring__root_seen(elem, x, z, out->F);
+        tirenv_ring__root_eval(elem, x, z);
+    }
     return status;
+}
+
+/* The ring's start at a new x (ring_root.c), where its slope is deferred as for its step. */
+static int ring_start(void *elem, const tirenv_profile *p, double x, double z0, double G,
+                      double *z)
+{
+    (void)p, (void)z0, (void)G;
+    return tirenv_ring__deferring(elem) && tirenv_ring__root_start(elem, x, z);
 }
 
 /* The ring's own step in z (ring_root.c), where its slope is deferred: the shear-coupled
@@ -164,6 +174,7 @@ static const tirenv_deformable ring_deformable = {
     .free = ring_free,
     .forces = ring_forces,
     .root = ring_root,
+    .start = ring_start,
     .contact_length = ring_contact_length,
     .lowest_z = ring_lowest_z,
     .bracket = tirenv_deformable_no_bracket,

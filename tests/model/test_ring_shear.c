@@ -485,11 +485,13 @@ static void test_state_restores_bits(void **state)
 
 /* The ground's points of a sampling at the same x as the last (ring_ground.c keeps its
  * pieces where the vertex cuts stay in their node intervals, their ends at the vertices taking
- * the new angles) are those of a fresh ring's sampling there, bit for bit: over a cleat and a
- * 5 mm blade, whose corners lie between nodes, at heights 1e-6 m apart (the pieces kept) and
- * 5 mm apart (a corner's cut may move to another interval: built afresh). The forces agree to
- * the round-off of a solve from another start (test_warm_starts_agree), and the pieces were
- * kept at least once a profile (so the comparison tests the kept pieces). */
+ * the new angles, and moves the points of the pieces between two nodes along their rays where
+ * every piece's line is the last one's: shift_whole) are those of a fresh ring's sampling
+ * there, bit for bit: over a cleat and a 5 mm blade, whose corners lie between nodes, at
+ * heights 1e-6 m apart (the pieces kept) and 5 mm apart (a corner's cut may move to another
+ * interval: built afresh). The forces agree to the round-off of a solve from another start
+ * (test_warm_starts_agree), and the pieces were kept, and the points moved, at least once a
+ * profile (so the comparison tests both). */
 static void test_same_x_points(void **state)
 {
     (void)state;
@@ -498,7 +500,7 @@ static void test_same_x_points(void **state)
     const double xs[] = {-0.2137, -0.0311, 0.0457}, z0[2] = {0.611, 0.625};
     const double dzs[] = {1e-6, 5e-3, -2.3e-6};
     for (size_t c = 0; c < 2; ++c) {
-        size_t kept = 0, compared = 0;
+        size_t kept = 0, compared = 0, shifted = 0;
         for (size_t i = 0; i < 3; ++i) {
             tirenv_ring *kept_r = tirenv_ring_alloc(t.springs.R0, &t.ring);
             assert_non_null(kept_r);
@@ -508,10 +510,11 @@ static void test_same_x_points(void **state)
                                                 NULL), 0);
             for (size_t k = 0; k < 3; ++k) {
                 z += dzs[k];
-                const size_t before = kept_r->n_kept;
+                const size_t before = kept_r->n_kept, moved = kept_r->n_shifted;
                 assert_int_equal(tirenv_ring_forces(kept_r, ps[c], xs[i], z, &fx1, &fz1, &d1,
                                                     NULL, NULL), 0);
                 kept += kept_r->n_kept - before;
+                shifted += kept_r->n_shifted - moved;
                 tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
                 assert_non_null(fresh);
                 assert_int_equal(tirenv_ring_forces(fresh, ps[c], xs[i], z, &fx2, &fz2, &d2,
@@ -540,9 +543,80 @@ static void test_same_x_points(void **state)
         }
         assert_int_equal(compared, 9);
         assert_true(kept >= 1);
+        assert_true(shifted >= 1);
     }
     tirenv_profile_free(ps[0]);
     tirenv_profile_free(ps[1]);
+}
+
+/* The same over seeded obstacles, as Newton meets them: at each x of a 1 mm sweep over a
+ * seeded cleat, a seeded 5 mm blade and a seeded step (the default tire, gaps in the window as
+ * a sweep has them), evaluations at heights 2.1e-5, 3.7e-8 and 1.9e-10 m apart; each one's
+ * points, window and forces against a fresh ring's at that height, bit for bit (the forces
+ * too: the minimum's states' system is solved last, so the warm start does not show in them).
+ * The points were moved from the last sampling (shift_whole) at most of them. */
+static void test_same_x_points_seeded(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_rng *rng = tirenv_rng_alloc(41);
+    assert_non_null(rng);
+    size_t shifted = 0, compared = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
+        tirenv_profile *p = c == 0   ? tirenv_profile_cleat(0.05 + 0.25 * u, 0.02 + 0.08 * v)
+                            : c == 1 ? tirenv_profile_cleat(0.005, 0.01 + 0.05 * u)
+                                     : tirenv_profile_step(0.0113 * u, 0.02 + 0.06 * v);
+        assert_non_null(p);
+        tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(r);
+        double z = 0.60 + 0.02 * tirenv_rng_uniform(rng);
+        for (int i = 0; i < 24; ++i) {
+            const double x = -0.3 + 0.0253 * i;
+            const double dzs[4] = {0, 2.1e-5, -3.7e-8, 1.9e-10};
+            for (int k = 0; k < 4; ++k) {
+                z += dzs[k];
+                double fx1, fz1, fx2, fz2;
+                const size_t moved = r->n_shifted;
+                assert_int_equal(tirenv_ring_forces(r, p, x, z, &fx1, &fz1, NULL, NULL, NULL),
+                                 0);
+                shifted += r->n_shifted - moved;
+                if (k == 0)
+                    continue;
+                tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
+                assert_non_null(fresh);
+                assert_int_equal(
+                    tirenv_ring_forces(fresh, p, x, z, &fx2, &fz2, NULL, NULL, NULL), 0);
+                /* The fresh ring samples the whole window (no solve before it), the other its
+                 * gaps left out: the points sampled in both are compared. */
+                assert_int_equal(fresh->lo, r->lo);
+                assert_int_equal(fresh->n, r->n);
+                for (size_t a = 0, b = 0; a < r->n_pts; ++a) {
+                    const tirenv_ring_point *q = &r->pts[a];
+                    /* By its ray (a point beside a gap is a joined one's in the whole). */
+                    while (b < fresh->n_pts &&
+                           !tirenv_ring__same_bits(&fresh->pts[b].phi, &q->phi, 1))
+                        ++b;
+                    assert_true(b < fresh->n_pts);
+                    const tirenv_ring_point *f = &fresh->pts[b++]; /* (a corner's two) */
+                    const double va[] = {q->d, q->dd, q->X}, vb[] = {f->d, f->dd, f->X};
+                    if (memcmp(va, vb, sizeof va) != 0)
+                        fail_msg("profile %d x %g z %.12g: point %zu differs", c, x, z, a);
+                }
+                assert_true(tirenv_ring__same_bits(&fz1, &fz2, 1));
+                assert_true(tirenv_ring__same_bits(&fx1, &fx2, 1));
+                ++compared;
+                tirenv_ring_free(fresh);
+            }
+            z += 1e-3 * sin(0.7 * i);
+        }
+        tirenv_ring_free(r);
+        tirenv_profile_free(p);
+    }
+    tirenv_rng_free(rng);
+    print_message("same x, seeded: %zu evaluations compared, %zu samplings moved\n", compared,
+                  shifted);
+    assert_true(shifted > compared / 3);
 }
 
 /* tirenv_ring__tread_exterior, the belt outside the window (tirenv_ring_state's w there),
@@ -1192,6 +1266,7 @@ int main(void)
         cmocka_unit_test(test_lugs),
         cmocka_unit_test(test_state_restores_bits),
         cmocka_unit_test(test_same_x_points),
+        cmocka_unit_test(test_same_x_points_seeded),
         cmocka_unit_test(test_tread_exterior),
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),

@@ -228,7 +228,10 @@ static void test_equal_copies(void **state)
  * eps_z = 1e-12): the round-off of the stiffer belt-and-tread solve, whose contact layer is
  * 1e4 k_t. One track takes the ring's own step in z (src/model/ring_root.c), three the
  * linear one, so they stop at different iterates, each within eps_z of the root: 1.05e-10 m
- * measured. Checked within 2 eps_z = 2e-10 m and 5e-10. */
+ * measured; since one track also starts a new x from the mean slope of its last steps where
+ * that predicts better (ring_root.c), 1.05e-10 m and the slope (F_x over F_z) 5.3e-10 apart
+ * (7.1e-10 with the mean slope always), F_x some 2e-5 N. Checked within 2 eps_z = 2e-10 m
+ * and, as test_equal_copies, 1e-9. */
 static void test_equal_copies_with_shear(void **state)
 {
     (void)state;
@@ -247,16 +250,18 @@ static void test_equal_copies_with_shear(void **state)
     const tirenv_profile *three[3] = {cleat, c1, c2};
     assert_int_equal(tirenv_model_set_tracks(m, 3, three, NULL, load, &d), TIRENV_OK);
     curve(m, x, got);
-    double dh = 0, lifted = 0;
+    double dh = 0, lifted = 0, dslope = 0;
     for (size_t k = 0; k < N_POS; ++k) {
         assert_int_equal(got[k].contacts, 3 * ref[k].contacts);
         assert_near(got[k].h, ref[k].h, 2 * tire.eq.eps_z, 0);
-        assert_near(got[k].slope, ref[k].slope, 5e-10, 0);
+        assert_near(got[k].slope, ref[k].slope, 1e-9, 0);
+        dslope = fmax(dslope, fabs(got[k].slope - ref[k].slope));
         assert_near(got[k].fz, ref[k].fz, eq_F_tol(&tire), 0);
         dh = fmax(dh, fabs(got[k].h - ref[k].h));
         lifted = fmax(lifted, ref[k].h);
     }
-    print_message("TREAD_SHEAR 1 MPa, three copies against one: max |dh| %.3g m\n", dh);
+    print_message("TREAD_SHEAR 1 MPa, three copies against one: max |dh| %.3g m, slope %.3g\n",
+                  dh, dslope);
     assert_true(lifted > 0.01); /* the cleat lifts the hub: the comparison can fail */
     tirenv_model_free(m);
     tirenv_profile_free(c2);
