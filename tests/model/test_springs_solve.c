@@ -179,6 +179,28 @@ static tirenv_profile *random_ground(tirenv_rng *rng, size_t n)
     return p;
 }
 
+enum { FAN_N = 361 };
+
+/* The fans of the tests below: N rays half a degree apart about the straight-down ray
+ * i0 = N / 2, for a tire of radius R0 (m), on the arrays given (N each). */
+typedef struct {
+    double sin_t[FAN_N], cos_t[FAN_N], inv_s[FAN_N], drop[FAN_N], reach[FAN_N];
+} fan_arrays;
+
+static tirenv_springs__fan_rays half_degree_fan(fan_arrays *A, double R0)
+{
+    const size_t i0 = FAN_N / 2;
+    for (size_t i = 0; i < FAN_N; ++i) {
+        const double th = ((double)i - (double)i0) * M_PI / 360;
+        A->sin_t[i] = sin(th);
+        A->cos_t[i] = cos(th);
+    }
+    tirenv_springs__fan_rays_fill(FAN_N, A->sin_t, A->cos_t, R0, A->inv_s, A->drop, A->reach);
+    return (tirenv_springs__fan_rays){.i0 = i0, .rho_max = R0, .sin_t = A->sin_t,
+                                      .cos_t = A->cos_t, .inv_s = A->inv_s, .drop = A->drop,
+                                      .reach = A->reach};
+}
+
 /* The fan gives every ray the bits tirenv_springs__ray_at gives it, rho and d(rho)/dz; a reuse
  * at another height either declines or gives the bits a fresh cast gives there. */
 static void test_fan_matches_single_rays(void **state)
@@ -187,19 +209,12 @@ static void test_fan_matches_single_rays(void **state)
     tirenv_rng *rng = tirenv_rng_alloc(0);
     tirenv_rng_seed(rng, 7);
     const double R0 = 0.6837;
-    enum { N = 361 };
-    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N];
+    enum { N = FAN_N };
+    static double rho[N];
     static tirenv_springs__ray_memo memo[N];
     const size_t i0 = N / 2;
-    for (size_t i = 0; i < N; ++i) {
-        const double th = ((double)i - (double)i0) * M_PI / 360;
-        sin_t[i] = sin(th);
-        cos_t[i] = cos(th);
-    }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
-    const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
-                                           .reach = reach};
+    static fan_arrays fa;
+    const tirenv_springs__fan_rays rays = half_degree_fan(&fa, R0);
     tirenv_road_settings rs = tirenv_road_default();
     rs.length = 20;
     rs.dx = 0.003;
@@ -227,7 +242,7 @@ static void test_fan_matches_single_rays(void **state)
             tirenv_springs__fan(p, &o, &rays, z, a, b, rho, memo);
             for (size_t i = a; i <= b; ++i) {
                 double drho;
-                const double r = tirenv_springs__ray(p, x, z, sin_t[i], cos_t[i], R0, &drho);
+                const double r = tirenv_springs__ray(p, x, z, fa.sin_t[i], fa.cos_t[i], R0, &drho);
                 assert_bits_equal(rho[i], r);
                 if (isfinite(r)) {
                     assert_bits_equal(tirenv_springs__fan_drho(p, &rays, i, &memo[i]), drho);
@@ -243,7 +258,7 @@ static void test_fan_matches_single_rays(void **state)
                 for (size_t i = a; i <= b; ++i) {
                     double drho;
                     const double r =
-                        tirenv_springs__ray(p, x, z2, sin_t[i], cos_t[i], R0, &drho);
+                        tirenv_springs__ray(p, x, z2, fa.sin_t[i], fa.cos_t[i], R0, &drho);
                     assert_bits_equal(rho[i], r);
                     if (isfinite(r))
                         assert_bits_equal(tirenv_springs__fan_drho(p, &rays, i, &memo[i]),
@@ -273,19 +288,12 @@ static void test_fan_runs_match_walks(void **state)
     tirenv_rng *rng = tirenv_rng_alloc(0);
     tirenv_rng_seed(rng, 11);
     const double R0 = 0.6837;
-    enum { N = 361 };
-    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], rho_w[N];
+    enum { N = FAN_N };
+    static double rho[N], rho_w[N];
     static tirenv_springs__ray_memo memo[N], memo_w[N];
     const size_t i0 = N / 2;
-    for (size_t i = 0; i < N; ++i) {
-        const double th = ((double)i - (double)i0) * M_PI / 360;
-        sin_t[i] = sin(th);
-        cos_t[i] = cos(th);
-    }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
-    tirenv_springs__fan_rays walked = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                       .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
-                                       .reach = reach};
+    static fan_arrays fa;
+    tirenv_springs__fan_rays walked = half_degree_fan(&fa, R0);
     tirenv_springs__fan_rays runs = walked;
     runs.ordered = tirenv_springs__fan_rays_ordered(&runs, N);
     assert_int_equal(runs.ordered, 1);
@@ -330,7 +338,7 @@ static void test_fan_runs_match_walks(void **state)
                 for (size_t i = a; i <= b; ++i) {
                     double drho;
                     const double r =
-                        tirenv_springs__ray(p, x, z2, sin_t[i], cos_t[i], R0, &drho);
+                        tirenv_springs__ray(p, x, z2, fa.sin_t[i], fa.cos_t[i], R0, &drho);
                     assert_bits_equal(rho[i], r);
                 }
                 ++reused;
@@ -479,20 +487,13 @@ static void test_pairs_miss_nothing(void **state)
     tirenv_rng *rng = tirenv_rng_alloc(0);
     tirenv_rng_seed(rng, 5);
     const double R0 = 0.6837;
-    enum { N = 361 };
-    static double sin_t[N], cos_t[N], inv_s[N], drop[N], reach[N], rho[N], tread[N];
+    enum { N = FAN_N };
+    static double rho[N], tread[N];
     static tirenv_springs__ray_memo memo[N];
     static size_t pairs[4 * N];
     const size_t i0 = N / 2;
-    for (size_t i = 0; i < N; ++i) {
-        const double th = ((double)i - (double)i0) * M_PI / 360;
-        sin_t[i] = sin(th);
-        cos_t[i] = cos(th);
-    }
-    tirenv_springs__fan_rays_fill(N, sin_t, cos_t, R0, inv_s, drop, reach);
-    const tirenv_springs__fan_rays rays = {.i0 = i0, .rho_max = R0, .sin_t = sin_t,
-                                           .cos_t = cos_t, .inv_s = inv_s, .drop = drop,
-                                           .reach = reach};
+    static fan_arrays fa;
+    const tirenv_springs__fan_rays rays = half_degree_fan(&fa, R0);
     size_t found = 0, trials = 0;
     for (int g = 0; g < 40; ++g) {
         /* Flat ground with spikes 0.5 to 10 mm wide and up to 40 mm tall, some on walls. */
