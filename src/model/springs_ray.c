@@ -750,17 +750,31 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
                               double drho[], tirenv_springs__ray_memo faces[])
 {
     const double *X = p->x, *Z = p->z;
-    long j_run = -2; /* the segment face of the rays before, and z less its height at x */
-    int dir_run = 0;
+    const long n_p = (long)p->n;
+    /* The face of the rays before (held rays come in runs on two or three faces): whether it
+     * is within w, whether it is a segment, and z less its height under the centre, asked
+     * once a face. */
+    long j_run = -2;
+    int kind_run = -1, dir_run = 0, seg = 0;
     double zf = 0;
     for (size_t k = 0; k < n; ++k) {
         const size_t i = rays[k];
         tirenv_springs__ray_memo *m = &memo[i];
         const int dir = i > r->i0 ? 1 : -1;
-        const long jp = m->j - dir;
-        const int seg = jp >= 0 && jp < (long)p->n; /* else the flat ground past an end */
-        if (!face_within(p, w, m->j, jp, m->kind))
-            return 0; /* (a window's rows hold it) */
+        if (m->j != j_run || m->kind != kind_run || dir != dir_run) {
+            const long jp = m->j - dir;
+            if (!face_within(p, w, m->j, jp, m->kind))
+                return 0; /* (a window's rows hold it) */
+            j_run = m->j;
+            kind_run = m->kind;
+            dir_run = dir;
+            /* else the flat ground past an end, or no segment: face_rho's own cases */
+            seg = m->kind == RAY_HIT && jp >= 0 && jp < n_p;
+            if (seg) { /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
+                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
+                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            }
+        }
         if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
             const tirenv_springs__ray_memo *f = &kept[i];
             if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
@@ -770,20 +784,7 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
                 kept[i] = *m;
             }
         }
-        double v;
-        if (m->kind == RAY_HIT && seg) {
-            /* rho (cos + sin dZ/dX) = z - (the face's height under the centre): once a
-             * face, then its d(rho)/dz */
-            if (m->j != j_run || dir != dir_run) {
-                j_run = m->j;
-                dir_run = dir;
-                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
-                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
-            }
-            v = zf * m->drho;
-        } else {
-            v = face_rho(p, o, r, i, m, z, w);
-        }
+        const double v = seg ? zf * m->drho : face_rho(p, o, r, i, m, z, w);
         if (!isfinite(v))
             return 0;
         rho[i] = v;
