@@ -502,15 +502,26 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
      * changed no bit) */
     double *H = c->pred_w, *dH = c->root_du;
     double Fa = 0, dFa = 0;
-    for (size_t m = 0; m < n_held; ++m) {
+    /* the first and the last apart, so that the loop between asks nothing (on locals: H may
+     * alias rho, so its stores would make rho be read again) */
+    for (size_t m = 0; m < n_held; m = m == 0 && n_held > 2 ? n_held - 1 : m + 1) {
         const size_t e = held[m];
-        H[e] = R0 - rho[e];
-        dH[e] = -drho[e];
+        const double h = R0 - rho[e], dh = -drho[e];
+        H[e] = h;
+        dH[e] = dh;
         double f = k_r * ct[e];
-        if ((m == 0 || m + 1 == n_held) && (e == f0 || e == f1))
+        if (e == f0 || e == f1)
             f = f + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
-        Fa += f * H[e];
-        dFa += f * dH[e];
+        Fa += f * h;
+        dFa += f * dh;
+        for (size_t q = 1; m == 0 && q + 1 < n_held; ++q) {
+            const size_t i = held[q];
+            const double h_i = R0 - rho[i], dh_i = -drho[i], f_i = k_r * ct[i];
+            H[i] = h_i;
+            dH[i] = dh_i;
+            Fa += f_i * h_i;
+            dFa += f_i * dh_i;
+        }
     }
     /* v = K_FF^-1 f on the free elements, for this factor */
     double *v = c->root_v;
