@@ -596,6 +596,11 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start *
  * returns its reaction lambda (N). */
 int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                    int same);
+/* The same after element e's row alone entered or left the working set (c->wpos[e] flipped
+ * since K_FF was last factorised, the span the same): K_FF's factor kept but on e's chain
+ * from e on, where it changed, and the chains mended; the bits schur_factor gives. */
+int tirenv_springs__cc_schur_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                  size_t e);
 void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
                                        const tirenv_springs__cc_tire *T, double x[],
                                        double lam[]);

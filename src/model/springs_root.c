@@ -701,7 +701,7 @@ int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc
     c->warm_pin[e] = (unsigned char)hold;
     /* the next layout lays out its own KKT system (wpos no longer the last one's) */
     c->last_ok = 0;
-    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+    if (tirenv_springs__cc_schur_flip(c, T, e)) {
         c->base_ok = 0;
         c->pred_ok = 0;
         return 1;
