@@ -372,6 +372,8 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
     const size_t N = T->N, *wpos = c->wpos;
     const double *st = T->sin_t, *ct = T->cos_t;
     int moved = 0, grew = 0; /* (grew: K_FF changed, a longer span or an element let go) */
+    int longer = 0;           /* a longer span */
+    size_t n_let = 0, let = SIZE_MAX; /* the elements let go, the last of them */
     for (size_t q = 0, k = c->n_schur; q < k; ++q) {
         tirenv_springs__cc_row *R = &c->rows[c->order[c->schur_pos[q]] - N];
         if (R->id < 0 || !(R->t > 0))
@@ -395,7 +397,7 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
             c->f0 = e < c->f0 ? e : c->f0;
             c->f1 = e > c->f1 ? e : c->f1;
             c->wpos[e] = 0; /* free (the layout makes its positions anew) */
-            grew = 1;
+            grew = longer = 1;
         }
         /* the element whose ray the vertex crossed: held on its ray's row, it is let go
          * (its ray passed onto the vertex's other face, below the row now bearing on it) */
@@ -403,6 +405,8 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
         if (wpos[e_c] == SIZE_MAX) {
             held_remove(c, e_c);
             grew = 1;
+            ++n_let;
+            let = e_c;
         }
         if (i < c->f0 || i + 1 > c->f1 || !row_inside(T, i, dx, dzv, &t))
             return 0;
@@ -413,7 +417,11 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
     }
     /* the layout's keys name the rows by their sector: the next layout makes its own */
     c->last_ok = 0;
-    return moved && !tirenv_springs__cc_schur_factor(c, T, !grew);
+    if (!moved)
+        return 0;
+    /* one element let go on the same span: K_FF's factor mended on its chain alone */
+    return !(grew && !longer && n_let == 1 ? tirenv_springs__cc_schur_flip(c, T, let)
+                                           : tirenv_springs__cc_schur_factor(c, T, !grew));
 }
 
 int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
@@ -464,7 +472,8 @@ int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc
     }
     c->warm_ids[m] = v;
     c->last_ok = 0;
-    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+    /* (on the same span only e changed: its chain's factor mended; else factorised anew) */
+    if (tirenv_springs__cc_schur_flip(c, T, e)) {
         c->base_ok = 0;
         c->pred_ok = 0;
         return 0;
