@@ -664,7 +664,7 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
  * tirenv_springs__cc_root or _root_at solved for, on the working set as the start left it), w_e = h
  * on the held ones, the rows between elements' reactions likewise, the held ones' from K w =
  * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
- * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
+ * penetrations d[a..b] >= 0 from (x, z), never NaN or -0; every ground vertex in reach): the working rows hold as
  * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
  * (to 1e-12 R0, as the solve's). Returns 1 with w over [f0 - 1, f1 + 1], pe and obstacle
  * over [f0, f1] as tirenv_springs__cc_solve gives them and *contacts the elements of [f0, f1]
