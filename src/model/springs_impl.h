@@ -569,6 +569,12 @@ typedef struct {
     int pred_ok;
     double pred_x, pred_z;
     double *pred_w, *root_y;
+    /* (tirenv_springs__cc_root_at) pred_w holds the held elements' rows at pred_z - pred_dz
+     * (m), each element's w at the root pred_w + pred_dz root_du, read where asked (the
+     * update sets the held ones to the fresh rays' rows itself); pred_held 0 where pred_w
+     * is w at pred_z throughout (tirenv_springs__cc_root) */
+    int pred_held;
+    double pred_dz;
     double *root_du;       /* N + 2: tirenv_springs__cc_root_at's held rows' dh/dz */
     /* K_FF^-1 f (f the hub's weights, root_v: N + 2) for the factor n_factors counts, while
      * root_v_at is that count (tirenv_springs__cc_schur_factor counts each new factor) */

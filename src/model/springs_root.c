@@ -275,6 +275,7 @@ static void keep_state(tirenv_springs__cc *c, const root_rows *W, const double w
     }
     c->pred_x = x;
     c->pred_z = zb;
+    c->pred_held = 0;
     c->pred_ok = 1;
 }
 
@@ -590,18 +591,17 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
      * ends' coupling and the rows' B. */
     const double dz = zb - z_a;
     double *pw = c->pred_w;
-    for (size_t m = 0; m < n_held; ++m) {
-        const size_t e = held[m];
-        pw[e] = H[e] + dz * dH[e];
-    }
+    /* (the held elements' rows stay at z_a in pred_w, H: those the check asks for, and the
+     * chains' neighbours here, are taken to zb where read; a pass over all of them cost some
+     * 340 instructions a root) */
     for (size_t q = 0; q < n_ch; ++q) {
         const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
         for (size_t e = lo; e <= hi; ++e)
             pw[e] = 0;
         if (lo > f0)
-            pw[lo] = k_ir * pw[lo - 1];
+            pw[lo] = k_ir * (H[lo - 1] + dz * dH[lo - 1]);
         if (hi < f1)
-            pw[hi] += k_ir * pw[hi + 1];
+            pw[hi] += k_ir * (H[hi + 1] + dz * dH[hi + 1]);
     }
     for (size_t s = 0; s < 2 * k; ++s)
         if (W.fr[s])
@@ -612,9 +612,19 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         c->pred_lam[q] = lam[q];
     c->pred_x = x;
     c->pred_z = zb;
+    c->pred_held = 1;
+    c->pred_dz = dz;
     c->pred_ok = 1;
     *z_root = zb;
     return 1;
+}
+
+/* Element e's w at the kept state (m): a held one's row at the root where root_at left it
+ * at its own height (pred_held), as root_at's chains took it. */
+static inline double pred_w_at(const tirenv_springs__cc *c, size_t e)
+{
+    const double *w = c->pred_w;
+    return c->pred_held && c->wpos[e] == SIZE_MAX ? w[e] + c->pred_dz * c->root_du[e] : w[e];
 }
 
 /* A held element's reaction at the kept state: K w there (w beyond the span folded into K's
@@ -623,9 +633,9 @@ static double held_reaction(const tirenv_springs__cc *c, const tirenv_springs__c
                             size_t e)
 {
     const size_t f0 = c->f0, f1 = c->f1;
-    const double *w = c->pred_w;
-    double r = tirenv_springs__cc_k_diag(T, f0, f1, e) * w[e] -
-               T->k_ir * ((e > f0 ? w[e - 1] : 0) + (e < f1 ? w[e + 1] : 0));
+    double r = tirenv_springs__cc_k_diag(T, f0, f1, e) * pred_w_at(c, e) -
+               T->k_ir * ((e > f0 ? pred_w_at(c, e - 1) : 0) +
+                          (e < f1 ? pred_w_at(c, e + 1) : 0));
     for (size_t s = 0; s < 2 * c->n_schur; ++s)
         r -= c->pred_el[s] == e ? c->pred_gl[s] : 0;
     return r;
