@@ -580,6 +580,11 @@ typedef struct {
      * root_v_at is that count (tirenv_springs__cc_schur_factor counts each new factor) */
     double *root_v;
     unsigned long long n_factors, root_v_at;
+    /* (tirenv_springs__cc_schur_flip) the factor's count before the last flip mended it, and
+     * the elements whose chains the flip changed: a K_FF^-1 f solved for mend_at holds on the
+     * other chains, which the flip left as they were */
+    unsigned long long mend_at;
+    size_t mend_lo, mend_hi;
     double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
     /* (tirenv_springs__cc_root_at) each working row's two elements and its load on each,
      * lambda g (N), for the check of the held elements' reactions */

@@ -173,24 +173,30 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const double k_r = T->k_r, *ct = T->cos_t;
     tirenv_springs__cc_cols *C = &c->cols;
     W->col = C;
-    int same = C->at == c->n_factors && C->k == k && C->S[0] == S_l && C->S[1] == S_r;
+    int same_el = C->k == k && C->S[0] == S_l && C->S[1] == S_r;
     for (size_t s = 0; s < ns; ++s) {
         const size_t e_s = W->el[s];
         W->fr[s] = wpos[e_s] != SIZE_MAX;
         W->w_T[s] = w_T[e_s];
         W->dw[s] = dw[e_s];
-        same = same && C->el[s] == e_s;
+        same_el = same_el && C->el[s] == e_s;
     }
-    if (same) /* the columns of the last root on this factor, bit for bit */
+    if (same_el && C->at == c->n_factors) /* the last root's on this factor, bit for bit */
         return 1;
+    /* after a flip of the factor they were solved on, a slot whose element and chain the flip
+     * left as they were keeps its column */
+    const int mended = same_el && C->at == c->mend_at && c->n_factors == c->mend_at + 1;
     for (size_t s = 0; s < ns; ++s) {
+        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
+        if (mended && (W->fr[s] ? hi < c->mend_lo || lo > c->mend_hi
+                                : W->el[s] < c->mend_lo || W->el[s] > c->mend_hi))
+            continue;
         for (size_t r = 0; r < ns; ++r)
             C->Y[s][r] = 0;
         C->phi[s] = 0;
         C->el[s] = W->el[s];
         if (!W->fr[s])
             continue;
-        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
         for (size_t e = lo; e <= hi; ++e)
             y[e] = 0;
         y[W->el[s]] = 1;
@@ -536,8 +542,12 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
     /* v = K_FF^-1 f on the free elements, for this factor */
     double *v = c->root_v;
     if (c->root_v_at != c->n_factors) {
+        /* after a flip of the factor it was solved for, only on the chains the flip changed */
+        const int mended = c->root_v_at == c->mend_at && c->n_factors == c->mend_at + 1;
         for (size_t q = 0; q < n_ch; ++q) {
             const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+            if (mended && (hi < c->mend_lo || lo > c->mend_hi))
+                continue;
             for (size_t e = lo; e <= hi; ++e)
                 v[e] = k_r * ct[e];
             v[f0] += lo == f0 ? S_l : 0;

@@ -198,7 +198,7 @@ int tirenv_springs__cc_schur_flip(tirenv_springs__cc *c, const tirenv_springs__c
         return tirenv_springs__cc_schur_factor(c, T, 0);
     c->tri_ok = 0;
     c->factor_kept = 0;
-    ++c->n_factors;
+    c->mend_at = c->n_factors++;
     if (inside) { /* e held: its chain [lo, hi] splits into [lo, e - 1] and [e + 1, hi], the
                    * latter factorised anew */
         const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
@@ -215,6 +215,8 @@ int tirenv_springs__cc_schur_flip(tirenv_springs__cc *c, const tirenv_springs__c
             ch[2 * at + 1] = hi;
         }
         c->n_chains = n - 1 + keep;
+        c->mend_lo = lo;
+        c->mend_hi = hi;
         if (right && chain_factor(c, T, e + 1, e + 1, hi))
             return 1;
     } else { /* e let go: the chains either side (ending at e - 1, starting at e + 1) join
@@ -232,6 +234,8 @@ int tirenv_springs__cc_schur_flip(tirenv_springs__cc *c, const tirenv_springs__c
         ch[2 * first] = lo;
         ch[2 * first + 1] = hi;
         c->n_chains = n + 1 - gone;
+        c->mend_lo = lo;
+        c->mend_hi = hi;
         if (chain_factor(c, T, lo, e, hi))
             return 1;
     }
