@@ -169,9 +169,9 @@ void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double
 /* Whether vertex id lies within w. */
 int tirenv_springs__face_window_has(const tirenv_springs__face_window *w, long id);
 
-/* For each ray i = rays[0..n): its rho (m) from the origin o's centre at height z to the
- * face that memo[i]'s walk ended on (from any origin on the same profile), extended as a
- * line, into rho[i]: what the ray finds where it still crosses that face first (not
+/* For each ray i = rays[0..n) (ascending): its rho (m) from the origin o's centre at height
+ * z to the face that memo[i]'s walk ended on (from any origin on the same profile), extended
+ * as a line, into rho[i]: what the ray finds where it still crosses that face first (not
  * checked); its d(rho)/dz there into drho[i] (as tirenv_springs__fan_drho gives it, kept in
  * the memo; from kept[i], the face ray i last had one computed on, where it is that face,
  * else into it), and the memo into faces[i]. On a segment rho is the face's height below the
