@@ -449,14 +449,18 @@ static inline double ray_drho(tirenv_springs *s, const tirenv_profile *prof, siz
 
 /* Whether every held element's ray ends where tirenv_springs__start took it to (its walk
  * ended at the same vertex in the same way: the same face), so that the root's rows were
- * the rays' own. */
-static int same_faces(const tirenv_springs *s)
+ * the rays' own. Each such ray's memo takes the face's d(rho)/dz the start found (the next
+ * x's start, and ray_drho, read it there instead of looking for it). */
+static int same_faces(tirenv_springs *s)
 {
     const size_t *held = s->cc.held;
     for (size_t m = 0, n_held = s->cc.n_held; m < n_held; ++m) {
         const size_t e = held[m];
-        if (s->memo[e].j != s->pred_face[e].j || s->memo[e].kind != s->pred_face[e].kind)
+        tirenv_springs__ray_memo *f = &s->memo[e];
+        const tirenv_springs__ray_memo *p = &s->pred_face[e];
+        if (f->j != p->j || f->kind != p->kind)
             return 0;
+        f->drho = p->drho;
     }
     return 1;
 }

@@ -42,6 +42,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
     c->f1 = 0;
     c->tri_ok = 0;
     c->root_v_at = (unsigned long long)-1; /* no K_FF^-1 f yet */
+    c->mend_at = (unsigned long long)-2;   /* (nor a flip) */
     c->cols.at = (unsigned long long)-1; /* no rows' columns yet */
     return TIRENV_OK;
 }

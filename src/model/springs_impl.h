@@ -169,9 +169,9 @@ void tirenv_springs__face_window_at(const tirenv_profile *p, double x_lo, double
 /* Whether vertex id lies within w. */
 int tirenv_springs__face_window_has(const tirenv_springs__face_window *w, long id);
 
-/* For each ray i = rays[0..n): its rho (m) from the origin o's centre at height z to the
- * face that memo[i]'s walk ended on (from any origin on the same profile), extended as a
- * line, into rho[i]: what the ray finds where it still crosses that face first (not
+/* For each ray i = rays[0..n) (ascending): its rho (m) from the origin o's centre at height
+ * z to the face that memo[i]'s walk ended on (from any origin on the same profile), extended
+ * as a line, into rho[i]: what the ray finds where it still crosses that face first (not
  * checked); its d(rho)/dz there into drho[i] (as tirenv_springs__fan_drho gives it, kept in
  * the memo; from kept[i], the face ray i last had one computed on, where it is that face,
  * else into it), and the memo into faces[i]. On a segment rho is the face's height below the
@@ -569,11 +569,22 @@ typedef struct {
     int pred_ok;
     double pred_x, pred_z;
     double *pred_w, *root_y;
+    /* (tirenv_springs__cc_root_at) pred_w holds the held elements' rows at pred_z - pred_dz
+     * (m), each element's w at the root pred_w + pred_dz root_du, read where asked (the
+     * update sets the held ones to the fresh rays' rows itself); pred_held 0 where pred_w
+     * is w at pred_z throughout (tirenv_springs__cc_root) */
+    int pred_held;
+    double pred_dz;
     double *root_du;       /* N + 2: tirenv_springs__cc_root_at's held rows' dh/dz */
     /* K_FF^-1 f (f the hub's weights, root_v: N + 2) for the factor n_factors counts, while
      * root_v_at is that count (tirenv_springs__cc_schur_factor counts each new factor) */
     double *root_v;
     unsigned long long n_factors, root_v_at;
+    /* (tirenv_springs__cc_schur_flip) the factor's count before the last flip mended it, and
+     * the elements whose chains the flip changed: a K_FF^-1 f solved for mend_at holds on the
+     * other chains, which the flip left as they were */
+    unsigned long long mend_at;
+    size_t mend_lo, mend_hi;
     double pred_lam[TIRENV_SPRINGS__SCHUR_MAX];
     /* (tirenv_springs__cc_root_at) each working row's two elements and its load on each,
      * lambda g (N), for the check of the held elements' reactions */
@@ -596,6 +607,11 @@ void tirenv_springs__cc_forget(tirenv_springs__cc *c);  /* drop the warm start *
  * returns its reaction lambda (N). */
 int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                    int same);
+/* The same after element e's row alone entered or left the working set (c->wpos[e] flipped
+ * since K_FF was last factorised, the span the same): K_FF's factor kept but on e's chain
+ * from e on, where it changed, and the chains mended; the bits schur_factor gives. */
+int tirenv_springs__cc_schur_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                  size_t e);
 void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
                                        const tirenv_springs__cc_tire *T, double x[],
                                        double lam[]);
@@ -659,7 +675,7 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
  * tirenv_springs__cc_root or _root_at solved for, on the working set as the start left it), w_e = h
  * on the held ones, the rows between elements' reactions likewise, the held ones' from K w =
  * G^T lambda; then the QP's KKT conditions checked at z on every row there is at z (the rays'
- * penetrations d[a..b] from (x, z), every ground vertex in reach): the working rows hold as
+ * penetrations d[a..b] >= 0 from (x, z), never NaN or -0; every ground vertex in reach): the working rows hold as
  * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
  * (to 1e-12 R0, as the solve's). Returns 1 with w over [f0 - 1, f1 + 1], pe and obstacle
  * over [f0, f1] as tirenv_springs__cc_solve gives them and *contacts the elements of [f0, f1]

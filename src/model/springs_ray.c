@@ -743,24 +743,39 @@ void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_prof
     }
 }
 
-int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
-                              const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
-                              tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
-                              double z, const tirenv_springs__face_window *w, double rho[],
-                              double drho[], tirenv_springs__ray_memo faces[])
+/* tirenv_springs__faces_rho for rays[k0..k1), all on the side dir (1: after the straight-down
+ * ray, -1: at or before it), each side's loop compiled for its direction. */
+static inline __attribute__((always_inline)) int
+faces_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+           const tirenv_springs__fan_rays *r, const size_t rays[], size_t k0, size_t k1,
+           const int dir, tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
+           double z, const tirenv_springs__face_window *w, double rho[], double drho[],
+           tirenv_springs__ray_memo faces[])
 {
     const double *X = p->x, *Z = p->z;
-    long j_run = -2; /* the segment face of the rays before, and z less its height at x */
-    int dir_run = 0;
+    const long n_p = (long)p->n;
+    /* The face of the rays before (held rays come in runs on two or three faces): whether it
+     * is within w, whether it is a segment, and z less its height under the centre, asked
+     * once a face. */
+    long j_run = -2;
+    int kind_run = -1, seg = 0;
     double zf = 0;
-    for (size_t k = 0; k < n; ++k) {
+    for (size_t k = k0; k < k1; ++k) {
         const size_t i = rays[k];
         tirenv_springs__ray_memo *m = &memo[i];
-        const int dir = i > r->i0 ? 1 : -1;
-        const long jp = m->j - dir;
-        const int seg = jp >= 0 && jp < (long)p->n; /* else the flat ground past an end */
-        if (!face_within(p, w, m->j, jp, m->kind))
-            return 0; /* (a window's rows hold it) */
+        if (m->j != j_run || m->kind != kind_run) {
+            const long jp = m->j - dir;
+            if (!face_within(p, w, m->j, jp, m->kind))
+                return 0; /* (a window's rows hold it) */
+            j_run = m->j;
+            kind_run = m->kind;
+            /* else the flat ground past an end, or no segment: face_rho's own cases */
+            seg = m->kind == RAY_HIT && jp >= 0 && jp < n_p;
+            if (seg) { /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
+                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
+                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            }
+        }
         if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
             const tirenv_springs__ray_memo *f = &kept[i];
             if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
@@ -770,20 +785,7 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
                 kept[i] = *m;
             }
         }
-        double v;
-        if (m->kind == RAY_HIT && seg) {
-            /* rho (cos + sin dZ/dX) = z - (the face's height under the centre): once a
-             * face, then its d(rho)/dz */
-            if (m->j != j_run || dir != dir_run) {
-                j_run = m->j;
-                dir_run = dir;
-                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
-                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
-            }
-            v = zf * m->drho;
-        } else {
-            v = face_rho(p, o, r, i, m, z, w);
-        }
+        const double v = seg ? zf * m->drho : face_rho(p, o, r, i, m, z, w);
         if (!isfinite(v))
             return 0;
         rho[i] = v;
@@ -791,6 +793,26 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
         faces[i] = *m;
     }
     return 1;
+}
+
+int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, const size_t rays[], size_t n,
+                              tirenv_springs__ray_memo memo[], tirenv_springs__ray_memo kept[],
+                              double z, const tirenv_springs__face_window *w, double rho[],
+                              double drho[], tirenv_springs__ray_memo faces[])
+{
+    /* rays ascending: those at or before the straight-down one first */
+    const size_t i0 = r->i0;
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (rays[mid] <= i0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return faces_side(p, o, r, rays, 0, lo, -1, memo, kept, z, w, rho, drho, faces) &&
+           faces_side(p, o, r, rays, lo, n, 1, memo, kept, z, w, rho, drho, faces);
 }
 
 void tirenv_springs__fan_drho_neg(const tirenv_profile *p, const tirenv_springs__fan_rays *r,

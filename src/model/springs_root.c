@@ -173,24 +173,30 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const double k_r = T->k_r, *ct = T->cos_t;
     tirenv_springs__cc_cols *C = &c->cols;
     W->col = C;
-    int same = C->at == c->n_factors && C->k == k && C->S[0] == S_l && C->S[1] == S_r;
+    int same_el = C->k == k && C->S[0] == S_l && C->S[1] == S_r;
     for (size_t s = 0; s < ns; ++s) {
         const size_t e_s = W->el[s];
         W->fr[s] = wpos[e_s] != SIZE_MAX;
         W->w_T[s] = w_T[e_s];
         W->dw[s] = dw[e_s];
-        same = same && C->el[s] == e_s;
+        same_el = same_el && C->el[s] == e_s;
     }
-    if (same) /* the columns of the last root on this factor, bit for bit */
+    if (same_el && C->at == c->n_factors) /* the last root's on this factor, bit for bit */
         return 1;
+    /* after a flip of the factor they were solved on, a slot whose element and chain the flip
+     * left as they were keeps its column */
+    const int mended = same_el && C->at == c->mend_at && c->n_factors == c->mend_at + 1;
     for (size_t s = 0; s < ns; ++s) {
+        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
+        if (mended && (W->fr[s] ? hi < c->mend_lo || lo > c->mend_hi
+                                : W->el[s] < c->mend_lo || W->el[s] > c->mend_hi))
+            continue;
         for (size_t r = 0; r < ns; ++r)
             C->Y[s][r] = 0;
         C->phi[s] = 0;
         C->el[s] = W->el[s];
         if (!W->fr[s])
             continue;
-        const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
         for (size_t e = lo; e <= hi; ++e)
             y[e] = 0;
         y[W->el[s]] = 1;
@@ -275,6 +281,7 @@ static void keep_state(tirenv_springs__cc *c, const root_rows *W, const double w
     }
     c->pred_x = x;
     c->pred_z = zb;
+    c->pred_held = 0;
     c->pred_ok = 1;
 }
 
@@ -372,6 +379,8 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
     const size_t N = T->N, *wpos = c->wpos;
     const double *st = T->sin_t, *ct = T->cos_t;
     int moved = 0, grew = 0; /* (grew: K_FF changed, a longer span or an element let go) */
+    int longer = 0;           /* a longer span */
+    size_t n_let = 0, let = SIZE_MAX; /* the elements let go, the last of them */
     for (size_t q = 0, k = c->n_schur; q < k; ++q) {
         tirenv_springs__cc_row *R = &c->rows[c->order[c->schur_pos[q]] - N];
         if (R->id < 0 || !(R->t > 0))
@@ -395,7 +404,7 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
             c->f0 = e < c->f0 ? e : c->f0;
             c->f1 = e > c->f1 ? e : c->f1;
             c->wpos[e] = 0; /* free (the layout makes its positions anew) */
-            grew = 1;
+            grew = longer = 1;
         }
         /* the element whose ray the vertex crossed: held on its ray's row, it is let go
          * (its ray passed onto the vertex's other face, below the row now bearing on it) */
@@ -403,6 +412,8 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
         if (wpos[e_c] == SIZE_MAX) {
             held_remove(c, e_c);
             grew = 1;
+            ++n_let;
+            let = e_c;
         }
         if (i < c->f0 || i + 1 > c->f1 || !row_inside(T, i, dx, dzv, &t))
             return 0;
@@ -413,7 +424,11 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
     }
     /* the layout's keys name the rows by their sector: the next layout makes its own */
     c->last_ok = 0;
-    return moved && !tirenv_springs__cc_schur_factor(c, T, !grew);
+    if (!moved)
+        return 0;
+    /* one element let go on the same span: K_FF's factor mended on its chain alone */
+    return !(grew && !longer && n_let == 1 ? tirenv_springs__cc_schur_flip(c, T, let)
+                                           : tirenv_springs__cc_schur_factor(c, T, !grew));
 }
 
 int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
@@ -464,7 +479,8 @@ int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc
     }
     c->warm_ids[m] = v;
     c->last_ok = 0;
-    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+    /* (on the same span only e changed: its chain's factor mended; else factorised anew) */
+    if (tirenv_springs__cc_schur_flip(c, T, e)) {
         c->base_ok = 0;
         c->pred_ok = 0;
         return 0;
@@ -502,21 +518,36 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
      * changed no bit) */
     double *H = c->pred_w, *dH = c->root_du;
     double Fa = 0, dFa = 0;
-    for (size_t m = 0; m < n_held; ++m) {
+    /* the first and the last apart, so that the loop between asks nothing (on locals: H may
+     * alias rho, so its stores would make rho be read again) */
+    for (size_t m = 0; m < n_held; m = m == 0 && n_held > 2 ? n_held - 1 : m + 1) {
         const size_t e = held[m];
-        H[e] = R0 - rho[e];
-        dH[e] = -drho[e];
+        const double h = R0 - rho[e], dh = -drho[e];
+        H[e] = h;
+        dH[e] = dh;
         double f = k_r * ct[e];
-        if ((m == 0 || m + 1 == n_held) && (e == f0 || e == f1))
+        if (e == f0 || e == f1)
             f = f + (e == f0 ? S_l : 0) + (e == f1 ? S_r : 0);
-        Fa += f * H[e];
-        dFa += f * dH[e];
+        Fa += f * h;
+        dFa += f * dh;
+        for (size_t q = 1; m == 0 && q + 1 < n_held; ++q) {
+            const size_t i = held[q];
+            const double h_i = R0 - rho[i], dh_i = -drho[i], f_i = k_r * ct[i];
+            H[i] = h_i;
+            dH[i] = dh_i;
+            Fa += f_i * h_i;
+            dFa += f_i * dh_i;
+        }
     }
     /* v = K_FF^-1 f on the free elements, for this factor */
     double *v = c->root_v;
     if (c->root_v_at != c->n_factors) {
+        /* after a flip of the factor it was solved for, only on the chains the flip changed */
+        const int mended = c->root_v_at == c->mend_at && c->n_factors == c->mend_at + 1;
         for (size_t q = 0; q < n_ch; ++q) {
             const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+            if (mended && (hi < c->mend_lo || lo > c->mend_hi))
+                continue;
             for (size_t e = lo; e <= hi; ++e)
                 v[e] = k_r * ct[e];
             v[f0] += lo == f0 ? S_l : 0;
@@ -570,18 +601,17 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
      * ends' coupling and the rows' B. */
     const double dz = zb - z_a;
     double *pw = c->pred_w;
-    for (size_t m = 0; m < n_held; ++m) {
-        const size_t e = held[m];
-        pw[e] = H[e] + dz * dH[e];
-    }
+    /* (the held elements' rows stay at z_a in pred_w, H: those the check asks for, and the
+     * chains' neighbours here, are taken to zb where read; a pass over all of them cost some
+     * 340 instructions a root) */
     for (size_t q = 0; q < n_ch; ++q) {
         const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
         for (size_t e = lo; e <= hi; ++e)
             pw[e] = 0;
         if (lo > f0)
-            pw[lo] = k_ir * pw[lo - 1];
+            pw[lo] = k_ir * (H[lo - 1] + dz * dH[lo - 1]);
         if (hi < f1)
-            pw[hi] += k_ir * pw[hi + 1];
+            pw[hi] += k_ir * (H[hi + 1] + dz * dH[hi + 1]);
     }
     for (size_t s = 0; s < 2 * k; ++s)
         if (W.fr[s])
@@ -592,9 +622,19 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         c->pred_lam[q] = lam[q];
     c->pred_x = x;
     c->pred_z = zb;
+    c->pred_held = 1;
+    c->pred_dz = dz;
     c->pred_ok = 1;
     *z_root = zb;
     return 1;
+}
+
+/* Element e's w at the kept state (m): a held one's row at the root where root_at left it
+ * at its own height (pred_held), as root_at's chains took it. */
+static inline double pred_w_at(const tirenv_springs__cc *c, size_t e)
+{
+    const double *w = c->pred_w;
+    return c->pred_held && c->wpos[e] == SIZE_MAX ? w[e] + c->pred_dz * c->root_du[e] : w[e];
 }
 
 /* A held element's reaction at the kept state: K w there (w beyond the span folded into K's
@@ -603,9 +643,9 @@ static double held_reaction(const tirenv_springs__cc *c, const tirenv_springs__c
                             size_t e)
 {
     const size_t f0 = c->f0, f1 = c->f1;
-    const double *w = c->pred_w;
-    double r = tirenv_springs__cc_k_diag(T, f0, f1, e) * w[e] -
-               T->k_ir * ((e > f0 ? w[e - 1] : 0) + (e < f1 ? w[e + 1] : 0));
+    double r = tirenv_springs__cc_k_diag(T, f0, f1, e) * pred_w_at(c, e) -
+               T->k_ir * ((e > f0 ? pred_w_at(c, e - 1) : 0) +
+                          (e < f1 ? pred_w_at(c, e + 1) : 0));
     for (size_t s = 0; s < 2 * c->n_schur; ++s)
         r -= c->pred_el[s] == e ? c->pred_gl[s] : 0;
     return r;
@@ -690,7 +730,7 @@ int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc
     c->warm_pin[e] = (unsigned char)hold;
     /* the next layout lays out its own KKT system (wpos no longer the last one's) */
     c->last_ok = 0;
-    if (tirenv_springs__cc_schur_factor(c, T, 0)) {
+    if (tirenv_springs__cc_schur_flip(c, T, e)) {
         c->base_ok = 0;
         c->pred_ok = 0;
         return 1;

@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 /* x := K_FF^-1 x on one chain [lo, hi] of free elements, x zero on [lo, from): the forward
  * elimination leaves those zeros as they are (x - mul 0 = +0), so it starts at from. */
@@ -56,45 +57,12 @@ static double row_dot(const tirenv_springs__cc *c, const tirenv_springs__cc_row 
     return s;
 }
 
-int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                                   int same)
+/* The working rows' columns of K_FF^-1 G^T on the factor kept, then S = G K_FF^-1 G^T and its
+ * LDL^T; 1 if the rows are dependent. */
+static int schur_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T)
 {
     const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
-    const double k_ir = T->k_ir, k_max = T->k_r + 2 * T->k_ir;
-    double *piv = c->tri_piv, *mul = c->tri_mul;
-    size_t n_chains = 0;
-    /* K_FF depends on the span and the held elements only: its factor is kept while they
-     * stay (kkt_factor compares them), bit for bit what factorising again gives. */
-    c->tri_ok = 0;
-    c->factor_kept = same;
-    c->n_factors += !same; /* what a K_FF^-1 f kept was solved with (springs_root.c) */
-    /* Free element e's stiffness (tirenv_springs__cc_k_diag); coupled to e - 1 if that is
-     * free and in the span. On locals: the stores to chains (size_t) would make c's fields be read
-     * again at every element. */
-    const size_t *wpos = c->wpos;
-    size_t *chains = c->chains;
-    for (size_t e = f0; !same && e <= f1; ++e) {
-        if (wpos[e] == SIZE_MAX)
-            continue;
-        double d = tirenv_springs__cc_k_diag(T, f0, f1, e);
-        if (e > f0 && wpos[e - 1] != SIZE_MAX) {
-            mul[e] = -k_ir / piv[e - 1];
-            d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
-            chains[2 * n_chains - 1] = e;
-        } else {
-            chains[2 * n_chains] = chains[2 * n_chains + 1] = e;
-            ++n_chains;
-        }
-        if (!(d > 0))
-            return 1;
-        piv[e] = d;
-    }
-    if (!same)
-        c->n_chains = n_chains;
-    c->tri_ok = 1;
-    c->tri_f0 = f0;
-    c->tri_f1 = f1;
-    /* The working rows' columns of K_FF^-1 G^T, then S = G K_FF^-1 G^T by LDL^T. */
+    const double k_max = T->k_r + 2 * T->k_ir;
     for (size_t q = 0; q < k; ++q) {
         const tirenv_springs__cc_row *r = &c->rows[c->order[c->schur_pos[q]] - N];
         double *y = c->tri_y + q * (N + 2);
@@ -151,6 +119,128 @@ int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs_
             return 1;
     }
     return 0;
+}
+
+int tirenv_springs__cc_schur_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                   int same)
+{
+    const size_t f0 = c->f0, f1 = c->f1;
+    const double k_ir = T->k_ir;
+    double *piv = c->tri_piv, *mul = c->tri_mul;
+    size_t n_chains = 0;
+    /* K_FF depends on the span and the held elements only: its factor is kept while they
+     * stay (kkt_factor compares them), bit for bit what factorising again gives. */
+    c->tri_ok = 0;
+    c->factor_kept = same;
+    c->n_factors += !same; /* what a K_FF^-1 f kept was solved with (springs_root.c) */
+    /* Free element e's stiffness (tirenv_springs__cc_k_diag); coupled to e - 1 if that is
+     * free and in the span. On locals: the stores to chains (size_t) would make c's fields be read
+     * again at every element. */
+    const size_t *wpos = c->wpos;
+    size_t *chains = c->chains;
+    for (size_t e = f0; !same && e <= f1; ++e) {
+        if (wpos[e] == SIZE_MAX)
+            continue;
+        double d = tirenv_springs__cc_k_diag(T, f0, f1, e);
+        if (e > f0 && wpos[e - 1] != SIZE_MAX) {
+            mul[e] = -k_ir / piv[e - 1];
+            d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
+            chains[2 * n_chains - 1] = e;
+        } else {
+            chains[2 * n_chains] = chains[2 * n_chains + 1] = e;
+            ++n_chains;
+        }
+        if (!(d > 0))
+            return 1;
+        piv[e] = d;
+    }
+    if (!same)
+        c->n_chains = n_chains;
+    c->tri_ok = 1;
+    c->tri_f0 = f0;
+    c->tri_f1 = f1;
+    return schur_rows(c, T);
+}
+
+/* The Thomas factor of chain elements [from, hi] (from the chain's first, or after a factor
+ * kept for [lo, from)): each element's pivot depends on those before it in its chain alone,
+ * so these are the bits a factor of the whole span gives. 1 at a pivot <= 0. */
+static int chain_factor(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, size_t lo,
+                        size_t from, size_t hi)
+{
+    const size_t f0 = c->f0, f1 = c->f1;
+    const double k_ir = T->k_ir;
+    double *piv = c->tri_piv, *mul = c->tri_mul;
+    for (size_t e = from; e <= hi; ++e) {
+        double d = tirenv_springs__cc_k_diag(T, f0, f1, e);
+        if (e > lo) {
+            mul[e] = -k_ir / piv[e - 1];
+            d += k_ir * mul[e]; /* d - k_ir^2 / piv[e - 1] */
+        }
+        if (!(d > 0))
+            return 1;
+        piv[e] = d;
+    }
+    return 0;
+}
+
+int tirenv_springs__cc_schur_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                  size_t e)
+{
+    const size_t f0 = c->f0, f1 = c->f1;
+    if (!c->tri_ok || c->tri_f0 != f0 || c->tri_f1 != f1 || e < f0 || e > f1)
+        return tirenv_springs__cc_schur_factor(c, T, 0);
+    size_t *ch = c->chains, n = c->n_chains, q = 0;
+    while (q < n && ch[2 * q + 1] < e) /* the first chain ending at or after e */
+        ++q;
+    const int inside = q < n && ch[2 * q] <= e;
+    if ((c->wpos[e] == SIZE_MAX) != inside) /* (e did not flip: no chain to mend) */
+        return tirenv_springs__cc_schur_factor(c, T, 0);
+    c->tri_ok = 0;
+    c->factor_kept = 0;
+    c->mend_at = c->n_factors++;
+    if (inside) { /* e held: its chain [lo, hi] splits into [lo, e - 1] and [e + 1, hi], the
+                   * latter factorised anew */
+        const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+        const int left = lo < e, right = e < hi;
+        const size_t keep = (size_t)left + (size_t)right; /* chains in its place */
+        memmove(ch + 2 * (q + keep), ch + 2 * (q + 1), 2 * (n - q - 1) * sizeof *ch);
+        size_t at = q;
+        if (left) {
+            ch[2 * at] = lo;
+            ch[2 * at++ + 1] = e - 1;
+        }
+        if (right) {
+            ch[2 * at] = e + 1;
+            ch[2 * at + 1] = hi;
+        }
+        c->n_chains = n - 1 + keep;
+        c->mend_lo = lo;
+        c->mend_hi = hi;
+        if (right && chain_factor(c, T, e + 1, e + 1, hi))
+            return 1;
+    } else { /* e let go: the chains either side (ending at e - 1, starting at e + 1) join
+              * it, the factor kept up to e - 1 */
+        const int left = q > 0 && ch[2 * q - 1] + 1 == e;
+        const int right = q < n && ch[2 * q] == e + 1;
+        const size_t lo = left ? ch[2 * (q - 1)] : e, hi = right ? ch[2 * q + 1] : e;
+        const size_t first = left ? q - 1 : q, gone = (size_t)left + (size_t)right;
+        /* chains [first, first + gone) become one (or one is put in at q) */
+        if (gone == 0)
+            memmove(ch + 2 * (q + 1), ch + 2 * q, 2 * (n - q) * sizeof *ch);
+        else
+            memmove(ch + 2 * (first + 1), ch + 2 * (first + gone),
+                    2 * (n - first - gone) * sizeof *ch);
+        ch[2 * first] = lo;
+        ch[2 * first + 1] = hi;
+        c->n_chains = n + 1 - gone;
+        c->mend_lo = lo;
+        c->mend_hi = hi;
+        if (chain_factor(c, T, lo, e, hi))
+            return 1;
+    }
+    c->tri_ok = 1;
+    return schur_rows(c, T);
 }
 
 void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,

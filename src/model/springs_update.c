@@ -114,28 +114,38 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray),
      * pin written only on the elements a vertex row sits on (a pass over the span cost
      * some 400 instructions an update; the others are their rays'). */
-    double *ph = c->upd_w + 1, *wn = c->step, *res = c->raise;
+    double *wn = c->step, *res = c->raise;
     long *pin = c->upd_pin;
     const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0)
             pin[V[k].i] = -1 - (long)V[k].i;
-    /* ph over [f0, f1] in three pieces, each a loop the compiler vectorises: 0 outside the
-     * rays [ra, rb], d where it is > 0 inside */
+    /* ph over [f0, f1]: 0 outside the rays [ra, rb], d inside (>= 0 as the caller gives it),
+     * raised where a vertex on an element stands higher. Where the rays cover the span and
+     * no vertex stands higher, d itself (a copy of it cost some 450 instructions an update);
+     * else in three pieces, each a loop the compiler vectorises. */
     const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
-    for (size_t e = f0; e < r0; ++e)
-        ph[e] = 0;
-    for (size_t e = r0; e <= r1; ++e) {
-        const double v = d[e];
-        ph[e] = v > 0 ? v : 0;
-    }
-    for (size_t e = r1 + 1; e <= f1; ++e)
-        ph[e] = 0;
-    for (size_t k = 0; k < nv; ++k)
-        if (V[k].t == 0 && V[k].h > ph[V[k].i]) {
-            ph[V[k].i] = V[k].h;
-            pin[V[k].i] = V[k].id;
+    int raised = r0 != f0 || r1 != f1;
+    for (size_t k = 0; k < nv && !raised; ++k)
+        raised = V[k].t == 0 && V[k].h > d[V[k].i];
+    const double *ph = d;
+    if (raised) {
+        double *ph_w = c->upd_w + 1;
+        for (size_t e = f0; e < r0; ++e)
+            ph_w[e] = 0;
+        for (size_t e = r0; e <= r1; ++e) {
+            const double v = d[e];
+            ph_w[e] = v > 0 ? v : 0;
         }
+        for (size_t e = r1 + 1; e <= f1; ++e)
+            ph_w[e] = 0;
+        for (size_t k = 0; k < nv; ++k)
+            if (V[k].t == 0 && V[k].h > ph_w[V[k].i]) {
+                ph_w[V[k].i] = V[k].h;
+                pin[V[k].i] = V[k].id;
+            }
+        ph = ph_w;
+    }
     /* w: the held elements on their row (the same row as the base's), the free ones along
      * the tangent, each above its own row. wpos marks the held elements of the base's last
      * KKT system, its final working set. A held element on its ray's row must have no
@@ -288,10 +298,12 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     }
     /* Accepted: the outputs as the solve gives them (pe: each element's net reaction). */
     /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
-     * max(ph, 0) gives, copied */
+     * max(ph, 0) gives, copied (where ph is d and d is obstacle, as the model passes them,
+     * already there) */
     memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
     memcpy(pe + f0, pq + f0, (f1 - f0 + 1) * sizeof *pe);
-    memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
+    if (ph != obstacle)
+        memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
     /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
      * most two a row, some shared) counted again by pe as it ends */
     size_t el[2 * TIRENV_SPRINGS__SCHUR_MAX], n_el = 0;

@@ -548,6 +548,66 @@ static void test_pairs_miss_nothing(void **state)
     tirenv_rng_free(rng);
 }
 
+/* ---- K_FF's factor after one element's row enters or leaves ---- */
+
+/* Random spans on random tires, elements held and let go one at a time: the factor mended on
+ * the flipped element's chain (tirenv_springs__cc_schur_flip) against one factorised afresh,
+ * the same chains and bit for bit the same pivots and multipliers. */
+static void test_flip_matches_factor(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x5eed20c0ffeeULL;
+    size_t flips = 0, splits = 0, joins = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const size_t N = 20 + (size_t)(200 * tirenv_test_uniform(&seed));
+        const double k_r = 1e5 * (0.3 + tirenv_test_uniform(&seed));
+        const double k_ir = k_r * pow(10, 4 * tirenv_test_uniform(&seed) - 1);
+        chain_set cs;
+        chain_set_init(&cs, N, k_r, k_ir);
+        const tirenv_springs__cc_tire T = {.N = N, .k_r = k_r, .k_ir = k_ir, .diag = cs.diag,
+                                           .lq = cs.lq, .rq = cs.rq};
+        tirenv_springs__cc a, b;
+        assert_int_equal(tirenv_springs__cc_init(&a, N), 0);
+        assert_int_equal(tirenv_springs__cc_init(&b, N), 0);
+        const size_t f0 = (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
+        const size_t f1 = N - 1 - (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
+        a.f0 = b.f0 = f0;
+        a.f1 = b.f1 = f1;
+        a.n_schur = b.n_schur = 0;
+        for (size_t e = f0; e <= f1; ++e)
+            a.wpos[e] = tirenv_test_uniform(&seed) < 0.3 ? SIZE_MAX : 0;
+        assert_int_equal(tirenv_springs__cc_schur_factor(&a, &T, 0), 0);
+        for (int step = 0; step < 60; ++step) {
+            const size_t e = f0 + (size_t)((double)(f1 - f0 + 1) * tirenv_test_uniform(&seed));
+            const int hold = a.wpos[e] != SIZE_MAX;
+            a.wpos[e] = hold ? SIZE_MAX : 0;
+            const int side = (e > f0 && a.wpos[e - 1] != SIZE_MAX) +
+                             (e < f1 && a.wpos[e + 1] != SIZE_MAX);
+            splits += hold && side == 2;
+            joins += !hold && side == 2;
+            assert_int_equal(tirenv_springs__cc_schur_flip(&a, &T, e), 0);
+            memcpy(b.wpos + f0, a.wpos + f0, (f1 - f0 + 1) * sizeof *b.wpos);
+            assert_int_equal(tirenv_springs__cc_schur_factor(&b, &T, 0), 0);
+            assert_int_equal(a.n_chains, b.n_chains);
+            for (size_t q = 0; q < 2 * b.n_chains; ++q)
+                assert_int_equal(a.chains[q], b.chains[q]);
+            for (size_t q = 0; q < b.n_chains; ++q)
+                for (size_t m = b.chains[2 * q]; m <= b.chains[2 * q + 1]; ++m) {
+                    assert_memory_equal(&a.tri_piv[m], &b.tri_piv[m], sizeof(double));
+                    if (m > b.chains[2 * q])
+                        assert_memory_equal(&a.tri_mul[m], &b.tri_mul[m], sizeof(double));
+                }
+            ++flips;
+        }
+        tirenv_springs__cc_free(&a);
+        tirenv_springs__cc_free(&b);
+        chain_set_free(&cs);
+    }
+    print_message("%zu flips, %zu chains split in two, %zu pairs joined\n", flips, splits,
+                  joins);
+    assert_true(splits > 50 && joins > 50);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -557,6 +617,7 @@ int main(void)
         cmocka_unit_test(test_kept_state_is_invisible),
         cmocka_unit_test(test_needle_refused),
         cmocka_unit_test(test_pairs_miss_nothing),
+        cmocka_unit_test(test_flip_matches_factor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
