@@ -534,6 +534,28 @@ int tirenv_ring__sample_whole(tirenv_ring *r)
     return sample_again(r, win);
 }
 
+/* The vertices each side of x nearest to it, where the rays' walks start: the last with X < x
+ * (-1: none) and the first with X > x (n: none). */
+static inline void walk_starts(const tirenv_profile *p, double x, long *cur_b, long *cur_f)
+{
+    const double *X = p->x;
+    long f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
+    if (!(X[f] > x))
+        ++f;
+    long b = f - 1;
+    while (b >= 0 && X[b] >= x)
+        --b;
+    *cur_b = b, *cur_f = f;
+}
+
+/* Whether the walks at x start from the vertices the last fresh sampling's did. */
+static int same_starts(const tirenv_ring *r, const tirenv_profile *p, double x)
+{
+    long cur_b, cur_f;
+    walk_starts(p, x, &cur_b, &cur_f);
+    return cur_b == r->shift_cur[0] && cur_f == r->shift_cur[1];
+}
+
 /* A sampling again, from the last one's points (docs/models.md 5.3; the same bits). Where the
  * pieces are the last sampling's (same_pieces: the same vertex cuts in the same order, each in
  * the same node interval) and so are the gaps, each piece's middle ray still lies between the
@@ -661,6 +683,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
      * nodes and tread stiffness. */
     const int was = r->shift_ok && p == r->smp_p && ja == r->smp_ja && jb == r->smp_jb &&
                     tirenv_ring__same_bits(&k_t, &r->smp_kt, 1);
+    const int same_x = p == r->smp_p && tirenv_ring__same_bits(&x, &r->smp_x, 1);
     r->shift_ok = 0;
     r->smp_p = p, r->smp_x = x, r->smp_z = z, r->smp_ja = ja, r->smp_jb = jb, r->smp_kt = k_t;
     clear_gaps(r);
@@ -701,7 +724,10 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     r->n_pts = 0;
     size_t iv = 0, n_lines = 0, n_back = 0;
     int contig = 0, ordered = 1;
-    const int fresh = !same_pieces(r, ja, jb, v, nv);
+    /* (At a new x only where the points may then be moved: on a road, whose window holds a
+     * cut every node or more, the cuts seldom stay in their intervals over a step, and
+     * comparing them costs more than the pieces' build saves.) */
+    const int fresh = !((same_x || nv * SKIP_CUTS <= jb - ja) && same_pieces(r, ja, jb, v, nv));
     if (!fresh) {
         /* The last sampling's pieces: only their vertex ends moved (with z). Vertex i ends
          * piece (j_i - ja) + i and begins the next, no piece having zero length. */
@@ -775,18 +801,10 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         r->pc_valid = keep && n_lines == n_pieces;
         r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
-    /* The vertices each side of the centre, nearest first: where the rays' walks start. */
-    long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
-    if (!(X[cur_f] > x))
-        ++cur_f;
-    long cur_b = cur_f - 1;
-    while (cur_b >= 0 && X[cur_b] >= x)
-        --cur_b;
     /* The far intervals (see far_intervals) are left out: no ray, no point. */
     const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
     if (was && !fresh && !inside && ordered && nv * SKIP_CUTS <= jb - ja && same_gaps(r) &&
-        n_back == r->shift_back && cur_f == r->shift_cur[1] && cur_b == r->shift_cur[0] &&
-        shift_whole(r, p, x, z, reach, k_t, wl)) {
+        n_back == r->shift_back && same_starts(r, p, x) && shift_whole(r, p, x, z, reach, k_t, wl)) {
         ++r->n_shifted;
         r->n_pts = r->shift_n_pts;
         r->n_gapped += n_far > 0;
@@ -795,6 +813,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         return 0;
     }
     /* Their lines: rays along the middle of each piece, each side walked outward. */
+    long cur_b, cur_f;
+    walk_starts(p, x, &cur_b, &cur_f);
     r->shift_cur[0] = cur_b, r->shift_cur[1] = cur_f, r->shift_back = n_back;
     if (ordered && inside) {
         for (size_t t = 0; t < n_lines; ++t)
