@@ -565,12 +565,13 @@ static int same_starts(const tirenv_ring *r, const tirenv_profile *p, double x)
  * and every such vertex is a cut, on the same side of the ray as before. At a new x the walks
  * must start from the same vertices and go the same way (the caller checks the vertices each
  * side of the centre and the count of backward rays against the last fresh sampling's): then
- * each walks over the same vertices, and ends where it did. So where each piece's walk ended at such a vertex (or past the profile's last, with
- * the flat extension there within reach by a margin), and each piece is wider than
- * LINE_MARGIN rad (the test's and the angles' round-off, some 1e-15 rad, cannot then order a
- * vertex differently), every piece meets the last sampling's line, and its points lie where
- * that sampling wrote them. A node's point keeps its angle, place, weight, d(d)/dz and
- * stiffness; only its d and ground abscissa move with z, computed again from the line by
+ * each walks over the same vertices, and ends where it did. So where each piece's walk ended
+ * at such a vertex (or past the profile's last, with the flat extension there within reach by
+ * a margin), and each piece is wider than LINE_MARGIN rad (the test's and the angles'
+ * round-off, some 1e-15 rad, cannot then order a vertex differently), every piece meets the
+ * last sampling's line, and its points lie where that sampling wrote them. A node's point keeps
+ * its angle, place, weight, d(d)/dz and stiffness (none depends on x without lugs); only its d
+ * and ground abscissa move with x and z, computed again from the line by
  * rho_on's and piece_point's operations: the bits of a fresh sampling, without the walks, the
  * pieces' and points' other fields. The pieces with a vertex cut at an end (its angle moves
  * with z) are written whole, as is a point out of reach (its d is not kept). Returns 0 where a
@@ -727,9 +728,10 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     /* (At a new x only where the points may then be moved: on a road, whose window holds a
      * cut every node or more, the cuts seldom stay in their intervals over a step, and
      * comparing them costs more than the pieces' build saves.) */
-    const int fresh = !((same_x || nv * SKIP_CUTS <= jb - ja) && same_pieces(r, ja, jb, v, nv));
+    const int fresh =
+        !((same_x || nv * SKIP_CUTS <= jb - ja) && same_pieces(r, ja, jb, v, nv));
     if (!fresh) {
-        /* The last sampling's pieces: only their vertex ends moved (with z). Vertex i ends
+        /* The last sampling's pieces: only their vertex ends moved (with x and z). Vertex i ends
          * piece (j_i - ja) + i and begins the next, no piece having zero length. */
         tirenv_ring_piece *const c = r->lines;
         for (size_t i = 0; i < nv; ++i) {
@@ -804,7 +806,8 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     /* The far intervals (see far_intervals) are left out: no ray, no point. */
     const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
     if (was && !fresh && !inside && ordered && nv * SKIP_CUTS <= jb - ja && same_gaps(r) &&
-        n_back == r->shift_back && same_starts(r, p, x) && shift_whole(r, p, x, z, reach, k_t, wl)) {
+        n_back == r->shift_back && same_starts(r, p, x) &&
+        shift_whole(r, p, x, z, reach, k_t, wl)) {
         ++r->n_shifted;
         r->n_pts = r->shift_n_pts;
         r->n_gapped += n_far > 0;
