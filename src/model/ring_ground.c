@@ -294,15 +294,13 @@ piece_points(const tirenv_ring *r, const tirenv_ring_piece *c, int same, double 
     return 2;
 }
 
-/* Whether the last sampling's pieces are this one's (r->pc_*): the same x and nodes, and the
- * same vertex cuts, each still strictly inside the node interval it cut and in the same order
- * (a vertex's angle moves with z): then a build would make the same pieces, none of zero
+/* Whether the last sampling's pieces are this one's (r->pc_*): the same nodes, and the same
+ * vertex cuts, each still strictly inside the node interval it cut and in the same order (a
+ * vertex's angle moves with x and z): then a build would make the same pieces, none of zero
  * length, with the vertices' new angles at their ends. */
-static int same_pieces(const tirenv_ring *r, double x, size_t ja, size_t jb, const cut v[],
-                       size_t nv)
+static int same_pieces(const tirenv_ring *r, size_t ja, size_t jb, const cut v[], size_t nv)
 {
-    if (!r->pc_valid || !tirenv_ring__same_bits(&x, &r->pc_x, 1) || ja != r->pc_ja ||
-        jb != r->pc_jb || nv != r->pc_nv)
+    if (!r->pc_valid || ja != r->pc_ja || jb != r->pc_jb || nv != r->pc_nv)
         return 0;
     for (size_t i = 0; i < nv; ++i) {
         const size_t j = r->pc_vj[i];
@@ -536,19 +534,44 @@ int tirenv_ring__sample_whole(tirenv_ring *r)
     return sample_again(r, win);
 }
 
-/* A sampling at the same x again, from the last one's points (docs/models.md 5.3; the same
- * bits). Where the pieces are the last sampling's (same_pieces: the same vertex cuts in the
- * same order, each in the same node interval) and so are the gaps, each piece's middle ray
- * still lies between the same two cuts. Its walk ends at the first vertex (outward) that the
- * ray passes at or below, every vertex before it passed above; for a vertex within reach
- * horizontally and below the centre that test is whether the vertex's angle seen from the
- * centre lies beyond the ray's, and every such vertex is a cut, on the same side of the ray as
- * before. So where each piece's walk ended at such a vertex (or past the profile's last, with
- * the flat extension there within reach by a margin), and each piece is wider than
- * LINE_MARGIN rad (the test's and the angles' round-off, some 1e-15 rad, cannot then order a
- * vertex differently), every piece meets the last sampling's line, and its points lie where
- * that sampling wrote them. A node's point keeps its angle, place, weight, d(d)/dz and
- * stiffness; only its d and ground abscissa move with z, computed again from the line by
+/* The vertices each side of x nearest to it, where the rays' walks start: the last with X < x
+ * (-1: none) and the first with X > x (n: none). */
+static inline void walk_starts(const tirenv_profile *p, double x, long *cur_b, long *cur_f)
+{
+    const double *X = p->x;
+    long f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
+    if (!(X[f] > x))
+        ++f;
+    long b = f - 1;
+    while (b >= 0 && X[b] >= x)
+        --b;
+    *cur_b = b, *cur_f = f;
+}
+
+/* Whether the walks at x start from the vertices the last fresh sampling's did. */
+static int same_starts(const tirenv_ring *r, const tirenv_profile *p, double x)
+{
+    long cur_b, cur_f;
+    walk_starts(p, x, &cur_b, &cur_f);
+    return cur_b == r->shift_cur[0] && cur_f == r->shift_cur[1];
+}
+
+/* A sampling again, from the last one's points (docs/models.md 5.3; the same bits). Where the
+ * pieces are the last sampling's (same_pieces: the same vertex cuts in the same order, each in
+ * the same node interval) and so are the gaps, each piece's middle ray still lies between the
+ * same two cuts. Its walk ends at the first vertex (outward) that the ray passes at or below,
+ * every vertex before it passed above; for a vertex within reach horizontally and below the
+ * centre that test is whether the vertex's angle seen from the centre lies beyond the ray's,
+ * and every such vertex is a cut, on the same side of the ray as before. At a new x the walks
+ * must start from the same vertices and go the same way (the caller checks the vertices each
+ * side of the centre and the count of backward rays against the last fresh sampling's): then
+ * each walks over the same vertices, and ends where it did. So where each piece's walk ended
+ * at such a vertex (or past the profile's last, with the flat extension there within reach by
+ * a margin), and each piece is wider than LINE_MARGIN rad (the test's and the angles'
+ * round-off, some 1e-15 rad, cannot then order a vertex differently), every piece meets the
+ * last sampling's line, and its points lie where that sampling wrote them. A node's point keeps
+ * its angle, place, weight, d(d)/dz and stiffness (none depends on x without lugs); only its d
+ * and ground abscissa move with x and z, computed again from the line by
  * rho_on's and piece_point's operations: the bits of a fresh sampling, without the walks, the
  * pieces' and points' other fields. The pieces with a vertex cut at an end (its angle moves
  * with z) are written whole, as is a point out of reach (its d is not kept). Returns 0 where a
@@ -657,11 +680,11 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
 {
     size_t wl[2] = {r->M, 0}; /* win, local while the points are written */
     win[0] = wl[0], win[1] = wl[1];
-    /* The last sampling's points may be moved (shift_whole) where it was at the same x on the
-     * same profile, nodes and tread stiffness. */
-    const int was = r->shift_ok && p == r->smp_p &&
-                    tirenv_ring__same_bits(&x, &r->smp_x, 1) && ja == r->smp_ja &&
-                    jb == r->smp_jb && tirenv_ring__same_bits(&k_t, &r->smp_kt, 1);
+    /* The last sampling's points may be moved (shift_whole) where it was on the same profile,
+     * nodes and tread stiffness. */
+    const int was = r->shift_ok && p == r->smp_p && ja == r->smp_ja && jb == r->smp_jb &&
+                    tirenv_ring__same_bits(&k_t, &r->smp_kt, 1);
+    const int same_x = p == r->smp_p && tirenv_ring__same_bits(&x, &r->smp_x, 1);
     r->shift_ok = 0;
     r->smp_p = p, r->smp_x = x, r->smp_z = z, r->smp_ja = ja, r->smp_jb = jb, r->smp_kt = k_t;
     clear_gaps(r);
@@ -702,9 +725,13 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     r->n_pts = 0;
     size_t iv = 0, n_lines = 0, n_back = 0;
     int contig = 0, ordered = 1;
-    const int fresh = !same_pieces(r, x, ja, jb, v, nv);
+    /* (At a new x only where the points may then be moved: on a road, whose window holds a
+     * cut every node or more, the cuts seldom stay in their intervals over a step, and
+     * comparing them costs more than the pieces' build saves.) */
+    const int fresh =
+        !((same_x || nv * SKIP_CUTS <= jb - ja) && same_pieces(r, ja, jb, v, nv));
     if (!fresh) {
-        /* The last sampling's pieces: only their vertex ends moved (with z). Vertex i ends
+        /* The last sampling's pieces: only their vertex ends moved (with x and z). Vertex i ends
          * piece (j_i - ja) + i and begins the next, no piece having zero length. */
         tirenv_ring_piece *const c = r->lines;
         for (size_t i = 0; i < nv; ++i) {
@@ -774,11 +801,12 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     }
     if (fresh) {
         r->pc_valid = keep && n_lines == n_pieces;
-        r->pc_x = x, r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
+        r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
     /* The far intervals (see far_intervals) are left out: no ray, no point. */
     const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
     if (was && !fresh && !inside && ordered && nv * SKIP_CUTS <= jb - ja && same_gaps(r) &&
+        n_back == r->shift_back && same_starts(r, p, x) &&
         shift_whole(r, p, x, z, reach, k_t, wl)) {
         ++r->n_shifted;
         r->n_pts = r->shift_n_pts;
@@ -788,12 +816,9 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         return 0;
     }
     /* Their lines: rays along the middle of each piece, each side walked outward. */
-    long cur_f = (long)(x < X[0] ? 0 : tirenv_profile__segment_at(p, x));
-    if (!(X[cur_f] > x))
-        ++cur_f;
-    long cur_b = cur_f - 1;
-    while (cur_b >= 0 && X[cur_b] >= x)
-        --cur_b;
+    long cur_b, cur_f;
+    walk_starts(p, x, &cur_b, &cur_f);
+    r->shift_cur[0] = cur_b, r->shift_cur[1] = cur_f, r->shift_back = n_back;
     if (ordered && inside) {
         for (size_t t = 0; t < n_lines; ++t)
             r->lines[t].hit = 1;

@@ -207,11 +207,10 @@ struct tirenv_ring {
     size_t cap_cuts;
     tirenv_ring_piece *lines;
     size_t cap_lines;
-    /* The last sampling's pieces, kept for the next at the same x (ring_ground.c): its x, its
-     * nodes ja .. jb, and its vertex cuts in angle order (the profile's vertex and the node
-     * interval it cuts); valid only if no piece had zero length. */
+    /* The last sampling's pieces, kept for the next (ring_ground.c): its nodes ja .. jb, and
+     * its vertex cuts in angle order (the profile's vertex and the node interval it cuts);
+     * valid only if no piece had zero length. */
     int pc_valid;
-    double pc_x;
     size_t pc_ja, pc_jb, pc_nv, cap_pc;
     size_t *pc_vk, *pc_vj;
     size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
@@ -233,12 +232,14 @@ struct tirenv_ring {
     const tirenv_profile *smp_p;
     double smp_x, smp_z, smp_kt;
     size_t smp_ja, smp_jb;
-    /* A sampling at the same x from the last one's points (ring_ground.c, shift_whole):
-     * shift_ok, that sampling's points and its pieces' records are whole; its points' count
-     * and window; its gaps (gaps_prev, n_gaps_prev intervals); n_shifted: samplings made so
-     * (the tests count them). */
+    /* A sampling from the last one's points (ring_ground.c, shift_whole): shift_ok, the last
+     * fresh sampling's points and its pieces' records are whole; its points' count and window;
+     * its gaps (gaps_prev, n_gaps_prev intervals); n_shifted: samplings made so (the tests
+     * count them). */
     int shift_ok;
     size_t shift_n_pts, shift_win[2];
+    size_t shift_back;   /* its pieces with their rays backward */
+    long shift_cur[2];   /* its first vertex behind the centre and ahead of it (-1, n: none) */
     size_t *gaps_prev, n_gaps_prev;
     size_t n_shifted;
     double *g;             /* per node: the belt layer's share of F, N */

@@ -619,6 +619,74 @@ static void test_same_x_points_seeded(void **state)
     assert_true(shifted > compared / 3);
 }
 
+/* The same at a new x: a 1 mm sweep over a seeded cleat, a seeded 5 mm blade and a seeded
+ * step, one evaluation a position at a height that moves as an equilibrium's does (the last
+ * sampling's points moved where the walks start from the same vertices: shift_whole), and one
+ * more 2.1e-5 m above it; each one's points, window and forces against a fresh ring's, bit for
+ * bit. Samplings at a new x were moved at a fifth of the positions at least. */
+static void test_new_x_points_seeded(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_rng *rng = tirenv_rng_alloc(43);
+    assert_non_null(rng);
+    size_t shifted_new = 0, positions = 0, compared = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
+        tirenv_profile *p = c == 0   ? tirenv_profile_cleat(0.05 + 0.25 * u, 0.02 + 0.08 * v)
+                            : c == 1 ? tirenv_profile_cleat(0.005, 0.01 + 0.05 * u)
+                                     : tirenv_profile_step(0.0113 * u, 0.02 + 0.06 * v);
+        assert_non_null(p);
+        tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+        assert_non_null(r);
+        const double z0 = 0.60 + 0.02 * tirenv_rng_uniform(rng), x0 = -0.35 * v;
+        for (int i = 0; i < 60; ++i) {
+            const double x = x0 + 1.0e-3 * i;
+            const double zs[2] = {z0 + 2e-3 * sin(9.1 * x), z0 + 2e-3 * sin(9.1 * x) + 2.1e-5};
+            for (int k = 0; k < 2; ++k) {
+                double fx1, fz1, fx2, fz2;
+                const size_t moved = r->n_shifted;
+                assert_int_equal(
+                    tirenv_ring_forces(r, p, x, zs[k], &fx1, &fz1, NULL, NULL, NULL), 0);
+                if (k == 0) {
+                    shifted_new += r->n_shifted - moved;
+                    ++positions;
+                }
+                tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
+                assert_non_null(fresh);
+                assert_int_equal(
+                    tirenv_ring_forces(fresh, p, x, zs[k], &fx2, &fz2, NULL, NULL, NULL), 0);
+                assert_int_equal(fresh->lo, r->lo);
+                assert_int_equal(fresh->n, r->n);
+                for (size_t a = 0, b = 0; a < r->n_pts; ++a) {
+                    const tirenv_ring_point *q = &r->pts[a];
+                    while (b < fresh->n_pts &&
+                           !tirenv_ring__same_bits(&fresh->pts[b].phi, &q->phi, 1))
+                        ++b;
+                    assert_true(b < fresh->n_pts);
+                    const tirenv_ring_point *f = &fresh->pts[b++];
+                    /* (A point beside a gap is a joined one's in the whole: its weight
+                     * differs, its ray's fields not.) */
+                    const double va[] = {q->d, q->dd, q->X, q->ddt},
+                                 vb[] = {f->d, f->dd, f->X, f->ddt};
+                    if (memcmp(va, vb, sizeof va) != 0)
+                        fail_msg("profile %d x %g z %.12g: point %zu differs", c, x, zs[k], a);
+                }
+                assert_true(tirenv_ring__same_bits(&fz1, &fz2, 1));
+                assert_true(tirenv_ring__same_bits(&fx1, &fx2, 1));
+                ++compared;
+                tirenv_ring_free(fresh);
+            }
+        }
+        tirenv_ring_free(r);
+        tirenv_profile_free(p);
+    }
+    tirenv_rng_free(rng);
+    print_message("new x, seeded: %zu evaluations compared, %zu of %zu positions' samplings "
+                  "moved\n", compared, shifted_new, positions);
+    assert_true(5 * shifted_new > positions);
+}
+
 /* tirenv_ring__tread_exterior, the belt outside the window (tirenv_ring_state's w there),
  * against an independent solve: the whole ring's belt-and-tread stiffness written out node by
  * node around the circle (the belt's stencil, the tread's compression k_c R dtheta between w
@@ -1267,6 +1335,7 @@ int main(void)
         cmocka_unit_test(test_state_restores_bits),
         cmocka_unit_test(test_same_x_points),
         cmocka_unit_test(test_same_x_points_seeded),
+        cmocka_unit_test(test_new_x_points_seeded),
         cmocka_unit_test(test_tread_exterior),
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
