@@ -549,6 +549,44 @@ static void test_same_x_points(void **state)
     tirenv_profile_free(ps[1]);
 }
 
+/* The seeded obstacles of the two tests below: c = 0 a cleat, 1 a 5 mm blade, 2 a step. */
+static tirenv_profile *seeded_obstacle(int c, double u, double v)
+{
+    return c == 0   ? tirenv_profile_cleat(0.05 + 0.25 * u, 0.02 + 0.08 * v)
+           : c == 1 ? tirenv_profile_cleat(0.005, 0.01 + 0.05 * u)
+                    : tirenv_profile_step(0.0113 * u, 0.02 + 0.06 * v);
+}
+
+/* r's last evaluation at (x, z) on p, which gave fx1 and fz1 (N), against a fresh ring's there:
+ * the same window, every point r sampled the same bits as the fresh ring's point on its ray (a
+ * point beside a gap is a joined one's in the whole: its weight differs, its ray's fields not;
+ * ddt too where with_ddt), and the same forces. case_ names the obstacle in a failure. */
+static void same_points_as_fresh(const tirenv_ring *r, const tirenv_tire *t,
+                                 const tirenv_profile *p, double x, double z, double fx1,
+                                 double fz1, int with_ddt, int case_)
+{
+    double fx2, fz2;
+    tirenv_ring *fresh = tirenv_ring_alloc(t->springs.R0, &t->ring);
+    assert_non_null(fresh);
+    assert_int_equal(tirenv_ring_forces(fresh, p, x, z, &fx2, &fz2, NULL, NULL, NULL), 0);
+    assert_int_equal(fresh->lo, r->lo);
+    assert_int_equal(fresh->n, r->n);
+    for (size_t a = 0, b = 0; a < r->n_pts; ++a) {
+        const tirenv_ring_point *q = &r->pts[a];
+        while (b < fresh->n_pts && !tirenv_ring__same_bits(&fresh->pts[b].phi, &q->phi, 1))
+            ++b;
+        assert_true(b < fresh->n_pts);
+        const tirenv_ring_point *f = &fresh->pts[b++]; /* (a corner's two) */
+        const double va[] = {q->d, q->dd, q->X, with_ddt ? q->ddt : 0},
+                     vb[] = {f->d, f->dd, f->X, with_ddt ? f->ddt : 0};
+        if (memcmp(va, vb, sizeof va) != 0)
+            fail_msg("profile %d x %g z %.12g: point %zu differs", case_, x, z, a);
+    }
+    assert_true(tirenv_ring__same_bits(&fz1, &fz2, 1));
+    assert_true(tirenv_ring__same_bits(&fx1, &fx2, 1));
+    tirenv_ring_free(fresh);
+}
+
 /* The same over seeded obstacles, as Newton meets them: at each x of a 1 mm sweep over a
  * seeded cleat, a seeded 5 mm blade and a seeded step (the default tire, gaps in the window as
  * a sweep has them), evaluations at heights 2.1e-5, 3.7e-8 and 1.9e-10 m apart; each one's
@@ -564,9 +602,7 @@ static void test_same_x_points_seeded(void **state)
     size_t shifted = 0, compared = 0;
     for (int c = 0; c < 3; ++c) {
         const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
-        tirenv_profile *p = c == 0   ? tirenv_profile_cleat(0.05 + 0.25 * u, 0.02 + 0.08 * v)
-                            : c == 1 ? tirenv_profile_cleat(0.005, 0.01 + 0.05 * u)
-                                     : tirenv_profile_step(0.0113 * u, 0.02 + 0.06 * v);
+        tirenv_profile *p = seeded_obstacle(c, u, v);
         assert_non_null(p);
         tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
         assert_non_null(r);
@@ -576,37 +612,17 @@ static void test_same_x_points_seeded(void **state)
             const double dzs[4] = {0, 2.1e-5, -3.7e-8, 1.9e-10};
             for (int k = 0; k < 4; ++k) {
                 z += dzs[k];
-                double fx1, fz1, fx2, fz2;
+                double fx1, fz1;
                 const size_t moved = r->n_shifted;
                 assert_int_equal(tirenv_ring_forces(r, p, x, z, &fx1, &fz1, NULL, NULL, NULL),
                                  0);
                 shifted += r->n_shifted - moved;
                 if (k == 0)
                     continue;
-                tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
-                assert_non_null(fresh);
-                assert_int_equal(
-                    tirenv_ring_forces(fresh, p, x, z, &fx2, &fz2, NULL, NULL, NULL), 0);
                 /* The fresh ring samples the whole window (no solve before it), the other its
                  * gaps left out: the points sampled in both are compared. */
-                assert_int_equal(fresh->lo, r->lo);
-                assert_int_equal(fresh->n, r->n);
-                for (size_t a = 0, b = 0; a < r->n_pts; ++a) {
-                    const tirenv_ring_point *q = &r->pts[a];
-                    /* By its ray (a point beside a gap is a joined one's in the whole). */
-                    while (b < fresh->n_pts &&
-                           !tirenv_ring__same_bits(&fresh->pts[b].phi, &q->phi, 1))
-                        ++b;
-                    assert_true(b < fresh->n_pts);
-                    const tirenv_ring_point *f = &fresh->pts[b++]; /* (a corner's two) */
-                    const double va[] = {q->d, q->dd, q->X}, vb[] = {f->d, f->dd, f->X};
-                    if (memcmp(va, vb, sizeof va) != 0)
-                        fail_msg("profile %d x %g z %.12g: point %zu differs", c, x, z, a);
-                }
-                assert_true(tirenv_ring__same_bits(&fz1, &fz2, 1));
-                assert_true(tirenv_ring__same_bits(&fx1, &fx2, 1));
+                same_points_as_fresh(r, &t, p, x, z, fx1, fz1, 0, c);
                 ++compared;
-                tirenv_ring_free(fresh);
             }
             z += 1e-3 * sin(0.7 * i);
         }
@@ -633,9 +649,7 @@ static void test_new_x_points_seeded(void **state)
     size_t shifted_new = 0, positions = 0, compared = 0;
     for (int c = 0; c < 3; ++c) {
         const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
-        tirenv_profile *p = c == 0   ? tirenv_profile_cleat(0.05 + 0.25 * u, 0.02 + 0.08 * v)
-                            : c == 1 ? tirenv_profile_cleat(0.005, 0.01 + 0.05 * u)
-                                     : tirenv_profile_step(0.0113 * u, 0.02 + 0.06 * v);
+        tirenv_profile *p = seeded_obstacle(c, u, v);
         assert_non_null(p);
         tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
         assert_non_null(r);
@@ -644,7 +658,7 @@ static void test_new_x_points_seeded(void **state)
             const double x = x0 + 1.0e-3 * i;
             const double zs[2] = {z0 + 2e-3 * sin(9.1 * x), z0 + 2e-3 * sin(9.1 * x) + 2.1e-5};
             for (int k = 0; k < 2; ++k) {
-                double fx1, fz1, fx2, fz2;
+                double fx1, fz1;
                 const size_t moved = r->n_shifted;
                 assert_int_equal(
                     tirenv_ring_forces(r, p, x, zs[k], &fx1, &fz1, NULL, NULL, NULL), 0);
@@ -652,30 +666,8 @@ static void test_new_x_points_seeded(void **state)
                     shifted_new += r->n_shifted - moved;
                     ++positions;
                 }
-                tirenv_ring *fresh = tirenv_ring_alloc(t.springs.R0, &t.ring);
-                assert_non_null(fresh);
-                assert_int_equal(
-                    tirenv_ring_forces(fresh, p, x, zs[k], &fx2, &fz2, NULL, NULL, NULL), 0);
-                assert_int_equal(fresh->lo, r->lo);
-                assert_int_equal(fresh->n, r->n);
-                for (size_t a = 0, b = 0; a < r->n_pts; ++a) {
-                    const tirenv_ring_point *q = &r->pts[a];
-                    while (b < fresh->n_pts &&
-                           !tirenv_ring__same_bits(&fresh->pts[b].phi, &q->phi, 1))
-                        ++b;
-                    assert_true(b < fresh->n_pts);
-                    const tirenv_ring_point *f = &fresh->pts[b++];
-                    /* (A point beside a gap is a joined one's in the whole: its weight
-                     * differs, its ray's fields not.) */
-                    const double va[] = {q->d, q->dd, q->X, q->ddt},
-                                 vb[] = {f->d, f->dd, f->X, f->ddt};
-                    if (memcmp(va, vb, sizeof va) != 0)
-                        fail_msg("profile %d x %g z %.12g: point %zu differs", c, x, zs[k], a);
-                }
-                assert_true(tirenv_ring__same_bits(&fz1, &fz2, 1));
-                assert_true(tirenv_ring__same_bits(&fx1, &fx2, 1));
+                same_points_as_fresh(r, &t, p, x, zs[k], fx1, fz1, 1, c);
                 ++compared;
-                tirenv_ring_free(fresh);
             }
         }
         tirenv_ring_free(r);
