@@ -7,8 +7,8 @@
  * QP's working set, docs/models.md section 4.8; the ring's parabola, section 5.3), else
  * -f / dF/dz, with the solve's latest slope at an iterate near the root whose own the model
  * left out (take); otherwise the step falls back to bisection, as in Numerical Recipes'
- * rtsafe. Converged when the residual and
- * that next correction are within eps_F and eps_z (section 11.3), or when the bracket is
+ * rtsafe. Converged when the residual and that next correction are within eps_F and eps_z
+ * (section 11.3), or when the bracket is
  * narrower than eps_z: F_z can jump (a ray sweeping over a convex corner changes the face it
  * hits, so its length jumps), and then the equilibrium is the jump, located to eps_z, and the
  * end of the bracket with the smaller residual is reported as it was evaluated. The first

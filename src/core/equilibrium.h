@@ -34,8 +34,8 @@ typedef struct {
      * model's continuous contact: F_z = G on the working set of the evaluation's QP, solved
      * with it, docs/models.md section 4.8, Newton's step on the working set; the ring's
      * parabola through its slope and the curvature measured at the positions before,
-     * section 5.3): Newton steps to z_root
-     * instead of its linear step. has_root 0 (as every evaluation starts): none. */
+     * section 5.3): Newton steps to z_root instead of its linear step. has_root 0 (as every
+     * evaluation starts): none. */
     int has_root;
     double z_root;         /* m */
 } tirenv_eq_point;
@@ -57,9 +57,9 @@ typedef struct {
      * if it cannot. */
     int (*slope)(void *ctx, double *dF_dz);
     /* A first iterate the model proposes instead of z0 (the springs model's root at this x
-     * on the last position's QP working set, docs/models.md section 4.8, A start at a new x), for
-     * Newton (eq_newton.c; the other methods ignore it): returns 1 with *z (m), which Newton takes
-     * if it lies inside (z_lo, z_hi), or 0 (z0 is taken). The model's evaluation there
+     * on the last position's QP working set, docs/models.md section 4.8, A start at a new
+     * x), for Newton (eq_newton.c; the other methods ignore it): returns 1 with *z (m), which
+     * Newton takes if it lies inside (z_lo, z_hi), or 0 (z0 is taken). The model's evaluation there
      * decides as any evaluation: the solver's own test accepts it or goes on from it. NULL:
      * none. */
     int (*start)(void *ctx, double z0, double *z);

@@ -31,8 +31,8 @@ struct tirenv_deformable {
     /* Before the first evaluation of the equilibrium at x (m) on p, whose start is z0 (m):
      * a first iterate *z (m) of the model's own where it knows one better (the springs
      * model's root at x on the last position's working set, docs/models.md section 4.8,
-     * A start at a new x), returning 1; 0 where it has none. Newton's alone (tirenv_eq_problem's
-     * start). NULL: none. */
+     * A start at a new x), returning 1; 0 where it has none. Newton's alone
+     * (tirenv_eq_problem's start). NULL: none. */
     int (*start)(void *elem, const tirenv_profile *p, double x, double z0, double G,
                  double *z);
     /* The profile the workspace evaluates on changes from old to p (a streamed road's next

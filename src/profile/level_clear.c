@@ -46,11 +46,10 @@ static int piece_clear(clear_ctx *c, double xa, double za, double xb, double zb,
 /* The ground at x gives the line; the walk goes outward from the segment under x, which on
  * ground that is not level there fails at once (a road costs one segment a position). Ground
  * level over the whole reach passes whatever its vertices (the cone is asked only where
- * something lies off the line). To the
- * right the segments k, k + 1, ... that begin at or before hi, to the left k - 1, k - 2, ...
- * that end at or after lo, then the flat extension where the profile ends inside
- * [lo, hi]: the pieces that meet [lo, hi], whole, as a streamed window holds them
- * (src/model/stream.c). */
+ * something lies off the line). To the right the segments k, k + 1, ... that begin at or
+ * before hi, to the left k - 1, k - 2, ... that end at or after lo, then the flat extension
+ * where the profile ends inside [lo, hi]: the pieces that meet [lo, hi], whole, as a streamed
+ * window holds them (src/model/stream.c). */
 int tirenv_profile__level_clear(const struct tirenv_profile *p, double x, double reach,
                                 double dz, double r, double tan_cut, double *level)
 {
