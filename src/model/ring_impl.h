@@ -165,8 +165,7 @@ typedef struct {
                             * before, newest first: m, m */
     double eq_n;           /* how many of eq_x, eq_z hold one */
     double e_have;         /* 1: ex, ez hold an evaluation */
-    double s_mean, s_line; /* the two starts' decayed squared misses, m^2 */
-    double scored;         /* 1: s_mean, s_line hold a score */
+    double s_mean, s_line; /* the two starts' decayed squared misses, m^2 (0, 0: none yet) */
 } tirenv_ring_root;
 
 struct tirenv_ring {
