@@ -142,9 +142,9 @@ typedef struct {
                                     * bits (no zero-length piece left out between them) */
     double L[4];                   /* the line (X1, Z1) - (X2, Z2), m */
     double da, db;                 /* its ends' d(angle)/dz, rad/m (0 at a node) */
-    /* Its last sampling, for the next at the same x (ring_ground.c, shift_whole): the cursor
-     * its line's walk ended at, the index of its first point (the point it joined, if it
-     * joined the piece before's last) and whether it joined. */
+    /* Its last sampling, for the next at the same x or a new one (ring_ground.c, shift_whole):
+     * the cursor its line's walk ended at, the index of its first point (the point it joined,
+     * if it joined the piece before's last) and whether it joined. */
     long vk;
     size_t q0;
     int joined;
@@ -165,8 +165,7 @@ typedef struct {
                             * before, newest first: m, m */
     double eq_n;           /* how many of eq_x, eq_z hold one */
     double e_have;         /* 1: ex, ez hold an evaluation */
-    double s_mean, s_line; /* the two starts' decayed squared misses, m^2 */
-    double scored;         /* 1: s_mean, s_line hold a score */
+    double s_mean, s_line; /* the two starts' decayed squared misses, m^2 (0, 0: none yet) */
 } tirenv_ring_root;
 
 struct tirenv_ring {

@@ -133,9 +133,8 @@ static void push_last(tirenv_ring_root *rt, double x)
         const double em = rt->ez - by_mean(rt), el = rt->ez - by_line(rt);
         rt->s_mean = START_DECAY * rt->s_mean + em * em;
         rt->s_line = START_DECAY * rt->s_line + el * el;
-        rt->scored = 1;
     } else {
-        rt->s_mean = rt->s_line = rt->scored = 0;
+        rt->s_mean = rt->s_line = 0; /* unscored: equal, so the line's start stands */
     }
     memmove(rt->eq_x + 1, rt->eq_x, (TIRENV_RING_START_KEEP - 1) * sizeof *rt->eq_x);
     memmove(rt->eq_z + 1, rt->eq_z, (TIRENV_RING_START_KEEP - 1) * sizeof *rt->eq_z);
@@ -156,7 +155,7 @@ int tirenv_ring__root_start(tirenv_ring *r, double x, double *z)
 {
     tirenv_ring_root *rt = &r->root;
     push_last(rt, x);
-    if (!(in_steps(rt, x) && rt->scored != 0 && rt->s_mean < rt->s_line))
+    if (!(in_steps(rt, x) && rt->s_mean < rt->s_line))
         return 0;
     *z = by_mean(rt);
     return isfinite(*z);
