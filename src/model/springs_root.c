@@ -711,18 +711,16 @@ int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
 int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                  size_t e, int hold)
 {
-    size_t *held = c->held, n = c->n_held, m = 0;
-    while (m < n && held[m] < e)
-        ++m;
     if (hold) { /* into the ascending list */
+        size_t *held = c->held, n = c->n_held, m = 0;
+        while (m < n && held[m] < e)
+            ++m;
         memmove(held + m + 1, held + m, (n - m) * sizeof *held);
         held[m] = e;
         c->wpos[e] = SIZE_MAX;
         ++c->n_held;
     } else {
-        memmove(held + m, held + m + 1, (n - m - 1) * sizeof *held);
-        c->wpos[e] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
-        --c->n_held;
+        held_remove(c, e);
     }
     /* the next QP's warm start: the working set as it now stands (the full evaluations come
      * seldom where the start holds, and a warm start many positions old costs them several
