@@ -349,6 +349,22 @@ static void put_row(const tirenv_springs__cc_tire *T, size_t i, double t, double
     R->dh_dz = -dzv / rho;
 }
 
+/* The element beyond the span's end beside sector i (between elements i and i + 1), or
+ * SIZE_MAX where sector i is not at an end: a row in that sector takes the element into the
+ * span (span_take), as the QP's span ends where no row reaches. */
+static size_t span_beyond(const tirenv_springs__cc *c, size_t i)
+{
+    return i + 1 == c->f0 ? i : i == c->f1 ? i + 1 : SIZE_MAX;
+}
+
+/* Element b, just beyond the span's end, into the span, free. */
+static void span_take(tirenv_springs__cc *c, size_t b)
+{
+    c->f0 = b < c->f0 ? b : c->f0;
+    c->f1 = b > c->f1 ? b : c->f1;
+    c->wpos[b] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
+}
+
 /* Element e (held) out of the ascending list of held elements, free. */
 static void held_remove(tirenv_springs__cc *c, size_t e)
 {
@@ -395,15 +411,12 @@ int tirenv_springs__cc_rows_across(tirenv_springs__cc *c, const tirenv_springs__
         if (!(s_i > 0) && R->i == 0)
             return 0;
         const size_t i = s_i > 0 ? R->i + 1 : R->i - 1;
-        /* a row at the span's end takes the element beyond into it (free: the QP's span
-         * ends where no row reaches), K_FF factorised again on the longer span */
-        if (i + 1 == c->f0 || i == c->f1) {
-            const size_t e = i + 1 == c->f0 ? i : i + 1;
-            if (e >= N)
+        /* K_FF factorised again on a longer span */
+        const size_t b = span_beyond(c, i);
+        if (b != SIZE_MAX) {
+            if (b >= N)
                 return 0;
-            c->f0 = e < c->f0 ? e : c->f0;
-            c->f1 = e > c->f1 ? e : c->f1;
-            c->wpos[e] = 0; /* free (the layout makes its positions anew) */
+            span_take(c, b);
             grew = longer = 1;
         }
         /* the element whose ray the vertex crossed: held on its ray's row, it is let go
@@ -460,11 +473,9 @@ int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc
     for (size_t q = 0; q < k; ++q)
         if (c->order[c->schur_pos[q]] - N == r)
             return 0;
-    if (i + 1 == c->f0 || i == c->f1) { /* the element beyond the span's end, free */
-        const size_t b = i + 1 == c->f0 ? i : i + 1;
-        c->f0 = b < c->f0 ? b : c->f0;
-        c->f1 = b > c->f1 ? b : c->f1;
-        c->wpos[b] = 0;
+    const size_t b = span_beyond(c, i);
+    if (b != SIZE_MAX) {
+        span_take(c, b);
         c->warm_pin[b] = 0;
     }
     held_remove(c, e);
@@ -711,18 +722,16 @@ int tirenv_springs__cc_pred_worst(const tirenv_springs__cc *c,
 int tirenv_springs__cc_pred_flip(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                  size_t e, int hold)
 {
-    size_t *held = c->held, n = c->n_held, m = 0;
-    while (m < n && held[m] < e)
-        ++m;
     if (hold) { /* into the ascending list */
+        size_t *held = c->held, n = c->n_held, m = 0;
+        while (m < n && held[m] < e)
+            ++m;
         memmove(held + m + 1, held + m, (n - m) * sizeof *held);
         held[m] = e;
         c->wpos[e] = SIZE_MAX;
         ++c->n_held;
     } else {
-        memmove(held + m, held + m + 1, (n - m - 1) * sizeof *held);
-        c->wpos[e] = 0; /* free: any position but SIZE_MAX (the layout makes them anew) */
-        --c->n_held;
+        held_remove(c, e);
     }
     /* the next QP's warm start: the working set as it now stands (the full evaluations come
      * seldom where the start holds, and a warm start many positions old costs them several
