@@ -743,6 +743,14 @@ void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_prof
     }
 }
 
+/* How face_rho finds rho on a run's face, decided once a run: */
+enum {
+    FACE_SEG,  /* a segment: (z - its height under the centre) d(rho)/dz */
+    FACE_FLAT, /* the flat ground past the profile's end at height Z: (z - Z) / cos_t */
+    FACE_WALL, /* a wall a_j ahead along the ground: a_j / |sin_t| */
+    FACE_DOWN  /* the straight-down ray: z - g */
+};
+
 /* tirenv_springs__faces_rho for rays[k0..k1), all on the side dir (1: after the straight-down
  * ray, -1: at or before it), each side's loop compiled for its direction. */
 static inline __attribute__((always_inline)) int
@@ -752,28 +760,55 @@ faces_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
            double z, const tirenv_springs__face_window *w, double rho[], double drho[],
            tirenv_springs__ray_memo faces[])
 {
-    const double *X = p->x, *Z = p->z;
+    const double *X = p->x, *Z = p->z, *cos_t = r->cos_t, *inv_s = r->inv_s;
     const long n_p = (long)p->n;
     /* The face of the rays before (held rays come in runs on two or three faces): whether it
-     * is within w, whether it is a segment, and z less its height under the centre, asked
-     * once a face. */
+     * is within w, how face_rho takes rho on it, and that rule's one quantity of the face
+     * (c_run), asked once a face. Each case's operations are face_rho's, so its bits. */
     long j_run = -2;
-    int kind_run = -1, seg = 0;
-    double zf = 0;
+    int kind_run = -1, how = FACE_SEG;
+    double c_run = 0;
     for (size_t k = k0; k < k1; ++k) {
         const size_t i = rays[k];
         tirenv_springs__ray_memo *m = &memo[i];
         if (m->j != j_run || m->kind != kind_run) {
-            const long jp = m->j - dir;
-            if (!face_within(p, w, m->j, jp, m->kind))
+            const long j = m->j, jp = j - dir;
+            if (!face_within(p, w, j, jp, m->kind))
                 return 0; /* (a window's rows hold it) */
-            j_run = m->j;
+            j_run = j;
             kind_run = m->kind;
-            /* else the flat ground past an end, or no segment: face_rho's own cases */
-            seg = m->kind == RAY_HIT && jp >= 0 && jp < n_p;
-            if (seg) { /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
-                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
-                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            switch (m->kind) {
+            case RAY_HIT:
+                if (jp >= 0 && jp < n_p) {
+                    /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
+                    const double X0 = X[jp], Z0 = Z[jp], dX = X[j] - X0, dZ = Z[j] - Z0;
+                    how = FACE_SEG;
+                    c_run = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+                } else { /* the flat ground beyond the profile's end, at Z[j] */
+                    how = FACE_FLAT;
+                    c_run = z - Z[j];
+                }
+                break;
+            case RAY_END: { /* past the profile's end vertex, which must be the road's */
+                const long e = dir > 0 ? n_p - 1 : 0;
+                if (!(dir > 0 ? X[e] < w->x_hi : X[e] > w->x_lo))
+                    return 0;
+                how = FACE_FLAT;
+                c_run = z - Z[e];
+                break;
+            }
+            case RAY_WALL:
+                c_run = dir * (X[j] - o->x);
+                if (!(c_run > 0))
+                    return 0;
+                how = FACE_WALL;
+                break;
+            case RAY_DOWN:
+                how = FACE_DOWN;
+                c_run = z - o->g;
+                break;
+            default:
+                return 0;
             }
         }
         if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
@@ -781,11 +816,29 @@ faces_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
             if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
                 m->drho = f->drho;
             } else {
-                m->drho = slope_drho(p, m->j, dir, m->kind, r->sin_t[i], r->cos_t[i]);
+                m->drho = slope_drho(p, m->j, dir, m->kind, r->sin_t[i], cos_t[i]);
                 kept[i] = *m;
             }
         }
-        const double v = seg ? zf * m->drho : face_rho(p, o, r, i, m, z, w);
+        double v;
+        switch (how) {
+        case FACE_SEG:
+            v = c_run * m->drho;
+            break;
+        case FACE_FLAT:
+            if (!(cos_t[i] > 0))
+                return 0;
+            v = c_run / cos_t[i];
+            break;
+        case FACE_WALL:
+            v = c_run * inv_s[i];
+            break;
+        default:
+            if (i != r->i0)
+                return 0;
+            v = c_run;
+            break;
+        }
         if (!isfinite(v))
             return 0;
         rho[i] = v;
