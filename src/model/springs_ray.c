@@ -5,6 +5,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <string.h>
 #include "profile/profile_impl.h"
 
 /* How a walk ended, at vertex j: */
@@ -365,10 +366,39 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
 typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
 
+/* Two doubles from p and p + 1, in that order (p need not be aligned to 16 bytes). */
+static inline v2d load2(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
 /* Runs of rays that end alike, for a fresh fan with its resumption order known
  * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
  * same operands (the same bits), without the walk's setup. Each returns the first step it did
- * not take, with *f_min the running minimum after the last ray it took. */
+ * not take, with *f_min the running minimum after the last ray it took.
+ *
+ * A run's memos are one: its first ray's f_prev bounds every later one's from below, so the
+ * running minimum, and z_low, are the same after each ray of the run. From the centre f_prev
+ * is f_side for all; else at the vertex before j (a > 0, passed) a ray further out has a drop
+ * no larger (r->ordered), so its computed f = (z - a drop) - Z is no smaller (rounding is
+ * monotone). That first f_prev is taken even where the first ray leaves the run: walk(),
+ * resumed at j for it, takes the same minimum first. With the memos one, two rays are taken
+ * a step, side by side in memory (lanes apart, each lane the one-by-one loop's operations). */
+
+/* The running minimum after the first ray of a run at step (from the centre, f_side; else
+ * its f at the vertex before j, a_p ahead at height Z_p). */
+static inline double run_f_min(const tirenv_springs__fan_rays *r, double z, int side,
+                               size_t step, int from_centre, double f_side, double a_p,
+                               double Z_p, double fm)
+{
+    const size_t i = side ? r->i0 + step : r->i0 - step;
+    const double f_prev = from_centre ? f_side : z - a_p * r->drop[i] - Z_p;
+    return f_prev < fm ? f_prev : fm;
+}
 
 /* After a walk that passed the profile's last vertex (j = -1 or n): every ray further out
  * passes it too (it lies higher at every vertex), and ends on the flat ground past the end. */
@@ -384,29 +414,22 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
     const int from_centre = j == first_j; /* no vertex passed: the anchor before j */
     const double a_prev = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
     const double Z_prev = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
-    double fm = *f_min;
-    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step */
-        fm = f_side < fm ? f_side : fm;
-        const double z_low = z - (fm - tol);
-        const v2d zz = {zZ, zZ}, zero = {0, 0}, big = {rho_max, rho_max};
-        const v2d inf = {INFINITY, INFINITY};
-        for (; step + 1 <= count; step += 2) {
-            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
-            const v2d c = {r->cos_t[i], r->cos_t[k]}, q = zz / c;
-            /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
-            const v2l out = (c <= zero) | (q > big);
-            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)q & ~out));
-            rho[i] = v[0];
-            rho[k] = v[1];
-            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z_low,
-                                                 .drho = NAN};
-            memo[k] = memo[i];
-        }
+    const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_prev, Z_prev, *f_min);
+    const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
+                                         .drho = NAN};
+    const v2d zz = {zZ, zZ}, zero = {0, 0}, big = {rho_max, rho_max};
+    const v2d inf = {INFINITY, INFINITY};
+    for (; step + 1 <= count; step += 2) {
+        const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
+        const v2d c = load2(r->cos_t + lo), q = zz / c;
+        /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
+        const v2l out = (c <= zero) | (q > big);
+        store2(rho + lo, (v2d)(((v2l)inf & out) | ((v2l)q & ~out)));
+        memo[lo] = mm;
+        memo[lo + 1] = mm;
     }
-    for (; step <= count; ++step) {
+    if (step <= count) {
         const size_t i = side ? i0 + step : i0 - step;
-        const double f_prev = from_centre ? f_side : z - a_prev * r->drop[i] - Z_prev;
-        fm = f_prev < fm ? f_prev : fm;
         const double cos_t = r->cos_t[i];
         double v = INFINITY;
         if (!(cos_t <= 0)) {
@@ -414,8 +437,8 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
             v = q > rho_max ? INFINITY : q;
         }
         rho[i] = v;
-        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
-                                             .drho = NAN};
+        memo[i] = mm;
+        ++step;
     }
     *f_min = fm;
     return step;
@@ -435,30 +458,25 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double a_j = dir * (p->x[j] - o->x), Z_j = p->z[j];
     const double a_p = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
     const double Z_p = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
-    double fm = *f_min;
-    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step
-                        * while both rays meet the ground at j */
-        fm = f_side < fm ? f_side : fm;
-        const double z_low = z - (fm - tol);
-        const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
-        const v2d ap = {a_p, a_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
-        const v2d inf = {INFINITY, INFINITY};
-        for (; step + 1 <= count; step += 2) {
-            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
-            const v2d drop = {r->drop[i], r->drop[k]}, f = zv - av * drop - Zv;
-            const v2l in = f <= zero;
-            if (!(in[0] & in[1]))
-                break; /* the rest one by one */
-            const v2d a_hit = ap + fs * da / (fs - f);
-            const v2d reach = {r->reach[i], r->reach[k]}, inv_s = {r->inv_s[i], r->inv_s[k]};
-            const v2l out = a_hit > reach;
-            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)(a_hit * inv_s) & ~out));
-            rho[i] = v[0];
-            rho[k] = v[1];
-            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z_low,
-                                                 .drho = NAN};
-            memo[k] = memo[i];
-        }
+    const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_p, Z_p, *f_min);
+    const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
+                                         .drho = NAN};
+    const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
+    const v2d ap = {a_p, a_p}, Zp = {Z_p, Z_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
+    const v2d inf = {INFINITY, INFINITY};
+    for (; step + 1 <= count; step += 2) { /* while both rays meet the ground at j */
+        const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
+        const v2d drop = load2(r->drop + lo), f = zv - av * drop - Zv;
+        const v2l in = f <= zero;
+        if (!(in[0] & in[1]))
+            break; /* the rest one by one */
+        const v2d f_prev = from_centre ? fs : zv - ap * drop - Zp;
+        const v2d a_hit = ap + f_prev * da / (f_prev - f);
+        const v2l out = a_hit > load2(r->reach + lo);
+        const v2d v = (v2d)(((v2l)inf & out) | ((v2l)(a_hit * load2(r->inv_s + lo)) & ~out));
+        store2(rho + lo, v);
+        memo[lo] = mm;
+        memo[lo + 1] = mm;
     }
     for (; step <= count; ++step) {
         const size_t i = side ? i0 + step : i0 - step;
@@ -467,11 +485,9 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
         if (!(f <= 0))
             break;
         const double f_prev = from_centre ? f_side : z - a_p * drop - Z_p;
-        fm = f_prev < fm ? f_prev : fm;
         const double a_hit = a_p + f_prev * (a_j - a_p) / (f_prev - f);
         rho[i] = a_hit > r->reach[i] ? INFINITY : a_hit * r->inv_s[i];
-        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
-                                             .drho = NAN};
+        memo[i] = mm;
     }
     *f_min = fm;
     return step;
