@@ -779,8 +779,9 @@ faces_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
     const double *X = p->x, *Z = p->z, *cos_t = r->cos_t, *inv_s = r->inv_s;
     const long n_p = (long)p->n;
     /* The face of the rays before (held rays come in runs on two or three faces): whether it
-     * is within w, how face_rho takes rho on it, and that rule's one quantity of the face
-     * (c_run), asked once a face. Each case's operations are face_rho's, so its bits. */
+     * is within w, how rho is taken on it, and that rule's one quantity of the face (c_run),
+     * asked once a face. A segment's rho is the line's, linear in z as the root takes it;
+     * the other faces' are face_rho's, by its operations (its bits). */
     long j_run = -2;
     int kind_run = -1, how = FACE_SEG;
     double c_run = 0;
