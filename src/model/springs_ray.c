@@ -7,6 +7,9 @@
 #include <math.h>
 #include <string.h>
 #include "profile/profile_impl.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* How a walk ended, at vertex j: */
 enum {
@@ -376,6 +379,35 @@ static inline v2d load2(const double *p)
 
 static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
+/* Lane by lane, v where a <= b and (if check_c) c > 0, else INFINITY: the walk's rho past
+ * reach. With SSE2 in its instructions: GCC takes the masks of its vector extensions'
+ * comparisons as booleans, through the integer registers lane by lane (some 14 instructions
+ * a pair instead of 5). */
+static inline v2d inf_past(v2d a, v2d b, v2d c, const int check_c, v2d v)
+{
+    const v2d inf = {INFINITY, INFINITY}, zero = {0, 0};
+#if defined(__SSE2__)
+    __m128d out = _mm_cmpgt_pd((__m128d)a, (__m128d)b);
+    if (check_c)
+        out = _mm_or_pd(out, _mm_cmple_pd((__m128d)c, (__m128d)zero));
+    return (v2d)_mm_or_pd(_mm_and_pd(out, (__m128d)inf), _mm_andnot_pd(out, (__m128d)v));
+#else
+    const v2l out = check_c ? (a > b) | (c <= zero) : a > b;
+    return (v2d)(((v2l)inf & out) | ((v2l)v & ~out));
+#endif
+}
+
+/* Whether a <= b in both lanes (with SSE2 by its mask: see inf_past). */
+static inline int both_le(v2d a, v2d b)
+{
+#if defined(__SSE2__)
+    return _mm_movemask_pd(_mm_cmple_pd((__m128d)a, (__m128d)b)) == 3;
+#else
+    const v2l in = a <= b;
+    return in[0] && in[1];
+#endif
+}
+
 /* Runs of rays that end alike, for a fresh fan with its resumption order known
  * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
  * same operands (the same bits), without the walk's setup. Each returns the first step it did
@@ -417,14 +449,13 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_prev, Z_prev, *f_min);
     const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
                                          .drho = NAN};
-    const v2d zz = {zZ, zZ}, zero = {0, 0}, big = {rho_max, rho_max};
-    const v2d inf = {INFINITY, INFINITY};
+    const v2d zz = {zZ, zZ}, big = {rho_max, rho_max};
+    const double *const cos_r = r->cos_t; /* (in a local: see hit_pairs) */
     for (; step + 1 <= count; step += 2) {
         const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
-        const v2d c = load2(r->cos_t + lo), q = zz / c;
+        const v2d c = load2(cos_r + lo), q = zz / c;
         /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
-        const v2l out = (c <= zero) | (q > big);
-        store2(rho + lo, (v2d)(((v2l)inf & out) | ((v2l)q & ~out)));
+        store2(rho + lo, inf_past(q, big, c, 1, q));
         memo[lo] = mm;
         memo[lo + 1] = mm;
     }
@@ -446,6 +477,35 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
 
 /* After a walk that hit the segment [j - dir, j] (not a wall): the rays further out that
  * are at or below the ground at j hit it too. */
+/* hit_run's pairs from step while both rays meet the ground at j, compiled apart for a run
+ * from the centre (f_prev = f_side) and from a vertex (f_prev at a_p, Z_p): the first step
+ * not taken. */
+static inline __attribute__((always_inline)) size_t
+hit_pairs(const tirenv_springs__fan_rays *r, double z, int side, size_t step, size_t count,
+          double a_j, double Z_j, double a_p, double Z_p, double f_side,
+          const tirenv_springs__ray_memo *mm, const int from_centre, double rho[],
+          tirenv_springs__ray_memo memo[])
+{
+    const size_t i0 = r->i0;
+    /* (the arrays in locals: the stores would make them be read again at every pair) */
+    const double *const drop_r = r->drop, *const reach = r->reach, *const inv_s = r->inv_s;
+    const tirenv_springs__ray_memo m = *mm;
+    const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
+    const v2d ap = {a_p, a_p}, Zp = {Z_p, Z_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
+    for (; step + 1 <= count; step += 2) {
+        const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
+        const v2d drop = load2(drop_r + lo), f = zv - av * drop - Zv;
+        if (!both_le(f, zero))
+            break; /* the rest one by one */
+        const v2d f_prev = from_centre ? fs : zv - ap * drop - Zp;
+        const v2d a_hit = ap + f_prev * da / (f_prev - f);
+        store2(rho + lo, inf_past(a_hit, load2(reach + lo), zero, 0, a_hit * load2(inv_s + lo)));
+        memo[lo] = m;
+        memo[lo + 1] = m;
+    }
+    return step;
+}
+
 static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                              const tirenv_springs__fan_rays *r, double z, int side,
                              size_t step, size_t count, long j, double *f_min, double tol,
@@ -461,23 +521,10 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_p, Z_p, *f_min);
     const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
                                          .drho = NAN};
-    const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
-    const v2d ap = {a_p, a_p}, Zp = {Z_p, Z_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
-    const v2d inf = {INFINITY, INFINITY};
-    for (; step + 1 <= count; step += 2) { /* while both rays meet the ground at j */
-        const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
-        const v2d drop = load2(r->drop + lo), f = zv - av * drop - Zv;
-        const v2l in = f <= zero;
-        if (!(in[0] & in[1]))
-            break; /* the rest one by one */
-        const v2d f_prev = from_centre ? fs : zv - ap * drop - Zp;
-        const v2d a_hit = ap + f_prev * da / (f_prev - f);
-        const v2l out = a_hit > load2(r->reach + lo);
-        const v2d v = (v2d)(((v2l)inf & out) | ((v2l)(a_hit * load2(r->inv_s + lo)) & ~out));
-        store2(rho + lo, v);
-        memo[lo] = mm;
-        memo[lo + 1] = mm;
-    }
+    step = from_centre ? hit_pairs(r, z, side, step, count, a_j, Z_j, a_p, Z_p, f_side, &mm, 1,
+                                   rho, memo)
+                       : hit_pairs(r, z, side, step, count, a_j, Z_j, a_p, Z_p, f_side, &mm, 0,
+                                   rho, memo);
     for (; step <= count; ++step) {
         const size_t i = side ? i0 + step : i0 - step;
         const double drop = r->drop[i];
