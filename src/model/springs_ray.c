@@ -5,6 +5,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 #include "profile/profile_impl.h"
 #if defined(__SSE2__)
@@ -814,6 +815,53 @@ enum {
     FACE_DOWN  /* the straight-down ray: z - g */
 };
 
+/* faces_side's rays from rays[k] on while they end on face (j, kind), rho taken there as
+ * how with c (faces_side decides both): the first k not on it, or SIZE_MAX where a ray's rho
+ * is not finite. Compiled apart for the common faces (how a constant). */
+static inline __attribute__((always_inline)) size_t
+face_run(const tirenv_profile *p, const tirenv_springs__fan_rays *r, const size_t rays[],
+         size_t k, size_t k1, const int dir, tirenv_springs__ray_memo memo[],
+         tirenv_springs__ray_memo kept[], double rho[], double drho[],
+         tirenv_springs__ray_memo faces[], long j, int kind, const int how, double c)
+{
+    const double *const cos_t = r->cos_t, *const inv_s = r->inv_s;
+    for (; k < k1; ++k) {
+        const size_t i = rays[k];
+        tirenv_springs__ray_memo *m = &memo[i];
+        if (m->j != j || m->kind != kind)
+            break;
+        if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
+            const tirenv_springs__ray_memo *f = &kept[i];
+            if (f->j == j && f->kind == kind && !isnan(f->drho)) {
+                m->drho = f->drho;
+            } else {
+                m->drho = slope_drho(p, j, dir, kind, r->sin_t[i], cos_t[i]);
+                kept[i] = *m;
+            }
+        }
+        double v;
+        if (how == FACE_SEG) {
+            v = c * m->drho;
+        } else if (how == FACE_FLAT) {
+            if (!(cos_t[i] > 0))
+                return SIZE_MAX;
+            v = c / cos_t[i];
+        } else if (how == FACE_WALL) {
+            v = c * inv_s[i];
+        } else {
+            if (i != r->i0)
+                return SIZE_MAX;
+            v = c;
+        }
+        if (!isfinite(v))
+            return SIZE_MAX;
+        rho[i] = v;
+        drho[i] = m->drho;
+        faces[i] = *m;
+    }
+    return k;
+}
+
 /* tirenv_springs__faces_rho for rays[k0..k1), all on the side dir (1: after the straight-down
  * ray, -1: at or before it), each side's loop compiled for its direction. */
 static inline __attribute__((always_inline)) int
@@ -823,91 +871,64 @@ faces_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
            double z, const tirenv_springs__face_window *w, double rho[], double drho[],
            tirenv_springs__ray_memo faces[])
 {
-    const double *X = p->x, *Z = p->z, *cos_t = r->cos_t, *inv_s = r->inv_s;
+    const double *X = p->x, *Z = p->z;
     const long n_p = (long)p->n;
-    /* The face of the rays before (held rays come in runs on two or three faces): whether it
-     * is within w, how rho is taken on it, and that rule's one quantity of the face (c_run),
-     * asked once a face. A segment's rho is the line's, linear in z as the root takes it;
-     * the other faces' are face_rho's, by its operations (its bits). */
-    long j_run = -2;
-    int kind_run = -1, how = FACE_SEG;
-    double c_run = 0;
-    for (size_t k = k0; k < k1; ++k) {
-        const size_t i = rays[k];
-        tirenv_springs__ray_memo *m = &memo[i];
-        if (m->j != j_run || m->kind != kind_run) {
-            const long j = m->j, jp = j - dir;
-            if (!face_within(p, w, j, jp, m->kind))
-                return 0; /* (a window's rows hold it) */
-            j_run = j;
-            kind_run = m->kind;
-            switch (m->kind) {
-            case RAY_HIT:
-                if (jp >= 0 && jp < n_p) {
-                    /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
-                    const double X0 = X[jp], Z0 = Z[jp], dX = X[j] - X0, dZ = Z[j] - Z0;
-                    how = FACE_SEG;
-                    c_run = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
-                } else { /* the flat ground beyond the profile's end, at Z[j] */
-                    how = FACE_FLAT;
-                    c_run = z - Z[j];
-                }
-                break;
-            case RAY_END: { /* past the profile's end vertex, which must be the road's */
-                const long e = dir > 0 ? n_p - 1 : 0;
-                if (!(dir > 0 ? X[e] < w->x_hi : X[e] > w->x_lo))
-                    return 0;
+    /* Face by face (held rays come in runs on two or three faces): whether it is within w,
+     * how rho is taken on it, and that rule's one quantity of the face (c), asked once a
+     * face. A segment's rho is the line's, linear in z as the root takes it; the other
+     * faces' are face_rho's, by its operations (its bits). */
+    size_t k = k0;
+    while (k < k1) {
+        const tirenv_springs__ray_memo *m = &memo[rays[k]];
+        const long j = m->j, jp = j - dir;
+        const int kind = m->kind;
+        if (!face_within(p, w, j, jp, kind))
+            return 0; /* (a window's rows hold it) */
+        int how;
+        double c;
+        switch (kind) {
+        case RAY_HIT:
+            if (jp >= 0 && jp < n_p) {
+                /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
+                const double X0 = X[jp], Z0 = Z[jp], dX = X[j] - X0, dZ = Z[j] - Z0;
+                how = FACE_SEG;
+                c = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            } else { /* the flat ground beyond the profile's end, at Z[j] */
                 how = FACE_FLAT;
-                c_run = z - Z[e];
-                break;
+                c = z - Z[j];
             }
-            case RAY_WALL:
-                c_run = dir * (X[j] - o->x);
-                if (!(c_run > 0))
-                    return 0;
-                how = FACE_WALL;
-                break;
-            case RAY_DOWN:
-                how = FACE_DOWN;
-                c_run = z - o->g;
-                break;
-            default:
-                return 0;
-            }
-        }
-        if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
-            const tirenv_springs__ray_memo *f = &kept[i];
-            if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
-                m->drho = f->drho;
-            } else {
-                m->drho = slope_drho(p, m->j, dir, m->kind, r->sin_t[i], cos_t[i]);
-                kept[i] = *m;
-            }
-        }
-        double v;
-        switch (how) {
-        case FACE_SEG:
-            v = c_run * m->drho;
             break;
-        case FACE_FLAT:
-            if (!(cos_t[i] > 0))
+        case RAY_END: { /* past the profile's end vertex, which must be the road's */
+            const long e = dir > 0 ? n_p - 1 : 0;
+            if (!(dir > 0 ? X[e] < w->x_hi : X[e] > w->x_lo))
                 return 0;
-            v = c_run / cos_t[i];
+            how = FACE_FLAT;
+            c = z - Z[e];
             break;
-        case FACE_WALL:
-            v = c_run * inv_s[i];
+        }
+        case RAY_WALL:
+            c = dir * (X[j] - o->x);
+            if (!(c > 0))
+                return 0;
+            how = FACE_WALL;
+            break;
+        case RAY_DOWN:
+            how = FACE_DOWN;
+            c = z - o->g;
             break;
         default:
-            if (i != r->i0)
-                return 0;
-            v = c_run;
-            break;
-        }
-        if (!isfinite(v))
             return 0;
-        rho[i] = v;
-        drho[i] = m->drho;
-        faces[i] = *m;
+        }
+        if (how == FACE_SEG)
+            k = face_run(p, r, rays, k, k1, dir, memo, kept, rho, drho, faces, j, kind,
+                         FACE_SEG, c);
+        else if (how == FACE_FLAT)
+            k = face_run(p, r, rays, k, k1, dir, memo, kept, rho, drho, faces, j, kind,
+                         FACE_FLAT, c);
+        else
+            k = face_run(p, r, rays, k, k1, dir, memo, kept, rho, drho, faces, j, kind, how, c);
+        if (k == SIZE_MAX)
+            return 0;
     }
     return 1;
 }
