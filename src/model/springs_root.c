@@ -628,8 +628,7 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
      * 340 instructions a root) */
     for (size_t q = 0; q < n_ch; ++q) {
         const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
-        for (size_t e = lo; e <= hi; ++e)
-            pw[e] = 0;
+        memset(pw + lo, 0, (hi - lo + 1) * sizeof *pw); /* +0.0: all bits zero */
         if (lo > f0)
             pw[lo] = k_ir * (H[lo - 1] + dz * dH[lo - 1]);
         if (hi < f1)
