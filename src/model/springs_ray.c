@@ -476,8 +476,6 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
     return step;
 }
 
-/* After a walk that hit the segment [j - dir, j] (not a wall): the rays further out that
- * are at or below the ground at j hit it too. */
 /* hit_run's pairs from step while both rays meet the ground at j, compiled apart for a run
  * from the centre (f_prev = f_side) and from a vertex (f_prev at a_p, Z_p): the first step
  * not taken. */
@@ -507,6 +505,8 @@ hit_pairs(const tirenv_springs__fan_rays *r, double z, int side, size_t step, si
     return step;
 }
 
+/* After a walk that hit the segment [j - dir, j] (not a wall): the rays further out that
+ * are at or below the ground at j hit it too. */
 static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                              const tirenv_springs__fan_rays *r, double z, int side,
                              size_t step, size_t count, long j, double *f_min, double tol,
@@ -807,7 +807,7 @@ void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_prof
     }
 }
 
-/* How face_rho finds rho on a run's face, decided once a run: */
+/* How faces_rho takes rho on a run's face, decided once a run: */
 enum {
     FACE_SEG,  /* a segment: (z - its height under the centre) d(rho)/dz */
     FACE_FLAT, /* the flat ground past the profile's end at height Z: (z - Z) / cos_t */
