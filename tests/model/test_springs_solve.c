@@ -1,7 +1,8 @@
 /* The springs model's fast paths against the plain ones they replace (docs/models.md
  * section 4): the pinned-chain tip solve against the Thomas active-set solve, the fan of rays
  * (each walk resuming the last) and its reuse across centre heights against one ray at a time,
- * a workspace's kept state against a fresh workspace, and ground narrower than the rays.
+ * the held rays' faces taken in runs against one ray a call, a workspace's kept state against
+ * a fresh workspace, and ground narrower than the rays.
  * SPDX-License-Identifier: Apache-2.0
  *
  * The rays are exact claims (the same operations on the same points, so the same bits); the
