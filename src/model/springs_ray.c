@@ -409,6 +409,45 @@ static inline int both_le(v2d a, v2d b)
 #endif
 }
 
+/* A run's memo, kept as two 16-byte halves where a memo is 32 bytes (LP64), stored into two
+ * memos side by side: GCC stores a memo assigned whole field by field, four stores; with SSE2
+ * two. */
+enum { memo_halves = sizeof(tirenv_springs__ray_memo) == 32 };
+typedef struct {
+    tirenv_springs__ray_memo m;
+#if defined(__SSE2__)
+    __m128i h[2];
+#endif
+} run_memo;
+
+static inline run_memo run_memo_of(const tirenv_springs__ray_memo *m)
+{
+    run_memo r = {.m = *m};
+#if defined(__SSE2__)
+    if (memo_halves) {
+        r.h[0] = _mm_loadu_si128((const __m128i *)(const void *)m);
+        r.h[1] = _mm_loadu_si128((const __m128i *)(const void *)m + 1);
+    }
+#endif
+    return r;
+}
+
+static inline void store_memo2(tirenv_springs__ray_memo *m, const run_memo *r)
+{
+#if defined(__SSE2__)
+    if (memo_halves) {
+        __m128i *const q = (__m128i *)(void *)m;
+        _mm_storeu_si128(q, r->h[0]);
+        _mm_storeu_si128(q + 1, r->h[1]);
+        _mm_storeu_si128(q + 2, r->h[0]);
+        _mm_storeu_si128(q + 3, r->h[1]);
+        return;
+    }
+#endif
+    m[0] = r->m;
+    m[1] = r->m;
+}
+
 /* Runs of rays that end alike, for a fresh fan with its resumption order known
  * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
  * same operands (the same bits), without the walk's setup. Each returns the first step it did
@@ -450,6 +489,7 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_prev, Z_prev, *f_min);
     const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
                                          .drho = NAN};
+    const run_memo rm = run_memo_of(&mm);
     const v2d zz = {zZ, zZ}, big = {rho_max, rho_max};
     const double *const cos_r = r->cos_t; /* (in a local: see hit_pairs) */
     for (; step + 1 <= count; step += 2) {
@@ -457,8 +497,7 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
         const v2d c = load2(cos_r + lo), q = zz / c;
         /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
         store2(rho + lo, inf_past(q, big, c, 1, q));
-        memo[lo] = mm;
-        memo[lo + 1] = mm;
+        store_memo2(memo + lo, &rm);
     }
     if (step <= count) {
         const size_t i = side ? i0 + step : i0 - step;
@@ -488,7 +527,7 @@ hit_pairs(const tirenv_springs__fan_rays *r, double z, int side, size_t step, si
     const size_t i0 = r->i0;
     /* (the arrays in locals: the stores would make them be read again at every pair) */
     const double *const drop_r = r->drop, *const reach = r->reach, *const inv_s = r->inv_s;
-    const tirenv_springs__ray_memo m = *mm;
+    const run_memo rm = run_memo_of(mm);
     const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
     const v2d ap = {a_p, a_p}, Zp = {Z_p, Z_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
     for (; step + 1 <= count; step += 2) {
@@ -499,8 +538,7 @@ hit_pairs(const tirenv_springs__fan_rays *r, double z, int side, size_t step, si
         const v2d f_prev = from_centre ? fs : zv - ap * drop - Zp;
         const v2d a_hit = ap + f_prev * da / (f_prev - f);
         store2(rho + lo, inf_past(a_hit, load2(reach + lo), zero, 0, a_hit * load2(inv_s + lo)));
-        memo[lo] = m;
-        memo[lo + 1] = m;
+        store_memo2(memo + lo, &rm);
     }
     return step;
 }
