@@ -5,7 +5,12 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 #include "profile/profile_impl.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* How a walk ended, at vertex j: */
 enum {
@@ -365,10 +370,107 @@ static inline size_t reuse_side(const tirenv_profile *p, const tirenv_springs__f
 typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
 
+/* Two doubles from p and p + 1, in that order (p need not be aligned to 16 bytes). */
+static inline v2d load2(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
+/* Lane by lane, v where a <= b and (if check_c) c > 0, else INFINITY: the walk's rho past
+ * reach. With SSE2 in its instructions: GCC takes the masks of its vector extensions'
+ * comparisons as booleans, through the integer registers lane by lane (some 14 instructions
+ * a pair instead of 5). */
+static inline v2d inf_past(v2d a, v2d b, v2d c, const int check_c, v2d v)
+{
+    const v2d inf = {INFINITY, INFINITY}, zero = {0, 0};
+#if defined(__SSE2__)
+    __m128d out = _mm_cmpgt_pd((__m128d)a, (__m128d)b);
+    if (check_c)
+        out = _mm_or_pd(out, _mm_cmple_pd((__m128d)c, (__m128d)zero));
+    return (v2d)_mm_or_pd(_mm_and_pd(out, (__m128d)inf), _mm_andnot_pd(out, (__m128d)v));
+#else
+    const v2l out = check_c ? (a > b) | (c <= zero) : a > b;
+    return (v2d)(((v2l)inf & out) | ((v2l)v & ~out));
+#endif
+}
+
+/* Whether a <= b in both lanes (with SSE2 by its mask: see inf_past). */
+static inline int both_le(v2d a, v2d b)
+{
+#if defined(__SSE2__)
+    return _mm_movemask_pd(_mm_cmple_pd((__m128d)a, (__m128d)b)) == 3;
+#else
+    const v2l in = a <= b;
+    return in[0] && in[1];
+#endif
+}
+
+/* A run's memo, kept as two 16-byte halves where a memo is 32 bytes (LP64), stored into two
+ * memos side by side: GCC stores a memo assigned whole field by field, four stores; with SSE2
+ * two. */
+enum { memo_halves = sizeof(tirenv_springs__ray_memo) == 32 };
+typedef struct {
+    tirenv_springs__ray_memo m;
+#if defined(__SSE2__)
+    __m128i h[2];
+#endif
+} run_memo;
+
+static inline run_memo run_memo_of(const tirenv_springs__ray_memo *m)
+{
+    run_memo r = {.m = *m};
+#if defined(__SSE2__)
+    if (memo_halves) {
+        r.h[0] = _mm_loadu_si128((const __m128i *)(const void *)m);
+        r.h[1] = _mm_loadu_si128((const __m128i *)(const void *)m + 1);
+    }
+#endif
+    return r;
+}
+
+static inline void store_memo2(tirenv_springs__ray_memo *m, const run_memo *r)
+{
+#if defined(__SSE2__)
+    if (memo_halves) {
+        __m128i *const q = (__m128i *)(void *)m;
+        _mm_storeu_si128(q, r->h[0]);
+        _mm_storeu_si128(q + 1, r->h[1]);
+        _mm_storeu_si128(q + 2, r->h[0]);
+        _mm_storeu_si128(q + 3, r->h[1]);
+        return;
+    }
+#endif
+    m[0] = r->m;
+    m[1] = r->m;
+}
+
 /* Runs of rays that end alike, for a fresh fan with its resumption order known
  * (r->ordered): each ray as walk() resumed at j would take it, by the same operations on the
  * same operands (the same bits), without the walk's setup. Each returns the first step it did
- * not take, with *f_min the running minimum after the last ray it took. */
+ * not take, with *f_min the running minimum after the last ray it took.
+ *
+ * A run's memos are one: its first ray's f_prev bounds every later one's from below, so the
+ * running minimum, and z_low, are the same after each ray of the run. From the centre f_prev
+ * is f_side for all; else at the vertex before j (a > 0, passed) a ray further out has a drop
+ * no larger (r->ordered), so its computed f = (z - a drop) - Z is no smaller (rounding is
+ * monotone). That first f_prev is taken even where the first ray leaves the run: walk(),
+ * resumed at j for it, takes the same minimum first. With the memos one, two rays are taken
+ * a step, side by side in memory (lanes apart, each lane the one-by-one loop's operations). */
+
+/* The running minimum after the first ray of a run at step (from the centre, f_side; else
+ * its f at the vertex before j, a_p ahead at height Z_p). */
+static inline double run_f_min(const tirenv_springs__fan_rays *r, double z, int side,
+                               size_t step, int from_centre, double f_side, double a_p,
+                               double Z_p, double fm)
+{
+    const size_t i = side ? r->i0 + step : r->i0 - step;
+    const double f_prev = from_centre ? f_side : z - a_p * r->drop[i] - Z_p;
+    return f_prev < fm ? f_prev : fm;
+}
 
 /* After a walk that passed the profile's last vertex (j = -1 or n): every ray further out
  * passes it too (it lies higher at every vertex), and ends on the flat ground past the end. */
@@ -384,29 +486,21 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
     const int from_centre = j == first_j; /* no vertex passed: the anchor before j */
     const double a_prev = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
     const double Z_prev = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
-    double fm = *f_min;
-    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step */
-        fm = f_side < fm ? f_side : fm;
-        const double z_low = z - (fm - tol);
-        const v2d zz = {zZ, zZ}, zero = {0, 0}, big = {rho_max, rho_max};
-        const v2d inf = {INFINITY, INFINITY};
-        for (; step + 1 <= count; step += 2) {
-            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
-            const v2d c = {r->cos_t[i], r->cos_t[k]}, q = zz / c;
-            /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
-            const v2l out = (c <= zero) | (q > big);
-            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)q & ~out));
-            rho[i] = v[0];
-            rho[k] = v[1];
-            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z_low,
-                                                 .drho = NAN};
-            memo[k] = memo[i];
-        }
+    const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_prev, Z_prev, *f_min);
+    const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
+                                         .drho = NAN};
+    const run_memo rm = run_memo_of(&mm);
+    const v2d zz = {zZ, zZ}, big = {rho_max, rho_max};
+    const double *const cos_r = r->cos_t; /* (in a local: see hit_pairs) */
+    for (; step + 1 <= count; step += 2) {
+        const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
+        const v2d c = load2(cos_r + lo), q = zz / c;
+        /* the walk's: INFINITY where cos_t <= 0, or where q > rho_max, else q */
+        store2(rho + lo, inf_past(q, big, c, 1, q));
+        store_memo2(memo + lo, &rm);
     }
-    for (; step <= count; ++step) {
+    if (step <= count) {
         const size_t i = side ? i0 + step : i0 - step;
-        const double f_prev = from_centre ? f_side : z - a_prev * r->drop[i] - Z_prev;
-        fm = f_prev < fm ? f_prev : fm;
         const double cos_t = r->cos_t[i];
         double v = INFINITY;
         if (!(cos_t <= 0)) {
@@ -414,10 +508,38 @@ static inline size_t end_run(const tirenv_profile *p, const tirenv_springs__fan_
             v = q > rho_max ? INFINITY : q;
         }
         rho[i] = v;
-        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_END, .z_low = z - (fm - tol),
-                                             .drho = NAN};
+        memo[i] = mm;
+        ++step;
     }
     *f_min = fm;
+    return step;
+}
+
+/* hit_run's pairs from step while both rays meet the ground at j, compiled apart for a run
+ * from the centre (f_prev = f_side) and from a vertex (f_prev at a_p, Z_p): the first step
+ * not taken. */
+static inline __attribute__((always_inline)) size_t
+hit_pairs(const tirenv_springs__fan_rays *r, double z, int side, size_t step, size_t count,
+          double a_j, double Z_j, double a_p, double Z_p, double f_side,
+          const tirenv_springs__ray_memo *mm, const int from_centre, double rho[],
+          tirenv_springs__ray_memo memo[])
+{
+    const size_t i0 = r->i0;
+    /* (the arrays in locals: the stores would make them be read again at every pair) */
+    const double *const drop_r = r->drop, *const reach = r->reach, *const inv_s = r->inv_s;
+    const run_memo rm = run_memo_of(mm);
+    const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
+    const v2d ap = {a_p, a_p}, Zp = {Z_p, Z_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
+    for (; step + 1 <= count; step += 2) {
+        const size_t lo = side ? i0 + step : i0 - step - 1; /* the pair's first in memory */
+        const v2d drop = load2(drop_r + lo), f = zv - av * drop - Zv;
+        if (!both_le(f, zero))
+            break; /* the rest one by one */
+        const v2d f_prev = from_centre ? fs : zv - ap * drop - Zp;
+        const v2d a_hit = ap + f_prev * da / (f_prev - f);
+        store2(rho + lo, inf_past(a_hit, load2(reach + lo), zero, 0, a_hit * load2(inv_s + lo)));
+        store_memo2(memo + lo, &rm);
+    }
     return step;
 }
 
@@ -435,31 +557,13 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
     const double a_j = dir * (p->x[j] - o->x), Z_j = p->z[j];
     const double a_p = from_centre ? 0 : dir * (p->x[j - dir] - o->x);
     const double Z_p = from_centre ? 0 : p->z[j - dir], f_side = z - o->g_side[side];
-    double fm = *f_min;
-    if (from_centre) { /* f_prev = f_side for every ray: fm and z_low the same, two a step
-                        * while both rays meet the ground at j */
-        fm = f_side < fm ? f_side : fm;
-        const double z_low = z - (fm - tol);
-        const v2d zv = {z, z}, av = {a_j, a_j}, Zv = {Z_j, Z_j}, fs = {f_side, f_side};
-        const v2d ap = {a_p, a_p}, da = {a_j - a_p, a_j - a_p}, zero = {0, 0};
-        const v2d inf = {INFINITY, INFINITY};
-        for (; step + 1 <= count; step += 2) {
-            const size_t i = side ? i0 + step : i0 - step, k = side ? i + 1 : i - 1;
-            const v2d drop = {r->drop[i], r->drop[k]}, f = zv - av * drop - Zv;
-            const v2l in = f <= zero;
-            if (!(in[0] & in[1]))
-                break; /* the rest one by one */
-            const v2d a_hit = ap + fs * da / (fs - f);
-            const v2d reach = {r->reach[i], r->reach[k]}, inv_s = {r->inv_s[i], r->inv_s[k]};
-            const v2l out = a_hit > reach;
-            const v2d v = (v2d)(((v2l)inf & out) | ((v2l)(a_hit * inv_s) & ~out));
-            rho[i] = v[0];
-            rho[k] = v[1];
-            memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z_low,
-                                                 .drho = NAN};
-            memo[k] = memo[i];
-        }
-    }
+    const double fm = run_f_min(r, z, side, step, from_centre, f_side, a_p, Z_p, *f_min);
+    const tirenv_springs__ray_memo mm = {.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
+                                         .drho = NAN};
+    step = from_centre ? hit_pairs(r, z, side, step, count, a_j, Z_j, a_p, Z_p, f_side, &mm, 1,
+                                   rho, memo)
+                       : hit_pairs(r, z, side, step, count, a_j, Z_j, a_p, Z_p, f_side, &mm, 0,
+                                   rho, memo);
     for (; step <= count; ++step) {
         const size_t i = side ? i0 + step : i0 - step;
         const double drop = r->drop[i];
@@ -467,11 +571,9 @@ static inline size_t hit_run(const tirenv_profile *p, const tirenv_springs__fan_
         if (!(f <= 0))
             break;
         const double f_prev = from_centre ? f_side : z - a_p * drop - Z_p;
-        fm = f_prev < fm ? f_prev : fm;
         const double a_hit = a_p + f_prev * (a_j - a_p) / (f_prev - f);
         rho[i] = a_hit > r->reach[i] ? INFINITY : a_hit * r->inv_s[i];
-        memo[i] = (tirenv_springs__ray_memo){.j = j, .kind = RAY_HIT, .z_low = z - (fm - tol),
-                                             .drho = NAN};
+        memo[i] = mm;
     }
     *f_min = fm;
     return step;
@@ -743,6 +845,61 @@ void tirenv_springs__memo_reprofile(const tirenv_profile *old, const tirenv_prof
     }
 }
 
+/* How faces_rho takes rho on a run's face, decided once a run: */
+enum {
+    FACE_SEG,  /* a segment: (z - its height under the centre) d(rho)/dz */
+    FACE_FLAT, /* the flat ground past the profile's end at height Z: (z - Z) / cos_t */
+    FACE_WALL, /* a wall a_j ahead along the ground: a_j / |sin_t| */
+    FACE_DOWN  /* the straight-down ray: z - g */
+};
+
+/* faces_side's rays from rays[k] on while they end on face (j, kind), rho taken there as
+ * how with c (faces_side decides both): the first k not on it, or SIZE_MAX where a ray's rho
+ * is not finite. Compiled apart for the common faces (how a constant). */
+static inline __attribute__((always_inline)) size_t
+face_run(const tirenv_profile *p, const tirenv_springs__fan_rays *r, const size_t rays[],
+         size_t k, size_t k1, const int dir, tirenv_springs__ray_memo memo[],
+         tirenv_springs__ray_memo kept[], double rho[], double drho[],
+         tirenv_springs__ray_memo faces[], long j, int kind, const int how, double c)
+{
+    const double *const cos_t = r->cos_t, *const inv_s = r->inv_s;
+    for (; k < k1; ++k) {
+        const size_t i = rays[k];
+        tirenv_springs__ray_memo *m = &memo[i];
+        if (m->j != j || m->kind != kind)
+            break;
+        if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
+            const tirenv_springs__ray_memo *f = &kept[i];
+            if (f->j == j && f->kind == kind && !isnan(f->drho)) {
+                m->drho = f->drho;
+            } else {
+                m->drho = slope_drho(p, j, dir, kind, r->sin_t[i], cos_t[i]);
+                kept[i] = *m;
+            }
+        }
+        double v;
+        if (how == FACE_SEG) {
+            v = c * m->drho;
+        } else if (how == FACE_FLAT) {
+            if (!(cos_t[i] > 0))
+                return SIZE_MAX;
+            v = c / cos_t[i];
+        } else if (how == FACE_WALL) {
+            v = c * inv_s[i];
+        } else {
+            if (i != r->i0)
+                return SIZE_MAX;
+            v = c;
+        }
+        if (!isfinite(v))
+            return SIZE_MAX;
+        rho[i] = v;
+        drho[i] = m->drho;
+        faces[i] = *m;
+    }
+    return k;
+}
+
 /* tirenv_springs__faces_rho for rays[k0..k1), all on the side dir (1: after the straight-down
  * ray, -1: at or before it), each side's loop compiled for its direction. */
 static inline __attribute__((always_inline)) int
@@ -754,43 +911,62 @@ faces_side(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
 {
     const double *X = p->x, *Z = p->z;
     const long n_p = (long)p->n;
-    /* The face of the rays before (held rays come in runs on two or three faces): whether it
-     * is within w, whether it is a segment, and z less its height under the centre, asked
-     * once a face. */
-    long j_run = -2;
-    int kind_run = -1, seg = 0;
-    double zf = 0;
-    for (size_t k = k0; k < k1; ++k) {
-        const size_t i = rays[k];
-        tirenv_springs__ray_memo *m = &memo[i];
-        if (m->j != j_run || m->kind != kind_run) {
-            const long jp = m->j - dir;
-            if (!face_within(p, w, m->j, jp, m->kind))
-                return 0; /* (a window's rows hold it) */
-            j_run = m->j;
-            kind_run = m->kind;
-            /* else the flat ground past an end, or no segment: face_rho's own cases */
-            seg = m->kind == RAY_HIT && jp >= 0 && jp < n_p;
-            if (seg) { /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
-                const double X0 = X[jp], Z0 = Z[jp], dX = X[m->j] - X0, dZ = Z[m->j] - Z0;
-                zf = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+    /* Face by face (held rays come in runs on two or three faces): whether it is within w,
+     * how rho is taken on it, and that rule's one quantity of the face (c), asked once a
+     * face. A segment's rho is the line's, linear in z as the root takes it; the other
+     * faces' are face_rho's, by its operations (its bits). */
+    size_t k = k0;
+    while (k < k1) {
+        const tirenv_springs__ray_memo *m = &memo[rays[k]];
+        const long j = m->j, jp = j - dir;
+        const int kind = m->kind;
+        if (!face_within(p, w, j, jp, kind))
+            return 0; /* (a window's rows hold it) */
+        int how;
+        double c;
+        switch (kind) {
+        case RAY_HIT:
+            if (jp >= 0 && jp < n_p) {
+                /* rho (cos + sin dZ/dX) = z - (the face's height under the centre) */
+                const double X0 = X[jp], Z0 = Z[jp], dX = X[j] - X0, dZ = Z[j] - Z0;
+                how = FACE_SEG;
+                c = z - (dZ == 0 ? Z0 : Z0 + dZ * ((o->x - X0) / dX));
+            } else { /* the flat ground beyond the profile's end, at Z[j] */
+                how = FACE_FLAT;
+                c = z - Z[j];
             }
+            break;
+        case RAY_END: { /* past the profile's end vertex, which must be the road's */
+            const long e = dir > 0 ? n_p - 1 : 0;
+            if (!(dir > 0 ? X[e] < w->x_hi : X[e] > w->x_lo))
+                return 0;
+            how = FACE_FLAT;
+            c = z - Z[e];
+            break;
         }
-        if (isnan(m->drho)) { /* the face's, kept where this ray last ended on it */
-            const tirenv_springs__ray_memo *f = &kept[i];
-            if (f->j == m->j && f->kind == m->kind && !isnan(f->drho)) {
-                m->drho = f->drho;
-            } else {
-                m->drho = slope_drho(p, m->j, dir, m->kind, r->sin_t[i], r->cos_t[i]);
-                kept[i] = *m;
-            }
-        }
-        const double v = seg ? zf * m->drho : face_rho(p, o, r, i, m, z, w);
-        if (!isfinite(v))
+        case RAY_WALL:
+            c = dir * (X[j] - o->x);
+            if (!(c > 0))
+                return 0;
+            how = FACE_WALL;
+            break;
+        case RAY_DOWN:
+            how = FACE_DOWN;
+            c = z - o->g;
+            break;
+        default:
             return 0;
-        rho[i] = v;
-        drho[i] = m->drho;
-        faces[i] = *m;
+        }
+        if (how == FACE_SEG)
+            k = face_run(p, r, rays, k, k1, dir, memo, kept, rho, drho, faces, j, kind,
+                         FACE_SEG, c);
+        else if (how == FACE_FLAT)
+            k = face_run(p, r, rays, k, k1, dir, memo, kept, rho, drho, faces, j, kind,
+                         FACE_FLAT, c);
+        else
+            k = face_run(p, r, rays, k, k1, dir, memo, kept, rho, drho, faces, j, kind, how, c);
+        if (k == SIZE_MAX)
+            return 0;
     }
     return 1;
 }

@@ -1,7 +1,8 @@
 /* The springs model's fast paths against the plain ones they replace (docs/models.md
  * section 4): the pinned-chain tip solve against the Thomas active-set solve, the fan of rays
  * (each walk resuming the last) and its reuse across centre heights against one ray at a time,
- * a workspace's kept state against a fresh workspace, and ground narrower than the rays.
+ * the held rays' faces taken in runs against one ray a call, a workspace's kept state against
+ * a fresh workspace, and ground narrower than the rays.
  * SPDX-License-Identifier: Apache-2.0
  *
  * The rays are exact claims (the same operations on the same points, so the same bits); the
@@ -353,6 +354,104 @@ static void test_fan_runs_match_walks(void **state)
     tirenv_rng_free(rng);
 }
 
+/* tirenv_springs__faces_rho takes the held rays in runs on one face, deciding once a run how
+ * the face gives rho: the same rho, d(rho)/dz, faces and verdict, bit for bit, as the rays
+ * taken one at a time, from memos a fan left at another x and height (as the start at a new x
+ * reads them), over windows wide and narrow; each rho within round-off of face_rho's crossing
+ * on its face (bit for bit on the flat ground past an end and on a wall, a segment's by its
+ * line through the face). */
+static void test_faces_rho_runs(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 13);
+    const double R0 = 0.6837;
+    enum { N = FAN_N };
+    static double rho_f[N], rho[N], drho[N], rho1[N], drho1[N];
+    static tirenv_springs__ray_memo memo[N], m_runs[N], m_one[N], kept_r[N], kept_o[N];
+    static tirenv_springs__ray_memo faces[N], faces1[N];
+    static size_t rays[N];
+    const size_t i0 = N / 2;
+    static fan_arrays fa;
+    tirenv_springs__fan_rays fan = half_degree_fan(&fa, R0);
+    fan.ordered = tirenv_springs__fan_rays_ordered(&fan, N);
+    tirenv_road_settings rs = tirenv_road_default();
+    rs.length = 20;
+    rs.dx = 0.003;
+    tirenv_profile *grounds[5] = {tirenv_profile_cleat(0.3, 0.1), NULL, NULL, NULL,
+                                  tirenv_profile_cleat(0.05, 0.025)};
+    tirenv_diag diag;
+    assert_int_equal(tirenv_road_iso8608(&rs, &grounds[1], &diag), TIRENV_OK);
+    grounds[2] = random_ground(rng, 400);
+    grounds[3] = random_ground(rng, 60);
+    size_t taken = 0, refused = 0, rays_checked = 0, exact = 0;
+    for (size_t gi = 0; gi < 5; ++gi) {
+        const tirenv_profile *p = grounds[gi];
+        double x_lo, x_hi;
+        tirenv_profile_extent(p, &x_lo, &x_hi);
+        for (int trial = 0; trial < 300; ++trial) {
+            double x1 = x_lo - 0.5 + (x_hi - x_lo + 1) * tirenv_rng_uniform(rng);
+            if (trial % 5 == 0) /* on a vertex, a wall's x included */
+                x1 = tirenv_profile_x(p)[tirenv_rng_uniform_int(rng, tirenv_profile_size(p))];
+            const double z1 =
+                tirenv_profile_height(p, x1) + 0.02 + 0.5 * tirenv_rng_uniform(rng);
+            tirenv_springs__fan_origin o1, o2;
+            tirenv_springs__fan_origin_at(p, x1, R0, 0, &o1);
+            const size_t a = tirenv_rng_uniform_int(rng, i0 + 1);
+            const size_t b = i0 + tirenv_rng_uniform_int(rng, N - i0);
+            tirenv_springs__fan(p, &o1, &fan, z1, a, b, rho_f, memo);
+            const double x2 = x1 + 0.004 * (tirenv_rng_uniform(rng) - 0.5);
+            const double z2 = z1 + 0.002 * (tirenv_rng_uniform(rng) - 0.5);
+            tirenv_springs__fan_origin_at(p, x2, R0, o1.k, &o2);
+            const double reach = (trial % 7 == 0 ? 0.2 : 1.5) * R0;
+            tirenv_springs__face_window w;
+            tirenv_springs__face_window_at(p, x2 - reach, x2 + reach, &w);
+            /* the rays in runs with gaps, ascending, as the held ones come */
+            size_t n = 0;
+            for (size_t i = a; i <= b; ++i)
+                if (tirenv_rng_uniform(rng) < 0.8)
+                    rays[n++] = i;
+            for (size_t i = 0; i < N; ++i) {
+                m_runs[i] = m_one[i] = memo[i];
+                kept_r[i].kind = kept_o[i].kind = -1;
+            }
+            const int ok = tirenv_springs__faces_rho(p, &o2, &fan, rays, n, m_runs, kept_r, z2,
+                                                     &w, rho, drho, faces);
+            int ok1 = 1;
+            for (size_t k = 0; k < n && ok1; ++k)
+                ok1 = tirenv_springs__faces_rho(p, &o2, &fan, &rays[k], 1, m_one, kept_o, z2, &w,
+                                                rho1, drho1, faces1);
+            assert_int_equal(ok, ok1);
+            if (!ok) {
+                ++refused;
+                continue;
+            }
+            ++taken;
+            for (size_t k = 0; k < n; ++k) {
+                const size_t i = rays[k];
+                assert_bits_equal(rho[i], rho1[i]);
+                assert_bits_equal(drho[i], drho1[i]);
+                assert_int_equal(faces[i].j, memo[i].j);
+                assert_int_equal(faces[i].kind, memo[i].kind);
+                assert_bits_equal(faces[i].drho, drho[i]);
+                const double v =
+                    tirenv_springs__face_rho(p, &o2, &fan, i, &memo[i], z2, &w);
+                if (isnan(v)) /* (a segment the ray runs along: no crossing, only the line) */
+                    continue;
+                assert_near(rho[i], v, 1e-12, 1e-12);
+                exact += memcmp(&rho[i], &v, sizeof v) == 0;
+                ++rays_checked;
+            }
+        }
+    }
+    print_message("faces in runs: %zu sets taken, %zu refused; %zu rays, %zu as face_rho's bits\n",
+                  taken, refused, rays_checked, exact);
+    assert_true(taken > 500 && refused > 50 && rays_checked > 50000 && exact > 5000);
+    for (size_t gi = 0; gi < 5; ++gi)
+        tirenv_profile_free(grounds[gi]);
+    tirenv_rng_free(rng);
+}
+
 /* ---- The workspace's kept state ---- */
 
 /* A workspace that has seen other positions, heights and profiles (a new profile may sit at
@@ -614,6 +713,7 @@ int main(void)
         cmocka_unit_test(test_pinned_matches_thomas),
         cmocka_unit_test(test_fan_matches_single_rays),
         cmocka_unit_test(test_fan_runs_match_walks),
+        cmocka_unit_test(test_faces_rho_runs),
         cmocka_unit_test(test_kept_state_is_invisible),
         cmocka_unit_test(test_needle_refused),
         cmocka_unit_test(test_pairs_miss_nothing),
