@@ -69,7 +69,9 @@ static void chain_check(const double *res, const double *ph, const double *w, si
         memcpy(&h, ph + k, sizeof h);
         memcpy(&x, w + k, sizeof x);
         o |= (v2d)((v2l)r & no_sign) > tk; /* |r|: the sign bit cleared, as fabs */
-        b |= (h > zero) & (x - h < nt);
+        /* x - h where h > 0, else +0 (not below -tol): one comparison to OR in, since GCC 12
+         * turns an OR of two masks ANDed into a select a lane at a time */
+        b |= (v2d)((v2l)(x - h) & (h > zero)) < nt;
     }
     int of = (o[0] | o[1]) != 0, be = (b[0] | b[1]) != 0;
     for (; k < len; ++k) {
