@@ -52,12 +52,13 @@ typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
 
 /* The free elements of one chain, len of them from res, ph and w: *off set where one's
- * residual exceeds tol_k in size, *below where one stands below its own row (ph > 0) by more
- * than tol. Two elements a step in GCC's vector extension: GCC 12 does not vectorise a
+ * residual exceeds tol_k in size (or, given w for res, where one's |w| exceeds it), *below
+ * where one stands below its own row (ph > 0) by more than tol. Two elements a step in GCC's vector extension: GCC 12 does not vectorise a
  * comparison of doubles counted into an integer, and the pass was a quarter of the update's
  * instructions. */
-static void chain_check(const double *res, const double *ph, const double *w, size_t len,
-                        double tol_k, double tol, int *off, int *below)
+static inline __attribute__((always_inline)) void
+chain_check(const double *res, const double *ph, const double *w, size_t len, double tol_k,
+            double tol, int *off, int *below)
 {
     const v2d tk = {tol_k, tol_k}, nt = {-tol, -tol}, zero = {0, 0};
     const v2l no_sign = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
@@ -81,6 +82,40 @@ static void chain_check(const double *res, const double *ph, const double *w, si
     *off |= of;
     *below |= be;
 }
+
+/* K w on [lo, hi] within [f0, f1], the free chains beyond the span left for the caller to
+ * fold in: its ends apart (a 0 for the neighbour beyond, as written), the middle a loop the
+ * compiler vectorises. The same expression at every element whatever range it is asked for. */
+static inline __attribute__((always_inline)) void
+k_times_w(double res[], const double w[], const double diag[], double k_ir, size_t f0, size_t f1,
+          size_t lo, size_t hi)
+{
+    if (f0 == f1) {
+        res[f0] = diag[f0] * w[f0] - k_ir * (0.0 + 0.0);
+        return;
+    }
+    size_t e = lo;
+    if (e == f0) {
+        res[f0] = diag[f0] * w[f0] - k_ir * (0.0 + w[f0 + 1]);
+        ++e;
+    }
+    for (const size_t m = hi < f1 ? hi : f1 - 1; e <= m; ++e)
+        res[e] = diag[e] * w[e] - k_ir * (w[e - 1] + w[e + 1]);
+    if (hi == f1)
+        res[f1] = diag[f1] * w[f1] - k_ir * (w[f1 - 1] + 0.0);
+}
+
+/* Where the state is tirenv_springs__cc_root_at's, each free element inside a chain (not its
+ * ends, not a working row's) holds w as that solve left it, and its equation's right-hand
+ * side is 0 in both systems: its residual is the Thomas solve's own. For K_FF, a symmetric
+ * diagonally dominant M-matrix, the computed LDL^T solve satisfies (K + dK) w = b with
+ * |dK| <= 8 u |K| element by element (u = 2^-53: the factor's rounding and the two sweeps',
+ * |L| |D| |L^T| being |K| to O(u) since mul < 0 < piv), and the update's three operations
+ * add 3 u |K| |w|: |K w|_e <= 11 u (k_r + 4 k_ir) max |w|, which is below a quarter of
+ * eq_tol R0 (k_r + 2 k_ir) while every |w| <= R0 (tol_w = R0 below). The update checks that
+ * premise on those elements instead of their residual (docs/models.md section 4.8, A start at
+ * a new x; test_inner_residual_bound). (Called apart, the two helpers here cost more in calls
+ * than the residuals they spare: they are forced inline.) */
 
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
@@ -217,18 +252,28 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     double l_max = 0, l_min = 0;
     int above = 1;
     size_t n_c = 0; /* the held elements with a reaction > 0 */
-    for (size_t it = 0;; ++it) {
+    /* part: the first pass from root_at's state takes K w only where the right-hand side or
+     * w differs from that solve's (the held elements, the chains' ends, the working rows'
+     * elements) and checks |w| <= tol_w on the chains instead (above); if anything is off,
+     * the pass is made again over every element, as the corrections need */
+    const double tol_w = R0;
+    const size_t *ch = c->chains, n_ch = c->n_chains;
+    int part = pred && c->pred_held;
+    for (size_t it = 0;;) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
          * KKT system, less G^T lambda */
         const double *diag = T->diag;
-        if (f0 == f1) {
-            res[f0] = diag[f0] * wn[f0] - k_ir * (0.0 + 0.0);
-        } else { /* the ends apart (a 0 for the neighbour beyond, as written), the middle
-                  * a loop the compiler vectorises */
-            res[f0] = diag[f0] * wn[f0] - k_ir * (0.0 + wn[f0 + 1]);
-            for (size_t e = f0 + 1; e < f1; ++e)
-                res[e] = diag[e] * wn[e] - k_ir * (wn[e - 1] + wn[e + 1]);
-            res[f1] = diag[f1] * wn[f1] - k_ir * (wn[f1 - 1] + 0.0);
+        if (part) { /* between the chains' insides, ends included, then the rows' elements */
+            size_t lo = f0;
+            for (size_t q = 0; q < n_ch; ++q) {
+                k_times_w(res, wn, diag, k_ir, f0, f1, lo, ch[2 * q]);
+                lo = ch[2 * q + 1];
+            }
+            k_times_w(res, wn, diag, k_ir, f0, f1, lo, f1);
+            for (size_t q = 0; q < n_s; ++q)
+                k_times_w(res, wn, diag, k_ir, f0, f1, row_i[q], row_i[q] + 1);
+        } else {
+            k_times_w(res, wn, diag, k_ir, f0, f1, f0, f1);
         }
         if (f0 > 0)
             res[f0] -= k_ir * T->lq[f0 - 1] * wn[f0];
@@ -248,11 +293,19 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         /* the free elements chain by chain (the base's factor's chains: wpos' free ones),
          * each a loop without a branch; then the held ones from its list */
         int off = 0, below = 0;
-        for (size_t q = 0, n_ch = c->n_chains; q < n_ch; ++q) {
-            const size_t e0 = c->chains[2 * q], len = c->chains[2 * q + 1] - e0 + 1;
-            chain_check(res + e0, ph + e0, wn + e0, len, tol_k, tol, &off, &below);
+        for (size_t q = 0; q < n_ch; ++q) {
+            const size_t e0 = ch[2 * q], e1 = ch[2 * q + 1], len = e1 - e0 + 1;
+            if (part) {
+                chain_check(wn + e0, ph + e0, wn + e0, len, tol_w, tol, &off, &below);
+                off |= (fabs(res[e0]) > tol_k) | (fabs(res[e1]) > tol_k);
+            } else {
+                chain_check(res + e0, ph + e0, wn + e0, len, tol_k, tol, &off, &below);
+            }
             memset(pq + e0, 0, len * sizeof *pq);
         }
+        for (size_t q = 0; part && q < n_s; ++q)
+            for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e)
+                off |= wpos[e] != SIZE_MAX && fabs(res[e]) > tol_k;
         ok &= !off;
         above = !below;
         n_c = 0;
@@ -266,7 +319,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         }
         if (ok)
             break;
-        if (it == max_corrections)
+        if (part) { /* every element's residual, as the corrections take it */
+            part = 0;
+            continue;
+        }
+        if (it++ == max_corrections)
             return 0;
         for (size_t e = f0; e <= f1; ++e)
             x_c[e] = wpos[e] == SIZE_MAX ? 0 : -res[e];
