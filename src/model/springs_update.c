@@ -105,6 +105,64 @@ k_times_w(double res[], const double w[], const double diag[], double k_ir, size
         res[f1] = diag[f1] * w[f1] - k_ir * (w[f1 - 1] + 0.0);
 }
 
+/* One run of held elements, len of them from ph: w set to ph, 1 if one is not above 0 (or is
+ * NaN). Two elements a step, as chain_check. */
+static inline __attribute__((always_inline)) int run_on_rows(const double *ph, double *w,
+                                                            size_t len)
+{
+    const v2d zero = {0, 0};
+    v2l not_on = {0, 0};
+    size_t k = 0;
+    for (; k + 2 <= len; k += 2) {
+        v2d h;
+        memcpy(&h, ph + k, sizeof h);
+        memcpy(w + k, &h, sizeof h);
+        not_on |= (v2d)((v2l)h & (h > zero)) <= zero; /* h where h > 0, else +0 */
+    }
+    int no = (not_on[0] | not_on[1]) != 0;
+    for (; k < len; ++k) {
+        no |= !(ph[k] > 0);
+        w[k] = ph[k];
+    }
+    return no;
+}
+
+/* One run of held elements' reactions, len of them from res, into pq: *l_max raised to the
+ * largest |r| and *l_min lowered to the least r, each by the comparison the scalar pass made
+ * (NaN passes neither), *n_pos counting those > 0 (as a double: exact, and GCC 12 counts a
+ * mask into an integer a lane at a time). */
+static inline __attribute__((always_inline)) void
+run_reactions(const double *res, double *pq, size_t len, double *l_max, double *l_min,
+              double *n_pos)
+{
+    const v2l no_sign = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
+    const v2d zero = {0, 0}, one = {1, 1};
+    v2d mx = {*l_max, *l_max}, mn = {*l_min, *l_min}, np = {0, 0};
+    size_t k = 0;
+    for (; k + 2 <= len; k += 2) {
+        v2d r;
+        memcpy(&r, res + k, sizeof r);
+        memcpy(pq + k, &r, sizeof r);
+        const v2d a = (v2d)((v2l)r & no_sign);
+        const v2l up = a > mx, down = r < mn;
+        mx = (v2d)((up & (v2l)a) | (~up & (v2l)mx));
+        mn = (v2d)((down & (v2l)r) | (~down & (v2l)mn));
+        np += (v2d)((v2l)one & (r > zero));
+    }
+    double hi = mx[1] > mx[0] ? mx[1] : mx[0], lo = mn[1] < mn[0] ? mn[1] : mn[0];
+    double n = np[0] + np[1];
+    for (; k < len; ++k) {
+        const double r = res[k];
+        hi = fabs(r) > hi ? fabs(r) : hi;
+        lo = r < lo ? r : lo;
+        n += r > 0;
+        pq[k] = r;
+    }
+    *l_max = hi;
+    *l_min = lo;
+    *n_pos += n;
+}
+
 /* Where the state is tirenv_springs__cc_root_at's, each free element inside a chain (not its
  * ends, not a working row's) holds w as that solve left it, and its equation's right-hand
  * side is 0 in both systems: its residual is the Thomas solve's own. For K_FF, a symmetric
@@ -193,20 +251,28 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     const tirenv_springs__cc_row *rows = c->rows;
     const double *base_w = c->base_w + 1;
     size_t n_same = 0;
-    /* every element as a free one (a copy, or a loop the compiler vectorises), then the held
-     * ones from the base's list of them (kkt_factor's) */
+    /* The held elements are the chains' complement in [f0, f1] (the base's factor's chains
+     * and its layout's held list describe the same wpos; the count checks it): the free ones
+     * as the state has them (a copy a chain, or a loop the compiler vectorises), then the held
+     * runs between the chains, each on its row. */
+    const size_t *ch = c->chains, n_ch = c->n_chains;
     if (pred) {
-        memcpy(wn + f0, c->pred_w + f0, (f1 - f0 + 1) * sizeof *wn);
+        for (size_t q = 0; q < n_ch; ++q)
+            memcpy(wn + ch[2 * q], c->pred_w + ch[2 * q],
+                   (ch[2 * q + 1] - ch[2 * q] + 1) * sizeof *wn);
     } else {
         for (size_t e = f0; e <= f1; ++e)
             wn[e] = base_w[e] + dz * dw[e];
     }
-    for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
-        const size_t e = c->held[k];
-        if (!(ph[e] > 0))
-            return 0;
-        wn[e] = ph[e];
+    size_t n_free = 0;
+    int not_on = 0;
+    for (size_t q = 0; q <= n_ch; ++q) { /* the run before chain q (or after the last) */
+        const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1, h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+        n_free += q < n_ch ? ch[2 * q + 1] - ch[2 * q] + 1 : 0;
+        not_on |= run_on_rows(ph + h0, wn + h0, h1 - h0);
     }
+    if (not_on || n_free + c->n_held != f1 - f0 + 1)
+        return 0;
     for (size_t k = 0; k < nv; ++k) {
         const size_t e = V[k].i;
         if (V[k].t != 0 || pin[e] != V[k].id || wpos[e] != SIZE_MAX)
@@ -257,7 +323,6 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * elements) and checks |w| <= tol_w on the chains instead (above); if anything is off,
      * the pass is made again over every element, as the corrections need */
     const double tol_w = R0;
-    const size_t *ch = c->chains, n_ch = c->n_chains;
     int part = pred && c->pred_held;
     for (size_t it = 0;;) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
@@ -308,15 +373,13 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                 off |= wpos[e] != SIZE_MAX && fabs(res[e]) > tol_k;
         ok &= !off;
         above = !below;
-        n_c = 0;
-        for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
-            const size_t e = c->held[k];
-            const double r = res[e];
-            l_max = fabs(r) > l_max ? fabs(r) : l_max;
-            l_min = r < l_min ? r : l_min;
-            n_c += r > 0;
-            pq[e] = r;
+        double n_pos = 0;
+        for (size_t q = 0; q <= n_ch; ++q) { /* the held runs, as above */
+            const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
+            const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+            run_reactions(res + h0, pq + h0, h1 - h0, &l_max, &l_min, &n_pos);
         }
+        n_c = (size_t)n_pos;
         if (ok)
             break;
         if (part) { /* every element's residual, as the corrections take it */
