@@ -209,7 +209,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray),
      * pin written only on the elements a vertex row sits on (a pass over the span cost
      * some 400 instructions an update; the others are their rays'). */
-    double *wn = c->step, *res = c->raise;
+    /* w and pe are made in place (copies into them cost some 220 instructions an update): a
+     * refused update leaves them to the full evaluation that follows, which writes both over
+     * its span before it reads them (the tips are read only over the span of the evaluation
+     * that gave them) */
+    double *wn = w, *res = c->raise;
     long *pin = c->upd_pin;
     const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
     for (size_t k = 0; k < nv; ++k)
@@ -310,11 +314,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * system at z differs from the base's only by the rows' weights, t moving some 200
      * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
      * or the update is given up. */
-    double *x_c = c->w_try, *pq = c->upd_pe;
+    double *x_c = c->w_try, *pq = pe;
     /* with the equations: the reactions' least and largest (the held elements' are their
      * residuals of K w = G^T lambda), and whether each free element is above its own row
      * (its ray's, or a vertex's on it); each element's own reaction into pq (0 on the free
-     * ones), copied to pe if accepted (a pass of its own cost some 700 instructions) */
+     * ones; a pass of its own cost some 700 instructions) */
     double l_max = 0, l_min = 0;
     int above = 1;
     size_t n_c = 0; /* the held elements with a reaction > 0 */
@@ -422,8 +426,6 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
      * max(ph, 0) gives, copied (where ph is d and d is obstacle, as the model passes them,
      * already there) */
-    memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
-    memcpy(pe + f0, pq + f0, (f1 - f0 + 1) * sizeof *pe);
     if (ph != obstacle)
         memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
     /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
