@@ -51,14 +51,31 @@ static size_t find_vrow(const tirenv_springs__cc_row V[], size_t n, long id)
 typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
 
+/* Whether one of d[0..len) is > 0, two a step without a branch (the rays beyond the span). */
+static inline __attribute__((always_inline)) int any_positive(const double *d, size_t len)
+{
+    const v2d zero = {0, 0};
+    v2l o = {0, 0};
+    size_t k = 0;
+    for (; k + 2 <= len; k += 2) {
+        v2d v;
+        memcpy(&v, d + k, sizeof v);
+        o |= v > zero;
+    }
+    int any = (o[0] | o[1]) != 0;
+    for (; k < len; ++k)
+        any |= d[k] > 0;
+    return any;
+}
+
 /* The free elements of one chain, len of them from res, ph and w: *off set where one's
  * residual exceeds tol_k in size (or, given w for res, where one's |w| exceeds it), *below
- * where one stands below its own row (ph > 0) by more than tol. Two elements a step in GCC's vector extension: GCC 12 does not vectorise a
- * comparison of doubles counted into an integer, and the pass was a quarter of the update's
- * instructions. */
+ * where one stands below its own row (ph > 0) by more than tol; their reactions pq set to 0.
+ * Two elements a step in GCC's vector extension: GCC 12 does not vectorise a comparison of
+ * doubles counted into an integer, and the pass was a quarter of the update's instructions. */
 static inline __attribute__((always_inline)) void
-chain_check(const double *res, const double *ph, const double *w, size_t len, double tol_k,
-            double tol, int *off, int *below)
+chain_check(const double *res, const double *ph, const double *w, double *pq, size_t len,
+            double tol_k, double tol, int *off, int *below)
 {
     const v2d tk = {tol_k, tol_k}, nt = {-tol, -tol}, zero = {0, 0};
     const v2l no_sign = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
@@ -69,6 +86,7 @@ chain_check(const double *res, const double *ph, const double *w, size_t len, do
         memcpy(&r, res + k, sizeof r);
         memcpy(&h, ph + k, sizeof h);
         memcpy(&x, w + k, sizeof x);
+        memcpy(pq + k, &zero, sizeof zero);
         o |= (v2d)((v2l)r & no_sign) > tk; /* |r|: the sign bit cleared, as fabs */
         /* x - h where h > 0, else +0 (not below -tol): one comparison to OR in, since GCC 12
          * turns an OR of two masks ANDed into a select a lane at a time */
@@ -78,6 +96,7 @@ chain_check(const double *res, const double *ph, const double *w, size_t len, do
     for (; k < len; ++k) {
         of |= fabs(res[k]) > tol_k;
         be |= (ph[k] > 0) & (w[k] - ph[k] < -tol);
+        pq[k] = 0;
     }
     *off |= of;
     *below |= be;
@@ -193,12 +212,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
     /* Every ray that meets the ground, and every vertex row, within the base's span: w
      * beyond it is the free chains', which no row held at the base. */
-    for (size_t e = a; e < f0 && e <= b; ++e)
-        if (d[e] > 0)
-            return 0;
-    for (size_t e = f1 + 1 > a ? f1 + 1 : a; e <= b; ++e)
-        if (d[e] > 0)
-            return 0;
+    const size_t o0 = f0 <= b ? f0 : b + 1, o1 = f1 + 1 > a ? f1 + 1 : a; /* [a, o0), [o1, b] */
+    if ((o0 > a && any_positive(d + a, o0 - a)) || (o1 <= b && any_positive(d + o1, b + 1 - o1)))
+        return 0;
     if (tirenv_springs__cc_vertex_rows(c, T, p, x, z, a, b, d))
         return 0;
     const tirenv_springs__cc_row *V = c->vrows;
@@ -222,7 +238,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* ph over [f0, f1]: 0 outside the rays [ra, rb], d inside (>= 0 as the caller gives it),
      * raised where a vertex on an element stands higher. Where the rays cover the span and
      * no vertex stands higher, d itself (a copy of it cost some 450 instructions an update);
-     * else in three pieces, each a loop the compiler vectorises. */
+     * else in three pieces (zeros, a copy of d, zeros). */
     const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
     int raised = r0 != f0 || r1 != f1;
     for (size_t k = 0; k < nv && !raised; ++k)
@@ -232,10 +248,8 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         double *ph_w = c->upd_w + 1;
         for (size_t e = f0; e < r0; ++e)
             ph_w[e] = 0;
-        for (size_t e = r0; e <= r1; ++e) {
-            const double v = d[e];
-            ph_w[e] = v > 0 ? v : 0;
-        }
+        if (r0 <= r1) /* d >= 0, never -0 or NaN: what max(d, 0) gives */
+            memcpy(ph_w + r0, d + r0, (r1 - r0 + 1) * sizeof *ph_w);
         for (size_t e = r1 + 1; e <= f1; ++e)
             ph_w[e] = 0;
         for (size_t k = 0; k < nv; ++k)
@@ -365,12 +379,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         for (size_t q = 0; q < n_ch; ++q) {
             const size_t e0 = ch[2 * q], e1 = ch[2 * q + 1], len = e1 - e0 + 1;
             if (part) {
-                chain_check(wn + e0, ph + e0, wn + e0, len, tol_w, tol, &off, &below);
+                chain_check(wn + e0, ph + e0, wn + e0, pq + e0, len, tol_w, tol, &off, &below);
                 off |= (fabs(res[e0]) > tol_k) | (fabs(res[e1]) > tol_k);
             } else {
-                chain_check(res + e0, ph + e0, wn + e0, len, tol_k, tol, &off, &below);
+                chain_check(res + e0, ph + e0, wn + e0, pq + e0, len, tol_k, tol, &off, &below);
             }
-            memset(pq + e0, 0, len * sizeof *pq);
         }
         for (size_t q = 0; part && q < n_s; ++q)
             for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e)
