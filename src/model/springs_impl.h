@@ -618,6 +618,8 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
  * [lo, from). */
 void tirenv_springs__cc_chain_solve(const tirenv_springs__cc *c, double x[], size_t lo,
                                     size_t from, size_t hi);
+/* x := K_FF^-1 x on every chain of the factor kept: the bits of a chain_solve on each. */
+void tirenv_springs__cc_chains_solve(const tirenv_springs__cc *c, double x[]);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (> 0, else +0 where the ray meets no ground within R0: never negative, -0 or NaN;

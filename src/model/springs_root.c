@@ -627,8 +627,7 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
     for (size_t s = 0; s < 2 * k; ++s)
         if (W.fr[s])
             pw[W.el[s]] += B[s];
-    for (size_t q = 0; q < n_ch; ++q)
-        tirenv_springs__cc_chain_solve(c, pw, ch[2 * q], ch[2 * q], ch[2 * q + 1]);
+    tirenv_springs__cc_chains_solve(c, pw);
     for (size_t q = 0; q < k; ++q)
         c->pred_lam[q] = lam[q];
     c->pred_x = x;

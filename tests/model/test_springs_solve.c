@@ -695,6 +695,51 @@ static void test_inner_residual_bound(void **state)
     assert_true(inner > 5000); /* 8,581 on these seeds, the largest 0.027 of it */
 }
 
+/* tirenv_springs__cc_chains_solve (springs_schur.c) solves two chains at a time, interleaved:
+ * over random spans, held sets and tires, every element the bits of tirenv_springs__cc_chain_solve
+ * on each chain alone. */
+static void test_chains_solve_matches(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x7e57c4a1a5ULL;
+    size_t chains = 0, elements = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const size_t N = 5 + (size_t)(300 * tirenv_test_uniform(&seed));
+        const double k_r = 1e5 * (0.3 + tirenv_test_uniform(&seed));
+        const double k_ir = k_r * pow(10, 4 * tirenv_test_uniform(&seed) - 1);
+        chain_set cs;
+        chain_set_init(&cs, N, k_r, k_ir);
+        const tirenv_springs__cc_tire T = {.N = N, .R0 = 0.3, .k_r = k_r, .k_ir = k_ir,
+                                           .diag = cs.diag, .lq = cs.lq, .rq = cs.rq};
+        tirenv_springs__cc a;
+        assert_int_equal(tirenv_springs__cc_init(&a, N), 0);
+        a.f0 = (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
+        a.f1 = N - 1 - (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
+        a.n_schur = 0;
+        const double p_held = 0.02 + 0.4 * tirenv_test_uniform(&seed);
+        for (size_t e = a.f0; e <= a.f1; ++e)
+            a.wpos[e] = tirenv_test_uniform(&seed) < p_held ? SIZE_MAX : 0;
+        assert_int_equal(tirenv_springs__cc_schur_factor(&a, &T, 0), 0);
+        double *x = calloc(N + 2, sizeof *x), *y = calloc(N + 2, sizeof *y);
+        assert_true(x && y);
+        for (size_t e = a.f0; e <= a.f1; ++e)
+            x[e] = y[e] = a.wpos[e] == SIZE_MAX ? 0.0 : tirenv_test_uniform(&seed) - 0.3;
+        tirenv_springs__cc_chains_solve(&a, x);
+        for (size_t q = 0; q < a.n_chains; ++q)
+            tirenv_springs__cc_chain_solve(&a, y, a.chains[2 * q], a.chains[2 * q],
+                                           a.chains[2 * q + 1]);
+        assert_memory_equal(x, y, (N + 2) * sizeof *x);
+        chains += a.n_chains;
+        elements += a.f1 - a.f0 + 1;
+        free(x);
+        free(y);
+        tirenv_springs__cc_free(&a);
+        chain_set_free(&cs);
+    }
+    print_message("%zu chains over %zu elements, the same bits\n", chains, elements);
+    assert_true(chains > 500);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -706,6 +751,7 @@ int main(void)
         cmocka_unit_test(test_pairs_miss_nothing),
         cmocka_unit_test(test_flip_matches_factor),
         cmocka_unit_test(test_inner_residual_bound),
+        cmocka_unit_test(test_chains_solve_matches),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
