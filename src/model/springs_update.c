@@ -157,38 +157,31 @@ static inline __attribute__((always_inline)) int run_on_rows(const double *ph, d
     return no;
 }
 
-/* One run of held elements' reactions, len of them from res, into pq: *l_max raised to the
- * largest |r| and *l_min lowered to the least r, each by the comparison the scalar pass made
- * (NaN passes neither), *n_pos counting those > 0 (as a double: exact, and GCC 12 counts a
- * mask into an integer a lane at a time). */
+/* One run of held elements' reactions, len of them from res, into pq: *l_min lowered to the
+ * least r by the comparison the scalar pass made (NaN passes it not), *n_pos counting those > 0
+ * (as a double: exact, and GCC 12 counts a mask into an integer a lane at a time). The largest
+ * |r| is wanted only where some reaction is below 0 (the caller takes it then). */
 static inline __attribute__((always_inline)) void
-run_reactions(const double *res, double *pq, size_t len, double *l_max, double *l_min,
-              double *n_pos)
+run_reactions(const double *res, double *pq, size_t len, double *l_min, double *n_pos)
 {
-    const v2l no_sign = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
     const v2d zero = {0, 0}, one = {1, 1};
-    v2d mx = {*l_max, *l_max}, mn = {*l_min, *l_min}, np = {0, 0};
+    v2d mn = {*l_min, *l_min}, np = {0, 0};
     size_t k = 0;
     for (; k + 2 <= len; k += 2) {
         v2d r;
         memcpy(&r, res + k, sizeof r);
         memcpy(pq + k, &r, sizeof r);
-        const v2d a = (v2d)((v2l)r & no_sign);
-        const v2l up = a > mx, down = r < mn;
-        mx = (v2d)((up & (v2l)a) | (~up & (v2l)mx));
+        const v2l down = r < mn;
         mn = (v2d)((down & (v2l)r) | (~down & (v2l)mn));
         np += (v2d)((v2l)one & (r > zero));
     }
-    double hi = mx[1] > mx[0] ? mx[1] : mx[0], lo = mn[1] < mn[0] ? mn[1] : mn[0];
-    double n = np[0] + np[1];
+    double lo = mn[1] < mn[0] ? mn[1] : mn[0], n = np[0] + np[1];
     for (; k < len; ++k) {
         const double r = res[k];
-        hi = fabs(r) > hi ? fabs(r) : hi;
         lo = r < lo ? r : lo;
         n += r > 0;
         pq[k] = r;
     }
-    *l_max = hi;
     *l_min = lo;
     *n_pos += n;
 }
@@ -340,8 +333,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
      * or the update is given up. */
     double *x_c = c->w_try, *pq = pe;
-    /* with the equations: the reactions' least and largest (the held elements' are their
-     * residuals of K w = G^T lambda), and whether each free element is above its own row
+    /* with the equations: the reactions' least (the held elements' are their residuals of
+     * K w = G^T lambda; the largest, the rows' here and the held ones' after, only where the
+     * least is below 0), and whether each free element is above its own row
      * (its ray's, or a vertex's on it); each element's own reaction into pq (0 on the free
      * ones; a pass of its own cost some 700 instructions) */
     double l_max = 0, l_min = 0;
@@ -385,7 +379,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             l_min = lam[q] < l_min ? lam[q] : l_min;
         }
         /* the free elements chain by chain (the base's factor's chains: wpos' free ones),
-         * each a loop without a branch; then the held ones from its list */
+         * each a loop without a branch; then the held runs between them */
         int off = 0, below = 0;
         for (size_t q = 0; q < n_ch; ++q) {
             const size_t e0 = ch[2 * q], e1 = ch[2 * q + 1], len = e1 - e0 + 1;
@@ -405,7 +399,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         for (size_t q = 0; q <= n_ch; ++q) { /* the held runs, as above */
             const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
             const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
-            run_reactions(res + h0, pq + h0, h1 - h0, &l_max, &l_min, &n_pos);
+            run_reactions(res + h0, pq + h0, h1 - h0, &l_min, &n_pos);
         }
         n_c = (size_t)n_pos;
         if (ok)
@@ -428,8 +422,18 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             lam[q] += q_res[q];
     }
     /* Every reaction >= 0, by the solve's own rule; every free element above its row. */
-    if (!above || l_min < -1e-12 * l_max)
+    if (!above)
         return 0;
+    if (l_min < 0) { /* the largest |reaction|, the held ones' from pq (l_min >= 0 passes) */
+        for (size_t q = 0; q <= n_ch; ++q) {
+            const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
+            const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+            for (size_t e = h0; e < h1; ++e)
+                l_max = fabs(pq[e]) > l_max ? fabs(pq[e]) : l_max;
+        }
+        if (l_min < -1e-12 * l_max)
+            return 0;
+    }
     /* Every other vertex row between elements holds: below the chord of its tips less the
      * bounds of the weights (as the scan drops vertices, with w for the rays' penetrations),
      * else by its weights. (Those on an element were checked with the pins.) */
