@@ -195,8 +195,8 @@ run_reactions(const double *res, double *pq, size_t len, double *l_min, double *
  * add 3 u |K| |w|: |K w|_e <= 11 u (k_r + 4 k_ir) max |w|, which is below a quarter of
  * eq_tol R0 (k_r + 2 k_ir) while every |w| <= R0 (tol_w = R0 below). The update checks that
  * premise on those elements instead of their residual (docs/models.md section 4.8, A start at
- * a new x; test_inner_residual_bound). (Called apart, the two helpers here cost more in calls
- * than the residuals they spare: they are forced inline.) */
+ * a new x; test_inner_residual_bound). (The helpers above are forced inline: called apart,
+ * they cost more in calls than the residuals they spare.) */
 
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
