@@ -31,7 +31,6 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         return TIRENV_ENOMEM;
     if (!(c->base_w = calloc(N + 2, sizeof *c->base_w)) ||
         !(c->upd_w = calloc(N + 2, sizeof *c->upd_w)) ||
-        !(c->upd_pe = calloc(N, sizeof *c->upd_pe)) ||
         !(c->upd_pin = calloc(N, sizeof *c->upd_pin)) ||
         !(c->pred_w = calloc(N + 2, sizeof *c->pred_w)) ||
         !(c->root_y = calloc(N + 2, sizeof *c->root_y)) ||
@@ -86,7 +85,6 @@ void tirenv_springs__cc_free(tirenv_springs__cc *c)
     free(c->last_keys);
     free(c->base_w);
     free(c->upd_w);
-    free(c->upd_pe);
     free(c->upd_pin);
     free(c->dlambda);
     free(c->pred_w);

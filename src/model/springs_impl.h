@@ -557,7 +557,6 @@ typedef struct {
     int base_pins;         /* the base is the closed form's (tirenv_springs__cc_base_pins) */
     double base_z;
     double *base_w, *upd_w;  /* N + 2 each; upd_w is the update's scratch, indexed the same */
-    double *upd_pe;        /* N: the update's net reactions (N) until it accepts them */
     double *dlambda;       /* per row, cap_dl of room */
     long *upd_pin;         /* per element: the id of its own row at the update's height */
     size_t cap_dl;
@@ -619,6 +618,8 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
  * [lo, from). */
 void tirenv_springs__cc_chain_solve(const tirenv_springs__cc *c, double x[], size_t lo,
                                     size_t from, size_t hi);
+/* x := K_FF^-1 x on every chain of the factor kept: the bits of a chain_solve on each. */
+void tirenv_springs__cc_chains_solve(const tirenv_springs__cc *c, double x[]);
 
 /* The rows of the tip problem at centre (x, z) over p given each element's ray penetration
  * d[a..b] (> 0, else +0 where the ray meets no ground within R0: never negative, -0 or NaN;
@@ -679,8 +680,8 @@ int tirenv_springs__cc_vertex_rows(tirenv_springs__cc *c, const tirenv_springs__
  * equalities and K w = G^T lambda to round-off, every reaction >= 0, every other row holds
  * (to 1e-12 R0, as the solve's). Returns 1 with w over [f0 - 1, f1 + 1], pe and obstacle
  * over [f0, f1] as tirenv_springs__cc_solve gives them and *contacts the elements of [f0, f1]
- * with pe > 0; 0 if a condition fails (or the base is not usable: then solve at z), with
- * nothing written. */
+ * with pe > 0; 0 if a condition fails (or the base is not usable: then solve at z), w and pe
+ * over [f0, f1] then written or not, obstacle not. */
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
                               const double d[], const double dw[], double w[], double pe[],

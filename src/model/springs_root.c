@@ -634,19 +634,10 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         if (hi < f1)
             pw[hi] += k_ir * (H[hi + 1] + dz * dH[hi + 1]);
     }
-    /* (the chain at the span's start has no held neighbour before it: its right-hand side
-     * is +0 up to its end or its first row's element, where the elimination starts, as in
-     * keep_state) */
-    size_t from0 = n_ch > 0 ? ch[1] : 0;
     for (size_t s = 0; s < 2 * k; ++s)
-        if (W.fr[s]) {
+        if (W.fr[s])
             pw[W.el[s]] += B[s];
-            from0 = W.el[s] < from0 ? W.el[s] : from0;
-        }
-    for (size_t q = 0; q < n_ch; ++q)
-        tirenv_springs__cc_chain_solve(c, pw, ch[2 * q],
-                                       q == 0 && ch[0] == f0 ? from0 : ch[2 * q],
-                                       ch[2 * q + 1]);
+    tirenv_springs__cc_chains_solve(c, pw);
     for (size_t q = 0; q < k; ++q)
         c->pred_lam[q] = lam[q];
     c->pred_x = x;

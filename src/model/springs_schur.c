@@ -37,12 +37,60 @@ static void chain_solve(const tirenv_springs__cc *c, double x[], size_t lo, size
     chain_solve_from(c, x, lo, lo, hi);
 }
 
-/* x := K_FF^-1 x on every free element of [f0, f1], chain by chain (the chains the factor
- * found). */
+/* x := K_FF^-1 x on two chains [lo1, lo1 + n1] and [lo2, lo2 + n2] at once: each chain's
+ * operations are chain_solve's, in its order, so its bits; the two recurrences interleaved,
+ * since each is bound by its latency (a multiplication and a subtraction an element, each
+ * way), not by the instructions. The element just made is carried in a local (the stores to
+ * one chain would otherwise make the other's be read again). */
+static void chain_solve_two(const tirenv_springs__cc *c, double x[], size_t lo1, size_t n1,
+                            size_t lo2, size_t n2)
+{
+    double *x1 = x + lo1, *x2 = x + lo2;
+    const double *m1 = c->tri_mul + lo1, *m2 = c->tri_mul + lo2;
+    const double *p1 = c->tri_piv + lo1, *p2 = c->tri_piv + lo2;
+    const size_t n = n1 < n2 ? n1 : n2;
+    double a = x1[0], b = x2[0];
+    size_t k = 1;
+    for (; k <= n; ++k) {
+        a = x1[k] - m1[k] * a;
+        b = x2[k] - m2[k] * b;
+        x1[k] = a;
+        x2[k] = b;
+    }
+    for (size_t j = k; j <= n1; ++j)
+        x1[j] = a = x1[j] - m1[j] * a;
+    for (size_t j = k; j <= n2; ++j)
+        x2[j] = b = x2[j] - m2[j] * b;
+    x1[n1] = a = x1[n1] / p1[n1];
+    x2[n2] = b = x2[n2] / p2[n2];
+    for (k = 1; k <= n; ++k) {
+        a = x1[n1 - k] / p1[n1 - k] - m1[n1 - k + 1] * a;
+        b = x2[n2 - k] / p2[n2 - k] - m2[n2 - k + 1] * b;
+        x1[n1 - k] = a;
+        x2[n2 - k] = b;
+    }
+    for (size_t j = k; j <= n1; ++j)
+        x1[n1 - j] = a = x1[n1 - j] / p1[n1 - j] - m1[n1 - j + 1] * a;
+    for (size_t j = k; j <= n2; ++j)
+        x2[n2 - j] = b = x2[n2 - j] / p2[n2 - j] - m2[n2 - j + 1] * b;
+}
+
+/* x := K_FF^-1 x on every free element of [f0, f1] (the chains the factor found), two chains
+ * at a time. */
 static void tri_solve(const tirenv_springs__cc *c, double x[])
 {
-    for (size_t q = 0; q < c->n_chains; ++q)
-        chain_solve(c, x, c->chains[2 * q], c->chains[2 * q + 1]);
+    const size_t *ch = c->chains, n_ch = c->n_chains;
+    size_t q = 0;
+    for (; q + 2 <= n_ch; q += 2)
+        chain_solve_two(c, x, ch[2 * q], ch[2 * q + 1] - ch[2 * q], ch[2 * q + 2],
+                        ch[2 * q + 3] - ch[2 * q + 2]);
+    if (q < n_ch)
+        chain_solve(c, x, ch[2 * q], ch[2 * q + 1]);
+}
+
+void tirenv_springs__cc_chains_solve(const tirenv_springs__cc *c, double x[])
+{
+    tri_solve(c, x);
 }
 
 /* g_r . x over the row's free elements within [lo, hi] (x is zero outside). */

@@ -51,13 +51,31 @@ static size_t find_vrow(const tirenv_springs__cc_row V[], size_t n, long id)
 typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 typedef long long v2l __attribute__((vector_size(2 * sizeof(long long))));
 
+/* Whether one of d[0..len) is > 0, two a step without a branch (the rays beyond the span). */
+static inline __attribute__((always_inline)) int any_positive(const double *d, size_t len)
+{
+    const v2d zero = {0, 0};
+    v2l o = {0, 0};
+    size_t k = 0;
+    for (; k + 2 <= len; k += 2) {
+        v2d v;
+        memcpy(&v, d + k, sizeof v);
+        o |= v > zero;
+    }
+    int any = (o[0] | o[1]) != 0;
+    for (; k < len; ++k)
+        any |= d[k] > 0;
+    return any;
+}
+
 /* The free elements of one chain, len of them from res, ph and w: *off set where one's
- * residual exceeds tol_k in size, *below where one stands below its own row (ph > 0) by more
- * than tol. Two elements a step in GCC's vector extension: GCC 12 does not vectorise a
- * comparison of doubles counted into an integer, and the pass was a quarter of the update's
- * instructions. */
-static void chain_check(const double *res, const double *ph, const double *w, size_t len,
-                        double tol_k, double tol, int *off, int *below)
+ * residual exceeds tol_k in size (or, given w for res, where one's |w| exceeds it), *below
+ * where one stands below its own row (ph > 0) by more than tol; their reactions pq set to 0.
+ * Two elements a step in GCC's vector extension: GCC 12 does not vectorise a comparison of
+ * doubles counted into an integer, and the pass was a quarter of the update's instructions. */
+static inline __attribute__((always_inline)) void
+chain_check(const double *res, const double *ph, const double *w, double *pq, size_t len,
+            double tol_k, double tol, int *off, int *below)
 {
     const v2d tk = {tol_k, tol_k}, nt = {-tol, -tol}, zero = {0, 0};
     const v2l no_sign = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
@@ -68,17 +86,117 @@ static void chain_check(const double *res, const double *ph, const double *w, si
         memcpy(&r, res + k, sizeof r);
         memcpy(&h, ph + k, sizeof h);
         memcpy(&x, w + k, sizeof x);
+        memcpy(pq + k, &zero, sizeof zero);
         o |= (v2d)((v2l)r & no_sign) > tk; /* |r|: the sign bit cleared, as fabs */
-        b |= (h > zero) & (x - h < nt);
+        /* x - h where h > 0, else +0 (not below -tol): one comparison to OR in, since GCC 12
+         * turns an OR of two masks ANDed into a select a lane at a time */
+        b |= (v2d)((v2l)(x - h) & (h > zero)) < nt;
     }
     int of = (o[0] | o[1]) != 0, be = (b[0] | b[1]) != 0;
     for (; k < len; ++k) {
         of |= fabs(res[k]) > tol_k;
         be |= (ph[k] > 0) & (w[k] - ph[k] < -tol);
+        pq[k] = 0;
     }
     *off |= of;
     *below |= be;
 }
+
+/* K w on [lo, hi] within [f0, f1], the free chains beyond the span left for the caller to
+ * fold in: its ends apart (a 0 for the neighbour beyond, as written), the middle a loop the
+ * compiler vectorises. The same expression at every element whatever range it is asked for. */
+static inline __attribute__((always_inline)) void
+k_times_w(double res[], const double w[], const double diag[], double k_ir, size_t f0, size_t f1,
+          size_t lo, size_t hi)
+{
+    if (f0 == f1) {
+        res[f0] = diag[f0] * w[f0] - k_ir * (0.0 + 0.0);
+        return;
+    }
+    size_t e = lo;
+    if (e == f0) {
+        res[f0] = diag[f0] * w[f0] - k_ir * (0.0 + w[f0 + 1]);
+        ++e;
+    }
+    const size_t m = hi < f1 ? hi : f1 - 1;
+    const v2d kk = {k_ir, k_ir};
+    for (; e + 1 <= m; e += 2) { /* two a step: GCC 12 left the short runs' loop scalar */
+        v2d dg, wc, wl, wr;
+        memcpy(&dg, diag + e, sizeof dg);
+        memcpy(&wc, w + e, sizeof wc);
+        memcpy(&wl, w + e - 1, sizeof wl);
+        memcpy(&wr, w + e + 1, sizeof wr);
+        const v2d r = dg * wc - kk * (wl + wr);
+        memcpy(res + e, &r, sizeof r);
+    }
+    for (; e <= m; ++e)
+        res[e] = diag[e] * w[e] - k_ir * (w[e - 1] + w[e + 1]);
+    if (hi == f1)
+        res[f1] = diag[f1] * w[f1] - k_ir * (w[f1 - 1] + 0.0);
+}
+
+/* One run of held elements, len of them from ph: w set to ph, 1 if one is not above 0 (or is
+ * NaN). Two elements a step, as chain_check. */
+static inline __attribute__((always_inline)) int run_on_rows(const double *ph, double *w,
+                                                            size_t len)
+{
+    const v2d zero = {0, 0};
+    v2l not_on = {0, 0};
+    size_t k = 0;
+    for (; k + 2 <= len; k += 2) {
+        v2d h;
+        memcpy(&h, ph + k, sizeof h);
+        memcpy(w + k, &h, sizeof h);
+        not_on |= (v2d)((v2l)h & (h > zero)) <= zero; /* h where h > 0, else +0 */
+    }
+    int no = (not_on[0] | not_on[1]) != 0;
+    for (; k < len; ++k) {
+        no |= !(ph[k] > 0);
+        w[k] = ph[k];
+    }
+    return no;
+}
+
+/* One run of held elements' reactions, len of them from res, into pq: *l_min lowered to the
+ * least r by the comparison the scalar pass made (NaN passes it not), *n_pos counting those > 0
+ * (as a double: exact, and GCC 12 counts a mask into an integer a lane at a time). The largest
+ * |r| is wanted only where some reaction is below 0 (the caller takes it then). */
+static inline __attribute__((always_inline)) void
+run_reactions(const double *res, double *pq, size_t len, double *l_min, double *n_pos)
+{
+    const v2d zero = {0, 0}, one = {1, 1};
+    v2d mn = {*l_min, *l_min}, np = {0, 0};
+    size_t k = 0;
+    for (; k + 2 <= len; k += 2) {
+        v2d r;
+        memcpy(&r, res + k, sizeof r);
+        memcpy(pq + k, &r, sizeof r);
+        const v2l down = r < mn;
+        mn = (v2d)((down & (v2l)r) | (~down & (v2l)mn));
+        np += (v2d)((v2l)one & (r > zero));
+    }
+    double lo = mn[1] < mn[0] ? mn[1] : mn[0], n = np[0] + np[1];
+    for (; k < len; ++k) {
+        const double r = res[k];
+        lo = r < lo ? r : lo;
+        n += r > 0;
+        pq[k] = r;
+    }
+    *l_min = lo;
+    *n_pos += n;
+}
+
+/* Where the state is tirenv_springs__cc_root_at's, each free element inside a chain (not its
+ * ends, not a working row's) holds w as that solve left it, and its equation's right-hand
+ * side is 0 in both systems: its residual is the Thomas solve's own. For K_FF, a symmetric
+ * diagonally dominant M-matrix, the computed LDL^T solve satisfies (K + dK) w = b with
+ * |dK| <= 8 u |K| element by element (u = 2^-53: the factor's rounding and the two sweeps',
+ * |L| |D| |L^T| being |K| to O(u) since mul < 0 < piv), and the update's three operations
+ * add 3 u |K| |w|: |K w|_e <= 11 u (k_r + 4 k_ir) max |w|, which is below a quarter of
+ * eq_tol R0 (k_r + 2 k_ir) while every |w| <= R0 (tol_w = R0 below). The update checks that
+ * premise on those elements instead of their residual (docs/models.md section 4.8, A start at
+ * a new x; test_inner_residual_bound). (The helpers above are forced inline: called apart,
+ * they cost more in calls than the residuals they spare.) */
 
 int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                               const tirenv_profile *p, double x, double z, size_t a, size_t b,
@@ -98,12 +216,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
     /* Every ray that meets the ground, and every vertex row, within the base's span: w
      * beyond it is the free chains', which no row held at the base. */
-    for (size_t e = a; e < f0 && e <= b; ++e)
-        if (d[e] > 0)
-            return 0;
-    for (size_t e = f1 + 1 > a ? f1 + 1 : a; e <= b; ++e)
-        if (d[e] > 0)
-            return 0;
+    const size_t o0 = f0 <= b ? f0 : b + 1, o1 = f1 + 1 > a ? f1 + 1 : a; /* [a, o0), [o1, b] */
+    if ((o0 > a && any_positive(d + a, o0 - a)) || (o1 <= b && any_positive(d + o1, b + 1 - o1)))
+        return 0;
     if (tirenv_springs__cc_vertex_rows(c, T, p, x, z, a, b, d))
         return 0;
     const tirenv_springs__cc_row *V = c->vrows;
@@ -114,7 +229,11 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray),
      * pin written only on the elements a vertex row sits on (a pass over the span cost
      * some 400 instructions an update; the others are their rays'). */
-    double *wn = c->step, *res = c->raise;
+    /* w and pe are made in place (copies into them cost some 220 instructions an update): a
+     * refused update leaves them to the full evaluation that follows, which writes both over
+     * its span before it reads them (the tips are read only over the span of the evaluation
+     * that gave them) */
+    double *wn = w, *res = c->raise;
     long *pin = c->upd_pin;
     const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
     for (size_t k = 0; k < nv; ++k)
@@ -123,7 +242,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* ph over [f0, f1]: 0 outside the rays [ra, rb], d inside (>= 0 as the caller gives it),
      * raised where a vertex on an element stands higher. Where the rays cover the span and
      * no vertex stands higher, d itself (a copy of it cost some 450 instructions an update);
-     * else in three pieces, each a loop the compiler vectorises. */
+     * else in three pieces (zeros, a copy of d, zeros). */
     const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
     int raised = r0 != f0 || r1 != f1;
     for (size_t k = 0; k < nv && !raised; ++k)
@@ -133,10 +252,8 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         double *ph_w = c->upd_w + 1;
         for (size_t e = f0; e < r0; ++e)
             ph_w[e] = 0;
-        for (size_t e = r0; e <= r1; ++e) {
-            const double v = d[e];
-            ph_w[e] = v > 0 ? v : 0;
-        }
+        if (r0 <= r1) /* d >= 0, never -0 or NaN: what max(d, 0) gives */
+            memcpy(ph_w + r0, d + r0, (r1 - r0 + 1) * sizeof *ph_w);
         for (size_t e = r1 + 1; e <= f1; ++e)
             ph_w[e] = 0;
         for (size_t k = 0; k < nv; ++k)
@@ -156,20 +273,28 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     const tirenv_springs__cc_row *rows = c->rows;
     const double *base_w = c->base_w + 1;
     size_t n_same = 0;
-    /* every element as a free one (a copy, or a loop the compiler vectorises), then the held
-     * ones from the base's list of them (kkt_factor's) */
+    /* The held elements are the chains' complement in [f0, f1] (the base's factor's chains
+     * and its layout's held list describe the same wpos; the count checks it): the free ones
+     * as the state has them (a copy a chain, or a loop the compiler vectorises), then the held
+     * runs between the chains, each on its row. */
+    const size_t *ch = c->chains, n_ch = c->n_chains;
     if (pred) {
-        memcpy(wn + f0, c->pred_w + f0, (f1 - f0 + 1) * sizeof *wn);
+        for (size_t q = 0; q < n_ch; ++q)
+            memcpy(wn + ch[2 * q], c->pred_w + ch[2 * q],
+                   (ch[2 * q + 1] - ch[2 * q] + 1) * sizeof *wn);
     } else {
         for (size_t e = f0; e <= f1; ++e)
             wn[e] = base_w[e] + dz * dw[e];
     }
-    for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
-        const size_t e = c->held[k];
-        if (!(ph[e] > 0))
-            return 0;
-        wn[e] = ph[e];
+    size_t n_free = 0;
+    int not_on = 0;
+    for (size_t q = 0; q <= n_ch; ++q) { /* the run before chain q (or after the last) */
+        const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1, h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+        n_free += q < n_ch ? ch[2 * q + 1] - ch[2 * q] + 1 : 0;
+        not_on |= run_on_rows(ph + h0, wn + h0, h1 - h0);
     }
+    if (not_on || n_free + c->n_held != f1 - f0 + 1)
+        return 0;
     for (size_t k = 0; k < nv; ++k) {
         const size_t e = V[k].i;
         if (V[k].t != 0 || pin[e] != V[k].id || wpos[e] != SIZE_MAX)
@@ -207,26 +332,36 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
      * system at z differs from the base's only by the rows' weights, t moving some 200
      * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
      * or the update is given up. */
-    double *x_c = c->w_try, *pq = c->upd_pe;
-    /* with the equations: the reactions' least and largest (the held elements' are their
-     * residuals of K w = G^T lambda), and whether each free element is above its own row
+    double *x_c = c->w_try, *pq = pe;
+    /* with the equations: the reactions' least (the held elements' are their residuals of
+     * K w = G^T lambda; the largest, the rows' here and the held ones' after, only where the
+     * least is below 0), and whether each free element is above its own row
      * (its ray's, or a vertex's on it); each element's own reaction into pq (0 on the free
-     * ones), copied to pe if accepted (a pass of its own cost some 700 instructions) */
+     * ones; a pass of its own cost some 700 instructions) */
     double l_max = 0, l_min = 0;
     int above = 1;
     size_t n_c = 0; /* the held elements with a reaction > 0 */
-    for (size_t it = 0;; ++it) {
+    /* part: the first pass from root_at's state takes K w only where the right-hand side or
+     * w differs from that solve's (the held elements, the chains' ends, the working rows'
+     * elements) and checks |w| <= tol_w on the chains instead (above); if anything is off,
+     * the pass is made again over every element, as the corrections need */
+    const double tol_w = R0;
+    int part = pred && c->pred_held;
+    for (size_t it = 0;;) {
         /* K w, the free chains beyond the span folded into its ends' diagonal as in the
          * KKT system, less G^T lambda */
         const double *diag = T->diag;
-        if (f0 == f1) {
-            res[f0] = diag[f0] * wn[f0] - k_ir * (0.0 + 0.0);
-        } else { /* the ends apart (a 0 for the neighbour beyond, as written), the middle
-                  * a loop the compiler vectorises */
-            res[f0] = diag[f0] * wn[f0] - k_ir * (0.0 + wn[f0 + 1]);
-            for (size_t e = f0 + 1; e < f1; ++e)
-                res[e] = diag[e] * wn[e] - k_ir * (wn[e - 1] + wn[e + 1]);
-            res[f1] = diag[f1] * wn[f1] - k_ir * (wn[f1 - 1] + 0.0);
+        if (part) { /* between the chains' insides, ends included, then the rows' elements */
+            size_t lo = f0;
+            for (size_t q = 0; q < n_ch; ++q) {
+                k_times_w(res, wn, diag, k_ir, f0, f1, lo, ch[2 * q]);
+                lo = ch[2 * q + 1];
+            }
+            k_times_w(res, wn, diag, k_ir, f0, f1, lo, f1);
+            for (size_t q = 0; q < n_s; ++q)
+                k_times_w(res, wn, diag, k_ir, f0, f1, row_i[q], row_i[q] + 1);
+        } else {
+            k_times_w(res, wn, diag, k_ir, f0, f1, f0, f1);
         }
         if (f0 > 0)
             res[f0] -= k_ir * T->lq[f0 - 1] * wn[f0];
@@ -244,27 +379,36 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             l_min = lam[q] < l_min ? lam[q] : l_min;
         }
         /* the free elements chain by chain (the base's factor's chains: wpos' free ones),
-         * each a loop without a branch; then the held ones from its list */
+         * each a loop without a branch; then the held runs between them */
         int off = 0, below = 0;
-        for (size_t q = 0, n_ch = c->n_chains; q < n_ch; ++q) {
-            const size_t e0 = c->chains[2 * q], len = c->chains[2 * q + 1] - e0 + 1;
-            chain_check(res + e0, ph + e0, wn + e0, len, tol_k, tol, &off, &below);
-            memset(pq + e0, 0, len * sizeof *pq);
+        for (size_t q = 0; q < n_ch; ++q) {
+            const size_t e0 = ch[2 * q], e1 = ch[2 * q + 1], len = e1 - e0 + 1;
+            if (part) {
+                chain_check(wn + e0, ph + e0, wn + e0, pq + e0, len, tol_w, tol, &off, &below);
+                off |= (fabs(res[e0]) > tol_k) | (fabs(res[e1]) > tol_k);
+            } else {
+                chain_check(res + e0, ph + e0, wn + e0, pq + e0, len, tol_k, tol, &off, &below);
+            }
         }
+        for (size_t q = 0; part && q < n_s; ++q)
+            for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e)
+                off |= wpos[e] != SIZE_MAX && fabs(res[e]) > tol_k;
         ok &= !off;
         above = !below;
-        n_c = 0;
-        for (size_t k = 0, n_held = c->n_held; k < n_held; ++k) {
-            const size_t e = c->held[k];
-            const double r = res[e];
-            l_max = fabs(r) > l_max ? fabs(r) : l_max;
-            l_min = r < l_min ? r : l_min;
-            n_c += r > 0;
-            pq[e] = r;
+        double n_pos = 0;
+        for (size_t q = 0; q <= n_ch; ++q) { /* the held runs, as above */
+            const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
+            const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+            run_reactions(res + h0, pq + h0, h1 - h0, &l_min, &n_pos);
         }
+        n_c = (size_t)n_pos;
         if (ok)
             break;
-        if (it == max_corrections)
+        if (part) { /* every element's residual, as the corrections take it */
+            part = 0;
+            continue;
+        }
+        if (it++ == max_corrections)
             return 0;
         for (size_t e = f0; e <= f1; ++e)
             x_c[e] = wpos[e] == SIZE_MAX ? 0 : -res[e];
@@ -278,8 +422,18 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             lam[q] += q_res[q];
     }
     /* Every reaction >= 0, by the solve's own rule; every free element above its row. */
-    if (!above || l_min < -1e-12 * l_max)
+    if (!above)
         return 0;
+    if (l_min < 0) { /* the largest |reaction|, the held ones' from pq (l_min >= 0 passes) */
+        for (size_t q = 0; q <= n_ch; ++q) {
+            const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
+            const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+            for (size_t e = h0; e < h1; ++e)
+                l_max = fabs(pq[e]) > l_max ? fabs(pq[e]) : l_max;
+        }
+        if (l_min < -1e-12 * l_max)
+            return 0;
+    }
     /* Every other vertex row between elements holds: below the chord of its tips less the
      * bounds of the weights (as the scan drops vertices, with w for the rays' penetrations),
      * else by its weights. (Those on an element were checked with the pins.) */
@@ -300,8 +454,6 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
      * max(ph, 0) gives, copied (where ph is d and d is obstacle, as the model passes them,
      * already there) */
-    memcpy(w + f0, wn + f0, (f1 - f0 + 1) * sizeof *w);
-    memcpy(pe + f0, pq + f0, (f1 - f0 + 1) * sizeof *pe);
     if (ph != obstacle)
         memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
     /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
