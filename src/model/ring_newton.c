@@ -30,16 +30,15 @@ enum { NEWTON_BACKTRACK = 20, NEWTON_POLISH = 8 };
  * the line search as before. */
 enum { NEWTON_FULL = 10, NEWTON_FULL_CHANGES = 32 };
 /* The peel (nw->peel; docs/performance.md 2.24). Where the first step moves a contact's edge
- * onto ground the tread only grazes (beside a cleat's corner, where the tread drapes over it a
- * few 1e-7 m clear), a run of points enters at once, and the full steps after free them one a
- * step from the run's end: each freed point leaves its neighbour pressed in by some 1e-7 m,
- * and that one goes at the next step (over the bench cleat 27 contact solves of 4 to 15 steps,
- * 253 steps in all). So where the second full step frees a point that the first one brought
- * into contact, the points beside it that came in with it and are pressed in by no more than a
- * graze are freed too. Once a solve, after the first step only: the start is kept in g until
- * then (the line search's vector, unused while the steps are full). A wrong guess costs a
- * step; the answer is the system of its final states solved, which no guess changes (the same
- * bits). */
+ * onto ground the tread only grazes (beside a cleat's corner, where the tread drapes over it),
+ * a run of points enters at once, and the full steps after free them one a step from the run's
+ * end, each some 1e-7 m clear of the ground at the step that frees it (over the bench cleat 27
+ * contact solves of 4 to 15 steps, 253 steps in all). So where the second full step frees a
+ * point that the first one brought into contact, the points beside it that came in with it and
+ * are pressed in by no more than a graze are freed too. Once a solve, at the second step only:
+ * the start is kept in g until then (the line search's vector, unused while the steps are
+ * full). A wrong guess costs a step; the answer is the system of its final states solved,
+ * which no guess changes (the same bits). */
 static const double newton_sigma = 1e-4; /* Armijo's sufficient decrease */
 /* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
  * point whose compression is zero to round-off carries no force either way. */

@@ -1889,9 +1889,9 @@ static void leave(tirenv_ring *r, const window_save *sv)
 
 /* The contact Newton's peel (ring_newton.c; docs/performance.md 2.24). PEEL_GRAZE (m): a point
  * pressed in by no more than this at the Newton point is grazing, the tread draped over a
- * corner; the points freed one a step lay 1e-9 to 1e-6 m clear at the step that freed them
- * (the bench sweep's instructions: 447.0 M at 1e-6 m, 447.1 M at 3e-7 m and 1e-5 m; the 0.10 x
- * 0.025 m cleat's 396.2 M, 398.7 M and 398.4 M). */
+ * corner; the points freed one a step lay 1e-8 to 2e-6 m clear at the step that freed them in
+ * the solves looked at (the bench sweep's instructions: 447.0 M at 1e-6 m, 447.1 M at 3e-7 m
+ * and 1e-5 m; the 0.10 x 0.025 m cleat's 396.2 M, 398.7 M and 398.4 M). */
 static const double PEEL_GRAZE = 1e-6;
 
 /* A point in contact (its tread surface) at the Newton point xn, free at the start x0, pressed
