@@ -1927,10 +1927,6 @@ static size_t peel_cb(tirenv_ring *r, const double x0[], const double x[], const
     return freed;
 }
 
-/* Newton on the nodes a .. b with the points pts[k0 .. k1) (a .. b the whole window: every
- * point), from the window's xw there and the knots at zero: its answer, knots included, in
- * T->x, and copied into xw; with want, the factor of its final states in T->win. -1 if out of
- * memory for the knots, else the driver's status. */
 /* Whether solve_on's Newton peels, with m knots on n nodes: not with the softening carcass
  * (whose Newton has no full steps to peel), nor where the tests ask so (no_peel), nor with more
  * than a knot per 8 nodes. */
@@ -1939,6 +1935,10 @@ static int peels(const tirenv_ring_tread *T, size_t m, size_t n)
     return !T->soft && !T->no_peel && 8 * m <= n;
 }
 
+/* Newton on the nodes a .. b with the points pts[k0 .. k1) (a .. b the whole window: every
+ * point), from the window's xw there and the knots at zero: its answer, knots included, in
+ * T->x, and copied into xw; with want, the factor of its final states in T->win. -1 if out of
+ * memory for the knots, else the driver's status. */
 static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, size_t k1,
                     int want)
 {
@@ -1958,8 +1958,9 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
         for (size_t k = 0; k < m; ++k)
             x[N + k] = 0;
         /* The peel (ring_newton.c) where the vertex cuts are few, as over obstacles: over a
-         * road, a cut in every node interval or more, it freed runs that came back (the 1 mm
-         * road's instructions +0.5 %, docs/performance.md 2.24). */
+         * road, a cut in every node interval or more, its pass over the many points and its
+         * wrong guesses cost more than it saved (the 1 mm road's instructions +0.5 %,
+         * docs/performance.md 2.24). */
         const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
                                        points_energy, T->kp, line_cb,
                                        T->soft ? carcass_newton_tol : 0, &T->n_newton,
