@@ -340,6 +340,11 @@ typedef struct {
     /* May be NULL: the smooth part of E's slope and curvature along p at x, added to the
      * line's quadratic before its exact minimiser is sought. */
     void (*smooth)(tirenv_ring *r, const double x[], const double p[], double *d1, double *d2);
+    /* May be NULL (not used with nl_tol > 0): after the second full step, from x to the
+     * Newton point xn (the states set there), the start x0: the points that entered since x0
+     * and leave now free the grazing runs beside them that entered with them; returns how many
+     * it freed (ring_newton.c, the peel). */
+    size_t (*peel)(tirenv_ring *r, const double x0[], const double x[], const double xn[]);
 } tirenv_ring_newton;
 
 enum { TIRENV_RING_NEWTON_OK = 0, TIRENV_RING_NEWTON_BREAKDOWN, TIRENV_RING_NEWTON_NOCONV };
@@ -389,6 +394,10 @@ double *tirenv_ring__tread_u(tirenv_ring_tread *T);
  * whole nonzero, every later one on the whole window instead (the tests' reference). */
 size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T);
 void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole);
+/* With no_peel nonzero, the contact's Newton without its peel (ring_newton.c): the tests'
+ * reference, the same answers in more steps; and the points the peel freed so far. */
+void tirenv_ring__tread_no_peel(tirenv_ring_tread *T, int no_peel);
+size_t tirenv_ring__tread_peeled(const tirenv_ring_tread *T);
 /* For tests: from now on NaN in the Newton driver's vectors and the knots' arrays wherever no
  * solve has written yet, and, before each solve, past the unknowns and knots it writes; a
  * read of an entry it did not write then shows (a NaN answer, a Newton that does not settle),

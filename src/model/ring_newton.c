@@ -29,6 +29,16 @@ enum { NEWTON_BACKTRACK = 20, NEWTON_POLISH = 8 };
  * carcass), whose answer is where Newton stops within nl_tol, so depends on the path: there
  * the line search as before. */
 enum { NEWTON_FULL = 10, NEWTON_FULL_CHANGES = 32 };
+/* The peel (nw->peel; docs/performance.md 2.24). Where the first step moves a contact's edge
+ * onto ground the tread only grazes (beside a cleat's corner, where the tread drapes over it),
+ * a run of points enters at once, and the full steps after free them one a step from the run's
+ * end, each some 1e-7 m clear of the ground at the step that frees it (over the bench cleat 27
+ * contact solves of 4 to 15 steps, 253 steps in all). So where the second full step frees a
+ * point that the first one brought into contact, the points beside it that came in with it and
+ * are pressed in by no more than a graze are freed too. Once a solve, at the second step only:
+ * the start is kept in g until then (the line search's vector, unused while the steps are
+ * full). A wrong guess costs a step; the answer is the system of its final states solved,
+ * which no guess changes (the same bits). */
 static const double newton_sigma = 1e-4; /* Armijo's sufficient decrease */
 /* A Newton step this short (m) ends the iteration even if a point's state flips with it: a
  * point whose compression is zero to round-off carries no force either way. */
@@ -81,6 +91,8 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
     nw->set_states(r, x); /* every point's (its count of changes not needed) */
     *factored = 0;
     size_t polish = 0; /* full Newton steps taken after the line search stalled */
+    int full = 1;      /* every step so far a full one */
+    const int peel = nw->peel != NULL && nw->nl_tol == 0; /* see the peel above */
     for (size_t it = 0; it < TIRENV_RING_NEWTON_MAX_ITER; ++it) {
         if (nw->steps)
             ++*nw->steps;
@@ -115,10 +127,15 @@ int tirenv_ring__newton(tirenv_ring *r, const tirenv_ring_newton *nw, double x[]
             continue;
         }
         if (it < NEWTON_FULL && changed <= NEWTON_FULL_CHANGES && nw->nl_tol == 0) {
-            /* The full step, its states already set: see NEWTON_FULL. */
+            /* The full step, its states already set: see NEWTON_FULL, and the peel. */
+            if (peel && it == 0)
+                memcpy(g, x, N * sizeof *x);
+            else if (peel && it == 1 && full)
+                nw->peel(r, g, x, xn);
             memcpy(x, xn, N * sizeof *x);
             continue;
         }
+        full = 0; /* g is the line search's from here */
         /* Else a step towards it that lowers E enough. Along x + alpha p (p = xn - x) the
          * quadratic 1/2 x.K x is E_K + alpha Kx.p + 1/2 alpha^2 p.K p: one product with K
          * for the whole line search, the points' share at each trial. */

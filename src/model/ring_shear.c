@@ -154,6 +154,8 @@ struct tirenv_ring_tread {
     double *xw, *dxw;
     size_t n_sub;       /* evaluations answered on a sub-window (the tests count them) */
     int whole;          /* nonzero: always the whole window (the tests' reference) */
+    int no_peel;        /* nonzero: Newton without peel_cb (the tests' reference) */
+    size_t n_peel;      /* points peel_cb freed so far (the tests count them) */
     int poison;         /* nonzero: NaN in what no solve wrote yet (tirenv_ring__tread_poison) */
     /* The softening carcass (CARCASS_SOFTENING_DEFLECTION > 0, docs/models.md 5.1): its
      * parameters, and the window's w at the iterate whose states were set last (the Newton
@@ -718,6 +720,10 @@ double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
 size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
 
 void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
+
+void tirenv_ring__tread_no_peel(tirenv_ring_tread *T, int no_peel) { T->no_peel = no_peel; }
+
+size_t tirenv_ring__tread_peeled(const tirenv_ring_tread *T) { return T->n_peel; }
 
 size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3 + SPAN; }
 
@@ -1881,6 +1887,54 @@ static void leave(tirenv_ring *r, const window_save *sv)
     r->n = sv->n;
 }
 
+/* The contact Newton's peel (ring_newton.c; docs/performance.md 2.24). PEEL_GRAZE (m): a point
+ * pressed in by no more than this at the Newton point is grazing, the tread draped over a
+ * corner; the points freed one a step lay 1e-8 to 2e-6 m clear at the step that freed them in
+ * the solves looked at (the bench sweep's instructions: 447.0 M at 1e-6 m, 447.1 M at 3e-7 m
+ * and 1e-5 m; the 0.10 x 0.025 m cleat's 396.2 M, 398.7 M and 398.4 M). */
+static const double PEEL_GRAZE = 1e-6;
+
+/* A point in contact (its tread surface) at the Newton point xn, free at the start x0, pressed
+ * in at xn by at most PEEL_GRAZE. */
+static int grazes(const tirenv_ring *r, const tirenv_ring_point *q, const double x0[],
+                  const double xn[])
+{
+    return (q->st & 1) && !(q->d > at_u(r, q, x0)) && q->d - at_u(r, q, xn) <= PEEL_GRAZE;
+}
+
+/* The driver's peel callback: the points that the step from x to xn freed (in contact at x, free
+ * now) and that were free at the start x0; each frees with it the grazing points beside it, on
+ * either side, that came into contact since x0 (a run entered with it). Returns how many it
+ * freed, and counts them in T->n_peel. */
+static size_t peel_cb(tirenv_ring *r, const double x0[], const double x[], const double xn[])
+{
+    tirenv_ring_point *const pts = r->pts;
+    const size_t n_pts = r->n_pts;
+    size_t freed = 0;
+    for (size_t k = 0; k < n_pts; ++k) {
+        const tirenv_ring_point *q = &pts[k];
+        /* Freed beside a point in contact (else there is no run to free), entered since x0. */
+        if (q->st != 0 ||
+            !((k > 0 && (pts[k - 1].st & 1)) || (k + 1 < n_pts && (pts[k + 1].st & 1))) ||
+            q->d == -INFINITY || !(q->d > at_u(r, q, x)) || q->d > at_u(r, q, x0))
+            continue;
+        for (size_t i = k; i-- > 0 && grazes(r, &pts[i], x0, xn);)
+            pts[i].st = 0, ++freed;
+        for (size_t i = k + 1; i < n_pts && grazes(r, &pts[i], x0, xn); ++i)
+            pts[i].st = 0, ++freed;
+    }
+    r->tread->n_peel += freed;
+    return freed;
+}
+
+/* Whether solve_on's Newton peels, with m knots on n nodes: not with the softening carcass
+ * (whose Newton has no full steps to peel), nor where the tests ask so (no_peel), nor with more
+ * than a knot per 8 nodes. */
+static int peels(const tirenv_ring_tread *T, size_t m, size_t n)
+{
+    return !T->soft && !T->no_peel && 8 * m <= n;
+}
+
 /* Newton on the nodes a .. b with the points pts[k0 .. k1) (a .. b the whole window: every
  * point), from the window's xw there and the knots at zero: its answer, knots included, in
  * T->x, and copied into xw; with want, the factor of its final states in T->win. -1 if out of
@@ -1903,10 +1957,15 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
         memcpy(x, xw, N * sizeof *x);
         for (size_t k = 0; k < m; ++k)
             x[N + k] = 0;
+        /* The peel (ring_newton.c) where the vertex cuts are few, as over obstacles: over a
+         * road, a cut in every node interval or more, its pass over the many points and its
+         * wrong guesses cost more than it saved (the 1 mm road's instructions +0.5 %,
+         * docs/performance.md 2.24). */
         const tirenv_ring_newton nw = {N + m, Q, factor_cb, solve_cb, set_states, apply_cb,
                                        points_energy, T->kp, line_cb,
                                        T->soft ? carcass_newton_tol : 0, &T->n_newton,
-                                       T->soft ? carcass_line : NULL};
+                                       T->soft ? carcass_line : NULL,
+                                       peels(T, m, r->n) ? peel_cb : NULL};
         int factored;
         st = tirenv_ring__newton(r, &nw, x, T->xn, T->xt, T->g, &factored);
         /* The factor of the final states, for dF_z/dz (the last Newton step's, if they did

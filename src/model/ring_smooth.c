@@ -289,7 +289,7 @@ static int newton_window(tirenv_ring *r, size_t lo, size_t n, size_t k0, size_t 
     r->n_pts = k1 - k0;
     const double(*q4)[4] = tirenv_ring__belt_end(r->belt, n);
     const tirenv_ring_newton nw = {n, q4, factor_cb, solve_cb, set_states, apply_cb,
-                                   points_energy, r->rhs, NULL, 0, NULL, NULL};
+                                   points_energy, r->rhs, NULL, 0, NULL, NULL, NULL};
     int factored;
     int st = tirenv_ring__newton(r, &nw, w, r->pn_p, r->pn_t, r->pn_g, &factored);
     /* The factor of the final states, for dF_z/dz (the last Newton step's if they did not

@@ -1313,6 +1313,78 @@ static void test_poisoned_vectors_same_bits(void **state)
     tirenv_model_free(m);
 }
 
+/* The contact Newton's peel (ring_newton.c; docs/performance.md 2.24) changes the steps, never
+ * the answer: a ring that peels and one held without it (tirenv_ring__tread_no_peel), evaluated
+ * at the same heights, give the same bits of F_x, F_z, dF_z/dz, w and u over their window.
+ * Over the bench cleat (0.30 x 0.10 m at 30,152 N) where the tread rides off its top, 1 mm
+ * apart at the model's equilibrium and 2.1e-5 m above it (Newton's second evaluation), and
+ * over a seeded cleat, 5 mm blade and step at heights that move as an equilibrium's; the
+ * peel freed points at some of them (asserted), and the steps are printed. */
+static void test_peel_same_bits(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_ring, &t);
+    assert_non_null(m);
+    tirenv_rng *rng = tirenv_rng_alloc(47);
+    assert_non_null(rng);
+    tirenv_diag diag;
+    size_t compared = 0, steps[2] = {0, 0}, peeled = 0;
+    for (int c = -1; c < 3; ++c) {
+        const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
+        tirenv_profile *p = c < 0 ? tirenv_profile_cleat(0.30, 0.10) : seeded_obstacle(c, u, v);
+        assert_non_null(p);
+        if (c < 0)
+            assert_int_equal(tirenv_model_set(m, p, 30152.19, &diag), TIRENV_OK);
+        tirenv_ring *r[2]; /* peeling; not */
+        for (int k = 0; k < 2; ++k) {
+            r[k] = tirenv_ring_alloc(t.springs.R0, &t.ring);
+            assert_non_null(r[k]);
+            assert_non_null(r[k]->tread);
+            tirenv_ring__tread_no_peel(r[k]->tread, k);
+        }
+        const double z0 = 0.60 + 0.02 * tirenv_rng_uniform(rng), x0 = c < 0 ? 0.05 : -0.35 * v;
+        for (int i = 0; i < (c < 0 ? 90 : 60); ++i) {
+            const double x = x0 + 1.0e-3 * i;
+            double z = z0 + 2e-3 * sin(9.1 * x);
+            if (c < 0) {
+                tirenv_point pt;
+                assert_int_equal(tirenv_model_eval(m, x, &pt, &diag), TIRENV_OK);
+                z = pt.z;
+            }
+            for (int j = 0; j < 2; ++j, z += 2.1e-5) {
+                double f[2][3];
+                for (int k = 0; k < 2; ++k)
+                    if (tirenv_ring_forces(r[k], p, x, z, &f[k][0], &f[k][1], &f[k][2], NULL,
+                                           &diag))
+                        fail_msg("ring %d at x = %g m, z = %.17g m: %s", k, x, z,
+                                 diag.message);
+                if (!tirenv_ring__same_bits(f[0], f[1], 3) || r[0]->lo != r[1]->lo ||
+                    r[0]->n != r[1]->n ||
+                    !tirenv_ring__same_bits(r[0]->w + r[0]->lo, r[1]->w + r[1]->lo, r[0]->n) ||
+                    !tirenv_ring__same_bits(tirenv_ring__tread_u(r[0]->tread) + r[0]->lo,
+                                            tirenv_ring__tread_u(r[1]->tread) + r[1]->lo,
+                                            r[0]->n))
+                    fail_msg("obstacle %d at x = %g m, z = %.17g m: peeling F_x %.17g, F_z "
+                             "%.17g, dF_z/dz %.17g against %.17g, %.17g, %.17g (or w, u)",
+                             c, x, z, f[0][0], f[0][1], f[0][2], f[1][0], f[1][1], f[1][2]);
+                ++compared;
+            }
+        }
+        peeled += tirenv_ring__tread_peeled(r[0]->tread);
+        for (int k = 0; k < 2; ++k) {
+            steps[k] += tirenv_ring__tread_newton_steps(r[k]->tread);
+            tirenv_ring_free(r[k]);
+        }
+        tirenv_profile_free(p);
+    }
+    tirenv_rng_free(rng);
+    tirenv_model_free(m);
+    print_message("peel: %zu evaluations compared, %zu points peeled, Newton steps %zu against "
+                  "%zu without\n", compared, peeled, steps[0], steps[1]);
+    assert_true(peeled > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1338,6 +1410,7 @@ int main(void)
         cmocka_unit_test(test_sub_window_is_whole_window),
         cmocka_unit_test(test_far_warm_start_settles),
         cmocka_unit_test(test_poisoned_vectors_same_bits),
+        cmocka_unit_test(test_peel_same_bits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
