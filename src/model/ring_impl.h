@@ -433,6 +433,14 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, 
  * side from seed: the residual max |b - A x| / (max row sum of |A| * max |x|); -1 if it cannot. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed);
 
+/* For tests: the last factor's solve (ring_shear.c's band_solve, which starts the forward
+ * substitution at the first row that is not +0) of a right-hand side with lead leading +0 rows,
+ * pseudo-random from seed, its tail entry neg0 (< 4; else none) and with lead_neg0 its row lead
+ * -0, against the forward substitution from row 0; 0 if the same bits, 1 if not, -1 if it
+ * cannot. */
+int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, size_t lead,
+                                   size_t neg0, int lead_neg0);
+
 /* For tests: the exterior's six columns for a window of n nodes from ring_shear.c's shared
  * factor of the longest exterior against that exterior's own factorisation and full solves;
  * 0 if the same bits, 1 if not, -1 if it cannot (lugs, n out of range, out of memory). */

@@ -37,6 +37,7 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
@@ -543,11 +544,34 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     }
 }
 
-/* The window's systems have the tail, the exterior's none. */
+/* The first of b's rows 0 .. m whose bits are not +0 (m if none). */
+static size_t leading_zeros(const double b[], size_t m)
+{
+    size_t i = 0;
+    for (; i < m; ++i) {
+        uint64_t u;
+        memcpy(&u, &b[i], sizeof u);
+        if (u != 0)
+            break;
+    }
+    return i;
+}
+
+/* The window's systems have the tail, the exterior's none. A Newton step's right-hand side
+ * (assemble) is zero up to the first node a point in contact loads: rows of +0 before it are
+ * their own z (+0 less products with +0, each +0 or -0, stays +0; the factor's entries are
+ * finite), and take nothing off the tail's right-hand side unless one of its entries is -0
+ * (-0 - -0 is +0), so the forward substitution starts at the first row that is not +0, as
+ * ext_solve's does at its unit vector's one. */
 static void band_solve(const tband *A, double x[])
 {
-    if (A->t == TAIL)
-        band_solve_t(A, x, TAIL, 0, 0);
+    if (A->t == TAIL) {
+        const size_t m = A->N - TAIL;
+        int neg0 = 0;
+        for (size_t a = 0; a < TAIL; ++a)
+            neg0 |= x[m + a] == 0 && signbit(x[m + a]);
+        band_solve_t(A, x, TAIL, neg0 ? 0 : leading_zeros(x, m), 0);
+    }
     else if (A->t == 0)
         band_solve_t(A, x, 0, 0, 0);
     else
@@ -2609,6 +2633,43 @@ double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long see
     }
     free(b);
     return res / (na * nx);
+}
+
+/* For tests: the window's factor (T->win) applied by band_solve to a right-hand side whose
+ * first lead rows are +0 and the others pseudo-random in [-1, 1) from seed (tirenv_rng), with
+ * tail entry neg0 (0 .. TAIL - 1; TAIL: none) -0 and with lead_neg0 a -0 at row lead (lead
+ * at most the band's rows m, larger taken as m: then the whole band +0), against the forward
+ * substitution from row 0: 0 if the same bits, 1 if not, -1 if it cannot (no factor held, out
+ * of memory). */
+int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, size_t lead,
+                                   size_t neg0, int lead_neg0)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const tband *F = &T->win;
+    const size_t N = F->N;
+    if (!T->ap_ok || F->t != TAIL || N <= TAIL)
+        return -1;
+    lead = lead < N - TAIL ? lead : N - TAIL;
+    double *x = malloc(2 * N * sizeof *x);
+    tirenv_rng *rng = tirenv_rng_alloc(seed);
+    if (!x || !rng) {
+        free(x);
+        tirenv_rng_free(rng);
+        return -1;
+    }
+    double *y = x + N;
+    for (size_t i = 0; i < N; ++i)
+        x[i] = y[i] = i < lead ? 0 : 2 * tirenv_rng_uniform(rng) - 1;
+    tirenv_rng_free(rng);
+    if (lead_neg0)
+        x[lead] = y[lead] = -0.0;
+    if (neg0 < TAIL)
+        x[N - TAIL + neg0] = y[N - TAIL + neg0] = -0.0;
+    band_solve(F, x);
+    band_solve_t(F, y, TAIL, 0, 0);
+    const int same = tirenv_ring__same_bits(x, y, N);
+    free(x);
+    return same ? 0 : 1;
 }
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end

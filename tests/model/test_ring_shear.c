@@ -927,6 +927,40 @@ static void test_solve_residual(void **state)
     tirenv_ring_free(r);
 }
 
+/* The window's solve from the first row of its right-hand side that is not +0 (ring_shear.c's
+ * band_solve) against the forward substitution from row 0, bit for bit: after evaluations over
+ * the bench cleat, right-hand sides with 0, 1, 3, 4, 5, 9, 37, 100 and all of the band's rows
+ * +0 first (the skipped rows before the four-row loop, at its start and past it), each with a
+ * -0 in one of the tail's entries or none, and a -0 as the first row kept or not. It fails if
+ * the substitution starts one row past the first that is not +0 (checked when written). */
+static void test_solve_leading_zeros(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    size_t n = 0;
+    for (size_t i = 0; i < 5; ++i) {
+        evaluate_at(r, p, t.springs.R0, i, (3 * i) % 5);
+        const size_t lead[] = {0, 1, 3, 4, 5, 9, 37, 100, (size_t)-1};
+        for (size_t l = 0; l < sizeof lead / sizeof lead[0]; ++l)
+            for (size_t neg0 = 0; neg0 <= 4; ++neg0)
+                for (int ln = 0; ln < 2; ++ln) {
+                    const int st =
+                        tirenv_ring__tread_solve_zeros(r, 31 * i + 7 * l + neg0, lead[l], neg0, ln);
+                    if (st < 0)
+                        continue;
+                    assert_int_equal(st, 0);
+                    ++n;
+                }
+    }
+    print_message("leading-zero solves compared: %zu\n", n);
+    assert_true(n >= 450);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+}
+
 /* The ring's answers against main's build before the banded factor became U D U^T (commit
  * 9f1bb9d, its h as OpenCRG doubles, printed with %a), which moved them by round-off only
  * (docs/performance.md 2.15): h within 1e-9 m over a 0.173 x 0.061 m cleat at
@@ -1332,6 +1366,7 @@ int main(void)
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
         cmocka_unit_test(test_solve_residual),
+        cmocka_unit_test(test_solve_leading_zeros),
         cmocka_unit_test(test_answers_as_main),
         cmocka_unit_test(test_deferred_slope),
         cmocka_unit_test(test_exterior_shared_factor),
