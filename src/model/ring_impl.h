@@ -421,7 +421,8 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
 
 /* The last window's belt-and-tread stiffness, dense ((2 n)^2 entries, lower triangle), as
  * ring_shear.c's assembly writes it (by_arc 0) or as its exterior's arc does (by_arc 1), for
- * the test that they agree (allocates); nonzero if out of memory or n < 2. */
+ * the test that they agree (allocates); nonzero if out of memory, n < 2 or the assembly's
+ * right-hand side was not zeroed with the band. */
 int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
 
 /* For tests: the last factorisation's system (m band rows), its diagonal changed from column c

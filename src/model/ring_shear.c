@@ -810,8 +810,10 @@ static inline void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size
 
 /* The window's arc of n nodes from lo as add_arc gives it on a zeroed matrix, the band rows'
  * entries written rather than added (the same values: each is one term), so that only the
- * tail's rows need zeroing first. */
-static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n)
+ * tail's rows need zeroing first; and the right-hand side's 2 n entries zeroed with them
+ * (rhs), where a separate pass over it cost as much again. */
+static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n,
+                               double rhs[])
 {
     const size_t N = 2 * n, m = N - TAIL;
     const double *s = T->s, k_sh = T->k_sh;
@@ -835,9 +837,11 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
         double *lw = L + (BAND_P + 1) * 2 * e, *lu = lw + (BAND_P + 1);
         lw[0] = s[0] + kap, lw[1] = -kap, lw[2] = s[1], lw[3] = 0, lw[4] = s[2];
         lu[0] = kap + 2 * k_sh, lu[1] = 0, lu[2] = -k_sh, lu[3] = 0, lu[4] = 0;
+        rhs[2 * e] = 0, rhs[2 * e + 1] = 0;
     }
     for (; e < n; ++e) {
         const double kap = T->kap[lo + e];
+        rhs[2 * e] = 0, rhs[2 * e + 1] = 0;
         const size_t iw = 2 * e, iu = iw + 1;
         /* Rows w_e, u_e: A[i + k][i] for k = 0 .. BAND_P, those of a tail row in B. */
         const double cw[BAND_P + 1] = {s[0] + kap, -kap, e + 1 < n ? s[1] : 0, 0,
@@ -936,17 +940,16 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
         /* Unit vectors: their leading zeros are their own y (ext_solve), and the first
          * three's whole y the longest exterior's (exterior_factor). */
         const int kept = T->ext_all && eidx[a] < 3;
+        double *const col = cols ? cols + a * Ne : T->col; /* solved where it is kept */
         if (kept) {
-            memcpy(T->col, T->ey + eidx[a] * 2 * M, Ne * sizeof *T->col);
+            memcpy(col, T->ey + eidx[a] * 2 * M, Ne * sizeof *col);
         } else {
-            memset(T->col, 0, Ne * sizeof *T->col);
-            T->col[eidx[a]] = 1;
+            memset(col, 0, Ne * sizeof *col);
+            col[eidx[a]] = 1;
         }
-        ext_solve(E, T->col, kept ? Ne : eidx[a]);
+        ext_solve(E, col, kept ? Ne : eidx[a]);
         for (size_t c = 0; c < NB; ++c)
-            G[c][a] = T->col[eidx[c]];
-        if (cols)
-            memcpy(cols + a * Ne, T->col, Ne * sizeof *cols);
+            G[c][a] = col[eidx[c]];
     }
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u) {
@@ -1192,15 +1195,15 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     const size_t n = r->n, lo = r->lo, N = 2 * n;
     const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->as;
-    fill_window(A, T, lo, n);
+    fill_window(A, T, lo, n, rhs);
     const size_t m = A->N - A->t; /* the band's rows */
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = v; u < NB; ++u)
             band_add(A, b[v], b[u], -Q[v][u]);
-    memset(rhs, 0, (N + T->m) * sizeof *rhs);
     for (size_t k = 0; k < T->m; ++k) {
+        rhs[N + k] = 0;
         T->dd[k] = T->kd[k];
         T->c0[k] = T->c1[k] = 0;
     }
@@ -2484,8 +2487,9 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
 /* The window's stiffness of the last evaluation (nodes r->lo .. r->lo + r->n - 1), dense, as
  * assemble starts it (fill_window, by_arc 0) or as add_arc writes it on a zeroed matrix (by_arc
  * 1): the two ways this file writes an arc, which must agree bit for bit. K[i N + k] = K_ik for
- * k <= i, zero above the diagonal (N = 2 n). For tests (it allocates); nonzero if out of memory
- * or the window is too short for the tail (n < 2). */
+ * k <= i, zero above the diagonal (N = 2 n). For tests (it allocates); nonzero if out of memory,
+ * the window is too short for the tail (n < 2) or fill_window left an entry of its right-hand
+ * side (NaN before) other than zero. */
 int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
 {
     const tirenv_ring_tread *T = r->tread;
@@ -2505,10 +2509,25 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         for (size_t a = 0; a < TAIL; ++a)
             for (size_t b = 0; b < TAIL; ++b)
                 A.T[a][b] = NAN;
-        fill_window(&A, T, r->lo, n);
+        double *rhs = malloc(N * sizeof *rhs); /* NaN, which fill_window must zero */
+        if (!rhs) {
+            free(A.L);
+            return 1;
+        }
+        for (size_t i = 0; i < N; ++i)
+            rhs[i] = NAN;
+        fill_window(&A, T, r->lo, n, rhs);
         if (m >= FRESH_FROM + BAND_P)
             memset(A.B + TAIL * FRESH_FROM, 0,
                    TAIL * (m - BAND_P - FRESH_FROM) * sizeof *A.B);
+        int zeroed = 1;
+        for (size_t i = 0; i < N; ++i)
+            zeroed &= rhs[i] == 0;
+        free(rhs);
+        if (!zeroed) {
+            free(A.L);
+            return 1;
+        }
     }
     for (size_t i = 0; i < N; ++i)
         for (size_t k = 0; k < N; ++k)
