@@ -213,6 +213,14 @@ struct tirenv_ring {
     size_t pc_ja, pc_jb, pc_nv, cap_pc;
     size_t *pc_vk, *pc_vj;
     size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
+    /* The last sampling's pieces (r->lines) with their rays backward, pc_back, and whether they
+     * are its first ones (pc_ordered); both known if pc_back_ok. For tests: back_check also
+     * counts them by the whole pass where they are carried (ring_ground.c, back_carried),
+     * n_back_carried the samplings that carried them and n_back_bad those where the two
+     * disagreed. */
+    size_t pc_back;
+    int pc_ordered, pc_back_ok, back_check;
+    size_t n_back_carried, n_back_bad;
     int apart;             /* for tests: a node's two points on one ray kept apart, not joined
                             * (ring_ground.c), as the sampling did before */
     /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last

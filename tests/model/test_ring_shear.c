@@ -646,13 +646,14 @@ static void test_new_x_points_seeded(void **state)
     const tirenv_tire t = tirenv_tire_default();
     tirenv_rng *rng = tirenv_rng_alloc(43);
     assert_non_null(rng);
-    size_t shifted_new = 0, positions = 0, compared = 0;
+    size_t shifted_new = 0, positions = 0, compared = 0, carried = 0;
     for (int c = 0; c < 3; ++c) {
         const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
         tirenv_profile *p = seeded_obstacle(c, u, v);
         assert_non_null(p);
         tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
         assert_non_null(r);
+        r->back_check = 1;
         const double z0 = 0.60 + 0.02 * tirenv_rng_uniform(rng), x0 = -0.35 * v;
         for (int i = 0; i < 60; ++i) {
             const double x = x0 + 1.0e-3 * i;
@@ -670,13 +671,17 @@ static void test_new_x_points_seeded(void **state)
                 ++compared;
             }
         }
+        assert_int_equal(r->n_back_bad, 0);
+        carried += r->n_back_carried;
         tirenv_ring_free(r);
         tirenv_profile_free(p);
     }
     tirenv_rng_free(rng);
     print_message("new x, seeded: %zu evaluations compared, %zu of %zu positions' samplings "
-                  "moved\n", compared, shifted_new, positions);
+                  "moved, %zu backward counts carried\n", compared, shifted_new, positions,
+                  carried);
     assert_true(5 * shifted_new > positions);
+    assert_true(carried > positions);
 }
 
 /* tirenv_ring__tread_exterior, the belt outside the window (tirenv_ring_state's w there),
