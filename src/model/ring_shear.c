@@ -810,8 +810,8 @@ static inline void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size
 
 /* The window's arc of n nodes from lo as add_arc gives it on a zeroed matrix, the band rows'
  * entries written rather than added (the same values: each is one term), so that only the
- * tail's rows need zeroing first; and the right-hand side's 2 n entries zeroed with them
- * (rhs), where a separate pass over it cost as much again. */
+ * tail's rows need zeroing first; and the right-hand side's 2 n entries (rhs) zeroed with
+ * them, in the pass over the nodes that writes their rows, not in a memset of their own. */
 static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n,
                                double rhs[])
 {
