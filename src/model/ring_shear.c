@@ -571,11 +571,11 @@ static void band_solve(const tband *A, double x[])
         for (size_t a = 0; a < TAIL; ++a)
             neg0 |= x[m + a] == 0 && signbit(x[m + a]);
         band_solve_t(A, x, TAIL, neg0 ? 0 : leading_zeros(x, m), 0);
-    }
-    else if (A->t == 0)
+    } else if (A->t == 0) {
         band_solve_t(A, x, 0, 0, 0);
-    else
+    } else {
         band_solve_t(A, x, A->t, 0, 0);
+    }
 }
 
 /* The exterior's solve (no tail), its forward substitution from row i0 (x's rows before it

@@ -639,7 +639,10 @@ static void test_same_x_points_seeded(void **state)
  * step, one evaluation a position at a height that moves as an equilibrium's does (the last
  * sampling's points moved where the walks start from the same vertices: shift_whole), and one
  * more 2.1e-5 m above it; each one's points, window and forces against a fresh ring's, bit for
- * bit. Samplings at a new x were moved at a fifth of the positions at least. */
+ * bit. Samplings at a new x were moved at a fifth of the positions at least. With back_check,
+ * every kept sampling whose count of backward pieces was carried from the last one's
+ * (ring_ground.c, back_carried) counts them by the whole pass too: the two agree every time,
+ * and more samplings carried them than there are positions. */
 static void test_new_x_points_seeded(void **state)
 {
     (void)state;
