@@ -311,6 +311,64 @@ static int same_pieces(const tirenv_ring *r, size_t ja, size_t jb, const cut v[]
     return 1;
 }
 
+/* The count of the pieces c[0 .. n) whose middle rays go backward (sa + sb < 0), into *n_back,
+ * and whether they are the first ones (*ordered): the whole pass. */
+static void count_back(const tirenv_ring_piece c[], size_t n, size_t *n_back, int *ordered)
+{
+    size_t nb = 0;
+    int ord = 1;
+    for (size_t t = 0; t < n; ++t)
+        if (c[t].sa + c[t].sb < 0) {
+            ord &= nb == t;
+            ++nb;
+        }
+    *n_back = nb;
+    *ordered = ord;
+}
+
+/* count_back's answer for the last sampling's pieces c, kept (same_pieces) with only their
+ * vertex ends moved, without the pass over all of them: a piece between two nodes keeps its
+ * sa + sb bits, so where the last sampling's were ordered (its first pc_back pieces backward,
+ * no other), such a piece is backward if and only if it lies before pc_back; only the pieces a
+ * vertex cut ends or begins, t_i = (j_i - ja) + i and t_i + 1 (sorted, two vertices in one
+ * interval sharing one), are looked at again. The count moves by their changes; the pieces are
+ * ordered if each of them is backward exactly when it lies before the new count and no node's
+ * piece lies between the old count and the new. Returns 0 where the last sampling's counts are
+ * unknown or were not ordered (the caller then makes the whole pass). */
+static int back_carried(const tirenv_ring *r, const tirenv_ring_piece c[], size_t ja, size_t nv,
+                        size_t *n_back, int *ordered)
+{
+    if (!r->pc_back_ok || !r->pc_ordered)
+        return 0;
+    const size_t nb0 = r->pc_back;
+    size_t nb = nb0, last = (size_t)-1;
+    for (size_t i = 0; i < nv; ++i)
+        for (size_t h = 0; h < 2; ++h) {
+            const size_t t = (r->pc_vj[i] - ja) + i + h;
+            if (t == last)
+                continue;
+            last = t;
+            nb += c[t].sa + c[t].sb < 0;
+            nb -= t < nb0;
+        }
+    const size_t lo = nb < nb0 ? nb : nb0, hi = nb < nb0 ? nb0 : nb;
+    size_t in_range = 0; /* vertex pieces in lo .. hi - 1 */
+    int ord = 1;
+    last = (size_t)-1;
+    for (size_t i = 0; i < nv; ++i)
+        for (size_t h = 0; h < 2; ++h) {
+            const size_t t = (r->pc_vj[i] - ja) + i + h;
+            if (t == last)
+                continue;
+            last = t;
+            ord &= (c[t].sa + c[t].sb < 0) == (t < nb);
+            in_range += t >= lo && t < hi;
+        }
+    *n_back = nb;
+    *ordered = ord && in_range == hi - lo;
+    return 1;
+}
+
 /* The window's far stretches (docs/models.md 5.3, What the solve reuses). Of the window's node
  * intervals, those more than SKIP_NEAR nodes beyond the last solve's sub-window and SKIP_EDGE
  * inside the sampled range's ends, whose ground lies, by a bound, below the last evaluation's
@@ -742,11 +800,20 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         }
         n_lines = n_pieces;
         ++r->n_kept;
-        for (size_t t = 0; t < n_lines; ++t)
-            if (c[t].sa + c[t].sb < 0) {
-                ordered &= n_back == t;
-                ++n_back;
+        /* (Carried only where the cuts are few: on a road, whose window holds a cut every node
+         * or more, their pieces are most of the pieces, and looking at them twice costs more
+         * than the pass.) */
+        if (nv * SKIP_CUTS <= jb - ja && back_carried(r, c, ja, nv, &n_back, &ordered)) {
+            ++r->n_back_carried;
+            if (r->back_check) {
+                size_t nb;
+                int ord;
+                count_back(c, n_lines, &nb, &ord);
+                r->n_back_bad += nb != n_back || ord != ordered;
             }
+        } else {
+            count_back(c, n_lines, &n_back, &ordered);
+        }
     }
     /* Else built afresh, and kept for the next (pieces: their vertices and intervals). */
     const int keep =
@@ -803,6 +870,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
         r->pc_valid = keep && n_lines == n_pieces;
         r->pc_ja = ja, r->pc_jb = jb, r->pc_nv = nv;
     }
+    r->pc_back = n_back, r->pc_ordered = ordered, r->pc_back_ok = 1;
     /* The far intervals (see far_intervals) are left out: no ray, no point. */
     const size_t n_far = inside || lugs ? 0 : far_intervals(r, p, x, z, ja, jb, nv, reach);
     if (was && !fresh && !inside && ordered && nv * SKIP_CUTS <= jb - ja && same_gaps(r) &&

@@ -213,6 +213,14 @@ struct tirenv_ring {
     size_t pc_ja, pc_jb, pc_nv, cap_pc;
     size_t *pc_vk, *pc_vj;
     size_t n_kept;         /* samplings that kept the last one's pieces (the tests count them) */
+    /* The last sampling's pieces (r->lines) with their rays backward, pc_back, and whether they
+     * are its first ones (pc_ordered); both known if pc_back_ok. For tests: back_check also
+     * counts them by the whole pass where they are carried (ring_ground.c, back_carried),
+     * n_back_carried the samplings that carried them and n_back_bad those where the two
+     * disagreed. */
+    size_t pc_back;
+    int pc_ordered, pc_back_ok, back_check;
+    size_t n_back_carried, n_back_bad;
     int apart;             /* for tests: a node's two points on one ray kept apart, not joined
                             * (ring_ground.c), as the sampling did before */
     /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last
@@ -430,7 +438,8 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
 
 /* The last window's belt-and-tread stiffness, dense ((2 n)^2 entries, lower triangle), as
  * ring_shear.c's assembly writes it (by_arc 0) or as its exterior's arc does (by_arc 1), for
- * the test that they agree (allocates); nonzero if out of memory or n < 2. */
+ * the test that they agree (allocates); nonzero if out of memory, n < 2 or the assembly's
+ * right-hand side was not zeroed with the band. */
 int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
 
 /* For tests: the last factorisation's system (m band rows), its diagonal changed from column c
@@ -441,6 +450,14 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, 
 /* For tests: the last factorised system solved with its factor for a pseudo-random right-hand
  * side from seed: the residual max |b - A x| / (max row sum of |A| * max |x|); -1 if it cannot. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed);
+
+/* For tests: the last factor's solve (ring_shear.c's band_solve, which starts the forward
+ * substitution at the first row that is not +0) of a right-hand side with lead leading +0 rows,
+ * pseudo-random from seed, its tail entry neg0 (< 4; else none) and with lead_neg0 its row lead
+ * -0, against the forward substitution from row 0; 0 if the same bits, 1 if not, -1 if it
+ * cannot. */
+int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, size_t lead,
+                                   size_t neg0, int lead_neg0);
 
 /* For tests: the exterior's six columns for a window of n nodes from ring_shear.c's shared
  * factor of the longest exterior against that exterior's own factorisation and full solves;

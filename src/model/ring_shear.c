@@ -37,6 +37,7 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
@@ -545,15 +546,38 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
     }
 }
 
-/* The window's systems have the tail, the exterior's none. */
+/* The first of b's rows 0 .. m whose bits are not +0 (m if none). */
+static size_t leading_zeros(const double b[], size_t m)
+{
+    size_t i = 0;
+    for (; i < m; ++i) {
+        uint64_t u;
+        memcpy(&u, &b[i], sizeof u);
+        if (u != 0)
+            break;
+    }
+    return i;
+}
+
+/* The window's systems have the tail, the exterior's none. A Newton step's right-hand side
+ * (assemble) is zero up to the first node a point in contact loads: rows of +0 before it are
+ * their own z (+0 less products with +0, each +0 or -0, stays +0; the factor's entries are
+ * finite), and take nothing off the tail's right-hand side unless one of its entries is -0
+ * (-0 - -0 is +0), so the forward substitution starts at the first row that is not +0, as
+ * ext_solve's does at its unit vector's one. */
 static void band_solve(const tband *A, double x[])
 {
-    if (A->t == TAIL)
-        band_solve_t(A, x, TAIL, 0, 0);
-    else if (A->t == 0)
+    if (A->t == TAIL) {
+        const size_t m = A->N - TAIL;
+        int neg0 = 0;
+        for (size_t a = 0; a < TAIL; ++a)
+            neg0 |= x[m + a] == 0 && signbit(x[m + a]);
+        band_solve_t(A, x, TAIL, neg0 ? 0 : leading_zeros(x, m), 0);
+    } else if (A->t == 0) {
         band_solve_t(A, x, 0, 0, 0);
-    else
+    } else {
         band_solve_t(A, x, A->t, 0, 0);
+    }
 }
 
 /* The exterior's solve (no tail), its forward substitution from row i0 (x's rows before it
@@ -792,8 +816,10 @@ static inline void add_arc(tband *A, const tirenv_ring_tread *T, size_t j0, size
 
 /* The window's arc of n nodes from lo as add_arc gives it on a zeroed matrix, the band rows'
  * entries written rather than added (the same values: each is one term), so that only the
- * tail's rows need zeroing first. */
-static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n)
+ * tail's rows need zeroing first; and the right-hand side's 2 n entries (rhs) zeroed with
+ * them, in the pass over the nodes that writes their rows, not in a memset of their own. */
+static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n,
+                               double rhs[])
 {
     const size_t N = 2 * n, m = N - TAIL;
     const double *s = T->s, k_sh = T->k_sh;
@@ -817,9 +843,11 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
         double *lw = L + (BAND_P + 1) * 2 * e, *lu = lw + (BAND_P + 1);
         lw[0] = s[0] + kap, lw[1] = -kap, lw[2] = s[1], lw[3] = 0, lw[4] = s[2];
         lu[0] = kap + 2 * k_sh, lu[1] = 0, lu[2] = -k_sh, lu[3] = 0, lu[4] = 0;
+        rhs[2 * e] = 0, rhs[2 * e + 1] = 0;
     }
     for (; e < n; ++e) {
         const double kap = T->kap[lo + e];
+        rhs[2 * e] = 0, rhs[2 * e + 1] = 0;
         const size_t iw = 2 * e, iu = iw + 1;
         /* Rows w_e, u_e: A[i + k][i] for k = 0 .. BAND_P, those of a tail row in B. */
         const double cw[BAND_P + 1] = {s[0] + kap, -kap, e + 1 < n ? s[1] : 0, 0,
@@ -918,17 +946,16 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
         /* Unit vectors: their leading zeros are their own y (ext_solve), and the first
          * three's whole y the longest exterior's (exterior_factor). */
         const int kept = T->ext_all && eidx[a] < 3;
+        double *const col = cols ? cols + a * Ne : T->col; /* solved where it is kept */
         if (kept) {
-            memcpy(T->col, T->ey + eidx[a] * 2 * M, Ne * sizeof *T->col);
+            memcpy(col, T->ey + eidx[a] * 2 * M, Ne * sizeof *col);
         } else {
-            memset(T->col, 0, Ne * sizeof *T->col);
-            T->col[eidx[a]] = 1;
+            memset(col, 0, Ne * sizeof *col);
+            col[eidx[a]] = 1;
         }
-        ext_solve(E, T->col, kept ? Ne : eidx[a]);
+        ext_solve(E, col, kept ? Ne : eidx[a]);
         for (size_t c = 0; c < NB; ++c)
-            G[c][a] = T->col[eidx[c]];
-        if (cols)
-            memcpy(cols + a * Ne, T->col, Ne * sizeof *cols);
+            G[c][a] = col[eidx[c]];
     }
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u) {
@@ -1174,15 +1201,15 @@ static void assemble(tirenv_ring *r, const double (*Q)[NB], double rhs[])
     const size_t n = r->n, lo = r->lo, N = 2 * n;
     const double t_r = r->par.t_r, R = r->R;
     tband *A = &T->as;
-    fill_window(A, T, lo, n);
+    fill_window(A, T, lo, n, rhs);
     const size_t m = A->N - A->t; /* the band's rows */
     size_t b[NB];
     end_index(n, b);
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = v; u < NB; ++u)
             band_add(A, b[v], b[u], -Q[v][u]);
-    memset(rhs, 0, (N + T->m) * sizeof *rhs);
     for (size_t k = 0; k < T->m; ++k) {
+        rhs[N + k] = 0;
         T->dd[k] = T->kd[k];
         T->c0[k] = T->c1[k] = 0;
     }
@@ -2519,8 +2546,9 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
 /* The window's stiffness of the last evaluation (nodes r->lo .. r->lo + r->n - 1), dense, as
  * assemble starts it (fill_window, by_arc 0) or as add_arc writes it on a zeroed matrix (by_arc
  * 1): the two ways this file writes an arc, which must agree bit for bit. K[i N + k] = K_ik for
- * k <= i, zero above the diagonal (N = 2 n). For tests (it allocates); nonzero if out of memory
- * or the window is too short for the tail (n < 2). */
+ * k <= i, zero above the diagonal (N = 2 n). For tests (it allocates); nonzero if out of memory,
+ * the window is too short for the tail (n < 2) or fill_window left an entry of its right-hand
+ * side (NaN before) other than zero. */
 int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
 {
     const tirenv_ring_tread *T = r->tread;
@@ -2540,10 +2568,25 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         for (size_t a = 0; a < TAIL; ++a)
             for (size_t b = 0; b < TAIL; ++b)
                 A.T[a][b] = NAN;
-        fill_window(&A, T, r->lo, n);
+        double *rhs = malloc(N * sizeof *rhs); /* NaN, which fill_window must zero */
+        if (!rhs) {
+            free(A.L);
+            return 1;
+        }
+        for (size_t i = 0; i < N; ++i)
+            rhs[i] = NAN;
+        fill_window(&A, T, r->lo, n, rhs);
         if (m >= FRESH_FROM + BAND_P)
             memset(A.B + TAIL * FRESH_FROM, 0,
                    TAIL * (m - BAND_P - FRESH_FROM) * sizeof *A.B);
+        int zeroed = 1;
+        for (size_t i = 0; i < N; ++i)
+            zeroed &= rhs[i] == 0;
+        free(rhs);
+        if (!zeroed) {
+            free(A.L);
+            return 1;
+        }
     }
     for (size_t i = 0; i < N; ++i)
         for (size_t k = 0; k < N; ++k)
@@ -2668,6 +2711,43 @@ double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long see
     }
     free(b);
     return res / (na * nx);
+}
+
+/* For tests: the window's factor (T->win) applied by band_solve to a right-hand side whose
+ * first lead rows are +0 and the others pseudo-random in [-1, 1) from seed (tirenv_rng), with
+ * tail entry neg0 (0 .. TAIL - 1; TAIL: none) -0 and with lead_neg0 a -0 at row lead (lead
+ * at most the band's rows m, larger taken as m: then the whole band +0), against the forward
+ * substitution from row 0: 0 if the same bits, 1 if not, -1 if it cannot (no factor held, out
+ * of memory). */
+int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, size_t lead,
+                                   size_t neg0, int lead_neg0)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const tband *F = &T->win;
+    const size_t N = F->N;
+    if (!T->ap_ok || F->t != TAIL || N <= TAIL)
+        return -1;
+    lead = lead < N - TAIL ? lead : N - TAIL;
+    double *x = malloc(2 * N * sizeof *x);
+    tirenv_rng *rng = tirenv_rng_alloc(seed);
+    if (!x || !rng) {
+        free(x);
+        tirenv_rng_free(rng);
+        return -1;
+    }
+    double *y = x + N;
+    for (size_t i = 0; i < N; ++i)
+        x[i] = y[i] = i < lead ? 0 : 2 * tirenv_rng_uniform(rng) - 1;
+    tirenv_rng_free(rng);
+    if (lead_neg0)
+        x[lead] = y[lead] = -0.0;
+    if (neg0 < TAIL)
+        x[N - TAIL + neg0] = y[N - TAIL + neg0] = -0.0;
+    band_solve(F, x);
+    band_solve_t(F, y, TAIL, 0, 0);
+    const int same = tirenv_ring__same_bits(x, y, N);
+    free(x);
+    return same ? 0 : 1;
 }
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end

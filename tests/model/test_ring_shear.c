@@ -639,20 +639,24 @@ static void test_same_x_points_seeded(void **state)
  * step, one evaluation a position at a height that moves as an equilibrium's does (the last
  * sampling's points moved where the walks start from the same vertices: shift_whole), and one
  * more 2.1e-5 m above it; each one's points, window and forces against a fresh ring's, bit for
- * bit. Samplings at a new x were moved at a fifth of the positions at least. */
+ * bit. Samplings at a new x were moved at a fifth of the positions at least. With back_check,
+ * every kept sampling whose count of backward pieces was carried from the last one's
+ * (ring_ground.c, back_carried) counts them by the whole pass too: the two agree every time,
+ * and more samplings carried them than there are positions. */
 static void test_new_x_points_seeded(void **state)
 {
     (void)state;
     const tirenv_tire t = tirenv_tire_default();
     tirenv_rng *rng = tirenv_rng_alloc(43);
     assert_non_null(rng);
-    size_t shifted_new = 0, positions = 0, compared = 0;
+    size_t shifted_new = 0, positions = 0, compared = 0, carried = 0;
     for (int c = 0; c < 3; ++c) {
         const double u = tirenv_rng_uniform(rng), v = tirenv_rng_uniform(rng);
         tirenv_profile *p = seeded_obstacle(c, u, v);
         assert_non_null(p);
         tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
         assert_non_null(r);
+        r->back_check = 1;
         const double z0 = 0.60 + 0.02 * tirenv_rng_uniform(rng), x0 = -0.35 * v;
         for (int i = 0; i < 60; ++i) {
             const double x = x0 + 1.0e-3 * i;
@@ -670,13 +674,17 @@ static void test_new_x_points_seeded(void **state)
                 ++compared;
             }
         }
+        assert_int_equal(r->n_back_bad, 0);
+        carried += r->n_back_carried;
         tirenv_ring_free(r);
         tirenv_profile_free(p);
     }
     tirenv_rng_free(rng);
     print_message("new x, seeded: %zu evaluations compared, %zu of %zu positions' samplings "
-                  "moved\n", compared, shifted_new, positions);
+                  "moved, %zu backward counts carried\n", compared, shifted_new, positions,
+                  carried);
     assert_true(5 * shifted_new > positions);
+    assert_true(carried > positions);
 }
 
 /* tirenv_ring__tread_exterior, the belt outside the window (tirenv_ring_state's w there),
@@ -923,6 +931,40 @@ static void test_solve_residual(void **state)
     print_message("window solves: %zu, worst relative residual %.3g\n", n, worst);
     assert_true(n >= 45);
     assert_true(worst <= 1e-14);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+}
+
+/* The window's solve from the first row of its right-hand side that is not +0 (ring_shear.c's
+ * band_solve) against the forward substitution from row 0, bit for bit: after evaluations over
+ * the bench cleat, right-hand sides with 0, 1, 3, 4, 5, 9, 37, 100 and all of the band's rows
+ * +0 first (the skipped rows before the four-row loop, at its start and past it), each with a
+ * -0 in one of the tail's entries or none, and a -0 as the first row kept or not. It fails if
+ * the substitution starts one row past the first that is not +0 (checked when written). */
+static void test_solve_leading_zeros(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    size_t n = 0;
+    for (size_t i = 0; i < 5; ++i) {
+        evaluate_at(r, p, t.springs.R0, i, (3 * i) % 5);
+        const size_t lead[] = {0, 1, 3, 4, 5, 9, 37, 100, (size_t)-1};
+        for (size_t l = 0; l < sizeof lead / sizeof lead[0]; ++l)
+            for (size_t neg0 = 0; neg0 <= 4; ++neg0)
+                for (int ln = 0; ln < 2; ++ln) {
+                    const int st =
+                        tirenv_ring__tread_solve_zeros(r, 31 * i + 7 * l + neg0, lead[l], neg0, ln);
+                    if (st < 0)
+                        continue;
+                    assert_int_equal(st, 0);
+                    ++n;
+                }
+    }
+    print_message("leading-zero solves compared: %zu\n", n);
+    assert_true(n >= 450);
     tirenv_profile_free(p);
     tirenv_ring_free(r);
 }
@@ -1404,6 +1446,7 @@ int main(void)
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
         cmocka_unit_test(test_solve_residual),
+        cmocka_unit_test(test_solve_leading_zeros),
         cmocka_unit_test(test_answers_as_main),
         cmocka_unit_test(test_deferred_slope),
         cmocka_unit_test(test_exterior_shared_factor),
