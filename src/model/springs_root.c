@@ -191,7 +191,7 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
 
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
  * dF_0 (N) into *dF; 0 if a row leaves its sector's inside. One row is the commonest case
- * (over the bench cleat 1,276 roots of 1,404, some 4 calls a root): its loops compiled
+ * (over the bench cleat 1,276 roots of 1,404, some 3 calls a root): its loops compiled
  * unrolled, the same operations in the same order, so the same bits. */
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
                      double dz, double lam[], double B[], double g_out[], double *dF)
@@ -332,9 +332,10 @@ static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x
  * the rest by that one (R' moves by O(step) R'' there, so they converge at once), to
  * 1e-15 R0 in z: *zb with the reactions lam and the slots' B there; 0 if it does not settle
  * or a row leaves its sector. The held rows are linear in z and a vertex row bends by about
- * dz^2 / |V - C|, so from the exact slope the first iterate is within some 1e-8 m of the
- * root and the second at round-off: three calls a root where the secant from the last
- * position's slope took some 4.3 (docs/performance.md). */
+ * dz^2 / |V - C|, so from the exact slope the first iterate's error is quadratic in the
+ * step and the second's at round-off: some 3.2 calls a root over the bench
+ * cleat where the secant from the last position's slope took 4.3 (docs/models.md
+ * section 4.8). */
 static int newton(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z_a,
                   double F_a, double dF_a, double G, double R_a, double slope, double lam[],
                   double B[], double g[], double *z_out, size_t *q_neg)
