@@ -67,12 +67,10 @@ static inline int row_inside(const tirenv_springs__cc_tire *T, size_t i, double 
  * a +0 and a -0 summing to +0), and v - (+0) Y and lam g - (+0) are v and lam g to the bit. */
 static inline __attribute__((always_inline)) int
 rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z, double dz,
-        double lam[], double B[], double g_out[], double *dF, const size_t k, const int no_l,
-        double *ddF)
+        double lam[], double B[], double g_out[], double *dF, const size_t k, const int no_l)
 {
     const size_t ns = 2 * k;
     double g[S_MAX], cmp[K_MAX], h[K_MAX], kap[S_MAX], u[S_MAX];
-    double dg[S_MAX], dcmp[K_MAX], dh[K_MAX]; /* d/dz, where ddF */
     for (size_t q = 0; q < k; ++q) {
         const size_t i = W->el[2 * q];
         const double dx = W->X[q] - x, dzv = z - W->Z[q];
@@ -82,18 +80,7 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
         double da, db;
         tirenv_springs__cc_weights(T, t, &g[2 * q], &g[2 * q + 1], &da, &db);
         cmp[q] = tirenv_springs__cc_compliance(T, g[2 * q], g[2 * q + 1]);
-        const double rho = sqrt(dx * dx + dzv * dzv);
-        h[q] = T->R0 - rho;
-        if (ddF) {
-            /* t = s_i / (s_i + s_n), ds_i/dz = -sin(theta_i), ds_n/dz = sin(theta_(i+1)) */
-            const double *st = T->sin_t, *ct = T->cos_t;
-            const double s_i = dx * ct[i] - dzv * st[i], s_n = dzv * st[i + 1] - dx * ct[i + 1];
-            const double S = s_i + s_n, dt = (-st[i] * s_n - s_i * st[i + 1]) / (S * S);
-            dg[2 * q] = da * dt;
-            dg[2 * q + 1] = db * dt;
-            dcmp[q] = g[2 * q] + g[2 * q + 1] - 1 > 0 ? T->c0 * (da + db) * dt : 0;
-            dh[q] = -dzv / rho;
-        }
+        h[q] = T->R0 - sqrt(dx * dx + dzv * dzv);
     }
     for (size_t s = 0; s < ns; ++s) {
         const size_t q = s / 2;
@@ -153,63 +140,21 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
         f += B[s] * W->col->phi[s];
     }
     *dF = f;
-    if (ddF) {
-        /* no_l: dB_s/dz = dlam g_s + lam dg_s, M dlam = d(rhs)/dz - dM/dz lam on M's factor */
-        double r[K_MAX];
-        for (size_t q = 0; q < k; ++q) {
-            double v = dh[q];
-            for (size_t a = 2 * q; a < 2 * q + 2; ++a)
-                v -= dg[a] * u[a] + g[a] * W->dw[a];
-            for (size_t p = 0; p < k; ++p) {
-                double m = p == q ? dcmp[q] : 0;
-                for (size_t a = 2 * q; a < 2 * q + 2; ++a)
-                    for (size_t b = 2 * p; b < 2 * p + 2; ++b)
-                        m += (dg[a] * g[b] + g[a] * dg[b]) * W->col->Y[b][a];
-                v -= m * lam[p];
-            }
-            r[q] = v;
-        }
-        for (size_t q = 0; q < k; ++q) {
-            double v = r[q];
-            for (size_t m = 0; m < q; ++m)
-                v -= M[q][m] * r[m];
-            r[q] = v / M[q][q];
-        }
-        for (size_t q = k; q-- > 0;) {
-            double v = r[q];
-            for (size_t m = q + 1; m < k; ++m)
-                v -= M[m][q] * r[m];
-            r[q] = v / M[q][q];
-        }
-        double d = 0;
-        for (size_t s = 0; s < ns; ++s)
-            d += W->fr[s] ? (r[s / 2] * g[s] + lam[s / 2] * dg[s]) * W->col->phi[s] : 0;
-        *ddF = d;
-    }
     return 1;
 }
 
 /* At centre height z (dz from the base): the reactions lam, the slots' B and F - F_0 - dz
  * dF_0 (N) into *dF; 0 if a row leaves its sector's inside. One row is the commonest case
- * (over the bench cleat 1,276 roots of 1,404, some 3 calls a root): its loops compiled
+ * (over the bench cleat 1,276 roots of 1,404, some 4 calls a root): its loops compiled
  * unrolled, the same operations in the same order, so the same bits. */
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
                      double dz, double lam[], double B[], double g_out[], double *dF)
 {
     if (W->no_l)
-        return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 1, NULL)
-                         : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 1, NULL);
-    return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 0, NULL)
-                     : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 0, NULL);
-}
-
-/* at_height on root_at's path (no_l) with d/dz of its *dF (N/m) into *ddF as well. */
-static int at_height_slope(const tirenv_springs__cc_tire *T, const root_rows *W, double x,
-                           double z, double dz, double lam[], double B[], double g_out[],
-                           double *dF, double *ddF)
-{
-    return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 1, ddF)
-                     : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 1, ddF);
+        return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 1)
+                         : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 1);
+    return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 0)
+                     : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 0);
 }
 
 /* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
@@ -322,45 +267,6 @@ static int secant(const tirenv_springs__cc_tire *T, const root_rows *W, double x
         }
         za = zb;
         Ra = Rb;
-        zb += step;
-    }
-    return 0;
-}
-
-/* Newton's steps on root_at's R(z) = F_a + (z - z_a) dF_a + (the rows' share at z) - G from
- * (z_a, R_a), its first by slope (R'(z_a), N/m, < 0): the next by R' at the first iterate,
- * the rest by that one (R' moves by O(step) R'' there, so they converge at once), to
- * 1e-15 R0 in z: *zb with the reactions lam and the slots' B there; 0 if it does not settle
- * or a row leaves its sector. The held rows are linear in z and a vertex row bends by about
- * dz^2 / |V - C|, so from the exact slope the first iterate's error is quadratic in the
- * step and the second's at round-off: some 3.2 calls a root over the bench
- * cleat where the secant from the last position's slope took 4.3 (docs/models.md
- * section 4.8). */
-static int newton(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z_a,
-                  double F_a, double dF_a, double G, double R_a, double slope, double lam[],
-                  double B[], double g[], double *z_out, size_t *q_neg)
-{
-    *q_neg = SIZE_MAX;
-    double zb = z_a - R_a / slope;
-    for (size_t it = 0; it < max_steps; ++it) {
-        double dF, ddF;
-        if (!(it == 0 ? at_height_slope(T, W, x, zb, zb - z_a, lam, B, g, &dF, &ddF)
-                      : at_height(T, W, x, zb, zb - z_a, lam, B, g, &dF)))
-            return 0;
-        const double Rb = F_a + (zb - z_a) * dF_a + dF - G;
-        if (it == 0 && dF_a + ddF < 0)
-            slope = dF_a + ddF;
-        const double step = -Rb / slope;
-        if (fabs(step) <= 1e-15 * T->R0) {
-            /* a reaction below 0 at the root: the least one's row leaves the set */
-            for (size_t q = 0; q < W->k; ++q)
-                if (!(lam[q] >= 0) && (*q_neg == SIZE_MAX || lam[q] < lam[*q_neg]))
-                    *q_neg = q;
-            if (*q_neg != SIZE_MAX)
-                return 0;
-            *z_out = zb;
-            return 1;
-        }
         zb += step;
     }
     return 0;
@@ -712,14 +618,9 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
         W.dw[s] = us;
     }
     double lam[K_MAX], B[S_MAX], g[S_MAX], zb, dF;
-    /* Newton's first step by the exact slope at z_a (the last position's where it is not
-     * below 0) */
-    double ddF;
-    if (!at_height_slope(T, &W, x, z_a, 0, lam, B, g, &dF, &ddF))
+    if (!at_height(T, &W, x, z_a, 0, lam, B, g, &dF))
         return 0;
-    if (dFa + ddF < 0)
-        slope = dFa + ddF;
-    if (!newton(T, &W, x, z_a, Fa, dFa, G, Fa + dF - G, slope, lam, B, g, &zb, q_neg))
+    if (!secant(T, &W, x, z_a, Fa, dFa, G, z_a, Fa + dF - G, slope, lam, B, g, &zb, q_neg))
         return 0;
     for (size_t s = 0; s < 2 * k; ++s) { /* each row's load on its elements, for the check */
         c->pred_el[s] = W.el[s];
