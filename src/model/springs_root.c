@@ -150,11 +150,15 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
                      double dz, double lam[], double B[], double g_out[], double *dF)
 {
-    if (W->no_l)
-        return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 1)
-                         : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 1);
-    return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 0)
-                     : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 0);
+    if (W->k == 1)
+        return W->no_l ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 1)
+                       : rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 0);
+    if (W->k == 0) { /* no row: the loops' share is the sum's start, +0 (the roads' commonest) */
+        *dF = 0;
+        return 1;
+    }
+    return W->no_l ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 1)
+                   : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 0);
 }
 
 /* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
