@@ -46,6 +46,7 @@ typedef struct {
     double l0[K_MAX], dl[K_MAX];       /* reactions at the base (N) and d/dz (N/m) */
     double X[K_MAX], Z[K_MAX];         /* the rows' ground vertices, m */
     double w_T[S_MAX], dw[S_MAX];      /* the base's w and dw/dz at the slots */
+    int no_l;                          /* l0 = dl = 0 (root_at's): no base reactions */
     const tirenv_springs__cc_cols *col; /* K_FF^-1 e_s at the slots (the workspace's) */
 } root_rows;
 
@@ -61,10 +62,12 @@ static inline int row_inside(const tirenv_springs__cc_tire *T, size_t i, double 
     return s_i > 0 && s_n > 0 && *t > t_snap && *t < 1 - t_snap;
 }
 
-/* at_height with W->k = k rows, inlined where k is a constant. */
+/* at_height with W->k = k rows, inlined where k is a constant, and where no_l (root_at's
+ * l0 = dl = 0) without the base reactions' kap: there each kap is +0 (0 g0 + dz (0 g0 + 0 g1),
+ * a +0 and a -0 summing to +0), and v - (+0) Y and lam g - (+0) are v and lam g to the bit. */
 static inline __attribute__((always_inline)) int
 rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z, double dz,
-        double lam[], double B[], double g_out[], double *dF, const size_t k)
+        double lam[], double B[], double g_out[], double *dF, const size_t k, const int no_l)
 {
     const size_t ns = 2 * k;
     double g[S_MAX], cmp[K_MAX], h[K_MAX], kap[S_MAX], u[S_MAX];
@@ -81,13 +84,13 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
     }
     for (size_t s = 0; s < ns; ++s) {
         const size_t q = s / 2;
-        kap[s] = W->fr[s] ? W->l0[q] * W->g0[s] +
-                                dz * (W->dl[q] * W->g0[s] + W->l0[q] * W->g1[s])
-                          : 0;
+        kap[s] = W->fr[s] && !no_l ? W->l0[q] * W->g0[s] +
+                                         dz * (W->dl[q] * W->g0[s] + W->l0[q] * W->g1[s])
+                                   : 0;
     }
     for (size_t r = 0; r < ns; ++r) {
         double v = W->w_T[r] + dz * W->dw[r];
-        for (size_t s = 0; s < ns; ++s)
+        for (size_t s = 0; s < ns && !no_l; ++s)
             v -= kap[s] * W->col->Y[s][r];
         u[r] = v;
     }
@@ -133,7 +136,7 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
     double f = 0;
     for (size_t s = 0; s < ns; ++s) {
         g_out[s] = g[s];
-        B[s] = W->fr[s] ? lam[s / 2] * g[s] - kap[s] : 0;
+        B[s] = W->fr[s] ? (no_l ? lam[s / 2] * g[s] : lam[s / 2] * g[s] - kap[s]) : 0;
         f += B[s] * W->col->phi[s];
     }
     *dF = f;
@@ -147,8 +150,15 @@ rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z
 static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z,
                      double dz, double lam[], double B[], double g_out[], double *dF)
 {
-    return W->k == 1 ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1)
-                     : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k);
+    if (W->k == 1)
+        return W->no_l ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 1)
+                       : rows_at(T, W, x, z, dz, lam, B, g_out, dF, 1, 0);
+    if (W->k == 0) { /* no row: the loops' share is the sum's start, +0 (the roads' commonest) */
+        *dF = 0;
+        return 1;
+    }
+    return W->no_l ? rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 1)
+                   : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 0);
 }
 
 /* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
@@ -163,6 +173,7 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
     const size_t *wpos = c->wpos;
     W->k = k;
+    W->no_l = !with_lambda;
     const size_t ns = 2 * k;
     for (size_t q = 0; q < k; ++q) {
         const size_t r = c->order[c->schur_pos[q]] - N;
