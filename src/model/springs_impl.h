@@ -55,6 +55,10 @@ size_t tirenv_springs__start_sector(const tirenv_springs *s);
  * held element's ray (for the tests). */
 void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released,
                                  size_t *entered);
+/* d[i] = R0 - rho[i] where that is > 0 (exactly where rho[i] < R0), else 0 (rho = INFINITY
+ * too), for i in [a, b] (m): bit for bit the select v > 0 ? v : 0 on v = R0 - rho[i]. */
+void tirenv_springs__penetrations(double R0, const double rho[], double d[], size_t a, size_t b);
+
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces

@@ -839,6 +839,41 @@ static void test_chains_solve_matches(void **state)
     assert_true(chains > 500);
 }
 
+/* tirenv_springs__penetrations against the select it replaces, bit for bit, over seeded rays
+ * (rho near R0 by an ulp, at R0, beyond it, INFINITY, NaN) and spans of every length, empty too;
+ * nothing outside [a, b] written. */
+static void test_penetrations_match_select(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261207);
+    enum { N = 61 };
+    const double R0 = 0.6837;
+    for (int trial = 0; trial < 400; ++trial) {
+        double rho[N], d[N], d_ref[N];
+        for (size_t i = 0; i < N; ++i) {
+            const double u = tirenv_rng_uniform(rng);
+            rho[i] = u < 0.1    ? INFINITY
+                     : u < 0.15 ? NAN
+                     : u < 0.25 ? R0
+                     : u < 0.3  ? nextafter(R0, 0)
+                     : u < 0.35 ? nextafter(R0, 1)
+                                : R0 * (0.8 + 0.4 * tirenv_rng_uniform(rng));
+            d[i] = d_ref[i] = -2.385 - (double)i;
+        }
+        /* a in [1, N - 1], b in [a - 1, N - 1] (b = a - 1: an empty span) */
+        const size_t a = 1 + tirenv_rng_uniform_int(rng, N - 1);
+        const size_t b = a - 1 + tirenv_rng_uniform_int(rng, N - a + 1);
+        for (size_t i = a; i <= b; ++i) {
+            const double v = R0 - rho[i];
+            d_ref[i] = v > 0 ? v : 0;
+        }
+        tirenv_springs__penetrations(R0, rho, d, a, b);
+        assert_memory_equal(d, d_ref, sizeof d);
+    }
+    tirenv_rng_free(rng);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -852,6 +887,7 @@ int main(void)
         cmocka_unit_test(test_flip_matches_factor),
         cmocka_unit_test(test_inner_residual_bound),
         cmocka_unit_test(test_chains_solve_matches),
+        cmocka_unit_test(test_penetrations_match_select),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
