@@ -19,6 +19,9 @@
  * w_(i+1) - w_i (under 1e-8 m). */
 static const double t_snap = TIRENV_SPRINGS__T_SNAP;
 
+/* scan_vertex's forward walk goes a ray at a time for this many rays, then gallops. */
+enum { scan_steps = 4 };
+
 double tirenv_springs__cc_gamma(double k_r, double k_ir)
 {
     if (!(k_ir > 0))
@@ -381,13 +384,46 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
      * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
      * products; rounding to nearest is symmetric), never 0. */
     double s_n = 0; /* 0: not known */
-    while (i + 1 < C->N) {
+    /* The forward walk: a ray at a time for the first scan_steps rays (a road's next vertex
+     * lies a few sectors on), then by galloping and bisection. sigma_k >= 0 holds for the
+     * rays up to the vertex's angle and fails beyond (|theta| <= pi/2 and dz > 0: sin(psi -
+     * theta_k) changes sign once, and only one ray can lie within round-off of it), so any
+     * search finds the first ray past sc->i where it fails, the walk's, with its sigma: some
+     * 2 log2 steps where the walk took one a sector (a cleat's far corner lies some 30
+     * sectors from its near one). */
+    size_t hi = C->N; /* the first ray past sc->i where sigma_k fails, once found */
+    for (size_t n = 0; n < scan_steps && i + 1 < C->N; ++n) {
         const double u = dx * ct[i + 1] - dz * st[i + 1];
         if (!(u >= 0)) {
+            hi = i + 1;
             s_n = -u;
             break;
         }
         ++i;
+    }
+    if (hi == C->N && i + 1 < C->N) {
+        for (size_t step = 2;; step *= 2) { /* sigma >= 0 on (sc->i, i] */
+            const size_t k = i + step;
+            if (k >= C->N)
+                break;
+            const double u = dx * ct[k] - dz * st[k];
+            if (!(u >= 0)) {
+                hi = k;
+                s_n = -u;
+                break;
+            }
+            i = k;
+        }
+        while (hi - i > 1) {
+            const size_t k = i + (hi - i) / 2;
+            const double u = dx * ct[k] - dz * st[k];
+            if (u >= 0) {
+                i = k;
+            } else {
+                hi = k;
+                s_n = -u;
+            }
+        }
     }
     double s_i = dx * ct[i] - dz * st[i];
     while (i > 0 && s_i < 0) {
