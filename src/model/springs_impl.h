@@ -664,6 +664,13 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
 int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                              const double w[], const double dd[], double dw[]);
 
+/* The scan's forward walk (springs_rows.c) for a vertex at (dx, dz) from the centre (m,
+ * dz > 0) over the rays (st, ct) = (sin, cos theta_k), k < N, |theta_k| <= pi/2: from ray i,
+ * the ray before the first one past i where sigma_k = dx ct_k - dz st_k >= 0 fails, and
+ * *s_n = -sigma_k there (N - 1 and 0 if none fails): bit for bit a walk a ray at a time. */
+size_t tirenv_springs__walk_ahead(const double st[], const double ct[], size_t N, double dx,
+                                  double dz, size_t i, double *s_n);
+
 /* The vertex rows at (x, z) as tirenv_springs__cc_rows finds them before its hulls, into
  * c->vrows (c->n_vrows of them, in order of vertex): what the update checks against. It
  * overwrites the candidates the last layout kept (tirenv_springs__cc_add_dropped), so the

@@ -874,6 +874,54 @@ static void test_penetrations_match_select(void **state)
     tirenv_rng_free(rng);
 }
 
+/* tirenv_springs__walk_ahead against the walk a ray at a time, bit for bit (the ray and its
+ * sigma), over seeded vertices anywhere in the lower half, on a ray's angle (sigma within
+ * round-off of 0), nearly level with the centre, and from every kind of start. */
+static void test_walk_ahead_matches_walk(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261208);
+    enum { N_MAX = 721 };
+    static double st[N_MAX], ct[N_MAX];
+    for (int tire = 0; tire < 3; ++tire) {
+        const size_t i0 = tire == 0 ? 180 : tire == 1 ? 360 : 37, N = 2 * i0 + 1;
+        const double dphi = 0.5 * M_PI / (double)i0;
+        for (size_t k = 0; k < N; ++k) {
+            st[k] = sin(((double)k - (double)i0) * dphi);
+            ct[k] = cos(((double)k - (double)i0) * dphi);
+        }
+        for (int trial = 0; trial < 4000; ++trial) {
+            const double rho = 0.3 * (0.1 + tirenv_rng_uniform(rng));
+            const double u = tirenv_rng_uniform(rng);
+            const size_t q = tirenv_rng_uniform_int(rng, N);
+            const double psi = u < 0.3   ? ((double)q - (double)i0) * dphi /* on a ray */
+                               : u < 0.4 ? (q % 2 ? 1 : -1) * (0.5 * M_PI - 1e-9 * u)
+                                         : (tirenv_rng_uniform(rng) - 0.5) * M_PI;
+            const double dx = rho * sin(psi), dz = rho * cos(psi);
+            if (!(dz > 0))
+                continue;
+            const size_t i = tirenv_rng_uniform(rng) < 0.5 ? tirenv_rng_uniform_int(rng, N)
+                                                          : (q + tirenv_rng_uniform_int(rng, 7)) % N;
+            size_t ref = i;
+            double s_ref = 0;
+            while (ref + 1 < N) {
+                const double v = dx * ct[ref + 1] - dz * st[ref + 1];
+                if (!(v >= 0)) {
+                    s_ref = -v;
+                    break;
+                }
+                ++ref;
+            }
+            double s_n = -2.385;
+            const size_t got = tirenv_springs__walk_ahead(st, ct, N, dx, dz, i, &s_n);
+            assert_int_equal(got, ref);
+            assert_memory_equal(&s_n, &s_ref, sizeof s_n);
+        }
+    }
+    tirenv_rng_free(rng);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -888,6 +936,7 @@ int main(void)
         cmocka_unit_test(test_inner_residual_bound),
         cmocka_unit_test(test_chains_solve_matches),
         cmocka_unit_test(test_penetrations_match_select),
+        cmocka_unit_test(test_walk_ahead_matches_walk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
