@@ -55,6 +55,10 @@ size_t tirenv_springs__start_sector(const tirenv_springs *s);
  * held element's ray (for the tests). */
 void tirenv_springs__start_moves(const tirenv_springs *s, size_t *across, size_t *released,
                                  size_t *entered);
+/* d[i] = R0 - rho[i] where that is > 0 (exactly where rho[i] < R0), else 0 (rho = INFINITY
+ * too), for i in [a, b] (m): bit for bit the select v > 0 ? v : 0 on v = R0 - rho[i]. */
+void tirenv_springs__penetrations(double R0, const double rho[], double d[], size_t a, size_t b);
+
 /* The evaluations so far that tirenv_springs__cc_update gave (for the tests). */
 size_t tirenv_springs__updates(const tirenv_springs *s);
 /* The rays' d(rho)/dz taken from the face kept from an earlier x so far, and the faces
@@ -659,6 +663,13 @@ int tirenv_springs__cc_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tir
  * returns TIRENV_ENOMEM if there was no room for them (dw is written all the same). */
 int tirenv_springs__cc_slope(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                              const double w[], const double dd[], double dw[]);
+
+/* The scan's forward walk (springs_rows.c) for a vertex at (dx, dz) from the centre (m,
+ * dz > 0) over the rays (st, ct) = (sin, cos theta_k), k < N, |theta_k| <= pi/2: from ray i,
+ * the ray before the first one past i where sigma_k = dx ct_k - dz st_k >= 0 fails, and
+ * *s_n = -sigma_k there (N - 1 and 0 if none fails): bit for bit a walk a ray at a time. */
+size_t tirenv_springs__walk_ahead(const double st[], const double ct[], size_t N, double dx,
+                                  double dz, size_t i, double *s_n);
 
 /* The vertex rows at (x, z) as tirenv_springs__cc_rows finds them before its hulls, into
  * c->vrows (c->n_vrows of them, in order of vertex): what the update checks against. It

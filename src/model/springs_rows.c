@@ -19,6 +19,9 @@
  * w_(i+1) - w_i (under 1e-8 m). */
 static const double t_snap = TIRENV_SPRINGS__T_SNAP;
 
+/* scan_vertex's forward walk goes a ray at a time for this many rays, then gallops. */
+enum { scan_steps = 4 };
+
 double tirenv_springs__cc_gamma(double k_r, double k_ir)
 {
     if (!(k_ir > 0))
@@ -363,6 +366,66 @@ static inline tirenv_springs__cc_row *put_row(const double st[], size_t j, size_
     return out + 1;
 }
 
+/* walk_ahead past its first scan_steps rays, from ray i with sigma_k >= 0 on (the start, i]:
+ * galloping, then bisection. */
+static inline size_t gallop(const double st[], const double ct[], size_t N, double dx,
+                            double dz, size_t i, double *s_n)
+{
+    size_t hi = N; /* the first ray past i where sigma_k fails, once found */
+    for (size_t step = 2;; step *= 2) {
+        const size_t k = i + step;
+        if (k >= N)
+            break;
+        const double u = dx * ct[k] - dz * st[k];
+        if (!(u >= 0)) {
+            hi = k;
+            *s_n = -u;
+            break;
+        }
+        i = k;
+    }
+    while (hi - i > 1) {
+        const size_t k = i + (hi - i) / 2;
+        const double u = dx * ct[k] - dz * st[k];
+        if (u >= 0) {
+            i = k;
+        } else {
+            hi = k;
+            *s_n = -u;
+        }
+    }
+    return i;
+}
+
+/* tirenv_springs__walk_ahead: a ray at a time for the first scan_steps rays (a road's next
+ * vertex lies a few sectors on), then gallop. sigma_k >= 0 holds for the rays up to the
+ * vertex's angle and fails beyond (|theta| <= pi/2 and dz > 0: sin(psi - theta_k) changes
+ * sign once, and only one ray can lie within round-off of it), so any search finds the first
+ * ray past i where it fails, the walk's, with its sigma: some 2 log2 steps where the walk
+ * took one a sector (a cleat's far corner lies some 30 sectors from its near one). */
+static inline size_t walk_ahead(const double st[], const double ct[], size_t N, double dx,
+                                double dz, size_t i, double *s_n)
+{
+    *s_n = 0;
+    for (size_t n = 0; n < scan_steps; ++n) {
+        if (i + 1 >= N)
+            return i;
+        const double u = dx * ct[i + 1] - dz * st[i + 1];
+        if (!(u >= 0)) {
+            *s_n = -u;
+            return i;
+        }
+        ++i;
+    }
+    return i + 1 < N ? gallop(st, ct, N, dx, dz, i, s_n) : i;
+}
+
+size_t tirenv_springs__walk_ahead(const double st[], const double ct[], size_t N, double dx,
+                                  double dz, size_t i, double *s_n)
+{
+    return walk_ahead(st, ct, N, dx, dz, i, s_n);
+}
+
 /* Vertex j's row at (x, z), if it has one, at sc->out; sc along. scan_prove repeats these
  * operations in a loop of its own: change both (test_springs_scan compares them bit for
  * bit). */
@@ -373,22 +436,14 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
         return; /* at or above the centre's height: outside the lower half */
     const double rr = dx * dx + dz * dz;
     const double *const st = C->st, *const ct = C->ct;
-    size_t i = sc->i;
     if (!(rr < C->R0sq))
         return;
     /* sigma_k = rho sin(psi - theta_k): >= 0 at or ahead of ray k. The walk keeps the
      * sigmas it computes: sigma_(i+1) < 0 ends the forward walk, and s_n = -sigma_(i+1)
      * is the same number as dz sin(theta_(i+1)) - dx cos(theta_(i+1)) (the same two
      * products; rounding to nearest is symmetric), never 0. */
-    double s_n = 0; /* 0: not known */
-    while (i + 1 < C->N) {
-        const double u = dx * ct[i + 1] - dz * st[i + 1];
-        if (!(u >= 0)) {
-            s_n = -u;
-            break;
-        }
-        ++i;
-    }
+    double s_n; /* 0: not known */
+    size_t i = walk_ahead(st, ct, C->N, dx, dz, sc->i, &s_n);
     double s_i = dx * ct[i] - dz * st[i];
     while (i > 0 && s_i < 0) {
         --i;

@@ -839,6 +839,89 @@ static void test_chains_solve_matches(void **state)
     assert_true(chains > 500);
 }
 
+/* tirenv_springs__penetrations against the select it replaces, bit for bit, over seeded rays
+ * (rho near R0 by an ulp, at R0, beyond it, INFINITY, NaN) and spans of every length, empty too;
+ * nothing outside [a, b] written. */
+static void test_penetrations_match_select(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261207);
+    enum { N = 61 };
+    const double R0 = 0.6837;
+    for (int trial = 0; trial < 400; ++trial) {
+        double rho[N], d[N], d_ref[N];
+        for (size_t i = 0; i < N; ++i) {
+            const double u = tirenv_rng_uniform(rng);
+            rho[i] = u < 0.1    ? INFINITY
+                     : u < 0.15 ? NAN
+                     : u < 0.25 ? R0
+                     : u < 0.3  ? nextafter(R0, 0)
+                     : u < 0.35 ? nextafter(R0, 1)
+                                : R0 * (0.8 + 0.4 * tirenv_rng_uniform(rng));
+            d[i] = d_ref[i] = -2.385 - (double)i;
+        }
+        /* a in [1, N - 1], b in [a - 1, N - 1] (b = a - 1: an empty span) */
+        const size_t a = 1 + tirenv_rng_uniform_int(rng, N - 1);
+        const size_t b = a - 1 + tirenv_rng_uniform_int(rng, N - a + 1);
+        for (size_t i = a; i <= b; ++i) {
+            const double v = R0 - rho[i];
+            d_ref[i] = v > 0 ? v : 0;
+        }
+        tirenv_springs__penetrations(R0, rho, d, a, b);
+        assert_memory_equal(d, d_ref, sizeof d);
+    }
+    tirenv_rng_free(rng);
+}
+
+/* tirenv_springs__walk_ahead against the walk a ray at a time, bit for bit (the ray and its
+ * sigma), over seeded vertices anywhere in the lower half, on a ray's angle (sigma within
+ * round-off of 0), nearly level with the centre, and from every kind of start. */
+static void test_walk_ahead_matches_walk(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(0);
+    tirenv_rng_seed(rng, 20261208);
+    enum { N_MAX = 721 };
+    static double st[N_MAX], ct[N_MAX];
+    for (int tire = 0; tire < 3; ++tire) {
+        const size_t i0 = tire == 0 ? 180 : tire == 1 ? 360 : 37, N = 2 * i0 + 1;
+        const double dphi = 0.5 * M_PI / (double)i0;
+        for (size_t k = 0; k < N; ++k) {
+            st[k] = sin(((double)k - (double)i0) * dphi);
+            ct[k] = cos(((double)k - (double)i0) * dphi);
+        }
+        for (int trial = 0; trial < 4000; ++trial) {
+            const double rho = 0.3 * (0.1 + tirenv_rng_uniform(rng));
+            const double u = tirenv_rng_uniform(rng);
+            const size_t q = tirenv_rng_uniform_int(rng, N);
+            const double psi = u < 0.3   ? ((double)q - (double)i0) * dphi /* on a ray */
+                               : u < 0.4 ? (q % 2 ? 1 : -1) * (0.5 * M_PI - 1e-9 * u)
+                                         : (tirenv_rng_uniform(rng) - 0.5) * M_PI;
+            const double dx = rho * sin(psi), dz = rho * cos(psi);
+            if (!(dz > 0))
+                continue;
+            const size_t i = tirenv_rng_uniform(rng) < 0.5 ? tirenv_rng_uniform_int(rng, N)
+                                                          : (q + tirenv_rng_uniform_int(rng, 7)) % N;
+            size_t ref = i;
+            double s_ref = 0;
+            while (ref + 1 < N) {
+                const double v = dx * ct[ref + 1] - dz * st[ref + 1];
+                if (!(v >= 0)) {
+                    s_ref = -v;
+                    break;
+                }
+                ++ref;
+            }
+            double s_n = -2.385;
+            const size_t got = tirenv_springs__walk_ahead(st, ct, N, dx, dz, i, &s_n);
+            assert_int_equal(got, ref);
+            assert_memory_equal(&s_n, &s_ref, sizeof s_n);
+        }
+    }
+    tirenv_rng_free(rng);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -852,6 +935,8 @@ int main(void)
         cmocka_unit_test(test_flip_matches_factor),
         cmocka_unit_test(test_inner_residual_bound),
         cmocka_unit_test(test_chains_solve_matches),
+        cmocka_unit_test(test_penetrations_match_select),
+        cmocka_unit_test(test_walk_ahead_matches_walk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
