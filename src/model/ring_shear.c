@@ -471,9 +471,10 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
  * from row to row, where a chain of four differences and a division was (docs/performance.md
  * 2.15). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
- * full tail two lanes at a time; the same operations in the same order for every t. Without a
- * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
- * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
+ * full tail two lanes at a time; the same operations in the same order for every t. The
+ * forward substitution may start at row i0, x's rows before it holding their z already (the
+ * window's, band_solve: its leading +0 rows; the exterior's, ext_solve: a unit vector's
+ * zeros or a kept y), and, without a tail, stop there (forward_only: x then holds U^-1 b). */
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t, const size_t i0,
                                                                const int forward_only)
