@@ -326,46 +326,50 @@ static void count_back(const tirenv_ring_piece c[], size_t n, size_t *n_back, in
     *ordered = ord;
 }
 
+/* The pieces a vertex cut ends or begins, t_i = (vj[i] - ja) + i and t_i + 1 for each of the nv
+ * cuts (sorted, two cuts in one interval sharing one), each taken once: how many go backward
+ * (*n_back), how many lie before `below` (*n_below), and whether each goes backward exactly when
+ * it lies before `below` (*agree). */
+static void vertex_pieces(const tirenv_ring_piece c[], const size_t vj[], size_t ja, size_t nv,
+                          size_t below, size_t *n_back, size_t *n_below, int *agree)
+{
+    size_t nb = 0, nl = 0, last = (size_t)-1;
+    int ag = 1;
+    for (size_t i = 0; i < nv; ++i)
+        for (size_t h = 0; h < 2; ++h) {
+            const size_t t = (vj[i] - ja) + i + h;
+            if (t == last)
+                continue;
+            last = t;
+            const int back = c[t].sa + c[t].sb < 0;
+            nb += back;
+            nl += t < below;
+            ag &= back == (t < below);
+        }
+    *n_back = nb, *n_below = nl, *agree = ag;
+}
+
 /* count_back's answer for the last sampling's pieces c, kept (same_pieces) with only their
  * vertex ends moved, without the pass over all of them: a piece between two nodes keeps its
  * sa + sb bits, so where the last sampling's were ordered (its first pc_back pieces backward,
- * no other), such a piece is backward if and only if it lies before pc_back; only the pieces a
- * vertex cut ends or begins, t_i = (j_i - ja) + i and t_i + 1 (sorted, two vertices in one
- * interval sharing one), are looked at again. The count moves by their changes; the pieces are
- * ordered if each of them is backward exactly when it lies before the new count and no node's
- * piece lies between the old count and the new. Returns 0 where the last sampling's counts are
- * unknown or were not ordered (the caller then makes the whole pass). */
+ * no other), such a piece is backward if and only if it lies before pc_back; only the vertex
+ * cuts' pieces (vertex_pieces) are looked at again, and the count moves by their changes. The
+ * pieces are ordered if each vertex piece is backward exactly when it lies before the new count
+ * nb: then the vertex pieces before nb number nb - nb0 more than those before nb0, so every
+ * piece between nb0 and nb is a vertex piece, and every node piece keeps its place on its side
+ * of the count. Returns 0 where the last sampling's counts are unknown or were not ordered (the
+ * caller then makes the whole pass). */
 static int back_carried(const tirenv_ring *r, const tirenv_ring_piece c[], size_t ja, size_t nv,
                         size_t *n_back, int *ordered)
 {
     if (!r->pc_back_ok || !r->pc_ordered)
         return 0;
     const size_t nb0 = r->pc_back;
-    size_t nb = nb0, last = (size_t)-1;
-    for (size_t i = 0; i < nv; ++i)
-        for (size_t h = 0; h < 2; ++h) {
-            const size_t t = (r->pc_vj[i] - ja) + i + h;
-            if (t == last)
-                continue;
-            last = t;
-            nb += c[t].sa + c[t].sb < 0;
-            nb -= t < nb0;
-        }
-    const size_t lo = nb < nb0 ? nb : nb0, hi = nb < nb0 ? nb0 : nb;
-    size_t in_range = 0; /* vertex pieces in lo .. hi - 1 */
-    int ord = 1;
-    last = (size_t)-1;
-    for (size_t i = 0; i < nv; ++i)
-        for (size_t h = 0; h < 2; ++h) {
-            const size_t t = (r->pc_vj[i] - ja) + i + h;
-            if (t == last)
-                continue;
-            last = t;
-            ord &= (c[t].sa + c[t].sb < 0) == (t < nb);
-            in_range += t >= lo && t < hi;
-        }
-    *n_back = nb;
-    *ordered = ord && in_range == hi - lo;
+    size_t vb, below0, below;
+    int agree;
+    vertex_pieces(c, r->pc_vj, ja, nv, nb0, &vb, &below0, &agree);
+    *n_back = nb0 - below0 + vb; /* those before nb0 were the backward ones */
+    vertex_pieces(c, r->pc_vj, ja, nv, *n_back, &vb, &below, ordered);
     return 1;
 }
 

@@ -471,9 +471,10 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
  * from row to row, where a chain of four differences and a division was (docs/performance.md
  * 2.15). Inlined with t a
  * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
- * full tail two lanes at a time; the same operations in the same order for every t. Without a
- * tail (the exterior's, ext_solve) the forward substitution may start at row i0, x's rows
- * before it holding their z already, and stop there (forward_only: x then holds U^-1 b). */
+ * full tail two lanes at a time; the same operations in the same order for every t. The
+ * forward substitution may start at row i0, x's rows before it holding their z already (the
+ * window's, band_solve: its leading +0 rows; the exterior's, ext_solve: a unit vector's
+ * zeros or a kept y), and, without a tail, stop there (forward_only: x then holds U^-1 b). */
 static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
                                                                const size_t t, const size_t i0,
                                                                const int forward_only)
@@ -1914,11 +1915,10 @@ static void leave(tirenv_ring *r, const window_save *sv)
     r->n = sv->n;
 }
 
-/* The contact Newton's peel (ring_newton.c; docs/performance.md 2.24). PEEL_GRAZE (m): a point
- * pressed in by no more than this at the Newton point is grazing, the tread draped over a
- * corner; the points freed one a step lay 1e-8 to 2e-6 m clear at the step that freed them in
- * the solves looked at (the bench sweep's instructions: 447.0 M at 1e-6 m, 447.1 M at 3e-7 m
- * and 1e-5 m; the 0.10 x 0.025 m cleat's 396.2 M, 398.7 M and 398.4 M). */
+/* The contact Newton's peel (ring_newton.c). PEEL_GRAZE (m): a point pressed in by no more
+ * than this at the Newton point is grazing, the tread draped over a corner; the points freed
+ * one a step lay 1e-8 to 2e-6 m clear at the step that freed them in the solves looked at, and
+ * 3e-7 m and 1e-5 m cost more instructions over the cleats (docs/performance.md 2.24). */
 static const double PEEL_GRAZE = 1e-6;
 
 /* A point in contact (its tread surface) at the Newton point xn, free at the start x0, pressed
@@ -1931,7 +1931,8 @@ static int grazes(const tirenv_ring *r, const tirenv_ring_point *q, const double
 
 /* The driver's peel callback: the points that the step from x to xn freed (in contact at x, free
  * now) and that were free at the start x0; each frees with it the grazing points beside it, on
- * either side, that came into contact since x0 (a run entered with it). Returns how many it
+ * either side, that came into contact since x0 (a run entered with it). Freed is st 0, both
+ * bits: a guess, which the next step's set_states overrules where wrong. Returns how many it
  * freed, and counts them in T->n_peel. */
 static size_t peel_cb(tirenv_ring *r, const double x0[], const double x[], const double xn[])
 {
