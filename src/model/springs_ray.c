@@ -380,8 +380,9 @@ static inline v2d load2(const double *p)
 
 static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
-/* Lane by lane, v where a <= b and (if check_c) c > 0, else INFINITY: the walk's rho past
- * reach. With SSE2 in its instructions: GCC takes the masks of its vector extensions'
+/* Lane by lane, INFINITY where a > b or (if check_c) c <= 0, else v (a NaN compares false,
+ * as in the scalar selects it pairs with): the walk's rho past reach. With SSE2 in its
+ * instructions: GCC takes the masks of its vector extensions'
  * comparisons as booleans, through the integer registers lane by lane (some 14 instructions
  * a pair instead of 5). */
 static inline v2d inf_past(v2d a, v2d b, v2d c, const int check_c, v2d v)

@@ -63,8 +63,11 @@ static inline int row_inside(const tirenv_springs__cc_tire *T, size_t i, double 
 }
 
 /* at_height with W->k = k rows, inlined where k is a constant, and where no_l (root_at's
- * l0 = dl = 0) without the base reactions' kap: there each kap is +0 (0 g0 + dz (0 g0 + 0 g1),
- * a +0 and a -0 summing to +0), and v - (+0) Y and lam g - (+0) are v and lam g to the bit. */
+ * l0 = dl = 0) without the base reactions' kap. There each kap is +0: g0 > 0 (a row inside
+ * its sector has both weights > 0), so 0 g0 is +0 and dz (0 g0 + 0 g1) is +0 or -0, which
+ * summed to +0 give +0. Then lam g - (+0) is lam g to the bit, and so is v - (+0) Y (a +0 or
+ * a -0) since v is never -0: a slot's w_T + dz dw starts from a sum begun at +0 (ua) or from
+ * h = R0 - rho, neither -0. */
 static inline __attribute__((always_inline)) int
 rows_at(const tirenv_springs__cc_tire *T, const root_rows *W, double x, double z, double dz,
         double lam[], double B[], double g_out[], double *dF, const size_t k, const int no_l)

@@ -186,6 +186,17 @@ run_reactions(const double *res, double *pq, size_t len, double *l_min, double *
     *n_pos += n;
 }
 
+/* The run of held elements [*h0, *h1) before chain q of ch[0..2 n_ch) (q = n_ch: after the
+ * last) within [f0, f1]. The chains are the factor's, the free elements' maximal runs in
+ * ascending order (tirenv_springs__cc_schur_factor and its flips), so h0 <= h1: the first
+ * and the last run may be empty, the others hold at least one element. */
+static inline void held_run(const size_t ch[], size_t n_ch, size_t f0, size_t f1, size_t q,
+                            size_t *h0, size_t *h1)
+{
+    *h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
+    *h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+}
+
 /* Where the state is tirenv_springs__cc_root_at's, each free element inside a chain (not its
  * ends, not a working row's) holds w as that solve left it, and its equation's right-hand
  * side is 0 in both systems: its residual is the Thomas solve's own. For K_FF, a symmetric
@@ -288,8 +299,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
     }
     size_t n_free = 0;
     int not_on = 0;
-    for (size_t q = 0; q <= n_ch; ++q) { /* the run before chain q (or after the last) */
-        const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1, h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+    for (size_t q = 0; q <= n_ch; ++q) {
+        size_t h0, h1;
+        held_run(ch, n_ch, f0, f1, q, &h0, &h1);
         n_free += q < n_ch ? ch[2 * q + 1] - ch[2 * q] + 1 : 0;
         not_on |= run_on_rows(ph + h0, wn + h0, h1 - h0);
     }
@@ -396,9 +408,9 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         ok &= !off;
         above = !below;
         double n_pos = 0;
-        for (size_t q = 0; q <= n_ch; ++q) { /* the held runs, as above */
-            const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
-            const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+        for (size_t q = 0; q <= n_ch; ++q) {
+            size_t h0, h1;
+            held_run(ch, n_ch, f0, f1, q, &h0, &h1);
             run_reactions(res + h0, pq + h0, h1 - h0, &l_min, &n_pos);
         }
         n_c = (size_t)n_pos;
@@ -426,8 +438,8 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         return 0;
     if (l_min < 0) { /* the largest |reaction|, the held ones' from pq (l_min >= 0 passes) */
         for (size_t q = 0; q <= n_ch; ++q) {
-            const size_t h0 = q == 0 ? f0 : ch[2 * q - 1] + 1;
-            const size_t h1 = q == n_ch ? f1 + 1 : ch[2 * q];
+            size_t h0, h1;
+            held_run(ch, n_ch, f0, f1, q, &h0, &h1);
             for (size_t e = h0; e < h1; ++e)
                 l_max = fabs(pq[e]) > l_max ? fabs(pq[e]) : l_max;
         }
