@@ -201,13 +201,14 @@ static void band_add(tband *A, size_t i, size_t k, double v)
  * entries were never written (fill_window leaves them unset, stale from an earlier window,
  * and they are taken as zero), so its update starts from zero rather than from memory
  * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive. */
-static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
-                                                               v2d *t20, v2d *t30, v2d *t32,
-                                                               double *t00, double *t22,
-                                                               v2d *d_a1, const int fresh,
+static inline __attribute__((always_inline)) int factor_column(double *L, double *B, size_t i,
+                                                               v2d *t10, v2d *t20, v2d *t30,
+                                                               v2d *t32, double *t00,
+                                                               double *t22, v2d *d_a1,
+                                                               const int fresh,
                                                                const double *src)
 {
-    double *c = A->L + (BAND_P + 1) * i;
+    double *c = L + (BAND_P + 1) * i;
     /* d and a1 (c[0], c[1]) as the column before left them, from registers: read back from
      * memory, its store and their load would lengthen the chain from pivot to pivot. */
     const double d = (*d_a1)[0];
@@ -241,7 +242,7 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
     r4[0] -= a4 * g4;
     /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
      * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
-    double *b = A->B + TAIL * i;
+    double *b = B + TAIL * i;
     const v2d vdinv = {dinv, dinv};
     const v2d h01 = v2_load(b), h23 = v2_load(b + 2);
     const v2d u01 = h01 * vdinv, u23 = h23 * vdinv;
@@ -318,13 +319,22 @@ static const double *ck_restore(const double *ck, tband *A, size_t q)
  * interior column, the columns before it factorised and their updates of the later ones
  * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
  * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) &&     \
+    !defined(TIRENV_RING_NO_CLONES) && !defined(__SANITIZE_THREAD__)
+#define RING_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define RING_CLONES
+#endif
+RING_CLONES
 static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
                             double *ck, const double *src)
 {
     if (!src)
         src = A->L;
     const size_t N = A->N, t = A->t, m = N - t;
-    double *L = A->L;
+    /* L and B in locals: the columns' stores (memcpy's, which may alias anything) would
+     * otherwise make the compiler load them again from A at every column. */
+    double *const L = A->L, *const B = A->B;
     size_t i = q0;
     if (t == TAIL && m > BAND_P) {
         double(*T)[TAIL] = A->T;
@@ -343,15 +353,15 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
             ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
+            broke = factor_column(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
             ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
+            broke = factor_column(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
             ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
+            broke = factor_column(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
         T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
@@ -367,7 +377,6 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         const double dinv = 1 / c[0];
         c[0] = dinv;
         const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
-        double *const B = A->B;
         double u[TAIL];
         for (size_t a = 0; a < t; ++a)
             u[a] = B[TAIL * i + a] * dinv;
