@@ -37,6 +37,7 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/cholesky.h"
@@ -242,10 +243,10 @@ static inline __attribute__((always_inline)) int factor_column(double *L, double
     }
     const double dinv = 1 / d;
     const double a1 = (*nx)[1], a2 = (*nx)[2], a3 = (*nx)[3], a4 = c[4];
-    const double g1 = a1 * dinv, g2 = a2 * dinv, g3 = a3 * dinv, g4 = a4 * dinv;
-    const v4d c03 = {dinv, g1, g2, g3};
-    v4_store(c, &c03);
-    c[4] = g4;
+    const v4d a14 = {a1, a2, a3, a4}, g = a14 * (v4d){dinv, dinv, dinv, dinv};
+    const double g1 = g[0], g2 = g[1], g3 = g[2], g4 = g[3];
+    c[0] = dinv;
+    v4_store(c + 1, &g);
     double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
            *r4 = r3 + (BAND_P + 1);
     /* r1[0] -= a1 g1, r1[1] -= a2 g1, r1[2] -= a3 g1, r1[3] -= a4 g1; r2[0] -= a2 g2,
@@ -254,7 +255,7 @@ static inline __attribute__((always_inline)) int factor_column(double *L, double
     const v2d vg2 = {g2, g2}, vg3 = {g3, g3};
     v4d r1v;
     v4_load(&r1v, r1);
-    *nx = r1v - (v4d){a1, a2, a3, a4} * (v4d){g1, g1, g1, g1};
+    *nx = r1v - a14 * (v4d){g1, g1, g1, g1};
     v4_store(r1, nx);
     v2_store(r2, v2_load(r2) - a23 * vg2);
     r2[2] -= a4 * g2;
@@ -305,13 +306,15 @@ enum {
     CK_LEN = CK_ACC + (BAND_P + 1 + TAIL) * BAND_P
 };
 
-/* Before interior column i of A: its checkpoint's state into ck's slot for it, where i is a
- * multiple of CKS (ck NULL: none kept). */
+/* Before interior column i of A: its checkpoint's state into ck's slot for it, where i is the
+ * next multiple of CKS to keep (*next, moved on to the one after; SIZE_MAX: none kept). One
+ * comparison a column. */
 static inline void ck_save(double *ck, const double *L, const double *B, size_t i,
-                           const tail_acc *acc)
+                           const tail_acc *acc, size_t *next)
 {
-    if (!ck || i % CKS != 0)
+    if (i != *next)
         return;
+    *next += CKS;
     ck += CK_LEN * (i / CKS);
     ck[0] = acc->t00, ck[1] = acc->t1[0], ck[2] = acc->t1[1];
     ck[3] = acc->t2[0], ck[4] = acc->t2[1], ck[5] = acc->t2[2];
@@ -357,6 +360,7 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
         if (acc0)
             acc = (tail_acc){acc0[0], {acc0[1], acc0[2], 0, 0}, {acc0[3], acc0[4], acc0[5], 0},
                              {acc0[6], acc0[7], acc0[8], acc0[9]}};
+        size_t ck_next = ck ? (i + CKS - 1) / CKS * CKS : SIZE_MAX;
         int broke = 0;
         v4d nx; /* column i's d, a1, a2 and a3 */
         v4_load(&nx, L + (BAND_P + 1) * i);
@@ -365,15 +369,15 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
-            ck_save(ck, L, B, i, &acc);
+            ck_save(ck, L, B, i, &acc, &ck_next);
             broke = factor_column(L, B, i, &acc, &nx, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
-            ck_save(ck, L, B, i, &acc);
+            ck_save(ck, L, B, i, &acc, &ck_next);
             broke = factor_column(L, B, i, &acc, &nx, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
-            ck_save(ck, L, B, i, &acc);
+            ck_save(ck, L, B, i, &acc, &ck_next);
             broke = factor_column(L, B, i, &acc, &nx, 0, src);
         }
         T[0][0] = acc.t00, T[1][0] = acc.t1[0], T[1][1] = acc.t1[1];
