@@ -195,6 +195,81 @@ static void band_add(tband *A, size_t i, size_t k, double v)
         A->T[k - m][i - m] += v;
 }
 
+/* One interior column i of band_factor with the full tail (i + BAND_P < m), in pairs of lanes
+ * (the baseline build's, band_factor_base): its band and tail entries scaled by 1 / d into U's
+ * column, and its updates of the next BAND_P columns, two SSE2 lanes at a time; the tail
+ * block's lower triangle, and the next column's d and a1 (d_a1), in the caller's registers.
+ * fresh: column i + BAND_P's tail entries were never written (fill_window leaves them unset,
+ * stale from an earlier window, and they are taken as zero), so its update starts from zero
+ * rather than from memory (0 - p, the same operation on the same operands). Nonzero if the
+ * pivot is not positive. */
+static inline __attribute__((always_inline)) int factor_column2(double *L, double *B, size_t i,
+                                                                v2d *t10, v2d *t20, v2d *t30,
+                                                                v2d *t32, double *t00,
+                                                                double *t22, v2d *d_a1,
+                                                                const int fresh,
+                                                                const double *src)
+{
+    double *c = L + (BAND_P + 1) * i;
+    /* d and a1 (c[0], c[1]) as the column before left them, from registers: read back from
+     * memory, its store and their load would lengthen the chain from pivot to pivot. */
+    const double d = (*d_a1)[0];
+    if (!(d > 0))
+        return 1;
+    { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
+       * the system band_refactor copies from) */
+        const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
+        double *d4 = c + BAND_P * (BAND_P + 1);
+        v2_store(d4, v2_load(s4));
+        v2_store(d4 + 2, v2_load(s4 + 2));
+        d4[4] = s4[4];
+    }
+    const double dinv = 1 / d;
+    const double a1 = (*d_a1)[1], a2 = c[2], a3 = c[3], a4 = c[4];
+    const double g1 = a1 * dinv, g2 = a2 * dinv, g3 = a3 * dinv, g4 = a4 * dinv;
+    c[0] = dinv;
+    c[1] = g1, c[2] = g2, c[3] = g3, c[4] = g4;
+    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+           *r4 = r3 + (BAND_P + 1);
+    /* r1[0] -= a1 g1, r1[1] -= a2 g1, r1[2] -= a3 g1, r1[3] -= a4 g1; r2[0] -= a2 g2,
+     * r2[1] -= a3 g2, r2[2] -= a4 g2; r3[0] -= a3 g3, r3[1] -= a4 g3; r4[0] -= a4 g4. */
+    const v2d a12 = {a1, a2}, a23 = {a2, a3}, a34 = {a3, a4};
+    const v2d vg1 = {g1, g1}, vg2 = {g2, g2}, vg3 = {g3, g3};
+    *d_a1 = v2_load(r1) - a12 * vg1;
+    v2_store(r1, *d_a1);
+    v2_store(r1 + 2, v2_load(r1 + 2) - a34 * vg1);
+    v2_store(r2, v2_load(r2) - a23 * vg2);
+    r2[2] -= a4 * g2;
+    v2_store(r3, v2_load(r3) - a34 * vg3);
+    r4[0] -= a4 * g4;
+    /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
+     * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
+    double *b = B + TAIL * i;
+    const v2d vdinv = {dinv, dinv};
+    const v2d h01 = v2_load(b), h23 = v2_load(b + 2);
+    const v2d u01 = h01 * vdinv, u23 = h23 * vdinv;
+    v2_store(b, u01);
+    v2_store(b + 2, u23);
+    const double ak[BAND_P] = {a1, a2, a3, a4};
+    for (size_t k = 1; k <= BAND_P; ++k) {
+        const v2d va = {ak[k - 1], ak[k - 1]};
+        double *bk = b + TAIL * k;
+        const v2d zero = {0, 0};
+        const int from_zero = fresh && k == BAND_P;
+        v2_store(bk, (from_zero ? zero : v2_load(bk)) - u01 * va);
+        v2_store(bk + 2, (from_zero ? zero : v2_load(bk + 2)) - u23 * va);
+    }
+    /* T[a][b] -= U[a][i] h_b, b <= a. */
+    const v2d v1 = {u01[1], u01[1]}, v2 = {u23[0], u23[0]}, v3 = {u23[1], u23[1]};
+    *t00 -= u01[0] * h01[0];
+    *t10 -= v1 * h01;
+    *t20 -= v2 * h01;
+    *t22 -= u23[0] * h23[0];
+    *t30 -= v3 * h01;
+    *t32 -= v3 * h23;
+    return 0;
+}
+
 /* Four doubles: in one AVX2 register where band_factor_from's clone has them, else two SSE2
  * pairs; either way each lane's product and difference are the scalar ones, bit for bit. */
 typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
@@ -213,14 +288,15 @@ typedef struct {
     v4d t1, t2, t3;
 } tail_acc;
 
-/* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
- * tail entries scaled by 1 / d into U's column, and its updates of the next BAND_P columns;
+/* factor_column2 in fours of lanes (the AVX2 build's, band_factor_avx2: in pairs, as the
+ * baseline has them, it costs more than factor_column2): its band and tail entries scaled by
+ * 1 / d into U's column, and its updates of the next BAND_P columns;
  * the tail block's lower triangle (acc), and the next column's d, a1, a2 and a3 (nx), in the
  * caller's registers. fresh: column i + BAND_P's tail entries were never written (fill_window
  * leaves them unset, stale from an earlier window, and they are taken as zero), so its update
  * starts from zero rather than from memory (0 - p, the same operation on the same operands).
  * Nonzero if the pivot is not positive. */
-static inline __attribute__((always_inline)) int factor_column(double *L, double *B, size_t i,
+static inline __attribute__((always_inline)) int factor_column4(double *L, double *B, size_t i,
                                                                tail_acc *acc, v4d *nx,
                                                                const int fresh,
                                                                const double *src)
@@ -323,6 +399,20 @@ static inline void ck_save(double *ck, const double *L, const double *B, size_t 
     memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, B + TAIL * i, TAIL * BAND_P * sizeof *ck);
 }
 
+/* ck_save with the tail block's accumulators in pairs (factor_column2's). */
+static inline void ck_save2(double *ck, const double *L, const double *B, size_t i, double t00,
+                            v2d t10, v2d t20, double t22, v2d t30, v2d t32, size_t *next)
+{
+    if (i != *next)
+        return;
+    *next += CKS;
+    ck += CK_LEN * (i / CKS);
+    ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
+    ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
+    memcpy(ck + CK_ACC, L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
+    memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, B + TAIL * i, TAIL * BAND_P * sizeof *ck);
+}
+
 /* The checkpoint of column q (a multiple of CKS) back into A's columns q .. q + BAND_P - 1;
  * returns its tail block's accumulators (band_factor_from's acc0). */
 static const double *ck_restore(const double *ck, tband *A, size_t q)
@@ -344,7 +434,7 @@ static const double *ck_restore(const double *ck, tband *A, size_t q)
  * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
 static inline __attribute__((always_inline)) int
 band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC], double *ck,
-                 const double *src)
+                 const double *src, const int wide)
 {
     if (!src)
         src = A->L;
@@ -353,7 +443,39 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
      * otherwise make the compiler load them again from A at every column. */
     double *const L = A->L, *const B = A->B;
     size_t i = q0;
-    if (t == TAIL && m > BAND_P) {
+    if (t == TAIL && m > BAND_P && !wide) {
+        double(*T)[TAIL] = A->T;
+        v2d t10 = {T[1][0], T[1][1]}, t20 = {T[2][0], T[2][1]}, t30 = {T[3][0], T[3][1]},
+            t32 = {T[3][2], T[3][3]};
+        double t00 = T[0][0], t22 = T[2][2];
+        if (acc0) {
+            t00 = acc0[0], t10 = (v2d){acc0[1], acc0[2]}, t20 = (v2d){acc0[3], acc0[4]};
+            t22 = acc0[5], t30 = (v2d){acc0[6], acc0[7]}, t32 = (v2d){acc0[8], acc0[9]};
+        }
+        size_t ck_next = ck ? (i + CKS - 1) / CKS * CKS : SIZE_MAX;
+        int broke = 0;
+        v2d d_a1 = v2_load(L + (BAND_P + 1) * i); /* column i's d and a1 */
+        /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
+         * while i + BAND_P < m - BAND_P. */
+        const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
+                     f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
+        for (; i + BAND_P < m && i < f0 && !broke; ++i) {
+            ck_save2(ck, L, B, i, t00, t10, t20, t22, t30, t32, &ck_next);
+            broke = factor_column2(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
+        }
+        for (; i < f1 && !broke; ++i) {
+            ck_save2(ck, L, B, i, t00, t10, t20, t22, t30, t32, &ck_next);
+            broke = factor_column2(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
+        }
+        for (; i + BAND_P < m && !broke; ++i) {
+            ck_save2(ck, L, B, i, t00, t10, t20, t22, t30, t32, &ck_next);
+            broke = factor_column2(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
+        }
+        T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
+        T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
+        if (broke)
+            return 1;
+    } else if (t == TAIL && m > BAND_P) {
         double(*T)[TAIL] = A->T;
         tail_acc acc = {T[0][0], {T[1][0], T[1][1], 0, 0}, {T[2][0], T[2][1], T[2][2], 0},
                         {T[3][0], T[3][1], T[3][2], T[3][3]}};
@@ -370,15 +492,15 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column(L, B, i, &acc, &nx, 0, src);
+            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column(L, B, i, &acc, &nx, 1, src);
+            broke = factor_column4(L, B, i, &acc, &nx, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column(L, B, i, &acc, &nx, 0, src);
+            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
         }
         T[0][0] = acc.t00, T[1][0] = acc.t1[0], T[1][1] = acc.t1[1];
         T[2][0] = acc.t2[0], T[2][1] = acc.t2[1], T[2][2] = acc.t2[2];
@@ -418,12 +540,13 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
 }
 
-/* band_factor_body compiled for the baseline (SSE2 on x86-64) and, where the compiler can, for
- * AVX2, whose 256-bit registers hold a column's four tail entries and a tail block's row in one
- * (v4d) and whose three-operand instructions save the copies; band_factor_from takes the AVX2
- * one where the processor has it. The same IEEE operations on the same operands in both, no
- * FMA (AVX2 alone does not enable it, and ISO C mode does not contract), so the same bits
- * (tirenv_ring__tread_factor_isa). */
+/* band_factor_body compiled for the baseline (SSE2 on x86-64), its interior columns in pairs
+ * (factor_column2), and, where the compiler can, for AVX2 in fours (factor_column4: 256-bit
+ * registers hold a column's four tail entries and a tail block's row in one, and the
+ * three-operand instructions save the copies); band_factor_from takes the AVX2 one where the
+ * processor has it (docs/performance.md, chapter 2). The same IEEE operations on the same
+ * operands in both, no FMA (AVX2 alone does not enable it, and ISO C mode does not contract),
+ * so the same bits (tirenv_ring__tread_factor_isa). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(TIRENV_RING_NO_AVX2)
 #define RING_AVX2 1
 #else
@@ -433,7 +556,7 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
 static int band_factor_base(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
                             double *ck, const double *src)
 {
-    return band_factor_body(A, fresh, q0, acc0, ck, src);
+    return band_factor_body(A, fresh, q0, acc0, ck, src, 0);
 }
 
 #if RING_AVX2
@@ -442,7 +565,7 @@ __attribute__((target("avx2"))) static int band_factor_avx2(tband *A, const int 
                                                             const double acc0[CK_ACC],
                                                             double *ck, const double *src)
 {
-    return band_factor_body(A, fresh, q0, acc0, ck, src);
+    return band_factor_body(A, fresh, q0, acc0, ck, src, 1);
 }
 #endif
 
