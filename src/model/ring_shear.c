@@ -2805,7 +2805,8 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
     *avx2 = 0;
     if (!T->ap_ok || t != TAIL || N < t + 1)
         return -1;
-    const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1);
+    const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1),
+                 n_kept = m > BAND_P ? CK_LEN * ((m - BAND_P - 1) / CKS + 1) : 0;
     tband X[2] = {{0}};
     double *ck = calloc(2 * n_ck, sizeof *ck);
     int st = !ck || band_alloc(&X[0], N, TAIL) || band_alloc(&X[1], N, TAIL) ? -1 : 0;
@@ -2825,8 +2826,7 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
                 st = !tirenv_ring__same_bits(X[0].L, X[1].L, W * m) ||
                      !tirenv_ring__same_bits(X[0].B, X[1].B, TAIL * m) ||
                      !tirenv_ring__same_bits(&X[0].T[0][0], &X[1].T[0][0], TAIL * TAIL) ||
-                     !tirenv_ring__same_bits(ck, ck + n_ck,
-                                             m > BAND_P ? CK_LEN * ((m - BAND_P - 1) / CKS + 1) : 0);
+                     !tirenv_ring__same_bits(ck, ck + n_ck, n_kept);
         }
 #endif
     }
