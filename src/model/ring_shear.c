@@ -2805,8 +2805,7 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
     *avx2 = 0;
     if (!T->ap_ok || t != TAIL || N < t + 1)
         return -1;
-    const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1),
-                 n_kept = m > BAND_P ? CK_LEN * ((m - BAND_P - 1) / CKS + 1) : 0;
+    const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1);
     tband X[2] = {{0}};
     double *ck = calloc(2 * n_ck, sizeof *ck);
     int st = !ck || band_alloc(&X[0], N, TAIL) || band_alloc(&X[1], N, TAIL) ? -1 : 0;
@@ -2820,6 +2819,7 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
         st = band_factor_base(&X[0], 1, 0, NULL, ck, NULL) != 0 ? -1 : 0;
 #if RING_AVX2
         if (st == 0 && __builtin_cpu_supports("avx2")) {
+            const size_t n_kept = m > BAND_P ? CK_LEN * ((m - BAND_P - 1) / CKS + 1) : 0;
             *avx2 = 1;
             st = band_factor_avx2(&X[1], 1, 0, NULL, ck + n_ck, NULL) != 0 ? -1 : 0;
             if (st == 0)
