@@ -270,8 +270,8 @@ static inline __attribute__((always_inline)) int factor_column2(double *L, doubl
     return 0;
 }
 
-/* Four doubles: in one AVX2 register where band_factor_from's clone has them, else two SSE2
- * pairs; either way each lane's product and difference are the scalar ones, bit for bit. */
+/* Four doubles: in one AVX2 register in band_factor_avx2 (else two SSE2 pairs); either way
+ * each lane's product and difference are the scalar ones, bit for bit. */
 typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
 
 /* By pointer, not by value: a function passing a v4d would have an ABI that depends on
@@ -280,7 +280,7 @@ static inline void v4_load(v4d *v, const double *p) { memcpy(v, p, sizeof *v); }
 
 static inline void v4_store(double *p, const v4d *v) { memcpy(p, v, sizeof *v); }
 
-/* The tail block's lower triangle as band_factor_from carries it in registers through the
+/* The tail block's lower triangle as factor_column4 carries it in registers through the
  * interior columns: T[0][0], then rows 1 to 3 as four lanes each (T[a][0 .. 3]; the lanes
  * past the diagonal are updated too, and never read). */
 typedef struct {
@@ -288,11 +288,11 @@ typedef struct {
     v4d t1, t2, t3;
 } tail_acc;
 
-/* factor_column2 in fours of lanes (the AVX2 build's, band_factor_avx2: in pairs, as the
- * baseline has them, it costs more than factor_column2): its band and tail entries scaled by
- * 1 / d into U's column, and its updates of the next BAND_P columns;
- * the tail block's lower triangle (acc), and the next column's d, a1, a2 and a3 (nx), in the
- * caller's registers. fresh: column i + BAND_P's tail entries were never written (fill_window
+/* factor_column2 in fours of lanes (the AVX2 build's, band_factor_avx2: split into pairs, as
+ * the baseline would have them, it costs more than factor_column2): its band and tail entries
+ * scaled by 1 / d into U's column, and its updates of the next BAND_P columns; the tail
+ * block's lower triangle (acc), and the next column's d, a1, a2 and a3 (nx), in the caller's
+ * registers. fresh: column i + BAND_P's tail entries were never written (fill_window
  * leaves them unset, stale from an earlier window, and they are taken as zero), so its update
  * starts from zero rather than from memory (0 - p, the same operation on the same operands).
  * Nonzero if the pivot is not positive. */
