@@ -447,6 +447,10 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
  * same bits, 1 if not, -1 if it cannot. *q the restart's column, *moved 1 if column c moved. */
 int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, int *moved);
 
+/* For tests: the last factorised system factorised by ring_shear.c's baseline and AVX2 builds;
+ * 0 if the same bits, 1 if not, -1 if it cannot. *avx2 1 if the AVX2 build ran. */
+int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2);
+
 /* For tests: the last factorised system solved with its factor for a pseudo-random right-hand
  * side from seed: the residual max |b - A x| / (max row sum of |A| * max |x|); -1 if it cannot. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed);

@@ -195,20 +195,22 @@ static void band_add(tband *A, size_t i, size_t k, double v)
         A->T[k - m][i - m] += v;
 }
 
-/* One interior column i of band_factor with the full tail (i + BAND_P < m): its band and
- * tail entries scaled by 1 / d into U's column, and its updates of the next BAND_P columns,
- * two SSE2 lanes at a time; the tail block's lower triangle, and the next column's d and a1
- * (d_a1), in the caller's registers. fresh: column i + BAND_P's tail
- * entries were never written (fill_window leaves them unset, stale from an earlier window,
- * and they are taken as zero), so its update starts from zero rather than from memory
- * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive. */
-static inline __attribute__((always_inline)) int factor_column(tband *A, size_t i, v2d *t10,
-                                                               v2d *t20, v2d *t30, v2d *t32,
-                                                               double *t00, double *t22,
-                                                               v2d *d_a1, const int fresh,
-                                                               const double *src)
+/* One interior column i of band_factor with the full tail (i + BAND_P < m), in pairs of lanes
+ * (the baseline build's, band_factor_base): its band and tail entries scaled by 1 / d into U's
+ * column, and its updates of the next BAND_P columns, two SSE2 lanes at a time; the tail
+ * block's lower triangle, and the next column's d and a1 (d_a1), in the caller's registers.
+ * fresh: column i + BAND_P's tail entries were never written (fill_window leaves them unset,
+ * stale from an earlier window, and they are taken as zero), so its update starts from zero
+ * rather than from memory (0 - p, the same operation on the same operands). Nonzero if the
+ * pivot is not positive. */
+static inline __attribute__((always_inline)) int factor_column2(double *L, double *B, size_t i,
+                                                                v2d *t10, v2d *t20, v2d *t30,
+                                                                v2d *t32, double *t00,
+                                                                double *t22, v2d *d_a1,
+                                                                const int fresh,
+                                                                const double *src)
 {
-    double *c = A->L + (BAND_P + 1) * i;
+    double *c = L + (BAND_P + 1) * i;
     /* d and a1 (c[0], c[1]) as the column before left them, from registers: read back from
      * memory, its store and their load would lengthen the chain from pivot to pivot. */
     const double d = (*d_a1)[0];
@@ -242,7 +244,7 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
     r4[0] -= a4 * g4;
     /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
      * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
-    double *b = A->B + TAIL * i;
+    double *b = B + TAIL * i;
     const v2d vdinv = {dinv, dinv};
     const v2d h01 = v2_load(b), h23 = v2_load(b + 2);
     const v2d u01 = h01 * vdinv, u23 = h23 * vdinv;
@@ -268,6 +270,100 @@ static inline __attribute__((always_inline)) int factor_column(tband *A, size_t 
     return 0;
 }
 
+/* Four doubles: in one AVX2 register in band_factor_avx2 (else two SSE2 pairs); either way
+ * each lane's product and difference are the scalar ones, bit for bit. */
+typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
+
+/* By pointer, not by value: a function passing a v4d would have an ABI that depends on
+ * whether AVX is enabled (GCC's -Wpsabi). */
+static inline void v4_load(v4d *v, const double *p) { memcpy(v, p, sizeof *v); }
+
+static inline void v4_store(double *p, const v4d *v) { memcpy(p, v, sizeof *v); }
+
+/* The tail block's lower triangle as factor_column4 carries it in registers through the
+ * interior columns: T[0][0], then rows 1 to 3 as four lanes each (T[a][0 .. 3]; the lanes
+ * past the diagonal are updated too, and never read). */
+typedef struct {
+    double t00;
+    v4d t1, t2, t3;
+} tail_acc;
+
+/* factor_column2 in fours of lanes (the AVX2 build's, band_factor_avx2: split into pairs, as
+ * the baseline would have them, it costs more than factor_column2): its band and tail entries
+ * scaled by 1 / d into U's column, and its updates of the next BAND_P columns; the tail
+ * block's lower triangle (acc), and the next column's d, a1, a2 and a3 (nx), in the caller's
+ * registers. fresh: column i + BAND_P's tail entries were never written (fill_window
+ * leaves them unset, stale from an earlier window, and they are taken as zero), so its update
+ * starts from zero rather than from memory (0 - p, the same operation on the same operands).
+ * Nonzero if the pivot is not positive. */
+static inline __attribute__((always_inline)) int factor_column4(double *L, double *B, size_t i,
+                                                               tail_acc *acc, v4d *nx,
+                                                               const int fresh,
+                                                               const double *src)
+{
+    double *c = L + (BAND_P + 1) * i;
+    /* d, a1, a2 and a3 (c[0 .. 3]) as the column before left them, from registers: read
+     * back from memory, its stores and their loads would lengthen the chain from pivot to
+     * pivot. */
+    const double d = (*nx)[0];
+    if (!(d > 0))
+        return 1;
+    { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
+       * the system band_refactor copies from) */
+        const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
+        double *d4 = c + BAND_P * (BAND_P + 1);
+        v4d s;
+        v4_load(&s, s4);
+        v4_store(d4, &s);
+        d4[4] = s4[4];
+    }
+    const double dinv = 1 / d;
+    const double a1 = (*nx)[1], a2 = (*nx)[2], a3 = (*nx)[3], a4 = c[4];
+    const v4d a14 = {a1, a2, a3, a4}, g = a14 * (v4d){dinv, dinv, dinv, dinv};
+    const double g1 = g[0], g2 = g[1], g3 = g[2], g4 = g[3];
+    c[0] = dinv;
+    v4_store(c + 1, &g);
+    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
+           *r4 = r3 + (BAND_P + 1);
+    /* r1[0] -= a1 g1, r1[1] -= a2 g1, r1[2] -= a3 g1, r1[3] -= a4 g1; r2[0] -= a2 g2,
+     * r2[1] -= a3 g2, r2[2] -= a4 g2; r3[0] -= a3 g3, r3[1] -= a4 g3; r4[0] -= a4 g4. */
+    const v2d a23 = {a2, a3}, a34 = {a3, a4};
+    const v2d vg2 = {g2, g2}, vg3 = {g3, g3};
+    v4d r1v;
+    v4_load(&r1v, r1);
+    *nx = r1v - a14 * (v4d){g1, g1, g1, g1};
+    v4_store(r1, nx);
+    v2_store(r2, v2_load(r2) - a23 * vg2);
+    r2[2] -= a4 * g2;
+    v2_store(r3, v2_load(r3) - a34 * vg3);
+    r4[0] -= a4 * g4;
+    /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
+     * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
+    double *b = B + TAIL * i;
+    v4d h;
+    v4_load(&h, b);
+    const v4d u = h * (v4d){dinv, dinv, dinv, dinv};
+    v4_store(b, &u);
+    const double ak[BAND_P] = {a1, a2, a3, a4};
+    for (size_t k = 1; k <= BAND_P; ++k) {
+        const v4d va = {ak[k - 1], ak[k - 1], ak[k - 1], ak[k - 1]};
+        double *bk = b + TAIL * k;
+        const v4d zero = {0, 0, 0, 0};
+        const int from_zero = fresh && k == BAND_P;
+        v4d x = zero;
+        if (!from_zero)
+            v4_load(&x, bk);
+        x -= u * va;
+        v4_store(bk, &x);
+    }
+    /* T[a][b] -= U[a][i] h_b, b <= a. */
+    acc->t00 -= u[0] * h[0];
+    acc->t1 -= (v4d){u[1], u[1], u[1], u[1]} * h;
+    acc->t2 -= (v4d){u[2], u[2], u[2], u[2]} * h;
+    acc->t3 -= (v4d){u[3], u[3], u[3], u[3]} * h;
+    return 0;
+}
+
 /* The tail columns of the window's band that assemble may write before the factorisation
  * (fill_window zeroes these, and only these): the end correction's coupling of the first
  * unknowns (columns below FRESH_FROM) and the band's entries in the tail rows (the last
@@ -286,18 +382,35 @@ enum {
     CK_LEN = CK_ACC + (BAND_P + 1 + TAIL) * BAND_P
 };
 
-/* Before interior column i of A: its checkpoint's state into ck's slot for it, where i is a
- * multiple of CKS (ck NULL: none kept). */
-static inline void ck_save(double *ck, const tband *A, size_t i, double t00, v2d t10, v2d t20,
-                           double t22, v2d t30, v2d t32)
+/* Before interior column i of A: its checkpoint's state into ck's slot for it, where i is the
+ * next multiple of CKS to keep (*next, moved on to the one after; SIZE_MAX: none kept). One
+ * comparison a column. */
+static inline void ck_save(double *ck, const double *L, const double *B, size_t i,
+                           const tail_acc *acc, size_t *next)
 {
-    if (!ck || i % CKS != 0)
+    if (i != *next)
         return;
+    *next += CKS;
+    ck += CK_LEN * (i / CKS);
+    ck[0] = acc->t00, ck[1] = acc->t1[0], ck[2] = acc->t1[1];
+    ck[3] = acc->t2[0], ck[4] = acc->t2[1], ck[5] = acc->t2[2];
+    v4_store(ck + 6, &acc->t3);
+    memcpy(ck + CK_ACC, L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
+    memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, B + TAIL * i, TAIL * BAND_P * sizeof *ck);
+}
+
+/* ck_save with the tail block's accumulators in pairs (factor_column2's). */
+static inline void ck_save2(double *ck, const double *L, const double *B, size_t i, double t00,
+                            v2d t10, v2d t20, double t22, v2d t30, v2d t32, size_t *next)
+{
+    if (i != *next)
+        return;
+    *next += CKS;
     ck += CK_LEN * (i / CKS);
     ck[0] = t00, ck[1] = t10[0], ck[2] = t10[1], ck[3] = t20[0], ck[4] = t20[1];
     ck[5] = t22, ck[6] = t30[0], ck[7] = t30[1], ck[8] = t32[0], ck[9] = t32[1];
-    memcpy(ck + CK_ACC, A->L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
-    memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, A->B + TAIL * i, TAIL * BAND_P * sizeof *ck);
+    memcpy(ck + CK_ACC, L + (BAND_P + 1) * i, (BAND_P + 1) * BAND_P * sizeof *ck);
+    memcpy(ck + CK_ACC + (BAND_P + 1) * BAND_P, B + TAIL * i, TAIL * BAND_P * sizeof *ck);
 }
 
 /* The checkpoint of column q (a multiple of CKS) back into A's columns q .. q + BAND_P - 1;
@@ -319,15 +432,18 @@ static const double *ck_restore(const double *ck, tband *A, size_t q)
  * interior column, the columns before it factorised and their updates of the later ones
  * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
  * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
-static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
-                            double *ck, const double *src)
+static inline __attribute__((always_inline)) int
+band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC], double *ck,
+                 const double *src, const int wide)
 {
     if (!src)
         src = A->L;
     const size_t N = A->N, t = A->t, m = N - t;
-    double *L = A->L;
+    /* L and B in locals: the columns' stores (memcpy's, which may alias anything) would
+     * otherwise make the compiler load them again from A at every column. */
+    double *const L = A->L, *const B = A->B;
     size_t i = q0;
-    if (t == TAIL && m > BAND_P) {
+    if (t == TAIL && m > BAND_P && !wide) {
         double(*T)[TAIL] = A->T;
         v2d t10 = {T[1][0], T[1][1]}, t20 = {T[2][0], T[2][1]}, t30 = {T[3][0], T[3][1]},
             t32 = {T[3][2], T[3][3]};
@@ -336,6 +452,7 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
             t00 = acc0[0], t10 = (v2d){acc0[1], acc0[2]}, t20 = (v2d){acc0[3], acc0[4]};
             t22 = acc0[5], t30 = (v2d){acc0[6], acc0[7]}, t32 = (v2d){acc0[8], acc0[9]};
         }
+        size_t ck_next = ck ? (i + CKS - 1) / CKS * CKS : SIZE_MAX;
         int broke = 0;
         v2d d_a1 = v2_load(L + (BAND_P + 1) * i); /* column i's d and a1 */
         /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
@@ -343,19 +460,51 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
-            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
+            ck_save2(ck, L, B, i, t00, t10, t20, t22, t30, t32, &ck_next);
+            broke = factor_column2(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
-            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
+            ck_save2(ck, L, B, i, t00, t10, t20, t22, t30, t32, &ck_next);
+            broke = factor_column2(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
-            ck_save(ck, A, i, t00, t10, t20, t22, t30, t32);
-            broke = factor_column(A, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
+            ck_save2(ck, L, B, i, t00, t10, t20, t22, t30, t32, &ck_next);
+            broke = factor_column2(L, B, i, &t10, &t20, &t30, &t32, &t00, &t22, &d_a1, 0, src);
         }
         T[0][0] = t00, T[1][0] = t10[0], T[1][1] = t10[1], T[2][0] = t20[0], T[2][1] = t20[1];
         T[2][2] = t22, T[3][0] = t30[0], T[3][1] = t30[1], T[3][2] = t32[0], T[3][3] = t32[1];
+        if (broke)
+            return 1;
+    } else if (t == TAIL && m > BAND_P) {
+        double(*T)[TAIL] = A->T;
+        tail_acc acc = {T[0][0], {T[1][0], T[1][1], 0, 0}, {T[2][0], T[2][1], T[2][2], 0},
+                        {T[3][0], T[3][1], T[3][2], T[3][3]}};
+        if (acc0)
+            acc = (tail_acc){acc0[0], {acc0[1], acc0[2], 0, 0}, {acc0[3], acc0[4], acc0[5], 0},
+                             {acc0[6], acc0[7], acc0[8], acc0[9]}};
+        size_t ck_next = ck ? (i + CKS - 1) / CKS * CKS : SIZE_MAX;
+        int broke = 0;
+        v4d nx; /* column i's d, a1, a2 and a3 */
+        v4_load(&nx, L + (BAND_P + 1) * i);
+        /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
+         * while i + BAND_P < m - BAND_P. */
+        const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
+                     f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
+        for (; i + BAND_P < m && i < f0 && !broke; ++i) {
+            ck_save(ck, L, B, i, &acc, &ck_next);
+            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
+        }
+        for (; i < f1 && !broke; ++i) {
+            ck_save(ck, L, B, i, &acc, &ck_next);
+            broke = factor_column4(L, B, i, &acc, &nx, 1, src);
+        }
+        for (; i + BAND_P < m && !broke; ++i) {
+            ck_save(ck, L, B, i, &acc, &ck_next);
+            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
+        }
+        T[0][0] = acc.t00, T[1][0] = acc.t1[0], T[1][1] = acc.t1[1];
+        T[2][0] = acc.t2[0], T[2][1] = acc.t2[1], T[2][2] = acc.t2[2];
+        T[3][0] = acc.t3[0], T[3][1] = acc.t3[1], T[3][2] = acc.t3[2], T[3][3] = acc.t3[3];
         if (broke)
             return 1;
     }
@@ -368,7 +517,6 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
         const double dinv = 1 / c[0];
         c[0] = dinv;
         const size_t kmax = m - 1 - i < BAND_P ? m - 1 - i : BAND_P;
-        double *const B = A->B;
         double u[TAIL];
         for (size_t a = 0; a < t; ++a)
             u[a] = B[TAIL * i + a] * dinv;
@@ -390,6 +538,45 @@ static int band_factor_from(tband *A, const int fresh, size_t q0, const double a
     }
     /* The dense tail, Schur complement of the band: src/core's Cholesky. */
     return t > 0 && tirenv_core__cholesky(&A->T[0][0], t, TAIL) != 0;
+}
+
+/* band_factor_body compiled for the baseline (SSE2 on x86-64), its interior columns in pairs
+ * (factor_column2), and, where the compiler can, for AVX2 in fours (factor_column4: 256-bit
+ * registers hold a column's four tail entries and a tail block's row in one, and the
+ * three-operand instructions save the copies); band_factor_from takes the AVX2 one where the
+ * processor has it (docs/performance.md, chapter 2). The same IEEE operations on the same
+ * operands in both, no FMA (AVX2 alone does not enable it, and ISO C mode does not contract),
+ * so the same bits (tirenv_ring__tread_factor_isa). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(TIRENV_RING_NO_AVX2)
+#define RING_AVX2 1
+#else
+#define RING_AVX2 0
+#endif
+
+static int band_factor_base(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
+                            double *ck, const double *src)
+{
+    return band_factor_body(A, fresh, q0, acc0, ck, src, 0);
+}
+
+#if RING_AVX2
+__attribute__((target("avx2"))) static int band_factor_avx2(tband *A, const int fresh,
+                                                            size_t q0,
+                                                            const double acc0[CK_ACC],
+                                                            double *ck, const double *src)
+{
+    return band_factor_body(A, fresh, q0, acc0, ck, src, 1);
+}
+#endif
+
+static int band_factor_from(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
+                            double *ck, const double *src)
+{
+#if RING_AVX2
+    if (__builtin_cpu_supports("avx2"))
+        return band_factor_avx2(A, fresh, q0, acc0, ck, src);
+#endif
+    return band_factor_base(A, fresh, q0, acc0, ck, src);
 }
 
 static int band_factor(tband *A) { return band_factor_from(A, 0, 0, NULL, NULL, NULL); }
@@ -2645,6 +2832,50 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     }
     T->ap_ok = 0;
     free(X.L);
+    return st;
+}
+
+/* For tests: the window's last factorised system (T->ap, its fresh tail entries taken as zero)
+ * factorised from column 0 by band_factor_body's baseline build and by its AVX2 one, with
+ * checkpoints; 0 if the two factors and their checkpoints are the same bits, 1 if not, -1 if it
+ * cannot (no factor held, out of memory). *avx2: 1 if the AVX2 build ran (compiled in and the
+ * processor has it), else 0 and only the baseline ran (returns 0). */
+int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const tband *P = &T->ap;
+    const size_t N = P->N, t = P->t, W = BAND_P + 1;
+    *avx2 = 0;
+    if (!T->ap_ok || t != TAIL || N < t + 1)
+        return -1;
+    const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1);
+    tband X[2] = {{0}};
+    double *ck = calloc(2 * n_ck, sizeof *ck);
+    int st = !ck || band_alloc(&X[0], N, TAIL) || band_alloc(&X[1], N, TAIL) ? -1 : 0;
+    for (int k = 0; k < 2 && st == 0; ++k) {
+        X[k].N = N, X[k].t = t;
+        memcpy(X[k].L, P->L, W * m * sizeof *X[k].L);
+        memcpy(X[k].B, P->B, TAIL * m * sizeof *X[k].B);
+        memcpy(X[k].T, P->T, sizeof X[k].T);
+    }
+    if (st == 0) {
+        st = band_factor_base(&X[0], 1, 0, NULL, ck, NULL) != 0 ? -1 : 0;
+#if RING_AVX2
+        if (st == 0 && __builtin_cpu_supports("avx2")) {
+            const size_t n_kept = m > BAND_P ? CK_LEN * ((m - BAND_P - 1) / CKS + 1) : 0;
+            *avx2 = 1;
+            st = band_factor_avx2(&X[1], 1, 0, NULL, ck + n_ck, NULL) != 0 ? -1 : 0;
+            if (st == 0)
+                st = !tirenv_ring__same_bits(X[0].L, X[1].L, W * m) ||
+                     !tirenv_ring__same_bits(X[0].B, X[1].B, TAIL * m) ||
+                     !tirenv_ring__same_bits(&X[0].T[0][0], &X[1].T[0][0], TAIL * TAIL) ||
+                     !tirenv_ring__same_bits(ck, ck + n_ck, n_kept);
+        }
+#endif
+    }
+    free(X[0].L);
+    free(X[1].L);
+    free(ck);
     return st;
 }
 

@@ -898,6 +898,36 @@ static void test_refactor_restart(void **state)
     tirenv_ring_free(r);
 }
 
+/* The window's factorisation compiled for AVX2 (ring_shear.c's band_factor_avx2: four-lane
+ * vectors, the tail block's rows carried whole) against the baseline build, bit for bit, the
+ * factor and its checkpoints: on the last Newton step's system at the bench cleat's positions
+ * and five heights each. It fails if a lane's operation differs between the builds (a reordered
+ * or fused product, a lane past the diagonal leaking into a stored entry). Where the processor
+ * has no AVX2 only the baseline runs and there is nothing to compare. */
+static void test_factor_isa_same_bits(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    size_t compared = 0;
+    for (size_t i = 0; i < 5; ++i)
+        for (size_t k = 0; k < 5; ++k) {
+            evaluate_at(r, p, t.springs.R0, i, k);
+            int avx2 = 0;
+            const int st = tirenv_ring__tread_factor_isa(r, &avx2);
+            if (st == -1)
+                continue; /* no contact: no window factorised */
+            assert_int_equal(st, 0);
+            compared += (size_t)avx2;
+        }
+    print_message("factorisations compared: %zu\n", compared);
+    assert_true(compared == 0 || compared >= 15);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+}
+
 /* The window's banded U D U^T factor (ring_shear.c's band_factor_from, band_refactor) solves its
  * system backward-stably: at the bench cleat's positions and five heights each, after each
  * evaluation, the last Newton step's system solved for three pseudo-random right-hand sides
@@ -1445,6 +1475,7 @@ int main(void)
         cmocka_unit_test(test_tread_exterior),
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
+        cmocka_unit_test(test_factor_isa_same_bits),
         cmocka_unit_test(test_solve_residual),
         cmocka_unit_test(test_solve_leading_zeros),
         cmocka_unit_test(test_answers_as_main),
