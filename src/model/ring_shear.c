@@ -544,7 +544,7 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
  * (factor_column2), and, where the compiler can, for AVX2 in fours (factor_column4: 256-bit
  * registers hold a column's four tail entries and a tail block's row in one, and the
  * three-operand instructions save the copies); band_factor_from takes the AVX2 one where the
- * processor has it (docs/performance.md, chapter 2). The same IEEE operations on the same
+ * processor has it (docs/performance.md 2.27). The same IEEE operations on the same
  * operands in both, no FMA (AVX2 alone does not enable it, and ISO C mode does not contract),
  * so the same bits (tirenv_ring__tread_factor_isa). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(TIRENV_RING_NO_AVX2)
