@@ -180,6 +180,32 @@ static tirenv_profile *random_ground(tirenv_rng *rng, size_t n)
     return p;
 }
 
+/* The grounds the fan's tests sweep: the bench cleat, a class C road with vertices 3 mm apart,
+ * random grounds of 400 and 60 vertices (walls among them, from rng) and a 0.05 x 0.025 m
+ * cleat. */
+enum { N_GROUNDS = 5 };
+
+static void seeded_grounds(tirenv_rng *rng, tirenv_profile *g[N_GROUNDS])
+{
+    tirenv_road_settings rs = tirenv_road_default();
+    rs.length = 20;
+    rs.dx = 0.003;
+    tirenv_diag diag;
+    g[0] = tirenv_profile_cleat(0.3, 0.1);
+    assert_int_equal(tirenv_road_iso8608(&rs, &g[1], &diag), TIRENV_OK);
+    g[2] = random_ground(rng, 400);
+    g[3] = random_ground(rng, 60);
+    g[4] = tirenv_profile_cleat(0.05, 0.025);
+    for (size_t i = 0; i < N_GROUNDS; ++i)
+        assert_non_null(g[i]);
+}
+
+static void free_grounds(tirenv_profile *g[N_GROUNDS])
+{
+    for (size_t i = 0; i < N_GROUNDS; ++i)
+        tirenv_profile_free(g[i]);
+}
+
 enum { FAN_N = 361 };
 
 /* The fans of the tests below: N rays half a degree apart about the straight-down ray
@@ -216,16 +242,10 @@ static void test_fan_matches_single_rays(void **state)
     const size_t i0 = N / 2;
     static fan_arrays fa;
     const tirenv_springs__fan_rays rays = half_degree_fan(&fa, R0);
-    tirenv_road_settings rs = tirenv_road_default();
-    rs.length = 20;
-    rs.dx = 0.003;
-    tirenv_profile *grounds[4] = {tirenv_profile_cleat(0.3, 0.1), NULL, NULL, NULL};
-    tirenv_diag diag;
-    assert_int_equal(tirenv_road_iso8608(&rs, &grounds[1], &diag), TIRENV_OK);
-    grounds[2] = random_ground(rng, 400);
-    grounds[3] = random_ground(rng, 60);
+    tirenv_profile *grounds[N_GROUNDS];
+    seeded_grounds(rng, grounds);
     size_t rays_checked = 0, hits = 0, reused = 0, declined = 0;
-    for (size_t gi = 0; gi < 4; ++gi) {
+    for (size_t gi = 0; gi < 4; ++gi) { /* all but the small cleat */
         const tirenv_profile *p = grounds[gi];
         double x_lo, x_hi;
         tirenv_profile_extent(p, &x_lo, &x_hi);
@@ -274,8 +294,7 @@ static void test_fan_matches_single_rays(void **state)
     print_message("fan: %zu rays (%zu hits); reuse at another height: %zu taken, %zu "
                   "declined\n", rays_checked, hits, reused, declined);
     assert_true(hits > 10000 && reused > 200 && declined > 50);
-    for (size_t gi = 0; gi < 4; ++gi)
-        tirenv_profile_free(grounds[gi]);
+    free_grounds(grounds);
     tirenv_rng_free(rng);
 }
 
@@ -298,17 +317,10 @@ static void test_fan_runs_match_walks(void **state)
     tirenv_springs__fan_rays runs = walked;
     runs.ordered = tirenv_springs__fan_rays_ordered(&runs, N);
     assert_int_equal(runs.ordered, 1);
-    tirenv_road_settings rs = tirenv_road_default();
-    rs.length = 20;
-    rs.dx = 0.003;
-    tirenv_profile *grounds[5] = {tirenv_profile_cleat(0.3, 0.1), NULL, NULL, NULL,
-                                  tirenv_profile_cleat(0.05, 0.025)};
-    tirenv_diag diag;
-    assert_int_equal(tirenv_road_iso8608(&rs, &grounds[1], &diag), TIRENV_OK);
-    grounds[2] = random_ground(rng, 400);
-    grounds[3] = random_ground(rng, 60);
+    tirenv_profile *grounds[N_GROUNDS];
+    seeded_grounds(rng, grounds);
     size_t rays_checked = 0, past_end = 0, finite = 0, reused = 0;
-    for (size_t gi = 0; gi < 5; ++gi) {
+    for (size_t gi = 0; gi < N_GROUNDS; ++gi) {
         const tirenv_profile *p = grounds[gi];
         const long n = (long)tirenv_profile_size(p);
         double x_lo, x_hi;
@@ -349,8 +361,7 @@ static void test_fan_runs_match_walks(void **state)
     print_message("fan runs: %zu rays (%zu finite, %zu past the profile's end); %zu reuses\n",
                   rays_checked, finite, past_end, reused);
     assert_true(finite > 10000 && past_end > 1000 && reused > 100);
-    for (size_t gi = 0; gi < 5; ++gi)
-        tirenv_profile_free(grounds[gi]);
+    free_grounds(grounds);
     tirenv_rng_free(rng);
 }
 
@@ -375,17 +386,10 @@ static void test_faces_rho_runs(void **state)
     static fan_arrays fa;
     tirenv_springs__fan_rays fan = half_degree_fan(&fa, R0);
     fan.ordered = tirenv_springs__fan_rays_ordered(&fan, N);
-    tirenv_road_settings rs = tirenv_road_default();
-    rs.length = 20;
-    rs.dx = 0.003;
-    tirenv_profile *grounds[5] = {tirenv_profile_cleat(0.3, 0.1), NULL, NULL, NULL,
-                                  tirenv_profile_cleat(0.05, 0.025)};
-    tirenv_diag diag;
-    assert_int_equal(tirenv_road_iso8608(&rs, &grounds[1], &diag), TIRENV_OK);
-    grounds[2] = random_ground(rng, 400);
-    grounds[3] = random_ground(rng, 60);
+    tirenv_profile *grounds[N_GROUNDS];
+    seeded_grounds(rng, grounds);
     size_t taken = 0, refused = 0, rays_checked = 0, exact = 0;
-    for (size_t gi = 0; gi < 5; ++gi) {
+    for (size_t gi = 0; gi < N_GROUNDS; ++gi) {
         const tirenv_profile *p = grounds[gi];
         double x_lo, x_hi;
         tirenv_profile_extent(p, &x_lo, &x_hi);
@@ -447,8 +451,7 @@ static void test_faces_rho_runs(void **state)
     print_message("faces in runs: %zu sets taken, %zu refused; %zu rays, %zu as face_rho's bits\n",
                   taken, refused, rays_checked, exact);
     assert_true(taken > 500 && refused > 50 && rays_checked > 50000 && exact > 5000);
-    for (size_t gi = 0; gi < 5; ++gi)
-        tirenv_profile_free(grounds[gi]);
+    free_grounds(grounds);
     tirenv_rng_free(rng);
 }
 
