@@ -622,6 +622,18 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
  * [lo, from). */
 void tirenv_springs__cc_chain_solve(const tirenv_springs__cc *c, double x[], size_t lo,
                                     size_t from, size_t hi);
+/* x1 := K_FF^-1 x1 on chain [lo1, hi1] and x2 := K_FF^-1 x2 on [lo2, hi2], each zero on
+ * [lo, from), interleaved: the bits of a chain_solve on each. x1 and x2 one array only where
+ * the chains are apart. */
+void tirenv_springs__cc_chain_solve_pair(const tirenv_springs__cc *c, double x1[], size_t lo1,
+                                         size_t from1, size_t hi1, double x2[], size_t lo2,
+                                         size_t from2, size_t hi2);
+/* x, y and z := K_FF^-1 of each on one chain [lo, hi] of the factor kept, x whole, y zero on
+ * [lo, from_y), z on [lo, from_z), from_y <= from_z; three arrays apart: the bits of a
+ * chain_solve on each. */
+void tirenv_springs__cc_chain_solve_three(const tirenv_springs__cc *c, double x[], double y[],
+                                          size_t from_y, double z[], size_t from_z, size_t lo,
+                                          size_t hi);
 /* x := K_FF^-1 x on every chain of the factor kept: the bits of a chain_solve on each. */
 void tirenv_springs__cc_chains_solve(const tirenv_springs__cc *c, double x[]);
 
