@@ -568,7 +568,7 @@ typedef struct {
      * or at another x tirenv_springs__cc_root_at), while pred_ok: its position and height
      * (pred_x, pred_z, m), w on [f0, f1] (pred_w[e], m) and the working rows between
      * elements' reactions (pred_lam, N, in schur_pos' order), the update's start there;
-     * root_y its scratch (N + 2 each). */
+     * pred_w N + 2; root_y its scratch, two columns of N + 2. */
     int pred_ok;
     double pred_x, pred_z;
     double *pred_w, *root_y;
