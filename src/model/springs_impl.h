@@ -398,11 +398,14 @@ void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, doub
                                 double *b, double *da_dt, double *db_dt);
 /* A row between elements' own compliance (a + b - 1) c0 (m/N; >= 0, a + b >= 1 but for
  * round-off) at its weights a and b, above; inline, the same bits wherever the rows are made
- * or moved in z (springs_rows.c, springs_update.c, springs_root.c). */
+ * or moved in z (springs_rows.c, springs_update.c, springs_root.c). a + b - 1 is never -0
+ * (x - 1 is +0 where x is 1), so its larger with 0 is the select below, NaN to 0 as fmax
+ * has it: fmax's call sat on the root's secant's chain of dependent operations. */
 static inline double tirenv_springs__cc_compliance(const tirenv_springs__cc_tire *T, double a,
                                                    double b)
 {
-    return T->c0 * fmax(a + b - 1, 0);
+    const double s = a + b - 1;
+    return T->c0 * (s > 0 ? s : 0);
 }
 
 /* A row's t closer than this to 0 or 1 is taken as the element itself (springs_rows.c's snap);
