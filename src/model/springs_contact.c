@@ -33,7 +33,7 @@ int tirenv_springs__cc_init(tirenv_springs__cc *c, size_t N)
         !(c->upd_w = calloc(N + 2, sizeof *c->upd_w)) ||
         !(c->upd_pin = calloc(N, sizeof *c->upd_pin)) ||
         !(c->pred_w = calloc(N + 2, sizeof *c->pred_w)) ||
-        !(c->root_y = calloc(N + 2, sizeof *c->root_y)) ||
+        !(c->root_y = calloc(2 * (N + 2), sizeof *c->root_y)) ||
         !(c->root_du = calloc(N + 2, sizeof *c->root_du)) ||
         !(c->root_v = calloc(N + 2, sizeof *c->root_v)))
         return TIRENV_ENOMEM;

@@ -398,11 +398,14 @@ void tirenv_springs__cc_weights(const tirenv_springs__cc_tire *T, double t, doub
                                 double *b, double *da_dt, double *db_dt);
 /* A row between elements' own compliance (a + b - 1) c0 (m/N; >= 0, a + b >= 1 but for
  * round-off) at its weights a and b, above; inline, the same bits wherever the rows are made
- * or moved in z (springs_rows.c, springs_update.c, springs_root.c). */
+ * or moved in z (springs_rows.c, springs_update.c, springs_root.c). a + b - 1 is never -0
+ * (x - 1 is +0 where x is 1), so its larger with 0 is the select below, NaN to 0 as fmax
+ * has it: fmax's call sat on the root's secant's chain of dependent operations. */
 static inline double tirenv_springs__cc_compliance(const tirenv_springs__cc_tire *T, double a,
                                                    double b)
 {
-    return T->c0 * fmax(a + b - 1, 0);
+    const double s = a + b - 1;
+    return T->c0 * (s > 0 ? s : 0);
 }
 
 /* A row's t closer than this to 0 or 1 is taken as the element itself (springs_rows.c's snap);
@@ -568,7 +571,7 @@ typedef struct {
      * or at another x tirenv_springs__cc_root_at), while pred_ok: its position and height
      * (pred_x, pred_z, m), w on [f0, f1] (pred_w[e], m) and the working rows between
      * elements' reactions (pred_lam, N, in schur_pos' order), the update's start there;
-     * root_y its scratch (N + 2 each). */
+     * pred_w N + 2; root_y its scratch, two columns of N + 2. */
     int pred_ok;
     double pred_x, pred_z;
     double *pred_w, *root_y;
@@ -622,6 +625,18 @@ void tirenv_springs__cc_schur_solve_at(const tirenv_springs__cc *c,
  * [lo, from). */
 void tirenv_springs__cc_chain_solve(const tirenv_springs__cc *c, double x[], size_t lo,
                                     size_t from, size_t hi);
+/* x1 := K_FF^-1 x1 on chain [lo1, hi1] and x2 := K_FF^-1 x2 on [lo2, hi2], each zero on
+ * [lo, from), interleaved: the bits of a chain_solve on each. x1 and x2 one array only where
+ * the chains are apart. */
+void tirenv_springs__cc_chain_solve_pair(const tirenv_springs__cc *c, double x1[], size_t lo1,
+                                         size_t from1, size_t hi1, double x2[], size_t lo2,
+                                         size_t from2, size_t hi2);
+/* x, y and z := K_FF^-1 of each on one chain [lo, hi] of the factor kept, x whole, y zero on
+ * [lo, from_y), z on [lo, from_z), from_y <= from_z; three arrays apart: the bits of a
+ * chain_solve on each. */
+void tirenv_springs__cc_chain_solve_three(const tirenv_springs__cc *c, double x[], double y[],
+                                          size_t from_y, double z[], size_t from_z, size_t lo,
+                                          size_t hi);
 /* x := K_FF^-1 x on every chain of the factor kept: the bits of a chain_solve on each. */
 void tirenv_springs__cc_chains_solve(const tirenv_springs__cc *c, double x[]);
 

@@ -48,6 +48,7 @@ typedef struct {
     double w_T[S_MAX], dw[S_MAX];      /* the base's w and dw/dz at the slots */
     int no_l;                          /* l0 = dl = 0 (root_at's): no base reactions */
     const tirenv_springs__cc_cols *col; /* K_FF^-1 e_s at the slots (the workspace's) */
+    size_t todo[S_MAX], n_todo;        /* the slots whose columns base_rows left to solve */
 } root_rows;
 
 /* A vertex row of sector (i, i + 1) at dx = V_x - x, dzv = z - V_z: its t into *t, and
@@ -164,19 +165,74 @@ static int at_height(const tirenv_springs__cc_tire *T, const root_rows *W, doubl
                    : rows_at(T, W, x, z, dz, lam, B, g_out, dF, W->k, 0);
 }
 
+/* Slot s's column y = K_FF^-1 e_s on its row's chain [lo, hi] into W's cols: phi_s = f . y
+ * (the hub's weights, the free chains' beyond the span at its ends), y at the chain's ends
+ * and at the slots on it. */
+static void column_done(tirenv_springs__cc *c, const root_rows *W,
+                        const tirenv_springs__cc_tire *T, double S_l, double S_r, size_t s,
+                        const double y[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, ns = 2 * W->k;
+    const size_t lo = c->chain_lo[s / 2], hi = c->chain_hi[s / 2];
+    const double k_r = T->k_r, *ct = T->cos_t;
+    tirenv_springs__cc_cols *C = &c->cols;
+    double f = 0;
+    for (size_t e = lo; e <= hi; ++e)
+        f += k_r * ct[e] * y[e];
+    f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
+    C->phi[s] = f;
+    C->ylo[s] = y[lo];
+    C->yhi[s] = y[hi];
+    for (size_t r = 0; r < ns; ++r)
+        if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
+            C->Y[s][r] = y[W->el[r]];
+}
+
+/* column_done for slots s1 and s2 on one chain: the two sums interleaved, each in its order. */
+static void columns_done(tirenv_springs__cc *c, const root_rows *W,
+                         const tirenv_springs__cc_tire *T, double S_l, double S_r, size_t s1,
+                         const double y1[], size_t s2, const double y2[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, ns = 2 * W->k;
+    const size_t lo = c->chain_lo[s1 / 2], hi = c->chain_hi[s1 / 2];
+    const double k_r = T->k_r, *ct = T->cos_t;
+    tirenv_springs__cc_cols *C = &c->cols;
+    double f = 0, g = 0;
+    for (size_t e = lo; e <= hi; ++e) {
+        const double w_e = k_r * ct[e];
+        f += w_e * y1[e];
+        g += w_e * y2[e];
+    }
+    f += (lo == f0 ? S_l * y1[f0] : 0) + (hi == f1 ? S_r * y1[f1] : 0);
+    g += (lo == f0 ? S_l * y2[f0] : 0) + (hi == f1 ? S_r * y2[f1] : 0);
+    C->phi[s1] = f;
+    C->phi[s2] = g;
+    C->ylo[s1] = y1[lo];
+    C->yhi[s1] = y1[hi];
+    C->ylo[s2] = y2[lo];
+    C->yhi[s2] = y2[hi];
+    for (size_t r = 0; r < ns; ++r)
+        if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi) {
+            C->Y[s1][r] = y1[W->el[r]];
+            C->Y[s2][r] = y2[W->el[r]];
+        }
+}
+
 /* The working rows of the base's final set (c->rows at c->schur_pos) into W's slots, with
  * each free slot's column of K_FF^-1 on its row's chain (K_FF couples no other) and f . that
  * column (S_l, S_r: the free chains' beyond the span) in c->cols, W->col pointing at them
- * (solved only where the factor or the rows changed since); w_T and dw at the slots, l0 and
- * dl the base's (with_lambda 0: 0). 0 where a row is not a ground vertex's between elements. */
+ * (solved only where the factor or the rows changed since: W->todo names the slots whose
+ * columns columns_solve is then to solve); w_T and dw at the slots, l0 and dl the base's
+ * (with_lambda 0: 0). 0 where a row is not a ground vertex's between elements. */
 static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                      const tirenv_profile *p, double S_l, double S_r, const double w_T[],
                      const double dw[], int with_lambda, root_rows *W)
 {
-    const size_t f0 = c->f0, f1 = c->f1, N = T->N, k = c->n_schur;
+    const size_t N = T->N, k = c->n_schur;
     const size_t *wpos = c->wpos;
     W->k = k;
     W->no_l = !with_lambda;
+    W->n_todo = 0;
     const size_t ns = 2 * k;
     for (size_t q = 0; q < k; ++q) {
         const size_t r = c->order[c->schur_pos[q]] - N;
@@ -194,8 +250,6 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
         W->X[q] = p->x[R->id];
         W->Z[q] = p->z[R->id];
     }
-    double *y = c->root_y;
-    const double k_r = T->k_r, *ct = T->cos_t;
     tirenv_springs__cc_cols *C = &c->cols;
     W->col = C;
     int same_el = C->k == k && C->S[0] == S_l && C->S[1] == S_r;
@@ -220,28 +274,69 @@ static int base_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
             C->Y[s][r] = 0;
         C->phi[s] = 0;
         C->el[s] = W->el[s];
-        if (!W->fr[s])
-            continue;
-        for (size_t e = lo; e <= hi; ++e)
-            y[e] = 0;
-        y[W->el[s]] = 1;
-        tirenv_springs__cc_chain_solve(c, y, lo, W->el[s], hi);
-        double f = 0;
-        for (size_t e = lo; e <= hi; ++e)
-            f += k_r * ct[e] * y[e];
-        f += (lo == f0 ? S_l * y[f0] : 0) + (hi == f1 ? S_r * y[f1] : 0);
-        C->phi[s] = f;
-        C->ylo[s] = y[lo];
-        C->yhi[s] = y[hi];
-        for (size_t r = 0; r < ns; ++r)
-            if (W->fr[r] && lo <= W->el[r] && W->el[r] <= hi)
-                C->Y[s][r] = y[W->el[r]];
+        if (W->fr[s])
+            W->todo[W->n_todo++] = s;
     }
     C->at = c->n_factors;
     C->k = k;
     C->S[0] = S_l;
     C->S[1] = S_r;
     return 1;
+}
+
+/* The columns base_rows left (W->todo) solved and done, two at a time (a row's two on its
+ * chain), each its own solve's bits: the Thomas recurrences and f's sum are latency chains.
+ * With v (not NULL), v := K_FF^-1 v on chain [v_lo, v_hi] too: in the same loop as the first
+ * two columns where they are on that chain, else first on its own. */
+static void columns_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, root_rows *W,
+                          double S_l, double S_r, double v[], size_t v_lo, size_t v_hi)
+{
+    const size_t N = T->N;
+    double *y1 = c->root_y, *y2 = c->root_y + (N + 2);
+    for (size_t m = 0; m < W->n_todo; m += 2) {
+        const size_t s1 = W->todo[m], s2 = m + 1 < W->n_todo ? W->todo[m + 1] : SIZE_MAX;
+        const size_t lo1 = c->chain_lo[s1 / 2], hi1 = c->chain_hi[s1 / 2], e1 = W->el[s1];
+        for (size_t e = lo1; e <= hi1; ++e)
+            y1[e] = 0;
+        y1[e1] = 1;
+        const int v_here = v && lo1 == v_lo && hi1 == v_hi;
+        if (s2 == SIZE_MAX) {
+            if (v_here)
+                tirenv_springs__cc_chain_solve_pair(c, v, v_lo, v_lo, v_hi, y1, lo1, e1, hi1);
+            else if (v)
+                tirenv_springs__cc_chain_solve(c, v, v_lo, v_lo, v_hi);
+            if (!v_here)
+                tirenv_springs__cc_chain_solve(c, y1, lo1, e1, hi1);
+            column_done(c, W, T, S_l, S_r, s1, y1);
+            v = NULL;
+            continue;
+        }
+        const size_t lo2 = c->chain_lo[s2 / 2], hi2 = c->chain_hi[s2 / 2], e2 = W->el[s2];
+        for (size_t e = lo2; e <= hi2; ++e)
+            y2[e] = 0;
+        y2[e2] = 1;
+        const int one = lo1 == lo2 && hi1 == hi2;
+        if (v_here && one) {
+            if (e1 <= e2)
+                tirenv_springs__cc_chain_solve_three(c, v, y1, e1, y2, e2, lo1, hi1);
+            else
+                tirenv_springs__cc_chain_solve_three(c, v, y2, e2, y1, e1, lo1, hi1);
+        } else {
+            if (v)
+                tirenv_springs__cc_chain_solve(c, v, v_lo, v_lo, v_hi);
+            tirenv_springs__cc_chain_solve_pair(c, y1, lo1, e1, hi1, y2, lo2, e2, hi2);
+        }
+        v = NULL;
+        if (one) {
+            columns_done(c, W, T, S_l, S_r, s1, y1, s2, y2);
+        } else {
+            column_done(c, W, T, S_l, S_r, s1, y1);
+            column_done(c, W, T, S_l, S_r, s2, y2);
+        }
+    }
+    if (v)
+        tirenv_springs__cc_chain_solve(c, v, v_lo, v_lo, v_hi);
+    W->n_todo = 0;
 }
 
 /* The secant on R(z) = F0 + (z - z0) dF0 + (the rows' share at z) - G from (za, Ra), its
@@ -327,6 +422,7 @@ int tirenv_springs__cc_root(tirenv_springs__cc *c, const tirenv_springs__cc_tire
     root_rows W;
     if (!base_rows(c, T, p, S_l, S_r, base_w, dw, 1, &W))
         return 0;
+    columns_solve(c, T, &W, S_l, S_r, NULL, 0, 0);
     /* The secant on F(z) - G from the base and Newton's step. */
     double lam[K_MAX], B[S_MAX], g[S_MAX], zb;
     size_t q_neg;
@@ -524,6 +620,38 @@ int tirenv_springs__cc_row_enter(tirenv_springs__cc *c, const tirenv_springs__cc
     return 1;
 }
 
+/* v = K_FF^-1 f on the free elements (f the hub's weights k_r cos(theta_e), the free chains'
+ * beyond the span S_l and S_r at its ends) into c->root_v for this factor, a chain at a time
+ * (after a flip of the factor it was solved for, only on the chains the flip changed); the
+ * rows' columns W left to solve (W not NULL) solved with v's on their chain, else after. */
+static void hub_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, root_rows *W,
+                      double S_l, double S_r)
+{
+    const size_t f0 = c->f0, f1 = c->f1, *ch = c->chains, n_ch = c->n_chains;
+    const double k_r = T->k_r, *ct = T->cos_t;
+    double *v = c->root_v;
+    if (c->root_v_at != c->n_factors) {
+        const int mended = c->root_v_at == c->mend_at && c->n_factors == c->mend_at + 1;
+        for (size_t q = 0; q < n_ch; ++q) {
+            const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
+            if (mended && (hi < c->mend_lo || lo > c->mend_hi))
+                continue;
+            for (size_t e = lo; e <= hi; ++e)
+                v[e] = k_r * ct[e];
+            v[f0] += lo == f0 ? S_l : 0;
+            v[f1] += hi == f1 ? S_r : 0;
+            if (W && W->n_todo > 0 && lo == c->chain_lo[W->todo[0] / 2] &&
+                hi == c->chain_hi[W->todo[0] / 2])
+                columns_solve(c, T, W, S_l, S_r, v, lo, hi);
+            else
+                tirenv_springs__cc_chain_solve(c, v, lo, lo, hi);
+        }
+        c->root_v_at = c->n_factors;
+    }
+    if (W && W->n_todo > 0)
+        columns_solve(c, T, W, S_l, S_r, NULL, 0, 0);
+}
+
 /* At a new x the held elements' rows are their rays' there, h_e(z) = R0 - rho_e(z), linear in
  * z while each ray ends on the same face (the fan at (x, z_a) gives rho_e and d(rho_e)/dz);
  * the free ones solve K_FF w_F = b_F(z) + G_W(z)^T lambda with the base's K_FF (it depends
@@ -575,23 +703,14 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
             dFa += f_i * dh_i;
         }
     }
-    /* v = K_FF^-1 f on the free elements, for this factor */
-    double *v = c->root_v;
-    if (c->root_v_at != c->n_factors) {
-        /* after a flip of the factor it was solved for, only on the chains the flip changed */
-        const int mended = c->root_v_at == c->mend_at && c->n_factors == c->mend_at + 1;
-        for (size_t q = 0; q < n_ch; ++q) {
-            const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
-            if (mended && (hi < c->mend_lo || lo > c->mend_hi))
-                continue;
-            for (size_t e = lo; e <= hi; ++e)
-                v[e] = k_r * ct[e];
-            v[f0] += lo == f0 ? S_l : 0;
-            v[f1] += hi == f1 ? S_r : 0;
-            tirenv_springs__cc_chain_solve(c, v, lo, lo, hi);
-        }
-        c->root_v_at = c->n_factors;
+    /* the rows' columns of K_FF^-1 (where they are to be solved, with v's on their chain) */
+    root_rows W;
+    if (!base_rows(c, T, p, S_l, S_r, H, dH, 0, &W)) {
+        hub_solve(c, T, NULL, S_l, S_r);
+        return 0;
     }
+    hub_solve(c, T, &W, S_l, S_r);
+    const double *v = c->root_v;
     /* the free elements' share: v . b_F over the chains' ends */
     for (size_t q = 0; q < n_ch; ++q) {
         const size_t lo = ch[2 * q], hi = ch[2 * q + 1];
@@ -604,9 +723,6 @@ int tirenv_springs__cc_root_at(tirenv_springs__cc *c, const tirenv_springs__cc_t
             dFa += v[hi] * k_ir * dH[hi + 1];
         }
     }
-    root_rows W;
-    if (!base_rows(c, T, p, S_l, S_r, H, dH, 0, &W))
-        return 0;
     /* u_a and u_s at the rows' free elements, from their columns at the chain's ends */
     for (size_t s = 0; s < 2 * k; ++s) {
         if (!W.fr[s])

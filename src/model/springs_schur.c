@@ -37,42 +37,102 @@ static void chain_solve(const tirenv_springs__cc *c, double x[], size_t lo, size
     chain_solve_from(c, x, lo, lo, hi);
 }
 
-/* x := K_FF^-1 x on two chains [lo1, lo1 + n1] and [lo2, lo2 + n2] at once: each chain's
- * operations are chain_solve's, in its order, so its bits; the two recurrences interleaved,
- * since each is bound by its latency (a multiplication and a subtraction an element, each
- * way), not by the instructions. The element just made is carried in a local (the stores to
- * one chain would otherwise make the other's be read again). */
-static void chain_solve_two(const tirenv_springs__cc *c, double x[], size_t lo1, size_t n1,
-                            size_t lo2, size_t n2)
+/* x1 := K_FF^-1 x1 on chain [lo1, hi1] and x2 := K_FF^-1 x2 on chain [lo2, hi2] at once,
+ * each x zero on [lo, from): each chain's operations are chain_solve_from's, in its order, so
+ * its bits; the two recurrences interleaved, since each is bound by its latency (a
+ * multiplication and a subtraction an element, each way), not by the instructions. x1 and x2
+ * are one array on two chains apart, or two arrays on any chains (two columns on one). The
+ * element just made is carried in a local (the stores to one would otherwise make the other's
+ * be read again). */
+static void chain_solve_pair(const tirenv_springs__cc *c, double x1[], size_t lo1,
+                             size_t from1, size_t hi1, double x2[], size_t lo2, size_t from2,
+                             size_t hi2)
 {
-    double *x1 = x + lo1, *x2 = x + lo2;
-    const double *m1 = c->tri_mul + lo1, *m2 = c->tri_mul + lo2;
-    const double *p1 = c->tri_piv + lo1, *p2 = c->tri_piv + lo2;
-    const size_t n = n1 < n2 ? n1 : n2;
-    double a = x1[0], b = x2[0];
+    const double *mul = c->tri_mul, *piv = c->tri_piv;
+    /* forward, from + 1 .. hi */
+    {
+        double *y1 = x1 + from1, *y2 = x2 + from2;
+        const double *m1 = mul + from1, *m2 = mul + from2;
+        const size_t n1 = hi1 - from1, n2 = hi2 - from2, n = n1 < n2 ? n1 : n2;
+        double a = y1[0], b = y2[0];
+        size_t k = 1;
+        for (; k <= n; ++k) {
+            a = y1[k] - m1[k] * a;
+            b = y2[k] - m2[k] * b;
+            y1[k] = a;
+            y2[k] = b;
+        }
+        for (size_t j = k; j <= n1; ++j)
+            y1[j] = a = y1[j] - m1[j] * a;
+        for (size_t j = k; j <= n2; ++j)
+            y2[j] = b = y2[j] - m2[j] * b;
+    }
+    /* backward, hi .. lo */
+    double *y1 = x1 + lo1, *y2 = x2 + lo2;
+    const double *m1 = mul + lo1, *m2 = mul + lo2, *p1 = piv + lo1, *p2 = piv + lo2;
+    const size_t n1 = hi1 - lo1, n2 = hi2 - lo2, n = n1 < n2 ? n1 : n2;
+    double a, b;
+    y1[n1] = a = y1[n1] / p1[n1];
+    y2[n2] = b = y2[n2] / p2[n2];
     size_t k = 1;
     for (; k <= n; ++k) {
-        a = x1[k] - m1[k] * a;
-        b = x2[k] - m2[k] * b;
-        x1[k] = a;
-        x2[k] = b;
+        a = y1[n1 - k] / p1[n1 - k] - m1[n1 - k + 1] * a;
+        b = y2[n2 - k] / p2[n2 - k] - m2[n2 - k + 1] * b;
+        y1[n1 - k] = a;
+        y2[n2 - k] = b;
     }
     for (size_t j = k; j <= n1; ++j)
-        x1[j] = a = x1[j] - m1[j] * a;
+        y1[n1 - j] = a = y1[n1 - j] / p1[n1 - j] - m1[n1 - j + 1] * a;
     for (size_t j = k; j <= n2; ++j)
-        x2[j] = b = x2[j] - m2[j] * b;
-    x1[n1] = a = x1[n1] / p1[n1];
-    x2[n2] = b = x2[n2] / p2[n2];
-    for (k = 1; k <= n; ++k) {
-        a = x1[n1 - k] / p1[n1 - k] - m1[n1 - k + 1] * a;
-        b = x2[n2 - k] / p2[n2 - k] - m2[n2 - k + 1] * b;
-        x1[n1 - k] = a;
-        x2[n2 - k] = b;
+        y2[n2 - j] = b = y2[n2 - j] / p2[n2 - j] - m2[n2 - j + 1] * b;
+}
+
+void tirenv_springs__cc_chain_solve_pair(const tirenv_springs__cc *c, double x1[], size_t lo1,
+                                         size_t from1, size_t hi1, double x2[], size_t lo2,
+                                         size_t from2, size_t hi2)
+{
+    chain_solve_pair(c, x1, lo1, from1, hi1, x2, lo2, from2, hi2);
+}
+
+/* x, y and z := K_FF^-1 of each on one chain [lo, hi], x whole, y zero on [lo, from_y) and z
+ * on [lo, from_z), from_y <= from_z: a vector and two columns on their chain. Each the bits of
+ * chain_solve_from on its own, the three recurrences in one loop where they overlap. */
+void tirenv_springs__cc_chain_solve_three(const tirenv_springs__cc *c, double x[], double y[],
+                                          size_t from_y, double z[], size_t from_z, size_t lo,
+                                          size_t hi)
+{
+    const double *mul = c->tri_mul, *piv = c->tri_piv;
+    double a = x[lo];
+    size_t e = lo + 1;
+    for (; e <= from_y; ++e)
+        x[e] = a = x[e] - mul[e] * a;
+    double b = y[from_y];
+    for (; e <= from_z; ++e) {
+        a = x[e] - mul[e] * a;
+        b = y[e] - mul[e] * b;
+        x[e] = a;
+        y[e] = b;
     }
-    for (size_t j = k; j <= n1; ++j)
-        x1[n1 - j] = a = x1[n1 - j] / p1[n1 - j] - m1[n1 - j + 1] * a;
-    for (size_t j = k; j <= n2; ++j)
-        x2[n2 - j] = b = x2[n2 - j] / p2[n2 - j] - m2[n2 - j + 1] * b;
+    double d = z[from_z];
+    for (; e <= hi; ++e) {
+        a = x[e] - mul[e] * a;
+        b = y[e] - mul[e] * b;
+        d = z[e] - mul[e] * d;
+        x[e] = a;
+        y[e] = b;
+        z[e] = d;
+    }
+    x[hi] = a = x[hi] / piv[hi];
+    y[hi] = b = y[hi] / piv[hi];
+    z[hi] = d = z[hi] / piv[hi];
+    for (e = hi; e-- > lo;) {
+        a = x[e] / piv[e] - mul[e + 1] * a;
+        b = y[e] / piv[e] - mul[e + 1] * b;
+        d = z[e] / piv[e] - mul[e + 1] * d;
+        x[e] = a;
+        y[e] = b;
+        z[e] = d;
+    }
 }
 
 /* x := K_FF^-1 x on every free element of [f0, f1] (the chains the factor found), two chains
@@ -82,8 +142,8 @@ static void tri_solve(const tirenv_springs__cc *c, double x[])
     const size_t *ch = c->chains, n_ch = c->n_chains;
     size_t q = 0;
     for (; q + 2 <= n_ch; q += 2)
-        chain_solve_two(c, x, ch[2 * q], ch[2 * q + 1] - ch[2 * q], ch[2 * q + 2],
-                        ch[2 * q + 3] - ch[2 * q + 2]);
+        chain_solve_pair(c, x, ch[2 * q], ch[2 * q], ch[2 * q + 1], x, ch[2 * q + 2],
+                         ch[2 * q + 2], ch[2 * q + 3]);
     if (q < n_ch)
         chain_solve(c, x, ch[2 * q], ch[2 * q + 1]);
 }

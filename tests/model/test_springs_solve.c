@@ -842,6 +842,93 @@ static void test_chains_solve_matches(void **state)
     assert_true(chains > 500);
 }
 
+/* A chain's right-hand side: x zero on [lo, from), seeded values from there on (a 1 where
+ * unit, as the root's columns of K_FF^-1 have). */
+static void chain_rhs(double x[], size_t lo, size_t from, size_t hi, int unit, uint64_t *seed)
+{
+    for (size_t e = lo; e <= hi; ++e)
+        x[e] = e < from ? 0.0 : unit && e == from ? 1.0 : tirenv_test_uniform(seed) - 0.3;
+}
+
+/* tirenv_springs__cc_chain_solve_pair (two chains, or two columns on one) and _three (a whole
+ * vector and two columns on one chain) against tirenv_springs__cc_chain_solve on each, bit
+ * for bit, over random spans, held sets, tires, chains and starts. */
+static void test_chain_solve_pair_three_match(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x5eedc0105ULL;
+    size_t pairs = 0, threes = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const size_t N = 5 + (size_t)(300 * tirenv_test_uniform(&seed));
+        const double k_r = 1e5 * (0.3 + tirenv_test_uniform(&seed));
+        const double k_ir = k_r * pow(10, 4 * tirenv_test_uniform(&seed) - 1);
+        chain_set cs;
+        chain_set_init(&cs, N, k_r, k_ir);
+        const tirenv_springs__cc_tire T = {.N = N, .R0 = 0.3, .k_r = k_r, .k_ir = k_ir,
+                                           .diag = cs.diag, .lq = cs.lq, .rq = cs.rq};
+        tirenv_springs__cc a;
+        assert_int_equal(tirenv_springs__cc_init(&a, N), 0);
+        a.f0 = (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
+        a.f1 = N - 1 - (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
+        a.n_schur = 0;
+        const double p_held = 0.02 + 0.4 * tirenv_test_uniform(&seed);
+        for (size_t e = a.f0; e <= a.f1; ++e)
+            a.wpos[e] = tirenv_test_uniform(&seed) < p_held ? SIZE_MAX : 0;
+        assert_int_equal(tirenv_springs__cc_schur_factor(&a, &T, 0), 0);
+        double *x[3], *y[3];
+        for (int i = 0; i < 3; ++i) {
+            x[i] = calloc(N + 2, sizeof *x[i]);
+            y[i] = calloc(N + 2, sizeof *y[i]);
+            assert_true(x[i] && y[i]);
+        }
+        const size_t n_ch = a.n_chains, *ch = a.chains;
+        for (int rep = 0; rep < 20 && n_ch > 0; ++rep) {
+            const size_t q1 = (size_t)((double)n_ch * tirenv_test_uniform(&seed));
+            const size_t q2 = (size_t)((double)n_ch * tirenv_test_uniform(&seed));
+            const size_t lo1 = ch[2 * q1], hi1 = ch[2 * q1 + 1], lo2 = ch[2 * q2],
+                         hi2 = ch[2 * q2 + 1];
+            const size_t from1 = lo1 + (size_t)((double)(hi1 - lo1 + 1) * tirenv_test_uniform(&seed));
+            const size_t from2 = lo2 + (size_t)((double)(hi2 - lo2 + 1) * tirenv_test_uniform(&seed));
+            const int unit = rep % 2;
+            /* two chains apart in one array, or any two (the same one too) in two arrays */
+            double *b = q1 != q2 && rep % 3 == 0 ? x[0] : x[1], *rb = q1 != q2 && rep % 3 == 0 ? y[0] : y[1];
+            chain_rhs(x[0], lo1, from1, hi1, unit, &seed);
+            chain_rhs(b, lo2, from2, hi2, unit, &seed);
+            memcpy(y[0], x[0], (N + 2) * sizeof *x[0]);
+            memcpy(y[1], x[1], (N + 2) * sizeof *x[1]);
+            tirenv_springs__cc_chain_solve_pair(&a, x[0], lo1, from1, hi1, b, lo2, from2, hi2);
+            tirenv_springs__cc_chain_solve(&a, y[0], lo1, from1, hi1);
+            tirenv_springs__cc_chain_solve(&a, rb, lo2, from2, hi2);
+            assert_memory_equal(x[0], y[0], (N + 2) * sizeof *x[0]);
+            assert_memory_equal(x[1], y[1], (N + 2) * sizeof *x[1]);
+            ++pairs;
+            /* a whole vector and two columns on chain q1 */
+            const size_t fy = from1 < from2 && lo1 == lo2 ? from1 : lo1 + (hi1 - lo1) / 3;
+            const size_t fz = fy + (size_t)((double)(hi1 - fy + 1) * tirenv_test_uniform(&seed));
+            chain_rhs(x[0], lo1, lo1, hi1, 0, &seed);
+            chain_rhs(x[1], lo1, fy, hi1, unit, &seed);
+            chain_rhs(x[2], lo1, fz, hi1, unit, &seed);
+            for (int i = 0; i < 3; ++i)
+                memcpy(y[i], x[i], (N + 2) * sizeof *x[i]);
+            tirenv_springs__cc_chain_solve_three(&a, x[0], x[1], fy, x[2], fz, lo1, hi1);
+            tirenv_springs__cc_chain_solve(&a, y[0], lo1, lo1, hi1);
+            tirenv_springs__cc_chain_solve(&a, y[1], lo1, fy, hi1);
+            tirenv_springs__cc_chain_solve(&a, y[2], lo1, fz, hi1);
+            for (int i = 0; i < 3; ++i)
+                assert_memory_equal(x[i], y[i], (N + 2) * sizeof *x[i]);
+            ++threes;
+        }
+        for (int i = 0; i < 3; ++i) {
+            free(x[i]);
+            free(y[i]);
+        }
+        tirenv_springs__cc_free(&a);
+        chain_set_free(&cs);
+    }
+    print_message("%zu pairs and %zu threes, the same bits\n", pairs, threes);
+    assert_true(pairs > 500 && threes > 500);
+}
+
 /* tirenv_springs__penetrations against the select it replaces, bit for bit, over seeded rays
  * (rho near R0 by an ulp, at R0, beyond it, INFINITY, NaN) and spans of every length, empty too;
  * nothing outside [a, b] written. */
@@ -938,6 +1025,7 @@ int main(void)
         cmocka_unit_test(test_flip_matches_factor),
         cmocka_unit_test(test_inner_residual_bound),
         cmocka_unit_test(test_chains_solve_matches),
+        cmocka_unit_test(test_chain_solve_pair_three_match),
         cmocka_unit_test(test_penetrations_match_select),
         cmocka_unit_test(test_walk_ahead_matches_walk),
     };
