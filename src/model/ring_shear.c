@@ -291,13 +291,24 @@ typedef struct {
 /* factor_column2 in fours of lanes (the AVX2 build's, band_factor_avx2: split into pairs, as
  * the baseline would have them, it costs more than factor_column2): its band and tail entries
  * scaled by 1 / d into U's column, and its updates of the next BAND_P columns; the tail
- * block's lower triangle (acc), and the next column's d, a1, a2 and a3 (nx), in the caller's
- * registers. fresh: column i + BAND_P's tail entries were never written (fill_window
- * leaves them unset, stale from an earlier window, and they are taken as zero), so its update
- * starts from zero rather than from memory (0 - p, the same operation on the same operands).
- * Nonzero if the pivot is not positive. */
+ * block's lower triangle (acc), the next column's d (*dp) and d, a1, a2, a3 (nx), and the
+ * column after it's entries 0 .. 3 (p1), in the caller's registers. fresh: column i + BAND_P's
+ * tail entries were never written (fill_window leaves them unset, stale from an earlier
+ * window, and they are taken as zero), so its update starts from zero rather than from memory
+ * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive.
+ *
+ * Its time is the chain from pivot to pivot, d -> 1 / d -> g1 = a1 / d -> d' = r1[0] - a1 g1
+ * (docs/performance.md 2.29): the pivot is carried as a scalar, so that no broadcast into
+ * four lanes lies on that chain (the four lanes of r1's update give the same d' in lane 0,
+ * stored with them); r1, the next column's entries, comes from a register and not from
+ * memory, where the last column's updates of it were stores of one, two and three lanes that
+ * a load of four cannot take forwarded, and so waits until they reach the cache; and each
+ * column's updates of r2, r3 and r4 are stores of four lanes, the lanes it must not change
+ * taken back from the load (x - 0 g is not x for x = -0), so that the next column's loads
+ * of them are forwarded. */
 static inline __attribute__((always_inline)) int factor_column4(double *L, double *B, size_t i,
-                                                               tail_acc *acc, v4d *nx,
+                                                               tail_acc *acc, double *dp,
+                                                               v4d *nx, v4d *p1,
                                                                const int fresh,
                                                                const double *src)
 {
@@ -305,38 +316,43 @@ static inline __attribute__((always_inline)) int factor_column4(double *L, doubl
     /* d, a1, a2 and a3 (c[0 .. 3]) as the column before left them, from registers: read
      * back from memory, its stores and their loads would lengthen the chain from pivot to
      * pivot. */
-    const double d = (*nx)[0];
+    const double d = *dp;
     if (!(d > 0))
         return 1;
-    { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
-       * the system band_refactor copies from) */
-        const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
-        double *d4 = c + BAND_P * (BAND_P + 1);
-        v4d s;
-        v4_load(&s, s4);
-        v4_store(d4, &s);
-        d4[4] = s4[4];
-    }
+    /* column i + BAND_P's entries, before this column's update of them (src: A's own, or the
+     * system band_refactor copies from); stored with r4's update below */
+    const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
+    double *d4 = c + BAND_P * (BAND_P + 1);
+    v4d s;
+    v4_load(&s, s4);
+    d4[4] = s4[4];
     const double dinv = 1 / d;
-    const double a1 = (*nx)[1], a2 = (*nx)[2], a3 = (*nx)[3], a4 = c[4];
-    const v4d a14 = {a1, a2, a3, a4}, g = a14 * (v4d){dinv, dinv, dinv, dinv};
-    const double g1 = g[0], g2 = g[1], g3 = g[2], g4 = g[3];
+    const double a1 = (*nx)[1], a4 = c[4];
+    const v4d a14 = {a1, (*nx)[2], (*nx)[3], a4}, g = a14 * (v4d){dinv, dinv, dinv, dinv};
+    const double g1 = a1 * dinv; /* g[0]'s operation, in a scalar register */
     c[0] = dinv;
     v4_store(c + 1, &g);
-    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
-           *r4 = r3 + (BAND_P + 1);
+    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1);
     /* r1[0] -= a1 g1, r1[1] -= a2 g1, r1[2] -= a3 g1, r1[3] -= a4 g1; r2[0] -= a2 g2,
      * r2[1] -= a3 g2, r2[2] -= a4 g2; r3[0] -= a3 g3, r3[1] -= a4 g3; r4[0] -= a4 g4. */
-    const v2d a23 = {a2, a3}, a34 = {a3, a4};
-    const v2d vg2 = {g2, g2}, vg3 = {g3, g3};
-    v4d r1v;
-    v4_load(&r1v, r1);
-    *nx = r1v - a14 * (v4d){g1, g1, g1, g1};
+    *dp = (*p1)[0] - a1 * g1;
+    *nx = *p1 - a14 * (v4d){g1, g1, g1, g1};
     v4_store(r1, nx);
-    v2_store(r2, v2_load(r2) - a23 * vg2);
-    r2[2] -= a4 * g2;
-    v2_store(r3, v2_load(r3) - a34 * vg3);
-    r4[0] -= a4 * g4;
+    v4d r2v, r3v;
+    v4_load(&r2v, r2);
+    const v4d a24 = __builtin_shufflevector(a14, a14, 1, 2, 3, 3);
+    const v4d t2 = r2v - a24 * __builtin_shufflevector(g, g, 1, 1, 1, 1);
+    *p1 = __builtin_shufflevector(t2, r2v, 0, 1, 2, 7);
+    v4_store(r2, p1);
+    v4_load(&r3v, r3);
+    const v4d a34 = __builtin_shufflevector(a14, a14, 2, 3, 3, 3);
+    const v4d t3 = r3v - a34 * __builtin_shufflevector(g, g, 2, 2, 2, 2);
+    const v4d r3n = __builtin_shufflevector(t3, r3v, 0, 1, 6, 7);
+    v4_store(r3, &r3n);
+    const v4d t4 = s - __builtin_shufflevector(a14, a14, 3, 3, 3, 3) *
+                           __builtin_shufflevector(g, g, 3, 3, 3, 3);
+    const v4d r4n = __builtin_shufflevector(t4, s, 0, 5, 6, 7);
+    v4_store(d4, &r4n);
     /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
      * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
     double *b = B + TAIL * i;
@@ -344,7 +360,7 @@ static inline __attribute__((always_inline)) int factor_column4(double *L, doubl
     v4_load(&h, b);
     const v4d u = h * (v4d){dinv, dinv, dinv, dinv};
     v4_store(b, &u);
-    const double ak[BAND_P] = {a1, a2, a3, a4};
+    const double ak[BAND_P] = {a1, a14[1], a14[2], a4};
     for (size_t k = 1; k <= BAND_P; ++k) {
         const v4d va = {ak[k - 1], ak[k - 1], ak[k - 1], ak[k - 1]};
         double *bk = b + TAIL * k;
@@ -484,23 +500,25 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
                              {acc0[6], acc0[7], acc0[8], acc0[9]}};
         size_t ck_next = ck ? (i + CKS - 1) / CKS * CKS : SIZE_MAX;
         int broke = 0;
-        v4d nx; /* column i's d, a1, a2 and a3 */
+        v4d nx, p1; /* column i's d, a1, a2 and a3; column i + 1's entries 0 .. 3 */
         v4_load(&nx, L + (BAND_P + 1) * i);
+        v4_load(&p1, L + (BAND_P + 1) * (i + 1));
+        double d = nx[0];
         /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
          * while i + BAND_P < m - BAND_P. */
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
+            broke = factor_column4(L, B, i, &acc, &d, &nx, &p1, 0, src);
         }
         for (; i < f1 && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column4(L, B, i, &acc, &nx, 1, src);
+            broke = factor_column4(L, B, i, &acc, &d, &nx, &p1, 1, src);
         }
         for (; i + BAND_P < m && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
+            broke = factor_column4(L, B, i, &acc, &d, &nx, &p1, 0, src);
         }
         T[0][0] = acc.t00, T[1][0] = acc.t1[0], T[1][1] = acc.t1[1];
         T[2][0] = acc.t2[0], T[2][1] = acc.t2[1], T[2][2] = acc.t2[2];
