@@ -292,8 +292,8 @@ typedef struct {
     v4d t1, t2, t3;
 } tail_acc;
 
-/* The forward substitution that band_factor_avx2 runs with the factorisation: the last four
- * rows' z (z1 the nearest) and the tail's right-hand side y. */
+/* The forward substitution that band_factor_fwd_avx2 runs with the factorisation: the last
+ * four rows' z (z1 the nearest) and the tail's right-hand side y. */
 typedef struct {
     double z1, z2, z3, z4;
     v4d y;
@@ -306,7 +306,9 @@ typedef struct {
  * column after it's entries 0 .. 3 (p1), in the caller's registers. fresh: column i + BAND_P's
  * tail entries were never written (fill_window leaves them unset, stale from an earlier
  * window, and they are taken as zero), so its update starts from zero rather than from memory
- * (0 - p, the same operation on the same operands). Nonzero if the pivot is not positive.
+ * (0 - p, the same operation on the same operands). fx (not NULL): row i of fx's forward
+ * substitution as well (fs its state; band_factor_fwd_avx2). Nonzero if the pivot is not
+ * positive.
  *
  * Its time is the chain from pivot to pivot, d -> 1 / d -> g1 = a1 / d -> d' = r1[0] - a1 g1
  * (docs/performance.md 2.29): the pivot is carried as a scalar, so that no broadcast into
@@ -474,7 +476,10 @@ static const double *ck_restore(const double *ck, tband *A, size_t q)
  * unset (fill_window), zero until their first update. From column q0 (0: all; else an
  * interior column, the columns before it factorised and their updates of the later ones
  * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
- * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
+ * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. wide: the
+ * AVX2 kernel (factor_column4), with fx (not NULL) fx's forward substitution of the interior
+ * columns' rows (from q0, the rows before it done, the tail's right-hand side in fx's tail
+ * rows before and after); *i_end the first column not interior. */
 static inline __attribute__((always_inline)) int
 band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC], double *ck,
                  const double *src, const int wide, double *fx, size_t *i_end)
