@@ -451,6 +451,14 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, 
  * 0 if the same bits, 1 if not, -1 if it cannot. *avx2 1 if the AVX2 build ran. */
 int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2);
 
+/* For tests: the last factorised system's solve with its forward substitution in the
+ * factorisation's pass (ring_shear.c's band_factor_x), whole and restarted at each checkpoint,
+ * against its factorisation and then its solve, for a pseudo-random right-hand side from seed
+ * with lead leading +0 rows and its tail entry neg0 (< 4; else none) -0; 0 if the same bits,
+ * 1 if not, -1 if it cannot. *fused 1 if the fused pass ran, *n_restarts the restarts. */
+int tirenv_ring__tread_fused_solve(const tirenv_ring *r, unsigned long seed, size_t lead,
+                                   size_t neg0, int *fused, size_t *n_restarts);
+
 /* For tests: the last factorised system solved with its factor for a pseudo-random right-hand
  * side from seed: the residual max |b - A x| / (max row sum of |A| * max |x|); -1 if it cannot. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed);

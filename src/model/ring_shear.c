@@ -169,6 +169,10 @@ struct tirenv_ring_tread {
      * what its slope needs, the last solve_on's window and whether its Newton factorised
      * the final states, until the next evaluation. */
     int defer, deferred, fin_factored;
+    /* The right-hand side factor_cb left for solve_cb (NULL: none), knots eliminated and, if
+     * fwd_fused, forward-substituted with the factorisation. */
+    double *fwd;
+    int fwd_fused;
     const double (*fin_Q)[NB];
     deferred_window dfr;
 };
@@ -288,55 +292,81 @@ typedef struct {
     v4d t1, t2, t3;
 } tail_acc;
 
+/* The forward substitution that band_factor_fwd_avx2 runs with the factorisation: the last
+ * four rows' z (z1 the nearest) and the tail's right-hand side y. */
+typedef struct {
+    double z1, z2, z3, z4;
+    v4d y;
+} fwd_state;
+
 /* factor_column2 in fours of lanes (the AVX2 build's, band_factor_avx2: split into pairs, as
  * the baseline would have them, it costs more than factor_column2): its band and tail entries
  * scaled by 1 / d into U's column, and its updates of the next BAND_P columns; the tail
- * block's lower triangle (acc), and the next column's d, a1, a2 and a3 (nx), in the caller's
- * registers. fresh: column i + BAND_P's tail entries were never written (fill_window
- * leaves them unset, stale from an earlier window, and they are taken as zero), so its update
- * starts from zero rather than from memory (0 - p, the same operation on the same operands).
- * Nonzero if the pivot is not positive. */
+ * block's lower triangle (acc), the next column's d (*dp) and d, a1, a2, a3 (nx), and the
+ * column after it's entries 0 .. 3 (p1), in the caller's registers. fresh: column i + BAND_P's
+ * tail entries were never written (fill_window leaves them unset, stale from an earlier
+ * window, and they are taken as zero), so its update starts from zero rather than from memory
+ * (0 - p, the same operation on the same operands). fx (not NULL): row i of fx's forward
+ * substitution as well (fs its state; band_factor_fwd_avx2). Nonzero if the pivot is not
+ * positive.
+ *
+ * Its time is the chain from pivot to pivot, d -> 1 / d -> g1 = a1 / d -> d' = r1[0] - a1 g1
+ * (docs/performance.md 2.29): the pivot is carried as a scalar, so that no broadcast into
+ * four lanes lies on that chain (the four lanes of r1's update give the same d' in lane 0,
+ * stored with them); r1, the next column's entries, comes from a register and not from
+ * memory, where the last column's updates of it were stores of one, two and three lanes that
+ * a load of four cannot take forwarded, and so waits until they reach the cache; and each
+ * column's updates of r2, r3 and r4 are stores of four lanes, the lanes it must not change
+ * taken back from the load (x - 0 g is not x for x = -0), so that the next column's loads
+ * of them are forwarded. */
 static inline __attribute__((always_inline)) int factor_column4(double *L, double *B, size_t i,
-                                                               tail_acc *acc, v4d *nx,
+                                                               tail_acc *acc, double *dp,
+                                                               v4d *nx, v4d *p1,
                                                                const int fresh,
-                                                               const double *src)
+                                                               const double *src, double *fx,
+                                                               fwd_state *fs)
 {
     double *c = L + (BAND_P + 1) * i;
     /* d, a1, a2 and a3 (c[0 .. 3]) as the column before left them, from registers: read
      * back from memory, its stores and their loads would lengthen the chain from pivot to
      * pivot. */
-    const double d = (*nx)[0];
+    const double d = *dp;
     if (!(d > 0))
         return 1;
-    { /* column i + BAND_P's entries, before this column's update of them (src: A's own, or
-       * the system band_refactor copies from) */
-        const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
-        double *d4 = c + BAND_P * (BAND_P + 1);
-        v4d s;
-        v4_load(&s, s4);
-        v4_store(d4, &s);
-        d4[4] = s4[4];
-    }
+    /* column i + BAND_P's entries, before this column's update of them (src: A's own, or the
+     * system band_refactor copies from); stored with r4's update below */
+    const double *s4 = src + (BAND_P + 1) * (i + BAND_P);
+    double *d4 = c + BAND_P * (BAND_P + 1);
+    v4d s;
+    v4_load(&s, s4);
+    d4[4] = s4[4];
     const double dinv = 1 / d;
-    const double a1 = (*nx)[1], a2 = (*nx)[2], a3 = (*nx)[3], a4 = c[4];
-    const v4d a14 = {a1, a2, a3, a4}, g = a14 * (v4d){dinv, dinv, dinv, dinv};
-    const double g1 = g[0], g2 = g[1], g3 = g[2], g4 = g[3];
+    const double a1 = (*nx)[1], a4 = c[4];
+    const v4d a14 = {a1, (*nx)[2], (*nx)[3], a4}, g = a14 * (v4d){dinv, dinv, dinv, dinv};
+    const double g1 = a1 * dinv; /* g[0]'s operation, in a scalar register */
     c[0] = dinv;
     v4_store(c + 1, &g);
-    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1),
-           *r4 = r3 + (BAND_P + 1);
+    double *r1 = c + (BAND_P + 1), *r2 = r1 + (BAND_P + 1), *r3 = r2 + (BAND_P + 1);
     /* r1[0] -= a1 g1, r1[1] -= a2 g1, r1[2] -= a3 g1, r1[3] -= a4 g1; r2[0] -= a2 g2,
      * r2[1] -= a3 g2, r2[2] -= a4 g2; r3[0] -= a3 g3, r3[1] -= a4 g3; r4[0] -= a4 g4. */
-    const v2d a23 = {a2, a3}, a34 = {a3, a4};
-    const v2d vg2 = {g2, g2}, vg3 = {g3, g3};
-    v4d r1v;
-    v4_load(&r1v, r1);
-    *nx = r1v - a14 * (v4d){g1, g1, g1, g1};
+    *dp = (*p1)[0] - a1 * g1;
+    *nx = *p1 - a14 * (v4d){g1, g1, g1, g1};
     v4_store(r1, nx);
-    v2_store(r2, v2_load(r2) - a23 * vg2);
-    r2[2] -= a4 * g2;
-    v2_store(r3, v2_load(r3) - a34 * vg3);
-    r4[0] -= a4 * g4;
+    v4d r2v, r3v;
+    v4_load(&r2v, r2);
+    const v4d a24 = __builtin_shufflevector(a14, a14, 1, 2, 3, 3);
+    const v4d t2 = r2v - a24 * __builtin_shufflevector(g, g, 1, 1, 1, 1);
+    *p1 = __builtin_shufflevector(t2, r2v, 0, 1, 2, 7);
+    v4_store(r2, p1);
+    v4_load(&r3v, r3);
+    const v4d a34 = __builtin_shufflevector(a14, a14, 2, 3, 3, 3);
+    const v4d t3 = r3v - a34 * __builtin_shufflevector(g, g, 2, 2, 2, 2);
+    const v4d r3n = __builtin_shufflevector(t3, r3v, 0, 1, 6, 7);
+    v4_store(r3, &r3n);
+    const v4d t4 = s - __builtin_shufflevector(a14, a14, 3, 3, 3, 3) *
+                           __builtin_shufflevector(g, g, 3, 3, 3, 3);
+    const v4d r4n = __builtin_shufflevector(t4, s, 0, 5, 6, 7);
+    v4_store(d4, &r4n);
     /* The tail rows' entries of columns i .. i + 4: h = B[a][i], U[a][i] = h / d into B[a][i],
      * then B[a][i + k] -= U[a][i] a_k, each entry's one operation of this column. */
     double *b = B + TAIL * i;
@@ -344,7 +374,7 @@ static inline __attribute__((always_inline)) int factor_column4(double *L, doubl
     v4_load(&h, b);
     const v4d u = h * (v4d){dinv, dinv, dinv, dinv};
     v4_store(b, &u);
-    const double ak[BAND_P] = {a1, a2, a3, a4};
+    const double ak[BAND_P] = {a1, a14[1], a14[2], a4};
     for (size_t k = 1; k <= BAND_P; ++k) {
         const v4d va = {ak[k - 1], ak[k - 1], ak[k - 1], ak[k - 1]};
         double *bk = b + TAIL * k;
@@ -361,6 +391,21 @@ static inline __attribute__((always_inline)) int factor_column4(double *L, doubl
     acc->t1 -= (v4d){u[1], u[1], u[1], u[1]} * h;
     acc->t2 -= (v4d){u[2], u[2], u[2], u[2]} * h;
     acc->t3 -= (v4d){u[3], u[3], u[3], u[3]} * h;
+    if (fx) { /* row i of the forward substitution, as band_solve_t's (fwd_row, tail_fwd) */
+        double v = fx[i];
+        if (i >= BAND_P) {
+            v -= L[(BAND_P + 1) * (i - 4) + 4] * fs->z4;
+            v -= L[(BAND_P + 1) * (i - 3) + 3] * fs->z3;
+            v -= L[(BAND_P + 1) * (i - 2) + 2] * fs->z2;
+            v -= L[(BAND_P + 1) * (i - 1) + 1] * fs->z1;
+        } else {
+            for (size_t k = i; k >= 1; --k)
+                v -= L[(BAND_P + 1) * (i - k) + k] * fx[i - k];
+        }
+        fx[i] = v;
+        fs->y -= u * (v4d){v, v, v, v};
+        fs->z4 = fs->z3, fs->z3 = fs->z2, fs->z2 = fs->z1, fs->z1 = v;
+    }
     return 0;
 }
 
@@ -431,10 +476,13 @@ static const double *ck_restore(const double *ck, tband *A, size_t q)
  * unset (fill_window), zero until their first update. From column q0 (0: all; else an
  * interior column, the columns before it factorised and their updates of the later ones
  * applied, acc0 the tail block's accumulators then: band_refactor); ck (may be NULL): the
- * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. */
+ * state before every CKS-th interior column from q0 on, into ck[CK_LEN (i / CKS)]. wide: the
+ * AVX2 kernel (factor_column4), with fx (not NULL) fx's forward substitution of the interior
+ * columns' rows (from q0, the rows before it done, the tail's right-hand side in fx's tail
+ * rows before and after); *i_end the first column not interior. */
 static inline __attribute__((always_inline)) int
 band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC], double *ck,
-                 const double *src, const int wide)
+                 const double *src, const int wide, double *fx, size_t *i_end)
 {
     if (!src)
         src = A->L;
@@ -484,30 +532,41 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
                              {acc0[6], acc0[7], acc0[8], acc0[9]}};
         size_t ck_next = ck ? (i + CKS - 1) / CKS * CKS : SIZE_MAX;
         int broke = 0;
-        v4d nx; /* column i's d, a1, a2 and a3 */
+        v4d nx, p1; /* column i's d, a1, a2 and a3; column i + 1's entries 0 .. 3 */
         v4_load(&nx, L + (BAND_P + 1) * i);
+        v4_load(&p1, L + (BAND_P + 1) * (i + 1));
+        double d = nx[0];
+        fwd_state fs = {0, 0, 0, 0, {0, 0, 0, 0}};
+        if (fx) {
+            v4_load(&fs.y, fx + m);
+            if (i >= BAND_P)
+                fs.z1 = fx[i - 1], fs.z2 = fx[i - 2], fs.z3 = fx[i - 3], fs.z4 = fx[i - 4];
+        }
         /* Column i's update reaches column i + BAND_P: unset from i = FRESH_FROM - BAND_P
          * while i + BAND_P < m - BAND_P. */
         const size_t f0 = fresh ? FRESH_FROM - BAND_P : m,
                      f1 = fresh && m > 2 * BAND_P ? m - 2 * BAND_P : 0;
         for (; i + BAND_P < m && i < f0 && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
+            broke = factor_column4(L, B, i, &acc, &d, &nx, &p1, 0, src, fx, &fs);
         }
         for (; i < f1 && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column4(L, B, i, &acc, &nx, 1, src);
+            broke = factor_column4(L, B, i, &acc, &d, &nx, &p1, 1, src, fx, &fs);
         }
         for (; i + BAND_P < m && !broke; ++i) {
             ck_save(ck, L, B, i, &acc, &ck_next);
-            broke = factor_column4(L, B, i, &acc, &nx, 0, src);
+            broke = factor_column4(L, B, i, &acc, &d, &nx, &p1, 0, src, fx, &fs);
         }
+        if (fx)
+            v4_store(fx + m, &fs.y);
         T[0][0] = acc.t00, T[1][0] = acc.t1[0], T[1][1] = acc.t1[1];
         T[2][0] = acc.t2[0], T[2][1] = acc.t2[1], T[2][2] = acc.t2[2];
         T[3][0] = acc.t3[0], T[3][1] = acc.t3[1], T[3][2] = acc.t3[2], T[3][3] = acc.t3[3];
         if (broke)
             return 1;
     }
+    *i_end = i;
     for (; i < m; ++i) {
         double *c = L + (BAND_P + 1) * i;
         if (!(c[0] > 0))
@@ -556,7 +615,8 @@ band_factor_body(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC]
 static int band_factor_base(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
                             double *ck, const double *src)
 {
-    return band_factor_body(A, fresh, q0, acc0, ck, src, 0);
+    size_t i_end;
+    return band_factor_body(A, fresh, q0, acc0, ck, src, 0, NULL, &i_end);
 }
 
 #if RING_AVX2
@@ -565,7 +625,8 @@ __attribute__((target("avx2"))) static int band_factor_avx2(tband *A, const int 
                                                             const double acc0[CK_ACC],
                                                             double *ck, const double *src)
 {
-    return band_factor_body(A, fresh, q0, acc0, ck, src, 1);
+    size_t i_end;
+    return band_factor_body(A, fresh, q0, acc0, ck, src, 1, NULL, &i_end);
 }
 #endif
 
@@ -651,66 +712,57 @@ static inline __attribute__((always_inline)) double bwd_row(const tband *A, doub
     return v;
 }
 
-/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
- * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
- * the one before it (after it, going back), so a solve's time is that chain's: a row takes
- * the farther rows' products first, and U's unit diagonal leaves a product and a difference
- * from row to row, where a chain of four differences and a division was (docs/performance.md
- * 2.15). Inlined with t a
- * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
- * full tail two lanes at a time; the same operations in the same order for every t. The
- * forward substitution may start at row i0, x's rows before it holding their z already (the
- * window's, band_solve: its leading +0 rows; the exterior's, ext_solve: a unit vector's
- * zeros or a kept y), and, without a tail, stop there (forward_only: x then holds U^-1 b). */
-static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
-                                                               const size_t t, const size_t i0,
-                                                               const int forward_only)
+/* band_solve_t's forward substitution, rows i .. i1 - 1 (x's rows before i holding their z),
+ * the tail's right-hand side in y01, y23 (the full tail) or y. */
+static inline __attribute__((always_inline)) void band_fwd_t(const tband *A, double x[],
+                                                             const size_t t, size_t i,
+                                                             const size_t i1, v2d *y01,
+                                                             v2d *y23, double y[])
 {
-    const size_t N = A->N, m = N - t;
     const double *L = A->L;
     const double *B = A->B;
-    double y[TAIL];
-    for (size_t a = 0; a < t; ++a)
-        y[a] = x[m + a];
-    v2d y01 = {0, 0}, y23 = {0, 0};
-    if (t == TAIL)
-        y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    size_t i = i0;
-    for (; i < m && i < BAND_P; ++i) {
+    for (; i < i1 && i < BAND_P; ++i) {
         double v = x[i];
         for (size_t k = i; k >= 1; --k)
             v -= L[(BAND_P + 1) * (i - k) + k] * x[i - k];
         x[i] = v;
-        tail_fwd(B, t, i, v, &y01, &y23, y);
+        tail_fwd(B, t, i, v, y01, y23, y);
     }
-    if (i < m) {
+    if (i < i1) {
         /* The last BAND_P rows' unknowns in registers, not read back from x: a store and its
          * load would lengthen the chain. Four rows an iteration, so that they need no
          * moves. */
         double x4 = x[i - 4], x3 = x[i - 3], x2 = x[i - 2], x1 = x[i - 1];
-        for (; i + 4 <= m; i += 4) {
-            const double v0 = fwd_row(A, x, t, i, x4, x3, x2, x1, &y01, &y23, y);
-            const double v1 = fwd_row(A, x, t, i + 1, x3, x2, x1, v0, &y01, &y23, y);
-            const double v2 = fwd_row(A, x, t, i + 2, x2, x1, v0, v1, &y01, &y23, y);
-            const double v3 = fwd_row(A, x, t, i + 3, x1, v0, v1, v2, &y01, &y23, y);
+        for (; i + 4 <= i1; i += 4) {
+            const double v0 = fwd_row(A, x, t, i, x4, x3, x2, x1, y01, y23, y);
+            const double v1 = fwd_row(A, x, t, i + 1, x3, x2, x1, v0, y01, y23, y);
+            const double v2 = fwd_row(A, x, t, i + 2, x2, x1, v0, v1, y01, y23, y);
+            const double v3 = fwd_row(A, x, t, i + 3, x1, v0, v1, v2, y01, y23, y);
             x4 = v0, x3 = v1, x2 = v2, x1 = v3;
         }
-        for (; i < m; ++i) {
-            const double v = fwd_row(A, x, t, i, x4, x3, x2, x1, &y01, &y23, y);
+        for (; i < i1; ++i) {
+            const double v = fwd_row(A, x, t, i, x4, x3, x2, x1, y01, y23, y);
             x4 = x3, x3 = x2, x2 = x1, x1 = v;
         }
     }
-    if (forward_only)
-        return;
-    if (t == TAIL)
-        y[0] = y01[0], y[1] = y01[1], y[2] = y23[0], y[3] = y23[1];
+}
+
+/* band_solve_t after its forward substitution: the tail's Schur complement solved for y (its
+ * right-hand side), then the back substitution. */
+static inline __attribute__((always_inline)) void band_bwd_t(const tband *A, double x[],
+                                                             const size_t t, double y[])
+{
+    const size_t N = A->N, m = N - t;
+    const double *L = A->L;
+    const double *B = A->B;
     if (t > 0)
         tirenv_core__cholesky_solve(&A->T[0][0], t, TAIL, y, y);
     for (size_t a = 0; a < t; ++a)
         x[m + a] = y[a];
+    v2d y01 = {0, 0}, y23 = {0, 0};
     if (t == TAIL) /* now the tail's solution */
         y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
-    i = m;
+    size_t i = m;
     for (; i > 0 && i - 1 + BAND_P >= m; --i) { /* the last BAND_P rows */
         const size_t r = i - 1;
         double v = tail_bwd(B, t, r, x[r] * L[(BAND_P + 1) * r], y01, y23, y);
@@ -732,6 +784,36 @@ static inline __attribute__((always_inline)) void band_solve_t(const tband *A, d
             x4 = x3, x3 = x2, x2 = x1, x1 = v;
         }
     }
+}
+
+/* Solves A x = b with the factor, x overwriting b: z = U^-1 b, the tail's Schur complement
+ * solved, x = U^-T (D^-1 z - the tail's share). O(N (BAND_P + t)). Each row's unknown waits on
+ * the one before it (after it, going back), so a solve's time is that chain's: a row takes
+ * the farther rows' products first, and U's unit diagonal leaves a product and a difference
+ * from row to row, where a chain of four differences and a division was (docs/performance.md
+ * 2.15). Inlined with t a
+ * constant (band_solve): the tail's loops unrolled, its right-hand side y in registers, with the
+ * full tail two lanes at a time; the same operations in the same order for every t. The
+ * forward substitution may start at row i0, x's rows before it holding their z already (the
+ * window's, band_solve: its leading +0 rows; the exterior's, ext_solve: a unit vector's
+ * zeros or a kept y), and, without a tail, stop there (forward_only: x then holds U^-1 b). */
+static inline __attribute__((always_inline)) void band_solve_t(const tband *A, double x[],
+                                                               const size_t t, const size_t i0,
+                                                               const int forward_only)
+{
+    const size_t m = A->N - t;
+    double y[TAIL];
+    for (size_t a = 0; a < t; ++a)
+        y[a] = x[m + a];
+    v2d y01 = {0, 0}, y23 = {0, 0};
+    if (t == TAIL)
+        y01 = (v2d){y[0], y[1]}, y23 = (v2d){y[2], y[3]};
+    band_fwd_t(A, x, t, i0, m, &y01, &y23, y);
+    if (forward_only)
+        return;
+    if (t == TAIL)
+        y[0] = y01[0], y[1] = y01[1], y[2] = y23[0], y[3] = y23[1];
+    band_bwd_t(A, x, t, y);
 }
 
 /* The first of b's rows 0 .. m whose bits are not +0 (m if none). */
@@ -771,6 +853,69 @@ static void band_solve(const tband *A, double x[])
 /* The exterior's solve (no tail), its forward substitution from row i0 (x's rows before it
  * hold their z: a right-hand side's leading zeros are their own z, +0 - u (+0) staying +0). */
 static void ext_solve(const tband *A, double x[], size_t i0) { band_solve_t(A, x, 0, i0, 0); }
+
+/* band_solve after band_factor_x's forward substitution (*fused): x holds z in its band rows
+ * and the tail's right-hand side in its tail rows. */
+static void band_solve_rest(const tband *A, double x[])
+{
+    const size_t m = A->N - TAIL;
+    double y[TAIL];
+    for (size_t a = 0; a < TAIL; ++a)
+        y[a] = x[m + a];
+    band_bwd_t(A, x, TAIL, y);
+}
+
+#if RING_AVX2
+/* band_factor_avx2 with band_solve's forward substitution of x in the same pass: the rows
+ * before q0 first (the factor's columns there are kept), each later row with its column
+ * (factor_column4), the last BAND_P rows after the factorisation; the tail's right-hand side
+ * left in x's tail rows. The factorisation's time is its chain from pivot to pivot, and the
+ * substitution's its chain from row to row: side by side, the second costs little more than
+ * its instructions (docs/performance.md 2.29). Rows from the first row that is not +0 as in
+ * band_solve; the rows of +0 before it that the fused pass takes as well are their own z and
+ * leave y alone, as there, so the same bits. */
+__attribute__((target("avx2"))) static int band_factor_fwd_avx2(tband *A, const int fresh,
+                                                                size_t q0,
+                                                                const double acc0[CK_ACC],
+                                                                double *ck, const double *src,
+                                                                double x[])
+{
+    const size_t m = A->N - TAIL;
+    int neg0 = 0;
+    for (size_t a = 0; a < TAIL; ++a)
+        neg0 |= x[m + a] == 0 && signbit(x[m + a]);
+    double y[TAIL]; /* unused with the full tail */
+    v2d y01 = v2_load(x + m), y23 = v2_load(x + m + 2);
+    band_fwd_t(A, x, TAIL, neg0 ? 0 : leading_zeros(x, q0), q0, &y01, &y23, y);
+    v2_store(x + m, y01);
+    v2_store(x + m + 2, y23);
+    size_t i_end = q0;
+    if (band_factor_body(A, fresh, q0, acc0, ck, src, 1, x, &i_end))
+        return 1;
+    y01 = v2_load(x + m), y23 = v2_load(x + m + 2);
+    band_fwd_t(A, x, TAIL, i_end, m, &y01, &y23, y);
+    v2_store(x + m, y01);
+    v2_store(x + m + 2, y23);
+    return 0;
+}
+#endif
+
+/* band_factor_from, and with x (not NULL) and the full tail, where the AVX2 build runs, x's
+ * forward substitution in the same pass (band_factor_fwd_avx2): *fused 1, and x then waits for
+ * band_solve_rest; else *fused 0. */
+static int band_factor_x(tband *A, const int fresh, size_t q0, const double acc0[CK_ACC],
+                         double *ck, const double *src, double x[], int *fused)
+{
+#if RING_AVX2
+    if (x && A->t == TAIL && __builtin_cpu_supports("avx2")) {
+        *fused = 1;
+        return band_factor_fwd_avx2(A, fresh, q0, acc0, ck, src, x);
+    }
+#endif
+    (void)x;
+    *fused = 0;
+    return band_factor_from(A, fresh, q0, acc0, ck, src);
+}
 
 static int band_alloc(tband *A, size_t N, size_t t)
 {
@@ -1517,17 +1662,13 @@ static int condense_knots(tirenv_ring_tread *T)
     return 0;
 }
 
-/* The full system's solve (x: 2 n + m entries) with the band's factor and the knots': the
- * knots' right-hand side eliminated, the band solved, the knots back-substituted. */
-static void solve_full(tirenv_ring *r, double x[])
+/* The knots' right-hand side eliminated from the band's rows of x (2 n + m entries), the
+ * first part of the full system's solve (solve_full). */
+static void knots_eliminate(tirenv_ring *r, double x[])
 {
     tirenv_ring_tread *T = r->tread;
     const size_t m = T->m, N = 2 * r->n;
-    if (m == 0) {
-        band_solve(&T->win, x);
-        return;
-    }
-    double *xa = x + N, *y = T->z0; /* free after the factorisation */
+    double *xa = x + N, *y = T->z0; /* free after condense_knots */
     for (size_t k = 0; k < m; ++k)
         y[k] = xa[k];
     knots_solve(T, y);
@@ -1536,12 +1677,33 @@ static void solve_full(tirenv_ring *r, double x[])
         x[2 * i + 1] -= T->c0[k] * y[k];
         x[2 * i + 3] -= T->c1[k] * y[k];
     }
-    band_solve(&T->win, x);
+}
+
+/* solve_full's part after the band's forward substitution (fused: done with the
+ * factorisation, band_factor_x; else the band's whole solve here), the knots' right-hand
+ * side eliminated before it (knots_eliminate). */
+static void solve_after(tirenv_ring *r, double x[], int fused)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t m = T->m, N = 2 * r->n;
+    double *xa = x + N;
+    if (fused)
+        band_solve_rest(&T->win, x);
+    else
+        band_solve(&T->win, x);
     for (size_t k = 0; k < m; ++k) {
         const size_t i = T->kj[k];
         xa[k] -= T->c0[k] * x[2 * i + 1] + T->c1[k] * x[2 * i + 3];
     }
     knots_solve(T, xa);
+}
+
+/* The full system's solve (x: 2 n + m entries) with the band's factor and the knots': the
+ * knots' right-hand side eliminated, the band solved, the knots back-substituted. */
+static void solve_full(tirenv_ring *r, double x[])
+{
+    knots_eliminate(r, x);
+    solve_after(r, x, 0);
 }
 
 /* d(omega)/dz of point q: half the motion of the angles between its pieces' ends, its
@@ -1662,10 +1824,12 @@ static size_t restart_column(size_t p, size_t m)
  * before it and its own entries), so they are kept: the factorisation goes on from the last
  * checkpoint (every CKS-th column) whose BAND_P pending columns lie before the first change,
  * its state (the pending columns' entries as the columns before left them, the tail block's
- * accumulators) taken from the checkpoint. The same bits as factorising the whole. Nonzero if
+ * accumulators) taken from the checkpoint. The same bits as factorising the whole. With x
+ * (not NULL), x's forward substitution too where band_factor_x can (*fused 1). Nonzero if
  * not positive definite. */
-static int band_refactor(tirenv_ring_tread *T)
+static int band_refactor(tirenv_ring_tread *T, double x[], int *fused)
 {
+    *fused = 0;
     tband *S = &T->as, *P = &T->ap, *F = &T->win;
     const size_t N = S->N, t = S->t, m = N - t, W = BAND_P + 1;
     size_t q = 0;
@@ -1694,7 +1858,7 @@ static int band_refactor(tirenv_ring_tread *T)
                    TAIL * BAND_P * sizeof *F->B);
         }
         memcpy(F->T, S->T, sizeof F->T);
-        bad = band_factor_from(F, 1, 0, NULL, T->ck, S->L);
+        bad = band_factor_x(F, 1, 0, NULL, T->ck, S->L, x, fused);
     } else {
         /* Columns q .. q + BAND_P - 1 as they stood before column q was factorised (their
          * entries the same: the first change is past them), the tail's last BAND_P columns
@@ -1702,7 +1866,7 @@ static int band_refactor(tirenv_ring_tread *T)
         const double *acc = ck_restore(T->ck, F, q);
         memcpy(F->B + TAIL * (m - BAND_P), S->B + TAIL * (m - BAND_P),
                TAIL * BAND_P * sizeof *F->B);
-        bad = band_factor_from(F, 1, q, acc, T->ck, S->L);
+        bad = band_factor_x(F, 1, q, acc, T->ck, S->L, x, fused);
     }
     const tband sw = *S;
     *S = *P, *P = sw;
@@ -1711,13 +1875,32 @@ static int band_refactor(tirenv_ring_tread *T)
 }
 
 /* The driver's callbacks (ring_newton.c). */
+/* The system at K and the points' states factorised; its right-hand side rhs, eliminated of the
+ * knots' and forward-substituted with the factorisation where it can, waits for solve_cb
+ * (T->fwd, T->fwd_fused): the driver solves it next. */
 static int factor_cb(tirenv_ring *r, const void *K, double rhs[])
 {
+    tirenv_ring_tread *T = r->tread;
+    T->fwd = NULL;
     assemble(r, (const double(*)[NB])K, rhs);
-    return condense_knots(r->tread) || band_refactor(r->tread);
+    if (condense_knots(T))
+        return 1;
+    knots_eliminate(r, rhs);
+    if (band_refactor(T, rhs, &T->fwd_fused))
+        return 1;
+    T->fwd = rhs;
+    return 0;
 }
 
-static void solve_cb(tirenv_ring *r, double x[]) { solve_full(r, x); }
+static void solve_cb(tirenv_ring *r, double x[])
+{
+    tirenv_ring_tread *T = r->tread;
+    if (x == T->fwd)
+        solve_after(r, x, T->fwd_fused);
+    else
+        solve_full(r, x);
+    T->fwd = NULL;
+}
 
 /* The points' terms of E along x + alpha p: per point in reach, the contact layer on the
  * tread surface (c = omega R k_g, a = d - u_q(x), b = u_q(p)) and the belt layer beneath
@@ -2823,7 +3006,11 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
         const size_t p = first_change(S, P, m);
         *q = restart_column(p, m);
     }
-    int st = band_refactor(T) != 0 || band_factor_from(&X, 1, 0, NULL, NULL, NULL) != 0 ? -1 : 0;
+    int fused;
+    int st = band_refactor(T, NULL, &fused) != 0 ||
+                     band_factor_from(&X, 1, 0, NULL, NULL, NULL) != 0
+                 ? -1
+                 : 0;
     if (st == 0) {
         *moved = !tirenv_ring__same_bits(&F->L[W * c], &old_c, 1);
         st = !tirenv_ring__same_bits(F->L, X.L, W * m) ||
@@ -2876,6 +3063,88 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
     free(X[0].L);
     free(X[1].L);
     free(ck);
+    return st;
+}
+
+/* For tests: the window's last factorised system (T->ap, its fresh tail entries taken as zero)
+ * factorised from column 0 with checkpoints and then solved (band_factor_from, band_solve), and
+ * factorised again with the solve's forward substitution in the same pass (band_factor_x):
+ * from column 0, and restarted at each checkpoint from the first factor's state there (as
+ * band_refactor does). A right-hand side of pseudo-random entries in [-1, 1) from seed with
+ * lead leading +0 rows, its tail entry neg0 (< 4; else none) -0. 0 if every fused solve and
+ * factor is the same bits as the first, 1 if not, -1 if it cannot; *fused 1 if the fused pass
+ * ran (the AVX2 build), *n_restarts the restarts compared. */
+int tirenv_ring__tread_fused_solve(const tirenv_ring *r, unsigned long seed, size_t lead,
+                                   size_t neg0, int *fused, size_t *n_restarts)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const tband *P = &T->ap;
+    const size_t N = P->N, t = P->t, W = BAND_P + 1;
+    *fused = 0, *n_restarts = 0;
+    if (!T->ap_ok || t != TAIL || N < t + 1)
+        return -1;
+    const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1);
+    lead = lead < m ? lead : m;
+    tband X = {0}, Y = {0};
+    double *ck = calloc(n_ck, sizeof *ck), *x = malloc(3 * N * sizeof *x);
+    tirenv_rng *rng = tirenv_rng_alloc(seed);
+    int st = !ck || !x || !rng || band_alloc(&X, N, TAIL) || band_alloc(&Y, N, TAIL) ? -1 : 0;
+    double *b = x + N, *y = x + 2 * N;
+    if (st == 0) {
+        for (size_t i = 0; i < N; ++i)
+            b[i] = i < lead ? 0 : 2 * tirenv_rng_uniform(rng) - 1;
+        if (neg0 < TAIL)
+            b[m + neg0] = -0.0;
+        X.N = N, X.t = t;
+        memcpy(X.L, P->L, W * m * sizeof *X.L);
+        memcpy(X.B, P->B, TAIL * m * sizeof *X.B);
+        memcpy(X.T, P->T, sizeof X.T);
+        st = band_factor_from(&X, 1, 0, NULL, ck, NULL) != 0 ? -1 : 0;
+    }
+    if (st == 0) {
+        memcpy(x, b, N * sizeof *x);
+        band_solve(&X, x);
+    }
+    /* q = 0: the whole factorisation; then each checkpoint's restart */
+    for (size_t q = 0; st == 0 && q + BAND_P < m; q += CKS) {
+        Y.N = N, Y.t = t;
+        const double *acc = NULL;
+        if (q == 0) {
+            memcpy(Y.L, P->L, W * m * sizeof *Y.L);
+            memcpy(Y.B, P->B, TAIL * m * sizeof *Y.B);
+            memcpy(Y.T, P->T, sizeof Y.T);
+        } else {
+            if (q + BAND_P >= m - BAND_P)
+                break;
+            memcpy(Y.L, X.L, W * m * sizeof *Y.L);
+            memcpy(Y.B, X.B, TAIL * m * sizeof *Y.B);
+            acc = ck_restore(ck, &Y, q);
+            memcpy(Y.B + TAIL * (m - BAND_P), P->B + TAIL * (m - BAND_P),
+                   TAIL * BAND_P * sizeof *Y.B);
+            memcpy(Y.T, P->T, sizeof Y.T);
+            ++*n_restarts;
+        }
+        memcpy(y, b, N * sizeof *y);
+        int f = 0;
+        if (band_factor_x(&Y, 1, q, acc, NULL, P->L, y, &f) != 0) {
+            st = -1;
+            break;
+        }
+        *fused |= f;
+        if (f)
+            band_solve_rest(&Y, y);
+        else
+            band_solve(&Y, y);
+        if (!tirenv_ring__same_bits(x, y, N) || !tirenv_ring__same_bits(X.L, Y.L, W * m) ||
+            !tirenv_ring__same_bits(X.B, Y.B, TAIL * m) ||
+            !tirenv_ring__same_bits(&X.T[0][0], &Y.T[0][0], TAIL * TAIL))
+            st = 1;
+    }
+    tirenv_rng_free(rng);
+    free(X.L);
+    free(Y.L);
+    free(ck);
+    free(x);
     return st;
 }
 

@@ -928,6 +928,49 @@ static void test_factor_isa_same_bits(void **state)
     tirenv_ring_free(r);
 }
 
+/* The Newton step's forward substitution run in the factorisation's pass (ring_shear.c's
+ * band_factor_x, band_solve_rest) against the factorisation and then the solve (band_solve),
+ * bit for bit, the solution and the factor: on the last Newton step's system at the bench
+ * cleat's positions and five heights each, from column 0 and restarted at every checkpoint,
+ * for right-hand sides with 0, 37 and all band rows +0 first and with a tail entry -0 (which
+ * sends band_solve from row 0). It fails if a row's operations or their order differ from
+ * band_solve's, if the rows before a restart or after the interior columns are left out or
+ * taken twice, or if the tail's right-hand side is updated out of row order. Where the
+ * processor has no AVX2 the unfused path runs and is compared the same way. */
+static void test_fused_solve_same_bits(void **state)
+{
+    (void)state;
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
+    assert_non_null(r);
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    const size_t leads[4] = {0, 37, (size_t)-1, 0}, neg0s[4] = {4, 4, 4, 2};
+    size_t compared = 0, restarts = 0;
+    int any_fused = 0;
+    for (size_t i = 0; i < 5; ++i)
+        for (size_t k = 0; k < 5; ++k) {
+            evaluate_at(r, p, t.springs.R0, i, k);
+            for (size_t v = 0; v < 4; ++v) {
+                int fused = 0;
+                size_t nr = 0;
+                const int st = tirenv_ring__tread_fused_solve(r, 59 + 4 * i + k, leads[v],
+                                                              neg0s[v], &fused, &nr);
+                if (st == -1)
+                    continue; /* no contact: no window factorised */
+                assert_int_equal(st, 0);
+                ++compared;
+                restarts += nr;
+                any_fused |= fused;
+            }
+        }
+    print_message("fused solves compared: %zu, restarts %zu, fused %d\n", compared, restarts,
+                  any_fused);
+    assert_true(compared >= 60);
+    assert_true(restarts >= 10 * compared);
+    tirenv_profile_free(p);
+    tirenv_ring_free(r);
+}
+
 /* The window's banded U D U^T factor (ring_shear.c's band_factor_from, band_refactor) solves its
  * system backward-stably: at the bench cleat's positions and five heights each, after each
  * evaluation, the last Newton step's system solved for three pseudo-random right-hand sides
@@ -1476,6 +1519,7 @@ int main(void)
         cmocka_unit_test(test_window_fill_matches_arc),
         cmocka_unit_test(test_refactor_restart),
         cmocka_unit_test(test_factor_isa_same_bits),
+        cmocka_unit_test(test_fused_solve_same_bits),
         cmocka_unit_test(test_solve_residual),
         cmocka_unit_test(test_solve_leading_zeros),
         cmocka_unit_test(test_answers_as_main),
