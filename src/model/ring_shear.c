@@ -124,8 +124,8 @@ struct tirenv_ring_tread {
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
     int ext_all;        /* ext holds the factor of the longest exterior, M - 1 nodes, and ey
-                         * (3 x 2 M) its forward substitutions U^-1 e_a of the first three unit
-                         * vectors */
+                         * (2 M x 4, by rows) its forward substitutions U^-1 e_a of the first
+                         * three unit vectors, the fourth of each row +0 */
     double *ey;
     tband as, ap;       /* the window's system as assemble writes it, and the one before it,
                          * whose factor win holds if ap_ok (band_refactor) */
@@ -882,7 +882,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
         band_alloc(&T->as, 2 * M, TAIL) || band_alloc(&T->ap, 2 * M, TAIL) ||
         !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck)) ||
-        !(T->ey = malloc(3 * 2 * M * sizeof *T->ey))) {
+        !(T->ey = malloc(4 * 2 * M * sizeof *T->ey))) {
         tirenv_ring__tread_free(T);
         return NULL;
     }
@@ -1096,7 +1096,8 @@ static void ext_index(size_t Ne, size_t e[NB])
  * only the rows of the length it is given). One factorisation of the longest exterior, M - 1
  * nodes, then serves every window length, where each length factorised its own; and so do the
  * forward substitutions of the first three unit vectors, which compute_end's columns start
- * from (row i's y depends only on the rows up to i). */
+ * from (row i's y depends only on the rows up to i), kept by rows in ey (four a row, the
+ * fourth +0: ext_columns' lanes). */
 static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
 {
     tband *E = &T->ext;
@@ -1110,33 +1111,119 @@ static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
     band_factor(E); /* a principal block of the positive definite whole */
     T->ext_all = !T->lugs;
     for (size_t a = 0; a < 3 && T->ext_all; ++a) {
-        double *y = T->ey + a * 2 * T->M;
+        double *y = T->col;
         memset(y, 0, Nf * sizeof *y);
         y[a] = 1;
         band_solve_t(E, y, 0, a, 1);
+        for (size_t i = 0; i < Nf; ++i)
+            T->ey[4 * i + a] = y[i];
     }
+    for (size_t i = 0; i < Nf && T->ext_all; ++i)
+        T->ey[4 * i + 3] = 0;
     E->N = 2 * ne;
 }
 
-/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. */
-static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
-                        double *cols)
+/* Rows the ext_columns' last unit vectors' forward substitutions reach back to: the first of
+ * them, Ne - 4, and the BAND_P rows before it that its row reads. */
+enum { EXT_LAST = 8 };
+
+/* The six columns of K_EE^-1 at the coupled unknowns as ext_solve gives them one by one
+ * (compute_end's reference, ext_columns_each), in lanes: each lane gets a column's operations
+ * in its order, so the same bits. Row i of the back substitution (t = 0) is
+ *     x_i = z_i / D_i - U_i+4,i x_i+4 - ... - U_i+1,i x_i+1   (the farthest product first),
+ * fewer products in the last BAND_P rows; z the forward substitution: the first three columns'
+ * from ey (exterior_factor), the last three's zero up to their unit row, solved from there
+ * (rows Ne - EXT_LAST on), so that below row Ne - EXT_LAST the lanes' z are ey's row, its +0
+ * fourth, and +0. The factor's row is loaded once for the six columns, where each column's
+ * solve loaded it again, and no column is copied in or zeroed first. cols (NULL: only G
+ * wanted): the columns, Ne each; G[c][a]: column a at coupled unknown c. Ne >= 2 EXT_LAST. */
+static inline __attribute__((always_inline)) void
+ext_columns_body(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
+                 double G[NB][NB], const int store)
 {
-    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
-    exterior_factor(T, (lo + n) % M, ne);
     const tband *E = &T->ext;
-    size_t eidx[NB];
-    ext_index(Ne, eidx);
-    double X[NB][NB];
-    ext_coupling(T, X);
-    double G[NB][NB];
+    const double *const L = E->L, *const ey = T->ey;
+    const size_t i1 = Ne - EXT_LAST;
+    /* The last rows of all six: z, then x, by column (the general rows of band_solve_t). */
+    double xl[NB][EXT_LAST];
+    for (size_t a = 0; a < NB; ++a) {
+        double z[EXT_LAST];
+        if (a < 3) {
+            for (size_t k = 0; k < EXT_LAST; ++k)
+                z[k] = ey[4 * (i1 + k) + a];
+        } else {
+            double *y = T->col;
+            memset(y + i1, 0, EXT_LAST * sizeof *y);
+            y[eidx[a]] = 1;
+            band_solve_t(E, y, 0, eidx[a], 1);
+            memcpy(z, y + i1, sizeof z);
+        }
+        for (size_t k = EXT_LAST; k-- > 0;) {
+            const size_t i = i1 + k, nk = Ne - 1 - i < BAND_P ? Ne - 1 - i : BAND_P;
+            double v = z[k] * L[(BAND_P + 1) * i];
+            for (size_t h = nk; h >= 1; --h)
+                v -= L[(BAND_P + 1) * i + h] * xl[a][k + h];
+            xl[a][k] = v;
+        }
+        if (store)
+            memcpy(cols + a * Ne + i1, xl[a], sizeof xl[a]);
+        for (size_t c = 3; c < NB; ++c)
+            G[c][a] = xl[a][eidx[c] - i1];
+    }
+    /* The other rows, all four products each: columns 0, 1 | 2, 3 | 4, 5 in pairs of lanes,
+     * the last four rows' x of each pair carried in registers. */
+    v2d p4[3], p3[3], p2[3], p1[3];
+    for (size_t g = 0; g < 3; ++g) {
+        p4[g] = (v2d){xl[2 * g][3], xl[2 * g + 1][3]};
+        p3[g] = (v2d){xl[2 * g][2], xl[2 * g + 1][2]};
+        p2[g] = (v2d){xl[2 * g][1], xl[2 * g + 1][1]};
+        p1[g] = (v2d){xl[2 * g][0], xl[2 * g + 1][0]};
+    }
+    for (size_t i = i1; i-- > 0;) {
+        const double *l = L + (BAND_P + 1) * i;
+        const v2d l0 = {l[0], l[0]}, l1 = {l[1], l[1]}, l2 = {l[2], l[2]}, l3 = {l[3], l[3]},
+                  l4 = {l[4], l[4]};
+        const v2d z[3] = {v2_load(ey + 4 * i), v2_load(ey + 4 * i + 2), {0, 0}};
+        for (size_t g = 0; g < 3; ++g) {
+            v2d v = z[g] * l0;
+            v -= l4 * p4[g];
+            v -= l3 * p3[g];
+            v -= l2 * p2[g];
+            v -= l1 * p1[g];
+            p4[g] = p3[g], p3[g] = p2[g], p2[g] = p1[g], p1[g] = v;
+            if (store) {
+                cols[2 * g * Ne + i] = v[0];
+                cols[(2 * g + 1) * Ne + i] = v[1];
+            }
+            if (i < 3)
+                G[i][2 * g] = v[0], G[i][2 * g + 1] = v[1];
+        }
+    }
+}
+
+static void ext_columns(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
+                        double G[NB][NB])
+{
+    if (cols)
+        ext_columns_body(T, Ne, eidx, cols, G, 1);
+    else
+        ext_columns_body(T, Ne, eidx, NULL, G, 0);
+}
+
+/* The same one column at a time (ext_solve), each copied in (a kept forward substitution) or
+ * a unit vector: with lugs (no kept ones) or short exteriors, and the tests' reference. */
+static void ext_columns_each(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB],
+                             double *cols, double G[NB][NB])
+{
+    const tband *E = &T->ext;
     for (size_t a = 0; a < NB; ++a) {
         /* Unit vectors: their leading zeros are their own y (ext_solve), and the first
          * three's whole y the longest exterior's (exterior_factor). */
         const int kept = T->ext_all && eidx[a] < 3;
         double *const col = cols ? cols + a * Ne : T->col; /* solved where it is kept */
         if (kept) {
-            memcpy(col, T->ey + eidx[a] * 2 * M, Ne * sizeof *col);
+            for (size_t i = 0; i < Ne; ++i)
+                col[i] = T->ey[4 * i + eidx[a]];
         } else {
             memset(col, 0, Ne * sizeof *col);
             col[eidx[a]] = 1;
@@ -1145,6 +1232,24 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
         for (size_t c = 0; c < NB; ++c)
             G[c][a] = col[eidx[c]];
     }
+}
+
+/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. each:
+ * one column at a time (ext_columns_each), the tests' reference. */
+static void compute_end_by(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
+                           double *cols, int each)
+{
+    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
+    exterior_factor(T, (lo + n) % M, ne);
+    size_t eidx[NB];
+    ext_index(Ne, eidx);
+    double X[NB][NB];
+    ext_coupling(T, X);
+    double G[NB][NB];
+    if (T->ext_all && Ne >= 2 * EXT_LAST && !each)
+        ext_columns(T, Ne, eidx, cols, G);
+    else
+        ext_columns_each(T, Ne, eidx, cols, G);
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u) {
             double sum = 0;
@@ -1156,6 +1261,12 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < v; ++u)
             Q[v][u] = Q[u][v] = 0.5 * (Q[v][u] + Q[u][v]);
+}
+
+static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
+                        double *cols)
+{
+    compute_end_by(T, lo, n, Q, cols, 0);
 }
 
 static const double (*window_end(tirenv_ring *r, double x_c))[NB]
@@ -2984,23 +3095,27 @@ int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, siz
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end
  * gives them (the longest exterior's shared factor, the forward substitutions it keeps and a
- * unit vector's leading zeros skipped: exterior_factor, ext_solve) against a factorisation of
- * that exterior alone and full solves; 0 if the same bits, 1 if not, -1 if it cannot (lugs,
- * n + 4 > M or n < 2, out of memory). */
+ * unit vector's leading zeros skipped: exterior_factor, ext_columns in lanes) against a
+ * factorisation of that exterior alone and full solves, and its end correction against the
+ * one it gives without the columns (window_end's) and the columns' one at a time
+ * (ext_columns_each); 0 if the same bits, 1 if not, -1 if it cannot (lugs, n + 4 > M or
+ * n < 2, out of memory). */
 int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
 {
     tirenv_ring_tread *T = r->tread;
     const size_t M = T->M, ne = M - n, Ne = 2 * ne;
     if (T->lugs || n < 2 || n + 4 > M)
         return -1;
-    double *c1 = malloc(2 * NB * Ne * sizeof *c1);
+    double *c1 = malloc(3 * NB * Ne * sizeof *c1);
     tband E;
     if (!c1 || band_alloc(&E, Ne, 0)) {
         free(c1);
         return -1;
     }
-    double *c2 = c1 + NB * Ne, Q[NB][NB];
-    compute_end(T, 0, n, Q, c1);
+    double *c2 = c1 + NB * Ne, *c3 = c2 + NB * Ne, Q[3][NB][NB];
+    compute_end(T, 0, n, Q[0], c1);
+    compute_end(T, 0, n, Q[1], NULL);
+    compute_end_by(T, 0, n, Q[2], c3, 1);
     band_reset(&E, Ne, 0);
     add_arc(&E, T, n, ne);
     int st = band_factor(&E) ? -1 : 0;
@@ -3013,7 +3128,10 @@ int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
         band_solve(&E, c);
     }
     if (st == 0)
-        st = !tirenv_ring__same_bits(c1, c2, NB * Ne);
+        st = !(tirenv_ring__same_bits(c1, c2, NB * Ne) &&
+               tirenv_ring__same_bits(c1, c3, NB * Ne) &&
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[1][0][0], NB * NB) &&
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[2][0][0], NB * NB));
     free(E.L);
     free(c1);
     return st;
