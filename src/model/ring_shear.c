@@ -1026,12 +1026,36 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     size_t e = 0;
     /* The nodes whose two rows lie in the band with all their entries (then e + 2 < n): the
      * rows below, written straight. */
-    for (; 2 * e + 1 + BAND_P < m; ++e) {
-        const double kap = T->kap[lo + e];
-        double *lw = L + (BAND_P + 1) * 2 * e, *lu = lw + (BAND_P + 1);
-        lw[0] = s[0] + kap, lw[1] = -kap, lw[2] = s[1], lw[3] = 0, lw[4] = s[2];
-        lu[0] = kap + 2 * k_sh, lu[1] = 0, lu[2] = -k_sh, lu[3] = 0, lu[4] = 0;
-        rhs[2 * e] = 0, rhs[2 * e + 1] = 0;
+    {
+        /* The two rows' ten entries as five pairs, three of them the same at every node, in
+         * locals: a store would otherwise make the compiler load s and k_sh again. Without
+         * lugs kap is every node's (set_kappa), and so are all five. */
+        const double s0 = s[0], k2 = 2 * k_sh, s2 = s[2];
+        const v2d s1_0 = {s[1], 0}, z_mk = {0, -k_sh}, zero = {0, 0};
+        const double *kap = T->kap + lo;
+        if (!T->lugs) {
+            const double k = kap[0];
+            const v2d w01 = {s0 + k, -k}, w4u0 = {s2, k + k2};
+            for (; 2 * e + 1 + BAND_P < m; ++e) {
+                double *lw = L + (BAND_P + 1) * 2 * e;
+                v2_store(lw, w01);
+                v2_store(lw + 2, s1_0);
+                v2_store(lw + 4, w4u0);
+                v2_store(lw + 6, z_mk);
+                v2_store(lw + 8, zero);
+                v2_store(rhs + 2 * e, zero);
+            }
+        }
+        for (; 2 * e + 1 + BAND_P < m; ++e) {
+            const double k = kap[e];
+            double *lw = L + (BAND_P + 1) * 2 * e;
+            v2_store(lw, (v2d){s0 + k, -k});      /* lw[0], lw[1] */
+            v2_store(lw + 2, s1_0);               /* lw[2], lw[3] */
+            v2_store(lw + 4, (v2d){s2, k + k2});  /* lw[4], lu[0] */
+            v2_store(lw + 6, z_mk);               /* lu[1], lu[2] */
+            v2_store(lw + 8, zero);               /* lu[3], lu[4] */
+            v2_store(rhs + 2 * e, zero);
+        }
     }
     for (; e < n; ++e) {
         const double kap = T->kap[lo + e];
@@ -2875,9 +2899,9 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         for (size_t i = 0; i < N; ++i)
             rhs[i] = NAN;
         fill_window(&A, T, r->lo, n, rhs);
-        if (m >= FRESH_FROM + BAND_P)
-            memset(A.B + TAIL * FRESH_FROM, 0,
-                   TAIL * (m - BAND_P - FRESH_FROM) * sizeof *A.B);
+        const size_t fresh = m >= FRESH_FROM + BAND_P ? m - BAND_P - FRESH_FROM : 0;
+        if (fresh > 0)
+            memset(A.B + TAIL * FRESH_FROM, 0, TAIL * fresh * sizeof *A.B);
         int zeroed = 1;
         for (size_t i = 0; i < N; ++i)
             zeroed &= rhs[i] == 0;
