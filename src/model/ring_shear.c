@@ -1151,25 +1151,52 @@ static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
  * them, Ne - 4, and the BAND_P rows before it that its row reads. */
 enum { EXT_LAST = 8 };
 
+/* One row i < Ne - EXT_LAST of ext_columns' back substitution, the six columns in three pairs
+ * of lanes (p1 .. p4: each pair's x at rows i + 1 .. i + 4, moved on by one); z from ey's row
+ * (columns 0 .. 3, the fourth +0) and +0 (4, 5). */
+static inline __attribute__((always_inline)) void
+ext_row(const double *L, const double *ey, size_t Ne, size_t i, v2d p4[3], v2d p3[3], v2d p2[3],
+        v2d p1[3], double *cols, const int store)
+{
+    const double *l = L + (BAND_P + 1) * i;
+    const v2d l0 = {l[0], l[0]}, l1 = {l[1], l[1]}, l2 = {l[2], l[2]}, l3 = {l[3], l[3]},
+              l4 = {l[4], l[4]};
+    const v2d z[3] = {v2_load(ey + 4 * i), v2_load(ey + 4 * i + 2), {0, 0}};
+    for (size_t g = 0; g < 3; ++g) {
+        v2d v = z[g] * l0;
+        v -= l4 * p4[g];
+        v -= l3 * p3[g];
+        v -= l2 * p2[g];
+        v -= l1 * p1[g];
+        p4[g] = p3[g], p3[g] = p2[g], p2[g] = p1[g], p1[g] = v;
+        if (store) {
+            cols[2 * g * Ne + i] = v[0];
+            cols[(2 * g + 1) * Ne + i] = v[1];
+        }
+    }
+}
+
 /* The six columns of K_EE^-1 at the coupled unknowns as ext_solve gives them one by one
- * (compute_end's reference, ext_columns_each), in lanes: each lane gets a column's operations
- * in its order, so the same bits. Row i of the back substitution (t = 0) is
+ * (compute_end's reference, ext_columns_each), in lanes (ext_columns_base, ext_columns_avx2):
+ * each lane gets a column's operations in its order, so the same bits. Row i of the back
+ * substitution (t = 0) is
  *     x_i = z_i / D_i - U_i+4,i x_i+4 - ... - U_i+1,i x_i+1   (the farthest product first),
  * fewer products in the last BAND_P rows; z the forward substitution: the first three columns'
  * from ey (exterior_factor), the last three's zero up to their unit row, solved from there
  * (rows Ne - EXT_LAST on), so that below row Ne - EXT_LAST the lanes' z are ey's row, its +0
  * fourth, and +0. The factor's row is loaded once for the six columns, where each column's
  * solve loaded it again, and no column is copied in or zeroed first. cols (NULL: only G
- * wanted): the columns, Ne each; G[c][a]: column a at coupled unknown c. Ne >= 2 EXT_LAST. */
+ * wanted): the columns, Ne each; G[c][a]: column a at coupled unknown c. Ne >= 2 EXT_LAST.
+ * Here the rows from Ne - EXT_LAST on, column by column, into xl (and cols), and G's rows at
+ * the last three coupled unknowns. */
 static inline __attribute__((always_inline)) void
-ext_columns_body(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
-                 double G[NB][NB], const int store)
+ext_last_rows(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
+              double G[NB][NB], double xl[NB][EXT_LAST])
 {
     const tband *E = &T->ext;
     const double *const L = E->L, *const ey = T->ey;
     const size_t i1 = Ne - EXT_LAST;
     /* The last rows of all six: z, then x, by column (the general rows of band_solve_t). */
-    double xl[NB][EXT_LAST];
     for (size_t a = 0; a < NB; ++a) {
         double z[EXT_LAST];
         if (a < 3) {
@@ -1189,13 +1216,25 @@ ext_columns_body(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double 
                 v -= L[(BAND_P + 1) * i + h] * xl[a][k + h];
             xl[a][k] = v;
         }
-        if (store)
+        if (cols)
             memcpy(cols + a * Ne + i1, xl[a], sizeof xl[a]);
         for (size_t c = 3; c < NB; ++c)
             G[c][a] = xl[a][eidx[c] - i1];
     }
+}
+
+/* The columns in the baseline build: the last rows (ext_last_rows), then the others in pairs
+ * of lanes (ext_row). */
+static inline __attribute__((always_inline)) void
+ext_columns_body(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
+                 double G[NB][NB], const int store)
+{
+    const double *const L = T->ext.L, *const ey = T->ey;
+    const size_t i1 = Ne - EXT_LAST;
+    double xl[NB][EXT_LAST];
+    ext_last_rows(T, Ne, eidx, cols, G, xl);
     /* The other rows, all four products each: columns 0, 1 | 2, 3 | 4, 5 in pairs of lanes,
-     * the last four rows' x of each pair carried in registers. */
+     * the last four rows' x of each pair carried in registers; rows 0 .. 2 also into G. */
     v2d p4[3], p3[3], p2[3], p1[3];
     for (size_t g = 0; g < 3; ++g) {
         p4[g] = (v2d){xl[2 * g][3], xl[2 * g + 1][3]};
@@ -1203,36 +1242,109 @@ ext_columns_body(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double 
         p2[g] = (v2d){xl[2 * g][1], xl[2 * g + 1][1]};
         p1[g] = (v2d){xl[2 * g][0], xl[2 * g + 1][0]};
     }
-    for (size_t i = i1; i-- > 0;) {
-        const double *l = L + (BAND_P + 1) * i;
-        const v2d l0 = {l[0], l[0]}, l1 = {l[1], l[1]}, l2 = {l[2], l[2]}, l3 = {l[3], l[3]},
-                  l4 = {l[4], l[4]};
-        const v2d z[3] = {v2_load(ey + 4 * i), v2_load(ey + 4 * i + 2), {0, 0}};
-        for (size_t g = 0; g < 3; ++g) {
-            v2d v = z[g] * l0;
-            v -= l4 * p4[g];
-            v -= l3 * p3[g];
-            v -= l2 * p2[g];
-            v -= l1 * p1[g];
-            p4[g] = p3[g], p3[g] = p2[g], p2[g] = p1[g], p1[g] = v;
-            if (store) {
-                cols[2 * g * Ne + i] = v[0];
-                cols[(2 * g + 1) * Ne + i] = v[1];
-            }
-            if (i < 3)
-                G[i][2 * g] = v[0], G[i][2 * g + 1] = v[1];
-        }
+    size_t i = i1;
+    for (; i > 3; --i)
+        ext_row(L, ey, Ne, i - 1, p4, p3, p2, p1, cols, store);
+    for (; i > 0; --i) {
+        ext_row(L, ey, Ne, i - 1, p4, p3, p2, p1, cols, store);
+        for (size_t g = 0; g < 3; ++g)
+            G[i - 1][2 * g] = p1[g][0], G[i - 1][2 * g + 1] = p1[g][1];
     }
 }
 
-static void ext_columns(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
-                        double G[NB][NB])
+static void ext_columns_base(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB],
+                             double *cols, double G[NB][NB])
 {
     if (cols)
         ext_columns_body(T, Ne, eidx, cols, G, 1);
     else
         ext_columns_body(T, Ne, eidx, NULL, G, 0);
 }
+
+#if RING_AVX2
+/* ext_row in the AVX2 build: columns 0 .. 3 in four lanes (a1 .. a4: their x at rows i + 1 ..
+ * i + 4), 4 and 5 in two (b1 .. b4), the same operations in each lane; x_i into *va, *vb. */
+__attribute__((target("avx2"))) static inline __attribute__((always_inline)) void
+ext_row4(const double *L, const double *ey, size_t Ne, size_t i, const v4d *a4, const v4d *a3,
+         const v4d *a2, const v4d *a1, const v2d *b4, const v2d *b3, const v2d *b2,
+         const v2d *b1, v4d *va, v2d *vb, double *cols, const int store)
+{
+    const double *l = L + (BAND_P + 1) * i;
+    v4d z;
+    v4_load(&z, ey + 4 * i);
+    v4d v = z * (v4d){l[0], l[0], l[0], l[0]};
+    v -= (v4d){l[4], l[4], l[4], l[4]} * *a4;
+    v -= (v4d){l[3], l[3], l[3], l[3]} * *a3;
+    v -= (v4d){l[2], l[2], l[2], l[2]} * *a2;
+    v -= (v4d){l[1], l[1], l[1], l[1]} * *a1;
+    v2d w = (v2d){0, 0} * (v2d){l[0], l[0]};
+    w -= (v2d){l[4], l[4]} * *b4;
+    w -= (v2d){l[3], l[3]} * *b3;
+    w -= (v2d){l[2], l[2]} * *b2;
+    w -= (v2d){l[1], l[1]} * *b1;
+    if (store) {
+        cols[i] = v[0], cols[Ne + i] = v[1], cols[2 * Ne + i] = v[2];
+        cols[3 * Ne + i] = v[3], cols[4 * Ne + i] = w[0], cols[5 * Ne + i] = w[1];
+    }
+    *va = v, *vb = w;
+}
+
+/* ext_columns_body's rows below Ne - EXT_LAST in the AVX2 build (ext_row4), four rows an
+ * iteration so that the carried x need no moves; xl: the last EXT_LAST rows' x by column. */
+__attribute__((target("avx2"))) static inline __attribute__((always_inline)) void
+ext_rows4(const double *L, const double *ey, size_t Ne, double xl[NB][EXT_LAST], double *cols,
+          double G[NB][NB], const int store)
+{
+    v4d a4 = {xl[0][3], xl[1][3], xl[2][3], xl[3][3]},
+        a3 = {xl[0][2], xl[1][2], xl[2][2], xl[3][2]},
+        a2 = {xl[0][1], xl[1][1], xl[2][1], xl[3][1]},
+        a1 = {xl[0][0], xl[1][0], xl[2][0], xl[3][0]};
+    v2d b4 = {xl[4][3], xl[5][3]}, b3 = {xl[4][2], xl[5][2]}, b2 = {xl[4][1], xl[5][1]},
+        b1 = {xl[4][0], xl[5][0]};
+    size_t i = Ne - EXT_LAST;
+    for (; i >= 3 + 4; i -= 4) {
+        v4d v0, v1, v2, v3;
+        v2d w0, w1, w2, w3;
+        ext_row4(L, ey, Ne, i - 1, &a4, &a3, &a2, &a1, &b4, &b3, &b2, &b1, &v0, &w0, cols, store);
+        ext_row4(L, ey, Ne, i - 2, &a3, &a2, &a1, &v0, &b3, &b2, &b1, &w0, &v1, &w1, cols, store);
+        ext_row4(L, ey, Ne, i - 3, &a2, &a1, &v0, &v1, &b2, &b1, &w0, &w1, &v2, &w2, cols, store);
+        ext_row4(L, ey, Ne, i - 4, &a1, &v0, &v1, &v2, &b1, &w0, &w1, &w2, &v3, &w3, cols, store);
+        a4 = v0, a3 = v1, a2 = v2, a1 = v3;
+        b4 = w0, b3 = w1, b2 = w2, b1 = w3;
+    }
+    for (; i > 0; --i) {
+        v4d v;
+        v2d w;
+        ext_row4(L, ey, Ne, i - 1, &a4, &a3, &a2, &a1, &b4, &b3, &b2, &b1, &v, &w, cols, store);
+        a4 = a3, a3 = a2, a2 = a1, a1 = v;
+        b4 = b3, b3 = b2, b2 = b1, b1 = w;
+        if (i - 1 < 3) {
+            double *g = G[i - 1];
+            g[0] = v[0], g[1] = v[1], g[2] = v[2], g[3] = v[3], g[4] = w[0], g[5] = w[1];
+        }
+    }
+}
+
+/* The same in the AVX2 build: columns 0 .. 3 in four lanes, 4 and 5 in two, and the
+ * three-operand instructions save the copies (as band_factor's, docs/performance.md 2.27);
+ * the same operations in each lane. */
+__attribute__((target("avx2"))) static void ext_columns_avx2(tirenv_ring_tread *T, size_t Ne,
+                                                             const size_t eidx[NB],
+                                                             double *cols, double G[NB][NB])
+{
+    double xl[NB][EXT_LAST];
+    ext_last_rows(T, Ne, eidx, cols, G, xl);
+    if (cols)
+        ext_rows4(T->ext.L, T->ey, Ne, xl, cols, G, 1);
+    else
+        ext_rows4(T->ext.L, T->ey, Ne, xl, NULL, G, 0);
+}
+#endif
+
+/* How compute_end solves the columns: by the processor (ext_columns_avx2 where it has AVX2),
+ * in pairs of lanes in the baseline build, or one at a time (ext_columns_each); the last two
+ * the tests' references. */
+enum { EXT_AUTO, EXT_BASE, EXT_EACH };
 
 /* The same one column at a time (ext_solve), each copied in (a kept forward substitution) or
  * a unit vector: with lugs (no kept ones) or short exteriors, and the tests' reference. */
@@ -1258,10 +1370,10 @@ static void ext_columns_each(tirenv_ring_tread *T, size_t Ne, const size_t eidx[
     }
 }
 
-/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. each:
- * one column at a time (ext_columns_each), the tests' reference. */
+/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each; how:
+ * EXT_AUTO, or one of the tests' references. */
 static void compute_end_by(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
-                           double *cols, int each)
+                           double *cols, int how)
 {
     const size_t M = T->M, ne = M - n, Ne = 2 * ne;
     exterior_factor(T, (lo + n) % M, ne);
@@ -1270,10 +1382,14 @@ static void compute_end_by(tirenv_ring_tread *T, size_t lo, size_t n, double Q[N
     double X[NB][NB];
     ext_coupling(T, X);
     double G[NB][NB];
-    if (T->ext_all && Ne >= 2 * EXT_LAST && !each)
-        ext_columns(T, Ne, eidx, cols, G);
-    else
+    if (!T->ext_all || Ne < 2 * EXT_LAST || how == EXT_EACH)
         ext_columns_each(T, Ne, eidx, cols, G);
+#if RING_AVX2
+    else if (how == EXT_AUTO && __builtin_cpu_supports("avx2"))
+        ext_columns_avx2(T, Ne, eidx, cols, G);
+#endif
+    else
+        ext_columns_base(T, Ne, eidx, cols, G);
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u) {
             double sum = 0;
@@ -1290,7 +1406,7 @@ static void compute_end_by(tirenv_ring_tread *T, size_t lo, size_t n, double Q[N
 static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
                         double *cols)
 {
-    compute_end_by(T, lo, n, Q, cols, 0);
+    compute_end_by(T, lo, n, Q, cols, EXT_AUTO);
 }
 
 static const double (*window_end(tirenv_ring *r, double x_c))[NB]
@@ -3119,10 +3235,11 @@ int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, siz
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end
  * gives them (the longest exterior's shared factor, the forward substitutions it keeps and a
- * unit vector's leading zeros skipped: exterior_factor, ext_columns in lanes) against a
- * factorisation of that exterior alone and full solves, and its end correction against the
- * one it gives without the columns (window_end's) and the columns' one at a time
- * (ext_columns_each); 0 if the same bits, 1 if not, -1 if it cannot (lugs, n + 4 > M or
+ * unit vector's leading zeros skipped: exterior_factor, ext_columns in lanes, the AVX2 build's
+ * where the processor has it) against a factorisation of that exterior alone and full solves,
+ * and its columns and end correction against the baseline build's lanes (ext_columns_base)
+ * and the columns one at a time (ext_columns_each), and the end correction without the columns
+ * (window_end's); 0 if the same bits, 1 if not, -1 if it cannot (lugs, n + 4 > M or
  * n < 2, out of memory). */
 int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
 {
@@ -3130,16 +3247,17 @@ int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
     const size_t M = T->M, ne = M - n, Ne = 2 * ne;
     if (T->lugs || n < 2 || n + 4 > M)
         return -1;
-    double *c1 = malloc(3 * NB * Ne * sizeof *c1);
+    double *c1 = malloc(4 * NB * Ne * sizeof *c1);
     tband E;
     if (!c1 || band_alloc(&E, Ne, 0)) {
         free(c1);
         return -1;
     }
-    double *c2 = c1 + NB * Ne, *c3 = c2 + NB * Ne, Q[3][NB][NB];
+    double *c2 = c1 + NB * Ne, *c3 = c2 + NB * Ne, *c4 = c3 + NB * Ne, Q[4][NB][NB];
     compute_end(T, 0, n, Q[0], c1);
     compute_end(T, 0, n, Q[1], NULL);
-    compute_end_by(T, 0, n, Q[2], c3, 1);
+    compute_end_by(T, 0, n, Q[2], c3, EXT_EACH);
+    compute_end_by(T, 0, n, Q[3], c4, EXT_BASE);
     band_reset(&E, Ne, 0);
     add_arc(&E, T, n, ne);
     int st = band_factor(&E) ? -1 : 0;
@@ -3154,8 +3272,10 @@ int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
     if (st == 0)
         st = !(tirenv_ring__same_bits(c1, c2, NB * Ne) &&
                tirenv_ring__same_bits(c1, c3, NB * Ne) &&
+               tirenv_ring__same_bits(c1, c4, NB * Ne) &&
                tirenv_ring__same_bits(&Q[0][0][0], &Q[1][0][0], NB * NB) &&
-               tirenv_ring__same_bits(&Q[0][0][0], &Q[2][0][0], NB * NB));
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[2][0][0], NB * NB) &&
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[3][0][0], NB * NB));
     free(E.L);
     free(c1);
     return st;
