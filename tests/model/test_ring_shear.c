@@ -1174,13 +1174,13 @@ static void test_deferred_slope(void **state)
 /* The exterior's six columns of K_EE^-1 (ring_shear.c's compute_end: the end correction and the
  * free nodes) from one factorisation of the longest exterior, M - 1 nodes, shared by every
  * window length, with its kept forward substitutions of the first three unit vectors and the
- * others' leading zeros skipped, the six solved together in lanes (ext_columns), against each
- * length's own factorisation and full solves, bit for bit, and the end correction against the
- * one without the columns and the one from the columns solved one at a time: lengths from the
- * shortest to the longest window (exteriors of 8, 14, 16 and 18 unknowns about the lanes'
- * shortest, 16), in an order that makes the first one a long window's, on the default tire
- * (M = 1440) and at another NODE_ANGLE (M = 982). A lugged tire keeps its own factorisation
- * (the hook declines it). */
+ * others' leading zeros skipped, the six solved together in lanes (the AVX2 build's where the
+ * processor has it), against each length's own factorisation and full solves, and against the
+ * baseline build's lanes and the columns solved one at a time, bit for bit, and the end
+ * correction from each and without the columns: lengths from the shortest to the longest
+ * window (exteriors of 8, 14, 16 and 18 unknowns about the lanes' shortest, 16), in an order
+ * that makes the first one a long window's, on the default tire (M = 1440) and at another
+ * NODE_ANGLE (M = 982). A lugged tire keeps its own factorisation (the hook declines it). */
 static void test_exterior_shared_factor(void **state)
 {
     (void)state;
