@@ -472,8 +472,10 @@ int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, siz
                                    size_t neg0, int lead_neg0);
 
 /* For tests: the exterior's six columns for a window of n nodes from ring_shear.c's shared
- * factor of the longest exterior against that exterior's own factorisation and full solves;
- * 0 if the same bits, 1 if not, -1 if it cannot (lugs, n out of range, out of memory). */
+ * factor of the longest exterior, solved in lanes, against that exterior's own factorisation
+ * and full solves, the baseline build's lanes and the columns one at a time, and its end
+ * correction from each and without the columns; 0 if the same bits, 1 if not, -1 if it cannot
+ * (lugs, n out of range, out of memory). */
 int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n);
 
 /* A node's tread stiffness k_t R dtheta (N/m) at angle theta (rad) with the centre at x (m):

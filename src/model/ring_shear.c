@@ -124,8 +124,8 @@ struct tirenv_ring_tread {
     unsigned char *have;
     tband ext, win;     /* the exterior's factor (exterior_factor); the window's (band_refactor) */
     int ext_all;        /* ext holds the factor of the longest exterior, M - 1 nodes, and ey
-                         * (3 x 2 M) its forward substitutions U^-1 e_a of the first three unit
-                         * vectors */
+                         * (2 M x 4, by rows) its forward substitutions U^-1 e_a of the first
+                         * three unit vectors, the fourth of each row +0 */
     double *ey;
     tband as, ap;       /* the window's system as assemble writes it, and the one before it,
                          * whose factor win holds if ap_ok (band_refactor) */
@@ -1027,7 +1027,7 @@ tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_rin
         band_alloc(&T->ext, 2 * M, 0) || band_alloc(&T->win, 2 * M, TAIL) ||
         band_alloc(&T->as, 2 * M, TAIL) || band_alloc(&T->ap, 2 * M, TAIL) ||
         !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck)) ||
-        !(T->ey = malloc(3 * 2 * M * sizeof *T->ey))) {
+        !(T->ey = malloc(4 * 2 * M * sizeof *T->ey))) {
         tirenv_ring__tread_free(T);
         return NULL;
     }
@@ -1171,12 +1171,36 @@ static inline void fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, 
     size_t e = 0;
     /* The nodes whose two rows lie in the band with all their entries (then e + 2 < n): the
      * rows below, written straight. */
-    for (; 2 * e + 1 + BAND_P < m; ++e) {
-        const double kap = T->kap[lo + e];
-        double *lw = L + (BAND_P + 1) * 2 * e, *lu = lw + (BAND_P + 1);
-        lw[0] = s[0] + kap, lw[1] = -kap, lw[2] = s[1], lw[3] = 0, lw[4] = s[2];
-        lu[0] = kap + 2 * k_sh, lu[1] = 0, lu[2] = -k_sh, lu[3] = 0, lu[4] = 0;
-        rhs[2 * e] = 0, rhs[2 * e + 1] = 0;
+    {
+        /* The two rows' ten entries as five pairs, three of them the same at every node, in
+         * locals: a store would otherwise make the compiler load s and k_sh again. Without
+         * lugs kap is every node's (set_kappa), and so are all five. */
+        const double s0 = s[0], k2 = 2 * k_sh, s2 = s[2];
+        const v2d s1_0 = {s[1], 0}, z_mk = {0, -k_sh}, zero = {0, 0};
+        const double *kap = T->kap + lo;
+        if (!T->lugs) {
+            const double k = kap[0];
+            const v2d w01 = {s0 + k, -k}, w4u0 = {s2, k + k2};
+            for (; 2 * e + 1 + BAND_P < m; ++e) {
+                double *lw = L + (BAND_P + 1) * 2 * e;
+                v2_store(lw, w01);
+                v2_store(lw + 2, s1_0);
+                v2_store(lw + 4, w4u0);
+                v2_store(lw + 6, z_mk);
+                v2_store(lw + 8, zero);
+                v2_store(rhs + 2 * e, zero);
+            }
+        }
+        for (; 2 * e + 1 + BAND_P < m; ++e) {
+            const double k = kap[e];
+            double *lw = L + (BAND_P + 1) * 2 * e;
+            v2_store(lw, (v2d){s0 + k, -k});      /* lw[0], lw[1] */
+            v2_store(lw + 2, s1_0);               /* lw[2], lw[3] */
+            v2_store(lw + 4, (v2d){s2, k + k2});  /* lw[4], lu[0] */
+            v2_store(lw + 6, z_mk);               /* lu[1], lu[2] */
+            v2_store(lw + 8, zero);               /* lu[3], lu[4] */
+            v2_store(rhs + 2 * e, zero);
+        }
     }
     for (; e < n; ++e) {
         const double kap = T->kap[lo + e];
@@ -1241,7 +1265,8 @@ static void ext_index(size_t Ne, size_t e[NB])
  * only the rows of the length it is given). One factorisation of the longest exterior, M - 1
  * nodes, then serves every window length, where each length factorised its own; and so do the
  * forward substitutions of the first three unit vectors, which compute_end's columns start
- * from (row i's y depends only on the rows up to i). */
+ * from (row i's y depends only on the rows up to i), kept by rows in ey (four a row, the
+ * fourth +0: ext_columns' lanes). */
 static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
 {
     tband *E = &T->ext;
@@ -1255,33 +1280,231 @@ static void exterior_factor(tirenv_ring_tread *T, size_t j0, size_t ne)
     band_factor(E); /* a principal block of the positive definite whole */
     T->ext_all = !T->lugs;
     for (size_t a = 0; a < 3 && T->ext_all; ++a) {
-        double *y = T->ey + a * 2 * T->M;
+        double *y = T->col;
         memset(y, 0, Nf * sizeof *y);
         y[a] = 1;
         band_solve_t(E, y, 0, a, 1);
+        for (size_t i = 0; i < Nf; ++i)
+            T->ey[4 * i + a] = y[i];
     }
+    for (size_t i = 0; i < Nf && T->ext_all; ++i)
+        T->ey[4 * i + 3] = 0;
     E->N = 2 * ne;
 }
 
-/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each. */
-static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
-                        double *cols)
+/* Rows the ext_columns' last unit vectors' forward substitutions reach back to: the first of
+ * them, Ne - 4, and the BAND_P rows before it that its row reads. */
+enum { EXT_LAST = 8 };
+
+/* One row i < Ne - EXT_LAST of ext_columns' back substitution, the six columns in three pairs
+ * of lanes (p1 .. p4: each pair's x at rows i + 1 .. i + 4, moved on by one); z from ey's row
+ * (columns 0 .. 3, the fourth +0) and +0 (4, 5). */
+static inline __attribute__((always_inline)) void
+ext_row(const double *L, const double *ey, size_t Ne, size_t i, v2d p4[3], v2d p3[3], v2d p2[3],
+        v2d p1[3], double *cols, const int store)
 {
-    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
-    exterior_factor(T, (lo + n) % M, ne);
+    const double *l = L + (BAND_P + 1) * i;
+    const v2d l0 = {l[0], l[0]}, l1 = {l[1], l[1]}, l2 = {l[2], l[2]}, l3 = {l[3], l[3]},
+              l4 = {l[4], l[4]};
+    const v2d z[3] = {v2_load(ey + 4 * i), v2_load(ey + 4 * i + 2), {0, 0}};
+    for (size_t g = 0; g < 3; ++g) {
+        v2d v = z[g] * l0;
+        v -= l4 * p4[g];
+        v -= l3 * p3[g];
+        v -= l2 * p2[g];
+        v -= l1 * p1[g];
+        p4[g] = p3[g], p3[g] = p2[g], p2[g] = p1[g], p1[g] = v;
+        if (store) {
+            cols[2 * g * Ne + i] = v[0];
+            cols[(2 * g + 1) * Ne + i] = v[1];
+        }
+    }
+}
+
+/* The six columns of K_EE^-1 at the coupled unknowns as ext_solve gives them one by one
+ * (compute_end's reference, ext_columns_each), in lanes (ext_columns_base, ext_columns_avx2):
+ * each lane gets a column's operations in its order, so the same bits. Row i of the back
+ * substitution (t = 0) is
+ *     x_i = z_i / D_i - U_i+4,i x_i+4 - ... - U_i+1,i x_i+1   (the farthest product first),
+ * fewer products in the last BAND_P rows; z the forward substitution: the first three columns'
+ * from ey (exterior_factor), the last three's zero up to their unit row, solved from there
+ * (rows Ne - EXT_LAST on), so that below row Ne - EXT_LAST the lanes' z are ey's row, its +0
+ * fourth, and +0. The factor's row is loaded once for the six columns, where each column's
+ * solve loaded it again, and no column is copied in or zeroed first. cols (NULL: only G
+ * wanted): the columns, Ne each; G[c][a]: column a at coupled unknown c. Ne >= 2 EXT_LAST.
+ * Here the rows from Ne - EXT_LAST on, column by column, into xl (and cols), and G's rows at
+ * the last three coupled unknowns. */
+static inline __attribute__((always_inline)) void
+ext_last_rows(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
+              double G[NB][NB], double xl[NB][EXT_LAST])
+{
     const tband *E = &T->ext;
-    size_t eidx[NB];
-    ext_index(Ne, eidx);
-    double X[NB][NB];
-    ext_coupling(T, X);
-    double G[NB][NB];
+    const double *const L = E->L, *const ey = T->ey;
+    const size_t i1 = Ne - EXT_LAST;
+    /* The last rows of all six: z, then x, by column (the general rows of band_solve_t). */
+    for (size_t a = 0; a < NB; ++a) {
+        double z[EXT_LAST];
+        if (a < 3) {
+            for (size_t k = 0; k < EXT_LAST; ++k)
+                z[k] = ey[4 * (i1 + k) + a];
+        } else {
+            double *y = T->col;
+            memset(y + i1, 0, EXT_LAST * sizeof *y);
+            y[eidx[a]] = 1;
+            band_solve_t(E, y, 0, eidx[a], 1);
+            memcpy(z, y + i1, sizeof z);
+        }
+        for (size_t k = EXT_LAST; k-- > 0;) {
+            const size_t i = i1 + k, nk = Ne - 1 - i < BAND_P ? Ne - 1 - i : BAND_P;
+            double v = z[k] * L[(BAND_P + 1) * i];
+            for (size_t h = nk; h >= 1; --h)
+                v -= L[(BAND_P + 1) * i + h] * xl[a][k + h];
+            xl[a][k] = v;
+        }
+        if (cols)
+            memcpy(cols + a * Ne + i1, xl[a], sizeof xl[a]);
+        for (size_t c = 3; c < NB; ++c)
+            G[c][a] = xl[a][eidx[c] - i1];
+    }
+}
+
+/* The columns in the baseline build: the last rows (ext_last_rows), then the others in pairs
+ * of lanes (ext_row). */
+static inline __attribute__((always_inline)) void
+ext_columns_body(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB], double *cols,
+                 double G[NB][NB], const int store)
+{
+    const double *const L = T->ext.L, *const ey = T->ey;
+    const size_t i1 = Ne - EXT_LAST;
+    double xl[NB][EXT_LAST];
+    ext_last_rows(T, Ne, eidx, cols, G, xl);
+    /* The other rows, all four products each: columns 0, 1 | 2, 3 | 4, 5 in pairs of lanes,
+     * the last four rows' x of each pair carried in registers; rows 0 .. 2 also into G. */
+    v2d p4[3], p3[3], p2[3], p1[3];
+    for (size_t g = 0; g < 3; ++g) {
+        p4[g] = (v2d){xl[2 * g][3], xl[2 * g + 1][3]};
+        p3[g] = (v2d){xl[2 * g][2], xl[2 * g + 1][2]};
+        p2[g] = (v2d){xl[2 * g][1], xl[2 * g + 1][1]};
+        p1[g] = (v2d){xl[2 * g][0], xl[2 * g + 1][0]};
+    }
+    size_t i = i1;
+    for (; i > 3; --i)
+        ext_row(L, ey, Ne, i - 1, p4, p3, p2, p1, cols, store);
+    for (; i > 0; --i) {
+        ext_row(L, ey, Ne, i - 1, p4, p3, p2, p1, cols, store);
+        for (size_t g = 0; g < 3; ++g)
+            G[i - 1][2 * g] = p1[g][0], G[i - 1][2 * g + 1] = p1[g][1];
+    }
+}
+
+static void ext_columns_base(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB],
+                             double *cols, double G[NB][NB])
+{
+    if (cols)
+        ext_columns_body(T, Ne, eidx, cols, G, 1);
+    else
+        ext_columns_body(T, Ne, eidx, NULL, G, 0);
+}
+
+#if RING_AVX2
+/* ext_row in the AVX2 build: columns 0 .. 3 in four lanes (a1 .. a4: their x at rows i + 1 ..
+ * i + 4), 4 and 5 in two (b1 .. b4), the same operations in each lane; x_i into *va, *vb. */
+__attribute__((target("avx2"))) static inline __attribute__((always_inline)) void
+ext_row4(const double *L, const double *ey, size_t Ne, size_t i, const v4d *a4, const v4d *a3,
+         const v4d *a2, const v4d *a1, const v2d *b4, const v2d *b3, const v2d *b2,
+         const v2d *b1, v4d *va, v2d *vb, double *cols, const int store)
+{
+    const double *l = L + (BAND_P + 1) * i;
+    v4d z;
+    v4_load(&z, ey + 4 * i);
+    v4d v = z * (v4d){l[0], l[0], l[0], l[0]};
+    v -= (v4d){l[4], l[4], l[4], l[4]} * *a4;
+    v -= (v4d){l[3], l[3], l[3], l[3]} * *a3;
+    v -= (v4d){l[2], l[2], l[2], l[2]} * *a2;
+    v -= (v4d){l[1], l[1], l[1], l[1]} * *a1;
+    v2d w = (v2d){0, 0} * (v2d){l[0], l[0]};
+    w -= (v2d){l[4], l[4]} * *b4;
+    w -= (v2d){l[3], l[3]} * *b3;
+    w -= (v2d){l[2], l[2]} * *b2;
+    w -= (v2d){l[1], l[1]} * *b1;
+    if (store) {
+        cols[i] = v[0], cols[Ne + i] = v[1], cols[2 * Ne + i] = v[2];
+        cols[3 * Ne + i] = v[3], cols[4 * Ne + i] = w[0], cols[5 * Ne + i] = w[1];
+    }
+    *va = v, *vb = w;
+}
+
+/* ext_columns_body's rows below Ne - EXT_LAST in the AVX2 build (ext_row4), four rows an
+ * iteration so that the carried x need no moves; xl: the last EXT_LAST rows' x by column. */
+__attribute__((target("avx2"))) static inline __attribute__((always_inline)) void
+ext_rows4(const double *L, const double *ey, size_t Ne, double xl[NB][EXT_LAST], double *cols,
+          double G[NB][NB], const int store)
+{
+    v4d a4 = {xl[0][3], xl[1][3], xl[2][3], xl[3][3]},
+        a3 = {xl[0][2], xl[1][2], xl[2][2], xl[3][2]},
+        a2 = {xl[0][1], xl[1][1], xl[2][1], xl[3][1]},
+        a1 = {xl[0][0], xl[1][0], xl[2][0], xl[3][0]};
+    v2d b4 = {xl[4][3], xl[5][3]}, b3 = {xl[4][2], xl[5][2]}, b2 = {xl[4][1], xl[5][1]},
+        b1 = {xl[4][0], xl[5][0]};
+    size_t i = Ne - EXT_LAST;
+    for (; i >= 3 + 4; i -= 4) {
+        v4d v0, v1, v2, v3;
+        v2d w0, w1, w2, w3;
+        ext_row4(L, ey, Ne, i - 1, &a4, &a3, &a2, &a1, &b4, &b3, &b2, &b1, &v0, &w0, cols, store);
+        ext_row4(L, ey, Ne, i - 2, &a3, &a2, &a1, &v0, &b3, &b2, &b1, &w0, &v1, &w1, cols, store);
+        ext_row4(L, ey, Ne, i - 3, &a2, &a1, &v0, &v1, &b2, &b1, &w0, &w1, &v2, &w2, cols, store);
+        ext_row4(L, ey, Ne, i - 4, &a1, &v0, &v1, &v2, &b1, &w0, &w1, &w2, &v3, &w3, cols, store);
+        a4 = v0, a3 = v1, a2 = v2, a1 = v3;
+        b4 = w0, b3 = w1, b2 = w2, b1 = w3;
+    }
+    for (; i > 0; --i) {
+        v4d v;
+        v2d w;
+        ext_row4(L, ey, Ne, i - 1, &a4, &a3, &a2, &a1, &b4, &b3, &b2, &b1, &v, &w, cols, store);
+        a4 = a3, a3 = a2, a2 = a1, a1 = v;
+        b4 = b3, b3 = b2, b2 = b1, b1 = w;
+        if (i - 1 < 3) {
+            double *g = G[i - 1];
+            g[0] = v[0], g[1] = v[1], g[2] = v[2], g[3] = v[3], g[4] = w[0], g[5] = w[1];
+        }
+    }
+}
+
+/* The same in the AVX2 build: columns 0 .. 3 in four lanes, 4 and 5 in two, and the
+ * three-operand instructions save the copies (as band_factor's, docs/performance.md 2.27);
+ * the same operations in each lane. */
+__attribute__((target("avx2"))) static void ext_columns_avx2(tirenv_ring_tread *T, size_t Ne,
+                                                             const size_t eidx[NB],
+                                                             double *cols, double G[NB][NB])
+{
+    double xl[NB][EXT_LAST];
+    ext_last_rows(T, Ne, eidx, cols, G, xl);
+    if (cols)
+        ext_rows4(T->ext.L, T->ey, Ne, xl, cols, G, 1);
+    else
+        ext_rows4(T->ext.L, T->ey, Ne, xl, NULL, G, 0);
+}
+#endif
+
+/* How compute_end solves the columns: by the processor (ext_columns_avx2 where it has AVX2),
+ * in pairs of lanes in the baseline build, or one at a time (ext_columns_each); the last two
+ * the tests' references. */
+enum { EXT_AUTO, EXT_BASE, EXT_EACH };
+
+/* The same one column at a time (ext_solve), each copied in (a kept forward substitution) or
+ * a unit vector: with lugs (no kept ones) or short exteriors, and the tests' reference. */
+static void ext_columns_each(tirenv_ring_tread *T, size_t Ne, const size_t eidx[NB],
+                             double *cols, double G[NB][NB])
+{
+    const tband *E = &T->ext;
     for (size_t a = 0; a < NB; ++a) {
         /* Unit vectors: their leading zeros are their own y (ext_solve), and the first
          * three's whole y the longest exterior's (exterior_factor). */
         const int kept = T->ext_all && eidx[a] < 3;
         double *const col = cols ? cols + a * Ne : T->col; /* solved where it is kept */
         if (kept) {
-            memcpy(col, T->ey + eidx[a] * 2 * M, Ne * sizeof *col);
+            for (size_t i = 0; i < Ne; ++i)
+                col[i] = T->ey[4 * i + eidx[a]];
         } else {
             memset(col, 0, Ne * sizeof *col);
             col[eidx[a]] = 1;
@@ -1290,6 +1513,28 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
         for (size_t c = 0; c < NB; ++c)
             G[c][a] = col[eidx[c]];
     }
+}
+
+/* cols (NULL: not wanted): the six columns of K_EE^-1 at the coupled unknowns, Ne each; how:
+ * EXT_AUTO, or one of the tests' references. */
+static void compute_end_by(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
+                           double *cols, int how)
+{
+    const size_t M = T->M, ne = M - n, Ne = 2 * ne;
+    exterior_factor(T, (lo + n) % M, ne);
+    size_t eidx[NB];
+    ext_index(Ne, eidx);
+    double X[NB][NB];
+    ext_coupling(T, X);
+    double G[NB][NB];
+    if (!T->ext_all || Ne < 2 * EXT_LAST || how == EXT_EACH)
+        ext_columns_each(T, Ne, eidx, cols, G);
+#if RING_AVX2
+    else if (how == EXT_AUTO && __builtin_cpu_supports("avx2"))
+        ext_columns_avx2(T, Ne, eidx, cols, G);
+#endif
+    else
+        ext_columns_base(T, Ne, eidx, cols, G);
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < NB; ++u) {
             double sum = 0;
@@ -1301,6 +1546,12 @@ static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][
     for (size_t v = 0; v < NB; ++v)
         for (size_t u = 0; u < v; ++u)
             Q[v][u] = Q[u][v] = 0.5 * (Q[v][u] + Q[u][v]);
+}
+
+static void compute_end(tirenv_ring_tread *T, size_t lo, size_t n, double Q[NB][NB],
+                        double *cols)
+{
+    compute_end_by(T, lo, n, Q, cols, EXT_AUTO);
 }
 
 static const double (*window_end(tirenv_ring *r, double x_c))[NB]
@@ -2947,9 +3198,9 @@ int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[])
         for (size_t i = 0; i < N; ++i)
             rhs[i] = NAN;
         fill_window(&A, T, r->lo, n, rhs);
-        if (m >= FRESH_FROM + BAND_P)
-            memset(A.B + TAIL * FRESH_FROM, 0,
-                   TAIL * (m - BAND_P - FRESH_FROM) * sizeof *A.B);
+        const size_t fresh = m >= FRESH_FROM + BAND_P ? m - BAND_P - FRESH_FROM : 0;
+        if (fresh > 0)
+            memset(A.B + TAIL * FRESH_FROM, 0, TAIL * fresh * sizeof *A.B);
         int zeroed = 1;
         for (size_t i = 0; i < N; ++i)
             zeroed &= rhs[i] == 0;
@@ -3253,23 +3504,29 @@ int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, siz
 
 /* For tests: the six columns of the exterior's inverse for a window of n nodes as compute_end
  * gives them (the longest exterior's shared factor, the forward substitutions it keeps and a
- * unit vector's leading zeros skipped: exterior_factor, ext_solve) against a factorisation of
- * that exterior alone and full solves; 0 if the same bits, 1 if not, -1 if it cannot (lugs,
- * n + 4 > M or n < 2, out of memory). */
+ * unit vector's leading zeros skipped: exterior_factor, ext_columns in lanes, the AVX2 build's
+ * where the processor has it) against a factorisation of that exterior alone and full solves,
+ * and its columns and end correction against the baseline build's lanes (ext_columns_base)
+ * and the columns one at a time (ext_columns_each), and the end correction without the columns
+ * (window_end's); 0 if the same bits, 1 if not, -1 if it cannot (lugs, n + 4 > M or
+ * n < 2, out of memory). */
 int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
 {
     tirenv_ring_tread *T = r->tread;
     const size_t M = T->M, ne = M - n, Ne = 2 * ne;
     if (T->lugs || n < 2 || n + 4 > M)
         return -1;
-    double *c1 = malloc(2 * NB * Ne * sizeof *c1);
+    double *c1 = malloc(4 * NB * Ne * sizeof *c1);
     tband E;
     if (!c1 || band_alloc(&E, Ne, 0)) {
         free(c1);
         return -1;
     }
-    double *c2 = c1 + NB * Ne, Q[NB][NB];
-    compute_end(T, 0, n, Q, c1);
+    double *c2 = c1 + NB * Ne, *c3 = c2 + NB * Ne, *c4 = c3 + NB * Ne, Q[4][NB][NB];
+    compute_end(T, 0, n, Q[0], c1);
+    compute_end(T, 0, n, Q[1], NULL);
+    compute_end_by(T, 0, n, Q[2], c3, EXT_EACH);
+    compute_end_by(T, 0, n, Q[3], c4, EXT_BASE);
     band_reset(&E, Ne, 0);
     add_arc(&E, T, n, ne);
     int st = band_factor(&E) ? -1 : 0;
@@ -3282,7 +3539,12 @@ int tirenv_ring__tread_end_check(tirenv_ring *r, size_t n)
         band_solve(&E, c);
     }
     if (st == 0)
-        st = !tirenv_ring__same_bits(c1, c2, NB * Ne);
+        st = !(tirenv_ring__same_bits(c1, c2, NB * Ne) &&
+               tirenv_ring__same_bits(c1, c3, NB * Ne) &&
+               tirenv_ring__same_bits(c1, c4, NB * Ne) &&
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[1][0][0], NB * NB) &&
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[2][0][0], NB * NB) &&
+               tirenv_ring__same_bits(&Q[0][0][0], &Q[3][0][0], NB * NB));
     free(E.L);
     free(c1);
     return st;

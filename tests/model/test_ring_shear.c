@@ -1217,10 +1217,13 @@ static void test_deferred_slope(void **state)
 /* The exterior's six columns of K_EE^-1 (ring_shear.c's compute_end: the end correction and the
  * free nodes) from one factorisation of the longest exterior, M - 1 nodes, shared by every
  * window length, with its kept forward substitutions of the first three unit vectors and the
- * others' leading zeros skipped, against each length's own factorisation and full solves, bit
- * for bit: lengths from the shortest to the longest window, in an order that makes the first
- * one a long window's, on the default tire (M = 1440) and at another NODE_ANGLE (M = 982). A
- * lugged tire keeps its own factorisation (the hook declines it). */
+ * others' leading zeros skipped, the six solved together in lanes (the AVX2 build's where the
+ * processor has it), against each length's own factorisation and full solves, and against the
+ * baseline build's lanes and the columns solved one at a time, bit for bit, and the end
+ * correction from each and without the columns: lengths from the shortest to the longest
+ * window (exteriors of 8, 14, 16 and 18 unknowns about the lanes' shortest, 16), in an order
+ * that makes the first one a long window's, on the default tire (M = 1440) and at another
+ * NODE_ANGLE (M = 982). A lugged tire keeps its own factorisation (the hook declines it). */
 static void test_exterior_shared_factor(void **state)
 {
     (void)state;
@@ -1231,7 +1234,8 @@ static void test_exterior_shared_factor(void **state)
         tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
         assert_non_null(r);
         assert_int_equal(r->M, k ? 982 : 1440);
-        const size_t M = r->M, n[] = {M / 3, 2, 157, 5, M - 4, 261, 37, M / 2 + 1};
+        const size_t M = r->M,
+                     n[] = {M / 3, 2, 157, 5, M - 4, 261, 37, M / 2 + 1, M - 7, M - 8, M - 9};
         for (size_t i = 0; i < sizeof n / sizeof n[0]; ++i)
             assert_int_equal(tirenv_ring__tread_end_check(r, n[i]), 0);
         assert_int_equal(tirenv_ring__tread_end_check(r, M - 3), -1);
