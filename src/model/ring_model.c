@@ -155,13 +155,16 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
 static int ring_shift_invariant(const tirenv_tire *tire) { return !(tire->ring.lug_count > 0); }
 
 static size_t ring_state_size(const void *elem) { return tirenv_ring__state_size(elem); }
-static void ring_state_save(const void *elem, unsigned char *buf)
+static void ring_state_save(const void *elem, const tirenv_profile *p, unsigned char *buf)
 {
+    (void)p;
     tirenv_ring__state_save(elem, buf);
 }
-static void ring_state_restore(void *elem, const unsigned char *buf)
+static int ring_state_restore(void *elem, const tirenv_profile *p, const unsigned char *buf)
 {
+    (void)p;
     tirenv_ring__state_restore(elem, buf);
+    return TIRENV_OK;
 }
 
 static int ring_continuous(const tirenv_tire *tire)
