@@ -1128,11 +1128,11 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
  * were the one given (p), which a twin reads as its own. The QP's warm start, the rays'
  * caches at other x and the faces' d(rho)/dz are dropped on restore; they change no bit of a
  * result, only how fast it is found (tests/model/test_state_rewind.c). */
-enum { MEMO_BYTES = 2 * sizeof(int64_t) + 2 * sizeof(double) };
+enum { MEMO_BYTES = sizeof(int64_t) + sizeof(int32_t) + sizeof(double) };
 
-static int carries(const tirenv_springs *s)
+static int carries(const tirenv_springs *s, int level)
 {
-    return s->par.contact == TIRENV_SPRINGS_CONTINUOUS;
+    return s->par.contact == TIRENV_SPRINGS_CONTINUOUS && !level;
 }
 
 static size_t head_bytes(const tirenv_springs *s)
@@ -1141,7 +1141,8 @@ static size_t head_bytes(const tirenv_springs *s)
 }
 
 /* the flags; evals, memo_a, memo_b, ray_a, ray_b; pins_z, upd_x, upd_dfz_dz, eval_x, the
- * rays' origin's x; the memos */
+ * rays' origin's x; the memos (the vertex and kind their walk ended on, and the height it
+ * holds above; not d(rho)/dz, which the face gives again, the same bits) */
 static size_t carry_bytes(const tirenv_springs *s)
 {
     return 1 + 5 * sizeof(uint64_t) + 5 * sizeof(double) + s->N * MEMO_BYTES;
@@ -1150,13 +1151,13 @@ static size_t carry_bytes(const tirenv_springs *s)
 /* The flags: pins_ok, start_taken, and the base, the memos and the rays' cache on p. */
 enum { PINS_OK = 1, START_TAKEN = 2, UPD_HERE = 4, MEMO_HERE = 8, RAYS_HERE = 16 };
 
-size_t tirenv_springs__state_size(const tirenv_springs *s)
+size_t tirenv_springs__state_size(const tirenv_springs *s, int level)
 {
     return head_bytes(s) +
-           (carries(s) ? carry_bytes(s) + tirenv_springs__cc_carry_size(s->N) : 0);
+           (carries(s, level) ? carry_bytes(s) + tirenv_springs__cc_carry_size(s->N) : 0);
 }
 
-void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p,
+void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p, int level,
                                 unsigned char *buf)
 {
     memcpy(buf, &s->a, sizeof s->a);
@@ -1164,7 +1165,7 @@ void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p
     memcpy(buf + 2 * sizeof(size_t), s->active, s->N);
     buf[2 * sizeof(size_t) + s->N] = s->cc.between != 0;
     memcpy(buf + 2 * sizeof(size_t) + s->N + 1, &s->cc.between_z, sizeof(double));
-    if (!carries(s))
+    if (!carries(s, level))
         return;
     unsigned char *q = buf + head_bytes(s);
     memset(q, 0, carry_bytes(s));
@@ -1188,11 +1189,12 @@ void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p
     q = tirenv_model__put(q, v, sizeof v);
     for (size_t e = s->memo_a; e <= s->memo_b && e < s->N; ++e) {
         const tirenv_springs__ray_memo *m = &s->memo[e];
-        const int64_t jk[2] = {m->j, m->kind};
+        const int64_t j = m->j;
+        const int32_t kind = m->kind;
         unsigned char *at = q + e * MEMO_BYTES;
-        at = tirenv_model__put(at, jk, sizeof jk);
-        at = tirenv_model__put(at, &m->z_low, sizeof m->z_low);
-        tirenv_model__put(at, &m->drho, sizeof m->drho);
+        at = tirenv_model__put(at, &j, sizeof j);
+        at = tirenv_model__put(at, &kind, sizeof kind);
+        tirenv_model__put(at, &m->z_low, sizeof m->z_low);
     }
     q += s->N * MEMO_BYTES;
     /* whether a pin the start would make its base from is a ground vertex's (the rows are
@@ -1205,7 +1207,7 @@ void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p
                                   pins_vertex, q);
 }
 
-int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p,
+int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, int level,
                                   const unsigned char *buf)
 {
     memcpy(&s->a, buf, sizeof s->a);
@@ -1217,8 +1219,14 @@ int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p,
     }
     s->ray_serial = 0;
     forget_start(s);
-    if (!carries(s))
+    if (!carries(s, level)) {
+        if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not kept */
+            tirenv_springs__cc_forget(&s->cc);
+            s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
+            memcpy(&s->cc.between_z, buf + 2 * sizeof(size_t) + s->N + 1, sizeof(double));
+        }
         return TIRENV_OK;
+    }
     const unsigned char *q = buf + head_bytes(s);
     unsigned char flags;
     uint64_t u[5];
@@ -1240,13 +1248,15 @@ int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p,
     s->eval_x = v[3];
     for (size_t e = s->memo_a; e <= s->memo_b; ++e) {
         tirenv_springs__ray_memo *m = &s->memo[e];
-        int64_t jk[2];
+        int64_t j;
+        int32_t kind;
         const unsigned char *at = q + e * MEMO_BYTES;
-        at = tirenv_model__get(at, jk, sizeof jk);
-        at = tirenv_model__get(at, &m->z_low, sizeof m->z_low);
-        tirenv_model__get(at, &m->drho, sizeof m->drho);
-        m->j = (long)jk[0];
-        m->kind = (int)jk[1];
+        at = tirenv_model__get(at, &j, sizeof j);
+        at = tirenv_model__get(at, &kind, sizeof kind);
+        tirenv_model__get(at, &m->z_low, sizeof m->z_low);
+        m->j = (long)j;
+        m->kind = kind;
+        m->drho = NAN;
     }
     q += s->N * MEMO_BYTES;
     int pins_vertex;

@@ -15,11 +15,13 @@ int tirenv_springs__long_in(const long *v, size_t n, long key);
 /* The contact state the next force evaluation starts from (springs.c), as bytes: their
  * number for a model, its bytes on profile p (what was carried on another is not), and
  * those bytes back into a model of the same parameters on p: TIRENV_OK, or TIRENV_ENOMEM /
- * TIRENV_EINVAL (then nothing is carried to the next position). */
-size_t tirenv_springs__state_size(const tirenv_springs *s);
-void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p,
+ * TIRENV_EINVAL (then nothing is carried to the next position). level: a model that
+ * evaluates at one x on level ground only (the flat-ground workspace), whose contact is the
+ * closed form's throughout: its warm start alone, nothing carried from one x to the next. */
+size_t tirenv_springs__state_size(const tirenv_springs *s, int level);
+void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p, int level,
                                 unsigned char *buf);
-int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p,
+int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, int level,
                                   const unsigned char *buf);
 
 /* Whether a continuous-contact evaluation at centre height z (m) goes straight to the QP,

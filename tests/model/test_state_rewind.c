@@ -43,8 +43,8 @@ static tirenv_profile *road_c(double length, double dx, unsigned long seed)
 /* One sweep: positions x0 + k dx for k < n, or with `rest` each third step at the position
  * of the one before (a vehicle at rest, a master's step repeated); the load G0 or, with
  * swing 1, G0 (1 + 0.2 sin(0.05 k)) set before each step, with swing 2 a load that moves by
- * 1e-9 of itself (its flat-ground height by some 1e-10 m: the flat workspace's next solve
- * starts where the last one ended). */
+ * 1e-6 of itself (its flat-ground height by some 1e-7 m: the flat workspace's next solve
+ * starts a hair from where the last one ended). */
 typedef struct {
     const char *what;
     const tirenv_profile *p;
@@ -56,7 +56,7 @@ typedef struct {
 static double load_at(const sweep *s, double G0, size_t k)
 {
     return s->swing == 1   ? G0 * (1.0 + 0.2 * sin(0.05 * (double)k))
-           : s->swing == 2 ? G0 * (1.0 + 1e-9 * (double)(k % 3))
+           : s->swing == 2 ? G0 * (1.0 + 1e-6 * (double)(k % 3))
                            : G0;
 }
 
