@@ -10,6 +10,7 @@
 #include "testutil.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -246,6 +247,47 @@ static void test_cam(void **state)
     check_model("cam", &tire, 2, ALL);
 }
 
+/* FNV-1a, 64 bits, a byte at a time: what the state's checksum is (src/model/model_state.c
+ * takes runs of zero bytes at once), over the bytes before it. Over states mid-sweep (runs of
+ * zeros and not) of the springs model, the ring and the cam. */
+static void test_checksum_is_fnv1a(void **state)
+{
+    (void)state;
+    const char *names[] = {"springs", "ring", "cam", "rigid"};
+    const tirenv_tire tire = tirenv_tire_default();
+    tirenv_profile *p = tirenv_profile_cleat(0.30, 0.10);
+    assert_non_null(p);
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i) {
+        tirenv_model *m = tirenv_model_alloc(tirenv_model_type_find(names[i]), &tire);
+        assert_non_null(m);
+        tirenv_diag d;
+        double G;
+        tirenv_point pt;
+        assert_int_equal(tirenv_model_load_for_contact_length(m, 0.38, &G, &d), TIRENV_OK);
+        assert_int_equal(tirenv_model_set(m, p, G, &d), TIRENV_OK);
+        const size_t size = tirenv_model_state_size(m);
+        unsigned char *buf = malloc(size);
+        assert_non_null(buf);
+        for (int k = 0; k < 3; ++k) {
+            assert_int_equal(tirenv_model_eval(m, -0.4 + 0.2 * k, &pt, &d), TIRENV_OK);
+            assert_int_equal(tirenv_model_state_save(m, buf, size, &d), TIRENV_OK);
+            uint64_t h = 0xcbf29ce484222325ull, sum;
+            for (size_t j = 0; j + sizeof sum < size; ++j) {
+                h ^= buf[j];
+                h *= 0x100000001b3ull;
+            }
+            memcpy(&sum, buf + size - sizeof sum, sizeof sum);
+            if (sum != h)
+                fail_msg("%s at x = %g: the state's checksum %016llx is not the FNV-1a of its "
+                         "%zu bytes, %016llx", names[i], -0.4 + 0.2 * k,
+                         (unsigned long long)sum, size - sizeof sum, (unsigned long long)h);
+        }
+        free(buf);
+        tirenv_model_free(m);
+    }
+    tirenv_profile_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -254,6 +296,7 @@ int main(void)
         cmocka_unit_test(test_springs_rays),
         cmocka_unit_test(test_ring),
         cmocka_unit_test(test_cam),
+        cmocka_unit_test(test_checksum_is_fnv1a),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
