@@ -151,8 +151,9 @@ static size_t check_sweep(const tirenv_model_type *type, const tirenv_tire *tire
 
 /* The grounds: the bench's 0.30 x 0.10 m cleat, the FMU test's 0.10 x 0.10 m one (its steps
  * 800 to 1,100, x from 0 to 0.3 m, failed before the state held the start's carry: a state
- * at each of them here), a 0.05 m step up, a class C road at 1 cm and one at 1 mm; every
- * n_scale-th position (n_scale times the step); the sweeps whose bits are set in mask. */
+ * before each step there but those the repeats take), a 0.05 m step up, a vehicle at rest, a
+ * class C road at 1 cm and one at 1 mm; every n_scale-th position (n_scale times the step);
+ * the sweeps whose bits are set in mask. */
 static void check_model(const char *name, const tirenv_tire *tire, size_t n_scale,
                         unsigned mask)
 {
