@@ -1204,7 +1204,7 @@ void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p
         pins_vertex |= s->active[e] && s->cc.pin_row[e] < s->cc.n_rows &&
                        s->cc.rows[s->cc.pin_row[e]].id >= 0;
     tirenv_springs__cc_carry_save(&s->cc, s->N, s->memo, s->memo_a, s->memo_b, s->dw,
-                                  pins_vertex, q);
+                                  s->upd_x == s->eval_x, pins_vertex, q);
 }
 
 int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, int level,

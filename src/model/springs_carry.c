@@ -104,8 +104,8 @@ static const unsigned char *get_span(const unsigned char *p, double v[], size_t 
 
 void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
                                    const tirenv_springs__ray_memo memo[], size_t memo_a,
-                                   size_t memo_b, const double dw[], int pins_vertex,
-                                   unsigned char *buf)
+                                   size_t memo_b, const double dw[], int tangent,
+                                   int pins_vertex, unsigned char *buf)
 {
     memset(buf, 0, tirenv_springs__cc_carry_size(N));
     /* a base on the Schur path, which the start at the next x and the update at this one
@@ -134,16 +134,21 @@ void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
         held[e] = c->wpos[e] == SIZE_MAX;
         enter[e] = held[e] && e >= memo_a && e <= memo_b && can_enter(c, N, memo[e].j);
         /* the vertex a held element's row is on (the update at this x compares it) */
-        const int64_t v = held[e] && c->held_vertex > 0 ? c->rows[c->pin_row[e]].id : -1;
+        const int64_t v = held[e] && c->held_vertex > 0 && c->pin_row[e] < c->n_rows
+                              ? c->rows[c->pin_row[e]].id
+                              : -1;
         memcpy(p + e * sizeof v, &v, sizeof v);
     }
     p += N * sizeof(int64_t);
-    p = put_span(p, c->base_w + 1, f0, f1, N);
-    p = put_span(p, dw, f0, f1, N);
-    p = put_span(p, c->pred_w, f0, f1, N);
+    /* the tangent's (the base's w, dw/dz and reactions with their d/dz) only where the
+     * update at the next x may take it: at the base's own x, unless the start changed the
+     * working set since (the rows it entered have no d(lambda)/dz) */
+    p = tangent ? put_span(p, c->base_w + 1, f0, f1, N) : p + N * sizeof(double);
+    p = tangent ? put_span(p, dw, f0, f1, N) : p + N * sizeof(double);
+    p = pred ? put_span(p, c->pred_w, f0, f1, N) : p + N * sizeof(double);
     for (size_t q = 0; q < k; ++q) {
         const size_t r = c->order[c->schur_pos[q]] - N;
-        const double l[3] = {c->lambda[r], c->dlambda && r < c->cap_dl ? c->dlambda[r] : 0,
+        const double l[3] = {tangent ? c->lambda[r] : 0, tangent ? c->dlambda[r] : 0,
                              pred ? c->pred_lam[q] : 0};
         memcpy(p + q * sizeof *l, &l[0], sizeof *l);
         memcpy(p + (K_MAX + q) * sizeof *l, &l[1], sizeof *l);

@@ -792,8 +792,9 @@ int tirenv_springs__cc_base_pins(tirenv_springs__cc *c, const tirenv_springs__cc
 int tirenv_springs__cc_reserve_rows(tirenv_springs__cc *c, size_t n, size_t N);
 
 /* springs_carry.c: the base the start at the next x and the update at this one take up
- * (while base_ok: its working set, its w and dw/dz dw[f0..f1] over its span, its rows'
- * reactions, the root's state), as tirenv_springs__cc_carry_size(N) bytes: saved, with the
+ * (while base_ok: its working set, the root's state, and where tangent (the base is the last
+ * QP solve's at the x last evaluated, as it left it) its w and dw/dz dw[f0..f1] over its span
+ * and its rows' reactions), as tirenv_springs__cc_carry_size(N) bytes: saved, with the
  * ray memos of the elements memo_a .. memo_b (the vertices their rays last ended on) and
  * whether one of the closed form's pins is on a ground vertex (pins_vertex); restored into a
  * workspace of the same tire (its warm start dropped, the base made again with K_FF's
@@ -803,8 +804,8 @@ int tirenv_springs__cc_reserve_rows(tirenv_springs__cc *c, size_t n, size_t N);
 size_t tirenv_springs__cc_carry_size(size_t N);
 void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
                                    const tirenv_springs__ray_memo memo[], size_t memo_a,
-                                   size_t memo_b, const double dw[], int pins_vertex,
-                                   unsigned char *buf);
+                                   size_t memo_b, const double dw[], int tangent,
+                                   int pins_vertex, unsigned char *buf);
 int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                      const tirenv_springs__ray_memo memo[],
                                      const unsigned char *buf, double dw[], int *pins_vertex);
