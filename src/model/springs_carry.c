@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* What the continuous contact carries from one position to the start at the next
- * (docs/models.md section 4.8, A start at a new x), as bytes of a fixed number for a tire:
- * the QP's working set that tirenv_springs__start takes up (its span, held elements and
- * working rows between elements), made again on restore with K_FF's factor and the rows'
- * Schur complement, which depend on nothing else (docs/models.md section 1.7). The start
- * reads of the base's other rows only whether a ground vertex has a row between elements
- * there (tirenv_springs__cc_row_enter): for the vertex each held element's ray last ended
- * on, a flag. */
+/* What the continuous contact carries from one position to the next (docs/models.md section
+ * 4.8, A start at a new x; section 1.7), as bytes of a fixed number for a tire: the QP's
+ * working set that tirenv_springs__start takes up at a new x (its span, held elements and
+ * working rows between elements), and what the update at a repeated x reads of it (the
+ * base's tangent, the root's state), made again on restore with K_FF's factor and the rows'
+ * Schur complement, which depend on nothing else. The start reads of the base's other rows
+ * only whether a ground vertex has a row between elements there
+ * (tirenv_springs__cc_row_enter): for the vertex each held element's ray last ended on, a
+ * flag. */
 #include "model/springs_impl.h"
 
 #include <stdint.h>
