@@ -535,8 +535,8 @@ typedef struct {
 static size_t deformable_state_size(const void *state)
 {
     const deformable_state *st = state;
-    return sizeof(deformable_saved) + st->def->state_size(st->elem) +
-           st->def->state_size(st->flat_elem);
+    return sizeof(deformable_saved) + st->def->state_size(st->elem, 0) +
+           st->def->state_size(st->flat_elem, 1);
 }
 
 static void deformable_state_save(const void *state, unsigned char *buf)
@@ -554,8 +554,8 @@ static void deformable_state_save(const void *state, unsigned char *buf)
     sv.z_prev2 = st->prev.z2;
     sv.have_prev2 = st->prev.have2;
     buf = tirenv_model__put(buf, &sv, sizeof sv);
-    st->def->state_save(st->elem, buf);
-    st->def->state_save(st->flat_elem, buf + st->def->state_size(st->elem));
+    st->def->state_save(st->elem, st->prof, 0, buf);
+    st->def->state_save(st->flat_elem, st->flat, 1, buf + st->def->state_size(st->elem, 0));
 }
 
 static int deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
@@ -577,8 +577,16 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
     st->prev.x2 = sv.x_prev2;
     st->prev.z2 = sv.z_prev2;
     st->prev.have2 = sv.have_prev2;
-    st->def->state_restore(st->elem, buf);
-    st->def->state_restore(st->flat_elem, buf + st->def->state_size(st->elem));
+    int status = st->def->state_restore(st->elem, st->prof, 0, buf);
+    if (!status)
+        status = st->def->state_restore(st->flat_elem, st->flat, 1,
+                                        buf + st->def->state_size(st->elem, 0));
+    if (status)
+        return tirenv_error(diag, status, "", 0, "state",
+                            status == TIRENV_ENOMEM
+                                ? "no memory for the %s model's contact state"
+                                : "not a state of the %s model (its contact state)",
+                            st->type->name);
     level_reach(st);
     return TIRENV_OK;
 }

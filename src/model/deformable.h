@@ -63,10 +63,16 @@ struct tirenv_deformable {
      * ground the equilibrium is the flat one; tirenv_deformable_invariant: always. */
     int (*shift_invariant)(const tirenv_tire *tire);
     /* The contact state a workspace starts its next solve from, as bytes (a fixed number for
-     * a tire): saved, and restored into a workspace of the same tire. */
-    size_t (*state_size)(const void *elem);
-    void (*state_save)(const void *elem, unsigned char *buf);
-    void (*state_restore)(void *elem, const unsigned char *buf);
+     * a tire and level): saved on profile p, and restored into a workspace of the same tire on
+     * p (the same ground; NULL: none set); TIRENV_OK, or an error status, the workspace then
+     * carrying nothing to its next solve. level: the flat-ground workspace, which evaluates
+     * at one x on level ground only (what a model carries from one x to the next is not
+     * its). */
+    size_t (*state_size)(const void *elem, int level);
+    void (*state_save)(const void *elem, const tirenv_profile *p, int level,
+                       unsigned char *buf);
+    int (*state_restore)(void *elem, const tirenv_profile *p, int level,
+                         const unsigned char *buf);
     /* A spring in series between the hub and the force function's centre, or NULL (none):
      * its deflection u (m) at a force F (N) and its compliance du/dF (m/N, into *dU_dF),
      * u = 0 at F = 0 and non-decreasing in F. The forces above are then those of the centre

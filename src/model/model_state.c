@@ -22,15 +22,38 @@ enum { NAME_BYTES = 16 };
 #define HEAD_BYTES                                                                            \
     (sizeof magic + sizeof(uint64_t) + NAME_BYTES + sizeof(uint64_t) + 2 * sizeof(double) + 1)
 
-/* FNV-1a, 64 bits: fnv(FNV_BASIS, ...) hashes a run of bytes, fnv(h, ...) goes on from h. */
-static const uint64_t FNV_BASIS = 0xcbf29ce484222325ull;
+/* FNV-1a, 64 bits: fnv(FNV_BASIS, ...) hashes a run of bytes, fnv(h, ...) goes on from h. A
+ * zero byte only multiplies h by the prime, so a run of L of them multiplies it by the prime
+ * to the L (mod 2^64): the same value in O(log L). A state is mostly such runs (the springs
+ * model's and the ring's per element or node outside the contact, some 70 to 99 % of their
+ * bytes), which the byte at a time took some 4 ns each. */
+static const uint64_t FNV_BASIS = 0xcbf29ce484222325ull, FNV_PRIME = 0x100000001b3ull;
+
+static uint64_t prime_to(size_t n)
+{
+    uint64_t r = 1, b = FNV_PRIME;
+    for (; n; n >>= 1, b *= b)
+        if (n & 1)
+            r *= b;
+    return r;
+}
 
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *b = p;
-    for (size_t i = 0; i < n; ++i) {
-        h ^= b[i];
-        h *= 0x100000001b3ull;
+    for (size_t i = 0; i < n;) {
+        if (b[i]) {
+            h ^= b[i++];
+            h *= FNV_PRIME;
+            continue;
+        }
+        size_t j = i + 1;
+        for (uint64_t w; j + sizeof w <= n && (memcpy(&w, b + j, sizeof w), w == 0);)
+            j += sizeof w;
+        while (j < n && !b[j])
+            ++j;
+        h *= prime_to(j - i);
+        i = j;
     }
     return h;
 }

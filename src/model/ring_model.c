@@ -154,14 +154,25 @@ static int ring_lowest_z(void *elem, const tirenv_profile *flat, double *z, char
 /* Lugs turn with the tread, so a lugged ring is not the same at every x. */
 static int ring_shift_invariant(const tirenv_tire *tire) { return !(tire->ring.lug_count > 0); }
 
-static size_t ring_state_size(const void *elem) { return tirenv_ring__state_size(elem); }
-static void ring_state_save(const void *elem, unsigned char *buf)
+static size_t ring_state_size(const void *elem, int level)
 {
+    (void)level;
+    return tirenv_ring__state_size(elem);
+}
+static void ring_state_save(const void *elem, const tirenv_profile *p, int level,
+                            unsigned char *buf)
+{
+    (void)p;
+    (void)level;
     tirenv_ring__state_save(elem, buf);
 }
-static void ring_state_restore(void *elem, const unsigned char *buf)
+static int ring_state_restore(void *elem, const tirenv_profile *p, int level,
+                              const unsigned char *buf)
 {
+    (void)p;
+    (void)level;
     tirenv_ring__state_restore(elem, buf);
+    return TIRENV_OK;
 }
 
 static int ring_continuous(const tirenv_tire *tire)

@@ -1119,23 +1119,96 @@ void tirenv_springs_tips(const tirenv_springs *s, double d[], double w[], double
 /* The warm state of the tip contact: which elements may touch and which were pinned, and
  * whether the continuous contact's last solution had a row between elements working, and at
  * which centre height (they decide whether the closed form is tried first, which moves the
- * last bits). The rays' cache and the QP's warm start are dropped on restore; they change no
- * bit of a result, only how fast it is found. */
-size_t tirenv_springs__state_size(const tirenv_springs *s)
+ * last bits). With CONTACT 'continuous' also what the start at the next x and the update at
+ * the same x read (tirenv_springs__start, docs/models.md sections 1.7 and 4.8): the last
+ * position's evaluations and whether its start held, the closed form's pins, the base's x,
+ * profile and dF_z/dz, the x last evaluated, the rays' walks (the faces the held rays ended
+ * on) and their range at that x (whether the next evaluation there reuses them decides
+ * whether it takes the update), and the base (springs_carry.c); the profiles as whether they
+ * were the one given (p), which a twin reads as its own. The QP's warm start, the rays'
+ * caches at other x and the faces' d(rho)/dz are dropped on restore; they change no bit of a
+ * result, only how fast it is found (tests/model/test_state_rewind.c). */
+enum { MEMO_BYTES = sizeof(int64_t) + sizeof(int32_t) + sizeof(double) };
+
+static int carries(const tirenv_springs *s, int level)
+{
+    return s->par.contact == TIRENV_SPRINGS_CONTINUOUS && !level;
+}
+
+static size_t head_bytes(const tirenv_springs *s)
 {
     return 2 * sizeof(size_t) + s->N + 1 + sizeof(double);
 }
 
-void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf)
+/* the flags; evals, memo_a, memo_b, ray_a, ray_b; pins_z, upd_x, upd_dfz_dz, eval_x, the
+ * rays' origin's x; the memos (the vertex and kind their walk ended on, and the height it
+ * holds above; not d(rho)/dz, which the face gives again, the same bits) */
+static size_t carry_bytes(const tirenv_springs *s)
+{
+    return 1 + 5 * sizeof(uint64_t) + 5 * sizeof(double) + s->N * MEMO_BYTES;
+}
+
+/* The flags: pins_ok, start_taken, and the base, the memos and the rays' cache on p. */
+enum { PINS_OK = 1, START_TAKEN = 2, UPD_HERE = 4, MEMO_HERE = 8, RAYS_HERE = 16 };
+
+size_t tirenv_springs__state_size(const tirenv_springs *s, int level)
+{
+    return head_bytes(s) +
+           (carries(s, level) ? carry_bytes(s) + tirenv_springs__cc_carry_size(s->N) : 0);
+}
+
+void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p, int level,
+                                unsigned char *buf)
 {
     memcpy(buf, &s->a, sizeof s->a);
     memcpy(buf + sizeof s->a, &s->b, sizeof s->b);
     memcpy(buf + 2 * sizeof(size_t), s->active, s->N);
     buf[2 * sizeof(size_t) + s->N] = s->cc.between != 0;
     memcpy(buf + 2 * sizeof(size_t) + s->N + 1, &s->cc.between_z, sizeof(double));
+    if (!carries(s, level))
+        return;
+    unsigned char *q = buf + head_bytes(s);
+    memset(q, 0, carry_bytes(s));
+    const unsigned long long serial = p ? p->serial : 0;
+    /* the rays' cache: the walks over ray_a .. ray_b from origin.x, which the next
+     * evaluation at that x reuses where they hold (and then takes the update there) */
+    const int rays = serial && s->ray_serial == serial && s->ray_a <= s->ray_b &&
+                     s->memo_serial == serial && s->memo_a <= s->ray_a &&
+                     s->ray_b <= s->memo_b && s->memo_b < s->N;
+    const unsigned char flags =
+        (unsigned char)((s->pins_ok ? PINS_OK : 0) | (s->start_taken ? START_TAKEN : 0) |
+                        (serial && s->upd_serial == serial ? UPD_HERE : 0) |
+                        (serial && s->memo_serial == serial ? MEMO_HERE : 0) |
+                        (rays ? RAYS_HERE : 0));
+    const uint64_t u[5] = {s->evals, s->memo_a, s->memo_b, rays ? s->ray_a : 1,
+                           rays ? s->ray_b : 0};
+    const double v[5] = {s->pins_z, s->upd_x, s->upd_dfz_dz, s->eval_x,
+                         rays ? s->origin.x : 0};
+    q = tirenv_model__put(q, &flags, 1);
+    q = tirenv_model__put(q, u, sizeof u);
+    q = tirenv_model__put(q, v, sizeof v);
+    for (size_t e = s->memo_a; e <= s->memo_b && e < s->N; ++e) {
+        const tirenv_springs__ray_memo *m = &s->memo[e];
+        const int64_t j = m->j;
+        const int32_t kind = m->kind;
+        unsigned char *at = q + e * MEMO_BYTES;
+        at = tirenv_model__put(at, &j, sizeof j);
+        at = tirenv_model__put(at, &kind, sizeof kind);
+        tirenv_model__put(at, &m->z_low, sizeof m->z_low);
+    }
+    q += s->N * MEMO_BYTES;
+    /* whether a pin the start would make its base from is a ground vertex's (the rows are
+     * the closed form's evaluation's while pins_ok) */
+    int pins_vertex = 0;
+    for (size_t e = s->a; s->pins_ok && e <= s->b; ++e)
+        pins_vertex |= s->active[e] && s->cc.pin_row[e] < s->cc.n_rows &&
+                       s->cc.rows[s->cc.pin_row[e]].id >= 0;
+    tirenv_springs__cc_carry_save(&s->cc, s->N, s->memo, s->memo_a, s->memo_b, s->dw,
+                                  s->upd_x == s->eval_x, pins_vertex, q);
 }
 
-void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
+int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, int level,
+                                  const unsigned char *buf)
 {
     memcpy(&s->a, buf, sizeof s->a);
     memcpy(&s->b, buf + sizeof s->a, sizeof s->b);
@@ -1146,9 +1219,63 @@ void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf)
     }
     s->ray_serial = 0;
     forget_start(s);
-    if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not in the state */
-        tirenv_springs__cc_forget(&s->cc);
-        s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
-        memcpy(&s->cc.between_z, buf + 2 * sizeof(size_t) + s->N + 1, sizeof(double));
+    if (!carries(s, level)) {
+        if (s->par.contact == TIRENV_SPRINGS_CONTINUOUS) { /* its warm start is not kept */
+            tirenv_springs__cc_forget(&s->cc);
+            s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
+            memcpy(&s->cc.between_z, buf + 2 * sizeof(size_t) + s->N + 1, sizeof(double));
+        }
+        return TIRENV_OK;
     }
+    const unsigned char *q = buf + head_bytes(s);
+    unsigned char flags;
+    uint64_t u[5];
+    double v[5];
+    q = tirenv_model__get(q, &flags, 1);
+    q = tirenv_model__get(q, u, sizeof u);
+    q = tirenv_model__get(q, v, sizeof v);
+    const unsigned long long serial = p ? p->serial : 0;
+    s->pins_ok = (flags & PINS_OK) != 0;
+    s->start_taken = (flags & START_TAKEN) != 0;
+    s->upd_serial = flags & UPD_HERE ? serial : 0;
+    s->memo_serial = flags & MEMO_HERE ? serial : 0;
+    s->evals = u[0];
+    s->memo_a = u[1] < s->N ? u[1] : 1;
+    s->memo_b = u[2] < s->N ? u[2] : 0;
+    s->pins_z = v[0];
+    s->upd_x = v[1];
+    s->upd_dfz_dz = v[2];
+    s->eval_x = v[3];
+    for (size_t e = s->memo_a; e <= s->memo_b; ++e) {
+        tirenv_springs__ray_memo *m = &s->memo[e];
+        int64_t j;
+        int32_t kind;
+        const unsigned char *at = q + e * MEMO_BYTES;
+        at = tirenv_model__get(at, &j, sizeof j);
+        at = tirenv_model__get(at, &kind, sizeof kind);
+        tirenv_model__get(at, &m->z_low, sizeof m->z_low);
+        m->j = (long)j;
+        m->kind = kind;
+        m->drho = NAN;
+    }
+    q += s->N * MEMO_BYTES;
+    int pins_vertex;
+    const int status = tirenv_springs__cc_carry_restore(&s->cc, &s->cc_tire, s->memo, q,
+                                                        s->dw, &pins_vertex);
+    if (status) {
+        forget_start(s);
+        tirenv_springs__cc_forget(&s->cc);
+    } else if (p && (flags & RAYS_HERE) && u[3] <= u[4] && u[3] >= s->memo_a &&
+               u[4] <= s->memo_b) {
+        /* the rays' cache at its x: the origin as set_origin finds it (the same bits from
+         * any hint), the walks the memos */
+        set_origin(s, p, v[4]);
+        s->ray_a = u[3];
+        s->ray_b = u[4];
+    }
+    /* the faces kept are another ground's or another run's: found again where asked */
+    tirenv_springs__faces_forget(s);
+    s->cc.between = buf[2 * sizeof(size_t) + s->N] != 0;
+    memcpy(&s->cc.between_z, buf + 2 * sizeof(size_t) + s->N + 1, sizeof(double));
+    return status;
 }

@@ -13,10 +13,16 @@
 int tirenv_springs__long_in(const long *v, size_t n, long key);
 
 /* The contact state the next force evaluation starts from (springs.c), as bytes: their
- * number for a model, its bytes, and those bytes back into a model of the same parameters. */
-size_t tirenv_springs__state_size(const tirenv_springs *s);
-void tirenv_springs__state_save(const tirenv_springs *s, unsigned char *buf);
-void tirenv_springs__state_restore(tirenv_springs *s, const unsigned char *buf);
+ * number for a model, its bytes on profile p (what was carried on another is not), and
+ * those bytes back into a model of the same parameters on p: TIRENV_OK, or TIRENV_ENOMEM /
+ * TIRENV_EINVAL (then nothing is carried to the next position). level: a model that
+ * evaluates at one x on level ground only (the flat-ground workspace), whose contact is the
+ * closed form's throughout: its warm start alone, nothing carried from one x to the next. */
+size_t tirenv_springs__state_size(const tirenv_springs *s, int level);
+void tirenv_springs__state_save(const tirenv_springs *s, const tirenv_profile *p, int level,
+                                unsigned char *buf);
+int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, int level,
+                                  const unsigned char *buf);
 
 /* Whether a continuous-contact evaluation at centre height z (m) goes straight to the QP,
  * without trying the elements' own rows first: the last evaluation's solution had a row
@@ -796,6 +802,28 @@ int tirenv_springs__cc_pred_release(tirenv_springs__cc *c, const tirenv_springs_
 int tirenv_springs__cc_base_pins(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                  size_t f0, size_t f1, const unsigned char pinned[],
                                  double z);
+
+/* springs_rows.c: room for n rows (and their KKT unknowns alongside N elements). */
+int tirenv_springs__cc_reserve_rows(tirenv_springs__cc *c, size_t n, size_t N);
+
+/* springs_carry.c: the base the start at the next x and the update at this one take up
+ * (while base_ok: its working set, the root's state, and where tangent (the base is the last
+ * QP solve's at the x last evaluated, as it left it) its w and dw/dz dw[f0..f1] over its span
+ * and its rows' reactions), as tirenv_springs__cc_carry_size(N) bytes: saved, with the
+ * ray memos of the elements memo_a .. memo_b (the vertices their rays last ended on) and
+ * whether one of the closed form's pins is on a ground vertex (pins_vertex); restored into a
+ * workspace of the same tire (its warm start dropped, the base made again with K_FF's
+ * factor), memo the restored memos, dw written over the span, *pins_vertex the flag:
+ * TIRENV_OK, TIRENV_ENOMEM, or TIRENV_EINVAL for bytes no save wrote. docs/models.md
+ * section 1.7. */
+size_t tirenv_springs__cc_carry_size(size_t N);
+void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
+                                   const tirenv_springs__ray_memo memo[], size_t memo_a,
+                                   size_t memo_b, const double dw[], int tangent,
+                                   int pins_vertex, unsigned char *buf);
+int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                                     const tirenv_springs__ray_memo memo[],
+                                     const unsigned char *buf, double dw[], int *pins_vertex);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

@@ -139,20 +139,22 @@ static int springs_bracket(void *elem, const tirenv_profile *p, double x, double
     return 1;
 }
 
-static size_t springs_state_size(const void *elem)
+static size_t springs_state_size(const void *elem, int level)
 {
     const springs_elem *e = elem;
-    return tirenv_springs__state_size(e->s);
+    return tirenv_springs__state_size(e->s, level);
 }
-static void springs_state_save(const void *elem, unsigned char *buf)
+static void springs_state_save(const void *elem, const tirenv_profile *p, int level,
+                               unsigned char *buf)
 {
     const springs_elem *e = elem;
-    tirenv_springs__state_save(e->s, buf);
+    tirenv_springs__state_save(e->s, p, level, buf);
 }
-static void springs_state_restore(void *elem, const unsigned char *buf)
+static int springs_state_restore(void *elem, const tirenv_profile *p, int level,
+                                 const unsigned char *buf)
 {
     springs_elem *e = elem;
-    tirenv_springs__state_restore(e->s, buf);
+    return tirenv_springs__state_restore(e->s, p, level, buf);
 }
 
 /* docs/models.md section 4.1: the elements span the tread segment |theta| <= phi/2. With the

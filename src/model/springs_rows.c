@@ -124,6 +124,11 @@ static int reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
     return TIRENV_OK;
 }
 
+int tirenv_springs__cc_reserve_rows(tirenv_springs__cc *c, size_t n, size_t N)
+{
+    return reserve_rows(c, n, N);
+}
+
 /* Room for n vertex rows in c->vrows. */
 static int reserve_vrows(tirenv_springs__cc *c, size_t n)
 {

@@ -972,7 +972,7 @@ static void test_far_evaluation_tries_the_closed_form(void **state)
     tirenv_springs *hot = tirenv_springs_alloc(&t.springs);
     assert_non_null(p);
     assert_non_null(hot);
-    const size_t size = tirenv_springs__state_size(hot);
+    const size_t size = tirenv_springs__state_size(hot, 0);
     unsigned char *buf = malloc(size);
     assert_non_null(buf);
     size_t flagged = 0, far = 0;
@@ -992,10 +992,10 @@ static void test_far_evaluation_tries_the_closed_form(void **state)
         const double z_far = tirenv_profile_height(p, x);
         assert_false(tirenv_springs__qp_first(hot, z_far));
         /* the state carries it: a model restored from it decides the same */
-        tirenv_springs__state_save(hot, buf);
+        tirenv_springs__state_save(hot, p, 0, buf);
         tirenv_springs *back = tirenv_springs_alloc(&t.springs);
         assert_non_null(back);
-        tirenv_springs__state_restore(back, buf);
+        assert_int_equal(tirenv_springs__state_restore(back, p, 0, buf), TIRENV_OK);
         assert_true(tirenv_springs__qp_first(back, z1 + 0.04 * R0));
         assert_false(tirenv_springs__qp_first(back, z_far));
         tirenv_springs_free(back);
