@@ -215,18 +215,23 @@ static inline double rho_on(const line_k *k, double s, double c, int moves, doub
  * its second) on the line lk (NULL: the centre inside the ground, rho = 0), marked out of
  * reach (d = -INFINITY) or, within it, given the tread stiffness k_t (with lugs each its own)
  * and its interval added to wl. Every operand is read before the first store: a point's
- * doubles may alias the piece's and the ring's, which the stores would make reloads. */
+ * doubles may alias the piece's and the ring's, which the stores would make reloads. nodes: c
+ * lies between two nodes (c->nodes, a constant where inlined): its ends are the nodes' angles
+ * with d(phi)/dz 0, so its place is 0 or 1 and its d(rho)/dphi term 0 without the tests that
+ * find them (the same values, by the same operations where they are computed). */
 static inline __attribute__((always_inline)) void
 piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, double x,
             const line_k *lk, double k_t, int lugs, size_t wl[2], double omega, double th,
-            tirenv_ring_point *q)
+            tirenv_ring_point *q, const int nodes)
 {
     const size_t j = c->j;
     const double phi = e ? c->pb : c->pa, sn = e ? c->sb : c->sa, cs = e ? c->cb : c->ca,
-                 dphi = e ? c->db : c->da;
+                 dphi = nodes ? 0.0 : e ? c->db : c->da;
     const double R0 = r->R0, t_r = r->par.t_r;
     double s;
-    if (e == 1 && phi == r->theta[j + 1]) {
+    if (nodes) {
+        s = e;
+    } else if (e == 1 && phi == r->theta[j + 1]) {
         s = 1;
     } else if (e == 0 && phi == th) {
         s = 0;
@@ -236,7 +241,7 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, doubl
     }
     double drho = 0, drho_dphi = 0, rho = 0;
     if (lk)
-        rho = rho_on(lk, sn, cs, dphi != 0, &drho, &drho_dphi);
+        rho = rho_on(lk, sn, cs, !nodes && dphi != 0, &drho, &drho_dphi);
     const int fin = isfinite(rho);
     const double d = fin ? R0 - rho : -INFINITY;
     q->dd = -drho;
@@ -272,7 +277,8 @@ piece_point(const tirenv_ring *r, const tirenv_ring_piece *c, const int e, doubl
  * then. */
 static inline __attribute__((always_inline)) size_t
 piece_points(const tirenv_ring *r, const tirenv_ring_piece *c, int same, double x,
-             const line_k *lk, double k_t, int lugs, size_t wl[2], tirenv_ring_point *q)
+             const line_k *lk, double k_t, int lugs, size_t wl[2], tirenv_ring_point *q,
+             const int nodes)
 {
     const double omega = 0.5 * (c->pb - c->pa), th = r->theta[c->j];
     tirenv_ring_point *const qp = q - 1;
@@ -286,11 +292,11 @@ piece_points(const tirenv_ring *r, const tirenv_ring_piece *c, int same, double 
         qp->ends = 3;
         if (qp->d != -INFINITY)
             wl[1] = c->j + 1 > wl[1] ? c->j + 1 : wl[1];
-        piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q);
+        piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q, nodes);
         return 1;
     }
-    piece_point(r, c, 0, x, lk, k_t, lugs, wl, omega, th, q);
-    piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q + 1);
+    piece_point(r, c, 0, x, lk, k_t, lugs, wl, omega, th, q, nodes);
+    piece_point(r, c, 1, x, lk, k_t, lugs, wl, omega, th, q + 1, nodes);
     return 2;
 }
 
@@ -698,7 +704,7 @@ static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double
             for (int e = ct->joined; e < 2; ++e) {
                 tirenv_ring_point *const pe = q + (e - ct->joined);
                 const int in = pe->d > -t_r;
-                piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe);
+                piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe, 0);
                 if ((pe->d > -t_r) != in) /* into or out of reach: the window may change */
                     return 0;
             }
@@ -715,7 +721,7 @@ static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double
             if (!(pe->d > -t_r)) { /* out of reach: computed again, and must stay so */
                 const double omega = 0.5 * (ct->pb - ct->pa), th = r->theta[ct->j];
                 size_t w[2] = {wl[0], wl[1]};
-                piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe);
+                piece_point(r, ct, e, x, &lk, k_t, 0, w, omega, th, pe, 0);
                 if (pe->d > -t_r)
                     return 0;
                 moved_last = e == 1; /* its weight and ends as the moved pieces' */
@@ -732,6 +738,38 @@ static int shift_whole(tirenv_ring *r, const tirenv_profile *p, double x, double
     }
     wl[0] = r->shift_win[0], wl[1] = r->shift_win[1]; /* no point came into or out of reach */
     return 1;
+}
+
+/* The points of the pieces r->lines[0 .. n_lines) with a line (hit) into pts, in order;
+ * returns their count. by_nodes: a piece between two nodes (c->nodes) has its points written
+ * by piece_point's loop for such pieces (the same bits). */
+static inline __attribute__((always_inline)) size_t
+write_points(tirenv_ring *r, size_t n_lines, int inside, double x, double z, double k_t,
+             int lugs, size_t wl[2], tirenv_ring_point *pts, const int by_nodes)
+{
+    size_t n_pts = 0;
+    line_k lk = {0, 0, 0};
+    for (size_t i = 0; i < n_lines; ++i) {
+        tirenv_ring_piece *c = &r->lines[i];
+        if (!c->hit)
+            continue;
+        /* The points written last are c[-1]'s. With the centre inside the ground no piece
+         * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
+         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives).
+         * A run of pieces on one line shares its constants. */
+        const int same =
+            !inside && i > 0 && c[-1].hit && tirenv_ring__same_bits(c->L, c[-1].L, 4);
+        if (!inside && !same)
+            line_of(c->L, x, z, &lk);
+        const line_k *const l = inside ? NULL : &lk;
+        tirenv_ring_point *const q = pts + n_pts;
+        const size_t w = by_nodes && c->nodes
+                             ? piece_points(r, c, same, x, l, k_t, lugs, wl, q, 1)
+                             : piece_points(r, c, same, x, l, k_t, lugs, wl, q, 0);
+        c->joined = w == 1, c->q0 = n_pts + w - 2;
+        n_pts += w;
+    }
+    return n_pts;
 }
 
 /* The points of the window's nodes ja .. jb (ja < jb, all of the lower half): the cuts, the
@@ -825,6 +863,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
     if (fresh)
         r->pc_vj = r->pc_vk ? r->pc_vk + nv : NULL;
     const double *const th = r->theta, *const sn = r->sin_t, *const cs = r->cos_t;
+    const int nodes = !r->nodes_general; /* (for tests: none by the node pieces' writer) */
     for (size_t j = ja; fresh && j < jb; ++j) {
         const double pa = th[j], sa = sn[j], ca = cs[j], pb = th[j + 1], sb = sn[j + 1],
                      cb = cs[j + 1];
@@ -833,7 +872,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
              * the loop's cut records cost more than the piece's stores). */
             tirenv_ring_piece *c = &r->lines[n_lines];
             c->pa = pa, c->sa = sa, c->ca = ca, c->pb = pb, c->sb = sb, c->cb = cb;
-            c->j = j, c->contig = contig, c->da = 0, c->db = 0, c->vk = -1;
+            c->j = j, c->contig = contig, c->da = 0, c->db = 0, c->vk = -1, c->nodes = nodes;
             if (sa + sb < 0) {
                 ordered &= n_back == n_lines;
                 ++n_back;
@@ -855,7 +894,7 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                 tirenv_ring_piece *c = &r->lines[n_lines]; /* its line and hit: below */
                 c->pa = prev.phi, c->sa = prev.s, c->ca = prev.c, c->pb = next.phi;
                 c->sb = next.s, c->cb = next.c, c->j = j, c->contig = contig;
-                c->da = prev.dphi, c->db = next.dphi, c->vk = -1;
+                c->da = prev.dphi, c->db = next.dphi, c->vk = -1, c->nodes = 0;
                 if (prev.s + next.s < 0) {
                     ordered &= n_back == n_lines;
                     ++n_back;
@@ -922,25 +961,13 @@ int tirenv_ring__sample(tirenv_ring *r, const tirenv_profile *p, double x, doubl
                                                sx < 0 ? &cur_b : &cur_f, c->L));
             }
     }
-    size_t n_pts = 0;
-    line_k lk = {0, 0, 0};
-    for (size_t i = 0; i < n_lines; ++i) {
-        tirenv_ring_piece *c = &r->lines[i];
-        if (!c->hit)
-            continue;
-        /* The points written last are c[-1]'s. With the centre inside the ground no piece
-         * has a line (no ray cast, rho = 0 for all): none to compare (c->L was read unwritten,
-         * valgrind's "depends on uninitialised value"; either way the values rho = 0 gives).
-         * A run of pieces on one line shares its constants. */
-        const int same =
-            !inside && i > 0 && c[-1].hit && tirenv_ring__same_bits(c->L, c[-1].L, 4);
-        if (!inside && !same)
-            line_of(c->L, x, z, &lk);
-        const size_t w = piece_points(r, c, same, x, inside ? NULL : &lk, k_t, lugs, wl,
-                                      r->pts + n_pts);
-        c->joined = w == 1, c->q0 = n_pts + w - 2;
-        n_pts += w;
-    }
+    /* (The pieces between two nodes written by their own loop where the window holds fewer
+     * vertex cuts than node intervals: on a road with vertices 1 mm apart most pieces have a
+     * vertex at an end, and the test a piece cost more there than the node pieces saved.) */
+    const size_t n_pts =
+        nv < jb - ja
+            ? write_points(r, n_lines, inside, x, z, k_t, lugs, wl, r->pts, 1)
+            : write_points(r, n_lines, inside, x, z, k_t, lugs, wl, r->pts, 0);
     r->n_pts = r->shift_n_pts = n_pts;
     r->shift_ok = ordered && !inside && !lugs;
     if (n_far && !(wl[0] < ja + SKIP_EDGE && wl[1] > jb - SKIP_EDGE)) {

@@ -148,6 +148,7 @@ typedef struct {
     long vk;
     size_t q0;
     int joined;
+    int nodes; /* both its ends are nodes (no vertex cut in its interval) */
 } tirenv_ring_piece;
 
 /* The ring's own step in z (ring_root.c): F_z's curvature in z, measured at the positions
@@ -223,6 +224,8 @@ struct tirenv_ring {
     size_t n_back_carried, n_back_bad;
     int apart;             /* for tests: a node's two points on one ray kept apart, not joined
                             * (ring_ground.c), as the sampling did before */
+    int nodes_general;     /* for tests: the points of pieces between two nodes written by the
+                            * general writer (ring_ground.c: no piece marked nodes) */
     /* The window's stretches left unsampled (ring_ground.c): node intervals far from the last
      * sub-window, their ground bounded instead. near_ok: near_a .. near_b is the last solve's
      * sub-window (set by ring_shear.c, where its solve may skip). gaps: n_gaps entries of

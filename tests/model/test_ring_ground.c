@@ -7,8 +7,9 @@
  * ground (the diagnostics' d and b per node, the same bits; the weights' sum) and contact
  * (--detail's counts, tread compression, the patch), the same equilibrium to round-off (h
  * within 1e-9 m and F_x within 1e-3 N, the limits the join was allowed; measured 6.3e-11 m,
- * the equilibria's own tolerance here, and 2.6e-6 N), and fewer points. And the vertices'
- * angles, taken without atan2, against atan2. */
+ * the equilibria's own tolerance here, and 2.6e-6 N), and fewer points. The points of the
+ * pieces between two nodes, written by their own writer, against the general one's, bit for
+ * bit. And the vertices' angles, taken without atan2, against atan2. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +18,7 @@
 #include "tirenv/tirenv.h"
 #include "tirenv/rng.h"
 #include "model/ring_impl.h"
+#include "profile/profile_impl.h"
 
 /* A seeded obstacle: cleat, 5 mm blade or step (as test_ring_continuity.c draws them), or a
  * 3 m class C road with vertices 10 mm or 1 mm apart. */
@@ -231,6 +233,79 @@ static void test_gaps_as_whole(void **state)
     tirenv_rng_free(rng);
 }
 
+/* The points of a piece between two nodes are written by piece_point specialised to such
+ * pieces (ring_ground.c write_points): against the general writer's (r->nodes_general), bit
+ * for bit, every field a point's solve reads (its d, place, weight, stiffness within reach,
+ * interval, ends, angle, sine, cosine, d(d)/dz, d(phi)/dz, d(d)/dz along the cut, ground
+ * abscissa) and both forces, over seeded cleats, blades, steps and class C roads with vertices
+ * 10 mm and 1 mm apart: sweeps of 1 mm steps, each at a height pressing the tread some 1 to 3
+ * cm and 3.7e-6 m above it (a Newton step's), and centres exactly on a vertex of the ground.
+ * The two rings evaluate the same sequence, so their warm starts and kept samplings match. */
+static void test_node_pieces_as_general(void **state)
+{
+    (void)state;
+    tirenv_rng *rng = tirenv_rng_alloc(27);
+    assert_non_null(rng);
+    const tirenv_tire t = tirenv_tire_default();
+    size_t evals = 0, points = 0, node_pieces = 0;
+    for (int kind = 0; kind < 5; ++kind) {
+        tirenv_profile *p = random_ground(rng, kind);
+        tirenv_ring *r[2];
+        for (int k = 0; k < 2; ++k) {
+            r[k] = tirenv_ring_alloc(t.springs.R0, &t.ring);
+            assert_non_null(r[k]);
+        }
+        r[1]->nodes_general = 1;
+        const double x0 = (kind >= 3 ? 0.6 : -0.35) + 0.5 * tirenv_rng_uniform(rng);
+        for (int i = 0; i < 24; ++i) {
+            double x = x0 + 0.001 * i;
+            if (i % 8 == 7) { /* on a vertex: the nearest at or after x */
+                size_t v = 0;
+                while (v + 1 < p->n && p->x[v] < x)
+                    ++v;
+                x = p->x[v];
+            }
+            const double zt = tirenv_profile_max_height(p, x - 0.3, x + 0.3) + t.springs.R0 -
+                              0.01 - 0.02 * tirenv_rng_uniform(rng);
+            for (int dz = 0; dz < 2; ++dz) {
+                const double z = zt + 3.7e-6 * dz;
+                double fx[2], fz[2];
+                for (int k = 0; k < 2; ++k)
+                    assert_int_equal(tirenv_ring_forces(r[k], p, x, z, &fx[k], &fz[k], NULL,
+                                                        NULL, NULL), 0);
+                assert_true(tirenv_ring__same_bits(fx, fx + 1, 1));
+                assert_true(tirenv_ring__same_bits(fz, fz + 1, 1));
+                assert_int_equal(r[0]->n_pts, r[1]->n_pts);
+                for (size_t q = 0; q < r[0]->n_pts; ++q) {
+                    const tirenv_ring_point *a = &r[0]->pts[q], *b = &r[1]->pts[q];
+                    assert_true(tirenv_ring__same_bits(&a->d, &b->d, 1));
+                    assert_true(tirenv_ring__same_bits(&a->s, &b->s, 1));
+                    assert_true(tirenv_ring__same_bits(&a->omega, &b->omega, 1));
+                    assert_true(a->d == -INFINITY || tirenv_ring__same_bits(&a->k_t, &b->k_t, 1));
+                    assert_int_equal(a->j, b->j);
+                    assert_int_equal(a->ends, b->ends);
+                    assert_true(tirenv_ring__same_bits(&a->phi, &b->phi, 3)); /* phi, sn, cs */
+                    assert_true(tirenv_ring__same_bits(&a->dd, &b->dd, 4)); /* to X */
+                }
+                points += r[0]->n_pts;
+                for (size_t c = 0; c < r[0]->pc_jb - r[0]->pc_ja + r[0]->pc_nv; ++c)
+                    node_pieces += r[0]->pc_valid && r[0]->pc_nv < r[0]->pc_jb - r[0]->pc_ja &&
+                                   r[0]->lines[c].nodes && r[0]->lines[c].hit;
+                ++evals;
+            }
+        }
+        for (int k = 0; k < 2; ++k)
+            tirenv_ring_free(r[k]);
+        tirenv_profile_free(p);
+    }
+    print_message("node pieces' writer against the general one: %zu evaluations, %zu points, "
+                  "%zu pieces between two nodes by their own writer\n", evals, points,
+                  node_pieces);
+    assert_int_equal(evals, 240);
+    assert_true(node_pieces > 1000);
+    tirenv_rng_free(rng);
+}
+
 /* A ground vertex's angle seen from the centre (a cut's) is taken from the nearest node's by
  * atan's series, not by atan2 (ring_ground.c cut_angle): against atan2 of the cut's own sine
  * and cosine (themselves rounded), within 4.5e-16 rad (measured 2.2e-16, two ulps at 0.5
@@ -280,6 +355,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_joined_points_as_apart),
         cmocka_unit_test(test_gaps_as_whole),
+        cmocka_unit_test(test_node_pieces_as_general),
         cmocka_unit_test(test_cut_angles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
