@@ -57,9 +57,10 @@ test-slurm: build deps-test
 # Debug information -g1, line tables only: the sanitizers' reports still name file and line
 # (UBSan's carry their own), and the compiler takes 11 % less time than with -g; configure
 # ASAN_BUILD with -g to look at variables in a debugger.
-# Three tests take a stated smaller case there, the same code over fewer cases (the sanitizers
+# Some tests take a stated smaller case there, the same code over fewer cases (the sanitizers
 # look for memory errors, not for the numbers, which the Release run checks in full):
-# test_ride_dynamic, cli_ring and cli_tir (tests/CMakeLists.txt, TIRENV_TEST_SANITIZED).
+# test_ride_dynamic, test_onetire, test_fmt, cli_ring, cli_tir, cli_fifo, cli_roads,
+# cli_roads_grade and cli_stream_jobs (tests/CMakeLists.txt, TIRENV_TEST_SANITIZED).
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
 	    -DTIRENV_FUZZ=OFF '-DCMAKE_C_FLAGS_DEBUG=-g1 -O1' >/dev/null

@@ -2,7 +2,7 @@
 # --jobs N changes how long a command takes, never what it computes: each command run with
 # --jobs 1 (serial) and --jobs 3 (more threads than this machine's cores, so the work really
 # interleaves) writes the same files, byte for byte, apart from the timings they report.
-# (dataset build: tests/dataset/dataset_regenerates.sh; study: tests/study/study_runs.sh; sweep:
+# (dataset build: tests/dataset/dataset_regenerates.sh; study: tests/study/study_killed.sh; sweep:
 # tests/cli/cli_sweep.sh and test_sweep.)
 #   sh tests/cli/jobs.sh BIN DATASET_DIR
 # SPDX-License-Identifier: Apache-2.0

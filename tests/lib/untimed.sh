@@ -1,5 +1,5 @@
 #!/bin/sh
-# Sourced by tests/cli/jobs.sh and tests/study/study_runs*.sh: two output trees equal apart
+# Sourced by tests/cli/jobs.sh and tests/study/study_killed.sh: two output trees equal apart
 # from the timings they report (--jobs changes how long a command takes, never what it
 # computes).
 # SPDX-License-Identifier: Apache-2.0

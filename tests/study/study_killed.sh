@@ -10,7 +10,11 @@
 # run's time, so that some runs complete. On the test data set of three cases (every stage of
 # the study, every kind of file, 40 % less time than the embedded data set's 28), without
 # images (gnuplot's time, not tirenv's: the images are written and renamed inside the staging
-# directory like every other file). Usage: tests/study/study_killed.sh BIN TESTDATA_DIR.
+# directory like every other file). The first reference runs at --jobs 3 (more threads than
+# this machine's cores) and the complete run at the end at --jobs 1: they write the same files
+# apart from the timings they report, the study's --jobs check (its fit, networks over the
+# seeds, physical network's grid, obstacles outside, the three parts side by side), made
+# here on the runs the test needs anyway. Usage: tests/study/study_killed.sh BIN TESTDATA_DIR.
 # TIRENV_KILL_SEED repeats a run's kill times. Each run draws new times, so that the runs of
 # the test over time cover the study's stages; ten kills a run cost twice the time of four.
 # SPDX-License-Identifier: Apache-2.0
@@ -21,6 +25,7 @@ bin=$1
 data=$2/dataset_good
 case $bin in /*) ;; */*) bin=$PWD/$bin ;; esac
 case $data in /*) ;; *) data=$PWD/$data ;; esac
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2
@@ -42,12 +47,14 @@ snap() {
 }
 files() { (cd "$1" && find . -type f | sort); }
 
-study() { # study SEED DIR
-    "$bin" study --data "$data" --no-images --seed "$1" -o "$2" >/dev/null 2>&1
+study() { # study SEED DIR [OPTION...]
+    seed=$1 dir=$2
+    shift 2
+    "$bin" study --data "$data" --no-images --seed "$seed" -o "$dir" "$@" >/dev/null 2>&1
 }
 
 t0=$(date +%s.%N)
-study 1 ref1 || { echo "not ok 1 - the reference study (seed 1) failed"; exit 1; }
+study 1 ref1 --jobs 3 || { echo "not ok 1 - the reference study (seed 1) failed"; exit 1; }
 t1=$(date +%s.%N)
 study 2 ref2 || { echo "not ok 1 - the reference study (seed 2) failed"; exit 1; }
 T=$(echo "$t0 $t1" | awk '{ print $2 - $1 }')
@@ -120,11 +127,18 @@ while read -r delay how; do
 done <plan
 echo "# $n_old kills left the old report, $n_new the new one"
 
-study 1 rep
+study 1 rep --jobs 1
 if [ -z "$(find . -name '*tirenv-tmp*')" ] && snap rep stable | cmp -s - ref1.stable; then
     ok "a complete run afterwards writes the report and removes every staging directory left"
 else
     not_ok "a complete run afterwards writes the report and removes every staging directory left"
+fi
+# shellcheck source=tests/lib/untimed.sh
+. "$here/../lib/untimed.sh"
+if same_apart_from_timings ref1 rep; then
+    ok "--jobs 1 = --jobs 3: the fit, networks, errors, plot data, reports"
+else
+    not_ok "--jobs 1 = --jobs 3: the fit, networks, errors, plot data, reports"
 fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

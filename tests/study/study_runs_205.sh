@@ -3,8 +3,9 @@
 # tirenv study end to end on the 205/60R15 car tire's data set (simulated by TNO's MF-Swift
 # cam, as make demo runs it): every promised file, the simulated-data label naming the cam as
 # the reference, one error row per validation case and model, the data set's own tire used
-# and written back, the stated accuracy, and --jobs 1 and --jobs 3 writing the same files
-# apart from timings (the cam as the reference of the obstacles outside, one instance each).
+# and written back, the stated accuracy. One study, at --jobs 3: --jobs 1's same files are
+# checked by tests/study/study_killed.sh (the study's parallel parts) and tests/cli/jobs.sh
+# (the cam, among the compared models, on every thread).
 # Usage: tests/study/study_runs_205.sh BIN DATA_DIR.
 set -eu
 bin=$1 data=$2
@@ -61,10 +62,5 @@ better() {
         "$tmp/s/errors.csv"
 }
 check 13 "springs nearer than the rigid disc on each validation case" better
-# shellcheck source=tests/lib/untimed.sh
-. "$(dirname "$0")/../lib/untimed.sh"
-"$bin" study --data "$data" --jobs 1 -o "$tmp/s1" >"$tmp/out1" 2>&1 || cat "$tmp/out1"
-check 14 "--jobs 1 = --jobs 3: the fit, networks, errors, plot data, reports" \
-    same_apart_from_timings "$tmp/s1" "$tmp/s"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
