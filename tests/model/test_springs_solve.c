@@ -882,11 +882,14 @@ static void test_chain_solve_pair_three_match(void **state)
             const size_t q2 = (size_t)((double)n_ch * tirenv_test_uniform(&seed));
             const size_t lo1 = ch[2 * q1], hi1 = ch[2 * q1 + 1], lo2 = ch[2 * q2],
                          hi2 = ch[2 * q2 + 1];
-            const size_t from1 = lo1 + (size_t)((double)(hi1 - lo1 + 1) * tirenv_test_uniform(&seed));
-            const size_t from2 = lo2 + (size_t)((double)(hi2 - lo2 + 1) * tirenv_test_uniform(&seed));
+            const size_t from1 =
+                lo1 + (size_t)((double)(hi1 - lo1 + 1) * tirenv_test_uniform(&seed));
+            const size_t from2 =
+                lo2 + (size_t)((double)(hi2 - lo2 + 1) * tirenv_test_uniform(&seed));
             const int unit = rep % 2;
             /* two chains apart in one array, or any two (the same one too) in two arrays */
-            double *b = q1 != q2 && rep % 3 == 0 ? x[0] : x[1], *rb = q1 != q2 && rep % 3 == 0 ? y[0] : y[1];
+            const int apart = q1 != q2 && rep % 3 == 0;
+            double *b = apart ? x[0] : x[1], *rb = apart ? y[0] : y[1];
             chain_rhs(x[0], lo1, from1, hi1, unit, &seed);
             chain_rhs(b, lo2, from2, hi2, unit, &seed);
             memcpy(y[0], x[0], (N + 2) * sizeof *x[0]);
