@@ -1259,20 +1259,15 @@ int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, in
         m->drho = NAN;
     }
     q += s->N * MEMO_BYTES;
-    /* the memos' vertices index p's (a state's bytes are not trusted: docs/models.md
-     * section 1.7) */
-    int status = TIRENV_OK;
-    for (size_t e = s->memo_a; e <= s->memo_b && !status; ++e)
-        if (!p || !tirenv_springs__memo_fits(p, NULL, &s->rays, e, &s->memo[e]))
-            status = TIRENV_EINVAL;
     int pins_vertex;
-    if (!status)
-        status = tirenv_springs__cc_carry_restore(&s->cc, &s->cc_tire, s->memo, q,
+    int status = tirenv_springs__cc_carry_restore(&s->cc, &s->cc_tire, s->memo, q,
                                                   p ? p->n : 0, s->dw, &pins_vertex);
     if (!status && p && (flags & RAYS_HERE) && u[3] <= u[4] && u[3] >= s->memo_a &&
         u[4] <= s->memo_b && isfinite(v[4])) {
         /* the rays' cache at its x: the origin as set_origin finds it (the same bits from
-         * any hint), the walks the memos, which the reuse reads on their sides of it */
+         * any hint), the walks the memos, whose vertices the reuse indexes p by (a state's
+         * bytes are not trusted: docs/models.md section 1.7; elsewhere a memo's vertex is
+         * read within the start's window of faces, which a streamed road's carry relies on) */
         set_origin(s, p, v[4]);
         for (size_t e = u[3]; e <= u[4] && !status; ++e)
             if (!tirenv_springs__memo_fits(p, &s->origin, &s->rays, e, &s->memo[e]))

@@ -10,6 +10,7 @@
  * flag. */
 #include "model/springs_impl.h"
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -205,9 +206,9 @@ int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs
         memcpy(&v, pin_id + e * sizeof v, sizeof v);
         n_enter += enter[e] != 0;
         n_vertex += held[e] && v >= 0;
-        /* a held element's vertex and the one its ray ended on index the ground's */
-        if ((held[e] && v >= (int64_t)n_v) ||
-            (enter[e] && !(memo[e].j >= 0 && (size_t)memo[e].j < n_v)))
+        /* a held element's vertex is the ground's, or none it has now (LONG_MAX: a streamed
+         * road's window moved past it, springs.c's reprofile) */
+        if (held[e] && v >= (int64_t)n_v && v != LONG_MAX)
             return TIRENV_EINVAL;
     }
     /* the rows: the working ones, a row of each vertex a held element may enter, the rows
@@ -224,7 +225,7 @@ int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs
         const tirenv_springs__cc_row *R = &c->rows[q];
         /* (the layout the Schur path indexes by; a vertex's row, or element i's ray's) */
         if (!(R->i < N && R->j < N && (R->t > 0 ? R->j == R->i + 1 : R->j == R->i) &&
-              R->id >= -(long)N && (R->id < 0 || (size_t)R->id < n_v)))
+              R->id >= -(long)N && (R->id < 0 || (size_t)R->id < n_v || R->id == LONG_MAX)))
             return TIRENV_EINVAL;
         c->order[q] = N + q;
         c->schur_pos[q] = q;

@@ -821,9 +821,9 @@ int tirenv_springs__cc_reserve_rows(tirenv_springs__cc *c, size_t n, size_t N);
  * ray memos of the elements memo_a .. memo_b (the vertices their rays last ended on) and
  * whether one of the closed form's pins is on a ground vertex (pins_vertex); restored into a
  * workspace of the same tire (its warm start dropped, the base made again with K_FF's
- * factor), memo the restored memos (their vertices checked), n_v the ground's vertices
- * (0: none), dw written over the span, *pins_vertex the flag: TIRENV_OK, TIRENV_ENOMEM, or
- * TIRENV_EINVAL for bytes no save wrote (an element, row or vertex out of range). docs/models.md
+ * factor), memo the restored memos, n_v the ground's vertices (0: none), dw written over
+ * the span, *pins_vertex the flag: TIRENV_OK, TIRENV_ENOMEM, or TIRENV_EINVAL for bytes no
+ * save wrote (an element, a row or a vertex out of range). docs/models.md
  * section 1.7. */
 size_t tirenv_springs__cc_carry_size(size_t N);
 void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
