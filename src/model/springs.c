@@ -1260,18 +1260,29 @@ int tirenv_springs__state_restore(tirenv_springs *s, const tirenv_profile *p, in
     }
     q += s->N * MEMO_BYTES;
     int pins_vertex;
-    const int status = tirenv_springs__cc_carry_restore(&s->cc, &s->cc_tire, s->memo, q,
-                                                        s->dw, &pins_vertex);
+    int status = tirenv_springs__cc_carry_restore(&s->cc, &s->cc_tire, s->memo, q,
+                                                  p ? p->n : 0, s->dw, &pins_vertex);
+    if (!status && p && (flags & RAYS_HERE) && u[3] <= u[4] && u[3] >= s->memo_a &&
+        u[4] <= s->memo_b && isfinite(v[4])) {
+        /* the rays' cache at its x: the origin as set_origin finds it (the same bits from
+         * any hint), the walks the memos, whose vertices the reuse indexes p by (a state's
+         * bytes are not trusted: docs/models.md section 1.7; elsewhere a memo's vertex is
+         * read within the start's window of faces, which a streamed road's carry relies on) */
+        set_origin(s, p, v[4]);
+        for (size_t e = u[3]; e <= u[4] && !status; ++e)
+            if (!tirenv_springs__memo_fits(p, &s->origin, &s->rays, e, &s->memo[e]))
+                status = TIRENV_EINVAL;
+        s->ray_a = u[3];
+        s->ray_b = u[4];
+    }
     if (status) {
         forget_start(s);
         tirenv_springs__cc_forget(&s->cc);
-    } else if (p && (flags & RAYS_HERE) && u[3] <= u[4] && u[3] >= s->memo_a &&
-               u[4] <= s->memo_b) {
-        /* the rays' cache at its x: the origin as set_origin finds it (the same bits from
-         * any hint), the walks the memos */
-        set_origin(s, p, v[4]);
-        s->ray_a = u[3];
-        s->ray_b = u[4];
+        s->ray_serial = 0;
+        s->memo_serial = 0;
+        s->upd_serial = 0;
+        s->memo_a = 1;
+        s->memo_b = 0;
     }
     /* the faces kept are another ground's or another run's: found again where asked */
     tirenv_springs__faces_forget(s);

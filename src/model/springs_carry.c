@@ -10,6 +10,7 @@
  * flag. */
 #include "model/springs_impl.h"
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -175,7 +176,8 @@ static int room(void **v, size_t *cap, size_t n, size_t size)
 
 int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                      const tirenv_springs__ray_memo memo[],
-                                     const unsigned char *buf, double dw[], int *pins_vertex)
+                                     const unsigned char *buf, size_t n_v, double dw[],
+                                     int *pins_vertex)
 {
     const size_t N = T->N;
     unsigned char flags;
@@ -204,6 +206,10 @@ int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs
         memcpy(&v, pin_id + e * sizeof v, sizeof v);
         n_enter += enter[e] != 0;
         n_vertex += held[e] && v >= 0;
+        /* a held element's vertex is the ground's, or none it has now (LONG_MAX: a streamed
+         * road's window moved past it, springs.c's reprofile) */
+        if (held[e] && v >= (int64_t)n_v && v != LONG_MAX)
+            return TIRENV_EINVAL;
     }
     /* the rows: the working ones, a row of each vertex a held element may enter, the rows
      * of the elements held on vertices, and the two the closed form's pins' rows point at */
@@ -217,8 +223,10 @@ int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs
     for (size_t q = 0; q < k; ++q) {
         rows = get_row(rows, &c->rows[q]);
         const tirenv_springs__cc_row *R = &c->rows[q];
-        if (!(R->i < N && R->j < N && (R->t > 0 ? R->j == R->i + 1 : R->j == R->i)))
-            return TIRENV_EINVAL; /* (the layout the Schur path indexes by) */
+        /* (the layout the Schur path indexes by; a vertex's row, or element i's ray's) */
+        if (!(R->i < N && R->j < N && (R->t > 0 ? R->j == R->i + 1 : R->j == R->i) &&
+              R->id >= -(long)N && (R->id < 0 || (size_t)R->id < n_v || R->id == LONG_MAX)))
+            return TIRENV_EINVAL;
         c->order[q] = N + q;
         c->schur_pos[q] = q;
         memcpy(&c->lambda[q], l + q * sizeof(double), sizeof(double));

@@ -203,6 +203,14 @@ int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__f
                                 const tirenv_springs__fan_rays *r, size_t i, long v, double z,
                                 tirenv_springs__ray_memo *m);
 
+/* Whether memo m (bytes a state brought, springs.c) names only what profile p has: a kind a
+ * walk ends with and, where the kind reads it, a vertex of p; with o's centre known (o not
+ * NULL), a segment's other end too, for ray i of r (the one before its vertex on the ray's
+ * side, or none where the vertex is the side's first). What the reuse of a memo indexes by. */
+int tirenv_springs__memo_fits(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, size_t i,
+                              const tirenv_springs__ray_memo *m);
+
 /* The vertex at the far end of the segment memo m of ray i ended on, where the ray from o's
  * centre at height z (m) now passes above it (the vertex crossed the ray since the walk), else
  * -1. */
@@ -813,8 +821,9 @@ int tirenv_springs__cc_reserve_rows(tirenv_springs__cc *c, size_t n, size_t N);
  * ray memos of the elements memo_a .. memo_b (the vertices their rays last ended on) and
  * whether one of the closed form's pins is on a ground vertex (pins_vertex); restored into a
  * workspace of the same tire (its warm start dropped, the base made again with K_FF's
- * factor), memo the restored memos, dw written over the span, *pins_vertex the flag:
- * TIRENV_OK, TIRENV_ENOMEM, or TIRENV_EINVAL for bytes no save wrote. docs/models.md
+ * factor), memo the restored memos, n_v the ground's vertices (0: none), dw written over
+ * the span, *pins_vertex the flag: TIRENV_OK, TIRENV_ENOMEM, or TIRENV_EINVAL for bytes no
+ * save wrote (an element, a row or a vertex out of range). docs/models.md
  * section 1.7. */
 size_t tirenv_springs__cc_carry_size(size_t N);
 void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
@@ -823,7 +832,8 @@ void tirenv_springs__cc_carry_save(const tirenv_springs__cc *c, size_t N,
                                    int pins_vertex, unsigned char *buf);
 int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
                                      const tirenv_springs__ray_memo memo[],
-                                     const unsigned char *buf, double dw[], int *pins_vertex);
+                                     const unsigned char *buf, size_t n_v, double dw[],
+                                     int *pins_vertex);
 
 /* ---- Identification on flat ground (springs_identify.c, springs_minmax.c) ---- */
 

@@ -788,6 +788,29 @@ int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__f
     return 1;
 }
 
+int tirenv_springs__memo_fits(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
+                              const tirenv_springs__fan_rays *r, size_t i,
+                              const tirenv_springs__ray_memo *m)
+{
+    const long n = (long)p->n, j = m->j;
+    const int side = i > r->i0;
+    const long jp = side ? j - 1 : j + 1;
+    switch (m->kind) {
+    case RAY_HIT:
+    case RAY_WALL:
+    case RAY_REACH: /* a walk from the centre resumes at j, reading j's vertex before it */
+        return j >= 0 && j < n && (!o || j == o->first[side] || (jp >= 0 && jp < n));
+    case RAY_END: /* (off the profile's end on the ray's side) */
+        return o ? j == (side ? n : -1) : j == -1 || j == n;
+    case RAY_DOWN:
+        return !o || i == r->i0;
+    case RAY_NONE:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
 long tirenv_springs__memo_passed(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                                  const tirenv_springs__fan_rays *r, size_t i, double z,
                                  const tirenv_springs__ray_memo *m)

@@ -2,13 +2,15 @@
 /* libFuzzer entry point for the FMU (fmu/): the input is a program of FMI 2.0 calls on one
  * instance, in any order and with any arguments (modes out of order, NULL arrays, NaN and
  * infinite times and values, unknown value references, models and files), including states
- * taken, set, freed, serialized, corrupted byte by byte at offsets the input chooses and
- * deserialized, and raw bytes deserialized as a state. Nothing may crash, leak, read out of
+ * taken, set, freed, serialized, corrupted at offsets the input chooses (a byte, or a word of
+ * 8, the model state's checksum made again or not) and deserialized, and raw bytes
+ * deserialized as a state. Nothing may crash, leak, read out of
  * bounds or hang whatever the importer does, short of using a freed instance (which FMI 2.0
  * leaves undefined). Seeds: corpus/fmu (runs of springs and cam over the cleat with states
  * taken, corrupted, set and moved; made by fmu_seeds.py).
  * The instance's resources are a private directory holding a 0.10 x 0.10 m cleat (cleat.csv)
- * and a flat road (road.csv); the tire is the built-in default unless the input names one. */
+ * and a flat road (road.csv), no tire file: the FMU's start value of tire_file (default.tir)
+ * is refused there, so an input sets tire_file "" (the built-in tire) to reach a model. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -107,7 +109,31 @@ static fmi2Component instantiate(cursor *c)
                            &callbacks, fmi2False, (how & 16) != 0);
 }
 
-/* A state of slot serialized, bytes of it changed where the input says, deserialized into
+/* The model's state within serialized bytes b (tirenv_model_state_save's: its magic, then
+ * its size) given the checksum of its bytes as changed (FNV-1a, 64 bits, over all before
+ * it), as a host that means harm would: the model's own checks then meet the changes. */
+static void reseal(fmi2Byte *b, size_t size)
+{
+    static const char magic[8] = {'t', 'i', 'r', 'e', 'n', 'v', 'S', '1'};
+    for (size_t at = 0; at + 16 <= size; ++at) {
+        if (memcmp(b + at, magic, sizeof magic) != 0)
+            continue;
+        uint64_t total;
+        memcpy(&total, b + at + 8, sizeof total);
+        if (total < 16 + sizeof total || total > size - at)
+            return;
+        uint64_t h = 0xcbf29ce484222325ull;
+        for (size_t j = at; j < at + total - sizeof h; ++j) {
+            h ^= (unsigned char)b[j];
+            h *= 0x100000001b3ull;
+        }
+        memcpy(b + at + total - sizeof h, &h, sizeof h);
+        return;
+    }
+}
+
+/* A state of slot serialized, bytes of it changed where the input says (8 bytes at a time
+ * where it says so, the model's checksum made again where it says so), deserialized into
  * slot (or refused). */
 static void corrupt(fmi2Component f, fmi2FMUstate *slot, cursor *c)
 {
@@ -118,10 +144,14 @@ static void corrupt(fmi2Component f, fmi2FMUstate *slot, cursor *c)
     if (!b)
         abort();
     if (fmi2SerializeFMUstate(f, *slot, b, size) == fmi2OK) {
-        for (uint8_t k = byte(c) % 4; k; --k) {
+        const uint8_t how = byte(c);
+        for (uint8_t k = how % 4; k; --k) {
             const size_t at = ((size_t)byte(c) << 8 | byte(c)) % size;
-            b[at] = byte(c);
+            for (size_t w = 0; w < (how & 4 ? 8u : 1u); ++w)
+                b[(at + w) % size] = byte(c);
         }
+        if (how & 8)
+            reseal(b, size);
         const size_t cut = byte(c) == 255 ? size / 2 : size;
         fmi2DeSerializeFMUstate(f, b, cut, slot);
     }

@@ -797,6 +797,27 @@ static void test_inner_residual_bound(void **state)
     assert_true(inner > 5000); /* 8,581 on these seeds, the largest 0.027 of it */
 }
 
+/* K_FF's factor of a random span on a random tire of 5 to 304 elements (cs its tables), a
+ * random share of its elements held: its N. */
+static size_t random_factor(chain_set *cs, tirenv_springs__cc *a, uint64_t *seed)
+{
+    const size_t N = 5 + (size_t)(300 * tirenv_test_uniform(seed));
+    const double k_r = 1e5 * (0.3 + tirenv_test_uniform(seed));
+    const double k_ir = k_r * pow(10, 4 * tirenv_test_uniform(seed) - 1);
+    chain_set_init(cs, N, k_r, k_ir);
+    const tirenv_springs__cc_tire T = {.N = N, .R0 = 0.3, .k_r = k_r, .k_ir = k_ir,
+                                       .diag = cs->diag, .lq = cs->lq, .rq = cs->rq};
+    assert_int_equal(tirenv_springs__cc_init(a, N), 0);
+    a->f0 = (size_t)((double)(N / 3) * tirenv_test_uniform(seed));
+    a->f1 = N - 1 - (size_t)((double)(N / 3) * tirenv_test_uniform(seed));
+    a->n_schur = 0;
+    const double p_held = 0.02 + 0.4 * tirenv_test_uniform(seed);
+    for (size_t e = a->f0; e <= a->f1; ++e)
+        a->wpos[e] = tirenv_test_uniform(seed) < p_held ? SIZE_MAX : 0;
+    assert_int_equal(tirenv_springs__cc_schur_factor(a, &T, 0), 0);
+    return N;
+}
+
 /* tirenv_springs__cc_chains_solve (springs_schur.c) solves two chains at a time, interleaved:
  * over random spans, held sets and tires, every element the bits of tirenv_springs__cc_chain_solve
  * on each chain alone. */
@@ -806,22 +827,9 @@ static void test_chains_solve_matches(void **state)
     uint64_t seed = 0x7e57c4a1a5ULL;
     size_t chains = 0, elements = 0;
     for (int trial = 0; trial < 60; ++trial) {
-        const size_t N = 5 + (size_t)(300 * tirenv_test_uniform(&seed));
-        const double k_r = 1e5 * (0.3 + tirenv_test_uniform(&seed));
-        const double k_ir = k_r * pow(10, 4 * tirenv_test_uniform(&seed) - 1);
         chain_set cs;
-        chain_set_init(&cs, N, k_r, k_ir);
-        const tirenv_springs__cc_tire T = {.N = N, .R0 = 0.3, .k_r = k_r, .k_ir = k_ir,
-                                           .diag = cs.diag, .lq = cs.lq, .rq = cs.rq};
         tirenv_springs__cc a;
-        assert_int_equal(tirenv_springs__cc_init(&a, N), 0);
-        a.f0 = (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
-        a.f1 = N - 1 - (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
-        a.n_schur = 0;
-        const double p_held = 0.02 + 0.4 * tirenv_test_uniform(&seed);
-        for (size_t e = a.f0; e <= a.f1; ++e)
-            a.wpos[e] = tirenv_test_uniform(&seed) < p_held ? SIZE_MAX : 0;
-        assert_int_equal(tirenv_springs__cc_schur_factor(&a, &T, 0), 0);
+        const size_t N = random_factor(&cs, &a, &seed);
         double *x = calloc(N + 2, sizeof *x), *y = calloc(N + 2, sizeof *y);
         assert_true(x && y);
         for (size_t e = a.f0; e <= a.f1; ++e)
@@ -859,22 +867,9 @@ static void test_chain_solve_pair_three_match(void **state)
     uint64_t seed = 0x5eedc0105ULL;
     size_t pairs = 0, threes = 0;
     for (int trial = 0; trial < 60; ++trial) {
-        const size_t N = 5 + (size_t)(300 * tirenv_test_uniform(&seed));
-        const double k_r = 1e5 * (0.3 + tirenv_test_uniform(&seed));
-        const double k_ir = k_r * pow(10, 4 * tirenv_test_uniform(&seed) - 1);
         chain_set cs;
-        chain_set_init(&cs, N, k_r, k_ir);
-        const tirenv_springs__cc_tire T = {.N = N, .R0 = 0.3, .k_r = k_r, .k_ir = k_ir,
-                                           .diag = cs.diag, .lq = cs.lq, .rq = cs.rq};
         tirenv_springs__cc a;
-        assert_int_equal(tirenv_springs__cc_init(&a, N), 0);
-        a.f0 = (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
-        a.f1 = N - 1 - (size_t)((double)(N / 3) * tirenv_test_uniform(&seed));
-        a.n_schur = 0;
-        const double p_held = 0.02 + 0.4 * tirenv_test_uniform(&seed);
-        for (size_t e = a.f0; e <= a.f1; ++e)
-            a.wpos[e] = tirenv_test_uniform(&seed) < p_held ? SIZE_MAX : 0;
-        assert_int_equal(tirenv_springs__cc_schur_factor(&a, &T, 0), 0);
+        const size_t N = random_factor(&cs, &a, &seed);
         double *x[3], *y[3];
         for (int i = 0; i < 3; ++i) {
             x[i] = calloc(N + 2, sizeof *x[i]);
@@ -887,11 +882,14 @@ static void test_chain_solve_pair_three_match(void **state)
             const size_t q2 = (size_t)((double)n_ch * tirenv_test_uniform(&seed));
             const size_t lo1 = ch[2 * q1], hi1 = ch[2 * q1 + 1], lo2 = ch[2 * q2],
                          hi2 = ch[2 * q2 + 1];
-            const size_t from1 = lo1 + (size_t)((double)(hi1 - lo1 + 1) * tirenv_test_uniform(&seed));
-            const size_t from2 = lo2 + (size_t)((double)(hi2 - lo2 + 1) * tirenv_test_uniform(&seed));
+            const size_t from1 =
+                lo1 + (size_t)((double)(hi1 - lo1 + 1) * tirenv_test_uniform(&seed));
+            const size_t from2 =
+                lo2 + (size_t)((double)(hi2 - lo2 + 1) * tirenv_test_uniform(&seed));
             const int unit = rep % 2;
             /* two chains apart in one array, or any two (the same one too) in two arrays */
-            double *b = q1 != q2 && rep % 3 == 0 ? x[0] : x[1], *rb = q1 != q2 && rep % 3 == 0 ? y[0] : y[1];
+            const int apart = q1 != q2 && rep % 3 == 0;
+            double *b = apart ? x[0] : x[1], *rb = apart ? y[0] : y[1];
             chain_rhs(x[0], lo1, from1, hi1, unit, &seed);
             chain_rhs(b, lo2, from2, hi2, unit, &seed);
             memcpy(y[0], x[0], (N + 2) * sizeof *x[0]);

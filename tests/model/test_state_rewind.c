@@ -117,7 +117,8 @@ static size_t check_sweep(const tirenv_model_type *type, const tirenv_tire *tire
             step(m, s, G0, k, &pt);
             if (!same_bits(&pt, &ref[k]))
                 fail_msg("%s over %s: step %zu after a state was taken differs from the plain "
-                         "run: h %.17g, %.17g", tirenv_model_type_name(type), s->what, k, pt.h, ref[k].h);
+                         "run: h %.17g, %.17g",
+                         tirenv_model_type_name(type), s->what, k, pt.h, ref[k].h);
             ++k;
             continue;
         }
@@ -132,7 +133,8 @@ static size_t check_sweep(const tirenv_model_type *type, const tirenv_tire *tire
                 if (!same_bits(&pt, &ref[j]))
                     fail_msg("%s over %s, a state taken before step %zu: step %zu %s differs "
                              "from the plain run: h %.17g, %.17g (dh %.3g m), F_x %.17g, "
-                             "%.17g, iterations %zu, %zu", tirenv_model_type_name(type), s->what, k, j,
+                             "%.17g, iterations %zu, %zu",
+                             tirenv_model_type_name(type), s->what, k, j,
                              pass == 0 ? "(the run on)" : pass == 1 ? "(restored)"
                                                                    : "(restored in the twin)",
                              pt.h, ref[j].h, pt.h - ref[j].h, pt.fx, ref[j].fx, pt.iterations,
