@@ -248,7 +248,8 @@ static int run_case(const tirenv_tire *tire0, size_t i, const tirenv_profile *pr
  * rigid's best moved by 1.8x between runs of one binary on a shared VM (20.0 M to 36.7 M
  * positions/s), the ratios with it. Within a round the three see the same machine, and the
  * median is not moved by a few rounds that caught a burst of load. */
-static const double round_min_s = 0.02; /* s of sweeps of each model a round */
+static double round_min_s = 0.02; /* s of sweeps of each model a round, at least two; 0 quick:
+                                   * one (the sanitizer build's cli test runs --quick) */
 static const size_t round_cases[3] = {0, 1, 4}; /* rigid, springs newton, ring */
 
 static int cleat_rounds(const tirenv_tire *tire, const tirenv_profile *prof, const double x[],
@@ -271,7 +272,8 @@ static int cleat_rounds(const tirenv_tire *tire, const tirenv_profile *prof, con
             const size_t i = (q + j) % 3;
             bench_result ri = r[round_cases[i]]; /* its load; run_once counts failures in it */
             double spent = 0, t;
-            for (int rep = 0; !code && (rep < 2 || spent < round_min_s); ++rep) {
+            for (int rep = 0; !code && (rep < (round_min_s > 0 ? 2 : 1) || spent < round_min_s);
+                 ++rep) {
                 code = run_once(m[i], prof, x, pt, ok, &ri, &t);
                 best[i] = fmin(best[i], t);
                 spent += t;
@@ -798,7 +800,7 @@ int cli_bench_main(int argc, char *argv[])
         return code;
     if (quick) {
         road_length = memory_length = 100.0;
-        sweep_min_s = 0;
+        sweep_min_s = round_min_s = 0;
     }
     if (repeat == 0)
         repeat = quick ? 1 : 5;
