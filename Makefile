@@ -60,7 +60,8 @@ test-slurm: build deps-test
 # Some tests take a stated smaller case there, the same code over fewer cases (the sanitizers
 # look for memory errors, not for the numbers, which the Release run checks in full):
 # test_ride_dynamic, test_onetire, test_fmt, cli_ring, cli_tir, cli_fifo, cli_roads,
-# cli_roads_grade and cli_stream_jobs (tests/CMakeLists.txt, TIRENV_TEST_SANITIZED).
+# cli_roads_grade and cli_stream_jobs (tests/CMakeLists.txt, TIRENV_TEST_SANITIZED); cli_fifo and
+# cli_sweep leave their whole study (its network's training) to the Release run.
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTIRENV_SANITIZE=ON \
 	    -DTIRENV_FUZZ=OFF '-DCMAKE_C_FLAGS_DEBUG=-g1 -O1' >/dev/null
