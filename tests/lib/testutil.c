@@ -321,6 +321,16 @@ int tirenv_test_nn_teardown(void **state)
     return 0;
 }
 
+uint64_t tirenv_test_fnv1a(const unsigned char *b, size_t n)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (size_t j = 0; j < n; ++j) {
+        h ^= b[j];
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
 double tirenv_test_uniform(uint64_t *state)
 {
     uint64_t z = (*state += 0x9e3779b97f4a7c15u);

@@ -20,6 +20,10 @@
  * from the library's (its state the caller's). */
 double tirenv_test_uniform(uint64_t *state);
 
+/* FNV-1a, 64 bits, of b[0..n-1], a byte at a time: the tests' own oracle for the model state's
+ * checksum (src/model/model_state.c takes runs of zeros at once). */
+uint64_t tirenv_test_fnv1a(const unsigned char *b, size_t n);
+
 /* A model's continuity in x at an obstacle's edges: m set on p, at each vertex of p and at two
  * positions 0.1 to 0.4 m either side of it (drawn from rng), the largest |h(x +- 1e-12) - h(x)|
  * (m) and |F_x(x +- 1e-12) - F_x(x)| (N), raising *dh_max and *dfx_max; returns the positions

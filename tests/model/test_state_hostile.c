@@ -18,11 +18,7 @@
 /* FNV-1a, 64 bits, of the bytes before the checksum, written in its place. */
 static void reseal(unsigned char *buf, size_t size)
 {
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (size_t j = 0; j + sizeof h < size; ++j) {
-        h ^= buf[j];
-        h *= 0x100000001b3ull;
-    }
+    const uint64_t h = tirenv_test_fnv1a(buf, size - sizeof h);
     memcpy(buf + size - sizeof h, &h, sizeof h);
 }
 

@@ -274,11 +274,8 @@ static void test_checksum_is_fnv1a(void **state)
         for (int k = 0; k < 3; ++k) {
             assert_int_equal(tirenv_model_eval(m, -0.4 + 0.2 * k, &pt, &d), TIRENV_OK);
             assert_int_equal(tirenv_model_state_save(m, buf, size, &d), TIRENV_OK);
-            uint64_t h = 0xcbf29ce484222325ull, sum;
-            for (size_t j = 0; j + sizeof sum < size; ++j) {
-                h ^= buf[j];
-                h *= 0x100000001b3ull;
-            }
+            uint64_t sum;
+            const uint64_t h = tirenv_test_fnv1a(buf, size - sizeof sum);
             memcpy(&sum, buf + size - sizeof sum, sizeof sum);
             if (sum != h)
                 fail_msg("%s at x = %g: the state's checksum %016llx is not the FNV-1a of its "
