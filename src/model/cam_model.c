@@ -552,9 +552,11 @@ static int cam_state_restore(void *state, const unsigned char *buf, tirenv_diag 
     buf = tirenv_model__get(buf, &st->G, sizeof st->G);
     buf = tirenv_model__get(buf, &st->z_flat, sizeof st->z_flat);
     tirenv_model__get(buf, &st->l_s, sizeof st->l_s);
-    if (!(st->l_s > 0) || !(st->G > 0))
+    if (!(st->l_s > 0 && isfinite(st->l_s)) || !(st->G > 0 && isfinite(st->G)) ||
+        !(st->z_flat > 0 && isfinite(st->z_flat)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
-                            "not a cam state (load %g N, tandem base %g m)", st->G, st->l_s);
+                            "not a cam state (its load %g N, flat-ground height %g m, tandem "
+                            "base %g m)", st->G, st->z_flat, st->l_s);
     return TIRENV_OK;
 }
 

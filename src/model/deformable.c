@@ -558,16 +558,34 @@ static void deformable_state_save(const void *state, unsigned char *buf)
     st->def->state_save(st->flat_elem, st->flat, 1, buf + st->def->state_size(st->elem, 0));
 }
 
+/* A state's bytes may have been changed by a host (docs/models.md section 1.7). What the
+ * answers are made of, the load (within the model's range) and the flat-ground point (level
+ * ground's answer), must be finite, or the state is refused. The history of equilibria only
+ * says where the next solve begins: one that is not finite is dropped for the cold start,
+ * whose answer meets the same tolerances. */
 static int deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
 {
     deformable_state *st = state;
     deformable_saved sv;
     buf = tirenv_model__get(buf, &sv, sizeof sv);
-    if (!(sv.G > 0) || !(sv.z_flat > 0) || (sv.have_prev != 0 && sv.have_prev != 1) ||
-        (sv.have_prev2 != 0 && sv.have_prev2 != 1))
+    if (!(sv.G > 0 && isfinite(sv.G)) || !(sv.z_flat > 0 && isfinite(sv.z_flat)) ||
+        (sv.have_prev != 0 && sv.have_prev != 1) || (sv.have_prev2 != 0 && sv.have_prev2 != 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a state of the %s model (load %g N, z_flat %g m)",
                             st->type->name, sv.G, sv.z_flat);
+    int status = load_in_range(st, sv.G, diag); /* every evaluation would refuse it */
+    if (status)
+        return status;
+    const tirenv_eq_point *f = &sv.flat_at;
+    if (!(isfinite(f->z) && isfinite(f->F) && isfinite(f->fx)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a state of the %s model (its flat-ground point: z %g m, F_z "
+                            "%g N, F_x %g N)",
+                            st->type->name, f->z, f->F, f->fx);
+    if (!(isfinite(sv.x_prev) && isfinite(sv.z_prev)))
+        sv.have_prev = sv.have_prev2 = 0;
+    if (!(isfinite(sv.x_prev2) && isfinite(sv.z_prev2)))
+        sv.have_prev2 = 0;
     st->G = sv.G;
     st->z_flat = sv.z_flat;
     st->prev.z1 = sv.z_prev;
@@ -577,7 +595,7 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
     st->prev.x2 = sv.x_prev2;
     st->prev.z2 = sv.z_prev2;
     st->prev.have2 = sv.have_prev2;
-    int status = st->def->state_restore(st->elem, st->prof, 0, buf);
+    status = st->def->state_restore(st->elem, st->prof, 0, buf);
     if (!status)
         status = st->def->state_restore(st->flat_elem, st->flat, 1,
                                         buf + st->def->state_size(st->elem, 0));

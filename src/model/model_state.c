@@ -173,7 +173,7 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
     if (print != m->tire_print)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "the state was saved from a model of another tire");
-    if (ready > 1 || (ready && !(load > 0 && isfinite(z_flat))))
+    if (ready > 1 || (ready && !(load > 0 && isfinite(load) && isfinite(z_flat))))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a saved model state (load %g N, z_flat %g m)", load, z_flat);
     if (!ready) {

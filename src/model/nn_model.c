@@ -502,6 +502,10 @@ static void nn_model_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &sv, sizeof sv);
 }
 
+/* The load is the answer's F_z and the flat-ground height its z: a state whose bytes a host
+ * changed into values no set could give (not finite, not positive) is refused, and so is a
+ * pinned contact length (which a set at its load takes in place of the regime's); the
+ * network then checks the contact length as it would a new one. */
 static int nn_model_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
 {
     nn_state *st = state;
@@ -510,6 +514,13 @@ static int nn_model_state_restore(void *state, const unsigned char *buf, tirenv_
     if (!st->nn || !(st->cleat || st->road))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "the nn model has no network and profile to restore onto");
+    if (!(sv.load > 0 && isfinite(sv.load)) || !(sv.l_c > 0 && isfinite(sv.l_c)) ||
+        !(sv.z_flat > 0 && isfinite(sv.z_flat)) ||
+        (sv.pinned && !(sv.pin_l_c > 0 && isfinite(sv.pin_l_c))))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a state of the nn model (its load %g N, contact length %g m, "
+                            "flat-ground height %g m, pinned contact length %g m)",
+                            sv.load, sv.l_c, sv.z_flat, sv.pin_l_c);
     const int status = nn_model_apply(st, sv.load, sv.l_c, sv.z_flat, diag);
     if (status)
         return status;

@@ -754,13 +754,29 @@ void tirenv_ring__state_restore(tirenv_ring *r, const unsigned char *buf)
                tread_doubles(r) * sizeof *r->w);
     if (root_bytes(r))
         memcpy(&r->root, buf + (M + tread_doubles(r)) * sizeof *r->w, sizeof r->root);
-    int finite = 1; /* damaged bytes: no warm start rather than a NaN one */
+    /* Damaged bytes (a host's: docs/models.md section 1.7): no warm start rather than a NaN
+     * one, or one whose node states are none of the four. A state byte with other bits set
+     * passed the pivoting's checks as a tread in contact while its system left the node free:
+     * the rays' answer came out a centimetre off, as if converged. Outside the window every
+     * node is FREE, as the rays' solve leaves them (the continuous contact, all of them). */
+    int ok = r->warm_lo <= M && r->warm_n <= M - r->warm_lo;
+    if (ok) { /* the bits no state has, or'ed over the nodes (one loop each, no branches) */
+        const size_t w0 = r->warm_lo, w1 = w0 + r->warm_n;
+        unsigned char stray = 0;
+        for (size_t j = 0; j < w0; ++j)
+            stray |= r->warm[j];
+        for (size_t j = w0; j < w1; ++j)
+            stray |= r->warm[j] & (unsigned char)~(T_BASIC | B_BASIC);
+        for (size_t j = w1; j < M; ++j)
+            stray |= r->warm[j];
+        ok = !stray;
+    }
     const double *u = warm_fields(r) == 2 ? tirenv_ring__tread_u(r->tread) : NULL;
     for (size_t j = 0; j < M && warm_fields(r) >= 1; ++j)
-        finite &= isfinite(r->w[j]);
+        ok &= isfinite(r->w[j]);
     for (size_t j = 0; u && j < tread_doubles(r); ++j)
-        finite &= isfinite(u[j]);
-    if (!finite || !(r->warm_lo <= M && r->warm_n <= M - r->warm_lo)) {
+        ok &= isfinite(u[j]);
+    if (!ok) {
         r->warm_lo = r->warm_n = 0;
         memset(r->warm, FREE, M);
         for (size_t j = 0; j < M; ++j)
