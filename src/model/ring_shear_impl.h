@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the ring's shear-coupled tread (docs/models.md section 5.3): its state, which the
- * equilibrium (ring_shear.c) and the condensation of the window's exterior (ring_exterior.c)
- * share, and what each calls of the other. */
+ * equilibrium (ring_shear.c), the condensation of the window's exterior (ring_exterior.c) and
+ * the knots (ring_knots.c) share, and what each calls of the others. */
 #ifndef TIRENV_RING_SHEAR_IMPL_H
 #define TIRENV_RING_SHEAR_IMPL_H
 
@@ -143,5 +143,27 @@ void tirenv_ring__fill_free(const tirenv_ring *r, size_t a, size_t b, double v[]
 double tirenv_ring__outside_sub(const tirenv_ring *r, size_t a, size_t b, const double xw[],
                                 size_t *j_out);
 double tirenv_ring__outside_whole(tirenv_ring *r, const double xw[], size_t *j_out);
+
+/* The knots (ring_knots.c). */
+/* The knots of r's window's points: T->m, each point's knot, their intervals and stiffness.
+ * Nonzero if out of memory. */
+int tirenv_ring__find_knots(tirenv_ring *r);
+/* The knots condensed out of the assembled system (T->as): nonzero if their block is not
+ * positive definite. */
+int tirenv_ring__condense_knots(tirenv_ring_tread *T);
+/* The knots' right-hand side eliminated from the band's rows of x (2 n + m entries). */
+void tirenv_ring__knots_eliminate(tirenv_ring *r, double x[]);
+/* The full system's solve after that: the band's (its forward substitution done with the
+ * factorisation if fused), then the knots'. */
+void tirenv_ring__solve_after(tirenv_ring *r, double x[], int fused);
+/* The full system's solve, x (2 n + m entries) overwritten. */
+void tirenv_ring__solve_full(tirenv_ring *r, double x[]);
+/* rhs -= (dK_knots/dz) a at the solution x: the knots' stiffness moving with them. */
+void tirenv_ring__knots_moving(const tirenv_ring *r, const double x[], double rhs[]);
+
+/* The tread's storage (ring_shear.c). */
+/* Room for m knots (the driver's vectors, 2 M + m each, and the knots' arrays); nonzero if out
+ * of memory. */
+int tirenv_ring__reserve_knots(tirenv_ring_tread *T, size_t m);
 
 #endif
