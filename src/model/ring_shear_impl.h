@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the ring's shear-coupled tread (docs/models.md section 5.3): its state, which the
- * equilibrium (ring_shear.c), the condensation of the window's exterior (ring_exterior.c) and
- * the knots (ring_knots.c) share, and what each calls of the others. */
+ * equilibrium (ring_shear.c), the condensation of the window's exterior (ring_exterior.c), the
+ * knots (ring_knots.c) and the tests' hooks (ring_shear_probe.c) share, and what each calls of
+ * the others. */
 #ifndef TIRENV_RING_SHEAR_IMPL_H
 #define TIRENV_RING_SHEAR_IMPL_H
 
@@ -161,9 +162,13 @@ void tirenv_ring__solve_full(tirenv_ring *r, double x[]);
 /* rhs -= (dK_knots/dz) a at the solution x: the knots' stiffness moving with them. */
 void tirenv_ring__knots_moving(const tirenv_ring *r, const double x[], double rhs[]);
 
-/* The tread's storage (ring_shear.c). */
+/* The tread's storage and its window's assembly (ring_shear.c). */
 /* Room for m knots (the driver's vectors, 2 M + m each, and the knots' arrays); nonzero if out
  * of memory. */
 int tirenv_ring__reserve_knots(tirenv_ring_tread *T, size_t m);
+/* The window's arc of n nodes from lo as tirenv_ring__add_arc gives it on a zeroed matrix,
+ * written into A (its tail's fresh columns left unset), and rhs's 2 n entries zeroed. */
+void tirenv_ring__fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n,
+                              double rhs[]);
 
 #endif
