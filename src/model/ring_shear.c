@@ -35,7 +35,12 @@
  * and a tends to the nodal (merged) value, so everything stays continuous in x. The unknowns
  * are the 2 n interleaved ones and then the m knots; the knots are condensed out of each
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
- * the banded system keeps its bandwidth. */
+ * the banded system keeps its bandwidth.
+ *
+ * This file holds the equilibrium: the tread's storage, the window's assembly, the Newton
+ * driver's callbacks, the windows and sub-windows, the forces and dF_z/dz. The banded
+ * factorisation is ring_tband.c's, the exterior's condensation ring_exterior.c's, the knots'
+ * ring_knots.c's and the tests' hooks ring_shear_probe.c's (ring_shear_impl.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
