@@ -60,7 +60,7 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
 
 /* The window's stiffness of the last evaluation (nodes r->lo .. r->lo + r->n - 1), dense, as
  * assemble starts it (fill_window, by_arc 0) or as add_arc writes it on a zeroed matrix (by_arc
- * 1): the two ways this file writes an arc, which must agree bit for bit. K[i N + k] = K_ik for
+ * 1): the two ways the tread writes an arc, which must agree bit for bit. K[i N + k] = K_ik for
  * k <= i, zero above the diagonal (N = 2 n). For tests (it allocates); nonzero if out of memory,
  * the window is too short for the tail (n < 2) or fill_window left an entry of its right-hand
  * side (NaN before) other than zero. */
