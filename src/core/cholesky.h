@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the core: Cholesky factorisation and solve of a small dense symmetric positive
- * definite matrix (the LM trainer's normal equations, ring_shear.c's dense tail). */
+ * definite matrix (the LM trainer's normal equations, ring_tband.c's dense tail). */
 #ifndef TIRENV_CORE_CHOLESKY_H
 #define TIRENV_CORE_CHOLESKY_H
 

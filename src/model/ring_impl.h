@@ -23,7 +23,7 @@
 typedef struct tirenv_ring_belt tirenv_ring_belt;
 
 /* Equal bits (not ==, which equates 0 and -0): n doubles. The ring reuses work where its
- * inputs are the same bits as last time (ring_ground.c's points, ring_shear.c's factor). */
+ * inputs are the same bits as last time (ring_ground.c's points, ring_tband.c's factor). */
 static inline int tirenv_ring__same_bits(const double *a, const double *b, size_t n)
 {
     return memcmp(a, b, n * sizeof *a) == 0;
@@ -116,7 +116,7 @@ typedef struct {
     double k_t;            /* tread stiffness there, N/m^2 (lugs included) */
     size_t j;              /* the interval's first node */
     long knot;             /* the shear-coupled tread's knot at the point in the last solve's
-                            * knots (ring_shear.c), -1: none (a point at a node) */
+                            * knots (ring_knots.c), -1: none (a point at a node) */
     unsigned char st;      /* 0 free, 1 tread, 2 tread and the belt beneath it */
     unsigned char ends;    /* the pieces it ends: 1 it begins the piece to pts[k + 1], 2 it
                             * ends the one from pts[k - 1], 3 both (two pieces' ends on one
@@ -446,16 +446,16 @@ int tirenv_ring__tread_exterior(const tirenv_ring *r, double w_out[], double u_o
 int tirenv_ring__tread_window(const tirenv_ring *r, int by_arc, double K[]);
 
 /* For tests: the last factorisation's system (m band rows), its diagonal changed from column c
- * on, factorised again by ring_shear.c's restart from a checkpoint and from the start; 0 if the
+ * on, factorised again by ring_tband.c's restart from a checkpoint and from the start; 0 if the
  * same bits, 1 if not, -1 if it cannot. *q the restart's column, *moved 1 if column c moved. */
 int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m, size_t *q, int *moved);
 
-/* For tests: the last factorised system factorised by ring_shear.c's baseline and AVX2 builds;
+/* For tests: the last factorised system factorised by ring_tband.c's baseline and AVX2 builds;
  * 0 if the same bits, 1 if not, -1 if it cannot. *avx2 1 if the AVX2 build ran. */
 int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2);
 
 /* For tests: the last factorised system's solve with its forward substitution in the
- * factorisation's pass (ring_shear.c's band_factor_x), whole and restarted at each checkpoint,
+ * factorisation's pass (ring_tband.c's band_factor_x), whole and restarted at each checkpoint,
  * against its factorisation and then its solve, for a pseudo-random right-hand side from seed
  * with lead leading +0 rows and its tail entry neg0 (< 4; else none) -0; 0 if the same bits,
  * 1 if not, -1 if it cannot. *fused 1 if the fused pass ran, *n_restarts the restarts. */
@@ -466,7 +466,7 @@ int tirenv_ring__tread_fused_solve(const tirenv_ring *r, unsigned long seed, siz
  * side from seed: the residual max |b - A x| / (max row sum of |A| * max |x|); -1 if it cannot. */
 double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long seed);
 
-/* For tests: the last factor's solve (ring_shear.c's band_solve, which starts the forward
+/* For tests: the last factor's solve (ring_tband.c's band_solve, which starts the forward
  * substitution at the first row that is not +0) of a right-hand side with lead leading +0 rows,
  * pseudo-random from seed, its tail entry neg0 (< 4; else none) and with lead_neg0 its row lead
  * -0, against the forward substitution from row 0; 0 if the same bits, 1 if not, -1 if it
@@ -474,7 +474,7 @@ double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long see
 int tirenv_ring__tread_solve_zeros(const tirenv_ring *r, unsigned long seed, size_t lead,
                                    size_t neg0, int lead_neg0);
 
-/* For tests: the exterior's six columns for a window of n nodes from ring_shear.c's shared
+/* For tests: the exterior's six columns for a window of n nodes from ring_exterior.c's shared
  * factor of the longest exterior, solved in lanes, against that exterior's own factorisation
  * and full solves, the baseline build's lanes and the columns one at a time, and its end
  * correction from each and without the columns; 0 if the same bits, 1 if not, -1 if it cannot

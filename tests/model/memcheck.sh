@@ -1,7 +1,7 @@
 #!/bin/sh
 # Memcheck over the deformable models' sweeps: no value computed from memory that was never
 # written. The ring's Newton driver read entries of its vectors it never wrote (knots made for
-# corners outside the contact window, src/model/ring_shear.c find_knots); a fresh mapping gave
+# corners outside the contact window, src/model/ring_knots.c find_knots); a fresh mapping gave
 # zeros (the CLI), reused heap garbage (Python, once NumPy's freed arrays had raised malloc's
 # mmap threshold), and NaN garbage failed a sweep the CLI had computed. The vectors are left
 # unzeroed so that memcheck sees such a read (zeroed, it saw none while the read stayed). The

@@ -851,7 +851,7 @@ static void evaluate_at(tirenv_ring *r, const tirenv_profile *p, double R0, size
     assert_int_equal(tirenv_ring_forces(r, p, case_x[i], z, &fx, &fz, &dfz, NULL, NULL), 0);
 }
 
-/* The factor's restart from a checkpoint (ring_shear.c's band_refactor: the columns before the
+/* The factor's restart from a checkpoint (ring_tband.c's band_refactor: the columns before the
  * last multiple of 16 whose four pending columns lie before the first changed one kept, those
  * columns' entries and the tail block's accumulators taken from that column's checkpoint)
  * against a factorisation from column 0, bit for bit: on the system of the default tire's last
@@ -898,7 +898,7 @@ static void test_refactor_restart(void **state)
     tirenv_ring_free(r);
 }
 
-/* The window's factorisation compiled for AVX2 (ring_shear.c's band_factor_avx2: four-lane
+/* The window's factorisation compiled for AVX2 (ring_tband.c's band_factor_avx2: four-lane
  * vectors, the tail block's rows carried whole) against the baseline build, bit for bit, the
  * factor and its checkpoints: on the last Newton step's system at the bench cleat's positions
  * and five heights each. It fails if a lane's operation differs between the builds (a reordered
@@ -928,7 +928,7 @@ static void test_factor_isa_same_bits(void **state)
     tirenv_ring_free(r);
 }
 
-/* The Newton step's forward substitution run in the factorisation's pass (ring_shear.c's
+/* The Newton step's forward substitution run in the factorisation's pass (ring_tband.c's
  * band_factor_x, band_solve_rest) against the factorisation and then the solve (band_solve),
  * bit for bit, the solution and the factor: on the last Newton step's system at the bench
  * cleat's positions and five heights each, from column 0 and restarted at every checkpoint,
@@ -971,7 +971,7 @@ static void test_fused_solve_same_bits(void **state)
     tirenv_ring_free(r);
 }
 
-/* The window's banded U D U^T factor (ring_shear.c's band_factor_from, band_refactor) solves its
+/* The window's banded U D U^T factor (ring_tband.c's band_factor_from, band_refactor) solves its
  * system backward-stably: at the bench cleat's positions and five heights each, after each
  * evaluation, the last Newton step's system solved for three pseudo-random right-hand sides
  * has max |b - A x| within 1e-14 of max row sum |A| * max |x| (the contact layer's 1e4 k_t
@@ -1008,7 +1008,7 @@ static void test_solve_residual(void **state)
     tirenv_ring_free(r);
 }
 
-/* The window's solve from the first row of its right-hand side that is not +0 (ring_shear.c's
+/* The window's solve from the first row of its right-hand side that is not +0 (ring_tband.c's
  * band_solve) against the forward substitution from row 0, bit for bit: after evaluations over
  * the bench cleat, right-hand sides with 0, 1, 3, 4, 5, 9, 37, 100 and all of the band's rows
  * +0 first (the skipped rows before the four-row loop, at its start and past it), each with a
@@ -1214,7 +1214,7 @@ static void test_deferred_slope(void **state)
     assert_int_equal(same, 4 * 24 * 3);
 }
 
-/* The exterior's six columns of K_EE^-1 (ring_shear.c's compute_end: the end correction and the
+/* The exterior's six columns of K_EE^-1 (ring_exterior.c's compute_end: the end correction and the
  * free nodes) from one factorisation of the longest exterior, M - 1 nodes, shared by every
  * window length, with its kept forward substitutions of the first three unit vectors and the
  * others' leading zeros skipped, the six solved together in lanes (the AVX2 build's where the
