@@ -11,6 +11,16 @@
 #include "model/ring_tband.h"
 #include "tirenv/rng.h"
 
+/* X := the system P (its N, t and m = N - t band rows), into X's own storage. */
+static void copy_system(tband *X, const tband *P)
+{
+    const size_t m = P->N - P->t;
+    X->N = P->N, X->t = P->t;
+    memcpy(X->L, P->L, (BAND_P + 1) * m * sizeof *X->L);
+    memcpy(X->B, P->B, TAIL * m * sizeof *X->B);
+    memcpy(X->T, P->T, sizeof X->T);
+}
+
 /* The belt's w outside the window of the last evaluation: the exterior's unloaded (w, u) that
  * the window's ends hold, -K_EE^-1 K_EW x_B, solved afresh (diagnostics only: it allocates).
  * Writes w_out for every node outside the window; nonzero if out of memory. */
@@ -135,16 +145,10 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     if (tirenv_ring__tband_alloc(&X, N, TAIL))
         return -1;
     const double old_c = F->L[W * c];
-    S->N = N, S->t = t;
-    memcpy(S->L, P->L, W * m * sizeof *S->L);
-    memcpy(S->B, P->B, TAIL * m * sizeof *S->B);
-    memcpy(S->T, P->T, sizeof S->T);
+    copy_system(S, P);
     for (size_t i = c; i < m; ++i)
         S->L[W * i] *= 1 + 0x1p-10;
-    X.N = N, X.t = t;
-    memcpy(X.L, S->L, W * m * sizeof *X.L);
-    memcpy(X.B, S->B, TAIL * m * sizeof *X.B);
-    memcpy(X.T, S->T, sizeof X.T);
+    copy_system(&X, S);
     *q = 0;
     if (m > 2 * CKS + BAND_P) {
         const size_t p = tirenv_ring__tband_first_change(S, P, m);
@@ -186,12 +190,8 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
                      tirenv_ring__tband_alloc(&X[1], N, TAIL)
                  ? -1
                  : 0;
-    for (int k = 0; k < 2 && st == 0; ++k) {
-        X[k].N = N, X[k].t = t;
-        memcpy(X[k].L, P->L, W * m * sizeof *X[k].L);
-        memcpy(X[k].B, P->B, TAIL * m * sizeof *X[k].B);
-        memcpy(X[k].T, P->T, sizeof X[k].T);
-    }
+    for (int k = 0; k < 2 && st == 0; ++k)
+        copy_system(&X[k], P);
     if (st == 0) {
         st = tirenv_ring__tband_factor_base(&X[0], 1, 0, NULL, ck, NULL) != 0 ? -1 : 0;
 #if TIRENV_RING_AVX2
@@ -245,10 +245,7 @@ int tirenv_ring__tread_fused_solve(const tirenv_ring *r, unsigned long seed, siz
             b[i] = i < lead ? 0 : 2 * tirenv_rng_uniform(rng) - 1;
         if (neg0 < TAIL)
             b[m + neg0] = -0.0;
-        X.N = N, X.t = t;
-        memcpy(X.L, P->L, W * m * sizeof *X.L);
-        memcpy(X.B, P->B, TAIL * m * sizeof *X.B);
-        memcpy(X.T, P->T, sizeof X.T);
+        copy_system(&X, P);
         st = tirenv_ring__tband_factor_from(&X, 1, 0, NULL, ck, NULL) != 0 ? -1 : 0;
     }
     if (st == 0) {
@@ -260,9 +257,7 @@ int tirenv_ring__tread_fused_solve(const tirenv_ring *r, unsigned long seed, siz
         Y.N = N, Y.t = t;
         const double *acc = NULL;
         if (q == 0) {
-            memcpy(Y.L, P->L, W * m * sizeof *Y.L);
-            memcpy(Y.B, P->B, TAIL * m * sizeof *Y.B);
-            memcpy(Y.T, P->T, sizeof Y.T);
+            copy_system(&Y, P);
         } else {
             if (q + BAND_P >= m - BAND_P)
                 break;
