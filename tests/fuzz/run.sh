@@ -1,6 +1,6 @@
 #!/bin/sh
 # Runs one libFuzzer harness for a while: tests/fuzz/run.sh HARNESS SEED_CORPUS WORK_DIR [SECONDS]
-# (SECONDS default $FUZZ_SECONDS, else 3: the smoke test of make test; make fuzz
+# (SECONDS default $FUZZ_SECONDS, else 1: the smoke test of make test; make fuzz
 # FUZZ_SECONDS=N runs longer). New inputs go to WORK_DIR/corpus, never into the repository's
 # seed corpus; a crash, leak, hang (10 s per input) or sanitizer report writes its input to
 # WORK_DIR and fails, naming the file to reproduce it with (HARNESS FILE).
@@ -11,7 +11,7 @@ if [ $# -lt 3 ]; then
     exit 2
 fi
 harness=$1 seeds=$2 work=$3
-seconds=${4:-${FUZZ_SECONDS:-3}}
+seconds=${4:-${FUZZ_SECONDS:-1}}
 name=$(basename "$harness")
 mkdir -p "$work/corpus" || exit 2
 rm -f "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* "$work/log"
