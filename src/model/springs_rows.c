@@ -178,6 +178,9 @@ static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 #define SCAN_LOOP static
 #endif
 
+/* The scans at one x that run without proofs (vertex_rows). */
+enum { scans_unproven = 2 };
+
 /* How far the centre may move from the height of a vertex's proof, as a fraction of the
  * vertex's depth dz_r below it: within it rho stays above (1 - seen_reach) rho_r. */
 static const double seen_reach = 0.01;
@@ -663,14 +666,14 @@ static tirenv_springs__cc_row *prove_vertex(const scan_ctx *C, size_t g, size_t 
     return put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, out);
 }
 
-/* The vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1], in the sectors' range
- * [a1, b1] (vertex_rows); sec: room for 3 N doubles; blind: every guess the range's first
- * sector (the tests' scan_blind). The rows go to out, the new end returned; [*lo, *hi]: the
- * sectors of every proof among them, within [0, N - 2]; *missed: the vertices within reach
- * whose sector the guess missed. */
+/* The vertices j0 .. j0 + n - 1, with proofs their proofs at seen[0 .. n - 1] (else only
+ * their rows), in the sectors' range [a1, b1] (vertex_rows); sec: room for 3 N doubles;
+ * blind: every guess the range's first sector (the tests' scan_blind). The rows go to out,
+ * the new end returned; [*lo, *hi]: the sectors of every proof among them, within
+ * [0, N - 2]; *missed: the vertices within reach whose sector the guess missed. */
 SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_t b1,
-                                             int blind, double *sec, size_t j0, size_t n,
-                                             tirenv_springs__cc_seen seen[],
+                                             int blind, int proofs, double *sec, size_t j0,
+                                             size_t n, tirenv_springs__cc_seen seen[],
                                              tirenv_springs__cc_row *out, size_t *lo,
                                              size_t *hi, size_t *missed)
 {
@@ -695,18 +698,65 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_
         const size_t m = n - q0 < PROVE_BLOCK ? n - q0 : PROVE_BLOCK;
         prove_guess(C, &G, j0 + q0, m, &B);
         /* the proofs, and the few vertices the guess did not prove dropped */
-        tirenv_springs__cc_seen *const e = seen + q0;
-        for (size_t k = 0; k < m; ++k) {
-            e[k] = (tirenv_springs__cc_seen){.margin = B.margin[k], .m_t = B.m_t[k],
-                                             .i = (size_t)B.g[k]};
-            if (!(B.m_t[k] > 0))
-                out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &e[k], out, &v_lo, &v_hi,
-                                   missed);
+        if (proofs) {
+            tirenv_springs__cc_seen *const e = seen + q0;
+            for (size_t k = 0; k < m; ++k) {
+                e[k] = (tirenv_springs__cc_seen){.margin = B.margin[k], .m_t = B.m_t[k],
+                                                 .i = (size_t)B.g[k]};
+                if (!(B.m_t[k] > 0))
+                    out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &e[k], out, &v_lo,
+                                       &v_hi, missed);
+            }
+        } else {
+            tirenv_springs__cc_seen none; /* only the rows */
+            for (size_t k = 0; k < m; ++k)
+                if (!(B.m_t[k] > 0))
+                    out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &none, out, &v_lo,
+                                       &v_hi, missed);
         }
     }
     *lo = v_lo;
     *hi = v_hi < N - 2 ? v_hi : N - 2;
     return out;
+}
+
+/* The sectors' numbers of the proofs made at z_r = c->seen_z with the span [a, b] and the
+ * penetrations d there: the chords (sA, sD), the bounds on a proven vertex's |dt/dz| (sT)
+ * and on its depth (sZ) over the sectors c->seen_lo .. c->seen_hi (vertex_rows' comment). */
+static void seen_sectors(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                         const tirenv_profile *p, size_t a, size_t b, const double d[])
+{
+    const size_t N = T->N, seen_lo = c->seen_lo, seen_hi = c->seen_hi;
+    const double R0 = T->R0, ab_lo = T->ab_lo, tau_dev = T->tau_dev;
+    const double *const st = T->sin_t, *const ct = T->cos_t;
+    const double tol = seen_tol(p, R0, c->seen_z);
+    const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
+    double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
+    double *const sZ = sT + N;
+    const double B = 1 + 0.25 * ab_lo; /* the bow's largest */
+    double Pl = pen(seen_lo, a, b, d);
+    for (size_t q = seen_lo; q <= seen_hi; ++q) {
+        const double Pr = pen(q + 1, a, b, d);
+        sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
+        sD[q] = Pr - Pl;
+        /* A vertex proven in sector q was dropped: h <= thr <= max(P_l, P_r) B, so
+         * rho >= rho_lo = R0 - max(P_l, P_r) B (less an allowance), and its angle psi
+         * lies between the sector's rays and below the centre, in (-pi/2, pi/2), where
+         * |sin(psi)| is at most the larger of the rays' (if both point below the
+         * horizontal; else 1): the vertex's |dx| / rr = |sin(psi)| / rho is at most
+         * s_max / rho_lo, the same for the whole sector and with no division a vertex.
+         * Rounding far inside 1e-12. No bound (infinite: nothing proven) if rho_lo <= 0. */
+        const double rho_lo = (R0 - (Pl > Pr ? Pl : Pr) * B) * (1 - 1e-12) - tol;
+        const double s_l = fabs(st[q]), s_r = fabs(st[q + 1]); /* fmax's, no call */
+        const double s_max = ct[q] > 0 && ct[q + 1] > 0 ? (s_l > s_r ? s_l : s_r) : 1;
+        sT[q] = rho_lo > 0 ? dt_dz_of * s_max / rho_lo * (1 + 1e-12) : INFINITY;
+        /* its depth rho cos(psi) at least rho_lo times the smaller of the rays' cosines
+         * (cos is concave there); 0 (nothing proven) where a ray is not below the
+         * horizontal or rho_lo <= 0 */
+        const double c_min = ct[q] < ct[q + 1] ? ct[q] : ct[q + 1];
+        sZ[q] = rho_lo > 0 && c_min > 0 ? rho_lo * c_min * (1 - 1e-12) : 0;
+        Pl = Pr;
+    }
 }
 
 /* The vertex rows: every ground vertex below the centre's height, within
@@ -767,22 +817,27 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     }
     if (reserve_vrows(c, j_end - j0))
         return TIRENV_ENOMEM;
-    /* The proofs: made here at a new x (or profile), used at the same x within the run they
-     * cover, else neither. */
+    /* Where the vertices outnumber the sectors (a road sampled finely) the scan guesses their
+     * sectors (scan_prove), and the scans at one x after the first scans_unproven there use
+     * proofs, made by the scan that follows those, where they cover its run; elsewhere the
+     * scan walks as it did (the same rows every way). The proofs cost a few sectors' work
+     * and a pass over the vertices to make, and pay only over the scans after: at most x
+     * see one or two scans (the later evaluations there take the tangent's update). */
     const int same_x = c->seen_serial == p->serial && c->seen_x == x;
-    /* Proofs pay where the vertices outnumber the sectors (a road sampled finely): they cost
-     * a few sectors' work an evaluation whatever the vertices, and a vertex's proof a
-     * third of its row's test; elsewhere the scan runs as it did (the same rows either
-     * way). */
-    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1) && !c->scan_plain;
-    const int reuse = same_x && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
-    if (!same_x)
-        c->seen_serial = 0; /* no proofs at this x, unless made now */
-    if (prove) {
-        if (reserve_seen(c, j_end - j0, N))
-            return TIRENV_ENOMEM;
+    if (!same_x) {
         c->seen_serial = p->serial;
         c->seen_x = x;
+        c->seen_scans = 0;
+        c->seen_made = 0; /* no proofs at this x, unless made below */
+    }
+    const int guess = j_end - j0 >= 2 * (b1 - a1 + 1) && !c->scan_plain;
+    const int reuse = c->seen_made && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
+    const int prove = guess && !c->seen_made &&
+                      (c->scan_eager || c->seen_scans >= scans_unproven);
+    c->seen_scans += c->seen_scans < scans_unproven;
+    if (guess && !reuse && reserve_seen(c, j_end - j0, N))
+        return TIRENV_ENOMEM;
+    if (prove) {
         c->seen_z = z;
         c->seen_j0 = j0;
         c->seen_n = j_end - j0;
@@ -796,8 +851,6 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     if (reuse)
         n_todo = seen_todo(c, T, p, z, a, b, d, j0, j_end, todo, &skipped);
 
-    const double tol = seen_tol(p, R0, z);
-    const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
                         .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .N = N, .a = a,
@@ -807,46 +860,22 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * the walk from i0 crossed half the span over a cleat) */
     scan_state S = {.i = c->scan_i < N ? c->scan_i : T->i0, .ci = SIZE_MAX, .out = c->vrows};
     size_t seen_lo = N, seen_hi = 0, missed = 0;
-    if (prove)
-        S.out = scan_prove(&C, a1, b1, c->scan_blind, c->seen_sec + 4 * N, j0, n_todo, seen,
-                           S.out, &seen_lo, &seen_hi, &missed);
-    else if (reuse)
+    if (reuse)
         scan_list(&C, &S, todo, seen, c->seen_j0, n_todo);
+    else if (guess)
+        S.out = scan_prove(&C, a1, b1, c->scan_blind, prove, c->seen_sec + 4 * N, j0, n_todo,
+                           seen, S.out, &seen_lo, &seen_hi, &missed);
     else
         scan_all(&C, &S, j0, j_end, &c->scan_i);
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
     c->scan_missed = missed;
-    if (prove) { /* the sectors' chords at z_r, their bounds on |dt/dz| and on depth (sZ) */
+    if (prove) {
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;
-        double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
-        double *const sZ = sT + N;
-        const double B = 1 + 0.25 * ab_lo; /* the bow's largest */
-        double Pl = pen(seen_lo, a, b, d);
-        for (size_t q = seen_lo; q <= seen_hi; ++q) {
-            const double Pr = pen(q + 1, a, b, d);
-            sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
-            sD[q] = Pr - Pl;
-            /* A vertex proven in sector q was dropped: h <= thr <= max(P_l, P_r) B, so
-             * rho >= rho_lo = R0 - max(P_l, P_r) B (less an allowance), and its angle psi
-             * lies between the sector's rays and below the centre, in (-pi/2, pi/2), where
-             * |sin(psi)| is at most the larger of the rays' (if both point below the
-             * horizontal; else 1): the vertex's |dx| / rr = |sin(psi)| / rho is at most
-             * s_max / rho_lo, the same for the whole sector and with no division a vertex.
-             * Rounding far inside 1e-12. No bound (infinite: nothing proven) if rho_lo <= 0. */
-            const double rho_lo = (R0 - (Pl > Pr ? Pl : Pr) * B) * (1 - 1e-12) - tol;
-            const double s_l = fabs(st[q]), s_r = fabs(st[q + 1]); /* fmax's, no call */
-            const double s_max = ct[q] > 0 && ct[q + 1] > 0 ? (s_l > s_r ? s_l : s_r) : 1;
-            sT[q] = rho_lo > 0 ? dt_dz_of * s_max / rho_lo * (1 + 1e-12) : INFINITY;
-            /* its depth rho cos(psi) at least rho_lo times the smaller of the rays' cosines
-             * (cos is concave there); 0 (nothing proven) where a ray is not below the
-             * horizontal or rho_lo <= 0 */
-            const double c_min = ct[q] < ct[q + 1] ? ct[q] : ct[q + 1];
-            sZ[q] = rho_lo > 0 && c_min > 0 ? rho_lo * c_min * (1 - 1e-12) : 0;
-            Pl = Pr;
-        }
+        seen_sectors(c, T, p, a, b, d);
+        c->seen_made = 1;
     }
     return TIRENV_OK;
 }
