@@ -562,6 +562,7 @@ typedef struct {
 typedef struct {
     int g[PROVE_BLOCK];
     double margin[PROVE_BLOCK], m_t[PROVE_BLOCK];
+    long open; /* the vertices with m_t 0 */
 } prove_block;
 
 
@@ -579,6 +580,7 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
     const double x = C->x, z = C->z, R0 = C->R0, R0sq = C->R0sq, ab_lo = C->ab_lo;
     const double theta_0 = G->theta_0, inv_dphi = G->inv_dphi;
     const double g_lo = G->g_lo, g_hi = G->g_hi;
+    long open = 0;
     for (size_t k = 0; k < m; ++k) {
         /* atan(r), |r| <= 1, within 2e-8 rad (Abramowitz and Stegun 4.4.49), in Estrin's
          * order: a guess only, checked below; NaN or far off where dz <= 0, then clamped */
@@ -610,7 +612,9 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
                          (t > t_snap) & !(h > thr);
         B->m_t[k] = drop ? (t < omt ? t : omt) : 0;
         B->margin[k] = thr - h;
+        open += !drop;
     }
+    B->open = open;
 }
 
 /* Vertex j, which the guess did not prove dropped (out of reach, a row, or its sector
@@ -680,13 +684,13 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_
     const size_t N = C->N;
     const double *const st = C->st, *const ct = C->ct;
     const size_t g_lo = a1 < N - 2 ? a1 : N - 2, g_hi = b1 < N - 2 ? b1 : N - 2;
-    /* each sector's penetrations and slack, as the walk takes them (pen) */
-    double *const P_l = sec, *const P_r = sec + N, *const slack = sec + 2 * N;
-    for (size_t q = g_lo; q <= g_hi; ++q) {
+    /* each sector's penetrations and slack, as the walk takes them (pen): sector q's P_r is
+     * sector q + 1's P_l, so one array read at q and at q + 1 */
+    double *const P_l = sec, *const P_r = sec + 1, *const slack = sec + 2 * N;
+    for (size_t q = g_lo; q <= g_hi + 1; ++q)
         P_l[q] = pen(q, C->a, C->b, C->d);
-        P_r[q] = pen(q + 1, C->a, C->b, C->d);
+    for (size_t q = g_lo; q <= g_hi; ++q)
         slack[q] = fabs(P_r[q] - P_l[q]) * C->tau_dev;
-    }
     /* the rays are dphi apart: theta_0 and dphi from the first two */
     const double dphi = atan2(ct[0] * st[1] - st[0] * ct[1], ct[0] * ct[1] + st[0] * st[1]);
     const prove_guide G = {.theta_0 = atan2(st[0], ct[0]), .inv_dphi = blind ? 0 : 1 / dphi,
@@ -708,11 +712,15 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_
                                        &v_hi, missed);
             }
         } else {
-            tirenv_springs__cc_seen none; /* only the rows */
-            for (size_t k = 0; k < m; ++k)
-                if (!(B.m_t[k] > 0))
+            /* only the rows: the walk over the block's results ends at the last vertex
+             * not proven dropped (most blocks under the patch have none) */
+            tirenv_springs__cc_seen none;
+            for (size_t k = 0, open = (size_t)B.open; open > 0; ++k)
+                if (!(B.m_t[k] > 0)) {
                     out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &none, out, &v_lo,
                                        &v_hi, missed);
+                    --open;
+                }
         }
     }
     *lo = v_lo;
