@@ -582,14 +582,14 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
     const double g_lo = G->g_lo, g_hi = G->g_hi;
     long open = 0;
     for (size_t k = 0; k < m; ++k) {
-        /* atan(r), |r| <= 1, within 2e-8 rad (Abramowitz and Stegun 4.4.49), in Estrin's
-         * order: a guess only, checked below; NaN or far off where dz <= 0, then clamped */
+        /* atan(r), |r| <= 1, within 1e-5 rad (Abramowitz and Stegun 4.4.47), in Estrin's
+         * order: a guess only, checked below (a sector is some 0.02 rad: one vertex in a
+         * thousand lies within the error of a ray); NaN or far off where dz <= 0, then
+         * clamped */
         const double r = (X[k] - x) / (z - Z[k]), r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-        const double p01 = 0.9999993329 - 0.3332985605 * r2;
-        const double p23 = 0.1994653599 - 0.1390853351 * r2;
-        const double p45 = 0.0964200441 - 0.0559098861 * r2;
-        const double p67 = 0.0218612288 - 0.0040540580 * r2;
-        const double psi = r * ((p01 + p23 * r4) + (p45 + p67 * r4) * r8);
+        const double p01 = 0.9998660 - 0.3302995 * r2;
+        const double p23 = 0.1801410 - 0.0851330 * r2;
+        const double psi = r * ((p01 + p23 * r4) + 0.0208351 * r8);
         double f = (psi - theta_0) * inv_dphi;
         f = f >= g_lo ? f : g_lo; /* NaN too */
         f = f <= g_hi ? f : g_hi;
