@@ -203,7 +203,7 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
  * has (GCC's target_clones through an ELF ifunc, as the network's evaluation,
  * src/nn/nn_impl.h): with SSE2 alone the guessed sectors cost more time than the walk they
  * replace, with AVX-512 (real gathers, masks, three-operand instructions) much less
- * (docs/models.md section 4.8, The first scan at an x). The same bits from every clone: the same
+ * (docs/models.md section 4.8, The scans at an x). The same bits from every clone: the same
  * IEEE operations, no contraction in ISO C mode. Not under ThreadSanitizer, whose runtime the
  * ifunc resolver would run before. CMakeLists.txt compiles this file without errno, so that
  * the square root vectorises. */
@@ -220,7 +220,7 @@ typedef struct {
 } seen_at_z;
 
 /* seen_todo's bounds Qt[q] and Qm[q] of the sectors q < n (seen_todo's comment), from the
- * penetrations at z, Pz[0 .. n], and what the first scan kept (sA, sD, sT, sZ): a loop the
+ * penetrations at z, Pz[0 .. n], and what the proving scan kept (sA, sD, sT, sZ): a loop the
  * compiler vectorises. Each selection is between values computed on both sides, or adds 0
  * or takes a factor of 1 (the same numbers as the branches they replace: x + 0 and x * 1 are
  * x, and a zero's sign cannot reach a test), so that no operation is left to one side only,
@@ -490,7 +490,7 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
     sc->out = put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, sc->out);
 }
 
-/* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the first scan
+/* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the proving scan
  * left the vertex in (seen[k].i of vertex s0 + k): its sector at this height is that one or
  * a neighbour, where the last vertex listed may lie sectors away. The walk ends in the same
  * sector from either start (the one between the rays the vertex lies between), with the
@@ -526,9 +526,9 @@ SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_e
     *sc = S;
 }
 
-/* The first scan at an x: what scan_vertex does, with a proof for every vertex dropped
- * between elements (vertex_rows' comment), in two passes over blocks of PROVE_BLOCK
- * vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's, which
+/* A scan at an x without proofs to check: what scan_vertex does, with a proof for every
+ * vertex dropped between elements (vertex_rows' comment) or the rows alone, in two passes
+ * over blocks of PROVE_BLOCK vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's, which
  * carries from vertex to vertex and branches at each step; prove_guess instead guesses each
  * vertex's sector from its angle (psi = atan(dx / dz) by a polynomial, the rays being dphi
  * apart), then takes the sigmas of the guessed sector's rays, t, h and the drop test with no
@@ -772,7 +772,7 @@ static void seen_sectors(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T
  * lies in (or on one element, if it lies on its ray), into c->vrows; their number in
  * c->n_vrows.
  *
- * The first scan at an x (height z_r) proves, for each vertex whose row it drops between
+ * The proving scan at an x (height z_r) proves, for each vertex whose row it drops between
  * two elements (below the chord of the rays' penetrations times the tread's bow, the test
  * below), that the test drops it at every height z the later evaluations at that x take
  * while these bounds hold (docs/models.md section 4.8, The later heights at one x): with
