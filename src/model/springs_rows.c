@@ -526,23 +526,22 @@ SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_e
     *sc = S;
 }
 
-/* A scan at an x without proofs to check: what scan_vertex does, with a proof for every
- * vertex dropped between elements (vertex_rows' comment) or the rows alone, in two passes
- * over blocks of PROVE_BLOCK vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's, which
- * carries from vertex to vertex and branches at each step; prove_guess instead guesses each
- * vertex's sector from its angle (psi = atan(dx / dz) by a polynomial, the rays being dphi
- * apart), then takes the sigmas of the guessed sector's rays, t, h and the drop test with no
- * branch and nothing carried from vertex to vertex: loops the compiler vectorises, the rays'
- * and the sectors' numbers gathered at the guess. Where the sigmas show the guess right
- * (sigma_g > 0 > sigma_(g+1): the walk would end in sector g, the sigmas' signs along the
- * rays changing once) its numbers are the walk's own, the same operations on the same
- * operands (IEEE arithmetic gives a vector's lane what it gives alone, and no FMA is
- * contracted in ISO C mode). The vertices it does not prove dropped (out of reach, rows,
- * and the few whose guess missed: within the polynomial's error of a ray, or on one) are
- * taken again one by one by scan_vertex's walk from the guess (prove_vertex). So the same
- * rows and tests, bit for bit (test_springs_scan). The proofs keep the raw margin,
- * min(t, 1 - t) and the sector; seen_todo takes the allowances and t_snap off once a sector
- * (m_t 0: no proof). */
+/* A scan at an x without proofs to check: what scan_vertex does, with a proof for every vertex
+ * dropped between elements (vertex_rows' comment) or the rows alone, in two passes over blocks of
+ * PROVE_BLOCK vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's,
+ * which carries from vertex to vertex and branches at each step; prove_guess instead guesses each
+ * vertex's sector from its angle (psi = atan(dx / dz) by a polynomial, the rays being dphi apart),
+ * then takes the sigmas of the guessed sector's rays, t, h and the drop test with no branch and
+ * nothing carried from vertex to vertex: loops the compiler vectorises, the rays' and the sectors'
+ * numbers gathered at the guess. Where the sigmas show the guess right (sigma_g > 0 > sigma_(g+1):
+ * the walk would end in sector g, the sigmas' signs along the rays changing once) its numbers are
+ * the walk's own, the same operations on the same operands (IEEE arithmetic gives a vector's lane
+ * what it gives alone, and no FMA is contracted in ISO C mode). The vertices it does not prove
+ * dropped (out of reach, rows, and the few whose guess missed: within the polynomial's error of a
+ * ray, or on one) are taken again one by one by scan_vertex's walk from the guess (prove_vertex).
+ * So the same rows and tests, bit for bit (test_springs_scan). The proofs keep the raw margin,
+ * min(t, 1 - t) and the sector; seen_todo takes the allowances and t_snap off once a sector (m_t
+ * 0: no proof). */
 
 /* Vertices a block: its scratch (5 doubles a vertex, 2.5 KB) stays in the first-level cache
  * between the passes. */
@@ -670,8 +669,8 @@ static tirenv_springs__cc_row *prove_vertex(const scan_ctx *C, size_t g, size_t 
     return put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, out);
 }
 
-/* The vertices j0 .. j0 + n - 1, with proofs their proofs at seen[0 .. n - 1] (else only
- * their rows), in the sectors' range [a1, b1] (vertex_rows); sec: room for 3 N doubles;
+/* The vertices j0 .. j0 + n - 1 (with proofs: their proofs at seen[0 .. n - 1]; else their
+ * rows alone), in the sectors' range [a1, b1] (vertex_rows); sec: room for 3 N doubles;
  * blind: every guess the range's first sector (the tests' scan_blind). The rows go to out,
  * the new end returned; [*lo, *hi]: the sectors of every proof among them, within
  * [0, N - 2]; *missed: the vertices within reach whose sector the guess missed. */
