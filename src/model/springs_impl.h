@@ -488,24 +488,28 @@ typedef struct {
      * n_vrows of room for cap_vrows */
     tirenv_springs__cc_row *vrows;
     size_t n_vrows, cap_vrows;
-    /* The vertex scan's proofs at the last x, seen_x, on the profile of serial seen_serial,
-     * made at the first height seen_z it ran at there, one for each vertex seen_j0 ..
+    /* The vertex scan at the last x, seen_x, on the profile of serial seen_serial: the scans
+     * there so far (seen_scans, counted up to springs_rows.c's scans_unproven), and whether
+     * its proofs are made (seen_made), at the height seen_z, one for each vertex seen_j0 ..
      * seen_j0 + seen_n - 1 (room for cap_seen); the sectors seen_lo .. seen_hi hold them;
      * per sector (7 N, allocated with seen) the chord's P_l - slack and P_r - P_l at seen_z,
      * bounds on a proven vertex's |dt/dz| and on its depth, and room for what a later height
-     * needs of them, which the proving scan uses for its sectors' penetrations and slack
-     * (springs_rows.c); per vertex the scan's list of vertices to compute
-     * (cap_seen); the vertices the last scan skipped by the proofs and those whose sector
-     * its guess missed (scan_prove; what the tests count);
+     * needs of them, which the guessing scan uses for its sectors' penetrations and slack
+     * (springs_rows.c); per vertex the scan's list of vertices to compute (cap_seen); the
+     * vertices the last scan skipped by the proofs and those whose sector its guess missed
+     * (scan_prove; what the tests count);
      * scan_plain, set only by the tests: no proofs, every vertex computed by the plain scan
      * (what the proving loop and the proofs must give bit for bit); scan_blind, set only by
      * the tests: the proving scan guesses every vertex in the first sector in reach, so that
-     * the walk from a missed guess takes nearly every vertex */
+     * the walk from a missed guess takes nearly every vertex; scan_eager, set only by the
+     * tests: the first scan at an x makes the proofs */
     tirenv_springs__cc_seen *seen;
     unsigned long long seen_serial;
     double seen_x, seen_z;
     size_t seen_j0, seen_n, cap_seen, seen_lo, seen_hi, scan_skipped, scan_missed;
-    int scan_plain, scan_blind;
+    size_t seen_scans;
+    int seen_made;
+    int scan_plain, scan_blind, scan_eager;
     size_t scan_i;  /* the plain scan's sector of its first vertex within reach, where the
                      * next one's walk starts (any sector gives the same rows) */
     double *seen_sec;

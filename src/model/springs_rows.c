@@ -178,6 +178,9 @@ static int reserve_seen(tirenv_springs__cc *c, size_t n, size_t N)
 #define SCAN_LOOP static
 #endif
 
+/* The scans at one x that run without proofs (vertex_rows). */
+enum { scans_unproven = 2 };
+
 /* How far the centre may move from the height of a vertex's proof, as a fraction of the
  * vertex's depth dz_r below it: within it rho stays above (1 - seen_reach) rho_r. */
 static const double seen_reach = 0.01;
@@ -200,7 +203,7 @@ static double seen_tol(const tirenv_profile *p, double R0, double z)
  * has (GCC's target_clones through an ELF ifunc, as the network's evaluation,
  * src/nn/nn_impl.h): with SSE2 alone the guessed sectors cost more time than the walk they
  * replace, with AVX-512 (real gathers, masks, three-operand instructions) much less
- * (docs/models.md section 4.8, The first scan at an x). The same bits from every clone: the same
+ * (docs/models.md section 4.8, The scans at an x). The same bits from every clone: the same
  * IEEE operations, no contraction in ISO C mode. Not under ThreadSanitizer, whose runtime the
  * ifunc resolver would run before. CMakeLists.txt compiles this file without errno, so that
  * the square root vectorises. */
@@ -217,7 +220,7 @@ typedef struct {
 } seen_at_z;
 
 /* seen_todo's bounds Qt[q] and Qm[q] of the sectors q < n (seen_todo's comment), from the
- * penetrations at z, Pz[0 .. n], and what the first scan kept (sA, sD, sT, sZ): a loop the
+ * penetrations at z, Pz[0 .. n], and what the proving scan kept (sA, sD, sT, sZ): a loop the
  * compiler vectorises. Each selection is between values computed on both sides, or adds 0
  * or takes a factor of 1 (the same numbers as the branches they replace: x + 0 and x * 1 are
  * x, and a zero's sign cannot reach a test), so that no operation is left to one side only,
@@ -487,7 +490,7 @@ static inline void scan_vertex(const scan_ctx *C, scan_state *sc, size_t j)
     sc->out = put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, sc->out);
 }
 
-/* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the first scan
+/* scan_vertex over the vertices todo[0 .. n - 1], each walk from the sector the proving scan
  * left the vertex in (seen[k].i of vertex s0 + k): its sector at this height is that one or
  * a neighbour, where the last vertex listed may lie sectors away. The walk ends in the same
  * sector from either start (the one between the rays the vertex lies between), with the
@@ -523,23 +526,22 @@ SCAN_LOOP void scan_all(const scan_ctx *C, scan_state *sc, size_t j0, size_t j_e
     *sc = S;
 }
 
-/* The first scan at an x: what scan_vertex does, with a proof for every vertex dropped
- * between elements (vertex_rows' comment), in two passes over blocks of PROVE_BLOCK
- * vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's, which
- * carries from vertex to vertex and branches at each step; prove_guess instead guesses each
- * vertex's sector from its angle (psi = atan(dx / dz) by a polynomial, the rays being dphi
- * apart), then takes the sigmas of the guessed sector's rays, t, h and the drop test with no
- * branch and nothing carried from vertex to vertex: loops the compiler vectorises, the rays'
- * and the sectors' numbers gathered at the guess. Where the sigmas show the guess right
- * (sigma_g > 0 > sigma_(g+1): the walk would end in sector g, the sigmas' signs along the
- * rays changing once) its numbers are the walk's own, the same operations on the same
- * operands (IEEE arithmetic gives a vector's lane what it gives alone, and no FMA is
- * contracted in ISO C mode). The vertices it does not prove dropped (out of reach, rows,
- * and the few whose guess missed: within the polynomial's error of a ray, or on one) are
- * taken again one by one by scan_vertex's walk from the guess (prove_vertex). So the same
- * rows and tests, bit for bit (test_springs_scan). The proofs keep the raw margin,
- * min(t, 1 - t) and the sector; seen_todo takes the allowances and t_snap off once a sector
- * (m_t 0: no proof). */
+/* A scan at an x without proofs to check: what scan_vertex does, with a proof for every vertex
+ * dropped between elements (vertex_rows' comment) or the rows alone, in two passes over blocks of
+ * PROVE_BLOCK vertices. scan_vertex finds a vertex's sector by a walk from the last vertex's,
+ * which carries from vertex to vertex and branches at each step; prove_guess instead guesses each
+ * vertex's sector from its angle (psi = atan(dx / dz) by a polynomial, the rays being dphi apart),
+ * then takes the sigmas of the guessed sector's rays, t, h and the drop test with no branch and
+ * nothing carried from vertex to vertex: loops the compiler vectorises, the rays' and the sectors'
+ * numbers gathered at the guess. Where the sigmas show the guess right (sigma_g > 0 > sigma_(g+1):
+ * the walk would end in sector g, the sigmas' signs along the rays changing once) its numbers are
+ * the walk's own, the same operations on the same operands (IEEE arithmetic gives a vector's lane
+ * what it gives alone, and no FMA is contracted in ISO C mode). The vertices it does not prove
+ * dropped (out of reach, rows, and the few whose guess missed: within the polynomial's error of a
+ * ray, or on one) are taken again one by one by scan_vertex's walk from the guess (prove_vertex).
+ * So the same rows and tests, bit for bit (test_springs_scan). The proofs keep the raw margin,
+ * min(t, 1 - t) and the sector; seen_todo takes the allowances and t_snap off once a sector (m_t
+ * 0: no proof). */
 
 /* Vertices a block: its scratch (5 doubles a vertex, 2.5 KB) stays in the first-level cache
  * between the passes. */
@@ -559,6 +561,7 @@ typedef struct {
 typedef struct {
     int g[PROVE_BLOCK];
     double margin[PROVE_BLOCK], m_t[PROVE_BLOCK];
+    long open; /* the vertices with m_t 0 */
 } prove_block;
 
 
@@ -576,15 +579,16 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
     const double x = C->x, z = C->z, R0 = C->R0, R0sq = C->R0sq, ab_lo = C->ab_lo;
     const double theta_0 = G->theta_0, inv_dphi = G->inv_dphi;
     const double g_lo = G->g_lo, g_hi = G->g_hi;
+    long open = 0;
     for (size_t k = 0; k < m; ++k) {
-        /* atan(r), |r| <= 1, within 2e-8 rad (Abramowitz and Stegun 4.4.49), in Estrin's
-         * order: a guess only, checked below; NaN or far off where dz <= 0, then clamped */
+        /* atan(r), |r| <= 1, within 1e-5 rad (Abramowitz and Stegun 4.4.47), in Estrin's
+         * order: a guess only, checked below (a sector is some 0.02 rad: one vertex in a
+         * thousand lies within the error of a ray); NaN or far off where dz <= 0, then
+         * clamped */
         const double r = (X[k] - x) / (z - Z[k]), r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-        const double p01 = 0.9999993329 - 0.3332985605 * r2;
-        const double p23 = 0.1994653599 - 0.1390853351 * r2;
-        const double p45 = 0.0964200441 - 0.0559098861 * r2;
-        const double p67 = 0.0218612288 - 0.0040540580 * r2;
-        const double psi = r * ((p01 + p23 * r4) + (p45 + p67 * r4) * r8);
+        const double p01 = 0.9998660 - 0.3302995 * r2;
+        const double p23 = 0.1801410 - 0.0851330 * r2;
+        const double psi = r * ((p01 + p23 * r4) + 0.0208351 * r8);
         double f = (psi - theta_0) * inv_dphi;
         f = f >= g_lo ? f : g_lo; /* NaN too */
         f = f <= g_hi ? f : g_hi;
@@ -607,7 +611,9 @@ PROVE_CLONES static void prove_guess(const scan_ctx *C, const prove_guide *G, si
                          (t > t_snap) & !(h > thr);
         B->m_t[k] = drop ? (t < omt ? t : omt) : 0;
         B->margin[k] = thr - h;
+        open += !drop;
     }
+    B->open = open;
 }
 
 /* Vertex j, which the guess did not prove dropped (out of reach, a row, or its sector
@@ -663,27 +669,27 @@ static tirenv_springs__cc_row *prove_vertex(const scan_ctx *C, size_t g, size_t 
     return put_row(st, j, i, s_i, s_n, S, t, h, dz, rho, out);
 }
 
-/* The vertices j0 .. j0 + n - 1, their proofs at seen[0 .. n - 1], in the sectors' range
- * [a1, b1] (vertex_rows); sec: room for 3 N doubles; blind: every guess the range's first
- * sector (the tests' scan_blind). The rows go to out, the new end returned; [*lo, *hi]: the
- * sectors of every proof among them, within [0, N - 2]; *missed: the vertices within reach
- * whose sector the guess missed. */
+/* The vertices j0 .. j0 + n - 1 (with proofs: their proofs at seen[0 .. n - 1]; else their
+ * rows alone), in the sectors' range [a1, b1] (vertex_rows); sec: room for 3 N doubles;
+ * blind: every guess the range's first sector (the tests' scan_blind). The rows go to out,
+ * the new end returned; [*lo, *hi]: the sectors of every proof among them, within
+ * [0, N - 2]; *missed: the vertices within reach whose sector the guess missed. */
 SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_t b1,
-                                             int blind, double *sec, size_t j0, size_t n,
-                                             tirenv_springs__cc_seen seen[],
+                                             int blind, int proofs, double *sec, size_t j0,
+                                             size_t n, tirenv_springs__cc_seen seen[],
                                              tirenv_springs__cc_row *out, size_t *lo,
                                              size_t *hi, size_t *missed)
 {
     const size_t N = C->N;
     const double *const st = C->st, *const ct = C->ct;
     const size_t g_lo = a1 < N - 2 ? a1 : N - 2, g_hi = b1 < N - 2 ? b1 : N - 2;
-    /* each sector's penetrations and slack, as the walk takes them (pen) */
-    double *const P_l = sec, *const P_r = sec + N, *const slack = sec + 2 * N;
-    for (size_t q = g_lo; q <= g_hi; ++q) {
+    /* each sector's penetrations and slack, as the walk takes them (pen): sector q's P_r is
+     * sector q + 1's P_l, so one array read at q and at q + 1 */
+    double *const P_l = sec, *const P_r = sec + 1, *const slack = sec + 2 * N;
+    for (size_t q = g_lo; q <= g_hi + 1; ++q)
         P_l[q] = pen(q, C->a, C->b, C->d);
-        P_r[q] = pen(q + 1, C->a, C->b, C->d);
+    for (size_t q = g_lo; q <= g_hi; ++q)
         slack[q] = fabs(P_r[q] - P_l[q]) * C->tau_dev;
-    }
     /* the rays are dphi apart: theta_0 and dphi from the first two */
     const double dphi = atan2(ct[0] * st[1] - st[0] * ct[1], ct[0] * ct[1] + st[0] * st[1]);
     const prove_guide G = {.theta_0 = atan2(st[0], ct[0]), .inv_dphi = blind ? 0 : 1 / dphi,
@@ -695,13 +701,25 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_
         const size_t m = n - q0 < PROVE_BLOCK ? n - q0 : PROVE_BLOCK;
         prove_guess(C, &G, j0 + q0, m, &B);
         /* the proofs, and the few vertices the guess did not prove dropped */
-        tirenv_springs__cc_seen *const e = seen + q0;
-        for (size_t k = 0; k < m; ++k) {
-            e[k] = (tirenv_springs__cc_seen){.margin = B.margin[k], .m_t = B.m_t[k],
-                                             .i = (size_t)B.g[k]};
-            if (!(B.m_t[k] > 0))
-                out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &e[k], out, &v_lo, &v_hi,
-                                   missed);
+        if (proofs) {
+            tirenv_springs__cc_seen *const e = seen + q0;
+            for (size_t k = 0; k < m; ++k) {
+                e[k] = (tirenv_springs__cc_seen){.margin = B.margin[k], .m_t = B.m_t[k],
+                                                 .i = (size_t)B.g[k]};
+                if (!(B.m_t[k] > 0))
+                    out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &e[k], out, &v_lo,
+                                       &v_hi, missed);
+            }
+        } else {
+            /* only the rows: the walk over the block's results ends at the last vertex
+             * not proven dropped (most blocks under the patch have none) */
+            tirenv_springs__cc_seen none;
+            for (size_t k = 0, open = (size_t)B.open; open > 0; ++k)
+                if (!(B.m_t[k] > 0)) {
+                    out = prove_vertex(C, (size_t)B.g[k], j0 + q0 + k, &none, out, &v_lo,
+                                       &v_hi, missed);
+                    --open;
+                }
         }
     }
     *lo = v_lo;
@@ -709,12 +727,51 @@ SCAN_LOOP tirenv_springs__cc_row *scan_prove(const scan_ctx *C, size_t a1, size_
     return out;
 }
 
+/* The sectors' numbers of the proofs made at z_r = c->seen_z with the span [a, b] and the
+ * penetrations d there: the chords (sA, sD), the bounds on a proven vertex's |dt/dz| (sT)
+ * and on its depth (sZ) over the sectors c->seen_lo .. c->seen_hi (vertex_rows' comment). */
+static void seen_sectors(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                         const tirenv_profile *p, size_t a, size_t b, const double d[])
+{
+    const size_t N = T->N, seen_lo = c->seen_lo, seen_hi = c->seen_hi;
+    const double R0 = T->R0, ab_lo = T->ab_lo, tau_dev = T->tau_dev;
+    const double *const st = T->sin_t, *const ct = T->cos_t;
+    const double tol = seen_tol(p, R0, c->seen_z);
+    const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
+    double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
+    double *const sZ = sT + N;
+    const double B = 1 + 0.25 * ab_lo; /* the bow's largest */
+    double Pl = pen(seen_lo, a, b, d);
+    for (size_t q = seen_lo; q <= seen_hi; ++q) {
+        const double Pr = pen(q + 1, a, b, d);
+        sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
+        sD[q] = Pr - Pl;
+        /* A vertex proven in sector q was dropped: h <= thr <= max(P_l, P_r) B, so
+         * rho >= rho_lo = R0 - max(P_l, P_r) B (less an allowance), and its angle psi
+         * lies between the sector's rays and below the centre, in (-pi/2, pi/2), where
+         * |sin(psi)| is at most the larger of the rays' (if both point below the
+         * horizontal; else 1): the vertex's |dx| / rr = |sin(psi)| / rho is at most
+         * s_max / rho_lo, the same for the whole sector and with no division a vertex.
+         * Rounding far inside 1e-12. No bound (infinite: nothing proven) if rho_lo <= 0. */
+        const double rho_lo = (R0 - (Pl > Pr ? Pl : Pr) * B) * (1 - 1e-12) - tol;
+        const double s_l = fabs(st[q]), s_r = fabs(st[q + 1]); /* fmax's, no call */
+        const double s_max = ct[q] > 0 && ct[q + 1] > 0 ? (s_l > s_r ? s_l : s_r) : 1;
+        sT[q] = rho_lo > 0 ? dt_dz_of * s_max / rho_lo * (1 + 1e-12) : INFINITY;
+        /* its depth rho cos(psi) at least rho_lo times the smaller of the rays' cosines
+         * (cos is concave there); 0 (nothing proven) where a ray is not below the
+         * horizontal or rho_lo <= 0 */
+        const double c_min = ct[q] < ct[q + 1] ? ct[q] : ct[q + 1];
+        sZ[q] = rho_lo > 0 && c_min > 0 ? rho_lo * c_min * (1 - 1e-12) : 0;
+        Pl = Pr;
+    }
+}
+
 /* The vertex rows: every ground vertex below the centre's height, within
  * R0 of the centre and inside the tread segment's angle, as a row on the sector of elements it
  * lies in (or on one element, if it lies on its ray), into c->vrows; their number in
  * c->n_vrows.
  *
- * The first scan at an x (height z_r) proves, for each vertex whose row it drops between
+ * The proving scan at an x (height z_r) proves, for each vertex whose row it drops between
  * two elements (below the chord of the rays' penetrations times the tread's bow, the test
  * below), that the test drops it at every height z the later evaluations at that x take
  * while these bounds hold (docs/models.md section 4.8, The later heights at one x): with
@@ -767,22 +824,27 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     }
     if (reserve_vrows(c, j_end - j0))
         return TIRENV_ENOMEM;
-    /* The proofs: made here at a new x (or profile), used at the same x within the run they
-     * cover, else neither. */
+    /* Where the vertices outnumber the sectors (a road sampled finely) the scan guesses their
+     * sectors (scan_prove), and the scans at one x after the first scans_unproven there use
+     * proofs, made by the scan that follows those, where they cover its run; elsewhere the
+     * scan walks as it did (the same rows every way). The proofs cost a few sectors' work
+     * and a pass over the vertices to make, and pay only over the scans after: at most x
+     * see one or two scans (the later evaluations there take the tangent's update). */
     const int same_x = c->seen_serial == p->serial && c->seen_x == x;
-    /* Proofs pay where the vertices outnumber the sectors (a road sampled finely): they cost
-     * a few sectors' work an evaluation whatever the vertices, and a vertex's proof a
-     * third of its row's test; elsewhere the scan runs as it did (the same rows either
-     * way). */
-    const int prove = !same_x && j_end - j0 >= 2 * (b1 - a1 + 1) && !c->scan_plain;
-    const int reuse = same_x && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
-    if (!same_x)
-        c->seen_serial = 0; /* no proofs at this x, unless made now */
-    if (prove) {
-        if (reserve_seen(c, j_end - j0, N))
-            return TIRENV_ENOMEM;
+    if (!same_x) {
         c->seen_serial = p->serial;
         c->seen_x = x;
+        c->seen_scans = 0;
+        c->seen_made = 0; /* no proofs at this x, unless made below */
+    }
+    const int guess = j_end - j0 >= 2 * (b1 - a1 + 1) && !c->scan_plain;
+    const int reuse = c->seen_made && c->seen_j0 <= j0 && j_end <= c->seen_j0 + c->seen_n;
+    const int prove = guess && !c->seen_made &&
+                      (c->scan_eager || c->seen_scans >= scans_unproven);
+    c->seen_scans += c->seen_scans < scans_unproven;
+    if (guess && !reuse && reserve_seen(c, j_end - j0, N))
+        return TIRENV_ENOMEM;
+    if (prove) {
         c->seen_z = z;
         c->seen_j0 = j0;
         c->seen_n = j_end - j0;
@@ -796,8 +858,6 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
     if (reuse)
         n_todo = seen_todo(c, T, p, z, a, b, d, j0, j_end, todo, &skipped);
 
-    const double tol = seen_tol(p, R0, z);
-    const double dt_dz_of = T->inv_sin_step / ((1 - seen_reach) * (1 - seen_reach));
     const double ab_lo = T->ab_lo, tau_dev = T->tau_dev;
     const scan_ctx C = {.X = X, .Z = Z, .st = st, .ct = ct, .d = d, .x = x, .z = z, .R0 = R0,
                         .R0sq = R0sq, .ab_lo = ab_lo, .tau_dev = tau_dev, .N = N, .a = a,
@@ -807,46 +867,22 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * the walk from i0 crossed half the span over a cleat) */
     scan_state S = {.i = c->scan_i < N ? c->scan_i : T->i0, .ci = SIZE_MAX, .out = c->vrows};
     size_t seen_lo = N, seen_hi = 0, missed = 0;
-    if (prove)
-        S.out = scan_prove(&C, a1, b1, c->scan_blind, c->seen_sec + 4 * N, j0, n_todo, seen,
-                           S.out, &seen_lo, &seen_hi, &missed);
-    else if (reuse)
+    if (reuse)
         scan_list(&C, &S, todo, seen, c->seen_j0, n_todo);
+    else if (guess)
+        S.out = scan_prove(&C, a1, b1, c->scan_blind, prove, c->seen_sec + 4 * N, j0, n_todo,
+                           seen, S.out, &seen_lo, &seen_hi, &missed);
     else
         scan_all(&C, &S, j0, j_end, &c->scan_i);
     tirenv_springs__cc_row *const out = S.out; /* NULL while nothing was reserved */
     c->n_vrows = out ? (size_t)(out - c->vrows) : 0;
     c->scan_skipped = skipped;
     c->scan_missed = missed;
-    if (prove) { /* the sectors' chords at z_r, their bounds on |dt/dz| and on depth (sZ) */
+    if (prove) {
         c->seen_lo = seen_lo;
         c->seen_hi = seen_hi;
-        double *const sA = c->seen_sec, *const sD = sA + N, *const sT = sD + N;
-        double *const sZ = sT + N;
-        const double B = 1 + 0.25 * ab_lo; /* the bow's largest */
-        double Pl = pen(seen_lo, a, b, d);
-        for (size_t q = seen_lo; q <= seen_hi; ++q) {
-            const double Pr = pen(q + 1, a, b, d);
-            sA[q] = Pl - fabs(Pr - Pl) * tau_dev;
-            sD[q] = Pr - Pl;
-            /* A vertex proven in sector q was dropped: h <= thr <= max(P_l, P_r) B, so
-             * rho >= rho_lo = R0 - max(P_l, P_r) B (less an allowance), and its angle psi
-             * lies between the sector's rays and below the centre, in (-pi/2, pi/2), where
-             * |sin(psi)| is at most the larger of the rays' (if both point below the
-             * horizontal; else 1): the vertex's |dx| / rr = |sin(psi)| / rho is at most
-             * s_max / rho_lo, the same for the whole sector and with no division a vertex.
-             * Rounding far inside 1e-12. No bound (infinite: nothing proven) if rho_lo <= 0. */
-            const double rho_lo = (R0 - (Pl > Pr ? Pl : Pr) * B) * (1 - 1e-12) - tol;
-            const double s_l = fabs(st[q]), s_r = fabs(st[q + 1]); /* fmax's, no call */
-            const double s_max = ct[q] > 0 && ct[q + 1] > 0 ? (s_l > s_r ? s_l : s_r) : 1;
-            sT[q] = rho_lo > 0 ? dt_dz_of * s_max / rho_lo * (1 + 1e-12) : INFINITY;
-            /* its depth rho cos(psi) at least rho_lo times the smaller of the rays' cosines
-             * (cos is concave there); 0 (nothing proven) where a ray is not below the
-             * horizontal or rho_lo <= 0 */
-            const double c_min = ct[q] < ct[q + 1] ? ct[q] : ct[q + 1];
-            sZ[q] = rho_lo > 0 && c_min > 0 ? rho_lo * c_min * (1 - 1e-12) : 0;
-            Pl = Pr;
-        }
+        seen_sectors(c, T, p, a, b, d);
+        c->seen_made = 1;
     }
     return TIRENV_OK;
 }

@@ -4,12 +4,13 @@
  * finely sampled roads, the centre exactly over a vertex or anywhere, at the heights an equilibrium
  * visits at one x.
  *
- * Exact equality is the contract, not a tolerance. The vertex rows: a workspace that keeps the
- * first scan's proofs at an x (a vertex dropped there is skipped at a later height where a
- * bound proves it dropped again), and its first scan there by the proving loop, must give the
- * rows, in their order, and the laid-out rows of a fresh workspace that computes every vertex
- * by the plain scan (scan_plain: no proving loop, no proofs); the proving loop's guessed
- * sectors and the walk where a guess misses both give the plain scan's. The rays: a fan updated ray by
+ * Exact equality is the contract, not a tolerance. The vertex rows: a workspace whose scans at
+ * an x guess the vertices' sectors, the first two without proofs and the third making them (a
+ * vertex dropped there is skipped at a later height where a bound proves it dropped again),
+ * and one whose first scan at an x makes the proofs (scan_eager), must give the rows, in
+ * their order, and the laid-out rows of a fresh workspace that computes every vertex by the
+ * plain scan (scan_plain: no proving loop, no proofs); the proving loop's guessed sectors and
+ * the walk where a guess misses both give the plain scan's. The rays: a fan updated ray by
  * ray from its memos (the rays whose memos fail walked again alone) must give the rho of a
  * fresh fan. */
 #include <math.h>
@@ -163,15 +164,19 @@ static void test_vertex_rows_proven_exact(void **state)
     const size_t N = S.N;
     size_t scans = 0, skipped = 0, rows = 0, on_vertex = 0, missed = 0, missed_blind = 0;
     size_t skipped_up = 0, skipped_down = 0; /* at heights above and below the proofs' */
+    size_t skipped_hot = 0; /* by the proofs the third scan at an x makes */
     for (int trial = 0; trial < 24; ++trial) {
         const double dx = 0.0003 + 0.0012 * uniform();
         tirenv_profile *p = random_road((size_t)(4.0 / dx), dx, trial % 4);
         const double *X = tirenv_profile_x(p);
         const size_t n = tirenv_profile_size(p);
-        tirenv_springs__cc hot, blind;
+        tirenv_springs__cc hot, eager, blind;
         assert_int_equal(tirenv_springs__cc_init(&hot, N), TIRENV_OK);
+        assert_int_equal(tirenv_springs__cc_init(&eager, N), TIRENV_OK);
         assert_int_equal(tirenv_springs__cc_init(&blind, N), TIRENV_OK);
+        eager.scan_eager = 1; /* the proofs made by the first scan at each x */
         blind.scan_blind = 1; /* every guessed sector wrong but one: the walk takes them */
+        blind.scan_eager = trial % 2; /* with and without proofs at the first scan */
         for (int pos = 0; pos < 12; ++pos) {
             /* every other position exactly over a vertex, the others anywhere */
             const size_t v = n / 4 + (size_t)(uniform() * (double)(n / 2));
@@ -190,33 +195,42 @@ static void test_vertex_rows_proven_exact(void **state)
                 tirenv_diag diag;
                 assert_int_equal(tirenv_springs__cc_rows(&hot, &S.T, p, x, z, a, b, S.d, &diag),
                                  TIRENV_OK);
+                assert_int_equal(tirenv_springs__cc_rows(&eager, &S.T, p, x, z, a, b, S.d,
+                                                         &diag), TIRENV_OK);
                 assert_int_equal(tirenv_springs__cc_rows(&cold, &S.T, p, x, z, a, b, S.d,
                                                          &diag), TIRENV_OK);
                 assert_int_equal(tirenv_springs__cc_rows(&blind, &S.T, p, x, z, a, b, S.d,
                                                          &diag), TIRENV_OK);
                 ++scans;
-                skipped += hot.scan_skipped;
-                missed += hot.scan_missed;
+                skipped += eager.scan_skipped;
+                skipped_hot += hot.scan_skipped;
+                missed += eager.scan_missed;
                 missed_blind += blind.scan_missed;
                 if (z > z1)
-                    skipped_up += hot.scan_skipped;
+                    skipped_up += eager.scan_skipped;
                 else if (z < z1)
-                    skipped_down += hot.scan_skipped;
+                    skipped_down += eager.scan_skipped;
+                /* the first two scans at an x make no proofs and skip nothing */
+                if (k < 2)
+                    assert_int_equal(hot.scan_skipped, 0);
                 same_rows(&hot, &cold);
+                same_rows(&eager, &cold);
                 same_rows(&blind, &cold);
                 rows += hot.n_rows;
                 tirenv_springs__cc_free(&cold);
             }
         }
         tirenv_springs__cc_free(&hot);
+        tirenv_springs__cc_free(&eager);
         tirenv_springs__cc_free(&blind);
         tirenv_profile_free(p);
     }
-    print_message("%zu scans (%zu positions on a vertex), %zu vertices skipped by proofs "
-                  "(%zu with the centre higher than at the proofs, %zu lower), %zu whose "
-                  "sector the proving scan's guess missed (%zu blind), %zu rows\n",
-                  scans, on_vertex, skipped, skipped_up, skipped_down, missed, missed_blind,
-                  rows);
+    print_message("%zu scans (%zu positions on a vertex), %zu vertices skipped by proofs made "
+                  "at the first scan at an x (%zu with the centre higher than there, %zu "
+                  "lower), %zu by those made at the third, %zu whose sector the proving "
+                  "scan's guess missed (%zu blind), %zu rows\n",
+                  scans, on_vertex, skipped, skipped_up, skipped_down, skipped_hot, missed,
+                  missed_blind, rows);
     /* The shortcut taken (most vertices of the later heights skipped), rows compared; the
      * proofs' check both where h may rise (the centre lower) and where it falls; the proving
      * scan's walk for a vertex whose guessed sector is wrong (on a ray or within the guess's
@@ -225,6 +239,7 @@ static void test_vertex_rows_proven_exact(void **state)
     assert_true(skipped > 100 * scans);
     assert_true(skipped_up > 10 * scans);
     assert_true(skipped_down > 10 * scans);
+    assert_true(skipped_hot > 50 * scans);
     assert_true(rows > 10 * scans);
     assert_true(missed_blind > 10 * scans); /* a first scan in 8 */
     free_tire(&S);
