@@ -15,6 +15,9 @@ void cli_bench_say(const char *fmt, ...)
     ;
 void cli_bench_figure(const char *name, double value);
 
+/* The median of v[0 .. n - 1] (n >= 1), which it sorts: the bench's ratios over rounds. */
+double cli_bench_median(double v[], size_t n);
+
 /* The directory for the bench's scratch files: $TMPDIR where set (its road files can be
  * hundreds of MB, more than a small /tmp holds), else /tmp. */
 const char *cli_bench_tmpdir(void);
@@ -37,9 +40,11 @@ int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, cons
                        double l_c, size_t n, const double x[], long repeat, tirenv_diag *diag);
 
 /* tirenv envelope's chunked sweep (envelope_chunks.h) of the springs model over the road at
- * contact length l_c (m), n positions from x_from every dx (m), on 1 and on 2 threads,
- * interleaved, best of repeat: the wall times (envelope_jobs1_s, envelope_jobs2_s), their
- * ratio (envelope_jobs2_over_jobs1) and whether the points are the same bits
+ * contact length l_c (m), n positions from x_from every dx (m), on 1 and on 2 threads, over
+ * 2 repeat + 1 interleaved rounds: the best wall times (envelope_jobs1_s, envelope_jobs2_s),
+ * the median of the rounds' ratios (envelope_jobs2_over_jobs1; the best times' ratio
+ * envelope_jobs2_over_jobs1_best, the rounds envelope_jobs_rounds) and whether the points
+ * are the same bits
  * (envelope_jobs_identical; fails if not); then the same sweep streamed from the road's
  * vertices (tirenv envelope --stream), --jobs 1 and 2 interleaved: envelope_stream_jobs1_s,
  * envelope_stream_jobs2_s, envelope_stream_jobs2_over_jobs1 and envelope_stream_identical

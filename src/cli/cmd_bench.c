@@ -50,14 +50,13 @@ const char *cli_bench_tmpdir(void)
     return tmp && *tmp ? tmp : "/tmp";
 }
 
-/* The median of v[0..n-1] (n >= 1), which it sorts. */
 static int cmp_double(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
 }
 
-static double median(double v[], size_t n)
+double cli_bench_median(double v[], size_t n)
 {
     qsort(v, n, sizeof *v, cmp_double);
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -102,7 +101,8 @@ static void usage(FILE *fp)
           "numbers, same bytes). Then the road: rigid, cam and springs (contact length 0.33 m) over a\n"
           "1 km ISO 8608 class C road at 10 mm (seed 1), 100,001 positions, against the\n"
           "project's targets; springs' sweep of it in tirenv envelope's chunks on 1 and on 2\n"
-          "threads, whole and streamed (--stream, the same points), interleaved; springs\n"
+          "threads, whole and streamed (--stream, the same points), interleaved (whole:\n"
+          "over 2N+1 rounds, the median of the rounds' ratios and the best times'); springs\n"
           "over the same road sampled at 1 mm and 10 mm (a tenth of its length, the same\n"
           "positions; the two sweeps interleaved over 2N+1 rounds: the\n"
           "median of the rounds' ratios, and the best time of each); and nn, the network\n"
@@ -287,7 +287,7 @@ static int cleat_rounds(const tirenv_tire *tire, const tirenv_profile *prof, con
         const char *name[2] = {"springs_over_rigid_cleat", "ring_over_rigid_cleat"};
         const char *label[2] = {"springs newton", "ring"};
         for (int k = 0; k < 2; ++k) {
-            const double mid = median(ratio[k], rounds); /* sorts it */
+            const double mid = cli_bench_median(ratio[k], rounds); /* sorts it */
             cli_bench_figure(name[k], mid);
             cli_bench_say("  %s / rigid time, the median of %zu interleaved rounds: %.1f x "
                           "(from %.1f to %.1f)\n",
@@ -688,7 +688,7 @@ static int bench_fine_road(const tirenv_tire *tire, long repeat, tirenv_diag *di
         ratio[r] = t[1] / t[0];
     }
     if (!status) {
-        const double mid = median(ratio, rounds);  /* sorts ratio */
+        const double mid = cli_bench_median(ratio, rounds);  /* sorts ratio */
         cli_bench_figure("springs_road_10mm_pos_per_s", (double)n / best[0]);
         cli_bench_figure("springs_road_1mm_pos_per_s", (double)n / best[1]);
         cli_bench_figure("springs_fine_over_coarse_road", mid);

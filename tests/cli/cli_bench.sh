@@ -52,6 +52,10 @@ assert d[\"springs_fine_over_coarse_road_rounds\"] == 3
 # The 100 m road of --quick at 10 mm is 10,001 positions: a chunk of 8192 and one of 1809, so two
 # threads take at least 8192 / 10001 of the time of one.
 assert abs(d[\"envelope_jobs2_floor\"] - 8192 / 10001) <= 1e-12
+# The jobs ratio is the median of 2 * 1 + 1 interleaved rounds, _best the ratio of the best sweeps.
+assert d[\"envelope_jobs_rounds\"] == 3
+j = d[\"envelope_jobs2_s\"] / d[\"envelope_jobs1_s\"]
+assert abs(d[\"envelope_jobs2_over_jobs1_best\"] - j) <= 1e-9 * j
 # The memory of whole mode, a child process over a 100 m road at 1 mm with --quick (10 km
 # without): the default sweep, which reaches beyond the ends of the road, and more than the
 # 3.5 MB a run over a generated cleat takes (the 100,001 vertices alone are 1.6 MB).
