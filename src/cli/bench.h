@@ -44,11 +44,10 @@ int cli_bench_set_load(const tirenv_tire *tire, const tirenv_profile *road, cons
  * 2 repeat + 1 interleaved rounds: the best wall times (envelope_jobs1_s, envelope_jobs2_s),
  * the median of the rounds' ratios (envelope_jobs2_over_jobs1; the best times' ratio
  * envelope_jobs2_over_jobs1_best, the rounds envelope_jobs_rounds) and whether the points
- * are the same bits
- * (envelope_jobs_identical; fails if not); then the same sweep streamed from the road's
- * vertices (tirenv envelope --stream), --jobs 1 and 2 interleaved: envelope_stream_jobs1_s,
- * envelope_stream_jobs2_s, envelope_stream_jobs2_over_jobs1 and envelope_stream_identical
- * (both whole mode's points; fails if not). */
+ * are the same bits (envelope_jobs_identical; fails if not); then the same sweep streamed from
+ * the road's vertices (tirenv envelope --stream), --jobs 1 and 2 interleaved:
+ * envelope_stream_jobs1_s, envelope_stream_jobs2_s, envelope_stream_jobs2_over_jobs1 and
+ * envelope_stream_identical (both whole mode's points; fails if not). */
 int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l_c,
                    double x_from, double dx, size_t n, long repeat, tirenv_diag *diag);
 
