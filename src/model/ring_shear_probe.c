@@ -179,7 +179,7 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
 {
     const tirenv_ring_tread *T = r->tread;
     const tband *P = &T->ap;
-    const size_t N = P->N, t = P->t, W = BAND_P + 1;
+    const size_t N = P->N, t = P->t;
     *avx2 = 0;
     if (!T->ap_ok || t != TAIL || N < t + 1)
         return -1;
@@ -200,7 +200,7 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
             *avx2 = 1;
             st = tirenv_ring__tband_factor_avx2(&X[1], 1, 0, NULL, ck + n_ck, NULL) != 0 ? -1 : 0;
             if (st == 0)
-                st = !tirenv_ring__same_bits(X[0].L, X[1].L, W * m) ||
+                st = !tirenv_ring__same_bits(X[0].L, X[1].L, (BAND_P + 1) * m) ||
                      !tirenv_ring__same_bits(X[0].B, X[1].B, TAIL * m) ||
                      !tirenv_ring__same_bits(&X[0].T[0][0], &X[1].T[0][0], TAIL * TAIL) ||
                      !tirenv_ring__same_bits(ck, ck + n_ck, n_kept);
