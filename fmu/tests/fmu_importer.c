@@ -265,7 +265,7 @@ static fmi2Status step(fmi2Component c, double t, double x, double load, double 
 static const double X_FROM = -0.8, X_TO = 0.8, DX = 0.001, LOAD = 7500;
 
 /* Serialized bytes an importer corrupted are refused, naming what is wrong, and the argument
- * checks of the entry points hold (issue 27.5): bytes is a good serialized state of size
+ * checks of the entry points hold: bytes is a good serialized state of size
  * bytes from instance d, in step mode; both are left as they were. */
 static void test_state_untrusted(fmi2Component d, const fmi2Byte *bytes, size_t size)
 {

@@ -23,7 +23,7 @@ def test_network_takes_its_tires_contact_length(network_file, source_dir):
     assert abs(nn.flat(load).contact_length - 0.28) < 1e-9
     # The springs model of the same tire file, identified on the ring's deflection and contact
     # length (docs/models.md section 14.1), touches as much ground: within the 5 % one tire's
-    # models are held to (issue 24; 1.1 % measured at this load, test_onetire prints it).
+    # models are held to (docs/models.md section 14; 1.1 % measured at this load, test_onetire prints it).
     assert abs(tirenv.Model("springs", tire=tire).flat(load).contact_length / 0.28 - 1) < 0.05
 
 

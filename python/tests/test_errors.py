@@ -112,7 +112,7 @@ def test_bad_vehicle_and_ride_arguments(tmp_path):
 
 
 def test_positions_that_would_never_end():
-    # tirenv_positions_count looped forever on these (issue 27.2); now each is an error.
+    # tirenv_positions_count looped forever on these once; now each is an error.
     for args in [(0.0, float("inf"), 0.1), (0.0, float("nan"), 0.1), (-1e300, 1e300, 0.1),
                  (1e300, 1e300, 0.1), (0.0, 1.0, 1e-300)]:
         with pytest.raises(tirenv.TirenvError, match="dx"):
@@ -121,7 +121,7 @@ def test_positions_that_would_never_end():
 
 
 def test_network_refuses_inputs_that_are_not_finite(network_file):
-    # The activations saturate: inf came out as a plausible h of -0.0187 m (issue 27.7).
+    # The activations saturate: inf came out as a plausible h of -0.0187 m once.
     import numpy as np
     net = tirenv.Network(network_file)
     good = np.array([[0.1, 0.3, 0.05, 0.1]])

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""The package behaves as Python packages do (issue 26.4): a __version__, exceptions that are
+"""The package behaves as Python packages do: a __version__, exceptions that are
 the builtin ones as well as TirenvError, scalars in and scalars out, a Tire whose keys read
 like a dict's."""
 import errno

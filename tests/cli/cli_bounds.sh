@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
-# Counts and values from input bounded before they are used (issue 27): positions from
+# Counts and values from input bounded before they are used: positions from
 # --x-from/--x-to/--dx (--stream included), lines longer than the readers' cap in the middle
 # of a file, and tire and vehicle values outside their plausible ranges, each refused with a
 # message naming the option, line or key, exit 1 or 2, quickly, and no output left.

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # /dev/zero as each input file, under a memory limit: every reader stops at its line cap (or
 # its size cap) with a message naming the file, exit 2, in bounded memory and time. Before
-# issue 27 the CSV, .tir and .veh readers grew one line past 4 GB, and under a limit said
+# these caps the CSV, .tir and .veh readers grew one line past 4 GB, and under a limit said
 # "no header line" or took the empty file. The limit is ulimit -v 1 GB, or under
 # AddressSanitizer (which reserves terabytes of address space) its own cap on one
 # allocation, 512 MB, with a failed allocation returned to the program.

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
-# A road file is opened once and its format told once (tirenv_road_file, issue 22): every
+# A road file is opened once and its format told once (tirenv_road_file): every
 # command that takes --profile reads it from a FIFO, which a writer fills once and which can
 # be opened once. Before, the CLI opened the file up to three times (to tell the format, to
 # read it, and once more per streamed pass), so the second open waited for a writer that never

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
-# envelope --stream reads a CSV road once into a file (issue 25): its ends from its first and
+# envelope --stream reads a CSV road once into a file: its ends from its first and
 # last rows, its rows as the tire rolls, those past the sweep after it. Whole mode's bytes, and
 # whole mode's error for a bad row anywhere, at its line, with no file: in the middle of the
 # sweep, past the sweep's end (read after it), as the last row (its ends then read from the

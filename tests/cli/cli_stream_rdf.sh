@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
-# An RDF road is read in bounded memory (issue 25): one scan checks its rows as they pass and
+# An RDF road is read in bounded memory: one scan checks its rows as they pass and
 # keeps none, then the sweep reads them from a window of the file as the tire rolls. A 20 m
 # poly_line road at 1 mm (20,001 rows, some 700 KB: ten times the reader's 64 KB window) whose
 # sides differ, with comment and blank lines inside its table: --stream gives whole mode's bytes

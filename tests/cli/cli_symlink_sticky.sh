@@ -1,8 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
 # -o through a symbolic link in a sticky world-writable directory (/tmp's mode 1777) obeys
-# the kernel's protected_symlinks rule, which following the link by hand used to bypass
-# (issue 27.6): a link owned by another user, in a directory that user does not own, is not
+# the kernel's protected_symlinks rule, which following the link by hand used to bypass:
+# a link owned by another user, in a directory that user does not own, is not
 # followed; the file it points at is left alone. A link of our own there is followed. Needs
 # root (to give a link another owner: chown -h); otherwise reported as skipped (exit 77).
 . "$(dirname "$0")/../lib/clilib.sh"

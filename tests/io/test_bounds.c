@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* Counts and lines from input, bounded (issue 27): tirenv_positions_count in constant time
+/* Counts and lines from input, bounded: tirenv_positions_count in constant time
  * for any doubles, 0 for what is no sweep; the capped line reader of src/io (io.h)
  * at, just past and far past its cap. */
 #include "testutil.h"

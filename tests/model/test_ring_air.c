@@ -125,7 +125,7 @@ static double stiffness_at(const tirenv_tire *t, double load)
     return -k; /* F_z falls as the centre rises */
 }
 
-/* The air carries most of the load (issue 23): at the rated 17.8 kN the vertical stiffness at
+/* The air carries most of the load (docs/models.md section 5.1): at the rated 17.8 kN the vertical stiffness at
  * twice the shipped pressure is at least 1.5 times that at it, and at half of it at most
  * 1/1.3 of it; without air the carcass alone (FOUNDATION_STIFFNESS, the tread, the belt's
  * bending) keeps less than half of the stiffness. */

@@ -51,7 +51,7 @@ static void jumps(tirenv_ring_contact_kind contact, double G_t, unsigned long se
     tirenv_model_free(m);
 }
 
-/* |dh| <= 1e-6 m (issue 23's target) and |dF_x| <= 1 N (of F_x up to about 1e4 N, the
+/* |dh| <= 1e-6 m (the continuity asked of every edge) and |dF_x| <= 1 N (of F_x up to about 1e4 N, the
  * equilibrium's F_z tolerance 1e-4 N times a slope of order 1, with room) for the continuous
  * contact; the rays jump by more than 1e-4 m somewhere in the same positions. */
 static void test_continuous_in_x(void **state)

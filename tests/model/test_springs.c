@@ -185,7 +185,7 @@ static void test_symmetry_and_far_field(void **state)
     }
 }
 
-/* Level ground within reach skips the solver (issue 6): no force evaluation, z exactly
+/* Level ground within reach skips the solver: no force evaluation, z exactly
  * z_flat + level, and the same point the solver finds, to its tolerance: a bump of 1e-12 m
  * under the tread (at x + 0.1 m; one beyond R0 of the centre is clear ground, skipped too,
  * docs/models.md section 11.4) makes the ground not level there, so the full equilibrium

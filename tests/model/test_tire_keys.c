@@ -4,7 +4,7 @@
  * either an error that names the key (from --set, the tire check or the model) or a
  * curve over a cleat whose every point is finite and plausible. The keys are those
  * tirenv_tir_write writes, so a key added to the table is swept without editing this test.
- * What would have caught issue 27.1 and 27.7 (NODE_ANGLE = 1e-20 overflowing the ring,
+ * What would have caught the keys that broke models once (NODE_ANGLE = 1e-20 overflowing the ring,
  * TREAD_STIFFNESS = 1e-308 lifting the ring above the cleat, a cam load of 4.7e-310 N). */
 #include "testutil.h"
 

@@ -206,8 +206,8 @@ static void test_sparse_at_cap(void **state)
  * origin's map of its x_N, h the model's equilibrium there (to the solver's eps_z of 1e-10 m,
  * with room: evaluated again backwards, Newton starts elsewhere; measured 1.1e-16 m, the
  * springs model's own root landing on the same height), and what the import of a rig log
- * of the same model approaches: the imported curve within 0.5 mm RMS (issue 23's bound for
- * the import; measured 0.065 mm). Refused: a grid of no point, a corner out of reach. */
+ * of the same model approaches: the imported curve within 0.5 mm RMS (the import's bound,
+ * docs/models.md section 5.7; measured 0.065 mm). Refused: a grid of no point, a corner out of reach. */
 static void test_model_curve(void **state)
 {
     rig_case *c = *state;

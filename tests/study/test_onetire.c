@@ -123,7 +123,7 @@ static void pairs_within(const char *what, const tirenv_tire *t, size_t n, const
  * which they are identified), the ring's loads at the data set's contact lengths 0.28 to
  * 0.43 m (17.0 to 38.5 kN with the shear-coupled tread, beyond the identification's
  * 26.85 kN) and the tractor's two tire loads (8.74 kN, below it, and 13.34 kN). Tolerance 5 %
- * (issue 24) for every pair with the springs model (measured: deflection 2.5 %, contact
+ * (docs/models.md section 14) for every pair with the springs model (measured: deflection 2.5 %, contact
  * length 2.5 % against the ring); the cam, whose MF-Tyre laws are fitted to the ring
  * directly, 1 % on the loads it is identified on (measured 0.2 / 0.6 %) and 2.5 % on the
  * others, where its laws are extrapolated (measured 0.97 / 2.17 %: the contact length at
@@ -192,7 +192,7 @@ static void derived(size_t f, tirenv_tire *t, tirenv_tir_origin *o)
 
 /* The models derived from MF-Tyre files (section 14.2) at 0.5 to 1.5 times each file's
  * FNOMIN: each pair's largest relative difference in deflection and in contact length within
- * 5 % (issue 24), bounded here per file at half a per cent above what was measured where that
+ * 5 % (docs/models.md section 14), bounded here per file at half a per cent above what was measured where that
  * is lower (docs/models.md 14.2 has the figures), so that a change that loses what the
  * derivation gained fails. The springs model is identified on the ring and the ring's
  * pretension raised until their contact lengths grow alike; the cam's Q_RA1, Q_RA2 and, for a
