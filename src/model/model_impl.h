@@ -178,6 +178,12 @@ static inline const unsigned char *tirenv_model__get(const unsigned char *p, voi
     return p + n;
 }
 
+/* A state that is a load alone (rigid, point): the load at buf into *G, refused (naming the
+ * type) unless a positive finite number, since it is the answer's F_z (bytes a host may have
+ * changed: docs/models.md section 1.7). */
+int tirenv_model__restore_load(const unsigned char *buf, const char *type, double *G,
+                               tirenv_diag *diag);
+
 /* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
  * R0 from its centre; 5 % covers a tread standing out of the free circle. */
 #define TIRENV_MODEL__REACH 1.05

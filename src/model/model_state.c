@@ -196,3 +196,15 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
     m->reach = tirenv_model_reach(m);
     return TIRENV_OK;
 }
+
+int tirenv_model__restore_load(const unsigned char *buf, const char *type, double *G,
+                               tirenv_diag *diag)
+{
+    double g;
+    tirenv_model__get(buf, &g, sizeof g);
+    if (!(g > 0 && isfinite(g)))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state", "not a %s state (its load %g N)",
+                            type, g);
+    *G = g;
+    return TIRENV_OK;
+}

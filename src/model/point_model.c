@@ -106,17 +106,9 @@ static void point_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &((const point_state *)state)->G, sizeof(double));
 }
 
-/* A load that is not a positive finite number (bytes a host changed) is refused: it is the
- * answer's F_z. */
 static int point_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
 {
-    double G;
-    tirenv_model__get(buf, &G, sizeof G);
-    if (!(G > 0 && isfinite(G)))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
-                            "not a point state (its load %g N)", G);
-    ((point_state *)state)->G = G;
-    return TIRENV_OK;
+    return tirenv_model__restore_load(buf, "point", &((point_state *)state)->G, diag);
 }
 
 static const tirenv_model_ops point_ops = {

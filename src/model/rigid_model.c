@@ -99,17 +99,9 @@ static void rigid_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &((const rigid_state *)state)->G, sizeof(double));
 }
 
-/* A load that is not a positive finite number (bytes a host changed) is refused: it is the
- * answer's F_z. */
 static int rigid_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
 {
-    double G;
-    tirenv_model__get(buf, &G, sizeof G);
-    if (!(G > 0 && isfinite(G)))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
-                            "not a rigid state (its load %g N)", G);
-    ((rigid_state *)state)->G = G;
-    return TIRENV_OK;
+    return tirenv_model__restore_load(buf, "rigid", &((rigid_state *)state)->G, diag);
 }
 
 static const tirenv_model_ops rigid_ops = {
