@@ -21,6 +21,13 @@ static void copy_system(tband *X, const tband *P)
     memcpy(X->T, P->T, sizeof X->T);
 }
 
+/* Whether the tread holds a factorised window system to probe (its last one, T->ap, with the
+ * tail and at least one band row). */
+static int holds_system(const tirenv_ring_tread *T)
+{
+    return T->ap_ok && T->ap.t == TAIL && T->ap.N > TAIL;
+}
+
 /* The belt's w outside the window of the last evaluation: the exterior's unloaded (w, u) that
  * the window's ends hold, -K_EE^-1 K_EW x_B, solved afresh (diagnostics only: it allocates).
  * Writes w_out for every node outside the window; nonzero if out of memory. */
@@ -138,7 +145,7 @@ int tirenv_ring__tread_refactor(tirenv_ring *r, size_t c, size_t *m_out, size_t 
     tband *S = &T->as, *P = &T->ap, *F = &T->win;
     const size_t N = P->N, t = P->t, W = BAND_P + 1;
     *m_out = N > t ? N - t : 0;
-    if (!T->ap_ok || t != TAIL || N < t + 1 || c >= N - t)
+    if (!holds_system(T) || c >= N - t)
         return -1;
     const size_t m = N - t;
     tband X;
@@ -181,7 +188,7 @@ int tirenv_ring__tread_factor_isa(const tirenv_ring *r, int *avx2)
     const tband *P = &T->ap;
     const size_t N = P->N, t = P->t;
     *avx2 = 0;
-    if (!T->ap_ok || t != TAIL || N < t + 1)
+    if (!holds_system(T))
         return -1;
     const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1);
     tband X[2] = {{0}};
@@ -228,7 +235,7 @@ int tirenv_ring__tread_fused_solve(const tirenv_ring *r, unsigned long seed, siz
     const tband *P = &T->ap;
     const size_t N = P->N, t = P->t, W = BAND_P + 1;
     *fused = 0, *n_restarts = 0;
-    if (!T->ap_ok || t != TAIL || N < t + 1)
+    if (!holds_system(T))
         return -1;
     const size_t m = N - t, n_ck = CK_LEN * (m / CKS + 1);
     lead = lead < m ? lead : m;
@@ -302,7 +309,7 @@ double tirenv_ring__tread_solve_residual(const tirenv_ring *r, unsigned long see
     const tirenv_ring_tread *T = r->tread;
     const tband *P = &T->ap;
     const size_t N = P->N, t = P->t, W = BAND_P + 1;
-    if (!T->ap_ok || t != TAIL || N < t + 1)
+    if (!holds_system(T))
         return -1;
     const size_t m = N - t;
     double *b = malloc(4 * N * sizeof *b);
