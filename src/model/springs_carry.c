@@ -239,6 +239,8 @@ int tirenv_springs__cc_carry_restore(tirenv_springs__cc *c, const tirenv_springs
         }
         c->warm_ids[m] = c->rows[q].id;
     }
+    /* the rows a held element may enter: tirenv_springs__cc_row_enter finds one by its vertex
+     * and t > 0 alone and writes it whole before use, so i, j and t only stand in */
     size_t r = k;
     for (size_t e = f0; kept && e <= f1; ++e)
         if (enter[e])
