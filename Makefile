@@ -73,7 +73,7 @@ test-asan: deps
 # per-processor clones; what a processor other than x86-64 compiles) in PORTABLE_BUILD: its
 # Release tests but the labels slow, install, slurm, interop and fuzz, then its envelopes
 # against BUILD's byte for byte (scripts/springs-bitcmp.sh: 75 cases, the springs model, the
-# ring and the rigid disc). About 4 minutes on 2 cores; not part of make test, which stays
+# ring and the rigid disc). 3 to 4 minutes on 2 cores; not part of make test, which stays
 # within 10 minutes.
 test-portable: cli
 	@cmake -S . -B $(PORTABLE_BUILD) -DCMAKE_BUILD_TYPE=Release -DTIRENV_PORTABLE=ON >/dev/null
