@@ -205,12 +205,14 @@ int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tiren
 int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
                                tirenv_diag *diag);
 
-/* What a user should hear about the last tirenv_model_set, one warning per line without a
- * final newline (the network: an input outside its training range, obstacles clamped to it),
- * or "" if nothing; and one line on what the model made of the ground (the network: the
- * equivalent cleats it saw), or "". Owned by the model, valid until the next set. After
+/* What a user should hear about the last tirenv_model_set and the evaluations since, one
+ * warning per line without a final newline (the network: an input outside its training range,
+ * obstacles clamped to it; the cam: the first position where it touched the ground higher
+ * above its lowest point than the tire's ELLIPS_MAX_STEP, docs/models.md section 7.5), or ""
+ * if nothing; and one line on what the model made of the ground (the network: the equivalent
+ * cleats it saw), or "". Owned by the model, valid until the next set or evaluation. After
  * tirenv_model_stream, which leaves the model unset, those of its windows: the obstacles of
- * every window so far, each counted once. */
+ * every window so far, each counted once, and the cam's over all its positions. */
 const char *tirenv_model_warnings(const tirenv_model *m);
 const char *tirenv_model_note(const tirenv_model *m);
 

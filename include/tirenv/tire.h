@@ -116,6 +116,10 @@ typedef struct {
     double order;          /* ELLIPS_ORDER: super-ellipse exponent c_e, > 1 */
     unsigned given;        /* TIRENV_CAM_* bits of the keys with a value of this tire's own (a
                             * .tir file read clears the others); the default tire has all */
+    double max_step;       /* ELLIPS_MAX_STEP: the highest road step the cam's shape is
+                            * declared for, m; where the cam touches the ground higher above
+                            * its lowest point, tirenv_model_warnings says so. 0: none
+                            * declared, no warning. It changes no result. */
 } tirenv_cam_params;
 
 /* Bits of tirenv_cam_params.given, one per cam key. */

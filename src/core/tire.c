@@ -183,7 +183,8 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
         (status = plausible("ELLIPS_SHIFT", c->shift, 0, 5, "(dimensionless)", diag)) ||
         (status = plausible("ELLIPS_LENGTH", c->length, 0, 10, "(dimensionless)", diag)) ||
         (status = plausible("ELLIPS_HEIGHT", c->height, 0, 10, "(dimensionless)", diag)) ||
-        (status = plausible("ELLIPS_ORDER", c->order, 1, 100, "(dimensionless)", diag)))
+        (status = plausible("ELLIPS_ORDER", c->order, 1, 100, "(dimensionless)", diag)) ||
+        (status = plausible("ELLIPS_MAX_STEP", c->max_step, 0, s->R0, "m", diag)))
         return status;
     return TIRENV_OK;
 }

@@ -339,6 +339,10 @@ typedef struct {
     double z_cap;               /* the profile's highest vertex, m: bounds the scan */
     tirenv_cam__sweep sweep;    /* drop floor and tangency memo, shared by the two cams */
     tirenv_cam__track front, rear; /* where each cam was */
+    /* The first position since the set where a cam touched the ground more than the tire's
+     * ELLIPS_MAX_STEP above its lowest point (m; NAN: none), and that height (m). */
+    double step_x, step_dz;
+    char said[320];             /* tirenv_model_warnings' text, made when asked */
 } cam_state;
 
 static void *cam_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
@@ -358,6 +362,7 @@ static void *cam_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
         return NULL;
     }
     tirenv_cam__sweep_init(&st->sweep, &st->cam);
+    st->step_x = st->step_dz = NAN;
     return st;
 }
 
@@ -492,7 +497,34 @@ static int cam_set(void *state, const tirenv_profile *p, double load, double z_f
      * as they are (any content gives the same results), but a fresh start is tidier. */
     tirenv_cam__sweep_forget(&st->sweep);
     st->front = st->rear = (tirenv_cam__track){0};
+    st->step_x = st->step_dz = NAN;
     return TIRENV_OK;
+}
+
+/* Another window of the same road (streaming): its warning, if any, stays. */
+static int cam_set_profile(void *state, const tirenv_profile *p, double load, double z_flat,
+                           tirenv_diag *diag)
+{
+    cam_state *st = state;
+    const double step_x = st->step_x, step_dz = st->step_dz;
+    const int status = cam_set(state, p, load, z_flat, diag);
+    st->step_x = step_x;
+    st->step_dz = step_dz;
+    return status;
+}
+
+/* MF-Swift's ELLIPS_MAX_STEP is the highest road step a cam shape is meant for: a cam
+ * touching the ground higher above its lowest point (pz - Z) rests on a part of its flank
+ * that steps of that height never reached. The first such position is kept for the warning;
+ * nothing is asked of the lift where the tire declares no limit. */
+static void step_check(cam_state *st, double x, double Z_f, double pz_f, double Z_r,
+                       double pz_r)
+{
+    const double dz = fmax(pz_f - Z_f, pz_r - Z_r);
+    if (dz > st->tire.cam.max_step && isnan(st->step_x)) {
+        st->step_x = x;
+        st->step_dz = dz;
+    }
 }
 
 /* Positions usually come in order, so each cam keeps a track, and the two share the sweep's
@@ -503,10 +535,16 @@ static int cam_eval(void *state, double x, tirenv_point *out, tirenv_diag *diag)
     cam_state *st = state;
     if (!isfinite(x))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "x", "must be finite, got %g", x);
+    const int check = st->tire.cam.max_step > 0;
+    double px, pz_f = 0, pz_r = 0;
     const double Z_f = tirenv_cam__lift(&st->cam, st->prof, x + 0.5 * st->l_s, st->z_cap,
-                                        &st->sweep, &st->front, NULL, NULL);
+                                        &st->sweep, &st->front, check ? &px : NULL,
+                                        check ? &pz_f : NULL);
     const double Z_r = tirenv_cam__lift(&st->cam, st->prof, x - 0.5 * st->l_s, st->z_cap,
-                                        &st->sweep, &st->rear, NULL, NULL);
+                                        &st->sweep, &st->rear, check ? &px : NULL,
+                                        check ? &pz_r : NULL);
+    if (check)
+        step_check(st, x, Z_f, pz_f, Z_r, pz_r);
     const double w = 0.5 * (Z_f + Z_r), tan_beta = (Z_f - Z_r) / st->l_s;
     *out = (tirenv_point){.x = x, .z = st->z_flat + w, .h = w, .fx = -st->G * tan_beta,
                           .fz = st->G, .contacts = 2, .iterations = 0};
@@ -531,7 +569,21 @@ static int cam_set_load(void *state, double load, double *z_flat, tirenv_diag *d
     return cam_load(state, load, z_flat, diag);
 }
 
-/* The load and what follows from it; the tracks and the memo change no bit of a lift. */
+static const char *cam_warnings(const void *state)
+{
+    cam_state *st = (cam_state *)state;  /* its text buffer only */
+    if (isnan(st->step_x))
+        return "";
+    snprintf(st->said, sizeof st->said,
+             "at x = %.6g m a cam touches the ground %.4g mm above its lowest point, higher "
+             "than the tire's ELLIPS_MAX_STEP (%.4g mm), the highest road step its shape is "
+             "meant for: from there on its curve may extrapolate that shape",
+             st->step_x, 1e3 * st->step_dz, 1e3 * st->tire.cam.max_step);
+    return st->said;
+}
+
+/* The load and what follows from it; the tracks and the memo change no bit of a lift, and
+ * the warning is of the evaluations since the set, whatever was restored between. */
 static size_t cam_state_size(const void *state)
 {
     (void)state;
@@ -576,13 +628,14 @@ static const tirenv_model_ops cam_ops = {
     .flat = cam_flat,
     .load_for_contact_length = cam_load_for_contact_length,
     .set = cam_set,
-    .set_profile = cam_set,
+    .set_profile = cam_set_profile,
     .set_load = cam_set_load,
     .eval = cam_eval,
     .reach = cam_reach,
     .state_size = cam_state_size,
     .state_save = cam_state_save,
     .state_restore = cam_state_restore,
+    .warnings = cam_warnings,
 };
 
 enum { CAM_PARAMS = sizeof cam_params / sizeof cam_params[0] };

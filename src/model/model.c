@@ -172,8 +172,11 @@ const tirenv_profile *tirenv_model_profile(const tirenv_model *m)
 
 const char *tirenv_model_warnings(const tirenv_model *m)
 {
-    return (m->ready || m->streamed) && m->type->network ? m->type->network->warnings(m->state)
-                                                          : "";
+    if (!(m->ready || m->streamed))
+        return "";
+    if (m->type->network)
+        return m->type->network->warnings(m->state);
+    return m->type->ops->warnings ? tirenv_model__tracks_warnings(m) : "";
 }
 
 const char *tirenv_model_note(const tirenv_model *m)

@@ -52,6 +52,9 @@ typedef struct {
     size_t (*state_size)(const void *state);
     void (*state_save)(const void *state, unsigned char *buf);
     int (*state_restore)(void *state, const unsigned char *buf, tirenv_diag *diag);
+    /* What a user should hear about the evaluations since the last set (tirenv_model_warnings;
+     * a network's are its own, tirenv_model_network); NULL: never anything. */
+    const char *(*warnings)(const void *state);
 } tirenv_model_ops;
 
 /* The tire parameters a fit identifies (tirenv_model_type_params): the first n by default,
@@ -138,6 +141,9 @@ struct tirenv_model {
 /* stream.c: tells every track's state that the profiles set from now on are windows of one
  * road (w), or whole again (NULL); a no-op for a type without a network. */
 void tirenv_model__stream_window(tirenv_model *m, const tirenv_nn_road_window *w);
+
+/* tracks.c: the first of the tracks' states' own warnings (ops->warnings) that is not "". */
+const char *tirenv_model__tracks_warnings(const tirenv_model *m);
 
 /* Private to model.c and tracks.c: a new type state for a further track, told what the first
  * was told (network, contact length, extrapolation); NULL if out of memory or the network

@@ -339,6 +339,16 @@ double tirenv_model__tracks_max_height(const tirenv_model *m, double x0, double 
     return top;
 }
 
+const char *tirenv_model__tracks_warnings(const tirenv_model *m)
+{
+    const char *(*said)(const void *state) = m->type->ops->warnings;
+    const char *w = said(m->state);
+    const struct tirenv_model__tracks *t = m->tracks;
+    for (size_t k = 1; !w[0] && t && k < m->n_tracks && k < t->cap; ++k)
+        w = said(t->state[k]);
+    return w;
+}
+
 size_t tirenv_model_tracks(const tirenv_model *m)
 {
     return m->ready ? m->n_tracks : 0;

@@ -11,6 +11,9 @@
 #include "testutil.h"
 
 #include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -897,10 +900,14 @@ static void test_mfswift_file(void **state)
     expected.cam = (tirenv_cam_params){.c_z = 209651.5, .fnomin = 4000, .q_fz2 = 0,
                                        .q_ra1 = 0.6715, .q_ra2 = 0.7308,
                                        .shift = 0.8328, .length = 1.4634, .height = 0.9551,
-                                       .order = 1.5257, .given = TIRENV_CAM_ALL};
+                                       .order = 1.5257, .given = TIRENV_CAM_ALL,
+                                       .max_step = 0.025};
     assert_memory_equal(&t.springs, &expected.springs, sizeof t.springs);
     assert_memory_equal(&t.ring, &expected.ring, sizeof t.ring);
-    assert_memory_equal(&t.cam, &expected.cam, sizeof t.cam);
+    /* up to given, then max_step: not the padding between */
+    assert_memory_equal(&t.cam, &expected.cam,
+                        offsetof(tirenv_cam_params, given) + sizeof t.cam.given);
+    assert_true(t.cam.max_step == expected.cam.max_step);
     tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
     assert_non_null(m);
     tirenv_flat f;
@@ -909,6 +916,67 @@ static void test_mfswift_file(void **state)
                   f.deflection * 1e3, f.contact_length);
     assert_near(f.contact_length, 0.131753, 1e-6, 0);
     tirenv_model_free(m);
+}
+
+/* ELLIPS_MAX_STEP changes no result; where a cam first touches the ground more than that
+ * above its lowest point (the cleat's edge, at the curve's first rise), the warnings say
+ * where and how high, and a set on other ground starts afresh. */
+static void max_step_sweep(double max_step, double H, tirenv_point pt[], size_t n,
+                           char said[], size_t said_size)
+{
+    tirenv_tire t = tirenv_tire_default();
+    t.cam.max_step = max_step;
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    tirenv_model *m = tirenv_model_alloc(tirenv_model_cam, &t);
+    tirenv_profile *tall = tirenv_profile_cleat(0.10, H), *low = tirenv_profile_cleat(0.10, 0.01);
+    assert_non_null(m);
+    assert_non_null(tall);
+    assert_non_null(low);
+    double *x = malloc(n * sizeof *x);
+    assert_non_null(x);
+    for (size_t k = 0; k < n; ++k)
+        x[k] = -1.5 + 1e-3 * (double)k;
+    assert_int_equal(tirenv_model_set(m, tall, 17900, &diag), TIRENV_OK);
+    assert_string_equal(tirenv_model_warnings(m), "");  /* nothing evaluated yet */
+    assert_int_equal(tirenv_model_envelope(m, n, x, pt, NULL, &diag), TIRENV_OK);
+    snprintf(said, said_size, "%s", tirenv_model_warnings(m));
+    assert_int_equal(tirenv_model_set(m, low, 17900, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_model_envelope(m, n, x, pt + n, NULL, &diag), TIRENV_OK);
+    assert_string_equal(tirenv_model_warnings(m), "");
+    free(x);
+    tirenv_profile_free(tall);
+    tirenv_profile_free(low);
+    tirenv_model_free(m);
+}
+
+static void test_max_step(void **state)
+{
+    (void)state;
+    enum { N = 1501 };
+    tirenv_point *a = malloc(2 * N * sizeof *a), *b = malloc(2 * N * sizeof *b);
+    assert_non_null(a);
+    assert_non_null(b);
+    char said[512];
+    max_step_sweep(0, 0.03, a, N, said, sizeof said);
+    assert_string_equal(said, "");  /* none declared */
+    max_step_sweep(0.025, 0.02, b, N, said, sizeof said);
+    assert_string_equal(said, "");  /* lower than declared */
+    assert_memory_equal(a + N, b + N, N * sizeof *a);
+    max_step_sweep(0.025, 0.03, b, N, said, sizeof said);
+    assert_memory_equal(a, b, 2 * N * sizeof *a);  /* the same points, warned or not */
+    size_t first = 0;
+    while (first < N && !(a[first].h > 0))
+        ++first;
+    assert_true(first < N);
+    double x = NAN, dz = NAN;
+    print_message("%s\n", said);
+    assert_int_equal(sscanf(said, "at x = %lf m a cam touches the ground %lf mm", &x, &dz), 2);
+    assert_true(fabs(x - a[first].x) < 1e-6);  /* as printed, %.6g */
+    assert_true(dz > 25 && dz <= 30);
+    assert_non_null(strstr(said, "ELLIPS_MAX_STEP (25 mm)"));
+    free(a);
+    free(b);
 }
 
 int main(void)
@@ -931,6 +999,7 @@ int main(void)
         cmocka_unit_test(test_model_sweep_exact),
         cmocka_unit_test(test_tire_check),
         cmocka_unit_test(test_mfswift_file),
+        cmocka_unit_test(test_max_step),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -353,7 +353,8 @@ static void test_205_identified_on_both(void **state)
                      TIRENV_OK);
     print_message("205/60R15 on ring and cam: c_r %.6g, c_b %.6g, k_s %.6g, F_s0 %.6g\n",
                   id.springs.c_r, id.springs.c_b, id.springs.k_s, id.springs.F_s0);
-    assert_memory_equal(&id.cam, &t.cam, sizeof t.cam);
+    assert_memory_equal(&id.cam, &t.cam, offsetof(tirenv_cam_params, given) + sizeof t.cam.given);
+    assert_true(id.cam.max_step == t.cam.max_step);
     assert_memory_equal(&id.ring, &t.ring, sizeof t.ring);
     tirenv_flat c[N_LOADS];
     flat_states(tirenv_model_cam, &t, N_LOADS, loads, c);
