@@ -71,7 +71,7 @@ static int timed_stream(tirenv_model *m, const tirenv_model_type *type,
     const double x_to = x_from + (double)(n - 1) * dx, t0 = cli_wall_seconds();
     const int status =
         jobs > 1 ? cli_stream_chunks(m, type, NULL, 1, next_vertex, &v, x_from, x_to, dx, load,
-                                     jobs, compare_point, &c, diag)
+                                     jobs, compare_point, &c, NULL, 0, diag)
                  : tirenv_model_stream_tracks(m, 1, NULL, next_vertex, &v, x_from, x_to, dx,
                                               load, compare_point, &c, NULL, diag);
     *seconds = fmin(*seconds, cli_wall_seconds() - t0);

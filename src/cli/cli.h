@@ -278,8 +278,11 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
  * own flat-ground contact length. Needs one of them; returns an exit code. */
 int cli_load(const cli_options *o, tirenv_model *m, double *load);
 
-/* Prints the model's warnings of its last set, one "tirenv: CMD: warning: ..." line each. */
+/* Prints the model's warnings (tirenv_model_warnings), one "tirenv: CMD: warning: ..." line
+ * each. */
 void cli_model_warnings(const char *cmd, const tirenv_model *m);
+/* Lines of warnings ("" or one a line), each as "tirenv: CMD: warning: ..." on stderr. */
+void cli_warnings(const char *cmd, const char *warnings);
 
 /* Positions from x_from to x_to (m) every dx (m), allocated (free it); at most
  * CLI_MAX_POSITIONS, beyond which a sweep is surely a typo in --dx. Prints why and returns an

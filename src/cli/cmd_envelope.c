@@ -411,6 +411,7 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     if (code)
         return code;
     tirenv_profile_file_reader *in_level[CLI_MAX_TRACKS] = {NULL};
+    char said[1024] = "";  /* the chunks' models' warnings */
     status = level_open(r, m, in_level, &so, &diag);
     if (!status && r->out_format != TIRENV_PROFILE_CSV) {
         status = road_out_open(r, m, load, x_from, dx, n, &so.road, &diag);
@@ -427,7 +428,8 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
             CLI_CHUNK * dx <= CLI_STREAM_CHUNK_SPAN_M;
         status = chunked ? cli_stream_chunks(m, r->type, o, r->road.n,
                                              tirenv_profile_file_reader_source, in, x_from,
-                                             x_to, dx, load, o->jobs, stream_row, &so, &diag)
+                                             x_to, dx, load, o->jobs, stream_row, &so,
+                                             said, sizeof said, &diag)
                          : tirenv_model_stream_tracks(m, r->road.n, NULL,
                                                       tirenv_profile_file_reader_source, in,
                                                       x_from, x_to, dx, load, stream_row, &so,
@@ -456,7 +458,11 @@ static int envelope_stream(const run *r, tirenv_model *m, double load)
     }
     if (status)
         return cli_fail(status, &diag);
-    cli_model_warnings(r->cmd, m);  /* the network's, over the windows: after the rows */
+    /* The network's over the windows, the cam's over the positions: after the rows. */
+    if (said[0])
+        cli_warnings(r->cmd, said);
+    else
+        cli_model_warnings(r->cmd, m);
     summary(r->cmd, m, o, load, &so.t);
     return CLI_EXIT_OK;
 }
@@ -625,7 +631,10 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
     }
     if (status)
         code = cli_fail(status, &diag);
-    else
+    /* What the evaluations had to say (the cam's; a network's are its set's, said above). */
+    else if (!(tirenv_model_type_flags(r->type) & TIRENV_MODEL_NEEDS_NETWORK))
+        cli_warnings(r->cmd, cli_chunks_warnings(c));
+    if (!status)
         summary(r->cmd, m, o, load, &t);
     cli_chunks_free(c);
     free(pt[0]);

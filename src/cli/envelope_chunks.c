@@ -7,10 +7,13 @@
  * model on the tracks again, which leaves it as cold as the first set did. A streamed sweep
  * (envelope_stream.c) gives each chunk tracks of its own, windows of the road: its model is
  * set on them, then (one track) restored to the cold state. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/envelope_chunks.h"
+
+enum { CLI_CHUNK_SAID = 1024 }; /* bytes of a model's warnings kept */
 
 struct cli_chunks {
     size_t jobs;
@@ -29,6 +32,9 @@ struct cli_chunks {
     tirenv_point *pt;
     int (*side)(void *side_ctx, tirenv_diag *diag);  /* item 0 if not NULL */
     void *side_ctx;
+    char (*said)[CLI_CHUNK_SAID]; /* [n_said], each chunk's warnings in the call under way */
+    size_t n_said;
+    char warnings[CLI_CHUNK_SAID]; /* the first chunk's that had any (cli_chunks_warnings) */
 };
 
 void cli_chunks_free(cli_chunks *c)
@@ -40,6 +46,7 @@ void cli_chunks_free(cli_chunks *c)
     free(c->models);
     free(c->x);
     free(c->cold);
+    free(c->said);
     free(c);
 }
 
@@ -123,6 +130,8 @@ static int chunk(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
         status = tirenv_model_state_restore(m, c->cold, c->cold_size, diag);
     if (!status)
         status = tirenv_model_envelope(m, n, x, c->pt + item * CLI_CHUNK, NULL, diag);
+    if (!status)
+        snprintf(c->said[item], sizeof c->said[item], "%s", tirenv_model_warnings(m));
     /* A window is freed after its round: the model must not point at it then. */
     if (c->windows)
         tirenv_model_set_profile(m, NULL, NULL);
@@ -151,9 +160,24 @@ int cli_chunks_run_on(cli_chunks *c, size_t c0, size_t n_c,
     }
     if (n_c > n_chunks - c0)
         n_c = n_chunks - c0;
+    if (n_c > c->n_said) {
+        void *said = realloc(c->said, n_c * sizeof *c->said);
+        if (!said)
+            return no_memory(diag);
+        c->said = said;
+        c->n_said = n_c;
+    }
     c->c0 = c0;
     c->pt = pt;
     const size_t end = (c0 + n_c) * CLI_CHUNK;
     *n_out = (end < c->n ? end : c->n) - c0 * CLI_CHUNK;
-    return tirenv_parallel_for(n_c + (side != NULL), c->jobs, chunk, NULL, c, diag);
+    const int status = tirenv_parallel_for(n_c + (side != NULL), c->jobs, chunk, NULL, c, diag);
+    for (size_t i = 0; !status && !c->warnings[0] && i < n_c; ++i)
+        memcpy(c->warnings, c->said[i], sizeof c->warnings);
+    return status;
+}
+
+const char *cli_chunks_warnings(const cli_chunks *c)
+{
+    return c->warnings;
 }

@@ -46,6 +46,11 @@ int cli_chunks_run_on(cli_chunks *c, size_t c0, size_t n_c,
                       int (*side)(void *side_ctx, tirenv_diag *diag), void *side_ctx,
                       tirenv_diag *diag);
 
+/* What the chunks' models had to say (tirenv_model_warnings after each chunk): the first
+ * chunk's in position order that said anything, so the same whatever the threads; "" if
+ * none. Valid until cli_chunks_free. */
+const char *cli_chunks_warnings(const cli_chunks *c);
+
 /* Frees the models it made (not m). NULL does nothing. */
 void cli_chunks_free(cli_chunks *c);
 

@@ -20,6 +20,7 @@
  * not going back, at most two rows at one x), as the serial stream's does, so both refuse an
  * unchecked source's rows with the same messages. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "cli/envelope_chunks.h"
@@ -95,7 +96,8 @@ static int beside(void *ctx, tirenv_diag *diag)
 int cli_stream_chunks(tirenv_model *m, const tirenv_model_type *type, const cli_options *o,
                       size_t n_tracks, tirenv_row_source source, void *source_ctx,
                       double x_from, double x_to, double dx, double load, size_t jobs,
-                      tirenv_point_sink sink, void *sink_ctx, tirenv_diag *diag)
+                      tirenv_point_sink sink, void *sink_ctx, char *warnings,
+                      size_t warnings_size, tirenv_diag *diag)
 {
     const size_t n = tirenv_positions_count(x_from, x_to, dx);
     if (n_tracks == 0 || n == 0)
@@ -154,6 +156,8 @@ int cli_stream_chunks(tirenv_model *m, const tirenv_model_type *type, const cli_
         status = beside(&s, diag);
     /* The caller's model points at none of these profiles once they are freed. */
     tirenv_model_set_profile(m, NULL, NULL);
+    if (warnings && warnings_size)
+        snprintf(warnings, warnings_size, "%s", c ? cli_chunks_warnings(c) : "");
     cli_chunks_free(c);
     for (int b = 0; b < 2; ++b) {
         windows_free(s.win[b], s.round * n_tracks);

@@ -24,10 +24,12 @@
  * Memory: two rounds of chunk windows (each the rows from x_k0 - r to x_k1 + r, r the model's
  * reach) and of points, whatever the road's length. Not for a network (its windows are told
  * where they sit in the road: run it through tirenv_model_stream_tracks). On failure the
- * first in position order: a row the source refuses counts before the chunk it was read for. */
+ * first in position order: a row the source refuses counts before the chunk it was read for.
+ * warnings (warnings_size bytes, may be NULL) receives cli_chunks_warnings'. */
 int cli_stream_chunks(tirenv_model *m, const tirenv_model_type *type, const cli_options *o,
                       size_t n_tracks, tirenv_row_source source, void *source_ctx,
                       double x_from, double x_to, double dx, double load, size_t jobs,
-                      tirenv_point_sink sink, void *sink_ctx, tirenv_diag *diag);
+                      tirenv_point_sink sink, void *sink_ctx, char *warnings,
+                      size_t warnings_size, tirenv_diag *diag);
 
 #endif

@@ -374,7 +374,11 @@ int cli_model(const tirenv_model_type *type, const tirenv_tire *tire, const cli_
 
 void cli_model_warnings(const char *cmd, const tirenv_model *m)
 {
-    const char *w = tirenv_model_warnings(m);
+    cli_warnings(cmd, tirenv_model_warnings(m));
+}
+
+void cli_warnings(const char *cmd, const char *w)
+{
     while (*w) {
         const size_t len = strcspn(w, "\n");
         fprintf(stderr, "tirenv: %s: warning: %.*s\n", cmd, (int)len, w);

@@ -53,6 +53,25 @@ check "envelope --stream over a malformed profile: exit 2 naming file:line, no f
     '[ $rc -eq 2 ] && grep -q "late.csv:4" err && no_file o.csv'
 run "$bin" envelope --model rigid --cleat 0.1,0.02 --load 1e4 --stream -o o.csv
 check "envelope --stream without --profile: exit 1" '[ $rc -eq 1 ] && no_file o.csv'
+# ELLIPS_MAX_STEP: a 40 mm cleat 30 m down a 40 m road, beyond the first chunks; each way of
+# sweeping it names the same first position, and the curve is the same bytes.
+awk 'BEGIN { print "x_m,z_m"; for (k = 0; k <= 4000; ++k)
+             printf "%.2f,%s\n", k / 100, (k >= 3000 && k < 3020) ? "0.04" : "0" }' >step.csv
+for way in "--jobs 1" "--jobs 2" "--jobs 1 --stream" "--jobs 2 --stream"; do
+    tag=$(echo $way | tr -d ' -')
+    run "$bin" envelope --model cam --profile step.csv --load 12000 --dx 0.01 \
+        --set ELLIPS_MAX_STEP=0.025 $way -o step_$tag.csv
+    grep "warning" err >step_$tag.warn
+done
+check "ELLIPS_MAX_STEP: one warning at the cleat, the same whatever the jobs and --stream" \
+    '[ $rc -eq 0 ] && [ $(wc -l <step_jobs1.warn) -eq 1 ] &&
+     grep -q "at x = 29\.[0-9]* m a cam touches the ground .* mm above its lowest point" step_jobs1.warn &&
+     grep -q "ELLIPS_MAX_STEP (25 mm)" step_jobs1.warn &&
+     cmp -s step_jobs1.warn step_jobs2.warn && cmp -s step_jobs1.warn step_jobs1stream.warn &&
+     cmp -s step_jobs1.warn step_jobs2stream.warn && cmp -s step_jobs1.csv step_jobs2stream.csv'
+run "$bin" envelope --model cam --profile step.csv --load 12000 --dx 0.01 -o step_none.csv
+check "without ELLIPS_MAX_STEP: no warning, the same curve" \
+    '[ $rc -eq 0 ] && ! grep -q warning err && cmp -s step_none.csv step_jobs1.csv'
 run "$bin" help
 check "help lists road" '[ $rc -eq 0 ] && grep -q "^  road " out'
 
