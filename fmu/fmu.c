@@ -196,6 +196,8 @@ fmi2Status fmu__set_load(fmu_instance *f, double load)
         snprintf(what, sizeof what, "load %.9g N", load);
         return fmu__fail_diag(f, what, &diag);
     }
+    if (!on_road)
+        f->warned = 0;  /* a new set: its warnings are new */
     f->v.model_set = 1;
     f->v.load_set = load;
     return fmi2OK;
@@ -218,6 +220,11 @@ fmi2Status fmu__evaluate(fmu_instance *f)
         snprintf(what, sizeof what, "%s model at x = %.9g m, load %.9g N", v->model, v->x,
                  v->load);
         return fmu__fail_diag(f, what, &diag);
+    }
+    const char *said = tirenv_model_warnings(f->m);
+    if (said[0] && !f->warned) {  /* once: it stays until the next set */
+        fmu__log(f, fmi2Warning, "logAll", "%s model at x = %.9g m: %s", v->model, v->x, said);
+        f->warned = 1;
     }
     v->h = p.h;
     v->slope = p.slope;

@@ -65,6 +65,7 @@ typedef struct {
     tirenv_tire tire;
     tirenv_profile *road;
     tirenv_model *m;
+    int warned;  /* the model's warnings since its last set are logged (a cam's step) */
 } fmu_instance;
 
 /* ---- the variables (variables.c) ---- */

@@ -583,6 +583,41 @@ static void test_cam_alone(const char *road, const char *tir)
     }
 }
 
+/* The cam on a tire whose ELLIPS_MAX_STEP (25 mm) is lower than the 0.1 m cleat: a warning
+ * naming the key is logged once, at the step where a cam first touches the cleat's edge (the
+ * first where h rises), however many steps follow. */
+static void test_cam_max_step(const char *road)
+{
+    char tir[256];
+    snprintf(tir, sizeof tir, "%s/step.tir", dir);
+    FILE *fp = fopen(tir, "w");
+    if (fp) {
+        fputs("[DIMENSION]\nUNLOADED_RADIUS = 0.3135\n[VERTICAL]\nFNOMIN = 4000\n"
+              "VERTICAL_STIFFNESS = 209651.5\n[CONTACT_PATCH]\nQ_RA1 = 0.6715\n"
+              "Q_RA2 = 0.7308\nELLIPS_SHIFT = 0.8328\nELLIPS_LENGTH = 1.4634\n"
+              "ELLIPS_HEIGHT = 0.9551\nELLIPS_ORDER = 1.5257\nELLIPS_MAX_STEP = 0.025\n", fp);
+        fclose(fp);
+    }
+    fmi2Status st = fmi2Error;
+    fmi2Component c = start_tire("cam", road, tir, -0.8, 4000, &st);
+    int warned = 0, first = -1, rise = -1;
+    for (int k = 0; k <= 800 && st == fmi2OK; ++k) {
+        double out[8] = {0};
+        last_log[0] = '\0';
+        if ((st = step(c, k * 1e-3, -0.8 + 1e-3 * k, 4000, out)) != fmi2OK)
+            break;
+        if (logged("ELLIPS_MAX_STEP") && warned++ == 0)
+            first = k;
+        if (out[0] > 0 && rise < 0)
+            rise = k;
+    }
+    check(st == fmi2OK && warned == 1 && first > 0 && first == rise,
+          "cam over a cleat higher than ELLIPS_MAX_STEP: warned %d time(s), at step %d, where "
+          "h first rises (step %d)", warned, first, rise);
+    if (c)
+        api.free_instance(c);
+}
+
 /* The cam on a tire file without MF-Swift's cam shape keys: refused at initialization,
  * naming them and the file (it ran with the default tire's shape), as the CLI refuses it; the
  * springs model, which does not need them, runs on the same file. */
@@ -727,6 +762,7 @@ int main(int argc, char *argv[])
     test_state_with_load_changes(road);
     test_errors(road);
     test_cam_keys(road);
+    test_cam_max_step(road);
     if (argc > 3)
         test_cam_alone(road, argv[3]);
 
