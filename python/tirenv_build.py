@@ -147,6 +147,7 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
                                          tirenv_diag *diag);
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
+const char *tirenv_model_warnings(const tirenv_model *m);
 
 /* tracks.h: tracks across the tire's width */
 int tirenv_tracks_spread(size_t n, double v, double width, double v_out[], tirenv_diag *diag);

@@ -200,3 +200,28 @@ def test_network_equals_cli_predict(cli, network_file, tmp_path):
     assert road.obstacles == 1
     assert np.allclose(h_road, h, rtol=0, atol=1e-9)  # one cleat: the cleat's own curve
     assert np.all(np.isfinite(slope))
+
+
+def test_cam_warns_above_its_max_step():
+    """A cam touching the ground higher above its lowest point than ELLIPS_MAX_STEP: one
+    TirenvWarning naming the key, at the curve's first rise; the same curve as without it;
+    a lower cleat after set() warns of nothing."""
+    plain = tirenv.Model("cam", tirenv.Tire())
+    m = tirenv.Model("cam", tirenv.Tire(set={"ELLIPS_MAX_STEP": 0.025}))
+    assert m.tire["ELLIPS_MAX_STEP"] == 0.025
+    load = m.load_for_contact_length(LC)
+    x = tirenv.positions(-1.0, 1.0, 0.001)
+    with pytest.warns(tirenv.TirenvWarning, match="ELLIPS_MAX_STEP") as caught:
+        m.set(tirenv.Profile.cleat(L, 0.03), load)
+        curve = m.envelope(x)
+        curve_again = m.envelope(x)   # the same warning is not issued twice
+    assert len([w for w in caught if issubclass(w.category, tirenv.TirenvWarning)]) == 1
+    assert curve.tobytes() == curve_again.tobytes()
+    assert len(m.warnings) == 1
+    rise = x[np.argmax(curve["h_m"] > 0)]
+    assert abs(float(m.warnings[0].split("x = ")[1].split(" m")[0]) - rise) < 1e-6
+    plain.set(tirenv.Profile.cleat(L, 0.03), load)
+    assert plain.envelope(x).tobytes() == curve.tobytes() and plain.warnings == ()
+    m.set(tirenv.Profile.cleat(L, 0.02), load)
+    m.envelope(x)
+    assert m.warnings == ()

@@ -27,8 +27,9 @@ def test_network_outside_its_range(network_file):
         m.set(tall, m.load_for_contact_length(0.33))
     assert e.value.field == "obstacle height" and "0.2 m is outside" in e.value.message
     m = tirenv.Model("nn", network=net, extrapolate=True)
-    m.set(tall, m.load_for_contact_length(0.33))
-    assert len(m.sweep()) > 0
+    with pytest.warns(tirenv.TirenvWarning, match="0.2 m is outside"):
+        m.set(tall, m.load_for_contact_length(0.33))
+    assert len(m.sweep()) > 0 and any("extrapolation" in w for w in m.warnings)
 
 
 def test_ride_refusals():

@@ -10,12 +10,13 @@ the empirical network, the tractor ride and ISO 2631-1 comfort, over libtirenv (
 Errors of the library raise TirenvError carrying its diagnostic (file, line, field, message),
 as a subclass that is also the builtin exception expected: FileNotFoundError or OSError for a
 file, ValueError for a bad value or file content, MemoryError, RuntimeError for an iteration
-that did not converge. Functions of positions take a scalar and return a scalar, or an array
+that did not converge. What a model warns of while it computes (tirenv_model_warnings) is
+issued once as a TirenvWarning (the warnings module). Functions of positions take a scalar and return a scalar, or an array
 and return an array.
 Every long loop (an envelope over many positions, a ride) is one library call, during which
 cffi releases the GIL."""
 from ._c import (TirenvError, TirenvFileNotFoundError, TirenvMemoryError, TirenvOSError,
-                 TirenvRuntimeError, TirenvValueError, lib as _lib)
+                 TirenvRuntimeError, TirenvValueError, TirenvWarning, lib as _lib)
 from .model import Flat, Model, POINT_DTYPE, model_names, positions, track_positions
 from .network import Network, NetworkRoad
 from .profile import Profile
@@ -27,6 +28,7 @@ __version__ = (f"{_lib.TIRENV_VERSION_MAJOR}.{_lib.TIRENV_VERSION_MINOR}."
                f"{_lib.TIRENV_VERSION_PATCH}")
 
 __all__ = ["__version__", "TirenvError", "TirenvValueError", "TirenvOSError",
-           "TirenvFileNotFoundError", "TirenvMemoryError", "TirenvRuntimeError", "Tire",
+           "TirenvFileNotFoundError", "TirenvMemoryError", "TirenvRuntimeError", "TirenvWarning",
+           "Tire",
            "Model", "Profile", "Network", "NetworkRoad", "Vehicle", "Ride", "Flat", "Metrics", "ride", "comfort", "total_value", "positions",
            "track_positions", "model_names", "POINT_DTYPE", "SAMPLE_DTYPE"]

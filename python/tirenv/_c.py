@@ -57,6 +57,12 @@ class TirenvRuntimeError(TirenvError, RuntimeError):
     """An iteration stopped before meeting its tolerances."""
 
 
+class TirenvWarning(UserWarning):
+    """What a model warns of (tirenv_model_warnings): a network's input outside its training
+    range, a cam touching the ground higher above its lowest point than the tire's
+    ELLIPS_MAX_STEP. The result is computed all the same."""
+
+
 def error_class(status, file=""):
     """The TirenvError subclass for a status (and, for a file error, whether file exists)."""
     if status == lib.TIRENV_EIO:

@@ -2,10 +2,11 @@
 """Enveloping models over a profile at constant vertical load (tirenv/model.h)."""
 import collections
 import threading
+import warnings as _warnings
 
 import numpy as np
 
-from ._c import (ffi, lib, check, doubles, double_ptr, error_from, invalid, is_scalar,
+from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, error_from, invalid, is_scalar,
                  new_diag, one_or_all, struct_dtype)
 from .profile import Profile
 from .tire import Tire
@@ -110,6 +111,7 @@ class Model:
         self._lock = threading.Lock()
         self.profile = None   # the profile set: kept alive here, the library borrows it
         self.load = None
+        self._warned = ()     # the warnings issued since the last set
 
     @property
     def name(self):
@@ -162,11 +164,32 @@ class Model:
                                                   diag), diag)
                 # the first track gives the sweep's extent; all are kept alive with the model
                 self.profile, self.load, self._tracks = tracks[0], load, (tracks, w)
+                self._warned = ()
+            self._warn()
             return self
         with self._lock:
             check(lib.tirenv_model_set(self._m, profile._p, load, diag), diag)
             self.profile, self.load, self._tracks = profile, load, None
+            self._warned = ()
+        self._warn()
         return self
+
+    @property
+    def warnings(self):
+        """What the model warns of since the last set(), one line each (tirenv_model_warnings:
+        a network's input outside its training range, the cam touching the ground higher
+        above its lowest point than the tire's ELLIPS_MAX_STEP); () if nothing."""
+        with self._lock:
+            text = ffi.string(lib.tirenv_model_warnings(self._m)).decode()
+        return tuple(text.splitlines())
+
+    def _warn(self):
+        """Issues the warnings not issued since the last set() as TirenvWarning."""
+        said = self.warnings
+        new = [w for w in said if w not in self._warned]
+        self._warned = said
+        for w in new:
+            _warnings.warn(w, TirenvWarning, stacklevel=3)
 
     def envelope(self, x):
         """The equilibrium at each position x (m), in order, warm-started from the previous:
@@ -188,6 +211,7 @@ class Model:
             e = error_from(status, diag)
             e.index = failed[0]
             raise e
+        self._warn()
         return one_or_all(out, scalar)
 
     def sweep(self, x_from=None, x_to=None, dx=None):
