@@ -12,7 +12,7 @@ FUZZ_SECONDS ?= 60
 SKIP_LABELS ?=
 skip = $(if $(SKIP_LABELS),-LE '$(SKIP_LABELS)')
 
-.PHONY: all deps deps-test configure cli build wheel test test-asan test-portable test-slurm demo demo-study demo-study-205 \
+.PHONY: all deps deps-test configure cli build wheel test test-asan test-portable test-oldcpu test-slurm demo demo-study demo-study-205 \
         demo-ride bench fuzz python fmu install clean
 
 all: build
@@ -81,6 +81,13 @@ test-portable: cli
 	@cd $(PORTABLE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'slow|install|slurm|interop|fuzz'
 	@TIRENV_DATA=$(CURDIR)/data sh scripts/springs-bitcmp.sh $(BUILD)/tirenv $(PORTABLE_BUILD)/tirenv \
 	    $(PORTABLE_BUILD)/bitcmp
+
+# The CLI on an emulated x86-64 without AVX, AVX2 and FMA (qemu-x86_64 -cpu Nehalem), against
+# this machine's run (scripts/oldcpu.sh: the 75 envelopes of springs-bitcmp.sh byte for byte,
+# the 205/60R15 data set rebuilt). Installs qemu-user. About a minute; not part of make test.
+test-oldcpu: cli
+	@sh scripts/deps.sh --oldcpu
+	@TIRENV_DATA=$(CURDIR)/data sh scripts/oldcpu.sh $(BUILD)/tirenv $(BUILD)/oldcpu
 
 # The Python module in place under $(BUILD)/python (python/README.md), and the FMI 2.0
 # co-simulation FMU $(BUILD)/tirenv_effective_road.fmu (fmu/README.md); both are also part of

@@ -18,6 +18,8 @@ need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"
 # validates their descriptions with libxml2.
 need="$need libxml2-dev zlib1g-dev libminizip-dev"
 [ "${1:-}" = "--bench" ] && need="$need libfann-dev"
+# --oldcpu: qemu's user-mode emulator, for make test-oldcpu (an x86-64 without AVX and FMA).
+[ "${1:-}" = "--oldcpu" ] && need="$need qemu-user"
 # --slurm: Slurm and munge, for tests/sweep/slurm.sh (scripts/slurm/ on a private single-node
 # cluster). Optional: without them that test reports itself skipped, so a user who cannot
 # install them is told how and goes on.
