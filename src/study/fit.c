@@ -293,6 +293,14 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
             report->at_bound[i] = report->value[i] - lo <= 0.01 * scale ? -1 : 0;
         }
         *tire = c.tire;
+        /* A cam's shape holds up to the tallest obstacle it was identified on, which is what
+         * MF-Swift's ELLIPS_MAX_STEP says (docs/models.md section 7.5). */
+        if (type == tirenv_model_cam) {
+            tire->cam.max_step = 0;
+            for (size_t k = 0; k < c.n_cases; ++k)
+                tire->cam.max_step = fmax(tire->cam.max_step, ds->cases[c.cases[k]].H);
+            tire->cam.max_step = fmin(tire->cam.max_step, tire->springs.R0);  /* its range */
+        }
     }
     report->seconds = tirenv_study__wall_seconds() - t0;
     fit_free(&c, x, f, J, work, ipvt);

@@ -138,6 +138,12 @@ static void test_reports_bound(void **state)
         assert_true(rep.bound[3] == 1.0);
         for (size_t i = 0; i < 3; ++i)
             assert_int_equal(rep.at_bound[i], 0);
+        /* the tallest training cleat: the range the shape was identified on */
+        double H_max = 0;
+        for (size_t i = 0; i < ds.n; ++i)
+            if (ds.cases[i].split == TIRENV_SPLIT_TRAIN && ds.cases[i].H > H_max)
+                H_max = ds.cases[i].H;
+        assert_true(H_max > 0 && tire.cam.max_step == H_max);
         free_dataset(cases);
     }
 }
