@@ -42,4 +42,13 @@ run "$bin" ride --cleat 0.2,0.05 --speed 3 --dx 0.01 --model springs --envelopin
     --vehicle nocam.veh
 check "the springs model does not need them: exit 0" '[ $rc -eq 0 ]'
 
+# A tire whose ELLIPS_MAX_STEP (30 mm) is lower than the cleat: one warning an axle, naming the
+# key, not repeated for the load table's end rows, whose ground is the same.
+sed '/^ELLIPS_ORDER/a ELLIPS_MAX_STEP = 0.03' "$repo/data/tires/default.tir" > step.tir
+run "$bin" ride --cleat 0.3,0.1 --speed 5km/h --dx 0.01 --model cam \
+    --set "FRONT_AXLE.TIRE_FILE=$PWD/step.tir" --set "REAR_AXLE.TIRE_FILE=$PWD/step.tir"
+check "cam over a cleat above ELLIPS_MAX_STEP: exit 0, one warning an axle" \
+    '[ $rc -eq 0 ] && [ $(grep -c "warning: .*ELLIPS_MAX_STEP (30 mm)" err) -eq 2 ] &&
+     grep -q "cam model, front axle: at x = " err && grep -q "cam model, rear axle: at x = " err'
+
 clilib_done
