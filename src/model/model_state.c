@@ -126,7 +126,13 @@ int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tiren
     p = tirenv_model__put(p, &m->load, sizeof m->load);
     p = tirenv_model__put(p, &m->z_flat, sizeof m->z_flat);
     p = tirenv_model__put(p, &ready, 1);
-    m->type->ops->state_save(m->state, p);
+    /* An unset model's type bytes are never restored (only its being unset is), and its
+     * type may point at ground freed since (a streamed sweep's last window, which the
+     * springs model's save read): zeros. */
+    if (m->ready)
+        m->type->ops->state_save(m->state, p);
+    else
+        memset(p, 0, type_bytes(m));
     const uint64_t sum = checksum(buf, need);
     memcpy((unsigned char *)buf + need - sizeof sum, &sum, sizeof sum);
     return TIRENV_OK;
