@@ -328,14 +328,12 @@ static void springs_hostile(const tirenv_tire *tire, const char *label, springs_
     const int cont = tire->springs.contact == TIRENV_SPRINGS_CONTINUOUS;
     assert_int_equal(flat_bytes, 2 * sizeof(size_t) + N + 1 + sizeof(double));
     assert_true(cont ? model_bytes > flat_bytes : model_bytes == flat_bytes);
-    /* the window, active set, carry and memos; and the history's flags (deformable.c's
-     * record). Not the history's heights: with continuous contact, a state taken after a
-     * repeat at one x whose last height is changed to one where the tire barely touches
-     * (0.779 m, R0 0.78 m) gives at that x an equilibrium 1.006 mm above the state's, F_x
-     * 143 N off, as converged (the start at a repeated x gives up after changing the base,
-     * springs.c's tirenv_springs__start; no call sequence but a restore reaches it), so they
-     * are asked for finite answers alone (docs/models.md section 1.7) */
-    const size_t same[4][2] = {{HEAD + 104, HEAD + 112}, {HEAD + record, h.size}};
+    /* the history of equilibria and its flags (deformable.c's record: a last height where
+     * the tire barely touches, 0.779 m, gave 1.006 mm and 143 N off at the repeated x while
+     * a memo moved across a vertex kept its old walk's proof, springs_ray.c's
+     * memo_across); the window, active set, carry and memos */
+    const size_t same[4][2] = {{HEAD + 16, HEAD + 48}, {HEAD + 104, HEAD + 112},
+                               {HEAD + record, h.size}};
     memcpy(h.same, same, sizeof same);
     if (cover == SPRINGS_EVERY) {
         for (size_t at = HEAD; at + 2 * sizeof(uint64_t) <= h.size; ++at) {
