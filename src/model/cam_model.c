@@ -598,17 +598,41 @@ static void cam_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &st->l_s, sizeof st->l_s);
 }
 
-static int cam_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+/* The flat-ground height and the tandem base follow from the load (cam_load, the same bits
+ * as every set and load change give them), and the load and height are the head's too: a
+ * state where one of them is not what the load gives is refused, naming it. */
+static int cam_state_restore(void *state, const unsigned char *buf, double load, double z_flat,
+                             tirenv_diag *diag)
 {
     cam_state *st = state;
-    buf = tirenv_model__get(buf, &st->G, sizeof st->G);
-    buf = tirenv_model__get(buf, &st->z_flat, sizeof st->z_flat);
-    tirenv_model__get(buf, &st->l_s, sizeof st->l_s);
-    if (!(st->l_s > 0 && isfinite(st->l_s)) || !(st->G > 0 && isfinite(st->G)) ||
-        !(st->z_flat > 0 && isfinite(st->z_flat)))
+    double G, z_own, l_s;
+    buf = tirenv_model__get(buf, &G, sizeof G);
+    buf = tirenv_model__get(buf, &z_own, sizeof z_own);
+    tirenv_model__get(buf, &l_s, sizeof l_s);
+    if (!(l_s > 0 && isfinite(l_s)) || !(G > 0 && isfinite(G)) ||
+        !(z_own > 0 && isfinite(z_own)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "not a cam state (its load %g N, flat-ground height %g m, tandem "
-                            "base %g m)", st->G, st->z_flat, st->l_s);
+                            "base %g m)", G, z_own, l_s);
+    double rho = 0, a = 0;
+    const int status = cam_patch(&st->tire, &st->range, G, &rho, &a, diag);
+    if (status)
+        return status;
+    const double z_G = st->tire.springs.R0 - rho, l_G = st->tire.cam.shift * 2 * a;
+    const char *field = G != load       ? "its load is not the head's"
+                        : z_own != z_G  ? "its flat-ground height is not its load's"
+                        : z_flat != z_G ? "the head's flat-ground height is not its load's"
+                        : l_s != l_G    ? "its tandem base is not its load's"
+                                        : NULL;
+    if (field)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a cam state: %s (load %.17g N, head's %.17g N; flat-ground "
+                            "height %.17g m, head's %.17g m, the load's %.17g m; tandem base "
+                            "%.17g m, the load's %.17g m)",
+                            field, G, load, z_own, z_flat, z_G, l_s, l_G);
+    st->G = G;
+    st->z_flat = z_own;
+    st->l_s = l_s;
     return TIRENV_OK;
 }
 

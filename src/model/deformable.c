@@ -560,10 +560,14 @@ static void deformable_state_save(const void *state, unsigned char *buf)
 
 /* A state's bytes may have been changed by a host (docs/models.md section 1.7). What the
  * answers are made of, the load (within the model's range) and the flat-ground point (level
- * ground's answer), must be finite, or the state is refused. The history of equilibria only
- * says where the next solve begins: one that is not finite is dropped for the cold start,
- * whose answer meets the same tolerances. */
-static int deformable_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+ * ground's answer), must be finite, or the state is refused; so must the copies of one
+ * quantity agree, bit for bit as every set and load change writes them: the load and the
+ * head's, the flat-ground point's height and the record's z_flat, the hub's flat-ground
+ * height in the head and the record's less the series spring's deflection (deformable_set,
+ * _set_load). The history of equilibria only says where the next solve begins: one that is
+ * not finite is dropped for the cold start, whose answer meets the same tolerances. */
+static int deformable_state_restore(void *state, const unsigned char *buf, double load,
+                                    double z_flat, tirenv_diag *diag)
 {
     deformable_state *st = state;
     deformable_saved sv;
@@ -582,6 +586,17 @@ static int deformable_state_restore(void *state, const unsigned char *buf, tiren
                             "not a state of the %s model (its flat-ground point: z %g m, F_z "
                             "%g N, F_x %g N)",
                             st->type->name, f->z, f->F, f->fx);
+    const double z_hub = sv.z_flat - series_at(st, sv.G, NULL);
+    const char *field = sv.G != load      ? "its load is not the head's"
+                        : f->z != sv.z_flat ? "its flat-ground point's height is not its z_flat"
+                        : z_hub != z_flat   ? "the head's flat-ground height is not its hub's"
+                                            : NULL;
+    if (field)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a state of the %s model: %s (load %.17g N, head's %.17g N; "
+                            "z_flat %.17g m, its flat-ground point's %.17g m; the hub's %.17g "
+                            "m, head's %.17g m)",
+                            st->type->name, field, sv.G, load, sv.z_flat, f->z, z_hub, z_flat);
     if (!(isfinite(sv.x_prev) && isfinite(sv.z_prev)))
         sv.have_prev = sv.have_prev2 = 0;
     if (!(isfinite(sv.x_prev2) && isfinite(sv.z_prev2)))

@@ -48,10 +48,14 @@ typedef struct {
      * tirenv_model_state_save / _restore. state_size is fixed for an instance (it may depend
      * on the tire, never on what was evaluated); save writes exactly that many bytes; restore
      * reads them back into an instance of the same type and tire whose profile is set, and
-     * may fail with diag filled (then the instance is unset by the driver). */
+     * may fail with diag filled (then the instance is unset by the driver). load (N) and
+     * z_flat (m) are the driver's, from the state's head: a type that keeps its own copy, or
+     * what it follows from, refuses a state where the two disagree (docs/models.md section
+     * 1.7), so that the driver and the type never answer from two loads. */
     size_t (*state_size)(const void *state);
     void (*state_save)(const void *state, unsigned char *buf);
-    int (*state_restore)(void *state, const unsigned char *buf, tirenv_diag *diag);
+    int (*state_restore)(void *state, const unsigned char *buf, double load, double z_flat,
+                         tirenv_diag *diag);
     /* What a user should hear about the evaluations since the last set (tirenv_model_warnings;
      * a network's are its own, tirenv_model_network); NULL: never anything. */
     const char *(*warnings)(const void *state);
@@ -185,10 +189,11 @@ static inline const unsigned char *tirenv_model__get(const unsigned char *p, voi
 }
 
 /* A state that is a load alone (rigid, point): the load at buf into *G, refused (naming the
- * type) unless a positive finite number, since it is the answer's F_z (bytes a host may have
+ * type) unless a positive finite number, since it is the answer's F_z, and unless it is the
+ * head's load and the head's z_flat is the type's own, z_own (m) (bytes a host may have
  * changed: docs/models.md section 1.7). */
-int tirenv_model__restore_load(const unsigned char *buf, const char *type, double *G,
-                               tirenv_diag *diag);
+int tirenv_model__restore_load(const unsigned char *buf, const char *type, double load,
+                               double z_flat, double z_own, double *G, tirenv_diag *diag);
 
 /* The default reach in units of R0: a tire of free radius R0 touches no ground farther than
  * R0 from its centre; 5 % covers a tread standing out of the free circle. */

@@ -126,7 +126,13 @@ int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tiren
     p = tirenv_model__put(p, &m->load, sizeof m->load);
     p = tirenv_model__put(p, &m->z_flat, sizeof m->z_flat);
     p = tirenv_model__put(p, &ready, 1);
-    m->type->ops->state_save(m->state, p);
+    /* An unset model's type bytes are never restored (only its being unset is), and its
+     * type may point at ground freed since (a streamed sweep's last window, which the
+     * springs model's save read): zeros. */
+    if (m->ready)
+        m->type->ops->state_save(m->state, p);
+    else
+        memset(p, 0, type_bytes(m));
     const uint64_t sum = checksum(buf, need);
     memcpy((unsigned char *)buf + need - sizeof sum, &sum, sizeof sum);
     return TIRENV_OK;
@@ -184,7 +190,7 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
                             "the %s model has no profile: set it on the ground the state was "
                             "saved on (tirenv_model_set), then restore", m->type->name);
-    const int status = m->type->ops->state_restore(m->state, p, diag);
+    const int status = m->type->ops->state_restore(m->state, p, load, z_flat, diag);
     if (status) {
         m->ready = 0;
         m->profile = NULL;
@@ -197,14 +203,19 @@ int tirenv_model_state_restore(tirenv_model *m, const void *buf, size_t size,
     return TIRENV_OK;
 }
 
-int tirenv_model__restore_load(const unsigned char *buf, const char *type, double *G,
-                               tirenv_diag *diag)
+int tirenv_model__restore_load(const unsigned char *buf, const char *type, double load,
+                               double z_flat, double z_own, double *G, tirenv_diag *diag)
 {
     double g;
     tirenv_model__get(buf, &g, sizeof g);
     if (!(g > 0 && isfinite(g)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state", "not a %s state (its load %g N)",
                             type, g);
+    if (g != load || z_flat != z_own)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a %s state: its load %.17g N and flat-ground height %.17g m "
+                            "are not the head's %.17g N and %.17g m", type, g, z_own, load,
+                            z_flat);
     *G = g;
     return TIRENV_OK;
 }

@@ -502,11 +502,20 @@ static void nn_model_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &sv, sizeof sv);
 }
 
+/* How far (m) a state's flat-ground height may lie from its contact length's chord height:
+ * a load change gives the chord's bits, a set the flat-ground solve's, which finds the
+ * contact length again (two solves of the springs model's flat ground at one load, not
+ * shown to give the same last bits); 1e-9 m, ten times the equilibrium's eps_z. */
+static const double z_chord_tol = 1e-9;
+
 /* The load is the answer's F_z and the flat-ground height its z: a state whose bytes a host
  * changed into values no set could give (not finite, not positive) is refused, and so is a
- * pinned contact length (which a set at its load takes in place of the regime's); the
- * network then checks the contact length as it would a new one. */
-static int nn_model_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+ * pinned contact length (which a set at its load takes in place of the regime's); so is one
+ * whose load or flat-ground height is not the head's, or whose height is not its contact
+ * length's chord height (chord_height) within z_chord_tol. The network then checks the
+ * contact length as it would a new one. */
+static int nn_model_state_restore(void *state, const unsigned char *buf, double load,
+                                  double z_flat, tirenv_diag *diag)
 {
     nn_state *st = state;
     nn_saved sv;
@@ -521,7 +530,22 @@ static int nn_model_state_restore(void *state, const unsigned char *buf, tirenv_
                             "not a state of the nn model (its load %g N, contact length %g m, "
                             "flat-ground height %g m, pinned contact length %g m)",
                             sv.load, sv.l_c, sv.z_flat, sv.pin_l_c);
-    const int status = nn_model_apply(st, sv.load, sv.l_c, sv.z_flat, diag);
+    double z_c = NAN;
+    int status = chord_height(st, sv.l_c, &z_c, diag);
+    if (status)
+        return status;
+    const int off_chord = !(fabs(sv.z_flat - z_c) <= z_chord_tol);
+    const char *field = sv.load != load       ? "its load is not the head's"
+                        : sv.z_flat != z_flat ? "its flat-ground height is not the head's"
+                        : off_chord ? "its flat-ground height is not its contact length's chord's"
+                                    : NULL;
+    if (field)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "state",
+                            "not a state of the nn model: %s (load %.17g N, head's %.17g N; "
+                            "flat-ground height %.17g m, head's %.17g m, the chord's %.17g m "
+                            "at contact length %.17g m)",
+                            field, sv.load, load, sv.z_flat, z_flat, z_c, sv.l_c);
+    status = nn_model_apply(st, sv.load, sv.l_c, sv.z_flat, diag);
     if (status)
         return status;
     st->pinned = sv.pinned != 0;

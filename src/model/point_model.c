@@ -106,9 +106,13 @@ static void point_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &((const point_state *)state)->G, sizeof(double));
 }
 
-static int point_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+/* Its flat-ground height is R0 at every load (point_flat). */
+static int point_state_restore(void *state, const unsigned char *buf, double load,
+                               double z_flat, tirenv_diag *diag)
 {
-    return tirenv_model__restore_load(buf, "point", &((point_state *)state)->G, diag);
+    point_state *st = state;
+    return tirenv_model__restore_load(buf, "point", load, z_flat, st->tire.springs.R0, &st->G,
+                                      diag);
 }
 
 static const tirenv_model_ops point_ops = {

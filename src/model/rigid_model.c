@@ -99,9 +99,13 @@ static void rigid_state_save(const void *state, unsigned char *buf)
     tirenv_model__put(buf, &((const rigid_state *)state)->G, sizeof(double));
 }
 
-static int rigid_state_restore(void *state, const unsigned char *buf, tirenv_diag *diag)
+/* Its flat-ground height is R0 at every load (rigid_flat). */
+static int rigid_state_restore(void *state, const unsigned char *buf, double load,
+                               double z_flat, tirenv_diag *diag)
 {
-    return tirenv_model__restore_load(buf, "rigid", &((rigid_state *)state)->G, diag);
+    rigid_state *st = state;
+    return tirenv_model__restore_load(buf, "rigid", load, z_flat, st->tire.springs.R0, &st->G,
+                                      diag);
 }
 
 static const tirenv_model_ops rigid_ops = {

@@ -198,7 +198,8 @@ int tirenv_springs__faces_rho(const tirenv_profile *p, const tirenv_springs__fan
  * crosses there (a working row's vertex that crossed the ray since m was walked,
  * springs_root.c): the face into v or out of it, as the walk would end near v: 1, or 0 where
  * neither is crossed (m then names no face: tirenv_springs__face_rho gives NAN and
- * tirenv_springs__faces_rho 0 for it). The evaluation's fan checks it. */
+ * tirenv_springs__faces_rho 0 for it). It holds no proof of reuse (z_low infinite): the
+ * evaluation's fan walks the ray again. */
 int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__fan_origin *o,
                                 const tirenv_springs__fan_rays *r, size_t i, long v, double z,
                                 tirenv_springs__ray_memo *m);

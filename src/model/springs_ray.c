@@ -770,6 +770,11 @@ int tirenv_springs__memo_across(const tirenv_profile *p, const tirenv_springs__f
     m->drho = NAN;
     m->j = -2; /* no face (face_rho refuses it), unless one of v's is found */
     m->kind = RAY_HIT;
+    /* No proof that the ray passes above every point before the new face (z_low is the old
+     * walk's): the fan walks it again rather than reuse it below z (reuse_ray). Kept, a
+     * start that gave up after moving the memo at a height far above the root (a restored
+     * history's) had the evaluations below reuse it past the face the ray meets first. */
+    m->z_low = INFINITY;
     if (!(v - 1 >= 0 && v + 1 < n))
         return 0;
     /* walk()'s f at v and its neighbours: the ray below v's height at v's X ends the walk on
