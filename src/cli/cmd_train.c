@@ -389,6 +389,16 @@ int cli_train_main(int argc, char *argv[])
     if (!status && s[TIRENV_SPLIT_TRAIN].n == 0)
         status = tirenv_error(&diag, TIRENV_EINVAL, t.data, 0, "split",
                               "no training cases in the manifest (split 'train')");
+    /* The relation between load and contact length of the tire the data came from, which the
+     * file records so that the network, driven by the contact length, takes a load as that
+     * tire would: found before the training, so that a data set that gives none costs none. */
+    tirenv_contact_law law;
+    char law_what[80] = "";
+    if (!status && o.output) {
+        const tirenv_model_type *source = src.model[0] ? tirenv_model_type_find(src.model) : NULL;
+        status = tirenv_contact_law_of_data(&ds, source, &tire, &law, law_what, sizeof law_what,
+                                            &diag);
+    }
     if (status) {
         code = cli_fail(status, &diag);
         goto done;
@@ -438,15 +448,7 @@ int cli_train_main(int argc, char *argv[])
             h = tirenv_samples_fingerprint(&s[sp], h);
         rec.fingerprint = h;
         rec.R0 = tire.springs.R0;
-        /* The relation between load and contact length of the tire the data came from, so
-         * that the network, driven by the contact length, takes a load as that tire would. */
-        const tirenv_model_type *source = src.model[0] ? tirenv_model_type_find(src.model) : NULL;
-        char law_what[80];
-        if ((status = tirenv_contact_law_of_data(&ds, source, &tire, &rec.law, law_what,
-                                                 sizeof law_what, &diag))) {
-            code = cli_fail(status, &diag);
-            goto done;
-        }
+        rec.law = law;
         snprintf(rec.law_source, sizeof rec.law_source, "%s", law_what);
         snprintf(rec.data, sizeof rec.data, "%s", t.data);
         if ((status = tirenv_nn_write_json(o.output, nn, &rec, &diag))) {

@@ -269,11 +269,15 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
         sxy += x * y;
         m++;
     }
-    if (m < 2 || !(G_max > G_min))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
+    /* The source model's flat ground gives the relation around a single load; the power law
+     * of measured data needs two. */
+    if (source ? m < 1 : m < 2 || !(G_max > G_min))
+        return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "load",
                             "the data set's cases have %zu positive loads, %s; a relation "
-                            "between load and contact length needs two different ones", m,
-                            m ? "all equal" : "none");
+                            "between load and contact length needs %s", m,
+                            m ? "all equal" : "none",
+                            source ? "one" : "two different ones (measured data: no model "
+                                             "that simulated them gives it)");
     const size_t N = TIRENV_CONTACT_LAW_MAX, half = N / 2;
     const double lo = 0.5 * G_min, hi = 1.5 * G_max;
     tirenv_contact_law out = {.n = 0};

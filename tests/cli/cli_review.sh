@@ -1,0 +1,30 @@
+#!/bin/sh
+# What a user's review of the commands found, each checked so that it stays fixed: a network
+# trained on a sweep at one working regime, import's grid options misused, ...
+# (docs/perf-s24-qa.md lists what was tried). Usage: sh cli_review.sh BIN TESTDATA_DIR.
+# SPDX-License-Identifier: Apache-2.0
+. "$(dirname "$0")/../lib/clilib.sh"
+
+# A sweep at one contact length is a data set like any other: its model's flat ground gives
+# the relation between load and contact length the network file records, around that one
+# load. Before, train trained, then refused to write (exit 2) for want of a second load.
+run "$bin" sweep --lengths 0.1 --heights 0.05,0.1 --contact-lengths 0.3 --model springs \
+    --jobs 1 -o one
+check "sweep at one contact length: written" '[ $rc -eq 0 ] && [ -s one/cases.csv ]'
+run "$bin" train --data one --restarts 1 --epochs 5 --jobs 1 -o one.json
+check "train on it: exit 0, the file written with its contact law" \
+    '[ $rc -eq 0 ] && grep -q "\"contact_law\"" one.json &&
+     grep -q "the springs model.s flat ground" one.json'
+run "$bin" envelope --model nn --nn one.json --cleat 0.1,0.07 --contact-length 0.3 -o one.csv
+check "the network so trained drives envelope at its contact length" \
+    '[ $rc -eq 0 ] && [ "$(rows one.csv)" -gt 100 ]'
+# Measured data (no model that simulated them) at one load give no relation: refused before
+# any training, naming the data set, nothing written.
+cp -r one measured
+rm measured/sweep.txt measured/sweep.csv
+run "$bin" train --data measured --restarts 1 --epochs 5 --jobs 1 -o m.json
+check "train -o on measured data at one load: exit 2 before training, naming the data set" \
+    '[ $rc -eq 2 ] && grep -q "measured.*load.*two different" err && ! grep -q epoch out &&
+     no_file m.json'
+
+clilib_done
