@@ -27,4 +27,11 @@ check "train -o on measured data at one load: exit 2 before training, naming the
     '[ $rc -eq 2 ] && grep -q "measured.*load.*two different" err && ! grep -q epoch out &&
      no_file m.json'
 
+# import's grid: a reversed one is a misuse of its two options, exit 1, named as options.
+"$bin" rig --cleat 0.1,0.1 --contact-length 0.28 -o log.csv 2>/dev/null
+run "$bin" import --log log.csv --cleat 0.1,0.1 --contact-length 0.28 --x-n-from 1 \
+    --x-n-to 0 -o curve.csv
+check "import --x-n-from 1 --x-n-to 0: exit 1 naming the options, nothing written" \
+    '[ $rc -eq 1 ] && grep -q -- "--x-n-from, --x-n-to" err && no_file curve.csv'
+
 clilib_done
