@@ -155,12 +155,16 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
     }
     fputs("\"   # km/h\n", fp);
     for (size_t i = 0; i < r->n_cols; ++i) {
-        /* The colours of every tirenv plot: a model looks the same here as in the study; a
-         * way of enveloping other than the static one is drawn dashed in the model's colour. */
+        /* The colours of every tirenv plot: a model looks the same here as in the study; where
+         * the run draws a model both ways, the way of enveloping other than the static one is
+         * dashed in the model's colour. Alone (the default, dynamic) it keeps the model's own
+         * line: dashes over a road's dense oscillation leave it unreadable. */
         const ride_column *c = &r->cols[i];
         const char *name = tirenv_model_type_name(r->models[c->model]);
         const tirenv_plot_style st = tirenv_plot_style_of(name, c->model);
-        const int dash = c->enveloping == TIRENV_RIDE_STATIC ? st.dash : 1 + (int)c->enveloping;
+        const int dash = c->enveloping == TIRENV_RIDE_STATIC || r->n_envelopings < 2
+                             ? st.dash
+                             : 1 + (int)c->enveloping;
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
                 st.width, dash, c->label);
     }

@@ -34,4 +34,17 @@ run "$bin" import --log log.csv --cleat 0.1,0.1 --contact-length 0.28 --x-n-from
 check "import --x-n-from 1 --x-n-to 0: exit 1 naming the options, nothing written" \
     '[ $rc -eq 1 ] && grep -q -- "--x-n-from, --x-n-to" err && no_file curve.csv'
 
+# The ride's plots: a way of enveloping is dashed only where the run draws a model both ways;
+# the default alone (dynamic) keeps each model's own line, which over a road's dense
+# oscillation dashes made unreadable.
+run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model point,cam --jobs 1 --out-dir ride1
+check "ride, one way of enveloping: no line of seat.gp dashed" \
+    '[ $rc -eq 0 ] && [ "$(grep -c "^set style line" ride1/seat.gp)" -eq 2 ] &&
+     ! grep -q "^set style line.* dt [2-9]" ride1/seat.gp'
+run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model cam --enveloping static,dynamic \
+    --jobs 1 --out-dir ride2
+check "ride, static and dynamic: the dynamic line dashed, the static one not" \
+    '[ $rc -eq 0 ] && grep -q "dt 1 *# cam-static" ride2/seat.gp &&
+     grep -q "dt 2 *# cam-dynamic" ride2/seat.gp'
+
 clilib_done
