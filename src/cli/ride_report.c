@@ -245,7 +245,8 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
     char axes[200];
     snprintf(axes, sizeof axes,
              "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
-             "    set ylabel \"seat a_z (m/s²)\"\n", wheelbase);
+             "    set ylabel \"seat a_z (m/s²)\"\n"
+             "    set autoscale xfix\n", wheelbase);  /* the run's span, not the next tics' */
     return draw(dir, "seat", "vertical acceleration at the seat over the front axle's position, "
                 "point contact against enveloping", "Seat vertical acceleration (unweighted)",
                 axes, r, diag);

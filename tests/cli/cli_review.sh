@@ -36,11 +36,12 @@ check "import --x-n-from 1 --x-n-to 0: exit 1 naming the options, nothing writte
 
 # The ride's plots: a way of enveloping is dashed only where the run draws a model both ways;
 # the default alone (dynamic) keeps each model's own line, which over a road's dense
-# oscillation dashes made unreadable.
+# oscillation dashes made unreadable; x spans the run, not a fifth more on either side.
 run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model point,cam --jobs 1 --out-dir ride1
-check "ride, one way of enveloping: no line of seat.gp dashed" \
+check "ride, one way of enveloping: no line of seat.gp dashed, x fixed to the run" \
     '[ $rc -eq 0 ] && [ "$(grep -c "^set style line" ride1/seat.gp)" -eq 2 ] &&
-     ! grep -q "^set style line.* dt [2-9]" ride1/seat.gp'
+     ! grep -q "^set style line.* dt [2-9]" ride1/seat.gp &&
+     grep -q "set autoscale xfix" ride1/seat.gp'
 run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model cam --enveloping static,dynamic \
     --jobs 1 --out-dir ride2
 check "ride, static and dynamic: the dynamic line dashed, the static one not" \
