@@ -119,9 +119,12 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", fp);
     for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
-        fprintf(fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
+        char crest[16] = "-";  /* no vibration (a level road): no crest factor, 0/0 */
+        if (!isnan(q->c.seat.crest))
+            snprintf(crest, sizeof crest, "%.1f", q->c.seat.crest);
+        fprintf(fp, "| %s | %s | %.1f | %.3f | %s | %.3f | %.3f | %.3f | %.3f | %.2f | "
                 "%.3f | %.3f | %.0f |\n", q->model, tirenv_ride_enveloping_name(q->enveloping),
-                q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv,
+                q->speed * 3.6, q->c.seat.rms, crest, q->c.seat.vdv, q->c.seat.mtvv,
                 q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }

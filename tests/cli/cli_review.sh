@@ -48,4 +48,13 @@ check "ride, static and dynamic: the dynamic line dashed, the static one not" \
     '[ $rc -eq 0 ] && grep -q "dt 1 *# cam-static" ride2/seat.gp &&
      grep -q "dt 2 *# cam-dynamic" ride2/seat.gp'
 
+# A ride over a level road has no vibration and so no crest factor (0/0): the tables say '-',
+# not nan as if a figure; the CSV keeps nan, which its readers take for a missing value.
+printf 'x_m,z_m\n0,0\n' >level.csv
+run "$bin" ride --profile level.csv --speed 10km/h --model point --jobs 1 --out-dir level
+check "ride over a level road: crest '-' in the printed table and comfort.md, nan in the CSV" \
+    '[ $rc -eq 0 ] && ! grep -qi nan out && grep -qE "^point +10.00 +0.0000 +- " out &&
+     grep -q "| point | dynamic | 10.0 | 0.000 | - |" level/comfort.md &&
+     grep -q "^point,.*,0,nan,0," level/comfort.csv'
+
 clilib_done
