@@ -3,6 +3,7 @@
 # trained on a sweep at one working regime, import's grid options misused, ...
 # (docs/perf-s24-qa.md lists what was tried). Usage: sh cli_review.sh BIN TESTDATA_DIR.
 # SPDX-License-Identifier: Apache-2.0
+root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$(dirname "$0")/../lib/clilib.sh"
 
 # A sweep at one contact length is a data set like any other: its model's flat ground gives
@@ -56,5 +57,14 @@ check "ride over a level road: crest '-' in the printed table and comfort.md, na
     '[ $rc -eq 0 ] && ! grep -qi nan out && grep -qE "^point +10.00 +0.0000 +- " out &&
      grep -q "| point | dynamic | 10.0 | 0.000 | - |" level/comfort.md &&
      grep -q "^point,.*,0,nan,0," level/comfort.csv'
+
+# The README's tour shows each envelope command's summary line as the program prints it (the
+# warm start's iteration counts had moved on without it).
+readme=$root/README.md
+for model in springs ring; do
+    run "$bin" envelope --model $model --cleat 0.10,0.10 --contact-length 0.28 -o tour.csv
+    check "README's tour: the $model envelope summary line is the program's" \
+        '[ $rc -eq 0 ] && grep -qF "$(cat err)" "$readme"'
+done
 
 clilib_done
