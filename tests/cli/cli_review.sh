@@ -19,6 +19,11 @@ check "train on it: exit 0, the file written with its contact law" \
 run "$bin" envelope --model nn --nn one.json --cleat 0.1,0.07 --contact-length 0.3 -o one.csv
 check "the network so trained drives envelope at its contact length" \
     '[ $rc -eq 0 ] && [ "$(rows one.csv)" -gt 100 ]'
+# train --ensemble K over fewer restarts made the mean of fewer networks than asked, silently.
+run "$bin" train --data one --restarts 2 --ensemble 3 --epochs 5 --jobs 1 -o ens.json
+check "train --ensemble 3 --restarts 2: exit 1 naming both, nothing written" \
+    '[ $rc -eq 1 ] && grep -q -- "--ensemble 3.*2 restarts" err && no_file ens.json'
+
 # Measured data (no model that simulated them) at one load give no relation: refused before
 # any training, naming the data set, nothing written.
 cp -r one measured
