@@ -54,6 +54,14 @@ check "ride, static and dynamic: the dynamic line dashed, the static one not" \
     '[ $rc -eq 0 ] && grep -q "dt 1 *# cam-static" ride2/seat.gp &&
      grep -q "dt 2 *# cam-dynamic" ride2/seat.gp'
 
+# The ride's balance of load and input on a jump of the springs model's effective road with
+# the load: over a class H road the Illinois steps crawled and the ride stopped, exit 3, with a
+# bracket 9e-6 N wide; bisection past their budget closes it.
+"$bin" road --class H --length 10 --dx 0.01 --seed 1 -o roadH.csv 2>/dev/null
+run "$bin" ride --profile roadH.csv --speed 10km/h --model springs --x-from 7 --x-to 9 --jobs 1
+check "ride, springs over a class H road: the balance found on its jump, exit 0" \
+    '[ $rc -eq 0 ] && grep -qE "^springs +10.00 " out'
+
 # A ride over a level road has no vibration and so no crest factor (0/0): the tables say '-',
 # not nan as if a figure; the CSV keeps nan, which its readers take for a missing value.
 printf 'x_m,z_m\n0,0\n' >level.csv
