@@ -328,6 +328,15 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
             out.load[k] = load_grid(lo, step, k);
             out.l_c[k] = exp(a + b * log(out.load[k]));
         }
+        /* A contact length that does not grow with the load is no tire's: cases of several
+         * tires (a sweep over tire keys) share contact lengths at different loads. */
+        if (!(b > 0) || tirenv_contact_law_check(&out, NULL))
+            return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "load",
+                                "the power law fitted to the cases' loads and contact lengths, "
+                                "l_c = %.4g*G^%.4g, does not grow with the load, which no "
+                                "tire's does (cases of several tires, such as a sweep over "
+                                "tire keys, share contact lengths at different loads); expected "
+                                "the cases of one tire", exp(a), b);
         snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
     }
     if (!status && (status = tirenv_contact_law_check(&out, diag)) && source && diag) {

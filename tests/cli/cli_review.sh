@@ -33,6 +33,16 @@ check "train -o on measured data at one load: exit 2 before training, naming the
     '[ $rc -eq 2 ] && grep -q "measured.*load.*two different" err && ! grep -q epoch out &&
      no_file m.json'
 
+# A sweep over a tire key has no one tire that simulated it, and its cases share a contact
+# length at different loads: their power law is flat, no tire's. Refused before training, naming
+# the data set (it was refused after the training, as "contact law: point 2", naming nothing).
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.28 --model springs \
+    --set UNLOADED_RADIUS=0.5,0.7 --jobs 1 -o keys
+run "$bin" train --data keys --restarts 1 --epochs 5 --jobs 1 -o keys.json
+check "train -o on a sweep over UNLOADED_RADIUS: exit 2 before training, naming the data set" \
+    '[ $rc -eq 2 ] && grep -q "keys: load: .*does not grow with the load" err &&
+     ! grep -q epoch out && no_file keys.json'
+
 # import's grid: a reversed one is a misuse of its two options, exit 1, named as options.
 "$bin" rig --cleat 0.1,0.1 --contact-length 0.28 -o log.csv 2>/dev/null
 run "$bin" import --log log.csv --cleat 0.1,0.1 --contact-length 0.28 --x-n-from 1 \
