@@ -64,6 +64,15 @@ check "ride, static and dynamic: the dynamic line dashed, the static one not" \
     '[ $rc -eq 0 ] && grep -q "dt 1 *# cam-static" ride2/seat.gp &&
      grep -q "dt 2 *# cam-dynamic" ride2/seat.gp'
 
+# convert --dx to .crg over a length that is no whole number of --dx: the rows reach the end
+# (the last one past it, on the level ground beyond); they stopped short, at 0.9 m of a 1 m
+# ramp to 0.05 m, so the road read back ended at 0.045 m.
+printf 'x_m,z_m\n0,0\n1,0.05\n' >ramp.csv
+"$bin" convert --profile ramp.csv --dx 0.3 -o ramp.crg 2>/dev/null
+run "$bin" convert --profile ramp.crg -o back.csv
+check "convert --dx 0.3 of a 1 m ramp: rows to 1.2 m, the last at the end height 0.05 m" \
+    '[ $rc -eq 0 ] && [ "$(rows back.csv)" -eq 6 ] && tail -1 back.csv | grep -q "^1.2,0.05$"'
+
 # The ride's balance of load and input on a jump of the springs model's effective road with
 # the load: over a class H road the Illinois steps crawled and the ride stopped, exit 3, with a
 # bracket 9e-6 N wide; bisection past their budget closes it.
