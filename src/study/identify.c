@@ -348,6 +348,7 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
                  "one relation between load and contact length (%.300s); expected the tire "
                  "that simulated the data", tirenv_model_type_name(source), diag->message);
         memcpy(diag->message, msg, sizeof msg);
+        snprintf(diag->file, sizeof diag->file, "%s", ds->dir);  /* the data set, named */
     }
     if (!status)
         *law = out;
