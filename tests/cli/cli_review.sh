@@ -79,6 +79,12 @@ run "$bin" convert --profile ramp.crg -o back.csv
 check "convert --dx 0.3 of a 1 m ramp: rows to 1.2 m, the last at the end height 0.05 m" \
     '[ $rc -eq 0 ] && [ "$(rows back.csv)" -eq 6 ] && tail -1 back.csv | grep -q "^1.2,0.05$"'
 
+# ride --dt finer than the weighting filters take: refused before the run as --dt, exit 1 (it
+# ran, then failed as bad data in the field fs).
+run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model point --dt 1e-6 --jobs 1
+check "ride --dt 1e-6: exit 1 naming --dt and the finest it takes, 1e-05 s" \
+    '[ $rc -eq 1 ] && grep -q -- "--dt: 1e-06 s is finer.*at least 1e-05 s" err'
+
 # The ride's balance of load and input on a jump of the springs model's effective road with
 # the load: over a class H road the Illinois steps crawled and the ride stopped, exit 3, with a
 # bracket 9e-6 N wide; bisection past their budget closes it.
