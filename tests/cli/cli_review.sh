@@ -6,6 +6,13 @@
 root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$(dirname "$0")/../lib/clilib.sh"
 
+# flat --model rigid at the paper's regimes: three rows alike but for the load, each with
+# contact length 0, said what they are (they read as a model that missed the regimes).
+run "$bin" flat --model rigid
+check "flat --model rigid: the table says what its loads are" \
+    '[ $rc -eq 0 ] && [ "$(grep -c " 0.0000 " out)" -eq 3 ] &&
+     grep -q "^(the rigid model does not deflect: each load is the springs model.s" out'
+
 # A sweep at one contact length is a data set like any other: its model's flat ground gives
 # the relation between load and contact length the network file records, around that one
 # load. Before, train trained, then refused to write (exit 2) for want of a second load.
