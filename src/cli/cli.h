@@ -383,6 +383,9 @@ int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
 int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *option,
                            const char *dir);
 
+/* Whether paths a and b name one existing directory, symbolic links followed (clobber.c). */
+int cli_same_dir(const char *a, const char *b);
+
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);
 

@@ -56,6 +56,16 @@ check "train -o on a sweep over UNLOADED_RADIUS: exit 2 before training, naming 
     '[ $rc -eq 2 ] && grep -q "keys: load: .*does not grow with the load" err &&
      ! grep -q epoch out && no_file keys.json'
 
+# sweep merge -o naming one of its parts: refused as such (exit 1), not as "another sweep".
+"$bin" sweep --lengths 0.1,0.2 --heights 0.05 --contact-lengths 0.3 --model rigid --shard 0/2 \
+    --jobs 1 -o part0 2>/dev/null
+"$bin" sweep --lengths 0.1,0.2 --heights 0.05 --contact-lengths 0.3 --model rigid --shard 1/2 \
+    --jobs 1 -o part1 2>/dev/null
+run "$bin" sweep merge part0 part1 -o ./part1/
+check "sweep merge -o a part: exit 1 naming it, the part kept" \
+    '[ $rc -eq 1 ] && grep -q -- "-o ./part1/ is the part part1" err &&
+     grep -q "shard = 1/2" part1/sweep.txt'
+
 # import's grid: a reversed one is a misuse of its two options, exit 1, named as options.
 "$bin" rig --cleat 0.1,0.1 --contact-length 0.28 -o log.csv 2>/dev/null
 run "$bin" import --log log.csv --cleat 0.1,0.1 --contact-length 0.28 --x-n-from 1 \
