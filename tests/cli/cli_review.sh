@@ -13,6 +13,15 @@ check "flat --model rigid: the table says what its loads are" \
     '[ $rc -eq 0 ] && [ "$(grep -c " 0.0000 " out)" -eq 3 ] &&
      grep -q "^(the rigid model does not deflect: each load is the springs model.s" out'
 
+# --method with a model that solves nothing (the cam): said, as --set METHOD is, not taken
+# silently; the springs model takes it without a word.
+run "$bin" envelope --model cam --method secant --cleat 0.1,0.1 --contact-length 0.28 -o cam.csv
+check "envelope --model cam --method secant: a line says the cam does not read it" \
+    '[ $rc -eq 0 ] && grep -q "^tirenv: --method: .*the cam does not read it" err'
+run "$bin" envelope --model springs --method secant --cleat 0.1,0.1 --contact-length 0.28 \
+    -o springs.csv
+check "... the springs model: no such line" '[ $rc -eq 0 ] && ! grep -q -- "--method" err'
+
 # A sweep at one contact length is a data set like any other: its model's flat ground gives
 # the relation between load and contact length the network file records, around that one
 # load. Before, train trained, then refused to write (exit 2) for want of a second load.
