@@ -497,6 +497,7 @@ int cli_sweep_main(int argc, char *argv[])
     }
     s.network = with_net;
     s.network_R0 = rec.R0;
+    s.network_law = rec.law.n ? &rec.law : NULL;
     s.network_id = net_id;
     s.extrapolate = o.extrapolate;
     s.rig = rig;

@@ -75,6 +75,18 @@ check "sweep merge -o a part: exit 1 naming it, the part kept" \
     '[ $rc -eq 1 ] && grep -q -- "-o ./part1/ is the part part1" err &&
      grep -q "shard = 1/2" part1/sweep.txt'
 
+# A sweep of the network at a contact length records the load its file's tire carries there,
+# as envelope --model nn says it (the springs model of the tire file stood in: 18803 N at 0.3 m
+# where the network's ring carries 19276 N).
+"$bin" train --data "$root/data/dataset" --restarts 1 --epochs 5 --jobs 1 -o net.json >/dev/null
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --model nn --nn net.json \
+    --jobs 1 -o netsweep
+"$bin" envelope --model nn --nn net.json --cleat 0.1,0.05 --contact-length 0.3 -o net.csv \
+    2>net.err
+check "sweep --model nn at 0.3 m: the load envelope --model nn gives there" \
+    '[ $rc -eq 0 ] && want=$(sed -n "s/.*, load \([0-9.]*\) N .*/\1/p" net.err) &&
+     [ -n "$want" ] && [ "$(awk -F, "/^c0000,/ { printf \"%.6g\", \$4 }" netsweep/cases.csv)" = "$want" ]'
+
 # import's grid: a reversed one is a misuse of its two options, exit 1, named as options.
 "$bin" rig --cleat 0.1,0.1 --contact-length 0.28 -o log.csv 2>/dev/null
 run "$bin" import --log log.csv --cleat 0.1,0.1 --contact-length 0.28 --x-n-from 1 \
