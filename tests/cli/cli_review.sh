@@ -88,25 +88,11 @@ check "sweep --model nn at 0.3 m: the load envelope --model nn gives there" \
      [ -n "$want" ] && [ "$(awk -F, "/^c0000,/ { printf \"%.6g\", \$4 }" netsweep/cases.csv)" = "$want" ]'
 
 # import's grid: a reversed one is a misuse of its two options, exit 1, named as options.
-"$bin" rig --cleat 0.1,0.1 --contact-length 0.28 -o log.csv 2>/dev/null
+"$bin" rig --model springs --cleat 0.1,0.1 --contact-length 0.28 -o log.csv 2>/dev/null
 run "$bin" import --log log.csv --cleat 0.1,0.1 --contact-length 0.28 --x-n-from 1 \
     --x-n-to 0 -o curve.csv
 check "import --x-n-from 1 --x-n-to 0: exit 1 naming the options, nothing written" \
     '[ $rc -eq 1 ] && grep -q -- "--x-n-from, --x-n-to" err && no_file curve.csv'
-
-# The ride's plots: a way of enveloping is dashed only where the run draws a model both ways;
-# the default alone (dynamic) keeps each model's own line, which over a road's dense
-# oscillation dashes made unreadable; x spans the run, not a fifth more on either side.
-run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model point,cam --jobs 1 --out-dir ride1
-check "ride, one way of enveloping: no line of seat.gp dashed, x fixed to the run" \
-    '[ $rc -eq 0 ] && [ "$(grep -c "^set style line" ride1/seat.gp)" -eq 2 ] &&
-     ! grep -q "^set style line.* dt [2-9]" ride1/seat.gp &&
-     grep -q "set autoscale xfix" ride1/seat.gp'
-run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model cam --enveloping static,dynamic \
-    --jobs 1 --out-dir ride2
-check "ride, static and dynamic: the dynamic line dashed, the static one not" \
-    '[ $rc -eq 0 ] && grep -q "dt 1 *# cam-static" ride2/seat.gp &&
-     grep -q "dt 2 *# cam-dynamic" ride2/seat.gp'
 
 # convert --dx to .crg over a length that is no whole number of --dx: the rows reach the end
 # (the last one past it, on the level ground beyond); they stopped short, at 0.9 m of a 1 m
@@ -116,29 +102,6 @@ printf 'x_m,z_m\n0,0\n1,0.05\n' >ramp.csv
 run "$bin" convert --profile ramp.crg -o back.csv
 check "convert --dx 0.3 of a 1 m ramp: rows to 1.2 m, the last at the end height 0.05 m" \
     '[ $rc -eq 0 ] && [ "$(rows back.csv)" -eq 6 ] && tail -1 back.csv | grep -q "^1.2,0.05$"'
-
-# ride --dt finer than the weighting filters take: refused before the run as --dt, exit 1 (it
-# ran, then failed as bad data in the field fs).
-run "$bin" ride --cleat 0.3,0.05 --speed 10km/h --model point --dt 1e-6 --jobs 1
-check "ride --dt 1e-6: exit 1 naming --dt and the finest it takes, 1e-05 s" \
-    '[ $rc -eq 1 ] && grep -q -- "--dt: 1e-06 s is finer.*at least 1e-05 s" err'
-
-# The ride's balance of load and input on a jump of the springs model's effective road with
-# the load: over a class H road the Illinois steps crawled and the ride stopped, exit 3, with a
-# bracket 9e-6 N wide; bisection past their budget closes it.
-"$bin" road --class H --length 3 --dx 0.01 --seed 2 -o roadH.csv 2>/dev/null
-run "$bin" ride --profile roadH.csv --speed 10km/h --model springs --jobs 1
-check "ride, springs over a class H road: the balance found on its jump, exit 0" \
-    '[ $rc -eq 0 ] && grep -qE "^springs +10.00 " out'
-
-# A ride over a level road has no vibration and so no crest factor (0/0): the tables say '-',
-# not nan as if a figure; the CSV keeps nan, which its readers take for a missing value.
-printf 'x_m,z_m\n0,0\n' >level.csv
-run "$bin" ride --profile level.csv --speed 10km/h --model point --jobs 1 --out-dir level
-check "ride over a level road: crest '-' in the printed table and comfort.md, nan in the CSV" \
-    '[ $rc -eq 0 ] && ! grep -qi nan out && grep -qE "^point +10.00 +0.0000 +- " out &&
-     grep -q "| point | dynamic | 10.0 | 0.000 | - |" level/comfort.md &&
-     grep -q "^point,.*,0,nan,0," level/comfort.csv'
 
 # The README's tour shows each envelope command's summary line as the program prints it (the
 # warm start's iteration counts had moved on without it).
