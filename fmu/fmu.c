@@ -118,6 +118,12 @@ fmi2Status fmu__setup(fmu_instance *f)
         model_names(names, sizeof names);
         return fmu__fail(f, "model: unknown model '%s'; expected one of %s", v->model, names);
     }
+    /* Said in the FMU's terms: the library's own refusal, at the first load, named
+     * tirenv_model_set_network. */
+    if (tirenv_model_type_flags(type) & TIRENV_MODEL_NEEDS_NETWORK)
+        return fmu__fail(f, "model: '%s' needs a trained network file, for which the FMU has "
+                         "no parameter; expected rigid, springs, ring, cam or point",
+                         v->model);
     if (!isfinite(v->track))
         return fmu__fail(f, "track: expected a finite lateral position, got %g m", v->track);
     if (!(v->width >= 0) || !isfinite(v->width))

@@ -680,6 +680,13 @@ static void test_errors(const char *road)
           "an unknown model: fmi2Error at initialization, logged (%s)", last_log);
     api.free_instance(c);
 
+    n_logs = 0;
+    c = start("nn", road, 0, LOAD, &st);
+    check(c && st == fmi2Error && logged("needs a trained network file"),
+          "the network, which the FMU has no file for: fmi2Error at initialization, said so "
+          "(%s)", last_log);
+    api.free_instance(c);
+
     char missing[256];
     snprintf(missing, sizeof missing, "%s/no-such-road.csv", dir);
     n_logs = 0;

@@ -173,8 +173,9 @@ void tirenv_crg_writer_abort(tirenv_crg_writer *w);
 
 /* Writes n profiles as the long sections at v[0] < ... < v[n-1] (m), n >= 2. The rows are at
  * the vertices of the profiles when they share one evenly spaced x (u_increment 0), else at
- * x_first + i*u_increment over the common extent, where each profile's height is taken
- * (tirenv_profile_height; a vertical wall becomes a ramp one increment long). */
+ * x_first + i*u_increment over the common extent, the last at its end or the first past it,
+ * where each profile's height is taken (tirenv_profile_height, level beyond a profile's end; a
+ * vertical wall becomes a ramp one increment long). */
 int tirenv_crg_write_profiles(const char *path, tirenv_crg_encoding encoding, size_t n,
                               const double v[], const tirenv_profile *const tracks[],
                               double u_increment, const char *comment, tirenv_diag *diag);

@@ -311,7 +311,9 @@ int tirenv_identify_flat_on(const tirenv_tire *tire, size_t m,
  * tire); or, with source NULL (measured data), loads so spaced with the power law l_c = a*G^b
  * fitted to the cases' (load, contact length) pairs in log-log least squares. what (n bytes)
  * says which.
- * TIRENV_EINVAL where two cases give one load two contact lengths. */
+ * TIRENV_EINVAL where two cases give one load two contact lengths, where no case has a positive
+ * load, or, with source NULL, where the cases have fewer than two different loads or their
+ * power law does not grow with the load. */
 int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type *source,
                                const tirenv_tire *tire, tirenv_contact_law *law, char *what,
                                size_t n, tirenv_diag *diag);

@@ -37,6 +37,11 @@ typedef struct {
                                    * (TIRENV_MODEL_NEEDS_NETWORK): the network every case's
                                    * model copies (tirenv_model_set_network); else NULL */
     double network_R0;            /* the radius its x_N refers to, m (0: the tire's) */
+    const tirenv_contact_law *network_law; /* the relation between load and contact length
+                                   * of the tire its data came from (its model file's record;
+                                   * tirenv_model_set_contact_law), which turns a regime's load
+                                   * and contact length into each other; NULL (default): the
+                                   * tire's springs model stands in */
     const char *network_id;       /* how sweep.txt names that network (e.g. a fingerprint of
                                    * its file), so that a resumed run and a merge can tell */
     int extrapolate;              /* 1: the network may run outside its trained ranges

@@ -252,6 +252,8 @@ unsigned cli_model_reads(const tirenv_model_type *type, int at_contact_length);
  * n_runs is 0. */
 void cli_set_warnings(const char *const sets[], size_t n_sets,
                       const tirenv_model_type *const runs[], size_t n_runs, unsigned reads);
+/* The same for --method, the solver's METHOD: a line when no model of runs reads it. */
+void cli_method_warning(const tirenv_model_type *const runs[], size_t n_runs, unsigned reads);
 
 /* The model type named name; prints the valid names after option (the option as the user
  * gave it, e.g. "--simulated-by") and returns CLI_EXIT_USAGE if there is none. */
@@ -385,6 +387,9 @@ int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
  * inside it (at any depth), since the command may read any of them. */
 int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *option,
                            const char *dir);
+
+/* Whether paths a and b name one existing directory, symbolic links followed (clobber.c). */
+int cli_same_dir(const char *a, const char *b);
 
 /* mkdir -p; prints and returns an exit code on failure. */
 int cli_mkdir(const char *dir);

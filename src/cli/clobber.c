@@ -53,3 +53,14 @@ int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *opti
               dir);
     return CLI_EXIT_USAGE;
 }
+
+int cli_same_dir(const char *a, const char *b)
+{
+    char *const ra = realpath(a, NULL);
+    char *const rb = ra ? realpath(b, NULL) : NULL;
+    struct stat st;
+    const int same = rb && strcmp(ra, rb) == 0 && stat(ra, &st) == 0 && S_ISDIR(st.st_mode);
+    free(ra);
+    free(rb);
+    return same;
+}

@@ -42,7 +42,8 @@ static void usage(FILE *fp)
           "  --crg-encoding E     .crg output: kdbi (default: binary doubles, exact), krbi\n"
           "                       (binary floats), ldfi or lrfi (text)\n"
           "  --dx M               .crg output: resample every M m (default: the input's own\n"
-          "                       spacing, which must then be even); at most 1e8 rows\n"
+          "                       spacing, which must then be even), the last row at the\n"
+          "                       road's end or the first past it; at most 1e8 rows\n"
           "  --half-width M       .crg output of one track: the road reaches M m to either\n"
           "                       side, the same heights across (default 0.5)\n"
           "  --pad M              .crg output of a profile that starts or ends with a wall (a\n"
@@ -319,7 +320,7 @@ static int check_rows(const convert *cv, const tirenv_profile *p, tirenv_diag *d
         return TIRENV_OK;
     double x0, x1;
     tirenv_profile_extent(p, &x0, &x1);
-    const double rows = floor((x1 - x0) / cv->w.crg_u_increment) + 1;
+    const double rows = ceil((x1 - x0) / cv->w.crg_u_increment) + 1;
     if (!(rows <= CLI_MAX_STREAM_POSITIONS))
         return tirenv_error(diag, TIRENV_EINVAL, cv->out, 0, "dx",
                             "%.3g rows from %g to %g m every %g m is too many (at most %.0f); "

@@ -174,6 +174,13 @@ int cli_flat_main(int argc, char *argv[])
         if (!(code = flat_at(m, &o, &f)) && !(code = ring_tread(type, &tire, &f, &e)))
             print_row(csv, &f, &e);
     }
+    /* A table of rows alike but for the load, each at contact length 0, read as a model that
+     * missed the regimes it was asked for: say what the loads are. */
+    if (!code && !csv && !(fnomin > 0) &&
+        !(tirenv_model_type_flags(type) & TIRENV_MODEL_CONTACT_LENGTH))
+        printf("(the %s model does not deflect: each load is the springs model's at which the "
+               "free circle's chord at its centre height is the regime's contact length, "
+               "docs/models.md section 1.3)\n", tirenv_model_type_name(type));
     tirenv_model_free(m);
     return code;
 }

@@ -131,6 +131,13 @@ int cli_import_main(int argc, char *argv[])
         cli_error("import: %s is required ('tirenv import --help' shows the options)", missing);
         return CLI_EXIT_USAGE;
     }
+    /* A reversed or empty grid is a misuse of the options, said in their names (the library
+     * refuses it too, as bad data, naming its field). */
+    if (!(set.xN_to > set.xN_from)) {
+        cli_error("import: --x-n-from, --x-n-to: expected the grid's end after its start, got "
+                  "%g to %g", set.xN_from, set.xN_to);
+        return CLI_EXIT_USAGE;
+    }
     tirenv_tire tire;
     if (o.have_load)
         o.type = tirenv_model_ring;  /* its patch is the regime: derived if the file has none */

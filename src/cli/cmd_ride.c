@@ -72,7 +72,7 @@ static void usage(FILE *fp)
           "                       last vertex + wheelbase + max(3 m, 2 s of travel)\n"
           "  --dx DX              grid of the axles' inputs, m (default 0.005; at most a\n"
           "                       tenth of the tires' free radius)\n"
-          "  --dt S               output interval, s (default 0.001)\n"
+          "  --dt S               output interval, s (default 0.001; 1e-5 to 1/320)\n"
           "  --solver S           rk4 (default; fixed steps of at most half a grid spacing)\n"
           "                       or rk8pd (adaptive, tolerance 1e-10)\n"
           "  --enveloping E[,E...]  how each axle's input follows the tire load\n"

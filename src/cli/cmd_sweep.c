@@ -342,6 +342,13 @@ static int merge_main(int argc, char *argv[])
         usage(stderr);
         code = CLI_EXIT_USAGE;
     }
+    /* -o naming a part would merge it into itself: said so, not as "another sweep". */
+    for (size_t k = 0; !code && k < n; ++k)
+        if (cli_same_dir(out, parts[k])) {
+            cli_error("sweep merge: -o %s is the part %s: the merge would replace it; "
+                      "expected another directory", out, parts[k]);
+            code = CLI_EXIT_USAGE;
+        }
     if (code) {
         free(parts);
         return code;
@@ -490,6 +497,7 @@ int cli_sweep_main(int argc, char *argv[])
     }
     s.network = with_net;
     s.network_R0 = rec.R0;
+    s.network_law = rec.law.n ? &rec.law : NULL;
     s.network_id = net_id;
     s.extrapolate = o.extrapolate;
     s.rig = rig;

@@ -36,7 +36,8 @@ static void usage(FILE *fp)
           "  --seed S             seed of the initial weights (and online order), default 1\n"
           "  --restarts N         independent starts M (default: lm 8, rprop 4, backprop 1)\n"
           "  --ensemble K         the model is the mean of the K restarts best on control\n"
-          "                       (default 4, at most M; 1: the best restart alone)\n"
+          "                       (default 4, or M if fewer; given, at most M; 1: the best\n"
+          "                       restart alone)\n"
           "  --input FORM         even (default): the network sees the distance from the\n"
           "                       obstacle centre, rounded: sqrt((1 - x_N)^2 + A^2) - A, so\n"
           "                       the mirrored curve is smooth over the centre; paper: x_N\n"
@@ -369,6 +370,16 @@ int cli_train_main(int argc, char *argv[])
     int code = parse(argc, argv, &o, &t);
     if (code != CLI_GO_ON)
         return code;
+    /* The ensemble is of restarts: more members than restarts would be fewer than asked, as
+     * the default's 4 of 1 backprop restart are, silently; asked for, that is a misuse. */
+    const tirenv_train_settings asked = settings_from(&t);
+    if (t.ensemble > 0 && asked.ensemble > asked.restarts) {
+        cli_error("train: --ensemble %ld: the mean of more networks than the %zu restarts "
+                  "(--restarts%s) train; expected at most %zu, or more restarts",
+                  t.ensemble, asked.restarts, t.restarts > 0 ? "" : ", the trainer's default",
+                  asked.restarts);
+        return CLI_EXIT_USAGE;
+    }
 
     /* The radius x_N refers to: the tire that simulated the data, if the data set says. */
     tirenv_dataset_source src;
@@ -389,6 +400,16 @@ int cli_train_main(int argc, char *argv[])
     if (!status && s[TIRENV_SPLIT_TRAIN].n == 0)
         status = tirenv_error(&diag, TIRENV_EINVAL, t.data, 0, "split",
                               "no training cases in the manifest (split 'train')");
+    /* The relation between load and contact length of the tire the data came from, which the
+     * file records so that the network, driven by the contact length, takes a load as that
+     * tire would: found before the training, so that a data set that gives none costs none. */
+    tirenv_contact_law law;
+    char law_what[80] = "";
+    if (!status && o.output) {
+        const tirenv_model_type *source = src.model[0] ? tirenv_model_type_find(src.model) : NULL;
+        status = tirenv_contact_law_of_data(&ds, source, &tire, &law, law_what, sizeof law_what,
+                                            &diag);
+    }
     if (status) {
         code = cli_fail(status, &diag);
         goto done;
@@ -438,15 +459,7 @@ int cli_train_main(int argc, char *argv[])
             h = tirenv_samples_fingerprint(&s[sp], h);
         rec.fingerprint = h;
         rec.R0 = tire.springs.R0;
-        /* The relation between load and contact length of the tire the data came from, so
-         * that the network, driven by the contact length, takes a load as that tire would. */
-        const tirenv_model_type *source = src.model[0] ? tirenv_model_type_find(src.model) : NULL;
-        char law_what[80];
-        if ((status = tirenv_contact_law_of_data(&ds, source, &tire, &rec.law, law_what,
-                                                 sizeof law_what, &diag))) {
-            code = cli_fail(status, &diag);
-            goto done;
-        }
+        rec.law = law;
         snprintf(rec.law_source, sizeof rec.law_source, "%s", law_what);
         snprintf(rec.data, sizeof rec.data, "%s", t.data);
         if ((status = tirenv_nn_write_json(o.output, nn, &rec, &diag))) {

@@ -254,6 +254,8 @@ int cli_tire(const cli_options *o, tirenv_tire *tire)
     for (size_t k = 0; k < n_runs; ++k)
         reads |= cli_model_reads(runs[k], o->have_contact_length);
     cli_set_warnings(o->sets, o->n_sets, runs, n_runs, reads);
+    if (o->have_method)
+        cli_method_warning(runs, n_runs, reads);
     return CLI_EXIT_OK;
 }
 

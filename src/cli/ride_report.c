@@ -119,9 +119,12 @@ static int write_md(const char *path, const ride_options *r, const ride_result r
           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", fp);
     for (size_t k = 0; k < r->n_cols * r->n_speeds; ++k) {
         const ride_result *q = &res[k];
-        fprintf(fp, "| %s | %s | %.1f | %.3f | %.1f | %.3f | %.3f | %.3f | %.3f | %.2f | "
+        char crest[16] = "-";  /* no vibration (a level road): no crest factor, 0/0 */
+        if (!isnan(q->c.seat.crest))
+            snprintf(crest, sizeof crest, "%.1f", q->c.seat.crest);
+        fprintf(fp, "| %s | %s | %.1f | %.3f | %s | %.3f | %.3f | %.3f | %.3f | %.2f | "
                 "%.3f | %.3f | %.0f |\n", q->model, tirenv_ride_enveloping_name(q->enveloping),
-                q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv, q->c.seat.mtvv,
+                q->speed * 3.6, q->c.seat.rms, crest, q->c.seat.vdv, q->c.seat.mtvv,
                 q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
@@ -155,12 +158,16 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
     }
     fputs("\"   # km/h\n", fp);
     for (size_t i = 0; i < r->n_cols; ++i) {
-        /* The colours of every tirenv plot: a model looks the same here as in the study; a
-         * way of enveloping other than the static one is drawn dashed in the model's colour. */
+        /* The colours of every tirenv plot: a model looks the same here as in the study; where
+         * the run draws a model both ways, the way of enveloping other than the static one is
+         * dashed in the model's colour. Alone (the default, dynamic) it keeps the model's own
+         * line: dashes over a road's dense oscillation leave it unreadable. */
         const ride_column *c = &r->cols[i];
         const char *name = tirenv_model_type_name(r->models[c->model]);
         const tirenv_plot_style st = tirenv_plot_style_of(name, c->model);
-        const int dash = c->enveloping == TIRENV_RIDE_STATIC ? st.dash : 1 + (int)c->enveloping;
+        const int dash = c->enveloping == TIRENV_RIDE_STATIC || r->n_envelopings < 2
+                             ? st.dash
+                             : 1 + (int)c->enveloping;
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
                 st.width, dash, c->label);
     }
@@ -241,7 +248,8 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
     char axes[200];
     snprintf(axes, sizeof axes,
              "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
-             "    set ylabel \"seat a_z (m/s²)\"\n", wheelbase);
+             "    set ylabel \"seat a_z (m/s²)\"\n"
+             "    set autoscale xfix\n", wheelbase);  /* the run's span, not the next tics' */
     return draw(dir, "seat", "vertical acceleration at the seat over the front axle's position, "
                 "point contact against enveloping", "Seat vertical acceleration (unweighted)",
                 axes, r, diag);

@@ -339,9 +339,13 @@ static void print_table(FILE *fp, const ride_result res[], size_t n)
             "m/s^1.75", "m/s^2", "rad/s^2", "m/s^2", "m/s^2", "s", "s", "time");
     for (size_t i = 0; i < n; ++i) {
         const ride_result *q = &res[i];
-        fprintf(fp, "%-16s %7.2f %9.4f %6.2f %9.4f %9.4f %10.4f %9.4f %9.3f %8.3f %8.3f %9.0f\n",
-                q->label, q->speed * 3.6, q->c.seat.rms, q->c.seat.crest, q->c.seat.vdv,
-                q->c.seat.mtvv, q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
+        /* A run without vibration (a level road) has no crest factor (0/0): '-', not nan. */
+        char crest[16] = "-";
+        if (!isnan(q->c.seat.crest))
+            snprintf(crest, sizeof crest, "%.2f", q->c.seat.crest);
+        fprintf(fp, "%-16s %7.2f %9.4f %6s %9.4f %9.4f %10.4f %9.4f %9.3f %8.3f %8.3f %9.0f\n",
+                q->label, q->speed * 3.6, q->c.seat.rms, crest, q->c.seat.vdv, q->c.seat.mtvv,
+                q->c.pitch.rms, q->c.a_v, q->c.peak_az, q->c.lift_off, q->seconds,
                 q->duration / fmax(q->seconds, 1e-9));
     }
 }

@@ -98,6 +98,21 @@ static int section_of(const char *assignment)
     }
 }
 
+/* "the cam does not read it", "neither A nor B reads it", "none of A, B and C reads it". */
+static void none_reads(const tirenv_model_type *const runs[], size_t n_runs)
+{
+    if (n_runs == 1) {
+        fprintf(stderr, "%s does not read it\n", noun(runs[0]));
+        return;
+    }
+    fputs(n_runs == 2 ? "neither " : "none of ", stderr);
+    for (size_t k = 0; k < n_runs; ++k) {
+        const char *sep = k == 0 ? "" : n_runs == 2 ? " nor " : k + 1 < n_runs ? ", " : " and ";
+        fprintf(stderr, "%s%s", sep, noun(runs[k]));
+    }
+    fputs(" reads it\n", stderr);
+}
+
 void cli_set_warnings(const char *const sets[], size_t n_sets,
                       const tirenv_model_type *const runs[], size_t n_runs, unsigned reads)
 {
@@ -110,16 +125,17 @@ void cli_set_warnings(const char *const sets[], size_t n_sets,
         const size_t key_len = strcspn(sets[i], "=");
         fprintf(stderr, "tirenv: --set %.*s: [%s] is %s; ", (int)key_len, sets[i],
                 sections[s].name, sections[s].whose);
-        if (n_runs == 1) {
-            fprintf(stderr, "%s does not read it\n", noun(runs[0]));
-            continue;
-        }
-        /* "neither A nor B reads it", "none of A, B and C reads it" */
-        fputs(n_runs == 2 ? "neither " : "none of ", stderr);
-        for (size_t k = 0; k < n_runs; ++k) {
-            const char *sep = k == 0 ? "" : n_runs == 2 ? " nor " : k + 1 < n_runs ? ", " : " and ";
-            fprintf(stderr, "%s%s", sep, noun(runs[k]));
-        }
-        fputs(" reads it\n", stderr);
+        none_reads(runs, n_runs);
     }
+}
+
+/* --method sets [ENVELOPING_SOLVER] METHOD: the same warning, under its own name (the cam ran
+ * with --method secant as if it had taken it). */
+void cli_method_warning(const tirenv_model_type *const runs[], size_t n_runs, unsigned reads)
+{
+    if (n_runs == 0 || (reads & SEC_SOLVER))
+        return;
+    fputs("tirenv: --method: the equilibrium solver ([ENVELOPING_SOLVER] METHOD) is the "
+          "springs model's and the ring's; ", stderr);
+    none_reads(runs, n_runs);
 }

@@ -330,7 +330,11 @@ int tirenv_crg_write_profiles(const char *path, tirenv_crg_encoding encoding, si
             lo = fmax(lo, a);
             hi = fmin(hi, b);
         }
-        const double span = floor((hi - lo) / u_increment + 1e-9);
+        /* Rows up to the extent's end or the first one past it (where the profiles go on
+         * level at their end heights): a last row short of the end dropped the road's last
+         * part, 0.1 m and its height of a 1 m road every 0.3 m. An extent within 1e-9 of
+         * whole increments ends on a row. */
+        const double span = ceil((hi - lo) / u_increment - 1e-9);
         if (!(span >= 1) || span > 1e12)
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "u_increment",
                                 "the profiles' common extent %g to %g m holds %g increments of "

@@ -75,6 +75,12 @@ int tirenv_ride_plan_make(const tirenv_ride_plan_params *pp, const tirenv_vehicl
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dt",
                             "%g s is too coarse for ISO 2631-1's weightings, which reach "
                             "80 Hz: at most %g s", dt, 1 / TIRENV_COMFORT_FS_MIN);
+    /* Too fine a one was found only after the run, by the weighting filters (field fs). */
+    if (!(1 / dt <= TIRENV_COMFORT_FS_MAX))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dt",
+                            "%g s is finer than ISO 2631-1's weighting filters take (their "
+                            "0.4 Hz high-pass loses precision above %g Hz): at least %g s",
+                            dt, TIRENV_COMFORT_FS_MAX, 1 / TIRENV_COMFORT_FS_MAX);
     if (!(dx > 0 && isfinite(dx)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "dx",
                             "expected a grid spacing > 0 in m, got %g", dx);

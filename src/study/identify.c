@@ -269,11 +269,15 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
         sxy += x * y;
         m++;
     }
-    if (m < 2 || !(G_max > G_min))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
+    /* The source model's flat ground gives the relation around a single load; the power law
+     * of measured data needs two. */
+    if (source ? m < 1 : m < 2 || !(G_max > G_min))
+        return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "load",
                             "the data set's cases have %zu positive loads, %s; a relation "
-                            "between load and contact length needs two different ones", m,
-                            m ? "all equal" : "none");
+                            "between load and contact length needs %s", m,
+                            m ? "all equal" : "none",
+                            source ? "one" : "two different ones (measured data: no model "
+                                             "that simulated them gives it)");
     const size_t N = TIRENV_CONTACT_LAW_MAX, half = N / 2;
     const double lo = 0.5 * G_min, hi = 1.5 * G_max;
     tirenv_contact_law out = {.n = 0};
@@ -324,6 +328,15 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
             out.load[k] = load_grid(lo, step, k);
             out.l_c[k] = exp(a + b * log(out.load[k]));
         }
+        /* A contact length that does not grow with the load is no tire's: cases of several
+         * tires (a sweep over tire keys) share contact lengths at different loads. */
+        if (!(b > 0) || tirenv_contact_law_check(&out, NULL))
+            return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "load",
+                                "the power law fitted to the cases' loads and contact lengths, "
+                                "l_c = %.4g*G^%.4g, does not grow with the load, which no "
+                                "tire's does (cases of several tires, such as a sweep over "
+                                "tire keys, share contact lengths at different loads); expected "
+                                "the cases of one tire", exp(a), b);
         snprintf(what, n, "the cases: l_c = %.4g*G^%.4f", exp(a), b);
     }
     if (!status && (status = tirenv_contact_law_check(&out, diag)) && source && diag) {
@@ -335,6 +348,7 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
                  "one relation between load and contact length (%.300s); expected the tire "
                  "that simulated the data", tirenv_model_type_name(source), diag->message);
         memcpy(diag->message, msg, sizeof msg);
+        snprintf(diag->file, sizeof diag->file, "%s", ds->dir);  /* the data set, named */
     }
     if (!status)
         *law = out;

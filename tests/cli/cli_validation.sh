@@ -140,7 +140,8 @@ check "ride --speed 1e-6: exit 1 naming the samples it would need, not 'out of m
     '[ $rc -eq 1 ] && grep -q "samples" err && grep -q -- "--speed" err &&
      ! grep -q "out of memory" err'
 run "$bin" ride --cleat 0.3,0.05 --speed 3 --dt 1e-9 --model point
-check "ride --dt 1e-9: the same" '[ $rc -eq 1 ] && grep -q "samples" err'
+check "ride --dt 1e-9: exit 1 naming --dt, finer than the weightings take (1e-5 s)" \
+    '[ $rc -eq 1 ] && grep -q -- "--dt: 1e-09 s is finer" err && ! grep -q "out of memory" err'
 mkdir adir
 run "$bin" ride --profile adir --speed 3 --model point
 check "ride --profile DIR: exit 2, is a directory" \

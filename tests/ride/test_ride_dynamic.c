@@ -359,9 +359,10 @@ static void test_errors(void **state)
  * G0)/(c_t*V), that has the one root G_bal (g(G) - G decreases): the run's first sample carries
  * it within the solver's tolerance, found in 12 iterations. With a slope that jumps at G0
  * from 1 to -1e-6 the balance is on the jump, with g(G) - G of 6000 N on one side and 6 mN
- * on the other: regula falsi needs some 180 iterations to close its bracket on it, more
- * than its budget of 100, and the run stops with TIRENV_ENOCONV naming the axle, the
- * iterations, the bracket and the residual, after exactly 1 + 2 + 100 evaluations. The rear
+ * on the other: regula falsi would need some 180 iterations to close its bracket on it, more
+ * than its budget of 100 (the run stopped there with TIRENV_ENOCONV, as the springs model
+ * over an ISO 8608 class F or H road did); past the budget the search bisects, and closes the
+ * bracket on the jump, G0, to 1e-12 of the heaviest load within its 64 steps more. The rear
  * axle's input is flat. */
 typedef struct {
     double x_c;          /* where the ramp passes 0, m */
@@ -405,15 +406,12 @@ static void test_balance_budget(void **state)
     assert_true(front.calls <= 1 + 2 + 15);  /* the steady start, the bracket, 12 iterations */
     front.jump = 1;
     front.calls = 0;
-    assert_int_equal(tirenv_ride_run_input(&v, &fi, &ri, &s, out, &d), TIRENV_ENOCONV);
-    print_message("%s: %s\n", d.field, d.message);
-    assert_int_equal(front.calls, 1 + 2 + 100);
-    assert_string_equal(d.field, "front");
-    const char *want[] = {"t = 0 s", "balances", "100 iterations", "G in [", "g(G) - G = ",
-                          "load range [1000, 20000] N"};
-    for (size_t i = 0; i < sizeof want / sizeof want[0]; ++i)
-        if (!strstr(d.message, want[i]))
-            fail_msg("no \"%s\" in: %s", want[i], d.message);
+    if (tirenv_ride_run_input(&v, &fi, &ri, &s, out, &d))
+        fail_msg("jump: %s", d.message);
+    print_message("balance on the jump: %zu evaluations\n", front.calls);
+    assert_true(front.calls > 1 + 2 + 100);  /* the bisection ran */
+    assert_true(front.calls <= 1 + 2 + 100 + 64);
+    assert_near(out[0].F_front / v.front.tires, G0, 1e-12 * 20000, 0);
 }
 
 int main(void)

@@ -119,7 +119,9 @@ static void test_plan_e(void **state)
         /* 1e-6 m at 3 m/s: one sample at rest, every comfort figure 0 before */
         {"a run shorter than dt", 0.001, 0.005, 0.2391, 0.2391 + 1e-6, 3, 1, "x_to",
          "less than one output interval"},
-        {"1e9 samples", 1e-9, 0.005, NAN, NAN, 3, 1, "speed", "samples"},
+        {"dt too fine (1e9 Hz > 1e5 Hz)", 1e-9, 0.005, NAN, NAN, 3, 1, "dt", "finer"},
+        {"too many samples at the finest dt", 1e-5, 0.005, NAN, NAN, 0.01, 1, "speed",
+         "samples"},
         {"a crawl of 1e7 s", 0.001, 0.005, NAN, NAN, 1e-6, 1, "speed", "samples"},
         {"a grid of 1.4e10 points", 0.001, 1e-9, NAN, NAN, 3, 1, "dx", "input positions"},
     };
