@@ -166,6 +166,7 @@ tirenv_positions tirenv_positions_default(double x_first, double x_last, double 
 typedef struct tirenv_nn tirenv_nn;
 void tirenv_nn_free(tirenv_nn *nn);
 size_t tirenv_nn_n_inputs(const tirenv_nn *nn);
+void tirenv_nn_input_range(const tirenv_nn *nn, double lo[], double hi[]);
 void tirenv_nn_run_batch(tirenv_nn *nn, size_t n, const double x[], double y[]);
 int tirenv_nn_envelope(tirenv_nn *nn, double R0, double l_c, double L, double H, size_t n,
                        const double x[], double h[], tirenv_diag *diag);

@@ -32,6 +32,21 @@ def test_network_outside_its_range(network_file):
     assert len(m.sweep()) > 0 and any("extrapolation" in w for w in m.warnings)
 
 
+def test_bare_network_warns_outside_its_range(network_file):
+    """Network.envelope and .predict run the bare network anywhere, with a TirenvWarning
+    outside the trained ranges, and none inside."""
+    import warnings
+    net = tirenv.Network(network_file)
+    with pytest.warns(tirenv.TirenvWarning, match="obstacle height 0.2 m is outside"):
+        net.envelope([0.0], 0.33, 0.10, 0.20)
+    with pytest.warns(tirenv.TirenvWarning, match="contact length 0.9 m is outside"):
+        net.predict([[0.5, 0.9, 0.05, 0.10]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        net.envelope([0.0], 0.33, 0.10, 0.05)
+        net.predict([[0.5, 0.33, 0.05, 0.10]])
+
+
 def test_ride_refusals():
     cleat = tirenv.Profile.cleat(0.30, 0.05)
     stiff = tirenv.Vehicle(set={"FRONT_AXLE.TIRE_STIFFNESS": 1e9,

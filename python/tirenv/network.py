@@ -6,8 +6,8 @@ import warnings
 
 import numpy as np
 
-from ._c import (ffi, lib, check, doubles, double_ptr, invalid, is_scalar, new_diag, one_or_all,
-                 path_bytes)
+from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, invalid, is_scalar,
+                 new_diag, one_or_all, path_bytes)
 
 INPUTS = ("x_N", "contact_length_m", "obstacle_height_m", "obstacle_length_m")
 
@@ -42,10 +42,26 @@ class Network:
             raise invalid("the model file records no R0: pass R0 (m)", "R0")
         return R0
 
+    def _outside(self, columns):
+        """A TirenvWarning for each of the obstacle's inputs (columns: index -> values) outside
+        the range the network was trained on, as Model("nn", extrapolate=True) warns."""
+        n = self.n_inputs
+        lo, hi = ffi.new("double[]", n), ffi.new("double[]", n)
+        lib.tirenv_nn_input_range(self._nn, lo, hi)
+        names = {1: "contact length", 2: "obstacle height", 3: "obstacle length"}
+        for i, v in columns.items():
+            v = np.asarray(v, dtype=np.float64)
+            if v.size and (v.min() < lo[i] or v.max() > hi[i]):
+                bad = v.min() if v.min() < lo[i] else v.max()
+                warnings.warn(f"{names[i]} {bad:g} m is outside the range the network was "
+                              f"trained on ({lo[i]:g} to {hi[i]:g} m): the prediction is an "
+                              "extrapolation", TirenvWarning, stacklevel=3)
+
     def predict(self, inputs):
         """h (m) for rows of raw inputs (x_N, l_c m, H m, L m): an array of shape (n, 4) gives
         n values, one row of 4 a float. A NaN or infinite input raises ValueError naming its
-        row and column."""
+        row and column; a contact length or obstacle outside the trained ranges is evaluated
+        with a TirenvWarning."""
         a = np.asarray(inputs)
         one = a.ndim == 1
         if a.dtype.kind not in "biuf":
@@ -58,6 +74,7 @@ class Network:
             row, col = (int(i) for i in np.argwhere(bad)[0])
             raise invalid(f"expected finite numbers, got {a[row, col]} in row {row}, "
                           f"column {col}", "inputs")
+        self._outside({i: a[:, i] for i in range(1, min(4, self.n_inputs))})
         y = np.empty(a.shape[0])
         with self._lock:
             lib.tirenv_nn_run_batch(self._nn, a.shape[0], double_ptr(a), double_ptr(y))
@@ -65,7 +82,10 @@ class Network:
 
     def envelope(self, x, contact_length, length, height, R0=None):
         """h (m) at centre positions x (m) over a length x height (m) cleat centred at 0, at
-        the given contact length (m); a scalar x gives a float."""
+        the given contact length (m); a scalar x gives a float. Outside the trained ranges,
+        evaluated with a TirenvWarning."""
+        if self.n_inputs >= 4:
+            self._outside({1: contact_length, 2: height, 3: length})
         scalar = is_scalar(x)
         x = doubles(x, "x")
         h, diag = np.empty(x.size), new_diag()
