@@ -388,6 +388,11 @@ int cli_refuse_clobber(const char *cmd, const char *output, const char *option,
 int cli_refuse_clobber_dir(const char *cmd, const char *output, const char *option,
                            const char *dir);
 
+/* cli_refuse_clobber for an output directory dir into which the command writes the files
+ * names[] (NULL-terminated): the input must be none of them. */
+int cli_refuse_clobber_into(const char *cmd, const char *dir, const char *const names[],
+                            const char *option, const char *input);
+
 /* Whether paths a and b name one existing directory, symbolic links followed (clobber.c). */
 int cli_same_dir(const char *a, const char *b);
 

@@ -6,6 +6,7 @@
 #define _DEFAULT_SOURCE  /* realpath */
 #include "cli/cli.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -63,4 +64,20 @@ int cli_same_dir(const char *a, const char *b)
     free(ra);
     free(rb);
     return same;
+}
+
+int cli_refuse_clobber_into(const char *cmd, const char *dir, const char *const names[],
+                            const char *option, const char *input)
+{
+    for (size_t k = 0; input && names[k]; ++k) {
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
+        if (clashes(path, input, 0)) {
+            cli_error("%s: -o %s writes %s, which is the file %s %s: the output would "
+                      "replace it; expected another directory, or the input elsewhere", cmd,
+                      dir, path, option, input);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return CLI_EXIT_OK;
 }

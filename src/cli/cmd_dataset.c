@@ -146,6 +146,12 @@ int cli_dataset_main(int argc, char *argv[])
         return list(dir, tire.springs.R0);
     if ((code = cli_cam_keys(tirenv_model_type_find(design->model), &tire, o.tire_path)))
         return code;
+    /* The files a build writes into dir besides its cases' CSV logs and curves
+     * (src/dataset/dataset_build.c), of which --tire may be one: `--tire DIR/tire.tir -o
+     * DIR` replaced the user's tire file by the data set's. */
+    static const char *const writes[] = {"tire.tir", "cases.csv", "source.txt", NULL};
+    if ((code = cli_refuse_clobber_into("dataset", dir, writes, "--tire", o.tire_path)))
+        return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_dataset_build_settings bs = tirenv_dataset_build_default();

@@ -86,5 +86,17 @@ check "ride -o into a missing directory: exit 2 before any run" \
 run "$bin" ride --cleat 0.1,0.05 --model point --speed 5 -o series.csv
 check "ride -o a file: written, one row a sample after the header and comment" \
     '[ $rc -eq 0 ] && head -n 1 series.csv | grep -q "^t_s,x_front_m" && [ "$(rows series.csv)" -gt 1000 ]'
+# dataset build writes tire.tir into -o DIR: --tire naming that file (or a link to it) is
+# refused before any case runs, the user's file unchanged.
+mkdir -p ds
+cp "$repo/data/tires/205-60R15-mfswift.tir" ds/tire.tir
+cp ds/tire.tir ds.before
+ln -s ds/tire.tir link.tir
+for t in ds/tire.tir link.tir; do
+    run "$bin" dataset build --design 205-60R15 --tire $t -o ds
+    check "dataset build --tire $t -o ds: exit 1 naming ds/tire.tir, the file unchanged, no case" \
+        '[ $rc -eq 1 ] && grep -q "writes ds/tire.tir, which is the file --tire $t" err &&
+         cmp -s ds/tire.tir ds.before && [ ! -e ds/cases.csv ]'
+done
 
 clilib_done
