@@ -708,16 +708,16 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
 {
     *e = envelope_default();
     const cli_opt own[] = {
-        /* envelope's own two first: predict's table starts after them */
-        {.name = "stream", .kind = CLI_FLAG, .dst = &e->stream},
+        /* envelope's own first (the ring's --detail): predict's table starts after it */
         {.name = "detail", .kind = CLI_FLAG, .dst = &e->detail},
+        {.name = "stream", .kind = CLI_FLAG, .dst = &e->stream},
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = e, .parse = parse_encoding},
         {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e->relative,
          .parse = cli_parse_relative_to},
         {.name = NULL},
     };
     const cli_parser p = {.name = cmd, .usage = help,
-                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 2),
+                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 1),
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
                                     CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
                                     CLI_NETWORK | CLI_EXTRAPOLATE | CLI_JOBS};

@@ -11,7 +11,8 @@ static void usage(FILE *fp)
     fputs("usage: tirenv predict --nn MODEL.json OBSTACLE (--load N | --contact-length M)\n"
           "                      [--model NAME] [--extrapolate] [--track V] [--side S]\n"
           "                      [--crg-nan-mode M] [--tracks N] [--width W] [--x-from X]\n"
-          "                      [--x-to X] [--dx DX] [-o FILE.csv|FILE.crg|FILE.rdf]\n"
+          "                      [--x-to X] [--dx DX] [--stream]\n"
+          "                      [-o FILE.csv|FILE.crg|FILE.rdf]\n"
           "                      [--crg-encoding E] [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
           "                      [--jobs N]\n"
@@ -63,7 +64,12 @@ static void usage(FILE *fp)
           "  --x-from X, --x-to X first and last centre position, m; default: from R0 + 0.02 m\n"
           "                       before the obstacle's first vertex to R0 + 0.02 m after its\n"
           "                       last\n"
-          "  --dx DX              spacing of the positions, m (default 0.001)\n",
+          "  --dx DX              spacing of the positions, m (default 0.001)\n"
+          "  --stream             with --profile: read the road as the tire rolls, in memory\n"
+          "                       bounded by the network's window whatever the road's\n"
+          "                       length, the same bytes as without it ('tirenv envelope\n"
+          "                       --help' says how each road format is read); the warnings\n"
+          "                       come after the rows\n",
           fp);
     cli_help_road(fp, 1);
     cli_help_envelope_output(fp);

@@ -90,5 +90,13 @@ check "outside the trained range: both refuse (exit 2), no file, the same obstac
      [ "$(grep -o "the obstacle at x = [^(]*" refused.w.err)" = \
        "$(grep -o "the obstacle at x = [^(]*" refused.s.err)" ] &&
      grep -q "streamed window" refused.s.err'
+# predict is envelope --model nn: its --stream too, the same bytes and warnings.
+run "$bin" predict --nn net.json --profile road.csv --contact-length 0.33 --extrapolate \
+    --stream -o predict.csv
+check "predict --stream: the envelope's streamed CSV, byte for byte, and its warnings" \
+    '[ $rc -eq 0 ] && cmp -s predict.csv iso.s.csv &&
+     [ "$(grep "^tirenv: predict: warning" err | sed "s/^tirenv: predict: //")" = \
+       "$(grep "^tirenv: envelope: warning" iso.s.err | sed "s/^tirenv: envelope: //")" ] &&
+     grep -q "^tirenv: predict: warning" err'
 
 clilib_done
