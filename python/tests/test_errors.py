@@ -141,3 +141,13 @@ def test_plausible_ranges_name_the_key():
     for key, value in [("MASS", 1e9), ("GRAVITY", 1e-308), ("SEAT_AHEAD_OF_CG", 1e9)]:
         with pytest.raises(tirenv.TirenvError, match=key):
             tirenv.Vehicle(set={key: value})
+
+
+def test_set_names_the_argument_not_the_cli_option():
+    """A bad set={...} entry is named as the set argument, not as the CLI's --set."""
+    with pytest.raises(tirenv.TirenvValueError) as e:
+        tirenv.Tire(set={"FOO": 1})
+    assert e.value.file == "set" and e.value.field == "FOO" and str(e.value).startswith("set: ")
+    with pytest.raises(tirenv.TirenvValueError) as e:
+        tirenv.Vehicle(set={"MASS": 1e30})
+    assert e.value.file == "set" and "plausible range" in e.value.message

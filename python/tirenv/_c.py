@@ -96,6 +96,14 @@ def error_from(status, diag):
     return e
 
 
+def check_set(status, diag):
+    """check() for a set={...} assignment: the library names its source "--set", the CLI's
+    option; here it is the set argument."""
+    if status and ffi.string(diag.file) == b"--set":
+        diag.file = b"set"
+    check(status, diag)
+
+
 def check(status, diag):
     if status:
         raise error_from(status, diag)

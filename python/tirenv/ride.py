@@ -5,8 +5,8 @@ import math
 
 import numpy as np
 
-from ._c import (ffi, lib, check, doubles, double_ptr, invalid, new_diag, path_bytes,
-                 struct_dtype)
+from ._c import (ffi, lib, check, check_set, doubles, double_ptr, invalid, new_diag,
+                 path_bytes, struct_dtype)
 from .model import Model
 from .tire import Tire
 
@@ -44,7 +44,7 @@ class Vehicle:
             check(lib.tirenv_vehicle_read(path_bytes(path), self._v, diag), diag)
         for key, value in (set or {}).items():
             value = repr(value) if isinstance(value, float) else value
-            check(lib.tirenv_vehicle_set(self._v, f"{key}={value}".encode(), diag), diag)
+            check_set(lib.tirenv_vehicle_set(self._v, f"{key}={value}".encode(), diag), diag)
         check(lib.tirenv_vehicle_check(self._v, diag), diag)
         # The vehicle as given (NAN: the tire file's), then its tires' springs and dampers.
         self._given = ffi.new("tirenv_vehicle *", self._v[0])

@@ -7,7 +7,7 @@ import os
 import stat
 import warnings
 
-from ._c import ffi, lib, check, new_diag, path_bytes
+from ._c import ffi, lib, check, check_set, new_diag, path_bytes
 
 
 def _assignment(key, value):
@@ -52,7 +52,7 @@ class Tire(collections.abc.Mapping):
             if self._origin.note[0] != b"\0":
                 warnings.warn(f"{path}: {self.derived_note}", stacklevel=2)
         for key, value in (set or {}).items():
-            check(lib.tirenv_tir_set(self._t, _assignment(key, value), diag), diag)
+            check_set(lib.tirenv_tir_set(self._t, _assignment(key, value), diag), diag)
         check(lib.tirenv_tire_check(self._t, diag), diag)
         self.path = path
 
