@@ -10,7 +10,7 @@
 # to 2.5e-11 m (glibc 2.36 with GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA), and `make test`
 # must pass on such a machine too. So a file whose bytes differ passes when it has the same
 # lines, the same text, and every number within TOL (1e-9, times the number where it exceeds
-# 1): a hundred times that spread, and far below any change a model makes (a change of a
+# 1): forty times that spread, and far below any change a model makes (a change of a
 # model, its tire or the rig moves the curves by micrometres at least). The TAP line says
 # which: "the same bytes" or "the same numbers".
 set -eu
