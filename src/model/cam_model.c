@@ -25,6 +25,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "model/cam_impl.h"
 #include "model/model_impl.h"
@@ -339,10 +340,9 @@ typedef struct {
     double z_cap;               /* the profile's highest vertex, m: bounds the scan */
     tirenv_cam__sweep sweep;    /* drop floor and tangency memo, shared by the two cams */
     tirenv_cam__track front, rear; /* where each cam was */
-    /* The first position since the set where a cam touched the ground more than the tire's
-     * ELLIPS_MAX_STEP above its lowest point (m; NAN: none), and that height (m). */
-    double step_x, step_dz;
-    char said[320];             /* tirenv_model_warnings' text, made when asked */
+    /* tirenv_model_warnings': the first position since the set where a cam touched the
+     * ground more than the tire's ELLIPS_MAX_STEP above its lowest point, "" if none. */
+    char said[320];
 } cam_state;
 
 static void *cam_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
@@ -362,7 +362,6 @@ static void *cam_alloc(const tirenv_model_type *type, const tirenv_tire *tire)
         return NULL;
     }
     tirenv_cam__sweep_init(&st->sweep, &st->cam);
-    st->step_x = st->step_dz = NAN;
     return st;
 }
 
@@ -497,7 +496,7 @@ static int cam_set(void *state, const tirenv_profile *p, double load, double z_f
      * as they are (any content gives the same results), but a fresh start is tidier. */
     tirenv_cam__sweep_forget(&st->sweep);
     st->front = st->rear = (tirenv_cam__track){0};
-    st->step_x = st->step_dz = NAN;
+    st->said[0] = '\0';
     return TIRENV_OK;
 }
 
@@ -506,10 +505,10 @@ static int cam_set_profile(void *state, const tirenv_profile *p, double load, do
                            tirenv_diag *diag)
 {
     cam_state *st = state;
-    const double step_x = st->step_x, step_dz = st->step_dz;
+    char said[sizeof st->said];
+    memcpy(said, st->said, sizeof said);
     const int status = cam_set(state, p, load, z_flat, diag);
-    st->step_x = step_x;
-    st->step_dz = step_dz;
+    memcpy(st->said, said, sizeof said);
     return status;
 }
 
@@ -521,10 +520,13 @@ static void step_check(cam_state *st, double x, double Z_f, double pz_f, double 
                        double pz_r)
 {
     const double dz = fmax(pz_f - Z_f, pz_r - Z_r);
-    if (dz > st->tire.cam.max_step && isnan(st->step_x)) {
-        st->step_x = x;
-        st->step_dz = dz;
-    }
+    if (!(dz > st->tire.cam.max_step) || st->said[0])
+        return;
+    snprintf(st->said, sizeof st->said,
+             "at x = %.6g m a cam touches the ground %.4g mm above its lowest point, higher "
+             "than the tire's ELLIPS_MAX_STEP (%.4g mm), the highest road step its shape is "
+             "meant for: from there on its curve may extrapolate that shape",
+             x, 1e3 * dz, 1e3 * st->tire.cam.max_step);
 }
 
 /* Positions usually come in order, so each cam keeps a track, and the two share the sweep's
@@ -571,15 +573,7 @@ static int cam_set_load(void *state, double load, double *z_flat, tirenv_diag *d
 
 static const char *cam_warnings(const void *state)
 {
-    cam_state *st = (cam_state *)state;  /* its text buffer only */
-    if (isnan(st->step_x))
-        return "";
-    snprintf(st->said, sizeof st->said,
-             "at x = %.6g m a cam touches the ground %.4g mm above its lowest point, higher "
-             "than the tire's ELLIPS_MAX_STEP (%.4g mm), the highest road step its shape is "
-             "meant for: from there on its curve may extrapolate that shape",
-             st->step_x, 1e3 * st->step_dz, 1e3 * st->tire.cam.max_step);
-    return st->said;
+    return ((const cam_state *)state)->said;
 }
 
 /* The load and what follows from it; the tracks and the memo change no bit of a lift, and
