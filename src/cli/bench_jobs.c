@@ -84,18 +84,18 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
 {
     const tirenv_model_type *type = tirenv_model_type_find("springs");
     tirenv_model *m = tirenv_model_alloc(type, tire);
-    tirenv_point *pt1 = malloc(n * sizeof *pt1), *pt2 = malloc(n * sizeof *pt2);
-    cli_chunks *c1 = NULL, *c2 = NULL;
+    /* [j]: on j + 1 threads */
+    tirenv_point *pt[2] = {malloc(n * sizeof(tirenv_point)), malloc(n * sizeof(tirenv_point))};
+    cli_chunks *c[2] = {NULL, NULL};
     double load = 0;
-    int status = m && pt1 && pt2 ? tirenv_model_load_for_contact_length(m, l_c, &load, diag)
-                                 : TIRENV_ENOMEM;
+    int status = m && pt[0] && pt[1] ? tirenv_model_load_for_contact_length(m, l_c, &load, diag)
+                                     : TIRENV_ENOMEM;
     if (!status)
         status = tirenv_model_set(m, road, load, diag);
-    /* c1 and c2 share m as their first thread's model and restore its cold state */
-    if (!status)
-        status = cli_chunks_open(m, type, NULL, 1, &road, load, x_from, dx, n, 1, &c1, diag);
-    if (!status)
-        status = cli_chunks_open(m, type, NULL, 1, &road, load, x_from, dx, n, 2, &c2, diag);
+    /* both share m as their first thread's model and restore its cold state */
+    for (size_t j = 0; j < 2 && !status; ++j)
+        status = cli_chunks_open(m, type, NULL, 1, &road, load, x_from, dx, n, j + 1, &c[j],
+                                 diag);
     /* 2 repeat + 1 rounds, each a sweep on one thread and one on two (which goes first
      * alternating): the figure is the median of the rounds' own ratios, as the cleat's and the
      * fine road's are (cmd_bench.c), which a burst of load on a few sweeps does not move; the
@@ -106,22 +106,17 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
     if (!status && !ratio)
         status = TIRENV_ENOMEM;
     for (size_t r = 0; r < rounds && !status; ++r) {
-        double s1 = INFINITY, s2 = INFINITY;
-        if (r % 2 == 0) {
-            status = timed_sweep(c1, n, pt1, &s1, diag);
-            if (!status)
-                status = timed_sweep(c2, n, pt2, &s2, diag);
-        } else {
-            status = timed_sweep(c2, n, pt2, &s2, diag);
-            if (!status)
-                status = timed_sweep(c1, n, pt1, &s1, diag);
+        double s[2] = {INFINITY, INFINITY};
+        for (size_t k = 0; k < 2 && !status; ++k) {
+            const size_t j = (r % 2) ^ k;  /* one thread first in even rounds, two in odd */
+            status = timed_sweep(c[j], n, pt[j], &s[j], diag);
         }
-        ratio[r] = s2 / s1;
-        t1 = fmin(t1, s1);
-        t2 = fmin(t2, s2);
+        ratio[r] = s[1] / s[0];
+        t1 = fmin(t1, s[0]);
+        t2 = fmin(t2, s[1]);
     }
     if (!status) {
-        const int same = memcmp(pt1, pt2, n * sizeof *pt1) == 0;
+        const int same = memcmp(pt[0], pt[1], n * sizeof *pt[0]) == 0;
         const double mid = cli_bench_median(ratio, rounds); /* sorts ratio */
         cli_bench_figure("envelope_jobs1_s", t1);
         cli_bench_figure("envelope_jobs2_s", t2);
@@ -154,9 +149,9 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
     double s1 = INFINITY, s2 = INFINITY;
     int same = 1;
     for (long rep = 0; rep < repeat && !status; ++rep) {
-        status = timed_stream(m, type, road, load, x_from, dx, n, 1, pt1, &s1, &same, diag);
+        status = timed_stream(m, type, road, load, x_from, dx, n, 1, pt[0], &s1, &same, diag);
         if (!status)
-            status = timed_stream(m, type, road, load, x_from, dx, n, 2, pt1, &s2, &same,
+            status = timed_stream(m, type, road, load, x_from, dx, n, 2, pt[0], &s2, &same,
                                   diag);
     }
     if (!status) {
@@ -171,11 +166,11 @@ int cli_bench_jobs(const tirenv_tire *tire, const tirenv_profile *road, double l
             status = tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
                                   "the streamed sweep differs from the whole one");
     }
-    cli_chunks_free(c1);
-    cli_chunks_free(c2);
+    for (size_t j = 0; j < 2; ++j) {
+        cli_chunks_free(c[j]);
+        free(pt[j]);
+    }
     tirenv_model_free(m);
     free(ratio);
-    free(pt1);
-    free(pt2);
     return status;
 }
