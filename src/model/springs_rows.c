@@ -828,7 +828,7 @@ static int vertex_rows(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
      * sectors (scan_prove), and the scans at one x after the first scans_unproven there use
      * proofs, made by the scan that follows those, where they cover its run; elsewhere the
      * scan walks as it did (the same rows every way). The proofs cost a few sectors' work
-     * and a pass over the vertices to make, and pay only over the scans after: at most x
+     * and a pass over the vertices to make, and pay only over the scans after: most x
      * see one or two scans (the later evaluations there take the tangent's update). */
     const int same_x = c->seen_serial == p->serial && c->seen_x == x;
     if (!same_x) {
