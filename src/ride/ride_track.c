@@ -60,7 +60,8 @@ int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double
     tirenv_ride_table_loads(G0, want);
     /* The warnings of G0's row, then of the lightest and the heaviest rows if they have their
      * own (the network's contact length leaving its trained range). */
-    char ends[2][512] = {"", ""}, said_at[2][512] = {"", ""};
+    char end_said[2][512] = {"", ""};
+    double end_load[2] = {0, 0};
     if (warnings && warnings_size)
         warnings[0] = '\0';
     size_t m = 0;
@@ -79,9 +80,8 @@ int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double
             if (want[j] == G0 && warnings && warnings_size)
                 snprintf(warnings, warnings_size, "%s", said);
             else if (said[0] && (m == 0 || want[j] > G0)) {
-                snprintf(ends[m == 0 ? 0 : 1], sizeof ends[0], "table row at %.6g N: %.400s",
-                         want[j], said);
-                snprintf(said_at[m == 0 ? 0 : 1], sizeof said_at[0], "%s", said);
+                end_load[m == 0 ? 0 : 1] = want[j];
+                snprintf(end_said[m == 0 ? 0 : 1], sizeof end_said[0], "%s", said);
             }
             load[m++] = want[j];
         }
@@ -90,9 +90,10 @@ int tirenv_ride_table_build(tirenv_model *model, const tirenv_profile *p, double
         return status;
     /* An end row's own warnings only: the cam's, of the ground, are G0's too. */
     for (int e = 0; e < 2 && warnings && warnings_size; ++e)
-        if (ends[e][0] && strncmp(said_at[e], warnings, sizeof said_at[e] - 1)) {
+        if (end_said[e][0] && strncmp(end_said[e], warnings, sizeof end_said[e] - 1)) {
             const size_t used = strlen(warnings);
-            snprintf(warnings + used, warnings_size - used, "%s%s", used ? "\n" : "", ends[e]);
+            snprintf(warnings + used, warnings_size - used, "%stable row at %.6g N: %.400s",
+                     used ? "\n" : "", end_load[e], end_said[e]);
         }
     int alike = m > 1;
     for (size_t k = n; alike && k < m * n; ++k)
