@@ -34,7 +34,8 @@ static void usage(FILE *fp)
           "force (for the cam exactly (Z_f - Z_r)/l_s, docs/models.md section 7; for the point\n"
           "contact the ground's slope; for the network dh/dx of its curve).\n"
           "A one-line summary (peak, first rise, iterations) goes to standard error, after any\n"
-          "warning the model has (the network's inputs outside its training range).\n"
+          "warning the model has (the network's inputs outside its training range; the cam\n"
+          "touching the ground higher above its lowest point than the tire's ELLIPS_MAX_STEP).\n"
           "\n"
           "options:\n",
           fp);
@@ -60,7 +61,7 @@ static void usage(FILE *fp)
           "                       twice, first to check every row; an OpenCRG road a block\n"
           "                       of rows at a time, an RDF road a line at a time; a pipe\n"
           "                       or /dev/stdin is kept in memory, at most 256 MiB); the\n"
-          "                       network's warnings come after the rows\n",
+          "                       model's warnings come after the rows\n",
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
