@@ -5,7 +5,9 @@
 # clones: what a processor other than x86-64 compiles) and the project's warnings as errors, so
 # that an x86-64 make test sees what a fresh clone elsewhere would fail to build. A syntax pass
 # (some 4 s): the middle end's warnings and the outputs are make test-portable's (a whole
-# build, its tests, its envelopes against the default build's, some 4 minutes).
+# build, its tests, its envelopes against the default build's, some 4 minutes). The flags
+# come from CMakeLists.txt (TIRENV_WARNING_FLAGS, -Werror, TIRENV_PORTABLE_FLAGS, the
+# packages' include directories):
 #   sh tests/package/portable.sh CC SOURCE_DIR GENERATED_INCLUDE_DIR [CFLAGS...]
 # SPDX-License-Identifier: Apache-2.0
 set -u
@@ -23,13 +25,15 @@ trap 'rm -rf "$tmp"' EXIT
 
 count=0
 for f in $(cd "$src" && find src -name '*.c' ! -path 'src/cli/*' | LC_ALL=C sort); do
-    "$cc" -std=c11 -fsyntax-only -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Werror \
-        -U__SSE2__ -DTIRENV_RING_NO_AVX2 -DTIRENV_SPRINGS_NO_CLONES -DTIRENV_NN_NO_CLONES \
-        -D_XOPEN_SOURCE=700 -I"$src/include" -I"$generated" -I"$src/src" "$@" "$src/$f" \
+    "$cc" -std=c11 -fsyntax-only -I"$src/include" -I"$generated" -I"$src/src" "$@" "$src/$f" \
         >"$tmp/log" 2>&1
     check "$f compiles warning-free with the generic paths alone" test $? -eq 0 ||
         sed 's/^/#   /' "$tmp/log"
     count=$((count + 1))
 done
 check "the sources were found ($count)" test "$count" -gt 100
+case " $* " in
+*" -Werror "*" -U__SSE2__ "*) check "the warnings as errors and the generic paths' flags given" true ;;
+*) check "the warnings as errors and the generic paths' flags given ($*)" false ;;
+esac
 tap_done
