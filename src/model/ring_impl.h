@@ -428,7 +428,7 @@ int tirenv_ring__solve_shear(tirenv_ring *r, double x_c, double z, double *fx, d
 
 /* Before the ground is sampled for an evaluation at abscissa x (m): where it is not the last
  * answer's, the ground's penetration at the nodes of that answer's contact, kept from its
- * points for the warm start's shift (ring_shear.c, warm_shift). */
+ * points for the warm start's shift (ring_warm.c). */
 void tirenv_ring__tread_new_x(tirenv_ring *r, double x);
 
 /* For tests: the next evaluation's warm start without the last answer's contact (its nodes

@@ -37,10 +37,11 @@
  * Newton system (their block is tridiagonal, coupled to u_j, u_j+1 of their interval only), so
  * the banded system keeps its bandwidth.
  *
- * This file holds the equilibrium: the tread's storage, the window's assembly, the Newton
- * driver's callbacks, the windows and sub-windows, the forces and dF_z/dz. The banded
- * factorisation is ring_tband.c's, the exterior's condensation ring_exterior.c's, the knots'
- * ring_knots.c's and the tests' hooks ring_shear_probe.c's (ring_shear_impl.h). */
+ * This file holds the equilibrium: the window's assembly, the Newton driver's callbacks, the
+ * windows and sub-windows, the forces and dF_z/dz. The tread's storage is ring_tread.c's, the
+ * warm start at a new x ring_warm.c's, the banded factorisation ring_tband.c's, the exterior's
+ * condensation ring_exterior.c's, the knots' ring_knots.c's and the tests' hooks
+ * ring_shear_probe.c's (ring_shear_impl.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,195 +49,6 @@
 #include "model/ring_shear_impl.h"
 #include "model/ring_tband.h"
 #include "model/ring_impl.h"
-
-/* The driver's vectors (2 M + cap_k each) and the knots' arrays (cap_k each) from the N + m
- * unknowns and m knots of the solve about to start on: NaN (T->poison). */
-static void poison_past(tirenv_ring_tread *T, size_t N, size_t m)
-{
-    const size_t V = 2 * T->M + T->cap_k, cap = T->cap_k;
-    double *const vec[] = {T->x, T->xn, T->xt, T->g, T->kp};
-    double *const knot[] = {T->kd, T->ko, T->dd, T->doff, T->c0,
-                            T->c1, T->z0, T->z1, T->kphi, T->kdphi};
-    for (size_t v = 0; v < sizeof vec / sizeof *vec; ++v)
-        for (size_t i = N + m; i < V; ++i)
-            vec[v][i] = NAN;
-    for (size_t v = 0; v < sizeof knot / sizeof *knot; ++v)
-        for (size_t k = m; k < cap; ++k)
-            knot[v][k] = NAN;
-}
-
-/* Room for m knots: the driver's vectors (2 M + m each) and the knots' arrays. Nonzero if
- * out of memory (T keeps what it had). Not zeroed: a solve reads only what it wrote (its N + m
- * unknowns, its m knots), and zeros hid from valgrind's memcheck (tests/model/memcheck.sh)
- * the read that find_knots' knots outside the window made; the tests put NaN there
- * (tirenv_ring__tread_poison). */
-int tirenv_ring__reserve_knots(tirenv_ring_tread *T, size_t m)
-{
-    if (T->col && m <= T->cap_k)
-        return 0;
-    const size_t cap = tirenv_core__capacity(T->cap_k, 16, m);
-    const size_t V = 2 * T->M + cap;
-    double *col = malloc((2 * T->M + 5 * V) * sizeof *col);
-    size_t *kj = malloc(cap * sizeof *kj);
-    double *kd = malloc(10 * cap * sizeof *kd);
-    if (!col || !kj || !kd) {
-        free(col);
-        free(kj);
-        free(kd);
-        return 1;
-    }
-    free(T->col);
-    free(T->kj);
-    free(T->kd);
-    T->col = col;
-    T->x = col + 2 * T->M;
-    T->xn = T->x + V;
-    T->xt = T->xn + V;
-    T->g = T->xt + V;
-    T->kp = T->g + V;
-    T->kj = kj;
-    T->kd = kd;
-    T->ko = kd + cap;
-    T->dd = kd + 2 * cap;
-    T->doff = kd + 3 * cap;
-    T->c0 = kd + 4 * cap;
-    T->c1 = kd + 5 * cap;
-    T->z0 = kd + 6 * cap;
-    T->z1 = kd + 7 * cap;
-    T->kphi = kd + 8 * cap;
-    T->kdphi = kd + 9 * cap;
-    T->cap_k = cap;
-    if (T->poison) {
-        for (size_t i = 0; i < 2 * T->M; ++i)
-            col[i] = NAN;
-        poison_past(T, 0, 0);
-    }
-    return 0;
-}
-
-void tirenv_ring__tread_poison(tirenv_ring_tread *T)
-{
-    T->poison = 1;
-    for (size_t i = 0; i < 2 * T->M; ++i)
-        T->col[i] = NAN;
-    poison_past(T, 0, 0);
-}
-
-double tirenv_ring__tread_shear(const tirenv_ring_params *par)
-{
-    return par->G_t * par->t_r * par->b_p;
-}
-
-tirenv_ring_tread *tirenv_ring__tread_alloc(size_t M, double R, const tirenv_ring_params *par,
-                                            const double stencil[3])
-{
-    tirenv_ring_tread *T = calloc(1, sizeof *T);
-    if (!T)
-        return NULL;
-    const double dth = 2 * M_PI / (double)M, k_t = par->k_t;
-    T->M = M;
-    memcpy(T->s, stencil, sizeof T->s);
-    T->k_sh = tirenv_ring__tread_shear(par) / (R * dth);
-    T->k_g = TIRENV_RING_GROUND_LAYER * k_t;
-    T->kap0 = k_t * T->k_g / (T->k_g - k_t) * R * dth;
-    T->lugs = par->lug_count > 0 && par->lug_ratio != 1;
-    T->kap = malloc((4 * M + 3 + SPAN) * sizeof *T->kap);
-    T->end = malloc(M * sizeof *T->end);
-    T->have = calloc(M, 1);
-    T->cols = calloc(M, sizeof *T->cols);
-    T->xw = malloc(8 * M * sizeof *T->xw);
-    T->soft = tirenv_ring__carcass_law(par, R * dth, &T->law);
-    if (!T->kap || !T->end || !T->have || !T->cols || !T->xw || tirenv_ring__reserve_knots(T, 16) ||
-        tirenv_ring__tband_alloc(&T->ext, 2 * M, 0) ||
-        tirenv_ring__tband_alloc(&T->win, 2 * M, TAIL) ||
-        tirenv_ring__tband_alloc(&T->as, 2 * M, TAIL) ||
-        tirenv_ring__tband_alloc(&T->ap, 2 * M, TAIL) ||
-        !(T->ck = malloc(CK_LEN * (2 * M / CKS + 1) * sizeof *T->ck)) ||
-        !(T->ey = malloc(4 * 2 * M * sizeof *T->ey))) {
-        tirenv_ring__tread_free(T);
-        return NULL;
-    }
-    T->u = T->kap + M;
-    T->dw = T->u + M;
-    T->du = T->dw + M;
-    T->pred = T->du + M;
-    T->dxw = T->xw + 2 * M;
-    T->wc = T->xw + 4 * M;
-    T->dn = T->xw + 5 * M;
-    T->dn2 = T->xw + 6 * M;
-    T->ddn = T->xw + 7 * M;
-    for (size_t j = 0; j < M; ++j)
-        T->kap[j] = T->kap0;
-    T->span = T->pred + 3;
-    memset(T->u, 0, (3 * M + 3 + SPAN) * sizeof *T->u);
-    return T;
-}
-
-void tirenv_ring__tread_free(tirenv_ring_tread *T)
-{
-    if (!T)
-        return;
-    free(T->kap);
-    free(T->end);
-    free(T->have);
-    if (T->cols)
-        for (size_t n = 0; n < T->M; ++n)
-            free(T->cols[n]);
-    free(T->cols);
-    free(T->xw);
-    free(T->col);
-    free(T->kj);
-    free(T->kd);
-    free(T->lc);
-    free(T->ext.L);
-    free(T->win.L);
-    free(T->as.L);
-    free(T->ap.L);
-    free(T->ck);
-    free(T->ey);
-    free(T);
-}
-
-double *tirenv_ring__tread_u(tirenv_ring_tread *T) { return T->u; }
-
-size_t tirenv_ring__tread_n_sub(const tirenv_ring_tread *T) { return T->n_sub; }
-
-void tirenv_ring__tread_whole(tirenv_ring_tread *T, int whole) { T->whole = whole; }
-
-void tirenv_ring__tread_no_peel(tirenv_ring_tread *T, int no_peel) { T->no_peel = no_peel; }
-
-size_t tirenv_ring__tread_peeled(const tirenv_ring_tread *T) { return T->n_peel; }
-
-size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->M + 3 + SPAN; }
-
-int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_ring_carcass *law)
-{
-    law->k = par->k_f * arc;
-    law->w_0 = par->w_c0;
-    law->w_s = par->w_cs;
-    return par->w_cs > 0 && par->k_f > 0;
-}
-
-/* The law beyond w_0, with t = (w - w_0)/w_s: the force k (w_0 + w_s (1 - e^-t)) less the
- * linear k w is -k w_s (t + expm1(-t)), its energy -k w_s^2 (t^2/2 - t - expm1(-t)), its
- * tangent k expm1(-t); all three vanish as t -> 0 (the force's tangent continuous at w_0).
- * expm1 keeps the tangent accurate there; the force and the energy, of order t^2/2 and t^3/6,
- * are sums of terms of order t and keep absolute errors of a few ulp of k w_s t and k w_s^2 t
- * (relative ones of eps/t and eps/t^2), far below the linear k w and k w^2/2 they are added
- * to. Below w_0, zero. */
-double tirenv_ring__carcass(const tirenv_ring_carcass *law, double w, double *g1, double *g2)
-{
-    if (!(w > law->w_0)) {
-        *g1 = *g2 = 0;
-        return 0;
-    }
-    const double t = (w - law->w_0) / law->w_s, em = expm1(-t);
-    *g1 = -law->k * law->w_s * (t + em);
-    *g2 = law->k * em;
-    return -law->k * law->w_s * law->w_s * (0.5 * t * t - t - em);
-}
-
-size_t tirenv_ring__tread_newton_steps(const tirenv_ring_tread *T) { return T->n_newton; }
 
 /* The tread's compression stiffness of every node at the centre's x: lugs turn with the tire
  * (ring.c, tread_kappa); k_c in series with the contact layer k_g is the node's k_t. */
@@ -799,14 +611,6 @@ static const size_t *beyond_span(const tirenv_ring *r, const double xw[], size_t
     return beyond;
 }
 
-/* The last answer's contact guides an evaluation's warm start within WARM_DX (m) of its
- * abscissa: its nodes, which the first sub-window holds (warm_span), and its ground, along
- * which the tread surface moves (warm_shift). Inside the patch the tread surface lies within
- * the contact layer's compression, some 1e-7 m, of the ground, so wherever the ground moved
- * away from it with x (a road's slope over the step: 1e-5 m and more) the warm start's points
- * read as free or deep in. The nodes in contact move by a node spacing over some 3 mm of
- * travel, so the last contact's nodes are nearly this one's. */
-static const double WARM_DX = 2e-3;
 
 /* The nodes the first sub-window must hold besides the warm start's contact: beyond_span's,
  * and, where the last answer was within WARM_DX of x_c (m), the nodes of its contact. Without
@@ -947,7 +751,7 @@ static int solve_on(tirenv_ring *r, double x_c, size_t a, size_t b, size_t k0, s
     if (!tirenv_ring__find_knots(r)) {
         const size_t m = T->m;
         if (T->poison)
-            poison_past(T, N, m);
+            tirenv_ring__poison_past(T, N, m);
         const double(*Q)[NB] = tirenv_ring__window_end(r, x_c);
         double *x = T->x;
         memcpy(x, xw, N * sizeof *x);
@@ -1048,101 +852,6 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
     T->pred[0] = z, T->pred[1] = x_c, T->pred[2] = 1;
 }
 
-/* The warm start at a new abscissa moves the tread surface with the ground (WARM_DX): where
- * the ground under a node moved with x, the last answer's u read its points as free or deep
- * in, and Newton's first steps changed tens of states (with the line search over a road). A
- * node whose ray's ground touched the tread surface in the last answer, within WARM_DX of the
- * last x, starts from u + (d - d_last - dz d(d)/dz) of its ray's ground (dz u/dz already
- * follows the part that moves with z), where that moved by at most WARM_SHIFT_MAX (m; not a
- * cleat's face passing the ray). One pass over the points of the last contact's nodes; the
- * minimum does not depend on the start (its states' system is solved last), so the same
- * bits. */
-static const double WARM_SHIFT_MAX = 1e-3;
-
-/* The larger d of the points at each node ja .. jb of r's points from k_lo on (a node's own
- * ray; two one-sided values where a vertex lies at it), of those in contact with the tread
- * surface only with in_contact, into dn (-INFINITY where none), their d(d)/dz into ddn
- * (unless NULL). The points are in node order: the first of interval ja - 1 by bisection. */
-static void node_d(const tirenv_ring *r, size_t k_lo, size_t ja, size_t jb, int in_contact,
-                   double dn[], double ddn[])
-{
-    for (size_t j = ja; j <= jb; ++j)
-        dn[j] = -INFINITY;
-    size_t k0 = k_lo, k1 = r->n_pts;
-    while (k0 < k1) {
-        const size_t mid = k0 + (k1 - k0) / 2;
-        if (r->pts[mid].j + 1 < ja)
-            k0 = mid + 1;
-        else
-            k1 = mid;
-    }
-    for (size_t k = k0; k < r->n_pts && r->pts[k].j <= jb; ++k) {
-        const tirenv_ring_point *q = &r->pts[k];
-        if (!(q->s == 0 || q->s == 1) || (in_contact && !(q->st & 1)))
-            continue;
-        const size_t j = q->j + (q->s == 1);
-        if (j >= ja && j <= jb && q->d > dn[j]) {
-            dn[j] = q->d;
-            if (ddn)
-                ddn[j] = q->dd;
-        }
-    }
-}
-
-void tirenv_ring__tread_forget(tirenv_ring_tread *T)
-{
-    T->span[0] = 0;
-    T->last_ok = T->dn_ok = 0;
-}
-
-void tirenv_ring__tread_new_x(tirenv_ring *r, double x)
-{
-    tirenv_ring_tread *T = r->tread;
-    T->dn_ok = 0;
-    if (T->soft || !T->last_ok || x == T->last_x || !(fabs(x - T->last_x) <= WARM_DX) ||
-        r->k_first > r->k_last || r->k_last >= r->n_pts)
-        return;
-    if (T->skip > 0) {
-        --T->skip;
-        return;
-    }
-    T->dn_a = r->pts[r->k_first].j;
-    T->dn_b = r->pts[r->k_last].j + 1;
-    node_d(r, r->k_first, T->dn_a, T->dn_b, 1, T->dn, NULL);
-    T->dn_x = T->last_x, T->dn_z = T->last_z, T->dn_ok = 1;
-}
-
-/* After tirenv_ring__tread_new_x: the shift of each node of the last contact that lies in this
- * window, applied to the warm start xw. A pass that moves no node by more than round-off
- * (level ground and a cleat's flat top move along the rays only with z) has the next
- * WARM_SHIFT_SKIP positions left out. */
-enum { WARM_SHIFT_SKIP = 16 };
-
-static void warm_shift(tirenv_ring *r, double x_c, double z, double xw[])
-{
-    tirenv_ring_tread *T = r->tread;
-    const size_t lo = r->lo, hi = lo + r->n - 1;
-    const size_t ja = T->dn_a > lo ? T->dn_a : lo, jb = T->dn_b < hi ? T->dn_b : hi;
-    if (!T->dn_ok || x_c == T->dn_x || ja > jb)
-        return;
-    T->dn_ok = 0;
-    node_d(r, 0, ja, jb, 0, T->dn2, T->ddn);
-    const double dz = z - T->dn_z;
-    size_t moved = 0;
-    for (size_t j = ja; j <= jb; ++j) {
-        if (T->dn[j] == -INFINITY || T->dn2[j] == -INFINITY)
-            continue;
-        /* The node's point's d(d)/dz: d is linear in z along a ray to one line. */
-        const double dd = T->dn2[j] - T->dn[j] - T->ddn[j] * dz;
-        if (fabs(dd) <= WARM_SHIFT_MAX) {
-            xw[2 * (j - lo) + 1] += dd;
-            moved += fabs(dd) > 1e-12;
-        }
-    }
-    if (moved == 0)
-        T->skip = WARM_SHIFT_SKIP;
-}
-
 /* solve_shear's statuses where the window's ground has gaps (ring_ground.c) that it needs
  * sampled: NEED_GROUND, a sub-window reaching a gap or a gap its bound does not certify clear
  * of the answer (then solved again from where it had come); NEED_WHOLE, the whole window to
@@ -1183,7 +892,7 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
         }
         for (size_t i = ib; i < n; ++i)
             xw[2 * i] = xw[2 * i + 1] = 0;
-        warm_shift(r, x_c, z, xw);
+        tirenv_ring__warm_shift(r, x_c, z, xw);
     }
     /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
      * with the tire) where there is one; else, or where a free point would touch, on the whole

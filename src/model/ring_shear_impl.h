@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the ring's shear-coupled tread (docs/models.md section 5.3): its state, which the
- * equilibrium (ring_shear.c), the condensation of the window's exterior (ring_exterior.c), the
- * knots (ring_knots.c) and the tests' hooks (ring_shear_probe.c) share, and what each calls of
- * the others. */
+ * equilibrium (ring_shear.c), its storage (ring_tread.c), its warm start at a new x
+ * (ring_warm.c), the condensation of the window's exterior (ring_exterior.c), the knots
+ * (ring_knots.c) and the tests' hooks (ring_shear_probe.c) share, and what each calls of the
+ * others. */
 #ifndef TIRENV_RING_SHEAR_IMPL_H
 #define TIRENV_RING_SHEAR_IMPL_H
 
@@ -162,10 +163,26 @@ void tirenv_ring__solve_full(tirenv_ring *r, double x[]);
 /* rhs -= (dK_knots/dz) a at the solution x: the knots' stiffness moving with them. */
 void tirenv_ring__knots_moving(const tirenv_ring *r, const double x[], double rhs[]);
 
-/* The tread's storage and its window's assembly (ring_shear.c). */
+/* The warm start at a new abscissa (ring_warm.c). */
+/* The last answer's contact guides an evaluation's warm start within WARM_DX (m) of its
+ * abscissa: its nodes, which the first sub-window holds (warm_span), and its ground, along
+ * which the tread surface moves (warm_shift). Inside the patch the tread surface lies within
+ * the contact layer's compression, some 1e-7 m, of the ground, so wherever the ground moved
+ * away from it with x (a road's slope over the step: 1e-5 m and more) the warm start's points
+ * read as free or deep in. The nodes in contact move by a node spacing over some 3 mm of
+ * travel, so the last contact's nodes are nearly this one's. */
+static const double WARM_DX = 2e-3;
+/* The shift of each node of the last contact that lies in r's window (m), applied to the
+ * warm start xw at centre (x_c, z) (m), after tirenv_ring__tread_new_x. */
+void tirenv_ring__warm_shift(tirenv_ring *r, double x_c, double z, double xw[]);
+
+/* The tread's storage and its window's assembly (ring_tread.c, ring_shear.c). */
 /* Room for m knots (the driver's vectors, 2 M + m each, and the knots' arrays); nonzero if out
  * of memory. */
 int tirenv_ring__reserve_knots(tirenv_ring_tread *T, size_t m);
+/* NaN in the driver's vectors past the N + m unknowns and in the knots' arrays past the m
+ * knots of the solve about to start (T->poison: the tests'). */
+void tirenv_ring__poison_past(tirenv_ring_tread *T, size_t N, size_t m);
 /* The window's arc of n nodes from lo as tirenv_ring__add_arc gives it on a zeroed matrix,
  * written into A (its tail's fresh columns left unset), and rhs's 2 n entries zeroed. */
 void tirenv_ring__fill_window(tband *A, const tirenv_ring_tread *T, size_t lo, size_t n,
