@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* Private to the ring's shear-coupled tread (docs/models.md section 5.3): its state, which the
- * equilibrium (ring_shear.c), its storage (ring_tread.c), its warm start at a new x
- * (ring_warm.c), the condensation of the window's exterior (ring_exterior.c), the knots
+ * equilibrium (ring_shear.c), its storage (ring_tread.c), its sub-windows (ring_subwin.c), its
+ * warm start at a new x (ring_warm.c), the condensation of the window's exterior (ring_exterior.c), the knots
  * (ring_knots.c) and the tests' hooks (ring_shear_probe.c) share, and what each calls of the
  * others. */
 #ifndef TIRENV_RING_SHEAR_IMPL_H
@@ -175,6 +175,29 @@ static const double WARM_DX = 2e-3;
 /* The shift of each node of the last contact that lies in r's window (m), applied to the
  * warm start xw at centre (x_c, z) (m), after tirenv_ring__tread_new_x. */
 void tirenv_ring__warm_shift(tirenv_ring *r, double x_c, double z, double xw[]);
+
+/* The sub-windows of the nodes in contact (ring_subwin.c): SUB_PAD nodes beyond the contact
+ * on each side, ends at multiples of SUB_QUANT, at least SUB_MIN nodes and SUB_MIN_FREE free
+ * ones left; SUB_TRIES sub-windows at most before the whole window. */
+enum { SUB_PAD = 2, SUB_QUANT = 8, SUB_MIN_FREE = 16, SUB_MIN = 8, SUB_TRIES = 3 };
+/* The first and the last point of pts[k0 .. k1) in contact, by their states (warm: as the
+ * window's xw leaves them); 0 if none. */
+int tirenv_ring__contact_span(const tirenv_ring *r, size_t k0, size_t k1, const double xw[],
+                              int warm, size_t *kf, size_t *kl);
+/* The sub-window a .. b for the points pts[kf .. kl] and the nodes beyond[0] .. beyond[1],
+ * and the points pts[k0 .. k1) of its intervals; 0 where it would leave too few free nodes. */
+int tirenv_ring__sub_window(const tirenv_ring *r, size_t kf, size_t kl, const size_t beyond[2],
+                            size_t *a, size_t *b, size_t *k0, size_t *k1);
+/* The window nodes beyond the softening carcass's linear range in xw, into beyond (beyond[0] >
+ * beyond[1]: none); returns beyond. */
+const size_t *tirenv_ring__beyond_span(const tirenv_ring *r, const double xw[],
+                                       size_t beyond[2]);
+/* Those and, within WARM_DX of the last answer's centre, that answer's contact nodes (m). */
+const size_t *tirenv_ring__warm_span(const tirenv_ring *r, double x_c, const double xw[],
+                                     size_t beyond[2]);
+/* No point of the window's outside pts[k0 .. k1) touches at xw; those found clear written as
+ * free points of the answer. */
+int tirenv_ring__free_clear(tirenv_ring *r, size_t k0, size_t k1, const double xw[]);
 
 /* The tread's storage and its window's assembly (ring_tread.c, ring_shear.c). */
 /* Room for m knots (the driver's vectors, 2 M + m each, and the knots' arrays); nonzero if out
