@@ -1,5 +1,6 @@
-/* tirenv ride --out-dir: the comfort table as CSV and Markdown, and two gnuplot figures, the
- * seat acceleration over distance and its spectrum, one panel per speed, one line per model.
+/* tirenv ride --out-dir: the comfort table as CSV and Markdown, and three gnuplot figures, the
+ * seat acceleration over distance, its running r.m.s. and its spectrum, one panel per speed,
+ * one line per model.
  * SPDX-License-Identifier: Apache-2.0 */
 #include <math.h>
 #include <stdio.h>
@@ -171,7 +172,8 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
         fprintf(fp, "set style line %zu lc rgb '%s' lw %.1f dt %d   # %s\n", i + 1, st.colour,
                 st.width, dash, c->label);
     }
-    fprintf(fp, "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key top right box opaque\n"
+    /* The key beside the panels: inside, over a road's dense lines, it hid the right tenth. */
+    fprintf(fp, "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key outside right top box\n"
             "\n"
             "do for [pass = 1:2] {\n"
             "    if (pass == 1) {\n"
@@ -252,6 +254,72 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
              "    set autoscale xfix\n", wheelbase);  /* the run's span, not the next tics' */
     return draw(dir, "seat", "vertical acceleration at the seat over the front axle's position, "
                 "point contact against enveloping", "Seat vertical acceleration (unweighted)",
+                axes, r, diag);
+}
+
+/* seat-rms: the running r.m.s. of the Wk-weighted seat acceleration (ISO 2631-1 6.3, tau =
+ * TIRENV_COMFORT_TAU), whose maximum is the run's MTVV. Over a long road the unweighted trace
+ * of every model lies on the others' (seat.png); a 1 s mean tells them apart. Each row keeps
+ * the largest value of the samples it stands for, so the plotted maximum is the MTVV. */
+static int seat_rms_plot(const char *dir, const ride_options *r, const ride_series series[],
+                         double wheelbase, tirenv_diag *diag)
+{
+    char path[1024];
+    tirenv_outfile *f;
+    snprintf(path, sizeof path, "%s/seat-rms.dat", dir);
+    int status = tirenv_outfile_open(&f, path, diag);
+    if (status)
+        return status;
+    FILE *fp = tirenv_outfile_stream(f);
+    const double fs = 1 / r->pp.dt;
+    for (size_t j = 0; j < r->n_speeds && !status; ++j) {
+        const ride_series *row = &series[j * r->n_cols];
+        const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
+        double *rms = malloc(r->n_cols * n * sizeof *rms);
+        if (!rms) {
+            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+            break;
+        }
+        for (size_t i = 0; i < r->n_cols && !status; ++i)
+            status = tirenv_comfort_running_rms(row[i].a_w, n, fs, TIRENV_COMFORT_TAU,
+                                                rms + i * n, diag);
+        if (!status) {
+            char speed[32];
+            ride_cli_speed_name(r->speeds[j], speed, sizeof speed);
+            fprintf(fp, "%s# %s km/h, running r.m.s. over %g s: x_front_m", j ? "\n\n" : "",
+                    speed, TIRENV_COMFORT_TAU);
+            for (size_t i = 0; i < r->n_cols; ++i)
+                fprintf(fp, " awz_rms_%s_m_s2", r->cols[i].label);
+            fputc('\n', fp);
+            for (size_t k = 0; k < n; k += every) {
+                fprintf(fp, "%.6g", row[0].samples[k].x_front);
+                for (size_t i = 0; i < r->n_cols; ++i) {
+                    double v = 0;
+                    for (size_t m = k; m < k + every && m < n; ++m)
+                        v = fmax(v, rms[i * n + m]);
+                    fprintf(fp, " %.6g", v);
+                }
+                fputc('\n', fp);
+            }
+        }
+        free(rms);
+    }
+    if (status) {
+        tirenv_outfile_abort(f);
+        return status;
+    }
+    if ((status = tirenv_outfile_commit(f, diag)))
+        return status;
+    char axes[300];
+    snprintf(axes, sizeof axes,
+             "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
+             "    set ylabel \"running r.m.s. of a_wz (m/s²)\"\n"
+             "    set yrange [0:*]\n"
+             "    set autoscale xfix\n", wheelbase);
+    return draw(dir, "seat-rms", "running r.m.s. over 1 s of the Wk-weighted vertical "
+                "acceleration at the seat (ISO 2631-1 6.3; its maximum is the MTVV), point "
+                "contact against enveloping",
+                "Seat vertical acceleration, running r.m.s. (Wk, 1 s; its maximum is the MTVV)",
                 axes, r, diag);
 }
 
@@ -369,6 +437,8 @@ int ride_cli_report(const ride_options *r, const ride_result res[], const ride_s
     }
     if (!status)
         status = seat_plot(r->out_dir, r, series, wheelbase, &diag);
+    if (!status)
+        status = seat_rms_plot(r->out_dir, r, series, wheelbase, &diag);
     if (!status)
         status = spectrum_plot(r->out_dir, r, series, &diag);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;

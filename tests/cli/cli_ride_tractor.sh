@@ -17,11 +17,22 @@ check "ride -o: exact header, 1 kHz rows from t = 0 at rest, a table row on stdo
      [ "$(grep -v "^#" series.csv | sed -n 3p | cut -d, -f1)" = 0.001 ] &&
      [ $(grep -c "^point " out) -eq 1 ]'
 run "$bin" ride --cleat 0.30,0.05 --speed 5km/h,15km/h --model point,cam --out-dir rd --series
-check "ride --out-dir: comfort table of 2 models x 2 speeds, both plots as PNG and SVG" \
+check "ride --out-dir: comfort table of 2 models x 2 speeds, the plots as PNG and SVG" \
     '[ $rc -eq 0 ] && [ $(rows rd/comfort.csv) -eq 4 ] && [ -s rd/seat.png ] &&
      [ -s rd/seat.svg ] && [ -s rd/spectrum.png ] && [ -s rd/spectrum.svg ] &&
      [ -s rd/seat.gp ] && [ -s rd/series-cam-15kmh.csv ] &&
      [ -z "$(find rd -name "*tmp.*")" ]'
+# The running r.m.s. figure: each panel's column peaks at its run's MTVV (comfort.csv), which is
+# the maximum of that running r.m.s.; its rows keep the largest value they stand for.
+check "ride --out-dir: the running r.m.s. figure, each column's maximum the run's MTVV" \
+    '[ -s rd/seat-rms.png ] && [ -s rd/seat-rms.svg ] && [ -s rd/seat-rms.gp ] &&
+     awk "FNR == NR { if (FNR > 1) { split(\$0, f, \",\"); mtvv[FNR - 2] = f[8] } next }
+          /^#/ { b += (NF > 0 && seen); seen = 0; next }
+          NF > 1 { seen = 1; for (i = 2; i <= NF; ++i) if (\$i > m[b, i]) m[b, i] = \$i; nc = NF - 1 }
+          END { if (nc != 2) exit 1
+                for (j = 0; j < 2; ++j) for (i = 0; i < nc; ++i) {
+                    v = mtvv[j * nc + i]; d = m[j, i + 2] - v
+                    if (!(v > 0) || d > 1e-5 * v || -d > 1e-5 * v) exit 1 } }" rd/comfort.csv rd/seat-rms.dat'
 check "ride over a cleat: point contact's seat acceleration peaks higher than the cam's" \
     'awk -F, "NR > 1 && \$3 == 5 { p[\$1] = \$13 } END { exit !(p[\"point\"] > 2 * p[\"cam\"]) }" rd/comfort.csv'
 # Level ground leaves the seat still: a PSD of 0, which log axes cannot show. gnuplot refused
