@@ -238,10 +238,17 @@ static int seat_plot(const char *dir, const ride_options *r, const ride_series s
         for (size_t i = 0; i < r->n_cols; ++i)
             fprintf(fp, " seat_az_%s_m_s2", r->cols[i].label);
         fputc('\n', fp);
+        /* A row stands for `every` samples by the one of largest magnitude: every k-th sample
+         * alone aliased a road's oscillation and missed its peaks. */
         for (size_t k = 0; k < n; k += every) {
             fprintf(fp, "%.6g", row[0].samples[k].x_front);
-            for (size_t i = 0; i < r->n_cols; ++i)
-                fprintf(fp, " %.6g", row[i].samples[k].seat_az);
+            for (size_t i = 0; i < r->n_cols; ++i) {
+                double a = row[i].samples[k].seat_az;
+                for (size_t m = k + 1; m < k + every && m < n; ++m)
+                    if (fabs(row[i].samples[m].seat_az) > fabs(a))
+                        a = row[i].samples[m].seat_az;
+                fprintf(fp, " %.6g", a);
+            }
             fputc('\n', fp);
         }
     }
