@@ -151,9 +151,19 @@ static int run_ok(char *const argv[], const char *file, const char *what, long *
     return TIRENV_OK;
 }
 
+/* The tire file as a child reads it: by its real path, so that /dev/stdin (or /dev/fd/0)
+ * redirected from a file names that file, not the child's own standard input, /dev/null
+ * (run_child); a pipe was refused before (cmd_bench.c). */
+static const char *child_tire(const char *tire_path, char real[PATH_MAX])
+{
+    return realpath(tire_path, real) ? real : tire_path;
+}
+
 int cli_bench_memory(const char *tire_path, const tirenv_tire *tire, double length,
                      tirenv_diag *diag)
 {
+    char real[PATH_MAX];
+    tire_path = child_tire(tire_path, real);
     char self[PATH_MAX], target[PATH_MAX - 64], road[PATH_MAX], rdf[PATH_MAX], out[PATH_MAX];
     char len_text[32];
     const char *tmp = cli_bench_tmpdir();  /* the 10 km road's files are some 600 MB */
@@ -236,6 +246,8 @@ static int fresh_figures(const char *text, tirenv_diag *diag)
 
 int cli_bench_memory_fresh(const char *tire_path, int quick, tirenv_diag *diag)
 {
+    char real[PATH_MAX];
+    tire_path = child_tire(tire_path, real);
     char self[PATH_MAX];
     if (self_path(self, sizeof self) != 0)
         return tirenv_error(diag, TIRENV_EIO, "/proc/self/exe", 0, "",

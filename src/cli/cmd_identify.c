@@ -449,7 +449,7 @@ int cli_identify_main(int argc, char *argv[])
     tirenv_diag_clear(&diag);
     /* The file's own load range whenever it gives FNOMIN, also for a tire of the paper's class
      * (the default tire: 8.95 to 26.85 kN, whose models then agree within 5 % up to the
-     * embedded data set's 30.8 kN too, docs/models.md section 14.1), unlike flat's table. */
+     * embedded data set's 38.5 kN too, docs/models.md section 14.1), unlike flat's table. */
     const double fnomin = cli_tire_origin.fnomin;
     if (loads.n == 0) {
         tirenv_model *m = tirenv_model_alloc(ref, &tire);

@@ -65,8 +65,10 @@ static void usage(FILE *fp)
           "  -o, --output FILE    write the model (JSON), complete or not at all; without it\n"
           "                       the network is not saved\n"
           "  --tire FILE, --set KEY=VALUE\n"
-          "                       the tire whose UNLOADED_RADIUS imports raw logs and defines\n"
-          "                       x_N (default: the default tire)\n",
+          "                       the tire (default: the one the data set's source.txt names,\n"
+          "                       a sweep's tire.tir when it set no tire key, else\n"
+          "                       tires/default.tir in the data directory), whose\n"
+          "                       UNLOADED_RADIUS imports raw logs and defines x_N\n",
           fp);
     cli_help_jobs(fp);
     fputs("  -h, --help           show this help\n", fp);

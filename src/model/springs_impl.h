@@ -351,7 +351,7 @@ void tirenv_springs__pinned_solve(const tirenv_springs__chains *c, size_t f0, si
                                   const tirenv_springs__pins *P, const double v[], double w[]);
 
 
-/* Continuous contact (springs_contact.c, docs/models.md section 4.3): the tread between
+/* Continuous contact (springs_contact.c, docs/models.md section 4.8): the tread between
  * neighbouring elements i and i + 1 is the curve at distance R0 - (a(t) w_i + b(t) w_(i+1))
  * from the centre, t the parameter along the chord joining the two elements' unit directions
  * (tirenv_springs__cc_weights). Every ground vertex under the tread and every element's ray

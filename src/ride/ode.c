@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* The ride's integrators (docs/models.md section 9.6).
+/* The ride's integrators (docs/models.md section 9.4; the step RK4 may take, 9.6).
  *
  * RK4: the classical fourth-order Runge-Kutta step, summed in the order of its formula
  * (k1 + 2 k2 + 2 k3 + k4) h/6 added term by term as each stage is known.

@@ -215,8 +215,8 @@ cp unsummarised err
 check "every command's usage synopsis names all its options but the obstacles, -o and --help" \
     '[ ! -s unsummarised ]'
 # The commands that read a data set take its own tire by default, and their --tire says so
-# (it said tires/default.tir, as for the others).
-for c in compare study fit; do
+# (it said tires/default.tir, as for the others; train's, "the default tire").
+for c in compare study fit train; do
     run "$bin" "$c" --help
     check "tirenv $c --help: --tire defaults to the tire the data set's source.txt names" \
         '[ $rc -eq 0 ] && grep -A1 "^  --tire FILE" out | grep -q "source.txt names"'
