@@ -70,8 +70,8 @@ typedef struct {
     double t_r;            /* [ENVELOPING_RING] TREAD_THICKNESS, m */
     double EI;             /* BELT_BENDING_STIFFNESS, N*m^2 */
     double T;              /* BELT_PRETENSION: belt tension beyond the air's p*b*R, N */
-    double k_f;            /* FOUNDATION_STIFFNESS: the carcass's own radial stiffness beyond
-                            * the air's (k_c), per unit belt length, N/m^2 */
+    double k_c;            /* FOUNDATION_STIFFNESS: the carcass's own radial stiffness, beyond
+                            * the air's share of k_f, per unit belt length, N/m^2 */
     double k_t;            /* TREAD_STIFFNESS, per unit belt length, N/m^2 */
     double G_t;            /* TREAD_SHEAR: the tread rubber's shear modulus, Pa, coupling the
                             * tread's neighbouring elements along the arc (section 5.3);

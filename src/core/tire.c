@@ -49,7 +49,7 @@ tirenv_tire tirenv_tire_default(void)
             .t_r = 0.04,
             .EI = 30,
             .T = 0,
-            .k_f = 1.1e5,
+            .k_c = 1.1e5,
             .k_t = 1.5e7,
             .G_t = 2.5e5, /* the lugs' effective shear modulus along the arc (5.3, 5.6) */
             .dtheta = M_PI / 720.0, /* 0.25 degrees, converged: docs/models.md section 5.6 */
@@ -162,7 +162,7 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
         (status = plausible("SIDEWALL_PRELOAD", s->F_s0, 0, 1e7, "N", diag)) ||
         (status = plausible("BELT_BENDING_STIFFNESS", r->EI, 0, 1e5, "N*m^2", diag)) ||
         (status = plausible("BELT_PRETENSION", r->T, 0, 1e7, "N", diag)) ||
-        (status = plausible("FOUNDATION_STIFFNESS", r->k_f, 0, 1e10, "N/m^2", diag)) ||
+        (status = plausible("FOUNDATION_STIFFNESS", r->k_c, 0, 1e10, "N/m^2", diag)) ||
         (status = plausible("TREAD_STIFFNESS", r->k_t, 1e5, 1e13, "N/m^2", diag)) ||
         (status = plausible("TREAD_SHEAR", r->G_t, 0, 1e9, "Pa", diag)) ||
         (status = plausible("CARCASS_SOFTENING_DEFLECTION", r->w_cs, 0, 0.5, "m", diag)) ||
@@ -244,9 +244,9 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->T >= 0 && isfinite(r->T)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
                             "must be zero or positive (N), got %g", r->T);
-    if (!(r->k_f >= 0 && isfinite(r->k_f)))
+    if (!(r->k_c >= 0 && isfinite(r->k_c)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FOUNDATION_STIFFNESS",
-                            "must be zero or positive (N/m^2), got %g", r->k_f);
+                            "must be zero or positive (N/m^2), got %g", r->k_c);
     if (!(r->p >= 0 && r->p < 1e8))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "INFLPRES",
                             "must be zero or a positive pressure below 1e8 Pa, got %g", r->p);
@@ -275,7 +275,7 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
      * makes it negative: the belt buckles. */
     const double R = s->R0 - r->t_r, a = r->alpha_s;
     const double gamma = (a * sin(a) + cos(a)) / (sin(a) - a * cos(a));
-    const double T_p = r->T + r->p * r->b_p * R, k_f = r->k_f + gamma * r->p;
+    const double T_p = r->T + r->p * r->b_p * R, k_f = r->k_c + gamma * r->p;
     const double s_min = fmax(-1, -T_p * R * R / (2 * fmax(r->EI, 1e-300)));
     const double e_min = r->EI * s_min * s_min / (R * R * R * R) + T_p * s_min / (R * R) + k_f;
     /* 1e3 N/m^2: the plausible range's floor for the whole foundation (carcass and air). */
@@ -283,7 +283,7 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FOUNDATION_STIFFNESS",
                             "the sidewalls carry almost nothing: FOUNDATION_STIFFNESS %g N/m^2 "
                             "and INFLPRES %g Pa give a foundation of %g N/m^2, below 1e3",
-                            r->k_f, r->p, k_f);
+                            r->k_c, r->p, k_f);
     if (!(e_min > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
                             "%g N (with the air's) buckles the belt on its foundation "

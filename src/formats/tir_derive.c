@@ -329,7 +329,7 @@ static int scale_at_height(tirenv_tire *t, const tirenv_profile *flat, double fn
                            double rho_n, tirenv_diag *diag)
 {
     enum { MAX_STEPS = 30 };
-    double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_f, &t->ring.k_t};
+    double *const stiff[] = {&t->ring.EI, &t->ring.T, &t->ring.k_c, &t->ring.k_t};
     double base[4];
     for (size_t i = 0; i < 4; i++)
         base[i] = *stiff[i];
@@ -497,7 +497,7 @@ static int derive_ring(tirenv_tire *t, const mf_keys *k, double rho_n, double ta
     t->ring.dtheta = M_PI / 1440.0;
     if (tau > 0) {
         const double R = k->R0 - t->ring.t_r;
-        t->ring.T += tau * d.ring.k_f * R * R;
+        t->ring.T += tau * d.ring.k_c * R * R;
     }
     return scale_at_height(t, flat, k->fnomin, rho_n, diag);
 }
@@ -563,7 +563,7 @@ static int ring_and_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v,
 {
     t->ring.EI = base[0] * c;
     t->ring.T = base[1] * c;
-    t->ring.k_f = base[2] * c;
+    t->ring.k_c = base[2] * c;
     t->ring.k_t = base[3] * c;
     double guess[N_LOADS];  /* the last ring's deflections */
     memcpy(guess, ring->defl, sizeof guess);
@@ -619,7 +619,7 @@ static int ring_on_law(tirenv_tire *t, const mf_keys *k, const vertical_law *v, 
     if (ring->G[I_NOMINAL] != k->fnomin)  /* the load fractions lost their 1 */
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FNOMIN",
                             "the derivation's loads do not include FNOMIN itself");
-    const double base[4] = {t->ring.EI, t->ring.T, t->ring.k_f, t->ring.k_t};
+    const double base[4] = {t->ring.EI, t->ring.T, t->ring.k_c, t->ring.k_t};
     /* The states at c = 1 are the ones just computed. */
     *q2 = q_fz2_on(k, v->factor, ring);
     double u = 0, h = log(law_deflection(k, *q2, v->factor, k->fnomin) / ring->defl[I_NOMINAL]);
@@ -801,7 +801,7 @@ typedef struct {
 static void laws_set(const laws_search *s, const double x[N_LAWS], tirenv_tire *t)
 {
     *t = s->t;
-    t->ring.k_f = exp(x[0]);
+    t->ring.k_c = exp(x[0]);
     t->ring.w_cs = exp(x[1]);
     t->ring.w_c0 = W0_RATIO * t->ring.w_cs;
     t->ring.EI = exp(x[2]);
@@ -1046,8 +1046,8 @@ static int laws_ring(const tirenv_tire *t, const mf_keys *k, const vertical_law 
         s.d[i] = cam.defl[i];
         s.l[i] = cam.l[i];
     }
-    double x[N_LAWS] = {log(tr->t.ring.k_f), log(tr->rho_n), log(tr->t.ring.EI),
-                        log(LAWS_KT_START * tr->t.ring.k_f), log(0.75 * width)};
+    double x[N_LAWS] = {log(tr->t.ring.k_c), log(tr->rho_n), log(tr->t.ring.EI),
+                        log(LAWS_KT_START * tr->t.ring.k_c), log(0.75 * width)};
     laws_clamp(&s, x);
     double r[N_RES];
     tirenv_diag d2;
@@ -1406,7 +1406,7 @@ static int derive(const char *path, const char *text, size_t len, tirenv_tire *t
         note_add(origin, "%sno [ENVELOPING_RING]: derived TREAD_THICKNESS = %.4g, "
                  "BELT_BENDING_STIFFNESS = %.4g, BELT_PRETENSION = %.4g, "
                  "FOUNDATION_STIFFNESS = %.4g, TREAD_STIFFNESS = %.4g",
-                 origin->note[0] ? "; " : "", t.ring.t_r, t.ring.EI, t.ring.T, t.ring.k_f,
+                 origin->note[0] ? "; " : "", t.ring.t_r, t.ring.EI, t.ring.T, t.ring.k_c,
                  t.ring.k_t);
     if (on_laws && lr.searched)
         note_add(origin, ", BELT_WIDTH = %.4g, CARCASS_SOFTENING_DEFLECTION = %.4g, "

@@ -29,7 +29,7 @@ double tirenv_ring__sidewall_gamma(double alpha)
 
 double tirenv_ring__foundation(const tirenv_ring_params *par)
 {
-    return par->k_f + tirenv_ring__sidewall_gamma(par->alpha_s) * par->p;
+    return par->k_c + tirenv_ring__sidewall_gamma(par->alpha_s) * par->p;
 }
 
 /* The belt's tension energy c1 sum (w[j+1] - w[j])^2 + c0 sum w[j]^2. The carcass's own

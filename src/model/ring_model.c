@@ -205,7 +205,7 @@ static const tirenv_deformable ring_deformable = {
  * (which sets the belt's tension and the sidewalls' stiffness) as the optional ones. The
  * thickness and the discretisation are settings. */
 static const tirenv_model_param ring_params[] = {
-    {"FOUNDATION_STIFFNESS", offsetof(tirenv_tire, ring.k_f), 0},
+    {"FOUNDATION_STIFFNESS", offsetof(tirenv_tire, ring.k_c), 0},
     {"TREAD_STIFFNESS", offsetof(tirenv_tire, ring.k_t), 0},
     {"BELT_BENDING_STIFFNESS", offsetof(tirenv_tire, ring.EI), 0},
     {"INFLPRES", offsetof(tirenv_tire, ring.p), 0},

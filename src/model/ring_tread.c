@@ -173,10 +173,10 @@ size_t tirenv_ring__tread_warm_size(const tirenv_ring_tread *T) { return 3 * T->
 
 int tirenv_ring__carcass_law(const tirenv_ring_params *par, double arc, tirenv_ring_carcass *law)
 {
-    law->k = par->k_f * arc;
+    law->k = par->k_c * arc;
     law->w_0 = par->w_c0;
     law->w_s = par->w_cs;
-    return par->w_cs > 0 && par->k_f > 0;
+    return par->w_cs > 0 && par->k_c > 0;
 }
 
 /* The law beyond w_0, with t = (w - w_0)/w_s: the force k (w_0 + w_s (1 - e^-t)) less the

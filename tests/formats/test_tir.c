@@ -37,7 +37,7 @@ static void assert_tire_identical(const tirenv_tire *a, const tirenv_tire *b)
     assert_bits_equal(a->ring.t_r, b->ring.t_r);
     assert_bits_equal(a->ring.EI, b->ring.EI);
     assert_bits_equal(a->ring.T, b->ring.T);
-    assert_bits_equal(a->ring.k_f, b->ring.k_f);
+    assert_bits_equal(a->ring.k_c, b->ring.k_c);
     assert_bits_equal(a->ring.k_t, b->ring.k_t);
     assert_bits_equal(a->ring.G_t, b->ring.G_t);
     assert_bits_equal(a->ring.dtheta, b->ring.dtheta);
@@ -86,7 +86,7 @@ static tirenv_tire entropic_tire(void)
     return (tirenv_tire){
         .springs = {.R0 = 0.6837, .c_r = 1.5831e6, .c_b = 8734.29, .phi = 2.9137,
                     .dphi = 0.0071893},
-        .ring = {.t_r = 0.0417, .EI = 613.7, .T = 31872.5, .k_f = 1.0931e6, .k_t = 3.8317e6,
+        .ring = {.t_r = 0.0417, .EI = 613.7, .T = 31872.5, .k_c = 1.0931e6, .k_t = 3.8317e6,
                  .G_t = 7.317e5, .dtheta = 0.0093731, .lug_count = 23, .lug_fraction = 0.4371,
                  .lug_ratio = 0.3119, .b_p = 0.3271, .alpha_s = 1.1173, .p = 137913.7,
                  .p_nom = 151374.9},
@@ -651,7 +651,7 @@ static void test_units_converted(void **state)
     assert_near(t.springs.phi, M_PI, 0, 1e-15);
     assert_near(t.springs.dphi, M_PI / 360, 0, 1e-15);
     assert_near(t.ring.EI, 5e5 * 1e3 * 1e-6, 0, 1e-15);
-    assert_near(t.ring.k_f, 1.3e-3 * 1e3 / 1e-6, 0, 1e-15);
+    assert_near(t.ring.k_c, 1.3e-3 * 1e3 / 1e-6, 0, 1e-15);
     assert_near(t.ring.dtheta, deg, 0, 1e-15);
     assert_near(t.eq.eps_F, 1e-6, 0, 1e-15);
     assert_near(t.eq.eps_z, 1e-10, 0, 1e-15);

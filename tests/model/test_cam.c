@@ -887,7 +887,7 @@ static void test_mfswift_file(void **state)
     expected.ring.t_r = 0.010;
     expected.ring.EI = 3.27;
     expected.ring.T = 0;
-    expected.ring.k_f = 1.14e6;
+    expected.ring.k_c = 1.14e6;
     expected.ring.w_cs = 0.00448;
     expected.ring.w_c0 = 0.00111;
     expected.ring.k_t = 1.42e7;

@@ -19,7 +19,7 @@ static tirenv_tire prototype_tire(void)
         .t_r = 0.04,
         .EI = 500,
         .T = 34e3,
-        .k_f = 1e6,
+        .k_c = 1e6,
         .k_t = 4e6,
         .dtheta = M_PI / 360.0,
         .lug_count = 0,
@@ -185,9 +185,9 @@ static void test_reduces_to_springs(void **state)
     t.ring.EI = 0;
     t.ring.T = 0;
     t.ring.t_r = 0.15;
-    t.ring.k_f = 1.137e6;
-    t.ring.k_t = 1e6 * t.ring.k_f;
-    t.springs.c_r = t.ring.k_f * (t.springs.R0 - t.ring.t_r);
+    t.ring.k_c = 1.137e6;
+    t.ring.k_t = 1e6 * t.ring.k_c;
+    t.springs.c_r = t.ring.k_c * (t.springs.R0 - t.ring.t_r);
     t.springs.c_b = 0;
     t.springs.dphi = t.ring.dtheta;
     t.springs.contact = TIRENV_SPRINGS_RAYS; /* the ring's tread casts the same rays */
@@ -351,7 +351,7 @@ static void test_window_matches_compliance(void **state)
         for (size_t n = 0; n < M; ++n) {
             const double s = 2 * sin(M_PI * (double)n / (double)M) / dth, sg = s * s - 1;
             const double lambda = R * dth * (t.ring.EI * sg * sg / (R * R * R * R) +
-                                             t.ring.T * sg / (R * R) + t.ring.k_f);
+                                             t.ring.T * sg / (R * R) + t.ring.k_c);
             sum += cos(2 * M_PI * (double)((n * m) % M) / (double)M) / lambda;
         }
         c[m] = sum / (double)M;

@@ -40,7 +40,7 @@ static void test_follower_load_is_the_virtual_work(void **state)
     tirenv_ring_params par = tirenv_tire_default().ring;
     par.EI = 0;
     par.T = 0;
-    par.k_f = 0;
+    par.k_c = 0;
     par.p = p;
     par.b_p = b;
     par.dtheta = 2 * M_PI / (double)M;
@@ -155,7 +155,7 @@ static void test_no_air_no_carcass_refused(void **state)
     (void)state;
     tirenv_tire t = tirenv_tire_default();
     t.ring.p = 0;
-    t.ring.k_f = 0;
+    t.ring.k_c = 0;
     tirenv_diag d;
     tirenv_diag_clear(&d);
     assert_int_equal(tirenv_tire_check(&t, &d), TIRENV_EINVAL);

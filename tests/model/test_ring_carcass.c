@@ -21,7 +21,7 @@
 static tirenv_tire soft_tire(void)
 {
     tirenv_tire t = tirenv_tire_default();
-    t.ring.k_f = 8.13e5;
+    t.ring.k_c = 8.13e5;
     t.ring.w_cs = 0.0097;
     t.ring.w_c0 = 0.0125;
     return t;

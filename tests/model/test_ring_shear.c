@@ -160,7 +160,7 @@ static void test_rays_ignore_shear(void **state)
 static double blade_on_stiff_belt(double dtheta)
 {
     tirenv_tire t = shear_tire();
-    t.ring.k_f = 1e10;
+    t.ring.k_c = 1e10;
     t.ring.p = 0;
     t.ring.dtheta = dtheta;
     tirenv_ring *r = tirenv_ring_alloc(t.springs.R0, &t.ring);
@@ -234,7 +234,7 @@ static void test_decay_length(void **state)
 static double corner_ripple(double dtheta, double *mean)
 {
     tirenv_tire t = shear_tire();
-    t.ring.k_f = 1e10;
+    t.ring.k_c = 1e10;
     t.ring.p = 0;
     t.ring.dtheta = dtheta;
     t.ring.G_t = 0.25e6;

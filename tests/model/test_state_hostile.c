@@ -541,7 +541,7 @@ static void test_ring_configurations_hostile(void **state)
     tire.ring.lug_ratio = 0.3;
     ring_hostile(tire, "continuous contact, lugs", RING_FEW, 0x1871);
     tire = tirenv_tire_default();
-    tire.ring.k_f = 8.13e5; /* softening beyond 12.5 mm over 9.7 mm */
+    tire.ring.k_c = 8.13e5; /* softening beyond 12.5 mm over 9.7 mm */
     tire.ring.w_cs = 0.0097;
     tire.ring.w_c0 = 0.0125;
     ring_hostile(tire, "continuous contact, softening carcass", RING_FEW, 0x2917);

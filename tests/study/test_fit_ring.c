@@ -68,21 +68,21 @@ static void test_ring_recovers_foundation_and_tread(void **state)
     (void)state;
     const tirenv_tire truth = coarse_truth();
     tirenv_tire tire = truth;
-    tire.ring.k_f = 1.3 * truth.ring.k_f;
+    tire.ring.k_c = 1.3 * truth.ring.k_c;
     tire.ring.k_t = 0.7 * truth.ring.k_t;
     tirenv_fit_report rep;
     tirenv_diag diag;
     assert_int_equal(fit_ring(&truth, &tire, &rep, &diag), TIRENV_OK);
     print_message("ring: k_f %.12g (true %.6g), k_t %.12g (true %.6g), rms %.3g mm, %zu "
-                  "iterations, stopped by %s\n", rep.value[0], truth.ring.k_f, rep.value[1],
+                  "iterations, stopped by %s\n", rep.value[0], truth.ring.k_c, rep.value[1],
                   truth.ring.k_t, 1e3 * rep.rms, rep.iterations, rep.stop);
     assert_int_equal(rep.n_params, 2);
     assert_string_equal(rep.names[0], "FOUNDATION_STIFFNESS");
     assert_string_equal(rep.names[1], "TREAD_STIFFNESS");
-    assert_near(rep.value[0], truth.ring.k_f, 0, 1e-6);
+    assert_near(rep.value[0], truth.ring.k_c, 0, 1e-6);
     assert_near(rep.value[1], truth.ring.k_t, 0, 1e-6);
     assert_true(rep.rms < 1e-9);
-    assert_near(tire.ring.k_f, rep.value[0], 0, 0);  /* written into the tire */
+    assert_near(tire.ring.k_c, rep.value[0], 0, 0);  /* written into the tire */
     assert_true(tire.ring.EI == truth.ring.EI && tire.ring.T == truth.ring.T);
 }
 

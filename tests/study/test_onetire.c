@@ -410,7 +410,7 @@ static void test_derived_from_mftyre(void **state)
                          TIRENV_TIR_SPRINGS | TIRENV_TIR_RING);
         assert_true(o.fnomin > 0);
         assert_non_null(strstr(o.note, "derived RADIAL_STIFFNESS"));
-        assert_true(t.springs.c_r != def.springs.c_r && t.ring.k_f != def.ring.k_f);
+        assert_true(t.springs.c_r != def.springs.c_r && t.ring.k_c != def.ring.k_c);
         const double k_file = t.cam.c_z;  /* VERTICAL_STIFFNESS as read */
         const int law_derived = (o.derived & TIRENV_TIR_VERTICAL) != 0;
         const int own_cam = (o.own & TIRENV_TIR_CAM) != 0;
@@ -464,10 +464,10 @@ static void same_keys(const tirenv_tire *a, const tirenv_tire *b, int what)
                          a->springs.k_s, a->springs.F_s0};
     const double sb[] = {b->springs.c_r, b->springs.c_b, b->springs.phi, b->springs.dphi,
                          b->springs.k_s, b->springs.F_s0};
-    const double ra[] = {a->ring.t_r, a->ring.EI, a->ring.T, a->ring.k_f, a->ring.k_t,
+    const double ra[] = {a->ring.t_r, a->ring.EI, a->ring.T, a->ring.k_c, a->ring.k_t,
                          a->ring.G_t, a->ring.dtheta, a->ring.b_p, a->ring.w_cs, a->ring.w_c0,
                          a->ring.p, a->ring.p_nom};
-    const double rb[] = {b->ring.t_r, b->ring.EI, b->ring.T, b->ring.k_f, b->ring.k_t,
+    const double rb[] = {b->ring.t_r, b->ring.EI, b->ring.T, b->ring.k_c, b->ring.k_t,
                          b->ring.G_t, b->ring.dtheta, b->ring.b_p, b->ring.w_cs, b->ring.w_c0,
                          b->ring.p, b->ring.p_nom};
     const double ca[] = {a->cam.c_z, a->cam.fnomin, a->cam.q_fz1, a->cam.q_fz2, a->cam.q_ra1,
