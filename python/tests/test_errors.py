@@ -151,3 +151,23 @@ def test_set_names_the_argument_not_the_cli_option():
     with pytest.raises(tirenv.TirenvValueError) as e:
         tirenv.Vehicle(set={"MASS": 1e30})
     assert e.value.file == "set" and "plausible range" in e.value.message
+
+
+def test_wrong_object_names_the_argument(network_file):
+    """An object of the wrong kind raised AttributeError from deep inside ("'str' object has
+    no attribute '_require'"), naming neither the argument nor what it takes."""
+    cleat = tirenv.Profile.cleat(0.1, 0.05)
+    cases = [(lambda: tirenv.Model("springs", "my.tir"), "tire: expected a tirenv.Tire"),
+             (lambda: tirenv.Model("nn", network="net.json"),
+              "network: expected a tirenv.Network"),
+             (lambda: tirenv.ride(None, model="cam", speed=10),
+              "profile: expected a tirenv.Profile"),
+             (lambda: tirenv.ride(cleat, vehicle="tractor.veh"),
+              "vehicle: expected a tirenv.Vehicle"),
+             (lambda: tirenv.Network(network_file).road("road.csv", 0.3),
+              "profile: expected a tirenv.Profile"),
+             (lambda: tirenv.Tire(set=[("RADIAL_STIFFNESS", 1e6)]), "set: expected a mapping")]
+    for call, words in cases:
+        with pytest.raises(TypeError) as e:
+            call()
+        assert words in str(e.value)

@@ -6,8 +6,9 @@ import warnings as _warnings
 
 import numpy as np
 
-from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, error_from, invalid, is_scalar,
-                 new_diag, one_or_all, struct_dtype)
+from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, error_from, expect, invalid,
+                 is_scalar, new_diag, one_or_all, struct_dtype)
+from .network import Network
 from .profile import Profile
 from .tire import Tire
 
@@ -72,7 +73,10 @@ class Model:
     shareable between threads at once: calls on one model are serialised."""
 
     def __init__(self, name, tire=None, network=None, extrapolate=False):
-        self.tire = tire if tire is not None else Tire()
+        self.tire = expect(tire, Tire, "tire", " (Tire(path) reads a .tir file)") \
+            if tire is not None else Tire()
+        if network is not None:
+            expect(network, Network, "network", " (Network(path) reads a model file)")
         t = lib.tirenv_model_type_find(str(name).encode())
         if t == ffi.NULL:
             raise invalid(f"unknown model {name!r}; expected one of "
