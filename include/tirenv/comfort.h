@@ -181,7 +181,8 @@ size_t tirenv_welch_bins(const tirenv_welch *w);
  * average over the segments, so that sum_k psd[k] * fs/n_seg is the (Hann-weighted) mean square
  * of x. The number of segments in *segments (may be NULL); samples past the last whole segment
  * are not used. TIRENV_EINVAL if fs is not positive and finite, n < n_seg, or a sample is not
- * finite. Never allocates. */
+ * finite; TIRENV_ERANGE if a bin's power overflows (psd then holds no estimate). Never
+ * allocates. */
 int tirenv_welch_psd(tirenv_welch *w, const double x[], size_t n, double fs, double psd[],
                      size_t *segments, tirenv_diag *diag);
 

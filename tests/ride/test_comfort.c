@@ -642,6 +642,9 @@ static void test_welch_refusals(void **state)
     assert_int_equal(tirenv_welch_psd(w, y, 16, 10.0, Q, &K, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "x");
     assert_int_equal(diag.line, 10);
+    y[9] = 1e200;  /* its power overflows: refused, where psd came back inf */
+    assert_int_equal(tirenv_welch_psd(w, y, 16, 10.0, Q, &K, &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "x");
     tirenv_welch_free(w);
 }
 
