@@ -192,7 +192,8 @@ const tirenv_profile *tirenv_model_profile(const tirenv_model *m);
  * instance, whatever it has evaluated. */
 size_t tirenv_model_state_size(const tirenv_model *m);
 /* Writes the state into buf (size bytes); TIRENV_EINVAL if size is not
- * tirenv_model_state_size(m). */
+ * tirenv_model_state_size(m), or if the model is set on several tracks
+ * (tirenv_model_set_tracks): a state is that of one track (docs/models.md section 13). */
 int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tirenv_diag *diag);
 /* Restores a state saved from this instance or from one allocated with the same type and tire
  * (and the same network): the evaluations that follow are bit for bit those that followed the
