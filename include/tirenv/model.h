@@ -167,7 +167,8 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
 
 /* Sets the ground profile (borrowed: it must outlive its use) and the load (N); computes the
  * flat-ground reference z_flat. The profile may have any elevation and grade: it is checked
- * where it is evaluated (tirenv_model_eval). Resets the warm start. */
+ * where it is evaluated (tirenv_model_eval). Resets the warm start. On failure the model is
+ * unset (tirenv_model_load NaN, tirenv_model_profile NULL), whatever it was set on before. */
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
 
@@ -180,7 +181,8 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
  * model is unchanged (still set at its previous load). */
 int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag);
 
-/* The load (N) of the last successful tirenv_model_set or _set_load; NaN before. */
+/* The load (N) of the last successful tirenv_model_set or _set_load; NaN before, and after a
+ * tirenv_model_set that failed (the model is then unset). */
 double tirenv_model_load(const tirenv_model *m);
 /* The profile the model is set on (borrowed), or NULL when it is not set. */
 const tirenv_profile *tirenv_model_profile(const tirenv_model *m);

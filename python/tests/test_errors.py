@@ -171,3 +171,21 @@ def test_wrong_object_names_the_argument(network_file):
         with pytest.raises(TypeError) as e:
             call()
         assert words in str(e.value)
+
+
+def test_failed_set_leaves_the_model_unset():
+    """A set the library refuses leaves its model unset; the Model kept the profile and load
+    of the set before (model.load 20000 N while the library's load was NaN)."""
+    model = tirenv.Model("springs")
+    cleat = tirenv.Profile.cleat(0.3, 0.1)
+    model.set(cleat, 20000)
+    with pytest.raises(tirenv.TirenvError):
+        model.set(cleat, 1e9)
+    assert model.load is None and model.profile is None
+    with pytest.raises(tirenv.TirenvError, match="call set"):
+        model.envelope(0.0)
+    with pytest.raises(tirenv.TirenvError):
+        model.set([cleat, cleat], -1.0)
+    assert model.load is None
+    model.set(cleat, 20000)
+    assert model.load == 20000 and model.envelope(0.0)["fz_N"] == pytest.approx(20000)

@@ -115,6 +115,7 @@ class Model:
         self._lock = threading.Lock()
         self.profile = None   # the profile set: kept alive here, the library borrows it
         self.load = None
+        self._tracks = None   # several tracks set: all of them and the weights, kept alive
         self._warned = ()     # the warnings issued since the last set
 
     @property
@@ -163,6 +164,8 @@ class Model:
                     raise invalid(f"{len(tracks)} tracks and {w.size} weights", "weights")
             ps = ffi.new("const tirenv_profile *[]", [t._p for t in tracks])
             with self._lock:
+                before = self.profile, self._tracks  # alive through the call, which may read
+                self.profile = self.load = self._tracks = None  # them; unset if it fails
                 check(lib.tirenv_model_set_tracks(self._m, len(tracks), ps,
                                                   w if w is ffi.NULL else double_ptr(w), load,
                                                   diag), diag)
@@ -172,6 +175,11 @@ class Model:
             self._warn()
             return self
         with self._lock:
+            # A set that fails leaves the library's model unset: so is this one, rather than
+            # still naming the profile and load of the set before (kept alive through the
+            # call, which may read them).
+            before = self.profile, self._tracks
+            self.profile = self.load = self._tracks = None
             check(lib.tirenv_model_set(self._m, profile._p, load, diag), diag)
             self.profile, self.load, self._tracks = profile, load, None
             self._warned = ()
