@@ -119,21 +119,24 @@ typedef struct {
 } tirenv_comfort_metrics;
 
 /* r.m.s. (sum a_w^2 / n)^(1/2) of n samples into *rms. TIRENV_EINVAL if n == 0 or a sample is
- * not finite (diag: line = 1-based sample index). */
+ * not finite (diag: line = 1-based sample index); TIRENV_ERANGE if the sum of squares
+ * overflows (samples beyond about 1e154). */
 int tirenv_comfort_rms(const double a_w[], size_t n, double *rms, tirenv_diag *diag);
 
 /* max |a_w| of n samples into *peak; errors as tirenv_comfort_rms. */
 int tirenv_comfort_peak(const double a_w[], size_t n, double *peak, tirenv_diag *diag);
 
 /* VDV = (sum a_w^4 / fs)^(1/4) of n samples at fs (Hz) into *vdv; TIRENV_EINVAL also if fs
- * is not positive and finite. */
+ * is not positive and finite; TIRENV_ERANGE if the sum of fourth powers overflows (samples
+ * beyond about 1e77). */
 int tirenv_comfort_vdv(const double a_w[], size_t n, double fs, double *vdv,
                        tirenv_diag *diag);
 
 /* The running r.m.s. of ISO 2631-1 6.3 (linear integration) at every sample j = 0..n-1:
  * out[j] = (sum of a_w^2 over the N = round(tau*fs) samples ending at j, / N)^(1/2), samples
  * before the start counting as zero (a meter at rest); out has n elements, tau is in s.
- * TIRENV_EINVAL as tirenv_comfort_vdv, or if tau*fs rounds to 0 samples. */
+ * TIRENV_EINVAL as tirenv_comfort_vdv, or if tau*fs rounds to 0 samples; TIRENV_ERANGE as
+ * tirenv_comfort_rms. */
 int tirenv_comfort_running_rms(const double a_w[], size_t n, double fs, double tau,
                                double out[], tirenv_diag *diag);
 
@@ -153,7 +156,8 @@ int tirenv_comfort_evaluate(tirenv_weighting w, double fs, const double a[], dou
                             size_t n, tirenv_comfort_metrics *m, tirenv_diag *diag);
 
 /* The vibration total value a_v = (sum_i (k_i a_w,i)^2)^(1/2) of n axes (m/s^2, ISO 2631-1
- * 6.5) into *a_v; TIRENV_EINVAL if n == 0 or a k_i or a_w,i is negative or not finite. */
+ * 6.5) into *a_v; TIRENV_EINVAL if n == 0 or a k_i or a_w,i is negative or not finite;
+ * TIRENV_ERANGE if the sum of squares overflows. */
 int tirenv_comfort_total_value(const double k[], const double a_w[], size_t n, double *a_v,
                                tirenv_diag *diag);
 
@@ -177,7 +181,8 @@ size_t tirenv_welch_bins(const tirenv_welch *w);
  * average over the segments, so that sum_k psd[k] * fs/n_seg is the (Hann-weighted) mean square
  * of x. The number of segments in *segments (may be NULL); samples past the last whole segment
  * are not used. TIRENV_EINVAL if fs is not positive and finite, n < n_seg, or a sample is not
- * finite. Never allocates. */
+ * finite; TIRENV_ERANGE if a bin's power overflows (psd then holds no estimate). Never
+ * allocates. */
 int tirenv_welch_psd(tirenv_welch *w, const double x[], size_t n, double fs, double psd[],
                      size_t *segments, tirenv_diag *diag);
 

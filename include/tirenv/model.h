@@ -167,7 +167,8 @@ int tirenv_model_load_for_contact_length(tirenv_model *m, double l_c, double *lo
 
 /* Sets the ground profile (borrowed: it must outlive its use) and the load (N); computes the
  * flat-ground reference z_flat. The profile may have any elevation and grade: it is checked
- * where it is evaluated (tirenv_model_eval). Resets the warm start. */
+ * where it is evaluated (tirenv_model_eval). Resets the warm start. On failure the model is
+ * unset (tirenv_model_load NaN, tirenv_model_profile NULL), whatever it was set on before. */
 int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load,
                      tirenv_diag *diag);
 
@@ -180,7 +181,8 @@ int tirenv_model_set(tirenv_model *m, const tirenv_profile *profile, double load
  * model is unchanged (still set at its previous load). */
 int tirenv_model_set_load(tirenv_model *m, double load, tirenv_diag *diag);
 
-/* The load (N) of the last successful tirenv_model_set or _set_load; NaN before. */
+/* The load (N) of the last successful tirenv_model_set or _set_load; NaN before, and after a
+ * tirenv_model_set that failed (the model is then unset). */
 double tirenv_model_load(const tirenv_model *m);
 /* The profile the model is set on (borrowed), or NULL when it is not set. */
 const tirenv_profile *tirenv_model_profile(const tirenv_model *m);
@@ -192,7 +194,8 @@ const tirenv_profile *tirenv_model_profile(const tirenv_model *m);
  * instance, whatever it has evaluated. */
 size_t tirenv_model_state_size(const tirenv_model *m);
 /* Writes the state into buf (size bytes); TIRENV_EINVAL if size is not
- * tirenv_model_state_size(m). */
+ * tirenv_model_state_size(m), or if the model is set on several tracks
+ * (tirenv_model_set_tracks): a state is that of one track (docs/models.md section 13). */
 int tirenv_model_state_save(const tirenv_model *m, void *buf, size_t size, tirenv_diag *diag);
 /* Restores a state saved from this instance or from one allocated with the same type and tire
  * (and the same network): the evaluations that follow are bit for bit those that followed the

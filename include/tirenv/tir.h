@@ -41,7 +41,8 @@ const char *tirenv_tir_key(size_t i, const char **section);
 /* The value of key ("KEY" or "SECTION.KEY", as tirenv_tir_set takes it) in *tire as text into
  * buf (n bytes, 64 always suffice), exactly as tirenv_tir_write writes it: the shortest text
  * that reads back to the same double (SI units), a count, or a name unquoted; *kind (if not
- * NULL) says which. An unknown key is TIRENV_EINVAL with the known keys in the message. */
+ * NULL) says which. An unknown key is TIRENV_EINVAL with the known keys in the message; on
+ * any failure buf (if n > 0) holds "". */
 int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
                    tirenv_tir_kind *kind, tirenv_diag *diag);
 

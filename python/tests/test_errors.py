@@ -151,3 +151,41 @@ def test_set_names_the_argument_not_the_cli_option():
     with pytest.raises(tirenv.TirenvValueError) as e:
         tirenv.Vehicle(set={"MASS": 1e30})
     assert e.value.file == "set" and "plausible range" in e.value.message
+
+
+def test_wrong_object_names_the_argument(network_file):
+    """An object of the wrong kind raised AttributeError from deep inside ("'str' object has
+    no attribute '_require'"), naming neither the argument nor what it takes."""
+    cleat = tirenv.Profile.cleat(0.1, 0.05)
+    cases = [(lambda: tirenv.Model("springs", "my.tir"), "tire: expected a tirenv.Tire"),
+             (lambda: tirenv.Model("nn", network="net.json"),
+              "network: expected a tirenv.Network"),
+             (lambda: tirenv.ride(None, model="cam", speed=10),
+              "profile: expected a tirenv.Profile"),
+             (lambda: tirenv.ride(cleat, vehicle="tractor.veh"),
+              "vehicle: expected a tirenv.Vehicle"),
+             (lambda: tirenv.Network(network_file).road("road.csv", 0.3),
+              "profile: expected a tirenv.Profile"),
+             (lambda: tirenv.Tire(set=[("RADIAL_STIFFNESS", 1e6)]), "set: expected a mapping")]
+    for call, words in cases:
+        with pytest.raises(TypeError) as e:
+            call()
+        assert words in str(e.value)
+
+
+def test_failed_set_leaves_the_model_unset():
+    """A set the library refuses leaves its model unset; the Model kept the profile and load
+    of the set before (model.load 20000 N while the library's load was NaN)."""
+    model = tirenv.Model("springs")
+    cleat = tirenv.Profile.cleat(0.3, 0.1)
+    model.set(cleat, 20000)
+    with pytest.raises(tirenv.TirenvError):
+        model.set(cleat, 1e9)
+    assert model.load is None and model.profile is None
+    with pytest.raises(tirenv.TirenvError, match="call set"):
+        model.envelope(0.0)
+    with pytest.raises(tirenv.TirenvError):
+        model.set([cleat, cleat], -1.0)
+    assert model.load is None
+    model.set(cleat, 20000)
+    assert model.load == 20000 and model.envelope(0.0)["fz_N"] == pytest.approx(20000)

@@ -116,6 +116,15 @@ def invalid(message, field=""):
     return TirenvValueError(lib.TIRENV_EINVAL, message, field=field, text=text)
 
 
+def expect(value, cls, what, hint=""):
+    """value, or a TypeError naming the argument when it is not a cls: the attribute error
+    from deep inside ('str' object has no attribute '_require') named neither."""
+    if not isinstance(value, cls):
+        raise TypeError(f"{what}: expected a tirenv.{cls.__name__}{hint}, got "
+                        f"{type(value).__name__}")
+    return value
+
+
 def path_bytes(path):
     return os.fsencode(path)
 

@@ -6,8 +6,9 @@ import warnings as _warnings
 
 import numpy as np
 
-from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, error_from, invalid, is_scalar,
-                 new_diag, one_or_all, struct_dtype)
+from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, error_from, expect, invalid,
+                 is_scalar, new_diag, one_or_all, struct_dtype)
+from .network import Network
 from .profile import Profile
 from .tire import Tire
 
@@ -72,7 +73,10 @@ class Model:
     shareable between threads at once: calls on one model are serialised."""
 
     def __init__(self, name, tire=None, network=None, extrapolate=False):
-        self.tire = tire if tire is not None else Tire()
+        self.tire = expect(tire, Tire, "tire", " (Tire(path) reads a .tir file)") \
+            if tire is not None else Tire()
+        if network is not None:
+            expect(network, Network, "network", " (Network(path) reads a model file)")
         t = lib.tirenv_model_type_find(str(name).encode())
         if t == ffi.NULL:
             raise invalid(f"unknown model {name!r}; expected one of "
@@ -111,6 +115,7 @@ class Model:
         self._lock = threading.Lock()
         self.profile = None   # the profile set: kept alive here, the library borrows it
         self.load = None
+        self._tracks = None   # several tracks set: all of them and the weights, kept alive
         self._warned = ()     # the warnings issued since the last set
 
     @property
@@ -159,6 +164,8 @@ class Model:
                     raise invalid(f"{len(tracks)} tracks and {w.size} weights", "weights")
             ps = ffi.new("const tirenv_profile *[]", [t._p for t in tracks])
             with self._lock:
+                before = self.profile, self._tracks  # alive through the call, which may read
+                self.profile = self.load = self._tracks = None  # them; unset if it fails
                 check(lib.tirenv_model_set_tracks(self._m, len(tracks), ps,
                                                   w if w is ffi.NULL else double_ptr(w), load,
                                                   diag), diag)
@@ -168,6 +175,11 @@ class Model:
             self._warn()
             return self
         with self._lock:
+            # A set that fails leaves the library's model unset: so is this one, rather than
+            # still naming the profile and load of the set before (kept alive through the
+            # call, which may read them).
+            before = self.profile, self._tracks
+            self.profile = self.load = self._tracks = None
             check(lib.tirenv_model_set(self._m, profile._p, load, diag), diag)
             self.profile, self.load, self._tracks = profile, load, None
             self._warned = ()

@@ -6,8 +6,9 @@ import warnings
 
 import numpy as np
 
-from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, invalid, is_scalar,
-                 new_diag, one_or_all, path_bytes)
+from ._c import (TirenvWarning, ffi, lib, check, doubles, double_ptr, expect, invalid,
+                 is_scalar, new_diag, one_or_all, path_bytes)
+from .profile import Profile
 
 INPUTS = ("x_N", "contact_length_m", "obstacle_height_m", "obstacle_length_m")
 
@@ -97,7 +98,8 @@ class Network:
 
     def road(self, profile, contact_length, R0=None):
         """The network over any profile by equivalent cleats (include/tirenv/nn_road.h)."""
-        return NetworkRoad(self, profile, contact_length, self._R0(R0))
+        return NetworkRoad(self, expect(profile, Profile, "profile"), contact_length,
+                           self._R0(R0))
 
 
 class NetworkRoad:

@@ -5,9 +5,10 @@ import math
 
 import numpy as np
 
-from ._c import (ffi, lib, check, check_set, doubles, double_ptr, invalid, new_diag,
+from ._c import (ffi, lib, check, check_set, doubles, double_ptr, expect, invalid, new_diag,
                  path_bytes, struct_dtype)
 from .model import Model
+from .profile import Profile
 from .tire import Tire
 
 # The names of the library's tirenv_ride_sample, in its order.
@@ -185,7 +186,9 @@ def ride(profile, model="point", speed=1.0, vehicle=None, network=None, dx=None,
     CLI's alone). The integration is one library call with the GIL released. extrapolate=True
     lets the network run outside its trained ranges, as 'tirenv ride --extrapolate'. Returns
     a Ride (w_front, w_rear: the static load's rows)."""
-    v = vehicle if vehicle is not None else Vehicle()
+    expect(profile, Profile, "profile")
+    v = expect(vehicle, Vehicle, "vehicle", " (Vehicle(path) reads a vehicle file)") \
+        if vehicle is not None else Vehicle()
     speeds = ffi.new("double[1]", [speed_of(speed)])
     pp, diag = ffi.new("tirenv_ride_plan_params *"), new_diag()
     pp[0] = lib.tirenv_ride_plan_params_default()

@@ -51,6 +51,9 @@ class Tire(collections.abc.Mapping):
                                              diag), diag)
             if self._origin.note[0] != b"\0":
                 warnings.warn(f"{path}: {self.derived_note}", stacklevel=2)
+        if set is not None and not isinstance(set, collections.abc.Mapping):
+            raise TypeError(f"set: expected a mapping of keys to values such as "
+                            f"{{'RADIAL_STIFFNESS': 1.6e6}}, got {type(set).__name__}")
         for key, value in (set or {}).items():
             check_set(lib.tirenv_tir_set(self._t, _assignment(key, value), diag), diag)
         check(lib.tirenv_tire_check(self._t, diag), diag)

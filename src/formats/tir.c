@@ -247,6 +247,8 @@ int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n
                    tirenv_tir_kind *kind, tirenv_diag *diag)
 {
     tirenv_propfile__kind k = TIRENV_PROPFILE_REAL;
+    if (buf && n)
+        buf[0] = '\0';  /* a refusal leaves no text a caller might take for the value */
     if (!tire)
         return tirenv_error(diag, TIRENV_EINVAL, "get", 0, key ? key : "", "no tire (NULL)");
     const int status = tirenv_propfile__get(&tir_schema, tire, key, buf, n, &k, diag);

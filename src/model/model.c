@@ -189,9 +189,9 @@ const char *tirenv_model_note(const tirenv_model *m)
 static int load_ok(const tirenv_model *m, double load, tirenv_diag *diag)
 {
     (void)m;
-    if (!(load > 0))
+    if (!(load > 0) || isinf(load))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
-                            "must be a positive force in N, got %g", load);
+                            "must be a positive finite force in N, got %g", load);
     return TIRENV_OK;
 }
 

@@ -62,6 +62,15 @@ static int batch_alloc(batch *b, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
+/* A sink's nonzero status, said in diag: the sink has none of its own to fill, and the
+ * caller's diag would otherwise keep whatever an earlier call left in it. */
+static int sink_stopped(int status, size_t k, double x, tirenv_diag *diag)
+{
+    return tirenv_error(diag, status, "", 0, "sink",
+                        "the point sink stopped the sweep at position %zu (x = %.9g m) with "
+                        "status %d (%s)", k, x, status, tirenv_strerror(status));
+}
+
 int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double weights[],
                                tirenv_row_source source, void *source_ctx, double x_from,
                                double x_to, double dx, double load, tirenv_point_sink sink,
@@ -155,6 +164,8 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
             for (size_t j = 0; j < nb && !status; ++j)
                 if (!(status = sink(ctx, &b.pt[j])))
                     ++done;
+                else
+                    status = sink_stopped(status, done, b.pt[j].x, diag);
             k += nb;
             continue;
         }
@@ -166,8 +177,10 @@ int tirenv_model_stream_tracks(tirenv_model *m, size_t n_tracks, const double we
         tirenv_point pt;
         if ((status = tirenv_model_eval(m, x, &pt, diag)))
             break;
-        if ((status = sink(ctx, &pt)))
+        if ((status = sink(ctx, &pt))) {
+            status = sink_stopped(status, done, x, diag);
             break;
+        }
         ++done;
         ++k;
     }

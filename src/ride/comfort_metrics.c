@@ -32,6 +32,19 @@ static int check_samples(const double a_w[], size_t n, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
+/* TIRENV_ERANGE for a sum of powers of the samples that overflowed: an r.m.s. or VDV of inf,
+ * and a running r.m.s. of NaN that fmax passed over (the MTVV of samples of 1e200 came out as
+ * 0.0086), returned as if computed. */
+static int overflowed(const double a_w[], size_t n, const char *what, tirenv_diag *diag)
+{
+    double peak = 0.0;
+    for (size_t j = 0; j < n; j++)
+        peak = fmax(peak, fabs(a_w[j]));
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0, "a_w",
+                        "the %s of values up to %g overflows a double; expected "
+                        "accelerations whose powers it holds", what, peak);
+}
+
 static int check_fs(double fs, tirenv_diag *diag)
 {
     if (!(fs > 0 && isfinite(fs)))
@@ -48,6 +61,8 @@ int tirenv_comfort_rms(const double a_w[], size_t n, double *rms, tirenv_diag *d
     double sum = 0.0;
     for (size_t j = 0; j < n; j++)
         sum += a_w[j] * a_w[j];
+    if (isinf(sum))
+        return overflowed(a_w, n, "r.m.s.", diag);
     *rms = sqrt(sum / (double)n);
     return TIRENV_OK;
 }
@@ -77,6 +92,8 @@ int tirenv_comfort_vdv(const double a_w[], size_t n, double fs, double *vdv,
         const double a2 = a_w[j] * a_w[j];
         sum += a2 * a2;
     }
+    if (!isfinite(sum / fs))
+        return overflowed(a_w, n, "vibration dose value", diag);
     *vdv = pow(sum / fs, 0.25);
     return TIRENV_OK;
 }
@@ -117,8 +134,8 @@ static void add(double *s, double *c, double x)
  * shock 1e3 times the later signal); the compensated sum keeps it at 1e-16 of the current
  * sum, and summing afresh every N samples stops the corrections' own errors from growing
  * with the length of the series. */
-static void running(const double a_w[], size_t n, double N_div, size_t N, double out[],
-                    double *max)
+static int running(const double a_w[], size_t n, double N_div, size_t N, double out[],
+                   double *max)
 {
     double sum = 0.0, c = 0.0, m = 0.0;
     for (size_t j = 0; j < n; j++) {
@@ -131,12 +148,15 @@ static void running(const double a_w[], size_t n, double N_div, size_t N, double
             if (j >= N)
                 add(&sum, &c, -a_w[j - N] * a_w[j - N]);
         }
+        if (!isfinite(sum + c))
+            return TIRENV_ERANGE;
         const double r = sqrt(fmax(sum + c, 0.0) / N_div);
         if (out)
             out[j] = r;
         m = fmax(m, r);
     }
     *max = m;
+    return TIRENV_OK;
 }
 
 /* The checks both public entries need, then the running r.m.s. */
@@ -148,8 +168,8 @@ static int checked_running(const double a_w[], size_t n, double fs, double tau, 
     int status = window(n, fs, tau, &N_div, &N, diag);
     if (!status)
         status = check_samples(a_w, n, diag);
-    if (!status)
-        running(a_w, n, N_div, N, out, max);
+    if (!status && running(a_w, n, N_div, N, out, max))
+        status = overflowed(a_w, n, "running r.m.s.", diag);
     return status;
 }
 
@@ -210,6 +230,8 @@ int tirenv_comfort_total_value(const double k[], const double a_w[], size_t n, d
                                 a_w[i]);
         sum += (k[i] * a_w[i]) * (k[i] * a_w[i]);
     }
+    if (isinf(sum))
+        return overflowed(a_w, n, "total value", diag);
     *a_v = sqrt(sum);
     return TIRENV_OK;
 }

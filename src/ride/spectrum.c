@@ -102,8 +102,14 @@ int tirenv_welch_psd(tirenv_welch *w, const double x[], size_t n, double fs, dou
         psd[N / 2] += creal(w->seg[N / 2]) * creal(w->seg[N / 2]);
     }
     const double scale = 1.0 / (fs * w->U * (double)K);
-    for (size_t k = 0; k < bins; k++)
+    for (size_t k = 0; k < bins; k++) {
         psd[k] *= scale;
+        /* Squares that overflowed (samples of 1e200) came back as inf with TIRENV_OK. */
+        if (isinf(psd[k]))
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "x",
+                                "the power at bin %zu (%g Hz) overflows a double; expected "
+                                "samples whose squares it holds", k, (double)k * fs / (double)N);
+    }
     if (segments)
         *segments = K;
     return TIRENV_OK;

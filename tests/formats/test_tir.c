@@ -866,8 +866,14 @@ static void test_get_every_key(void **state)
     assert_string_equal(d.field, "Q_FZ3");
     assert_non_null(strstr(d.message, "RADIAL_STIFFNESS"));
     assert_int_equal(tirenv_tir_get(&t, "LENGTH", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+    /* A refusal leaves buf empty: it kept what was there before ("1612345.678" here, or
+     * uninitialised bytes), which a caller that printed it took for the value. */
     assert_int_equal(tirenv_tir_get(&t, "RADIAL_STIFFNESS", buf, 5, NULL, &d), TIRENV_EINVAL);
     assert_non_null(strstr(d.message, "buffer"));
+    assert_string_equal(buf, "");
+    strcpy(buf, "stale");
+    assert_int_equal(tirenv_tir_get(&t, "Q_FZ3", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
+    assert_string_equal(buf, "");
     assert_int_equal(tirenv_tir_get(NULL, "METHOD", buf, sizeof buf, NULL, &d), TIRENV_EINVAL);
 }
 

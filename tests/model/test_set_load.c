@@ -203,6 +203,12 @@ static void test_set_load_errors(void **state)
         assert_int_equal(tirenv_model_set_load(m, -1, &d), TIRENV_EINVAL);
         assert_string_equal(d.field, "load");
         assert_int_equal(tirenv_model_set_load(m, NAN, &d), TIRENV_EINVAL);
+        /* An infinite load was taken by the models that solve nothing (rigid, point: fz inf,
+         * fx and slope NaN, status OK) and misreported by the cam ("at most -13072 N"). */
+        tirenv_flat flat;
+        assert_int_equal(tirenv_model_set_load(m, INFINITY, &d), TIRENV_EINVAL);
+        assert_string_equal(d.field, "load");
+        assert_int_equal(tirenv_model_flat(m, INFINITY, &flat, &d), TIRENV_EINVAL);
         const int bounded = strcmp(cases[c].name, "cam") == 0 ||
                             strcmp(cases[c].name, "springs") == 0;
         if (bounded)
@@ -234,6 +240,8 @@ static void test_set_load_errors(void **state)
             assert_true(point_bits_equal(&before, &after));
         else
             assert_near(after.z, before.z, 5e-10, 0);
+        assert_int_equal(tirenv_model_set(m, cleat, INFINITY, &d), TIRENV_EINVAL);
+        assert_string_equal(d.field, "load");
         tirenv_model_free(m);
     }
     tirenv_profile_free(cleat);

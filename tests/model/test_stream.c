@@ -161,7 +161,8 @@ static void test_window_bounded(void **state)
     tirenv_model_free(m);
 }
 
-/* A sink's nonzero status stops the sweep and comes back; the model is left unset. */
+/* A sink's nonzero status stops the sweep and comes back, said in the diag; the model is
+ * left unset. */
 static void test_sink_stops(void **state)
 {
     (void)state;
@@ -173,8 +174,13 @@ static void test_sink_stops(void **state)
     collect c = {.stop = 17};
     tirenv_stream_stats st;
     tirenv_diag d;
+    tirenv_error(&d, TIRENV_ERANGE, "earlier.csv", 9, "z", "an earlier call's failure");
     assert_int_equal(stream_file(m, path, 0, 3, 0.01, &c, &st, &d), TIRENV_EIO);
     assert_int_equal(st.positions, 17);
+    /* The diag says the sink stopped it, where: it kept the earlier call's words. */
+    assert_string_equal(d.field, "sink");
+    assert_string_equal(d.file, "");
+    assert_non_null(strstr(d.message, "position 17 (x = 0.17 m)"));
     tirenv_point pt;
     assert_int_equal(tirenv_model_eval(m, 1.0, &pt, &d), TIRENV_EINVAL);
     assert_int_equal(stream_file(m, path, 0, 3, 0, &c, &st, &d), TIRENV_EINVAL);

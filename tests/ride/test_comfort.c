@@ -483,6 +483,22 @@ static void test_metrics_refusals(void **state)
     assert_near(x, sqrt((0.01 + 0.04 + 0.09 + 0.0025) / 1e32), 0, 1e-12);
     assert_int_equal(tirenv_comfort_mtvv(a, 4, 100, 1.0, &x, &diag), TIRENV_OK);
     assert_near(x, sqrt((0.01 + 0.04 + 0.09 + 0.0025) / 100), 0, 1e-15);
+    /* Powers that overflow a double: refused, where they came back as rms and VDV inf, the
+     * crest factor 0 and the MTVV 0.0086 (the running sum NaN, which fmax passed over). */
+    double huge[4] = {0.1, 1e200, -0.2, 0.1};
+    assert_int_equal(tirenv_comfort_rms(huge, 4, &x, &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "a_w");
+    assert_non_null(strstr(diag.message, "1e+200"));
+    assert_int_equal(tirenv_comfort_vdv(huge, 4, 100, &x, &diag), TIRENV_ERANGE);
+    assert_int_equal(tirenv_comfort_mtvv(huge, 4, 100, 1.0, &x, &diag), TIRENV_ERANGE);
+    assert_int_equal(tirenv_comfort_running_rms(huge, 4, 100, 1.0, out, &diag), TIRENV_ERANGE);
+    assert_int_equal(tirenv_comfort_metrics_compute(huge, 4, 100, &m, &diag), TIRENV_ERANGE);
+    huge[1] = 1e100;  /* its square is held, its fourth power is not */
+    assert_int_equal(tirenv_comfort_rms(huge, 4, &x, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_comfort_mtvv(huge, 4, 100, 1.0, &x, &diag), TIRENV_OK);
+    assert_int_equal(tirenv_comfort_vdv(huge, 4, 100, &x, &diag), TIRENV_ERANGE);
+    const double k2[2] = {1, 1}, big[2] = {1e200, 1e200};
+    assert_int_equal(tirenv_comfort_total_value(k2, big, 2, &x, &diag), TIRENV_ERANGE);
     a[2] = NAN;
     assert_int_equal(tirenv_comfort_rms(a, 4, &x, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "a_w");
@@ -626,6 +642,9 @@ static void test_welch_refusals(void **state)
     assert_int_equal(tirenv_welch_psd(w, y, 16, 10.0, Q, &K, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "x");
     assert_int_equal(diag.line, 10);
+    y[9] = 1e200;  /* its power overflows: refused, where psd came back inf */
+    assert_int_equal(tirenv_welch_psd(w, y, 16, 10.0, Q, &K, &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "x");
     tirenv_welch_free(w);
 }
 
