@@ -274,10 +274,13 @@ static int road_out_open(const run *r, const tirenv_model *m, double load, doubl
     const tirenv_tire *tire = tirenv_model_tire(m);
     const double width = r->road.width > 0 ? r->road.width : tire->width > 0 ? tire->width : 1;
     /* An effective road of an OpenCRG road lies where that road is (its reference line, the
-     * track's v); of another road file or a generated obstacle, along x from the origin. */
+     * track's v); of another road file or a generated obstacle, on the x axis where that road's
+     * x is: its line starts at x = x_from, the first row's u (OpenCRG's x/y evaluation put a
+     * line from the origin at u - x_from). */
     const int on_crg = r->road.from_file && r->road.format == TIRENV_PROFILE_CRG;
     const tirenv_road_writer_layout l = {
         .x_from = x_from, .dx = dx, .n = n, .half_width = 0.5 * width,
+        .x_start = on_crg ? 0 : x_from,
         .v_track = on_crg ? r->road.src.crg.v : 0, .encoding = r->e->encoding,
         .comment = comment, .on_crg = on_crg ? r->road.file : NULL};
     return tirenv_road_writer_open(r->o->output, r->out_format, &l, w, diag);

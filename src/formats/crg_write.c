@@ -343,9 +343,11 @@ int tirenv_crg_write_profiles(const char *path, tirenv_crg_encoding encoding, si
         dx = u_increment;
         rows = (size_t)span + 1;
     }
-    const tirenv_crg_layout layout = {.encoding = encoding, .u_start = x0, .u_increment = dx,
-                                      .rows = rows, .long_sections = n, .v = v,
-                                      .comment = comment};
+    /* The line on the x axis where the profiles' x is (x = u): from the origin, OpenCRG's x/y
+     * evaluation put every height x0 before its x. */
+    const tirenv_crg_layout layout = {.encoding = encoding, .x_start = x0, .u_start = x0,
+                                      .u_increment = dx, .rows = rows, .long_sections = n,
+                                      .v = v, .comment = comment};
     tirenv_crg_writer *w;
     int status = tirenv_crg_writer_open(path, &layout, &w, diag);
     if (status)

@@ -48,4 +48,23 @@ if [ "$(grep -c '^not ok' "$tmp/log")" -eq 0 ] || ! grep -q '^ok 2 ' "$tmp/log";
 else
     echo "ok - without \$ROAD_CRG_MODS OpenCRG's default modifiers move the effective road (the check fails: $(grep -c '^not ok' "$tmp/log") checks)"
 fi
+# A road that is no OpenCRG file (a generated cleat, a CSV road) has x = u and y = v: the
+# effective road tirenv writes, and a CSV road converted to OpenCRG, lie where that x is. Their
+# lines started at the origin, so OpenCRG's x/y evaluation put each height x_from before its x
+# (the cleat's effective road peaked at x = 0.75 m, not 0).
+echo "# the effective road over a generated cleat, along x"
+"$cli" envelope --model springs --cleat 0.30,0.10 --load 4000 --x-from -0.75 --x-to 0.75 \
+    --dx 0.005 -o "$tmp/cleat.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+"$cli" envelope --model springs --cleat 0.30,0.10 --load 4000 --x-from -0.75 --x-to 0.75 \
+    --dx 0.005 -o "$tmp/cleat.crg" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+"$reader" - "$tmp/cleat.crg" "$tmp/cleat.csv" 0 || status=1
+echo "# a CSV road from x = 5 m converted to OpenCRG, along x (its heights: the point contact's h)"
+"$cli" road --class C --length 20 --dx 0.01 --seed 1 -o "$tmp/road0.csv" 2>"$tmp/err" ||
+    { cat "$tmp/err"; exit 1; }
+awk -F, '/^#/ || !/^[-0-9.]/ { print; next } { printf "%.10g,%s\n", $1 + 5, $2 }' \
+    "$tmp/road0.csv" >"$tmp/road.csv"
+"$cli" convert --profile "$tmp/road.csv" -o "$tmp/road.crg" 2>"$tmp/err" &&
+    "$cli" envelope --model point --profile "$tmp/road.csv" --load 4000 --x-from 8 --x-to 22 \
+        --dx 0.01 -o "$tmp/point.csv" 2>"$tmp/err" || { cat "$tmp/err"; exit 1; }
+"$reader" - "$tmp/road.crg" "$tmp/point.csv" 0 || status=1
 exit $status
