@@ -11,6 +11,9 @@ need="$need clang libclang-rt-14-dev"
 # valgrind: the memcheck test (tests/model/memcheck.sh) finds reads of memory never written,
 # which the sanitizers do not.
 need="$need valgrind"
+# locales: its locale sources and character maps, from which tests/io/test_c_numeric.c makes a
+# locale whose decimal point is ',' (tirenv's files keep '.' whatever the host's locale).
+need="$need locales"
 # The Python module (python/) and its tests; the FMU's packaging and checks (fmu/).
 need="$need python3 python3-dev python3-cffi python3-numpy python3-pytest python3-setuptools"
 need="$need python3-wheel python3-venv python3-pip unzip libxml2-utils"

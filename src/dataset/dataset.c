@@ -320,6 +320,7 @@ static int sweep_curve(const tirenv_case *c, tirenv_diag *diag)
 
 int tirenv_dataset_read(const char *dir, double R0, tirenv_dataset *out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = (tirenv_dataset){{0}, 0, NULL};
     if (!dir || !dir[0] || strlen(dir) >= sizeof out->dir)
         return tirenv_error(diag, TIRENV_EINVAL, dir ? dir : "", 0, "",

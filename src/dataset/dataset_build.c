@@ -11,6 +11,7 @@
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "tirenv/tir.h"
+#include "io/io.h"
 
 /* Obstacle lengths 0.05 to 0.30 m, heights 0.025 to 0.10 m, contact lengths 0.28 to 0.43 m,
  * spread so that every value of each appears in training, and the validation cases are the
@@ -209,6 +210,7 @@ static int build_case(const char *dir, const design_record *r, size_t i,
 
 tirenv_dataset_build_settings tirenv_dataset_build_default(void)
 {
+    TIRENV_NUMERIC_C();
     return (tirenv_dataset_build_settings){.jobs = 1, .progress = NULL, .progress_ctx = NULL};
 }
 
@@ -318,6 +320,7 @@ int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
                                 const tirenv_dataset_build_settings *settings,
                                 tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     const tirenv_dataset_build_settings defaults = tirenv_dataset_build_default();
     const tirenv_dataset_build_settings *s = settings ? settings : &defaults;
     const design_record *r = d ? record_of(d) : NULL;
@@ -342,5 +345,6 @@ int tirenv_dataset_build_design(const char *dir, const tirenv_design *d,
 int tirenv_dataset_build(const char *dir, const tirenv_tire *tire,
                          const tirenv_dataset_build_settings *s, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_dataset_build_design(dir, designs[0], tire, s, diag);
 }

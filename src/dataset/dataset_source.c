@@ -133,6 +133,7 @@ static int sweep_source(const char *dir, tirenv_dataset_source *out, tirenv_diag
 
 int tirenv_dataset_source_read(const char *dir, tirenv_dataset_source *out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     memset(out, 0, sizeof *out);
     char path[1024];
     const int w = snprintf(path, sizeof path, "%s/source.txt", dir ? dir : "");

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include "io/io.h"
 
 static const char *const encoding_names[] = {"LRFI", "LDFI", "KRBI", "KDBI"};
 
@@ -62,6 +63,7 @@ static int open_source(tirenv_crg *c, tirenv_crg **out, tirenv_diag *diag)
 
 int tirenv_crg_open(const char *path, tirenv_crg **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_crg *c = calloc(1, sizeof *c);
     if (!c)
@@ -91,6 +93,7 @@ int tirenv_crg__open_source(const tirenv_source *from, tirenv_crg **out, tirenv_
 int tirenv_crg_open_memory(const void *data, size_t size, const char *name, tirenv_crg **out,
                            tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_crg *c = calloc(1, sizeof *c);
     if (!c)
@@ -542,6 +545,7 @@ void tirenv_crg_track_reader_free(tirenv_crg_track_reader *r)
 int tirenv_crg_track_reader_open(const tirenv_crg *c, const tirenv_crg_track_spec *spec,
                                  tirenv_crg_track_reader **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_crg_track_reader *r = calloc(1, sizeof *r);
     if (!r)
@@ -567,6 +571,7 @@ int tirenv_crg_track_reader_open(const tirenv_crg *c, const tirenv_crg_track_spe
 int tirenv_crg_track_reader_next(tirenv_crg_track_reader *r, double *u, double *z, int *got,
                                  tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *got = 0;
     if (r->pos == r->len) {
         const tirenv_crg *c = r->crg;
@@ -591,6 +596,7 @@ int tirenv_crg_track_reader_next(tirenv_crg_track_reader *r, double *u, double *
 int tirenv_crg_track_reader_source(void *reader, double *u, double *z, int *got,
                                    tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_crg_track_reader_next(reader, u, z, got, diag);
 }
 

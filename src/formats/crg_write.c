@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/io.h"
 
 enum { RECORD_BYTES = 80, HEADER_RECORD = 72 };
 
@@ -158,6 +159,7 @@ void tirenv_crg_writer_abort(tirenv_crg_writer *w)
 int tirenv_crg_writer_open(const char *path, const tirenv_crg_layout *layout,
                            tirenv_crg_writer **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     int status = check_layout(path, layout, diag);
     if (status)
@@ -260,6 +262,7 @@ int tirenv_crg_writer_row(tirenv_crg_writer *w, const double z[], tirenv_diag *d
 
 int tirenv_crg_writer_commit(tirenv_crg_writer *w, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (w->written != w->rows) {
         const int status = tirenv_error(diag, TIRENV_EINVAL, tirenv_outfile_path(w->out), 0, "rows",
                                         "%zu rows written of the %zu the layout announced",
@@ -305,6 +308,7 @@ int tirenv_crg_write_profiles(const char *path, tirenv_crg_encoding encoding, si
                               const double v[], const tirenv_profile *const tracks[],
                               double u_increment, const char *comment, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (n < 2 || !tracks || !v)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "tracks",
                             "%zu tracks; an OpenCRG road needs at least two long sections", n);

@@ -54,6 +54,7 @@ void tirenv_curve_free(tirenv_curve *c)
 int tirenv_curve_write_csv(const char *path, const tirenv_curve *c, const char *comment,
                            tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     for (size_t k = 0; k < c->n; k++)
         if (!isfinite(c->x_N[k]) || !isfinite(c->x[k]) || !isfinite(c->h[k]))
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "",
@@ -163,6 +164,7 @@ static int curve_parse_lines(tirenv_csv__reader *r, tirenv_curve *out)
 
 int tirenv_curve_read_csv(const char *path, tirenv_curve *out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     out->n = 0;
     out->x_N = out->x = out->h = NULL;
     tirenv_csv__reader r;

@@ -35,6 +35,7 @@
 
 #include "formats/nn_json_impl.h"
 #include "tirenv/nn_file.h"
+#include "io/io.h"
 
 /* ---- The checksum of the network's numbers ---- */
 
@@ -750,6 +751,7 @@ static size_t json_read(void *buf, size_t n, void *arg)
 int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
                         tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     const rctx c = {.path = path, .diag = diag};
     json_error_t err;

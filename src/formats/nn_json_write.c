@@ -10,6 +10,7 @@
 #include "formats/nn_json_impl.h"
 #include "tirenv/outfile.h"
 #include "tirenv/nn_file.h"
+#include "io/io.h"
 
 /* ---- Writing ---- */
 
@@ -264,6 +265,7 @@ static int check_finite(const tirenv_nn *nn, const tirenv_train_record *rec, tir
 int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
                          tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     /* An empty record, as the reader makes for a file without one, is none: written as such,
      * the file reads back ("trainer": "" would not). */
     if (rec && !rec->trainer[0])

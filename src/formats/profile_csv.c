@@ -28,6 +28,7 @@ static int read_csv(tirenv_profile_csv__reader *rd, const char *path, tirenv_pro
 
 int tirenv_profile_read_csv(const char *path, tirenv_profile **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_csv__reader rd; /* for its open's checks and messages */
     const int status = tirenv_csv__open(&rd, path, diag);

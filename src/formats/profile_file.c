@@ -12,6 +12,7 @@
 #include "tirenv/numtext.h"
 #include "tirenv/outfile.h"
 #include "tirenv/profile_csv.h"
+#include "io/io.h"
 
 static const char *const format_names[] = {"csv", "crg", "rdf"};
 
@@ -82,6 +83,7 @@ int tirenv_profile_format_of_name(const char *path, tirenv_profile_format *f)
 int tirenv_profile_write_csv(const char *path, const tirenv_profile *p, const char *comment,
                              tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     tirenv_outfile *f;
     const int status = tirenv_outfile_open(&f, path, diag);
     if (status)
@@ -111,6 +113,7 @@ tirenv_profile_write_options tirenv_profile_write_default(void)
 int tirenv_profile_write_file(const char *path, const tirenv_profile *p,
                               const tirenv_profile_write_options *o, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     const tirenv_profile_write_options def = tirenv_profile_write_default();
     if (!o)
         o = &def;

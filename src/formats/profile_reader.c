@@ -11,6 +11,7 @@
 #include "formats/crg_impl.h"
 #include "formats/profile_csv_impl.h"
 #include "formats/road_file_impl.h"
+#include "io/io.h"
 
 static tirenv_profile_source source_or_default(const tirenv_profile_source *src)
 {
@@ -44,6 +45,7 @@ static int read_2d(tirenv_road_file *f, tirenv_rdf_side side, tirenv_profile **o
 int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
                           const double v[], tirenv_profile *out[], tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     const char *path = tirenv_road_file_name(f);
     for (size_t k = 0; k < n; ++k)
         out[k] = NULL;
@@ -77,6 +79,7 @@ int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src,
 int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *src, size_t n,
                                const double v[], tirenv_profile *out[], tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     for (size_t k = 0; k < n; ++k)
         out[k] = NULL;
     tirenv_road_file *f;
@@ -90,6 +93,7 @@ int tirenv_profile_read_tracks(const char *path, const tirenv_profile_source *sr
 int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
                              tirenv_profile **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_profile_read_tracks(path, src, 1, NULL, out, diag);
 }
 
@@ -125,6 +129,7 @@ int tirenv_road_file_reader(tirenv_road_file *f, const tirenv_profile_source *sr
                             const double v[], tirenv_profile_file_reader **out,
                             tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     const char *path = tirenv_road_file_name(f);
     if (n == 0)
@@ -164,6 +169,7 @@ int tirenv_profile_file_reader_open(const char *path, const tirenv_profile_sourc
                                     size_t n, const double v[],
                                     tirenv_profile_file_reader **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_road_file *f;
     int status = tirenv_road_file_open(path, &f, diag);
@@ -261,6 +267,7 @@ int tirenv_road_file_extent(tirenv_road_file *f, const tirenv_profile_source *sr
 int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, double z[],
                                     int *got, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *got = 0;
     int status = TIRENV_OK;
     switch (r->format) {
@@ -281,6 +288,7 @@ int tirenv_profile_file_reader_next(tirenv_profile_file_reader *r, double *x, do
 int tirenv_profile_file_reader_source(void *reader, double *x, double z[], int *got,
                                       tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_profile_file_reader_next(reader, x, z, got, diag);
 }
 

@@ -852,6 +852,7 @@ static int read_source(const tirenv_source *src, tirenv_rdf_side side, tirenv_pr
 int tirenv_rdf_read(const char *path, tirenv_rdf_side side, tirenv_profile **out,
                     tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_source src;
     int status = tirenv_source__open_file(&src, path, diag);
@@ -865,6 +866,7 @@ int tirenv_rdf_read(const char *path, tirenv_rdf_side side, tirenv_profile **out
 int tirenv_rdf_read_memory(const void *data, size_t size, const char *name,
                            tirenv_rdf_side side, tirenv_profile **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_source src;
     int status = tirenv_source__open_memory(&src, data, size, name, diag);

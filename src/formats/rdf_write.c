@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/io.h"
 
 static void comment_lines(FILE *fp, const char *comment)
 {
@@ -21,6 +22,7 @@ static void comment_lines(FILE *fp, const char *comment)
 int tirenv_rdf_write(const char *path, const tirenv_profile *left, const tirenv_profile *right,
                      const char *comment, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (!left)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "no profile to write");
     if (!right)

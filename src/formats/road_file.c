@@ -23,6 +23,7 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
+#include "io/io.h"
 
 struct tirenv_road_file {
     char *name;                   /* the path, for messages */
@@ -242,6 +243,7 @@ static int detect(tirenv_road_file *f, tirenv_diag *diag)
 
 int tirenv_road_file_open(const char *path, tirenv_road_file **out, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_road_file *f = calloc(1, sizeof *f);
     const size_t len = strlen(path) + 1;

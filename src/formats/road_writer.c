@@ -15,6 +15,7 @@
 #include "tirenv/crg.h"
 #include "tirenv/profile_file.h"
 #include "tirenv/rdf.h"
+#include "io/io.h"
 
 struct tirenv_road_writer {
     tirenv_profile_format format;
@@ -83,6 +84,7 @@ int tirenv_road_writer_open(const char *path, tirenv_profile_format f,
                             const tirenv_road_writer_layout *l, tirenv_road_writer **out,
                             tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = NULL;
     tirenv_road_writer_layout placed;
     if (f == TIRENV_PROFILE_CRG && l->on_crg) {
@@ -132,6 +134,7 @@ int tirenv_road_writer_open(const char *path, tirenv_profile_format f,
 
 int tirenv_road_writer_add(tirenv_road_writer *w, double x, double h, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (w->added == w->n)
         return tirenv_error(diag, TIRENV_EINVAL, w->path, 0, "",
                             "more than the %zu positions announced", w->n);
@@ -150,6 +153,7 @@ int tirenv_road_writer_add(tirenv_road_writer *w, double x, double h, tirenv_dia
 
 int tirenv_road_writer_commit(tirenv_road_writer *w, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     int status = TIRENV_OK;
     if (w->added != w->n) {
         status = tirenv_error(diag, TIRENV_EINVAL, w->path, 0, "",

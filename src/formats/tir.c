@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include "io/io.h"
 
 /* The engine stores a NAME as an int. */
 _Static_assert(sizeof(tirenv_eq_method) == sizeof(int), "tirenv_eq_method must be int-sized");
@@ -206,6 +207,7 @@ static const tirenv_propfile__schema tir_schema = {
  * check), not given the tractor's 1.2 bar. */
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_tir__read_kept(path, tire, NULL, NULL, diag);
 }
 
@@ -235,6 +237,7 @@ int tirenv_tir__read_kept(const char *path, tirenv_tire *tire, char **text, size
 /* "KEY=VALUE" or "SECTION.KEY=VALUE", for the keys that set a parameter (not [UNITS]). */
 int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_propfile__set(&tir_schema, tire, assignment, diag);
 }
 
@@ -246,6 +249,7 @@ const char *tirenv_tir_key(size_t i, const char **section)
 int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
                    tirenv_tir_kind *kind, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     tirenv_propfile__kind k = TIRENV_PROPFILE_REAL;
     if (buf && n)
         buf[0] = '\0';  /* a refusal leaves no text a caller might take for the value */
@@ -262,6 +266,7 @@ int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n
 /* A tire that fails tirenv_tire_check is refused: its file could not be read back. */
 int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_propfile__write(&tir_schema, path, tire, diag);
 }
 
@@ -270,6 +275,7 @@ int tirenv_tir_write(const char *path, const tirenv_tire *tire, tirenv_diag *dia
 int tirenv_tir_write_noted(const char *path, const tirenv_tire *tire, const char *note,
                            tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     char header[2048];
     size_t n = (size_t)snprintf(header, sizeof header,
                                 "[MDI_HEADER]\n"

@@ -21,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/io.h"
 
 /* What the derivation reads. The enveloping keys are there only to learn whether the file
  * has each section (their values are tirenv_tir_read's). */
@@ -1452,6 +1453,7 @@ static int derive(const char *path, const char *text, size_t len, tirenv_tire *t
 int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
                       tirenv_tir_origin *origin, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     const tirenv_tire read = *tire;
     const int status = derive(path, NULL, 0, tire, need, origin, diag);
     if (status)
@@ -1464,6 +1466,7 @@ int tirenv_tir_derive(const char *path, tirenv_tire *tire, unsigned need,
 int tirenv_tir_read_derive(const char *path, tirenv_tire *tire, unsigned need,
                            tirenv_tir_origin *origin, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     tirenv_tire t = *tire;
     char *text = NULL;
     size_t len = 0;

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include "io/io.h"
 
 static const char begin_mark[] = "! tirenv identify: begin";
 static const char end_mark[] = "! tirenv identify: end";
@@ -128,6 +129,7 @@ static void put_note(FILE *fp, const char *note, const char *eol)
 int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
                       const char *note, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     enum { MAX = 64 };
     if (n > MAX)
         return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "more than %d values", MAX);

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "io/io.h"
 
 #define VEH_REAL(sec, name, member, text)                                                      \
     TIRENV_PROPFILE_KEY(tirenv_vehicle, sec, name, TIRENV_PROPFILE_REAL, member, text)
@@ -84,6 +85,7 @@ static const tirenv_propfile__schema veh_schema = {
  * old tire's. */
 int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (!v)
         return tirenv_propfile__read(&veh_schema, path, v, diag);
     const tirenv_axle front = v->front, rear = v->rear;
@@ -99,10 +101,12 @@ int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag)
 
 int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_propfile__set(&veh_schema, v, assignment, diag);
 }
 
 int tirenv_vehicle_write(const char *path, const tirenv_vehicle *v, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_propfile__write(&veh_schema, path, v, diag);
 }

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "io/fmt.h"
+#include "io/io.h"
 #include "io/fmt_pow10.h"
 
 __extension__ typedef unsigned __int128 fmt_u128;
@@ -216,6 +217,7 @@ size_t tirenv_fmt_g(double x, int precision, char *buf)
     size_t len;
     if (isfinite(x) && fmt_fast(x, precision, buf, &len))
         return len;
+    TIRENV_NUMERIC_C(); /* '.' as the fast path writes it, whatever the host's locale */
     const int n = snprintf(buf, TIRENV_FMT_G_SIZE, "%.*g", precision, x);
     return n > 0 ? (size_t)n : 0;
 }

@@ -8,6 +8,8 @@
  * this: its own headers, the public ones, and the interface header <module>/<module>.h of a
  * module before it.
  *
+ *   - the "C" locale for the public entries that read or write numbers as text, whatever
+ *     the host's LC_NUMERIC (TIRENV_NUMERIC_C);
  *   - a bounded text line of a FILE (tirenv_text__getline), for the readers that took
  *     getline's unbounded lines (csv_line.c, formats' propfile.c);
  *   - the bytes a road-file reader parses, from a file read where asked or a caller's buffer
@@ -19,10 +21,22 @@
 #ifndef TIRENV_IO_IO_H
 #define TIRENV_IO_IO_H
 
+#include <locale.h>
 #include <stddef.h>
 #include <stdio.h>
 
 #include "tirenv/error.h"
+
+/* ---- numbers with '.' whatever the host's locale (c_numeric.c) ------------------------- */
+/* The "C" locale on this thread from here to the end of the enclosing block (the end of a
+ * public entry that reads or writes numbers as text), the host's restored then, on every
+ * return path; blocks nest. */
+#define TIRENV_NUMERIC_C()                                                                     \
+    locale_t tirenv_numeric__before                                                            \
+        __attribute__((cleanup(tirenv_numeric__leave), unused)) = tirenv_numeric__enter()
+/* Its two halves: the thread's locale before (to restore), and the restore. */
+locale_t tirenv_numeric__enter(void);
+void tirenv_numeric__leave(locale_t *before);
 
 /* ---- one line of a text file, with a length cap (text_line.c) -------------------------- */
 /* getline grows its buffer without limit (/dev/zero as a file is one endless line) and

@@ -7,11 +7,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/io.h"
 
 /* Reading back is monotonic in the precision (more correctly rounded digits stay within half
  * an ulp), so the shortest one is found by bisection: 4 or 5 tries instead of up to 17. */
 size_t tirenv_fmt_shortest(double v, char *buf)
 {
+    TIRENV_NUMERIC_C();
     int lo = 1, hi = 17;
     while (lo < hi) {
         const int mid = (lo + hi) / 2;

@@ -2,6 +2,7 @@
 /* A forward speed as people write it (tirenv_ride_speed_parse): what 'tirenv ride --speed'
  * and the Python module's ride(speed="10km/h") both take. */
 #include <errno.h>
+#include <locale.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,10 +25,20 @@ int tirenv_ride_speed_parse(const char *text, double *v, tirenv_diag *diag)
     } else if (n > 3 && strcmp(buf + n - 3, "m/s") == 0) {
         buf[n - 3] = '\0';
     }
+    /* '.' whatever the host's LC_NUMERIC (a comma locale read "2.5" as 2 and refused the
+     * rest): strtod in the "C" locale, made for the call (a rare one; the auxiliary layer's
+     * readers keep one, io/c_numeric.c, which the core cannot call). */
+    const locale_t c = newlocale(LC_NUMERIC_MASK, "C", (locale_t)0);
+    const locale_t before = c ? uselocale(c) : (locale_t)0;
     char *end;
     errno = 0;
     const double d = strtod(buf, &end);
-    if (end == buf || *end != '\0' || errno == ERANGE || !isfinite(d) || !(d > 0))
+    const int range = errno == ERANGE;
+    if (c) {
+        uselocale(before);
+        freelocale(c);
+    }
+    if (end == buf || *end != '\0' || range || !isfinite(d) || !(d > 0))
         goto bad;
     *v = d * scale;
     return TIRENV_OK;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "rig/rig_impl.h"
+#include "io/io.h"
 
 /* Below this there cannot be flat ground on both sides of a bump and a bump to fit; the
  * real limits (flat samples on each side, samples per smoothing window) are checked later,
@@ -319,6 +320,7 @@ static void diag_to_file(tirenv_diag *diag, const char *path,
 int tirenv_rig_import_file(const char *path, const tirenv_import_settings *s,
                            tirenv_curve *out, tirenv_import_info *info, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     *out = (tirenv_curve){0};
     if (info)
         *info = (tirenv_import_info){0};
@@ -341,5 +343,6 @@ int tirenv_rig_import_file(const char *path, const tirenv_import_settings *s,
 int tirenv_rig_import(const char *path, const tirenv_import_settings *s, tirenv_curve *out,
                       tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     return tirenv_rig_import_file(path, s, out, NULL, diag);
 }

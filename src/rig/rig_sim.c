@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include "tirenv/rng.h"
 #include "tirenv/outfile.h"
+#include "io/io.h"
 
 tirenv_rig_settings tirenv_rig_default(void)
 {
@@ -129,6 +130,7 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
 int tirenv_rig_write_log(const char *path, const tirenv_rig_log *log, const char *comment,
                          tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     tirenv_outfile *f;
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <limits.h>
 #include <cminpack.h>
+#include "io/io.h"
 
 tirenv_fit_settings tirenv_fit_default(void)
 {
@@ -174,6 +175,7 @@ static void fit_free(fit_ctx *c, double *x, double *f, double *J, double *work, 
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     const double t0 = tirenv_study__wall_seconds();
     const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
     size_t n_params, n_params_max;

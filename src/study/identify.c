@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/io.h"
 
 enum { MAX_LOADS = 64, MAX_REFS = 4 };
 
@@ -254,6 +255,7 @@ int tirenv_contact_law_of_data(const tirenv_dataset *ds, const tirenv_model_type
                                const tirenv_tire *tire, tirenv_contact_law *law, char *what,
                                size_t n, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     double G_min = INFINITY, G_max = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
     size_t m = 0;
     for (size_t i = 0; i < ds->n; i++) {

@@ -10,6 +10,7 @@
 
 #include "study/compare_impl.h"
 #include "study/plot.h"
+#include "io/io.h"
 
 static const tirenv_case *case_of(const tirenv_dataset *ds, const tirenv_compare_result *r,
                                   size_t i)
@@ -302,6 +303,7 @@ static void findings(FILE *fp, const tirenv_dataset *ds, const tirenv_compare_se
 int tirenv_compare_report(const tirenv_dataset *ds, const tirenv_compare_settings *s,
                           const tirenv_compare_result *r, const char *notes, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (!r->entry || r->n_cases == 0 || r->n_models == 0)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "",
                             "no comparison to report (tirenv_compare did not complete)");

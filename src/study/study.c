@@ -14,6 +14,7 @@
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "tirenv/nn_file.h"
+#include "io/io.h"
 
 tirenv_study_settings tirenv_study_default(void)
 {
@@ -792,6 +793,7 @@ static int study_into(const tirenv_study_settings *s, tirenv_diag *diag)
  * leaves the previous report as it was, and no empty directory. */
 int tirenv_study(const tirenv_study_settings *s, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     tirenv_outdir *out;
     int status = tirenv_outdir_begin(s->out_dir, &out, diag);
     if (status)

@@ -12,6 +12,7 @@
 #include <strings.h>
 #include "tirenv/outfile.h"
 #include "tirenv/tir.h"
+#include "io/io.h"
 
 tirenv_sweep_settings tirenv_sweep_default(void)
 {
@@ -197,6 +198,7 @@ static int check_list(const char *name, const double v[], size_t n, double hi, i
 int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
                        tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (!s->type)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "model", "no model type");
     if ((tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK) && !s->network)

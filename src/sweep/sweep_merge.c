@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "tirenv/outfile.h"
+#include "io/io.h"
 
 enum { SPEC_MAX = 1 << 20 };
 
@@ -246,6 +247,7 @@ static int merge_into(const char *stage, const part *parts, size_t n, size_t m,
 int tirenv_sweep_merge(const char *dir, size_t n, const char *const parts_dir[],
                        tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     if (n == 0 || !parts_dir)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "parts", "no shard to merge");
     if (!dir || !dir[0] || strlen(dir) > 900)

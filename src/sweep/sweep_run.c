@@ -21,6 +21,7 @@
 #include "tirenv/tir.h"
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
+#include "io/io.h"
 
 enum { SPEC_MAX = 1 << 20, TIRE_MAX = 1 << 20 };
 
@@ -701,6 +702,7 @@ static void run_free(sweep_run *r)
 int tirenv_sweep_run(const char *dir, const tirenv_tire *tire, const tirenv_sweep_settings *s,
                      tirenv_sweep_report *report, tirenv_diag *diag)
 {
+    TIRENV_NUMERIC_C();
     tirenv_sweep_report rep = {0};
     if (report)
         *report = rep;
