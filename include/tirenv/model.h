@@ -147,8 +147,10 @@ int tirenv_model_set_contact_law(tirenv_model *m, const tirenv_contact_law *law,
  * models have no trained range and ignore it. */
 void tirenv_model_set_extrapolate(tirenv_model *m, int allow);
 
-/* Flat-ground state at load G (N). TIRENV_ENOBRACKET if the tire cannot carry G;
- * TIRENV_ERANGE beyond the model's valid load range (docs/models.md section 1.3). */
+/* Flat-ground state at load G (N). TIRENV_EINVAL unless G is finite and above the tire's
+ * force tolerance FORCE_TOLERANCE (an equilibrium cannot tell a smaller load from none);
+ * TIRENV_ENOBRACKET if the tire cannot carry G; TIRENV_ERANGE beyond the model's valid load
+ * range (docs/models.md section 1.3). */
 int tirenv_model_flat(tirenv_model *m, double load, tirenv_flat *out, tirenv_diag *diag);
 
 /* The flat-ground state with the centre at height z (m) above the ground, from one force

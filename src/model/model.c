@@ -185,13 +185,19 @@ const char *tirenv_model_note(const tirenv_model *m)
                                                           : "";
 }
 
-/* The loads a model takes, wherever a load comes in (flat, set, set_load). */
+/* The loads a model takes, wherever a load comes in (flat, set, set_load): positive and
+ * finite, and above the equilibrium's force tolerance FORCE_TOLERANCE. Within it of none the
+ * springs model's flat ground "converged" with F_z 1.1e-5 N at a load of 1e-319 N, and the
+ * cam's tandem base underflowed to 0 m (its slope NaN). */
 static int load_ok(const tirenv_model *m, double load, tirenv_diag *diag)
 {
-    (void)m;
     if (!(load > 0) || isinf(load))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
                             "must be a positive finite force in N, got %g", load);
+    if (!(load > m->tire.eq.eps_F))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "load",
+                            "%g N is within the force tolerance FORCE_TOLERANCE (%g N) of no "
+                            "load: no equilibrium tells the two apart", load, m->tire.eq.eps_F);
     return TIRENV_OK;
 }
 

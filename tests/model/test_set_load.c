@@ -242,6 +242,14 @@ static void test_set_load_errors(void **state)
             assert_near(after.z, before.z, 5e-10, 0);
         assert_int_equal(tirenv_model_set(m, cleat, INFINITY, &d), TIRENV_EINVAL);
         assert_string_equal(d.field, "load");
+        /* A load within the force tolerance of none: the springs model "converged" with F_z
+         * 1.1e-5 N at 1e-319 N, and the cam's tandem base was 0 m (its slope NaN), status
+         * OK. Just above the tolerance, taken. */
+        const double eps_F = tirenv_model_tire(m)->eq.eps_F;
+        assert_int_equal(tirenv_model_set(m, cleat, 1e-319, &d), TIRENV_EINVAL);
+        assert_string_equal(d.field, "load");
+        assert_int_equal(tirenv_model_flat(m, eps_F, &flat, &d), TIRENV_EINVAL);
+        assert_int_equal(tirenv_model_set(m, cleat, 2 * eps_F, &d), TIRENV_OK);
         tirenv_model_free(m);
     }
     tirenv_profile_free(cleat);
