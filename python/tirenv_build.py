@@ -104,6 +104,14 @@ typedef struct { tirenv_crg_track_spec crg; tirenv_rdf_side rdf_side; ...; }
 tirenv_profile_source tirenv_profile_source_default(void);
 int tirenv_profile_read_file(const char *path, const tirenv_profile_source *src,
                              tirenv_profile **out, tirenv_diag *diag);
+typedef enum { TIRENV_PROFILE_CSV = 0, TIRENV_PROFILE_CRG, TIRENV_PROFILE_RDF }
+    tirenv_profile_format;
+typedef struct tirenv_road_file tirenv_road_file;
+int tirenv_road_file_open(const char *path, tirenv_road_file **out, tirenv_diag *diag);
+tirenv_profile_format tirenv_road_file_format(const tirenv_road_file *f);
+void tirenv_road_file_free(tirenv_road_file *f);
+int tirenv_road_file_read(tirenv_road_file *f, const tirenv_profile_source *src, size_t n,
+                          const double v[], tirenv_profile *out[], tirenv_diag *diag);
 
 /* road.h */
 typedef struct {

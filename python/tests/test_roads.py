@@ -42,6 +42,22 @@ def test_read_rdf_sides(source_dir):
         tirenv.Profile.read(road, side="middle")
 
 
+def test_read_refuses_what_selects_nothing(source_dir, tmp_path):
+    # As the CLI's --track and --side: a track of a road that is the same on every track, or a
+    # side of a road that has none, was taken without a word.
+    crg = os.path.join(samples(source_dir), "crg", "halfround_6in.crg")
+    rdf = os.path.join(samples(source_dir), "rdf", "plateau.rdf")
+    csv = tmp_path / "r.csv"
+    csv.write_text("x_m,z_m\n0,0\n1,0.01\n")
+    for path, kw, says in ((csv, {"track": 3.0}, "track applies to an OpenCRG road"),
+                           (rdf, {"track": 0.0}, "track applies to an OpenCRG road"),
+                           (crg, {"side": "left"}, "side applies to an RDF road"),
+                           (csv, {"side": "mean"}, "side applies to an RDF road")):
+        with pytest.raises(tirenv.TirenvError, match=says):
+            tirenv.Profile.read(path, **kw)
+    assert len(tirenv.Profile.read(csv)) == 2
+
+
 def test_tracks_equal_the_cli(cli, source_dir, tmp_path):
     road = os.path.join(samples(source_dir), "crg", "handmade_curved.crg")
     v = tirenv.track_positions(3, 0.2, 0.38)

@@ -102,25 +102,39 @@ class Profile:
         return cls._from(out[0], "no road")
 
     @classmethod
-    def read(cls, path, track=0.0, side="mean"):
+    def read(cls, path, track=None, side=None):
         """A profile from a road file the CLI reads (--profile FILE), its format told by its
         content: CSV "x_m,z_m", an OpenCRG road (.crg) or a TNO/Adams 2-D road (.rdf). track
-        is the lateral position (m, positive to the left) on an OpenCRG road, which varies
-        across (--track); side is "left", "right" or "mean" of an RDF poly_line road's two
-        sides (--side). A CSV road is 2-D, the same on every track."""
-        if not math.isfinite(track):
-            raise invalid(f"expected a finite lateral position, got {track}", "track")
+        is the lateral position (m, positive to the left; default 0) on an OpenCRG road,
+        which varies across (--track); side is "left", "right" or "mean" (the default) of an
+        RDF poly_line road's two sides (--side). A CSV road is 2-D, the same on every track.
+        As the CLI, track is refused for a road that is not OpenCRG and side for one that is
+        not RDF: they would select nothing."""
         src = ffi.new("tirenv_profile_source *")
         src[0] = lib.tirenv_profile_source_default()
-        src.crg.v = track
-        side_c = ffi.new("tirenv_rdf_side *")
-        if not isinstance(side, str) or lib.tirenv_rdf_side_find(side.encode(), side_c):
-            raise invalid(f"expected left, right or mean, got {side!r}", "side")
-        src.rdf_side = side_c[0]
-        out = ffi.new("tirenv_profile **")
-        diag = new_diag()
+        if track is not None:
+            if not math.isfinite(track):
+                raise invalid(f"expected a finite lateral position, got {track}", "track")
+            src.crg.v = track
+        if side is not None:
+            side_c = ffi.new("tirenv_rdf_side *")
+            if not isinstance(side, str) or lib.tirenv_rdf_side_find(side.encode(), side_c):
+                raise invalid(f"expected left, right or mean, got {side!r}", "side")
+            src.rdf_side = side_c[0]
+        f, out, diag = ffi.new("tirenv_road_file **"), ffi.new("tirenv_profile *[1]"), new_diag()
         # the library's one road reader: the file opened once, its format told once
-        check(lib.tirenv_profile_read_file(path_bytes(path), src, out, diag), diag)
+        check(lib.tirenv_road_file_open(path_bytes(path), f, diag), diag)
+        try:
+            fmt = lib.tirenv_road_file_format(f[0])
+            kind = {lib.TIRENV_PROFILE_CRG: "an OpenCRG road", lib.TIRENV_PROFILE_RDF:
+                    "an RDF road"}.get(fmt, "a CSV profile")
+            if track is not None and fmt != lib.TIRENV_PROFILE_CRG:
+                raise invalid(f"track applies to an OpenCRG road; {path} is {kind}", "track")
+            if side is not None and fmt != lib.TIRENV_PROFILE_RDF:
+                raise invalid(f"side applies to an RDF road; {path} is {kind}", "side")
+            check(lib.tirenv_road_file_read(f[0], src, 1, ffi.NULL, out, diag), diag)
+        finally:
+            lib.tirenv_road_file_free(f[0])
         return cls._from(out[0], "no profile")
 
     # --- what it holds ---------------------------------------------------------------------
