@@ -360,6 +360,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     f->logging = loggingOn != fmi2False;
     f->mode = FMU_INSTANTIATED;
     f->v = fmu__start_values();
+    f->stop_time = NAN;
     fmu__log(f, fmi2OK, "logAll", "instantiated, resources in %s", f->resources);
     return f;
 }
@@ -402,6 +403,7 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
         return fmu__fail(f, "fmi2SetupExperiment: stop time %g s: expected a finite time >= "
                          "the start time %.17g s", stopTime, startTime);
     f->v.time = startTime;
+    f->stop_time = stopTimeDefined ? stopTime : NAN;
     return fmi2OK;
 }
 
@@ -451,6 +453,7 @@ fmi2Status fmi2Reset(fmi2Component c)
         return fmi2Error;
     fmu__teardown(f);
     f->v = fmu__start_values();
+    f->stop_time = NAN;
     f->mode = FMU_INSTANTIATED;
     return fmi2OK;
 }
@@ -664,6 +667,13 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
     if (!(fabs(currentCommunicationPoint - t) <= 1e-9 * fmax(1, fabs(t))))
         return fmu__fail(f, "fmi2DoStep: the communication point %.17g s is not the FMU's time "
                          "%.17g s (restore an FMU state to go back)", currentCommunicationPoint, t);
+    /* FMI 2.0 (4.2.1): with a stop time defined the master must not step beyond it, and the
+     * FMU may refuse, as the Reference FMUs do; the same round-off allowance as above. */
+    const double end = currentCommunicationPoint + communicationStepSize, stop = f->stop_time;
+    if (end > stop + 1e-9 * fmax(1, fabs(stop)))
+        return fmu__fail(f, "fmi2DoStep: the step from %.17g s by %.17g s ends past the stop "
+                         "time %.17g s of fmi2SetupExperiment", currentCommunicationPoint,
+                         communicationStepSize, stop);
     /* A static map: the outputs at the end of the step are the equilibrium at the inputs
      * as they stand (set before this call). */
     if (outputs_current(f) != fmi2OK) {

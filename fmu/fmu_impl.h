@@ -66,6 +66,7 @@ typedef struct {
     tirenv_profile *road;
     tirenv_model *m;
     int warned;  /* the model's warnings since its last set are logged (a cam's step) */
+    double stop_time;  /* s: fmi2SetupExperiment's stop time, NAN where it defined none */
 } fmu_instance;
 
 /* ---- the variables (variables.c) ---- */

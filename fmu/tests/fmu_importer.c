@@ -313,6 +313,25 @@ static void test_state_untrusted(fmi2Component d, const fmi2Byte *bytes, size_t 
     check(api.setup(c, fmi2True, 1e-6, 0, fmi2True, 10) == fmi2OK,
           "and the instance takes a proper experiment after them");
     api.free_instance(c);
+
+    /* A stop time defined: a step that ends past it is refused (FMI 2.0 section 4.2.1 lets
+     * the FMU, and the Reference FMUs do), one that ends on it is taken; the instance stays
+     * in step mode. */
+    fmi2Component e = api.instantiate("stop", fmi2CoSimulation, guid, resources, &cb,
+                                      fmi2False, fmi2False);
+    const fmi2ValueReference m_vr = VR_MODEL;
+    const fmi2String rigid = "rigid";
+    check(e && api.setup(e, fmi2False, 0, 0, fmi2True, 2e-3) == fmi2OK &&
+              api.set_string(e, &m_vr, 1, &rigid) == fmi2OK && api.enter_init(e) == fmi2OK &&
+              api.exit_init(e) == fmi2OK && api.do_step(e, 0, 1e-3, fmi2False) == fmi2OK &&
+              api.do_step(e, 1e-3, 1e-3, fmi2False) == fmi2OK,
+          "with a stop time of 2 ms, two steps of 1 ms: fmi2OK");
+    n_logs = 0;
+    check(api.do_step(e, 2e-3, 1e-3, fmi2False) == fmi2Error && logged("stop time"),
+          "a third step, past the stop time: fmi2Error, logged (%s)", last_log);
+    check(api.get_real(e, &t_vr, 1, &t) == fmi2OK && isfinite(t),
+          "and the instance is still in step mode, its outputs readable");
+    api.free_instance(e);
     api.free_instance(NULL);
     check(1, "fmi2FreeInstance(NULL) returns");
 }
