@@ -10,6 +10,7 @@
 
 #include "cli/csv_row.h"
 #include "cli/envelope.h"
+#include "cli/envelope_plot.h"
 #include "cli/envelope_chunks.h"
 #include "cli/envelope_stream.h"
 #include "cli/level.h"
@@ -25,7 +26,7 @@ static void usage(FILE *fp)
           "                       [-o FILE.csv|FILE.crg|FILE.rdf] [--crg-encoding E]\n"
           "                       [--relative-to ground|datum] [--nn FILE [--extrapolate]]\n"
           "                       [--detail] [--tire FILE] [--set KEY=VALUE]...\n"
-          "                       [--method M] [--jobs N]\n"
+          "                       [--method M] [--jobs N] [--plot FILE.png]\n"
           "\n"
           "The enveloping curve h(x) = z(x) - z_flat of the tire over an obstacle at constant\n"
           "vertical load, one CSV row per centre position x:\n"
@@ -65,7 +66,11 @@ static void usage(FILE *fp)
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
-    fputs("  --detail             with --model ring: two more columns, tread_max_m (the\n"
+    fputs("  --plot FILE.png      with -o FILE.csv: draw the curve over the road under the\n"
+          "                       centre into FILE.png and FILE.svg, with FILE.gp, the\n"
+          "                       gnuplot script (rerun it to restyle), and FILE-road.dat;\n"
+          "                       one track, no --stream, h relative to the datum\n"
+          "  --detail             with --model ring: two more columns, tread_max_m (the\n"
           "                       largest tread compression) and belt_contacts (nodes where\n"
           "                       the belt itself touches the ground), from one more ring\n"
           "                       evaluation at each row's (x, z); one track, no --stream\n",
@@ -640,6 +645,14 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
         cli_warnings(r->cmd, cli_chunks_warnings(c));
     if (!status)
         summary(r->cmd, m, o, load, &t);
+    if (!status && r->e->plot) {
+        char title[1024];
+        snprintf(title, sizeof title, "tirenv envelope: %s model, load %.6g N, over %s",
+                 tirenv_model_type_name(r->type), load, r->label);
+        if ((status = cli_envelope_plot(r->e->plot, o->output, tirenv_model_type_name(r->type),
+                                        title, prof[0], s.x_from, s.x_to, &diag)))
+            code = cli_fail(status, &diag);
+    }
     cli_chunks_free(c);
     free(pt[0]);
     free(pt[1]);
@@ -658,6 +671,10 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
         missing = "--profile FILE with --stream";
     else if (e->detail && (type != tirenv_model_ring || e->stream))
         missing = "--model ring and no --stream with --detail";
+    else if (e->plot && (e->stream || !o->output || strcmp(o->output, "-") == 0 ||
+                         e->relative != CLI_RELATIVE_DATUM))
+        missing = "-o FILE.csv, no --stream and h relative to the datum with --plot (the plot "
+                  "reads the curve from the file, over the road held whole)";
     if (missing) {
         cli_error("%s: expected %s; 'tirenv %s --help' shows the options", cmd, missing, cmd);
         return CLI_EXIT_USAGE;
@@ -669,6 +686,18 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
     }
     run r = {.cmd = cmd, .o = o, .type = type, .e = e, .out_format = TIRENV_PROFILE_CSV};
     cli_road_out_wanted(o->output, &r.out_format);
+    if (e->plot && r.out_format != TIRENV_PROFILE_CSV) {
+        cli_error("%s: --plot draws the CSV curve; -o %s writes an effective road", cmd,
+                  o->output);
+        return CLI_EXIT_USAGE;
+    }
+    if (e->plot) {
+        tirenv_diag diag;
+        tirenv_diag_clear(&diag);
+        const int status = cli_envelope_plot_check(e->plot, &diag);
+        if (status)
+            return cli_fail(status, &diag);
+    }
     if (e->detail && r.out_format != TIRENV_PROFILE_CSV) {
         cli_error("%s: --detail adds columns to the CSV curve; -o %s writes an effective road",
                   cmd, o->output);
@@ -695,6 +724,10 @@ int cli_envelope_run(const char *cmd, const cli_options *o, const tirenv_model_t
         cli_error("%s: --detail is one ring's state on one track; not with --tracks", cmd);
         code = CLI_EXIT_USAGE;
     }
+    if (!code && e->plot && r.road.n > 1) {
+        cli_error("%s: --plot draws the curve over one track's road; not with --tracks", cmd);
+        code = CLI_EXIT_USAGE;
+    }
     cli_road_label(o, &r.road, r.label, sizeof r.label);
     if (!code && !e->stream)
         code = cli_road_read(o, &r.road, prof);
@@ -712,7 +745,9 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
 {
     *e = envelope_default();
     const cli_opt own[] = {
-        /* envelope's own first (the ring's --detail): predict's table starts after it */
+        /* envelope's own first (--plot, the ring's --detail): predict's table starts after
+         * them */
+        {.name = "plot", .kind = CLI_STRING, .dst = &e->plot},
         {.name = "detail", .kind = CLI_FLAG, .dst = &e->detail},
         {.name = "stream", .kind = CLI_FLAG, .dst = &e->stream},
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = e, .parse = parse_encoding},
@@ -721,7 +756,7 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
         {.name = NULL},
     };
     const cli_parser p = {.name = cmd, .usage = help,
-                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 1),
+                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 2),
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
                                     CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
                                     CLI_NETWORK | CLI_EXTRAPOLATE | CLI_JOBS};

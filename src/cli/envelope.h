@@ -14,6 +14,7 @@ typedef struct {
     tirenv_crg_encoding encoding;  /* -o X.crg: the effective road's encoding */
     int have_encoding;             /* --crg-encoding given (refused without -o X.crg) */
     cli_relative_to relative;      /* h relative to the datum or to the road's local level */
+    const char *plot;              /* --plot FILE.png (envelope's), or NULL */
 } cli_envelope_opts;
 
 /* Parses the options of tirenv CMD ("envelope", or "predict", which has no --stream and no
