@@ -217,99 +217,71 @@ static int draw(const char *dir, const char *base, const char *what, const char 
     return tirenv_plot_draw(dir, base, NULL, diag);
 }
 
-/* seat: the unweighted seat acceleration over the front axle's position. */
-static int seat_plot(const char *dir, const ride_options *r, const ride_series series[],
-                     double wheelbase, tirenv_diag *diag)
+/* The two figures over the front axle's position, one column per model: seat, the unweighted
+ * seat acceleration; seat-rms, the running r.m.s. of the Wk-weighted one (ISO 2631-1 6.3, tau =
+ * TIRENV_COMFORT_TAU), whose maximum is the run's MTVV: over a long road the unweighted trace
+ * of every model lies on the others', a 1 s mean tells them apart. */
+typedef enum { SEAT, SEAT_RMS } over_x;
+
+/* Model i's values of figure kind at the n samples of its run into v. */
+static int over_x_values(over_x kind, const ride_options *r, const ride_series *run, size_t n,
+                         double v[], tirenv_diag *diag)
 {
+    if (kind == SEAT_RMS)
+        return tirenv_comfort_running_rms(run->a_w, n, 1 / r->pp.dt, TIRENV_COMFORT_TAU, v,
+                                          diag);
+    for (size_t k = 0; k < n; ++k)
+        v[k] = run->samples[k].seat_az;
+    return TIRENV_OK;
+}
+
+static int over_x_plot(over_x kind, const char *dir, const ride_options *r,
+                       const ride_series series[], double wheelbase, tirenv_diag *diag)
+{
+    const char *base = kind == SEAT ? "seat" : "seat-rms";
     char path[1024];
     tirenv_outfile *f;
-    snprintf(path, sizeof path, "%s/seat.dat", dir);
+    snprintf(path, sizeof path, "%s/%s.dat", dir, base);
     int status = tirenv_outfile_open(&f, path, diag);
     if (status)
         return status;
     FILE *fp = tirenv_outfile_stream(f);
-    for (size_t j = 0; j < r->n_speeds; ++j) {
+    for (size_t j = 0; j < r->n_speeds && !status; ++j) {
         /* The runs at one speed share their length, so one x column serves every model. */
         const ride_series *row = &series[j * r->n_cols];
         const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
+        const size_t cells = r->n_cols * n;
+        double *v = malloc((cells > 0 ? cells : 1) * sizeof *v);
+        if (!v)
+            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+        for (size_t i = 0; i < r->n_cols && !status; ++i)
+            status = over_x_values(kind, r, &row[i], n, v + i * n, diag);
         char speed[32];
         ride_cli_speed_name(r->speeds[j], speed, sizeof speed);
-        fprintf(fp, "%s# %s km/h: x_front_m", j ? "\n\n" : "", speed);
-        for (size_t i = 0; i < r->n_cols; ++i)
-            fprintf(fp, " seat_az_%s_m_s2", r->cols[i].label);
-        fputc('\n', fp);
-        /* A row stands for `every` samples by the one of largest magnitude: every k-th sample
-         * alone aliased a road's oscillation and missed its peaks. */
-        for (size_t k = 0; k < n; k += every) {
+        if (!status)
+            fprintf(fp, "%s# %s km/h%s: x_front_m", j ? "\n\n" : "", speed,
+                    kind == SEAT ? "" : ", running r.m.s. over 1 s");
+        for (size_t i = 0; i < r->n_cols && !status; ++i)
+            fprintf(fp, kind == SEAT ? " seat_az_%s_m_s2" : " awz_rms_%s_m_s2",
+                    r->cols[i].label);
+        if (!status)
+            fputc('\n', fp);
+        /* A row stands for `every` samples by the one of largest magnitude (every k-th sample
+         * alone aliased a road's oscillation and missed its peaks): the plotted extremes are
+         * the run's, its peak_az and its MTVV. */
+        for (size_t k = 0; k < n && !status; k += every) {
             fprintf(fp, "%.6g", row[0].samples[k].x_front);
             for (size_t i = 0; i < r->n_cols; ++i) {
-                double a = row[i].samples[k].seat_az;
+                const double *vi = v + i * n;
+                double a = vi[k];
                 for (size_t m = k + 1; m < k + every && m < n; ++m)
-                    if (fabs(row[i].samples[m].seat_az) > fabs(a))
-                        a = row[i].samples[m].seat_az;
+                    if (fabs(vi[m]) > fabs(a))
+                        a = vi[m];
                 fprintf(fp, " %.6g", a);
             }
             fputc('\n', fp);
         }
-    }
-    if ((status = tirenv_outfile_commit(f, diag)))
-        return status;
-    char axes[200];
-    snprintf(axes, sizeof axes,
-             "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
-             "    set ylabel \"seat a_z (m/s²)\"\n"
-             "    set autoscale xfix\n", wheelbase);  /* the run's span, not the next tics' */
-    return draw(dir, "seat", "vertical acceleration at the seat over the front axle's position, "
-                "point contact against enveloping", "Seat vertical acceleration (unweighted)",
-                axes, r, diag);
-}
-
-/* seat-rms: the running r.m.s. of the Wk-weighted seat acceleration (ISO 2631-1 6.3, tau =
- * TIRENV_COMFORT_TAU), whose maximum is the run's MTVV. Over a long road the unweighted trace
- * of every model lies on the others' (seat.png); a 1 s mean tells them apart. Each row keeps
- * the largest value of the samples it stands for, so the plotted maximum is the MTVV. */
-static int seat_rms_plot(const char *dir, const ride_options *r, const ride_series series[],
-                         double wheelbase, tirenv_diag *diag)
-{
-    char path[1024];
-    tirenv_outfile *f;
-    snprintf(path, sizeof path, "%s/seat-rms.dat", dir);
-    int status = tirenv_outfile_open(&f, path, diag);
-    if (status)
-        return status;
-    FILE *fp = tirenv_outfile_stream(f);
-    const double fs = 1 / r->pp.dt;
-    for (size_t j = 0; j < r->n_speeds && !status; ++j) {
-        const ride_series *row = &series[j * r->n_cols];
-        const size_t n = row[0].n, every = (n + SEAT_MAX_POINTS - 1) / SEAT_MAX_POINTS;
-        double *rms = malloc(r->n_cols * n * sizeof *rms);
-        if (!rms) {
-            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-            break;
-        }
-        for (size_t i = 0; i < r->n_cols && !status; ++i)
-            status = tirenv_comfort_running_rms(row[i].a_w, n, fs, TIRENV_COMFORT_TAU,
-                                                rms + i * n, diag);
-        if (!status) {
-            char speed[32];
-            ride_cli_speed_name(r->speeds[j], speed, sizeof speed);
-            fprintf(fp, "%s# %s km/h, running r.m.s. over %g s: x_front_m", j ? "\n\n" : "",
-                    speed, TIRENV_COMFORT_TAU);
-            for (size_t i = 0; i < r->n_cols; ++i)
-                fprintf(fp, " awz_rms_%s_m_s2", r->cols[i].label);
-            fputc('\n', fp);
-            for (size_t k = 0; k < n; k += every) {
-                fprintf(fp, "%.6g", row[0].samples[k].x_front);
-                for (size_t i = 0; i < r->n_cols; ++i) {
-                    double v = 0;
-                    for (size_t m = k; m < k + every && m < n; ++m)
-                        v = fmax(v, rms[i * n + m]);
-                    fprintf(fp, " %.6g", v);
-                }
-                fputc('\n', fp);
-            }
-        }
-        free(rms);
+        free(v);
     }
     if (status) {
         tirenv_outfile_abort(f);
@@ -320,12 +292,17 @@ static int seat_rms_plot(const char *dir, const ride_options *r, const ride_seri
     char axes[300];
     snprintf(axes, sizeof axes,
              "    set xlabel \"front axle position (m); the rear axle follows %.2f m behind\"\n"
-             "    set ylabel \"running r.m.s. of a_wz (m/s²)\"\n"
-             "    set yrange [0:*]\n"
-             "    set autoscale xfix\n", wheelbase);
-    return draw(dir, "seat-rms", "running r.m.s. over 1 s of the Wk-weighted vertical "
-                "acceleration at the seat (ISO 2631-1 6.3; its maximum is the MTVV), point "
-                "contact against enveloping",
+             "    set ylabel \"%s\"\n%s"
+             "    set autoscale xfix\n", /* the run's span, not the next tics' */
+             wheelbase, kind == SEAT ? "seat a_z (m/s²)" : "running r.m.s. of a_wz (m/s²)",
+             kind == SEAT ? "" : "    set yrange [0:*]\n");
+    if (kind == SEAT)
+        return draw(dir, base, "vertical acceleration at the seat over the front axle's "
+                    "position, point contact against enveloping",
+                    "Seat vertical acceleration (unweighted)", axes, r, diag);
+    return draw(dir, base, "running r.m.s. over 1 s of the Wk-weighted vertical acceleration "
+                "at the seat (ISO 2631-1 6.3; its maximum is the MTVV), point contact against "
+                "enveloping",
                 "Seat vertical acceleration, running r.m.s. (Wk, 1 s; its maximum is the MTVV)",
                 axes, r, diag);
 }
@@ -443,9 +420,9 @@ int ride_cli_report(const ride_options *r, const ride_result res[], const ride_s
         status = write_md(path, r, res, v, given, tire_path, load, &diag);
     }
     if (!status)
-        status = seat_plot(r->out_dir, r, series, wheelbase, &diag);
+        status = over_x_plot(SEAT, r->out_dir, r, series, wheelbase, &diag);
     if (!status)
-        status = seat_rms_plot(r->out_dir, r, series, wheelbase, &diag);
+        status = over_x_plot(SEAT_RMS, r->out_dir, r, series, wheelbase, &diag);
     if (!status)
         status = spectrum_plot(r->out_dir, r, series, &diag);
     return status ? cli_fail(status, &diag) : CLI_EXIT_OK;
