@@ -24,6 +24,7 @@
  * SPDX-License-Identifier: Apache-2.0 */
 #include "tirenv/parallel.h"
 
+#include <locale.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -51,6 +52,7 @@ typedef struct {
     int status;           /* its status */
     tirenv_diag diag;     /* and its diag */
     size_t n_done;        /* items that succeeded */
+    locale_t locale;      /* the caller's thread's locale, which its items run in */
 } pool;
 
 typedef struct {
@@ -111,6 +113,9 @@ static void *thread_main(void *arg)
     const worker_arg *a = arg;
     pool *p = a->p;
     jobserver *js = p->js;
+    /* As the caller's share runs: a file a work item writes keeps the '.' the caller's entry
+     * chose for its numbers (the auxiliary layer's "C" locale), whatever the process's. */
+    uselocale(p->locale);
     tirenv_diag d;
     for (;;) {
         pthread_mutex_lock(&js->lock);
@@ -179,7 +184,7 @@ int tirenv_parallel_for(size_t n, size_t jobs, tirenv_parallel_fn fn,
         }
     }
     pool p = {.js = js, .n = n, .fn = fn, .done = done, .ctx = ctx, .next = 0, .failed = n,
-              .status = TIRENV_OK, .n_done = 0};
+              .status = TIRENV_OK, .n_done = 0, .locale = uselocale((locale_t)0)};
     tirenv_diag_clear(&p.diag);
     pthread_t *tid = malloc((threads - 1) * sizeof *tid);
     worker_arg *args = malloc((threads - 1) * sizeof *args);

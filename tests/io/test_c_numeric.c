@@ -6,7 +6,9 @@
  * it and check that the host's locale is the same afterwards. SPDX-License-Identifier:
  * Apache-2.0 */
 #include "testutil.h"
+#include "io/io.h"
 #include "tirenv/numtext.h"
+#include "tirenv/parallel.h"
 #include "tirenv/profile.h"
 #include "tirenv/profile_csv.h"
 #include "tirenv/profile_file.h"
@@ -21,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static const char comma_source[] =
     "comment_char %\nescape_char /\n"
@@ -149,12 +152,50 @@ static void test_vehicle_and_numbers(void **state)
     assert_host_comma();
 }
 
+/* A work item of tirenv_parallel_for: 0.5 as printf writes it here, and on which worker. */
+typedef struct {
+    char text[16][16];
+    size_t worker[16];
+} halves;
+
+static int write_half(void *ctx, size_t item, size_t worker, tirenv_diag *diag)
+{
+    (void)diag;
+    halves *h = ctx;
+    const struct timespec pause = {0, 2000000}; /* 2 ms: the other thread gets items too */
+    nanosleep(&pause, NULL);
+    snprintf(h->text[item], sizeof h->text[item], "%g", 0.5);
+    h->worker[item] = worker;
+    return TIRENV_OK;
+}
+
+/* The work items of an entry's tirenv_parallel_for (a sweep's cases, a study's comparisons)
+ * run in the entry's locale on every thread, not in the process's: a started thread took the
+ * global locale and wrote "0,5". */
+static void test_threads_keep_the_entry_locale(void **state)
+{
+    (void)state;
+    halves h = {{{0}}, {0}};
+    {
+        TIRENV_NUMERIC_C();
+        assert_int_equal(tirenv_parallel_for(16, 2, write_half, NULL, &h, NULL), TIRENV_OK);
+    }
+    size_t on_other = 0;
+    for (size_t i = 0; i < 16; ++i) {
+        assert_string_equal(h.text[i], "0.5");
+        on_other += h.worker[i] != 0;
+    }
+    assert_true(on_other > 0);
+    assert_host_comma();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_tire_file, setup, teardown),
         cmocka_unit_test_setup_teardown(test_roads, setup, teardown),
         cmocka_unit_test_setup_teardown(test_vehicle_and_numbers, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_threads_keep_the_entry_locale, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
