@@ -2,7 +2,6 @@
  * the centre, as a gnuplot script beside it and the PNG and SVG it draws.
  * SPDX-License-Identifier: Apache-2.0 */
 #include <limits.h>
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -85,7 +84,7 @@ static void write_road(FILE *fp, const tirenv_profile *p, double x_from, double 
     road_point(fp, x_to, tirenv_profile_height(p, x_to));
 }
 
-/* s in gnuplot's single quotes, each ' doubled. */
+/* s in gnuplot's single quotes, each ' doubled; and the same ending the line. */
 static void quoted(FILE *fp, const char *s)
 {
     fputc('\'', fp);
@@ -95,6 +94,12 @@ static void quoted(FILE *fp, const char *s)
         fputc(*s, fp);
     }
     fputc('\'', fp);
+}
+
+static void quoted_line(FILE *fp, const char *s)
+{
+    quoted(fp, s);
+    fputc('\n', fp);
 }
 
 int cli_envelope_plot_check(const char *file, tirenv_diag *diag)
@@ -130,17 +135,27 @@ int cli_envelope_plot(const char *file, const char *csv, const char *model, cons
         return status;
     FILE *fp = tirenv_outfile_stream(f);
     const tirenv_plot_style st = tirenv_plot_style_of(model, 0);
+    /* Names and the title in gnuplot's single quotes, where nothing but ' is special. */
     fprintf(fp, "# tirenv envelope --plot: the curve of %s over the road under the centre.\n"
-                "# Draw by hand from this directory with:  gnuplot %s.gp\n"
-                "if (!exists(\"png_out\")) png_out = '%s.png'\n"
-                "if (!exists(\"svg_out\")) svg_out = '%s.svg'\n"
-                "curve = ",
-            model, name, name, name);
-    quoted(fp, csv_abs);
-    fprintf(fp, "\nroad = '%s-road.dat'\n"
+                "# Draw by hand from this directory with:  gnuplot %s.gp\n",
+            model, name);
+    char png[PATH_MAX + 8], svg[PATH_MAX + 8], dat[PATH_MAX + 16];
+    snprintf(png, sizeof png, "%s.png", name);
+    snprintf(svg, sizeof svg, "%s.svg", name);
+    snprintf(dat, sizeof dat, "%s-road.dat", name);
+    fputs("if (!exists(\"png_out\")) png_out = ", fp);
+    quoted_line(fp, png);
+    fputs("if (!exists(\"svg_out\")) svg_out = ", fp);
+    quoted_line(fp, svg);
+    fputs("curve = ", fp);
+    quoted_line(fp, csv_abs);
+    fputs("road = ", fp);
+    quoted_line(fp, dat);
+    fputs("set title ", fp);
+    quoted(fp, title);
+    fprintf(fp, " noenhanced\n"
                 "set datafile separator ','\n"
                 "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key top left box opaque\n"
-                "set title \"%s\" noenhanced\n"
                 "set xlabel \"x, the wheel centre's position (m)\"\n"
                 "set ylabel \"height (mm)\"\n"
                 "set autoscale xfix\nset offsets 0, 0, graph 0.05, graph 0.05\n"
@@ -159,7 +174,7 @@ int cli_envelope_plot(const char *file, const char *csv, const char *model, cons
                 "dt %d title 'h, the effective road (%s)'\n"
                 "}\n"
                 "unset output\n",
-            name, title, st.colour, st.width, st.dash, model);
+            st.colour, st.width, st.dash, model);
     if ((status = tirenv_outfile_commit(f, diag)))
         return status;
     return tirenv_plot_draw(dir, name, NULL, diag);
