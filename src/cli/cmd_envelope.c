@@ -66,11 +66,7 @@ static void usage(FILE *fp)
           fp);
     cli_help_envelope_output(fp);
     cli_help_relative_to(fp);
-    fputs("  --plot FILE.png      with -o FILE.csv: draw the curve over the road under the\n"
-          "                       centre into FILE.png and FILE.svg, with FILE.gp, the\n"
-          "                       gnuplot script (rerun it to restyle), and FILE-road.dat;\n"
-          "                       one track, no --stream, h relative to the datum\n"
-          "  --detail             with --model ring: two more columns, tread_max_m (the\n"
+    fputs("  --detail             with --model ring: two more columns, tread_max_m (the\n"
           "                       largest tread compression) and belt_contacts (nodes where\n"
           "                       the belt itself touches the ground), from one more ring\n"
           "                       evaluation at each row's (x, z); one track, no --stream\n",
@@ -197,7 +193,11 @@ void cli_help_envelope_output(FILE *fp)
           "                       h at -w/2 and +w/2 across the width w) or a TNO/Adams\n"
           "                       poly_line road, for a point-contact tire in another tool\n"
           "  --crg-encoding E     FILE.crg: kdbi (default: binary doubles, exact), krbi,\n"
-          "                       ldfi or lrfi\n",
+          "                       ldfi or lrfi\n"
+          "  --plot FILE.png      with -o FILE.csv: draw the curve over the road under the\n"
+          "                       centre into FILE.png and FILE.svg, with FILE.gp, the\n"
+          "                       gnuplot script (rerun it to restyle), and FILE-road.dat;\n"
+          "                       one track, no --stream, h relative to the datum\n",
           fp);
 }
 
@@ -647,7 +647,7 @@ static int envelope_whole(const run *r, tirenv_model *m, double load,
         summary(r->cmd, m, o, load, &t);
     if (!status && r->e->plot) {
         char title[1024];
-        snprintf(title, sizeof title, "tirenv envelope: %s model, load %.6g N, over %s",
+        snprintf(title, sizeof title, "tirenv %s: %s model, load %.6g N, over %s", r->cmd,
                  tirenv_model_type_name(r->type), load, r->label);
         if ((status = cli_envelope_plot(r->e->plot, o->output, tirenv_model_type_name(r->type),
                                         title, prof[0], s.x_from, s.x_to, &diag)))
@@ -745,10 +745,9 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
 {
     *e = envelope_default();
     const cli_opt own[] = {
-        /* envelope's own first (--plot, the ring's --detail): predict's table starts after
-         * them */
-        {.name = "plot", .kind = CLI_STRING, .dst = &e->plot},
+        /* envelope's own first (the ring's --detail): predict's table starts after it */
         {.name = "detail", .kind = CLI_FLAG, .dst = &e->detail},
+        {.name = "plot", .kind = CLI_STRING, .dst = &e->plot},
         {.name = "stream", .kind = CLI_FLAG, .dst = &e->stream},
         {.name = "crg-encoding", .kind = CLI_CUSTOM, .dst = e, .parse = parse_encoding},
         {.name = "relative-to", .kind = CLI_CUSTOM, .dst = &e->relative,
@@ -756,7 +755,7 @@ int cli_envelope_parse(const char *cmd, void (*help)(FILE *fp), int argc, char *
         {.name = NULL},
     };
     const cli_parser p = {.name = cmd, .usage = help,
-                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 2),
+                          .opts = own + (strcmp(cmd, "envelope") == 0 ? 0 : 1),
                           .groups = CLI_TIRE | CLI_METHOD | CLI_LOAD | CLI_OBSTACLE |
                                     CLI_TRACKS | CLI_SWEEP | CLI_OUTPUT | CLI_MODEL |
                                     CLI_NETWORK | CLI_EXTRAPOLATE | CLI_JOBS};

@@ -15,7 +15,7 @@ static void usage(FILE *fp)
           "                      [-o FILE.csv|FILE.crg|FILE.rdf]\n"
           "                      [--crg-encoding E] [--relative-to ground|datum]\n"
           "                      [--tire FILE] [--set KEY=VALUE]... [--method M]\n"
-          "                      [--jobs N]\n"
+          "                      [--jobs N] [--plot FILE.png]\n"
           "\n"
           "The enveloping curve of the empirical model, the trained network of 'tirenv train'\n"
           "(paper, Tables 1 and 2), in the CSV of 'tirenv envelope':\n"
