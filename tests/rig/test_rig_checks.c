@@ -207,7 +207,8 @@ static void test_sparse_at_cap(void **state)
  * with room: evaluated again backwards, Newton starts elsewhere; measured 1.1e-16 m, the
  * springs model's own root landing on the same height), and what the import of a rig log
  * of the same model approaches: the imported curve within 0.5 mm RMS (the import's bound,
- * docs/models.md section 5.7; measured 0.065 mm). Refused: a grid of no point, a corner out of reach. */
+ * docs/models.md section 5.7; measured 0.065 mm). Refused: a grid of no point (a step of 0 or
+ * less, an end before the start), a corner out of reach. */
 static void test_model_curve(void **state)
 {
     rig_case *c = *state;
@@ -245,6 +246,18 @@ static void test_model_curve(void **state)
     none.dxN = 0;
     assert_int_equal(tirenv_rig_model_curve(c->m, &none, &own, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "dxN");
+    /* Neither a negative step nor an end before the start is a grid (they hung: the count's
+     * loop never ended, or began at (size_t) of a negative). */
+    none.dxN = -c->imp.dxN;
+    assert_int_equal(tirenv_import_grid_points(&none), 0);
+    assert_int_equal(tirenv_rig_model_curve(c->m, &none, &own, &diag), TIRENV_EINVAL);
+    none = c->imp;
+    none.xN_from = c->imp.xN_to;
+    none.xN_to = c->imp.xN_from;
+    assert_int_equal(tirenv_import_grid_points(&none), 0);
+    assert_int_equal(tirenv_rig_model_curve(c->m, &none, &own, &diag), TIRENV_EINVAL);
+    none.xN_to = none.xN_from;  /* a grid of one point is one */
+    assert_int_equal(tirenv_import_grid_points(&none), 1);
     tirenv_import_settings tall = c->imp;
     tall.H = 2;
     assert_int_equal(tirenv_rig_model_curve(c->m, &tall, &own, &diag), TIRENV_ERANGE);
