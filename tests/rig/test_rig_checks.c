@@ -87,6 +87,21 @@ static void test_rig_refusals(void **state)
     assert_int_equal(simulate(c, 0.1, 100, 0, 1e12, &log, &diag), TIRENV_ERANGE);
     assert_non_null(strstr(diag.message, "z readings"));
     assert_int_equal(simulate(c, 0.1, 100, INFINITY, 0, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "x_offset");
+    /* Each refused setting is named with its value (one sentence named none); no settings,
+     * no model or no profile: refused (they were dereferenced). */
+    assert_int_equal(simulate(c, -1, 100, 0, 0, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "speed");
+    assert_non_null(strstr(diag.message, "is -1;"));
+    assert_int_equal(simulate(c, 0.1, 0, 0, 0, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "rate");
+    tirenv_rig_settings bad = tirenv_rig_default();
+    bad.noise_z = -2e-4;
+    assert_int_equal(tirenv_rig_simulate(c->m, c->cleat, &bad, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "noise_z");
+    assert_int_equal(tirenv_rig_simulate(c->m, c->cleat, NULL, &log, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_rig_simulate(NULL, c->cleat, &bad, &log, &diag), TIRENV_EINVAL);
+    assert_int_equal(log.n, 0);
     assert_int_equal(simulate(c, 0.1, 100, 1e9, 0, &log, &diag), 0);
     /* The samples stay apart: every x differs from the one before by the cart's travel plus
      * noise, and the run covers the passage. */
