@@ -55,7 +55,8 @@ typedef struct {
 } tirenv_case_design;
 
 /* The 28 cases of the embedded tractor data set (19 train, 5 control, 4 validation; the
- * paper's Table 3 cases F, J and R among the validation ones); *n receives the count. */
+ * paper's Table 3 cases F, J and R among the validation ones); *n receives the count
+ * (n may be NULL). */
 const tirenv_case_design *tirenv_dataset_design(size_t *n);
 
 /* An embedded data set as designed (docs/models.md section 5.8): its cases, the model the

@@ -41,7 +41,8 @@ typedef struct {
 int tirenv_nn_write_json(const char *path, const tirenv_nn *nn, const tirenv_train_record *rec,
                          tirenv_diag *diag);
 /* Reads a model file, checking format, version, sizes, finiteness, ranges and the network
- * checksum; errors name the file and the field. *out is NULL on failure; rec may be NULL. */
+ * checksum; errors name the file and the field. *out is NULL on failure; rec may be NULL;
+ * TIRENV_EINVAL for a NULL or empty path or a NULL out. */
 int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *rec,
                         tirenv_diag *diag);
 

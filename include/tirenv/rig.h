@@ -39,7 +39,8 @@ int tirenv_rig_import_samples(size_t n, const double t[], const double x[], cons
                               const tirenv_import_settings *s, tirenv_curve *out,
                               tirenv_diag *diag);
 
-/* The same from a CSV log "t_s,x_m,z_m"; errors name file, line and column. */
+/* The same from a CSV log "t_s,x_m,z_m"; errors name file, line and column; TIRENV_EINVAL for
+ * a NULL or empty path. */
 int tirenv_rig_import(const char *path, const tirenv_import_settings *s, tirenv_curve *out,
                       tirenv_diag *diag);
 
@@ -88,7 +89,8 @@ typedef struct {
 void tirenv_rig_log_free(tirenv_rig_log *log);  /* frees the arrays, zeroes log */
 
 /* Runs the rig over the profile with model m, whose profile and load the caller has set with
- * tirenv_model_set (the model decides how the tire deforms: the data set uses "ring"). */
+ * tirenv_model_set (the model decides how the tire deforms: the data set uses "ring").
+ * TIRENV_EINVAL naming the setting and its value for a bad one, or for m, p or s NULL. */
 int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_rig_settings *s,
                         tirenv_rig_log *out, tirenv_diag *diag);
 

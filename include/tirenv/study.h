@@ -83,7 +83,8 @@ typedef struct {
 } tirenv_fit_report;
 
 /* Fits on the cases of split `split` of ds (normally TIRENV_SPLIT_TRAIN), starting from and
- * writing the result into *tire. */
+ * writing the result into *tire. s NULL: the defaults; report may be NULL; TIRENV_EINVAL
+ * if ds or tire is NULL. */
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
                tirenv_tire *tire, tirenv_fit_report *report, tirenv_diag *diag);
 
@@ -203,8 +204,8 @@ typedef struct {
  * the evaluating thread) repeats each model's pass over all cases until s->min_time has
  * passed and keeps the fastest pass.
  * *out must be freed with tirenv_compare_result_free, also after a failure. TIRENV_EINVAL
- * for an unknown case name or no case; TIRENV_EIO when a file cannot be written or gnuplot
- * fails (diag names it). */
+ * for an unknown case name or no case, or ds, tire, s or out NULL; TIRENV_EIO when a file
+ * cannot be written or gnuplot fails (diag names it). */
 int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn *nn,
                    const tirenv_compare_settings *s, tirenv_compare_result *out,
                    tirenv_diag *diag);

@@ -89,7 +89,8 @@ static int cam_keys(const ride_options *r, const ride_setup *s, const char *vehi
         char named[700];
         const tirenv_axle *ax = axle ? &s->v.rear : &s->v.front;
         tire_named_by(r, vehicle, axle, ax->tire_file[0] != '\0', named, sizeof named);
-        snprintf(diag.file, sizeof diag.file, "%s", s->tire_path[axle]);
+        snprintf(diag.file, sizeof diag.file, "%.*s", (int)sizeof diag.file - 1,
+                 s->tire_path[axle]);  /* bounded: the TSan build's -Werror saw truncation */
         char msg[1200];
         cli_error("%s (the %s axle's tire, named by %s)",
                   tirenv_diag_format(&diag, msg, sizeof msg), axle ? "rear" : "front", named);

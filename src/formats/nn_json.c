@@ -752,7 +752,12 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
                         tirenv_diag *diag)
 {
     TIRENV_NUMERIC_C();
+    if (!out)
+        return tirenv_error(diag, TIRENV_EINVAL, path ? path : "", 0, "",
+                            "no place for the network read");
     *out = NULL;
+    if (!path || !path[0])
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no model file named");
     const rctx c = {.path = path, .diag = diag};
     json_error_t err;
     json_in in = {.fp = fopen(path, "r")};

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* The generic model driver: name lookup, lifecycle, and the sweep over positions. */
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,16 +11,25 @@
 #include "model/model_state.h"
 
 /* The table every command looks names up in: the physical models, the network, and the point
- * contact a ride compares them with. */
+ * contact a ride compares them with. The public type pointers are no constant expressions, so
+ * the list is filled at run time, once: filled on every call, two threads looking a name up
+ * at once both wrote it (a data race, ThreadSanitizer's report). */
+static const tirenv_model_type *const *const types[] = {
+    &tirenv_model_rigid, &tirenv_model_springs, &tirenv_model_ring,
+    &tirenv_model_cam,   &tirenv_model_nn,      &tirenv_model_point};
+static const tirenv_model_type *types_list[sizeof types / sizeof types[0] + 1];
+static pthread_once_t types_once = PTHREAD_ONCE_INIT;
+
+static void types_fill(void)
+{
+    for (size_t i = 0; i < sizeof types / sizeof types[0]; ++i)
+        types_list[i] = *types[i];
+}
+
 const tirenv_model_type *const *tirenv_model_types(void)
 {
-    static const tirenv_model_type *const *types[] = {
-        &tirenv_model_rigid, &tirenv_model_springs, &tirenv_model_ring,
-        &tirenv_model_cam,   &tirenv_model_nn,      &tirenv_model_point};
-    static const tirenv_model_type *list[sizeof types / sizeof types[0] + 1];
-    for (size_t i = 0; i < sizeof types / sizeof types[0]; ++i)
-        list[i] = *types[i];
-    return list;
+    pthread_once(&types_once, types_fill);
+    return types_list;
 }
 
 const tirenv_model_type *tirenv_model_type_find(const char *name)

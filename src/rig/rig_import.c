@@ -329,6 +329,8 @@ int tirenv_rig_import_file(const char *path, const tirenv_import_settings *s,
     int status = settings_check(s, &x_0, diag);
     if (status != TIRENV_OK)
         return status;
+    if (!path || !path[0])  /* fopen(NULL) would say EIO "Bad address" */
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no log file named");
     tirenv_rig__log_file log;
     status = tirenv_rig__log_read(path, &log, diag);
     if (status != TIRENV_OK)

@@ -76,12 +76,29 @@ int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_r
                         tirenv_rig_log *out, tirenv_diag *diag)
 {
     *out = (tirenv_rig_log){0};
-    if (!(s->speed > 0 && s->rate > 0 && s->noise_x >= 0 && s->noise_z >= 0 && s->run_up >= 0) ||
-        !isfinite(s->speed) || !isfinite(s->rate) || !isfinite(s->x_offset) ||
-        !isfinite(s->z_offset))
+    if (!m || !p || !s)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "rig",
-                            "speed and rate must be positive, noise and run-up not negative, "
-                            "offsets finite");
+                            "no model, profile or rig settings given");
+    /* Each refusal names its setting and value (one sentence for all of them named none). */
+    const struct {
+        const char *name;
+        double value;
+        int ok;
+        const char *expected;
+    } set[] = {
+        {"speed", s->speed, s->speed > 0 && isfinite(s->speed), "a finite speed > 0 m/s"},
+        {"rate", s->rate, s->rate > 0 && isfinite(s->rate), "a finite rate > 0 Hz"},
+        {"noise_x", s->noise_x, s->noise_x >= 0, "a sigma >= 0 m"},
+        {"noise_z", s->noise_z, s->noise_z >= 0, "a sigma >= 0 m"},
+        {"run_up", s->run_up, s->run_up >= 0, "a length >= 0 m"},
+        {"x_offset", s->x_offset, isfinite(s->x_offset), "a finite offset in m"},
+        {"z_offset", s->z_offset, isfinite(s->z_offset), "a finite offset in m"},
+    };
+    for (size_t i = 0; i < sizeof set / sizeof set[0]; ++i)
+        if (!set[i].ok)
+            return tirenv_error(diag, TIRENV_EINVAL, "", 0, set[i].name,
+                                "rig setting %s is %g; expected %s", set[i].name, set[i].value,
+                                set[i].expected);
     /* The whole passage: flat ground, the tire's reach R0, the obstacle, back to flat. */
     double x_first, x_last;
     tirenv_profile_extent(p, &x_first, &x_last);

@@ -135,7 +135,9 @@ size_t tirenv_import_grid_points(const tirenv_import_settings *set)
 {
     const double limit = set->xN_to + set->dxN * 1e-9;
     const double steps = floor((limit - set->xN_from) / set->dxN);
-    if (!(steps < MAX_GRID))
+    /* A step of 0 or less, or an end before the start, is no grid: counted as one, the
+     * loops below never ended (a negative step) or started from (size_t) of a negative. */
+    if (!(set->dxN > 0) || !(steps >= 0 && steps < MAX_GRID))
         return 0;
     size_t n = (size_t)steps + 1;
     while (n > 1 && set->xN_from + (double)(n - 1) * set->dxN > limit)

@@ -680,8 +680,12 @@ int tirenv_compare(const tirenv_dataset *ds, const tirenv_tire *tire, tirenv_nn 
                    const tirenv_compare_settings *s, tirenv_compare_result *out,
                    tirenv_diag *diag)
 {
+    if (!out)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no result to fill");
     memset(out, 0, sizeof *out);
     out->nn_model = out->reference_model = -1;
+    if (!ds || !tire || !s)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no data set, tire or settings");
     out->tire = *tire;
     if (!(s->rise_threshold >= 0 && isfinite(s->rise_threshold)) ||
         !(s->min_time >= 0 && s->min_time < 3600) ||

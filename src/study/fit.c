@@ -177,6 +177,12 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
 {
     TIRENV_NUMERIC_C();
     const double t0 = tirenv_study__wall_seconds();
+    if (!ds || !tire)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "", "no data set or no tire to fit");
+    const tirenv_fit_settings defaults = tirenv_fit_default();
+    tirenv_fit_report unreported;
+    s = s ? s : &defaults;
+    report = report ? report : &unreported;
     const tirenv_model_type *type = s->type ? s->type : tirenv_model_springs;
     size_t n_params, n_params_max;
     const tirenv_model_param *params = tirenv_model_type_params(type, &n_params, &n_params_max);

@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -450,12 +451,17 @@ static int same_text(const char *path, const char *text, size_t len, const char 
                          "options, or remove the directory", what, where);
 }
 
-/* The tire file's text, written by tirenv_tir_write to a scratch file and read back. */
+/* The tire file's text, written by tirenv_tir_write to a scratch file and read back. The
+ * file's name is the process's and this call's own: named by the process alone, two sweeps of
+ * one process into one parent at once (two threads) wrote one file, and one read the other's
+ * tire (its sweep then wrote the wrong tire.tir, status OK) while the other found it gone. */
 static int tire_text(const char *dir, const tirenv_tire *tire, char **text, size_t *len,
                      tirenv_diag *diag)
 {
+    static atomic_uint serial;
     char path[1200];
-    snprintf(path, sizeof path, "%s/.tire.tir.%ld", dir, (long)getpid());
+    snprintf(path, sizeof path, "%s/.tire.tir.%ld.%u", dir, (long)getpid(),
+             atomic_fetch_add(&serial, 1u));
     int status = tirenv_tir_write(path, tire, diag);
     if (!status)
         status = tirenv_sweep__read_text(path, TIRE_MAX, text, len, diag);

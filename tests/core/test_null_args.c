@@ -58,6 +58,14 @@ static void test_readers_on_missing_files(void **state)
     tirenv_dataset ds;
     assert_int_equal(tirenv_dataset_read(missing(state, "set", path), 0.68, &ds, NULL),
                      TIRENV_EIO);
+    /* No path at all is an invalid argument, not an I/O error (fopen(NULL) gave EIO "Bad
+     * address"); no place for the network, refused (it was written through). */
+    tirenv_diag diag;
+    assert_int_equal(tirenv_nn_read_json(NULL, &nn, NULL, &diag), TIRENV_EINVAL);
+    assert_null(nn);
+    assert_int_equal(tirenv_nn_read_json(path, NULL, NULL, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_rig_import_file(NULL, &imp, &curve, NULL, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_rig_import_file("", &imp, &curve, NULL, &diag), TIRENV_EINVAL);
 }
 
 static void test_invalid_parameters(void **state)

@@ -2,6 +2,7 @@
  * the number of threads, done calls that never overlap, no thread for one job, signals left
  * to the caller's thread. SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
+#include "tirenv/model.h"
 #include "tirenv/parallel.h"
 
 #include <pthread.h>
@@ -260,6 +261,39 @@ static void test_nested_budget(void **state)
     free(c);
 }
 
+/* The model table (tirenv_model_types, tirenv_model_type_find) looked up from several threads
+ * at once: the same answers on each, and, in the ThreadSanitizer build, no data race (the
+ * table was written on every call). */
+static pthread_barrier_t lookup_start;
+static void *lookup(void *arg)
+{
+    int *ok = arg;
+    pthread_barrier_wait(&lookup_start);
+    *ok = 1;
+    for (int k = 0; k < 200; ++k) {
+        const tirenv_model_type *const *t = tirenv_model_types();
+        *ok &= t[0] == tirenv_model_rigid && tirenv_model_type_find("ring") == tirenv_model_ring &&
+               tirenv_model_type_find("point") == tirenv_model_point;
+    }
+    return NULL;
+}
+
+static void test_model_table_threads(void **state)
+{
+    (void)state;
+    enum { N = 4 };
+    pthread_t th[N];
+    int ok[N] = {0};
+    assert_int_equal(pthread_barrier_init(&lookup_start, NULL, N), 0);
+    for (int i = 0; i < N; ++i)
+        assert_int_equal(pthread_create(&th[i], NULL, lookup, &ok[i]), 0);
+    for (int i = 0; i < N; ++i) {
+        pthread_join(th[i], NULL);
+        assert_int_equal(ok[i], 1);
+    }
+    pthread_barrier_destroy(&lookup_start);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -267,6 +301,7 @@ int main(void)
         cmocka_unit_test(test_lowest_failure),
         cmocka_unit_test(test_small),
         cmocka_unit_test(test_nested_budget),
+        cmocka_unit_test(test_model_table_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

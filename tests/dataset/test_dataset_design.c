@@ -37,6 +37,7 @@ static void test_designs_listed(void **state)
     /* The tractor design is the one the older call returns. */
     size_t n;
     assert_ptr_equal(tirenv_dataset_design(&n), tirenv_design_find("14.9R28")->cases);
+    assert_ptr_equal(tirenv_dataset_design(NULL), tirenv_design_find("14.9R28")->cases);
     assert_int_equal(n, 28);
 }
 

@@ -87,6 +87,21 @@ static void test_rig_refusals(void **state)
     assert_int_equal(simulate(c, 0.1, 100, 0, 1e12, &log, &diag), TIRENV_ERANGE);
     assert_non_null(strstr(diag.message, "z readings"));
     assert_int_equal(simulate(c, 0.1, 100, INFINITY, 0, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "x_offset");
+    /* Each refused setting is named with its value (one sentence named none); no settings,
+     * no model or no profile: refused (they were dereferenced). */
+    assert_int_equal(simulate(c, -1, 100, 0, 0, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "speed");
+    assert_non_null(strstr(diag.message, "is -1;"));
+    assert_int_equal(simulate(c, 0.1, 0, 0, 0, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "rate");
+    tirenv_rig_settings bad = tirenv_rig_default();
+    bad.noise_z = -2e-4;
+    assert_int_equal(tirenv_rig_simulate(c->m, c->cleat, &bad, &log, &diag), TIRENV_EINVAL);
+    assert_string_equal(diag.field, "noise_z");
+    assert_int_equal(tirenv_rig_simulate(c->m, c->cleat, NULL, &log, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_rig_simulate(NULL, c->cleat, &bad, &log, &diag), TIRENV_EINVAL);
+    assert_int_equal(log.n, 0);
     assert_int_equal(simulate(c, 0.1, 100, 1e9, 0, &log, &diag), 0);
     /* The samples stay apart: every x differs from the one before by the cart's travel plus
      * noise, and the run covers the passage. */
@@ -207,7 +222,8 @@ static void test_sparse_at_cap(void **state)
  * with room: evaluated again backwards, Newton starts elsewhere; measured 1.1e-16 m, the
  * springs model's own root landing on the same height), and what the import of a rig log
  * of the same model approaches: the imported curve within 0.5 mm RMS (the import's bound,
- * docs/models.md section 5.7; measured 0.065 mm). Refused: a grid of no point, a corner out of reach. */
+ * docs/models.md section 5.7; measured 0.065 mm). Refused: a grid of no point (a step of 0 or
+ * less, an end before the start), a corner out of reach. */
 static void test_model_curve(void **state)
 {
     rig_case *c = *state;
@@ -245,6 +261,18 @@ static void test_model_curve(void **state)
     none.dxN = 0;
     assert_int_equal(tirenv_rig_model_curve(c->m, &none, &own, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "dxN");
+    /* Neither a negative step nor an end before the start is a grid (they hung: the count's
+     * loop never ended, or began at (size_t) of a negative). */
+    none.dxN = -c->imp.dxN;
+    assert_int_equal(tirenv_import_grid_points(&none), 0);
+    assert_int_equal(tirenv_rig_model_curve(c->m, &none, &own, &diag), TIRENV_EINVAL);
+    none = c->imp;
+    none.xN_from = c->imp.xN_to;
+    none.xN_to = c->imp.xN_from;
+    assert_int_equal(tirenv_import_grid_points(&none), 0);
+    assert_int_equal(tirenv_rig_model_curve(c->m, &none, &own, &diag), TIRENV_EINVAL);
+    none.xN_to = none.xN_from;  /* a grid of one point is one */
+    assert_int_equal(tirenv_import_grid_points(&none), 1);
     tirenv_import_settings tall = c->imp;
     tall.H = 2;
     assert_int_equal(tirenv_rig_model_curve(c->m, &tall, &own, &diag), TIRENV_ERANGE);

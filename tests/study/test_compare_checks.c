@@ -42,6 +42,23 @@ static void test_refusals(void **state)
     assert_string_equal(diag.field, "cases");
     assert_non_null(strstr(diag.message, "case 'J' is listed twice (cases 1 and 3"));
     assert_int_equal(access(out, F_OK), -1);  /* refused before anything is written */
+    /* No data set, tire, settings or result: refused (they were dereferenced), the result
+     * freeable. */
+    tirenv_dataset ds;
+    assert_int_equal(tirenv_dataset_read(TIRENV_TEST_DATA "/dataset_good", 0.68, &ds, &diag), 0);
+    const tirenv_tire t = tirenv_tire_default();
+    tirenv_compare_settings s = tirenv_compare_default();
+    s.out_dir = out;
+    tirenv_compare_result r;
+    assert_int_equal(tirenv_compare(NULL, &t, NULL, &s, &r, &diag), TIRENV_EINVAL);
+    tirenv_compare_result_free(&r);
+    assert_int_equal(tirenv_compare(&ds, NULL, NULL, &s, &r, &diag), TIRENV_EINVAL);
+    tirenv_compare_result_free(&r);
+    assert_int_equal(tirenv_compare(&ds, &t, NULL, NULL, &r, &diag), TIRENV_EINVAL);
+    tirenv_compare_result_free(&r);
+    assert_int_equal(tirenv_compare(&ds, &t, NULL, &s, NULL, &diag), TIRENV_EINVAL);
+    tirenv_dataset_free(&ds);
+    assert_int_equal(access(out, F_OK), -1);
     const char *const once[] = {"J", "R"};
     assert_int_equal(run(once, 2, "two\nlines", out, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "title");

@@ -102,6 +102,13 @@ static void test_refuses_empty_split(void **state)
     assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_VALIDATION, &s, &tire, &rep, &diag),
                      TIRENV_EINVAL);
     assert_true(strstr(diag.message, "too few") != NULL);
+    /* No data set or tire: refused (they were dereferenced); no settings: the defaults, and
+     * no report wanted: none written (both crashed). */
+    assert_int_equal(tirenv_fit(NULL, TIRENV_SPLIT_TRAIN, &s, &tire, &rep, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_TRAIN, &s, NULL, &rep, &diag), TIRENV_EINVAL);
+    assert_int_equal(tirenv_fit(&ds, TIRENV_SPLIT_VALIDATION, NULL, &tire, NULL, &diag),
+                     TIRENV_EINVAL);
+    assert_true(strstr(diag.message, "too few") != NULL);
     free_dataset(cases);
 }
 

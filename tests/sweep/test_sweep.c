@@ -6,9 +6,11 @@
 #include "testutil.h"
 #include "tirenv/dataset.h"
 #include "tirenv/sweep.h"
+#include "tirenv/tir.h"
 #include "sweep/sweep_impl.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -429,6 +431,60 @@ static void test_read_text(void **state)
     free(want);
 }
 
+/* Two sweeps of one process into one parent at once, on two threads, each with its own tire:
+ * each finishes, its tire.tir its own tire. The tire's scratch file was named by the process
+ * alone, so one sweep read the other's tire (and wrote it, status OK) while the other failed.
+ * A race, so a test that fails by chance: 40 rounds of a one-case rigid sweep failed 1 run of
+ * the test in 5 before the fix (measured), 0 in 10 after. */
+typedef struct {
+    const tirenv_test_dir *t;
+    int round, id, ok;
+    pthread_barrier_t *start;
+} twin;
+
+static void *twin_run(void *arg)
+{
+    twin *w = arg;
+    tirenv_tire tire = tirenv_tire_default();
+    tire.springs.c_r *= w->id ? 1.4375 : 1.0;
+    static const double L[] = {0.2385}, H[] = {0.0415}, l_c[] = {0.3315};
+    tirenv_sweep_settings s = tirenv_sweep_default();
+    s.type = tirenv_model_type_find("rigid");
+    s.lengths = L;
+    s.n_lengths = 1;
+    s.heights = H;
+    s.n_heights = 1;
+    s.contact_lengths = l_c;
+    s.n_contact_lengths = 1;
+    char name[32], dir[600], path[700];
+    snprintf(name, sizeof name, "twin%d-%d", w->round, w->id);
+    tirenv_test_path(w->t, name, dir);
+    pthread_barrier_wait(w->start);
+    w->ok = tirenv_sweep_run(dir, &tire, &s, NULL, NULL) == TIRENV_OK;
+    snprintf(path, sizeof path, "%s/tire.tir", dir);
+    tirenv_tire back = tirenv_tire_default();
+    w->ok = w->ok && tirenv_tir_read(path, &back, NULL) == TIRENV_OK &&
+            back.springs.c_r == tire.springs.c_r;
+    return NULL;
+}
+
+static void test_two_at_once(void **state)
+{
+    for (int round = 0; round < 40; ++round) {
+        pthread_barrier_t start;
+        assert_int_equal(pthread_barrier_init(&start, NULL, 2), 0);
+        twin w[2] = {{*state, round, 0, 0, &start}, {*state, round, 1, 0, &start}};
+        pthread_t th[2];
+        for (int i = 0; i < 2; ++i)
+            assert_int_equal(pthread_create(&th[i], NULL, twin_run, &w[i]), 0);
+        for (int i = 0; i < 2; ++i)
+            pthread_join(th[i], NULL);
+        pthread_barrier_destroy(&start);
+        assert_true(w[0].ok);
+        assert_true(w[1].ok);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -441,6 +497,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_resume, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown_tree),
         cmocka_unit_test_setup_teardown(test_rig, tirenv_test_dir_setup,
+                                        tirenv_test_dir_teardown_tree),
+        cmocka_unit_test_setup_teardown(test_two_at_once, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown_tree),
         cmocka_unit_test_setup_teardown(test_read_text, tirenv_test_dir_setup,
                                         tirenv_test_dir_teardown_tree),
