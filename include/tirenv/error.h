@@ -2,7 +2,13 @@
 /* tirenv: status codes and error details shared by every module. The library holds no
  * process-wide error state and installs no handler: every failure, its own or a numerical
  * one (a root not bracketed, an integrator that cannot keep its tolerance), comes back as a
- * status and a tirenv_diag. */
+ * status and a tirenv_diag.
+ *
+ * Pointer arguments: a diag may always be NULL, a _free function takes NULL as a no-op, and
+ * any other pointer may be NULL only where its function's comment says so (many refuse it
+ * with TIRENV_EINVAL as well, but that is a courtesy, not a promise): as in the C library, a
+ * NULL the comment does not allow is the caller's error. Numbers in SI units; a value that is
+ * not finite where a number is expected is refused with TIRENV_EINVAL naming it. */
 #ifndef TIRENV_ERROR_H
 #define TIRENV_ERROR_H
 
