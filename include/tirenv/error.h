@@ -7,8 +7,7 @@
  * Pointer arguments: a diag may always be NULL, a _free function takes NULL as a no-op, and
  * any other pointer may be NULL only where its function's comment says so (many refuse it
  * with TIRENV_EINVAL as well, but that is a courtesy, not a promise): as in the C library, a
- * NULL the comment does not allow is the caller's error. Numbers in SI units; a value that is
- * not finite where a number is expected is refused with TIRENV_EINVAL naming it. */
+ * NULL the comment does not allow is the caller's error. */
 #ifndef TIRENV_ERROR_H
 #define TIRENV_ERROR_H
 
