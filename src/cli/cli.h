@@ -405,4 +405,13 @@ int cli_mkdir(const char *dir);
 size_t cli_jobs_default(void);
 int cli_parse_jobs(const char *arg, size_t *jobs);
 
+/* The CLI's own gnuplot scripts (plot_script.c). s in gnuplot's single quotes, where nothing
+ * but ' (written twice) is special. */
+void cli_plot_quoted(FILE *fp, const char *s);
+/* png_out and svg_out, name.png and name.svg unless tirenv_plot_draw set them. */
+void cli_plot_outputs(FILE *fp, const char *name);
+/* "do for [pass = 1:2] {", a pass each for the PNG and the SVG of width x height pixels; the
+ * caller writes the plot commands and the closing "}". */
+void cli_plot_passes(FILE *fp, size_t width, size_t height);
+
 #endif

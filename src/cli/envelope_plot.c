@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "cli/cli.h"
 #include "cli/envelope_plot.h"
 #include "tirenv/outfile.h"
 #include "tirenv/plot.h"
@@ -84,24 +85,6 @@ static void write_road(FILE *fp, const tirenv_profile *p, double x_from, double 
     road_point(fp, x_to, tirenv_profile_height(p, x_to));
 }
 
-/* s in gnuplot's single quotes, each ' doubled; and the same ending the line. */
-static void quoted(FILE *fp, const char *s)
-{
-    fputc('\'', fp);
-    for (; *s; ++s) {
-        if (*s == '\'')
-            fputc('\'', fp);
-        fputc(*s, fp);
-    }
-    fputc('\'', fp);
-}
-
-static void quoted_line(FILE *fp, const char *s)
-{
-    quoted(fp, s);
-    fputc('\n', fp);
-}
-
 int cli_envelope_plot_check(const char *file, tirenv_diag *diag)
 {
     char base[PATH_MAX], dir[PATH_MAX], name[PATH_MAX];
@@ -135,40 +118,27 @@ int cli_envelope_plot(const char *file, const char *csv, const char *model, cons
         return status;
     FILE *fp = tirenv_outfile_stream(f);
     const tirenv_plot_style st = tirenv_plot_style_of(model, 0);
-    /* Names and the title in gnuplot's single quotes, where nothing but ' is special. */
+    /* Names and the title quoted for gnuplot (cli_plot_quoted): a path may hold anything. */
     fprintf(fp, "# tirenv envelope --plot: the curve of %s over the road under the centre.\n"
                 "# Draw by hand from this directory with:  gnuplot %s.gp\n",
             model, name);
-    char png[PATH_MAX + 8], svg[PATH_MAX + 8], dat[PATH_MAX + 16];
-    snprintf(png, sizeof png, "%s.png", name);
-    snprintf(svg, sizeof svg, "%s.svg", name);
-    snprintf(dat, sizeof dat, "%s-road.dat", name);
-    fputs("if (!exists(\"png_out\")) png_out = ", fp);
-    quoted_line(fp, png);
-    fputs("if (!exists(\"svg_out\")) svg_out = ", fp);
-    quoted_line(fp, svg);
+    cli_plot_outputs(fp, name);
     fputs("curve = ", fp);
-    quoted_line(fp, csv_abs);
-    fputs("road = ", fp);
-    quoted_line(fp, dat);
+    cli_plot_quoted(fp, csv_abs);
+    snprintf(path, sizeof path, "%s-road.dat", name);
+    fputs("\nroad = ", fp);
+    cli_plot_quoted(fp, path);
+    fputc('\n', fp);
     fputs("set title ", fp);
-    quoted(fp, title);
+    cli_plot_quoted(fp, title);
     fprintf(fp, " noenhanced\n"
                 "set datafile separator ','\n"
                 "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key top left box opaque\n"
                 "set xlabel \"x, the wheel centre's position (m)\"\n"
                 "set ylabel \"height (mm)\"\n"
-                "set autoscale xfix\nset offsets 0, 0, graph 0.05, graph 0.05\n"
-                "do for [pass = 1:2] {\n"
-                "    if (pass == 1) {\n"
-                "        set terminal pngcairo size 900,500 font 'Sans,10' noenhanced\n"
-                "        set output png_out\n"
-                "    } else {\n"
-                "        set terminal svg size 900,500 font 'Sans,10' noenhanced background "
-                "rgb 'white'\n"
-                "        set output svg_out\n"
-                "    }\n"
-                "    plot road using 1:($2*1e3) with lines lc rgb '#909090' lw 1.5 "
+                "set autoscale xfix\nset offsets 0, 0, graph 0.05, graph 0.05\n");
+    cli_plot_passes(fp, 900, 500);
+    fprintf(fp, "    plot road using 1:($2*1e3) with lines lc rgb '#909090' lw 1.5 "
                 "title 'the road under the centre', \\\n"
                 "         curve every ::1 using 1:($3*1e3) with lines lc rgb '%s' lw %.1f "
                 "dt %d title 'h, the effective road (%s)'\n"

@@ -143,12 +143,10 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
             "# Data: %s.dat in this directory, one block per speed (gnuplot's 'index'), one\n"
             "# column per model. Draw by hand from this directory with:  gnuplot %s.gp\n"
             "# tirenv sets png_out and svg_out itself, to temporary names it renames when\n"
-            "# gnuplot has finished.\n"
-            "if (!exists(\"png_out\")) png_out = '%s.png'\n"
-            "if (!exists(\"svg_out\")) svg_out = '%s.svg'\n"
-            "\n"
-            "models = \"",
-            what, base, base, base, base);
+            "# gnuplot has finished.\n",
+            what, base, base);
+    cli_plot_outputs(fp, base);
+    fputs("\nmodels = \"", fp);
     for (size_t i = 0; i < r->n_cols; ++i)
         fprintf(fp, "%s%s", i ? " " : "", r->cols[i].label);
     fputs("\"\nspeeds = \"", fp);
@@ -173,18 +171,8 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
                 st.width, dash, c->label);
     }
     /* The key beside the panels: inside, over a road's dense lines, it hid the right tenth. */
-    fprintf(fp, "set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key outside right top box\n"
-            "\n"
-            "do for [pass = 1:2] {\n"
-            "    if (pass == 1) {\n"
-            "        set terminal pngcairo size 1000,%zu font 'Sans,10' noenhanced\n"
-            "        set output png_out\n"
-            "    } else {\n"
-            "        set terminal svg size 1000,%zu font 'Sans,10' noenhanced background "
-            "rgb 'white'\n"
-            "        set output svg_out\n"
-            "    }\n",
-            260 * r->n_speeds + 60, 260 * r->n_speeds + 60);
+    fputs("set encoding utf8\nset grid lc rgb '#d0d0d0'\nset key outside right top box\n\n", fp);
+    cli_plot_passes(fp, 1000, 260 * r->n_speeds + 60);
 }
 
 /* Writes <dir>/<base>.gp, one panel per speed drawing every model's column of <base>.dat,

@@ -3,8 +3,9 @@
  * locale.setlocale) read "0.68" as 0 and refused the rest, and wrote "0,68", a file no reader
  * takes. The locale is made here, with localedef into the scratch directory (LOCPATH), from a
  * source that changes LC_NUMERIC alone; the tests then read and write each kind of file under
- * it and check that the host's locale is the same afterwards. SPDX-License-Identifier:
- * Apache-2.0 */
+ * it, and run a parallel loop under it, and check that the host's locale is the same
+ * afterwards.
+ * SPDX-License-Identifier: Apache-2.0 */
 #include "testutil.h"
 #include "io/io.h"
 #include "tirenv/numtext.h"
