@@ -19,7 +19,8 @@ TIRENV_BEGIN_DECLS
 int tirenv_tir_read(const char *path, tirenv_tire *tire, tirenv_diag *diag);
 
 /* Applies one "KEY=VALUE" override (KEY as in the .tir file, e.g. RADIAL_STIFFNESS=1.6e6),
- * as the --set option does. On failure *tire is unchanged. */
+ * as the --set option does. On failure *tire is unchanged, and diag names the file "--set"
+ * (line 0: no file was read) and the key as its field. */
 int tirenv_tir_set(tirenv_tire *tire, const char *assignment, tirenv_diag *diag);
 
 /* Writes *tire as a .tir file (atomically: all or nothing). */
@@ -41,8 +42,8 @@ const char *tirenv_tir_key(size_t i, const char **section);
 /* The value of key ("KEY" or "SECTION.KEY", as tirenv_tir_set takes it) in *tire as text into
  * buf (n bytes, 64 always suffice), exactly as tirenv_tir_write writes it: the shortest text
  * that reads back to the same double (SI units), a count, or a name unquoted; *kind (if not
- * NULL) says which. An unknown key is TIRENV_EINVAL with the known keys in the message; on
- * any failure buf (if n > 0) holds "". */
+ * NULL) says which. An unknown key is TIRENV_EINVAL with the known keys in the message (diag's
+ * file "get", line 0, its field the key); on any failure buf (if n > 0) holds "". */
 int tirenv_tir_get(const tirenv_tire *tire, const char *key, char *buf, size_t n,
                    tirenv_tir_kind *kind, tirenv_diag *diag);
 

@@ -18,8 +18,9 @@ TIRENV_BEGIN_DECLS
 int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag);
 
 /* Applies one "KEY=VALUE" override (KEY as in the file, e.g. MASS=5200; the axle keys need
- * their section, e.g. FRONT_AXLE.TIRES=4), then checks; *v changes only if both pass. A
- * relative TIRE_FILE given here is relative to the working directory. */
+ * their section, e.g. FRONT_AXLE.TIRES=4), then checks; *v changes only if both pass, and a
+ * refusal's diag names the file "--set" (line 0) and the key as its field. A relative
+ * TIRE_FILE given here is relative to the working directory. */
 int tirenv_vehicle_set(tirenv_vehicle *v, const char *assignment, tirenv_diag *diag);
 
 /* Writes *v as a vehicle property file (atomically: all or nothing); refuses a vehicle that
