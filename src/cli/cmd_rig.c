@@ -89,6 +89,11 @@ int cli_rig_main(int argc, char *argv[])
         cli_error("rig: -o LOG.csv is required");
         return CLI_EXIT_USAGE;
     }
+    if (!o.have_load && !o.have_contact_length) {
+        cli_error("rig: expected --load N or --contact-length M; 'tirenv rig --help' shows "
+                  "the options");
+        return CLI_EXIT_USAGE;
+    }
     rig.seed = (unsigned long)seed;
     const tirenv_model_type *type = o.type ? o.type : tirenv_model_ring;
     o.runs[o.n_runs++] = type;

@@ -86,6 +86,9 @@ for bad in '--speed 1e9' '--rate 1e-9' '--offset 1e300,1e300' '--rate 1e7'; do
     check "rig $bad: exit 2 with the reason, no log" \
         '[ $rc -eq 2 ] && grep -Eq "needs at least 40|resolution" err && no_file bad.csv'
 done
+run "$bin" rig --model springs --cleat 0.10,0.10 -o noload.csv
+check "rig without --load or --contact-length: exit 1 (usage) asking for one, no log" \
+    '[ $rc -eq 1 ] && grep -q "expected --load N or --contact-length M" err && no_file noload.csv'
 run "$bin" rig --model springs $R -o log.csv
 awk -F, 'BEGIN { OFS = "," } /^#/ || $1 == "t_s" { print; next } { $3 = $3 * 1000; print }' \
     log.csv >log-mm.csv
