@@ -707,45 +707,50 @@ static void slope_out(tirenv_ring *r, size_t a, size_t b, int sub, double z, dou
 enum { NEED_GROUND = -2, NEED_WHOLE = -3 };
 enum { START_PREDICTED, START_KEPT, START_WHOLE };
 
-static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
-                       double *dfz_dz, int start, tirenv_diag *diag)
+/* The start of a new evaluation: the last evaluation's belt and tread where this window
+ * overlaps its window, moved along their slope in z to this z (dx/dz of that equilibrium,
+ * found with its dF_z/dz), zero elsewhere; the states of the first Newton step are then
+ * nearly this equilibrium's. The minimum does not depend on the start (its states' system is
+ * solved last). */
+static void warm_predict(tirenv_ring *r, double x_c, double z, double xw[])
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n, lo = r->lo;
+    const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
+    /* The last window's nodes in this one, lo + ia .. lo + ib - 1; zero elsewhere. */
+    const size_t wa = r->warm_lo > lo ? r->warm_lo : lo, w1 = r->warm_lo + r->warm_n,
+                 wb = w1 < lo + n ? w1 : lo + n;
+    const size_t ia = wa < wb ? wa - lo : 0, ib = wa < wb ? wb - lo : 0;
+    for (size_t i = 0; i < ia; ++i)
+        xw[2 * i] = xw[2 * i + 1] = 0;
+    for (size_t i = ia; i < ib; ++i) {
+        const size_t j = lo + i;
+        xw[2 * i] = r->w[j] + dz * T->dw[j];
+        xw[2 * i + 1] = T->u[j] + dz * T->du[j];
+    }
+    for (size_t i = ib; i < n; ++i)
+        xw[2 * i] = xw[2 * i + 1] = 0;
+    tirenv_ring__warm_shift(r, x_c, z, xw);
+}
+
+/* The nodes solved, a .. b (the whole window or a sub-window), and their points k0 .. k1. */
+typedef struct {
+    size_t a, b, k0, k1;
+    int sub;  /* a sub-window */
+} solved_span;
+
+/* The equilibrium on the sub-window of the contact (see sub_window; not with lugs, whose
+ * exterior turns with the tire) where there is one; else, or where a free point would touch,
+ * on the whole window, and then on the sub-window of its contact. Into T->xw, with where it
+ * was solved in *s and, with the carcass's law, the node outside the nodes solved pressed in
+ * furthest in *j_out. 0, NEED_GROUND or NEED_WHOLE, or an error. */
+static int solve_span(tirenv_ring *r, double x_c, int start, int want, solved_span *s,
+                      size_t *j_out, tirenv_diag *diag)
 {
     tirenv_ring_tread *T = r->tread;
     const size_t n = r->n, lo = r->lo, hi = lo + n - 1, n_pts = r->n_pts;
-    const double t_r = r->par.t_r, R = r->R;
-    if (n + 4 > r->M)
-        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
-                            "the contact window of %zu nodes leaves too few of the %zu outside "
-                            "it", n, r->M);
-    set_kappa(r, x_c);
-    T->deferred = 0;
     double *xw = T->xw;
-    /* From the last evaluation's belt and tread where this window overlaps its window,
-     * moved along their slope in z to this z (dx/dz of that equilibrium, found with its
-     * dF_z/dz): the states of the first Newton step are then nearly this equilibrium's. The
-     * minimum does not depend on the start (its states' system is solved last). */
-    const double dz = T->pred[2] != 0 ? z - T->pred[0] : 0;
-    if (start == START_PREDICTED) {
-        /* The last window's nodes in this one, lo + ia .. lo + ib - 1; zero elsewhere. */
-        const size_t wa = r->warm_lo > lo ? r->warm_lo : lo, w1 = r->warm_lo + r->warm_n,
-                     wb = w1 < lo + n ? w1 : lo + n;
-        const size_t ia = wa < wb ? wa - lo : 0, ib = wa < wb ? wb - lo : 0;
-        for (size_t i = 0; i < ia; ++i)
-            xw[2 * i] = xw[2 * i + 1] = 0;
-        for (size_t i = ia; i < ib; ++i) {
-            const size_t j = lo + i;
-            xw[2 * i] = r->w[j] + dz * T->dw[j];
-            xw[2 * i + 1] = T->u[j] + dz * T->du[j];
-        }
-        for (size_t i = ib; i < n; ++i)
-            xw[2 * i] = xw[2 * i + 1] = 0;
-        tirenv_ring__warm_shift(r, x_c, z, xw);
-    }
-    /* On the sub-window of the contact (see sub_window; not with lugs, whose exterior turns
-     * with the tire) where there is one; else, or where a free point would touch, on the whole
-     * window, and then on the sub-window of its contact. */
-    const int want = dfz_dz != NULL;
-    size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12, j_out = 0;
+    size_t a = lo, b = hi, k0 = 0, k1 = n_pts, kf, kl, a2, b2, k02, k12;
     size_t beyond[2];
     int sub = start != START_WHOLE && !T->lugs && !T->whole &&
               tirenv_ring__contact_span(r, 0, n_pts, xw, 1, &kf, &kl) &&
@@ -773,7 +778,7 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
             sub = tirenv_ring__free_clear(r, k0, k1, xw);
             if (sub && !tirenv_ring__gaps_clear(r, xw))
                 return NEED_GROUND; /* the free points sampled may be clear after all */
-            sub = sub && (!T->soft || tirenv_ring__outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
+            sub = sub && (!T->soft || tirenv_ring__outside_sub(r, a, b, xw, j_out) <= T->law.w_0);
             break;
         }
         a = a2, b = b2, k0 = k02, k1 = k12;
@@ -796,7 +801,7 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
                 return solve_error(r, st, b - a + 1, diag);
             tirenv_ring__fill_free(r, a, b, xw);
             sub = tirenv_ring__free_clear(r, k0, k1, xw) &&
-                  (!T->soft || tirenv_ring__outside_sub(r, a, b, xw, &j_out) <= T->law.w_0);
+                  (!T->soft || tirenv_ring__outside_sub(r, a, b, xw, j_out) <= T->law.w_0);
             if (!sub) { /* round-off at the sub-window's ends, or the carcass beyond its
                          * linear range there: the whole window's, again */
                 st = solve_whole(r, x_c, want);
@@ -807,40 +812,25 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
     }
     if (!sub)
         a = lo, b = hi, k0 = 0, k1 = n_pts;
-    if (!sub && T->soft) {
-        const double w_out = tirenv_ring__outside_whole(r, xw, &j_out);
-        /* Beyond the lower half (ring.c's window with the law): a tall obstacle pressing the
-         * belt in far from the patch. Solved again on all of the ring but its top nodes,
-         * pulled out (no further: their condensation needs some exterior). */
-        const size_t h = r->M / 2 - 4;
-        if (!(w_out <= T->law.w_0) && (lo > r->i0 - h || hi < r->i0 + h)) {
-            r->lo = r->i0 - h;
-            r->n = 2 * h + 1;
-            return tirenv_ring__solve_shear(r, x_c, z, fx, fz, dfz_dz, diag);
-        }
-        if (!(w_out <= T->law.w_0))
-            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "CARCASS_LINEAR_DEFLECTION",
-                                "the belt outside the %zu-node contact window is pressed in "
-                                "%.4g m at node %zu (theta %.4g rad), beyond the carcass's "
-                                "linear range %.4g m, which the window's condensation needs",
-                                n, w_out, j_out, r->theta[j_out], T->law.w_0);
-    }
-    T->n_sub += sub != 0;
-    /* The next sampling's far stretches are those of this sub-window (ring_ground.c). */
-    r->near_ok = sub && !T->lugs && !T->whole && !T->soft;
-    r->near_a = a, r->near_b = b;
-    /* The window's free points, clear of the ground, were written by free_clear. */
-    /* The last evaluation's warm start cleared, but where this one's overwrites it below: w
-     * and u on this window, dw and du there too with dF_z/dz. */
-    {
-        const size_t w0 = r->warm_lo, w1 = w0 + r->warm_n, h1 = lo + n;
-        for (size_t j = w0; j < w1 && j < lo; ++j)
-            r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
-        for (size_t j = w0 > lo ? w0 : lo; !dfz_dz && !T->defer && j < w1 && j < h1; ++j)
-            T->dw[j] = T->du[j] = 0;
-        for (size_t j = w0 > h1 ? w0 : h1; j < w1; ++j)
-            r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
-    }
+    *s = (solved_span){a, b, k0, k1, sub};
+    return 0;
+}
+
+/* The window's answer xw kept as the next evaluation's warm start: w and u on this window,
+ * dw and du cleared where this one does not overwrite them (with dF_z/dz, or deferred, they
+ * are written after); the last evaluation's cleared outside it. F and g zeroed for the force
+ * pass. */
+static void warm_keep(tirenv_ring *r, double z, const double xw[], int slope)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t lo = r->lo, n = r->n;
+    const size_t w0 = r->warm_lo, w1 = w0 + r->warm_n, h1 = lo + n;
+    for (size_t j = w0; j < w1 && j < lo; ++j)
+        r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
+    for (size_t j = w0 > lo ? w0 : lo; !slope && !T->defer && j < w1 && j < h1; ++j)
+        T->dw[j] = T->du[j] = 0;
+    for (size_t j = w0 > h1 ? w0 : h1; j < w1; ++j)
+        r->w[j] = T->u[j] = T->dw[j] = T->du[j] = 0;
     /* Deferred, the last slope (of the evaluation before, or none) predicts from here until
      * one is asked for (tirenv_ring__shear_slope writes this one's, as with dfz_dz). */
     if (T->defer)
@@ -855,17 +845,27 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
         r->F[lo + i] = 0;
         r->g[lo + i] = 0;
     }
-    /* The forces and dx/dz on the nodes solved, a .. b (the whole window or a sub-window). */
-    window_save sv;
-    enter(r, &sv, a, b, k0, k1);
-    const size_t ns = r->n, N = 2 * ns, m = T->m, ls = r->lo;
-    const double *x = T->x;
-    double *xt = T->xt;
-    for (size_t i = 0; i < N + m; ++i)
-        xt[i] = 0;
+}
+
+/* What the force pass over the points found. */
+typedef struct {
+    double sum_c, sum_s;      /* sum f cos, sum f sin over the points in contact, N */
+    size_t k_first, k_last;   /* the first and the last point in contact (k_first > k_last:
+                               * none) */
+    double e_pts;             /* their largest tread compression u - w, m */
+} point_sums;
+
+/* The forces of the points in contact on the window entered (x its answer): each point's f
+ * and overlap e, the nodes' F and g, and with rhs the right-hand side of dx/dz into xt
+ * (-d(grad E)/dz at fixed x). */
+static void point_forces(tirenv_ring *r, const double x[], double xt[], int rhs, point_sums *p)
+{
+    const tirenv_ring_tread *T = r->tread;
+    const size_t ls = r->lo, N = 2 * r->n;
+    const double R = r->R, t_r = r->par.t_r;
     double sum_c = 0, sum_s = 0;
-    size_t k_first = 1, k_last = 0; /* the first and the last point in contact */
-    double e_pts = 0; /* their largest tread compression u - w (see e_max below) */
+    size_t k_first = 1, k_last = 0;
+    double e_pts = 0;
     for (size_t k = 0; k < r->n_pts; ++k) {
         tirenv_ring_point *q = &r->pts[k];
         q->f = 0;
@@ -900,7 +900,7 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
         }
         sum_c += q->f * q->cs;
         sum_s += q->f * q->sn;
-        if (!dfz_dz && !T->defer) /* deferred: the right-hand side kept for the request */
+        if (!rhs) /* deferred: the right-hand side kept for the request */
             continue;
         /* -d(grad E)/dz at fixed x: the ground moving along the point's cut (q->ddt), and, at
          * a vertex's cut, the cut itself moving (its place s and its piece's weight). */
@@ -934,12 +934,13 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
                 q->e = q->d == -INFINITY ? -INFINITY : q->d - at_u(r, q, x);
             }
     }
-    *fz = sum_c;
-    *fx = -sum_s;
-    if (dfz_dz)
-        *dfz_dz = slope_in(r, x, xt);
-    /* The diagnostics: the largest tread compression u - w, at the nodes and the points in
-     * contact (the free nodes' from xw). */
+    *p = (point_sums){sum_c, sum_s, k_first, k_last, e_pts};
+}
+
+/* The diagnostics' largest tread compression u - w: at the window's n nodes (xw, the free
+ * ones' too) and at the points in contact (e_pts), at most the tread's thickness t_r. */
+static double tread_compression(const double xw[], size_t n, double e_pts, double t_r)
+{
     double e_max = 0; /* "v > e_max": fmax(e_max, v) without its call, the same bits (e_max
                        * is never NaN; a NaN v is passed over; of two zeros the first kept:
                        * so the largest, in any order, the points' taken in the force pass) */
@@ -950,22 +951,81 @@ static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double 
     }
     if (e_pts > e_max)
         e_max = e_pts;
-    r->tread_max = fmin(e_max, t_r);
+    return fmin(e_max, t_r);
+}
+
+static int solve_shear(tirenv_ring *r, double x_c, double z, double *fx, double *fz,
+                       double *dfz_dz, int start, tirenv_diag *diag)
+{
+    tirenv_ring_tread *T = r->tread;
+    const size_t n = r->n, lo = r->lo, hi = lo + n - 1;
+    if (n + 4 > r->M)
+        return tirenv_error(diag, TIRENV_ENOCONV, "", 0, "ring",
+                            "the contact window of %zu nodes leaves too few of the %zu outside "
+                            "it", n, r->M);
+    set_kappa(r, x_c);
+    T->deferred = 0;
+    double *xw = T->xw;
+    if (start == START_PREDICTED)
+        warm_predict(r, x_c, z, xw);
+    solved_span s = {0, 0, 0, 0, 0}; /* set by solve_span where it returns 0 */
+    size_t j_out = 0;
+    const int st = solve_span(r, x_c, start, dfz_dz != NULL, &s, &j_out, diag);
+    if (st)
+        return st;
+    if (!s.sub && T->soft) {
+        const double w_out = tirenv_ring__outside_whole(r, xw, &j_out);
+        /* Beyond the lower half (ring.c's window with the law): a tall obstacle pressing the
+         * belt in far from the patch. Solved again on all of the ring but its top nodes,
+         * pulled out (no further: their condensation needs some exterior). */
+        const size_t h = r->M / 2 - 4;
+        if (!(w_out <= T->law.w_0) && (lo > r->i0 - h || hi < r->i0 + h)) {
+            r->lo = r->i0 - h;
+            r->n = 2 * h + 1;
+            return tirenv_ring__solve_shear(r, x_c, z, fx, fz, dfz_dz, diag);
+        }
+        if (!(w_out <= T->law.w_0))
+            return tirenv_error(diag, TIRENV_ERANGE, "", 0, "CARCASS_LINEAR_DEFLECTION",
+                                "the belt outside the %zu-node contact window is pressed in "
+                                "%.4g m at node %zu (theta %.4g rad), beyond the carcass's "
+                                "linear range %.4g m, which the window's condensation needs",
+                                n, w_out, j_out, r->theta[j_out], T->law.w_0);
+    }
+    T->n_sub += s.sub != 0;
+    /* The next sampling's far stretches are those of this sub-window (ring_ground.c). */
+    r->near_ok = s.sub && !T->lugs && !T->whole && !T->soft;
+    r->near_a = s.a, r->near_b = s.b;
+    /* The window's free points, clear of the ground, were written by free_clear. */
+    warm_keep(r, z, xw, dfz_dz != NULL);
+    /* The forces and dx/dz on the nodes solved (the whole window or a sub-window). */
+    window_save sv;
+    enter(r, &sv, s.a, s.b, s.k0, s.k1);
+    const double *x = T->x;
+    double *xt = T->xt;
+    for (size_t i = 0; i < 2 * r->n + T->m; ++i)
+        xt[i] = 0;
+    point_sums p;
+    point_forces(r, x, xt, dfz_dz || T->defer, &p);
+    *fz = p.sum_c;
+    *fx = -p.sum_s;
+    if (dfz_dz)
+        *dfz_dz = slope_in(r, x, xt);
+    r->tread_max = tread_compression(xw, n, p.e_pts, r->par.t_r);
     leave(r, &sv);
-    r->k_first = k_first + k0; /* the window's points outside pts[k0 .. k1) are free */
-    r->k_last = k_last + k0;
+    r->k_first = p.k_first + s.k0; /* the window's points outside pts[k0 .. k1) are free */
+    r->k_last = p.k_last + s.k0;
     T->last_x = x_c, T->last_z = z, T->last_ok = 1;
-    T->span[0] = k_first <= k_last;
-    if (k_first <= k_last) {
+    T->span[0] = p.k_first <= p.k_last;
+    if (p.k_first <= p.k_last) {
         T->span[1] = (double)r->pts[r->k_first].j;
         T->span[2] = (double)(r->pts[r->k_last].j + 1);
         T->span[3] = x_c;
     }
     if (dfz_dz)
-        slope_out(r, a, b, sub, z, x_c);
+        slope_out(r, s.a, s.b, s.sub, z, x_c);
     T->deferred = !dfz_dz && T->defer;
     if (T->deferred)
-        T->dfr = (deferred_window){a, b, k0, k1, sub, z, x_c};
+        T->dfr = (deferred_window){s.a, s.b, s.k0, s.k1, s.sub, z, x_c};
     return 0;
 }
 
