@@ -209,77 +209,65 @@ static inline void held_run(const size_t ch[], size_t n_ch, size_t f0, size_t f1
  * a new x; test_inner_residual_bound). (The helpers above are forced inline: called apart,
  * they cost more in calls than the residuals they spare.) */
 
-int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
-                              const tirenv_profile *p, double x, double z, size_t a, size_t b,
-                              const double d[], const double dw[], double w[], double pe[],
-                              double obstacle[], size_t *contacts)
+/* The working rows between elements at z, as the update carries them. */
+typedef struct {
+    size_t n;                                       /* rows */
+    size_t i[TIRENV_SPRINGS__SCHUR_MAX];            /* each row's elements i and i + 1 */
+    double ga[TIRENV_SPRINGS__SCHUR_MAX], gb[TIRENV_SPRINGS__SCHUR_MAX]; /* weights a(t), b(t) */
+    double cmp[TIRENV_SPRINGS__SCHUR_MAX];          /* the tread's compliance c(t), m/N */
+    double h[TIRENV_SPRINGS__SCHUR_MAX];            /* R0 - |V - C|, m */
+    double lam[TIRENV_SPRINGS__SCHUR_MAX];          /* the reaction, N */
+    double res[TIRENV_SPRINGS__SCHUR_MAX];          /* the row's equation's residual, m */
+} upd_rows;
+
+/* Each element's own row at z over [f0, f1]: 0 outside the rays [ra, rb], d inside (>= 0 as
+ * the caller gives it), raised where a vertex on an element stands higher; and which row
+ * (c->upd_pin: the vertex, or -1 - e for the ray), pin written only on the elements a vertex
+ * row sits on (a pass over the span cost some 400 instructions an update; the others are
+ * their rays'). Where the rays cover the span and no vertex stands higher, d itself (a copy
+ * of it cost some 450 instructions an update); else in three pieces (zeros, a copy of d,
+ * zeros) in c->upd_w. */
+static const double *own_rows(tirenv_springs__cc *c, const double d[], size_t ra, size_t rb)
 {
-    const size_t f0 = c->f0, f1 = c->f1, N = T->N;
-    const double dz = z - c->base_z;
-    /* From the tangent a hair from the base, or from the state tirenv_springs__cc_root
-     * solved for at its height (Newton's step, which it chose). The corrections below need
-     * the working rows between elements on the Schur path. */
-    const int pred = c->pred_ok && z == c->pred_z && x == c->pred_x;
-    if (!c->base_ok || !c->use_schur || f0 > f1 || a > b ||
-        !(pred || (fabs(dz) <= upd_dz_max && !c->base_pins)))
-        return 0;
-    const double R0 = T->R0, tol = 1e-12 * R0, tol_eq = eq_tol * R0;
-    const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
-    /* Every ray that meets the ground, and every vertex row, within the base's span: w
-     * beyond it is the free chains', which no row held at the base. */
-    const size_t o0 = f0 <= b ? f0 : b + 1, o1 = f1 + 1 > a ? f1 + 1 : a; /* [a, o0), [o1, b] */
-    if ((o0 > a && any_positive(d + a, o0 - a)) || (o1 <= b && any_positive(d + o1, b + 1 - o1)))
-        return 0;
-    if (tirenv_springs__cc_vertex_rows(c, T, p, x, z, a, b, d))
-        return 0;
+    const size_t f0 = c->f0, f1 = c->f1, nv = c->n_vrows;
     const tirenv_springs__cc_row *V = c->vrows;
-    const size_t nv = c->n_vrows;
-    if (nv > 0 && (V[0].i < f0 || V[nv - 1].j > f1)) /* in order of vertex, hence of sector */
-        return 0;
-    /* Each element's own row at z: its ray's penetration, or a vertex on its ray standing
-     * higher (as the layout picks it), and which (pin: the vertex, or -1 - e for the ray),
-     * pin written only on the elements a vertex row sits on (a pass over the span cost
-     * some 400 instructions an update; the others are their rays'). */
-    /* w and pe are made in place (copies into them cost some 220 instructions an update): a
-     * refused update leaves them to the full evaluation that follows, which writes both over
-     * its span before it reads them (the tips are read only over the span of the evaluation
-     * that gave them) */
-    double *wn = w, *res = c->raise;
     long *pin = c->upd_pin;
-    const size_t ra = a > f0 ? a : f0, rb = b < f1 ? b : f1;
     for (size_t k = 0; k < nv; ++k)
         if (V[k].t == 0)
             pin[V[k].i] = -1 - (long)V[k].i;
-    /* ph over [f0, f1]: 0 outside the rays [ra, rb], d inside (>= 0 as the caller gives it),
-     * raised where a vertex on an element stands higher. Where the rays cover the span and
-     * no vertex stands higher, d itself (a copy of it cost some 450 instructions an update);
-     * else in three pieces (zeros, a copy of d, zeros). */
     const size_t r0 = ra <= rb ? ra : f1 + 1, r1 = ra <= rb ? rb : f1;
     int raised = r0 != f0 || r1 != f1;
     for (size_t k = 0; k < nv && !raised; ++k)
         raised = V[k].t == 0 && V[k].h > d[V[k].i];
-    const double *ph = d;
-    if (raised) {
-        double *ph_w = c->upd_w + 1;
-        for (size_t e = f0; e < r0; ++e)
-            ph_w[e] = 0;
-        if (r0 <= r1) /* d >= 0, never -0 or NaN: what max(d, 0) gives */
-            memcpy(ph_w + r0, d + r0, (r1 - r0 + 1) * sizeof *ph_w);
-        for (size_t e = r1 + 1; e <= f1; ++e)
-            ph_w[e] = 0;
-        for (size_t k = 0; k < nv; ++k)
-            if (V[k].t == 0 && V[k].h > ph_w[V[k].i]) {
-                ph_w[V[k].i] = V[k].h;
-                pin[V[k].i] = V[k].id;
-            }
-        ph = ph_w;
-    }
-    /* w: the held elements on their row (the same row as the base's), the free ones along
-     * the tangent, each above its own row. wpos marks the held elements of the base's last
-     * KKT system, its final working set. A held element on its ray's row must have no
-     * vertex standing higher on it now; one on a vertex's (held_vertex of them, counted by
-     * the solve), that vertex, which the pass over the vertex rows after this one counts
-     * (n_same): so this pass reads no row. */
+    if (!raised)
+        return d;
+    double *ph_w = c->upd_w + 1;
+    for (size_t e = f0; e < r0; ++e)
+        ph_w[e] = 0;
+    if (r0 <= r1) /* d >= 0, never -0 or NaN: what max(d, 0) gives */
+        memcpy(ph_w + r0, d + r0, (r1 - r0 + 1) * sizeof *ph_w);
+    for (size_t e = r1 + 1; e <= f1; ++e)
+        ph_w[e] = 0;
+    for (size_t k = 0; k < nv; ++k)
+        if (V[k].t == 0 && V[k].h > ph_w[V[k].i]) {
+            ph_w[V[k].i] = V[k].h;
+            pin[V[k].i] = V[k].id;
+        }
+    return ph_w;
+}
+
+/* w at z: the held elements on their row (the same row as the base's), the free ones along
+ * the tangent (or as root_at's state has them, pred), each above its own row; 0 if one is
+ * not. c->wpos marks the held elements of the base's last KKT system, its final working
+ * set. A held element on its ray's row must have no vertex standing higher on it now; one on
+ * a vertex's (held_vertex of them, counted by the solve), that vertex, which the pass over
+ * the vertex rows after this one counts (n_same): so this pass reads no row. */
+static int held_at(const tirenv_springs__cc *c, const double ph[], double wn[], int pred,
+                   double dz, const double dw[])
+{
+    const size_t f0 = c->f0, f1 = c->f1, nv = c->n_vrows;
+    const tirenv_springs__cc_row *V = c->vrows;
+    const long *pin = c->upd_pin;
     const size_t *wpos = c->wpos, *pin_row = c->pin_row;
     const tirenv_springs__cc_row *rows = c->rows;
     const double *base_w = c->base_w + 1;
@@ -316,43 +304,61 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
                        * by the start at a new x, with no row at the base) */
         ++n_same;
     }
-    if (n_same != c->held_vertex)
-        return 0; /* an element held on a vertex at the base stands on its ray now */
-    /* The working rows between elements at z: the same vertex in the same sector, its
-     * weights at its new t, its reaction along the tangent. */
-    const size_t n_s = c->n_schur;
-    size_t row_i[TIRENV_SPRINGS__SCHUR_MAX];
-    double ga[TIRENV_SPRINGS__SCHUR_MAX], gb[TIRENV_SPRINGS__SCHUR_MAX];
-    double cmp[TIRENV_SPRINGS__SCHUR_MAX], h[TIRENV_SPRINGS__SCHUR_MAX];
-    double lam[TIRENV_SPRINGS__SCHUR_MAX], q_res[TIRENV_SPRINGS__SCHUR_MAX];
-    for (size_t q = 0; q < n_s; ++q) {
-        const size_t r = c->order[c->schur_pos[q]] - N;
-        const tirenv_springs__cc_row *R = &c->rows[r];
-        const size_t k = R->t > 0 ? find_vrow(V, nv, R->id) : SIZE_MAX;
-        if (k == SIZE_MAX || V[k].t == 0 || V[k].i != R->i)
+    return n_same == c->held_vertex; /* else an element held on a vertex at the base stands
+                                      * on its ray now */
+}
+
+/* The working rows between elements at z: the same vertex in the same sector, its weights at
+ * its new t, its reaction along the tangent (or root_at's, pred); 0 if a row is not. */
+static int rows_at(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int pred,
+                   double dz, upd_rows *R)
+{
+    const tirenv_springs__cc_row *V = c->vrows;
+    const size_t nv = c->n_vrows;
+    R->n = c->n_schur;
+    for (size_t q = 0; q < R->n; ++q) {
+        const size_t r = c->order[c->schur_pos[q]] - T->N;
+        const tirenv_springs__cc_row *W = &c->rows[r];
+        const size_t k = W->t > 0 ? find_vrow(V, nv, W->id) : SIZE_MAX;
+        if (k == SIZE_MAX || V[k].t == 0 || V[k].i != W->i)
             return 0;
         double da, db;
-        tirenv_springs__cc_weights(T, V[k].t, &ga[q], &gb[q], &da, &db);
-        cmp[q] = tirenv_springs__cc_compliance(T, ga[q], gb[q]);
-        h[q] = V[k].h;
-        row_i[q] = R->i;
-        lam[q] = pred ? c->pred_lam[q] : c->lambda[r] + dz * c->dlambda[r];
+        tirenv_springs__cc_weights(T, V[k].t, &R->ga[q], &R->gb[q], &da, &db);
+        R->cmp[q] = tirenv_springs__cc_compliance(T, R->ga[q], R->gb[q]);
+        R->h[q] = V[k].h;
+        R->i[q] = W->i;
+        R->lam[q] = pred ? c->pred_lam[q] : c->lambda[r] + dz * c->dlambda[r];
     }
-    /* The KKT equations of the working set at z, K w = G^T lambda on the free elements and
-     * G w + C lambda = h on the rows between elements, hold along the tangent but for the
-     * rows' curvature in z; their residual is corrected with the base's factors (the
-     * system at z differs from the base's only by the rows' weights, t moving some 200
-     * times dz/m: a few per cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off,
-     * or the update is given up. */
-    double *x_c = c->w_try, *pq = pe;
-    /* with the equations: the reactions' least (the held elements' are their residuals of
-     * K w = G^T lambda; the largest, the rows' here and the held ones' after, only where the
-     * least is below 0), and whether each free element is above its own row
-     * (its ray's, or a vertex's on it); each element's own reaction into pq (0 on the free
-     * ones; a pass of its own cost some 700 instructions) */
+    return 1;
+}
+
+/* What the KKT equations' last pass found. */
+typedef struct {
+    double l_max, l_min;  /* the rows' largest |reaction| and every reaction's least, N */
+    size_t n_c;           /* the held elements with a reaction > 0 */
+} upd_check;
+
+/* The KKT equations of the working set at z, K w = G^T lambda on the free elements and
+ * G w + C lambda = h on the rows between elements, hold along the tangent but for the rows'
+ * curvature in z; their residual is corrected with the base's factors (the system at z
+ * differs from the base's only by the rows' weights, t moving some 200 times dz/m: a few per
+ * cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off, or the update is given up
+ * (0; 0 too where a free element is below its own row). With the equations: the reactions'
+ * least (the held elements' are their residuals of K w = G^T lambda; the largest, the rows'
+ * here and the held ones' after, only where the least is below 0), and whether each free
+ * element is above its own row (its ray's, or a vertex's on it); each element's own reaction
+ * into pq (0 on the free ones; a pass of its own cost some 700 instructions). */
+static int settle(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, const double ph[],
+                  double wn[], double pq[], upd_rows *R, int pred, upd_check *out)
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, n_s = R->n;
+    const double R0 = T->R0, tol = 1e-12 * R0, tol_eq = eq_tol * R0;
+    const double k_ir = T->k_ir, tol_k = eq_tol * R0 * (T->k_r + 2 * k_ir);
+    const size_t *ch = c->chains, n_ch = c->n_chains, *wpos = c->wpos;
+    double *res = c->raise, *x_c = c->w_try;
     double l_max = 0, l_min = 0;
     int above = 1;
-    size_t n_c = 0; /* the held elements with a reaction > 0 */
+    size_t n_c = 0;
     /* part: the first pass from root_at's state takes K w only where the right-hand side or
      * w differs from that solve's (the held elements, the chains' ends, the working rows'
      * elements) and checks |w| <= tol_w on the chains instead (above); if anything is off,
@@ -371,7 +377,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             }
             k_times_w(res, wn, diag, k_ir, f0, f1, lo, f1);
             for (size_t q = 0; q < n_s; ++q)
-                k_times_w(res, wn, diag, k_ir, f0, f1, row_i[q], row_i[q] + 1);
+                k_times_w(res, wn, diag, k_ir, f0, f1, R->i[q], R->i[q] + 1);
         } else {
             k_times_w(res, wn, diag, k_ir, f0, f1, f0, f1);
         }
@@ -382,13 +388,14 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         int ok = 1;
         l_max = l_min = 0;
         for (size_t q = 0; q < n_s; ++q) {
-            const size_t i = row_i[q];
-            res[i] -= ga[q] * lam[q];
-            res[i + 1] -= gb[q] * lam[q];
-            q_res[q] = ga[q] * wn[i] + gb[q] * wn[i + 1] + cmp[q] * lam[q] - h[q];
-            ok = ok && fabs(q_res[q]) <= tol_eq;
-            l_max = fabs(lam[q]) > l_max ? fabs(lam[q]) : l_max;
-            l_min = lam[q] < l_min ? lam[q] : l_min;
+            const size_t i = R->i[q];
+            res[i] -= R->ga[q] * R->lam[q];
+            res[i + 1] -= R->gb[q] * R->lam[q];
+            R->res[q] = R->ga[q] * wn[i] + R->gb[q] * wn[i + 1] + R->cmp[q] * R->lam[q] -
+                        R->h[q];
+            ok = ok && fabs(R->res[q]) <= tol_eq;
+            l_max = fabs(R->lam[q]) > l_max ? fabs(R->lam[q]) : l_max;
+            l_min = R->lam[q] < l_min ? R->lam[q] : l_min;
         }
         /* the free elements chain by chain (the base's factor's chains: wpos' free ones),
          * each a loop without a branch; then the held runs between them */
@@ -403,7 +410,7 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             }
         }
         for (size_t q = 0; part && q < n_s; ++q)
-            for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e)
+            for (size_t e = R->i[q]; e <= R->i[q] + 1; ++e)
                 off |= wpos[e] != SIZE_MAX && fabs(res[e]) > tol_k;
         ok &= !off;
         above = !below;
@@ -425,34 +432,48 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         for (size_t e = f0; e <= f1; ++e)
             x_c[e] = wpos[e] == SIZE_MAX ? 0 : -res[e];
         for (size_t q = 0; q < n_s; ++q)
-            q_res[q] = -q_res[q];
-        tirenv_springs__cc_schur_solve_at(c, T, x_c, q_res);
+            R->res[q] = -R->res[q];
+        tirenv_springs__cc_schur_solve_at(c, T, x_c, R->res);
         for (size_t e = f0; e <= f1; ++e)
             if (wpos[e] != SIZE_MAX)
                 wn[e] += x_c[e];
         for (size_t q = 0; q < n_s; ++q)
-            lam[q] += q_res[q];
+            R->lam[q] += R->res[q];
     }
-    /* Every reaction >= 0, by the solve's own rule; every free element above its row. */
-    if (!above)
-        return 0;
-    if (l_min < 0) { /* the largest |reaction|, the held ones' from pq (l_min >= 0 passes) */
-        for (size_t q = 0; q <= n_ch; ++q) {
-            size_t h0, h1;
-            held_run(ch, n_ch, f0, f1, q, &h0, &h1);
-            for (size_t e = h0; e < h1; ++e)
-                l_max = fabs(pq[e]) > l_max ? fabs(pq[e]) : l_max;
-        }
-        if (l_min < -1e-12 * l_max)
-            return 0;
+    *out = (upd_check){l_max, l_min, n_c};
+    return above;
+}
+
+/* Every reaction >= 0, by the solve's own rule: where the least is below 0, within 1e-12 of
+ * the largest |reaction|, the held ones' from pq (l_min >= 0 passes). */
+static int reactions_hold(const tirenv_springs__cc *c, const double pq[], const upd_check *k)
+{
+    if (!(k->l_min < 0))
+        return 1;
+    const size_t *ch = c->chains, n_ch = c->n_chains;
+    double l_max = k->l_max;
+    for (size_t q = 0; q <= n_ch; ++q) {
+        size_t h0, h1;
+        held_run(ch, n_ch, c->f0, c->f1, q, &h0, &h1);
+        for (size_t e = h0; e < h1; ++e)
+            l_max = fabs(pq[e]) > l_max ? fabs(pq[e]) : l_max;
     }
-    /* Every other vertex row between elements holds: below the chord of its tips less the
-     * bounds of the weights (as the scan drops vertices, with w for the rays' penetrations),
-     * else by its weights. (Those on an element were checked with the pins.) */
-    for (size_t k = 0; k < nv; ++k) {
+    return !(k->l_min < -1e-12 * l_max);
+}
+
+/* Every other vertex row between elements holds: below the chord of its tips less the bounds
+ * of the weights (as the scan drops vertices, with w for the rays' penetrations), else by its
+ * weights. (Those on an element were checked with the pins; the working rows are equalities,
+ * checked in settle.) */
+static int others_hold(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                       const double wn[], size_t n_s)
+{
+    const tirenv_springs__cc_row *V = c->vrows;
+    const double tol = 1e-12 * T->R0;
+    for (size_t k = 0; k < c->n_vrows; ++k) {
         const tirenv_springs__cc_row *Q = &V[k];
         if (Q->t == 0 || (n_s > 0 && tirenv_springs__long_in(c->warm_ids, c->n_warm, Q->id)))
-            continue; /* a working row: an equality above */
+            continue;
         const double t = Q->t, wi = wn[Q->i], wj = wn[Q->j];
         const double chord = (1 - t) * wi + t * wj - fabs(wj - wi) * T->tau_dev;
         if (chord > 0 && Q->h <= chord * (1 + T->ab_lo * t * (1 - t)))
@@ -462,17 +483,25 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
         if (a_t * wi + b_t * wj - Q->h < -tol)
             return 0;
     }
-    /* Accepted: the outputs as the solve gives them (pe: each element's net reaction). */
-    /* obstacle = ph, which is >= 0 and never -0 or NaN (as the layout's pin_h): what
-     * max(ph, 0) gives, copied (where ph is d and d is obstacle, as the model passes them,
-     * already there) */
+    return 1;
+}
+
+/* Accepted: the outputs as the solve gives them (pe: each element's net reaction, the
+ * rows' shares added; the contacts: n_c counted each element by its own reaction, the rows'
+ * elements, at most two a row, some shared, counted again by pe as it ends; w beyond the
+ * span's ends from the free chains). obstacle = ph, which is >= 0 and never -0 or NaN (as
+ * the layout's pin_h): what max(ph, 0) gives, copied (where ph is d and d is obstacle, as the
+ * model passes them, already there). */
+static void accept(const tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                   const double ph[], double obstacle[], double w[], double pe[],
+                   const upd_rows *R, size_t n_c, size_t *contacts)
+{
+    const size_t f0 = c->f0, f1 = c->f1, N = T->N, n_s = R->n;
     if (ph != obstacle)
         memcpy(obstacle + f0, ph + f0, (f1 - f0 + 1) * sizeof *obstacle);
-    /* the contacts: n_c counted each element by its own reaction; the rows' elements (at
-     * most two a row, some shared) counted again by pe as it ends */
     size_t el[2 * TIRENV_SPRINGS__SCHUR_MAX], n_el = 0;
     for (size_t q = 0; q < n_s; ++q)
-        for (size_t e = row_i[q]; e <= row_i[q] + 1; ++e) {
+        for (size_t e = R->i[q]; e <= R->i[q] + 1; ++e) {
             size_t m = 0;
             while (m < n_el && el[m] != e)
                 ++m;
@@ -482,13 +511,53 @@ int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_ti
             }
         }
     for (size_t q = 0; q < n_s; ++q) {
-        pe[row_i[q]] += ga[q] * lam[q];
-        pe[row_i[q] + 1] += gb[q] * lam[q];
+        pe[R->i[q]] += R->ga[q] * R->lam[q];
+        pe[R->i[q] + 1] += R->gb[q] * R->lam[q];
     }
     for (size_t m = 0; m < n_el; ++m)
         n_c += pe[el[m]] > 0;
     *contacts = n_c;
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
+}
+
+int tirenv_springs__cc_update(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T,
+                              const tirenv_profile *p, double x, double z, size_t a, size_t b,
+                              const double d[], const double dw[], double w[], double pe[],
+                              double obstacle[], size_t *contacts)
+{
+    const size_t f0 = c->f0, f1 = c->f1;
+    const double dz = z - c->base_z;
+    /* From the tangent a hair from the base, or from the state tirenv_springs__cc_root
+     * solved for at its height (Newton's step, which it chose). The corrections below need
+     * the working rows between elements on the Schur path. */
+    const int pred = c->pred_ok && z == c->pred_z && x == c->pred_x;
+    if (!c->base_ok || !c->use_schur || f0 > f1 || a > b ||
+        !(pred || (fabs(dz) <= upd_dz_max && !c->base_pins)))
+        return 0;
+    /* Every ray that meets the ground, and every vertex row, within the base's span: w
+     * beyond it is the free chains', which no row held at the base. */
+    const size_t o0 = f0 <= b ? f0 : b + 1, o1 = f1 + 1 > a ? f1 + 1 : a; /* [a, o0), [o1, b] */
+    if ((o0 > a && any_positive(d + a, o0 - a)) || (o1 <= b && any_positive(d + o1, b + 1 - o1)))
+        return 0;
+    if (tirenv_springs__cc_vertex_rows(c, T, p, x, z, a, b, d))
+        return 0;
+    const tirenv_springs__cc_row *V = c->vrows;
+    const size_t nv = c->n_vrows;
+    if (nv > 0 && (V[0].i < f0 || V[nv - 1].j > f1)) /* in order of vertex, hence of sector */
+        return 0;
+    /* w and pe are made in place (copies into them cost some 220 instructions an update): a
+     * refused update leaves them to the full evaluation that follows, which writes both over
+     * its span before it reads them (the tips are read only over the span of the evaluation
+     * that gave them) */
+    const double *ph = own_rows(c, d, a > f0 ? a : f0, b < f1 ? b : f1);
+    if (!held_at(c, ph, w, pred, dz, dw))
+        return 0;
+    upd_rows R;
+    upd_check k;
+    if (!rows_at(c, T, pred, dz, &R) || !settle(c, T, ph, w, pe, &R, pred, &k) ||
+        !reactions_hold(c, pe, &k) || !others_hold(c, T, w, R.n))
+        return 0;
+    accept(c, T, ph, obstacle, w, pe, &R, k.n_c, contacts);
     return 1;
 }
