@@ -523,33 +523,23 @@ int tirenv_springs__cc_pins_hold(const tirenv_springs__cc *c, const double w[], 
     return 1;
 }
 
-/* The QP on the rows laid out (tirenv_springs__cc_solve without the check of the rows the
- * hulls dropped). */
-static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double x,
-                    double z, double w[], double pe[], double obstacle[], tirenv_diag *diag)
+/* The active-set method's feasible start, into c->w_try: the last working set's minimiser, if
+ * the rows are independent; raised where rows are violated (rows have weights >= 0, so
+ * raising w satisfies them), which keeps the working set's rows that are still tight. Else a
+ * cold start from w_e = the largest h of a row on e, which satisfies every row, with no row
+ * working. *at_min where the start is its working set's minimiser; -1 out of memory. */
+static int qp_start(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, int same_rows,
+                    int *at_min)
 {
-    const size_t N = T->N;
-    c->iterations = 0;
     const size_t f0 = c->f0, f1 = c->f1, n_rows = c->n_rows;
-    const int same_rows = c->last_ok && same_as_last(c);
-    c->last_ok = 0;
-    if (f0 > f1) {
-        c->n_warm = 0;
-        memset(c->warm_pin, 0, N);
-        return TIRENV_OK;
-    }
     const double tol = 1e-12 * T->R0;
     double *wc = c->w_try, *wq = c->step, *raise = c->raise;
-    /* Warm start: the last working set's minimiser, if the rows are independent; raised
-     * where rows are violated (rows have weights >= 0, so raising w satisfies them), which
-     * keeps the working set's rows that are still tight. Else a cold start from w_e = the
-     * largest h of a row on e, which satisfies every row, with no row working. */
     if (!same_rows) /* else in_w holds the last final set, which warm_set would give */
         warm_set(c);
-    int at_min = 0, st = eqp(c, T, wq, same_rows);
+    *at_min = 0;
+    const int st = eqp(c, T, wq, same_rows);
     if (st < 0)
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
-                            "of the springs model");
+        return -1;
     if (st == 0) {
         /* Usually no row is violated (the same working set as the last evaluation's, a step
          * away): then wc = wq, and raise is not needed. */
@@ -601,7 +591,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         for (size_t e = f0; e <= f1; ++e) /* + 0 when nothing is raised: as wq + raise */
             wc[e] = violated ? wq[e] + raise[e] : wq[e] + 0.0;
         if (!violated)
-            at_min = 1;
+            *at_min = 1;
     } else {
         for (size_t e = f0; e <= f1; ++e)
             wc[e] = 0;
@@ -613,11 +603,20 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
                 wc[R->j] = fmax(wc[R->j], R->h);
         }
     }
-    /* The primal active-set method (Nocedal and Wright, Algorithm 16.3): from a feasible
-     * point, step to the working set's minimiser or to the first row in the way (which joins
-     * the set: independent of it, since the step keeps its rows); at the minimiser, release
-     * the row with the most negative reaction, or stop: every reaction >= 0. Finite without
-     * cycling for a strictly convex QP whose steps are not degenerate. */
+    return 0;
+}
+
+/* The primal active-set method (Nocedal and Wright, Algorithm 16.3) from the feasible start
+ * in c->w_try (at_min: its working set's minimiser): step to the working set's minimiser or
+ * to the first row in the way (which joins the set: independent of it, since the step keeps
+ * its rows); at the minimiser, release the row with the most negative reaction, or stop:
+ * every reaction >= 0. Finite without cycling for a strictly convex QP whose steps are not
+ * degenerate. The steps into c->iterations. */
+static int qp_iterate(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double x,
+                      double z, int at_min, tirenv_diag *diag)
+{
+    const size_t f0 = c->f0, f1 = c->f1, n_rows = c->n_rows;
+    double *wc = c->w_try, *wq = c->step, *raise = c->raise;
     const size_t max_iter = 3 * n_rows + 10;
     size_t it = 0;
     for (;; ++it) {
@@ -627,7 +626,7 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
                                 "%zu) did not settle in %zu active-set steps at x = %.9g m, "
                                 "z = %.9g m", n_rows, f0, f1, max_iter, x, z);
         if (!at_min) {
-            st = eqp(c, T, wq, 0);
+            const int st = eqp(c, T, wq, 0);
             if (st)
                 return tirenv_error(diag, st < 0 ? TIRENV_ENOMEM : TIRENV_ENOCONV, "", 0,
                                     "ELEMENT_ANGLE",
@@ -685,19 +684,23 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
         at_min = 0;
     }
     c->iterations = it + 1;
-    if (reserve_warm(c))
-        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
-                            "of the springs model");
-    /* w, pe = +0 and obstacle = pin_h, which is >= 0 and never -0 or NaN (the rays' d > 0,
-     * else +0, or a higher vertex's h): what max(pin_h, 0) gives, copied */
+    return TIRENV_OK;
+}
+
+/* The solution as the model takes it: w, pe = +0 and obstacle = pin_h, which is >= 0 and
+ * never -0 or NaN (the rays' d > 0, else +0, or a higher vertex's h): what max(pin_h, 0)
+ * gives, copied. Then one pass: the rows out of the set get no reaction, the others load
+ * their tips (a row with no reaction would add 0, which leaves pe as it is: pe starts at +0
+ * and no sum of nonzero terms gives -0), and the final set is kept for the next solve's warm
+ * start. */
+static void qp_keep(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double w[],
+                    double pe[], double obstacle[])
+{
+    const size_t N = T->N, f0 = c->f0, f1 = c->f1, n_rows = c->n_rows;
     const size_t n_span = f1 - f0 + 1;
-    memcpy(w + f0, wc + f0, n_span * sizeof *w);
+    memcpy(w + f0, c->w_try + f0, n_span * sizeof *w);
     memset(pe + f0, 0, n_span * sizeof *pe);
     memcpy(obstacle + f0, c->pin_h + f0, n_span * sizeof *obstacle);
-    /* One pass: the rows out of the set get no reaction, the others load their tips (a
-     * row with no reaction would add 0, which leaves pe as it is: pe starts at +0 and no
-     * sum of nonzero terms gives -0), and the final set is kept for the next solve's warm
-     * start. */
     memset(c->warm_pin, 0, N);
     size_t n_warm = 0;
     /* The workspace's arrays in locals: the stores to pe and lambda would make them be
@@ -737,6 +740,32 @@ static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, dou
     keep_last(c);
     w[(long)f0 - 1] = f0 > 0 ? T->lq[f0 - 1] * w[f0] : 0;
     w[f1 + 1] = f1 + 1 < N ? T->rq[f1 + 1] * w[f1] : 0;
+}
+
+/* The QP on the rows laid out (tirenv_springs__cc_solve without the check of the rows the
+ * hulls dropped). */
+static int qp_solve(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, double x,
+                    double z, double w[], double pe[], double obstacle[], tirenv_diag *diag)
+{
+    c->iterations = 0;
+    const int same_rows = c->last_ok && same_as_last(c);
+    c->last_ok = 0;
+    if (c->f0 > c->f1) {
+        c->n_warm = 0;
+        memset(c->warm_pin, 0, T->N);
+        return TIRENV_OK;
+    }
+    int at_min;
+    if (qp_start(c, T, same_rows, &at_min) < 0)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
+                            "of the springs model");
+    const int st = qp_iterate(c, T, x, z, at_min, diag);
+    if (st)
+        return st;
+    if (reserve_warm(c))
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory for the contact "
+                            "of the springs model");
+    qp_keep(c, T, w, pe, obstacle);
     return TIRENV_OK;
 }
 
