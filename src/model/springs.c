@@ -777,19 +777,20 @@ static void forget_start(tirenv_springs *s)
     s->cc.pred_ok = 0;
 }
 
-int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
-                          double G, double *z)
+/* Whether a start is tried at x: from the closed form's pins only where the last position
+ * (last_evals evaluations, its start taken or not) needed Newton's steps or a start: where it
+ * met the load at its warm start (level ground beside an obstacle) the warm start is as good,
+ * and the fan the start casts is spent. The base is made from them here, once (the next
+ * position's start takes it as it stands). Then only at a new x, after a QP solve at another
+ * on this ground whose held elements sit on their rays' rows, and only from a position at
+ * most half the model's reach back: only what lies within the reach of x (the deformable
+ * models', whose window a streamed road keeps) is read of the ground the last position left
+ * (its rows' vertices, its rays' faces), which a streamed road's window holds (the carry
+ * moved into it, tirenv_springs__reprofile), so that whole and streamed sweeps start alike. */
+static int start_wanted(tirenv_springs *s, const tirenv_profile *prof, double x,
+                        size_t last_evals, int last_taken)
 {
     tirenv_springs__cc *c = &s->cc;
-    /* The last position's evaluations, and whether its start held. */
-    const size_t last_evals = s->evals;
-    const int last_taken = s->start_taken;
-    s->evals = 0;
-    s->start_taken = 0;
-    /* From the closed form's pins only where the last position needed Newton's steps or
-     * a start: where it met the load at its warm start (level ground beside an obstacle)
-     * the warm start is as good, and the fan the start casts is spent. The base is made
-     * from them here, once (the next position's start takes it as it stands). */
     if (s->pins_ok && !c->base_ok) {
         if (last_evals < 2 && !last_taken)
             return 0;
@@ -798,59 +799,58 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
             !tirenv_springs__cc_base_pins(c, &s->cc_tire, s->a, s->b, s->active, s->pins_z))
             return 0;
     }
-    /* At a new x, after a QP solve at another on this ground whose held elements sit on
-     * their rays' rows. */
     if (s->par.contact != TIRENV_SPRINGS_CONTINUOUS || !c->base_ok || s->upd_x == x ||
         s->upd_serial != prof->serial || c->f0 > c->f1 || c->held_vertex > 0 ||
         !c->use_schur)
         return 0;
     if (s->memo_serial != prof->serial)
         return 0;
-    /* Only what lies within the model's reach of x (the deformable models', whose window a
-     * streamed road keeps) is read of the ground the last position left (its rows'
-     * vertices, its rays' faces), and only from a position at most half of it back: a
-     * streamed road's window holds all of that (the carry moved into it,
-     * tirenv_springs__reprofile), so that whole and streamed sweeps start alike. */
-    const double R0 = s->par.R0, reach = TIRENV_MODEL__REACH * R0;
-    if (!(fabs(x - s->eval_x) <= 0.5 * reach))
+    return fabs(x - s->eval_x) <= 0.5 * (TIRENV_MODEL__REACH * s->par.R0);
+}
+
+/* A working row's vertex that crossed an element's ray (the root's first question, asked
+ * before the held rays' faces are found for it): the row moved into the sector beyond, the
+ * crossed element's ray onto the vertex's other face (springs_root.c); where a row cannot
+ * move, no start (0: the base's rows are no longer its own). */
+static int rows_carried(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                        const tirenv_springs__face_window *fw)
+{
+    tirenv_springs__cc *c = &s->cc;
+    if (tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0))
+        return 1;
+    size_t crossed[TIRENV_SPRINGS__SCHUR_MAX], n_crossed;
+    long vertex[TIRENV_SPRINGS__SCHUR_MAX];
+    if (!tirenv_springs__cc_rows_across(c, &s->cc_tire, prof, x, z0, crossed, vertex,
+                                        &n_crossed)) {
+        c->base_ok = 0;
+        ++s->start_sector;
         return 0;
-    tirenv_springs__face_window fw;
-    tirenv_springs__face_window_at(prof, x - reach, x + reach, &fw);
-    for (size_t q = 0; q < c->n_schur; ++q)
-        if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
-            return 0;
-    set_origin(s, prof, x);
-    /* A working row's vertex that crossed an element's ray (the root's first question, asked
-     * before the held rays' faces are found for it): the row moved into the sector beyond,
-     * the crossed element's ray onto the vertex's other face (springs_root.c); where a row
-     * cannot move, no start (the base's rows are no longer its own). */
-    if (!tirenv_springs__cc_rows_inside(c, &s->cc_tire, prof, x, z0)) {
-        size_t crossed[TIRENV_SPRINGS__SCHUR_MAX], n_crossed;
-        long vertex[TIRENV_SPRINGS__SCHUR_MAX];
-        if (!tirenv_springs__cc_rows_across(c, &s->cc_tire, prof, x, z0, crossed, vertex,
-                                            &n_crossed)) {
+    }
+    for (size_t m = 0; m < n_crossed; ++m) {
+        const size_t e = crossed[m];
+        if (!faces_near(fw, vertex[m])) {
             c->base_ok = 0;
             ++s->start_sector;
             return 0;
         }
-        for (size_t m = 0; m < n_crossed; ++m) {
-            const size_t e = crossed[m];
-            if (!faces_near(&fw, vertex[m])) {
-                c->base_ok = 0;
-                ++s->start_sector;
-                return 0;
-            }
-            if (e >= s->memo_a && e <= s->memo_b)
-                tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, vertex[m], z0,
-                                            &s->memo[e]);
-        }
-        s->upd_x = NAN; /* the base's tangent holds its own rows, no longer these */
-        ++s->start_across;
+        if (e >= s->memo_a && e <= s->memo_b)
+            tirenv_springs__memo_across(prof, &s->origin, &s->rays, e, vertex[m], z0,
+                                        &s->memo[e]);
     }
-    /* A ground vertex that crossed the ray of a held element at a run's end (its ray passed
-     * the far end of its face): the element is let go and the vertex's row between it and its
-     * neighbour enters the set, as for a working row carried across (springs_root.c). Not
-     * from the closed form's pins, whose held rays are cast again at the new x below. */
+    s->upd_x = NAN; /* the base's tangent holds its own rows, no longer these */
+    ++s->start_across;
+    return 1;
+}
+
+/* A ground vertex that crossed the ray of a held element at a run's end (its ray passed the
+ * far end of its face): the element is let go and the vertex's row between it and its
+ * neighbour enters the set, as for a working row carried across (springs_root.c); at most one
+ * a run of free elements (the chains change). Not from the closed form's pins, whose held
+ * rays are cast again at the new x by the start's rounds. 0 where the base was lost. */
+static int run_end_enters(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                          const tirenv_springs__face_window *fw)
+{
+    tirenv_springs__cc *c = &s->cc;
     for (size_t q = 0; !c->base_pins && c->n_schur < TIRENV_SPRINGS__SCHUR_MAX &&
                        q <= c->n_chains;
          ++q) {
@@ -859,7 +859,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         for (int m = 0; m < 2; ++m) {
             const size_t e = ends[m];
             if (e < c->f0 || e > c->f1 || c->wpos[e] != SIZE_MAX || e < s->memo_a ||
-                e > s->memo_b || !faces_near(&fw, s->memo[e].j))
+                e > s->memo_b || !faces_near(fw, s->memo[e].j))
                 continue;
             const long v = tirenv_springs__memo_passed(prof, &s->origin, &s->rays, e, z0,
                                                        &s->memo[e]);
@@ -876,6 +876,16 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
             break; /* (the chains changed) */
         }
     }
+    return 1;
+}
+
+/* The root at x on the working set, and the working set's changes at the patch's edges
+ * (start_rounds at most), into *z; 0 where no start holds. */
+static int root_rounds(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                       double G, const tirenv_springs__face_window *fw, double *z)
+{
+    tirenv_springs__cc *c = &s->cc;
+    const double R0 = s->par.R0;
     /* after a round's flip: the element whose own row entered the set (the others' rays
      * were found in the rounds before, at the same x and z0), or none where one left */
     size_t e_new = SIZE_MAX;
@@ -906,7 +916,7 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
             const size_t *rays = round == 0 ? c->held : &e_new, n_rays = round == 0 ? n_held : 1;
             if ((n_rays > 0 && (rays[0] < s->memo_a || rays[n_rays - 1] > s->memo_b)) ||
                 !tirenv_springs__faces_rho(prof, &s->origin, &s->rays, rays, n_rays, s->memo,
-                                           s->face, z0, &fw, s->rho, s->dd, s->pred_face))
+                                           s->face, z0, fw, s->rho, s->dd, s->pred_face))
                 return 0;
         }
         size_t q_neg;
@@ -933,14 +943,14 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
                 const size_t e = c->chains[2 * q + m];
                 h[e] = e >= s->memo_a && e <= s->memo_b
                            ? R0 - tirenv_springs__face_rho(prof, &s->origin, &s->rays, e,
-                                                           &s->memo[e], *z, &fw)
+                                                           &s->memo[e], *z, fw)
                            : NAN;
             }
         size_t e;
         int hold;
         if (!tirenv_springs__cc_pred_worst(c, &s->cc_tire, h, 1e-12 * R0, 1e-9 * G, &e,
                                            &hold))
-            break;
+            return 1;
         if (round == start_rounds || tirenv_springs__cc_pred_flip(c, &s->cc_tire, e, hold)) {
             c->pred_ok = 0;
             return 0;
@@ -949,6 +959,29 @@ int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double 
         /* the base's tangent at its x holds its own working set, no longer this one */
         s->upd_x = NAN;
     }
+}
+
+int tirenv_springs__start(tirenv_springs *s, const tirenv_profile *prof, double x, double z0,
+                          double G, double *z)
+{
+    const tirenv_springs__cc *c = &s->cc;
+    /* The last position's evaluations, and whether its start held. */
+    const size_t last_evals = s->evals;
+    const int last_taken = s->start_taken;
+    s->evals = 0;
+    s->start_taken = 0;
+    if (!start_wanted(s, prof, x, last_evals, last_taken))
+        return 0;
+    const double reach = TIRENV_MODEL__REACH * s->par.R0;
+    tirenv_springs__face_window fw;
+    tirenv_springs__face_window_at(prof, x - reach, x + reach, &fw);
+    for (size_t q = 0; q < c->n_schur; ++q)
+        if (!tirenv_springs__face_window_has(&fw, c->rows[c->order[c->schur_pos[q]] - s->N].id))
+            return 0;
+    set_origin(s, prof, x);
+    if (!rows_carried(s, prof, x, z0, &fw) || !run_end_enters(s, prof, x, z0, &fw) ||
+        !root_rounds(s, prof, x, z0, G, &fw, z))
+        return 0;
     ++s->starts;
     return 1;
 }
