@@ -525,6 +525,159 @@ int tirenv_springs__qp_first(const tirenv_springs *s, double z)
     return s->cc.between && fabs(z - s->cc.between_z) <= between_reach * s->par.R0;
 }
 
+/* The rays of [a, b] at z: each ray's memo is a proof of its own (springs_ray.c), so the rays
+ * whose memos fail at this z are walked again alone, where the last fan covers [a, b]; else
+ * the fan cast afresh. Their penetrations into s->d. 1 where no ray was walked (every one on
+ * its last face: the update below needs that). */
+static int rays_at(tirenv_springs *s, const tirenv_profile *prof, double z, size_t a,
+                   size_t b)
+{
+    size_t walked = b - a + 1;
+    if (s->ray_a <= a && b <= s->ray_b) {
+        walked = tirenv_springs__fan_update(prof, &s->origin, &s->rays, z, a, b, s->rho,
+                                            s->memo);
+    } else {
+        tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
+        s->ray_a = a;
+        s->ray_b = b;
+    }
+    s->memo_a = s->ray_a;
+    s->memo_b = s->ray_b;
+    s->memo_serial = prof->serial;
+    tirenv_springs__penetrations(s->par.R0, s->rho, s->d, a, b);
+    return walked == 0;
+}
+
+/* Newton's confirming evaluation: the last QP solve's state carried along its tangent, where
+ * the QP's conditions hold at z (the same x and ground, the rays on the same faces: reused);
+ * or at a new x, the state tirenv_springs__start proposed there on the last position's
+ * working set, its held rays on the faces it took (from the closed form's pins, whatever
+ * faces: on a road sampled at 1 mm a held ray often passes a vertex between the warm start
+ * and the root, and the update's corrections, K_FF's own solves there, find the state at z
+ * all the same; F_z is then off the load by what that ray's kink moved, and Newton goes on).
+ * 1 where it holds, with the forces and dF_z/dz written. */
+static int confirmed(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                     size_t a, size_t b, int reused, double *fx, double *fz, double *dfz_dz,
+                     size_t *contacts)
+{
+    const tirenv_springs__cc *c = &s->cc;
+    size_t n_contacts;
+    if (!(dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
+          (s->upd_x == x ? reused
+                         : c->pred_ok && c->pred_x == x && c->pred_z == z &&
+                               (c->base_pins || same_faces(s))) &&
+          tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw, s->w,
+                                    s->p, s->d, &n_contacts)))
+        return 0;
+    hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
+    /* the tips' span: the base's, which the start may have grown by an element */
+    s->a = s->cc.f0;
+    s->b = s->cc.f1;
+    /* the base's working rows (its solve's, none from the closed form's pins), as the solve
+     * had them: the next evaluation's path, whichever x it is at */
+    s->cc.between = !s->cc.base_pins && s->cc.n_warm > 0;
+    s->cc.between_z = z;
+    if (contacts)
+        *contacts = n_contacts;
+    *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
+    ++s->updates;
+    s->start_updates += s->upd_x != x;
+    return 1;
+}
+
+/* The elements with a row of their own within the rows' span [f0, f1] (none: g0 > g1), and
+ * the LCP's warm start forgetting the elements outside them, which cannot touch now. */
+static void own_span(tirenv_springs *s, size_t f0, size_t f1, size_t *g0_out, size_t *g1_out)
+{
+    const double *pin_h = s->cc.pin_h;
+    size_t g0 = f0, g1 = f1;
+    if (f0 <= f1) {
+        while (g0 <= f1 && !(pin_h[g0] > 0))
+            ++g0;
+        while (g1 > g0 && !(pin_h[g1] > 0))
+            --g1;
+    }
+    if (s->a <= s->b) {
+        for (size_t i = s->a; i <= s->b && i < g0; ++i)
+            s->active[i] = 0;
+        for (size_t i = g1 + 1 > s->a ? g1 + 1 : s->a; i <= s->b; ++i)
+            s->active[i] = 0;
+    }
+    *g0_out = g0;
+    *g1_out = g1;
+}
+
+/* The tips by the closed form between pins (section 4.4) on [g0, g1], where no row between
+ * elements is to be taken first (tirenv_springs__qp_first) and every row holds at its answer:
+ * 1, with the free chains over the rows' span [f0, f1]; else 0 (the QP's to solve). */
+static int pinned_tips(tirenv_springs *s, double z, size_t f0, size_t f1, size_t g0, size_t g1)
+{
+    const double *pin_h = s->cc.pin_h;
+    if (!(g0 <= f1 && !tirenv_springs__qp_first(s, z)))
+        return 0;
+    for (size_t e = g0; e <= g1; ++e)
+        s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
+    size_t passes;
+    if (tirenv_springs__lcp_pinned(&s->chains, g0, g1, s->d, s->w, s->p, s->active, &s->pins,
+                                   lcp_max_passes(g0, g1), &passes) != 0)
+        return 0;
+    for (size_t j = g0; j-- > f0;) /* the free chains, over the rows' span */
+        s->w[j] = s->lq[j] * s->w[j + 1];
+    for (size_t j = g1 + 1; j <= f1; ++j)
+        s->w[j] = s->rq[j] * s->w[j - 1];
+    return tirenv_springs__cc_pins_hold(&s->cc, s->w, 1e-12 * s->par.R0);
+}
+
+/* dw over [f0, f1] from the closed form's pins: d(d_i)/dz of each pinned element's row (its
+ * ray's, or the vertex's on it); the pins are the base of the next x's start where it asks
+ * for one (the base is made from them then: s->active holds them until the next
+ * evaluation). */
+static void slope_pinned(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                         size_t f0, size_t f1)
+{
+    const tirenv_springs__pins *P = &s->pins;
+    for (size_t i = P->first; P->count > 0 && i <= P->last; ++i) {
+        if (!s->active[i])
+            continue;
+        const tirenv_springs__cc_row *R = &s->cc.rows[s->cc.pin_row[i]];
+        s->dd[i] = R->id < 0 ? -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i])
+                             : R->dh_dz;
+    }
+    tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
+    s->pins_ok = 1;
+    s->pins_z = z;
+    s->upd_x = x;
+    s->upd_serial = prof->serial;
+}
+
+/* dw over the QP's span [f0, f1] as tirenv_springs__cc_slope takes it with no dd: each held
+ * element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones; and the state kept as the
+ * base of the next evaluation's update at this x. The workspace's arrays in locals (the stores
+ * to dw would make them be read again at every element), and a ray's d(rho)/dz as ray_drho
+ * keeps it. */
+static void slope_qp(tirenv_springs *s, const tirenv_profile *prof, double x, double z,
+                     size_t f0, size_t f1)
+{
+    const size_t *pin_row = s->cc.pin_row, *held = s->cc.held;
+    const tirenv_springs__cc_row *rows = s->cc.rows;
+    double *dw = s->dw;
+    /* 0 on the span, then the held elements from the QP's list of them */
+    memset(dw + f0, 0, (f1 - f0 + 1) * sizeof *dw);
+    for (size_t k = 0, n_held = s->cc.n_held; k < n_held; ++k) {
+        const size_t i = held[k];
+        const tirenv_springs__cc_row *R = &rows[pin_row[i]];
+        dw[i] = R->id < 0 ? -ray_drho(s, prof, i) : R->dh_dz;
+    }
+    if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, NULL, s->dw) == TIRENV_OK) {
+        memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
+        s->cc.base_z = z;
+        s->cc.base_ok = 1;
+        s->cc.base_pins = 0;
+        s->upd_x = x;
+        s->upd_serial = prof->serial;
+    }
+}
+
 /* CONTACT = 'continuous': the rays give each element's own row, the ground's vertices the
  * rows between elements (springs_contact.c); the hub forces as with rays. Most states have no
  * row between elements active (the tread bows out between its tips, section 4.8): the
@@ -535,7 +688,6 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
                              double *fx, double *fz, double *dfz_dz, size_t *contacts,
                              tirenv_diag *diag)
 {
-    const double R0 = s->par.R0;
     size_t a = 1, b = 0;
     set_origin(s, prof, x);
     const int any = candidate_span(s, z, &a, &b);
@@ -548,53 +700,9 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     s->eval_x = x;
     size_t f0 = 1, f1 = 0;
     if (any) {
-        /* Each ray's memo is a proof of its own (springs_ray.c): the rays whose memos fail
-         * at this z are walked again alone. The update below needs every ray on its face. */
-        size_t walked = b - a + 1;
-        if (s->ray_a <= a && b <= s->ray_b) {
-            walked = tirenv_springs__fan_update(prof, &s->origin, &s->rays, z, a, b, s->rho,
-                                                s->memo);
-        } else {
-            tirenv_springs__fan(prof, &s->origin, &s->rays, z, a, b, s->rho, s->memo);
-            s->ray_a = a;
-            s->ray_b = b;
-        }
-        s->memo_a = s->ray_a;
-        s->memo_b = s->ray_b;
-        s->memo_serial = prof->serial;
-        const int reused = walked == 0;
-        size_t n_contacts;
-        tirenv_springs__penetrations(R0, s->rho, s->d, a, b);
-        /* Newton's confirming evaluation: the last QP solve's state carried along its
-         * tangent, where the QP's conditions hold at z (the same x and ground, the rays on
-         * the same faces: reused); or at a new x, the state tirenv_springs__start proposed
-         * there on the last position's working set, its held rays on the faces it took
-         * (from the closed form's pins, whatever faces: on a road sampled at 1 mm a held
-         * ray often passes a vertex between the warm start and the root, and the update's
-         * corrections, K_FF's own solves there, find the state at z all the same; F_z is
-         * then off the load by what that ray's kink moved, and Newton goes on). */
-        const tirenv_springs__cc *c = &s->cc;
-        if (dfz_dz && c->base_ok && s->upd_serial == prof->serial &&
-            (s->upd_x == x ? reused
-                           : c->pred_ok && c->pred_x == x && c->pred_z == z &&
-                                 (c->base_pins || same_faces(s))) &&
-            tirenv_springs__cc_update(&s->cc, &s->cc_tire, prof, x, z, a, b, s->d, s->dw,
-                                      s->w, s->p, s->d, &n_contacts)) {
-            hub_forces(s, s->cc.f0, s->cc.f1, fx, fz, NULL);
-            /* the tips' span: the base's, which the start may have grown by an element */
-            s->a = s->cc.f0;
-            s->b = s->cc.f1;
-            /* the base's working rows (its solve's, none from the closed form's pins), as
-             * the solve had them: the next evaluation's path, whichever x it is at */
-            s->cc.between = !s->cc.base_pins && s->cc.n_warm > 0;
-            s->cc.between_z = z;
-            if (contacts)
-                *contacts = n_contacts;
-            *dfz_dz = s->upd_dfz_dz; /* the piece's, at the base's height */
-            ++s->updates;
-            s->start_updates += s->upd_x != x;
+        const int reused = rays_at(s, prof, z, a, b);
+        if (confirmed(s, prof, x, z, a, b, reused, fx, fz, dfz_dz, contacts))
             return TIRENV_OK;
-        }
         s->cc.base_ok = 0;
         s->cc.pred_ok = 0;
         s->pins_ok = 0;
@@ -605,21 +713,8 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         f0 = s->cc.f0;
         f1 = s->cc.f1;
     }
-    /* The elements with a row of their own: [g0, g1]. */
-    const double *pin_h = s->cc.pin_h;
-    size_t g0 = f0, g1 = f1;
-    if (f0 <= f1) {
-        while (g0 <= f1 && !(pin_h[g0] > 0))
-            ++g0;
-        while (g1 > g0 && !(pin_h[g1] > 0))
-            --g1;
-    }
-    if (s->a <= s->b) { /* the LCP's warm start forgets elements that cannot touch now */
-        for (size_t i = s->a; i <= s->b && i < g0; ++i)
-            s->active[i] = 0;
-        for (size_t i = g1 + 1 > s->a ? g1 + 1 : s->a; i <= s->b; ++i)
-            s->active[i] = 0;
-    }
+    size_t g0, g1;
+    own_span(s, f0, f1, &g0, &g1);
     s->a = 1;
     s->b = 0;
     if (f0 > f1) {
@@ -627,20 +722,7 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
         tirenv_springs__cc_forget(&s->cc);
         return TIRENV_OK;
     }
-    int fast = 0;
-    if (g0 <= f1 && !tirenv_springs__qp_first(s, z)) {
-        for (size_t e = g0; e <= g1; ++e)
-            s->d[e] = pin_h[e] > 0 ? pin_h[e] : 0;
-        size_t passes;
-        if (tirenv_springs__lcp_pinned(&s->chains, g0, g1, s->d, s->w, s->p, s->active,
-                                       &s->pins, lcp_max_passes(g0, g1), &passes) == 0) {
-            for (size_t j = g0; j-- > f0;) /* the free chains, over the rows' span */
-                s->w[j] = s->lq[j] * s->w[j + 1];
-            for (size_t j = g1 + 1; j <= f1; ++j)
-                s->w[j] = s->rq[j] * s->w[j - 1];
-            fast = tirenv_springs__cc_pins_hold(&s->cc, s->w, 1e-12 * R0);
-        }
-    }
+    const int fast = pinned_tips(s, z, f0, f1, g0, g1);
     if (fast) {
         f0 = g0;
         f1 = g1;
@@ -657,48 +739,10 @@ static int forces_continuous(tirenv_springs *s, const tirenv_profile *prof, doub
     hub_forces(s, f0, f1, fx, fz, contacts);
     if (!dfz_dz)
         return TIRENV_OK;
-    if (fast) {
-        /* d(d_i)/dz of each pinned element's row: its ray's, or the vertex's on it. */
-        const tirenv_springs__pins *P = &s->pins;
-        for (size_t i = P->first; P->count > 0 && i <= P->last; ++i) {
-            if (!s->active[i])
-                continue;
-            const tirenv_springs__cc_row *R = &s->cc.rows[s->cc.pin_row[i]];
-            s->dd[i] = R->id < 0 ? -tirenv_springs__fan_drho(prof, &s->rays, i, &s->memo[i])
-                                 : R->dh_dz;
-        }
-        tirenv_springs__pinned_solve(&s->chains, f0, f1, P, s->dd, s->dw);
-        /* the pins, the base of the next x's start where it asks for one (the base is
-         * made from them then: s->active holds them until the next evaluation) */
-        s->pins_ok = 1;
-        s->pins_z = z;
-        s->upd_x = x;
-        s->upd_serial = prof->serial;
-    } else {
-        /* [f0, f1] is the QP's span. dw on it as tirenv_springs__cc_slope takes it with
-         * no dd: each held element's row's dh/dz (a ray's: -d(rho)/dz), 0 on the free ones.
-         * The workspace's arrays in locals (the stores to dw would make them be read again
-         * at every element), and a ray's d(rho)/dz as ray_drho keeps it. */
-        const size_t *pin_row = s->cc.pin_row, *held = s->cc.held;
-        const tirenv_springs__cc_row *rows = s->cc.rows;
-        double *dw = s->dw;
-        /* 0 on the span, then the held elements from the QP's list of them */
-        memset(dw + f0, 0, (f1 - f0 + 1) * sizeof *dw);
-        for (size_t k = 0, n_held = s->cc.n_held; k < n_held; ++k) {
-            const size_t i = held[k];
-            const tirenv_springs__cc_row *R = &rows[pin_row[i]];
-            dw[i] = R->id < 0 ? -ray_drho(s, prof, i) : R->dh_dz;
-        }
-        if (tirenv_springs__cc_slope(&s->cc, &s->cc_tire, s->w, NULL, s->dw) == TIRENV_OK) {
-            /* the base of the next evaluation's update at this x */
-            memcpy(s->cc.base_w + f0, s->w + (long)f0 - 1, (f1 - f0 + 3) * sizeof *s->w);
-            s->cc.base_z = z;
-            s->cc.base_ok = 1;
-            s->cc.base_pins = 0;
-            s->upd_x = x;
-            s->upd_serial = prof->serial;
-        }
-    }
+    if (fast)
+        slope_pinned(s, prof, x, z, f0, f1);
+    else
+        slope_qp(s, prof, x, z, f0, f1);
     const double sum = hub_dfz_dz(s, f0, f1);
     *dfz_dz = sum;
     s->upd_dfz_dz = sum;
