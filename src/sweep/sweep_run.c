@@ -23,6 +23,7 @@
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "io/io.h"
+#include "io/tmpfiles.h"
 
 enum { SPEC_MAX = 1 << 20, TIRE_MAX = 1 << 20 };
 
@@ -370,10 +371,41 @@ static size_t case_of_file(const sweep_run *r, const char *file)
     return strncmp(file, name, len - 4) == 0 && name[len - 4] == '\0' ? (size_t)i : SIZE_MAX;
 }
 
+/* 1 if a run writes a file of this name into the partial directory (sub NULL) or into its
+ * sub directory sub. */
+static int run_writes(const sweep_run *r, const char *sub, const char *name)
+{
+    if (sub)
+        return case_of_file(r, name) != SIZE_MAX;
+    static const char *const top[] = {"sweep.txt", "tire.tir", "sweep.csv", "cases.csv"};
+    for (size_t k = 0; k < sizeof top / sizeof top[0]; ++k)
+        if (strcmp(name, top[k]) == 0)
+            return 1;
+    return 0;
+}
+
+/* 1 if f is a temporary file of a write a run makes there: ".<name>.tirenv-tmp.*"
+ * (tirenv_outfile), or "<name>.tmp.*" as tirenv wrote them before. */
+static int run_temporary(const sweep_run *r, const char *sub, const char *f)
+{
+    const char *mark = f[0] == '.' ? strstr(f + 1, TIRENV_TMP_MARK) : NULL;
+    const char *from = mark ? f + 1 : f;
+    if (!mark && !(mark = strstr(f, ".tmp.")))
+        return 0;
+    char name[64];
+    const size_t n = (size_t)(mark - from);
+    if (n == 0 || n >= sizeof name)
+        return 0;
+    memcpy(name, from, n);
+    name[n] = '\0';
+    return run_writes(r, sub, name);
+}
+
 /* What an interrupted run may have left besides whole cases: temporary files of writes it
  * did not finish, a manifest written just before the kill. Removed, so that what the
  * directory holds at the end is what a run without interruption writes. An entry that no run
- * writes is refused: the directory is not only ours. */
+ * writes is refused: the directory is not only ours (a file of one's own in DIR.partial was
+ * removed without a word). */
 static int tidy(const sweep_run *r, const char *sub, tirenv_diag *diag)
 {
     char path[1200];
@@ -399,7 +431,10 @@ static int tidy(const sweep_run *r, const char *sub, tirenv_diag *diag)
                    strcmp(f, "curves") == 0 || (r->s->rig && strcmp(f, "logs") == 0)))
             continue;
         struct stat st;
-        if (lstat(full, &st) != 0 || !S_ISREG(st.st_mode))
+        const int leftover = (!sub && (strcmp(f, "sweep.csv") == 0 ||
+                                       strcmp(f, "cases.csv") == 0)) ||
+                             run_temporary(r, sub, f);
+        if (!leftover || lstat(full, &st) != 0 || !S_ISREG(st.st_mode))
             status = tirenv_error(diag, TIRENV_EIO, full, 0, "",
                                   "an entry no sweep writes; is this directory the sweep's?");
         else if (unlink(full) != 0)

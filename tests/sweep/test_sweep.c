@@ -339,6 +339,29 @@ static void test_resume(void **state)
     snprintf(partial, sizeof partial, "%s.partial", two);
     assert_int_not_equal(access(partial, F_OK), 0);
 
+    /* A file no run writes, in this sweep's partial directory (new, or resumed): refused and
+     * kept, not removed as a run's leftover. */
+    char four[600], notes[700];
+    tirenv_test_path(t, "four", four);
+    snprintf(notes, sizeof notes, "%s.partial/notes.txt", four);
+    for (int resumed = 0; resumed < 2; ++resumed) {
+        snprintf(cmd, sizeof cmd, "mkdir -p '%s.partial' && echo mine > '%s'", four, notes);
+        assert_int_equal(system(cmd), 0);
+        if (resumed) {
+            snprintf(cmd, sizeof cmd, "cp '%s/sweep.txt' '%s/tire.tir' '%s.partial/'", one, one,
+                     four);
+            assert_int_equal(system(cmd), 0);
+        }
+        const tirenv_tire tire0 = tirenv_tire_default();
+        tirenv_diag d0;
+        assert_int_equal(tirenv_sweep_run(four, &tire0, &s, NULL, &d0), TIRENV_EIO);
+        assert_string_equal(d0.file, notes);
+        assert_non_null(strstr(d0.message, "an entry no sweep writes"));
+        assert_int_equal(access(notes, F_OK), 0);
+    }
+    snprintf(cmd, sizeof cmd, "rm -rf '%s.partial'", four);
+    assert_int_equal(system(cmd), 0);
+
     /* Another sweep's partial directory, or a foreign entry in it, is refused. */
     snprintf(cmd, sizeof cmd, "mkdir -p '%s.partial' && cp '%s/sweep.txt' '%s.partial/'", two,
              one, two);
