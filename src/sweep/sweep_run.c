@@ -23,7 +23,6 @@
 #include "tirenv/parallel.h"
 #include "tirenv/rig.h"
 #include "io/io.h"
-#include "io/tmpfiles.h"
 
 enum { SPEC_MAX = 1 << 20, TIRE_MAX = 1 << 20 };
 
@@ -388,15 +387,14 @@ static int run_writes(const sweep_run *r, const char *sub, const char *name)
  * (tirenv_outfile), or "<name>.tmp.*" as tirenv wrote them before. */
 static int run_temporary(const sweep_run *r, const char *sub, const char *f)
 {
-    const char *mark = f[0] == '.' ? strstr(f + 1, TIRENV_TMP_MARK) : NULL;
-    const char *from = mark ? f + 1 : f;
-    if (!mark && !(mark = strstr(f, ".tmp.")))
-        return 0;
     char name[64];
-    const size_t n = (size_t)(mark - from);
+    if (tirenv_tmp__target_of(f, name, sizeof name))
+        return run_writes(r, sub, name);
+    const char *mark = strstr(f, ".tmp.");
+    const size_t n = mark ? (size_t)(mark - f) : 0;
     if (n == 0 || n >= sizeof name)
         return 0;
-    memcpy(name, from, n);
+    memcpy(name, f, n);
     name[n] = '\0';
     return run_writes(r, sub, name);
 }

@@ -327,8 +327,9 @@ static void test_resume(void **state)
              "set -e; mkdir -p '%s.partial/curves'; cp '%s/sweep.txt' '%s/tire.tir' '%s.partial/';"
              "cp '%s/curves/c0003.csv' '%s/curves/c0009.csv' '%s.partial/curves/';"
              "echo half > '%s.partial/curves/c0004.csv.tmp.abc123';"
+             "echo half > '%s.partial/curves/.c0005.csv.tirenv-tmp.0badcafe.999999.5eed5eed';"
              "echo half > '%s.partial/cases.csv.tmp.xyz'",
-             two, one, one, two, one, one, two, two, two);
+             two, one, one, two, one, one, two, two, two, two);
     assert_int_equal(system(cmd), 0);
     s.jobs = 2;
     run_ok(two, &s, &rep);
