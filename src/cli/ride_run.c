@@ -287,7 +287,6 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     return code;
 }
 
-/* Writes a run's series into out and commits it (or, failing, removes what it wrote). */
 /* The series into out, left open: -o's file is committed only once --out-dir's report is
  * written too. */
 static void series_rows(tirenv_outfile *out, const ride_series *rs, const ride_result *res)
@@ -311,6 +310,7 @@ static void series_rows(tirenv_outfile *out, const ride_series *rs, const ride_r
     }
 }
 
+/* A run's series into path, committed (or, failing, what it wrote removed). */
 static int write_series(const char *path, const ride_series *rs, const ride_result *res,
                         tirenv_diag *diag)
 {
