@@ -169,7 +169,11 @@ static void test_checks(void **state)
     assert_int_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_EINVAL);
     s = grid();
     s.keys[0].key = "NO_SUCH_KEY";
-    assert_int_not_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_OK);
+    assert_int_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_EINVAL);  /* was EPARSE */
+    assert_string_equal(d.file, "");
+    assert_string_equal(d.field, "NO_SUCH_KEY");
+    assert_non_null(strstr(d.message, "swept tire key 1, value 1 ("));
+    assert_non_null(strstr(d.message, "unknown key; expected one of"));
     s = grid();
     const double negative[] = {1.4e6, -1};
     s.keys[0].values = negative;
