@@ -148,6 +148,13 @@ run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --split trai
 check "--split and the fractions together are refused" '[ $rc -eq 1 ]'
 run "$bin" sweep --jobs 0 --lengths 0.1 --heights 0.05 --contact-lengths 0.3 -o x
 check "--jobs 0 is refused" '[ $rc -eq 1 ] && grep -q -- "--jobs" err'
+# A seed of nothing the sweep draws changes nothing: refused (both were taken, exit 0).
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --split-seed 5 -o x
+check "--split-seed without the fractions is refused" \
+    '[ $rc -eq 1 ] && grep -q -- "--split-seed seeds the permutation" err && [ ! -e x ]'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --seed 5 -o x
+check "--seed without --rig is refused" \
+    '[ $rc -eq 1 ] && grep -q -- "--seed seeds the virtual rig" err && [ ! -e x ]'
 run "$bin" sweep --help
 check "sweep --help documents shards, merge and --jobs" \
     '[ $rc -eq 0 ] && grep -q -- "--shard K/N" out && grep -q "sweep merge" out &&
