@@ -49,8 +49,7 @@ static void usage(FILE *fp)
           "  --pad M              .crg output of a profile that starts or ends with a wall (a\n"
           "                       bounded obstacle): M m of flat ground at its end heights\n"
           "                       beyond the wall, which a road file has no other way to\n"
-          "                       keep (default 1; 0 refuses such a profile); given > 0\n"
-          "                       for a profile without such a wall, refused\n"
+          "                       keep (default 1; 0 refuses such a profile)\n"
           "  -h, --help           show this help\n",
           fp);
 }
@@ -370,35 +369,11 @@ static int from_crg(const convert *cv, tirenv_profile_format to, size_t *n, doub
  * wall would take the wall's top (the higher side), so the obstacle would become a plateau.
  * Flat ground of --pad m at the end heights is added before it is written (default 1 m), or
  * with --pad 0 the conversion is refused, saying so. Other profiles are written unchanged. */
-static void end_walls(const tirenv_profile *p, int *first, int *last)
-{
-    const size_t n = tirenv_profile_size(p);
-    const double *x = tirenv_profile_x(p);
-    *first = n >= 2 && x[0] == x[1];
-    *last = n >= 2 && x[n - 1] == x[n - 2];
-}
-
-/* --pad M > 0 given for a .crg output of a profile without a wall at either end would change
- * nothing: refused as the other options that change nothing are (it was taken, exit 0).
- * --pad 0 stays a check that there is no wall. */
-static int pad_unused(const convert *cv, const tirenv_profile *p)
-{
-    int first, last;
-    end_walls(p, &first, &last);
-    if (!cv->have_pad || !(cv->pad > 0) || first || last)
-        return 0;
-    cli_error("convert: --pad applies to a profile that starts or ends with a wall; %s has "
-              "ground at both ends (x %g to %g m), which is written as it is", cv->in,
-              tirenv_profile_x(p)[0], tirenv_profile_x(p)[tirenv_profile_size(p) - 1]);
-    return 1;
-}
-
 static int pad_walls(const convert *cv, tirenv_profile **p, tirenv_diag *diag)
 {
     const size_t n = tirenv_profile_size(*p);
     const double *x = tirenv_profile_x(*p), *z = tirenv_profile_z(*p);
-    int wall_first, wall_last;
-    end_walls(*p, &wall_first, &wall_last);
+    const int wall_first = n >= 2 && x[0] == x[1], wall_last = n >= 2 && x[n - 1] == x[n - 2];
     if (!wall_first && !wall_last)
         return TIRENV_OK;
     if (!(cv->pad > 0))
@@ -488,11 +463,6 @@ int cli_convert_main(int argc, char *argv[])
     } else {
         tirenv_profile *p;
         if (!(status = tirenv_road_file_read(cv.file, &cv.src, 1, NULL, &p, &diag))) {
-            if (to == TIRENV_PROFILE_CRG && pad_unused(&cv, p)) {
-                tirenv_profile_free(p);
-                tirenv_road_file_free(cv.file);
-                return CLI_EXIT_USAGE;
-            }
             if (to == TIRENV_PROFILE_CSV)
                 status = tirenv_profile_write_csv(cv.out, p, cv.w.comment, &diag);
             else if (to != TIRENV_PROFILE_CRG || (!(status = pad_walls(&cv, &p, &diag)) &&

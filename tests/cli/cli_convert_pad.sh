@@ -36,12 +36,6 @@ printf 'x_m,z_m\n-1,0\n-0.05,0\n-0.05,0.1\n0.05,0.1\n0.05,0\n1,0\n' >ground.csv
 run "$bin" convert --profile ground.csv --dx 0.01 -o ground.crg
 check "a profile with ground at its ends: not padded (rows from -1 m)" \
     '[ $rc -eq 0 ] && grep -aq "^REFERENCE_LINE_START_U   = -1$" ground.crg'
-run "$bin" convert --profile ground.csv --dx 0.01 --pad 5 -o ground5.crg
-check "--pad for a profile with ground at its ends: refused (exit 1), nothing written" \
-    '[ $rc -eq 1 ] && grep -q -- "--pad applies to a profile that starts or ends with a wall" err &&
-     [ ! -e ground5.crg ]'
-run "$bin" convert --profile ground.csv --dx 0.01 --pad 0 -o ground0.crg
-check "--pad 0 for it: a check that passes, written" '[ $rc -eq 0 ] && [ -s ground0.crg ]'
 run "$bin" convert --profile cleat.csv -o cleat.rdf
 check "to .rdf: not padded (4 vertices)" '[ $rc -eq 0 ] && grep -q "4 vertices" err'
 clilib_done
