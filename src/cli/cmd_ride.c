@@ -274,11 +274,21 @@ int cli_ride_main(int argc, char *argv[])
                 snprintf(c->label, sizeof c->label, "%s-%s", name,
                          tirenv_ride_enveloping_name(c->enveloping));
         }
+    size_t with_nn = 0;
     for (size_t i = 0; i < r.n_models; ++i)
-        if ((tirenv_model_type_flags(r.models[i]) & TIRENV_MODEL_NEEDS_NETWORK) && !r.nn_path) {
-            cli_error("ride: --model %s needs the network: --nn FILE (from 'tirenv train')",
-                      tirenv_model_type_name(r.models[i]));
-            return CLI_EXIT_USAGE;
+        if (tirenv_model_type_flags(r.models[i]) & TIRENV_MODEL_NEEDS_NETWORK) {
+            ++with_nn;
+            if (!r.nn_path) {
+                cli_error("ride: --model %s needs the network: --nn FILE (from 'tirenv train')",
+                          tirenv_model_type_name(r.models[i]));
+                return CLI_EXIT_USAGE;
+            }
         }
+    /* As envelope's: a network no model evaluates was taken and not even opened, exit 0. */
+    if (r.nn_path && !with_nn) {
+        cli_error("ride: --nn is for a model that evaluates a network; none of --model's does "
+                  "(add nn to --model)");
+        return CLI_EXIT_USAGE;
+    }
     return ride_cli_run(&o, &r);
 }

@@ -59,8 +59,9 @@ static void usage(FILE *fp)
           "  --control-fraction F, --validation-fraction F\n"
           "                       instead: round(F x cases) cases each, drawn by a seeded\n"
           "                       permutation of the whole grid, the rest train\n"
-          "  --split-seed S       the permutation's seed (default 1)\n"
-          "  --seed S             rig noise: case i runs with seed S + i (default 1)\n"
+          "  --split-seed S       the permutation's seed (default 1; with the fractions)\n"
+          "  --seed S             rig noise: case i runs with seed S + i (default 1; with\n"
+          "                       --rig)\n"
           "  --shard K/N          write part K (0 <= K < N) of N\n"
           "  --nn FILE            the trained network, for --model nn\n"
           "  --extrapolate        with --nn: evaluate the network outside the ranges it was\n"
@@ -387,7 +388,7 @@ int cli_sweep_main(int argc, char *argv[])
     memset(&keys, 0, sizeof keys);
     const char *split = NULL, *tire_path = NULL;
     double control = NAN, validation = NAN;
-    long seed = 1, split_seed = 1;
+    long seed = -1, split_seed = -1;  /* -1: not given, 1 */
     size_t shard[2] = {0, 1};
     int rig = 0, want_progress = 0;
     const cli_opt own[] = {
@@ -435,6 +436,18 @@ int cli_sweep_main(int argc, char *argv[])
           (isnan(validation) || (validation >= 0 && validation <= 1)))) {
         cli_error("sweep: --control-fraction and --validation-fraction: expected numbers in "
                   "[0, 1]");
+        code = CLI_EXIT_USAGE;
+    }
+    /* A seed of something the sweep does not draw would change nothing: refused, as envelope
+     * refuses its options that change nothing (both were taken and ignored, exit 0). */
+    if (!code && split_seed >= 0 && !fractions) {
+        cli_error("sweep: --split-seed seeds the permutation of --control-fraction and "
+                  "--validation-fraction; give one of them, or leave the seed out");
+        code = CLI_EXIT_USAGE;
+    }
+    if (!code && seed >= 0 && !rig) {
+        cli_error("sweep: --seed seeds the virtual rig's noise; give --rig, or leave the seed "
+                  "out");
         code = CLI_EXIT_USAGE;
     }
     if (!code && split) {
@@ -502,8 +515,8 @@ int cli_sweep_main(int argc, char *argv[])
     s.extrapolate = o.extrapolate;
     s.rig = rig;
     s.jobs = o.jobs;
-    s.seed = (unsigned long)seed;
-    s.split_seed = (unsigned long)split_seed;
+    s.seed = seed < 0 ? 1ul : (unsigned long)seed;
+    s.split_seed = split_seed < 0 ? 1ul : (unsigned long)split_seed;
     s.control_fraction = isnan(control) ? 0 : control;
     s.validation_fraction = isnan(validation) ? 0 : validation;
     s.shard = shard[0];

@@ -34,7 +34,8 @@ static void usage(FILE *fp)
           "  --trainer NAME       lm (default): Levenberg-Marquardt; rprop: iRprop-;\n"
           "                       backprop: the paper's back-propagation with momentum\n"
           "  --seed S             seed of the initial weights (and online order), default 1\n"
-          "  --restarts N         independent starts M (default: lm 8, rprop 4, backprop 1)\n"
+          "  --restarts N         independent starts M, at most 100000 (default: lm 8,\n"
+          "                       rprop 4, backprop 1)\n"
           "  --ensemble K         the model is the mean of the K restarts best on control\n"
           "                       (default 4, or M if fewer; given, at most M; 1: the best\n"
           "                       restart alone)\n"
@@ -219,8 +220,10 @@ static int parse(int argc, char *argv[], cli_options *o, train_options *t)
         {.name = "trainer", .kind = CLI_CUSTOM, .dst = &t->type, .parse = parse_trainer},
         {.name = "seed", .kind = CLI_COUNT, .dst = &t->seed, .min = 0, .max = LONG_MAX,
          .what = "an integer >= 0"},
+        /* Bounded as --seeds is: a record per restart is allocated before the first runs,
+         * and 1e9 of them was an unnamed "out of memory". */
         {.name = "restarts", .kind = CLI_COUNT, .dst = &t->restarts, .min = 1,
-         .max = LONG_MAX, .what = "an integer >= 1"},
+         .max = 100000, .what = "an integer from 1 to 100000"},
         {.name = "epochs", .kind = CLI_COUNT, .dst = &t->epochs, .min = 1, .max = LONG_MAX,
          .what = "an integer >= 1"},
         {.name = "patience", .kind = CLI_COUNT, .dst = &t->patience, .min = 0,

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
@@ -90,7 +91,10 @@ int cli_envelope_plot_check(const char *file, tirenv_diag *diag)
     char base[PATH_MAX], dir[PATH_MAX], name[PATH_MAX];
     if (!split_base(file, base, dir, name))
         return tirenv_error(diag, TIRENV_EINVAL, file, 0, "--plot", "no file name");
-    if (access(dir, W_OK) != 0)
+    /* A file where the directory should be passes access(W_OK): the curve would have
+     * replaced -o's file before the plot's first file failed. */
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK) != 0)
         return tirenv_error(diag, TIRENV_EIO, dir, 0, "--plot",
                             "the plot's directory is not one this process can write into");
     return TIRENV_OK;

@@ -287,9 +287,9 @@ static int model_inputs(const ride_options *r, const ride_setup *s, ride_inputs 
     return code;
 }
 
-/* Writes a run's series into out and commits it (or, failing, removes what it wrote). */
-static int write_series_to(tirenv_outfile *out, const ride_series *rs, const ride_result *res,
-                           tirenv_diag *diag)
+/* The series into out, left open: -o's file is committed only once --out-dir's report is
+ * written too. */
+static void series_rows(tirenv_outfile *out, const ride_series *rs, const ride_result *res)
 {
     char comment[256];
     snprintf(comment, sizeof comment, "tirenv ride: %s model at %.6g m/s (%.6g km/h), %zu "
@@ -308,15 +308,18 @@ static int write_series_to(tirenv_outfile *out, const ride_series *rs, const rid
             p = cli_row_g(p, v[j], 9, j + 1 < 13 ? ',' : '\n');
         fwrite(row, 1, (size_t)(p - row), fp);
     }
-    return tirenv_outfile_commit(out, diag);  /* it checks ferror and removes the file */
 }
 
+/* A run's series into path, committed (or, failing, what it wrote removed). */
 static int write_series(const char *path, const ride_series *rs, const ride_result *res,
                         tirenv_diag *diag)
 {
     tirenv_outfile *out;
     const int status = tirenv_outfile_open(&out, path, diag);
-    return status ? status : write_series_to(out, rs, res, diag);
+    if (status)
+        return status;
+    series_rows(out, rs, res);
+    return tirenv_outfile_commit(out, diag);  /* it checks ferror and removes the file */
 }
 
 /* The options a field of tirenv_ride_plan_make's errors comes from. */
@@ -383,7 +386,7 @@ static int integrate(const ride_options *r, const ride_setup *s, const ride_inpu
 
 /* Every (speed, column) run: independent items on --jobs threads, each integrating,
  * measuring and writing its own series into --out-dir (-o's, of the one run, is written after
- * them); the CPU time of a run is its thread's. */
+ * them, and committed with --out-dir); the CPU time of a run is its thread's. */
 typedef struct {
     const ride_options *r;
     const ride_setup *s;
@@ -518,18 +521,23 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
             break;
         }
     free(runs.status);
-    if (!code && out) {  /* one run (cmd_ride refuses -o with more) */
-        const int written = write_series_to(out, &series[0], &res[0], &diag);
+    if (code)
+        goto done;
+    if (out)  /* one run (cmd_ride refuses -o with more) */
+        series_rows(out, &series[0], &res[0]);
+    print_table(stdout, res, n_runs);
+    if (r->out_dir && (code = ride_cli_report(r, res, series, &s.v, &s.given,
+                                               (const char(*)[1024])s.tire_path, s.load)))
+        goto done;
+    /* -o first: its commit (the data flushed to disk) is the one that can fail for want of
+     * room, and then --out-dir's previous directory stays too. */
+    if (out) {
+        const int written = tirenv_outfile_commit(out, &diag);
         out = NULL;
         if (written)
             code = cli_fail(written, &diag);
     }
-    if (code)
-        goto done;
-    print_table(stdout, res, n_runs);
-    if (r->out_dir && !(code = ride_cli_report(r, res, series, &s.v, &s.given,
-                                                (const char(*)[1024])s.tire_path,
-                                                s.load))) {
+    if (!code && r->out_dir) {
         const int committed = tirenv_outdir_commit(staged, &diag);
         staged = NULL;
         if (committed)

@@ -34,6 +34,16 @@ void cli_help_road(FILE *fp, int with_tracks)
               fp);
 }
 
+/* A road file's options with a generated obstacle would change nothing: refused. */
+static int file_options_unused(const cli_options *o)
+{
+    if (o->obstacle == CLI_PROFILE || !(o->have_track || o->have_side || o->have_crg_nan))
+        return CLI_EXIT_OK;
+    cli_error("--%s applies to a road file (--profile FILE), not to a generated obstacle",
+              o->have_track ? "track" : o->have_side ? "side" : "crg-nan-mode");
+    return CLI_EXIT_USAGE;
+}
+
 int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
 {
     memset(r, 0, sizeof *r);
@@ -41,11 +51,9 @@ int cli_road_plan(const cli_options *o, const tirenv_tire *tire, cli_road *r)
     r->format = TIRENV_PROFILE_CSV;
     r->n = 1;
     r->from_file = o->obstacle == CLI_PROFILE;
-    if ((o->have_track || o->have_side || o->have_crg_nan) && !r->from_file) {
-        cli_error("--%s applies to a road file (--profile FILE), not to a generated obstacle",
-                  o->have_track ? "track" : o->have_side ? "side" : "crg-nan-mode");
-        return CLI_EXIT_USAGE;
-    }
+    const int unused = file_options_unused(o);
+    if (unused)
+        return unused;
     if (o->have_width && !o->tracks) {
         cli_error("--width W spreads the tracks of --tracks N: give --tracks too");
         return CLI_EXIT_USAGE;
@@ -133,8 +141,10 @@ void cli_road_free(cli_road *r)
 int cli_profile(const cli_options *o, tirenv_profile **out)
 {
     *out = NULL;
-    if (o->obstacle != CLI_PROFILE)
-        return cli_obstacle(o, out);
+    if (o->obstacle != CLI_PROFILE) {  /* ride and rig: --track was taken and ignored */
+        const int unused = file_options_unused(o);
+        return unused ? unused : cli_obstacle(o, out);
+    }
     cli_road r;
     int code = cli_road_plan(o, NULL, &r);
     if (!code)

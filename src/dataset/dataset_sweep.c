@@ -30,6 +30,38 @@ static const char *value_of(const char *line, const char *key)
                                                                            : NULL;
 }
 
+/* The keys tirenv sweep writes (docs/formats.md section 13), and "set KEY" per swept key. */
+static int known_key(const char *key, size_t n)
+{
+    static const char *const keys[] = {"format", "model", "curves", "network", "lengths_m",
+        "heights_m", "contact_lengths_m", "loads_N", "split", "control_fraction",
+        "validation_fraction", "split_seed", "rig_seed", "cases", "shard", NULL};
+    if (n > 4 && strncmp(key, "set ", 4) == 0 && !memchr(key + 4, ' ', n - 4))
+        return 1;
+    for (size_t k = 0; keys[k]; ++k)
+        if (strlen(keys[k]) == n && strncmp(key, keys[k], n) == 0)
+            return 1;
+    return 0;
+}
+
+/* A line that is no "key = value" of a known key is refused: read past, a misspelt "model"
+ * or "set KEY" would make a sweep's cases measurements, or one tire's, without a word. */
+static int check_line(const tirenv_csv__reader *r)
+{
+    const char *eq = strstr(r->text, " = ");
+    if (!eq)
+        return tirenv_csv__fail(r, 1, "", "expected 'key = value', got '%.60s'", r->text);
+    const size_t n = (size_t)(eq - r->text);
+    if (known_key(r->text, n))
+        return TIRENV_OK;
+    char key[64];
+    snprintf(key, sizeof key, "%.*s", n < sizeof key ? (int)n : (int)sizeof key - 1, r->text);
+    return tirenv_csv__fail(r, 1, key, "unknown key; expected format, model, curves, network, "
+                            "lengths_m, heights_m, contact_lengths_m, loads_N, set KEY, split, "
+                            "control_fraction, validation_fraction, split_seed, rig_seed, "
+                            "cases or shard");
+}
+
 int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *out,
                                    tirenv_diag *diag)
 {
@@ -51,6 +83,8 @@ int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *ou
     int status = TIRENV_OK, more;
     while (!status && (more = tirenv_csv__next(&r)) > 0) {
         const char *v;
+        if ((status = check_line(&r)))
+            break;
         if ((v = value_of(r.text, "cases"))) {
             const size_t used = digits(v, TIRENV_DATASET__MAX_CASES, &cases);
             cases_line = r.line;

@@ -2,7 +2,8 @@
  * section 10): the network and how it was trained, as JSON through jansson. Reading trusts
  * nothing: every field is checked for presence, type, finiteness and range, and the network's
  * numbers against a checksum, and a failure names the file and the field. This file reads and
- * holds the checksum; nn_json_write.c writes. SPDX-License-Identifier: Apache-2.0
+ * holds the checksum; nn_json_keys.c refuses a key the format does not know; nn_json_write.c
+ * writes. SPDX-License-Identifier: Apache-2.0
  *
  * Layout (version 3):
  *   format "tirenv-nn", version 3, inputs [names], output "h_m", topology [4, 8, 1],
@@ -799,6 +800,8 @@ int tirenv_nn_read_json(const char *path, tirenv_nn **out, tirenv_train_record *
         status = bad(&c, "", "expected a JSON object at the top, found %s", json_kind(root));
     if (!status)
         status = read_header(&c, root, &version);
+    if (!status)
+        status = tirenv_nn_json__check_keys(path, root, version, diag);
     if (!status)
         status = read_topology(&c, root, &t);
     if (!status)

@@ -27,4 +27,9 @@ uint64_t tirenv_nn_json__checksum(const tirenv_nn *nn, const tirenv_contact_law 
 /* "fnv1a64:<16 hex>" into buf (n bytes). */
 void tirenv_nn_json__hash_text(char *buf, size_t n, uint64_t h);
 
+/* TIRENV_EPARSE naming path and the key's path where an object of root (a file of format
+ * version) holds a key the format does not know; else TIRENV_OK (nn_json_keys.c). */
+int tirenv_nn_json__check_keys(const char *path, const json_t *root, int version,
+                               tirenv_diag *diag);
+
 #endif

@@ -17,7 +17,8 @@
  *     OpenCRG readers;
  *   - small comma-separated files line by line (tirenv_csv__*), with the splitting, number
  *     parsing and file:line:column errors that the curve, rig-log, data-set and profile
- *     readers share. */
+ *     readers share;
+ *   - the target of a temporary file's name (tirenv_tmp__target_of), for sweep's resume. */
 #ifndef TIRENV_IO_IO_H
 #define TIRENV_IO_IO_H
 
@@ -207,5 +208,12 @@ int tirenv_csv__number_within(const tirenv_csv__reader *r, const tirenv_csv__fie
 
 /* The header names joined with commas, for messages. */
 void tirenv_csv__join(const char *const names[], size_t n, char *buf, size_t size);
+
+/* ---- temporary files of the writes (tmpfiles.c) ---------------------------------------- */
+
+/* 1 with the target's name in name (n bytes) if entry, a directory entry's name, is the
+ * temporary file of a write in progress or cut short (".<name>.tirenv-tmp.<host>.<pid>.
+ * <random>", include/tirenv/outfile.h); else 0. */
+int tirenv_tmp__target_of(const char *entry, char *name, size_t n);
 
 #endif

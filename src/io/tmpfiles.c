@@ -13,6 +13,7 @@
  * SPDX-License-Identifier: Apache-2.0 */
 #define _GNU_SOURCE  /* syscall(SYS_getdents64), DT_DIR */
 #include "io/tmpfiles.h"
+#include "io/io.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -281,6 +282,20 @@ static int parse_tmp_name(const char *name, int *is_old, size_t *base_len, uint3
     *base_len = (size_t)(mark - name - 1);
     *host = (uint32_t)hv;
     *pid = pv;
+    return 1;
+}
+
+int tirenv_tmp__target_of(const char *entry, char *name, size_t n)
+{
+    int is_old;
+    size_t base_len;
+    uint32_t host;
+    long pid;
+    if (!parse_tmp_name(entry, &is_old, &base_len, &host, &pid) || is_old || base_len == 0 ||
+        base_len >= n)
+        return 0;
+    memcpy(name, entry + 1, base_len);
+    name[base_len] = '\0';
     return 1;
 }
 

@@ -38,11 +38,17 @@ void tirenv_rig_log_free(tirenv_rig_log *log)
 enum { MIN_APPROACH_SAMPLES = 40 };
 static const double LOG_RESOLUTION = 1e-6; /* s and m */
 
-static int resolvable(const char *what, double largest, tirenv_diag *diag)
+/* The largest reading of one axis: the passage's own, the offset and six sigmas of noise.
+ * Refused naming the setting that makes it large (--noise 1e300,0 was said to be the
+ * offset, which was 0). */
+static int resolvable(const char *what, double passage, double offset, double sigma,
+                      const char *noise_field, tirenv_diag *diag)
 {
+    const double largest = passage + fabs(offset) + 6 * sigma;
     if (largest * DBL_EPSILON <= 0.5 * LOG_RESOLUTION)
         return TIRENV_OK;
-    return tirenv_error(diag, TIRENV_ERANGE, "", 0, "offset",
+    return tirenv_error(diag, TIRENV_ERANGE, "", 0, 6 * sigma > fabs(offset) ? noise_field
+                                                                            : "offset",
                         "%s readings up to %g m are spaced %g m apart in double precision, "
                         "coarser than the log's resolution of %g m: the samples' differences "
                         "would be lost; expected readings within %g m", what, largest,
@@ -67,9 +73,10 @@ static int check_sampling(const tirenv_rig_settings *s, double L, double R0, dou
                             "%g Hz samples every %g s, finer than the log's time resolution "
                             "of %g s: times would repeat", s->rate, 1 / s->rate,
                             LOG_RESOLUTION);
-    const int status = resolvable("x", fmax(fabs(x0), fabs(x1)) + fabs(s->x_offset) +
-                                               6 * s->noise_x, diag);
-    return status ? status : resolvable("z", z_max + fabs(s->z_offset) + 6 * s->noise_z, diag);
+    const int status = resolvable("x", fmax(fabs(x0), fabs(x1)), s->x_offset, s->noise_x,
+                                  "noise_x", diag);
+    return status ? status
+                  : resolvable("z", z_max, s->z_offset, s->noise_z, "noise_z", diag);
 }
 
 int tirenv_rig_simulate(tirenv_model *m, const tirenv_profile *p, const tirenv_rig_settings *s,

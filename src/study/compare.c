@@ -259,6 +259,48 @@ void tirenv_compare__tables(FILE *fp, const char *hashes, const tirenv_dataset *
 
 /* ---- choosing ----------------------------------------------------------------------------- */
 
+typedef struct {
+    char base[32];  /* the plot files' name: a case name has at most 31 characters */
+    size_t case_k;  /* its place among the compared cases */
+} plot_name;
+
+static int plot_name_cmp(const void *a, const void *b)
+{
+    const plot_name *p = a, *q = b;
+    const int c = strcmp(p->base, q->base);
+    return c ? c : (p->case_k > q->case_k) - (p->case_k < q->case_k);
+}
+
+/* Two compared cases whose names give the same plot files (tirenv_plot__base: "x y" and "x_y"
+ * are both x_y.*) would write them over each other, and the report would show one case's
+ * figure under the other's name; so they are refused, naming both. Sorted, not compared
+ * pairwise: a sweep may have a million cases. */
+static int distinct_plot_names(const tirenv_dataset *ds, const tirenv_compare_result *r,
+                               tirenv_diag *diag)
+{
+    plot_name *names = malloc((r->n_cases ? r->n_cases : 1) * sizeof *names);
+    if (!names)
+        return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+    for (size_t k = 0; k < r->n_cases; ++k) {
+        tirenv_plot__base(ds->cases[r->case_index[k]].name, names[k].base,
+                          sizeof names[k].base);
+        names[k].case_k = k;
+    }
+    qsort(names, r->n_cases, sizeof *names, plot_name_cmp);
+    int status = TIRENV_OK;
+    for (size_t k = 1; k < r->n_cases && !status; ++k)
+        if (strcmp(names[k - 1].base, names[k].base) == 0)
+            status = tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "cases",
+                                  "cases '%s' and '%s' would share the plot files %s.*; "
+                                  "expected names that differ in letters, digits, '.', '_' "
+                                  "or '-' (other characters become '_')",
+                                  ds->cases[r->case_index[names[k - 1].case_k]].name,
+                                  ds->cases[r->case_index[names[k].case_k]].name,
+                                  names[k].base);
+    free(names);
+    return status;
+}
+
 static int select_cases(const tirenv_dataset *ds, const tirenv_compare_settings *s,
                         tirenv_compare_result *r, tirenv_diag *diag)
 {
@@ -304,7 +346,7 @@ static int select_cases(const tirenv_dataset *ds, const tirenv_compare_settings 
             return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "curve",
                                 "case %s has no curve to compare with", c->name);
     }
-    return TIRENV_OK;
+    return distinct_plot_names(ds, r, diag);
 }
 
 /* The physical models asked for, then the one that simulated the data if it is not among

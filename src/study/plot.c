@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -399,18 +400,28 @@ static int join(char *buf, size_t size, const char *dir, const char *base, const
 }
 
 /* Draws both images under temporary names and renames them into place only when gnuplot has
- * succeeded; on any failure neither temporary file is left behind. */
+ * succeeded; on any failure neither temporary file is left behind. The names are the
+ * process's and this call's own, and whatever holds one already (a file left by a killed
+ * run of a process of the same id, a symbolic link) is removed first: gnuplot opens its
+ * output for writing, and would have written through a link, or into a hard link that a
+ * staging directory shares with the previous output (tirenv_outdir). */
 int tirenv_plot_draw(const char *dir, const char *base, const char *gnuplot,
                      tirenv_diag *diag)
 {
+    static atomic_uint serial;
     char tmp_ext[2][64], tmp[2][512], final[2][512], script[300];
     const char *ext[2] = {".png", ".svg"};
+    const unsigned call = atomic_fetch_add(&serial, 1u);
     int status = TIRENV_OK;
     for (int i = 0; i < 2 && !status; ++i) {
-        snprintf(tmp_ext[i], sizeof tmp_ext[i], "%s.tmp.%ld", ext[i], (long)getpid());
+        snprintf(tmp_ext[i], sizeof tmp_ext[i], "%s.tmp.%ld.%u", ext[i], (long)getpid(), call);
         status = join(tmp[i], sizeof tmp[i], dir, base, tmp_ext[i], diag);
         if (!status)
             status = join(final[i], sizeof final[i], dir, base, ext[i], diag);
+        if (!status && remove(tmp[i]) != 0 && errno != ENOENT)
+            status = tirenv_error(diag, TIRENV_EIO, tmp[i], 0, "gnuplot",
+                                  "cannot remove what holds the image's temporary name: %s",
+                                  strerror(errno));
     }
     if (status)
         return status;

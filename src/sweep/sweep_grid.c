@@ -255,16 +255,22 @@ int tirenv_sweep_check(const tirenv_sweep_settings *s, const tirenv_tire *tire,
                                         "%g is listed twice (values %zu and %zu)",
                                         a->values[m], j + 1, m + 1);
             /* Each value on the tire as given: the key exists, takes a number, and the tire
-             * it makes holds together. */
+             * it makes holds together. A refusal is the settings' (EINVAL, naming the key and
+             * the value), not the --set parser's "malformed file" it is found by. */
             tirenv_tire t = *tire;
             char assignment[160], value[32];
             tirenv_sweep__number(a->values[m], value);
             snprintf(assignment, sizeof assignment, "%s=%s", a->key, value);
-            if (!isfinite(a->values[m]) || (status = tirenv_tir_set(&t, assignment, diag)) ||
-                (status = tirenv_tire_check(&t, diag)))
-                return status ? status
-                              : tirenv_error(diag, TIRENV_EINVAL, "", 0, a->key,
-                                             "value %zu is not finite", m + 1);
+            if (!isfinite(a->values[m]))
+                return tirenv_error(diag, TIRENV_EINVAL, "", 0, a->key,
+                                    "value %zu is not finite", m + 1);
+            tirenv_diag why;
+            tirenv_diag_clear(&why);
+            if (tirenv_tir_set(&t, assignment, &why) || tirenv_tire_check(&t, &why))
+                return tirenv_error(diag, TIRENV_EINVAL, "", 0, a->key,
+                                    "swept tire key %zu, value %zu (%s): %s%s%s", k + 1, m + 1,
+                                    value, strcmp(why.field, a->key) ? why.field : "",
+                                    strcmp(why.field, a->key) ? ": " : "", why.message);
         }
     }
     /* The cam's shape is never derived: a tire without its own would give every case another

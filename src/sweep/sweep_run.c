@@ -370,10 +370,40 @@ static size_t case_of_file(const sweep_run *r, const char *file)
     return strncmp(file, name, len - 4) == 0 && name[len - 4] == '\0' ? (size_t)i : SIZE_MAX;
 }
 
+/* 1 if a run writes a file of this name into the partial directory (sub NULL) or into its
+ * sub directory sub. */
+static int run_writes(const sweep_run *r, const char *sub, const char *name)
+{
+    if (sub)
+        return case_of_file(r, name) != SIZE_MAX;
+    static const char *const top[] = {"sweep.txt", "tire.tir", "sweep.csv", "cases.csv"};
+    for (size_t k = 0; k < sizeof top / sizeof top[0]; ++k)
+        if (strcmp(name, top[k]) == 0)
+            return 1;
+    return 0;
+}
+
+/* 1 if f is a temporary file of a write a run makes there: ".<name>.tirenv-tmp.*"
+ * (tirenv_outfile), or "<name>.tmp.*" as tirenv wrote them before. */
+static int run_temporary(const sweep_run *r, const char *sub, const char *f)
+{
+    char name[64];
+    if (tirenv_tmp__target_of(f, name, sizeof name))
+        return run_writes(r, sub, name);
+    const char *mark = strstr(f, ".tmp.");
+    const size_t n = mark ? (size_t)(mark - f) : 0;
+    if (n == 0 || n >= sizeof name)
+        return 0;
+    memcpy(name, f, n);
+    name[n] = '\0';
+    return run_writes(r, sub, name);
+}
+
 /* What an interrupted run may have left besides whole cases: temporary files of writes it
  * did not finish, a manifest written just before the kill. Removed, so that what the
  * directory holds at the end is what a run without interruption writes. An entry that no run
- * writes is refused: the directory is not only ours. */
+ * writes is refused: the directory is not only ours (a file of one's own in DIR.partial was
+ * removed without a word). */
 static int tidy(const sweep_run *r, const char *sub, tirenv_diag *diag)
 {
     char path[1200];
@@ -399,7 +429,10 @@ static int tidy(const sweep_run *r, const char *sub, tirenv_diag *diag)
                    strcmp(f, "curves") == 0 || (r->s->rig && strcmp(f, "logs") == 0)))
             continue;
         struct stat st;
-        if (lstat(full, &st) != 0 || !S_ISREG(st.st_mode))
+        const int leftover = (!sub && (strcmp(f, "sweep.csv") == 0 ||
+                                       strcmp(f, "cases.csv") == 0)) ||
+                             run_temporary(r, sub, f);
+        if (!leftover || lstat(full, &st) != 0 || !S_ISREG(st.st_mode))
             status = tirenv_error(diag, TIRENV_EIO, full, 0, "",
                                   "an entry no sweep writes; is this directory the sweep's?");
         else if (unlink(full) != 0)

@@ -45,5 +45,10 @@ check "--plot with --relative-to ground: exit 1, no file" '[ $rc -eq 1 ] && no_f
 run "$bin" envelope --model rigid --cleat 0.1,0.05 --load 1e4 -o d.csv --plot no/such/p.png
 check "--plot into a directory that does not exist: exit 2 naming it, no curve either" \
     '[ $rc -eq 2 ] && no_file d.csv && grep -q "no/such" err'
+echo old >kept.csv
+echo file >afile
+run "$bin" envelope --model rigid --cleat 0.1,0.05 --load 1e4 -o kept.csv --plot afile/p.png
+check "--plot under a file, not a directory: exit 2 naming it, -o's file as it was" \
+    '[ $rc -eq 2 ] && [ "$(cat kept.csv)" = old ] && grep -q "afile: --plot" err'
 
 clilib_done

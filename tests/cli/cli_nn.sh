@@ -58,6 +58,10 @@ run "$bin" train --data "$set_data" --input odd -o x.json
 check "train --input odd: exit 1, no file" '[ $rc -eq 1 ] && grep -q "paper or even" err && no_file x.json'
 run "$bin" train --data "$set_data" --ensemble 0 -o x.json
 check "train --ensemble 0: exit 1, no file" '[ $rc -eq 1 ] && no_file x.json'
+run "$bin" train --data "$set_data" --restarts 1000000000 -o x.json
+check "train --restarts 1e9: exit 1 naming the option and its range, no file" \
+    '[ $rc -eq 1 ] && grep -q -- "--restarts: expected an integer from 1 to 100000" err &&
+     no_file x.json'
 run "$bin" train --data "$set_data" --lm-solver gsl -o x.json
 check "train --lm-solver gsl (version 0.1's, gone with GSL): exit 1 naming cholesky, no file" \
     '[ $rc -eq 1 ] && grep -q "expected cholesky" err && no_file x.json'

@@ -178,6 +178,17 @@ check "ride --out-dir: comfort tables and plot data, no series unless asked" \
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --out-dir rd --series
 check "ride --out-dir --series: the run's series too" \
     '[ $rc -eq 0 ] && [ -s rd/series-point-10kmh.csv ] && [ -s rd/comfort.csv ]'
+# -o and --out-dir together: a failure in the report (here a gnuplot that fails) leaves both as
+# they were; -o's file is committed with the directory, not before it.
+mkdir -p failing-bin
+printf '#!/bin/sh\necho "drawing failed" >&2\nexit 1\n' >failing-bin/gnuplot
+chmod +x failing-bin/gnuplot
+echo kept >series.csv
+run env PATH="$PWD/failing-bin:$PATH" "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point \
+    -o series.csv --out-dir rd
+check "ride -o with --out-dir whose report fails: exit 2, -o's file and the directory as they were" \
+    '[ $rc -eq 2 ] && [ "$(cat series.csv)" = kept ] && [ -s rd/series-point-10kmh.csv ] &&
+     grep -q "drawing failed" err && no_tmp'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --series
 check "ride --series without --out-dir: exit 1" '[ $rc -eq 1 ] && grep -q -- "--out-dir" err'
 

@@ -89,6 +89,20 @@ run "$bin" ride --cleat 0.30,0.05 --speed 3 --dt 0.01
 check "ride --dt too coarse for ISO 2631-1: exit 1" '[ $rc -eq 1 ] && grep -q "80 Hz" err'
 run "$bin" ride --cleat 0.30,0.05 --speed 3 --model nn
 check "ride --model nn without --nn: exit 1" '[ $rc -eq 1 ] && grep -q -- "--nn" err'
+# Options that would change nothing are refused, as envelope's are: a network no model
+# evaluates (it was not even opened, exit 0), a road file's option on a generated obstacle.
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model springs --nn no-such.json -o nonn.csv
+check "ride --nn without a network model: exit 1 naming --nn, no file" \
+    '[ $rc -eq 1 ] && grep -q -- "--nn is for a model that evaluates a network" err &&
+     [ ! -e nonn.csv ]'
+for opt in '--track 0.5' '--side left' '--crg-nan-mode keep'; do
+    run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point $opt -o track.csv
+    check "ride $opt on a cleat: exit 1, no file" \
+        '[ $rc -eq 1 ] && grep -q "applies to a road file" err && [ ! -e track.csv ]'
+    run "$bin" rig --cleat 0.10,0.10 --contact-length 0.28 --model springs $opt -o track.csv
+    check "rig $opt on a cleat: exit 1, no log" \
+        '[ $rc -eq 1 ] && grep -q "applies to a road file" err && [ ! -e track.csv ]'
+done
 printf '[BODY]\nMASS = 4500\nMASS_X = 1\n' >bad.veh
 run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --vehicle bad.veh -o badveh.csv
 check "ride with a bad vehicle file: exit 2 naming file:line and key, no file" \

@@ -43,6 +43,13 @@ run "$bin" compare --data one --models rigid --no-images -o cmp_one
 check "compare refuses it too, offering --simulated" \
     '[ $rc -eq 2 ] && grep -q "the sweep set INTERRADIAL_STIFFNESS" err &&
      grep -q -- "--simulated" err && [ ! -e cmp_one ]'
+# sweep.txt's keys are tirenv's own: a misspelt one is refused, not read past (the set key
+# unseen, the cases would be taken as the springs model's on one tire.tir).
+cp -R one typo && sed 's/^set /sett /' one/sweep.txt >typo/sweep.txt
+run "$bin" compare --data typo --models rigid --no-images -o cmp_typo
+check "a sweep.txt with an unknown key: exit 2 naming file, line and the key" \
+    '[ $rc -eq 2 ] && grep -q "typo/sweep.txt:[0-9]*:1: sett INTERRADIAL_STIFFNESS: unknown key" err &&
+     [ ! -e cmp_typo ]'
 run "$bin" compare --data one --models rigid --no-images --simulated -o cmp_one
 check "compare --simulated takes it as simulated by a model it does not compare" \
     '[ $rc -eq 0 ] && grep -q "SIMULATED" out'
@@ -141,6 +148,13 @@ run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --split trai
 check "--split and the fractions together are refused" '[ $rc -eq 1 ]'
 run "$bin" sweep --jobs 0 --lengths 0.1 --heights 0.05 --contact-lengths 0.3 -o x
 check "--jobs 0 is refused" '[ $rc -eq 1 ] && grep -q -- "--jobs" err'
+# A seed of nothing the sweep draws changes nothing: refused (both were taken, exit 0).
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --split-seed 5 -o x
+check "--split-seed without the fractions is refused" \
+    '[ $rc -eq 1 ] && grep -q -- "--split-seed seeds the permutation" err && [ ! -e x ]'
+run "$bin" sweep --lengths 0.1 --heights 0.05 --contact-lengths 0.3 --seed 5 -o x
+check "--seed without --rig is refused" \
+    '[ $rc -eq 1 ] && grep -q -- "--seed seeds the virtual rig" err && [ ! -e x ]'
 run "$bin" sweep --help
 check "sweep --help documents shards, merge and --jobs" \
     '[ $rc -eq 0 ] && grep -q -- "--shard K/N" out && grep -q "sweep merge" out &&

@@ -86,6 +86,12 @@ static void test_rig_refusals(void **state)
     assert_string_equal(diag.field, "offset");
     assert_int_equal(simulate(c, 0.1, 100, 0, 1e12, &log, &diag), TIRENV_ERANGE);
     assert_non_null(strstr(diag.message, "z readings"));
+    /* Noise that large is named as such, not as the offset (0 here). */
+    tirenv_rig_settings loud = tirenv_rig_default();
+    loud.noise_x = 1e300;
+    assert_int_equal(tirenv_rig_simulate(c->m, c->cleat, &loud, &log, &diag), TIRENV_ERANGE);
+    assert_string_equal(diag.field, "noise_x");
+    assert_int_equal(log.n, 0);
     assert_int_equal(simulate(c, 0.1, 100, INFINITY, 0, &log, &diag), TIRENV_EINVAL);
     assert_string_equal(diag.field, "x_offset");
     /* Each refused setting is named with its value (one sentence named none); no settings,

@@ -544,9 +544,56 @@ static void test_compare_failures(void **state)
     free_dataset(&ds);
 }
 
+/* tirenv_plot_draw's temporary names hold a symbolic link already (a file left behind, or
+ * one placed there): it is replaced, never written through, and the image is a file of its
+ * own. Run first, so that this process's first draw is call 0. */
+static void test_plot_draw_stale(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/tirenv-test-plot-XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char path[1024], link[1024];
+    snprintf(path, sizeof path, "%s/c.gp", dir);
+    FILE *fp = fopen(path, "w");
+    assert_non_null(fp);
+    fputs("set terminal pngcairo size 200,100\nset output png_out\nplot x\n"
+          "set terminal svg size 200,100\nset output svg_out\nplot x\nunset output\n", fp);
+    assert_int_equal(fclose(fp), 0);
+    snprintf(path, sizeof path, "%s/keep.txt", dir);
+    fp = fopen(path, "w");
+    assert_non_null(fp);
+    fputs("keep\n", fp);
+    assert_int_equal(fclose(fp), 0);
+    /* The names of this process's first draw, and of the draws before them (the pid alone). */
+    const char *const names[] = {"c.png.tmp.%ld.0", "c.svg.tmp.%ld.0", "c.png.tmp.%ld",
+                                 "c.svg.tmp.%ld"};
+    for (size_t k = 0; k < 4; ++k) {
+        char name[64];
+        snprintf(name, sizeof name, names[k], (long)getpid());
+        snprintf(link, sizeof link, "%s/%s", dir, name);
+        assert_int_equal(symlink("keep.txt", link), 0);
+    }
+    tirenv_diag diag;
+    tirenv_diag_clear(&diag);
+    assert_int_equal(tirenv_plot_draw(dir, "c", NULL, &diag), TIRENV_OK);
+    assert_string_equal(read_text(dir, "keep.txt"), "keep\n");
+    struct stat st;
+    snprintf(path, sizeof path, "%s/c.png", dir);
+    assert_int_equal(lstat(path, &st), 0);
+    assert_true(S_ISREG(st.st_mode) && st.st_size > 0);
+    for (size_t k = 2; k < 4; ++k) {  /* not this version's names: left as they were */
+        char name[64];
+        snprintf(name, sizeof name, names[k], (long)getpid());
+        snprintf(link, sizeof link, "%s/%s", dir, name);
+        assert_int_equal(remove(link), 0);
+    }
+    remove_dir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_plot_draw_stale),
         cmocka_unit_test(test_metrics_constant_offset),
         cmocka_unit_test(test_metrics_known_values),
         cmocka_unit_test(test_metrics_first_rise_shift),

@@ -169,7 +169,11 @@ static void test_checks(void **state)
     assert_int_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_EINVAL);
     s = grid();
     s.keys[0].key = "NO_SUCH_KEY";
-    assert_int_not_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_OK);
+    assert_int_equal(tirenv_sweep_check(&s, &tire, &d), TIRENV_EINVAL);  /* was EPARSE */
+    assert_string_equal(d.file, "");
+    assert_string_equal(d.field, "NO_SUCH_KEY");
+    assert_non_null(strstr(d.message, "swept tire key 1, value 1 ("));
+    assert_non_null(strstr(d.message, "unknown key; expected one of"));
     s = grid();
     const double negative[] = {1.4e6, -1};
     s.keys[0].values = negative;
@@ -327,8 +331,9 @@ static void test_resume(void **state)
              "set -e; mkdir -p '%s.partial/curves'; cp '%s/sweep.txt' '%s/tire.tir' '%s.partial/';"
              "cp '%s/curves/c0003.csv' '%s/curves/c0009.csv' '%s.partial/curves/';"
              "echo half > '%s.partial/curves/c0004.csv.tmp.abc123';"
+             "echo half > '%s.partial/curves/.c0005.csv.tirenv-tmp.0badcafe.999999.5eed5eed';"
              "echo half > '%s.partial/cases.csv.tmp.xyz'",
-             two, one, one, two, one, one, two, two, two);
+             two, one, one, two, one, one, two, two, two, two);
     assert_int_equal(system(cmd), 0);
     s.jobs = 2;
     run_ok(two, &s, &rep);
@@ -338,6 +343,29 @@ static void test_resume(void **state)
     char partial[700];
     snprintf(partial, sizeof partial, "%s.partial", two);
     assert_int_not_equal(access(partial, F_OK), 0);
+
+    /* A file no run writes, in this sweep's partial directory (new, or resumed): refused and
+     * kept, not removed as a run's leftover. */
+    char four[600], notes[700];
+    tirenv_test_path(t, "four", four);
+    snprintf(notes, sizeof notes, "%s.partial/notes.txt", four);
+    for (int resumed = 0; resumed < 2; ++resumed) {
+        snprintf(cmd, sizeof cmd, "mkdir -p '%s.partial' && echo mine > '%s'", four, notes);
+        assert_int_equal(system(cmd), 0);
+        if (resumed) {
+            snprintf(cmd, sizeof cmd, "cp '%s/sweep.txt' '%s/tire.tir' '%s.partial/'", one, one,
+                     four);
+            assert_int_equal(system(cmd), 0);
+        }
+        const tirenv_tire tire0 = tirenv_tire_default();
+        tirenv_diag d0;
+        assert_int_equal(tirenv_sweep_run(four, &tire0, &s, NULL, &d0), TIRENV_EIO);
+        assert_string_equal(d0.file, notes);
+        assert_non_null(strstr(d0.message, "an entry no sweep writes"));
+        assert_int_equal(access(notes, F_OK), 0);
+    }
+    snprintf(cmd, sizeof cmd, "rm -rf '%s.partial'", four);
+    assert_int_equal(system(cmd), 0);
 
     /* Another sweep's partial directory, or a foreign entry in it, is refused. */
     snprintf(cmd, sizeof cmd, "mkdir -p '%s.partial' && cp '%s/sweep.txt' '%s.partial/'", two,

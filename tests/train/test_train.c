@@ -619,6 +619,15 @@ static void m_errors(json_t *r)
     json_object_set_new(e, "rms", json_real(-1e-3));
 }
 static void m_top(json_t *r) { json_object_set_new(r, "activation", json_string("relu")); }
+/* Keys the format does not know: a typo would leave what the key sets at its default. */
+static void m_key_top(json_t *r) { json_object_set_new(r, "weigths", json_array()); }
+static void m_key_layer(json_t *r) { json_object_set_new(layer_of(r, 1, 0), "bais", json_real(0.5)); }
+static void m_key_law(json_t *r) { json_object_set_new(at(r, "training", "data"), "contact_lwa", json_object()); }
+static void m_key_error(json_t *r)
+{
+    json_object_set_new(json_object_get(at(r, "training", "errors_m"), "train"), "mean",
+                        json_real(1e-3));
+}
 
 /* Every damage refused with EPARSE (EIO for a missing file), the file named, and the field
  * and message saying what is wrong. */
@@ -653,6 +662,10 @@ static void test_file_refusals(void **state)
         {m_stop, "training.result.stop", "'bored'"},
         {m_errors, "training.errors_m.validation.rms", "expected >= 0"},
         {m_top, "activation", "expected an object, found a string"},
+        {m_key_top, "weigths", "unknown key in the top-level object"},
+        {m_key_layer, "members[1].layers[0].bais", "expected one of bias, weights"},
+        {m_key_law, "training.data.contact_lwa", "unknown key in training.data"},
+        {m_key_error, "training.errors_m.train.mean", "expected one of n, rms, max"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         damaged(m, cases[k].mutate);
