@@ -257,6 +257,14 @@ static void print_values(const tirenv_tire *id, const tirenv_tire *was, int cam_
     printf("  Q_RA2                  %.6g (was %.6g)\n", id->cam.q_ra2, was->cam.q_ra2);
 }
 
+/* Whether the cam's laws as read are (a part of them) derived from the file's MF-Tyre keys as
+ * it is read (docs/models.md 14.2), not its own: a note that keeps them says so, as this does
+ * not write them. */
+static int cam_laws_derived(void)
+{
+    return (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
+}
+
 /* The reference's n states from its targets. */
 static void target_states(size_t n, const tirenv_flat_target tg[], tirenv_flat f[])
 {
@@ -366,8 +374,7 @@ static int write_several(const request *q, const char *path, const tirenv_tire *
 {
     const size_t n = q->loads.n, m = q->refs.m;
     const int sidewall = id->springs.k_s > 0;
-    const int cam_derived =
-        (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
+    const int cam_derived = cam_laws_derived();
     char note[2048];
     snprintf(note, sizeof note,
              "RADIAL_STIFFNESS, INTERRADIAL_STIFFNESS%s%s below are identified by `tirenv "
@@ -487,10 +494,7 @@ static int write_springs_one(const char *path, const tirenv_tire *id, const one_
 {
     const size_t n = loads->n;
     const int sidewall = id->springs.k_s > 0;
-    /* The cam's laws as read: the file's own, or (a part of them) derived from its MF-Tyre
-     * keys as it is read (docs/models.md 14.2), which this does not write. */
-    const int cam_derived =
-        (cli_tire_origin.derived & (TIRENV_TIR_CAM | TIRENV_TIR_VERTICAL)) != 0;
+    const int cam_derived = cam_laws_derived();
     char note[1024];
     snprintf(note, sizeof note,
              "RADIAL_STIFFNESS and INTERRADIAL_STIFFNESS%s below are identified by `tirenv\n"
