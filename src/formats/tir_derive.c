@@ -1305,8 +1305,8 @@ static void note_cam_alone(tirenv_tir_origin *origin, unsigned lack, const tiren
              tire->cam.q_ra1, tire->cam.q_ra2);
 }
 
-/* A file without the key missing, which the derivation takes: refused where a model it lacks
- * is needed, else each said not this tire's. */
+/* A file without a key the derivation takes (missing names it): refused where a model it lacks
+ * is needed, else each such model said not this tire's. */
 static int note_missing(const char *path, unsigned need, unsigned lack, const char *missing,
                         tirenv_tir_origin *origin, tirenv_diag *diag)
 {
@@ -1338,6 +1338,7 @@ typedef struct {
     char no_law[sizeof ((tirenv_diag *)0)->message]; /* why no Q_FZ2 was derived, or "" */
 } derivation;
 
+/* dv->make derived into *t: on the file's own laws where the ring is searched on them. */
 static int make_models(tirenv_tire *t, const mf_keys *k, const tirenv_profile *flat,
                        derivation *dv, tirenv_diag *diag)
 {
