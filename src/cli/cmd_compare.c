@@ -206,6 +206,110 @@ static void summary(const compare_options *co, const tirenv_compare_result *r)
     printf("\nreport: %s/report.md\n", co->s.out_dir);
 }
 
+/* The data set (--data, else the embedded one) and what simulated it, with which tire, if it
+ * says (its source.txt, as tirenv dataset build writes it for the embedded sets): the
+ * reference, unless the command line names one. */
+static int data_and_source(compare_options *co, cli_options *o, char data_buf[1024],
+                           char src_tire[1024])
+{
+    if (!co->data)
+        co->data = cli_data_path("dataset", data_buf, 1024);
+    tirenv_dataset_source src;
+    int code;
+    if ((code = cli_data_source(co->data, o, &src, src_tire, 1024)) ||
+        (!co->s.simulated &&
+         (code = cli_sweep_reference("compare", co->data, &src,
+                                     "--simulated-by MODEL with --tire FILE, or --simulated"))))
+        return code;
+    if (src.model[0] && !co->s.simulated_by && !co->s.simulated) {
+        co->s.simulated_by = tirenv_model_type_find(src.model);
+        co->s.simulated = 1;
+        co->s.simulated_raw = src.sweep_raw;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* The models run on the tire, for --set's warnings: each model compared and the one that
+ * simulated the data (the reference, evaluated beside them), each at the case's load (the
+ * network at its contact length: the springs model is counted for it all the same), which is
+ * what cli_tire counts for each of o->runs, compare having no --contact-length. */
+static void models_run(const compare_options *co, cli_options *o)
+{
+    for (size_t k = 0; k <= co->s.n_models && o->n_runs < CLI_MAX_RUNS; ++k) {
+        const tirenv_model_type *t = k < co->s.n_models ? co->s.models[k] : co->s.simulated_by;
+        size_t j = 0;
+        while (j < o->n_runs && o->runs[j] != t)
+            ++j;
+        if (t && j == o->n_runs)
+            o->runs[o->n_runs++] = t;
+    }
+}
+
+/* The tire; the cam of a tire file without MF-Swift's shape keys would be the default
+ * tire's. */
+static int read_tire(const compare_options *co, cli_options *o, tirenv_tire *tire)
+{
+    int code = cli_tire(o, tire);
+    for (size_t k = 0; k <= co->s.n_models && !code; ++k)
+        code = cli_cam_keys(k < co->s.n_models ? co->s.models[k] : co->s.simulated_by, tire,
+                            co->s.tire_label);
+    return code;
+}
+
+/* The data set with the tire's radius, and --nn's network with the radius it was trained at
+ * (into co's settings). */
+static int read_data(compare_options *co, const cli_options *o, double R0, tirenv_dataset *ds,
+                     int *have_ds, tirenv_nn **nn, tirenv_diag *diag)
+{
+    int status = tirenv_dataset_read(co->data, R0, ds, diag);
+    *have_ds = status == TIRENV_OK;
+    if (!status && o->nn_path) {
+        tirenv_train_record rec;
+        status = tirenv_nn_read_json(o->nn_path, nn, &rec, diag);
+        if (!status)
+            co->s.nn_R0 = rec.R0;
+    }
+    return status;
+}
+
+/* The comparison and its report into the output directory, written as a whole
+ * (tirenv_outdir): a failed or killed comparison leaves the previous one as it was. Where
+ * only gnuplot failed, everything but the images is written, and then what failed is said.
+ * An exit code. */
+static int write_comparison(compare_options *co, const tirenv_dataset *ds,
+                            const tirenv_tire *tire, tirenv_nn *nn, tirenv_compare_result *r,
+                            tirenv_diag *diag)
+{
+    const char *out_dir = co->s.out_dir;
+    tirenv_outdir *staged = NULL;
+    int status = tirenv_outdir_begin(out_dir, &staged, diag);
+    if (!status)
+        co->s.out_dir = tirenv_outdir_path(staged);
+    if (!status)
+        status = tirenv_compare(ds, tire, nn, &co->s, r, diag);
+    if (!status)
+        status = tirenv_compare_report(ds, &co->s, r, NULL, diag);
+    if (status == TIRENV_EIO && strcmp(diag->field, "gnuplot") == 0 && r->entry) {
+        tirenv_diag report_diag;
+        tirenv_diag_clear(&report_diag);
+        const int code = cli_fail(status, diag);
+        if (tirenv_compare_report(ds, &co->s, r, NULL, &report_diag) == TIRENV_OK &&
+            tirenv_outdir_commit(staged, &report_diag) == TIRENV_OK)
+            cli_error("compare: tables and report written to %s without images "
+                      "(--no-images skips gnuplot)", out_dir);
+        else
+            tirenv_outdir_abort(staged);
+        return code;
+    }
+    co->s.out_dir = out_dir;
+    if (!status && staged) {
+        status = tirenv_outdir_commit(staged, diag);
+        staged = NULL;
+    }
+    tirenv_outdir_abort(staged);
+    return status ? cli_fail(status, diag) : CLI_EXIT_OK;
+}
+
 int cli_compare_main(int argc, char *argv[])
 {
     cli_options o;
@@ -216,26 +320,14 @@ int cli_compare_main(int argc, char *argv[])
         return code;
     }
     char data_buf[1024], tire_buf[1024], src_tire[1024];
-    if (!co.data)
-        co.data = cli_data_path("dataset", data_buf, sizeof data_buf);
-    /* What simulated the data, with which tire, if the data set says (its source.txt, as
-     * tirenv dataset build writes it for the embedded sets). */
-    tirenv_dataset_source src;
-    if ((code = cli_data_source(co.data, &o, &src, src_tire, sizeof src_tire)) ||
-        (!co.s.simulated &&
-         (code = cli_sweep_reference("compare", co.data, &src,
-                                     "--simulated-by MODEL with --tire FILE, or --simulated")))) {
+    if ((code = data_and_source(&co, &o, data_buf, src_tire))) {
         free(co.case_list);
         return code;
-    }
-    if (src.model[0] && !co.s.simulated_by && !co.s.simulated) {
-        co.s.simulated_by = tirenv_model_type_find(src.model);
-        co.s.simulated = 1;
-        co.s.simulated_raw = src.sweep_raw;
     }
     co.s.data_label = co.data;
     co.s.tire_label = cli_tire_path(&o, tire_buf, sizeof tire_buf);
     co.s.nn_label = o.nn_path;
+    models_run(&co, &o);
 
     tirenv_tire tire;
     tirenv_dataset ds = {0};
@@ -244,70 +336,13 @@ int cli_compare_main(int argc, char *argv[])
     tirenv_compare_result r = {0};
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    /* --set's warnings: each model compared and the one that simulated the data (the
-     * reference, evaluated beside them), each at the case's load (the network at its contact
-     * length: the springs model is counted for it all the same), which is what cli_tire
-     * counts for each of o.runs, compare having no --contact-length. */
-    for (size_t k = 0; k <= co.s.n_models && o.n_runs < CLI_MAX_RUNS; ++k) {
-        const tirenv_model_type *t = k < co.s.n_models ? co.s.models[k] : co.s.simulated_by;
-        size_t j = 0;
-        while (j < o.n_runs && o.runs[j] != t)
-            ++j;
-        if (t && j == o.n_runs)
-            o.runs[o.n_runs++] = t;
+    if (!(code = read_tire(&co, &o, &tire))) {
+        const int status = read_data(&co, &o, tire.springs.R0, &ds, &have_ds, &nn, &diag);
+        code = status ? cli_fail(status, &diag)
+                      : write_comparison(&co, &ds, &tire, nn, &r, &diag);
+        if (!code)
+            summary(&co, &r);
     }
-    if ((code = cli_tire(&o, &tire)))
-        goto done;
-    /* The cam of a tire file without MF-Swift's shape keys would be the default tire's. */
-    for (size_t k = 0; k <= co.s.n_models && !code; ++k)
-        code = cli_cam_keys(k < co.s.n_models ? co.s.models[k] : co.s.simulated_by, &tire,
-                            co.s.tire_label);
-    if (code)
-        goto done;
-    int status = tirenv_dataset_read(co.data, tire.springs.R0, &ds, &diag);
-    have_ds = status == TIRENV_OK;
-    if (!status && o.nn_path) {
-        tirenv_train_record rec;
-        status = tirenv_nn_read_json(o.nn_path, &nn, &rec, &diag);
-        if (!status)
-            co.s.nn_R0 = rec.R0;
-    }
-    /* The output directory is written as a whole (tirenv_outdir): a failed or killed
-     * comparison leaves the previous one as it was. */
-    const char *out_dir = co.s.out_dir;
-    tirenv_outdir *staged = NULL;
-    if (!status && !(status = tirenv_outdir_begin(out_dir, &staged, &diag)))
-        co.s.out_dir = tirenv_outdir_path(staged);
-    if (!status)
-        status = tirenv_compare(&ds, &tire, nn, &co.s, &r, &diag);
-    if (!status)
-        status = tirenv_compare_report(&ds, &co.s, &r, NULL, &diag);
-    if (status == TIRENV_EIO && strcmp(diag.field, "gnuplot") == 0 && r.entry) {
-        /* Everything but the images is written: finish the report, then say what failed. */
-        tirenv_diag report_diag;
-        tirenv_diag_clear(&report_diag);
-        code = cli_fail(status, &diag);
-        if (tirenv_compare_report(&ds, &co.s, &r, NULL, &report_diag) == TIRENV_OK &&
-            tirenv_outdir_commit(staged, &report_diag) == TIRENV_OK)
-            cli_error("compare: tables and report written to %s without images "
-                      "(--no-images skips gnuplot)", out_dir);
-        else
-            tirenv_outdir_abort(staged);
-        goto done;
-    }
-    co.s.out_dir = out_dir;
-    if (!status && staged) {
-        status = tirenv_outdir_commit(staged, &diag);
-        staged = NULL;
-    }
-    tirenv_outdir_abort(staged);
-    if (status) {
-        code = cli_fail(status, &diag);
-        goto done;
-    }
-    summary(&co, &r);
-    code = CLI_EXIT_OK;
-done:
     tirenv_compare_result_free(&r);
     tirenv_nn_free(nn);
     if (have_ds)

@@ -366,214 +366,275 @@ static int merge_main(int argc, char *argv[])
     return CLI_EXIT_OK;
 }
 
+/* The command's own options, as given. */
+typedef struct {
+    value_list lists[4];   /* --lengths, --heights, --contact-lengths, --loads */
+    sweep_keys keys;       /* --set KEY=V1,V2,... */
+    const char *split, *tire_path;
+    double control, validation;  /* the fractions; NaN if not given */
+    long seed, split_seed;  /* -1: not given, 1 */
+    size_t shard[2];       /* K, N */
+    int rig, want_progress;
+} sweep_args;
+
+/* A model that evaluates a network gets it with the radius its x_N refers to; sweep.txt names
+ * the model file by its bytes (id). */
+typedef struct {
+    tirenv_nn *nn;
+    tirenv_train_record rec;
+    char id[32];
+} sweep_network;
+
 /* What cli_sweep_main allocates for the sweep: the value lists, the keys' axes, the network. */
-static void free_axes(value_list lists[4], sweep_keys *keys, tirenv_nn *net)
+static void free_axes(sweep_args *a, sweep_network *net)
 {
     for (size_t k = 0; k < 4; ++k)
-        free(lists[k].v);
-    for (size_t k = 0; k < keys->n; ++k) {
-        free(keys->keys[k]);
-        free(keys->values[k]);
+        free(a->lists[k].v);
+    for (size_t k = 0; k < a->keys.n; ++k) {
+        free(a->keys.keys[k]);
+        free(a->keys.values[k]);
     }
-    tirenv_nn_free(net);
+    tirenv_nn_free(net->nn);
 }
 
-int cli_sweep_main(int argc, char *argv[])
+static int parse_args(int argc, char *argv[], sweep_args *a, cli_options *o)
 {
-    if (argc > 1 && strcmp(argv[1], "merge") == 0)
-        return merge_main(argc - 1, argv + 1);
-    value_list lists[4] = {{"--lengths", NULL, 0}, {"--heights", NULL, 0},
-                           {"--contact-lengths", NULL, 0}, {"--loads", NULL, 0}};
-    sweep_keys keys;
-    memset(&keys, 0, sizeof keys);
-    const char *split = NULL, *tire_path = NULL;
-    double control = NAN, validation = NAN;
-    long seed = -1, split_seed = -1;  /* -1: not given, 1 */
-    size_t shard[2] = {0, 1};
-    int rig = 0, want_progress = 0;
     const cli_opt own[] = {
-        {.name = "lengths", .kind = CLI_CUSTOM, .dst = &lists[0], .parse = parse_list},
-        {.name = "heights", .kind = CLI_CUSTOM, .dst = &lists[1], .parse = parse_list},
-        {.name = "contact-lengths", .kind = CLI_CUSTOM, .dst = &lists[2], .parse = parse_list},
-        {.name = "loads", .kind = CLI_CUSTOM, .dst = &lists[3], .parse = parse_list},
-        {.name = "set", .kind = CLI_CUSTOM, .dst = &keys, .parse = parse_axis, .repeatable = 1},
-        {.name = "tire", .kind = CLI_STRING, .dst = &tire_path},
-        {.name = "rig", .kind = CLI_FLAG, .dst = &rig},
-        {.name = "split", .kind = CLI_STRING, .dst = &split},
-        {.name = "control-fraction", .kind = CLI_NUMBER, .dst = &control},
-        {.name = "validation-fraction", .kind = CLI_NUMBER, .dst = &validation},
-        {.name = "split-seed", .kind = CLI_COUNT, .dst = &split_seed, .min = 0,
+        {.name = "lengths", .kind = CLI_CUSTOM, .dst = &a->lists[0], .parse = parse_list},
+        {.name = "heights", .kind = CLI_CUSTOM, .dst = &a->lists[1], .parse = parse_list},
+        {.name = "contact-lengths", .kind = CLI_CUSTOM, .dst = &a->lists[2],
+         .parse = parse_list},
+        {.name = "loads", .kind = CLI_CUSTOM, .dst = &a->lists[3], .parse = parse_list},
+        {.name = "set", .kind = CLI_CUSTOM, .dst = &a->keys, .parse = parse_axis,
+         .repeatable = 1},
+        {.name = "tire", .kind = CLI_STRING, .dst = &a->tire_path},
+        {.name = "rig", .kind = CLI_FLAG, .dst = &a->rig},
+        {.name = "split", .kind = CLI_STRING, .dst = &a->split},
+        {.name = "control-fraction", .kind = CLI_NUMBER, .dst = &a->control},
+        {.name = "validation-fraction", .kind = CLI_NUMBER, .dst = &a->validation},
+        {.name = "split-seed", .kind = CLI_COUNT, .dst = &a->split_seed, .min = 0,
          .max = 2147483647L},
-        {.name = "seed", .kind = CLI_COUNT, .dst = &seed, .min = 0, .max = 2147483647L},
-        {.name = "shard", .kind = CLI_CUSTOM, .dst = shard, .parse = parse_shard},
-        {.name = "progress", .kind = CLI_FLAG, .dst = &want_progress},
+        {.name = "seed", .kind = CLI_COUNT, .dst = &a->seed, .min = 0, .max = 2147483647L},
+        {.name = "shard", .kind = CLI_CUSTOM, .dst = a->shard, .parse = parse_shard},
+        {.name = "progress", .kind = CLI_FLAG, .dst = &a->want_progress},
         {.name = NULL},
     };
     const cli_parser p = {.name = "sweep", .usage = usage, .opts = own,
                           .groups = CLI_METHOD | CLI_OUTPUT | CLI_MODEL | CLI_NETWORK |
                                     CLI_EXTRAPOLATE | CLI_JOBS};
-    cli_options o;
-    int code = cli_parse(&p, argc, argv, &o);
-    code = code == CLI_GO_ON ? CLI_EXIT_OK : code == CLI_EXIT_OK ? -1 : code;
-    tirenv_sweep_settings s = tirenv_sweep_default();
-    if (!code && !o.output) {
+    return cli_parse(&p, argc, argv, o);
+}
+
+/* The options that go together: -o, the grid's lists, one way to split; --split's name into
+ * s->split. */
+static int check_args(const sweep_args *a, const cli_options *o, tirenv_sweep_settings *s)
+{
+    const value_list *l = a->lists;
+    if (!o->output) {
         cli_error("sweep: -o DIR is required");
-        code = CLI_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
-    if (!code && (!lists[0].n || !lists[1].n || !lists[2].n == !lists[3].n)) {
+    if (!l[0].n || !l[1].n || !l[2].n == !l[3].n) {
         cli_error("sweep: expected --lengths, --heights and one of --contact-lengths and "
                   "--loads");
-        code = CLI_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
-    const int fractions = !isnan(control) || !isnan(validation);
-    if (!code && split && fractions) {
+    const int fractions = !isnan(a->control) || !isnan(a->validation);
+    if (a->split && fractions) {
         cli_error("sweep: --split gives every case one split; the fractions draw them: give "
                   "one or the other");
-        code = CLI_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
-    if (!code && fractions &&
-        !((isnan(control) || (control >= 0 && control <= 1)) &&
-          (isnan(validation) || (validation >= 0 && validation <= 1)))) {
+    if (fractions && !((isnan(a->control) || (a->control >= 0 && a->control <= 1)) &&
+                       (isnan(a->validation) || (a->validation >= 0 && a->validation <= 1)))) {
         cli_error("sweep: --control-fraction and --validation-fraction: expected numbers in "
                   "[0, 1]");
-        code = CLI_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     /* A seed of something the sweep does not draw would change nothing: refused, as envelope
      * refuses its options that change nothing (both were taken and ignored, exit 0). */
-    if (!code && split_seed >= 0 && !fractions) {
+    if (a->split_seed >= 0 && !fractions) {
         cli_error("sweep: --split-seed seeds the permutation of --control-fraction and "
                   "--validation-fraction; give one of them, or leave the seed out");
-        code = CLI_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
-    if (!code && seed >= 0 && !rig) {
+    if (a->seed >= 0 && !a->rig) {
         cli_error("sweep: --seed seeds the virtual rig's noise; give --rig, or leave the seed "
                   "out");
-        code = CLI_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
-    if (!code && split) {
+    if (a->split) {
         size_t k = 0;
-        while (k < 3 && strcmp(split, tirenv_split_name((tirenv_split)k)) != 0)
+        while (k < 3 && strcmp(a->split, tirenv_split_name((tirenv_split)k)) != 0)
             ++k;
         if (k == 3) {
             cli_error("sweep: --split: expected train, control or validation, got '%s'",
-                      split);
-            code = CLI_EXIT_USAGE;
+                      a->split);
+            return CLI_EXIT_USAGE;
         }
-        s.split = (tirenv_split)k;
+        s->split = (tirenv_split)k;
     }
-    tirenv_tire tire;
-    o.tire_path = tire_path;
+    return CLI_EXIT_OK;
+}
+
+/* --nn's network, its record and its bytes' fingerprint. */
+static int read_network(const cli_options *o, sweep_network *net)
+{
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    char tire_buf[1024];
+    /* Named in sweep.txt by its bytes, read apart from the network, and checked again by a
+     * resumed run: a pipe would give them once. */
+    const int code = cli_refuse_pipe(o->nn_path, "sweep reads the network file again to name "
+                                     "it by its bytes in sweep.txt");
+    if (code)
+        return code;
+    int st = tirenv_nn_read_json(o->nn_path, &net->nn, &net->rec, &d);
+    /* A file without the law of its tire turns loads and contact lengths into each other by
+     * the tire file's springs model, as envelope's and predict's network does: refused when
+     * the file has none of its own (the default tire's would stand in unsaid). */
+    if (!st && !net->rec.law.n)
+        st = cli_nn_springs_stand_in(o->nn_path, cli_tire_path(o, tire_buf, sizeof tire_buf),
+                                     &cli_tire_origin, &d);
+    if (st)
+        return cli_fail(st, &d);
+    if (!net->rec.law.n)
+        fprintf(stderr, "tirenv: warning: %s records no relation between load and contact "
+                "length of its tire (training.data.contact_law; a file written before tirenv "
+                "recorded it): loads become contact lengths by the springs model of the tire "
+                "file, not by the tire the network was trained on; train it again to record "
+                "it\n", o->nn_path);
+    if (file_fingerprint(o->nn_path, net->id)) {
+        cli_error("sweep: %s: cannot read", o->nn_path);
+        return CLI_EXIT_DATA;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* The command line parsed and checked, the tire read, and the network where the model
+ * evaluates one: CLI_GO_ON, else the exit code. */
+static int prepare(int argc, char *argv[], sweep_args *a, cli_options *o, tirenv_tire *tire,
+                   tirenv_sweep_settings *s, sweep_network *net)
+{
+    int code = parse_args(argc, argv, a, o);
+    if (code != CLI_GO_ON)
+        return code;
+    if ((code = check_args(a, o, s)))
+        return code;
+    o->tire_path = a->tire_path;
     /* Regimes given as contact lengths: the rigid disc's and the point's loads are the springs
      * model's there, which the tire must have (cli_tire). */
-    o.have_contact_length = lists[2].n > 0;
-    if (!code)
-        code = cli_tire(&o, &tire);
-    /* A model that evaluates a network gets it with the radius its x_N refers to; sweep.txt
-     * names the model file by its bytes. */
-    tirenv_nn *with_net = NULL;
-    tirenv_train_record rec = {.R0 = 0};
-    char net_id[32] = "";
-    if (!code && o.type)
-        s.type = o.type;
-    if (!code && (tirenv_model_type_flags(s.type) & TIRENV_MODEL_NEEDS_NETWORK)) {
-        tirenv_diag d;
-        tirenv_diag_clear(&d);
-        char tire_buf[1024];
-        /* Named in sweep.txt by its bytes, read apart from the network, and checked again by
-         * a resumed run: a pipe would give them once. */
-        code = cli_refuse_pipe(o.nn_path, "sweep reads the network file again to name it "
-                                "by its bytes in sweep.txt");
-        int st = code ? TIRENV_OK : tirenv_nn_read_json(o.nn_path, &with_net, &rec, &d);
-        /* A file without the law of its tire turns loads and contact lengths into each other
-         * by the tire file's springs model, as envelope's and predict's network does: refused
-         * when the file has none of its own (the default tire's would stand in unsaid). */
-        if (!code && !st && !rec.law.n)
-            st = cli_nn_springs_stand_in(o.nn_path, cli_tire_path(&o, tire_buf,
-                                                                  sizeof tire_buf),
-                                         &cli_tire_origin, &d);
-        if (!code && st)
-            code = cli_fail(st, &d);
-        if (!code && !rec.law.n)
-            fprintf(stderr, "tirenv: warning: %s records no relation between load and contact "
-                    "length of its tire (training.data.contact_law; a file written before "
-                    "tirenv recorded it): loads become contact lengths by the springs model of "
-                    "the tire file, not by the tire the network was trained on; train it again "
-                    "to record it\n", o.nn_path);
-        if (!code && file_fingerprint(o.nn_path, net_id)) {
-            cli_error("sweep: %s: cannot read", o.nn_path);
-            code = CLI_EXIT_DATA;
-        }
-    }
-    if (code) {
-        free_axes(lists, &keys, with_net);
-        return code < 0 ? CLI_EXIT_OK : code;
-    }
-    s.network = with_net;
-    s.network_R0 = rec.R0;
-    s.network_law = rec.law.n ? &rec.law : NULL;
-    s.network_id = net_id;
-    s.extrapolate = o.extrapolate;
-    s.rig = rig;
-    s.jobs = o.jobs;
-    s.seed = seed < 0 ? 1ul : (unsigned long)seed;
-    s.split_seed = split_seed < 0 ? 1ul : (unsigned long)split_seed;
-    s.control_fraction = isnan(control) ? 0 : control;
-    s.validation_fraction = isnan(validation) ? 0 : validation;
-    s.shard = shard[0];
-    s.shards = shard[1];
-    s.lengths = lists[0].v;
-    s.n_lengths = lists[0].n;
-    s.heights = lists[1].v;
-    s.n_heights = lists[1].n;
-    s.contact_lengths = lists[2].v;
-    s.n_contact_lengths = lists[2].n;
-    s.loads = lists[3].v;
-    s.n_loads = lists[3].n;
-    for (size_t k = 0; k < keys.n; ++k)
-        s.keys[k] = (tirenv_sweep_axis){keys.keys[k], keys.counts[k], keys.values[k]};
-    s.n_keys = keys.n;
-    /* The cam of a tire file without MF-Swift's shape keys, named with the file here (the
-     * library refuses it too, without the file); a swept key counts as the tire's own. */
-    if (s.type == tirenv_model_cam) {
-        tirenv_tire first = tire;
-        tirenv_diag d;
-        tirenv_diag_clear(&d);
-        for (size_t k = 0; k < keys.n; ++k)  /* a bad key: the library says */
-            (void)set_key(&first, keys.keys[k], keys.counts[k] ? keys.values[k][0] : 0.0, &d);
-        char path_buf[1024];
-        const int refused = cli_cam_keys(s.type, &first,
-                                         cli_tire_path(&o, path_buf, sizeof path_buf));
-        if (refused) {
-            free_axes(lists, &keys, with_net);
-            return refused;
-        }
-    }
-    warn_unread_keys(&s, &tire);
+    o->have_contact_length = a->lists[2].n > 0;
+    if ((code = cli_tire(o, tire)))
+        return code;
+    if (o->type)
+        s->type = o->type;
+    if ((tirenv_model_type_flags(s->type) & TIRENV_MODEL_NEEDS_NETWORK) &&
+        (code = read_network(o, net)))
+        return code;
+    return CLI_GO_ON;
+}
+
+/* The settings from the options (the lists and keys stay a's, the network net's). */
+static void fill_settings(tirenv_sweep_settings *s, const sweep_args *a, const cli_options *o,
+                          const sweep_network *net)
+{
+    s->network = net->nn;
+    s->network_R0 = net->rec.R0;
+    s->network_law = net->rec.law.n ? &net->rec.law : NULL;
+    s->network_id = net->id;
+    s->extrapolate = o->extrapolate;
+    s->rig = a->rig;
+    s->jobs = o->jobs;
+    s->seed = a->seed < 0 ? 1ul : (unsigned long)a->seed;
+    s->split_seed = a->split_seed < 0 ? 1ul : (unsigned long)a->split_seed;
+    s->control_fraction = isnan(a->control) ? 0 : a->control;
+    s->validation_fraction = isnan(a->validation) ? 0 : a->validation;
+    s->shard = a->shard[0];
+    s->shards = a->shard[1];
+    s->lengths = a->lists[0].v;
+    s->n_lengths = a->lists[0].n;
+    s->heights = a->lists[1].v;
+    s->n_heights = a->lists[1].n;
+    s->contact_lengths = a->lists[2].v;
+    s->n_contact_lengths = a->lists[2].n;
+    s->loads = a->lists[3].v;
+    s->n_loads = a->lists[3].n;
+    for (size_t k = 0; k < a->keys.n; ++k)
+        s->keys[k] = (tirenv_sweep_axis){a->keys.keys[k], a->keys.counts[k],
+                                         a->keys.values[k]};
+    s->n_keys = a->keys.n;
+}
+
+/* The cam of a tire file without MF-Swift's shape keys, named with the file here (the library
+ * refuses it too, without the file); a swept key counts as the tire's own. */
+static int refuse_cam_keys(const tirenv_sweep_settings *s, const tirenv_tire *tire,
+                           const sweep_keys *keys, const cli_options *o)
+{
+    if (s->type != tirenv_model_cam)
+        return CLI_EXIT_OK;
+    tirenv_tire first = *tire;
+    tirenv_diag d;
+    tirenv_diag_clear(&d);
+    for (size_t k = 0; k < keys->n; ++k)  /* a bad key: the library says */
+        (void)set_key(&first, keys->keys[k], keys->counts[k] ? keys->values[k][0] : 0.0, &d);
+    char path_buf[1024];
+    return cli_cam_keys(s->type, &first, cli_tire_path(o, path_buf, sizeof path_buf));
+}
+
+/* The sweep run with its progress bar, and what it did said. */
+static int run_sweep(const cli_options *o, const tirenv_tire *tire, tirenv_sweep_settings *s,
+                     int want_progress)
+{
     const int tty = isatty(STDERR_FILENO);
     progress_state ps = {.on = want_progress || tty, .tty = tty, .t0 = cli_wall_seconds(),
                          .first = (size_t)-1, .last_tenth = (size_t)-1};
-    s.progress = progress;
-    s.progress_ctx = &ps;
+    s->progress = progress;
+    s->progress_ctx = &ps;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     tirenv_sweep_report rep;
-    const int status = tirenv_sweep_run(o.output, &tire, &s, &rep, &diag);
-    free_axes(lists, &keys, with_net);
+    const int status = tirenv_sweep_run(o->output, tire, s, &rep, &diag);
     if (status) {
         if (tty && ps.first != (size_t)-1)
             fputc('\n', stderr);
         return cli_fail(status, &diag);
     }
     char part[64] = "";
-    if (s.shards > 1)
-        snprintf(part, sizeof part, " (shard %zu/%zu: %zu cases)", s.shard, s.shards,
+    if (s->shards > 1)
+        snprintf(part, sizeof part, " (shard %zu/%zu: %zu cases)", s->shard, s->shards,
                  rep.part_cases);
     if (rep.already_complete)
         fprintf(stderr, "tirenv: sweep: %s already holds this sweep%s, complete; nothing to "
-                "do\n", o.output, part);
+                "do\n", o->output, part);
     else
         fprintf(stderr, "tirenv: sweep: %zu-case grid%s written to %s: %zu cases run, %zu "
-                "kept from an interrupted run (%.1f s)\n", rep.cases, part, o.output, rep.run,
+                "kept from an interrupted run (%.1f s)\n", rep.cases, part, o->output, rep.run,
                 rep.resumed, cli_wall_seconds() - ps.t0);
     return CLI_EXIT_OK;
+}
+
+int cli_sweep_main(int argc, char *argv[])
+{
+    if (argc > 1 && strcmp(argv[1], "merge") == 0)
+        return merge_main(argc - 1, argv + 1);
+    sweep_args a = {.lists = {{"--lengths", NULL, 0}, {"--heights", NULL, 0},
+                              {"--contact-lengths", NULL, 0}, {"--loads", NULL, 0}},
+                    .control = NAN, .validation = NAN, .seed = -1, .split_seed = -1,
+                    .shard = {0, 1}};
+    sweep_network net = {.nn = NULL, .rec = {.R0 = 0}, .id = ""};
+    tirenv_sweep_settings s = tirenv_sweep_default();
+    cli_options o;
+    tirenv_tire tire;
+    int code = prepare(argc, argv, &a, &o, &tire, &s, &net);
+    if (code == CLI_GO_ON) {
+        fill_settings(&s, &a, &o, &net);
+        code = refuse_cam_keys(&s, &tire, &a.keys, &o);
+        if (!code) {
+            warn_unread_keys(&s, &tire);
+            code = run_sweep(&o, &tire, &s, a.want_progress);
+        }
+    }
+    free_axes(&a, &net);
+    return code;
 }

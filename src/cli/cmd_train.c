@@ -363,6 +363,116 @@ static void print_seeds(const tirenv_dataset *ds, const tirenv_nn_seeds *r)
                1e3 * r->control_median, 1e3 * r->control_q1, 1e3 * r->control_q3);
 }
 
+/* The ensemble is of restarts: more members than restarts would be fewer than asked, as the
+ * default's 4 of 1 backprop restart are, silently; asked for, that is a misuse. */
+static int check_ensemble(const train_options *t)
+{
+    const tirenv_train_settings asked = settings_from(t);
+    if (t->ensemble > 0 && asked.ensemble > asked.restarts) {
+        cli_error("train: --ensemble %ld: the mean of more networks than the %zu restarts "
+                  "(--restarts%s) train; expected at most %zu, or more restarts",
+                  t->ensemble, asked.restarts, t->restarts > 0 ? "" : ", the trainer's default",
+                  asked.restarts);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* The data set's samples by split (tirenv_samples_from_dataset), and the arrays they own. */
+typedef struct {
+    tirenv_samples s[3];
+    double *x[3], *y[3];
+} split_samples;
+
+static void free_samples(split_samples *sm)
+{
+    for (int sp = 0; sp < 3; ++sp) {
+        free(sm->x[sp]);
+        free(sm->y[sp]);
+    }
+}
+
+static int read_samples(const tirenv_dataset *ds, const char *data, split_samples *sm,
+                        tirenv_diag *diag)
+{
+    int status = TIRENV_OK;
+    for (int sp = 0; sp < 3 && !status; ++sp)
+        status = tirenv_samples_from_dataset(ds, (tirenv_split)sp, &sm->s[sp], &sm->x[sp],
+                                             &sm->y[sp], diag);
+    if (!status && sm->s[TIRENV_SPLIT_TRAIN].n == 0)
+        status = tirenv_error(diag, TIRENV_EINVAL, data, 0, "split",
+                              "no training cases in the manifest (split 'train')");
+    return status;
+}
+
+/* The relation between load and contact length of the tire the data came from (what), which
+ * the file records so that the network, driven by the contact length, takes a load as that
+ * tire would. */
+typedef struct {
+    tirenv_contact_law law;
+    char what[80];
+} data_law;
+
+/* The network trained as t asks (with --seeds, over several seeds, the median's kept) into
+ * *nn, its report and the settings it was trained with; the bar drawn on a terminal. */
+static int train(const train_options *t, const cli_options *o, const tirenv_dataset *ds,
+                 const tirenv_tire *tire, const split_samples *sm, tirenv_train_settings *set,
+                 bar *b, tirenv_nn **nn, tirenv_train_report *rep, tirenv_diag *diag)
+{
+    *set = settings_from(t);
+    set->jobs = o->jobs;
+    *b = (bar){.trainer = tirenv_trainer_type_name(t->type), .last = 0, .drawn = 0,
+               .over_H = set->target == TIRENV_NN_TARGET_H_OVER_H};
+    if (isatty(STDERR_FILENO) && t->seeds < 0) {
+        set->progress = draw;
+        set->progress_data = b;
+    }
+    tirenv_nn_seeds spread;
+    memset(&spread, 0, sizeof spread);
+    int status;
+    if (t->seeds > 0) {
+        status = tirenv_nn_train_seeds(t->type, set, ds, ds, tire->springs.R0, (size_t)t->seeds,
+                                       &spread, nn, rep, diag);
+        if (!status)
+            set->seed = spread.seed[spread.median_seed];
+    } else {
+        status = tirenv_train(t->type, set, &sm->s[0], &sm->s[1], &sm->s[2], nn, rep, diag);
+    }
+    if (b->drawn)
+        fputs("\r\033[K", stderr);
+    if (!status) {
+        print_report(t->data, ds, set, b->trainer, rep);
+        if (t->seeds > 0)
+            print_seeds(ds, &spread);
+    }
+    tirenv_nn_seeds_free(&spread);
+    return status;
+}
+
+/* The network written to -o with the record of its training (tirenv_nn_write_json). */
+static int write_model(const char *path, const tirenv_nn *nn, const train_options *t,
+                       const tirenv_train_settings *set, const char *trainer,
+                       const tirenv_train_report *rep, const split_samples *sm,
+                       const tirenv_tire *tire, const data_law *law, tirenv_diag *diag)
+{
+    tirenv_train_record rec;
+    memset(&rec, 0, sizeof rec);
+    snprintf(rec.trainer, sizeof rec.trainer, "%s", trainer);
+    rec.settings = *set;
+    rec.settings.progress = NULL;
+    rec.settings.progress_data = NULL;
+    rec.report = *rep;
+    uint64_t h = TIRENV_FNV1A64_OFFSET;
+    for (int sp = 0; sp < 3; ++sp)
+        h = tirenv_samples_fingerprint(&sm->s[sp], h);
+    rec.fingerprint = h;
+    rec.R0 = tire->springs.R0;
+    rec.law = law->law;
+    snprintf(rec.law_source, sizeof rec.law_source, "%s", law->what);
+    snprintf(rec.data, sizeof rec.data, "%s", t->data);
+    return tirenv_nn_write_json(path, nn, &rec, diag);
+}
+
 int cli_train_main(int argc, char *argv[])
 {
     cli_options o;
@@ -375,17 +485,8 @@ int cli_train_main(int argc, char *argv[])
     int code = parse(argc, argv, &o, &t);
     if (code != CLI_GO_ON)
         return code;
-    /* The ensemble is of restarts: more members than restarts would be fewer than asked, as
-     * the default's 4 of 1 backprop restart are, silently; asked for, that is a misuse. */
-    const tirenv_train_settings asked = settings_from(&t);
-    if (t.ensemble > 0 && asked.ensemble > asked.restarts) {
-        cli_error("train: --ensemble %ld: the mean of more networks than the %zu restarts "
-                  "(--restarts%s) train; expected at most %zu, or more restarts",
-                  t.ensemble, asked.restarts, t.restarts > 0 ? "" : ", the trainer's default",
-                  asked.restarts);
-        return CLI_EXIT_USAGE;
-    }
-
+    if ((code = check_ensemble(&t)))
+        return code;
     /* The radius x_N refers to: the tire that simulated the data, if the data set says. */
     tirenv_dataset_source src;
     char tire_buf[1024];
@@ -395,93 +496,31 @@ int cli_train_main(int argc, char *argv[])
         return code;
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
-    int status = TIRENV_OK;
-    tirenv_samples s[3];
-    double *x[3] = {NULL, NULL, NULL}, *y[3] = {NULL, NULL, NULL};
+    split_samples sm = {.x = {NULL, NULL, NULL}, .y = {NULL, NULL, NULL}};
     tirenv_nn *nn = NULL;
-    for (int sp = 0; sp < 3 && !status; ++sp)
-        status = tirenv_samples_from_dataset(&ds, (tirenv_split)sp, &s[sp], &x[sp], &y[sp],
-                                             &diag);
-    if (!status && s[TIRENV_SPLIT_TRAIN].n == 0)
-        status = tirenv_error(&diag, TIRENV_EINVAL, t.data, 0, "split",
-                              "no training cases in the manifest (split 'train')");
-    /* The relation between load and contact length of the tire the data came from, which the
-     * file records so that the network, driven by the contact length, takes a load as that
-     * tire would: found before the training, so that a data set that gives none costs none. */
-    tirenv_contact_law law;
-    char law_what[80] = "";
+    int status = read_samples(&ds, t.data, &sm, &diag);
+    /* The law found before the training, so that a data set that gives none costs none. */
+    data_law law = {.what = ""};
     if (!status && o.output) {
         const tirenv_model_type *source = src.model[0] ? tirenv_model_type_find(src.model) : NULL;
-        status = tirenv_contact_law_of_data(&ds, source, &tire, &law, law_what, sizeof law_what,
-                                            &diag);
+        status = tirenv_contact_law_of_data(&ds, source, &tire, &law.law, law.what,
+                                            sizeof law.what, &diag);
     }
-    if (status) {
-        code = cli_fail(status, &diag);
-        goto done;
-    }
-
-    tirenv_train_settings set = settings_from(&t);
-    set.jobs = o.jobs;
-    bar b = {.trainer = tirenv_trainer_type_name(t.type), .last = 0, .drawn = 0,
-             .over_H = set.target == TIRENV_NN_TARGET_H_OVER_H};
-    if (isatty(STDERR_FILENO) && t.seeds < 0) {
-        set.progress = draw;
-        set.progress_data = &b;
-    }
+    tirenv_train_settings set;
+    bar b;
     tirenv_train_report rep;
-    tirenv_nn_seeds spread;
-    memset(&spread, 0, sizeof spread);
-    if (t.seeds > 0) {
-        status = tirenv_nn_train_seeds(t.type, &set, &ds, &ds, tire.springs.R0, (size_t)t.seeds,
-                                       &spread, &nn, &rep, &diag);
-        if (!status)
-            set.seed = spread.seed[spread.median_seed];
-    } else {
-        status = tirenv_train(t.type, &set, &s[0], &s[1], &s[2], &nn, &rep, &diag);
-    }
-    if (b.drawn)
-        fputs("\r\033[K", stderr);
-    if (status) {
-        tirenv_nn_seeds_free(&spread);
+    if (!status)
+        status = train(&t, &o, &ds, &tire, &sm, &set, &b, &nn, &rep, &diag);
+    if (!status && o.output)
+        status = write_model(o.output, nn, &t, &set, b.trainer, &rep, &sm, &tire, &law, &diag);
+    if (status)
         code = cli_fail(status, &diag);
-        goto done;
-    }
-    print_report(t.data, &ds, &set, b.trainer, &rep);
-    if (t.seeds > 0)
-        print_seeds(&ds, &spread);
-    tirenv_nn_seeds_free(&spread);
-
-    if (o.output) {
-        tirenv_train_record rec;
-        memset(&rec, 0, sizeof rec);
-        snprintf(rec.trainer, sizeof rec.trainer, "%s", b.trainer);
-        rec.settings = set;
-        rec.settings.progress = NULL;
-        rec.settings.progress_data = NULL;
-        rec.report = rep;
-        uint64_t h = TIRENV_FNV1A64_OFFSET;
-        for (int sp = 0; sp < 3; ++sp)
-            h = tirenv_samples_fingerprint(&s[sp], h);
-        rec.fingerprint = h;
-        rec.R0 = tire.springs.R0;
-        rec.law = law;
-        snprintf(rec.law_source, sizeof rec.law_source, "%s", law_what);
-        snprintf(rec.data, sizeof rec.data, "%s", t.data);
-        if ((status = tirenv_nn_write_json(o.output, nn, &rec, &diag))) {
-            code = cli_fail(status, &diag);
-            goto done;
-        }
+    else if (o.output)
         printf("  model written to %s\n", o.output);
-    } else {
+    else
         printf("  model not saved (no -o FILE)\n");
-    }
-    code = CLI_EXIT_OK;
-done:
     tirenv_nn_free(nn);
-    for (int sp = 0; sp < 3; ++sp) {
-        free(x[sp]);
-        free(y[sp]);
-    }
+    free_samples(&sm);
     tirenv_dataset_free(&ds);
     return code;
 }

@@ -93,6 +93,72 @@ static size_t obstacle_index(int code)
     return i;
 }
 
+/* --method NAME. */
+static int method_option(cli_options *o, const char *arg)
+{
+    if (strcmp(arg, "newton") == 0)
+        o->method = TIRENV_EQ_NEWTON;
+    else if (strcmp(arg, "secant") == 0)
+        o->method = TIRENV_EQ_SECANT;
+    else if (strcmp(arg, "brent") == 0)
+        o->method = TIRENV_EQ_BRENT;
+    else {
+        cli_error("--method: expected newton, secant or brent, got '%s'", arg);
+        return CLI_EXIT_USAGE;
+    }
+    o->have_method = 1;
+    return CLI_EXIT_OK;
+}
+
+/* --load N or --contact-length M (is_load: which), the one excluding the other. */
+static int regime_option(cli_options *o, int is_load, const char *arg)
+{
+    double v;
+    if (cli_parse_double(arg, &v)) {
+        cli_error("--%s: expected a number in %s, got '%s'",
+                  is_load ? "load" : "contact-length", is_load ? "N" : "m", arg);
+        return CLI_EXIT_USAGE;
+    }
+    if (is_load ? o->have_contact_length : o->have_load) {
+        cli_error("--load and --contact-length exclude each other: give one");
+        return CLI_EXIT_USAGE;
+    }
+    *(is_load ? &o->load : &o->contact_length) = v;
+    *(is_load ? &o->have_load : &o->have_contact_length) = 1;
+    return CLI_EXIT_OK;
+}
+
+/* --x-from, --x-to or --dx (code), m. */
+static int span_option(cli_options *o, int code, const char *arg)
+{
+    static const char *const names[] = {"x-from", "x-to", "dx"};
+    double *v = code == OPT_X_FROM ? &o->x_from : code == OPT_X_TO ? &o->x_to : &o->dx;
+    if (cli_parse_double(arg, v) || (code == OPT_DX && !(*v > 0))) {
+        cli_error("--%s: expected %s in m, got '%s'", names[code - OPT_X_FROM],
+                  code == OPT_DX ? "a positive number" : "a number", arg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* One of the obstacle options (code), with its numbers; only one may be given. */
+static int obstacle_option(cli_options *o, int code, const char *arg)
+{
+    const size_t i = obstacle_index(code - OPT_OBSTACLE);
+    if (o->obstacle) {
+        cli_error("--%s: only one obstacle option may be given (already --%s)",
+                  obstacles[i].name, obstacles[obstacle_index(o->obstacle)].name);
+        return CLI_EXIT_USAGE;
+    }
+    if (obstacles[i].n && cli_parse_doubles(arg, o->shape, obstacles[i].n)) {
+        cli_error("--%s: expected %s, got '%s'", obstacles[i].name, obstacles[i].expected, arg);
+        return CLI_EXIT_USAGE;
+    }
+    o->obstacle = obstacles[i].code;
+    o->obstacle_arg = arg;
+    return CLI_EXIT_OK;
+}
+
 /* One shared option into o; an exit code. */
 static int shared_option(cli_options *o, int code, const char *arg)
 {
@@ -108,47 +174,14 @@ static int shared_option(cli_options *o, int code, const char *arg)
         o->sets[o->n_sets++] = arg;
         return CLI_EXIT_OK;
     case OPT_METHOD:
-        if (strcmp(arg, "newton") == 0)
-            o->method = TIRENV_EQ_NEWTON;
-        else if (strcmp(arg, "secant") == 0)
-            o->method = TIRENV_EQ_SECANT;
-        else if (strcmp(arg, "brent") == 0)
-            o->method = TIRENV_EQ_BRENT;
-        else {
-            cli_error("--method: expected newton, secant or brent, got '%s'", arg);
-            return CLI_EXIT_USAGE;
-        }
-        o->have_method = 1;
-        return CLI_EXIT_OK;
+        return method_option(o, arg);
     case OPT_LOAD:
-    case OPT_CONTACT_LENGTH: {
-        const int is_load = code == OPT_LOAD;
-        double v;
-        if (cli_parse_double(arg, &v)) {
-            cli_error("--%s: expected a number in %s, got '%s'",
-                      is_load ? "load" : "contact-length", is_load ? "N" : "m", arg);
-            return CLI_EXIT_USAGE;
-        }
-        if (is_load ? o->have_contact_length : o->have_load) {
-            cli_error("--load and --contact-length exclude each other: give one");
-            return CLI_EXIT_USAGE;
-        }
-        *(is_load ? &o->load : &o->contact_length) = v;
-        *(is_load ? &o->have_load : &o->have_contact_length) = 1;
-        return CLI_EXIT_OK;
-    }
+    case OPT_CONTACT_LENGTH:
+        return regime_option(o, code == OPT_LOAD, arg);
     case OPT_X_FROM:
     case OPT_X_TO:
-    case OPT_DX: {
-        static const char *const names[] = {"x-from", "x-to", "dx"};
-        double *v = code == OPT_X_FROM ? &o->x_from : code == OPT_X_TO ? &o->x_to : &o->dx;
-        if (cli_parse_double(arg, v) || (code == OPT_DX && !(*v > 0))) {
-            cli_error("--%s: expected %s in m, got '%s'", names[code - OPT_X_FROM],
-                      code == OPT_DX ? "a positive number" : "a number", arg);
-            return CLI_EXIT_USAGE;
-        }
-        return CLI_EXIT_OK;
-    }
+    case OPT_DX:
+        return span_option(o, code, arg);
     case 'o':
         if (!*arg) { /* a misuse, caught before any work (the writer would refuse it last) */
             cli_error("-o: empty path; expected a file name or '-'");
@@ -200,21 +233,8 @@ static int shared_option(cli_options *o, int code, const char *arg)
         o->extrapolate = 1;
         return CLI_EXIT_OK;
     default:
-        break;
+        return obstacle_option(o, code, arg);
     }
-    const size_t i = obstacle_index(code - OPT_OBSTACLE);
-    if (o->obstacle) {
-        cli_error("--%s: only one obstacle option may be given (already --%s)",
-                  obstacles[i].name, obstacles[obstacle_index(o->obstacle)].name);
-        return CLI_EXIT_USAGE;
-    }
-    if (obstacles[i].n && cli_parse_doubles(arg, o->shape, obstacles[i].n)) {
-        cli_error("--%s: expected %s, got '%s'", obstacles[i].name, obstacles[i].expected, arg);
-        return CLI_EXIT_USAGE;
-    }
-    o->obstacle = obstacles[i].code;
-    o->obstacle_arg = arg;
-    return CLI_EXIT_OK;
 }
 
 /* One own option into its destination; an exit code. */

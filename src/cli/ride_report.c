@@ -175,15 +175,32 @@ static void script_head(FILE *fp, const char *base, const char *what, const ride
     cli_plot_passes(fp, 1000, 260 * r->n_speeds + 60);
 }
 
+/* <dir>/<base><ext> opened to be written (tirenv_outfile: in place only on commit). */
+static int open_in(const char *dir, const char *base, const char *ext, tirenv_outfile **f,
+                   tirenv_diag *diag)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s%s", dir, base, ext);
+    return tirenv_outfile_open(f, path, diag);
+}
+
+/* A data file written in blocks: kept where every block was (status 0), else removed. */
+static int close_data(tirenv_outfile *f, int status, tirenv_diag *diag)
+{
+    if (status) {
+        tirenv_outfile_abort(f);
+        return status;
+    }
+    return tirenv_outfile_commit(f, diag);
+}
+
 /* Writes <dir>/<base>.gp, one panel per speed drawing every model's column of <base>.dat,
  * with the panel settings 'axes' (gnuplot lines), and draws it as PNG and SVG. */
 static int draw(const char *dir, const char *base, const char *what, const char *title,
                 const char *axes, const ride_options *r, tirenv_diag *diag)
 {
-    char path[1024];
     tirenv_outfile *f;
-    snprintf(path, sizeof path, "%s/%s.gp", dir, base);
-    int status = tirenv_outfile_open(&f, path, diag);
+    int status = open_in(dir, base, ".gp", &f, diag);
     if (status)
         return status;
     FILE *fp = tirenv_outfile_stream(f);
@@ -227,10 +244,8 @@ static int over_x_plot(over_x kind, const char *dir, const ride_options *r,
                        const ride_series series[], double wheelbase, tirenv_diag *diag)
 {
     const char *base = kind == SEAT ? "seat" : "seat-rms";
-    char path[1024];
     tirenv_outfile *f;
-    snprintf(path, sizeof path, "%s/%s.dat", dir, base);
-    int status = tirenv_outfile_open(&f, path, diag);
+    int status = open_in(dir, base, ".dat", &f, diag);
     if (status)
         return status;
     FILE *fp = tirenv_outfile_stream(f);
@@ -271,11 +286,7 @@ static int over_x_plot(over_x kind, const char *dir, const ride_options *r,
         }
         free(v);
     }
-    if (status) {
-        tirenv_outfile_abort(f);
-        return status;
-    }
-    if ((status = tirenv_outfile_commit(f, diag)))
+    if ((status = close_data(f, status, diag)))
         return status;
     char axes[300];
     snprintf(axes, sizeof axes,
@@ -309,10 +320,8 @@ static size_t welch_segment(size_t n)
 static int spectrum_plot(const char *dir, const ride_options *r, const ride_series series[],
                          tirenv_diag *diag)
 {
-    char path[1024];
     tirenv_outfile *f;
-    snprintf(path, sizeof path, "%s/spectrum.dat", dir);
-    int status = tirenv_outfile_open(&f, path, diag);
+    int status = open_in(dir, "spectrum", ".dat", &f, diag);
     if (status)
         return status;
     FILE *fp = tirenv_outfile_stream(f);
@@ -361,11 +370,7 @@ static int spectrum_plot(const char *dir, const ride_options *r, const ride_seri
         free(psd);
         free(a);
     }
-    if (status) {
-        tirenv_outfile_abort(f);
-        return status;
-    }
-    if ((status = tirenv_outfile_commit(f, diag)))
+    if ((status = close_data(f, status, diag)))
         return status;
     /* Log axes cannot show a PSD of 0, and a level road leaves the seat still: gnuplot
      * refuses a panel without a positive point ("all points y value undefined"), which failed

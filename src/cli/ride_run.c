@@ -437,6 +437,125 @@ static int run_item(void *ctx, size_t k, size_t worker, tirenv_diag *diag)
     return p->status[k] = run_one(p, k, diag);
 }
 
+/* The runs' plan (tirenv_ride_plan_make), checked before allocating, so a typo in --speed,
+ * --dt or --dx is named, not "out of memory": a 10 km/h km of road is 0.36 M samples. These
+ * are the options' errors. */
+static int plan_runs(const ride_options *r, ride_setup *s, tirenv_diag *diag)
+{
+    if (tirenv_ride_plan_make(&r->pp, &s->v, s->p, r->speeds, r->n_speeds, &s->plan, diag)) {
+        cli_error("ride: %s: %s", plan_option(diag->field), diag->message);
+        return CLI_EXIT_USAGE;
+    }
+    const double dx_max = tirenv_ride_dx_max(s->tire[0].springs.R0, s->tire[1].springs.R0);
+    if (!(s->plan.dx <= dx_max)) {
+        cli_error("ride: --dx: a grid of %g m is coarser than a tenth of the tires' free radius "
+                  "(%g m), the least that samples an effective road's features (the tire's "
+                  "patch) twice; expected at most %g m (default %g)",
+                  s->plan.dx, 10 * dx_max, dx_max, tirenv_ride_span_default().dx);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* -o opened before the inputs and runs, so that a path it cannot write (a directory, a
+ * missing directory) is said before the work, not after it. */
+static int open_out(const ride_options *r, tirenv_outfile **out, tirenv_diag *diag)
+{
+    const int status = r->out_path ? tirenv_outfile_open(out, r->out_path, diag) : TIRENV_OK;
+    return status ? cli_fail(status, diag) : CLI_EXIT_OK;
+}
+
+/* --out-dir is written as a whole (tirenv_outdir): a failed or killed ride leaves the previous
+ * directory as it was. The runs write their series into the staging directory: *r becomes
+ * staged_r, the options with it as their --out-dir. */
+static int stage_out_dir(const ride_options **r, ride_options *staged_r, tirenv_outdir **staged,
+                         tirenv_diag *diag)
+{
+    if (!(*r)->out_dir)
+        return CLI_EXIT_OK;
+    const int status = tirenv_outdir_begin((*r)->out_dir, staged, diag);
+    if (status)
+        return cli_fail(status, diag);
+    *staged_r = **r;
+    staged_r->out_dir = tirenv_outdir_path(*staged);
+    *r = staged_r;
+    return CLI_EXIT_OK;
+}
+
+/* Every run on --jobs threads; the first that failed is said (the one diag is about). */
+static int run_all(ride_runs *runs, size_t n_runs, tirenv_diag *diag)
+{
+    if (!(runs->status = calloc(n_runs, sizeof *runs->status)))
+        return cli_fail(TIRENV_ENOMEM, NULL);
+    const int status = tirenv_parallel_for(n_runs, runs->r->jobs, run_item, NULL, runs, diag);
+    int code = CLI_EXIT_OK;
+    for (size_t k = 0; status && k < n_runs; ++k)
+        if (runs->status[k]) {
+            const ride_result *q = &runs->res[k];
+            char msg[1200];
+            cli_error("ride: %s model (%s) at %g m/s: %s", q->model,
+                      tirenv_ride_enveloping_name(q->enveloping), q->speed,
+                      tirenv_diag_format(diag, msg, sizeof msg));
+            code = cli_exit_code(status);
+            break;
+        }
+    free(runs->status);
+    runs->status = NULL;
+    return code;
+}
+
+/* What the runs give: -o's series (of the one run: cmd_ride refuses -o with more), the table,
+ * and --out-dir's report; -o's file committed only once the report is written (a failing
+ * report left it replaced). */
+static int write_outputs(const ride_options *r, const ride_setup *s, const ride_result res[],
+                         const ride_series series[], size_t n_runs, tirenv_outfile **out,
+                         tirenv_outdir **staged, tirenv_diag *diag)
+{
+    if (*out)  /* one run (cmd_ride refuses -o with more) */
+        series_rows(*out, &series[0], &res[0]);
+    print_table(stdout, res, n_runs);
+    if (r->out_dir) {
+        const int code = ride_cli_report(r, res, series, &s->v, &s->given,
+                                         (const char(*)[1024])s->tire_path, s->load);
+        if (code)
+            return code;
+    }
+    /* -o first: its commit (the data flushed to disk) is the one that can fail for want of
+     * room, and then --out-dir's previous directory stays too. */
+    if (*out) {
+        const int written = tirenv_outfile_commit(*out, diag);
+        *out = NULL;
+        if (written)
+            return cli_fail(written, diag);
+    }
+    if (!r->out_dir)
+        return CLI_EXIT_OK;
+    const int committed = tirenv_outdir_commit(*staged, diag);
+    *staged = NULL;
+    return committed ? cli_fail(committed, diag) : CLI_EXIT_OK;
+}
+
+static void free_inputs(ride_inputs in[RIDE_MAX_MODELS])
+{
+    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
+        for (int axle = 0; axle < 2; ++axle) {
+            free(in[i].w[axle]);
+            free((double *)in[i].table[axle].load);
+            free((double *)in[i].table[axle].w);
+        }
+    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
+        tirenv_nn_free(in[i].nn);
+}
+
+static void free_series(ride_series *series, size_t n_runs)
+{
+    for (size_t k = 0; series && k < n_runs; ++k) {
+        free(series[k].samples);
+        free(series[k].a_w);
+    }
+    free(series);
+}
+
 int ride_cli_run(const cli_options *o, const ride_options *r)
 {
     ride_setup s;
@@ -454,111 +573,28 @@ int ride_cli_run(const cli_options *o, const ride_options *r)
     ride_series *series = calloc(n_runs, sizeof *series);
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
+    ride_options staged_r;
     if (!res || !series) {
         code = cli_fail(TIRENV_ENOMEM, NULL);
         goto done;
     }
-    /* Checked before allocating, so a typo in --speed, --dt or --dx is named, not "out of
-     * memory": a 10 km/h km of road is 0.36 M samples. These are the options' errors. */
-    const int planned = tirenv_ride_plan_make(&r->pp, &s.v, p, r->speeds, r->n_speeds, &s.plan,
-                                              &diag);
-    if (planned) {
-        cli_error("ride: %s: %s", plan_option(diag.field), diag.message);
-        code = CLI_EXIT_USAGE;
+    if ((code = plan_runs(r, &s, &diag)) || (code = open_out(r, &out, &diag)))
         goto done;
-    }
-    const double dx_max = tirenv_ride_dx_max(s.tire[0].springs.R0, s.tire[1].springs.R0);
-    if (!(s.plan.dx <= dx_max)) {
-        cli_error("ride: --dx: a grid of %g m is coarser than a tenth of the tires' free radius "
-                  "(%g m), the least that samples an effective road's features (the tire's "
-                  "patch) twice; expected at most %g m (default %g)",
-                  s.plan.dx, 10 * dx_max, dx_max, tirenv_ride_span_default().dx);
-        code = CLI_EXIT_USAGE;
-        goto done;
-    }
-    /* -o opened before the inputs and runs, so that a path it cannot write (a directory, a
-     * missing directory) is said before the work, not after it. */
-    if (r->out_path) {
-        const int status = tirenv_outfile_open(&out, r->out_path, &diag);
-        if (status) {
-            code = cli_fail(status, &diag);
-            goto done;
-        }
-    }
     for (size_t i = 0; i < r->n_models; ++i) {
         in[i].type = r->models[i];
         in[i].name = tirenv_model_type_name(r->models[i]);
     }
-    if ((code = model_inputs(r, &s, in)))
+    if ((code = model_inputs(r, &s, in)) ||
+        (code = stage_out_dir(&r, &staged_r, &staged, &diag)))
         goto done;
-    /* --out-dir is written as a whole (tirenv_outdir): a failed or killed ride leaves the
-     * previous directory as it was. The runs write their series into the staging
-     * directory. */
-    ride_options staged_r;
-    if (r->out_dir) {
-        const int status = tirenv_outdir_begin(r->out_dir, &staged, &diag);
-        if (status) {
-            code = cli_fail(status, &diag);
-            goto done;
-        }
-        staged_r = *r;
-        staged_r.out_dir = tirenv_outdir_path(staged);
-        r = &staged_r;
-    }
     ride_runs runs = {r, &s, in, res, series, NULL};
-    if (!(runs.status = calloc(n_runs, sizeof *runs.status))) {
-        code = cli_fail(TIRENV_ENOMEM, NULL);
-        goto done;
-    }
-    const int status = tirenv_parallel_for(n_runs, r->jobs, run_item, NULL, &runs, &diag);
-    for (size_t k = 0; status && k < n_runs; ++k)
-        if (runs.status[k]) {  /* the first failing run: the one diag is about */
-            char msg[1200];
-            cli_error("ride: %s model (%s) at %g m/s: %s", res[k].model,
-                      tirenv_ride_enveloping_name(res[k].enveloping), res[k].speed,
-                      tirenv_diag_format(&diag, msg, sizeof msg));
-            code = cli_exit_code(status);
-            break;
-        }
-    free(runs.status);
-    if (code)
-        goto done;
-    if (out)  /* one run (cmd_ride refuses -o with more) */
-        series_rows(out, &series[0], &res[0]);
-    print_table(stdout, res, n_runs);
-    if (r->out_dir && (code = ride_cli_report(r, res, series, &s.v, &s.given,
-                                               (const char(*)[1024])s.tire_path, s.load)))
-        goto done;
-    /* -o first: its commit (the data flushed to disk) is the one that can fail for want of
-     * room, and then --out-dir's previous directory stays too. */
-    if (out) {
-        const int written = tirenv_outfile_commit(out, &diag);
-        out = NULL;
-        if (written)
-            code = cli_fail(written, &diag);
-    }
-    if (!code && r->out_dir) {
-        const int committed = tirenv_outdir_commit(staged, &diag);
-        staged = NULL;
-        if (committed)
-            code = cli_fail(committed, &diag);
-    }
+    if (!(code = run_all(&runs, n_runs, &diag)))
+        code = write_outputs(r, &s, res, series, n_runs, &out, &staged, &diag);
 done:
     tirenv_outfile_abort(out);
     tirenv_outdir_abort(staged);
-    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
-        for (int axle = 0; axle < 2; ++axle) {
-            free(in[i].w[axle]);
-            free((double *)in[i].table[axle].load);
-            free((double *)in[i].table[axle].w);
-        }
-    for (size_t i = 0; i < RIDE_MAX_MODELS; ++i)
-        tirenv_nn_free(in[i].nn);
-    for (size_t k = 0; series && k < n_runs; ++k) {
-        free(series[k].samples);
-        free(series[k].a_w);
-    }
-    free(series);
+    free_inputs(in);
+    free_series(series, n_runs);
     free(res);
     tirenv_profile_free(p);
     return code;

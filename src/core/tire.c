@@ -189,15 +189,15 @@ static int tire_plausible(const tirenv_tire *tire, tirenv_diag *diag)
     return TIRENV_OK;
 }
 
-int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
+/* The radius first, and its range before any relation that derives from it (the air's tension
+ * p*b*R); the width and the damping. */
+static int size_check(const tirenv_tire *tire, tirenv_diag *diag)
 {
-    const tirenv_springs_params *s = &tire->springs;
-    const tirenv_eq_settings *eq = &tire->eq;
-    if (!(s->R0 > 0 && isfinite(s->R0)))
+    const double R0 = tire->springs.R0;
+    if (!(R0 > 0 && isfinite(R0)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "UNLOADED_RADIUS",
-                            "must be a positive length in m, got %g", s->R0);
-    /* Its range before any relation that derives from it (the air's tension p*b*R). */
-    int status = plausible("UNLOADED_RADIUS", s->R0, 0.05, 5, "m", diag);
+                            "must be a positive length in m, got %g", R0);
+    const int status = plausible("UNLOADED_RADIUS", R0, 0.05, 5, "m", diag);
     if (status)
         return status;
     if (!(tire->width >= 0 && isfinite(tire->width)))
@@ -207,6 +207,12 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!isnan(tire->k_z) && !(tire->k_z >= 0 && isfinite(tire->k_z)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "VERTICAL_DAMPING",
                             "must be zero or positive (N*s/m), got %g", tire->k_z);
+    return TIRENV_OK;
+}
+
+/* [ENVELOPING_SPRINGS]. */
+static int springs_check(const tirenv_springs_params *s, tirenv_diag *diag)
+{
     if (!(s->c_r > 0 && isfinite(s->c_r)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "RADIAL_STIFFNESS",
                             "must be positive (N/m per rad), got %g", s->c_r);
@@ -234,8 +240,13 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (s->phi / s->dphi > 1e6)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "ELEMENT_ANGLE",
                             "gives more than a million elements (%g rad)", s->dphi);
-    const tirenv_ring_params *r = &tire->ring;
-    if (!(r->t_r >= 0 && r->t_r < s->R0))
+    return TIRENV_OK;
+}
+
+/* [ENVELOPING_RING]'s values one by one, and the pressures (R0: the tire's radius, m). */
+static int ring_values_check(const tirenv_ring_params *r, double R0, tirenv_diag *diag)
+{
+    if (!(r->t_r >= 0 && r->t_r < R0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_THICKNESS",
                             "must be in [0, UNLOADED_RADIUS) m, got %g", r->t_r);
     if (!(r->EI >= 0 && isfinite(r->EI)))
@@ -254,7 +265,7 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NOMPRES",
                             "must be zero or a positive pressure below 1e8 Pa, got %g",
                             r->p_nom);
-    if (!(r->b_p >= 0 && r->b_p < 2 * s->R0))
+    if (!(r->b_p >= 0 && r->b_p < 2 * R0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_WIDTH",
                             "must be in [0, 2 UNLOADED_RADIUS) m, got %g", r->b_p);
     if (r->contact != TIRENV_RING_CONTINUOUS && r->contact != TIRENV_RING_RAYS)
@@ -269,30 +280,61 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->G_t >= 0 && isfinite(r->G_t)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "TREAD_SHEAR",
                             "must be zero or a positive shear modulus (Pa), got %g", r->G_t);
-    /* The belt's stiffness per mode is EI s^2/R^4 + T_p s/R^2 + k_f with s = n^2 - 1 >= -1,
-     * T_p = T + p b R and k_f = k_c + gamma p (the air's shares, docs/models.md section 5.1;
-     * gamma as tirenv_ring__sidewall_gamma); pretension lowers it for n = 0, and too much
-     * makes it negative: the belt buckles. */
-    const double R = s->R0 - r->t_r, a = r->alpha_s;
-    const double gamma = (a * sin(a) + cos(a)) / (sin(a) - a * cos(a));
-    const double T_p = r->T + r->p * r->b_p * R, k_f = r->k_c + gamma * r->p;
-    const double s_min = fmax(-1, -T_p * R * R / (2 * fmax(r->EI, 1e-300)));
-    const double e_min = r->EI * s_min * s_min / (R * R * R * R) + T_p * s_min / (R * R) + k_f;
+    return TIRENV_OK;
+}
+
+/* The belt's stiffness per mode is EI s^2/R^4 + T_p s/R^2 + k_f with s = n^2 - 1 >= -1,
+ * T_p = T + p b R and k_f = k_c + gamma p (the air's shares, docs/models.md section 5.1;
+ * gamma as tirenv_ring__sidewall_gamma); pretension lowers it for n = 0, and too much makes
+ * it negative: the belt buckles. s_min is the s of the least. */
+typedef struct {
+    double R, gamma, T_p, k_f, s_min; /* m, -, N, N/m^2, - */
+} belt_modes;
+
+static belt_modes belt_modes_of(const tirenv_ring_params *r, double R0)
+{
+    belt_modes m;
+    const double a = r->alpha_s;
+    m.R = R0 - r->t_r;
+    m.gamma = (a * sin(a) + cos(a)) / (sin(a) - a * cos(a));
+    m.T_p = r->T + r->p * r->b_p * m.R;
+    m.k_f = r->k_c + m.gamma * r->p;
+    m.s_min = fmax(-1, -m.T_p * m.R * m.R / (2 * fmax(r->EI, 1e-300)));
+    return m;
+}
+
+/* The least mode's stiffness on a foundation of k_f, N/m^2. */
+static double least_mode(const tirenv_ring_params *r, const belt_modes *m, double k_f)
+{
+    const double R = m->R, s_min = m->s_min;
+    return r->EI * s_min * s_min / (R * R * R * R) + m->T_p * s_min / (R * R) + k_f;
+}
+
+/* The foundation carries the belt, and the belt does not buckle on it. */
+static int foundation_check(const tirenv_ring_params *r, const belt_modes *m,
+                            tirenv_diag *diag)
+{
+    const double e_min = least_mode(r, m, m->k_f);
     /* 1e3 N/m^2: the plausible range's floor for the whole foundation (carcass and air). */
-    if (!(k_f >= 1e3))
+    if (!(m->k_f >= 1e3))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FOUNDATION_STIFFNESS",
                             "the sidewalls carry almost nothing: FOUNDATION_STIFFNESS %g N/m^2 "
                             "and INFLPRES %g Pa give a foundation of %g N/m^2, below 1e3",
-                            r->k_c, r->p, k_f);
+                            r->k_c, r->p, m->k_f);
     if (!(e_min > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "BELT_PRETENSION",
                             "%g N (with the air's) buckles the belt on its foundation "
-                            "(%g N/m^2 too soft)", T_p, k_f);
-    /* The softening carcass (docs/models.md section 5.1): its tangent k_c exp(-(w - w_0)/w_s)
-     * falls towards 0 as the belt is pressed in, so the foundation's tangent is at least the
-     * air's gamma p and the belt's least mode stiffness at least that bound with k_f = gamma
-     * p: the contact energy stays strictly convex, its minimum unique. Only the shear-coupled
-     * tread's continuous contact solves it (ring_shear.c), on a smooth tread. */
+                            "(%g N/m^2 too soft)", m->T_p, m->k_f);
+    return TIRENV_OK;
+}
+
+/* The softening carcass (docs/models.md section 5.1): its tangent k_c exp(-(w - w_0)/w_s)
+ * falls towards 0 as the belt is pressed in, so the foundation's tangent is at least the air's
+ * gamma p and the belt's least mode stiffness at least that bound with k_f = gamma p: the
+ * contact energy stays strictly convex, its minimum unique. Only the shear-coupled tread's
+ * continuous contact solves it (ring_shear.c), on a smooth tread. */
+static int carcass_check(const tirenv_ring_params *r, const belt_modes *m, tirenv_diag *diag)
+{
     if (!(r->w_cs >= 0 && isfinite(r->w_cs)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
                             "must be zero (a linear carcass) or a positive length in m, got %g",
@@ -300,29 +342,35 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->w_c0 >= 0 && isfinite(r->w_c0)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_LINEAR_DEFLECTION",
                             "must be a length >= 0 in m, got %g", r->w_c0);
-    if (r->w_cs > 0) {
-        if (r->contact != TIRENV_RING_CONTINUOUS || !(r->G_t > 0) || !(r->b_p > 0))
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
-                                "needs the shear-coupled tread's continuous contact (CONTACT "
-                                "'continuous', TREAD_SHEAR and BELT_WIDTH > 0); got CONTACT "
-                                "'%s', TREAD_SHEAR %g Pa, BELT_WIDTH %g m",
-                                r->contact == TIRENV_RING_RAYS ? "rays" : "continuous", r->G_t,
-                                r->b_p);
-        if (r->lug_count > 0)
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
-                                "needs a smooth tread (LUG_COUNT 0), got LUG_COUNT %g",
-                                r->lug_count);
-        const double k_a = gamma * r->p;
-        const double e_air = r->EI * s_min * s_min / (R * R * R * R) + T_p * s_min / (R * R) + k_a;
-        if (!(k_a >= 1e3) || !(e_air > 0))
-            return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
-                                "%g m: a carcass that softens leaves the belt's foundation the "
-                                "air's %g N/m^2 (INFLPRES %g Pa) when pressed far in, %s",
-                                r->w_cs, k_a, r->p,
-                                k_a >= 1e3 ? "on which the belt buckles (BELT_PRETENSION and "
-                                             "the air's tension)"
-                                           : "below 1e3 N/m^2");
-    }
+    if (!(r->w_cs > 0))
+        return TIRENV_OK;
+    if (r->contact != TIRENV_RING_CONTINUOUS || !(r->G_t > 0) || !(r->b_p > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                            "needs the shear-coupled tread's continuous contact (CONTACT "
+                            "'continuous', TREAD_SHEAR and BELT_WIDTH > 0); got CONTACT "
+                            "'%s', TREAD_SHEAR %g Pa, BELT_WIDTH %g m",
+                            r->contact == TIRENV_RING_RAYS ? "rays" : "continuous", r->G_t,
+                            r->b_p);
+    if (r->lug_count > 0)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                            "needs a smooth tread (LUG_COUNT 0), got LUG_COUNT %g",
+                            r->lug_count);
+    const double k_a = m->gamma * r->p;
+    const double e_air = least_mode(r, m, k_a);
+    if (!(k_a >= 1e3) || !(e_air > 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "CARCASS_SOFTENING_DEFLECTION",
+                            "%g m: a carcass that softens leaves the belt's foundation the "
+                            "air's %g N/m^2 (INFLPRES %g Pa) when pressed far in, %s",
+                            r->w_cs, k_a, r->p,
+                            k_a >= 1e3 ? "on which the belt buckles (BELT_PRETENSION and "
+                                         "the air's tension)"
+                                       : "below 1e3 N/m^2");
+    return TIRENV_OK;
+}
+
+/* The ring's nodes and its tread's lugs. */
+static int tread_check(const tirenv_ring_params *r, tirenv_diag *diag)
+{
     if (!(r->dtheta > 0 && r->dtheta <= M_PI / 8))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "NODE_ANGLE",
                             "must be in (0, pi/8] rad, got %g", r->dtheta);
@@ -335,6 +383,12 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (!(r->lug_ratio > 0 && r->lug_ratio <= 1))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "LUG_GROOVE_RATIO",
                             "must be in (0, 1], got %g", r->lug_ratio);
+    return TIRENV_OK;
+}
+
+/* [ENVELOPING_SOLVER]. */
+static int solver_check(const tirenv_eq_settings *eq, tirenv_diag *diag)
+{
     if (!(eq->eps_F > 0 && isfinite(eq->eps_F)))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "FORCE_TOLERANCE",
                             "must be a positive force in N, got %g", eq->eps_F);
@@ -350,9 +404,12 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
     if (eq->method > TIRENV_EQ_BRENT)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "METHOD",
                             "unknown equilibrium method %d", (int)eq->method);
-    if ((status = cam_check(&tire->cam, diag)))
-        return status;
-    /* The vertical law's pressure factor (docs/models.md section 7.3) must carry a load. */
+    return TIRENV_OK;
+}
+
+/* The vertical law's pressure factor (docs/models.md section 7.3) must carry a load. */
+static int pressure_factor_check(const tirenv_tire *tire, tirenv_diag *diag)
+{
     if (tire->cam.pfz1 != 0 && !(tire->ring.p_nom > 0))
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "PFZ1",
                             "%g needs NOMPRES, the pressure it refers to, got NOMPRES %g Pa",
@@ -364,6 +421,23 @@ int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
                             tire->cam.pfz1, tire->ring.p, tire->ring.p_nom,
                             tirenv_cam_pressure_factor(tire->cam.pfz1, tire->ring.p,
                                                        tire->ring.p_nom));
+    return TIRENV_OK;
+}
+
+/* Signs and relations first, the first that fails said, then the plausible ranges. */
+int tirenv_tire_check(const tirenv_tire *tire, tirenv_diag *diag)
+{
+    const double R0 = tire->springs.R0;
+    int status;
+    if ((status = size_check(tire, diag)) || (status = springs_check(&tire->springs, diag)) ||
+        (status = ring_values_check(&tire->ring, R0, diag)))
+        return status;
+    const belt_modes m = belt_modes_of(&tire->ring, R0);
+    if ((status = foundation_check(&tire->ring, &m, diag)) ||
+        (status = carcass_check(&tire->ring, &m, diag)) ||
+        (status = tread_check(&tire->ring, diag)) || (status = solver_check(&tire->eq, diag)) ||
+        (status = cam_check(&tire->cam, diag)) || (status = pressure_factor_check(tire, diag)))
+        return status;
     return tire_plausible(tire, diag);
 }
 

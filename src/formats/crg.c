@@ -335,10 +335,8 @@ int tirenv_crg_track_rows(const tirenv_crg *c, const tirenv_crg_track_spec *spec
     int status = track_setup(c, spec, &t, diag);
     if (status)
         return status;
-    if (first > c->nu || count > c->nu - first)
-        return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "",
-                            "rows %zu to %zu asked for; the file has %zu", first + 1,
-                            first + count, c->nu);
+    if ((status = tirenv_crg__rows_asked(c, first, count, diag)))
+        return status;
     const size_t block = count < block_rows(c) ? (count ? count : 1) : block_rows(c);
     double *vals = malloc(block * c->nch * sizeof *vals);
     if (!vals)
@@ -366,10 +364,9 @@ int tirenv_crg_track(const tirenv_crg *c, const tirenv_crg_track_spec *spec,
 int tirenv_crg_grid_rows(const tirenv_crg *c, size_t first, size_t count, double z[],
                          tirenv_diag *diag)
 {
-    if (first > c->nu || count > c->nu - first)
-        return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "",
-                            "rows %zu to %zu asked for; the file has %zu", first + 1,
-                            first + count, c->nu);
+    const int asked = tirenv_crg__rows_asked(c, first, count, diag);
+    if (asked)
+        return asked;
     tirenv_crg_track_spec spec = tirenv_crg_track_default();
     spec.v = c->v[0]; /* on the road: only the file's NaN mode, scale and smoothing matter */
     track t;

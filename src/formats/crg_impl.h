@@ -117,6 +117,10 @@ int tirenv_crg__open_source(const tirenv_source *from, tirenv_crg **out, tirenv_
  * (count, checkpoints, rz). Needs the header. */
 int tirenv_crg__scan(tirenv_crg *c, tirenv_diag *diag);
 
+/* TIRENV_OK where rows first to first + count - 1 are in the file, else TIRENV_EINVAL naming
+ * them (count 0 at the end is in it). */
+int tirenv_crg__rows_asked(const tirenv_crg *c, size_t first, size_t count, tirenv_diag *diag);
+
 /* The raw values of count rows from row first, nch per row, into vals (NaN where missing). */
 int tirenv_crg__read_rows(const tirenv_crg *c, size_t first, size_t count, double vals[],
                           tirenv_diag *diag);

@@ -223,13 +223,21 @@ static int read_text_row(const tirenv_crg *c, tirenv_lines *r, double out[], siz
     return TIRENV_OK;
 }
 
-int tirenv_crg__read_rows(const tirenv_crg *c, size_t first, size_t count, double vals[],
-                          tirenv_diag *diag)
+int tirenv_crg__rows_asked(const tirenv_crg *c, size_t first, size_t count, tirenv_diag *diag)
 {
     if (first > c->nu || count > c->nu - first)
         return tirenv_error(diag, TIRENV_EINVAL, c->src.name, 0, "",
                             "rows %zu to %zu asked for; the file has %zu", first + 1,
                             first + count, c->nu);
+    return TIRENV_OK;
+}
+
+int tirenv_crg__read_rows(const tirenv_crg *c, size_t first, size_t count, double vals[],
+                          tirenv_diag *diag)
+{
+    const int asked = tirenv_crg__rows_asked(c, first, count, diag);
+    if (asked)
+        return asked;
     if (!is_text(c->enc))
         return read_binary(c, first * c->nch, count * c->nch, vals, diag);
     const size_t k = first / TIRENV_CRG__CHECKPOINT;

@@ -543,26 +543,14 @@ static int read_error(const rctx *c, const json_t *errs, const char *key,
     return TIRENV_OK;
 }
 
-static int read_training(const rctx *c, const json_t *root, int version, const tirenv_nn *nn,
-                         tirenv_train_record *rec)
+/* The training's schedule: trainer, seed, restarts, epochs, patience, and from version 2 on the
+ * ensemble and the loss. */
+static int read_schedule(const rctx *c, const json_t *t, int version, tirenv_train_record *rec)
 {
-    json_t *t = json_object_get(root, "training");
-    memset(rec, 0, sizeof *rec);
-    rec->settings = tirenv_train_paper(NULL);
-    rec->settings.topology = *tirenv_nn_topology_of(nn);
-    tirenv_nn_form(nn, &rec->settings.input, &rec->settings.target);
-    rec->settings.even_width = tirenv_nn_even_width(nn);
-    rec->report.members = tirenv_nn_n_members(nn);
-    if (!t)
-        return TIRENV_OK;  /* a network without its training record: allowed */
-    if (!json_is_object(t))
-        return bad(c, "training", "expected an object, found %s", json_kind(t));
     tirenv_train_settings *s = &rec->settings;
-    tirenv_train_report *r = &rec->report;
-    json_t *set, *b, *rp, *lm, *data, *res, *errs, *v;
+    const size_t big = SIZE_MAX >> 8;
     char buf[64];
     size_t seed;
-    const size_t big = SIZE_MAX >> 8;
     int status;
     if ((status = get_string(c, t, "trainer", "training.trainer", rec->trainer,
                              sizeof rec->trainer)))
@@ -576,16 +564,25 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
         (status = get_count(c, t, "patience", "training.patience", big, &s->patience)))
         return status;
     s->seed = (unsigned long)seed;
-    if (version >= 2) {
-        if ((status = get_count(c, t, "ensemble", "training.ensemble", TIRENV_NN_MAX_MEMBERS,
-                                &s->ensemble)) ||
-            (status = get_string(c, t, "loss", "training.loss", buf, sizeof buf)))
-            return status;
-        const int loss = tirenv_train_loss_find(buf);
-        if (loss < 0)
-            return bad(c, "training.loss", "'%s'; expected 'points' or 'curves'", buf);
-        s->loss = (tirenv_train_loss)loss;
-    }
+    if (version < 2)
+        return TIRENV_OK;
+    if ((status = get_count(c, t, "ensemble", "training.ensemble", TIRENV_NN_MAX_MEMBERS,
+                            &s->ensemble)) ||
+        (status = get_string(c, t, "loss", "training.loss", buf, sizeof buf)))
+        return status;
+    const int loss = tirenv_train_loss_find(buf);
+    if (loss < 0)
+        return bad(c, "training.loss", "'%s'; expected 'points' or 'curves'", buf);
+    s->loss = (tirenv_train_loss)loss;
+    return TIRENV_OK;
+}
+
+/* The trainers' settings (training.settings), checked as tirenv_train would check them. */
+static int read_settings(const rctx *c, const json_t *t, tirenv_train_settings *s)
+{
+    json_t *set, *b, *rp, *lm, *v;
+    char buf[64];
+    int status;
     if ((status = member(c, t, "settings", "training.settings", JSON_OBJECT, &set)) ||
         (status = member(c, set, "backprop", "training.settings.backprop", JSON_OBJECT, &b)) ||
         (status = get_number(c, b, "learning_rate",
@@ -621,7 +618,16 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     tirenv_diag_clear(&why);
     if (tirenv_train_settings_check(s, &why))
         return bad(c, "training.settings", "%s: %s", why.field, why.message);
+    return TIRENV_OK;
+}
 
+/* What the network was trained on (training.data): the data set, its fingerprint, the tire's
+ * radius and its contact law. */
+static int read_data(const rctx *c, const json_t *t, tirenv_train_record *rec)
+{
+    json_t *data;
+    char buf[64];
+    int status;
     if ((status = member(c, t, "data", "training.data", JSON_OBJECT, &data)) ||
         (status = get_string(c, data, "dir", "training.data.dir", rec->data,
                              sizeof rec->data)) ||
@@ -636,9 +642,42 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     if (rec->R0 < 0)
         return bad(c, "training.data.tire_R0_m", "%g; expected >= 0 (0: unknown)", rec->R0);
     /* Optional: files written before it have none (the model's user is warned). */
-    if ((status = read_law(c, data, &rec->law, rec->law_source, sizeof rec->law_source)))
-        return status;
+    return read_law(c, data, &rec->law, rec->law_source, sizeof rec->law_source);
+}
 
+/* The restart each member of the ensemble came from (training.result.members, version 2 on):
+ * none listed, or one per network. */
+static int read_member_restarts(const rctx *c, const json_t *res, const tirenv_nn *nn,
+                                size_t restarts, tirenv_train_report *r)
+{
+    json_t *mem;
+    const int status = member(c, res, "members", "training.result.members", JSON_ARRAY, &mem);
+    if (status)
+        return status;
+    const size_t n = json_array_size(mem);
+    if (n != 0 && n != tirenv_nn_n_members(nn))
+        return bad(c, "training.result.members", "%zu restarts listed for %zu networks", n,
+                   tirenv_nn_n_members(nn));
+    for (size_t i = 0; i < n; ++i) {
+        const json_t *e = json_array_get(mem, i);
+        if (!json_is_integer(e) || json_integer_value(e) < 0 ||
+            (unsigned long long)json_integer_value(e) >= restarts)
+            return bad(c, "training.result.members", "element %zu: expected a restart "
+                       "number from 0 to %zu", i, restarts ? restarts - 1 : 0);
+        r->member_restart[i] = (size_t)json_integer_value(e);
+    }
+    r->members = n;
+    return TIRENV_OK;
+}
+
+/* How the training ended (training.result), consistent with itself and the settings. */
+static int read_result(const rctx *c, const json_t *t, int version, const tirenv_nn *nn,
+                       const tirenv_train_settings *s, tirenv_train_report *r)
+{
+    json_t *res;
+    char buf[64];
+    const size_t big = SIZE_MAX >> 8;
+    int status;
     if ((status = member(c, t, "result", "training.result", JSON_OBJECT, &res)) ||
         (status = get_count(c, res, "restart", "training.result.restart", big, &r->restart)) ||
         (status = get_count(c, res, "epochs", "training.result.epochs", big, &r->epochs)) ||
@@ -656,23 +695,8 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     if (version < 2) {
         r->members = 1;
         r->member_restart[0] = r->restart;
-    } else {
-        json_t *mem;
-        if ((status = member(c, res, "members", "training.result.members", JSON_ARRAY, &mem)))
-            return status;
-        const size_t n = json_array_size(mem);
-        if (n != 0 && n != tirenv_nn_n_members(nn))
-            return bad(c, "training.result.members", "%zu restarts listed for %zu networks", n,
-                       tirenv_nn_n_members(nn));
-        for (size_t i = 0; i < n; ++i) {
-            const json_t *e = json_array_get(mem, i);
-            if (!json_is_integer(e) || json_integer_value(e) < 0 ||
-                (unsigned long long)json_integer_value(e) >= s->restarts)
-                return bad(c, "training.result.members", "element %zu: expected a restart "
-                           "number from 0 to %zu", i, s->restarts ? s->restarts - 1 : 0);
-            r->member_restart[i] = (size_t)json_integer_value(e);
-        }
-        r->members = n;
+    } else if ((status = read_member_restarts(c, res, nn, s->restarts, r))) {
+        return status;
     }
     if (r->best_epoch > r->epochs || r->epochs > r->total_epochs ||
         (s->restarts && r->restart >= s->restarts) || r->best_time < 0 || r->wall_time < 0)
@@ -688,7 +712,33 @@ static int read_training(const rctx *c, const json_t *root, int version, const t
     if (!found)
         return bad(c, "training.result.stop", "'%s'; expected max-epochs, patience, converged, "
                    "diverged or cancelled", buf);
-    if ((status = member(c, t, "errors_m", "training.errors_m", JSON_OBJECT, &errs)) ||
+    return TIRENV_OK;
+}
+
+/* The training record (optional): what the network's own shape says, then the file's record
+ * of how it was trained, in the file's order. */
+static int read_training(const rctx *c, const json_t *root, int version, const tirenv_nn *nn,
+                         tirenv_train_record *rec)
+{
+    json_t *t = json_object_get(root, "training");
+    memset(rec, 0, sizeof *rec);
+    rec->settings = tirenv_train_paper(NULL);
+    rec->settings.topology = *tirenv_nn_topology_of(nn);
+    tirenv_nn_form(nn, &rec->settings.input, &rec->settings.target);
+    rec->settings.even_width = tirenv_nn_even_width(nn);
+    rec->report.members = tirenv_nn_n_members(nn);
+    if (!t)
+        return TIRENV_OK;  /* a network without its training record: allowed */
+    if (!json_is_object(t))
+        return bad(c, "training", "expected an object, found %s", json_kind(t));
+    tirenv_train_report *r = &rec->report;
+    json_t *errs;
+    int status;
+    if ((status = read_schedule(c, t, version, rec)) ||
+        (status = read_settings(c, t, &rec->settings)) ||
+        (status = read_data(c, t, rec)) ||
+        (status = read_result(c, t, version, nn, &rec->settings, r)) ||
+        (status = member(c, t, "errors_m", "training.errors_m", JSON_OBJECT, &errs)) ||
         (status = read_error(c, errs, "train", &r->error[TIRENV_SPLIT_TRAIN])) ||
         (status = read_error(c, errs, "control", &r->error[TIRENV_SPLIT_CONTROL])) ||
         (status = read_error(c, errs, "validation", &r->error[TIRENV_SPLIT_VALIDATION])))

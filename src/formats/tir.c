@@ -23,6 +23,11 @@ _Static_assert(sizeof(tirenv_springs_contact) == sizeof(int),
 #define TIR_REAL(sec, name, member, L, F, A, text)                                             \
     {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
      .offset = offsetof(tirenv_tire, member), .comment = (text), .dim = {L, F, A}}
+/* A real value written only where it is not 0 (absent and 0 mean the same: none). */
+#define TIR_OPTIONAL(sec, name, member, L, F, A, text)                                         \
+    {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
+     .offset = offsetof(tirenv_tire, member), .omit_zero = 1, .comment = (text),              \
+     .dim = {L, F, A}}
 /* A cam key: tracked in cam.given, for tirenv_tire_check_cam_keys. */
 #define TIR_CAM(sec, name, member, L, F, A, bit, text)                                         \
     {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
@@ -56,15 +61,13 @@ static const tirenv_propfile__key tir_keys[] = {
              "nominal load, N: the load Q_FZ2 refers to (0: none)"),
     TIR_REAL("VERTICAL", "Q_FZ2", cam.q_fz2, 0, 0, 0,
              "cam: load = FNOMIN*(Q_FZ1*rho/R0 + Q_FZ2*(rho/R0)^2), 0: linear"),
-    {.section = "VERTICAL", .key = "Q_FZ1", .kind = TIRENV_PROPFILE_REAL,
-     .offset = offsetof(tirenv_tire, cam.q_fz1), .omit_zero = 1,
-     .comment = "cam: the law's linear term; 0 or absent: from VERTICAL_STIFFNESS"},
+    TIR_OPTIONAL("VERTICAL", "Q_FZ1", cam.q_fz1, 0, 0, 0,
+                 "cam: the law's linear term; 0 or absent: from VERTICAL_STIFFNESS"),
     {.section = "VERTICAL", .key = "VERTICAL_DAMPING", .kind = TIRENV_PROPFILE_REAL,
      .offset = offsetof(tirenv_tire, k_z), .omit_nan = 1, .dim = {-1, 1, 0},
      .comment = "k_z: vertical damping, N*s/m: the ride's c_t without the vehicle's"},
-    {.section = "VERTICAL", .key = "PFZ1", .kind = TIRENV_PROPFILE_REAL,
-     .offset = offsetof(tirenv_tire, cam.pfz1), .omit_zero = 1,
-     .comment = "cam: load times 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES"},
+    TIR_OPTIONAL("VERTICAL", "PFZ1", cam.pfz1, 0, 0, 0,
+                 "cam: load times 1 + PFZ1*(INFLPRES - NOMPRES)/NOMPRES"),
     TIR_CAM("CONTACT_PATCH", "Q_RA1", cam.q_ra1, 0, 0, 0, TIRENV_CAM_Q_RA1,
              "cam: contact half length a = R0*(Q_RA2*rho/R0 + Q_RA1*sqrt(rho/R0))"),
     TIR_CAM("CONTACT_PATCH", "Q_RA2", cam.q_ra2, 0, 0, 0, TIRENV_CAM_Q_RA2,
@@ -77,9 +80,8 @@ static const tirenv_propfile__key tir_keys[] = {
              "cam: half height b_e = ELLIPS_HEIGHT*R0"),
     TIR_CAM("CONTACT_PATCH", "ELLIPS_ORDER", cam.order, 0, 0, 0, TIRENV_CAM_ORDER,
              "cam: super-ellipse exponent c_e, > 1"),
-    {.section = "CONTACT_PATCH", .key = "ELLIPS_MAX_STEP", .kind = TIRENV_PROPFILE_REAL,
-     .offset = offsetof(tirenv_tire, cam.max_step), .omit_zero = 1, .dim = {1, 0, 0},
-     .comment = "cam: highest road step its shape is meant for, m; above, a warning (0: none)"},
+    TIR_OPTIONAL("CONTACT_PATCH", "ELLIPS_MAX_STEP", cam.max_step, 1, 0, 0,
+                 "cam: highest road step its shape is meant for, m; above, a warning (0: none)"),
     TIR_REAL("ENVELOPING_SPRINGS", "RADIAL_STIFFNESS", springs.c_r, -1, 1, -1,
              "c_r: radial stiffness per radian of tread, N/m/rad"),
     TIR_REAL("ENVELOPING_SPRINGS", "INTERRADIAL_STIFFNESS", springs.c_b, -1, 1, 1,
@@ -90,12 +92,10 @@ static const tirenv_propfile__key tir_keys[] = {
              "dphi: angle between adjacent radial elements, rad"),
     TIR_CONTACT("ENVELOPING_SPRINGS", "CONTACT", springs.contact,
              "'continuous': a tread between the elements; 'rays': the paper's"),
-    {.section = "ENVELOPING_SPRINGS", .key = "SIDEWALL_STIFFNESS", .kind = TIRENV_PROPFILE_REAL,
-     .offset = offsetof(tirenv_tire, springs.k_s), .omit_zero = 1, .dim = {-1, 1, 0},
-     .comment = "k_s: sidewall spring in series with the elements, N/m; 0 or absent: none"},
-    {.section = "ENVELOPING_SPRINGS", .key = "SIDEWALL_PRELOAD", .kind = TIRENV_PROPFILE_REAL,
-     .offset = offsetof(tirenv_tire, springs.F_s0), .omit_zero = 1, .dim = {0, 1, 0},
-     .comment = "F_s0: load the sidewall carries before it gives, N (0: linear)"},
+    TIR_OPTIONAL("ENVELOPING_SPRINGS", "SIDEWALL_STIFFNESS", springs.k_s, -1, 1, 0,
+                 "k_s: sidewall spring in series with the elements, N/m; 0 or absent: none"),
+    TIR_OPTIONAL("ENVELOPING_SPRINGS", "SIDEWALL_PRELOAD", springs.F_s0, 0, 1, 0,
+                 "F_s0: load the sidewall carries before it gives, N (0: linear)"),
     TIR_REAL("ENVELOPING_RING", "TREAD_THICKNESS", ring.t_r, 1, 0, 0,
              "t_r: tread layer between belt and ground, m"),
     TIR_REAL("ENVELOPING_RING", "BELT_BENDING_STIFFNESS", ring.EI, 2, 1, 0,
@@ -120,15 +120,11 @@ static const tirenv_propfile__key tir_keys[] = {
              "b: width of the crown the air presses on, m"),
     TIR_REAL("ENVELOPING_RING", "SIDEWALL_ANGLE", ring.alpha_s, 0, 0, 1,
              "alpha: half angle of a sidewall's membrane arc, rad"),
-    {.section = "ENVELOPING_RING", .key = "CARCASS_SOFTENING_DEFLECTION",
-     .kind = TIRENV_PROPFILE_REAL, .offset = offsetof(tirenv_tire, ring.w_cs), .omit_zero = 1,
-     .dim = {1, 0, 0},
-     .comment = "w_s: carcass force k_c*(w_0 + w_s*(1 - exp(-(w - w_0)/w_s))) beyond w_0, m; "
-                "0: linear"},
-    {.section = "ENVELOPING_RING", .key = "CARCASS_LINEAR_DEFLECTION",
-     .kind = TIRENV_PROPFILE_REAL, .offset = offsetof(tirenv_tire, ring.w_c0), .omit_zero = 1,
-     .dim = {1, 0, 0},
-     .comment = "w_0: belt deflection up to which the carcass is linear, k_c*w, m"},
+    TIR_OPTIONAL("ENVELOPING_RING", "CARCASS_SOFTENING_DEFLECTION", ring.w_cs, 1, 0, 0,
+                 "w_s: carcass force k_c*(w_0 + w_s*(1 - exp(-(w - w_0)/w_s))) beyond w_0, m; "
+                 "0: linear"),
+    TIR_OPTIONAL("ENVELOPING_RING", "CARCASS_LINEAR_DEFLECTION", ring.w_c0, 1, 0, 0,
+                 "w_0: belt deflection up to which the carcass is linear, k_c*w, m"),
     {.section = "ENVELOPING_RING", .key = "CONTACT", .kind = TIRENV_PROPFILE_NAME,
      .offset = offsetof(tirenv_tire, ring.contact),
      .comment = "tread on the ground: 'continuous' between nodes, or 'rays' (one per node)",

@@ -1261,6 +1261,180 @@ static int derived(tirenv_tir_origin *o, const char *law)
     return TIRENV_OK;
 }
 
+/* The enveloping models a file may lack, in the order they are derived (the springs model is
+ * identified on the ring). */
+static const struct {
+    unsigned bit;
+    const char *section, *model;
+} lackable[] = {
+    {TIRENV_TIR_RING, "ENVELOPING_RING", "ring"},
+    {TIRENV_TIR_SPRINGS, "ENVELOPING_SPRINGS", "springs"},
+};
+
+/* What the file has of its own (origin->own, origin->fnomin), after MF-Tyre's rule that a file
+ * without INFLPRES is at its NOMPRES (PFZ1's factor 1), not at the pressure of the tire it was
+ * read over. Returns whether the vertical law is the file's own: Q_FZ2, or a Q_FZ1 other than
+ * 0 (0 is MF-Tyre's "derive it from VERTICAL_STIFFNESS", nominal_deflection). */
+static int take_own(const mf_keys *k, tirenv_tire *tire, tirenv_tir_origin *origin)
+{
+    if (!(k->given & MF_INFLPRES) && (k->given & MF_NOMPRES)) {
+        tire->ring.p = k->nompres;
+        note_add(origin, "no INFLPRES: NOMPRES's %.4g kPa", k->nompres / 1e3);
+    }
+    const int own_law = (k->given & MF_QFZ2) || ((k->given & MF_QFZ1) && k->q_fz1 != 0);
+    origin->own = (k->given & MF_SPRINGS ? TIRENV_TIR_SPRINGS : 0u) |
+                  (k->given & MF_RING ? TIRENV_TIR_RING : 0u) |
+                  (own_law ? TIRENV_TIR_VERTICAL : 0u);
+    const unsigned q_ra = TIRENV_CAM_Q_RA1 | TIRENV_CAM_Q_RA2;
+    if ((tire->cam.given & q_ra) == q_ra)
+        origin->own |= TIRENV_TIR_CAM;
+    origin->fnomin = k->given & MF_FNOMIN ? k->fnomin : 0;
+    return own_law;
+}
+
+/* The cam alone used, its laws the file's own: the models the file lacks said not derived and
+ * not this tire's. */
+static void note_cam_alone(tirenv_tir_origin *origin, unsigned lack, const tirenv_tire *tire)
+{
+    for (size_t i = 0; i < 2; i++)
+        if (lack & lackable[i].bit)
+            note_add(origin, "%sno [%s]: the %s model not derived (the cam alone is used, "
+                     "its laws the file's own) and not this tire's",
+                     origin->note[0] ? "; " : "", lackable[i].section, lackable[i].model);
+    note_add(origin, "; the file's own cam contact law kept (Q_RA1 = %.4g, Q_RA2 = %.4g)",
+             tire->cam.q_ra1, tire->cam.q_ra2);
+}
+
+/* A file without a key the derivation takes (missing names it): refused where a model it lacks
+ * is needed, else each such model said not this tire's. */
+static int note_missing(const char *path, unsigned need, unsigned lack, const char *missing,
+                        tirenv_tir_origin *origin, tirenv_diag *diag)
+{
+    for (size_t i = 0; i < 2; i++) {
+        if (!(lack & lackable[i].bit))
+            continue;
+        if (need & lackable[i].bit)
+            return tirenv_error(diag, TIRENV_EINVAL, path, 0, missing,
+                                "the file has no [%s] and no %s to derive the %s model "
+                                "from (docs/models.md section 14)", lackable[i].section,
+                                missing, lackable[i].model);
+        note_add(origin, "%sno [%s] and no %s: the %s model is not this tire's",
+                 origin->note[0] ? "; " : "", lackable[i].section, missing, lackable[i].model);
+    }
+    return TIRENV_OK;
+}
+
+/* One derivation: what the file lacks, what is made of it, on which law, and what came of it
+ * (for the notes). */
+typedef struct {
+    unsigned lack;     /* TIRENV_TIR_SPRINGS and/or TIRENV_TIR_RING: not in the file */
+    unsigned unused;   /* of lack, what the caller does not use and is not derived */
+    unsigned make;     /* lack & ~unused */
+    int on_laws;       /* the ring searched on the file's own contact law (derive_on_laws) */
+    vertical_law law;
+    trial tr;
+    laws_result lr;    /* with on_laws */
+    int have_ring;     /* tr.ring holds the ring's states */
+    char no_law[sizeof ((tirenv_diag *)0)->message]; /* why no Q_FZ2 was derived, or "" */
+} derivation;
+
+/* dv->make derived into *t: on the file's own laws where the ring is searched on them. */
+static int make_models(tirenv_tire *t, const mf_keys *k, const tirenv_profile *flat,
+                       derivation *dv, tirenv_diag *diag)
+{
+    return dv->on_laws ? derive_laws_models(t, k, dv->make, &dv->law, flat, &dv->tr, &dv->lr,
+                                            &dv->have_ring, diag)
+                       : derive_models(t, k, dv->make, &dv->law, flat, &dv->tr, &dv->have_ring,
+                                       diag);
+}
+
+/* The models dv->make derived into *t (the file's tire, *tire, with what it has), the ring
+ * first: the springs model is identified on it. Where no Q_FZ2 identified on the derived ring
+ * deflects with it at FNOMIN (a ring whose air alone is stiffer than the law at FNOMIN:
+ * test_onetire.c's car-sized ring at a PFZ1 factor of 1.26), the derivation is made again on
+ * the file's linear law, as without Q_FZ2, and dv->no_law says why. */
+static int run_derivation(const char *path, const tirenv_tire *tire, const mf_keys *k,
+                          derivation *dv, tirenv_tire *t, tirenv_diag *diag)
+{
+    const double zero = 0;
+    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);  /* the ring's ground */
+    if (!flat)
+        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "ring",
+                            "no memory for the flat ground the ring is derived on");
+    dv->no_law[0] = '\0';
+    int status = make_models(t, k, flat, dv, diag);
+    if (status && dv->law.derive_q_fz2 && strcmp(diag->field, "Q_FZ2") == 0) {
+        snprintf(dv->no_law, sizeof dv->no_law, "%s", diag->message);
+        dv->law.derive_q_fz2 = 0;
+        *t = *tire;
+        status = make_models(t, k, flat, dv, diag);
+    }
+    tirenv_profile_free(flat);
+    if (status && !diag->file[0])
+        snprintf(diag->file, sizeof diag->file, "%s", path);
+    return status;
+}
+
+/* The note on the derived ring: its keys, how it was found, and its air. */
+static void note_ring(tirenv_tir_origin *origin, const tirenv_tire *t, const mf_keys *k,
+                      const derivation *dv)
+{
+    if (dv->lack & TIRENV_TIR_RING)
+        note_add(origin, "%sno [ENVELOPING_RING]: derived TREAD_THICKNESS = %.4g, "
+                 "BELT_BENDING_STIFFNESS = %.4g, BELT_PRETENSION = %.4g, "
+                 "FOUNDATION_STIFFNESS = %.4g, TREAD_STIFFNESS = %.4g",
+                 origin->note[0] ? "; " : "", t->ring.t_r, t->ring.EI, t->ring.T, t->ring.k_c,
+                 t->ring.k_t);
+    if (dv->on_laws && dv->lr.searched)
+        note_add(origin, ", BELT_WIDTH = %.4g, CARCASS_SOFTENING_DEFLECTION = %.4g, "
+                 "CARCASS_LINEAR_DEFLECTION = %.4g, TREAD_SHEAR = %.4g, NODE_ANGLE 0.25 deg: "
+                 "searched on the file's own vertical and contact laws (%d ring tables; the "
+                 "Winkler ring without them: cam against ring %.1f / %.1f %%)", t->ring.b_p,
+                 t->ring.w_cs, t->ring.w_c0, t->ring.G_t, dv->lr.tables, 100 * dv->lr.w_defl,
+                 100 * dv->lr.w_l);
+    else if (dv->on_laws)
+        note_add(origin, ": the Winkler ring, none found nearer the file's own vertical and "
+                 "contact laws (%d ring tables searched: %s)", dv->lr.tables,
+                 dv->lr.why[0] ? dv->lr.why : "its largest difference from the cam no smaller");
+    if ((dv->lack & TIRENV_TIR_RING) && !(k->given & (MF_INFLPRES | MF_NOMPRES)))
+        note_add(origin, ", its air at %.4g kPa, the default tire's INFLPRES (the file gives "
+                 "no INFLPRES or NOMPRES)", t->ring.p / 1e3);
+}
+
+/* The note on the derived springs model (and its sidewall), or on its not being derived. */
+static void note_springs(tirenv_tir_origin *origin, const tirenv_tire *t, const derivation *dv)
+{
+    if (dv->make & TIRENV_TIR_SPRINGS)
+        note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
+                 "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t->springs.c_r,
+                 t->springs.c_b);
+    else if (dv->unused)
+        note_add(origin, "%sno [ENVELOPING_SPRINGS]: the springs model not derived (not used "
+                 "here) and not this tire's", origin->note[0] ? "; " : "");
+    if ((dv->make & TIRENV_TIR_SPRINGS) && t->springs.k_s > 0)
+        note_add(origin, ", SIDEWALL_STIFFNESS = %.4g, SIDEWALL_PRELOAD = %.4g (a sidewall in "
+                 "series, identified with them on the ring)", t->springs.k_s, t->springs.F_s0);
+}
+
+/* The note on the vertical law the models were derived on: Q_FZ2 derived or not, and the
+ * deflection at FNOMIN. */
+static void note_vertical(tirenv_tir_origin *origin, const tirenv_tire *t, const mf_keys *k,
+                          const derivation *dv)
+{
+    if (dv->law.derive_q_fz2)
+        note_add(origin, "; no Q_FZ2 of its own: derived on the ring Q_FZ2 = %.4g, "
+                 "VERTICAL_STIFFNESS %.4g kN/m its tangent at FNOMIN", t->cam.q_fz2,
+                 k->c_z / 1e3);
+    if (dv->no_law[0])
+        note_add(origin, "; no Q_FZ2 of its own and none derived, the file's linear law kept "
+                 "(%s)", dv->no_law);
+    if (dv->lack)
+        note_add(origin, " (deflection %.4g mm at FNOMIN %.6g N: %sstiffness %.4g kN/m%s)",
+                 origin->rho_nominal * 1e3, k->fnomin, dv->law.derive_q_fz2 ? "secant " : "",
+                 k->fnomin / origin->rho_nominal / 1e3,
+                 dv->law.factor != 1 ? ", PFZ1 at INFLPRES" : "");
+}
+
 /* text (len bytes) is the file as tirenv_tir_read read it, or NULL: read path again. */
 static int derive(const char *path, const char *text, size_t len, tirenv_tire *tire,
                   unsigned need, tirenv_tir_origin *origin, tirenv_diag *diag)
@@ -1276,176 +1450,68 @@ static int derive(const char *path, const char *text, size_t len, tirenv_tire *t
                       : tirenv_propfile__read(&mf_schema, path, &k, diag);
     if (status)
         return status;
-    /* MF-Tyre's rule: a file without INFLPRES is at its NOMPRES (PFZ1's factor 1), not at the
-     * pressure of the tire it was read over. */
-    if (!(k.given & MF_INFLPRES) && (k.given & MF_NOMPRES)) {
-        tire->ring.p = k.nompres;
-        note_add(origin, "no INFLPRES: NOMPRES's %.4g kPa", k.nompres / 1e3);
-    }
+    const int own_law = take_own(&k, tire, origin);
     char law_said[sizeof origin->note / 2];
     law_note(tire, law_said, sizeof law_said);
-    /* A vertical law of the file's own: Q_FZ2, or a Q_FZ1 other than 0 (0 is MF-Tyre's
-     * "derive it from VERTICAL_STIFFNESS", nominal_deflection). */
-    const int own_law = (k.given & MF_QFZ2) || ((k.given & MF_QFZ1) && k.q_fz1 != 0);
-    origin->own = (k.given & MF_SPRINGS ? TIRENV_TIR_SPRINGS : 0u) |
-                  (k.given & MF_RING ? TIRENV_TIR_RING : 0u) |
-                  (own_law ? TIRENV_TIR_VERTICAL : 0u);
-    const unsigned q_ra = TIRENV_CAM_Q_RA1 | TIRENV_CAM_Q_RA2;
-    if ((tire->cam.given & q_ra) == q_ra)
-        origin->own |= TIRENV_TIR_CAM;
-    origin->fnomin = k.given & MF_FNOMIN ? k.fnomin : 0;
-    const unsigned lack = (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING) & ~origin->own;
+    derivation dv;
+    dv.lack = (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING) & ~origin->own;
     /* A file with both enveloping sections and no cam contact law of its own: the cam's
      * derived on its ring where the file has what it takes; silently not, where it has not
      * (the cam then refuses naming Q_RA1). */
     const int cam_possible = (tire->cam.given & TIRENV_CAM_C_Z) != 0;
-    if (!lack && (origin->own & TIRENV_TIR_CAM))
+    if (!dv.lack && (origin->own & TIRENV_TIR_CAM))
         return derived(origin, law_said);
-    double factor;
     const char *missing;
-    double rho_n = nominal_deflection(&k, tire, &factor, &missing);
-    origin->rho_nominal = rho_n;
+    dv.law.rho_n = origin->rho_nominal = nominal_deflection(&k, tire, &dv.law.factor, &missing);
     /* The cam's Q_FZ2 is identified on the ring where the ring is derived (so the two are
      * scaled together) and the file's law is VERTICAL_STIFFNESS alone (section 14.2). */
-    vertical_law law = {
-        .rho_n = rho_n, .factor = factor,
-        .derive_q_fz2 = (lack & TIRENV_TIR_RING) && cam_possible && !own_law &&
-                        (k.given & MF_CZ)};
-    if (!lack && (missing || !cam_possible))
+    dv.law.derive_q_fz2 = (dv.lack & TIRENV_TIR_RING) && cam_possible && !own_law &&
+                          (k.given & MF_CZ);
+    if (!dv.lack && (missing || !cam_possible))
         return derived(origin, law_said);
     /* The cam alone used (need TIRENV_TIR_ONLY | TIRENV_TIR_CAM) and every law of it the
      * file's own: nothing of the cam comes from a derived ring (Q_FZ2 is derived on the ring
      * only where the file has no law of its own), so the ring and the springs model the file
      * lacks are not derived (the ring's search on the laws is most of a read), and the note says
      * they are not this tire's. */
-    if ((need & TIRENV_TIR_ONLY) && (need & TIRENV_TIR_CAM) && !(need & lack) &&
-        (origin->own & TIRENV_TIR_CAM) && !law.derive_q_fz2) {
-        for (size_t i = 0; i < 2; i++) {
-            static const char *const what[][2] = {{"ENVELOPING_RING", "ring"},
-                                                  {"ENVELOPING_SPRINGS", "springs"}};
-            const unsigned bit = i == 0 ? TIRENV_TIR_RING : TIRENV_TIR_SPRINGS;
-            if (lack & bit)
-                note_add(origin, "%sno [%s]: the %s model not derived (the cam alone is used, "
-                         "its laws the file's own) and not this tire's",
-                         origin->note[0] ? "; " : "", what[i][0], what[i][1]);
-        }
-        note_add(origin, "; the file's own cam contact law kept (Q_RA1 = %.4g, Q_RA2 = %.4g)",
-                 tire->cam.q_ra1, tire->cam.q_ra2);
+    if ((need & TIRENV_TIR_ONLY) && (need & TIRENV_TIR_CAM) && !(need & dv.lack) &&
+        (origin->own & TIRENV_TIR_CAM) && !dv.law.derive_q_fz2) {
+        note_cam_alone(origin, dv.lack, tire);
         return derived(origin, law_said);
     }
-    tirenv_tire t = *tire;
-    static const struct { unsigned bit; const char *section, *model; } models[] = {
-        {TIRENV_TIR_RING, "ENVELOPING_RING", "ring"},
-        {TIRENV_TIR_SPRINGS, "ENVELOPING_SPRINGS", "springs"},
-    };
-    trial tr;
-    int have_ring = 0;
     if (missing) {
-        for (size_t i = 0; i < 2; i++) {
-            if (!(lack & models[i].bit))
-                continue;
-            if (need & models[i].bit)
-                return tirenv_error(diag, TIRENV_EINVAL, path, 0, missing,
-                                    "the file has no [%s] and no %s to derive the %s model "
-                                    "from (docs/models.md section 14)", models[i].section,
-                                    missing, models[i].model);
-            note_add(origin, "%sno [%s] and no %s: the %s model is not this tire's",
-                     origin->note[0] ? "; " : "", models[i].section, missing, models[i].model);
-        }
-        *tire = t;
+        if ((status = note_missing(path, need, dv.lack, missing, origin, diag)))
+            return status;
         return derived(origin, law_said);
     }
-    /* The ring first: the springs model is identified on it. Where no Q_FZ2 identified on the
-     * derived ring deflects with it at FNOMIN (a ring whose air alone is stiffer than the law
-     * at FNOMIN: test_onetire.c's car-sized ring at a PFZ1 factor of 1.26), the
-     * derivation is made again on the file's linear law, as without Q_FZ2, and the note says
-     * why. */
-    char no_law[sizeof diag->message] = "";
     /* A file with a contact law of its own gets a ring searched on it (derive_on_laws). */
-    const int on_laws = (lack & TIRENV_TIR_RING) && (origin->own & TIRENV_TIR_CAM);
+    dv.on_laws = (dv.lack & TIRENV_TIR_RING) && (origin->own & TIRENV_TIR_CAM);
     /* There the ring is searched on the laws alone, and the springs model then identified on
      * it: a caller that uses neither the springs model nor anything of it (need with
      * TIRENV_TIR_ONLY and without TIRENV_TIR_SPRINGS: the ring or the cam alone) has it not
      * derived, the same ring without the springs model's sidewall identification, which can
      * neither cost that command its time nor fail it. Elsewhere the ring's pretension is
      * chosen with the springs model (derive_ring_springs): both are derived as before. */
-    const unsigned unused = on_laws && (need & TIRENV_TIR_ONLY) &&
-                                    !(need & TIRENV_TIR_SPRINGS) ? lack & TIRENV_TIR_SPRINGS
-                                                                 : 0u;
-    const unsigned make = lack & ~unused;
-    laws_result lr;
-    const double zero = 0;
-    tirenv_profile *flat = tirenv_profile_alloc(1, &zero, &zero);  /* the ring's ground */
-    if (!flat)
-        return tirenv_error(diag, TIRENV_ENOMEM, path, 0, "ring",
-                            "no memory for the flat ground the ring is derived on");
-    status = on_laws ? derive_laws_models(&t, &k, make, &law, flat, &tr, &lr, &have_ring, diag)
-                     : derive_models(&t, &k, make, &law, flat, &tr, &have_ring, diag);
-    if (status && law.derive_q_fz2 && strcmp(diag->field, "Q_FZ2") == 0) {
-        snprintf(no_law, sizeof no_law, "%s", diag->message);
-        law.derive_q_fz2 = 0;
-        t = *tire;
-        status = on_laws ? derive_laws_models(&t, &k, make, &law, flat, &tr, &lr, &have_ring,
-                                              diag)
-                         : derive_models(&t, &k, make, &law, flat, &tr, &have_ring, diag);
-    }
-    tirenv_profile_free(flat);
-    if (status) {
-        if (!diag->file[0])
-            snprintf(diag->file, sizeof diag->file, "%s", path);
+    dv.unused = dv.on_laws && (need & TIRENV_TIR_ONLY) && !(need & TIRENV_TIR_SPRINGS)
+                    ? dv.lack & TIRENV_TIR_SPRINGS : 0u;
+    dv.make = dv.lack & ~dv.unused;
+    tirenv_tire t = *tire;
+    if ((status = run_derivation(path, tire, &k, &dv, &t, diag)))
         return status;
-    }
-    origin->derived = make;
-    if (make == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING))
-        origin->pretension_ratio = tr.tau;
-    if (law.derive_q_fz2) {
-        rho_n = origin->rho_nominal = tr.rho_n;
-        t.cam.q_fz2 = tr.q_fz2;
+    origin->derived = dv.make;
+    if (dv.make == (TIRENV_TIR_SPRINGS | TIRENV_TIR_RING))
+        origin->pretension_ratio = dv.tr.tau;
+    if (dv.law.derive_q_fz2) {
+        origin->rho_nominal = dv.tr.rho_n;
+        t.cam.q_fz2 = dv.tr.q_fz2;
         origin->derived |= TIRENV_TIR_VERTICAL;
     }
-    if (lack & TIRENV_TIR_RING)
-        note_add(origin, "%sno [ENVELOPING_RING]: derived TREAD_THICKNESS = %.4g, "
-                 "BELT_BENDING_STIFFNESS = %.4g, BELT_PRETENSION = %.4g, "
-                 "FOUNDATION_STIFFNESS = %.4g, TREAD_STIFFNESS = %.4g",
-                 origin->note[0] ? "; " : "", t.ring.t_r, t.ring.EI, t.ring.T, t.ring.k_c,
-                 t.ring.k_t);
-    if (on_laws && lr.searched)
-        note_add(origin, ", BELT_WIDTH = %.4g, CARCASS_SOFTENING_DEFLECTION = %.4g, "
-                 "CARCASS_LINEAR_DEFLECTION = %.4g, TREAD_SHEAR = %.4g, NODE_ANGLE 0.25 deg: "
-                 "searched on the file's own vertical and contact laws (%d ring tables; the "
-                 "Winkler ring without them: cam against ring %.1f / %.1f %%)", t.ring.b_p,
-                 t.ring.w_cs, t.ring.w_c0, t.ring.G_t, lr.tables, 100 * lr.w_defl,
-                 100 * lr.w_l);
-    else if (on_laws)
-        note_add(origin, ": the Winkler ring, none found nearer the file's own vertical and "
-                 "contact laws (%d ring tables searched: %s)", lr.tables,
-                 lr.why[0] ? lr.why : "its largest difference from the cam no smaller");
-    if ((lack & TIRENV_TIR_RING) && !(k.given & (MF_INFLPRES | MF_NOMPRES)))
-        note_add(origin, ", its air at %.4g kPa, the default tire's INFLPRES (the file gives "
-                 "no INFLPRES or NOMPRES)", t.ring.p / 1e3);
-    if (make & TIRENV_TIR_SPRINGS)
-        note_add(origin, "%sno [ENVELOPING_SPRINGS]: derived RADIAL_STIFFNESS = %.4g, "
-                 "INTERRADIAL_STIFFNESS = %.4g", origin->note[0] ? "; " : "", t.springs.c_r,
-                 t.springs.c_b);
-    else if (unused)
-        note_add(origin, "%sno [ENVELOPING_SPRINGS]: the springs model not derived (not used "
-                 "here) and not this tire's", origin->note[0] ? "; " : "");
-    if ((make & TIRENV_TIR_SPRINGS) && t.springs.k_s > 0)
-        note_add(origin, ", SIDEWALL_STIFFNESS = %.4g, SIDEWALL_PRELOAD = %.4g (a sidewall in "
-                 "series, identified with them on the ring)", t.springs.k_s, t.springs.F_s0);
-    if (law.derive_q_fz2)
-        note_add(origin, "; no Q_FZ2 of its own: derived on the ring Q_FZ2 = %.4g, "
-                 "VERTICAL_STIFFNESS %.4g kN/m its tangent at FNOMIN", t.cam.q_fz2,
-                 k.c_z / 1e3);
-    if (no_law[0])
-        note_add(origin, "; no Q_FZ2 of its own and none derived, the file's linear law kept "
-                 "(%s)", no_law);
-    if (lack)
-        note_add(origin, " (deflection %.4g mm at FNOMIN %.6g N: %sstiffness %.4g kN/m%s)",
-                 rho_n * 1e3, k.fnomin, law.derive_q_fz2 ? "secant " : "",
-                 k.fnomin / rho_n / 1e3, factor != 1 ? ", PFZ1 at INFLPRES" : "");
+    note_ring(origin, &t, &k, &dv);
+    note_springs(origin, &t, &dv);
+    note_vertical(origin, &t, &k, &dv);
     if (cam_possible)
-        cam_part(&t, &k, have_ring ? &tr.ring : NULL, !(origin->own & TIRENV_TIR_CAM), origin);
+        cam_part(&t, &k, dv.have_ring ? &dv.tr.ring : NULL, !(origin->own & TIRENV_TIR_CAM),
+                 origin);
     *tire = t;
     return derived(origin, law_said);
 }

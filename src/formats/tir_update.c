@@ -126,36 +126,62 @@ static void put_note(FILE *fp, const char *note, const char *eol)
     fprintf(fp, "%s%s", end_mark, eol);
 }
 
-int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
-                      const char *note, tirenv_diag *diag)
+enum { MAX_VALUES = 64 }; /* the values one update sets */
+
+/* One rewrite of a file: the values to set and which are written (done), the note and whether
+ * it is, and the line end of the lines written anew (eol: the file's first line's, "\r\n" or
+ * "\n"). */
+typedef struct {
+    FILE *fp;
+    size_t n;
+    const tirenv_tir_value *values;
+    int done[MAX_VALUES];
+    const char *note, *eol;
+    int noted;
+} rewrite;
+
+static void write_note(rewrite *w)
 {
-    TIRENV_NUMERIC_C();
-    enum { MAX = 64 };
-    if (n > MAX)
-        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "more than %d values", MAX);
-    /* Replaced in place, so a file: a pipe would be read once and not be written back. */
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
-        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "not a regular file (a pipe or "
-                            "device); its values are set in place, expected a regular file");
-    int status;
-    char *text = slurp(path, &status, diag);
-    if (!text)
-        return status;
-    int done[MAX] = {0};
-    tirenv_outfile *out;
-    status = tirenv_outfile_open(&out, path, diag);
-    if (status) {
-        free(text);
-        return status;
+    put_note(w->fp, w->note, w->eol);
+    w->noted = 1;
+}
+
+/* Whether the section sec, whose lines follow at rest, sets the value v. */
+static int section_sets(const char *rest, const char *sec, const tirenv_tir_value *v)
+{
+    char s2[64];
+    for (const char *q = rest; *q;) {
+        const size_t ql = strcspn(q, "\n");
+        size_t eq;
+        if (section_of(q, ql, s2))
+            return 0;
+        if (value_of(q, ql, sec, 1, v, &eq) == 0)
+            return 1;
+        q += ql + (q[ql] == '\n');
     }
-    FILE *fp = tirenv_outfile_stream(out);
-    /* A file of "\r\n" line ends keeps them: its lines each as they were, the new ones as its
-     * first (a CRLF file was written back with "\n" ends throughout). */
-    const size_t end1 = strcspn(text, "\n");
-    const char *eol = end1 && text[end1] == '\n' && text[end1 - 1] == '\r' ? "\r\n" : "\n";
+    return 0;
+}
+
+/* The header line of section sec (l bytes, its own line end), then right after it each value
+ * of sec the section lacks (rest: the lines after the header). */
+static void open_section(rewrite *w, const char *line, size_t l, const char *own,
+                         const char *sec, const char *rest)
+{
+    fprintf(w->fp, "%.*s%s", (int)l, line, own);
+    for (size_t j = 0; j < w->n; j++)
+        if (!strcasecmp(w->values[j].section, sec) && !section_sets(rest, sec, &w->values[j])) {
+            put_key(w->fp, &w->values[j], w->eol);
+            w->done[j] = 1;
+        }
+}
+
+/* The file's lines, each as it was but for the values set and the note: the old note left
+ * out, the new one where it was, else after [MDI_HEADER]'s keys and comments, before the first
+ * '$-' rule or section that follows them. */
+static void rewrite_lines(rewrite *w, const char *text)
+{
     char sec[64] = "";
-    int in_note = 0, noted = 0;
+    int in_note = 0;
     for (const char *p = text; *p;) {
         const size_t len = strcspn(p, "\n");
         const char *line = p;
@@ -171,72 +197,84 @@ int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[
         if (in_note) {
             if (!strncmp(line, end_mark, sizeof end_mark - 1)) {
                 in_note = 0;
-                put_note(fp, note, eol);
-                noted = 1;
+                write_note(w);
             }
             continue;
         }
-        /* The note goes after [MDI_HEADER]'s keys and comments, before the first '$-' rule
-         * or section that follows them. */
-        if (!noted && !strcmp(sec, "MDI_HEADER") && l >= 2 && line[0] == '$' &&
-            line[1] == '-') {
-            put_note(fp, note, eol);
-            noted = 1;
-        }
+        const int in_header = !w->noted && !strcmp(sec, "MDI_HEADER");
+        if (in_header && l >= 2 && line[0] == '$' && line[1] == '-')
+            write_note(w);
         char next[64];
         if (section_of(line, l, next)) {
-            /* Before leaving a section: the note after [MDI_HEADER]'s keys, missing keys. */
-            if (!noted && !strcmp(sec, "MDI_HEADER")) {
-                put_note(fp, note, eol);
-                noted = 1;
-            }
+            if (!w->noted && !strcmp(sec, "MDI_HEADER"))
+                write_note(w);
             memcpy(sec, next, sizeof sec);
-            fprintf(fp, "%.*s%s", (int)l, line, own);
-            for (size_t j = 0; j < n; j++)
-                if (!strcasecmp(values[j].section, sec)) {
-                    /* Added right after the header only if the section lacks the key: look
-                     * ahead in this section. */
-                    int found = 0;
-                    char s2[64];
-                    for (const char *q = p; *q && !found;) {
-                        const size_t ql = strcspn(q, "\n");
-                        size_t eq;
-                        if (section_of(q, ql, s2))
-                            break;
-                        found = value_of(q, ql, sec, 1, &values[j], &eq) == 0;
-                        q += ql + (q[ql] == '\n');
-                    }
-                    if (!found) {
-                        put_key(fp, &values[j], eol);
-                        done[j] = 1;
-                    }
-                }
+            open_section(w, line, l, own, sec, p);
             continue;
         }
         size_t eq;
-        const size_t j = value_of(line, l, sec, n, values, &eq);
-        if (j < n && !done[j]) {
-            put_replaced(fp, line, l, eq, values[j].value, own);
-            done[j] = 1;
+        const size_t j = value_of(line, l, sec, w->n, w->values, &eq);
+        if (j < w->n && !w->done[j]) {
+            put_replaced(w->fp, line, l, eq, w->values[j].value, own);
+            w->done[j] = 1;
         } else {
-            fprintf(fp, "%.*s%s", (int)l, line, own);
+            fprintf(w->fp, "%.*s%s", (int)l, line, own);
         }
     }
-    if (!noted)
-        put_note(fp, note, eol);
-    for (size_t j = 0; j < n; j++)
-        if (!done[j]) {
-            /* Sections absent from the file, each once, with all of its keys. */
-            int first = 1;
-            for (size_t i = 0; i < j; i++)
-                first &= !(!done[i] && !strcasecmp(values[i].section, values[j].section));
-            if (!first)
-                continue;
-            fprintf(fp, "[%s]%s", values[j].section, eol);
-            for (size_t i = j; i < n; i++)
-                if (!done[i] && !strcasecmp(values[i].section, values[j].section))
-                    put_key(fp, &values[i], eol);
-        }
+}
+
+/* Sections absent from the file, each once, with all of its keys not yet written. */
+static void add_absent_sections(rewrite *w)
+{
+    const tirenv_tir_value *v = w->values;
+    for (size_t j = 0; j < w->n; j++) {
+        if (w->done[j])
+            continue;
+        int first = 1;
+        for (size_t i = 0; i < j; i++)
+            first &= !(!w->done[i] && !strcasecmp(v[i].section, v[j].section));
+        if (!first)
+            continue;
+        fprintf(w->fp, "[%s]%s", v[j].section, w->eol);
+        for (size_t i = j; i < w->n; i++)
+            if (!w->done[i] && !strcasecmp(v[i].section, v[j].section))
+                put_key(w->fp, &v[i], w->eol);
+    }
+}
+
+int tirenv_tir_update(const char *path, size_t n, const tirenv_tir_value values[],
+                      const char *note, tirenv_diag *diag)
+{
+    TIRENV_NUMERIC_C();
+    if (n > MAX_VALUES)
+        return tirenv_error(diag, TIRENV_EINVAL, path, 0, "", "more than %d values",
+                            MAX_VALUES);
+    /* Replaced in place, so a file: a pipe would be read once and not be written back. */
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return tirenv_error(diag, TIRENV_EIO, path, 0, "", "not a regular file (a pipe or "
+                            "device); its values are set in place, expected a regular file");
+    int status;
+    char *text = slurp(path, &status, diag);
+    if (!text)
+        return status;
+    tirenv_outfile *out;
+    status = tirenv_outfile_open(&out, path, diag);
+    if (status) {
+        free(text);
+        return status;
+    }
+    /* A file of "\r\n" line ends keeps them: its lines each as they were, the new ones as its
+     * first (a CRLF file was written back with "\n" ends throughout). */
+    const size_t end1 = strcspn(text, "\n");
+    rewrite w = {.fp = tirenv_outfile_stream(out), .n = n, .values = values, .done = {0},
+                 .note = note,
+                 .eol = end1 && text[end1] == '\n' && text[end1 - 1] == '\r' ? "\r\n" : "\n",
+                 .noted = 0};
+    rewrite_lines(&w, text);
+    if (!w.noted)
+        write_note(&w);
+    add_absent_sections(&w);
     free(text);
     if ((status = tirenv_outfile_commit(out, diag)))
         return status;

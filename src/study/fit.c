@@ -157,19 +157,132 @@ static int jacobian_at(fit_ctx *c, double x[], const double f[], size_t n, doubl
     return residuals(x, c, f_step, n);  /* leave the working tire at x */
 }
 
+/* lmdif's arrays: the log parameters x, the residuals f, the Jacobian J (lmdif's fjac, then
+ * the one at the solution), ipvt, and its work vectors carved out of work. */
+typedef struct {
+    double *x, *f, *J, *work;
+    int *ipvt;
+    double *diag_scale, *qtf, *wa1, *wa2, *wa3, *wa4, *f_step;
+} fit_arrays;
+
 /* The arrays of tirenv_fit, freed on both of its ways out once they are allocated (any of
  * them may be NULL: a failed allocation). */
-static void fit_free(fit_ctx *c, double *x, double *f, double *J, double *work, int *ipvt)
+static void fit_free(fit_ctx *c, fit_arrays *a)
 {
     free(c->h);
     free(c->cases);
     free(c->offset);
     free(c->models);
-    free(x);
-    free(f);
-    free(J);
-    free(work);
-    free(ipvt);
+    free(a->x);
+    free(a->f);
+    free(a->J);
+    free(a->work);
+    free(a->ipvt);
+}
+
+/* The points of the split's cases; c's count of them and their longest curve. */
+static size_t count_points(const tirenv_dataset *ds, tirenv_split split, fit_ctx *c)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < ds->n; ++i)
+        if (ds->cases[i].split == split) {
+            n += ds->cases[i].curve.n;
+            c->n_max = ds->cases[i].curve.n > c->n_max ? ds->cases[i].curve.n : c->n_max;
+            ++c->n_cases;
+        }
+    return n;
+}
+
+/* c's cases and workers' arrays and lmdif's for n points, the split's cases indexed with
+ * where each one's residuals start; nonzero if any could not be had (fit_free frees what
+ * was). */
+static int fit_alloc(fit_ctx *c, size_t n, fit_arrays *a)
+{
+    const tirenv_dataset *ds = c->ds;
+    c->cases = malloc(c->n_cases * sizeof *c->cases);
+    c->offset = malloc(c->n_cases * sizeof *c->offset);
+    c->models = calloc(c->jobs, sizeof *c->models);
+    c->h = malloc(c->jobs * c->n_max * sizeof *c->h);
+    if (c->cases && c->offset) {
+        size_t k = 0, at = 0;
+        for (size_t i = 0; i < ds->n; ++i)
+            if (ds->cases[i].split == c->split) {
+                c->cases[k] = i;
+                c->offset[k++] = at;
+                at += ds->cases[i].curve.n;
+            }
+    }
+    const size_t p = c->n_params;
+    a->x = malloc(p * sizeof *a->x);
+    a->f = malloc(n * sizeof *a->f);
+    a->J = malloc(n * p * sizeof *a->J);
+    a->work = malloc((5 * p + 2 * n) * sizeof *a->work);
+    a->ipvt = malloc(p * sizeof *a->ipvt);
+    if (!c->h || !c->cases || !c->offset || !c->models || !a->x || !a->f || !a->J ||
+        !a->work || !a->ipvt || n > (size_t)INT_MAX / (p + 1))
+        return -1;
+    a->diag_scale = a->work;
+    a->qtf = a->work + p;
+    a->wa1 = a->work + 2 * p;
+    a->wa2 = a->work + 3 * p;
+    a->wa3 = a->work + 4 * p;
+    a->wa4 = a->work + 5 * p;
+    a->f_step = a->work + 5 * p + n;
+    return 0;
+}
+
+/* The report at the solution a->x (the Jacobian there in a->J, lmdif's info): the fitted
+ * values with their standard errors, and which sit at their bounds (start: the values the fit
+ * started from). c's tire is left at the solution. */
+static void report_fit(fit_ctx *c, fit_arrays *a, size_t n, int info, const double start[],
+                       tirenv_fit_report *report)
+{
+    const size_t p = c->n_params;
+    double *J = a->J;
+    /* Covariance of the log parameters, scaled by the residual variance; for c = lower + e^p
+     * the standard error is (c - lower) * sigma_p to first order. */
+    double chisq = 0;
+    for (size_t i = 0; i < n; ++i)
+        chisq += a->f[i] * a->f[i];
+    qrfac((int)n, (int)p, J, (int)n, 1, a->ipvt, (int)p, a->wa1, a->wa2, a->wa3);
+    for (size_t j = 0; j < p; ++j)
+        J[j * n + j] = a->wa1[j];  /* qrfac keeps R's diagonal apart */
+    covar((int)p, J, (int)n, a->ipvt, 0.0, a->wa1);
+    const double sigma2 = chisq / (double)(n - p);
+    set_params(c, a->x);
+    *report = (tirenv_fit_report){
+        .n_params = p,
+        .iterations = c->jac_evals / p,
+        .n_points = n,
+        .rms = sqrt(chisq / (double)n),
+        .stop = info == 5                           ? "iteration limit"
+                : info == 2 || info == 3 || info == 7 ? "small step"
+                : info == 4 || info == 8            ? "small gradient"
+                                                    : "small reduction",
+    };
+    for (size_t i = 0; i < p; ++i) {
+        report->names[i] = c->params[i].key;
+        report->value[i] = *field(&c->tire, &c->params[i]);
+        report->std_error[i] = (report->value[i] - c->params[i].lower) *
+                               sqrt(sigma2 * J[i * n + i]);
+        /* In log(value - lower) the bound is at minus infinity: the solver only gets near
+         * it, so "at the bound" is within 1 % of the bound's own scale (|lower|, or the start
+         * for a bound of 0, as a stiffness has). */
+        const double lo = c->params[i].lower;
+        const double scale = lo != 0 ? fabs(lo) : fabs(start[i] - lo);
+        report->bound[i] = lo;
+        report->at_bound[i] = report->value[i] - lo <= 0.01 * scale ? -1 : 0;
+    }
+}
+
+/* A cam's shape holds up to the tallest obstacle it was identified on, which is what
+ * MF-Swift's ELLIPS_MAX_STEP says (docs/models.md section 7.5), within its range (R0). */
+static double tallest_step(const fit_ctx *c, double R0)
+{
+    double max_step = 0;
+    for (size_t k = 0; k < c->n_cases; ++k)
+        max_step = fmax(max_step, c->ds->cases[c->cases[k]].H);
+    return fmin(max_step, R0);
 }
 
 int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_settings *s,
@@ -201,47 +314,21 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
     const int start_ok = tirenv_tire_check(tire, diag);
     if (start_ok)
         return start_ok;
-    size_t n = 0;
-    for (size_t i = 0; i < ds->n; ++i)
-        if (ds->cases[i].split == split) {
-            n += ds->cases[i].curve.n;
-            c.n_max = ds->cases[i].curve.n > c.n_max ? ds->cases[i].curve.n : c.n_max;
-            ++c.n_cases;
-        }
+    const size_t n = count_points(ds, split, &c);
     if (n <= c.n_params)
         return tirenv_error(diag, TIRENV_EINVAL, ds->dir, 0, "split",
                             "%zu points in the %s cases: too few to fit %zu parameters", n,
                             tirenv_split_name(split), c.n_params);
     if (c.jobs > c.n_cases)
         c.jobs = c.n_cases;
-    c.cases = malloc(c.n_cases * sizeof *c.cases);
-    c.offset = malloc(c.n_cases * sizeof *c.offset);
-    c.models = calloc(c.jobs, sizeof *c.models);
-    c.h = malloc(c.jobs * c.n_max * sizeof *c.h);
-    if (c.cases && c.offset) {
-        size_t k = 0, at = 0;
-        for (size_t i = 0; i < ds->n; ++i)
-            if (ds->cases[i].split == split) {
-                c.cases[k] = i;
-                c.offset[k++] = at;
-                at += ds->cases[i].curve.n;
-            }
-    }
-    const size_t p = c.n_params;
-    double *x = malloc(p * sizeof *x);
-    double *f = malloc(n * sizeof *f);
-    double *J = malloc(n * p * sizeof *J);  /* lmdif's fjac, then the Jacobian at the end */
-    double *work = malloc((5 * p + 2 * n) * sizeof *work);
-    int *ipvt = malloc(p * sizeof *ipvt);
-    if (!c.h || !c.cases || !c.offset || !c.models || !x || !f || !J || !work || !ipvt ||
-        n > (size_t)INT_MAX / (p + 1)) {
-        fit_free(&c, x, f, J, work, ipvt);
+    fit_arrays a = {.x = NULL};
+    if (fit_alloc(&c, n, &a)) {
+        fit_free(&c, &a);
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "fit", "out of memory");
     }
-    double *diag_scale = work, *qtf = work + p, *wa1 = work + 2 * p, *wa2 = work + 3 * p,
-           *wa3 = work + 4 * p, *wa4 = work + 5 * p, *f_step = work + 5 * p + n;
+    const size_t p = c.n_params;
     for (size_t i = 0; i < p; ++i)
-        x[i] = log(fmax(*field(&c.tire, &c.params[i]) - c.params[i].lower, 1e-12));
+        a.x[i] = log(fmax(*field(&c.tire, &c.params[i]) - c.params[i].lower, 1e-12));
     double start[TIRENV_FIT_MAX_PARAMS];
     for (size_t i = 0; i < p; ++i)
         start[i] = *field(&c.tire, &c.params[i]);
@@ -256,61 +343,22 @@ int tirenv_fit(const tirenv_dataset *ds, tirenv_split split, const tirenv_fit_se
      * RMS; 0.3 and 1 both found the truth (measured), 0.3 with fewer iterations. */
     int nfev = 0;
     const int maxfev = (int)(s->max_iter * (p + 1) + 1);
-    const int info = lmdif(lmdif_fcn, &c, (int)n, (int)p, x, f, 1e-10, s->xtol, 1e-10, maxfev,
-                           1e-8, diag_scale, 1, 0.3, 1, &nfev, J, (int)n, ipvt, qtf, wa1,
-                           wa2, wa3, wa4);
+    const int info = lmdif(lmdif_fcn, &c, (int)n, (int)p, a.x, a.f, 1e-10, s->xtol, 1e-10,
+                           maxfev, 1e-8, a.diag_scale, 1, 0.3, 1, &nfev, a.J, (int)n, a.ipvt,
+                           a.qtf, a.wa1, a.wa2, a.wa3, a.wa4);
     int result = TIRENV_OK;
     if (c.status) {
         result = c.status;
     } else if (info < 1 || info > 8) {
         result = tirenv_error(diag, TIRENV_ENOCONV, "", 0, "fit",
                               "Minpack's lmdif stopped with info %d", info);
-    } else if (!(result = jacobian_at(&c, x, f, n, J, f_step))) {
-        /* Covariance of the log parameters, scaled by the residual variance; for
-         * c = lower + e^p the standard error is (c - lower) * sigma_p to first order. */
-        double chisq = 0;
-        for (size_t i = 0; i < n; ++i)
-            chisq += f[i] * f[i];
-        qrfac((int)n, (int)p, J, (int)n, 1, ipvt, (int)p, wa1, wa2, wa3);
-        for (size_t j = 0; j < p; ++j)
-            J[j * n + j] = wa1[j];  /* qrfac keeps R's diagonal apart */
-        covar((int)p, J, (int)n, ipvt, 0.0, wa1);
-        const double sigma2 = chisq / (double)(n - p);
-        set_params(&c, x);
-        *report = (tirenv_fit_report){
-            .n_params = p,
-            .iterations = c.jac_evals / p,
-            .n_points = n,
-            .rms = sqrt(chisq / (double)n),
-            .stop = info == 5                           ? "iteration limit"
-                    : info == 2 || info == 3 || info == 7 ? "small step"
-                    : info == 4 || info == 8            ? "small gradient"
-                                                        : "small reduction",
-        };
-        for (size_t i = 0; i < p; ++i) {
-            report->names[i] = c.params[i].key;
-            report->value[i] = *field(&c.tire, &c.params[i]);
-            report->std_error[i] = (report->value[i] - c.params[i].lower) *
-                                   sqrt(sigma2 * J[i * n + i]);
-            /* In log(value - lower) the bound is at minus infinity: the solver only gets
-             * near it, so "at the bound" is within 1 % of the bound's own scale (|lower|, or
-             * the start for a bound of 0, as a stiffness has). */
-            const double lo = c.params[i].lower;
-            const double scale = lo != 0 ? fabs(lo) : fabs(start[i] - lo);
-            report->bound[i] = lo;
-            report->at_bound[i] = report->value[i] - lo <= 0.01 * scale ? -1 : 0;
-        }
+    } else if (!(result = jacobian_at(&c, a.x, a.f, n, a.J, a.f_step))) {
+        report_fit(&c, &a, n, info, start, report);
         *tire = c.tire;
-        /* A cam's shape holds up to the tallest obstacle it was identified on, which is what
-         * MF-Swift's ELLIPS_MAX_STEP says (docs/models.md section 7.5). */
-        if (type == tirenv_model_cam) {
-            tire->cam.max_step = 0;
-            for (size_t k = 0; k < c.n_cases; ++k)
-                tire->cam.max_step = fmax(tire->cam.max_step, ds->cases[c.cases[k]].H);
-            tire->cam.max_step = fmin(tire->cam.max_step, tire->springs.R0);  /* its range */
-        }
+        if (type == tirenv_model_cam)
+            tire->cam.max_step = tallest_step(&c, tire->springs.R0);
     }
     report->seconds = tirenv_study__wall_seconds() - t0;
-    fit_free(&c, x, f, J, work, ipvt);
+    fit_free(&c, &a);
     return result;
 }

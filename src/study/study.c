@@ -459,22 +459,11 @@ static void append_model_means(FILE *fp, const tirenv_compare_result *r)
                 1e3 * tirenv_compare__mean_rms(r, m, NULL));
 }
 
-/* facts->cam_fit is NULL when the cam simulated the data (it is then the reference, not
- * fitted). */
-static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
-                         const tirenv_study__facts *facts,
-                         const tirenv_train_report *nn, const tirenv_train_report *nn_phys,
-                         const tirenv_compare_result *phys, const tirenv_compare_result *out_r,
-                         const tirenv_dataset *outside_ds)
+/* How the physical models were identified: the springs model, and the cam where it did not
+ * simulate the data (facts->cam_fit NULL: it is then the reference, not fitted). */
+static void notes_fits(FILE *fp, const tirenv_study__facts *facts)
 {
     const tirenv_fit_report *fit = facts->springs_fit, *cam_fit = facts->cam_fit;
-    const tirenv_nn_seeds *seeds = facts->seeds;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *fp = open_memstream(&buf, &len);
-    if (!fp)
-        return NULL;
-    tirenv_study__findings(fp, facts);
     fprintf(fp, "## How the models were obtained\n\n"
                 "**Physical model (springs)**, identified on the training cases by nonlinear "
                 "least squares on h (%zu points, %zu iterations, stopped by %s, %.1f s, RMS "
@@ -482,20 +471,27 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
                 "variance:\n\n",
             fit->n_points, fit->iterations, fit->stop, fit->seconds, 1e3 * fit->rms);
     tirenv_study__fit_table(fp, fit);
-    if (cam_fit) {
-        fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model "
-                    "(docs/models.md section 7), identified the same way (%zu iterations, "
-                    "stopped by %s, %.2f s, RMS %.2f mm); its contact-length keys (Q_RA1, "
-                    "Q_RA2, VERTICAL_STIFFNESS) stay as in the tire file:\n\n",
-                cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
-        tirenv_study__fit_table(fp, cam_fit);
-        tirenv_study__cam_limits(fp, facts);
-        fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
-    } else {
+    if (!cam_fit) {
         fprintf(fp, "\n**Tandem elliptical cam (cam)**: it simulated the data, so it is the "
                     "reference, run with the data set's tire as it is, not fitted. The fitted "
                     "tire is in `fitted.tir`.\n\n");
+        return;
     }
+    fprintf(fp, "\n**Tandem elliptical cam (cam)**, MF-Swift's effective road model "
+                "(docs/models.md section 7), identified the same way (%zu iterations, "
+                "stopped by %s, %.2f s, RMS %.2f mm); its contact-length keys (Q_RA1, "
+                "Q_RA2, VERTICAL_STIFFNESS) stay as in the tire file:\n\n",
+            cam_fit->iterations, cam_fit->stop, cam_fit->seconds, 1e3 * cam_fit->rms);
+    tirenv_study__fit_table(fp, cam_fit);
+    tirenv_study__cam_limits(fp, facts);
+    fprintf(fp, "\nThe fitted tire (both models) is in `fitted.tir`.\n\n");
+}
+
+/* How the network was trained (nn: the one kept, nearest the median seed). */
+static void notes_network(FILE *fp, const tirenv_study_settings *s,
+                          const tirenv_study__facts *facts, const tirenv_train_report *nn)
+{
+    const tirenv_nn_seeds *seeds = facts->seeds;
     tirenv_train_settings ts = tirenv_train_default(tirenv_trainer_type_find(s->trainer));
     ts.input = s->input;
     size_t n_train = 0;
@@ -531,6 +527,15 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
             seeds->seed[seeds->n_seeds - 1], seeds->seconds, 1e3 * seeds->median,
             1e3 * seeds->q1, 1e3 * seeds->q3, 1e3 * seeds->min, 1e3 * seeds->max,
             seeds->seed[seeds->median_seed], nn->total_epochs, nn->wall_time, errors);
+}
+
+/* The paper's proposed workflow: the network trained on the physical model's curves over the
+ * grid g (nn_phys), against the one trained on the measurements. */
+static void notes_physical_network(FILE *fp, const tirenv_study_settings *s,
+                                   const grid_design *g, const tirenv_nn_seeds *seeds,
+                                   const tirenv_train_report *nn_phys,
+                                   const tirenv_compare_result *phys)
+{
     fprintf(fp, "## The paper's proposed workflow: a network trained on the physical model\n\n"
                 "The paper proposes to train the network on curves of the physical model "
                 "instead of rig runs. Here: %zu curves of the identified springs model over a "
@@ -548,19 +553,12 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
             1e3 * seeds->median);
     append_model_means(fp, phys);
     fprintf(fp, ". Plots: [physical-network/](physical-network/report.md).\n\n");
-    const char *ref_name =
-        tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring);
-    fprintf(fp, "## Outside the training range\n\n"
-                "Obstacles no training case resembles, with reference curves ");
-    fprintf(fp, outside_raw(s) ? "that are the %s model's own, as the data set's (no rig, "
-                                 "SIMULATED): "
-                               : "from the same virtual rig (%s model, SIMULATED): ",
-            ref_name);
-    for (size_t i = 0; i < outside_ds->n; ++i) {
-        const tirenv_case *c = &outside_ds->cases[i];
-        fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
-                1e3 * c->L, 1e3 * c->H, 1e3 * c->contact_length);
-    }
+}
+
+/* The outside cases' RMS errors, a row per case and a column per model (mm). */
+static void outside_table(FILE *fp, const tirenv_compare_result *out_r,
+                          const tirenv_dataset *outside_ds)
+{
     fprintf(fp, ". The network sees the half-cylinder and the trapezoid as their bounding "
                 "rectangles. RMS error per case (mm):\n\n| case |");
     for (size_t m = 0; m < out_r->n_models; ++m)
@@ -575,8 +573,13 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
             fprintf(fp, " %.2f |", 1e3 * out_r->entry[c * out_r->n_models + m].errors.rms);
         fprintf(fp, "\n");
     }
-    fprintf(fp, "\nMean: ");
-    append_model_means(fp, out_r);
+}
+
+/* What the outside cases say of generalising: the network's mean error against the physical
+ * model's, unless the physical model simulated them. */
+static void outside_verdict(FILE *fp, const tirenv_study_settings *s,
+                            const tirenv_compare_result *out_r)
+{
     const int nn_m = out_r->nn_model;
     size_t springs_m = 0;
     for (size_t m = 0; m < out_r->n_models; ++m)
@@ -600,6 +603,48 @@ static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
     } else {
         fprintf(fp, ". Plots: [outside/](outside/report.md).\n\n");
     }
+}
+
+/* Obstacles no training case resembles (outside_ds, compared in out_r). */
+static void notes_outside(FILE *fp, const tirenv_study_settings *s,
+                          const tirenv_compare_result *out_r, const tirenv_dataset *outside_ds)
+{
+    const char *ref_name =
+        tirenv_model_type_name(s->simulated_by ? s->simulated_by : tirenv_model_ring);
+    fprintf(fp, "## Outside the training range\n\n"
+                "Obstacles no training case resembles, with reference curves ");
+    fprintf(fp, outside_raw(s) ? "that are the %s model's own, as the data set's (no rig, "
+                                 "SIMULATED): "
+                               : "from the same virtual rig (%s model, SIMULATED): ",
+            ref_name);
+    for (size_t i = 0; i < outside_ds->n; ++i) {
+        const tirenv_case *c = &outside_ds->cases[i];
+        fprintf(fp, "%s%s (%.0f x %.0f mm, contact length %.0f mm)", i ? ", " : "", c->name,
+                1e3 * c->L, 1e3 * c->H, 1e3 * c->contact_length);
+    }
+    outside_table(fp, out_r, outside_ds);
+    fprintf(fp, "\nMean: ");
+    append_model_means(fp, out_r);
+    outside_verdict(fp, s, out_r);
+}
+
+/* The report's own account, section by section; NULL without memory. */
+static char *study_notes(const tirenv_study_settings *s, const grid_design *g,
+                         const tirenv_study__facts *facts,
+                         const tirenv_train_report *nn, const tirenv_train_report *nn_phys,
+                         const tirenv_compare_result *phys, const tirenv_compare_result *out_r,
+                         const tirenv_dataset *outside_ds)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *fp = open_memstream(&buf, &len);
+    if (!fp)
+        return NULL;
+    tirenv_study__findings(fp, facts);
+    notes_fits(fp, facts);
+    notes_network(fp, s, facts, nn);
+    notes_physical_network(fp, s, g, facts->seeds, nn_phys, phys);
+    notes_outside(fp, s, out_r, outside_ds);
     fclose(fp);
     return buf;
 }

@@ -573,6 +573,129 @@ static int restarts_run(restarts_pass *p, tirenv_diag *diag)
     return status;
 }
 
+/* The settings against the samples: the topology's inputs, the settings themselves, each
+ * split's samples, and the curves a curves loss needs (sel_in: the samples restarts are
+ * chosen on). */
+static int check_training(const tirenv_train_settings *s, const tirenv_samples *train,
+                          const tirenv_samples *control, const tirenv_samples *validation,
+                          const tirenv_samples *sel_in, tirenv_diag *diag)
+{
+    int status;
+    if (s->topology.size[0] != train->n_in)
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
+                            "%zu inputs; the samples have %zu", s->topology.size[0],
+                            train->n_in);
+    if ((status = tirenv_train_settings_check(s, diag)) ||
+        (status = check_samples(train, "train", train->n_in, diag)) ||
+        (status = check_samples(control, "control", train->n_in, diag)) ||
+        (status = check_samples(validation, "validation", train->n_in, diag)))
+        return status;
+    if (s->loss == TIRENV_TRAIN_LOSS_CURVES && (train->n_curves == 0 || sel_in->n_curves == 0))
+        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loss",
+                            "the curves loss needs the samples grouped in curves "
+                            "(tirenv_samples_from_dataset does it); these are not");
+    return TIRENV_OK;
+}
+
+/* The prototype's form and scaling (on the training samples), and the samples' weights
+ * (base_weights) into tr and sel, the copies of train and sel_in the restarts use; the
+ * weights are allocated in *w_train and *w_sel. */
+static int prepare_restarts(tirenv_nn *proto, const tirenv_train_settings *s,
+                            const tirenv_samples *train, const tirenv_samples *sel_in,
+                            tirenv_samples *tr, tirenv_samples *sel, double **w_train,
+                            double **w_sel, tirenv_diag *diag)
+{
+    int status;
+    if ((status = tirenv_nn_set_form(proto, s->input, s->target, diag)) ||
+        (status = tirenv_nn_set_even_width(proto, s->even_width, diag)) ||
+        (status = tirenv_nn_fit_scaling(proto, train->n, train->x, train->y, diag)) ||
+        (status = base_weights(train, s, w_train, diag)) ||
+        (status = base_weights(sel_in, s, w_sel, diag)))
+        return status;
+    if (*w_train)
+        tr->w = *w_train;
+    if (*w_sel)
+        sel->w = sel_in == train ? *w_train : *w_sel;
+    return TIRENV_OK;
+}
+
+/* The restarts considered: those the serial loop would have run, up to the first cancelled
+ * one, which counts, as it did one after the other. */
+static size_t restarts_done(const restart_result res[], size_t restarts)
+{
+    size_t done = 0;
+    while (done < restarts && !res[done].cancelled)
+        ++done;
+    if (done < restarts)
+        ++done;
+    return done;
+}
+
+/* The done restarts by control criterion into order, the earliest first among equals (a
+ * stable insertion sort), so the result does not depend on how many restarts were asked for
+ * beyond those that made it; their epochs summed into *total_epochs. */
+static void rank_restarts(const restart_result res[], size_t done, size_t order[],
+                          size_t *total_epochs)
+{
+    for (size_t k = 0; k < done; ++k) {
+        *total_epochs += res[k].epochs;
+        size_t i = k;
+        for (; i > 0 && res[k].crit < res[order[i - 1]].crit; --i)
+            order[i] = order[i - 1];
+        order[i] = k;
+    }
+}
+
+/* A kept restart whose error became infinite or NaN: the weights of least control error it
+ * had before are not a trained network, and handing them back as the model (exit 0, a model
+ * file of barely moved initial weights) was the fault. An error, saying what to change
+ * (docs/models.md section 6.4). */
+static int refuse_diverged(const tirenv_trainer_type *type, const tirenv_train_settings *s,
+                           const restart_result res[], const size_t order[], size_t n_kept,
+                           tirenv_diag *diag)
+{
+    for (size_t i = 0; i < n_kept; ++i) {
+        const restart_result *d = &res[order[i]];
+        if (d->stop == TIRENV_TRAIN_DIVERGED)
+            return tirenv_error(
+                diag, TIRENV_ENOCONV, "", 0, "training",
+                "the %s training diverged: restart %zu's error was no longer finite after %zu "
+                "epochs (least control error at epoch %zu); %s%.3g%s", type->name,
+                order[i] + 1, d->epochs, d->best_epoch,
+                type == tirenv_trainer_backprop ? "lower the learning rate (now "
+                                                : "another seed or trainer may train (seed ",
+                type == tirenv_trainer_backprop ? s->backprop.learning_rate : (double)s->seed,
+                ")");
+    }
+    return TIRENV_OK;
+}
+
+/* The model: the best restart's network, or the mean of the n_kept best. */
+static int keep_best(const restart_result res[], const size_t order[], size_t n_kept,
+                     tirenv_nn **model, tirenv_diag *diag)
+{
+    const tirenv_nn *nets[TIRENV_NN_MAX_MEMBERS];
+    for (size_t i = 0; i < n_kept; ++i)
+        nets[i] = res[order[i]].net;
+    *model = n_kept == 1 ? tirenv_nn_clone(nets[0]) : tirenv_nn_ensemble(nets, n_kept);
+    return *model ? TIRENV_OK : tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
+}
+
+/* The report of the best restart and the kept ones (its total_epochs already summed). */
+static void report_best(const restart_result res[], const size_t order[], size_t n_kept,
+                        tirenv_train_report *rep)
+{
+    const restart_result *b = &res[order[0]];
+    rep->restart = order[0];
+    rep->epochs = b->epochs;
+    rep->best_epoch = b->best_epoch;
+    rep->best_time = b->best_time;
+    rep->stop = b->stop;
+    rep->members = n_kept;
+    for (size_t i = 0; i < n_kept; ++i)
+        rep->member_restart[i] = order[i];
+}
+
 /* Early stopping (Prechelt, "Early stopping - but when?", 1998): train, and keep the weights
  * of least control error; stop when it has not improved for `patience` epochs. Restarts are
  * independent runs from new initial weights; the model is the one with the least control
@@ -589,21 +712,10 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
     if (train->n == 0)
         return tirenv_error(diag, TIRENV_EINVAL, "", 0, "train", "no training samples");
     const tirenv_train_settings *s = settings;
-    int status;
-    if (s->topology.size[0] != train->n_in)
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "topology",
-                            "%zu inputs; the samples have %zu", s->topology.size[0],
-                            train->n_in);
-    if ((status = tirenv_train_settings_check(s, diag)) ||
-        (status = check_samples(train, "train", train->n_in, diag)) ||
-        (status = check_samples(control, "control", train->n_in, diag)) ||
-        (status = check_samples(validation, "validation", train->n_in, diag)))
-        return status;
     const tirenv_samples *sel_in = control && control->n ? control : train;
-    if (s->loss == TIRENV_TRAIN_LOSS_CURVES && (train->n_curves == 0 || sel_in->n_curves == 0))
-        return tirenv_error(diag, TIRENV_EINVAL, "", 0, "loss",
-                            "the curves loss needs the samples grouped in curves "
-                            "(tirenv_samples_from_dataset does it); these are not");
+    int status = check_training(s, train, control, validation, sel_in, diag);
+    if (status)
+        return status;
 
     double *w_train = NULL, *w_sel = NULL;
     tirenv_nn *proto = tirenv_nn_alloc(&s->topology);
@@ -614,80 +726,25 @@ int tirenv_train(const tirenv_trainer_type *type, const tirenv_train_settings *s
         return tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     }
     tirenv_samples tr = *train, sel = *sel_in;
-    if (!(status = tirenv_nn_set_form(proto, s->input, s->target, diag)) &&
-        !(status = tirenv_nn_set_even_width(proto, s->even_width, diag)) &&
-        !(status = tirenv_nn_fit_scaling(proto, train->n, train->x, train->y, diag)) &&
-        !(status = base_weights(train, s, &w_train, diag)) &&
-        !(status = base_weights(sel_in, s, &w_sel, diag))) {
-        if (w_train)
-            tr.w = w_train;
-        if (w_sel)
-            sel.w = sel_in == train ? w_train : w_sel;
-    }
+    status = prepare_restarts(proto, s, train, sel_in, &tr, &sel, &w_train, &w_sel, diag);
 
     const double t_start = tirenv_core__wall_seconds();
-    /* The restarts on s->jobs threads; the ones considered are those the serial loop would
-     * have run: up to the first cancelled one. */
+    /* The restarts on s->jobs threads. */
     restarts_pass rp = {type, s, &tr, &sel, proto, res, *s};
     if (!status)
         status = restarts_run(&rp, diag);
-    size_t done = 0;
-    while (!status && done < s->restarts && !res[done].cancelled)
-        ++done;
-    if (!status && done < s->restarts)
-        ++done;  /* the cancelled one counts, as it did one after the other */
-
-    /* The restarts by control criterion, the earliest first among equals (a stable
-     * insertion sort), so the result does not depend on how many restarts were asked for
-     * beyond those that made it. */
+    const size_t done = status ? 0 : restarts_done(res, s->restarts);
     size_t *order = malloc((done ? done : 1) * sizeof *order);
     if (!order && !status)
         status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
     tirenv_train_report rep = {0};
-    for (size_t k = 0; k < done && !status; ++k) {
-        rep.total_epochs += res[k].epochs;
-        size_t i = k;
-        for (; i > 0 && res[k].crit < res[order[i - 1]].crit; --i)
-            order[i] = order[i - 1];
-        order[i] = k;
-    }
+    if (!status)
+        rank_restarts(res, done, order, &rep.total_epochs);
     const size_t n_kept = s->ensemble < done ? s->ensemble : done;
-    /* A kept restart whose error became infinite or NaN: the weights of least control error it
-     * had before are not a trained network, and handing them back as the model (exit 0, a
-     * model file of barely moved initial weights) was the fault. An error, saying what to
-     * change (docs/models.md section 6.4). */
-    for (size_t i = 0; i < n_kept && !status; ++i) {
-        const restart_result *d = &res[order[i]];
-        if (d->stop == TIRENV_TRAIN_DIVERGED)
-            status = tirenv_error(
-                diag, TIRENV_ENOCONV, "", 0, "training",
-                "the %s training diverged: restart %zu's error was no longer finite after %zu "
-                "epochs (least control error at epoch %zu); %s%.3g%s", type->name,
-                order[i] + 1, d->epochs, d->best_epoch,
-                type == tirenv_trainer_backprop ? "lower the learning rate (now "
-                                                : "another seed or trainer may train (seed ",
-                type == tirenv_trainer_backprop ? s->backprop.learning_rate : (double)s->seed,
-                ")");
-    }
     tirenv_nn *model = NULL;
-    if (!status) {
-        const tirenv_nn *nets[TIRENV_NN_MAX_MEMBERS];
-        for (size_t i = 0; i < n_kept; ++i)
-            nets[i] = res[order[i]].net;
-        model = n_kept == 1 ? tirenv_nn_clone(nets[0]) : tirenv_nn_ensemble(nets, n_kept);
-        if (!model)
-            status = tirenv_error(diag, TIRENV_ENOMEM, "", 0, "", "out of memory");
-    }
-    if (!status) {
-        const restart_result *b = &res[order[0]];
-        rep.restart = order[0];
-        rep.epochs = b->epochs;
-        rep.best_epoch = b->best_epoch;
-        rep.best_time = b->best_time;
-        rep.stop = b->stop;
-        rep.members = n_kept;
-        for (size_t i = 0; i < n_kept; ++i)
-            rep.member_restart[i] = order[i];
+    if (!status && !(status = refuse_diverged(type, s, res, order, n_kept, diag)) &&
+        !(status = keep_best(res, order, n_kept, &model, diag))) {
+        report_best(res, order, n_kept, &rep);
         rep.wall_time = tirenv_core__wall_seconds() - t_start;
         rep.error[TIRENV_SPLIT_TRAIN] = tirenv_train_evaluate(model, train);
         rep.error[TIRENV_SPLIT_CONTROL] = tirenv_train_evaluate(model, control);
