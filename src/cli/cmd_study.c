@@ -168,8 +168,13 @@ int cli_study_main(int argc, char *argv[])
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     const int status = tirenv_study(&s, &diag);
-    if (status)
-        return cli_fail(status, &diag);
+    if (status) {
+        code = cli_fail(status, &diag);
+        if (status == TIRENV_EIO && strcmp(diag.field, "gnuplot") == 0)
+            cli_error("study: nothing written to %s; --no-images writes the report with the "
+                      "gnuplot scripts, to draw later", s.out_dir);
+        return code;
+    }
     printf("tirenv: study: report written to %s/report.md (%.1f s)\n", s.out_dir,
            cli_wall_seconds() - t0);
     return CLI_EXIT_OK;

@@ -360,10 +360,9 @@ int tirenv_plot__run(const char *gnuplot, const char *dir, const char *script,
         return TIRENV_OK;
     if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 127 &&
         strncmp(out, exec_failed, sizeof exec_failed - 2) == 0)
-        return tirenv_error(diag, TIRENV_EIO, where, 0, "gnuplot",
+        return tirenv_error(diag, TIRENV_EIO, "", 0, "gnuplot", /* no script's fault */
                             "cannot run '%s' to draw the plots: not found or not executable; "
-                            "install gnuplot (scripts/deps.sh installs gnuplot-nox), or draw "
-                            "them later with 'gnuplot %s' in %s", prog, script, dir);
+                            "install gnuplot (scripts/deps.sh installs gnuplot-nox)", prog);
     if (WIFEXITED(wstatus))
         return tirenv_error(diag, TIRENV_EIO, where, 0, "gnuplot",
                             "'%s %s' in %s exited with status %d: %s", prog, script, dir,

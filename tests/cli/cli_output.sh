@@ -189,6 +189,15 @@ run env PATH="$PWD/failing-bin:$PATH" "$bin" ride --cleat 0.30,0.05 --speed 10km
 check "ride -o with --out-dir whose report fails: exit 2, -o's file and the directory as they were" \
     '[ $rc -eq 2 ] && [ "$(cat series.csv)" = kept ] && [ -s rd/series-point-10kmh.csv ] &&
      grep -q "drawing failed" err && no_tmp'
+# No gnuplot at all: the message names the program and how to install it, not a staging
+# directory that is gone by the time it is read.
+mkdir -p no-gnuplot-bin
+ln -sf "$(command -v env)" no-gnuplot-bin/env
+run env PATH="$PWD/no-gnuplot-bin" "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point \
+    --out-dir rd-none
+check "ride --out-dir without gnuplot: exit 2 naming gnuplot and gnuplot-nox, no temporary path" \
+    '[ $rc -eq 2 ] && grep -q "cannot run .gnuplot." err && grep -q "gnuplot-nox" err &&
+     ! grep -q "tirenv-tmp" err && [ ! -e rd-none ] && no_tmp'
 run "$bin" ride --cleat 0.30,0.05 --speed 10km/h --model point --series
 check "ride --series without --out-dir: exit 1" '[ $rc -eq 1 ] && grep -q -- "--out-dir" err'
 
