@@ -480,8 +480,12 @@ int cli_convert_main(int argc, char *argv[])
         }
     }
     tirenv_road_file_free(cv.file);
-    if (status)
-        return cli_fail(status, &diag);
+    if (status) {
+        const int failed = cli_fail(status, &diag);
+        if (strcmp(diag.field, "u_increment") == 0 && !cv.have_dx) /* the library's --dx */
+            cli_error("convert: --dx M resamples the road every M metres");
+        return failed;
+    }
     fprintf(stderr, "tirenv convert: %s (%s) -> %s (%s): %zu %s, x %g to %g m", cv.in,
             tirenv_profile_format_name(from), cv.out, tirenv_profile_format_name(to), n,
             from == TIRENV_PROFILE_CRG ? "rows" : "vertices", range[0], range[1]);

@@ -342,7 +342,8 @@ int tirenv_crg_write_profiles(const char *path, tirenv_crg_encoding encoding, si
         if (!(span >= 1) || span > 1e12)
             return tirenv_error(diag, TIRENV_EINVAL, path, 0, "u_increment",
                                 "the profiles' common extent %g to %g m holds %g increments of "
-                                "%g m; expected at least one", lo, hi, span, u_increment);
+                                "%g m; expected at least one", lo, hi, span + 0.0 /* not -0 */,
+                                u_increment);
         x0 = lo;
         dx = u_increment;
         rows = (size_t)span + 1;

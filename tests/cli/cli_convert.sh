@@ -164,4 +164,15 @@ run "$bin" convert --profile bad.csv -o b.rdf
 check "a malformed CSV: exit 2 naming file:line, no file" \
     '[ $rc -eq 2 ] && grep -q "bad.csv:3" err && no_file b.rdf'
 
+# One vertex has no spacing for a .crg's grid: the refusal names the option that gives one,
+# and with it, the empty extent (no "-0 increments").
+printf 'x_m,z_m\n0,0\n' >single.csv
+run "$bin" convert --profile single.csv -o single.crg
+check "a one-vertex CSV to .crg: exit 2 naming --dx, no file" \
+    '[ $rc -eq 2 ] && grep -q -- "--dx M resamples" err && no_file single.crg'
+run "$bin" convert --profile single.csv -o single.crg --dx 0.01
+check "the same with --dx: exit 2, 0 increments, no file" \
+    '[ $rc -eq 2 ] && grep -q "holds 0 increments" err && ! grep -q -- "--dx M" err &&
+     no_file single.crg'
+
 clilib_done
