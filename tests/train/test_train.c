@@ -286,10 +286,11 @@ static void test_refusals(void **state)
 {
     const synthetic *d = *state;
     enum { LR, MOMENTUM, ETA_PLUS, DELTA, MU_DEC, MU_INC, EPOCHS, RESTARTS, TOPOLOGY,
-           INPUTS, ENSEMBLE, FORM, LOSS, N_BAD };
+           INPUTS, ENSEMBLE, FORM, LOSS, LM_TOO_LARGE, N_BAD };
     static const char *const field[N_BAD] = {"backprop", "backprop", "rprop", "rprop", "lm",
                                              "lm", "settings", "settings", "topology",
-                                             "topology", "ensemble", "form", "form"};
+                                             "topology", "ensemble", "form", "form",
+                                             "topology"};
     for (int k = 0; k < N_BAD; ++k) {
         tirenv_train_settings s = tirenv_train_default(tirenv_trainer_lm);
         switch (k) {
@@ -306,6 +307,9 @@ static void test_refusals(void **state)
         case ENSEMBLE: s.ensemble = 0; break;
         case FORM: s.input = (tirenv_nn_input_form)7; break;
         case LOSS: s.loss = (tirenv_train_loss)-1; break;
+        case LM_TOO_LARGE: /* 4-64-64-64-1: 8,705 weights, LM's two squares 1.2 GB */
+            s.topology = (tirenv_nn_topology){.n_layers = 5, .size = {4, 64, 64, 64, 1}};
+            break;
         }
         tirenv_diag diag;
         tirenv_diag_clear(&diag);
