@@ -16,6 +16,12 @@ TIRENV_BEGIN_DECLS
  * key. A relative TIRE_FILE is relative to the vehicle file's directory and is stored with
  * that directory put before it, so that it opens from the working directory. */
 int tirenv_vehicle_read(const char *path, tirenv_vehicle *v, tirenv_diag *diag);
+/* tirenv_vehicle_read that also names, into unset (n bytes, "" if none), the keys the file
+ * does not set, as "SECTION.KEY" separated by ", " (cut with "..." if they do not fit): those
+ * keep the values of the vehicle read over. TIRE_STIFFNESS and TIRE_DAMPING, whose absence
+ * means the tire file's, are not named. */
+int tirenv_vehicle_read_unset(const char *path, tirenv_vehicle *v, char *unset, size_t n,
+                              tirenv_diag *diag);
 
 /* Applies one "KEY=VALUE" override (KEY as in the file, e.g. MASS=5200; the axle keys need
  * their section, e.g. FRONT_AXLE.TIRES=4), then checks; *v changes only if both pass, and a

@@ -107,7 +107,15 @@ static int load_vehicle(const ride_options *r, ride_setup *s)
     tirenv_diag diag;
     tirenv_diag_clear(&diag);
     s->v = tirenv_vehicle_default();
-    int status = tirenv_vehicle_read(path, &s->v, &diag);
+    /* A user's file that leaves a key out keeps the default tractor's value: said, since a
+     * forgotten PITCH_INERTIA would otherwise be the tractor's without a word. */
+    char unset[512];
+    int status = tirenv_vehicle_read_unset(path, &s->v, unset, sizeof unset, &diag);
+    if (!status && r->vehicle_path && unset[0]) {
+        char text[700];
+        snprintf(text, sizeof text, "%s sets no %s: the default tractor's values", path, unset);
+        cli_warnings("ride", text);
+    }
     for (size_t i = 0; !status && i < r->n_sets; ++i)
         status = tirenv_vehicle_set(&s->v, r->sets[i], &diag);
     if (!status)

@@ -621,7 +621,7 @@ static int pf_set_buf(const pf_schema *s, void *obj, char *buf, const char *assi
         return tirenv_error(diag, TIRENV_ENOMEM, "--set", 0, "", "out of memory");
     memcpy(copy, obj, s->size);
     int status = pf_apply(&c, &s->keys[i], tirenv_propfile__trim(eq + 1), copy);
-    if (status == TIRENV_OK && s->keys[i].given) {
+    if (status == TIRENV_OK && s->given_mask && s->keys[i].given) {
         unsigned given;
         memcpy(&given, (unsigned char *)copy + s->given_offset, sizeof given);
         given |= s->keys[i].given;

@@ -111,4 +111,15 @@ run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --set MASS=-1 -o neg.c
 check "ride --set MASS=-1: exit 2 naming MASS, no file" \
     '[ $rc -eq 2 ] && grep -q MASS err && no_file neg.csv'
 
+# A vehicle file of one's own that leaves keys out runs on the default tractor's values for
+# them, and says which; the shipped tractor.veh sets every key and says nothing.
+printf '[BODY]\nMASS = 5200\n' >mass.veh
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --vehicle mass.veh
+check "ride --vehicle with MASS alone: exit 0, a warning naming PITCH_INERTIA and the tractor" \
+    '[ $rc -eq 0 ] && grep -q "warning: mass.veh sets no BODY.PITCH_INERTIA, " err &&
+     grep -q "the default tractor.s values" err && ! grep -q "BODY.MASS" err'
+run "$bin" ride --cleat 0.30,0.05 --speed 3 --model point --vehicle "$data/../../data/vehicles/tractor.veh"
+check "ride --vehicle tractor.veh: no warning of unset keys" \
+    '[ $rc -eq 0 ] && ! grep -q "sets no" err'
+
 clilib_done

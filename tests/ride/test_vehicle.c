@@ -305,6 +305,37 @@ static void test_read_errors(void **state)
     }
 }
 
+/* The keys a file leaves out, named; a file with all of them names none, and the values read
+ * are tirenv_vehicle_read's. */
+static void test_read_unset(void **state)
+{
+    tirenv_test_dir *fx = *state;
+    char path[600], unset[512];
+    tirenv_diag d;
+    tirenv_vehicle v = tirenv_vehicle_default(), w = tirenv_vehicle_default();
+    const char *full = TIRENV_DATA_DIR "/vehicles/tractor.veh";
+    assert_int_equal(tirenv_vehicle_read_unset(full, &v, unset, sizeof unset, &d), TIRENV_OK);
+    assert_string_equal(unset, "");
+    assert_int_equal(tirenv_vehicle_read(full, &w, &d), TIRENV_OK);
+    assert_memory_equal(&v, &w, sizeof v);
+    tirenv_test_write_text(tirenv_test_path(fx, "part.veh", path),
+                           "[BODY]\nMASS = 5283.7\nCG_TO_FRONT_AXLE = 1.37\nCG_TO_REAR_AXLE = 1.08\n"
+                           "GRAVITY = 9.81\n[SEAT]\nSEAT_AHEAD_OF_CG = 0.2\nSEAT_ABOVE_CG = 1.1\n"
+                           "[FRONT_AXLE]\nTIRE_FILE = ''\nTIRES = 2\nSUSPENSION_STIFFNESS = 0\n"
+                           "SUSPENSION_DAMPING = 0\nAXLE_MASS = 300\n[REAR_AXLE]\nTIRE_FILE = ''\n"
+                           "SUSPENSION_STIFFNESS = 0\nSUSPENSION_DAMPING = 0\nAXLE_MASS = 400\n");
+    v = tirenv_vehicle_default();
+    assert_int_equal(tirenv_vehicle_read_unset(path, &v, unset, sizeof unset, &d), TIRENV_OK);
+    assert_string_equal(unset, "BODY.PITCH_INERTIA, REAR_AXLE.TIRES");
+    assert_bits_equal(v.m, 5283.7);
+    assert_bits_equal(v.I_y, tirenv_vehicle_default().I_y);
+    /* cut where it does not fit, and said so */
+    char small[24];
+    v = tirenv_vehicle_default();
+    assert_int_equal(tirenv_vehicle_read_unset(path, &v, small, sizeof small, &d), TIRENV_OK);
+    assert_string_equal(small, "BODY.PITCH_INERTIA, ...");
+}
+
 static void test_missing_file(void **state)
 {
     tirenv_test_dir *fx = *state;
@@ -352,6 +383,10 @@ static void test_set_good(void **state)
         double got;
         memcpy(&got, (const unsigned char *)&v + reals[i].offset, sizeof got);
         assert_bits_equal(got, reals[i].value);
+        /* and nothing else: the keys' bits of tirenv_vehicle_read_unset's record are not
+         * written into a vehicle (they were OR-ed into MASS, the struct's first member) */
+        if (reals[i].offset != AT(m))
+            assert_bits_equal(v.m, tirenv_vehicle_default().m);
     }
     /* Damping on the front axle once it has a spring; a relative path stays relative (to the
      * working directory). */
@@ -513,6 +548,7 @@ int main(void)
         T(test_check),
         T(test_read_paths_and_case),
         T(test_read_errors),
+        T(test_read_unset),
         T(test_missing_file),
         T(test_set_good),
         T(test_set_errors),
