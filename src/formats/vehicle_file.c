@@ -11,8 +11,8 @@
 #include <stdio.h>
 #include "io/io.h"
 
-/* Each key's bit (b) in vehicle_read's record of the keys a file sets
- * (tirenv_vehicle_read_unset); the schema of tirenv_vehicle_read keeps none. */
+/* Each key's bit (b) in the record of the keys a file sets, which tirenv_vehicle_read_unset
+ * keeps (veh_given_schema); tirenv_vehicle_read's schema keeps none. */
 #define VEH_REAL(sec, name, member, text, b)                                                   \
     {.section = (sec), .key = (name), .kind = TIRENV_PROPFILE_REAL,                            \
      .offset = offsetof(tirenv_vehicle, member), .comment = (text), .given = 1u << (b)}
