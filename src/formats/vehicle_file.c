@@ -80,17 +80,13 @@ static void veh_preamble(FILE *fp)
             TIRENV_VERSION);
 }
 
-static const tirenv_propfile__schema veh_schema = {
-    .keys = veh_keys,
-    .n_keys = sizeof veh_keys / sizeof veh_keys[0],
-    .sections = veh_sections,
-    .n_sections = sizeof veh_sections / sizeof veh_sections[0],
-    .own_prefix = "",
-    .first_section = "UNITS",
-    .size = sizeof(tirenv_vehicle),
-    .check = veh_check,
-    .preamble = veh_preamble,
-};
+/* The schema's fields but its struct's size and the given bits' place. */
+#define VEH_SCHEMA                                                                             \
+    .keys = veh_keys, .n_keys = sizeof veh_keys / sizeof veh_keys[0], .sections = veh_sections, \
+    .n_sections = sizeof veh_sections / sizeof veh_sections[0], .own_prefix = "",              \
+    .first_section = "UNITS", .check = veh_check, .preamble = veh_preamble
+
+static const tirenv_propfile__schema veh_schema = {VEH_SCHEMA, .size = sizeof(tirenv_vehicle)};
 
 /* A vehicle with the record of the keys a file sets (the keys' bits, VEH_ALL). */
 typedef struct {
@@ -99,18 +95,8 @@ typedef struct {
 } vehicle_given;
 
 static const tirenv_propfile__schema veh_given_schema = {
-    .keys = veh_keys,
-    .n_keys = sizeof veh_keys / sizeof veh_keys[0],
-    .sections = veh_sections,
-    .n_sections = sizeof veh_sections / sizeof veh_sections[0],
-    .own_prefix = "",
-    .first_section = "UNITS",
-    .size = sizeof(vehicle_given),
-    .check = veh_check,
-    .preamble = veh_preamble,
-    .given_offset = offsetof(vehicle_given, given),
-    .given_mask = VEH_ALL,
-};
+    VEH_SCHEMA, .size = sizeof(vehicle_given), .given_offset = offsetof(vehicle_given, given),
+    .given_mask = VEH_ALL};
 
 /* The file read by schema s over obj, whose vehicle is *v. A file without TIRE_STIFFNESS or
  * TIRE_DAMPING leaves them NAN (the tire file's) and no law, not the values of the vehicle it
