@@ -84,8 +84,9 @@ static double lm_inv_std(const tirenv_nn *nn)
 }
 
 /* The weights LM takes at most: its normal equations keep two p x p matrices (A and M), 16 p^2
- * bytes, 400 MB at 5000 (the paper's 4-8-1 has 49). A network of four hidden layers of 64
- * (12,929 weights) asked for 2.7 GB a restart, then crawled; rprop's memory is linear in p. */
+ * bytes, 400 MB at 5000 (the paper's 4-8-1 has 49). Four hidden layers of 64 (12,865 weights)
+ * need 2.65 GB a restart by that count; run, one held 1.3 GB and had not finished an epoch
+ * after 20 s. rprop's memory is linear in p. */
 enum { LM_MAX_WEIGHTS = 5000 };
 
 static int lm_alloc(void **state, const tirenv_nn *nn, const tirenv_samples *train,
