@@ -43,23 +43,35 @@
     VEH_REAL(sec, "SUSPENSION_DAMPING", axle.c_s, "c_s: suspension damping, N*s/m", (b) + 5),  \
     VEH_REAL(sec, "AXLE_MASS", axle.m_a, "m_a: unsprung axle mass if suspended, kg", (b) + 6)
 
+/* The keys' bits: the body's and the seat's, then each axle's seven from its first. */
+enum {
+    B_MASS, B_PITCH_INERTIA, B_CG_TO_FRONT, B_CG_TO_REAR, B_GRAVITY, B_SEAT_AHEAD, B_SEAT_ABOVE,
+    B_FRONT_AXLE, B_REAR_AXLE = B_FRONT_AXLE + 7, B_END = B_REAR_AXLE + 7
+};
+_Static_assert(B_END <= 31, "a key's bit must fit the record (and VEH_ALL an int)");
+/* All of them, and those of the optional tire keys (TIRE_STIFFNESS, TIRE_DAMPING: an axle's
+ * bits 2 and 3). */
+enum {
+    VEH_ALL = (int)((1ull << B_END) - 1),
+    VEH_OPTIONAL = 3 << (B_FRONT_AXLE + 2) | 3 << (B_REAR_AXLE + 2)
+};
+
 /* Every key, in the order written; [UNITS] MASS and [BODY] MASS are told apart by section. */
 static const tirenv_propfile__key veh_keys[] = {
     TIRENV_PROPFILE_SI_UNITS,
-    VEH_REAL("BODY", "MASS", m, "m: body mass (with a rigid front axle), kg", 0),
+    VEH_REAL("BODY", "MASS", m, "m: body mass (with a rigid front axle), kg", B_MASS),
     VEH_REAL("BODY", "PITCH_INERTIA", I_y, "I_y: pitch moment of inertia about the CG, kg*m^2",
-             1),
-    VEH_REAL("BODY", "CG_TO_FRONT_AXLE", a, "a: CG to front axle, horizontal, m", 2),
-    VEH_REAL("BODY", "CG_TO_REAR_AXLE", b, "b: CG to rear axle, horizontal, m", 3),
-    VEH_REAL("BODY", "GRAVITY", g, "g: gravitational acceleration, m/s^2", 4),
+             B_PITCH_INERTIA),
+    VEH_REAL("BODY", "CG_TO_FRONT_AXLE", a, "a: CG to front axle, horizontal, m",
+             B_CG_TO_FRONT),
+    VEH_REAL("BODY", "CG_TO_REAR_AXLE", b, "b: CG to rear axle, horizontal, m", B_CG_TO_REAR),
+    VEH_REAL("BODY", "GRAVITY", g, "g: gravitational acceleration, m/s^2", B_GRAVITY),
     VEH_REAL("SEAT", "SEAT_AHEAD_OF_CG", seat_x, "seat point ahead of the CG (< 0: behind), m",
-             5),
-    VEH_REAL("SEAT", "SEAT_ABOVE_CG", seat_h, "seat point above the CG, m", 6),
-    VEH_AXLE("FRONT_AXLE", front, 7),
-    VEH_AXLE("REAR_AXLE", rear, 14),
+             B_SEAT_AHEAD),
+    VEH_REAL("SEAT", "SEAT_ABOVE_CG", seat_h, "seat point above the CG, m", B_SEAT_ABOVE),
+    VEH_AXLE("FRONT_AXLE", front, B_FRONT_AXLE),
+    VEH_AXLE("REAR_AXLE", rear, B_REAR_AXLE),
 };
-/* The keys' bits, and those of the optional tire keys (TIRE_STIFFNESS, TIRE_DAMPING). */
-enum { VEH_ALL = (1u << 21) - 1, VEH_OPTIONAL = 3u << 9 | 3u << 16 };
 
 /* All tirenv's own: no other program shares this format, so every unknown section or key is
  * a typo. */
