@@ -30,16 +30,18 @@ static const char *value_of(const char *line, const char *key)
                                                                            : NULL;
 }
 
-/* The keys tirenv sweep writes (docs/formats.md section 13), and "set KEY" per swept key. */
+/* The keys tirenv sweep writes (docs/formats.md section 13), besides "set KEY" per swept key. */
+static const char *const sweep_keys[] = {"format", "model", "curves", "network", "lengths_m",
+    "heights_m", "contact_lengths_m", "loads_N", "split", "control_fraction",
+    "validation_fraction", "split_seed", "rig_seed", "cases", "shard"};
+enum { N_SWEEP_KEYS = sizeof sweep_keys / sizeof sweep_keys[0] };
+
 static int known_key(const char *key, size_t n)
 {
-    static const char *const keys[] = {"format", "model", "curves", "network", "lengths_m",
-        "heights_m", "contact_lengths_m", "loads_N", "split", "control_fraction",
-        "validation_fraction", "split_seed", "rig_seed", "cases", "shard", NULL};
     if (n > 4 && strncmp(key, "set ", 4) == 0 && !memchr(key + 4, ' ', n - 4))
         return 1;
-    for (size_t k = 0; keys[k]; ++k)
-        if (strlen(keys[k]) == n && strncmp(key, keys[k], n) == 0)
+    for (size_t k = 0; k < N_SWEEP_KEYS; ++k)
+        if (strlen(sweep_keys[k]) == n && strncmp(key, sweep_keys[k], n) == 0)
             return 1;
     return 0;
 }
@@ -54,12 +56,10 @@ static int check_line(const tirenv_csv__reader *r)
     const size_t n = (size_t)(eq - r->text);
     if (known_key(r->text, n))
         return TIRENV_OK;
-    char key[64];
+    char key[64], expected[300];
     snprintf(key, sizeof key, "%.*s", n < sizeof key ? (int)n : (int)sizeof key - 1, r->text);
-    return tirenv_csv__fail(r, 1, key, "unknown key; expected format, model, curves, network, "
-                            "lengths_m, heights_m, contact_lengths_m, loads_N, set KEY, split, "
-                            "control_fraction, validation_fraction, split_seed, rig_seed, "
-                            "cases or shard");
+    tirenv_csv__join(sweep_keys, N_SWEEP_KEYS, expected, sizeof expected);
+    return tirenv_csv__fail(r, 1, key, "unknown key; expected one of %s, or set KEY", expected);
 }
 
 int tirenv_dataset__sweep_declared(const char *dir, tirenv_dataset__declared *out,
