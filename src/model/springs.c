@@ -528,7 +528,7 @@ int tirenv_springs__qp_first(const tirenv_springs *s, double z)
 /* The rays of [a, b] at z: each ray's memo is a proof of its own (springs_ray.c), so the rays
  * whose memos fail at this z are walked again alone, where the last fan covers [a, b]; else
  * the fan cast afresh. Their penetrations into s->d. 1 where no ray was walked (every one on
- * its last face: the update below needs that). */
+ * its last face, which the confirming update needs: confirmed). */
 static int rays_at(tirenv_springs *s, const tirenv_profile *prof, double z, size_t a,
                    size_t b)
 {
