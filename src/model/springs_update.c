@@ -345,9 +345,9 @@ typedef struct {
  * cent of S at 1e-4 m, 2e-4 at 1e-6 m), until it is at round-off, or the update is given up
  * (0; 0 too where a free element is below its own row). With the equations: the reactions'
  * least (the held elements' are their residuals of K w = G^T lambda; the largest, the rows'
- * here and the held ones' in reactions_hold, only where the least is below 0), and whether each free
- * element is above its own row (its ray's, or a vertex's on it); each element's own reaction
- * into pq (0 on the free ones; a pass of its own cost some 700 instructions). */
+ * here and the held ones' in reactions_hold, only where the least is below 0), and whether
+ * each free element is above its own row (its ray's, or a vertex's on it); each element's
+ * own reaction into pq (0 on the free ones; a pass of its own cost some 700 instructions). */
 static int settle(tirenv_springs__cc *c, const tirenv_springs__cc_tire *T, const double ph[],
                   double wn[], double pq[], upd_rows *R, int pred, upd_check *out)
 {
