@@ -372,7 +372,7 @@ typedef struct {
     sweep_keys keys;       /* --set KEY=V1,V2,... */
     const char *split, *tire_path;
     double control, validation;  /* the fractions; NaN if not given */
-    long seed, split_seed;  /* -1: not given, 1 */
+    long seed, split_seed;  /* -1: not given (the sweep takes 1) */
     size_t shard[2];       /* K, N */
     int rig, want_progress;
 } sweep_args;
